@@ -1,0 +1,13 @@
+//! bouncelab — the Christoforou–Yigit model of the inelastic impact of a deformable sphere on a
+//! rigid surface (A. P. Christoforou and A. S. Yigit, "Inelastic impact and the coefficient of
+//! restitution"). Equation numbers in comments are the paper's; `MODEL.md` holds the corrected
+//! forms this crate implements.
+//!
+//! The physics core (`model`, `solver`) does no I/O: plain data in, plain data out.
+
+pub mod model;
+pub mod solver;
+
+pub use model::contact::ContactLaw;
+pub use model::params::{ImpactParams, Normalized, ParamError};
+pub use solver::{ImpactResponse, Method, SolveOptions, simulate, simulate_normalized};

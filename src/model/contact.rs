@@ -1,0 +1,218 @@
+//! The three contact laws F = f(z) (Eqs. 7–22), written in normalized units
+//! (F̄ = F/(m v0 ω0), z̄ = z ω0/v0, MODEL.md §5) where the linear stiffness K_p is 1.
+
+use serde::{Deserialize, Serialize};
+use std::fmt;
+use std::str::FromStr;
+
+/// Which contact law relates force to indentation.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum ContactLaw {
+    /// Linearized bilinear law (Eqs. 21–22): loading F = K_p z, linear unloading to z_f.
+    Linear,
+    /// Elastic–fully plastic (Eqs. 10–19): Hertz to z_p, then slope K_p; 3/2-power unloading.
+    ElasticPlastic,
+    /// Hertz alone (Eqs. 7–9): F = K_h z^{3/2}, elastic.
+    Hertz,
+}
+
+impl ContactLaw {
+    pub const ALL: [ContactLaw; 3] = [
+        ContactLaw::Linear,
+        ContactLaw::ElasticPlastic,
+        ContactLaw::Hertz,
+    ];
+
+    pub fn name(self) -> &'static str {
+        match self {
+            ContactLaw::Linear => "linear",
+            ContactLaw::ElasticPlastic => "elastic-plastic",
+            ContactLaw::Hertz => "hertz",
+        }
+    }
+
+    /// The next law in `ALL`, wrapping (the explorer's `c` key).
+    pub fn next(self) -> ContactLaw {
+        let i = ContactLaw::ALL.iter().position(|&l| l == self).unwrap_or(0);
+        ContactLaw::ALL[(i + 1) % ContactLaw::ALL.len()]
+    }
+}
+
+impl fmt::Display for ContactLaw {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+impl FromStr for ContactLaw {
+    type Err = String;
+    fn from_str(s: &str) -> Result<Self, Self::Err> {
+        ContactLaw::ALL
+            .into_iter()
+            .find(|l| l.name() == s)
+            .ok_or_else(|| {
+                format!("unknown contact law '{s}' (expected linear, elastic-plastic or hertz)")
+            })
+    }
+}
+
+/// The unloading branch entered at the peak indentation z_m.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Unloading {
+    /// Peak indentation z̄_m.
+    pub z_m: f64,
+    /// Force at the peak F̄_m.
+    pub f_m: f64,
+    /// Permanent indentation z̄_f (Eq. 18).
+    pub z_f: f64,
+}
+
+/// A contact law with its normalized constants.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Contact {
+    pub law: ContactLaw,
+    /// z̄_p, the flattening / plastic threshold (∞: none).
+    pub zp_bar: f64,
+    /// κ = K_h √(v0/ω0) / K_p: F̄ = κ z̄^{3/2} on the Hertz branch.
+    pub kappa: f64,
+}
+
+impl Contact {
+    /// Force on the loading branch (Eqs. 10–11, 21, 7).
+    pub fn loading_force(&self, z: f64) -> f64 {
+        if z <= 0.0 {
+            return 0.0;
+        }
+        match self.law {
+            ContactLaw::Linear => z,
+            ContactLaw::Hertz => self.kappa * z.powf(1.5),
+            ContactLaw::ElasticPlastic if z <= self.zp_bar => self.kappa * z.powf(1.5),
+            ContactLaw::ElasticPlastic => (z - self.zp_bar) + self.kappa * self.zp_bar.powf(1.5),
+        }
+    }
+
+    /// Permanent indentation after unloading from z_m: z_f = z_m − z_r, with
+    /// z_r = z_p (2 z_m/z_p − 1)^{1/2} above z_p and z_r = z_m below (Eqs. 18, 19).
+    /// Hertz alone is elastic: z_f = 0.
+    pub fn permanent_indentation(&self, z_m: f64) -> f64 {
+        if self.law == ContactLaw::Hertz || z_m <= self.zp_bar {
+            return 0.0;
+        }
+        let z_r = self.zp_bar * (2.0 * z_m / self.zp_bar - 1.0).sqrt();
+        (z_m - z_r).max(0.0)
+    }
+
+    /// The unloading branch that starts at z_m.
+    pub fn unload_from(&self, z_m: f64) -> Unloading {
+        Unloading {
+            z_m,
+            f_m: self.loading_force(z_m),
+            z_f: self.permanent_indentation(z_m),
+        }
+    }
+
+    /// Force on an unloading branch: linear for the bilinear law (Eq. 22), 3/2 power otherwise
+    /// (Eq. 12). Zero at and below z_f: contact is lost.
+    pub fn unloading_force(&self, z: f64, u: &Unloading) -> f64 {
+        if z <= u.z_f {
+            return 0.0;
+        }
+        let ratio = (z - u.z_f) / (u.z_m - u.z_f);
+        match self.law {
+            ContactLaw::Linear => u.f_m * ratio,
+            _ => u.f_m * ratio.powf(1.5),
+        }
+    }
+
+    /// ∫ F dz along the loading branch from 0 to z (an antiderivative, for the energy audit).
+    pub fn loading_work(&self, z: f64) -> f64 {
+        let z = z.max(0.0);
+        let hertz = |z: f64| 0.4 * self.kappa * z.powf(2.5);
+        match self.law {
+            ContactLaw::Linear => 0.5 * z * z,
+            ContactLaw::Hertz => hertz(z),
+            ContactLaw::ElasticPlastic if z <= self.zp_bar => hertz(z),
+            ContactLaw::ElasticPlastic => {
+                let d = z - self.zp_bar;
+                hertz(self.zp_bar) + 0.5 * d * d + self.kappa * self.zp_bar.powf(1.5) * d
+            }
+        }
+    }
+
+    /// ∫ F dz along an unloading branch from z_f to z.
+    pub fn unloading_work(&self, z: f64, u: &Unloading) -> f64 {
+        let d = (z - u.z_f).max(0.0);
+        let span = u.z_m - u.z_f;
+        match self.law {
+            ContactLaw::Linear => 0.5 * u.f_m * d * d / span,
+            _ => 0.4 * u.f_m * d.powf(2.5) / span.powf(1.5),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn ep(zp: f64) -> Contact {
+        Contact {
+            law: ContactLaw::ElasticPlastic,
+            zp_bar: zp,
+            kappa: 1.0 / (1.5 * zp.sqrt()),
+        }
+    }
+
+    #[test]
+    fn elastic_plastic_is_c1_at_zp() {
+        // Eq. 16 makes the Hertz branch meet the linear one with matching slope.
+        let c = ep(0.3);
+        let h = 1e-7;
+        let below = (c.loading_force(0.3) - c.loading_force(0.3 - h)) / h;
+        let above = (c.loading_force(0.3 + h) - c.loading_force(0.3)) / h;
+        assert!((below - 1.0).abs() < 1e-5 && (above - 1.0).abs() < 1e-5);
+    }
+
+    #[test]
+    fn permanent_indentation_eq_18_19() {
+        let c = ep(1.0);
+        assert_eq!(c.permanent_indentation(0.5), 0.0);
+        // z_m = 5 z_p: z_r = z_p √9 = 3 z_p, z_f = 2 z_p
+        assert!((c.permanent_indentation(5.0) - 2.0).abs() < 1e-15);
+    }
+
+    #[test]
+    fn work_matches_force() {
+        for law in ContactLaw::ALL {
+            let c = Contact { law, ..ep(0.4) };
+            let u = c.unload_from(1.7);
+            for z in [0.1, 0.39, 0.41, 1.2] {
+                let h = 1e-6;
+                let dl = (c.loading_work(z + h) - c.loading_work(z - h)) / (2.0 * h);
+                assert!(
+                    (dl - c.loading_force(z)).abs() < 1e-6,
+                    "{law} loading at {z}"
+                );
+                if z > u.z_f + h {
+                    let du =
+                        (c.unloading_work(z + h, &u) - c.unloading_work(z - h, &u)) / (2.0 * h);
+                    assert!(
+                        (du - c.unloading_force(z, &u)).abs() < 1e-6,
+                        "{law} unloading at {z}"
+                    );
+                }
+            }
+            // the unloading branch meets the loading one at the peak
+            assert!((c.unloading_force(1.7, &u) - c.loading_force(1.7)).abs() < 1e-14);
+        }
+    }
+
+    #[test]
+    fn law_names_round_trip() {
+        for law in ContactLaw::ALL {
+            assert_eq!(law.name().parse::<ContactLaw>().unwrap(), law);
+        }
+        assert!("plastic".parse::<ContactLaw>().is_err());
+        assert_eq!(ContactLaw::Hertz.next(), ContactLaw::Linear);
+    }
+}

@@ -1,0 +1,4 @@
+//! The physical model: parameters, contact laws, and parameters from materials.
+
+pub mod contact;
+pub mod params;

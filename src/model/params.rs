@@ -1,0 +1,209 @@
+//! Impact parameters, dimensional (SI) and normalized (MODEL.md §5, Eqs. 23, 24, 26).
+
+use serde::{Deserialize, Serialize};
+use std::fmt;
+
+/// The dimensional parameters of one impact, SI units throughout.
+///
+/// `damping = ∞` means a rigid Kelvin–Voigt pair (ζ = 0: the contact spring alone);
+/// `z_p = ∞` means no flattening / no plastic phase.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct ImpactParams {
+    /// Ball mass m (kg).
+    pub mass: f64,
+    /// Linear contact (flattening) stiffness K_p (N/m), Eqs. 15–16; the reference stiffness of
+    /// the normalization (Eq. 23).
+    pub k_p: f64,
+    /// Dashpot coefficient c (kg/s), Eq. 5.
+    pub damping: f64,
+    /// Recoil spring K_r (N/m), Eq. 2.
+    pub k_r: f64,
+    /// Flattening / plastic threshold indentation z_p (m), Eq. 17.
+    pub z_p: f64,
+    /// Hertz stiffness K_h (N/m^1.5), Eq. 8.
+    pub k_h: f64,
+    /// Impact speed v0 (m/s).
+    pub v0: f64,
+}
+
+/// The dimensionless groups that set the response (MODEL.md §5).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct Normalized {
+    /// λ = K_r / K_p, relative stiffness (Eq. 24).
+    pub lambda: f64,
+    /// ζ = √(m K_p) / (2c), damping factor (Eq. 24).
+    pub zeta: f64,
+    /// z̄_p = z_p ω0 / v0, the flattening threshold in normalized indentation.
+    pub zp_bar: f64,
+    /// κ = K_h √(v0/ω0) / K_p: the Hertz law in normalized form, F̄ = κ z̄^{3/2}.
+    pub kappa: f64,
+}
+
+/// A parameter that cannot be used, named by field.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ParamError {
+    pub field: &'static str,
+    pub value: f64,
+    pub reason: &'static str,
+}
+
+impl fmt::Display for ParamError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(
+            f,
+            "invalid {}: {} ({})",
+            self.field, self.value, self.reason
+        )
+    }
+}
+
+impl std::error::Error for ParamError {}
+
+/// Largest magnitude accepted for any parameter: beyond it products overflow or lose meaning.
+const ABSURD: f64 = 1e15;
+
+fn check(
+    field: &'static str,
+    value: f64,
+    allow_zero: bool,
+    allow_inf: bool,
+) -> Result<(), ParamError> {
+    let err = |reason| {
+        Err(ParamError {
+            field,
+            value,
+            reason,
+        })
+    };
+    if value.is_nan() {
+        return err("not a number");
+    }
+    if value.is_infinite() {
+        return if allow_inf && value > 0.0 {
+            Ok(())
+        } else {
+            err("must be finite")
+        };
+    }
+    if value < 0.0 {
+        return err("must not be negative");
+    }
+    if value == 0.0 && !allow_zero {
+        return err("must be positive");
+    }
+    if value > ABSURD || (value > 0.0 && value < 1.0 / ABSURD) {
+        return err("out of the physically meaningful range 1e-15 … 1e15");
+    }
+    Ok(())
+}
+
+impl ImpactParams {
+    /// Natural frequency of the contact spring, ω0 = √(K_p/m) (Eq. 23).
+    pub fn omega0(&self) -> f64 {
+        (self.k_p / self.mass).sqrt()
+    }
+
+    /// Check every field; the first bad one is named.
+    pub fn validate(&self) -> Result<(), ParamError> {
+        check("mass", self.mass, false, false)?;
+        check("k_p", self.k_p, false, false)?;
+        check("damping", self.damping, false, true)?;
+        check("k_r", self.k_r, true, false)?;
+        check("z_p", self.z_p, false, true)?;
+        check("k_h", self.k_h, false, false)?;
+        check("v0", self.v0, false, false)?;
+        Ok(())
+    }
+
+    /// The normalized groups λ, ζ, z̄_p, κ (MODEL.md §5).
+    pub fn normalized(&self) -> Normalized {
+        let w0 = self.omega0();
+        Normalized {
+            lambda: self.k_r / self.k_p,
+            zeta: (self.mass * self.k_p).sqrt() / (2.0 * self.damping),
+            zp_bar: self.z_p * w0 / self.v0,
+            kappa: self.k_h * (self.v0 / w0).sqrt() / self.k_p,
+        }
+    }
+
+    /// Hertz stiffness that meets the linear phase with matching slope at z_p (Eq. 16):
+    /// K_h = K_p / (1.5 √z_p).
+    pub fn k_h_matching(k_p: f64, z_p: f64) -> f64 {
+        k_p / (1.5 * z_p.sqrt())
+    }
+
+    /// The normalized run: m = K_p = v0 = 1, so λ and ζ alone set it (and z̄_p the
+    /// flattening; `f64::INFINITY` for none). K_h follows Eq. 16 at z̄_p, or at z̄_p = 1 when
+    /// there is no flattening, so the nonlinear laws still have a Hertz stiffness.
+    pub fn from_normalized(lambda: f64, zeta: f64, zp_bar: f64) -> Self {
+        let k_h = Self::k_h_matching(1.0, if zp_bar.is_finite() { zp_bar } else { 1.0 });
+        ImpactParams {
+            mass: 1.0,
+            k_p: 1.0,
+            damping: damping_for_zeta(1.0, 1.0, zeta),
+            k_r: lambda,
+            z_p: zp_bar,
+            k_h,
+            v0: 1.0,
+        }
+    }
+
+    /// The same ball with λ and ζ changed: K_r and c move, m and K_p stay (Eq. 24).
+    pub fn with_lambda_zeta(mut self, lambda: f64, zeta: f64) -> Self {
+        self.k_r = lambda * self.k_p;
+        self.damping = damping_for_zeta(self.mass, self.k_p, zeta);
+        self
+    }
+}
+
+/// c = √(m K_p) / (2ζ), Eq. 24 inverted; ζ = 0 gives an infinitely stiff dashpot.
+pub fn damping_for_zeta(mass: f64, k_p: f64, zeta: f64) -> f64 {
+    (mass * k_p).sqrt() / (2.0 * zeta)
+}
+
+/// Check a normalized pair before use (λ ≥ 0, ζ ≥ 0, both finite).
+pub fn validate_lambda_zeta(lambda: f64, zeta: f64) -> Result<(), ParamError> {
+    check("lambda", lambda, true, false)?;
+    check("zeta", zeta, true, false)?;
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn normalized_round_trip() {
+        let p = ImpactParams::from_normalized(0.4, 0.61, 2.0);
+        let n = p.normalized();
+        assert!((n.lambda - 0.4).abs() < 1e-15);
+        assert!((n.zeta - 0.61).abs() < 1e-15);
+        assert!((n.zp_bar - 2.0).abs() < 1e-15);
+        // Eq. 16 in normalized form: κ = 1/(1.5 √z̄_p)
+        assert!((n.kappa - 1.0 / (1.5 * 2f64.sqrt())).abs() < 1e-15);
+    }
+
+    #[test]
+    fn zeta_zero_is_rigid_dashpot() {
+        let p = ImpactParams::from_normalized(1.0, 0.0, f64::INFINITY);
+        assert!(p.damping.is_infinite());
+        assert!(p.validate().is_ok());
+        assert_eq!(p.normalized().zeta, 0.0);
+    }
+
+    #[test]
+    fn validation_names_the_field() {
+        let mut p = ImpactParams::from_normalized(1.0, 0.1, f64::INFINITY);
+        p.mass = f64::NAN;
+        assert_eq!(p.validate().unwrap_err().field, "mass");
+        p.mass = 1.0;
+        p.k_r = -1.0;
+        assert_eq!(p.validate().unwrap_err().field, "k_r");
+        p.k_r = 0.0;
+        assert!(p.validate().is_ok());
+        p.v0 = 0.0;
+        assert_eq!(p.validate().unwrap_err().field, "v0");
+        p.v0 = 1e300;
+        assert_eq!(p.validate().unwrap_err().field, "v0");
+    }
+}

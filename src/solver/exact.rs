@@ -1,0 +1,399 @@
+//! The exact solver for the linearized (bilinear) law, Eqs. 21–22, in normalized form
+//! (MODEL.md §5). The state is (z̄, ᾱ', ȳ) rather than (ᾱ, ᾱ', ȳ): z̄ = ᾱ − ȳ is the small
+//! difference of two large numbers as the ball settles, and carrying it directly keeps its
+//! relative precision (at λ = 0 the resting mode then has no z̄ component at all).
+//! Each phase is a linear ODE; with w = x − (s, 0, 0) (s = z̄_f while unloading, which makes
+//! the affine unloading law homogeneous) it reads w' = A(k) w with
+//!     A(k) = [[−2ζk, 1, 2ζλ], [−k, 0, 0], [2ζk, 0, −2ζλ]],
+//! k = 1 while loading and k = F̄_m/(z̄_m − z̄_f) while unloading. Its flow is evaluated exactly
+//! (`Propagator`); only the events need root finding: z̄' = 0 (unload), z̄ = z̄_f (F = 0,
+//! separation), z̄ = z̄_m (reload).
+
+use super::propagator::{Propagator, Roots};
+use super::roots::newton_bracketed;
+use super::{EventKind, Outcome, SolveOptions};
+use crate::model::contact::{Contact, Unloading};
+use crate::model::params::Normalized;
+use nalgebra::{Matrix3, Vector3};
+
+/// More phase switches than this would mean a reload cycle that never settles.
+const MAX_PHASES: usize = 64;
+/// Hard cap on search steps per phase (the step rule reaches every event in far fewer).
+const MAX_STEPS: usize = 20_000;
+
+/// The contact indentation z̄ − s (or a derivative) as a functional of w.
+fn l(v: &Vector3<f64>) -> f64 {
+    v[0]
+}
+
+fn system(lambda: f64, zeta: f64, k: f64) -> (Matrix3<f64>, [f64; 3]) {
+    let (zk, zl) = (2.0 * zeta * k, 2.0 * zeta * lambda);
+    let a = Matrix3::new(-zk, 1.0, zl, -k, 0.0, 0.0, zk, 0.0, -zl);
+    (a, [2.0 * zeta * (k + lambda), k, 2.0 * zeta * k * lambda])
+}
+
+/// w and its first three derivatives at τ.
+struct Jet([Vector3<f64>; 4]);
+
+fn jet(p: &Propagator, a: &Matrix3<f64>, tau: f64) -> Jet {
+    let (w, aw) = p.eval(tau);
+    let a2w = a * aw;
+    Jet([w, aw, a2w, a * a2w])
+}
+
+/// An event function g(τ) watched for a crossing in one direction.
+#[derive(Clone, Copy)]
+enum Watch {
+    /// z̄' falling through 0.
+    RateFalls,
+    /// z̄ − s rising through the target.
+    Rises(f64),
+    /// z̄ − s falling through the target.
+    Falls(f64),
+}
+
+impl Watch {
+    /// (g, g', g'') from the jet.
+    fn eval(self, j: &Jet) -> (f64, f64, f64) {
+        let [w, aw, a2w, a3w] = &j.0;
+        match self {
+            Watch::RateFalls => (l(aw), l(a2w), l(a3w)),
+            Watch::Rises(t) | Watch::Falls(t) => (l(w) - t, l(aw), l(a2w)),
+        }
+    }
+    fn rising(self) -> bool {
+        matches!(self, Watch::Rises(_))
+    }
+}
+
+/// Step length at τ: one time constant of the fastest mode still alive (e^{Re s τ} > e^{−36});
+/// when only real modes are alive the flow has no oscillation to skip over, so the step may
+/// also grow with τ, but never past two time constants of the slowest mode: the Newton form
+/// sums terms that do not all decay, and over a longer step their cancellation would eat the
+/// relative precision of a state that has.
+fn step_size(roots: &Roots, tau: f64) -> f64 {
+    let all = roots.all();
+    let scale = all.iter().map(|s| s.norm()).fold(0.0, f64::max);
+    let mut fastest: f64 = 0.0;
+    let mut slowest = f64::INFINITY;
+    let mut oscillating = false;
+    for (i, s) in all.iter().enumerate() {
+        if s.norm() <= 1e-12 * scale {
+            continue;
+        }
+        slowest = slowest.min(s.re.abs());
+        if s.re * tau < -36.0 {
+            continue;
+        }
+        fastest = fastest.max(s.norm());
+        oscillating |= i > 0 && roots.q < 0.0;
+    }
+    let h = if fastest > 0.0 {
+        1.0 / fastest
+    } else {
+        tau.max(1.0)
+    };
+    let h = if oscillating { h } else { h.max(0.25 * tau) };
+    if slowest > 0.0 {
+        h.min(2.0 / slowest)
+    } else {
+        h
+    }
+}
+
+/// The time after which no event can come: the slowest contributing mode is real and every
+/// other has decayed relative to it by e^{−70}. `None` while an oscillation dominates the tail.
+/// Modes with s = 0 (λ = 0) carry w1 = w3, w2 = 0 and so never enter z̄ or its rates.
+fn settle_time(roots: &Roots) -> Option<f64> {
+    let all = roots.all();
+    let scale = all.iter().map(|s| s.norm()).fold(0.0, f64::max);
+    let mut live: Vec<(f64, bool)> = all
+        .iter()
+        .enumerate()
+        .filter(|(_, s)| s.norm() > 1e-12 * scale)
+        .map(|(i, s)| (s.re, i > 0 && roots.q < 0.0))
+        .collect();
+    live.sort_by(|a, b| b.0.total_cmp(&a.0));
+    let &(slow, complex) = live.first()?;
+    if complex {
+        return None;
+    }
+    // Past e^{−600} of its start the slowest mode is far below anything physical (and the
+    // faster ones underflow to exact zeros, which must not read as crossings).
+    let floor = 600.0 / slow.abs();
+    match live.iter().find(|m| m.0 < slow - 1e-9 * scale) {
+        Some(next) => Some((70.0 / (slow - next.0)).min(floor)),
+        None => Some(floor),
+    }
+}
+
+/// A crossing inside [a, b]: a sign change in the watched direction, or one hidden behind an
+/// extremum (g' changes sign inside and the extremum lies across zero).
+fn crossing_in(
+    watch: Watch,
+    f: &mut impl FnMut(f64) -> Jet,
+    (ta, ga, da): (f64, f64, f64),
+    (tb, gb, db): (f64, f64, f64),
+) -> Option<f64> {
+    let sign = if watch.rising() { 1.0 } else { -1.0 };
+    let (ga, gb, da, db) = (sign * ga, sign * gb, sign * da, sign * db);
+    let g = |f: &mut dyn FnMut(f64) -> Jet, t: f64| {
+        let (g, d, dd) = watch.eval(&f(t));
+        (sign * g, sign * d, sign * dd)
+    };
+    if ga < 0.0 && gb >= 0.0 {
+        return Some(newton_bracketed(
+            |t| {
+                let (v, d, _) = g(f, t);
+                (v, d)
+            },
+            ta,
+            tb,
+        ));
+    }
+    if ga < 0.0 && gb < 0.0 && da > 0.0 && db < 0.0 {
+        let tm = newton_bracketed(
+            |t| {
+                let (_, d, dd) = g(f, t);
+                (d, dd)
+            },
+            ta,
+            tb,
+        );
+        let (gm, _, _) = g(f, tm);
+        if gm > 1e-14 * (ga.abs() + gb.abs()) {
+            return Some(newton_bracketed(
+                |t| {
+                    let (v, d, _) = g(f, t);
+                    (v, d)
+                },
+                ta,
+                tm,
+            ));
+        }
+    }
+    None
+}
+
+/// The flow of one phase as a chain of anchors: (local τ of the anchor, flow from there).
+type Anchors = Vec<(f64, Propagator)>;
+
+fn eval_anchored(anchors: &Anchors, tau: f64) -> (Vector3<f64>, Vector3<f64>) {
+    let i = anchors
+        .partition_point(|(t0, _)| *t0 <= tau)
+        .saturating_sub(1);
+    let (t0, p) = &anchors[i];
+    p.eval(tau - t0)
+}
+
+/// The first event among `watches` in a phase, or the τ at which none can come any more.
+/// Returns the local τ, the event's index, and the anchors laid down on the way.
+fn search(first: Propagator, watches: &[Watch]) -> (f64, Option<usize>, Anchors) {
+    let roots = *first.roots();
+    let a = *first.matrix();
+    let settle = settle_time(&roots);
+    let mut anchors: Anchors = vec![(0.0, first)];
+    let values = |j: &Jet, t: f64| -> Vec<(f64, f64, f64)> {
+        watches
+            .iter()
+            .map(|w| {
+                let (g, d, _) = w.eval(j);
+                (t, g, d)
+            })
+            .collect()
+    };
+    let mut ta = 0.0;
+    let mut va = values(&jet(&anchors[0].1, &a, 0.0), 0.0);
+    for _ in 0..MAX_STEPS {
+        let tb = ta + step_size(&roots, ta);
+        let (t0, p) = anchors.last().expect("at least one anchor");
+        let mut f = |t: f64| jet(p, &a, t - t0);
+        let jb = f(tb);
+        let vb = values(&jb, tb);
+        let mut best: Option<(f64, usize)> = None;
+        for (i, w) in watches.iter().enumerate() {
+            if let Some(t) = crossing_in(*w, &mut f, va[i], vb[i])
+                && best.is_none_or(|(bt, _)| t < bt)
+            {
+                best = Some((t, i));
+            }
+        }
+        if let Some((t, i)) = best {
+            return (t, Some(i), anchors);
+        }
+        let next = Propagator::with_roots(a, roots, jb.0[0]);
+        anchors.push((tb, next));
+        if settle.is_some_and(|s| tb > s) {
+            return (tb, None, anchors);
+        }
+        ta = tb;
+        va = vb;
+    }
+    (ta, None, anchors)
+}
+
+/// 8-point Gauss–Legendre on [a, b].
+fn gauss8(mut f: impl FnMut(f64) -> f64, a: f64, b: f64) -> f64 {
+    const X: [f64; 4] = [
+        0.183_434_642_495_649_8,
+        0.525_532_409_916_329,
+        0.796_666_477_413_626_7,
+        0.960_289_856_497_536_3,
+    ];
+    const W: [f64; 4] = [
+        0.362_683_783_378_362,
+        0.313_706_645_877_887_3,
+        0.222_381_034_453_374_5,
+        0.101_228_536_290_376_3,
+    ];
+    let (m, r) = (0.5 * (a + b), 0.5 * (b - a));
+    (0..4)
+        .map(|i| W[i] * (f(m - r * X[i]) + f(m + r * X[i])))
+        .sum::<f64>()
+        * r
+}
+
+/// One phase as solved: global start, local length, and its flow.
+struct Segment {
+    start: f64,
+    len: f64,
+    k: f64,
+    s: f64,
+    anchors: Anchors,
+}
+
+#[derive(Clone, Copy)]
+enum Phase {
+    Loading,
+    Unloading(Unloading),
+}
+
+pub(crate) fn solve(n: &Normalized, contact: &Contact, opts: &SolveOptions) -> Outcome {
+    let (lambda, zeta) = (n.lambda, n.zeta);
+    let mut x = Vector3::new(0.0, 1.0, 0.0);
+    let mut tau = 0.0;
+    let mut phase = Phase::Loading;
+    let mut out = Outcome::default();
+    let mut segments: Vec<Segment> = Vec::new();
+    for _ in 0..MAX_PHASES {
+        let (k, s) = match phase {
+            Phase::Loading => (1.0, 0.0),
+            Phase::Unloading(u) => (u.f_m / (u.z_m - u.z_f), u.z_f),
+        };
+        let (a, poly) = system(lambda, zeta, k);
+        let w0 = x - Vector3::new(s, 0.0, 0.0);
+        let prop = Propagator::new(a, poly, w0);
+        let z_start = l(&w0) + s;
+        let watches: &[Watch] = match phase {
+            Phase::Loading => &[Watch::RateFalls],
+            // separation at z̄ = z̄_f (F = 0); reload at z̄ = z̄_m, whose target is taken from w0
+            // itself so that g(0) is exactly 0 and the start is not mistaken for a crossing
+            Phase::Unloading(_) => &[Watch::Falls(0.0), Watch::Rises(l(&w0))],
+        };
+        let (len, hit, anchors) = search(prop, watches);
+        let (w, _) = eval_anchored(&anchors, len);
+        let z_end = l(&w) + s;
+        x = w + Vector3::new(s, 0.0, 0.0);
+        out.contact_work += match phase {
+            Phase::Loading => contact.loading_work(z_end) - contact.loading_work(z_start),
+            Phase::Unloading(u) => {
+                contact.unloading_work(z_end, &u) - contact.unloading_work(z_start, &u)
+            }
+        };
+        segments.push(Segment {
+            start: tau,
+            len,
+            k,
+            s,
+            anchors,
+        });
+        tau += len;
+        let next = match (phase, hit) {
+            (Phase::Loading, Some(_)) => {
+                let u = contact.unload_from(z_end);
+                out.events.push((tau, EventKind::Unload, z_end));
+                Some(Phase::Unloading(u))
+            }
+            (Phase::Unloading(_), Some(1)) => {
+                out.events.push((tau, EventKind::Reload, z_end));
+                Some(Phase::Loading)
+            }
+            (Phase::Unloading(_), Some(_)) => {
+                out.events.push((tau, EventKind::Separation, z_end));
+                out.rebound = true;
+                None
+            }
+            (_, None) => None,
+        };
+        match phase {
+            Phase::Loading => {
+                out.z_max = out.z_max.max(z_end);
+                out.f_max = out.f_max.max(contact.loading_force(z_end));
+            }
+            Phase::Unloading(u) => out.z_f = u.z_f,
+        }
+        match next {
+            Some(p) => phase = p,
+            None => break,
+        }
+    }
+    out.tau_end = tau;
+    out.velocity_end = x[1];
+    out.y_end = x[2];
+    if opts.energy {
+        out.dashpot = Some(
+            segments
+                .iter()
+                .map(|seg| dashpot_energy(seg, lambda, zeta))
+                .sum(),
+        );
+    }
+    out.samples = sample(&segments, tau, opts.samples);
+    out
+}
+
+/// ∫ ȳ'²/(2ζ) dτ = ∫ 2ζ (F̄ − λȳ)² dτ over one segment, by Gauss–Legendre on the search grid.
+fn dashpot_energy(seg: &Segment, lambda: f64, zeta: f64) -> f64 {
+    if zeta == 0.0 {
+        return 0.0;
+    }
+    let roots = *seg.anchors[0].1.roots();
+    let integrand = |t: f64| {
+        let (w, _) = eval_anchored(&seg.anchors, t);
+        let r = seg.k * l(&w) - lambda * w[2];
+        2.0 * zeta * r * r
+    };
+    let mut total = 0.0;
+    let mut ta = 0.0;
+    while ta < seg.len {
+        let tb = (ta + step_size(&roots, ta)).min(seg.len);
+        total += gauss8(integrand, ta, tb);
+        ta = tb;
+    }
+    total
+}
+
+fn sample(segments: &[Segment], tau_end: f64, count: usize) -> Vec<[f64; 4]> {
+    let mut samples = Vec::with_capacity(count);
+    let mut i = 0;
+    for j in 0..count {
+        let t = if count > 1 {
+            tau_end * j as f64 / (count - 1) as f64
+        } else {
+            0.0
+        };
+        while i + 1 < segments.len() && t > segments[i].start + segments[i].len {
+            i += 1;
+        }
+        let seg = &segments[i];
+        let (w, _) = eval_anchored(&seg.anchors, (t - seg.start).clamp(0.0, seg.len));
+        // (τ, F̄, z̄, ᾱ = z̄ + ȳ)
+        samples.push([
+            t,
+            (seg.k * l(&w)).max(0.0),
+            l(&w) + seg.s,
+            l(&w) + seg.s + w[2],
+        ]);
+    }
+    samples
+}

@@ -1,0 +1,278 @@
+//! Solving one impact: the exact linear solver and the adaptive numerical one, and the result
+//! they both return (MODEL.md §2, Eq. 6).
+
+pub mod exact;
+pub mod numeric;
+pub mod propagator;
+pub mod roots;
+
+use crate::model::contact::{Contact, ContactLaw};
+use crate::model::params::{ImpactParams, Normalized, ParamError};
+use serde::Serialize;
+
+/// Which integrator runs the impact.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Method {
+    /// Exact flow of the linearized law (sum of exponentials, root-found events).
+    Exact,
+    /// Adaptive embedded Runge–Kutta (DOPRI5; Radau5 when stiff) with event location.
+    Numeric,
+}
+
+/// How to solve.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SolveOptions {
+    /// Number of evenly spaced history samples over [0, t_f] (0: summary only).
+    pub samples: usize,
+    /// Relative tolerance of the numerical integrator.
+    pub rtol: f64,
+    /// Compute the energy audit (dashpot dissipation by quadrature / integration).
+    pub energy: bool,
+    /// Force a method; `None` picks the exact solver for the linear law.
+    pub method: Option<Method>,
+}
+
+impl Default for SolveOptions {
+    fn default() -> Self {
+        SolveOptions {
+            samples: 0,
+            rtol: 1e-10,
+            energy: false,
+            method: None,
+        }
+    }
+}
+
+impl SolveOptions {
+    pub fn with_samples(mut self, n: usize) -> Self {
+        self.samples = n;
+        self
+    }
+    pub fn with_energy(mut self) -> Self {
+        self.energy = true;
+        self
+    }
+    pub fn with_method(mut self, m: Method) -> Self {
+        self.method = Some(m);
+        self
+    }
+}
+
+/// Where the energy went, SI (J): ½ m v0² − ½ m v_f² = dashpot + contact + spring.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct EnergyBudget {
+    pub initial_kinetic: f64,
+    pub final_kinetic: f64,
+    /// ∫ c y'² dt, integrated independently of the balance.
+    pub dashpot: f64,
+    /// Net work into the contact, ∮ F dz, from the contact law's closed forms (flattening).
+    pub contact: f64,
+    /// ½ K_r y² left in the recoil spring at separation.
+    pub spring: f64,
+}
+
+impl EnergyBudget {
+    /// |loss − (dashpot + contact + spring)| / (½ m v0²).
+    pub fn relative_residual(&self) -> f64 {
+        let loss = self.initial_kinetic - self.final_kinetic;
+        (loss - self.dashpot - self.contact - self.spring).abs() / self.initial_kinetic
+    }
+}
+
+/// A phase switch or the end of contact, in the manner of `solve_ivp`'s `t_events`.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct PhaseEvent {
+    /// Time (s).
+    pub t: f64,
+    pub kind: EventKind,
+    /// Indentation at the event (m).
+    pub z: f64,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum EventKind {
+    /// z' = 0 while loading: unloading starts.
+    Unload,
+    /// z reached z_m again while unloading: loading resumes.
+    Reload,
+    /// z crossed z_p while loading (elastic–plastic law: Hertz → linear).
+    Yield,
+    /// F = 0 while unloading: the ball leaves the wall.
+    Separation,
+}
+
+/// Sampled histories, SI units, evenly spaced in time.
+#[derive(Debug, Clone, Default, PartialEq, Serialize)]
+pub struct History {
+    /// t (s).
+    pub t: Vec<f64>,
+    /// F(t) (N).
+    pub force: Vec<f64>,
+    /// z(t) (m).
+    pub indentation: Vec<f64>,
+    /// α(t) (m).
+    pub displacement: Vec<f64>,
+}
+
+/// The answer to one impact, SI units (MODEL.md §2).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ImpactResponse {
+    pub law: ContactLaw,
+    pub method: Method,
+    /// Coefficient of restitution e = −α'(t_f)/v0 (Eq. 6); 0 when there is no rebound.
+    pub cor: f64,
+    /// Whether the force returned to zero (the ball left the wall).
+    pub rebound: bool,
+    /// Peak force F_m (N).
+    pub max_force: f64,
+    /// Contact time t_f (s); `None` when there is no rebound.
+    pub contact_time: Option<f64>,
+    /// Time followed (s): t_f, or the bounded horizon after which "no rebound" was concluded.
+    pub duration: f64,
+    /// Peak indentation z_m (m).
+    pub max_indentation: f64,
+    /// Permanent indentation z_f (m), Eq. 18.
+    pub permanent_indentation: f64,
+    /// F̄_m = F_m/(m v0 ω0).
+    pub max_force_normalized: f64,
+    /// τ_f = ω0 t_f; `None` when there is no rebound.
+    pub contact_time_normalized: Option<f64>,
+    pub normalized: Normalized,
+    pub events: Vec<PhaseEvent>,
+    pub energy: Option<EnergyBudget>,
+    pub history: History,
+}
+
+/// What a solver returns, in normalized units (MODEL.md §5).
+#[derive(Debug, Clone, Default)]
+pub(crate) struct Outcome {
+    pub rebound: bool,
+    /// τ at separation, or at the horizon.
+    pub tau_end: f64,
+    /// ᾱ' at τ_end.
+    pub velocity_end: f64,
+    /// ȳ at τ_end.
+    pub y_end: f64,
+    pub f_max: f64,
+    pub z_max: f64,
+    pub z_f: f64,
+    /// (τ, kind, z̄)
+    pub events: Vec<(f64, EventKind, f64)>,
+    /// Net contact work ∮ F̄ dz̄.
+    pub contact_work: f64,
+    /// ∫ ȳ'²/(2ζ) dτ, when asked for.
+    pub dashpot: Option<f64>,
+    /// (τ, F̄, z̄, ᾱ) at evenly spaced τ.
+    pub samples: Vec<[f64; 4]>,
+}
+
+/// Run one impact with dimensional parameters.
+pub fn simulate(
+    params: &ImpactParams,
+    law: ContactLaw,
+    opts: &SolveOptions,
+) -> Result<ImpactResponse, ParamError> {
+    params.validate()?;
+    if !(opts.rtol > 0.0 && opts.rtol < 1e-2) {
+        return Err(ParamError {
+            field: "rtol",
+            value: opts.rtol,
+            reason: "must lie in (0, 1e-2)",
+        });
+    }
+    let n = params.normalized();
+    let contact = Contact {
+        law,
+        zp_bar: n.zp_bar,
+        kappa: n.kappa,
+    };
+    let method = match (opts.method, law) {
+        (Some(Method::Exact), ContactLaw::Linear) | (None, ContactLaw::Linear) => Method::Exact,
+        (Some(Method::Exact), _) => {
+            return Err(ParamError {
+                field: "method",
+                value: f64::NAN,
+                reason: "the exact solver runs the linear law only",
+            });
+        }
+        _ => Method::Numeric,
+    };
+    let out = match method {
+        Method::Exact => exact::solve(&n, &contact, opts),
+        Method::Numeric => numeric::solve(&n, &contact, opts),
+    };
+    Ok(to_si(params, n, law, method, out))
+}
+
+/// Run one impact from λ, ζ alone (m = K_p = v0 = 1, no flattening).
+pub fn simulate_normalized(
+    lambda: f64,
+    zeta: f64,
+    law: ContactLaw,
+    opts: &SolveOptions,
+) -> Result<ImpactResponse, ParamError> {
+    crate::model::params::validate_lambda_zeta(lambda, zeta)?;
+    simulate(
+        &ImpactParams::from_normalized(lambda, zeta, f64::INFINITY),
+        law,
+        opts,
+    )
+}
+
+fn to_si(
+    p: &ImpactParams,
+    n: Normalized,
+    law: ContactLaw,
+    method: Method,
+    o: Outcome,
+) -> ImpactResponse {
+    let w0 = p.omega0();
+    let (t, z, f) = (1.0 / w0, p.v0 / w0, p.mass * p.v0 * w0);
+    let energy_unit = p.mass * p.v0 * p.v0;
+    let cor = if o.rebound {
+        (-o.velocity_end).max(0.0)
+    } else {
+        0.0
+    };
+    let energy = o.dashpot.map(|d| EnergyBudget {
+        initial_kinetic: 0.5 * energy_unit,
+        final_kinetic: 0.5 * energy_unit * o.velocity_end * o.velocity_end,
+        dashpot: d * energy_unit,
+        contact: o.contact_work * energy_unit,
+        spring: 0.5 * n.lambda * o.y_end * o.y_end * energy_unit,
+    });
+    let mut history = History::default();
+    for s in &o.samples {
+        history.t.push(s[0] * t);
+        history.force.push(s[1] * f);
+        history.indentation.push(s[2] * z);
+        history.displacement.push(s[3] * z);
+    }
+    ImpactResponse {
+        law,
+        method,
+        cor,
+        rebound: o.rebound,
+        max_force: o.f_max * f,
+        contact_time: o.rebound.then_some(o.tau_end * t),
+        duration: o.tau_end * t,
+        max_indentation: o.z_max * z,
+        permanent_indentation: o.z_f * z,
+        max_force_normalized: o.f_max,
+        contact_time_normalized: o.rebound.then_some(o.tau_end),
+        normalized: n,
+        events: o
+            .events
+            .iter()
+            .map(|&(tau, kind, zb)| PhaseEvent {
+                t: tau * t,
+                kind,
+                z: zb * z,
+            })
+            .collect(),
+        energy,
+        history,
+    }
+}

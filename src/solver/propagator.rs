@@ -1,0 +1,301 @@
+//! Exact propagation of one linear phase, w' = A w, w(0) = w0, with A a real 3×3 matrix whose
+//! characteristic polynomial is s³ + a2 s² + a1 s + a0 (all a_i ≥ 0: a passive system).
+//!
+//! Why hand-written: nalgebra's matrix exponential costs microseconds per evaluation, and the
+//! event search evaluates w(τ) dozens of times per impact. Here e^{Aτ} is written through the
+//! interpolating polynomial of e^{sτ} at the eigenvalues (Newton divided differences, Opitz):
+//!     e^{Aτ} = f[s1] I + f[s1,s2] (A − s1 I) + f[s1,s2,s3] (A − s1 I)(A − s2 I),
+//! which is exact for any A, defective ones included (critical damping, ζ = 1 at λ = 0), as long
+//! as the divided differences are formed without cancellation. Coincident pairs are handled by
+//! series (sinh x / x, (eˣ−1)/x); only a near-triple root would cancel, and there the
+//! propagator falls back to nalgebra's matrix exponential.
+
+use super::roots::newton_bracketed;
+use nalgebra::{Complex, Matrix3, Vector3};
+
+type C = Complex<f64>;
+
+/// The eigenvalues of a phase: one real root and either a complex pair or two more reals.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Roots {
+    /// The leftmost real root (the fastest real mode).
+    pub s1: f64,
+    /// Centre of the other two, (s2 + s3)/2.
+    pub centre: f64,
+    /// ((s2 − s3)/2)²: negative for a complex pair (−b²), non-negative for two reals.
+    pub q: f64,
+}
+
+impl Roots {
+    /// All three roots as complex numbers: s1, then the pair (s2 with the non-negative
+    /// imaginary part; for real roots s2 ≤ s3, so that s1 ≤ s2 ≤ s3).
+    pub fn all(&self) -> [C; 3] {
+        let c = C::new(self.centre, 0.0);
+        if self.q < 0.0 {
+            let h = C::new(0.0, (-self.q).sqrt());
+            [C::new(self.s1, 0.0), c + h, c - h]
+        } else {
+            let h = C::new(self.q.sqrt(), 0.0);
+            [C::new(self.s1, 0.0), c - h, c + h]
+        }
+    }
+}
+
+fn eval_cubic(a: [f64; 3], s: C) -> (C, C) {
+    let [a2, a1, a0] = a;
+    let p = ((s + a2) * s + a1) * s + a0;
+    let dp = (s * 3.0 + 2.0 * a2) * s + a1;
+    (p, dp)
+}
+
+fn polish(a: [f64; 3], mut s: C) -> C {
+    for _ in 0..3 {
+        let (p, dp) = eval_cubic(a, s);
+        if dp.norm() == 0.0 {
+            break;
+        }
+        let step = p / dp;
+        s -= step;
+        if step.norm() <= 1e-16 * s.norm() {
+            break;
+        }
+    }
+    s
+}
+
+/// Roots of s³ + a2 s² + a1 s + a0 with a_i ≥ 0.
+pub fn cubic_roots(a: [f64; 3]) -> Roots {
+    let [a2, a1, a0] = a;
+    // A real root in [−B, 0]: p(0) = a0 ≥ 0, and −B lies left of every root (Fujiwara's bound),
+    // so p(−B) < 0. a0 = 0 (λ = 0 or ζ = 0) has the root 0 exactly.
+    let r = if a0 == 0.0 {
+        0.0
+    } else {
+        let bound = 2.0 * a2.max(a1.sqrt()).max((0.5 * a0).cbrt()) * 1.01;
+        let p = |s: f64| (((s + a2) * s + a1) * s + a0, (3.0 * s + 2.0 * a2) * s + a1);
+        newton_bracketed(p, -bound, 0.0)
+    };
+    // Deflate: s³ + a2 s² + a1 s + a0 = (s − r)(s² + p1 s + p0). Backward division
+    // (p0 = −a0/r) is stable when r is the larger root, |r|³ ≥ a0 = |r|·|p0|; forward division
+    // (p1 = a2 + r) when it is the smaller. The pair is then polished on the full cubic.
+    let (p1, p0) = if r != 0.0 && r.abs().powi(3) >= a0 {
+        let p0 = -a0 / r;
+        ((p0 - a1) / r, p0)
+    } else {
+        let p1 = a2 + r;
+        (p1, a1 + r * p1)
+    };
+    let centre = -0.5 * p1;
+    let q = centre * centre - p0;
+    let h = if q < 0.0 {
+        C::new(0.0, (-q).sqrt())
+    } else {
+        C::new(q.sqrt(), 0.0)
+    };
+    let s2 = polish(a, C::new(centre, 0.0) + h);
+    if q < 0.0 {
+        return Roots {
+            s1: r,
+            centre: s2.re,
+            q: -(s2.im * s2.im),
+        };
+    }
+    // Three real roots: the leftmost becomes s1 and `all()` puts the rightmost last, so that
+    // s3 − s1 is the widest spacing and the last divided difference does not cancel.
+    let s3 = polish(a, C::new(centre, 0.0) - h);
+    let mut all = [r, s2.re, s3.re];
+    all.sort_by(f64::total_cmp);
+    Roots {
+        s1: all[0],
+        centre: 0.5 * (all[1] + all[2]),
+        q: (0.5 * (all[2] - all[1])).powi(2),
+    }
+}
+
+/// (eᶻ − 1)/z without cancellation near z = 0.
+fn phi1(z: C) -> C {
+    if z.norm() < 0.5 {
+        // Σ zⁿ/(n+1)!, 20 terms: |z|²⁰/21! < 1e-25
+        let mut term = C::new(1.0, 0.0);
+        let mut sum = term;
+        for n in 1..20 {
+            term = term * z / (n as f64 + 1.0);
+            sum += term;
+        }
+        sum
+    } else {
+        (z.exp() - 1.0) / z
+    }
+}
+
+/// sinh(√q τ)/√q (q ≥ 0) or sin(√−q τ)/√−q (q < 0), continuous through q = 0.
+fn sinhc(q: f64, tau: f64) -> f64 {
+    let x2 = q * tau * tau;
+    if x2.abs() < 0.25 {
+        // τ Σ x²ⁿ/(2n+1)!
+        let mut term = tau;
+        let mut sum = tau;
+        for n in 1..15 {
+            term *= x2 / ((2 * n) as f64 * (2 * n + 1) as f64);
+            sum += term;
+        }
+        sum
+    } else if q > 0.0 {
+        let r = q.sqrt();
+        (r * tau).sinh() / r
+    } else {
+        let r = (-q).sqrt();
+        (r * tau).sin() / r
+    }
+}
+
+#[derive(Debug, Clone)]
+enum Form {
+    /// w(τ) = f[s1] u0 + Re(f[s1,s2] − s2 f[s1,s2,s3]) u1 + Re(f[s1,s2,s3]) A u1.
+    Newton {
+        u0: Vector3<f64>,
+        u1: Vector3<f64>,
+        au1: Vector3<f64>,
+    },
+    /// Near-triple root: nalgebra's matrix exponential.
+    Expm { w0: Vector3<f64> },
+}
+
+/// The exact flow of one linear phase.
+#[derive(Debug, Clone)]
+pub struct Propagator {
+    a: Matrix3<f64>,
+    roots: Roots,
+    form: Form,
+}
+
+impl Propagator {
+    pub fn new(a: Matrix3<f64>, poly: [f64; 3], w0: Vector3<f64>) -> Self {
+        Self::with_roots(a, cubic_roots(poly), w0)
+    }
+
+    /// The same flow started afresh from w0 (roots already known). Re-anchoring along the way
+    /// keeps rounding relative to the current state, not to the start of the phase.
+    pub fn with_roots(a: Matrix3<f64>, roots: Roots, w0: Vector3<f64>) -> Self {
+        let [s1, _, s3] = roots.all();
+        let scale = roots
+            .s1
+            .abs()
+            .max(roots.centre.abs())
+            .max(roots.q.abs().sqrt());
+        let form = if (s3 - s1).norm() <= 1e-4 * scale {
+            Form::Expm { w0 }
+        } else {
+            let u1 = a * w0 - w0 * roots.s1;
+            Form::Newton {
+                u0: w0,
+                u1,
+                au1: a * u1,
+            }
+        };
+        Propagator { a, roots, form }
+    }
+
+    pub fn roots(&self) -> &Roots {
+        &self.roots
+    }
+
+    pub fn matrix(&self) -> &Matrix3<f64> {
+        &self.a
+    }
+
+    /// w(τ) and w'(τ) = A w(τ).
+    pub fn eval(&self, tau: f64) -> (Vector3<f64>, Vector3<f64>) {
+        let w = match &self.form {
+            Form::Newton { u0, u1, au1 } => {
+                let [s1, s2, s3] = self.roots.all();
+                let e1 = (s1.re * tau).exp();
+                let d12 = s2 - s1;
+                let f12 = if (d12 * tau).norm() < 0.5 {
+                    phi1(d12 * tau) * (e1 * tau)
+                } else {
+                    ((s2 * tau).exp() - e1) / d12
+                };
+                let f23 = (self.roots.centre * tau).exp() * sinhc(self.roots.q, tau);
+                let f123 = (C::new(f23, 0.0) - f12) / (s3 - s1);
+                let g1 = (f12 - s2 * f123).re;
+                u0 * e1 + u1 * g1 + au1 * f123.re
+            }
+            Form::Expm { w0 } => (self.a * tau).exp() * w0,
+        };
+        (w, self.a * w)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn check_roots(a: [f64; 3]) {
+        let r = cubic_roots(a);
+        for s in r.all() {
+            let (p, _) = eval_cubic(a, s);
+            let scale = 1.0 + s.norm().powi(3) + a[0] + a[1] * s.norm() + a[2] * s.norm_sqr();
+            assert!(p.norm() < 1e-13 * scale, "root {s} of {a:?}: p = {p}");
+        }
+    }
+
+    #[test]
+    fn roots_of_assorted_cubics() {
+        for &(lambda, zeta) in &[
+            (0.0, 0.5),
+            (0.0, 1.0),
+            (0.0, 3.0),
+            (1.3, 0.16),
+            (0.125, 0.7698),
+            (1e4, 1e4),
+            (1e-4, 1e-4),
+            (1.0, 0.0),
+        ] {
+            for k in [1.0, 7.5] {
+                check_roots([2.0 * zeta * (k + lambda), k, 2.0 * zeta * k * lambda]);
+            }
+        }
+    }
+
+    fn rhs(lambda: f64, zeta: f64, k: f64) -> (Matrix3<f64>, [f64; 3]) {
+        let a = Matrix3::new(
+            0.0,
+            1.0,
+            0.0,
+            -k,
+            0.0,
+            k,
+            2.0 * zeta * k,
+            0.0,
+            -2.0 * zeta * (k + lambda),
+        );
+        (a, [2.0 * zeta * (k + lambda), k, 2.0 * zeta * k * lambda])
+    }
+
+    #[test]
+    fn agrees_with_matrix_exponential() {
+        let w0 = Vector3::new(0.3, -0.7, 0.1);
+        for &(lambda, zeta) in &[
+            (0.0, 0.3),
+            (0.0, 1.0),
+            (0.0, 1.0 + 1e-9),
+            (0.4, 0.61),
+            (1.3, 0.16),
+            (0.125, 0.7698),
+            (2.0, 30.0),
+            (1.0, 0.0),
+        ] {
+            let (a, poly) = rhs(lambda, zeta, 1.0);
+            let p = Propagator::new(a, poly, w0);
+            for tau in [0.0, 0.01, 0.7, 2.0, 5.0] {
+                let exact = (a * tau).exp() * w0;
+                let (w, _) = p.eval(tau);
+                assert!(
+                    (w - exact).norm() < 1e-12,
+                    "λ={lambda} ζ={zeta} τ={tau}: {w} vs {exact}"
+                );
+            }
+        }
+    }
+}

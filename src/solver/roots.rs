@@ -1,0 +1,120 @@
+//! Bracketed root finding for event location (the phase switch z' = 0, the end of contact
+//! F = 0). Why hand-written: both solvers call these inside their event loops with `FnMut`
+//! closures over an interpolant or an exact flow; they must not allocate and must always
+//! terminate with a bracketed answer, which is a dozen lines each.
+
+/// Safeguarded Newton (Numerical Recipes' rtsafe): `f` returns (g, g'); [a, b] must bracket a
+/// sign change. Falls back to bisection whenever Newton would leave the bracket or stall.
+pub fn newton_bracketed(mut f: impl FnMut(f64) -> (f64, f64), mut a: f64, mut b: f64) -> f64 {
+    let (ga, _) = f(a);
+    let rising = ga < 0.0;
+    let mut x = 0.5 * (a + b);
+    let mut last_step = (b - a).abs();
+    for _ in 0..100 {
+        let (g, dg) = f(x);
+        if g == 0.0 {
+            return x;
+        }
+        // keep the bracket [a, b] with g(a) on the starting side
+        if (g < 0.0) == rising {
+            a = x;
+        } else {
+            b = x;
+        }
+        let newton = x - g / dg;
+        let inside = (newton - a) * (newton - b) < 0.0 && dg != 0.0;
+        let step = if inside && (g / dg).abs() < 0.5 * last_step {
+            x - newton
+        } else {
+            x - 0.5 * (a + b)
+        };
+        last_step = step.abs();
+        x -= step;
+        if step.abs() <= 2.0 * f64::EPSILON * x.abs().max(f64::MIN_POSITIVE)
+            || (b - a).abs() <= 4.0 * f64::EPSILON * x.abs()
+        {
+            return x;
+        }
+    }
+    x
+}
+
+/// Brent–Dekker on [a, b] with g(a), g(b) of opposite signs (or one zero).
+pub fn brent(mut f: impl FnMut(f64) -> f64, a: f64, b: f64, fa: f64, fb: f64, tol: f64) -> f64 {
+    let (mut a, mut b, mut fa, mut fb) = (a, b, fa, fb);
+    if fa == 0.0 {
+        return a;
+    }
+    if fb == 0.0 {
+        return b;
+    }
+    let (mut c, mut fc) = (a, fa);
+    let mut d = b - a;
+    let mut e = d;
+    for _ in 0..200 {
+        if (fb > 0.0) == (fc > 0.0) {
+            c = a;
+            fc = fa;
+            d = b - a;
+            e = d;
+        }
+        if fc.abs() < fb.abs() {
+            a = b;
+            b = c;
+            c = a;
+            fa = fb;
+            fb = fc;
+            fc = fa;
+        }
+        let tol1 = 2.0 * f64::EPSILON * b.abs() + 0.5 * tol;
+        let m = 0.5 * (c - b);
+        if m.abs() <= tol1 || fb == 0.0 {
+            return b;
+        }
+        if e.abs() >= tol1 && fa.abs() > fb.abs() {
+            let s = fb / fa;
+            let (mut p, mut q) = if a == c {
+                (2.0 * m * s, 1.0 - s)
+            } else {
+                let q0 = fa / fc;
+                let r = fb / fc;
+                (
+                    s * (2.0 * m * q0 * (q0 - r) - (b - a) * (r - 1.0)),
+                    (q0 - 1.0) * (r - 1.0) * (s - 1.0),
+                )
+            };
+            if p > 0.0 {
+                q = -q;
+            }
+            p = p.abs();
+            if 2.0 * p < (3.0 * m * q - (tol1 * q).abs()).min((e * q).abs()) {
+                e = d;
+                d = p / q;
+            } else {
+                d = m;
+                e = d;
+            }
+        } else {
+            d = m;
+            e = d;
+        }
+        a = b;
+        fa = fb;
+        b += if d.abs() > tol1 { d } else { tol1.copysign(m) };
+        fb = f(b);
+    }
+    b
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn both_find_cos_root() {
+        let r = newton_bracketed(|x| (x.cos(), -x.sin()), 1.0, 2.0);
+        assert!((r - std::f64::consts::FRAC_PI_2).abs() < 1e-15);
+        let r = brent(f64::cos, 1.0, 2.0, 1f64.cos(), 2f64.cos(), 1e-15);
+        assert!((r - std::f64::consts::FRAC_PI_2).abs() < 1e-14);
+    }
+}
