@@ -5,7 +5,9 @@
 //!
 //! The physics core (`model`, `solver`) does no I/O: plain data in, plain data out.
 
+pub mod analysis;
 pub mod model;
+pub mod preset;
 pub mod solver;
 
 pub use model::contact::ContactLaw;

@@ -1,0 +1,417 @@
+//! Ball presets: measured data, material data and the parameters the paper adopted
+//! (MODEL.md §7), in a TOML schema documented in the README. Parsing only: no file I/O here.
+
+use crate::model::contact::ContactLaw;
+use crate::model::materials::{self, Layer};
+use crate::model::params::ImpactParams;
+use serde::{Deserialize, Serialize};
+use std::fmt;
+
+/// The three balls of the paper, embedded in the binary.
+pub const EMBEDDED: [(&str, &str); 3] = [
+    ("superball", include_str!("../presets/superball.toml")),
+    ("golf", include_str!("../presets/golf.toml")),
+    ("baseball", include_str!("../presets/baseball.toml")),
+];
+
+/// Which parameter set the model runs on.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum ParamSource {
+    /// The set the paper adopted (the default: it is what the paper ran).
+    #[default]
+    Adopted,
+    /// c, z_p, K_p, K_h derived from the material data (Eqs. 5, 8, 15–20, 30–31); K_r, which
+    /// no formula gives, from the adopted (fitted) set.
+    Materials,
+}
+
+impl ParamSource {
+    pub fn name(self) -> &'static str {
+        match self {
+            ParamSource::Adopted => "adopted",
+            ParamSource::Materials => "materials",
+        }
+    }
+}
+
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum MaterialKind {
+    /// Flattens: p0 = E z_p / R (Eq. 20).
+    #[default]
+    Elastomer,
+    /// Yields: p0 = 2.2 S_y.
+    Metal,
+}
+
+/// What was measured (Cross 1999 for the embedded balls). SI units.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Measured {
+    pub mass: f64,
+    pub radius: f64,
+    pub v0: f64,
+    pub cor: Option<f64>,
+    pub max_force: Option<f64>,
+    pub contact_time: Option<f64>,
+}
+
+/// Material data. SI units.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Material {
+    #[serde(default)]
+    pub kind: MaterialKind,
+    /// Young's modulus for contact; from the layers by Eq. 30 when absent.
+    pub modulus: Option<f64>,
+    pub poisson: f64,
+    /// Modulus along the surface (Rayleigh waves); from the surface layers (Eq. 31) or the
+    /// contact modulus when absent.
+    pub surface_modulus: Option<f64>,
+    pub surface_poisson: Option<f64>,
+    /// Density; from m and R when absent (or from the surface layers, Eq. 31).
+    pub density: Option<f64>,
+    /// Yield strength S_y (metals).
+    pub yield_strength: Option<f64>,
+    #[serde(default)]
+    pub layers: Vec<Layer>,
+}
+
+/// The parameters the paper adopted. K_r is required: no formula gives it (MODEL.md §4).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Adopted {
+    pub damping: Option<f64>,
+    pub z_p: Option<f64>,
+    pub k_p: Option<f64>,
+    pub k_r: f64,
+}
+
+/// A ball.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Preset {
+    pub name: String,
+    #[serde(default)]
+    pub description: String,
+    #[serde(default = "default_law")]
+    pub law: ContactLaw,
+    #[serde(default)]
+    pub parameters: ParamSource,
+    pub measured: Measured,
+    pub material: Material,
+    pub adopted: Adopted,
+}
+
+fn default_law() -> ContactLaw {
+    ContactLaw::Linear
+}
+
+/// Parameters derived from the material data (MODEL.md §4).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Derived {
+    pub density: f64,
+    pub contact_modulus: f64,
+    pub e_star: f64,
+    pub k_h: f64,
+    pub z_p: f64,
+    pub k_p: f64,
+    pub damping: f64,
+    pub surface_modulus: f64,
+    pub surface_density: f64,
+}
+
+/// A preset that cannot be used: where, and why.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PresetError {
+    /// A file path, or `embedded:NAME`.
+    pub origin: String,
+    /// 1-based line and column, when known.
+    pub position: Option<(usize, usize)>,
+    pub message: String,
+}
+
+impl fmt::Display for PresetError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self.position {
+            Some((l, c)) => write!(f, "{}:{l}:{c}: {}", self.origin, self.message),
+            None => write!(f, "{}: {}", self.origin, self.message),
+        }
+    }
+}
+
+impl std::error::Error for PresetError {}
+
+/// 1-based (line, column) of a byte offset.
+fn line_col(text: &str, offset: usize) -> (usize, usize) {
+    let before = &text[..offset.min(text.len())];
+    let line = before.matches('\n').count() + 1;
+    let col = before.rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1;
+    (line, col)
+}
+
+/// Where `key` is set inside `[table]` (or at the top level for ""), for semantic errors.
+fn locate(text: &str, table: &str, key: &str) -> Option<(usize, usize)> {
+    let mut current = String::new();
+    for (i, line) in text.lines().enumerate() {
+        let t = line.trim();
+        if t.starts_with('[') {
+            current = t.trim_matches(|c| c == '[' || c == ']').trim().to_string();
+            continue;
+        }
+        let lhs = t.split('=').next().unwrap_or("").trim();
+        if current == table && lhs == key && t.contains('=') {
+            let col = line.find(key).unwrap_or(0) + 1;
+            return Some((i + 1, col));
+        }
+    }
+    None
+}
+
+impl Preset {
+    /// Parse and validate a preset; errors carry file:line:column.
+    pub fn parse(text: &str, origin: &str) -> Result<Preset, PresetError> {
+        let preset: Preset = toml::from_str(text).map_err(|e| PresetError {
+            origin: origin.to_string(),
+            position: e.span().map(|s| line_col(text, s.start)),
+            message: e.message().trim().replace('\n', " "),
+        })?;
+        preset
+            .check()
+            .map_err(|(table, key, message)| PresetError {
+                origin: origin.to_string(),
+                position: locate(text, table, key).or_else(|| locate(text, "", table)),
+                message: if table.is_empty() {
+                    format!("{key}: {message}")
+                } else {
+                    format!("{table}.{key}: {message}")
+                },
+            })?;
+        Ok(preset)
+    }
+
+    /// The embedded presets, in the order superball, golf, baseball.
+    pub fn embedded() -> Vec<Preset> {
+        EMBEDDED
+            .iter()
+            .map(|(name, text)| {
+                Preset::parse(text, &format!("embedded:{name}"))
+                    .expect("embedded presets are tested")
+            })
+            .collect()
+    }
+
+    /// Semantic checks: (table, key, message) of the first bad field.
+    fn check(&self) -> Result<(), (&'static str, &'static str, String)> {
+        fn positive(
+            table: &'static str,
+            key: &'static str,
+            v: f64,
+        ) -> Result<(), (&'static str, &'static str, String)> {
+            if v.is_finite() && v > 0.0 && v < 1e15 {
+                Ok(())
+            } else {
+                Err((
+                    table,
+                    key,
+                    format!("must be a positive finite number, got {v}"),
+                ))
+            }
+        }
+        let opt = |table, key, v: Option<f64>| v.map_or(Ok(()), |v| positive(table, key, v));
+        if self.name.trim().is_empty() || self.name.chars().any(|c| c.is_whitespace() || c == '/') {
+            return Err((
+                "",
+                "name",
+                "must be a non-empty word without spaces or '/'".into(),
+            ));
+        }
+        let m = &self.measured;
+        positive("measured", "mass", m.mass)?;
+        positive("measured", "radius", m.radius)?;
+        positive("measured", "v0", m.v0)?;
+        if let Some(e) = m.cor
+            && !(e.is_finite() && (0.0..=1.0).contains(&e))
+        {
+            return Err(("measured", "cor", format!("must lie in [0, 1], got {e}")));
+        }
+        opt("measured", "max_force", m.max_force)?;
+        opt("measured", "contact_time", m.contact_time)?;
+        let mat = &self.material;
+        for (key, nu) in [
+            ("poisson", Some(mat.poisson)),
+            ("surface_poisson", mat.surface_poisson),
+        ] {
+            if let Some(nu) = nu
+                && !(nu.is_finite() && (0.0..=0.5).contains(&nu))
+            {
+                return Err(("material", key, format!("must lie in [0, 0.5], got {nu}")));
+            }
+        }
+        opt("material", "modulus", mat.modulus)?;
+        opt("material", "surface_modulus", mat.surface_modulus)?;
+        opt("material", "density", mat.density)?;
+        opt("material", "yield_strength", mat.yield_strength)?;
+        for l in &mat.layers {
+            positive("material.layers", "thickness", l.thickness)?;
+            positive("material.layers", "modulus", l.modulus)?;
+            opt("material.layers", "density", l.density)?;
+        }
+        if mat.modulus.is_none() && mat.layers.is_empty() {
+            return Err((
+                "material",
+                "modulus",
+                "is required when there are no layers".into(),
+            ));
+        }
+        if mat.kind == MaterialKind::Metal && mat.yield_strength.is_none() {
+            return Err((
+                "material",
+                "yield_strength",
+                "is required for kind = \"metal\"".into(),
+            ));
+        }
+        let a = &self.adopted;
+        opt("adopted", "damping", a.damping)?;
+        opt("adopted", "z_p", a.z_p)?;
+        opt("adopted", "k_p", a.k_p)?;
+        if !(a.k_r.is_finite() && a.k_r >= 0.0 && a.k_r < 1e15) {
+            return Err((
+                "adopted",
+                "k_r",
+                format!("must be a non-negative finite number, got {}", a.k_r),
+            ));
+        }
+        if self.parameters == ParamSource::Adopted {
+            for (key, v) in [("damping", a.damping), ("z_p", a.z_p), ("k_p", a.k_p)] {
+                if v.is_none() {
+                    return Err((
+                        "adopted",
+                        key,
+                        "is required when parameters = \"adopted\"".into(),
+                    ));
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// Parameters from the material data (MODEL.md §4).
+    pub fn derived(&self) -> Derived {
+        let (m, r, mat) = (self.measured.mass, self.measured.radius, &self.material);
+        let density = mat.density.unwrap_or_else(|| materials::density(m, r));
+        let contact_modulus = mat
+            .modulus
+            .unwrap_or_else(|| materials::layered_contact_modulus(r, &mat.layers));
+        let e_star = materials::effective_modulus(contact_modulus, mat.poisson);
+        let flat = match mat.kind {
+            MaterialKind::Elastomer => materials::elastomer_flattening(e_star, contact_modulus, r),
+            MaterialKind::Metal => {
+                materials::metal_plastic(e_star, r, mat.yield_strength.unwrap_or(f64::NAN))
+            }
+        };
+        let layered = materials::layered_surface(&mat.layers);
+        let surface_modulus = mat
+            .surface_modulus
+            .or(layered.map(|l| l.0))
+            .unwrap_or(contact_modulus);
+        let surface_density = layered.map(|l| l.1).filter(|&d| d > 0.0).unwrap_or(density);
+        let surface_poisson = mat.surface_poisson.unwrap_or(mat.poisson);
+        Derived {
+            density,
+            contact_modulus,
+            e_star,
+            k_h: materials::hertz_stiffness(e_star, r),
+            z_p: flat.z_p,
+            k_p: flat.k_p,
+            damping: materials::rayleigh_damping(
+                r,
+                surface_density,
+                surface_modulus,
+                surface_poisson,
+            ),
+            surface_modulus,
+            surface_density,
+        }
+    }
+
+    /// The impact parameters from the chosen set. With the adopted set K_h follows Eq. 16,
+    /// K_h = K_p / (1.5 √z_p), so the Hertz phase meets the linear one with matching slope.
+    pub fn params_from(&self, source: ParamSource) -> ImpactParams {
+        let (mass, v0) = (self.measured.mass, self.measured.v0);
+        match source {
+            ParamSource::Adopted => {
+                let a = &self.adopted;
+                let (k_p, z_p) = (a.k_p.unwrap_or(f64::NAN), a.z_p.unwrap_or(f64::NAN));
+                ImpactParams {
+                    mass,
+                    k_p,
+                    damping: a.damping.unwrap_or(f64::NAN),
+                    k_r: a.k_r,
+                    z_p,
+                    k_h: ImpactParams::k_h_matching(k_p, z_p),
+                    v0,
+                }
+            }
+            ParamSource::Materials => {
+                let d = self.derived();
+                ImpactParams {
+                    mass,
+                    k_p: d.k_p,
+                    damping: d.damping,
+                    k_r: self.adopted.k_r,
+                    z_p: d.z_p,
+                    k_h: d.k_h,
+                    v0,
+                }
+            }
+        }
+    }
+
+    /// The impact parameters the preset runs on (its `parameters` choice).
+    pub fn params(&self) -> ImpactParams {
+        self.params_from(self.parameters)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn embedded_presets_parse() {
+        let all = Preset::embedded();
+        assert_eq!(
+            all.iter().map(|p| p.name.as_str()).collect::<Vec<_>>(),
+            ["superball", "golf", "baseball"]
+        );
+        for p in &all {
+            assert!(p.params().validate().is_ok(), "{}", p.name);
+            assert!(
+                p.params_from(ParamSource::Materials).validate().is_ok(),
+                "{}",
+                p.name
+            );
+        }
+    }
+
+    #[test]
+    fn errors_point_at_file_line_column() {
+        let bad = EMBEDDED[0].1.replace("mass = 0.0374", "mass = \"heavy\"");
+        let e = Preset::parse(&bad, "x.toml").unwrap_err();
+        assert_eq!(e.position.map(|p| p.0), Some(9), "{e}");
+        assert!(e.to_string().starts_with("x.toml:9:8: "), "{e}");
+        let neg = EMBEDDED[0]
+            .1
+            .replace("radius = 0.02155", "radius = -0.02155");
+        let e = Preset::parse(&neg, "x.toml").unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "x.toml:10:1: measured.radius: must be a positive finite number, got -0.02155"
+        );
+        let unknown = EMBEDDED[0].1.replace("[adopted]", "[adopted]\nspring = 3");
+        let e = Preset::parse(&unknown, "x.toml").unwrap_err();
+        assert!(e.to_string().contains("spring"), "{e}");
+    }
+}

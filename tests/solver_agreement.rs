@@ -1,0 +1,106 @@
+//! The two independent solvers agree, the energy balance closes, and COR grows with λ.
+
+use bouncelab::{ContactLaw, ImpactParams, Method, SolveOptions, simulate};
+
+fn run(p: &ImpactParams, law: ContactLaw, method: Method) -> bouncelab::ImpactResponse {
+    let o = SolveOptions {
+        rtol: 1e-12,
+        ..SolveOptions::default()
+    }
+    .with_method(method)
+    .with_energy();
+    simulate(p, law, &o).unwrap()
+}
+
+const LAMBDAS: [f64; 5] = [0.0, 0.4, 1.0, 1.3, 5.0];
+const ZETAS: [f64; 7] = [0.02, 0.07, 0.16, 0.61, 1.0, 3.0, 30.0];
+
+/// Exact (sum of exponentials) vs DOPRI5/Radau5 on the linear law: e, F̄_m, τ_f to 1e-8,
+/// without and with flattening (z̄_p = 0.3: the ball leaves flattened).
+#[test]
+fn exact_and_numeric_agree_on_a_grid() {
+    for zp in [f64::INFINITY, 0.3] {
+        for lambda in LAMBDAS {
+            for zeta in ZETAS {
+                let p = ImpactParams::from_normalized(lambda, zeta, zp);
+                let (a, b) = (
+                    run(&p, ContactLaw::Linear, Method::Exact),
+                    run(&p, ContactLaw::Linear, Method::Numeric),
+                );
+                let ctx = format!("λ={lambda} ζ={zeta} z̄p={zp}");
+                assert_eq!(a.rebound, b.rebound, "{ctx}");
+                assert!(
+                    (a.cor - b.cor).abs() < 1e-8,
+                    "{ctx}: e {} vs {}",
+                    a.cor,
+                    b.cor
+                );
+                assert!(
+                    (a.max_force_normalized - b.max_force_normalized).abs() < 1e-8,
+                    "{ctx}: F̄m"
+                );
+                if let (Some(ta), Some(tb)) = (a.contact_time_normalized, b.contact_time_normalized)
+                {
+                    assert!(
+                        (ta - tb).abs() < 1e-8 * ta.max(1.0),
+                        "{ctx}: τf {ta} vs {tb}"
+                    );
+                }
+                assert!(
+                    (a.permanent_indentation - b.permanent_indentation).abs() < 1e-8,
+                    "{ctx}: z_f"
+                );
+            }
+        }
+    }
+}
+
+/// ½mv0² − ½mv_f² = dashpot + contact + spring, to 1e-9 of ½mv0², for every law and both
+/// solvers. The dashpot term is integrated (quadrature / an extra ODE state), the contact term
+/// comes from the law's closed forms, the spring term from y at separation.
+#[test]
+fn energy_balance_closes() {
+    for zp in [f64::INFINITY, 0.3, 2.0] {
+        for lambda in LAMBDAS {
+            for zeta in ZETAS {
+                let p = ImpactParams::from_normalized(lambda, zeta, zp);
+                let mut runs = vec![
+                    run(&p, ContactLaw::Linear, Method::Exact),
+                    run(&p, ContactLaw::Linear, Method::Numeric),
+                ];
+                if zp.is_finite() {
+                    runs.push(run(&p, ContactLaw::ElasticPlastic, Method::Numeric));
+                    runs.push(run(&p, ContactLaw::Hertz, Method::Numeric));
+                }
+                for r in runs {
+                    let e = r.energy.unwrap();
+                    assert!(
+                        e.relative_residual() < 1e-9,
+                        "λ={lambda} ζ={zeta} z̄p={zp} {} {:?}: residual {:e} {e:?}",
+                        r.law,
+                        r.method,
+                        e.relative_residual()
+                    );
+                }
+            }
+        }
+    }
+}
+
+/// At fixed ζ the COR increases with λ (MODEL.md §4: the fit of K_r is a monotone root find).
+#[test]
+fn cor_increases_with_lambda() {
+    for zeta in [0.05, 0.16, 0.61, 2.0, 10.0] {
+        let mut last = -1.0;
+        for i in 0..60 {
+            let lambda = 0.05 * i as f64;
+            let r = run(
+                &ImpactParams::from_normalized(lambda, zeta, f64::INFINITY),
+                ContactLaw::Linear,
+                Method::Exact,
+            );
+            assert!(r.cor > last, "ζ={zeta} λ={lambda}: {} after {last}", r.cor);
+            last = r.cor;
+        }
+    }
+}
