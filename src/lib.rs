@@ -6,9 +6,11 @@
 //! The physics core (`model`, `solver`) does no I/O: plain data in, plain data out.
 
 pub mod analysis;
+pub mod cli;
 pub mod model;
 pub mod preset;
 pub mod solver;
+pub mod tui;
 
 pub use model::contact::ContactLaw;
 pub use model::params::{ImpactParams, Normalized, ParamError};

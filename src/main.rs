@@ -1,3 +1,7 @@
-fn main() {
-    println!("Hello, world!");
+//! The `bouncelab` binary: the explorer with no subcommand, the headless command line otherwise.
+
+use std::process::ExitCode;
+
+fn main() -> ExitCode {
+    bouncelab::cli::main()
 }
