@@ -1,0 +1,82 @@
+//! Speed of the physics core (medians recorded in BENCHMARKS.md).
+//! Run: `cargo bench --bench solver`.
+
+use bouncelab::analysis::sweep::{cor_vs_zeta, log_space};
+use bouncelab::preset::Preset;
+use bouncelab::{ContactLaw, ImpactParams, SolveOptions, simulate};
+use divan::black_box;
+
+fn main() {
+    divan::main();
+}
+
+/// One linearized impact, summary only (target: median ≤ 2 µs). Superball's adopted set.
+#[divan::bench]
+fn linear_impact_summary(b: divan::Bencher) {
+    let p = Preset::embedded()[0].params();
+    b.bench(|| {
+        simulate(black_box(&p), ContactLaw::Linear, &SolveOptions::default())
+            .unwrap()
+            .cor
+    });
+}
+
+/// One linearized impact with the ball flattening (two distinct phases, z_f > 0).
+#[divan::bench]
+fn linear_impact_flattening() -> f64 {
+    let p = ImpactParams::from_normalized(1.3, 0.16, 0.3);
+    simulate(black_box(&p), ContactLaw::Linear, &SolveOptions::default())
+        .unwrap()
+        .cor
+}
+
+/// A 4 × 400-point COR-vs-ζ sweep, ζ log-spaced over 0.01 … 100 (target: ≤ 3 ms).
+#[divan::bench]
+fn cor_zeta_sweep_4x400() -> usize {
+    let zetas = log_space(0.01, 100.0, 400);
+    cor_vs_zeta(black_box(&[0.0, 0.4, 1.0, 1.3]), &zetas, ContactLaw::Linear)
+        .unwrap()
+        .len()
+}
+
+/// One elastic–fully-plastic impact at rtol 1e-9 (target: ≤ 50 µs). Superball, hit at 3× its
+/// measured speed so that it goes well past z_p.
+#[divan::bench]
+fn elastic_plastic_impact(b: divan::Bencher) {
+    let p = Preset::embedded()[0].params();
+    let p = ImpactParams {
+        v0: 3.0 * p.v0,
+        ..p
+    };
+    let o = SolveOptions {
+        rtol: 1e-9,
+        ..SolveOptions::default()
+    };
+    b.bench(|| {
+        simulate(black_box(&p), ContactLaw::ElasticPlastic, &o)
+            .unwrap()
+            .cor
+    });
+}
+
+/// The same elastic–fully-plastic impact with a 400-sample history (what the explorer asks).
+#[divan::bench]
+fn elastic_plastic_with_history(b: divan::Bencher) {
+    let p = Preset::embedded()[0].params();
+    let p = ImpactParams {
+        v0: 3.0 * p.v0,
+        ..p
+    };
+    let o = SolveOptions {
+        rtol: 1e-9,
+        ..SolveOptions::default()
+    }
+    .with_samples(400);
+    b.bench(|| {
+        simulate(black_box(&p), ContactLaw::ElasticPlastic, &o)
+            .unwrap()
+            .history
+            .t
+            .len()
+    });
+}
