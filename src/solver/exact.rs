@@ -10,7 +10,7 @@
 //! separation), z̄ = z̄_m (reload).
 
 use super::propagator::{Propagator, Roots};
-use super::roots::newton_bracketed;
+use super::roots::newton_bracketed_from;
 use super::{EventKind, Outcome, SolveOptions};
 use crate::model::contact::{Contact, Unloading};
 use crate::model::params::Normalized;
@@ -66,64 +66,108 @@ impl Watch {
     }
 }
 
-/// Step length at τ: one time constant of the fastest mode still alive (e^{Re s τ} > e^{−36});
-/// when only real modes are alive the flow has no oscillation to skip over, so the step may
-/// also grow with τ, but never past two time constants of the slowest mode: the Newton form
-/// sums terms that do not all decay, and over a longer step their cancellation would eat the
-/// relative precision of a state that has.
-fn step_size(roots: &Roots, tau: f64) -> f64 {
-    let all = roots.all();
-    let scale = all.iter().map(|s| s.norm()).fold(0.0, f64::max);
-    let mut fastest: f64 = 0.0;
-    let mut slowest = f64::INFINITY;
-    let mut oscillating = false;
-    for (i, s) in all.iter().enumerate() {
-        if s.norm() <= 1e-12 * scale {
-            continue;
-        }
-        slowest = slowest.min(s.re.abs());
-        if s.re * tau < -36.0 {
-            continue;
-        }
-        fastest = fastest.max(s.norm());
-        oscillating |= i > 0 && roots.q < 0.0;
-    }
-    let h = if fastest > 0.0 {
-        1.0 / fastest
-    } else {
-        tau.max(1.0)
-    };
-    let h = if oscillating { h } else { h.max(0.25 * tau) };
-    if slowest > 0.0 {
-        h.min(2.0 / slowest)
-    } else {
-        h
-    }
+/// The time scales of a phase's modes, worked out once per phase.
+struct Modes {
+    /// (|s|, Re s, part of an oscillating pair) for each mode that enters z̄: modes with s = 0
+    /// (λ = 0) carry w1 = w3... in the (z̄, ᾱ', ȳ) state they have no z̄ component at all.
+    live: [(f64, f64, bool); 3],
+    count: usize,
+    /// Smallest |Re s| among them.
+    slowest: f64,
+    /// The time after which no event can come (see `settle_time`), if any.
+    settle: Option<f64>,
 }
 
-/// The time after which no event can come: the slowest contributing mode is real and every
-/// other has decayed relative to it by e^{−70}. `None` while an oscillation dominates the tail.
-/// Modes with s = 0 (λ = 0) carry w1 = w3, w2 = 0 and so never enter z̄ or its rates.
-fn settle_time(roots: &Roots) -> Option<f64> {
-    let all = roots.all();
-    let scale = all.iter().map(|s| s.norm()).fold(0.0, f64::max);
-    let mut live: Vec<(f64, bool)> = all
-        .iter()
-        .enumerate()
-        .filter(|(_, s)| s.norm() > 1e-12 * scale)
-        .map(|(i, s)| (s.re, i > 0 && roots.q < 0.0))
-        .collect();
-    live.sort_by(|a, b| b.0.total_cmp(&a.0));
-    let &(slow, complex) = live.first()?;
-    if complex {
-        return None;
+impl Modes {
+    fn new(roots: &Roots) -> Self {
+        let all = roots.all();
+        let scale = all.iter().map(|s| s.norm()).fold(0.0, f64::max);
+        let mut live = [(0.0, 0.0, false); 3];
+        let mut count = 0;
+        for (i, s) in all.iter().enumerate() {
+            if s.norm() > 1e-12 * scale {
+                live[count] = (s.norm(), s.re, i > 0 && roots.q < 0.0);
+                count += 1;
+            }
+        }
+        let slowest = live[..count]
+            .iter()
+            .map(|m| m.1.abs())
+            .fold(f64::INFINITY, f64::min);
+        let mut modes = Modes {
+            live,
+            count,
+            slowest,
+            settle: None,
+        };
+        modes.settle = modes.settle_time(scale);
+        modes
     }
-    // Past e^{−600} of its start the slowest mode is far below anything physical (and the
-    // faster ones underflow to exact zeros, which must not read as crossings).
-    let floor = 600.0 / slow.abs();
-    match live.iter().find(|m| m.0 < slow - 1e-9 * scale) {
-        Some(next) => Some((70.0 / (slow - next.0)).min(floor)),
-        None => Some(floor),
+
+    /// Step length at τ. Modes with e^{Re s τ} < e^{−36} are gone. An oscillating pair limits
+    /// the step to one time constant (a quarter period at most). A fastest mode that is real
+    /// only decays: a monotone exponential plus what the slower modes do over one of their own
+    /// time constants has a monotone derivative, so at most one extremum per step (which
+    /// `crossing_in` checks), and the step may double with τ up to the next mode's time
+    /// constant. Never past two time constants of the slowest mode: the Newton form sums terms
+    /// that do not all decay, and over a longer step their cancellation would eat the relative
+    /// precision of a state that has.
+    fn step(&self, tau: f64) -> f64 {
+        let mut first: Option<(f64, bool)> = None; // fastest alive: (|s|, oscillating)
+        let mut second: f64 = 0.0; // |s| of the next fastest alive, other than its pair
+        for &(norm, re, osc) in &self.live[..self.count] {
+            if re * tau < -36.0 {
+                continue;
+            }
+            match first {
+                Some((n, o)) if norm > n => {
+                    if !(o && osc) {
+                        second = second.max(n);
+                    }
+                    first = Some((norm, osc));
+                }
+                Some((n, o)) => {
+                    if !(o && osc && norm == n) {
+                        second = second.max(norm);
+                    }
+                }
+                None => first = Some((norm, osc)),
+            }
+        }
+        let h = match first {
+            None => tau.max(1.0),
+            Some((n, true)) => 1.0 / n,
+            Some((n, false)) if second > 0.0 => (1.0 / n).max(tau).min(1.0 / second),
+            Some((n, false)) => (1.0 / n).max(tau),
+        };
+        if self.slowest > 0.0 && self.slowest.is_finite() {
+            h.min(2.0 / self.slowest)
+        } else {
+            h
+        }
+    }
+
+    /// The time after which no event can come: the slowest mode is real and every other has
+    /// decayed relative to it by e^{−70}, or it has itself fallen below e^{−600} (the faster
+    /// ones then underflow to exact zeros, which must not read as crossings). `None` while an
+    /// oscillation dominates the tail.
+    fn settle_time(&self, scale: f64) -> Option<f64> {
+        let live = &self.live[..self.count];
+        let &(_, slow, complex) = live.iter().max_by(|a, b| a.1.total_cmp(&b.1))?;
+        if complex {
+            return None;
+        }
+        let floor = 600.0 / slow.abs();
+        let next = live
+            .iter()
+            .map(|m| m.1)
+            .filter(|&re| re < slow - 1e-9 * scale)
+            .fold(f64::NEG_INFINITY, f64::max);
+        if next.is_finite() {
+            Some((70.0 / (slow - next)).min(floor))
+        } else {
+            Some(floor)
+        }
     }
 }
 
@@ -141,35 +185,22 @@ fn crossing_in(
         let (g, d, dd) = watch.eval(&f(t));
         (sign * g, sign * d, sign * dd)
     };
+    let value = |f: &mut dyn FnMut(f64) -> Jet, t: f64| {
+        let (v, d, _) = g(f, t);
+        (v, d)
+    };
     if ga < 0.0 && gb >= 0.0 {
-        return Some(newton_bracketed(
-            |t| {
-                let (v, d, _) = g(f, t);
-                (v, d)
-            },
-            ta,
-            tb,
-        ));
+        return Some(newton_bracketed_from(|t| value(f, t), (ta, ga), (tb, gb)));
     }
     if ga < 0.0 && gb < 0.0 && da > 0.0 && db < 0.0 {
-        let tm = newton_bracketed(
-            |t| {
-                let (_, d, dd) = g(f, t);
-                (d, dd)
-            },
-            ta,
-            tb,
-        );
+        let rate = |t| {
+            let (_, d, dd) = g(f, t);
+            (d, dd)
+        };
+        let tm = newton_bracketed_from(rate, (ta, da), (tb, db));
         let (gm, _, _) = g(f, tm);
         if gm > 1e-14 * (ga.abs() + gb.abs()) {
-            return Some(newton_bracketed(
-                |t| {
-                    let (v, d, _) = g(f, t);
-                    (v, d)
-                },
-                ta,
-                tm,
-            ));
+            return Some(newton_bracketed_from(|t| value(f, t), (ta, ga), (tm, gm)));
         }
     }
     None
@@ -187,26 +218,33 @@ fn eval_anchored(anchors: &Anchors, tau: f64) -> (Vector3<f64>, Vector3<f64>) {
 }
 
 /// The first event among `watches` in a phase, or the τ at which none can come any more.
-/// Returns the local τ, the event's index, and the anchors laid down on the way.
-fn search(first: Propagator, watches: &[Watch]) -> (f64, Option<usize>, Anchors) {
+/// Returns the local τ, the event's index, and the anchors laid down on the way (all of them
+/// when `keep` — for sampling and the energy audit — else only the last).
+fn search(first: Propagator, watches: &[Watch], keep: bool) -> (f64, Option<usize>, Anchors) {
+    debug_assert!(watches.len() <= 2, "a phase watches at most two events");
     let roots = *first.roots();
     let a = *first.matrix();
-    let settle = settle_time(&roots);
-    let mut anchors: Anchors = vec![(0.0, first)];
-    let values = |j: &Jet, t: f64| -> Vec<(f64, f64, f64)> {
-        watches
-            .iter()
-            .map(|w| {
-                let (g, d, _) = w.eval(j);
-                (t, g, d)
-            })
-            .collect()
+    let modes = Modes::new(&roots);
+    let values = |j: &Jet, t: f64| {
+        let mut v = [(t, 0.0, 0.0); 2];
+        for (slot, w) in v.iter_mut().zip(watches) {
+            let (g, d, _) = w.eval(j);
+            *slot = (t, g, d);
+        }
+        v
     };
     let mut ta = 0.0;
-    let mut va = values(&jet(&anchors[0].1, &a, 0.0), 0.0);
+    let mut va = values(&jet(&first, &a, 0.0), 0.0);
+    // the anchor in use; earlier ones are kept only when asked (no allocation otherwise)
+    let mut current = (0.0, first);
+    let mut anchors: Anchors = Vec::new();
+    let finish = |current, anchors: &mut Anchors| {
+        anchors.push(current);
+        std::mem::take(anchors)
+    };
     for _ in 0..MAX_STEPS {
-        let tb = ta + step_size(&roots, ta);
-        let (t0, p) = anchors.last().expect("at least one anchor");
+        let tb = ta + modes.step(ta);
+        let (t0, p) = &current;
         let mut f = |t: f64| jet(p, &a, t - t0);
         let jb = f(tb);
         let vb = values(&jb, tb);
@@ -219,17 +257,20 @@ fn search(first: Propagator, watches: &[Watch]) -> (f64, Option<usize>, Anchors)
             }
         }
         if let Some((t, i)) = best {
-            return (t, Some(i), anchors);
+            return (t, Some(i), finish(current, &mut anchors));
         }
-        let next = Propagator::with_roots(a, roots, jb.0[0]);
-        anchors.push((tb, next));
-        if settle.is_some_and(|s| tb > s) {
-            return (tb, None, anchors);
+        let next = (tb, Propagator::with_roots(a, roots, jb.0[0]));
+        let previous = std::mem::replace(&mut current, next);
+        if keep {
+            anchors.push(previous);
+        }
+        if modes.settle.is_some_and(|s| tb > s) {
+            return (tb, None, finish(current, &mut anchors));
         }
         ta = tb;
         va = vb;
     }
-    (ta, None, anchors)
+    (ta, None, finish(current, &mut anchors))
 }
 
 /// 8-point Gauss–Legendre on [a, b].
@@ -274,6 +315,8 @@ pub(crate) fn solve(n: &Normalized, contact: &Contact, opts: &SolveOptions) -> O
     let mut tau = 0.0;
     let mut phase = Phase::Loading;
     let mut out = Outcome::default();
+    // sampling and the energy audit revisit every phase; a summary needs only where each ended
+    let keep = opts.samples > 0 || opts.energy;
     let mut segments: Vec<Segment> = Vec::new();
     for _ in 0..MAX_PHASES {
         let (k, s) = match phase {
@@ -290,7 +333,7 @@ pub(crate) fn solve(n: &Normalized, contact: &Contact, opts: &SolveOptions) -> O
             // itself so that g(0) is exactly 0 and the start is not mistaken for a crossing
             Phase::Unloading(_) => &[Watch::Falls(0.0), Watch::Rises(l(&w0))],
         };
-        let (len, hit, anchors) = search(prop, watches);
+        let (len, hit, anchors) = search(prop, watches, keep);
         let (w, _) = eval_anchored(&anchors, len);
         let z_end = l(&w) + s;
         x = w + Vector3::new(s, 0.0, 0.0);
@@ -357,7 +400,7 @@ fn dashpot_energy(seg: &Segment, lambda: f64, zeta: f64) -> f64 {
     if zeta == 0.0 {
         return 0.0;
     }
-    let roots = *seg.anchors[0].1.roots();
+    let modes = Modes::new(seg.anchors[0].1.roots());
     let integrand = |t: f64| {
         let (w, _) = eval_anchored(&seg.anchors, t);
         let r = seg.k * l(&w) - lambda * w[2];
@@ -366,7 +409,7 @@ fn dashpot_energy(seg: &Segment, lambda: f64, zeta: f64) -> f64 {
     let mut total = 0.0;
     let mut ta = 0.0;
     while ta < seg.len {
-        let tb = (ta + step_size(&roots, ta)).min(seg.len);
+        let tb = (ta + modes.step(ta)).min(seg.len);
         total += gauss8(integrand, ta, tb);
         ta = tb;
     }

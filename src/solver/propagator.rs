@@ -56,7 +56,7 @@ fn polish(a: [f64; 3], mut s: C) -> C {
         }
         let step = p / dp;
         s -= step;
-        if step.norm() <= 1e-16 * s.norm() {
+        if step.norm_sqr() <= 1e-32 * s.norm_sqr() {
             break;
         }
     }
@@ -114,7 +114,7 @@ pub fn cubic_roots(a: [f64; 3]) -> Roots {
 
 /// (eᶻ − 1)/z without cancellation near z = 0.
 fn phi1(z: C) -> C {
-    if z.norm() < 0.5 {
+    if z.norm_sqr() < 0.25 {
         // Σ zⁿ/(n+1)!, 20 terms: |z|²⁰/21! < 1e-25
         let mut term = C::new(1.0, 0.0);
         let mut sum = term;
@@ -132,12 +132,15 @@ fn phi1(z: C) -> C {
 fn sinhc(q: f64, tau: f64) -> f64 {
     let x2 = q * tau * tau;
     if x2.abs() < 0.25 {
-        // τ Σ x²ⁿ/(2n+1)!
+        // τ Σ x²ⁿ/(2n+1)!, until the terms no longer count
         let mut term = tau;
         let mut sum = tau;
         for n in 1..15 {
             term *= x2 / ((2 * n) as f64 * (2 * n + 1) as f64);
             sum += term;
+            if term.abs() <= 1e-17 * sum.abs() {
+                break;
+            }
         }
         sum
     } else if q > 0.0 {
@@ -149,13 +152,24 @@ fn sinhc(q: f64, tau: f64) -> f64 {
     }
 }
 
+#[derive(Debug, Clone, Copy)]
+struct Nodes {
+    s1: f64,
+    s2: C,
+    d12: C,
+    inv_d12: C,
+    inv_d31: C,
+}
+
 #[derive(Debug, Clone)]
 enum Form {
-    /// w(τ) = f[s1] u0 + Re(f[s1,s2] − s2 f[s1,s2,s3]) u1 + Re(f[s1,s2,s3]) A u1.
+    /// w(τ) = f[s1] u0 + Re(f[s1,s2] − s2 f[s1,s2,s3]) u1 + Re(f[s1,s2,s3]) A u1, with the
+    /// node differences' reciprocals kept: eval is the solver's inner loop.
     Newton {
         u0: Vector3<f64>,
         u1: Vector3<f64>,
         au1: Vector3<f64>,
+        nodes: Nodes,
     },
     /// Near-triple root: nalgebra's matrix exponential.
     Expm { w0: Vector3<f64> },
@@ -187,10 +201,20 @@ impl Propagator {
             Form::Expm { w0 }
         } else {
             let u1 = a * w0 - w0 * roots.s1;
+            let [_, s2, _] = roots.all();
+            let d12 = s2 - s1;
+            let nodes = Nodes {
+                s1: roots.s1,
+                s2,
+                d12,
+                inv_d12: d12.inv(),
+                inv_d31: (s3 - s1).inv(),
+            };
             Form::Newton {
                 u0: w0,
                 u1,
                 au1: a * u1,
+                nodes,
             }
         };
         Propagator { a, roots, form }
@@ -207,18 +231,44 @@ impl Propagator {
     /// w(τ) and w'(τ) = A w(τ).
     pub fn eval(&self, tau: f64) -> (Vector3<f64>, Vector3<f64>) {
         let w = match &self.form {
-            Form::Newton { u0, u1, au1 } => {
-                let [s1, s2, s3] = self.roots.all();
-                let e1 = (s1.re * tau).exp();
-                let d12 = s2 - s1;
-                let f12 = if (d12 * tau).norm() < 0.5 {
-                    phi1(d12 * tau) * (e1 * tau)
+            Form::Newton {
+                u0,
+                u1,
+                au1,
+                nodes: n,
+            } => {
+                let e1 = (n.s1 * tau).exp();
+                // e^{s2 τ} and f[s2,s3] share e^{cτ} (c the pair's centre) and, for a complex
+                // pair, sin/cos(bτ); for a real pair s2 = c − h, e^{±hτ}.
+                let ec = (self.roots.centre * tau).exp();
+                let q = self.roots.q;
+                let (e2, f23) = if q < 0.0 {
+                    let b = (-q).sqrt();
+                    let (sn, cs) = (b * tau).sin_cos();
+                    let f23 = if (b * tau).abs() < 0.5 {
+                        ec * sinhc(q, tau)
+                    } else {
+                        ec * sn / b
+                    };
+                    (C::new(ec * cs, ec * sn), f23)
                 } else {
-                    ((s2 * tau).exp() - e1) / d12
+                    let h = q.sqrt();
+                    let eh = (h * tau).exp();
+                    let f23 = if h * tau < 0.5 {
+                        ec * sinhc(q, tau)
+                    } else {
+                        ec * (eh - 1.0 / eh) / (2.0 * h)
+                    };
+                    (C::new(ec / eh, 0.0), f23)
                 };
-                let f23 = (self.roots.centre * tau).exp() * sinhc(self.roots.q, tau);
-                let f123 = (C::new(f23, 0.0) - f12) / (s3 - s1);
-                let g1 = (f12 - s2 * f123).re;
+                let z = n.d12 * tau;
+                let f12 = if z.norm_sqr() < 0.25 {
+                    phi1(z) * (e1 * tau)
+                } else {
+                    (e2 - e1) * n.inv_d12
+                };
+                let f123 = (C::new(f23, 0.0) - f12) * n.inv_d31;
+                let g1 = (f12 - n.s2 * f123).re;
                 u0 * e1 + u1 * g1 + au1 * f123.re
             }
             Form::Expm { w0 } => (self.a * tau).exp() * w0,

@@ -5,10 +5,25 @@
 
 /// Safeguarded Newton (Numerical Recipes' rtsafe): `f` returns (g, g'); [a, b] must bracket a
 /// sign change. Falls back to bisection whenever Newton would leave the bracket or stall.
-pub fn newton_bracketed(mut f: impl FnMut(f64) -> (f64, f64), mut a: f64, mut b: f64) -> f64 {
-    let (ga, _) = f(a);
+pub fn newton_bracketed(mut f: impl FnMut(f64) -> (f64, f64), a: f64, b: f64) -> f64 {
+    let (ga, gb) = (f(a).0, f(b).0);
+    newton_bracketed_from(f, (a, ga), (b, gb))
+}
+
+/// `newton_bracketed` when g is already known at both ends.
+pub fn newton_bracketed_from(
+    mut f: impl FnMut(f64) -> (f64, f64),
+    (mut a, ga): (f64, f64),
+    (mut b, gb): (f64, f64),
+) -> f64 {
     let rising = ga < 0.0;
-    let mut x = 0.5 * (a + b);
+    // start from the secant point: the step ends are close to the root's scale already
+    let secant = a - ga * (b - a) / (gb - ga);
+    let mut x = if secant > a.min(b) && secant < a.max(b) {
+        secant
+    } else {
+        0.5 * (a + b)
+    };
     let mut last_step = (b - a).abs();
     for _ in 0..100 {
         let (g, dg) = f(x);
@@ -20,6 +35,11 @@ pub fn newton_bracketed(mut f: impl FnMut(f64) -> (f64, f64), mut a: f64, mut b:
             a = x;
         } else {
             b = x;
+        }
+        // converged: the Newton step is below the resolution of x (it would land on a bracket
+        // end, look "outside", and send the iteration off bisecting)
+        if dg != 0.0 && (g / dg).abs() <= 2.0 * f64::EPSILON * x.abs() {
+            return x;
         }
         let newton = x - g / dg;
         let inside = (newton - a) * (newton - b) < 0.0 && dg != 0.0;
@@ -109,6 +129,21 @@ pub fn brent(mut f: impl FnMut(f64) -> f64, a: f64, b: f64, fa: f64, fb: f64, to
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn newton_stops_once_converged() {
+        let mut calls = 0;
+        let r = newton_bracketed(
+            |x| {
+                calls += 1;
+                (x * x - 2.0, 2.0 * x)
+            },
+            1.0,
+            2.0,
+        );
+        assert!((r - 2f64.sqrt()).abs() <= 2.0 * f64::EPSILON);
+        assert!(calls <= 8, "{calls} evaluations");
+    }
 
     #[test]
     fn both_find_cos_root() {
