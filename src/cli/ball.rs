@@ -46,7 +46,7 @@ impl From<SourceArg> for ParamSource {
 /// Which preset, and what to change about it.
 #[derive(Debug, Clone, Default, Args)]
 pub struct BallArgs {
-    /// Preset by name (embedded or user); default: superball
+    /// Preset by name, embedded or user [default: superball]
     #[arg(long, value_name = "NAME", conflicts_with = "config")]
     pub preset: Option<String>,
     /// Preset from a TOML file (same schema as the embedded presets)

@@ -24,6 +24,7 @@ pub struct FitArgs {
     /// Impact speed v0 (m/s) the COR was measured at [default: the preset's measured v0]
     #[arg(long, value_name = "V")]
     pub v0: Option<f64>,
+    /// Output format
     #[arg(long, value_enum, default_value = "text")]
     pub format: FitFormat,
 }

@@ -20,6 +20,7 @@ pub struct PresetsArgs {
     /// Also list the preset in this file
     #[arg(long, value_name = "FILE")]
     pub config: Option<PathBuf>,
+    /// Output format
     #[arg(long, value_enum, default_value = "text")]
     pub format: PresetsFormat,
 }

@@ -38,6 +38,7 @@ pub struct RunArgs {
     /// Damping factor ζ = √(m K_p)/(2c) (on a preset: changes c, keeps m and K_p)
     #[arg(long, value_name = "Z")]
     pub zeta: Option<f64>,
+    /// Output format
     #[arg(long, value_enum, default_value = "text")]
     pub format: RunFormat,
     /// Also print F(t), z(t), α(t), evenly sampled over the contact

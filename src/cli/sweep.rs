@@ -37,7 +37,12 @@ pub enum Sweep {
 #[derive(Debug, Clone, Args)]
 pub struct ZetaArgs {
     /// λ values, comma-separated
-    #[arg(long, value_name = "L,L,...", value_delimiter = ',', default_values_t = [0.0, 0.4, 1.0])]
+    #[arg(
+        long,
+        value_name = "L,L,...",
+        value_delimiter = ',',
+        default_value = "0,0.4,1"
+    )]
     pub lambda: Vec<f64>,
     /// Smallest ζ
     #[arg(long, value_name = "Z", default_value_t = 0.01)]
@@ -51,6 +56,7 @@ pub struct ZetaArgs {
     /// Contact law
     #[arg(long, value_enum, default_value = "linear")]
     pub law: LawArg,
+    /// Output format
     #[arg(long, value_enum, default_value = "csv")]
     pub format: SweepFormat,
 }
@@ -68,6 +74,7 @@ pub struct VelocityArgs {
     /// Number of speeds (evenly spaced)
     #[arg(long, value_name = "N", default_value_t = 60)]
     pub points: usize,
+    /// Output format
     #[arg(long, value_enum, default_value = "csv")]
     pub format: SweepFormat,
 }
