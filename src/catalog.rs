@@ -286,3 +286,65 @@ fn preset_files(dir: &Path) -> Result<Vec<PathBuf>, CatalogError> {
     files.sort();
     Ok(files)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn write(dir: &Path, file: &str, name: &str) -> PathBuf {
+        let text = crate::preset::EMBEDDED[0]
+            .1
+            .replace("name = \"superball\"", &format!("name = \"{name}\""));
+        let path = dir.join(file);
+        std::fs::write(&path, text).unwrap();
+        path
+    }
+
+    #[test]
+    fn folder_files_in_name_order_hidden_and_other_files_skipped() {
+        let dir = tempfile::tempdir().unwrap();
+        write(dir.path(), "b.toml", "second");
+        write(dir.path(), "a.toml", "first");
+        write(dir.path(), ".hidden.toml", "hidden");
+        write(dir.path(), "notes.txt", "text");
+        std::fs::create_dir(dir.path().join("sub.toml")).unwrap();
+        let cat = Catalog::load(Some(dir.path()), None).unwrap();
+        let names: Vec<&str> = cat
+            .entries()
+            .iter()
+            .map(|e| e.preset.name.as_str())
+            .collect();
+        assert_eq!(names, ["superball", "golf", "baseball", "first", "second"]);
+        assert_eq!(
+            cat.get("first").unwrap().origin,
+            Origin::File(dir.path().join("a.toml"))
+        );
+        // a missing folder: no user presets
+        let none = Catalog::load(Some(&dir.path().join("absent")), None).unwrap();
+        assert_eq!(none, Catalog::embedded());
+    }
+
+    #[test]
+    fn extra_file_is_read_once_and_found_by_path() {
+        let dir = tempfile::tempdir().unwrap();
+        let p = write(dir.path(), "mine.toml", "mine");
+        let cat = Catalog::load(Some(dir.path()), Some(&p)).unwrap();
+        assert_eq!(cat.entries().len(), 4);
+        assert_eq!(cat.from_file(&p).unwrap().preset.name, "mine");
+        let other = tempfile::tempdir().unwrap();
+        let q = write(other.path(), "x.toml", "mine");
+        let err = Catalog::load(Some(dir.path()), Some(&q)).unwrap_err();
+        assert!(matches!(err, CatalogError::Duplicate { .. }), "{err}");
+        let msg = err.to_string();
+        assert!(msg.contains("mine.toml") && msg.contains("x.toml"), "{msg}");
+    }
+
+    #[test]
+    fn unknown_names_list_the_catalog() {
+        let err = Catalog::embedded().get("tennis").unwrap_err();
+        assert_eq!(
+            err.to_string(),
+            "unknown preset 'tennis' (available: superball, golf, baseball)"
+        );
+    }
+}
