@@ -37,6 +37,14 @@ fn bad_numbers_name_the_field() {
     bad(&["run", "--v0", "abc"], &["--v0", "abc"]);
     bad(&["run", "--zeta", "1e-300"], &["invalid zeta: 1e-300"]);
     bad(
+        &["run", "--lambda", "1e14"],
+        &["invalid lambda: 1e14", "K_r = 5.45e18"],
+    );
+    bad(
+        &["run", "--zeta", "1e-14"],
+        &["invalid zeta: 1e-14", "c = "],
+    );
+    bad(
         &["run", "--normalized", "--zp-bar", "0"],
         &["invalid zp_bar: 0"],
     );

@@ -162,7 +162,23 @@ pub fn set_lambda_zeta(
     if zeta.is_some() {
         params.damping = moved.damping;
     }
-    Ok(())
+    // name what the user typed when the K_r or c it gives is out of range
+    params.validate().map_err(|e| {
+        let given = match e.field {
+            "k_r" => lambda.map(|l| ("lambda", l, "K_r", "N/m")),
+            "damping" => zeta.map(|z| ("zeta", z, "c", "kg/s")),
+            _ => None,
+        };
+        match given {
+            Some((field, v, name, unit)) => anyhow::anyhow!(
+                "invalid {field}: {} (gives {name} = {} {unit}: {})",
+                super::output::num(v),
+                super::output::num(e.value),
+                e.reason
+            ),
+            None => anyhow::anyhow!(param_message(&e)),
+        }
+    })
 }
 
 /// The normalized ball: m = K_p = v0 = 1; `zp_bar` = ∞ for no flattening.

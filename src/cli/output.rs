@@ -5,14 +5,14 @@
 use serde::Serialize;
 use std::io::{self, Write};
 
-/// A number for CSV and messages: plain decimals in the usual range, exponent notation
+/// A number for CSV and messages: plain decimals in [1e-4, 1e7), exponent notation
 /// outside it, `inf`/`-inf`/`NaN` spelled out. Always round-trips (shortest representation).
 pub fn num(x: f64) -> String {
     if x.is_nan() {
         "NaN".into()
     } else if x.is_infinite() {
         if x > 0.0 { "inf".into() } else { "-inf".into() }
-    } else if x == 0.0 || (1e-4..1e15).contains(&x.abs()) {
+    } else if x == 0.0 || (1e-4..1e7).contains(&x.abs()) {
         format!("{x}")
     } else {
         format!("{x:e}")
