@@ -6,6 +6,7 @@
 //! The physics core (`model`, `solver`) does no I/O: plain data in, plain data out.
 
 pub mod analysis;
+pub mod catalog;
 pub mod cli;
 pub mod model;
 pub mod preset;

@@ -1,13 +1,202 @@
 //! The headless command line (clap). Entry point: [`main`].
+//!
+//! Every failure is one line on stderr, `bouncelab: error: …`, naming the field at fault (and
+//! `file:line:column` for a preset file). Exit codes: 0 success (also when stdout is closed
+//! early, e.g. `| head`), 2 bad input of any kind (arguments, presets, out-of-reach fits),
+//! 1 a failure that is not the input's fault (writing the output, the explorer's terminal).
 
+pub mod ball;
+pub mod fit;
+pub mod output;
+pub mod presets;
+pub mod run;
+mod run_text;
+pub mod sweep;
+
+use clap::{Parser, Subcommand};
+use std::io::{self, IsTerminal, Write};
+use std::path::PathBuf;
 use std::process::ExitCode;
 
+const ABOUT: &str = "The Christoforou–Yigit model of a deformable ball hitting a rigid wall: \
+coefficient of restitution, peak force and contact time.";
+
+const AFTER_HELP: &str = "With no subcommand, opens the terminal explorer on a preset \
+(default: superball).\nUser presets: $XDG_CONFIG_HOME/bouncelab/presets/*.toml \
+(default ~/.config/bouncelab/presets).";
+
+#[derive(Debug, Parser)]
+#[command(name = "bouncelab", version, about = ABOUT, after_help = AFTER_HELP)]
+pub struct Cli {
+    /// Preset the explorer opens on [default: superball]
+    #[arg(long, value_name = "NAME", conflicts_with = "config")]
+    pub preset: Option<String>,
+    /// Preset file the explorer opens on (TOML, same schema as the embedded presets)
+    #[arg(long, value_name = "FILE")]
+    pub config: Option<PathBuf>,
+    #[command(subcommand)]
+    pub command: Option<Command>,
+}
+
+#[derive(Debug, Subcommand)]
+pub enum Command {
+    /// Simulate one impact: COR, peak force, contact time, indentation, energy budget
+    #[command(allow_negative_numbers = true)]
+    Run(run::RunArgs),
+    /// Sweep ζ (normalized, Figs. 2–3) or the impact speed of a ball (Fig. 4)
+    #[command(subcommand)]
+    Sweep(sweep::Sweep),
+    /// Fit the recoil spring K_r (and λ) to a measured COR
+    #[command(allow_negative_numbers = true)]
+    Fit(fit::FitArgs),
+    /// List the embedded and user presets
+    Presets(presets::PresetsArgs),
+}
+
+/// A failure that is not the input's fault: exit code 1.
+#[derive(Debug)]
+struct Runtime(anyhow::Error);
+
+impl std::fmt::Display for Runtime {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "{:#}", self.0)
+    }
+}
+
+impl std::error::Error for Runtime {}
+
 pub fn main() -> ExitCode {
-    match crate::tui::run(crate::preset::Preset::embedded().remove(0)) {
+    let cli = match Cli::try_parse() {
+        Ok(cli) => cli,
+        Err(e) => return clap_error(e),
+    };
+    let stdout = io::stdout();
+    let mut out = io::BufWriter::new(stdout.lock());
+    let result = dispatch(cli, &mut out).and_then(|()| out.flush().map_err(Into::into));
+    match result {
         Ok(()) => ExitCode::SUCCESS,
-        Err(e) => {
-            eprintln!("bouncelab: error: {e}");
-            ExitCode::from(2)
+        Err(e) => fail(e),
+    }
+}
+
+fn fail(e: anyhow::Error) -> ExitCode {
+    let io_kind = e
+        .chain()
+        .find_map(|c| c.downcast_ref::<io::Error>())
+        .map(io::Error::kind);
+    if io_kind == Some(io::ErrorKind::BrokenPipe) {
+        return ExitCode::SUCCESS;
+    }
+    let code = if io_kind.is_some() || e.downcast_ref::<Runtime>().is_some() {
+        1
+    } else {
+        2
+    };
+    eprintln!("bouncelab: error: {}", one_line(&format!("{e:#}")));
+    ExitCode::from(code)
+}
+
+/// Any message as one line.
+fn one_line(s: &str) -> String {
+    s.lines()
+        .map(str::trim)
+        .filter(|l| !l.is_empty())
+        .collect::<Vec<_>>()
+        .join(" ")
+}
+
+/// Clap's usage errors condensed to one line (help and version print as usual).
+fn clap_error(e: clap::Error) -> ExitCode {
+    use clap::error::ErrorKind::*;
+    if matches!(
+        e.kind(),
+        DisplayHelp | DisplayVersion | DisplayHelpOnMissingArgumentOrSubcommand
+    ) {
+        let _ = e.print();
+        return ExitCode::from(e.exit_code().clamp(0, 255) as u8);
+    }
+    let text = e.render().to_string();
+    let body: Vec<&str> = text
+        .lines()
+        .take_while(|l| !l.starts_with("Usage:"))
+        .map(str::trim)
+        .filter(|l| !l.is_empty() && !l.starts_with("For more information"))
+        .collect();
+    let msg = body.join(" ");
+    let msg = msg.strip_prefix("error: ").unwrap_or(&msg);
+    eprintln!("bouncelab: error: {msg} (see --help)");
+    ExitCode::from(2)
+}
+
+fn dispatch(cli: Cli, out: &mut dyn Write) -> anyhow::Result<()> {
+    let top = (cli.preset.is_some() || cli.config.is_some()).then_some(());
+    let Some(command) = cli.command else {
+        return explorer(cli.preset, cli.config);
+    };
+    match command {
+        Command::Run(mut a) => {
+            if top.is_some() && a.normalized {
+                anyhow::bail!("--normalized cannot be used with --preset or --config");
+            }
+            merge(&cli.preset, &cli.config, &mut a.ball)?;
+            run::run(&a, out)
+        }
+        Command::Sweep(sweep::Sweep::Velocity(mut a)) => {
+            merge(&cli.preset, &cli.config, &mut a.ball)?;
+            sweep::run(&sweep::Sweep::Velocity(a), out)
+        }
+        Command::Sweep(s) => {
+            if top.is_some() {
+                anyhow::bail!(
+                    "sweep zeta runs the normalized ball: --preset and --config do not apply"
+                );
+            }
+            sweep::run(&s, out)
+        }
+        Command::Fit(mut a) => {
+            merge(&cli.preset, &cli.config, &mut a.ball)?;
+            fit::run(&a, out)
+        }
+        Command::Presets(mut a) => {
+            if cli.preset.is_some() {
+                anyhow::bail!("presets lists every preset: --preset does not apply");
+            }
+            if let Some(c) = cli.config {
+                if a.config.is_some() {
+                    anyhow::bail!("--config given twice");
+                }
+                a.config = Some(c);
+            }
+            presets::run(&a, out)
         }
     }
+}
+
+/// `bouncelab --preset golf run` means `bouncelab run --preset golf`.
+fn merge(
+    preset: &Option<String>,
+    config: &Option<PathBuf>,
+    ball: &mut ball::BallArgs,
+) -> anyhow::Result<()> {
+    if preset.is_none() && config.is_none() {
+        return Ok(());
+    }
+    if ball.preset.is_some() || ball.config.is_some() {
+        anyhow::bail!("--preset/--config given both before and after the subcommand");
+    }
+    ball.preset.clone_from(preset);
+    ball.config.clone_from(config);
+    Ok(())
+}
+
+/// No subcommand: the explorer, which needs a terminal.
+fn explorer(preset: Option<String>, config: Option<PathBuf>) -> anyhow::Result<()> {
+    if !io::stdout().is_terminal() {
+        anyhow::bail!(
+            "the explorer needs a terminal and stdout is not one; for headless output use \
+             `bouncelab run` (e.g. `bouncelab run --preset superball --format json`)"
+        );
+    }
+    let entry = ball::select(preset.as_deref(), config.as_deref())?;
+    crate::tui::run(entry.preset).map_err(|e| Runtime(e).into())
 }

@@ -1,0 +1,350 @@
+//! The preset catalog: the embedded balls plus the user's preset files. All preset file I/O
+//! lives here; `preset` only parses text.
+//!
+//! User presets are read from `$XDG_CONFIG_HOME/bouncelab/presets/*.toml` (or
+//! `~/.config/bouncelab/presets/*.toml` when `XDG_CONFIG_HOME` is unset, empty or relative) and
+//! from one extra file given on the command line (`--config FILE`). Rules:
+//!
+//! - a preset is known by its `name` field, not by its file name;
+//! - a user preset may not take the name of an embedded one, nor of another user preset: both
+//!   are errors naming the two origins (rename one of them);
+//! - any file that cannot be read or parsed is an error naming `file:line:column`: a broken
+//!   preset is never skipped silently;
+//! - in the presets folder only regular `*.toml` files not starting with `.` are read, in
+//!   file-name order; a missing folder means no user presets.
+
+use crate::preset::{Preset, PresetError};
+use std::fmt;
+use std::io::Read;
+use std::path::{Path, PathBuf};
+
+/// Largest preset file read: a preset is a few hundred bytes; this guards against
+/// `--config /dev/zero`-like mistakes.
+pub const MAX_FILE_BYTES: u64 = 1 << 20;
+
+/// Where a preset came from.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum Origin {
+    Embedded,
+    File(PathBuf),
+}
+
+impl fmt::Display for Origin {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Origin::Embedded => f.write_str("embedded"),
+            Origin::File(p) => write!(f, "{}", p.display()),
+        }
+    }
+}
+
+/// A preset and its origin.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Entry {
+    pub preset: Preset,
+    pub origin: Origin,
+}
+
+/// Why the catalog could not be built or a preset not found. Every message is one line.
+#[derive(Debug, Clone, PartialEq)]
+pub enum CatalogError {
+    /// A file or folder could not be read.
+    Io { path: PathBuf, message: String },
+    /// A preset file does not parse or validate (carries file:line:column).
+    Preset(PresetError),
+    /// Two presets share a name.
+    Duplicate {
+        name: String,
+        first: Origin,
+        second: Origin,
+    },
+    /// No preset of that name.
+    Unknown {
+        name: String,
+        available: Vec<String>,
+    },
+}
+
+impl fmt::Display for CatalogError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            CatalogError::Io { path, message } => write!(f, "{}: {message}", path.display()),
+            CatalogError::Preset(e) => write!(f, "{e}"),
+            CatalogError::Duplicate {
+                name,
+                first,
+                second,
+            } => match (first, second) {
+                (Origin::Embedded, Origin::File(file)) | (Origin::File(file), Origin::Embedded) => {
+                    write!(
+                        f,
+                        "duplicate preset name '{name}': {} and the embedded preset \
+                     (embedded:{name}); change the name in {}",
+                        file.display(),
+                        file.display()
+                    )
+                }
+                _ => write!(
+                    f,
+                    "duplicate preset name '{name}': {first} and {second}; change the name in \
+                     one of them"
+                ),
+            },
+            CatalogError::Unknown { name, available } => write!(
+                f,
+                "unknown preset '{name}' (available: {})",
+                available.join(", ")
+            ),
+        }
+    }
+}
+
+impl std::error::Error for CatalogError {}
+
+/// The folder user presets are read from: `$XDG_CONFIG_HOME/bouncelab/presets`, falling back
+/// to `$HOME/.config/bouncelab/presets`; `None` if neither variable is usable.
+pub fn user_presets_dir() -> Option<PathBuf> {
+    let absolute = |var: &str| {
+        std::env::var_os(var)
+            .map(PathBuf::from)
+            .filter(|p| p.is_absolute())
+    };
+    let config =
+        absolute("XDG_CONFIG_HOME").or_else(|| absolute("HOME").map(|h| h.join(".config")))?;
+    Some(config.join("bouncelab").join("presets"))
+}
+
+/// Read and parse one preset file. Errors name the file, and line:column where the text is
+/// at fault (TOML syntax, unknown keys, bad values, bytes that are not UTF-8).
+pub fn read_preset_file(path: &Path) -> Result<Preset, CatalogError> {
+    let io = |message: String| CatalogError::Io {
+        path: path.to_path_buf(),
+        message,
+    };
+    let meta = std::fs::metadata(path).map_err(|e| io(describe_io(&e)))?;
+    if meta.is_dir() {
+        return Err(io("is a directory, not a preset file".into()));
+    }
+    if !meta.is_file() {
+        return Err(io("is not a regular file".into()));
+    }
+    if meta.len() > MAX_FILE_BYTES {
+        return Err(io(format!(
+            "is {} bytes; a preset file is at most {MAX_FILE_BYTES} bytes",
+            meta.len()
+        )));
+    }
+    let mut bytes = Vec::new();
+    std::fs::File::open(path)
+        .and_then(|f| f.take(MAX_FILE_BYTES + 1).read_to_end(&mut bytes))
+        .map_err(|e| io(describe_io(&e)))?;
+    let origin = path.display().to_string();
+    let text = String::from_utf8(bytes).map_err(|e| {
+        let valid = &e.as_bytes()[..e.utf8_error().valid_up_to()];
+        let line = valid.iter().filter(|&&b| b == b'\n').count() + 1;
+        let last_line = valid.rsplit(|&b| b == b'\n').next().unwrap_or(&[]);
+        // the valid prefix is UTF-8, so counting chars of the last line gives the column
+        let col = String::from_utf8_lossy(last_line).chars().count() + 1;
+        CatalogError::Preset(PresetError {
+            origin: origin.clone(),
+            position: Some((line, col)),
+            message: "not valid UTF-8 text (a preset file must be UTF-8)".into(),
+        })
+    })?;
+    Preset::parse(&text, &origin).map_err(CatalogError::Preset)
+}
+
+/// An I/O error as a short lower-case phrase without the OS error number.
+fn describe_io(e: &std::io::Error) -> String {
+    use std::io::ErrorKind::*;
+    match e.kind() {
+        NotFound => "no such file".into(),
+        PermissionDenied => "permission denied".into(),
+        _ => e.to_string(),
+    }
+}
+
+/// Every preset the program knows: embedded first, then user presets.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Catalog {
+    entries: Vec<Entry>,
+}
+
+impl Catalog {
+    /// The embedded presets only.
+    pub fn embedded() -> Catalog {
+        Catalog {
+            entries: Preset::embedded()
+                .into_iter()
+                .map(|preset| Entry {
+                    preset,
+                    origin: Origin::Embedded,
+                })
+                .collect(),
+        }
+    }
+
+    /// The embedded presets, the `*.toml` files of `dir` (if it exists) and `extra` (a file
+    /// given on the command line; not counted twice if it is also in `dir`).
+    pub fn load(dir: Option<&Path>, extra: Option<&Path>) -> Result<Catalog, CatalogError> {
+        let mut catalog = Catalog::embedded();
+        let mut files = match dir {
+            Some(d) => preset_files(d)?,
+            None => Vec::new(),
+        };
+        if let Some(x) = extra {
+            let same = |a: &Path| match (a.canonicalize(), x.canonicalize()) {
+                (Ok(a), Ok(b)) => a == b,
+                _ => false,
+            };
+            if !files.iter().any(|f| same(f)) {
+                files.push(x.to_path_buf());
+            }
+        }
+        for path in files {
+            let preset = read_preset_file(&path)?;
+            catalog.add(Entry {
+                preset,
+                origin: Origin::File(path),
+            })?;
+        }
+        Ok(catalog)
+    }
+
+    /// Add one entry; a name already taken is an error naming both origins.
+    pub fn add(&mut self, entry: Entry) -> Result<(), CatalogError> {
+        if let Some(old) = self
+            .entries
+            .iter()
+            .find(|e| e.preset.name == entry.preset.name)
+        {
+            return Err(CatalogError::Duplicate {
+                name: entry.preset.name.clone(),
+                first: old.origin.clone(),
+                second: entry.origin,
+            });
+        }
+        self.entries.push(entry);
+        Ok(())
+    }
+
+    pub fn entries(&self) -> &[Entry] {
+        &self.entries
+    }
+
+    /// The preset called `name`, or an error listing the available names.
+    pub fn get(&self, name: &str) -> Result<&Entry, CatalogError> {
+        self.entries
+            .iter()
+            .find(|e| e.preset.name == name)
+            .ok_or_else(|| CatalogError::Unknown {
+                name: name.to_string(),
+                available: self.entries.iter().map(|e| e.preset.name.clone()).collect(),
+            })
+    }
+
+    /// The entry read from `path` (the `--config` file).
+    pub fn from_file(&self, path: &Path) -> Option<&Entry> {
+        let want = path.canonicalize().ok();
+        self.entries.iter().find(|e| match &e.origin {
+            Origin::File(p) => p == path || (want.is_some() && p.canonicalize().ok() == want),
+            Origin::Embedded => false,
+        })
+    }
+}
+
+/// The regular, non-hidden `*.toml` files of `dir`, sorted; none if `dir` does not exist.
+fn preset_files(dir: &Path) -> Result<Vec<PathBuf>, CatalogError> {
+    let io = |path: &Path, e: std::io::Error| CatalogError::Io {
+        path: path.to_path_buf(),
+        message: describe_io(&e),
+    };
+    let read = match std::fs::read_dir(dir) {
+        Ok(r) => r,
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(Vec::new()),
+        Err(e) if e.kind() == std::io::ErrorKind::NotADirectory => {
+            return Err(CatalogError::Io {
+                path: dir.to_path_buf(),
+                message: "is not a directory (user presets are read from this folder)".into(),
+            });
+        }
+        Err(e) => return Err(io(dir, e)),
+    };
+    let mut files = Vec::new();
+    for entry in read {
+        let entry = entry.map_err(|e| io(dir, e))?;
+        let path = entry.path();
+        let name = entry.file_name();
+        let name = name.to_string_lossy();
+        if name.starts_with('.') || !name.ends_with(".toml") {
+            continue;
+        }
+        if path.is_file() {
+            files.push(path);
+        }
+    }
+    files.sort();
+    Ok(files)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn write(dir: &Path, file: &str, name: &str) -> PathBuf {
+        let text = crate::preset::EMBEDDED[0]
+            .1
+            .replace("name = \"superball\"", &format!("name = \"{name}\""));
+        let path = dir.join(file);
+        std::fs::write(&path, text).unwrap();
+        path
+    }
+
+    #[test]
+    fn folder_files_in_name_order_hidden_and_other_files_skipped() {
+        let dir = tempfile::tempdir().unwrap();
+        write(dir.path(), "b.toml", "second");
+        write(dir.path(), "a.toml", "first");
+        write(dir.path(), ".hidden.toml", "hidden");
+        write(dir.path(), "notes.txt", "text");
+        std::fs::create_dir(dir.path().join("sub.toml")).unwrap();
+        let cat = Catalog::load(Some(dir.path()), None).unwrap();
+        let names: Vec<&str> = cat
+            .entries()
+            .iter()
+            .map(|e| e.preset.name.as_str())
+            .collect();
+        assert_eq!(names, ["superball", "golf", "baseball", "first", "second"]);
+        assert_eq!(
+            cat.get("first").unwrap().origin,
+            Origin::File(dir.path().join("a.toml"))
+        );
+        // a missing folder: no user presets
+        let none = Catalog::load(Some(&dir.path().join("absent")), None).unwrap();
+        assert_eq!(none, Catalog::embedded());
+    }
+
+    #[test]
+    fn extra_file_is_read_once_and_found_by_path() {
+        let dir = tempfile::tempdir().unwrap();
+        let p = write(dir.path(), "mine.toml", "mine");
+        let cat = Catalog::load(Some(dir.path()), Some(&p)).unwrap();
+        assert_eq!(cat.entries().len(), 4);
+        assert_eq!(cat.from_file(&p).unwrap().preset.name, "mine");
+        let other = tempfile::tempdir().unwrap();
+        let q = write(other.path(), "x.toml", "mine");
+        let err = Catalog::load(Some(dir.path()), Some(&q)).unwrap_err();
+        assert!(matches!(err, CatalogError::Duplicate { .. }), "{err}");
+        let msg = err.to_string();
+        assert!(msg.contains("mine.toml") && msg.contains("x.toml"), "{msg}");
+    }
+
+    #[test]
+    fn unknown_names_list_the_catalog() {
+        let err = Catalog::embedded().get("tennis").unwrap_err();
+        assert_eq!(
+            err.to_string(),
+            "unknown preset 'tennis' (available: superball, golf, baseball)"
+        );
+    }
+}

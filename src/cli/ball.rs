@@ -1,0 +1,240 @@
+//! Choosing the ball a command runs on: a preset (embedded or user), a `--config` file, or the
+//! normalized ball, with the command-line overrides applied and validated.
+
+use crate::catalog::{self, Catalog, Entry, Origin};
+use crate::model::contact::ContactLaw;
+use crate::model::params::{ImpactParams, ParamError, validate_lambda_zeta};
+use crate::preset::{Measured, ParamSource};
+use clap::{Args, ValueEnum};
+use std::path::{Path, PathBuf};
+
+/// The name used when no preset is asked for.
+pub const DEFAULT_PRESET: &str = "superball";
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum LawArg {
+    Linear,
+    ElasticPlastic,
+    Hertz,
+}
+
+impl From<LawArg> for ContactLaw {
+    fn from(l: LawArg) -> ContactLaw {
+        match l {
+            LawArg::Linear => ContactLaw::Linear,
+            LawArg::ElasticPlastic => ContactLaw::ElasticPlastic,
+            LawArg::Hertz => ContactLaw::Hertz,
+        }
+    }
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum SourceArg {
+    Adopted,
+    Materials,
+}
+
+impl From<SourceArg> for ParamSource {
+    fn from(s: SourceArg) -> ParamSource {
+        match s {
+            SourceArg::Adopted => ParamSource::Adopted,
+            SourceArg::Materials => ParamSource::Materials,
+        }
+    }
+}
+
+/// Which preset, and what to change about it.
+#[derive(Debug, Clone, Default, Args)]
+pub struct BallArgs {
+    /// Preset by name, embedded or user [default: superball]
+    #[arg(long, value_name = "NAME", conflicts_with = "config")]
+    pub preset: Option<String>,
+    /// Preset from a TOML file (same schema as the embedded presets)
+    #[arg(long, value_name = "FILE")]
+    pub config: Option<PathBuf>,
+    /// Parameter set of the preset [default: the preset's `parameters` field]
+    #[arg(long, value_enum, value_name = "SET")]
+    pub params: Option<SourceArg>,
+    /// Contact law [default: the preset's `law` field]
+    #[arg(long, value_enum)]
+    pub law: Option<LawArg>,
+}
+
+/// A ball ready to simulate.
+#[derive(Debug, Clone)]
+pub struct Ball {
+    /// Preset name; `None` for the normalized ball.
+    pub name: Option<String>,
+    /// "embedded", a file path, or "normalized".
+    pub origin: String,
+    /// "adopted", "materials" or "normalized".
+    pub source: &'static str,
+    pub params: ImpactParams,
+    pub law: ContactLaw,
+    /// What was measured, for comparison (presets only).
+    pub measured: Option<Measured>,
+    pub description: String,
+}
+
+impl Ball {
+    /// "superball (embedded, adopted parameters)" or "normalized ball (m = K_p = v0 = 1)".
+    pub fn label(&self) -> String {
+        match &self.name {
+            Some(n) => format!("{n} ({}, {} parameters)", self.origin, self.source),
+            None => "normalized ball (m = K_p = v0 = 1)".into(),
+        }
+    }
+}
+
+/// The catalog: embedded presets, the user's presets folder, and `config` if given.
+/// A `--config` file that cannot be read is named as such.
+pub fn load_catalog(config: Option<&Path>) -> anyhow::Result<Catalog> {
+    Catalog::load(catalog::user_presets_dir().as_deref(), config).map_err(|e| match e {
+        catalog::CatalogError::Io { path, message } if Some(path.as_path()) == config => {
+            anyhow::anyhow!("--config {}: {message}", path.display())
+        }
+        e => e.into(),
+    })
+}
+
+/// The preset entry chosen by `--preset` / `--config` (default: superball).
+pub fn select(preset: Option<&str>, config: Option<&Path>) -> anyhow::Result<Entry> {
+    let cat = load_catalog(config)?;
+    let entry = match config {
+        Some(path) => cat
+            .from_file(path)
+            .ok_or_else(|| anyhow::anyhow!("{}: not loaded", path.display()))?,
+        None => cat.get(preset.unwrap_or(DEFAULT_PRESET))?,
+    };
+    Ok(entry.clone())
+}
+
+impl BallArgs {
+    /// The preset ball with `--params`, `--law`, `--v0` applied and every parameter checked.
+    pub fn resolve(&self, v0: Option<f64>) -> anyhow::Result<Ball> {
+        let entry = select(self.preset.as_deref(), self.config.as_deref())?;
+        let p = &entry.preset;
+        let source = self.params.map_or(p.parameters, ParamSource::from);
+        let mut params = p.params_from(source);
+        if let Some(v0) = v0 {
+            params.v0 = v0;
+        }
+        params.validate().map_err(|e| {
+            // a bad v0 comes from the command line; anything else from the preset's set
+            if e.field == "v0" && v0.is_some() {
+                anyhow::anyhow!(param_message(&e))
+            } else {
+                anyhow::anyhow!(
+                    "preset '{}' ({} parameters): {}",
+                    p.name,
+                    source.name(),
+                    param_message(&e)
+                )
+            }
+        })?;
+        Ok(Ball {
+            name: Some(p.name.clone()),
+            origin: match &entry.origin {
+                Origin::Embedded => "embedded".into(),
+                Origin::File(f) => f.display().to_string(),
+            },
+            source: source.name(),
+            params,
+            law: self.law.map_or(p.law, ContactLaw::from),
+            measured: Some(p.measured.clone()),
+            description: p.description.clone(),
+        })
+    }
+}
+
+/// Change λ and/or ζ of a ball: K_r and c move, m and K_p stay (Eq. 24).
+pub fn set_lambda_zeta(
+    params: &mut ImpactParams,
+    lambda: Option<f64>,
+    zeta: Option<f64>,
+) -> anyhow::Result<()> {
+    validate_lambda_zeta(lambda.unwrap_or(0.0), zeta.unwrap_or(0.0))
+        .map_err(|e| anyhow::anyhow!(param_message(&e)))?;
+    let moved = params.with_lambda_zeta(lambda.unwrap_or(0.0), zeta.unwrap_or(1.0));
+    if lambda.is_some() {
+        params.k_r = moved.k_r;
+    }
+    if zeta.is_some() {
+        params.damping = moved.damping;
+    }
+    // name what the user typed when the K_r or c it gives is out of range
+    params.validate().map_err(|e| {
+        let given = match e.field {
+            "k_r" => lambda.map(|l| ("lambda", l, "K_r", "N/m")),
+            "damping" => zeta.map(|z| ("zeta", z, "c", "kg/s")),
+            _ => None,
+        };
+        match given {
+            Some((field, v, name, unit)) => anyhow::anyhow!(
+                "invalid {field}: {} (gives {name} = {} {unit}: {})",
+                super::output::num(v),
+                super::output::num(e.value),
+                e.reason
+            ),
+            None => anyhow::anyhow!(param_message(&e)),
+        }
+    })
+}
+
+/// The normalized ball: m = K_p = v0 = 1; `zp_bar` = ∞ for no flattening.
+pub fn normalized(
+    lambda: f64,
+    zeta: f64,
+    zp_bar: Option<f64>,
+    law: ContactLaw,
+) -> anyhow::Result<Ball> {
+    validate_lambda_zeta(lambda, zeta).map_err(|e| anyhow::anyhow!(param_message(&e)))?;
+    if let Some(z) = zp_bar {
+        check_positive("zp_bar", z)?;
+    }
+    let params = ImpactParams::from_normalized(lambda, zeta, zp_bar.unwrap_or(f64::INFINITY));
+    params
+        .validate()
+        .map_err(|e| anyhow::anyhow!(param_message(&e)))?;
+    Ok(Ball {
+        name: None,
+        origin: "normalized".into(),
+        source: "normalized",
+        params,
+        law,
+        measured: None,
+        description: String::new(),
+    })
+}
+
+/// "invalid zeta: NaN (not a number)", with large and small values in exponent form.
+pub fn param_message(e: &ParamError) -> String {
+    format!(
+        "invalid {}: {} ({})",
+        e.field,
+        super::output::num(e.value),
+        e.reason
+    )
+}
+
+/// A finite, positive, not absurd number, or an error naming `field`.
+pub fn check_positive(field: &'static str, value: f64) -> anyhow::Result<()> {
+    let reason = if value.is_nan() {
+        "not a number"
+    } else if value.is_infinite() {
+        "must be finite"
+    } else if value < 0.0 {
+        "must not be negative"
+    } else if value == 0.0 {
+        "must be positive"
+    } else if !(1e-15..=1e15).contains(&value) {
+        "out of the physically meaningful range 1e-15 … 1e15"
+    } else {
+        return Ok(());
+    };
+    anyhow::bail!(param_message(&ParamError {
+        field,
+        value,
+        reason
+    }))
+}

@@ -1,0 +1,102 @@
+//! `bouncelab presets`: every preset the program knows, where it comes from, and the λ, ζ it
+//! runs at.
+
+use super::ball::load_catalog;
+use super::output::{self, human, table};
+use crate::catalog::{self, Origin};
+use clap::{Args, ValueEnum};
+use serde::Serialize;
+use std::io::Write;
+use std::path::PathBuf;
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum PresetsFormat {
+    Text,
+    Json,
+}
+
+#[derive(Debug, Clone, Args)]
+pub struct PresetsArgs {
+    /// Also list the preset in this file
+    #[arg(long, value_name = "FILE")]
+    pub config: Option<PathBuf>,
+    /// Output format
+    #[arg(long, value_enum, default_value = "text")]
+    pub format: PresetsFormat,
+}
+
+#[derive(Serialize)]
+struct Row {
+    name: String,
+    origin: String,
+    description: String,
+    law: &'static str,
+    parameters: &'static str,
+    lambda: f64,
+    zeta: f64,
+    v0: f64,
+}
+
+pub fn run(a: &PresetsArgs, out: &mut dyn Write) -> anyhow::Result<()> {
+    let cat = load_catalog(a.config.as_deref())?;
+    let rows: Vec<Row> = cat
+        .entries()
+        .iter()
+        .map(|e| {
+            let p = &e.preset;
+            let n = p.params().normalized();
+            Row {
+                name: p.name.clone(),
+                origin: match &e.origin {
+                    Origin::Embedded => "embedded".into(),
+                    Origin::File(f) => f.display().to_string(),
+                },
+                description: p.description.clone(),
+                law: p.law.name(),
+                parameters: p.parameters.name(),
+                lambda: n.lambda,
+                zeta: n.zeta,
+                v0: p.measured.v0,
+            }
+        })
+        .collect();
+    match a.format {
+        PresetsFormat::Json => output::json(out, &rows)?,
+        PresetsFormat::Text => {
+            let mut t = vec![
+                [
+                    "name",
+                    "λ",
+                    "ζ",
+                    "law",
+                    "parameters",
+                    "origin",
+                    "description",
+                ]
+                .map(String::from)
+                .to_vec(),
+            ];
+            for r in &rows {
+                t.push(vec![
+                    r.name.clone(),
+                    human(r.lambda, 3),
+                    human(r.zeta, 3),
+                    r.law.into(),
+                    r.parameters.into(),
+                    r.origin.clone(),
+                    r.description.clone(),
+                ]);
+            }
+            table(out, "", &t)?;
+            writeln!(out)?;
+            match catalog::user_presets_dir() {
+                Some(d) => writeln!(out, "user presets are read from {}/*.toml", d.display())?,
+                None => writeln!(
+                    out,
+                    "user presets: neither XDG_CONFIG_HOME nor HOME is set, so none are read"
+                )?,
+            }
+        }
+    }
+    Ok(())
+}

@@ -1,0 +1,233 @@
+//! `bouncelab sweep zeta|velocity`: the paper's Figs. 2–3 (COR, F̄_m, τ_f against ζ for
+//! several λ) and Fig. 4 (COR against impact speed for one ball), as CSV or JSON.
+
+use super::ball::{BallArgs, LawArg, check_positive, param_message};
+use super::output::{self, csv_row, num, opt_num};
+use crate::analysis::sweep::{cor_vs_velocity, cor_vs_zeta, lin_space, log_space};
+use crate::model::contact::ContactLaw;
+use crate::model::params::validate_lambda_zeta;
+use clap::{Args, Subcommand, ValueEnum};
+use serde::Serialize;
+use std::io::Write;
+
+/// Most points along a sweep, and most rows in all (λ values × points): the linear law runs
+/// the exact solver, the others the adaptive one, some ten times slower.
+pub const MAX_POINTS: usize = 100_000;
+pub const MAX_ROWS_LINEAR: usize = 1_000_000;
+pub const MAX_ROWS_NUMERIC: usize = 100_000;
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum SweepFormat {
+    Csv,
+    Json,
+}
+
+#[derive(Debug, Clone, Subcommand)]
+pub enum Sweep {
+    /// COR, normalized peak force and contact time against ζ (log-spaced), one curve per λ,
+    /// without flattening (Figs. 2, 3)
+    #[command(allow_negative_numbers = true)]
+    Zeta(ZetaArgs),
+    /// COR, peak force, contact time and permanent indentation against impact speed for one
+    /// ball (Fig. 4)
+    #[command(allow_negative_numbers = true)]
+    Velocity(VelocityArgs),
+}
+
+#[derive(Debug, Clone, Args)]
+pub struct ZetaArgs {
+    /// λ values, comma-separated
+    #[arg(
+        long,
+        value_name = "L,L,...",
+        value_delimiter = ',',
+        default_value = "0,0.4,1"
+    )]
+    pub lambda: Vec<f64>,
+    /// Smallest ζ
+    #[arg(long, value_name = "Z", default_value_t = 0.01)]
+    pub from: f64,
+    /// Largest ζ
+    #[arg(long, value_name = "Z", default_value_t = 100.0)]
+    pub to: f64,
+    /// Number of ζ values per λ
+    #[arg(long, value_name = "N", default_value_t = 400)]
+    pub points: usize,
+    /// Contact law
+    #[arg(long, value_enum, default_value = "linear")]
+    pub law: LawArg,
+    /// Output format
+    #[arg(long, value_enum, default_value = "csv")]
+    pub format: SweepFormat,
+}
+
+#[derive(Debug, Clone, Args)]
+pub struct VelocityArgs {
+    #[command(flatten)]
+    pub ball: BallArgs,
+    /// Lowest impact speed (m/s) [default: 0.1 × the preset's v0]
+    #[arg(long, value_name = "V")]
+    pub from: Option<f64>,
+    /// Highest impact speed (m/s) [default: 3 × the preset's v0]
+    #[arg(long, value_name = "V")]
+    pub to: Option<f64>,
+    /// Number of speeds (evenly spaced)
+    #[arg(long, value_name = "N", default_value_t = 60)]
+    pub points: usize,
+    /// Output format
+    #[arg(long, value_enum, default_value = "csv")]
+    pub format: SweepFormat,
+}
+
+pub fn run(sweep: &Sweep, out: &mut dyn Write) -> anyhow::Result<()> {
+    match sweep {
+        Sweep::Zeta(a) => zeta(a, out),
+        Sweep::Velocity(a) => velocity(a, out),
+    }
+}
+
+fn check_points(points: usize, curves: usize, law: ContactLaw) -> anyhow::Result<()> {
+    if points == 0 {
+        anyhow::bail!("invalid points: 0 (must be at least 1)");
+    }
+    if points > MAX_POINTS {
+        anyhow::bail!("invalid points: {points} (at most {MAX_POINTS})");
+    }
+    let max = if law == ContactLaw::Linear {
+        MAX_ROWS_LINEAR
+    } else {
+        MAX_ROWS_NUMERIC
+    };
+    if points * curves > max {
+        anyhow::bail!(
+            "invalid points: {points} × {curves} curves is {} rows (at most {max} with the {law} law)",
+            points * curves
+        );
+    }
+    Ok(())
+}
+
+#[derive(Serialize)]
+struct ZetaDoc<'a, T> {
+    sweep: &'static str,
+    law: &'static str,
+    rows: &'a [T],
+}
+
+fn zeta(a: &ZetaArgs, out: &mut dyn Write) -> anyhow::Result<()> {
+    if a.lambda.is_empty() {
+        anyhow::bail!("invalid lambda: no value given");
+    }
+    for &l in &a.lambda {
+        validate_lambda_zeta(l, 0.0).map_err(|e| anyhow::anyhow!(param_message(&e)))?;
+    }
+    // ζ bounds must be positive: the range is log-spaced
+    check_positive("from", a.from)?;
+    check_positive("to", a.to)?;
+    let law = ContactLaw::from(a.law);
+    check_points(a.points, a.lambda.len(), law)?;
+    let rows = cor_vs_zeta(&a.lambda, &log_space(a.from, a.to, a.points), law)
+        .map_err(|e| anyhow::anyhow!(param_message(&e)))?;
+    match a.format {
+        SweepFormat::Json => output::json(
+            out,
+            &ZetaDoc {
+                sweep: "zeta",
+                law: law.name(),
+                rows: &rows,
+            },
+        )?,
+        SweepFormat::Csv => {
+            csv_row(
+                out,
+                &[
+                    "lambda",
+                    "zeta",
+                    "cor",
+                    "max_force_normalized",
+                    "contact_time_normalized",
+                ],
+            )?;
+            for r in &rows {
+                csv_row(
+                    out,
+                    &[
+                        num(r.lambda),
+                        num(r.zeta),
+                        num(r.cor),
+                        num(r.max_force_normalized),
+                        opt_num(r.contact_time_normalized),
+                    ],
+                )?;
+            }
+        }
+    }
+    Ok(())
+}
+
+#[derive(Serialize)]
+struct VelocityDoc<'a, T> {
+    sweep: &'static str,
+    preset: Option<&'a str>,
+    origin: &'a str,
+    parameters: &'a str,
+    law: &'static str,
+    lambda: f64,
+    zeta: f64,
+    rows: &'a [T],
+}
+
+fn velocity(a: &VelocityArgs, out: &mut dyn Write) -> anyhow::Result<()> {
+    let b = a.ball.resolve(None)?;
+    let v0 = b.params.v0;
+    let from = a.from.unwrap_or(0.1 * v0);
+    let to = a.to.unwrap_or(3.0 * v0);
+    check_positive("from", from)?;
+    check_positive("to", to)?;
+    check_points(a.points, 1, b.law)?;
+    let rows = cor_vs_velocity(&b.params, b.law, &lin_space(from, to, a.points))
+        .map_err(|e| anyhow::anyhow!(param_message(&e)))?;
+    match a.format {
+        SweepFormat::Json => {
+            let n = b.params.normalized();
+            output::json(
+                out,
+                &VelocityDoc {
+                    sweep: "velocity",
+                    preset: b.name.as_deref(),
+                    origin: &b.origin,
+                    parameters: b.source,
+                    law: b.law.name(),
+                    lambda: n.lambda,
+                    zeta: n.zeta,
+                    rows: &rows,
+                },
+            )?
+        }
+        SweepFormat::Csv => {
+            csv_row(
+                out,
+                &[
+                    "v0",
+                    "cor",
+                    "max_force",
+                    "contact_time",
+                    "permanent_indentation",
+                ],
+            )?;
+            for r in &rows {
+                csv_row(
+                    out,
+                    &[
+                        num(r.v0),
+                        num(r.cor),
+                        num(r.max_force),
+                        opt_num(r.contact_time),
+                        num(r.permanent_indentation),
+                    ],
+                )?;
+            }
+        }
+    }
+    Ok(())
+}
