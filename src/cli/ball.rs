@@ -209,32 +209,10 @@ pub fn normalized(
 
 /// "invalid zeta: NaN (not a number)", with large and small values in exponent form.
 pub fn param_message(e: &ParamError) -> String {
-    format!(
-        "invalid {}: {} ({})",
-        e.field,
-        super::output::num(e.value),
-        e.reason
-    )
+    e.to_string()
 }
 
 /// A finite, positive, not absurd number, or an error naming `field`.
 pub fn check_positive(field: &'static str, value: f64) -> anyhow::Result<()> {
-    let reason = if value.is_nan() {
-        "not a number"
-    } else if value.is_infinite() {
-        "must be finite"
-    } else if value < 0.0 {
-        "must not be negative"
-    } else if value == 0.0 {
-        "must be positive"
-    } else if !(1e-15..=1e15).contains(&value) {
-        "out of the physically meaningful range 1e-15 … 1e15"
-    } else {
-        return Ok(());
-    };
-    anyhow::bail!(param_message(&ParamError {
-        field,
-        value,
-        reason
-    }))
+    crate::model::params::check_positive(field, value).map_err(|e| anyhow::anyhow!(e.to_string()))
 }

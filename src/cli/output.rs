@@ -5,19 +5,7 @@
 use serde::Serialize;
 use std::io::{self, Write};
 
-/// A number for CSV and messages: plain decimals in [1e-4, 1e7), exponent notation
-/// outside it, `inf`/`-inf`/`NaN` spelled out. Always round-trips (shortest representation).
-pub fn num(x: f64) -> String {
-    if x.is_nan() {
-        "NaN".into()
-    } else if x.is_infinite() {
-        if x > 0.0 { "inf".into() } else { "-inf".into() }
-    } else if x == 0.0 || (1e-4..1e7).contains(&x.abs()) {
-        format!("{x}")
-    } else {
-        format!("{x:e}")
-    }
-}
+pub use crate::model::params::display_number as num;
 
 /// An optional number for CSV: empty when absent (e.g. no rebound).
 pub fn opt_num(x: Option<f64>) -> String {

@@ -52,10 +52,37 @@ impl fmt::Display for ParamError {
         write!(
             f,
             "invalid {}: {} ({})",
-            self.field, self.value, self.reason
+            self.field,
+            display_number(self.value),
+            self.reason
         )
     }
 }
+
+/// A number for messages and CSV: plain decimals in [1e-4, 1e7), exponent notation outside
+/// it (so 1e300 is not 301 digits), `inf`/`-inf`/`NaN` spelled out; shortest round-trip form.
+pub fn display_number(x: f64) -> String {
+    if x.is_nan() {
+        "NaN".into()
+    } else if x.is_infinite() {
+        if x > 0.0 { "inf".into() } else { "-inf".into() }
+    } else if x == 0.0 || (1e-4..1e7).contains(&x.abs()) {
+        format!("{x}")
+    } else {
+        format!("{x:e}")
+    }
+}
+
+/// A finite, positive value in the meaningful range 1e-15 … 1e15, or an error naming `field`.
+pub fn check_positive(field: &'static str, value: f64) -> Result<(), ParamError> {
+    check(field, value, false, false)
+}
+
+/// The largest λ and ζ accepted. Beyond them the limits of MODEL.md §5 hold to the precision
+/// of the arithmetic (ζ = 1e6 is within 1e-6 of the ζ → ∞ limit), while the exact solver's
+/// modes span more than twelve decades and its sums lose their digits.
+pub const LAMBDA_MAX: f64 = 1e6;
+pub const ZETA_MAX: f64 = 1e6;
 
 impl std::error::Error for ParamError {}
 
@@ -112,6 +139,21 @@ impl ImpactParams {
         check("z_p", self.z_p, false, true)?;
         check("k_h", self.k_h, false, false)?;
         check("v0", self.v0, false, false)?;
+        let n = self.normalized();
+        if n.lambda > LAMBDA_MAX {
+            return Err(ParamError {
+                field: "lambda",
+                value: n.lambda,
+                reason: "K_r/K_p above 1e6: the recoil spring is rigid, use a smaller K_r",
+            });
+        }
+        if n.zeta > ZETA_MAX {
+            return Err(ParamError {
+                field: "zeta",
+                value: n.zeta,
+                reason: "√(m K_p)/(2c) above 1e6: the dashpot is absent, use a larger c",
+            });
+        }
         Ok(())
     }
 
@@ -165,6 +207,20 @@ pub fn damping_for_zeta(mass: f64, k_p: f64, zeta: f64) -> f64 {
 pub fn validate_lambda_zeta(lambda: f64, zeta: f64) -> Result<(), ParamError> {
     check("lambda", lambda, true, false)?;
     check("zeta", zeta, true, false)?;
+    if lambda > LAMBDA_MAX {
+        return Err(ParamError {
+            field: "lambda",
+            value: lambda,
+            reason: "above 1e6, where the recoil spring is rigid",
+        });
+    }
+    if zeta > ZETA_MAX {
+        return Err(ParamError {
+            field: "zeta",
+            value: zeta,
+            reason: "above 1e6, where the dashpot is absent",
+        });
+    }
     Ok(())
 }
 
@@ -204,6 +260,15 @@ mod tests {
         p.v0 = 0.0;
         assert_eq!(p.validate().unwrap_err().field, "v0");
         p.v0 = 1e300;
-        assert_eq!(p.validate().unwrap_err().field, "v0");
+        let e = p.validate().unwrap_err();
+        assert_eq!(e.field, "v0");
+        assert_eq!(
+            e.to_string(),
+            "invalid v0: 1e300 (out of the physically meaningful range 1e-15 … 1e15)"
+        );
+        p.v0 = 1.0;
+        p.damping = 1e-9;
+        assert_eq!(p.validate().unwrap_err().field, "zeta");
+        assert_eq!(validate_lambda_zeta(2e6, 1.0).unwrap_err().field, "lambda");
     }
 }
