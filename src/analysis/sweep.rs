@@ -4,6 +4,7 @@
 use crate::model::contact::ContactLaw;
 use crate::model::params::{ImpactParams, ParamError};
 use crate::solver::{SolveOptions, simulate};
+use rayon::prelude::*;
 use serde::Serialize;
 
 /// `n` points from `from` to `to`, evenly spaced in log10 (both ends included).
@@ -45,27 +46,29 @@ pub struct ZetaPoint {
 }
 
 /// COR, F̄_m and τ_f against ζ for each λ (Figs. 2, 3), below flattening. Rows are grouped by
-/// λ in the order given.
+/// λ in the order given. The points are independent, so they run on all cores.
 pub fn cor_vs_zeta(
     lambdas: &[f64],
     zetas: &[f64],
     law: ContactLaw,
 ) -> Result<Vec<ZetaPoint>, ParamError> {
-    let mut rows = Vec::with_capacity(lambdas.len() * zetas.len());
-    for &lambda in lambdas {
-        for &zeta in zetas {
+    let grid: Vec<(f64, f64)> = lambdas
+        .iter()
+        .flat_map(|&l| zetas.iter().map(move |&z| (l, z)))
+        .collect();
+    grid.par_iter()
+        .map(|&(lambda, zeta)| {
             let r =
                 crate::solver::simulate_normalized(lambda, zeta, law, &SolveOptions::default())?;
-            rows.push(ZetaPoint {
+            Ok(ZetaPoint {
                 lambda,
                 zeta,
                 cor: r.cor,
                 max_force_normalized: r.max_force_normalized,
                 contact_time_normalized: r.contact_time_normalized,
-            });
-        }
-    }
-    Ok(rows)
+            })
+        })
+        .collect()
 }
 
 /// One point of a speed sweep, SI units.
@@ -88,7 +91,7 @@ pub fn cor_vs_velocity(
     speeds: &[f64],
 ) -> Result<Vec<VelocityPoint>, ParamError> {
     speeds
-        .iter()
+        .par_iter()
         .map(|&v0| {
             let r = simulate(
                 &ImpactParams { v0, ..*params },

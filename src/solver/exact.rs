@@ -10,7 +10,7 @@
 //! separation), z̄ = z̄_m (reload).
 
 use super::propagator::{Propagator, Roots};
-use super::roots::newton_bracketed_from;
+use super::roots::{halley_bracketed_from, newton_bracketed_from};
 use super::{EventKind, Outcome, SolveOptions};
 use crate::model::contact::{Contact, Unloading};
 use crate::model::params::Normalized;
@@ -81,12 +81,14 @@ struct Modes {
 impl Modes {
     fn new(roots: &Roots) -> Self {
         let all = roots.all();
-        let scale = all.iter().map(|s| s.norm()).fold(0.0, f64::max);
+        // |s| as √(norm²): hypot's overflow care is not needed at these magnitudes
+        let norms = all.map(|s| s.norm_sqr().sqrt());
+        let scale = norms.iter().copied().fold(0.0, f64::max);
         let mut live = [(0.0, 0.0, false); 3];
         let mut count = 0;
         for (i, s) in all.iter().enumerate() {
-            if s.norm() > 1e-12 * scale {
-                live[count] = (s.norm(), s.re, i > 0 && roots.q < 0.0);
+            if norms[i] > 1e-12 * scale {
+                live[count] = (norms[i], s.re, i > 0 && roots.q < 0.0);
                 count += 1;
             }
         }
@@ -136,7 +138,8 @@ impl Modes {
         }
         let h = match first {
             None => tau.max(1.0),
-            Some((n, true)) => 1.0 / n,
+            // 1.5 time constants < a quarter period (π/2b ≥ π/2|s|): one extremum at most
+            Some((n, true)) => 1.5 / n,
             Some((n, false)) if second > 0.0 => (1.0 / n).max(tau).min(1.0 / second),
             Some((n, false)) => (1.0 / n).max(tau),
         };
@@ -185,12 +188,8 @@ fn crossing_in(
         let (g, d, dd) = watch.eval(&f(t));
         (sign * g, sign * d, sign * dd)
     };
-    let value = |f: &mut dyn FnMut(f64) -> Jet, t: f64| {
-        let (v, d, _) = g(f, t);
-        (v, d)
-    };
     if ga < 0.0 && gb >= 0.0 {
-        return Some(newton_bracketed_from(|t| value(f, t), (ta, ga), (tb, gb)));
+        return Some(halley_bracketed_from(|t| g(f, t), (ta, ga), (tb, gb)));
     }
     if ga < 0.0 && gb < 0.0 && da > 0.0 && db < 0.0 {
         let rate = |t| {
@@ -200,7 +199,7 @@ fn crossing_in(
         let tm = newton_bracketed_from(rate, (ta, da), (tb, db));
         let (gm, _, _) = g(f, tm);
         if gm > 1e-14 * (ga.abs() + gb.abs()) {
-            return Some(newton_bracketed_from(|t| value(f, t), (ta, ga), (tm, gm)));
+            return Some(halley_bracketed_from(|t| g(f, t), (ta, ga), (tm, gm)));
         }
     }
     None

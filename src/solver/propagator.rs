@@ -51,7 +51,7 @@ fn eval_cubic(a: [f64; 3], s: C) -> (C, C) {
 fn polish(a: [f64; 3], mut s: C) -> C {
     for _ in 0..3 {
         let (p, dp) = eval_cubic(a, s);
-        if dp.norm() == 0.0 {
+        if dp.norm_sqr() == 0.0 {
             break;
         }
         let step = p / dp;
@@ -197,7 +197,7 @@ impl Propagator {
             .abs()
             .max(roots.centre.abs())
             .max(roots.q.abs().sqrt());
-        let form = if (s3 - s1).norm() <= 1e-4 * scale {
+        let form = if (s3 - s1).norm_sqr() <= 1e-8 * scale * scale {
             Form::Expm { w0 }
         } else {
             let u1 = a * w0 - w0 * roots.s1;
@@ -231,6 +231,7 @@ impl Propagator {
     /// w(τ) and w'(τ) = A w(τ).
     pub fn eval(&self, tau: f64) -> (Vector3<f64>, Vector3<f64>) {
         let w = match &self.form {
+            Form::Newton { u0, .. } if tau == 0.0 => *u0,
             Form::Newton {
                 u0,
                 u1,
