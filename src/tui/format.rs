@@ -26,13 +26,18 @@ pub fn sig_trim(x: f64, n: usize) -> String {
     s.trim_end_matches('0').trim_end_matches('.').to_string()
 }
 
-/// A difference with its sign always shown ("+0.001", "-4.5").
-pub fn signed(x: f64, n: usize) -> String {
-    if !x.is_finite() {
+/// How far `model` is from `measured`, in percent of `measured`: "+0.1%", "-3.7%", "+209%".
+pub fn percent_diff(model: f64, measured: f64) -> String {
+    let p = 100.0 * (model - measured) / measured;
+    if !p.is_finite() {
         return "—".into();
     }
-    let s = sig_trim(x, n);
-    if x > 0.0 { format!("+{s}") } else { s }
+    let s = if p.abs() < 9.95 {
+        format!("{p:+.1}%")
+    } else {
+        format!("{p:+.0}%")
+    };
+    if s == "-0.0%" { "+0.0%".into() } else { s }
 }
 
 /// A tick label for a value on an axis whose ticks are `step` apart.
@@ -86,8 +91,15 @@ mod tests {
         assert_eq!(sig(0.0, 3), "0");
         assert_eq!(sig_trim(3.0, 4), "3");
         assert_eq!(sig_trim(0.75, 4), "0.75");
-        assert_eq!(signed(0.0006, 2), "+0.0006");
-        assert_eq!(signed(-4.5, 3), "-4.5");
+    }
+
+    #[test]
+    fn percentages() {
+        assert_eq!(percent_diff(0.7506, 0.75), "+0.1%");
+        assert_eq!(percent_diff(117.3, 121.8), "-3.7%");
+        assert_eq!(percent_diff(376.1, 121.8), "+209%");
+        assert_eq!(percent_diff(1.0, 0.0), "—");
+        assert_eq!(percent_diff(0.9999999, 1.0), "+0.0%");
     }
 
     #[test]

@@ -70,6 +70,7 @@ pub fn plot(app: &App) -> Plot {
     }
     Plot {
         title: format!("COR e vs impact speed v0 [m/s] · {}", preset.name),
+        short_title: format!("e vs v0 · {}", preset.name),
         x: AxisSpec::Linear { lo: 0.0, hi: v_hi },
         y: AxisSpec::Linear { lo: 0.0, hi: 1.0 },
         series,

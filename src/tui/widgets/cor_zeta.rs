@@ -139,12 +139,19 @@ pub fn zeta_plot(app: &App, q: Quantity) -> Plot {
             format!("{} measured", letters.join(" ")),
         ));
     }
-    let title = match q {
-        Quantity::Cor => "COR e vs ζ (log) · linear law, no flattening",
-        Quantity::PeakForce => "Peak force F̄m = Fm/(m v0 ω0) vs ζ (log) · linear law",
+    let (title, short_title) = match q {
+        Quantity::Cor => (
+            "COR e vs ζ (log) · linear law, no flattening",
+            "e vs ζ (log)",
+        ),
+        Quantity::PeakForce => (
+            "Normalized peak force Fm/(m v0 ω0) vs ζ (log) · linear law",
+            "Fm/(m v0 ω0) vs ζ",
+        ),
     };
     Plot {
         title: title.into(),
+        short_title: short_title.into(),
         x: AxisSpec::Log { lo, hi },
         y: AxisSpec::Linear { lo: 0.0, hi: y_hi },
         series,

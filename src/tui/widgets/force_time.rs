@@ -61,13 +61,14 @@ pub fn plot(app: &App) -> Plot {
         });
     }
     if !rules.is_empty() {
-        legend_lines.push(legend("┄", theme.measured(), "measured F_m, t_f"));
+        legend_lines.push(legend("┄", theme.measured(), "measured"));
     }
     if app.ghost().is_some() {
         legend_lines.push(legend("━", theme.ghost(), "pinned"));
     }
     Plot {
         title: "Force–time · F [N] vs t [ms]".into(),
+        short_title: "F–t · N, ms".into(),
         x: AxisSpec::Linear { lo: 0.0, hi: t_hi },
         y: AxisSpec::Linear { lo: 0.0, hi: f_hi },
         series,

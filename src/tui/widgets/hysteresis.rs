@@ -81,6 +81,7 @@ pub fn plot(app: &App) -> Plot {
     }
     Plot {
         title: "Force–displacement · F [N] vs α, z [mm]".into(),
+        short_title: "F–α,z · N, mm".into(),
         x: AxisSpec::Linear { lo: 0.0, hi: x_hi },
         y: AxisSpec::Linear { lo: 0.0, hi: f_hi },
         series,

@@ -8,7 +8,7 @@ use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
 use ratatui::style::{Color, Style};
 use ratatui::symbols::Marker;
-use ratatui::text::Line;
+use ratatui::text::{Line, Span};
 use ratatui::widgets::canvas::{self, Canvas, Context};
 use ratatui::widgets::{Block, Widget};
 
@@ -72,6 +72,8 @@ pub enum Corner {
 #[derive(Debug, Clone)]
 pub struct Plot {
     pub title: String,
+    /// For narrow charts.
+    pub short_title: String,
     pub x: AxisSpec,
     pub y: AxisSpec,
     pub series: Vec<Series>,
@@ -238,6 +240,7 @@ impl Plot {
         }
     }
 
+    /// Rule labels, then marks; a mark whose cell another mark took moves right, so both show.
     fn draw_marks(&self, l: &PlotLayout, buf: &mut Buffer) {
         for r in &self.rules {
             let Some(text) = &r.label else { continue };
@@ -254,47 +257,63 @@ impl Plot {
                 buf.set_stringn(col, row, text, room, Style::default().fg(r.color));
             }
         }
+        let mut taken: Vec<(u16, u16)> = Vec::new();
         for m in &self.marks {
-            if let (Some(col), Some(row)) = (l.col(m.x), l.row(m.y)) {
+            if let (Some(mut col), Some(row)) = (l.col(m.x), l.row(m.y)) {
+                while taken.contains(&(col, row)) && col + 1 < l.plot.right() {
+                    col += 1;
+                }
                 let room = usize::from(l.plot.right() - col);
-                buf.set_stringn(col, row, &m.text, room, m.style);
+                let (end, _) = buf.set_stringn(col, row, &m.text, room, m.style);
+                taken.extend((col..end).map(|c| (c, row)));
             }
         }
     }
 
+    /// The legend in its corner, one entry a line; on one line when that does not fit; not at
+    /// all when neither does.
     fn draw_legend(&self, l: &PlotLayout, buf: &mut Buffer) {
         let p = l.plot;
-        let rows = usize::from(p.height.saturating_sub(1)).min(self.legend.len());
-        let width = self.legend.iter().map(Line::width).max().unwrap_or(0) as u16;
-        if rows == 0 || width + 3 > p.width {
-            return;
-        }
-        let left = matches!(self.legend_at, Corner::TopLeft | Corner::BottomLeft);
         let top = matches!(self.legend_at, Corner::TopLeft | Corner::TopRight);
-        let x = if left { p.x + 1 } else { p.right() - width - 1 };
-        // bottom legends keep clear of the lowest row, where curves often run along e = 0
-        let rows = if top {
-            rows
+        let left = matches!(self.legend_at, Corner::TopLeft | Corner::BottomLeft);
+        // bottom legends keep clear of the lowest row, where curves often run along zero
+        let room = p.height.saturating_sub(if top { 1 } else { 2 });
+        let width = self.legend.iter().map(Line::width).max().unwrap_or(0) as u16;
+        // a legend may take half the plot's rows and half its width
+        let fits = |rows: u16, w: u16| rows <= room && 2 * rows <= p.height && 2 * w <= p.width;
+        let lines = if fits(self.legend.len() as u16, width) {
+            self.legend.clone()
         } else {
-            rows.min(usize::from(p.height.saturating_sub(2)))
+            let mut spans = Vec::new();
+            for (i, line) in self.legend.iter().enumerate() {
+                if i > 0 {
+                    spans.push(Span::raw("  "));
+                }
+                spans.extend(line.spans.iter().cloned());
+            }
+            let one = Line::from(spans);
+            if !fits(1, one.width() as u16) {
+                return;
+            }
+            vec![one]
         };
+        let width = lines.iter().map(Line::width).max().unwrap_or(0) as u16;
+        let x = if left { p.x + 1 } else { p.right() - width - 1 };
         let y0 = if top {
             p.y
         } else {
-            p.bottom() - 1 - rows as u16
+            p.bottom() - 1 - lines.len() as u16
         };
-        for (i, line) in self.legend.iter().take(rows).enumerate() {
+        for (i, line) in lines.iter().enumerate() {
             let y = y0 + i as u16;
-            let area = Rect::new(x - 1, y, width + 2, 1);
             buf.set_string(
-                area.x,
+                x - 1,
                 y,
-                " ".repeat(usize::from(area.width)),
+                " ".repeat(usize::from(width + 2)),
                 Style::default(),
             );
             let w = line.width() as u16;
-            let lx = if left { x } else { x + width - w };
-            buf.set_line(lx, y, line, w);
+            buf.set_line(if left { x } else { x + width - w }, y, line, w);
         }
     }
 }

@@ -4,7 +4,7 @@
 
 use crate::solver::ImpactResponse;
 use crate::tui::app::App;
-use crate::tui::format::{sig, sig_trim, signed};
+use crate::tui::format::{percent_diff, sig, sig_trim};
 use crate::tui::param::Param;
 use crate::tui::theme::Theme;
 use ratatui::buffer::Buffer;
@@ -14,7 +14,7 @@ use ratatui::text::{Line, Span};
 use ratatui::widgets::{Block, Paragraph, Widget};
 
 /// Rows the tall panel needs, border included.
-pub const PANEL_HEIGHT: u16 = 21;
+pub const PANEL_HEIGHT: u16 = 22;
 /// Rows the compact form needs, border included.
 pub const COMPACT_HEIGHT: u16 = 6;
 
@@ -134,7 +134,7 @@ pub fn render_panel(app: &App, area: Rect, buf: &mut Buffer) {
         Line::raw(""),
     ];
     let col = inner_w.saturating_sub(8) / 3;
-    let cell = |s: &str| format!("{s:>col$}");
+    let cell = |s: &str| format!("{s:>w$} ", w = col.saturating_sub(1));
     lines.push(Line::styled(
         format!(
             " {:<7}{}{}{}",
@@ -151,7 +151,7 @@ pub fn render_panel(app: &App, area: Rect, buf: &mut Buffer) {
     }
     for row in rows {
         let (measured, diff) = match row.measured {
-            Some(m) => (sig_trim(m, 4), signed(row.model_value - m, 2)),
+            Some(m) => (sig_trim(m, 4), percent_diff(row.model_value, m)),
             None => (String::new(), String::new()),
         };
         lines.push(Line::from(vec![
@@ -178,13 +178,17 @@ pub fn render_panel(app: &App, area: Rect, buf: &mut Buffer) {
     ));
     if let Some(g) = app.ghost() {
         let gs = &g.setting;
+        let name = &app.presets()[gs.preset].name;
+        lines.push(Line::styled(
+            format!(" pinned: {name}, {} law", gs.law),
+            theme.ghost(),
+        ));
         lines.push(Line::styled(
             format!(
-                " pinned: λ {} ζ {} v0 {} {}",
+                "   λ {}  ζ {}  v0 {} m/s",
                 sig_trim(gs.get(Param::Lambda), 3),
                 sig_trim(gs.get(Param::Zeta), 3),
                 sig_trim(gs.get(Param::V0), 3),
-                gs.law
             ),
             theme.ghost(),
         ));
@@ -231,7 +235,7 @@ pub fn render_compact(app: &App, area: Rect, buf: &mut Buffer) {
             row.name.split(' ').next().unwrap_or(""),
             row.model,
             sig_trim(m, 4),
-            signed(row.model_value - m, 2)
+            percent_diff(row.model_value, m)
         ),
         None => format!("{} {}", row.name.split(' ').next().unwrap_or(""), row.model),
     };

@@ -22,7 +22,7 @@ const HINTS: [(&str, &str, u8); 15] = [
     ("p/P", "pin", 3),
     ("u", "undo", 2),
     ("r", "reset", 3),
-    ("Tab", "view", 1),
+    ("Tab", "view", 0),
     ("?", "help", 0),
     ("q", "quit", 0),
 ];
