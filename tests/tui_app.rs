@@ -373,3 +373,44 @@ fn a_batch_applied_then_refreshed_once_equals_one_update_per_key() {
     assert_eq!(batch.zeta_curve(), one_by_one.zeta_curve());
     assert_eq!(batch.undo_depth(), keys.len());
 }
+
+#[test]
+fn background_sweeps_are_requested_then_received_and_stale_ones_dropped() {
+    let mut app = App::new(Preset::embedded().remove(0), true).with_background_sweeps();
+    assert!(
+        app.speed_requests().is_empty(),
+        "nothing wanted on the impact view"
+    );
+    press(&mut app, &[KeyCode::Tab]);
+    assert!(app.speed_curve().is_none());
+    let old = app.speed_requests().to_vec();
+    assert_eq!(old.len(), 1);
+    // the user moves on before the sweep is back: the old one is no longer wanted
+    press(&mut app, &chars("c"));
+    let new = app.speed_requests().to_vec();
+    assert_eq!(new.len(), 1);
+    assert_ne!(new, old);
+    let message = app.message().cloned();
+    app.update(Action::SpeedReady(old[0].clone(), old[0].run()));
+    assert!(app.speed_curve().is_none(), "a stale sweep is dropped");
+    assert_eq!(
+        app.message().cloned(),
+        message,
+        "a finished sweep leaves the message alone"
+    );
+    app.update(Action::SpeedReady(new[0].clone(), new[0].run()));
+    assert_eq!(app.speed_curve().unwrap().request, new[0]);
+    assert!(app.speed_requests().is_empty());
+    // pinning adds the ghost's sweep only when it differs
+    press(&mut app, &chars("p"));
+    assert!(app.speed_requests().is_empty());
+    press(&mut app, &chars("L"));
+    assert_eq!(
+        app.speed_requests().len(),
+        1,
+        "only the current one is stale"
+    );
+    // leaving the view drops what is pending
+    press(&mut app, &[KeyCode::Tab]);
+    assert!(app.speed_requests().is_empty());
+}

@@ -1,5 +1,6 @@
 //! Key → action mapping. Pure: it reads the key and the current input mode, nothing else.
 
+use super::compute::{SpeedCurve, SpeedRequest};
 use super::param::{Dir, Param};
 use ratatui::crossterm::event::{Event, KeyCode, KeyEvent, KeyEventKind, KeyModifiers};
 
@@ -41,6 +42,8 @@ pub enum Action {
     PrevView,
     ToggleHelp,
     CloseHelp,
+    /// A COR-vs-speed sweep finished (from the background worker).
+    SpeedReady(SpeedRequest, Result<SpeedCurve, String>),
 }
 
 /// What the keyboard is talking to.

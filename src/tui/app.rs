@@ -2,7 +2,7 @@
 //! here, when the state changes, and stored; drawing only reads them.
 
 use super::action::{Action, Mode};
-use super::compute::{self, SpeedCurve, ZetaCurve};
+use super::compute::{self, SpeedCurve, SpeedRequest, ZetaCurve};
 use super::format::sig_trim;
 use super::param::Param;
 pub use super::state::{Ghost, Input, Message, Overlay, Setting, Severity, View};
@@ -35,6 +35,9 @@ pub struct App {
     zeta: Option<ZetaCurve>,
     /// COR vs speed; computed only while the sweeps view shows it.
     speed: Option<SpeedCurve>,
+    /// Sweeps to run in the background (see [`App::with_background_sweeps`]).
+    speed_wanted: Vec<SpeedRequest>,
+    background: bool,
 }
 
 impl App {
@@ -66,9 +69,24 @@ impl App {
             run_for: None,
             zeta: None,
             speed: None,
+            speed_wanted: Vec::new(),
+            background: false,
         };
         app.refresh();
         app
+    }
+
+    /// Leave the COR-vs-speed sweeps to a background worker: [`App::refresh`] lists them in
+    /// [`App::speed_requests`] and the results come back as [`Action::SpeedReady`]. Without
+    /// this (tests), `refresh` runs them itself.
+    pub fn with_background_sweeps(mut self) -> App {
+        self.background = true;
+        self
+    }
+
+    /// Sweeps waiting for the background worker.
+    pub fn speed_requests(&self) -> &[SpeedRequest] {
+        &self.speed_wanted
     }
 
     pub fn presets(&self) -> &[Preset] {
@@ -135,8 +153,11 @@ impl App {
     /// Apply one action without recomputing: for a batch of queued events, `apply` each, then
     /// [`App::refresh`] once.
     pub fn apply(&mut self, action: Action) {
-        self.message = None;
+        if !matches!(action, Action::SpeedReady(..)) {
+            self.message = None;
+        }
         match action {
+            Action::SpeedReady(request, result) => self.receive_speed(&request, result),
             Action::Quit => self.quit = true,
             Action::Step { param, dir, coarse } => {
                 self.selected = param;
@@ -247,28 +268,56 @@ impl App {
         if self.zeta.as_ref().is_none_or(|c| c.lambda != lambda) {
             self.zeta = compute::zeta_curve(lambda).map_err(|e| self.error(e)).ok();
         }
+        self.speed_wanted.clear();
         if self.view == View::Sweeps {
-            let measured_v0 = self.preset().measured.v0;
-            let s = &self.setting;
-            if self
-                .speed
-                .as_ref()
-                .is_none_or(|c| !c.is_for(&s.params, s.law, measured_v0))
-            {
-                self.speed = SpeedCurve::compute(&s.params, s.law, measured_v0)
-                    .map_err(|e| self.error(e))
-                    .ok();
+            let (current, ghost) = self.speed_targets();
+            let stale = |have: Option<&SpeedCurve>, want: &SpeedRequest| {
+                have.is_none_or(|c| c.request != *want)
+            };
+            if stale(self.speed.as_ref(), &current) {
+                self.speed_wanted.push(current);
             }
-            if let Some(g) = &self.ghost
-                && g.speed.is_none()
+            if let (Some(g), Some(want)) = (&self.ghost, ghost)
+                && stale(g.speed.as_ref(), &want)
+                && !self.speed_wanted.contains(&want)
             {
-                let v0 = self.presets[g.setting.preset].measured.v0;
-                let speed = SpeedCurve::compute(&g.setting.params, g.setting.law, v0).ok();
-                if let Some(g) = &mut self.ghost {
-                    g.speed = speed;
+                self.speed_wanted.push(want);
+            }
+            if !self.background {
+                for request in std::mem::take(&mut self.speed_wanted) {
+                    let result = request.run();
+                    self.receive_speed(&request, result);
                 }
             }
         }
+    }
+
+    /// The sweeps the current setting and the ghost need.
+    fn speed_targets(&self) -> (SpeedRequest, Option<SpeedRequest>) {
+        let request =
+            |s: &Setting| SpeedRequest::new(&s.params, s.law, self.presets[s.preset].measured.v0);
+        (
+            request(&self.setting),
+            self.ghost.as_ref().map(|g| request(&g.setting)),
+        )
+    }
+
+    /// A finished sweep goes wherever it is (still) wanted.
+    fn receive_speed(&mut self, request: &SpeedRequest, result: Result<SpeedCurve, String>) {
+        let curve = match result {
+            Ok(c) => c,
+            Err(e) => return self.error(e),
+        };
+        let (current, ghost) = self.speed_targets();
+        if *request == current {
+            self.speed = Some(curve.clone());
+        }
+        if let (Some(g), Some(want)) = (&mut self.ghost, ghost)
+            && *request == want
+        {
+            g.speed = Some(curve);
+        }
+        self.speed_wanted.retain(|r| r != request);
     }
 
     /// Set `param` to `value` brought into range; a note when it had to move.

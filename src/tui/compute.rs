@@ -26,16 +26,24 @@ pub struct ZetaCurve {
     pub points: Vec<ZetaPoint>,
 }
 
-/// COR against impact speed for one ball (Fig. 4).
+/// What a COR-vs-speed sweep (Fig. 4) is computed for. Two equal requests give the same
+/// curve, so the request is the curve's key.
 #[derive(Debug, Clone, PartialEq)]
-pub struct SpeedCurve {
+pub struct SpeedRequest {
+    /// The ball; v0 is replaced by `v_max`: the sweep does not depend on it otherwise.
+    pub params: ImpactParams,
+    pub law: ContactLaw,
     /// The sweep runs over (0, v_max] (m/s).
     pub v_max: f64,
     /// Speed at which the linear law starts to flatten (m/s), when the ball can flatten.
     pub v_flat: Option<f64>,
+}
+
+/// COR against impact speed for one ball (Fig. 4).
+#[derive(Debug, Clone, PartialEq)]
+pub struct SpeedCurve {
+    pub request: SpeedRequest,
     pub points: Vec<VelocityPoint>,
-    /// What it was computed for: the parameters (v0 ignored) and the law.
-    key: (ImpactParams, ContactLaw),
 }
 
 /// One impact with its history.
@@ -93,33 +101,11 @@ pub fn flattening_speed(params: &ImpactParams) -> Option<f64> {
     (v.is_finite() && v > 0.0).then_some(v)
 }
 
-impl SpeedCurve {
-    /// The sweep up to a speed that shows the flattening drop, the measured speed and the current
-    /// one: v_max = max(2.5 v_flat, 1.5 v_measured, 1.2 v0), rounded up, at most 100 m/s.
-    pub fn compute(
-        params: &ImpactParams,
-        law: ContactLaw,
-        measured_v0: f64,
-    ) -> Result<SpeedCurve, String> {
-        let (v_max, v_flat) = Self::range(params, measured_v0);
-        let speeds = lin_space(v_max / SPEED_POINTS as f64, v_max, SPEED_POINTS);
-        let points = cor_vs_velocity(params, law, &speeds).map_err(|e| e.to_string())?;
-        Ok(SpeedCurve {
-            v_max,
-            v_flat,
-            points,
-            key: (
-                ImpactParams {
-                    v0: v_max,
-                    ..*params
-                },
-                law,
-            ),
-        })
-    }
-
-    /// (v_max, v_flat) for these parameters.
-    fn range(params: &ImpactParams, measured_v0: f64) -> (f64, Option<f64>) {
+impl SpeedRequest {
+    /// The sweep for `params` and `law`, up to a speed that shows the flattening drop, the
+    /// measured speed and the current one: v_max = max(2.5 v_flat, 1.5 v_measured, 1.2 v0),
+    /// rounded up, at most 100 m/s. Costs one exact linear run (for v_flat).
+    pub fn new(params: &ImpactParams, law: ContactLaw, measured_v0: f64) -> SpeedRequest {
         let v_flat = flattening_speed(params);
         let want = [
             2.5 * v_flat.unwrap_or(0.0),
@@ -129,21 +115,44 @@ impl SpeedCurve {
         .into_iter()
         .filter(|v| v.is_finite())
         .fold(0.0, f64::max);
-        (nice_ceil(want).min(100.0), v_flat)
+        let v_max = nice_ceil(want).min(100.0);
+        SpeedRequest {
+            params: ImpactParams {
+                v0: v_max,
+                ..*params
+            },
+            law,
+            v_max,
+            v_flat,
+        }
     }
 
-    /// Whether this curve is the one `compute` would give for these inputs (v0 matters only
-    /// through v_max). Costs one exact linear run.
-    pub fn is_for(&self, params: &ImpactParams, law: ContactLaw, measured_v0: f64) -> bool {
-        let (v_max, _) = Self::range(params, measured_v0);
-        self.key
-            == (
-                ImpactParams {
-                    v0: v_max,
-                    ..*params
-                },
-                law,
-            )
+    pub fn speeds(&self) -> Vec<f64> {
+        lin_space(self.v_max / SPEED_POINTS as f64, self.v_max, SPEED_POINTS)
+    }
+
+    /// The whole sweep.
+    pub fn run(&self) -> Result<SpeedCurve, String> {
+        self.run_while(|| true).expect("never abandoned")
+    }
+
+    /// The sweep one speed at a time, asking `go_on` before each; `None` when it said stop.
+    /// (Some corners — λ ≈ 0, ζ ≫ 1 with a nonlinear law — take seconds a point.)
+    pub fn run_while(&self, mut go_on: impl FnMut() -> bool) -> Option<Result<SpeedCurve, String>> {
+        let mut points = Vec::with_capacity(SPEED_POINTS);
+        for v in self.speeds() {
+            if !go_on() {
+                return None;
+            }
+            match cor_vs_velocity(&self.params, self.law, &[v]) {
+                Ok(p) => points.extend(p),
+                Err(e) => return Some(Err(e.to_string())),
+            }
+        }
+        Some(Ok(SpeedCurve {
+            request: self.clone(),
+            points,
+        }))
     }
 }
 
@@ -166,10 +175,11 @@ mod tests {
     fn speed_curve_reaches_past_flattening() {
         for preset in Preset::embedded() {
             let p = preset.params();
-            let c = SpeedCurve::compute(&p, ContactLaw::Linear, preset.measured.v0).unwrap();
-            let v_flat = c.v_flat.unwrap();
+            let req = SpeedRequest::new(&p, ContactLaw::Linear, preset.measured.v0);
+            let c = req.run().unwrap();
+            let v_flat = req.v_flat.unwrap();
             assert!(
-                c.v_max >= 2.0 * v_flat && c.v_max <= 100.0,
+                req.v_max >= 2.0 * v_flat && req.v_max <= 100.0,
                 "{}",
                 preset.name
             );
@@ -178,17 +188,44 @@ mod tests {
                 "{}",
                 preset.name
             );
-            assert!(c.is_for(&p, ContactLaw::Linear, preset.measured.v0));
-            assert!(!c.is_for(&p, ContactLaw::Hertz, preset.measured.v0));
+            // the same as the library's sweep over the same speeds
+            let whole = cor_vs_velocity(&p, ContactLaw::Linear, &req.speeds()).unwrap();
+            assert_eq!(c.points, whole);
+            // v0 matters only through v_max
             let slower = ImpactParams {
                 v0: 0.5 * preset.measured.v0,
                 ..p
             };
-            assert!(c.is_for(&slower, ContactLaw::Linear, preset.measured.v0));
-            if c.v_max < 100.0 {
-                let faster = ImpactParams { v0: c.v_max, ..p };
-                assert!(!c.is_for(&faster, ContactLaw::Linear, preset.measured.v0));
+            assert_eq!(
+                SpeedRequest::new(&slower, ContactLaw::Linear, preset.measured.v0),
+                req
+            );
+            assert_ne!(
+                SpeedRequest::new(&p, ContactLaw::Hertz, preset.measured.v0),
+                req
+            );
+            if req.v_max < 100.0 {
+                let faster = ImpactParams { v0: req.v_max, ..p };
+                assert_ne!(
+                    SpeedRequest::new(&faster, ContactLaw::Linear, preset.measured.v0),
+                    req
+                );
             }
         }
+    }
+
+    #[test]
+    fn a_sweep_can_be_abandoned_between_points() {
+        let p = Preset::embedded()[0].params();
+        let req = SpeedRequest::new(&p, ContactLaw::Linear, 3.12);
+        let mut asked = 0;
+        assert!(
+            req.run_while(|| {
+                asked += 1;
+                asked < 5
+            })
+            .is_none()
+        );
+        assert_eq!(asked, 5);
     }
 }

@@ -15,8 +15,12 @@ pub mod state;
 pub mod theme;
 pub mod ui;
 pub mod widgets;
+pub mod worker;
 
 use crate::preset::Preset;
+use anyhow::Context;
+use ratatui::crossterm::terminal;
+use std::io::IsTerminal;
 
 /// Whether to draw in colour: not when NO_COLOR is set to a non-empty value (no-color.org).
 pub fn color_wanted() -> bool {
@@ -27,8 +31,17 @@ pub fn color_wanted() -> bool {
 /// every exit path: normal return, error, and panic (ratatui's hook restores it, then chains
 /// the previous hook).
 pub fn run(preset: Preset) -> anyhow::Result<()> {
-    let mut app = app::App::new(preset, color_wanted());
-    let mut terminal = ratatui::try_init().inspect_err(|_| ratatui::restore())?;
+    if !std::io::stdout().is_terminal() {
+        anyhow::bail!("the explorer needs a terminal (stdout is not one); see `bouncelab --help`");
+    }
+    let mut app = app::App::new(preset, color_wanted()).with_background_sweeps();
+    let mut terminal = ratatui::try_init()
+        .inspect_err(|_| {
+            if terminal::is_raw_mode_enabled().unwrap_or(false) {
+                ratatui::restore();
+            }
+        })
+        .context("cannot set the terminal up for the explorer")?;
     let result = event::run(&mut terminal, &mut app);
     ratatui::restore();
     result

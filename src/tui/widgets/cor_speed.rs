@@ -21,21 +21,26 @@ pub fn plot(app: &App) -> Plot {
     let mut legend_lines = Vec::new();
     let mut marks = Vec::new();
     let mut rules = Vec::new();
-    let mut v_hi = s.params.v0;
+    // while a sweep is out, the axis already spans it
+    let mut v_hi = app
+        .speed_requests()
+        .iter()
+        .map(|r| r.v_max)
+        .fold(s.params.v0, f64::max);
     let ghost = app.ghost().and_then(|g| g.speed.as_ref());
     if let Some(c) = ghost {
-        v_hi = v_hi.max(c.v_max);
+        v_hi = v_hi.max(c.request.v_max);
         series.push(Series::ghost(curve(&c.points)));
     }
     if let Some(c) = app.speed_curve() {
-        v_hi = v_hi.max(c.v_max);
+        v_hi = v_hi.max(c.request.v_max);
         series.push(Series::live(curve(&c.points), theme.current()));
         legend_lines.push(legend(
             "━",
             Style::default().fg(theme.current()),
             format!("e(v0), {} law", s.law),
         ));
-        if let Some(v) = c.v_flat.filter(|_| s.law == ContactLaw::Linear) {
+        if let Some(v) = c.request.v_flat.filter(|_| s.law == ContactLaw::Linear) {
             let color = theme.axis().fg.unwrap_or_default();
             rules.push(Rule {
                 at: v,
@@ -68,9 +73,14 @@ pub fn plot(app: &App) -> Plot {
     if ghost.is_some() {
         legend_lines.push(legend("━", theme.ghost(), "pinned"));
     }
+    let updating = if app.speed_requests().is_empty() {
+        ""
+    } else {
+        " · updating…"
+    };
     Plot {
-        title: format!("COR e vs impact speed v0 [m/s] · {}", preset.name),
-        short_title: format!("e vs v0 · {}", preset.name),
+        title: format!("COR e vs impact speed v0 [m/s] · {}{updating}", preset.name),
+        short_title: format!("e vs v0 · {}{updating}", preset.name),
         x: AxisSpec::Linear { lo: 0.0, hi: v_hi },
         y: AxisSpec::Linear { lo: 0.0, hi: 1.0 },
         series,
