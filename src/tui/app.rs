@@ -302,12 +302,16 @@ impl App {
         )
     }
 
-    /// A finished sweep goes wherever it is (still) wanted.
+    /// A finished sweep goes wherever it is (still) wanted. A failed one leaves an empty curve
+    /// for its request, so it is not asked for again.
     fn receive_speed(&mut self, request: &SpeedRequest, result: Result<SpeedCurve, String>) {
-        let curve = match result {
-            Ok(c) => c,
-            Err(e) => return self.error(e),
-        };
+        let curve = result.unwrap_or_else(|e| {
+            self.error(e);
+            SpeedCurve {
+                request: request.clone(),
+                points: Vec::new(),
+            }
+        });
         let (current, ghost) = self.speed_targets();
         if *request == current {
             self.speed = Some(curve.clone());

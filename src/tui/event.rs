@@ -14,9 +14,13 @@ const SWEEP_POLL: Duration = Duration::from_millis(40);
 
 pub fn run(terminal: &mut DefaultTerminal, app: &mut App) -> anyhow::Result<()> {
     let mut worker = Worker::spawn()?;
+    let mut dirty = true;
     while !app.should_quit() {
-        worker.want(app.speed_requests());
-        terminal.draw(|frame| frame.render_widget(&*app, frame.area()))?;
+        if dirty {
+            worker.want(app.speed_requests());
+            terminal.draw(|frame| frame.render_widget(&*app, frame.area()))?;
+            dirty = false;
+        }
         let waiting = !app.speed_requests().is_empty();
         let mut next = if !waiting || event::poll(SWEEP_POLL)? {
             Some(event::read()?)
@@ -24,6 +28,7 @@ pub fn run(terminal: &mut DefaultTerminal, app: &mut App) -> anyhow::Result<()> 
             None
         };
         while let Some(ev) = next {
+            dirty = true; // a resize, too, needs a new frame
             if let Some(a) = action::from_event(&ev, app.mode()) {
                 app.apply(a);
             }
@@ -38,8 +43,11 @@ pub fn run(terminal: &mut DefaultTerminal, app: &mut App) -> anyhow::Result<()> 
         }
         while let Some((request, result)) = worker.try_recv() {
             app.apply(Action::SpeedReady(request, result));
+            dirty = true;
         }
-        app.refresh();
+        if dirty {
+            app.refresh();
+        }
     }
     Ok(())
 }
