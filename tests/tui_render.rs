@@ -177,7 +177,8 @@ fn log_axis_decade_labels_sit_over_their_columns() {
     }
 }
 
-/// Each chart's labels: y ticks ascend up the axis, nothing overlaps the frame.
+/// At the usual sizes every chart has room for axes and a plot (no chart falls back to a bare
+/// frame).
 #[test]
 fn every_chart_has_a_plot_area_at_the_usual_sizes() {
     for (w, h) in [(120, 40), (80, 24), (60, 20)] {
