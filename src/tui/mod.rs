@@ -1,10 +1,48 @@
 //! The live terminal explorer (ratatui). Entry point: [`run`].
+//!
+//! Layout of the module, after ratatui's event-driven template:
+//! [`app`] holds the state and `update(action)`, the only place it changes (curves are computed
+//! there, in [`compute`], with the library); [`action`] maps keys to actions; [`event`] is the
+//! loop; [`ui`] lays the screen out and [`widgets`] draw it, reading the state only.
+
+pub mod action;
+pub mod app;
+pub mod compute;
+pub mod event;
+pub mod format;
+pub mod param;
+pub mod state;
+pub mod theme;
+pub mod ui;
+pub mod widgets;
+pub mod worker;
 
 use crate::preset::Preset;
+use anyhow::Context;
+use ratatui::crossterm::terminal;
+use std::io::IsTerminal;
+
+/// Whether to draw in colour: not when NO_COLOR is set to a non-empty value (no-color.org).
+pub fn color_wanted() -> bool {
+    std::env::var_os("NO_COLOR").is_none_or(|v| v.is_empty())
+}
 
 /// Open the explorer on `preset`; returns when the user quits. The terminal is restored on
-/// every exit path.
+/// every exit path: normal return, error, and panic (ratatui's hook restores it, then chains
+/// the previous hook).
 pub fn run(preset: Preset) -> anyhow::Result<()> {
-    let _ = preset;
-    anyhow::bail!("the explorer is not built yet; use `bouncelab run`")
+    if !std::io::stdout().is_terminal() {
+        anyhow::bail!("the explorer needs a terminal (stdout is not one); see `bouncelab --help`");
+    }
+    let mut app = app::App::new(preset, color_wanted()).with_background_sweeps();
+    let mut terminal = ratatui::try_init()
+        .inspect_err(|_| {
+            if terminal::is_raw_mode_enabled().unwrap_or(false) {
+                ratatui::restore();
+            }
+        })
+        .context("cannot set the terminal up for the explorer")?;
+    let result = event::run(&mut terminal, &mut app);
+    ratatui::restore();
+    result
 }

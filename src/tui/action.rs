@@ -1,0 +1,206 @@
+//! Key → action mapping. Pure: it reads the key and the current input mode, nothing else.
+
+use super::compute::{SpeedCurve, SpeedRequest};
+use super::param::{Dir, Param};
+use ratatui::crossterm::event::{Event, KeyCode, KeyEvent, KeyEventKind, KeyModifiers};
+
+/// Everything the user can ask for. [`super::app::App::update`] is the only place they act.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Action {
+    Quit,
+    /// Step `param` (and select it); `coarse` forces the coarse step, otherwise the current
+    /// step size applies.
+    Step {
+        param: Param,
+        dir: Dir,
+        coarse: bool,
+    },
+    /// Step the selected parameter.
+    StepSelected {
+        dir: Dir,
+        coarse: bool,
+    },
+    SelectNext,
+    SelectPrev,
+    /// Choose the coarse (true) or fine step for `l`/`z`/`v` and the arrows.
+    SetCoarse(bool),
+    /// Open the value entry for the selected parameter.
+    OpenInput,
+    InputChar(char),
+    InputBackspace,
+    InputSubmit,
+    InputCancel,
+    /// Load preset number `i` (0-based: superball, golf, baseball, then the start preset when
+    /// it is none of these).
+    LoadPreset(usize),
+    CycleLaw,
+    Reset,
+    Pin,
+    Unpin,
+    Undo,
+    NextView,
+    PrevView,
+    ToggleHelp,
+    CloseHelp,
+    /// A COR-vs-speed sweep finished (from the background worker).
+    SpeedReady(SpeedRequest, Result<SpeedCurve, String>),
+}
+
+/// What the keyboard is talking to.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Mode {
+    Normal,
+    Help,
+    /// Typing a value: printable keys are text.
+    Input,
+}
+
+/// The action for a terminal event, if any (key presses and repeats; releases are ignored).
+pub fn from_event(event: &Event, mode: Mode) -> Option<Action> {
+    match event {
+        Event::Key(key) if key.kind != KeyEventKind::Release => from_key(*key, mode),
+        _ => None,
+    }
+}
+
+/// The action for a key in `mode`.
+pub fn from_key(key: KeyEvent, mode: Mode) -> Option<Action> {
+    let ctrl = key.modifiers.contains(KeyModifiers::CONTROL);
+    if ctrl && matches!(key.code, KeyCode::Char('c' | 'C')) {
+        return Some(Action::Quit);
+    }
+    match mode {
+        Mode::Input => match key.code {
+            KeyCode::Enter => Some(Action::InputSubmit),
+            KeyCode::Esc => Some(Action::InputCancel),
+            KeyCode::Backspace => Some(Action::InputBackspace),
+            KeyCode::Char(c) if !ctrl && !c.is_control() => Some(Action::InputChar(c)),
+            _ => None,
+        },
+        Mode::Help => match key.code {
+            KeyCode::Esc | KeyCode::Enter | KeyCode::Char('?') => Some(Action::CloseHelp),
+            KeyCode::Char('q') => Some(Action::Quit),
+            _ => None,
+        },
+        Mode::Normal if ctrl => None,
+        Mode::Normal => normal(key),
+    }
+}
+
+fn normal(key: KeyEvent) -> Option<Action> {
+    let shift = key.modifiers.contains(KeyModifiers::SHIFT);
+    let step = |param, dir| {
+        Some(Action::Step {
+            param,
+            dir,
+            coarse: false,
+        })
+    };
+    let selected = |dir, coarse| Some(Action::StepSelected { dir, coarse });
+    match key.code {
+        KeyCode::Char('q') | KeyCode::Esc => Some(Action::Quit),
+        KeyCode::Char('l') => step(Param::Lambda, Dir::Up),
+        KeyCode::Char('L') => step(Param::Lambda, Dir::Down),
+        KeyCode::Char('z') => step(Param::Zeta, Dir::Up),
+        KeyCode::Char('Z') => step(Param::Zeta, Dir::Down),
+        KeyCode::Char('v') => step(Param::V0, Dir::Up),
+        KeyCode::Char('V') => step(Param::V0, Dir::Down),
+        KeyCode::Up => selected(Dir::Up, shift),
+        KeyCode::Down => selected(Dir::Down, shift),
+        KeyCode::PageUp => selected(Dir::Up, true),
+        KeyCode::PageDown => selected(Dir::Down, true),
+        KeyCode::Right => Some(Action::SelectNext),
+        KeyCode::Left => Some(Action::SelectPrev),
+        KeyCode::Char('[') => Some(Action::SetCoarse(false)),
+        KeyCode::Char(']') => Some(Action::SetCoarse(true)),
+        KeyCode::Char('=') | KeyCode::Enter => Some(Action::OpenInput),
+        KeyCode::Char(c @ '1'..='9') => Some(Action::LoadPreset(c as usize - '1' as usize)),
+        KeyCode::Char('c') => Some(Action::CycleLaw),
+        KeyCode::Char('r') => Some(Action::Reset),
+        KeyCode::Char('p') => Some(Action::Pin),
+        KeyCode::Char('P') => Some(Action::Unpin),
+        KeyCode::Char('u') => Some(Action::Undo),
+        KeyCode::Tab => Some(Action::NextView),
+        KeyCode::BackTab => Some(Action::PrevView),
+        KeyCode::Char('?') => Some(Action::ToggleHelp),
+        _ => None,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn key(code: KeyCode) -> KeyEvent {
+        KeyEvent::new(code, KeyModifiers::NONE)
+    }
+
+    #[test]
+    fn parameter_keys() {
+        assert_eq!(
+            from_key(key(KeyCode::Char('l')), Mode::Normal),
+            Some(Action::Step {
+                param: Param::Lambda,
+                dir: Dir::Up,
+                coarse: false
+            })
+        );
+        let shift_l = KeyEvent::new(KeyCode::Char('L'), KeyModifiers::SHIFT);
+        assert_eq!(
+            from_key(shift_l, Mode::Normal),
+            Some(Action::Step {
+                param: Param::Lambda,
+                dir: Dir::Down,
+                coarse: false
+            })
+        );
+        let shift_up = KeyEvent::new(KeyCode::Up, KeyModifiers::SHIFT);
+        assert_eq!(
+            from_key(shift_up, Mode::Normal),
+            Some(Action::StepSelected {
+                dir: Dir::Up,
+                coarse: true
+            })
+        );
+        assert_eq!(
+            from_key(key(KeyCode::Char('3')), Mode::Normal),
+            Some(Action::LoadPreset(2))
+        );
+    }
+
+    #[test]
+    fn quitting() {
+        let ctrl_c = KeyEvent::new(KeyCode::Char('c'), KeyModifiers::CONTROL);
+        for mode in [Mode::Normal, Mode::Help, Mode::Input] {
+            assert_eq!(from_key(ctrl_c, mode), Some(Action::Quit));
+        }
+        assert_eq!(
+            from_key(key(KeyCode::Esc), Mode::Normal),
+            Some(Action::Quit)
+        );
+        assert_eq!(
+            from_key(key(KeyCode::Esc), Mode::Help),
+            Some(Action::CloseHelp)
+        );
+        assert_eq!(
+            from_key(key(KeyCode::Esc), Mode::Input),
+            Some(Action::InputCancel)
+        );
+        assert_eq!(
+            from_key(key(KeyCode::Char('q')), Mode::Input),
+            Some(Action::InputChar('q'))
+        );
+        assert_eq!(
+            from_key(key(KeyCode::Char('c')), Mode::Normal),
+            Some(Action::CycleLaw)
+        );
+    }
+
+    #[test]
+    fn releases_are_ignored() {
+        let mut k = key(KeyCode::Char('l'));
+        k.kind = KeyEventKind::Release;
+        assert_eq!(from_event(&Event::Key(k), Mode::Normal), None);
+        assert_eq!(from_event(&Event::Resize(10, 10), Mode::Normal), None);
+    }
+}

@@ -1,0 +1,53 @@
+//! The event loop: wait for an event, drain whatever else is queued (zero-timeout poll), apply
+//! it all, recompute once, draw once — a held key never builds a backlog. COR-vs-speed sweeps
+//! run on a worker thread; while one is out, the loop also wakes to collect it.
+
+use super::action::{self, Action};
+use super::app::App;
+use super::worker::Worker;
+use ratatui::DefaultTerminal;
+use ratatui::crossterm::event;
+use std::time::Duration;
+
+/// How often to look for a finished sweep while one is running.
+const SWEEP_POLL: Duration = Duration::from_millis(40);
+
+pub fn run(terminal: &mut DefaultTerminal, app: &mut App) -> anyhow::Result<()> {
+    let mut worker = Worker::spawn()?;
+    let mut dirty = true;
+    while !app.should_quit() {
+        if dirty {
+            worker.want(app.speed_requests());
+            terminal.draw(|frame| frame.render_widget(&*app, frame.area()))?;
+            dirty = false;
+        }
+        let waiting = !app.speed_requests().is_empty();
+        let mut next = if !waiting || event::poll(SWEEP_POLL)? {
+            Some(event::read()?)
+        } else {
+            None
+        };
+        while let Some(ev) = next {
+            dirty = true; // a resize, too, needs a new frame
+            if let Some(a) = action::from_event(&ev, app.mode()) {
+                app.apply(a);
+            }
+            if app.should_quit() {
+                return Ok(());
+            }
+            next = if event::poll(Duration::ZERO)? {
+                Some(event::read()?)
+            } else {
+                None
+            };
+        }
+        while let Some((request, result)) = worker.try_recv() {
+            app.apply(Action::SpeedReady(request, result));
+            dirty = true;
+        }
+        if dirty {
+            app.refresh();
+        }
+    }
+    Ok(())
+}

@@ -1,0 +1,151 @@
+//! The three parameters the explorer changes live (λ, ζ, v0): their ranges, steps and clamping.
+//! Everything else about the ball comes from the preset.
+
+use crate::model::params::ImpactParams;
+
+/// A live parameter.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Param {
+    /// λ = K_r / K_p (Eq. 24): moves K_r.
+    Lambda,
+    /// ζ = √(m K_p) / (2c) (Eq. 24): moves c.
+    Zeta,
+    /// Impact speed v0 (m/s).
+    V0,
+}
+
+/// Which way a step goes.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Dir {
+    Up,
+    Down,
+}
+
+/// Smallest impact speed the explorer accepts (m/s): v0 must be positive.
+pub const V0_MIN: f64 = 0.01;
+
+impl Param {
+    pub const ALL: [Param; 3] = [Param::Lambda, Param::Zeta, Param::V0];
+
+    pub fn symbol(self) -> &'static str {
+        match self {
+            Param::Lambda => "λ",
+            Param::Zeta => "ζ",
+            Param::V0 => "v0",
+        }
+    }
+
+    pub fn unit(self) -> &'static str {
+        match self {
+            Param::V0 => " m/s",
+            _ => "",
+        }
+    }
+
+    /// Accepted closed range [lo, hi].
+    pub fn range(self) -> (f64, f64) {
+        match self {
+            Param::Lambda => (0.0, 1e3),
+            Param::Zeta => (1e-3, 1e3),
+            Param::V0 => (V0_MIN, 100.0),
+        }
+    }
+
+    /// The range as users read it, e.g. "0.001 … 1000".
+    pub fn range_text(self) -> String {
+        let (lo, hi) = self.range();
+        format!("{lo} … {hi}{}", self.unit())
+    }
+
+    /// One step from `value`: λ ±0.01 / ±0.1, ζ ×÷1.1 / ×÷2 (log scale), v0 ±0.1 / ±1 m/s.
+    /// Not clamped.
+    pub fn step(self, value: f64, dir: Dir, coarse: bool) -> f64 {
+        let sign = if dir == Dir::Up { 1.0 } else { -1.0 };
+        match self {
+            Param::Lambda => value + sign * if coarse { 0.1 } else { 0.01 },
+            Param::V0 => value + sign * if coarse { 1.0 } else { 0.1 },
+            Param::Zeta => {
+                let factor: f64 = if coarse { 2.0 } else { 1.1 };
+                value * factor.powf(sign)
+            }
+        }
+    }
+
+    /// `value` brought into range; `None` for a value that is not a finite number.
+    /// The flag tells whether it had to move.
+    pub fn clamp(self, value: f64) -> Option<(f64, bool)> {
+        if !value.is_finite() {
+            return None;
+        }
+        let (lo, hi) = self.range();
+        let v = value.clamp(lo, hi);
+        Some((v, v != value))
+    }
+
+    /// The parameter's value in `params`.
+    pub fn get(self, params: &ImpactParams) -> f64 {
+        match self {
+            Param::Lambda => params.normalized().lambda,
+            Param::Zeta => params.normalized().zeta,
+            Param::V0 => params.v0,
+        }
+    }
+
+    /// `params` with this parameter set to `value` (λ moves K_r, ζ moves c: Eq. 24).
+    pub fn set(self, params: &ImpactParams, value: f64) -> ImpactParams {
+        let n = params.normalized();
+        match self {
+            Param::Lambda => params.with_lambda_zeta(value, n.zeta),
+            Param::Zeta => params.with_lambda_zeta(n.lambda, value),
+            Param::V0 => ImpactParams {
+                v0: value,
+                ..*params
+            },
+        }
+    }
+
+    pub fn next(self) -> Param {
+        let i = Param::ALL.iter().position(|&p| p == self).unwrap_or(0);
+        Param::ALL[(i + 1) % 3]
+    }
+
+    pub fn prev(self) -> Param {
+        let i = Param::ALL.iter().position(|&p| p == self).unwrap_or(0);
+        Param::ALL[(i + 2) % 3]
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn zeta_steps_are_multiplicative() {
+        let up = Param::Zeta.step(0.5, Dir::Up, false);
+        assert!((up - 0.55).abs() < 1e-12);
+        assert!((Param::Zeta.step(0.5, Dir::Down, true) - 0.25).abs() < 1e-12);
+        assert!((Param::Lambda.step(1.0, Dir::Down, true) - 0.9).abs() < 1e-12);
+    }
+
+    #[test]
+    fn clamp_reports_movement_and_refuses_non_numbers() {
+        assert_eq!(Param::Lambda.clamp(-0.01), Some((0.0, true)));
+        assert_eq!(Param::Zeta.clamp(5e3), Some((1e3, true)));
+        assert_eq!(Param::V0.clamp(0.0), Some((V0_MIN, true)));
+        assert_eq!(Param::V0.clamp(3.0), Some((3.0, false)));
+        assert_eq!(Param::Zeta.clamp(f64::NAN), None);
+        assert_eq!(Param::Zeta.clamp(f64::INFINITY), None);
+    }
+
+    #[test]
+    fn set_moves_the_right_constant() {
+        let p = ImpactParams::from_normalized(1.0, 0.2, 3.0);
+        let q = Param::Lambda.set(&p, 0.4);
+        assert_eq!((q.mass, q.k_p, q.damping), (p.mass, p.k_p, p.damping));
+        assert!((Param::Lambda.get(&q) - 0.4).abs() < 1e-12);
+        let q = Param::Zeta.set(&p, 0.8);
+        assert_eq!(q.k_r, p.k_r);
+        assert!((Param::Zeta.get(&q) - 0.8).abs() < 1e-12);
+        assert_eq!(Param::V0.set(&p, 2.5).v0, 2.5);
+    }
+}

@@ -1,0 +1,99 @@
+//! The pieces of the explorer's state: what the model runs on, the view, the overlays, the
+//! message line and the pinned ghost. [`super::app::App`] owns them and changes them.
+
+use super::compute::{SpeedCurve, ZetaCurve};
+use super::param::Param;
+use crate::model::contact::ContactLaw;
+use crate::model::params::ImpactParams;
+use crate::preset::Preset;
+use crate::solver::ImpactResponse;
+
+/// What the model runs on: the ball, its parameters (SI) and the contact law. The undo stack
+/// holds these.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Setting {
+    /// Index into [`App::presets`].
+    pub preset: usize,
+    pub params: ImpactParams,
+    pub law: ContactLaw,
+}
+
+impl Setting {
+    pub(super) fn from_preset(index: usize, preset: &Preset) -> Setting {
+        Setting {
+            preset: index,
+            params: preset.params(),
+            law: preset.law,
+        }
+    }
+
+    pub fn get(&self, p: Param) -> f64 {
+        p.get(&self.params)
+    }
+}
+
+/// The pages `Tab` switches between.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum View {
+    /// Force–time, force–displacement, COR vs ζ.
+    Impact,
+    /// Normalized peak force vs ζ, COR vs impact speed.
+    Sweeps,
+}
+
+impl View {
+    pub fn title(self) -> &'static str {
+        match self {
+            View::Impact => "1/2 impact",
+            View::Sweeps => "2/2 sweeps",
+        }
+    }
+
+    pub(super) fn other(self) -> View {
+        match self {
+            View::Impact => View::Sweeps,
+            View::Sweeps => View::Impact,
+        }
+    }
+}
+
+/// The value-entry dialog.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Input {
+    pub param: Param,
+    pub text: String,
+    /// Why the last entry was refused.
+    pub error: Option<String>,
+}
+
+/// What sits on top of the charts.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Overlay {
+    None,
+    Help,
+    Input(Input),
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Severity {
+    Info,
+    Warning,
+    Error,
+}
+
+/// A one-line note for the user about the last action.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Message {
+    pub text: String,
+    pub severity: Severity,
+}
+
+/// Pinned curves, drawn dimmed behind the live ones.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Ghost {
+    pub setting: Setting,
+    pub run: Option<ImpactResponse>,
+    pub zeta: Option<ZetaCurve>,
+    /// Computed when the sweeps view first needs it.
+    pub speed: Option<SpeedCurve>,
+}

@@ -1,0 +1,71 @@
+//! Styles, with or without colour (NO_COLOR). Without colour, only modifiers (bold, dim,
+//! reversed) tell things apart.
+
+use ratatui::style::{Color, Modifier, Style};
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Theme {
+    pub color: bool,
+}
+
+impl Theme {
+    pub fn new(color: bool) -> Theme {
+        Theme { color }
+    }
+
+    /// A colour, or the terminal's default without colour.
+    pub fn c(&self, color: Color) -> Color {
+        if self.color { color } else { Color::Reset }
+    }
+
+    pub fn fg(&self, color: Color) -> Style {
+        Style::default().fg(self.c(color))
+    }
+
+    /// The live model curve.
+    pub fn current(&self) -> Color {
+        self.c(Color::Yellow)
+    }
+    /// Fixed reference curves (λ = 0, 0.4, 1).
+    pub fn reference(&self, i: usize) -> Color {
+        self.c([Color::Red, Color::Green, Color::Blue, Color::Magenta][i % 4])
+    }
+    /// A secondary live curve (force vs contact indentation).
+    pub fn secondary(&self) -> Color {
+        self.c(Color::Cyan)
+    }
+    /// Measured data.
+    pub fn measured(&self) -> Style {
+        self.fg(Color::LightMagenta).add_modifier(Modifier::BOLD)
+    }
+    /// Pinned curves.
+    pub fn ghost(&self) -> Style {
+        self.fg(Color::DarkGray).add_modifier(Modifier::DIM)
+    }
+    /// Axis lines and labels.
+    pub fn axis(&self) -> Style {
+        self.fg(Color::Gray)
+    }
+    pub fn title(&self) -> Style {
+        Style::default().add_modifier(Modifier::BOLD)
+    }
+    pub fn dim(&self) -> Style {
+        Style::default().add_modifier(Modifier::DIM)
+    }
+    /// The selected parameter.
+    pub fn selected(&self) -> Style {
+        Style::default().add_modifier(Modifier::REVERSED | Modifier::BOLD)
+    }
+    pub fn key(&self) -> Style {
+        self.fg(Color::Cyan).add_modifier(Modifier::BOLD)
+    }
+    pub fn info(&self) -> Style {
+        self.fg(Color::Green)
+    }
+    pub fn warning(&self) -> Style {
+        self.fg(Color::Yellow).add_modifier(Modifier::BOLD)
+    }
+    pub fn error(&self) -> Style {
+        self.fg(Color::Red).add_modifier(Modifier::BOLD)
+    }
+}

@@ -1,0 +1,64 @@
+//! The help overlay (`?`): every key.
+
+use crate::tui::app::App;
+use crate::tui::theme::Theme;
+use ratatui::buffer::Buffer;
+use ratatui::layout::Rect;
+use ratatui::text::{Line, Span};
+use ratatui::widgets::{Block, Clear, Paragraph, Widget};
+
+/// (keys, what they do)
+pub const KEYS: [(&str, &str); 21] = [
+    ("l / L", "λ up / down (±0.01, coarse ±0.1)"),
+    ("z / Z", "ζ up / down (×1.1, coarse ×2)"),
+    ("v / V", "v0 up / down (±0.1, coarse ±1 m/s)"),
+    ("↑ / ↓", "change the selected parameter"),
+    ("Shift+↑↓ PgUp/Dn", "coarse step"),
+    ("← / →", "select λ, ζ or v0"),
+    ("[ / ]", "fine / coarse steps"),
+    ("= or Enter", "type an exact value"),
+    ("1 2 3", "load superball, golf, baseball"),
+    ("4", "the start preset, if another"),
+    ("c", "cycle the contact law"),
+    ("r", "reset to the preset"),
+    ("p / P", "pin curves as a ghost / clear it"),
+    ("u", "undo the last change"),
+    ("Tab / Shift+Tab", "switch view (impact, sweeps)"),
+    ("?", "this help (Esc or ? closes)"),
+    ("q  Esc  Ctrl-C", "quit"),
+    ("", ""),
+    ("In the value entry", ""),
+    ("Enter / Esc", "accept / cancel"),
+    ("Backspace", "delete a character"),
+];
+
+pub fn render(app: &App, area: Rect, buf: &mut Buffer) {
+    let theme = Theme::new(app.color());
+    let key_w = KEYS.iter().map(|k| k.0.chars().count()).max().unwrap_or(0);
+    let text_w = KEYS.iter().map(|k| k.1.chars().count()).max().unwrap_or(0);
+    let w = ((key_w + text_w + 5) as u16).min(area.width);
+    let h = (KEYS.len() as u16 + 2).min(area.height);
+    let popup = Rect::new(
+        area.x + (area.width - w) / 2,
+        area.y + (area.height - h) / 2,
+        w,
+        h,
+    );
+    let lines: Vec<Line> = KEYS
+        .iter()
+        .map(|(k, t)| {
+            if t.is_empty() {
+                Line::styled(format!(" {k}"), theme.title())
+            } else {
+                Line::from(vec![
+                    Span::styled(format!(" {k:<key_w$}  "), theme.key()),
+                    Span::raw(*t),
+                ])
+            }
+        })
+        .collect();
+    Clear.render(popup, buf);
+    Paragraph::new(lines)
+        .block(Block::bordered().title(Line::styled(" Keys · Esc or ? closes ", theme.title())))
+        .render(popup, buf);
+}

@@ -1,0 +1,77 @@
+//! The header (ball, law, view, the last message) and the status line of key hints.
+
+use crate::tui::app::{App, Severity};
+use crate::tui::theme::Theme;
+use ratatui::buffer::Buffer;
+use ratatui::layout::Rect;
+use ratatui::text::{Line, Span};
+use ratatui::widgets::Widget;
+
+/// Key hints in display order, with the rank at which they are dropped when space runs out
+/// (lower ranks stay longer).
+const HINTS: [(&str, &str, u8); 15] = [
+    ("l/L", "λ", 0),
+    ("z/Z", "ζ", 0),
+    ("v/V", "v0", 0),
+    ("↑↓", "change", 2),
+    ("←→", "select", 3),
+    ("[ ]", "fine/coarse", 4),
+    ("=", "type", 2),
+    ("1-3", "ball", 1),
+    ("c", "law", 1),
+    ("p/P", "pin", 3),
+    ("u", "undo", 2),
+    ("r", "reset", 3),
+    ("Tab", "view", 0),
+    ("?", "help", 0),
+    ("q", "quit", 0),
+];
+
+pub fn render_header(app: &App, area: Rect, buf: &mut Buffer) {
+    let theme = Theme::new(app.color());
+    let s = app.setting();
+    let left = Line::from(vec![
+        Span::styled(" bouncelab ", theme.title()),
+        Span::raw(format!(
+            "· {} · {} law · view {}",
+            app.preset().name,
+            s.law,
+            app.view().title()
+        )),
+    ]);
+    left.render(area, buf);
+    if let Some(m) = app.message() {
+        let style = match m.severity {
+            Severity::Info => theme.info(),
+            Severity::Warning => theme.warning(),
+            Severity::Error => theme.error(),
+        };
+        let text = format!(" {} ", m.text);
+        let w = (text.chars().count() as u16).min(area.width);
+        let x = area.right() - w;
+        let room = usize::from(w);
+        // the message wins over the left part when they meet
+        buf.set_stringn(x, area.y, text, room, style);
+    }
+}
+
+pub fn render_status(app: &App, area: Rect, buf: &mut Buffer) {
+    let theme = Theme::new(app.color());
+    let width = |h: &(&str, &str, u8)| h.0.chars().count() + h.1.chars().count() + 3;
+    let mut budget = usize::from(area.width);
+    let mut keep = [false; HINTS.len()];
+    for rank in 0..=4 {
+        for (i, h) in HINTS.iter().enumerate() {
+            if h.2 == rank && width(h) <= budget {
+                keep[i] = true;
+                budget -= width(h);
+            }
+        }
+    }
+    let mut spans = vec![Span::raw(" ")];
+    for (h, _) in HINTS.iter().zip(keep).filter(|(_, k)| *k) {
+        spans.push(Span::styled(h.0, theme.key()));
+        spans.push(Span::raw(format!(" {}  ", h.1)));
+    }
+    Line::from(spans).style(theme.dim()).render(area, buf);
+}

@@ -1,0 +1,288 @@
+//! What the explorer draws: snapshots of whole screens (TestBackend), the log axis's decade
+//! labels, colour off under NO_COLOR, and no panic at any size.
+
+use bouncelab::preset::Preset;
+use bouncelab::tui::action;
+use bouncelab::tui::app::App;
+use bouncelab::tui::ui::{self, Chart};
+use ratatui::Terminal;
+use ratatui::backend::TestBackend;
+use ratatui::buffer::Buffer;
+use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
+use ratatui::layout::Rect;
+use ratatui::style::Color;
+
+fn app(i: usize) -> App {
+    App::new(Preset::embedded().remove(i), true)
+}
+
+fn draw(app: &App, w: u16, h: u16) -> Terminal<TestBackend> {
+    let mut t = Terminal::new(TestBackend::new(w, h)).unwrap();
+    t.draw(|f| f.render_widget(app, f.area())).unwrap();
+    t
+}
+
+fn press(app: &mut App, keys: &[KeyCode]) {
+    for &code in keys {
+        let m = match code {
+            KeyCode::Char(c) if c.is_ascii_uppercase() => KeyModifiers::SHIFT,
+            _ => KeyModifiers::NONE,
+        };
+        if let Some(a) = action::from_key(KeyEvent::new(code, m), app.mode()) {
+            app.update(a);
+        }
+    }
+}
+
+fn text(buf: &Buffer) -> String {
+    let a = buf.area;
+    (a.y..a.bottom())
+        .map(|y| {
+            (a.x..a.right())
+                .map(|x| buf[(x, y)].symbol())
+                .collect::<String>()
+                + "\n"
+        })
+        .collect()
+}
+
+#[test]
+fn first_screen_superball() {
+    insta::assert_snapshot!(draw(&app(0), 120, 40).backend());
+}
+
+#[test]
+fn first_screen_golf() {
+    insta::assert_snapshot!(draw(&app(1), 120, 40).backend());
+}
+
+#[test]
+fn first_screen_baseball() {
+    insta::assert_snapshot!(draw(&app(2), 120, 40).backend());
+}
+
+#[test]
+fn help_overlay() {
+    let mut a = app(0);
+    press(&mut a, &[KeyCode::Char('?')]);
+    insta::assert_snapshot!(draw(&a, 120, 40).backend());
+}
+
+#[test]
+fn sweeps_view() {
+    let mut a = app(0);
+    press(&mut a, &[KeyCode::Tab]);
+    insta::assert_snapshot!(draw(&a, 120, 40).backend());
+}
+
+#[test]
+fn small_terminal_60x20() {
+    insta::assert_snapshot!(draw(&app(0), 60, 20).backend());
+}
+
+#[test]
+fn common_terminal_80x24() {
+    insta::assert_snapshot!(draw(&app(0), 80, 24).backend());
+}
+
+#[test]
+fn too_small() {
+    insta::assert_snapshot!(draw(&app(0), 30, 10).backend());
+}
+
+#[test]
+fn after_lambda_up_three_times_and_zeta_down_twice() {
+    let mut a = app(0);
+    press(
+        &mut a,
+        &[KeyCode::Char('l'), KeyCode::Char('l'), KeyCode::Char('l')],
+    );
+    press(&mut a, &[KeyCode::Char('Z'), KeyCode::Char('Z')]);
+    insta::assert_snapshot!(draw(&a, 120, 40).backend());
+}
+
+#[test]
+fn value_entry_refusing_text() {
+    let mut a = app(0);
+    press(&mut a, &[KeyCode::Right, KeyCode::Char('=')]);
+    press(
+        &mut a,
+        &"abc".chars().map(KeyCode::Char).collect::<Vec<_>>(),
+    );
+    press(&mut a, &[KeyCode::Enter]);
+    insta::assert_snapshot!(draw(&a, 120, 40).backend());
+}
+
+#[test]
+fn flattened_superball_with_a_pinned_ghost() {
+    let mut a = app(0);
+    press(
+        &mut a,
+        &[
+            KeyCode::Char('p'),
+            KeyCode::Right,
+            KeyCode::Right,
+            KeyCode::Char('='),
+        ],
+    );
+    press(&mut a, &[KeyCode::Char('8'), KeyCode::Enter]);
+    insta::assert_snapshot!(draw(&a, 120, 40).backend());
+}
+
+/// The decade labels of the ζ axis sit over the columns where log10 ζ = −2 … 2 land.
+#[test]
+fn log_axis_decade_labels_sit_over_their_columns() {
+    for (w, h) in [(120, 40), (100, 30), (80, 24), (200, 60)] {
+        let a = app(0);
+        let t = draw(&a, w, h);
+        let buf = t.backend().buffer();
+        let screen = ui::screen(&a, buf.area).unwrap();
+        let (_, rect) = screen
+            .charts
+            .iter()
+            .find(|c| c.0 == Chart::CorZeta)
+            .unwrap();
+        let layout = Chart::CorZeta.plot(&a).layout(*rect).unwrap();
+        let p: Rect = layout.plot;
+        assert_eq!(layout.x.bounds, [-2.0, 2.0]);
+        let label_row = p.bottom() + 1;
+        let row: Vec<&str> = (0..buf.area.width)
+            .map(|x| buf[(x, label_row)].symbol())
+            .collect();
+        for (k, label) in [(-2, "0.01"), (-1, "0.1"), (0, "1"), (1, "10"), (2, "100")] {
+            // Canvas puts x on braille dot round((x − lo)/(hi − lo) · (2w − 1)); two dots a cell
+            let dot = ((f64::from(k) + 2.0) / 4.0 * (2.0 * f64::from(p.width) - 1.0)).round();
+            let col = usize::from(p.x) + dot as usize / 2;
+            assert_eq!(
+                buf[(col as u16, p.bottom())].symbol(),
+                "┴",
+                "tick of {label} at {w}×{h}"
+            );
+            // the label's text covers that column
+            let is_text = |c: usize| row[c] != " " && row[c] != "│";
+            let start = (0..=col).rev().take_while(|&c| is_text(c)).last().unwrap();
+            let end = (col..row.len()).take_while(|&c| is_text(c)).last().unwrap();
+            assert_eq!(
+                row[start..=end].concat(),
+                label,
+                "label at column {col}, {w}×{h}"
+            );
+            if (-1..=1).contains(&k) {
+                assert!(
+                    (start + end).abs_diff(2 * col) <= 1,
+                    "{label} centred on {col}"
+                );
+            }
+        }
+    }
+}
+
+/// At the usual sizes every chart has room for axes and a plot (no chart falls back to a bare
+/// frame).
+#[test]
+fn every_chart_has_a_plot_area_at_the_usual_sizes() {
+    for (w, h) in [(120, 40), (80, 24), (60, 20)] {
+        for tab in [false, true] {
+            let mut a = app(0);
+            if tab {
+                press(&mut a, &[KeyCode::Tab]);
+            }
+            let area = Rect::new(0, 0, w, h);
+            for (chart, rect) in ui::screen(&a, area).unwrap().charts {
+                assert!(
+                    chart.plot(&a).layout(rect).is_some(),
+                    "{chart:?} at {w}×{h}"
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn no_color_draws_without_colours() {
+    for i in 0..3 {
+        let mut a = App::new(Preset::embedded().remove(i), false);
+        press(
+            &mut a,
+            &[KeyCode::Char('p'), KeyCode::Char('l'), KeyCode::Char('?')],
+        );
+        for keys in [vec![], vec![KeyCode::Esc, KeyCode::Tab]] {
+            press(&mut a, &keys);
+            let t = draw(&a, 120, 40);
+            for cell in t.backend().buffer().content() {
+                assert_eq!((cell.fg, cell.bg), (Color::Reset, Color::Reset), "{cell:?}");
+            }
+        }
+    }
+    // and with colour there is some
+    let t = draw(&app(0), 120, 40);
+    assert!(
+        t.backend()
+            .buffer()
+            .content()
+            .iter()
+            .any(|c| c.fg != Color::Reset)
+    );
+}
+
+#[test]
+fn never_nan_or_inf_on_screen() {
+    let mut a = app(0);
+    // λ = 0, ζ = 1000: no rebound
+    for keys in ["]LLLLLLLLLLLLLLL", "zzzzzzzzzzzzz", "?"] {
+        let mut codes: Vec<KeyCode> = keys.chars().map(KeyCode::Char).collect();
+        if keys == "?" {
+            codes = vec![KeyCode::Tab];
+        }
+        press(&mut a, &codes);
+        let s = text(draw(&a, 120, 40).backend().buffer());
+        for bad in ["NaN", "nan", "inf"] {
+            assert!(!s.contains(bad), "{bad} on screen:\n{s}");
+        }
+    }
+    assert!(!a.run().unwrap().rebound);
+}
+
+#[test]
+fn every_tiny_size_draws() {
+    let mut apps = vec![app(0), app(1)];
+    let mut help = app(2);
+    press(&mut help, &[KeyCode::Char('?')]);
+    let mut input = app(0);
+    press(&mut input, &[KeyCode::Char('p'), KeyCode::Char('=')]);
+    let mut sweeps = app(0);
+    press(&mut sweeps, &[KeyCode::Tab]);
+    apps.extend([help, input, sweeps]);
+    for a in &apps {
+        for w in 1..=20 {
+            for h in 1..=10 {
+                draw(a, w, h);
+            }
+        }
+    }
+    let s = text(draw(&apps[0], 20, 3).backend().buffer());
+    assert!(s.starts_with("enlarge the"), "{s}");
+}
+
+#[test]
+fn resize_storm() {
+    let mut a = app(0);
+    press(&mut a, &[KeyCode::Char('p'), KeyCode::Char('L')]);
+    let mut t = Terminal::new(TestBackend::new(120, 40)).unwrap();
+    let mut seed: u32 = 12345;
+    for i in 0..600 {
+        seed = seed.wrapping_mul(1_103_515_245).wrapping_add(12345);
+        let w = 1 + (seed >> 8) as u16 % 220;
+        let h = 1 + (seed >> 20) as u16 % 70;
+        t.backend_mut().resize(w, h);
+        match i % 50 {
+            10 => press(&mut a, &[KeyCode::Tab]),
+            20 => press(&mut a, &[KeyCode::Char('?')]),
+            30 => press(&mut a, &[KeyCode::Esc, KeyCode::Char('=')]),
+            40 => press(&mut a, &[KeyCode::Esc]),
+            _ => {}
+        }
+        t.draw(|f| f.render_widget(&a, f.area())).unwrap();
+        assert_eq!(t.backend().buffer().area, Rect::new(0, 0, w, h));
+    }
+}
