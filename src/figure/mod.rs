@@ -188,14 +188,33 @@ pub fn short(x: f64, sig: usize) -> String {
         return "0".into();
     }
     let mag = x.abs().log10().floor() as i32;
+    let trim = |s: &str| -> String {
+        if s.contains('.') {
+            s.trim_end_matches('0').trim_end_matches('.').to_string()
+        } else {
+            s.to_string()
+        }
+    };
     if !(-4..6).contains(&mag) {
-        return format!("{:.*e}", sig.saturating_sub(1), x);
+        let s = format!("{:.*e}", sig.saturating_sub(1), x);
+        let (mantissa, exp) = s.split_once('e').unwrap_or((&s, "0"));
+        return format!("{}e{exp}", trim(mantissa));
     }
     let decimals = (sig as i32 - 1 - mag).max(0) as usize;
-    let s = format!("{x:.decimals$}");
-    if s.contains('.') {
-        s.trim_end_matches('0').trim_end_matches('.').to_string()
-    } else {
-        s
+    trim(&format!("{x:.decimals$}"))
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn short_numbers() {
+        use super::short;
+        assert_eq!(short(0.4, 3), "0.4");
+        assert_eq!(short(121.8, 4), "121.8");
+        assert_eq!(short(1.05e6, 4), "1.05e6");
+        assert_eq!(short(1.2e7, 4), "1.2e7");
+        assert_eq!(short(54500.0, 4), "54500");
+        assert_eq!(short(3e-3 * 1e3, 3), "3");
+        assert_eq!(short(0.0, 3), "0");
     }
 }
