@@ -2,8 +2,9 @@
 //!
 //! Long ("tidy") form, one row per point: `series,kind,X,Y` where X and Y are the axes' keys
 //! (e.g. `series,kind,zeta,cor`). Values are SI, like every other CSV bouncelab writes, even
-//! where the figure shows ms or mm; `kind` is `model`, `measured` or `reference`. Numbers are
-//! written in the shortest form that reads back to the same `f64`.
+//! where the figure shows ms or mm (the series hold SI values; only the picture scales them);
+//! `kind` is `model`, `measured` or `reference`. Numbers are written in the shortest form that
+//! reads back to the same `f64`.
 
 use super::Figure;
 use crate::model::params::display_number as num;
@@ -30,12 +31,7 @@ pub fn write(fig: &Figure, out: &mut dyn Write) -> io::Result<()> {
     for s in &fig.series {
         let (id, kind) = (field(&s.id), s.kind.name());
         for &(x, y) in &s.points {
-            writeln!(
-                out,
-                "{id},{kind},{},{}",
-                num(x * fig.x.to_si),
-                num(y * fig.y.to_si)
-            )?;
+            writeln!(out, "{id},{kind},{},{}", num(x), num(y))?;
         }
     }
     Ok(())
@@ -58,13 +54,13 @@ mod tests {
         let fig = Figure {
             title: "t".into(),
             subtitle: String::new(),
-            x: Axis::linear("t (ms)", "t", 1e-3),
+            x: Axis::linear("t (ms)", "t", 1e3),
             y: Axis::linear("F (N)", "force", 1.0),
             series: vec![
                 Series::new("model", "model", Kind::Model, Style::Solid, 0)
-                    .with_points(vec![(0.0, 0.0), (1.5, 10.0)]),
+                    .with_points(vec![(0.0, 0.0), (1.5e-3, 10.0)]),
                 Series::new("a,b", "a,b", Kind::Measured, Style::Dashed, 1)
-                    .with_points(vec![(2.0, 3.0)]),
+                    .with_points(vec![(2e-3, 3.0)]),
             ],
         };
         assert_eq!(

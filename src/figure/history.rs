@@ -25,16 +25,12 @@ fn measured_line(label: &str, id: &str, y: f64, x0: f64, x1: f64) -> Series {
 /// lines (at the measured speed only).
 pub fn force_time(ball: &Ball, r: &ImpactResponse) -> Figure {
     let h = &r.history;
-    let pts: Vec<(f64, f64)> =
-        h.t.iter()
-            .zip(&h.force)
-            .map(|(&t, &f)| (t * 1e3, f))
-            .collect();
+    let pts: Vec<(f64, f64)> = h.t.iter().copied().zip(h.force.iter().copied()).collect();
     let mut series =
         vec![Series::new("model", "model", Kind::Model, Style::Solid, 0).with_points(pts)];
-    let t_end = r.duration * 1e3;
+    let t_end = r.duration;
     if let Some(m) = ball.measured_at(ball.params.v0) {
-        let right = m.contact_time.map_or(t_end, |t| t_end.max(t * 1e3));
+        let right = m.contact_time.map_or(t_end, |t| t_end.max(t));
         if let Some(f) = m.max_force {
             series.push(measured_line(
                 &format!("measured peak force ({} N)", short(f, 4)),
@@ -54,14 +50,14 @@ pub fn force_time(ball: &Ball, r: &ImpactResponse) -> Figure {
                     Style::Dotted,
                     1,
                 )
-                .with_points(vec![(t * 1e3, 0.0), (t * 1e3, top)]),
+                .with_points(vec![(t, 0.0), (t, top)]),
             );
         }
     }
     Figure {
         title: format!("Contact force against time: {}", ball.name),
         subtitle: at_speed(ball, ball.params.v0),
-        x: Axis::linear("time t (ms)", "t", 1e-3),
+        x: Axis::linear("time t (ms)", "t", 1e3),
         y: Axis::linear("contact force F (N)", "force", 1.0),
         series,
     }
@@ -82,12 +78,8 @@ fn force_at(indentation: &[f64], force: &[f64], z: f64) -> f64 {
 /// ball's displacement α, whose loop encloses the energy the impact lost.
 pub fn force_displacement(ball: &Ball, r: &ImpactResponse) -> Figure {
     let h = &r.history;
-    let mm = |v: &[f64]| -> Vec<(f64, f64)> {
-        v.iter()
-            .zip(&h.force)
-            .map(|(&x, &f)| (x * 1e3, f))
-            .collect()
-    };
+    let with_force =
+        |v: &[f64]| -> Vec<(f64, f64)> { v.iter().copied().zip(h.force.iter().copied()).collect() };
     let mut series = vec![
         Series::new(
             "contact indentation z",
@@ -96,7 +88,7 @@ pub fn force_displacement(ball: &Ball, r: &ImpactResponse) -> Figure {
             Style::Solid,
             0,
         )
-        .with_points(mm(&h.indentation)),
+        .with_points(with_force(&h.indentation)),
         Series::new(
             "ball displacement α",
             "model displacement",
@@ -104,21 +96,20 @@ pub fn force_displacement(ball: &Ball, r: &ImpactResponse) -> Figure {
             Style::Dashed,
             2,
         )
-        .with_points(mm(&h.displacement)),
+        .with_points(with_force(&h.displacement)),
     ];
     let right = h
         .displacement
         .iter()
         .chain(&h.indentation)
-        .fold(0.0f64, |a, &b| a.max(b))
-        * 1e3;
-    let z_p = ball.params.z_p * 1e3;
+        .fold(0.0f64, |a, &b| a.max(b));
+    let z_p = ball.params.z_p;
     // the threshold is drawn when it falls inside the picture; otherwise the subtitle says it
     let zp_shown = ball.law != ContactLaw::Hertz && z_p <= right;
     if zp_shown {
         series.push(
             Series::new(
-                &format!("flattening threshold z_p ({} mm)", short(z_p, 3)),
+                &format!("flattening threshold z_p ({} mm)", short(z_p * 1e3, 3)),
                 "flattening threshold z_p",
                 Kind::Reference,
                 Style::Dotted,
@@ -126,14 +117,14 @@ pub fn force_displacement(ball: &Ball, r: &ImpactResponse) -> Figure {
             )
             .with_points(vec![
                 (z_p, 0.0),
-                (z_p, force_at(&h.indentation, &h.force, ball.params.z_p)),
+                (z_p, force_at(&h.indentation, &h.force, z_p)),
             ]),
         );
     }
     if r.permanent_indentation > 1e-6 * r.max_indentation {
-        let z_f = r.permanent_indentation * 1e3;
+        let z_f = r.permanent_indentation;
         let mut s = Series::new(
-            &format!("permanent indentation z_f ({} mm)", short(z_f, 3)),
+            &format!("permanent indentation z_f ({} mm)", short(z_f * 1e3, 3)),
             "model permanent indentation",
             Kind::Model,
             Style::Markers(Marker::Diamond),
@@ -153,7 +144,7 @@ pub fn force_displacement(ball: &Ball, r: &ImpactResponse) -> Figure {
         ));
     }
     let mut subtitle = at_speed(ball, ball.params.v0);
-    let z_m = r.max_indentation * 1e3;
+    let z_m = r.max_indentation;
     if ball.law != ContactLaw::Hertz {
         let (word, cmp) = if z_m > z_p {
             ("flattened", ">")
@@ -162,14 +153,14 @@ pub fn force_displacement(ball: &Ball, r: &ImpactResponse) -> Figure {
         };
         subtitle.push_str(&format!(
             "; {word}: z_m = {} mm {cmp} z_p = {} mm",
-            short(z_m, 3),
-            short(z_p, 3)
+            short(z_m * 1e3, 3),
+            short(z_p * 1e3, 3)
         ));
     }
     Figure {
         title: format!("Contact force against displacement: {}", ball.name),
         subtitle,
-        x: Axis::linear("indentation z, displacement α (mm)", "displacement", 1e-3),
+        x: Axis::linear("indentation z, displacement α (mm)", "displacement", 1e3),
         y: Axis::linear("contact force F (N)", "force", 1.0),
         series,
     }

@@ -19,22 +19,23 @@ pub struct Axis {
     pub label: String,
     /// CSV column name for this axis' values: "t".
     pub key: String,
-    /// Factor from the plotted unit to SI (ms → s: 1e-3). The CSV is SI, like every other
-    /// output of bouncelab, while the figure shows convenient units.
-    pub to_si: f64,
+    /// Factor from the series' SI values to the unit shown (s → ms: 1e3). Series hold SI
+    /// values, as the CSV writes them (like every other output of bouncelab); only the picture
+    /// shows convenient units.
+    pub scale: f64,
     /// Logarithmic (base 10) axis, with decade ticks.
     pub log: bool,
-    /// Range shown, in plotted units; `None` fits the data (with a small margin).
+    /// Range shown, in the unit shown; `None` fits the data (with a small margin).
     pub range: Option<(f64, f64)>,
 }
 
 impl Axis {
     /// A linear axis fitted to the data.
-    pub fn linear(label: &str, key: &str, to_si: f64) -> Axis {
+    pub fn linear(label: &str, key: &str, scale: f64) -> Axis {
         Axis {
             label: label.into(),
             key: key.into(),
-            to_si,
+            scale,
             log: false,
             range: None,
         }
@@ -45,7 +46,7 @@ impl Axis {
         Axis {
             label: label.into(),
             key: key.into(),
-            to_si: 1.0,
+            scale: 1.0,
             log: true,
             range: Some((from, to)),
         }
@@ -125,7 +126,7 @@ pub struct Series {
     pub style: Style,
     /// Index into [`PALETTE`].
     pub color: usize,
-    /// (x, y) in plotted units.
+    /// (x, y), SI units.
     pub points: Vec<(f64, f64)>,
     /// Text placed next to each point (markers only); empty for none.
     pub annotations: Vec<String>,
@@ -163,16 +164,17 @@ pub struct Figure {
 }
 
 impl Figure {
-    /// (min, max) over every point of every series along one axis, ignoring non-finite values
-    /// (and non-positive ones on a log axis); `None` when there is nothing to show.
+    /// (min, max) over every point of every series along one axis, in the unit shown,
+    /// ignoring non-finite values (and non-positive ones on a log axis); `None` when there is
+    /// nothing to show.
     pub fn data_extent(&self, axis_x: bool) -> Option<(f64, f64)> {
-        let log = if axis_x { self.x.log } else { self.y.log };
+        let axis = if axis_x { &self.x } else { &self.y };
         let mut it = self
             .series
             .iter()
             .flat_map(|s| s.points.iter())
-            .map(|&(x, y)| if axis_x { x } else { y })
-            .filter(|v| v.is_finite() && (!log || *v > 0.0));
+            .map(|&(x, y)| axis.scale * if axis_x { x } else { y })
+            .filter(|v| v.is_finite() && (!axis.log || *v > 0.0));
         let first = it.next()?;
         Some(it.fold((first, first), |(lo, hi), v| (lo.min(v), hi.max(v))))
     }

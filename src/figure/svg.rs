@@ -81,15 +81,18 @@ fn text_width(text: &str, size: i32) -> i32 {
     (text.chars().count() as f64 * f64::from(size) * 0.52).ceil() as i32
 }
 
-/// A point in drawing coordinates (log10 on a log axis); `None` for a value the axis cannot
-/// show (not finite, or not positive on a log axis).
+/// A point (SI) in drawing coordinates: scaled to the unit shown, log10 on a log axis; `None`
+/// for a value the axis cannot show (not finite, or not positive on a log axis).
 fn to_draw(fig: &Figure, (x, y): (f64, f64)) -> Option<(f64, f64)> {
-    let map = |v: f64, log: bool| match (v.is_finite(), log) {
-        (true, false) => Some(v),
-        (true, true) if v > 0.0 => Some(v.log10()),
-        _ => None,
+    let map = |v: f64, axis: &super::Axis| {
+        let v = v * axis.scale;
+        match (v.is_finite(), axis.log) {
+            (true, false) => Some(v),
+            (true, true) if v > 0.0 => Some(v.log10()),
+            _ => None,
+        }
     };
-    Some((map(x, fig.x.log)?, map(y, fig.y.log)?))
+    Some((map(x, &fig.x)?, map(y, &fig.y)?))
 }
 
 /// A marker of `shape` centred on backend offset (0, 0).

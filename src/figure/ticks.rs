@@ -191,7 +191,7 @@ mod tests {
         Axis {
             label: "x".into(),
             key: "x".into(),
-            to_si: 1.0,
+            scale: 1.0,
             log,
             range,
         }
