@@ -117,7 +117,7 @@ fn history_figures_show_flattening_when_it_happens() {
     let zf = fig
         .series
         .iter()
-        .find(|s| s.id == "model permanent indentation")
+        .find(|s| s.id == "model permanent_indentation")
         .unwrap();
     // Eq. 18 at z_m = 2 z_p: z_f = z_p (2 − √3)
     let expected = b.params.z_p * (2.0 - 3f64.sqrt());
@@ -134,7 +134,7 @@ fn history_figures_show_flattening_when_it_happens() {
     let text = String::from_utf8(out).unwrap();
     assert!(text.starts_with("series,kind,displacement,force\n"));
     assert!(text.contains(&format!(
-        "model permanent indentation,model,{},0",
+        "model permanent_indentation,model,{},0",
         zf.points[0].0
     )));
 }

@@ -110,7 +110,7 @@ pub fn force_displacement(ball: &Ball, r: &ImpactResponse) -> Figure {
         series.push(
             Series::new(
                 &format!("flattening threshold z_p ({} mm)", short(z_p * 1e3, 3)),
-                "flattening threshold z_p",
+                "flattening_threshold",
                 Kind::Reference,
                 Style::Dotted,
                 GREY,
@@ -125,7 +125,7 @@ pub fn force_displacement(ball: &Ball, r: &ImpactResponse) -> Figure {
         let z_f = r.permanent_indentation;
         let mut s = Series::new(
             &format!("permanent indentation z_f ({} mm)", short(z_f * 1e3, 3)),
-            "model permanent indentation",
+            "model permanent_indentation",
             Kind::Model,
             Style::Markers(Marker::Diamond),
             1,

@@ -234,7 +234,7 @@ pub fn cor_velocity(ball: &Ball, rows: &[VelocityPoint], onset: Option<f64>) -> 
         series.push(
             Series::new(
                 &format!("flattening starts, z_m = z_p ({} m/s)", short(v, 3)),
-                "flattening onset",
+                "flattening_onset",
                 Kind::Reference,
                 Style::Dotted,
                 GREY,
@@ -245,7 +245,7 @@ pub fn cor_velocity(ball: &Ball, rows: &[VelocityPoint], onset: Option<f64>) -> 
     if let Some((v, e)) = ball.measured.as_ref().and_then(|m| Some((m.v0, m.cor?))) {
         let mut s = Series::new(
             "measured (Cross 1999)",
-            "measured",
+            "measured cor",
             Kind::Measured,
             Style::Markers(Marker::Circle),
             BLACK,

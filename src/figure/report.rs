@@ -198,8 +198,9 @@ fn summary(out: &mut String, balls: &[Comparison]) {
         );
     }
     out.push_str(
-        "\nThe COR agrees by construction: the recoil spring K_r was fitted to the measured COR \
-         (MODEL.md §4). The peak force and the contact time are the model's predictions.\n\n",
+        "\nThe COR agrees by construction: the recoil spring K_r, which no formula gives, was \
+         fitted to the measured COR. The peak force and the contact time are the model's \
+         predictions.\n\n",
     );
     for c in balls {
         let rows = response_rows(c);
@@ -366,7 +367,7 @@ pub fn markdown(balls: &[Comparison], figs: &[FigureRef]) -> String {
          Yigit, \"Inelastic impact and the coefficient of restitution\"; measurements: R. Cross, \
          \"The bounce of a ball\", Am. J. Phys. 67 (1999). Every model value is the {law} law at \
          the measured impact speed; \"adopted\" is the parameter set the paper ran, \"materials\" \
-         the set derived from the material data (MODEL.md §4, K_r kept).\n\n",
+         the set derived from the material data (Eqs. 5, 15–20, 30, 31; K_r kept, as no formula gives it).\n\n",
         env!("CARGO_PKG_VERSION")
     );
     summary(&mut out, balls);
