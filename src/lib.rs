@@ -8,6 +8,7 @@
 pub mod analysis;
 pub mod catalog;
 pub mod cli;
+pub mod figure;
 pub mod model;
 pub mod preset;
 pub mod solver;

@@ -6,9 +6,11 @@
 //! 1 a failure that is not the input's fault (writing the output, the explorer's terminal).
 
 pub mod ball;
+pub mod figure;
 pub mod fit;
 pub mod output;
 pub mod presets;
+pub mod reproduce;
 pub mod run;
 mod run_text;
 pub mod sweep;
@@ -51,6 +53,11 @@ pub enum Command {
     Fit(fit::FitArgs),
     /// List the embedded and user presets
     Presets(presets::PresetsArgs),
+    /// Draw one of the paper's figures as SVG (and its data as CSV)
+    #[command(allow_negative_numbers = true)]
+    Figure(figure::FigureArgs),
+    /// Write every figure, its data and a report of model against experiment into a folder
+    Reproduce(reproduce::ReproduceArgs),
 }
 
 /// A failure that is not the input's fault: exit code 1.
@@ -168,6 +175,19 @@ fn dispatch(cli: Cli, out: &mut dyn Write) -> anyhow::Result<()> {
                 a.config = Some(c);
             }
             presets::run(&a, out)
+        }
+        Command::Figure(mut a) => {
+            merge(&cli.preset, &cli.config, &mut a.ball)?;
+            figure::run(&a, out)
+        }
+        Command::Reproduce(a) => {
+            if top.is_some() {
+                anyhow::bail!(
+                    "reproduce runs the paper's three embedded balls: --preset and --config do \
+                     not apply"
+                );
+            }
+            reproduce::run(&a, out)
         }
     }
 }

@@ -97,3 +97,77 @@ pub fn renamed(name: &str, k_r: &str) -> String {
         .replace("name = \"superball\"", &format!("name = \"{name}\""))
         .replace("k_r = 7.08e4", &format!("k_r = {k_r}"))
 }
+
+/// Run with `dir` as working folder (and config home): paths in `args` are relative to it.
+pub fn bl_at(dir: &Path, args: &[&str]) -> Out {
+    let o = std::process::Command::new(env!("CARGO_BIN_EXE_bouncelab"))
+        .args(args)
+        .current_dir(dir)
+        .env("XDG_CONFIG_HOME", dir)
+        .env("HOME", dir)
+        .stdin(std::process::Stdio::null())
+        .output()
+        .expect("the binary runs");
+    Out {
+        code: o.status.code().expect("exited"),
+        stdout: String::from_utf8(o.stdout).unwrap(),
+        stderr: String::from_utf8(o.stderr).unwrap(),
+    }
+}
+
+pub fn ok_at(dir: &Path, args: &[&str]) -> String {
+    let o = bl_at(dir, args);
+    assert_eq!(o.code, 0, "{args:?}: {}", o.stderr);
+    assert!(o.stderr.is_empty(), "{args:?}: {}", o.stderr);
+    o.stdout
+}
+
+/// What a figure holds, read from its SVG as an XML document.
+pub struct Svg {
+    /// Every `<text>` content, trimmed.
+    pub texts: Vec<String>,
+    /// Series named in `<desc>`.
+    pub series: Vec<String>,
+    pub polylines: usize,
+}
+
+pub fn parse_svg(text: &str) -> Svg {
+    let doc = roxmltree::Document::parse(text).unwrap_or_else(|e| panic!("not XML: {e}"));
+    let root = doc.root_element();
+    assert_eq!(root.tag_name().name(), "svg");
+    assert_eq!(root.attribute("width"), Some("800"));
+    assert_eq!(root.attribute("height"), Some("560"));
+    assert!(root.attribute("viewBox").is_some());
+    let title = root.children().find(|n| n.has_tag_name("title"));
+    assert!(
+        title.and_then(|t| t.text()).is_some_and(|t| !t.is_empty()),
+        "a <title>"
+    );
+    let desc = root
+        .children()
+        .find(|n| n.has_tag_name("desc"))
+        .and_then(|d| d.text());
+    let series = desc
+        .and_then(|d| d.split("Series: ").nth(1))
+        .map(|s| {
+            s.trim_end_matches('.')
+                .split("; ")
+                .map(String::from)
+                .collect()
+        })
+        .unwrap_or_default();
+    let texts = root
+        .descendants()
+        .filter(|n| n.has_tag_name("text"))
+        .filter_map(|n| n.text().map(|t| t.trim().to_string()))
+        .collect();
+    let polylines = root
+        .descendants()
+        .filter(|n| n.has_tag_name("polyline"))
+        .count();
+    Svg {
+        texts,
+        series,
+        polylines,
+    }
+}

@@ -1,0 +1,304 @@
+//! `bouncelab figure NAME --out FILE.svg [--data FILE.csv]`: one of the paper's figures as
+//! SVG, and its plotted series as CSV. The figures themselves are built in
+//! [`crate::figure::paper`]; this file reads the options, solves, and writes the files.
+
+use super::ball::{self, BallArgs, check_positive, param_message};
+use crate::analysis::sweep::{cor_vs_velocity, cor_vs_zeta, lin_space, log_space};
+use crate::figure::{Figure, csv, paper, svg};
+use crate::model::contact::ContactLaw;
+use crate::model::params::validate_lambda_zeta;
+use crate::preset::{ParamSource, Preset};
+use crate::solver::{SolveOptions, simulate};
+use clap::{Args, ValueEnum};
+use std::fs;
+use std::io::{self, Write};
+use std::path::{Path, PathBuf};
+
+/// Points along a curve: enough for smooth curves on a log axis, few enough for a small file.
+pub const ZETA_POINTS: usize = 400;
+pub const VELOCITY_POINTS: usize = 200;
+pub const HISTORY_SAMPLES: usize = 400;
+pub const MAX_POINTS: usize = 20_000;
+
+/// Peak indentation, in units of z_p, at the top of the default speed range of `cor-velocity`:
+/// well past the onset of flattening (z_m = z_p), so the drop of the COR shows.
+pub const SPEED_RANGE_ZP: f64 = 3.0;
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum FigureName {
+    /// COR against ζ, one curve per λ (Fig. 2)
+    CorZeta,
+    /// Normalized peak force against ζ, one curve per λ (Fig. 3)
+    ForceZeta,
+    /// COR against impact speed for one ball (Fig. 4)
+    CorVelocity,
+    /// Contact force against time for one ball (Figs. 5, 7)
+    ForceTime,
+    /// Contact force against indentation and displacement for one ball (Figs. 6, 8)
+    ForceDisplacement,
+}
+
+impl FigureName {
+    pub fn name(self) -> &'static str {
+        match self {
+            FigureName::CorZeta => "cor-zeta",
+            FigureName::ForceZeta => "force-zeta",
+            FigureName::CorVelocity => "cor-velocity",
+            FigureName::ForceTime => "force-time",
+            FigureName::ForceDisplacement => "force-displacement",
+        }
+    }
+}
+
+#[derive(Debug, Clone, Args)]
+pub struct FigureArgs {
+    /// Which figure
+    #[arg(value_enum, value_name = "NAME")]
+    pub name: FigureName,
+    /// SVG file to write (an existing file is refused unless --force)
+    #[arg(long, value_name = "FILE.svg")]
+    pub out: PathBuf,
+    /// Also write the plotted series as CSV (SI units; see docs/figures.md)
+    #[arg(long, value_name = "FILE.csv")]
+    pub data: Option<PathBuf>,
+    /// Overwrite existing files
+    #[arg(long)]
+    pub force: bool,
+    #[command(flatten)]
+    pub ball: BallArgs,
+    /// λ of the model curves, comma-separated (cor-zeta, force-zeta) [default: 0,0.4,1]
+    #[arg(long, value_name = "L,L,...", value_delimiter = ',')]
+    pub lambda: Option<Vec<f64>>,
+    /// Impact speed v0, m/s (force-time, force-displacement) [default: the preset's v0]
+    #[arg(long, value_name = "V")]
+    pub v0: Option<f64>,
+    /// Lowest impact speed, m/s (cor-velocity) [default: 0.1 × the preset's v0]
+    #[arg(long, value_name = "V")]
+    pub from: Option<f64>,
+    /// Highest impact speed, m/s (cor-velocity) [default: where z_m = 3 z_p]
+    #[arg(long, value_name = "V")]
+    pub to: Option<f64>,
+    /// Points along each curve [default: 400 for ζ, 200 for speed, 400 samples in time]
+    #[arg(long, value_name = "N")]
+    pub points: Option<usize>,
+}
+
+/// Options that only some figures take: naming the misplaced one beats ignoring it.
+fn check_applicable(a: &FigureArgs) -> anyhow::Result<()> {
+    use FigureName::*;
+    let given = [
+        ("--lambda", a.lambda.is_some(), &[CorZeta, ForceZeta][..]),
+        ("--v0", a.v0.is_some(), &[ForceTime, ForceDisplacement][..]),
+        ("--from", a.from.is_some(), &[CorVelocity][..]),
+        ("--to", a.to.is_some(), &[CorVelocity][..]),
+    ];
+    for (opt, present, valid) in given {
+        if present && !valid.contains(&a.name) {
+            let names: Vec<&str> = valid.iter().map(|n| n.name()).collect();
+            anyhow::bail!(
+                "{opt} does not apply to {} (only to {})",
+                a.name.name(),
+                names.join(" and ")
+            );
+        }
+    }
+    if let Some(n) = a.points
+        && !(2..=MAX_POINTS).contains(&n)
+    {
+        anyhow::bail!("invalid points: {n} (must lie in 2 … {MAX_POINTS})");
+    }
+    Ok(())
+}
+
+/// Refuse what cannot or should not be written, before any work: an existing file (unless
+/// `force`), a directory, a missing parent folder.
+pub fn check_writable(paths: &[&Path], force: bool) -> anyhow::Result<()> {
+    // compared as absolute paths, so `a.svg` and `./a.svg` are one file
+    let same = |a: &Path, b: &Path| match (std::path::absolute(a), std::path::absolute(b)) {
+        (Ok(a), Ok(b)) => a == b,
+        _ => a == b,
+    };
+    for (i, p) in paths.iter().enumerate() {
+        if paths[..i].iter().any(|q| same(q, p)) {
+            anyhow::bail!(
+                "{} is given twice: --out and --data must differ",
+                p.display()
+            );
+        }
+        if p.is_dir() {
+            anyhow::bail!("{} is a directory, not a file", p.display());
+        }
+        if p.exists() && !force {
+            anyhow::bail!("{} exists (use --force to overwrite it)", p.display());
+        }
+        let parent = p.parent().filter(|d| !d.as_os_str().is_empty());
+        if let Some(d) = parent
+            && !d.is_dir()
+        {
+            anyhow::bail!(
+                "cannot write {}: no such directory {}",
+                p.display(),
+                d.display()
+            );
+        }
+    }
+    Ok(())
+}
+
+/// Write `text` to `path`; without `force` the file must not exist (checked again at creation,
+/// so a file that appeared meanwhile is still not overwritten).
+pub fn write_file(path: &Path, text: &str, force: bool) -> anyhow::Result<()> {
+    let mut opts = fs::OpenOptions::new();
+    opts.write(true);
+    if force {
+        opts.create(true).truncate(true);
+    } else {
+        opts.create_new(true);
+    }
+    let mut f = match opts.open(path) {
+        Err(e) if e.kind() == io::ErrorKind::AlreadyExists => {
+            anyhow::bail!("{} exists (use --force to overwrite it)", path.display())
+        }
+        r => r.map_err(|e| {
+            anyhow::Error::new(e).context(format!("cannot write {}", path.display()))
+        })?,
+    };
+    f.write_all(text.as_bytes())
+        .and_then(|()| f.flush())
+        .map_err(|e| anyhow::Error::new(e).context(format!("cannot write {}", path.display())))
+}
+
+/// A CLI ball as a ball of the paper's charts.
+pub fn chart_ball(b: &ball::Ball) -> paper::Ball {
+    paper::Ball {
+        name: b.name.clone().unwrap_or_else(|| "ball".into()),
+        source: b.source.into(),
+        params: b.params,
+        law: b.law,
+        measured: b.measured.clone(),
+    }
+}
+
+/// An embedded preset on the chosen (or its own) parameter set.
+pub fn embedded_ball(p: &Preset, source: Option<ParamSource>, law: ContactLaw) -> paper::Ball {
+    let source = source.unwrap_or(p.parameters);
+    paper::Ball {
+        name: p.name.clone(),
+        source: source.name().into(),
+        params: p.params_from(source),
+        law,
+        measured: Some(p.measured.clone()),
+    }
+}
+
+/// Figs. 2 and 3 over ζ = 0.01 … 100.
+pub fn zeta_figures(
+    lambdas: &[f64],
+    points: usize,
+    law: ContactLaw,
+    balls: &[paper::Ball],
+) -> anyhow::Result<(Figure, Figure)> {
+    for &l in lambdas {
+        validate_lambda_zeta(l, 0.0).map_err(|e| anyhow::anyhow!(param_message(&e)))?;
+    }
+    let rows = cor_vs_zeta(lambdas, &log_space(0.01, 100.0, points), law)
+        .map_err(|e| anyhow::anyhow!(param_message(&e)))?;
+    Ok((
+        paper::cor_zeta(&rows, balls, law),
+        paper::force_zeta(&rows, balls, law),
+    ))
+}
+
+/// Fig. 4 from `from` (default 0.1 v0) to `to` (default: where z_m = 3 z_p, at least 1.2 v0 so
+/// the measured point shows).
+pub fn velocity_figure(
+    b: &paper::Ball,
+    from: Option<f64>,
+    to: Option<f64>,
+    points: usize,
+) -> anyhow::Result<Figure> {
+    let pm = |e| anyhow::anyhow!(param_message(&e));
+    let v0 = b.params.v0;
+    let onset = paper::speed_for_indentation(&b.params, b.law, 1.0).map_err(pm)?;
+    let far = paper::speed_for_indentation(&b.params, b.law, SPEED_RANGE_ZP).map_err(pm)?;
+    let from = from.unwrap_or(0.1 * v0);
+    let to = to.unwrap_or_else(|| far.unwrap_or(3.0 * v0).max(1.2 * v0));
+    check_positive("from", from)?;
+    check_positive("to", to)?;
+    if from >= to {
+        anyhow::bail!("invalid speed range: --from {from} must be below --to {to}");
+    }
+    let rows = cor_vs_velocity(&b.params, b.law, &lin_space(from, to, points)).map_err(pm)?;
+    Ok(paper::cor_velocity(b, &rows, onset))
+}
+
+/// Figs. 5–8 at the ball's v0: (force-time, force-displacement).
+pub fn history_figures(b: &paper::Ball, samples: usize) -> anyhow::Result<(Figure, Figure)> {
+    let r = simulate(
+        &b.params,
+        b.law,
+        &SolveOptions::default().with_samples(samples),
+    )
+    .map_err(|e| anyhow::anyhow!(param_message(&e)))?;
+    if !r.rebound {
+        anyhow::bail!(
+            "{} does not rebound at v0 = {} m/s: there is no contact to draw",
+            b.name,
+            b.params.v0
+        );
+    }
+    Ok((paper::force_time(b, &r), paper::force_displacement(b, &r)))
+}
+
+fn build(a: &FigureArgs) -> anyhow::Result<Figure> {
+    use FigureName::*;
+    match a.name {
+        CorZeta | ForceZeta => {
+            let law = a.ball.law.map_or(ContactLaw::Linear, ContactLaw::from);
+            let source = a.ball.params.map(ParamSource::from);
+            let mut balls: Vec<paper::Ball> = Preset::embedded()
+                .iter()
+                .map(|p| embedded_ball(p, source, law))
+                .collect();
+            // a user's ball joins the three of the paper
+            if a.ball.preset.is_some() || a.ball.config.is_some() {
+                let b = chart_ball(&a.ball.resolve(None)?);
+                if !balls.iter().any(|x| x.name == b.name) {
+                    balls.push(b);
+                }
+            }
+            let lambdas = a.lambda.clone().unwrap_or_else(|| vec![0.0, 0.4, 1.0]);
+            if lambdas.is_empty() {
+                anyhow::bail!("invalid lambda: no value given");
+            }
+            let points = a.points.unwrap_or(ZETA_POINTS);
+            let (cor, force) = zeta_figures(&lambdas, points, law, &balls)?;
+            Ok(if a.name == CorZeta { cor } else { force })
+        }
+        CorVelocity => {
+            let b = chart_ball(&a.ball.resolve(None)?);
+            velocity_figure(&b, a.from, a.to, a.points.unwrap_or(VELOCITY_POINTS))
+        }
+        ForceTime | ForceDisplacement => {
+            let b = chart_ball(&a.ball.resolve(a.v0)?);
+            let (t, d) = history_figures(&b, a.points.unwrap_or(HISTORY_SAMPLES))?;
+            Ok(if a.name == ForceTime { t } else { d })
+        }
+    }
+}
+
+pub fn run(a: &FigureArgs, out: &mut dyn Write) -> anyhow::Result<()> {
+    check_applicable(a)?;
+    let mut paths = vec![a.out.as_path()];
+    paths.extend(a.data.as_deref());
+    check_writable(&paths, a.force)?;
+    let fig = build(a)?;
+    let picture = svg::render(&fig).map_err(|e| super::Runtime(e.into()))?;
+    write_file(&a.out, &picture, a.force)?;
+    writeln!(out, "{}", a.out.display())?;
+    if let Some(d) = &a.data {
+        write_file(d, &csv::to_string(&fig), a.force)?;
+        writeln!(out, "{}", d.display())?;
+    }
+    Ok(())
+}

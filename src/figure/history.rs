@@ -1,0 +1,167 @@
+//! Figs. 5–8 of the paper: the contact force of one impact against time and against
+//! displacement, drawn from the sampled history of an [`ImpactResponse`].
+
+use super::paper::Ball;
+use super::{Axis, BLACK, Figure, GREY, Kind, Marker, Series, Style, short};
+use crate::model::contact::ContactLaw;
+use crate::solver::ImpactResponse;
+
+/// "adopted parameters, linear law, v0 = 3.12 m/s (measured speed)"
+fn at_speed(ball: &Ball, v0: f64) -> String {
+    let measured = if ball.measured_at(v0).is_some() {
+        " (measured speed)"
+    } else {
+        ""
+    };
+    format!("{}, v0 = {} m/s{measured}", ball.describe(), short(v0, 4))
+}
+
+/// A measured value drawn as a horizontal line from x0 to x1 at y.
+fn measured_line(label: &str, id: &str, y: f64, x0: f64, x1: f64) -> Series {
+    Series::new(label, id, Kind::Measured, Style::Dashed, BLACK).with_points(vec![(x0, y), (x1, y)])
+}
+
+/// Figs. 5, 7: force against time, with the measured peak force and contact time as reference
+/// lines (at the measured speed only).
+pub fn force_time(ball: &Ball, r: &ImpactResponse) -> Figure {
+    let h = &r.history;
+    let pts: Vec<(f64, f64)> = h.t.iter().copied().zip(h.force.iter().copied()).collect();
+    let mut series =
+        vec![Series::new("model", "model", Kind::Model, Style::Solid, 0).with_points(pts)];
+    let t_end = r.duration;
+    if let Some(m) = ball.measured_at(ball.params.v0) {
+        let right = m.contact_time.map_or(t_end, |t| t_end.max(t));
+        if let Some(f) = m.max_force {
+            series.push(measured_line(
+                &format!("measured peak force ({} N)", short(f, 4)),
+                "measured max_force",
+                f,
+                0.0,
+                right,
+            ));
+        }
+        if let Some(t) = m.contact_time {
+            let top = m.max_force.unwrap_or(0.0).max(r.max_force);
+            series.push(
+                Series::new(
+                    &format!("measured contact time ({} ms)", short(t * 1e3, 3)),
+                    "measured contact_time",
+                    Kind::Measured,
+                    Style::Dotted,
+                    1,
+                )
+                .with_points(vec![(t, 0.0), (t, top)]),
+            );
+        }
+    }
+    Figure {
+        title: format!("Contact force against time: {}", ball.name),
+        subtitle: at_speed(ball, ball.params.v0),
+        x: Axis::linear("time t (ms)", "t", 1e3),
+        y: Axis::linear("contact force F (N)", "force", 1.0),
+        series,
+    }
+}
+
+/// The force on the loading branch where the indentation first reaches `z` (the sample at or
+/// just past it): where the flattening-threshold line meets the curve.
+fn force_at(indentation: &[f64], force: &[f64], z: f64) -> f64 {
+    indentation
+        .iter()
+        .position(|&x| x >= z)
+        .and_then(|i| force.get(i).copied())
+        .unwrap_or(0.0)
+}
+
+/// Figs. 6, 8: force against the contact indentation z (the contact law's loading and
+/// unloading branches; the permanent indentation z_f once the ball flattens) and against the
+/// ball's displacement α, whose loop encloses the energy the impact lost.
+pub fn force_displacement(ball: &Ball, r: &ImpactResponse) -> Figure {
+    let h = &r.history;
+    let with_force =
+        |v: &[f64]| -> Vec<(f64, f64)> { v.iter().copied().zip(h.force.iter().copied()).collect() };
+    let mut series = vec![
+        Series::new(
+            "contact indentation z",
+            "model indentation",
+            Kind::Model,
+            Style::Solid,
+            0,
+        )
+        .with_points(with_force(&h.indentation)),
+        Series::new(
+            "ball displacement α",
+            "model displacement",
+            Kind::Model,
+            Style::Dashed,
+            2,
+        )
+        .with_points(with_force(&h.displacement)),
+    ];
+    let right = h
+        .displacement
+        .iter()
+        .chain(&h.indentation)
+        .fold(0.0f64, |a, &b| a.max(b));
+    let z_p = ball.params.z_p;
+    // the threshold is drawn when it falls inside the picture; otherwise the subtitle says it
+    let zp_shown = ball.law != ContactLaw::Hertz && z_p <= right;
+    if zp_shown {
+        series.push(
+            Series::new(
+                &format!("flattening threshold z_p ({} mm)", short(z_p * 1e3, 3)),
+                "flattening_threshold",
+                Kind::Reference,
+                Style::Dotted,
+                GREY,
+            )
+            .with_points(vec![
+                (z_p, 0.0),
+                (z_p, force_at(&h.indentation, &h.force, z_p)),
+            ]),
+        );
+    }
+    if r.permanent_indentation > 1e-6 * r.max_indentation {
+        let z_f = r.permanent_indentation;
+        let mut s = Series::new(
+            &format!("permanent indentation z_f ({} mm)", short(z_f * 1e3, 3)),
+            "model permanent_indentation",
+            Kind::Model,
+            Style::Markers(Marker::Diamond),
+            1,
+        )
+        .with_points(vec![(z_f, 0.0)]);
+        s.annotations = vec!["z_f".into()];
+        series.push(s);
+    }
+    if let Some(f) = ball.measured_at(ball.params.v0).and_then(|m| m.max_force) {
+        series.push(measured_line(
+            &format!("measured peak force ({} N)", short(f, 4)),
+            "measured max_force",
+            f,
+            0.0,
+            right,
+        ));
+    }
+    let mut subtitle = at_speed(ball, ball.params.v0);
+    let z_m = r.max_indentation;
+    if ball.law != ContactLaw::Hertz {
+        let (word, cmp) = if z_m > z_p {
+            ("flattened", ">")
+        } else {
+            ("no flattening", "<")
+        };
+        subtitle.push_str(&format!(
+            "; {word}: z_m = {} mm {cmp} z_p = {} mm",
+            short(z_m * 1e3, 3),
+            short(z_p * 1e3, 3)
+        ));
+    }
+    Figure {
+        title: format!("Contact force against displacement: {}", ball.name),
+        subtitle,
+        x: Axis::linear("indentation z, displacement α (mm)", "displacement", 1e3),
+        y: Axis::linear("contact force F (N)", "force", 1.0),
+        series,
+    }
+}

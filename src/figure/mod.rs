@@ -1,0 +1,222 @@
+//! Figures as plain data, and the ways out: an SVG picture ([`svg::render`]), the plotted
+//! series as CSV ([`csv::write`]), and the Markdown report comparing model and experiment
+//! ([`report`]). [`paper`] builds the paper's figures (MODEL.md §6) from solver output.
+//!
+//! Nothing here touches the file system: rendering returns a `String` and the CSV writer takes
+//! any `io::Write`, so the command line and the terminal explorer share one implementation.
+
+pub mod csv;
+pub mod history;
+pub mod paper;
+pub mod report;
+pub mod svg;
+mod ticks;
+
+/// One axis of a figure.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Axis {
+    /// Label shown on the figure, with its unit: "t (ms)".
+    pub label: String,
+    /// CSV column name for this axis' values: "t".
+    pub key: String,
+    /// Factor from the series' SI values to the unit shown (s → ms: 1e3). Series hold SI
+    /// values, as the CSV writes them (like every other output of bouncelab); only the picture
+    /// shows convenient units.
+    pub scale: f64,
+    /// Logarithmic (base 10) axis, with decade ticks.
+    pub log: bool,
+    /// Range shown, in the unit shown; `None` fits the data (with a small margin).
+    pub range: Option<(f64, f64)>,
+}
+
+impl Axis {
+    /// A linear axis fitted to the data.
+    pub fn linear(label: &str, key: &str, scale: f64) -> Axis {
+        Axis {
+            label: label.into(),
+            key: key.into(),
+            scale,
+            log: false,
+            range: None,
+        }
+    }
+
+    /// A base-10 logarithmic axis over `from..to` (both positive).
+    pub fn log(label: &str, key: &str, from: f64, to: f64) -> Axis {
+        Axis {
+            label: label.into(),
+            key: key.into(),
+            scale: 1.0,
+            log: true,
+            range: Some((from, to)),
+        }
+    }
+
+    pub fn with_range(mut self, from: f64, to: f64) -> Axis {
+        self.range = Some((from, to));
+        self
+    }
+}
+
+/// What a series stands for; written in the CSV `kind` column.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Kind {
+    /// Computed by the model.
+    Model,
+    /// Measured (Cross 1999 for the embedded balls).
+    Measured,
+    /// A reference line: a threshold or a measured value drawn across the plot.
+    Reference,
+}
+
+impl Kind {
+    pub fn name(self) -> &'static str {
+        match self {
+            Kind::Model => "model",
+            Kind::Measured => "measured",
+            Kind::Reference => "reference",
+        }
+    }
+}
+
+/// Marker shapes, so measured points stay distinct without colour.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Marker {
+    Circle,
+    Square,
+    Triangle,
+    Diamond,
+}
+
+/// How a series is drawn.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Style {
+    Solid,
+    Dashed,
+    Dotted,
+    /// Unconnected markers.
+    Markers(Marker),
+}
+
+/// A colour-blind-safe palette (Okabe & Ito), darkest first-use colours first; index with
+/// [`Series::color`] (taken modulo its length).
+pub const PALETTE: [(u8, u8, u8); 8] = [
+    (0, 114, 178),   // blue
+    (213, 94, 0),    // vermillion
+    (0, 158, 115),   // bluish green
+    (204, 121, 167), // reddish purple
+    (230, 159, 0),   // orange
+    (86, 180, 233),  // sky blue
+    (0, 0, 0),       // black
+    (120, 120, 120), // grey
+];
+
+/// Index of black and grey in [`PALETTE`], for measured values and reference lines.
+pub const BLACK: usize = 6;
+pub const GREY: usize = 7;
+
+/// One plotted series.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Series {
+    /// Legend text (may hold Greek letters and units).
+    pub label: String,
+    /// Name in the CSV `series` column: ASCII, stable, easy to filter on.
+    pub id: String,
+    pub kind: Kind,
+    pub style: Style,
+    /// Index into [`PALETTE`].
+    pub color: usize,
+    /// (x, y), SI units.
+    pub points: Vec<(f64, f64)>,
+    /// Text placed next to each point (markers only); empty for none.
+    pub annotations: Vec<String>,
+}
+
+impl Series {
+    pub fn new(label: &str, id: &str, kind: Kind, style: Style, color: usize) -> Series {
+        Series {
+            label: label.into(),
+            id: id.into(),
+            kind,
+            style,
+            color,
+            points: Vec::new(),
+            annotations: Vec::new(),
+        }
+    }
+
+    pub fn with_points(mut self, points: Vec<(f64, f64)>) -> Series {
+        self.points = points;
+        self
+    }
+}
+
+/// A figure: what to draw, independent of how.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Figure {
+    pub title: String,
+    /// Second line under the title: which ball, parameters, law, speed.
+    pub subtitle: String,
+    pub x: Axis,
+    pub y: Axis,
+    /// Drawn in this order; the legend lists those with a label, under the plot.
+    pub series: Vec<Series>,
+}
+
+impl Figure {
+    /// (min, max) over every point of every series along one axis, in the unit shown,
+    /// ignoring non-finite values (and non-positive ones on a log axis); `None` when there is
+    /// nothing to show.
+    pub fn data_extent(&self, axis_x: bool) -> Option<(f64, f64)> {
+        let axis = if axis_x { &self.x } else { &self.y };
+        let mut it = self
+            .series
+            .iter()
+            .flat_map(|s| s.points.iter())
+            .map(|&(x, y)| axis.scale * if axis_x { x } else { y })
+            .filter(|v| v.is_finite() && (!axis.log || *v > 0.0));
+        let first = it.next()?;
+        Some(it.fold((first, first), |(lo, hi), v| (lo.min(v), hi.max(v))))
+    }
+}
+
+/// A number for a label: `sig` significant digits without trailing zeros (0.4, 1.3, 121.8,
+/// 3.12), exponent form beyond 1e6.
+pub fn short(x: f64, sig: usize) -> String {
+    if !x.is_finite() {
+        return crate::model::params::display_number(x);
+    }
+    if x == 0.0 {
+        return "0".into();
+    }
+    let mag = x.abs().log10().floor() as i32;
+    let trim = |s: &str| -> String {
+        if s.contains('.') {
+            s.trim_end_matches('0').trim_end_matches('.').to_string()
+        } else {
+            s.to_string()
+        }
+    };
+    if !(-4..6).contains(&mag) {
+        let s = format!("{:.*e}", sig.saturating_sub(1), x);
+        let (mantissa, exp) = s.split_once('e').unwrap_or((&s, "0"));
+        return format!("{}e{exp}", trim(mantissa));
+    }
+    let decimals = (sig as i32 - 1 - mag).max(0) as usize;
+    trim(&format!("{x:.decimals$}"))
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn short_numbers() {
+        use super::short;
+        assert_eq!(short(0.4, 3), "0.4");
+        assert_eq!(short(121.8, 4), "121.8");
+        assert_eq!(short(1.05e6, 4), "1.05e6");
+        assert_eq!(short(1.2e7, 4), "1.2e7");
+        assert_eq!(short(54500.0, 4), "54500");
+        assert_eq!(short(3e-3 * 1e3, 3), "3");
+        assert_eq!(short(0.0, 3), "0");
+    }
+}

@@ -1,0 +1,274 @@
+//! The paper's figures (MODEL.md §6) as [`Figure`]s, built from solver output: COR and
+//! normalized peak force against ζ (Figs. 2, 3), COR against impact speed (Fig. 4), force
+//! against time and against displacement (Figs. 5–8), each with the measured values of the
+//! balls (Cross 1999, MODEL.md §7).
+//!
+//! Figs. 5–8 live in [`super::history`] and are re-exported here.
+//!
+//! The builders take computed data (sweep rows, an [`ImpactResponse`]) and return a figure, so
+//! a caller that already holds a response (the explorer) draws it without re-solving.
+
+use super::{Axis, BLACK, Figure, GREY, Kind, Marker, Series, Style, short};
+use crate::analysis::sweep::{VelocityPoint, ZetaPoint};
+use crate::model::contact::ContactLaw;
+use crate::model::params::{ImpactParams, ParamError};
+use crate::preset::Measured;
+use crate::solver::{SolveOptions, simulate};
+
+pub use super::history::{force_displacement, force_time};
+
+/// A ball on the paper's charts: the parameters the model runs on and what was measured.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Ball {
+    pub name: String,
+    /// "adopted" or "materials": which parameter set `params` is.
+    pub source: String,
+    pub params: ImpactParams,
+    pub law: ContactLaw,
+    pub measured: Option<Measured>,
+}
+
+impl Ball {
+    /// "adopted parameters, linear law" (the title names the ball)
+    pub(super) fn describe(&self) -> String {
+        format!("{} parameters, {} law", self.source, self.law)
+    }
+
+    /// The measured values apply only at the speed they were measured at.
+    pub fn measured_at(&self, v0: f64) -> Option<&Measured> {
+        self.measured
+            .as_ref()
+            .filter(|m| (m.v0 - v0).abs() <= 1e-9 * m.v0)
+    }
+}
+
+/// Line styles and colours of successive model curves: style and colour both change, so the
+/// curves stay apart in greyscale print too.
+fn curve_style(i: usize) -> (Style, usize) {
+    const STYLES: [Style; 3] = [Style::Solid, Style::Dashed, Style::Dotted];
+    (STYLES[i % 3], i)
+}
+
+const MARKERS: [Marker; 4] = [
+    Marker::Circle,
+    Marker::Square,
+    Marker::Triangle,
+    Marker::Diamond,
+];
+
+/// The λ values of ζ-sweep rows, in order of first appearance.
+fn lambdas(rows: &[ZetaPoint]) -> Vec<f64> {
+    let mut out: Vec<f64> = Vec::new();
+    for r in rows {
+        if !out.contains(&r.lambda) {
+            out.push(r.lambda);
+        }
+    }
+    out
+}
+
+/// Figs. 2 and 3 share everything but the quantity on the y axis.
+fn zeta_figure(
+    rows: &[ZetaPoint],
+    balls: &[Ball],
+    law: ContactLaw,
+    title: &str,
+    y: Axis,
+    model: fn(&ZetaPoint) -> f64,
+    measured: fn(&Ball) -> Option<f64>,
+) -> Figure {
+    let (lo, hi) = rows.iter().fold((f64::INFINITY, 0.0f64), |(a, b), r| {
+        (a.min(r.zeta), b.max(r.zeta))
+    });
+    let mut series = Vec::new();
+    for (i, l) in lambdas(rows).into_iter().enumerate() {
+        let (style, color) = curve_style(i);
+        let pts = rows
+            .iter()
+            .filter(|r| r.lambda == l)
+            .map(|r| (r.zeta, model(r)))
+            .collect();
+        series.push(
+            Series::new(
+                &format!("model, λ = {}", short(l, 3)),
+                &format!("model lambda={}", short(l, 6)),
+                Kind::Model,
+                style,
+                color,
+            )
+            .with_points(pts),
+        );
+    }
+    for (i, b) in balls.iter().enumerate() {
+        let Some(value) = measured(b) else { continue };
+        let n = b.params.normalized();
+        let mut s = Series::new(
+            &format!("{} (λ = {})", b.name, short(n.lambda, 2)),
+            &format!("measured {}", b.name),
+            Kind::Measured,
+            Style::Markers(MARKERS[i % MARKERS.len()]),
+            BLACK,
+        )
+        .with_points(vec![(n.zeta, value)]);
+        s.annotations = vec![b.name.clone()];
+        series.push(s);
+    }
+    let at = if balls.is_empty() {
+        String::new()
+    } else {
+        format!(
+            "; markers: measured (Cross 1999), at the {} ζ",
+            balls[0].source
+        )
+    };
+    Figure {
+        title: title.into(),
+        subtitle: format!("normalized ball, no flattening, {law} law{at}"),
+        x: Axis::log("damping factor ζ (–)", "zeta", lo.min(hi), hi.max(lo)),
+        y,
+        series,
+    }
+}
+
+/// The COR axis, 0 … 1 with a sliver below 0 so that a COR of 0 (no rebound) shows as a
+/// line rather than hiding in the frame.
+fn cor_axis() -> Axis {
+    Axis::linear("coefficient of restitution e (–)", "cor", 1.0).with_range(-0.02, 1.05)
+}
+
+/// Fig. 2: COR against ζ, one curve per λ, with the balls' measured COR at their ζ.
+pub fn cor_zeta(rows: &[ZetaPoint], balls: &[Ball], law: ContactLaw) -> Figure {
+    zeta_figure(
+        rows,
+        balls,
+        law,
+        "Coefficient of restitution against damping factor",
+        cor_axis(),
+        |r| r.cor,
+        |b| b.measured.as_ref()?.cor,
+    )
+}
+
+/// Fig. 3: normalized peak force F̄_m = F_m/(m v0 ω0) against ζ, with the balls' measured peak
+/// force normalized by their own m, v0 and ω0 = √(K_p/m).
+pub fn force_zeta(rows: &[ZetaPoint], balls: &[Ball], law: ContactLaw) -> Figure {
+    zeta_figure(
+        rows,
+        balls,
+        law,
+        "Normalized peak force against damping factor",
+        Axis::linear(
+            "normalized peak force F̄m = Fm/(m v0 ω0) (–)",
+            "max_force_normalized",
+            1.0,
+        )
+        .with_range(0.0, 1.05),
+        |r| r.max_force_normalized,
+        |b| {
+            let m = b.measured.as_ref()?;
+            let p = &b.params;
+            Some(m.max_force? / (p.mass * m.v0 * p.omega0()))
+        },
+    )
+}
+
+/// The impact speed at which the peak indentation reaches `ratio` × z_p (`None` without a
+/// finite z_p). Found by bisection on the solver's z_m, which grows with v0 for every law
+/// (for the linear law z_m ∝ v0 exactly, since loading is linear).
+pub fn speed_for_indentation(
+    params: &ImpactParams,
+    law: ContactLaw,
+    ratio: f64,
+) -> Result<Option<f64>, ParamError> {
+    if !params.z_p.is_finite() {
+        return Ok(None);
+    }
+    let target = ratio * params.z_p;
+    let z_m = |v0: f64| -> Result<f64, ParamError> {
+        let r = simulate(
+            &ImpactParams { v0, ..*params },
+            law,
+            &SolveOptions::default(),
+        )?;
+        Ok(r.max_indentation)
+    };
+    let (mut lo, mut hi) = (params.v0, params.v0);
+    for _ in 0..60 {
+        if z_m(hi)? >= target {
+            break;
+        }
+        lo = hi;
+        hi *= 2.0;
+    }
+    for _ in 0..60 {
+        if z_m(lo)? < target {
+            break;
+        }
+        hi = lo;
+        lo /= 2.0;
+    }
+    // a plot range needs three digits, not fifteen
+    while hi / lo > 1.0 + 1e-4 {
+        let mid = (lo * hi).sqrt();
+        if z_m(mid)? < target {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    Ok(Some(hi))
+}
+
+/// Fig. 4: COR against impact speed for one ball, with the flattening onset (z_m = z_p) and
+/// the measured COR.
+pub fn cor_velocity(ball: &Ball, rows: &[VelocityPoint], onset: Option<f64>) -> Figure {
+    let mut series = vec![
+        Series::new("model", "model", Kind::Model, Style::Solid, 0)
+            .with_points(rows.iter().map(|r| (r.v0, r.cor)).collect()),
+    ];
+    let first = rows.first().map_or(0.0, |r| r.v0);
+    let last = rows.last().map_or(1.0, |r| r.v0);
+    // from 0 unless the sweep starts far from it
+    let left = if first <= 0.25 * last { 0.0 } else { first };
+    if let Some(v) = onset.filter(|&v| v <= last && ball.law != ContactLaw::Hertz) {
+        series.push(
+            Series::new(
+                &format!("flattening starts, z_m = z_p ({} m/s)", short(v, 3)),
+                "flattening_onset",
+                Kind::Reference,
+                Style::Dotted,
+                GREY,
+            )
+            .with_points(vec![(v, 0.0), (v, 1.05)]),
+        );
+    }
+    if let Some((v, e)) = ball.measured.as_ref().and_then(|m| Some((m.v0, m.cor?))) {
+        let mut s = Series::new(
+            "measured (Cross 1999)",
+            "measured cor",
+            Kind::Measured,
+            Style::Markers(Marker::Circle),
+            BLACK,
+        )
+        .with_points(vec![(v, e)]);
+        s.annotations = vec![format!("e = {}", short(e, 3))];
+        series.push(s);
+    }
+    let n = ball.params.normalized();
+    Figure {
+        title: format!(
+            "Coefficient of restitution against impact speed: {}",
+            ball.name
+        ),
+        subtitle: format!(
+            "{} (λ = {}, ζ = {}, z_p = {} mm)",
+            ball.describe(),
+            short(n.lambda, 3),
+            short(n.zeta, 3),
+            short(ball.params.z_p * 1e3, 3)
+        ),
+        x: Axis::linear("impact speed v0 (m/s)", "v0", 1.0).with_range(left, last),
+        y: cor_axis(),
+        series,
+    }
+}

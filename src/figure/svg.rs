@@ -1,0 +1,339 @@
+//! Rendering a [`Figure`] to SVG with plotters' SVG backend: text stays SVG `<text>` (no font
+//! files, no system libraries), so the crate builds anywhere.
+//!
+//! Layout, top to bottom: title, subtitle, the plot with its axes, and the legend in a strip
+//! under the plot. The legend sits outside the data so it can never hide a curve, whatever
+//! the ball or speed.
+//!
+//! plotters rounds every coordinate to a whole pixel, which shows as wobble on long straight
+//! lines. The picture is therefore drawn `SCALE` times larger and the `<svg>` element's size
+//! set back to `WIDTH` × `HEIGHT`: the viewBox keeps the fine coordinates.
+
+use super::ticks::{Ticks, ticks};
+use super::{Figure, Marker, PALETTE, Series, Style};
+use plotters::element::DashedPathElement;
+use plotters::prelude::*;
+use plotters::style::text_anchor::{HPos, Pos, VPos};
+use std::fmt;
+
+/// Picture size in CSS pixels: the aspect of a journal figure, wide enough for the legend.
+pub const WIDTH: u32 = 800;
+pub const HEIGHT: u32 = 560;
+/// Drawing units per CSS pixel.
+const SCALE: i32 = 4;
+
+const FONT: &str = "sans-serif";
+/// Sizes in CSS pixels (multiplied by `SCALE` when drawn).
+const TITLE_PX: i32 = 22;
+const SUBTITLE_PX: i32 = 15;
+const AXIS_DESC_PX: i32 = 17;
+const TICK_PX: i32 = 15;
+const LEGEND_PX: i32 = 15;
+const ANNOTATION_PX: i32 = 13;
+const LINE_PX: i32 = 2;
+const MARKER_PX: i32 = 5;
+const LEGEND_ROW_PX: i32 = 24;
+const LEGEND_GLYPH_PX: i32 = 30;
+const LEGEND_GAP_PX: i32 = 26;
+const SIDE_PX: i32 = 16;
+/// Space between the x axis' label and the legend strip.
+const LEGEND_TOP_PX: i32 = 8;
+
+/// Rendering failed (plotters reported an error; with an in-memory SVG this is not expected).
+#[derive(Debug, Clone, PartialEq)]
+pub struct RenderError(pub String);
+
+impl fmt::Display for RenderError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "cannot render the figure: {}", self.0)
+    }
+}
+
+impl std::error::Error for RenderError {}
+
+fn err<E: fmt::Debug>(e: E) -> RenderError {
+    RenderError(format!("{e:?}"))
+}
+
+const fn px(v: i32) -> i32 {
+    v * SCALE
+}
+
+/// A font of `size` CSS pixels. plotters writes `font-size` as size/1.24, so undo that here.
+fn font(size: i32) -> TextStyle<'static> {
+    font_in(size, FontStyle::Normal)
+}
+
+fn font_in(size: i32, style: FontStyle) -> TextStyle<'static> {
+    (FONT, f64::from(px(size)) * 1.24, style)
+        .into_font()
+        .color(&BLACK)
+}
+
+fn color(i: usize) -> RGBColor {
+    let (r, g, b) = PALETTE[i % PALETTE.len()];
+    RGBColor(r, g, b)
+}
+
+/// Width of `text` in CSS pixels, estimated: sans-serif glyphs average about 0.5 em. Only the
+/// legend layout uses it, with room to spare.
+fn text_width(text: &str, size: i32) -> i32 {
+    (text.chars().count() as f64 * f64::from(size) * 0.52).ceil() as i32
+}
+
+/// A point (SI) in drawing coordinates: scaled to the unit shown, log10 on a log axis; `None`
+/// for a value the axis cannot show (not finite, or not positive on a log axis).
+fn to_draw(fig: &Figure, (x, y): (f64, f64)) -> Option<(f64, f64)> {
+    let map = |v: f64, axis: &super::Axis| {
+        let v = v * axis.scale;
+        match (v.is_finite(), axis.log) {
+            (true, false) => Some(v),
+            (true, true) if v > 0.0 => Some(v.log10()),
+            _ => None,
+        }
+    };
+    Some((map(x, &fig.x)?, map(y, &fig.y)?))
+}
+
+/// A marker of `shape` centred on backend offset (0, 0).
+fn marker<DB: DrawingBackend>(
+    shape: Marker,
+    style: ShapeStyle,
+) -> DynElement<'static, DB, (i32, i32)> {
+    let s = px(MARKER_PX);
+    match shape {
+        Marker::Circle => Circle::new((0, 0), s, style).into_dyn(),
+        Marker::Square => Rectangle::new([(-s, -s), (s, s)], style).into_dyn(),
+        Marker::Triangle => Polygon::new(
+            vec![
+                (0, -s - s / 3),
+                (s + s / 6, s * 5 / 6),
+                (-s - s / 6, s * 5 / 6),
+            ],
+            style,
+        )
+        .into_dyn(),
+        Marker::Diamond => Polygon::new(
+            vec![(0, -s - s / 3), (s, 0), (0, s + s / 3), (-s, 0)],
+            style,
+        )
+        .into_dyn(),
+    }
+}
+
+/// A legend glyph or a line of `style`, from `a` to `b` in backend coordinates.
+fn stroke<DB: DrawingBackend>(
+    style: Style,
+    line: ShapeStyle,
+    pts: Vec<(i32, i32)>,
+) -> DynElement<'static, DB, (i32, i32)> {
+    match style {
+        Style::Dashed => DashedPathElement::new(pts, px(8), px(5), line).into_dyn(),
+        Style::Dotted => DashedPathElement::new(pts, px(2), px(3), line).into_dyn(),
+        _ => PathElement::new(pts, line).into_dyn(),
+    }
+}
+
+type Chart<'a> = ChartContext<'a, SVGBackend<'a>, Cartesian2d<Ticks, Ticks>>;
+
+/// Draw one series into the plot.
+fn draw_series<'a>(chart: &mut Chart<'a>, fig: &Figure, s: &Series) -> Result<(), RenderError> {
+    let c = color(s.color);
+    let line = c.stroke_width(px(LINE_PX) as u32);
+    let pts: Vec<(f64, f64)> = s.points.iter().filter_map(|&p| to_draw(fig, p)).collect();
+    match s.style {
+        Style::Solid => {
+            chart.draw_series(LineSeries::new(pts, line)).map_err(err)?;
+        }
+        Style::Dashed => {
+            chart
+                .draw_series(DashedLineSeries::new(pts, px(8), px(5), line))
+                .map_err(err)?;
+        }
+        Style::Dotted => {
+            chart
+                .draw_series(DashedLineSeries::new(pts, px(2), px(3), line))
+                .map_err(err)?;
+        }
+        Style::Markers(shape) => {
+            let fill = c.filled();
+            let offset = (px(MARKER_PX + 4), -px(MARKER_PX + 12));
+            let labels = s.annotations.clone();
+            chart
+                .draw_series(pts.into_iter().enumerate().map(move |(i, p)| {
+                    let text = labels.get(i).cloned().unwrap_or_default();
+                    EmptyElement::at(p)
+                        + marker(shape, fill)
+                        + Text::new(text, offset, font(ANNOTATION_PX))
+                }))
+                .map_err(err)?;
+        }
+    }
+    Ok(())
+}
+
+/// Legend entries laid out in rows that fit the width: (row, x offset) per labelled series,
+/// and the width of each row, in CSS pixels.
+fn legend_layout(fig: &Figure) -> (Vec<(usize, i32)>, Vec<i32>) {
+    let avail = WIDTH as i32 - 2 * SIDE_PX;
+    let (mut places, mut rows) = (Vec::new(), vec![0]);
+    for s in fig.series.iter().filter(|s| !s.label.is_empty()) {
+        let w = LEGEND_GLYPH_PX + 8 + text_width(&s.label, LEGEND_PX);
+        let row = rows.len() - 1;
+        let x = rows[row] + if rows[row] > 0 { LEGEND_GAP_PX } else { 0 };
+        if rows[row] > 0 && x + w > avail {
+            rows.push(w);
+            places.push((row + 1, 0));
+        } else {
+            rows[row] = x + w;
+            places.push((row, x));
+        }
+    }
+    if places.is_empty() {
+        rows.clear();
+    }
+    (places, rows)
+}
+
+/// The legend strip under the plot, each row centred.
+fn draw_legend<DB: DrawingBackend>(
+    area: &DrawingArea<DB, plotters::coord::Shift>,
+    fig: &Figure,
+) -> Result<(), RenderError> {
+    let (places, rows) = legend_layout(fig);
+    let labelled = fig.series.iter().filter(|s| !s.label.is_empty());
+    for (s, &(row, x)) in labelled.zip(&places) {
+        let left = (WIDTH as i32 - rows[row]) / 2 + x;
+        let y = px(LEGEND_TOP_PX + LEGEND_ROW_PX / 2 + LEGEND_ROW_PX * row as i32);
+        let (x0, x1) = (px(left), px(left + LEGEND_GLYPH_PX));
+        let c = color(s.color);
+        let glyph = match s.style {
+            Style::Markers(shape) => {
+                EmptyElement::at(((x0 + x1) / 2, y)) + marker(shape, c.filled())
+            }
+            style => {
+                EmptyElement::at((0, 0))
+                    + stroke(
+                        style,
+                        c.stroke_width(px(LINE_PX) as u32),
+                        vec![(x0, y), (x1, y)],
+                    )
+            }
+        };
+        area.draw(&glyph).map_err(err)?;
+        let text = font(LEGEND_PX).pos(Pos::new(HPos::Left, VPos::Center));
+        area.draw(&Text::new(s.label.as_str(), (x1 + px(8), y), text))
+            .map_err(err)?;
+    }
+    Ok(())
+}
+
+/// The subtitle on one line, or on two, broken after its first "; ", when it would not fit.
+fn subtitle_lines(text: &str) -> Vec<&str> {
+    if text.is_empty() {
+        return vec![];
+    }
+    if text_width(text, SUBTITLE_PX) <= WIDTH as i32 - 2 * SIDE_PX {
+        return vec![text];
+    }
+    match text.split_once("; ") {
+        Some((a, b)) => vec![a, b],
+        None => vec![text],
+    }
+}
+
+/// Text for XML character data.
+fn escape(s: &str) -> String {
+    s.replace('&', "&amp;")
+        .replace('<', "&lt;")
+        .replace('>', "&gt;")
+}
+
+/// The picture drawn at `SCALE`, shown at `WIDTH` × `HEIGHT`, with a `<title>` and a `<desc>`
+/// naming the series (for screen readers, and for tools that list a figure's content).
+fn finish(svg: String, fig: &Figure) -> String {
+    let (w, h) = (WIDTH as i32 * SCALE, HEIGHT as i32 * SCALE);
+    let open = format!("<svg width=\"{w}\" height=\"{h}\" ");
+    let names: Vec<String> = fig
+        .series
+        .iter()
+        .map(|s| format!("{} ({})", s.id, s.kind.name()))
+        .collect();
+    let head = format!("<svg width=\"{WIDTH}\" height=\"{HEIGHT}\" font-family=\"{FONT}\" ");
+    let meta = format!(
+        "<title>{}</title>\n<desc>{}. Series: {}.</desc>\n",
+        escape(&fig.title),
+        escape(&fig.subtitle),
+        escape(&names.join("; "))
+    );
+    let svg = svg.replacen(&open, &head, 1);
+    match svg.find(">\n") {
+        Some(i) => format!("{}{}{}", &svg[..i + 2], meta, &svg[i + 2..]),
+        None => svg,
+    }
+}
+
+/// The figure as an SVG document of `WIDTH` × `HEIGHT` CSS pixels.
+pub fn render(fig: &Figure) -> Result<String, RenderError> {
+    let mut buf = String::new();
+    {
+        let size = (
+            (WIDTH as i32 * SCALE) as u32,
+            (HEIGHT as i32 * SCALE) as u32,
+        );
+        let root = SVGBackend::with_string(&mut buf, size).into_drawing_area();
+        root.fill(&WHITE).map_err(err)?;
+        let centre = px(WIDTH as i32 / 2);
+        let top = Pos::new(HPos::Center, VPos::Top);
+        let title = font_in(TITLE_PX, FontStyle::Bold).pos(top);
+        root.draw(&Text::new(fig.title.as_str(), (centre, px(10)), title))
+            .map_err(err)?;
+        let mut head = 44;
+        for line in subtitle_lines(&fig.subtitle) {
+            let sub = font(SUBTITLE_PX).color(&RGBColor(70, 70, 70)).pos(top);
+            root.draw(&Text::new(line, (centre, px(head - 4)), sub))
+                .map_err(err)?;
+            head += SUBTITLE_PX + 5;
+        }
+        head += 2;
+        let legend_h = legend_layout(fig).1.len() as i32 * LEGEND_ROW_PX + LEGEND_TOP_PX + 6;
+        let (_, rest) = root.split_vertically(px(head));
+        let (plot, legend) = rest.split_vertically(px(HEIGHT as i32 - head - legend_h));
+        let (tx, ty) = (ticks(fig, true), ticks(fig, false));
+        let mut chart = ChartBuilder::on(&plot)
+            .margin_left(px(SIDE_PX))
+            .margin_right(px(30))
+            .margin_top(px(6))
+            .x_label_area_size(px(52))
+            .y_label_area_size(px(70))
+            .build_cartesian_2d(tx.clone(), ty.clone())
+            .map_err(err)?;
+        let (fx, fy) = (|v: &f64| tx.label(*v), |v: &f64| ty.label(*v));
+        chart
+            .configure_mesh()
+            .x_desc(fig.x.label.as_str())
+            .y_desc(fig.y.label.as_str())
+            .x_label_formatter(&fx)
+            .y_label_formatter(&fy)
+            .axis_desc_style(font(AXIS_DESC_PX))
+            .label_style(font(TICK_PX))
+            .bold_line_style(RGBColor(218, 218, 218).stroke_width(px(1) as u32))
+            .light_line_style(RGBColor(242, 242, 242).stroke_width(px(1) as u32))
+            .axis_style(BLACK.stroke_width(px(1) as u32))
+            .set_all_tick_mark_size(px(5))
+            .draw()
+            .map_err(err)?;
+        for s in &fig.series {
+            draw_series(&mut chart, fig, s)?;
+        }
+        // a full frame, as journals print it (plotters draws the left and bottom axes only)
+        let frame = Rectangle::new(
+            [(tx.lo, ty.lo), (tx.hi, ty.hi)],
+            BLACK.stroke_width(px(1) as u32),
+        );
+        chart.draw_series(std::iter::once(frame)).map_err(err)?;
+        draw_legend(&legend, fig)?;
+        root.present().map_err(err)?;
+    }
+    Ok(finish(buf, fig))
+}
