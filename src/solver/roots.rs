@@ -10,58 +10,29 @@ pub fn newton_bracketed(mut f: impl FnMut(f64) -> (f64, f64), a: f64, b: f64) ->
     newton_bracketed_from(f, (a, ga), (b, gb))
 }
 
-/// `newton_bracketed` when g is already known at both ends.
+/// `newton_bracketed` when g is already known at both ends: Halley's iteration with g'' = 0.
 pub fn newton_bracketed_from(
     mut f: impl FnMut(f64) -> (f64, f64),
-    (mut a, ga): (f64, f64),
-    (mut b, gb): (f64, f64),
+    a: (f64, f64),
+    b: (f64, f64),
 ) -> f64 {
-    let rising = ga < 0.0;
-    // start from the secant point: the step ends are close to the root's scale already
-    let secant = a - ga * (b - a) / (gb - ga);
-    let mut x = if secant > a.min(b) && secant < a.max(b) {
-        secant
-    } else {
-        0.5 * (a + b)
-    };
-    let mut last_step = (b - a).abs();
-    for _ in 0..100 {
-        let (g, dg) = f(x);
-        if g == 0.0 {
-            return x;
-        }
-        // keep the bracket [a, b] with g(a) on the starting side
-        if (g < 0.0) == rising {
-            a = x;
-        } else {
-            b = x;
-        }
-        // converged: the Newton step is below the resolution of x (it would land on a bracket
-        // end, look "outside", and send the iteration off bisecting)
-        if dg != 0.0 && (g / dg).abs() <= 2.0 * f64::EPSILON * x.abs() {
-            return x;
-        }
-        let newton = x - g / dg;
-        let inside = (newton - a) * (newton - b) < 0.0 && dg != 0.0;
-        let step = if inside && (g / dg).abs() < 0.5 * last_step {
-            x - newton
-        } else {
-            x - 0.5 * (a + b)
-        };
-        last_step = step.abs();
-        x -= step;
-        if step.abs() <= 2.0 * f64::EPSILON * x.abs().max(f64::MIN_POSITIVE)
-            || (b - a).abs() <= 4.0 * f64::EPSILON * x.abs()
-        {
-            return x;
-        }
-    }
-    x
+    halley_bracketed_from(
+        |x| {
+            let (g, dg) = f(x);
+            (g, dg, 0.0)
+        },
+        a,
+        b,
+    )
 }
 
-/// Safeguarded Halley: `f` returns (g, g', g''); cubic convergence where Newton's is
-/// quadratic, which saves evaluations when each one costs exponentials. Same bracket and
-/// fallback rules as `newton_bracketed_from`.
+/// Safeguarded Halley (after Numerical Recipes' rtsafe): `f` returns (g, g', g''); [a, b]
+/// must bracket a sign change, with g known at both ends. Cubic convergence where Newton's is
+/// quadratic, which saves evaluations when each one costs exponentials; falls back to
+/// bisection whenever a step would leave the bracket or stall. It starts from the secant
+/// point (the step ends are close to the root's scale already) and stops as soon as a step is
+/// below the resolution of x (such a step would land on a bracket end, look "outside", and
+/// send the iteration off bisecting).
 pub fn halley_bracketed_from(
     mut f: impl FnMut(f64) -> (f64, f64, f64),
     (mut a, ga): (f64, f64),
