@@ -3,6 +3,7 @@
 use super::compute::{SpeedCurve, SpeedRequest};
 use super::param::{Dir, Param};
 use ratatui::crossterm::event::{Event, KeyCode, KeyEvent, KeyEventKind, KeyModifiers};
+use std::path::PathBuf;
 
 /// Everything the user can ask for. [`super::app::App::update`] is the only place they act.
 #[derive(Debug, Clone, PartialEq)]
@@ -44,6 +45,17 @@ pub enum Action {
     CloseHelp,
     /// A COR-vs-speed sweep finished (from the background worker).
     SpeedReady(SpeedRequest, Result<SpeedCurve, String>),
+    /// Export the current view's charts (SVG + CSV each): `update` prepares an
+    /// [`super::export::ExportRequest`], the event loop writes it.
+    Export,
+    /// The event loop wrote these files for the pending export.
+    Exported {
+        files: Vec<PathBuf>,
+    },
+    /// The pending export could not be written: why, in one line.
+    ExportFailed {
+        msg: String,
+    },
 }
 
 /// What the keyboard is talking to.
@@ -120,6 +132,7 @@ fn normal(key: KeyEvent) -> Option<Action> {
         KeyCode::Char('p') => Some(Action::Pin),
         KeyCode::Char('P') => Some(Action::Unpin),
         KeyCode::Char('u') => Some(Action::Undo),
+        KeyCode::Char('e') => Some(Action::Export),
         KeyCode::Tab => Some(Action::NextView),
         KeyCode::BackTab => Some(Action::PrevView),
         KeyCode::Char('?') => Some(Action::ToggleHelp),
@@ -165,6 +178,14 @@ mod tests {
         assert_eq!(
             from_key(key(KeyCode::Char('3')), Mode::Normal),
             Some(Action::LoadPreset(2))
+        );
+        assert_eq!(
+            from_key(key(KeyCode::Char('e')), Mode::Normal),
+            Some(Action::Export)
+        );
+        assert_eq!(
+            from_key(key(KeyCode::Char('e')), Mode::Input),
+            Some(Action::InputChar('e'))
         );
     }
 

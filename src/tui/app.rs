@@ -3,6 +3,7 @@
 
 use super::action::{Action, Mode};
 use super::compute::{self, SpeedCurve, SpeedRequest, ZetaCurve};
+use super::export::{self, ExportRequest};
 use super::format::sig_trim;
 use super::param::Param;
 pub use super::state::{Ghost, Input, Message, Overlay, Setting, Severity, View};
@@ -38,6 +39,10 @@ pub struct App {
     /// Sweeps to run in the background (see [`App::with_background_sweeps`]).
     speed_wanted: Vec<SpeedRequest>,
     background: bool,
+    /// `e` was pressed: export once the view's curves are up to date.
+    export_wanted: bool,
+    /// An export for the event loop to write (see [`App::export_request`]).
+    export: Option<ExportRequest>,
 }
 
 impl App {
@@ -71,6 +76,8 @@ impl App {
             speed: None,
             speed_wanted: Vec::new(),
             background: false,
+            export_wanted: false,
+            export: None,
         };
         app.refresh();
         app
@@ -133,6 +140,12 @@ impl App {
     }
     pub fn speed_curve(&self) -> Option<&SpeedCurve> {
         self.speed.as_ref()
+    }
+
+    /// An export waiting to be written: the event loop writes it with [`export::write`] and
+    /// answers with [`Action::Exported`] or [`Action::ExportFailed`], which clear it.
+    pub fn export_request(&self) -> Option<&ExportRequest> {
+        self.export.as_ref()
     }
 
     /// What the keyboard is talking to.
@@ -249,6 +262,15 @@ impl App {
                 None => self.warn("nothing to undo".into()),
             },
             Action::NextView | Action::PrevView => self.view = self.view.other(),
+            Action::Export => self.export_wanted = true,
+            Action::Exported { files } => {
+                self.export = None;
+                self.info(export::message(&files));
+            }
+            Action::ExportFailed { msg } => {
+                self.export = None;
+                self.error(format!("export failed: {msg}"));
+            }
         }
     }
 
@@ -289,6 +311,23 @@ impl App {
                     self.receive_speed(&request, result);
                 }
             }
+        }
+        if self.export_wanted {
+            self.prepare_export();
+        }
+    }
+
+    /// The export of what is on screen, once it is up to date: while a COR-vs-speed sweep is
+    /// still out the export waits for it (and says so).
+    fn prepare_export(&mut self) {
+        if !self.speed_wanted.is_empty() {
+            self.info("export waits for the COR-vs-speed sweep…".into());
+            return;
+        }
+        self.export_wanted = false;
+        match export::request(self) {
+            Ok(r) => self.export = Some(r),
+            Err(e) => self.error(format!("export failed: {e}")),
         }
     }
 

@@ -1,9 +1,12 @@
 //! The event loop: wait for an event, drain whatever else is queued (zero-timeout poll), apply
 //! it all, recompute once, draw once — a held key never builds a backlog. COR-vs-speed sweeps
-//! run on a worker thread; while one is out, the loop also wakes to collect it.
+//! run on a worker thread; while one is out, the loop also wakes to collect it. The loop is
+//! also where an export (`e`) is written: the state asks for it, the loop does the file I/O and
+//! reports the outcome back as an action.
 
 use super::action::{self, Action};
 use super::app::App;
+use super::export;
 use super::worker::Worker;
 use ratatui::DefaultTerminal;
 use ratatui::crossterm::event;
@@ -47,6 +50,14 @@ pub fn run(terminal: &mut DefaultTerminal, app: &mut App) -> anyhow::Result<()> 
         }
         if dirty {
             app.refresh();
+        }
+        if let Some(request) = app.export_request() {
+            let done = match export::write(request, &export::dir_from_env()) {
+                Ok(files) => Action::Exported { files },
+                Err(msg) => Action::ExportFailed { msg },
+            };
+            app.update(done);
+            dirty = true;
         }
     }
     Ok(())

@@ -3,12 +3,14 @@
 //! Layout of the module, after ratatui's event-driven template:
 //! [`app`] holds the state and `update(action)`, the only place it changes (curves are computed
 //! there, in [`compute`], with the library); [`action`] maps keys to actions; [`event`] is the
-//! loop; [`ui`] lays the screen out and [`widgets`] draw it, reading the state only.
+//! loop; [`ui`] lays the screen out and [`widgets`] draw it, reading the state only; [`export`]
+//! turns the current view into SVG and CSV files (`e`): `update` only asks, the loop writes.
 
 pub mod action;
 pub mod app;
 pub mod compute;
 pub mod event;
+pub mod export;
 pub mod format;
 pub mod param;
 pub mod state;

@@ -40,6 +40,14 @@ impl Chart {
     }
 }
 
+/// The charts of a view, in screen order (left to right, top to bottom).
+pub fn charts(view: View) -> &'static [Chart] {
+    match view {
+        View::Impact => &[Chart::ForceTime, Chart::Hysteresis, Chart::CorZeta],
+        View::Sweeps => &[Chart::ForceZeta, Chart::CorSpeed],
+    }
+}
+
 /// The pieces of a usable screen.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Screen {

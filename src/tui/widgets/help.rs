@@ -8,7 +8,7 @@ use ratatui::text::{Line, Span};
 use ratatui::widgets::{Block, Clear, Paragraph, Widget};
 
 /// (keys, what they do)
-pub const KEYS: [(&str, &str); 21] = [
+pub const KEYS: [(&str, &str); 22] = [
     ("l / L", "λ up / down (±0.01, coarse ±0.1)"),
     ("z / Z", "ζ up / down (×1.1, coarse ×2)"),
     ("v / V", "v0 up / down (±0.1, coarse ±1 m/s)"),
@@ -23,6 +23,7 @@ pub const KEYS: [(&str, &str); 21] = [
     ("r", "reset to the preset"),
     ("p / P", "pin curves as a ghost / clear it"),
     ("u", "undo the last change"),
+    ("e", "export this view (SVG + CSV files)"),
     ("Tab / Shift+Tab", "switch view (impact, sweeps)"),
     ("?", "this help (Esc or ? closes)"),
     ("q  Esc  Ctrl-C", "quit"),

@@ -1,0 +1,554 @@
+//! `e` in the explorer: each chart of the current view as an SVG picture and its series as
+//! CSV, `bouncelab-<ball>-<chart>-<n>.svg` / `.csv`, in the current directory or in
+//! `$BOUNCELAB_EXPORT_DIR`.
+//!
+//! The figures are built with [`crate::figure`] from the curves the state already holds —
+//! nothing is re-solved. The split keeps `App::update` free of side effects: [`request`] (pure,
+//! called by `update`) turns the state into an [`ExportRequest`]; the event loop hands it to
+//! [`write`], the only part that touches the file system, and reports back with
+//! `Action::Exported` or `Action::ExportFailed`; [`message`] is what the header then says.
+//!
+//! Never overwriting: `<n>` is the first number for which none of the export's files exists,
+//! and every file is created with "create new", so a file that appears in between is not
+//! clobbered either (the export then moves on to the next `<n>`).
+
+use super::app::{App, Setting};
+use super::compute::{ZetaCurve, reference_curves};
+use super::param::Param;
+use super::ui::{self, Chart};
+use super::widgets::cor_zeta;
+use crate::analysis::sweep::ZetaPoint;
+use crate::figure::paper::{self, Ball};
+use crate::figure::{Figure, GREY, Kind, Marker, Series, Style, csv, short, svg};
+use crate::model::contact::ContactLaw;
+use std::fs::{self, OpenOptions};
+use std::io::{self, Write};
+use std::path::{Path, PathBuf};
+
+/// Where exports go when set (and not empty); the current directory otherwise. Created, with
+/// its parents, when missing.
+pub const DIR_ENV: &str = "BOUNCELAB_EXPORT_DIR";
+
+/// Palette index of this run's marker: orange, which no model curve of these figures uses.
+const THIS_RUN_COLOR: usize = 4;
+
+/// Numbers tried for `<n>` before giving up.
+const MAX_N: usize = 99_999;
+
+/// What an export writes: one figure per chart of the view.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ExportRequest {
+    /// The ball's name as it appears in file names (see [`file_stem_part`]).
+    pub ball: String,
+    /// (chart name in file names, its figure), in screen order.
+    pub charts: Vec<(&'static str, Figure)>,
+}
+
+impl ExportRequest {
+    /// The files of export number `n` in `dir`: per chart its `.svg`, then its `.csv`.
+    pub fn paths(&self, dir: &Path, n: usize) -> Vec<PathBuf> {
+        self.charts
+            .iter()
+            .flat_map(|(chart, _)| {
+                let stem = format!("bouncelab-{}-{chart}-{n}", self.ball);
+                ["svg", "csv"].map(|ext| dir.join(format!("{stem}.{ext}")))
+            })
+            .collect()
+    }
+}
+
+/// The chart's name in file names: the `bouncelab figure` name of the same figure.
+pub fn chart_name(chart: Chart) -> &'static str {
+    match chart {
+        Chart::ForceTime => "force-time",
+        Chart::Hysteresis => "force-displacement",
+        Chart::CorZeta => "cor-zeta",
+        Chart::ForceZeta => "force-zeta",
+        Chart::CorSpeed => "cor-velocity",
+    }
+}
+
+/// A ball's name made safe for a file name: ASCII letters, digits, `_` and `-` are kept,
+/// anything else (spaces, `/`, accents) becomes `-`.
+pub fn file_stem_part(name: &str) -> String {
+    let s: String = name
+        .chars()
+        .map(|c| {
+            if c.is_ascii_alphanumeric() || c == '_' || c == '-' {
+                c
+            } else {
+                '-'
+            }
+        })
+        .collect();
+    if s.is_empty() { "ball".into() } else { s }
+}
+
+/// The export of the current view, from the curves the state holds. An error when one of the
+/// view's charts has nothing to draw (its computation failed).
+pub fn request(app: &App) -> Result<ExportRequest, String> {
+    let charts = ui::charts(app.view())
+        .iter()
+        .map(|&chart| Ok((chart_name(chart), figure(app, chart)?)))
+        .collect::<Result<Vec<_>, String>>()?;
+    Ok(ExportRequest {
+        ball: file_stem_part(&app.preset().name),
+        charts,
+    })
+}
+
+/// Whether the current λ and ζ are the preset's (v0 is shown on its own).
+fn preset_lambda_zeta(app: &App) -> bool {
+    let base = app.preset().params().normalized();
+    let now = app.setting().params.normalized();
+    let same = |a: f64, b: f64| (a - b).abs() <= 1e-9 * a.abs().max(b.abs());
+    same(base.lambda, now.lambda) && same(base.zeta, now.zeta)
+}
+
+/// The parameter set's name in the figures: the preset's ("adopted") or "modified" once λ or ζ
+/// moved.
+const MODIFIED: &str = "modified";
+
+/// The current setting as a ball of the paper's charts.
+fn current_ball(app: &App) -> Ball {
+    let p = app.preset();
+    let source = if preset_lambda_zeta(app) {
+        p.parameters.name()
+    } else {
+        MODIFIED
+    };
+    Ball {
+        name: p.name.clone(),
+        source: source.into(),
+        params: app.setting().params,
+        law: app.setting().law,
+        measured: Some(p.measured.clone()),
+    }
+}
+
+/// The force–time and force–displacement subtitles name the parameter set but not λ and ζ:
+/// add them to "modified parameters".
+fn name_lambda_zeta(fig: &mut Figure, s: &Setting) {
+    let from = format!("{MODIFIED} parameters");
+    let to = format!("{from} ({})", lambda_zeta_text(s));
+    fig.subtitle = fig.subtitle.replacen(&from, &to, 1);
+}
+
+/// Add `series` after the model curves, before the measured values (which are drawn last,
+/// and listed last in the legend), so that a measured marker at the same place stays visible.
+fn insert_before_measured(fig: &mut Figure, series: Series) {
+    let i = fig
+        .series
+        .iter()
+        .position(|s| s.kind == Kind::Measured)
+        .unwrap_or(fig.series.len());
+    fig.series.insert(i, series);
+}
+
+/// Every ball of the explorer with what was measured: the markers of the ζ figures.
+fn preset_balls(app: &App) -> Vec<Ball> {
+    app.presets()
+        .iter()
+        .map(|p| Ball {
+            name: p.name.clone(),
+            source: p.parameters.name().into(),
+            params: p.params(),
+            law: p.law,
+            measured: Some(p.measured.clone()),
+        })
+        .collect()
+}
+
+/// A dimmed curve on screen: a grey dotted line in the picture.
+fn pinned(label: String, id: String, points: Vec<(f64, f64)>) -> Series {
+    Series::new(&label, &id, Kind::Model, Style::Dotted, GREY).with_points(points)
+}
+
+/// The ◆ of the current run, as on screen.
+fn add_this_run(fig: &mut Figure, label: String, at: (f64, f64)) {
+    let s = Series::new(
+        &label,
+        "this run",
+        Kind::Model,
+        Style::Markers(Marker::Diamond),
+        THIS_RUN_COLOR,
+    )
+    .with_points(vec![at]);
+    insert_before_measured(fig, s);
+}
+
+fn lambda_zeta_text(s: &Setting) -> String {
+    let n = s.params.normalized();
+    format!("λ = {}, ζ = {}", short(n.lambda, 3), short(n.zeta, 3))
+}
+
+/// One chart's figure.
+pub fn figure(app: &App, chart: Chart) -> Result<Figure, String> {
+    let missing = |what: &str| format!("no {what} to export (it could not be computed)");
+    let ghost = app.ghost();
+    match chart {
+        Chart::ForceTime | Chart::Hysteresis => {
+            let run = app.run().ok_or_else(|| missing("impact"))?;
+            let ball = current_ball(app);
+            let mut fig = if chart == Chart::ForceTime {
+                paper::force_time(&ball, run)
+            } else {
+                paper::force_displacement(&ball, run)
+            };
+            name_lambda_zeta(&mut fig, app.setting());
+            if let Some(g) = ghost
+                && let Some(r) = &g.run
+            {
+                let h = &r.history;
+                let label = format!(
+                    "pinned ({}, v0 = {} m/s)",
+                    lambda_zeta_text(&g.setting),
+                    short(g.setting.params.v0, 3)
+                );
+                let (id, xs) = if chart == Chart::ForceTime {
+                    ("pinned model", &h.t)
+                } else {
+                    ("pinned displacement", &h.displacement)
+                };
+                let pts = xs.iter().copied().zip(h.force.iter().copied()).collect();
+                insert_before_measured(&mut fig, pinned(label, id.into(), pts));
+            }
+            Ok(fig)
+        }
+        Chart::CorZeta | Chart::ForceZeta => {
+            let current = app.zeta_curve().ok_or_else(|| missing("COR-vs-ζ curve"))?;
+            Ok(zeta_figure(app, chart, current))
+        }
+        Chart::CorSpeed => {
+            let curve = app
+                .speed_curve()
+                .filter(|_| app.speed_requests().is_empty())
+                .ok_or_else(|| missing("COR-vs-speed sweep"))?;
+            let ball = current_ball(app);
+            // the screen marks where the linear law starts to flatten; the other laws
+            // flatten elsewhere
+            let onset = curve
+                .request
+                .v_flat
+                .filter(|_| app.setting().law == ContactLaw::Linear);
+            let mut fig = paper::cor_velocity(&ball, &curve.points, onset);
+            if let Some(g) = ghost
+                && let Some(c) = &g.speed
+            {
+                let label = format!(
+                    "pinned ({}, {} law)",
+                    lambda_zeta_text(&g.setting),
+                    g.setting.law
+                );
+                let pts = c.points.iter().map(|p| (p.v0, p.cor)).collect();
+                insert_before_measured(&mut fig, pinned(label, "pinned model".into(), pts));
+            }
+            if let Some(r) = app.run() {
+                let v0 = app.setting().params.v0;
+                let label = format!(
+                    "this run (v0 = {} m/s, e = {})",
+                    short(v0, 3),
+                    short(r.cor, 3)
+                );
+                add_this_run(&mut fig, label, (v0, r.cor));
+            }
+            Ok(fig)
+        }
+    }
+}
+
+/// Figs. 2 and 3 as on screen: the λ = 0, 0.4, 1 curves and the current λ over the decades
+/// shown, the pinned λ, this run and every ball's measured value.
+fn zeta_figure(app: &App, chart: Chart, current: &ZetaCurve) -> Figure {
+    let (lo, hi) = cor_zeta::decades(app);
+    let (z_lo, z_hi) = (10f64.powi(lo) * (1.0 - 1e-9), 10f64.powi(hi) * (1.0 + 1e-9));
+    let shown = |c: &ZetaCurve| -> Vec<ZetaPoint> {
+        c.points
+            .iter()
+            .filter(|p| (z_lo..=z_hi).contains(&p.zeta))
+            .cloned()
+            .collect()
+    };
+    let mut rows: Vec<ZetaPoint> = reference_curves().iter().flat_map(shown).collect();
+    // a current λ that is one of the references is already there
+    if !reference_curves()
+        .iter()
+        .any(|c| c.lambda == current.lambda)
+    {
+        rows.extend(shown(current));
+    }
+    let balls = preset_balls(app);
+    let cor = chart == Chart::CorZeta;
+    let mut fig = if cor {
+        paper::cor_zeta(&rows, &balls, ContactLaw::Linear)
+    } else {
+        paper::force_zeta(&rows, &balls, ContactLaw::Linear)
+    };
+    let value = |p: &ZetaPoint| if cor { p.cor } else { p.max_force_normalized };
+    if let Some(g) = app.ghost()
+        && let Some(c) = &g.zeta
+    {
+        let label = format!("pinned, λ = {}", short(c.lambda, 3));
+        let id = format!("pinned lambda={}", short(c.lambda, 6));
+        let pts = shown(c).iter().map(|p| (p.zeta, value(p))).collect();
+        insert_before_measured(&mut fig, pinned(label, id, pts));
+    }
+    if let Some(r) = app.run() {
+        let zeta = app.setting().get(Param::Zeta);
+        let (y, what) = if cor {
+            (r.cor, "e")
+        } else {
+            (r.max_force_normalized, "F̄m")
+        };
+        let label = format!(
+            "this run ({}, {what} = {})",
+            lambda_zeta_text(app.setting()),
+            short(y, 3)
+        );
+        add_this_run(&mut fig, label, (zeta, y));
+    }
+    fig
+}
+
+/// The export directory: `$BOUNCELAB_EXPORT_DIR` when set and not empty, else `.`.
+pub fn dir_from_env() -> PathBuf {
+    dir_from(std::env::var_os(DIR_ENV))
+}
+
+/// The export directory for a value of `$BOUNCELAB_EXPORT_DIR`.
+pub fn dir_from(value: Option<std::ffi::OsString>) -> PathBuf {
+    match value {
+        Some(d) if !d.is_empty() => PathBuf::from(d),
+        _ => PathBuf::from("."),
+    }
+}
+
+/// Whether anything (a file, a folder, a dangling link) has this name.
+fn taken(path: &Path) -> bool {
+    fs::symlink_metadata(path).is_ok()
+}
+
+/// Write the export into `dir` (created when missing) under the first `<n>` none of whose
+/// files exists; returns the files written. All or nothing: on an error the files this call
+/// created are removed again. Every picture is rendered before the first file is created.
+pub fn write(request: &ExportRequest, dir: &Path) -> Result<Vec<PathBuf>, String> {
+    let mut contents = Vec::new();
+    for (_, fig) in &request.charts {
+        contents.push(svg::render(fig).map_err(|e| e.to_string())?);
+        contents.push(csv::to_string(fig));
+    }
+    if !dir.as_os_str().is_empty() && !dir.is_dir() {
+        fs::create_dir_all(dir)
+            .map_err(|e| format!("cannot create {}: {}", dir.display(), io_text(&e)))?;
+    }
+    for n in 1..=MAX_N {
+        let paths = request.paths(dir, n);
+        if paths.iter().any(|p| taken(p)) {
+            continue;
+        }
+        match create_all(&paths, &contents) {
+            Ok(()) => return Ok(paths),
+            // another program took one of the names in between: try the next number
+            Err((_, e)) if e.kind() == io::ErrorKind::AlreadyExists => continue,
+            Err((path, e)) => {
+                return Err(format!("cannot write {}: {}", path.display(), io_text(&e)));
+            }
+        }
+    }
+    Err(format!(
+        "every number up to {MAX_N} is taken in {}",
+        dir.display()
+    ))
+}
+
+/// Create each path new and write its text; on the first error remove what was created.
+fn create_all(paths: &[PathBuf], contents: &[String]) -> Result<(), (PathBuf, io::Error)> {
+    let mut created: Vec<&PathBuf> = Vec::new();
+    for (path, text) in paths.iter().zip(contents) {
+        let result = OpenOptions::new()
+            .write(true)
+            .create_new(true)
+            .open(path)
+            .and_then(|mut f| {
+                created.push(path);
+                f.write_all(text.as_bytes())?;
+                f.flush()
+            });
+        if let Err(e) = result {
+            for p in created {
+                let _ = fs::remove_file(p);
+            }
+            return Err((path.clone(), e));
+        }
+    }
+    Ok(())
+}
+
+/// An I/O error without the "(os error N)" tail.
+fn io_text(e: &io::Error) -> String {
+    let s = e.to_string();
+    match s.find(" (os error") {
+        Some(i) => s[..i].to_string(),
+        None => s,
+    }
+}
+
+/// A folder for the header line: as given when short, else its last two parts after `…/`.
+pub fn short_dir(dir: &Path) -> String {
+    let full = dir.display().to_string();
+    if full.chars().count() <= 32 {
+        return full;
+    }
+    let parts: Vec<String> = dir
+        .components()
+        .rev()
+        .take(2)
+        .map(|c| c.as_os_str().to_string_lossy().into_owned())
+        .collect();
+    format!(
+        "…/{}",
+        parts.into_iter().rev().collect::<Vec<_>>().join("/")
+    )
+}
+
+/// What the header says after an export: the file names, shortened to a pattern when there
+/// are several charts, e.g. `exported bouncelab-superball-*-1.svg/.csv (3 charts)`, and the
+/// folder when it is not the current one.
+pub fn message(files: &[PathBuf]) -> String {
+    let name = |p: &PathBuf| {
+        p.file_name()
+            .map(|n| n.to_string_lossy().into_owned())
+            .unwrap_or_default()
+    };
+    let mut stems: Vec<String> = Vec::new();
+    let mut exts: Vec<String> = Vec::new();
+    for f in files {
+        let n = name(f);
+        let (stem, ext) = n.rsplit_once('.').unwrap_or((&n, ""));
+        if !stems.iter().any(|s| s == stem) {
+            stems.push(stem.to_string());
+        }
+        if !exts.iter().any(|e| e == ext) {
+            exts.push(ext.to_string());
+        }
+    }
+    let exts = exts
+        .iter()
+        .map(|e| format!(".{e}"))
+        .collect::<Vec<_>>()
+        .join("/");
+    let names = match stems.as_slice() {
+        [] => return "nothing exported".into(),
+        [one] => format!("{one}{exts}"),
+        many => {
+            let pattern = pattern(many);
+            format!("{pattern}{exts} ({} charts)", many.len())
+        }
+    };
+    let dir = files[0].parent().filter(|d| {
+        let s = d.as_os_str();
+        !s.is_empty() && s != "."
+    });
+    match dir {
+        Some(d) => format!("exported {names} in {}", short_dir(d)),
+        None => format!("exported {names}"),
+    }
+}
+
+/// `a-x-1`, `a-y-1` → `a-*-1`: the common start and end, cut at a `-`.
+fn pattern(stems: &[String]) -> String {
+    let first = &stems[0];
+    let mut head = first.len();
+    let mut tail = first.len();
+    for s in &stems[1..] {
+        head = head.min(common_prefix(first, s));
+        tail = tail.min(common_prefix(&rev(first), &rev(s)));
+    }
+    let head = first[..head].rfind('-').map_or(0, |i| i + 1);
+    let tail_start = first.len() - tail;
+    let tail_start = first[tail_start..]
+        .find('-')
+        .map_or(first.len(), |i| tail_start + i);
+    if head >= tail_start {
+        return first.clone();
+    }
+    format!("{}*{}", &first[..head], &first[tail_start..])
+}
+
+fn rev(s: &str) -> String {
+    s.chars().rev().collect()
+}
+
+/// Length in bytes of the common start of `a` and `b`, on a character boundary.
+fn common_prefix(a: &str, b: &str) -> usize {
+    a.chars()
+        .zip(b.chars())
+        .take_while(|(x, y)| x == y)
+        .map(|(x, _)| x.len_utf8())
+        .sum()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn file_names_are_safe() {
+        assert_eq!(file_stem_part("superball"), "superball");
+        assert_eq!(file_stem_part("my golf/ball"), "my-golf-ball");
+        assert_eq!(file_stem_part("bälle"), "b-lle");
+        assert_eq!(file_stem_part(""), "ball");
+    }
+
+    #[test]
+    fn message_shortens_to_a_pattern() {
+        let f = |names: &[&str]| names.iter().map(PathBuf::from).collect::<Vec<_>>();
+        let files = f(&[
+            "./bouncelab-superball-force-time-1.svg",
+            "./bouncelab-superball-force-time-1.csv",
+            "./bouncelab-superball-force-displacement-1.svg",
+            "./bouncelab-superball-force-displacement-1.csv",
+            "./bouncelab-superball-cor-zeta-1.svg",
+            "./bouncelab-superball-cor-zeta-1.csv",
+        ]);
+        assert_eq!(
+            message(&files),
+            "exported bouncelab-superball-*-1.svg/.csv (3 charts)"
+        );
+        let files = f(&["out/bouncelab-golf-cor-zeta-12.svg"]);
+        assert_eq!(
+            message(&files),
+            "exported bouncelab-golf-cor-zeta-12.svg in out"
+        );
+        let files = f(&[
+            "/a/very/long/path/to/some/exports/folder/bouncelab-golf-force-zeta-2.svg",
+            "/a/very/long/path/to/some/exports/folder/bouncelab-golf-cor-velocity-2.svg",
+        ]);
+        assert_eq!(
+            message(&files),
+            "exported bouncelab-golf-*-2.svg (2 charts) in …/exports/folder"
+        );
+    }
+
+    #[test]
+    fn a_name_taken_in_between_is_not_clobbered_and_the_attempt_is_undone() {
+        let dir = tempfile::tempdir().unwrap();
+        let (a, b) = (dir.path().join("a.svg"), dir.path().join("b.csv"));
+        fs::write(&b, "someone else's").unwrap();
+        let err = create_all(&[a.clone(), b.clone()], &["1".into(), "2".into()]).unwrap_err();
+        assert_eq!(err.0, b);
+        assert_eq!(err.1.kind(), io::ErrorKind::AlreadyExists);
+        assert!(!a.exists(), "what this attempt created is removed");
+        assert_eq!(fs::read_to_string(&b).unwrap(), "someone else's");
+    }
+
+    #[test]
+    fn pattern_cuts_at_dashes() {
+        let s = |v: &[&str]| v.iter().map(|x| x.to_string()).collect::<Vec<_>>();
+        assert_eq!(
+            pattern(&s(&["b-g-force-zeta-2", "b-g-cor-zeta-2"])),
+            "b-g-*-zeta-2"
+        );
+        assert_eq!(pattern(&s(&["b-x-1", "b-y-1"])), "b-*-1");
+    }
+}
