@@ -3,7 +3,7 @@
 
 use crate::model::contact::ContactLaw;
 use crate::model::materials::{self, Layer};
-use crate::model::params::ImpactParams;
+use crate::model::params::{ImpactParams, display_number};
 use serde::{Deserialize, Serialize};
 use std::fmt;
 
@@ -215,7 +215,10 @@ impl Preset {
                 Err((
                     table,
                     key,
-                    format!("must be a positive finite number, got {v}"),
+                    format!(
+                        "must be a positive finite number, got {}",
+                        display_number(v)
+                    ),
                 ))
             }
         }
@@ -234,7 +237,11 @@ impl Preset {
         if let Some(e) = m.cor
             && !(e.is_finite() && (0.0..=1.0).contains(&e))
         {
-            return Err(("measured", "cor", format!("must lie in [0, 1], got {e}")));
+            return Err((
+                "measured",
+                "cor",
+                format!("must lie in [0, 1], got {}", display_number(e)),
+            ));
         }
         opt("measured", "max_force", m.max_force)?;
         opt("measured", "contact_time", m.contact_time)?;
@@ -246,7 +253,11 @@ impl Preset {
             if let Some(nu) = nu
                 && !(nu.is_finite() && (0.0..=0.5).contains(&nu))
             {
-                return Err(("material", key, format!("must lie in [0, 0.5], got {nu}")));
+                return Err((
+                    "material",
+                    key,
+                    format!("must lie in [0, 0.5], got {}", display_number(nu)),
+                ));
             }
         }
         opt("material", "modulus", mat.modulus)?;
@@ -280,7 +291,10 @@ impl Preset {
             return Err((
                 "adopted",
                 "k_r",
-                format!("must be a non-negative finite number, got {}", a.k_r),
+                format!(
+                    "must be a non-negative finite number, got {}",
+                    display_number(a.k_r)
+                ),
             ));
         }
         if self.parameters == ParamSource::Adopted {
@@ -410,6 +424,9 @@ mod tests {
             e.to_string(),
             "x.toml:10:1: measured.radius: must be a positive finite number, got -0.02155"
         );
+        let huge = EMBEDDED[0].1.replace("mass = 0.0374", "mass = 1e300");
+        let e = Preset::parse(&huge, "x.toml").unwrap_err();
+        assert!(e.to_string().ends_with("got 1e300"), "{e}");
         let unknown = EMBEDDED[0].1.replace("[adopted]", "[adopted]\nspring = 3");
         let e = Preset::parse(&unknown, "x.toml").unwrap_err();
         assert!(e.to_string().contains("spring"), "{e}");

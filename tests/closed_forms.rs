@@ -156,3 +156,46 @@ fn hertz_alone() {
         res.contact_time.unwrap()
     );
 }
+
+/// e never leaves [0, 1], even where rounding (λ, ζ huge: springs in series, e → 1) or the
+/// stiff integrator's tolerance would put the raw −α'(t_f)/v0 a hair above 1.
+#[test]
+fn cor_stays_in_the_unit_interval() {
+    for (lambda, zeta) in [(1e4, 1e4), (1e6, 1e6), (1e4, 0.5), (0.0, 0.0)] {
+        for law in [
+            ContactLaw::Linear,
+            ContactLaw::Hertz,
+            ContactLaw::ElasticPlastic,
+        ] {
+            let p = ImpactParams::from_normalized(lambda, zeta, 1.0);
+            let r = simulate(&p, law, &SolveOptions::default()).unwrap();
+            assert!(
+                (0.0..=1.0).contains(&r.cor),
+                "λ={lambda} ζ={zeta} {law}: e = {}",
+                r.cor
+            );
+        }
+    }
+}
+
+/// A Hertz contact is soft at low speed (its stiffness grows with indentation): at v0 = 1e-12
+/// m/s the contact lasts thousands of linear-spring times, and the solver must follow it to
+/// the rebound rather than stop at a horizon scaled for the linear spring.
+#[test]
+fn slow_hertz_impact_still_rebounds() {
+    let p = bouncelab::preset::Preset::embedded()[0].params();
+    for law in [ContactLaw::Hertz, ContactLaw::ElasticPlastic] {
+        let r = simulate(
+            &ImpactParams { v0: 1e-12, ..p },
+            law,
+            &SolveOptions::default(),
+        )
+        .unwrap();
+        assert!(
+            r.rebound && r.cor > 0.5,
+            "{law}: e = {} rebound = {}",
+            r.cor,
+            r.rebound
+        );
+    }
+}

@@ -219,7 +219,11 @@ fn eval_anchored(anchors: &Anchors, tau: f64) -> (Vector3<f64>, Vector3<f64>) {
 /// The first event among `watches` in a phase, or the τ at which none can come any more.
 /// Returns the local τ, the event's index, and the anchors laid down on the way (all of them
 /// when `keep` — for sampling and the energy audit — else only the last).
-fn search(first: Propagator, watches: &[Watch], keep: bool) -> (f64, Option<usize>, Anchors) {
+fn search(
+    first: Propagator,
+    watches: &[Watch],
+    keep: bool,
+) -> (f64, Option<usize>, (Anchors, (f64, Propagator))) {
     debug_assert!(watches.len() <= 2, "a phase watches at most two events");
     let roots = *first.roots();
     let a = *first.matrix();
@@ -237,9 +241,12 @@ fn search(first: Propagator, watches: &[Watch], keep: bool) -> (f64, Option<usiz
     // the anchor in use; earlier ones are kept only when asked (no allocation otherwise)
     let mut current = (0.0, first);
     let mut anchors: Anchors = Vec::new();
-    let finish = |current, anchors: &mut Anchors| {
-        anchors.push(current);
-        std::mem::take(anchors)
+    // the anchor in use joins the kept ones only when they are kept (no allocation otherwise)
+    let finish = |current: (f64, Propagator), anchors: &mut Anchors| {
+        if keep {
+            anchors.push(current.clone());
+        }
+        (std::mem::take(anchors), current)
     };
     for _ in 0..MAX_STEPS {
         let tb = ta + modes.step(ta);
@@ -332,8 +339,8 @@ pub(crate) fn solve(n: &Normalized, contact: &Contact, opts: &SolveOptions) -> O
             // itself so that g(0) is exactly 0 and the start is not mistaken for a crossing
             Phase::Unloading(_) => &[Watch::Falls(0.0), Watch::Rises(l(&w0))],
         };
-        let (len, hit, anchors) = search(prop, watches, keep);
-        let (w, _) = eval_anchored(&anchors, len);
+        let (len, hit, (anchors, (t0, last))) = search(prop, watches, keep);
+        let (w, _) = last.eval(len - t0);
         let z_end = l(&w) + s;
         x = w + Vector3::new(s, 0.0, 0.0);
         out.contact_work += match phase {

@@ -231,8 +231,11 @@ fn to_si(
     let w0 = p.omega0();
     let (t, z, f) = (1.0 / w0, p.v0 / w0, p.mass * p.v0 * w0);
     let energy_unit = p.mass * p.v0 * p.v0;
+    // e ∈ [0, 1] physically (the dashpot only dissipates); rounding or the stiff integrator's
+    // tolerance can put the computed value a hair outside. Projecting onto the admissible
+    // interval can only move it closer to the true value.
     let cor = if o.rebound {
-        (-o.velocity_end).max(0.0)
+        (-o.velocity_end).clamp(0.0, 1.0)
     } else {
         0.0
     };
@@ -243,7 +246,13 @@ fn to_si(
         contact: o.contact_work * energy_unit,
         spring: 0.5 * n.lambda * o.y_end * o.y_end * energy_unit,
     });
-    let mut history = History::default();
+    let n_samples = o.samples.len();
+    let mut history = History {
+        t: Vec::with_capacity(n_samples),
+        force: Vec::with_capacity(n_samples),
+        indentation: Vec::with_capacity(n_samples),
+        displacement: Vec::with_capacity(n_samples),
+    };
     for s in &o.samples {
         history.t.push(s[0] * t);
         history.force.push(s[1] * f);
@@ -263,10 +272,11 @@ fn to_si(
         max_force_normalized: o.f_max,
         contact_time_normalized: o.rebound.then_some(o.tau_end),
         normalized: n,
+        // by value: the same layout, so the allocation is reused in place
         events: o
             .events
-            .iter()
-            .map(|&(tau, kind, zb)| PhaseEvent {
+            .into_iter()
+            .map(|(tau, kind, zb)| PhaseEvent {
                 t: tau * t,
                 kind,
                 z: zb * z,

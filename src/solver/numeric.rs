@@ -278,15 +278,18 @@ impl Solout<f64, X> for EndState {
     }
 }
 
-/// How long to follow a ball that may never leave: a hundred times the slowest of the contact
-/// period, the dashpot creep time 2ζ and the recoil relaxation time 1/(2ζλ).
+/// How long to follow a ball that may never leave: a hundred times the sum of the contact
+/// times (linear spring π; Hertz alone 2.94 z̄_m with z̄_m = (5/(4κ))^{2/5}, long when the
+/// contact is soft against the speed), the dashpot creep time 2ζ and the recoil relaxation
+/// time 1/(2ζλ).
 fn horizon(n: &Normalized) -> f64 {
     let relax = if n.lambda > 0.0 && n.zeta > 0.0 {
         1.0 / (2.0 * n.zeta * n.lambda)
     } else {
         0.0
     };
-    (100.0 * (std::f64::consts::PI + 2.0 * n.zeta + relax)).min(1e7)
+    let hertz = 2.95 * (1.25 / n.kappa).powf(0.4);
+    (100.0 * (std::f64::consts::PI + hertz + 2.0 * n.zeta + relax)).min(1e9)
 }
 
 pub(crate) fn solve(n: &Normalized, contact: &Contact, opts: &SolveOptions) -> Outcome {
