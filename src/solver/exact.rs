@@ -9,7 +9,7 @@
 //! (`Propagator`); only the events need root finding: z̄' = 0 (unload), z̄ = z̄_f (F = 0,
 //! separation), z̄ = z̄_m (reload).
 
-use super::propagator::{Propagator, Roots};
+use super::propagator::{Propagator, Roots, cubic_roots};
 use super::roots::{halley_bracketed_from, newton_bracketed_from};
 use super::{EventKind, Outcome, SolveOptions};
 use crate::model::contact::{Contact, Unloading};
@@ -67,6 +67,7 @@ impl Watch {
 }
 
 /// The time scales of a phase's modes, worked out once per phase.
+#[derive(Clone, Copy)]
 struct Modes {
     /// (|s|, Re s, part of an oscillating pair) for each mode that enters z̄: modes with s = 0
     /// (λ = 0) carry w1 = w3... in the (z̄, ᾱ', ȳ) state they have no z̄ component at all.
@@ -221,13 +222,13 @@ fn eval_anchored(anchors: &Anchors, tau: f64) -> (Vector3<f64>, Vector3<f64>) {
 /// when `keep` — for sampling and the energy audit — else only the last).
 fn search(
     first: Propagator,
+    modes: &Modes,
     watches: &[Watch],
     keep: bool,
 ) -> (f64, Option<usize>, (Anchors, (f64, Propagator))) {
     debug_assert!(watches.len() <= 2, "a phase watches at most two events");
     let roots = *first.roots();
     let a = *first.matrix();
-    let modes = Modes::new(&roots);
     let values = |j: &Jet, t: f64| {
         let mut v = [(t, 0.0, 0.0); 2];
         for (slot, w) in v.iter_mut().zip(watches) {
@@ -324,14 +325,25 @@ pub(crate) fn solve(n: &Normalized, contact: &Contact, opts: &SolveOptions) -> O
     // sampling and the energy audit revisit every phase; a summary needs only where each ended
     let keep = opts.samples > 0 || opts.energy;
     let mut segments: Vec<Segment> = Vec::new();
+    let mut cached: Option<(f64, Roots, Modes)> = None;
     for _ in 0..MAX_PHASES {
         let (k, s) = match phase {
             Phase::Loading => (1.0, 0.0),
             Phase::Unloading(u) => (u.f_m / (u.z_m - u.z_f), u.z_f),
         };
         let (a, poly) = system(lambda, zeta, k);
+        // Without flattening the unloading line is the loading one (k = z̄_m/z̄_m = 1 exactly):
+        // same matrix, same roots and time scales as the phase before.
+        let (roots, modes) = match cached {
+            Some((ck, r, m)) if ck == k => (r, m),
+            _ => {
+                let r = cubic_roots(poly);
+                (r, Modes::new(&r))
+            }
+        };
+        cached = Some((k, roots, modes));
         let w0 = x - Vector3::new(s, 0.0, 0.0);
-        let prop = Propagator::new(a, poly, w0);
+        let prop = Propagator::with_roots(a, roots, w0);
         let z_start = l(&w0) + s;
         let watches: &[Watch] = match phase {
             Phase::Loading => &[Watch::RateFalls],
@@ -339,7 +351,7 @@ pub(crate) fn solve(n: &Normalized, contact: &Contact, opts: &SolveOptions) -> O
             // itself so that g(0) is exactly 0 and the start is not mistaken for a crossing
             Phase::Unloading(_) => &[Watch::Falls(0.0), Watch::Rises(l(&w0))],
         };
-        let (len, hit, (anchors, (t0, last))) = search(prop, watches, keep);
+        let (len, hit, (anchors, (t0, last))) = search(prop, &modes, watches, keep);
         let (w, _) = last.eval(len - t0);
         let z_end = l(&w) + s;
         x = w + Vector3::new(s, 0.0, 0.0);
