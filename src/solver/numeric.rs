@@ -207,26 +207,19 @@ fn integrate<'a>(
     };
     // The crate reports running out of steps as an error; the watcher then holds what was
     // reached, and the caller treats an event-less phase as the horizon.
-    let _ = solve_with(imp, t0, x0, t_stop, rtol, &mut w);
+    solve_with(imp, t0, x0, t_stop, rtol, &mut w);
     if let Some((t, t_prev, x_prev, _)) = w.hit {
         // The event's state is integrated to the event time, not read off the dense output:
         // Radau5's continuous output is of lower order than its steps.
         let mut end = EndState(x_prev);
-        let _ = solve_with(imp, t_prev, x_prev, t, rtol, &mut end);
+        solve_with(imp, t_prev, x_prev, t, rtol, &mut end);
         w.last = (t, end.0);
     }
     w
 }
 
 /// DOPRI5, or Radau5 when the dashpot makes the system stiff.
-fn solve_with<O: Solout<f64, X>>(
-    imp: &Impact,
-    t0: f64,
-    x0: X,
-    tf: f64,
-    rtol: f64,
-    out: &mut O,
-) -> bool {
+fn solve_with<O: Solout<f64, X>>(imp: &Impact, t0: f64, x0: X, tf: f64, rtol: f64, out: &mut O) {
     let atol = rtol * ATOL_FACTOR;
     if 2.0 * imp.zeta * (1.0 + imp.lambda) > STIFF {
         // Radau5 (as Hairer's original) replaces a tolerance r by 0.1 r^(2/3) before use; hand
@@ -249,12 +242,16 @@ fn solve_with<O: Solout<f64, X>>(
     }
 }
 
-fn run<S, O>(m: &mut S, imp: &Impact, t0: f64, x0: X, tf: f64, out: &mut O) -> bool
+/// Integrate from t0 to tf into `out`. The crate's errors (running out of steps) carry nothing
+/// `out` does not already hold, so they are not passed on.
+fn run<S, O>(m: &mut S, imp: &Impact, t0: f64, x0: X, tf: f64, out: &mut O)
 where
     S: OrdinaryNumericalMethod<f64, X> + Interpolation<f64, X>,
     O: Solout<f64, X>,
 {
-    t0 < tf && solve_ode(m, imp, t0, tf, &x0, out).is_ok()
+    if t0 < tf {
+        let _ = solve_ode(m, imp, t0, tf, &x0, out);
+    }
 }
 
 /// A solout that keeps only the final state.
