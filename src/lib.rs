@@ -16,4 +16,4 @@ pub mod tui;
 
 pub use model::contact::ContactLaw;
 pub use model::params::{ImpactParams, Normalized, ParamError};
-pub use solver::{ImpactResponse, Method, SolveOptions, simulate, simulate_normalized};
+pub use solver::{ImpactResponse, Method, SolveError, SolveOptions, simulate, simulate_normalized};

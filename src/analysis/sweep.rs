@@ -2,7 +2,8 @@
 //! and COR against impact speed for one ball (Fig. 4).
 
 use crate::model::contact::ContactLaw;
-use crate::model::params::{ImpactParams, ParamError};
+use crate::model::params::ImpactParams;
+use crate::solver::SolveError;
 use crate::solver::{SolveOptions, simulate};
 use rayon::prelude::*;
 use serde::Serialize;
@@ -51,7 +52,7 @@ pub fn cor_vs_zeta(
     lambdas: &[f64],
     zetas: &[f64],
     law: ContactLaw,
-) -> Result<Vec<ZetaPoint>, ParamError> {
+) -> Result<Vec<ZetaPoint>, SolveError> {
     let grid: Vec<(f64, f64)> = lambdas
         .iter()
         .flat_map(|&l| zetas.iter().map(move |&z| (l, z)))
@@ -89,7 +90,7 @@ pub fn cor_vs_velocity(
     params: &ImpactParams,
     law: ContactLaw,
     speeds: &[f64],
-) -> Result<Vec<VelocityPoint>, ParamError> {
+) -> Result<Vec<VelocityPoint>, SolveError> {
     speeds
         .par_iter()
         .map(|&v0| {

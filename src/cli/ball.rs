@@ -5,6 +5,7 @@ use crate::catalog::{self, Catalog, Entry, Origin};
 use crate::model::contact::ContactLaw;
 use crate::model::params::{ImpactParams, ParamError, validate_lambda_zeta};
 use crate::preset::{Measured, ParamSource};
+use crate::solver::SolveError;
 use clap::{Args, ValueEnum};
 use std::path::{Path, PathBuf};
 
@@ -210,6 +211,15 @@ pub fn normalized(
 /// "invalid zeta: NaN (not a number)", with large and small values in exponent form.
 pub fn param_message(e: &ParamError) -> String {
     e.to_string()
+}
+
+/// A solver error for the user: bad parameters are bad input (exit 2); an impact the solver
+/// could not bring to an end within its budgets is not the user's fault (exit 1).
+pub fn solve_error(e: SolveError) -> anyhow::Error {
+    match e {
+        SolveError::Param(p) => anyhow::anyhow!(param_message(&p)),
+        e @ SolveError::Unresolved { .. } => super::Runtime(anyhow::anyhow!(e.to_string())).into(),
+    }
 }
 
 /// A finite, positive, not absurd number, or an error naming `field`.

@@ -201,8 +201,8 @@ pub fn zeta_figures(
     for &l in lambdas {
         validate_lambda_zeta(l, 0.0).map_err(|e| anyhow::anyhow!(param_message(&e)))?;
     }
-    let rows = cor_vs_zeta(lambdas, &log_space(0.01, 100.0, points), law)
-        .map_err(|e| anyhow::anyhow!(param_message(&e)))?;
+    let rows =
+        cor_vs_zeta(lambdas, &log_space(0.01, 100.0, points), law).map_err(ball::solve_error)?;
     Ok((
         paper::cor_zeta(&rows, balls, law),
         paper::force_zeta(&rows, balls, law),
@@ -217,7 +217,7 @@ pub fn velocity_figure(
     to: Option<f64>,
     points: usize,
 ) -> anyhow::Result<Figure> {
-    let pm = |e| anyhow::anyhow!(param_message(&e));
+    let pm = ball::solve_error;
     let v0 = b.params.v0;
     let onset = paper::speed_for_indentation(&b.params, b.law, 1.0).map_err(pm)?;
     let far = paper::speed_for_indentation(&b.params, b.law, SPEED_RANGE_ZP).map_err(pm)?;
@@ -239,7 +239,7 @@ pub fn history_figures(b: &paper::Ball, samples: usize) -> anyhow::Result<(Figur
         b.law,
         &SolveOptions::default().with_samples(samples),
     )
-    .map_err(|e| anyhow::anyhow!(param_message(&e)))?;
+    .map_err(ball::solve_error)?;
     if !r.rebound {
         anyhow::bail!(
             "{} does not rebound at v0 = {} m/s: there is no contact to draw",

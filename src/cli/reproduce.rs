@@ -101,7 +101,7 @@ fn plan(presets: &[Preset]) -> anyhow::Result<Vec<Planned>> {
             disp,
         ));
         let v = paper::speed_for_indentation(&b.params, b.law, FLATTENING_ZP)
-            .map_err(|e| anyhow::anyhow!(super::ball::param_message(&e)))?
+            .map_err(super::ball::solve_error)?
             .unwrap_or(3.0 * b.params.v0);
         let fast = paper::Ball {
             params: crate::ImpactParams { v0: v, ..b.params },
@@ -163,10 +163,7 @@ pub fn run(a: &ReproduceArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     }
     let mut comparisons = Vec::new();
     for p in &presets {
-        comparisons.push(
-            report::compare(p, p.law)
-                .map_err(|e| anyhow::anyhow!(super::ball::param_message(&e)))?,
-        );
+        comparisons.push(report::compare(p, p.law).map_err(super::ball::solve_error)?);
     }
     texts.push((REPORT.into(), report::markdown(&comparisons, &refs)));
     debug_assert_eq!(

@@ -1,7 +1,7 @@
 //! `bouncelab sweep zeta|velocity`: the paper's Figs. 2–3 (COR, F̄_m, τ_f against ζ for
 //! several λ) and Fig. 4 (COR against impact speed for one ball), as CSV or JSON.
 
-use super::ball::{BallArgs, LawArg, check_positive, param_message};
+use super::ball::{BallArgs, LawArg, check_positive, param_message, solve_error};
 use super::output::{self, csv_row, num, opt_num};
 use crate::analysis::sweep::{cor_vs_velocity, cor_vs_zeta, lin_space, log_space};
 use crate::model::contact::ContactLaw;
@@ -126,8 +126,8 @@ fn zeta(a: &ZetaArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     check_positive("to", a.to)?;
     let law = ContactLaw::from(a.law);
     check_points(a.points, a.lambda.len(), law)?;
-    let rows = cor_vs_zeta(&a.lambda, &log_space(a.from, a.to, a.points), law)
-        .map_err(|e| anyhow::anyhow!(param_message(&e)))?;
+    let rows =
+        cor_vs_zeta(&a.lambda, &log_space(a.from, a.to, a.points), law).map_err(solve_error)?;
     match a.format {
         SweepFormat::Json => output::json(
             out,
@@ -185,8 +185,8 @@ fn velocity(a: &VelocityArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     check_positive("from", from)?;
     check_positive("to", to)?;
     check_points(a.points, 1, b.law)?;
-    let rows = cor_vs_velocity(&b.params, b.law, &lin_space(from, to, a.points))
-        .map_err(|e| anyhow::anyhow!(param_message(&e)))?;
+    let rows =
+        cor_vs_velocity(&b.params, b.law, &lin_space(from, to, a.points)).map_err(solve_error)?;
     match a.format {
         SweepFormat::Json => {
             let n = b.params.normalized();

@@ -11,8 +11,9 @@
 use super::{Axis, BLACK, Figure, GREY, Kind, Marker, Series, Style, short};
 use crate::analysis::sweep::{VelocityPoint, ZetaPoint};
 use crate::model::contact::ContactLaw;
-use crate::model::params::{ImpactParams, ParamError};
+use crate::model::params::ImpactParams;
 use crate::preset::Measured;
+use crate::solver::SolveError;
 use crate::solver::{SolveOptions, simulate};
 
 pub use super::history::{force_displacement, force_time};
@@ -179,12 +180,12 @@ pub fn speed_for_indentation(
     params: &ImpactParams,
     law: ContactLaw,
     ratio: f64,
-) -> Result<Option<f64>, ParamError> {
+) -> Result<Option<f64>, SolveError> {
     if !params.z_p.is_finite() {
         return Ok(None);
     }
     let target = ratio * params.z_p;
-    let z_m = |v0: f64| -> Result<f64, ParamError> {
+    let z_m = |v0: f64| -> Result<f64, SolveError> {
         let r = simulate(
             &ImpactParams { v0, ..*params },
             law,

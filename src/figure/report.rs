@@ -8,8 +8,9 @@
 use super::short;
 use crate::analysis::fit::{Fit, FitError, fit_k_r};
 use crate::model::contact::ContactLaw;
-use crate::model::params::{ImpactParams, ParamError};
+use crate::model::params::ImpactParams;
 use crate::preset::{Derived, Measured, ParamSource, Preset};
+use crate::solver::SolveError;
 use crate::solver::{ImpactResponse, SolveOptions, simulate};
 use std::fmt::Write;
 
@@ -34,14 +35,14 @@ pub struct Comparison {
 }
 
 /// Run the model on both parameter sets of `preset` at its measured speed.
-pub fn compare(preset: &Preset, law: ContactLaw) -> Result<Comparison, ParamError> {
+pub fn compare(preset: &Preset, law: ContactLaw) -> Result<Comparison, SolveError> {
     let adopted = preset.params_from(ParamSource::Adopted);
     let materials = preset.params_from(ParamSource::Materials);
     let run = |p: &ImpactParams| simulate(p, law, &SolveOptions::default());
-    let fit = |p: &ImpactParams| -> Result<Option<Fit>, ParamError> {
+    let fit = |p: &ImpactParams| -> Result<Option<Fit>, SolveError> {
         match preset.measured.cor.map(|e| fit_k_r(p, law, e)) {
             Some(Ok(f)) => Ok(Some(f)),
-            Some(Err(FitError::Params(e))) => Err(e),
+            Some(Err(FitError::Params(e))) => Err(e.into()),
             _ => Ok(None),
         }
     };

@@ -217,15 +217,25 @@ fn eval_anchored(anchors: &Anchors, tau: f64) -> (Vector3<f64>, Vector3<f64>) {
     p.eval(tau - t0)
 }
 
-/// The first event among `watches` in a phase, or the τ at which none can come any more.
-/// Returns the local τ, the event's index, and the anchors laid down on the way (all of them
-/// when `keep` — for sampling and the energy audit — else only the last).
-fn search(
-    first: Propagator,
-    modes: &Modes,
-    watches: &[Watch],
-    keep: bool,
-) -> (f64, Option<usize>, (Anchors, (f64, Propagator))) {
+/// Where a phase's search ended.
+struct Found {
+    /// Local τ of the event, or of the point after which none can come.
+    len: f64,
+    /// The index of the watch that fired.
+    hit: Option<usize>,
+    /// Steps taken.
+    steps: usize,
+    /// The step budget ran out before an event or the settle time: the phase is unresolved.
+    exhausted: bool,
+    /// The anchors laid down on the way (all of them when kept, else none) and the last one.
+    anchors: Anchors,
+    last: (f64, Propagator),
+}
+
+/// The first event among `watches` in a phase, or the τ at which none can come any more, with
+/// the anchors laid down on the way (all of them when `keep` — for sampling and the energy
+/// audit — else only the last).
+fn search(first: Propagator, modes: &Modes, watches: &[Watch], keep: bool) -> Found {
     debug_assert!(watches.len() <= 2, "a phase watches at most two events");
     let roots = *first.roots();
     let a = *first.matrix();
@@ -243,13 +253,25 @@ fn search(
     let mut current = (0.0, first);
     let mut anchors: Anchors = Vec::new();
     // the anchor in use joins the kept ones only when they are kept (no allocation otherwise)
-    let finish = |current: (f64, Propagator), anchors: &mut Anchors| {
+    let finish = |len: f64,
+                  hit: Option<usize>,
+                  steps: usize,
+                  exhausted: bool,
+                  current: (f64, Propagator),
+                  anchors: &mut Anchors| {
         if keep {
             anchors.push(current.clone());
         }
-        (std::mem::take(anchors), current)
+        Found {
+            len,
+            hit,
+            steps,
+            exhausted,
+            anchors: std::mem::take(anchors),
+            last: current,
+        }
     };
-    for _ in 0..MAX_STEPS {
+    for step in 1..=MAX_STEPS {
         let tb = ta + modes.step(ta);
         let (t0, p) = &current;
         let mut f = |t: f64| jet(p, &a, t - t0);
@@ -264,7 +286,7 @@ fn search(
             }
         }
         if let Some((t, i)) = best {
-            return (t, Some(i), finish(current, &mut anchors));
+            return finish(t, Some(i), step, false, current, &mut anchors);
         }
         let next = (tb, Propagator::with_roots(a, roots, jb.0[0]));
         let previous = std::mem::replace(&mut current, next);
@@ -272,12 +294,12 @@ fn search(
             anchors.push(previous);
         }
         if modes.settle.is_some_and(|s| tb > s) {
-            return (tb, None, finish(current, &mut anchors));
+            return finish(tb, None, step, false, current, &mut anchors);
         }
         ta = tb;
         va = vb;
     }
-    (ta, None, finish(current, &mut anchors))
+    finish(ta, None, MAX_STEPS, true, current, &mut anchors)
 }
 
 /// 8-point Gauss–Legendre on [a, b].
@@ -326,7 +348,13 @@ pub(crate) fn solve(n: &Normalized, contact: &Contact, opts: &SolveOptions) -> O
     let keep = opts.samples > 0 || opts.energy;
     let mut segments: Vec<Segment> = Vec::new();
     let mut cached: Option<(f64, Roots, Modes)> = None;
-    for _ in 0..MAX_PHASES {
+    let mut phases_left = MAX_PHASES;
+    loop {
+        if phases_left == 0 {
+            out.unresolved = Some("more than 64 load–unload phases");
+            break;
+        }
+        phases_left -= 1;
         let (k, s) = match phase {
             Phase::Loading => (1.0, 0.0),
             Phase::Unloading(u) => (u.f_m / (u.z_m - u.z_f), u.z_f),
@@ -351,7 +379,18 @@ pub(crate) fn solve(n: &Normalized, contact: &Contact, opts: &SolveOptions) -> O
             // itself so that g(0) is exactly 0 and the start is not mistaken for a crossing
             Phase::Unloading(_) => &[Watch::Falls(0.0), Watch::Rises(l(&w0))],
         };
-        let (len, hit, (anchors, (t0, last))) = search(prop, &modes, watches, keep);
+        let Found {
+            len,
+            hit,
+            steps,
+            exhausted,
+            anchors,
+            last: (t0, last),
+        } = search(prop, &modes, watches, keep);
+        out.steps += steps;
+        if exhausted {
+            out.unresolved = Some("the step budget of a phase ran out before its end");
+        }
         let (w, _) = last.eval(len - t0);
         let z_end = l(&w) + s;
         x = w + Vector3::new(s, 0.0, 0.0);

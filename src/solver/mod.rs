@@ -1,13 +1,14 @@
 //! Solving one impact: the exact linear solver and the adaptive numerical one, and the result
 //! they both return (MODEL.md §2, Eq. 6).
 
+pub mod audit;
 pub mod exact;
 pub mod numeric;
 pub mod propagator;
 pub mod roots;
 
 use crate::model::contact::{Contact, ContactLaw};
-use crate::model::params::{ImpactParams, Normalized, ParamError};
+use crate::model::params::{ImpactParams, Normalized, ParamError, display_number};
 use serde::Serialize;
 
 /// Which integrator runs the impact.
@@ -143,7 +144,56 @@ pub struct ImpactResponse {
     pub events: Vec<PhaseEvent>,
     pub energy: Option<EnergyBudget>,
     pub history: History,
+    /// Solver steps taken: propagator steps (exact) or accepted and rejected integrator steps
+    /// (adaptive), over every phase and event re-integration. Bounded by the solvers' budgets.
+    pub steps: usize,
+    /// Whether Radau5 carried some of the run (stiff dashpot, or a phase too long for DOPRI5):
+    /// its COR and energy audit are good to about 1e-7…1e-4, not to the tolerance asked for.
+    pub stiff: bool,
 }
+
+/// Why an impact has no answer.
+#[derive(Debug, Clone, PartialEq)]
+pub enum SolveError {
+    /// A parameter is out of its domain.
+    Param(ParamError),
+    /// The solver ran out of its step or phase budget before the ball left or came to rest:
+    /// rather than pass a truncated run off as "no rebound", it says so.
+    Unresolved {
+        reason: &'static str,
+        steps: usize,
+        lambda: f64,
+        zeta: f64,
+    },
+}
+
+impl From<ParamError> for SolveError {
+    fn from(e: ParamError) -> Self {
+        SolveError::Param(e)
+    }
+}
+
+impl std::fmt::Display for SolveError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            SolveError::Param(e) => write!(f, "{e}"),
+            SolveError::Unresolved {
+                reason,
+                steps,
+                lambda,
+                zeta,
+            } => write!(
+                f,
+                "no answer at λ = {}, ζ = {}: {reason} ({steps} steps); \
+                 try a looser --rtol or a nearby λ, ζ",
+                display_number(*lambda),
+                display_number(*zeta)
+            ),
+        }
+    }
+}
+
+impl std::error::Error for SolveError {}
 
 /// What a solver returns, in normalized units (MODEL.md §5).
 #[derive(Debug, Clone, Default)]
@@ -164,6 +214,13 @@ pub(crate) struct Outcome {
     pub contact_work: f64,
     /// ∫ ȳ'²/(2ζ) dτ, when asked for.
     pub dashpot: Option<f64>,
+    /// Solver steps taken (exact: propagator steps; adaptive: accepted and rejected steps).
+    pub steps: usize,
+    /// Radau5 carried some of the run.
+    pub stiff: bool,
+    /// Why the run could not be brought to an end (a step or phase budget ran out, the
+    /// integrator gave up): the outcome is then not an answer.
+    pub unresolved: Option<&'static str>,
     /// (τ, F̄, z̄, ᾱ) at evenly spaced τ.
     pub samples: Vec<[f64; 4]>,
 }
@@ -173,14 +230,15 @@ pub fn simulate(
     params: &ImpactParams,
     law: ContactLaw,
     opts: &SolveOptions,
-) -> Result<ImpactResponse, ParamError> {
+) -> Result<ImpactResponse, SolveError> {
     params.validate()?;
     if !(opts.rtol > 0.0 && opts.rtol < 1e-2) {
         return Err(ParamError {
             field: "rtol",
             value: opts.rtol,
             reason: "must lie in (0, 1e-2)",
-        });
+        }
+        .into());
     }
     let n = params.normalized();
     let contact = Contact {
@@ -195,7 +253,8 @@ pub fn simulate(
                 field: "method",
                 value: f64::NAN,
                 reason: "the exact solver runs the linear law only",
-            });
+            }
+            .into());
         }
         _ => Method::Numeric,
     };
@@ -203,6 +262,14 @@ pub fn simulate(
         Method::Exact => exact::solve(&n, &contact, opts),
         Method::Numeric => numeric::solve(&n, &contact, opts),
     };
+    if let Some(reason) = out.unresolved {
+        return Err(SolveError::Unresolved {
+            reason,
+            steps: out.steps,
+            lambda: n.lambda,
+            zeta: n.zeta,
+        });
+    }
     Ok(to_si(params, n, law, method, out))
 }
 
@@ -212,7 +279,7 @@ pub fn simulate_normalized(
     zeta: f64,
     law: ContactLaw,
     opts: &SolveOptions,
-) -> Result<ImpactResponse, ParamError> {
+) -> Result<ImpactResponse, SolveError> {
     crate::model::params::validate_lambda_zeta(lambda, zeta)?;
     simulate(
         &ImpactParams::from_normalized(lambda, zeta, f64::INFINITY),
@@ -284,5 +351,7 @@ fn to_si(
             .collect(),
         energy,
         history,
+        steps: o.steps,
+        stiff: o.stiff,
     }
 }

@@ -1,6 +1,6 @@
 //! The adaptive numerical solver for any contact law: the first-order system of MODEL.md §2 in
-//! normalized form, x = (ᾱ, ᾱ', ȳ, Ē_d),
-//!     ᾱ'' = −F̄,   ȳ' = 2ζ(F̄ − λȳ),   Ē_d' = ȳ'²/(2ζ) = 2ζ(F̄ − λȳ)²,
+//! normalized form, x = (z̄, ᾱ', ȳ, Ē_d) with z̄ = ᾱ − ȳ,
+//!     ᾱ'' = −F̄,   ȳ' = 2ζ(F̄ − λȳ),   z̄' = ᾱ' − ȳ',   Ē_d' = ȳ'²/(2ζ) = 2ζ(F̄ − λȳ)²,
 //! integrated phase by phase with the `differential-equations` crate: DOPRI5, or Radau5 when
 //! the dashpot makes the system stiff. Events are located as in SciPy's `solve_ivp` (terminal,
 //! with a direction) by a custom `Solout` that root-finds on the step's dense output; the
@@ -19,10 +19,22 @@ use differential_equations::solution::Solution;
 
 type X = [f64; 4];
 
-const MAX_PHASES: usize = 64;
+/// Phase budget. A ball creeping into a weak dashpot (small λ, large ζ) can hold z̄ at its
+/// peak, z̄' ≈ 0, for a long time; the integrator's noise then flips it between the loading and
+/// unloading branches (which meet there, so the flips do not change the answer) many times,
+/// each flip a short phase. What bounds the work is `TOTAL_STEPS`.
+const MAX_PHASES: usize = 4096;
+/// Step budget of one impact, over all its phases.
+const TOTAL_STEPS: usize = 1_000_000;
 /// Absolute tolerance relative to rtol (normalized states are of order 1).
 const ATOL_FACTOR: f64 = 1e-3;
+/// Step budget of one Radau5 integration.
 const MAX_STEPS: usize = 100_000;
+/// Step budget of DOPRI5 in one phase before Radau5 takes the rest of it over: a phase that
+/// long is one where the dashpot, though not stiff by `STIFF`, creeps for many of its own time
+/// constants (λ = 0 with a weak dashpot: the ball sinks in for ~40ζ), holding DOPRI5 to its
+/// stability limit the whole way.
+const EXPLICIT_STEPS: usize = 20_000;
 /// Above this stiffness (fastest dashpot rate 2ζ(1+λ), in units of ω0) DOPRI5 would be held
 /// to its stability limit (a few thousand steps an impact at this value); Radau5 takes over.
 /// Radau5 as the crate implements it reaches about 1e-7 relative in COR and energy, DOPRI5 the
@@ -55,7 +67,7 @@ impl Impact {
     /// m v0²): its kinetic energy, the recoverable energy of the contact on the current branch,
     /// and the recoil spring's. The dashpot only takes energy away, so e ≤ √(2 E).
     fn available_energy(&self, x: &X) -> f64 {
-        let z = x[0] - x[2];
+        let z = x[0];
         let contact = match self.phase {
             Phase::Loading => self.contact.loading_work(z),
             Phase::Unloading(u) => self.contact.unloading_work(z, &u),
@@ -65,7 +77,7 @@ impl Impact {
 
     /// (F̄, ȳ') at a state.
     fn force_and_rate(&self, x: &X) -> (f64, f64) {
-        let f = self.force(x[0] - x[2]);
+        let f = self.force(x[0]);
         (f, 2.0 * self.zeta * (f - self.lambda * x[2]))
     }
 }
@@ -73,7 +85,9 @@ impl Impact {
 impl ODE<f64, X> for Impact {
     fn diff(&self, _t: f64, x: &X, dx: &mut X) {
         let (f, ydot) = self.force_and_rate(x);
-        dx[0] = x[1];
+        // z̄, not ᾱ, is carried: z̄ = ᾱ − ȳ by subtraction loses all of its digits when the ball
+        // creeps into a weak dashpot (ᾱ, ȳ large, z̄ tiny), and the force is a function of z̄.
+        dx[0] = x[1] - ydot;
         dx[1] = -f;
         dx[2] = ydot;
         dx[3] = if self.zeta > 0.0 {
@@ -99,7 +113,7 @@ enum Watch {
 
 impl Watch {
     fn g(self, imp: &Impact, x: &X) -> f64 {
-        let z = x[0] - x[2];
+        let z = x[0];
         match self {
             Watch::RateFalls => x[1] - imp.force_and_rate(x).1,
             Watch::Yields(t) | Watch::Separates(t) | Watch::Reloads(t) => z - t,
@@ -123,6 +137,12 @@ struct Watcher<'a> {
     t_stop: f64,
     /// The last accepted step, where an event-less integration stopped.
     last: (f64, X),
+    /// Steps taken (accepted and rejected), the re-integration to an event included.
+    steps: usize,
+    /// The integrator gave up (step budget, step size underflow) before an event or `t_stop`.
+    failed: bool,
+    /// Radau5 ran (some of) the phase.
+    stiff: bool,
 }
 
 impl Solout<f64, X> for Watcher<'_> {
@@ -204,24 +224,83 @@ fn integrate<'a>(
         samples: Vec::new(),
         t_stop,
         last: (t0, x0),
+        steps: 0,
+        failed: false,
+        stiff: false,
     };
-    // The crate reports running out of steps as an error; the watcher then holds what was
-    // reached, and the caller treats an event-less phase as the horizon.
-    solve_with(imp, t0, x0, t_stop, rtol, &mut w);
+    // The crate reports giving up (out of steps, step size underflow) as an error; the watcher
+    // then holds what was reached. The phase goes on from there with the next integrator of
+    // the cascade: DOPRI5 on its short budget → Radau5 (a long phase at DOPRI5's stability
+    // limit) → DOPRI5 on the full budget (Radau5's Newton iteration can stall where the
+    // 3/2-power force has no second derivative, at z̄ = z̄_f). Only when the last one gives up
+    // is the phase failed: never read as the horizon.
+    let mut method = if 2.0 * imp.zeta * (1.0 + imp.lambda) > STIFF {
+        Integrator::Radau5
+    } else {
+        Integrator::Dopri5(EXPLICIT_STEPS)
+    };
+    let mut run = solve_with(imp, t0, x0, t_stop, rtol, method, &mut w);
+    w.stiff = method == Integrator::Radau5;
+    while run.failed && w.hit.is_none() {
+        method = match method {
+            Integrator::Dopri5(EXPLICIT_STEPS) => Integrator::Radau5,
+            Integrator::Radau5 => Integrator::Dopri5(MAX_STEPS),
+            Integrator::Dopri5(_) => break,
+        };
+        w.stiff |= method == Integrator::Radau5;
+        let (t1, x1) = w.last;
+        let rest = solve_with(imp, t1, x1, t_stop, rtol, method, &mut w);
+        run = RunStats {
+            steps: run.steps + rest.steps,
+            failed: rest.failed,
+        };
+    }
+    w.steps = run.steps;
+    w.failed = run.failed;
     if let Some((t, t_prev, x_prev, _)) = w.hit {
         // The event's state is integrated to the event time, not read off the dense output:
         // Radau5's continuous output is of lower order than its steps.
         let mut end = EndState(x_prev);
-        solve_with(imp, t_prev, x_prev, t, rtol, &mut end);
+        let run = solve_with(imp, t_prev, x_prev, t, rtol, method, &mut end);
+        w.steps += run.steps;
+        w.failed |= run.failed;
         w.last = (t, end.0);
     }
     w
 }
 
-/// DOPRI5, or Radau5 when the dashpot makes the system stiff.
-fn solve_with<O: Solout<f64, X>>(imp: &Impact, t0: f64, x0: X, tf: f64, rtol: f64, out: &mut O) {
+/// The integrator of one run: DOPRI5 with its step budget, or Radau5 (budget `MAX_STEPS`).
+#[derive(Clone, Copy, PartialEq, Eq, Debug)]
+enum Integrator {
+    Dopri5(usize),
+    Radau5,
+}
+
+/// What one integration cost (at most: a failed run counts its whole budget), and whether the
+/// integrator gave up.
+struct RunStats {
+    steps: usize,
+    failed: bool,
+}
+
+/// One integration with `method`.
+fn solve_with<O: Solout<f64, X>>(
+    imp: &Impact,
+    t0: f64,
+    x0: X,
+    tf: f64,
+    rtol: f64,
+    method: Integrator,
+    out: &mut O,
+) -> RunStats {
     let atol = rtol * ATOL_FACTOR;
-    if 2.0 * imp.zeta * (1.0 + imp.lambda) > STIFF {
+    if let Integrator::Dopri5(budget) = method {
+        let mut m = ExplicitRungeKutta::dopri5()
+            .rtol(rtol)
+            .atol(atol)
+            .max_steps(budget);
+        run(&mut m, budget, imp, t0, x0, tf, out)
+    } else {
         // Radau5 (as Hairer's original) replaces a tolerance r by 0.1 r^(2/3) before use; hand
         // it the pre-image so that it runs at the tolerance asked for.
         let (rtol, atol) = (
@@ -232,25 +311,42 @@ fn solve_with<O: Solout<f64, X>>(imp: &Impact, t0: f64, x0: X, tf: f64, rtol: f6
             .rtol(rtol)
             .atol(atol)
             .max_steps(MAX_STEPS);
-        run(&mut m, imp, t0, x0, tf, out)
-    } else {
-        let mut m = ExplicitRungeKutta::dopri5()
-            .rtol(rtol)
-            .atol(atol)
-            .max_steps(MAX_STEPS);
-        run(&mut m, imp, t0, x0, tf, out)
+        run(&mut m, MAX_STEPS, imp, t0, x0, tf, out)
     }
 }
 
-/// Integrate from t0 to tf into `out`. The crate's errors (running out of steps) carry nothing
-/// `out` does not already hold, so they are not passed on.
-fn run<S, O>(m: &mut S, imp: &Impact, t0: f64, x0: X, tf: f64, out: &mut O)
+/// Integrate from t0 to tf into `out`. The crate's errors (out of steps, step size underflow)
+/// carry no state `out` does not already hold; what is kept is that the run failed, and its
+/// cost (an error does not say how many steps it took: out of steps counts as the budget).
+fn run<S, O>(
+    m: &mut S,
+    budget: usize,
+    imp: &Impact,
+    t0: f64,
+    x0: X,
+    tf: f64,
+    out: &mut O,
+) -> RunStats
 where
     S: OrdinaryNumericalMethod<f64, X> + Interpolation<f64, X>,
     O: Solout<f64, X>,
 {
-    if t0 < tf {
-        let _ = solve_ode(m, imp, t0, tf, &x0, out);
+    if t0 >= tf {
+        return RunStats {
+            steps: 0,
+            failed: false,
+        };
+    }
+    match solve_ode(m, imp, t0, tf, &x0, out) {
+        Ok(sol) => RunStats {
+            steps: sol.steps.accepted + sol.steps.rejected,
+            failed: false,
+        },
+        Err(_) => RunStats {
+            // the error does not say how many steps were taken: at most the budget
+            steps: budget,
+            failed: true,
+        },
     }
 }
 
@@ -304,7 +400,8 @@ pub(crate) fn solve(n: &Normalized, contact: &Contact, opts: &SolveOptions) -> O
             }
         })
         .collect();
-    let (_, samples) = run_phases(n, contact, opts.rtol, &grid);
+    let (again, samples) = run_phases(n, contact, opts.rtol, &grid);
+    out.steps += again.steps;
     out.samples = samples;
     out
 }
@@ -328,8 +425,26 @@ fn run_phases(
     let t_max = horizon(n);
     let mut yielded = false;
     let mut rest = grid;
-    for _ in 0..MAX_PHASES {
-        let z0 = x[0] - x[2];
+    let mut phases_left = MAX_PHASES;
+    loop {
+        if phases_left == 0 {
+            out.unresolved = Some("more than 4096 load–unload phases");
+            break;
+        }
+        if out.steps > TOTAL_STEPS {
+            out.unresolved = Some("the step budget of the impact ran out");
+            break;
+        }
+        phases_left -= 1;
+        let z0 = x[0];
+        // A loading phase that begins with z̄' ≤ 0 (a reload or a yield met at the turning
+        // point itself) has already turned: its unload is now. Watching for z̄' to fall
+        // through 0 would never fire, and the ball would leave on the loading branch.
+        if matches!(imp.phase, Phase::Loading) && t > 0.0 && x[1] - imp.force_and_rate(&x).1 <= 0.0
+        {
+            out.events.push((t, EventKind::Unload, z0));
+            imp.phase = Phase::Unloading(contact.unload_from(z0));
+        }
         let watches = match imp.phase {
             Phase::Loading
                 if contact.law == ContactLaw::ElasticPlastic && !yielded && z0 < contact.zp_bar =>
@@ -342,15 +457,23 @@ fn run_phases(
         let w = integrate(&imp, t, x, t_max, watches, rest, rtol);
         let hit = w.hit.map(|h| h.3);
         let (t_end, x_end) = w.last;
+        out.steps += w.steps;
+        out.stiff |= w.stiff;
+        if w.failed {
+            out.unresolved = Some("the integrator gave up before the end of contact");
+        } else if hit.is_none() && imp.available_energy(&x_end) >= 0.5 * REST_COR * REST_COR {
+            // the horizon came first: the ball neither left nor came to rest
+            out.unresolved = Some("the ball neither left nor came to rest within the horizon");
+        }
         let consumed = w.next_sample;
         let phase_samples: Vec<[f64; 4]> = w
             .samples
             .iter()
-            .map(|(ts, xs)| [*ts, imp.force(xs[0] - xs[2]), xs[0] - xs[2], xs[0]])
+            .map(|(ts, xs)| [*ts, imp.force(xs[0]), xs[0], xs[0] + xs[2]])
             .collect();
         samples.extend(phase_samples);
         rest = &rest[consumed..];
-        let z_end = x_end[0] - x_end[2];
+        let z_end = x_end[0];
         out.contact_work += match imp.phase {
             Phase::Loading => contact.loading_work(z_end) - contact.loading_work(z0),
             Phase::Unloading(u) => {
@@ -393,6 +516,9 @@ fn run_phases(
         if let Phase::Unloading(u) = imp.phase {
             out.z_f = u.z_f;
         }
+        if out.unresolved.is_some() {
+            break;
+        }
         match next {
             Some(p) => imp.phase = p,
             None => break,
@@ -405,7 +531,10 @@ fn run_phases(
     // samples past the end (rounding at τ_end) take the final state
     while samples.len() < grid.len() {
         let ts = grid[samples.len()];
-        let mut last = samples.last().copied().unwrap_or([ts, 0.0, 0.0, x[0]]);
+        let mut last = samples
+            .last()
+            .copied()
+            .unwrap_or([ts, 0.0, 0.0, x[0] + x[2]]);
         last[0] = ts;
         samples.push(last);
     }
