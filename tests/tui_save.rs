@@ -1,0 +1,395 @@
+//! `s` in the explorer: state → name prompt → save request → file (in a temporary presets
+//! folder) → the message in the header; the question before anything is overwritten; and the
+//! saved file loaded back (explorer and `bouncelab run`) with the same λ, ζ, v0 and law.
+
+use bouncelab::ContactLaw;
+use bouncelab::catalog::{self, Catalog};
+use bouncelab::preset::Preset;
+use bouncelab::tui::action::{self, Action, Mode};
+use bouncelab::tui::app::{App, Overlay, Purpose, Severity};
+use bouncelab::tui::param::Param;
+use bouncelab::tui::save;
+use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
+use std::fs;
+use std::path::{Path, PathBuf};
+
+fn superball() -> App {
+    App::new(Preset::embedded().remove(0), true)
+}
+
+/// Press keys as the event loop would; `\n` is Enter, `\x1b` Esc, `\x08` Backspace.
+fn press(app: &mut App, keys: &str) {
+    for c in keys.chars() {
+        let code = match c {
+            '\n' => KeyCode::Enter,
+            '\x1b' => KeyCode::Esc,
+            '\x08' => KeyCode::Backspace,
+            c => KeyCode::Char(c),
+        };
+        let m = if c.is_ascii_uppercase() {
+            KeyModifiers::SHIFT
+        } else {
+            KeyModifiers::NONE
+        };
+        if let Some(a) = action::from_key(KeyEvent::new(code, m), app.mode()) {
+            app.update(a);
+        }
+    }
+}
+
+/// Replace the prompt's text with `name`.
+fn type_name(app: &mut App, name: &str) {
+    let n = match app.overlay() {
+        Overlay::Input(i) => i.text.chars().count(),
+        other => panic!("no prompt: {other:?}"),
+    };
+    press(app, &"\x08".repeat(n));
+    press(app, name);
+}
+
+/// What the event loop does with a pending save; returns the loop's answer.
+fn perform(app: &mut App, dir: &Path) -> Action {
+    let request = app.save_request().expect("a save is pending").clone();
+    let answer = save::write(&request, Some(dir));
+    app.update(answer.clone());
+    assert!(app.save_request().is_none(), "the answer clears it");
+    answer
+}
+
+fn message(app: &App) -> (String, Severity) {
+    let m = app.message().expect("a message");
+    (m.text.clone(), m.severity)
+}
+
+fn state(app: &App) -> (f64, f64, f64, ContactLaw) {
+    let s = app.setting();
+    (
+        s.get(Param::Lambda),
+        s.get(Param::Zeta),
+        s.get(Param::V0),
+        s.law,
+    )
+}
+
+/// Move λ, ζ, v0 and the law off the preset, then save as `name` into `dir`.
+fn save_modified(dir: &Path, name: &str) -> (App, PathBuf) {
+    let mut app = superball();
+    press(&mut app, "lllZZvvvvvc");
+    press(&mut app, "s");
+    type_name(&mut app, name);
+    press(&mut app, "\n");
+    let Action::Saved { path, replaced } = perform(&mut app, dir) else {
+        panic!("not saved: {:?}", app.message());
+    };
+    assert!(!replaced);
+    (app, path)
+}
+
+#[test]
+fn s_opens_a_prompt_with_a_suggested_name() {
+    let mut app = superball();
+    press(&mut app, "s");
+    assert_eq!(app.mode(), Mode::Input);
+    let Overlay::Input(i) = app.overlay() else {
+        panic!("no prompt")
+    };
+    assert_eq!(i.purpose, Purpose::PresetName);
+    assert_eq!(i.text, "superball-custom");
+    // q, e, s are text here, not commands
+    press(&mut app, "qes");
+    assert!(!app.should_quit());
+    let Overlay::Input(i) = app.overlay() else {
+        panic!("no prompt")
+    };
+    assert_eq!(i.text, "superball-customqes");
+    press(&mut app, "\x1b");
+    assert_eq!(app.mode(), Mode::Normal);
+    assert_eq!(message(&app), ("not saved".into(), Severity::Info));
+    assert!(app.save_request().is_none());
+}
+
+#[test]
+fn bad_names_are_refused_and_the_prompt_stays_open() {
+    let mut app = superball();
+    press(&mut app, "s");
+    for (name, why) in [
+        (
+            "my ball",
+            "' ' cannot be in a name: use letters, digits, - and _",
+        ),
+        ("golf", "golf is an embedded preset: choose another name"),
+        (
+            "../x",
+            "'.' cannot be in a name: use letters, digits, - and _",
+        ),
+        ("", "type a name for the preset"),
+    ] {
+        type_name(&mut app, name);
+        press(&mut app, "\n");
+        assert_eq!(app.mode(), Mode::Input, "{name}");
+        assert_eq!(message(&app), (why.into(), Severity::Warning));
+        let Overlay::Input(i) = app.overlay() else {
+            panic!()
+        };
+        assert_eq!(i.error.as_deref(), Some(why));
+        assert!(
+            app.save_request().is_none(),
+            "nothing to write for {name:?}"
+        );
+    }
+}
+
+#[test]
+fn a_saved_preset_loads_back_with_the_same_lambda_zeta_v0_and_law() {
+    let dir = tempfile::tempdir().unwrap();
+    let presets = dir.path().join("bouncelab").join("presets");
+    let (app, path) = save_modified(&presets, "mine");
+    assert_eq!(path, presets.join("mine.toml"), "the folder is created");
+    assert_eq!(
+        message(&app),
+        (
+            format!("saved preset mine to {}", save::short_path(&path)),
+            Severity::Info
+        )
+    );
+    let text = fs::read_to_string(&path).unwrap();
+    assert!(
+        text.starts_with("# Saved from the bouncelab explorer, from the preset 'superball'."),
+        "{text}"
+    );
+    // in the explorer: bit for bit
+    let cat = Catalog::load(Some(&presets), None).expect("the catalog loads");
+    let loaded = cat.get("mine").unwrap().preset.clone();
+    assert_eq!(loaded.name, "mine");
+    let back = App::new(loaded.clone(), true);
+    assert_eq!(state(&back), state(&app));
+    assert_eq!(back.setting().params, app.setting().params);
+    assert_eq!(loaded.law, ContactLaw::ElasticPlastic);
+    // the ball is the superball's
+    let sb = &app.presets()[0];
+    assert_eq!(loaded.measured.mass, sb.measured.mass);
+    assert_eq!(loaded.measured.radius, sb.measured.radius);
+    assert_eq!(loaded.material, sb.material);
+
+    // and on the command line
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_bouncelab"))
+        .args(["run", "--preset", "mine", "--format", "json"])
+        .env("XDG_CONFIG_HOME", dir.path())
+        .env("HOME", dir.path())
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let json: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let (lambda, zeta, v0, _) = state(&app);
+    let rel = |k: &str, want: f64| {
+        let got = json[k].as_f64().unwrap();
+        assert!(
+            (got - want).abs() <= 1e-12 * want.abs(),
+            "{k}: {got} vs {want}"
+        );
+    };
+    rel("lambda", lambda);
+    rel("zeta", zeta);
+    rel("v0", v0);
+    assert_eq!(json["law"], "elastic-plastic");
+    assert_eq!(json["origin"], path.display().to_string());
+}
+
+#[test]
+fn measurements_stay_only_at_the_speed_they_were_taken_at() {
+    let dir = tempfile::tempdir().unwrap();
+    // λ moved, v0 not: the superball's measurements at 3.12 m/s still apply
+    let mut app = superball();
+    press(&mut app, "ls");
+    type_name(&mut app, "same-speed");
+    press(&mut app, "\n");
+    perform(&mut app, dir.path());
+    let same = catalog::read_preset_file(&dir.path().join("same-speed.toml")).unwrap();
+    assert_eq!(same.measured, app.presets()[0].measured);
+
+    // v0 moved: cor, peak force and contact time were not measured there
+    let (app, path) = save_modified(dir.path(), "faster");
+    let p = catalog::read_preset_file(&path).unwrap();
+    let sb = &app.presets()[0].measured;
+    assert_eq!((p.measured.mass, p.measured.radius), (sb.mass, sb.radius));
+    assert_eq!(p.measured.v0, app.setting().params.v0);
+    assert_ne!(p.measured.v0, sb.v0);
+    assert_eq!(
+        (
+            p.measured.cor,
+            p.measured.max_force,
+            p.measured.contact_time
+        ),
+        (None, None, None)
+    );
+    let text = fs::read_to_string(&path).unwrap();
+    assert!(
+        text.contains("were taken at\n# 3.12 m/s, not at 3.62 m/s: left out."),
+        "{text}"
+    );
+}
+
+#[test]
+fn an_existing_file_is_replaced_only_after_yes() {
+    let dir = tempfile::tempdir().unwrap();
+    let (_, path) = save_modified(dir.path(), "mine");
+    let first = fs::read(&path).unwrap();
+
+    // the same name again, from other parameters
+    let mut app = superball();
+    press(&mut app, "LLs");
+    type_name(&mut app, "mine");
+    press(&mut app, "\n");
+    let answer = perform(&mut app, dir.path());
+    assert_eq!(
+        answer,
+        Action::SaveExists {
+            path: path.clone(),
+            holds: Some("mine".into())
+        }
+    );
+    assert_eq!(app.mode(), Mode::Confirm);
+    assert_eq!(
+        message(&app),
+        ("overwrite mine.toml? y/n".into(), Severity::Warning)
+    );
+    assert_eq!(fs::read(&path).unwrap(), first, "nothing written yet");
+    // other keys do not answer
+    press(&mut app, "lq\n");
+    assert_eq!(app.mode(), Mode::Confirm);
+    assert!(!app.should_quit());
+
+    press(&mut app, "n");
+    assert_eq!(app.mode(), Mode::Normal);
+    assert!(app.save_request().is_none());
+    assert_eq!(
+        message(&app).0,
+        format!("not saved: {} left as it was", save::short_path(&path))
+    );
+    assert_eq!(fs::read(&path).unwrap(), first);
+
+    press(&mut app, "s");
+    type_name(&mut app, "mine");
+    press(&mut app, "\n");
+    assert!(matches!(
+        perform(&mut app, dir.path()),
+        Action::SaveExists { .. }
+    ));
+    press(&mut app, "y");
+    assert_eq!(app.mode(), Mode::Normal);
+    assert_eq!(
+        app.save_request().unwrap().replace.as_deref(),
+        Some(path.as_path())
+    );
+    assert_eq!(
+        perform(&mut app, dir.path()),
+        Action::Saved {
+            path: path.clone(),
+            replaced: true
+        }
+    );
+    assert!(message(&app).0.ends_with("mine.toml (replaced)"));
+    let now = catalog::read_preset_file(&path).unwrap();
+    assert_eq!(App::new(now, true).setting().params, app.setting().params);
+    let names: Vec<String> = fs::read_dir(dir.path())
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    assert_eq!(names, ["mine.toml"], "no temporary file left");
+}
+
+#[test]
+fn a_preset_of_that_name_in_another_file_is_the_one_asked_about() {
+    let dir = tempfile::tempdir().unwrap();
+    let (_, first) = save_modified(dir.path(), "mine");
+    let other = dir.path().join("my-balls.toml");
+    fs::rename(&first, &other).unwrap();
+    let mut app = superball();
+    press(&mut app, "s");
+    type_name(&mut app, "mine");
+    press(&mut app, "\n");
+    // not a second file "mine.toml", which would give the catalog two presets "mine"
+    assert_eq!(
+        perform(&mut app, dir.path()),
+        Action::SaveExists {
+            path: other.clone(),
+            holds: Some("mine".into())
+        }
+    );
+    press(&mut app, "y");
+    perform(&mut app, dir.path());
+    let cat = Catalog::load(Some(dir.path()), None).expect("still one preset 'mine'");
+    assert_eq!(
+        cat.get("mine").unwrap().origin,
+        catalog::Origin::File(other)
+    );
+    assert!(!dir.path().join("mine.toml").exists());
+}
+
+#[test]
+fn a_file_that_appears_after_the_prompt_is_not_clobbered() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut app = superball();
+    press(&mut app, "s");
+    type_name(&mut app, "mine");
+    press(&mut app, "\n");
+    assert!(app.save_request().is_some());
+    // another program writes the name (a preset called otherwise) before the loop gets to it
+    let path = dir.path().join("mine.toml");
+    let theirs = bouncelab::preset::EMBEDDED[1]
+        .1
+        .replace("name = \"golf\"", "name = \"theirs\"");
+    fs::write(&path, &theirs).unwrap();
+    let answer = perform(&mut app, dir.path());
+    assert_eq!(
+        answer,
+        Action::SaveExists {
+            path: path.clone(),
+            holds: Some("theirs".into())
+        }
+    );
+    assert_eq!(app.mode(), Mode::Confirm);
+    assert_eq!(fs::read_to_string(&path).unwrap(), theirs);
+}
+
+#[test]
+fn failures_are_one_line_messages_and_write_nothing() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut app = superball();
+    // no folder for user presets at all
+    press(&mut app, "s\n");
+    let request = app.save_request().unwrap().clone();
+    app.update(save::write(&request, None));
+    assert_eq!(
+        message(&app),
+        (
+            "save failed: no folder for user presets: set XDG_CONFIG_HOME or HOME".into(),
+            Severity::Error
+        )
+    );
+    // a broken preset in the folder: names cannot be checked, so nothing is written
+    fs::write(dir.path().join("broken.toml"), "name = \n").unwrap();
+    press(&mut app, "s\n");
+    perform(&mut app, dir.path());
+    let (text, severity) = message(&app);
+    assert_eq!(severity, Severity::Error);
+    assert!(
+        text.starts_with("save failed: cannot read the user presets (")
+            && text.contains("broken.toml:1:")
+            && text.ends_with("; nothing saved"),
+        "{text}"
+    );
+    assert!(!text.contains('\n'));
+    assert!(!dir.path().join("superball-custom.toml").exists());
+    // the "folder" is a file
+    let file = dir.path().join("broken.toml");
+    press(&mut app, "s\n");
+    perform(&mut app, &file);
+    let (text, _) = message(&app);
+    assert!(text.starts_with("save failed: "), "{text}");
+    assert!(!text.contains('\n'));
+}
