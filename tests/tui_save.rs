@@ -393,3 +393,60 @@ fn failures_are_one_line_messages_and_write_nothing() {
     assert!(text.starts_with("save failed: "), "{text}");
     assert!(!text.contains('\n'));
 }
+
+#[test]
+fn a_preset_on_its_materials_set_is_saved_with_that_set_as_adopted() {
+    let dir = tempfile::tempdir().unwrap();
+    let text = bouncelab::preset::EMBEDDED[2]
+        .1
+        .replace("name = \"baseball\"", "name = \"mat\"")
+        .replace("parameters = \"adopted\"", "parameters = \"materials\"");
+    let source = Preset::parse(&text, "mat.toml").unwrap();
+    let mut app = App::new(source, true);
+    press(&mut app, "lzs");
+    type_name(&mut app, "mat2");
+    press(&mut app, "\n");
+    perform(&mut app, dir.path());
+    let saved = catalog::read_preset_file(&dir.path().join("mat2.toml")).unwrap();
+    assert_eq!(saved.parameters, bouncelab::preset::ParamSource::Adopted);
+    let written = fs::read_to_string(dir.path().join("mat2.toml")).unwrap();
+    assert!(
+        written.contains("# 'mat' ran on the set derived from its material data"),
+        "{written}"
+    );
+    let back = App::new(saved.clone(), true);
+    assert_eq!(state(&back), state(&app));
+    let (now, then) = (back.setting().params, app.setting().params);
+    assert_eq!(
+        (now.mass, now.k_p, now.damping, now.k_r, now.z_p, now.v0),
+        (
+            then.mass,
+            then.k_p,
+            then.damping,
+            then.k_r,
+            then.z_p,
+            then.v0
+        )
+    );
+    // K_h follows Eq. 16 now instead of the Hertz formula: the same up to rounding
+    assert!((now.k_h - then.k_h).abs() <= 1e-12 * then.k_h);
+
+    // saved again from the saved one: the description does not pile up
+    let mut again = App::new(saved, true);
+    press(&mut again, "s");
+    type_name(&mut again, "mat3");
+    press(&mut again, "\n");
+    perform(&mut again, dir.path());
+    let third = catalog::read_preset_file(&dir.path().join("mat3.toml")).unwrap();
+    assert_eq!(
+        third.description.matches("saved from the explorer").count(),
+        1
+    );
+    assert!(
+        third
+            .description
+            .starts_with("Baseball, cork core and leather cover (Cross 1999); "),
+        "{}",
+        third.description
+    );
+}
