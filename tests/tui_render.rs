@@ -155,6 +155,21 @@ fn flattened_superball_with_a_pinned_ghost() {
     insta::assert_snapshot!(draw(&a, 120, 40).backend());
 }
 
+/// A preset without measurements (as the explorer saves one at another speed) claims none.
+#[test]
+fn no_measured_speed_without_measurements() {
+    let text_of = |p: Preset| text(draw(&App::new(p, true), 120, 40).backend().buffer());
+    let mut p = Preset::embedded().remove(0);
+    assert!(text_of(p.clone()).contains("measured at v0 = 3.12 m/s"));
+    p.name = "unmeasured".into();
+    (
+        p.measured.cor,
+        p.measured.max_force,
+        p.measured.contact_time,
+    ) = (None, None, None);
+    assert!(!text_of(p).contains("measured at"));
+}
+
 /// The decade labels of the ζ axis sit over the columns where log10 ζ = −2 … 2 land.
 #[test]
 fn log_axis_decade_labels_sit_over_their_columns() {
