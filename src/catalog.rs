@@ -12,6 +12,11 @@
 //!   preset is never skipped silently;
 //! - in the presets folder only regular `*.toml` files not starting with `.` are read, in
 //!   file-name order; a missing folder means no user presets.
+//!
+//! Writing a preset file (the explorer's `s`) is in [`write`]: atomic, and never replacing a
+//! file unless asked to.
+
+pub mod write;
 
 use crate::preset::{Preset, PresetError};
 use std::fmt;

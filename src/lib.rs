@@ -8,6 +8,8 @@
 pub mod analysis;
 pub mod catalog;
 pub mod cli;
+#[doc(hidden)]
+pub mod fault;
 pub mod figure;
 pub mod model;
 pub mod preset;

@@ -7,6 +7,8 @@ use crate::model::params::{ImpactParams, display_number};
 use serde::{Deserialize, Serialize};
 use std::fmt;
 
+mod text;
+
 /// The three balls of the paper, embedded in the binary.
 pub const EMBEDDED: [(&str, &str); 3] = [
     ("superball", include_str!("../presets/superball.toml")),

@@ -2,7 +2,7 @@
 //! labels, colour off under NO_COLOR, and no panic at any size.
 
 use bouncelab::preset::Preset;
-use bouncelab::tui::action;
+use bouncelab::tui::action::{self, Action};
 use bouncelab::tui::app::App;
 use bouncelab::tui::ui::{self, Chart};
 use ratatui::Terminal;
@@ -114,6 +114,32 @@ fn value_entry_refusing_text() {
 }
 
 #[test]
+fn save_prompt_refusing_a_name_with_a_space() {
+    let mut a = app(0);
+    press(&mut a, &[KeyCode::Char('l'), KeyCode::Char('s')]);
+    press(&mut a, &[KeyCode::Backspace; 6]);
+    press(
+        &mut a,
+        &" mine".chars().map(KeyCode::Char).collect::<Vec<_>>(),
+    );
+    press(&mut a, &[KeyCode::Enter]);
+    insta::assert_snapshot!(draw(&a, 120, 40).backend());
+}
+
+#[test]
+fn overwrite_question() {
+    let mut a = app(0);
+    press(&mut a, &[KeyCode::Char('s'), KeyCode::Enter]);
+    // what the event loop answers when the name is taken, here by a file that holds a preset
+    // of another name (a fixed path, so that the picture does not depend on the machine)
+    a.update(Action::SaveExists {
+        path: "/home/user/.config/bouncelab/presets/superball-custom.toml".into(),
+        holds: Some("old-superball".into()),
+    });
+    insta::assert_snapshot!(draw(&a, 120, 40).backend());
+}
+
+#[test]
 fn flattened_superball_with_a_pinned_ghost() {
     let mut a = app(0);
     press(
@@ -127,6 +153,21 @@ fn flattened_superball_with_a_pinned_ghost() {
     );
     press(&mut a, &[KeyCode::Char('8'), KeyCode::Enter]);
     insta::assert_snapshot!(draw(&a, 120, 40).backend());
+}
+
+/// A preset without measurements (as the explorer saves one at another speed) claims none.
+#[test]
+fn no_measured_speed_without_measurements() {
+    let text_of = |p: Preset| text(draw(&App::new(p, true), 120, 40).backend().buffer());
+    let mut p = Preset::embedded().remove(0);
+    assert!(text_of(p.clone()).contains("measured at v0 = 3.12 m/s"));
+    p.name = "unmeasured".into();
+    (
+        p.measured.cor,
+        p.measured.max_force,
+        p.measured.contact_time,
+    ) = (None, None, None);
+    assert!(!text_of(p).contains("measured at"));
 }
 
 /// The decade labels of the ζ axis sit over the columns where log10 ζ = −2 … 2 land.

@@ -56,6 +56,29 @@ pub enum Action {
     ExportFailed {
         msg: String,
     },
+    /// Save the current setting as a user preset: opens the name prompt. On Enter `update`
+    /// prepares a [`super::save::SaveRequest`], the event loop writes it.
+    SavePreset,
+    /// The event loop wrote the pending save to `path` (`replaced`: over an existing file the
+    /// user agreed to overwrite).
+    Saved {
+        path: PathBuf,
+        replaced: bool,
+    },
+    /// The pending save was not written because `path` exists (or holds a preset of that
+    /// name, `holds`): ask before overwriting it.
+    SaveExists {
+        path: PathBuf,
+        holds: Option<String>,
+    },
+    /// The pending save could not be written: why, in one line.
+    SaveFailed {
+        msg: String,
+    },
+    /// `y` to "overwrite …? y/n".
+    ConfirmYes,
+    /// `n` or Esc to "overwrite …? y/n".
+    ConfirmNo,
 }
 
 /// What the keyboard is talking to.
@@ -63,8 +86,10 @@ pub enum Action {
 pub enum Mode {
     Normal,
     Help,
-    /// Typing a value: printable keys are text.
+    /// Typing a value or a name: printable keys are text.
     Input,
+    /// A yes/no question: only `y`, `n` and Esc answer, other keys do nothing.
+    Confirm,
 }
 
 /// The action for a terminal event, if any (key presses and repeats; releases are ignored).
@@ -87,6 +112,11 @@ pub fn from_key(key: KeyEvent, mode: Mode) -> Option<Action> {
             KeyCode::Esc => Some(Action::InputCancel),
             KeyCode::Backspace => Some(Action::InputBackspace),
             KeyCode::Char(c) if !ctrl && !c.is_control() => Some(Action::InputChar(c)),
+            _ => None,
+        },
+        Mode::Confirm => match key.code {
+            KeyCode::Char('y' | 'Y') => Some(Action::ConfirmYes),
+            KeyCode::Char('n' | 'N') | KeyCode::Esc => Some(Action::ConfirmNo),
             _ => None,
         },
         Mode::Help => match key.code {
@@ -133,6 +163,7 @@ fn normal(key: KeyEvent) -> Option<Action> {
         KeyCode::Char('P') => Some(Action::Unpin),
         KeyCode::Char('u') => Some(Action::Undo),
         KeyCode::Char('e') => Some(Action::Export),
+        KeyCode::Char('s') => Some(Action::SavePreset),
         KeyCode::Tab => Some(Action::NextView),
         KeyCode::BackTab => Some(Action::PrevView),
         KeyCode::Char('?') => Some(Action::ToggleHelp),
@@ -192,7 +223,7 @@ mod tests {
     #[test]
     fn quitting() {
         let ctrl_c = KeyEvent::new(KeyCode::Char('c'), KeyModifiers::CONTROL);
-        for mode in [Mode::Normal, Mode::Help, Mode::Input] {
+        for mode in [Mode::Normal, Mode::Help, Mode::Input, Mode::Confirm] {
             assert_eq!(from_key(ctrl_c, mode), Some(Action::Quit));
         }
         assert_eq!(
@@ -215,6 +246,27 @@ mod tests {
             from_key(key(KeyCode::Char('c')), Mode::Normal),
             Some(Action::CycleLaw)
         );
+    }
+
+    #[test]
+    fn save_and_the_question() {
+        assert_eq!(
+            from_key(key(KeyCode::Char('s')), Mode::Normal),
+            Some(Action::SavePreset)
+        );
+        assert_eq!(
+            from_key(key(KeyCode::Char('s')), Mode::Input),
+            Some(Action::InputChar('s'))
+        );
+        let answer = |c| from_key(key(c), Mode::Confirm);
+        assert_eq!(answer(KeyCode::Char('y')), Some(Action::ConfirmYes));
+        assert_eq!(answer(KeyCode::Char('Y')), Some(Action::ConfirmYes));
+        assert_eq!(answer(KeyCode::Char('n')), Some(Action::ConfirmNo));
+        assert_eq!(answer(KeyCode::Esc), Some(Action::ConfirmNo));
+        // a stray key does not answer, and q does not quit past the question
+        for c in [KeyCode::Enter, KeyCode::Char('q'), KeyCode::Char('l')] {
+            assert_eq!(answer(c), None, "{c:?}");
+        }
     }
 
     #[test]

@@ -1,12 +1,18 @@
 //! The explorer's state and [`App::update`], the only place it changes. Curves are computed
-//! here, when the state changes, and stored; drawing only reads them.
+//! here, when the state changes, and stored; drawing only reads them. The dialogs (value entry,
+//! preset name, overwrite question) are handled in [`dialogs`], the COR-vs-speed sweeps'
+//! bookkeeping in [`sweeps`].
+
+mod dialogs;
+mod sweeps;
 
 use super::action::{Action, Mode};
 use super::compute::{self, SpeedCurve, SpeedRequest, ZetaCurve};
 use super::export::{self, ExportRequest};
 use super::format::sig_trim;
 use super::param::Param;
-pub use super::state::{Ghost, Input, Message, Overlay, Setting, Severity, View};
+use super::save::SaveRequest;
+pub use super::state::{Confirm, Ghost, Input, Message, Overlay, Purpose, Setting, Severity, View};
 use crate::model::contact::ContactLaw;
 use crate::model::params::ImpactParams;
 use crate::preset::Preset;
@@ -43,6 +49,8 @@ pub struct App {
     export_wanted: bool,
     /// An export for the event loop to write (see [`App::export_request`]).
     export: Option<ExportRequest>,
+    /// A preset file for the event loop to write (see [`App::save_request`]).
+    save: Option<SaveRequest>,
 }
 
 impl App {
@@ -78,6 +86,7 @@ impl App {
             background: false,
             export_wanted: false,
             export: None,
+            save: None,
         };
         app.refresh();
         app
@@ -148,12 +157,20 @@ impl App {
         self.export.as_ref()
     }
 
+    /// A preset file waiting to be written: the event loop writes it with
+    /// [`super::save::write`] and answers with [`Action::Saved`], [`Action::SaveExists`] or
+    /// [`Action::SaveFailed`], which clear it.
+    pub fn save_request(&self) -> Option<&SaveRequest> {
+        self.save.as_ref()
+    }
+
     /// What the keyboard is talking to.
     pub fn mode(&self) -> Mode {
         match self.overlay {
             Overlay::None => Mode::Normal,
             Overlay::Help => Mode::Help,
             Overlay::Input(_) => Mode::Input,
+            Overlay::Confirm(_) => Mode::Confirm,
         }
     }
 
@@ -188,27 +205,16 @@ impl App {
                 self.coarse = coarse;
                 self.info(if coarse { "coarse steps" } else { "fine steps" }.into());
             }
-            Action::OpenInput => {
-                self.overlay = Overlay::Input(Input {
-                    param: self.selected,
-                    text: String::new(),
-                    error: None,
-                })
-            }
-            Action::InputChar(c) => {
-                if let Overlay::Input(input) = &mut self.overlay
-                    && input.text.chars().count() < 24
-                {
-                    input.text.push(c);
-                }
-            }
+            Action::OpenInput => self.open_input(Purpose::Value(self.selected), String::new()),
+            Action::InputChar(c) => self.input_char(c),
             Action::InputBackspace => {
                 if let Overlay::Input(input) = &mut self.overlay {
                     input.text.pop();
                 }
             }
             Action::InputSubmit => self.submit_input(),
-            Action::InputCancel | Action::CloseHelp => self.overlay = Overlay::None,
+            Action::InputCancel => self.cancel_input(),
+            Action::CloseHelp => self.overlay = Overlay::None,
             Action::ToggleHelp => {
                 self.overlay = match self.overlay {
                     Overlay::Help => Overlay::None,
@@ -271,6 +277,15 @@ impl App {
                 self.export = None;
                 self.error(format!("export failed: {msg}"));
             }
+            Action::SavePreset => self.open_save(),
+            Action::Saved { path, replaced } => self.saved(&path, replaced),
+            Action::SaveExists { path, holds } => self.ask_overwrite(path, holds),
+            Action::SaveFailed { msg } => {
+                self.save = None;
+                self.error(format!("save failed: {msg}"));
+            }
+            Action::ConfirmYes => self.confirm(true),
+            Action::ConfirmNo => self.confirm(false),
         }
     }
 
@@ -331,38 +346,6 @@ impl App {
         }
     }
 
-    /// The sweeps the current setting and the ghost need.
-    fn speed_targets(&self) -> (SpeedRequest, Option<SpeedRequest>) {
-        let request =
-            |s: &Setting| SpeedRequest::new(&s.params, s.law, self.presets[s.preset].measured.v0);
-        (
-            request(&self.setting),
-            self.ghost.as_ref().map(|g| request(&g.setting)),
-        )
-    }
-
-    /// A finished sweep goes wherever it is (still) wanted. A failed one leaves an empty curve
-    /// for its request, so it is not asked for again.
-    fn receive_speed(&mut self, request: &SpeedRequest, result: Result<SpeedCurve, String>) {
-        let curve = result.unwrap_or_else(|e| {
-            self.error(e);
-            SpeedCurve {
-                request: request.clone(),
-                points: Vec::new(),
-            }
-        });
-        let (current, ghost) = self.speed_targets();
-        if *request == current {
-            self.speed = Some(curve.clone());
-        }
-        if let (Some(g), Some(want)) = (&mut self.ghost, ghost)
-            && *request == want
-        {
-            g.speed = Some(curve);
-        }
-        self.speed_wanted.retain(|r| r != request);
-    }
-
     /// Set `param` to `value` brought into range; a note when it had to move.
     fn set_param(&mut self, param: Param, value: f64) {
         let Some((v, moved)) = param.clamp(value) else {
@@ -383,29 +366,6 @@ impl App {
             params,
             ..self.setting.clone()
         });
-    }
-
-    fn submit_input(&mut self) {
-        let Overlay::Input(input) = &mut self.overlay else {
-            return;
-        };
-        let text = input.text.trim().to_string();
-        let param = input.param;
-        if text.is_empty() {
-            self.overlay = Overlay::None;
-            return;
-        }
-        match text.parse::<f64>() {
-            Ok(v) if v.is_finite() => {
-                self.overlay = Overlay::None;
-                self.set_param(param, v);
-            }
-            _ => {
-                let why = format!("'{text}' is not a number; {} kept", param.symbol());
-                input.error = Some(why.clone());
-                self.warn(why);
-            }
-        }
     }
 
     /// Move to `next`, remembering the current setting for undo.

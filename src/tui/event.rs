@@ -1,13 +1,16 @@
 //! The event loop: wait for an event, drain whatever else is queued (zero-timeout poll), apply
 //! it all, recompute once, draw once — a held key never builds a backlog. COR-vs-speed sweeps
 //! run on a worker thread; while one is out, the loop also wakes to collect it. The loop is
-//! also where an export (`e`) is written: the state asks for it, the loop does the file I/O and
-//! reports the outcome back as an action.
+//! also where an export (`e`) and a saved preset (`s`) are written: the state asks for them,
+//! the loop does the file I/O and reports the outcome back as an action.
 
 use super::action::{self, Action};
 use super::app::App;
 use super::export;
+use super::save;
 use super::worker::Worker;
+use crate::catalog;
+use crate::fault::Fault;
 use ratatui::DefaultTerminal;
 use ratatui::crossterm::event;
 use std::time::Duration;
@@ -17,6 +20,9 @@ const SWEEP_POLL: Duration = Duration::from_millis(40);
 
 pub fn run(terminal: &mut DefaultTerminal, app: &mut App) -> anyhow::Result<()> {
     let mut worker = Worker::spawn()?;
+    // test-only (see `crate::fault`): tests/tui_pty.rs checks that the terminal is restored
+    // after a panic in here
+    let panic_on_key = Fault::PanicInLoop.active();
     let mut dirty = true;
     while !app.should_quit() {
         if dirty {
@@ -31,6 +37,12 @@ pub fn run(terminal: &mut DefaultTerminal, app: &mut App) -> anyhow::Result<()> 
             None
         };
         while let Some(ev) = next {
+            if panic_on_key && matches!(ev, event::Event::Key(_)) {
+                panic!(
+                    "{}: test fault injected at a key press",
+                    Fault::PanicInLoop.name()
+                );
+            }
             dirty = true; // a resize, too, needs a new frame
             if let Some(a) = action::from_event(&ev, app.mode()) {
                 app.apply(a);
@@ -56,6 +68,11 @@ pub fn run(terminal: &mut DefaultTerminal, app: &mut App) -> anyhow::Result<()> 
                 Ok(files) => Action::Exported { files },
                 Err(msg) => Action::ExportFailed { msg },
             };
+            app.update(done);
+            dirty = true;
+        }
+        if let Some(request) = app.save_request() {
+            let done = save::write(request, catalog::user_presets_dir().as_deref());
             app.update(done);
             dirty = true;
         }

@@ -4,7 +4,8 @@
 //! [`app`] holds the state and `update(action)`, the only place it changes (curves are computed
 //! there, in [`compute`], with the library); [`action`] maps keys to actions; [`event`] is the
 //! loop; [`ui`] lays the screen out and [`widgets`] draw it, reading the state only; [`export`]
-//! turns the current view into SVG and CSV files (`e`): `update` only asks, the loop writes.
+//! turns the current view into SVG and CSV files (`e`) and [`save`] the current setting into a
+//! user preset file (`s`): in both `update` only asks, the loop writes.
 
 pub mod action;
 pub mod app;
@@ -13,6 +14,7 @@ pub mod event;
 pub mod export;
 pub mod format;
 pub mod param;
+pub mod save;
 pub mod state;
 pub mod theme;
 pub mod ui;

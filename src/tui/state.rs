@@ -3,6 +3,7 @@
 
 use super::compute::{SpeedCurve, ZetaCurve};
 use super::param::Param;
+use super::save::SaveRequest;
 use crate::model::contact::ContactLaw;
 use crate::model::params::ImpactParams;
 use crate::preset::Preset;
@@ -57,13 +58,31 @@ impl View {
     }
 }
 
-/// The value-entry dialog.
+/// What a text entry is for.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Purpose {
+    /// An exact value for a parameter (`=` or Enter).
+    Value(Param),
+    /// The name to save the current setting under as a user preset (`s`).
+    PresetName,
+}
+
+/// The text-entry dialog.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Input {
-    pub param: Param,
+    pub purpose: Purpose,
     pub text: String,
     /// Why the last entry was refused.
     pub error: Option<String>,
+}
+
+/// The question before a preset file is replaced: the save waits for `y` or `n`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Confirm {
+    /// The save to carry out on `y` (its `replace` names the file).
+    pub request: SaveRequest,
+    /// The preset name found in that file, when it could be read.
+    pub holds: Option<String>,
 }
 
 /// What sits on top of the charts.
@@ -72,6 +91,7 @@ pub enum Overlay {
     None,
     Help,
     Input(Input),
+    Confirm(Confirm),
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

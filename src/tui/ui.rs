@@ -4,7 +4,7 @@
 use super::app::{App, Overlay, View};
 use super::widgets::plot::Plot;
 use super::widgets::{
-    cor_speed, cor_zeta, force_time, force_zeta, help, hysteresis, input, readout, status,
+    confirm, cor_speed, cor_zeta, force_time, force_zeta, help, hysteresis, input, readout, status,
 };
 use ratatui::buffer::Buffer;
 use ratatui::layout::{Constraint, Layout, Rect};
@@ -150,6 +150,7 @@ impl Widget for &App {
             Overlay::None => {}
             Overlay::Help => help::render(self, area, buf),
             Overlay::Input(i) => input::render(self, i, area, buf),
+            Overlay::Confirm(c) => confirm::render(self, c, area, buf),
         }
     }
 }

@@ -8,7 +8,7 @@ use ratatui::text::{Line, Span};
 use ratatui::widgets::{Block, Clear, Paragraph, Widget};
 
 /// (keys, what they do)
-pub const KEYS: [(&str, &str); 22] = [
+pub const KEYS: [(&str, &str); 26] = [
     ("l / L", "λ up / down (±0.01, coarse ±0.1)"),
     ("z / Z", "ζ up / down (×1.1, coarse ×2)"),
     ("v / V", "v0 up / down (±0.1, coarse ±1 m/s)"),
@@ -24,18 +24,28 @@ pub const KEYS: [(&str, &str); 22] = [
     ("p / P", "pin curves as a ghost / clear it"),
     ("u", "undo the last change"),
     ("e", "export this view (SVG + CSV files)"),
+    ("s", "save as a user preset (asks a name)"),
     ("Tab / Shift+Tab", "switch view (impact, sweeps)"),
     ("?", "this help (Esc or ? closes)"),
     ("q  Esc  Ctrl-C", "quit"),
     ("", ""),
-    ("In the value entry", ""),
+    ("In the value or name entry", ""),
     ("Enter / Esc", "accept / cancel"),
     ("Backspace", "delete a character"),
+    ("", ""),
+    ("At \"overwrite …? y/n\"", ""),
+    ("y / n or Esc", "replace the file / keep it"),
 ];
 
 pub fn render(app: &App, area: Rect, buf: &mut Buffer) {
     let theme = Theme::new(app.color());
-    let key_w = KEYS.iter().map(|k| k.0.chars().count()).max().unwrap_or(0);
+    // section headings (rows without text) span the line: they do not widen the key column
+    let key_w = KEYS
+        .iter()
+        .filter(|k| !k.1.is_empty())
+        .map(|k| k.0.chars().count())
+        .max()
+        .unwrap_or(0);
     let text_w = KEYS.iter().map(|k| k.1.chars().count()).max().unwrap_or(0);
     let w = ((key_w + text_w + 5) as u16).min(area.width);
     let h = (KEYS.len() as u16 + 2).min(area.height);

@@ -1,7 +1,9 @@
-//! The value-entry dialog (`=` or Enter).
+//! The text-entry dialog: an exact value (`=` or Enter), or the name to save a preset under
+//! (`s`).
 
-use crate::tui::app::{App, Input};
+use crate::tui::app::{App, Input, Purpose};
 use crate::tui::format::sig_trim;
+use crate::tui::param::Param;
 use crate::tui::theme::Theme;
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
@@ -10,15 +12,41 @@ use ratatui::widgets::{Block, Clear, Paragraph, Widget};
 
 pub fn render(app: &App, input: &Input, area: Rect, buf: &mut Buffer) {
     let theme = Theme::new(app.color());
-    let p = input.param;
-    let current = sig_trim(app.setting().get(p), 6);
+    let (title, about, label, keys, width) = match input.purpose {
+        Purpose::Value(p) => {
+            let current = sig_trim(app.setting().get(p), 6);
+            (
+                format!(" Set {} ", p.symbol()),
+                format!(" range {}, now {current}{}", p.range_text(), p.unit()),
+                format!(" {} = ", p.symbol()),
+                " Enter accepts · Esc cancels",
+                44,
+            )
+        }
+        Purpose::PresetName => {
+            let s = app.setting();
+            let v = |p: Param| sig_trim(s.get(p), 4);
+            (
+                " Save as a user preset ".to_string(),
+                format!(
+                    " λ = {}, ζ = {}, v0 = {} m/s, {} law",
+                    v(Param::Lambda),
+                    v(Param::Zeta),
+                    v(Param::V0),
+                    s.law
+                ),
+                " name: ".to_string(),
+                " Enter saves · Esc cancels",
+                // room for the longest name (save::NAME_MAX) after " name: ", and for the
+                // parameters with the longest law's name
+                62,
+            )
+        }
+    };
     let mut lines = vec![
-        Line::styled(
-            format!(" range {}, now {current}{}", p.range_text(), p.unit()),
-            theme.dim(),
-        ),
+        Line::styled(about, theme.dim()),
         Line::from(vec![
-            Span::styled(format!(" {} = ", p.symbol()), theme.title()),
+            Span::styled(label, theme.title()),
             Span::raw(input.text.clone()),
             Span::styled("█", theme.dim()),
         ]),
@@ -27,8 +55,8 @@ pub fn render(app: &App, input: &Input, area: Rect, buf: &mut Buffer) {
         Some(e) => lines.push(Line::styled(format!(" {e}"), theme.warning())),
         None => lines.push(Line::raw("")),
     }
-    lines.push(Line::styled(" Enter accepts · Esc cancels", theme.dim()));
-    let w = 44.min(area.width);
+    lines.push(Line::styled(keys, theme.dim()));
+    let w = width.min(area.width);
     let h = 6.min(area.height);
     let popup = Rect::new(
         area.x + (area.width - w) / 2,
@@ -38,8 +66,6 @@ pub fn render(app: &App, input: &Input, area: Rect, buf: &mut Buffer) {
     );
     Clear.render(popup, buf);
     Paragraph::new(lines)
-        .block(
-            Block::bordered().title(Line::styled(format!(" Set {} ", p.symbol()), theme.title())),
-        )
+        .block(Block::bordered().title(Line::styled(title, theme.title())))
         .render(popup, buf);
 }

@@ -2,6 +2,7 @@
 //! here, when drawing) and render it; nothing here changes the state or runs the model.
 
 pub mod axis;
+pub mod confirm;
 pub mod cor_speed;
 pub mod cor_zeta;
 pub mod force_time;

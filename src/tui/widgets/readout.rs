@@ -169,13 +169,15 @@ pub fn render_panel(app: &App, area: Rect, buf: &mut Buffer) {
         };
         lines.push(Line::styled(note, theme.dim()));
     }
-    lines.push(Line::styled(
-        format!(
-            " measured at v0 = {} m/s",
-            sig_trim(app.preset().measured.v0, 4)
-        ),
-        theme.dim(),
-    ));
+    // a preset saved at another speed keeps no measurements, and its `[measured] v0` is only
+    // the speed it runs at: claim no measurement then
+    let m = &app.preset().measured;
+    if m.cor.is_some() || m.max_force.is_some() || m.contact_time.is_some() {
+        lines.push(Line::styled(
+            format!(" measured at v0 = {} m/s", sig_trim(m.v0, 4)),
+            theme.dim(),
+        ));
+    }
     if let Some(g) = app.ghost() {
         let gs = &g.setting;
         let name = &app.presets()[gs.preset].name;

@@ -9,7 +9,7 @@ use ratatui::widgets::Widget;
 
 /// Key hints in display order, with the rank at which they are dropped when space runs out
 /// (lower ranks stay longer).
-const HINTS: [(&str, &str, u8); 16] = [
+const HINTS: [(&str, &str, u8); 17] = [
     ("l/L", "λ", 0),
     ("z/Z", "ζ", 0),
     ("v/V", "v0", 0),
@@ -22,6 +22,7 @@ const HINTS: [(&str, &str, u8); 16] = [
     ("p/P", "pin", 3),
     ("u", "undo", 2),
     ("e", "export", 2),
+    ("s", "save", 3),
     ("r", "reset", 3),
     ("Tab", "view", 0),
     ("?", "help", 0),

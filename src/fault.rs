@@ -1,0 +1,37 @@
+//! Test-only fault injection, switched on by `BOUNCELAB_TEST_FAULT=<name>`.
+//!
+//! These switches exist so that the tests under a pseudo-terminal (`tests/tui_pty.rs`,
+//! `tests/tui_save_pty.rs`) can make the real binary fail at a chosen point: a panic inside
+//! the explorer's event loop (is the terminal restored?) and a pause in the middle of writing
+//! a preset file (does a SIGKILL there leave a truncated preset?). Nobody sets this variable in
+//! normal use; it is not documented for users.
+
+/// The environment variable that switches a fault on.
+pub const ENV: &str = "BOUNCELAB_TEST_FAULT";
+
+/// A failure a test can ask for.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Fault {
+    /// `panic-in-loop`: the explorer's event loop panics at the first key press.
+    PanicInLoop,
+    /// `pause-mid-save`: saving a preset stops for [`PAUSE`] after writing part of the
+    /// temporary file, long enough for a test to kill the process there.
+    PauseMidSave,
+}
+
+/// How long `pause-mid-save` sleeps: far longer than a test needs to send SIGKILL.
+pub const PAUSE: std::time::Duration = std::time::Duration::from_secs(30);
+
+impl Fault {
+    pub fn name(self) -> &'static str {
+        match self {
+            Fault::PanicInLoop => "panic-in-loop",
+            Fault::PauseMidSave => "pause-mid-save",
+        }
+    }
+
+    /// Whether the environment switches this fault on.
+    pub fn active(self) -> bool {
+        std::env::var_os(ENV).is_some_and(|v| v == self.name())
+    }
+}

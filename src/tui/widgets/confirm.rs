@@ -1,0 +1,51 @@
+//! The question before a preset file is overwritten: `overwrite <file>? y/n`.
+
+use crate::tui::app::{App, Confirm};
+use crate::tui::save::{question, short_path};
+use crate::tui::theme::Theme;
+use ratatui::buffer::Buffer;
+use ratatui::layout::Rect;
+use ratatui::text::Line;
+use ratatui::widgets::{Block, Clear, Paragraph, Widget, Wrap};
+
+pub fn render(app: &App, confirm: &Confirm, area: Rect, buf: &mut Buffer) {
+    let theme = Theme::new(app.color());
+    let Some(path) = &confirm.request.replace else {
+        return;
+    };
+    let mut lines = vec![
+        Line::raw(" This preset file exists:"),
+        Line::styled(format!(" {}", short_path(path)), theme.title()),
+    ];
+    // the file may hold a preset under another name: say which one is about to go
+    if let Some(holds) = confirm
+        .holds
+        .as_ref()
+        .filter(|h| **h != confirm.request.name)
+    {
+        lines.push(Line::raw(format!(" It holds the preset {holds}.")));
+    }
+    lines.push(Line::raw(""));
+    lines.push(Line::styled(
+        format!(" {}", question(path)),
+        theme.warning(),
+    ));
+    lines.push(Line::styled(
+        " y replaces it · n or Esc keeps it",
+        theme.dim(),
+    ));
+    let w = 60.min(area.width);
+    let h = (lines.len() as u16 + 2).min(area.height);
+    let popup = Rect::new(
+        area.x + (area.width - w) / 2,
+        area.y + (area.height - h) / 2,
+        w,
+        h,
+    );
+    Clear.render(popup, buf);
+    let title = format!(" Save preset {} ", confirm.request.name);
+    Paragraph::new(lines)
+        .wrap(Wrap { trim: false })
+        .block(Block::bordered().title(Line::styled(title, theme.title())))
+        .render(popup, buf);
+}
