@@ -200,6 +200,12 @@ impl ImpactParams {
 
 /// c = √(m K_p) / (2ζ), Eq. 24 inverted; ζ = 0 gives an infinitely stiff dashpot.
 pub fn damping_for_zeta(mass: f64, k_p: f64, zeta: f64) -> f64 {
+    // ζ = −0 passes `validate_lambda_zeta` (it is zero) but would divide into c = −∞, which
+    // `validate` then rejected as "invalid damping: -inf" for a ζ the caller gave (found by the
+    // solver_inputs fuzz target): both zeros are the rigid dashpot.
+    if zeta == 0.0 {
+        return f64::INFINITY;
+    }
     (mass * k_p).sqrt() / (2.0 * zeta)
 }
 
@@ -241,10 +247,13 @@ mod tests {
 
     #[test]
     fn zeta_zero_is_rigid_dashpot() {
-        let p = ImpactParams::from_normalized(1.0, 0.0, f64::INFINITY);
-        assert!(p.damping.is_infinite());
-        assert!(p.validate().is_ok());
-        assert_eq!(p.normalized().zeta, 0.0);
+        for zero in [0.0, -0.0] {
+            assert!(validate_lambda_zeta(1.0, zero).is_ok());
+            let p = ImpactParams::from_normalized(1.0, zero, f64::INFINITY);
+            assert_eq!(p.damping, f64::INFINITY);
+            assert!(p.validate().is_ok());
+            assert_eq!(p.normalized().zeta, 0.0);
+        }
     }
 
     #[test]
