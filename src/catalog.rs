@@ -143,20 +143,25 @@ pub fn read_preset_file(path: &Path) -> Result<Preset, CatalogError> {
     std::fs::File::open(path)
         .and_then(|f| f.take(MAX_FILE_BYTES + 1).read_to_end(&mut bytes))
         .map_err(|e| io(describe_io(&e)))?;
-    let origin = path.display().to_string();
+    parse_preset_bytes(bytes, &path.display().to_string()).map_err(CatalogError::Preset)
+}
+
+/// Parse the bytes of a preset file: bytes that are not UTF-8 are an error at the line:column
+/// of the first bad byte, then `Preset::parse`. (The fuzz target `preset_toml` enters here.)
+pub fn parse_preset_bytes(bytes: Vec<u8>, origin: &str) -> Result<Preset, PresetError> {
     let text = String::from_utf8(bytes).map_err(|e| {
         let valid = &e.as_bytes()[..e.utf8_error().valid_up_to()];
         let line = valid.iter().filter(|&&b| b == b'\n').count() + 1;
         let last_line = valid.rsplit(|&b| b == b'\n').next().unwrap_or(&[]);
         // the valid prefix is UTF-8, so counting chars of the last line gives the column
         let col = String::from_utf8_lossy(last_line).chars().count() + 1;
-        CatalogError::Preset(PresetError {
-            origin: origin.clone(),
+        PresetError {
+            origin: origin.to_string(),
             position: Some((line, col)),
             message: "not valid UTF-8 text (a preset file must be UTF-8)".into(),
-        })
+        }
     })?;
-    Preset::parse(&text, &origin).map_err(CatalogError::Preset)
+    Preset::parse(&text, origin)
 }
 
 /// An I/O error as a short lower-case phrase without the OS error number.

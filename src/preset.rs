@@ -153,22 +153,65 @@ fn line_col(text: &str, offset: usize) -> (usize, usize) {
     (line, col)
 }
 
-/// Where `key` is set inside `[table]` (or at the top level for ""), for semantic errors.
-fn locate(text: &str, table: &str, key: &str) -> Option<(usize, usize)> {
-    let mut current = String::new();
-    for (i, line) in text.lines().enumerate() {
-        let t = line.trim();
-        if t.starts_with('[') {
-            current = t.trim_matches(|c| c == '[' || c == ']').trim().to_string();
-            continue;
-        }
-        let lhs = t.split('=').next().unwrap_or("").trim();
-        if current == table && lhs == key && t.contains('=') {
-            let col = line.find(key).unwrap_or(0) + 1;
-            return Some((i + 1, col));
+/// A message for one line of a terminal: the line breaks of a TOML message become spaces, and
+/// other control characters (which a quoted key such as `"a\rb"` or `"\u001b[2J"` carries
+/// into "unknown field" messages) are escaped, so that they neither break the line nor reach
+/// the terminal as commands.
+fn one_line(message: &str) -> String {
+    message
+        .trim()
+        .chars()
+        .map(|c| match c {
+            '\n' => " ".to_string(),
+            c if c.is_control() => c.escape_default().to_string(),
+            c => c.to_string(),
+        })
+        .collect()
+}
+
+/// A field that fails the semantic checks: its table ("" at the top level), the layer's index
+/// for `material.layers`, its key, and why.
+struct Bad {
+    table: &'static str,
+    layer: Option<usize>,
+    key: &'static str,
+    message: String,
+}
+
+/// Where a semantic error points: the key, from the spans of the parsed document, so that
+/// every TOML spelling (headers with comments, dotted keys, inline tables, quoted keys) is
+/// found; when the key is missing (a required field), the table that lacks it; when that is
+/// missing too, the start of the file. (A line scan used to miss all of these and leave the
+/// error without line:column.)
+fn locate(text: &str, bad: &Bad) -> (usize, usize) {
+    use toml::de::{DeTable, DeValue};
+    let Ok(doc) = DeTable::parse(text) else {
+        return (1, 1);
+    };
+    let mut offset = 0;
+    let mut table: &DeTable = doc.get_ref();
+    let path = bad.table.split('.').filter(|s| !s.is_empty());
+    for segment in path.chain([bad.key]) {
+        let Some((key, value)) = table.get_key_value(segment) else {
+            break;
+        };
+        offset = key.span().start;
+        let value = match (value.get_ref(), bad.layer) {
+            (DeValue::Array(layers), Some(i)) => match layers.get(i) {
+                Some(layer) => {
+                    offset = layer.span().start;
+                    layer.get_ref()
+                }
+                None => break,
+            },
+            (v, _) => v,
+        };
+        match value {
+            DeValue::Table(t) => table = t,
+            _ => break,
         }
     }
-    None
+    line_col(text, offset)
 }
 
 impl Preset {
@@ -176,20 +219,19 @@ impl Preset {
     pub fn parse(text: &str, origin: &str) -> Result<Preset, PresetError> {
         let preset: Preset = toml::from_str(text).map_err(|e| PresetError {
             origin: origin.to_string(),
-            position: e.span().map(|s| line_col(text, s.start)),
-            message: e.message().trim().replace('\n', " "),
+            // an error without a span concerns the whole document: its start
+            position: Some(line_col(text, e.span().map_or(0, |s| s.start))),
+            message: one_line(e.message()),
         })?;
-        preset
-            .check()
-            .map_err(|(table, key, message)| PresetError {
-                origin: origin.to_string(),
-                position: locate(text, table, key).or_else(|| locate(text, "", table)),
-                message: if table.is_empty() {
-                    format!("{key}: {message}")
-                } else {
-                    format!("{table}.{key}: {message}")
-                },
-            })?;
+        preset.check().map_err(|bad| PresetError {
+            origin: origin.to_string(),
+            position: Some(locate(text, &bad)),
+            message: if bad.table.is_empty() {
+                format!("{}: {}", bad.key, bad.message)
+            } else {
+                format!("{}.{}: {}", bad.table, bad.key, bad.message)
+            },
+        })?;
         Ok(preset)
     }
 
@@ -204,17 +246,21 @@ impl Preset {
             .collect()
     }
 
-    /// Semantic checks: (table, key, message) of the first bad field.
-    fn check(&self) -> Result<(), (&'static str, &'static str, String)> {
-        fn positive(
-            table: &'static str,
-            key: &'static str,
-            v: f64,
-        ) -> Result<(), (&'static str, &'static str, String)> {
+    /// Semantic checks: the first bad field.
+    fn check(&self) -> Result<(), Bad> {
+        fn bad(table: &'static str, key: &'static str, message: String) -> Bad {
+            Bad {
+                table,
+                layer: None,
+                key,
+                message,
+            }
+        }
+        fn positive(table: &'static str, key: &'static str, v: f64) -> Result<(), Bad> {
             if v.is_finite() && v > 0.0 && v < 1e15 {
                 Ok(())
             } else {
-                Err((
+                Err(bad(
                     table,
                     key,
                     format!(
@@ -226,7 +272,7 @@ impl Preset {
         }
         let opt = |table, key, v: Option<f64>| v.map_or(Ok(()), |v| positive(table, key, v));
         if self.name.trim().is_empty() || self.name.chars().any(|c| c.is_whitespace() || c == '/') {
-            return Err((
+            return Err(bad(
                 "",
                 "name",
                 "must be a non-empty word without spaces or '/'".into(),
@@ -239,7 +285,7 @@ impl Preset {
         if let Some(e) = m.cor
             && !(e.is_finite() && (0.0..=1.0).contains(&e))
         {
-            return Err((
+            return Err(bad(
                 "measured",
                 "cor",
                 format!("must lie in [0, 1], got {}", display_number(e)),
@@ -255,7 +301,7 @@ impl Preset {
             if let Some(nu) = nu
                 && !(nu.is_finite() && (0.0..=0.5).contains(&nu))
             {
-                return Err((
+                return Err(bad(
                     "material",
                     key,
                     format!("must lie in [0, 0.5], got {}", display_number(nu)),
@@ -266,20 +312,24 @@ impl Preset {
         opt("material", "surface_modulus", mat.surface_modulus)?;
         opt("material", "density", mat.density)?;
         opt("material", "yield_strength", mat.yield_strength)?;
-        for l in &mat.layers {
-            positive("material.layers", "thickness", l.thickness)?;
-            positive("material.layers", "modulus", l.modulus)?;
-            opt("material.layers", "density", l.density)?;
+        for (i, l) in mat.layers.iter().enumerate() {
+            positive("material.layers", "thickness", l.thickness)
+                .and_then(|()| positive("material.layers", "modulus", l.modulus))
+                .and_then(|()| opt("material.layers", "density", l.density))
+                .map_err(|b| Bad {
+                    layer: Some(i),
+                    ..b
+                })?;
         }
         if mat.modulus.is_none() && mat.layers.is_empty() {
-            return Err((
+            return Err(bad(
                 "material",
                 "modulus",
                 "is required when there are no layers".into(),
             ));
         }
         if mat.kind == MaterialKind::Metal && mat.yield_strength.is_none() {
-            return Err((
+            return Err(bad(
                 "material",
                 "yield_strength",
                 "is required for kind = \"metal\"".into(),
@@ -290,7 +340,7 @@ impl Preset {
         opt("adopted", "z_p", a.z_p)?;
         opt("adopted", "k_p", a.k_p)?;
         if !(a.k_r.is_finite() && a.k_r >= 0.0 && a.k_r < 1e15) {
-            return Err((
+            return Err(bad(
                 "adopted",
                 "k_r",
                 format!(
@@ -302,7 +352,7 @@ impl Preset {
         if self.parameters == ParamSource::Adopted {
             for (key, v) in [("damping", a.damping), ("z_p", a.z_p), ("k_p", a.k_p)] {
                 if v.is_none() {
-                    return Err((
+                    return Err(bad(
                         "adopted",
                         key,
                         "is required when parameters = \"adopted\"".into(),
@@ -432,5 +482,50 @@ mod tests {
         let unknown = EMBEDDED[0].1.replace("[adopted]", "[adopted]\nspring = 3");
         let e = Preset::parse(&unknown, "x.toml").unwrap_err();
         assert!(e.to_string().contains("spring"), "{e}");
+    }
+
+    /// Found by the `preset_toml` fuzz target (fuzz/regressions/preset_toml/): errors lost
+    /// their line:column when the key was missing or written in another TOML spelling, and
+    /// control characters of a quoted key reached the one-line message.
+    #[test]
+    fn every_error_has_a_position_and_one_line() {
+        let sb = EMBEDDED[0].1;
+        let at = |text: &str| Preset::parse(text, "x.toml").unwrap_err().to_string();
+        // a comment after the table header
+        let t = sb
+            .replace("[measured]", "[measured]   # Cross")
+            .replace("v0 = 3.12 ", "v0 = 0 ");
+        assert_eq!(
+            at(&t),
+            "x.toml:11:1: measured.v0: must be a positive finite number, got 0"
+        );
+        // a required key that is missing: the table that lacks it
+        let t = sb.replace("kind = \"elastomer\"", "kind = \"metal\"");
+        assert_eq!(
+            at(&t),
+            "x.toml:16:2: material.yield_strength: is required for kind = \"metal\""
+        );
+        // dotted keys and inline tables
+        let t = "name = \"d\"\nmeasured = { mass = 1, radius = 1, v0 = -1 }\n\
+                 material.modulus = 1\nmaterial.poisson = 0.3\nadopted.k_r = 1\n";
+        assert_eq!(
+            at(t),
+            "x.toml:2:36: measured.v0: must be a positive finite number, got -1"
+        );
+        // the layer at fault, not the first one
+        let golf = EMBEDDED[1].1.replace("thickness = 5.4e-3", "thickness = 0");
+        assert!(
+            at(&golf).starts_with("x.toml:32:1: material.layers.thickness: "),
+            "{}",
+            at(&golf)
+        );
+        // control characters of a quoted key are escaped
+        let t = format!("\"a\\rb\\u001b\" = 1\n{sb}");
+        assert_eq!(at(&t).lines().count(), 1, "{:?}", at(&t));
+        assert!(
+            at(&t).starts_with("x.toml:1:1: unknown field `a\\rb\\u{1b}`"),
+            "{:?}",
+            at(&t)
+        );
     }
 }

@@ -82,6 +82,27 @@ fn zeta_to_infinity_is_springs_in_series() {
     }
 }
 
+/// The corner of the accepted range, λ = ζ = 1e6 (`LAMBDA_MAX`, `ZETA_MAX`): springs in series
+/// with K_r ≫ K_p, the contact spring alone, e → 1 and τ_f → π. Found by the solver_inputs fuzz
+/// target: the exact solver took the oscillation, twelve decades below the dashpot's rate, for
+/// the zero mode of λ = 0 and reported no rebound after 3e-10.
+#[test]
+fn largest_lambda_and_zeta_still_rebound() {
+    for (lambda, zeta) in [(1e6f64, 1e6), (1e6, 1e5), (1e5, 1e6)] {
+        let tf = PI * ((1.0 + lambda) / lambda).sqrt();
+        for r in [exact(lambda, zeta), numeric(lambda, zeta)] {
+            assert!(r.rebound, "λ={lambda} ζ={zeta} {:?}", r.method);
+            assert!(
+                (r.cor - 1.0).abs() < 1e-4,
+                "λ={lambda} ζ={zeta} e={}",
+                r.cor
+            );
+            let t = r.contact_time_normalized.unwrap();
+            assert!((t - tf).abs() < 1e-4 * tf, "λ={lambda} ζ={zeta} τ_f={t}");
+        }
+    }
+}
+
 /// F(0) = 0 and contact ends at F = 0, not at z = 0: with flattening z_f > 0 at separation.
 #[test]
 fn force_starts_and_ends_at_zero() {

@@ -126,7 +126,11 @@ impl Contact {
     /// Force on an unloading branch: linear for the bilinear law (Eq. 22), 3/2 power otherwise
     /// (Eq. 12). Zero at and below z_f: contact is lost.
     pub fn unloading_force(&self, z: f64, u: &Unloading) -> f64 {
-        if z <= u.z_f {
+        // An unloading branch entered at z_m ≤ z_f (the adaptive solver, in a stiff extreme,
+        // can place the unload event at z ≤ 0, where F = 0) carries no force; the 3/2 power of
+        // the negative ratio would be NaN and poison the whole run (found by the solver_inputs
+        // fuzz target).
+        if z <= u.z_f || u.z_m <= u.z_f {
             return 0.0;
         }
         let ratio = (z - u.z_f) / (u.z_m - u.z_f);
@@ -155,6 +159,10 @@ impl Contact {
     pub fn unloading_work(&self, z: f64, u: &Unloading) -> f64 {
         let d = (z - u.z_f).max(0.0);
         let span = u.z_m - u.z_f;
+        // no force on a degenerate branch (see `unloading_force`), so no work
+        if span <= 0.0 {
+            return 0.0;
+        }
         match self.law {
             ContactLaw::Linear => 0.5 * u.f_m * d * d / span,
             _ => 0.4 * u.f_m * pow25(d) / pow15(span),
@@ -215,6 +223,18 @@ mod tests {
             }
             // the unloading branch meets the loading one at the peak
             assert!((c.unloading_force(1.7, &u) - c.loading_force(1.7)).abs() < 1e-14);
+        }
+    }
+
+    #[test]
+    fn unloading_from_no_indentation_has_no_force() {
+        for law in ContactLaw::ALL {
+            let c = Contact { law, ..ep(0.4) };
+            let u = c.unload_from(-0.04);
+            for z in [-0.05, -0.01, 0.0, 0.3] {
+                assert_eq!(c.unloading_force(z, &u), 0.0, "{law} at {z}");
+                assert_eq!(c.unloading_work(z, &u), 0.0, "{law} at {z}");
+            }
         }
     }
 

@@ -1,0 +1,527 @@
+//! What the fuzz targets check, shared with the main crate's `tests/fuzz_regressions.rs`, which
+//! includes this file with `#[path]`: a regression input is replayed through exactly the
+//! checks that found it, on the stable toolchain, by `cargo test`.
+//!
+//! Every check panics on a violation; libFuzzer reports a panic as a crash. Only the public
+//! API is used, and only fields that exist on every branch of the solver.
+
+use arbitrary::{Arbitrary, Unstructured};
+use bouncelab::catalog::parse_preset_bytes;
+use bouncelab::model::params::validate_lambda_zeta;
+use bouncelab::preset::{ParamSource, Preset, PresetError};
+use bouncelab::solver::{EventKind, ImpactResponse, Method, SolveOptions};
+use bouncelab::{ContactLaw, ImpactParams, ParamError, simulate, simulate_normalized};
+
+/// The file name preset errors are reported against.
+pub const ORIGIN: &str = "fuzz.toml";
+
+/// The fields a `ParamError` may name for a bad input (as opposed to a solver-side failure).
+const INPUT_FIELDS: [&str; 11] = [
+    "mass", "k_p", "damping", "k_r", "z_p", "k_h", "v0", "lambda", "zeta", "zp_bar", "method",
+];
+
+// ------------------------------------------------------------------------------------------
+// preset_toml
+
+/// Bytes of a would-be preset file → the catalog's UTF-8 check and `Preset::parse`; on success
+/// everything a preset feeds: derived parameters, both parameter sets, validation, a run.
+pub fn check_preset_bytes(data: &[u8]) {
+    match parse_preset_bytes(data.to_vec(), ORIGIN) {
+        Err(e) => check_preset_error(&e, data),
+        Ok(preset) => check_preset(&preset),
+    }
+}
+
+/// A preset error is one non-empty line that names `fuzz.toml:LINE:COLUMN`, and that line and
+/// column exist in the input (the column may be one past the line's end).
+fn check_preset_error(e: &PresetError, data: &[u8]) {
+    let shown = e.to_string();
+    check_one_line(&e.message, &shown);
+    assert_eq!(e.origin, ORIGIN, "{shown:?}");
+    let Some((line, col)) = e.position else {
+        panic!("a preset error without line:column: {shown:?}");
+    };
+    assert_eq!(
+        shown,
+        format!("{ORIGIN}:{line}:{col}: {}", e.message),
+        "the display form"
+    );
+    let lines: Vec<&[u8]> = data.split(|&b| b == b'\n').collect();
+    assert!(
+        line >= 1 && line <= lines.len(),
+        "line {line} of {}: {shown:?}",
+        lines.len()
+    );
+    // a column counts characters; bytes are an upper bound (and all there is past bad UTF-8)
+    let width = lines[line - 1].len();
+    assert!(
+        col >= 1 && col <= width + 1,
+        "column {col} of a {width}-byte line: {shown:?}"
+    );
+}
+
+/// An error message: not empty, and one line: no line break and no other control character
+/// (an escape sequence would reach the terminal), so that `bouncelab: error: …` stays one
+/// line.
+fn check_one_line(message: &str, shown: &str) {
+    assert!(!message.trim().is_empty(), "an empty message: {shown:?}");
+    assert!(
+        !shown.chars().any(char::is_control),
+        "a message with a line break or control character: {shown:?}"
+    );
+}
+
+fn check_preset(preset: &Preset) {
+    let _ = preset.derived();
+    let opts = SolveOptions::default().with_samples(16).with_energy();
+    for source in [ParamSource::Adopted, ParamSource::Materials] {
+        let params = preset.params_from(source);
+        if source == preset.parameters {
+            assert!(
+                same_params(&params, &preset.params()),
+                "params() is the chosen set"
+            );
+        }
+        if source == ParamSource::Adopted {
+            // a parsed preset with parameters = "adopted" has every adopted field
+            assert!(
+                preset.parameters != ParamSource::Adopted
+                    || (params.k_p.is_finite() && params.damping.is_finite()),
+                "adopted set incomplete: {params:?}"
+            );
+        }
+        check_simulate(&params, preset.law, &opts);
+    }
+}
+
+fn same_params(a: &ImpactParams, b: &ImpactParams) -> bool {
+    let bits =
+        |p: &ImpactParams| [p.mass, p.k_p, p.damping, p.k_r, p.z_p, p.k_h, p.v0].map(f64::to_bits);
+    bits(a) == bits(b)
+}
+
+// ------------------------------------------------------------------------------------------
+// solver_inputs
+
+/// One number of a solver input: any bit pattern, a value spread evenly over the decades
+/// 1e-15 … 1e15 the parameters may take, or one of the edge values (so that the fuzzer reaches
+/// valid inputs and the boundaries as often as garbage).
+#[derive(Debug, Clone, Copy, Arbitrary)]
+pub enum Num {
+    Raw(f64),
+    Decades(u16),
+    Edge(u8),
+}
+
+const EDGES: [f64; 20] = [
+    0.0,
+    -0.0,
+    1.0,
+    -1.0,
+    f64::INFINITY,
+    f64::NEG_INFINITY,
+    f64::NAN,
+    f64::MIN_POSITIVE,
+    5e-324,
+    f64::MAX,
+    f64::MIN,
+    1e-15,
+    1e15,
+    1.000_000_000_000_000_2e15,
+    9.999_999_999_999_999e-16,
+    1e6,
+    1e-6,
+    0.5,
+    2.0,
+    1e-3,
+];
+
+impl Num {
+    pub fn value(self) -> f64 {
+        match self {
+            Num::Raw(x) => x,
+            Num::Decades(u) => 10f64.powf(-15.0 + 30.0 * f64::from(u) / f64::from(u16::MAX)),
+            Num::Edge(i) => EDGES[usize::from(i) % EDGES.len()],
+        }
+    }
+}
+
+/// Which entry point, with its raw inputs.
+#[derive(Debug, Clone, Copy, Arbitrary)]
+pub enum Entry {
+    /// `simulate` on dimensional parameters.
+    Dimensional {
+        mass: Num,
+        k_p: Num,
+        damping: Num,
+        k_r: Num,
+        z_p: Num,
+        k_h: Num,
+        v0: Num,
+    },
+    /// `simulate_normalized(λ, ζ)`.
+    Normalized { lambda: Num, zeta: Num },
+}
+
+#[derive(Debug, Clone, Copy, Arbitrary)]
+pub enum Law {
+    Linear,
+    ElasticPlastic,
+    Hertz,
+}
+
+/// `SolveOptions::method`; `Both` runs the linear law with each solver and compares them.
+#[derive(Debug, Clone, Copy, Arbitrary)]
+pub enum MethodChoice {
+    Auto,
+    Exact,
+    Numeric,
+    Both,
+}
+
+#[derive(Debug, Clone, Copy, Arbitrary)]
+pub struct SolverInput {
+    pub entry: Entry,
+    pub law: Law,
+    pub method: MethodChoice,
+    /// History samples, taken modulo 65.
+    pub samples: u8,
+    pub energy: bool,
+}
+
+/// Most history samples asked for (the CLI asks 400; the checks need only a few).
+pub const MAX_SAMPLES: usize = 64;
+
+/// Decode fuzzer bytes as the `solver_inputs` target does (`arbitrary`'s take-rest form).
+pub fn decode_solver_input(data: &[u8]) -> Option<SolverInput> {
+    SolverInput::arbitrary_take_rest(Unstructured::new(data)).ok()
+}
+
+pub fn check_solver_bytes(data: &[u8]) {
+    if let Some(input) = decode_solver_input(data) {
+        check_solver_input(&input);
+    }
+}
+
+pub fn check_solver_input(input: &SolverInput) {
+    let law = match input.law {
+        Law::Linear => ContactLaw::Linear,
+        Law::ElasticPlastic => ContactLaw::ElasticPlastic,
+        Law::Hertz => ContactLaw::Hertz,
+    };
+    let mut opts =
+        SolveOptions::default().with_samples(usize::from(input.samples) % (MAX_SAMPLES + 1));
+    if input.energy {
+        opts = opts.with_energy();
+    }
+    let methods: &[Option<Method>] = match input.method {
+        MethodChoice::Auto => &[None],
+        MethodChoice::Exact => &[Some(Method::Exact)],
+        MethodChoice::Numeric => &[Some(Method::Numeric)],
+        MethodChoice::Both => &[Some(Method::Exact), Some(Method::Numeric)],
+    };
+    let mut results = Vec::new();
+    for &method in methods {
+        let opts = SolveOptions { method, ..opts };
+        results.push(match input.entry {
+            Entry::Dimensional {
+                mass,
+                k_p,
+                damping,
+                k_r,
+                z_p,
+                k_h,
+                v0,
+            } => {
+                let params = ImpactParams {
+                    mass: mass.value(),
+                    k_p: k_p.value(),
+                    damping: damping.value(),
+                    k_r: k_r.value(),
+                    z_p: z_p.value(),
+                    k_h: k_h.value(),
+                    v0: v0.value(),
+                };
+                check_simulate(&params, law, &opts)
+            }
+            Entry::Normalized { lambda, zeta } => {
+                check_simulate_normalized(lambda.value(), zeta.value(), law, &opts)
+            }
+        });
+    }
+    if let [Some(exact), Some(numeric)] = results.as_slice() {
+        check_agreement(exact, numeric);
+    }
+}
+
+/// Below this λ the numerical solver is known to go wrong at large ζ, so the two are not
+/// compared there: its state carries ᾱ and ȳ, both of order 1/√λ, and the contact indentation
+/// z̄ = ᾱ − ȳ is their small difference; from λ ≈ 1e-7 and ζ ≳ 1e2 its events come out wrong
+/// or it stops unresolved and reports no rebound (the exact solver carries z̄ itself).
+pub const AGREEMENT_MIN_LAMBDA: f64 = 1e-6;
+
+/// Likewise below this z̄_p: the unloading slope F_m/(z_m − z_f) ~ 1/√(2 z̄_p) makes the run so
+/// stiff that the numerical solver runs out of steps and reports no rebound (an unresolved run,
+/// which the solver is to report as an error).
+pub const AGREEMENT_MIN_ZP_BAR: f64 = 1e-6;
+
+/// The exact and the numerical solver on the same linear-law impact: same outcome, and the
+/// same COR to well within what either promises (1e-8 on ordinary cases; the stiff Radau5
+/// path about 1e-7).
+fn check_agreement(exact: &ImpactResponse, numeric: &ImpactResponse) {
+    if exact.normalized.lambda < AGREEMENT_MIN_LAMBDA
+        || exact.normalized.zp_bar < AGREEMENT_MIN_ZP_BAR
+    {
+        return;
+    }
+    // near "no rebound" (e of order the integrator's rest threshold) the two may decide
+    // differently; both then say the ball barely leaves
+    if exact.rebound != numeric.rebound {
+        assert!(
+            exact.cor.max(numeric.cor) < 1e-6,
+            "exact and numeric disagree on the rebound: {exact:?} vs {numeric:?}"
+        );
+        return;
+    }
+    assert!(
+        (exact.cor - numeric.cor).abs() <= 1e-5,
+        "exact COR {} vs numeric {}",
+        exact.cor,
+        numeric.cor
+    );
+}
+
+// ------------------------------------------------------------------------------------------
+// the solver's contract, for both targets
+
+/// The error `simulate` must give, if any: the first field `validate` rejects, else the exact
+/// solver asked for a law it does not run.
+fn expected_error(
+    params: &ImpactParams,
+    law: ContactLaw,
+    opts: &SolveOptions,
+) -> Option<ParamError> {
+    params.validate().err().or_else(|| {
+        (opts.method == Some(Method::Exact) && law != ContactLaw::Linear).then_some(ParamError {
+            field: "method",
+            value: f64::NAN,
+            reason: "",
+        })
+    })
+}
+
+/// `simulate`: invalid input is an error naming the field `validate` names; valid input gives a
+/// response that keeps the contract (`check_response`). Returns the response.
+pub fn check_simulate(
+    params: &ImpactParams,
+    law: ContactLaw,
+    opts: &SolveOptions,
+) -> Option<ImpactResponse> {
+    let result = simulate(params, law, opts);
+    check_result(result, expected_error(params, law, opts), params, law, opts)
+}
+
+/// `simulate_normalized(λ, ζ)`: the same contract, on the normalized ball.
+pub fn check_simulate_normalized(
+    lambda: f64,
+    zeta: f64,
+    law: ContactLaw,
+    opts: &SolveOptions,
+) -> Option<ImpactResponse> {
+    let result = simulate_normalized(lambda, zeta, law, opts);
+    let params = ImpactParams::from_normalized(lambda, zeta, f64::INFINITY);
+    let expected = match validate_lambda_zeta(lambda, zeta) {
+        Err(e) => Some(e),
+        Ok(()) => {
+            // a pair that passes its own check makes a valid ball
+            if let Err(e) = params.validate() {
+                panic!("λ = {lambda:e}, ζ = {zeta:e} pass validate_lambda_zeta, not validate: {e}");
+            }
+            expected_error(&params, law, opts)
+        }
+    };
+    let response = check_result(result, expected, &params, law, opts)?;
+    let n = response.normalized;
+    assert!(
+        close(n.lambda, lambda, 1e-12) && close(n.zeta, zeta, 1e-12),
+        "asked λ = {lambda:e}, ζ = {zeta:e}; ran {n:?}"
+    );
+    Some(response)
+}
+
+fn close(a: f64, b: f64, rel: f64) -> bool {
+    (a - b).abs() <= rel * a.abs().max(b.abs())
+}
+
+fn check_result(
+    result: Result<ImpactResponse, ParamError>,
+    expected: Option<ParamError>,
+    params: &ImpactParams,
+    law: ContactLaw,
+    opts: &SolveOptions,
+) -> Option<ImpactResponse> {
+    match (result, expected) {
+        (Err(e), Some(want)) => {
+            check_param_error(&e);
+            assert_eq!(e.field, want.field, "{e} for {params:?}");
+            if want.field != "method" {
+                assert!(
+                    e.value.to_bits() == want.value.to_bits()
+                        || (e.value.is_nan() && want.value.is_nan()),
+                    "{e}: the value is not the one validate names ({})",
+                    want.value
+                );
+            }
+            None
+        }
+        (Err(e), None) => {
+            // valid input may fail only for a reason of the solver's own, never by naming an
+            // input field that validate accepted
+            check_param_error(&e);
+            assert!(
+                !INPUT_FIELDS.contains(&e.field),
+                "{e} for input that validates: {params:?}"
+            );
+            None
+        }
+        (Ok(r), Some(want)) => {
+            panic!("simulate accepted input that should fail with {want}: {params:?} → {r:?}")
+        }
+        (Ok(r), None) => {
+            check_response(&r, params, law, opts);
+            Some(r)
+        }
+    }
+}
+
+fn check_param_error(e: &ParamError) {
+    let shown = e.to_string();
+    check_one_line(e.reason, &shown);
+    assert!(!e.field.is_empty(), "{shown:?}");
+    assert!(
+        shown.starts_with(&format!("invalid {}: ", e.field)),
+        "the message names the field: {shown:?}"
+    );
+}
+
+/// The response of a run on valid input: finite numbers, 0 ≤ e ≤ 1, a contact time exactly
+/// when the ball rebounds, a history that starts at rest at t = 0, an energy budget when asked.
+pub fn check_response(r: &ImpactResponse, p: &ImpactParams, law: ContactLaw, opts: &SolveOptions) {
+    let ctx = || format!("{p:?}, {law}, {opts:?}");
+    assert_eq!(r.law, law);
+    let exact = law == ContactLaw::Linear && opts.method != Some(Method::Numeric);
+    assert_eq!(
+        r.method,
+        if exact {
+            Method::Exact
+        } else {
+            Method::Numeric
+        },
+        "{}",
+        ctx()
+    );
+    for (name, v) in [
+        ("cor", r.cor),
+        ("max_force", r.max_force),
+        ("duration", r.duration),
+        ("max_indentation", r.max_indentation),
+        ("permanent_indentation", r.permanent_indentation),
+        ("max_force_normalized", r.max_force_normalized),
+    ] {
+        assert!(v.is_finite() && v >= 0.0, "{name} = {v}: {}", ctx());
+    }
+    assert!((0.0..=1.0).contains(&r.cor), "cor = {}: {}", r.cor, ctx());
+    assert_eq!(
+        r.contact_time.is_some(),
+        r.rebound,
+        "contact time iff rebound: {}",
+        ctx()
+    );
+    assert_eq!(r.contact_time_normalized.is_some(), r.rebound, "{}", ctx());
+    if let (Some(t), Some(tau)) = (r.contact_time, r.contact_time_normalized) {
+        assert!(t.is_finite() && t > 0.0, "contact time {t}: {}", ctx());
+        assert!(tau.is_finite() && tau > 0.0, "τ_f {tau}: {}", ctx());
+    }
+    if !r.rebound {
+        assert_eq!(r.cor, 0.0, "no rebound, e = 0: {}", ctx());
+    }
+    assert!(
+        r.permanent_indentation <= r.max_indentation,
+        "z_f {} above z_m {}: {}",
+        r.permanent_indentation,
+        r.max_indentation,
+        ctx()
+    );
+    // events: finite, in time order, within the run; a separation last exactly on rebound
+    let mut t_prev = 0.0;
+    for e in &r.events {
+        assert!(e.t.is_finite() && e.z.is_finite(), "{e:?}: {}", ctx());
+        assert!(
+            e.t >= t_prev && e.t <= r.duration,
+            "{e:?} out of order: {}",
+            ctx()
+        );
+        t_prev = e.t;
+    }
+    assert_eq!(
+        r.events.last().map(|e| e.kind) == Some(EventKind::Separation),
+        r.rebound,
+        "a separation event iff rebound: {:?}: {}",
+        r.events,
+        ctx()
+    );
+    // history
+    let h = &r.history;
+    let n = opts.samples;
+    for (name, v) in [
+        ("t", &h.t),
+        ("force", &h.force),
+        ("indentation", &h.indentation),
+        ("displacement", &h.displacement),
+    ] {
+        assert_eq!(v.len(), n, "history {name} has {} samples of {n}", v.len());
+        assert!(
+            v.iter().all(|x| x.is_finite()),
+            "history {name} not finite: {v:?}: {}",
+            ctx()
+        );
+    }
+    if n > 0 {
+        assert_eq!(h.t[0], 0.0, "history starts at t = 0: {}", ctx());
+        assert_eq!(h.force[0], 0.0, "history starts at F = 0: {}", ctx());
+        assert!(
+            h.t.windows(2).all(|w| w[0] <= w[1]),
+            "history t not increasing: {:?}",
+            h.t
+        );
+        assert!(
+            h.force.iter().all(|&f| f >= 0.0),
+            "negative force: {:?}: {}",
+            h.force,
+            ctx()
+        );
+    }
+    // energy
+    if opts.energy {
+        assert!(r.energy.is_some(), "energy asked, none given: {}", ctx());
+    }
+    if let Some(b) = r.energy {
+        for (name, v) in [
+            ("initial_kinetic", b.initial_kinetic),
+            ("final_kinetic", b.final_kinetic),
+            ("dashpot", b.dashpot),
+            ("contact", b.contact),
+            ("spring", b.spring),
+            ("relative_residual", b.relative_residual()),
+        ] {
+            assert!(v.is_finite(), "energy {name} = {v}: {b:?}: {}", ctx());
+        }
+        assert!(b.initial_kinetic > 0.0, "{b:?}: {}", ctx());
+        // the dashpot only dissipates; its integral may round a hair below zero
+        assert!(
+            b.final_kinetic >= 0.0 && b.spring >= 0.0 && b.dashpot >= -1e-12 * b.initial_kinetic,
+            "{b:?}: {}",
+            ctx()
+        );
+    }
+}
