@@ -10,7 +10,7 @@ use bouncelab::catalog::parse_preset_bytes;
 use bouncelab::model::params::validate_lambda_zeta;
 use bouncelab::preset::{ParamSource, Preset, PresetError};
 use bouncelab::solver::{EventKind, ImpactResponse, Method, SolveOptions};
-use bouncelab::{ContactLaw, ImpactParams, ParamError, simulate, simulate_normalized};
+use bouncelab::{ContactLaw, ImpactParams, ParamError, SolveError, simulate, simulate_normalized};
 
 /// The file name preset errors are reported against.
 pub const ORIGIN: &str = "fuzz.toml";
@@ -354,12 +354,26 @@ fn close(a: f64, b: f64, rel: f64) -> bool {
 }
 
 fn check_result(
-    result: Result<ImpactResponse, ParamError>,
+    result: Result<ImpactResponse, SolveError>,
     expected: Option<ParamError>,
     params: &ImpactParams,
     law: ContactLaw,
     opts: &SolveOptions,
 ) -> Option<ImpactResponse> {
+    let result = match result {
+        Ok(r) => Ok(r),
+        Err(SolveError::Param(e)) => Err(e),
+        // "no answer" (a step budget ran out) is an honest outcome for valid input only, and
+        // in one line
+        Err(e @ SolveError::Unresolved { .. }) => {
+            let msg = e.to_string();
+            assert!(
+                expected.is_none() && !msg.contains('\n') && !msg.is_empty(),
+                "{msg} for {params:?} (expected {expected:?})"
+            );
+            return None;
+        }
+    };
     match (result, expected) {
         (Err(e), Some(want)) => {
             check_param_error(&e);
@@ -517,9 +531,11 @@ pub fn check_response(r: &ImpactResponse, p: &ImpactParams, law: ContactLaw, opt
             assert!(v.is_finite(), "energy {name} = {v}: {b:?}: {}", ctx());
         }
         assert!(b.initial_kinetic > 0.0, "{b:?}: {}", ctx());
-        // the dashpot only dissipates; its integral may round a hair below zero
+        // the dashpot only dissipates; its integral may come out a little below zero, by no
+        // more than the integrator's energy tolerance (Radau5's is loose: see `audit`)
+        let tol = bouncelab::solver::audit::energy_tolerance(r);
         assert!(
-            b.final_kinetic >= 0.0 && b.spring >= 0.0 && b.dashpot >= -1e-12 * b.initial_kinetic,
+            b.final_kinetic >= 0.0 && b.spring >= 0.0 && b.dashpot >= -tol * b.initial_kinetic,
             "{b:?}: {}",
             ctx()
         );
