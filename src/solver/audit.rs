@@ -5,13 +5,19 @@
 
 use super::{ImpactResponse, Method};
 
-/// The most steps one impact may take. Exact solver: 64 phases of at most 20 000 propagator
-/// steps. Adaptive solver: a new phase starts only while fewer than 1 000 000 steps have been
-/// taken, and one phase takes at most 20 000 (DOPRI5) + 100 000 (Radau5) + 100 000 (DOPRI5)
-/// steps plus at most 100 000 to re-integrate to its event; twice over when samples are asked
-/// for (the sampling run repeats the summary run). A run that reaches a budget is reported as
-/// unresolved, never as an answer.
-pub const STEP_BOUND: usize = 2 * (1_000_000 + 320_000);
+/// The most steps one impact may take, from the solvers' budgets. Exact solver: its phases
+/// times its steps a phase. Adaptive solver: a new phase starts only while the impact's
+/// budget is not spent, and one phase takes at most DOPRI5's short budget, then Radau5's and
+/// DOPRI5's full ones, plus one more full budget to re-integrate to its event; twice over when
+/// samples are asked for (the sampling run repeats the summary run). A run that reaches a
+/// budget is reported as unresolved, never as an answer.
+pub const STEP_BOUND: usize = {
+    use super::{exact, numeric};
+    let exact = exact::MAX_PHASES * exact::MAX_STEPS;
+    let phase = numeric::EXPLICIT_STEPS + 3 * numeric::MAX_STEPS;
+    let numeric = 2 * (numeric::TOTAL_STEPS + phase);
+    if exact > numeric { exact } else { numeric }
+};
 
 /// The energy balance each integrator closes to, relative to ½ m v0² (what the property tests
 /// hold it to, and what the README states), from 20 000 random impacts over the property

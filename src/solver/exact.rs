@@ -17,9 +17,9 @@ use crate::model::params::Normalized;
 use nalgebra::{Matrix3, Vector3};
 
 /// More phase switches than this would mean a reload cycle that never settles.
-const MAX_PHASES: usize = 64;
+pub(super) const MAX_PHASES: usize = 64;
 /// Hard cap on search steps per phase (the step rule reaches every event in far fewer).
-const MAX_STEPS: usize = 20_000;
+pub(super) const MAX_STEPS: usize = 20_000;
 
 /// The contact indentation z̄ − s (or a derivative) as a functional of w.
 fn l(v: &Vector3<f64>) -> f64 {

@@ -12,10 +12,12 @@ use super::{EventKind, Outcome, SolveOptions};
 use crate::model::contact::{Contact, ContactLaw, Unloading};
 use crate::model::params::Normalized;
 use differential_equations::interpolate::Interpolation;
-use differential_equations::methods::{ExplicitRungeKutta, ImplicitRungeKutta};
-use differential_equations::ode::{ODE, OrdinaryNumericalMethod, solve_ode};
+use differential_equations::ode::ODE;
 use differential_equations::prelude::{ControlFlag, Solout};
 use differential_equations::solution::Solution;
+use integrator::{EndState, Integrator, RunStats, solve_with};
+
+mod integrator;
 
 type X = [f64; 4];
 
@@ -25,20 +27,20 @@ type X = [f64; 4];
 /// each flip a short phase. What bounds the work is `TOTAL_STEPS`.
 const MAX_PHASES: usize = 4096;
 /// Step budget of one impact, over all its phases.
-const TOTAL_STEPS: usize = 1_000_000;
+pub(super) const TOTAL_STEPS: usize = 1_000_000;
 /// Absolute tolerance relative to rtol (normalized states are of order 1).
 const ATOL_FACTOR: f64 = 1e-3;
 /// Step budget of one Radau5 integration.
-const MAX_STEPS: usize = 100_000;
+pub(super) const MAX_STEPS: usize = 100_000;
 /// Step budget of DOPRI5 in one phase before Radau5 takes the rest of it over: a phase that
 /// long is one where the dashpot, though not stiff by `STIFF`, creeps for many of its own time
 /// constants (λ = 0 with a weak dashpot: the ball sinks in for ~40ζ), holding DOPRI5 to its
 /// stability limit the whole way.
-const EXPLICIT_STEPS: usize = 20_000;
+pub(super) const EXPLICIT_STEPS: usize = 20_000;
 /// Above this stiffness (fastest dashpot rate 2ζ(1+λ), in units of ω0) DOPRI5 would be held
 /// to its stability limit (a few thousand steps an impact at this value); Radau5 takes over.
-/// Radau5 as the crate implements it reaches about 1e-7 relative in COR and energy, DOPRI5 the
-/// asked tolerance, so DOPRI5 keeps every case it can do in bounded time.
+/// Radau5 as the crate implements it holds COR and the energy balance less tightly than DOPRI5
+/// (see `audit::energy_tolerance`), so DOPRI5 keeps every case it can do in bounded time.
 const STIFF: f64 = 2000.0;
 /// A ball whose remaining energy could not give it a COR above this has come to rest.
 const REST_COR: f64 = 1e-9;
@@ -269,108 +271,6 @@ fn integrate<'a>(
     w
 }
 
-/// The integrator of one run: DOPRI5 with its step budget, or Radau5 (budget `MAX_STEPS`).
-#[derive(Clone, Copy, PartialEq, Eq, Debug)]
-enum Integrator {
-    Dopri5(usize),
-    Radau5,
-}
-
-/// What one integration cost (at most: a failed run counts its whole budget), and whether the
-/// integrator gave up.
-struct RunStats {
-    steps: usize,
-    failed: bool,
-}
-
-/// One integration with `method`.
-fn solve_with<O: Solout<f64, X>>(
-    imp: &Impact,
-    t0: f64,
-    x0: X,
-    tf: f64,
-    rtol: f64,
-    method: Integrator,
-    out: &mut O,
-) -> RunStats {
-    let atol = rtol * ATOL_FACTOR;
-    if let Integrator::Dopri5(budget) = method {
-        let mut m = ExplicitRungeKutta::dopri5()
-            .rtol(rtol)
-            .atol(atol)
-            .max_steps(budget);
-        run(&mut m, budget, imp, t0, x0, tf, out)
-    } else {
-        // Radau5 (as Hairer's original) replaces a tolerance r by 0.1 r^(2/3) before use; hand
-        // it the pre-image so that it runs at the tolerance asked for.
-        let (rtol, atol) = (
-            (10.0 * rtol).powf(1.5).max(1e-14),
-            (10.0 * atol).powf(1.5).max(1e-16),
-        );
-        let mut m = ImplicitRungeKutta::radau5()
-            .rtol(rtol)
-            .atol(atol)
-            .max_steps(MAX_STEPS);
-        run(&mut m, MAX_STEPS, imp, t0, x0, tf, out)
-    }
-}
-
-/// Integrate from t0 to tf into `out`. The crate's errors (out of steps, step size underflow)
-/// carry no state `out` does not already hold; what is kept is that the run failed, and its
-/// cost (an error does not say how many steps it took: out of steps counts as the budget).
-fn run<S, O>(
-    m: &mut S,
-    budget: usize,
-    imp: &Impact,
-    t0: f64,
-    x0: X,
-    tf: f64,
-    out: &mut O,
-) -> RunStats
-where
-    S: OrdinaryNumericalMethod<f64, X> + Interpolation<f64, X>,
-    O: Solout<f64, X>,
-{
-    if t0 >= tf {
-        return RunStats {
-            steps: 0,
-            failed: false,
-        };
-    }
-    match solve_ode(m, imp, t0, tf, &x0, out) {
-        Ok(sol) => RunStats {
-            steps: sol.steps.accepted + sol.steps.rejected,
-            failed: false,
-        },
-        Err(_) => RunStats {
-            // the error does not say how many steps were taken: at most the budget
-            steps: budget,
-            failed: true,
-        },
-    }
-}
-
-/// A solout that keeps only the final state.
-struct EndState(X);
-
-impl Solout<f64, X> for EndState {
-    fn solout<I>(
-        &mut self,
-        _t: f64,
-        _tp: f64,
-        y: &X,
-        _yp: &X,
-        _i: &mut I,
-        _s: &mut Solution<f64, X>,
-    ) -> ControlFlag<f64, X>
-    where
-        I: Interpolation<f64, X> + ?Sized,
-    {
-        self.0 = *y;
-        ControlFlag::Continue
-    }
-}
-
 /// How long to follow a ball that may never leave: a hundred times the sum of the contact
 /// times (linear spring π; Hertz alone 2.94 z̄_m with z̄_m = (5/(4κ))^{2/5}, long when the
 /// contact is soft against the speed), the dashpot creep time 2ζ and the recoil relaxation
@@ -440,8 +340,7 @@ fn run_phases(
         // A loading phase that begins with z̄' ≤ 0 (a reload or a yield met at the turning
         // point itself) has already turned: its unload is now. Watching for z̄' to fall
         // through 0 would never fire, and the ball would leave on the loading branch.
-        if matches!(imp.phase, Phase::Loading) && t > 0.0 && x[1] - imp.force_and_rate(&x).1 <= 0.0
-        {
+        if matches!(imp.phase, Phase::Loading) && t > 0.0 && Watch::RateFalls.g(&imp, &x) <= 0.0 {
             out.events.push((t, EventKind::Unload, z0));
             imp.phase = Phase::Unloading(contact.unload_from(z0));
         }
