@@ -185,7 +185,7 @@ impl std::fmt::Display for SolveError {
             } => write!(
                 f,
                 "no answer at λ = {}, ζ = {}: {reason} ({steps} steps); \
-                 try a looser --rtol or a nearby λ, ζ",
+                 a nearby λ or ζ may answer",
                 display_number(*lambda),
                 display_number(*zeta)
             ),
