@@ -320,30 +320,3 @@ fn presets_lists_the_three_balls() {
     assert_eq!(names, ["superball", "golf", "baseball"]);
     assert!((f(&v[2], "zeta") - 0.6067).abs() < 1e-3);
 }
-
-/// A run the solver cannot bring to an end is "no answer": one line naming λ and ζ, exit 1
-/// (not the input's fault), nothing on stdout, never a truncated run printed as no rebound.
-#[test]
-fn no_answer_is_one_line_and_exit_1() {
-    let o = bl(&[
-        "run",
-        "--normalized",
-        "--lambda",
-        "0",
-        "--zeta",
-        "10000",
-        "--zp-bar",
-        "1e-3",
-        "--law",
-        "hertz",
-    ]);
-    assert_eq!(o.code, 1, "{}", o.stderr);
-    assert!(o.stdout.is_empty(), "{}", o.stdout);
-    assert_eq!(o.stderr.lines().count(), 1, "{}", o.stderr);
-    assert!(
-        o.stderr
-            .starts_with("bouncelab: error: no answer at λ = 0, ζ = 10000: "),
-        "{}",
-        o.stderr
-    );
-}

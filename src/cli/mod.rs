@@ -87,20 +87,35 @@ pub fn main() -> ExitCode {
 }
 
 fn fail(e: anyhow::Error) -> ExitCode {
+    match report(&e) {
+        None => ExitCode::SUCCESS,
+        Some((code, line)) => {
+            eprintln!("{line}");
+            ExitCode::from(code)
+        }
+    }
+}
+
+/// The exit code and the one line an error ends the command line with: 1 for what is not the
+/// input's fault (I/O, the explorer, an impact without an answer), 2 for bad input; `None`
+/// for a closed pipe (`bouncelab … | head`), which is no error.
+fn report(e: &anyhow::Error) -> Option<(u8, String)> {
     let io_kind = e
         .chain()
         .find_map(|c| c.downcast_ref::<io::Error>())
         .map(io::Error::kind);
     if io_kind == Some(io::ErrorKind::BrokenPipe) {
-        return ExitCode::SUCCESS;
+        return None;
     }
     let code = if io_kind.is_some() || e.downcast_ref::<Runtime>().is_some() {
         1
     } else {
         2
     };
-    eprintln!("bouncelab: error: {}", one_line(&format!("{e:#}")));
-    ExitCode::from(code)
+    Some((
+        code,
+        format!("bouncelab: error: {}", one_line(&format!("{e:#}"))),
+    ))
 }
 
 /// Any message as one line.
@@ -219,4 +234,42 @@ fn explorer(preset: Option<String>, config: Option<PathBuf>) -> anyhow::Result<(
     }
     let entry = ball::select(preset.as_deref(), config.as_deref())?;
     crate::tui::run(entry.preset).map_err(|e| Runtime(e).into())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::{SolveError, model::params::ParamError};
+
+    /// No input known reaches "no answer" (the property tests hold the solvers to an answer
+    /// over the whole domain), so its path is checked here rather than through the binary:
+    /// one line naming λ and ζ, exit 1 (not the input's fault).
+    #[test]
+    fn no_answer_is_one_line_and_exit_1() {
+        let e = ball::solve_error(SolveError::Unresolved {
+            reason: "the step budget of the impact ran out",
+            steps: 1_000_001,
+            lambda: 0.0,
+            zeta: 1e4,
+        });
+        let (code, line) = report(&e).unwrap();
+        assert_eq!(code, 1);
+        assert_eq!(
+            line,
+            "bouncelab: error: no answer at λ = 0, ζ = 10000: the step budget of the impact \
+             ran out (1000001 steps); a nearby λ or ζ may answer"
+        );
+    }
+
+    #[test]
+    fn bad_parameters_are_exit_2() {
+        let e = ball::solve_error(SolveError::Param(ParamError {
+            field: "zeta",
+            value: f64::NAN,
+            reason: "not a number",
+        }));
+        let (code, line) = report(&e).unwrap();
+        assert_eq!(code, 2);
+        assert!(line.contains("zeta") && !line.contains('\n'), "{line}");
+    }
 }

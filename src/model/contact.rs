@@ -124,7 +124,11 @@ impl Contact {
     }
 
     /// Force on an unloading branch: linear for the bilinear law (Eq. 22), 3/2 power otherwise
-    /// (Eq. 12). Zero at and below z_f: contact is lost.
+    /// (Eq. 12). Zero at and below z_f: contact is lost. Past z_m the branch goes on by the
+    /// same formula: a reload switches to the loading law there (MODEL.md §3), but the adaptive
+    /// solver switches a hair past z_m (see `solver::numeric::RELOAD_SLACK`), and the branch
+    /// must stay smooth up to the switch, for a stiff integrator's Newton iteration stalls on a
+    /// kink in the force.
     pub fn unloading_force(&self, z: f64, u: &Unloading) -> f64 {
         // An unloading branch entered at z_m ≤ z_f (the adaptive solver, in a stiff extreme,
         // can place the unload event at z ≤ 0, where F = 0) carries no force; the 3/2 power of
@@ -137,6 +141,41 @@ impl Contact {
         match self.law {
             ContactLaw::Linear => u.f_m * ratio,
             _ => u.f_m * pow15(ratio),
+        }
+    }
+
+    /// The indentation at which the loading branch carries force `f` ≥ 0: the inverse of
+    /// `loading_force` (Eqs. 10–11, 21, 7).
+    pub fn loading_indentation(&self, f: f64) -> f64 {
+        let f = f.max(0.0);
+        let hertz = |f: f64| (f / self.kappa).powf(2.0 / 3.0);
+        match self.law {
+            ContactLaw::Linear => f,
+            ContactLaw::Hertz => hertz(f),
+            ContactLaw::ElasticPlastic => {
+                let f_p = self.kappa * pow15(self.zp_bar);
+                if f <= f_p {
+                    hertz(f)
+                } else {
+                    self.zp_bar + (f - f_p)
+                }
+            }
+        }
+    }
+
+    /// The indentation at which the ball, on unloading branch `u`, carries force `f` ≥ 0: the
+    /// inverse of `unloading_force` up to F̄_m (Eqs. 12, 22), and of the loading branch above
+    /// it (where a reload continues).
+    pub fn unloading_indentation(&self, f: f64, u: &Unloading) -> f64 {
+        let f = f.max(0.0);
+        if f >= u.f_m || u.z_m <= u.z_f {
+            return self.loading_indentation(f).max(u.z_m);
+        }
+        let ratio = f / u.f_m;
+        let span = u.z_m - u.z_f;
+        match self.law {
+            ContactLaw::Linear => u.z_f + span * ratio,
+            _ => u.z_f + span * ratio.powf(2.0 / 3.0),
         }
     }
 
@@ -157,12 +196,12 @@ impl Contact {
 
     /// ∫ F dz along an unloading branch from z_f to z.
     pub fn unloading_work(&self, z: f64, u: &Unloading) -> f64 {
-        let d = (z - u.z_f).max(0.0);
         let span = u.z_m - u.z_f;
         // no force on a degenerate branch (see `unloading_force`), so no work
         if span <= 0.0 {
             return 0.0;
         }
+        let d = (z - u.z_f).max(0.0);
         match self.law {
             ContactLaw::Linear => 0.5 * u.f_m * d * d / span,
             _ => 0.4 * u.f_m * pow25(d) / pow15(span),
@@ -223,6 +262,27 @@ mod tests {
             }
             // the unloading branch meets the loading one at the peak
             assert!((c.unloading_force(1.7, &u) - c.loading_force(1.7)).abs() < 1e-14);
+        }
+    }
+
+    #[test]
+    fn indentation_inverts_force() {
+        for law in ContactLaw::ALL {
+            let c = Contact { law, ..ep(0.4) };
+            let u = c.unload_from(1.7);
+            for z in [0.0, 0.1, 0.39, 0.4, 0.41, 1.2, 1.7, 2.5] {
+                let back = c.loading_indentation(c.loading_force(z));
+                assert!((back - z).abs() < 1e-12, "{law} loading at {z}: {back}");
+                if z >= u.z_f {
+                    let f = if z <= u.z_m {
+                        c.unloading_force(z, &u)
+                    } else {
+                        c.loading_force(z)
+                    };
+                    let back = c.unloading_indentation(f, &u);
+                    assert!((back - z).abs() < 1e-12, "{law} unloading at {z}: {back}");
+                }
+            }
         }
     }
 

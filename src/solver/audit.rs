@@ -7,14 +7,14 @@ use super::{ImpactResponse, Method};
 
 /// The most steps one impact may take, from the solvers' budgets. Exact solver: its phases
 /// times its steps a phase. Adaptive solver: a new phase starts only while the impact's
-/// budget is not spent, and one phase takes at most DOPRI5's short budget, then Radau5's and
-/// DOPRI5's full ones, plus one more full budget to re-integrate to its event; twice over when
-/// samples are asked for (the sampling run repeats the summary run). A run that reaches a
-/// budget is reported as unresolved, never as an answer.
+/// budget is not spent, and one phase takes at most every budget of its integrator cascade,
+/// then again to re-integrate to its event; twice over when samples are asked for (the
+/// sampling run repeats the summary run). A run that reaches a budget is reported as
+/// unresolved, never as an answer.
 pub const STEP_BOUND: usize = {
     use super::{exact, numeric};
     let exact = exact::MAX_PHASES * exact::MAX_STEPS;
-    let phase = numeric::EXPLICIT_STEPS + 3 * numeric::MAX_STEPS;
+    let phase = 2 * numeric::CASCADE_BUDGET;
     let numeric = 2 * (numeric::TOTAL_STEPS + phase);
     if exact > numeric { exact } else { numeric }
 };

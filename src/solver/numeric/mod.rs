@@ -15,7 +15,7 @@ use differential_equations::interpolate::Interpolation;
 use differential_equations::ode::ODE;
 use differential_equations::prelude::{ControlFlag, Solout};
 use differential_equations::solution::Solution;
-use integrator::{EndState, Integrator, RunStats, solve_with};
+use integrator::{CASCADE, EndState, STIFF_ENTRY, solve_with};
 
 mod integrator;
 
@@ -30,14 +30,20 @@ const MAX_PHASES: usize = 4096;
 pub(super) const TOTAL_STEPS: usize = 1_000_000;
 /// Absolute tolerance relative to rtol (normalized states are of order 1).
 const ATOL_FACTOR: f64 = 1e-3;
-/// Step budget of one Radau5 integration.
-pub(super) const MAX_STEPS: usize = 100_000;
-/// Step budget of DOPRI5 in one phase before Radau5 takes the rest of it over: a phase that
-/// long is one where the dashpot, though not stiff by `STIFF`, creeps for many of its own time
-/// constants (λ = 0 with a weak dashpot: the ball sinks in for ~40ζ), holding DOPRI5 to its
-/// stability limit the whole way.
-pub(super) const EXPLICIT_STEPS: usize = 20_000;
-/// Above this stiffness (fastest dashpot rate 2ζ(1+λ), in units of ω0) DOPRI5 would be held
+pub(super) use integrator::CASCADE_BUDGET;
+/// How far, in units of the integrator's tolerance on the watched quantity, the integration to
+/// an event may end short of the crossing and still confirm it (see `integrate`).
+const EVENT_SLACK: f64 = 1e3;
+/// How far past z̄_m, in units of the tolerance on z̄, the ball must rise before an unloading
+/// phase turns back to loading. At a slow turning point (a ball creeping into a weak dashpot
+/// against a soft recoil spring, z̄ within 1e-13 of z̄_m for many ω0⁻¹) the integrator's noise
+/// would otherwise cross z̄_m back and forth, a phase each time, until the phase budget ran
+/// out. Between z̄_m and the switch the unloading branch goes on smoothly past z̄_m (see
+/// `Contact::unloading_force`); the force there is set by the slow motion (F̄ ≈ λȳ + ᾱ'/2ζ on
+/// the creeping manifold) whatever the branch, so what the late switch moves is z̄ by at most
+/// this much, and the peak the next unloading starts from.
+pub(crate) const RELOAD_SLACK: f64 = 100.0;
+/// Above this stiffness (fastest dashpot rate, see `Impact::dashpot_rate`) DOPRI5 would be held
 /// to its stability limit (a few thousand steps an impact at this value); Radau5 takes over.
 /// Radau5 as the crate implements it holds COR and the energy balance less tightly than DOPRI5
 /// (see `audit::energy_tolerance`), so DOPRI5 keeps every case it can do in bounded time.
@@ -65,16 +71,68 @@ impl Impact {
             Phase::Unloading(u) => self.contact.unloading_force(z, &u),
         }
     }
-    /// An upper bound on the kinetic energy the ball can still leave with (normalized, units of
-    /// m v0²): its kinetic energy, the recoverable energy of the contact on the current branch,
-    /// and the recoil spring's. The dashpot only takes energy away, so e ≤ √(2 E).
-    fn available_energy(&self, x: &X) -> f64 {
-        let z = x[0];
+    /// An upper bound on the COR the ball can still leave with, from state x.
+    ///
+    /// Energy: the kinetic energy, the recoverable energy of the contact on the current branch
+    /// and the recoil spring's; the dashpot only takes energy away, so e ≤ √(2 E).
+    ///
+    /// Impulse, with no recoil spring (λ = 0): the dashpot then carries the whole force,
+    /// ȳ' = 2ζF̄, so z̄' = ᾱ' − 2ζF̄ ≤ −2ζF̄ once the ball moves out (ᾱ' ≤ 0, and it stays so,
+    /// ᾱ'' = −F̄ ≤ 0). The impulse still to come, ∫F̄ dτ, is then at most ∫dz̄/(2ζ) over the
+    /// fall of z̄ from where the ball turns, z̄*, to z̄_f ≥ 0: e ≤ −ᾱ' + (z̄* − z̄_f)/(2ζ).
+    /// While the ball still moves in, z̄ can only rise where 2ζF̄(z̄) < ᾱ' ≤ ᾱ'_now, so z̄* is
+    /// at most the larger of z̄ and the indentation where the branch carries ᾱ'_now/(2ζ).
+    /// This is what ends a ball creeping into a weak dashpot: its kinetic energy decays only
+    /// as exp(−τ/2ζ), but it sits at z̄ ≈ F̄⁻¹(ᾱ'/2ζ), far too shallow to send it back.
+    fn cor_bound(&self, x: &X) -> f64 {
+        let (z, v) = (x[0], x[1]);
         let contact = match self.phase {
             Phase::Loading => self.contact.loading_work(z),
             Phase::Unloading(u) => self.contact.unloading_work(z, &u),
         };
-        0.5 * x[1] * x[1] + contact + 0.5 * self.lambda * x[2] * x[2]
+        let energy = 0.5 * v * v + contact + 0.5 * self.lambda * x[2] * x[2];
+        let by_energy = (2.0 * energy).sqrt();
+        if self.lambda != 0.0 || self.zeta <= 0.0 {
+            return by_energy;
+        }
+        let (z_f, turn) = match self.phase {
+            Phase::Loading => (0.0, self.contact.loading_indentation(v / (2.0 * self.zeta))),
+            Phase::Unloading(u) => (
+                u.z_f,
+                self.contact
+                    .unloading_indentation(v / (2.0 * self.zeta), &u),
+            ),
+        };
+        let by_impulse = if v <= 0.0 {
+            -v + (z - z_f).max(0.0) / (2.0 * self.zeta)
+        } else {
+            (z.max(turn) - z_f).max(0.0) / (2.0 * self.zeta)
+        };
+        by_energy.min(by_impulse)
+    }
+
+    /// The fastest rate of the dashpot from z̄ on in this phase, in units of ω0: 2ζ times the
+    /// stiffness it works against, the contact's (its steepest on the branch ahead: dF̄/dz̄ grows
+    /// with z̄ on every branch but the elastic–plastic law's linear stretch) plus the recoil
+    /// spring's. An elastic–plastic unloading branch deep in the plastic range is as steep as
+    /// 1.5 F̄_m/(z̄_m − z̄_f), hundreds of times the loading slope.
+    fn dashpot_rate(&self, z: f64) -> f64 {
+        let c = &self.contact;
+        let hertz = |z: f64| 1.5 * c.kappa * z.max(0.0).sqrt();
+        let slope = match (self.phase, c.law) {
+            (Phase::Unloading(u), _) if u.z_m <= u.z_f => 0.0,
+            (Phase::Unloading(u), ContactLaw::Linear) => u.f_m / (u.z_m - u.z_f),
+            (Phase::Unloading(u), _) => 1.5 * u.f_m / (u.z_m - u.z_f),
+            (Phase::Loading, ContactLaw::Linear) => 1.0,
+            (Phase::Loading, ContactLaw::Hertz) => hertz(z),
+            (Phase::Loading, ContactLaw::ElasticPlastic) => hertz(z.min(c.zp_bar)).max(1.0),
+        };
+        2.0 * self.zeta * (slope + self.lambda)
+    }
+
+    /// The ball has come to rest: no rebound above `REST_COR` can follow.
+    fn at_rest(&self, x: &X) -> bool {
+        self.cor_bound(x) < REST_COR
     }
 
     /// (F̄, ȳ') at a state.
@@ -124,6 +182,14 @@ impl Watch {
     fn rising(self) -> bool {
         matches!(self, Watch::Yields(_) | Watch::Reloads(_))
     }
+    /// The size `g` is measured against: what the integrator's error tolerance on it scales
+    /// with (atol = rtol · ATOL_FACTOR on each state, plus rtol times its size).
+    fn scale(self, imp: &Impact, x: &X) -> f64 {
+        match self {
+            Watch::RateFalls => x[1].abs() + imp.force_and_rate(x).1.abs() + ATOL_FACTOR,
+            Watch::Yields(t) | Watch::Separates(t) | Watch::Reloads(t) => t.abs() + ATOL_FACTOR,
+        }
+    }
 }
 
 /// The custom solout: finds the first watched crossing (terminal), and records evenly spaced
@@ -143,8 +209,10 @@ struct Watcher<'a> {
     steps: usize,
     /// The integrator gave up (step budget, step size underflow) before an event or `t_stop`.
     failed: bool,
-    /// Radau5 ran (some of) the phase.
+    /// A stiff integrator ran (some of) the phase.
     stiff: bool,
+    /// The phase stopped at an event the integration to it did not confirm; it goes on.
+    spurious: bool,
 }
 
 impl Solout<f64, X> for Watcher<'_> {
@@ -198,10 +266,8 @@ impl Solout<f64, X> for Watcher<'_> {
                 ControlFlag::Terminate
             }
             None if t_curr >= self.t_stop => ControlFlag::Terminate,
-            // come to rest: no rebound can follow (see `available_energy`)
-            None if self.imp.available_energy(y_curr) < 0.5 * REST_COR * REST_COR => {
-                ControlFlag::Terminate
-            }
+            // come to rest: no rebound can follow (see `cor_bound`)
+            None if self.imp.at_rest(y_curr) => ControlFlag::Terminate,
             None => ControlFlag::Continue,
         }
     }
@@ -229,44 +295,63 @@ fn integrate<'a>(
         steps: 0,
         failed: false,
         stiff: false,
+        spurious: false,
     };
     // The crate reports giving up (out of steps, step size underflow) as an error; the watcher
-    // then holds what was reached. The phase goes on from there with the next integrator of
-    // the cascade: DOPRI5 on its short budget → Radau5 (a long phase at DOPRI5's stability
-    // limit) → DOPRI5 on the full budget (Radau5's Newton iteration can stall where the
-    // 3/2-power force has no second derivative, at z̄ = z̄_f). Only when the last one gives up
-    // is the phase failed: never read as the horizon.
-    let mut method = if 2.0 * imp.zeta * (1.0 + imp.lambda) > STIFF {
-        Integrator::Radau5
+    // then holds what was reached, and the phase goes on from there with the next integrator
+    // of the cascade (see `integrator`). Only when the last one gives up is the phase failed:
+    // never read as the horizon.
+    let mut stage = if imp.dashpot_rate(x0[0]) > STIFF {
+        STIFF_ENTRY
     } else {
-        Integrator::Dopri5(EXPLICIT_STEPS)
+        0
     };
-    let mut run = solve_with(imp, t0, x0, t_stop, rtol, method, &mut w);
-    w.stiff = method == Integrator::Radau5;
-    while run.failed && w.hit.is_none() {
-        method = match method {
-            Integrator::Dopri5(EXPLICIT_STEPS) => Integrator::Radau5,
-            Integrator::Radau5 => Integrator::Dopri5(MAX_STEPS),
-            Integrator::Dopri5(_) => break,
-        };
-        w.stiff |= method == Integrator::Radau5;
+    loop {
+        let method = CASCADE[stage];
+        w.stiff |= method.is_stiff();
         let (t1, x1) = w.last;
-        let rest = solve_with(imp, t1, x1, t_stop, rtol, method, &mut w);
-        run = RunStats {
-            steps: run.steps + rest.steps,
-            failed: rest.failed,
-        };
-    }
-    w.steps = run.steps;
-    w.failed = run.failed;
-    if let Some((t, t_prev, x_prev, _)) = w.hit {
-        // The event's state is integrated to the event time, not read off the dense output:
-        // Radau5's continuous output is of lower order than its steps.
-        let mut end = EndState(x_prev);
-        let run = solve_with(imp, t_prev, x_prev, t, rtol, method, &mut end);
+        let run = solve_with(imp, t1, x1, t_stop, rtol, method, &mut w);
         w.steps += run.steps;
-        w.failed |= run.failed;
-        w.last = (t, end.0);
+        if !run.failed || w.hit.is_some() {
+            break;
+        }
+        stage += 1;
+        if stage == CASCADE.len() {
+            w.failed = true;
+            return w;
+        }
+    }
+    let Some((t, t_prev, x_prev, watch)) = w.hit else {
+        return w;
+    };
+    // The event's state is integrated to the event time, not read off the dense output:
+    // Radau5's continuous output is of lower order than its steps. That integration, too, goes
+    // down the cascade if it must.
+    let mut end = EndState(t_prev, x_prev);
+    loop {
+        let method = CASCADE[stage];
+        w.stiff |= method.is_stiff();
+        let run = solve_with(imp, end.0, end.1, t, rtol, method, &mut end);
+        w.steps += run.steps;
+        if !run.failed {
+            break;
+        }
+        stage += 1;
+        if stage == CASCADE.len() {
+            w.failed = true;
+            w.last = (end.0, end.1);
+            return w;
+        }
+    }
+    w.last = (t, end.1);
+    // An event the integration to it does not confirm was an artefact of the dense output
+    // over a long step (Radau5 over thousands of ω0⁻¹ of creep can dip z̄ through z̄_f between
+    // its points): the phase is not over, it goes on from there.
+    let sign = if watch.rising() { 1.0 } else { -1.0 };
+    let missed = -sign * watch.g(imp, &end.1);
+    if missed > EVENT_SLACK * CASCADE[stage].rtol(rtol) * watch.scale(imp, &end.1) {
+        w.hit = None;
+        w.spurious = true;
     }
     w
 }
@@ -351,7 +436,10 @@ fn run_phases(
                 vec![Watch::RateFalls, Watch::Yields(contact.zp_bar)]
             }
             Phase::Loading => vec![Watch::RateFalls],
-            Phase::Unloading(u) => vec![Watch::Separates(u.z_f), Watch::Reloads(z0)],
+            Phase::Unloading(u) => {
+                let past = RELOAD_SLACK * rtol * (u.z_m.abs() + ATOL_FACTOR);
+                vec![Watch::Separates(u.z_f), Watch::Reloads(u.z_m + past)]
+            }
         };
         let w = integrate(&imp, t, x, t_max, watches, rest, rtol);
         let hit = w.hit.map(|h| h.3);
@@ -360,7 +448,7 @@ fn run_phases(
         out.stiff |= w.stiff;
         if w.failed {
             out.unresolved = Some("the integrator gave up before the end of contact");
-        } else if hit.is_none() && imp.available_energy(&x_end) >= 0.5 * REST_COR * REST_COR {
+        } else if hit.is_none() && !w.spurious && !imp.at_rest(&x_end) {
             // the horizon came first: the ball neither left nor came to rest
             out.unresolved = Some("the ball neither left nor came to rest within the horizon");
         }
@@ -401,15 +489,23 @@ fn run_phases(
                 Some(Phase::Loading)
             }
             (Phase::Unloading(_), Some(_)) => {
-                // A real separation leaves with α' < 0. A ball that settles onto the wall (λ = 0,
-                // ζ ≥ 1) approaches z_f only asymptotically; the integrator can then cross it in
-                // its noise, with a "rebound" speed at the tolerance level: that is no rebound.
+                // A real separation leaves with α' < 0. A ball creeping into a weak dashpot
+                // approaches z_f only asymptotically; a stiff integrator can cross it in its
+                // noise while the ball still moves in. That is no separation: once the ball has
+                // come to rest (see `cor_bound`) it is no rebound; before, the phase goes
+                // on, for a recoil spring that still holds energy can yet push the ball out.
                 out.rebound = -x_end[1] > 100.0 * rtol * ATOL_FACTOR;
                 if out.rebound {
                     out.events.push((t, EventKind::Separation, z_end));
+                    None
+                } else if imp.at_rest(&x_end) {
+                    None
+                } else {
+                    Some(imp.phase)
                 }
-                None
             }
+            // an unconfirmed event: the same phase goes on
+            (p, None) if w.spurious => Some(p),
             (_, None) => None,
         };
         if let Phase::Unloading(u) = imp.phase {
