@@ -40,6 +40,27 @@ fn maxwell_cor_and_contact_time() {
     }
 }
 
+/// Maxwell again, by the adaptive solver: its rest test (an impulse bound without a recoil
+/// spring: the ball cannot leave faster than (z̄* − z̄_f)/2ζ) must not cut a real rebound, down
+/// to e ≈ 7e-5 at ζ = 0.95.
+#[test]
+fn maxwell_by_the_adaptive_solver() {
+    for i in 0..=19 {
+        let zeta = 0.01 + 0.05 * i as f64;
+        let r = numeric(0.0, zeta);
+        let s = (1.0 - zeta * zeta).sqrt();
+        let e = (-PI * zeta / s).exp();
+        assert!(r.rebound, "ζ={zeta}");
+        assert!(
+            (r.cor - e).abs() < 1e-8,
+            "ζ={zeta}: e={} expected {e}",
+            r.cor
+        );
+        let tf = r.contact_time_normalized.unwrap();
+        assert!((tf - PI / s).abs() < 1e-7, "ζ={zeta}: τ_f={tf}");
+    }
+}
+
 /// λ = 0, ζ ≥ 1: the ball sinks into the dashpot; no rebound, e = 0, and a bounded run.
 #[test]
 fn maxwell_overdamped_has_no_rebound() {

@@ -17,7 +17,7 @@ use serde::Serialize;
 pub enum Method {
     /// Exact flow of the linearized law (sum of exponentials, root-found events).
     Exact,
-    /// Adaptive embedded Runge–Kutta (DOPRI5; Radau5 when stiff) with event location.
+    /// Adaptive embedded Runge–Kutta (DOPRI5; Radau5 or BDF when stiff) with event location.
     Numeric,
 }
 
@@ -147,8 +147,9 @@ pub struct ImpactResponse {
     /// Solver steps taken: propagator steps (exact) or accepted and rejected integrator steps
     /// (adaptive), over every phase and event re-integration. Bounded by the solvers' budgets.
     pub steps: usize,
-    /// Whether Radau5 carried some of the run (stiff dashpot, or a phase too long for DOPRI5):
-    /// its COR and energy audit are good to about 1e-7…1e-4, not to the tolerance asked for.
+    /// Whether a stiff integrator (Radau5 or BDF, possibly at up to 1e4 times the tolerance
+    /// asked for) carried some of the run: a stiff dashpot, or a phase too long for DOPRI5.
+    /// Its COR and energy audit are good to about 1e-7…1e-4, not to the tolerance asked for.
     pub stiff: bool,
 }
 
@@ -216,7 +217,7 @@ pub(crate) struct Outcome {
     pub dashpot: Option<f64>,
     /// Solver steps taken (exact: propagator steps; adaptive: accepted and rejected steps).
     pub steps: usize,
-    /// Radau5 carried some of the run.
+    /// A stiff integrator carried some of the run.
     pub stiff: bool,
     /// Why the run could not be brought to an end (a step or phase budget ran out, the
     /// integrator gave up): the outcome is then not an answer.

@@ -1,11 +1,13 @@
 //! The adaptive numerical solver for any contact law: the first-order system of MODEL.md §2 in
 //! normalized form, x = (z̄, ᾱ', ȳ, Ē_d) with z̄ = ᾱ − ȳ,
 //!     ᾱ'' = −F̄,   ȳ' = 2ζ(F̄ − λȳ),   z̄' = ᾱ' − ȳ',   Ē_d' = ȳ'²/(2ζ) = 2ζ(F̄ − λȳ)²,
-//! integrated phase by phase with the `differential-equations` crate: DOPRI5, or Radau5 when
-//! the dashpot makes the system stiff. Events are located as in SciPy's `solve_ivp` (terminal,
-//! with a direction) by a custom `Solout` that root-finds on the step's dense output; the
-//! crate's own `EventSolout` skips the first step of each integration, and every phase here
-//! starts one.
+//! integrated phase by phase with the `differential-equations` crate: DOPRI5, or, when the
+//! dashpot makes the phase stiff or DOPRI5 gives up, a cascade of its stiff integrators (see
+//! `integrator`). Events are located as in SciPy's `solve_ivp` (terminal, with a direction) by
+//! a custom `Solout` that root-finds on the step's dense output (the crate's own
+//! `EventSolout` skips the first step of each integration, and every phase here starts one),
+//! then confirmed by integrating to them. A ball that can no longer leave above `REST_COR`
+//! (see `Impact::cor_bound`) has come to rest: no rebound.
 
 use super::roots::brent;
 use super::{EventKind, Outcome, SolveOptions};
