@@ -525,7 +525,7 @@ impl MaxwellSplit {
     fn new(zeta: f64, k: f64) -> Option<Self> {
         let zk = 2.0 * zeta * k;
         let disc = zk * zk - 4.0 * k;
-        if !(disc > 0.0) {
+        if disc.is_nan() || disc <= 0.0 {
             return None;
         }
         // the larger root by the quadratic's product, k, not by a difference of near equals
