@@ -1,0 +1,209 @@
+//! One phase of the adaptive solver: what it watches for (the events, with the direction of
+//! their crossing, as SciPy's `solve_ivp` events), the solout that finds them on the dense
+//! output, and the integration of the phase down the integrator cascade to its first
+//! confirmed event.
+
+use super::integrator::{CASCADE, EndState, STIFF_ENTRY, solve_with};
+use super::{ATOL_FACTOR, EVENT_SLACK, Impact, STIFF, X};
+use crate::solver::roots::brent;
+use differential_equations::interpolate::Interpolation;
+use differential_equations::prelude::{ControlFlag, Solout};
+use differential_equations::solution::Solution;
+
+/// What a phase watches for, with the direction of the crossing.
+#[derive(Clone, Copy, Debug)]
+pub(super) enum Watch {
+    /// z̄' falls through 0: unload.
+    RateFalls,
+    /// z̄ rises through z̄_p: the elastic–plastic law turns linear (a kink the steps must meet).
+    Yields(f64),
+    /// z̄ falls to z̄_f: F = 0, separation.
+    Separates(f64),
+    /// z̄ rises back to z̄_m: reload.
+    Reloads(f64),
+}
+
+impl Watch {
+    pub(super) fn g(self, imp: &Impact, x: &X) -> f64 {
+        let z = x[0];
+        match self {
+            Watch::RateFalls => x[1] - imp.force_and_rate(x).1,
+            Watch::Yields(t) | Watch::Separates(t) | Watch::Reloads(t) => z - t,
+        }
+    }
+    fn rising(self) -> bool {
+        matches!(self, Watch::Yields(_) | Watch::Reloads(_))
+    }
+    /// The size `g` is measured against: what the integrator's error tolerance on it scales
+    /// with (atol = rtol · ATOL_FACTOR on each state, plus rtol times its size).
+    fn scale(self, imp: &Impact, x: &X) -> f64 {
+        match self {
+            Watch::RateFalls => x[1].abs() + imp.force_and_rate(x).1.abs() + ATOL_FACTOR,
+            Watch::Yields(t) | Watch::Separates(t) | Watch::Reloads(t) => t.abs() + ATOL_FACTOR,
+        }
+    }
+}
+
+/// The custom solout: finds the first watched crossing (terminal), and records evenly spaced
+/// samples from the dense output when asked to.
+pub(super) struct Watcher<'a> {
+    pub(super) imp: &'a Impact,
+    pub(super) watches: Vec<Watch>,
+    /// The first watched crossing: (time, the step's start, the step's start state, watch).
+    pub(super) hit: Option<(f64, f64, X, Watch)>,
+    pub(super) grid: &'a [f64],
+    pub(super) next_sample: usize,
+    pub(super) samples: Vec<(f64, X)>,
+    pub(super) t_stop: f64,
+    /// The last accepted step, where an event-less integration stopped.
+    pub(super) last: (f64, X),
+    /// Steps taken (accepted and rejected), the re-integration to an event included.
+    pub(super) steps: usize,
+    /// The integrator gave up (step budget, step size underflow) before an event or `t_stop`.
+    pub(super) failed: bool,
+    /// A stiff integrator ran (some of) the phase.
+    pub(super) stiff: bool,
+    /// The phase stopped at an event the integration to it did not confirm; it goes on.
+    pub(super) spurious: bool,
+}
+
+impl Solout<f64, X> for Watcher<'_> {
+    fn solout<I>(
+        &mut self,
+        t_curr: f64,
+        t_prev: f64,
+        y_curr: &X,
+        y_prev: &X,
+        interp: &mut I,
+        _s: &mut Solution<f64, X>,
+    ) -> ControlFlag<f64, X>
+    where
+        I: Interpolation<f64, X> + ?Sized,
+    {
+        let mut at = |t: f64| {
+            if t == t_curr {
+                *y_curr
+            } else {
+                interp.interpolate(t).unwrap_or(*y_curr)
+            }
+        };
+        let mut best: Option<(f64, Watch)> = None;
+        for &w in &self.watches {
+            let sign = if w.rising() { 1.0 } else { -1.0 };
+            let (ga, gb) = (sign * w.g(self.imp, y_prev), sign * w.g(self.imp, y_curr));
+            if ga < 0.0 && gb >= 0.0 {
+                let t = brent(
+                    |t| sign * w.g(self.imp, &at(t)),
+                    t_prev,
+                    t_curr,
+                    ga,
+                    gb,
+                    1e-15 * t_curr.abs().max(1e-300),
+                );
+                if best.is_none_or(|(bt, _)| t < bt) {
+                    best = Some((t, w));
+                }
+            }
+        }
+        self.last = (t_curr, *y_curr);
+        let end = best.map_or(t_curr.min(self.t_stop), |(t, _)| t);
+        while self.next_sample < self.grid.len() && self.grid[self.next_sample] <= end {
+            let t = self.grid[self.next_sample].max(t_prev);
+            self.samples.push((self.grid[self.next_sample], at(t)));
+            self.next_sample += 1;
+        }
+        match best {
+            Some((t, w)) => {
+                self.hit = Some((t, t_prev, *y_prev, w));
+                ControlFlag::Terminate
+            }
+            None if t_curr >= self.t_stop => ControlFlag::Terminate,
+            // come to rest: no rebound can follow (see `cor_bound`)
+            None if self.imp.at_rest(y_curr) => ControlFlag::Terminate,
+            None => ControlFlag::Continue,
+        }
+    }
+}
+
+/// Integrate one phase from (t0, x0) until a watched event or `t_stop`.
+pub(super) fn integrate<'a>(
+    imp: &'a Impact,
+    t0: f64,
+    x0: X,
+    t_stop: f64,
+    watches: Vec<Watch>,
+    grid: &'a [f64],
+    rtol: f64,
+) -> Watcher<'a> {
+    let mut w = Watcher {
+        imp,
+        watches,
+        hit: None,
+        grid,
+        next_sample: 0,
+        samples: Vec::new(),
+        t_stop,
+        last: (t0, x0),
+        steps: 0,
+        failed: false,
+        stiff: false,
+        spurious: false,
+    };
+    // The crate reports giving up (out of steps, step size underflow) as an error; the watcher
+    // then holds what was reached, and the phase goes on from there with the next integrator
+    // of the cascade (see `integrator`). Only when the last one gives up is the phase failed:
+    // never read as the horizon.
+    let mut stage = if imp.dashpot_rate(x0[0]) > STIFF {
+        STIFF_ENTRY
+    } else {
+        0
+    };
+    loop {
+        let method = CASCADE[stage];
+        w.stiff |= method.is_stiff();
+        let (t1, x1) = w.last;
+        let run = solve_with(imp, t1, x1, t_stop, rtol, method, &mut w);
+        w.steps += run.steps;
+        if !run.failed || w.hit.is_some() {
+            break;
+        }
+        stage += 1;
+        if stage == CASCADE.len() {
+            w.failed = true;
+            return w;
+        }
+    }
+    let Some((t, t_prev, x_prev, watch)) = w.hit else {
+        return w;
+    };
+    // The event's state is integrated to the event time, not read off the dense output:
+    // Radau5's continuous output is of lower order than its steps. That integration, too, goes
+    // down the cascade if it must.
+    let mut end = EndState(t_prev, x_prev);
+    loop {
+        let method = CASCADE[stage];
+        w.stiff |= method.is_stiff();
+        let run = solve_with(imp, end.0, end.1, t, rtol, method, &mut end);
+        w.steps += run.steps;
+        if !run.failed {
+            break;
+        }
+        stage += 1;
+        if stage == CASCADE.len() {
+            w.failed = true;
+            w.last = (end.0, end.1);
+            return w;
+        }
+    }
+    w.last = (t, end.1);
+    // An event the integration to it does not confirm was an artefact of the dense output
+    // over a long step (Radau5 over thousands of ω0⁻¹ of creep can dip z̄ through z̄_f between
+    // its points): the phase is not over, it goes on from there.
+    let sign = if watch.rising() { 1.0 } else { -1.0 };
+    let missed = -sign * watch.g(imp, &end.1);
+    if missed > EVENT_SLACK * CASCADE[stage].rtol(rtol) * watch.scale(imp, &end.1) {
+        w.hit = None;
+        w.spurious = true;
+    }
+    w
+}
