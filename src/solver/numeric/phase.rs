@@ -3,7 +3,7 @@
 //! output, and the integration of the phase down the integrator cascade to its first
 //! confirmed event.
 
-use super::integrator::{CASCADE, EndState, STIFF_ENTRY, solve_with};
+use super::integrator::{CASCADE, EndState, Integrator, STIFF_ENTRY, solve_with};
 use super::{ATOL_FACTOR, EVENT_SLACK, Impact, STIFF, X};
 use crate::solver::roots::brent;
 use differential_equations::interpolate::Interpolation;
@@ -153,26 +153,21 @@ pub(super) fn integrate<'a>(
     // then holds what was reached, and the phase goes on from there with the next integrator
     // of the cascade (see `integrator`). Only when the last one gives up is the phase failed:
     // never read as the horizon.
-    let mut stage = if imp.dashpot_rate(x0[0]) > STIFF {
+    let entry = if imp.dashpot_rate(x0[0]) > STIFF {
         STIFF_ENTRY
     } else {
         0
     };
-    loop {
-        let method = CASCADE[stage];
+    let Some(stage) = first_to_finish(entry, |method| {
         w.stiff |= method.is_stiff();
         let (t1, x1) = w.last;
         let run = solve_with(imp, t1, x1, t_stop, rtol, method, &mut w);
         w.steps += run.steps;
-        if !run.failed || w.hit.is_some() {
-            break;
-        }
-        stage += 1;
-        if stage == CASCADE.len() {
-            w.failed = true;
-            return w;
-        }
-    }
+        !run.failed || w.hit.is_some()
+    }) else {
+        w.failed = true;
+        return w;
+    };
     let Some((t, t_prev, x_prev, watch)) = w.hit else {
         return w;
     };
@@ -180,21 +175,16 @@ pub(super) fn integrate<'a>(
     // Radau5's continuous output is of lower order than its steps. That integration, too, goes
     // down the cascade if it must.
     let mut end = EndState(t_prev, x_prev);
-    loop {
-        let method = CASCADE[stage];
+    let Some(stage) = first_to_finish(stage, |method| {
         w.stiff |= method.is_stiff();
         let run = solve_with(imp, end.0, end.1, t, rtol, method, &mut end);
         w.steps += run.steps;
-        if !run.failed {
-            break;
-        }
-        stage += 1;
-        if stage == CASCADE.len() {
-            w.failed = true;
-            w.last = (end.0, end.1);
-            return w;
-        }
-    }
+        !run.failed
+    }) else {
+        w.failed = true;
+        w.last = (end.0, end.1);
+        return w;
+    };
     w.last = (t, end.1);
     // An event the integration to it does not confirm was an artefact of the dense output
     // over a long step (Radau5 over thousands of ω0⁻¹ of creep can dip z̄ through z̄_f between
@@ -206,4 +196,10 @@ pub(super) fn integrate<'a>(
         w.spurious = true;
     }
     w
+}
+
+/// The first stage of the cascade from `stage` on at which `attempt` (with that stage's
+/// integrator, from wherever the one before gave up) finishes; `None` when the last gives up.
+fn first_to_finish(stage: usize, mut attempt: impl FnMut(Integrator) -> bool) -> Option<usize> {
+    (stage..CASCADE.len()).find(|&i| attempt(CASCADE[i]))
 }
