@@ -17,7 +17,7 @@
 //! an answer on a grid over the domain's edges and corners as well.
 
 use bouncelab::solver::audit::audit;
-use bouncelab::{ContactLaw, ImpactParams, SolveError, SolveOptions, simulate};
+use bouncelab::{ContactLaw, ImpactParams, Method, SolveError, SolveOptions, simulate};
 use proptest::prelude::*;
 use proptest::test_runner::RngSeed;
 
@@ -47,8 +47,10 @@ fn log_range(lo: f64, hi: f64) -> impl Strategy<Value = f64> {
     (lo.ln()..=hi.ln()).prop_map(f64::exp)
 }
 
-/// λ over [0, 1e4]: the edges themselves, log-uniform over the decades, and uniform (which
-/// mostly lands in the top decade, where K_r is nearly rigid).
+/// λ over [0, 1e4]: the edges themselves, log-uniform over the decades from 1e-6, and uniform
+/// (which mostly lands in the top decade, where K_r is nearly rigid). Not yet drawn: (0, 1e-6),
+/// a recoil spring so soft that the ball is released over ~1/(2ζλ) ω0⁻¹; there the solvers
+/// still fail (see the README, "What bouncelab guarantees").
 fn lambda() -> impl Strategy<Value = f64> {
     prop_oneof![
         1 => Just(0.0),
@@ -71,6 +73,34 @@ fn zeta() -> impl Strategy<Value = f64> {
 /// v0 over (0, 200] m/s, log-uniform from 1 mm/s.
 fn v0() -> impl Strategy<Value = f64> {
     prop_oneof![1 => Just(200.0), 9 => log_range(1e-3, 200.0)]
+}
+
+/// A ball of random mass, contact stiffness, flattening and speed, at random λ, ζ.
+fn ball() -> impl Strategy<Value = ImpactParams> {
+    (
+        lambda(),
+        zeta(),
+        v0(),
+        log_range(1e-3, 10.0),
+        log_range(1e2, 1e8),
+        // flattening from a hundredth of a micron to a decimetre, or none at all
+        prop_oneof![1 => Just(f64::INFINITY), 5 => log_range(1e-8, 1e-1)],
+        // K_h around the Eq. 16 match, off by up to a decade either way
+        log_range(0.1, 10.0),
+    )
+        .prop_map(|(lambda, zeta, v0, mass, k_p, z_p, k_h_factor)| {
+            let k_h_at = if z_p.is_finite() { z_p } else { 1e-3 };
+            ImpactParams {
+                mass,
+                k_p,
+                damping: 1.0,
+                k_r: 0.0,
+                z_p,
+                k_h: ImpactParams::k_h_matching(k_p, k_h_at) * k_h_factor,
+                v0,
+            }
+            .with_lambda_zeta(lambda, zeta)
+        })
 }
 
 fn law() -> impl Strategy<Value = ContactLaw> {
@@ -100,29 +130,7 @@ proptest! {
 
     /// A ball of random mass, contact stiffness, flattening and speed, at random λ, ζ.
     #[test]
-    fn every_run_keeps_the_invariants(
-        lambda in lambda(),
-        zeta in zeta(),
-        v0 in v0(),
-        law in law(),
-        mass in log_range(1e-3, 10.0),
-        k_p in log_range(1e2, 1e8),
-        // flattening from a hundredth of a micron to a decimetre, or none at all
-        z_p in prop_oneof![1 => Just(f64::INFINITY), 5 => log_range(1e-8, 1e-1)],
-        // K_h around the Eq. 16 match, off by up to a decade either way
-        k_h_factor in log_range(0.1, 10.0),
-    ) {
-        let k_h_at = if z_p.is_finite() { z_p } else { 1e-3 };
-        let params = ImpactParams {
-            mass,
-            k_p,
-            damping: 1.0,
-            k_r: 0.0,
-            z_p,
-            k_h: ImpactParams::k_h_matching(k_p, k_h_at) * k_h_factor,
-            v0,
-        }
-        .with_lambda_zeta(lambda, zeta);
+    fn every_run_keeps_the_invariants(params in ball(), law in law()) {
         match simulate(&params, law, &opts()) {
             Ok(r) => {
                 if let Err(why) = audit(&r) {
@@ -131,6 +139,38 @@ proptest! {
             }
             Err(e) => rejected_well(&e)?,
         }
+    }
+
+    /// The two independent solvers on the linear law, over the whole domain: the same outcome,
+    /// and the same COR to what the adaptive one promises (1e-8 by DOPRI5; by a stiff
+    /// integrator 1e-4: measured over 20 000 random impacts, seed 4242, 3e-10 and 1.8e-5 at
+    /// worst). Near "no rebound" (e below 1e-6) they may decide differently. This is what
+    /// found the exact solver settling a creep early (λ = 1e-9, ζ = 3000: no rebound for
+    /// e = 0.03).
+    #[test]
+    fn exact_and_adaptive_agree_on_the_linear_law(params in ball()) {
+        let run = |m| simulate(&params, ContactLaw::Linear, &SolveOptions::default().with_method(m));
+        let (e, n) = match (run(Method::Exact), run(Method::Numeric)) {
+            (Ok(e), Ok(n)) => (e, n),
+            (e, n) => {
+                for err in [e.err(), n.err()].into_iter().flatten() {
+                    rejected_well(&err)?;
+                }
+                return Ok(());
+            }
+        };
+        if e.rebound != n.rebound {
+            prop_assert!(e.cor.max(n.cor) < 1e-6, "rebound: {e:?} vs {n:?}");
+            return Ok(());
+        }
+        let tol = if n.stiff { 1e-4 } else { 1e-8 };
+        prop_assert!(
+            (e.cor - n.cor).abs() <= tol,
+            "e = {} exact, {} adaptive (stiff: {}): {params:?}",
+            e.cor,
+            n.cor,
+            n.stiff
+        );
     }
 
     /// A preset of random material data (elastomer or metal, any law), parsed from TOML and run

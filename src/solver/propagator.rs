@@ -249,14 +249,16 @@ impl Propagator {
                     };
                     (C::new(ec * cs, ec * sn), f23)
                 } else {
+                    // e^{s2 τ} and e^{s3 τ} each in one exponential: as e^{cτ} e^{∓hτ} they are
+                    // 0 · ∞ = NaN once hτ > 709 (λ = 6e-12, ζ = 1 runs to τ = 1.5e10)
                     let h = q.sqrt();
-                    let eh = (h * tau).exp();
+                    let e2 = ((self.roots.centre - h) * tau).exp();
                     let f23 = if h * tau < 0.5 {
                         ec * sinhc(q, tau)
                     } else {
-                        ec * (eh - 1.0 / eh) / (2.0 * h)
+                        (((self.roots.centre + h) * tau).exp() - e2) / (2.0 * h)
                     };
-                    (C::new(ec / eh, 0.0), f23)
+                    (C::new(e2, 0.0), f23)
                 };
                 let z = n.d12 * tau;
                 let f12 = if z.norm_sqr() < 0.25 {

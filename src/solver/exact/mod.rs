@@ -126,7 +126,7 @@ impl Modes {
             slowest,
             settle: None,
         };
-        modes.settle = modes.settle_time(scale);
+        modes.settle = modes.settle_time();
         modes
     }
 
@@ -178,17 +178,23 @@ impl Modes {
     /// decayed relative to it by e^{−70}, or it has itself fallen below e^{−600} (the faster
     /// ones then underflow to exact zeros, which must not read as crossings). `None` while an
     /// oscillation dominates the tail.
-    fn settle_time(&self, scale: f64) -> Option<f64> {
+    fn settle_time(&self) -> Option<f64> {
         let live = &self.live[..self.count];
         let &(_, slow, complex) = live.iter().max_by(|a, b| a.1.total_cmp(&b.1))?;
         if complex {
             return None;
         }
         let floor = 600.0 / slow.abs();
+        // The next mode is any other slower than the slowest by more than the slowest's own
+        // rounding. Measured against the fastest mode instead (1e-9 of it, as this was), two
+        // slow modes of a creep (λ = 1e-9, ζ = 3000, z̄_p = 1e-7: −6.2e-6 and −1.6e-4 beside
+        // −1.7e5) read as one, the phase "settled" once the fast one had decayed (τ = 4e-4),
+        // and the run reported no rebound where the ball leaves at τ ≈ 4.2e4 with e ≈ 0.03.
+        // Counting a near-double root as two only makes the settle time later: safe.
         let next = live
             .iter()
             .map(|m| m.1)
-            .filter(|&re| re < slow - 1e-9 * scale)
+            .filter(|&re| re < slow - 1e-9 * slow.abs())
             .fold(f64::NEG_INFINITY, f64::max);
         if next.is_finite() {
             Some((70.0 / (slow - next)).min(floor))

@@ -160,7 +160,9 @@ impl ODE<f64, X> for Impact {
 /// How long to follow a ball that may never leave: a hundred times the sum of the contact
 /// times (linear spring π; Hertz alone 2.94 z̄_m with z̄_m = (5/(4κ))^{2/5}, long when the
 /// contact is soft against the speed), the dashpot creep time 2ζ and the recoil relaxation
-/// time 1/(2ζλ).
+/// time 1/(2ζλ). Capped only where τ itself would lose its digits against the step sizes of
+/// the contact (1e18 ω0⁻¹, λ ≈ 5e-19 at ζ = 1); a cap at 1e9, as there was, cut the release of a
+/// recoil spring as soft as λ = 1e-12 and left such runs without an answer.
 fn horizon(n: &Normalized) -> f64 {
     let relax = if n.lambda > 0.0 && n.zeta > 0.0 {
         1.0 / (2.0 * n.zeta * n.lambda)
@@ -168,7 +170,7 @@ fn horizon(n: &Normalized) -> f64 {
         0.0
     };
     let hertz = 2.95 * (1.25 / n.kappa).powf(0.4);
-    (100.0 * (std::f64::consts::PI + hertz + 2.0 * n.zeta + relax)).min(1e9)
+    (100.0 * (std::f64::consts::PI + hertz + 2.0 * n.zeta + relax)).min(1e18)
 }
 
 pub(crate) fn solve(n: &Normalized, contact: &Contact, opts: &SolveOptions) -> Outcome {
