@@ -73,7 +73,7 @@ struct MaxwellSplit {
 }
 
 impl MaxwellSplit {
-    /// Only for real, distinct roots, where the split pays: a complex pair (2ζ√k < 2) is an
+    /// Only for real, distinct roots, where the split pays: a complex pair (ζ√k < 1) is an
     /// oscillation no longer than a few periods, not a creep.
     fn new(zeta: f64, k: f64) -> Option<Self> {
         let zk = 2.0 * zeta * k;
@@ -91,8 +91,11 @@ impl MaxwellSplit {
         let (u0, v0) = (w[0], w[1]);
         let e1 = (self.p1 * tau).exp();
         let d = self.p2 - self.p1;
-        let f12 = if (d * tau).abs() < 1e-3 {
-            e1 * tau * (1.0 + 0.5 * d * tau)
+        // f[p1,p2] = e^{p1 τ} (e^{dτ} − 1)/d: by expm1 while dτ is small (the difference of
+        // exponentials would cancel; a truncated series was good only to (dτ)²/6), by the
+        // difference past it (where e^{dτ} alone could overflow against an underflowed e^{p1 τ})
+        let f12 = if d * tau < 1.0 {
+            e1 * (d * tau).exp_m1() / d
         } else {
             ((self.p2 * tau).exp() - e1) / d
         };
