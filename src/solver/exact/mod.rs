@@ -9,7 +9,7 @@
 //! (`Propagator`); only the events need root finding: z̄' = 0 (unload), z̄ = z̄_f (F = 0,
 //! separation), z̄ = z̄_m (reload).
 
-use super::propagator::{Propagator, Roots, cubic_roots};
+use super::propagator::{FastSlow, Propagator, Roots, cubic_roots};
 use super::roots::{halley_bracketed_from, newton_bracketed_from};
 use super::{EventKind, Outcome, SolveOptions};
 use crate::model::contact::{Contact, Unloading};
@@ -23,6 +23,13 @@ mod energy;
 pub(super) const MAX_PHASES: usize = 64;
 /// Hard cap on search steps per phase (the step rule reaches every event in far fewer).
 pub(super) const MAX_STEPS: usize = 20_000;
+
+/// How far past z̄_m, in rounding units of the state, z̄ must rise before an unloading phase
+/// turns back to loading. The unload is located where z̄' = 0 only to rounding, and at a slow
+/// turning point (a creep, z̄'' ~ 1e-12) z̄ may go on rising by a rounding after it: read as a
+/// reload, that started a loading phase already past its peak, which went on past it for 3e4
+/// ω0⁻¹ (λ = 3.2e-8, ζ = 1e4, z̄_p = 1.3e-5: e = 0.27 for the 0.666 of a 40-digit reference).
+const RELOAD_SLACK: f64 = 1e3;
 
 /// The contact indentation z̄ − s (or a derivative) as a functional of w.
 fn l(v: &Vector3<f64>) -> f64 {
@@ -49,13 +56,17 @@ fn system(lambda: f64, zeta: f64, k: f64) -> (Matrix3<f64>, [f64; 3]) {
     (a, [2.0 * zeta * (k + lambda), k, 2.0 * zeta * k * lambda])
 }
 
+/// The phase's fast/slow split (a real mode far faster than the other two), if it has one.
+fn split(lambda: f64, zeta: f64, k: f64, roots: &Roots) -> Option<FastSlow> {
+    let (zk, zl) = (2.0 * zeta * k, 2.0 * zeta * lambda);
+    FastSlow::new(zk, zl, k, y_scale(lambda), roots.s1, roots.centre, roots.q)
+}
+
 /// w and its first three derivatives at τ.
 struct Jet([Vector3<f64>; 4]);
 
-fn jet(p: &Propagator, a: &Matrix3<f64>, tau: f64) -> Jet {
-    let (w, aw) = p.eval(tau);
-    let a2w = a * aw;
-    Jet([w, aw, a2w, a * a2w])
+fn jet(p: &Propagator, tau: f64) -> Jet {
+    Jet(p.jet(tau))
 }
 
 /// An event function g(τ) watched for a crossing in one direction.
@@ -101,17 +112,17 @@ impl Modes {
         let all = roots.all();
         // |s| as √(norm²): hypot's overflow care is not needed at these magnitudes
         let norms = all.map(|s| s.norm_sqr().sqrt());
-        let scale = norms.iter().copied().fold(0.0, f64::max);
         let mut live = [(0.0, 0.0, false); 3];
         let mut count = 0;
         for (i, s) in all.iter().enumerate() {
-            // The zero root of λ = 0, and a real root that small (λ → 0, where following the
-            // recoil spring's relaxation would take 1/λ), are not modes. A complex pair always
-            // is: it is the oscillation itself, which at λ = ζ = 1e6 lies twelve decades below
-            // the dashpot's rate 2ζ(1 + λ); cutting it too made the phase "settle" after 3e-10
-            // and the run report no rebound for e = 1 (found by the solver_inputs fuzz target).
+            // The zero root of λ = 0 is not a mode. Every other is, however slow: the recoil
+            // spring's relaxation at λ = 3.1e-12 (s ≈ −2ζλ, fifteen decades below the dashpot's
+            // rate) is what pushes the ball back out at τ ≈ 2e4; cut below 1e-12 of the fastest
+            // root, the phase "settled" while the ball still moved and the run reported no
+            // rebound. The same cut on a complex pair (λ = ζ = 1e6) had made a bounce with e = 1
+            // read as none. Following a slow mode is cheap: the step doubles with τ.
             let oscillation = i > 0 && roots.q < 0.0;
-            if oscillation || norms[i] > 1e-12 * scale {
+            if norms[i] > 0.0 {
                 live[count] = (norms[i], s.re, oscillation);
                 count += 1;
             }
@@ -266,8 +277,6 @@ struct Found {
 /// audit — else only the last).
 fn search(first: Propagator, modes: &Modes, watches: &[Watch], keep: bool) -> Found {
     debug_assert!(watches.len() <= 2, "a phase watches at most two events");
-    let roots = *first.roots();
-    let a = *first.matrix();
     let values = |j: &Jet, t: f64| {
         let mut v = [(t, 0.0, 0.0); 2];
         for (slot, w) in v.iter_mut().zip(watches) {
@@ -277,7 +286,7 @@ fn search(first: Propagator, modes: &Modes, watches: &[Watch], keep: bool) -> Fo
         v
     };
     let mut ta = 0.0;
-    let mut va = values(&jet(&first, &a, 0.0), 0.0);
+    let mut va = values(&jet(&first, 0.0), 0.0);
     // the anchor in use; earlier ones are kept only when asked (no allocation otherwise)
     let mut current = (0.0, first);
     let mut anchors: Anchors = Vec::new();
@@ -303,7 +312,7 @@ fn search(first: Propagator, modes: &Modes, watches: &[Watch], keep: bool) -> Fo
     for step in 1..=MAX_STEPS {
         let tb = ta + modes.step(ta);
         let (t0, p) = &current;
-        let mut f = |t: f64| jet(p, &a, t - t0);
+        let mut f = |t: f64| jet(p, t - t0);
         let jb = f(tb);
         let vb = values(&jb, tb);
         let mut best: Option<(f64, usize)> = None;
@@ -317,7 +326,7 @@ fn search(first: Propagator, modes: &Modes, watches: &[Watch], keep: bool) -> Fo
         if let Some((t, i)) = best {
             return finish(t, Some(i), step, false, current, &mut anchors);
         }
-        let next = (tb, Propagator::with_roots(a, roots, jb.0[0]));
+        let next = (tb, current.1.restart(jb.0[0]));
         let previous = std::mem::replace(&mut current, next);
         if keep {
             anchors.push(previous);
@@ -355,7 +364,7 @@ pub(crate) fn solve(n: &Normalized, contact: &Contact, opts: &SolveOptions) -> O
     // sampling and the energy audit revisit every phase; a summary needs only where each ended
     let keep = opts.samples > 0 || opts.energy;
     let mut segments: Vec<Segment> = Vec::new();
-    let mut cached: Option<(f64, Roots, Modes)> = None;
+    let mut cached: Option<(f64, Roots, Modes, Option<FastSlow>)> = None;
     let mut phases_left = MAX_PHASES;
     loop {
         if phases_left == 0 {
@@ -370,22 +379,25 @@ pub(crate) fn solve(n: &Normalized, contact: &Contact, opts: &SolveOptions) -> O
         let (a, poly) = system(lambda, zeta, k);
         // Without flattening the unloading line is the loading one (k = z̄_m/z̄_m = 1 exactly):
         // same matrix, same roots and time scales as the phase before.
-        let (roots, modes) = match cached {
-            Some((ck, r, m)) if ck == k => (r, m),
+        let (roots, modes, fast_slow) = match cached {
+            Some((ck, r, m, f)) if ck == k => (r, m, f),
             _ => {
                 let r = cubic_roots(poly);
-                (r, Modes::new(&r))
+                (r, Modes::new(&r), split(lambda, zeta, k, &r))
             }
         };
-        cached = Some((k, roots, modes));
+        cached = Some((k, roots, modes, fast_slow));
         let w0 = x - Vector3::new(s, 0.0, 0.0);
-        let prop = Propagator::with_roots(a, roots, w0);
+        let prop = Propagator::with_roots(a, roots, fast_slow, w0);
         let z_start = l(&w0) + s;
         let watches: &[Watch] = match phase {
             Phase::Loading => &[Watch::RateFalls],
-            // separation at z̄ = z̄_f (F = 0); reload at z̄ = z̄_m, whose target is taken from w0
-            // itself so that g(0) is exactly 0 and the start is not mistaken for a crossing
-            Phase::Unloading(_) => &[Watch::Falls(0.0), Watch::Rises(l(&w0))],
+            // separation at z̄ = z̄_f (F = 0); reload once z̄ rises past z̄_m, whose value is
+            // taken from w0 itself so that the start is not mistaken for a crossing
+            Phase::Unloading(_) => &[
+                Watch::Falls(0.0),
+                Watch::Rises(l(&w0) + RELOAD_SLACK * f64::EPSILON * (z_start.abs() + w0.amax())),
+            ],
         };
         let Found {
             len,
