@@ -135,7 +135,7 @@ fn pair_flow(centre: f64, q: f64, tau: f64) -> (f64, f64) {
     let x2 = q * tau * tau;
     if x2.abs() < 0.25 {
         let ec = (centre * tau).exp();
-        return (ec * coshc(x2), ec * tau * sinhc(x2));
+        return (ec * coshc(x2), ec * super::sinhc(q, tau));
     }
     if q > 0.0 {
         let h = q.sqrt();
@@ -149,20 +149,11 @@ fn pair_flow(centre: f64, q: f64, tau: f64) -> (f64, f64) {
     }
 }
 
-/// Σ x²ⁿ... as a series in x2 = q τ²: cosh(√x2) for |x2| < 0.25, to the term 0.25⁸/16! ≈ 7e-19.
+/// cosh(√x2) as a series in x2 = q τ², for |x2| < 0.25, to the term 0.25⁸/16! ≈ 7e-19.
 fn coshc(x2: f64) -> f64 {
     let h = |d: f64, rest: f64| 1.0 + x2 / d * rest;
     h(
         2.0,
         h(12.0, h(30.0, h(56.0, h(90.0, h(132.0, h(182.0, 1.0)))))),
-    )
-}
-
-/// sinh(√x2)/√x2 for |x2| < 0.25, to the term 0.25⁸/17! ≈ 4e-20.
-fn sinhc(x2: f64) -> f64 {
-    let h = |d: f64, rest: f64| 1.0 + x2 / d * rest;
-    h(
-        6.0,
-        h(20.0, h(42.0, h(72.0, h(110.0, h(156.0, h(210.0, 1.0)))))),
     )
 }
