@@ -386,7 +386,7 @@ mod tests {
             let (zk, zl) = (2.0 * zeta * k, 2.0 * zeta * lambda);
             let a = Matrix3::new(-zk, 1.0, zl / sigma, -k, 0.0, 0.0, zk * sigma, 0.0, -zl);
             let roots = cubic_roots([zk + zl, k, k * zl]);
-            let split = FastSlow::new(zk, zl, k, sigma, roots.s1, roots.centre, roots.q);
+            let split = FastSlow::new(zk, zl, k, sigma, &roots);
             assert!(
                 split.is_some(),
                 "λ={lambda} ζ={zeta}: no split for {roots:?}"

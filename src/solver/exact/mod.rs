@@ -59,7 +59,7 @@ fn system(lambda: f64, zeta: f64, k: f64) -> (Matrix3<f64>, [f64; 3]) {
 /// The phase's fast/slow split (a real mode far faster than the other two), if it has one.
 fn split(lambda: f64, zeta: f64, k: f64, roots: &Roots) -> Option<FastSlow> {
     let (zk, zl) = (2.0 * zeta * k, 2.0 * zeta * lambda);
-    FastSlow::new(zk, zl, k, y_scale(lambda), roots.s1, roots.centre, roots.q)
+    FastSlow::new(zk, zl, k, y_scale(lambda), roots)
 }
 
 /// w and its first three derivatives at τ.

@@ -20,6 +20,7 @@
 //! (the last entry is −(cb/D + d) = −d (a + D)/D, with a + D = a k/(s² + k)). Every entry is a
 //! product or a quotient of the coefficients: B is exact to rounding at its own, slow, scale.
 
+use super::Roots;
 use nalgebra::{Matrix2, Vector2, Vector3};
 
 /// The fastest root must be this many times the others' moduli for the split to be used.
@@ -47,7 +48,8 @@ pub struct FastSlow {
 impl FastSlow {
     /// The split of the phase w' = A w with A as in the module doc (a = 2ζk, d = 2ζλ, scale σ),
     /// when its leftmost real root `s1` is at least `SEPARATION` times the pair's modulus.
-    pub fn new(zk: f64, zl: f64, k: f64, sigma: f64, s1: f64, centre: f64, q: f64) -> Option<Self> {
+    pub fn new(zk: f64, zl: f64, k: f64, sigma: f64, roots: &Roots) -> Option<Self> {
+        let Roots { s1, centre, q } = *roots;
         let pair = if q < 0.0 {
             (centre * centre - q).sqrt()
         } else {
