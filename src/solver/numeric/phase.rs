@@ -63,6 +63,8 @@ pub(super) struct Watcher<'a> {
     pub(super) failed: bool,
     /// A stiff integrator ran (some of) the phase.
     pub(super) stiff: bool,
+    /// The stage of the cascade that finished the integration (see `integrator::CASCADE`).
+    pub(super) stage: usize,
     /// The phase stopped at an event the integration to it did not confirm; it goes on.
     pub(super) spurious: bool,
 }
@@ -125,15 +127,17 @@ impl Solout<f64, X> for Watcher<'_> {
     }
 }
 
-/// Integrate one phase from (t0, x0) until a watched event or `t_stop`.
+/// Integrate one phase from (t0, x0) until a watched event or `t_stop`, down the integrator
+/// cascade from its entry (the stiff one when the dashpot is stiff there), or from `floor` if
+/// that is later.
 pub(super) fn integrate<'a>(
     imp: &'a Impact,
-    t0: f64,
-    x0: X,
+    (t0, x0): (f64, X),
     t_stop: f64,
     watches: Vec<Watch>,
     grid: &'a [f64],
     rtol: f64,
+    floor: usize,
 ) -> Watcher<'a> {
     let mut w = Watcher {
         imp,
@@ -147,6 +151,7 @@ pub(super) fn integrate<'a>(
         steps: 0,
         failed: false,
         stiff: false,
+        stage: floor,
         spurious: false,
     };
     // The crate reports giving up (out of steps, step size underflow) as an error; the watcher
@@ -158,7 +163,11 @@ pub(super) fn integrate<'a>(
     } else {
         0
     };
-    let Some(stage) = first_to_finish(entry, |method| {
+    // From `floor` on, then round to the stages between the entry and it: a floor is where a
+    // phase that goes on after a noise crossing prefers to start (see `run_phases`), not a
+    // bar to the integrators above it, which may still carry it where those below give up.
+    let stages = (entry.max(floor)..CASCADE.len()).chain(entry..floor);
+    let Some(stage) = first_to_finish(stages, |method| {
         w.stiff |= method.is_stiff();
         let (t1, x1) = w.last;
         let run = solve_with(imp, t1, x1, t_stop, rtol, method, &mut w);
@@ -168,6 +177,7 @@ pub(super) fn integrate<'a>(
         w.failed = true;
         return w;
     };
+    w.stage = stage;
     let Some((t, t_prev, x_prev, watch)) = w.hit else {
         return w;
     };
@@ -175,7 +185,7 @@ pub(super) fn integrate<'a>(
     // Radau5's continuous output is of lower order than its steps. That integration, too, goes
     // down the cascade if it must.
     let mut end = EndState(t_prev, x_prev);
-    let Some(stage) = first_to_finish(stage, |method| {
+    let Some(stage) = first_to_finish(stage..CASCADE.len(), |method| {
         w.stiff |= method.is_stiff();
         let run = solve_with(imp, end.0, end.1, t, rtol, method, &mut end);
         w.steps += run.steps;
@@ -186,6 +196,7 @@ pub(super) fn integrate<'a>(
         return w;
     };
     w.last = (t, end.1);
+    w.stage = stage;
     // An event the integration to it does not confirm was an artefact of the dense output
     // over a long step (Radau5 over thousands of ω0⁻¹ of creep can dip z̄ through z̄_f between
     // its points): the phase is not over, it goes on from there.
@@ -198,8 +209,12 @@ pub(super) fn integrate<'a>(
     w
 }
 
-/// The first stage of the cascade from `stage` on at which `attempt` (with that stage's
-/// integrator, from wherever the one before gave up) finishes; `None` when the last gives up.
-fn first_to_finish(stage: usize, mut attempt: impl FnMut(Integrator) -> bool) -> Option<usize> {
-    (stage..CASCADE.len()).find(|&i| attempt(CASCADE[i]))
+/// The first of the cascade's `stages`, in their order, at which `attempt` (with that stage's
+/// integrator, from wherever the one before gave up) finishes; `None` when all give up. Each
+/// stage is tried once at most, so a phase costs `CASCADE_BUDGET` at most.
+fn first_to_finish(
+    stages: impl IntoIterator<Item = usize>,
+    mut attempt: impl FnMut(Integrator) -> bool,
+) -> Option<usize> {
+    stages.into_iter().find(|&i| attempt(CASCADE[i]))
 }
