@@ -123,7 +123,7 @@ impl Impact {
         }
         if self.lambda != 0.0 {
             let stored = 0.5 * v * v + contact;
-            let by_creep = 4.0 * self.zeta * self.lambda * x[2].abs() + (2.0 * stored).sqrt();
+            let by_creep = 2.0 * self.pace(x).abs() + (2.0 * stored).sqrt();
             return by_energy.min(by_creep);
         }
         let (z_f, turn) = match self.phase {
@@ -140,6 +140,12 @@ impl Impact {
             (z.max(turn) - z_f).max(0.0) / (2.0 * self.zeta)
         };
         by_energy.min(by_impulse)
+    }
+
+    /// The speed at which the recoil spring retracts the element when the contact carries no
+    /// force, 2ζλȳ: what a ball must outrun to leave (see `PACE_SLACK`).
+    fn pace(&self, x: &X) -> f64 {
+        2.0 * self.zeta * self.lambda * x[2]
     }
 
     /// The fastest rate of the dashpot from z̄ on in this phase, in units of ω0: 2ζ times the
@@ -358,8 +364,7 @@ fn run_phases(
                 // with the element retracting at 6.7e-6): once the ball has come to rest (see
                 // `cor_bound`) it is no rebound; before, the phase goes on, for a recoil
                 // spring that still holds energy can yet push the ball out.
-                let pace = 2.0 * imp.zeta * imp.lambda * x_end[2];
-                out.rebound = -x_end[1] > left.max((1.0 - PACE_SLACK) * pace);
+                out.rebound = -x_end[1] > left.max((1.0 - PACE_SLACK) * imp.pace(&x_end));
                 if out.rebound {
                     out.events.push((t, EventKind::Separation, z_end));
                     None
