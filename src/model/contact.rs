@@ -144,6 +144,19 @@ impl Contact {
         }
     }
 
+    /// dF/dz on an unloading branch (of `unloading_force`): what sets how fast a dashpot in
+    /// series relaxes the contact.
+    pub fn unloading_stiffness(&self, z: f64, u: &Unloading) -> f64 {
+        if z <= u.z_f || u.z_m <= u.z_f {
+            return 0.0;
+        }
+        let span = u.z_m - u.z_f;
+        match self.law {
+            ContactLaw::Linear => u.f_m / span,
+            _ => 1.5 * u.f_m / span * ((z - u.z_f) / span).sqrt(),
+        }
+    }
+
     /// The indentation at which the loading branch carries force `f` ≥ 0: the inverse of
     /// `loading_force` (Eqs. 10–11, 21, 7).
     pub fn loading_indentation(&self, f: f64) -> f64 {

@@ -14,6 +14,7 @@
 
 use super::roots::newton_bracketed;
 pub use fast_slow::FastSlow;
+pub(in crate::solver) use fast_slow::pair_flow;
 
 mod fast_slow;
 use fast_slow::SplitState;

@@ -83,6 +83,11 @@ impl Integrator {
     }
 }
 
+/// The loosest tolerance an integrator of the cascade runs at when `rtol` is asked for.
+pub(super) fn loosest(rtol: f64) -> f64 {
+    CASCADE.iter().map(|m| m.rtol(rtol)).fold(rtol, f64::max)
+}
+
 /// The most steps one phase can take down the whole cascade.
 pub(in crate::solver) const CASCADE_BUDGET: usize = {
     let mut sum = 0;

@@ -12,10 +12,12 @@
 use super::{EventKind, Outcome, SolveOptions};
 use crate::model::contact::{Contact, ContactLaw, Unloading};
 use crate::model::params::Normalized;
+use creep::Closed;
 use differential_equations::ode::ODE;
 use integrator::CASCADE;
 use phase::{Watch, integrate};
 
+mod creep;
 mod integrator;
 mod phase;
 
@@ -62,6 +64,10 @@ const STIFF: f64 = 2000.0;
 /// crossings made in the noise with the ball moving out far slower (3.7e-8 against 6.7e-6 at
 /// λ = 4.2e-8, ζ = 6.3, elastic–plastic, once taken for the separation).
 const PACE_SLACK: f64 = 1e-3;
+/// The relative error of the COR up to which a creep may be finished in closed form (the bound
+/// of `creep`): ten times tighter than the integrated creep, which ends at a grazing
+/// separation found to `PACE_SLACK`.
+const CREEP_TOL: f64 = 0.1 * PACE_SLACK;
 /// A ball whose remaining energy could not give it a COR above this has come to rest.
 const REST_COR: f64 = 1e-9;
 
@@ -165,6 +171,16 @@ impl Impact {
             (Phase::Loading, ContactLaw::ElasticPlastic) => hertz(z.min(c.zp_bar)).max(1.0),
         };
         2.0 * self.zeta * (slope + self.lambda)
+    }
+
+    /// The rest of an unloading phase from x in closed form, where the error bound of `creep`
+    /// allows it, with z̄ known to the tolerance `z_rtol` of the integrator that reached x.
+    fn close_creep(&self, x: &X, z_rtol: f64) -> Option<Closed> {
+        let Phase::Unloading(u) = self.phase else {
+            return None;
+        };
+        let z_tol = z_rtol * (x[0].abs() + ATOL_FACTOR);
+        creep::close(self, &u, x, z_tol, CREEP_TOL, REST_COR)
     }
 
     /// The ball has come to rest: no rebound above `REST_COR` can follow.
@@ -310,8 +326,14 @@ fn run_phases(
         let (t_end, x_end) = w.last;
         out.steps += w.steps;
         out.stiff |= w.stiff;
+        // A creep finished in closed form (see `creep`): where the integrators gave up on it,
+        // or crossed z̄_f in their noise.
+        let mut closing = None;
         if w.failed {
-            out.unresolved = Some("the integrator gave up before the end of contact");
+            closing = imp.close_creep(&x_end, integrator::loosest(rtol));
+            if closing.is_none() {
+                out.unresolved = Some("the integrator gave up before the end of contact");
+            }
         } else if hit.is_none() && !w.spurious && !imp.at_rest(&x_end) {
             // the horizon came first: the ball neither left nor came to rest
             out.unresolved = Some("the ball neither left nor came to rest within the horizon");
@@ -340,6 +362,7 @@ fn run_phases(
         // a new phase starts at the top of the cascade; a phase that goes on keeps its floor
         let carried = std::mem::take(&mut floor);
         let next = match (imp.phase, hit) {
+            _ if closing.is_some() => None,
             (Phase::Loading, Some(Watch::Yields(_))) => {
                 yielded = true;
                 out.events.push((t, EventKind::Yield, z_end));
@@ -362,13 +385,17 @@ fn run_phases(
                 // still moves in, or moves out slower than the element. That is no separation
                 // (it was taken for one at λ = 4.2e-8, ζ = 6.3, elastic–plastic: e = 3.7e-8,
                 // with the element retracting at 6.7e-6): once the ball has come to rest (see
-                // `cor_bound`) it is no rebound; before, the phase goes on, for a recoil
-                // spring that still holds energy can yet push the ball out.
+                // `cor_bound`) it is no rebound; before, the creep is finished in closed form
+                // where its error bound allows (see `creep`), or else the phase goes on, for a
+                // recoil spring that still holds energy can yet push the ball out.
                 out.rebound = -x_end[1] > left.max((1.0 - PACE_SLACK) * imp.pace(&x_end));
                 if out.rebound {
                     out.events.push((t, EventKind::Separation, z_end));
                     None
                 } else if imp.at_rest(&x_end) {
+                    None
+                } else if let Some(c) = imp.close_creep(&x_end, CASCADE[w.stage].rtol(rtol)) {
+                    closing = Some(c);
                     None
                 } else {
                     // From z̄_f itself, not from the crossing's state (the event was confirmed
@@ -397,6 +424,11 @@ fn run_phases(
             }
             (_, None) => None,
         };
+        if let Some(c) = closing {
+            let used;
+            (t, x, used) = c.finish(&imp, (t, x), rest, left, &mut samples, &mut out);
+            rest = &rest[used..];
+        }
         if let Phase::Unloading(u) = imp.phase {
             out.z_f = u.z_f;
         }

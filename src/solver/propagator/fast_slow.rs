@@ -133,7 +133,7 @@ pub struct SplitState {
 /// c ± √q: (e^{cτ} C, e^{cτ} S), with C = cosh(√q τ), S = sinh(√q τ)/√q (cos and sin/√−q for
 /// q < 0). For a real pair each exponential is formed in one piece: e^{cτ} and cosh(√q τ)
 /// apart overflow against each other once √q τ > 709.
-fn pair_flow(centre: f64, q: f64, tau: f64) -> (f64, f64) {
+pub(in crate::solver) fn pair_flow(centre: f64, q: f64, tau: f64) -> (f64, f64) {
     let x2 = q * tau * tau;
     if x2.abs() < 0.25 {
         let ec = (centre * tau).exp();
