@@ -10,14 +10,14 @@
 //! (see `Impact::cor_bound`) has come to rest: no rebound.
 
 use super::{EventKind, Outcome, SolveOptions};
-use crate::model::contact::{Contact, ContactLaw, Unloading};
+use crate::model::contact::{Contact, ContactLaw};
 use crate::model::params::Normalized;
-use creep::Closed;
-use differential_equations::ode::ODE;
+use impact::{Impact, Phase};
 use integrator::CASCADE;
 use phase::{Watch, integrate};
 
 mod creep;
+mod impact;
 mod integrator;
 mod phase;
 
@@ -70,146 +70,6 @@ const PACE_SLACK: f64 = 1e-3;
 const CREEP_TOL: f64 = 0.1 * PACE_SLACK;
 /// A ball whose remaining energy could not give it a COR above this has come to rest.
 const REST_COR: f64 = 1e-9;
-
-#[derive(Clone, Copy, Debug)]
-enum Phase {
-    Loading,
-    Unloading(Unloading),
-}
-
-struct Impact {
-    lambda: f64,
-    zeta: f64,
-    contact: Contact,
-    phase: Phase,
-}
-
-impl Impact {
-    fn force(&self, z: f64) -> f64 {
-        match self.phase {
-            Phase::Loading => self.contact.loading_force(z),
-            Phase::Unloading(u) => self.contact.unloading_force(z, &u),
-        }
-    }
-    /// An upper bound on the COR the ball can still leave with, from state x.
-    ///
-    /// Energy: the kinetic energy, the recoverable energy of the contact on the current branch
-    /// and the recoil spring's; the dashpot only takes energy away, so e ≤ √(2 E).
-    ///
-    /// Impulse, with no recoil spring (λ = 0): the dashpot then carries the whole force,
-    /// ȳ' = 2ζF̄, so z̄' = ᾱ' − 2ζF̄ ≤ −2ζF̄ once the ball moves out (ᾱ' ≤ 0, and it stays so,
-    /// ᾱ'' = −F̄ ≤ 0). The impulse still to come, ∫F̄ dτ, is then at most ∫dz̄/(2ζ) over the
-    /// fall of z̄ from where the ball turns, z̄*, to z̄_f ≥ 0: e ≤ −ᾱ' + (z̄* − z̄_f)/(2ζ).
-    /// While the ball still moves in, z̄ can only rise where 2ζF̄(z̄) < ᾱ' ≤ ᾱ'_now, so z̄* is
-    /// at most the larger of z̄ and the indentation where the branch carries ᾱ'_now/(2ζ).
-    /// This is what ends a ball creeping into a weak dashpot: its kinetic energy decays only
-    /// as exp(−τ/2ζ), but it sits at z̄ ≈ F̄⁻¹(ᾱ'/2ζ), far too shallow to send it back.
-    ///
-    /// Creep, with a recoil spring (λ > 0): ȳ ≥ 0 throughout (at ȳ = 0, ȳ' = 2ζF̄ ≥ 0), and
-    /// the element retracts at −ȳ' = 2ζ(λȳ − F̄) ≤ 2ζλȳ. The ball stays in contact only while
-    /// it moves out no faster than that, give or take what it and the contact store; so the
-    /// spring's energy reaches the ball at a speed of 2ζλȳ at most, doubled for the overshoot of
-    /// the ball on its contact when that drive sets in, and the rest at √(2(KE + W)) at most:
-    /// e ≤ 4ζλȳ + √(2(KE + W)). An argument, not a proof (ȳ can still grow while the contact
-    /// pushes harder than the spring, from energy the second term counts), and used only
-    /// where it is far below the energy bound: a ball at the integrator's noise floor with a
-    /// spring so soft that it holds ½λȳ² but drives the ball at only 2ζλȳ (λ = 1e-15, ζ = 5:
-    /// e = 1e-13 at τ ≈ 600, the separation a crossing of z̄ ~ 1e-27). There the noise crossed
-    /// z̄_f with the ball still moving in, phase after phase, until the budget ran out.
-    fn cor_bound(&self, x: &X) -> f64 {
-        let (z, v) = (x[0], x[1]);
-        let contact = match self.phase {
-            Phase::Loading => self.contact.loading_work(z),
-            Phase::Unloading(u) => self.contact.unloading_work(z, &u),
-        };
-        let energy = 0.5 * v * v + contact + 0.5 * self.lambda * x[2] * x[2];
-        let by_energy = (2.0 * energy).sqrt();
-        if self.zeta <= 0.0 {
-            return by_energy;
-        }
-        if self.lambda != 0.0 {
-            let stored = 0.5 * v * v + contact;
-            let by_creep = 2.0 * self.pace(x).abs() + (2.0 * stored).sqrt();
-            return by_energy.min(by_creep);
-        }
-        let (z_f, turn) = match self.phase {
-            Phase::Loading => (0.0, self.contact.loading_indentation(v / (2.0 * self.zeta))),
-            Phase::Unloading(u) => (
-                u.z_f,
-                self.contact
-                    .unloading_indentation(v / (2.0 * self.zeta), &u),
-            ),
-        };
-        let by_impulse = if v <= 0.0 {
-            -v + (z - z_f).max(0.0) / (2.0 * self.zeta)
-        } else {
-            (z.max(turn) - z_f).max(0.0) / (2.0 * self.zeta)
-        };
-        by_energy.min(by_impulse)
-    }
-
-    /// The speed at which the recoil spring retracts the element when the contact carries no
-    /// force, 2ζλȳ: what a ball must outrun to leave (see `PACE_SLACK`).
-    fn pace(&self, x: &X) -> f64 {
-        2.0 * self.zeta * self.lambda * x[2]
-    }
-
-    /// The fastest rate of the dashpot from z̄ on in this phase, in units of ω0: 2ζ times the
-    /// stiffness it works against, the contact's (its steepest on the branch ahead: dF̄/dz̄ grows
-    /// with z̄ on every branch but the elastic–plastic law's linear stretch) plus the recoil
-    /// spring's. An elastic–plastic unloading branch deep in the plastic range is as steep as
-    /// 1.5 F̄_m/(z̄_m − z̄_f), hundreds of times the loading slope.
-    fn dashpot_rate(&self, z: f64) -> f64 {
-        let c = &self.contact;
-        let hertz = |z: f64| 1.5 * c.kappa * z.max(0.0).sqrt();
-        let slope = match (self.phase, c.law) {
-            (Phase::Unloading(u), _) if u.z_m <= u.z_f => 0.0,
-            (Phase::Unloading(u), ContactLaw::Linear) => u.f_m / (u.z_m - u.z_f),
-            (Phase::Unloading(u), _) => 1.5 * u.f_m / (u.z_m - u.z_f),
-            (Phase::Loading, ContactLaw::Linear) => 1.0,
-            (Phase::Loading, ContactLaw::Hertz) => hertz(z),
-            (Phase::Loading, ContactLaw::ElasticPlastic) => hertz(z.min(c.zp_bar)).max(1.0),
-        };
-        2.0 * self.zeta * (slope + self.lambda)
-    }
-
-    /// The rest of an unloading phase from x in closed form, where the error bound of `creep`
-    /// allows it, with z̄ known to the tolerance `z_rtol` of the integrator that reached x.
-    fn close_creep(&self, x: &X, z_rtol: f64) -> Option<Closed> {
-        let Phase::Unloading(u) = self.phase else {
-            return None;
-        };
-        let z_tol = z_rtol * (x[0].abs() + ATOL_FACTOR);
-        creep::close(self, &u, x, z_tol, CREEP_TOL, REST_COR)
-    }
-
-    /// The ball has come to rest: no rebound above `REST_COR` can follow.
-    fn at_rest(&self, x: &X) -> bool {
-        self.cor_bound(x) < REST_COR
-    }
-
-    /// (F̄, ȳ') at a state.
-    fn force_and_rate(&self, x: &X) -> (f64, f64) {
-        let f = self.force(x[0]);
-        (f, 2.0 * self.zeta * (f - self.lambda * x[2]))
-    }
-}
-
-impl ODE<f64, X> for Impact {
-    fn diff(&self, _t: f64, x: &X, dx: &mut X) {
-        let (f, ydot) = self.force_and_rate(x);
-        // z̄, not ᾱ, is carried: z̄ = ᾱ − ȳ by subtraction loses all of its digits when the ball
-        // creeps into a weak dashpot (ᾱ, ȳ large, z̄ tiny), and the force is a function of z̄.
-        dx[0] = x[1] - ydot;
-        dx[1] = -f;
-        dx[2] = ydot;
-        dx[3] = if self.zeta > 0.0 {
-            ydot * ydot / (2.0 * self.zeta)
-        } else {
-            0.0
-        };
-    }
-}
 
 /// How long to follow a ball that may never leave: a hundred times the sum of the contact
 /// times (linear spring π; Hertz alone 2.94 z̄_m with z̄_m = (5/(4κ))^{2/5}, long when the
