@@ -398,3 +398,41 @@ fn creeps_at_the_integrators_noise_floor_answer() {
         );
     }
 }
+
+/// An elastic–plastic ball creeping in past yield into a weak dashpot (λ = 1.4e-8, ζ = 1e4,
+/// ᾱ' ≈ 0.7). Past yield the loading branch is steeper at z̄_m than the branch unloading from
+/// it, so a reload found a slack past z̄_m jumped the force up, and the dashpot turned z̄'
+/// negative at once: unload, reload, 3 steps each, until the 4096 phases ran out. A reload now
+/// goes on from where the loading branch carries the same force. Measured: e = 0.56054181477 at
+/// rtol 1e-10 and 0.56054181486 at 1e-12 (1.6e-10 apart), 476 and 311 steps.
+#[test]
+fn a_creep_past_yield_reloads_at_the_same_force() {
+    let p = ImpactParams {
+        mass: 2.017532356521787,
+        k_p: 100.04626806277288,
+        damping: 0.0007103636092979013,
+        k_r: 1.4458360691289907e-6,
+        z_p: 0.0003356046104997777,
+        k_h: 684.0708052862702,
+        v0: 3.4377907878562244,
+    };
+    let solve = |rtol| {
+        let o = SolveOptions {
+            rtol,
+            ..SolveOptions::default()
+        }
+        .with_energy()
+        .with_method(Method::Numeric);
+        let r = simulate(&p, ContactLaw::ElasticPlastic, &o).unwrap_or_else(|e| panic!("{e}"));
+        bouncelab::solver::audit::audit(&r).unwrap_or_else(|why| panic!("{why}"));
+        r
+    };
+    let (default, tight) = (solve(1e-10), solve(1e-12));
+    assert!(default.rebound && tight.rebound);
+    assert!(
+        (default.cor - tight.cor).abs() < 1e-7 * tight.cor,
+        "e = {} at rtol 1e-10, {} at 1e-12",
+        default.cor,
+        tight.cor
+    );
+}

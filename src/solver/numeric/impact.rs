@@ -121,6 +121,35 @@ impl Impact {
         creep::close(self, &u, x, z_tol, CREEP_TOL, REST_COR)
     }
 
+    /// Move a reload, found `RELOAD_SLACK` tolerances past z̄_m on the unloading branch `u`,
+    /// to where the loading branch carries the same force, when that is lower: the element
+    /// takes the difference up through the dashpot. Returns the work the contact did.
+    ///
+    /// Why: past yield the elastic–plastic loading branch is steeper at z̄_m than the branch
+    /// that unloads from it (the two meet there), so the loading force at the reload exceeds
+    /// the unloading one by (slope difference) × slack. Against a weak dashpot that jump turns
+    /// z̄' negative at once (2ζ × it, against a creep of z̄' ~ 6e-9): an unload, a reload a
+    /// slack higher, and so on, 3 steps a phase, until the phase budget ran out (λ = 1.4e-8,
+    /// ζ = 1e4, a ball creeping in at ᾱ' ≈ 0.7 past yield). At the same force the ball goes on
+    /// creeping in on the loading branch. The ball stays put; the element moves by Δ = z̄ − z̄',
+    /// the spring taking λȳΔ of the contact's FΔ and the dashpot (F − λȳ)Δ, so the energy
+    /// balance is kept.
+    pub(super) fn reload_where_forces_meet(&self, u: &Unloading, x: &mut X) -> f64 {
+        let (z, spring) = (x[0], self.lambda * x[2]);
+        let f = self.contact.unloading_force(z, u);
+        let at = self.contact.loading_indentation(f);
+        let delta = z - at;
+        // (no dashpot, no element to move; written so that a NaN reads as no)
+        let lower = delta > 0.0 && f >= spring && self.zeta > 0.0;
+        if !lower {
+            return 0.0;
+        }
+        x[0] = at;
+        x[2] += delta;
+        x[3] += (f - spring) * delta;
+        f * delta
+    }
+
     /// The ball has come to rest: no rebound above `REST_COR` can follow.
     pub(super) fn at_rest(&self, x: &X) -> bool {
         self.cor_bound(x) < REST_COR

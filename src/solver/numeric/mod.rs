@@ -232,9 +232,10 @@ fn run_phases(
                 out.events.push((t, EventKind::Unload, z_end));
                 Some(Phase::Unloading(contact.unload_from(z_end)))
             }
-            (Phase::Unloading(_), Some(Watch::Reloads(_))) => {
+            (Phase::Unloading(u), Some(Watch::Reloads(_))) => {
                 out.events.push((t, EventKind::Reload, z_end));
                 yielded = z_end >= contact.zp_bar;
+                out.contact_work -= imp.reload_where_forces_meet(&u, &mut x);
                 Some(Phase::Loading)
             }
             (Phase::Unloading(u), Some(_)) => {
