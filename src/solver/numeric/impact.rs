@@ -101,9 +101,8 @@ impl Impact {
         let c = &self.contact;
         let hertz = |z: f64| 1.5 * c.kappa * z.max(0.0).sqrt();
         let slope = match (self.phase, c.law) {
-            (Phase::Unloading(u), _) if u.z_m <= u.z_f => 0.0,
-            (Phase::Unloading(u), ContactLaw::Linear) => u.f_m / (u.z_m - u.z_f),
-            (Phase::Unloading(u), _) => 1.5 * u.f_m / (u.z_m - u.z_f),
+            // steepest at its top
+            (Phase::Unloading(u), _) => c.unloading_stiffness(u.z_m, &u),
             (Phase::Loading, ContactLaw::Linear) => 1.0,
             (Phase::Loading, ContactLaw::Hertz) => hertz(z),
             (Phase::Loading, ContactLaw::ElasticPlastic) => hertz(z.min(c.zp_bar)).max(1.0),
