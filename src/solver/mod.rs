@@ -136,8 +136,14 @@ pub struct ImpactResponse {
     pub max_indentation: f64,
     /// Permanent indentation z_f (m), Eq. 18.
     pub permanent_indentation: f64,
+    /// The recoil element's displacement y (m) where the run ended: at separation, what the
+    /// recoil spring still holds (`EnergyBudget::spring` is ½ K_r y²) and, with its sign, which
+    /// way it drives the element once the force is gone.
+    pub element_displacement: f64,
     /// F̄_m = F_m/(m v0 ω0).
     pub max_force_normalized: f64,
+    /// ȳ = y ω0/v0 where the run ended (see `element_displacement`).
+    pub element_displacement_normalized: f64,
     /// τ_f = ω0 t_f; `None` when there is no rebound.
     pub contact_time_normalized: Option<f64>,
     pub normalized: Normalized,
@@ -337,7 +343,9 @@ fn to_si(
         duration: o.tau_end * t,
         max_indentation: o.z_max * z,
         permanent_indentation: o.z_f * z,
+        element_displacement: o.y_end * z,
         max_force_normalized: o.f_max,
+        element_displacement_normalized: o.y_end,
         contact_time_normalized: o.rebound.then_some(o.tau_end),
         normalized: n,
         // by value: the same layout, so the allocation is reused in place
