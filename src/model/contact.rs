@@ -103,6 +103,20 @@ impl Contact {
         }
     }
 
+    /// dF/dz on the loading branch (of `loading_force`), from below at the elastic–plastic
+    /// kink z_p (the side `loading_force` takes there).
+    pub fn loading_stiffness(&self, z: f64) -> f64 {
+        if z <= 0.0 {
+            return 0.0;
+        }
+        match self.law {
+            ContactLaw::Linear => 1.0,
+            ContactLaw::Hertz => 1.5 * self.kappa * z.sqrt(),
+            ContactLaw::ElasticPlastic if z <= self.zp_bar => 1.5 * self.kappa * z.sqrt(),
+            ContactLaw::ElasticPlastic => 1.0,
+        }
+    }
+
     /// Permanent indentation after unloading from z_m: z_f = z_m − z_r, with
     /// z_r = z_p (2 z_m/z_p − 1)^{1/2} above z_p and z_r = z_m below (Eqs. 18, 19).
     /// Hertz alone is elastic: z_f = 0.

@@ -7,7 +7,8 @@
 //! their step size ("step size too small") where the 3/2-power force has no second derivative
 //! or where a creeping ball's state spans ten decades (z̄ ~ 1e-9 against ȳ ~ 1e4) — which one
 //! collapses, and where, changes with the tolerance (measured: Radau5 failing at 1e-9 and
-//! passing at 1e-10 and 1e-8 on the same phase, BDF failing at 1e-10 and passing at 1e-9).
+//! passing at 1e-10 and 1e-8 on the same phase, BDF failing at 1e-10 and passing at 1e-9; both
+//! measured with the crate's differenced Jacobian, before `Impact::jacobian` was written out).
 //! So a phase is handed down the list below from the state where the previous one gave up.
 
 use super::{ATOL_FACTOR, Impact, X};
