@@ -100,13 +100,16 @@ impl Impact {
     /// 1.5 F̄_m/(z̄_m − z̄_f), hundreds of times the loading slope.
     pub(super) fn dashpot_rate(&self, z: f64) -> f64 {
         let c = &self.contact;
-        let hertz = |z: f64| 1.5 * c.kappa * z.max(0.0).sqrt();
         let slope = match (self.phase, c.law) {
             // steepest at its top
             (Phase::Unloading(u), _) => c.unloading_stiffness(u.z_m, &u),
+            // (from z̄ = 0 on too, where the ball meets the wall)
             (Phase::Loading, ContactLaw::Linear) => 1.0,
-            (Phase::Loading, ContactLaw::Hertz) => hertz(z),
-            (Phase::Loading, ContactLaw::ElasticPlastic) => hertz(z.min(c.zp_bar)).max(1.0),
+            (Phase::Loading, ContactLaw::Hertz) => c.loading_stiffness(z),
+            // the Hertz stretch up to z̄_p, then the linear one
+            (Phase::Loading, ContactLaw::ElasticPlastic) => {
+                c.loading_stiffness(z.min(c.zp_bar)).max(1.0)
+            }
         };
         2.0 * self.zeta * (slope + self.lambda)
     }
