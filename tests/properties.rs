@@ -148,9 +148,9 @@ proptest! {
     /// The two independent solvers on the linear law, over the whole domain: the same outcome,
     /// and the same COR to what the adaptive one promises (1e-8 by DOPRI5; by a stiff
     /// integrator 1e-4: measured over 60 000 random impacts, seeds 4242, 777 and 31337,
-    /// 5.6e-10 and 7.8e-6 at worst). Near "no rebound" (e below 1e-6) they may decide differently. This is what
-    /// found the exact solver settling a creep early (λ = 1e-9, ζ = 3000: no rebound for
-    /// e = 0.03).
+    /// 5.6e-10 and 7.8e-6 at worst). Near "no rebound" (e below 1e-6) they may decide
+    /// differently. This is what found the exact solver settling a creep early (λ = 1e-9,
+    /// ζ = 3000: no rebound for e = 0.03).
     #[test]
     fn exact_and_adaptive_agree_on_the_linear_law(params in ball()) {
         let run = |m| simulate(&params, ContactLaw::Linear, &SolveOptions::default().with_method(m));

@@ -409,8 +409,9 @@ fn creeps_at_the_integrators_noise_floor_answer() {
 /// ᾱ' ≈ 0.7). Past yield the loading branch is steeper at z̄_m than the branch unloading from
 /// it, so a reload found a slack past z̄_m jumped the force up, and the dashpot turned z̄'
 /// negative at once: unload, reload, 3 steps each, until the 4096 phases ran out. A reload now
-/// goes on from where the loading branch carries the same force. Measured: e = 0.56054181477 at
-/// rtol 1e-10 and 0.56054181486 at 1e-12 (1.6e-10 apart), 476 and 311 steps.
+/// goes on from where the loading branch carries the same force. Measured: e = 0.56054181484 at
+/// rtol 1e-10 and 0.56054181472 at 1e-12 (1.2e-10 apart), 177 and 184 steps (476 and 311
+/// with the crate's differenced Jacobian).
 #[test]
 fn a_creep_past_yield_reloads_at_the_same_force() {
     let p = ImpactParams {

@@ -111,9 +111,8 @@ impl Contact {
         }
         match self.law {
             ContactLaw::Linear => 1.0,
-            ContactLaw::Hertz => 1.5 * self.kappa * z.sqrt(),
-            ContactLaw::ElasticPlastic if z <= self.zp_bar => 1.5 * self.kappa * z.sqrt(),
-            ContactLaw::ElasticPlastic => 1.0,
+            ContactLaw::ElasticPlastic if z > self.zp_bar => 1.0,
+            ContactLaw::Hertz | ContactLaw::ElasticPlastic => 1.5 * self.kappa * z.sqrt(),
         }
     }
 

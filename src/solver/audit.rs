@@ -137,9 +137,9 @@ pub fn audit(r: &ImpactResponse) -> Result<(), String> {
 /// ȳ_f with its sign: the element ends a hair below zero where a stiff integrator steps across
 /// its relaxation (Radau5's stability function is negative far out on the stiff axis: ȳ_f =
 /// −5.8e-10 at λ = 2 622, ζ = 1e4, elastic–plastic, where the relaxation at 2ζλ = 5e7 against
-/// the force's fall puts it at ~1e-12 above). The spring then pushes the element after the
-/// ball, which it does not slow. Read off the spring's energy, |ȳ_f| had called that
-/// separation slower than the element (2ζλ|ȳ_f| = 0.031 against e = 0.021).
+/// the force's fall puts it, by estimate, ~1e-12 above zero). The spring then pushes the
+/// element after the ball, which it does not slow. Read off the spring's energy, |ȳ_f| had
+/// called that separation slower than the element (2ζλ|ȳ_f| = 0.031 against e = 0.021).
 fn outruns_the_element(r: &ImpactResponse) -> Result<(), String> {
     let n = &r.normalized;
     if !r.rebound || n.lambda == 0.0 {

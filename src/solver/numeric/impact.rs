@@ -193,10 +193,10 @@ impl ODE<f64, X> for Impact {
     /// indentations a creeping ball lives on (z̄ ~ 1e-5 down to 1e-16) and than its distance to
     /// a kink of the force. Within 4e-9 of the elastic–plastic yield point z̄_p the difference
     /// reached across it into the linear branch and gave a third of the Hertz slope (2.9
-    /// against 8.2); Radau5's Newton iteration then
-    /// converged only on steps near the dashpot's time, ~1e-5 ω0⁻¹, and a fresh start there
-    /// (the integration to a yield event) ran out of steps short of it, every integrator of
-    /// the cascade in turn (λ = 7.2e-9, ζ = 7 911, K_h = 2.5e12 N/m^1.5).
+    /// against 8.2); Radau5's Newton iteration then converged only on steps near the
+    /// dashpot's time, ~1e-5 ω0⁻¹, and a fresh start there (the integration to a yield event)
+    /// ran out of steps short of it, every integrator of the cascade in turn (λ = 7.2e-9,
+    /// ζ = 7 911, K_h = 2.5e12 N/m^1.5).
     ///
     /// With k = dF̄/dz̄ and ȳ' = 2ζ(F̄ − λȳ): ∂ȳ'/∂z̄ = 2ζk, ∂ȳ'/∂ȳ = −2ζλ, and
     /// Ē_d' = ȳ'²/(2ζ) has the gradient (ȳ'/ζ) ∇ȳ' = 2ȳ' (k, 0, −λ, 0).
