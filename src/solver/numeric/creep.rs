@@ -122,6 +122,15 @@ impl Creep {
     }
 }
 
+/// Where a creep finished in closed form ends: the state at the separation (or where the ball
+/// was found at rest), and how many samples of the grid it covered.
+#[derive(Debug, Clone, Copy)]
+pub(super) struct Finished {
+    pub t: f64,
+    pub x: X,
+    pub covered: usize,
+}
+
 /// A creep finished in closed form.
 #[derive(Debug, Clone, Copy)]
 pub(super) struct Closed {
@@ -231,9 +240,9 @@ impl Creep {
 
 impl Closed {
     /// Finish the run from (t, x) along the creep: the state at the separation (or where the
-    /// ball was found at rest), the samples of `grid` it covers (how many, returned), the
-    /// contact's last work and the energy the creep dissipated, and whether the ball left
-    /// (moving out faster than `left`, as a separation the integrators find).
+    /// ball was found at rest), the samples of `grid` it covers, the contact's last work and
+    /// the energy the creep dissipated, and whether the ball left (moving out faster than
+    /// `left`, as a separation the integrators find).
     pub(super) fn finish(
         &self,
         imp: &Impact,
@@ -242,7 +251,7 @@ impl Closed {
         left: f64,
         samples: &mut Vec<[f64; 4]>,
         out: &mut Outcome,
-    ) -> (f64, X, usize) {
+    ) -> Finished {
         let (c, u) = (&imp.contact, &self.u);
         let tau = self.leaves.unwrap_or(0.0);
         let w = self.creep.at(tau);
@@ -265,7 +274,11 @@ impl Closed {
         if out.rebound {
             out.events.push((t + tau, EventKind::Separation, u.z_f));
         }
-        (t + tau, [u.z_f, w[1], w[0], x[3] + lost], covered)
+        Finished {
+            t: t + tau,
+            x: [u.z_f, w[1], w[0], x[3] + lost],
+            covered,
+        }
     }
 }
 
