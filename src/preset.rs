@@ -5,7 +5,6 @@ use crate::model::contact::ContactLaw;
 use crate::model::materials::{self, Layer};
 use crate::model::params::{ImpactParams, display_number};
 use serde::{Deserialize, Serialize};
-use std::fmt;
 
 mod text;
 
@@ -124,8 +123,9 @@ pub struct Derived {
     pub surface_density: f64,
 }
 
-/// A preset that cannot be used: where, and why.
-#[derive(Debug, Clone, PartialEq)]
+/// A preset that cannot be used: where, and why ("file:line:column: message").
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error("{origin}{}: {message}", at_position(*.position))]
 pub struct PresetError {
     /// A file path, or `embedded:NAME`.
     pub origin: String,
@@ -134,16 +134,10 @@ pub struct PresetError {
     pub message: String,
 }
 
-impl fmt::Display for PresetError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self.position {
-            Some((l, c)) => write!(f, "{}:{l}:{c}: {}", self.origin, self.message),
-            None => write!(f, "{}: {}", self.origin, self.message),
-        }
-    }
+/// ":line:column" after a file's name, when known.
+fn at_position(position: Option<(usize, usize)>) -> String {
+    position.map_or_else(String::new, |(l, c)| format!(":{l}:{c}"))
 }
-
-impl std::error::Error for PresetError {}
 
 /// 1-based (line, column) of a byte offset.
 fn line_col(text: &str, offset: usize) -> (usize, usize) {

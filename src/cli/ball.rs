@@ -3,9 +3,8 @@
 
 use crate::catalog::{self, Catalog, Entry, Origin};
 use crate::model::contact::ContactLaw;
-use crate::model::params::{ImpactParams, ParamError, validate_lambda_zeta};
+use crate::model::params::{Field, ImpactParams, check_positive, validate_lambda_zeta};
 use crate::preset::{Measured, ParamSource};
-use crate::solver::SolveError;
 use clap::{Args, ValueEnum};
 use std::path::{Path, PathBuf};
 
@@ -122,15 +121,10 @@ impl BallArgs {
         }
         params.validate().map_err(|e| {
             // a bad v0 comes from the command line; anything else from the preset's set
-            if e.field == "v0" && v0.is_some() {
-                anyhow::anyhow!(param_message(&e))
+            if e.field == Field::V0 && v0.is_some() {
+                e.into()
             } else {
-                anyhow::anyhow!(
-                    "preset '{}' ({} parameters): {}",
-                    p.name,
-                    source.name(),
-                    param_message(&e)
-                )
+                anyhow::anyhow!("preset '{}' ({} parameters): {e}", p.name, source.name())
             }
         })?;
         Ok(Ball {
@@ -154,8 +148,7 @@ pub fn set_lambda_zeta(
     lambda: Option<f64>,
     zeta: Option<f64>,
 ) -> anyhow::Result<()> {
-    validate_lambda_zeta(lambda.unwrap_or(0.0), zeta.unwrap_or(0.0))
-        .map_err(|e| anyhow::anyhow!(param_message(&e)))?;
+    validate_lambda_zeta(lambda.unwrap_or(0.0), zeta.unwrap_or(0.0))?;
     let moved = params.with_lambda_zeta(lambda.unwrap_or(0.0), zeta.unwrap_or(1.0));
     if lambda.is_some() {
         params.k_r = moved.k_r;
@@ -166,8 +159,8 @@ pub fn set_lambda_zeta(
     // name what the user typed when the K_r or c it gives is out of range
     params.validate().map_err(|e| {
         let given = match e.field {
-            "k_r" => lambda.map(|l| ("lambda", l, "K_r", "N/m")),
-            "damping" => zeta.map(|z| ("zeta", z, "c", "kg/s")),
+            Field::KR => lambda.map(|l| (Field::Lambda, l, "K_r", "N/m")),
+            Field::Damping => zeta.map(|z| (Field::Zeta, z, "c", "kg/s")),
             _ => None,
         };
         match given {
@@ -177,7 +170,7 @@ pub fn set_lambda_zeta(
                 super::output::num(e.value),
                 e.reason
             ),
-            None => anyhow::anyhow!(param_message(&e)),
+            None => e.into(),
         }
     })
 }
@@ -189,14 +182,12 @@ pub fn normalized(
     zp_bar: Option<f64>,
     law: ContactLaw,
 ) -> anyhow::Result<Ball> {
-    validate_lambda_zeta(lambda, zeta).map_err(|e| anyhow::anyhow!(param_message(&e)))?;
+    validate_lambda_zeta(lambda, zeta)?;
     if let Some(z) = zp_bar {
-        check_positive("zp_bar", z)?;
+        check_positive(Field::ZpBar, z)?;
     }
     let params = ImpactParams::from_normalized(lambda, zeta, zp_bar.unwrap_or(f64::INFINITY));
-    params
-        .validate()
-        .map_err(|e| anyhow::anyhow!(param_message(&e)))?;
+    params.validate()?;
     Ok(Ball {
         name: None,
         origin: "normalized".into(),
@@ -206,23 +197,4 @@ pub fn normalized(
         measured: None,
         description: String::new(),
     })
-}
-
-/// "invalid zeta: NaN (not a number)", with large and small values in exponent form.
-pub fn param_message(e: &ParamError) -> String {
-    e.to_string()
-}
-
-/// A solver error for the user: bad parameters are bad input (exit 2); an impact the solver
-/// could not bring to an end within its budgets is not the user's fault (exit 1).
-pub fn solve_error(e: SolveError) -> anyhow::Error {
-    match e {
-        SolveError::Param(p) => anyhow::anyhow!(param_message(&p)),
-        e @ SolveError::Unresolved { .. } => super::Runtime(anyhow::anyhow!(e.to_string())).into(),
-    }
-}
-
-/// A finite, positive, not absurd number, or an error naming `field`.
-pub fn check_positive(field: &'static str, value: f64) -> anyhow::Result<()> {
-    crate::model::params::check_positive(field, value).map_err(|e| anyhow::anyhow!(e.to_string()))
 }

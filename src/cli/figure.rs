@@ -2,11 +2,11 @@
 //! SVG, and its plotted series as CSV. The figures themselves are built in
 //! [`crate::figure::paper`]; this file reads the options, solves, and writes the files.
 
-use super::ball::{self, BallArgs, check_positive, param_message};
+use super::ball::{self, BallArgs};
 use crate::analysis::sweep::{cor_vs_velocity, cor_vs_zeta, lin_space, log_space};
 use crate::figure::{Figure, csv, paper, svg};
 use crate::model::contact::ContactLaw;
-use crate::model::params::validate_lambda_zeta;
+use crate::model::params::{Field, check_positive, validate_lambda_zeta};
 use crate::preset::{ParamSource, Preset};
 use crate::solver::{SolveOptions, simulate};
 use clap::{Args, ValueEnum};
@@ -199,10 +199,9 @@ pub fn zeta_figures(
     balls: &[paper::Ball],
 ) -> anyhow::Result<(Figure, Figure)> {
     for &l in lambdas {
-        validate_lambda_zeta(l, 0.0).map_err(|e| anyhow::anyhow!(param_message(&e)))?;
+        validate_lambda_zeta(l, 0.0)?;
     }
-    let rows =
-        cor_vs_zeta(lambdas, &log_space(0.01, 100.0, points), law).map_err(ball::solve_error)?;
+    let rows = cor_vs_zeta(lambdas, &log_space(0.01, 100.0, points), law)?;
     Ok((
         paper::cor_zeta(&rows, balls, law),
         paper::force_zeta(&rows, balls, law),
@@ -217,18 +216,17 @@ pub fn velocity_figure(
     to: Option<f64>,
     points: usize,
 ) -> anyhow::Result<Figure> {
-    let pm = ball::solve_error;
     let v0 = b.params.v0;
-    let onset = paper::speed_for_indentation(&b.params, b.law, 1.0).map_err(pm)?;
-    let far = paper::speed_for_indentation(&b.params, b.law, SPEED_RANGE_ZP).map_err(pm)?;
+    let onset = paper::speed_for_indentation(&b.params, b.law, 1.0)?;
+    let far = paper::speed_for_indentation(&b.params, b.law, SPEED_RANGE_ZP)?;
     let from = from.unwrap_or(0.1 * v0);
     let to = to.unwrap_or_else(|| far.unwrap_or(3.0 * v0).max(1.2 * v0));
-    check_positive("from", from)?;
-    check_positive("to", to)?;
+    check_positive(Field::From, from)?;
+    check_positive(Field::To, to)?;
     if from >= to {
         anyhow::bail!("invalid speed range: --from {from} must be below --to {to}");
     }
-    let rows = cor_vs_velocity(&b.params, b.law, &lin_space(from, to, points)).map_err(pm)?;
+    let rows = cor_vs_velocity(&b.params, b.law, &lin_space(from, to, points))?;
     Ok(paper::cor_velocity(b, &rows, onset))
 }
 
@@ -238,8 +236,7 @@ pub fn history_figures(b: &paper::Ball, samples: usize) -> anyhow::Result<(Figur
         &b.params,
         b.law,
         &SolveOptions::default().with_samples(samples),
-    )
-    .map_err(ball::solve_error)?;
+    )?;
     if !r.rebound {
         anyhow::bail!(
             "{} does not rebound at v0 = {} m/s: there is no contact to draw",
@@ -293,7 +290,7 @@ pub fn run(a: &FigureArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     paths.extend(a.data.as_deref());
     check_writable(&paths, a.force)?;
     let fig = build(a)?;
-    let picture = svg::render(&fig).map_err(|e| super::Runtime(e.into()))?;
+    let picture = svg::render(&fig)?;
     write_file(&a.out, &picture, a.force)?;
     writeln!(out, "{}", a.out.display())?;
     if let Some(d) = &a.data {

@@ -1,9 +1,9 @@
 //! `bouncelab fit`: the recoil spring K_r (and λ) that makes the model's COR equal a measured
 //! one, at the ball's ζ, z_p and v0 (MODEL.md §4).
 
-use super::ball::{BallArgs, param_message};
+use super::ball::BallArgs;
 use super::output::{self, given, human, table};
-use crate::analysis::fit::{FitError, fit_k_r};
+use crate::analysis::fit::fit_k_r;
 use clap::{Args, ValueEnum};
 use serde::Serialize;
 use std::io::Write;
@@ -48,10 +48,7 @@ struct Report<'a> {
 
 pub fn run(a: &FitArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     let b = a.ball.resolve(a.v0)?;
-    let f = fit_k_r(&b.params, b.law, a.cor).map_err(|e| match e {
-        FitError::Params(p) => anyhow::anyhow!(param_message(&p)),
-        e => anyhow::anyhow!(e.to_string()),
-    })?;
+    let f = fit_k_r(&b.params, b.law, a.cor)?;
     let p = &b.params;
     let r = Report {
         preset: b.name.as_deref(),

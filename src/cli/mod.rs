@@ -15,6 +15,7 @@ pub mod run;
 mod run_text;
 pub mod sweep;
 
+use crate::solver::SolveError;
 use clap::{Parser, Subcommand};
 use std::io::{self, IsTerminal, Write};
 use std::path::PathBuf;
@@ -60,17 +61,10 @@ pub enum Command {
     Reproduce(reproduce::ReproduceArgs),
 }
 
-/// A failure that is not the input's fault: exit code 1.
-#[derive(Debug)]
-struct Runtime(anyhow::Error);
-
-impl std::fmt::Display for Runtime {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        write!(f, "{:#}", self.0)
-    }
-}
-
-impl std::error::Error for Runtime {}
+/// The explorer failed (its terminal, its event loop): not the input's fault.
+#[derive(Debug, thiserror::Error)]
+#[error("{0:#}")]
+struct ExplorerFailed(anyhow::Error);
 
 pub fn main() -> ExitCode {
     let cli = match Cli::try_parse() {
@@ -96,10 +90,21 @@ fn fail(e: anyhow::Error) -> ExitCode {
     }
 }
 
-/// The exit code and the one line an error ends the command line with: 1 for what is not the
-/// input's fault (I/O, the explorer, an impact without an answer), 2 for bad input; `None`
-/// for a closed pipe (`bouncelab … | head`), which is no error.
+/// The exit code and the one line an error ends the command line with; `None` for a closed
+/// pipe (`bouncelab … | head`), which is no error.
 fn report(e: &anyhow::Error) -> Option<(u8, String)> {
+    let code = exit_code(e)?;
+    Some((
+        code,
+        format!("bouncelab: error: {}", one_line(&format!("{e:#}"))),
+    ))
+}
+
+/// The one place that maps what went wrong to an exit code, by the kind of error anywhere in
+/// the chain: 1 for what is not the input's fault (reading or writing files, the explorer's
+/// terminal, drawing a figure, an impact the solver could not bring to an end), 2 for bad
+/// input of any kind; `None` for a closed pipe.
+fn exit_code(e: &anyhow::Error) -> Option<u8> {
     let io_kind = e
         .chain()
         .find_map(|c| c.downcast_ref::<io::Error>())
@@ -107,15 +112,16 @@ fn report(e: &anyhow::Error) -> Option<(u8, String)> {
     if io_kind == Some(io::ErrorKind::BrokenPipe) {
         return None;
     }
-    let code = if io_kind.is_some() || e.downcast_ref::<Runtime>().is_some() {
-        1
-    } else {
-        2
+    let not_the_input = |c: &(dyn std::error::Error + 'static)| {
+        c.is::<ExplorerFailed>()
+            || c.is::<crate::figure::svg::RenderError>()
+            || matches!(c.downcast_ref(), Some(SolveError::Unresolved { .. }))
     };
-    Some((
-        code,
-        format!("bouncelab: error: {}", one_line(&format!("{e:#}"))),
-    ))
+    if io_kind.is_some() || e.chain().any(not_the_input) {
+        Some(1)
+    } else {
+        Some(2)
+    }
 }
 
 /// Any message as one line.
@@ -233,21 +239,22 @@ fn explorer(preset: Option<String>, config: Option<PathBuf>) -> anyhow::Result<(
         );
     }
     let entry = ball::select(preset.as_deref(), config.as_deref())?;
-    crate::tui::run(entry.preset).map_err(|e| Runtime(e).into())
+    crate::tui::run(entry.preset).map_err(|e| ExplorerFailed(e).into())
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::{SolveError, model::params::ParamError};
+    use crate::model::params::{Field, ParamError};
+    use crate::solver::Unresolved;
 
     /// No input known reaches "no answer" (the property tests hold the solvers to an answer
     /// over the whole domain), so its path is checked here rather than through the binary:
     /// one line naming λ and ζ, exit 1 (not the input's fault).
     #[test]
     fn no_answer_is_one_line_and_exit_1() {
-        let e = ball::solve_error(SolveError::Unresolved {
-            reason: "the step budget of the impact ran out",
+        let e = anyhow::Error::from(SolveError::Unresolved {
+            reason: Unresolved::Steps,
             steps: 1_000_001,
             lambda: 0.0,
             zeta: 1e4,
@@ -263,8 +270,8 @@ mod tests {
 
     #[test]
     fn bad_parameters_are_exit_2() {
-        let e = ball::solve_error(SolveError::Param(ParamError {
-            field: "zeta",
+        let e = anyhow::Error::from(SolveError::Param(ParamError {
+            field: Field::Zeta,
             value: f64::NAN,
             reason: "not a number",
         }));

@@ -71,7 +71,7 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     }
     let samples = if args.history { args.samples } else { 0 };
     let opts = SolveOptions::default().with_samples(samples).with_energy();
-    let r = simulate(&ball.params, ball.law, &opts).map_err(ball::solve_error)?;
+    let r = simulate(&ball.params, ball.law, &opts)?;
     match args.format {
         RunFormat::Json => output::json(out, &report(&ball, &r, args.history))?,
         RunFormat::Csv if args.history => history_csv(out, &r)?,

@@ -1,11 +1,11 @@
 //! `bouncelab sweep zeta|velocity`: the paper's Figs. 2–3 (COR, F̄_m, τ_f against ζ for
 //! several λ) and Fig. 4 (COR against impact speed for one ball), as CSV or JSON.
 
-use super::ball::{BallArgs, LawArg, check_positive, param_message, solve_error};
+use super::ball::{BallArgs, LawArg};
 use super::output::{self, csv_row, num, opt_num};
 use crate::analysis::sweep::{cor_vs_velocity, cor_vs_zeta, lin_space, log_space};
 use crate::model::contact::ContactLaw;
-use crate::model::params::validate_lambda_zeta;
+use crate::model::params::{Field, check_positive, validate_lambda_zeta};
 use clap::{Args, Subcommand, ValueEnum};
 use serde::Serialize;
 use std::io::Write;
@@ -119,15 +119,14 @@ fn zeta(a: &ZetaArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         anyhow::bail!("invalid lambda: no value given");
     }
     for &l in &a.lambda {
-        validate_lambda_zeta(l, 0.0).map_err(|e| anyhow::anyhow!(param_message(&e)))?;
+        validate_lambda_zeta(l, 0.0)?;
     }
     // ζ bounds must be positive: the range is log-spaced
-    check_positive("from", a.from)?;
-    check_positive("to", a.to)?;
+    check_positive(Field::From, a.from)?;
+    check_positive(Field::To, a.to)?;
     let law = ContactLaw::from(a.law);
     check_points(a.points, a.lambda.len(), law)?;
-    let rows =
-        cor_vs_zeta(&a.lambda, &log_space(a.from, a.to, a.points), law).map_err(solve_error)?;
+    let rows = cor_vs_zeta(&a.lambda, &log_space(a.from, a.to, a.points), law)?;
     match a.format {
         SweepFormat::Json => output::json(
             out,
@@ -182,11 +181,10 @@ fn velocity(a: &VelocityArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     let v0 = b.params.v0;
     let from = a.from.unwrap_or(0.1 * v0);
     let to = a.to.unwrap_or(3.0 * v0);
-    check_positive("from", from)?;
-    check_positive("to", to)?;
+    check_positive(Field::From, from)?;
+    check_positive(Field::To, to)?;
     check_points(a.points, 1, b.law)?;
-    let rows =
-        cor_vs_velocity(&b.params, b.law, &lin_space(from, to, a.points)).map_err(solve_error)?;
+    let rows = cor_vs_velocity(&b.params, b.law, &lin_space(from, to, a.points))?;
     match a.format {
         SweepFormat::Json => {
             let n = b.params.normalized();

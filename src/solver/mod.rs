@@ -8,7 +8,7 @@ pub mod propagator;
 pub mod roots;
 
 use crate::model::contact::{Contact, ContactLaw};
-use crate::model::params::{ImpactParams, Normalized, ParamError, display_number};
+use crate::model::params::{Field, ImpactParams, Normalized, ParamError, display_number};
 use serde::Serialize;
 
 /// Which integrator runs the impact.
@@ -160,47 +160,51 @@ pub struct ImpactResponse {
 }
 
 /// Why an impact has no answer.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum SolveError {
     /// A parameter is out of its domain.
-    Param(ParamError),
+    #[error(transparent)]
+    Param(#[from] ParamError),
     /// The solver ran out of its step or phase budget before the ball left or came to rest:
     /// rather than pass a truncated run off as "no rebound", it says so.
+    #[error(
+        "no answer at λ = {}, ζ = {}: {reason} ({steps} steps); a nearby λ or ζ may answer",
+        display_number(*.lambda),
+        display_number(*.zeta)
+    )]
     Unresolved {
-        reason: &'static str,
+        reason: Unresolved,
         steps: usize,
         lambda: f64,
         zeta: f64,
     },
 }
 
-impl From<ParamError> for SolveError {
-    fn from(e: ParamError) -> Self {
-        SolveError::Param(e)
-    }
+/// Why a run could not be brought to an end: a budget ran out, or the integrators gave up.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, thiserror::Error)]
+pub enum Unresolved {
+    /// The exact solver's phase budget (`exact::MAX_PHASES`).
+    #[error("more than 64 load–unload phases")]
+    ExactPhases,
+    /// The exact solver's step budget of one phase (`exact::MAX_STEPS`).
+    #[error("the step budget of a phase ran out before its end")]
+    ExactPhaseSteps,
+    /// The adaptive solver's phase budget (`numeric::MAX_PHASES`).
+    #[error("more than 4096 load–unload phases")]
+    Phases,
+    /// The adaptive solver's budget of flips at a turn (`numeric::MAX_FLIPS`).
+    #[error("more than 131072 flips between load and unload at a turn")]
+    Flips,
+    /// The adaptive solver's step budget of one impact (`numeric::TOTAL_STEPS`).
+    #[error("the step budget of the impact ran out")]
+    Steps,
+    /// Every integrator of the cascade gave up on a phase, and no closed form could end it.
+    #[error("the integrator gave up before the end of contact")]
+    GaveUp,
+    /// The horizon came first, with the ball neither gone nor at rest.
+    #[error("the ball neither left nor came to rest within the horizon")]
+    Horizon,
 }
-
-impl std::fmt::Display for SolveError {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        match self {
-            SolveError::Param(e) => write!(f, "{e}"),
-            SolveError::Unresolved {
-                reason,
-                steps,
-                lambda,
-                zeta,
-            } => write!(
-                f,
-                "no answer at λ = {}, ζ = {}: {reason} ({steps} steps); \
-                 a nearby λ or ζ may answer",
-                display_number(*lambda),
-                display_number(*zeta)
-            ),
-        }
-    }
-}
-
-impl std::error::Error for SolveError {}
 
 /// What a solver returns, in normalized units (MODEL.md §5).
 #[derive(Debug, Clone, Default)]
@@ -215,8 +219,7 @@ pub(crate) struct Outcome {
     pub f_max: f64,
     pub z_max: f64,
     pub z_f: f64,
-    /// (τ, kind, z̄)
-    pub events: Vec<(f64, EventKind, f64)>,
+    pub events: Vec<Event>,
     /// Net contact work ∮ F̄ dz̄.
     pub contact_work: f64,
     /// ∫ ȳ'²/(2ζ) dτ, when asked for.
@@ -227,9 +230,37 @@ pub(crate) struct Outcome {
     pub stiff: bool,
     /// Why the run could not be brought to an end (a step or phase budget ran out, the
     /// integrator gave up): the outcome is then not an answer.
-    pub unresolved: Option<&'static str>,
-    /// (τ, F̄, z̄, ᾱ) at evenly spaced τ.
-    pub samples: Vec<[f64; 4]>,
+    pub unresolved: Option<Unresolved>,
+    /// The history at evenly spaced τ.
+    pub samples: Vec<Sample>,
+}
+
+impl Outcome {
+    /// Record a phase event at τ, z̄.
+    pub fn event(&mut self, tau: f64, kind: EventKind, z: f64) {
+        self.events.push(Event { tau, kind, z });
+    }
+}
+
+/// A phase event in normalized units (see `PhaseEvent`).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Event {
+    pub tau: f64,
+    pub kind: EventKind,
+    /// z̄ at the event.
+    pub z: f64,
+}
+
+/// One sample of the history in normalized units (see `History`).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Sample {
+    pub tau: f64,
+    /// F̄
+    pub force: f64,
+    /// z̄
+    pub z: f64,
+    /// ᾱ = z̄ + ȳ
+    pub alpha: f64,
 }
 
 /// Run one impact with dimensional parameters.
@@ -241,7 +272,7 @@ pub fn simulate(
     params.validate()?;
     if !(opts.rtol > 0.0 && opts.rtol < 1e-2) {
         return Err(ParamError {
-            field: "rtol",
+            field: Field::Rtol,
             value: opts.rtol,
             reason: "must lie in (0, 1e-2)",
         }
@@ -257,7 +288,7 @@ pub fn simulate(
         (Some(Method::Exact), ContactLaw::Linear) | (None, ContactLaw::Linear) => Method::Exact,
         (Some(Method::Exact), _) => {
             return Err(ParamError {
-                field: "method",
+                field: Field::Method,
                 value: f64::NAN,
                 reason: "the exact solver runs the linear law only",
             }
@@ -320,19 +351,7 @@ fn to_si(
         contact: o.contact_work * energy_unit,
         spring: 0.5 * n.lambda * o.y_end * o.y_end * energy_unit,
     });
-    let n_samples = o.samples.len();
-    let mut history = History {
-        t: Vec::with_capacity(n_samples),
-        force: Vec::with_capacity(n_samples),
-        indentation: Vec::with_capacity(n_samples),
-        displacement: Vec::with_capacity(n_samples),
-    };
-    for s in &o.samples {
-        history.t.push(s[0] * t);
-        history.force.push(s[1] * f);
-        history.indentation.push(s[2] * z);
-        history.displacement.push(s[3] * z);
-    }
+    let history = history(&o.samples, t, f, z);
     ImpactResponse {
         law,
         method,
@@ -352,10 +371,10 @@ fn to_si(
         events: o
             .events
             .into_iter()
-            .map(|(tau, kind, zb)| PhaseEvent {
-                t: tau * t,
-                kind,
-                z: zb * z,
+            .map(|e| PhaseEvent {
+                t: e.tau * t,
+                kind: e.kind,
+                z: e.z * z,
             })
             .collect(),
         energy,
@@ -363,4 +382,21 @@ fn to_si(
         steps: o.steps,
         stiff: o.stiff,
     }
+}
+
+/// The sampled history in SI units: time unit `t`, force unit `f`, length unit `z`.
+fn history(samples: &[Sample], t: f64, f: f64, z: f64) -> History {
+    let mut history = History {
+        t: Vec::with_capacity(samples.len()),
+        force: Vec::with_capacity(samples.len()),
+        indentation: Vec::with_capacity(samples.len()),
+        displacement: Vec::with_capacity(samples.len()),
+    };
+    for s in samples {
+        history.t.push(s.tau * t);
+        history.force.push(s.force * f);
+        history.indentation.push(s.z * z);
+        history.displacement.push(s.alpha * z);
+    }
+    history
 }

@@ -34,7 +34,7 @@
 use super::{Impact, X};
 use crate::model::contact::Unloading;
 use crate::solver::propagator::pair_flow;
-use crate::solver::{EventKind, Outcome};
+use crate::solver::{EventKind, Outcome, Sample};
 use nalgebra::{Matrix2, Vector2};
 
 /// The creep's flow from one state.
@@ -249,7 +249,7 @@ impl Closed {
         (t, x): (f64, X),
         grid: &[f64],
         left: f64,
-        samples: &mut Vec<[f64; 4]>,
+        samples: &mut Vec<Sample>,
         out: &mut Outcome,
     ) -> Finished {
         let (c, u) = (&imp.contact, &self.u);
@@ -259,7 +259,12 @@ impl Closed {
         samples.extend(grid[..covered].iter().map(|&ts| {
             let w = self.creep.at((ts - t).max(0.0));
             let f = self.creep.force(&w).max(0.0);
-            [ts, f, c.unloading_indentation(f, u), u.z_f + w[0]]
+            Sample {
+                tau: ts,
+                force: f,
+                z: c.unloading_indentation(f, u),
+                alpha: u.z_f + w[0],
+            }
         }));
         // What the contact gives back from z̄ to z̄_f is work on the branch; the rest of the
         // mechanical energy the creep loses is the dashpot's: along the flow by its energy
@@ -272,7 +277,7 @@ impl Closed {
         out.contact_work += c.unloading_work(u.z_f, u) - c.unloading_work(x[0], u);
         out.rebound = self.leaves.is_some() && -w[1] > left;
         if out.rebound {
-            out.events.push((t + tau, EventKind::Separation, u.z_f));
+            out.event(t + tau, EventKind::Separation, u.z_f);
         }
         Finished {
             t: t + tau,

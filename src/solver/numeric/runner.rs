@@ -12,12 +12,12 @@ use super::{
 };
 use crate::model::contact::{Contact, ContactLaw};
 use crate::model::params::Normalized;
-use crate::solver::{EventKind, Outcome};
+use crate::solver::{EventKind, Outcome, Sample, Unresolved};
 
 /// One run of every phase: the outcome and, with a grid, the samples (τ, F̄, z̄, ᾱ) on it.
 pub(super) struct PhaseRun {
     pub(super) outcome: Outcome,
-    pub(super) samples: Vec<[f64; 4]>,
+    pub(super) samples: Vec<Sample>,
 }
 
 /// What follows a phase.
@@ -44,7 +44,7 @@ pub(super) struct PhaseRunner<'a> {
     /// The samples of `grid` still to take.
     rest: &'a [f64],
     out: Outcome,
-    samples: Vec<[f64; 4]>,
+    samples: Vec<Sample>,
     /// Where the next phase starts.
     t: f64,
     x: X,
@@ -101,7 +101,9 @@ impl<'a> PhaseRunner<'a> {
         }
         let watches = self.watches(z0);
         let (start, rtol) = ((self.t, self.x), self.rtol);
-        let phase = integrate(&self.imp, start, self.t_max, watches, self.rest, rtol, self.floor);
+        let phase = integrate(
+            &self.imp, start, self.t_max, watches, self.rest, rtol, self.floor,
+        );
         let closing = self.check_end(&phase);
         self.record(&phase, z0);
         (self.t, self.x) = phase.last;
@@ -129,13 +131,13 @@ impl<'a> PhaseRunner<'a> {
     }
 
     /// Why no further phase may start, if a budget is spent.
-    fn budget_spent(&self) -> Option<&'static str> {
+    fn budget_spent(&self) -> Option<Unresolved> {
         if self.phases_left == 0 {
-            Some("more than 4096 load–unload phases")
+            Some(Unresolved::Phases)
         } else if self.flips_left == 0 {
-            Some("more than 131072 flips between load and unload at a turn")
+            Some(Unresolved::Flips)
         } else if self.out.steps > TOTAL_STEPS {
-            Some("the step budget of the impact ran out")
+            Some(Unresolved::Steps)
         } else {
             None
         }
@@ -149,7 +151,7 @@ impl<'a> PhaseRunner<'a> {
             && self.t > 0.0
             && Watch::RateFalls.g(&self.imp, &self.x) <= 0.0;
         if turned {
-            self.out.events.push((self.t, EventKind::Unload, z0));
+            self.out.event(self.t, EventKind::Unload, z0);
             self.imp.phase = Phase::Unloading(self.imp.contact.unload_from(z0));
         }
     }
@@ -167,7 +169,7 @@ impl<'a> PhaseRunner<'a> {
         if apart {
             self.out.rebound = -self.x[1] > self.left;
             if self.out.rebound {
-                self.out.events.push((self.t, EventKind::Separation, z0));
+                self.out.event(self.t, EventKind::Separation, z0);
             }
         }
         apart
@@ -200,12 +202,12 @@ impl<'a> PhaseRunner<'a> {
         if phase.failed {
             let closing = self.imp.close_creep(x_end, integrator::loosest(self.rtol));
             if closing.is_none() {
-                self.out.unresolved = Some("the integrator gave up before the end of contact");
+                self.out.unresolved = Some(Unresolved::GaveUp);
             }
             return closing;
         }
         if phase.hit.is_none() && !phase.spurious && !self.imp.at_rest(x_end) {
-            self.out.unresolved = Some("the ball neither left nor came to rest within the horizon");
+            self.out.unresolved = Some(Unresolved::Horizon);
         }
         None
     }
@@ -215,9 +217,14 @@ impl<'a> PhaseRunner<'a> {
         self.out.steps += phase.steps;
         self.out.stiff |= phase.stiff;
         let imp = &self.imp;
-        let taken = phase.samples.iter().map(|(ts, xs)| {
+        let taken = phase.samples.iter().map(|&(tau, xs)| {
             let z = xs[0];
-            [*ts, imp.force(z), z, z + xs[2]]
+            Sample {
+                tau,
+                force: imp.force(z),
+                z,
+                alpha: z + xs[2],
+            }
         });
         self.samples.extend(taken);
         self.rest = &self.rest[phase.samples.len()..];
@@ -254,14 +261,14 @@ impl<'a> PhaseRunner<'a> {
     /// z̄ rose through z̄_p: the elastic–plastic loading goes on, on its linear stretch.
     fn yield_here(&mut self) -> Next {
         self.yielded = true;
-        self.out.events.push((self.t, EventKind::Yield, self.x[0]));
+        self.out.event(self.t, EventKind::Yield, self.x[0]);
         Next::Phase(Phase::Loading)
     }
 
     /// z̄' fell through 0: unloading from z̄_m = z̄ (Eqs. 18–19 give its z̄_f).
     fn unload_here(&mut self) -> Next {
         let z = self.x[0];
-        self.out.events.push((self.t, EventKind::Unload, z));
+        self.out.event(self.t, EventKind::Unload, z);
         Next::Phase(Phase::Unloading(self.imp.contact.unload_from(z)))
     }
 
@@ -269,7 +276,7 @@ impl<'a> PhaseRunner<'a> {
     /// unloading force (see `Impact::reload_where_forces_meet`).
     fn reload_here(&mut self, u: &crate::model::contact::Unloading) -> Next {
         let z = self.x[0];
-        self.out.events.push((self.t, EventKind::Reload, z));
+        self.out.event(self.t, EventKind::Reload, z);
         self.yielded = z >= self.imp.contact.zp_bar;
         self.out.contact_work -= self.imp.reload_where_forces_meet(u, &mut self.x);
         Next::Phase(Phase::Loading)
@@ -288,7 +295,7 @@ impl<'a> PhaseRunner<'a> {
         let pace = (1.0 - PACE_SLACK) * self.imp.pace(&x);
         self.out.rebound = -x[1] > self.left.max(pace);
         if self.out.rebound {
-            self.out.events.push((self.t, EventKind::Separation, x[0]));
+            self.out.event(self.t, EventKind::Separation, x[0]);
             return Next::End;
         }
         if self.imp.at_rest(&x) {
@@ -313,7 +320,14 @@ impl<'a> PhaseRunner<'a> {
     /// Finish the run along a creep in closed form.
     fn close(&mut self, c: &Closed) {
         let start = (self.t, self.x);
-        let end = c.finish(&self.imp, start, self.rest, self.left, &mut self.samples, &mut self.out);
+        let end = c.finish(
+            &self.imp,
+            start,
+            self.rest,
+            self.left,
+            &mut self.samples,
+            &mut self.out,
+        );
         (self.t, self.x) = (end.t, end.x);
         self.rest = &self.rest[end.covered..];
     }
@@ -342,14 +356,14 @@ impl<'a> PhaseRunner<'a> {
         out.velocity_end = x[1];
         out.y_end = x[2];
         out.dashpot = Some(x[3]);
-        while let Some(&ts) = self.grid.get(self.samples.len()) {
-            let mut last = self
-                .samples
-                .last()
-                .copied()
-                .unwrap_or([ts, 0.0, 0.0, x[0] + x[2]]);
-            last[0] = ts;
-            self.samples.push(last);
+        while let Some(&tau) = self.grid.get(self.samples.len()) {
+            let last = self.samples.last().copied().unwrap_or(Sample {
+                tau,
+                force: 0.0,
+                z: 0.0,
+                alpha: x[0] + x[2],
+            });
+            self.samples.push(Sample { tau, ..last });
         }
         PhaseRun {
             outcome: self.out,
