@@ -43,15 +43,30 @@ impl From<SourceArg> for ParamSource {
     }
 }
 
-/// Which preset, and what to change about it.
+/// Which preset: by name, or from a file. Declared once, for the top level (the explorer, and
+/// `bouncelab --preset golf run`), every subcommand that runs a preset ball, and `presets`.
 #[derive(Debug, Clone, Default, Args)]
-pub struct BallArgs {
+pub struct PresetChoice {
     /// Preset by name, embedded or user [default: superball]
     #[arg(long, value_name = "NAME", conflicts_with = "config")]
     pub preset: Option<String>,
     /// Preset from a TOML file (same schema as the embedded presets)
     #[arg(long, value_name = "FILE")]
     pub config: Option<PathBuf>,
+}
+
+impl PresetChoice {
+    /// Whether `--preset` or `--config` was given.
+    pub fn is_given(&self) -> bool {
+        self.preset.is_some() || self.config.is_some()
+    }
+}
+
+/// Which preset, and what to change about it.
+#[derive(Debug, Clone, Default, Args)]
+pub struct BallArgs {
+    #[command(flatten)]
+    pub choice: PresetChoice,
     /// Parameter set of the preset [default: the preset's `parameters` field]
     #[arg(long, value_enum, value_name = "SET")]
     pub params: Option<SourceArg>,
@@ -112,7 +127,7 @@ pub fn select(preset: Option<&str>, config: Option<&Path>) -> anyhow::Result<Ent
 impl BallArgs {
     /// The preset ball with `--params`, `--law`, `--v0` applied and every parameter checked.
     pub fn resolve(&self, v0: Option<f64>) -> anyhow::Result<Ball> {
-        let entry = select(self.preset.as_deref(), self.config.as_deref())?;
+        let entry = select(self.choice.preset.as_deref(), self.choice.config.as_deref())?;
         let p = &entry.preset;
         let source = self.params.map_or(p.parameters, ParamSource::from);
         let mut params = p.params_from(source);

@@ -258,7 +258,7 @@ fn build(a: &FigureArgs) -> anyhow::Result<Figure> {
                 .map(|p| embedded_ball(p, source, law))
                 .collect();
             // a user's ball joins the three of the paper
-            if a.ball.preset.is_some() || a.ball.config.is_some() {
+            if a.ball.choice.is_given() {
                 let b = chart_ball(&a.ball.resolve(None)?);
                 if !balls.iter().any(|x| x.name == b.name) {
                     balls.push(b);

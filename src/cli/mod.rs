@@ -18,7 +18,6 @@ pub mod sweep;
 use crate::solver::SolveError;
 use clap::{Parser, Subcommand};
 use std::io::{self, IsTerminal, Write};
-use std::path::PathBuf;
 use std::process::ExitCode;
 
 const ABOUT: &str = "The Christoforou–Yigit model of a deformable ball hitting a rigid wall: \
@@ -30,13 +29,15 @@ const AFTER_HELP: &str = "With no subcommand, opens the terminal explorer on a p
 
 #[derive(Debug, Parser)]
 #[command(name = "bouncelab", version, about = ABOUT, after_help = AFTER_HELP)]
+#[command(mut_arg("preset", |a| a.help("Preset the explorer opens on [default: superball]")))]
+#[command(mut_arg("config", |a| {
+    a.help("Preset file the explorer opens on (TOML, same schema as the embedded presets)")
+}))]
 pub struct Cli {
-    /// Preset the explorer opens on [default: superball]
-    #[arg(long, value_name = "NAME", conflicts_with = "config")]
-    pub preset: Option<String>,
-    /// Preset file the explorer opens on (TOML, same schema as the embedded presets)
-    #[arg(long, value_name = "FILE")]
-    pub config: Option<PathBuf>,
+    /// The preset the explorer opens on, or the one a subcommand runs
+    /// (`bouncelab --preset golf run` is `bouncelab run --preset golf`)
+    #[command(flatten)]
+    pub choice: ball::PresetChoice,
     #[command(subcommand)]
     pub command: Option<Command>,
 }
@@ -157,24 +158,24 @@ fn clap_error(e: clap::Error) -> ExitCode {
 }
 
 fn dispatch(cli: Cli, out: &mut dyn Write) -> anyhow::Result<()> {
-    let top = (cli.preset.is_some() || cli.config.is_some()).then_some(());
+    let top = cli.choice;
     let Some(command) = cli.command else {
-        return explorer(cli.preset, cli.config);
+        return explorer(top);
     };
     match command {
         Command::Run(mut a) => {
-            if top.is_some() && a.normalized {
+            if top.is_given() && a.normalized {
                 anyhow::bail!("--normalized cannot be used with --preset or --config");
             }
-            merge(&cli.preset, &cli.config, &mut a.ball)?;
+            merge(top, &mut a.ball)?;
             run::run(&a, out)
         }
         Command::Sweep(sweep::Sweep::Velocity(mut a)) => {
-            merge(&cli.preset, &cli.config, &mut a.ball)?;
+            merge(top, &mut a.ball)?;
             sweep::run(&sweep::Sweep::Velocity(a), out)
         }
         Command::Sweep(s) => {
-            if top.is_some() {
+            if top.is_given() {
                 anyhow::bail!(
                     "sweep zeta runs the normalized ball: --preset and --config do not apply"
                 );
@@ -182,27 +183,27 @@ fn dispatch(cli: Cli, out: &mut dyn Write) -> anyhow::Result<()> {
             sweep::run(&s, out)
         }
         Command::Fit(mut a) => {
-            merge(&cli.preset, &cli.config, &mut a.ball)?;
+            merge(top, &mut a.ball)?;
             fit::run(&a, out)
         }
         Command::Presets(mut a) => {
-            if cli.preset.is_some() {
+            if top.preset.is_some() || a.choice.preset.is_some() {
                 anyhow::bail!("presets lists every preset: --preset does not apply");
             }
-            if let Some(c) = cli.config {
-                if a.config.is_some() {
+            if let Some(c) = top.config {
+                if a.choice.config.is_some() {
                     anyhow::bail!("--config given twice");
                 }
-                a.config = Some(c);
+                a.choice.config = Some(c);
             }
             presets::run(&a, out)
         }
         Command::Figure(mut a) => {
-            merge(&cli.preset, &cli.config, &mut a.ball)?;
+            merge(top, &mut a.ball)?;
             figure::run(&a, out)
         }
         Command::Reproduce(a) => {
-            if top.is_some() {
+            if top.is_given() {
                 anyhow::bail!(
                     "reproduce runs the paper's three embedded balls: --preset and --config do \
                      not apply"
@@ -214,31 +215,26 @@ fn dispatch(cli: Cli, out: &mut dyn Write) -> anyhow::Result<()> {
 }
 
 /// `bouncelab --preset golf run` means `bouncelab run --preset golf`.
-fn merge(
-    preset: &Option<String>,
-    config: &Option<PathBuf>,
-    ball: &mut ball::BallArgs,
-) -> anyhow::Result<()> {
-    if preset.is_none() && config.is_none() {
+fn merge(top: ball::PresetChoice, ball: &mut ball::BallArgs) -> anyhow::Result<()> {
+    if !top.is_given() {
         return Ok(());
     }
-    if ball.preset.is_some() || ball.config.is_some() {
+    if ball.choice.is_given() {
         anyhow::bail!("--preset/--config given both before and after the subcommand");
     }
-    ball.preset.clone_from(preset);
-    ball.config.clone_from(config);
+    ball.choice = top;
     Ok(())
 }
 
 /// No subcommand: the explorer, which needs a terminal.
-fn explorer(preset: Option<String>, config: Option<PathBuf>) -> anyhow::Result<()> {
+fn explorer(choice: ball::PresetChoice) -> anyhow::Result<()> {
     if !io::stdout().is_terminal() {
         anyhow::bail!(
             "the explorer needs a terminal and stdout is not one; for headless output use \
              `bouncelab run` (e.g. `bouncelab run --preset superball --format json`)"
         );
     }
-    let entry = ball::select(preset.as_deref(), config.as_deref())?;
+    let entry = ball::select(choice.preset.as_deref(), choice.config.as_deref())?;
     crate::tui::run(entry.preset).map_err(|e| ExplorerFailed(e).into())
 }
 
