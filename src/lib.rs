@@ -14,6 +14,7 @@ pub mod figure;
 pub mod model;
 pub mod preset;
 pub mod solver;
+pub mod text;
 pub mod tui;
 
 pub use model::contact::ContactLaw;

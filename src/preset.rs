@@ -3,7 +3,8 @@
 
 use crate::model::contact::ContactLaw;
 use crate::model::materials::{self, Layer};
-use crate::model::params::{ImpactParams, display_number};
+use crate::model::params::ImpactParams;
+use crate::text::number;
 use serde::{Deserialize, Serialize};
 
 mod text;
@@ -257,10 +258,7 @@ impl Preset {
                 Err(bad(
                     table,
                     key,
-                    format!(
-                        "must be a positive finite number, got {}",
-                        display_number(v)
-                    ),
+                    format!("must be a positive finite number, got {}", number(v)),
                 ))
             }
         }
@@ -282,7 +280,7 @@ impl Preset {
             return Err(bad(
                 "measured",
                 "cor",
-                format!("must lie in [0, 1], got {}", display_number(e)),
+                format!("must lie in [0, 1], got {}", number(e)),
             ));
         }
         opt("measured", "max_force", m.max_force)?;
@@ -298,7 +296,7 @@ impl Preset {
                 return Err(bad(
                     "material",
                     key,
-                    format!("must lie in [0, 0.5], got {}", display_number(nu)),
+                    format!("must lie in [0, 0.5], got {}", number(nu)),
                 ));
             }
         }
@@ -339,7 +337,7 @@ impl Preset {
                 "k_r",
                 format!(
                     "must be a non-negative finite number, got {}",
-                    display_number(a.k_r)
+                    number(a.k_r)
                 ),
             ));
         }

@@ -8,13 +8,14 @@
 //! The builders take computed data (sweep rows, an [`ImpactResponse`]) and return a figure, so
 //! a caller that already holds a response (the explorer) draws it without re-solving.
 
-use super::{Axis, BLACK, Figure, GREY, Kind, Marker, Series, Style, short};
+use super::{Axis, BLACK, Figure, GREY, Kind, Marker, Series, Style};
 use crate::analysis::sweep::{VelocityPoint, ZetaPoint};
 use crate::model::contact::ContactLaw;
 use crate::model::params::ImpactParams;
 use crate::preset::Measured;
 use crate::solver::SolveError;
 use crate::solver::{SolveOptions, simulate};
+use crate::text::short;
 
 pub use super::history::{force_displacement, force_time};
 

@@ -1,5 +1,6 @@
 //! Impact parameters, dimensional (SI) and normalized (MODEL.md §5, Eqs. 23, 24, 26).
 
+use crate::text::number;
 use serde::{Deserialize, Serialize};
 use std::fmt;
 
@@ -93,25 +94,11 @@ impl fmt::Display for Field {
 /// A parameter that cannot be used, named by field: "invalid v0: 1e300 (out of the physically
 /// meaningful range 1e-15 … 1e15)".
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
-#[error("invalid {field}: {} ({reason})", display_number(*.value))]
+#[error("invalid {field}: {} ({reason})", number(*.value))]
 pub struct ParamError {
     pub field: Field,
     pub value: f64,
     pub reason: &'static str,
-}
-
-/// A number for messages and CSV: plain decimals in [1e-4, 1e7), exponent notation outside
-/// it (so 1e300 is not 301 digits), `inf`/`-inf`/`NaN` spelled out; shortest round-trip form.
-pub fn display_number(x: f64) -> String {
-    if x.is_nan() {
-        "NaN".into()
-    } else if x.is_infinite() {
-        if x > 0.0 { "inf".into() } else { "-inf".into() }
-    } else if x == 0.0 || (1e-4..1e7).contains(&x.abs()) {
-        format!("{x}")
-    } else {
-        format!("{x:e}")
-    }
 }
 
 /// A finite, positive value in the meaningful range 1e-15 … 1e15, or an error naming `field`.

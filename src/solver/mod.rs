@@ -8,7 +8,8 @@ pub mod propagator;
 pub mod roots;
 
 use crate::model::contact::{Contact, ContactLaw};
-use crate::model::params::{Field, ImpactParams, Normalized, ParamError, display_number};
+use crate::model::params::{Field, ImpactParams, Normalized, ParamError};
+use crate::text::number;
 use serde::Serialize;
 
 /// Which integrator runs the impact.
@@ -169,8 +170,8 @@ pub enum SolveError {
     /// rather than pass a truncated run off as "no rebound", it says so.
     #[error(
         "no answer at λ = {}, ζ = {}: {reason} ({steps} steps); a nearby λ or ζ may answer",
-        display_number(*.lambda),
-        display_number(*.zeta)
+        number(*.lambda),
+        number(*.zeta)
     )]
     Unresolved {
         reason: Unresolved,

@@ -9,7 +9,6 @@ mod sweeps;
 use super::action::{Action, Mode};
 use super::compute::{self, SpeedCurve, SpeedRequest, ZetaCurve};
 use super::export::{self, ExportRequest};
-use super::format::sig_trim;
 use super::param::Param;
 use super::save::SaveRequest;
 pub use super::state::{Confirm, Ghost, Input, Message, Overlay, Purpose, Setting, Severity, View};
@@ -17,6 +16,7 @@ use crate::model::contact::ContactLaw;
 use crate::model::params::ImpactParams;
 use crate::preset::Preset;
 use crate::solver::ImpactResponse;
+use crate::text::sig_trim;
 
 /// How many changes `u` can undo.
 const UNDO_DEPTH: usize = 500;

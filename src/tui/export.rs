@@ -19,8 +19,9 @@ use super::ui::{self, Chart};
 use super::widgets::cor_zeta;
 use crate::analysis::sweep::ZetaPoint;
 use crate::figure::paper::{self, Ball};
-use crate::figure::{Figure, GREY, Kind, Marker, Series, Style, csv, short, svg};
+use crate::figure::{Figure, GREY, Kind, Marker, Series, Style, csv, svg};
 use crate::model::contact::ContactLaw;
+use crate::text::{io_text, short};
 use std::fs::{self, OpenOptions};
 use std::io::{self, Write};
 use std::path::{Path, PathBuf};
@@ -382,15 +383,6 @@ fn create_all(paths: &[PathBuf], contents: &[String]) -> Result<(), (PathBuf, io
         }
     }
     Ok(())
-}
-
-/// An I/O error without the "(os error N)" tail.
-fn io_text(e: &io::Error) -> String {
-    let s = e.to_string();
-    match s.find(" (os error") {
-        Some(i) => s[..i].to_string(),
-        None => s,
-    }
 }
 
 /// A folder for the header line: as given when short, else its last two parts after `…/`.

@@ -17,9 +17,9 @@
 use super::action::Action;
 use super::app::{App, Setting};
 use super::export::{file_stem_part, short_dir};
-use super::format::sig_trim;
 use crate::catalog::{self, Catalog, Origin};
 use crate::preset::{Adopted, EMBEDDED, Measured, ParamSource, Preset};
+use crate::text::{io_text, sig_trim};
 use std::io;
 use std::path::{Path, PathBuf};
 
@@ -247,15 +247,6 @@ fn exists(catalog: &Catalog, path: PathBuf) -> Action {
         .find(|e| e.origin == Origin::File(path.clone()))
         .map(|e| e.preset.name.clone());
     Action::SaveExists { path, holds }
-}
-
-/// An I/O error without the "(os error N)" tail.
-fn io_text(e: &io::Error) -> String {
-    let s = e.to_string();
-    match s.find(" (os error") {
-        Some(i) => s[..i].to_string(),
-        None => s,
-    }
 }
 
 /// A preset file for the header line: its folder shortened as the export does.

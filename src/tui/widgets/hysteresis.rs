@@ -6,8 +6,8 @@ use super::axis::AxisSpec;
 use super::legend;
 use super::plot::{Corner, Mark, Plot, Rule, Series};
 use crate::solver::ImpactResponse;
+use crate::text::sig_trim;
 use crate::tui::app::App;
-use crate::tui::format::sig_trim;
 use crate::tui::theme::Theme;
 use ratatui::style::Style;
 

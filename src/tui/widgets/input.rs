@@ -1,8 +1,8 @@
 //! The text-entry dialog: an exact value (`=` or Enter), or the name to save a preset under
 //! (`s`).
 
+use crate::text::sig_trim;
 use crate::tui::app::{App, Input, Purpose};
-use crate::tui::format::sig_trim;
 use crate::tui::param::Param;
 use crate::tui::theme::Theme;
 use ratatui::buffer::Buffer;

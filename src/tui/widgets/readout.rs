@@ -3,8 +3,9 @@
 //! charts, or four compact lines below them on narrow terminals.
 
 use crate::solver::ImpactResponse;
+use crate::text::{sig, sig_trim};
 use crate::tui::app::App;
-use crate::tui::format::{percent_diff, sig, sig_trim};
+use crate::tui::format::percent_diff;
 use crate::tui::param::Param;
 use crate::tui::theme::Theme;
 use ratatui::buffer::Buffer;
