@@ -6,6 +6,7 @@
 //! The physics core (`model`, `solver`) does no I/O: plain data in, plain data out.
 
 pub mod analysis;
+pub mod ball;
 pub mod catalog;
 pub mod cli;
 #[doc(hidden)]

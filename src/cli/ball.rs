@@ -1,10 +1,11 @@
 //! Choosing the ball a command runs on: a preset (embedded or user), a `--config` file, or the
 //! normalized ball, with the command-line overrides applied and validated.
 
+use crate::ball::Ball;
 use crate::catalog::{self, Catalog, Entry, Origin};
 use crate::model::contact::ContactLaw;
 use crate::model::params::{Field, ImpactParams, check_positive, validate_lambda_zeta};
-use crate::preset::{Measured, ParamSource};
+use crate::preset::ParamSource;
 use clap::{Args, ValueEnum};
 use std::path::{Path, PathBuf};
 
@@ -75,27 +76,29 @@ pub struct BallArgs {
     pub law: Option<LawArg>,
 }
 
-/// A ball ready to simulate.
+/// Where the normalized ball comes from (its `origin`).
+const NORMALIZED: &str = "normalized";
+
+/// The ball a command runs on, and where it was chosen from.
 #[derive(Debug, Clone)]
-pub struct Ball {
-    /// Preset name; `None` for the normalized ball.
-    pub name: Option<String>,
+pub struct ChosenBall {
+    pub ball: Ball,
     /// "embedded", a file path, or "normalized".
     pub origin: String,
-    /// "adopted", "materials" or "normalized".
-    pub source: &'static str,
-    pub params: ImpactParams,
-    pub law: ContactLaw,
-    /// What was measured, for comparison (presets only).
-    pub measured: Option<Measured>,
+    /// The preset's description (empty for the normalized ball).
     pub description: String,
 }
 
-impl Ball {
+impl ChosenBall {
+    /// The preset's name; `None` for the normalized ball.
+    pub fn preset(&self) -> Option<&str> {
+        (self.origin != NORMALIZED).then_some(self.ball.name.as_str())
+    }
+
     /// "superball (embedded, adopted parameters)" or "normalized ball (m = K_p = v0 = 1)".
     pub fn label(&self) -> String {
-        match &self.name {
-            Some(n) => format!("{n} ({}, {} parameters)", self.origin, self.source),
+        match self.preset() {
+            Some(n) => format!("{n} ({}, {} parameters)", self.origin, self.ball.source),
             None => "normalized ball (m = K_p = v0 = 1)".into(),
         }
     }
@@ -126,7 +129,7 @@ pub fn select(preset: Option<&str>, config: Option<&Path>) -> anyhow::Result<Ent
 
 impl BallArgs {
     /// The preset ball with `--params`, `--law`, `--v0` applied and every parameter checked.
-    pub fn resolve(&self, v0: Option<f64>) -> anyhow::Result<Ball> {
+    pub fn resolve(&self, v0: Option<f64>) -> anyhow::Result<ChosenBall> {
         let entry = select(self.choice.preset.as_deref(), self.choice.config.as_deref())?;
         let p = &entry.preset;
         let source = self.params.map_or(p.parameters, ParamSource::from);
@@ -142,16 +145,16 @@ impl BallArgs {
                 anyhow::anyhow!("preset '{}' ({} parameters): {e}", p.name, source.name())
             }
         })?;
-        Ok(Ball {
-            name: Some(p.name.clone()),
+        let law = self.law.map_or(p.law, ContactLaw::from);
+        Ok(ChosenBall {
+            ball: Ball {
+                params,
+                ..Ball::from_preset(p, source, law)
+            },
             origin: match &entry.origin {
                 Origin::Embedded => "embedded".into(),
                 Origin::File(f) => f.display().to_string(),
             },
-            source: source.name(),
-            params,
-            law: self.law.map_or(p.law, ContactLaw::from),
-            measured: Some(p.measured.clone()),
             description: p.description.clone(),
         })
     }
@@ -196,20 +199,22 @@ pub fn normalized(
     zeta: f64,
     zp_bar: Option<f64>,
     law: ContactLaw,
-) -> anyhow::Result<Ball> {
+) -> anyhow::Result<ChosenBall> {
     validate_lambda_zeta(lambda, zeta)?;
     if let Some(z) = zp_bar {
         check_positive(Field::ZpBar, z)?;
     }
     let params = ImpactParams::from_normalized(lambda, zeta, zp_bar.unwrap_or(f64::INFINITY));
     params.validate()?;
-    Ok(Ball {
-        name: None,
-        origin: "normalized".into(),
-        source: "normalized",
-        params,
-        law,
-        measured: None,
+    Ok(ChosenBall {
+        ball: Ball {
+            name: "ball".into(),
+            source: NORMALIZED.into(),
+            params,
+            law,
+            measured: None,
+        },
+        origin: NORMALIZED.into(),
         description: String::new(),
     })
 }

@@ -2,7 +2,7 @@
 //! SVG, and its plotted series as CSV. The figures themselves are built in
 //! [`crate::figure::paper`]; this file reads the options, solves, and writes the files.
 
-use super::ball::{self, BallArgs};
+use super::ball::BallArgs;
 use crate::analysis::sweep::{cor_vs_velocity, cor_vs_zeta, lin_space, log_space};
 use crate::figure::{Figure, csv, paper, svg};
 use crate::model::contact::ContactLaw;
@@ -168,27 +168,9 @@ pub fn write_file(path: &Path, text: &str, force: bool) -> anyhow::Result<()> {
         .map_err(|e| anyhow::Error::new(e).context(format!("cannot write {}", path.display())))
 }
 
-/// A CLI ball as a ball of the paper's charts.
-pub fn chart_ball(b: &ball::Ball) -> paper::Ball {
-    paper::Ball {
-        name: b.name.clone().unwrap_or_else(|| "ball".into()),
-        source: b.source.into(),
-        params: b.params,
-        law: b.law,
-        measured: b.measured.clone(),
-    }
-}
-
 /// An embedded preset on the chosen (or its own) parameter set.
 pub fn embedded_ball(p: &Preset, source: Option<ParamSource>, law: ContactLaw) -> paper::Ball {
-    let source = source.unwrap_or(p.parameters);
-    paper::Ball {
-        name: p.name.clone(),
-        source: source.name().into(),
-        params: p.params_from(source),
-        law,
-        measured: Some(p.measured.clone()),
-    }
+    paper::Ball::from_preset(p, source.unwrap_or(p.parameters), law)
 }
 
 /// Figs. 2 and 3 over ζ = 0.01 … 100.
@@ -259,7 +241,7 @@ fn build(a: &FigureArgs) -> anyhow::Result<Figure> {
                 .collect();
             // a user's ball joins the three of the paper
             if a.ball.choice.is_given() {
-                let b = chart_ball(&a.ball.resolve(None)?);
+                let b = a.ball.resolve(None)?.ball;
                 if !balls.iter().any(|x| x.name == b.name) {
                     balls.push(b);
                 }
@@ -273,11 +255,11 @@ fn build(a: &FigureArgs) -> anyhow::Result<Figure> {
             Ok(if a.name == CorZeta { cor } else { force })
         }
         CorVelocity => {
-            let b = chart_ball(&a.ball.resolve(None)?);
+            let b = a.ball.resolve(None)?.ball;
             velocity_figure(&b, a.from, a.to, a.points.unwrap_or(VELOCITY_POINTS))
         }
         ForceTime | ForceDisplacement => {
-            let b = chart_ball(&a.ball.resolve(a.v0)?);
+            let b = a.ball.resolve(a.v0)?.ball;
             let (t, d) = history_figures(&b, a.points.unwrap_or(HISTORY_SAMPLES))?;
             Ok(if a.name == ForceTime { t } else { d })
         }

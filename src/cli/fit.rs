@@ -48,13 +48,13 @@ struct Report<'a> {
 
 pub fn run(a: &FitArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     let b = a.ball.resolve(a.v0)?;
-    let f = fit_k_r(&b.params, b.law, a.cor)?;
-    let p = &b.params;
+    let f = fit_k_r(&b.ball.params, b.ball.law, a.cor)?;
+    let p = &b.ball.params;
     let r = Report {
-        preset: b.name.as_deref(),
+        preset: b.preset(),
         origin: &b.origin,
-        parameters: b.source,
-        law: b.law.name(),
+        parameters: &b.ball.source,
+        law: b.ball.law.name(),
         v0: p.v0,
         target_cor: a.cor,
         k_r: f.k_r,

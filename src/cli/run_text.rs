@@ -1,7 +1,7 @@
 //! `bouncelab run --format text`: a readable table, units converted at the edge (N, ms, mm),
 //! the measured values beside the model's for a preset.
 
-use super::ball::Ball;
+use super::ball::ChosenBall;
 use super::output::{difference, given, human, table};
 use crate::solver::{ImpactResponse, Method};
 use std::io::{self, Write};
@@ -34,8 +34,13 @@ impl Unit {
     }
 }
 
-pub fn write(out: &mut dyn Write, b: &Ball, r: &ImpactResponse, history: bool) -> io::Result<()> {
-    let dimensional = b.name.is_some();
+pub fn write(
+    out: &mut dyn Write,
+    b: &ChosenBall,
+    r: &ImpactResponse,
+    history: bool,
+) -> io::Result<()> {
+    let dimensional = b.preset().is_some();
     let unit = |scale, name| {
         if dimensional {
             Unit { scale, name }
@@ -47,13 +52,13 @@ pub fn write(out: &mut dyn Write, b: &Ball, r: &ImpactResponse, history: bool) -
         }
     };
     let (force, time, length) = (unit(1.0, "N"), unit(1e3, "ms"), unit(1e3, "mm"));
-    let p = &b.params;
+    let p = &b.ball.params;
     let n = &r.normalized;
     let method = match r.method {
         Method::Exact => "exact solver",
         Method::Numeric => "adaptive numerical solver",
     };
-    match &b.name {
+    match b.preset() {
         Some(_) if !b.description.is_empty() => writeln!(out, "{}: {}", b.label(), b.description)?,
         _ => writeln!(out, "{}", b.label())?,
     }
@@ -83,6 +88,7 @@ pub fn write(out: &mut dyn Write, b: &Ball, r: &ImpactResponse, history: bool) -
 
     // the measured values are comparable only at the measured speed
     let measured = b
+        .ball
         .measured
         .as_ref()
         .filter(|m| m.v0 == p.v0 && (m.cor.is_some() || m.max_force.is_some()));
@@ -146,7 +152,7 @@ pub fn write(out: &mut dyn Write, b: &Ball, r: &ImpactResponse, history: bool) -
         None,
     );
     table(out, "  ", &rows)?;
-    if let Some(m) = b.measured.as_ref().filter(|m| m.v0 != p.v0) {
+    if let Some(m) = b.ball.measured.as_ref().filter(|m| m.v0 != p.v0) {
         writeln!(
             out,
             "  (measured values are at v0 = {} m/s; not compared)",

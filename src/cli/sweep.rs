@@ -178,24 +178,24 @@ struct VelocityDoc<'a, T> {
 
 fn velocity(a: &VelocityArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     let b = a.ball.resolve(None)?;
-    let v0 = b.params.v0;
+    let v0 = b.ball.params.v0;
     let from = a.from.unwrap_or(0.1 * v0);
     let to = a.to.unwrap_or(3.0 * v0);
     check_positive(Field::From, from)?;
     check_positive(Field::To, to)?;
-    check_points(a.points, 1, b.law)?;
-    let rows = cor_vs_velocity(&b.params, b.law, &lin_space(from, to, a.points))?;
+    check_points(a.points, 1, b.ball.law)?;
+    let rows = cor_vs_velocity(&b.ball.params, b.ball.law, &lin_space(from, to, a.points))?;
     match a.format {
         SweepFormat::Json => {
-            let n = b.params.normalized();
+            let n = b.ball.params.normalized();
             output::json(
                 out,
                 &VelocityDoc {
                     sweep: "velocity",
-                    preset: b.name.as_deref(),
+                    preset: b.preset(),
                     origin: &b.origin,
-                    parameters: b.source,
-                    law: b.law.name(),
+                    parameters: &b.ball.source,
+                    law: b.ball.law.name(),
                     lambda: n.lambda,
                     zeta: n.zeta,
                     rows: &rows,
