@@ -1,6 +1,6 @@
 //! bouncelab — the Christoforou–Yigit model of the inelastic impact of a deformable sphere on a
 //! rigid surface (A. P. Christoforou and A. S. Yigit, "Inelastic impact and the coefficient of
-//! restitution"). Equation numbers in comments are the paper's; `MODEL.md` holds the corrected
+//! restitution"). Equation numbers in comments are the paper's; `docs/model.md` holds the corrected
 //! forms this crate implements.
 //!
 //! The physics core (`model`, `solver`) does no I/O: plain data in, plain data out.

@@ -1,5 +1,5 @@
 //! Ball presets: measured data, material data and the parameters the paper adopted
-//! (MODEL.md §7), in a TOML schema documented in the README. Parsing only: no file I/O here.
+//! (docs/model.md §7), in a TOML schema documented in the README. Parsing only: no file I/O here.
 
 use crate::model::contact::ContactLaw;
 use crate::model::materials::{self, Layer};
@@ -80,7 +80,7 @@ pub struct Material {
     pub layers: Vec<Layer>,
 }
 
-/// The parameters the paper adopted. K_r is required: no formula gives it (MODEL.md §4).
+/// The parameters the paper adopted. K_r is required: no formula gives it (docs/model.md §4).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Adopted {
@@ -110,7 +110,7 @@ fn default_law() -> ContactLaw {
     ContactLaw::Linear
 }
 
-/// Parameters derived from the material data (MODEL.md §4).
+/// Parameters derived from the material data (docs/model.md §4).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct Derived {
     pub density: f64,
@@ -274,7 +274,7 @@ impl Preset {
         Ok(())
     }
 
-    /// Parameters from the material data (MODEL.md §4).
+    /// Parameters from the material data (docs/model.md §4).
     pub fn derived(&self) -> Derived {
         let (m, r, mat) = (self.measured.mass, self.measured.radius, &self.material);
         let density = mat.density.unwrap_or_else(|| materials::density(m, r));

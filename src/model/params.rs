@@ -1,4 +1,4 @@
-//! Impact parameters, dimensional (SI) and normalized (MODEL.md §5, Eqs. 23, 24, 26).
+//! Impact parameters, dimensional (SI) and normalized (docs/model.md §5, Eqs. 23, 24, 26).
 
 use crate::text::number;
 use serde::{Deserialize, Serialize};
@@ -27,7 +27,7 @@ pub struct ImpactParams {
     pub v0: f64,
 }
 
-/// The dimensionless groups that set the response (MODEL.md §5).
+/// The dimensionless groups that set the response (docs/model.md §5).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct Normalized {
     /// λ = K_r / K_p, relative stiffness (Eq. 24).
@@ -106,7 +106,7 @@ pub fn check_positive(field: Field, value: f64) -> Result<(), ParamError> {
     check(field, value, false, false)
 }
 
-/// The largest λ and ζ accepted. Beyond them the limits of MODEL.md §5 hold to the precision
+/// The largest λ and ζ accepted. Beyond them the limits of docs/model.md §5 hold to the precision
 /// of the arithmetic (ζ = 1e6 is within 1e-6 of the ζ → ∞ limit), while the exact solver's
 /// modes span more than twelve decades and its sums lose their digits.
 pub const LAMBDA_MAX: f64 = 1e6;
@@ -192,7 +192,7 @@ impl ImpactParams {
         Ok(())
     }
 
-    /// The normalized groups λ, ζ, z̄_p, κ (MODEL.md §5).
+    /// The normalized groups λ, ζ, z̄_p, κ (docs/model.md §5).
     pub fn normalized(&self) -> Normalized {
         let w0 = self.omega0();
         Normalized {

@@ -1,5 +1,5 @@
 //! Solving one impact: the exact linear solver and the adaptive numerical one, and the result
-//! they both return (MODEL.md §2, Eq. 6).
+//! they both return (docs/model.md §2, Eq. 6).
 
 pub mod audit;
 pub mod exact;
@@ -122,7 +122,7 @@ pub struct History {
     pub displacement: Vec<f64>,
 }
 
-/// The answer to one impact, SI units (MODEL.md §2).
+/// The answer to one impact, SI units (docs/model.md §2).
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct ImpactResponse {
     pub law: ContactLaw,

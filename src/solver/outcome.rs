@@ -5,7 +5,7 @@ use super::{EnergyBudget, EventKind, History, ImpactResponse, Method, PhaseEvent
 use crate::model::contact::ContactLaw;
 use crate::model::params::{ImpactParams, Normalized};
 
-/// What a solver returns, in normalized units (MODEL.md §5).
+/// What a solver returns, in normalized units (docs/model.md §5).
 #[derive(Debug, Clone, Default)]
 pub(crate) struct Outcome {
     pub rebound: bool,

@@ -1,5 +1,5 @@
 //! The exact solver for the linearized (bilinear) law, Eqs. 21–22, in normalized form
-//! (MODEL.md §5). The state is (z̄, ᾱ', ȳ) rather than (ᾱ, ᾱ', ȳ): z̄ = ᾱ − ȳ is the small
+//! (docs/model.md §5). The state is (z̄, ᾱ', ȳ) rather than (ᾱ, ᾱ', ȳ): z̄ = ᾱ − ȳ is the small
 //! difference of two large numbers as the ball settles, and carrying it directly keeps its
 //! relative precision (at λ = 0 the resting mode then has no z̄ component at all).
 //! Each phase is a linear ODE; with w = x − (s, 0, 0) (s = z̄_f while unloading, which makes
@@ -50,7 +50,7 @@ fn y_scale(lambda: f64) -> f64 {
     if lambda > 0.0 { lambda.min(1.0) } else { 1.0 }
 }
 
-/// The phase's matrix on w = (z̄ − s, ᾱ', σȳ), the similarity diag(1, 1, σ) of MODEL.md §5's
+/// The phase's matrix on w = (z̄ − s, ᾱ', σȳ), the similarity diag(1, 1, σ) of docs/model.md §5's
 /// system with F̄ = k (z̄ − s), and its characteristic polynomial (which σ does not change).
 fn system(lambda: f64, zeta: f64, k: f64) -> (Matrix3<f64>, [f64; 3]) {
     let (zk, zl) = (2.0 * zeta * k, 2.0 * zeta * lambda);

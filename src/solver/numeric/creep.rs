@@ -1,7 +1,7 @@
 //! The end of a creep in closed form: a ball held on a weak dashpot's slow manifold, at an
 //! indentation the integrators cannot resolve, finished analytically.
 //!
-//! In contact, z̄' = ᾱ' − ȳ' with ȳ' = 2ζ(F̄ − λȳ) (MODEL.md §2, Eqs. 5–6 normalized) gives,
+//! In contact, z̄' = ᾱ' − ȳ' with ȳ' = 2ζ(F̄ − λȳ) (docs/model.md §2, Eqs. 5–6 normalized) gives,
 //! exactly, F̄ = λȳ + (v − z̄')/(2ζ) with v = ᾱ'. So the ball and the element move as
 //!     ȳ' = v − z̄',   v' = −λȳ − v/(2ζ) + z̄'/(2ζ),
 //! a linear system the contact drives only through z̄. Holding z̄ at z̄_f (z̄' = 0) leaves

@@ -1,5 +1,5 @@
 //! The impact as the integrators see it: the contact branch in force, the first-order system
-//! of MODEL.md §2 in normalized form, and what bounds the COR a ball can still leave with.
+//! of docs/model.md §2 in normalized form, and what bounds the COR a ball can still leave with.
 
 use super::creep::{self, Closed};
 use super::{ATOL_FACTOR, CREEP_TOL, REST_COR, X};

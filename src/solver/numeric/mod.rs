@@ -1,4 +1,4 @@
-//! The adaptive numerical solver for any contact law: the first-order system of MODEL.md §2 in
+//! The adaptive numerical solver for any contact law: the first-order system of docs/model.md §2 in
 //! normalized form, x = (z̄, ᾱ', ȳ, Ē_d) with z̄ = ᾱ − ȳ,
 //!     ᾱ'' = −F̄,   ȳ' = 2ζ(F̄ − λȳ),   z̄' = ᾱ' − ȳ',   Ē_d' = ȳ'²/(2ζ) = 2ζ(F̄ − λȳ)²,
 //! integrated phase by phase with the `differential-equations` crate: DOPRI5, or, when the
