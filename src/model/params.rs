@@ -114,8 +114,9 @@ pub const ZETA_MAX: f64 = 1e6;
 /// The smallest z̄_p = z_p ω0/v0 accepted, as `--zp-bar` already requires. Each of z_p, K_p,
 /// m, v0 may lie anywhere in 1e-15 … 1e15, but together they reached z̄_p = 4e-35: the ball
 /// then flattens to z_m with z_r = z_p √(2 z_m/z_p − 1) below the rounding of z_m, z_f = z_m,
-/// and the unloading slope F_m/(z_m − z_f) is infinite (the exact solver returned an infinite
-/// duration; found by the solver_inputs fuzz target). Its energy balance is 4e-8 at 1e-15.
+/// and the unloading slope F_m/(z_m − z_f) is infinite. At 1e-15 the run still closes its
+/// energy balance (to ~4e-8); the solver_inputs fuzz target's regressions
+/// (tests/fuzz_regressions.rs, `solver_inputs_regressions`) hold the refusal below it.
 pub const ZP_BAR_MIN: f64 = 1e-15;
 
 /// Largest magnitude accepted for any parameter: beyond it products overflow or lose meaning.
@@ -235,9 +236,8 @@ impl ImpactParams {
 
 /// c = √(m K_p) / (2ζ), Eq. 24 inverted; ζ = 0 gives an infinitely stiff dashpot.
 pub fn damping_for_zeta(mass: f64, k_p: f64, zeta: f64) -> f64 {
-    // ζ = −0 passes `validate_lambda_zeta` (it is zero) but would divide into c = −∞, which
-    // `validate` then rejected as "invalid damping: -inf" for a ζ the caller gave (found by the
-    // solver_inputs fuzz target): both zeros are the rigid dashpot.
+    // Both zeros are the rigid dashpot: ζ = −0 passes `validate_lambda_zeta` (it is zero), and
+    // dividing by it would give c = −∞, which `validate` rejects (`zeta_zero_is_rigid_dashpot`).
     if zeta == 0.0 {
         return f64::INFINITY;
     }

@@ -145,16 +145,15 @@ fn energy_balanced(r: &ImpactResponse, e: &EnergyBudget) -> Result<(), String> {
 /// no force, ȳ' = −2ζλȳ, and z̄' = ᾱ' + 2ζλȳ must be ≤ 0 for z̄ to fall through it, so
 /// e ≥ 2ζλȳ_f. A grazing separation (a weak dashpot's slow manifold) meets it with equality;
 /// the adaptive solver takes one at 1e-3 of it (`numeric::PACE_SLACK`), hence the 2e-3 here.
-/// Broken, before the adaptive solver held crossings of z̄_f to it, by 66 of 6 000 random
-/// impacts with λ ∈ (1e-11, 1e-6): separations taken in the integrator's noise, e as low as
-/// 1e-3 of it.
+/// A separation taken in the integrator's noise breaks it (tests/properties.rs,
+/// `every_run_keeps_the_invariants`, runs it over the domain).
 ///
 /// ȳ_f with its sign: the element ends a hair below zero where a stiff integrator steps across
 /// its relaxation (Radau5's stability function is negative far out on the stiff axis: ȳ_f =
 /// −5.8e-10 at λ = 2 622, ζ = 1e4, elastic–plastic, where the relaxation at 2ζλ = 5e7 against
 /// the force's fall puts it, by estimate, ~1e-12 above zero). The spring then pushes the
-/// element after the ball, which it does not slow. Read off the spring's energy, |ȳ_f| had
-/// called that separation slower than the element (2ζλ|ȳ_f| = 0.031 against e = 0.021).
+/// element after the ball, which it does not slow: the check takes ȳ_f with its sign, not
+/// |ȳ_f| from the spring's energy (`an_element_left_below_zero_does_not_hold_the_ball_back`).
 fn outruns_the_element(r: &ImpactResponse) -> Result<(), String> {
     let n = &r.normalized;
     if !r.rebound || n.lambda == 0.0 {
@@ -225,8 +224,7 @@ mod tests {
     use super::*;
     use crate::{ContactLaw, ImpactParams, SolveOptions, simulate};
 
-    /// λ = 2 622, ζ = 1e4, elastic–plastic (found by the properties at seed 4242): Radau5
-    /// leaves the element a few 1e-10 below zero, where 2ζλ|ȳ_f| is of the order of e = 0.021.
+    /// λ = 2 622, ζ = 1e4, elastic–plastic: Radau5 leaves the element a few 1e-10 below zero, where 2ζλ|ȳ_f| is of the order of e = 0.021.
     /// The element follows the ball; the separation is real.
     #[test]
     fn an_element_left_below_zero_does_not_hold_the_ball_back() {

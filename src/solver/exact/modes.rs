@@ -25,11 +25,11 @@ impl Modes {
         let mut count = 0;
         for (i, s) in all.iter().enumerate() {
             // The zero root of λ = 0 is not a mode. Every other is, however slow: the recoil
-            // spring's relaxation at λ = 3.1e-12 (s ≈ −2ζλ, fifteen decades below the dashpot's
-            // rate) is what pushes the ball back out at τ ≈ 2e4; cut below 1e-12 of the fastest
-            // root, the phase "settled" while the ball still moved and the run reported no
-            // rebound. The same cut on a complex pair (λ = ζ = 1e6) had made a bounce with e = 1
-            // read as none. Following a slow mode is cheap: the step doubles with τ.
+            // spring's relaxation (s ≈ −2ζλ, fifteen decades below the dashpot's rate at
+            // λ = 3.1e-12) is what pushes the ball back out, and a phase may settle only once
+            // it has decayed (tests/solver_agreement.rs, `creeps_match_a_40_digit_reference`;
+            // tests/closed_forms.rs, `largest_lambda_and_zeta_still_rebound`, for a complex
+            // pair). Following a slow mode is cheap: the step doubles with τ.
             let oscillation = i > 0 && roots.q < 0.0;
             if norms[i] > 0.0 {
                 live[count] = (norms[i], s.re, oscillation);
@@ -105,12 +105,11 @@ impl Modes {
             return None;
         }
         let floor = 600.0 / slow.abs();
-        // The next mode is any other slower than the slowest by more than the slowest's own
-        // rounding. Measured against the fastest mode instead (1e-9 of it, as this was), two
-        // slow modes of a creep (λ = 1e-9, ζ = 3000, z̄_p = 1e-7: −6.2e-6 and −1.6e-4 beside
-        // −1.7e5) read as one, the phase "settled" once the fast one had decayed (τ = 4e-4),
-        // and the run reported no rebound where the ball leaves at τ ≈ 4.2e4 with e ≈ 0.03.
-        // Counting a near-double root as two only makes the settle time later: safe.
+        // The next mode is any other faster than the slowest by more than the slowest's own
+        // rounding: two slow modes of a creep are told apart however far the fast one lies
+        // (λ = 1e-9, ζ = 3000: −6.2e-6 and −1.6e-4 beside −1.7e5; tests/solver_agreement.rs,
+        // `soft_spring_release_is_a_rebound_for_both`). Counting a near-double root as two
+        // only makes the settle time later: safe.
         let next = live
             .iter()
             .map(|m| m.1)
