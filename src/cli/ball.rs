@@ -7,6 +7,7 @@ use crate::model::contact::ContactLaw;
 use crate::model::params::{Field, ImpactParams, check_positive, validate_lambda_zeta};
 use crate::preset::ParamSource;
 use clap::{Args, ValueEnum};
+use serde::Serialize;
 use std::path::{Path, PathBuf};
 
 /// The name used when no preset is asked for.
@@ -76,6 +77,15 @@ pub struct BallArgs {
     pub law: Option<LawArg>,
 }
 
+/// The ball's keys of a JSON document, in this order (flattened into it).
+#[derive(Debug, Serialize)]
+pub struct BallHeader<'a> {
+    pub preset: Option<&'a str>,
+    pub origin: &'a str,
+    pub parameters: &'a str,
+    pub law: &'static str,
+}
+
 /// Where the normalized ball comes from (its `origin`).
 const NORMALIZED: &str = "normalized";
 
@@ -93,6 +103,16 @@ impl ChosenBall {
     /// The preset's name; `None` for the normalized ball.
     pub fn preset(&self) -> Option<&str> {
         (self.origin != NORMALIZED).then_some(self.ball.name.as_str())
+    }
+
+    /// The keys every JSON document names its ball by.
+    pub fn header(&self) -> BallHeader<'_> {
+        BallHeader {
+            preset: self.preset(),
+            origin: &self.origin,
+            parameters: &self.ball.source,
+            law: self.ball.law.name(),
+        }
     }
 
     /// "superball (embedded, adopted parameters)" or "normalized ball (m = K_p = v0 = 1)".

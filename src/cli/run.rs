@@ -1,6 +1,6 @@
 //! `bouncelab run`: one impact, as a text table, one JSON object or CSV.
 
-use super::ball::{self, BallArgs, ChosenBall};
+use super::ball::{self, BallArgs, BallHeader, ChosenBall};
 use super::output::{self, csv_row, num, opt_num};
 use crate::model::contact::ContactLaw;
 use crate::solver::{EnergyBudget, ImpactResponse, Method, SolveOptions, simulate};
@@ -100,10 +100,8 @@ struct Energy {
 /// of a ball that does not rebound.
 #[derive(Serialize)]
 struct Report<'a> {
-    preset: Option<&'a str>,
-    origin: &'a str,
-    parameters: &'a str,
-    law: &'static str,
+    #[serde(flatten)]
+    ball: BallHeader<'a>,
     method: Method,
     mass: f64,
     k_p: f64,
@@ -140,10 +138,7 @@ fn report<'a>(b: &'a ChosenBall, r: &'a ImpactResponse, history: bool) -> Report
     let n = &r.normalized;
     let h = |v: &'a Vec<f64>| history.then_some(v.as_slice());
     Report {
-        preset: b.preset(),
-        origin: &b.origin,
-        parameters: &b.ball.source,
-        law: r.law.name(),
+        ball: b.header(),
         method: r.method,
         mass: p.mass,
         k_p: p.k_p,

@@ -1,7 +1,7 @@
 //! `bouncelab sweep zeta|velocity`: the paper's Figs. 2–3 (COR, F̄_m, τ_f against ζ for
 //! several λ) and Fig. 4 (COR against impact speed for one ball), as CSV or JSON.
 
-use super::ball::{BallArgs, LawArg};
+use super::ball::{BallArgs, BallHeader, LawArg};
 use super::output::{self, csv_row, num, opt_num};
 use crate::analysis::sweep::{cor_vs_velocity, cor_vs_zeta, lin_space, log_space};
 use crate::model::contact::ContactLaw;
@@ -167,10 +167,8 @@ fn zeta(a: &ZetaArgs, out: &mut dyn Write) -> anyhow::Result<()> {
 #[derive(Serialize)]
 struct VelocityDoc<'a, T> {
     sweep: &'static str,
-    preset: Option<&'a str>,
-    origin: &'a str,
-    parameters: &'a str,
-    law: &'static str,
+    #[serde(flatten)]
+    ball: BallHeader<'a>,
     lambda: f64,
     zeta: f64,
     rows: &'a [T],
@@ -192,10 +190,7 @@ fn velocity(a: &VelocityArgs, out: &mut dyn Write) -> anyhow::Result<()> {
                 out,
                 &VelocityDoc {
                     sweep: "velocity",
-                    preset: b.preset(),
-                    origin: &b.origin,
-                    parameters: &b.ball.source,
-                    law: b.ball.law.name(),
+                    ball: b.header(),
                     lambda: n.lambda,
                     zeta: n.zeta,
                     rows: &rows,
