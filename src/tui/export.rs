@@ -150,13 +150,7 @@ fn insert_before_measured(fig: &mut Figure, series: Series) {
 fn preset_balls(app: &App) -> Vec<Ball> {
     app.presets()
         .iter()
-        .map(|p| Ball {
-            name: p.name.clone(),
-            source: p.parameters.name().into(),
-            params: p.params(),
-            law: p.law,
-            measured: Some(p.measured.clone()),
-        })
+        .map(|p| Ball::from_preset(p, p.parameters, p.law))
         .collect()
 }
 
