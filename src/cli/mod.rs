@@ -3,7 +3,9 @@
 //! Every failure is one line on stderr, `bouncelab: error: …`, naming the field at fault (and
 //! `file:line:column` for a preset file). Exit codes: 0 success (also when stdout is closed
 //! early, e.g. `| head`), 2 bad input of any kind (arguments, presets, out-of-reach fits),
-//! 1 a failure that is not the input's fault (writing the output, the explorer's terminal).
+//! 1 a failure that is not the input's fault (writing the output, the explorer's terminal, an
+//! impact without an answer). The library's errors are typed; `exit_code` alone maps their
+//! kinds to these codes.
 
 pub mod ball;
 pub mod figure;
