@@ -9,7 +9,7 @@
 //! lines. The picture is therefore drawn `SCALE` times larger and the `<svg>` element's size
 //! set back to `WIDTH` × `HEIGHT`: the viewBox keeps the fine coordinates.
 
-use super::ticks::{Ticks, ticks};
+use super::ticks::{Room, Ticks, ticks};
 use super::{Figure, Marker, PALETTE, Series, Style};
 use plotters::element::DashedPathElement;
 use plotters::prelude::*;
@@ -84,15 +84,7 @@ fn text_width(text: &str, size: i32) -> i32 {
 /// A point (SI) in drawing coordinates: scaled to the unit shown, log10 on a log axis; `None`
 /// for a value the axis cannot show (not finite, or not positive on a log axis).
 fn to_draw(fig: &Figure, (x, y): (f64, f64)) -> Option<(f64, f64)> {
-    let map = |v: f64, axis: &super::Axis| {
-        let v = v * axis.scale;
-        match (v.is_finite(), axis.log) {
-            (true, false) => Some(v),
-            (true, true) if v > 0.0 => Some(v.log10()),
-            _ => None,
-        }
-    };
-    Some((map(x, &fig.x)?, map(y, &fig.y)?))
+    Some((fig.x.drawn(x)?, fig.y.drawn(y)?))
 }
 
 /// A marker of `shape` centred on backend offset (0, 0).
@@ -299,7 +291,10 @@ pub fn render(fig: &Figure) -> Result<String, RenderError> {
         let legend_h = legend_layout(fig).1.len() as i32 * LEGEND_ROW_PX + LEGEND_TOP_PX + 6;
         let (_, rest) = root.split_vertically(px(head));
         let (plot, legend) = rest.split_vertically(px(HEIGHT as i32 - head - legend_h));
-        let (tx, ty) = (ticks(fig, true), ticks(fig, false));
+        let (tx, ty) = (
+            ticks(fig, true, Room::Picture),
+            ticks(fig, false, Room::Picture),
+        );
         let mut chart = ChartBuilder::on(&plot)
             .margin_left(px(SIDE_PX))
             .margin_right(px(30))

@@ -1,7 +1,12 @@
-//! Axis ticks. Linear axes get "nice" steps (1, 2, 2.5, 5 × 10^k) with every label printed to
-//! the same number of decimals; log axes are drawn as log10 of the data on a linear axis, so
-//! the ticks sit exactly on the decades (0.01, 0.1, 1, 10, 100) with light grid lines at
-//! 2…9 × 10^k.
+//! Axis ticks, for the SVG picture and the terminal alike. Linear axes get "nice" steps
+//! (1, 2, 2.5, 5 × 10^k) with every label printed to the same number of decimals; log axes are
+//! drawn as log10 of the data on a linear axis, so the ticks sit exactly on the decades
+//! (0.01, 0.1, 1, 10, 100), with light grid lines at 2…9 × 10^k in the picture.
+//!
+//! Two kinds of room: a picture ([`Room::Picture`]) has space for about six intervals and
+//! pads a fitted range with headroom; a terminal chart ([`Room::Labels`]) fits as many round
+//! ticks as it has room for labels, and ends a fitted range on a tick when that wastes little
+//! room.
 
 use super::{Axis, Figure};
 use plotters::coord::ranged1d::{DefaultFormatting, KeyPointHint, Ranged};
@@ -9,7 +14,7 @@ use std::ops::Range;
 
 /// Ticks of one axis, in drawing coordinates (log10 of the value on a log axis).
 #[derive(Debug, Clone, PartialEq)]
-pub(super) struct Ticks {
+pub struct Ticks {
     pub lo: f64,
     pub hi: f64,
     pub major: Vec<f64>,
@@ -141,21 +146,170 @@ impl Ranged for Ticks {
     }
 }
 
-pub(super) fn ticks(fig: &Figure, x: bool) -> Ticks {
+/// How much room an axis has for its tick labels.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Room {
+    /// The SVG picture: about six intervals, a fitted range padded with headroom.
+    Picture,
+    /// A terminal chart: at most this many labelled ticks (at least two).
+    Labels(usize),
+}
+
+/// The ticks of the figure's x (`x: true`) or y axis.
+pub fn ticks(fig: &Figure, x: bool, room: Room) -> Ticks {
     let axis = if x { &fig.x } else { &fig.y };
-    if axis.log {
-        log_ticks(axis, fig.data_extent(x))
-    } else {
-        linear_ticks(axis, fig.data_extent(x))
+    let extent = fig.data_extent(x);
+    match (axis.log, room) {
+        (true, Room::Picture) => log_ticks(axis, extent),
+        (true, Room::Labels(_)) => labelled_decades(axis, extent),
+        (false, Room::Picture) => linear_ticks(axis, extent),
+        (false, Room::Labels(n)) => labelled_ticks(axis, extent, n),
     }
 }
 
-/// A decade label: 0.01, 0.1, 1, 10, 100, then exponent form (1e5) beyond 10^4.
-fn decade_label(e: f64) -> String {
+/// A terminal's linear axis: a fixed range as it is, a fitted one from zero (or the data's
+/// negative minimum) to the data's maximum.
+fn labelled_ticks(axis: &Axis, extent: Option<(f64, f64)>, max_ticks: usize) -> Ticks {
+    match axis.range {
+        Some((lo, hi)) => within(lo, hi, max_ticks),
+        None => {
+            let (lo, hi) = extent.unwrap_or((0.0, 1.0));
+            let span = (hi - lo).abs();
+            let lo = if lo < -1e-9 * span { lo } else { 0.0 };
+            fitted(lo, hi, max_ticks)
+        }
+    }
+}
+
+/// A terminal's decade axis: a fixed range in log10 units as it is, a fitted one widened to
+/// whole decades; a tick at every decade inside.
+fn labelled_decades(axis: &Axis, extent: Option<(f64, f64)>) -> Ticks {
+    let (a, b) = axis.range.or(extent).unwrap_or((1.0, 10.0));
+    let (mut lo, mut hi) = (a.max(f64::MIN_POSITIVE).log10(), b.max(a).log10());
+    if axis.range.is_none() {
+        (lo, hi) = (lo.floor(), hi.ceil());
+    }
+    if hi - lo < 1e-9 {
+        hi = lo + 1.0;
+    }
+    let (first, last) = ((lo - 1e-9).ceil() as i32, (hi + 1e-9).floor() as i32);
+    Ticks {
+        lo,
+        hi,
+        major: (first..=last).map(f64::from).collect(),
+        minor: Vec::new(),
+        decimals: None,
+    }
+}
+
+/// Ticks over `lo` … `hi` (a fitted range: the ends snap to whole ticks when that wastes
+/// little room, else to a finer grain) with at most about `max_ticks` round ticks, at least
+/// two.
+pub fn fitted(lo: f64, hi: f64, max_ticks: usize) -> Ticks {
+    let (lo, hi) = if lo.is_finite() && hi.is_finite() && hi > lo {
+        (lo, hi)
+    } else if lo.is_finite() {
+        (lo, lo + 1.0)
+    } else {
+        (0.0, 1.0)
+    };
+    let range = hi - lo;
+    let max_ticks = max_ticks.max(2);
+    let snap = |g: f64| [(lo / g + 1e-9).floor() * g, (hi / g - 1e-9).ceil() * g];
+    let mut step = finest_step(
+        &|s| multiples(snap(s), s).count() <= max_ticks,
+        nice_ceil(range),
+    );
+    let mut bounds = snap(step);
+    if bounds[1] - bounds[0] > 1.1 * range {
+        // whole ticks would waste room: end on a finer grain, tick as finely as fits
+        bounds = snap(nice_ceil(range / 20.0));
+        step = finest_step(&|s| multiples(bounds, s).count() <= max_ticks, step);
+    }
+    while multiples(bounds, step).count() < 2 {
+        step = nice_below(step);
+    }
+    labelled(bounds, step)
+}
+
+/// Ticks inside the fixed range `lo` … `hi`, as finely as `max_ticks` allows.
+fn within(lo: f64, hi: f64, max_ticks: usize) -> Ticks {
+    let bounds = [lo, hi];
+    let mut step = finest_step(
+        &|s| multiples(bounds, s).count() <= max_ticks.max(2),
+        nice_ceil(hi - lo),
+    );
+    while multiples(bounds, step).count() < 2 && step > (hi - lo) * 1e-6 {
+        step = nice_below(step);
+    }
+    labelled(bounds, step)
+}
+
+fn labelled(bounds: [f64; 2], step: f64) -> Ticks {
+    Ticks {
+        lo: bounds[0],
+        hi: bounds[1],
+        major: multiples(bounds, step).map(|i| i as f64 * step).collect(),
+        minor: Vec::new(),
+        decimals: Some(decimals_for(step)),
+    }
+}
+
+/// The indices i of the multiples i·step inside `bounds`.
+fn multiples(bounds: [f64; 2], step: f64) -> std::ops::RangeInclusive<i64> {
+    let first = (bounds[0] / step - 1e-9).ceil() as i64;
+    let last = (bounds[1] / step + 1e-9).floor() as i64;
+    first..=last
+}
+
+/// The finest round step below `start` (and `start` itself) that still `fits`.
+fn finest_step(fits: &dyn Fn(f64) -> bool, mut step: f64) -> f64 {
+    while fits(nice_below(step)) {
+        step = nice_below(step);
+    }
+    step
+}
+
+/// The next of 1, 2, 2.5, 5 × 10^k below `x`.
+fn nice_below(x: f64) -> f64 {
+    let p = 10f64.powf(x.log10().floor());
+    [5.0, 2.5, 2.0, 1.0, 0.5]
+        .into_iter()
+        .map(|m| m * p)
+        .find(|&v| v < x * (1.0 - 1e-9))
+        .unwrap_or(x / 2.0)
+}
+
+/// Smallest of 1, 2, 2.5, 5 × 10^k not below `x`; 1 for a non-positive or non-finite `x`.
+pub fn nice_ceil(x: f64) -> f64 {
+    if !(x.is_finite() && x > 0.0) {
+        return 1.0;
+    }
+    let p = 10f64.powf(x.log10().floor());
+    [1.0, 2.0, 2.5, 5.0, 10.0]
+        .into_iter()
+        .map(|m| m * p)
+        .find(|&v| v >= x * (1.0 - 1e-12))
+        .unwrap_or(10.0 * p)
+}
+
+/// The decades that cover `base` and every finite positive value in `values`.
+pub fn covering(base: (i32, i32), values: impl IntoIterator<Item = f64>) -> (i32, i32) {
+    values
+        .into_iter()
+        .filter(|v| v.is_finite() && *v > 0.0)
+        .fold(base, |(lo, hi), v| {
+            let l = v.log10();
+            (lo.min(l.floor() as i32), hi.max(l.ceil() as i32))
+        })
+}
+
+/// A decade label: 0.001 … 1000, then exponent form (1e-4, 1e4) beyond three decades.
+pub fn decade_label(e: f64) -> String {
     let e = e.round() as i32;
     match e {
-        -4..=-1 => format!("{:.*}", (-e) as usize, 10f64.powi(e)),
-        0..=4 => format!("{}", 10i64.pow(e as u32)),
+        -3..=-1 => format!("{:.*}", (-e) as usize, 10f64.powi(e)),
+        0..=3 => format!("{}", 10i64.pow(e as u32)),
         _ => format!("1e{e}"),
     }
 }
@@ -168,6 +322,20 @@ impl Ticks {
             None => decade_label(v),
         }
     }
+
+    /// The major ticks with their labels.
+    pub fn labels(&self) -> Vec<(f64, String)> {
+        self.major.iter().map(|&v| (v, self.label(v))).collect()
+    }
+}
+
+/// The label of `x` on an axis whose ticks are `step` apart; "—" when either is not a
+/// finite number (or the step not positive).
+pub fn step_label(x: f64, step: f64) -> String {
+    if !(x.is_finite() && step.is_finite() && step > 0.0) {
+        return "—".into();
+    }
+    tick_label(x, decimals_for(step))
 }
 
 /// A linear tick label with a fixed number of decimals; "-0" prints as "0".
@@ -223,5 +391,77 @@ mod tests {
         let labels: Vec<String> = t.major.iter().map(|&e| decade_label(e)).collect();
         assert_eq!(labels, ["0.01", "0.1", "1", "10", "100"]);
         assert_eq!(decade_label(6.0), "1e6");
+    }
+
+    #[test]
+    fn nice_ceilings() {
+        assert_eq!(nice_ceil(1.3), 2.0);
+        assert_eq!(nice_ceil(2.2), 2.5);
+        assert_eq!(nice_ceil(14.5), 20.0);
+        assert_eq!(nice_ceil(50.0), 50.0);
+        assert_eq!(nice_ceil(0.0), 1.0);
+    }
+
+    #[test]
+    fn step_labels() {
+        assert_eq!(step_label(0.5, 0.25), "0.50");
+        assert_eq!(step_label(0.75, 0.25), "0.75");
+        assert_eq!(step_label(40.0, 20.0), "40");
+        assert_eq!(step_label(1.0, 0.2), "1.0");
+        assert_eq!(step_label(-0.0, 0.5), "0.0");
+    }
+
+    fn labels(t: &Ticks) -> Vec<String> {
+        t.labels().into_iter().map(|(_, l)| l).collect()
+    }
+
+    #[test]
+    fn fitted_ticks_are_round() {
+        let a = fitted(0.0, 117.3, 6);
+        assert_eq!([a.lo, a.hi], [0.0, 125.0]);
+        assert_eq!(labels(&a), ["0", "25", "50", "75", "100", "125"]);
+        let a = fitted(0.0, 1.0, 3);
+        assert_eq!([a.lo, a.hi], [0.0, 1.0]);
+        assert_eq!(a.major.len(), 3);
+        let a = fitted(0.0, 2.74, 7);
+        assert_eq!([a.lo, a.hi], [0.0, 3.0]);
+        assert_eq!(labels(&a)[1], "0.5");
+        // little room: few ticks, but the range is not stretched to the next big tick
+        let a = fitted(0.0, 2.74, 2);
+        assert!(a.lo == 0.0 && (a.hi - 2.8).abs() < 1e-12);
+        assert_eq!(labels(&a), ["0", "2"]);
+        let a = fitted(0.0, 121.8, 3);
+        assert_eq!([a.lo, a.hi], [0.0, 130.0]);
+        assert_eq!(a.major.len(), 3);
+    }
+
+    #[test]
+    fn degenerate_ranges_still_give_an_axis() {
+        for (lo, hi) in [
+            (0.0, 0.0),
+            (0.0, f64::NAN),
+            (f64::NAN, f64::NAN),
+            (2.0, 1.0),
+        ] {
+            let a = fitted(lo, hi, 4);
+            assert!(a.hi > a.lo && a.lo.is_finite() && a.hi.is_finite());
+        }
+    }
+
+    #[test]
+    fn terminal_decades() {
+        let got: Vec<_> = (-4..=4).map(|k| decade_label(f64::from(k))).collect();
+        assert_eq!(
+            got,
+            [
+                "1e-4", "0.001", "0.01", "0.1", "1", "10", "100", "1000", "1e4"
+            ]
+        );
+        assert_eq!(covering((-2, 2), [0.16, 0.61]), (-2, 2));
+        assert_eq!(covering((-2, 2), [0.005, f64::NAN, 0.0]), (-3, 2));
+        assert_eq!(covering((-2, 2), [500.0]), (-2, 3));
+        let t = labelled_decades(&axis(true, Some((0.01, 100.0))), None);
+        assert_eq!(t.major.len(), 5);
+        assert_eq!([t.lo, t.hi], [-2.0, 2.0]);
     }
 }

@@ -1,10 +1,10 @@
 //! The numbers behind the charts, computed with the library (`simulate`, `cor_vs_zeta`,
 //! `cor_vs_velocity`) when the state changes — never while drawing. SI units throughout.
 
-use super::format::nice_ceil;
 use crate::analysis::sweep::{
     VelocityPoint, ZetaPoint, cor_vs_velocity, cor_vs_zeta, lin_space, log_space,
 };
+use crate::figure::ticks::nice_ceil;
 use crate::model::contact::ContactLaw;
 use crate::model::params::ImpactParams;
 use crate::solver::{ImpactResponse, SolveOptions, simulate, simulate_normalized};

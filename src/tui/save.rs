@@ -2,11 +2,11 @@
 //! `<name>.toml` in the user presets folder (`catalog::user_presets_dir()`).
 //!
 //! As with the export, `App::update` stays free of side effects: on Enter in the name prompt it
-//! checks the name ([`check_name`]) and builds a [`SaveRequest`] with the file's text
-//! ([`request`], pure); the event loop hands the request to [`write`], the only part that
-//! touches the file system, which answers with an action: saved, failed, or "that file
-//! exists" — then the explorer asks `overwrite <file>? y/n` and only `y` sends the request
-//! again, now allowed to replace that one file.
+//! checks the name ([`check_name`]), builds a [`SaveRequest`] with the file's text
+//! ([`request`], pure) and returns it as an effect; the event loop hands the request to
+//! [`write`], the only part that touches the file system, which answers with an action: saved,
+//! failed, or "that file exists" — then the explorer asks `overwrite <file>? y/n` and only `y`
+//! returns the request again, now allowed to replace that one file.
 //!
 //! What is saved: the preset's ball (mass, radius, material data) with the parameters the
 //! explorer runs on, written as the `[adopted]` set — K_r = λ K_p and c = √(m K_p)/(2ζ) with
@@ -15,9 +15,9 @@
 //! bit for bit.
 
 use super::action::Action;
-use super::app::{App, Setting};
 use super::export::{file_stem_part, short_dir};
 use super::format::sig_trim;
+use super::setting::Setting;
 use crate::catalog::{self, Catalog, Origin};
 use crate::preset::{Adopted, EMBEDDED, Measured, ParamSource, Preset};
 use std::io;
@@ -162,11 +162,11 @@ pub fn preset_for(source: &Preset, setting: &Setting, name: &str) -> (Preset, Ve
     (preset, header)
 }
 
-/// The save of the explorer's current setting as `name` (checked with [`check_name`] first):
-/// the file's text, checked to read back as a valid preset.
-pub fn request(app: &App, name: &str) -> Result<SaveRequest, String> {
+/// The save of `setting` (from the preset `source`) as `name` (checked with [`check_name`]
+/// first): the file's text, checked to read back as a valid preset.
+pub fn request(source: &Preset, setting: &Setting, name: &str) -> Result<SaveRequest, String> {
     check_name(name)?;
-    let (preset, header) = preset_for(app.preset(), app.setting(), name);
+    let (preset, header) = preset_for(source, setting, name);
     let text = preset.to_toml(&header);
     // the schema has no infinity or NaN: refuse here rather than write a file that breaks
     // the catalog
