@@ -183,19 +183,51 @@ pub fn decades(scene: &Scene) -> (i32, i32) {
     )
 }
 
+/// The points of a ζ sweep inside the decades shown.
+fn shown(c: &ZetaSweep, scene: &Scene) -> Vec<ZetaPoint> {
+    let (lo, hi) = decades(scene);
+    let inside = (10f64.powi(lo) * (1.0 - 1e-9))..=(10f64.powi(hi) * (1.0 + 1e-9));
+    c.points
+        .iter()
+        .filter(|p| inside.contains(&p.zeta))
+        .cloned()
+        .collect()
+}
+
+/// The pinned λ's curve and the pinned run's ◇ on Fig. 2 (`cor`) or 3.
+fn add_pinned_zeta(fig: &mut Figure, scene: &Scene, cor: bool) {
+    let value = |p: &ZetaPoint| if cor { p.cor } else { p.max_force_normalized };
+    let of_run = |r: &ImpactResponse| if cor { r.cor } else { r.max_force_normalized };
+    if let Some(p) = &scene.pinned {
+        if let Some(c) = &p.zeta {
+            let label = format!("pinned, λ = {}", short(c.lambda, 3));
+            let id = format!("pinned lambda={}", short(c.lambda, 6));
+            let pts = shown(c, scene).iter().map(|p| (p.zeta, value(p))).collect();
+            fig.insert_before_measured(pinned(label, &id, pts));
+        }
+        if let Some(r) = p.run {
+            let at = (p.params.normalized().zeta, of_run(r));
+            let label = format!("pinned run ({})", lambda_zeta_text(&p.params));
+            let s = Series::new(
+                &label,
+                "pinned run",
+                Kind::Pinned,
+                Style::Markers(Marker::Diamond),
+                GREY,
+            )
+            .with_points(vec![at])
+            .with_look(Look::new(Tone::Ghost, Some("pinned"), Some("◇")));
+            fig.insert_before_measured(s);
+        }
+    }
+}
+
 /// Figs. 2 and 3 as on screen: the λ = 0, 0.4, 1 curves and the current λ over the decades
 /// shown, the pinned λ and run, this run and every ball's measured value.
 fn zeta_figure(chart: Chart, scene: &Scene) -> Figure {
     let (lo, hi) = decades(scene);
     let (z_lo, z_hi) = (10f64.powi(lo), 10f64.powi(hi));
-    let shown = |c: &ZetaSweep| -> Vec<ZetaPoint> {
-        let inside = (z_lo * (1.0 - 1e-9))..=(z_hi * (1.0 + 1e-9));
-        c.points
-            .iter()
-            .filter(|p| inside.contains(&p.zeta))
-            .cloned()
-            .collect()
-    };
+    let shown = |c: &ZetaSweep| shown(c, scene);
     let mut rows: Vec<ZetaPoint> = scene.references.iter().flat_map(shown).collect();
     // a current λ that is one of the references is already there
     if let Some(c) = &scene.zeta
@@ -221,30 +253,7 @@ fn zeta_figure(chart: Chart, scene: &Scene) -> Figure {
             );
         }
     }
-    let value = |p: &ZetaPoint| if cor { p.cor } else { p.max_force_normalized };
-    let of_run = |r: &ImpactResponse| if cor { r.cor } else { r.max_force_normalized };
-    if let Some(p) = &scene.pinned {
-        if let Some(c) = &p.zeta {
-            let label = format!("pinned, λ = {}", short(c.lambda, 3));
-            let id = format!("pinned lambda={}", short(c.lambda, 6));
-            let pts = shown(c).iter().map(|p| (p.zeta, value(p))).collect();
-            fig.insert_before_measured(pinned(label, &id, pts));
-        }
-        if let Some(r) = p.run {
-            let at = (p.params.normalized().zeta, of_run(r));
-            let label = format!("pinned run ({})", lambda_zeta_text(&p.params));
-            let s = Series::new(
-                &label,
-                "pinned run",
-                Kind::Pinned,
-                Style::Markers(Marker::Diamond),
-                GREY,
-            )
-            .with_points(vec![at])
-            .with_look(Look::new(Tone::Ghost, Some("pinned"), Some("◇")));
-            fig.insert_before_measured(s);
-        }
-    }
+    add_pinned_zeta(&mut fig, scene, cor);
     if let Some(r) = scene.run {
         let (y, what) = if cor {
             (r.cor, "e")

@@ -141,8 +141,40 @@ pub fn force_displacement(ball: &Ball, r: &ImpactResponse) -> Figure {
         .iter()
         .chain(&h.indentation)
         .fold(0.0f64, |a, &b| a.max(b));
-    let z_p = ball.params.z_p;
-    // the threshold is drawn when it falls inside the picture; otherwise the subtitle says it
+    series.extend(flattening(ball, r, right));
+    if let Some(f) = ball.measured_at(ball.params.v0).and_then(|m| m.max_force) {
+        series.push(measured_line(
+            &format!("measured peak force ({} N)", short(f, 4)),
+            "measured max_force",
+            f,
+            0.0,
+            right,
+        ));
+    }
+    let mut fig = frame(true, ball);
+    let (z_m, z_p) = (r.max_indentation, ball.params.z_p);
+    if ball.law != ContactLaw::Hertz {
+        let (word, cmp) = if z_m > z_p {
+            ("flattened", ">")
+        } else {
+            ("no flattening", "<")
+        };
+        fig.subtitle.push_str(&format!(
+            "; {word}: z_m = {} mm {cmp} z_p = {} mm",
+            short(z_m * 1e3, 3),
+            short(z_p * 1e3, 3)
+        ));
+    }
+    fig.series = series;
+    fig
+}
+
+/// The flattening threshold z_p up to where it meets the loading curve, when it falls inside
+/// the picture (otherwise the subtitle says it), and the permanent indentation z_f once the
+/// ball flattened.
+fn flattening(ball: &Ball, r: &ImpactResponse, right: f64) -> Vec<Series> {
+    let (h, z_p) = (&r.history, ball.params.z_p);
+    let mut series = Vec::new();
     let zp_shown = ball.law != ContactLaw::Hertz && z_p <= right;
     if zp_shown {
         series.push(
@@ -178,29 +210,5 @@ pub fn force_displacement(ball: &Ball, r: &ImpactResponse) -> Figure {
         s.annotations = vec!["z_f".into()];
         series.push(s);
     }
-    if let Some(f) = ball.measured_at(ball.params.v0).and_then(|m| m.max_force) {
-        series.push(measured_line(
-            &format!("measured peak force ({} N)", short(f, 4)),
-            "measured max_force",
-            f,
-            0.0,
-            right,
-        ));
-    }
-    let mut fig = frame(true, ball);
-    let z_m = r.max_indentation;
-    if ball.law != ContactLaw::Hertz {
-        let (word, cmp) = if z_m > z_p {
-            ("flattened", ">")
-        } else {
-            ("no flattening", "<")
-        };
-        fig.subtitle.push_str(&format!(
-            "; {word}: z_m = {} mm {cmp} z_p = {} mm",
-            short(z_m * 1e3, 3),
-            short(z_p * 1e3, 3)
-        ));
-    }
-    fig.series = series;
-    fig
+    series
 }

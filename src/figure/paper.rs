@@ -256,6 +256,19 @@ pub fn speed_for_indentation(
     Ok(Some(hi))
 }
 
+/// The speed `v` at which flattening starts, as a dotted line across the COR axis.
+fn flattening_onset(v: f64) -> Series {
+    Series::new(
+        &format!("flattening starts, z_m = z_p ({} m/s)", short(v, 3)),
+        "flattening_onset",
+        Kind::Reference,
+        Style::Dotted,
+        GREY,
+    )
+    .with_points(vec![(v, 0.0), (v, 1.05)])
+    .with_look(Look::new(Tone::Rule, None, Some("flattens")))
+}
+
 /// Fig. 4: COR against impact speed for one ball, with the flattening onset (z_m = z_p) and
 /// the measured COR.
 pub fn cor_velocity(ball: &Ball, rows: &[VelocityPoint], onset: Option<f64>) -> Figure {
@@ -273,17 +286,7 @@ pub fn cor_velocity(ball: &Ball, rows: &[VelocityPoint], onset: Option<f64>) -> 
     // from 0 unless the sweep starts far from it
     let left = if first <= 0.25 * last { 0.0 } else { first };
     if let Some(v) = onset.filter(|&v| v <= last && ball.law != ContactLaw::Hertz) {
-        series.push(
-            Series::new(
-                &format!("flattening starts, z_m = z_p ({} m/s)", short(v, 3)),
-                "flattening_onset",
-                Kind::Reference,
-                Style::Dotted,
-                GREY,
-            )
-            .with_points(vec![(v, 0.0), (v, 1.05)])
-            .with_look(Look::new(Tone::Rule, None, Some("flattens"))),
-        );
+        series.push(flattening_onset(v));
     }
     if let Some((v, e)) = ball.measured.as_ref().and_then(|m| Some((m.v0, m.cor?))) {
         let mut s = Series::new(

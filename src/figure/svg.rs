@@ -265,6 +265,26 @@ fn finish(svg: String, fig: &Figure) -> String {
     }
 }
 
+/// The title and subtitle lines, centred; returns the height they take, in CSS pixels.
+fn draw_titles<DB: DrawingBackend>(
+    root: &DrawingArea<DB, plotters::coord::Shift>,
+    fig: &Figure,
+) -> Result<i32, RenderError> {
+    let centre = px(WIDTH as i32 / 2);
+    let top = Pos::new(HPos::Center, VPos::Top);
+    let title = font_in(TITLE_PX, FontStyle::Bold).pos(top);
+    root.draw(&Text::new(fig.title.as_str(), (centre, px(10)), title))
+        .map_err(err)?;
+    let mut head = 44;
+    for line in subtitle_lines(&fig.subtitle) {
+        let sub = font(SUBTITLE_PX).color(&RGBColor(70, 70, 70)).pos(top);
+        root.draw(&Text::new(line, (centre, px(head - 4)), sub))
+            .map_err(err)?;
+        head += SUBTITLE_PX + 5;
+    }
+    Ok(head + 2)
+}
+
 /// The figure as an SVG document of `WIDTH` × `HEIGHT` CSS pixels.
 pub fn render(fig: &Figure) -> Result<String, RenderError> {
     let mut buf = String::new();
@@ -275,19 +295,7 @@ pub fn render(fig: &Figure) -> Result<String, RenderError> {
         );
         let root = SVGBackend::with_string(&mut buf, size).into_drawing_area();
         root.fill(&WHITE).map_err(err)?;
-        let centre = px(WIDTH as i32 / 2);
-        let top = Pos::new(HPos::Center, VPos::Top);
-        let title = font_in(TITLE_PX, FontStyle::Bold).pos(top);
-        root.draw(&Text::new(fig.title.as_str(), (centre, px(10)), title))
-            .map_err(err)?;
-        let mut head = 44;
-        for line in subtitle_lines(&fig.subtitle) {
-            let sub = font(SUBTITLE_PX).color(&RGBColor(70, 70, 70)).pos(top);
-            root.draw(&Text::new(line, (centre, px(head - 4)), sub))
-                .map_err(err)?;
-            head += SUBTITLE_PX + 5;
-        }
-        head += 2;
+        let head = draw_titles(&root, fig)?;
         let legend_h = legend_layout(fig).1.len() as i32 * LEGEND_ROW_PX + LEGEND_TOP_PX + 6;
         let (_, rest) = root.split_vertically(px(head));
         let (plot, legend) = rest.split_vertically(px(HEIGHT as i32 - head - legend_h));
