@@ -121,17 +121,18 @@ fn pinned(label: String, id: &str, points: Vec<(f64, f64)>) -> Series {
         .with_look(Look::new(Tone::Ghost, Some("pinned"), None))
 }
 
-/// The ◆ of the current run.
-fn this_run(label: String, at: (f64, f64)) -> Series {
-    Series::new(
-        &label,
-        "this run",
-        Kind::ThisRun,
-        Style::Markers(Marker::Diamond),
-        THIS_RUN_COLOR,
-    )
-    .with_points(vec![at])
-    .with_look(Look::new(Tone::Highlight, Some("this run"), Some("◆")))
+/// One run's point on a sweep's chart: the current run's ◆, or the pinned run's dimmed ◇.
+fn run_marker(label: String, pinned: bool, at: (f64, f64)) -> Series {
+    let (id, role, color, look) = if pinned {
+        let look = Look::new(Tone::Ghost, Some("pinned"), Some("◇"));
+        ("pinned run", Kind::Pinned, GREY, look)
+    } else {
+        let look = Look::new(Tone::Highlight, Some("this run"), Some("◆"));
+        ("this run", Kind::ThisRun, THIS_RUN_COLOR, look)
+    };
+    Series::new(&label, id, role, Style::Markers(Marker::Diamond), color)
+        .with_points(vec![at])
+        .with_look(look)
 }
 
 /// Figs. 5–8 of the current run, with the pinned run's curve.
@@ -208,16 +209,7 @@ fn add_pinned_zeta(fig: &mut Figure, scene: &Scene, cor: bool) {
         if let Some(r) = p.run {
             let at = (p.params.normalized().zeta, of_run(r));
             let label = format!("pinned run ({})", lambda_zeta_text(&p.params));
-            let s = Series::new(
-                &label,
-                "pinned run",
-                Kind::Pinned,
-                Style::Markers(Marker::Diamond),
-                GREY,
-            )
-            .with_points(vec![at])
-            .with_look(Look::new(Tone::Ghost, Some("pinned"), Some("◇")));
-            fig.insert_before_measured(s);
+            fig.insert_before_measured(run_marker(label, true, at));
         }
     }
 }
@@ -265,7 +257,11 @@ fn zeta_figure(chart: Chart, scene: &Scene) -> Figure {
             lambda_zeta_text(&scene.ball.params),
             short(y, 3)
         );
-        fig.insert_before_measured(this_run(label, (scene.ball.params.normalized().zeta, y)));
+        fig.insert_before_measured(run_marker(
+            label,
+            false,
+            (scene.ball.params.normalized().zeta, y),
+        ));
     }
     fig
 }
@@ -309,7 +305,7 @@ fn speed_figure(scene: &Scene) -> Figure {
             short(v0, 3),
             short(r.cor, 3)
         );
-        fig.insert_before_measured(this_run(label, (v0, r.cor)));
+        fig.insert_before_measured(run_marker(label, false, (v0, r.cor)));
     }
     fig
 }

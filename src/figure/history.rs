@@ -74,28 +74,30 @@ pub fn force_time(ball: &Ball, r: &ImpactResponse) -> Figure {
 /// Figs. 5–8 without data: titles and axes, for a chart whose impact could not be computed.
 /// `displacement`: force against displacement (Figs. 6, 8), else against time (5, 7).
 pub fn frame(displacement: bool, ball: &Ball) -> Figure {
-    let force = Axis::linear("contact force F (N)", "force", 1.0);
-    let subtitle = at_speed(ball, ball.params.v0);
-    if !displacement {
-        let mut fig = Figure::new(
-            format!("Contact force against time: {}", ball.name),
-            subtitle,
+    let (what, x, screen_title, corner) = if displacement {
+        (
+            "displacement",
+            Axis::linear("indentation z, displacement α (mm)", "displacement", 1e3),
+            "Force–displacement · F [N] vs α, z [mm]",
+            Corner::TopLeft,
+        )
+    } else {
+        (
+            "time",
             Axis::linear("time t (ms)", "t", 1e3),
-            force,
-            Vec::new(),
-        );
-        fig.screen_title = "Force–time · F [N] vs t [ms]".into();
-        return fig;
-    }
+            "Force–time · F [N] vs t [ms]",
+            Corner::TopRight,
+        )
+    };
     let mut fig = Figure::new(
-        format!("Contact force against displacement: {}", ball.name),
-        subtitle,
-        Axis::linear("indentation z, displacement α (mm)", "displacement", 1e3),
-        force,
+        format!("Contact force against {what}: {}", ball.name),
+        at_speed(ball, ball.params.v0),
+        x,
+        Axis::linear("contact force F (N)", "force", 1.0),
         Vec::new(),
     );
-    fig.screen_title = "Force–displacement · F [N] vs α, z [mm]".into();
-    fig.legend_corner = Corner::TopLeft;
+    fig.screen_title = screen_title.into();
+    fig.legend_corner = corner;
     fig
 }
 

@@ -72,9 +72,7 @@ fn linear_ticks(axis: &Axis, extent: Option<(f64, f64)>) -> Ticks {
         lo = (lo / step + 1e-9).floor() * step;
         hi = (hi / step - 1e-9).ceil() * step;
     }
-    let first = (lo / step - 1e-9).ceil() as i64;
-    let last = (hi / step + 1e-9).floor() as i64;
-    let major: Vec<f64> = (first..=last).map(|i| i as f64 * step).collect();
+    let major: Vec<f64> = multiples([lo, hi], step).map(|i| i as f64 * step).collect();
     let sub = if [2.0, 2.5]
         .iter()
         .any(|m| (step / m).log10().fract().abs() < 1e-9)
@@ -161,7 +159,11 @@ pub fn ticks(fig: &Figure, x: bool, room: Room) -> Ticks {
     let extent = fig.data_extent(x);
     match (axis.log, room) {
         (true, Room::Picture) => log_ticks(axis, extent),
-        (true, Room::Labels(_)) => labelled_decades(axis, extent),
+        // a terminal has no room for the 2…9 × 10^k grid
+        (true, Room::Labels(_)) => Ticks {
+            minor: Vec::new(),
+            ..log_ticks(axis, extent)
+        },
         (false, Room::Picture) => linear_ticks(axis, extent),
         (false, Room::Labels(n)) => labelled_ticks(axis, extent, n),
     }
@@ -178,27 +180,6 @@ fn labelled_ticks(axis: &Axis, extent: Option<(f64, f64)>, max_ticks: usize) -> 
             let lo = if lo < -1e-9 * span { lo } else { 0.0 };
             fitted(lo, hi, max_ticks)
         }
-    }
-}
-
-/// A terminal's decade axis: a fixed range in log10 units as it is, a fitted one widened to
-/// whole decades; a tick at every decade inside.
-fn labelled_decades(axis: &Axis, extent: Option<(f64, f64)>) -> Ticks {
-    let (a, b) = axis.range.or(extent).unwrap_or((1.0, 10.0));
-    let (mut lo, mut hi) = (a.max(f64::MIN_POSITIVE).log10(), b.max(a).log10());
-    if axis.range.is_none() {
-        (lo, hi) = (lo.floor(), hi.ceil());
-    }
-    if hi - lo < 1e-9 {
-        hi = lo + 1.0;
-    }
-    let (first, last) = ((lo - 1e-9).ceil() as i32, (hi + 1e-9).floor() as i32);
-    Ticks {
-        lo,
-        hi,
-        major: (first..=last).map(f64::from).collect(),
-        minor: Vec::new(),
-        decimals: None,
     }
 }
 

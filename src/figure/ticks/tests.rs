@@ -107,7 +107,7 @@ fn terminal_decades() {
     assert_eq!(covering((-2, 2), [0.16, 0.61]), (-2, 2));
     assert_eq!(covering((-2, 2), [0.005, f64::NAN, 0.0]), (-3, 2));
     assert_eq!(covering((-2, 2), [500.0]), (-2, 3));
-    let t = labelled_decades(&axis(true, Some((0.01, 100.0))), None);
+    let t = log_ticks(&axis(true, Some((0.01, 100.0))), None);
     assert_eq!(t.major.len(), 5);
     assert_eq!([t.lo, t.hi], [-2.0, 2.0]);
 }
