@@ -7,6 +7,7 @@ use bouncelab::tui::action::{self, Action};
 use bouncelab::tui::app::{App, Effect, Severity, View};
 use bouncelab::tui::export::{self, ExportRequest};
 use bouncelab::tui::param::Param;
+use bouncelab::tui::ui;
 use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
 use std::cell::RefCell;
 use std::fs;
@@ -343,4 +344,26 @@ fn a_user_ball_name_becomes_a_safe_file_name() {
     let mut app = App::new(custom, false);
     press(&mut app, "e");
     assert_eq!(export_request().unwrap().ball, "my-golf-ball");
+}
+
+/// The export writes the very figures the screen draws: the same description, rendered once
+/// as braille and once as SVG.
+#[test]
+fn the_export_holds_the_figures_on_screen() {
+    let mut app = superball();
+    press(&mut app, "pLLvv");
+    for keys in ["e", "\te"] {
+        press(&mut app, keys);
+        let r = take_export().expect("an export");
+        let charts = app.view().charts();
+        assert_eq!(r.charts.len(), charts.len());
+        for (&chart, (name, fig)) in charts.iter().zip(&r.charts) {
+            assert_eq!(*name, chart.file_name());
+            assert_eq!(fig, &ui::figure(&app, chart), "{name}");
+            assert!(
+                fig.series.iter().any(|s| s.id.starts_with("pinned")),
+                "{name}"
+            );
+        }
+    }
 }

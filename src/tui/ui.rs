@@ -23,11 +23,6 @@ pub const MIN_HEIGHT: u16 = 16;
 /// From this width the readout is a panel beside the charts.
 const SIDE_PANEL_WIDTH: u16 = 80;
 
-/// The charts of a view, in screen order (left to right, top to bottom).
-pub fn charts(view: View) -> &'static [Chart] {
-    view.charts()
-}
-
 /// The figure a chart shows for the current state (the one `e` exports).
 pub fn figure(app: &App, chart: Chart) -> Figure {
     explorer::figure(chart, &app.scene())
