@@ -7,6 +7,7 @@
 
 pub mod analysis;
 pub mod catalog;
+pub mod drop;
 pub mod cli;
 #[doc(hidden)]
 pub mod fault;
