@@ -325,7 +325,13 @@ mod tests {
             .map(|e| e.preset.name.as_str())
             .collect();
         let paper = ["superball", "golf", "baseball"];
-        let drop_balls = ["tennis", "football", "basketball", "table-tennis", "softball"];
+        let drop_balls = [
+            "tennis",
+            "football",
+            "basketball",
+            "table-tennis",
+            "softball",
+        ];
         let users = ["first", "second"];
         assert_eq!(names, [&paper[..], &drop_balls, &users].concat());
         assert_eq!(

@@ -7,8 +7,8 @@
 
 pub mod analysis;
 pub mod catalog;
-pub mod drop;
 pub mod cli;
+pub mod drop;
 #[doc(hidden)]
 pub mod fault;
 pub mod figure;

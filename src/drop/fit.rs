@@ -19,15 +19,26 @@ pub fn nominal_cor(standard: &Standard, ball: &DropBall, air: Option<Air>) -> Op
     let [Some(lo), Some(hi)] = standard.window else {
         return None;
     };
-    let mid = 0.5 * (lo + hi);
+    Some(cor_for(standard, ball, air, 0.5 * (lo + hi)))
+}
+
+/// The COR at the standard's impact speed for which the standard measures `measured` (a
+/// rebound height in the standard's convention, or a COR), and that speed (m/s).
+pub fn cor_for(
+    standard: &Standard,
+    ball: &DropBall,
+    air: Option<Air>,
+    measured: f64,
+) -> (f64, f64) {
     match standard.test {
         Test::Drop { rebound_ref, .. } => {
             let flight = Flight::new(ball.params.mass, ball.radius, air);
-            let v_in = flight.fall_speed(standard.release_height(ball.radius)?);
-            let rebound = mid - rebound_ref.offset(ball.radius);
-            Some((flight.launch_speed_for(rebound) / v_in, v_in))
+            let release = standard.release_height(ball.radius).unwrap_or(f64::NAN);
+            let v_in = flight.fall_speed(release);
+            let rebound = measured - rebound_ref.offset(ball.radius);
+            (flight.launch_speed_for(rebound) / v_in, v_in)
         }
-        Test::Cor { speed } => Some((mid, speed)),
+        Test::Cor { speed } => (measured, speed),
     }
 }
 

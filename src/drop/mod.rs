@@ -153,7 +153,7 @@ fn input(field: &'static str, value: f64, reason: &'static str) -> DropError {
     }
 }
 
-/// A number in (0, max] (`zero`: [0, max]), or an error naming `field`.
+/// A number in [1e-9, max] (`zero`: [0, max]), or an error naming `field`.
 pub(crate) fn check_range(
     field: &'static str,
     value: f64,
@@ -171,7 +171,8 @@ pub(crate) fn check_range(
         };
         return Err(input(field, value, reason));
     }
-    if value > max || (value > 0.0 && value < 1e-9) {
+    // a length below a nanometre is no drop; a vanishing drag is (the C_d → 0 limit)
+    if value > max || (!zero && value < 1e-9) {
         return Err(input(field, value, "out of the range this model covers"));
     }
     Ok(())
@@ -198,7 +199,10 @@ impl DropSetup {
 
 /// One impact of `ball` at speed `v` (m/s).
 pub fn impact(ball: &DropBall, v: f64) -> Result<crate::ImpactResponse, SolveError> {
-    let params = ImpactParams { v0: v, ..ball.params };
+    let params = ImpactParams {
+        v0: v,
+        ..ball.params
+    };
     simulate(&params, ball.law, &SolveOptions::default())
 }
 
