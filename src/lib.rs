@@ -8,6 +8,7 @@
 pub mod analysis;
 pub mod catalog;
 pub mod cli;
+pub mod drop;
 #[doc(hidden)]
 pub mod fault;
 pub mod figure;
