@@ -6,6 +6,7 @@
 //! The physics core (`model`, `solver`) does no I/O: plain data in, plain data out.
 
 pub mod analysis;
+pub mod atomic;
 pub mod catalog;
 pub mod cli;
 #[doc(hidden)]
@@ -13,6 +14,7 @@ pub mod fault;
 pub mod figure;
 pub mod model;
 pub mod preset;
+pub mod sanitize;
 pub mod solver;
 pub mod tui;
 

@@ -4,14 +4,14 @@
 
 use super::ball::{self, BallArgs, check_positive, param_message};
 use crate::analysis::sweep::{cor_vs_velocity, cor_vs_zeta, lin_space, log_space};
+use crate::atomic::Outputs;
 use crate::figure::{Figure, csv, paper, svg};
 use crate::model::contact::ContactLaw;
 use crate::model::params::validate_lambda_zeta;
 use crate::preset::{ParamSource, Preset};
 use crate::solver::{SolveOptions, simulate};
 use clap::{Args, ValueEnum};
-use std::fs;
-use std::io::{self, Write};
+use std::io::Write;
 use std::path::{Path, PathBuf};
 
 /// Points along a curve: enough for smooth curves on a log axis, few enough for a small file.
@@ -145,27 +145,25 @@ pub fn check_writable(paths: &[&Path], force: bool) -> anyhow::Result<()> {
     Ok(())
 }
 
-/// Write `text` to `path`; without `force` the file must not exist (checked again at creation,
+/// Write `text` to `path` atomically (a temporary file renamed into place, see
+/// [`crate::atomic`]); without `force` the file must not exist (checked again at the rename,
 /// so a file that appeared meanwhile is still not overwritten).
 pub fn write_file(path: &Path, text: &str, force: bool) -> anyhow::Result<()> {
-    let mut opts = fs::OpenOptions::new();
-    opts.write(true);
-    if force {
-        opts.create(true).truncate(true);
-    } else {
-        opts.create_new(true);
-    }
-    let mut f = match opts.open(path) {
-        Err(e) if e.kind() == io::ErrorKind::AlreadyExists => {
-            anyhow::bail!("{} exists (use --force to overwrite it)", path.display())
+    let mut files = Outputs::new(force);
+    files.text(path, text)?;
+    commit(files)?;
+    Ok(())
+}
+
+/// Publish staged files; an existing target is bad input (exit 2), any other failure I/O.
+pub fn commit(files: Outputs) -> anyhow::Result<Vec<PathBuf>> {
+    files.commit().map_err(|e| {
+        if e.exists {
+            anyhow::anyhow!("{e}")
+        } else {
+            anyhow::Error::new(e)
         }
-        r => r.map_err(|e| {
-            anyhow::Error::new(e).context(format!("cannot write {}", path.display()))
-        })?,
-    };
-    f.write_all(text.as_bytes())
-        .and_then(|()| f.flush())
-        .map_err(|e| anyhow::Error::new(e).context(format!("cannot write {}", path.display())))
+    })
 }
 
 /// A CLI ball as a ball of the paper's charts.
@@ -294,11 +292,14 @@ pub fn run(a: &FigureArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     check_writable(&paths, a.force)?;
     let fig = build(a)?;
     let picture = svg::render(&fig).map_err(|e| super::Runtime(e.into()))?;
-    write_file(&a.out, &picture, a.force)?;
-    writeln!(out, "{}", a.out.display())?;
+    // both files or neither (crate::atomic)
+    let mut files = Outputs::new(a.force);
+    files.text(&a.out, &picture)?;
     if let Some(d) = &a.data {
-        write_file(d, &csv::to_string(&fig), a.force)?;
-        writeln!(out, "{}", d.display())?;
+        files.text(d, &csv::to_string(&fig))?;
+    }
+    for p in commit(files)? {
+        writeln!(out, "{}", p.display())?;
     }
     Ok(())
 }

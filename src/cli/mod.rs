@@ -8,6 +8,7 @@
 pub mod ball;
 pub mod figure;
 pub mod fit;
+pub mod number;
 pub mod output;
 pub mod presets;
 pub mod reproduce;

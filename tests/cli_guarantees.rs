@@ -1,0 +1,159 @@
+//! The promises of docs/guarantees.md, through the binary: outputs replaced atomically, no
+//! new file after a failure, control characters never reaching the terminal, numbers read as
+//! typed, errors reported even when stderr is full, work refused beyond the budget.
+//!
+//! A full disk is simulated with the file-size limit (`ulimit -f`, with SIGXFSZ ignored so a
+//! write past it fails with EFBIG, as a write to a full disk fails with ENOSPC): it needs no
+//! privileges and affects only the child.
+#![cfg(unix)]
+
+mod common;
+
+use common::*;
+use std::fs;
+use std::path::Path;
+use std::process::{Command, Stdio};
+
+const BIN: &str = env!("CARGO_BIN_EXE_bouncelab");
+
+/// Run the binary in `dir` with files limited to `kib` KiB; (exit code, stderr).
+fn limited(dir: &Path, kib: u32, args: &[&str]) -> (i32, String) {
+    let script = format!("trap '' XFSZ; ulimit -f {}; exec \"$0\" \"$@\"", kib * 2);
+    let o = Command::new("sh")
+        .arg("-c")
+        .arg(script)
+        .arg(BIN)
+        .args(args)
+        .current_dir(dir)
+        .env("XDG_CONFIG_HOME", dir)
+        .env("HOME", dir)
+        .stdin(Stdio::null())
+        .output()
+        .unwrap();
+    (
+        o.status.code().expect("exited"),
+        String::from_utf8_lossy(&o.stderr).into_owned(),
+    )
+}
+
+fn run_in(dir: &Path, args: &[&str]) -> Out {
+    let o = Command::new(BIN)
+        .args(args)
+        .current_dir(dir)
+        .env("XDG_CONFIG_HOME", dir)
+        .env("HOME", dir)
+        .stdin(Stdio::null())
+        .output()
+        .unwrap();
+    Out {
+        code: o.status.code().expect("exited"),
+        stdout: String::from_utf8_lossy(&o.stdout).into_owned(),
+        stderr: String::from_utf8_lossy(&o.stderr).into_owned(),
+    }
+}
+
+fn names(dir: &Path) -> Vec<String> {
+    let mut v: Vec<String> = fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    v.sort();
+    v
+}
+
+#[test]
+fn a_full_disk_leaves_the_old_figure_untouched() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let args = ["figure", "force-time", "--out", "old.svg"];
+    assert_eq!(run_in(d, &args).code, 0);
+    let old = fs::read(d.join("old.svg")).unwrap();
+    assert!(old.len() > 20 * 1024, "the figure is larger than the limit");
+    let (code, err) = limited(d, 8, &[&args[..], &["--force", "--v0", "5"]].concat());
+    assert_eq!(code, 1, "{err}");
+    assert!(
+        err.starts_with("bouncelab: error: cannot write old.svg: "),
+        "{err}"
+    );
+    assert_eq!(
+        fs::read(d.join("old.svg")).unwrap(),
+        old,
+        "the old file is untouched"
+    );
+    assert_eq!(names(d), ["old.svg"], "no temporary file is left");
+}
+
+#[test]
+fn a_failure_leaves_no_new_file_and_a_rerun_is_not_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    // the SVG (~14 KiB) fits under 20 KiB, the CSV (~21 KiB) does not
+    let args = [
+        "figure",
+        "force-time",
+        "--v0",
+        "5",
+        "--out",
+        "a.svg",
+        "--data",
+        "a.csv",
+    ];
+    let (code, err) = limited(d, 20, &args);
+    assert_eq!(code, 1, "{err}");
+    assert!(err.contains("cannot write a.csv"), "{err}");
+    assert!(names(d).is_empty(), "{:?}", names(d));
+    // an unwritable CSV path after a writable SVG one
+    let o = run_in(
+        d,
+        &[
+            "figure",
+            "force-time",
+            "--out",
+            "b.svg",
+            "--data",
+            "/proc/b.csv",
+        ],
+    );
+    assert_eq!(o.code, 1, "{}", o.stderr);
+    assert!(names(d).is_empty(), "{:?}", names(d));
+    // the same command again, without --force: nothing of the failed run is in its way
+    let o = run_in(d, &args);
+    assert_eq!(o.code, 0, "{}", o.stderr);
+    assert_eq!(o.stdout, "a.svg\na.csv\n");
+    assert_eq!(names(d), ["a.csv", "a.svg"]);
+}
+
+#[test]
+fn a_failed_reproduce_leaves_no_folder_and_no_file() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let (code, err) = limited(d, 16, &["reproduce", "--out", "figs"]);
+    assert_eq!(code, 1, "{err}");
+    assert!(err.contains("cannot write figs/"), "{err}");
+    assert!(names(d).is_empty(), "{:?}", names(d));
+    // an earlier complete set survives a failed --force run byte for byte
+    fs::create_dir(d.join("figs")).unwrap();
+    fs::write(d.join("figs/cor-zeta.svg"), "earlier").unwrap();
+    let (code, _) = limited(d, 16, &["reproduce", "--out", "figs", "--force"]);
+    assert_eq!(code, 1);
+    assert_eq!(names(&d.join("figs")), ["cor-zeta.svg"]);
+    assert_eq!(
+        fs::read_to_string(d.join("figs/cor-zeta.svg")).unwrap(),
+        "earlier"
+    );
+}
+
+#[test]
+fn a_killed_run_s_temporary_is_cleared_by_the_next() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    // what a kill -9 mid-write leaves: the temporary of a process that is gone
+    let mut gone = Command::new("true").spawn().unwrap();
+    let pid = gone.id();
+    gone.wait().unwrap();
+    let debris = format!(".a.svg.{pid}-Zq3xY7wP.tmp");
+    fs::write(d.join(&debris), "<svg").unwrap();
+    let o = run_in(d, &["figure", "force-time", "--out", "a.svg"]);
+    assert_eq!(o.code, 0, "{}", o.stderr);
+    assert_eq!(names(d), ["a.svg"]);
+}
