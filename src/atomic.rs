@@ -95,7 +95,7 @@ impl Outputs {
         };
         let dir = folder(path);
         let name = path.file_name().unwrap_or(OsStr::new("output"));
-        remove_stale_of(dir, Some(name));
+        remove_stale_of(dir, name);
         let prefix = format!(".{}.{}-", name.to_string_lossy(), std::process::id());
         let mut builder = tempfile::Builder::new();
         builder.prefix(&prefix).suffix(".tmp").rand_bytes(8);
@@ -175,14 +175,9 @@ fn sync_dir(dir: &Path) {
 }
 
 /// Remove, in `dir`, the temporaries of this program's writers (`.NAME.PID-X.tmp`, the names
-/// [`Outputs`] and `catalog::write` use) whose process is gone. Best effort: what cannot be
-/// read or removed is left.
-pub fn remove_stale(dir: &Path) {
-    remove_stale_of(dir, None);
-}
-
-/// As [`remove_stale`], only for the temporaries of target `name` when given.
-fn remove_stale_of(dir: &Path, name: Option<&OsStr>) {
+/// [`Outputs`] and `catalog::write` use) whose process is gone and whose target NAME passes
+/// `ours`. Best effort: what cannot be read or removed is left.
+pub fn remove_stale(dir: &Path, ours: impl Fn(&str) -> bool) {
     let Ok(entries) = fs::read_dir(dir) else {
         return;
     };
@@ -191,14 +186,16 @@ fn remove_stale_of(dir: &Path, name: Option<&OsStr>) {
         let Some((target, pid)) = file.to_str().and_then(parse_temp_name) else {
             continue;
         };
-        if name.is_some_and(|n| n.to_str() != Some(target)) {
-            continue;
-        }
         let is_file = e.file_type().is_ok_and(|t| t.is_file());
-        if is_file && pid != std::process::id() && process_gone(pid) {
+        if ours(target) && is_file && pid != std::process::id() && process_gone(pid) {
             let _ = fs::remove_file(e.path());
         }
     }
+}
+
+/// As [`remove_stale`], for the temporaries of target `name`.
+fn remove_stale_of(dir: &Path, name: &OsStr) {
+    remove_stale(dir, |target| name.to_str() == Some(target));
 }
 
 /// `.NAME.PID-X.tmp` → (NAME, PID), with X letters and digits.
@@ -306,7 +303,7 @@ mod tests {
         for n in &names {
             fs::write(dir.path().join(n), "x").unwrap();
         }
-        remove_stale(dir.path());
+        remove_stale(dir.path(), |_| true);
         let mut kept = names[2..].to_vec();
         kept.sort();
         assert_eq!(entries(dir.path()), kept);

@@ -15,6 +15,7 @@ pub mod figure;
 pub mod model;
 pub mod preset;
 pub mod sanitize;
+pub mod signals;
 pub mod solver;
 pub mod tui;
 

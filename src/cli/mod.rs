@@ -78,6 +78,11 @@ pub fn main() -> ExitCode {
         Ok(cli) => cli,
         Err(e) => return clap_error(e),
     };
+    if cli.command.is_none() {
+        // the explorer must not hold the stdout lock: on a signal, crate::signals takes it to
+        // restore the terminal
+        return explorer(cli.preset, cli.config).map_or_else(fail, |()| ExitCode::SUCCESS);
+    }
     let stdout = io::stdout();
     let mut out = io::BufWriter::new(stdout.lock());
     let result = dispatch(cli, &mut out).and_then(|()| out.flush().map_err(Into::into));
