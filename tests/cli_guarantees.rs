@@ -157,3 +157,59 @@ fn a_killed_run_s_temporary_is_cleared_by_the_next() {
     assert_eq!(o.code, 0, "{}", o.stderr);
     assert_eq!(names(d), ["a.svg"]);
 }
+
+/// `bouncelab ARGS` with stdout or stderr on /dev/full: the exit code.
+fn with_full(args: &[&str], stderr_full: bool) -> i32 {
+    let full = || {
+        Stdio::from(
+            fs::OpenOptions::new()
+                .write(true)
+                .open("/dev/full")
+                .unwrap(),
+        )
+    };
+    let mut cmd = Command::new(BIN);
+    cmd.args(args).stdin(Stdio::null());
+    if stderr_full {
+        cmd.stdout(Stdio::null()).stderr(full());
+    } else {
+        cmd.stdout(full()).stderr(Stdio::null());
+    }
+    cmd.status().unwrap().code().expect("exited, not killed")
+}
+
+#[test]
+fn a_full_stderr_still_exits_2_and_help_to_a_full_stdout_fails() {
+    assert_eq!(with_full(&["run", "--lambda", "nan"], true), 2);
+    assert_eq!(with_full(&["run", "--nonsense"], true), 2);
+    assert_eq!(with_full(&["--help"], false), 1);
+    assert_eq!(with_full(&["run", "--help"], false), 1);
+    assert_eq!(with_full(&["--version"], false), 1);
+    assert_eq!(with_full(&["run", "--format", "json"], false), 1);
+}
+
+#[test]
+fn numbers_are_read_as_typed() {
+    // −0 is 0 in every output
+    let j = json(&["run", "--lambda", "-0", "--format", "json"]);
+    assert_eq!(j["lambda"].to_string(), "0.0");
+    assert_eq!(j["k_r"].to_string(), "0.0");
+    let csv = ok(&["sweep", "zeta", "--lambda=-0", "--points", "2"]);
+    assert!(csv.lines().skip(1).all(|l| l.starts_with("0,")), "{csv}");
+    // a literal that rounds to zero is refused, as one that rounds to a subnormal is
+    bad(
+        &["run", "--lambda", "1e-400"],
+        &["--lambda", "1e-400", "rounds to 0"],
+    );
+    bad(&["run", "--lambda", "1e-320"], &["invalid lambda: 1e-320"]);
+    // −inf is a value, refused as not finite, not taken for an option
+    bad(&["run", "--lambda", "-inf"], &["invalid lambda: -inf"]);
+    bad(
+        &["figure", "cor-zeta", "--out", "x.svg", "--lambda", "-inf,1"],
+        &["invalid lambda: -inf"],
+    );
+    // a tiny COR is printed in its shortest form
+    bad(&["fit", "--cor", "1e-320"], &["cor 1e-320 is out of reach"]);
+    let o = bl(&["fit", "--cor", "1e-320"]);
+    assert!(o.stderr.len() < 160, "{}", o.stderr);
+}

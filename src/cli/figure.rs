@@ -67,16 +67,22 @@ pub struct FigureArgs {
     #[command(flatten)]
     pub ball: BallArgs,
     /// λ of the model curves, comma-separated (cor-zeta, force-zeta) [default: 0,0.4,1]
-    #[arg(long, value_name = "L,L,...", value_delimiter = ',')]
+    #[arg(
+        long,
+        value_name = "L,L,...",
+        value_delimiter = ',',
+        value_parser = super::number::number,
+        allow_hyphen_values = true,
+    )]
     pub lambda: Option<Vec<f64>>,
     /// Impact speed v0, m/s (force-time, force-displacement) [default: the preset's v0]
-    #[arg(long, value_name = "V")]
+    #[arg(long, value_name = "V", value_parser = super::number::number, allow_hyphen_values = true)]
     pub v0: Option<f64>,
     /// Lowest impact speed, m/s (cor-velocity) [default: 0.1 × the preset's v0]
-    #[arg(long, value_name = "V")]
+    #[arg(long, value_name = "V", value_parser = super::number::number, allow_hyphen_values = true)]
     pub from: Option<f64>,
     /// Highest impact speed, m/s (cor-velocity) [default: where z_m = 3 z_p]
-    #[arg(long, value_name = "V")]
+    #[arg(long, value_name = "V", value_parser = super::number::number, allow_hyphen_values = true)]
     pub to: Option<f64>,
     /// Points along each curve [default: 400 for ζ, 200 for speed, 400 samples in time]
     #[arg(long, value_name = "N")]

@@ -41,14 +41,28 @@ pub struct ZetaArgs {
         long,
         value_name = "L,L,...",
         value_delimiter = ',',
-        default_value = "0,0.4,1"
+        default_value = "0,0.4,1",
+        value_parser = super::number::number,
+        allow_hyphen_values = true
     )]
     pub lambda: Vec<f64>,
     /// Smallest ζ
-    #[arg(long, value_name = "Z", default_value_t = 0.01)]
+    #[arg(
+        long,
+        value_name = "Z",
+        default_value_t = 0.01,
+        value_parser = super::number::number,
+        allow_hyphen_values = true,
+    )]
     pub from: f64,
     /// Largest ζ
-    #[arg(long, value_name = "Z", default_value_t = 100.0)]
+    #[arg(
+        long,
+        value_name = "Z",
+        default_value_t = 100.0,
+        value_parser = super::number::number,
+        allow_hyphen_values = true,
+    )]
     pub to: f64,
     /// Number of ζ values per λ
     #[arg(long, value_name = "N", default_value_t = 400)]
@@ -66,10 +80,10 @@ pub struct VelocityArgs {
     #[command(flatten)]
     pub ball: BallArgs,
     /// Lowest impact speed (m/s) [default: 0.1 × the preset's v0]
-    #[arg(long, value_name = "V")]
+    #[arg(long, value_name = "V", value_parser = super::number::number, allow_hyphen_values = true)]
     pub from: Option<f64>,
     /// Highest impact speed (m/s) [default: 3 × the preset's v0]
-    #[arg(long, value_name = "V")]
+    #[arg(long, value_name = "V", value_parser = super::number::number, allow_hyphen_values = true)]
     pub to: Option<f64>,
     /// Number of speeds (evenly spaced)
     #[arg(long, value_name = "N", default_value_t = 60)]
