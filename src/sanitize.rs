@@ -18,9 +18,14 @@ use std::borrow::Cow;
 use std::io::{self, Write};
 
 /// Characters never written as themselves: C0 and C1 controls and DEL (`char::is_control`),
-/// and the bidirectional overrides and isolates, which reorder what a terminal shows.
+/// the bidirectional overrides and isolates, which reorder what a terminal shows, and the two
+/// noncharacters XML 1.0 forbids.
 fn hostile(c: char) -> bool {
-    c.is_control() || matches!(c, '\u{202a}'..='\u{202e}' | '\u{2066}'..='\u{2069}')
+    c.is_control()
+        || matches!(
+            c,
+            '\u{202a}'..='\u{202e}' | '\u{2066}'..='\u{2069}' | '\u{fffe}' | '\u{ffff}'
+        )
 }
 
 fn escaped(s: &str, keep: impl Fn(char) -> bool) -> Cow<'_, str> {
@@ -48,9 +53,11 @@ pub fn text(s: &str) -> Cow<'_, str> {
     escaped(s, |c| c == '\n')
 }
 
-/// The first control character of `s` (the line feed included) and its char index.
-pub fn first_control(s: &str) -> Option<(usize, char)> {
-    s.chars().enumerate().find(|&(_, c)| hostile(c))
+/// The first control character of `s` not in `allowed`, and its char index.
+pub fn first_control(s: &str, allowed: &[char]) -> Option<(usize, char)> {
+    s.chars()
+        .enumerate()
+        .find(|&(_, c)| hostile(c) && !allowed.contains(&c))
 }
 
 /// A writer that passes text on with [`text`] applied. Bytes that are not UTF-8 pass
@@ -139,7 +146,8 @@ mod tests {
         assert_eq!(text("x\ny\r"), "x\ny\\u{d}");
         assert_eq!(text("\u{9b}2J \u{202e}"), "\\u{9b}2J \\u{202e}");
         assert!(matches!(text("plain λ ζ"), Cow::Borrowed(_)));
-        assert_eq!(first_control("ab\u{7f}"), Some((2, '\u{7f}')));
+        assert_eq!(first_control("ab\u{7f}", &[]), Some((2, '\u{7f}')));
+        assert_eq!(first_control("\ta\u{1b}", &['\t']), Some((2, '\u{1b}')));
     }
 
     #[test]
