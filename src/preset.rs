@@ -8,6 +8,7 @@ use serde::{Deserialize, Serialize};
 use std::fmt;
 
 mod text;
+mod usable;
 
 /// The three balls of the paper, embedded in the binary.
 pub const EMBEDDED: [(&str, &str); 3] = [
@@ -376,7 +377,8 @@ impl Preset {
                 }
             }
         }
-        Ok(())
+        // the commands' own check, so that load and use agree
+        usable::check(self)
     }
 
     /// Parameters from the material data (MODEL.md §4).

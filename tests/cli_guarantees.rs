@@ -213,3 +213,30 @@ fn numbers_are_read_as_typed() {
     let o = bl(&["fit", "--cor", "1e-320"]);
     assert!(o.stderr.len() < 160, "{}", o.stderr);
 }
+
+#[test]
+fn a_preset_the_commands_refuse_is_refused_at_load() {
+    for (from, to, needle) in [
+        (
+            "k_p = 5.45e4",
+            "k_p = 1e-320",
+            "adopted.k_p: 1e-320 cannot be run",
+        ),
+        ("k_r = 7.08e4", "k_r = 1e12", "adopted.k_r: gives lambda = "),
+        (
+            "damping = 140.0",
+            "damping = 1e-12",
+            "adopted.damping: gives zeta = ",
+        ),
+    ] {
+        let text = renamed("tiny", "7.08e4").replace(from, to);
+        let line = text[..text.find(to).unwrap()].matches('\n').count() + 1;
+        let (_dir, path) = file_with(text.as_bytes());
+        let at = format!("{path}:{line}:1: {needle}");
+        // the catalog (presets, the explorer) refuses it as the commands do
+        bad(&["presets", "--config", &path], &[&at]);
+        bad(&["run", "--config", &path], &[&at]);
+        let e = bouncelab::preset::Preset::parse(&text, &path).unwrap_err();
+        assert!(e.to_string().starts_with(&at), "{e}");
+    }
+}
