@@ -240,3 +240,44 @@ fn a_preset_the_commands_refuse_is_refused_at_load() {
         assert!(e.to_string().starts_with(&at), "{e}");
     }
 }
+
+#[test]
+fn work_beyond_the_limit_is_refused_before_it_starts() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let many: Vec<String> = (0..500).map(|i| format!("{}", i as f64 / 100.0)).collect();
+    let many = many.join(",");
+    for args in [
+        &[
+            "figure", "cor-zeta", "--points", "20000", "--lambda", &many, "--out", "a.svg",
+        ][..],
+        &[
+            "figure",
+            "force-zeta",
+            "--points",
+            "20000",
+            "--law",
+            "hertz",
+            "--out",
+            "a.svg",
+        ][..],
+        &["sweep", "zeta", "--points", "10000", "--law", "hertz"][..],
+        &[
+            "sweep",
+            "velocity",
+            "--points",
+            "100000",
+            "--law",
+            "elastic-plastic",
+        ][..],
+    ] {
+        let start = std::time::Instant::now();
+        let o = run_in(d, args);
+        assert_bad(&o, &["too much work", "work limit of 1000000"]);
+        assert!(start.elapsed().as_secs() < 5, "refused before any work");
+    }
+    assert!(names(d).is_empty());
+    // within the limit: the same sweep with fewer points runs
+    let o = run_in(d, &["sweep", "zeta", "--points", "3", "--law", "hertz"]);
+    assert_eq!(o.code, 0, "{}", o.stderr);
+}

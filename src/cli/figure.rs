@@ -3,7 +3,7 @@
 //! [`crate::figure::paper`]; this file reads the options, solves, and writes the files.
 
 use super::ball::{self, BallArgs, check_positive, param_message};
-use crate::analysis::sweep::{cor_vs_velocity, cor_vs_zeta, lin_space, log_space};
+use crate::analysis::sweep::{lin_space, log_space};
 use crate::atomic::Outputs;
 use crate::figure::{Figure, csv, paper, svg};
 use crate::model::contact::ContactLaw;
@@ -205,8 +205,9 @@ pub fn zeta_figures(
     for &l in lambdas {
         validate_lambda_zeta(l, 0.0).map_err(|e| anyhow::anyhow!(param_message(&e)))?;
     }
-    let rows =
-        cor_vs_zeta(lambdas, &log_space(0.01, 100.0, points), law).map_err(ball::solve_error)?;
+    let what = format!("{} λ values × {points} points", lambdas.len());
+    super::budget::check(lambdas.len() * points, law, &what)?;
+    let rows = super::budget::zeta_rows(lambdas, &log_space(0.01, 100.0, points), law)?;
     Ok((
         paper::cor_zeta(&rows, balls, law),
         paper::force_zeta(&rows, balls, law),
@@ -232,7 +233,8 @@ pub fn velocity_figure(
     if from >= to {
         anyhow::bail!("invalid speed range: --from {from} must be below --to {to}");
     }
-    let rows = cor_vs_velocity(&b.params, b.law, &lin_space(from, to, points)).map_err(pm)?;
+    super::budget::check(points, b.law, &format!("{points} points"))?;
+    let rows = super::budget::velocity_rows(&b.params, b.law, &lin_space(from, to, points))?;
     Ok(paper::cor_velocity(b, &rows, onset))
 }
 

@@ -6,6 +6,7 @@
 //! 1 a failure that is not the input's fault (writing the output, the explorer's terminal).
 
 pub mod ball;
+pub mod budget;
 pub mod figure;
 pub mod fit;
 pub mod number;
@@ -113,6 +114,10 @@ fn report(e: &anyhow::Error) -> Option<(u8, String)> {
         .map(io::Error::kind);
     if io_kind == Some(io::ErrorKind::BrokenPipe) {
         return None;
+    }
+    // Ctrl-C during long work (cli::budget): the shell's code for SIGINT
+    if e.downcast_ref::<budget::Interrupted>().is_some() {
+        return Some((130, format!("bouncelab: {e}")));
     }
     let code = if io_kind.is_some() || e.downcast_ref::<Runtime>().is_some() {
         1
