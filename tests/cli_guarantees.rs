@@ -36,22 +36,6 @@ fn limited(dir: &Path, kib: u32, args: &[&str]) -> (i32, String) {
     )
 }
 
-fn run_in(dir: &Path, args: &[&str]) -> Out {
-    let o = Command::new(BIN)
-        .args(args)
-        .current_dir(dir)
-        .env("XDG_CONFIG_HOME", dir)
-        .env("HOME", dir)
-        .stdin(Stdio::null())
-        .output()
-        .unwrap();
-    Out {
-        code: o.status.code().expect("exited"),
-        stdout: String::from_utf8_lossy(&o.stdout).into_owned(),
-        stderr: String::from_utf8_lossy(&o.stderr).into_owned(),
-    }
-}
-
 fn names(dir: &Path) -> Vec<String> {
     let mut v: Vec<String> = fs::read_dir(dir)
         .unwrap()
@@ -66,7 +50,7 @@ fn a_full_disk_leaves_the_old_figure_untouched() {
     let dir = tempfile::tempdir().unwrap();
     let d = dir.path();
     let args = ["figure", "force-time", "--out", "old.svg"];
-    assert_eq!(run_in(d, &args).code, 0);
+    assert_eq!(bl_at(d, &args).code, 0);
     let old = fs::read(d.join("old.svg")).unwrap();
     assert!(old.len() > 20 * 1024, "the figure is larger than the limit");
     let (code, err) = limited(d, 8, &[&args[..], &["--force", "--v0", "5"]].concat());
@@ -103,7 +87,7 @@ fn a_failure_leaves_no_new_file_and_a_rerun_is_not_refused() {
     assert!(err.contains("cannot write a.csv"), "{err}");
     assert!(names(d).is_empty(), "{:?}", names(d));
     // an unwritable CSV path after a writable SVG one
-    let o = run_in(
+    let o = bl_at(
         d,
         &[
             "figure",
@@ -117,7 +101,7 @@ fn a_failure_leaves_no_new_file_and_a_rerun_is_not_refused() {
     assert_eq!(o.code, 1, "{}", o.stderr);
     assert!(names(d).is_empty(), "{:?}", names(d));
     // the same command again, without --force: nothing of the failed run is in its way
-    let o = run_in(d, &args);
+    let o = bl_at(d, &args);
     assert_eq!(o.code, 0, "{}", o.stderr);
     assert_eq!(o.stdout, "a.svg\na.csv\n");
     assert_eq!(names(d), ["a.csv", "a.svg"]);
@@ -153,7 +137,7 @@ fn a_killed_run_s_temporary_is_cleared_by_the_next() {
     gone.wait().unwrap();
     let debris = format!(".a.svg.{pid}-Zq3xY7wP.tmp");
     fs::write(d.join(&debris), "<svg").unwrap();
-    let o = run_in(d, &["figure", "force-time", "--out", "a.svg"]);
+    let o = bl_at(d, &["figure", "force-time", "--out", "a.svg"]);
     assert_eq!(o.code, 0, "{}", o.stderr);
     assert_eq!(names(d), ["a.svg"]);
 }
@@ -272,12 +256,12 @@ fn work_beyond_the_limit_is_refused_before_it_starts() {
         ][..],
     ] {
         let start = std::time::Instant::now();
-        let o = run_in(d, args);
+        let o = bl_at(d, args);
         assert_bad(&o, &["too much work", "work limit of 1000000"]);
         assert!(start.elapsed().as_secs() < 5, "refused before any work");
     }
     assert!(names(d).is_empty());
     // within the limit: the same sweep with fewer points runs
-    let o = run_in(d, &["sweep", "zeta", "--points", "3", "--law", "hertz"]);
+    let o = bl_at(d, &["sweep", "zeta", "--points", "3", "--law", "hertz"]);
     assert_eq!(o.code, 0, "{}", o.stderr);
 }
