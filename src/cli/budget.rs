@@ -66,9 +66,16 @@ const SHOW_FROM: u64 = 20_000;
 /// Impacts solved between two looks at the bar and the signal flag.
 const CHUNK: usize = 64;
 
-/// Set by SIGINT or SIGTERM once [`interrupt_flag`] was called.
+static FLAG: std::sync::OnceLock<Arc<AtomicBool>> = std::sync::OnceLock::new();
+
+/// Whether a SIGINT or SIGTERM came since long work began: the command then publishes no file
+/// (`figure::commit` asks, after the work and before the renames).
+pub fn interrupted() -> bool {
+    FLAG.get().is_some_and(|f| f.load(Ordering::Relaxed))
+}
+
+/// Set by SIGINT or SIGTERM once this was called.
 fn interrupt_flag() -> Arc<AtomicBool> {
-    static FLAG: std::sync::OnceLock<Arc<AtomicBool>> = std::sync::OnceLock::new();
     FLAG.get_or_init(|| {
         let flag = Arc::new(AtomicBool::new(false));
         #[cfg(unix)]

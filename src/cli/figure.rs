@@ -163,6 +163,10 @@ pub fn write_file(path: &Path, text: &str, force: bool) -> anyhow::Result<()> {
 
 /// Publish staged files; an existing target is bad input (exit 2), any other failure I/O.
 pub fn commit(files: Outputs) -> anyhow::Result<Vec<PathBuf>> {
+    if super::budget::interrupted() {
+        // Ctrl-C during the work: the staged files go with `files`
+        return Err(super::budget::Interrupted.into());
+    }
     files.commit().map_err(|e| {
         if e.exists {
             anyhow::anyhow!("{e}")
