@@ -120,9 +120,13 @@ impl<W: Write> Writer<W> {
 
 impl<W: Write> Write for Writer<W> {
     fn write(&mut self, buf: &[u8]) -> io::Result<usize> {
-        let mut all = std::mem::take(&mut self.pending);
-        all.extend_from_slice(buf);
-        self.pass(&all)?;
+        if self.pending.is_empty() {
+            self.pass(buf)?;
+        } else {
+            let mut all = std::mem::take(&mut self.pending);
+            all.extend_from_slice(buf);
+            self.pass(&all)?;
+        }
         Ok(buf.len())
     }
 
