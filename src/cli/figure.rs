@@ -227,6 +227,7 @@ pub fn velocity_figure(
     points: usize,
 ) -> anyhow::Result<Figure> {
     let pm = ball::solve_error;
+    super::budget::check(points, b.law, &format!("{points} points"))?;
     let v0 = b.params.v0;
     let onset = paper::speed_for_indentation(&b.params, b.law, 1.0).map_err(pm)?;
     let far = paper::speed_for_indentation(&b.params, b.law, SPEED_RANGE_ZP).map_err(pm)?;
@@ -237,7 +238,6 @@ pub fn velocity_figure(
     if from >= to {
         anyhow::bail!("invalid speed range: --from {from} must be below --to {to}");
     }
-    super::budget::check(points, b.law, &format!("{points} points"))?;
     let rows = super::budget::velocity_rows(&b.params, b.law, &lin_space(from, to, points))?;
     Ok(paper::cor_velocity(b, &rows, onset))
 }
