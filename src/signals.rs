@@ -39,7 +39,8 @@ impl TerminalGuard {
                         // terminal (the lock is reentrant, so `restore` may take it again)
                         let stdout = io::stdout();
                         let mut lock = stdout.lock();
-                        restore();
+                        // a terminal that hung up fails every write: exit whatever happens
+                        let _ = std::panic::catch_unwind(restore);
                         let _ = lock.flush();
                         std::process::exit(128 + sig);
                     }

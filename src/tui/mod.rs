@@ -58,7 +58,8 @@ pub fn run(preset: Preset) -> anyhow::Result<()> {
 
 /// Raw mode off, the main screen back, the cursor shown.
 fn restore_all() {
-    ratatui::restore();
+    // errors ignored: after SIGHUP the terminal is gone (ratatui::restore would print them)
+    let _ = ratatui::try_restore();
     let _ = ratatui::crossterm::execute!(std::io::stdout(), ratatui::crossterm::cursor::Show);
 }
 
