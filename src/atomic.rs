@@ -18,9 +18,10 @@
 //!   writer of the same target, or by [`remove_stale`] at the explorer's start, once its
 //!   process is gone (`stale_temporaries_of_dead_processes_are_removed`).
 //!
-//! With `force`, a rename that fails after others succeeded (no known cause short of a
-//! failing disk) leaves the earlier files replaced: renames of several files are not one
-//! atomic step.
+//! - a rename that fails after others succeeded (no cause is known short of a failing disk)
+//!   undoes them: new files are removed, replaced ones put back from a hard link taken before
+//!   the first rename (`a_failed_rename_puts_the_replaced_files_back`). Only on a file system
+//!   without hard links does a replaced file stay replaced then.
 
 use std::ffi::OsStr;
 use std::fs;
@@ -114,8 +115,22 @@ impl Outputs {
         Ok(())
     }
 
-    /// Rename every staged file into place, in staging order; returns the targets.
+    /// Rename every staged file into place, in staging order; returns the targets. If one
+    /// rename fails, those before it are undone: new files removed, replaced ones put back
+    /// from a hard link taken before the first rename (where the file system has links).
     pub fn commit(self) -> Result<Vec<PathBuf>, OutputError> {
+        // (without `force` every target is new: nothing to back up)
+        let existed: Vec<bool> = self
+            .staged
+            .iter()
+            .map(|(path, _)| self.force && fs::symlink_metadata(path).is_ok())
+            .collect();
+        let backups: Vec<Option<PathBuf>> = self
+            .staged
+            .iter()
+            .zip(&existed)
+            .map(|((path, _), &old)| if old { backup(path) } else { None })
+            .collect();
         let mut published: Vec<PathBuf> = Vec::new();
         for (path, tmp) in self.staged {
             let result = if self.force {
@@ -126,12 +141,15 @@ impl Outputs {
             if let Err(e) = result {
                 // dropping `e` removes the temporary file; the remaining ones go with `staged`
                 let exists = !self.force && e.error.kind() == io::ErrorKind::AlreadyExists;
-                if !self.force {
-                    // these were new files, created by this commit: take them back
-                    for p in &published {
-                        let _ = fs::remove_file(p);
-                    }
+                for ((p, b), &old) in published.iter().zip(&backups).zip(&existed) {
+                    let _ = match b {
+                        Some(b) => fs::rename(b, p),
+                        None if !old => fs::remove_file(p),
+                        // replaced, with no link to put back (a file system without links)
+                        None => Ok(()),
+                    };
                 }
+                remove_all(&backups);
                 return Err(OutputError {
                     path,
                     error: e.error,
@@ -140,10 +158,37 @@ impl Outputs {
             }
             published.push(path);
         }
+        remove_all(&backups);
         for dir in published.iter().map(|p| folder(p)) {
             sync_dir(dir);
         }
         Ok(published)
+    }
+}
+
+/// A second name for the file at `path` (`.NAME.PID-bakN.tmp`, beside it), to put it back if
+/// the commit fails; `None` when there is no file or no hard link can be made.
+fn backup(path: &Path) -> Option<PathBuf> {
+    static N: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
+    if !fs::symlink_metadata(path).is_ok_and(|m| m.is_file()) {
+        return None;
+    }
+    let name = path.file_name()?.to_string_lossy().into_owned();
+    for _ in 0..8 {
+        let n = N.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+        let b = folder(path).join(format!(".{name}.{}-bak{n}.tmp", std::process::id()));
+        match fs::hard_link(path, &b) {
+            Ok(()) => return Some(b),
+            Err(e) if e.kind() == io::ErrorKind::AlreadyExists => continue,
+            Err(_) => return None,
+        }
+    }
+    None
+}
+
+fn remove_all(backups: &[Option<PathBuf>]) {
+    for b in backups.iter().flatten() {
+        let _ = fs::remove_file(b);
     }
 }
 
@@ -282,6 +327,27 @@ mod tests {
         out.commit().unwrap();
         assert_eq!(fs::read_to_string(&b).unwrap(), "b3");
         assert_eq!(entries(dir.path()), ["b.csv"]);
+    }
+
+    #[test]
+    fn a_failed_rename_puts_the_replaced_files_back() {
+        let dir = tempfile::tempdir().unwrap();
+        let (a, b) = (dir.path().join("a.svg"), dir.path().join("b.csv"));
+        fs::write(&a, "old").unwrap();
+        // a rename over a folder that holds something fails
+        fs::create_dir(&b).unwrap();
+        fs::write(b.join("inside"), "x").unwrap();
+        let mut out = Outputs::new(true);
+        out.text(&a, "new").unwrap();
+        out.text(&b, "new").unwrap();
+        let e = out.commit().unwrap_err();
+        assert_eq!(e.path, b);
+        assert_eq!(fs::read_to_string(&a).unwrap(), "old", "a.svg is put back");
+        assert_eq!(
+            entries(dir.path()),
+            ["a.svg", "b.csv"],
+            "no temporary, no backup"
+        );
     }
 
     #[test]
