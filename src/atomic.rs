@@ -9,15 +9,14 @@
 //!   full disk or a kill mid-write leaves the old file as it was
 //!   (tests/cli_guarantees.rs, `a_full_disk_leaves_the_old_figure_untouched`);
 //! - a command that fails while staging leaves no new file and no temporary one: dropping
-//!   [`Outputs`] removes its temporaries (`a_failure_leaves_no_new_file`, and the unit tests
+//!   [`Outputs`] removes its temporaries (`a_failure_leaves_no_new_file_and_a_rerun_is_not_refused`, and the unit tests
 //!   below);
 //! - without `force` a target that exists is never replaced, not even one that appears while
 //!   the command runs (`persist_noclobber`); if one does, the files this commit had already
 //!   published are removed again;
 //! - a temporary left by a killed process (kill -9 runs no destructor) is removed by the next
 //!   writer of the same target, or by [`remove_stale`] at the explorer's start, once its
-//!   process is gone (`stale_temporaries_of_dead_processes_are_removed`).
-//!
+//!   process is gone (`stale_temporaries_of_dead_processes_are_removed`);
 //! - a rename that fails after others succeeded (no cause is known short of a failing disk)
 //!   undoes them: new files are removed, replaced ones put back from a hard link taken before
 //!   the first rename (`a_failed_rename_puts_the_replaced_files_back`). Only on a file system
