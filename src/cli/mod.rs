@@ -6,8 +6,8 @@
 //! 1 a failure that is not the input's fault (writing the output, the explorer's terminal).
 
 pub mod ball;
-pub mod drop;
 pub mod budget;
+pub mod drop;
 pub mod figure;
 pub mod fit;
 pub mod number;
