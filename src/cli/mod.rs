@@ -8,13 +8,17 @@
 //! kinds to these codes.
 
 pub mod ball;
+pub mod budget;
+pub mod drop;
 pub mod figure;
 pub mod fit;
+pub mod number;
 pub mod output;
 pub mod presets;
 pub mod reproduce;
 pub mod run;
 mod run_text;
+pub mod standards;
 pub mod sweep;
 
 use crate::solver::SolveError;
@@ -62,6 +66,11 @@ pub enum Command {
     Figure(figure::FigureArgs),
     /// Write every figure, its data and a report of model against experiment into a folder
     Reproduce(reproduce::ReproduceArgs),
+    /// Drop a ball onto a rigid plate: its bounces, and a verdict against a standard
+    #[command(allow_negative_numbers = true)]
+    Drop(drop::DropArgs),
+    /// List the ball standards (drop and COR tests) and their windows
+    Standards(standards::StandardsArgs),
 }
 
 /// The explorer failed (its terminal, its event loop): not the input's fault.
@@ -74,8 +83,14 @@ pub fn main() -> ExitCode {
         Ok(cli) => cli,
         Err(e) => return clap_error(e),
     };
+    if cli.command.is_none() {
+        // the explorer must not hold the stdout lock: on a signal, crate::signals takes it to
+        // restore the terminal
+        return explorer(cli.choice).map_or_else(fail, |()| ExitCode::SUCCESS);
+    }
     let stdout = io::stdout();
-    let mut out = io::BufWriter::new(stdout.lock());
+    // no control character reaches the terminal, whatever a preset or path holds
+    let mut out = crate::sanitize::Writer::new(io::BufWriter::new(stdout.lock()));
     let result = dispatch(cli, &mut out).and_then(|()| out.flush().map_err(Into::into));
     match result {
         Ok(()) => ExitCode::SUCCESS,
@@ -87,7 +102,7 @@ fn fail(e: anyhow::Error) -> ExitCode {
     match report(&e) {
         None => ExitCode::SUCCESS,
         Some((code, line)) => {
-            eprintln!("{line}");
+            say(&line);
             ExitCode::from(code)
         }
     }
@@ -97,16 +112,19 @@ fn fail(e: anyhow::Error) -> ExitCode {
 /// pipe (`bouncelab … | head`), which is no error.
 fn report(e: &anyhow::Error) -> Option<(u8, String)> {
     let code = exit_code(e)?;
-    Some((
-        code,
-        format!("bouncelab: error: {}", one_line(&format!("{e:#}"))),
-    ))
+    let line = if code == 130 {
+        // an interruption is no error of the command's
+        format!("bouncelab: {e}")
+    } else {
+        format!("bouncelab: error: {}", one_line(&format!("{e:#}")))
+    };
+    Some((code, line))
 }
 
 /// The one place that maps what went wrong to an exit code, by the kind of error anywhere in
-/// the chain: 1 for what is not the input's fault (reading or writing files, the explorer's
-/// terminal, drawing a figure, an impact the solver could not bring to an end), 2 for bad
-/// input of any kind; `None` for a closed pipe.
+/// the chain: 130 for an interruption (Ctrl-C during long work), 1 for what is not the input's
+/// fault (reading or writing files, the explorer's terminal, drawing a figure, an impact the
+/// solver could not bring to an end), 2 for bad input of any kind; `None` for a closed pipe.
 fn exit_code(e: &anyhow::Error) -> Option<u8> {
     let io_kind = e
         .chain()
@@ -114,6 +132,10 @@ fn exit_code(e: &anyhow::Error) -> Option<u8> {
         .map(io::Error::kind);
     if io_kind == Some(io::ErrorKind::BrokenPipe) {
         return None;
+    }
+    // Ctrl-C during long work (cli::budget): the shell's code for SIGINT
+    if e.downcast_ref::<budget::Interrupted>().is_some() {
+        return Some(130);
     }
     let not_the_input = |c: &(dyn std::error::Error + 'static)| {
         c.is::<ExplorerFailed>()
@@ -125,6 +147,13 @@ fn exit_code(e: &anyhow::Error) -> Option<u8> {
     } else {
         Some(2)
     }
+}
+
+/// One line on stderr, its control characters shown as text (crate::sanitize). A stderr that
+/// cannot take it (full, closed) changes nothing: the exit code still tells
+/// (tests/cli_guarantees.rs, `a_full_stderr_still_exits_2_and_help_to_a_full_stdout_fails`).
+fn say(line: &str) {
+    let _ = writeln!(io::stderr(), "{}", crate::sanitize::line(line));
 }
 
 /// Any message as one line.
@@ -143,7 +172,11 @@ fn clap_error(e: clap::Error) -> ExitCode {
         e.kind(),
         DisplayHelp | DisplayVersion | DisplayHelpOnMissingArgumentOrSubcommand
     ) {
-        let _ = e.print();
+        // help asked for but not delivered (stdout full or closed) is a failed command
+        let printed = e.print().and_then(|()| io::stdout().flush());
+        if printed.is_err() {
+            return ExitCode::from(1);
+        }
         return ExitCode::from(e.exit_code().clamp(0, 255) as u8);
     }
     let text = e.render().to_string();
@@ -155,7 +188,7 @@ fn clap_error(e: clap::Error) -> ExitCode {
         .collect();
     let msg = body.join(" ");
     let msg = msg.strip_prefix("error: ").unwrap_or(&msg);
-    eprintln!("bouncelab: error: {msg} (see --help)");
+    say(&format!("bouncelab: error: {msg} (see --help)"));
     ExitCode::from(2)
 }
 
@@ -212,6 +245,16 @@ fn dispatch(cli: Cli, out: &mut dyn Write) -> anyhow::Result<()> {
                 );
             }
             reproduce::run(&a, out)
+        }
+        Command::Drop(mut a) => {
+            merge(top, &mut a.ball)?;
+            drop::run(&a, out)
+        }
+        Command::Standards(a) => {
+            if top.is_given() {
+                anyhow::bail!("standards lists the standards: --preset and --config do not apply");
+            }
+            standards::run(&a, out)
         }
     }
 }

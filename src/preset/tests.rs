@@ -2,10 +2,26 @@ use super::*;
 
 #[test]
 fn embedded_presets_parse() {
-    let all = Preset::embedded();
+    assert_eq!(
+        Preset::embedded()
+            .iter()
+            .map(|p| p.name.as_str())
+            .collect::<Vec<_>>(),
+        ["superball", "golf", "baseball"]
+    );
+    let all = Preset::embedded_all();
     assert_eq!(
         all.iter().map(|p| p.name.as_str()).collect::<Vec<_>>(),
-        ["superball", "golf", "baseball"]
+        [
+            "superball",
+            "golf",
+            "baseball",
+            "tennis",
+            "football",
+            "basketball",
+            "table-tennis",
+            "softball"
+        ]
     );
     for p in &all {
         assert!(p.params().validate().is_ok(), "{}", p.name);
