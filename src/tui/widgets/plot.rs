@@ -59,6 +59,22 @@ impl PlotLayout {
     }
 }
 
+/// Points from `a` to `b` (plot units) for a dotted line: `n` over the whole span of the
+/// plot, as many in proportion over a shorter segment.
+fn dots(a: (f64, f64), b: (f64, f64), n: f64, l: &PlotLayout) -> Vec<(f64, f64)> {
+    let ([x0, x1], [y0, y1]) = (l.x.bounds, l.y.bounds);
+    let span = ((b.0 - a.0) / (x1 - x0))
+        .abs()
+        .max(((b.1 - a.1) / (y1 - y0)).abs());
+    let k = (n * span).ceil().max(1.0) as usize;
+    (0..=k)
+        .map(|i| {
+            let t = i as f64 / k as f64;
+            (a.0 + t * (b.0 - a.0), a.1 + t * (b.1 - a.1))
+        })
+        .collect()
+}
+
 impl<'a> Plot<'a> {
     pub fn new(figure: &'a Figure, theme: Theme) -> Plot<'a> {
         Plot { figure, theme }
@@ -152,7 +168,6 @@ impl<'a> Plot<'a> {
     fn canvas(&self, l: &PlotLayout, ghost: bool) -> Buffer {
         let area = l.plot;
         let mut scratch = Buffer::empty(area);
-        let ([x0, x1], [y0, y1]) = (l.x.bounds, l.y.bounds);
         // a dot every third braille dot along the plot's longer side
         let n = (usize::from(area.width.max(area.height)) * 4 / 3 + 1) as f64;
         let lines: Vec<&Series> = self
@@ -170,24 +185,15 @@ impl<'a> Plot<'a> {
                         let (Some(a), Some(b)) = (w[0], w[1]) else {
                             continue;
                         };
-                        if !pass_dotted {
+                        if pass_dotted {
+                            let coords = dots(a, b, n, l);
+                            ctx.draw(&canvas::Points {
+                                coords: &coords,
+                                color,
+                            });
+                        } else {
                             ctx.draw(&canvas::Line::new(a.0, a.1, b.0, b.1, color));
-                            continue;
                         }
-                        let span = ((b.0 - a.0) / (x1 - x0))
-                            .abs()
-                            .max(((b.1 - a.1) / (y1 - y0)).abs());
-                        let k = (n * span).ceil().max(1.0) as usize;
-                        let coords: Vec<(f64, f64)> = (0..=k)
-                            .map(|i| {
-                                let t = i as f64 / k as f64;
-                                (a.0 + t * (b.0 - a.0), a.1 + t * (b.1 - a.1))
-                            })
-                            .collect();
-                        ctx.draw(&canvas::Points {
-                            coords: &coords,
-                            color,
-                        });
                     }
                 }
             }
