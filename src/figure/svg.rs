@@ -338,5 +338,7 @@ pub fn render(fig: &Figure) -> Result<String, RenderError> {
         draw_legend(&legend, fig)?;
         root.present().map_err(err)?;
     }
-    Ok(finish(buf, fig))
+    // labels may hold control characters, which XML 1.0 forbids: shown as text instead
+    // (crate::sanitize; tests/escaping.rs)
+    Ok(crate::sanitize::text(&finish(buf, fig)).into_owned())
 }

@@ -15,8 +15,8 @@
 
 use crate::figure::explorer::{self, Chart, Scene};
 use crate::figure::{Figure, csv, svg};
-use std::fs::{self, OpenOptions};
-use std::io::{self, Write};
+use std::fs;
+use std::io;
 use std::path::{Path, PathBuf};
 
 /// Where exports go when set (and not empty); the current directory otherwise. Created, with
@@ -131,27 +131,14 @@ pub fn write(request: &ExportRequest, dir: &Path) -> Result<Vec<PathBuf>, String
     ))
 }
 
-/// Create each path new and write its text; on the first error remove what was created.
+/// Create each path new with its text, all or none (each file a temporary renamed into place,
+/// see [`crate::atomic`]): an error leaves no file of this export behind.
 fn create_all(paths: &[PathBuf], contents: &[String]) -> Result<(), (PathBuf, io::Error)> {
-    let mut created: Vec<&PathBuf> = Vec::new();
+    let mut files = crate::atomic::Outputs::new(false);
     for (path, text) in paths.iter().zip(contents) {
-        let result = OpenOptions::new()
-            .write(true)
-            .create_new(true)
-            .open(path)
-            .and_then(|mut f| {
-                created.push(path);
-                f.write_all(text.as_bytes())?;
-                f.flush()
-            });
-        if let Err(e) = result {
-            for p in created {
-                let _ = fs::remove_file(p);
-            }
-            return Err((path.clone(), e));
-        }
+        files.text(path, text).map_err(|e| (e.path, e.error))?;
     }
-    Ok(())
+    files.commit().map(drop).map_err(|e| (e.path, e.error))
 }
 
 /// An I/O error without the "(os error N)" tail.
