@@ -8,6 +8,12 @@
 //! Nothing here touches the file system or the terminal: rendering returns a `String` and the
 //! CSV writer takes any `io::Write`, so the command line and the explorer share one
 //! implementation.
+//!
+//! A new chart or overlay is written once, as data: a [`Figure`] whose series each have a
+//! [`Role`] (model, pinned, this run, measured, reference), a [`Style`] and palette colour for
+//! the picture, and a [`Look`] for the terminal (colour role, legend key, marker text). The
+//! SVG and CSV writers and the explorer's braille widget then all draw it; the explorer shows
+//! a chart by adding a [`explorer::Chart`] and a case in [`explorer::figure`].
 
 pub mod csv;
 pub mod explorer;

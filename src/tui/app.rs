@@ -2,8 +2,8 @@
 //! here, when the state changes, and stored; drawing only reads them. `update` returns the
 //! side effects it wants ([`Effect`]: write an export, write a preset, run sweeps in the
 //! background) for the event loop to carry out. The dialogs (value entry, preset name,
-//! overwrite question) are handled in [`dialogs`], the COR-vs-speed sweeps' bookkeeping in
-//! [`sweeps`], and what the charts are drawn from in [`scene`].
+//! overwrite question) are handled in `dialogs`, the COR-vs-speed sweeps' bookkeeping in
+//! `sweeps`, and what the charts are drawn from in `scene`.
 
 mod dialogs;
 mod scene;

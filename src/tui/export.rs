@@ -5,7 +5,7 @@
 //! The figures are the ones on screen ([`crate::figure::explorer`]), built from the curves the
 //! state already holds — nothing is re-solved. `App::update` stays free of side effects: it
 //! builds an [`ExportRequest`] with [`request`] (pure) and returns it as an effect; the event
-//! loop hands it to [`write`], the only part that touches the file system, and reports back
+//! loop hands it to [`write()`], the only part that touches the file system, and reports back
 //! with `Action::Exported` or `Action::ExportFailed`; [`message`] is what the header then
 //! says.
 //!

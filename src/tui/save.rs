@@ -4,7 +4,7 @@
 //! As with the export, `App::update` stays free of side effects: on Enter in the name prompt it
 //! checks the name ([`check_name`]), builds a [`SaveRequest`] with the file's text
 //! ([`request`], pure) and returns it as an effect; the event loop hands the request to
-//! [`write`], the only part that touches the file system, which answers with an action: saved,
+//! [`write()`], the only part that touches the file system, which answers with an action: saved,
 //! failed, or "that file exists" — then the explorer asks `overwrite <file>? y/n` and only `y`
 //! returns the request again, now allowed to replace that one file.
 //!
