@@ -9,6 +9,7 @@ pub mod analysis;
 pub mod atomic;
 pub mod catalog;
 pub mod cli;
+pub mod drop;
 #[doc(hidden)]
 pub mod fault;
 pub mod figure;

@@ -7,6 +7,7 @@
 
 pub mod ball;
 pub mod budget;
+pub mod drop;
 pub mod figure;
 pub mod fit;
 pub mod number;
@@ -15,6 +16,7 @@ pub mod presets;
 pub mod reproduce;
 pub mod run;
 mod run_text;
+pub mod standards;
 pub mod sweep;
 
 use clap::{Parser, Subcommand};
@@ -60,6 +62,11 @@ pub enum Command {
     Figure(figure::FigureArgs),
     /// Write every figure, its data and a report of model against experiment into a folder
     Reproduce(reproduce::ReproduceArgs),
+    /// Drop a ball onto a rigid plate: its bounces, and a verdict against a standard
+    #[command(allow_negative_numbers = true)]
+    Drop(drop::DropArgs),
+    /// List the ball standards (drop and COR tests) and their windows
+    Standards(standards::StandardsArgs),
 }
 
 /// A failure that is not the input's fault: exit code 1.
@@ -226,6 +233,16 @@ fn dispatch(cli: Cli, out: &mut dyn Write) -> anyhow::Result<()> {
                 );
             }
             reproduce::run(&a, out)
+        }
+        Command::Drop(mut a) => {
+            merge(&cli.preset, &cli.config, &mut a.ball)?;
+            drop::run(&a, out)
+        }
+        Command::Standards(a) => {
+            if top.is_some() {
+                anyhow::bail!("standards lists the standards: --preset and --config do not apply");
+            }
+            standards::run(&a, out)
         }
     }
 }

@@ -1,20 +1,27 @@
 //! The live terminal explorer (ratatui). Entry point: [`run`].
 //!
-//! Layout of the module, after ratatui's event-driven template:
-//! [`app`] holds the state and `update(action)`, the only place it changes (curves are computed
-//! there, in [`compute`], with the library); [`action`] maps keys to actions; [`event`] is the
-//! loop; [`ui`] lays the screen out and [`widgets`] draw it, reading the state only; [`export`]
-//! turns the current view into SVG and CSV files (`e`) and [`save`] the current setting into a
-//! user preset file (`s`): in both `update` only asks, the loop writes.
+//! Layout of the module, after ratatui's event-driven template (the Elm architecture):
+//! [`app`] holds the state and `update(action) -> effects`, the only place it changes (curves
+//! are computed there, in [`compute`], with the library); [`action`] maps keys to actions;
+//! [`event`] is the loop, which carries out the [`effect`]s; [`ui`] lays the screen out and
+//! [`widgets`] draw it, each from the few things it shows — a chart from its figure
+//! (`crate::figure::explorer`), the same one the export writes; [`export`] writes the current
+//! view's figures as SVG and CSV files (`e`) and [`save`] the current setting as a user preset
+//! file (`s`): in both `update` only asks, the loop writes.
+//!
+//! The modules import each other without a cycle (tests/tui_imports.rs): state below
+//! `update`, widgets and the loop above it.
 
 pub mod action;
 pub mod app;
 pub mod compute;
+pub mod effect;
 pub mod event;
 pub mod export;
 pub mod format;
 pub mod param;
 pub mod save;
+pub mod setting;
 pub mod state;
 pub mod theme;
 pub mod ui;
