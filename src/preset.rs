@@ -200,9 +200,9 @@ impl Preset {
             }
         }
         let opt = |table, key, v: Option<f64>| v.map_or(Ok(()), |v| positive(table, key, v));
-        // printed by every command and drawn in figures: no control character may ride along
-        // (crate::sanitize; tests/escaping.rs)
-        // (a description may keep the tabs and line breaks of its TOML: they command nothing)
+        // printed by every command and drawn in figures: no control character may ride along,
+        // but a description may keep the tabs and line breaks of its TOML, which command
+        // nothing (tests/escaping.rs)
         for (key, text, allowed) in [
             ("name", &self.name, &[][..]),
             ("description", &self.description, &['\t', '\n'][..]),
