@@ -192,6 +192,12 @@ fn numbers_are_read_as_typed() {
         &["figure", "cor-zeta", "--out", "x.svg", "--lambda", "-inf,1"],
         &["invalid lambda: -inf"],
     );
+    // the same for every number option (drop's, from another command family)
+    bad(&["drop", "--height", "-inf"], &["invalid height: -inf"]);
+    bad(
+        &["drop", "--air-density", "1e-400"],
+        &["--air-density", "rounds to 0"],
+    );
     // a tiny COR is printed in its shortest form
     bad(&["fit", "--cor", "1e-320"], &["cor 1e-320 is out of reach"]);
     let o = bl(&["fit", "--cor", "1e-320"]);

@@ -28,22 +28,38 @@ pub struct DropArgs {
     #[command(flatten)]
     pub ball: BallArgs,
     /// Release height H of the bottom of the ball (m) [default: the standard's, else 1]
-    #[arg(long, value_name = "H")]
+    #[arg(long, value_name = "H", value_parser = super::number::number, allow_hyphen_values = true)]
     pub height: Option<f64>,
     /// Stop after this many bounces (1 … 1000)
     #[arg(long, value_name = "N", default_value_t = DEFAULT_BOUNCES)]
     pub bounces: usize,
     /// Stop after a rebound lower than this (m)
-    #[arg(long, value_name = "H", default_value_t = DEFAULT_MIN_REBOUND)]
+    #[arg(
+        long,
+        value_name = "H",
+        default_value_t = DEFAULT_MIN_REBOUND,
+        value_parser = super::number::number,
+        allow_hyphen_values = true,
+    )]
     pub min_rebound: f64,
     /// Fall in vacuum: no air drag
     #[arg(long, conflicts_with_all = ["drag_coefficient", "air_density"])]
     pub no_drag: bool,
     /// Drag coefficient C_d of quadratic drag ½ρC_dAv² [default: 0.47, a sphere]
-    #[arg(long, value_name = "CD")]
+    #[arg(
+        long,
+        value_name = "CD",
+        value_parser = super::number::number,
+        allow_hyphen_values = true,
+    )]
     pub drag_coefficient: Option<f64>,
     /// Air density ρ (kg/m³) [default: 1.204, 20 °C at sea level]
-    #[arg(long, value_name = "RHO")]
+    #[arg(
+        long,
+        value_name = "RHO",
+        value_parser = super::number::number,
+        allow_hyphen_values = true,
+    )]
     pub air_density: Option<f64>,
     /// Judge the ball against a standard (`bouncelab standards` lists them)
     #[arg(long, value_name = "NAME")]
