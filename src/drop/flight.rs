@@ -147,4 +147,15 @@ impl Flight {
         }
         (G * (2.0 * x * h).exp_m1() / x).sqrt()
     }
+
+    /// The fall from rest that ends at speed `v`: the inverse of [`Flight::fall_speed`],
+    /// s = −ln(1 − x v²/g)/(2x); `None` at or above the terminal speed, which no fall reaches.
+    pub fn fall_height_for(&self, v: f64) -> Option<f64> {
+        let x = self.drag_per_mass;
+        if x == 0.0 {
+            return Some(v * v / (2.0 * G));
+        }
+        let a = x * v * v / G;
+        (a < 1.0).then(|| -(-a).ln_1p() / (2.0 * x))
+    }
 }

@@ -4,10 +4,12 @@
 //! bookkeeping in [`sweeps`].
 
 mod dialogs;
+mod drop;
 mod sweeps;
 
 use super::action::{Action, Mode};
 use super::compute::{self, SpeedCurve, SpeedRequest, ZetaCurve};
+use super::drop_view::DropView;
 use super::export::{self, ExportRequest};
 use super::format::sig_trim;
 use super::param::Param;
@@ -51,6 +53,8 @@ pub struct App {
     export: Option<ExportRequest>,
     /// A preset file for the event loop to write (see [`App::save_request`]).
     save: Option<SaveRequest>,
+    /// The drop view's sequence and animation clock.
+    drop: DropView,
 }
 
 impl App {
@@ -87,6 +91,7 @@ impl App {
             export_wanted: false,
             export: None,
             save: None,
+            drop: DropView::new(false),
         };
         app.refresh();
         app
@@ -183,7 +188,7 @@ impl App {
     /// Apply one action without recomputing: for a batch of queued events, `apply` each, then
     /// [`App::refresh`] once.
     pub fn apply(&mut self, action: Action) {
-        if !matches!(action, Action::SpeedReady(..)) {
+        if !matches!(action, Action::SpeedReady(..) | Action::Tick(_)) {
             self.message = None;
         }
         match action {
@@ -268,6 +273,12 @@ impl App {
                 None => self.warn("nothing to undo".into()),
             },
             Action::NextView | Action::PrevView => self.view = self.view.other(),
+            Action::ToggleDrop | Action::DropPause | Action::DropReplay | Action::Tick(_) => {
+                self.drop_action(&action)
+            }
+            Action::Export if self.view == View::Drop => self.warn(
+                "the drop view has no export: `bouncelab drop --format csv` writes its data".into(),
+            ),
             Action::Export => self.export_wanted = true,
             Action::Exported { files } => {
                 self.export = None;
@@ -304,6 +315,11 @@ impl App {
         let lambda = self.setting.get(Param::Lambda);
         if self.zeta.as_ref().is_none_or(|c| c.lambda != lambda) {
             self.zeta = compute::zeta_curve(lambda).map_err(|e| self.error(e)).ok();
+        }
+        if self.view == View::Drop {
+            let preset = &self.presets[self.setting.preset];
+            self.drop
+                .refresh(&self.setting.params, self.setting.law, preset);
         }
         self.speed_wanted.clear();
         if self.view == View::Sweeps {

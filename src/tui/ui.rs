@@ -45,6 +45,7 @@ pub fn charts(view: View) -> &'static [Chart] {
     match view {
         View::Impact => &[Chart::ForceTime, Chart::Hysteresis, Chart::CorZeta],
         View::Sweeps => &[Chart::ForceZeta, Chart::CorSpeed],
+        View::Drop => &[],
     }
 }
 
@@ -86,6 +87,7 @@ pub fn screen(app: &App, area: Rect) -> Option<Screen> {
     let charts = match app.view() {
         View::Impact => impact_grid(charts),
         View::Sweeps => sweeps_grid(charts),
+        View::Drop => Vec::new(),
     };
     Some(Screen {
         header,
@@ -138,7 +140,15 @@ impl Widget for &App {
         };
         status::render_header(self, s.header, buf);
         status::render_status(self, s.status, buf);
-        if s.side_panel {
+        if self.view() == View::Drop {
+            let body = Rect::new(
+                area.x,
+                s.header.bottom(),
+                area.width,
+                s.status.y - s.header.bottom(),
+            );
+            super::widgets::drop::render(self, body, buf);
+        } else if s.side_panel {
             readout::render_panel(self, s.readout, buf);
         } else {
             readout::render_compact(self, s.readout, buf);

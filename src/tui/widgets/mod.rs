@@ -5,6 +5,7 @@ pub mod axis;
 pub mod confirm;
 pub mod cor_speed;
 pub mod cor_zeta;
+pub mod drop;
 pub mod force_time;
 pub mod force_zeta;
 pub mod help;
