@@ -20,7 +20,8 @@ use serde::Serialize;
 pub const G: f64 = 9.80665;
 /// Air density at 20 °C and 101.325 kPa (kg/m³).
 pub const AIR_DENSITY: f64 = 1.204;
-/// Drag coefficient of a smooth sphere at the Reynolds numbers of a drop test (10⁴ … 10⁵).
+/// Drag coefficient of a smooth sphere below the drag crisis (Reynolds numbers 10³ … 10⁵, those
+/// of the drop tests here).
 pub const SPHERE_DRAG_COEFFICIENT: f64 = 0.47;
 
 /// The air a ball falls through.
