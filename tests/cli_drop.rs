@@ -196,6 +196,9 @@ fn text_names_the_drag_model_and_the_verdict() {
         "1",
     ]);
     assert!(out.contains("no drag (vacuum)"), "{out}");
+    // without --standard the ball's own is named; a ball without one gets no such line
+    assert!(out.contains("add --standard fifa-quality-pro"), "{out}");
+    assert!(!ok(&["drop", "--preset", "golf", "--bounces", "1"]).contains("--standard"));
 }
 
 #[test]

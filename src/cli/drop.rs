@@ -100,7 +100,20 @@ pub fn run(a: &DropArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     match a.format {
         DropFormat::Json => output::json(out, &report(&run, verdict.as_ref()))?,
         DropFormat::Csv => trajectory_csv(out, &run)?,
-        DropFormat::Text => text(out, &b.label(), &run, standard.zip(verdict), radius)?,
+        DropFormat::Text => {
+            text(out, &b.label(), &run, standard.zip(verdict), radius)?;
+            // no standard asked for: name the ball's own, if it has one
+            if let (None, Some(own)) = (standard, b.name.as_deref().and_then(standards::for_ball)) {
+                writeln!(
+                    out,
+                    "\n{}'s standard is {} ({}): add --standard {}",
+                    b.name.as_deref().unwrap_or_default(),
+                    own.name,
+                    own.title,
+                    own.name
+                )?;
+            }
+        }
     }
     Ok(())
 }
