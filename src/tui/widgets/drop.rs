@@ -1,10 +1,8 @@
 //! The drop view (`d`, src/tui/drop_view.rs): height against time in braille with the
 //! standard's window as a band on the first rebound, the ball on a ratatui Canvas above the
-//! plate, and a readout with the bounces and the verdict. Reads the state only.
+//! plate, and a readout with the bounces and the verdict. Reads the state only, and draws with
+//! ratatui's own `Chart` and `Canvas`, so it stands apart from the explorer's chart module.
 
-use super::axis::AxisSpec;
-use super::legend;
-use super::plot::{Corner, Mark, Plot, Rule, Series};
 use crate::drop::standards::Test;
 use crate::tui::app::App;
 use crate::tui::drop_view::DropView;
@@ -16,7 +14,7 @@ use ratatui::style::{Color, Style};
 use ratatui::symbols::Marker;
 use ratatui::text::{Line, Span};
 use ratatui::widgets::canvas::{Canvas, Circle, Line as CanvasLine};
-use ratatui::widgets::{Block, Paragraph, Widget, Wrap};
+use ratatui::widgets::{Axis, Block, Chart, Dataset, GraphType, Paragraph, Widget, Wrap};
 
 /// Width of the ball's column and of the readout.
 const BALL_WIDTH: u16 = 18;
@@ -37,63 +35,102 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer) {
     };
     let [chart, ball] =
         Layout::horizontal([Constraint::Fill(1), Constraint::Length(BALL_WIDTH)]).areas(left);
-    plot(d, theme).render(chart, buf);
+    render_chart(d, theme, chart, buf);
     render_ball(d, theme, ball, buf);
     render_readout(app, d, theme, readout, buf);
 }
 
-/// Height (m) against time (s): the whole sequence dimmed, the part already flown live, the
-/// ball now as a mark, the standard's window as two rules.
-fn plot(d: &DropView, theme: Theme) -> Plot {
-    let (mut series, mut marks, mut rules, mut legend_lines) =
-        (Vec::new(), Vec::new(), Vec::new(), Vec::new());
-    let (mut t_hi, mut h_hi) = (1e-3, 1e-3);
+/// What the height–time chart draws, in m and s.
+struct Curves {
+    all: Vec<(f64, f64)>,
+    flown: Vec<(f64, f64)>,
+    now: Vec<(f64, f64)>,
+    band: Option<[Vec<(f64, f64)>; 2]>,
+    t_hi: f64,
+    h_hi: f64,
+}
+
+fn curves(d: &DropView) -> Curves {
+    let mut c = Curves {
+        all: Vec::new(),
+        flown: Vec::new(),
+        now: Vec::new(),
+        band: None,
+        t_hi: 1e-3,
+        h_hi: 1e-3,
+    };
     if let Some(run) = d.sequence() {
-        t_hi = run.duration().max(1e-3);
-        h_hi = run.setup.height * 1.05;
-        let traj = run.trajectory(t_hi / 400.0);
-        let all: Vec<(f64, f64)> = traj.iter().map(|s| (s.t, s.height)).collect();
-        let mut flown: Vec<(f64, f64)> = all.iter().copied().filter(|p| p.0 <= d.t).collect();
-        flown.push((d.t, d.height_now()));
-        series.push(Series::ghost(all));
-        series.push(Series::live(flown, theme.current()));
-        legend_lines.push(legend(
-            "━",
-            Style::default().fg(theme.current()),
-            "bottom of the ball",
-        ));
-        marks.push(Mark {
-            x: d.t,
-            y: d.height_now(),
-            text: "●".into(),
-            style: Style::default().fg(theme.current()),
-        });
+        c.t_hi = run.duration().max(1e-3);
+        c.h_hi = run.setup.height * 1.05;
+        c.all = run
+            .trajectory(c.t_hi / 400.0)
+            .iter()
+            .map(|s| (s.t, s.height))
+            .collect();
+        c.flown = c.all.iter().copied().filter(|p| p.0 <= d.t).collect();
+        c.flown.push((d.t, d.height_now()));
+        c.now = vec![(d.t, d.height_now())];
     }
-    if let (Some((lo, hi)), Some((s, _))) = (d.band(), d.verdict) {
-        let color = theme.measured().fg.unwrap_or_default();
-        for (at, label) in [(hi, Some(format!("{} window", s.name))), (lo, None)] {
-            rules.push(Rule {
-                at,
-                vertical: false,
-                color,
-                label,
-            });
+    if let Some((lo, hi)) = d.band() {
+        c.band = Some([vec![(0.0, lo), (c.t_hi, lo)], vec![(0.0, hi), (c.t_hi, hi)]]);
+        c.h_hi = c.h_hi.max(hi * 1.05);
+    }
+    c
+}
+
+/// Three labels along an axis: 0, the middle and the end.
+fn labels(hi: f64) -> Vec<String> {
+    vec!["0".into(), sig(hi / 2.0, 3), sig(hi, 3)]
+}
+
+/// Height (m) against time (s) on ratatui's braille `Chart`: the whole sequence dimmed, the
+/// part already flown bright, the ball now as a dot, the standard's window as two lines.
+fn render_chart(d: &DropView, theme: Theme, area: Rect, buf: &mut Buffer) {
+    let c = curves(d);
+    let live = Style::default().fg(theme.current());
+    let line = |name: Option<String>, data, style| {
+        let set = Dataset::default()
+            .marker(Marker::Braille)
+            .graph_type(GraphType::Line)
+            .style(style)
+            .data(data);
+        match name {
+            Some(n) => set.name(n),
+            None => set,
         }
-        legend_lines.push(legend("┄", theme.measured(), "1st rebound window"));
-        h_hi = h_hi.max(hi * 1.05);
+    };
+    let mut sets = vec![
+        line(None, &c.all, theme.ghost()),
+        line(Some("bottom of the ball".into()), &c.flown, live),
+        Dataset::default()
+            .marker(Marker::Dot)
+            .graph_type(GraphType::Scatter)
+            .style(live)
+            .data(&c.now),
+    ];
+    if let (Some([lo, hi]), Some((s, _))) = (&c.band, d.verdict) {
+        sets.push(line(Some(format!("{} window", s.name)), hi, theme.measured()));
+        sets.push(line(None, lo, theme.measured()));
     }
-    Plot {
-        title: "Drop · height [m] vs t [s]".into(),
-        short_title: "drop · m, s".into(),
-        x: AxisSpec::Linear { lo: 0.0, hi: t_hi },
-        y: AxisSpec::Linear { lo: 0.0, hi: h_hi },
-        series,
-        rules,
-        marks,
-        legend: legend_lines,
-        legend_at: Corner::TopRight,
-        theme,
-    }
+    Chart::new(sets)
+        .hidden_legend_constraints((Constraint::Ratio(1, 2), Constraint::Ratio(1, 2)))
+        .block(Block::bordered().title(Span::styled(
+            "Drop · height [m] vs t [s]",
+            theme.title(),
+        )))
+        .x_axis(
+            Axis::default()
+                .style(theme.axis())
+                .bounds([0.0, c.t_hi])
+                .labels(labels(c.t_hi)),
+        )
+        .y_axis(
+            Axis::default()
+                .style(theme.axis())
+                .bounds([0.0, c.h_hi])
+                .labels(labels(c.h_hi)),
+        )
+        .render(area, buf);
 }
 
 /// The ball (to scale in height: its bottom at the current height) above the plate.
