@@ -196,6 +196,29 @@ fn text_names_the_drag_model_and_the_verdict() {
         "1",
     ]);
     assert!(out.contains("no drag (vacuum)"), "{out}");
+    // a height other than the standard's: the verdict says it is judged on the standard's
+    let out = ok(&[
+        "drop",
+        "--preset",
+        "tennis",
+        "--standard",
+        "itf",
+        "--height",
+        "1",
+    ]);
+    assert!(
+        out.contains("judged on the standard's own drop, not on the 1 m above"),
+        "{out}"
+    );
+    assert!(out.contains("measured 1.410 m: PASS"), "{out}");
+    let out = ok(&[
+        "--preset",
+        "football",
+        "drop",
+        "--no-drag",
+        "--bounces",
+        "1",
+    ]);
     // without --standard the ball's own is named; a ball without one gets no such line
     assert!(out.contains("add --standard fifa-quality-pro"), "{out}");
     assert!(!ok(&["drop", "--preset", "golf", "--bounces", "1"]).contains("--standard"));

@@ -215,6 +215,15 @@ fn text(
     if let Some((s, v)) = judged {
         writeln!(out)?;
         verdict_text(out, s, &v, radius)?;
+        if s.release_height(radius)
+            .is_some_and(|h| h != run.setup.height)
+        {
+            writeln!(
+                out,
+                "  (judged on the standard's own drop, not on the {} m above)",
+                given(run.setup.height, 6)
+            )?;
+        }
     }
     Ok(())
 }

@@ -109,15 +109,16 @@ fn render_chart(d: &DropView, theme: Theme, area: Rect, buf: &mut Buffer) {
             .data(&c.now),
     ];
     if let (Some([lo, hi]), Some((s, _))) = (&c.band, d.verdict) {
-        sets.push(line(Some(format!("{} window", s.name)), hi, theme.measured()));
+        sets.push(line(
+            Some(format!("{} window", s.name)),
+            hi,
+            theme.measured(),
+        ));
         sets.push(line(None, lo, theme.measured()));
     }
     Chart::new(sets)
         .hidden_legend_constraints((Constraint::Ratio(1, 2), Constraint::Ratio(1, 2)))
-        .block(Block::bordered().title(Span::styled(
-            "Drop · height [m] vs t [s]",
-            theme.title(),
-        )))
+        .block(Block::bordered().title(Span::styled("Drop · height [m] vs t [s]", theme.title())))
         .x_axis(
             Axis::default()
                 .style(theme.axis())
