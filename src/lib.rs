@@ -6,6 +6,7 @@
 //! The physics core (`model`, `solver`) does no I/O: plain data in, plain data out.
 
 pub mod analysis;
+pub mod atomic;
 pub mod catalog;
 pub mod cli;
 pub mod drop;
@@ -14,6 +15,8 @@ pub mod fault;
 pub mod figure;
 pub mod model;
 pub mod preset;
+pub mod sanitize;
+pub mod signals;
 pub mod solver;
 pub mod tui;
 

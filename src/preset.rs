@@ -8,6 +8,7 @@ use serde::{Deserialize, Serialize};
 use std::fmt;
 
 mod text;
+mod usable;
 
 /// The three balls of the paper, embedded in the binary, first; then the balls of the drop
 /// tests (docs/drop.md, "The new balls").
@@ -288,6 +289,22 @@ impl Preset {
             }
         }
         let opt = |table, key, v: Option<f64>| v.map_or(Ok(()), |v| positive(table, key, v));
+        // printed by every command and drawn in figures: no control character may ride along
+        // (crate::sanitize; tests/escaping.rs)
+        // (a description may keep the tabs and line breaks of its TOML: they command nothing)
+        for (key, text, allowed) in [
+            ("name", &self.name, &[][..]),
+            ("description", &self.description, &['\t', '\n'][..]),
+        ] {
+            if let Some((i, c)) = crate::sanitize::first_control(text, allowed) {
+                let msg = format!(
+                    "holds a control character, U+{:04X} (character {})",
+                    c as u32,
+                    i + 1
+                );
+                return Err(bad("", key, msg));
+            }
+        }
         if self.name.trim().is_empty() || self.name.chars().any(|c| c.is_whitespace() || c == '/') {
             return Err(bad(
                 "",
@@ -377,7 +394,8 @@ impl Preset {
                 }
             }
         }
-        Ok(())
+        // the commands' own check, so that load and use agree
+        usable::check(self)
     }
 
     /// Parameters from the material data (MODEL.md §4).
