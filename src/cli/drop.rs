@@ -103,11 +103,11 @@ pub fn run(a: &DropArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         DropFormat::Text => {
             text(out, &b.label(), &run, standard.zip(verdict), radius)?;
             // no standard asked for: name the ball's own, if it has one
-            if let (None, Some(own)) = (standard, b.name.as_deref().and_then(standards::for_ball)) {
+            if let (None, Some(own)) = (standard, b.preset().and_then(standards::for_ball)) {
                 writeln!(
                     out,
                     "\n{}'s standard is {} ({}): add --standard {}",
-                    b.name.as_deref().unwrap_or_default(),
+                    b.preset().unwrap_or_default(),
                     own.name,
                     own.title,
                     own.name

@@ -4,9 +4,9 @@
 //! ratatui's own `Chart` and `Canvas`, so it stands apart from the explorer's chart module.
 
 use crate::drop::standards::Test;
+use crate::text::sig;
 use crate::tui::app::App;
 use crate::tui::drop_view::DropView;
-use crate::tui::format::sig;
 use crate::tui::theme::Theme;
 use ratatui::buffer::Buffer;
 use ratatui::layout::{Constraint, Layout, Rect};
