@@ -154,6 +154,26 @@ const CASES: &[(&str, &[&str])] = &[
     ("bad-fit-reach", &["fit", "--cor", "0.01"]),
     ("bad-flag", &["run", "--no-such-flag"]),
     ("bad-explorer-no-terminal", &[]),
+    (
+        "drop-text-tennis-itf",
+        &["drop", "--preset", "tennis", "--standard", "itf"],
+    ),
+    (
+        "drop-json-basketball-fiba",
+        &[
+            "drop",
+            "--preset",
+            "basketball",
+            "--standard",
+            "fiba",
+            "--bounces",
+            "2",
+            "--format",
+            "json",
+        ],
+    ),
+    ("standards-text", &["standards"]),
+    ("bad-standard", &["drop", "--standard", "wimbledon"]),
 ];
 
 /// Everything a case produced, as one text: the exit code, stdout, stderr, then each file

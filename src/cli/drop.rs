@@ -116,7 +116,20 @@ pub fn run(a: &DropArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     match a.format {
         DropFormat::Json => output::json(out, &report(&run, verdict.as_ref()))?,
         DropFormat::Csv => trajectory_csv(out, &run)?,
-        DropFormat::Text => text(out, &b.label(), &run, standard.zip(verdict), radius)?,
+        DropFormat::Text => {
+            text(out, &b.label(), &run, standard.zip(verdict), radius)?;
+            // no standard asked for: name the ball's own, if it has one
+            if let (None, Some(own)) = (standard, b.preset().and_then(standards::for_ball)) {
+                writeln!(
+                    out,
+                    "\n{}'s standard is {} ({}): add --standard {}",
+                    b.preset().unwrap_or_default(),
+                    own.name,
+                    own.title,
+                    own.name
+                )?;
+            }
+        }
     }
     Ok(())
 }
@@ -218,6 +231,15 @@ fn text(
     if let Some((s, v)) = judged {
         writeln!(out)?;
         verdict_text(out, s, &v, radius)?;
+        if s.release_height(radius)
+            .is_some_and(|h| h != run.setup.height)
+        {
+            writeln!(
+                out,
+                "  (judged on the standard's own drop, not on the {} m above)",
+                given(run.setup.height, 6)
+            )?;
+        }
     }
     Ok(())
 }

@@ -15,6 +15,7 @@
 pub mod action;
 pub mod app;
 pub mod compute;
+pub mod drop_view;
 pub mod effect;
 pub mod event;
 pub mod export;
@@ -38,6 +39,12 @@ pub fn color_wanted() -> bool {
     std::env::var_os("NO_COLOR").is_none_or(|v| v.is_empty())
 }
 
+/// Whether to animate (the drop view): not when BOUNCELAB_REDUCED_MOTION is set to a
+/// non-empty value, a reduced-motion setting in the manner of NO_COLOR.
+pub fn motion_wanted() -> bool {
+    std::env::var_os("BOUNCELAB_REDUCED_MOTION").is_none_or(|v| v.is_empty())
+}
+
 /// Open the explorer on `preset`; returns when the user quits. The terminal is restored on
 /// every exit path: normal return, error, and panic (ratatui's hook restores it, then chains
 /// the previous hook).
@@ -46,7 +53,9 @@ pub fn run(preset: Preset) -> anyhow::Result<()> {
         anyhow::bail!("the explorer needs a terminal (stdout is not one); see `bouncelab --help`");
     }
     remove_stale_temporaries();
-    let mut app = app::App::new(preset, color_wanted()).with_background_sweeps();
+    let mut app = app::App::new(preset, color_wanted())
+        .with_background_sweeps()
+        .with_motion(motion_wanted());
     let mut terminal = ratatui::try_init()
         .inspect_err(|_| {
             if terminal::is_raw_mode_enabled().unwrap_or(false) {
