@@ -11,6 +11,7 @@ pub mod cli;
 #[doc(hidden)]
 pub mod fault;
 pub mod figure;
+pub mod measured;
 pub mod model;
 pub mod preset;
 pub mod solver;
