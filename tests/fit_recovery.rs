@@ -1,0 +1,124 @@
+//! Fits recover known parameters (not a preset's) from data the solver made, with noise and
+//! an unknown time offset, within their reported 95 % intervals.
+
+mod fit_common;
+
+use bouncelab::ContactLaw;
+use bouncelab::analysis::fit::{Estimate, FitData, Param, fit};
+use fit_common::*;
+
+fn covers(e: &Estimate, truth: f64) -> bool {
+    e.ci95[0] <= truth && truth <= e.ci95[1]
+}
+
+#[test]
+fn force_time_trace_with_noise_and_offset() {
+    let t = truth();
+    let mut rng = Rng::new(1);
+    let offset = 0.8e-3;
+    let tr = trace(
+        &t,
+        ContactLaw::Linear,
+        offset,
+        1.0,
+        0.3,
+        2000,
+        5e-6,
+        &mut rng,
+    );
+    let free = [Param::KP, Param::C, Param::KR];
+    let start = std::time::Instant::now();
+    let f = fit(&guess(&t), ContactLaw::Linear, FitData::Trace(&tr), &free).unwrap();
+    eprintln!("{:?} {:?}", start.elapsed(), f.iterations);
+    eprintln!(
+        "{:#?} {:?} {:?} {}",
+        f.fitted, f.time_offset, f.baseline, f.rms_residual
+    );
+    assert!(f.converged, "{f:?}");
+    for (e, truth) in f.fitted.iter().zip([t.k_p, t.damping, t.k_r]) {
+        assert!(covers(e, truth), "{}: {e:?} vs {truth}", e.name);
+        assert!(e.std_error < 0.05 * e.value, "{e:?}");
+    }
+    assert!(
+        covers(f.time_offset.as_ref().unwrap(), offset),
+        "{:?}",
+        f.time_offset
+    );
+    assert!((f.rms_residual - 1.0).abs() < 0.1, "{}", f.rms_residual);
+    assert!(f.warnings.is_empty(), "{:?}", f.warnings);
+}
+
+/// Speeds from well below to well above the onset of flattening (≈ 1.6 m/s here), where e
+/// falls with speed: K_r and z_p both show.
+const SPEEDS: [f64; 8] = [0.5, 1.0, 1.5, 2.0, 3.0, 4.0, 5.0, 6.0];
+
+#[test]
+fn cor_table_with_flattening() {
+    let t = truth();
+    let mut rng = Rng::new(7);
+    let pts = cor_table(&t, ContactLaw::Linear, &SPEEDS, 0.005, &mut rng);
+    let base = bouncelab::ImpactParams {
+        k_r: t.k_r * 0.2,
+        z_p: t.z_p * 4.0,
+        ..t
+    };
+    let f = fit(
+        &base,
+        ContactLaw::Linear,
+        FitData::Cor(&pts),
+        &[Param::KR, Param::ZP],
+    )
+    .unwrap();
+    eprintln!("{:#?} {} {}", f.fitted, f.rms_residual, f.iterations);
+    assert!(f.converged);
+    assert!(covers(&f.fitted[0], t.k_r), "{:?}", f.fitted[0]);
+    assert!(covers(&f.fitted[1], t.z_p), "{:?}", f.fitted[1]);
+    assert!(f.rms_residual < 0.01, "{}", f.rms_residual);
+    assert_eq!(f.model.len(), SPEEDS.len());
+}
+
+/// Drops from 0.2 … 1.8 m (v0 ≈ 2 … 6 m/s), rebound heights read to ±3 mm.
+#[test]
+fn drop_test() {
+    use bouncelab::measured::{CorPoint, drop_to_cor};
+    let t = truth();
+    let mut rng = Rng::new(11);
+    let pts: Vec<CorPoint> = [0.2, 0.5, 0.8, 1.2, 1.8]
+        .iter()
+        .map(|&h| {
+            let v0 = (2.0 * bouncelab::measured::G * h).sqrt();
+            let e = bouncelab::simulate(
+                &bouncelab::ImpactParams { v0, ..t },
+                ContactLaw::Linear,
+                &Default::default(),
+            )
+            .unwrap()
+            .cor;
+            let rebound = e * e * h + 0.003 * rng.normal();
+            let (v0, cor) = drop_to_cor(h, rebound, None);
+            CorPoint {
+                v0,
+                cor,
+                cor_sd: None,
+                max_force: None,
+                contact_time: None,
+                line: 0,
+            }
+        })
+        .collect();
+    let base = bouncelab::ImpactParams {
+        k_r: t.k_r * 3.0,
+        z_p: t.z_p * 0.5,
+        ..t
+    };
+    let f = fit(
+        &base,
+        ContactLaw::Linear,
+        FitData::Cor(&pts),
+        &[Param::KR, Param::ZP],
+    )
+    .unwrap();
+    eprintln!("{:#?}", f.fitted);
+    assert!(covers(&f.fitted[0], t.k_r), "{:?}", f.fitted[0]);
+    assert!(covers(&f.fitted[1], t.z_p), "{:?}", f.fitted[1]);
+}
