@@ -122,3 +122,69 @@ fn drop_test() {
     assert!(covers(&f.fitted[0], t.k_r), "{:?}", f.fitted[0]);
     assert!(covers(&f.fitted[1], t.z_p), "{:?}", f.fitted[1]);
 }
+
+/// A trace made with the elastic–plastic law (Hertz up to z_p, then linear) fitted with the
+/// linear law: the fit finishes, and its residual is well above the noise and above the fit
+/// of the right law to the same data.
+#[test]
+fn another_law_fits_worse_and_does_not_crash() {
+    let t = bouncelab::ImpactParams {
+        z_p: 2e-3,
+        ..truth()
+    };
+    let t = bouncelab::ImpactParams {
+        k_h: bouncelab::ImpactParams::k_h_matching(t.k_p, t.z_p),
+        ..t
+    };
+    let mut rng = Rng::new(5);
+    let tr = trace(
+        &t,
+        ContactLaw::ElasticPlastic,
+        0.8e-3,
+        0.5,
+        0.0,
+        500,
+        1.6e-5,
+        &mut rng,
+    );
+    let free = [Param::KP, Param::C, Param::KR];
+    let wrong = fit(&guess(&t), ContactLaw::Linear, FitData::Trace(&tr), &free).unwrap();
+    let right = fit(
+        &guess(&t),
+        ContactLaw::ElasticPlastic,
+        FitData::Trace(&tr),
+        &free,
+    )
+    .unwrap();
+    assert!(right.rms_residual < 0.6, "{}", right.rms_residual);
+    assert!(
+        wrong.rms_residual > 1.5 * right.rms_residual,
+        "{} vs {}",
+        wrong.rms_residual,
+        right.rms_residual
+    );
+    assert!(wrong.fitted.iter().all(|e| e.value.is_finite()));
+}
+
+/// The Hertz law: K_h (with c and K_r) from a trace; K_p only sets units there.
+#[test]
+fn hertz_trace_recovers_k_h() {
+    let t = truth();
+    let mut rng = Rng::new(9);
+    let tr = trace(
+        &t,
+        ContactLaw::Hertz,
+        0.5e-3,
+        0.5,
+        0.0,
+        500,
+        1.6e-5,
+        &mut rng,
+    );
+    let free = [Param::KH, Param::C, Param::KR];
+    let f = fit(&guess(&t), ContactLaw::Hertz, FitData::Trace(&tr), &free).unwrap();
+    eprintln!("{:#?} {}", f.fitted, f.rms_residual);
+    for (e, truth) in f.fitted.iter().zip([t.k_h, t.damping, t.k_r]) {
+        assert!(covers(e, truth), "{}: {e:?} vs {truth}", e.name);
+    }
+}

@@ -64,7 +64,7 @@ pub fn trace(
     dt: f64,
     rng: &mut Rng,
 ) -> Trace {
-    let r = simulate(p, law, &SolveOptions::default().with_samples(20_001)).unwrap();
+    let r = simulate(p, law, &SolveOptions::default().with_samples(4_001)).unwrap();
     let h = &r.history;
     let tf = *h.t.last().unwrap();
     let mut text = String::from("# synthetic\ntime_ms;force_N\n");

@@ -1,6 +1,6 @@
 //! The force–time problem: x = (ln p₁ … ln p_k, t0, b); the model force at a sample time t is
 //! b + F(t − t0), F from the solver's history (linear interpolation between samples spaced
-//! no wider than the data's, at least 1 000 over the pulse, by [`interpolate`]),
+//! no wider than the data's, at least 400 over the pulse, by [`interpolate`]),
 //! zero outside the contact.
 
 use super::lm::{Residuals, forward_jacobian};
@@ -61,11 +61,11 @@ impl<'a> TraceProblem<'a> {
         trace: &'a Trace,
         summary: TraceSummary,
     ) -> Self {
-        // at least 1 000 samples over the contact, and no fewer than the data have
+        // at least 400 samples over the contact, and no fewer than the data have
         let n = trace.time.len();
         let dt = (trace.time[n - 1] - trace.time[0]) / (n - 1) as f64;
         let width = summary.t_end - summary.t_start;
-        let samples = ((width / dt) as usize).clamp(1000, 20_000);
+        let samples = ((width / dt) as usize).clamp(400, 20_000);
         let log_step = if law == ContactLaw::Linear {
             1e-5
         } else {
