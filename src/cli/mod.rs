@@ -8,6 +8,10 @@
 pub mod ball;
 pub mod figure;
 pub mod fit;
+pub mod fit_multi;
+mod fit_plot;
+mod fit_save;
+pub mod measured_file;
 pub mod output;
 pub mod presets;
 pub mod reproduce;

@@ -1,0 +1,481 @@
+//! `bouncelab fit` on a COR table, a force–time trace or drop tests: several parameters with
+//! standard errors, 95 % intervals and correlations ([`crate::analysis::fit::fit`]); the
+//! report as text or JSON, and the `--plot` and `--save` that go with every fit.
+
+use super::ball::{Ball, param_message, solve_error};
+use super::fit::{FitArgs, FitFormat, Source};
+use super::measured_file as files;
+use super::output::{self, human, table};
+use crate::analysis::fit::{Estimate, FitData, MultiFit, MultiFitError, Param, fit};
+use crate::measured::{CorPoint, Drag, Trace, drop_to_cor};
+use crate::model::params::ImpactParams;
+use crate::solver::{SolveOptions, simulate};
+use serde::Serialize;
+use std::collections::BTreeMap;
+use std::io::Write;
+
+/// The data of a fit, loaded and labelled.
+pub struct Loaded {
+    /// "force-time trace", "COR table", "drop test", "COR".
+    pub kind: &'static str,
+    /// The file, or `None` for data given on the command line.
+    pub file: Option<String>,
+    /// The legend label: the file name, or what was typed.
+    pub label: String,
+    pub trace: Option<Trace>,
+    pub points: Vec<CorPoint>,
+    /// (drop, rebound) heights of drop tests.
+    pub drops: Vec<(f64, f64)>,
+    /// Line after the file's last, for errors about the whole file.
+    pub end_line: usize,
+}
+
+/// Refuse outputs that cannot be written, before any work.
+pub fn check_outputs(a: &FitArgs) -> anyhow::Result<()> {
+    if let Some(p) = &a.plot {
+        super::figure::check_writable(&[p.as_path()], a.force)?;
+    }
+    if let Some(name) = &a.save {
+        super::fit_save::check(name, a.force)?;
+    }
+    Ok(())
+}
+
+fn load(a: &FitArgs, source: &Source, ball: &Ball) -> anyhow::Result<Loaded> {
+    let drag = a.drag_coefficient.map(|cd| Drag {
+        coefficient: cd,
+        air_density: a.air_density,
+        radius: ball.measured.as_ref().map_or(f64::NAN, |m| m.radius),
+        mass: ball.params.mass,
+    });
+    if let Some(d) = &drag {
+        super::ball::check_positive("drag_coefficient", d.coefficient)?;
+        super::ball::check_positive("air_density", d.air_density)?;
+    }
+    let from_drops = |drops: Vec<(f64, f64, usize)>| -> Vec<CorPoint> {
+        drops
+            .iter()
+            .map(|&(h, r, line)| {
+                let (v0, cor) = drop_to_cor(h, r, drag.as_ref());
+                CorPoint {
+                    v0,
+                    cor,
+                    cor_sd: None,
+                    max_force: None,
+                    contact_time: None,
+                    line,
+                }
+            })
+            .collect()
+    };
+    let name = |p: &std::path::Path| Some(p.display().to_string());
+    Ok(match source {
+        Source::Trace(p) => {
+            let t = files::trace(p)?;
+            let end_line = t.end_line;
+            Loaded {
+                kind: "force-time trace",
+                file: name(p),
+                label: files::label(p),
+                trace: Some(t),
+                points: vec![],
+                drops: vec![],
+                end_line,
+            }
+        }
+        Source::CorTable(p) => {
+            let t = files::cor_table(p)?;
+            Loaded {
+                kind: "COR table",
+                file: name(p),
+                label: files::label(p),
+                trace: None,
+                points: t.points,
+                drops: vec![],
+                end_line: t.end_line,
+            }
+        }
+        Source::DropFile(p) => {
+            let t = files::drop_test(p)?;
+            let drops = t.drops.iter().map(|d| (d.0, d.1)).collect();
+            Loaded {
+                kind: "drop test",
+                file: name(p),
+                label: files::label(p),
+                trace: None,
+                points: from_drops(t.drops.clone()),
+                drops,
+                end_line: t.drops.last().map_or(1, |d| d.2 + 1),
+            }
+        }
+        Source::Drops(pairs) => {
+            for &(h, r) in pairs {
+                super::ball::check_positive("drop_height", h)?;
+                if !(0.0..=h).contains(&r) {
+                    anyhow::bail!(
+                        "invalid rebound_height: {r} (must lie in [0, the drop height {h}])"
+                    );
+                }
+            }
+            let drops: Vec<(f64, f64, usize)> = pairs.iter().map(|&(h, r)| (h, r, 0)).collect();
+            Loaded {
+                kind: "drop test",
+                file: None,
+                label: "drop tests".into(),
+                trace: None,
+                points: from_drops(drops),
+                drops: pairs.clone(),
+                end_line: 0,
+            }
+        }
+        Source::Cor(e) => {
+            if !(0.0..=1.0).contains(e) {
+                anyhow::bail!(
+                    "invalid cor: {} (a measured COR lies in [0, 1])",
+                    output::num(*e)
+                );
+            }
+            let pt = CorPoint {
+                v0: ball.params.v0,
+                cor: *e,
+                cor_sd: None,
+                max_force: None,
+                contact_time: None,
+                line: 0,
+            };
+            Loaded {
+                kind: "COR",
+                file: None,
+                label: format!("COR {}", output::num(*e)),
+                trace: None,
+                points: vec![pt],
+                drops: vec![],
+                end_line: 0,
+            }
+        }
+    })
+}
+
+/// A fit error for the user: where the data are at fault, the file and line.
+fn fit_error(e: MultiFitError, data: &Loaded, free: &[Param]) -> anyhow::Error {
+    let names: Vec<&str> = free.iter().map(|p| p.name()).collect();
+    let place = data
+        .file
+        .as_ref()
+        .map(|f| format!("{f}:{}:1: ", data.end_line))
+        .unwrap_or_default();
+    match e {
+        MultiFitError::Params(p) => anyhow::anyhow!(param_message(&p)),
+        MultiFitError::NoPulse(m) => {
+            anyhow::anyhow!("{}:{m}", data.file.clone().unwrap_or_default())
+        }
+        MultiFitError::TooFew { points, parameters } => anyhow::anyhow!(
+            "{place}{points} data points, fewer than the {parameters} parameters fitted \
+             (--free {}{})",
+            names.join(","),
+            if data.trace.is_some() {
+                ", with the contact start and the baseline"
+            } else {
+                ""
+            }
+        ),
+        MultiFitError::NoAnswer => super::Runtime(anyhow::anyhow!("{e}")).into(),
+        e => anyhow::anyhow!("{e}"),
+    }
+}
+
+pub fn run(
+    a: &FitArgs,
+    source: &Source,
+    free: Option<Vec<Param>>,
+    out: &mut dyn Write,
+) -> anyhow::Result<()> {
+    check_outputs(a)?;
+    let ball = a.ball.resolve(a.v0)?;
+    let data = load(a, source, &ball)?;
+    let free =
+        free.unwrap_or_else(|| Param::defaults(data.trace.is_some(), data.points.len(), ball.law));
+    let input = match &data.trace {
+        Some(t) => FitData::Trace(t),
+        None => FitData::Cor(&data.points),
+    };
+    let f = fit(&ball.params, ball.law, input, &free).map_err(|e| fit_error(e, &data, &free))?;
+    // the data's speed: the trace's (the ball's v0), else the first row's
+    let v0 = data.points.first().map_or(ball.params.v0, |p| p.v0);
+    let fitted = ImpactParams { v0, ..f.params };
+    let r = simulate(&fitted, ball.law, &SolveOptions::default()).map_err(solve_error)?;
+    let report = report(&ball, &data, &f, &fitted, &r);
+    match a.format {
+        FitFormat::Json => output::json(out, &report)?,
+        FitFormat::Text => text(out, &ball, &data, &f, &report)?,
+    }
+    if let Some(p) = &a.plot {
+        let svg = super::fit_plot::svg(&ball, &data, &f, &fitted)?;
+        super::figure::write_file(p, &svg, a.force)?;
+        note(a, out, &format!("plot: {}", p.display()))?;
+    }
+    if let Some(name) = &a.save {
+        let path = super::fit_save::save(name, a, &ball, &data, &f, &fitted)?;
+        note(
+            a,
+            out,
+            &format!("saved preset '{name}' to {}", path.display()),
+        )?;
+    }
+    Ok(())
+}
+
+/// Outputs written besides the report: on stdout after a text report, on stderr after JSON
+/// (stdout stays one JSON document).
+fn note(a: &FitArgs, out: &mut dyn Write, line: &str) -> anyhow::Result<()> {
+    match a.format {
+        FitFormat::Text => writeln!(out, "{line}")?,
+        FitFormat::Json => eprintln!("bouncelab: {line}"),
+    }
+    Ok(())
+}
+
+/// `--plot` and `--save` after the single-COR fit.
+pub fn single_extras(
+    a: &FitArgs,
+    ball: &Ball,
+    fitted: &ImpactParams,
+    cor: f64,
+    out: &mut dyn Write,
+) -> anyhow::Result<()> {
+    if a.plot.is_none() && a.save.is_none() {
+        return Ok(());
+    }
+    let data = load(a, &Source::Cor(cor), ball)?;
+    let f = fit(fitted, ball.law, FitData::Cor(&data.points), &[Param::KR])
+        .map_err(|e| fit_error(e, &data, &[Param::KR]))?;
+    if let Some(p) = &a.plot {
+        let svg = super::fit_plot::svg(ball, &data, &f, fitted)?;
+        super::figure::write_file(p, &svg, a.force)?;
+        note(a, out, &format!("plot: {}", p.display()))?;
+    }
+    if let Some(name) = &a.save {
+        let path = super::fit_save::save(name, a, ball, &data, &f, fitted)?;
+        note(
+            a,
+            out,
+            &format!("saved preset '{name}' to {}", path.display()),
+        )?;
+    }
+    Ok(())
+}
+
+#[derive(Serialize)]
+struct Report<'a> {
+    preset: Option<&'a str>,
+    origin: &'a str,
+    parameters: &'a str,
+    law: &'static str,
+    data: &'static str,
+    file: Option<&'a str>,
+    free: Vec<&'static str>,
+    k_p: f64,
+    c: f64,
+    k_r: f64,
+    z_p: f64,
+    k_h: f64,
+    lambda: f64,
+    zeta: f64,
+    rms_residual: f64,
+    points: usize,
+    converged: bool,
+    iterations: usize,
+    condition_number: f64,
+    fitted: BTreeMap<&'static str, &'a Estimate>,
+    correlation: BTreeMap<&'static str, BTreeMap<&'static str, f64>>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    time_offset: Option<f64>,
+    #[serde(skip_serializing_if = "BTreeMap::is_empty")]
+    nuisance: BTreeMap<&'static str, &'a Estimate>,
+    v0: f64,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    target_cor: Option<f64>,
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    drops: Vec<DropRow>,
+    cor: f64,
+    max_force: f64,
+    contact_time: Option<f64>,
+    warnings: &'a [String],
+}
+
+#[derive(Serialize)]
+struct DropRow {
+    drop_height: f64,
+    rebound_height: f64,
+    v0: f64,
+    cor: f64,
+}
+
+fn report<'a>(
+    ball: &'a Ball,
+    data: &'a Loaded,
+    f: &'a MultiFit,
+    p: &ImpactParams,
+    r: &crate::ImpactResponse,
+) -> Report<'a> {
+    let n = p.normalized();
+    let correlation = f
+        .names
+        .iter()
+        .enumerate()
+        .map(|(i, a)| {
+            (
+                *a,
+                f.names
+                    .iter()
+                    .enumerate()
+                    .map(|(j, b)| (*b, f.correlation[i][j]))
+                    .collect(),
+            )
+        })
+        .collect();
+    let nuisance = f
+        .time_offset
+        .iter()
+        .chain(&f.baseline)
+        .map(|e| (e.name, e))
+        .collect();
+    Report {
+        preset: ball.name.as_deref(),
+        origin: &ball.origin,
+        parameters: ball.source,
+        law: ball.law.name(),
+        data: data.kind,
+        file: data.file.as_deref(),
+        free: f.fitted.iter().map(|e| e.name).collect(),
+        k_p: p.k_p,
+        c: p.damping,
+        k_r: p.k_r,
+        z_p: p.z_p,
+        k_h: p.k_h,
+        lambda: n.lambda,
+        zeta: n.zeta,
+        rms_residual: f.rms_residual,
+        points: f.points,
+        converged: f.converged,
+        iterations: f.iterations,
+        condition_number: f.condition,
+        fitted: f.fitted.iter().map(|e| (e.name, e)).collect(),
+        correlation,
+        time_offset: f.time_offset.as_ref().map(|e| e.value),
+        nuisance,
+        v0: p.v0,
+        target_cor: (data.kind != "COR table" && data.trace.is_none()).then(|| data.points[0].cor),
+        drops: data
+            .drops
+            .iter()
+            .zip(&data.points)
+            .map(|(&(h, r), q)| DropRow {
+                drop_height: h,
+                rebound_height: r,
+                v0: q.v0,
+                cor: q.cor,
+            })
+            .collect(),
+        cor: r.cor,
+        max_force: r.max_force,
+        contact_time: r.contact_time,
+        warnings: &f.warnings,
+    }
+}
+
+fn interval(e: &Estimate) -> String {
+    format!("{} … {}", human(e.ci95[0], 4), human(e.ci95[1], 4))
+}
+
+fn text(
+    out: &mut dyn Write,
+    ball: &Ball,
+    data: &Loaded,
+    f: &MultiFit,
+    r: &Report,
+) -> anyhow::Result<()> {
+    writeln!(out, "{}, {} law", ball.label(), r.law)?;
+    let what = match &data.file {
+        Some(file) => format!("the {} {file}", data.kind),
+        None => format!("the {} given", data.kind),
+    };
+    let free: Vec<&str> = r.free.clone();
+    writeln!(
+        out,
+        "fitting {} to {what} ({} points); the rest of the ball held",
+        free.join(", "),
+        f.points
+    )?;
+    writeln!(out)?;
+    let mut rows = vec![vec![
+        "".into(),
+        "value".into(),
+        "std. error".into(),
+        "95 % interval".into(),
+        "unit".into(),
+    ]];
+    for e in f.fitted.iter().chain(&f.time_offset).chain(&f.baseline) {
+        rows.push(vec![
+            e.name.into(),
+            human(e.value, 5),
+            human(e.std_error, 3),
+            interval(e),
+            e.unit.into(),
+        ]);
+    }
+    table(out, "  ", &rows)?;
+    writeln!(out)?;
+    writeln!(out, "  correlation")?;
+    let mut rows = vec![
+        std::iter::once(String::new())
+            .chain(f.names.iter().map(|s| s.to_string()))
+            .collect::<Vec<_>>(),
+    ];
+    for (i, a) in f.names.iter().enumerate() {
+        rows.push(
+            std::iter::once(a.to_string())
+                .chain(f.correlation[i].iter().map(|c| format!("{c:+.3}")))
+                .collect(),
+        );
+    }
+    table(out, "  ", &rows)?;
+    writeln!(out)?;
+    let unit = if data.trace.is_some() { " N" } else { " (COR)" };
+    let rows = vec![
+        vec![
+            "λ = K_r/K_p, ζ".into(),
+            format!("{}, {}", human(r.lambda, 4), human(r.zeta, 4)),
+        ],
+        vec![
+            "rms residual".into(),
+            format!("{}{unit}", human(r.rms_residual, 4)),
+        ],
+        vec![
+            "iterations".into(),
+            format!(
+                "{}{}",
+                r.iterations,
+                if r.converged {
+                    ", converged"
+                } else {
+                    ", NOT converged"
+                }
+            ),
+        ],
+        vec![
+            format!("model at v0 = {} m/s", human(r.v0, 4)),
+            format!(
+                "COR {}, peak force {} N, contact time {} ms",
+                human(r.cor, 4),
+                human(r.max_force, 4),
+                r.contact_time.map_or("–".into(), |t| human(t * 1e3, 4))
+            ),
+        ],
+    ];
+    table(out, "  ", &rows)?;
+    for w in &f.warnings {
+        writeln!(out, "warning: {w}")?;
+    }
+    Ok(())
+}
