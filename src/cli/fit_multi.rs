@@ -385,7 +385,11 @@ fn report<'a>(
 }
 
 fn interval(e: &Estimate) -> String {
-    format!("{} … {}", human(e.ci95[0], 4), human(e.ci95[1], 4))
+    if e.ci95.iter().all(|v| v.is_finite()) {
+        format!("{} … {}", human(e.ci95[0], 4), human(e.ci95[1], 4))
+    } else {
+        "not pinned by the data".into()
+    }
 }
 
 fn text(
@@ -435,7 +439,13 @@ fn text(
     for (i, a) in f.names.iter().enumerate() {
         rows.push(
             std::iter::once(a.to_string())
-                .chain(f.correlation[i].iter().map(|c| format!("{c:+.3}")))
+                .chain(f.correlation[i].iter().map(|c| {
+                    if c.is_finite() {
+                        format!("{c:+.3}")
+                    } else {
+                        "–".into()
+                    }
+                }))
                 .collect(),
         );
     }
