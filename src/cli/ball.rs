@@ -47,9 +47,9 @@ impl From<SourceArg> for ParamSource {
 /// Which preset, and what to change about it.
 #[derive(Debug, Clone, Default, Args)]
 pub struct BallArgs {
-    /// Preset by name, embedded or user [default: superball]
-    #[arg(long, value_name = "NAME", conflicts_with = "config")]
-    pub preset: Option<String>,
+    /// Preset by name, embedded or user [default: superball]; `figure` takes several
+    #[arg(long, value_name = "NAME", conflicts_with = "config", action = clap::ArgAction::Append)]
+    pub preset: Vec<String>,
     /// Preset from a TOML file (same schema as the embedded presets)
     #[arg(long, value_name = "FILE")]
     pub config: Option<PathBuf>,
@@ -59,6 +59,55 @@ pub struct BallArgs {
     /// Contact law [default: the preset's `law` field]
     #[arg(long, value_enum)]
     pub law: Option<LawArg>,
+    #[command(flatten)]
+    pub set: Overrides,
+}
+
+/// Parameters set on the command line over the preset's, so that a fitted ball can be tried
+/// without editing TOML. K_h follows K_p and z_p (Eq. 16) when either is set.
+#[derive(Debug, Clone, Default, Args)]
+pub struct Overrides {
+    /// Contact stiffness K_p, N/m [default: the preset's]
+    #[arg(long = "k-p", value_name = "N/m")]
+    pub k_p: Option<f64>,
+    /// Dashpot c, kg/s [default: the preset's]
+    #[arg(long, value_name = "kg/s")]
+    pub damping: Option<f64>,
+    /// Recoil spring K_r, N/m [default: the preset's]
+    #[arg(long = "k-r", value_name = "N/m")]
+    pub k_r: Option<f64>,
+    /// Flattening threshold z_p, m [default: the preset's]
+    #[arg(long = "z-p", value_name = "m")]
+    pub z_p: Option<f64>,
+}
+
+impl Overrides {
+    pub fn any(&self) -> bool {
+        self.k_p.is_some() || self.damping.is_some() || self.k_r.is_some() || self.z_p.is_some()
+    }
+
+    /// The given values set on `params`; each checked, named by its field.
+    pub fn apply(&self, params: &mut ImpactParams) -> anyhow::Result<()> {
+        use crate::analysis::fit::{Param, apply};
+        let given = [
+            (Param::KP, "k_p", self.k_p),
+            (Param::C, "damping", self.damping),
+            (Param::KR, "k_r", self.k_r),
+            (Param::ZP, "z_p", self.z_p),
+        ];
+        let mut free = Vec::new();
+        let mut values = Vec::new();
+        for (p, field, v) in given {
+            if let Some(v) = v {
+                crate::model::params::check_positive(field, v)
+                    .map_err(|e| anyhow::anyhow!(param_message(&e)))?;
+                free.push(p);
+                values.push(v);
+            }
+        }
+        *params = apply(params, &free, &values);
+        Ok(())
+    }
 }
 
 /// A ball ready to simulate.
@@ -111,18 +160,32 @@ pub fn select(preset: Option<&str>, config: Option<&Path>) -> anyhow::Result<Ent
 }
 
 impl BallArgs {
+    /// The one preset asked for (`None`: the default); only `figure` takes several.
+    pub fn preset(&self) -> anyhow::Result<Option<&str>> {
+        match self.preset.as_slice() {
+            [] => Ok(None),
+            [one] => Ok(Some(one)),
+            [first, ..] => anyhow::bail!(
+                "--preset given {} times: this command runs one ball ({first})",
+                self.preset.len()
+            ),
+        }
+    }
+
     /// The preset ball with `--params`, `--law`, `--v0` applied and every parameter checked.
     pub fn resolve(&self, v0: Option<f64>) -> anyhow::Result<Ball> {
-        let entry = select(self.preset.as_deref(), self.config.as_deref())?;
+        let entry = select(self.preset()?, self.config.as_deref())?;
         let p = &entry.preset;
         let source = self.params.map_or(p.parameters, ParamSource::from);
         let mut params = p.params_from(source);
         if let Some(v0) = v0 {
             params.v0 = v0;
         }
+        self.set.apply(&mut params)?;
         params.validate().map_err(|e| {
-            // a bad v0 comes from the command line; anything else from the preset's set
-            if e.field == "v0" && v0.is_some() {
+            // a bad v0 or an overridden value comes from the command line; anything else from
+            // the preset's set
+            if (e.field == "v0" && v0.is_some()) || self.set.any() {
                 anyhow::anyhow!(param_message(&e))
             } else {
                 anyhow::anyhow!(
@@ -180,6 +243,21 @@ pub fn set_lambda_zeta(
             None => anyhow::anyhow!(param_message(&e)),
         }
     })
+}
+
+/// `--k-r` with `--lambda`, or `--damping` with `--zeta`, set one parameter twice.
+pub fn check_overrides(
+    set: &Overrides,
+    lambda: Option<f64>,
+    zeta: Option<f64>,
+) -> anyhow::Result<()> {
+    if set.k_r.is_some() && lambda.is_some() {
+        anyhow::bail!("--k-r and --lambda both set K_r: give one of them");
+    }
+    if set.damping.is_some() && zeta.is_some() {
+        anyhow::bail!("--damping and --zeta both set c: give one of them");
+    }
+    Ok(())
 }
 
 /// The normalized ball: m = K_p = v0 = 1; `zp_bar` = ∞ for no flattening.

@@ -1,8 +1,10 @@
-//! `bouncelab figure NAME --out FILE.svg [--data FILE.csv]`: one of the paper's figures as
-//! SVG, and its plotted series as CSV. The figures themselves are built in
+//! `bouncelab figure NAME --out FILE.svg [--csv-out FILE.csv] [--measured FILE]…
+//! [--preset NAME]…`: one of the paper's figures as SVG, and its plotted series as CSV, with
+//! measured data and further balls drawn on it ([`super::figure_overlay`]). The figures themselves are built in
 //! [`crate::figure::paper`]; this file reads the options, solves, and writes the files.
 
 use super::ball::{self, BallArgs, check_positive, param_message};
+use super::figure_overlay as overlay;
 use crate::analysis::sweep::{cor_vs_velocity, cor_vs_zeta, lin_space, log_space};
 use crate::figure::{Figure, csv, paper, svg};
 use crate::model::contact::ContactLaw;
@@ -60,15 +62,26 @@ pub struct FigureArgs {
     pub out: PathBuf,
     /// Also write the plotted series as CSV (SI units; see docs/figures.md)
     #[arg(long, value_name = "FILE.csv")]
+    pub csv_out: Option<PathBuf>,
+    /// Renamed --csv-out (an output, easily mistaken for an input): refused
+    #[arg(long, value_name = "FILE", hide = true)]
     pub data: Option<PathBuf>,
+    /// Measured data to draw on the figure (force–time trace, COR table or drop test; CSV);
+    /// repeatable, each labelled by its file name
+    #[arg(long, value_name = "FILE")]
+    pub measured: Vec<PathBuf>,
     /// Overwrite existing files
     #[arg(long)]
     pub force: bool,
     #[command(flatten)]
     pub ball: BallArgs,
-    /// λ of the model curves, comma-separated (cor-zeta, force-zeta) [default: 0,0.4,1]
+    /// λ of the model curves, comma-separated (cor-zeta, force-zeta) [default: 0,0.4,1]; for
+    /// the figures of one ball, its λ (changes K_r)
     #[arg(long, value_name = "L,L,...", value_delimiter = ',')]
     pub lambda: Option<Vec<f64>>,
+    /// ζ of the ball (changes c; cor-velocity, force-time, force-displacement)
+    #[arg(long, value_name = "Z")]
+    pub zeta: Option<f64>,
     /// Impact speed v0, m/s (force-time, force-displacement) [default: the preset's v0]
     #[arg(long, value_name = "V")]
     pub v0: Option<f64>,
@@ -86,8 +99,37 @@ pub struct FigureArgs {
 /// Options that only some figures take: naming the misplaced one beats ignoring it.
 fn check_applicable(a: &FigureArgs) -> anyhow::Result<()> {
     use FigureName::*;
+    if let Some(d) = &a.data {
+        anyhow::bail!(
+            "--data {} is refused: it is now --csv-out, the plotted series written as CSV (to \
+             draw measured data on the figure, use --measured FILE)",
+            d.display()
+        );
+    }
+    let one_lambda = a.lambda.as_ref().is_some_and(|l| l.len() == 1);
+    let lambda_for: &[FigureName] = if one_lambda {
+        &[
+            CorZeta,
+            ForceZeta,
+            CorVelocity,
+            ForceTime,
+            ForceDisplacement,
+        ]
+    } else {
+        &[CorZeta, ForceZeta]
+    };
     let given = [
-        ("--lambda", a.lambda.is_some(), &[CorZeta, ForceZeta][..]),
+        ("--lambda", a.lambda.is_some(), lambda_for),
+        (
+            "--zeta",
+            a.zeta.is_some(),
+            &[CorVelocity, ForceTime, ForceDisplacement][..],
+        ),
+        (
+            "--measured",
+            !a.measured.is_empty(),
+            &[CorVelocity, ForceTime, ForceDisplacement][..],
+        ),
         ("--v0", a.v0.is_some(), &[ForceTime, ForceDisplacement][..]),
         ("--from", a.from.is_some(), &[CorVelocity][..]),
         ("--to", a.to.is_some(), &[CorVelocity][..]),
@@ -121,7 +163,7 @@ pub fn check_writable(paths: &[&Path], force: bool) -> anyhow::Result<()> {
     for (i, p) in paths.iter().enumerate() {
         if paths[..i].iter().any(|q| same(q, p)) {
             anyhow::bail!(
-                "{} is given twice: --out and --data must differ",
+                "{} is given twice: --out and --csv-out must differ",
                 p.display()
             );
         }
@@ -250,6 +292,48 @@ pub fn history_figures(b: &paper::Ball, samples: usize) -> anyhow::Result<(Figur
     Ok((paper::force_time(b, &r), paper::force_displacement(b, &r)))
 }
 
+/// The balls `figure` draws: one per `--preset` (or the `--config` file, or the default),
+/// each with the overrides, λ and ζ applied.
+fn balls(a: &FigureArgs, v0: Option<f64>) -> anyhow::Result<Vec<(paper::Ball, String)>> {
+    let lambda = a.lambda.as_ref().filter(|l| l.len() == 1).map(|l| l[0]);
+    ball::check_overrides(&a.ball.set, lambda, a.zeta)?;
+    let names: Vec<Vec<String>> = if a.ball.preset.len() > 1 {
+        a.ball.preset.iter().map(|n| vec![n.clone()]).collect()
+    } else {
+        vec![a.ball.preset.clone()]
+    };
+    names
+        .into_iter()
+        .map(|preset| {
+            let args = BallArgs {
+                preset,
+                ..a.ball.clone()
+            };
+            let mut b = args.resolve(v0)?;
+            ball::set_lambda_zeta(&mut b.params, lambda, a.zeta)?;
+            Ok((chart_ball(&b), b.origin))
+        })
+        .collect()
+}
+
+/// One figure per ball, merged into the first.
+fn per_ball(
+    a: &FigureArgs,
+    v0: Option<f64>,
+    one: impl Fn(&paper::Ball) -> anyhow::Result<Figure>,
+) -> anyhow::Result<Figure> {
+    let mut fig: Option<Figure> = None;
+    for (i, (b, origin)) in balls(a, v0)?.into_iter().enumerate() {
+        let mut f = one(&b)?;
+        overlay::relabel_user(&mut f, &origin);
+        match &mut fig {
+            None => fig = Some(f),
+            Some(first) => overlay::merge_ball(first, f, &b.name, i),
+        }
+    }
+    fig.ok_or_else(|| anyhow::anyhow!("no ball to draw"))
+}
+
 fn build(a: &FigureArgs) -> anyhow::Result<Figure> {
     use FigureName::*;
     match a.name {
@@ -260,11 +344,12 @@ fn build(a: &FigureArgs) -> anyhow::Result<Figure> {
                 .iter()
                 .map(|p| embedded_ball(p, source, law))
                 .collect();
-            // a user's ball joins the three of the paper
-            if a.ball.preset.is_some() || a.ball.config.is_some() {
-                let b = chart_ball(&a.ball.resolve(None)?);
-                if !balls.iter().any(|x| x.name == b.name) {
-                    balls.push(b);
+            // a user's balls join the three of the paper
+            if !a.ball.preset.is_empty() || a.ball.config.is_some() {
+                for (b, _) in self::balls(a, None)? {
+                    if !balls.iter().any(|x| x.name == b.name) {
+                        balls.push(b);
+                    }
                 }
             }
             let lambdas = a.lambda.clone().unwrap_or_else(|| vec![0.0, 0.4, 1.0]);
@@ -275,28 +360,46 @@ fn build(a: &FigureArgs) -> anyhow::Result<Figure> {
             let (cor, force) = zeta_figures(&lambdas, points, law, &balls)?;
             Ok(if a.name == CorZeta { cor } else { force })
         }
-        CorVelocity => {
-            let b = chart_ball(&a.ball.resolve(None)?);
-            velocity_figure(&b, a.from, a.to, a.points.unwrap_or(VELOCITY_POINTS))
-        }
-        ForceTime | ForceDisplacement => {
-            let b = chart_ball(&a.ball.resolve(a.v0)?);
-            let (t, d) = history_figures(&b, a.points.unwrap_or(HISTORY_SAMPLES))?;
+        CorVelocity => per_ball(a, None, |b| {
+            velocity_figure(b, a.from, a.to, a.points.unwrap_or(VELOCITY_POINTS))
+        }),
+        ForceTime | ForceDisplacement => per_ball(a, a.v0, |b| {
+            let (t, d) = history_figures(b, a.points.unwrap_or(HISTORY_SAMPLES))?;
             Ok(if a.name == ForceTime { t } else { d })
-        }
+        }),
     }
+}
+
+/// `build`, with the `--measured` files drawn on it (against the first ball's m and v0).
+fn build_all(a: &FigureArgs) -> anyhow::Result<Figure> {
+    // the files are read before any solving: a bad file fails fast
+    for path in &a.measured {
+        super::measured_file::any(path)?;
+    }
+    let mut fig = build(a)?;
+    if !a.measured.is_empty() {
+        let first = &balls(a, a.v0)?[0].0;
+        overlay::add_measured(
+            &mut fig,
+            a.name,
+            &a.measured,
+            first.params.mass,
+            first.params.v0,
+        )?;
+    }
+    Ok(fig)
 }
 
 pub fn run(a: &FigureArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     check_applicable(a)?;
     let mut paths = vec![a.out.as_path()];
-    paths.extend(a.data.as_deref());
+    paths.extend(a.csv_out.as_deref());
     check_writable(&paths, a.force)?;
-    let fig = build(a)?;
+    let fig = build_all(a)?;
     let picture = svg::render(&fig).map_err(|e| super::Runtime(e.into()))?;
     write_file(&a.out, &picture, a.force)?;
     writeln!(out, "{}", a.out.display())?;
-    if let Some(d) = &a.data {
+    if let Some(d) = &a.csv_out {
         write_file(d, &csv::to_string(&fig), a.force)?;
         writeln!(out, "{}", d.display())?;
     }

@@ -151,7 +151,7 @@ pub fn save(
     f: &MultiFit,
     p: &ImpactParams,
 ) -> anyhow::Result<PathBuf> {
-    let base = super::ball::select(a.ball.preset.as_deref(), a.ball.config.as_deref())?.preset;
+    let base = super::ball::select(a.ball.preset()?, a.ball.config.as_deref())?.preset;
     let when = now_utc();
     let preset = preset(&base, name, ball, data, p, &when);
     let text = preset.to_toml(&header(ball, data, f, &when));

@@ -7,6 +7,7 @@
 
 pub mod ball;
 pub mod figure;
+mod figure_overlay;
 pub mod fit;
 pub mod fit_multi;
 mod fit_plot;
@@ -220,10 +221,10 @@ fn merge(
     if preset.is_none() && config.is_none() {
         return Ok(());
     }
-    if ball.preset.is_some() || ball.config.is_some() {
+    if !ball.preset.is_empty() || ball.config.is_some() {
         anyhow::bail!("--preset/--config given both before and after the subcommand");
     }
-    ball.preset.clone_from(preset);
+    ball.preset = preset.iter().cloned().collect();
     ball.config.clone_from(config);
     Ok(())
 }
