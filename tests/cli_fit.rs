@@ -28,8 +28,7 @@ fn write_trace(dir: &Path) -> bouncelab::ImpactParams {
         1.1e-3,
         1.0,
         0.5,
-        800,
-        1e-5,
+        (800, 1e-5),
         &mut rng,
     );
     let mut text = String::from("# made by the solver\ntime_us,force_N\n");

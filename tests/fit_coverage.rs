@@ -64,8 +64,7 @@ fn force_time_intervals_cover_the_truth() {
             offset,
             1.0,
             0.0,
-            400,
-            2e-5,
+            (400, 2e-5),
             &mut rng,
         );
         let f = fit(&guess(&t), ContactLaw::Linear, FitData::Trace(&tr), &free).unwrap();

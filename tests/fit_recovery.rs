@@ -22,8 +22,7 @@ fn force_time_trace_with_noise_and_offset() {
         offset,
         1.0,
         0.3,
-        2000,
-        5e-6,
+        (2000, 5e-6),
         &mut rng,
     );
     let free = [Param::KP, Param::C, Param::KR];
@@ -143,8 +142,7 @@ fn another_law_fits_worse_and_does_not_crash() {
         0.8e-3,
         0.5,
         0.0,
-        500,
-        1.6e-5,
+        (500, 1.6e-5),
         &mut rng,
     );
     let free = [Param::KP, Param::C, Param::KR];
@@ -177,8 +175,7 @@ fn hertz_trace_recovers_k_h() {
         0.5e-3,
         0.5,
         0.0,
-        500,
-        1.6e-5,
+        (500, 1.6e-5),
         &mut rng,
     );
     let free = [Param::KH, Param::C, Param::KR];

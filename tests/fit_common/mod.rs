@@ -52,7 +52,7 @@ pub fn guess(t: &ImpactParams) -> ImpactParams {
     }
 }
 
-/// A recorder's trace: `n` samples `dt` apart from t = −1.7 ms, the contact starting at
+/// A recorder's trace: `grid` = (n, dt), n samples dt apart from t = −1.7 ms, the contact starting at
 /// `offset` (s), Gaussian noise of `sd` newtons on a `baseline`.
 pub fn trace(
     p: &ImpactParams,
@@ -60,10 +60,10 @@ pub fn trace(
     offset: f64,
     sd: f64,
     baseline: f64,
-    n: usize,
-    dt: f64,
+    grid: (usize, f64),
     rng: &mut Rng,
 ) -> Trace {
+    let (n, dt) = grid;
     let r = simulate(p, law, &SolveOptions::default().with_samples(4_001)).unwrap();
     let h = &r.history;
     let tf = *h.t.last().unwrap();

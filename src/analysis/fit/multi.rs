@@ -211,12 +211,6 @@ fn best<P: Residuals>(
             continue;
         };
         iterations += s.iterations;
-        if std::env::var_os("FIT_DEBUG").is_some() {
-            eprintln!(
-                "start {:?} -> {:?} cost {} it {} conv {}",
-                x0, s.x, s.cost, s.iterations, s.converged
-            );
-        }
         let same = best.as_ref().is_some_and(|b| {
             b.converged
                 && (s.cost - b.cost).abs() <= (1e-9 * b.cost).max(1e-3 * variance(b))

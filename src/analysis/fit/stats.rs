@@ -35,8 +35,8 @@ pub fn uncertainty(jac: &DMatrix<f64>, residuals: &[f64]) -> Uncertainty {
     // not their units
     let norms: Vec<f64> = (0..p).map(|j| jac.column(j).norm().max(1e-300)).collect();
     let mut scaled = jac.clone();
-    for j in 0..p {
-        scaled.column_mut(j).scale_mut(1.0 / norms[j]);
+    for (j, norm) in norms.iter().enumerate() {
+        scaled.column_mut(j).scale_mut(1.0 / norm);
     }
     let svd = scaled.clone().svd(false, true);
     let sv = &svd.singular_values;
