@@ -11,6 +11,7 @@ mod figure_overlay;
 pub mod fit;
 pub mod fit_multi;
 mod fit_plot;
+mod fit_report;
 mod fit_save;
 pub mod measured_file;
 pub mod output;
