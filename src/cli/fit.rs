@@ -58,8 +58,8 @@ pub struct FitArgs {
     #[arg(long, value_name = "V")]
     pub v0: Option<f64>,
     /// Parameters to fit, comma-separated, from k_p, c, k_r, z_p, k_h [default: k_p,c,k_r
-    /// for a trace (k_h,c,k_r for the Hertz law), k_r,z_p for a COR table or several drops,
-    /// k_r for one COR]
+    /// for a trace (k_h,c,k_r for the Hertz law), k_r,z_p for a COR table or drop tests of
+    /// three points or more, k_r for fewer]
     #[arg(long, value_name = "P,P,...", value_delimiter = ',')]
     pub free: Option<Vec<String>>,
     /// Save the fitted ball as the user preset NAME (never overwriting one without --force)

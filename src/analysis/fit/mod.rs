@@ -74,13 +74,14 @@ impl Param {
     }
 
     /// The defaults of the issue: a trace pins the three springs and the dashpot (K_h in
-    /// place of K_p for the Hertz law, where K_p only sets units); a COR table pins K_r and
-    /// z_p (flattening makes e fall with speed); one COR pins K_r alone.
+    /// place of K_p for the Hertz law, where K_p only sets units); a COR table of three
+    /// points or more pins K_r and z_p (flattening makes e fall with speed), leaving a degree
+    /// of freedom for the uncertainty; fewer pin K_r alone.
     pub fn defaults(trace: bool, points: usize, law: ContactLaw) -> Vec<Param> {
         match (trace, law) {
             (true, ContactLaw::Hertz) => vec![Param::KH, Param::C, Param::KR],
             (true, _) => vec![Param::KP, Param::C, Param::KR],
-            (false, _) if points >= 2 => vec![Param::KR, Param::ZP],
+            (false, _) if points >= 3 => vec![Param::KR, Param::ZP],
             (false, _) => vec![Param::KR],
         }
     }
