@@ -270,3 +270,77 @@ fn single_cor_keeps_its_output_and_free_is_checked() {
     );
     bad(&["fit", "--drop-height", "1"], &["--rebound-height"]);
 }
+
+#[test]
+fn overrides_on_run_sweep_and_figure() {
+    let v = json(&[
+        "run",
+        "--k-p",
+        "6e4",
+        "--damping",
+        "80",
+        "--k-r",
+        "5e4",
+        "--z-p",
+        "0.005",
+        "--format",
+        "json",
+    ]);
+    assert_eq!(
+        (f(&v, "k_p"), f(&v, "c"), f(&v, "k_r"), f(&v, "z_p")),
+        (6e4, 80.0, 5e4, 0.005)
+    );
+    // K_h follows Eq. 16 from the new K_p and z_p
+    assert!((f(&v, "k_h") - 6e4 / (1.5 * 0.005f64.sqrt())).abs() < 1e-6);
+    let v = json(&["run", "--k-p", "6e4", "--lambda", "2", "--format", "json"]);
+    assert_eq!(f(&v, "k_r"), 1.2e5);
+    bad(
+        &["run", "--k-r", "5e4", "--lambda", "1"],
+        &["--k-r and --lambda both set K_r"],
+    );
+    bad(&["run", "--k-p", "-1"], &["invalid k_p: -1"]);
+    bad(
+        &["run", "--normalized", "--damping", "3"],
+        &["--normalized", "do not apply"],
+    );
+    let csv = ok(&[
+        "sweep", "velocity", "--k-r", "5e4", "--zeta", "0.3", "--points", "2",
+    ]);
+    assert_eq!(csv.lines().count(), 3, "{csv}");
+    let dir = tempfile::tempdir().unwrap();
+    ok_at(
+        dir.path(),
+        &[
+            "figure",
+            "force-time",
+            "--k-p",
+            "7e4",
+            "--zeta",
+            "0.2",
+            "--out",
+            "f.svg",
+        ],
+    );
+    ok_at(
+        dir.path(),
+        &[
+            "figure",
+            "cor-velocity",
+            "--preset",
+            "golf",
+            "--preset",
+            "baseball",
+            "--out",
+            "g.svg",
+        ],
+    );
+    let svg = std::fs::read_to_string(dir.path().join("g.svg")).unwrap();
+    assert!(
+        svg.contains("golf, baseball") && svg.contains("baseball model"),
+        "two balls on one figure"
+    );
+    bad(
+        &["run", "--preset", "golf", "--preset", "baseball"],
+        &["--preset given 2 times"],
+    );
+}

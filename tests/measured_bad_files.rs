@@ -184,3 +184,66 @@ fn fifo(dir: &Path) {
 
 #[cfg(not(unix))]
 fn fifo(_: &Path) {}
+
+#[test]
+fn a_negative_pulse_and_too_many_rows() {
+    let neg: String = std::iter::once("t,F\n".to_string())
+        .chain((0..60).map(|i| {
+            let f = if (20..40).contains(&i) { -50.0 } else { 0.0 };
+            format!("{},{f}\n", i as f64 * 1e-5)
+        }))
+        .collect();
+    bad_trace(&neg, &["empty pulse", "the pulse is negative"]);
+    let many: String = std::iter::once("v0,cor\n".to_string())
+        .chain((0..10_001).map(|i| format!("{},0.5\n", 1.0 + i as f64 * 1e-4)))
+        .collect();
+    let (o, _d) = fit_file("cor.csv", &many, "--cor-table", &[]);
+    assert_bad(&o, &["cor.csv:10002:1: more than 10000 rows"]);
+}
+
+#[test]
+fn figure_measured_files_are_checked_before_anything_is_written() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("bad.csv"), "time_s,force_N\n0,x\n").unwrap();
+    std::fs::write(dir.path().join("cor.csv"), "v0,cor\n1,0.7\n").unwrap();
+    let o = bl_at(
+        dir.path(),
+        &[
+            "figure",
+            "force-time",
+            "--out",
+            "f.svg",
+            "--measured",
+            "bad.csv",
+        ],
+    );
+    assert_bad(&o, &["bad.csv:2:3: force 'x' is not a number"]);
+    let o = bl_at(
+        dir.path(),
+        &[
+            "figure",
+            "force-time",
+            "--out",
+            "f.svg",
+            "--measured",
+            "cor.csv",
+        ],
+    );
+    assert_bad(
+        &o,
+        &["--measured cor.csv: holds a COR table, which force-time does not draw"],
+    );
+    let o = bl_at(
+        dir.path(),
+        &[
+            "figure",
+            "cor-zeta",
+            "--out",
+            "f.svg",
+            "--measured",
+            "cor.csv",
+        ],
+    );
+    assert_bad(&o, &["--measured does not apply to cor-zeta"]);
+    assert!(!dir.path().join("f.svg").exists());
+}

@@ -156,6 +156,15 @@ pub fn text(
         free.join(", "),
         f.points
     )?;
+    if data.trace.is_some() {
+        // the trace's speed is not in the data: say which one the fit assumed
+        writeln!(
+            out,
+            "impact speed v0 = {} m/s (--v0 to change it), mass {} g",
+            human(r.v0, 4),
+            human(ball.params.mass * 1e3, 4)
+        )?;
+    }
     writeln!(out)?;
     let mut rows = vec![vec![
         "".into(),

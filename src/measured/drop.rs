@@ -64,6 +64,7 @@ impl DropTest {
     /// Columns `drop_height_m`, `rebound_height_m`.
     pub fn parse(text: &str) -> Result<DropTest, MeasuredError> {
         let p = table::read(text, &SPECS)?;
+        super::check_points(&p)?;
         let mut drops = Vec::with_capacity(p.lines.len());
         for i in 0..p.lines.len() {
             let (h, r) = (

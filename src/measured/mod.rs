@@ -133,11 +133,28 @@ fn positive(
     }
 }
 
+/// Most rows of a COR table or drop test: each is one impact per evaluation of the fit, and
+/// ten thousand measured impacts is already far beyond any series a lab takes.
+pub const MAX_POINTS: usize = 10_000;
+
+/// A table of more than [`MAX_POINTS`] rows is refused at the first row past it.
+fn check_points(p: &table::Parsed) -> Result<(), MeasuredError> {
+    match p.lines.get(MAX_POINTS) {
+        Some(&line) => Err(MeasuredError::at(
+            line,
+            1,
+            format!("more than {MAX_POINTS} rows: a COR table or drop test is at most that"),
+        )),
+        None => Ok(()),
+    }
+}
+
 impl CorTable {
     /// Columns `v0`/`v0_m_s`/`speed`, `cor`/`e`; optional `cor_sd`, `max_force_N`,
     /// `contact_time_s` (or `_ms`, `_us`).
     pub fn parse(text: &str) -> Result<CorTable, MeasuredError> {
         let p = table::read(text, &COR_SPECS)?;
+        check_points(&p)?;
         let mut points = Vec::with_capacity(p.lines.len());
         for i in 0..p.lines.len() {
             let cor = p.columns[1][i].unwrap_or(f64::NAN);

@@ -100,12 +100,21 @@ impl Trace {
             |a, (i, f)| if f > a.1 { (i, f) } else { a },
         );
         if !(peak > 5.0 * noise && peak > 0.0) || n < 3 {
+            let lowest = self
+                .force
+                .iter()
+                .fold(f64::INFINITY, |a, &f| a.min(f - baseline));
+            let hint = if -lowest > 5.0 * noise && -lowest > 0.0 {
+                " (the pulse is negative: force is taken positive pushing on the ball)"
+            } else {
+                "; a trace needs one impact pulse"
+            };
             return Err(MeasuredError::at(
                 self.lines[ip],
                 self.force_columns[ip],
                 format!(
                     "empty pulse: the largest force above the baseline ({} N) is within the \
-                     noise ({} N); a trace needs one impact pulse",
+                     noise ({} N){hint}",
                     short(peak),
                     short(noise)
                 ),
