@@ -73,6 +73,16 @@ impl<'a> CorProblem<'a> {
             .sum()
     }
 
+    /// How many residuals of each kind: (COR, force, time).
+    pub fn count_by_kind(&self) -> [usize; 3] {
+        let mut n = [self.points.len(), 0, 0];
+        for p in self.points {
+            n[1] += p.max_force.is_some() as usize;
+            n[2] += p.contact_time.is_some() as usize;
+        }
+        n
+    }
+
     /// The RMS of each kind of residual at `x`, unscaled: (COR, force, time).
     pub fn rms_by_kind(&self, x: &[f64]) -> Option<[f64; 3]> {
         let pred = self.predict(x)?;
