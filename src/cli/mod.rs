@@ -54,7 +54,8 @@ pub enum Command {
     /// Sweep ζ (normalized, Figs. 2–3) or the impact speed of a ball (Fig. 4)
     #[command(subcommand)]
     Sweep(sweep::Sweep),
-    /// Fit the recoil spring K_r (and λ) to a measured COR
+    /// Fit the model to measurements: one COR (K_r), a COR table, a force–time trace or drop
+    /// tests (several parameters, with intervals)
     #[command(allow_negative_numbers = true)]
     Fit(fit::FitArgs),
     /// List the embedded and user presets
