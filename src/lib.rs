@@ -6,14 +6,18 @@
 //! The physics core (`model`, `solver`) does no I/O: plain data in, plain data out.
 
 pub mod analysis;
+pub mod atomic;
 pub mod catalog;
 pub mod cli;
+pub mod drop;
 #[doc(hidden)]
 pub mod fault;
 pub mod figure;
 pub mod measured;
 pub mod model;
 pub mod preset;
+pub mod sanitize;
+pub mod signals;
 pub mod solver;
 pub mod tui;
 

@@ -68,16 +68,16 @@ pub struct BallArgs {
 #[derive(Debug, Clone, Default, Args)]
 pub struct Overrides {
     /// Contact stiffness K_p, N/m [default: the preset's]
-    #[arg(long = "k-p", value_name = "N/m")]
+    #[arg(long = "k-p", value_name = "N/m", value_parser = super::number::number, allow_hyphen_values = true)]
     pub k_p: Option<f64>,
     /// Dashpot c, kg/s [default: the preset's]
-    #[arg(long, value_name = "kg/s")]
+    #[arg(long, value_name = "kg/s", value_parser = super::number::number, allow_hyphen_values = true)]
     pub damping: Option<f64>,
     /// Recoil spring K_r, N/m [default: the preset's]
-    #[arg(long = "k-r", value_name = "N/m")]
+    #[arg(long = "k-r", value_name = "N/m", value_parser = super::number::number, allow_hyphen_values = true)]
     pub k_r: Option<f64>,
     /// Flattening threshold z_p, m [default: the preset's]
-    #[arg(long = "z-p", value_name = "m")]
+    #[arg(long = "z-p", value_name = "m", value_parser = super::number::number, allow_hyphen_values = true)]
     pub z_p: Option<f64>,
 }
 

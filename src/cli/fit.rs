@@ -22,7 +22,7 @@ pub struct FitArgs {
     #[command(flatten)]
     pub ball: BallArgs,
     /// Measured coefficient of restitution to match, in [0, 1]
-    #[arg(long, value_name = "E")]
+    #[arg(long, value_name = "E", value_parser = super::number::number, allow_hyphen_values = true)]
     pub cor: Option<f64>,
     /// COR against impact speed: CSV with columns v0 and cor (optional cor_sd, max_force_N,
     /// contact_time_s)
@@ -33,29 +33,31 @@ pub struct FitArgs {
     #[arg(long, value_name = "FILE")]
     pub force_time: Option<PathBuf>,
     /// Drop height (m), with --rebound-height; repeatable
-    #[arg(long, value_name = "H", requires = "rebound_height")]
+    #[arg(long, value_name = "H", requires = "rebound_height", value_parser = super::number::number, allow_hyphen_values = true)]
     pub drop_height: Vec<f64>,
     /// Rebound height (m) of each --drop-height, in the same order
-    #[arg(long, value_name = "R", requires = "drop_height")]
+    #[arg(long, value_name = "R", requires = "drop_height", value_parser = super::number::number, allow_hyphen_values = true)]
     pub rebound_height: Vec<f64>,
     /// Drop tests from a CSV with columns drop_height_m, rebound_height_m
     #[arg(long, value_name = "FILE")]
     pub drop_test: Option<PathBuf>,
     /// Drop tests: correct for quadratic air drag with this drag coefficient (≈ 0.47 for a
     /// smooth sphere) [default: no drag]
-    #[arg(long, value_name = "CD")]
+    #[arg(long, value_name = "CD", value_parser = super::number::number, allow_hyphen_values = true)]
     pub drag_coefficient: Option<f64>,
     /// Drop tests: air density for the drag correction, kg/m³
     #[arg(
         long,
         value_name = "RHO",
         default_value_t = 1.204,
-        requires = "drag_coefficient"
+        requires = "drag_coefficient",
+        value_parser = super::number::number,
+        allow_hyphen_values = true
     )]
     pub air_density: f64,
     /// Impact speed v0 (m/s) the COR or the trace was measured at [default: the preset's
     /// measured v0]
-    #[arg(long, value_name = "V")]
+    #[arg(long, value_name = "V", value_parser = super::number::number, allow_hyphen_values = true)]
     pub v0: Option<f64>,
     /// Parameters to fit, comma-separated, from k_p, c, k_r, z_p, k_h [default: k_p,c,k_r
     /// for a trace (k_h,c,k_r for the Hertz law), k_r,z_p for a COR table or drop tests of

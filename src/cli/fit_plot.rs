@@ -48,12 +48,12 @@ fn trace_figures(ball: &Ball, data: &Loaded, f: &MultiFit) -> Option<(Figure, Fi
         .zip(t.force.iter().zip(&f.model))
         .map(|(&x, (d, m))| (x, d - m))
         .collect();
-    let top = Figure {
-        title: format!("Force against time: {}", data.label),
-        subtitle: subtitle(ball, f),
-        x: Axis::linear("t (ms)", "t", 1e3),
-        y: Axis::linear("F (N)", "force", 1.0),
-        series: vec![
+    let top = Figure::new(
+        format!("Force against time: {}", data.label),
+        subtitle(ball, f),
+        Axis::linear("t (ms)", "t", 1e3),
+        Axis::linear("F (N)", "force", 1.0),
+        vec![
             Series::new(
                 &data.label,
                 "measured",
@@ -64,17 +64,17 @@ fn trace_figures(ball: &Ball, data: &Loaded, f: &MultiFit) -> Option<(Figure, Fi
             .with_points(measured),
             Series::new("model (fitted)", "model", Kind::Model, Style::Solid, 0).with_points(model),
         ],
-    };
-    let bottom = Figure {
-        title: "Residuals: measured − model".into(),
-        subtitle: format!(
+    );
+    let bottom = Figure::new(
+        "Residuals: measured − model".into(),
+        format!(
             "rms {} N over {} points",
             crate::figure::short(f.rms_residual, 3),
             f.points
         ),
-        x: Axis::linear("t (ms)", "t", 1e3),
-        y: Axis::linear("F − model (N)", "residual", 1.0),
-        series: vec![
+        Axis::linear("t (ms)", "t", 1e3),
+        Axis::linear("F − model (N)", "residual", 1.0),
+        vec![
             Series::new(
                 &data.label,
                 "residual",
@@ -84,7 +84,7 @@ fn trace_figures(ball: &Ball, data: &Loaded, f: &MultiFit) -> Option<(Figure, Fi
             )
             .with_points(resid),
         ],
-    };
+    );
     Some((top, bottom))
 }
 
@@ -117,12 +117,12 @@ fn cor_figures(
         .zip(&f.model)
         .map(|(q, m)| (q.v0, q.cor - m))
         .collect();
-    let top = Figure {
-        title: format!("COR against impact speed: {}", data.label),
-        subtitle: subtitle(ball, f),
-        x: Axis::linear("v0 (m/s)", "v0", 1.0),
-        y: Axis::linear("COR e", "cor", 1.0),
-        series: vec![
+    let top = Figure::new(
+        format!("COR against impact speed: {}", data.label),
+        subtitle(ball, f),
+        Axis::linear("v0 (m/s)", "v0", 1.0),
+        Axis::linear("COR e", "cor", 1.0),
+        vec![
             Series::new("model (fitted)", "model", Kind::Model, Style::Solid, 0).with_points(curve),
             Series::new(
                 &data.label,
@@ -133,17 +133,17 @@ fn cor_figures(
             )
             .with_points(measured),
         ],
-    };
-    let bottom = Figure {
-        title: "Residuals: measured − model".into(),
-        subtitle: format!(
+    );
+    let bottom = Figure::new(
+        "Residuals: measured − model".into(),
+        format!(
             "rms {} over {} points",
             crate::figure::short(f.rms_residual, 3),
             data.points.len()
         ),
-        x: Axis::linear("v0 (m/s)", "v0", 1.0),
-        y: Axis::linear("e − model", "residual", 1.0),
-        series: vec![
+        Axis::linear("v0 (m/s)", "v0", 1.0),
+        Axis::linear("e − model", "residual", 1.0),
+        vec![
             Series::new(
                 &data.label,
                 "residual",
@@ -153,7 +153,7 @@ fn cor_figures(
             )
             .with_points(resid),
         ],
-    };
+    );
     Ok((top, bottom))
 }
 
