@@ -94,7 +94,7 @@ fn drop_test() {
             .unwrap()
             .cor;
             let rebound = e * e * h + 0.003 * rng.normal();
-            let (v0, cor) = drop_to_cor(h, rebound, None);
+            let (v0, cor) = drop_to_cor(h, rebound, &bouncelab::measured::Flight::vacuum());
             CorPoint {
                 v0,
                 cor,

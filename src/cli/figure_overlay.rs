@@ -5,7 +5,7 @@
 use super::figure::FigureName;
 use super::measured_file as files;
 use crate::figure::{BLACK, Figure, Kind, Marker, Series, Style};
-use crate::measured::{Data, Trace, drop_to_cor};
+use crate::measured::{Data, Flight, Trace, drop_to_cor};
 use std::path::Path;
 
 const MARKERS: [Marker; 4] = [
@@ -27,7 +27,7 @@ fn points(name: FigureName, data: &Data, mass: f64, v0: f64) -> Result<Vec<(f64,
         (CorVelocity, Data::Drop(d)) => Ok(d
             .drops
             .iter()
-            .map(|&(h, r, _)| drop_to_cor(h, r, None))
+            .map(|&(h, r, _)| drop_to_cor(h, r, &Flight::vacuum()))
             .collect()),
         (ForceTime, Data::Trace(t)) => {
             let (start, base) = clock(t)?;

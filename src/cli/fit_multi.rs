@@ -7,7 +7,7 @@ use super::fit::{FitArgs, FitFormat, Source};
 use super::measured_file as files;
 use super::output;
 use crate::analysis::fit::{FitData, MultiFitError, Param, fit};
-use crate::measured::{CorPoint, Drag, Trace, drop_to_cor};
+use crate::measured::{Air, CorPoint, Flight, Trace, drop_to_cor};
 use crate::model::params::ImpactParams;
 use crate::solver::{SolveOptions, simulate};
 use std::io::Write;
@@ -40,21 +40,21 @@ pub fn check_outputs(a: &FitArgs) -> anyhow::Result<()> {
 }
 
 fn load(a: &FitArgs, source: &Source, ball: &Ball) -> anyhow::Result<Loaded> {
-    let drag = a.drag_coefficient.map(|cd| Drag {
-        coefficient: cd,
-        air_density: a.air_density,
-        radius: ball.measured.as_ref().map_or(f64::NAN, |m| m.radius),
-        mass: ball.params.mass,
-    });
-    if let Some(d) = &drag {
-        super::ball::check_positive("drag_coefficient", d.coefficient)?;
-        super::ball::check_positive("air_density", d.air_density)?;
+    if let Some(cd) = a.drag_coefficient {
+        super::ball::check_positive("drag_coefficient", cd)?;
+        super::ball::check_positive("air_density", a.air_density)?;
     }
+    let radius = ball.measured.as_ref().map_or(f64::NAN, |m| m.radius);
+    let air = a.drag_coefficient.map(|cd| Air {
+        density: a.air_density,
+        drag_coefficient: cd,
+    });
+    let flight = Flight::new(ball.params.mass, radius, air);
     let from_drops = |drops: Vec<(f64, f64, usize)>| -> Vec<CorPoint> {
         drops
             .iter()
             .map(|&(h, r, line)| {
-                let (v0, cor) = drop_to_cor(h, r, drag.as_ref());
+                let (v0, cor) = drop_to_cor(h, r, &flight);
                 CorPoint {
                     v0,
                     cor,

@@ -6,7 +6,7 @@ mod drop;
 mod table;
 mod trace;
 
-pub use drop::{Drag, DropTest, G, drop_to_cor};
+pub use drop::{Air, DropTest, Flight, G, drop_to_cor};
 pub use table::MAX_ROWS;
 pub use trace::{Trace, TraceSummary};
 
