@@ -27,6 +27,29 @@ fn subtitle(ball: &Ball, f: &MultiFit) -> String {
     )
 }
 
+/// The user's data as markers, labelled by `label` (the file name).
+fn data_series(label: &str, id: &str, points: Vec<(f64, f64)>) -> Series {
+    Series::new(
+        label,
+        id,
+        Kind::Measured,
+        Style::Markers(Marker::Circle),
+        BLACK,
+    )
+    .with_points(points)
+}
+
+/// The residuals figure under the data: measured − model against the data's x.
+fn residuals(x: Axis, y_label: &str, label: &str, rms: String, points: Vec<(f64, f64)>) -> Figure {
+    Figure::new(
+        "Residuals: measured − model".into(),
+        rms,
+        x,
+        Axis::linear(y_label, "residual", 1.0),
+        vec![data_series(label, "residual", points)],
+    )
+}
+
 /// (data and model, residuals) for a trace.
 fn trace_figures(ball: &Ball, data: &Loaded, f: &MultiFit) -> Option<(Figure, Figure)> {
     let t = data.trace.as_ref()?;
@@ -54,37 +77,17 @@ fn trace_figures(ball: &Ball, data: &Loaded, f: &MultiFit) -> Option<(Figure, Fi
         Axis::linear("t (ms)", "t", 1e3),
         Axis::linear("F (N)", "force", 1.0),
         vec![
-            Series::new(
-                &data.label,
-                "measured",
-                Kind::Measured,
-                Style::Markers(Marker::Circle),
-                BLACK,
-            )
-            .with_points(measured),
+            data_series(&data.label, "measured", measured),
             Series::new("model (fitted)", "model", Kind::Model, Style::Solid, 0).with_points(model),
         ],
     );
-    let bottom = Figure::new(
-        "Residuals: measured − model".into(),
-        format!(
-            "rms {} N over {} points",
-            crate::figure::short(f.rms_residual, 3),
-            f.points
-        ),
-        Axis::linear("t (ms)", "t", 1e3),
-        Axis::linear("F − model (N)", "residual", 1.0),
-        vec![
-            Series::new(
-                &data.label,
-                "residual",
-                Kind::Measured,
-                Style::Markers(Marker::Circle),
-                BLACK,
-            )
-            .with_points(resid),
-        ],
+    let rms = format!(
+        "rms {} N over {} points",
+        crate::figure::short(f.rms_residual, 3),
+        f.points
     );
+    let x = Axis::linear("t (ms)", "t", 1e3);
+    let bottom = residuals(x, "F − model (N)", &data.label, rms, resid);
     Some((top, bottom))
 }
 
@@ -124,36 +127,16 @@ fn cor_figures(
         Axis::linear("COR e", "cor", 1.0),
         vec![
             Series::new("model (fitted)", "model", Kind::Model, Style::Solid, 0).with_points(curve),
-            Series::new(
-                &data.label,
-                "measured",
-                Kind::Measured,
-                Style::Markers(Marker::Circle),
-                BLACK,
-            )
-            .with_points(measured),
+            data_series(&data.label, "measured", measured),
         ],
     );
-    let bottom = Figure::new(
-        "Residuals: measured − model".into(),
-        format!(
-            "rms {} over {} points",
-            crate::figure::short(f.rms_residual, 3),
-            data.points.len()
-        ),
-        Axis::linear("v0 (m/s)", "v0", 1.0),
-        Axis::linear("e − model", "residual", 1.0),
-        vec![
-            Series::new(
-                &data.label,
-                "residual",
-                Kind::Measured,
-                Style::Markers(Marker::Circle),
-                BLACK,
-            )
-            .with_points(resid),
-        ],
+    let rms = format!(
+        "rms {} over {} points",
+        crate::figure::short(f.rms_residual, 3),
+        data.points.len()
     );
+    let x = Axis::linear("v0 (m/s)", "v0", 1.0);
+    let bottom = residuals(x, "e − model", &data.label, rms, resid);
     Ok((top, bottom))
 }
 
