@@ -5,7 +5,7 @@
 use super::figure::FigureName;
 use super::measured_file as files;
 use crate::figure::{BLACK, Figure, Kind, Marker, Series, Style};
-use crate::measured::{Data, Flight, Trace, drop_to_cor};
+use crate::measured::{Data, overlay};
 use std::path::Path;
 
 const MARKERS: [Marker; 4] = [
@@ -16,28 +16,16 @@ const MARKERS: [Marker; 4] = [
 ];
 
 /// The measured points of `data` for figure `name`, as (x, y) in SI, or why they do not fit
-/// that figure. A trace is put on the model's clock: its contact start (where the force,
-/// above the baseline, first exceeds 5 % of its peak, continued to zero) at t = 0, its
-/// baseline subtracted. Against displacement, α(t) = v0 t − (1/m) ∫∫ F dt² from that start
-/// (Eq. 1 integrated twice with the ball's m and v0; trapezoidal rule).
+/// that figure ([`crate::measured::overlay`]).
 fn points(name: FigureName, data: &Data, mass: f64, v0: f64) -> Result<Vec<(f64, f64)>, String> {
     use FigureName::*;
+    let err = |e: crate::measured::MeasuredError| e.to_string();
     match (name, data) {
-        (CorVelocity, Data::Cor(t)) => Ok(t.points.iter().map(|p| (p.v0, p.cor)).collect()),
-        (CorVelocity, Data::Drop(d)) => Ok(d
-            .drops
-            .iter()
-            .map(|&(h, r, _)| drop_to_cor(h, r, &Flight::vacuum()))
-            .collect()),
-        (ForceTime, Data::Trace(t)) => {
-            let (start, base) = clock(t)?;
-            Ok(t.time
-                .iter()
-                .zip(&t.force)
-                .map(|(x, f)| (x - start, f - base))
-                .collect())
+        (CorVelocity, Data::Cor(_) | Data::Drop(_)) => {
+            Ok(overlay::cor_points(data).unwrap_or_default())
         }
-        (ForceDisplacement, Data::Trace(t)) => displacement(t, mass, v0),
+        (ForceTime, Data::Trace(t)) => overlay::aligned(t).map_err(err),
+        (ForceDisplacement, Data::Trace(t)) => overlay::displacement(t, mass, v0).map_err(err),
         (CorZeta | ForceZeta, _) => Err(format!(
             "--measured does not apply to {} (the normalized ball)",
             name.name()
@@ -48,32 +36,6 @@ fn points(name: FigureName, data: &Data, mass: f64, v0: f64) -> Result<Vec<(f64,
             name.name()
         )),
     }
-}
-
-fn clock(t: &Trace) -> Result<(f64, f64), String> {
-    let s = t.summary().map_err(|e| e.to_string())?;
-    Ok((s.t_start, s.baseline))
-}
-
-fn displacement(t: &Trace, mass: f64, v0: f64) -> Result<Vec<(f64, f64)>, String> {
-    let s = t.summary().map_err(|e| e.to_string())?;
-    let (mut velocity, mut alpha) = (v0, 0.0);
-    let mut out = Vec::new();
-    let mut prev: Option<(f64, f64)> = None;
-    for (&time, &f) in t.time.iter().zip(&t.force) {
-        if time < s.t_start || time > s.t_end {
-            continue;
-        }
-        let f = (f - s.baseline).max(0.0);
-        let (t0, f0) = prev.unwrap_or((s.t_start, 0.0));
-        let dt = time - t0;
-        let v_new = velocity - 0.5 * (f + f0) / mass * dt;
-        alpha += 0.5 * (velocity + v_new) * dt;
-        velocity = v_new;
-        prev = Some((time, f));
-        out.push((alpha, f));
-    }
-    Ok(out)
 }
 
 /// Add each `--measured` file's points to `fig`, labelled by the file name.

@@ -46,6 +46,10 @@ pub struct Cli {
     /// Preset file the explorer opens on (TOML, same schema as the embedded presets)
     #[arg(long, value_name = "FILE")]
     pub config: Option<PathBuf>,
+    /// Measured data the explorer draws on its charts (force–time trace, COR table or drop
+    /// test; CSV, labelled by its file name)
+    #[arg(long, value_name = "FILE")]
+    pub measured: Option<PathBuf>,
     #[command(subcommand)]
     pub command: Option<Command>,
 }
@@ -96,7 +100,8 @@ pub fn main() -> ExitCode {
     if cli.command.is_none() {
         // the explorer must not hold the stdout lock: on a signal, crate::signals takes it to
         // restore the terminal
-        return explorer(cli.preset, cli.config).map_or_else(fail, |()| ExitCode::SUCCESS);
+        return explorer(cli.preset, cli.config, cli.measured)
+            .map_or_else(fail, |()| ExitCode::SUCCESS);
     }
     let stdout = io::stdout();
     // no control character reaches the terminal, whatever a preset or path holds
@@ -190,8 +195,15 @@ fn clap_error(e: clap::Error) -> ExitCode {
 fn dispatch(cli: Cli, out: &mut dyn Write) -> anyhow::Result<()> {
     let top = (cli.preset.is_some() || cli.config.is_some()).then_some(());
     let Some(command) = cli.command else {
-        return explorer(cli.preset, cli.config);
+        return explorer(cli.preset, cli.config, cli.measured);
     };
+    if let Some(m) = &cli.measured {
+        anyhow::bail!(
+            "--measured before a subcommand is for the explorer; to draw {} on a figure use \
+             `bouncelab figure NAME --measured FILE`, to fit it `bouncelab fit`",
+            m.display()
+        );
+    }
     match command {
         Command::Run(mut a) => {
             if top.is_some() && a.normalized {
@@ -272,7 +284,16 @@ fn merge(
 }
 
 /// No subcommand: the explorer, which needs a terminal.
-fn explorer(preset: Option<String>, config: Option<PathBuf>) -> anyhow::Result<()> {
+fn explorer(
+    preset: Option<String>,
+    config: Option<PathBuf>,
+    measured: Option<PathBuf>,
+) -> anyhow::Result<()> {
+    // a measured file is read and checked first, before anything else is asked of the user
+    let data = match &measured {
+        Some(path) => Some((measured_file::any(path)?, path)),
+        None => None,
+    };
     if !io::stdout().is_terminal() {
         anyhow::bail!(
             "the explorer needs a terminal and stdout is not one; for headless output use \
@@ -280,7 +301,16 @@ fn explorer(preset: Option<String>, config: Option<PathBuf>) -> anyhow::Result<(
         );
     }
     let entry = ball::select(preset.as_deref(), config.as_deref())?;
-    crate::tui::run(entry.preset).map_err(|e| Runtime(e).into())
+    let overlays = match data {
+        Some((data, path)) => {
+            let p = entry.preset.params();
+            let label = measured_file::label(path);
+            crate::figure::explorer::MeasuredOverlay::from_data(&data, &label, p.mass, p.v0)
+                .map_err(|e| measured_file::at(path, e))?
+        }
+        None => Vec::new(),
+    };
+    crate::tui::run_with_measured(entry.preset, overlays).map_err(|e| Runtime(e).into())
 }
 
 #[cfg(test)]

@@ -3,6 +3,7 @@
 //! carries the 1-based line and column it is about.
 
 mod drop;
+pub mod overlay;
 mod table;
 mod trace;
 

@@ -55,6 +55,8 @@ pub struct App {
     export_wanted: bool,
     /// The save handed to the event loop, until its answer comes back.
     save_out: Option<SaveRequest>,
+    /// Measured data drawn on the charts (`bouncelab --measured FILE`).
+    measured: Vec<crate::figure::explorer::MeasuredOverlay>,
 }
 
 impl App {
@@ -91,6 +93,7 @@ impl App {
             background: false,
             export_wanted: false,
             save_out: None,
+            measured: Vec::new(),
         };
         app.refresh();
         app
@@ -101,6 +104,12 @@ impl App {
     /// this (tests), `refresh` runs them itself.
     pub fn with_background_sweeps(mut self) -> App {
         self.background = true;
+        self
+    }
+
+    /// Draw the user's measured data on the charts it belongs to.
+    pub fn with_measured(mut self, m: Vec<crate::figure::explorer::MeasuredOverlay>) -> App {
+        self.measured = m;
         self
     }
 
