@@ -321,26 +321,4 @@ fn overrides_on_run_sweep_and_figure() {
             "f.svg",
         ],
     );
-    ok_at(
-        dir.path(),
-        &[
-            "figure",
-            "cor-velocity",
-            "--preset",
-            "golf",
-            "--preset",
-            "baseball",
-            "--out",
-            "g.svg",
-        ],
-    );
-    let svg = std::fs::read_to_string(dir.path().join("g.svg")).unwrap();
-    assert!(
-        svg.contains("golf, baseball") && svg.contains("baseball model"),
-        "two balls on one figure"
-    );
-    bad(
-        &["run", "--preset", "golf", "--preset", "baseball"],
-        &["--preset given 2 times"],
-    );
 }

@@ -1,15 +1,14 @@
-//! `bouncelab figure NAME --out FILE.svg [--csv-out FILE.csv] [--measured FILE]…
-//! [--preset NAME]…`: one of the paper's figures as SVG, and its plotted series as CSV, with
-//! measured data and further balls drawn on it ([`super::figure_overlay`]). The figures themselves are built in
+//! `bouncelab figure NAME --out FILE.svg [--data FILE.csv]`: one of the paper's figures as
+//! SVG, and its plotted series as CSV. The figures themselves are built in
 //! [`crate::figure::paper`]; this file reads the options, solves, and writes the files.
 
-use super::ball::{self, BallArgs, check_positive, param_message};
+use super::ball::{self, BallArgs};
 use super::figure_overlay as overlay;
 use crate::analysis::sweep::{lin_space, log_space};
 use crate::atomic::Outputs;
 use crate::figure::{Figure, csv, paper, svg};
 use crate::model::contact::ContactLaw;
-use crate::model::params::validate_lambda_zeta;
+use crate::model::params::{Field, check_positive, validate_lambda_zeta};
 use crate::preset::{ParamSource, Preset};
 use crate::solver::{SolveOptions, simulate};
 use clap::{Args, ValueEnum};
@@ -124,18 +123,11 @@ fn check_applicable(a: &FigureArgs) -> anyhow::Result<()> {
     } else {
         &[CorZeta, ForceZeta]
     };
+    let ball_figures = &[CorVelocity, ForceTime, ForceDisplacement][..];
     let given = [
         ("--lambda", a.lambda.is_some(), lambda_for),
-        (
-            "--zeta",
-            a.zeta.is_some(),
-            &[CorVelocity, ForceTime, ForceDisplacement][..],
-        ),
-        (
-            "--measured",
-            !a.measured.is_empty(),
-            &[CorVelocity, ForceTime, ForceDisplacement][..],
-        ),
+        ("--zeta", a.zeta.is_some(), ball_figures),
+        ("--measured", !a.measured.is_empty(), ball_figures),
         ("--v0", a.v0.is_some(), &[ForceTime, ForceDisplacement][..]),
         ("--from", a.from.is_some(), &[CorVelocity][..]),
         ("--to", a.to.is_some(), &[CorVelocity][..]),
@@ -218,27 +210,9 @@ pub fn commit(files: Outputs) -> anyhow::Result<Vec<PathBuf>> {
     })
 }
 
-/// A CLI ball as a ball of the paper's charts.
-pub fn chart_ball(b: &ball::Ball) -> paper::Ball {
-    paper::Ball {
-        name: b.name.clone().unwrap_or_else(|| "ball".into()),
-        source: b.source.into(),
-        params: b.params,
-        law: b.law,
-        measured: b.measured.clone(),
-    }
-}
-
 /// An embedded preset on the chosen (or its own) parameter set.
 pub fn embedded_ball(p: &Preset, source: Option<ParamSource>, law: ContactLaw) -> paper::Ball {
-    let source = source.unwrap_or(p.parameters);
-    paper::Ball {
-        name: p.name.clone(),
-        source: source.name().into(),
-        params: p.params_from(source),
-        law,
-        measured: Some(p.measured.clone()),
-    }
+    paper::Ball::from_preset(p, source.unwrap_or(p.parameters), law)
 }
 
 /// Figs. 2 and 3 over ζ = 0.01 … 100.
@@ -249,7 +223,7 @@ pub fn zeta_figures(
     balls: &[paper::Ball],
 ) -> anyhow::Result<(Figure, Figure)> {
     for &l in lambdas {
-        validate_lambda_zeta(l, 0.0).map_err(|e| anyhow::anyhow!(param_message(&e)))?;
+        validate_lambda_zeta(l, 0.0)?;
     }
     let what = format!("{} λ values × {points} points", lambdas.len());
     super::budget::check(lambdas.len() * points, law, &what)?;
@@ -268,15 +242,14 @@ pub fn velocity_figure(
     to: Option<f64>,
     points: usize,
 ) -> anyhow::Result<Figure> {
-    let pm = ball::solve_error;
     super::budget::check(points, b.law, &format!("{points} points"))?;
     let v0 = b.params.v0;
-    let onset = paper::speed_for_indentation(&b.params, b.law, 1.0).map_err(pm)?;
-    let far = paper::speed_for_indentation(&b.params, b.law, SPEED_RANGE_ZP).map_err(pm)?;
+    let onset = paper::speed_for_indentation(&b.params, b.law, 1.0)?;
+    let far = paper::speed_for_indentation(&b.params, b.law, SPEED_RANGE_ZP)?;
     let from = from.unwrap_or(0.1 * v0);
     let to = to.unwrap_or_else(|| far.unwrap_or(3.0 * v0).max(1.2 * v0));
-    check_positive("from", from)?;
-    check_positive("to", to)?;
+    check_positive(Field::From, from)?;
+    check_positive(Field::To, to)?;
     if from >= to {
         anyhow::bail!("invalid speed range: --from {from} must be below --to {to}");
     }
@@ -290,8 +263,7 @@ pub fn history_figures(b: &paper::Ball, samples: usize) -> anyhow::Result<(Figur
         &b.params,
         b.law,
         &SolveOptions::default().with_samples(samples),
-    )
-    .map_err(ball::solve_error)?;
+    )?;
     if !r.rebound {
         anyhow::bail!(
             "{} does not rebound at v0 = {} m/s: there is no contact to draw",
@@ -300,48 +272,6 @@ pub fn history_figures(b: &paper::Ball, samples: usize) -> anyhow::Result<(Figur
         );
     }
     Ok((paper::force_time(b, &r), paper::force_displacement(b, &r)))
-}
-
-/// The balls `figure` draws: one per `--preset` (or the `--config` file, or the default),
-/// each with the overrides, λ and ζ applied.
-fn balls(a: &FigureArgs, v0: Option<f64>) -> anyhow::Result<Vec<(paper::Ball, String)>> {
-    let lambda = a.lambda.as_ref().filter(|l| l.len() == 1).map(|l| l[0]);
-    ball::check_overrides(&a.ball.set, lambda, a.zeta)?;
-    let names: Vec<Vec<String>> = if a.ball.preset.len() > 1 {
-        a.ball.preset.iter().map(|n| vec![n.clone()]).collect()
-    } else {
-        vec![a.ball.preset.clone()]
-    };
-    names
-        .into_iter()
-        .map(|preset| {
-            let args = BallArgs {
-                preset,
-                ..a.ball.clone()
-            };
-            let mut b = args.resolve(v0)?;
-            ball::set_lambda_zeta(&mut b.params, lambda, a.zeta)?;
-            Ok((chart_ball(&b), b.origin))
-        })
-        .collect()
-}
-
-/// One figure per ball, merged into the first.
-fn per_ball(
-    a: &FigureArgs,
-    v0: Option<f64>,
-    one: impl Fn(&paper::Ball) -> anyhow::Result<Figure>,
-) -> anyhow::Result<Figure> {
-    let mut fig: Option<Figure> = None;
-    for (i, (b, origin)) in balls(a, v0)?.into_iter().enumerate() {
-        let mut f = one(&b)?;
-        overlay::relabel_user(&mut f, &origin);
-        match &mut fig {
-            None => fig = Some(f),
-            Some(first) => overlay::merge_ball(first, f, &b.name, i),
-        }
-    }
-    fig.ok_or_else(|| anyhow::anyhow!("no ball to draw"))
 }
 
 fn build(a: &FigureArgs) -> anyhow::Result<Figure> {
@@ -354,12 +284,11 @@ fn build(a: &FigureArgs) -> anyhow::Result<Figure> {
                 .iter()
                 .map(|p| embedded_ball(p, source, law))
                 .collect();
-            // a user's balls join the three of the paper
-            if !a.ball.preset.is_empty() || a.ball.config.is_some() {
-                for (b, _) in self::balls(a, None)? {
-                    if !balls.iter().any(|x| x.name == b.name) {
-                        balls.push(b);
-                    }
+            // a user's ball joins the three of the paper
+            if a.ball.choice.is_given() {
+                let b = a.ball.resolve(None)?.ball;
+                if !balls.iter().any(|x| x.name == b.name) {
+                    balls.push(b);
                 }
             }
             let lambdas = a.lambda.clone().unwrap_or_else(|| vec![0.0, 0.4, 1.0]);
@@ -370,17 +299,32 @@ fn build(a: &FigureArgs) -> anyhow::Result<Figure> {
             let (cor, force) = zeta_figures(&lambdas, points, law, &balls)?;
             Ok(if a.name == CorZeta { cor } else { force })
         }
-        CorVelocity => per_ball(a, None, |b| {
-            velocity_figure(b, a.from, a.to, a.points.unwrap_or(VELOCITY_POINTS))
-        }),
-        ForceTime | ForceDisplacement => per_ball(a, a.v0, |b| {
-            let (t, d) = history_figures(b, a.points.unwrap_or(HISTORY_SAMPLES))?;
-            Ok(if a.name == ForceTime { t } else { d })
-        }),
+        CorVelocity => {
+            let (b, origin) = one_ball(a, None)?;
+            let mut f = velocity_figure(&b, a.from, a.to, a.points.unwrap_or(VELOCITY_POINTS))?;
+            overlay::relabel_user(&mut f, &origin);
+            Ok(f)
+        }
+        ForceTime | ForceDisplacement => {
+            let (b, origin) = one_ball(a, a.v0)?;
+            let (t, d) = history_figures(&b, a.points.unwrap_or(HISTORY_SAMPLES))?;
+            let mut f = if a.name == ForceTime { t } else { d };
+            overlay::relabel_user(&mut f, &origin);
+            Ok(f)
+        }
     }
 }
 
-/// `build`, with the `--measured` files drawn on it (against the first ball's m and v0).
+/// The ball of a one-ball figure, with the overrides, λ and ζ applied, and its origin.
+fn one_ball(a: &FigureArgs, v0: Option<f64>) -> anyhow::Result<(paper::Ball, String)> {
+    let lambda = a.lambda.as_ref().filter(|l| l.len() == 1).map(|l| l[0]);
+    ball::check_overrides(&a.ball.set, lambda, a.zeta)?;
+    let mut b = a.ball.resolve(v0)?;
+    ball::set_lambda_zeta(&mut b.ball.params, lambda, a.zeta)?;
+    Ok((b.ball, b.origin))
+}
+
+/// `build`, with the `--measured` files drawn on it (against the ball's m and v0).
 fn build_all(a: &FigureArgs) -> anyhow::Result<Figure> {
     // the files are read before any solving: a bad file fails fast
     for path in &a.measured {
@@ -388,14 +332,8 @@ fn build_all(a: &FigureArgs) -> anyhow::Result<Figure> {
     }
     let mut fig = build(a)?;
     if !a.measured.is_empty() {
-        let first = &balls(a, a.v0)?[0].0;
-        overlay::add_measured(
-            &mut fig,
-            a.name,
-            &a.measured,
-            first.params.mass,
-            first.params.v0,
-        )?;
+        let (b, _) = one_ball(a, a.v0)?;
+        overlay::add_measured(&mut fig, a.name, &a.measured, b.params.mass, b.params.v0)?;
     }
     Ok(fig)
 }
@@ -406,7 +344,7 @@ pub fn run(a: &FigureArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     paths.extend(a.csv_out.as_deref());
     check_writable(&paths, a.force)?;
     let fig = build_all(a)?;
-    let picture = svg::render(&fig).map_err(|e| super::Runtime(e.into()))?;
+    let picture = svg::render(&fig)?;
     // both files or neither (crate::atomic)
     let mut files = Outputs::new(a.force);
     files.text(&a.out, &picture)?;

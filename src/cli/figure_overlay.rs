@@ -1,6 +1,5 @@
 //! What `figure` adds to the paper's figures: measured data from files (`--measured`,
-//! labelled by file name), further balls (`--preset` given more than once, each labelled by
-//! its name), and the user's own measurements never credited to Cross (1999).
+//! labelled by file name), and the user's own measurements never credited to Cross (1999).
 
 use super::figure::FigureName;
 use super::measured_file as files;
@@ -74,24 +73,6 @@ fn widen_to_data(fig: &mut Figure) {
         return;
     };
     fig.x.range = Some((lo.min(dlo), hi.max(dhi)));
-}
-
-/// The series of `other` (another ball on the same figure) added to `fig`, each label prefixed
-/// with the ball's name, in the `index`-th colour.
-pub fn merge_ball(fig: &mut Figure, other: Figure, ball: &str, index: usize) {
-    for mut s in other.series {
-        if s.kind == Kind::Reference {
-            continue;
-        }
-        s.label = format!("{ball}: {}", s.label);
-        s.id = format!("{ball} {}", s.id);
-        if s.kind == Kind::Model {
-            s.color = index % crate::figure::PALETTE.len().min(6);
-            s.style = [Style::Solid, Style::Dashed, Style::Dotted][index % 3];
-        }
-        fig.series.push(s);
-    }
-    fig.title = format!("{}, {ball}", fig.title);
 }
 
 /// A user preset's own measurements are its file's, not Cross (1999)'s.

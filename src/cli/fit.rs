@@ -1,11 +1,11 @@
 //! `bouncelab fit`: the model fitted to measurements (docs/fitting.md). One COR fits the
-//! recoil spring K_r (and λ) at the ball's ζ, z_p and v0 (MODEL.md §4), as it always has;
-//! a COR table, a force–time trace or drop tests fit several parameters at once
+//! recoil spring K_r (and λ) at the ball's ζ, z_p and v0 (docs/model.md §4), as it always
+//! has; a COR table, a force–time trace or drop tests fit several parameters at once
 //! ([`super::fit_multi`]).
 
-use super::ball::{BallArgs, param_message};
+use super::ball::{BallArgs, BallHeader};
 use super::output::{self, given, human, table};
-use crate::analysis::fit::{FitError, Param, fit_k_r};
+use crate::analysis::fit::{Param, fit_k_r};
 use clap::{Args, ValueEnum};
 use serde::Serialize;
 use std::io::Write;
@@ -154,10 +154,8 @@ impl FitArgs {
 
 #[derive(Serialize)]
 struct Report<'a> {
-    preset: Option<&'a str>,
-    origin: &'a str,
-    parameters: &'a str,
-    law: &'static str,
+    #[serde(flatten)]
+    ball: BallHeader<'a>,
     v0: f64,
     target_cor: f64,
     k_r: f64,
@@ -182,16 +180,10 @@ pub fn run(a: &FitArgs, out: &mut dyn Write) -> anyhow::Result<()> {
 fn single(a: &FitArgs, cor: f64, out: &mut dyn Write) -> anyhow::Result<()> {
     super::fit_multi::check_outputs(a)?;
     let b = a.ball.resolve(a.v0)?;
-    let f = fit_k_r(&b.params, b.law, cor).map_err(|e| match e {
-        FitError::Params(p) => anyhow::anyhow!(param_message(&p)),
-        e => anyhow::anyhow!(e.to_string()),
-    })?;
-    let p = &b.params;
+    let f = fit_k_r(&b.ball.params, b.ball.law, cor)?;
+    let p = &b.ball.params;
     let r = Report {
-        preset: b.name.as_deref(),
-        origin: &b.origin,
-        parameters: b.source,
-        law: b.law.name(),
+        ball: b.header(),
         v0: p.v0,
         target_cor: cor,
         k_r: f.k_r,
@@ -205,7 +197,7 @@ fn single(a: &FitArgs, cor: f64, out: &mut dyn Write) -> anyhow::Result<()> {
     match a.format {
         FitFormat::Json => output::json(out, &r)?,
         FitFormat::Text => {
-            writeln!(out, "{}, {} law", b.label(), r.law)?;
+            writeln!(out, "{}, {} law", b.label(), r.ball.law)?;
             writeln!(
                 out,
                 "fitting K_r at v0 = {} m/s, holding m, K_p, c (ζ = {}) and z_p",

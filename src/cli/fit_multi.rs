@@ -2,7 +2,7 @@
 //! standard errors, 95 % intervals and correlations ([`crate::analysis::fit::fit`]); the
 //! report as text or JSON, and the `--plot` and `--save` that go with every fit.
 
-use super::ball::{Ball, param_message, solve_error};
+use super::ball::ChosenBall;
 use super::fit::{FitArgs, FitFormat, Source};
 use super::measured_file as files;
 use super::output;
@@ -28,6 +28,18 @@ pub struct Loaded {
     pub end_line: usize,
 }
 
+/// A finite positive number, or an error naming `name` (numbers the model's fields do not
+/// cover: drop heights, drag).
+fn positive(name: &str, v: f64) -> anyhow::Result<()> {
+    if !(v.is_finite() && v > 0.0) {
+        anyhow::bail!(
+            "invalid {name}: {} (must be a positive number)",
+            output::num(v)
+        );
+    }
+    Ok(())
+}
+
 /// Refuse outputs that cannot be written, before any work.
 pub fn check_outputs(a: &FitArgs) -> anyhow::Result<()> {
     if let Some(p) = &a.plot {
@@ -39,17 +51,17 @@ pub fn check_outputs(a: &FitArgs) -> anyhow::Result<()> {
     Ok(())
 }
 
-fn load(a: &FitArgs, source: &Source, ball: &Ball) -> anyhow::Result<Loaded> {
+fn load(a: &FitArgs, source: &Source, ball: &ChosenBall) -> anyhow::Result<Loaded> {
     if let Some(cd) = a.drag_coefficient {
-        super::ball::check_positive("drag_coefficient", cd)?;
-        super::ball::check_positive("air_density", a.air_density)?;
+        positive("drag_coefficient", cd)?;
+        positive("air_density", a.air_density)?;
     }
-    let radius = ball.measured.as_ref().map_or(f64::NAN, |m| m.radius);
+    let radius = ball.ball.measured.as_ref().map_or(f64::NAN, |m| m.radius);
     let air = a.drag_coefficient.map(|cd| Air {
         density: a.air_density,
         drag_coefficient: cd,
     });
-    let flight = Flight::new(ball.params.mass, radius, air);
+    let flight = Flight::new(ball.ball.params.mass, radius, air);
     let from_drops = |drops: Vec<(f64, f64, usize)>| -> Vec<CorPoint> {
         drops
             .iter()
@@ -108,7 +120,7 @@ fn load(a: &FitArgs, source: &Source, ball: &Ball) -> anyhow::Result<Loaded> {
         }
         Source::Drops(pairs) => {
             for &(h, r) in pairs {
-                super::ball::check_positive("drop_height", h)?;
+                positive("drop_height", h)?;
                 if !(0.0..=h).contains(&r) {
                     anyhow::bail!(
                         "invalid rebound_height: {r} (must lie in [0, the drop height {h}])"
@@ -134,7 +146,7 @@ fn load(a: &FitArgs, source: &Source, ball: &Ball) -> anyhow::Result<Loaded> {
                 );
             }
             let pt = CorPoint {
-                v0: ball.params.v0,
+                v0: ball.ball.params.v0,
                 cor: *e,
                 cor_sd: None,
                 max_force: None,
@@ -163,7 +175,7 @@ fn fit_error(e: MultiFitError, data: &Loaded, free: &[Param]) -> anyhow::Error {
         .map(|f| format!("{f}:{}:1: ", data.end_line))
         .unwrap_or_default();
     match e {
-        MultiFitError::Params(p) => anyhow::anyhow!(param_message(&p)),
+        MultiFitError::Params(p) => p.into(),
         MultiFitError::NoPulse(m) => {
             anyhow::anyhow!("{}:{m}", data.file.clone().unwrap_or_default())
         }
@@ -177,7 +189,8 @@ fn fit_error(e: MultiFitError, data: &Loaded, free: &[Param]) -> anyhow::Error {
                 ""
             }
         ),
-        MultiFitError::NoAnswer => super::Runtime(anyhow::anyhow!("{e}")).into(),
+        // no answer is not the input's fault: exit 1 (cli::exit_code)
+        MultiFitError::NoAnswer => anyhow::Error::new(e),
         e => anyhow::anyhow!("{e}"),
     }
 }
@@ -191,17 +204,18 @@ pub fn run(
     check_outputs(a)?;
     let ball = a.ball.resolve(a.v0)?;
     let data = load(a, source, &ball)?;
-    let free =
-        free.unwrap_or_else(|| Param::defaults(data.trace.is_some(), data.points.len(), ball.law));
+    let free = free
+        .unwrap_or_else(|| Param::defaults(data.trace.is_some(), data.points.len(), ball.ball.law));
     let input = match &data.trace {
         Some(t) => FitData::Trace(t),
         None => FitData::Cor(&data.points),
     };
-    let f = fit(&ball.params, ball.law, input, &free).map_err(|e| fit_error(e, &data, &free))?;
+    let f = fit(&ball.ball.params, ball.ball.law, input, &free)
+        .map_err(|e| fit_error(e, &data, &free))?;
     // the data's speed: the trace's (the ball's v0), else the first row's
-    let v0 = data.points.first().map_or(ball.params.v0, |p| p.v0);
+    let v0 = data.points.first().map_or(ball.ball.params.v0, |p| p.v0);
     let fitted = ImpactParams { v0, ..f.params };
-    let r = simulate(&fitted, ball.law, &SolveOptions::default()).map_err(solve_error)?;
+    let r = simulate(&fitted, ball.ball.law, &SolveOptions::default())?;
     let report = super::fit_report::report(&ball, &data, &f, &fitted, &r);
     match a.format {
         FitFormat::Json => output::json(out, &report)?,
@@ -236,7 +250,7 @@ fn note(a: &FitArgs, out: &mut dyn Write, line: &str) -> anyhow::Result<()> {
 /// `--plot` and `--save` after the single-COR fit.
 pub fn single_extras(
     a: &FitArgs,
-    ball: &Ball,
+    ball: &ChosenBall,
     fitted: &ImpactParams,
     cor: f64,
     out: &mut dyn Write,
@@ -245,8 +259,13 @@ pub fn single_extras(
         return Ok(());
     }
     let data = load(a, &Source::Cor(cor), ball)?;
-    let f = fit(fitted, ball.law, FitData::Cor(&data.points), &[Param::KR])
-        .map_err(|e| fit_error(e, &data, &[Param::KR]))?;
+    let f = fit(
+        fitted,
+        ball.ball.law,
+        FitData::Cor(&data.points),
+        &[Param::KR],
+    )
+    .map_err(|e| fit_error(e, &data, &[Param::KR]))?;
     if let Some(p) = &a.plot {
         let svg = super::fit_plot::svg(ball, &data, &f, fitted)?;
         super::figure::write_file(p, &svg, a.force)?;

@@ -2,7 +2,7 @@
 //! (two figures of the shared SVG renderer, stacked). The user's data are labelled by their
 //! file name.
 
-use super::ball::Ball;
+use super::ball::ChosenBall;
 use super::fit_multi::Loaded;
 use crate::analysis::fit::MultiFit;
 use crate::analysis::sweep::lin_space;
@@ -13,16 +13,16 @@ use crate::solver::{SolveOptions, simulate};
 /// Points along the model's COR-against-speed curve.
 const CURVE_POINTS: usize = 120;
 
-fn subtitle(ball: &Ball, f: &MultiFit) -> String {
+fn subtitle(ball: &ChosenBall, f: &MultiFit) -> String {
     let fitted: Vec<String> = f
         .fitted
         .iter()
-        .map(|e| format!("{} = {}", e.name, crate::figure::short(e.value, 4)))
+        .map(|e| format!("{} = {}", e.name, crate::text::short(e.value, 4)))
         .collect();
     format!(
         "{}, {} law, fitted {}",
-        ball.name.as_deref().unwrap_or("ball"),
-        ball.law,
+        ball.preset().unwrap_or("ball"),
+        ball.ball.law,
         fitted.join(", ")
     )
 }
@@ -51,7 +51,7 @@ fn residuals(x: Axis, y_label: &str, label: &str, rms: String, points: Vec<(f64,
 }
 
 /// (data and model, residuals) for a trace.
-fn trace_figures(ball: &Ball, data: &Loaded, f: &MultiFit) -> Option<(Figure, Figure)> {
+fn trace_figures(ball: &ChosenBall, data: &Loaded, f: &MultiFit) -> Option<(Figure, Figure)> {
     let t = data.trace.as_ref()?;
     let measured: Vec<(f64, f64)> = t
         .time
@@ -83,7 +83,7 @@ fn trace_figures(ball: &Ball, data: &Loaded, f: &MultiFit) -> Option<(Figure, Fi
     );
     let rms = format!(
         "rms {} N over {} points",
-        crate::figure::short(f.rms_residual, 3),
+        crate::text::short(f.rms_residual, 3),
         f.points
     );
     let x = Axis::linear("t (ms)", "t", 1e3);
@@ -93,7 +93,7 @@ fn trace_figures(ball: &Ball, data: &Loaded, f: &MultiFit) -> Option<(Figure, Fi
 
 /// (data and model, residuals) for COR against speed.
 fn cor_figures(
-    ball: &Ball,
+    ball: &ChosenBall,
     data: &Loaded,
     f: &MultiFit,
     p: &ImpactParams,
@@ -106,7 +106,7 @@ fn cor_figures(
         .filter_map(|v0| {
             let r = simulate(
                 &ImpactParams { v0, ..*p },
-                ball.law,
+                ball.ball.law,
                 &SolveOptions::default(),
             )
             .ok()?;
@@ -132,7 +132,7 @@ fn cor_figures(
     );
     let rms = format!(
         "rms {} over {} points",
-        crate::figure::short(f.rms_residual, 3),
+        crate::text::short(f.rms_residual, 3),
         data.points.len()
     );
     let x = Axis::linear("v0 (m/s)", "v0", 1.0);
@@ -162,11 +162,17 @@ fn stack(top: &str, bottom: &str) -> String {
     )
 }
 
-pub fn svg(ball: &Ball, data: &Loaded, f: &MultiFit, p: &ImpactParams) -> anyhow::Result<String> {
+pub fn svg(
+    ball: &ChosenBall,
+    data: &Loaded,
+    f: &MultiFit,
+    p: &ImpactParams,
+) -> anyhow::Result<String> {
     let (top, bottom) = match trace_figures(ball, data, f) {
         Some(figs) => figs,
         None => cor_figures(ball, data, f, p)?,
     };
-    let render = |fig: &Figure| svg::render(fig).map_err(|e| super::Runtime(e.into()));
+    // a figure that cannot be drawn is not the input's fault: exit 1 (cli::exit_code)
+    let render = |fig: &Figure| svg::render(fig).map_err(anyhow::Error::from);
     Ok(stack(&render(&top)?, &render(&bottom)?))
 }

@@ -2,7 +2,7 @@
 //! atomically ([`crate::catalog::write`]) and never over an existing preset without
 //! `--force`. Its comments say what it was fitted to, when, and how well.
 
-use super::ball::Ball;
+use super::ball::ChosenBall;
 use super::fit::FitArgs;
 use super::fit_multi::Loaded;
 use crate::analysis::fit::MultiFit;
@@ -69,8 +69,8 @@ fn now_utc() -> String {
     )
 }
 
-fn header(ball: &Ball, data: &Loaded, f: &MultiFit, when: &str) -> Vec<String> {
-    let short = |x: f64| crate::figure::short(x, 4);
+fn header(ball: &ChosenBall, data: &Loaded, f: &MultiFit, when: &str) -> Vec<String> {
+    let short = |x: f64| crate::text::short(x, 4);
     let what = match &data.file {
         Some(file) => format!("the {} {file}", data.kind),
         None => format!("the {} given on the command line", data.kind),
@@ -78,12 +78,12 @@ fn header(ball: &Ball, data: &Loaded, f: &MultiFit, when: &str) -> Vec<String> {
     let mut h = vec![
         format!(
             "Fitted by `bouncelab fit` on {when} to {what} ({} points), {} law,",
-            f.points, ball.law
+            f.points, ball.ball.law
         ),
         format!(
             "starting from the preset '{}' ({} parameters); what was not fitted is that preset's.",
-            ball.name.as_deref().unwrap_or("ball"),
-            ball.source
+            ball.preset().unwrap_or("ball"),
+            ball.ball.source
         ),
     ];
     for e in &f.fitted {
@@ -113,7 +113,7 @@ fn header(ball: &Ball, data: &Loaded, f: &MultiFit, when: &str) -> Vec<String> {
 fn preset(
     base: &Preset,
     name: &str,
-    ball: &Ball,
+    ball: &ChosenBall,
     data: &Loaded,
     p: &ImpactParams,
     when: &str,
@@ -122,7 +122,7 @@ fn preset(
     Preset {
         name: name.into(),
         description: format!("fitted to {} ({}) on {when}", data.label, data.kind),
-        law: ball.law,
+        law: ball.ball.law,
         parameters: ParamSource::Adopted,
         measured: Measured {
             mass: base.measured.mass,
@@ -146,12 +146,16 @@ fn preset(
 pub fn save(
     name: &str,
     a: &FitArgs,
-    ball: &Ball,
+    ball: &ChosenBall,
     data: &Loaded,
     f: &MultiFit,
     p: &ImpactParams,
 ) -> anyhow::Result<PathBuf> {
-    let base = super::ball::select(a.ball.preset()?, a.ball.config.as_deref())?.preset;
+    let base = super::ball::select(
+        a.ball.choice.preset.as_deref(),
+        a.ball.choice.config.as_deref(),
+    )?
+    .preset;
     let when = now_utc();
     let preset = preset(&base, name, ball, data, p, &when);
     let text = preset.to_toml(&header(ball, data, f, &when));

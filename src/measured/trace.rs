@@ -180,7 +180,7 @@ fn median(v: &mut [f64]) -> f64 {
 }
 
 fn short(x: f64) -> String {
-    crate::figure::short(x, 3)
+    crate::text::short(x, 3)
 }
 
 #[cfg(test)]

@@ -1,7 +1,7 @@
 //! The end of a creep in closed form: a ball held on a weak dashpot's slow manifold, at an
 //! indentation the integrators cannot resolve, finished analytically.
 //!
-//! In contact, z̄' = ᾱ' − ȳ' with ȳ' = 2ζ(F̄ − λȳ) (MODEL.md §2, Eqs. 5–6 normalized) gives,
+//! In contact, z̄' = ᾱ' − ȳ' with ȳ' = 2ζ(F̄ − λȳ) (docs/model.md §2, Eqs. 5–6 normalized) gives,
 //! exactly, F̄ = λȳ + (v − z̄')/(2ζ) with v = ᾱ'. So the ball and the element move as
 //!     ȳ' = v − z̄',   v' = −λȳ − v/(2ζ) + z̄'/(2ζ),
 //! a linear system the contact drives only through z̄. Holding z̄ at z̄_f (z̄' = 0) leaves
@@ -12,8 +12,9 @@
 //!
 //! Why: a ball creeping out of a weak dashpot (λ < 1e-11, ζ > 100) sits at z̄ − z̄_f ~ 1e-16
 //! (Hertz) for ~1e5 ω0⁻¹, inside every integrator's tolerance of the 3/2-power kink at z̄_f.
-//! They cross z̄_f in their noise, phase after phase, until the step budget runs out (8 of
-//! 6 000 random impacts at λ ∈ (1e-15, 1e-11) went without an answer that way).
+//! Integrated, it would cross z̄_f in the noise, phase after phase, never reaching its
+//! separation within a bounded budget; closed, it answers (tests/solver_agreement.rs,
+//! `creeps_at_the_integrators_noise_floor_answer` and `closed_creeps_agree_with_the_exact_solver`).
 //!
 //! The error of holding z̄: the true motion differs by the forcing λ(z̄ − z̄_f) + z̄'/(2ζ). The
 //! response of v to a unit impulse of it is at most 1 (it starts at 1 and the damped
@@ -27,14 +28,16 @@
 //! times 2ζ to the slow mode's share, ≈ 4ζ²λ: the dashpot takes an early impulse up. Only the
 //! last window before the separation then counts in full, with z̄ as deep as the largest force
 //! asked in it makes the contact (`Creep::bound`), taken where the dashpot relaxes the contact
-//! many times over in that window (`RELAXATIONS`). An elastic–plastic ball at λ = 3.5e-15,
-//! ζ = 818 sits 9e-9 above z̄_f at its deepest: δ/ζ is 1.8e-3 of its e = 9.3e-9, the refined
-//! bound 1.4e-7; closed from three states up to 12 ω0⁻¹ apart, e agrees to 2e-11.
+//! many times over in that window (`RELAXATIONS`). The refined bound is what lets a creep close
+//! at all where δ/ζ alone would exceed `CREEP_TOL` of e (an elastic–plastic ball at
+//! λ = 3.5e-15, ζ = 818 sits 9e-9 above z̄_f at its deepest: δ/ζ is 1.8e-3 of e, the refined
+//! bound 1.4e-7). The closed form itself is checked against the integrated creep in
+//! `the_closed_form_follows_the_integrated_creep_to_its_separation` below.
 
 use super::{Impact, X};
 use crate::model::contact::Unloading;
 use crate::solver::propagator::pair_flow;
-use crate::solver::{EventKind, Outcome};
+use crate::solver::{EventKind, Outcome, Sample};
 use nalgebra::{Matrix2, Vector2};
 
 /// The creep's flow from one state.
@@ -122,6 +125,15 @@ impl Creep {
     }
 }
 
+/// Where a creep finished in closed form ends: the state at the separation (or where the ball
+/// was found at rest), and how many samples of the grid it covered.
+#[derive(Debug, Clone, Copy)]
+pub(super) struct Finished {
+    pub t: f64,
+    pub x: X,
+    pub covered: usize,
+}
+
 /// A creep finished in closed form.
 #[derive(Debug, Clone, Copy)]
 pub(super) struct Closed {
@@ -180,9 +192,9 @@ pub(super) fn close(
     let cor = leaves.map_or(0.0, |t| -creep.at(t)[1]);
     // A creep that asks less of the contact than its force at z̄_f + z_tol is below what the
     // integrators resolve: integrating it on is noise (crossings of z̄_f, a phase each, until
-    // the budget runs out), and the closure is the better answer whatever its bound. Seen on
-    // the linear law at λ = 3.3e-10, ζ = 1: the creep asks 1.7e-12 of a contact whose force
-    // is known to 3.7e-7 (z̄_f = 0.37 to 1e-10), leaving at e = 1.3e-9 after ~4e6 ω0⁻¹.
+    // the budget runs out), and the closure is the better answer whatever its bound
+    // (tests/solver_agreement.rs, `closed_creeps_agree_with_the_exact_solver`: λ = 3.3e-10,
+    // ζ = 1, a creep asking 1.7e-12 of a contact whose force is known to 3.7e-7).
     let unresolved = peak <= c.unloading_force(u.z_f + z_tol, u);
     (unresolved || error <= tol * cor.max(rest)).then_some(Closed {
         creep,
@@ -231,18 +243,18 @@ impl Creep {
 
 impl Closed {
     /// Finish the run from (t, x) along the creep: the state at the separation (or where the
-    /// ball was found at rest), the samples of `grid` it covers (how many, returned), the
-    /// contact's last work and the energy the creep dissipated, and whether the ball left
-    /// (moving out faster than `left`, as a separation the integrators find).
+    /// ball was found at rest), the samples of `grid` it covers, the contact's last work and
+    /// the energy the creep dissipated, and whether the ball left (moving out faster than
+    /// `left`, as a separation the integrators find).
     pub(super) fn finish(
         &self,
         imp: &Impact,
         (t, x): (f64, X),
         grid: &[f64],
         left: f64,
-        samples: &mut Vec<[f64; 4]>,
+        samples: &mut Vec<Sample>,
         out: &mut Outcome,
-    ) -> (f64, X, usize) {
+    ) -> Finished {
         let (c, u) = (&imp.contact, &self.u);
         let tau = self.leaves.unwrap_or(0.0);
         let w = self.creep.at(tau);
@@ -250,7 +262,12 @@ impl Closed {
         samples.extend(grid[..covered].iter().map(|&ts| {
             let w = self.creep.at((ts - t).max(0.0));
             let f = self.creep.force(&w).max(0.0);
-            [ts, f, c.unloading_indentation(f, u), u.z_f + w[0]]
+            Sample {
+                tau: ts,
+                force: f,
+                z: c.unloading_indentation(f, u),
+                alpha: u.z_f + w[0],
+            }
         }));
         // What the contact gives back from z̄ to z̄_f is work on the branch; the rest of the
         // mechanical energy the creep loses is the dashpot's: along the flow by its energy
@@ -263,9 +280,13 @@ impl Closed {
         out.contact_work += c.unloading_work(u.z_f, u) - c.unloading_work(x[0], u);
         out.rebound = self.leaves.is_some() && -w[1] > left;
         if out.rebound {
-            out.events.push((t + tau, EventKind::Separation, u.z_f));
+            out.event(t + tau, EventKind::Separation, u.z_f);
         }
-        (t + tau, [u.z_f, w[1], w[0], x[3] + lost], covered)
+        Finished {
+            t: t + tau,
+            x: [u.z_f, w[1], w[0], x[3] + lost],
+            covered,
+        }
     }
 }
 
