@@ -4,7 +4,6 @@
 use crate::model::contact::ContactLaw;
 use crate::model::materials::{self, Layer};
 use crate::model::params::ImpactParams;
-use crate::text::number;
 use serde::{Deserialize, Serialize};
 
 mod text;
@@ -142,6 +141,7 @@ pub struct Derived {
     pub surface_density: f64,
 }
 
+mod check;
 mod error;
 pub use error::PresetError;
 use error::{Bad, line_col, locate, one_line};
@@ -179,134 +179,9 @@ impl Preset {
     }
 
     /// Semantic checks: the first bad field.
+    /// The semantic checks, table by table, then the solver's own (see `check`).
     fn check(&self) -> Result<(), Bad> {
-        fn bad(table: &'static str, key: &'static str, message: String) -> Bad {
-            Bad {
-                table,
-                layer: None,
-                key,
-                message,
-            }
-        }
-        fn positive(table: &'static str, key: &'static str, v: f64) -> Result<(), Bad> {
-            if v.is_finite() && v > 0.0 && v < 1e15 {
-                Ok(())
-            } else {
-                Err(bad(
-                    table,
-                    key,
-                    format!("must be a positive finite number, got {}", number(v)),
-                ))
-            }
-        }
-        let opt = |table, key, v: Option<f64>| v.map_or(Ok(()), |v| positive(table, key, v));
-        // printed by every command and drawn in figures: no control character may ride along,
-        // but a description may keep the tabs and line breaks of its TOML, which command
-        // nothing (tests/escaping.rs)
-        for (key, text, allowed) in [
-            ("name", &self.name, &[][..]),
-            ("description", &self.description, &['\t', '\n'][..]),
-        ] {
-            if let Some((i, c)) = crate::sanitize::first_control(text, allowed) {
-                let msg = format!(
-                    "holds a control character, U+{:04X} (character {})",
-                    c as u32,
-                    i + 1
-                );
-                return Err(bad("", key, msg));
-            }
-        }
-        if self.name.trim().is_empty() || self.name.chars().any(|c| c.is_whitespace() || c == '/') {
-            return Err(bad(
-                "",
-                "name",
-                "must be a non-empty word without spaces or '/'".into(),
-            ));
-        }
-        let m = &self.measured;
-        positive("measured", "mass", m.mass)?;
-        positive("measured", "radius", m.radius)?;
-        positive("measured", "v0", m.v0)?;
-        if let Some(e) = m.cor
-            && !(e.is_finite() && (0.0..=1.0).contains(&e))
-        {
-            return Err(bad(
-                "measured",
-                "cor",
-                format!("must lie in [0, 1], got {}", number(e)),
-            ));
-        }
-        opt("measured", "max_force", m.max_force)?;
-        opt("measured", "contact_time", m.contact_time)?;
-        let mat = &self.material;
-        for (key, nu) in [
-            ("poisson", Some(mat.poisson)),
-            ("surface_poisson", mat.surface_poisson),
-        ] {
-            if let Some(nu) = nu
-                && !(nu.is_finite() && (0.0..=0.5).contains(&nu))
-            {
-                return Err(bad(
-                    "material",
-                    key,
-                    format!("must lie in [0, 0.5], got {}", number(nu)),
-                ));
-            }
-        }
-        opt("material", "modulus", mat.modulus)?;
-        opt("material", "surface_modulus", mat.surface_modulus)?;
-        opt("material", "density", mat.density)?;
-        opt("material", "yield_strength", mat.yield_strength)?;
-        for (i, l) in mat.layers.iter().enumerate() {
-            positive("material.layers", "thickness", l.thickness)
-                .and_then(|()| positive("material.layers", "modulus", l.modulus))
-                .and_then(|()| opt("material.layers", "density", l.density))
-                .map_err(|b| Bad {
-                    layer: Some(i),
-                    ..b
-                })?;
-        }
-        if mat.modulus.is_none() && mat.layers.is_empty() {
-            return Err(bad(
-                "material",
-                "modulus",
-                "is required when there are no layers".into(),
-            ));
-        }
-        if mat.kind == MaterialKind::Metal && mat.yield_strength.is_none() {
-            return Err(bad(
-                "material",
-                "yield_strength",
-                "is required for kind = \"metal\"".into(),
-            ));
-        }
-        let a = &self.adopted;
-        opt("adopted", "damping", a.damping)?;
-        opt("adopted", "z_p", a.z_p)?;
-        opt("adopted", "k_p", a.k_p)?;
-        if !(a.k_r.is_finite() && a.k_r >= 0.0 && a.k_r < 1e15) {
-            return Err(bad(
-                "adopted",
-                "k_r",
-                format!(
-                    "must be a non-negative finite number, got {}",
-                    number(a.k_r)
-                ),
-            ));
-        }
-        if self.parameters == ParamSource::Adopted {
-            for (key, v) in [("damping", a.damping), ("z_p", a.z_p), ("k_p", a.k_p)] {
-                if v.is_none() {
-                    return Err(bad(
-                        "adopted",
-                        key,
-                        "is required when parameters = \"adopted\"".into(),
-                    ));
-                }
-            }
-        }
-        // the commands' own check, so that load and use agree
-        usable::check(self)
+        check::preset(self)
     }
 
     /// Parameters from the material data (docs/model.md §4).

@@ -245,15 +245,7 @@ fn dispatch(cli: Cli, out: &mut dyn Write) -> anyhow::Result<()> {
             fit::run(&a, out)
         }
         Command::Presets(mut a) => {
-            if top.preset.is_some() || a.choice.preset.is_some() {
-                anyhow::bail!("presets lists every preset: --preset does not apply");
-            }
-            if let Some(c) = top.config {
-                if a.choice.config.is_some() {
-                    anyhow::bail!("--config given twice");
-                }
-                a.choice.config = Some(c);
-            }
+            merge_config(top, &mut a.choice)?;
             presets::run(&a, out)
         }
         Command::Figure(mut a) => {
@@ -280,6 +272,21 @@ fn dispatch(cli: Cli, out: &mut dyn Write) -> anyhow::Result<()> {
             standards::run(&a, out)
         }
     }
+}
+
+/// `bouncelab --config F presets` means `bouncelab presets --config F`; `presets` takes no
+/// `--preset`, before the subcommand or after it.
+fn merge_config(top: ball::PresetChoice, choice: &mut ball::PresetChoice) -> anyhow::Result<()> {
+    if top.preset.is_some() || choice.preset.is_some() {
+        anyhow::bail!("presets lists every preset: --preset does not apply");
+    }
+    if let Some(c) = top.config {
+        if choice.config.is_some() {
+            anyhow::bail!("--config given twice");
+        }
+        choice.config = Some(c);
+    }
+    Ok(())
 }
 
 /// `bouncelab --preset golf run` means `bouncelab run --preset golf`.

@@ -3,6 +3,7 @@
 
 use super::ball::ChosenBall;
 use super::output::{difference, given, human, table};
+use crate::preset::Measured;
 use crate::solver::{EnergyBudget, ImpactResponse, Method};
 use std::io::{self, Write};
 
@@ -141,7 +142,6 @@ fn write_comparison(
     r: &ImpactResponse,
     units: &Units,
 ) -> io::Result<()> {
-    let (force, time, length) = (&units.force, &units.time, &units.length);
     let v0 = b.ball.params.v0;
     // the measured values are comparable only at the measured speed
     let measured = b
@@ -159,6 +159,27 @@ fn write_comparison(
     } else {
         vec!["".into(), "model".into()]
     }];
+    rows.extend(comparison_rows(r, measured, units));
+    table(out, "  ", &rows)?;
+    if let Some(m) = b.ball.measured.as_ref().filter(|m| m.v0 != v0) {
+        writeln!(
+            out,
+            "  (measured values are at v0 = {} m/s; not compared)",
+            given(m.v0, 6)
+        )?;
+    }
+    Ok(())
+}
+
+/// COR, peak force, contact time and indentations: the model's, and where `measured` has one,
+/// the measured value and the difference.
+fn comparison_rows(
+    r: &ImpactResponse,
+    measured: Option<&Measured>,
+    units: &Units,
+) -> Vec<Vec<String>> {
+    let (force, time, length) = (&units.force, &units.time, &units.length);
+    let mut rows = Vec::new();
     let mut compare = |name: &str, model: String, meas: Option<(f64, f64, String)>| {
         let mut r = vec![name.to_string(), model];
         if let (Some(_), Some((mo, me, shown))) = (measured, meas) {
@@ -201,15 +222,7 @@ fn write_comparison(
         length.show(r.permanent_indentation, 4),
         None,
     );
-    table(out, "  ", &rows)?;
-    if let Some(m) = b.ball.measured.as_ref().filter(|m| m.v0 != v0) {
-        writeln!(
-            out,
-            "  (measured values are at v0 = {} m/s; not compared)",
-            given(m.v0, 6)
-        )?;
-    }
-    Ok(())
+    rows
 }
 
 /// Where the energy went (mJ for a preset).
