@@ -14,6 +14,7 @@ pub mod drop;
 #[doc(hidden)]
 pub mod fault;
 pub mod figure;
+pub mod measured;
 pub mod model;
 pub mod preset;
 pub mod sanitize;

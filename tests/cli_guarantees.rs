@@ -79,7 +79,7 @@ fn a_failure_leaves_no_new_file_and_a_rerun_is_not_refused() {
         "5",
         "--out",
         "a.svg",
-        "--data",
+        "--csv-out",
         "a.csv",
     ];
     let (code, err) = limited(d, 20, &args);
@@ -94,7 +94,7 @@ fn a_failure_leaves_no_new_file_and_a_rerun_is_not_refused() {
             "force-time",
             "--out",
             "b.svg",
-            "--data",
+            "--csv-out",
             "/proc/b.csv",
         ],
     );

@@ -59,6 +59,8 @@ pub struct App {
     save_out: Option<SaveRequest>,
     /// The drop view's sequence and animation clock.
     drop: DropView,
+    /// Measured data drawn on the charts (`bouncelab --measured FILE`).
+    measured: Vec<crate::figure::explorer::MeasuredOverlay>,
 }
 
 impl App {
@@ -96,6 +98,7 @@ impl App {
             export_wanted: false,
             save_out: None,
             drop: DropView::new(false),
+            measured: Vec::new(),
         };
         app.refresh();
         app
@@ -106,6 +109,12 @@ impl App {
     /// this (tests), `refresh` runs them itself.
     pub fn with_background_sweeps(mut self) -> App {
         self.background = true;
+        self
+    }
+
+    /// Draw the user's measured data on the charts it belongs to.
+    pub fn with_measured(mut self, m: Vec<crate::figure::explorer::MeasuredOverlay>) -> App {
+        self.measured = m;
         self
     }
 

@@ -49,13 +49,22 @@ pub fn motion_wanted() -> bool {
 /// every exit path: normal return, error, and panic (ratatui's hook restores it, then chains
 /// the previous hook).
 pub fn run(preset: Preset) -> anyhow::Result<()> {
+    run_with_measured(preset, Vec::new())
+}
+
+/// [`run`], with measured data drawn on the charts (`bouncelab --measured FILE`).
+pub fn run_with_measured(
+    preset: Preset,
+    measured: Vec<crate::figure::explorer::MeasuredOverlay>,
+) -> anyhow::Result<()> {
     if !std::io::stdout().is_terminal() {
         anyhow::bail!("the explorer needs a terminal (stdout is not one); see `bouncelab --help`");
     }
     remove_stale_temporaries();
     let mut app = app::App::new(preset, color_wanted())
         .with_background_sweeps()
-        .with_motion(motion_wanted());
+        .with_motion(motion_wanted())
+        .with_measured(measured);
     let mut terminal = ratatui::try_init()
         .inspect_err(|_| {
             if terminal::is_raw_mode_enabled().unwrap_or(false) {
