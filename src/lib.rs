@@ -12,6 +12,7 @@ pub mod cli;
 pub mod fault;
 pub mod figure;
 pub mod model;
+pub mod peers;
 pub mod preset;
 pub mod solver;
 pub mod tui;
