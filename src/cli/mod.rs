@@ -9,6 +9,7 @@ pub mod ball;
 pub mod figure;
 pub mod fit;
 pub mod output;
+pub mod peers;
 pub mod presets;
 pub mod reproduce;
 pub mod run;
@@ -58,6 +59,10 @@ pub enum Command {
     Figure(figure::FigureArgs),
     /// Write every figure, its data and a report of model against experiment into a folder
     Reproduce(reproduce::ReproduceArgs),
+    /// The field's contact models (Kelvin–Voigt, Tsuji, Hunt–Crossley) calibrated to a COR,
+    /// beside this model; --export writes them for LAMMPS, LIGGGHTS, Chrono, YADE or MuJoCo
+    #[command(allow_negative_numbers = true)]
+    Peers(peers::PeersArgs),
 }
 
 /// A failure that is not the input's fault: exit code 1.
@@ -194,6 +199,10 @@ fn dispatch(cli: Cli, out: &mut dyn Write) -> anyhow::Result<()> {
         Command::Figure(mut a) => {
             merge(&cli.preset, &cli.config, &mut a.ball)?;
             figure::run(&a, out)
+        }
+        Command::Peers(mut a) => {
+            merge(&cli.preset, &cli.config, &mut a.ball)?;
+            peers::run(&a, out)
         }
         Command::Reproduce(a) => {
             if top.is_some() {
