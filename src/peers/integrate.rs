@@ -59,6 +59,11 @@ pub trait Law {
     fn horizon(&self) -> f64 {
         1e4
     }
+    /// Whether the ball is known never to leave once it has turned (unloading starts): the run
+    /// then ends there with no rebound.
+    fn stays_after_turning(&self) -> bool {
+        false
+    }
 }
 
 /// The end of one normalized impact.
@@ -161,6 +166,12 @@ pub fn run<L: Law>(law: &L, sample_every: f64, samples: &mut Vec<[f64; 3]>) -> R
         let rising1 = law.force_rate(y1[0], y1[1], -f1) > 0.0;
         refine_peaks(law, &mut out, at, hs, (y1, rising, rising1));
         rising = rising1;
+        if y1[1] <= 0.0 && law.stays_after_turning() {
+            out.tau = out.tau_unload;
+            out.end = [out.x_max, 0.0];
+            out.f_end = law.force(out.x_max, 0.0);
+            return out;
+        }
         out.f_max = out.f_max.max(f1);
         out.x_max = out.x_max.max(y1[0]);
         tau = if landing { next_sample } else { tau + hs };
