@@ -69,6 +69,9 @@ impl Law for KelvinVoigtNoTension {
     fn force(&self, x: f64, v: f64) -> f64 {
         (x + 2.0 * self.zeta * v).max(0.0)
     }
+    fn drive(&self, x: f64, v: f64) -> f64 {
+        x + 2.0 * self.zeta * v
+    }
     fn end(&self, x: f64, v: f64) -> f64 {
         x + 2.0 * self.zeta * v
     }
@@ -82,8 +85,11 @@ impl Law for KelvinVoigtNoTension {
 
 impl Law for Tsuji {
     fn force(&self, x: f64, v: f64) -> f64 {
+        self.drive(x, v).max(0.0)
+    }
+    fn drive(&self, x: f64, v: f64) -> f64 {
         let (x15, r) = hertz(x);
-        (x15 + self.alpha * r.sqrt() * v).max(0.0)
+        x15 + self.alpha * r.sqrt() * v
     }
     /// F̄ / x^{1/4} = x^{5/4} + α x': crosses zero transversally even when α = 0, where F̄
     /// itself would touch zero with a vanishing slope.
@@ -104,6 +110,10 @@ impl Law for Tsuji {
         let q = r.sqrt();
         1.5 * r * v + self.alpha * (0.25 * v * v / (q * q * q) + q * a)
     }
+    /// x^{1/4} = w for x = w⁴.
+    fn smoothing_power(&self) -> Option<i32> {
+        Some(4)
+    }
 }
 
 impl Law for HuntCrossley {
@@ -119,5 +129,12 @@ impl Law for HuntCrossley {
     fn force_rate(&self, x: f64, v: f64, a: f64) -> f64 {
         let (x15, r) = hertz(x);
         1.5 * r * v * (1.0 + self.chi * v) + x15 * self.chi * a
+    }
+    /// x^{3/2} = w³ for x = w².
+    fn smoothing_power(&self) -> Option<i32> {
+        Some(2)
+    }
+    fn ends_at_zero(&self) -> bool {
+        true
     }
 }
