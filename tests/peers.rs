@@ -225,5 +225,3 @@ fn bad_input_names_the_field() {
     let e = impact(PeerModel::Tsuji, &ok, -1.0, 0).unwrap_err();
     assert!(e.to_string().contains("damping"), "{e}");
 }
-#[test]
-fn dbg_kvnt() { let e = cor(PeerModel::KelvinVoigtNoTension, 0.05).unwrap(); eprintln!("{e:.17} {:.17}", kelvin_voigt_no_tension_cor(0.05)); }

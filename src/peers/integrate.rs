@@ -360,15 +360,16 @@ fn refine_peaks<L: Law>(
         out.f_max = out.f_max.max(law.force(yt[0], yt[1]));
     }
     if rising0 && !rising1 {
-        // the peak is where dF̄/dτ changes sign; F̄ is flat there, so locating it to 1e-7 of
-        // the step puts F̄_m within ~1e-14 of its value (Brent: no second derivative needed)
+        // the peak is where dF̄/dτ changes sign; F̄ is flat there, so locating it to 1e-5 of
+        // the step (≤ 1e-6 in τ) puts F̄_m within ~1e-12 of its value (F̄'' = O(1); Brent: no
+        // second derivative needed)
         let rate = |s: f64| {
             let yp = if s == 0.0 { y } else { step(law, y, k0, s).0 };
             law.force_rate(yp[0], yp[1], -law.drive(yp[0], yp[1]))
         };
         let (r0, r1) = (rate(0.0), rate(h));
         let s = if r0 > 0.0 && r1 <= 0.0 {
-            brent(rate, 0.0, h, r0, r1, 1e-7 * h)
+            brent(rate, 0.0, h, r0, r1, 1e-5 * h)
         } else {
             h
         };
