@@ -58,7 +58,15 @@ fn json_lists_every_model_and_rule() {
 /// their damping does not depend on v0 (Kelvin–Voigt, Tsuji) or is χ (Hunt–Crossley).
 #[test]
 fn cor_and_v0_set_the_target_and_speed() {
-    let a = json(&["peers", "--preset", "superball", "--cor", "0.5", "--format", "json"]);
+    let a = json(&[
+        "peers",
+        "--preset",
+        "superball",
+        "--cor",
+        "0.5",
+        "--format",
+        "json",
+    ]);
     let b = json(&[
         "peers",
         "--preset",
@@ -148,11 +156,19 @@ fn christoforou_yigit_targets() {
 
 #[test]
 fn bad_input_is_one_line_and_exit_2() {
-    assert_bad(&bl(&["peers", "--preset", "golf", "--cor", "1.5"]), &["cor"]);
-    assert_bad(&bl(&["peers", "--preset", "golf", "--cor", "nan"]), &["cor"]);
+    assert_bad(
+        &bl(&["peers", "--preset", "golf", "--cor", "1.5"]),
+        &["cor"],
+    );
+    assert_bad(
+        &bl(&["peers", "--preset", "golf", "--cor", "nan"]),
+        &["cor"],
+    );
     assert_bad(&bl(&["peers", "--preset", "golf", "--v0", "-3"]), &["v0"]);
     assert_bad(
-        &bl(&["peers", "--preset", "golf", "--cor", "0", "--format", "json"]),
+        &bl(&[
+            "peers", "--preset", "golf", "--cor", "0", "--format", "json",
+        ]),
         &["cor", "out of reach"],
     );
     assert_bad(&bl(&["peers", "--preset", "nosuchball"]), &["nosuchball"]);

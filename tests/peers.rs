@@ -15,10 +15,17 @@ fn kelvin_voigt_with_tension_closed_form() {
     for i in 0..=40 {
         let zeta = 0.025 * i as f64;
         let e = cor(PeerModel::KelvinVoigt, zeta).unwrap();
-        assert!((e - kelvin_voigt_cor(zeta)).abs() < 1e-11, "ζ = {zeta}: {e}");
+        assert!(
+            (e - kelvin_voigt_cor(zeta)).abs() < 1e-11,
+            "ζ = {zeta}: {e}"
+        );
     }
     for zeta in [1.0, 1.5, 4.0] {
-        assert_eq!(cor(PeerModel::KelvinVoigt, zeta).unwrap(), 0.0, "ζ = {zeta}");
+        assert_eq!(
+            cor(PeerModel::KelvinVoigt, zeta).unwrap(),
+            0.0,
+            "ζ = {zeta}"
+        );
     }
     let ball = PeerBall {
         mass: 0.05,
@@ -81,9 +88,7 @@ impl Si {
         match self.model {
             PeerModel::KelvinVoigt => b.k * d + self.damping * v,
             PeerModel::KelvinVoigtNoTension => (b.k * d + self.damping * v).max(0.0),
-            PeerModel::Tsuji => {
-                (b.k_h * dp.powf(1.5) + self.damping * dp.powf(0.25) * v).max(0.0)
-            }
+            PeerModel::Tsuji => (b.k_h * dp.powf(1.5) + self.damping * dp.powf(0.25) * v).max(0.0),
             PeerModel::HuntCrossley => {
                 (b.k_h * dp.powf(1.5) * (1.0 + self.damping * v / b.v0)).max(0.0)
             }
@@ -186,9 +191,20 @@ fn histories_span_the_contact() {
         assert_eq!(h.t[0], 0.0);
         assert_eq!(*h.t.last().unwrap(), r.contact_time.unwrap());
         let dt = h.t[1] - h.t[0];
-        assert!(h.t.windows(2).all(|w| ((w[1] - w[0]) - dt).abs() < 1e-9 * dt), "{model}");
-        assert!(h.force.iter().all(|&f| f <= r.max_force * (1.0 + 1e-12)), "{model}");
-        assert!(h.indentation.iter().all(|&z| z <= r.max_indentation * (1.0 + 1e-12)));
+        assert!(
+            h.t.windows(2)
+                .all(|w| ((w[1] - w[0]) - dt).abs() < 1e-9 * dt),
+            "{model}"
+        );
+        assert!(
+            h.force.iter().all(|&f| f <= r.max_force * (1.0 + 1e-12)),
+            "{model}"
+        );
+        assert!(
+            h.indentation
+                .iter()
+                .all(|&z| z <= r.max_indentation * (1.0 + 1e-12))
+        );
         if model.is_hertzian() {
             assert_eq!(h.force[0], 0.0, "{model}");
         }

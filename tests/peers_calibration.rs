@@ -71,11 +71,17 @@ fn rules_reproduce_the_published_trend() {
         let fl = produced(Rule::Flores, e) - e;
         let go = produced(Rule::Gonthier, e) - e;
         assert!(hc > 0.1 && ln > hc, "e = {e}: HC +{hc}, LN +{ln}");
-        assert!(fl.abs() < 0.35 * hc && go.abs() < 0.35 * hc, "e = {e}: {fl} {go} vs {hc}");
+        assert!(
+            fl.abs() < 0.35 * hc && go.abs() < 0.35 * hc,
+            "e = {e}: {fl} {go} vs {hc}"
+        );
     }
     let near = |rule| (produced(rule, 0.95) - 0.95).abs();
     for rule in [Rule::HuntCrossley, Rule::LankaraniNikravesh] {
-        assert!(near(rule) < 0.005 && near(rule) < near(Rule::Gonthier), "{rule}");
+        assert!(
+            near(rule) < 0.005 && near(rule) < near(Rule::Gonthier),
+            "{rule}"
+        );
     }
     assert!(near(Rule::Flores) < 0.005 && near(Rule::Gonthier) < 0.02);
 }
@@ -129,9 +135,6 @@ fn calibrates_to_the_christoforou_yigit_ball() {
         assert!((r.response.cor - target).abs() <= COR_TOL, "{}", r.model);
         assert!(r.response.max_force > 50.0 && r.response.contact_time.unwrap() > 1e-3);
     }
-    let hc_rule = rows
-        .iter()
-        .find(|r| r.rule == Rule::HuntCrossley)
-        .unwrap();
+    let hc_rule = rows.iter().find(|r| r.rule == Rule::HuntCrossley).unwrap();
     assert!(hc_rule.response.cor > target + 0.01);
 }

@@ -22,9 +22,14 @@ fn ball() -> PeerBall {
 fn numbers_after(text: &str, line_has: &str, not: &str, key: &str, n: usize) -> Vec<f64> {
     let line = text
         .lines()
-        .find(|l| l.contains(line_has) && (not.is_empty() || !l.contains(not)) && !l.starts_with('#'))
+        .find(|l| {
+            l.contains(line_has) && (not.is_empty() || !l.contains(not)) && !l.starts_with('#')
+        })
         .unwrap_or_else(|| panic!("no line with {line_has:?} in\n{text}"));
-    let rest = &line[line.find(key).unwrap_or_else(|| panic!("{key:?} in {line}")) + key.len()..];
+    let rest = &line[line
+        .find(key)
+        .unwrap_or_else(|| panic!("{key:?} in {line}"))
+        + key.len()..];
     rest.split(|c: char| c.is_whitespace() || c == ',' || c == ')' || c == '"' || c == '(')
         .filter(|s| !s.is_empty())
         .take(n)
@@ -39,7 +44,10 @@ fn beta(e: f64) -> f64 {
 }
 
 fn close(e: f64, target: f64, what: &str) {
-    assert!((e - target).abs() < 1e-9, "{what}: COR {e} for target {target}");
+    assert!(
+        (e - target).abs() < 1e-9,
+        "{what}: COR {e} for target {target}"
+    );
 }
 
 #[test]
@@ -55,7 +63,11 @@ fn lammps_snippet_gives_the_target() {
         close(cor(PeerModel::KelvinVoigt, zeta).unwrap(), target, "hooke");
         let clip = numbers_after(&t, "limit_damping zplane", "hertz", "hooke", 2);
         let zeta = clip[1] / (2.0 * (b.mass * clip[0]).sqrt());
-        close(cor(PeerModel::KelvinVoigtNoTension, zeta).unwrap(), target, "hooke clipped");
+        close(
+            cor(PeerModel::KelvinVoigtNoTension, zeta).unwrap(),
+            target,
+            "hooke clipped",
+        );
         // hertz k_n e: F = k_n √(R δ) δ; coeff_restitution: η = √(3/2)·2√(5/6) β √(m k_n a)
         let h = numbers_after(&t, "granular hertz", "", "hertz", 2);
         let k_h = h[0] * b.radius.sqrt();
@@ -90,10 +102,15 @@ fn liggghts_and_chrono_snippets_give_the_target() {
         let e_in = if code == Code::Liggghts {
             numbers_after(&t, "coefficientRestitution", "", "peratomtypepair 2", 1)[0]
         } else {
-            let line = t.lines().find(|l| l.contains("// mat->SetRestitution")).unwrap();
+            let line = t
+                .lines()
+                .find(|l| l.contains("// mat->SetRestitution"))
+                .unwrap();
             line.split(['(', ')']).nth(1).unwrap().parse().unwrap()
         };
-        let eta = 2.0 * (5.0f64 / 6.0).sqrt() * beta(e_in)
+        let eta = 2.0
+            * (5.0f64 / 6.0).sqrt()
+            * beta(e_in)
             * (2.0 * y_star * b.radius.sqrt() * b.mass).sqrt();
         let alpha = eta / (b.mass * k_h).sqrt();
         close(cor(PeerModel::Tsuji, alpha).unwrap(), 0.84, "hertz");
@@ -119,7 +136,11 @@ fn yade_and_mujoco_snippets_give_the_target() {
     let cn = numbers_after(&t, "ViscElMat(", "", "cn=", 1)[0] / 2.0;
     assert_eq!(kn, b.k);
     let zeta = cn / (2.0 * (b.mass * kn).sqrt());
-    close(cor(PeerModel::KelvinVoigtNoTension, zeta).unwrap(), 0.49, "yade");
+    close(
+        cor(PeerModel::KelvinVoigtNoTension, zeta).unwrap(),
+        0.49,
+        "yade",
+    );
     // MuJoCo direct solref at d = dmin = dmax: a = −damping v − stiffness r, per unit mass
     let t = snippet(Code::Mujoco, &s);
     let sol = numbers_after(&t, "<geom", "", "solref=\"", 2);
@@ -129,7 +150,11 @@ fn yade_and_mujoco_snippets_give_the_target() {
     let mass = numbers_after(&t, "<geom", "", "mass=\"", 1)[0];
     assert!((stiffness * mass - b.k).abs() < 1e-9 * b.k);
     let zeta = damping / (2.0 * stiffness.sqrt());
-    close(cor(PeerModel::KelvinVoigtNoTension, zeta).unwrap(), 0.49, "mujoco");
+    close(
+        cor(PeerModel::KelvinVoigtNoTension, zeta).unwrap(),
+        0.49,
+        "mujoco",
+    );
     // well-formed XML (comments without "--" inside) once put in a document
     let doc = format!("<mujoco><worldbody>{t}</worldbody></mujoco>");
     roxmltree::Document::parse(&doc).unwrap_or_else(|e| panic!("{e}: {t}"));

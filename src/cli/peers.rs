@@ -156,8 +156,8 @@ fn target(a: &PeersArgs, b: &Ball) -> anyhow::Result<(f64, &'static str)> {
             let speeds: Vec<f64> = (0..9)
                 .map(|i| p.v0 * 4f64.powf((i as f64 - 4.0) / 4.0))
                 .collect();
-            let table = calibrate::christoforou_yigit_curve(p, b.law, &speeds)
-                .map_err(solve_error)?;
+            let table =
+                calibrate::christoforou_yigit_curve(p, b.law, &speeds).map_err(solve_error)?;
             // none of the peers' COR depends on v0: the least-squares COR is the mean
             let mean = table.iter().map(|t| t.1).sum::<f64>() / table.len() as f64;
             Ok((mean, "christoforou-yigit-curve"))

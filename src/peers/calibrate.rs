@@ -98,11 +98,7 @@ pub struct Calibrated {
 
 /// Every model under every rule published for it, calibrated to `target` at `ball.v0`, with
 /// `samples` history points per impact.
-pub fn compare(
-    ball: &PeerBall,
-    target: f64,
-    samples: usize,
-) -> Result<Vec<Calibrated>, PeerError> {
+pub fn compare(ball: &PeerBall, target: f64, samples: usize) -> Result<Vec<Calibrated>, PeerError> {
     ball.validate()?;
     check_target(target)?;
     let mut rows = Vec::new();

@@ -184,10 +184,14 @@ fn w_phase<L: Law>(
     let mut h = 0.25 * (w1 - w0);
     let mut steps = 0;
     while steps < 1000 {
-        let hs = if (w + h - w1) * (w1 - w0).signum() > 0.0 { w1 - w } else { h };
+        let hs = if (w + h - w1) * (w1 - w0).signum() > 0.0 {
+            w1 - w
+        } else {
+            h
+        };
         let (s1, err) = step_with(&f, (w, s), f(w, s), hs);
         steps += 1;
-        if !(err <= 1.0) || s1[1].abs() < 0.25 * v0.abs() {
+        if err.is_nan() || err > 1.0 || s1[1].abs() < 0.25 * v0.abs() {
             h = hs / 3.0;
             continue;
         }
@@ -217,7 +221,13 @@ pub fn run<L: Law>(law: &L, sample_every: f64, samples: &mut Vec<[f64; 3]>) -> R
         let stop = |x: f64, v: f64| {
             x >= W_START || v < 0.6 || law.force_rate(x, v, -law.drive(x, v)) <= 0.0
         };
-        let (w, t, v, n) = w_phase(law, p, (0.0, W_START.powf(1.0 / p as f64)), (0.0, 1.0), stop);
+        let (w, t, v, n) = w_phase(
+            law,
+            p,
+            (0.0, W_START.powf(1.0 / p as f64)),
+            (0.0, 1.0),
+            stop,
+        );
         (tau, y, h) = (t, [w.powi(p), v], 0.05);
         out.steps += n;
         out.f_max = law.force(y[0], y[1]);
@@ -254,8 +264,12 @@ pub fn run<L: Law>(law: &L, sample_every: f64, samples: &mut Vec<[f64; 3]>) -> R
             h = s / (err_s.powf(0.125) / 0.9).clamp(1.5, 3.0);
             continue;
         }
-        if !(err <= 1.0) {
-            let fac = if err.is_finite() { (err.powf(0.125) / 0.9).min(3.0) } else { 3.0 };
+        if err.is_nan() || err > 1.0 {
+            let fac = if err.is_finite() {
+                (err.powf(0.125) / 0.9).min(3.0)
+            } else {
+                3.0
+            };
             h = hs / fac.max(1.5);
             continue;
         }
@@ -386,10 +400,8 @@ mod tests {
     #[test]
     fn tableau_is_the_crates() {
         let t = ButcherTableau::<f64, 12, 16>::dop853();
-        for i in 0..12 {
-            for j in 0..12 {
-                assert_eq!(A[i][j], t.a[i][j], "a[{i}][{j}]");
-            }
+        for (i, row) in A.iter().enumerate() {
+            assert_eq!(row[..], t.a[i][..12], "a[{i}]");
         }
         assert_eq!(B, t.b);
         assert_eq!(C[..], t.c[..12]);

@@ -118,7 +118,11 @@ impl PeerBall {
 
     /// The model's stiffness: k or K_h.
     pub fn stiffness(&self, model: PeerModel) -> f64 {
-        if model.is_hertzian() { self.k_h } else { self.k }
+        if model.is_hertzian() {
+            self.k_h
+        } else {
+            self.k
+        }
     }
 
     /// SI damping from the normalized one (laws.rs): η = 2ζ√(mk), η = α√(m K_h), χ = χ.
@@ -285,7 +289,11 @@ fn response(
         max_indentation: r.x_max * l,
         // what is left of δ when the force lets go (Tsuji, clipped Kelvin–Voigt): the ball
         // leaves before δ is back to 0; it recovers in free flight, nothing is permanent
-        permanent_indentation: if r.rebound { r.end[0].max(0.0) * l } else { 0.0 },
+        permanent_indentation: if r.rebound {
+            r.end[0].max(0.0) * l
+        } else {
+            0.0
+        },
         element_displacement: 0.0,
         max_force_normalized: r.f_max,
         element_displacement_normalized: 0.0,
