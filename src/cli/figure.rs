@@ -36,6 +36,10 @@ pub enum FigureName {
     ForceTime,
     /// Contact force against indentation and displacement for one ball (Figs. 6, 8)
     ForceDisplacement,
+    /// The field's contact models calibrated to the ball: COR against speed (docs/peers.md)
+    PeersCorVelocity,
+    /// The field's contact models calibrated to the ball: force against time at v0
+    PeersForceTime,
 }
 
 impl FigureName {
@@ -46,6 +50,8 @@ impl FigureName {
             FigureName::CorVelocity => "cor-velocity",
             FigureName::ForceTime => "force-time",
             FigureName::ForceDisplacement => "force-displacement",
+            FigureName::PeersCorVelocity => "peers-cor-velocity",
+            FigureName::PeersForceTime => "peers-force-time",
         }
     }
 }
@@ -88,9 +94,22 @@ fn check_applicable(a: &FigureArgs) -> anyhow::Result<()> {
     use FigureName::*;
     let given = [
         ("--lambda", a.lambda.is_some(), &[CorZeta, ForceZeta][..]),
-        ("--v0", a.v0.is_some(), &[ForceTime, ForceDisplacement][..]),
-        ("--from", a.from.is_some(), &[CorVelocity][..]),
-        ("--to", a.to.is_some(), &[CorVelocity][..]),
+        (
+            "--v0",
+            a.v0.is_some(),
+            &[
+                ForceTime,
+                ForceDisplacement,
+                PeersCorVelocity,
+                PeersForceTime,
+            ][..],
+        ),
+        (
+            "--from",
+            a.from.is_some(),
+            &[CorVelocity, PeersCorVelocity][..],
+        ),
+        ("--to", a.to.is_some(), &[CorVelocity, PeersCorVelocity][..]),
     ];
     for (opt, present, valid) in given {
         if present && !valid.contains(&a.name) {
@@ -284,6 +303,7 @@ fn build(a: &FigureArgs) -> anyhow::Result<Figure> {
             let (t, d) = history_figures(&b, a.points.unwrap_or(HISTORY_SAMPLES))?;
             Ok(if a.name == ForceTime { t } else { d })
         }
+        PeersCorVelocity | PeersForceTime => super::peers::figure(a),
     }
 }
 

@@ -8,6 +8,7 @@
 pub mod csv;
 pub mod history;
 pub mod paper;
+pub mod peers;
 pub mod report;
 pub mod svg;
 mod ticks;
