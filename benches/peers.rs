@@ -9,7 +9,7 @@ fn main() {
     divan::main();
 }
 
-/// The golf ball's adopted stiffnesses (MODEL.md §7).
+/// The golf ball's adopted stiffnesses (docs/model.md §7).
 fn golf() -> PeerBall {
     PeerBall {
         mass: 0.0456,

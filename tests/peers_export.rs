@@ -8,7 +8,7 @@ use bouncelab::peers::{PeerBall, PeerModel, cor};
 use std::f64::consts::PI;
 
 fn ball() -> PeerBall {
-    // the golf ball's adopted set (MODEL.md §7)
+    // the golf ball's adopted set (docs/model.md §7)
     PeerBall {
         mass: 0.0456,
         radius: 0.02075,

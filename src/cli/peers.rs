@@ -187,7 +187,7 @@ fn peer_row(ball: &PeerBall, c: &Calibrated) -> Row {
 }
 
 /// The Christoforou–Yigit model of the same ball: K_r fitted to the target (rule `exact`,
-/// MODEL.md §4), or, when no K_r reaches it at this ζ, the preset's own K_r (rule `preset`).
+/// docs/model.md §4), or, when no K_r reaches it at this ζ, the preset's own K_r (rule `preset`).
 fn christoforou_yigit_row(b: &Ball, target: f64) -> anyhow::Result<Row> {
     let (params, rule) = match fit_k_r(&b.params, b.law, target) {
         Ok(f) => (

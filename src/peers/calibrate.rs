@@ -165,7 +165,7 @@ pub fn fit_table(model: PeerModel, table: &[(f64, f64)]) -> Result<TableFit, Pee
     })
 }
 
-/// The Christoforou–Yigit model's COR for the same ball at `v0` (MODEL.md §2).
+/// The Christoforou–Yigit model's COR for the same ball at `v0` (docs/model.md §2).
 pub fn christoforou_yigit_cor(
     params: &ImpactParams,
     law: ContactLaw,

@@ -58,7 +58,7 @@ impl Law for KelvinVoigt {
     }
     /// Overdamped (ζ ≥ 1): x = (e^{r₁τ} − e^{r₂τ})/(r₁ − r₂), r₁,₂ = −ζ ± √(ζ² − 1), is
     /// positive for every τ > 0, so the ball creeps back towards x = 0 without ever reaching
-    /// it: no rebound (e = 0, MODEL.md §2's convention), decided at the turning point rather
+    /// it: no rebound (e = 0, docs/model.md §2's convention), decided at the turning point rather
     /// than after an integration whose stiff rate 2ζ would need ~ζ² steps.
     fn stays_after_turning(&self) -> bool {
         self.zeta >= 1.0
