@@ -167,7 +167,8 @@ impl fmt::Display for PeerError {
             PeerError::Param(e) => write!(f, "{e}"),
             PeerError::OutOfReach { model, target } => write!(
                 f,
-                "invalid cor: {target} is out of reach of {model} (its COR lies in (0, 1])"
+                "invalid cor: {} is out of reach of {model} (its COR lies in (0, 1])",
+                crate::model::params::display_number(*target)
             ),
             PeerError::Unresolved { model, steps } => {
                 write!(f, "{model}: the impact did not end within {steps} steps")

@@ -69,6 +69,9 @@ impl fmt::Display for Rule {
 /// The log-decrement damping ratio ζ(e) = −ln e / √(π² + ln² e); e in (0, 1].
 pub fn log_decrement(e: f64) -> f64 {
     let l = e.ln();
+    if l == 0.0 {
+        return 0.0; // not −0 at e = 1
+    }
     -l / (PI * PI + l * l).sqrt()
 }
 
