@@ -131,7 +131,7 @@ fn w_phase<L: Law>(
         if w == w1 || stop(w.powi(p), s[1]) {
             break;
         }
-        h = hs / (err.powf(0.125) / 0.9).clamp(1.0 / 6.0, 3.0);
+        h = hs / grow(err).clamp(1.0 / 6.0, 3.0);
     }
     (w, s[0], s[1], steps)
 }
@@ -216,9 +216,10 @@ pub fn run<L: Law>(law: &L, sample_every: f64, samples: &mut Vec<[f64; 3]>) -> R
     out
 }
 
-/// Hairer's step-size factor: the next step is h / grow(err).
+/// Hairer's step-size factor: the next step is h / grow(err), grow = err^{1/8}/0.9 (three
+/// square roots: a third of `powf`'s cost, which showed in the profile).
 fn grow(err: f64) -> f64 {
-    err.powf(0.125) / 0.9
+    err.sqrt().sqrt().sqrt() / 0.9
 }
 
 /// The start of contact in w = x^{1/p}, up to x = `W_START` (or earlier, while v stays well
