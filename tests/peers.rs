@@ -241,3 +241,52 @@ fn bad_input_names_the_field() {
     let e = impact(PeerModel::Tsuji, &ok, -1.0, 0).unwrap_err();
     assert!(e.to_string().contains("damping"), "{e}");
 }
+
+/// Peaks against closed forms: Hertz alone (χ = 0; docs/model.md §5: z_m = (5/4)^{2/5} in the
+/// peers' scaling, F_m = z_m^{3/2}, t_f = 2.94328 z_m/v0), and Kelvin–Voigt's turning point
+/// (x' = 0 at ω_d t = atan(√(1−ζ²)/ζ), x_m = e^{−ζ t} sin(√(1−ζ²) t)/√(1−ζ²)) with its
+/// peak force at t = 0 (F = 2ζ v0 √(mk)) or inside the contact.
+#[test]
+fn peaks_against_closed_forms() {
+    let unit = PeerBall {
+        mass: 1.0,
+        radius: 1.0,
+        v0: 1.0,
+        k: 1.0,
+        k_h: 1.0,
+    };
+    let r = impact(PeerModel::HuntCrossley, &unit, 0.0, 0).unwrap();
+    let zm = 1.25f64.powf(0.4);
+    assert!(
+        (r.max_indentation - zm).abs() < 1e-12,
+        "{}",
+        r.max_indentation
+    );
+    assert!(
+        (r.max_force - zm.powf(1.5)).abs() < 1e-12,
+        "{}",
+        r.max_force
+    );
+    let tf = r.contact_time.unwrap();
+    assert!((tf - 2.943_275_184_324_705 * zm).abs() < 1e-10, "{tf}");
+    for zeta in [0.05, 0.3, 0.7] {
+        let r = impact(PeerModel::KelvinVoigt, &unit, 2.0 * zeta, 0).unwrap();
+        let w = (1.0f64 - zeta * zeta).sqrt();
+        let tm = (w / zeta).atan() / w;
+        let xm = (-zeta * tm).exp() * (w * tm).sin() / w;
+        assert!((r.max_indentation - xm).abs() < 1e-12, "ζ = {zeta}");
+        // F = x + 2ζx': its maximum over the contact, from a dense grid of the closed form
+        let f = |t: f64| {
+            let (e, s, c) = ((-zeta * t).exp(), (w * t).sin(), (w * t).cos());
+            e * s / w + 2.0 * zeta * e * (c - zeta * s / w)
+        };
+        let fm = (0..=200_000)
+            .map(|i| f(std::f64::consts::PI / w * i as f64 / 200_000.0))
+            .fold(f64::MIN, f64::max);
+        assert!(
+            (r.max_force - fm).abs() < 1e-9,
+            "ζ = {zeta}: {} vs {fm}",
+            r.max_force
+        );
+    }
+}

@@ -316,27 +316,69 @@ fn refine_peaks<L: Law>(
     h: f64,
     (y1, rising0, rising1): ([f64; 2], bool, bool),
 ) {
+    let hermite = Hermite::new(law, (y, k0), y1, h);
     if y[1] > 0.0 && y1[1] <= 0.0 {
-        let (s, yt) = crossing(law, (y, k0), h, |y, a| (y[1], a));
+        // x' = 0: x is flat there, so the interpolant's root (error ~h⁵) and one real step to
+        // it give x_m to ~1e-13
+        let s = hermite.root(|p| p[1], h);
+        let yt = step(law, y, k0, s).0;
         out.tau_unload = tau + s;
         out.x_max = out.x_max.max(yt[0]);
         out.f_max = out.f_max.max(law.force(yt[0], yt[1]));
     }
     if rising0 && !rising1 {
-        // the peak is where dF̄/dτ changes sign; F̄ is flat there, so locating it to 1e-5 of
-        // the step (≤ 1e-6 in τ) puts F̄_m within ~1e-12 of its value (F̄'' = O(1); Brent: no
-        // second derivative needed)
-        let rate = |s: f64| {
-            let yp = if s == 0.0 { y } else { step(law, y, k0, s).0 };
-            law.force_rate(yp[0], yp[1], -law.drive(yp[0], yp[1]))
-        };
-        let (r0, r1) = (rate(0.0), rate(h));
-        let s = if r0 > 0.0 && r1 <= 0.0 {
-            brent(rate, 0.0, h, r0, r1, 1e-5 * h)
-        } else {
-            h
-        };
+        // dF̄/dτ = 0: F̄ is flat there too; located on the interpolant, F̄_m from a real step
+        let s = hermite.root(|p| law.force_rate(p[0], p[1], p[2]), h);
         let yp = step(law, y, k0, s).0;
         out.f_max = out.f_max.max(law.force(yp[0], yp[1]));
+    }
+}
+
+/// The quintic Hermite interpolant of x over a step, from x, x', x'' at both ends: (x, x', x'')
+/// anywhere in the step to O(h⁶), O(h⁵), O(h⁴). Used to locate the turning point and the peak
+/// force without re-taking steps (each root then costs one real step, not a dozen).
+struct Hermite {
+    /// x(θ h) = Σ c_i θ^i.
+    c: [f64; 6],
+    h: f64,
+}
+
+impl Hermite {
+    fn new<L: Law>(law: &L, (y0, k0): ([f64; 2], [f64; 2]), y1: [f64; 2], h: f64) -> Hermite {
+        let a1 = -law.drive(y1[0], y1[1]);
+        let (x0, v0, a0) = (y0[0], h * y0[1], h * h * k0[1]);
+        let (x1, v1, a1) = (y1[0], h * y1[1], h * h * a1);
+        // x(θ) with x, x', x'' matching at θ = 0 and 1
+        let d = x1 - x0 - v0 - 0.5 * a0;
+        let e = v1 - v0 - a0;
+        let f = a1 - a0;
+        let c3 = 10.0 * d - 4.0 * e + 0.5 * f;
+        let c4 = -15.0 * d + 7.0 * e - f;
+        let c5 = 6.0 * d - 3.0 * e + 0.5 * f;
+        Hermite {
+            c: [x0, v0, 0.5 * a0, c3, c4, c5],
+            h,
+        }
+    }
+
+    /// (x, x', x'') at τ = s into the step.
+    fn at(&self, s: f64) -> [f64; 3] {
+        let (t, c, h) = (s / self.h, &self.c, self.h);
+        let x = c[0] + t * (c[1] + t * (c[2] + t * (c[3] + t * (c[4] + t * c[5]))));
+        let dx = c[1] + t * (2.0 * c[2] + t * (3.0 * c[3] + t * (4.0 * c[4] + t * 5.0 * c[5])));
+        let ddx = 2.0 * c[2] + t * (6.0 * c[3] + t * (12.0 * c[4] + t * 20.0 * c[5]));
+        [x, dx / h, ddx / (h * h)]
+    }
+
+    /// Where `g` of the interpolated (x, x', x'') falls from > 0 to ≤ 0 in (0, h]; h when it
+    /// does not change sign on the interpolant.
+    fn root(&self, g: impl Fn([f64; 3]) -> f64, h: f64) -> f64 {
+        let f = |s: f64| g(self.at(s));
+        let (g0, g1) = (f(0.0), f(h));
+        if g0 > 0.0 && g1 <= 0.0 {
+            brent(f, 0.0, h, g0, g1, 1e-14 * h)
+        } else {
+            h
+        }
     }
 }
