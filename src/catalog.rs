@@ -51,60 +51,46 @@ pub struct Entry {
 }
 
 /// Why the catalog could not be built or a preset not found. Every message is one line.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum CatalogError {
     /// A file or folder could not be read.
+    #[error("{}: {message}", path.display())]
     Io { path: PathBuf, message: String },
     /// A preset file does not parse or validate (carries file:line:column).
-    Preset(PresetError),
+    #[error(transparent)]
+    Preset(#[from] PresetError),
     /// Two presets share a name.
+    #[error("{}", duplicate_message(name, first, second))]
     Duplicate {
         name: String,
         first: Origin,
         second: Origin,
     },
     /// No preset of that name.
+    #[error("unknown preset '{name}' (available: {})", available.join(", "))]
     Unknown {
         name: String,
         available: Vec<String>,
     },
 }
 
-impl fmt::Display for CatalogError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            CatalogError::Io { path, message } => write!(f, "{}: {message}", path.display()),
-            CatalogError::Preset(e) => write!(f, "{e}"),
-            CatalogError::Duplicate {
-                name,
-                first,
-                second,
-            } => match (first, second) {
-                (Origin::Embedded, Origin::File(file)) | (Origin::File(file), Origin::Embedded) => {
-                    write!(
-                        f,
-                        "duplicate preset name '{name}': {} and the embedded preset \
-                     (embedded:{name}); change the name in {}",
-                        file.display(),
-                        file.display()
-                    )
-                }
-                _ => write!(
-                    f,
-                    "duplicate preset name '{name}': {first} and {second}; change the name in \
-                     one of them"
-                ),
-            },
-            CatalogError::Unknown { name, available } => write!(
-                f,
-                "unknown preset '{name}' (available: {})",
-                available.join(", ")
-            ),
+/// Two presets named `name`: which, and which file to change.
+fn duplicate_message(name: &str, first: &Origin, second: &Origin) -> String {
+    match (first, second) {
+        (Origin::Embedded, Origin::File(file)) | (Origin::File(file), Origin::Embedded) => {
+            format!(
+                "duplicate preset name '{name}': {} and the embedded preset \
+                 (embedded:{name}); change the name in {}",
+                file.display(),
+                file.display()
+            )
         }
+        _ => format!(
+            "duplicate preset name '{name}': {first} and {second}; change the name in one of \
+             them"
+        ),
     }
 }
-
-impl std::error::Error for CatalogError {}
 
 /// The folder user presets are read from: `$XDG_CONFIG_HOME/bouncelab/presets`, falling back
 /// to `$HOME/.config/bouncelab/presets`; `None` if neither variable is usable.
@@ -184,7 +170,7 @@ impl Catalog {
     /// The embedded presets only.
     pub fn embedded() -> Catalog {
         Catalog {
-            entries: Preset::embedded()
+            entries: Preset::embedded_all()
                 .into_iter()
                 .map(|preset| Entry {
                     preset,
@@ -324,7 +310,16 @@ mod tests {
             .iter()
             .map(|e| e.preset.name.as_str())
             .collect();
-        assert_eq!(names, ["superball", "golf", "baseball", "first", "second"]);
+        let paper = ["superball", "golf", "baseball"];
+        let drop_balls = [
+            "tennis",
+            "football",
+            "basketball",
+            "table-tennis",
+            "softball",
+        ];
+        let users = ["first", "second"];
+        assert_eq!(names, [&paper[..], &drop_balls, &users].concat());
         assert_eq!(
             cat.get("first").unwrap().origin,
             Origin::File(dir.path().join("a.toml"))
@@ -339,7 +334,7 @@ mod tests {
         let dir = tempfile::tempdir().unwrap();
         let p = write(dir.path(), "mine.toml", "mine");
         let cat = Catalog::load(Some(dir.path()), Some(&p)).unwrap();
-        assert_eq!(cat.entries().len(), 4);
+        assert_eq!(cat.entries().len(), crate::preset::EMBEDDED.len() + 1);
         assert_eq!(cat.from_file(&p).unwrap().preset.name, "mine");
         let other = tempfile::tempdir().unwrap();
         let q = write(other.path(), "x.toml", "mine");
@@ -351,10 +346,11 @@ mod tests {
 
     #[test]
     fn unknown_names_list_the_catalog() {
-        let err = Catalog::embedded().get("tennis").unwrap_err();
+        let err = Catalog::embedded().get("cricket").unwrap_err();
         assert_eq!(
             err.to_string(),
-            "unknown preset 'tennis' (available: superball, golf, baseball)"
+            "unknown preset 'cricket' (available: superball, golf, baseball, tennis, football, \
+             basketball, table-tennis, softball)"
         );
     }
 }

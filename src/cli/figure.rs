@@ -2,16 +2,16 @@
 //! SVG, and its plotted series as CSV. The figures themselves are built in
 //! [`crate::figure::paper`]; this file reads the options, solves, and writes the files.
 
-use super::ball::{self, BallArgs, check_positive, param_message};
-use crate::analysis::sweep::{cor_vs_velocity, cor_vs_zeta, lin_space, log_space};
+use super::ball::BallArgs;
+use crate::analysis::sweep::{lin_space, log_space};
+use crate::atomic::Outputs;
 use crate::figure::{Figure, csv, paper, svg};
 use crate::model::contact::ContactLaw;
-use crate::model::params::validate_lambda_zeta;
+use crate::model::params::{Field, check_positive, validate_lambda_zeta};
 use crate::preset::{ParamSource, Preset};
 use crate::solver::{SolveOptions, simulate};
 use clap::{Args, ValueEnum};
-use std::fs;
-use std::io::{self, Write};
+use std::io::Write;
 use std::path::{Path, PathBuf};
 
 /// Points along a curve: enough for smooth curves on a log axis, few enough for a small file.
@@ -73,16 +73,22 @@ pub struct FigureArgs {
     #[command(flatten)]
     pub ball: BallArgs,
     /// λ of the model curves, comma-separated (cor-zeta, force-zeta) [default: 0,0.4,1]
-    #[arg(long, value_name = "L,L,...", value_delimiter = ',')]
+    #[arg(
+        long,
+        value_name = "L,L,...",
+        value_delimiter = ',',
+        value_parser = super::number::number,
+        allow_hyphen_values = true,
+    )]
     pub lambda: Option<Vec<f64>>,
     /// Impact speed v0, m/s (force-time, force-displacement) [default: the preset's v0]
-    #[arg(long, value_name = "V")]
+    #[arg(long, value_name = "V", value_parser = super::number::number, allow_hyphen_values = true)]
     pub v0: Option<f64>,
     /// Lowest impact speed, m/s (cor-velocity) [default: 0.1 × the preset's v0]
-    #[arg(long, value_name = "V")]
+    #[arg(long, value_name = "V", value_parser = super::number::number, allow_hyphen_values = true)]
     pub from: Option<f64>,
     /// Highest impact speed, m/s (cor-velocity) [default: where z_m = 3 z_p]
-    #[arg(long, value_name = "V")]
+    #[arg(long, value_name = "V", value_parser = super::number::number, allow_hyphen_values = true)]
     pub to: Option<f64>,
     /// Points along each curve [default: 400 for ζ, 200 for speed, 400 samples in time]
     #[arg(long, value_name = "N")]
@@ -164,50 +170,34 @@ pub fn check_writable(paths: &[&Path], force: bool) -> anyhow::Result<()> {
     Ok(())
 }
 
-/// Write `text` to `path`; without `force` the file must not exist (checked again at creation,
+/// Write `text` to `path` atomically (a temporary file renamed into place, see
+/// [`crate::atomic`]); without `force` the file must not exist (checked again at the rename,
 /// so a file that appeared meanwhile is still not overwritten).
 pub fn write_file(path: &Path, text: &str, force: bool) -> anyhow::Result<()> {
-    let mut opts = fs::OpenOptions::new();
-    opts.write(true);
-    if force {
-        opts.create(true).truncate(true);
-    } else {
-        opts.create_new(true);
-    }
-    let mut f = match opts.open(path) {
-        Err(e) if e.kind() == io::ErrorKind::AlreadyExists => {
-            anyhow::bail!("{} exists (use --force to overwrite it)", path.display())
-        }
-        r => r.map_err(|e| {
-            anyhow::Error::new(e).context(format!("cannot write {}", path.display()))
-        })?,
-    };
-    f.write_all(text.as_bytes())
-        .and_then(|()| f.flush())
-        .map_err(|e| anyhow::Error::new(e).context(format!("cannot write {}", path.display())))
+    let mut files = Outputs::new(force);
+    files.text(path, text)?;
+    commit(files)?;
+    Ok(())
 }
 
-/// A CLI ball as a ball of the paper's charts.
-pub fn chart_ball(b: &ball::Ball) -> paper::Ball {
-    paper::Ball {
-        name: b.name.clone().unwrap_or_else(|| "ball".into()),
-        source: b.source.into(),
-        params: b.params,
-        law: b.law,
-        measured: b.measured.clone(),
+/// Publish staged files; an existing target is bad input (exit 2), any other failure I/O.
+pub fn commit(files: Outputs) -> anyhow::Result<Vec<PathBuf>> {
+    if super::budget::interrupted() {
+        // Ctrl-C during the work: the staged files go with `files`
+        return Err(super::budget::Interrupted.into());
     }
+    files.commit().map_err(|e| {
+        if e.exists {
+            anyhow::anyhow!("{e}")
+        } else {
+            anyhow::Error::new(e)
+        }
+    })
 }
 
 /// An embedded preset on the chosen (or its own) parameter set.
 pub fn embedded_ball(p: &Preset, source: Option<ParamSource>, law: ContactLaw) -> paper::Ball {
-    let source = source.unwrap_or(p.parameters);
-    paper::Ball {
-        name: p.name.clone(),
-        source: source.name().into(),
-        params: p.params_from(source),
-        law,
-        measured: Some(p.measured.clone()),
-    }
+    paper::Ball::from_preset(p, source.unwrap_or(p.parameters), law)
 }
 
 /// Figs. 2 and 3 over ζ = 0.01 … 100.
@@ -218,10 +208,11 @@ pub fn zeta_figures(
     balls: &[paper::Ball],
 ) -> anyhow::Result<(Figure, Figure)> {
     for &l in lambdas {
-        validate_lambda_zeta(l, 0.0).map_err(|e| anyhow::anyhow!(param_message(&e)))?;
+        validate_lambda_zeta(l, 0.0)?;
     }
-    let rows =
-        cor_vs_zeta(lambdas, &log_space(0.01, 100.0, points), law).map_err(ball::solve_error)?;
+    let what = format!("{} λ values × {points} points", lambdas.len());
+    super::budget::check(lambdas.len() * points, law, &what)?;
+    let rows = super::budget::zeta_rows(lambdas, &log_space(0.01, 100.0, points), law)?;
     Ok((
         paper::cor_zeta(&rows, balls, law),
         paper::force_zeta(&rows, balls, law),
@@ -236,18 +227,18 @@ pub fn velocity_figure(
     to: Option<f64>,
     points: usize,
 ) -> anyhow::Result<Figure> {
-    let pm = ball::solve_error;
+    super::budget::check(points, b.law, &format!("{points} points"))?;
     let v0 = b.params.v0;
-    let onset = paper::speed_for_indentation(&b.params, b.law, 1.0).map_err(pm)?;
-    let far = paper::speed_for_indentation(&b.params, b.law, SPEED_RANGE_ZP).map_err(pm)?;
+    let onset = paper::speed_for_indentation(&b.params, b.law, 1.0)?;
+    let far = paper::speed_for_indentation(&b.params, b.law, SPEED_RANGE_ZP)?;
     let from = from.unwrap_or(0.1 * v0);
     let to = to.unwrap_or_else(|| far.unwrap_or(3.0 * v0).max(1.2 * v0));
-    check_positive("from", from)?;
-    check_positive("to", to)?;
+    check_positive(Field::From, from)?;
+    check_positive(Field::To, to)?;
     if from >= to {
         anyhow::bail!("invalid speed range: --from {from} must be below --to {to}");
     }
-    let rows = cor_vs_velocity(&b.params, b.law, &lin_space(from, to, points)).map_err(pm)?;
+    let rows = super::budget::velocity_rows(&b.params, b.law, &lin_space(from, to, points))?;
     Ok(paper::cor_velocity(b, &rows, onset))
 }
 
@@ -257,8 +248,7 @@ pub fn history_figures(b: &paper::Ball, samples: usize) -> anyhow::Result<(Figur
         &b.params,
         b.law,
         &SolveOptions::default().with_samples(samples),
-    )
-    .map_err(ball::solve_error)?;
+    )?;
     if !r.rebound {
         anyhow::bail!(
             "{} does not rebound at v0 = {} m/s: there is no contact to draw",
@@ -280,8 +270,8 @@ fn build(a: &FigureArgs) -> anyhow::Result<Figure> {
                 .map(|p| embedded_ball(p, source, law))
                 .collect();
             // a user's ball joins the three of the paper
-            if a.ball.preset.is_some() || a.ball.config.is_some() {
-                let b = chart_ball(&a.ball.resolve(None)?);
+            if a.ball.choice.is_given() {
+                let b = a.ball.resolve(None)?.ball;
                 if !balls.iter().any(|x| x.name == b.name) {
                     balls.push(b);
                 }
@@ -295,11 +285,11 @@ fn build(a: &FigureArgs) -> anyhow::Result<Figure> {
             Ok(if a.name == CorZeta { cor } else { force })
         }
         CorVelocity => {
-            let b = chart_ball(&a.ball.resolve(None)?);
+            let b = a.ball.resolve(None)?.ball;
             velocity_figure(&b, a.from, a.to, a.points.unwrap_or(VELOCITY_POINTS))
         }
         ForceTime | ForceDisplacement => {
-            let b = chart_ball(&a.ball.resolve(a.v0)?);
+            let b = a.ball.resolve(a.v0)?.ball;
             let (t, d) = history_figures(&b, a.points.unwrap_or(HISTORY_SAMPLES))?;
             Ok(if a.name == ForceTime { t } else { d })
         }
@@ -313,12 +303,15 @@ pub fn run(a: &FigureArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     paths.extend(a.data.as_deref());
     check_writable(&paths, a.force)?;
     let fig = build(a)?;
-    let picture = svg::render(&fig).map_err(|e| super::Runtime(e.into()))?;
-    write_file(&a.out, &picture, a.force)?;
-    writeln!(out, "{}", a.out.display())?;
+    let picture = svg::render(&fig)?;
+    // both files or neither (crate::atomic)
+    let mut files = Outputs::new(a.force);
+    files.text(&a.out, &picture)?;
     if let Some(d) = &a.data {
-        write_file(d, &csv::to_string(&fig), a.force)?;
-        writeln!(out, "{}", d.display())?;
+        files.text(d, &csv::to_string(&fig))?;
+    }
+    for p in commit(files)? {
+        writeln!(out, "{}", p.display())?;
     }
     Ok(())
 }

@@ -2,13 +2,13 @@
 //! Christoforou–Yigit model, as text, JSON or CSV; `--export CODE` writes the parameters for
 //! a DEM or multibody code (docs/peers.md).
 
-use super::ball::{Ball, BallArgs, param_message, solve_error};
+use super::ball::{BallArgs, ChosenBall};
 use super::output::{self, csv_row, given, human, num, opt_num, table};
 use crate::analysis::fit::{FitError, fit_k_r};
 use crate::model::params::ImpactParams;
+use crate::peers::PeerBall;
 use crate::peers::calibrate::{self, Calibrated};
 use crate::peers::export::{self, Code, ExportSet};
-use crate::peers::{PeerBall, PeerError};
 use crate::solver::{SolveOptions, simulate};
 use clap::{Args, ValueEnum};
 use serde::Serialize;
@@ -47,10 +47,11 @@ pub struct PeersArgs {
     #[command(flatten)]
     pub ball: BallArgs,
     /// COR to calibrate to, in [0, 1] [default: the preset's measured COR]
-    #[arg(long, value_name = "E", conflicts_with = "target")]
+    #[arg(long, value_name = "E", conflicts_with = "target",
+          value_parser = super::number::number, allow_hyphen_values = true)]
     pub cor: Option<f64>,
     /// Impact speed v0 (m/s) [default: the preset's measured v0]
-    #[arg(long, value_name = "V")]
+    #[arg(long, value_name = "V", value_parser = super::number::number, allow_hyphen_values = true)]
     pub v0: Option<f64>,
     /// Target when --cor is not given
     #[arg(long, value_enum, default_value = "measured")]
@@ -91,12 +92,11 @@ struct Report<'a> {
 
 pub fn run(a: &PeersArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     let b = a.ball.resolve(a.v0)?;
-    let radius = b.measured.as_ref().map_or(f64::NAN, |m| m.radius);
-    let ball = PeerBall::from_params(&b.params, radius);
+    let radius = b.ball.measured.as_ref().map_or(f64::NAN, |m| m.radius);
+    let ball = PeerBall::from_params(&b.ball.params, radius);
     let (target, source) = target(a, &b)?;
     if let Some(code) = a.export {
-        let label = b.name.clone().unwrap_or_default();
-        let set = ExportSet::new(&ball, target, &label).map_err(peer_error)?;
+        let set = ExportSet::new(&ball, target, &b.ball.name)?;
         let code = match code {
             ExportArg::Json => return Ok(output::json(out, &set)?),
             ExportArg::Lammps => Code::Lammps,
@@ -108,8 +108,7 @@ pub fn run(a: &PeersArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         out.write_all(export::snippet(code, &set).as_bytes())?;
         return Ok(());
     }
-    let mut rows: Vec<Row> = calibrate::compare(&ball, target, 0)
-        .map_err(peer_error)?
+    let mut rows: Vec<Row> = calibrate::compare(&ball, target, 0)?
         .iter()
         .map(|c| peer_row(&ball, c))
         .collect();
@@ -119,7 +118,7 @@ pub fn run(a: &PeersArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         v0: ball.v0,
         target_cor: target,
         models: &rows,
-        preset: b.name.as_deref(),
+        preset: b.preset(),
         radius,
         target_source: source,
     };
@@ -132,16 +131,17 @@ pub fn run(a: &PeersArgs, out: &mut dyn Write) -> anyhow::Result<()> {
 }
 
 /// The target COR and where it came from.
-fn target(a: &PeersArgs, b: &Ball) -> anyhow::Result<(f64, &'static str)> {
+fn target(a: &PeersArgs, b: &ChosenBall) -> anyhow::Result<(f64, &'static str)> {
     if let Some(e) = a.cor {
         if !(e.is_finite() && (0.0..=1.0).contains(&e)) {
             anyhow::bail!("invalid cor: {} (a COR lies in [0, 1])", num(e));
         }
         return Ok((e, "given"));
     }
-    let p = &b.params;
+    let (p, law) = (&b.ball.params, b.ball.law);
     match a.target {
         TargetArg::Measured => b
+            .ball
             .measured
             .as_ref()
             .and_then(|m| m.cor)
@@ -149,27 +149,19 @@ fn target(a: &PeersArgs, b: &Ball) -> anyhow::Result<(f64, &'static str)> {
             .ok_or_else(|| {
                 anyhow::anyhow!("cor: the preset has no measured COR; give --cor E or --target")
             }),
-        TargetArg::ChristoforouYigit => calibrate::christoforou_yigit_cor(p, b.law, p.v0)
-            .map(|e| (e, "christoforou-yigit"))
-            .map_err(solve_error),
+        TargetArg::ChristoforouYigit => Ok((
+            calibrate::christoforou_yigit_cor(p, law, p.v0)?,
+            "christoforou-yigit",
+        )),
         TargetArg::ChristoforouYigitCurve => {
             let speeds: Vec<f64> = (0..9)
                 .map(|i| p.v0 * 4f64.powf((i as f64 - 4.0) / 4.0))
                 .collect();
-            let table =
-                calibrate::christoforou_yigit_curve(p, b.law, &speeds).map_err(solve_error)?;
+            let table = calibrate::christoforou_yigit_curve(p, law, &speeds)?;
             // none of the peers' COR depends on v0: the least-squares COR is the mean
             let mean = table.iter().map(|t| t.1).sum::<f64>() / table.len() as f64;
             Ok((mean, "christoforou-yigit-curve"))
         }
-    }
-}
-
-fn peer_error(e: PeerError) -> anyhow::Error {
-    match e {
-        PeerError::Param(p) => anyhow::anyhow!(param_message(&p)),
-        e @ PeerError::OutOfReach { .. } => anyhow::anyhow!(e.to_string()),
-        e @ PeerError::Unresolved { .. } => super::Runtime(anyhow::anyhow!(e.to_string())).into(),
     }
 }
 
@@ -188,19 +180,14 @@ fn peer_row(ball: &PeerBall, c: &Calibrated) -> Row {
 
 /// The Christoforou–Yigit model of the same ball: K_r fitted to the target (rule `exact`,
 /// docs/model.md §4), or, when no K_r reaches it at this ζ, the preset's own K_r (rule `preset`).
-fn christoforou_yigit_row(b: &Ball, target: f64) -> anyhow::Result<Row> {
-    let (params, rule) = match fit_k_r(&b.params, b.law, target) {
-        Ok(f) => (
-            ImpactParams {
-                k_r: f.k_r,
-                ..b.params
-            },
-            "exact",
-        ),
-        Err(FitError::OutOfReach { .. }) => (b.params, "preset"),
-        Err(e) => anyhow::bail!(e.to_string()),
+fn christoforou_yigit_row(b: &ChosenBall, target: f64) -> anyhow::Result<Row> {
+    let (p, law) = (b.ball.params, b.ball.law);
+    let (params, rule) = match fit_k_r(&p, law, target) {
+        Ok(f) => (ImpactParams { k_r: f.k_r, ..p }, "exact"),
+        Err(FitError::OutOfReach { .. }) => (p, "preset"),
+        Err(e) => return Err(e.into()),
     };
-    let r = simulate(&params, b.law, &SolveOptions::default()).map_err(solve_error)?;
+    let r = simulate(&params, law, &SolveOptions::default())?;
     Ok(Row {
         model: "christoforou-yigit",
         rule,
@@ -245,7 +232,7 @@ fn csv(out: &mut dyn Write, rows: &[Row]) -> std::io::Result<()> {
     Ok(())
 }
 
-fn text(out: &mut dyn Write, b: &Ball, ball: &PeerBall, r: &Report) -> std::io::Result<()> {
+fn text(out: &mut dyn Write, b: &ChosenBall, ball: &PeerBall, r: &Report) -> std::io::Result<()> {
     writeln!(
         out,
         "{}: m = {} kg, R = {} m, v0 = {} m/s",
@@ -300,7 +287,7 @@ fn text(out: &mut dyn Write, b: &Ball, ball: &PeerBall, r: &Report) -> std::io::
 /// peers calibrated to the ball's measured COR (else its Christoforou–Yigit COR) at v0.
 pub fn figure(a: &super::figure::FigureArgs) -> anyhow::Result<crate::figure::Figure> {
     use crate::figure::peers as fig;
-    let b = super::figure::chart_ball(&a.ball.resolve(a.v0)?);
+    let b = a.ball.resolve(a.v0)?.ball;
     let target = fig::target(&b).map_err(|e| anyhow::anyhow!(e))?;
     let built = if a.name == super::figure::FigureName::PeersForceTime {
         fig::force_time(
@@ -311,8 +298,8 @@ pub fn figure(a: &super::figure::FigureArgs) -> anyhow::Result<crate::figure::Fi
     } else {
         let (lo, hi) = fig::default_range(&b.params);
         let (from, to) = (a.from.unwrap_or(lo), a.to.unwrap_or(hi));
-        super::ball::check_positive("from", from)?;
-        super::ball::check_positive("to", to)?;
+        crate::peers::positive("from", from)?;
+        crate::peers::positive("to", to)?;
         if from >= to {
             anyhow::bail!("invalid speed range: --from {from} must be below --to {to}");
         }

@@ -7,10 +7,11 @@
 //! so a failure leaves no half-written set.
 
 use super::figure::{
-    HISTORY_SAMPLES, VELOCITY_POINTS, ZETA_POINTS, embedded_ball, history_figures, velocity_figure,
-    write_file, zeta_figures,
+    HISTORY_SAMPLES, VELOCITY_POINTS, ZETA_POINTS, commit, embedded_ball, history_figures,
+    velocity_figure, zeta_figures,
 };
 use super::output::given;
+use crate::atomic::Outputs;
 use crate::figure::report::{self, FigureRef};
 use crate::figure::{Figure, csv, paper, svg};
 use crate::preset::Preset;
@@ -100,8 +101,7 @@ fn plan(presets: &[Preset]) -> anyhow::Result<Vec<Planned>> {
             "Figs. 6, 8: force against indentation and displacement at the measured speed".into(),
             disp,
         ));
-        let v = paper::speed_for_indentation(&b.params, b.law, FLATTENING_ZP)
-            .map_err(super::ball::solve_error)?
+        let v = paper::speed_for_indentation(&b.params, b.law, FLATTENING_ZP)?
             .unwrap_or(3.0 * b.params.v0);
         let fast = paper::Ball {
             params: crate::ImpactParams { v0: v, ..b.params },
@@ -152,7 +152,7 @@ pub fn run(a: &ReproduceArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     let mut texts: Vec<(String, String)> = Vec::new();
     let mut refs = Vec::new();
     for p in &planned {
-        let picture = svg::render(&p.figure).map_err(|e| super::Runtime(e.into()))?;
+        let picture = svg::render(&p.figure)?;
         texts.push((format!("{}.svg", p.stem), picture));
         texts.push((format!("{}.csv", p.stem), csv::to_string(&p.figure)));
         refs.push(FigureRef {
@@ -163,19 +163,33 @@ pub fn run(a: &ReproduceArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     }
     let mut comparisons = Vec::new();
     for p in &presets {
-        comparisons.push(report::compare(p, p.law).map_err(super::ball::solve_error)?);
+        comparisons.push(report::compare(p, p.law)?);
     }
     texts.push((REPORT.into(), report::markdown(&comparisons, &refs)));
     debug_assert_eq!(
         texts.iter().map(|t| &t.0).collect::<Vec<_>>(),
         files.iter().collect::<Vec<_>>()
     );
+    let created = !dir.exists();
     fs::create_dir_all(dir)
         .map_err(|e| anyhow::Error::new(e).context(format!("cannot create {}", dir.display())))?;
-    for (name, text) in &texts {
-        let path = dir.join(name);
-        write_file(&path, text, a.force)?;
-        writeln!(out, "{}", path.display())?;
+    // every file or none (crate::atomic); a folder this run created goes again on failure
+    let mut files = Outputs::new(a.force);
+    let written = texts
+        .iter()
+        .try_for_each(|(name, text)| files.text(&dir.join(name), text))
+        .map_err(anyhow::Error::new)
+        .and_then(|()| commit(files));
+    match written {
+        Ok(paths) => paths
+            .iter()
+            .try_for_each(|p| writeln!(out, "{}", p.display()))
+            .map_err(Into::into),
+        Err(e) => {
+            if created {
+                let _ = fs::remove_dir(dir);
+            }
+            Err(e)
+        }
     }
-    Ok(())
 }

@@ -1,6 +1,6 @@
 //! `bouncelab run`: one impact, as a text table, one JSON object or CSV.
 
-use super::ball::{self, Ball, BallArgs};
+use super::ball::{self, BallArgs, BallHeader, ChosenBall};
 use super::output::{self, csv_row, num, opt_num};
 use crate::model::contact::ContactLaw;
 use crate::solver::{EnergyBudget, ImpactResponse, Method, SolveOptions, simulate};
@@ -27,16 +27,22 @@ pub struct RunArgs {
     #[arg(long, conflicts_with_all = ["preset", "config", "params", "v0"])]
     pub normalized: bool,
     /// Impact speed v0 (m/s) [default: the preset's measured v0]
-    #[arg(long, value_name = "V")]
+    #[arg(long, value_name = "V", value_parser = super::number::number, allow_hyphen_values = true)]
     pub v0: Option<f64>,
     /// Flattening threshold z̄_p = z_p ω0/v0 of the normalized ball [default: none]
-    #[arg(long, value_name = "X", requires = "normalized")]
+    #[arg(
+        long,
+        value_name = "X",
+        requires = "normalized",
+        value_parser = super::number::number,
+        allow_hyphen_values = true,
+    )]
     pub zp_bar: Option<f64>,
     /// Relative stiffness λ = K_r/K_p (on a preset: changes K_r, keeps m and K_p)
-    #[arg(long, value_name = "L")]
+    #[arg(long, value_name = "L", value_parser = super::number::number, allow_hyphen_values = true)]
     pub lambda: Option<f64>,
     /// Damping factor ζ = √(m K_p)/(2c) (on a preset: changes c, keeps m and K_p)
-    #[arg(long, value_name = "Z")]
+    #[arg(long, value_name = "Z", value_parser = super::number::number, allow_hyphen_values = true)]
     pub zeta: Option<f64>,
     /// Output format
     #[arg(long, value_enum, default_value = "text")]
@@ -60,7 +66,7 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         )?
     } else {
         let mut b = args.ball.resolve(args.v0)?;
-        ball::set_lambda_zeta(&mut b.params, args.lambda, args.zeta)?;
+        ball::set_lambda_zeta(&mut b.ball.params, args.lambda, args.zeta)?;
         b
     };
     if args.history && !(2..=MAX_SAMPLES).contains(&args.samples) {
@@ -71,7 +77,7 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     }
     let samples = if args.history { args.samples } else { 0 };
     let opts = SolveOptions::default().with_samples(samples).with_energy();
-    let r = simulate(&ball.params, ball.law, &opts).map_err(ball::solve_error)?;
+    let r = simulate(&ball.ball.params, ball.ball.law, &opts)?;
     match args.format {
         RunFormat::Json => output::json(out, &report(&ball, &r, args.history))?,
         RunFormat::Csv if args.history => history_csv(out, &r)?,
@@ -100,10 +106,8 @@ struct Energy {
 /// of a ball that does not rebound.
 #[derive(Serialize)]
 struct Report<'a> {
-    preset: Option<&'a str>,
-    origin: &'a str,
-    parameters: &'a str,
-    law: &'static str,
+    #[serde(flatten)]
+    ball: BallHeader<'a>,
     method: Method,
     mass: f64,
     k_p: f64,
@@ -135,15 +139,12 @@ struct Report<'a> {
     displacement: Option<&'a [f64]>,
 }
 
-fn report<'a>(b: &'a Ball, r: &'a ImpactResponse, history: bool) -> Report<'a> {
-    let p = &b.params;
+fn report<'a>(b: &'a ChosenBall, r: &'a ImpactResponse, history: bool) -> Report<'a> {
+    let p = &b.ball.params;
     let n = &r.normalized;
     let h = |v: &'a Vec<f64>| history.then_some(v.as_slice());
     Report {
-        preset: b.name.as_deref(),
-        origin: &b.origin,
-        parameters: b.source,
-        law: r.law.name(),
+        ball: b.header(),
         method: r.method,
         mass: p.mass,
         k_p: p.k_p,
@@ -163,7 +164,7 @@ fn report<'a>(b: &'a Ball, r: &'a ImpactResponse, history: bool) -> Report<'a> {
         permanent_indentation: r.permanent_indentation,
         max_force_normalized: r.max_force_normalized,
         contact_time_normalized: r.contact_time_normalized,
-        measured: b.measured.as_ref().map(|m| Measured {
+        measured: b.ball.measured.as_ref().map(|m| Measured {
             v0: m.v0,
             cor: m.cor,
             max_force: m.max_force,
@@ -212,8 +213,8 @@ pub const SUMMARY_COLUMNS: [&str; 28] = [
     "energy_spring",
 ];
 
-fn summary_csv(out: &mut dyn Write, b: &Ball, r: &ImpactResponse) -> std::io::Result<()> {
-    let p = &b.params;
+fn summary_csv(out: &mut dyn Write, b: &ChosenBall, r: &ImpactResponse) -> std::io::Result<()> {
+    let p = &b.ball.params;
     let n = &r.normalized;
     let e = r.energy;
     let en = |f: fn(&EnergyBudget) -> f64| opt_num(e.as_ref().map(f));
@@ -225,9 +226,9 @@ fn summary_csv(out: &mut dyn Write, b: &Ball, r: &ImpactResponse) -> std::io::Re
     csv_row(
         out,
         &[
-            b.name.clone().unwrap_or_default(),
+            b.preset().unwrap_or_default().to_string(),
             b.origin.clone(),
-            b.source.into(),
+            b.ball.source.clone(),
             r.law.name().into(),
             method.into(),
             num(p.mass),

@@ -7,18 +7,8 @@
 //! reads back to the same `f64`.
 
 use super::Figure;
-use crate::model::params::display_number as num;
+use crate::text::{csv_field as field, number as num};
 use std::io::{self, Write};
-
-/// One field, quoted per RFC 4180 when it holds a comma, quote or line break (a user preset's
-/// name could).
-fn field(s: &str) -> String {
-    if s.contains([',', '"', '\n', '\r']) {
-        format!("\"{}\"", s.replace('"', "\"\""))
-    } else {
-        s.to_string()
-    }
-}
 
 /// Write every series of `fig`, in drawing order, to `out`.
 pub fn write(fig: &Figure, out: &mut dyn Write) -> io::Result<()> {
@@ -51,18 +41,18 @@ mod tests {
 
     #[test]
     fn long_form_in_si() {
-        let fig = Figure {
-            title: "t".into(),
-            subtitle: String::new(),
-            x: Axis::linear("t (ms)", "t", 1e3),
-            y: Axis::linear("F (N)", "force", 1.0),
-            series: vec![
+        let fig = Figure::new(
+            "t".into(),
+            String::new(),
+            Axis::linear("t (ms)", "t", 1e3),
+            Axis::linear("F (N)", "force", 1.0),
+            vec![
                 Series::new("model", "model", Kind::Model, Style::Solid, 0)
                     .with_points(vec![(0.0, 0.0), (1.5e-3, 10.0)]),
                 Series::new("a,b", "a,b", Kind::Measured, Style::Dashed, 1)
                     .with_points(vec![(2e-3, 3.0)]),
             ],
-        };
+        );
         assert_eq!(
             to_string(&fig),
             "series,kind,t,force\nmodel,model,0,0\nmodel,model,0.0015,10\n\"a,b\",measured,0.002,3\n"

@@ -2,12 +2,13 @@
 //! model (docs/peers.md): COR against impact speed on a log axis, and force against time at
 //! v0. Built from solver output like [`super::paper`]; nothing here touches files.
 
-use super::paper::Ball;
-use super::{Axis, BLACK, Figure, GREY, Kind, Marker, Series, Style, short};
+use super::{Axis, BLACK, Corner, Figure, GREY, Kind, Marker, Series, Style};
+use crate::ball::Ball;
 use crate::model::params::ImpactParams;
 use crate::peers::calibrate::{self, christoforou_yigit_cor};
 use crate::peers::{PeerBall, PeerError, PeerModel, cor, impact};
 use crate::solver::{SolveOptions, simulate};
+use crate::text::short;
 
 /// Why a figure could not be built (a calibration or a solve failed), as one line.
 fn error(e: impl std::fmt::Display) -> String {
@@ -90,20 +91,23 @@ pub fn cor_velocity(b: &Ball, target: f64, speeds: &[f64]) -> Result<Figure, Str
         );
     }
     let (lo, hi) = (speeds[0], speeds[speeds.len() - 1]);
-    Ok(Figure {
-        title: format!(
+    let mut fig = Figure::new(
+        format!(
             "Contact models calibrated to e = {}: {}",
             short(target, 3),
             b.name
         ),
-        subtitle: format!(
+        format!(
             "COR against impact speed; peers calibrated at v0 = {} m/s",
             short(ball.v0, 3)
         ),
-        x: Axis::log("impact speed v0 (m/s)", "v0", lo, hi),
-        y: Axis::linear("coefficient of restitution e", "cor", 1.0).with_range(0.0, 1.05),
+        Axis::log("impact speed v0 (m/s)", "v0", lo, hi),
+        Axis::linear("coefficient of restitution e", "cor", 1.0).with_range(0.0, 1.05),
         series,
-    })
+    );
+    fig.screen_title = format!("peers: COR e vs v0 [m/s] · {}", b.name);
+    fig.legend_corner = Corner::BottomLeft;
+    Ok(fig)
 }
 
 /// Force against time at the ball's v0: the Christoforou–Yigit impact and each peer
@@ -121,17 +125,19 @@ pub fn force_time(b: &Ball, target: f64, samples: usize) -> Result<Figure, Strin
         s.style = st;
         series.push(s);
     }
-    Ok(Figure {
-        title: format!("Contact force against time: {}", b.name),
-        subtitle: format!(
+    let mut fig = Figure::new(
+        format!("Contact force against time: {}", b.name),
+        format!(
             "v0 = {} m/s; peers calibrated exactly to e = {}",
             short(ball.v0, 3),
             short(target, 3)
         ),
-        x: Axis::linear("time t (ms)", "t", 1e3),
-        y: Axis::linear("contact force F (N)", "force", 1.0),
+        Axis::linear("time t (ms)", "t", 1e3),
+        Axis::linear("contact force F (N)", "force", 1.0),
         series,
-    })
+    );
+    fig.screen_title = format!("peers: F [N] vs t [ms] · {}", b.name);
+    Ok(fig)
 }
 
 fn history(label: &str, id: &str, color: usize, r: &crate::ImpactResponse) -> Series {

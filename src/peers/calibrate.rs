@@ -6,7 +6,7 @@
 use super::rules::{self, Rule};
 use super::{PeerBall, PeerError, PeerModel, cor, impact};
 use crate::model::contact::ContactLaw;
-use crate::model::params::{ImpactParams, ParamError};
+use crate::model::params::ImpactParams;
 use crate::solver::roots::brent;
 use crate::solver::{ImpactResponse, SolveError, SolveOptions, simulate};
 
@@ -17,12 +17,11 @@ fn check_target(e: f64) -> Result<(), PeerError> {
     if e.is_finite() && (0.0..=1.0).contains(&e) {
         Ok(())
     } else {
-        Err(ParamError {
+        Err(PeerError::Invalid {
             field: "cor",
             value: e,
             reason: "a coefficient of restitution lies in [0, 1]",
-        }
-        .into())
+        })
     }
 }
 
@@ -142,15 +141,14 @@ pub struct TableFit {
 /// calibration to that mean (tests/peers_calibration.rs checks it is a minimum).
 pub fn fit_table(model: PeerModel, table: &[(f64, f64)]) -> Result<TableFit, PeerError> {
     if table.is_empty() {
-        return Err(ParamError {
+        return Err(PeerError::Invalid {
             field: "table",
             value: 0.0,
             reason: "needs at least one (v0, COR) pair",
-        }
-        .into());
+        });
     }
     for &(v, e) in table {
-        crate::model::params::check_positive("v0", v)?;
+        super::positive("v0", v)?;
         check_target(e)?;
     }
     let n = table.len() as f64;

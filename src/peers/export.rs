@@ -15,7 +15,7 @@
 
 use super::rules::{self, Rule};
 use super::{PeerBall, PeerError, PeerModel, calibrate};
-use crate::model::params::display_number as num;
+use crate::text::number as num;
 use serde::Serialize;
 use std::f64::consts::PI;
 use std::fmt::Write;

@@ -13,7 +13,7 @@ mod laws;
 pub mod rules;
 
 use crate::model::contact::ContactLaw;
-use crate::model::params::{ImpactParams, Normalized, ParamError, check_positive};
+use crate::model::params::{ImpactParams, Normalized, ParamError};
 use crate::solver::{EventKind, History, ImpactResponse, Method, PhaseEvent};
 use serde::Serialize;
 use std::fmt;
@@ -99,12 +99,12 @@ impl PeerBall {
         }
     }
 
-    pub fn validate(&self) -> Result<(), ParamError> {
-        check_positive("mass", self.mass)?;
-        check_positive("radius", self.radius)?;
-        check_positive("v0", self.v0)?;
-        check_positive("k", self.k)?;
-        check_positive("k_h", self.k_h)
+    pub fn validate(&self) -> Result<(), PeerError> {
+        positive("mass", self.mass)?;
+        positive("radius", self.radius)?;
+        positive("v0", self.v0)?;
+        positive("k", self.k)?;
+        positive("k_h", self.k_h)
     }
 
     /// The model's time, length and force units (laws.rs): T, L = v0 T, F = m v0 / T.
@@ -144,47 +144,66 @@ impl PeerBall {
 }
 
 /// Why a peer impact or calibration has no answer.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum PeerError {
-    /// A parameter out of its domain, named.
-    Param(ParamError),
+    /// A value out of its domain, named: "invalid cor: 1.5 (…)".
+    #[error("invalid {field}: {} ({reason})", crate::text::number(*.value))]
+    Invalid {
+        field: &'static str,
+        value: f64,
+        reason: &'static str,
+    },
     /// No damping ≥ 0 gives this COR: the model's COR spans (0, 1] (Kelvin–Voigt with tension
     /// [0, 1]).
+    #[error(
+        "invalid cor: {} is out of reach of {model} (its COR lies in (0, 1])",
+        crate::text::number(*.target)
+    )]
     OutOfReach { model: PeerModel, target: f64 },
-    /// The step budget ran out (not seen over the tested domain).
+    /// The step budget ran out (not seen over the tested domain): not the input's fault.
+    #[error("{model}: the impact did not end within {steps} steps")]
     Unresolved { model: PeerModel, steps: usize },
 }
 
 impl From<ParamError> for PeerError {
     fn from(e: ParamError) -> Self {
-        PeerError::Param(e)
-    }
-}
-
-impl fmt::Display for PeerError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            PeerError::Param(e) => write!(f, "{e}"),
-            PeerError::OutOfReach { model, target } => write!(
-                f,
-                "invalid cor: {} is out of reach of {model} (its COR lies in (0, 1])",
-                crate::model::params::display_number(*target)
-            ),
-            PeerError::Unresolved { model, steps } => {
-                write!(f, "{model}: the impact did not end within {steps} steps")
-            }
+        PeerError::Invalid {
+            field: e.field.as_str(),
+            value: e.value,
+            reason: e.reason,
         }
     }
 }
 
-impl std::error::Error for PeerError {}
+/// The physically meaningful range of every input, as the solver's (docs/model.md §4).
+const ABSURD: f64 = 1e15;
+
+/// A finite value in 1e-15 … 1e15, or an error naming `field`.
+pub fn positive(field: &'static str, value: f64) -> Result<(), PeerError> {
+    let reason = if value.is_nan() {
+        "not a number"
+    } else if value.is_infinite() {
+        "must be finite"
+    } else if value <= 0.0 {
+        "must be positive"
+    } else if !(1.0 / ABSURD..=ABSURD).contains(&value) {
+        "out of the physically meaningful range 1e-15 … 1e15"
+    } else {
+        return Ok(());
+    };
+    Err(PeerError::Invalid {
+        field,
+        value,
+        reason,
+    })
+}
 
 /// A damping: finite and ≥ 0 (0 is the elastic limit), or an error naming `field`.
-pub fn non_negative(field: &'static str, value: f64) -> Result<(), ParamError> {
+pub fn non_negative(field: &'static str, value: f64) -> Result<(), PeerError> {
     if value == 0.0 {
         Ok(())
     } else {
-        check_positive(field, value)
+        positive(field, value)
     }
 }
 
