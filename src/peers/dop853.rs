@@ -26,6 +26,7 @@ pub const B: [f64; 12] = [5.4293734116568765e-2, 0e0, 0e0, 0e0, 0e0, 4.450312892
 pub const BH: [f64; 12] = [2.440944881889764e-1, 0e0, 0e0, 0e0, 0e0, 0e0, 0e0, 0e0, 7.338466882816118e-1, 0e0, 0e0, 2.2058823529411766e-2];
 pub const ER: [f64; 12] = [1.312004499419488e-2, 0e0, 0e0, 0e0, 0e0, -1.2251564463762044e0, -4.957589496572502e-1, 1.6643771824549864e0, -3.5032884874997366e-1, 3.341791187130175e-1, 8.192320648511571e-2, -2.2355307863886294e-2];
 }
+use crate::solver::roots::brent;
 use tableau::{A, B, BH, C, ER};
 
 /// Relative and absolute tolerance per step, in normalized units (x, x' of order 1). With the
@@ -76,6 +77,55 @@ pub fn step_with(
         1.0
     };
     (y1, h.abs() * err5 * (1.0 / (2.0 * deno)).sqrt())
+}
+
+/// The quintic Hermite interpolant of x over a step, from x, x', x'' at both ends: (x, x', x'')
+/// anywhere in the step to O(h⁶), O(h⁵), O(h⁴). Used to locate the turning point and the peak
+/// force without re-taking steps (each root then costs one real step, not a dozen).
+pub struct Hermite {
+    /// x(θ h) = Σ c_i θ^i.
+    c: [f64; 6],
+    h: f64,
+}
+
+impl Hermite {
+    /// From the step's ends: y = (x, x') with f(y) = k0 at the start, y1 and x'' = a1 at the end.
+    pub fn new((y0, k0): ([f64; 2], [f64; 2]), y1: [f64; 2], a1: f64, h: f64) -> Hermite {
+        let (x0, v0, a0) = (y0[0], h * y0[1], h * h * k0[1]);
+        let (x1, v1, a1) = (y1[0], h * y1[1], h * h * a1);
+        // x(θ) with x, x', x'' matching at θ = 0 and 1
+        let d = x1 - x0 - v0 - 0.5 * a0;
+        let e = v1 - v0 - a0;
+        let f = a1 - a0;
+        let c3 = 10.0 * d - 4.0 * e + 0.5 * f;
+        let c4 = -15.0 * d + 7.0 * e - f;
+        let c5 = 6.0 * d - 3.0 * e + 0.5 * f;
+        Hermite {
+            c: [x0, v0, 0.5 * a0, c3, c4, c5],
+            h,
+        }
+    }
+
+    /// (x, x', x'') at τ = s into the step.
+    pub fn at(&self, s: f64) -> [f64; 3] {
+        let (t, c, h) = (s / self.h, &self.c, self.h);
+        let x = c[0] + t * (c[1] + t * (c[2] + t * (c[3] + t * (c[4] + t * c[5]))));
+        let dx = c[1] + t * (2.0 * c[2] + t * (3.0 * c[3] + t * (4.0 * c[4] + t * 5.0 * c[5])));
+        let ddx = 2.0 * c[2] + t * (6.0 * c[3] + t * (12.0 * c[4] + t * 20.0 * c[5]));
+        [x, dx / h, ddx / (h * h)]
+    }
+
+    /// Where `g` of the interpolated (x, x', x'') falls from > 0 to ≤ 0 in (0, h]; h when it
+    /// does not change sign on the interpolant.
+    pub fn root(&self, g: impl Fn([f64; 3]) -> f64, h: f64) -> f64 {
+        let f = |s: f64| g(self.at(s));
+        let (g0, g1) = (f(0.0), f(h));
+        if g0 > 0.0 && g1 <= 0.0 {
+            brent(f, 0.0, h, g0, g1, 1e-14 * h)
+        } else {
+            h
+        }
+    }
 }
 
 #[cfg(test)]

@@ -10,8 +10,8 @@
 //! nothing unless histories are asked for, and it can switch to w = x^{1/p} as the independent
 //! variable near x = 0, which the crate's solvers cannot (`w_phase`).
 
-use super::dop853::step_with;
-use crate::solver::roots::{brent, newton_bracketed_from};
+use super::dop853::{Hermite, step_with};
+use crate::solver::roots::newton_bracketed_from;
 
 /// Steps allowed before the run is declared unresolved (no impact here takes 1 000).
 const MAX_STEPS: usize = 100_000;
@@ -136,9 +136,29 @@ fn w_phase<L: Law>(
     (w, s[0], s[1], steps)
 }
 
-/// Integrate from x = 0, x' = 1 until the contact ends. `sample_every` > 0 lands steps on
-/// τ = j·sample_every and records (τ, F̄, x) there (the histories' second pass).
-pub fn run<L: Law>(law: &L, sample_every: f64, samples: &mut Vec<[f64; 3]>) -> Run {
+/// What a run is for: the COR alone (no peaks located), the summary with the peaks, or the
+/// histories' pass, landing steps on τ = j·spacing and recording (τ, F̄, x) there.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Want {
+    Cor,
+    Peaks,
+    History(f64),
+}
+
+impl Want {
+    /// (locate the peaks, sample spacing or 0)
+    fn parts(self) -> (bool, f64) {
+        match self {
+            Want::Cor => (false, 0.0),
+            Want::Peaks => (true, 0.0),
+            Want::History(every) => (true, every),
+        }
+    }
+}
+
+/// Integrate from x = 0, x' = 1 until the contact ends.
+pub fn run<L: Law>(law: &L, want: Want, samples: &mut Vec<[f64; 3]>) -> Run {
+    let (peaks, sample_every) = want.parts();
     let mut out = Run {
         f_max: law.force(0.0, 1.0),
         ..Run::default()
@@ -167,7 +187,7 @@ pub fn run<L: Law>(law: &L, sample_every: f64, samples: &mut Vec<[f64; 3]>) -> R
         let at = (tau, y, k0);
         if y1[1] < 0.0 && law.end(y1[0], y1[1]) <= 0.0 {
             match land_on_end(law, at, hs) {
-                Ok(end) => return finish(law, out, at, end, rising),
+                Ok(end) => return finish(law, out, at, end, peaks.then_some(rising)),
                 Err(shorter) => h = shorter,
             }
             continue;
@@ -183,7 +203,10 @@ pub fn run<L: Law>(law: &L, sample_every: f64, samples: &mut Vec<[f64; 3]>) -> R
         }
         let (f1, a1) = (law.force(y1[0], y1[1]), -law.drive(y1[0], y1[1]));
         let rising1 = law.force_rate(y1[0], y1[1], a1) > 0.0;
-        refine_peaks(law, &mut out, at, hs, (y1, rising, rising1));
+        // the overdamped Kelvin–Voigt run ends at its turning point, so it needs it located
+        if peaks || law.stays_after_turning() {
+            refine_peaks(law, &mut out, at, hs, (y1, rising, rising1));
+        }
         rising = rising1;
         out.f_max = out.f_max.max(f1);
         out.x_max = out.x_max.max(y1[0]);
@@ -294,11 +317,14 @@ fn finish<L: Law>(
     mut out: Run,
     (tau, y, k0): (f64, [f64; 2], [f64; 2]),
     (s, y_end): (f64, [f64; 2]),
-    rising: bool,
+    rising: Option<bool>,
 ) -> Run {
     let f_end = law.force(y_end[0], y_end[1]);
-    let rising_end = law.force_rate(y_end[0], y_end[1], -law.drive(y_end[0], y_end[1])) > 0.0;
-    refine_peaks(law, &mut out, (tau, y, k0), s, (y_end, rising, rising_end));
+    if let Some(rising) = rising {
+        let a_end = -law.drive(y_end[0], y_end[1]);
+        let rising_end = law.force_rate(y_end[0], y_end[1], a_end) > 0.0;
+        refine_peaks(law, &mut out, (tau, y, k0), s, (y_end, rising, rising_end));
+    }
     out.rebound = true;
     out.f_end = f_end;
     out.tau = tau + s;
@@ -316,7 +342,7 @@ fn refine_peaks<L: Law>(
     h: f64,
     (y1, rising0, rising1): ([f64; 2], bool, bool),
 ) {
-    let hermite = Hermite::new(law, (y, k0), y1, h);
+    let hermite = Hermite::new((y, k0), y1, -law.drive(y1[0], y1[1]), h);
     if y[1] > 0.0 && y1[1] <= 0.0 {
         // x' = 0: x is flat there, so the interpolant's root (error ~h⁵) and one real step to
         // it give x_m to ~1e-13
@@ -331,54 +357,5 @@ fn refine_peaks<L: Law>(
         let s = hermite.root(|p| law.force_rate(p[0], p[1], p[2]), h);
         let yp = step(law, y, k0, s).0;
         out.f_max = out.f_max.max(law.force(yp[0], yp[1]));
-    }
-}
-
-/// The quintic Hermite interpolant of x over a step, from x, x', x'' at both ends: (x, x', x'')
-/// anywhere in the step to O(h⁶), O(h⁵), O(h⁴). Used to locate the turning point and the peak
-/// force without re-taking steps (each root then costs one real step, not a dozen).
-struct Hermite {
-    /// x(θ h) = Σ c_i θ^i.
-    c: [f64; 6],
-    h: f64,
-}
-
-impl Hermite {
-    fn new<L: Law>(law: &L, (y0, k0): ([f64; 2], [f64; 2]), y1: [f64; 2], h: f64) -> Hermite {
-        let a1 = -law.drive(y1[0], y1[1]);
-        let (x0, v0, a0) = (y0[0], h * y0[1], h * h * k0[1]);
-        let (x1, v1, a1) = (y1[0], h * y1[1], h * h * a1);
-        // x(θ) with x, x', x'' matching at θ = 0 and 1
-        let d = x1 - x0 - v0 - 0.5 * a0;
-        let e = v1 - v0 - a0;
-        let f = a1 - a0;
-        let c3 = 10.0 * d - 4.0 * e + 0.5 * f;
-        let c4 = -15.0 * d + 7.0 * e - f;
-        let c5 = 6.0 * d - 3.0 * e + 0.5 * f;
-        Hermite {
-            c: [x0, v0, 0.5 * a0, c3, c4, c5],
-            h,
-        }
-    }
-
-    /// (x, x', x'') at τ = s into the step.
-    fn at(&self, s: f64) -> [f64; 3] {
-        let (t, c, h) = (s / self.h, &self.c, self.h);
-        let x = c[0] + t * (c[1] + t * (c[2] + t * (c[3] + t * (c[4] + t * c[5]))));
-        let dx = c[1] + t * (2.0 * c[2] + t * (3.0 * c[3] + t * (4.0 * c[4] + t * 5.0 * c[5])));
-        let ddx = 2.0 * c[2] + t * (6.0 * c[3] + t * (12.0 * c[4] + t * 20.0 * c[5]));
-        [x, dx / h, ddx / (h * h)]
-    }
-
-    /// Where `g` of the interpolated (x, x', x'') falls from > 0 to ≤ 0 in (0, h]; h when it
-    /// does not change sign on the interpolant.
-    fn root(&self, g: impl Fn([f64; 3]) -> f64, h: f64) -> f64 {
-        let f = |s: f64| g(self.at(s));
-        let (g0, g1) = (f(0.0), f(h));
-        if g0 > 0.0 && g1 <= 0.0 {
-            brent(f, 0.0, h, g0, g1, 1e-14 * h)
-        } else {
-            h
-        }
     }
 }

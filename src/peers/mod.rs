@@ -208,21 +208,21 @@ pub fn non_negative(field: &'static str, value: f64) -> Result<(), PeerError> {
 }
 
 /// The normalized impact of `model` with normalized damping `d` (laws.rs).
-fn run(model: PeerModel, d: f64, sample_every: f64, s: &mut Vec<[f64; 3]>) -> integrate::Run {
+fn run(model: PeerModel, d: f64, want: integrate::Want, s: &mut Vec<[f64; 3]>) -> integrate::Run {
     match model {
-        PeerModel::KelvinVoigt => integrate::run(&laws::KelvinVoigt { zeta: d }, sample_every, s),
+        PeerModel::KelvinVoigt => integrate::run(&laws::KelvinVoigt { zeta: d }, want, s),
         PeerModel::KelvinVoigtNoTension => {
-            integrate::run(&laws::KelvinVoigtNoTension { zeta: d }, sample_every, s)
+            integrate::run(&laws::KelvinVoigtNoTension { zeta: d }, want, s)
         }
-        PeerModel::Tsuji => integrate::run(&laws::Tsuji { alpha: d }, sample_every, s),
-        PeerModel::HuntCrossley => integrate::run(&laws::HuntCrossley { chi: d }, sample_every, s),
+        PeerModel::Tsuji => integrate::run(&laws::Tsuji { alpha: d }, want, s),
+        PeerModel::HuntCrossley => integrate::run(&laws::HuntCrossley { chi: d }, want, s),
     }
 }
 
 /// The COR of `model` at normalized damping `d` ≥ 0; it depends on nothing else (laws.rs).
 pub fn cor(model: PeerModel, d: f64) -> Result<f64, PeerError> {
     non_negative("damping", d)?;
-    let r = run(model, d, 0.0, &mut Vec::new());
+    let r = run(model, d, integrate::Want::Cor, &mut Vec::new());
     if r.unresolved {
         return Err(PeerError::Unresolved {
             model,
@@ -248,7 +248,7 @@ pub fn impact(
     non_negative("damping", damping)?;
     let d = ball.damping_normalized(model, damping);
     let mut pts = Vec::new();
-    let r = run(model, d, 0.0, &mut pts);
+    let r = run(model, d, integrate::Want::Peaks, &mut pts);
     if r.unresolved {
         return Err(PeerError::Unresolved {
             model,
@@ -258,7 +258,7 @@ pub fn impact(
     if samples > 1 {
         // second pass landing on the sample times; the last point is the end of contact
         let every = r.tau / (samples - 1) as f64;
-        run(model, d, every, &mut pts);
+        run(model, d, integrate::Want::History(every), &mut pts);
         pts.truncate(samples - 1);
         pts.push([r.tau, r.f_end, r.end[0]]);
     }
