@@ -245,7 +245,8 @@ fn bad_input_names_the_field() {
 /// Peaks against closed forms: Hertz alone (χ = 0; docs/model.md §5: z_m = (5/4)^{2/5} in the
 /// peers' scaling, F_m = z_m^{3/2}, t_f = 2.94328 z_m/v0), and Kelvin–Voigt's turning point
 /// (x' = 0 at ω_d t = atan(√(1−ζ²)/ζ), x_m = e^{−ζ t} sin(√(1−ζ²) t)/√(1−ζ²)) with its
-/// peak force at t = 0 (F = 2ζ v0 √(mk)) or inside the contact.
+/// peak force at t = 0 (F = 2ζ v0 √(mk)) or inside the contact. Held to 1e-11: ten times the
+/// integrator's per-step tolerance (src/peers/dop853.rs, `TOL` = 1e-12).
 #[test]
 fn peaks_against_closed_forms() {
     let unit = PeerBall {
@@ -258,12 +259,12 @@ fn peaks_against_closed_forms() {
     let r = impact(PeerModel::HuntCrossley, &unit, 0.0, 0).unwrap();
     let zm = 1.25f64.powf(0.4);
     assert!(
-        (r.max_indentation - zm).abs() < 1e-12,
+        (r.max_indentation - zm).abs() < 1e-11,
         "{}",
         r.max_indentation
     );
     assert!(
-        (r.max_force - zm.powf(1.5)).abs() < 1e-12,
+        (r.max_force - zm.powf(1.5)).abs() < 1e-11,
         "{}",
         r.max_force
     );
@@ -274,7 +275,7 @@ fn peaks_against_closed_forms() {
         let w = (1.0f64 - zeta * zeta).sqrt();
         let tm = (w / zeta).atan() / w;
         let xm = (-zeta * tm).exp() * (w * tm).sin() / w;
-        assert!((r.max_indentation - xm).abs() < 1e-12, "ζ = {zeta}");
+        assert!((r.max_indentation - xm).abs() < 1e-11, "ζ = {zeta}");
         // F = x + 2ζx': its maximum over the contact, from a dense grid of the closed form
         let f = |t: f64| {
             let (e, s, c) = ((-zeta * t).exp(), (w * t).sin(), (w * t).cos());

@@ -345,7 +345,7 @@ fn refine_peaks<L: Law>(
     let hermite = Hermite::new((y, k0), y1, -law.drive(y1[0], y1[1]), h);
     if y[1] > 0.0 && y1[1] <= 0.0 {
         // x' = 0: x is flat there, so the interpolant's root (error ~h⁵) and one real step to
-        // it give x_m to ~1e-13
+        // it give x_m to the integrator's tolerance
         let s = hermite.root(|p| p[1], h);
         let yt = step(law, y, k0, s).0;
         out.tau_unload = tau + s;
