@@ -16,6 +16,7 @@ pub mod fault;
 pub mod figure;
 pub mod measured;
 pub mod model;
+pub mod peers;
 pub mod preset;
 pub mod sanitize;
 pub mod signals;
