@@ -24,7 +24,7 @@ fn peers_cor_velocity_flat_peers_falling_fixed_alpha() {
         "superball",
         "--out",
         s,
-        "--data",
+        "--csv-out",
         c,
     ]);
     roxmltree::Document::parse(&std::fs::read_to_string(&svg).unwrap()).unwrap();
@@ -65,7 +65,7 @@ fn peers_force_time_starts_and_ends_at_rest() {
         "50",
         "--out",
         s,
-        "--data",
+        "--csv-out",
         c,
     ]);
     let text = std::fs::read_to_string(&csv).unwrap();

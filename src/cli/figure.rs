@@ -1,4 +1,4 @@
-//! `bouncelab figure NAME --out FILE.svg [--data FILE.csv]`: one of the paper's figures as
+//! `bouncelab figure NAME --out FILE.svg [--csv-out FILE.csv]`: one of the paper's figures as
 //! SVG, and its plotted series as CSV. The figures themselves are built in
 //! [`crate::figure::paper`]; this file reads the options, solves, and writes the files.
 
