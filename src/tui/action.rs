@@ -43,6 +43,10 @@ pub enum Action {
     PrevView,
     ToggleHelp,
     CloseHelp,
+    /// Scroll the help.
+    HelpScroll(Scroll),
+    /// The terminal is now `width` × `height` cells.
+    Resize(u16, u16),
     /// A COR-vs-speed sweep finished (from the background worker).
     SpeedReady(SpeedRequest, Result<SpeedCurve, String>),
     /// Export the current view's charts (SVG + CSV each): `update` prepares an
@@ -89,6 +93,17 @@ pub enum Action {
     ConfirmNo,
 }
 
+/// How the help scrolls.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Scroll {
+    Up,
+    Down,
+    PageUp,
+    PageDown,
+    Home,
+    End,
+}
+
 /// What the keyboard is talking to.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Mode {
@@ -98,12 +113,15 @@ pub enum Mode {
     Input,
     /// A yes/no question: only `y`, `n` and Esc answer, other keys do nothing.
     Confirm,
+    /// The terminal is below the minimum size: only quitting acts.
+    TooSmall,
 }
 
 /// The action for a terminal event, if any (key presses and repeats; releases are ignored).
 pub fn from_event(event: &Event, mode: Mode) -> Option<Action> {
     match event {
         Event::Key(key) if key.kind != KeyEventKind::Release => from_key(*key, mode),
+        Event::Resize(w, h) => Some(Action::Resize(*w, *h)),
         _ => None,
     }
 }
@@ -127,13 +145,28 @@ pub fn from_key(key: KeyEvent, mode: Mode) -> Option<Action> {
             KeyCode::Char('n' | 'N') | KeyCode::Esc => Some(Action::ConfirmNo),
             _ => None,
         },
-        Mode::Help => match key.code {
-            KeyCode::Esc | KeyCode::Enter | KeyCode::Char('?') => Some(Action::CloseHelp),
-            KeyCode::Char('q') => Some(Action::Quit),
+        Mode::Help => help(key.code),
+        Mode::TooSmall => match key.code {
+            KeyCode::Char('q') | KeyCode::Esc => Some(Action::Quit),
             _ => None,
         },
         Mode::Normal if ctrl => None,
         Mode::Normal => normal(key),
+    }
+}
+
+/// In the help: scroll, or close it (`q` too: the help is left, not the explorer).
+fn help(code: KeyCode) -> Option<Action> {
+    let scroll = |s| Some(Action::HelpScroll(s));
+    match code {
+        KeyCode::Esc | KeyCode::Enter | KeyCode::Char('?' | 'q') => Some(Action::CloseHelp),
+        KeyCode::Up | KeyCode::Char('k') => scroll(Scroll::Up),
+        KeyCode::Down | KeyCode::Char('j') => scroll(Scroll::Down),
+        KeyCode::PageUp => scroll(Scroll::PageUp),
+        KeyCode::PageDown | KeyCode::Char(' ') => scroll(Scroll::PageDown),
+        KeyCode::Home | KeyCode::Char('g') => scroll(Scroll::Home),
+        KeyCode::End | KeyCode::Char('G') => scroll(Scroll::End),
+        _ => None,
     }
 }
 
@@ -234,7 +267,13 @@ mod tests {
     #[test]
     fn quitting() {
         let ctrl_c = KeyEvent::new(KeyCode::Char('c'), KeyModifiers::CONTROL);
-        for mode in [Mode::Normal, Mode::Help, Mode::Input, Mode::Confirm] {
+        for mode in [
+            Mode::Normal,
+            Mode::Help,
+            Mode::Input,
+            Mode::Confirm,
+            Mode::TooSmall,
+        ] {
             assert_eq!(from_key(ctrl_c, mode), Some(Action::Quit));
         }
         assert_eq!(
@@ -285,6 +324,9 @@ mod tests {
         let mut k = key(KeyCode::Char('l'));
         k.kind = KeyEventKind::Release;
         assert_eq!(from_event(&Event::Key(k), Mode::Normal), None);
-        assert_eq!(from_event(&Event::Resize(10, 10), Mode::Normal), None);
+        assert_eq!(
+            from_event(&Event::Resize(10, 10), Mode::Normal),
+            Some(Action::Resize(10, 10))
+        );
     }
 }

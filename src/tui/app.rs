@@ -8,6 +8,7 @@
 mod dialogs;
 mod drop;
 mod scene;
+mod screen;
 mod sweeps;
 
 use super::action::{Action, Mode};
@@ -61,6 +62,10 @@ pub struct App {
     drop: DropView,
     /// Measured data drawn on the charts (`bouncelab --measured FILE`).
     measured: Vec<crate::figure::explorer::MeasuredOverlay>,
+    /// The first help line shown.
+    help_scroll: u16,
+    /// The terminal's width and height, once the loop has said (`Action::Resize`).
+    size: Option<(u16, u16)>,
 }
 
 impl App {
@@ -99,6 +104,8 @@ impl App {
             save_out: None,
             drop: DropView::new(false),
             measured: Vec::new(),
+            help_scroll: 0,
+            size: None,
         };
         app.refresh();
         app
@@ -156,6 +163,10 @@ impl App {
     pub fn undo_depth(&self) -> usize {
         self.undo.len()
     }
+    /// The first help line shown.
+    pub fn help_scroll(&self) -> u16 {
+        self.help_scroll
+    }
     pub fn should_quit(&self) -> bool {
         self.quit
     }
@@ -171,6 +182,9 @@ impl App {
 
     /// What the keyboard is talking to.
     pub fn mode(&self) -> Mode {
+        if self.too_small() {
+            return Mode::TooSmall;
+        }
         match self.overlay {
             Overlay::None => Mode::Normal,
             Overlay::Help => Mode::Help,
@@ -190,11 +204,19 @@ impl App {
     /// Apply one action without recomputing: for a batch of queued events, `apply` each, then
     /// [`App::refresh`] once.
     pub fn apply(&mut self, action: Action) -> Vec<Effect> {
-        if !matches!(action, Action::SpeedReady(..) | Action::Tick(_)) {
+        if self.too_small() && !App::acts_when_too_small(&action) {
+            return Vec::new();
+        }
+        if !matches!(
+            action,
+            Action::SpeedReady(..) | Action::Tick(_) | Action::Resize(..)
+        ) {
             self.message = None;
         }
         match action {
             Action::Quit => self.quit = true,
+            Action::Resize(w, h) => self.resize(w, h),
+            Action::HelpScroll(how) => self.scroll_help(how),
             Action::NextView | Action::PrevView => self.view = self.view.other(),
             Action::ToggleDrop | Action::DropPause | Action::DropReplay | Action::Tick(_) => {
                 self.drop_action(&action)

@@ -25,7 +25,8 @@ pub fn run(terminal: &mut DefaultTerminal, app: &mut App) -> anyhow::Result<()> 
     // test-only (see `crate::fault`): tests/tui_pty.rs checks that the terminal is restored
     // after a panic in here
     let panic_on_key = Fault::PanicInLoop.active();
-    let mut effects = app.refresh();
+    let size = terminal.size()?;
+    let mut effects = app.update(Action::Resize(size.width, size.height));
     let mut dirty = true;
     let mut clock = Instant::now();
     while !app.should_quit() {

@@ -20,6 +20,7 @@ pub mod effect;
 pub mod event;
 pub mod export;
 pub mod format;
+pub mod keys;
 pub mod param;
 pub mod save;
 pub mod setting;

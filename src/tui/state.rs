@@ -8,6 +8,11 @@ pub use super::setting::Setting;
 use crate::figure::explorer::Chart;
 use crate::solver::ImpactResponse;
 
+/// Below this the explorer asks for a larger terminal, and only resize and quit act (the
+/// screen shows nothing else, so no other key may change what is unseen).
+pub const MIN_WIDTH: u16 = 50;
+pub const MIN_HEIGHT: u16 = 16;
+
 /// The pages `Tab` switches between.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum View {

@@ -17,9 +17,7 @@ use ratatui::layout::{Constraint, Layout, Rect};
 use ratatui::text::Line;
 use ratatui::widgets::{Paragraph, Widget, Wrap};
 
-/// Below this the explorer asks for a larger terminal.
-pub const MIN_WIDTH: u16 = 50;
-pub const MIN_HEIGHT: u16 = 16;
+pub use super::state::{MIN_HEIGHT, MIN_WIDTH};
 /// From this width the readout is a panel beside the charts.
 const SIDE_PANEL_WIDTH: u16 = 80;
 
@@ -128,7 +126,11 @@ fn readout(app: &App, tall: bool, theme: Theme) -> Readout<'_> {
 fn render_overlay(app: &App, theme: Theme, area: Rect, buf: &mut Buffer) {
     match app.overlay() {
         Overlay::None => {}
-        Overlay::Help => Help { theme }.render(area, buf),
+        Overlay::Help => Help {
+            theme,
+            scroll: app.help_scroll(),
+        }
+        .render(area, buf),
         Overlay::Input(input) => InputDialog {
             input,
             setting: app.setting(),

@@ -3,11 +3,13 @@
 
 use super::{App, Confirm, Effect, Input, Overlay, Purpose};
 use crate::tui::action::Action;
-use crate::tui::save::{self, NAME_MAX, SaveRequest};
+use crate::tui::save::{self, SaveRequest};
 use std::path::{Path, PathBuf};
 
-/// Longest number typed in the value entry.
-const VALUE_MAX: usize = 24;
+/// Longest text the entry holds. Values and names are kept whole up to here and checked on
+/// Enter (a name over `save::NAME_MAX` is refused then, with the reason), never cut; past it
+/// a key is refused with a message — no number or name needs that many characters.
+const ENTRY_MAX: usize = 100;
 
 impl App {
     /// The actions of the dialogs and the help overlay; a save to write when one is accepted.
@@ -27,6 +29,7 @@ impl App {
             Action::ConfirmNo => return self.confirm(false),
             Action::CloseHelp => self.overlay = Overlay::None,
             Action::ToggleHelp => {
+                self.help_scroll = 0;
                 self.overlay = match self.overlay {
                     Overlay::Help => Overlay::None,
                     _ => Overlay::Help,
@@ -47,12 +50,10 @@ impl App {
 
     pub(super) fn input_char(&mut self, c: char) {
         if let Overlay::Input(input) = &mut self.overlay {
-            let max = match input.purpose {
-                Purpose::Value(_) => VALUE_MAX,
-                Purpose::PresetName => NAME_MAX,
-            };
-            if input.text.chars().count() < max {
+            if input.text.chars().count() < ENTRY_MAX {
                 input.text.push(c);
+            } else {
+                input.error = Some(format!("the entry holds at most {ENTRY_MAX} characters"));
             }
         }
     }

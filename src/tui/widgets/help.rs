@@ -1,55 +1,27 @@
 //! The help overlay (`?`): every key.
 
+use crate::tui::keys::{KEYS, help_max_scroll};
 use crate::tui::theme::Theme;
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
 use ratatui::text::{Line, Span};
 use ratatui::widgets::{Block, Clear, Paragraph, Widget};
 
-/// (keys, what they do)
-pub const KEYS: [(&str, &str); 27] = [
-    ("l / L", "λ up / down (±0.01, coarse ±0.1)"),
-    ("z / Z", "ζ up / down (×1.1, coarse ×2)"),
-    ("v / V", "v0 up / down (±0.1, coarse ±1 m/s)"),
-    ("↑ / ↓", "change the selected parameter"),
-    ("Shift+↑↓ PgUp/Dn", "coarse step"),
-    ("← / →", "select λ, ζ or v0"),
-    ("[ / ]", "fine / coarse steps"),
-    ("= or Enter", "type an exact value"),
-    ("1 2 3", "load superball, golf, baseball"),
-    ("4", "the start preset, if another"),
-    ("c", "cycle the contact law"),
-    ("r", "reset to the preset"),
-    ("p / P", "pin curves as a ghost / clear it"),
-    ("u", "undo the last change"),
-    ("e", "export this view (SVG + CSV files)"),
-    ("s", "save as a user preset (asks a name)"),
-    ("Tab / Shift+Tab", "switch view (impact, sweeps)"),
-    ("d", "drop test (space pauses, b replays)"),
-    ("?", "this help (Esc or ? closes)"),
-    ("q  Esc  Ctrl-C", "quit"),
-    ("", ""),
-    ("In the value or name entry", ""),
-    ("Enter / Esc", "accept / cancel"),
-    ("Backspace", "delete a character"),
-    ("", ""),
-    ("At \"overwrite …? y/n\"", ""),
-    ("y / n or Esc", "replace the file / keep it"),
-];
-
 /// The help overlay, centred on the area it is given.
 #[derive(Debug, Clone, Copy)]
 pub struct Help {
     pub theme: Theme,
+    /// The first line shown (`App::help_scroll`).
+    pub scroll: u16,
 }
 
 impl Widget for &Help {
     fn render(self, area: Rect, buf: &mut Buffer) {
-        render(&self.theme, area, buf);
+        render(&self.theme, self.scroll, area, buf);
     }
 }
 
-fn render(theme: &Theme, area: Rect, buf: &mut Buffer) {
+fn render(theme: &Theme, scroll: u16, area: Rect, buf: &mut Buffer) {
     // section headings (rows without text) span the line: they do not widen the key column
     let key_w = KEYS
         .iter()
@@ -79,8 +51,22 @@ fn render(theme: &Theme, area: Rect, buf: &mut Buffer) {
             }
         })
         .collect();
+    // `update` keeps the scroll within the screen it knows; a smaller area still shows the end
+    let scroll = scroll.min(help_max_scroll(area.height));
+    let more = if scroll < help_max_scroll(area.height) {
+        " ↓ more "
+    } else if scroll > 0 {
+        " ↑ more "
+    } else {
+        ""
+    };
     Clear.render(popup, buf);
     Paragraph::new(lines)
-        .block(Block::bordered().title(Line::styled(" Keys · Esc or ? closes ", theme.title())))
+        .scroll((scroll, 0))
+        .block(
+            Block::bordered()
+                .title(Line::styled(" Keys · Esc or ? closes ", theme.title()))
+                .title_bottom(Line::styled(more, theme.dim()).right_aligned()),
+        )
         .render(popup, buf);
 }

@@ -56,11 +56,14 @@ fn render(input: &Input, s: &Setting, theme: &Theme, area: Rect, buf: &mut Buffe
             )
         }
     };
+    let w = width.min(area.width);
+    // border, label and cursor take the rest of the row: a longer text shows its end
+    let room = (w as usize).saturating_sub(label.chars().count() + 3);
     let mut lines = vec![
         Line::styled(about, theme.dim()),
         Line::from(vec![
             Span::styled(label, theme.title()),
-            Span::raw(input.text.clone()),
+            Span::raw(tail(&input.text, room)),
             Span::styled("█", theme.dim()),
         ]),
     ];
@@ -69,7 +72,6 @@ fn render(input: &Input, s: &Setting, theme: &Theme, area: Rect, buf: &mut Buffe
         None => lines.push(Line::raw("")),
     }
     lines.push(Line::styled(keys, theme.dim()));
-    let w = width.min(area.width);
     let h = 6.min(area.height);
     let popup = Rect::new(
         area.x + (area.width - w) / 2,
@@ -81,4 +83,15 @@ fn render(input: &Input, s: &Setting, theme: &Theme, area: Rect, buf: &mut Buffe
     Paragraph::new(lines)
         .block(Block::bordered().title(Line::styled(title, theme.title())))
         .render(popup, buf);
+}
+
+/// The end of `text` in `room` characters: "…" and the last ones when it is longer.
+fn tail(text: &str, room: usize) -> String {
+    let n = text.chars().count();
+    if n <= room {
+        return text.to_string();
+    }
+    let keep = room.saturating_sub(1);
+    let end: String = text.chars().skip(n - keep).collect();
+    format!("…{end}")
 }

@@ -1,0 +1,43 @@
+//! The keys the help lists (`?`): the table the help draws, and how many lines it has, which
+//! `update` needs to stop the help's scrolling at its end.
+
+/// (keys, what they do); a row without text is a section heading.
+pub const KEYS: [(&str, &str); 30] = [
+    ("l / L", "λ up / down (±0.01, coarse ±0.1)"),
+    ("z / Z", "ζ up / down (×1.1, coarse ×2)"),
+    ("v / V", "v0 up / down (±0.1, coarse ±1 m/s)"),
+    ("↑ / ↓", "change the selected parameter"),
+    ("Shift+↑↓ PgUp/Dn", "coarse step"),
+    ("← / →", "select λ, ζ or v0"),
+    ("[ / ]", "fine / coarse steps"),
+    ("= or Enter", "type an exact value"),
+    ("1 2 3", "load superball, golf, baseball"),
+    ("4", "the start preset, if another"),
+    ("c", "cycle the contact law"),
+    ("r", "reset to the preset"),
+    ("p / P", "pin curves as a ghost / clear it"),
+    ("u", "undo the last change"),
+    ("e", "export this view (SVG + CSV files)"),
+    ("s", "save as a user preset (asks a name)"),
+    ("Tab / Shift+Tab", "switch view (impact, sweeps)"),
+    ("d", "drop test (space pauses, b replays)"),
+    ("?", "this help (Esc, ? or q closes)"),
+    ("q  Esc  Ctrl-C", "quit"),
+    ("", ""),
+    ("In this help", ""),
+    ("↑↓ j k PgUp/Dn", "scroll (Home / End: top / end)"),
+    ("", ""),
+    ("In the value or name entry", ""),
+    ("Enter / Esc", "accept / cancel"),
+    ("Backspace", "delete a character"),
+    ("", ""),
+    ("At \"overwrite …? y/n\"", ""),
+    ("y / n or Esc", "replace the file / keep it"),
+];
+
+/// The first help line that can be shown at the top when the screen is `height` rows: the
+/// help's box takes the whole height at most, two rows of it the border.
+pub fn help_max_scroll(height: u16) -> u16 {
+    let rows = height.saturating_sub(2) as usize;
+    KEYS.len().saturating_sub(rows) as u16
+}

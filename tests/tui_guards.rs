@@ -1,0 +1,120 @@
+//! What the explorer refuses, and says so (issue 18): keys below the minimum size, the help's
+//! own keys, over-long names and values.
+
+use bouncelab::preset::Preset;
+use bouncelab::tui::action::{self, Action, Mode};
+use bouncelab::tui::app::{App, Overlay};
+use bouncelab::tui::param::Param;
+use ratatui::Terminal;
+use ratatui::backend::TestBackend;
+use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
+
+fn superball() -> App {
+    App::new(Preset::embedded().remove(0), true)
+}
+
+fn press(app: &mut App, keys: &[KeyCode]) {
+    for &code in keys {
+        let m = match code {
+            KeyCode::Char(c) if c.is_ascii_uppercase() => KeyModifiers::SHIFT,
+            _ => KeyModifiers::NONE,
+        };
+        if let Some(a) = action::from_key(KeyEvent::new(code, m), app.mode()) {
+            app.update(a);
+        }
+    }
+}
+
+fn chars(s: &str) -> Vec<KeyCode> {
+    s.chars().map(KeyCode::Char).collect()
+}
+
+fn draw(app: &App, w: u16, h: u16) -> Terminal<TestBackend> {
+    let mut t = Terminal::new(TestBackend::new(w, h)).unwrap();
+    t.draw(|f| f.render_widget(app, f.area())).unwrap();
+    t
+}
+
+fn input_error(app: &App) -> Option<String> {
+    match app.overlay() {
+        Overlay::Input(i) => i.error.clone(),
+        _ => None,
+    }
+}
+
+#[test]
+fn below_the_minimum_size_only_resize_and_quit_act() {
+    let mut app = superball();
+    let v0 = app.setting().get(Param::V0);
+    app.update(Action::Resize(40, 12));
+    press(&mut app, &chars("vvv?l=s"));
+    press(&mut app, &[KeyCode::Enter, KeyCode::Tab]);
+    assert_eq!(app.setting().get(Param::V0), v0, "v0 changed unseen");
+    assert_eq!(app.mode(), Mode::TooSmall);
+    assert_eq!(app.overlay(), &Overlay::None, "no invisible dialog opened");
+    assert_eq!(app.undo_depth(), 0);
+    app.update(Action::Resize(120, 40));
+    press(&mut app, &chars("v"));
+    assert!(
+        app.setting().get(Param::V0) > v0,
+        "keys act again once large enough"
+    );
+    app.update(Action::Resize(40, 12));
+    press(&mut app, &chars("q"));
+    assert!(app.should_quit(), "q still quits below the minimum size");
+}
+
+#[test]
+fn the_help_scrolls_and_q_closes_it() {
+    let mut app = superball();
+    app.update(Action::Resize(80, 24));
+    press(&mut app, &chars("?"));
+    assert_eq!(app.help_scroll(), 0);
+    press(&mut app, &chars("j"));
+    assert_eq!(app.help_scroll(), 1);
+    press(&mut app, &[KeyCode::Up, KeyCode::Up]);
+    assert_eq!(app.help_scroll(), 0, "stops at the top");
+    press(&mut app, &[KeyCode::End]);
+    let end = app.help_scroll();
+    assert!(end > 0);
+    press(&mut app, &[KeyCode::Down, KeyCode::PageDown]);
+    assert_eq!(app.help_scroll(), end, "stops at the end");
+    insta::assert_snapshot!(draw(&app, 80, 24).backend());
+    press(&mut app, &[KeyCode::Home]);
+    assert_eq!(app.help_scroll(), 0);
+    press(&mut app, &chars("q"));
+    assert!(!app.should_quit(), "q closes the help, it does not quit");
+    assert_eq!(app.mode(), Mode::Normal);
+}
+
+#[test]
+fn a_name_over_40_characters_is_refused_not_cut() {
+    let mut app = superball();
+    press(&mut app, &chars("s"));
+    press(&mut app, &[KeyCode::Backspace; 16]);
+    let long = "a".repeat(45);
+    press(&mut app, &chars(&long));
+    let Overlay::Input(i) = app.overlay() else {
+        panic!("no prompt")
+    };
+    assert_eq!(i.text, long, "the name is kept whole");
+    press(&mut app, &[KeyCode::Enter]);
+    assert_eq!(app.mode(), Mode::Input, "the prompt stays open");
+    assert_eq!(
+        input_error(&app).as_deref(),
+        Some("a preset name has at most 40 characters")
+    );
+}
+
+#[test]
+fn a_long_value_is_read_whole() {
+    let mut app = superball();
+    press(
+        &mut app,
+        &[KeyCode::Right, KeyCode::Right, KeyCode::Char('=')],
+    );
+    press(&mut app, &chars("1.0000000000000000000000e-1"));
+    press(&mut app, &[KeyCode::Enter]);
+    assert_eq!(app.mode(), Mode::Normal);
+    assert_eq!(app.setting().get(Param::V0), 0.1);
+}
