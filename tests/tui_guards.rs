@@ -118,3 +118,58 @@ fn a_long_value_is_read_whole() {
     assert_eq!(app.mode(), Mode::Normal);
     assert_eq!(app.setting().get(Param::V0), 0.1);
 }
+
+/// Type `text` as the value of the selected parameter; the entry's error, if refused.
+fn enter_value(app: &mut App, text: &str) -> Option<String> {
+    press(app, &[KeyCode::Char('=')]);
+    press(app, &chars(text));
+    press(app, &[KeyCode::Enter]);
+    let error = input_error(app);
+    press(app, &[KeyCode::Esc]);
+    error
+}
+
+#[test]
+fn out_of_range_typed_values_are_refused_with_the_range() {
+    let mut app = superball();
+    let before = app.setting().clone();
+    press(&mut app, &[KeyCode::Right, KeyCode::Right]); // v0
+    let why = enter_value(&mut app, "-5").expect("v0 -5 refused");
+    assert!(why.contains("range"), "{why}");
+    press(&mut app, &[KeyCode::Left, KeyCode::Left]); // λ
+    assert!(enter_value(&mut app, "-1").is_some(), "λ -1 refused");
+    assert!(
+        enter_value(&mut app, "1e-16").is_some(),
+        "λ 1e-16 refused as run does"
+    );
+    press(&mut app, &[KeyCode::Right]); // ζ
+    assert!(enter_value(&mut app, "0").is_some(), "ζ 0 refused");
+    let why = enter_value(&mut app, "1e999").unwrap();
+    assert!(
+        why.contains("out of range") && !why.contains("not a number"),
+        "{why}"
+    );
+    assert_eq!(app.setting(), &before, "nothing was clamped in");
+}
+
+#[test]
+fn ctrl_u_clears_the_entry() {
+    let mut app = superball();
+    press(&mut app, &[KeyCode::Char('=')]);
+    press(&mut app, &chars("123"));
+    let ctrl_u = KeyEvent::new(KeyCode::Char('u'), KeyModifiers::CONTROL);
+    app.update(action::from_key(ctrl_u, app.mode()).expect("Ctrl-U acts"));
+    let Overlay::Input(i) = app.overlay() else {
+        panic!("no entry")
+    };
+    assert_eq!(i.text, "");
+}
+
+#[test]
+fn a_long_reason_wraps_in_the_entry() {
+    let mut app = superball();
+    press(&mut app, &[KeyCode::Char('=')]);
+    press(&mut app, &chars("1e-16"));
+    press(&mut app, &[KeyCode::Enter]);
+    insta::assert_snapshot!(draw(&app, 80, 24).backend());
+}

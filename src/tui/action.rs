@@ -29,6 +29,8 @@ pub enum Action {
     OpenInput,
     InputChar(char),
     InputBackspace,
+    /// Ctrl-U in the entry: clear it.
+    InputClear,
     InputSubmit,
     InputCancel,
     /// Load preset number `i` (0-based: superball, golf, baseball, then the start preset when
@@ -131,6 +133,9 @@ pub fn from_key(key: KeyEvent, mode: Mode) -> Option<Action> {
     let ctrl = key.modifiers.contains(KeyModifiers::CONTROL);
     if ctrl && matches!(key.code, KeyCode::Char('c' | 'C')) {
         return Some(Action::Quit);
+    }
+    if ctrl && mode == Mode::Input && matches!(key.code, KeyCode::Char('u' | 'U')) {
+        return Some(Action::InputClear);
     }
     match mode {
         Mode::Input => match key.code {

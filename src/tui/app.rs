@@ -234,6 +234,7 @@ impl App {
             Action::OpenInput
             | Action::InputChar(_)
             | Action::InputBackspace
+            | Action::InputClear
             | Action::InputSubmit
             | Action::InputCancel
             | Action::SavePreset

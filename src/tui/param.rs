@@ -1,7 +1,8 @@
 //! The three parameters the explorer changes live (λ, ζ, v0): their ranges, steps and clamping.
 //! Everything else about the ball comes from the preset.
 
-use crate::model::params::ImpactParams;
+use crate::model::params::{Field, ImpactParams, check_positive, validate_lambda_zeta};
+use crate::text::sig_trim;
 
 /// A live parameter.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -80,6 +81,31 @@ impl Param {
         let (lo, hi) = self.range();
         let v = value.clamp(lo, hi);
         Some((v, v != value))
+    }
+
+    /// Whether a typed `value` may be used, with the current λ and ζ (`lambda_zeta`): in the
+    /// explorer's range, and valid for `run` too (`validate_lambda_zeta`, `check_positive`:
+    /// the command line's own checks). Refused, never clamped: the reason names the range.
+    pub fn check(self, value: f64, (lambda, zeta): (f64, f64)) -> Result<(), String> {
+        let (lo, hi) = self.range();
+        if !(lo..=hi).contains(&value) {
+            let shown = if value.is_finite() {
+                sig_trim(value, 6)
+            } else {
+                "that".into()
+            };
+            return Err(format!(
+                "{shown} is out of range {}; {} kept",
+                self.range_text(),
+                self.symbol()
+            ));
+        }
+        let valid = match self {
+            Param::Lambda => validate_lambda_zeta(value, zeta),
+            Param::Zeta => validate_lambda_zeta(lambda, value),
+            Param::V0 => check_positive(Field::V0, value),
+        };
+        valid.map_err(|e| format!("{e}; {} kept", self.symbol()))
     }
 
     /// The parameter's value in `params`.

@@ -2,7 +2,9 @@
 //! name to save a preset under) and the question before a preset file is overwritten.
 
 use super::{App, Confirm, Effect, Input, Overlay, Purpose};
+use crate::cli::number::number;
 use crate::tui::action::Action;
+use crate::tui::param::Param;
 use crate::tui::save::{self, SaveRequest};
 use std::path::{Path, PathBuf};
 
@@ -17,6 +19,11 @@ impl App {
         match action {
             Action::OpenInput => self.open_input(Purpose::Value(self.selected), String::new()),
             Action::InputChar(c) => self.input_char(c),
+            Action::InputClear => {
+                if let Overlay::Input(input) = &mut self.overlay {
+                    input.text.clear();
+                }
+            }
             Action::InputBackspace => {
                 if let Overlay::Input(input) = &mut self.overlay {
                     input.text.pop();
@@ -71,14 +78,31 @@ impl App {
             self.overlay = Overlay::None;
             return None;
         }
-        match text.parse::<f64>() {
-            Ok(v) if v.is_finite() => {
+        // read as the command line reads numbers; 1e999 is a number, out of range
+        let lambda_zeta = (
+            self.setting.get(Param::Lambda),
+            self.setting.get(Param::Zeta),
+        );
+        let checked = number(&text)
+            .map_err(|e| {
+                // the text is echoed while it is short enough to leave the reason readable
+                let e = if text.chars().count() <= 16 {
+                    e
+                } else {
+                    "not a number".into()
+                };
+                format!("{e}; {} kept", param.symbol())
+            })
+            .and_then(|v| param.check(v, lambda_zeta).map(|()| v));
+        match checked {
+            Ok(v) => {
                 self.overlay = Overlay::None;
                 self.set_param(param, v);
             }
-            _ => {
-                let why = format!("'{text}' is not a number; {} kept", param.symbol());
-                input.error = Some(why.clone());
+            Err(why) => {
+                if let Overlay::Input(input) = &mut self.overlay {
+                    input.error = Some(why.clone());
+                }
                 self.warn(why);
             }
         }

@@ -67,12 +67,18 @@ fn render(input: &Input, s: &Setting, theme: &Theme, area: Rect, buf: &mut Buffe
             Span::styled("█", theme.dim()),
         ]),
     ];
-    match &input.error {
-        Some(e) => lines.push(Line::styled(format!(" {e}"), theme.warning())),
-        None => lines.push(Line::raw("")),
-    }
+    // the reason is wrapped at spaces, never cut mid-word: the dialog grows for it
+    let reason = match &input.error {
+        Some(e) => wrap(e, (w as usize).saturating_sub(3)),
+        None => vec![String::new()],
+    };
+    let h = (5 + reason.len() as u16).min(area.height);
+    lines.extend(
+        reason
+            .into_iter()
+            .map(|r| Line::styled(format!(" {r}"), theme.warning())),
+    );
     lines.push(Line::styled(keys, theme.dim()));
-    let h = 6.min(area.height);
     let popup = Rect::new(
         area.x + (area.width - w) / 2,
         area.y + (area.height - h) / 2,
@@ -94,4 +100,22 @@ fn tail(text: &str, room: usize) -> String {
     let keep = room.saturating_sub(1);
     let end: String = text.chars().skip(n - keep).collect();
     format!("…{end}")
+}
+
+/// `text` in lines of at most `width` characters, broken at spaces (a longer word alone).
+fn wrap(text: &str, width: usize) -> Vec<String> {
+    let mut lines = vec![String::new()];
+    for word in text.split(' ') {
+        let last = lines.last_mut().expect("one line at least");
+        let n = last.chars().count();
+        if n == 0 {
+            last.push_str(word);
+        } else if n + 1 + word.chars().count() <= width {
+            last.push(' ');
+            last.push_str(word);
+        } else {
+            lines.push(word.to_string());
+        }
+    }
+    lines
 }
