@@ -7,6 +7,7 @@
 
 mod dialogs;
 mod drop;
+mod edit;
 mod scene;
 mod screen;
 mod sweeps;
@@ -23,7 +24,6 @@ use crate::model::contact::ContactLaw;
 use crate::model::params::ImpactParams;
 use crate::preset::Preset;
 use crate::solver::ImpactResponse;
-use crate::text::sig_trim;
 
 /// How many changes `u` can undo.
 const UNDO_DEPTH: usize = 500;
@@ -378,57 +378,5 @@ impl App {
                 None
             }
         }
-    }
-
-    /// Set `param` to `value` brought into range; a note when it had to move.
-    fn set_param(&mut self, param: Param, value: f64) {
-        let Some((v, moved)) = param.clamp(value) else {
-            self.warn(format!("{} must be a finite number", param.symbol()));
-            return;
-        };
-        if moved {
-            self.warn(format!(
-                "{} held at {}{} (range {})",
-                param.symbol(),
-                sig_trim(v, 4),
-                param.unit(),
-                param.range_text()
-            ));
-        }
-        let params = param.set(&self.setting.params, v);
-        self.change(Setting {
-            params,
-            ..self.setting.clone()
-        });
-    }
-
-    /// Move to `next`, remembering the current setting for undo.
-    fn change(&mut self, next: Setting) {
-        if next != self.setting {
-            let previous = std::mem::replace(&mut self.setting, next);
-            if self.undo.len() == UNDO_DEPTH {
-                self.undo.remove(0);
-            }
-            self.undo.push(previous);
-        }
-    }
-
-    fn info(&mut self, text: String) {
-        self.message = Some(Message {
-            text,
-            severity: Severity::Info,
-        });
-    }
-    fn warn(&mut self, text: String) {
-        self.message = Some(Message {
-            text,
-            severity: Severity::Warning,
-        });
-    }
-    fn error(&mut self, text: String) {
-        self.message = Some(Message {
-            text,
-            severity: Severity::Error,
-        });
     }
 }
