@@ -130,6 +130,23 @@ impl Explorer {
         }
     }
 
+    /// Resize the terminal to `cols` × `rows`, as a terminal emulator does: the kernel then
+    /// sends SIGWINCH to the explorer.
+    #[allow(dead_code)]
+    pub fn resize(&mut self, cols: u16, rows: u16) {
+        let size = Winsize {
+            ws_row: rows,
+            ws_col: cols,
+            ws_xpixel: 0,
+            ws_ypixel: 0,
+        };
+        match &self.slave {
+            Some(slave) => tcsetwinsize(slave, size),
+            None => tcsetwinsize(&self.master, size),
+        }
+        .expect("resize the pty");
+    }
+
     /// Type `bytes` (raw mode: `\r` is Enter, `\x1b` Esc).
     pub fn send(&mut self, bytes: &[u8]) {
         self.master.write_all(bytes).expect("write to the pty");
