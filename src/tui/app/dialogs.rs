@@ -78,22 +78,11 @@ impl App {
             self.overlay = Overlay::None;
             return None;
         }
-        // read as the command line reads numbers; 1e999 is a number, out of range
         let lambda_zeta = (
             self.setting.get(Param::Lambda),
             self.setting.get(Param::Zeta),
         );
-        let checked = number(&text)
-            .map_err(|e| {
-                // the text is echoed while it is short enough to leave the reason readable
-                let e = if text.chars().count() <= 16 {
-                    e
-                } else {
-                    "not a number".into()
-                };
-                format!("{e}; {} kept", param.symbol())
-            })
-            .and_then(|v| param.check(v, lambda_zeta).map(|()| v));
+        let checked = read_value(&text, param, lambda_zeta);
         match checked {
             Ok(v) => {
                 self.overlay = Overlay::None;
@@ -177,4 +166,19 @@ impl App {
         }
         None
     }
+}
+
+/// A typed value for `param`, read as the command line reads numbers (so `1e999` is a
+/// number, out of range) and checked by [`Param::check`]; or why not, in one line.
+fn read_value(text: &str, param: Param, lambda_zeta: (f64, f64)) -> Result<f64, String> {
+    let kept = format!("; {} kept", param.symbol());
+    let v = number(text).map_err(|e| {
+        // a long text is not echoed: the reason stays readable
+        if text.chars().count() > 16 && e.ends_with("is not a number") {
+            format!("not a number{kept}")
+        } else {
+            format!("{e}{kept}")
+        }
+    })?;
+    param.check(v, lambda_zeta).map(|()| v)
 }
