@@ -1,10 +1,10 @@
 //! Choosing the ball a command runs on: a preset (embedded or user), a `--config` file, or the
 //! normalized ball, with the command-line overrides applied and validated.
 
-use crate::catalog::{self, Catalog, Entry, Origin};
+use crate::catalog::{self, Catalog, Entry};
 use crate::model::contact::ContactLaw;
-use crate::model::params::{ImpactParams, ParamError, validate_lambda_zeta};
-use crate::preset::{Measured, ParamSource};
+use crate::model::params::{ImpactParams, ParamError};
+use crate::preset::ParamSource;
 use crate::solver::SolveError;
 use clap::{Args, ValueEnum};
 use std::path::{Path, PathBuf};
@@ -61,31 +61,9 @@ pub struct BallArgs {
     pub law: Option<LawArg>,
 }
 
-/// A ball ready to simulate.
-#[derive(Debug, Clone)]
-pub struct Ball {
-    /// Preset name; `None` for the normalized ball.
-    pub name: Option<String>,
-    /// "embedded", a file path, or "normalized".
-    pub origin: String,
-    /// "adopted", "materials" or "normalized".
-    pub source: &'static str,
-    pub params: ImpactParams,
-    pub law: ContactLaw,
-    /// What was measured, for comparison (presets only).
-    pub measured: Option<Measured>,
-    pub description: String,
-}
-
-impl Ball {
-    /// "superball (embedded, adopted parameters)" or "normalized ball (m = K_p = v0 = 1)".
-    pub fn label(&self) -> String {
-        match &self.name {
-            Some(n) => format!("{n} ({}, {} parameters)", self.origin, self.source),
-            None => "normalized ball (m = K_p = v0 = 1)".into(),
-        }
-    }
-}
+/// A ball ready to simulate: the library's (`crate::ball`), which holds the checks and
+/// messages the command line shows.
+pub use crate::ball::Ball;
 
 /// The catalog: embedded presets, the user's presets folder, and `config` if given.
 /// A `--config` file that cannot be read is named as such.
@@ -114,37 +92,12 @@ impl BallArgs {
     /// The preset ball with `--params`, `--law`, `--v0` applied and every parameter checked.
     pub fn resolve(&self, v0: Option<f64>) -> anyhow::Result<Ball> {
         let entry = select(self.preset.as_deref(), self.config.as_deref())?;
-        let p = &entry.preset;
-        let source = self.params.map_or(p.parameters, ParamSource::from);
-        let mut params = p.params_from(source);
-        if let Some(v0) = v0 {
-            params.v0 = v0;
-        }
-        params.validate().map_err(|e| {
-            // a bad v0 comes from the command line; anything else from the preset's set
-            if e.field == "v0" && v0.is_some() {
-                anyhow::anyhow!(param_message(&e))
-            } else {
-                anyhow::anyhow!(
-                    "preset '{}' ({} parameters): {}",
-                    p.name,
-                    source.name(),
-                    param_message(&e)
-                )
-            }
-        })?;
-        Ok(Ball {
-            name: Some(p.name.clone()),
-            origin: match &entry.origin {
-                Origin::Embedded => "embedded".into(),
-                Origin::File(f) => f.display().to_string(),
-            },
-            source: source.name(),
-            params,
-            law: self.law.map_or(p.law, ContactLaw::from),
-            measured: Some(p.measured.clone()),
-            description: p.description.clone(),
-        })
+        Ok(Ball::from_entry(
+            &entry,
+            self.params.map(ParamSource::from),
+            self.law.map(ContactLaw::from),
+            v0,
+        )?)
     }
 }
 
@@ -154,32 +107,7 @@ pub fn set_lambda_zeta(
     lambda: Option<f64>,
     zeta: Option<f64>,
 ) -> anyhow::Result<()> {
-    validate_lambda_zeta(lambda.unwrap_or(0.0), zeta.unwrap_or(0.0))
-        .map_err(|e| anyhow::anyhow!(param_message(&e)))?;
-    let moved = params.with_lambda_zeta(lambda.unwrap_or(0.0), zeta.unwrap_or(1.0));
-    if lambda.is_some() {
-        params.k_r = moved.k_r;
-    }
-    if zeta.is_some() {
-        params.damping = moved.damping;
-    }
-    // name what the user typed when the K_r or c it gives is out of range
-    params.validate().map_err(|e| {
-        let given = match e.field {
-            "k_r" => lambda.map(|l| ("lambda", l, "K_r", "N/m")),
-            "damping" => zeta.map(|z| ("zeta", z, "c", "kg/s")),
-            _ => None,
-        };
-        match given {
-            Some((field, v, name, unit)) => anyhow::anyhow!(
-                "invalid {field}: {} (gives {name} = {} {unit}: {})",
-                super::output::num(v),
-                super::output::num(e.value),
-                e.reason
-            ),
-            None => anyhow::anyhow!(param_message(&e)),
-        }
-    })
+    Ok(crate::ball::set_lambda_zeta(params, lambda, zeta)?)
 }
 
 /// The normalized ball: m = K_p = v0 = 1; `zp_bar` = ∞ for no flattening.
@@ -189,23 +117,7 @@ pub fn normalized(
     zp_bar: Option<f64>,
     law: ContactLaw,
 ) -> anyhow::Result<Ball> {
-    validate_lambda_zeta(lambda, zeta).map_err(|e| anyhow::anyhow!(param_message(&e)))?;
-    if let Some(z) = zp_bar {
-        check_positive("zp_bar", z)?;
-    }
-    let params = ImpactParams::from_normalized(lambda, zeta, zp_bar.unwrap_or(f64::INFINITY));
-    params
-        .validate()
-        .map_err(|e| anyhow::anyhow!(param_message(&e)))?;
-    Ok(Ball {
-        name: None,
-        origin: "normalized".into(),
-        source: "normalized",
-        params,
-        law,
-        measured: None,
-        description: String::new(),
-    })
+    Ok(Ball::normalized(lambda, zeta, zp_bar, law)?)
 }
 
 /// "invalid zeta: NaN (not a number)", with large and small values in exponent form.
@@ -219,6 +131,15 @@ pub fn solve_error(e: SolveError) -> anyhow::Error {
     match e {
         SolveError::Param(p) => anyhow::anyhow!(param_message(&p)),
         e @ SolveError::Unresolved { .. } => super::Runtime(anyhow::anyhow!(e.to_string())).into(),
+    }
+}
+
+/// A library error for the user: an impact without an answer is not the user's fault (exit 1),
+/// anything else is bad input (exit 2).
+pub fn ball_error(e: crate::ball::BallError) -> anyhow::Error {
+    match e {
+        crate::ball::BallError::Solve(e) => solve_error(e),
+        e => e.into(),
     }
 }
 

@@ -3,14 +3,13 @@
 use super::ball::{self, Ball, BallArgs};
 use super::output::{self, csv_row, num, opt_num};
 use crate::model::contact::ContactLaw;
-use crate::solver::{EnergyBudget, ImpactResponse, Method, SolveOptions, simulate};
+use crate::solver::{EnergyBudget, ImpactResponse, Method};
 use clap::{Args, ValueEnum};
 use serde::Serialize;
 use std::io::Write;
 
-/// History samples by default, and at most.
+/// History samples by default (at most `crate::ball::MAX_SAMPLES`).
 const SAMPLES: usize = 400;
-const MAX_SAMPLES: usize = 100_000;
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
 pub enum RunFormat {
@@ -63,15 +62,12 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         ball::set_lambda_zeta(&mut b.params, args.lambda, args.zeta)?;
         b
     };
-    if args.history && !(2..=MAX_SAMPLES).contains(&args.samples) {
-        anyhow::bail!(
-            "invalid samples: {} (must lie in 2 … {MAX_SAMPLES})",
-            args.samples
-        );
+    let r = if args.history {
+        ball.impact_history(args.samples)
+    } else {
+        ball.impact()
     }
-    let samples = if args.history { args.samples } else { 0 };
-    let opts = SolveOptions::default().with_samples(samples).with_energy();
-    let r = simulate(&ball.params, ball.law, &opts).map_err(ball::solve_error)?;
+    .map_err(ball::ball_error)?;
     match args.format {
         RunFormat::Json => output::json(out, &report(&ball, &r, args.history))?,
         RunFormat::Csv if args.history => history_csv(out, &r)?,
