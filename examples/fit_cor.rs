@@ -4,7 +4,18 @@
 
 use bouncelab::{Ball, BallError};
 
-fn main() -> Result<(), BallError> {
+fn main() -> std::process::ExitCode {
+    match run() {
+        Ok(()) => std::process::ExitCode::SUCCESS,
+        Err(e) => {
+            // the message names the field at fault, as the command line's does
+            eprintln!("error: {e}");
+            std::process::ExitCode::from(2)
+        }
+    }
+}
+
+fn run() -> Result<(), BallError> {
     let args: Vec<String> = std::env::args().skip(1).collect();
     let preset = args.first().map_or("superball", String::as_str);
     let cor: f64 = args.get(1).map_or(0.75, |s| s.parse().unwrap_or(f64::NAN));

@@ -3,7 +3,18 @@
 
 use bouncelab::{Ball, BallError};
 
-fn main() -> Result<(), BallError> {
+fn main() -> std::process::ExitCode {
+    match run() {
+        Ok(()) => std::process::ExitCode::SUCCESS,
+        Err(e) => {
+            // the message names the field at fault, as the command line's does
+            eprintln!("error: {e}");
+            std::process::ExitCode::from(2)
+        }
+    }
+}
+
+fn run() -> Result<(), BallError> {
     let mut args = std::env::args().skip(1);
     let preset = args.next().unwrap_or_else(|| "golf".into());
     let v0 = match args.next() {

@@ -21,6 +21,8 @@
 //! # Ok::<(), bouncelab::BallError>(())
 //! ```
 
+#![warn(missing_docs)]
+
 use crate::analysis::fit::{Fit, FitError, fit_k_r};
 use crate::analysis::sweep::{VelocityPoint, ZetaPoint, cor_vs_velocity, cor_vs_zeta};
 use crate::catalog::{Catalog, CatalogError, Entry, Origin};

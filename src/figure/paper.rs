@@ -5,7 +5,7 @@
 //!
 //! Figs. 5–8 live in [`super::history`] and are re-exported here.
 //!
-//! The builders take computed data (sweep rows, an [`ImpactResponse`]) and return a figure, so
+//! The builders take computed data (sweep rows, an [`ImpactResponse`](crate::solver::ImpactResponse)) and return a figure, so
 //! a caller that already holds a response (the explorer) draws it without re-solving.
 
 use super::{Axis, BLACK, Figure, GREY, Kind, Marker, Series, Style, short};

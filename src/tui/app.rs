@@ -1,7 +1,7 @@
 //! The explorer's state and [`App::update`], the only place it changes. Curves are computed
 //! here, when the state changes, and stored; drawing only reads them. The dialogs (value entry,
-//! preset name, overwrite question) are handled in [`dialogs`], the COR-vs-speed sweeps'
-//! bookkeeping in [`sweeps`].
+//! preset name, overwrite question) are handled in `dialogs`, the COR-vs-speed sweeps'
+//! bookkeeping in `sweeps`.
 
 mod dialogs;
 mod sweeps;

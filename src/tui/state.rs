@@ -13,7 +13,7 @@ use crate::solver::ImpactResponse;
 /// holds these.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Setting {
-    /// Index into [`App::presets`].
+    /// Index into the explorer's presets (`App::presets`).
     pub preset: usize,
     pub params: ImpactParams,
     pub law: ContactLaw,
