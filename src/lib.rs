@@ -17,9 +17,11 @@
 //!          r.contact_time.unwrap() * 1e3);
 //! assert!((r.cor - 0.8404).abs() < 1e-4);
 //!
-//! // λ = K_r/K_p and ζ = √(m K_p)/(2c) set the response; change them, or the contact law
-//! let soft = Ball::from_preset("golf")?.with_lambda(0.2)?.with_law(ContactLaw::Hertz);
+//! // λ = K_r/K_p and ζ = √(m K_p)/(2c) set the response: a softer recoil spring keeps less
+//! let soft = Ball::from_preset("golf")?.with_v0(3.0)?.with_lambda(0.2)?;
 //! assert!(soft.impact()?.cor < r.cor);
+//! // another contact law
+//! assert!(soft.with_law(ContactLaw::Hertz).impact()?.rebound);
 //!
 //! // the recoil spring K_r that gives a measured COR (MODEL.md §4)
 //! let fit = Ball::from_preset("superball")?.fit_cor(0.75)?;
