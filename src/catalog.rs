@@ -184,7 +184,7 @@ impl Catalog {
     /// The embedded presets only.
     pub fn embedded() -> Catalog {
         Catalog {
-            entries: Preset::embedded()
+            entries: Preset::embedded_all()
                 .into_iter()
                 .map(|preset| Entry {
                     preset,
@@ -324,7 +324,16 @@ mod tests {
             .iter()
             .map(|e| e.preset.name.as_str())
             .collect();
-        assert_eq!(names, ["superball", "golf", "baseball", "first", "second"]);
+        let paper = ["superball", "golf", "baseball"];
+        let drop_balls = [
+            "tennis",
+            "football",
+            "basketball",
+            "table-tennis",
+            "softball",
+        ];
+        let users = ["first", "second"];
+        assert_eq!(names, [&paper[..], &drop_balls, &users].concat());
         assert_eq!(
             cat.get("first").unwrap().origin,
             Origin::File(dir.path().join("a.toml"))
@@ -339,7 +348,7 @@ mod tests {
         let dir = tempfile::tempdir().unwrap();
         let p = write(dir.path(), "mine.toml", "mine");
         let cat = Catalog::load(Some(dir.path()), Some(&p)).unwrap();
-        assert_eq!(cat.entries().len(), 4);
+        assert_eq!(cat.entries().len(), crate::preset::EMBEDDED.len() + 1);
         assert_eq!(cat.from_file(&p).unwrap().preset.name, "mine");
         let other = tempfile::tempdir().unwrap();
         let q = write(other.path(), "x.toml", "mine");
@@ -351,10 +360,11 @@ mod tests {
 
     #[test]
     fn unknown_names_list_the_catalog() {
-        let err = Catalog::embedded().get("tennis").unwrap_err();
+        let err = Catalog::embedded().get("cricket").unwrap_err();
         assert_eq!(
             err.to_string(),
-            "unknown preset 'tennis' (available: superball, golf, baseball)"
+            "unknown preset 'cricket' (available: superball, golf, baseball, tennis, football, \
+             basketball, table-tennis, softball)"
         );
     }
 }

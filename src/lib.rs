@@ -55,17 +55,26 @@
 //! docs/library.md.
 
 pub mod analysis;
+#[cfg(feature = "tui")]
+#[doc(hidden)]
+pub mod atomic;
 pub mod ball;
 pub mod catalog;
 #[cfg(feature = "cli")]
 #[doc(hidden)]
 pub mod cli;
+pub mod drop;
 #[doc(hidden)]
 pub mod fault;
 #[cfg(feature = "svg")]
 pub mod figure;
 pub mod model;
 pub mod preset;
+#[doc(hidden)]
+pub mod sanitize;
+#[cfg(feature = "tui")]
+#[doc(hidden)]
+pub mod signals;
 pub mod solver;
 #[cfg(feature = "tui")]
 #[doc(hidden)]

@@ -8,13 +8,31 @@ use serde::{Deserialize, Serialize};
 use std::fmt;
 
 mod text;
+mod usable;
 
-/// The three balls of the paper, embedded in the binary.
-pub const EMBEDDED: [(&str, &str); 3] = [
+/// The three balls of the paper, embedded in the binary, first; then the balls of the drop
+/// tests (docs/drop.md, "The new balls").
+pub const EMBEDDED: [(&str, &str); 8] = [
     ("superball", include_str!("../presets/superball.toml")),
     ("golf", include_str!("../presets/golf.toml")),
     ("baseball", include_str!("../presets/baseball.toml")),
+    ("tennis", include_str!("../presets/tennis.toml")),
+    ("football", include_str!("../presets/football.toml")),
+    ("basketball", include_str!("../presets/basketball.toml")),
+    ("table-tennis", include_str!("../presets/table-tennis.toml")),
+    ("softball", include_str!("../presets/softball.toml")),
 ];
+
+/// How many of [`EMBEDDED`] are the paper's balls.
+pub const PAPER_BALLS: usize = 3;
+
+fn parse_embedded(list: &[(&str, &str)]) -> Vec<Preset> {
+    list.iter()
+        .map(|(name, text)| {
+            Preset::parse(text, &format!("embedded:{name}")).expect("embedded presets are tested")
+        })
+        .collect()
+}
 
 /// Which parameter set the model runs on.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Serialize, Deserialize)]
@@ -235,15 +253,15 @@ impl Preset {
         Ok(preset)
     }
 
-    /// The embedded presets, in the order superball, golf, baseball.
+    /// The paper's three embedded balls, in the order superball, golf, baseball (the figures,
+    /// `reproduce` and the explorer's keys 1 2 3 run these).
     pub fn embedded() -> Vec<Preset> {
-        EMBEDDED
-            .iter()
-            .map(|(name, text)| {
-                Preset::parse(text, &format!("embedded:{name}"))
-                    .expect("embedded presets are tested")
-            })
-            .collect()
+        parse_embedded(&EMBEDDED[..PAPER_BALLS])
+    }
+
+    /// Every embedded preset: the paper's three, then the balls of the drop tests.
+    pub fn embedded_all() -> Vec<Preset> {
+        parse_embedded(&EMBEDDED)
     }
 
     /// Semantic checks: the first bad field.
@@ -271,6 +289,22 @@ impl Preset {
             }
         }
         let opt = |table, key, v: Option<f64>| v.map_or(Ok(()), |v| positive(table, key, v));
+        // printed by every command and drawn in figures: no control character may ride along
+        // (crate::sanitize; tests/escaping.rs)
+        // (a description may keep the tabs and line breaks of its TOML: they command nothing)
+        for (key, text, allowed) in [
+            ("name", &self.name, &[][..]),
+            ("description", &self.description, &['\t', '\n'][..]),
+        ] {
+            if let Some((i, c)) = crate::sanitize::first_control(text, allowed) {
+                let msg = format!(
+                    "holds a control character, U+{:04X} (character {})",
+                    c as u32,
+                    i + 1
+                );
+                return Err(bad("", key, msg));
+            }
+        }
         if self.name.trim().is_empty() || self.name.chars().any(|c| c.is_whitespace() || c == '/') {
             return Err(bad(
                 "",
@@ -360,7 +394,8 @@ impl Preset {
                 }
             }
         }
-        Ok(())
+        // the commands' own check, so that load and use agree
+        usable::check(self)
     }
 
     /// Parameters from the material data (MODEL.md §4).
@@ -447,10 +482,26 @@ mod tests {
 
     #[test]
     fn embedded_presets_parse() {
-        let all = Preset::embedded();
+        assert_eq!(
+            Preset::embedded()
+                .iter()
+                .map(|p| p.name.as_str())
+                .collect::<Vec<_>>(),
+            ["superball", "golf", "baseball"]
+        );
+        let all = Preset::embedded_all();
         assert_eq!(
             all.iter().map(|p| p.name.as_str()).collect::<Vec<_>>(),
-            ["superball", "golf", "baseball"]
+            [
+                "superball",
+                "golf",
+                "baseball",
+                "tennis",
+                "football",
+                "basketball",
+                "table-tennis",
+                "softball"
+            ]
         );
         for p in &all {
             assert!(p.params().validate().is_ok(), "{}", p.name);

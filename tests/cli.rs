@@ -317,6 +317,19 @@ fn presets_lists_the_three_balls() {
         .iter()
         .map(|p| p["name"].as_str().unwrap())
         .collect();
-    assert_eq!(names, ["superball", "golf", "baseball"]);
+    // the paper's three first, then the balls of the drop tests (docs/drop.md)
+    assert_eq!(
+        names,
+        [
+            "superball",
+            "golf",
+            "baseball",
+            "tennis",
+            "football",
+            "basketball",
+            "table-tennis",
+            "softball"
+        ]
+    );
     assert!((f(&v[2], "zeta") - 0.6067).abs() < 1e-3);
 }

@@ -4,12 +4,43 @@
 
 use bouncelab::preset::Preset;
 use bouncelab::tui::action::{self, Action};
-use bouncelab::tui::app::{App, Severity, View};
+use bouncelab::tui::app::{App, Effect, Severity, View};
 use bouncelab::tui::export::{self, ExportRequest};
 use bouncelab::tui::param::Param;
+use bouncelab::tui::ui;
 use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
+use std::cell::RefCell;
 use std::fs;
 use std::path::{Path, PathBuf};
+
+thread_local! {
+    /// The effects `update` returned that the test has not carried out yet, as the event
+    /// loop holds them (each test runs on a thread of its own).
+    static PENDING: RefCell<Vec<Effect>> = const { RefCell::new(Vec::new()) };
+}
+
+/// `update`, keeping the effects it returns for [`perform`].
+fn update(app: &mut App, action: Action) {
+    let effects = app.update(action);
+    PENDING.with(|p| p.borrow_mut().extend(effects));
+}
+
+/// The export `update` asked for and the test has not carried out yet.
+fn export_request() -> Option<ExportRequest> {
+    PENDING.with(|p| {
+        p.borrow().iter().rev().find_map(|e| match e {
+            Effect::Export(r) => Some(r.clone()),
+            _ => None,
+        })
+    })
+}
+
+/// Take the pending export off the list, to carry it out.
+fn take_export() -> Option<ExportRequest> {
+    let request = export_request();
+    PENDING.with(|p| p.borrow_mut().retain(|e| !matches!(e, Effect::Export(_))));
+    request
+}
 
 fn superball() -> App {
     App::new(Preset::embedded().remove(0), true)
@@ -27,19 +58,25 @@ fn press(app: &mut App, keys: &str) {
             c => KeyCode::Char(c),
         };
         if let Some(a) = action::from_key(KeyEvent::new(code, m), app.mode()) {
-            app.update(a);
+            update(app, a);
         }
     }
 }
 
 /// What the event loop does with a pending export.
 fn perform(app: &mut App, dir: &Path) -> Vec<PathBuf> {
-    let request = app.export_request().expect("an export is pending").clone();
+    let request = take_export().expect("an export is pending");
     let files = export::write(&request, dir).expect("written");
-    app.update(Action::Exported {
-        files: files.clone(),
-    });
-    assert!(app.export_request().is_none(), "the answer clears it");
+    update(
+        app,
+        Action::Exported {
+            files: files.clone(),
+        },
+    );
+    assert!(
+        export_request().is_none(),
+        "the answer asks for no other export"
+    );
     files
 }
 
@@ -58,9 +95,9 @@ fn message(app: &App) -> (String, Severity) {
 #[test]
 fn e_asks_for_the_views_charts_and_the_loop_writes_them() {
     let mut app = superball();
-    assert!(app.export_request().is_none());
+    assert!(export_request().is_none());
     press(&mut app, "e");
-    let r = app.export_request().expect("e asks for an export");
+    let r = export_request().expect("e asks for an export");
     assert_eq!(r.ball, "superball");
     let charts: Vec<&str> = r.charts.iter().map(|c| c.0).collect();
     assert_eq!(charts, ["force-time", "force-displacement", "cor-zeta"]);
@@ -90,7 +127,7 @@ fn e_asks_for_the_views_charts_and_the_loop_writes_them() {
     // the next key clears the message, and nothing is exported again
     press(&mut app, "l");
     assert!(app.message().is_none());
-    assert!(app.export_request().is_none());
+    assert!(export_request().is_none());
 }
 
 #[test]
@@ -248,13 +285,16 @@ fn the_files_hold_the_curves_on_screen_not_new_runs() {
 fn on_the_sweeps_view_the_export_waits_for_the_background_sweep() {
     let mut app = App::new(Preset::embedded().remove(1), true).with_background_sweeps();
     press(&mut app, "\te");
-    assert!(app.export_request().is_none(), "the sweep is still out");
+    assert!(export_request().is_none(), "the sweep is still out");
     let (text, _) = message(&app);
     assert!(text.contains("waits"), "{text}");
     let pending = app.speed_requests().to_vec();
     assert_eq!(pending.len(), 1);
-    app.update(Action::SpeedReady(pending[0].clone(), pending[0].run()));
-    let r: &ExportRequest = app.export_request().expect("ready now");
+    update(
+        &mut app,
+        Action::SpeedReady(pending[0].clone(), pending[0].run()),
+    );
+    let r: &ExportRequest = &export_request().expect("ready now");
     assert_eq!(r.ball, "golf");
     let cv = &r.charts[1].1;
     assert_eq!(r.charts[1].0, "cor-velocity");
@@ -269,12 +309,12 @@ fn a_failed_export_says_why_in_one_line_and_writes_nothing() {
     fs::write(&file, "x").unwrap();
     let mut app = superball();
     press(&mut app, "e");
-    let request = app.export_request().unwrap().clone();
+    let request = take_export().unwrap();
     let msg = export::write(&request, &file.join("sub")).unwrap_err();
     assert!(msg.starts_with("cannot create "), "{msg}");
     assert!(!msg.contains('\n') && !msg.contains("os error"), "{msg}");
-    app.update(Action::ExportFailed { msg: msg.clone() });
-    assert!(app.export_request().is_none());
+    update(&mut app, Action::ExportFailed { msg: msg.clone() });
+    assert!(export_request().is_none());
     let (text, severity) = message(&app);
     assert_eq!(severity, Severity::Error);
     assert_eq!(text, format!("export failed: {msg}"));
@@ -303,5 +343,27 @@ fn a_user_ball_name_becomes_a_safe_file_name() {
     custom.name = "my golf/ball".into();
     let mut app = App::new(custom, false);
     press(&mut app, "e");
-    assert_eq!(app.export_request().unwrap().ball, "my-golf-ball");
+    assert_eq!(export_request().unwrap().ball, "my-golf-ball");
+}
+
+/// The export writes the very figures the screen draws: the same description, rendered once
+/// as braille and once as SVG.
+#[test]
+fn the_export_holds_the_figures_on_screen() {
+    let mut app = superball();
+    press(&mut app, "pLLvv");
+    for keys in ["e", "\te"] {
+        press(&mut app, keys);
+        let r = take_export().expect("an export");
+        let charts = app.view().charts();
+        assert_eq!(r.charts.len(), charts.len());
+        for (&chart, (name, fig)) in charts.iter().zip(&r.charts) {
+            assert_eq!(*name, chart.file_name());
+            assert_eq!(fig, &ui::figure(&app, chart), "{name}");
+            assert!(
+                fig.series.iter().any(|s| s.id.starts_with("pinned")),
+                "{name}"
+            );
+        }
+    }
 }

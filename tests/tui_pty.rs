@@ -6,29 +6,8 @@
 
 mod pty;
 
-use pty::{Explorer, HIDE_CURSOR, LEAVE_ALT_SCREEN, SHOW_CURSOR, modes, signal};
+use pty::{Explorer, LEAVE_ALT_SCREEN, assert_restored, modes, signal};
 use rustix::termios::LocalModes;
-
-/// What every exit must leave: the settings from before the start, in cooked mode, the
-/// alternate screen left, the cursor shown after it was last hidden.
-fn assert_restored(x_before: &str, after: &rustix::termios::Termios, out: &str) {
-    let cooked = LocalModes::ICANON | LocalModes::ECHO;
-    assert!(
-        after.local_modes.contains(cooked),
-        "not back in cooked mode: {:?}",
-        after.local_modes
-    );
-    assert_eq!(modes(after), x_before, "the terminal's settings changed");
-    assert!(
-        out.contains(LEAVE_ALT_SCREEN),
-        "never left the alternate screen"
-    );
-    let hidden = out
-        .rfind(HIDE_CURSOR)
-        .expect("the explorer hides the cursor");
-    let shown = out.rfind(SHOW_CURSOR).expect("the cursor is shown again");
-    assert!(shown > hidden, "the cursor was last hidden, not shown");
-}
 
 #[test]
 fn q_quits_with_the_terminal_restored() {

@@ -4,7 +4,9 @@
 use bouncelab::preset::Preset;
 use bouncelab::tui::action::{self, Action};
 use bouncelab::tui::app::App;
+use bouncelab::tui::theme::Theme;
 use bouncelab::tui::ui::{self, Chart};
+use bouncelab::tui::widgets::plot::Plot;
 use ratatui::Terminal;
 use ratatui::backend::TestBackend;
 use ratatui::buffer::Buffer;
@@ -183,7 +185,8 @@ fn log_axis_decade_labels_sit_over_their_columns() {
             .iter()
             .find(|c| c.0 == Chart::CorZeta)
             .unwrap();
-        let layout = Chart::CorZeta.plot(&a).layout(*rect).unwrap();
+        let fig = ui::figure(&a, Chart::CorZeta);
+        let layout = Plot::new(&fig, Theme::new(true)).layout(*rect).unwrap();
         let p: Rect = layout.plot;
         assert_eq!(layout.x.bounds, [-2.0, 2.0]);
         let label_row = p.bottom() + 1;
@@ -230,8 +233,9 @@ fn every_chart_has_a_plot_area_at_the_usual_sizes() {
             }
             let area = Rect::new(0, 0, w, h);
             for (chart, rect) in ui::screen(&a, area).unwrap().charts {
+                let fig = ui::figure(&a, chart);
                 assert!(
-                    chart.plot(&a).layout(rect).is_some(),
+                    Plot::new(&fig, Theme::new(true)).layout(rect).is_some(),
                     "{chart:?} at {w}×{h}"
                 );
             }

@@ -11,7 +11,9 @@ use bouncelab::preset::Preset;
 use bouncelab::tui::action::Mode;
 use bouncelab::tui::app::{App, Overlay, Purpose, Severity};
 use bouncelab::tui::save;
-use save_flow::{message, perform, press, save_modified, state, superball, type_name};
+use save_flow::{
+    message, perform, press, save_modified, save_request, state, superball, type_name,
+};
 use std::fs;
 
 #[test]
@@ -34,7 +36,7 @@ fn s_opens_a_prompt_with_a_suggested_name() {
     press(&mut app, "\x1b");
     assert_eq!(app.mode(), Mode::Normal);
     assert_eq!(message(&app), ("not saved".into(), Severity::Info));
-    assert!(app.save_request().is_none());
+    assert!(save_request().is_none());
 }
 
 #[test]
@@ -61,10 +63,7 @@ fn bad_names_are_refused_and_the_prompt_stays_open() {
             panic!()
         };
         assert_eq!(i.error.as_deref(), Some(why));
-        assert!(
-            app.save_request().is_none(),
-            "nothing to write for {name:?}"
-        );
+        assert!(save_request().is_none(), "nothing to write for {name:?}");
     }
 }
 

@@ -8,7 +8,9 @@ use bouncelab::catalog::{self, Catalog};
 use bouncelab::tui::action::{Action, Mode};
 use bouncelab::tui::app::{App, Severity};
 use bouncelab::tui::save;
-use save_flow::{message, perform, press, save_modified, superball, type_name};
+use save_flow::{
+    message, perform, press, save_modified, save_request, superball, take_save, type_name, update,
+};
 use std::fs;
 
 #[test]
@@ -43,7 +45,7 @@ fn an_existing_file_is_replaced_only_after_yes() {
 
     press(&mut app, "n");
     assert_eq!(app.mode(), Mode::Normal);
-    assert!(app.save_request().is_none());
+    assert!(save_request().is_none());
     assert_eq!(
         message(&app).0,
         format!("not saved: {} left as it was", save::short_path(&path))
@@ -60,7 +62,7 @@ fn an_existing_file_is_replaced_only_after_yes() {
     press(&mut app, "y");
     assert_eq!(app.mode(), Mode::Normal);
     assert_eq!(
-        app.save_request().unwrap().replace.as_deref(),
+        save_request().unwrap().replace.as_deref(),
         Some(path.as_path())
     );
     assert_eq!(
@@ -115,7 +117,7 @@ fn a_file_that_appears_after_the_prompt_is_not_clobbered() {
     press(&mut app, "s");
     type_name(&mut app, "mine");
     press(&mut app, "\n");
-    assert!(app.save_request().is_some());
+    assert!(save_request().is_some());
     // another program writes the name (a preset called otherwise) before the loop gets to it
     let path = dir.path().join("mine.toml");
     let theirs = bouncelab::preset::EMBEDDED[1]
@@ -140,8 +142,8 @@ fn failures_are_one_line_messages_and_write_nothing() {
     let mut app = superball();
     // no folder for user presets at all
     press(&mut app, "s\n");
-    let request = app.save_request().unwrap().clone();
-    app.update(save::write(&request, None));
+    let request = take_save().unwrap();
+    update(&mut app, save::write(&request, None));
     assert_eq!(
         message(&app),
         (

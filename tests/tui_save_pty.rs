@@ -93,7 +93,8 @@ fn assert_truncated(tmp: &Path) {
 fn assert_catalog_loads(home: &Path, expect_saved: bool) {
     let cat = Catalog::load(Some(&presets_dir(home)), None).expect("the catalog loads");
     assert_eq!(cat.get(NAME).is_ok(), expect_saved);
-    assert_eq!(cat.entries().len(), 3 + usize::from(expect_saved));
+    let embedded = bouncelab::preset::EMBEDDED.len();
+    assert_eq!(cat.entries().len(), embedded + usize::from(expect_saved));
     let (ok, out, err) = cli(home, &["presets"]);
     assert!(ok && err.is_empty(), "{err}");
     assert_eq!(out.contains(NAME), expect_saved, "{out}");

@@ -2,7 +2,7 @@
 //! a bracketed 1-D root find.
 
 use crate::model::contact::ContactLaw;
-use crate::model::params::ImpactParams;
+use crate::model::params::{ImpactParams, display_number};
 use crate::solver::roots::brent;
 use crate::solver::{SolveOptions, simulate};
 use serde::Serialize;
@@ -40,7 +40,12 @@ pub enum FitError {
 impl fmt::Display for FitError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
-            FitError::BadTarget(e) => write!(f, "invalid cor: {e} (a measured COR lies in [0, 1])"),
+            // shortest round-trip form, exponent when tiny: 1e-320, not 324 digits
+            FitError::BadTarget(e) => write!(
+                f,
+                "invalid cor: {} (a measured COR lies in [0, 1])",
+                display_number(*e)
+            ),
             FitError::Params(e) => write!(f, "{e}"),
             FitError::OutOfReach {
                 target,
@@ -49,7 +54,8 @@ impl fmt::Display for FitError {
                 high,
             } => write!(
                 f,
-                "cor {target} is out of reach at ζ = {zeta:.4}: the model spans {low:.4} (λ = 0) to {high:.4} (λ → ∞)"
+                "cor {} is out of reach at ζ = {zeta:.4}: the model spans {low:.4} (λ = 0) to {high:.4} (λ → ∞)",
+                display_number(*target)
             ),
         }
     }

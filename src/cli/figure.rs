@@ -3,15 +3,15 @@
 //! [`crate::figure::paper`]; this file reads the options, solves, and writes the files.
 
 use super::ball::{self, BallArgs, check_positive, param_message};
-use crate::analysis::sweep::{cor_vs_velocity, cor_vs_zeta, lin_space, log_space};
+use crate::analysis::sweep::{lin_space, log_space};
+use crate::atomic::Outputs;
 use crate::figure::{Figure, csv, paper, svg};
 use crate::model::contact::ContactLaw;
 use crate::model::params::validate_lambda_zeta;
 use crate::preset::{ParamSource, Preset};
 use crate::solver::{SolveOptions, simulate};
 use clap::{Args, ValueEnum};
-use std::fs;
-use std::io::{self, Write};
+use std::io::Write;
 use std::path::{Path, PathBuf};
 
 /// Points along a curve: enough for smooth curves on a log axis, few enough for a small file.
@@ -67,16 +67,22 @@ pub struct FigureArgs {
     #[command(flatten)]
     pub ball: BallArgs,
     /// λ of the model curves, comma-separated (cor-zeta, force-zeta) [default: 0,0.4,1]
-    #[arg(long, value_name = "L,L,...", value_delimiter = ',')]
+    #[arg(
+        long,
+        value_name = "L,L,...",
+        value_delimiter = ',',
+        value_parser = super::number::number,
+        allow_hyphen_values = true,
+    )]
     pub lambda: Option<Vec<f64>>,
     /// Impact speed v0, m/s (force-time, force-displacement) [default: the preset's v0]
-    #[arg(long, value_name = "V")]
+    #[arg(long, value_name = "V", value_parser = super::number::number, allow_hyphen_values = true)]
     pub v0: Option<f64>,
     /// Lowest impact speed, m/s (cor-velocity) [default: 0.1 × the preset's v0]
-    #[arg(long, value_name = "V")]
+    #[arg(long, value_name = "V", value_parser = super::number::number, allow_hyphen_values = true)]
     pub from: Option<f64>,
     /// Highest impact speed, m/s (cor-velocity) [default: where z_m = 3 z_p]
-    #[arg(long, value_name = "V")]
+    #[arg(long, value_name = "V", value_parser = super::number::number, allow_hyphen_values = true)]
     pub to: Option<f64>,
     /// Points along each curve [default: 400 for ζ, 200 for speed, 400 samples in time]
     #[arg(long, value_name = "N")]
@@ -145,27 +151,29 @@ pub fn check_writable(paths: &[&Path], force: bool) -> anyhow::Result<()> {
     Ok(())
 }
 
-/// Write `text` to `path`; without `force` the file must not exist (checked again at creation,
+/// Write `text` to `path` atomically (a temporary file renamed into place, see
+/// [`crate::atomic`]); without `force` the file must not exist (checked again at the rename,
 /// so a file that appeared meanwhile is still not overwritten).
 pub fn write_file(path: &Path, text: &str, force: bool) -> anyhow::Result<()> {
-    let mut opts = fs::OpenOptions::new();
-    opts.write(true);
-    if force {
-        opts.create(true).truncate(true);
-    } else {
-        opts.create_new(true);
+    let mut files = Outputs::new(force);
+    files.text(path, text)?;
+    commit(files)?;
+    Ok(())
+}
+
+/// Publish staged files; an existing target is bad input (exit 2), any other failure I/O.
+pub fn commit(files: Outputs) -> anyhow::Result<Vec<PathBuf>> {
+    if super::budget::interrupted() {
+        // Ctrl-C during the work: the staged files go with `files`
+        return Err(super::budget::Interrupted.into());
     }
-    let mut f = match opts.open(path) {
-        Err(e) if e.kind() == io::ErrorKind::AlreadyExists => {
-            anyhow::bail!("{} exists (use --force to overwrite it)", path.display())
+    files.commit().map_err(|e| {
+        if e.exists {
+            anyhow::anyhow!("{e}")
+        } else {
+            anyhow::Error::new(e)
         }
-        r => r.map_err(|e| {
-            anyhow::Error::new(e).context(format!("cannot write {}", path.display()))
-        })?,
-    };
-    f.write_all(text.as_bytes())
-        .and_then(|()| f.flush())
-        .map_err(|e| anyhow::Error::new(e).context(format!("cannot write {}", path.display())))
+    })
 }
 
 /// A CLI ball as a ball of the paper's charts.
@@ -201,8 +209,9 @@ pub fn zeta_figures(
     for &l in lambdas {
         validate_lambda_zeta(l, 0.0).map_err(|e| anyhow::anyhow!(param_message(&e)))?;
     }
-    let rows =
-        cor_vs_zeta(lambdas, &log_space(0.01, 100.0, points), law).map_err(ball::solve_error)?;
+    let what = format!("{} λ values × {points} points", lambdas.len());
+    super::budget::check(lambdas.len() * points, law, &what)?;
+    let rows = super::budget::zeta_rows(lambdas, &log_space(0.01, 100.0, points), law)?;
     Ok((
         paper::cor_zeta(&rows, balls, law),
         paper::force_zeta(&rows, balls, law),
@@ -218,6 +227,7 @@ pub fn velocity_figure(
     points: usize,
 ) -> anyhow::Result<Figure> {
     let pm = ball::solve_error;
+    super::budget::check(points, b.law, &format!("{points} points"))?;
     let v0 = b.params.v0;
     let onset = paper::speed_for_indentation(&b.params, b.law, 1.0).map_err(pm)?;
     let far = paper::speed_for_indentation(&b.params, b.law, SPEED_RANGE_ZP).map_err(pm)?;
@@ -228,7 +238,7 @@ pub fn velocity_figure(
     if from >= to {
         anyhow::bail!("invalid speed range: --from {from} must be below --to {to}");
     }
-    let rows = cor_vs_velocity(&b.params, b.law, &lin_space(from, to, points)).map_err(pm)?;
+    let rows = super::budget::velocity_rows(&b.params, b.law, &lin_space(from, to, points))?;
     Ok(paper::cor_velocity(b, &rows, onset))
 }
 
@@ -294,11 +304,14 @@ pub fn run(a: &FigureArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     check_writable(&paths, a.force)?;
     let fig = build(a)?;
     let picture = svg::render(&fig).map_err(|e| super::Runtime(e.into()))?;
-    write_file(&a.out, &picture, a.force)?;
-    writeln!(out, "{}", a.out.display())?;
+    // both files or neither (crate::atomic)
+    let mut files = Outputs::new(a.force);
+    files.text(&a.out, &picture)?;
     if let Some(d) = &a.data {
-        write_file(d, &csv::to_string(&fig), a.force)?;
-        writeln!(out, "{}", d.display())?;
+        files.text(d, &csv::to_string(&fig))?;
+    }
+    for p in commit(files)? {
+        writeln!(out, "{}", p.display())?;
     }
     Ok(())
 }

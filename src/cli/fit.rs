@@ -19,10 +19,10 @@ pub struct FitArgs {
     #[command(flatten)]
     pub ball: BallArgs,
     /// Measured coefficient of restitution to match, in [0, 1]
-    #[arg(long, value_name = "E")]
+    #[arg(long, value_name = "E", value_parser = super::number::number, allow_hyphen_values = true)]
     pub cor: f64,
     /// Impact speed v0 (m/s) the COR was measured at [default: the preset's measured v0]
-    #[arg(long, value_name = "V")]
+    #[arg(long, value_name = "V", value_parser = super::number::number, allow_hyphen_values = true)]
     pub v0: Option<f64>,
     /// Output format
     #[arg(long, value_enum, default_value = "text")]

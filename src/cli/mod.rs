@@ -6,13 +6,17 @@
 //! 1 a failure that is not the input's fault (writing the output, the explorer's terminal).
 
 pub mod ball;
+pub mod budget;
+pub mod drop;
 pub mod figure;
 pub mod fit;
+pub mod number;
 pub mod output;
 pub mod presets;
 pub mod reproduce;
 pub mod run;
 mod run_text;
+pub mod standards;
 pub mod sweep;
 
 use clap::{Parser, Subcommand};
@@ -58,6 +62,11 @@ pub enum Command {
     Figure(figure::FigureArgs),
     /// Write every figure, its data and a report of model against experiment into a folder
     Reproduce(reproduce::ReproduceArgs),
+    /// Drop a ball onto a rigid plate: its bounces, and a verdict against a standard
+    #[command(allow_negative_numbers = true)]
+    Drop(drop::DropArgs),
+    /// List the ball standards (drop and COR tests) and their windows
+    Standards(standards::StandardsArgs),
 }
 
 /// A failure that is not the input's fault: exit code 1.
@@ -77,8 +86,14 @@ pub fn main() -> ExitCode {
         Ok(cli) => cli,
         Err(e) => return clap_error(e),
     };
+    if cli.command.is_none() {
+        // the explorer must not hold the stdout lock: on a signal, crate::signals takes it to
+        // restore the terminal
+        return explorer(cli.preset, cli.config).map_or_else(fail, |()| ExitCode::SUCCESS);
+    }
     let stdout = io::stdout();
-    let mut out = io::BufWriter::new(stdout.lock());
+    // no control character reaches the terminal, whatever a preset or path holds
+    let mut out = crate::sanitize::Writer::new(io::BufWriter::new(stdout.lock()));
     let result = dispatch(cli, &mut out).and_then(|()| out.flush().map_err(Into::into));
     match result {
         Ok(()) => ExitCode::SUCCESS,
@@ -90,7 +105,7 @@ fn fail(e: anyhow::Error) -> ExitCode {
     match report(&e) {
         None => ExitCode::SUCCESS,
         Some((code, line)) => {
-            eprintln!("{line}");
+            say(&line);
             ExitCode::from(code)
         }
     }
@@ -107,6 +122,10 @@ fn report(e: &anyhow::Error) -> Option<(u8, String)> {
     if io_kind == Some(io::ErrorKind::BrokenPipe) {
         return None;
     }
+    // Ctrl-C during long work (cli::budget): the shell's code for SIGINT
+    if e.downcast_ref::<budget::Interrupted>().is_some() {
+        return Some((130, format!("bouncelab: {e}")));
+    }
     let code = if io_kind.is_some() || e.downcast_ref::<Runtime>().is_some() {
         1
     } else {
@@ -116,6 +135,13 @@ fn report(e: &anyhow::Error) -> Option<(u8, String)> {
         code,
         format!("bouncelab: error: {}", one_line(&format!("{e:#}"))),
     ))
+}
+
+/// One line on stderr, its control characters shown as text (crate::sanitize). A stderr that
+/// cannot take it (full, closed) changes nothing: the exit code still tells
+/// (tests/cli_guarantees.rs, `a_full_stderr_still_exits_2_and_help_to_a_full_stdout_fails`).
+fn say(line: &str) {
+    let _ = writeln!(io::stderr(), "{}", crate::sanitize::line(line));
 }
 
 /// Any message as one line.
@@ -134,7 +160,11 @@ fn clap_error(e: clap::Error) -> ExitCode {
         e.kind(),
         DisplayHelp | DisplayVersion | DisplayHelpOnMissingArgumentOrSubcommand
     ) {
-        let _ = e.print();
+        // help asked for but not delivered (stdout full or closed) is a failed command
+        let printed = e.print().and_then(|()| io::stdout().flush());
+        if printed.is_err() {
+            return ExitCode::from(1);
+        }
         return ExitCode::from(e.exit_code().clamp(0, 255) as u8);
     }
     let text = e.render().to_string();
@@ -146,7 +176,7 @@ fn clap_error(e: clap::Error) -> ExitCode {
         .collect();
     let msg = body.join(" ");
     let msg = msg.strip_prefix("error: ").unwrap_or(&msg);
-    eprintln!("bouncelab: error: {msg} (see --help)");
+    say(&format!("bouncelab: error: {msg} (see --help)"));
     ExitCode::from(2)
 }
 
@@ -203,6 +233,16 @@ fn dispatch(cli: Cli, out: &mut dyn Write) -> anyhow::Result<()> {
                 );
             }
             reproduce::run(&a, out)
+        }
+        Command::Drop(mut a) => {
+            merge(&cli.preset, &cli.config, &mut a.ball)?;
+            drop::run(&a, out)
+        }
+        Command::Standards(a) => {
+            if top.is_some() {
+                anyhow::bail!("standards lists the standards: --preset and --config do not apply");
+            }
+            standards::run(&a, out)
         }
     }
 }

@@ -7,10 +7,11 @@
 //! so a failure leaves no half-written set.
 
 use super::figure::{
-    HISTORY_SAMPLES, VELOCITY_POINTS, ZETA_POINTS, embedded_ball, history_figures, velocity_figure,
-    write_file, zeta_figures,
+    HISTORY_SAMPLES, VELOCITY_POINTS, ZETA_POINTS, commit, embedded_ball, history_figures,
+    velocity_figure, zeta_figures,
 };
 use super::output::given;
+use crate::atomic::Outputs;
 use crate::figure::report::{self, FigureRef};
 use crate::figure::{Figure, csv, paper, svg};
 use crate::preset::Preset;
@@ -170,12 +171,26 @@ pub fn run(a: &ReproduceArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         texts.iter().map(|t| &t.0).collect::<Vec<_>>(),
         files.iter().collect::<Vec<_>>()
     );
+    let created = !dir.exists();
     fs::create_dir_all(dir)
         .map_err(|e| anyhow::Error::new(e).context(format!("cannot create {}", dir.display())))?;
-    for (name, text) in &texts {
-        let path = dir.join(name);
-        write_file(&path, text, a.force)?;
-        writeln!(out, "{}", path.display())?;
+    // every file or none (crate::atomic); a folder this run created goes again on failure
+    let mut files = Outputs::new(a.force);
+    let written = texts
+        .iter()
+        .try_for_each(|(name, text)| files.text(&dir.join(name), text))
+        .map_err(anyhow::Error::new)
+        .and_then(|()| commit(files));
+    match written {
+        Ok(paths) => paths
+            .iter()
+            .try_for_each(|p| writeln!(out, "{}", p.display()))
+            .map_err(Into::into),
+        Err(e) => {
+            if created {
+                let _ = fs::remove_dir(dir);
+            }
+            Err(e)
+        }
     }
-    Ok(())
 }

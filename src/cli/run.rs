@@ -26,16 +26,22 @@ pub struct RunArgs {
     #[arg(long, conflicts_with_all = ["preset", "config", "params", "v0"])]
     pub normalized: bool,
     /// Impact speed v0 (m/s) [default: the preset's measured v0]
-    #[arg(long, value_name = "V")]
+    #[arg(long, value_name = "V", value_parser = super::number::number, allow_hyphen_values = true)]
     pub v0: Option<f64>,
     /// Flattening threshold z̄_p = z_p ω0/v0 of the normalized ball [default: none]
-    #[arg(long, value_name = "X", requires = "normalized")]
+    #[arg(
+        long,
+        value_name = "X",
+        requires = "normalized",
+        value_parser = super::number::number,
+        allow_hyphen_values = true,
+    )]
     pub zp_bar: Option<f64>,
     /// Relative stiffness λ = K_r/K_p (on a preset: changes K_r, keeps m and K_p)
-    #[arg(long, value_name = "L")]
+    #[arg(long, value_name = "L", value_parser = super::number::number, allow_hyphen_values = true)]
     pub lambda: Option<f64>,
     /// Damping factor ζ = √(m K_p)/(2c) (on a preset: changes c, keeps m and K_p)
-    #[arg(long, value_name = "Z")]
+    #[arg(long, value_name = "Z", value_parser = super::number::number, allow_hyphen_values = true)]
     pub zeta: Option<f64>,
     /// Output format
     #[arg(long, value_enum, default_value = "text")]

@@ -1,20 +1,18 @@
 //! `bouncelab sweep zeta|velocity`: the paper's Figs. 2–3 (COR, F̄_m, τ_f against ζ for
 //! several λ) and Fig. 4 (COR against impact speed for one ball), as CSV or JSON.
 
-use super::ball::{BallArgs, LawArg, check_positive, param_message, solve_error};
+use super::ball::{BallArgs, LawArg, check_positive, param_message};
 use super::output::{self, csv_row, num, opt_num};
-use crate::analysis::sweep::{cor_vs_velocity, cor_vs_zeta, lin_space, log_space};
+use crate::analysis::sweep::{lin_space, log_space};
 use crate::model::contact::ContactLaw;
 use crate::model::params::validate_lambda_zeta;
 use clap::{Args, Subcommand, ValueEnum};
 use serde::Serialize;
 use std::io::Write;
 
-/// Most points along a sweep, and most rows in all (λ values × points): the linear law runs
-/// the exact solver, the others the adaptive one, some ten times slower.
+/// Most points along a sweep; the rows in all (λ values × points) are held to the work limit
+/// of every command, [`super::budget::LIMIT`].
 pub const MAX_POINTS: usize = 100_000;
-pub const MAX_ROWS_LINEAR: usize = 1_000_000;
-pub const MAX_ROWS_NUMERIC: usize = 100_000;
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
 pub enum SweepFormat {
@@ -41,14 +39,28 @@ pub struct ZetaArgs {
         long,
         value_name = "L,L,...",
         value_delimiter = ',',
-        default_value = "0,0.4,1"
+        default_value = "0,0.4,1",
+        value_parser = super::number::number,
+        allow_hyphen_values = true
     )]
     pub lambda: Vec<f64>,
     /// Smallest ζ
-    #[arg(long, value_name = "Z", default_value_t = 0.01)]
+    #[arg(
+        long,
+        value_name = "Z",
+        default_value_t = 0.01,
+        value_parser = super::number::number,
+        allow_hyphen_values = true,
+    )]
     pub from: f64,
     /// Largest ζ
-    #[arg(long, value_name = "Z", default_value_t = 100.0)]
+    #[arg(
+        long,
+        value_name = "Z",
+        default_value_t = 100.0,
+        value_parser = super::number::number,
+        allow_hyphen_values = true,
+    )]
     pub to: f64,
     /// Number of ζ values per λ
     #[arg(long, value_name = "N", default_value_t = 400)]
@@ -66,10 +78,10 @@ pub struct VelocityArgs {
     #[command(flatten)]
     pub ball: BallArgs,
     /// Lowest impact speed (m/s) [default: 0.1 × the preset's v0]
-    #[arg(long, value_name = "V")]
+    #[arg(long, value_name = "V", value_parser = super::number::number, allow_hyphen_values = true)]
     pub from: Option<f64>,
     /// Highest impact speed (m/s) [default: 3 × the preset's v0]
-    #[arg(long, value_name = "V")]
+    #[arg(long, value_name = "V", value_parser = super::number::number, allow_hyphen_values = true)]
     pub to: Option<f64>,
     /// Number of speeds (evenly spaced)
     #[arg(long, value_name = "N", default_value_t = 60)]
@@ -93,18 +105,9 @@ fn check_points(points: usize, curves: usize, law: ContactLaw) -> anyhow::Result
     if points > MAX_POINTS {
         anyhow::bail!("invalid points: {points} (at most {MAX_POINTS})");
     }
-    let max = if law == ContactLaw::Linear {
-        MAX_ROWS_LINEAR
-    } else {
-        MAX_ROWS_NUMERIC
-    };
-    if points * curves > max {
-        anyhow::bail!(
-            "invalid points: {points} × {curves} curves is {} rows (at most {max} with the {law} law)",
-            points * curves
-        );
-    }
-    Ok(())
+    // the one work limit of every command (cli::budget)
+    let what = format!("{curves} λ values × {points} points");
+    super::budget::check(points * curves, law, &what)
 }
 
 #[derive(Serialize)]
@@ -126,8 +129,7 @@ fn zeta(a: &ZetaArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     check_positive("to", a.to)?;
     let law = ContactLaw::from(a.law);
     check_points(a.points, a.lambda.len(), law)?;
-    let rows =
-        cor_vs_zeta(&a.lambda, &log_space(a.from, a.to, a.points), law).map_err(solve_error)?;
+    let rows = super::budget::zeta_rows(&a.lambda, &log_space(a.from, a.to, a.points), law)?;
     match a.format {
         SweepFormat::Json => output::json(
             out,
@@ -185,8 +187,7 @@ fn velocity(a: &VelocityArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     check_positive("from", from)?;
     check_positive("to", to)?;
     check_points(a.points, 1, b.law)?;
-    let rows =
-        cor_vs_velocity(&b.params, b.law, &lin_space(from, to, a.points)).map_err(solve_error)?;
+    let rows = super::budget::velocity_rows(&b.params, b.law, &lin_space(from, to, a.points))?;
     match a.format {
         SweepFormat::Json => {
             let n = b.params.normalized();

@@ -51,18 +51,18 @@ mod tests {
 
     #[test]
     fn long_form_in_si() {
-        let fig = Figure {
-            title: "t".into(),
-            subtitle: String::new(),
-            x: Axis::linear("t (ms)", "t", 1e3),
-            y: Axis::linear("F (N)", "force", 1.0),
-            series: vec![
+        let fig = Figure::new(
+            "t".into(),
+            String::new(),
+            Axis::linear("t (ms)", "t", 1e3),
+            Axis::linear("F (N)", "force", 1.0),
+            vec![
                 Series::new("model", "model", Kind::Model, Style::Solid, 0)
                     .with_points(vec![(0.0, 0.0), (1.5e-3, 10.0)]),
                 Series::new("a,b", "a,b", Kind::Measured, Style::Dashed, 1)
                     .with_points(vec![(2e-3, 3.0)]),
             ],
-        };
+        );
         assert_eq!(
             to_string(&fig),
             "series,kind,t,force\nmodel,model,0,0\nmodel,model,0.0015,10\n\"a,b\",measured,0.002,3\n"

@@ -2,7 +2,7 @@
 //! displacement, drawn from the sampled history of an [`ImpactResponse`].
 
 use super::paper::Ball;
-use super::{Axis, BLACK, Figure, GREY, Kind, Marker, Series, Style, short};
+use super::{Axis, BLACK, Corner, Figure, GREY, Kind, Look, Marker, Series, Style, Tone, short};
 use crate::model::contact::ContactLaw;
 use crate::solver::ImpactResponse;
 
@@ -18,7 +18,14 @@ fn at_speed(ball: &Ball, v0: f64) -> String {
 
 /// A measured value drawn as a horizontal line from x0 to x1 at y.
 fn measured_line(label: &str, id: &str, y: f64, x0: f64, x1: f64) -> Series {
-    Series::new(label, id, Kind::Measured, Style::Dashed, BLACK).with_points(vec![(x0, y), (x1, y)])
+    Series::new(label, id, Kind::Measured, Style::Dashed, BLACK)
+        .with_points(vec![(x0, y), (x1, y)])
+        .with_look(measured())
+}
+
+/// Measured values on screen: dotted, in the legend once as "┄ measured".
+fn measured() -> Look {
+    Look::new(Tone::Measured, Some("measured"), None)
 }
 
 /// Figs. 5, 7: force against time, with the measured peak force and contact time as reference
@@ -26,8 +33,11 @@ fn measured_line(label: &str, id: &str, y: f64, x0: f64, x1: f64) -> Series {
 pub fn force_time(ball: &Ball, r: &ImpactResponse) -> Figure {
     let h = &r.history;
     let pts: Vec<(f64, f64)> = h.t.iter().copied().zip(h.force.iter().copied()).collect();
-    let mut series =
-        vec![Series::new("model", "model", Kind::Model, Style::Solid, 0).with_points(pts)];
+    let mut series = vec![
+        Series::new("model", "model", Kind::Model, Style::Solid, 0)
+            .with_points(pts)
+            .with_look(Look::new(Tone::Current, Some("model"), None)),
+    ];
     let t_end = r.duration;
     if let Some(m) = ball.measured_at(ball.params.v0) {
         let right = m.contact_time.map_or(t_end, |t| t_end.max(t));
@@ -50,17 +60,45 @@ pub fn force_time(ball: &Ball, r: &ImpactResponse) -> Figure {
                     Style::Dotted,
                     1,
                 )
-                .with_points(vec![(t, 0.0), (t, top)]),
+                .with_points(vec![(t, 0.0), (t, top)])
+                .with_look(measured()),
             );
         }
     }
     Figure {
-        title: format!("Contact force against time: {}", ball.name),
-        subtitle: at_speed(ball, ball.params.v0),
-        x: Axis::linear("time t (ms)", "t", 1e3),
-        y: Axis::linear("contact force F (N)", "force", 1.0),
         series,
+        ..frame(false, ball)
     }
+}
+
+/// Figs. 5–8 without data: titles and axes, for a chart whose impact could not be computed.
+/// `displacement`: force against displacement (Figs. 6, 8), else against time (5, 7).
+pub fn frame(displacement: bool, ball: &Ball) -> Figure {
+    let (what, x, screen_title, corner) = if displacement {
+        (
+            "displacement",
+            Axis::linear("indentation z, displacement α (mm)", "displacement", 1e3),
+            "Force–displacement · F [N] vs α, z [mm]",
+            Corner::TopLeft,
+        )
+    } else {
+        (
+            "time",
+            Axis::linear("time t (ms)", "t", 1e3),
+            "Force–time · F [N] vs t [ms]",
+            Corner::TopRight,
+        )
+    };
+    let mut fig = Figure::new(
+        format!("Contact force against {what}: {}", ball.name),
+        at_speed(ball, ball.params.v0),
+        x,
+        Axis::linear("contact force F (N)", "force", 1.0),
+        Vec::new(),
+    );
+    fig.screen_title = screen_title.into();
+    fig.legend_corner = corner;
+    fig
 }
 
 /// The force on the loading branch where the indentation first reaches `z` (the sample at or
@@ -88,7 +126,8 @@ pub fn force_displacement(ball: &Ball, r: &ImpactResponse) -> Figure {
             Style::Solid,
             0,
         )
-        .with_points(with_force(&h.indentation)),
+        .with_points(with_force(&h.indentation))
+        .with_look(Look::new(Tone::Secondary, Some("contact z"), None)),
         Series::new(
             "ball displacement α",
             "model displacement",
@@ -96,15 +135,48 @@ pub fn force_displacement(ball: &Ball, r: &ImpactResponse) -> Figure {
             Style::Dashed,
             2,
         )
-        .with_points(with_force(&h.displacement)),
+        .with_points(with_force(&h.displacement))
+        .with_look(Look::new(Tone::Current, Some("ball α"), None)),
     ];
     let right = h
         .displacement
         .iter()
         .chain(&h.indentation)
         .fold(0.0f64, |a, &b| a.max(b));
-    let z_p = ball.params.z_p;
-    // the threshold is drawn when it falls inside the picture; otherwise the subtitle says it
+    series.extend(flattening(ball, r, right));
+    if let Some(f) = ball.measured_at(ball.params.v0).and_then(|m| m.max_force) {
+        series.push(measured_line(
+            &format!("measured peak force ({} N)", short(f, 4)),
+            "measured max_force",
+            f,
+            0.0,
+            right,
+        ));
+    }
+    let mut fig = frame(true, ball);
+    let (z_m, z_p) = (r.max_indentation, ball.params.z_p);
+    if ball.law != ContactLaw::Hertz {
+        let (word, cmp) = if z_m > z_p {
+            ("flattened", ">")
+        } else {
+            ("no flattening", "<")
+        };
+        fig.subtitle.push_str(&format!(
+            "; {word}: z_m = {} mm {cmp} z_p = {} mm",
+            short(z_m * 1e3, 3),
+            short(z_p * 1e3, 3)
+        ));
+    }
+    fig.series = series;
+    fig
+}
+
+/// The flattening threshold z_p up to where it meets the loading curve, when it falls inside
+/// the picture (otherwise the subtitle says it), and the permanent indentation z_f once the
+/// ball flattened.
+fn flattening(ball: &Ball, r: &ImpactResponse, right: f64) -> Vec<Series> {
+    let (h, z_p) = (&r.history, ball.params.z_p);
+    let mut series = Vec::new();
     let zp_shown = ball.law != ContactLaw::Hertz && z_p <= right;
     if zp_shown {
         series.push(
@@ -118,7 +190,8 @@ pub fn force_displacement(ball: &Ball, r: &ImpactResponse) -> Figure {
             .with_points(vec![
                 (z_p, 0.0),
                 (z_p, force_at(&h.indentation, &h.force, z_p)),
-            ]),
+            ])
+            .with_look(Look::new(Tone::Rule, None, Some("z_p"))),
         );
     }
     if r.permanent_indentation > 1e-6 * r.max_indentation {
@@ -130,38 +203,14 @@ pub fn force_displacement(ball: &Ball, r: &ImpactResponse) -> Figure {
             Style::Markers(Marker::Diamond),
             1,
         )
-        .with_points(vec![(z_f, 0.0)]);
+        .with_points(vec![(z_f, 0.0)])
+        .with_look(Look::new(
+            Tone::Highlight,
+            None,
+            Some(&format!("▲z_f {} mm", short(z_f * 1e3, 3))),
+        ));
         s.annotations = vec!["z_f".into()];
         series.push(s);
     }
-    if let Some(f) = ball.measured_at(ball.params.v0).and_then(|m| m.max_force) {
-        series.push(measured_line(
-            &format!("measured peak force ({} N)", short(f, 4)),
-            "measured max_force",
-            f,
-            0.0,
-            right,
-        ));
-    }
-    let mut subtitle = at_speed(ball, ball.params.v0);
-    let z_m = r.max_indentation;
-    if ball.law != ContactLaw::Hertz {
-        let (word, cmp) = if z_m > z_p {
-            ("flattened", ">")
-        } else {
-            ("no flattening", "<")
-        };
-        subtitle.push_str(&format!(
-            "; {word}: z_m = {} mm {cmp} z_p = {} mm",
-            short(z_m * 1e3, 3),
-            short(z_p * 1e3, 3)
-        ));
-    }
-    Figure {
-        title: format!("Contact force against displacement: {}", ball.name),
-        subtitle,
-        x: Axis::linear("indentation z, displacement α (mm)", "displacement", 1e3),
-        y: Axis::linear("contact force F (N)", "force", 1.0),
-        series,
-    }
+    series
 }

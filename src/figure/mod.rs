@@ -1,16 +1,24 @@
-//! Figures as plain data, and the ways out: an SVG picture ([`svg::render`]), the plotted
-//! series as CSV ([`csv::write`]), and the Markdown report comparing model and experiment
-//! ([`report`]). [`paper`] builds the paper's figures (MODEL.md §6) from solver output.
+//! Figures as plain data — the one description of a chart, for paper and screen — and the
+//! ways out: an SVG picture ([`svg::render`]), the plotted series as CSV ([`csv::write`]), the
+//! terminal explorer's braille widget (`tui::widgets::plot`), and the Markdown report comparing
+//! model and experiment ([`report`]). [`paper`] builds the paper's figures (docs/model.md §6)
+//! from solver output; [`explorer`] builds the explorer's charts from the same builders, with
+//! the pinned curves and this run on top.
 //!
-//! Nothing here touches the file system: rendering returns a `String` and the CSV writer takes
-//! any `io::Write`, so the command line and the terminal explorer share one implementation.
+//! Nothing here touches the file system or the terminal: rendering returns a `String` and the
+//! CSV writer takes any `io::Write`, so the command line and the explorer share one
+//! implementation.
 
 pub mod csv;
+pub mod explorer;
 pub mod history;
+pub mod look;
 pub mod paper;
 pub mod report;
 pub mod svg;
-mod ticks;
+pub mod ticks;
+
+pub use look::{Corner, LegendEntry, Look, Sample, Tone};
 
 /// One axis of a figure.
 #[derive(Debug, Clone, PartialEq)]
@@ -56,25 +64,45 @@ impl Axis {
         self.range = Some((from, to));
         self
     }
+
+    /// An SI value as drawn: in the unit shown, log10 of it on a log axis; `None` for a value
+    /// the axis cannot show (not finite, or not positive on a log axis).
+    pub fn drawn(&self, v: f64) -> Option<f64> {
+        let v = v * self.scale;
+        match (v.is_finite(), self.log) {
+            (true, false) => Some(v),
+            (true, true) if v > 0.0 => Some(v.log10()),
+            _ => None,
+        }
+    }
 }
 
-/// What a series stands for; written in the CSV `kind` column.
+/// What a series stands for. Its CSV `kind` column says `model`, `measured` or `reference`
+/// ([`Role::name`]); the pinned curves and this run's marker are model values too.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Kind {
+pub enum Role {
     /// Computed by the model.
     Model,
+    /// Computed by the model for the pinned setting: drawn dimmed, behind the live curves.
+    Pinned,
+    /// The current run's point on a sweep's curve.
+    ThisRun,
     /// Measured (Cross 1999 for the embedded balls).
     Measured,
     /// A reference line: a threshold or a measured value drawn across the plot.
     Reference,
 }
 
-impl Kind {
+/// The name the CSV and the command line have always used for [`Role`].
+pub type Kind = Role;
+
+impl Role {
+    /// The CSV `kind` column.
     pub fn name(self) -> &'static str {
         match self {
-            Kind::Model => "model",
-            Kind::Measured => "measured",
-            Kind::Reference => "reference",
+            Role::Model | Role::Pinned | Role::ThisRun => "model",
+            Role::Measured => "measured",
+            Role::Reference => "reference",
         }
     }
 }
@@ -118,7 +146,7 @@ pub const GREY: usize = 7;
 /// One plotted series.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Series {
-    /// Legend text (may hold Greek letters and units).
+    /// Legend text of the picture (may hold Greek letters and units).
     pub label: String,
     /// Name in the CSV `series` column: ASCII, stable, easy to filter on.
     pub id: String,
@@ -130,6 +158,8 @@ pub struct Series {
     pub points: Vec<(f64, f64)>,
     /// Text placed next to each point (markers only); empty for none.
     pub annotations: Vec<String>,
+    /// How a terminal draws it.
+    pub look: Look,
 }
 
 impl Series {
@@ -142,11 +172,18 @@ impl Series {
             color,
             points: Vec::new(),
             annotations: Vec::new(),
+            look: Look::of(kind),
         }
     }
 
     pub fn with_points(mut self, points: Vec<(f64, f64)>) -> Series {
         self.points = points;
+        self
+    }
+
+    /// The series with a terminal look.
+    pub fn with_look(mut self, look: Look) -> Series {
+        self.look = look;
         self
     }
 }
@@ -161,9 +198,44 @@ pub struct Figure {
     pub y: Axis,
     /// Drawn in this order; the legend lists those with a label, under the plot.
     pub series: Vec<Series>,
+    /// The title of the chart in a terminal, shorter than `title`, with the units.
+    pub screen_title: String,
+    /// Where a terminal puts the legend, inside the plot.
+    pub legend_corner: Corner,
 }
 
 impl Figure {
+    /// A figure with a terminal title equal to `title` and the legend top right; builders
+    /// for the explorer set both.
+    pub fn new(title: String, subtitle: String, x: Axis, y: Axis, series: Vec<Series>) -> Figure {
+        Figure {
+            screen_title: title.clone(),
+            title,
+            subtitle,
+            x,
+            y,
+            series,
+            legend_corner: Corner::TopRight,
+        }
+    }
+
+    /// Add `series` after the model curves, before the measured values (which are drawn last,
+    /// and listed last in the legend), so that a measured marker at the same place stays
+    /// visible.
+    pub fn insert_before_measured(&mut self, series: Series) {
+        let i = self
+            .series
+            .iter()
+            .position(|s| s.kind == Kind::Measured)
+            .unwrap_or(self.series.len());
+        self.series.insert(i, series);
+    }
+
+    /// The terminal legend: one entry per distinct key, in series order (see [`look`]).
+    pub fn legend(&self) -> Vec<LegendEntry> {
+        look::legend(&self.series)
+    }
+
     /// (min, max) over every point of every series along one axis, in the unit shown,
     /// ignoring non-finite values (and non-positive ones on a log axis); `None` when there is
     /// nothing to show.

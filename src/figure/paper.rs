@@ -1,14 +1,14 @@
-//! The paper's figures (MODEL.md §6) as [`Figure`]s, built from solver output: COR and
+//! The paper's figures (docs/model.md §6) as [`Figure`]s, built from solver output: COR and
 //! normalized peak force against ζ (Figs. 2, 3), COR against impact speed (Fig. 4), force
 //! against time and against displacement (Figs. 5–8), each with the measured values of the
-//! balls (Cross 1999, MODEL.md §7).
+//! balls (Cross 1999, docs/model.md §7).
 //!
 //! Figs. 5–8 live in [`super::history`] and are re-exported here.
 //!
 //! The builders take computed data (sweep rows, an [`ImpactResponse`](crate::solver::ImpactResponse)) and return a figure, so
 //! a caller that already holds a response (the explorer) draws it without re-solving.
 
-use super::{Axis, BLACK, Figure, GREY, Kind, Marker, Series, Style, short};
+use super::{Axis, BLACK, Corner, Figure, GREY, Kind, Look, Marker, Series, Style, Tone, short};
 use crate::analysis::sweep::{VelocityPoint, ZetaPoint};
 use crate::model::contact::ContactLaw;
 use crate::model::params::ImpactParams;
@@ -78,9 +78,35 @@ fn zeta_figure(
     model: fn(&ZetaPoint) -> f64,
     measured: fn(&Ball) -> Option<f64>,
 ) -> Figure {
+    let series = zeta_series(rows, balls, model, measured);
     let (lo, hi) = rows.iter().fold((f64::INFINITY, 0.0f64), |(a, b), r| {
         (a.min(r.zeta), b.max(r.zeta))
     });
+    let at = if balls.is_empty() {
+        String::new()
+    } else {
+        format!(
+            "; markers: measured (Cross 1999), at the {} ζ",
+            balls[0].source
+        )
+    };
+    Figure::new(
+        title.into(),
+        format!("normalized ball, no flattening, {law} law{at}"),
+        Axis::log("damping factor ζ (–)", "zeta", lo.min(hi), hi.max(lo)),
+        y,
+        series,
+    )
+}
+
+/// One curve per λ (the i-th in the i-th reference tone on screen), then each ball's measured
+/// value at its ζ (its initial on screen).
+fn zeta_series(
+    rows: &[ZetaPoint],
+    balls: &[Ball],
+    model: fn(&ZetaPoint) -> f64,
+    measured: fn(&Ball) -> Option<f64>,
+) -> Vec<Series> {
     let mut series = Vec::new();
     for (i, l) in lambdas(rows).into_iter().enumerate() {
         let (style, color) = curve_style(i);
@@ -97,7 +123,12 @@ fn zeta_figure(
                 style,
                 color,
             )
-            .with_points(pts),
+            .with_points(pts)
+            .with_look(Look::new(
+                Tone::Reference(i),
+                Some(&format!("λ={}", short(l, 4))),
+                None,
+            )),
         );
     }
     for (i, b) in balls.iter().enumerate() {
@@ -110,25 +141,24 @@ fn zeta_figure(
             Style::Markers(MARKERS[i % MARKERS.len()]),
             BLACK,
         )
-        .with_points(vec![(n.zeta, value)]);
+        .with_points(vec![(n.zeta, value)])
+        .with_look(measured_look(&b.name));
         s.annotations = vec![b.name.clone()];
         series.push(s);
     }
-    let at = if balls.is_empty() {
-        String::new()
-    } else {
-        format!(
-            "; markers: measured (Cross 1999), at the {} ζ",
-            balls[0].source
-        )
-    };
-    Figure {
-        title: title.into(),
-        subtitle: format!("normalized ball, no flattening, {law} law{at}"),
-        x: Axis::log("damping factor ζ (–)", "zeta", lo.min(hi), hi.max(lo)),
-        y,
-        series,
-    }
+    series
+}
+
+/// A ball's measured marker on screen: its initial, in the legend as "S G B measured".
+fn measured_look(name: &str) -> Look {
+    Look::new(Tone::Measured, Some("measured"), Some(&initial(name)))
+}
+
+/// The letter that marks a ball's measured point on screen: its name's initial.
+pub fn initial(name: &str) -> String {
+    name.chars()
+        .next()
+        .map_or("?".into(), |c| c.to_uppercase().collect())
 }
 
 /// The COR axis, 0 … 1 with a sliver below 0 so that a COR of 0 (no rebound) shows as a
@@ -139,7 +169,7 @@ fn cor_axis() -> Axis {
 
 /// Fig. 2: COR against ζ, one curve per λ, with the balls' measured COR at their ζ.
 pub fn cor_zeta(rows: &[ZetaPoint], balls: &[Ball], law: ContactLaw) -> Figure {
-    zeta_figure(
+    let mut fig = zeta_figure(
         rows,
         balls,
         law,
@@ -147,13 +177,16 @@ pub fn cor_zeta(rows: &[ZetaPoint], balls: &[Ball], law: ContactLaw) -> Figure {
         cor_axis(),
         |r| r.cor,
         |b| b.measured.as_ref()?.cor,
-    )
+    );
+    fig.screen_title = format!("COR e vs ζ (log) · {law} law, no flattening");
+    fig.legend_corner = Corner::BottomRight;
+    fig
 }
 
 /// Fig. 3: normalized peak force F̄_m = F_m/(m v0 ω0) against ζ, with the balls' measured peak
 /// force normalized by their own m, v0 and ω0 = √(K_p/m).
 pub fn force_zeta(rows: &[ZetaPoint], balls: &[Ball], law: ContactLaw) -> Figure {
-    zeta_figure(
+    let mut fig = zeta_figure(
         rows,
         balls,
         law,
@@ -170,7 +203,10 @@ pub fn force_zeta(rows: &[ZetaPoint], balls: &[Ball], law: ContactLaw) -> Figure
             let p = &b.params;
             Some(m.max_force? / (p.mass * m.v0 * p.omega0()))
         },
-    )
+    );
+    fig.screen_title = format!("Normalized peak force Fm/(m v0 ω0) vs ζ (log) · {law} law");
+    fig.legend_corner = Corner::BottomLeft;
+    fig
 }
 
 /// The impact speed at which the peak indentation reaches `ratio` × z_p (`None` without a
@@ -220,28 +256,37 @@ pub fn speed_for_indentation(
     Ok(Some(hi))
 }
 
+/// The speed `v` at which flattening starts, as a dotted line across the COR axis.
+fn flattening_onset(v: f64) -> Series {
+    Series::new(
+        &format!("flattening starts, z_m = z_p ({} m/s)", short(v, 3)),
+        "flattening_onset",
+        Kind::Reference,
+        Style::Dotted,
+        GREY,
+    )
+    .with_points(vec![(v, 0.0), (v, 1.05)])
+    .with_look(Look::new(Tone::Rule, None, Some("flattens")))
+}
+
 /// Fig. 4: COR against impact speed for one ball, with the flattening onset (z_m = z_p) and
 /// the measured COR.
 pub fn cor_velocity(ball: &Ball, rows: &[VelocityPoint], onset: Option<f64>) -> Figure {
     let mut series = vec![
         Series::new("model", "model", Kind::Model, Style::Solid, 0)
-            .with_points(rows.iter().map(|r| (r.v0, r.cor)).collect()),
+            .with_points(rows.iter().map(|r| (r.v0, r.cor)).collect())
+            .with_look(Look::new(
+                Tone::Current,
+                Some(&format!("e(v0), {} law", ball.law)),
+                None,
+            )),
     ];
     let first = rows.first().map_or(0.0, |r| r.v0);
     let last = rows.last().map_or(1.0, |r| r.v0);
     // from 0 unless the sweep starts far from it
     let left = if first <= 0.25 * last { 0.0 } else { first };
     if let Some(v) = onset.filter(|&v| v <= last && ball.law != ContactLaw::Hertz) {
-        series.push(
-            Series::new(
-                &format!("flattening starts, z_m = z_p ({} m/s)", short(v, 3)),
-                "flattening_onset",
-                Kind::Reference,
-                Style::Dotted,
-                GREY,
-            )
-            .with_points(vec![(v, 0.0), (v, 1.05)]),
-        );
+        series.push(flattening_onset(v));
     }
     if let Some((v, e)) = ball.measured.as_ref().and_then(|m| Some((m.v0, m.cor?))) {
         let mut s = Series::new(
@@ -251,25 +296,29 @@ pub fn cor_velocity(ball: &Ball, rows: &[VelocityPoint], onset: Option<f64>) -> 
             Style::Markers(Marker::Circle),
             BLACK,
         )
-        .with_points(vec![(v, e)]);
+        .with_points(vec![(v, e)])
+        .with_look(measured_look(&ball.name));
         s.annotations = vec![format!("e = {}", short(e, 3))];
         series.push(s);
     }
     let n = ball.params.normalized();
-    Figure {
-        title: format!(
+    let mut fig = Figure::new(
+        format!(
             "Coefficient of restitution against impact speed: {}",
             ball.name
         ),
-        subtitle: format!(
+        format!(
             "{} (λ = {}, ζ = {}, z_p = {} mm)",
             ball.describe(),
             short(n.lambda, 3),
             short(n.zeta, 3),
             short(ball.params.z_p * 1e3, 3)
         ),
-        x: Axis::linear("impact speed v0 (m/s)", "v0", 1.0).with_range(left, last),
-        y: cor_axis(),
+        Axis::linear("impact speed v0 (m/s)", "v0", 1.0).with_range(left, last),
+        cor_axis(),
         series,
-    }
+    );
+    fig.screen_title = format!("COR e vs impact speed v0 [m/s] · {}", ball.name);
+    fig.legend_corner = Corner::BottomLeft;
+    fig
 }

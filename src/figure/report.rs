@@ -203,6 +203,11 @@ fn summary(out: &mut String, balls: &[Comparison]) {
          fitted to the measured COR. The peak force and the contact time are the model's \
          predictions.\n\n",
     );
+    agreement(out, balls);
+}
+
+/// Per ball, which responses agree with the measurement within [`AGREEMENT`] and which not.
+fn agreement(out: &mut String, balls: &[Comparison]) {
     for c in balls {
         let rows = response_rows(c);
         let (mut good, mut bad) = (Vec::new(), Vec::new());
@@ -319,6 +324,12 @@ fn parameters(out: &mut String, c: &Comparison) {
             delta(y, Some(x))
         );
     }
+    refits_and_materials(out, c);
+}
+
+/// The K_r refitted to the measured COR with each set, and the material data behind the
+/// derived set.
+fn refits_and_materials(out: &mut String, c: &Comparison) {
     let fit = |f: &Option<Fit>| {
         f.map_or("out of reach".into(), |f| {
             format!("{} N/m (λ = {})", short(f.k_r, 4), short(f.lambda, 4))

@@ -9,7 +9,7 @@
 //! lines. The picture is therefore drawn `SCALE` times larger and the `<svg>` element's size
 //! set back to `WIDTH` × `HEIGHT`: the viewBox keeps the fine coordinates.
 
-use super::ticks::{Ticks, ticks};
+use super::ticks::{Room, Ticks, ticks};
 use super::{Figure, Marker, PALETTE, Series, Style};
 use plotters::element::DashedPathElement;
 use plotters::prelude::*;
@@ -84,15 +84,7 @@ fn text_width(text: &str, size: i32) -> i32 {
 /// A point (SI) in drawing coordinates: scaled to the unit shown, log10 on a log axis; `None`
 /// for a value the axis cannot show (not finite, or not positive on a log axis).
 fn to_draw(fig: &Figure, (x, y): (f64, f64)) -> Option<(f64, f64)> {
-    let map = |v: f64, axis: &super::Axis| {
-        let v = v * axis.scale;
-        match (v.is_finite(), axis.log) {
-            (true, false) => Some(v),
-            (true, true) if v > 0.0 => Some(v.log10()),
-            _ => None,
-        }
-    };
-    Some((map(x, &fig.x)?, map(y, &fig.y)?))
+    Some((fig.x.drawn(x)?, fig.y.drawn(y)?))
 }
 
 /// A marker of `shape` centred on backend offset (0, 0).
@@ -273,6 +265,26 @@ fn finish(svg: String, fig: &Figure) -> String {
     }
 }
 
+/// The title and subtitle lines, centred; returns the height they take, in CSS pixels.
+fn draw_titles<DB: DrawingBackend>(
+    root: &DrawingArea<DB, plotters::coord::Shift>,
+    fig: &Figure,
+) -> Result<i32, RenderError> {
+    let centre = px(WIDTH as i32 / 2);
+    let top = Pos::new(HPos::Center, VPos::Top);
+    let title = font_in(TITLE_PX, FontStyle::Bold).pos(top);
+    root.draw(&Text::new(fig.title.as_str(), (centre, px(10)), title))
+        .map_err(err)?;
+    let mut head = 44;
+    for line in subtitle_lines(&fig.subtitle) {
+        let sub = font(SUBTITLE_PX).color(&RGBColor(70, 70, 70)).pos(top);
+        root.draw(&Text::new(line, (centre, px(head - 4)), sub))
+            .map_err(err)?;
+        head += SUBTITLE_PX + 5;
+    }
+    Ok(head + 2)
+}
+
 /// The figure as an SVG document of `WIDTH` × `HEIGHT` CSS pixels.
 pub fn render(fig: &Figure) -> Result<String, RenderError> {
     let mut buf = String::new();
@@ -283,23 +295,14 @@ pub fn render(fig: &Figure) -> Result<String, RenderError> {
         );
         let root = SVGBackend::with_string(&mut buf, size).into_drawing_area();
         root.fill(&WHITE).map_err(err)?;
-        let centre = px(WIDTH as i32 / 2);
-        let top = Pos::new(HPos::Center, VPos::Top);
-        let title = font_in(TITLE_PX, FontStyle::Bold).pos(top);
-        root.draw(&Text::new(fig.title.as_str(), (centre, px(10)), title))
-            .map_err(err)?;
-        let mut head = 44;
-        for line in subtitle_lines(&fig.subtitle) {
-            let sub = font(SUBTITLE_PX).color(&RGBColor(70, 70, 70)).pos(top);
-            root.draw(&Text::new(line, (centre, px(head - 4)), sub))
-                .map_err(err)?;
-            head += SUBTITLE_PX + 5;
-        }
-        head += 2;
+        let head = draw_titles(&root, fig)?;
         let legend_h = legend_layout(fig).1.len() as i32 * LEGEND_ROW_PX + LEGEND_TOP_PX + 6;
         let (_, rest) = root.split_vertically(px(head));
         let (plot, legend) = rest.split_vertically(px(HEIGHT as i32 - head - legend_h));
-        let (tx, ty) = (ticks(fig, true), ticks(fig, false));
+        let (tx, ty) = (
+            ticks(fig, true, Room::Picture),
+            ticks(fig, false, Room::Picture),
+        );
         let mut chart = ChartBuilder::on(&plot)
             .margin_left(px(SIDE_PX))
             .margin_right(px(30))
@@ -335,5 +338,7 @@ pub fn render(fig: &Figure) -> Result<String, RenderError> {
         draw_legend(&legend, fig)?;
         root.present().map_err(err)?;
     }
-    Ok(finish(buf, fig))
+    // labels may hold control characters, which XML 1.0 forbids: shown as text instead
+    // (crate::sanitize; tests/escaping.rs)
+    Ok(crate::sanitize::text(&finish(buf, fig)).into_owned())
 }

@@ -107,7 +107,7 @@ mod tests {
 
     #[test]
     fn every_embedded_preset_reads_back_exactly() {
-        for p in Preset::embedded() {
+        for p in Preset::embedded_all() {
             let text = p.to_toml(&["a header".into()]);
             assert!(text.starts_with("# a header\nname = "), "{text}");
             let back = Preset::parse(&text, "x.toml").unwrap_or_else(|e| panic!("{e}\n{text}"));

@@ -1,14 +1,18 @@
 //! The explorer's state and [`App::update`], the only place it changes. Curves are computed
-//! here, when the state changes, and stored; drawing only reads them. The dialogs (value entry,
-//! preset name, overwrite question) are handled in `dialogs`, the COR-vs-speed sweeps'
-//! bookkeeping in `sweeps`.
+//! here, when the state changes, and stored; drawing only reads them. `update` returns the
+//! side effects it wants ([`Effect`]: write an export, write a preset, run sweeps in the
+//! background) for the event loop to carry out. The dialogs (value entry, preset name,
+//! overwrite question) are handled in `dialogs`, the COR-vs-speed sweeps' bookkeeping in
+//! `sweeps`, and what the charts are drawn from in `scene`.
 
 mod dialogs;
+mod scene;
 mod sweeps;
 
 use super::action::{Action, Mode};
 use super::compute::{self, SpeedCurve, SpeedRequest, ZetaCurve};
-use super::export::{self, ExportRequest};
+pub use super::effect::Effect;
+use super::export;
 use super::format::sig_trim;
 use super::param::Param;
 use super::save::SaveRequest;
@@ -42,15 +46,15 @@ pub struct App {
     zeta: Option<ZetaCurve>,
     /// COR vs speed; computed only while the sweeps view shows it.
     speed: Option<SpeedCurve>,
-    /// Sweeps to run in the background (see [`App::with_background_sweeps`]).
+    /// Sweeps still to come (see [`App::with_background_sweeps`]).
     speed_wanted: Vec<SpeedRequest>,
+    /// The sweeps last asked of the background worker ([`Effect::Compute`]).
+    speed_asked: Vec<SpeedRequest>,
     background: bool,
     /// `e` was pressed: export once the view's curves are up to date.
     export_wanted: bool,
-    /// An export for the event loop to write (see [`App::export_request`]).
-    export: Option<ExportRequest>,
-    /// A preset file for the event loop to write (see [`App::save_request`]).
-    save: Option<SaveRequest>,
+    /// The save handed to the event loop, until its answer comes back.
+    save_out: Option<SaveRequest>,
 }
 
 impl App {
@@ -83,24 +87,24 @@ impl App {
             zeta: None,
             speed: None,
             speed_wanted: Vec::new(),
+            speed_asked: Vec::new(),
             background: false,
             export_wanted: false,
-            export: None,
-            save: None,
+            save_out: None,
         };
         app.refresh();
         app
     }
 
-    /// Leave the COR-vs-speed sweeps to a background worker: [`App::refresh`] lists them in
-    /// [`App::speed_requests`] and the results come back as [`Action::SpeedReady`]. Without
+    /// Leave the COR-vs-speed sweeps to a background worker: [`App::refresh`] asks for them
+    /// with [`Effect::Compute`] and the results come back as [`Action::SpeedReady`]. Without
     /// this (tests), `refresh` runs them itself.
     pub fn with_background_sweeps(mut self) -> App {
         self.background = true;
         self
     }
 
-    /// Sweeps waiting for the background worker.
+    /// Sweeps still to come from the background worker.
     pub fn speed_requests(&self) -> &[SpeedRequest] {
         &self.speed_wanted
     }
@@ -151,19 +155,6 @@ impl App {
         self.speed.as_ref()
     }
 
-    /// An export waiting to be written: the event loop writes it with [`export::write`] and
-    /// answers with [`Action::Exported`] or [`Action::ExportFailed`], which clear it.
-    pub fn export_request(&self) -> Option<&ExportRequest> {
-        self.export.as_ref()
-    }
-
-    /// A preset file waiting to be written: the event loop writes it with
-    /// [`super::save::write`] and answers with [`Action::Saved`], [`Action::SaveExists`] or
-    /// [`Action::SaveFailed`], which clear it.
-    pub fn save_request(&self) -> Option<&SaveRequest> {
-        self.save.as_ref()
-    }
-
     /// What the keyboard is talking to.
     pub fn mode(&self) -> Mode {
         match self.overlay {
@@ -174,21 +165,48 @@ impl App {
         }
     }
 
-    /// Apply one action and bring the curves up to date.
-    pub fn update(&mut self, action: Action) {
-        self.apply(action);
-        self.refresh();
+    /// Apply one action and bring the curves up to date; returns what the event loop is to
+    /// do.
+    pub fn update(&mut self, action: Action) -> Vec<Effect> {
+        let mut effects = self.apply(action);
+        effects.extend(self.refresh());
+        effects
     }
 
     /// Apply one action without recomputing: for a batch of queued events, `apply` each, then
     /// [`App::refresh`] once.
-    pub fn apply(&mut self, action: Action) {
+    pub fn apply(&mut self, action: Action) -> Vec<Effect> {
         if !matches!(action, Action::SpeedReady(..)) {
             self.message = None;
         }
         match action {
-            Action::SpeedReady(request, result) => self.receive_speed(&request, result),
             Action::Quit => self.quit = true,
+            Action::NextView | Action::PrevView => self.view = self.view.other(),
+            Action::Export => self.export_wanted = true,
+            Action::SpeedReady(..)
+            | Action::Exported { .. }
+            | Action::ExportFailed { .. }
+            | Action::Saved { .. }
+            | Action::SaveExists { .. }
+            | Action::SaveFailed { .. } => self.answer(action),
+            Action::OpenInput
+            | Action::InputChar(_)
+            | Action::InputBackspace
+            | Action::InputSubmit
+            | Action::InputCancel
+            | Action::SavePreset
+            | Action::ConfirmYes
+            | Action::ConfirmNo
+            | Action::ToggleHelp
+            | Action::CloseHelp => return self.dialog(action).into_iter().collect(),
+            _ => self.edit(action),
+        }
+        Vec::new()
+    }
+
+    /// The actions that change the setting, the selection or the ghost.
+    fn edit(&mut self, action: Action) {
+        match action {
             Action::Step { param, dir, coarse } => {
                 self.selected = param;
                 let value = param.step(self.setting.get(param), dir, coarse || self.coarse);
@@ -205,34 +223,7 @@ impl App {
                 self.coarse = coarse;
                 self.info(if coarse { "coarse steps" } else { "fine steps" }.into());
             }
-            Action::OpenInput => self.open_input(Purpose::Value(self.selected), String::new()),
-            Action::InputChar(c) => self.input_char(c),
-            Action::InputBackspace => {
-                if let Overlay::Input(input) = &mut self.overlay {
-                    input.text.pop();
-                }
-            }
-            Action::InputSubmit => self.submit_input(),
-            Action::InputCancel => self.cancel_input(),
-            Action::CloseHelp => self.overlay = Overlay::None,
-            Action::ToggleHelp => {
-                self.overlay = match self.overlay {
-                    Overlay::Help => Overlay::None,
-                    _ => Overlay::Help,
-                }
-            }
-            Action::LoadPreset(i) => match self.presets.get(i) {
-                Some(p) => {
-                    let name = p.name.clone();
-                    self.change(Setting::from_preset(i, p));
-                    self.info(format!("loaded {name}"));
-                }
-                None => self.warn(format!(
-                    "no preset {}: 1–{} load one",
-                    i + 1,
-                    self.presets.len()
-                )),
-            },
+            Action::LoadPreset(i) => self.load_preset(i),
             Action::CycleLaw => {
                 let law = self.setting.law.next();
                 self.change(Setting {
@@ -246,20 +237,8 @@ impl App {
                 self.change(Setting::from_preset(i, &self.presets[i]));
                 self.info(format!("reset to the {} preset", self.presets[i].name));
             }
-            Action::Pin => {
-                self.ghost = Some(Ghost {
-                    setting: self.setting.clone(),
-                    run: self.run.clone(),
-                    zeta: self.zeta.clone(),
-                    speed: self.speed.clone(),
-                });
-                self.info("pinned: the current curves stay as a dimmed ghost (P clears)".into());
-            }
-            Action::Unpin => {
-                if self.ghost.take().is_some() {
-                    self.info("ghost cleared".into());
-                }
-            }
+            Action::Pin => self.pin(),
+            Action::Unpin if self.ghost.take().is_some() => self.info("ghost cleared".into()),
             Action::Undo => match self.undo.pop() {
                 Some(previous) => {
                     self.setting = previous;
@@ -267,32 +246,56 @@ impl App {
                 }
                 None => self.warn("nothing to undo".into()),
             },
-            Action::NextView | Action::PrevView => self.view = self.view.other(),
-            Action::Export => self.export_wanted = true,
-            Action::Exported { files } => {
-                self.export = None;
-                self.info(export::message(&files));
-            }
-            Action::ExportFailed { msg } => {
-                self.export = None;
-                self.error(format!("export failed: {msg}"));
-            }
-            Action::SavePreset => self.open_save(),
+            _ => {}
+        }
+    }
+
+    /// The event loop's answers: a finished sweep, a written (or failed) export or save.
+    fn answer(&mut self, action: Action) {
+        match action {
+            Action::SpeedReady(request, result) => self.receive_speed(&request, result),
+            Action::Exported { files } => self.info(export::message(&files)),
+            Action::ExportFailed { msg } => self.error(format!("export failed: {msg}")),
             Action::Saved { path, replaced } => self.saved(&path, replaced),
             Action::SaveExists { path, holds } => self.ask_overwrite(path, holds),
             Action::SaveFailed { msg } => {
-                self.save = None;
+                self.save_out = None;
                 self.error(format!("save failed: {msg}"));
             }
-            Action::ConfirmYes => self.confirm(true),
-            Action::ConfirmNo => self.confirm(false),
+            _ => {}
         }
+    }
+
+    fn load_preset(&mut self, i: usize) {
+        match self.presets.get(i) {
+            Some(p) => {
+                let name = p.name.clone();
+                self.change(Setting::from_preset(i, p));
+                self.info(format!("loaded {name}"));
+            }
+            None => self.warn(format!(
+                "no preset {}: 1–{} load one",
+                i + 1,
+                self.presets.len()
+            )),
+        }
+    }
+
+    fn pin(&mut self) {
+        self.ghost = Some(Ghost {
+            setting: self.setting.clone(),
+            run: self.run.clone(),
+            zeta: self.zeta.clone(),
+            speed: self.speed.clone(),
+        });
+        self.info("pinned: the current curves stay as a dimmed ghost (P clears)".into());
     }
 
     /// Recompute what the current state needs and is not up to date: the impact when the
     /// parameters or law changed, the ζ curve when λ changed, the speed sweep when the sweeps
-    /// view shows it.
-    pub fn refresh(&mut self) {
+    /// view shows it. Returns the sweeps to ask of the background worker when they changed,
+    /// and an export once one is wanted and the view is up to date.
+    pub fn refresh(&mut self) -> Vec<Effect> {
         let s = &self.setting;
         let key = (s.params, s.law);
         if self.run_for != Some(key) {
@@ -305,44 +308,27 @@ impl App {
         if self.zeta.as_ref().is_none_or(|c| c.lambda != lambda) {
             self.zeta = compute::zeta_curve(lambda).map_err(|e| self.error(e)).ok();
         }
-        self.speed_wanted.clear();
-        if self.view == View::Sweeps {
-            let (current, ghost) = self.speed_targets();
-            let stale = |have: Option<&SpeedCurve>, want: &SpeedRequest| {
-                have.is_none_or(|c| c.request != *want)
-            };
-            if stale(self.speed.as_ref(), &current) {
-                self.speed_wanted.push(current);
-            }
-            if let (Some(g), Some(want)) = (&self.ghost, ghost)
-                && stale(g.speed.as_ref(), &want)
-                && !self.speed_wanted.contains(&want)
-            {
-                self.speed_wanted.push(want);
-            }
-            if !self.background {
-                for request in std::mem::take(&mut self.speed_wanted) {
-                    let result = request.run();
-                    self.receive_speed(&request, result);
-                }
-            }
-        }
+        let mut effects: Vec<Effect> = self.refresh_sweeps().into_iter().collect();
         if self.export_wanted {
-            self.prepare_export();
+            effects.extend(self.prepare_export());
         }
+        effects
     }
 
     /// The export of what is on screen, once it is up to date: while a COR-vs-speed sweep is
     /// still out the export waits for it (and says so).
-    fn prepare_export(&mut self) {
+    fn prepare_export(&mut self) -> Option<Effect> {
         if !self.speed_wanted.is_empty() {
             self.info("export waits for the COR-vs-speed sweep…".into());
-            return;
+            return None;
         }
         self.export_wanted = false;
-        match export::request(self) {
-            Ok(r) => self.export = Some(r),
-            Err(e) => self.error(format!("export failed: {e}")),
+        match export::request(&self.scene(), self.view.charts()) {
+            Ok(r) => Some(Effect::Export(r)),
+            Err(e) => {
+                self.error(format!("export failed: {e}"));
+                None
+            }
         }
     }
 

@@ -1,10 +1,10 @@
 //! The numbers behind the charts, computed with the library (`simulate`, `cor_vs_zeta`,
 //! `cor_vs_velocity`) when the state changes — never while drawing. SI units throughout.
 
-use super::format::nice_ceil;
 use crate::analysis::sweep::{
     VelocityPoint, ZetaPoint, cor_vs_velocity, cor_vs_zeta, lin_space, log_space,
 };
+use crate::figure::ticks::nice_ceil;
 use crate::model::contact::ContactLaw;
 use crate::model::params::ImpactParams;
 use crate::solver::{ImpactResponse, SolveOptions, simulate, simulate_normalized};
@@ -83,7 +83,7 @@ pub fn zeta_curve(lambda: f64) -> Result<ZetaCurve, String> {
 }
 
 /// Speed at which the ball starts to flatten under the linear law. Below flattening the peak
-/// indentation scales with v0 (z_m = z̄_m(λ, ζ) v0/ω0, MODEL.md §5), so z_m = z_p at
+/// indentation scales with v0 (z_m = z̄_m(λ, ζ) v0/ω0, docs/model.md §5), so z_m = z_p at
 /// v = z_p ω0 / z̄_m. `None` when the ball cannot flatten (z_p = ∞).
 pub fn flattening_speed(params: &ImpactParams) -> Option<f64> {
     if !params.z_p.is_finite() {

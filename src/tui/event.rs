@@ -1,11 +1,11 @@
 //! The event loop: wait for an event, drain whatever else is queued (zero-timeout poll), apply
-//! it all, recompute once, draw once — a held key never builds a backlog. COR-vs-speed sweeps
-//! run on a worker thread; while one is out, the loop also wakes to collect it. The loop is
-//! also where an export (`e`) and a saved preset (`s`) are written: the state asks for them,
-//! the loop does the file I/O and reports the outcome back as an action.
+//! it all, recompute once, draw once — a held key never builds a backlog. The loop also
+//! carries out the effects `update` returns: COR-vs-speed sweeps go to a worker thread (while
+//! one is out, the loop also wakes to collect it), an export (`e`) and a saved preset (`s`)
+//! are written here, and each outcome goes back to `update` as an action.
 
 use super::action::{self, Action};
-use super::app::App;
+use super::app::{App, Effect};
 use super::export;
 use super::save;
 use super::worker::Worker;
@@ -23,10 +23,11 @@ pub fn run(terminal: &mut DefaultTerminal, app: &mut App) -> anyhow::Result<()> 
     // test-only (see `crate::fault`): tests/tui_pty.rs checks that the terminal is restored
     // after a panic in here
     let panic_on_key = Fault::PanicInLoop.active();
+    let mut effects = app.refresh();
     let mut dirty = true;
     while !app.should_quit() {
+        carry_out(std::mem::take(&mut effects), app, &mut worker);
         if dirty {
-            worker.want(app.speed_requests());
             terminal.draw(|frame| frame.render_widget(&*app, frame.area()))?;
             dirty = false;
         }
@@ -45,7 +46,7 @@ pub fn run(terminal: &mut DefaultTerminal, app: &mut App) -> anyhow::Result<()> 
             }
             dirty = true; // a resize, too, needs a new frame
             if let Some(a) = action::from_event(&ev, app.mode()) {
-                app.apply(a);
+                effects.extend(app.apply(a));
             }
             if app.should_quit() {
                 return Ok(());
@@ -57,25 +58,34 @@ pub fn run(terminal: &mut DefaultTerminal, app: &mut App) -> anyhow::Result<()> 
             };
         }
         while let Some((request, result)) = worker.try_recv() {
-            app.apply(Action::SpeedReady(request, result));
+            effects.extend(app.apply(Action::SpeedReady(request, result)));
             dirty = true;
         }
         if dirty {
-            app.refresh();
-        }
-        if let Some(request) = app.export_request() {
-            let done = match export::write(request, &export::dir_from_env()) {
-                Ok(files) => Action::Exported { files },
-                Err(msg) => Action::ExportFailed { msg },
-            };
-            app.update(done);
-            dirty = true;
-        }
-        if let Some(request) = app.save_request() {
-            let done = save::write(request, catalog::user_presets_dir().as_deref());
-            app.update(done);
-            dirty = true;
+            effects.extend(app.refresh());
         }
     }
     Ok(())
+}
+
+/// Carry out `effects`, and those the answers to them bring, until none is left.
+fn carry_out(mut effects: Vec<Effect>, app: &mut App, worker: &mut Worker) {
+    while !effects.is_empty() {
+        for effect in std::mem::take(&mut effects) {
+            let answer = match effect {
+                Effect::Compute(requests) => {
+                    worker.want(&requests);
+                    continue;
+                }
+                Effect::Export(request) => match export::write(&request, &export::dir_from_env()) {
+                    Ok(files) => Action::Exported { files },
+                    Err(msg) => Action::ExportFailed { msg },
+                },
+                Effect::Save(request) => {
+                    save::write(&request, catalog::user_presets_dir().as_deref())
+                }
+            };
+            effects.extend(app.update(answer));
+        }
+    }
 }

@@ -2,35 +2,26 @@
 //! CSV, `bouncelab-<ball>-<chart>-<n>.svg` / `.csv`, in the current directory or in
 //! `$BOUNCELAB_EXPORT_DIR`.
 //!
-//! The figures are built with [`crate::figure`] from the curves the state already holds —
-//! nothing is re-solved. The split keeps `App::update` free of side effects: [`request`] (pure,
-//! called by `update`) turns the state into an [`ExportRequest`]; the event loop hands it to
-//! [`write`], the only part that touches the file system, and reports back with
-//! `Action::Exported` or `Action::ExportFailed`; [`message`] is what the header then says.
+//! The figures are the ones on screen ([`crate::figure::explorer`]), built from the curves the
+//! state already holds — nothing is re-solved. `App::update` stays free of side effects: it
+//! builds an [`ExportRequest`] with [`request`] (pure) and returns it as an effect; the event
+//! loop hands it to [`write`], the only part that touches the file system, and reports back
+//! with `Action::Exported` or `Action::ExportFailed`; [`message`] is what the header then
+//! says.
 //!
 //! Never overwriting: `<n>` is the first number for which none of the export's files exists,
 //! and every file is created with "create new", so a file that appears in between is not
 //! clobbered either (the export then moves on to the next `<n>`).
 
-use super::app::{App, Setting};
-use super::compute::{ZetaCurve, reference_curves};
-use super::param::Param;
-use super::ui::{self, Chart};
-use super::widgets::cor_zeta;
-use crate::analysis::sweep::ZetaPoint;
-use crate::figure::paper::{self, Ball};
-use crate::figure::{Figure, GREY, Kind, Marker, Series, Style, csv, short, svg};
-use crate::model::contact::ContactLaw;
-use std::fs::{self, OpenOptions};
-use std::io::{self, Write};
+use crate::figure::explorer::{self, Chart, Scene};
+use crate::figure::{Figure, csv, svg};
+use std::fs;
+use std::io;
 use std::path::{Path, PathBuf};
 
 /// Where exports go when set (and not empty); the current directory otherwise. Created, with
 /// its parents, when missing.
 pub const DIR_ENV: &str = "BOUNCELAB_EXPORT_DIR";
-
-/// Palette index of this run's marker: orange, which no model curve of these figures uses.
-const THIS_RUN_COLOR: usize = 4;
 
 /// Numbers tried for `<n>` before giving up.
 const MAX_N: usize = 99_999;
@@ -57,17 +48,6 @@ impl ExportRequest {
     }
 }
 
-/// The chart's name in file names: the `bouncelab figure` name of the same figure.
-pub fn chart_name(chart: Chart) -> &'static str {
-    match chart {
-        Chart::ForceTime => "force-time",
-        Chart::Hysteresis => "force-displacement",
-        Chart::CorZeta => "cor-zeta",
-        Chart::ForceZeta => "force-zeta",
-        Chart::CorSpeed => "cor-velocity",
-    }
-}
-
 /// A ball's name made safe for a file name: ASCII letters, digits, `_` and `-` are kept,
 /// anything else (spaces, `/`, accents) becomes `-`.
 pub fn file_stem_part(name: &str) -> String {
@@ -84,230 +64,20 @@ pub fn file_stem_part(name: &str) -> String {
     if s.is_empty() { "ball".into() } else { s }
 }
 
-/// The export of the current view, from the curves the state holds. An error when one of the
-/// view's charts has nothing to draw (its computation failed).
-pub fn request(app: &App) -> Result<ExportRequest, String> {
-    let charts = ui::charts(app.view())
+/// The export of `charts`, built from `scene` exactly as the screen draws them. An error when
+/// one of them has nothing to draw (its computation failed, or its sweep is still out).
+pub fn request(scene: &Scene, charts: &[Chart]) -> Result<ExportRequest, String> {
+    let charts = charts
         .iter()
-        .map(|&chart| Ok((chart_name(chart), figure(app, chart)?)))
+        .map(|&chart| match explorer::missing(chart, scene) {
+            Some(what) => Err(format!("no {what} to export (it could not be computed)")),
+            None => Ok((chart.file_name(), explorer::figure(chart, scene))),
+        })
         .collect::<Result<Vec<_>, String>>()?;
     Ok(ExportRequest {
-        ball: file_stem_part(&app.preset().name),
+        ball: file_stem_part(&scene.ball.name),
         charts,
     })
-}
-
-/// Whether the current λ and ζ are the preset's (v0 is shown on its own).
-fn preset_lambda_zeta(app: &App) -> bool {
-    let base = app.preset().params().normalized();
-    let now = app.setting().params.normalized();
-    let same = |a: f64, b: f64| (a - b).abs() <= 1e-9 * a.abs().max(b.abs());
-    same(base.lambda, now.lambda) && same(base.zeta, now.zeta)
-}
-
-/// The parameter set's name in the figures: the preset's ("adopted") or "modified" once λ or ζ
-/// moved.
-const MODIFIED: &str = "modified";
-
-/// The current setting as a ball of the paper's charts.
-fn current_ball(app: &App) -> Ball {
-    let p = app.preset();
-    let source = if preset_lambda_zeta(app) {
-        p.parameters.name()
-    } else {
-        MODIFIED
-    };
-    Ball {
-        name: p.name.clone(),
-        source: source.into(),
-        params: app.setting().params,
-        law: app.setting().law,
-        measured: Some(p.measured.clone()),
-    }
-}
-
-/// The force–time and force–displacement subtitles name the parameter set but not λ and ζ:
-/// add them to "modified parameters".
-fn name_lambda_zeta(fig: &mut Figure, s: &Setting) {
-    let from = format!("{MODIFIED} parameters");
-    let to = format!("{from} ({})", lambda_zeta_text(s));
-    fig.subtitle = fig.subtitle.replacen(&from, &to, 1);
-}
-
-/// Add `series` after the model curves, before the measured values (which are drawn last,
-/// and listed last in the legend), so that a measured marker at the same place stays visible.
-fn insert_before_measured(fig: &mut Figure, series: Series) {
-    let i = fig
-        .series
-        .iter()
-        .position(|s| s.kind == Kind::Measured)
-        .unwrap_or(fig.series.len());
-    fig.series.insert(i, series);
-}
-
-/// Every ball of the explorer with what was measured: the markers of the ζ figures.
-fn preset_balls(app: &App) -> Vec<Ball> {
-    app.presets()
-        .iter()
-        .map(|p| Ball {
-            name: p.name.clone(),
-            source: p.parameters.name().into(),
-            params: p.params(),
-            law: p.law,
-            measured: Some(p.measured.clone()),
-        })
-        .collect()
-}
-
-/// A dimmed curve on screen: a grey dotted line in the picture.
-fn pinned(label: String, id: String, points: Vec<(f64, f64)>) -> Series {
-    Series::new(&label, &id, Kind::Model, Style::Dotted, GREY).with_points(points)
-}
-
-/// The ◆ of the current run, as on screen.
-fn add_this_run(fig: &mut Figure, label: String, at: (f64, f64)) {
-    let s = Series::new(
-        &label,
-        "this run",
-        Kind::Model,
-        Style::Markers(Marker::Diamond),
-        THIS_RUN_COLOR,
-    )
-    .with_points(vec![at]);
-    insert_before_measured(fig, s);
-}
-
-fn lambda_zeta_text(s: &Setting) -> String {
-    let n = s.params.normalized();
-    format!("λ = {}, ζ = {}", short(n.lambda, 3), short(n.zeta, 3))
-}
-
-/// One chart's figure.
-pub fn figure(app: &App, chart: Chart) -> Result<Figure, String> {
-    let missing = |what: &str| format!("no {what} to export (it could not be computed)");
-    let ghost = app.ghost();
-    match chart {
-        Chart::ForceTime | Chart::Hysteresis => {
-            let run = app.run().ok_or_else(|| missing("impact"))?;
-            let ball = current_ball(app);
-            let mut fig = if chart == Chart::ForceTime {
-                paper::force_time(&ball, run)
-            } else {
-                paper::force_displacement(&ball, run)
-            };
-            name_lambda_zeta(&mut fig, app.setting());
-            if let Some(g) = ghost
-                && let Some(r) = &g.run
-            {
-                let h = &r.history;
-                let label = format!(
-                    "pinned ({}, v0 = {} m/s)",
-                    lambda_zeta_text(&g.setting),
-                    short(g.setting.params.v0, 3)
-                );
-                let (id, xs) = if chart == Chart::ForceTime {
-                    ("pinned model", &h.t)
-                } else {
-                    ("pinned displacement", &h.displacement)
-                };
-                let pts = xs.iter().copied().zip(h.force.iter().copied()).collect();
-                insert_before_measured(&mut fig, pinned(label, id.into(), pts));
-            }
-            Ok(fig)
-        }
-        Chart::CorZeta | Chart::ForceZeta => {
-            let current = app.zeta_curve().ok_or_else(|| missing("COR-vs-ζ curve"))?;
-            Ok(zeta_figure(app, chart, current))
-        }
-        Chart::CorSpeed => {
-            let curve = app
-                .speed_curve()
-                .filter(|_| app.speed_requests().is_empty())
-                .ok_or_else(|| missing("COR-vs-speed sweep"))?;
-            let ball = current_ball(app);
-            // the screen marks where the linear law starts to flatten; the other laws
-            // flatten elsewhere
-            let onset = curve
-                .request
-                .v_flat
-                .filter(|_| app.setting().law == ContactLaw::Linear);
-            let mut fig = paper::cor_velocity(&ball, &curve.points, onset);
-            if let Some(g) = ghost
-                && let Some(c) = &g.speed
-            {
-                let label = format!(
-                    "pinned ({}, {} law)",
-                    lambda_zeta_text(&g.setting),
-                    g.setting.law
-                );
-                let pts = c.points.iter().map(|p| (p.v0, p.cor)).collect();
-                insert_before_measured(&mut fig, pinned(label, "pinned model".into(), pts));
-            }
-            if let Some(r) = app.run() {
-                let v0 = app.setting().params.v0;
-                let label = format!(
-                    "this run (v0 = {} m/s, e = {})",
-                    short(v0, 3),
-                    short(r.cor, 3)
-                );
-                add_this_run(&mut fig, label, (v0, r.cor));
-            }
-            Ok(fig)
-        }
-    }
-}
-
-/// Figs. 2 and 3 as on screen: the λ = 0, 0.4, 1 curves and the current λ over the decades
-/// shown, the pinned λ, this run and every ball's measured value.
-fn zeta_figure(app: &App, chart: Chart, current: &ZetaCurve) -> Figure {
-    let (lo, hi) = cor_zeta::decades(app);
-    let (z_lo, z_hi) = (10f64.powi(lo) * (1.0 - 1e-9), 10f64.powi(hi) * (1.0 + 1e-9));
-    let shown = |c: &ZetaCurve| -> Vec<ZetaPoint> {
-        c.points
-            .iter()
-            .filter(|p| (z_lo..=z_hi).contains(&p.zeta))
-            .cloned()
-            .collect()
-    };
-    let mut rows: Vec<ZetaPoint> = reference_curves().iter().flat_map(shown).collect();
-    // a current λ that is one of the references is already there
-    if !reference_curves()
-        .iter()
-        .any(|c| c.lambda == current.lambda)
-    {
-        rows.extend(shown(current));
-    }
-    let balls = preset_balls(app);
-    let cor = chart == Chart::CorZeta;
-    let mut fig = if cor {
-        paper::cor_zeta(&rows, &balls, ContactLaw::Linear)
-    } else {
-        paper::force_zeta(&rows, &balls, ContactLaw::Linear)
-    };
-    let value = |p: &ZetaPoint| if cor { p.cor } else { p.max_force_normalized };
-    if let Some(g) = app.ghost()
-        && let Some(c) = &g.zeta
-    {
-        let label = format!("pinned, λ = {}", short(c.lambda, 3));
-        let id = format!("pinned lambda={}", short(c.lambda, 6));
-        let pts = shown(c).iter().map(|p| (p.zeta, value(p))).collect();
-        insert_before_measured(&mut fig, pinned(label, id, pts));
-    }
-    if let Some(r) = app.run() {
-        let zeta = app.setting().get(Param::Zeta);
-        let (y, what) = if cor {
-            (r.cor, "e")
-        } else {
-            (r.max_force_normalized, "F̄m")
-        };
-        let label = format!(
-            "this run ({}, {what} = {})",
-            lambda_zeta_text(app.setting()),
-            short(y, 3)
-        );
-        add_this_run(&mut fig, label, (zeta, y));
-    }
-    fig
 }
 
 /// The export directory: `$BOUNCELAB_EXPORT_DIR` when set and not empty, else `.`.
@@ -361,27 +131,14 @@ pub fn write(request: &ExportRequest, dir: &Path) -> Result<Vec<PathBuf>, String
     ))
 }
 
-/// Create each path new and write its text; on the first error remove what was created.
+/// Create each path new with its text, all or none (each file a temporary renamed into place,
+/// see [`crate::atomic`]): an error leaves no file of this export behind.
 fn create_all(paths: &[PathBuf], contents: &[String]) -> Result<(), (PathBuf, io::Error)> {
-    let mut created: Vec<&PathBuf> = Vec::new();
+    let mut files = crate::atomic::Outputs::new(false);
     for (path, text) in paths.iter().zip(contents) {
-        let result = OpenOptions::new()
-            .write(true)
-            .create_new(true)
-            .open(path)
-            .and_then(|mut f| {
-                created.push(path);
-                f.write_all(text.as_bytes())?;
-                f.flush()
-            });
-        if let Err(e) = result {
-            for p in created {
-                let _ = fs::remove_file(p);
-            }
-            return Err((path.clone(), e));
-        }
+        files.text(path, text).map_err(|e| (e.path, e.error))?;
     }
-    Ok(())
+    files.commit().map(drop).map_err(|e| (e.path, e.error))
 }
 
 /// An I/O error without the "(os error N)" tail.

@@ -1,20 +1,27 @@
 //! The live terminal explorer (ratatui). Entry point: [`run`].
 //!
-//! Layout of the module, after ratatui's event-driven template:
-//! [`app`] holds the state and `update(action)`, the only place it changes (curves are computed
-//! there, in [`compute`], with the library); [`action`] maps keys to actions; [`event`] is the
-//! loop; [`ui`] lays the screen out and [`widgets`] draw it, reading the state only; [`export`]
-//! turns the current view into SVG and CSV files (`e`) and [`save`] the current setting into a
-//! user preset file (`s`): in both `update` only asks, the loop writes.
+//! Layout of the module, after ratatui's event-driven template (the Elm architecture):
+//! [`app`] holds the state and `update(action) -> effects`, the only place it changes (curves
+//! are computed there, in [`compute`], with the library); [`action`] maps keys to actions;
+//! [`event`] is the loop, which carries out the [`effect`]s; [`ui`] lays the screen out and
+//! [`widgets`] draw it, each from the few things it shows — a chart from its figure
+//! (`crate::figure::explorer`), the same one the export writes; [`export`] writes the current
+//! view's figures as SVG and CSV files (`e`) and [`save`] the current setting as a user preset
+//! file (`s`): in both `update` only asks, the loop writes.
+//!
+//! The modules import each other without a cycle (tests/tui_imports.rs): state below
+//! `update`, widgets and the loop above it.
 
 pub mod action;
 pub mod app;
 pub mod compute;
+pub mod effect;
 pub mod event;
 pub mod export;
 pub mod format;
 pub mod param;
 pub mod save;
+pub mod setting;
 pub mod state;
 pub mod theme;
 pub mod ui;
@@ -38,6 +45,7 @@ pub fn run(preset: Preset) -> anyhow::Result<()> {
     if !std::io::stdout().is_terminal() {
         anyhow::bail!("the explorer needs a terminal (stdout is not one); see `bouncelab --help`");
     }
+    remove_stale_temporaries();
     let mut app = app::App::new(preset, color_wanted()).with_background_sweeps();
     let mut terminal = ratatui::try_init()
         .inspect_err(|_| {
@@ -46,7 +54,30 @@ pub fn run(preset: Preset) -> anyhow::Result<()> {
             }
         })
         .context("cannot set the terminal up for the explorer")?;
-    let result = event::run(&mut terminal, &mut app);
+    // a terminating signal restores the terminal too, then exits 128 + n (crate::signals)
+    let guard = crate::signals::TerminalGuard::new(restore_all);
+    let result = guard
+        .map_err(anyhow::Error::from)
+        .and_then(|_guard| event::run(&mut terminal, &mut app));
     ratatui::restore();
     result
+}
+
+/// Raw mode off, the main screen back, the cursor shown.
+fn restore_all() {
+    // errors ignored: after SIGHUP the terminal is gone (ratatui::restore would print them)
+    let _ = ratatui::try_restore();
+    let _ = ratatui::crossterm::execute!(std::io::stdout(), ratatui::crossterm::cursor::Show);
+}
+
+/// Saves and exports killed mid-write (kill -9) leave their temporary files: remove those of
+/// processes that are gone, in the presets folder and among the export's files
+/// (tests/tui_exit_pty.rs, `the_debris_of_a_killed_save_is_removed_at_start`).
+fn remove_stale_temporaries() {
+    if let Some(dir) = crate::catalog::user_presets_dir() {
+        crate::atomic::remove_stale(&dir, |name| name.ends_with(".toml"));
+    }
+    crate::atomic::remove_stale(&export::dir_from_env(), |name| {
+        name.starts_with("bouncelab-")
+    });
 }

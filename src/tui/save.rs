@@ -2,11 +2,11 @@
 //! `<name>.toml` in the user presets folder (`catalog::user_presets_dir()`).
 //!
 //! As with the export, `App::update` stays free of side effects: on Enter in the name prompt it
-//! checks the name ([`check_name`]) and builds a [`SaveRequest`] with the file's text
-//! ([`request`], pure); the event loop hands the request to [`write`], the only part that
-//! touches the file system, which answers with an action: saved, failed, or "that file
-//! exists" — then the explorer asks `overwrite <file>? y/n` and only `y` sends the request
-//! again, now allowed to replace that one file.
+//! checks the name ([`check_name`]), builds a [`SaveRequest`] with the file's text
+//! ([`request`], pure) and returns it as an effect; the event loop hands the request to
+//! [`write`], the only part that touches the file system, which answers with an action: saved,
+//! failed, or "that file exists" — then the explorer asks `overwrite <file>? y/n` and only `y`
+//! returns the request again, now allowed to replace that one file.
 //!
 //! What is saved: the preset's ball (mass, radius, material data) with the parameters the
 //! explorer runs on, written as the `[adopted]` set — K_r = λ K_p and c = √(m K_p)/(2ζ) with
@@ -15,10 +15,11 @@
 //! bit for bit.
 
 use super::action::Action;
-use super::app::{App, Setting};
 use super::export::{file_stem_part, short_dir};
 use super::format::sig_trim;
+use super::setting::Setting;
 use crate::catalog::{self, Catalog, Origin};
+use crate::model::contact::ContactLaw;
 use crate::preset::{Adopted, EMBEDDED, Measured, ParamSource, Preset};
 use std::io;
 use std::path::{Path, PathBuf};
@@ -95,39 +96,13 @@ pub fn preset_for(source: &Preset, setting: &Setting, name: &str) -> (Preset, Ve
     ]
     .iter()
     .any(Option::is_some);
-    let mut header = vec![
-        format!(
-            "Saved from the bouncelab explorer, from the preset '{}'.",
-            source.name
-        ),
-        format!(
-            "λ = {lambda}, ζ = {zeta}, v0 = {v0} m/s, {} law. [adopted] holds the K_r and c",
-            setting.law
-        ),
-        "that give this λ and ζ with the ball's own m and K_p.".into(),
-    ];
-    if source.parameters == ParamSource::Materials {
-        header.push(format!(
-            "'{}' ran on the set derived from its material data: that set is written as",
-            source.name
-        ));
-        header.push("[adopted] (K_h now follows Eq. 16 from K_p and z_p).".into());
-    }
     // A measurement belongs to the speed it was taken at: keep cor, max_force and contact_time
     // only at that speed (they are then still this ball's, whatever λ and ζ are now; the
     // explorer shows the difference). At another speed they would be shown, and read, as
     // measured at this one, so they are left out; mass and radius stay, they hold at any
     // speed.
-    if !same_speed && had_results {
-        header.push(format!(
-            "The measured COR, peak force and contact time of '{}' were taken at",
-            source.name
-        ));
-        header.push(format!(
-            "{} m/s, not at {v0} m/s: left out. [measured] v0 is the speed this preset runs at.",
-            sig_trim(measured_v0, 6)
-        ));
-    }
+    let left_out = !same_speed && had_results;
+    let header = header_lines(source, setting.law, [&lambda, &zeta, &v0], left_out);
     let keep = |x: Option<f64>| x.filter(|_| same_speed);
     let base = source
         .description
@@ -162,11 +137,49 @@ pub fn preset_for(source: &Preset, setting: &Setting, name: &str) -> (Preset, Ve
     (preset, header)
 }
 
-/// The save of the explorer's current setting as `name` (checked with [`check_name`] first):
-/// the file's text, checked to read back as a valid preset.
-pub fn request(app: &App, name: &str) -> Result<SaveRequest, String> {
+/// The comment lines at the top of a saved preset's file: where it came from, what
+/// [adopted] holds, and which measurements were `left_out` (taken at another speed).
+fn header_lines(
+    source: &Preset,
+    law: ContactLaw,
+    [lambda, zeta, v0]: [&str; 3],
+    left_out: bool,
+) -> Vec<String> {
+    let mut header = vec![
+        format!(
+            "Saved from the bouncelab explorer, from the preset '{}'.",
+            source.name
+        ),
+        format!(
+            "λ = {lambda}, ζ = {zeta}, v0 = {v0} m/s, {law} law. [adopted] holds the K_r and c"
+        ),
+        "that give this λ and ζ with the ball's own m and K_p.".into(),
+    ];
+    if source.parameters == ParamSource::Materials {
+        header.push(format!(
+            "'{}' ran on the set derived from its material data: that set is written as",
+            source.name
+        ));
+        header.push("[adopted] (K_h now follows Eq. 16 from K_p and z_p).".into());
+    }
+    if left_out {
+        header.push(format!(
+            "The measured COR, peak force and contact time of '{}' were taken at",
+            source.name
+        ));
+        header.push(format!(
+            "{} m/s, not at {v0} m/s: left out. [measured] v0 is the speed this preset runs at.",
+            sig_trim(source.measured.v0, 6)
+        ));
+    }
+    header
+}
+
+/// The save of `setting` (from the preset `source`) as `name` (checked with [`check_name`]
+/// first): the file's text, checked to read back as a valid preset.
+pub fn request(source: &Preset, setting: &Setting, name: &str) -> Result<SaveRequest, String> {
     check_name(name)?;
-    let (preset, header) = preset_for(app.preset(), app.setting(), name);
+    let (preset, header) = preset_for(source, setting, name);
     let text = preset.to_toml(&header);
     // the schema has no infinity or NaN: refuse here rather than write a file that breaks
     // the catalog

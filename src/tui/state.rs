@@ -1,37 +1,12 @@
 //! The pieces of the explorer's state: what the model runs on, the view, the overlays, the
-//! message line and the pinned ghost. [`super::app::App`] owns them and changes them.
+//! message line and the pinned ghost. The explorer's `App` owns them and changes them.
 
 use super::compute::{SpeedCurve, ZetaCurve};
 use super::param::Param;
 use super::save::SaveRequest;
-use crate::model::contact::ContactLaw;
-use crate::model::params::ImpactParams;
-use crate::preset::Preset;
+pub use super::setting::Setting;
+use crate::figure::explorer::Chart;
 use crate::solver::ImpactResponse;
-
-/// What the model runs on: the ball, its parameters (SI) and the contact law. The undo stack
-/// holds these.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Setting {
-    /// Index into the explorer's presets (`App::presets`).
-    pub preset: usize,
-    pub params: ImpactParams,
-    pub law: ContactLaw,
-}
-
-impl Setting {
-    pub(super) fn from_preset(index: usize, preset: &Preset) -> Setting {
-        Setting {
-            preset: index,
-            params: preset.params(),
-            law: preset.law,
-        }
-    }
-
-    pub fn get(&self, p: Param) -> f64 {
-        p.get(&self.params)
-    }
-}
 
 /// The pages `Tab` switches between.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -50,10 +25,18 @@ impl View {
         }
     }
 
-    pub(super) fn other(self) -> View {
+    pub fn other(self) -> View {
         match self {
             View::Impact => View::Sweeps,
             View::Sweeps => View::Impact,
+        }
+    }
+
+    /// The view's charts, in screen order (left to right, top to bottom).
+    pub fn charts(self) -> &'static [Chart] {
+        match self {
+            View::Impact => &[Chart::ForceTime, Chart::Hysteresis, Chart::CorZeta],
+            View::Sweeps => &[Chart::ForceZeta, Chart::CorSpeed],
         }
     }
 }

@@ -1,6 +1,7 @@
 //! Styles, with or without colour (NO_COLOR). Without colour, only modifiers (bold, dim,
 //! reversed) tell things apart.
 
+use crate::figure::Tone;
 use ratatui::style::{Color, Modifier, Style};
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -67,5 +68,18 @@ impl Theme {
     }
     pub fn error(&self) -> Style {
         self.fg(Color::Red).add_modifier(Modifier::BOLD)
+    }
+
+    /// The style of a figure's colour role.
+    pub fn tone(&self, tone: Tone) -> Style {
+        match tone {
+            Tone::Current => Style::default().fg(self.current()),
+            Tone::Secondary => Style::default().fg(self.secondary()),
+            Tone::Reference(i) => Style::default().fg(self.reference(i)),
+            Tone::Measured => self.measured(),
+            Tone::Ghost => self.ghost(),
+            Tone::Highlight => self.warning(),
+            Tone::Rule => self.axis(),
+        }
     }
 }

@@ -1,11 +1,17 @@
 //! Layout: header, charts, readout, status line, overlays — adapting to the terminal size.
-//! Drawing reads the state and never changes it.
+//! Drawing reads the state and never changes it: each panel gets the few things it shows,
+//! each chart its figure, built from the state's [`crate::figure::explorer::Scene`].
 
 use super::app::{App, Overlay, View};
+use super::theme::Theme;
+use super::widgets::confirm::ConfirmDialog;
+use super::widgets::help::Help;
+use super::widgets::input::InputDialog;
 use super::widgets::plot::Plot;
-use super::widgets::{
-    confirm, cor_speed, cor_zeta, force_time, force_zeta, help, hysteresis, input, readout, status,
-};
+use super::widgets::readout::{self, Readout};
+use super::widgets::status::{Header, KeyHints};
+pub use crate::figure::explorer::Chart;
+use crate::figure::{Figure, explorer};
 use ratatui::buffer::Buffer;
 use ratatui::layout::{Constraint, Layout, Rect};
 use ratatui::text::Line;
@@ -17,35 +23,9 @@ pub const MIN_HEIGHT: u16 = 16;
 /// From this width the readout is a panel beside the charts.
 const SIDE_PANEL_WIDTH: u16 = 80;
 
-/// The charts.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Chart {
-    ForceTime,
-    Hysteresis,
-    CorZeta,
-    ForceZeta,
-    CorSpeed,
-}
-
-impl Chart {
-    /// The chart's plot for the current state.
-    pub fn plot(self, app: &App) -> Plot {
-        match self {
-            Chart::ForceTime => force_time::plot(app),
-            Chart::Hysteresis => hysteresis::plot(app),
-            Chart::CorZeta => cor_zeta::plot(app),
-            Chart::ForceZeta => force_zeta::plot(app),
-            Chart::CorSpeed => cor_speed::plot(app),
-        }
-    }
-}
-
-/// The charts of a view, in screen order (left to right, top to bottom).
-pub fn charts(view: View) -> &'static [Chart] {
-    match view {
-        View::Impact => &[Chart::ForceTime, Chart::Hysteresis, Chart::CorZeta],
-        View::Sweeps => &[Chart::ForceZeta, Chart::CorSpeed],
-    }
+/// The figure a chart shows for the current state (the one `e` exports).
+pub fn figure(app: &App, chart: Chart) -> Figure {
+    explorer::figure(chart, &app.scene())
 }
 
 /// The pieces of a usable screen.
@@ -126,6 +106,38 @@ fn sweeps_grid(area: Rect) -> Vec<(Chart, Rect)> {
     vec![(Chart::ForceZeta, a), (Chart::CorSpeed, b)]
 }
 
+/// The readout's view of the state.
+fn readout(app: &App, tall: bool, theme: Theme) -> Readout<'_> {
+    let pinned = app
+        .ghost()
+        .map(|g| (&g.setting, app.presets()[g.setting.preset].name.as_str()));
+    Readout {
+        preset: app.preset(),
+        setting: app.setting(),
+        selected: app.selected(),
+        coarse: app.coarse(),
+        run: app.run(),
+        pinned,
+        tall,
+        theme,
+    }
+}
+
+/// The overlay on top of everything, if any.
+fn render_overlay(app: &App, theme: Theme, area: Rect, buf: &mut Buffer) {
+    match app.overlay() {
+        Overlay::None => {}
+        Overlay::Help => Help { theme }.render(area, buf),
+        Overlay::Input(input) => InputDialog {
+            input,
+            setting: app.setting(),
+            theme,
+        }
+        .render(area, buf),
+        Overlay::Confirm(confirm) => ConfirmDialog { confirm, theme }.render(area, buf),
+    }
+}
+
 impl Widget for &App {
     fn render(self, area: Rect, buf: &mut Buffer) {
         let area = area.intersection(buf.area);
@@ -136,21 +148,22 @@ impl Widget for &App {
                 .render(area, buf);
             return;
         };
-        status::render_header(self, s.header, buf);
-        status::render_status(self, s.status, buf);
-        if s.side_panel {
-            readout::render_panel(self, s.readout, buf);
-        } else {
-            readout::render_compact(self, s.readout, buf);
+        let theme = Theme::new(self.color());
+        Header {
+            ball: &self.preset().name,
+            law: self.setting().law,
+            view: self.view(),
+            message: self.message(),
+            theme,
         }
+        .render(s.header, buf);
+        KeyHints { theme }.render(s.status, buf);
+        readout(self, s.side_panel, theme).render(s.readout, buf);
+        let scene = self.scene();
         for (chart, rect) in &s.charts {
-            chart.plot(self).render(*rect, buf);
+            let fig = explorer::figure(*chart, &scene);
+            Plot::new(&fig, theme).render(*rect, buf);
         }
-        match self.overlay() {
-            Overlay::None => {}
-            Overlay::Help => help::render(self, area, buf),
-            Overlay::Input(i) => input::render(self, i, area, buf),
-            Overlay::Confirm(c) => confirm::render(self, c, area, buf),
-        }
+        render_overlay(self, theme, area, buf);
     }
 }

@@ -197,6 +197,12 @@ impl Explorer {
         }
     }
 
+    /// Send `sig` to the child, as `kill -SIG`.
+    pub fn signal(&self, sig: rustix::process::Signal) {
+        let pid = rustix::process::Pid::from_raw(self.child.id() as i32).expect("a pid");
+        rustix::process::kill_process(pid, sig).expect("signal the explorer");
+    }
+
     /// SIGKILL, as `kill -9`.
     pub fn kill(&mut self) {
         self.child.kill().expect("kill the explorer");
@@ -245,6 +251,29 @@ impl Drop for Explorer {
             let _ = self.child.wait();
         }
     }
+}
+
+/// What every exit must leave: the settings from before the start (`before`, as [`modes`]
+/// gives them), in cooked mode, the alternate screen left, the cursor shown after it was last
+/// hidden.
+pub fn assert_restored(before: &str, after: &Termios, out: &str) {
+    use rustix::termios::LocalModes;
+    let cooked = LocalModes::ICANON | LocalModes::ECHO;
+    assert!(
+        after.local_modes.contains(cooked),
+        "not back in cooked mode: {:?}",
+        after.local_modes
+    );
+    assert_eq!(modes(after), before, "the terminal's settings changed");
+    assert!(
+        out.contains(LEAVE_ALT_SCREEN),
+        "never left the alternate screen"
+    );
+    let hidden = out
+        .rfind(HIDE_CURSOR)
+        .expect("the explorer hides the cursor");
+    let shown = out.rfind(SHOW_CURSOR).expect("the cursor is shown again");
+    assert!(shown > hidden, "the cursor was last hidden, not shown");
 }
 
 /// The signal that ended the child, if one did.

@@ -5,11 +5,41 @@
 use bouncelab::ContactLaw;
 use bouncelab::preset::Preset;
 use bouncelab::tui::action::{self, Action};
-use bouncelab::tui::app::{App, Overlay, Severity};
+use bouncelab::tui::app::{App, Effect, Overlay, Severity};
 use bouncelab::tui::param::Param;
-use bouncelab::tui::save;
+use bouncelab::tui::save::{self, SaveRequest};
 use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
+use std::cell::RefCell;
 use std::path::{Path, PathBuf};
+
+thread_local! {
+    /// The effects `update` returned that the test has not carried out yet, as the event
+    /// loop holds them (each test runs on a thread of its own).
+    static PENDING: RefCell<Vec<Effect>> = const { RefCell::new(Vec::new()) };
+}
+
+/// `update`, keeping the effects it returns for [`perform`].
+pub fn update(app: &mut App, action: Action) {
+    let effects = app.update(action);
+    PENDING.with(|p| p.borrow_mut().extend(effects));
+}
+
+/// The save `update` asked for and the test has not carried out yet.
+pub fn save_request() -> Option<SaveRequest> {
+    PENDING.with(|p| {
+        p.borrow().iter().rev().find_map(|e| match e {
+            Effect::Save(r) => Some(r.clone()),
+            _ => None,
+        })
+    })
+}
+
+/// Take the pending save off the list, to carry it out.
+pub fn take_save() -> Option<SaveRequest> {
+    let request = save_request();
+    PENDING.with(|p| p.borrow_mut().retain(|e| !matches!(e, Effect::Save(_))));
+    request
+}
 
 pub fn superball() -> App {
     App::new(Preset::embedded().remove(0), true)
@@ -30,7 +60,7 @@ pub fn press(app: &mut App, keys: &str) {
             KeyModifiers::NONE
         };
         if let Some(a) = action::from_key(KeyEvent::new(code, m), app.mode()) {
-            app.update(a);
+            update(app, a);
         }
     }
 }
@@ -47,10 +77,13 @@ pub fn type_name(app: &mut App, name: &str) {
 
 /// What the event loop does with a pending save; returns the loop's answer.
 pub fn perform(app: &mut App, dir: &Path) -> Action {
-    let request = app.save_request().expect("a save is pending").clone();
+    let request = take_save().expect("a save is pending");
     let answer = save::write(&request, Some(dir));
-    app.update(answer.clone());
-    assert!(app.save_request().is_none(), "the answer clears it");
+    update(app, answer.clone());
+    assert!(
+        save_request().is_none(),
+        "the answer asks for no other save"
+    );
     answer
 }
 

@@ -1,9 +1,41 @@
 //! Which COR-vs-speed sweeps the state needs, and where a finished one goes.
 
-use super::{App, Setting};
+use super::{App, Effect, Setting, View};
 use crate::tui::compute::{SpeedCurve, SpeedRequest};
 
 impl App {
+    /// List the sweeps the sweeps view needs and does not have; run them here, or, with a
+    /// background worker, ask for them when the list changed.
+    pub(super) fn refresh_sweeps(&mut self) -> Option<Effect> {
+        self.speed_wanted.clear();
+        if self.view == View::Sweeps {
+            let (current, ghost) = self.speed_targets();
+            let stale = |have: Option<&SpeedCurve>, want: &SpeedRequest| {
+                have.is_none_or(|c| c.request != *want)
+            };
+            if stale(self.speed.as_ref(), &current) {
+                self.speed_wanted.push(current);
+            }
+            if let (Some(g), Some(want)) = (&self.ghost, ghost)
+                && stale(g.speed.as_ref(), &want)
+                && !self.speed_wanted.contains(&want)
+            {
+                self.speed_wanted.push(want);
+            }
+        }
+        if !self.background {
+            for request in std::mem::take(&mut self.speed_wanted) {
+                let result = request.run();
+                self.receive_speed(&request, result);
+            }
+            return None;
+        }
+        (self.speed_wanted != self.speed_asked).then(|| {
+            self.speed_asked = self.speed_wanted.clone();
+            Effect::Compute(self.speed_wanted.clone())
+        })
+    }
+
     /// The sweeps the current setting and the ghost need.
     pub(super) fn speed_targets(&self) -> (SpeedRequest, Option<SpeedRequest>) {
         let request =

@@ -1,15 +1,27 @@
 //! The question before a preset file is overwritten: `overwrite <file>? y/n`.
 
-use crate::tui::app::{App, Confirm};
 use crate::tui::save::{question, short_path};
+use crate::tui::state::Confirm;
 use crate::tui::theme::Theme;
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
 use ratatui::text::Line;
 use ratatui::widgets::{Block, Clear, Paragraph, Widget, Wrap};
 
-pub fn render(app: &App, confirm: &Confirm, area: Rect, buf: &mut Buffer) {
-    let theme = Theme::new(app.color());
+/// The question, centred on the area it is given.
+#[derive(Debug, Clone, Copy)]
+pub struct ConfirmDialog<'a> {
+    pub confirm: &'a Confirm,
+    pub theme: Theme,
+}
+
+impl Widget for &ConfirmDialog<'_> {
+    fn render(self, area: Rect, buf: &mut Buffer) {
+        render(self.confirm, &self.theme, area, buf);
+    }
+}
+
+fn render(confirm: &Confirm, theme: &Theme, area: Rect, buf: &mut Buffer) {
     let Some(path) = &confirm.request.replace else {
         return;
     };

@@ -1,6 +1,5 @@
 //! The help overlay (`?`): every key.
 
-use crate::tui::app::App;
 use crate::tui::theme::Theme;
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
@@ -37,8 +36,19 @@ pub const KEYS: [(&str, &str); 26] = [
     ("y / n or Esc", "replace the file / keep it"),
 ];
 
-pub fn render(app: &App, area: Rect, buf: &mut Buffer) {
-    let theme = Theme::new(app.color());
+/// The help overlay, centred on the area it is given.
+#[derive(Debug, Clone, Copy)]
+pub struct Help {
+    pub theme: Theme,
+}
+
+impl Widget for &Help {
+    fn render(self, area: Rect, buf: &mut Buffer) {
+        render(&self.theme, area, buf);
+    }
+}
+
+fn render(theme: &Theme, area: Rect, buf: &mut Buffer) {
     // section headings (rows without text) span the line: they do not widen the key column
     let key_w = KEYS
         .iter()

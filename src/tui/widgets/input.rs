@@ -1,20 +1,34 @@
 //! The text-entry dialog: an exact value (`=` or Enter), or the name to save a preset under
 //! (`s`).
 
-use crate::tui::app::{App, Input, Purpose};
 use crate::tui::format::sig_trim;
 use crate::tui::param::Param;
+use crate::tui::setting::Setting;
+use crate::tui::state::{Input, Purpose};
 use crate::tui::theme::Theme;
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
 use ratatui::text::{Line, Span};
 use ratatui::widgets::{Block, Clear, Paragraph, Widget};
 
-pub fn render(app: &App, input: &Input, area: Rect, buf: &mut Buffer) {
-    let theme = Theme::new(app.color());
+/// The entry dialog over the area it is given; `setting` is what the values are now.
+#[derive(Debug, Clone, Copy)]
+pub struct InputDialog<'a> {
+    pub input: &'a Input,
+    pub setting: &'a Setting,
+    pub theme: Theme,
+}
+
+impl Widget for &InputDialog<'_> {
+    fn render(self, area: Rect, buf: &mut Buffer) {
+        render(self.input, self.setting, &self.theme, area, buf);
+    }
+}
+
+fn render(input: &Input, s: &Setting, theme: &Theme, area: Rect, buf: &mut Buffer) {
     let (title, about, label, keys, width) = match input.purpose {
         Purpose::Value(p) => {
-            let current = sig_trim(app.setting().get(p), 6);
+            let current = sig_trim(s.get(p), 6);
             (
                 format!(" Set {} ", p.symbol()),
                 format!(" range {}, now {current}{}", p.range_text(), p.unit()),
@@ -24,7 +38,6 @@ pub fn render(app: &App, input: &Input, area: Rect, buf: &mut Buffer) {
             )
         }
         Purpose::PresetName => {
-            let s = app.setting();
             let v = |p: Param| sig_trim(s.get(p), 4);
             (
                 " Save as a user preset ".to_string(),

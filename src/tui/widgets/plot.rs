@@ -1,8 +1,11 @@
-//! A braille line plot on ratatui's Canvas with axes, ticks and labels we place ourselves, so a
-//! label sits over the column where the curve's dot for its value lands. Pinned (ghost) series
-//! are drawn dimmed behind the live ones.
+//! A figure ([`crate::figure::Figure`], the description the SVG export renders too) as a
+//! braille line plot on ratatui's Canvas, with axes, ticks and labels we place ourselves, so a
+//! label sits over the column where the curve's dot for its value lands. Pinned series are
+//! drawn dimmed behind the live ones; measured values and thresholds dotted; markers as text.
 
-use super::axis::{Axis, AxisSpec};
+use crate::figure::look::dotted;
+use crate::figure::ticks::{Room, ticks};
+use crate::figure::{Corner, Figure, Role, Sample, Series, Style as Stroke};
 use crate::tui::theme::Theme;
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
@@ -12,76 +15,18 @@ use ratatui::text::{Line, Span};
 use ratatui::widgets::canvas::{self, Canvas, Context};
 use ratatui::widgets::{Block, Widget};
 
-/// A curve in plot units (log10 on a decade axis).
+/// An axis ready to draw: bounds in plot units (log10 on a decade axis) and labelled ticks.
 #[derive(Debug, Clone, PartialEq)]
-pub struct Series {
-    pub points: Vec<(f64, f64)>,
-    pub color: Color,
-    /// Pinned: drawn dimmed, behind the live series.
-    pub ghost: bool,
+pub struct Axis {
+    pub bounds: [f64; 2],
+    /// (position in plot units, label)
+    pub ticks: Vec<(f64, String)>,
 }
 
-impl Series {
-    pub fn live(points: Vec<(f64, f64)>, color: Color) -> Series {
-        Series {
-            points,
-            color,
-            ghost: false,
-        }
-    }
-    pub fn ghost(points: Vec<(f64, f64)>) -> Series {
-        Series {
-            points,
-            color: Color::Reset,
-            ghost: true,
-        }
-    }
-}
-
-/// A dotted line across the whole plot: a measured value or a threshold.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Rule {
-    /// x of a vertical rule, y of a horizontal one (plot units).
-    pub at: f64,
-    pub vertical: bool,
-    pub color: Color,
-    /// Printed at the top of a vertical rule (right of it), at the left end of a horizontal one
-    /// (above it).
-    pub label: Option<String>,
-}
-
-/// Text at a point (its first character on the point's cell): markers and labels.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Mark {
-    pub x: f64,
-    pub y: f64,
-    pub text: String,
-    pub style: Style,
-}
-
-/// Where the legend goes inside the plot.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Corner {
-    TopLeft,
-    TopRight,
-    BottomLeft,
-    BottomRight,
-}
-
-/// A chart: a bordered block with a title, axes and series.
-#[derive(Debug, Clone)]
-pub struct Plot {
-    pub title: String,
-    /// For narrow charts.
-    pub short_title: String,
-    pub x: AxisSpec,
-    pub y: AxisSpec,
-    pub series: Vec<Series>,
-    /// Drawn under the live series.
-    pub rules: Vec<Rule>,
-    pub marks: Vec<Mark>,
-    pub legend: Vec<Line<'static>>,
-    pub legend_at: Corner,
+/// A figure drawn in a terminal.
+#[derive(Debug, Clone, Copy)]
+pub struct Plot<'a> {
+    pub figure: &'a Figure,
     pub theme: Theme,
 }
 
@@ -114,7 +59,20 @@ impl PlotLayout {
     }
 }
 
-impl Plot {
+impl<'a> Plot<'a> {
+    pub fn new(figure: &'a Figure, theme: Theme) -> Plot<'a> {
+        Plot { figure, theme }
+    }
+
+    /// The x (`x: true`) or y axis with room for about `labels` tick labels.
+    fn axis(&self, x: bool, labels: usize) -> Axis {
+        let t = ticks(self.figure, x, Room::Labels(labels));
+        Axis {
+            bounds: [t.lo, t.hi],
+            ticks: t.labels(),
+        }
+    }
+
     /// The layout for `area`, or `None` when there is no room for axes and a plot.
     pub fn layout(&self, area: Rect) -> Option<PlotLayout> {
         let inner = Block::bordered().inner(area);
@@ -122,7 +80,7 @@ impl Plot {
             return None;
         }
         let plot_h = inner.height - 2;
-        let y = self.y.build(usize::from(plot_h / 2).clamp(2, 11));
+        let y = self.axis(false, usize::from(plot_h / 2).clamp(2, 11));
         let gutter = y
             .ticks
             .iter()
@@ -134,7 +92,7 @@ impl Plot {
             return None;
         }
         let plot = Rect::new(inner.x + gutter, inner.y, inner.width - gutter, plot_h);
-        let x = self.x.build(usize::from(plot.width / 8).max(2));
+        let x = self.axis(true, usize::from(plot.width / 8).max(2));
         Some(PlotLayout { inner, plot, x, y })
     }
 
@@ -176,37 +134,60 @@ impl Plot {
         }
     }
 
-    /// The series of one kind (ghost or live; rules go with the live ones) on a scratch canvas.
+    /// A series' points in plot units; `None` where the axes cannot show one.
+    fn drawn(&self, s: &Series) -> Vec<Option<(f64, f64)>> {
+        let (fx, fy) = (&self.figure.x, &self.figure.y);
+        s.points
+            .iter()
+            .map(|&(x, y)| Some((fx.drawn(x)?, fy.drawn(y)?)))
+            .collect()
+    }
+
+    fn color(&self, s: &Series) -> Color {
+        self.theme.tone(s.look.tone).fg.unwrap_or_default()
+    }
+
+    /// The lines of one layer (pinned or live) on a scratch canvas: dotted ones (measured
+    /// values, thresholds) under solid ones.
     fn canvas(&self, l: &PlotLayout, ghost: bool) -> Buffer {
         let area = l.plot;
         let mut scratch = Buffer::empty(area);
         let ([x0, x1], [y0, y1]) = (l.x.bounds, l.y.bounds);
-        // every third braille dot
-        let n = usize::from(area.width.max(area.height)) * 4 / 3 + 1;
+        // a dot every third braille dot along the plot's longer side
+        let n = (usize::from(area.width.max(area.height)) * 4 / 3 + 1) as f64;
+        let lines: Vec<&Series> = self
+            .figure
+            .series
+            .iter()
+            .filter(|s| !matches!(s.style, Stroke::Markers(_)))
+            .filter(|s| (s.kind == Role::Pinned) == ghost)
+            .collect();
         let paint = |ctx: &mut Context| {
-            if !ghost {
-                for r in &self.rules {
-                    let coords: Vec<(f64, f64)> = (0..=n)
-                        .map(|i| {
-                            let t = i as f64 / n as f64;
-                            if r.vertical {
-                                (r.at, y0 + t * (y1 - y0))
-                            } else {
-                                (x0 + t * (x1 - x0), r.at)
-                            }
-                        })
-                        .collect();
-                    ctx.draw(&canvas::Points {
-                        coords: &coords,
-                        color: r.color,
-                    });
-                }
-            }
-            for s in self.series.iter().filter(|s| s.ghost == ghost) {
-                for w in s.points.windows(2) {
-                    let (a, b) = (w[0], w[1]);
-                    if [a.0, a.1, b.0, b.1].iter().all(|v| v.is_finite()) {
-                        ctx.draw(&canvas::Line::new(a.0, a.1, b.0, b.1, s.color));
+            for pass_dotted in [true, false] {
+                for s in lines.iter().filter(|s| dotted(s) == pass_dotted) {
+                    let color = self.color(s);
+                    for w in self.drawn(s).windows(2) {
+                        let (Some(a), Some(b)) = (w[0], w[1]) else {
+                            continue;
+                        };
+                        if !pass_dotted {
+                            ctx.draw(&canvas::Line::new(a.0, a.1, b.0, b.1, color));
+                            continue;
+                        }
+                        let span = ((b.0 - a.0) / (x1 - x0))
+                            .abs()
+                            .max(((b.1 - a.1) / (y1 - y0)).abs());
+                        let k = (n * span).ceil().max(1.0) as usize;
+                        let coords: Vec<(f64, f64)> = (0..=k)
+                            .map(|i| {
+                                let t = i as f64 / k as f64;
+                                (a.0 + t * (b.0 - a.0), a.1 + t * (b.1 - a.1))
+                            })
+                            .collect();
+                        ctx.draw(&canvas::Points {
+                            coords: &coords,
+                            color,
+                        });
                     }
                 }
             }
@@ -223,9 +204,10 @@ impl Plot {
     fn draw_series(&self, l: &PlotLayout, buf: &mut Buffer) {
         let live = self.canvas(l, false);
         let ghost = self
+            .figure
             .series
             .iter()
-            .any(|s| s.ghost)
+            .any(|s| s.kind == Role::Pinned)
             .then(|| self.canvas(l, true));
         let ghost_style = self.theme.ghost();
         for pos in l.plot.positions() {
@@ -240,52 +222,89 @@ impl Plot {
         }
     }
 
-    /// Rule labels, then marks; a mark whose cell another mark took moves right, so both show.
+    /// Line tags (a threshold's name, right of its last point), then markers; a marker whose
+    /// cell another took moves right, so both show.
     fn draw_marks(&self, l: &PlotLayout, buf: &mut Buffer) {
-        for r in &self.rules {
-            let Some(text) = &r.label else { continue };
-            let at = if r.vertical {
-                l.col(r.at).map(|c| (c + 1, l.plot.y))
-            } else {
-                l.row(r.at)
-                    .map(|row| (l.plot.x + 1, row.saturating_sub(1).max(l.plot.y)))
+        let cell = |p: Option<(f64, f64)>| Some((l.col(p?.0)?, l.row(p?.1)?));
+        for s in &self.figure.series {
+            let (Stroke::Solid | Stroke::Dashed | Stroke::Dotted, Some(tag)) =
+                (s.style, &s.look.text)
+            else {
+                continue;
             };
-            if let Some((col, row)) = at
-                && col < l.plot.right()
+            let top = self
+                .drawn(s)
+                .into_iter()
+                .flatten()
+                .max_by(|a, b| a.1.total_cmp(&b.1));
+            if let Some((col, row)) = cell(top)
+                && col + 1 < l.plot.right()
             {
-                let room = usize::from(l.plot.right() - col);
-                buf.set_stringn(col, row, text, room, Style::default().fg(r.color));
+                let room = usize::from(l.plot.right() - col - 1);
+                let style = Style::default().fg(self.color(s));
+                buf.set_stringn(col + 1, row, tag, room, style);
             }
         }
         let mut taken: Vec<(u16, u16)> = Vec::new();
-        for m in &self.marks {
-            if let (Some(mut col), Some(row)) = (l.col(m.x), l.row(m.y)) {
+        for s in &self.figure.series {
+            let Stroke::Markers(_) = s.style else {
+                continue;
+            };
+            let text = s.look.text.as_deref().unwrap_or("●");
+            for p in self.drawn(s) {
+                let Some((mut col, row)) = cell(p) else {
+                    continue;
+                };
                 while taken.contains(&(col, row)) && col + 1 < l.plot.right() {
                     col += 1;
                 }
                 let room = usize::from(l.plot.right() - col);
-                let (end, _) = buf.set_stringn(col, row, &m.text, room, m.style);
+                let style = self.theme.tone(s.look.tone);
+                let (end, _) = buf.set_stringn(col, row, text, room, style);
                 taken.extend((col..end).map(|c| (c, row)));
             }
         }
     }
 
+    /// The figure's legend, a line an entry.
+    fn legend_lines(&self) -> Vec<Line<'static>> {
+        self.figure
+            .legend()
+            .into_iter()
+            .map(|e| {
+                let style = self.theme.tone(e.tone);
+                let sample = match e.sample {
+                    Sample::Line => "━".to_string(),
+                    Sample::Dotted => "┄".to_string(),
+                    Sample::Marks(texts) => texts.join(" "),
+                };
+                Line::from(vec![
+                    Span::styled(sample, style),
+                    Span::raw(" "),
+                    Span::raw(e.key),
+                ])
+            })
+            .collect()
+    }
+
     /// The legend in its corner, one entry a line; on one line when that does not fit; not at
     /// all when neither does.
     fn draw_legend(&self, l: &PlotLayout, buf: &mut Buffer) {
+        let legend = self.legend_lines();
         let p = l.plot;
-        let top = matches!(self.legend_at, Corner::TopLeft | Corner::TopRight);
-        let left = matches!(self.legend_at, Corner::TopLeft | Corner::BottomLeft);
+        let corner = self.figure.legend_corner;
+        let top = matches!(corner, Corner::TopLeft | Corner::TopRight);
+        let left = matches!(corner, Corner::TopLeft | Corner::BottomLeft);
         // bottom legends keep clear of the lowest row, where curves often run along zero
         let room = p.height.saturating_sub(if top { 1 } else { 2 });
-        let width = self.legend.iter().map(Line::width).max().unwrap_or(0) as u16;
+        let width = legend.iter().map(Line::width).max().unwrap_or(0) as u16;
         // a legend may take half the plot's rows and half its width
         let fits = |rows: u16, w: u16| rows <= room && 2 * rows <= p.height && 2 * w <= p.width;
-        let lines = if fits(self.legend.len() as u16, width) {
-            self.legend.clone()
+        let lines = if fits(legend.len() as u16, width) {
+            legend
         } else {
             let mut spans = Vec::new();
-            for (i, line) in self.legend.iter().enumerate() {
+            for (i, line) in legend.iter().enumerate() {
                 if i > 0 {
                     spans.push(Span::raw("  "));
                 }
@@ -318,13 +337,13 @@ impl Plot {
     }
 }
 
-impl Widget for &Plot {
+impl Widget for &Plot<'_> {
     fn render(self, area: Rect, buf: &mut Buffer) {
         let area = area.intersection(buf.area);
         Block::bordered()
             .border_style(self.theme.dim())
             .title(Line::styled(
-                format!(" {} ", self.title),
+                format!(" {} ", self.figure.screen_title),
                 self.theme.title(),
             ))
             .render(area, buf);

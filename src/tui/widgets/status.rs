@@ -1,6 +1,7 @@
 //! The header (ball, law, view, the last message) and the status line of key hints.
 
-use crate::tui::app::{App, Severity};
+use crate::model::contact::ContactLaw;
+use crate::tui::state::{Message, Severity, View};
 use crate::tui::theme::Theme;
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
@@ -29,36 +30,62 @@ const HINTS: [(&str, &str, u8); 17] = [
     ("q", "quit", 0),
 ];
 
-pub fn render_header(app: &App, area: Rect, buf: &mut Buffer) {
-    let theme = Theme::new(app.color());
-    let s = app.setting();
-    let left = Line::from(vec![
-        Span::styled(" bouncelab ", theme.title()),
-        Span::raw(format!(
-            "· {} · {} law · view {}",
-            app.preset().name,
-            s.law,
-            app.view().title()
-        )),
-    ]);
-    left.render(area, buf);
-    if let Some(m) = app.message() {
-        let style = match m.severity {
-            Severity::Info => theme.info(),
-            Severity::Warning => theme.warning(),
-            Severity::Error => theme.error(),
-        };
-        let text = format!(" {} ", m.text);
-        let w = (text.chars().count() as u16).min(area.width);
-        let x = area.right() - w;
-        let room = usize::from(w);
-        // the message wins over the left part when they meet
-        buf.set_stringn(x, area.y, text, room, style);
+/// The header line: ball, law, view, and the last message on the right.
+#[derive(Debug, Clone, Copy)]
+pub struct Header<'a> {
+    pub ball: &'a str,
+    pub law: ContactLaw,
+    pub view: View,
+    pub message: Option<&'a Message>,
+    pub theme: Theme,
+}
+
+impl Widget for &Header<'_> {
+    fn render(self, area: Rect, buf: &mut Buffer) {
+        let theme = self.theme;
+        let left = Line::from(vec![
+            Span::styled(" bouncelab ", theme.title()),
+            Span::raw(format!(
+                "· {} · {} law · view {}",
+                self.ball,
+                self.law,
+                self.view.title()
+            )),
+        ]);
+        left.render(area, buf);
+        if let Some(m) = self.message {
+            message(m, &theme, area, buf);
+        }
     }
 }
 
-pub fn render_status(app: &App, area: Rect, buf: &mut Buffer) {
-    let theme = Theme::new(app.color());
+/// The message, right-aligned; it wins over the left part when they meet.
+fn message(m: &Message, theme: &Theme, area: Rect, buf: &mut Buffer) {
+    let style = match m.severity {
+        Severity::Info => theme.info(),
+        Severity::Warning => theme.warning(),
+        Severity::Error => theme.error(),
+    };
+    let text = format!(" {} ", m.text);
+    let w = (text.chars().count() as u16).min(area.width);
+    let x = area.right() - w;
+    let room = usize::from(w);
+    buf.set_stringn(x, area.y, text, room, style);
+}
+
+/// The status line of key hints, as many as fit.
+#[derive(Debug, Clone, Copy)]
+pub struct KeyHints {
+    pub theme: Theme,
+}
+
+impl Widget for &KeyHints {
+    fn render(self, area: Rect, buf: &mut Buffer) {
+        hints(&self.theme, area, buf);
+    }
+}
+
+fn hints(theme: &Theme, area: Rect, buf: &mut Buffer) {
     let width = |h: &(&str, &str, u8)| h.0.chars().count() + h.1.chars().count() + 3;
     let mut budget = usize::from(area.width);
     let mut keep = [false; HINTS.len()];

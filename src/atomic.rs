@@ -1,0 +1,387 @@
+//! Writing a command's output files all or nothing.
+//!
+//! [`Outputs`] stages each file as a temporary file in the folder of its target (so the last
+//! step is a rename within one file system), named `.<name>.<pid>-<random>.tmp`, written,
+//! then synced; [`Outputs::commit`] renames them all into place once every one is staged,
+//! then syncs the folders. What holds:
+//!
+//! - an existing file is replaced only by a complete new one (rename is atomic on POSIX): a
+//!   full disk or a kill mid-write leaves the old file as it was
+//!   (tests/cli_guarantees.rs, `a_full_disk_leaves_the_old_figure_untouched`);
+//! - a command that fails while staging leaves no new file and no temporary one: dropping
+//!   [`Outputs`] removes its temporaries (`a_failure_leaves_no_new_file_and_a_rerun_is_not_refused`, and the unit tests
+//!   below);
+//! - without `force` a target that exists is never replaced, not even one that appears while
+//!   the command runs (`persist_noclobber`); if one does, the files this commit had already
+//!   published are removed again;
+//! - a temporary left by a killed process (kill -9 runs no destructor) is removed by the next
+//!   writer of the same target, or by [`remove_stale`] at the explorer's start, once its
+//!   process is gone (`stale_temporaries_of_dead_processes_are_removed`);
+//! - a rename that fails after others succeeded (no cause is known short of a failing disk)
+//!   undoes them: new files are removed, replaced ones put back from a hard link taken before
+//!   the first rename (`a_failed_rename_puts_the_replaced_files_back`). Only on a file system
+//!   without hard links does a replaced file stay replaced then.
+
+use std::ffi::OsStr;
+use std::fs;
+use std::io::{self, Write};
+use std::path::{Path, PathBuf};
+use tempfile::NamedTempFile;
+
+/// Files staged for one command.
+pub struct Outputs {
+    force: bool,
+    staged: Vec<(PathBuf, NamedTempFile)>,
+}
+
+/// A failure, with the file it concerns.
+#[derive(Debug)]
+pub struct OutputError {
+    pub path: PathBuf,
+    pub error: io::Error,
+    /// Without `force`, the target existed (or appeared meanwhile).
+    pub exists: bool,
+}
+
+impl std::fmt::Display for OutputError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        if self.exists {
+            write!(
+                f,
+                "{} exists (use --force to overwrite it)",
+                self.path.display()
+            )
+        } else {
+            // the cause follows as the error's source ("cannot write a.svg: No space left …")
+            write!(f, "cannot write {}", self.path.display())
+        }
+    }
+}
+
+impl std::error::Error for OutputError {
+    fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
+        Some(&self.error)
+    }
+}
+
+fn folder(path: &Path) -> &Path {
+    match path.parent() {
+        Some(d) if !d.as_os_str().is_empty() => d,
+        _ => Path::new("."),
+    }
+}
+
+impl Outputs {
+    /// `force`: replace existing targets; otherwise refuse them.
+    pub fn new(force: bool) -> Self {
+        Outputs {
+            force,
+            staged: Vec::new(),
+        }
+    }
+
+    /// Stage `text` for `path`, with control characters made visible ([`crate::sanitize::text`]).
+    pub fn text(&mut self, path: &Path, text: &str) -> Result<(), OutputError> {
+        let clean = crate::sanitize::text(text);
+        self.bytes(path, clean.as_bytes())
+    }
+
+    /// Stage `bytes` for `path`: written to a temporary file beside it and synced.
+    pub fn bytes(&mut self, path: &Path, bytes: &[u8]) -> Result<(), OutputError> {
+        let fail = |error| OutputError {
+            path: path.to_path_buf(),
+            error,
+            exists: false,
+        };
+        let dir = folder(path);
+        let name = path.file_name().unwrap_or(OsStr::new("output"));
+        remove_stale_of(dir, name);
+        let prefix = format!(".{}.{}-", name.to_string_lossy(), std::process::id());
+        let mut builder = tempfile::Builder::new();
+        builder.prefix(&prefix).suffix(".tmp").rand_bytes(8);
+        if let Some(mode) = mode_for(path) {
+            builder.permissions(mode);
+        }
+        let mut tmp = builder
+            .tempfile_in(dir)
+            // tempfile names its temporary in the message: the user knows only `path`
+            .map_err(|e| fail(io::Error::new(e.kind(), without_path(&e))))?;
+        let file = tmp.as_file_mut();
+        file.write_all(bytes)
+            .and_then(|()| file.sync_all())
+            .map_err(fail)?;
+        self.staged.push((path.to_path_buf(), tmp));
+        Ok(())
+    }
+
+    /// Rename every staged file into place, in staging order; returns the targets. If one
+    /// rename fails, those before it are undone: new files removed, replaced ones put back
+    /// from a hard link taken before the first rename (where the file system has links).
+    pub fn commit(self) -> Result<Vec<PathBuf>, OutputError> {
+        // (without `force` every target is new: nothing to back up)
+        let existed: Vec<bool> = self
+            .staged
+            .iter()
+            .map(|(path, _)| self.force && fs::symlink_metadata(path).is_ok())
+            .collect();
+        let backups: Vec<Option<PathBuf>> = self
+            .staged
+            .iter()
+            .zip(&existed)
+            .map(|((path, _), &old)| if old { backup(path) } else { None })
+            .collect();
+        let mut published: Vec<PathBuf> = Vec::new();
+        for (path, tmp) in self.staged {
+            let result = if self.force {
+                tmp.persist(&path).map(drop)
+            } else {
+                tmp.persist_noclobber(&path).map(drop)
+            };
+            if let Err(e) = result {
+                // dropping `e` removes the temporary file; the remaining ones go with `staged`
+                let exists = !self.force && e.error.kind() == io::ErrorKind::AlreadyExists;
+                for ((p, b), &old) in published.iter().zip(&backups).zip(&existed) {
+                    let _ = match b {
+                        Some(b) => fs::rename(b, p),
+                        None if !old => fs::remove_file(p),
+                        // replaced, with no link to put back (a file system without links)
+                        None => Ok(()),
+                    };
+                }
+                remove_all(&backups);
+                return Err(OutputError {
+                    path,
+                    error: e.error,
+                    exists,
+                });
+            }
+            published.push(path);
+        }
+        remove_all(&backups);
+        for dir in published.iter().map(|p| folder(p)) {
+            sync_dir(dir);
+        }
+        Ok(published)
+    }
+}
+
+/// A second name for the file at `path` (`.NAME.PID-bakN.tmp`, beside it), to put it back if
+/// the commit fails; `None` when there is no file or no hard link can be made.
+fn backup(path: &Path) -> Option<PathBuf> {
+    static N: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
+    if !fs::symlink_metadata(path).is_ok_and(|m| m.is_file()) {
+        return None;
+    }
+    let name = path.file_name()?.to_string_lossy().into_owned();
+    for _ in 0..8 {
+        let n = N.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+        let b = folder(path).join(format!(".{name}.{}-bak{n}.tmp", std::process::id()));
+        match fs::hard_link(path, &b) {
+            Ok(()) => return Some(b),
+            Err(e) if e.kind() == io::ErrorKind::AlreadyExists => continue,
+            Err(_) => return None,
+        }
+    }
+    None
+}
+
+fn remove_all(backups: &[Option<PathBuf>]) {
+    for b in backups.iter().flatten() {
+        let _ = fs::remove_file(b);
+    }
+}
+
+/// The mode of a new file: the replaced file's, else what a plain create gives (0666 less
+/// the umask; tempfile's own default, 0600, would hide a figure from the user's group).
+fn mode_for(path: &Path) -> Option<fs::Permissions> {
+    match fs::metadata(path) {
+        Ok(m) if m.is_file() => Some(m.permissions()),
+        #[cfg(unix)]
+        _ => Some(std::os::unix::fs::PermissionsExt::from_mode(0o666)),
+        #[cfg(not(unix))]
+        _ => None,
+    }
+}
+
+/// An I/O error's text without tempfile's "at path …" tail.
+fn without_path(e: &io::Error) -> String {
+    let s = e.to_string();
+    s.split(" at path ").next().unwrap_or(&s).to_string()
+}
+
+/// Make the new names durable; a file system that cannot sync a folder is not an error (the
+/// files themselves are synced).
+fn sync_dir(dir: &Path) {
+    #[cfg(unix)]
+    let _ = fs::File::open(dir).and_then(|d| d.sync_all());
+    #[cfg(not(unix))]
+    let _ = dir;
+}
+
+/// Remove, in `dir`, the temporaries of this program's writers (`.NAME.PID-X.tmp`, the names
+/// [`Outputs`] and `catalog::write` use) whose process is gone and whose target NAME passes
+/// `ours`. Best effort: what cannot be read or removed is left.
+pub fn remove_stale(dir: &Path, ours: impl Fn(&str) -> bool) {
+    let Ok(entries) = fs::read_dir(dir) else {
+        return;
+    };
+    for e in entries.flatten() {
+        let file = e.file_name();
+        let Some((target, pid)) = file.to_str().and_then(parse_temp_name) else {
+            continue;
+        };
+        let is_file = e.file_type().is_ok_and(|t| t.is_file());
+        if ours(target) && is_file && pid != std::process::id() && process_gone(pid) {
+            let _ = fs::remove_file(e.path());
+        }
+    }
+}
+
+/// As [`remove_stale`], for the temporaries of target `name`.
+fn remove_stale_of(dir: &Path, name: &OsStr) {
+    remove_stale(dir, |target| name.to_str() == Some(target));
+}
+
+/// `.NAME.PID-X.tmp` → (NAME, PID), with X letters and digits.
+fn parse_temp_name(file: &str) -> Option<(&str, u32)> {
+    let inner = file.strip_prefix('.')?.strip_suffix(".tmp")?;
+    let (target, tail) = inner.rsplit_once('.')?;
+    let (pid, tag) = tail.split_once('-')?;
+    let ok = !target.is_empty()
+        && !tag.is_empty()
+        && tag.chars().all(|c| c.is_ascii_alphanumeric())
+        && pid.chars().all(|c| c.is_ascii_digit());
+    Some((target, pid.parse().ok()?)).filter(|_| ok)
+}
+
+/// Whether no process has this id. Only where `/proc` tells (Linux); elsewhere a temporary
+/// is never taken for stale.
+fn process_gone(pid: u32) -> bool {
+    let proc = Path::new("/proc");
+    proc.join("self").exists() && !proc.join(pid.to_string()).exists()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn entries(dir: &Path) -> Vec<String> {
+        let mut v: Vec<String> = fs::read_dir(dir)
+            .unwrap()
+            .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+            .collect();
+        v.sort();
+        v
+    }
+
+    #[test]
+    fn nothing_is_published_before_commit_and_a_drop_removes_the_temporaries() {
+        let dir = tempfile::tempdir().unwrap();
+        let (a, b) = (dir.path().join("a.svg"), dir.path().join("b.csv"));
+        fs::write(&a, "old").unwrap();
+        let mut out = Outputs::new(true);
+        out.text(&a, "new a").unwrap();
+        out.text(&b, "new b").unwrap();
+        assert_eq!(fs::read_to_string(&a).unwrap(), "old");
+        assert!(!b.exists());
+        drop(out);
+        assert_eq!(entries(dir.path()), ["a.svg"]);
+        assert_eq!(fs::read_to_string(&a).unwrap(), "old");
+    }
+
+    #[test]
+    fn a_failed_stage_leaves_no_file() {
+        let dir = tempfile::tempdir().unwrap();
+        let mut out = Outputs::new(false);
+        out.text(&dir.path().join("a.svg"), "a").unwrap();
+        let e = out
+            .text(&dir.path().join("missing/b.csv"), "b")
+            .unwrap_err();
+        assert!(e.to_string().ends_with("missing/b.csv"), "{e}");
+        drop(out); // the command returns its error
+        assert!(entries(dir.path()).is_empty());
+    }
+
+    #[test]
+    fn commit_replaces_with_force_and_refuses_without() {
+        let dir = tempfile::tempdir().unwrap();
+        let (a, b) = (dir.path().join("a.svg"), dir.path().join("b.csv"));
+        let mut out = Outputs::new(false);
+        out.text(&a, "a1\u{1b}[2J").unwrap();
+        out.text(&b, "b1").unwrap();
+        assert_eq!(out.commit().unwrap(), [a.clone(), b.clone()]);
+        assert_eq!(fs::read_to_string(&a).unwrap(), "a1\\u{1b}[2J");
+        // b appears between staging and commit: neither file is published
+        fs::remove_file(&b).unwrap();
+        fs::remove_file(&a).unwrap();
+        let mut out = Outputs::new(false);
+        out.text(&a, "a2").unwrap();
+        out.text(&b, "b2").unwrap();
+        fs::write(&b, "someone else's").unwrap();
+        let e = out.commit().unwrap_err();
+        assert!(e.exists && e.path == b, "{e}");
+        assert_eq!(entries(dir.path()), ["b.csv"]);
+        let mut out = Outputs::new(true);
+        out.text(&b, "b3").unwrap();
+        out.commit().unwrap();
+        assert_eq!(fs::read_to_string(&b).unwrap(), "b3");
+        assert_eq!(entries(dir.path()), ["b.csv"]);
+    }
+
+    #[test]
+    fn a_failed_rename_puts_the_replaced_files_back() {
+        let dir = tempfile::tempdir().unwrap();
+        let (a, b) = (dir.path().join("a.svg"), dir.path().join("b.csv"));
+        fs::write(&a, "old").unwrap();
+        // a rename over a folder that holds something fails
+        fs::create_dir(&b).unwrap();
+        fs::write(b.join("inside"), "x").unwrap();
+        let mut out = Outputs::new(true);
+        out.text(&a, "new").unwrap();
+        out.text(&b, "new").unwrap();
+        let e = out.commit().unwrap_err();
+        assert_eq!(e.path, b);
+        assert_eq!(fs::read_to_string(&a).unwrap(), "old", "a.svg is put back");
+        assert_eq!(
+            entries(dir.path()),
+            ["a.svg", "b.csv"],
+            "no temporary, no backup"
+        );
+    }
+
+    #[test]
+    fn stale_temporaries_of_dead_processes_are_removed() {
+        let dir = tempfile::tempdir().unwrap();
+        // a process that has exited: its id is free (until reused, which this test's
+        // few milliseconds do not reach)
+        let mut child = std::process::Command::new("true").spawn().unwrap();
+        let dead = child.id();
+        child.wait().unwrap();
+        let mine = std::process::id();
+        let names = [
+            format!(".golf2.toml.{dead}-1700000000.tmp"), // catalog::write's name
+            format!(".a.svg.{dead}-Ab3dE5f7.tmp"),
+            format!(".a.svg.{mine}-Ab3dE5f7.tmp"), // a live process's: kept
+            format!(".a.svg.{dead}.tmp"),          // not our pattern: kept
+            "notes.tmp".to_string(),
+        ];
+        for n in &names {
+            fs::write(dir.path().join(n), "x").unwrap();
+        }
+        remove_stale(dir.path(), |_| true);
+        let mut kept = names[2..].to_vec();
+        kept.sort();
+        assert_eq!(entries(dir.path()), kept);
+    }
+
+    #[test]
+    fn temp_names_parse() {
+        assert_eq!(
+            parse_temp_name(".a.b.svg.12-xY9.tmp"),
+            Some(("a.b.svg", 12))
+        );
+        assert_eq!(parse_temp_name(".a.svg.12-.tmp"), None);
+        assert_eq!(parse_temp_name("a.svg.12-x.tmp"), None);
+        assert_eq!(parse_temp_name(".a.svg.1x-y.tmp"), None);
+    }
+}

@@ -1,0 +1,247 @@
+//! `bouncelab drop`: a ball released from rest bounces on a rigid plate (docs/drop.md), as a
+//! text table, one JSON object, or the trajectory as CSV; with `--standard`, the verdict.
+
+use super::ball::{self, BallArgs};
+use super::output::{self, csv_row, given, human, num, table};
+use crate::drop::standards::{self, Reference, Standard, Test, Verdict};
+use crate::drop::{
+    Air, DEFAULT_BOUNCES, DEFAULT_MIN_REBOUND, DropBall, DropError, DropRun, DropSetup, End, G,
+};
+use clap::{Args, ValueEnum};
+use serde::Serialize;
+use std::io::Write;
+
+/// Release height without a standard (m).
+pub const DEFAULT_HEIGHT: f64 = 1.0;
+/// Time step of the CSV trajectory within each flight (s).
+pub const CSV_STEP: f64 = 1e-3;
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum DropFormat {
+    Text,
+    Json,
+    Csv,
+}
+
+#[derive(Debug, Clone, Args)]
+pub struct DropArgs {
+    #[command(flatten)]
+    pub ball: BallArgs,
+    /// Release height H of the bottom of the ball (m) [default: the standard's, else 1]
+    #[arg(long, value_name = "H")]
+    pub height: Option<f64>,
+    /// Stop after this many bounces (1 … 1000)
+    #[arg(long, value_name = "N", default_value_t = DEFAULT_BOUNCES)]
+    pub bounces: usize,
+    /// Stop after a rebound lower than this (m)
+    #[arg(long, value_name = "H", default_value_t = DEFAULT_MIN_REBOUND)]
+    pub min_rebound: f64,
+    /// Fall in vacuum: no air drag
+    #[arg(long, conflicts_with_all = ["drag_coefficient", "air_density"])]
+    pub no_drag: bool,
+    /// Drag coefficient C_d of quadratic drag ½ρC_dAv² [default: 0.47, a sphere]
+    #[arg(long, value_name = "CD")]
+    pub drag_coefficient: Option<f64>,
+    /// Air density ρ (kg/m³) [default: 1.204, 20 °C at sea level]
+    #[arg(long, value_name = "RHO")]
+    pub air_density: Option<f64>,
+    /// Judge the ball against a standard (`bouncelab standards` lists them)
+    #[arg(long, value_name = "NAME")]
+    pub standard: Option<String>,
+    /// Output format (csv: the trajectory t, height, velocity)
+    #[arg(long, value_enum, default_value = "text")]
+    pub format: DropFormat,
+}
+
+/// A drop error for the user: bad conditions are bad input (exit 2); an impact without an
+/// answer is not the user's fault (exit 1).
+fn drop_error(e: DropError) -> anyhow::Error {
+    match e {
+        DropError::Solve(s) => ball::solve_error(s),
+        e => anyhow::anyhow!(e.to_string()),
+    }
+}
+
+pub fn run(a: &DropArgs, out: &mut dyn Write) -> anyhow::Result<()> {
+    let standard = a
+        .standard
+        .as_deref()
+        .map(standards::find)
+        .transpose()
+        .map_err(|e| anyhow::anyhow!(e))?;
+    let b = a.ball.resolve(None)?;
+    let radius = b.measured.as_ref().map_or(f64::NAN, |m| m.radius);
+    let dball = DropBall {
+        params: b.params,
+        law: b.law,
+        radius,
+    };
+    let air = (!a.no_drag).then(|| Air {
+        density: a.air_density.unwrap_or(Air::default().density),
+        drag_coefficient: a
+            .drag_coefficient
+            .unwrap_or(Air::default().drag_coefficient),
+    });
+    let height = a
+        .height
+        .or_else(|| standard.and_then(|s| s.release_height(radius)))
+        .unwrap_or(DEFAULT_HEIGHT);
+    let setup = DropSetup {
+        height,
+        air,
+        bounces: a.bounces,
+        min_rebound: a.min_rebound,
+    };
+    let run = crate::drop::drop(&dball, &setup).map_err(drop_error)?;
+    let verdict = standard
+        .map(|s| s.judge(&dball, air))
+        .transpose()
+        .map_err(drop_error)?;
+    match a.format {
+        DropFormat::Json => output::json(out, &report(&run, verdict.as_ref()))?,
+        DropFormat::Csv => trajectory_csv(out, &run)?,
+        DropFormat::Text => text(out, &b.label(), &run, standard.zip(verdict), radius)?,
+    }
+    Ok(())
+}
+
+#[derive(Serialize)]
+struct StandardJson {
+    name: &'static str,
+    window: [Option<f64>; 2],
+    measured: f64,
+    verdict: &'static str,
+    margin: f64,
+}
+
+/// The JSON document of the issue, SI: `standard` only with `--standard`.
+#[derive(Serialize)]
+struct Report<'a> {
+    height: f64,
+    drag: bool,
+    bounces: &'a [crate::drop::Bounce],
+    #[serde(skip_serializing_if = "Option::is_none")]
+    standard: Option<StandardJson>,
+}
+
+fn report<'a>(run: &'a DropRun, v: Option<&Verdict>) -> Report<'a> {
+    Report {
+        height: run.setup.height,
+        drag: run.drag(),
+        bounces: &run.bounces,
+        standard: v.map(|v| StandardJson {
+            name: v.name,
+            window: v.window,
+            measured: v.measured,
+            verdict: if v.pass { "pass" } else { "fail" },
+            margin: v.margin,
+        }),
+    }
+}
+
+fn trajectory_csv(out: &mut dyn Write, run: &DropRun) -> std::io::Result<()> {
+    csv_row(out, &["t", "height", "velocity"])?;
+    for s in run.trajectory(CSV_STEP) {
+        csv_row(out, &[num(s.t), num(s.height), num(s.velocity)])?;
+    }
+    Ok(())
+}
+
+fn text(
+    out: &mut dyn Write,
+    label: &str,
+    run: &DropRun,
+    judged: Option<(&Standard, Verdict)>,
+    radius: f64,
+) -> std::io::Result<()> {
+    writeln!(out, "{label}")?;
+    writeln!(
+        out,
+        "released from rest at {} m (bottom of the ball), g = {G} m/s², {}",
+        given(run.setup.height, 6),
+        run.drag_model()
+    )?;
+    writeln!(out)?;
+    let mut rows = vec![
+        [
+            "#",
+            "t_start s",
+            "v_in m/s",
+            "v_out m/s",
+            "COR",
+            "rebound m",
+            "contact ms",
+            "peak force N",
+        ]
+        .map(String::from)
+        .to_vec(),
+    ];
+    for (i, b) in run.bounces.iter().enumerate() {
+        rows.push(vec![
+            (i + 1).to_string(),
+            human(b.t_start, 4),
+            human(b.v_in, 4),
+            human(b.v_out, 4),
+            format!("{:.4}", b.cor),
+            human(b.rebound_height, 4),
+            human(b.contact_time * 1e3, 4),
+            human(b.max_force, 4),
+        ]);
+    }
+    table(out, "  ", &rows)?;
+    writeln!(out)?;
+    let why = match run.end {
+        End::Count => format!("after {} bounces (--bounces)", run.bounces.len()),
+        End::MinRebound => format!(
+            "a rebound below {} m (--min-rebound)",
+            given(run.setup.min_rebound, 4)
+        ),
+        End::NoRebound => "the ball stayed on the plate (e = 0)".into(),
+    };
+    writeln!(out, "ended: {why}")?;
+    if let Some((s, v)) = judged {
+        writeln!(out)?;
+        verdict_text(out, s, &v, radius)?;
+    }
+    Ok(())
+}
+
+/// "standard itf (…): window 1.35 … 1.47 m, measured 1.410 m → pass, margin +0.060 m".
+fn verdict_text(
+    out: &mut dyn Write,
+    s: &Standard,
+    v: &Verdict,
+    radius: f64,
+) -> std::io::Result<()> {
+    let (unit, conditions) = match s.test {
+        Test::Drop {
+            height,
+            drop_ref,
+            rebound_ref,
+        } => (
+            " m",
+            format!(
+                "drop from {} m to the {} of the ball, rebound read at the {}{}",
+                given(height, 4),
+                drop_ref.name(),
+                rebound_ref.name(),
+                match rebound_ref {
+                    Reference::Top => format!(" (+{} m, the diameter)", given(2.0 * radius, 4)),
+                    Reference::Bottom => String::new(),
+                }
+            ),
+        ),
+        Test::Cor { speed } => ("", format!("COR at {} m/s", given(speed, 4))),
+    };
+    writeln!(out, "standard {}: {}", s.name, s.title)?;
+    writeln!(out, "  {conditions}, {}", s.surface)?;
+    writeln!(
+        out,
+        "  window {}, measured {}{unit}: {}, margin {}{}{unit}",
+        super::standards::window_cell(s),
+        human(v.measured, 4),
+        if v.pass { "PASS" } else { "FAIL" },
+        if v.margin >= 0.0 { "+" } else { "" },
+        human(v.margin, 3),
+    )
+}

@@ -1,0 +1,91 @@
+//! `bouncelab standards`: the governing bodies' ball tests and their windows (docs/drop.md,
+//! "Standards", cites each source).
+
+use super::output::{self, given, table};
+use crate::drop::standards::{STANDARDS, Standard, Test};
+use clap::{Args, ValueEnum};
+use std::io::Write;
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum StandardsFormat {
+    Text,
+    Json,
+}
+
+#[derive(Debug, Clone, Args)]
+pub struct StandardsArgs {
+    /// Output format
+    #[arg(long, value_enum, default_value = "text")]
+    pub format: StandardsFormat,
+}
+
+pub fn run(a: &StandardsArgs, out: &mut dyn Write) -> anyhow::Result<()> {
+    match a.format {
+        StandardsFormat::Json => output::json(out, &STANDARDS)?,
+        StandardsFormat::Text => text(out)?,
+    }
+    Ok(())
+}
+
+/// "drop 2.54 m (bottom) → rebound (bottom)" or "COR at 26.82 m/s".
+fn test_cell(s: &Standard) -> String {
+    match s.test {
+        Test::Drop {
+            height,
+            drop_ref,
+            rebound_ref,
+        } => format!(
+            "drop {} m ({}) → rebound ({})",
+            given(height, 4),
+            drop_ref.name(),
+            rebound_ref.name()
+        ),
+        Test::Cor { speed } => format!("COR at {} m/s", given(speed, 4)),
+    }
+}
+
+/// "1.35 … 1.47 m", "≤ 0.47".
+pub fn window_cell(s: &Standard) -> String {
+    let unit = match s.test {
+        Test::Drop { .. } => " m",
+        Test::Cor { .. } => "",
+    };
+    match s.window {
+        [Some(lo), Some(hi)] => format!("{} … {}{unit}", given(lo, 4), given(hi, 4)),
+        [None, Some(hi)] => format!("≤ {}{unit}", given(hi, 4)),
+        [Some(lo), None] => format!("≥ {}{unit}", given(lo, 4)),
+        [None, None] => "–".into(),
+    }
+}
+
+fn text(out: &mut dyn Write) -> std::io::Result<()> {
+    let mut rows = vec![
+        ["name", "test", "window", "ball", "title"]
+            .map(String::from)
+            .to_vec(),
+    ];
+    for s in &STANDARDS {
+        rows.push(vec![
+            s.name.into(),
+            test_cell(s),
+            window_cell(s),
+            s.balls.join(", "),
+            s.title.into(),
+        ]);
+    }
+    table(out, "", &rows)?;
+    writeln!(out)?;
+    writeln!(out, "sources, and what could not be confirmed:")?;
+    for s in &STANDARDS {
+        writeln!(out, "  {}: {}", s.name, s.source)?;
+        if let Some(u) = s.unconfirmed {
+            writeln!(out, "    not confirmed: {u}")?;
+        }
+    }
+    writeln!(out)?;
+    writeln!(
+        out,
+        "heights are of the bottom or the top of the ball as each body reads them; \
+         `bouncelab drop --standard NAME` judges a ball"
+    )
+}

@@ -1,0 +1,292 @@
+//! The ball standards of the sports' governing bodies and a verdict against them
+//! (docs/drop.md, "Standards", where each entry's source is cited).
+//!
+//! Two kinds of test: a drop onto a rigid plate with a window on the rebound height, and a
+//! COR test (a ball fired at a rigid wall, ASTM F1887 style) with a window on the COR. Each
+//! drop test states where its heights are measured to, the bottom or the top of the ball
+//! (FIBA drops from 1.80 m to the bottom and reads the rebound at the top); the verdict
+//! converts explicitly: the model's heights are of the bottom of the ball.
+
+use super::{Air, DropBall, DropError, DropSetup, drop, impact};
+use serde::Serialize;
+
+/// The point of the ball a height is measured to.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Reference {
+    Bottom,
+    Top,
+}
+
+impl Reference {
+    /// Height of this point above the bottom of the ball (m).
+    pub fn offset(self, radius: f64) -> f64 {
+        match self {
+            Reference::Bottom => 0.0,
+            Reference::Top => 2.0 * radius,
+        }
+    }
+
+    pub fn name(self) -> &'static str {
+        match self {
+            Reference::Bottom => "bottom",
+            Reference::Top => "top",
+        }
+    }
+}
+
+/// What a standard measures.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[serde(tag = "kind", rename_all = "kebab-case")]
+pub enum Test {
+    /// Release from rest at `height` (to `drop_ref` of the ball); the rebound's apex (to
+    /// `rebound_ref`) is the measured value (m).
+    Drop {
+        height: f64,
+        drop_ref: Reference,
+        rebound_ref: Reference,
+    },
+    /// A ball fired at a rigid wall at `speed` (m/s); the COR from the speeds just before and
+    /// after impact is the measured value.
+    Cor { speed: f64 },
+}
+
+/// One governing body's test and its window.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Standard {
+    /// Short name for `--standard`.
+    pub name: &'static str,
+    pub title: &'static str,
+    pub test: Test,
+    /// Surface the ball hits.
+    pub surface: &'static str,
+    /// [lo, hi] of the measured value; `None` where the standard sets no bound.
+    pub window: [Option<f64>; 2],
+    /// Where the numbers come from (docs/drop.md cites each in full).
+    pub source: &'static str,
+    /// What could not be confirmed from a public source, if anything.
+    pub unconfirmed: Option<&'static str>,
+    /// The embedded presets this standard is the ball's own.
+    pub balls: &'static [&'static str],
+}
+
+/// 60 mph and 85 ft/s in m/s (exact conversions: 1 mph = 0.44704 m/s, 1 ft = 0.3048 m).
+pub const MPH_60: f64 = 60.0 * 0.44704;
+pub const FPS_85: f64 = 85.0 * 0.3048;
+
+const fn drop_test(height: f64, rebound_ref: Reference) -> Test {
+    Test::Drop {
+        height,
+        drop_ref: Reference::Bottom,
+        rebound_ref,
+    }
+}
+
+/// Every standard, in the order `bouncelab standards` lists them.
+pub const STANDARDS: [Standard; 12] = [
+    Standard {
+        name: "itf",
+        title: "ITF tennis ball (Type 2), rebound test",
+        test: drop_test(2.54, Reference::Bottom),
+        surface: "smooth, rigid, horizontal block (concrete or granite)",
+        window: [Some(1.35), Some(1.47)],
+        source: "ITF Rules of Tennis, Appendix I; ITF ball rebound test page",
+        unconfirmed: Some("that both heights are read at the bottom of the ball"),
+        balls: &["tennis"],
+    },
+    Standard {
+        name: "fifa-quality",
+        title: "FIFA Quality football, rebound test",
+        test: drop_test(2.0, Reference::Bottom),
+        surface: "steel plate",
+        window: [Some(1.15), Some(1.65)],
+        source: "FIFA Quality Programme for Footballs, rebound test (as published by licensees)",
+        unconfirmed: Some(
+            "the window in FIFA's own current test manual (a retailer quotes 1.35–1.55 m for \
+             its Quality Pro ball) and the bottom-of-ball reading",
+        ),
+        balls: &[],
+    },
+    Standard {
+        name: "fifa-quality-pro",
+        title: "FIFA Quality Pro football, rebound test",
+        test: drop_test(2.0, Reference::Bottom),
+        surface: "steel plate",
+        window: [Some(1.20), Some(1.65)],
+        source: "FIFA Quality Programme for Footballs, rebound test (as published by licensees)",
+        unconfirmed: Some(
+            "the window in FIFA's own current test manual (a retailer quotes 1.35–1.55 m for \
+             its Quality Pro ball) and the bottom-of-ball reading",
+        ),
+        balls: &["football"],
+    },
+    Standard {
+        name: "fiba",
+        title: "FIBA basketball, rebound test",
+        test: drop_test(1.80, Reference::Top),
+        surface: "playing floor",
+        window: [Some(1.20), Some(1.40)],
+        source: "FIBA Official Basketball Rules, Basketball Equipment, section 2 (Basketballs)",
+        unconfirmed: Some("the floor's stiffness: the model's plate is rigid"),
+        balls: &["basketball"],
+    },
+    Standard {
+        name: "ittf",
+        title: "ITTF table tennis ball (celluloid), bounce",
+        test: drop_test(0.305, Reference::Bottom),
+        surface: "standard steel block",
+        window: [Some(0.240), Some(0.260)],
+        source: "ITTF Technical Leaflet T3 (The Ball), B.7 Bounce conformity",
+        unconfirmed: None,
+        balls: &["table-tennis"],
+    },
+    Standard {
+        name: "ittf-plastic",
+        title: "ITTF table tennis ball (non-celluloid), bounce",
+        test: drop_test(0.305, Reference::Bottom),
+        surface: "standard steel block",
+        window: [Some(0.240), Some(0.265)],
+        source: "ITTF Technical Leaflet T3 (The Ball), B.7 Bounce conformity",
+        unconfirmed: None,
+        balls: &[],
+    },
+    Standard {
+        name: "mlb",
+        title: "MLB baseball, COR against a wall of northern white ash",
+        test: Test::Cor { speed: FPS_85 },
+        surface: "northern white ash wall (the model's wall is rigid)",
+        window: [Some(0.514), Some(0.578)],
+        source: "MLB Official Baseball Rules (COR 0.546 ± 0.032 at 85 ft/s), as quoted by \
+                 Kagan & Atkinson, Phys. Teach. 42 (2004)",
+        unconfirmed: None,
+        balls: &[],
+    },
+    Standard {
+        name: "ncaa-baseball",
+        title: "NCAA baseball, COR maximum",
+        test: Test::Cor { speed: MPH_60 },
+        surface: "rigid wall (ASTM F1887)",
+        window: [None, Some(0.555)],
+        source: "NCAA maximum COR 0.555 (ABCA, 2013); speed per ASTM F1887",
+        unconfirmed: Some("the test speed (ASTM F1887's 60 mph assumed) and any lower limit"),
+        balls: &[],
+    },
+    Standard {
+        name: "softball-44",
+        title: "Softball, .44 COR class",
+        test: Test::Cor { speed: MPH_60 },
+        surface: "rigid wall (ASTM F1887)",
+        window: [None, Some(0.44)],
+        source: "ASA/USA Softball ball classes (COR maximum); ASTM F1887 at 60 mph",
+        unconfirmed: Some("any lower limit: the classes are published as maxima"),
+        balls: &[],
+    },
+    Standard {
+        name: "softball-47",
+        title: "Softball, .47 COR class (fastpitch)",
+        test: Test::Cor { speed: MPH_60 },
+        surface: "rigid wall (ASTM F1887)",
+        window: [None, Some(0.47)],
+        source: "ASA/USA Softball ball classes (COR maximum); ASTM F1887 at 60 mph",
+        unconfirmed: Some("any lower limit: the classes are published as maxima"),
+        balls: &["softball"],
+    },
+    Standard {
+        name: "softball-50",
+        title: "Softball, .50 COR class",
+        test: Test::Cor { speed: MPH_60 },
+        surface: "rigid wall (ASTM F1887)",
+        window: [None, Some(0.50)],
+        source: "ASA/USA Softball ball classes (COR maximum); ASTM F1887 at 60 mph",
+        unconfirmed: Some(
+            "the class itself (named in the issue, not found in a public rule book) and any \
+             lower limit",
+        ),
+        balls: &[],
+    },
+    Standard {
+        name: "softball-52",
+        title: "Softball, .52 COR class (slow pitch)",
+        test: Test::Cor { speed: MPH_60 },
+        surface: "rigid wall (ASTM F1887)",
+        window: [None, Some(0.52)],
+        source: "ASA/USA Softball ball classes (COR maximum); ASTM F1887 at 60 mph",
+        unconfirmed: Some("any lower limit: the classes are published as maxima"),
+        balls: &[],
+    },
+];
+
+/// The standard called `name`, or an error listing the names.
+pub fn find(name: &str) -> Result<&'static Standard, String> {
+    STANDARDS.iter().find(|s| s.name == name).ok_or_else(|| {
+        let names: Vec<&str> = STANDARDS.iter().map(|s| s.name).collect();
+        format!(
+            "unknown standard '{name}' (available: {})",
+            names.join(", ")
+        )
+    })
+}
+
+/// The standard an embedded preset is made to pass, if any.
+pub fn for_ball(preset: &str) -> Option<&'static Standard> {
+    STANDARDS.iter().find(|s| s.balls.contains(&preset))
+}
+
+/// A ball measured against a standard.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Verdict {
+    pub name: &'static str,
+    pub window: [Option<f64>; 2],
+    /// The rebound height in the standard's convention (m), or the COR.
+    pub measured: f64,
+    pub pass: bool,
+    /// Distance to the nearer bound, positive inside the window, negative outside (m or COR).
+    pub margin: f64,
+}
+
+impl Standard {
+    /// Release height of the bottom of the ball (m) for a drop test.
+    pub fn release_height(&self, radius: f64) -> Option<f64> {
+        match self.test {
+            Test::Drop {
+                height, drop_ref, ..
+            } => Some(height - drop_ref.offset(radius)),
+            Test::Cor { .. } => None,
+        }
+    }
+
+    /// The verdict on a measured value: the margin is the distance to the nearer bound.
+    pub fn judge_value(&self, measured: f64) -> Verdict {
+        let [lo, hi] = self.window;
+        let margin = [lo.map(|l| measured - l), hi.map(|h| h - measured)]
+            .into_iter()
+            .flatten()
+            .fold(f64::INFINITY, f64::min);
+        Verdict {
+            name: self.name,
+            window: self.window,
+            measured,
+            pass: margin >= 0.0,
+            margin,
+        }
+    }
+
+    /// Run this standard's test on `ball` in `air` (`None`: vacuum; a COR test reads the speeds
+    /// at the wall, so air plays no part) and judge it.
+    pub fn judge(&self, ball: &DropBall, air: Option<Air>) -> Result<Verdict, DropError> {
+        let measured = match self.test {
+            Test::Drop { rebound_ref, .. } => {
+                let height = self.release_height(ball.radius).unwrap_or(f64::NAN);
+                let setup = DropSetup {
+                    bounces: 1,
+                    air,
+                    ..DropSetup::new(height)
+                };
+                let run = drop(ball, &setup)?;
+                run.bounces[0].rebound_height + rebound_ref.offset(ball.radius)
+            }
+            Test::Cor { speed } => impact(ball, speed)?.cor,
+        };
+        Ok(self.judge_value(measured))
+    }
+}

@@ -1,0 +1,389 @@
+//! The terminal explorer's charts as [`Figure`]s: the paper's figures ([`paper`]) built from
+//! what the explorer holds, with the pinned curves and this run on top. The explorer draws
+//! these figures and its export (`e`) writes the very same ones as SVG and CSV, so what is
+//! exported is what is on screen.
+//!
+//! Built from a [`Scene`] — results and display choices, plain data — never from the
+//! explorer's state, so a chart can be built (and tested) without a terminal.
+
+use super::history;
+use super::paper::{self, Ball};
+use super::{Figure, GREY, Kind, Look, Marker, Series, Style, Tone, short};
+use crate::analysis::sweep::{VelocityPoint, ZetaPoint};
+use crate::model::contact::ContactLaw;
+use crate::model::params::ImpactParams;
+use crate::solver::ImpactResponse;
+
+/// Palette index of this run's marker: orange, which no model curve of these figures uses.
+const THIS_RUN_COLOR: usize = 4;
+
+/// The ball's parameter set's name once λ or ζ moved off the preset's.
+pub const MODIFIED: &str = "modified";
+
+/// The explorer's charts.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Chart {
+    ForceTime,
+    Hysteresis,
+    CorZeta,
+    ForceZeta,
+    CorSpeed,
+}
+
+impl Chart {
+    /// The chart's name in file names: the `bouncelab figure` name of the same figure.
+    pub fn file_name(self) -> &'static str {
+        match self {
+            Chart::ForceTime => "force-time",
+            Chart::Hysteresis => "force-displacement",
+            Chart::CorZeta => "cor-zeta",
+            Chart::ForceZeta => "force-zeta",
+            Chart::CorSpeed => "cor-velocity",
+        }
+    }
+}
+
+/// COR and F̄_m against ζ for one λ (linear law, no flattening: Figs. 2, 3).
+#[derive(Debug, Clone, Copy)]
+pub struct ZetaSweep<'a> {
+    pub lambda: f64,
+    pub points: &'a [ZetaPoint],
+}
+
+/// COR against impact speed (Fig. 4), and the speed at which the linear law starts to flatten.
+#[derive(Debug, Clone, Copy)]
+pub struct SpeedSweep<'a> {
+    pub points: &'a [VelocityPoint],
+    pub v_flat: Option<f64>,
+    /// The sweep runs over (0, v_max] (m/s).
+    pub v_max: f64,
+}
+
+/// The pinned setting and its results, drawn dimmed behind the live ones.
+#[derive(Debug, Clone, Copy)]
+pub struct Pinned<'a> {
+    pub params: ImpactParams,
+    pub law: ContactLaw,
+    pub run: Option<&'a ImpactResponse>,
+    pub zeta: Option<ZetaSweep<'a>>,
+    pub speed: Option<SpeedSweep<'a>>,
+}
+
+/// What the explorer shows: the results it holds and how they are to be drawn.
+#[derive(Debug, Clone)]
+pub struct Scene<'a> {
+    /// The ball with the parameters and law the explorer runs on; its `source` is
+    /// [`MODIFIED`] once λ or ζ left the preset's.
+    pub ball: Ball,
+    /// Every ball with what was measured: the markers of the ζ charts.
+    pub balls: Vec<Ball>,
+    pub run: Option<&'a ImpactResponse>,
+    /// The fixed curves of Fig. 2 (λ = 0, 0.4, 1).
+    pub references: Vec<ZetaSweep<'a>>,
+    /// The current λ's curve.
+    pub zeta: Option<ZetaSweep<'a>>,
+    pub speed: Option<SpeedSweep<'a>>,
+    /// While COR-vs-speed sweeps are out: the highest speed they reach (the axis spans it).
+    pub speed_pending: Option<f64>,
+    pub pinned: Option<Pinned<'a>>,
+}
+
+/// What a chart lacks to be exported (its computation failed, or a sweep is still out), as
+/// "no … to export" names it.
+pub fn missing(chart: Chart, scene: &Scene) -> Option<&'static str> {
+    match chart {
+        Chart::ForceTime | Chart::Hysteresis => scene.run.is_none().then_some("impact"),
+        Chart::CorZeta | Chart::ForceZeta => scene.zeta.is_none().then_some("COR-vs-ζ curve"),
+        Chart::CorSpeed => {
+            (scene.speed.is_none() || scene.speed_pending.is_some()).then_some("COR-vs-speed sweep")
+        }
+    }
+}
+
+/// One chart's figure.
+pub fn figure(chart: Chart, scene: &Scene) -> Figure {
+    match chart {
+        Chart::ForceTime | Chart::Hysteresis => history_figure(chart, scene),
+        Chart::CorZeta | Chart::ForceZeta => zeta_figure(chart, scene),
+        Chart::CorSpeed => speed_figure(scene),
+    }
+}
+
+fn lambda_zeta_text(p: &ImpactParams) -> String {
+    let n = p.normalized();
+    format!("λ = {}, ζ = {}", short(n.lambda, 3), short(n.zeta, 3))
+}
+
+/// A dimmed curve on screen: a grey dotted line in the picture.
+fn pinned(label: String, id: &str, points: Vec<(f64, f64)>) -> Series {
+    Series::new(&label, id, Kind::Pinned, Style::Dotted, GREY)
+        .with_points(points)
+        .with_look(Look::new(Tone::Ghost, Some("pinned"), None))
+}
+
+/// One run's point on a sweep's chart: the current run's ◆, or the pinned run's dimmed ◇.
+fn run_marker(label: String, pinned: bool, at: (f64, f64)) -> Series {
+    let (id, role, color, look) = if pinned {
+        let look = Look::new(Tone::Ghost, Some("pinned"), Some("◇"));
+        ("pinned run", Kind::Pinned, GREY, look)
+    } else {
+        let look = Look::new(Tone::Highlight, Some("this run"), Some("◆"));
+        ("this run", Kind::ThisRun, THIS_RUN_COLOR, look)
+    };
+    Series::new(&label, id, role, Style::Markers(Marker::Diamond), color)
+        .with_points(vec![at])
+        .with_look(look)
+}
+
+/// Figs. 5–8 of the current run, with the pinned run's curve.
+fn history_figure(chart: Chart, scene: &Scene) -> Figure {
+    let build = match chart {
+        Chart::ForceTime => paper::force_time,
+        _ => paper::force_displacement,
+    };
+    let Some(run) = scene.run else {
+        return history::frame(chart == Chart::Hysteresis, &scene.ball);
+    };
+    let mut fig = build(&scene.ball, run);
+    // the subtitle names the parameter set; a modified one by its λ and ζ
+    let from = format!("{MODIFIED} parameters");
+    let to = format!("{from} ({})", lambda_zeta_text(&scene.ball.params));
+    fig.subtitle = fig.subtitle.replacen(&from, &to, 1);
+    if let Some(p) = &scene.pinned
+        && let Some(r) = p.run
+    {
+        let h = &r.history;
+        let label = format!(
+            "pinned ({}, v0 = {} m/s)",
+            lambda_zeta_text(&p.params),
+            short(p.params.v0, 3)
+        );
+        let (id, xs) = if chart == Chart::ForceTime {
+            ("pinned model", &h.t)
+        } else {
+            ("pinned displacement", &h.displacement)
+        };
+        let pts = xs.iter().copied().zip(h.force.iter().copied()).collect();
+        let mut s = pinned(label, id, pts);
+        if chart == Chart::Hysteresis {
+            s.look.key = Some("pinned α".into());
+        }
+        fig.insert_before_measured(s);
+    }
+    fig
+}
+
+/// The decades of ζ shown: 0.01 … 100, widened to take in the current and pinned ζ.
+pub fn decades(scene: &Scene) -> (i32, i32) {
+    let pinned = scene.pinned.map(|p| p.params.normalized().zeta);
+    super::ticks::covering(
+        (-2, 2),
+        pinned
+            .into_iter()
+            .chain([scene.ball.params.normalized().zeta]),
+    )
+}
+
+/// The points of a ζ sweep inside the decades shown.
+fn shown(c: &ZetaSweep, scene: &Scene) -> Vec<ZetaPoint> {
+    let (lo, hi) = decades(scene);
+    let inside = (10f64.powi(lo) * (1.0 - 1e-9))..=(10f64.powi(hi) * (1.0 + 1e-9));
+    c.points
+        .iter()
+        .filter(|p| inside.contains(&p.zeta))
+        .cloned()
+        .collect()
+}
+
+/// The pinned λ's curve and the pinned run's ◇ on Fig. 2 (`cor`) or 3.
+fn add_pinned_zeta(fig: &mut Figure, scene: &Scene, cor: bool) {
+    let value = |p: &ZetaPoint| if cor { p.cor } else { p.max_force_normalized };
+    let of_run = |r: &ImpactResponse| if cor { r.cor } else { r.max_force_normalized };
+    if let Some(p) = &scene.pinned {
+        if let Some(c) = &p.zeta {
+            let label = format!("pinned, λ = {}", short(c.lambda, 3));
+            let id = format!("pinned lambda={}", short(c.lambda, 6));
+            let pts = shown(c, scene).iter().map(|p| (p.zeta, value(p))).collect();
+            fig.insert_before_measured(pinned(label, &id, pts));
+        }
+        if let Some(r) = p.run {
+            let at = (p.params.normalized().zeta, of_run(r));
+            let label = format!("pinned run ({})", lambda_zeta_text(&p.params));
+            fig.insert_before_measured(run_marker(label, true, at));
+        }
+    }
+}
+
+/// Figs. 2 and 3 as on screen: the λ = 0, 0.4, 1 curves and the current λ over the decades
+/// shown, the pinned λ and run, this run and every ball's measured value.
+fn zeta_figure(chart: Chart, scene: &Scene) -> Figure {
+    let (lo, hi) = decades(scene);
+    let (z_lo, z_hi) = (10f64.powi(lo), 10f64.powi(hi));
+    let shown = |c: &ZetaSweep| shown(c, scene);
+    let mut rows: Vec<ZetaPoint> = scene.references.iter().flat_map(shown).collect();
+    // a current λ that is one of the references is already there
+    if let Some(c) = &scene.zeta
+        && !scene.references.iter().any(|r| r.lambda == c.lambda)
+    {
+        rows.extend(shown(c));
+    }
+    let cor = chart == Chart::CorZeta;
+    let build = if cor {
+        paper::cor_zeta
+    } else {
+        paper::force_zeta
+    };
+    let mut fig = build(&rows, &scene.balls, ContactLaw::Linear);
+    fig.x.range = Some((z_lo, z_hi));
+    if let Some(c) = &scene.zeta {
+        let id = format!("model lambda={}", short(c.lambda, 6));
+        if let Some(s) = fig.series.iter_mut().find(|s| s.id == id) {
+            s.look = Look::new(
+                Tone::Current,
+                Some(&format!("λ={} now", short(c.lambda, 4))),
+                None,
+            );
+        }
+    }
+    add_pinned_zeta(&mut fig, scene, cor);
+    if let Some(r) = scene.run {
+        let (y, what) = if cor {
+            (r.cor, "e")
+        } else {
+            (r.max_force_normalized, "F̄m")
+        };
+        let label = format!(
+            "this run ({}, {what} = {})",
+            lambda_zeta_text(&scene.ball.params),
+            short(y, 3)
+        );
+        fig.insert_before_measured(run_marker(
+            label,
+            false,
+            (scene.ball.params.normalized().zeta, y),
+        ));
+    }
+    fig
+}
+
+/// Fig. 4 for the current ball, with the pinned sweep and this run; the axis reaches as far
+/// as the sweeps still out.
+fn speed_figure(scene: &Scene) -> Figure {
+    let ball = &scene.ball;
+    let (rows, onset) = match &scene.speed {
+        Some(s) => (s.points, s.v_flat),
+        None => (&[][..], None),
+    };
+    // the flattening onset is the linear law's; the other laws flatten elsewhere
+    let onset = onset.filter(|_| ball.law == ContactLaw::Linear);
+    let mut fig = paper::cor_velocity(ball, rows, onset);
+    let v_hi = [
+        scene.speed.map(|s| s.v_max),
+        scene.pinned.and_then(|p| p.speed).map(|s| s.v_max),
+        scene.speed_pending,
+        Some(ball.params.v0),
+    ]
+    .into_iter()
+    .flatten()
+    .fold(0.0, f64::max);
+    let left = fig.x.range.map_or(0.0, |r| r.0);
+    fig.x.range = Some((left, v_hi));
+    if scene.speed_pending.is_some() {
+        fig.screen_title.push_str(" · updating…");
+    }
+    if let Some(p) = &scene.pinned
+        && let Some(c) = &p.speed
+    {
+        let label = format!("pinned ({}, {} law)", lambda_zeta_text(&p.params), p.law);
+        let pts = c.points.iter().map(|p| (p.v0, p.cor)).collect();
+        fig.insert_before_measured(pinned(label, "pinned model", pts));
+    }
+    if let Some(r) = scene.run {
+        let v0 = ball.params.v0;
+        let label = format!(
+            "this run (v0 = {} m/s, e = {})",
+            short(v0, 3),
+            short(r.cor, 3)
+        );
+        fig.insert_before_measured(run_marker(label, false, (v0, r.cor)));
+    }
+    fig
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::analysis::sweep::{cor_vs_zeta, log_space};
+    use crate::preset::Preset;
+    use crate::solver::{SolveOptions, simulate};
+
+    fn ball(p: &Preset) -> Ball {
+        Ball {
+            name: p.name.clone(),
+            source: p.parameters.name().into(),
+            params: p.params(),
+            law: p.law,
+            measured: Some(p.measured.clone()),
+        }
+    }
+
+    #[test]
+    fn a_scene_without_results_draws_frames_and_says_what_is_missing() {
+        let p = &Preset::embedded()[0];
+        let scene = Scene {
+            ball: ball(p),
+            balls: vec![ball(p)],
+            run: None,
+            references: Vec::new(),
+            zeta: None,
+            speed: None,
+            speed_pending: Some(20.0),
+            pinned: None,
+        };
+        let ft = figure(Chart::ForceTime, &scene);
+        assert!(ft.series.is_empty());
+        assert_eq!(ft.screen_title, "Force–time · F [N] vs t [ms]");
+        assert_eq!(missing(Chart::ForceTime, &scene), Some("impact"));
+        assert_eq!(missing(Chart::CorZeta, &scene), Some("COR-vs-ζ curve"));
+        let speed = figure(Chart::CorSpeed, &scene);
+        assert_eq!(
+            speed.x.range,
+            Some((0.0, 20.0)),
+            "the axis spans the sweep out"
+        );
+        assert!(speed.screen_title.ends_with(" · updating…"));
+        assert_eq!(missing(Chart::CorSpeed, &scene), Some("COR-vs-speed sweep"));
+    }
+
+    #[test]
+    fn zeta_charts_show_the_decades_and_mark_the_current_lambda() {
+        let p = &Preset::embedded()[0];
+        let run = simulate(&p.params(), p.law, &SolveOptions::default()).unwrap();
+        let lambda = p.params().normalized().lambda;
+        let zetas = log_space(1e-3, 1e3, 121);
+        let points = cor_vs_zeta(&[lambda], &zetas, ContactLaw::Linear).unwrap();
+        let scene = Scene {
+            ball: ball(p),
+            balls: vec![ball(p)],
+            run: Some(&run),
+            references: Vec::new(),
+            zeta: Some(ZetaSweep {
+                lambda,
+                points: &points,
+            }),
+            speed: None,
+            speed_pending: None,
+            pinned: None,
+        };
+        let fig = figure(Chart::CorZeta, &scene);
+        assert_eq!(fig.x.range, Some((0.01, 100.0)));
+        let model = &fig.series[0];
+        assert_eq!(model.points.len(), 81, "20 points a decade over 0.01 … 100");
+        assert_eq!(model.look.tone, Tone::Current);
+        assert!(model.look.key.as_deref().unwrap().ends_with(" now"));
+        let kinds: Vec<Kind> = fig.series.iter().map(|s| s.kind).collect();
+        assert_eq!(kinds, [Kind::Model, Kind::ThisRun, Kind::Measured]);
+        let legend: Vec<String> = fig.legend().into_iter().map(|e| e.key).collect();
+        assert_eq!(legend[1..], ["this run", "measured"]);
+    }
+}

@@ -1,0 +1,172 @@
+//! Control characters out of every text bouncelab writes.
+//!
+//! A preset's name or description, a file path or a typed value can hold control characters
+//! (`\u001b]0;title\u0007`, `\u001b[2J`): printed raw they retitle or clear the user's terminal,
+//! in an SVG they make the XML invalid. Preset files refuse them at load (`Preset::parse`); what
+//! still reaches an output (a path, an argument echoed in an error) is shown here as visible
+//! text, `\u{1b}`, never sent as the character itself. What holds, and the tests that check it:
+//!
+//! - the command line's stdout goes through [`Writer`] and its error lines through [`line`]:
+//!   no byte of C0 (except the line feed), DEL or C1 reaches the terminal
+//!   (tests/cli_guarantees.rs, `control_characters_never_reach_the_terminal`);
+//! - every file written through `crate::atomic` is passed through [`text`], and
+//!   `figure::svg::render` too: an SVG stays well-formed XML (`a_figure_with_control_characters_is_valid_xml`).
+//!
+//! JSON needs nothing: serde_json escapes control characters itself.
+
+use std::borrow::Cow;
+use std::io::{self, Write};
+
+/// Characters never written as themselves: C0 and C1 controls and DEL (`char::is_control`),
+/// the bidirectional overrides and isolates, which reorder what a terminal shows, and the two
+/// noncharacters XML 1.0 forbids.
+fn hostile(c: char) -> bool {
+    c.is_control()
+        || matches!(
+            c,
+            '\u{202a}'..='\u{202e}' | '\u{2066}'..='\u{2069}' | '\u{fffe}' | '\u{ffff}'
+        )
+}
+
+fn escaped(s: &str, keep: impl Fn(char) -> bool) -> Cow<'_, str> {
+    if !s.chars().any(|c| hostile(c) && !keep(c)) {
+        return Cow::Borrowed(s);
+    }
+    let mut out = String::with_capacity(s.len() + 8);
+    for c in s.chars() {
+        if hostile(c) && !keep(c) {
+            out.extend(c.escape_unicode());
+        } else {
+            out.push(c);
+        }
+    }
+    Cow::Owned(out)
+}
+
+/// One line of text: every control character (line breaks included) shown as `\u{…}`.
+pub fn line(s: &str) -> Cow<'_, str> {
+    escaped(s, |_| false)
+}
+
+/// A file's text: every control character but the line feed shown as `\u{…}`.
+pub fn text(s: &str) -> Cow<'_, str> {
+    escaped(s, |c| c == '\n')
+}
+
+/// The first control character of `s` not in `allowed`, and its char index.
+pub fn first_control(s: &str, allowed: &[char]) -> Option<(usize, char)> {
+    s.chars()
+        .enumerate()
+        .find(|&(_, c)| hostile(c) && !allowed.contains(&c))
+}
+
+/// A writer that passes text on with [`text`] applied. Bytes that are not UTF-8 pass
+/// through unchanged except C0 controls and DEL (the only single-byte controls); a character
+/// split across two writes is held back until it is complete.
+pub struct Writer<W: Write> {
+    inner: W,
+    pending: Vec<u8>,
+}
+
+impl<W: Write> Writer<W> {
+    pub fn new(inner: W) -> Self {
+        Writer {
+            inner,
+            pending: Vec::new(),
+        }
+    }
+
+    fn pass(&mut self, bytes: &[u8]) -> io::Result<()> {
+        let mut rest = bytes;
+        while !rest.is_empty() {
+            match std::str::from_utf8(rest) {
+                Ok(s) => return self.inner.write_all(text(s).as_bytes()),
+                Err(e) => {
+                    let (good, bad) = rest.split_at(e.valid_up_to());
+                    // `good` is valid UTF-8: from_utf8 said so up to this index
+                    let s = std::str::from_utf8(good).unwrap_or_default();
+                    self.inner.write_all(text(s).as_bytes())?;
+                    match e.error_len() {
+                        // an incomplete character at the end: wait for the next write
+                        None => {
+                            self.pending.extend_from_slice(bad);
+                            return Ok(());
+                        }
+                        Some(n) => {
+                            let (junk, after) = bad.split_at(n);
+                            self.inner.write_all(&Self::bytes(junk))?;
+                            rest = after;
+                        }
+                    }
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// Invalid UTF-8: single-byte controls shown, the rest as is.
+    fn bytes(junk: &[u8]) -> Vec<u8> {
+        let mut v = Vec::new();
+        for &b in junk {
+            if b < 0x20 && b != b'\n' || b == 0x7f {
+                v.extend(format!("\\u{{{b:x}}}").bytes());
+            } else {
+                v.push(b);
+            }
+        }
+        v
+    }
+}
+
+impl<W: Write> Write for Writer<W> {
+    fn write(&mut self, buf: &[u8]) -> io::Result<usize> {
+        if self.pending.is_empty() {
+            self.pass(buf)?;
+        } else {
+            let mut all = std::mem::take(&mut self.pending);
+            all.extend_from_slice(buf);
+            self.pass(&all)?;
+        }
+        Ok(buf.len())
+    }
+
+    fn flush(&mut self) -> io::Result<()> {
+        if !self.pending.is_empty() {
+            let junk = std::mem::take(&mut self.pending);
+            self.inner.write_all(&Self::bytes(&junk))?;
+        }
+        self.inner.flush()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn controls_become_visible() {
+        assert_eq!(line("a\u{1b}]0;pwned\u{7}b"), "a\\u{1b}]0;pwned\\u{7}b");
+        assert_eq!(line("x\ny"), "x\\u{a}y");
+        assert_eq!(text("x\ny\r"), "x\ny\\u{d}");
+        assert_eq!(text("\u{9b}2J \u{202e}"), "\\u{9b}2J \\u{202e}");
+        assert!(matches!(text("plain λ ζ"), Cow::Borrowed(_)));
+        assert_eq!(first_control("ab\u{7f}", &[]), Some((2, '\u{7f}')));
+        assert_eq!(first_control("\ta\u{1b}", &['\t']), Some((2, '\u{1b}')));
+    }
+
+    #[test]
+    fn the_writer_holds_a_split_character_and_shows_c1() {
+        let mut w = Writer::new(Vec::new());
+        let c1 = "\u{9b}".as_bytes(); // two bytes in UTF-8
+        w.write_all(b"a").unwrap();
+        w.write_all(&c1[..1]).unwrap();
+        w.write_all(&c1[1..]).unwrap();
+        w.write_all("λ\u{1b}[2J\n".as_bytes()).unwrap();
+        w.write_all(&[0xff, 0x07, b'\n']).unwrap();
+        w.flush().unwrap();
+        assert_eq!(
+            w.inner,
+            b"a\\u{9b}\xce\xbb\\u{1b}[2J\n\xff\\u{7}\n".to_vec()
+        );
+    }
+}

@@ -1,0 +1,30 @@
+//! What the model runs on, as the undo stack keeps it.
+
+use super::param::Param;
+use crate::model::contact::ContactLaw;
+use crate::model::params::ImpactParams;
+use crate::preset::Preset;
+
+/// What the model runs on: the ball, its parameters (SI) and the contact law. The undo stack
+/// holds these.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Setting {
+    /// Index into the explorer's presets.
+    pub preset: usize,
+    pub params: ImpactParams,
+    pub law: ContactLaw,
+}
+
+impl Setting {
+    pub fn from_preset(index: usize, preset: &Preset) -> Setting {
+        Setting {
+            preset: index,
+            params: preset.params(),
+            law: preset.law,
+        }
+    }
+
+    pub fn get(&self, p: Param) -> f64 {
+        p.get(&self.params)
+    }
+}

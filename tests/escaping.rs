@@ -1,0 +1,102 @@
+//! Control characters never reach the user's terminal or break a file: a preset refuses them
+//! in its name and description at load (file:line:column); a path or argument that holds
+//! them is printed with them shown as text (`\u{1b}`); a figure whose labels hold them is
+//! still well-formed XML.
+
+mod common;
+
+use bouncelab::figure::{paper, svg};
+use bouncelab::preset::{ParamSource, Preset};
+use bouncelab::{ContactLaw, analysis::sweep};
+use common::*;
+
+const OSC_TITLE: &str = "\u{1b}]0;pwned\u{7}";
+const CLEAR: &str = "\u{1b}[2J";
+
+/// No byte of a C0 control but the line feed, DEL, or C1 control (U+0080 … U+009F).
+fn assert_clean(what: &str, s: &str) {
+    let bad = s.chars().find(|&c| c.is_control() && c != '\n');
+    assert_eq!(bad, None, "{what} holds a control character: {s:?}");
+}
+
+#[test]
+fn a_preset_with_control_characters_is_refused_at_load() {
+    for (key, toml_text) in [
+        ("name", "\\u001b]0;pwned\\u0007"),
+        ("description", "\\u001b[2J"),
+        ("description", "tab\\tis fine, a bell\\u0007 is not"),
+    ] {
+        let from = format!("{key} = \"");
+        let at = SUPERBALL.find(&from).unwrap() + from.len();
+        let end = at + SUPERBALL[at..].find('"').unwrap();
+        let text = format!("{}{toml_text}{}", &SUPERBALL[..at], &SUPERBALL[end..]);
+        let line = SUPERBALL[..at].matches('\n').count() + 1;
+        let (_dir, path) = file_with(text.as_bytes());
+        for args in [
+            &["run", "--config", path.as_str()][..],
+            &["presets", "--config", path.as_str()][..],
+        ] {
+            let o = bl(args);
+            assert_bad(
+                &o,
+                &[&format!(
+                    "{path}:{line}:1: {key}: holds a control character"
+                )],
+            );
+            assert_clean("stderr", &o.stderr);
+        }
+    }
+}
+
+#[test]
+fn control_characters_never_reach_the_terminal() {
+    // a --config path is printed as the preset's origin by run and presets, in CSV too
+    let dir = tempfile::tempdir().unwrap();
+    let name = format!("ball{OSC_TITLE}{CLEAR}.toml");
+    std::fs::write(dir.path().join(&name), renamed("superball2", "7.08e4")).unwrap();
+    for args in [
+        &["run", "--config", name.as_str()][..],
+        &["run", "--config", name.as_str(), "--format", "csv"][..],
+        &["presets", "--config", name.as_str()][..],
+        &["presets", "--config", name.as_str(), "--format", "json"][..],
+    ] {
+        let out = ok_at(dir.path(), args);
+        assert_clean("stdout", &out);
+        // shown as text; JSON in its own escapes
+        let shown = ["ball\\u{1b}]0;pwned\\u{7}", "ball\\u001b]0;pwned\\u0007"];
+        assert!(shown.iter().any(|s| out.contains(s)), "{args:?}: {out}");
+    }
+    // an unknown preset's name, echoed in the error
+    let o = bl(&["run", "--preset", &format!("x{CLEAR}")]);
+    assert_bad(&o, &["unknown preset 'x\\u{1b}[2J'"]);
+    assert_clean("stderr", &o.stderr);
+}
+
+#[test]
+fn a_figure_with_control_characters_is_valid_xml() {
+    let p = &Preset::embedded()[0];
+    let ball = paper::Ball {
+        name: format!("evil{OSC_TITLE}<&>\u{9b}\u{202e}"),
+        source: format!("set{CLEAR}"),
+        params: p.params_from(ParamSource::Adopted),
+        law: ContactLaw::Linear,
+        measured: Some(p.measured.clone()),
+    };
+    let rows = sweep::cor_vs_zeta(
+        &[0.0, 1.0],
+        &sweep::log_space(0.01, 100.0, 9),
+        ContactLaw::Linear,
+    )
+    .unwrap();
+    let fig = paper::cor_zeta(&rows, std::slice::from_ref(&ball), ContactLaw::Linear);
+    let text = svg::render(&fig).unwrap();
+    assert_clean("the SVG", &text.replace(['\t', '\r'], ""));
+    let svg = parse_svg(&text);
+    assert!(
+        svg.texts
+            .iter()
+            .any(|t| t.contains("evil\\u{1b}]0;pwned\\u{7}<&>")),
+        "{:?}",
+        svg.texts
+    );
+}
