@@ -42,6 +42,8 @@
 //! - [`model`]: the parameters ([`ImpactParams`], normalized as λ, ζ, z̄_p, κ), the contact laws
 //!   ([`ContactLaw`]) and the material formulas;
 //! - [`analysis`]: sweeps and fits over many impacts;
+//! - [`drop`]: drop tests and bounce sequences (flight with drag between impacts), and the
+//!   sports' standards they are judged by;
 //! - [`preset`] and [`catalog`]: the ball presets (TOML) and where they are found.
 //!
 //! The physics does no I/O: plain data in, plain data out (only [`catalog`] reads preset files).
