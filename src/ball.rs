@@ -26,6 +26,7 @@
 use crate::analysis::fit::{Fit, FitError, fit_k_r};
 use crate::analysis::sweep::{VelocityPoint, ZetaPoint, cor_vs_velocity, cor_vs_zeta};
 use crate::catalog::{Catalog, CatalogError, Entry, Origin};
+use crate::drop::{DropBall, DropError, DropRun, DropSetup};
 use crate::model::contact::ContactLaw;
 use crate::model::params::{
     ImpactParams, ParamError, check_positive, display_number, validate_lambda_zeta,
@@ -103,6 +104,8 @@ pub enum BallError {
     Solve(SolveError),
     /// The fit has no answer (see [`FitError`]).
     Fit(FitError),
+    /// The drop test has no answer (see [`DropError`]).
+    Drop(DropError),
 }
 
 impl fmt::Display for BallError {
@@ -134,6 +137,7 @@ impl fmt::Display for BallError {
             BallError::NoValue(field) => write!(f, "invalid {field}: no value given"),
             BallError::Solve(e) => write!(f, "{e}"),
             BallError::Fit(e) => write!(f, "{e}"),
+            BallError::Drop(e) => write!(f, "{e}"),
         }
     }
 }
@@ -161,6 +165,12 @@ impl From<SolveError> for BallError {
 impl From<FitError> for BallError {
     fn from(e: FitError) -> Self {
         BallError::Fit(e)
+    }
+}
+
+impl From<DropError> for BallError {
+    fn from(e: DropError) -> Self {
+        BallError::Drop(e)
     }
 }
 
@@ -405,6 +415,29 @@ impl Ball {
     /// ```
     pub fn fit_cor(&self, cor: f64) -> Result<Fit, BallError> {
         Ok(fit_k_r(&self.params, self.law, cor)?)
+    }
+
+    /// Drop the ball onto a rigid plate and follow its bounces — flight under gravity and
+    /// drag, each impact solved at its own speed — as `bouncelab drop` (docs/drop.md). The
+    /// drag area is the preset's measured radius (a ball that is not a preset has none: give it
+    /// a [`DropSetup`] without air, or use [`crate::drop::drop`] with a radius).
+    ///
+    /// ```
+    /// use bouncelab::{Ball, drop::DropSetup};
+    /// let ball = Ball::from_preset("tennis")?;
+    /// let run = ball.drop_test(&DropSetup::new(2.54))?; // 100 in, the ITF's drop
+    /// let first = &run.bounces[0];
+    /// assert!(first.rebound_height > 1.0 && first.rebound_height < 2.54);
+    /// assert!(run.bounces.windows(2).all(|w| w[1].rebound_height < w[0].rebound_height));
+    /// # Ok::<(), bouncelab::BallError>(())
+    /// ```
+    pub fn drop_test(&self, setup: &DropSetup) -> Result<DropRun, BallError> {
+        let ball = DropBall {
+            params: self.params,
+            law: self.law,
+            radius: self.measured.as_ref().map_or(f64::NAN, |m| m.radius),
+        };
+        Ok(crate::drop::drop(&ball, setup)?)
     }
 }
 

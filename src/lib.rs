@@ -31,8 +31,9 @@
 //!
 //! Every error is a [`BallError`] whose message is the command line's, one line naming the
 //! field at fault. The COR-against-ζ curves of the paper's Figs. 2–3 are [`sweep_zeta`]; COR
-//! against speed (Fig. 4) is [`Ball::sweep_velocity`]; the presets are listed by
-//! [`catalog::Catalog::embedded`] (and, with the user's files, [`catalog::Catalog::load`]).
+//! against speed (Fig. 4) is [`Ball::sweep_velocity`]; a drop test with its bounces is
+//! [`Ball::drop_test`]; the presets are listed by [`catalog::Catalog::embedded`] (and, with the
+//! user's files, [`catalog::Catalog::load`]).
 //!
 //! # What is where
 //!
@@ -42,7 +43,7 @@
 //! - [`model`]: the parameters ([`ImpactParams`], normalized as λ, ζ, z̄_p, κ), the contact laws
 //!   ([`ContactLaw`]) and the material formulas;
 //! - [`analysis`]: sweeps and fits over many impacts;
-//! - [`drop`]: drop tests and bounce sequences (flight with drag between impacts), and the
+//! - [`mod@drop`]: drop tests and bounce sequences (flight with drag between impacts), and the
 //!   sports' standards they are judged by;
 //! - [`preset`] and [`catalog`]: the ball presets (TOML) and where they are found.
 //!
