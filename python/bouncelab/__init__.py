@@ -17,6 +17,7 @@ to an end raises ``NoAnswerError``, a ``ValueError`` too.
 from ._native import (
     Impact,
     NoAnswerError,
+    drop,
     fit,
     presets,
     run,
@@ -29,6 +30,7 @@ from ._native import (
 __all__ = [
     "Impact",
     "NoAnswerError",
+    "drop",
     "fit",
     "presets",
     "run",

@@ -131,3 +131,22 @@ def fit(
     params: Optional[ParamSet] = None,
 ) -> dict:
     """K_r and λ that give a measured COR (keys of ``bouncelab fit --format json``)."""
+
+class Drop(TypedDict):
+    height: float
+    drag: bool
+    bounces: dict[str, Array]
+
+def drop(
+    preset: str = "superball",
+    height: float = 1.0,
+    bounces: int = 10,
+    min_rebound: float = 0.001,
+    drag: bool = True,
+    drag_coefficient: Optional[float] = None,
+    air_density: Optional[float] = None,
+    law: Optional[Law] = None,
+    params: Optional[ParamSet] = None,
+) -> Drop:
+    """A drop test, bounce by bounce, as ``bouncelab drop``: ``bounces`` holds arrays v_in,
+    v_out, cor, rebound_height, contact_time, max_force, t_start (one entry a bounce)."""

@@ -561,6 +561,54 @@ fn fit<'py>(
     Ok(d)
 }
 
+/// A preset ball dropped onto a rigid plate, bounce by bounce, as `bouncelab drop` (without
+/// `--standard`): a dict with `height`, `drag` and `bounces`, the latter a dict of numpy arrays
+/// with the JSON's per-bounce keys (v_in, v_out, cor, rebound_height, contact_time, max_force,
+/// t_start), one entry a bounce.
+#[pyfunction(name = "drop")]
+#[pyo3(signature = (preset="superball", height=1.0, bounces=10, min_rebound=0.001, drag=true, drag_coefficient=None, air_density=None, law=None, params=None))]
+#[allow(clippy::too_many_arguments)]
+fn drop_test<'py>(
+    py: Python<'py>,
+    preset: &str,
+    height: f64,
+    bounces: usize,
+    min_rebound: f64,
+    drag: bool,
+    drag_coefficient: Option<f64>,
+    air_density: Option<f64>,
+    law: Option<&str>,
+    params: Option<&str>,
+) -> PyResult<Bound<'py, PyDict>> {
+    use bouncelab::drop::{Air, Bounce, DropSetup};
+    let ball = preset_ball(preset, params, law, None)?;
+    let air = drag.then(|| Air {
+        density: air_density.unwrap_or(Air::default().density),
+        drag_coefficient: drag_coefficient.unwrap_or(Air::default().drag_coefficient),
+    });
+    let setup = DropSetup {
+        height,
+        air,
+        bounces,
+        min_rebound,
+    };
+    let run = py.detach(|| ball.drop_test(&setup)).map_err(error)?;
+    let col = |f: fn(&Bounce) -> f64| array(py, run.bounces.iter().map(f).collect());
+    let b = PyDict::new(py);
+    b.set_item("v_in", col(|r| r.v_in))?;
+    b.set_item("v_out", col(|r| r.v_out))?;
+    b.set_item("cor", col(|r| r.cor))?;
+    b.set_item("rebound_height", col(|r| r.rebound_height))?;
+    b.set_item("contact_time", col(|r| r.contact_time))?;
+    b.set_item("max_force", col(|r| r.max_force))?;
+    b.set_item("t_start", col(|r| r.t_start))?;
+    let d = PyDict::new(py);
+    d.set_item("height", run.setup.height)?;
+    d.set_item("drag", run.drag())?;
+    d.set_item("bounces", b)?;
+    Ok(d)
+}
+
 #[pymodule]
 fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<Impact>()?;
@@ -572,5 +620,6 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(sweep_zeta, m)?)?;
     m.add_function(wrap_pyfunction!(sweep_velocity, m)?)?;
     m.add_function(wrap_pyfunction!(fit, m)?)?;
+    m.add_function(wrap_pyfunction!(drop_test, m)?)?;
     Ok(())
 }

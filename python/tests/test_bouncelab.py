@@ -237,6 +237,24 @@ def test_a_user_preset_is_seen_as_the_cli_sees_it(no_user_presets):
          cli_json("run", "--preset", "mine", "--format", "json"))
 
 
+@pytest.mark.parametrize(
+    "kwargs,args",
+    [
+        ({"preset": "tennis", "height": 2.54, "bounces": 3}, ["--preset", "tennis", "--height", "2.54", "--bounces", "3"]),
+        ({"drag": False, "min_rebound": 0.05}, ["--no-drag", "--min-rebound", "0.05"]),
+        ({"preset": "golf", "drag_coefficient": 0.25, "air_density": 1.0, "law": "hertz"},
+         ["--preset", "golf", "--drag-coefficient", "0.25", "--air-density", "1", "--law", "hertz"]),
+    ],
+)
+def test_drop_equals_the_cli_json(kwargs, args):
+    expected = cli_json("drop", *args, "--format", "json")
+    d = bouncelab.drop(**kwargs)
+    rows = expected.pop("bounces")
+    same({k: v for k, v in d.items() if k != "bounces"}, expected)
+    assert len(rows) >= 1 and all(a.shape == (len(rows),) for a in d["bounces"].values())
+    same({k: list(v) for k, v in d["bounces"].items()}, {k: [r[k] for r in rows] for k in rows[0]})
+
+
 ERRORS = [
     (lambda: bouncelab.run(v0=-1.0), ["run", "--v0", "-1"]),
     (lambda: bouncelab.run(v0=math.inf), ["run", "--v0", "inf"]),
@@ -248,6 +266,9 @@ ERRORS = [
     (lambda: bouncelab.fit(1.5), ["fit", "--cor", "1.5"]),
     (lambda: bouncelab.fit(0.5, preset="golf", v0=0.0), ["fit", "--preset", "golf", "--cor", "0.5", "--v0", "0"]),
     (lambda: bouncelab.sweep_velocity("cricket"), ["sweep", "velocity", "--preset", "cricket"]),
+    (lambda: bouncelab.drop(bounces=0), ["drop", "--bounces", "0"]),
+    (lambda: bouncelab.drop(height=-1.0), ["drop", "--height", "-1"]),
+    (lambda: bouncelab.drop(drag_coefficient=-1.0), ["drop", "--drag-coefficient", "-1"]),
 ]
 
 
