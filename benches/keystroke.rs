@@ -13,8 +13,12 @@
 //! `v` = v0 up: new impact). On the sweeps view the key also makes the COR-vs-speed sweep
 //! stale: `sync` runs it inside `update` (all the work the key causes, as the tests run it),
 //! `worker` is what the explorer's UI thread does (the sweep goes to the background worker;
-//! `update` only lists the request). Two more cases run `l` under the elastic–plastic law,
-//! whose impacts take the adaptive solver (the ζ curves stay linear, as in the paper).
+//! `update` only returns it as an `Effect::Compute`). Two more cases run `l` under the
+//! elastic–plastic law, whose impacts take the adaptive solver (the ζ curves stay linear, as
+//! in the paper).
+//!
+//! Drawing includes building each chart's figure from the state (`crate::figure::explorer`),
+//! as the explorer does on every frame.
 
 use bouncelab::preset::Preset;
 use bouncelab::tui::action::Action;

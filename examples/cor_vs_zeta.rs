@@ -3,7 +3,7 @@
 //! (default 41 points per λ, log-spaced from ζ = 0.01 to 100).
 
 use bouncelab::analysis::sweep::log_space;
-use bouncelab::model::params::display_number as num;
+use bouncelab::text::number as num;
 use bouncelab::{ContactLaw, sweep_zeta};
 use std::io::{self, BufWriter, Write};
 

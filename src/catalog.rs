@@ -51,60 +51,46 @@ pub struct Entry {
 }
 
 /// Why the catalog could not be built or a preset not found. Every message is one line.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum CatalogError {
     /// A file or folder could not be read.
+    #[error("{}: {message}", path.display())]
     Io { path: PathBuf, message: String },
     /// A preset file does not parse or validate (carries file:line:column).
-    Preset(PresetError),
+    #[error(transparent)]
+    Preset(#[from] PresetError),
     /// Two presets share a name.
+    #[error("{}", duplicate_message(name, first, second))]
     Duplicate {
         name: String,
         first: Origin,
         second: Origin,
     },
     /// No preset of that name.
+    #[error("unknown preset '{name}' (available: {})", available.join(", "))]
     Unknown {
         name: String,
         available: Vec<String>,
     },
 }
 
-impl fmt::Display for CatalogError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            CatalogError::Io { path, message } => write!(f, "{}: {message}", path.display()),
-            CatalogError::Preset(e) => write!(f, "{e}"),
-            CatalogError::Duplicate {
-                name,
-                first,
-                second,
-            } => match (first, second) {
-                (Origin::Embedded, Origin::File(file)) | (Origin::File(file), Origin::Embedded) => {
-                    write!(
-                        f,
-                        "duplicate preset name '{name}': {} and the embedded preset \
-                     (embedded:{name}); change the name in {}",
-                        file.display(),
-                        file.display()
-                    )
-                }
-                _ => write!(
-                    f,
-                    "duplicate preset name '{name}': {first} and {second}; change the name in \
-                     one of them"
-                ),
-            },
-            CatalogError::Unknown { name, available } => write!(
-                f,
-                "unknown preset '{name}' (available: {})",
-                available.join(", ")
-            ),
+/// Two presets named `name`: which, and which file to change.
+fn duplicate_message(name: &str, first: &Origin, second: &Origin) -> String {
+    match (first, second) {
+        (Origin::Embedded, Origin::File(file)) | (Origin::File(file), Origin::Embedded) => {
+            format!(
+                "duplicate preset name '{name}': {} and the embedded preset \
+                 (embedded:{name}); change the name in {}",
+                file.display(),
+                file.display()
+            )
         }
+        _ => format!(
+            "duplicate preset name '{name}': {first} and {second}; change the name in one of \
+             them"
+        ),
     }
 }
-
-impl std::error::Error for CatalogError {}
 
 /// The folder user presets are read from: `$XDG_CONFIG_HOME/bouncelab/presets`, falling back
 /// to `$HOME/.config/bouncelab/presets`; `None` if neither variable is usable.

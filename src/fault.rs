@@ -1,12 +1,14 @@
-//! Test-only fault injection, switched on by `BOUNCELAB_TEST_FAULT=<name>`.
+//! Test-only fault injection, switched on by `BOUNCELAB_TEST_FAULT=<name>` in a build with the
+//! `test-faults` feature (the tests' build: see Cargo.toml). Without it no fault is ever active
+//! and neither the variable's name nor the faults' code is compiled into the product.
 //!
 //! These switches exist so that the tests under a pseudo-terminal (`tests/tui_pty.rs`,
 //! `tests/tui_save_pty.rs`) can make the real binary fail at a chosen point: a panic inside
 //! the explorer's event loop (is the terminal restored?) and a pause in the middle of writing
-//! a preset file (does a SIGKILL there leave a truncated preset?). Nobody sets this variable in
-//! normal use; it is not documented for users.
+//! a preset file (does a SIGKILL there leave a truncated preset?).
 
 /// The environment variable that switches a fault on.
+#[cfg(feature = "test-faults")]
 pub const ENV: &str = "BOUNCELAB_TEST_FAULT";
 
 /// A failure a test can ask for.
@@ -30,8 +32,15 @@ impl Fault {
         }
     }
 
-    /// Whether the environment switches this fault on.
+    /// Whether the environment switches this fault on (never, without `test-faults`).
+    #[cfg(feature = "test-faults")]
     pub fn active(self) -> bool {
         std::env::var_os(ENV).is_some_and(|v| v == self.name())
+    }
+
+    /// Whether the environment switches this fault on (never, without `test-faults`).
+    #[cfg(not(feature = "test-faults"))]
+    pub const fn active(self) -> bool {
+        false
     }
 }

@@ -1,8 +1,8 @@
 //! bouncelab computes how a deformable sphere — a sports ball — bounces off a rigid wall: its
 //! coefficient of restitution (COR), peak force, contact time and flattening, with the model of
 //! A. P. Christoforou and A. S. Yigit, "Inelastic impact and the coefficient of restitution".
-//! SI units throughout; equation numbers are the paper's, and `MODEL.md` (docs/model.md) holds
-//! the corrected forms this crate implements.
+//! SI units throughout; equation numbers are the paper's, and `docs/model.md` holds the
+//! corrected forms this crate implements.
 //!
 //! # Five minutes
 //!
@@ -37,7 +37,8 @@
 //!
 //! # What is where
 //!
-//! - [`ball`]: the [`Ball`] entry point, built on the modules below;
+//! - [`api`]: the [`Ball`] entry point, built on the modules below ([`ball::Ball`] is the plain
+//!   ball record the figures and the explorer share);
 //! - [`solver`]: one impact, [`simulate`] (exact linear solver, adaptive numerical one) and its
 //!   [`ImpactResponse`];
 //! - [`model`]: the parameters ([`ImpactParams`], normalized as λ, ζ, z̄_p, κ), the contact laws
@@ -58,6 +59,7 @@
 //! docs/library.md.
 
 pub mod analysis;
+pub mod api;
 #[cfg(feature = "tui")]
 #[doc(hidden)]
 pub mod atomic;
@@ -79,11 +81,14 @@ pub mod sanitize;
 #[doc(hidden)]
 pub mod signals;
 pub mod solver;
+pub mod text;
 #[cfg(feature = "tui")]
 #[doc(hidden)]
 pub mod tui;
 
-pub use ball::{Ball, BallError, sweep_zeta};
+pub use api::{Ball, BallError, sweep_zeta};
 pub use model::contact::ContactLaw;
-pub use model::params::{ImpactParams, Normalized, ParamError};
-pub use solver::{ImpactResponse, Method, SolveError, SolveOptions, simulate, simulate_normalized};
+pub use model::params::{Field, ImpactParams, Normalized, ParamError};
+pub use solver::{
+    ImpactResponse, Method, SolveError, SolveOptions, Unresolved, simulate, simulate_normalized,
+};

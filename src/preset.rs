@@ -1,11 +1,10 @@
 //! Ball presets: measured data, material data and the parameters the paper adopted
-//! (MODEL.md §7), in a TOML schema documented in the README. Parsing only: no file I/O here.
+//! (docs/model.md §7), in a TOML schema documented in the README. Parsing only: no file I/O here.
 
 use crate::model::contact::ContactLaw;
 use crate::model::materials::{self, Layer};
-use crate::model::params::{ImpactParams, display_number};
+use crate::model::params::ImpactParams;
 use serde::{Deserialize, Serialize};
-use std::fmt;
 
 mod text;
 mod usable;
@@ -98,7 +97,7 @@ pub struct Material {
     pub layers: Vec<Layer>,
 }
 
-/// The parameters the paper adopted. K_r is required: no formula gives it (MODEL.md §4).
+/// The parameters the paper adopted. K_r is required: no formula gives it (docs/model.md §4).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Adopted {
@@ -128,7 +127,7 @@ fn default_law() -> ContactLaw {
     ContactLaw::Linear
 }
 
-/// Parameters derived from the material data (MODEL.md §4).
+/// Parameters derived from the material data (docs/model.md §4).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct Derived {
     pub density: f64,
@@ -142,95 +141,10 @@ pub struct Derived {
     pub surface_density: f64,
 }
 
-/// A preset that cannot be used: where, and why.
-#[derive(Debug, Clone, PartialEq)]
-pub struct PresetError {
-    /// A file path, or `embedded:NAME`.
-    pub origin: String,
-    /// 1-based line and column, when known.
-    pub position: Option<(usize, usize)>,
-    pub message: String,
-}
-
-impl fmt::Display for PresetError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self.position {
-            Some((l, c)) => write!(f, "{}:{l}:{c}: {}", self.origin, self.message),
-            None => write!(f, "{}: {}", self.origin, self.message),
-        }
-    }
-}
-
-impl std::error::Error for PresetError {}
-
-/// 1-based (line, column) of a byte offset.
-fn line_col(text: &str, offset: usize) -> (usize, usize) {
-    let before = &text[..offset.min(text.len())];
-    let line = before.matches('\n').count() + 1;
-    let col = before.rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1;
-    (line, col)
-}
-
-/// A message for one line of a terminal: the line breaks of a TOML message become spaces, and
-/// other control characters (which a quoted key such as `"a\rb"` or `"\u001b[2J"` carries
-/// into "unknown field" messages) are escaped, so that they neither break the line nor reach
-/// the terminal as commands.
-fn one_line(message: &str) -> String {
-    message
-        .trim()
-        .chars()
-        .map(|c| match c {
-            '\n' => " ".to_string(),
-            c if c.is_control() => c.escape_default().to_string(),
-            c => c.to_string(),
-        })
-        .collect()
-}
-
-/// A field that fails the semantic checks: its table ("" at the top level), the layer's index
-/// for `material.layers`, its key, and why.
-struct Bad {
-    table: &'static str,
-    layer: Option<usize>,
-    key: &'static str,
-    message: String,
-}
-
-/// Where a semantic error points: the key, from the spans of the parsed document, so that
-/// every TOML spelling (headers with comments, dotted keys, inline tables, quoted keys) is
-/// found; when the key is missing (a required field), the table that lacks it; when that is
-/// missing too, the start of the file. (A line scan used to miss all of these and leave the
-/// error without line:column.)
-fn locate(text: &str, bad: &Bad) -> (usize, usize) {
-    use toml::de::{DeTable, DeValue};
-    let Ok(doc) = DeTable::parse(text) else {
-        return (1, 1);
-    };
-    let mut offset = 0;
-    let mut table: &DeTable = doc.get_ref();
-    let path = bad.table.split('.').filter(|s| !s.is_empty());
-    for segment in path.chain([bad.key]) {
-        let Some((key, value)) = table.get_key_value(segment) else {
-            break;
-        };
-        offset = key.span().start;
-        let value = match (value.get_ref(), bad.layer) {
-            (DeValue::Array(layers), Some(i)) => match layers.get(i) {
-                Some(layer) => {
-                    offset = layer.span().start;
-                    layer.get_ref()
-                }
-                None => break,
-            },
-            (v, _) => v,
-        };
-        match value {
-            DeValue::Table(t) => table = t,
-            _ => break,
-        }
-    }
-    line_col(text, offset)
-}
+mod check;
+mod error;
+pub use error::PresetError;
+use error::{Bad, line_col, locate, one_line};
 
 impl Preset {
     /// Parse and validate a preset; errors carry file:line:column.
@@ -265,140 +179,12 @@ impl Preset {
     }
 
     /// Semantic checks: the first bad field.
+    /// The semantic checks, table by table, then the solver's own (see `check`).
     fn check(&self) -> Result<(), Bad> {
-        fn bad(table: &'static str, key: &'static str, message: String) -> Bad {
-            Bad {
-                table,
-                layer: None,
-                key,
-                message,
-            }
-        }
-        fn positive(table: &'static str, key: &'static str, v: f64) -> Result<(), Bad> {
-            if v.is_finite() && v > 0.0 && v < 1e15 {
-                Ok(())
-            } else {
-                Err(bad(
-                    table,
-                    key,
-                    format!(
-                        "must be a positive finite number, got {}",
-                        display_number(v)
-                    ),
-                ))
-            }
-        }
-        let opt = |table, key, v: Option<f64>| v.map_or(Ok(()), |v| positive(table, key, v));
-        // printed by every command and drawn in figures: no control character may ride along
-        // (crate::sanitize; tests/escaping.rs)
-        // (a description may keep the tabs and line breaks of its TOML: they command nothing)
-        for (key, text, allowed) in [
-            ("name", &self.name, &[][..]),
-            ("description", &self.description, &['\t', '\n'][..]),
-        ] {
-            if let Some((i, c)) = crate::sanitize::first_control(text, allowed) {
-                let msg = format!(
-                    "holds a control character, U+{:04X} (character {})",
-                    c as u32,
-                    i + 1
-                );
-                return Err(bad("", key, msg));
-            }
-        }
-        if self.name.trim().is_empty() || self.name.chars().any(|c| c.is_whitespace() || c == '/') {
-            return Err(bad(
-                "",
-                "name",
-                "must be a non-empty word without spaces or '/'".into(),
-            ));
-        }
-        let m = &self.measured;
-        positive("measured", "mass", m.mass)?;
-        positive("measured", "radius", m.radius)?;
-        positive("measured", "v0", m.v0)?;
-        if let Some(e) = m.cor
-            && !(e.is_finite() && (0.0..=1.0).contains(&e))
-        {
-            return Err(bad(
-                "measured",
-                "cor",
-                format!("must lie in [0, 1], got {}", display_number(e)),
-            ));
-        }
-        opt("measured", "max_force", m.max_force)?;
-        opt("measured", "contact_time", m.contact_time)?;
-        let mat = &self.material;
-        for (key, nu) in [
-            ("poisson", Some(mat.poisson)),
-            ("surface_poisson", mat.surface_poisson),
-        ] {
-            if let Some(nu) = nu
-                && !(nu.is_finite() && (0.0..=0.5).contains(&nu))
-            {
-                return Err(bad(
-                    "material",
-                    key,
-                    format!("must lie in [0, 0.5], got {}", display_number(nu)),
-                ));
-            }
-        }
-        opt("material", "modulus", mat.modulus)?;
-        opt("material", "surface_modulus", mat.surface_modulus)?;
-        opt("material", "density", mat.density)?;
-        opt("material", "yield_strength", mat.yield_strength)?;
-        for (i, l) in mat.layers.iter().enumerate() {
-            positive("material.layers", "thickness", l.thickness)
-                .and_then(|()| positive("material.layers", "modulus", l.modulus))
-                .and_then(|()| opt("material.layers", "density", l.density))
-                .map_err(|b| Bad {
-                    layer: Some(i),
-                    ..b
-                })?;
-        }
-        if mat.modulus.is_none() && mat.layers.is_empty() {
-            return Err(bad(
-                "material",
-                "modulus",
-                "is required when there are no layers".into(),
-            ));
-        }
-        if mat.kind == MaterialKind::Metal && mat.yield_strength.is_none() {
-            return Err(bad(
-                "material",
-                "yield_strength",
-                "is required for kind = \"metal\"".into(),
-            ));
-        }
-        let a = &self.adopted;
-        opt("adopted", "damping", a.damping)?;
-        opt("adopted", "z_p", a.z_p)?;
-        opt("adopted", "k_p", a.k_p)?;
-        if !(a.k_r.is_finite() && a.k_r >= 0.0 && a.k_r < 1e15) {
-            return Err(bad(
-                "adopted",
-                "k_r",
-                format!(
-                    "must be a non-negative finite number, got {}",
-                    display_number(a.k_r)
-                ),
-            ));
-        }
-        if self.parameters == ParamSource::Adopted {
-            for (key, v) in [("damping", a.damping), ("z_p", a.z_p), ("k_p", a.k_p)] {
-                if v.is_none() {
-                    return Err(bad(
-                        "adopted",
-                        key,
-                        "is required when parameters = \"adopted\"".into(),
-                    ));
-                }
-            }
-        }
-        // the commands' own check, so that load and use agree
-        usable::check(self)
+        check::preset(self)
     }
 
-    /// Parameters from the material data (MODEL.md §4).
+    /// Parameters from the material data (docs/model.md §4).
     pub fn derived(&self) -> Derived {
         let (m, r, mat) = (self.measured.mass, self.measured.radius, &self.material);
         let density = mat.density.unwrap_or_else(|| materials::density(m, r));
@@ -477,106 +263,4 @@ impl Preset {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn embedded_presets_parse() {
-        assert_eq!(
-            Preset::embedded()
-                .iter()
-                .map(|p| p.name.as_str())
-                .collect::<Vec<_>>(),
-            ["superball", "golf", "baseball"]
-        );
-        let all = Preset::embedded_all();
-        assert_eq!(
-            all.iter().map(|p| p.name.as_str()).collect::<Vec<_>>(),
-            [
-                "superball",
-                "golf",
-                "baseball",
-                "tennis",
-                "football",
-                "basketball",
-                "table-tennis",
-                "softball"
-            ]
-        );
-        for p in &all {
-            assert!(p.params().validate().is_ok(), "{}", p.name);
-            assert!(
-                p.params_from(ParamSource::Materials).validate().is_ok(),
-                "{}",
-                p.name
-            );
-        }
-    }
-
-    #[test]
-    fn errors_point_at_file_line_column() {
-        let bad = EMBEDDED[0].1.replace("mass = 0.0374", "mass = \"heavy\"");
-        let e = Preset::parse(&bad, "x.toml").unwrap_err();
-        assert_eq!(e.position.map(|p| p.0), Some(9), "{e}");
-        assert!(e.to_string().starts_with("x.toml:9:8: "), "{e}");
-        let neg = EMBEDDED[0]
-            .1
-            .replace("radius = 0.02155", "radius = -0.02155");
-        let e = Preset::parse(&neg, "x.toml").unwrap_err();
-        assert_eq!(
-            e.to_string(),
-            "x.toml:10:1: measured.radius: must be a positive finite number, got -0.02155"
-        );
-        let huge = EMBEDDED[0].1.replace("mass = 0.0374", "mass = 1e300");
-        let e = Preset::parse(&huge, "x.toml").unwrap_err();
-        assert!(e.to_string().ends_with("got 1e300"), "{e}");
-        let unknown = EMBEDDED[0].1.replace("[adopted]", "[adopted]\nspring = 3");
-        let e = Preset::parse(&unknown, "x.toml").unwrap_err();
-        assert!(e.to_string().contains("spring"), "{e}");
-    }
-
-    /// Found by the `preset_toml` fuzz target (fuzz/regressions/preset_toml/): errors lost
-    /// their line:column when the key was missing or written in another TOML spelling, and
-    /// control characters of a quoted key reached the one-line message.
-    #[test]
-    fn every_error_has_a_position_and_one_line() {
-        let sb = EMBEDDED[0].1;
-        let at = |text: &str| Preset::parse(text, "x.toml").unwrap_err().to_string();
-        // a comment after the table header
-        let t = sb
-            .replace("[measured]", "[measured]   # Cross")
-            .replace("v0 = 3.12 ", "v0 = 0 ");
-        assert_eq!(
-            at(&t),
-            "x.toml:11:1: measured.v0: must be a positive finite number, got 0"
-        );
-        // a required key that is missing: the table that lacks it
-        let t = sb.replace("kind = \"elastomer\"", "kind = \"metal\"");
-        assert_eq!(
-            at(&t),
-            "x.toml:16:2: material.yield_strength: is required for kind = \"metal\""
-        );
-        // dotted keys and inline tables
-        let t = "name = \"d\"\nmeasured = { mass = 1, radius = 1, v0 = -1 }\n\
-                 material.modulus = 1\nmaterial.poisson = 0.3\nadopted.k_r = 1\n";
-        assert_eq!(
-            at(t),
-            "x.toml:2:36: measured.v0: must be a positive finite number, got -1"
-        );
-        // the layer at fault, not the first one
-        let golf = EMBEDDED[1].1.replace("thickness = 5.4e-3", "thickness = 0");
-        assert!(
-            at(&golf).starts_with("x.toml:32:1: material.layers.thickness: "),
-            "{}",
-            at(&golf)
-        );
-        // control characters of a quoted key are escaped
-        let t = format!("\"a\\rb\\u001b\" = 1\n{sb}");
-        assert_eq!(at(&t).lines().count(), 1, "{:?}", at(&t));
-        assert!(
-            at(&t).starts_with("x.toml:1:1: unknown field `a\\rb\\u{1b}`"),
-            "{:?}",
-            at(&t)
-        );
-    }
-}
+mod tests;

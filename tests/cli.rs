@@ -1,5 +1,5 @@
 //! The `bouncelab` binary as a user runs it: the outputs of every subcommand, checked
-//! against the paper's values and the closed forms (MODEL.md §5, §7).
+//! against the paper's values and the closed forms (docs/model.md §5, §7).
 
 mod common;
 
@@ -39,7 +39,7 @@ fn run_json_has_every_key_with_the_papers_values() {
         (5.45e4, 7.08e4, 140.0)
     );
     assert_eq!(f(&v, "v0"), 3.12);
-    // MODEL.md §7: λ ≈ 1.3, ζ ≈ 0.16, COR matches the measured 0.75
+    // docs/model.md §7: λ ≈ 1.3, ζ ≈ 0.16, COR matches the measured 0.75
     assert!((f(&v, "lambda") - 7.08 / 5.45).abs() < 1e-12);
     assert!((f(&v, "zeta") - (0.0374f64 * 5.45e4).sqrt() / 280.0).abs() < 1e-12);
     assert!((f(&v, "cor") - 0.75).abs() < 0.01, "{}", v["cor"]);

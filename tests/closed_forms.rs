@@ -1,4 +1,4 @@
-//! Every closed form of MODEL.md §5, against both solvers where they apply.
+//! Every closed form of docs/model.md §5, against both solvers where they apply.
 
 use bouncelab::solver::EventKind;
 use bouncelab::{ContactLaw, ImpactParams, Method, SolveOptions, simulate, simulate_normalized};
@@ -154,7 +154,7 @@ fn force_starts_and_ends_at_zero() {
 
 /// Hertz alone (no Kelvin–Voigt motion, ζ = 0): e = 1, z_m = (15 m v0²/(16 E* √R))^{2/5},
 /// F_m = K_h z_m^{3/2}, t_f = 2.94328 z_m / v0. The constant is (4/5) B(2/5, 1/2) =
-/// 2.9432751843247…, which MODEL.md prints rounded to six figures: the test holds the solver
+/// 2.9432751843247…, which docs/model.md prints rounded to six figures: the test holds the solver
 /// to the exact constant at 1e-9 and checks that it rounds to the printed one.
 #[test]
 fn hertz_alone() {

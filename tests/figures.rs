@@ -9,13 +9,7 @@ use bouncelab::{ContactLaw, ImpactParams, SolveOptions, simulate};
 fn balls() -> Vec<paper::Ball> {
     Preset::embedded()
         .iter()
-        .map(|p| paper::Ball {
-            name: p.name.clone(),
-            source: "adopted".into(),
-            params: p.params_from(ParamSource::Adopted),
-            law: ContactLaw::Linear,
-            measured: Some(p.measured.clone()),
-        })
+        .map(|p| paper::Ball::from_preset(p, ParamSource::Adopted, ContactLaw::Linear))
         .collect()
 }
 

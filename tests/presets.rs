@@ -1,11 +1,11 @@
-//! The three balls of the paper (MODEL.md §7): λ, ζ as adopted, and COR against measurement.
+//! The three balls of the paper (docs/model.md §7): λ, ζ as adopted, and COR against measurement.
 
 use bouncelab::preset::Preset;
 use bouncelab::{ContactLaw, SolveOptions, simulate};
 
 #[test]
 fn presets_reproduce_the_paper() {
-    // (name, λ, ζ, measured COR), MODEL.md §7
+    // (name, λ, ζ, measured COR), docs/model.md §7
     let expected = [
         ("superball", 1.3, 0.16, 0.75),
         ("golf", 1.0, 0.07, 0.84),

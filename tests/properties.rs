@@ -122,7 +122,7 @@ fn rejected_well(e: &SolveError) -> Result<(), TestCaseError> {
     prop_assert!(!msg.contains('\n'), "{msg}");
     match e {
         SolveError::Param(p) => {
-            prop_assert!(msg.contains(p.field), "{msg}");
+            prop_assert!(msg.contains(p.field.as_str()), "{msg}");
             Ok(())
         }
         SolveError::Unresolved { .. } => Err(TestCaseError::fail(format!("unresolved: {e}"))),

@@ -87,7 +87,7 @@ fn energy_balance_closes() {
     }
 }
 
-/// At fixed ζ the COR increases with λ (MODEL.md §4: the fit of K_r is a monotone root find).
+/// At fixed ζ the COR increases with λ (docs/model.md §4: the fit of K_r is a monotone root find).
 #[test]
 fn cor_increases_with_lambda() {
     for zeta in [0.05, 0.16, 0.61, 2.0, 10.0] {

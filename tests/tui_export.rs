@@ -266,7 +266,7 @@ fn the_files_hold_the_curves_on_screen_not_new_runs() {
     );
 
     let curve = app.zeta_curve().unwrap();
-    let id = format!("model lambda={}", bouncelab::figure::short(curve.lambda, 6));
+    let id = format!("model lambda={}", bouncelab::text::short(curve.lambda, 6));
     let cz = rows(find("bouncelab-superball-cor-zeta-1.csv"), &id);
     // the decades on screen: 0.01 … 100, 20 points each
     assert_eq!(cz.len(), 81);

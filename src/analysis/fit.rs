@@ -2,9 +2,10 @@
 //! a bracketed 1-D root find.
 
 use crate::model::contact::ContactLaw;
-use crate::model::params::{ImpactParams, display_number};
+use crate::model::params::ImpactParams;
 use crate::solver::roots::brent;
 use crate::solver::{SolveOptions, simulate};
+use crate::text::number;
 use serde::Serialize;
 use std::fmt;
 
@@ -44,7 +45,7 @@ impl fmt::Display for FitError {
             FitError::BadTarget(e) => write!(
                 f,
                 "invalid cor: {} (a measured COR lies in [0, 1])",
-                display_number(*e)
+                number(*e)
             ),
             FitError::Params(e) => write!(f, "{e}"),
             FitError::OutOfReach {
@@ -55,7 +56,7 @@ impl fmt::Display for FitError {
             } => write!(
                 f,
                 "cor {} is out of reach at ζ = {zeta:.4}: the model spans {low:.4} (λ = 0) to {high:.4} (λ → ∞)",
-                display_number(*target)
+                number(*target)
             ),
         }
     }

@@ -1,12 +1,13 @@
 //! Choosing the ball a command runs on: a preset (embedded or user), a `--config` file, or the
 //! normalized ball, with the command-line overrides applied and validated.
 
-use crate::catalog::{self, Catalog, Entry};
+use crate::ball::Ball;
+use crate::catalog::{self, Catalog, Entry, Origin};
 use crate::model::contact::ContactLaw;
-use crate::model::params::{ImpactParams, ParamError};
+use crate::model::params::{Field, ImpactParams, check_positive, validate_lambda_zeta};
 use crate::preset::ParamSource;
-use crate::solver::SolveError;
 use clap::{Args, ValueEnum};
+use serde::Serialize;
 use std::path::{Path, PathBuf};
 
 /// The name used when no preset is asked for.
@@ -44,15 +45,30 @@ impl From<SourceArg> for ParamSource {
     }
 }
 
-/// Which preset, and what to change about it.
+/// Which preset: by name, or from a file. Declared once, for the top level (the explorer, and
+/// `bouncelab --preset golf run`), every subcommand that runs a preset ball, and `presets`.
 #[derive(Debug, Clone, Default, Args)]
-pub struct BallArgs {
+pub struct PresetChoice {
     /// Preset by name, embedded or user [default: superball]
     #[arg(long, value_name = "NAME", conflicts_with = "config")]
     pub preset: Option<String>,
     /// Preset from a TOML file (same schema as the embedded presets)
     #[arg(long, value_name = "FILE")]
     pub config: Option<PathBuf>,
+}
+
+impl PresetChoice {
+    /// Whether `--preset` or `--config` was given.
+    pub fn is_given(&self) -> bool {
+        self.preset.is_some() || self.config.is_some()
+    }
+}
+
+/// Which preset, and what to change about it.
+#[derive(Debug, Clone, Default, Args)]
+pub struct BallArgs {
+    #[command(flatten)]
+    pub choice: PresetChoice,
     /// Parameter set of the preset [default: the preset's `parameters` field]
     #[arg(long, value_enum, value_name = "SET")]
     pub params: Option<SourceArg>,
@@ -61,9 +77,52 @@ pub struct BallArgs {
     pub law: Option<LawArg>,
 }
 
-/// A ball ready to simulate: the library's (`crate::ball`), which holds the checks and
-/// messages the command line shows.
-pub use crate::ball::Ball;
+/// The ball's keys of a JSON document, in this order (flattened into it).
+#[derive(Debug, Serialize)]
+pub struct BallHeader<'a> {
+    pub preset: Option<&'a str>,
+    pub origin: &'a str,
+    pub parameters: &'a str,
+    pub law: &'static str,
+}
+
+/// Where the normalized ball comes from (its `origin`).
+const NORMALIZED: &str = "normalized";
+
+/// The ball a command runs on, and where it was chosen from.
+#[derive(Debug, Clone)]
+pub struct ChosenBall {
+    pub ball: Ball,
+    /// "embedded", a file path, or "normalized".
+    pub origin: String,
+    /// The preset's description (empty for the normalized ball).
+    pub description: String,
+}
+
+impl ChosenBall {
+    /// The preset's name; `None` for the normalized ball.
+    pub fn preset(&self) -> Option<&str> {
+        (self.origin != NORMALIZED).then_some(self.ball.name.as_str())
+    }
+
+    /// The keys every JSON document names its ball by.
+    pub fn header(&self) -> BallHeader<'_> {
+        BallHeader {
+            preset: self.preset(),
+            origin: &self.origin,
+            parameters: &self.ball.source,
+            law: self.ball.law.name(),
+        }
+    }
+
+    /// "superball (embedded, adopted parameters)" or "normalized ball (m = K_p = v0 = 1)".
+    pub fn label(&self) -> String {
+        match self.preset() {
+            Some(n) => format!("{n} ({}, {} parameters)", self.origin, self.ball.source),
+            None => "normalized ball (m = K_p = v0 = 1)".into(),
+        }
+    }
+}
 
 /// The catalog: embedded presets, the user's presets folder, and `config` if given.
 /// A `--config` file that cannot be read is named as such.
@@ -90,14 +149,34 @@ pub fn select(preset: Option<&str>, config: Option<&Path>) -> anyhow::Result<Ent
 
 impl BallArgs {
     /// The preset ball with `--params`, `--law`, `--v0` applied and every parameter checked.
-    pub fn resolve(&self, v0: Option<f64>) -> anyhow::Result<Ball> {
-        let entry = select(self.preset.as_deref(), self.config.as_deref())?;
-        Ok(Ball::from_entry(
-            &entry,
-            self.params.map(ParamSource::from),
-            self.law.map(ContactLaw::from),
-            v0,
-        )?)
+    pub fn resolve(&self, v0: Option<f64>) -> anyhow::Result<ChosenBall> {
+        let entry = select(self.choice.preset.as_deref(), self.choice.config.as_deref())?;
+        let p = &entry.preset;
+        let source = self.params.map_or(p.parameters, ParamSource::from);
+        let mut params = p.params_from(source);
+        if let Some(v0) = v0 {
+            params.v0 = v0;
+        }
+        params.validate().map_err(|e| {
+            // a bad v0 comes from the command line; anything else from the preset's set
+            if e.field == Field::V0 && v0.is_some() {
+                e.into()
+            } else {
+                anyhow::anyhow!("preset '{}' ({} parameters): {e}", p.name, source.name())
+            }
+        })?;
+        let law = self.law.map_or(p.law, ContactLaw::from);
+        Ok(ChosenBall {
+            ball: Ball {
+                params,
+                ..Ball::from_preset(p, source, law)
+            },
+            origin: match &entry.origin {
+                Origin::Embedded => "embedded".into(),
+                Origin::File(f) => f.display().to_string(),
+            },
+            description: p.description.clone(),
+        })
     }
 }
 
@@ -107,7 +186,31 @@ pub fn set_lambda_zeta(
     lambda: Option<f64>,
     zeta: Option<f64>,
 ) -> anyhow::Result<()> {
-    Ok(crate::ball::set_lambda_zeta(params, lambda, zeta)?)
+    validate_lambda_zeta(lambda.unwrap_or(0.0), zeta.unwrap_or(0.0))?;
+    let moved = params.with_lambda_zeta(lambda.unwrap_or(0.0), zeta.unwrap_or(1.0));
+    if lambda.is_some() {
+        params.k_r = moved.k_r;
+    }
+    if zeta.is_some() {
+        params.damping = moved.damping;
+    }
+    // name what the user typed when the K_r or c it gives is out of range
+    params.validate().map_err(|e| {
+        let given = match e.field {
+            Field::KR => lambda.map(|l| (Field::Lambda, l, "K_r", "N/m")),
+            Field::Damping => zeta.map(|z| (Field::Zeta, z, "c", "kg/s")),
+            _ => None,
+        };
+        match given {
+            Some((field, v, name, unit)) => anyhow::anyhow!(
+                "invalid {field}: {} (gives {name} = {} {unit}: {})",
+                super::output::num(v),
+                super::output::num(e.value),
+                e.reason
+            ),
+            None => e.into(),
+        }
+    })
 }
 
 /// The normalized ball: m = K_p = v0 = 1; `zp_bar` = ∞ for no flattening.
@@ -116,34 +219,22 @@ pub fn normalized(
     zeta: f64,
     zp_bar: Option<f64>,
     law: ContactLaw,
-) -> anyhow::Result<Ball> {
-    Ok(Ball::normalized(lambda, zeta, zp_bar, law)?)
-}
-
-/// "invalid zeta: NaN (not a number)", with large and small values in exponent form.
-pub fn param_message(e: &ParamError) -> String {
-    e.to_string()
-}
-
-/// A solver error for the user: bad parameters are bad input (exit 2); an impact the solver
-/// could not bring to an end within its budgets is not the user's fault (exit 1).
-pub fn solve_error(e: SolveError) -> anyhow::Error {
-    match e {
-        SolveError::Param(p) => anyhow::anyhow!(param_message(&p)),
-        e @ SolveError::Unresolved { .. } => super::Runtime(anyhow::anyhow!(e.to_string())).into(),
+) -> anyhow::Result<ChosenBall> {
+    validate_lambda_zeta(lambda, zeta)?;
+    if let Some(z) = zp_bar {
+        check_positive(Field::ZpBar, z)?;
     }
-}
-
-/// A library error for the user: an impact without an answer is not the user's fault (exit 1),
-/// anything else is bad input (exit 2).
-pub fn ball_error(e: crate::ball::BallError) -> anyhow::Error {
-    match e {
-        crate::ball::BallError::Solve(e) => solve_error(e),
-        e => e.into(),
-    }
-}
-
-/// A finite, positive, not absurd number, or an error naming `field`.
-pub fn check_positive(field: &'static str, value: f64) -> anyhow::Result<()> {
-    crate::model::params::check_positive(field, value).map_err(|e| anyhow::anyhow!(e.to_string()))
+    let params = ImpactParams::from_normalized(lambda, zeta, zp_bar.unwrap_or(f64::INFINITY));
+    params.validate()?;
+    Ok(ChosenBall {
+        ball: Ball {
+            name: "ball".into(),
+            source: NORMALIZED.into(),
+            params,
+            law,
+            measured: None,
+        },
+        origin: NORMALIZED.into(),
+        description: String::new(),
+    })
 }

@@ -15,7 +15,6 @@
 //! (exit 130) before any file is written, so nothing partial is left; a second signal ends the
 //! process at once. (tests/cli_progress_pty.rs.)
 
-use super::ball::solve_error;
 use crate::analysis::sweep::{VelocityPoint, ZetaPoint, cor_vs_velocity, cor_vs_zeta};
 use crate::model::contact::ContactLaw;
 use crate::model::params::ImpactParams;
@@ -134,7 +133,7 @@ pub fn zeta_rows(
         let mut rows = Vec::with_capacity(chunk.len());
         for run in chunk.chunk_by(|a, b| a.0.to_bits() == b.0.to_bits()) {
             let z: Vec<f64> = run.iter().map(|p| p.1).collect();
-            rows.extend(cor_vs_zeta(&[run[0].0], &z, law).map_err(solve_error)?);
+            rows.extend(cor_vs_zeta(&[run[0].0], &z, law)?);
         }
         Ok(rows)
     })
@@ -147,6 +146,6 @@ pub fn velocity_rows(
     speeds: &[f64],
 ) -> anyhow::Result<Vec<VelocityPoint>> {
     chunked(speeds, cost(law), |chunk| {
-        cor_vs_velocity(params, law, chunk).map_err(solve_error)
+        cor_vs_velocity(params, law, chunk).map_err(anyhow::Error::from)
     })
 }

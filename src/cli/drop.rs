@@ -1,7 +1,7 @@
 //! `bouncelab drop`: a ball released from rest bounces on a rigid plate (docs/drop.md), as a
 //! text table, one JSON object, or the trajectory as CSV; with `--standard`, the verdict.
 
-use super::ball::{self, BallArgs};
+use super::ball::BallArgs;
 use super::output::{self, csv_row, given, human, num, table};
 use crate::drop::standards::{self, Reference, Standard, Test, Verdict};
 use crate::drop::{
@@ -57,7 +57,7 @@ pub struct DropArgs {
 /// answer is not the user's fault (exit 1).
 fn drop_error(e: DropError) -> anyhow::Error {
     match e {
-        DropError::Solve(s) => ball::solve_error(s),
+        DropError::Solve(s) => s.into(),
         e => anyhow::anyhow!(e.to_string()),
     }
 }
@@ -70,10 +70,10 @@ pub fn run(a: &DropArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         .transpose()
         .map_err(|e| anyhow::anyhow!(e))?;
     let b = a.ball.resolve(None)?;
-    let radius = b.measured.as_ref().map_or(f64::NAN, |m| m.radius);
+    let radius = b.ball.measured.as_ref().map_or(f64::NAN, |m| m.radius);
     let dball = DropBall {
-        params: b.params,
-        law: b.law,
+        params: b.ball.params,
+        law: b.ball.law,
         radius,
     };
     let air = (!a.no_drag).then(|| Air {

@@ -2,12 +2,12 @@
 //! SVG, and its plotted series as CSV. The figures themselves are built in
 //! [`crate::figure::paper`]; this file reads the options, solves, and writes the files.
 
-use super::ball::{self, BallArgs, check_positive, param_message};
+use super::ball::BallArgs;
 use crate::analysis::sweep::{lin_space, log_space};
 use crate::atomic::Outputs;
 use crate::figure::{Figure, csv, paper, svg};
 use crate::model::contact::ContactLaw;
-use crate::model::params::validate_lambda_zeta;
+use crate::model::params::{Field, check_positive, validate_lambda_zeta};
 use crate::preset::{ParamSource, Preset};
 use crate::solver::{SolveOptions, simulate};
 use clap::{Args, ValueEnum};
@@ -176,27 +176,9 @@ pub fn commit(files: Outputs) -> anyhow::Result<Vec<PathBuf>> {
     })
 }
 
-/// A CLI ball as a ball of the paper's charts.
-pub fn chart_ball(b: &ball::Ball) -> paper::Ball {
-    paper::Ball {
-        name: b.name.clone().unwrap_or_else(|| "ball".into()),
-        source: b.source.into(),
-        params: b.params,
-        law: b.law,
-        measured: b.measured.clone(),
-    }
-}
-
 /// An embedded preset on the chosen (or its own) parameter set.
 pub fn embedded_ball(p: &Preset, source: Option<ParamSource>, law: ContactLaw) -> paper::Ball {
-    let source = source.unwrap_or(p.parameters);
-    paper::Ball {
-        name: p.name.clone(),
-        source: source.name().into(),
-        params: p.params_from(source),
-        law,
-        measured: Some(p.measured.clone()),
-    }
+    paper::Ball::from_preset(p, source.unwrap_or(p.parameters), law)
 }
 
 /// Figs. 2 and 3 over ζ = 0.01 … 100.
@@ -207,7 +189,7 @@ pub fn zeta_figures(
     balls: &[paper::Ball],
 ) -> anyhow::Result<(Figure, Figure)> {
     for &l in lambdas {
-        validate_lambda_zeta(l, 0.0).map_err(|e| anyhow::anyhow!(param_message(&e)))?;
+        validate_lambda_zeta(l, 0.0)?;
     }
     let what = format!("{} λ values × {points} points", lambdas.len());
     super::budget::check(lambdas.len() * points, law, &what)?;
@@ -226,15 +208,14 @@ pub fn velocity_figure(
     to: Option<f64>,
     points: usize,
 ) -> anyhow::Result<Figure> {
-    let pm = ball::solve_error;
     super::budget::check(points, b.law, &format!("{points} points"))?;
     let v0 = b.params.v0;
-    let onset = paper::speed_for_indentation(&b.params, b.law, 1.0).map_err(pm)?;
-    let far = paper::speed_for_indentation(&b.params, b.law, SPEED_RANGE_ZP).map_err(pm)?;
+    let onset = paper::speed_for_indentation(&b.params, b.law, 1.0)?;
+    let far = paper::speed_for_indentation(&b.params, b.law, SPEED_RANGE_ZP)?;
     let from = from.unwrap_or(0.1 * v0);
     let to = to.unwrap_or_else(|| far.unwrap_or(3.0 * v0).max(1.2 * v0));
-    check_positive("from", from)?;
-    check_positive("to", to)?;
+    check_positive(Field::From, from)?;
+    check_positive(Field::To, to)?;
     if from >= to {
         anyhow::bail!("invalid speed range: --from {from} must be below --to {to}");
     }
@@ -248,8 +229,7 @@ pub fn history_figures(b: &paper::Ball, samples: usize) -> anyhow::Result<(Figur
         &b.params,
         b.law,
         &SolveOptions::default().with_samples(samples),
-    )
-    .map_err(ball::solve_error)?;
+    )?;
     if !r.rebound {
         anyhow::bail!(
             "{} does not rebound at v0 = {} m/s: there is no contact to draw",
@@ -271,8 +251,8 @@ fn build(a: &FigureArgs) -> anyhow::Result<Figure> {
                 .map(|p| embedded_ball(p, source, law))
                 .collect();
             // a user's ball joins the three of the paper
-            if a.ball.preset.is_some() || a.ball.config.is_some() {
-                let b = chart_ball(&a.ball.resolve(None)?);
+            if a.ball.choice.is_given() {
+                let b = a.ball.resolve(None)?.ball;
                 if !balls.iter().any(|x| x.name == b.name) {
                     balls.push(b);
                 }
@@ -286,11 +266,11 @@ fn build(a: &FigureArgs) -> anyhow::Result<Figure> {
             Ok(if a.name == CorZeta { cor } else { force })
         }
         CorVelocity => {
-            let b = chart_ball(&a.ball.resolve(None)?);
+            let b = a.ball.resolve(None)?.ball;
             velocity_figure(&b, a.from, a.to, a.points.unwrap_or(VELOCITY_POINTS))
         }
         ForceTime | ForceDisplacement => {
-            let b = chart_ball(&a.ball.resolve(a.v0)?);
+            let b = a.ball.resolve(a.v0)?.ball;
             let (t, d) = history_figures(&b, a.points.unwrap_or(HISTORY_SAMPLES))?;
             Ok(if a.name == ForceTime { t } else { d })
         }
@@ -303,7 +283,7 @@ pub fn run(a: &FigureArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     paths.extend(a.data.as_deref());
     check_writable(&paths, a.force)?;
     let fig = build(a)?;
-    let picture = svg::render(&fig).map_err(|e| super::Runtime(e.into()))?;
+    let picture = svg::render(&fig)?;
     // both files or neither (crate::atomic)
     let mut files = Outputs::new(a.force);
     files.text(&a.out, &picture)?;

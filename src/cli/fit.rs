@@ -1,9 +1,9 @@
 //! `bouncelab fit`: the recoil spring K_r (and λ) that makes the model's COR equal a measured
 //! one, at the ball's ζ, z_p and v0 (MODEL.md §4).
 
-use super::ball::{BallArgs, param_message};
+use super::ball::{BallArgs, BallHeader};
 use super::output::{self, given, human, table};
-use crate::analysis::fit::{FitError, fit_k_r};
+use crate::analysis::fit::fit_k_r;
 use clap::{Args, ValueEnum};
 use serde::Serialize;
 use std::io::Write;
@@ -31,10 +31,8 @@ pub struct FitArgs {
 
 #[derive(Serialize)]
 struct Report<'a> {
-    preset: Option<&'a str>,
-    origin: &'a str,
-    parameters: &'a str,
-    law: &'static str,
+    #[serde(flatten)]
+    ball: BallHeader<'a>,
     v0: f64,
     target_cor: f64,
     k_r: f64,
@@ -48,16 +46,10 @@ struct Report<'a> {
 
 pub fn run(a: &FitArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     let b = a.ball.resolve(a.v0)?;
-    let f = fit_k_r(&b.params, b.law, a.cor).map_err(|e| match e {
-        FitError::Params(p) => anyhow::anyhow!(param_message(&p)),
-        e => anyhow::anyhow!(e.to_string()),
-    })?;
-    let p = &b.params;
+    let f = fit_k_r(&b.ball.params, b.ball.law, a.cor)?;
+    let p = &b.ball.params;
     let r = Report {
-        preset: b.name.as_deref(),
-        origin: &b.origin,
-        parameters: b.source,
-        law: b.law.name(),
+        ball: b.header(),
         v0: p.v0,
         target_cor: a.cor,
         k_r: f.k_r,
@@ -71,7 +63,7 @@ pub fn run(a: &FitArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     match a.format {
         FitFormat::Json => output::json(out, &r)?,
         FitFormat::Text => {
-            writeln!(out, "{}, {} law", b.label(), r.law)?;
+            writeln!(out, "{}, {} law", b.label(), r.ball.law)?;
             writeln!(
                 out,
                 "fitting K_r at v0 = {} m/s, holding m, K_p, c (ζ = {}) and z_p",

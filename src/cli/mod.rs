@@ -3,7 +3,9 @@
 //! Every failure is one line on stderr, `bouncelab: error: …`, naming the field at fault (and
 //! `file:line:column` for a preset file). Exit codes: 0 success (also when stdout is closed
 //! early, e.g. `| head`), 2 bad input of any kind (arguments, presets, out-of-reach fits),
-//! 1 a failure that is not the input's fault (writing the output, the explorer's terminal).
+//! 1 a failure that is not the input's fault (writing the output, the explorer's terminal, an
+//! impact without an answer). The library's errors are typed; `exit_code` alone maps their
+//! kinds to these codes.
 
 pub mod ball;
 pub mod budget;
@@ -19,9 +21,9 @@ mod run_text;
 pub mod standards;
 pub mod sweep;
 
+use crate::solver::SolveError;
 use clap::{Parser, Subcommand};
 use std::io::{self, IsTerminal, Write};
-use std::path::PathBuf;
 use std::process::ExitCode;
 
 const ABOUT: &str = "The Christoforou–Yigit model of a deformable ball hitting a rigid wall: \
@@ -33,13 +35,15 @@ const AFTER_HELP: &str = "With no subcommand, opens the terminal explorer on a p
 
 #[derive(Debug, Parser)]
 #[command(name = "bouncelab", version, about = ABOUT, after_help = AFTER_HELP)]
+#[command(mut_arg("preset", |a| a.help("Preset the explorer opens on [default: superball]")))]
+#[command(mut_arg("config", |a| {
+    a.help("Preset file the explorer opens on (TOML, same schema as the embedded presets)")
+}))]
 pub struct Cli {
-    /// Preset the explorer opens on [default: superball]
-    #[arg(long, value_name = "NAME", conflicts_with = "config")]
-    pub preset: Option<String>,
-    /// Preset file the explorer opens on (TOML, same schema as the embedded presets)
-    #[arg(long, value_name = "FILE")]
-    pub config: Option<PathBuf>,
+    /// The preset the explorer opens on, or the one a subcommand runs
+    /// (`bouncelab --preset golf run` is `bouncelab run --preset golf`)
+    #[command(flatten)]
+    pub choice: ball::PresetChoice,
     #[command(subcommand)]
     pub command: Option<Command>,
 }
@@ -69,17 +73,10 @@ pub enum Command {
     Standards(standards::StandardsArgs),
 }
 
-/// A failure that is not the input's fault: exit code 1.
-#[derive(Debug)]
-struct Runtime(anyhow::Error);
-
-impl std::fmt::Display for Runtime {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        write!(f, "{:#}", self.0)
-    }
-}
-
-impl std::error::Error for Runtime {}
+/// The explorer failed (its terminal, its event loop): not the input's fault.
+#[derive(Debug, thiserror::Error)]
+#[error("{0:#}")]
+struct ExplorerFailed(anyhow::Error);
 
 pub fn main() -> ExitCode {
     let cli = match Cli::try_parse() {
@@ -89,7 +86,7 @@ pub fn main() -> ExitCode {
     if cli.command.is_none() {
         // the explorer must not hold the stdout lock: on a signal, crate::signals takes it to
         // restore the terminal
-        return explorer(cli.preset, cli.config).map_or_else(fail, |()| ExitCode::SUCCESS);
+        return explorer(cli.choice).map_or_else(fail, |()| ExitCode::SUCCESS);
     }
     let stdout = io::stdout();
     // no control character reaches the terminal, whatever a preset or path holds
@@ -111,10 +108,24 @@ fn fail(e: anyhow::Error) -> ExitCode {
     }
 }
 
-/// The exit code and the one line an error ends the command line with: 1 for what is not the
-/// input's fault (I/O, the explorer, an impact without an answer), 2 for bad input; `None`
-/// for a closed pipe (`bouncelab … | head`), which is no error.
+/// The exit code and the one line an error ends the command line with; `None` for a closed
+/// pipe (`bouncelab … | head`), which is no error.
 fn report(e: &anyhow::Error) -> Option<(u8, String)> {
+    let code = exit_code(e)?;
+    let line = if code == 130 {
+        // an interruption is no error of the command's
+        format!("bouncelab: {e}")
+    } else {
+        format!("bouncelab: error: {}", one_line(&format!("{e:#}")))
+    };
+    Some((code, line))
+}
+
+/// The one place that maps what went wrong to an exit code, by the kind of error anywhere in
+/// the chain: 130 for an interruption (Ctrl-C during long work), 1 for what is not the input's
+/// fault (reading or writing files, the explorer's terminal, drawing a figure, an impact the
+/// solver could not bring to an end), 2 for bad input of any kind; `None` for a closed pipe.
+fn exit_code(e: &anyhow::Error) -> Option<u8> {
     let io_kind = e
         .chain()
         .find_map(|c| c.downcast_ref::<io::Error>())
@@ -124,17 +135,18 @@ fn report(e: &anyhow::Error) -> Option<(u8, String)> {
     }
     // Ctrl-C during long work (cli::budget): the shell's code for SIGINT
     if e.downcast_ref::<budget::Interrupted>().is_some() {
-        return Some((130, format!("bouncelab: {e}")));
+        return Some(130);
     }
-    let code = if io_kind.is_some() || e.downcast_ref::<Runtime>().is_some() {
-        1
-    } else {
-        2
+    let not_the_input = |c: &(dyn std::error::Error + 'static)| {
+        c.is::<ExplorerFailed>()
+            || c.is::<crate::figure::svg::RenderError>()
+            || matches!(c.downcast_ref(), Some(SolveError::Unresolved { .. }))
     };
-    Some((
-        code,
-        format!("bouncelab: error: {}", one_line(&format!("{e:#}"))),
-    ))
+    if io_kind.is_some() || e.chain().any(not_the_input) {
+        Some(1)
+    } else {
+        Some(2)
+    }
 }
 
 /// One line on stderr, its control characters shown as text (crate::sanitize). A stderr that
@@ -181,24 +193,24 @@ fn clap_error(e: clap::Error) -> ExitCode {
 }
 
 fn dispatch(cli: Cli, out: &mut dyn Write) -> anyhow::Result<()> {
-    let top = (cli.preset.is_some() || cli.config.is_some()).then_some(());
+    let top = cli.choice;
     let Some(command) = cli.command else {
-        return explorer(cli.preset, cli.config);
+        return explorer(top);
     };
     match command {
         Command::Run(mut a) => {
-            if top.is_some() && a.normalized {
+            if top.is_given() && a.normalized {
                 anyhow::bail!("--normalized cannot be used with --preset or --config");
             }
-            merge(&cli.preset, &cli.config, &mut a.ball)?;
+            merge(top, &mut a.ball)?;
             run::run(&a, out)
         }
         Command::Sweep(sweep::Sweep::Velocity(mut a)) => {
-            merge(&cli.preset, &cli.config, &mut a.ball)?;
+            merge(top, &mut a.ball)?;
             sweep::run(&sweep::Sweep::Velocity(a), out)
         }
         Command::Sweep(s) => {
-            if top.is_some() {
+            if top.is_given() {
                 anyhow::bail!(
                     "sweep zeta runs the normalized ball: --preset and --config do not apply"
                 );
@@ -206,27 +218,19 @@ fn dispatch(cli: Cli, out: &mut dyn Write) -> anyhow::Result<()> {
             sweep::run(&s, out)
         }
         Command::Fit(mut a) => {
-            merge(&cli.preset, &cli.config, &mut a.ball)?;
+            merge(top, &mut a.ball)?;
             fit::run(&a, out)
         }
         Command::Presets(mut a) => {
-            if cli.preset.is_some() {
-                anyhow::bail!("presets lists every preset: --preset does not apply");
-            }
-            if let Some(c) = cli.config {
-                if a.config.is_some() {
-                    anyhow::bail!("--config given twice");
-                }
-                a.config = Some(c);
-            }
+            merge_config(top, &mut a.choice)?;
             presets::run(&a, out)
         }
         Command::Figure(mut a) => {
-            merge(&cli.preset, &cli.config, &mut a.ball)?;
+            merge(top, &mut a.ball)?;
             figure::run(&a, out)
         }
         Command::Reproduce(a) => {
-            if top.is_some() {
+            if top.is_given() {
                 anyhow::bail!(
                     "reproduce runs the paper's three embedded balls: --preset and --config do \
                      not apply"
@@ -235,11 +239,11 @@ fn dispatch(cli: Cli, out: &mut dyn Write) -> anyhow::Result<()> {
             reproduce::run(&a, out)
         }
         Command::Drop(mut a) => {
-            merge(&cli.preset, &cli.config, &mut a.ball)?;
+            merge(top, &mut a.ball)?;
             drop::run(&a, out)
         }
         Command::Standards(a) => {
-            if top.is_some() {
+            if top.is_given() {
                 anyhow::bail!("standards lists the standards: --preset and --config do not apply");
             }
             standards::run(&a, out)
@@ -247,47 +251,58 @@ fn dispatch(cli: Cli, out: &mut dyn Write) -> anyhow::Result<()> {
     }
 }
 
+/// `bouncelab --config F presets` means `bouncelab presets --config F`; `presets` takes no
+/// `--preset`, before the subcommand or after it.
+fn merge_config(top: ball::PresetChoice, choice: &mut ball::PresetChoice) -> anyhow::Result<()> {
+    if top.preset.is_some() || choice.preset.is_some() {
+        anyhow::bail!("presets lists every preset: --preset does not apply");
+    }
+    if let Some(c) = top.config {
+        if choice.config.is_some() {
+            anyhow::bail!("--config given twice");
+        }
+        choice.config = Some(c);
+    }
+    Ok(())
+}
+
 /// `bouncelab --preset golf run` means `bouncelab run --preset golf`.
-fn merge(
-    preset: &Option<String>,
-    config: &Option<PathBuf>,
-    ball: &mut ball::BallArgs,
-) -> anyhow::Result<()> {
-    if preset.is_none() && config.is_none() {
+fn merge(top: ball::PresetChoice, ball: &mut ball::BallArgs) -> anyhow::Result<()> {
+    if !top.is_given() {
         return Ok(());
     }
-    if ball.preset.is_some() || ball.config.is_some() {
+    if ball.choice.is_given() {
         anyhow::bail!("--preset/--config given both before and after the subcommand");
     }
-    ball.preset.clone_from(preset);
-    ball.config.clone_from(config);
+    ball.choice = top;
     Ok(())
 }
 
 /// No subcommand: the explorer, which needs a terminal.
-fn explorer(preset: Option<String>, config: Option<PathBuf>) -> anyhow::Result<()> {
+fn explorer(choice: ball::PresetChoice) -> anyhow::Result<()> {
     if !io::stdout().is_terminal() {
         anyhow::bail!(
             "the explorer needs a terminal and stdout is not one; for headless output use \
              `bouncelab run` (e.g. `bouncelab run --preset superball --format json`)"
         );
     }
-    let entry = ball::select(preset.as_deref(), config.as_deref())?;
-    crate::tui::run(entry.preset).map_err(|e| Runtime(e).into())
+    let entry = ball::select(choice.preset.as_deref(), choice.config.as_deref())?;
+    crate::tui::run(entry.preset).map_err(|e| ExplorerFailed(e).into())
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::{SolveError, model::params::ParamError};
+    use crate::model::params::{Field, ParamError};
+    use crate::solver::Unresolved;
 
     /// No input known reaches "no answer" (the property tests hold the solvers to an answer
     /// over the whole domain), so its path is checked here rather than through the binary:
     /// one line naming λ and ζ, exit 1 (not the input's fault).
     #[test]
     fn no_answer_is_one_line_and_exit_1() {
-        let e = ball::solve_error(SolveError::Unresolved {
-            reason: "the step budget of the impact ran out",
+        let e = anyhow::Error::from(SolveError::Unresolved {
+            reason: Unresolved::Steps,
             steps: 1_000_001,
             lambda: 0.0,
             zeta: 1e4,
@@ -303,8 +318,8 @@ mod tests {
 
     #[test]
     fn bad_parameters_are_exit_2() {
-        let e = ball::solve_error(SolveError::Param(ParamError {
-            field: "zeta",
+        let e = anyhow::Error::from(SolveError::Param(ParamError {
+            field: Field::Zeta,
             value: f64::NAN,
             reason: "not a number",
         }));

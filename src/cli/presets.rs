@@ -1,13 +1,12 @@
 //! `bouncelab presets`: every preset the program knows, where it comes from, and the λ, ζ it
 //! runs at.
 
-use super::ball::load_catalog;
+use super::ball::{PresetChoice, load_catalog};
 use super::output::{self, human, table};
 use crate::catalog::{self, Origin};
 use clap::{Args, ValueEnum};
 use serde::Serialize;
 use std::io::Write;
-use std::path::PathBuf;
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
 pub enum PresetsFormat {
@@ -16,10 +15,12 @@ pub enum PresetsFormat {
 }
 
 #[derive(Debug, Clone, Args)]
+#[command(mut_arg("config", |a| a.help("Also list the preset in this file")))]
+#[command(mut_arg("preset", |a| a.hide(true)))]
 pub struct PresetsArgs {
-    /// Also list the preset in this file
-    #[arg(long, value_name = "FILE")]
-    pub config: Option<PathBuf>,
+    /// `--config`: also list the preset in this file (`--preset` does not apply)
+    #[command(flatten)]
+    pub choice: PresetChoice,
     /// Output format
     #[arg(long, value_enum, default_value = "text")]
     pub format: PresetsFormat,
@@ -38,7 +39,7 @@ struct Row {
 }
 
 pub fn run(a: &PresetsArgs, out: &mut dyn Write) -> anyhow::Result<()> {
-    let cat = load_catalog(a.config.as_deref())?;
+    let cat = load_catalog(a.choice.config.as_deref())?;
     let rows: Vec<Row> = cat
         .entries()
         .iter()

@@ -101,8 +101,7 @@ fn plan(presets: &[Preset]) -> anyhow::Result<Vec<Planned>> {
             "Figs. 6, 8: force against indentation and displacement at the measured speed".into(),
             disp,
         ));
-        let v = paper::speed_for_indentation(&b.params, b.law, FLATTENING_ZP)
-            .map_err(super::ball::solve_error)?
+        let v = paper::speed_for_indentation(&b.params, b.law, FLATTENING_ZP)?
             .unwrap_or(3.0 * b.params.v0);
         let fast = paper::Ball {
             params: crate::ImpactParams { v0: v, ..b.params },
@@ -153,7 +152,7 @@ pub fn run(a: &ReproduceArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     let mut texts: Vec<(String, String)> = Vec::new();
     let mut refs = Vec::new();
     for p in &planned {
-        let picture = svg::render(&p.figure).map_err(|e| super::Runtime(e.into()))?;
+        let picture = svg::render(&p.figure)?;
         texts.push((format!("{}.svg", p.stem), picture));
         texts.push((format!("{}.csv", p.stem), csv::to_string(&p.figure)));
         refs.push(FigureRef {
@@ -164,7 +163,7 @@ pub fn run(a: &ReproduceArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     }
     let mut comparisons = Vec::new();
     for p in &presets {
-        comparisons.push(report::compare(p, p.law).map_err(super::ball::solve_error)?);
+        comparisons.push(report::compare(p, p.law)?);
     }
     texts.push((REPORT.into(), report::markdown(&comparisons, &refs)));
     debug_assert_eq!(

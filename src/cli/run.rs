@@ -1,15 +1,16 @@
 //! `bouncelab run`: one impact, as a text table, one JSON object or CSV.
 
-use super::ball::{self, Ball, BallArgs};
+use super::ball::{self, BallArgs, BallHeader, ChosenBall};
 use super::output::{self, csv_row, num, opt_num};
 use crate::model::contact::ContactLaw;
-use crate::solver::{EnergyBudget, ImpactResponse, Method};
+use crate::solver::{EnergyBudget, ImpactResponse, Method, SolveOptions, simulate};
 use clap::{Args, ValueEnum};
 use serde::Serialize;
 use std::io::Write;
 
-/// History samples by default (at most `crate::ball::MAX_SAMPLES`).
+/// History samples by default, and at most.
 const SAMPLES: usize = 400;
+const MAX_SAMPLES: usize = 100_000;
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
 pub enum RunFormat {
@@ -65,15 +66,18 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         )?
     } else {
         let mut b = args.ball.resolve(args.v0)?;
-        ball::set_lambda_zeta(&mut b.params, args.lambda, args.zeta)?;
+        ball::set_lambda_zeta(&mut b.ball.params, args.lambda, args.zeta)?;
         b
     };
-    let r = if args.history {
-        ball.impact_history(args.samples)
-    } else {
-        ball.impact()
+    if args.history && !(2..=MAX_SAMPLES).contains(&args.samples) {
+        anyhow::bail!(
+            "invalid samples: {} (must lie in 2 … {MAX_SAMPLES})",
+            args.samples
+        );
     }
-    .map_err(ball::ball_error)?;
+    let samples = if args.history { args.samples } else { 0 };
+    let opts = SolveOptions::default().with_samples(samples).with_energy();
+    let r = simulate(&ball.ball.params, ball.ball.law, &opts)?;
     match args.format {
         RunFormat::Json => output::json(out, &report(&ball, &r, args.history))?,
         RunFormat::Csv if args.history => history_csv(out, &r)?,
@@ -102,10 +106,8 @@ struct Energy {
 /// of a ball that does not rebound.
 #[derive(Serialize)]
 struct Report<'a> {
-    preset: Option<&'a str>,
-    origin: &'a str,
-    parameters: &'a str,
-    law: &'static str,
+    #[serde(flatten)]
+    ball: BallHeader<'a>,
     method: Method,
     mass: f64,
     k_p: f64,
@@ -137,15 +139,12 @@ struct Report<'a> {
     displacement: Option<&'a [f64]>,
 }
 
-fn report<'a>(b: &'a Ball, r: &'a ImpactResponse, history: bool) -> Report<'a> {
-    let p = &b.params;
+fn report<'a>(b: &'a ChosenBall, r: &'a ImpactResponse, history: bool) -> Report<'a> {
+    let p = &b.ball.params;
     let n = &r.normalized;
     let h = |v: &'a Vec<f64>| history.then_some(v.as_slice());
     Report {
-        preset: b.name.as_deref(),
-        origin: &b.origin,
-        parameters: b.source,
-        law: r.law.name(),
+        ball: b.header(),
         method: r.method,
         mass: p.mass,
         k_p: p.k_p,
@@ -165,7 +164,7 @@ fn report<'a>(b: &'a Ball, r: &'a ImpactResponse, history: bool) -> Report<'a> {
         permanent_indentation: r.permanent_indentation,
         max_force_normalized: r.max_force_normalized,
         contact_time_normalized: r.contact_time_normalized,
-        measured: b.measured.as_ref().map(|m| Measured {
+        measured: b.ball.measured.as_ref().map(|m| Measured {
             v0: m.v0,
             cor: m.cor,
             max_force: m.max_force,
@@ -214,8 +213,8 @@ pub const SUMMARY_COLUMNS: [&str; 28] = [
     "energy_spring",
 ];
 
-fn summary_csv(out: &mut dyn Write, b: &Ball, r: &ImpactResponse) -> std::io::Result<()> {
-    let p = &b.params;
+fn summary_csv(out: &mut dyn Write, b: &ChosenBall, r: &ImpactResponse) -> std::io::Result<()> {
+    let p = &b.ball.params;
     let n = &r.normalized;
     let e = r.energy;
     let en = |f: fn(&EnergyBudget) -> f64| opt_num(e.as_ref().map(f));
@@ -227,9 +226,9 @@ fn summary_csv(out: &mut dyn Write, b: &Ball, r: &ImpactResponse) -> std::io::Re
     csv_row(
         out,
         &[
-            b.name.clone().unwrap_or_default(),
+            b.preset().unwrap_or_default().to_string(),
             b.origin.clone(),
-            b.source.into(),
+            b.ball.source.clone(),
             r.law.name().into(),
             method.into(),
             num(p.mass),

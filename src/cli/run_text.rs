@@ -1,9 +1,10 @@
 //! `bouncelab run --format text`: a readable table, units converted at the edge (N, ms, mm),
 //! the measured values beside the model's for a preset.
 
-use super::ball::Ball;
+use super::ball::ChosenBall;
 use super::output::{difference, given, human, table};
-use crate::solver::{ImpactResponse, Method};
+use crate::preset::Measured;
+use crate::solver::{EnergyBudget, ImpactResponse, Method};
 use std::io::{self, Write};
 
 /// Rows of a downsampled history printed in text mode.
@@ -34,41 +35,94 @@ impl Unit {
     }
 }
 
-pub fn write(out: &mut dyn Write, b: &Ball, r: &ImpactResponse, history: bool) -> io::Result<()> {
-    let dimensional = b.name.is_some();
-    let unit = |scale, name| {
+/// The units a run is shown in: N, ms, mm for a preset; none for the normalized ball.
+struct Units {
+    dimensional: bool,
+    force: Unit,
+    time: Unit,
+    length: Unit,
+}
+
+impl Units {
+    fn of(b: &ChosenBall) -> Units {
+        let dimensional = b.preset().is_some();
+        let unit = |scale, name| Unit::of(dimensional, scale, name);
+        Units {
+            dimensional,
+            force: unit(1.0, "N"),
+            time: unit(1e3, "ms"),
+            length: unit(1e3, "mm"),
+        }
+    }
+
+    fn unit(&self, scale: f64, name: &'static str) -> Unit {
+        Unit::of(self.dimensional, scale, name)
+    }
+}
+
+impl Unit {
+    /// `name` at `scale` from SI when `dimensional`, else a bare number.
+    fn of(dimensional: bool, scale: f64, name: &'static str) -> Unit {
         if dimensional {
             Unit { scale, name }
         } else {
-            Unit {
-                scale: 1.0,
-                name: "",
-            }
+            Unit::NONE
         }
+    }
+
+    const NONE: Unit = Unit {
+        scale: 1.0,
+        name: "",
     };
-    let (force, time, length) = (unit(1.0, "N"), unit(1e3, "ms"), unit(1e3, "mm"));
-    let p = &b.params;
-    let n = &r.normalized;
+}
+
+pub fn write(
+    out: &mut dyn Write,
+    b: &ChosenBall,
+    r: &ImpactResponse,
+    history: bool,
+) -> io::Result<()> {
+    let units = Units::of(b);
     let method = match r.method {
         Method::Exact => "exact solver",
         Method::Numeric => "adaptive numerical solver",
     };
-    match &b.name {
+    match b.preset() {
         Some(_) if !b.description.is_empty() => writeln!(out, "{}: {}", b.label(), b.description)?,
         _ => writeln!(out, "{}", b.label())?,
     }
     writeln!(out, "{} law, {method}", r.law)?;
     writeln!(out)?;
+    write_parameters(out, b, r, &units)?;
+    writeln!(out)?;
+    write_comparison(out, b, r, &units)?;
+    if let Some(e) = &r.energy {
+        writeln!(out)?;
+        write_energy(out, e, &units)?;
+    }
+    if history {
+        write_history(out, r, &units.force, &units.time, &units.length)?;
+    }
+    Ok(())
+}
 
+/// The parameters the run used (SI ones for a preset), and λ, ζ, z̄_p.
+fn write_parameters(
+    out: &mut dyn Write,
+    b: &ChosenBall,
+    r: &ImpactResponse,
+    units: &Units,
+) -> io::Result<()> {
+    let (p, n) = (&b.ball.params, &r.normalized);
     let mut rows: Vec<Vec<String>> = Vec::new();
     let mut row = |k: &str, v: String| rows.push(vec![k.to_string(), v]);
-    if dimensional {
-        row("mass m", unit(1e3, "g").given(p.mass));
-        row("impact speed v0", unit(1.0, "m/s").given(p.v0));
-        row("contact stiffness K_p", unit(1.0, "N/m").given(p.k_p));
-        row("recoil spring K_r", unit(1.0, "N/m").given(p.k_r));
-        row("dashpot c", unit(1.0, "kg/s").given(p.damping));
-        row("flattening at z_p", length.given(p.z_p));
+    if units.dimensional {
+        row("mass m", units.unit(1e3, "g").given(p.mass));
+        row("impact speed v0", units.unit(1.0, "m/s").given(p.v0));
+        row("contact stiffness K_p", units.unit(1.0, "N/m").given(p.k_p));
+        row("recoil spring K_r", units.unit(1.0, "N/m").given(p.k_r));
+        row("dashpot c", units.unit(1.0, "kg/s").given(p.damping));
+        row("flattening at z_p", units.length.given(p.z_p));
     }
     row("λ = K_r/K_p", human(n.lambda, 4));
     row("ζ = √(m K_p)/(2c)", human(n.zeta, 4));
@@ -78,14 +132,23 @@ pub fn write(out: &mut dyn Write, b: &Ball, r: &ImpactResponse, history: bool) -
         "∞ (no flattening)".into()
     };
     row("z̄_p = z_p ω0/v0", zp);
-    table(out, "  ", &rows)?;
-    writeln!(out)?;
+    table(out, "  ", &rows)
+}
 
+/// The model's answer, beside what was measured when the run is at the measured speed.
+fn write_comparison(
+    out: &mut dyn Write,
+    b: &ChosenBall,
+    r: &ImpactResponse,
+    units: &Units,
+) -> io::Result<()> {
+    let v0 = b.ball.params.v0;
     // the measured values are comparable only at the measured speed
     let measured = b
+        .ball
         .measured
         .as_ref()
-        .filter(|m| m.v0 == p.v0 && (m.cor.is_some() || m.max_force.is_some()));
+        .filter(|m| m.v0 == v0 && (m.cor.is_some() || m.max_force.is_some()));
     let mut rows = vec![if measured.is_some() {
         vec![
             "".into(),
@@ -96,6 +159,27 @@ pub fn write(out: &mut dyn Write, b: &Ball, r: &ImpactResponse, history: bool) -
     } else {
         vec!["".into(), "model".into()]
     }];
+    rows.extend(comparison_rows(r, measured, units));
+    table(out, "  ", &rows)?;
+    if let Some(m) = b.ball.measured.as_ref().filter(|m| m.v0 != v0) {
+        writeln!(
+            out,
+            "  (measured values are at v0 = {} m/s; not compared)",
+            given(m.v0, 6)
+        )?;
+    }
+    Ok(())
+}
+
+/// COR, peak force, contact time and indentations: the model's, and where `measured` has one,
+/// the measured value and the difference.
+fn comparison_rows(
+    r: &ImpactResponse,
+    measured: Option<&Measured>,
+    units: &Units,
+) -> Vec<Vec<String>> {
+    let (force, time, length) = (&units.force, &units.time, &units.length);
+    let mut rows = Vec::new();
     let mut compare = |name: &str, model: String, meas: Option<(f64, f64, String)>| {
         let mut r = vec![name.to_string(), model];
         if let (Some(_), Some((mo, me, shown))) = (measured, meas) {
@@ -113,22 +197,16 @@ pub fn write(out: &mut dyn Write, b: &Ball, r: &ImpactResponse, history: bool) -
     } else {
         "0 (no rebound)".into()
     };
-    let m = measured.cloned();
     let meas = |v: Option<f64>, model: f64, u: &Unit| v.map(|v| (model, v, u.given(v)));
-    let none = Unit {
-        scale: 1.0,
-        name: "",
-    };
     compare(
         "COR",
         cor,
-        m.as_ref().and_then(|m| meas(m.cor, r.cor, &none)),
+        measured.and_then(|m| meas(m.cor, r.cor, &Unit::NONE)),
     );
     compare(
         "peak force",
         force.show(r.max_force, 4),
-        m.as_ref()
-            .and_then(|m| meas(m.max_force, r.max_force, &force)),
+        measured.and_then(|m| meas(m.max_force, r.max_force, force)),
     );
     let tf = r
         .contact_time
@@ -136,8 +214,7 @@ pub fn write(out: &mut dyn Write, b: &Ball, r: &ImpactResponse, history: bool) -
     compare(
         "contact time",
         tf,
-        m.as_ref()
-            .and_then(|m| r.contact_time.and_then(|t| meas(m.contact_time, t, &time))),
+        measured.and_then(|m| r.contact_time.and_then(|t| meas(m.contact_time, t, time))),
     );
     compare("peak indentation", length.show(r.max_indentation, 4), None);
     compare(
@@ -145,58 +222,35 @@ pub fn write(out: &mut dyn Write, b: &Ball, r: &ImpactResponse, history: bool) -
         length.show(r.permanent_indentation, 4),
         None,
     );
-    table(out, "  ", &rows)?;
-    if let Some(m) = b.measured.as_ref().filter(|m| m.v0 != p.v0) {
-        writeln!(
-            out,
-            "  (measured values are at v0 = {} m/s; not compared)",
-            given(m.v0, 6)
-        )?;
-    }
+    rows
+}
 
-    if let Some(e) = r.energy {
-        writeln!(out)?;
-        let energy = unit(1e3, "mJ");
-        // round-off (|x| < 1e-12 of the initial energy) shows as 0
-        let clean = |x: f64| {
-            if x.abs() < 1e-12 * e.initial_kinetic {
-                0.0
-            } else {
-                x
-            }
-        };
-        let rows = vec![
-            vec![
-                "kinetic energy before".into(),
-                energy.show(clean(e.initial_kinetic), 4),
-            ],
-            vec![
-                "kinetic energy after".into(),
-                energy.show(clean(e.final_kinetic), 4),
-            ],
-            vec![
-                "lost in the dashpot".into(),
-                energy.show(clean(e.dashpot), 4),
-            ],
-            vec![
-                "left in the contact".into(),
-                energy.show(clean(e.contact), 4),
-            ],
-            vec![
-                "left in the recoil spring".into(),
-                energy.show(clean(e.spring), 4),
-            ],
-            vec![
-                "balance residual".into(),
-                format!("{:.1e} of the initial", e.relative_residual()),
-            ],
-        ];
-        table(out, "  ", &rows)?;
-    }
-    if history {
-        write_history(out, r, &force, &time, &length)?;
-    }
-    Ok(())
+/// Where the energy went (mJ for a preset).
+fn write_energy(out: &mut dyn Write, e: &EnergyBudget, units: &Units) -> io::Result<()> {
+    let energy = units.unit(1e3, "mJ");
+    // round-off (|x| < 1e-12 of the initial energy) shows as 0
+    let clean = |x: f64| {
+        if x.abs() < 1e-12 * e.initial_kinetic {
+            0.0
+        } else {
+            x
+        }
+    };
+    let mut rows: Vec<Vec<String>> = [
+        ("kinetic energy before", e.initial_kinetic),
+        ("kinetic energy after", e.final_kinetic),
+        ("lost in the dashpot", e.dashpot),
+        ("left in the contact", e.contact),
+        ("left in the recoil spring", e.spring),
+    ]
+    .into_iter()
+    .map(|(name, x)| vec![name.into(), energy.show(clean(x), 4)])
+    .collect();
+    rows.push(vec![
+        "balance residual".into(),
+        format!("{:.1e} of the initial", e.relative_residual()),
+    ]);
+    table(out, "  ", &rows)
 }
 
 fn write_history(

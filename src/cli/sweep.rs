@@ -1,11 +1,11 @@
 //! `bouncelab sweep zeta|velocity`: the paper's Figs. 2–3 (COR, F̄_m, τ_f against ζ for
 //! several λ) and Fig. 4 (COR against impact speed for one ball), as CSV or JSON.
 
-use super::ball::{BallArgs, LawArg, check_positive, param_message};
+use super::ball::{BallArgs, BallHeader, LawArg};
 use super::output::{self, csv_row, num, opt_num};
 use crate::analysis::sweep::{lin_space, log_space};
 use crate::model::contact::ContactLaw;
-use crate::model::params::validate_lambda_zeta;
+use crate::model::params::{Field, check_positive, validate_lambda_zeta};
 use clap::{Args, Subcommand, ValueEnum};
 use serde::Serialize;
 use std::io::Write;
@@ -122,11 +122,11 @@ fn zeta(a: &ZetaArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         anyhow::bail!("invalid lambda: no value given");
     }
     for &l in &a.lambda {
-        validate_lambda_zeta(l, 0.0).map_err(|e| anyhow::anyhow!(param_message(&e)))?;
+        validate_lambda_zeta(l, 0.0)?;
     }
     // ζ bounds must be positive: the range is log-spaced
-    check_positive("from", a.from)?;
-    check_positive("to", a.to)?;
+    check_positive(Field::From, a.from)?;
+    check_positive(Field::To, a.to)?;
     let law = ContactLaw::from(a.law);
     check_points(a.points, a.lambda.len(), law)?;
     let rows = super::budget::zeta_rows(&a.lambda, &log_space(a.from, a.to, a.points), law)?;
@@ -170,10 +170,8 @@ fn zeta(a: &ZetaArgs, out: &mut dyn Write) -> anyhow::Result<()> {
 #[derive(Serialize)]
 struct VelocityDoc<'a, T> {
     sweep: &'static str,
-    preset: Option<&'a str>,
-    origin: &'a str,
-    parameters: &'a str,
-    law: &'static str,
+    #[serde(flatten)]
+    ball: BallHeader<'a>,
     lambda: f64,
     zeta: f64,
     rows: &'a [T],
@@ -181,24 +179,22 @@ struct VelocityDoc<'a, T> {
 
 fn velocity(a: &VelocityArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     let b = a.ball.resolve(None)?;
-    let v0 = b.params.v0;
+    let v0 = b.ball.params.v0;
     let from = a.from.unwrap_or(0.1 * v0);
     let to = a.to.unwrap_or(3.0 * v0);
-    check_positive("from", from)?;
-    check_positive("to", to)?;
-    check_points(a.points, 1, b.law)?;
-    let rows = super::budget::velocity_rows(&b.params, b.law, &lin_space(from, to, a.points))?;
+    check_positive(Field::From, from)?;
+    check_positive(Field::To, to)?;
+    check_points(a.points, 1, b.ball.law)?;
+    let (params, law) = (&b.ball.params, b.ball.law);
+    let rows = super::budget::velocity_rows(params, law, &lin_space(from, to, a.points))?;
     match a.format {
         SweepFormat::Json => {
-            let n = b.params.normalized();
+            let n = b.ball.params.normalized();
             output::json(
                 out,
                 &VelocityDoc {
                     sweep: "velocity",
-                    preset: b.name.as_deref(),
-                    origin: &b.origin,
-                    parameters: b.source,
-                    law: b.law.name(),
+                    ball: b.header(),
                     lambda: n.lambda,
                     zeta: n.zeta,
                     rows: &rows,

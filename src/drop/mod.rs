@@ -22,8 +22,9 @@ pub use flight::{Air, Flight, G};
 pub use trajectory::Sample;
 
 use crate::model::contact::ContactLaw;
-use crate::model::params::{ImpactParams, display_number};
+use crate::model::params::ImpactParams;
 use crate::solver::{SolveError, SolveOptions, simulate};
+use crate::text::number;
 use serde::Serialize;
 use std::fmt;
 
@@ -131,7 +132,7 @@ impl fmt::Display for DropError {
                 field,
                 value,
                 reason,
-            } => write!(f, "invalid {field}: {} ({reason})", display_number(*value)),
+            } => write!(f, "invalid {field}: {} ({reason})", number(*value)),
             DropError::Solve(e) => write!(f, "{e}"),
         }
     }
@@ -267,8 +268,8 @@ impl DropRun {
         match self.setup.air {
             Some(a) => format!(
                 "quadratic drag ½ρC_dAv², ρ = {} kg/m³, C_d = {}",
-                display_number(a.density),
-                display_number(a.drag_coefficient)
+                number(a.density),
+                number(a.drag_coefficient)
             ),
             None => "no drag (vacuum)".into(),
         }

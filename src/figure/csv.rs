@@ -7,18 +7,8 @@
 //! reads back to the same `f64`.
 
 use super::Figure;
-use crate::model::params::display_number as num;
+use crate::text::{csv_field as field, number as num};
 use std::io::{self, Write};
-
-/// One field, quoted per RFC 4180 when it holds a comma, quote or line break (a user preset's
-/// name could).
-fn field(s: &str) -> String {
-    if s.contains([',', '"', '\n', '\r']) {
-        format!("\"{}\"", s.replace('"', "\"\""))
-    } else {
-        s.to_string()
-    }
-}
 
 /// Write every series of `fig`, in drawing order, to `out`.
 pub fn write(fig: &Figure, out: &mut dyn Write) -> io::Result<()> {

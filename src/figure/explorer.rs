@@ -8,11 +8,12 @@
 
 use super::history;
 use super::paper::{self, Ball};
-use super::{Figure, GREY, Kind, Look, Marker, Series, Style, Tone, short};
+use super::{Figure, GREY, Kind, Look, Marker, Series, Style, Tone};
 use crate::analysis::sweep::{VelocityPoint, ZetaPoint};
 use crate::model::contact::ContactLaw;
 use crate::model::params::ImpactParams;
 use crate::solver::ImpactResponse;
+use crate::text::short;
 
 /// Palette index of this run's marker: orange, which no model curve of these figures uses.
 const THIS_RUN_COLOR: usize = 4;

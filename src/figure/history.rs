@@ -2,9 +2,10 @@
 //! displacement, drawn from the sampled history of an [`ImpactResponse`].
 
 use super::paper::Ball;
-use super::{Axis, BLACK, Corner, Figure, GREY, Kind, Look, Marker, Series, Style, Tone, short};
+use super::{Axis, BLACK, Corner, Figure, GREY, Kind, Look, Marker, Series, Style, Tone};
 use crate::model::contact::ContactLaw;
 use crate::solver::ImpactResponse;
+use crate::text::short;
 
 /// "adopted parameters, linear law, v0 = 3.12 m/s (measured speed)"
 fn at_speed(ball: &Ball, v0: f64) -> String {

@@ -8,6 +8,12 @@
 //! Nothing here touches the file system or the terminal: rendering returns a `String` and the
 //! CSV writer takes any `io::Write`, so the command line and the explorer share one
 //! implementation.
+//!
+//! A new chart or overlay is written once, as data: a [`Figure`] whose series each have a
+//! [`Role`] (model, pinned, this run, measured, reference), a [`Style`] and palette colour for
+//! the picture, and a [`Look`] for the terminal (colour role, legend key, marker text). The
+//! SVG and CSV writers and the explorer's braille widget then all draw it; the explorer shows
+//! a chart by adding a [`explorer::Chart`] and a case in [`explorer::figure`].
 
 pub mod csv;
 pub mod explorer;
@@ -249,46 +255,5 @@ impl Figure {
             .filter(|v| v.is_finite() && (!axis.log || *v > 0.0));
         let first = it.next()?;
         Some(it.fold((first, first), |(lo, hi), v| (lo.min(v), hi.max(v))))
-    }
-}
-
-/// A number for a label: `sig` significant digits without trailing zeros (0.4, 1.3, 121.8,
-/// 3.12), exponent form beyond 1e6.
-pub fn short(x: f64, sig: usize) -> String {
-    if !x.is_finite() {
-        return crate::model::params::display_number(x);
-    }
-    if x == 0.0 {
-        return "0".into();
-    }
-    let mag = x.abs().log10().floor() as i32;
-    let trim = |s: &str| -> String {
-        if s.contains('.') {
-            s.trim_end_matches('0').trim_end_matches('.').to_string()
-        } else {
-            s.to_string()
-        }
-    };
-    if !(-4..6).contains(&mag) {
-        let s = format!("{:.*e}", sig.saturating_sub(1), x);
-        let (mantissa, exp) = s.split_once('e').unwrap_or((&s, "0"));
-        return format!("{}e{exp}", trim(mantissa));
-    }
-    let decimals = (sig as i32 - 1 - mag).max(0) as usize;
-    trim(&format!("{x:.decimals$}"))
-}
-
-#[cfg(test)]
-mod tests {
-    #[test]
-    fn short_numbers() {
-        use super::short;
-        assert_eq!(short(0.4, 3), "0.4");
-        assert_eq!(short(121.8, 4), "121.8");
-        assert_eq!(short(1.05e6, 4), "1.05e6");
-        assert_eq!(short(1.2e7, 4), "1.2e7");
-        assert_eq!(short(54500.0, 4), "54500");
-        assert_eq!(short(3e-3 * 1e3, 3), "3");
-        assert_eq!(short(0.0, 3), "0");
     }
 }

@@ -5,43 +5,20 @@
 //!
 //! Figs. 5–8 live in [`super::history`] and are re-exported here.
 //!
-//! The builders take computed data (sweep rows, an [`ImpactResponse`](crate::solver::ImpactResponse)) and return a figure, so
+//! The builders take computed data (sweep rows, an [`crate::solver::ImpactResponse`]) and return a figure, so
 //! a caller that already holds a response (the explorer) draws it without re-solving.
 
-use super::{Axis, BLACK, Corner, Figure, GREY, Kind, Look, Marker, Series, Style, Tone, short};
+use super::{Axis, BLACK, Corner, Figure, GREY, Kind, Look, Marker, Series, Style, Tone};
 use crate::analysis::sweep::{VelocityPoint, ZetaPoint};
 use crate::model::contact::ContactLaw;
 use crate::model::params::ImpactParams;
-use crate::preset::Measured;
 use crate::solver::SolveError;
 use crate::solver::{SolveOptions, simulate};
+use crate::text::short;
 
 pub use super::history::{force_displacement, force_time};
 
-/// A ball on the paper's charts: the parameters the model runs on and what was measured.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Ball {
-    pub name: String,
-    /// "adopted" or "materials": which parameter set `params` is.
-    pub source: String,
-    pub params: ImpactParams,
-    pub law: ContactLaw,
-    pub measured: Option<Measured>,
-}
-
-impl Ball {
-    /// "adopted parameters, linear law" (the title names the ball)
-    pub(super) fn describe(&self) -> String {
-        format!("{} parameters, {} law", self.source, self.law)
-    }
-
-    /// The measured values apply only at the speed they were measured at.
-    pub fn measured_at(&self, v0: f64) -> Option<&Measured> {
-        self.measured
-            .as_ref()
-            .filter(|m| (m.v0 - v0).abs() <= 1e-9 * m.v0)
-    }
-}
+pub use crate::ball::Ball;
 
 /// Line styles and colours of successive model curves: style and colour both change, so the
 /// curves stay apart in greyscale print too.

@@ -5,13 +5,13 @@
 //! [`compare`] runs the model; [`markdown`] is a pure function of its results, so the text is
 //! testable and reproducible (no dates, no paths).
 
-use super::short;
 use crate::analysis::fit::{Fit, FitError, fit_k_r};
 use crate::model::contact::ContactLaw;
 use crate::model::params::ImpactParams;
 use crate::preset::{Derived, Measured, ParamSource, Preset};
 use crate::solver::SolveError;
 use crate::solver::{ImpactResponse, SolveOptions, simulate};
+use crate::text::short;
 use std::fmt::Write;
 
 /// A model value further than this from the measured one (relative) is called a disagreement.

@@ -1,5 +1,5 @@
 //! The three contact laws F = f(z) (Eqs. 7–22), written in normalized units
-//! (F̄ = F/(m v0 ω0), z̄ = z ω0/v0, MODEL.md §5) where the linear stiffness K_p is 1.
+//! (F̄ = F/(m v0 ω0), z̄ = z ω0/v0, docs/model.md §5) where the linear stiffness K_p is 1.
 
 use serde::{Deserialize, Serialize};
 use std::fmt;
@@ -138,15 +138,15 @@ impl Contact {
 
     /// Force on an unloading branch: linear for the bilinear law (Eq. 22), 3/2 power otherwise
     /// (Eq. 12). Zero at and below z_f: contact is lost. Past z_m the branch goes on by the
-    /// same formula: a reload switches to the loading law there (MODEL.md §3), but the adaptive
-    /// solver switches a hair past z_m (see `solver::numeric::RELOAD_SLACK`), and the branch
-    /// must stay smooth up to the switch, for a stiff integrator's Newton iteration stalls on a
-    /// kink in the force.
+    /// same formula: a reload switches to the loading law there (docs/model.md §3), but the
+    /// adaptive solver switches a hair past z_m (see `solver::numeric::RELOAD_SLACK`), and the
+    /// branch must stay smooth up to the switch, for a stiff integrator's Newton iteration
+    /// stalls on a kink in the force.
     pub fn unloading_force(&self, z: f64, u: &Unloading) -> f64 {
         // An unloading branch entered at z_m ≤ z_f (the adaptive solver, in a stiff extreme,
         // can place the unload event at z ≤ 0, where F = 0) carries no force; the 3/2 power of
-        // the negative ratio would be NaN and poison the whole run (found by the solver_inputs
-        // fuzz target).
+        // the negative ratio would be NaN and poison the whole run (tests/fuzz_regressions.rs,
+        // `solver_inputs_regressions`; `unloading_from_no_indentation_has_no_force`).
         if z <= u.z_f || u.z_m <= u.z_f {
             return 0.0;
         }

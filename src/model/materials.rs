@@ -1,4 +1,4 @@
-//! Parameters from materials and geometry (MODEL.md §3–§4).
+//! Parameters from materials and geometry (docs/model.md §3–§4).
 
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
@@ -128,7 +128,7 @@ mod tests {
         (a - b).abs() <= rel * b.abs()
     }
 
-    /// MODEL.md §7: from the formulas the superball has z_p = 3.88 mm, K_p = 5.37e4 N/m,
+    /// docs/model.md §7: from the formulas the superball has z_p = 3.88 mm, K_p = 5.37e4 N/m,
     /// c = 140.3 kg/s, ρ = 892 kg/m³.
     #[test]
     fn superball_from_formulas() {

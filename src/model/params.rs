@@ -1,5 +1,6 @@
-//! Impact parameters, dimensional (SI) and normalized (MODEL.md §5, Eqs. 23, 24, 26).
+//! Impact parameters, dimensional (SI) and normalized (docs/model.md §5, Eqs. 23, 24, 26).
 
+use crate::text::number;
 use serde::{Deserialize, Serialize};
 use std::fmt;
 
@@ -26,7 +27,7 @@ pub struct ImpactParams {
     pub v0: f64,
 }
 
-/// The dimensionless groups that set the response (MODEL.md §5).
+/// The dimensionless groups that set the response (docs/model.md §5).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct Normalized {
     /// λ = K_r / K_p, relative stiffness (Eq. 24).
@@ -39,46 +40,73 @@ pub struct Normalized {
     pub kappa: f64,
 }
 
-/// A parameter that cannot be used, named by field.
-#[derive(Debug, Clone, PartialEq)]
+/// The quantity a [`ParamError`] names; it displays as the name messages give it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Field {
+    Mass,
+    KP,
+    Damping,
+    KR,
+    ZP,
+    KH,
+    V0,
+    Lambda,
+    Zeta,
+    ZpBar,
+    /// The solver's relative tolerance.
+    Rtol,
+    /// The solver asked for (the exact one runs the linear law only).
+    Method,
+    /// The first value of a sweep's range.
+    From,
+    /// The last value of a sweep's range.
+    To,
+}
+
+impl Field {
+    /// The name messages give the field: `k_p`, `zp_bar`, `lambda`, …
+    pub const fn as_str(self) -> &'static str {
+        match self {
+            Field::Mass => "mass",
+            Field::KP => "k_p",
+            Field::Damping => "damping",
+            Field::KR => "k_r",
+            Field::ZP => "z_p",
+            Field::KH => "k_h",
+            Field::V0 => "v0",
+            Field::Lambda => "lambda",
+            Field::Zeta => "zeta",
+            Field::ZpBar => "zp_bar",
+            Field::Rtol => "rtol",
+            Field::Method => "method",
+            Field::From => "from",
+            Field::To => "to",
+        }
+    }
+}
+
+impl fmt::Display for Field {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.as_str())
+    }
+}
+
+/// A parameter that cannot be used, named by field: "invalid v0: 1e300 (out of the physically
+/// meaningful range 1e-15 … 1e15)".
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error("invalid {field}: {} ({reason})", number(*.value))]
 pub struct ParamError {
-    pub field: &'static str,
+    pub field: Field,
     pub value: f64,
     pub reason: &'static str,
 }
 
-impl fmt::Display for ParamError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(
-            f,
-            "invalid {}: {} ({})",
-            self.field,
-            display_number(self.value),
-            self.reason
-        )
-    }
-}
-
-/// A number for messages and CSV: plain decimals in [1e-4, 1e7), exponent notation outside
-/// it (so 1e300 is not 301 digits), `inf`/`-inf`/`NaN` spelled out; shortest round-trip form.
-pub fn display_number(x: f64) -> String {
-    if x.is_nan() {
-        "NaN".into()
-    } else if x.is_infinite() {
-        if x > 0.0 { "inf".into() } else { "-inf".into() }
-    } else if x == 0.0 || (1e-4..1e7).contains(&x.abs()) {
-        format!("{x}")
-    } else {
-        format!("{x:e}")
-    }
-}
-
 /// A finite, positive value in the meaningful range 1e-15 … 1e15, or an error naming `field`.
-pub fn check_positive(field: &'static str, value: f64) -> Result<(), ParamError> {
+pub fn check_positive(field: Field, value: f64) -> Result<(), ParamError> {
     check(field, value, false, false)
 }
 
-/// The largest λ and ζ accepted. Beyond them the limits of MODEL.md §5 hold to the precision
+/// The largest λ and ζ accepted. Beyond them the limits of docs/model.md §5 hold to the precision
 /// of the arithmetic (ζ = 1e6 is within 1e-6 of the ζ → ∞ limit), while the exact solver's
 /// modes span more than twelve decades and its sums lose their digits.
 pub const LAMBDA_MAX: f64 = 1e6;
@@ -86,21 +114,15 @@ pub const ZETA_MAX: f64 = 1e6;
 /// The smallest z̄_p = z_p ω0/v0 accepted, as `--zp-bar` already requires. Each of z_p, K_p,
 /// m, v0 may lie anywhere in 1e-15 … 1e15, but together they reached z̄_p = 4e-35: the ball
 /// then flattens to z_m with z_r = z_p √(2 z_m/z_p − 1) below the rounding of z_m, z_f = z_m,
-/// and the unloading slope F_m/(z_m − z_f) is infinite (the exact solver returned an infinite
-/// duration; found by the solver_inputs fuzz target). Its energy balance is 4e-8 at 1e-15.
+/// and the unloading slope F_m/(z_m − z_f) is infinite. At 1e-15 the run still closes its
+/// energy balance (to ~4e-8); the solver_inputs fuzz target's regressions
+/// (tests/fuzz_regressions.rs, `solver_inputs_regressions`) hold the refusal below it.
 pub const ZP_BAR_MIN: f64 = 1e-15;
-
-impl std::error::Error for ParamError {}
 
 /// Largest magnitude accepted for any parameter: beyond it products overflow or lose meaning.
 const ABSURD: f64 = 1e15;
 
-fn check(
-    field: &'static str,
-    value: f64,
-    allow_zero: bool,
-    allow_inf: bool,
-) -> Result<(), ParamError> {
+fn check(field: Field, value: f64, allow_zero: bool, allow_inf: bool) -> Result<(), ParamError> {
     let err = |reason| {
         Err(ParamError {
             field,
@@ -138,31 +160,31 @@ impl ImpactParams {
 
     /// Check every field; the first bad one is named.
     pub fn validate(&self) -> Result<(), ParamError> {
-        check("mass", self.mass, false, false)?;
-        check("k_p", self.k_p, false, false)?;
-        check("damping", self.damping, false, true)?;
-        check("k_r", self.k_r, true, false)?;
-        check("z_p", self.z_p, false, true)?;
-        check("k_h", self.k_h, false, false)?;
-        check("v0", self.v0, false, false)?;
+        check(Field::Mass, self.mass, false, false)?;
+        check(Field::KP, self.k_p, false, false)?;
+        check(Field::Damping, self.damping, false, true)?;
+        check(Field::KR, self.k_r, true, false)?;
+        check(Field::ZP, self.z_p, false, true)?;
+        check(Field::KH, self.k_h, false, false)?;
+        check(Field::V0, self.v0, false, false)?;
         let n = self.normalized();
         if n.lambda > LAMBDA_MAX {
             return Err(ParamError {
-                field: "lambda",
+                field: Field::Lambda,
                 value: n.lambda,
                 reason: "K_r/K_p above 1e6: the recoil spring is rigid, use a smaller K_r",
             });
         }
         if n.zeta > ZETA_MAX {
             return Err(ParamError {
-                field: "zeta",
+                field: Field::Zeta,
                 value: n.zeta,
                 reason: "√(m K_p)/(2c) above 1e6: the dashpot is absent, use a larger c",
             });
         }
         if n.zp_bar < ZP_BAR_MIN {
             return Err(ParamError {
-                field: "zp_bar",
+                field: Field::ZpBar,
                 value: n.zp_bar,
                 reason: "z_p ω0/v0 below 1e-15: the ball would flatten to a vertical unloading \
                          line, use a larger z_p or a lower v0",
@@ -171,7 +193,7 @@ impl ImpactParams {
         Ok(())
     }
 
-    /// The normalized groups λ, ζ, z̄_p, κ (MODEL.md §5).
+    /// The normalized groups λ, ζ, z̄_p, κ (docs/model.md §5).
     pub fn normalized(&self) -> Normalized {
         let w0 = self.omega0();
         Normalized {
@@ -214,9 +236,8 @@ impl ImpactParams {
 
 /// c = √(m K_p) / (2ζ), Eq. 24 inverted; ζ = 0 gives an infinitely stiff dashpot.
 pub fn damping_for_zeta(mass: f64, k_p: f64, zeta: f64) -> f64 {
-    // ζ = −0 passes `validate_lambda_zeta` (it is zero) but would divide into c = −∞, which
-    // `validate` then rejected as "invalid damping: -inf" for a ζ the caller gave (found by the
-    // solver_inputs fuzz target): both zeros are the rigid dashpot.
+    // Both zeros are the rigid dashpot: ζ = −0 passes `validate_lambda_zeta` (it is zero), and
+    // dividing by it would give c = −∞, which `validate` rejects (`zeta_zero_is_rigid_dashpot`).
     if zeta == 0.0 {
         return f64::INFINITY;
     }
@@ -225,18 +246,18 @@ pub fn damping_for_zeta(mass: f64, k_p: f64, zeta: f64) -> f64 {
 
 /// Check a normalized pair before use (λ ≥ 0, ζ ≥ 0, both finite).
 pub fn validate_lambda_zeta(lambda: f64, zeta: f64) -> Result<(), ParamError> {
-    check("lambda", lambda, true, false)?;
-    check("zeta", zeta, true, false)?;
+    check(Field::Lambda, lambda, true, false)?;
+    check(Field::Zeta, zeta, true, false)?;
     if lambda > LAMBDA_MAX {
         return Err(ParamError {
-            field: "lambda",
+            field: Field::Lambda,
             value: lambda,
             reason: "above 1e6, where the recoil spring is rigid",
         });
     }
     if zeta > ZETA_MAX {
         return Err(ParamError {
-            field: "zeta",
+            field: Field::Zeta,
             value: zeta,
             reason: "above 1e6, where the dashpot is absent",
         });
@@ -274,30 +295,33 @@ mod tests {
     fn validation_names_the_field() {
         let mut p = ImpactParams::from_normalized(1.0, 0.1, f64::INFINITY);
         p.mass = f64::NAN;
-        assert_eq!(p.validate().unwrap_err().field, "mass");
+        assert_eq!(p.validate().unwrap_err().field, Field::Mass);
         p.mass = 1.0;
         p.k_r = -1.0;
-        assert_eq!(p.validate().unwrap_err().field, "k_r");
+        assert_eq!(p.validate().unwrap_err().field, Field::KR);
         p.k_r = 0.0;
         assert!(p.validate().is_ok());
         p.v0 = 0.0;
-        assert_eq!(p.validate().unwrap_err().field, "v0");
+        assert_eq!(p.validate().unwrap_err().field, Field::V0);
         p.v0 = 1e300;
         let e = p.validate().unwrap_err();
-        assert_eq!(e.field, "v0");
+        assert_eq!(e.field, Field::V0);
         assert_eq!(
             e.to_string(),
             "invalid v0: 1e300 (out of the physically meaningful range 1e-15 … 1e15)"
         );
         p.v0 = 1.0;
         p.damping = 1e-9;
-        assert_eq!(p.validate().unwrap_err().field, "zeta");
-        assert_eq!(validate_lambda_zeta(2e6, 1.0).unwrap_err().field, "lambda");
+        assert_eq!(p.validate().unwrap_err().field, Field::Zeta);
+        assert_eq!(
+            validate_lambda_zeta(2e6, 1.0).unwrap_err().field,
+            Field::Lambda
+        );
         // each field in range, z̄_p = z_p ω0/v0 = 1e-15 · 1 / 1e15 not
         p.damping = 1.0;
         p.z_p = 1e-15;
         p.v0 = 1e15;
-        assert_eq!(p.validate().unwrap_err().field, "zp_bar");
+        assert_eq!(p.validate().unwrap_err().field, Field::ZpBar);
         p.v0 = 1.0;
         assert!(p.validate().is_ok());
     }

@@ -5,7 +5,8 @@
 //! naming the key to change (tests/cli_guarantees.rs, `a_preset_the_commands_refuse_is_refused_at_load`).
 
 use super::{Bad, ParamSource, Preset};
-use crate::model::params::{ParamError, display_number};
+use crate::model::params::{Field, ParamError};
+use crate::text::number;
 
 /// The first parameter of the preset's own set that the solver would refuse.
 pub(super) fn check(p: &Preset) -> Result<(), Bad> {
@@ -16,17 +17,17 @@ pub(super) fn check(p: &Preset) -> Result<(), Bad> {
 fn bad(source: ParamSource, e: &ParamError) -> Bad {
     let adopted = source == ParamSource::Adopted;
     let (table, key) = match e.field {
-        "mass" => ("measured", "mass"),
-        "v0" => ("measured", "v0"),
-        "k_r" | "lambda" => ("adopted", "k_r"),
+        Field::Mass => ("measured", "mass"),
+        Field::V0 => ("measured", "v0"),
+        Field::KR | Field::Lambda => ("adopted", "k_r"),
         // K_h follows K_p and z_p (Eq. 16); K_p, c and z_p come from the material otherwise
-        "k_p" | "k_h" if adopted => ("adopted", "k_p"),
-        "damping" | "zeta" if adopted => ("adopted", "damping"),
-        "z_p" | "zp_bar" if adopted => ("adopted", "z_p"),
+        Field::KP | Field::KH if adopted => ("adopted", "k_p"),
+        Field::Damping | Field::Zeta if adopted => ("adopted", "damping"),
+        Field::ZP | Field::ZpBar if adopted => ("adopted", "z_p"),
         _ => ("material", "modulus"),
     };
-    let value = display_number(e.value);
-    let message = if e.field == key {
+    let value = number(e.value);
+    let message = if e.field.as_str() == key {
         format!("{value} cannot be run: {}", e.reason)
     } else {
         format!(

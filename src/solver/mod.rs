@@ -1,14 +1,19 @@
 //! Solving one impact: the exact linear solver and the adaptive numerical one, and the result
-//! they both return (MODEL.md §2, Eq. 6).
+//! they both return (docs/model.md §2, Eq. 6).
 
 pub mod audit;
 pub mod exact;
 pub mod numeric;
+mod outcome;
 pub mod propagator;
 pub mod roots;
 
+use outcome::to_si;
+pub(crate) use outcome::{Outcome, Sample};
+
 use crate::model::contact::{Contact, ContactLaw};
-use crate::model::params::{ImpactParams, Normalized, ParamError, display_number};
+use crate::model::params::{Field, ImpactParams, Normalized, ParamError};
+use crate::text::number;
 use serde::Serialize;
 
 /// Which integrator runs the impact.
@@ -117,7 +122,7 @@ pub struct History {
     pub displacement: Vec<f64>,
 }
 
-/// The answer to one impact, SI units (MODEL.md §2).
+/// The answer to one impact, SI units (docs/model.md §2).
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct ImpactResponse {
     pub law: ContactLaw,
@@ -160,76 +165,50 @@ pub struct ImpactResponse {
 }
 
 /// Why an impact has no answer.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum SolveError {
     /// A parameter is out of its domain.
-    Param(ParamError),
+    #[error(transparent)]
+    Param(#[from] ParamError),
     /// The solver ran out of its step or phase budget before the ball left or came to rest:
     /// rather than pass a truncated run off as "no rebound", it says so.
+    #[error(
+        "no answer at λ = {}, ζ = {}: {reason} ({steps} steps); a nearby λ or ζ may answer",
+        number(*.lambda),
+        number(*.zeta)
+    )]
     Unresolved {
-        reason: &'static str,
+        reason: Unresolved,
         steps: usize,
         lambda: f64,
         zeta: f64,
     },
 }
 
-impl From<ParamError> for SolveError {
-    fn from(e: ParamError) -> Self {
-        SolveError::Param(e)
-    }
-}
-
-impl std::fmt::Display for SolveError {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        match self {
-            SolveError::Param(e) => write!(f, "{e}"),
-            SolveError::Unresolved {
-                reason,
-                steps,
-                lambda,
-                zeta,
-            } => write!(
-                f,
-                "no answer at λ = {}, ζ = {}: {reason} ({steps} steps); \
-                 a nearby λ or ζ may answer",
-                display_number(*lambda),
-                display_number(*zeta)
-            ),
-        }
-    }
-}
-
-impl std::error::Error for SolveError {}
-
-/// What a solver returns, in normalized units (MODEL.md §5).
-#[derive(Debug, Clone, Default)]
-pub(crate) struct Outcome {
-    pub rebound: bool,
-    /// τ at separation, or at the horizon.
-    pub tau_end: f64,
-    /// ᾱ' at τ_end.
-    pub velocity_end: f64,
-    /// ȳ at τ_end.
-    pub y_end: f64,
-    pub f_max: f64,
-    pub z_max: f64,
-    pub z_f: f64,
-    /// (τ, kind, z̄)
-    pub events: Vec<(f64, EventKind, f64)>,
-    /// Net contact work ∮ F̄ dz̄.
-    pub contact_work: f64,
-    /// ∫ ȳ'²/(2ζ) dτ, when asked for.
-    pub dashpot: Option<f64>,
-    /// Solver steps taken (exact: propagator steps; adaptive: accepted and rejected steps).
-    pub steps: usize,
-    /// A stiff integrator carried some of the run.
-    pub stiff: bool,
-    /// Why the run could not be brought to an end (a step or phase budget ran out, the
-    /// integrator gave up): the outcome is then not an answer.
-    pub unresolved: Option<&'static str>,
-    /// (τ, F̄, z̄, ᾱ) at evenly spaced τ.
-    pub samples: Vec<[f64; 4]>,
+/// Why a run could not be brought to an end: a budget ran out, or the integrators gave up.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, thiserror::Error)]
+pub enum Unresolved {
+    /// The exact solver's phase budget (`exact::MAX_PHASES`).
+    #[error("more than 64 load–unload phases")]
+    ExactPhases,
+    /// The exact solver's step budget of one phase (`exact::MAX_STEPS`).
+    #[error("the step budget of a phase ran out before its end")]
+    ExactPhaseSteps,
+    /// The adaptive solver's phase budget (`numeric::MAX_PHASES`).
+    #[error("more than 4096 load–unload phases")]
+    Phases,
+    /// The adaptive solver's budget of flips at a turn (`numeric::MAX_FLIPS`).
+    #[error("more than 131072 flips between load and unload at a turn")]
+    Flips,
+    /// The adaptive solver's step budget of one impact (`numeric::TOTAL_STEPS`).
+    #[error("the step budget of the impact ran out")]
+    Steps,
+    /// Every integrator of the cascade gave up on a phase, and no closed form could end it.
+    #[error("the integrator gave up before the end of contact")]
+    GaveUp,
+    /// The horizon came first, with the ball neither gone nor at rest.
+    #[error("the ball neither left nor came to rest within the horizon")]
+    Horizon,
 }
 
 /// Run one impact with dimensional parameters.
@@ -241,7 +220,7 @@ pub fn simulate(
     params.validate()?;
     if !(opts.rtol > 0.0 && opts.rtol < 1e-2) {
         return Err(ParamError {
-            field: "rtol",
+            field: Field::Rtol,
             value: opts.rtol,
             reason: "must lie in (0, 1e-2)",
         }
@@ -257,7 +236,7 @@ pub fn simulate(
         (Some(Method::Exact), ContactLaw::Linear) | (None, ContactLaw::Linear) => Method::Exact,
         (Some(Method::Exact), _) => {
             return Err(ParamError {
-                field: "method",
+                field: Field::Method,
                 value: f64::NAN,
                 reason: "the exact solver runs the linear law only",
             }
@@ -293,74 +272,4 @@ pub fn simulate_normalized(
         law,
         opts,
     )
-}
-
-fn to_si(
-    p: &ImpactParams,
-    n: Normalized,
-    law: ContactLaw,
-    method: Method,
-    o: Outcome,
-) -> ImpactResponse {
-    let w0 = p.omega0();
-    let (t, z, f) = (1.0 / w0, p.v0 / w0, p.mass * p.v0 * w0);
-    let energy_unit = p.mass * p.v0 * p.v0;
-    // e ∈ [0, 1] physically (the dashpot only dissipates); rounding or the stiff integrator's
-    // tolerance can put the computed value a hair outside. Projecting onto the admissible
-    // interval can only move it closer to the true value.
-    let cor = if o.rebound {
-        (-o.velocity_end).clamp(0.0, 1.0)
-    } else {
-        0.0
-    };
-    let energy = o.dashpot.map(|d| EnergyBudget {
-        initial_kinetic: 0.5 * energy_unit,
-        final_kinetic: 0.5 * energy_unit * o.velocity_end * o.velocity_end,
-        dashpot: d * energy_unit,
-        contact: o.contact_work * energy_unit,
-        spring: 0.5 * n.lambda * o.y_end * o.y_end * energy_unit,
-    });
-    let n_samples = o.samples.len();
-    let mut history = History {
-        t: Vec::with_capacity(n_samples),
-        force: Vec::with_capacity(n_samples),
-        indentation: Vec::with_capacity(n_samples),
-        displacement: Vec::with_capacity(n_samples),
-    };
-    for s in &o.samples {
-        history.t.push(s[0] * t);
-        history.force.push(s[1] * f);
-        history.indentation.push(s[2] * z);
-        history.displacement.push(s[3] * z);
-    }
-    ImpactResponse {
-        law,
-        method,
-        cor,
-        rebound: o.rebound,
-        max_force: o.f_max * f,
-        contact_time: o.rebound.then_some(o.tau_end * t),
-        duration: o.tau_end * t,
-        max_indentation: o.z_max * z,
-        permanent_indentation: o.z_f * z,
-        element_displacement: o.y_end * z,
-        max_force_normalized: o.f_max,
-        element_displacement_normalized: o.y_end,
-        contact_time_normalized: o.rebound.then_some(o.tau_end),
-        normalized: n,
-        // by value: the same layout, so the allocation is reused in place
-        events: o
-            .events
-            .into_iter()
-            .map(|(tau, kind, zb)| PhaseEvent {
-                t: tau * t,
-                kind,
-                z: zb * z,
-            })
-            .collect(),
-        energy,
-        history,
-        steps: o.steps,
-        stiff: o.stiff,
-    }
 }

@@ -13,7 +13,6 @@ use super::action::{Action, Mode};
 use super::compute::{self, SpeedCurve, SpeedRequest, ZetaCurve};
 pub use super::effect::Effect;
 use super::export;
-use super::format::sig_trim;
 use super::param::Param;
 use super::save::SaveRequest;
 pub use super::state::{Confirm, Ghost, Input, Message, Overlay, Purpose, Setting, Severity, View};
@@ -21,6 +20,7 @@ use crate::model::contact::ContactLaw;
 use crate::model::params::ImpactParams;
 use crate::preset::Preset;
 use crate::solver::ImpactResponse;
+use crate::text::sig_trim;
 
 /// How many changes `u` can undo.
 const UNDO_DEPTH: usize = 500;

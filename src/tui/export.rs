@@ -5,7 +5,7 @@
 //! The figures are the ones on screen ([`crate::figure::explorer`]), built from the curves the
 //! state already holds — nothing is re-solved. `App::update` stays free of side effects: it
 //! builds an [`ExportRequest`] with [`request`] (pure) and returns it as an effect; the event
-//! loop hands it to [`write`], the only part that touches the file system, and reports back
+//! loop hands it to [`write()`], the only part that touches the file system, and reports back
 //! with `Action::Exported` or `Action::ExportFailed`; [`message`] is what the header then
 //! says.
 //!
@@ -15,6 +15,7 @@
 
 use crate::figure::explorer::{self, Chart, Scene};
 use crate::figure::{Figure, csv, svg};
+use crate::text::io_text;
 use std::fs;
 use std::io;
 use std::path::{Path, PathBuf};
@@ -139,15 +140,6 @@ fn create_all(paths: &[PathBuf], contents: &[String]) -> Result<(), (PathBuf, io
         files.text(path, text).map_err(|e| (e.path, e.error))?;
     }
     files.commit().map(drop).map_err(|e| (e.path, e.error))
-}
-
-/// An I/O error without the "(os error N)" tail.
-fn io_text(e: &io::Error) -> String {
-    let s = e.to_string();
-    match s.find(" (os error") {
-        Some(i) => s[..i].to_string(),
-        None => s,
-    }
 }
 
 /// A folder for the header line: as given when short, else its last two parts after `…/`.

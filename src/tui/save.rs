@@ -4,7 +4,7 @@
 //! As with the export, `App::update` stays free of side effects: on Enter in the name prompt it
 //! checks the name ([`check_name`]), builds a [`SaveRequest`] with the file's text
 //! ([`request`], pure) and returns it as an effect; the event loop hands the request to
-//! [`write`], the only part that touches the file system, which answers with an action: saved,
+//! [`write()`], the only part that touches the file system, which answers with an action: saved,
 //! failed, or "that file exists" — then the explorer asks `overwrite <file>? y/n` and only `y`
 //! returns the request again, now allowed to replace that one file.
 //!
@@ -16,11 +16,11 @@
 
 use super::action::Action;
 use super::export::{file_stem_part, short_dir};
-use super::format::sig_trim;
 use super::setting::Setting;
 use crate::catalog::{self, Catalog, Origin};
 use crate::model::contact::ContactLaw;
 use crate::preset::{Adopted, EMBEDDED, Measured, ParamSource, Preset};
+use crate::text::{io_text, sig_trim};
 use std::io;
 use std::path::{Path, PathBuf};
 
@@ -260,15 +260,6 @@ fn exists(catalog: &Catalog, path: PathBuf) -> Action {
         .find(|e| e.origin == Origin::File(path.clone()))
         .map(|e| e.preset.name.clone());
     Action::SaveExists { path, holds }
-}
-
-/// An I/O error without the "(os error N)" tail.
-fn io_text(e: &io::Error) -> String {
-    let s = e.to_string();
-    match s.find(" (os error") {
-        Some(i) => s[..i].to_string(),
-        None => s,
-    }
 }
 
 /// A preset file for the header line: its folder shortened as the export does.

@@ -1,7 +1,9 @@
 //! The exact solver's energy audit: the dashpot's dissipation ∫ ȳ'²/(2ζ) dτ, by quadrature on
 //! the exact flow of each phase (Eq. 2's dashpot).
 
-use super::{Modes, Segment, eval_anchored, y_scale};
+use super::modes::Modes;
+use super::search::eval_anchored;
+use super::{Segment, y_scale};
 
 /// ∫ ȳ'²/(2ζ) dτ = ∫ 2ζ (F̄ − λȳ)² dτ over one segment, by Gauss–Legendre on the search grid.
 pub(super) fn dashpot_energy(seg: &Segment, lambda: f64, zeta: f64) -> f64 {

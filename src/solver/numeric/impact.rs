@@ -1,5 +1,5 @@
 //! The impact as the integrators see it: the contact branch in force, the first-order system
-//! of MODEL.md §2 in normalized form, and what bounds the COR a ball can still leave with.
+//! of docs/model.md §2 in normalized form, and what bounds the COR a ball can still leave with.
 
 use super::creep::{self, Closed};
 use super::{ATOL_FACTOR, CREEP_TOL, REST_COR, X};
@@ -52,9 +52,9 @@ impl Impact {
     /// e ≤ 4ζλȳ + √(2(KE + W)). An argument, not a proof (ȳ can still grow while the contact
     /// pushes harder than the spring, from energy the second term counts), and used only
     /// where it is far below the energy bound: a ball at the integrator's noise floor with a
-    /// spring so soft that it holds ½λȳ² but drives the ball at only 2ζλȳ (λ = 1e-15, ζ = 5:
-    /// e = 1e-13 at τ ≈ 600, the separation a crossing of z̄ ~ 1e-27). There the noise crossed
-    /// z̄_f with the ball still moving in, phase after phase, until the budget ran out.
+    /// spring so soft that it holds ½λȳ² but drives the ball at only 2ζλȳ, whose separation
+    /// (a crossing of z̄ ~ 1e-27) no integrator resolves; it is at rest, and the run answers
+    /// (tests/solver_agreement.rs, `adaptive_creeps_out_at_a_soft_spring`: λ = 1e-15, ζ = 5).
     pub(super) fn cor_bound(&self, x: &X) -> f64 {
         let (z, v) = (x[0], x[1]);
         let contact = match self.phase {
@@ -132,11 +132,11 @@ impl Impact {
     /// that unloads from it (the two meet there), so the loading force at the reload exceeds
     /// the unloading one by (slope difference) × slack. Against a weak dashpot that jump turns
     /// z̄' negative at once (2ζ × it, against a creep of z̄' ~ 6e-9): an unload, a reload a
-    /// slack higher, and so on, 3 steps a phase, until the phase budget ran out (λ = 1.4e-8,
-    /// ζ = 1e4, a ball creeping in at ᾱ' ≈ 0.7 past yield). At the same force the ball goes on
-    /// creeping in on the loading branch. The ball stays put; the element moves by Δ = z̄ − z̄',
-    /// the spring taking λȳΔ of the contact's FΔ and the dashpot (F − λȳ)Δ, so the energy
-    /// balance is kept.
+    /// slack higher, and so on without end. At the same force the ball goes on creeping in on
+    /// the loading branch (tests/solver_agreement.rs,
+    /// `a_creep_past_yield_reloads_at_the_same_force`). The ball stays put; the element moves
+    /// by Δ = z̄ − z̄', the spring taking λȳΔ of the contact's FΔ and the dashpot (F − λȳ)Δ, so
+    /// the energy balance is kept.
     pub(super) fn reload_where_forces_meet(&self, u: &Unloading, x: &mut X) -> f64 {
         let (z, spring) = (x[0], self.lambda * x[2]);
         let f = self.contact.unloading_force(z, u);
@@ -191,12 +191,11 @@ impl ODE<f64, X> for Impact {
     /// The Jacobian of `diff`, written out rather than left to the crate's forward
     /// differences: those perturb each state by 1.5e-8 · max(|x|, 1), wider than the
     /// indentations a creeping ball lives on (z̄ ~ 1e-5 down to 1e-16) and than its distance to
-    /// a kink of the force. Within 4e-9 of the elastic–plastic yield point z̄_p the difference
-    /// reached across it into the linear branch and gave a third of the Hertz slope (2.9
-    /// against 8.2); Radau5's Newton iteration then converged only on steps near the
-    /// dashpot's time, ~1e-5 ω0⁻¹, and a fresh start there (the integration to a yield event)
-    /// ran out of steps short of it, every integrator of the cascade in turn (λ = 7.2e-9,
-    /// ζ = 7 911, K_h = 2.5e12 N/m^1.5).
+    /// a kink of the force: near the elastic–plastic yield point z̄_p a difference reaches
+    /// across it into the linear branch and gives the wrong slope, on which Radau5's Newton
+    /// iteration converges only on steps near the dashpot's time (tests/solver_agreement.rs,
+    /// `a_yield_met_mid_creep_against_a_stiff_contact_answers`; the written-out form is
+    /// `the_jacobian_is_the_derivative_of_the_system` below).
     ///
     /// With k = dF̄/dz̄ and ȳ' = 2ζ(F̄ − λȳ): ∂ȳ'/∂z̄ = 2ζk, ∂ȳ'/∂ȳ = −2ζλ, and
     /// Ē_d' = ȳ'²/(2ζ) has the gradient (ȳ'/ζ) ∇ȳ' = 2ȳ' (k, 0, −λ, 0).

@@ -44,19 +44,27 @@ impl Watch {
     }
 }
 
-/// The custom solout: finds the first watched crossing (terminal), and records evenly spaced
-/// samples from the dense output when asked to.
-pub(super) struct Watcher<'a> {
-    pub(super) imp: &'a Impact,
-    pub(super) watches: Vec<Watch>,
-    /// The first watched crossing: (time, the step's start, the step's start state, watch).
-    pub(super) hit: Option<(f64, f64, X, Watch)>,
-    pub(super) grid: &'a [f64],
-    pub(super) next_sample: usize,
-    pub(super) samples: Vec<(f64, X)>,
-    pub(super) t_stop: f64,
-    /// The last accepted step, where an event-less integration stopped.
+/// The first watched crossing found on a step's dense output.
+#[derive(Clone, Copy, Debug)]
+struct Hit {
+    /// When g crosses zero.
+    t: f64,
+    /// The start of the step it was found in, and the state there.
+    t_prev: f64,
+    x_prev: X,
+    watch: Watch,
+}
+
+/// One phase as integrated: where it ended, on which event, and what it cost.
+#[derive(Debug)]
+pub(super) struct Integrated {
+    /// The event it ended on; `None` at `t_stop`, at rest, when the cascade gave up before
+    /// any event, or at an event the integration to it did not confirm (`spurious`).
+    pub(super) hit: Option<Watch>,
+    /// (τ, x) where it ended: the event, the last accepted step, or where the cascade gave up.
     pub(super) last: (f64, X),
+    /// The grid's samples it covered, (τ, x) each.
+    pub(super) samples: Vec<(f64, X)>,
     /// Steps taken (accepted and rejected), the re-integration to an event included.
     pub(super) steps: usize,
     /// The integrator gave up (step budget, step size underflow) before an event or `t_stop`.
@@ -67,6 +75,39 @@ pub(super) struct Watcher<'a> {
     pub(super) stage: usize,
     /// The phase stopped at an event the integration to it did not confirm; it goes on.
     pub(super) spurious: bool,
+}
+
+/// The custom solout: finds the first watched crossing (terminal), and records evenly spaced
+/// samples from the dense output when asked to.
+struct Watcher<'a> {
+    imp: &'a Impact,
+    watches: Vec<Watch>,
+    hit: Option<Hit>,
+    grid: &'a [f64],
+    samples: Vec<(f64, X)>,
+    t_stop: f64,
+    /// The last accepted step, where an event-less integration stopped.
+    last: (f64, X),
+    steps: usize,
+    failed: bool,
+    stiff: bool,
+    stage: usize,
+    spurious: bool,
+}
+
+impl Watcher<'_> {
+    fn into_integrated(self) -> Integrated {
+        Integrated {
+            hit: self.hit.map(|h| h.watch),
+            last: self.last,
+            samples: self.samples,
+            steps: self.steps,
+            failed: self.failed,
+            stiff: self.stiff,
+            stage: self.stage,
+            spurious: self.spurious,
+        }
+    }
 }
 
 impl Solout<f64, X> for Watcher<'_> {
@@ -109,14 +150,19 @@ impl Solout<f64, X> for Watcher<'_> {
         }
         self.last = (t_curr, *y_curr);
         let end = best.map_or(t_curr.min(self.t_stop), |(t, _)| t);
-        while self.next_sample < self.grid.len() && self.grid[self.next_sample] <= end {
-            let t = self.grid[self.next_sample].max(t_prev);
-            self.samples.push((self.grid[self.next_sample], at(t)));
-            self.next_sample += 1;
+        while let Some(&ts) = self.grid.get(self.samples.len())
+            && ts <= end
+        {
+            self.samples.push((ts, at(ts.max(t_prev))));
         }
         match best {
-            Some((t, w)) => {
-                self.hit = Some((t, t_prev, *y_prev, w));
+            Some((t, watch)) => {
+                self.hit = Some(Hit {
+                    t,
+                    t_prev,
+                    x_prev: *y_prev,
+                    watch,
+                });
                 ControlFlag::Terminate
             }
             None if t_curr >= self.t_stop => ControlFlag::Terminate,
@@ -130,21 +176,20 @@ impl Solout<f64, X> for Watcher<'_> {
 /// Integrate one phase from (t0, x0) until a watched event or `t_stop`, down the integrator
 /// cascade from its entry (the stiff one when the dashpot is stiff there), or from `floor` if
 /// that is later.
-pub(super) fn integrate<'a>(
-    imp: &'a Impact,
+pub(super) fn integrate(
+    imp: &Impact,
     (t0, x0): (f64, X),
     t_stop: f64,
     watches: Vec<Watch>,
-    grid: &'a [f64],
+    grid: &[f64],
     rtol: f64,
     floor: usize,
-) -> Watcher<'a> {
+) -> Integrated {
     let mut w = Watcher {
         imp,
         watches,
         hit: None,
         grid,
-        next_sample: 0,
         samples: Vec::new(),
         t_stop,
         last: (t0, x0),
@@ -164,7 +209,7 @@ pub(super) fn integrate<'a>(
         0
     };
     // From `floor` on, then round to the stages between the entry and it: a floor is where a
-    // phase that goes on after a noise crossing prefers to start (see `run_phases`), not a
+    // phase that goes on after a noise crossing prefers to start (see `PhaseRunner`), not a
     // bar to the integrators above it, which may still carry it where those below give up.
     let stages = (entry.max(floor)..CASCADE.len()).chain(entry..floor);
     let Some(stage) = first_to_finish(stages, |method| {
@@ -175,38 +220,45 @@ pub(super) fn integrate<'a>(
         !run.failed || w.hit.is_some()
     }) else {
         w.failed = true;
-        return w;
+        return w.into_integrated();
     };
     w.stage = stage;
-    let Some((t, t_prev, x_prev, watch)) = w.hit else {
-        return w;
-    };
-    // The event's state is integrated to the event time, not read off the dense output:
-    // Radau5's continuous output is of lower order than its steps. That integration, too, goes
-    // down the cascade if it must.
-    let mut end = EndState(t_prev, x_prev);
-    let Some(stage) = first_to_finish(stage..CASCADE.len(), |method| {
+    if let Some(hit) = w.hit {
+        confirm(&mut w, hit, rtol);
+    }
+    w.into_integrated()
+}
+
+/// Integrate from the start of the step `hit` was found in to its time, down the cascade from
+/// the stage that found it, and keep the event only where that integration confirms it.
+///
+/// The event's state is integrated to the event time, not read off the dense output:
+/// Radau5's continuous output is of lower order than its steps.
+fn confirm(w: &mut Watcher, hit: Hit, rtol: f64) {
+    let imp = w.imp;
+    let mut end = EndState(hit.t_prev, hit.x_prev);
+    let Some(stage) = first_to_finish(w.stage..CASCADE.len(), |method| {
         w.stiff |= method.is_stiff();
-        let run = solve_with(imp, end.0, end.1, t, rtol, method, &mut end);
+        let run = solve_with(imp, end.0, end.1, hit.t, rtol, method, &mut end);
         w.steps += run.steps;
         !run.failed
     }) else {
         w.failed = true;
         w.last = (end.0, end.1);
-        return w;
+        return;
     };
-    w.last = (t, end.1);
+    w.last = (hit.t, end.1);
     w.stage = stage;
     // An event the integration to it does not confirm was an artefact of the dense output
     // over a long step (Radau5 over thousands of ω0⁻¹ of creep can dip z̄ through z̄_f between
     // its points): the phase is not over, it goes on from there.
+    let watch = hit.watch;
     let sign = if watch.rising() { 1.0 } else { -1.0 };
     let missed = -sign * watch.g(imp, &end.1);
     if missed > EVENT_SLACK * CASCADE[stage].rtol(rtol) * watch.scale(imp, &end.1) {
         w.hit = None;
         w.spurious = true;
     }
-    w
 }
 
 /// The first of the cascade's `stages`, in their order, at which `attempt` (with that stage's

@@ -1,7 +1,7 @@
 //! The text-entry dialog: an exact value (`=` or Enter), or the name to save a preset under
 //! (`s`).
 
-use crate::tui::format::sig_trim;
+use crate::text::sig_trim;
 use crate::tui::param::Param;
 use crate::tui::setting::Setting;
 use crate::tui::state::{Input, Purpose};

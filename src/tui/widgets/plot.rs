@@ -59,6 +59,22 @@ impl PlotLayout {
     }
 }
 
+/// Points from `a` to `b` (plot units) for a dotted line: `n` over the whole span of the
+/// plot, as many in proportion over a shorter segment.
+fn dots(a: (f64, f64), b: (f64, f64), n: f64, l: &PlotLayout) -> Vec<(f64, f64)> {
+    let ([x0, x1], [y0, y1]) = (l.x.bounds, l.y.bounds);
+    let span = ((b.0 - a.0) / (x1 - x0))
+        .abs()
+        .max(((b.1 - a.1) / (y1 - y0)).abs());
+    let k = (n * span).ceil().max(1.0) as usize;
+    (0..=k)
+        .map(|i| {
+            let t = i as f64 / k as f64;
+            (a.0 + t * (b.0 - a.0), a.1 + t * (b.1 - a.1))
+        })
+        .collect()
+}
+
 impl<'a> Plot<'a> {
     pub fn new(figure: &'a Figure, theme: Theme) -> Plot<'a> {
         Plot { figure, theme }
@@ -152,7 +168,6 @@ impl<'a> Plot<'a> {
     fn canvas(&self, l: &PlotLayout, ghost: bool) -> Buffer {
         let area = l.plot;
         let mut scratch = Buffer::empty(area);
-        let ([x0, x1], [y0, y1]) = (l.x.bounds, l.y.bounds);
         // a dot every third braille dot along the plot's longer side
         let n = (usize::from(area.width.max(area.height)) * 4 / 3 + 1) as f64;
         let lines: Vec<&Series> = self
@@ -170,24 +185,15 @@ impl<'a> Plot<'a> {
                         let (Some(a), Some(b)) = (w[0], w[1]) else {
                             continue;
                         };
-                        if !pass_dotted {
+                        if pass_dotted {
+                            let coords = dots(a, b, n, l);
+                            ctx.draw(&canvas::Points {
+                                coords: &coords,
+                                color,
+                            });
+                        } else {
                             ctx.draw(&canvas::Line::new(a.0, a.1, b.0, b.1, color));
-                            continue;
                         }
-                        let span = ((b.0 - a.0) / (x1 - x0))
-                            .abs()
-                            .max(((b.1 - a.1) / (y1 - y0)).abs());
-                        let k = (n * span).ceil().max(1.0) as usize;
-                        let coords: Vec<(f64, f64)> = (0..=k)
-                            .map(|i| {
-                                let t = i as f64 / k as f64;
-                                (a.0 + t * (b.0 - a.0), a.1 + t * (b.1 - a.1))
-                            })
-                            .collect();
-                        ctx.draw(&canvas::Points {
-                            coords: &coords,
-                            color,
-                        });
                     }
                 }
             }
@@ -352,5 +358,71 @@ impl Widget for &Plot<'_> {
         self.draw_series(&l, buf);
         self.draw_marks(&l, buf);
         self.draw_legend(&l, buf);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::figure::{Axis as FigAxis, Kind, Look, Marker as Shape, Series, Tone};
+
+    fn text(buf: &Buffer) -> String {
+        let a = buf.area;
+        (a.y..a.bottom())
+            .map(|y| {
+                (a.x..a.right())
+                    .map(|x| buf[(x, y)].symbol())
+                    .collect::<String>()
+                    + "\n"
+            })
+            .collect()
+    }
+
+    /// A figure built by hand: a curve, a tagged threshold, two markers on one point, the
+    /// legend from the series' keys.
+    #[test]
+    fn a_figure_draws_its_curve_tag_markers_and_legend() {
+        let curve = Series::new("model", "model", Kind::Model, Stroke::Solid, 0)
+            .with_points(vec![(0.0, 0.0), (1.0, 1.0), (2.0, 0.0)])
+            .with_look(Look::new(Tone::Current, Some("model"), None));
+        let threshold = Series::new("z_p", "z_p", Kind::Reference, Stroke::Dotted, 7)
+            .with_points(vec![(1.5, 0.0), (1.5, 0.5)])
+            .with_look(Look::new(Tone::Rule, None, Some("z_p")));
+        let marker = |text: &str, kind| {
+            Series::new(text, text, kind, Stroke::Markers(Shape::Diamond), 4)
+                .with_points(vec![(0.5, 0.5)])
+                .with_look(Look::new(Tone::Highlight, Some("here"), Some(text)))
+        };
+        let mut fig = Figure::new(
+            "t".into(),
+            String::new(),
+            FigAxis::linear("x", "x", 1.0),
+            FigAxis::linear("y", "y", 1.0),
+            vec![
+                curve,
+                threshold,
+                marker("◆", Kind::ThisRun),
+                marker("S", Kind::ThisRun),
+            ],
+        );
+        fig.screen_title = "a chart".into();
+        let area = Rect::new(0, 0, 60, 20);
+        let mut buf = Buffer::empty(area);
+        Plot::new(&fig, Theme::new(false)).render(area, &mut buf);
+        let s = text(&buf);
+        assert!(s.starts_with("┌ a chart "), "{s}");
+        assert!(s.contains("z_p"), "the threshold's tag:\n{s}");
+        assert!(
+            s.contains("◆S"),
+            "a marker whose cell is taken moves right:\n{s}"
+        );
+        assert!(
+            s.contains("━ model") && s.contains("◆ S here"),
+            "legend:\n{s}"
+        );
+        assert!(
+            s.contains('⠁') || s.contains('⠈') || s.contains('⡀'),
+            "braille:\n{s}"
+        );
     }
 }

@@ -4,7 +4,8 @@
 
 use crate::preset::Preset;
 use crate::solver::ImpactResponse;
-use crate::tui::format::{percent_diff, sig, sig_trim};
+use crate::text::{sig, sig_trim};
+use crate::tui::format::percent_diff;
 use crate::tui::param::Param;
 use crate::tui::setting::Setting;
 use crate::tui::theme::Theme;
