@@ -73,6 +73,7 @@ pub mod drop;
 pub mod fault;
 #[cfg(feature = "svg")]
 pub mod figure;
+pub mod measured;
 pub mod model;
 pub mod preset;
 #[doc(hidden)]

@@ -196,6 +196,32 @@ fn text_names_the_drag_model_and_the_verdict() {
         "1",
     ]);
     assert!(out.contains("no drag (vacuum)"), "{out}");
+    // a height other than the standard's: the verdict says it is judged on the standard's
+    let out = ok(&[
+        "drop",
+        "--preset",
+        "tennis",
+        "--standard",
+        "itf",
+        "--height",
+        "1",
+    ]);
+    assert!(
+        out.contains("judged on the standard's own drop, not on the 1 m above"),
+        "{out}"
+    );
+    assert!(out.contains("measured 1.410 m: PASS"), "{out}");
+    let out = ok(&[
+        "--preset",
+        "football",
+        "drop",
+        "--no-drag",
+        "--bounces",
+        "1",
+    ]);
+    // without --standard the ball's own is named; a ball without one gets no such line
+    assert!(out.contains("add --standard fifa-quality-pro"), "{out}");
+    assert!(!ok(&["drop", "--preset", "golf", "--bounces", "1"]).contains("--standard"));
 }
 
 #[test]
@@ -246,4 +272,46 @@ fn bad_input_is_one_line_and_exit_2() {
     );
     bad(&["drop", "--format", "xml"], &["--format"]);
     bad(&["--preset", "tennis", "standards"], &["--preset"]);
+}
+
+/// Every new ball validates and runs through `run` (both parameter sets), `sweep velocity`
+/// and the figures, as the paper's balls do.
+#[test]
+fn every_new_ball_runs_through_the_other_commands() {
+    for ball in [
+        "tennis",
+        "football",
+        "basketball",
+        "table-tennis",
+        "softball",
+    ] {
+        let v = json(&["run", "--preset", ball, "--format", "json"]);
+        assert_eq!(v["preset"], ball);
+        assert!(v["rebound"].as_bool().unwrap(), "{ball}");
+        let m = json(&[
+            "run",
+            "--preset",
+            ball,
+            "--params",
+            "materials",
+            "--format",
+            "json",
+        ]);
+        assert!(f(&m, "cor") > 0.0 && f(&m, "cor") < 1.0, "{ball}");
+        let sweep = ok(&["sweep", "velocity", "--preset", ball, "--points", "4"]);
+        assert_eq!(sweep.lines().count(), 5, "{ball}: {sweep}");
+        let dir = tempfile::tempdir().unwrap();
+        for fig in ["cor-velocity", "force-time", "force-displacement"] {
+            let out = dir.path().join(format!("{ball}-{fig}.svg"));
+            ok(&[
+                "figure",
+                fig,
+                "--preset",
+                ball,
+                "--out",
+                out.to_str().unwrap(),
+            ]);
+            assert!(out.exists(), "{ball} {fig}");
+        }
+    }
 }

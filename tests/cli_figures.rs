@@ -194,7 +194,7 @@ fn data_files_hold_the_plotted_series_in_si() {
         let (svg, csv) = (format!("f{i}.svg"), format!("f{i}.csv"));
         let mut all = vec!["figure"];
         all.extend_from_slice(args);
-        all.extend_from_slice(&["--out", &svg, "--data", &csv]);
+        all.extend_from_slice(&["--out", &svg, "--csv-out", &csv]);
         assert_eq!(ok_at(d, &all), format!("{svg}\n{csv}\n"));
         let rows = csv_rows(&fs::read_to_string(d.join(&csv)).unwrap(), header);
         assert_eq!(rows.len(), *n, "{args:?}");

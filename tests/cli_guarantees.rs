@@ -79,7 +79,7 @@ fn a_failure_leaves_no_new_file_and_a_rerun_is_not_refused() {
         "5",
         "--out",
         "a.svg",
-        "--data",
+        "--csv-out",
         "a.csv",
     ];
     let (code, err) = limited(d, 20, &args);
@@ -94,7 +94,7 @@ fn a_failure_leaves_no_new_file_and_a_rerun_is_not_refused() {
             "force-time",
             "--out",
             "b.svg",
-            "--data",
+            "--csv-out",
             "/proc/b.csv",
         ],
     );
@@ -191,6 +191,12 @@ fn numbers_are_read_as_typed() {
     bad(
         &["figure", "cor-zeta", "--out", "x.svg", "--lambda", "-inf,1"],
         &["invalid lambda: -inf"],
+    );
+    // the same for every number option (drop's, from another command family)
+    bad(&["drop", "--height", "-inf"], &["invalid height: -inf"]);
+    bad(
+        &["drop", "--air-density", "1e-400"],
+        &["--air-density", "rounds to 0"],
     );
     // a tiny COR is printed in its shortest form
     bad(&["fit", "--cor", "1e-320"], &["cor 1e-320 is out of reach"]);

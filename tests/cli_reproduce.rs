@@ -14,7 +14,7 @@ fn existing_files_are_refused_unless_forced() {
     let o = bl_at(d, &["figure", "cor-zeta", "--out", "old.svg"]);
     assert_bad(&o, &["old.svg exists", "--force"]);
     assert_eq!(fs::read_to_string(d.join("old.svg")).unwrap(), "keep");
-    // an existing --data file stops the command before the SVG is written
+    // an existing --csv-out file stops the command before the SVG is written
     fs::write(d.join("old.csv"), "keep").unwrap();
     let o = bl_at(
         d,
@@ -23,7 +23,7 @@ fn existing_files_are_refused_unless_forced() {
             "force-time",
             "--out",
             "new.svg",
-            "--data",
+            "--csv-out",
             "old.csv",
         ],
     );
@@ -36,7 +36,7 @@ fn existing_files_are_refused_unless_forced() {
             "force-time",
             "--out",
             "old.svg",
-            "--data",
+            "--csv-out",
             "old.csv",
             "--force",
         ],
@@ -67,7 +67,14 @@ fn bad_figure_commands_are_one_line_errors() {
         ),
         (&["figure", "cor-zeta"], &["--out"]),
         (
-            &["figure", "cor-velocity", "--out", "a.svg", "--lambda", "1"],
+            &[
+                "figure",
+                "cor-velocity",
+                "--out",
+                "a.svg",
+                "--lambda",
+                "1,2",
+            ],
             &["--lambda does not apply to cor-velocity"],
         ),
         (
@@ -92,7 +99,7 @@ fn bad_figure_commands_are_one_line_errors() {
                 "force-time",
                 "--out",
                 "a.svg",
-                "--data",
+                "--csv-out",
                 "./a.svg",
             ],
             &["given twice"],

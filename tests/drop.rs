@@ -125,7 +125,7 @@ fn sequences_end_with_decreasing_heights() {
     }
 }
 
-/// A ball that sinks into its dashpot (λ = 0, ζ ≥ 1: MODEL.md §2) stays on the plate: the
+/// A ball that sinks into its dashpot (λ = 0, ζ ≥ 1: docs/model.md §2) stays on the plate: the
 /// sequence ends at the first impact with e = 0.
 #[test]
 fn a_ball_without_rebound_ends_the_sequence() {

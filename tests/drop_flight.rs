@@ -110,8 +110,10 @@ fn closed_forms_follow_the_integrated_rise() {
         let (_, [h_end, v_end]) = steps.last().unwrap();
         assert!(v_end.abs() < 1e-9 * u, "{v_end}");
         assert!(close(*h_end, f.rise_height(u), 1e-9), "{h_end}");
-        // the launch speed for the apex inverts the apex
+        // the launch speed for the apex inverts the apex, the fall height the fall speed
         assert!(close(f.launch_speed_for(f.rise_height(u)), u, 1e-12));
+        assert!(close(f.fall_height_for(f.fall_speed(h)).unwrap(), h, 1e-9));
+        assert_eq!(f.fall_height_for(1.0001 * f.terminal_speed()), None);
     }
 }
 

@@ -75,6 +75,69 @@ pub struct BallArgs {
     /// Contact law [default: the preset's `law` field]
     #[arg(long, value_enum)]
     pub law: Option<LawArg>,
+    #[command(flatten)]
+    pub set: Overrides,
+}
+
+/// Parameters set on the command line over the preset's, so that a fitted ball can be tried
+/// without editing TOML. K_h follows K_p and z_p (Eq. 16) when either is set.
+#[derive(Debug, Clone, Default, Args)]
+pub struct Overrides {
+    /// Contact stiffness K_p, N/m [default: the preset's]
+    #[arg(long = "k-p", value_name = "N/m", value_parser = super::number::number, allow_hyphen_values = true)]
+    pub k_p: Option<f64>,
+    /// Dashpot c, kg/s [default: the preset's]
+    #[arg(long, value_name = "kg/s", value_parser = super::number::number, allow_hyphen_values = true)]
+    pub damping: Option<f64>,
+    /// Recoil spring K_r, N/m [default: the preset's]
+    #[arg(long = "k-r", value_name = "N/m", value_parser = super::number::number, allow_hyphen_values = true)]
+    pub k_r: Option<f64>,
+    /// Flattening threshold z_p, m [default: the preset's]
+    #[arg(long = "z-p", value_name = "m", value_parser = super::number::number, allow_hyphen_values = true)]
+    pub z_p: Option<f64>,
+}
+
+impl Overrides {
+    pub fn any(&self) -> bool {
+        self.k_p.is_some() || self.damping.is_some() || self.k_r.is_some() || self.z_p.is_some()
+    }
+
+    /// The given values set on `params`; each checked, named by its field.
+    pub fn apply(&self, params: &mut ImpactParams) -> anyhow::Result<()> {
+        use crate::analysis::fit::{Param, apply};
+        let given = [
+            (Param::KP, Field::KP, self.k_p),
+            (Param::C, Field::Damping, self.damping),
+            (Param::KR, Field::KR, self.k_r),
+            (Param::ZP, Field::ZP, self.z_p),
+        ];
+        let mut free = Vec::new();
+        let mut values = Vec::new();
+        for (p, field, v) in given {
+            if let Some(v) = v {
+                check_positive(field, v)?;
+                free.push(p);
+                values.push(v);
+            }
+        }
+        *params = apply(params, &free, &values);
+        Ok(())
+    }
+}
+
+/// `--k-r` with `--lambda`, or `--damping` with `--zeta`, set one parameter twice.
+pub fn check_overrides(
+    set: &Overrides,
+    lambda: Option<f64>,
+    zeta: Option<f64>,
+) -> anyhow::Result<()> {
+    if set.k_r.is_some() && lambda.is_some() {
+        anyhow::bail!("--k-r and --lambda both set K_r: give one of them");
+    }
+    if set.damping.is_some() && zeta.is_some() {
+        anyhow::bail!("--damping and --zeta both set c: give one of them");
+    }
+    Ok(())
 }
 
 /// The ball's keys of a JSON document, in this order (flattened into it).
@@ -157,9 +220,11 @@ impl BallArgs {
         if let Some(v0) = v0 {
             params.v0 = v0;
         }
+        self.set.apply(&mut params)?;
         params.validate().map_err(|e| {
-            // a bad v0 comes from the command line; anything else from the preset's set
-            if e.field == Field::V0 && v0.is_some() {
+            // a bad v0 or an overridden value comes from the command line; anything else from
+            // the preset's set
+            if (e.field == Field::V0 && v0.is_some()) || self.set.any() {
                 e.into()
             } else {
                 anyhow::anyhow!("preset '{}' ({} parameters): {e}", p.name, source.name())

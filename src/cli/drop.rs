@@ -28,22 +28,38 @@ pub struct DropArgs {
     #[command(flatten)]
     pub ball: BallArgs,
     /// Release height H of the bottom of the ball (m) [default: the standard's, else 1]
-    #[arg(long, value_name = "H")]
+    #[arg(long, value_name = "H", value_parser = super::number::number, allow_hyphen_values = true)]
     pub height: Option<f64>,
     /// Stop after this many bounces (1 … 1000)
     #[arg(long, value_name = "N", default_value_t = DEFAULT_BOUNCES)]
     pub bounces: usize,
     /// Stop after a rebound lower than this (m)
-    #[arg(long, value_name = "H", default_value_t = DEFAULT_MIN_REBOUND)]
+    #[arg(
+        long,
+        value_name = "H",
+        default_value_t = DEFAULT_MIN_REBOUND,
+        value_parser = super::number::number,
+        allow_hyphen_values = true,
+    )]
     pub min_rebound: f64,
     /// Fall in vacuum: no air drag
     #[arg(long, conflicts_with_all = ["drag_coefficient", "air_density"])]
     pub no_drag: bool,
     /// Drag coefficient C_d of quadratic drag ½ρC_dAv² [default: 0.47, a sphere]
-    #[arg(long, value_name = "CD")]
+    #[arg(
+        long,
+        value_name = "CD",
+        value_parser = super::number::number,
+        allow_hyphen_values = true,
+    )]
     pub drag_coefficient: Option<f64>,
     /// Air density ρ (kg/m³) [default: 1.204, 20 °C at sea level]
-    #[arg(long, value_name = "RHO")]
+    #[arg(
+        long,
+        value_name = "RHO",
+        value_parser = super::number::number,
+        allow_hyphen_values = true,
+    )]
     pub air_density: Option<f64>,
     /// Judge the ball against a standard (`bouncelab standards` lists them)
     #[arg(long, value_name = "NAME")]
@@ -100,7 +116,20 @@ pub fn run(a: &DropArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     match a.format {
         DropFormat::Json => output::json(out, &report(&run, verdict.as_ref()))?,
         DropFormat::Csv => trajectory_csv(out, &run)?,
-        DropFormat::Text => text(out, &b.label(), &run, standard.zip(verdict), radius)?,
+        DropFormat::Text => {
+            text(out, &b.label(), &run, standard.zip(verdict), radius)?;
+            // no standard asked for: name the ball's own, if it has one
+            if let (None, Some(own)) = (standard, b.preset().and_then(standards::for_ball)) {
+                writeln!(
+                    out,
+                    "\n{}'s standard is {} ({}): add --standard {}",
+                    b.preset().unwrap_or_default(),
+                    own.name,
+                    own.title,
+                    own.name
+                )?;
+            }
+        }
     }
     Ok(())
 }
@@ -202,6 +231,15 @@ fn text(
     if let Some((s, v)) = judged {
         writeln!(out)?;
         verdict_text(out, s, &v, radius)?;
+        if s.release_height(radius)
+            .is_some_and(|h| h != run.setup.height)
+        {
+            writeln!(
+                out,
+                "  (judged on the standard's own drop, not on the {} m above)",
+                given(run.setup.height, 6)
+            )?;
+        }
     }
     Ok(())
 }

@@ -2,7 +2,8 @@
 //! SVG, and its plotted series as CSV. The figures themselves are built in
 //! [`crate::figure::paper`]; this file reads the options, solves, and writes the files.
 
-use super::ball::BallArgs;
+use super::ball::{self, BallArgs};
+use super::figure_overlay as overlay;
 use crate::analysis::sweep::{lin_space, log_space};
 use crate::atomic::Outputs;
 use crate::figure::{Figure, csv, paper, svg};
@@ -60,13 +61,21 @@ pub struct FigureArgs {
     pub out: PathBuf,
     /// Also write the plotted series as CSV (SI units; see docs/figures.md)
     #[arg(long, value_name = "FILE.csv")]
+    pub csv_out: Option<PathBuf>,
+    /// Renamed --csv-out (an output, easily mistaken for an input): refused
+    #[arg(long, value_name = "FILE", hide = true)]
     pub data: Option<PathBuf>,
+    /// Measured data to draw on the figure (force–time trace, COR table or drop test; CSV);
+    /// repeatable, each labelled by its file name
+    #[arg(long, value_name = "FILE")]
+    pub measured: Vec<PathBuf>,
     /// Overwrite existing files
     #[arg(long)]
     pub force: bool,
     #[command(flatten)]
     pub ball: BallArgs,
-    /// λ of the model curves, comma-separated (cor-zeta, force-zeta) [default: 0,0.4,1]
+    /// λ of the model curves, comma-separated (cor-zeta, force-zeta) [default: 0,0.4,1]; for
+    /// the figures of one ball, its λ (changes K_r)
     #[arg(
         long,
         value_name = "L,L,...",
@@ -75,6 +84,9 @@ pub struct FigureArgs {
         allow_hyphen_values = true,
     )]
     pub lambda: Option<Vec<f64>>,
+    /// ζ of the ball (changes c; cor-velocity, force-time, force-displacement)
+    #[arg(long, value_name = "Z", value_parser = super::number::number, allow_hyphen_values = true)]
+    pub zeta: Option<f64>,
     /// Impact speed v0, m/s (force-time, force-displacement) [default: the preset's v0]
     #[arg(long, value_name = "V", value_parser = super::number::number, allow_hyphen_values = true)]
     pub v0: Option<f64>,
@@ -92,8 +104,30 @@ pub struct FigureArgs {
 /// Options that only some figures take: naming the misplaced one beats ignoring it.
 fn check_applicable(a: &FigureArgs) -> anyhow::Result<()> {
     use FigureName::*;
+    if let Some(d) = &a.data {
+        anyhow::bail!(
+            "--data {} is refused: it is now --csv-out, the plotted series written as CSV (to \
+             draw measured data on the figure, use --measured FILE)",
+            d.display()
+        );
+    }
+    let one_lambda = a.lambda.as_ref().is_some_and(|l| l.len() == 1);
+    let lambda_for: &[FigureName] = if one_lambda {
+        &[
+            CorZeta,
+            ForceZeta,
+            CorVelocity,
+            ForceTime,
+            ForceDisplacement,
+        ]
+    } else {
+        &[CorZeta, ForceZeta]
+    };
+    let ball_figures = &[CorVelocity, ForceTime, ForceDisplacement][..];
     let given = [
-        ("--lambda", a.lambda.is_some(), &[CorZeta, ForceZeta][..]),
+        ("--lambda", a.lambda.is_some(), lambda_for),
+        ("--zeta", a.zeta.is_some(), ball_figures),
+        ("--measured", !a.measured.is_empty(), ball_figures),
         ("--v0", a.v0.is_some(), &[ForceTime, ForceDisplacement][..]),
         ("--from", a.from.is_some(), &[CorVelocity][..]),
         ("--to", a.to.is_some(), &[CorVelocity][..]),
@@ -127,7 +161,7 @@ pub fn check_writable(paths: &[&Path], force: bool) -> anyhow::Result<()> {
     for (i, p) in paths.iter().enumerate() {
         if paths[..i].iter().any(|q| same(q, p)) {
             anyhow::bail!(
-                "{} is given twice: --out and --data must differ",
+                "{} is given twice: --out and --csv-out must differ",
                 p.display()
             );
         }
@@ -266,28 +300,55 @@ fn build(a: &FigureArgs) -> anyhow::Result<Figure> {
             Ok(if a.name == CorZeta { cor } else { force })
         }
         CorVelocity => {
-            let b = a.ball.resolve(None)?.ball;
-            velocity_figure(&b, a.from, a.to, a.points.unwrap_or(VELOCITY_POINTS))
+            let (b, origin) = one_ball(a, None)?;
+            let mut f = velocity_figure(&b, a.from, a.to, a.points.unwrap_or(VELOCITY_POINTS))?;
+            overlay::relabel_user(&mut f, &origin);
+            Ok(f)
         }
         ForceTime | ForceDisplacement => {
-            let b = a.ball.resolve(a.v0)?.ball;
+            let (b, origin) = one_ball(a, a.v0)?;
             let (t, d) = history_figures(&b, a.points.unwrap_or(HISTORY_SAMPLES))?;
-            Ok(if a.name == ForceTime { t } else { d })
+            let mut f = if a.name == ForceTime { t } else { d };
+            overlay::relabel_user(&mut f, &origin);
+            Ok(f)
         }
     }
+}
+
+/// The ball of a one-ball figure, with the overrides, λ and ζ applied, and its origin.
+fn one_ball(a: &FigureArgs, v0: Option<f64>) -> anyhow::Result<(paper::Ball, String)> {
+    let lambda = a.lambda.as_ref().filter(|l| l.len() == 1).map(|l| l[0]);
+    ball::check_overrides(&a.ball.set, lambda, a.zeta)?;
+    let mut b = a.ball.resolve(v0)?;
+    ball::set_lambda_zeta(&mut b.ball.params, lambda, a.zeta)?;
+    Ok((b.ball, b.origin))
+}
+
+/// `build`, with the `--measured` files drawn on it (against the ball's m and v0).
+fn build_all(a: &FigureArgs) -> anyhow::Result<Figure> {
+    // the files are read before any solving: a bad file fails fast
+    for path in &a.measured {
+        super::measured_file::any(path)?;
+    }
+    let mut fig = build(a)?;
+    if !a.measured.is_empty() {
+        let (b, _) = one_ball(a, a.v0)?;
+        overlay::add_measured(&mut fig, a.name, &a.measured, b.params.mass, b.params.v0)?;
+    }
+    Ok(fig)
 }
 
 pub fn run(a: &FigureArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     check_applicable(a)?;
     let mut paths = vec![a.out.as_path()];
-    paths.extend(a.data.as_deref());
+    paths.extend(a.csv_out.as_deref());
     check_writable(&paths, a.force)?;
-    let fig = build(a)?;
+    let fig = build_all(a)?;
     let picture = svg::render(&fig)?;
     // both files or neither (crate::atomic)
     let mut files = Outputs::new(a.force);
     files.text(&a.out, &picture)?;
-    if let Some(d) = &a.data {
+    if let Some(d) = &a.csv_out {
         files.text(d, &csv::to_string(&fig))?;
     }
     for p in commit(files)? {

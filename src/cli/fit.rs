@@ -1,12 +1,15 @@
-//! `bouncelab fit`: the recoil spring K_r (and λ) that makes the model's COR equal a measured
-//! one, at the ball's ζ, z_p and v0 (MODEL.md §4).
+//! `bouncelab fit`: the model fitted to measurements (docs/fitting.md). One COR fits the
+//! recoil spring K_r (and λ) at the ball's ζ, z_p and v0 (docs/model.md §4), as it always
+//! has; a COR table, a force–time trace or drop tests fit several parameters at once
+//! ([`super::fit_multi`]).
 
 use super::ball::{BallArgs, BallHeader};
 use super::output::{self, given, human, table};
-use crate::analysis::fit::fit_k_r;
+use crate::analysis::fit::{Param, fit_k_r};
 use clap::{Args, ValueEnum};
 use serde::Serialize;
 use std::io::Write;
+use std::path::PathBuf;
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
 pub enum FitFormat {
@@ -20,13 +23,133 @@ pub struct FitArgs {
     pub ball: BallArgs,
     /// Measured coefficient of restitution to match, in [0, 1]
     #[arg(long, value_name = "E", value_parser = super::number::number, allow_hyphen_values = true)]
-    pub cor: f64,
-    /// Impact speed v0 (m/s) the COR was measured at [default: the preset's measured v0]
+    pub cor: Option<f64>,
+    /// COR against impact speed: CSV with columns v0 and cor (optional cor_sd, max_force_N,
+    /// contact_time_s)
+    #[arg(long, value_name = "FILE")]
+    pub cor_table: Option<PathBuf>,
+    /// Force–time trace: CSV with a time column (time, t, time_s, time_ms, time_us) and a
+    /// force column (force, F, force_N, force_kN)
+    #[arg(long, value_name = "FILE")]
+    pub force_time: Option<PathBuf>,
+    /// Drop height (m), with --rebound-height; repeatable
+    #[arg(long, value_name = "H", requires = "rebound_height", value_parser = super::number::number, allow_hyphen_values = true)]
+    pub drop_height: Vec<f64>,
+    /// Rebound height (m) of each --drop-height, in the same order
+    #[arg(long, value_name = "R", requires = "drop_height", value_parser = super::number::number, allow_hyphen_values = true)]
+    pub rebound_height: Vec<f64>,
+    /// Drop tests from a CSV with columns drop_height_m, rebound_height_m
+    #[arg(long, value_name = "FILE")]
+    pub drop_test: Option<PathBuf>,
+    /// Drop tests: correct for quadratic air drag with this drag coefficient (≈ 0.47 for a
+    /// smooth sphere) [default: no drag]
+    #[arg(long, value_name = "CD", value_parser = super::number::number, allow_hyphen_values = true)]
+    pub drag_coefficient: Option<f64>,
+    /// Drop tests: air density for the drag correction, kg/m³
+    #[arg(
+        long,
+        value_name = "RHO",
+        default_value_t = 1.204,
+        requires = "drag_coefficient",
+        value_parser = super::number::number,
+        allow_hyphen_values = true
+    )]
+    pub air_density: f64,
+    /// Impact speed v0 (m/s) the COR or the trace was measured at [default: the preset's
+    /// measured v0]
     #[arg(long, value_name = "V", value_parser = super::number::number, allow_hyphen_values = true)]
     pub v0: Option<f64>,
+    /// Parameters to fit, comma-separated, from k_p, c, k_r, z_p, k_h [default: k_p,c,k_r
+    /// for a trace (k_h,c,k_r for the Hertz law), k_r,z_p for a COR table or drop tests of
+    /// three points or more, k_r for fewer]
+    #[arg(long, value_name = "P,P,...", value_delimiter = ',')]
+    pub free: Option<Vec<String>>,
+    /// Save the fitted ball as the user preset NAME (never overwriting one without --force)
+    #[arg(long, value_name = "NAME")]
+    pub save: Option<String>,
+    /// Draw data, model and residuals as one SVG
+    #[arg(long, value_name = "FILE.svg")]
+    pub plot: Option<PathBuf>,
+    /// Overwrite an existing --plot file or --save preset
+    #[arg(long)]
+    pub force: bool,
     /// Output format
     #[arg(long, value_enum, default_value = "text")]
     pub format: FitFormat,
+}
+
+/// What a fit is given.
+#[derive(Debug, Clone)]
+pub enum Source {
+    Cor(f64),
+    CorTable(PathBuf),
+    Trace(PathBuf),
+    /// (drop, rebound) heights from the command line
+    Drops(Vec<(f64, f64)>),
+    DropFile(PathBuf),
+}
+
+impl FitArgs {
+    /// The one kind of data given, or an error listing the choices.
+    pub fn source(&self) -> anyhow::Result<Source> {
+        let mut given = Vec::new();
+        if let Some(e) = self.cor {
+            given.push(Source::Cor(e));
+        }
+        if let Some(p) = &self.cor_table {
+            given.push(Source::CorTable(p.clone()));
+        }
+        if let Some(p) = &self.force_time {
+            given.push(Source::Trace(p.clone()));
+        }
+        if !self.drop_height.is_empty() {
+            if self.drop_height.len() != self.rebound_height.len() {
+                anyhow::bail!(
+                    "{} --drop-height but {} --rebound-height: give one rebound height per drop",
+                    self.drop_height.len(),
+                    self.rebound_height.len()
+                );
+            }
+            let pairs = self
+                .drop_height
+                .iter()
+                .copied()
+                .zip(self.rebound_height.iter().copied());
+            given.push(Source::Drops(pairs.collect()));
+        }
+        if let Some(p) = &self.drop_test {
+            given.push(Source::DropFile(p.clone()));
+        }
+        match given.len() {
+            1 => Ok(given.pop().unwrap_or(Source::Cor(f64::NAN))),
+            0 => anyhow::bail!(
+                "nothing to fit: give --cor E, --cor-table FILE, --force-time FILE, \
+                 --drop-height H --rebound-height R, or --drop-test FILE"
+            ),
+            _ => anyhow::bail!(
+                "give one kind of data to fit: --cor, --cor-table, --force-time, \
+                 --drop-height/--rebound-height and --drop-test exclude each other"
+            ),
+        }
+    }
+
+    /// `--free` as parameters; `None` when not given.
+    pub fn free_params(&self) -> anyhow::Result<Option<Vec<Param>>> {
+        let Some(list) = &self.free else {
+            return Ok(None);
+        };
+        let mut out = Vec::new();
+        for name in list {
+            let p = Param::parse(name).ok_or_else(|| {
+                anyhow::anyhow!(
+                    "invalid free parameter '{}' (choose from k_p, c, k_r, z_p, k_h)",
+                    name.trim()
+                )
+            })?;
+            out.push(p);
+        }
+        Ok(Some(out))
+    }
 }
 
 #[derive(Serialize)]
@@ -45,13 +168,24 @@ struct Report<'a> {
 }
 
 pub fn run(a: &FitArgs, out: &mut dyn Write) -> anyhow::Result<()> {
+    let source = a.source()?;
+    let free = a.free_params()?;
+    match (&source, free.as_deref()) {
+        (Source::Cor(e), None) | (Source::Cor(e), Some([Param::KR])) => single(a, *e, out),
+        _ => super::fit_multi::run(a, &source, free, out),
+    }
+}
+
+/// One COR: K_r by a root find (the original `fit`, its output unchanged).
+fn single(a: &FitArgs, cor: f64, out: &mut dyn Write) -> anyhow::Result<()> {
+    super::fit_multi::check_outputs(a)?;
     let b = a.ball.resolve(a.v0)?;
-    let f = fit_k_r(&b.ball.params, b.ball.law, a.cor)?;
+    let f = fit_k_r(&b.ball.params, b.ball.law, cor)?;
     let p = &b.ball.params;
     let r = Report {
         ball: b.header(),
         v0: p.v0,
-        target_cor: a.cor,
+        target_cor: cor,
         k_r: f.k_r,
         lambda: f.lambda,
         zeta: f.zeta,
@@ -88,5 +222,6 @@ pub fn run(a: &FitArgs, out: &mut dyn Write) -> anyhow::Result<()> {
             table(out, "  ", &rows)?;
         }
     }
-    Ok(())
+    let fitted = crate::model::params::ImpactParams { k_r: f.k_r, ..*p };
+    super::fit_multi::single_extras(a, &b, &fitted, cor, out)
 }

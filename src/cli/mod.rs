@@ -11,7 +11,13 @@ pub mod ball;
 pub mod budget;
 pub mod drop;
 pub mod figure;
+mod figure_overlay;
 pub mod fit;
+pub mod fit_multi;
+mod fit_plot;
+mod fit_report;
+mod fit_save;
+pub mod measured_file;
 pub mod number;
 pub mod output;
 pub mod presets;
@@ -24,6 +30,7 @@ pub mod sweep;
 use crate::solver::SolveError;
 use clap::{Parser, Subcommand};
 use std::io::{self, IsTerminal, Write};
+use std::path::PathBuf;
 use std::process::ExitCode;
 
 const ABOUT: &str = "The Christoforou–Yigit model of a deformable ball hitting a rigid wall: \
@@ -44,6 +51,10 @@ pub struct Cli {
     /// (`bouncelab --preset golf run` is `bouncelab run --preset golf`)
     #[command(flatten)]
     pub choice: ball::PresetChoice,
+    /// Measured data the explorer draws on its charts (force–time trace, COR table or drop
+    /// test; CSV, labelled by its file name)
+    #[arg(long, value_name = "FILE")]
+    pub measured: Option<PathBuf>,
     #[command(subcommand)]
     pub command: Option<Command>,
 }
@@ -56,7 +67,8 @@ pub enum Command {
     /// Sweep ζ (normalized, Figs. 2–3) or the impact speed of a ball (Fig. 4)
     #[command(subcommand)]
     Sweep(sweep::Sweep),
-    /// Fit the recoil spring K_r (and λ) to a measured COR
+    /// Fit the model to measurements: one COR (K_r), a COR table, a force–time trace or drop
+    /// tests (several parameters, with intervals)
     #[command(allow_negative_numbers = true)]
     Fit(fit::FitArgs),
     /// List the embedded and user presets
@@ -86,7 +98,7 @@ pub fn main() -> ExitCode {
     if cli.command.is_none() {
         // the explorer must not hold the stdout lock: on a signal, crate::signals takes it to
         // restore the terminal
-        return explorer(cli.choice).map_or_else(fail, |()| ExitCode::SUCCESS);
+        return explorer(cli.choice, cli.measured).map_or_else(fail, |()| ExitCode::SUCCESS);
     }
     let stdout = io::stdout();
     // no control character reaches the terminal, whatever a preset or path holds
@@ -140,6 +152,10 @@ fn exit_code(e: &anyhow::Error) -> Option<u8> {
     let not_the_input = |c: &(dyn std::error::Error + 'static)| {
         c.is::<ExplorerFailed>()
             || c.is::<crate::figure::svg::RenderError>()
+            || matches!(
+                c.downcast_ref(),
+                Some(crate::analysis::fit::MultiFitError::NoAnswer)
+            )
             || matches!(c.downcast_ref(), Some(SolveError::Unresolved { .. }))
     };
     if io_kind.is_some() || e.chain().any(not_the_input) {
@@ -195,8 +211,15 @@ fn clap_error(e: clap::Error) -> ExitCode {
 fn dispatch(cli: Cli, out: &mut dyn Write) -> anyhow::Result<()> {
     let top = cli.choice;
     let Some(command) = cli.command else {
-        return explorer(top);
+        return explorer(top, cli.measured);
     };
+    if let Some(m) = &cli.measured {
+        anyhow::bail!(
+            "--measured before a subcommand is for the explorer; to draw {} on a figure use \
+             `bouncelab figure NAME --measured FILE`, to fit it `bouncelab fit`",
+            m.display()
+        );
+    }
     match command {
         Command::Run(mut a) => {
             if top.is_given() && a.normalized {
@@ -279,7 +302,12 @@ fn merge(top: ball::PresetChoice, ball: &mut ball::BallArgs) -> anyhow::Result<(
 }
 
 /// No subcommand: the explorer, which needs a terminal.
-fn explorer(choice: ball::PresetChoice) -> anyhow::Result<()> {
+fn explorer(choice: ball::PresetChoice, measured: Option<PathBuf>) -> anyhow::Result<()> {
+    // a measured file is read and checked first, before anything else is asked of the user
+    let data = match &measured {
+        Some(path) => Some((measured_file::any(path)?, path)),
+        None => None,
+    };
     if !io::stdout().is_terminal() {
         anyhow::bail!(
             "the explorer needs a terminal and stdout is not one; for headless output use \
@@ -287,7 +315,16 @@ fn explorer(choice: ball::PresetChoice) -> anyhow::Result<()> {
         );
     }
     let entry = ball::select(choice.preset.as_deref(), choice.config.as_deref())?;
-    crate::tui::run(entry.preset).map_err(|e| ExplorerFailed(e).into())
+    let overlays = match data {
+        Some((data, path)) => {
+            let p = entry.preset.params();
+            let label = measured_file::label(path);
+            crate::figure::explorer::MeasuredOverlay::from_data(&data, &label, p.mass, p.v0)
+                .map_err(|e| measured_file::at(path, e))?
+        }
+        None => Vec::new(),
+    };
+    crate::tui::run_with_measured(entry.preset, overlays).map_err(|e| ExplorerFailed(e).into())
 }
 
 #[cfg(test)]

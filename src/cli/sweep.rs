@@ -77,6 +77,15 @@ pub struct ZetaArgs {
 pub struct VelocityArgs {
     #[command(flatten)]
     pub ball: BallArgs,
+    /// Relative stiffness λ = K_r/K_p (changes K_r, keeps m and K_p)
+    #[arg(long, value_name = "L", value_parser = super::number::number, allow_hyphen_values = true)]
+    pub lambda: Option<f64>,
+    /// Damping factor ζ = √(m K_p)/(2c) (changes c, keeps m and K_p)
+    #[arg(long, value_name = "Z", value_parser = super::number::number, allow_hyphen_values = true)]
+    pub zeta: Option<f64>,
+    /// The ball's impact speed v0, m/s, which sets the default range [default: the preset's]
+    #[arg(long, value_name = "V", value_parser = super::number::number, allow_hyphen_values = true)]
+    pub v0: Option<f64>,
     /// Lowest impact speed (m/s) [default: 0.1 × the preset's v0]
     #[arg(long, value_name = "V", value_parser = super::number::number, allow_hyphen_values = true)]
     pub from: Option<f64>,
@@ -178,7 +187,9 @@ struct VelocityDoc<'a, T> {
 }
 
 fn velocity(a: &VelocityArgs, out: &mut dyn Write) -> anyhow::Result<()> {
-    let b = a.ball.resolve(None)?;
+    super::ball::check_overrides(&a.ball.set, a.lambda, a.zeta)?;
+    let mut b = a.ball.resolve(a.v0)?;
+    super::ball::set_lambda_zeta(&mut b.ball.params, a.lambda, a.zeta)?;
     let v0 = b.ball.params.v0;
     let from = a.from.unwrap_or(0.1 * v0);
     let to = a.to.unwrap_or(3.0 * v0);

@@ -5,8 +5,8 @@
 //! middle of the window (with drag, for a drop test).
 //!
 //! At fixed λ, e falls from 1 as ζ grows from 0, reaches a minimum, and climbs back towards 1
-//! (MODEL.md §6, Fig. 2): the fit takes the smallest ζ that reaches the target (the branch on
-//! which e falls), found by a scan on a geometric grid and then Brent's method.
+//! (docs/model.md §6, Fig. 2): the fit takes the smallest ζ that reaches the target (the
+//! branch on which e falls), found by a scan on a geometric grid and then Brent's method.
 
 use super::standards::{Standard, Test};
 use super::{Air, DropBall, DropError, Flight, impact};

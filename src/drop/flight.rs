@@ -20,7 +20,8 @@ use serde::Serialize;
 pub const G: f64 = 9.80665;
 /// Air density at 20 °C and 101.325 kPa (kg/m³).
 pub const AIR_DENSITY: f64 = 1.204;
-/// Drag coefficient of a smooth sphere at the Reynolds numbers of a drop test (10⁴ … 10⁵).
+/// Drag coefficient of a smooth sphere below the drag crisis (Reynolds numbers 10³ … 10⁵, those
+/// of the drop tests here).
 pub const SPHERE_DRAG_COEFFICIENT: f64 = 0.47;
 
 /// The air a ball falls through.
@@ -146,5 +147,16 @@ impl Flight {
             return (2.0 * G * h).sqrt();
         }
         (G * (2.0 * x * h).exp_m1() / x).sqrt()
+    }
+
+    /// The fall from rest that ends at speed `v`: the inverse of [`Flight::fall_speed`],
+    /// s = −ln(1 − x v²/g)/(2x); `None` at or above the terminal speed, which no fall reaches.
+    pub fn fall_height_for(&self, v: f64) -> Option<f64> {
+        let x = self.drag_per_mass;
+        if x == 0.0 {
+            return Some(v * v / (2.0 * G));
+        }
+        let a = x * v * v / G;
+        (a < 1.0).then(|| -(-a).ln_1p() / (2.0 * x))
     }
 }

@@ -157,7 +157,7 @@ pub const STANDARDS: [Standard; 12] = [
         surface: "northern white ash wall (the model's wall is rigid)",
         window: [Some(0.514), Some(0.578)],
         source: "MLB Official Baseball Rules (COR 0.546 ± 0.032 at 85 ft/s), as quoted by \
-                 Kagan & Atkinson, Phys. Teach. 42 (2004)",
+                 Kagan & Atkinson, The Physics Teacher (2004)",
         unconfirmed: None,
         balls: &[],
     },

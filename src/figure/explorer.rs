@@ -70,6 +70,55 @@ pub struct Pinned<'a> {
     pub speed: Option<SpeedSweep<'a>>,
 }
 
+/// Measured data on one chart (`bouncelab --measured FILE`), labelled by its file name;
+/// points in SI on the chart's axes ([`crate::measured::overlay`]).
+#[derive(Debug, Clone, PartialEq)]
+pub struct MeasuredOverlay {
+    pub label: String,
+    pub chart: Chart,
+    pub points: Vec<(f64, f64)>,
+}
+
+impl MeasuredOverlay {
+    /// The charts `data` can be drawn on: a trace on force–time and (with the ball's `mass`
+    /// and `v0`) force–displacement, a COR table or drop test on COR against speed.
+    pub fn from_data(
+        data: &crate::measured::Data,
+        label: &str,
+        mass: f64,
+        v0: f64,
+    ) -> Result<Vec<MeasuredOverlay>, crate::measured::MeasuredError> {
+        use crate::measured::{Data, overlay};
+        let one = |chart, points| MeasuredOverlay {
+            label: label.to_string(),
+            chart,
+            points,
+        };
+        Ok(match data {
+            Data::Trace(t) => vec![
+                one(Chart::ForceTime, overlay::aligned(t)?),
+                one(Chart::Hysteresis, overlay::displacement(t, mass, v0)?),
+            ],
+            _ => vec![one(
+                Chart::CorSpeed,
+                overlay::cor_points(data).unwrap_or_default(),
+            )],
+        })
+    }
+
+    fn series(&self) -> Series {
+        Series::new(
+            &self.label,
+            &format!("measured {}", self.label),
+            Kind::Measured,
+            Style::Markers(Marker::Circle),
+            super::BLACK,
+        )
+        .with_points(self.points.clone())
+        .with_look(Look::new(Tone::Measured, Some(&self.label), Some("+")))
+    }
+}
+
 /// What the explorer shows: the results it holds and how they are to be drawn.
 #[derive(Debug, Clone)]
 pub struct Scene<'a> {
@@ -87,6 +136,8 @@ pub struct Scene<'a> {
     /// While COR-vs-speed sweeps are out: the highest speed they reach (the axis spans it).
     pub speed_pending: Option<f64>,
     pub pinned: Option<Pinned<'a>>,
+    /// The user's measured data, drawn on the charts they belong to.
+    pub measured: &'a [MeasuredOverlay],
 }
 
 /// What a chart lacks to be exported (its computation failed, or a sweep is still out), as
@@ -103,11 +154,15 @@ pub fn missing(chart: Chart, scene: &Scene) -> Option<&'static str> {
 
 /// One chart's figure.
 pub fn figure(chart: Chart, scene: &Scene) -> Figure {
-    match chart {
+    let mut fig = match chart {
         Chart::ForceTime | Chart::Hysteresis => history_figure(chart, scene),
         Chart::CorZeta | Chart::ForceZeta => zeta_figure(chart, scene),
         Chart::CorSpeed => speed_figure(scene),
+    };
+    for m in scene.measured.iter().filter(|m| m.chart == chart) {
+        fig.series.push(m.series());
     }
+    fig
 }
 
 fn lambda_zeta_text(p: &ImpactParams) -> String {
@@ -340,6 +395,7 @@ mod tests {
             speed: None,
             speed_pending: Some(20.0),
             pinned: None,
+            measured: &[],
         };
         let ft = figure(Chart::ForceTime, &scene);
         assert!(ft.series.is_empty());
@@ -375,6 +431,7 @@ mod tests {
             speed: None,
             speed_pending: None,
             pinned: None,
+            measured: &[],
         };
         let fig = figure(Chart::CorZeta, &scene);
         assert_eq!(fig.x.range, Some((0.01, 100.0)));

@@ -75,6 +75,14 @@ pub enum Action {
     SaveFailed {
         msg: String,
     },
+    /// `d`: open the drop view, or leave it for the impact view.
+    ToggleDrop,
+    /// Space in the drop view: pause or resume the animation.
+    DropPause,
+    /// `b` in the drop view: replay the drop from the release.
+    DropReplay,
+    /// The event loop's animation clock: `dt` seconds of wall time passed.
+    Tick(f64),
     /// `y` to "overwrite …? y/n".
     ConfirmYes,
     /// `n` or Esc to "overwrite …? y/n".
@@ -167,6 +175,9 @@ fn normal(key: KeyEvent) -> Option<Action> {
         KeyCode::Tab => Some(Action::NextView),
         KeyCode::BackTab => Some(Action::PrevView),
         KeyCode::Char('?') => Some(Action::ToggleHelp),
+        KeyCode::Char('d') => Some(Action::ToggleDrop),
+        KeyCode::Char(' ') => Some(Action::DropPause),
+        KeyCode::Char('b') => Some(Action::DropReplay),
         _ => None,
     }
 }

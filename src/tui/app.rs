@@ -6,11 +6,13 @@
 //! `sweeps`, and what the charts are drawn from in `scene`.
 
 mod dialogs;
+mod drop;
 mod scene;
 mod sweeps;
 
 use super::action::{Action, Mode};
 use super::compute::{self, SpeedCurve, SpeedRequest, ZetaCurve};
+use super::drop_view::DropView;
 pub use super::effect::Effect;
 use super::export;
 use super::param::Param;
@@ -55,6 +57,10 @@ pub struct App {
     export_wanted: bool,
     /// The save handed to the event loop, until its answer comes back.
     save_out: Option<SaveRequest>,
+    /// The drop view's sequence and animation clock.
+    drop: DropView,
+    /// Measured data drawn on the charts (`bouncelab --measured FILE`).
+    measured: Vec<crate::figure::explorer::MeasuredOverlay>,
 }
 
 impl App {
@@ -91,6 +97,8 @@ impl App {
             background: false,
             export_wanted: false,
             save_out: None,
+            drop: DropView::new(false),
+            measured: Vec::new(),
         };
         app.refresh();
         app
@@ -101,6 +109,12 @@ impl App {
     /// this (tests), `refresh` runs them itself.
     pub fn with_background_sweeps(mut self) -> App {
         self.background = true;
+        self
+    }
+
+    /// Draw the user's measured data on the charts it belongs to.
+    pub fn with_measured(mut self, m: Vec<crate::figure::explorer::MeasuredOverlay>) -> App {
+        self.measured = m;
         self
     }
 
@@ -176,12 +190,18 @@ impl App {
     /// Apply one action without recomputing: for a batch of queued events, `apply` each, then
     /// [`App::refresh`] once.
     pub fn apply(&mut self, action: Action) -> Vec<Effect> {
-        if !matches!(action, Action::SpeedReady(..)) {
+        if !matches!(action, Action::SpeedReady(..) | Action::Tick(_)) {
             self.message = None;
         }
         match action {
             Action::Quit => self.quit = true,
             Action::NextView | Action::PrevView => self.view = self.view.other(),
+            Action::ToggleDrop | Action::DropPause | Action::DropReplay | Action::Tick(_) => {
+                self.drop_action(&action)
+            }
+            Action::Export if self.view == View::Drop => self.warn(
+                "the drop view has no export: `bouncelab drop --format csv` writes its data".into(),
+            ),
             Action::Export => self.export_wanted = true,
             Action::SpeedReady(..)
             | Action::Exported { .. }
@@ -307,6 +327,11 @@ impl App {
         let lambda = self.setting.get(Param::Lambda);
         if self.zeta.as_ref().is_none_or(|c| c.lambda != lambda) {
             self.zeta = compute::zeta_curve(lambda).map_err(|e| self.error(e)).ok();
+        }
+        if self.view == View::Drop {
+            let preset = &self.presets[self.setting.preset];
+            self.drop
+                .refresh(&self.setting.params, self.setting.law, preset);
         }
         let mut effects: Vec<Effect> = self.refresh_sweeps().into_iter().collect();
         if self.export_wanted {

@@ -13,10 +13,12 @@ use crate::catalog;
 use crate::fault::Fault;
 use ratatui::DefaultTerminal;
 use ratatui::crossterm::event;
-use std::time::Duration;
+use std::time::{Duration, Instant};
 
 /// How often to look for a finished sweep while one is running.
 const SWEEP_POLL: Duration = Duration::from_millis(40);
+/// Frame period of the drop view's animation (about 30 frames a second).
+const FRAME: Duration = Duration::from_millis(33);
 
 pub fn run(terminal: &mut DefaultTerminal, app: &mut App) -> anyhow::Result<()> {
     let mut worker = Worker::spawn()?;
@@ -25,6 +27,7 @@ pub fn run(terminal: &mut DefaultTerminal, app: &mut App) -> anyhow::Result<()> 
     let panic_on_key = Fault::PanicInLoop.active();
     let mut effects = app.refresh();
     let mut dirty = true;
+    let mut clock = Instant::now();
     while !app.should_quit() {
         carry_out(std::mem::take(&mut effects), app, &mut worker);
         if dirty {
@@ -32,7 +35,9 @@ pub fn run(terminal: &mut DefaultTerminal, app: &mut App) -> anyhow::Result<()> 
             dirty = false;
         }
         let waiting = !app.speed_requests().is_empty();
-        let mut next = if !waiting || event::poll(SWEEP_POLL)? {
+        let animating = app.animating();
+        let wait = if animating { FRAME } else { SWEEP_POLL };
+        let mut next = if !(waiting || animating) || event::poll(wait)? {
             Some(event::read()?)
         } else {
             None
@@ -57,6 +62,14 @@ pub fn run(terminal: &mut DefaultTerminal, app: &mut App) -> anyhow::Result<()> 
                 None
             };
         }
+        // the animation's clock: real time since the last frame, counted only while the
+        // animation was already playing (not the idle wait before `d` or a replay)
+        let now = Instant::now();
+        if animating && app.animating() {
+            effects.extend(app.apply(Action::Tick(now.duration_since(clock).as_secs_f64())));
+            dirty = true;
+        }
+        clock = now;
         while let Some((request, result)) = worker.try_recv() {
             effects.extend(app.apply(Action::SpeedReady(request, result)));
             dirty = true;

@@ -15,6 +15,7 @@
 pub mod action;
 pub mod app;
 pub mod compute;
+pub mod drop_view;
 pub mod effect;
 pub mod event;
 pub mod export;
@@ -38,15 +39,32 @@ pub fn color_wanted() -> bool {
     std::env::var_os("NO_COLOR").is_none_or(|v| v.is_empty())
 }
 
+/// Whether to animate (the drop view): not when BOUNCELAB_REDUCED_MOTION is set to a
+/// non-empty value, a reduced-motion setting in the manner of NO_COLOR.
+pub fn motion_wanted() -> bool {
+    std::env::var_os("BOUNCELAB_REDUCED_MOTION").is_none_or(|v| v.is_empty())
+}
+
 /// Open the explorer on `preset`; returns when the user quits. The terminal is restored on
 /// every exit path: normal return, error, and panic (ratatui's hook restores it, then chains
 /// the previous hook).
 pub fn run(preset: Preset) -> anyhow::Result<()> {
+    run_with_measured(preset, Vec::new())
+}
+
+/// [`run`], with measured data drawn on the charts (`bouncelab --measured FILE`).
+pub fn run_with_measured(
+    preset: Preset,
+    measured: Vec<crate::figure::explorer::MeasuredOverlay>,
+) -> anyhow::Result<()> {
     if !std::io::stdout().is_terminal() {
         anyhow::bail!("the explorer needs a terminal (stdout is not one); see `bouncelab --help`");
     }
     remove_stale_temporaries();
-    let mut app = app::App::new(preset, color_wanted()).with_background_sweeps();
+    let mut app = app::App::new(preset, color_wanted())
+        .with_background_sweeps()
+        .with_motion(motion_wanted())
+        .with_measured(measured);
     let mut terminal = ratatui::try_init()
         .inspect_err(|_| {
             if terminal::is_raw_mode_enabled().unwrap_or(false) {

@@ -15,6 +15,8 @@ pub enum View {
     Impact,
     /// Normalized peak force vs ζ, COR vs impact speed.
     Sweeps,
+    /// The drop test (`d`, outside the Tab cycle): src/tui/drop_view.rs.
+    Drop,
 }
 
 impl View {
@@ -22,13 +24,14 @@ impl View {
         match self {
             View::Impact => "1/2 impact",
             View::Sweeps => "2/2 sweeps",
+            View::Drop => "drop test",
         }
     }
 
     pub fn other(self) -> View {
         match self {
             View::Impact => View::Sweeps,
-            View::Sweeps => View::Impact,
+            View::Sweeps | View::Drop => View::Impact,
         }
     }
 
@@ -37,6 +40,7 @@ impl View {
         match self {
             View::Impact => &[Chart::ForceTime, Chart::Hysteresis, Chart::CorZeta],
             View::Sweeps => &[Chart::ForceZeta, Chart::CorSpeed],
+            View::Drop => &[],
         }
     }
 }

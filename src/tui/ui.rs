@@ -66,6 +66,7 @@ pub fn screen(app: &App, area: Rect) -> Option<Screen> {
     let charts = match app.view() {
         View::Impact => impact_grid(charts),
         View::Sweeps => sweeps_grid(charts),
+        View::Drop => Vec::new(),
     };
     Some(Screen {
         header,
@@ -158,7 +159,18 @@ impl Widget for &App {
         }
         .render(s.header, buf);
         KeyHints { theme }.render(s.status, buf);
-        readout(self, s.side_panel, theme).render(s.readout, buf);
+        if self.view() == View::Drop {
+            // the drop view takes the whole body (src/tui/widgets/drop.rs)
+            let body = Rect::new(
+                area.x,
+                s.header.bottom(),
+                area.width,
+                s.status.y - s.header.bottom(),
+            );
+            super::widgets::drop::render(self, body, buf);
+        } else {
+            readout(self, s.side_panel, theme).render(s.readout, buf);
+        }
         let scene = self.scene();
         for (chart, rect) in &s.charts {
             let fig = explorer::figure(*chart, &scene);

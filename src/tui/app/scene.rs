@@ -69,6 +69,7 @@ impl App {
                 zeta: g.zeta.as_ref().map(zeta),
                 speed: g.speed.as_ref().map(speed),
             }),
+            measured: &self.measured,
         }
     }
 }

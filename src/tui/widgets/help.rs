@@ -7,7 +7,7 @@ use ratatui::text::{Line, Span};
 use ratatui::widgets::{Block, Clear, Paragraph, Widget};
 
 /// (keys, what they do)
-pub const KEYS: [(&str, &str); 26] = [
+pub const KEYS: [(&str, &str); 27] = [
     ("l / L", "λ up / down (±0.01, coarse ±0.1)"),
     ("z / Z", "ζ up / down (×1.1, coarse ×2)"),
     ("v / V", "v0 up / down (±0.1, coarse ±1 m/s)"),
@@ -25,6 +25,7 @@ pub const KEYS: [(&str, &str); 26] = [
     ("e", "export this view (SVG + CSV files)"),
     ("s", "save as a user preset (asks a name)"),
     ("Tab / Shift+Tab", "switch view (impact, sweeps)"),
+    ("d", "drop test (space pauses, b replays)"),
     ("?", "this help (Esc or ? closes)"),
     ("q  Esc  Ctrl-C", "quit"),
     ("", ""),

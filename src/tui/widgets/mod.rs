@@ -3,6 +3,7 @@
 //! status line, and the dialogs. Nothing here changes the state or runs the model.
 
 pub mod confirm;
+pub mod drop;
 pub mod help;
 pub mod input;
 pub mod plot;

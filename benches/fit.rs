@@ -1,0 +1,142 @@
+//! A 3-parameter (K_p, c, K_r) linear-law fit to a 2 000-sample force–time trace with noise
+//! and an unknown time offset, against the same fit in SciPy (`least_squares` over
+//! `solve_ivp`, benches/fit_scipy.py) timed in the same run; prints both medians and the ratio.
+//! Run: `cargo bench --bench fit` (the SciPy side needs python3 with numpy and scipy).
+
+use bouncelab::ContactLaw;
+use bouncelab::analysis::fit::{FitData, Param, fit};
+use bouncelab::measured::Trace;
+use bouncelab::{ImpactParams, SolveOptions, simulate};
+use std::process::Command;
+use std::time::Instant;
+
+/// The trace's ball (not a preset's): m = 50 g, v0 = 2 m/s, K_p = 8e4, c = 60, K_r = 1.2e5.
+fn truth() -> ImpactParams {
+    ImpactParams {
+        mass: 0.05,
+        k_p: 8e4,
+        damping: 60.0,
+        k_r: 1.2e5,
+        z_p: 1.0,
+        k_h: ImpactParams::k_h_matching(8e4, 1.0),
+        v0: 2.0,
+    }
+}
+
+/// 2 000 samples 5 µs apart, contact from 0.8123 ms, noise 1 N (a fixed pseudo-random
+/// sequence, so both sides fit the same numbers), baseline 0.3 N; as CSV text.
+fn trace_csv() -> String {
+    let r = simulate(
+        &truth(),
+        ContactLaw::Linear,
+        &SolveOptions::default().with_samples(20_001),
+    )
+    .unwrap();
+    let h = &r.history;
+    let tf = *h.t.last().unwrap();
+    let mut state = 12345u64;
+    let mut normal = || {
+        let mut u = || {
+            state = state
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            ((state >> 11) as f64 + 0.5) / (1u64 << 53) as f64
+        };
+        let (a, b) = (u(), u());
+        (-2.0 * a.ln()).sqrt() * (std::f64::consts::TAU * b).cos()
+    };
+    let mut text = String::from("time_s,force_N\n");
+    for i in 0..2000 {
+        let t = -1.7e-3 + i as f64 * 5e-6;
+        let s = t - 0.8123e-3;
+        let f = if s <= 0.0 || s >= tf {
+            0.0
+        } else {
+            let k = ((s / h.t[1]) as usize).min(h.t.len() - 2);
+            let w = (s - h.t[k]) / (h.t[k + 1] - h.t[k]);
+            h.force[k] * (1.0 - w) + h.force[k + 1] * w
+        };
+        text.push_str(&format!("{t:e},{:e}\n", f + 0.3 + normal()));
+    }
+    text
+}
+
+fn median(mut v: Vec<f64>) -> f64 {
+    v.sort_by(f64::total_cmp);
+    v[v.len() / 2]
+}
+
+fn main() {
+    let csv = trace_csv();
+    let trace = Trace::parse(&csv).unwrap();
+    // the fit is given m, v0 and a ball far from the truth
+    let t = truth();
+    let start = ImpactParams {
+        k_p: 2e5,
+        damping: 24.0,
+        k_r: 3.6e4,
+        ..t
+    };
+    let free = [Param::KP, Param::C, Param::KR];
+    let mut times = Vec::new();
+    let mut last = None;
+    for _ in 0..31 {
+        let t0 = Instant::now();
+        let f = fit(&start, ContactLaw::Linear, FitData::Trace(&trace), &free).unwrap();
+        times.push(t0.elapsed().as_secs_f64());
+        last = Some(f);
+    }
+    let f = last.unwrap();
+    let ours = median(times);
+    println!(
+        "bouncelab fit (k_p, c, k_r, t0, baseline) to 2000 samples: median {:.2} ms over 31 runs, {} iterations",
+        ours * 1e3,
+        f.iterations
+    );
+    for e in &f.fitted {
+        println!("  {} = {:.6e} ± {:.2e}", e.name, e.value, e.std_error);
+    }
+    println!(
+        "  time_offset = {:.6e} s, rms {:.4} N",
+        f.time_offset.as_ref().unwrap().value,
+        f.rms_residual
+    );
+
+    let dir = std::env::temp_dir().join(format!("bouncelab-fit-bench-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("trace.csv");
+    std::fs::write(&path, &csv).unwrap();
+    let script = concat!(env!("CARGO_MANIFEST_DIR"), "/benches/fit_scipy.py");
+    let out = Command::new("python3")
+        .arg(script)
+        .arg(&path)
+        .arg("5")
+        .output();
+    let _ = std::fs::remove_dir_all(&dir);
+    let out = match out {
+        Ok(o) if o.status.success() => o,
+        Ok(o) => {
+            let err = String::from_utf8_lossy(&o.stderr);
+            println!(
+                "scipy comparison skipped: {}",
+                err.lines().last().unwrap_or("")
+            );
+            println!("(install with: pip install numpy scipy)");
+            return;
+        }
+        Err(e) => {
+            println!("scipy comparison skipped: python3 not found ({e})");
+            return;
+        }
+    };
+    let text = String::from_utf8_lossy(&out.stdout);
+    print!("{text}");
+    if let Some(m) = text
+        .split("median_s ")
+        .nth(1)
+        .and_then(|s| s.split_whitespace().next())
+        .and_then(|s| s.parse::<f64>().ok())
+    {
+        println!("ratio (scipy / bouncelab): {:.0}x", m / ours);
+    }
+}

@@ -1,0 +1,283 @@
+//! `bouncelab fit` on a COR table, a force–time trace or drop tests: several parameters with
+//! standard errors, 95 % intervals and correlations ([`crate::analysis::fit::fit`]); the
+//! report as text or JSON, and the `--plot` and `--save` that go with every fit.
+
+use super::ball::ChosenBall;
+use super::fit::{FitArgs, FitFormat, Source};
+use super::measured_file as files;
+use super::output;
+use crate::analysis::fit::{FitData, MultiFitError, Param, fit};
+use crate::measured::{Air, CorPoint, Flight, Trace, drop_to_cor};
+use crate::model::params::ImpactParams;
+use crate::solver::{SolveOptions, simulate};
+use std::io::Write;
+
+/// The data of a fit, loaded and labelled.
+pub struct Loaded {
+    /// "force-time trace", "COR table", "drop test", "COR".
+    pub kind: &'static str,
+    /// The file, or `None` for data given on the command line.
+    pub file: Option<String>,
+    /// The legend label: the file name, or what was typed.
+    pub label: String,
+    pub trace: Option<Trace>,
+    pub points: Vec<CorPoint>,
+    /// (drop, rebound) heights of drop tests.
+    pub drops: Vec<(f64, f64)>,
+    /// Line after the file's last, for errors about the whole file.
+    pub end_line: usize,
+}
+
+/// A finite positive number, or an error naming `name` (numbers the model's fields do not
+/// cover: drop heights, drag).
+fn positive(name: &str, v: f64) -> anyhow::Result<()> {
+    if !(v.is_finite() && v > 0.0) {
+        anyhow::bail!(
+            "invalid {name}: {} (must be a positive number)",
+            output::num(v)
+        );
+    }
+    Ok(())
+}
+
+/// Refuse outputs that cannot be written, before any work.
+pub fn check_outputs(a: &FitArgs) -> anyhow::Result<()> {
+    if let Some(p) = &a.plot {
+        super::figure::check_writable(&[p.as_path()], a.force)?;
+    }
+    if let Some(name) = &a.save {
+        super::fit_save::check(name, a.force)?;
+    }
+    Ok(())
+}
+
+fn load(a: &FitArgs, source: &Source, ball: &ChosenBall) -> anyhow::Result<Loaded> {
+    if let Some(cd) = a.drag_coefficient {
+        positive("drag_coefficient", cd)?;
+        positive("air_density", a.air_density)?;
+    }
+    let radius = ball.ball.measured.as_ref().map_or(f64::NAN, |m| m.radius);
+    let air = a.drag_coefficient.map(|cd| Air {
+        density: a.air_density,
+        drag_coefficient: cd,
+    });
+    let flight = Flight::new(ball.ball.params.mass, radius, air);
+    let from_drops = |drops: Vec<(f64, f64, usize)>| -> Vec<CorPoint> {
+        drops
+            .iter()
+            .map(|&(h, r, line)| {
+                let (v0, cor) = drop_to_cor(h, r, &flight);
+                CorPoint {
+                    v0,
+                    cor,
+                    cor_sd: None,
+                    max_force: None,
+                    contact_time: None,
+                    line,
+                }
+            })
+            .collect()
+    };
+    let name = |p: &std::path::Path| Some(p.display().to_string());
+    Ok(match source {
+        Source::Trace(p) => {
+            let t = files::trace(p)?;
+            let end_line = t.end_line;
+            Loaded {
+                kind: "force-time trace",
+                file: name(p),
+                label: files::label(p),
+                trace: Some(t),
+                points: vec![],
+                drops: vec![],
+                end_line,
+            }
+        }
+        Source::CorTable(p) => {
+            let t = files::cor_table(p)?;
+            Loaded {
+                kind: "COR table",
+                file: name(p),
+                label: files::label(p),
+                trace: None,
+                points: t.points,
+                drops: vec![],
+                end_line: t.end_line,
+            }
+        }
+        Source::DropFile(p) => {
+            let t = files::drop_test(p)?;
+            let drops = t.drops.iter().map(|d| (d.0, d.1)).collect();
+            Loaded {
+                kind: "drop test",
+                file: name(p),
+                label: files::label(p),
+                trace: None,
+                points: from_drops(t.drops.clone()),
+                drops,
+                end_line: t.drops.last().map_or(1, |d| d.2 + 1),
+            }
+        }
+        Source::Drops(pairs) => {
+            for &(h, r) in pairs {
+                positive("drop_height", h)?;
+                if !(0.0..=h).contains(&r) {
+                    anyhow::bail!(
+                        "invalid rebound_height: {r} (must lie in [0, the drop height {h}])"
+                    );
+                }
+            }
+            let drops: Vec<(f64, f64, usize)> = pairs.iter().map(|&(h, r)| (h, r, 0)).collect();
+            Loaded {
+                kind: "drop test",
+                file: None,
+                label: "drop tests".into(),
+                trace: None,
+                points: from_drops(drops),
+                drops: pairs.clone(),
+                end_line: 0,
+            }
+        }
+        Source::Cor(e) => {
+            if !(0.0..=1.0).contains(e) {
+                anyhow::bail!(
+                    "invalid cor: {} (a measured COR lies in [0, 1])",
+                    output::num(*e)
+                );
+            }
+            let pt = CorPoint {
+                v0: ball.ball.params.v0,
+                cor: *e,
+                cor_sd: None,
+                max_force: None,
+                contact_time: None,
+                line: 0,
+            };
+            Loaded {
+                kind: "COR",
+                file: None,
+                label: format!("COR {}", output::num(*e)),
+                trace: None,
+                points: vec![pt],
+                drops: vec![],
+                end_line: 0,
+            }
+        }
+    })
+}
+
+/// A fit error for the user: where the data are at fault, the file and line.
+fn fit_error(e: MultiFitError, data: &Loaded, free: &[Param]) -> anyhow::Error {
+    let names: Vec<&str> = free.iter().map(|p| p.name()).collect();
+    let place = data
+        .file
+        .as_ref()
+        .map(|f| format!("{f}:{}:1: ", data.end_line))
+        .unwrap_or_default();
+    match e {
+        MultiFitError::Params(p) => p.into(),
+        MultiFitError::NoPulse(m) => {
+            anyhow::anyhow!("{}:{m}", data.file.clone().unwrap_or_default())
+        }
+        MultiFitError::TooFew { points, parameters } => anyhow::anyhow!(
+            "{place}{points} data points, fewer than the {parameters} parameters fitted \
+             (--free {}{})",
+            names.join(","),
+            if data.trace.is_some() {
+                ", with the contact start and the baseline"
+            } else {
+                ""
+            }
+        ),
+        // no answer is not the input's fault: exit 1 (cli::exit_code)
+        MultiFitError::NoAnswer => anyhow::Error::new(e),
+        e => anyhow::anyhow!("{e}"),
+    }
+}
+
+pub fn run(
+    a: &FitArgs,
+    source: &Source,
+    free: Option<Vec<Param>>,
+    out: &mut dyn Write,
+) -> anyhow::Result<()> {
+    check_outputs(a)?;
+    let ball = a.ball.resolve(a.v0)?;
+    let data = load(a, source, &ball)?;
+    let free = free
+        .unwrap_or_else(|| Param::defaults(data.trace.is_some(), data.points.len(), ball.ball.law));
+    let input = match &data.trace {
+        Some(t) => FitData::Trace(t),
+        None => FitData::Cor(&data.points),
+    };
+    let f = fit(&ball.ball.params, ball.ball.law, input, &free)
+        .map_err(|e| fit_error(e, &data, &free))?;
+    // the data's speed: the trace's (the ball's v0), else the first row's
+    let v0 = data.points.first().map_or(ball.ball.params.v0, |p| p.v0);
+    let fitted = ImpactParams { v0, ..f.params };
+    let r = simulate(&fitted, ball.ball.law, &SolveOptions::default())?;
+    let report = super::fit_report::report(&ball, &data, &f, &fitted, &r);
+    match a.format {
+        FitFormat::Json => output::json(out, &report)?,
+        FitFormat::Text => super::fit_report::text(out, &ball, &data, &f, &report)?,
+    }
+    if let Some(p) = &a.plot {
+        let svg = super::fit_plot::svg(&ball, &data, &f, &fitted)?;
+        super::figure::write_file(p, &svg, a.force)?;
+        note(a, out, &format!("plot: {}", p.display()))?;
+    }
+    if let Some(name) = &a.save {
+        let path = super::fit_save::save(name, a, &ball, &data, &f, &fitted)?;
+        note(
+            a,
+            out,
+            &format!("saved preset '{name}' to {}", path.display()),
+        )?;
+    }
+    Ok(())
+}
+
+/// Outputs written besides the report: on stdout after a text report, on stderr after JSON
+/// (stdout stays one JSON document).
+fn note(a: &FitArgs, out: &mut dyn Write, line: &str) -> anyhow::Result<()> {
+    match a.format {
+        FitFormat::Text => writeln!(out, "{line}")?,
+        FitFormat::Json => eprintln!("bouncelab: {line}"),
+    }
+    Ok(())
+}
+
+/// `--plot` and `--save` after the single-COR fit.
+pub fn single_extras(
+    a: &FitArgs,
+    ball: &ChosenBall,
+    fitted: &ImpactParams,
+    cor: f64,
+    out: &mut dyn Write,
+) -> anyhow::Result<()> {
+    if a.plot.is_none() && a.save.is_none() {
+        return Ok(());
+    }
+    let data = load(a, &Source::Cor(cor), ball)?;
+    let f = fit(
+        fitted,
+        ball.ball.law,
+        FitData::Cor(&data.points),
+        &[Param::KR],
+    )
+    .map_err(|e| fit_error(e, &data, &[Param::KR]))?;
+    if let Some(p) = &a.plot {
+        let svg = super::fit_plot::svg(ball, &data, &f, fitted)?;
+        super::figure::write_file(p, &svg, a.force)?;
+        note(a, out, &format!("plot: {}", p.display()))?;
+    }
+    if let Some(name) = &a.save {
+        let path = super::fit_save::save(name, a, ball, &data, &f, fitted)?;
+        note(
+            a,
+            out,
+            &format!("saved preset '{name}' to {}", path.display()),
+        )?;
+    }
+    Ok(())
+}

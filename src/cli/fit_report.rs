@@ -1,0 +1,245 @@
+//! The report of a multi-parameter fit: one JSON object (keys in docs/fitting.md) or a text
+//! table with intervals, correlations and warnings.
+
+use super::ball::ChosenBall;
+use super::fit_multi::Loaded;
+use super::output::{human, table};
+use crate::analysis::fit::{Estimate, MultiFit};
+use crate::model::params::ImpactParams;
+use serde::Serialize;
+use std::collections::BTreeMap;
+use std::io::Write;
+
+#[derive(Serialize)]
+pub struct Report<'a> {
+    preset: Option<&'a str>,
+    origin: &'a str,
+    parameters: &'a str,
+    law: &'static str,
+    data: &'static str,
+    file: Option<&'a str>,
+    free: Vec<&'static str>,
+    k_p: f64,
+    c: f64,
+    k_r: f64,
+    z_p: f64,
+    k_h: f64,
+    lambda: f64,
+    zeta: f64,
+    rms_residual: f64,
+    points: usize,
+    converged: bool,
+    iterations: usize,
+    condition_number: f64,
+    fitted: BTreeMap<&'static str, &'a Estimate>,
+    correlation: BTreeMap<&'static str, BTreeMap<&'static str, f64>>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    time_offset: Option<f64>,
+    #[serde(skip_serializing_if = "BTreeMap::is_empty")]
+    nuisance: BTreeMap<&'static str, &'a Estimate>,
+    v0: f64,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    target_cor: Option<f64>,
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    drops: Vec<DropRow>,
+    cor: f64,
+    max_force: f64,
+    contact_time: Option<f64>,
+    warnings: &'a [String],
+}
+
+#[derive(Serialize)]
+struct DropRow {
+    drop_height: f64,
+    rebound_height: f64,
+    v0: f64,
+    cor: f64,
+}
+
+pub fn report<'a>(
+    ball: &'a ChosenBall,
+    data: &'a Loaded,
+    f: &'a MultiFit,
+    p: &ImpactParams,
+    r: &crate::ImpactResponse,
+) -> Report<'a> {
+    let n = p.normalized();
+    let correlation = f
+        .names
+        .iter()
+        .enumerate()
+        .map(|(i, a)| {
+            (
+                *a,
+                f.names
+                    .iter()
+                    .enumerate()
+                    .map(|(j, b)| (*b, f.correlation[i][j]))
+                    .collect(),
+            )
+        })
+        .collect();
+    let nuisance = f
+        .time_offset
+        .iter()
+        .chain(&f.baseline)
+        .map(|e| (e.name, e))
+        .collect();
+    Report {
+        preset: ball.preset(),
+        origin: &ball.origin,
+        parameters: &ball.ball.source,
+        law: ball.ball.law.name(),
+        data: data.kind,
+        file: data.file.as_deref(),
+        free: f.fitted.iter().map(|e| e.name).collect(),
+        k_p: p.k_p,
+        c: p.damping,
+        k_r: p.k_r,
+        z_p: p.z_p,
+        k_h: p.k_h,
+        lambda: n.lambda,
+        zeta: n.zeta,
+        rms_residual: f.rms_residual,
+        points: f.points,
+        converged: f.converged,
+        iterations: f.iterations,
+        condition_number: f.condition,
+        fitted: f.fitted.iter().map(|e| (e.name, e)).collect(),
+        correlation,
+        time_offset: f.time_offset.as_ref().map(|e| e.value),
+        nuisance,
+        v0: p.v0,
+        target_cor: (data.kind != "COR table" && data.trace.is_none()).then(|| data.points[0].cor),
+        drops: data
+            .drops
+            .iter()
+            .zip(&data.points)
+            .map(|(&(h, r), q)| DropRow {
+                drop_height: h,
+                rebound_height: r,
+                v0: q.v0,
+                cor: q.cor,
+            })
+            .collect(),
+        cor: r.cor,
+        max_force: r.max_force,
+        contact_time: r.contact_time,
+        warnings: &f.warnings,
+    }
+}
+
+fn interval(e: &Estimate) -> String {
+    if e.ci95.iter().all(|v| v.is_finite()) {
+        format!("{} … {}", human(e.ci95[0], 4), human(e.ci95[1], 4))
+    } else {
+        "not pinned by the data".into()
+    }
+}
+
+pub fn text(
+    out: &mut dyn Write,
+    ball: &ChosenBall,
+    data: &Loaded,
+    f: &MultiFit,
+    r: &Report,
+) -> anyhow::Result<()> {
+    writeln!(out, "{}, {} law", ball.label(), r.law)?;
+    let what = match &data.file {
+        Some(file) => format!("the {} {file}", data.kind),
+        None => format!("the {} given", data.kind),
+    };
+    let free: Vec<&str> = r.free.clone();
+    writeln!(
+        out,
+        "fitting {} to {what} ({} points); the rest of the ball held",
+        free.join(", "),
+        f.points
+    )?;
+    if data.trace.is_some() {
+        // the trace's speed is not in the data: say which one the fit assumed
+        writeln!(
+            out,
+            "impact speed v0 = {} m/s (--v0 to change it), mass {} g",
+            human(r.v0, 4),
+            human(ball.ball.params.mass * 1e3, 4)
+        )?;
+    }
+    writeln!(out)?;
+    let mut rows = vec![vec![
+        "".into(),
+        "value".into(),
+        "std. error".into(),
+        "95 % interval".into(),
+        "unit".into(),
+    ]];
+    for e in f.fitted.iter().chain(&f.time_offset).chain(&f.baseline) {
+        rows.push(vec![
+            e.name.into(),
+            human(e.value, 5),
+            human(e.std_error, 3),
+            interval(e),
+            e.unit.into(),
+        ]);
+    }
+    table(out, "  ", &rows)?;
+    writeln!(out)?;
+    writeln!(out, "  correlation")?;
+    let mut rows = vec![
+        std::iter::once(String::new())
+            .chain(f.names.iter().map(|s| s.to_string()))
+            .collect::<Vec<_>>(),
+    ];
+    for (i, a) in f.names.iter().enumerate() {
+        rows.push(
+            std::iter::once(a.to_string())
+                .chain(f.correlation[i].iter().map(|c| {
+                    if c.is_finite() {
+                        format!("{c:+.3}")
+                    } else {
+                        "–".into()
+                    }
+                }))
+                .collect(),
+        );
+    }
+    table(out, "  ", &rows)?;
+    writeln!(out)?;
+    let unit = if data.trace.is_some() { " N" } else { " (COR)" };
+    let rows = vec![
+        vec![
+            "λ = K_r/K_p, ζ".into(),
+            format!("{}, {}", human(r.lambda, 4), human(r.zeta, 4)),
+        ],
+        vec![
+            "rms residual".into(),
+            format!("{}{unit}", human(r.rms_residual, 4)),
+        ],
+        vec![
+            "iterations".into(),
+            format!(
+                "{}{}",
+                r.iterations,
+                if r.converged {
+                    ", converged"
+                } else {
+                    ", NOT converged"
+                }
+            ),
+        ],
+        vec![
+            format!("model at v0 = {} m/s", human(r.v0, 4)),
+            format!(
+                "COR {}, peak force {} N, contact time {} ms",
+                human(r.cor, 4),
+                human(r.max_force, 4),
+                r.contact_time.map_or("–".into(), |t| human(t * 1e3, 4))
+            ),
+        ],
+    ];
+    table(out, "  ", &rows)?;
+    for w in &f.warnings {
+        writeln!(out, "warning: {w}")?;
+    }
+    Ok(())
+}

@@ -1,0 +1,91 @@
+//! Drop tests: a ball dropped from `H` rebounds to `R`. The impact speed is the speed after the
+//! fall and the COR the ratio of the speed that rises to R to it, e = u/v0, both from
+//! [`crate::drop::Flight`] (docs/drop.md): in vacuum v0 = √(2 g H) and e = √(R/H); with
+//! quadratic drag (κ = ½ ρ_air C_d π r²/m) v0² = (g/κ)(1 − e^{−2κH}) and
+//! u² = (g/κ)(e^{2κR} − 1) (docs/fitting.md).
+
+use super::MeasuredError;
+use super::table::{self, ColumnSpec};
+pub use crate::drop::{Air, Flight, G};
+
+const SPECS: [ColumnSpec; 2] = [
+    ColumnSpec {
+        name: "drop height",
+        aliases: &[("drop_height_m", 1.0), ("drop_height", 1.0)],
+        required: true,
+    },
+    ColumnSpec {
+        name: "rebound height",
+        aliases: &[("rebound_height_m", 1.0), ("rebound_height", 1.0)],
+        required: true,
+    },
+];
+
+/// Drop and rebound heights (m) and the line each came from (0: the command line).
+#[derive(Debug, Clone, PartialEq)]
+pub struct DropTest {
+    pub drops: Vec<(f64, f64, usize)>,
+}
+
+/// Impact speed and COR of one drop (see the module comment).
+pub fn drop_to_cor(drop: f64, rebound: f64, flight: &Flight) -> (f64, f64) {
+    let v0 = flight.fall_speed(drop);
+    (v0, flight.launch_speed_for(rebound) / v0)
+}
+
+impl DropTest {
+    /// Columns `drop_height_m`, `rebound_height_m`.
+    pub fn parse(text: &str) -> Result<DropTest, MeasuredError> {
+        let p = table::read(text, &SPECS)?;
+        super::check_points(&p)?;
+        let mut drops = Vec::with_capacity(p.lines.len());
+        for i in 0..p.lines.len() {
+            let (h, r) = (
+                p.columns[0][i].unwrap_or(0.0),
+                p.columns[1][i].unwrap_or(0.0),
+            );
+            let at =
+                |k: usize, msg: String| MeasuredError::at(p.lines[i], p.cell_columns[k][i], msg);
+            if h <= 0.0 {
+                return Err(at(0, format!("drop height {h} m must be positive")));
+            }
+            if !(0.0..=h).contains(&r) {
+                return Err(at(
+                    1,
+                    format!("rebound height {r} m must lie in [0, the drop height {h} m]"),
+                ));
+            }
+            drops.push((h, r, p.lines[i]));
+        }
+        Ok(DropTest { drops })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn drag_free_and_with_drag() {
+        let (v, e) = drop_to_cor(1.0, 0.64, &Flight::vacuum());
+        assert!((v - (2.0 * G).sqrt()).abs() < 1e-12 && (e - 0.8).abs() < 1e-12);
+        // real air slows the fall and the rise: v0 lower, e higher than without
+        let air = Flight::new(0.04, 0.02, Some(Air::default()));
+        let (v3, e3) = drop_to_cor(2.0, 1.28, &air);
+        assert!(v3 < (4.0 * G).sqrt() && e3 > 0.8, "{v3} {e3}");
+        // the fall by numerical integration of d(v²)/dx = 2g − 2κ v² (midpoint rule)
+        let k = air.drag_per_mass;
+        let (mut w, h) = (0.0f64, 1e-4);
+        for _ in 0..20_000 {
+            let mid = w + 0.5 * h * (2.0 * G - 2.0 * k * w);
+            w += h * (2.0 * G - 2.0 * k * mid);
+        }
+        assert!((w.sqrt() - v3).abs() < 1e-6, "{} vs {v3}", w.sqrt());
+    }
+
+    #[test]
+    fn rebound_above_drop_is_an_error() {
+        let e = DropTest::parse("drop_height_m,rebound_height_m\n1,1.2\n").unwrap_err();
+        assert_eq!((e.line, e.column), (2, 3));
+    }
+}

@@ -1,0 +1,254 @@
+//! Measured data read from text: force–time traces, COR-against-speed tables and drop tests
+//! (docs/fitting.md). Parsing only, from `&str`: reading the file is the caller's. Every error
+//! carries the 1-based line and column it is about.
+
+mod drop;
+pub mod overlay;
+mod table;
+mod trace;
+
+pub use drop::{Air, DropTest, Flight, G, drop_to_cor};
+pub use table::MAX_ROWS;
+pub use trace::{Trace, TraceSummary};
+
+use std::fmt;
+use table::ColumnSpec;
+
+/// What is wrong with a measured-data text, and where.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct MeasuredError {
+    pub line: usize,
+    pub column: usize,
+    pub message: String,
+}
+
+impl MeasuredError {
+    pub fn at(line: usize, column: usize, message: impl Into<String>) -> MeasuredError {
+        MeasuredError {
+            line,
+            column,
+            message: message.into(),
+        }
+    }
+}
+
+impl fmt::Display for MeasuredError {
+    /// `line:column: message`; the caller puts the file name in front.
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{}:{}: {}", self.line, self.column, self.message)
+    }
+}
+
+impl std::error::Error for MeasuredError {}
+
+/// One COR measurement, SI, with what else was measured at that speed.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CorPoint {
+    pub v0: f64,
+    pub cor: f64,
+    /// Standard deviation of `cor` (weights the fit), if given.
+    pub cor_sd: Option<f64>,
+    pub max_force: Option<f64>,
+    pub contact_time: Option<f64>,
+    /// Line of the file it came from (0: the command line).
+    pub line: usize,
+}
+
+/// COR against impact speed.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CorTable {
+    pub points: Vec<CorPoint>,
+    /// The line after the last one read, for errors about the whole table.
+    pub end_line: usize,
+}
+
+/// Measured data of any kind, as found in a file.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Data {
+    Trace(Trace),
+    Cor(CorTable),
+    Drop(DropTest),
+}
+
+impl Data {
+    pub fn kind(&self) -> &'static str {
+        match self {
+            Data::Trace(_) => "force-time trace",
+            Data::Cor(_) => "COR table",
+            Data::Drop(_) => "drop test",
+        }
+    }
+}
+
+const COR_SPECS: [ColumnSpec; 5] = [
+    ColumnSpec {
+        name: "impact speed",
+        aliases: &[("v0", 1.0), ("v0_m_s", 1.0), ("speed", 1.0)],
+        required: true,
+    },
+    ColumnSpec {
+        name: "COR",
+        aliases: &[("cor", 1.0), ("e", 1.0)],
+        required: true,
+    },
+    ColumnSpec {
+        name: "COR standard deviation",
+        aliases: &[("cor_sd", 1.0)],
+        required: false,
+    },
+    ColumnSpec {
+        name: "peak force",
+        aliases: &[
+            ("max_force_n", 1.0),
+            ("max_force", 1.0),
+            ("max_force_kn", 1e3),
+        ],
+        required: false,
+    },
+    ColumnSpec {
+        name: "contact time",
+        aliases: &[
+            ("contact_time_s", 1.0),
+            ("contact_time", 1.0),
+            ("contact_time_ms", 1e-3),
+            ("contact_time_us", 1e-6),
+        ],
+        required: false,
+    },
+];
+
+/// A positive number, or an error at its cell.
+fn positive(
+    p: &table::Parsed,
+    k: usize,
+    row: usize,
+    name: &str,
+) -> Result<Option<f64>, MeasuredError> {
+    match p.columns[k][row] {
+        Some(v) if v <= 0.0 => Err(MeasuredError::at(
+            p.lines[row],
+            p.cell_columns[k][row],
+            format!("{name} {v} must be positive"),
+        )),
+        v => Ok(v),
+    }
+}
+
+/// Most rows of a COR table or drop test: each is one impact per evaluation of the fit, and
+/// ten thousand measured impacts is already far beyond any series a lab takes.
+pub const MAX_POINTS: usize = 10_000;
+
+/// A table of more than [`MAX_POINTS`] rows is refused at the first row past it.
+fn check_points(p: &table::Parsed) -> Result<(), MeasuredError> {
+    match p.lines.get(MAX_POINTS) {
+        Some(&line) => Err(MeasuredError::at(
+            line,
+            1,
+            format!("more than {MAX_POINTS} rows: a COR table or drop test is at most that"),
+        )),
+        None => Ok(()),
+    }
+}
+
+impl CorTable {
+    /// Columns `v0`/`v0_m_s`/`speed`, `cor`/`e`; optional `cor_sd`, `max_force_N`,
+    /// `contact_time_s` (or `_ms`, `_us`).
+    pub fn parse(text: &str) -> Result<CorTable, MeasuredError> {
+        let p = table::read(text, &COR_SPECS)?;
+        check_points(&p)?;
+        let mut points = Vec::with_capacity(p.lines.len());
+        for i in 0..p.lines.len() {
+            let cor = p.columns[1][i].unwrap_or(f64::NAN);
+            if !(0.0..=1.0).contains(&cor) {
+                return Err(MeasuredError::at(
+                    p.lines[i],
+                    p.cell_columns[1][i],
+                    format!("COR {cor} must lie in [0, 1]"),
+                ));
+            }
+            points.push(CorPoint {
+                v0: positive(&p, 0, i, "impact speed")?.unwrap_or(f64::NAN),
+                cor,
+                cor_sd: positive(&p, 2, i, "COR standard deviation")?,
+                max_force: positive(&p, 3, i, "peak force")?,
+                contact_time: positive(&p, 4, i, "contact time")?,
+                line: p.lines[i],
+            });
+        }
+        Ok(CorTable {
+            points,
+            end_line: p.end_line,
+        })
+    }
+}
+
+/// Read measured data of whichever kind the header names: time and force columns make a
+/// trace, drop and rebound heights a drop test, anything else is read as a COR table.
+pub fn parse_any(text: &str) -> Result<Data, MeasuredError> {
+    let names = table::header_names(text).unwrap_or_default();
+    let has = |list: &[&str]| names.iter().any(|n| list.contains(&n.as_str()));
+    if has(&[
+        "drop_height_m",
+        "drop_height",
+        "rebound_height_m",
+        "rebound_height",
+    ]) {
+        DropTest::parse(text).map(Data::Drop)
+    } else if has(&["force", "f", "force_n", "force_kn"]) {
+        Trace::parse(text).map(Data::Trace)
+    } else {
+        CorTable::parse(text).map(Data::Cor)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn cor_table_reads_units_weights_and_decimal_commas() {
+        let t = CorTable::parse(
+            "# air cannon\nv0;cor;cor_sd;contact_time_ms\n1,5;0,8;0,01;3,1\n3;0,7;;\n",
+        )
+        .unwrap();
+        assert_eq!(t.points.len(), 2);
+        assert_eq!(t.points[0].v0, 1.5);
+        assert_eq!(t.points[0].cor_sd, Some(0.01));
+        assert!((t.points[0].contact_time.unwrap() - 3.1e-3).abs() < 1e-15);
+        assert_eq!(t.points[1].cor_sd, None);
+        assert_eq!(t.points[1].line, 4);
+    }
+
+    #[test]
+    fn cor_table_errors_point_at_the_cell() {
+        let e = CorTable::parse("v0,cor\n1,0.5\n2,abc\n").unwrap_err();
+        assert_eq!((e.line, e.column), (3, 3), "{e}");
+        assert!(e.message.contains("'abc' is not a number"), "{e}");
+        let e = CorTable::parse("v0,cor\n1,NaN\n").unwrap_err();
+        assert!(e.message.contains("not a finite number"), "{e}");
+        let e = CorTable::parse("v0,cor,colour\n").unwrap_err();
+        assert_eq!((e.line, e.column), (1, 8), "{e}");
+        assert!(e.message.contains("unknown column 'colour'"), "{e}");
+        let e = CorTable::parse("1,0.5\n2,0.4\n").unwrap_err();
+        assert!(e.message.starts_with("no header"), "{e}");
+        let e = CorTable::parse("v0,cor\n1,1.2\n").unwrap_err();
+        assert!(e.message.contains("[0, 1]"), "{e}");
+        let e = CorTable::parse("speed\n1\n").unwrap_err();
+        assert!(e.message.contains("no COR column"), "{e}");
+        let e = CorTable::parse("v0,cor\n").unwrap_err();
+        assert!(e.message.contains("no data rows"), "{e}");
+    }
+
+    #[test]
+    fn kinds_are_told_apart_by_header() {
+        assert!(matches!(
+            parse_any("t,F\n0,0\n1e-3,5\n"),
+            Ok(Data::Trace(_))
+        ));
+        assert!(matches!(parse_any("v0,e\n1,0.5\n"), Ok(Data::Cor(_))));
+        assert!(matches!(
+            parse_any("drop_height_m,rebound_height_m\n1,0.5\n"),
+            Ok(Data::Drop(_))
+        ));
+    }
+}

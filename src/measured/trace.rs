@@ -1,0 +1,231 @@
+//! A force–time trace: a recorder's clock (arbitrary zero), noise around a baseline before
+//! and after the pulse. [`Trace::summary`] reads off what a fit starts from: baseline, noise,
+//! peak, where the pulse starts and ends, and the impulse.
+
+use super::MeasuredError;
+use super::table::{self, ColumnSpec};
+
+const SPECS: [ColumnSpec; 2] = [
+    ColumnSpec {
+        name: "time",
+        aliases: &[
+            ("time", 1.0),
+            ("t", 1.0),
+            ("time_s", 1.0),
+            ("time_ms", 1e-3),
+            ("time_us", 1e-6),
+        ],
+        required: true,
+    },
+    ColumnSpec {
+        name: "force",
+        aliases: &[
+            ("force", 1.0),
+            ("f", 1.0),
+            ("force_n", 1.0),
+            ("force_kn", 1e3),
+        ],
+        required: true,
+    },
+];
+
+/// Samples in SI, time strictly increasing.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Trace {
+    pub time: Vec<f64>,
+    pub force: Vec<f64>,
+    /// Line and force-cell column of each sample (for errors found later).
+    pub lines: Vec<usize>,
+    pub force_columns: Vec<usize>,
+    pub end_line: usize,
+}
+
+/// What a trace shows before any model is fitted.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct TraceSummary {
+    /// Median force away from the pulse (N).
+    pub baseline: f64,
+    /// Noise standard deviation there, from the median absolute deviation (N).
+    pub noise: f64,
+    /// Peak force above the baseline (N) and its time (s).
+    pub peak: f64,
+    pub t_peak: f64,
+    /// Where the force, above the baseline, first and last exceeds 5 % of the peak,
+    /// extrapolated linearly to zero from there (s).
+    pub t_start: f64,
+    pub t_end: f64,
+    /// ∫ (F − baseline) dt over [t_start, t_end] (N s) = m v0 (1 + e) for a rebound.
+    pub impulse: f64,
+}
+
+impl Trace {
+    /// Columns `time`/`t`/`time_s`/`time_ms`/`time_us` and `force`/`F`/`force_N`/`force_kN`.
+    pub fn parse(text: &str) -> Result<Trace, MeasuredError> {
+        let p = table::read(text, &SPECS)?;
+        let time: Vec<f64> = p.columns[0].iter().map(|v| v.unwrap_or(f64::NAN)).collect();
+        for i in 1..time.len() {
+            if time[i] <= time[i - 1] {
+                return Err(MeasuredError::at(
+                    p.lines[i],
+                    p.cell_columns[0][i],
+                    format!(
+                        "time not increasing: {} s after {} s on line {}",
+                        time[i],
+                        time[i - 1],
+                        p.lines[i - 1]
+                    ),
+                ));
+            }
+        }
+        Ok(Trace {
+            time,
+            force: p.columns[1].iter().map(|v| v.unwrap_or(f64::NAN)).collect(),
+            lines: p.lines,
+            force_columns: p.cell_columns[1].clone(),
+            end_line: p.end_line,
+        })
+    }
+
+    /// Baseline, noise and pulse; an error when there is no pulse above the noise.
+    pub fn summary(&self) -> Result<TraceSummary, MeasuredError> {
+        let n = self.force.len();
+        let edge = (n / 10).max(1);
+        let mut quiet: Vec<f64> = self.force[..edge.min(n)].to_vec();
+        quiet.extend_from_slice(&self.force[n.saturating_sub(edge)..]);
+        let baseline = median(&mut quiet.clone());
+        let mut dev: Vec<f64> = quiet.iter().map(|f| (f - baseline).abs()).collect();
+        let noise = 1.4826 * median(&mut dev);
+        let (ip, peak) = self.force.iter().map(|f| f - baseline).enumerate().fold(
+            (0, f64::NEG_INFINITY),
+            |a, (i, f)| if f > a.1 { (i, f) } else { a },
+        );
+        if !(peak > 5.0 * noise && peak > 0.0) || n < 3 {
+            let lowest = self
+                .force
+                .iter()
+                .fold(f64::INFINITY, |a, &f| a.min(f - baseline));
+            let hint = if -lowest > 5.0 * noise && -lowest > 0.0 {
+                " (the pulse is negative: force is taken positive pushing on the ball)"
+            } else {
+                "; a trace needs one impact pulse"
+            };
+            return Err(MeasuredError::at(
+                self.lines[ip],
+                self.force_columns[ip],
+                format!(
+                    "empty pulse: the largest force above the baseline ({} N) is within the \
+                     noise ({} N){hint}",
+                    short(peak),
+                    short(noise)
+                ),
+            ));
+        }
+        let level = 0.05 * peak;
+        let above = |i: usize| self.force[i] - baseline > level;
+        let mut a = ip;
+        while a > 0 && above(a - 1) {
+            a -= 1;
+        }
+        let mut b = ip;
+        while b + 1 < n && above(b + 1) {
+            b += 1;
+        }
+        // straight lines through the 5 % points and the half-peak points, continued to zero
+        let t_start = self.extrapolate(a, ip, baseline, peak, true);
+        let t_end = self.extrapolate(b, ip, baseline, peak, false);
+        let impulse = (a.max(1)..=b.min(n - 1))
+            .map(|i| {
+                0.5 * (self.force[i] + self.force[i - 1] - 2.0 * baseline)
+                    * (self.time[i] - self.time[i - 1])
+            })
+            .sum();
+        Ok(TraceSummary {
+            baseline,
+            noise,
+            peak,
+            t_peak: self.time[ip],
+            t_start: t_start.min(self.time[a]),
+            t_end: t_end.max(self.time[b]),
+            impulse,
+        })
+    }
+
+    /// Where the pulse's flank through sample `edge` reaches zero: the line through the first
+    /// samples of the flank (from `edge` toward the peak) above 5 % and above half the peak.
+    fn extrapolate(&self, edge: usize, ip: usize, base: f64, peak: f64, rising: bool) -> f64 {
+        let mut half = edge;
+        while half != ip && self.force[half] - base < 0.5 * peak {
+            half = if rising { half + 1 } else { half - 1 };
+        }
+        let (t1, f1) = (self.time[edge], self.force[edge] - base);
+        let (t2, f2) = (self.time[half], self.force[half] - base);
+        if half == edge || f2 <= f1 {
+            return t1;
+        }
+        t1 - f1 * (t2 - t1) / (f2 - f1)
+    }
+}
+
+fn median(v: &mut [f64]) -> f64 {
+    if v.is_empty() {
+        return 0.0;
+    }
+    v.sort_by(f64::total_cmp);
+    let m = v.len() / 2;
+    if v.len() % 2 == 1 {
+        v[m]
+    } else {
+        0.5 * (v[m - 1] + v[m])
+    }
+}
+
+fn short(x: f64) -> String {
+    crate::text::short(x, 3)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn half_sine(offset: f64, base: f64) -> String {
+        let mut s = String::from("# made up\ntime_ms,force_kN\n");
+        for i in 0..200 {
+            let t = i as f64 * 0.05; // ms
+            let x = (t - offset) / 3.0;
+            let f = if (0.0..=1.0).contains(&x) {
+                (std::f64::consts::PI * x).sin() * 0.1
+            } else {
+                0.0
+            };
+            s.push_str(&format!("{t},{}\n", f + base));
+        }
+        s
+    }
+
+    #[test]
+    fn summary_reads_pulse_baseline_and_units() {
+        let tr = Trace::parse(&half_sine(2.0, 0.001)).unwrap();
+        assert_eq!(tr.time.len(), 200);
+        assert!((tr.time[1] - 5e-5).abs() < 1e-18);
+        let s = tr.summary().unwrap();
+        assert!((s.baseline - 1.0).abs() < 1e-9, "{s:?}");
+        assert!((s.peak - 100.0).abs() < 0.5, "{s:?}");
+        assert!((s.t_start - 2e-3).abs() < 1e-4, "{s:?}");
+        assert!((s.t_end - 5e-3).abs() < 1e-4, "{s:?}");
+        // ∫ 100 sin(π t / 3 ms) dt = 100 · 6 ms / π
+        assert!(
+            (s.impulse - 0.6 / std::f64::consts::PI).abs() < 2e-3,
+            "{s:?}"
+        );
+    }
+
+    #[test]
+    fn bad_traces() {
+        let e = Trace::parse("t,F\n0,0\n1,1\n1,2\n").unwrap_err();
+        assert_eq!((e.line, e.column), (4, 1));
+        assert!(e.message.contains("time not increasing"), "{e}");
+        let flat = Trace::parse("t,F\n0,0\n1,0\n2,0\n3,0\n").unwrap();
+        let e = flat.summary().unwrap_err();
+        assert!(e.message.contains("empty pulse"), "{e}");
+    }
+}

@@ -1,0 +1,42 @@
+//! The drop view's part of [`App`]: its clock, its keys (`d`, space, `b`) and the motion
+//! setting (src/tui/drop_view.rs holds the view's state).
+
+use super::{Action, App, View};
+use crate::tui::drop_view::DropView;
+
+impl App {
+    /// Animate the drop view (the explorer does, unless under reduced motion; tests see the
+    /// whole sequence at once unless they ask).
+    pub fn with_motion(mut self, motion: bool) -> App {
+        self.drop = DropView::new(motion);
+        self
+    }
+
+    pub fn drop_view(&self) -> &DropView {
+        &self.drop
+    }
+
+    /// Whether the event loop should send [`Action::Tick`]s: the drop view is playing.
+    pub fn animating(&self) -> bool {
+        self.view == View::Drop && self.drop.playing
+    }
+
+    /// The drop view's keys (`d`, space, `b`) and the animation clock.
+    pub(super) fn drop_action(&mut self, action: &Action) {
+        match action {
+            Action::ToggleDrop => {
+                self.view = if self.view == View::Drop {
+                    View::Impact
+                } else {
+                    View::Drop
+                };
+                // entering: the animation starts from the release
+                self.drop = DropView::new(self.drop.motion);
+            }
+            Action::DropPause if self.view == View::Drop => self.drop.toggle_pause(),
+            Action::DropReplay if self.view == View::Drop => self.drop.replay(),
+            Action::Tick(dt) if self.view == View::Drop => self.drop.tick(*dt),
+            _ => {}
+        }
+    }
+}

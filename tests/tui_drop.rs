@@ -1,0 +1,132 @@
+//! The explorer's drop view (`d`): a snapshot, the keys that re-run it, the animation clock,
+//! and the reduced-motion setting.
+
+use bouncelab::drop::standards;
+use bouncelab::preset::Preset;
+use bouncelab::tui::action::{self, Action};
+use bouncelab::tui::app::{App, View};
+use ratatui::Terminal;
+use ratatui::backend::TestBackend;
+use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
+
+fn preset(name: &str) -> Preset {
+    Preset::embedded_all()
+        .into_iter()
+        .find(|p| p.name == name)
+        .unwrap()
+}
+
+fn press(app: &mut App, keys: &[KeyCode]) {
+    for &code in keys {
+        let m = match code {
+            KeyCode::Char(c) if c.is_ascii_uppercase() => KeyModifiers::SHIFT,
+            _ => KeyModifiers::NONE,
+        };
+        if let Some(a) = action::from_key(KeyEvent::new(code, m), app.mode()) {
+            app.update(a);
+        }
+    }
+}
+
+fn screen(app: &App, w: u16, h: u16) -> Terminal<TestBackend> {
+    let mut t = Terminal::new(TestBackend::new(w, h)).unwrap();
+    t.draw(|f| f.render_widget(app, f.area())).unwrap();
+    t
+}
+
+#[test]
+fn drop_view_tennis() {
+    let mut app = App::new(preset("tennis"), false);
+    press(&mut app, &[KeyCode::Char('d')]);
+    assert_eq!(app.view(), View::Drop);
+    insta::assert_snapshot!(screen(&app, 120, 36).backend());
+}
+
+#[test]
+fn the_tennis_ball_drops_from_the_itf_height_and_passes() {
+    let mut app = App::new(preset("tennis"), false);
+    press(&mut app, &[KeyCode::Char('d')]);
+    let d = app.drop_view();
+    let run = d.sequence().unwrap();
+    // the preset's v0 is the impact speed of the ITF drop, so the height comes back to 2.54 m
+    assert!(
+        (run.setup.height - 2.54).abs() < 1e-3,
+        "{}",
+        run.setup.height
+    );
+    let (s, v) = d.verdict.unwrap();
+    assert_eq!(s.name, "itf");
+    assert!(v.pass);
+    // the band is the window, in bottom-of-ball heights (ITF reads the bottom)
+    assert_eq!(d.band(), Some((1.35, 1.47)));
+    // FIBA reads the top: the band moves down by the diameter
+    let mut bb = App::new(preset("basketball"), false);
+    press(&mut bb, &[KeyCode::Char('d')]);
+    let (lo, hi) = bb.drop_view().band().unwrap();
+    let r = preset("basketball").measured.radius;
+    assert!((lo - (1.20 - 2.0 * r)).abs() < 1e-12 && (hi - (1.40 - 2.0 * r)).abs() < 1e-12);
+    assert_eq!(standards::for_ball("golf"), None);
+}
+
+#[test]
+fn lambda_zeta_and_v0_keys_rerun_the_drop() {
+    let mut app = App::new(preset("tennis"), false);
+    press(&mut app, &[KeyCode::Char('d')]);
+    let first = |app: &App| app.drop_view().sequence().unwrap().bounces[0];
+    let before = first(&app);
+    press(&mut app, &[KeyCode::Char('L'), KeyCode::Char('L')]);
+    let after_lambda = first(&app);
+    assert!(after_lambda.cor < before.cor, "softer recoil, lower e");
+    press(&mut app, &[KeyCode::Char('z')]);
+    assert_ne!(first(&app).cor, after_lambda.cor);
+    let h = app.drop_view().sequence().unwrap().setup.height;
+    press(&mut app, &[KeyCode::Char('v')]);
+    assert!(app.drop_view().sequence().unwrap().setup.height > h);
+    // Tab leaves the drop view for the impact view, `d` too
+    press(&mut app, &[KeyCode::Tab]);
+    assert_eq!(app.view(), View::Impact);
+    press(&mut app, &[KeyCode::Char('d'), KeyCode::Char('d')]);
+    assert_eq!(app.view(), View::Impact);
+}
+
+#[test]
+fn the_animation_runs_pauses_and_replays() {
+    let mut app = App::new(preset("tennis"), false).with_motion(true);
+    press(&mut app, &[KeyCode::Char('d')]);
+    assert!(app.animating());
+    assert_eq!(app.drop_view().t, 0.0);
+    assert!((app.drop_view().height_now() - 2.54).abs() < 1e-3);
+    app.update(Action::Tick(0.25));
+    assert_eq!(app.drop_view().t, 0.25);
+    let falling = app.drop_view().height_now();
+    assert!(falling < 2.54 && falling > 2.0, "{falling}");
+    press(&mut app, &[KeyCode::Char(' ')]);
+    assert!(!app.animating());
+    app.update(Action::Tick(1.0));
+    assert_eq!(app.drop_view().t, 0.25, "paused");
+    press(&mut app, &[KeyCode::Char(' ')]);
+    app.update(Action::Tick(100.0));
+    let end = app.drop_view().duration();
+    assert_eq!(app.drop_view().t, end);
+    assert!(!app.animating(), "stops at the end");
+    press(&mut app, &[KeyCode::Char('b')]);
+    assert_eq!(app.drop_view().t, 0.0);
+    assert!(app.animating());
+    // ticks do nothing outside the drop view
+    press(&mut app, &[KeyCode::Char('d')]);
+    assert!(!app.animating());
+}
+
+#[test]
+fn reduced_motion_shows_the_whole_sequence_still() {
+    let mut app = App::new(preset("football"), false).with_motion(false);
+    press(&mut app, &[KeyCode::Char('d')]);
+    let d = app.drop_view();
+    assert!(!app.animating());
+    assert_eq!(d.t, d.duration());
+    press(&mut app, &[KeyCode::Char(' ')]);
+    assert!(!app.animating(), "space does not start an animation");
+    let text = format!("{:?}", screen(&app, 120, 36).backend());
+    assert!(text.contains("reduced motion"), "{text}");
+    assert!(text.contains("PASS"), "{text}");
+}
