@@ -75,6 +75,7 @@ pub mod fault;
 pub mod figure;
 pub mod measured;
 pub mod model;
+pub mod peers;
 pub mod preset;
 #[doc(hidden)]
 pub mod sanitize;

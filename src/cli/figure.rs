@@ -1,4 +1,4 @@
-//! `bouncelab figure NAME --out FILE.svg [--data FILE.csv]`: one of the paper's figures as
+//! `bouncelab figure NAME --out FILE.svg [--csv-out FILE.csv]`: one of the paper's figures as
 //! SVG, and its plotted series as CSV. The figures themselves are built in
 //! [`crate::figure::paper`]; this file reads the options, solves, and writes the files.
 
@@ -37,6 +37,10 @@ pub enum FigureName {
     ForceTime,
     /// Contact force against indentation and displacement for one ball (Figs. 6, 8)
     ForceDisplacement,
+    /// The field's contact models calibrated to the ball: COR against speed (docs/peers.md)
+    PeersCorVelocity,
+    /// The field's contact models calibrated to the ball: force against time at v0
+    PeersForceTime,
 }
 
 impl FigureName {
@@ -47,6 +51,8 @@ impl FigureName {
             FigureName::CorVelocity => "cor-velocity",
             FigureName::ForceTime => "force-time",
             FigureName::ForceDisplacement => "force-displacement",
+            FigureName::PeersCorVelocity => "peers-cor-velocity",
+            FigureName::PeersForceTime => "peers-force-time",
         }
     }
 }
@@ -128,9 +134,22 @@ fn check_applicable(a: &FigureArgs) -> anyhow::Result<()> {
         ("--lambda", a.lambda.is_some(), lambda_for),
         ("--zeta", a.zeta.is_some(), ball_figures),
         ("--measured", !a.measured.is_empty(), ball_figures),
-        ("--v0", a.v0.is_some(), &[ForceTime, ForceDisplacement][..]),
-        ("--from", a.from.is_some(), &[CorVelocity][..]),
-        ("--to", a.to.is_some(), &[CorVelocity][..]),
+        (
+            "--v0",
+            a.v0.is_some(),
+            &[
+                ForceTime,
+                ForceDisplacement,
+                PeersCorVelocity,
+                PeersForceTime,
+            ][..],
+        ),
+        (
+            "--from",
+            a.from.is_some(),
+            &[CorVelocity, PeersCorVelocity][..],
+        ),
+        ("--to", a.to.is_some(), &[CorVelocity, PeersCorVelocity][..]),
     ];
     for (opt, present, valid) in given {
         if present && !valid.contains(&a.name) {
@@ -312,6 +331,7 @@ fn build(a: &FigureArgs) -> anyhow::Result<Figure> {
             overlay::relabel_user(&mut f, &origin);
             Ok(f)
         }
+        PeersCorVelocity | PeersForceTime => super::peers::figure(a),
     }
 }
 

@@ -20,6 +20,7 @@ mod fit_save;
 pub mod measured_file;
 pub mod number;
 pub mod output;
+pub mod peers;
 pub mod presets;
 pub mod reproduce;
 pub mod run;
@@ -83,6 +84,10 @@ pub enum Command {
     Drop(drop::DropArgs),
     /// List the ball standards (drop and COR tests) and their windows
     Standards(standards::StandardsArgs),
+    /// The field's contact models (Kelvin–Voigt, Tsuji, Hunt–Crossley) calibrated to a COR,
+    /// beside this model; --export writes them for LAMMPS, LIGGGHTS, Chrono, YADE or MuJoCo
+    #[command(allow_negative_numbers = true)]
+    Peers(peers::PeersArgs),
 }
 
 /// The explorer failed (its terminal, its event loop): not the input's fault.
@@ -251,6 +256,10 @@ fn dispatch(cli: Cli, out: &mut dyn Write) -> anyhow::Result<()> {
         Command::Figure(mut a) => {
             merge(top, &mut a.ball)?;
             figure::run(&a, out)
+        }
+        Command::Peers(mut a) => {
+            merge(top, &mut a.ball)?;
+            peers::run(&a, out)
         }
         Command::Reproduce(a) => {
             if top.is_given() {

@@ -20,6 +20,7 @@ pub mod explorer;
 pub mod history;
 pub mod look;
 pub mod paper;
+pub mod peers;
 pub mod report;
 pub mod svg;
 pub mod ticks;

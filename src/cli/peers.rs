@@ -1,0 +1,311 @@
+//! `bouncelab peers`: the field's contact models calibrated to one ball's COR, beside the
+//! Christoforou–Yigit model, as text, JSON or CSV; `--export CODE` writes the parameters for
+//! a DEM or multibody code (docs/peers.md).
+
+use super::ball::{BallArgs, ChosenBall};
+use super::output::{self, csv_row, given, human, num, opt_num, table};
+use crate::analysis::fit::{FitError, fit_k_r};
+use crate::model::params::ImpactParams;
+use crate::peers::PeerBall;
+use crate::peers::calibrate::{self, Calibrated};
+use crate::peers::export::{self, Code, ExportSet};
+use crate::solver::{SolveOptions, simulate};
+use clap::{Args, ValueEnum};
+use serde::Serialize;
+use std::io::Write;
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum PeersFormat {
+    Text,
+    Json,
+    Csv,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum ExportArg {
+    Lammps,
+    Liggghts,
+    Chrono,
+    Yade,
+    Mujoco,
+    Json,
+}
+
+/// Where the target COR comes from when `--cor` is not given.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum TargetArg {
+    /// The preset's measured COR
+    Measured,
+    /// The Christoforou–Yigit model's COR for the same ball at v0
+    ChristoforouYigit,
+    /// The Christoforou–Yigit COR-vs-speed curve (v0/4 … 4 v0), in least squares
+    ChristoforouYigitCurve,
+}
+
+#[derive(Debug, Clone, Args)]
+pub struct PeersArgs {
+    #[command(flatten)]
+    pub ball: BallArgs,
+    /// COR to calibrate to, in [0, 1] [default: the preset's measured COR]
+    #[arg(long, value_name = "E", conflicts_with = "target",
+          value_parser = super::number::number, allow_hyphen_values = true)]
+    pub cor: Option<f64>,
+    /// Impact speed v0 (m/s) [default: the preset's measured v0]
+    #[arg(long, value_name = "V", value_parser = super::number::number, allow_hyphen_values = true)]
+    pub v0: Option<f64>,
+    /// Target when --cor is not given
+    #[arg(long, value_enum, default_value = "measured")]
+    pub target: TargetArg,
+    /// Output format
+    #[arg(long, value_enum, default_value = "text")]
+    pub format: PeersFormat,
+    /// Write the exactly calibrated parameters for a code instead of the comparison
+    #[arg(long, value_enum, value_name = "CODE")]
+    pub export: Option<ExportArg>,
+}
+
+/// One row of the comparison (the JSON keys of issue 19, then `k_r` for the
+/// Christoforou–Yigit row).
+#[derive(Debug, Clone, Serialize)]
+struct Row {
+    model: &'static str,
+    rule: &'static str,
+    stiffness: f64,
+    damping: f64,
+    cor: f64,
+    max_force: f64,
+    contact_time: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    k_r: Option<f64>,
+}
+
+#[derive(Serialize)]
+struct Report<'a> {
+    mass: f64,
+    v0: f64,
+    target_cor: f64,
+    models: &'a [Row],
+    preset: Option<&'a str>,
+    radius: f64,
+    target_source: &'static str,
+}
+
+pub fn run(a: &PeersArgs, out: &mut dyn Write) -> anyhow::Result<()> {
+    let b = a.ball.resolve(a.v0)?;
+    let radius = b.ball.measured.as_ref().map_or(f64::NAN, |m| m.radius);
+    let ball = PeerBall::from_params(&b.ball.params, radius);
+    let (target, source) = target(a, &b)?;
+    if let Some(code) = a.export {
+        let set = ExportSet::new(&ball, target, &b.ball.name)?;
+        let code = match code {
+            ExportArg::Json => return Ok(output::json(out, &set)?),
+            ExportArg::Lammps => Code::Lammps,
+            ExportArg::Liggghts => Code::Liggghts,
+            ExportArg::Chrono => Code::Chrono,
+            ExportArg::Yade => Code::Yade,
+            ExportArg::Mujoco => Code::Mujoco,
+        };
+        out.write_all(export::snippet(code, &set).as_bytes())?;
+        return Ok(());
+    }
+    let mut rows: Vec<Row> = calibrate::compare(&ball, target, 0)?
+        .iter()
+        .map(|c| peer_row(&ball, c))
+        .collect();
+    rows.push(christoforou_yigit_row(&b, target)?);
+    let report = Report {
+        mass: ball.mass,
+        v0: ball.v0,
+        target_cor: target,
+        models: &rows,
+        preset: b.preset(),
+        radius,
+        target_source: source,
+    };
+    match a.format {
+        PeersFormat::Json => output::json(out, &report)?,
+        PeersFormat::Csv => csv(out, &rows)?,
+        PeersFormat::Text => text(out, &b, &ball, &report)?,
+    }
+    Ok(())
+}
+
+/// The target COR and where it came from.
+fn target(a: &PeersArgs, b: &ChosenBall) -> anyhow::Result<(f64, &'static str)> {
+    if let Some(e) = a.cor {
+        if !(e.is_finite() && (0.0..=1.0).contains(&e)) {
+            anyhow::bail!("invalid cor: {} (a COR lies in [0, 1])", num(e));
+        }
+        return Ok((e, "given"));
+    }
+    let (p, law) = (&b.ball.params, b.ball.law);
+    match a.target {
+        TargetArg::Measured => b
+            .ball
+            .measured
+            .as_ref()
+            .and_then(|m| m.cor)
+            .map(|e| (e, "measured"))
+            .ok_or_else(|| {
+                anyhow::anyhow!("cor: the preset has no measured COR; give --cor E or --target")
+            }),
+        TargetArg::ChristoforouYigit => Ok((
+            calibrate::christoforou_yigit_cor(p, law, p.v0)?,
+            "christoforou-yigit",
+        )),
+        TargetArg::ChristoforouYigitCurve => {
+            let speeds: Vec<f64> = (0..9)
+                .map(|i| p.v0 * 4f64.powf((i as f64 - 4.0) / 4.0))
+                .collect();
+            let table = calibrate::christoforou_yigit_curve(p, law, &speeds)?;
+            // none of the peers' COR depends on v0: the least-squares COR is the mean
+            let mean = table.iter().map(|t| t.1).sum::<f64>() / table.len() as f64;
+            Ok((mean, "christoforou-yigit-curve"))
+        }
+    }
+}
+
+fn peer_row(ball: &PeerBall, c: &Calibrated) -> Row {
+    Row {
+        model: c.model.name(),
+        rule: c.rule.name(),
+        stiffness: ball.stiffness(c.model),
+        damping: c.damping,
+        cor: c.response.cor,
+        max_force: c.response.max_force,
+        contact_time: c.response.contact_time,
+        k_r: None,
+    }
+}
+
+/// The Christoforou–Yigit model of the same ball: K_r fitted to the target (rule `exact`,
+/// docs/model.md §4), or, when no K_r reaches it at this ζ, the preset's own K_r (rule `preset`).
+fn christoforou_yigit_row(b: &ChosenBall, target: f64) -> anyhow::Result<Row> {
+    let (p, law) = (b.ball.params, b.ball.law);
+    let (params, rule) = match fit_k_r(&p, law, target) {
+        Ok(f) => (ImpactParams { k_r: f.k_r, ..p }, "exact"),
+        Err(FitError::OutOfReach { .. }) => (p, "preset"),
+        Err(e) => return Err(e.into()),
+    };
+    let r = simulate(&params, law, &SolveOptions::default())?;
+    Ok(Row {
+        model: "christoforou-yigit",
+        rule,
+        stiffness: params.k_p,
+        damping: params.damping,
+        cor: r.cor,
+        max_force: r.max_force,
+        contact_time: r.contact_time,
+        k_r: Some(params.k_r),
+    })
+}
+
+fn csv(out: &mut dyn Write, rows: &[Row]) -> std::io::Result<()> {
+    csv_row(
+        out,
+        &[
+            "model",
+            "rule",
+            "stiffness",
+            "damping",
+            "cor",
+            "max_force",
+            "contact_time",
+            "k_r",
+        ],
+    )?;
+    for r in rows {
+        csv_row(
+            out,
+            &[
+                r.model.to_string(),
+                r.rule.to_string(),
+                num(r.stiffness),
+                num(r.damping),
+                num(r.cor),
+                num(r.max_force),
+                opt_num(r.contact_time),
+                opt_num(r.k_r),
+            ],
+        )?;
+    }
+    Ok(())
+}
+
+fn text(out: &mut dyn Write, b: &ChosenBall, ball: &PeerBall, r: &Report) -> std::io::Result<()> {
+    writeln!(
+        out,
+        "{}: m = {} kg, R = {} m, v0 = {} m/s",
+        b.label(),
+        given(ball.mass, 6),
+        given(ball.radius, 6),
+        given(ball.v0, 6)
+    )?;
+    writeln!(
+        out,
+        "target COR {} ({}); k = K_p = {} N/m, K_h = {} N/m^1.5",
+        given(r.target_cor, 6),
+        r.target_source,
+        human(ball.k, 4),
+        human(ball.k_h, 4)
+    )?;
+    writeln!(out)?;
+    let mut rows = vec![vec![
+        "model".into(),
+        "rule".into(),
+        "damping".into(),
+        "COR at v0".into(),
+        "peak force".into(),
+        "contact time".into(),
+    ]];
+    for row in r.models {
+        let damping = match row.model {
+            "hunt-crossley" => format!("χ = {}", human(row.damping, 5)),
+            "tsuji" => format!("η = {} kg/(s·m^¼)", human(row.damping, 5)),
+            _ => format!("η = {} kg/s", human(row.damping, 5)),
+        };
+        rows.push(vec![
+            row.model.into(),
+            row.rule.into(),
+            damping,
+            human(row.cor, 6),
+            format!("{} N", human(row.max_force, 4)),
+            row.contact_time
+                .map_or("no rebound".into(), |t| format!("{} ms", human(t * 1e3, 4))),
+        ]);
+    }
+    table(out, "  ", &rows)?;
+    writeln!(out)?;
+    writeln!(
+        out,
+        "The peers' COR does not depend on v0 at this damping (η for Kelvin–Voigt and Tsuji, χ for \
+         Hunt–Crossley, whose force is normalized by v0); docs/peers.md."
+    )
+}
+
+/// `figure peers-cor-velocity` and `figure peers-force-time` (src/figure/peers.rs): the
+/// peers calibrated to the ball's measured COR (else its Christoforou–Yigit COR) at v0.
+pub fn figure(a: &super::figure::FigureArgs) -> anyhow::Result<crate::figure::Figure> {
+    use crate::figure::peers as fig;
+    let b = a.ball.resolve(a.v0)?.ball;
+    let target = fig::target(&b).map_err(|e| anyhow::anyhow!(e))?;
+    let built = if a.name == super::figure::FigureName::PeersForceTime {
+        fig::force_time(
+            &b,
+            target,
+            a.points.unwrap_or(super::figure::HISTORY_SAMPLES),
+        )
+    } else {
+        let (lo, hi) = fig::default_range(&b.params);
+        let (from, to) = (a.from.unwrap_or(lo), a.to.unwrap_or(hi));
+        crate::peers::positive("from", from)?;
+        crate::peers::positive("to", to)?;
+        if from >= to {
+            anyhow::bail!("invalid speed range: --from {from} must be below --to {to}");
+        }
+        let n = a.points.unwrap_or(super::figure::VELOCITY_POINTS);
+        let speeds = crate::analysis::sweep::log_space(from, to, n);
+        fig::cor_velocity(&b, target, &speeds)
+    };
+    built.map_err(|e| anyhow::anyhow!(e))
+}
