@@ -43,7 +43,11 @@
 //!   [`ImpactResponse`];
 //! - [`model`]: the parameters ([`ImpactParams`], normalized as λ, ζ, z̄_p, κ), the contact laws
 //!   ([`ContactLaw`]) and the material formulas;
-//! - [`analysis`]: sweeps and fits over many impacts;
+//! - [`analysis`]: sweeps, and fits of the model to measurements (one COR, COR tables,
+//!   force–time traces);
+//! - [`measured`]: measured data read from text (traces, COR tables, drop tests);
+//! - [`peers`]: the field's other contact models (Kelvin–Voigt, Tsuji, Hunt–Crossley)
+//!   calibrated to the same ball;
 //! - [`mod@drop`]: drop tests and bounce sequences (flight with drag between impacts), and the
 //!   sports' standards they are judged by;
 //! - [`preset`] and [`catalog`]: the ball presets (TOML) and where they are found.
