@@ -23,16 +23,14 @@
 
 #![warn(missing_docs)]
 
-use crate::analysis::fit::{Fit, FitError, fit_k_r};
+use crate::analysis::fit::{Fit, fit_k_r};
 use crate::analysis::sweep::{VelocityPoint, ZetaPoint, cor_vs_velocity, cor_vs_zeta};
-use crate::catalog::{Catalog, CatalogError, Entry, Origin};
-use crate::drop::{DropBall, DropError, DropRun, DropSetup};
+use crate::catalog::{Catalog, Entry, Origin};
+use crate::drop::{DropBall, DropRun, DropSetup};
 use crate::model::contact::ContactLaw;
-use crate::model::params::{Field, ImpactParams, ParamError, check_positive, validate_lambda_zeta};
+use crate::model::params::{Field, ImpactParams, check_positive, validate_lambda_zeta};
 use crate::preset::{Measured, ParamSource};
-use crate::solver::{ImpactResponse, SolveError, SolveOptions, simulate};
-use crate::text::number as display_number;
-use std::fmt;
+use crate::solver::{ImpactResponse, SolveOptions, simulate};
 
 /// Most history samples [`Ball::impact_history`] takes (as `run --samples`).
 pub const MAX_SAMPLES: usize = 100_000;
@@ -63,115 +61,8 @@ pub struct Ball {
     pub description: String,
 }
 
-/// Why a ball cannot be built or run. Each message is one line, the command line's own
-/// (without its `bouncelab: error: ` prefix).
-#[derive(Debug, Clone, PartialEq)]
-pub enum BallError {
-    /// No preset of that name, or a preset file that does not load.
-    Catalog(CatalogError),
-    /// A preset whose own parameter set is out of its domain (at the speed asked for).
-    Preset {
-        /// The preset's name.
-        name: String,
-        /// `"adopted"` or `"materials"`.
-        source: &'static str,
-        /// The parameter at fault.
-        error: ParamError,
-    },
-    /// A value given (v0, λ, ζ, a parameter, a number of samples) is out of its domain.
-    Param(ParamError),
-    /// A λ or ζ given is in its domain but the K_r or c it gives for this ball is not.
-    Derived {
-        /// [`Field::Lambda`] or [`Field::Zeta`].
-        field: Field,
-        /// The value given.
-        value: f64,
-        /// `"K_r"` or `"c"`.
-        gives: &'static str,
-        /// The K_r or c it gives.
-        derived: f64,
-        /// Its unit.
-        unit: &'static str,
-        /// Why the derived value is refused.
-        reason: &'static str,
-    },
-    /// A number of history samples outside 2 … [`MAX_SAMPLES`].
-    Samples(usize),
-    /// A list that needs at least one value (the λ values of a ζ sweep) is empty.
-    NoValue(&'static str),
-    /// The impact has no answer (see [`SolveError`]).
-    Solve(SolveError),
-    /// The fit has no answer (see [`FitError`]).
-    Fit(FitError),
-    /// The drop test has no answer (see [`DropError`]).
-    Drop(DropError),
-}
-
-impl fmt::Display for BallError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            BallError::Catalog(e) => write!(f, "{e}"),
-            BallError::Preset {
-                name,
-                source,
-                error,
-            } => write!(f, "preset '{name}' ({source} parameters): {error}"),
-            BallError::Param(e) => write!(f, "{e}"),
-            BallError::Derived {
-                field,
-                value,
-                gives,
-                derived,
-                unit,
-                reason,
-            } => write!(
-                f,
-                "invalid {field}: {} (gives {gives} = {} {unit}: {reason})",
-                display_number(*value),
-                display_number(*derived)
-            ),
-            BallError::Samples(n) => {
-                write!(f, "invalid samples: {n} (must lie in 2 … {MAX_SAMPLES})")
-            }
-            BallError::NoValue(field) => write!(f, "invalid {field}: no value given"),
-            BallError::Solve(e) => write!(f, "{e}"),
-            BallError::Fit(e) => write!(f, "{e}"),
-            BallError::Drop(e) => write!(f, "{e}"),
-        }
-    }
-}
-
-impl std::error::Error for BallError {}
-
-impl From<CatalogError> for BallError {
-    fn from(e: CatalogError) -> Self {
-        BallError::Catalog(e)
-    }
-}
-
-impl From<ParamError> for BallError {
-    fn from(e: ParamError) -> Self {
-        BallError::Param(e)
-    }
-}
-
-impl From<SolveError> for BallError {
-    fn from(e: SolveError) -> Self {
-        BallError::Solve(e)
-    }
-}
-
-impl From<FitError> for BallError {
-    fn from(e: FitError) -> Self {
-        BallError::Fit(e)
-    }
-}
-
-impl From<DropError> for BallError {
-    fn from(e: DropError) -> Self {
-        BallError::Drop(e)
-    }
-}
+mod error;
+pub use error::BallError;
 
 impl Ball {
     /// An embedded preset (`superball`, `golf`, `baseball`, …) on the parameter set and contact
@@ -506,62 +397,4 @@ pub fn sweep_zeta(
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn messages_name_the_field_and_the_preset() {
-        let e = Ball::from_preset("superball")
-            .unwrap()
-            .with_v0(-1.0)
-            .unwrap_err();
-        assert_eq!(e.to_string(), "invalid v0: -1 (must not be negative)");
-        let e = Ball::from_preset("superball")
-            .unwrap()
-            .with_lambda(2e6)
-            .unwrap_err();
-        assert_eq!(
-            e.to_string(),
-            "invalid lambda: 2000000 (above 1e6, where the recoil spring is rigid)"
-        );
-        // a ζ in its domain whose c is not: named by the ζ given
-        let e = Ball::from_preset("superball")
-            .unwrap()
-            .with_zeta(1e-14)
-            .unwrap_err();
-        assert!(
-            e.to_string().starts_with("invalid zeta: 1e-14 (gives c = "),
-            "{e}"
-        );
-        let e = Ball::normalized(1.0, 0.1, Some(0.0), ContactLaw::Linear).unwrap_err();
-        assert_eq!(e.to_string(), "invalid zp_bar: 0 (must be positive)");
-        let e = Ball::from_preset("superball")
-            .unwrap()
-            .impact_history(1)
-            .unwrap_err();
-        assert_eq!(e.to_string(), "invalid samples: 1 (must lie in 2 … 100000)");
-        let e = sweep_zeta(&[], &[1.0], ContactLaw::Linear).unwrap_err();
-        assert_eq!(e.to_string(), "invalid lambda: no value given");
-    }
-
-    /// The builder runs what `simulate` runs: nothing is recomputed differently.
-    #[test]
-    fn the_builder_is_simulate() {
-        let b = Ball::from_preset("golf")
-            .unwrap()
-            .with_v0(3.0)
-            .unwrap()
-            .with_lambda_zeta(Some(0.7), Some(0.2))
-            .unwrap();
-        let mut p = Ball::from_preset("golf").unwrap().params;
-        p.v0 = 3.0;
-        p.k_r = 0.7 * p.k_p;
-        p.damping = (p.mass * p.k_p).sqrt() / 0.4;
-        assert_eq!(b.params, p);
-        assert!((b.lambda() - 0.7).abs() < 1e-15 && (b.zeta() - 0.2).abs() < 1e-15);
-        let direct = simulate(&p, b.law, &SolveOptions::default().with_energy()).unwrap();
-        assert_eq!(b.impact().unwrap(), direct);
-        let fit = b.fit_cor(direct.cor).unwrap();
-        assert!((fit.lambda - 0.7).abs() < 1e-8, "{}", fit.lambda);
-    }
-}
+mod tests;
