@@ -13,7 +13,7 @@
 //! - in the presets folder only regular `*.toml` files not starting with `.` are read, in
 //!   file-name order; a missing folder means no user presets.
 //!
-//! Writing a preset file (the explorer's `s`) is in [`write`]: atomic, and never replacing a
+//! Writing a preset file (the explorer's `s`) is in [`mod@write`]: atomic, and never replacing a
 //! file unless asked to.
 
 pub mod write;

@@ -9,7 +9,7 @@
 //! - the command line's stdout goes through [`Writer`] and its error lines through [`line`]:
 //!   no byte of C0 (except the line feed), DEL or C1 reaches the terminal
 //!   (tests/cli_guarantees.rs, `control_characters_never_reach_the_terminal`);
-//! - every file written through [`crate::atomic`] is passed through [`text`], and
+//! - every file written through `crate::atomic` is passed through [`text`], and
 //!   `figure::svg::render` too: an SVG stays well-formed XML (`a_figure_with_control_characters_is_valid_xml`).
 //!
 //! JSON needs nothing: serde_json escapes control characters itself.

@@ -1,6 +1,9 @@
 //! What the explorer draws: snapshots of whole screens (TestBackend), the log axis's decade
 //! labels, colour off under NO_COLOR, and no panic at any size.
 
+use bouncelab::figure::{
+    Axis as FigAxis, Figure, Kind, Look, Marker as Shape, Series, Style as Stroke, Tone,
+};
 use bouncelab::preset::Preset;
 use bouncelab::tui::action::{self, Action};
 use bouncelab::tui::app::App;
@@ -13,6 +16,7 @@ use ratatui::buffer::Buffer;
 use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
 use ratatui::layout::Rect;
 use ratatui::style::Color;
+use ratatui::widgets::Widget;
 
 fn app(i: usize) -> App {
     App::new(Preset::embedded().remove(i), true)
@@ -330,4 +334,52 @@ fn resize_storm() {
         t.draw(|f| f.render_widget(&a, f.area())).unwrap();
         assert_eq!(t.backend().buffer().area, Rect::new(0, 0, w, h));
     }
+}
+
+/// A figure built by hand: a curve, a tagged threshold, two markers on one point, the
+/// legend from the series' keys.
+#[test]
+fn a_figure_draws_its_curve_tag_markers_and_legend() {
+    let curve = Series::new("model", "model", Kind::Model, Stroke::Solid, 0)
+        .with_points(vec![(0.0, 0.0), (1.0, 1.0), (2.0, 0.0)])
+        .with_look(Look::new(Tone::Current, Some("model"), None));
+    let threshold = Series::new("z_p", "z_p", Kind::Reference, Stroke::Dotted, 7)
+        .with_points(vec![(1.5, 0.0), (1.5, 0.5)])
+        .with_look(Look::new(Tone::Rule, None, Some("z_p")));
+    let marker = |text: &str, kind| {
+        Series::new(text, text, kind, Stroke::Markers(Shape::Diamond), 4)
+            .with_points(vec![(0.5, 0.5)])
+            .with_look(Look::new(Tone::Highlight, Some("here"), Some(text)))
+    };
+    let mut fig = Figure::new(
+        "t".into(),
+        String::new(),
+        FigAxis::linear("x", "x", 1.0),
+        FigAxis::linear("y", "y", 1.0),
+        vec![
+            curve,
+            threshold,
+            marker("◆", Kind::ThisRun),
+            marker("S", Kind::ThisRun),
+        ],
+    );
+    fig.screen_title = "a chart".into();
+    let area = Rect::new(0, 0, 60, 20);
+    let mut buf = Buffer::empty(area);
+    Plot::new(&fig, Theme::new(false)).render(area, &mut buf);
+    let s = text(&buf);
+    assert!(s.starts_with("┌ a chart "), "{s}");
+    assert!(s.contains("z_p"), "the threshold's tag:\n{s}");
+    assert!(
+        s.contains("◆S"),
+        "a marker whose cell is taken moves right:\n{s}"
+    );
+    assert!(
+        s.contains("━ model") && s.contains("◆ S here"),
+        "legend:\n{s}"
+    );
+    assert!(
+        s.contains('⠁') || s.contains('⠈') || s.contains('⡀'),
+        "braille:\n{s}"
+    );
 }

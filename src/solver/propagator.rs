@@ -4,7 +4,11 @@
 //! Why hand-written: nalgebra's matrix exponential costs microseconds per evaluation, and the
 //! event search evaluates w(τ) dozens of times per impact. Here e^{Aτ} is written through the
 //! interpolating polynomial of e^{sτ} at the eigenvalues (Newton divided differences, Opitz):
-//!     e^{Aτ} = f[s1] I + f[s1,s2] (A − s1 I) + f[s1,s2,s3] (A − s1 I)(A − s2 I),
+//!
+//! ```text
+//! e^{Aτ} = f[s1] I + f[s1,s2] (A − s1 I) + f[s1,s2,s3] (A − s1 I)(A − s2 I),
+//! ```
+//!
 //! which is exact for any A, defective ones included (critical damping, ζ = 1 at λ = 0), as long
 //! as the divided differences are formed without cancellation. Coincident pairs are handled by
 //! series (sinh x / x, (eˣ−1)/x); only a near-triple root would cancel, and there the

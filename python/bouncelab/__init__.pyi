@@ -1,0 +1,152 @@
+"""Type stubs of bouncelab (the functions live in the native module bouncelab._native)."""
+
+from typing import Literal, Optional, Sequence, TypedDict, Union
+
+import numpy as np
+import numpy.typing as npt
+
+Law = Literal["linear", "elastic-plastic", "hertz"]
+ParamSet = Literal["adopted", "materials"]
+Floats = Union[float, Sequence[float], npt.NDArray[np.float64]]
+Array = npt.NDArray[np.float64]
+
+class NoAnswerError(ValueError):
+    """The solver ran out of its step budget: no answer (the command line's exit code 1)."""
+
+class Measured(TypedDict):
+    v0: float
+    cor: Optional[float]
+    max_force: Optional[float]
+    contact_time: Optional[float]
+
+class Energy(TypedDict):
+    initial_kinetic: float
+    final_kinetic: float
+    dashpot: float
+    contact: float
+    spring: float
+    relative_residual: float
+
+class Impact:
+    """One impact, SI units; the attributes are the keys of ``bouncelab run --format json``."""
+
+    preset: Optional[str]
+    origin: str
+    parameters: str
+    law: str
+    method: str
+    mass: float
+    k_p: float
+    k_r: float
+    c: float
+    z_p: float
+    k_h: float
+    v0: float
+    lambda_: float
+    zeta: float
+    zp_bar: float
+    cor: float
+    rebound: bool
+    max_force: float
+    contact_time: Optional[float]
+    max_indentation: float
+    permanent_indentation: float
+    max_force_normalized: float
+    contact_time_normalized: Optional[float]
+    @property
+    def measured(self) -> Optional[Measured]: ...
+    @property
+    def energy(self) -> Optional[Energy]: ...
+    @property
+    def t(self) -> Optional[Array]:
+        """Times (s), with ``history=True``."""
+    @property
+    def force(self) -> Optional[Array]:
+        """F(t) (N), with ``history=True``."""
+    @property
+    def indentation(self) -> Optional[Array]:
+        """z(t) (m), with ``history=True``."""
+    @property
+    def displacement(self) -> Optional[Array]:
+        """α(t) (m), with ``history=True``."""
+    def to_dict(self) -> dict:
+        """The keys of ``bouncelab run --format json`` (``lambda``, not ``lambda_``)."""
+
+def presets() -> list[dict]:
+    """Embedded and user presets, as ``bouncelab presets --format json``."""
+
+def run(
+    preset: str = "superball",
+    law: Optional[Law] = None,
+    v0: Optional[float] = None,
+    lambda_: Optional[float] = None,
+    zeta: Optional[float] = None,
+    history: bool = False,
+    samples: int = 400,
+    params: Optional[ParamSet] = None,
+) -> Impact:
+    """One impact of a preset, as ``bouncelab run --preset NAME``."""
+
+def run_normalized(
+    lambda_: float = 1.0,
+    zeta: float = 0.1,
+    zp_bar: Optional[float] = None,
+    law: Law = "linear",
+    history: bool = False,
+    samples: int = 400,
+) -> Impact:
+    """One impact of the normalized ball (m = K_p = v0 = 1), as ``run --normalized``."""
+
+def run_params(
+    *,
+    m: float,
+    k_p: float,
+    c: float,
+    k_r: float,
+    v0: float,
+    z_p: float = ...,
+    k_h: Optional[float] = None,
+    law: Law = "linear",
+    history: bool = False,
+    samples: int = 400,
+) -> Impact:
+    """One impact of a ball given by its parameters (SI); z_p = inf: no flattening."""
+
+def sweep_zeta(lambdas: Floats, zetas: Floats, law: Law = "linear") -> dict[str, Array]:
+    """COR, F̄_m, τ_f against ζ per λ (columns of ``bouncelab sweep zeta``)."""
+
+def sweep_velocity(
+    preset: str = "superball",
+    speeds: Optional[Floats] = None,
+    law: Optional[Law] = None,
+    params: Optional[ParamSet] = None,
+) -> dict[str, Array]:
+    """COR, F_m, t_f, z_f against v0 (columns of ``bouncelab sweep velocity``)."""
+
+def fit(
+    cor: float,
+    preset: str = "superball",
+    v0: Optional[float] = None,
+    law: Optional[Law] = None,
+    params: Optional[ParamSet] = None,
+) -> dict:
+    """K_r and λ that give a measured COR (keys of ``bouncelab fit --format json``)."""
+
+class Drop(TypedDict):
+    height: float
+    drag: bool
+    bounces: dict[str, Array]
+
+def drop(
+    preset: str = "superball",
+    height: float = 1.0,
+    bounces: int = 10,
+    min_rebound: float = 0.001,
+    drag: bool = True,
+    drag_coefficient: Optional[float] = None,
+    air_density: Optional[float] = None,
+    law: Optional[Law] = None,
+    params: Optional[ParamSet] = None,
+) -> Drop:
+    """A drop test, bounce by bounce, as ``bouncelab drop``: ``bounces`` holds arrays v_in,
+    v_out, cor, rebound_height, contact_time, max_force, t_start (one entry a bounce)."""

@@ -1,0 +1,625 @@
+//! `bouncelab._native`: the Python bindings of the bouncelab library (the package `bouncelab`
+//! re-exports them; `bouncelab/__init__.pyi` types them). Keyword arguments in, SI units, the
+//! names of the command line's JSON and CSV output, numpy arrays out. Every check and message
+//! is the library's, which is the command line's: an error raises `ValueError` carrying the
+//! line `bouncelab: error: …` would print (`NoAnswerError`, a `ValueError`, for an impact the
+//! solver could not bring to an end: the command line's exit code 1).
+
+use bouncelab::analysis::fit::Fit;
+use bouncelab::catalog::{self, Catalog, Entry, Origin};
+use bouncelab::model::params::ImpactParams;
+use bouncelab::preset::ParamSource;
+use bouncelab::solver::{ImpactResponse, Method, SolveError};
+use bouncelab::{Ball, BallError, ContactLaw};
+use numpy::{PyArray1, PyReadonlyArray1};
+use pyo3::create_exception;
+use pyo3::exceptions::PyValueError;
+use pyo3::prelude::*;
+use pyo3::types::PyDict;
+
+create_exception!(
+    bouncelab,
+    NoAnswerError,
+    PyValueError,
+    "The solver ran out of its step budget before the ball left or came to rest: no answer \
+     (the command line's exit code 1). A nearby λ or ζ may answer."
+);
+
+/// A library error as a Python exception with the command line's message.
+fn error(e: BallError) -> PyErr {
+    match e {
+        BallError::Solve(e @ SolveError::Unresolved { .. }) => {
+            NoAnswerError::new_err(e.to_string())
+        }
+        e => PyValueError::new_err(e.to_string()),
+    }
+}
+
+fn value_error(message: String) -> PyErr {
+    PyValueError::new_err(message)
+}
+
+/// A contact law by its command-line name: linear, elastic-plastic, hertz.
+fn law(name: &str) -> PyResult<ContactLaw> {
+    name.parse::<ContactLaw>().map_err(value_error)
+}
+
+/// A parameter set by its command-line name: adopted, materials.
+fn source(name: &str) -> PyResult<ParamSource> {
+    match name {
+        "adopted" => Ok(ParamSource::Adopted),
+        "materials" => Ok(ParamSource::Materials),
+        _ => Err(value_error(format!(
+            "unknown parameter set '{name}' (expected adopted or materials)"
+        ))),
+    }
+}
+
+/// The presets the command line knows: the embedded ones and the user's folder
+/// (`$XDG_CONFIG_HOME/bouncelab/presets`).
+fn load_catalog() -> PyResult<Catalog> {
+    Catalog::load(catalog::user_presets_dir().as_deref(), None)
+        .map_err(|e| error(BallError::Catalog(e)))
+}
+
+fn entry(cat: &Catalog, name: &str) -> PyResult<Entry> {
+    cat.get(name)
+        .cloned()
+        .map_err(|e| error(BallError::Catalog(e)))
+}
+
+/// A preset ball with the command line's `--params`, `--law`, `--v0` applied.
+fn preset_ball(
+    preset: &str,
+    params: Option<&str>,
+    law_name: Option<&str>,
+    v0: Option<f64>,
+) -> PyResult<Ball> {
+    let cat = load_catalog()?;
+    let entry = entry(&cat, preset)?;
+    let params = params.map(source).transpose()?;
+    let law_ = law_name.map(law).transpose()?;
+    Ball::from_entry(&entry, params, law_, v0).map_err(error)
+}
+
+/// A list of floats from a numpy array, a sequence, or one number.
+fn floats(obj: &Bound<'_, PyAny>) -> PyResult<Vec<f64>> {
+    if let Ok(a) = obj.extract::<PyReadonlyArray1<'_, f64>>() {
+        return Ok(a.as_array().to_vec());
+    }
+    if let Ok(x) = obj.extract::<f64>() {
+        return Ok(vec![x]);
+    }
+    obj.extract::<Vec<f64>>()
+}
+
+fn array<'py>(py: Python<'py>, v: Vec<f64>) -> Py<PyArray1<f64>> {
+    PyArray1::from_vec(py, v).unbind()
+}
+
+/// The answer to one impact, SI units; attribute names are the keys of `bouncelab run
+/// --format json` (`lambda_` for `lambda`, a Python keyword).
+#[pyclass(frozen, module = "bouncelab")]
+struct Impact {
+    #[pyo3(get)]
+    preset: Option<String>,
+    #[pyo3(get)]
+    origin: String,
+    #[pyo3(get)]
+    parameters: &'static str,
+    #[pyo3(get)]
+    law: &'static str,
+    #[pyo3(get)]
+    method: &'static str,
+    #[pyo3(get)]
+    mass: f64,
+    #[pyo3(get)]
+    k_p: f64,
+    #[pyo3(get)]
+    k_r: f64,
+    #[pyo3(get)]
+    c: f64,
+    #[pyo3(get)]
+    z_p: f64,
+    #[pyo3(get)]
+    k_h: f64,
+    #[pyo3(get)]
+    v0: f64,
+    #[pyo3(get)]
+    lambda_: f64,
+    #[pyo3(get)]
+    zeta: f64,
+    #[pyo3(get)]
+    zp_bar: f64,
+    #[pyo3(get)]
+    cor: f64,
+    #[pyo3(get)]
+    rebound: bool,
+    #[pyo3(get)]
+    max_force: f64,
+    #[pyo3(get)]
+    contact_time: Option<f64>,
+    #[pyo3(get)]
+    max_indentation: f64,
+    #[pyo3(get)]
+    permanent_indentation: f64,
+    #[pyo3(get)]
+    max_force_normalized: f64,
+    #[pyo3(get)]
+    contact_time_normalized: Option<f64>,
+    /// (v0, cor, max_force, contact_time) measured, presets only
+    measured: Option<[Option<f64>; 4]>,
+    /// (initial_kinetic, final_kinetic, dashpot, contact, spring, relative_residual)
+    energy: Option<[f64; 6]>,
+    /// t, force, indentation, displacement, when the history was asked for
+    history: Option<[Py<PyArray1<f64>>; 4]>,
+}
+
+const MEASURED_KEYS: [&str; 4] = ["v0", "cor", "max_force", "contact_time"];
+const ENERGY_KEYS: [&str; 6] = [
+    "initial_kinetic",
+    "final_kinetic",
+    "dashpot",
+    "contact",
+    "spring",
+    "relative_residual",
+];
+const HISTORY_KEYS: [&str; 4] = ["t", "force", "indentation", "displacement"];
+
+impl Impact {
+    fn new(py: Python<'_>, b: &Ball, r: ImpactResponse, history: bool) -> Impact {
+        let p = &b.params;
+        let n = &r.normalized;
+        let h = r.history;
+        Impact {
+            preset: b.name.clone(),
+            origin: b.origin.clone(),
+            parameters: b.source,
+            law: r.law.name(),
+            method: match r.method {
+                Method::Exact => "exact",
+                Method::Numeric => "numeric",
+            },
+            mass: p.mass,
+            k_p: p.k_p,
+            k_r: p.k_r,
+            c: p.damping,
+            z_p: p.z_p,
+            k_h: p.k_h,
+            v0: p.v0,
+            lambda_: n.lambda,
+            zeta: n.zeta,
+            zp_bar: n.zp_bar,
+            cor: r.cor,
+            rebound: r.rebound,
+            max_force: r.max_force,
+            contact_time: r.contact_time,
+            max_indentation: r.max_indentation,
+            permanent_indentation: r.permanent_indentation,
+            max_force_normalized: r.max_force_normalized,
+            contact_time_normalized: r.contact_time_normalized,
+            measured: b
+                .measured
+                .as_ref()
+                .map(|m| [Some(m.v0), m.cor, m.max_force, m.contact_time]),
+            energy: r.energy.map(|e| {
+                [
+                    e.initial_kinetic,
+                    e.final_kinetic,
+                    e.dashpot,
+                    e.contact,
+                    e.spring,
+                    e.relative_residual(),
+                ]
+            }),
+            history: history.then(|| {
+                [
+                    array(py, h.t),
+                    array(py, h.force),
+                    array(py, h.indentation),
+                    array(py, h.displacement),
+                ]
+            }),
+        }
+    }
+
+    fn series(&self, py: Python<'_>, i: usize) -> Option<Py<PyArray1<f64>>> {
+        self.history.as_ref().map(|h| h[i].clone_ref(py))
+    }
+}
+
+#[pymethods]
+impl Impact {
+    /// Times t (s) of the history, or None without `history=True`.
+    #[getter]
+    fn t(&self, py: Python<'_>) -> Option<Py<PyArray1<f64>>> {
+        self.series(py, 0)
+    }
+
+    /// Force F(t) (N), or None without `history=True`.
+    #[getter]
+    fn force(&self, py: Python<'_>) -> Option<Py<PyArray1<f64>>> {
+        self.series(py, 1)
+    }
+
+    /// Indentation z(t) (m), or None without `history=True`.
+    #[getter]
+    fn indentation(&self, py: Python<'_>) -> Option<Py<PyArray1<f64>>> {
+        self.series(py, 2)
+    }
+
+    /// Displacement α(t) of the centre of mass (m), or None without `history=True`.
+    #[getter]
+    fn displacement(&self, py: Python<'_>) -> Option<Py<PyArray1<f64>>> {
+        self.series(py, 3)
+    }
+
+    /// What was measured (v0, cor, max_force, contact_time), presets only.
+    #[getter]
+    fn measured<'py>(&self, py: Python<'py>) -> PyResult<Option<Bound<'py, PyDict>>> {
+        let Some(m) = self.measured else {
+            return Ok(None);
+        };
+        let d = PyDict::new(py);
+        for (k, v) in MEASURED_KEYS.iter().zip(m) {
+            d.set_item(k, v)?;
+        }
+        Ok(Some(d))
+    }
+
+    /// The energy budget (J): initial_kinetic, final_kinetic, dashpot, contact, spring and
+    /// relative_residual.
+    #[getter]
+    fn energy<'py>(&self, py: Python<'py>) -> PyResult<Option<Bound<'py, PyDict>>> {
+        let Some(e) = self.energy else {
+            return Ok(None);
+        };
+        let d = PyDict::new(py);
+        for (k, v) in ENERGY_KEYS.iter().zip(e) {
+            d.set_item(k, v)?;
+        }
+        Ok(Some(d))
+    }
+
+    /// Everything as a dict with the keys of `bouncelab run --format json` (`lambda`, not
+    /// `lambda_`; the history arrays when asked for). Infinite z_p or c stay `inf` (the JSON
+    /// writes `null`).
+    fn to_dict<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        let d = PyDict::new(py);
+        d.set_item("preset", &self.preset)?;
+        d.set_item("origin", &self.origin)?;
+        d.set_item("parameters", self.parameters)?;
+        d.set_item("law", self.law)?;
+        d.set_item("method", self.method)?;
+        let numbers = [
+            ("mass", self.mass),
+            ("k_p", self.k_p),
+            ("k_r", self.k_r),
+            ("c", self.c),
+            ("z_p", self.z_p),
+            ("k_h", self.k_h),
+            ("v0", self.v0),
+            ("lambda", self.lambda_),
+            ("zeta", self.zeta),
+            ("zp_bar", self.zp_bar),
+            ("cor", self.cor),
+        ];
+        for (k, v) in numbers {
+            d.set_item(k, v)?;
+        }
+        d.set_item("rebound", self.rebound)?;
+        d.set_item("max_force", self.max_force)?;
+        d.set_item("contact_time", self.contact_time)?;
+        d.set_item("max_indentation", self.max_indentation)?;
+        d.set_item("permanent_indentation", self.permanent_indentation)?;
+        d.set_item("max_force_normalized", self.max_force_normalized)?;
+        d.set_item("contact_time_normalized", self.contact_time_normalized)?;
+        d.set_item("measured", self.measured(py)?)?;
+        d.set_item("energy", self.energy(py)?)?;
+        for (i, k) in HISTORY_KEYS.iter().enumerate() {
+            if let Some(a) = self.series(py, i) {
+                d.set_item(k, a)?;
+            }
+        }
+        Ok(d)
+    }
+
+    fn __repr__(&self) -> String {
+        let who = match &self.preset {
+            Some(p) => format!("preset='{p}', "),
+            None => String::new(),
+        };
+        let t_f = self
+            .contact_time
+            .map_or("None".to_string(), |t| format!("{t:?}"));
+        format!(
+            "Impact({who}law='{}', v0={:?}, cor={:?}, max_force={:?}, contact_time={t_f}, \
+             rebound={})",
+            self.law,
+            self.v0,
+            self.cor,
+            self.max_force,
+            if self.rebound { "True" } else { "False" }
+        )
+    }
+}
+
+fn impact(py: Python<'_>, ball: Ball, history: bool, samples: usize) -> PyResult<Impact> {
+    let r = py
+        .detach(|| {
+            if history {
+                ball.impact_history(samples)
+            } else {
+                ball.impact()
+            }
+        })
+        .map_err(error)?;
+    Ok(Impact::new(py, &ball, r, history))
+}
+
+/// One impact of a preset, as `bouncelab run --preset NAME [--law L] [--v0 V] [--lambda L]
+/// [--zeta Z] [--params SET] [--history --samples N]`.
+#[pyfunction]
+#[pyo3(signature = (preset="superball", law=None, v0=None, lambda_=None, zeta=None, history=false, samples=400, params=None))]
+#[allow(clippy::too_many_arguments)]
+fn run(
+    py: Python<'_>,
+    preset: &str,
+    law: Option<&str>,
+    v0: Option<f64>,
+    lambda_: Option<f64>,
+    zeta: Option<f64>,
+    history: bool,
+    samples: usize,
+    params: Option<&str>,
+) -> PyResult<Impact> {
+    let ball = preset_ball(preset, params, law, v0)?
+        .with_lambda_zeta(lambda_, zeta)
+        .map_err(error)?;
+    impact(py, ball, history, samples)
+}
+
+/// One impact of the normalized ball (m = K_p = v0 = 1), as `bouncelab run --normalized`.
+#[pyfunction]
+#[pyo3(signature = (lambda_=1.0, zeta=0.1, zp_bar=None, law="linear", history=false, samples=400))]
+fn run_normalized(
+    py: Python<'_>,
+    lambda_: f64,
+    zeta: f64,
+    zp_bar: Option<f64>,
+    law: &str,
+    history: bool,
+    samples: usize,
+) -> PyResult<Impact> {
+    let ball = Ball::normalized(lambda_, zeta, zp_bar, self::law(law)?).map_err(error)?;
+    impact(py, ball, history, samples)
+}
+
+/// One impact of a ball given by its parameters, SI units. `z_p = inf` (the default) is no
+/// flattening; `k_h` defaults to the Hertz stiffness that meets K_p at z_p (Eq. 16).
+#[pyfunction]
+#[pyo3(signature = (*, m, k_p, c, k_r, v0, z_p=f64::INFINITY, k_h=None, law="linear", history=false, samples=400))]
+#[allow(clippy::too_many_arguments)]
+fn run_params(
+    py: Python<'_>,
+    m: f64,
+    k_p: f64,
+    c: f64,
+    k_r: f64,
+    v0: f64,
+    z_p: f64,
+    k_h: Option<f64>,
+    law: &str,
+    history: bool,
+    samples: usize,
+) -> PyResult<Impact> {
+    let k_h = k_h.unwrap_or_else(|| {
+        ImpactParams::k_h_matching(k_p, if z_p.is_finite() { z_p } else { 1.0 })
+    });
+    let params = ImpactParams {
+        mass: m,
+        k_p,
+        damping: c,
+        k_r,
+        z_p,
+        k_h,
+        v0,
+    };
+    let ball = Ball::from_params(params, self::law(law)?).map_err(error)?;
+    impact(py, ball, history, samples)
+}
+
+/// The presets, as `bouncelab presets --format json`: a list of dicts with name, origin,
+/// description, law, parameters, lambda, zeta, v0.
+#[pyfunction]
+fn presets(py: Python<'_>) -> PyResult<Vec<Bound<'_, PyDict>>> {
+    let cat = load_catalog()?;
+    cat.entries()
+        .iter()
+        .map(|e| {
+            let p = &e.preset;
+            let n = p.params().normalized();
+            let d = PyDict::new(py);
+            d.set_item("name", &p.name)?;
+            d.set_item(
+                "origin",
+                match &e.origin {
+                    Origin::Embedded => "embedded".to_string(),
+                    Origin::File(f) => f.display().to_string(),
+                },
+            )?;
+            d.set_item("description", &p.description)?;
+            d.set_item("law", p.law.name())?;
+            d.set_item("parameters", p.parameters.name())?;
+            d.set_item("lambda", n.lambda)?;
+            d.set_item("zeta", n.zeta)?;
+            d.set_item("v0", p.measured.v0)?;
+            Ok(d)
+        })
+        .collect()
+}
+
+fn none_as_nan(x: Option<f64>) -> f64 {
+    x.unwrap_or(f64::NAN)
+}
+
+/// COR, F̄_m and τ_f against ζ for each λ on the normalized ball, as `bouncelab sweep zeta`:
+/// a dict of numpy arrays with the CSV's columns (lambda, zeta, cor, max_force_normalized,
+/// contact_time_normalized; NaN where the ball does not rebound), rows grouped by λ. The GIL
+/// is released while the points run (in parallel).
+#[pyfunction]
+#[pyo3(signature = (lambdas, zetas, law="linear"))]
+fn sweep_zeta<'py>(
+    py: Python<'py>,
+    lambdas: &Bound<'py, PyAny>,
+    zetas: &Bound<'py, PyAny>,
+    law: &str,
+) -> PyResult<Bound<'py, PyDict>> {
+    let (lambdas, zetas, law) = (floats(lambdas)?, floats(zetas)?, self::law(law)?);
+    let rows = py
+        .detach(|| bouncelab::sweep_zeta(&lambdas, &zetas, law))
+        .map_err(error)?;
+    let col = |f: fn(&bouncelab::analysis::sweep::ZetaPoint) -> f64| {
+        array(py, rows.iter().map(f).collect())
+    };
+    let d = PyDict::new(py);
+    d.set_item("lambda", col(|r| r.lambda))?;
+    d.set_item("zeta", col(|r| r.zeta))?;
+    d.set_item("cor", col(|r| r.cor))?;
+    d.set_item("max_force_normalized", col(|r| r.max_force_normalized))?;
+    d.set_item(
+        "contact_time_normalized",
+        col(|r| none_as_nan(r.contact_time_normalized)),
+    )?;
+    Ok(d)
+}
+
+/// COR, peak force, contact time and permanent indentation against impact speed for a preset,
+/// as `bouncelab sweep velocity`: a dict of numpy arrays with the CSV's columns (v0, cor,
+/// max_force, contact_time, permanent_indentation; NaN contact_time where the ball does not
+/// rebound). The GIL is released while the speeds run (in parallel).
+#[pyfunction]
+#[pyo3(signature = (preset="superball", speeds=None, law=None, params=None))]
+fn sweep_velocity<'py>(
+    py: Python<'py>,
+    preset: &str,
+    speeds: Option<&Bound<'py, PyAny>>,
+    law: Option<&str>,
+    params: Option<&str>,
+) -> PyResult<Bound<'py, PyDict>> {
+    let ball = preset_ball(preset, params, law, None)?;
+    let speeds = match speeds {
+        Some(s) => floats(s)?,
+        // the command line's default: 60 speeds from 0.1 to 3 times the preset's
+        None => {
+            bouncelab::analysis::sweep::lin_space(0.1 * ball.params.v0, 3.0 * ball.params.v0, 60)
+        }
+    };
+    let rows = py.detach(|| ball.sweep_velocity(&speeds)).map_err(error)?;
+    let col = |f: fn(&bouncelab::analysis::sweep::VelocityPoint) -> f64| {
+        array(py, rows.iter().map(f).collect())
+    };
+    let d = PyDict::new(py);
+    d.set_item("v0", col(|r| r.v0))?;
+    d.set_item("cor", col(|r| r.cor))?;
+    d.set_item("max_force", col(|r| r.max_force))?;
+    d.set_item("contact_time", col(|r| none_as_nan(r.contact_time)))?;
+    d.set_item("permanent_indentation", col(|r| r.permanent_indentation))?;
+    Ok(d)
+}
+
+/// The recoil spring K_r (and λ) that makes the model's COR equal a measured one, at the
+/// preset's ζ, z_p and v0 (or the `v0` given), as `bouncelab fit --cor E`: a dict with the
+/// keys of `bouncelab fit --format json`.
+#[pyfunction]
+#[pyo3(signature = (cor, preset="superball", v0=None, law=None, params=None))]
+fn fit<'py>(
+    py: Python<'py>,
+    cor: f64,
+    preset: &str,
+    v0: Option<f64>,
+    law: Option<&str>,
+    params: Option<&str>,
+) -> PyResult<Bound<'py, PyDict>> {
+    let ball = preset_ball(preset, params, law, v0)?;
+    let f: Fit = py.detach(|| ball.fit_cor(cor)).map_err(error)?;
+    let p = &ball.params;
+    let d = PyDict::new(py);
+    d.set_item("preset", &ball.name)?;
+    d.set_item("origin", &ball.origin)?;
+    d.set_item("parameters", ball.source)?;
+    d.set_item("law", ball.law.name())?;
+    d.set_item("v0", p.v0)?;
+    d.set_item("target_cor", cor)?;
+    d.set_item("k_r", f.k_r)?;
+    d.set_item("lambda", f.lambda)?;
+    d.set_item("zeta", f.zeta)?;
+    d.set_item("cor", f.cor)?;
+    d.set_item("k_p", p.k_p)?;
+    d.set_item("preset_k_r", p.k_r)?;
+    d.set_item("preset_lambda", p.k_r / p.k_p)?;
+    Ok(d)
+}
+
+/// A preset ball dropped onto a rigid plate, bounce by bounce, as `bouncelab drop` (without
+/// `--standard`): a dict with `height`, `drag` and `bounces`, the latter a dict of numpy arrays
+/// with the JSON's per-bounce keys (v_in, v_out, cor, rebound_height, contact_time, max_force,
+/// t_start), one entry a bounce.
+#[pyfunction(name = "drop")]
+#[pyo3(signature = (preset="superball", height=1.0, bounces=10, min_rebound=0.001, drag=true, drag_coefficient=None, air_density=None, law=None, params=None))]
+#[allow(clippy::too_many_arguments)]
+fn drop_test<'py>(
+    py: Python<'py>,
+    preset: &str,
+    height: f64,
+    bounces: usize,
+    min_rebound: f64,
+    drag: bool,
+    drag_coefficient: Option<f64>,
+    air_density: Option<f64>,
+    law: Option<&str>,
+    params: Option<&str>,
+) -> PyResult<Bound<'py, PyDict>> {
+    use bouncelab::drop::{Air, Bounce, DropSetup};
+    let ball = preset_ball(preset, params, law, None)?;
+    let air = drag.then(|| Air {
+        density: air_density.unwrap_or(Air::default().density),
+        drag_coefficient: drag_coefficient.unwrap_or(Air::default().drag_coefficient),
+    });
+    let setup = DropSetup {
+        height,
+        air,
+        bounces,
+        min_rebound,
+    };
+    let run = py.detach(|| ball.drop_test(&setup)).map_err(error)?;
+    let col = |f: fn(&Bounce) -> f64| array(py, run.bounces.iter().map(f).collect());
+    let b = PyDict::new(py);
+    b.set_item("v_in", col(|r| r.v_in))?;
+    b.set_item("v_out", col(|r| r.v_out))?;
+    b.set_item("cor", col(|r| r.cor))?;
+    b.set_item("rebound_height", col(|r| r.rebound_height))?;
+    b.set_item("contact_time", col(|r| r.contact_time))?;
+    b.set_item("max_force", col(|r| r.max_force))?;
+    b.set_item("t_start", col(|r| r.t_start))?;
+    let d = PyDict::new(py);
+    d.set_item("height", run.setup.height)?;
+    d.set_item("drag", run.drag())?;
+    d.set_item("bounces", b)?;
+    Ok(d)
+}
+
+#[pymodule]
+fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_class::<Impact>()?;
+    m.add("NoAnswerError", m.py().get_type::<NoAnswerError>())?;
+    m.add_function(wrap_pyfunction!(presets, m)?)?;
+    m.add_function(wrap_pyfunction!(run, m)?)?;
+    m.add_function(wrap_pyfunction!(run_normalized, m)?)?;
+    m.add_function(wrap_pyfunction!(run_params, m)?)?;
+    m.add_function(wrap_pyfunction!(sweep_zeta, m)?)?;
+    m.add_function(wrap_pyfunction!(sweep_velocity, m)?)?;
+    m.add_function(wrap_pyfunction!(fit, m)?)?;
+    m.add_function(wrap_pyfunction!(drop_test, m)?)?;
+    Ok(())
+}

@@ -1,0 +1,400 @@
+//! The front door for code: a [`Ball`] — a preset, the normalized ball, or parameters you give
+//! — and what you ask of it: [one impact](Ball::impact), [its force history](Ball::impact_history),
+//! [COR against speed](Ball::sweep_velocity), [the recoil spring that gives a measured
+//! COR](Ball::fit_cor). The ζ sweep of the paper's Figs. 2–3, which runs the normalized ball,
+//! is [`sweep_zeta`].
+//!
+//! A `Ball` is what the command line runs: `bouncelab run --preset golf --v0 3` is
+//! `Ball::from_preset("golf")?.with_v0(3.0)?.impact()?`, and every check and every error
+//! message ([`BallError`]) is the command line's, word for word.
+//!
+//! ```
+//! use bouncelab::{Ball, ContactLaw};
+//!
+//! let golf = Ball::from_preset("golf")?.with_v0(3.0)?;
+//! let r = golf.impact()?;
+//! assert!((r.cor - 0.8404).abs() < 1e-4);
+//!
+//! // the same ball on the elastic–plastic law
+//! let r = golf.with_law(ContactLaw::ElasticPlastic).impact()?;
+//! assert!(r.rebound && r.cor < 1.0);
+//! # Ok::<(), bouncelab::BallError>(())
+//! ```
+
+#![warn(missing_docs)]
+
+use crate::analysis::fit::{Fit, fit_k_r};
+use crate::analysis::sweep::{VelocityPoint, ZetaPoint, cor_vs_velocity, cor_vs_zeta};
+use crate::catalog::{Catalog, Entry, Origin};
+use crate::drop::{DropBall, DropRun, DropSetup};
+use crate::model::contact::ContactLaw;
+use crate::model::params::{Field, ImpactParams, check_positive, validate_lambda_zeta};
+use crate::preset::{Measured, ParamSource};
+use crate::solver::{ImpactResponse, SolveOptions, simulate};
+
+/// Most history samples [`Ball::impact_history`] takes (as `run --samples`).
+pub const MAX_SAMPLES: usize = 100_000;
+
+/// A ball ready to simulate: its parameters (SI units), its contact law and where they came
+/// from.
+///
+/// Build one with [`Ball::from_preset`] (an embedded preset), [`Ball::from_catalog`] (embedded
+/// or user presets), [`Ball::normalized`] (λ and ζ alone) or [`Ball::from_params`] (your own
+/// numbers), change it with the `with_*` methods, and ask it for an [`impact`](Ball::impact).
+/// The constructors and `with_*` methods check every parameter; the fields are public so that
+/// a caller can read them (and change them at will: [`Ball::impact`] checks them again).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Ball {
+    /// Preset name; `None` for the normalized ball and for a ball given by its parameters.
+    pub name: Option<String>,
+    /// `"embedded"`, a preset file's path, `"normalized"` or `"parameters"`.
+    pub origin: String,
+    /// Which parameter set: `"adopted"`, `"materials"`, `"normalized"` or `"given"`.
+    pub source: &'static str,
+    /// The parameters, SI units.
+    pub params: ImpactParams,
+    /// The contact law.
+    pub law: ContactLaw,
+    /// What was measured, for comparison (presets only).
+    pub measured: Option<Measured>,
+    /// The preset's description (empty for other balls).
+    pub description: String,
+}
+
+mod error;
+pub use error::BallError;
+
+impl Ball {
+    /// An embedded preset (`superball`, `golf`, `baseball`, …) on the parameter set and contact
+    /// law its file names. No file is read: user presets are [`Ball::from_catalog`]'s.
+    ///
+    /// ```
+    /// let b = bouncelab::Ball::from_preset("superball")?;
+    /// assert_eq!(b.params.mass, 0.0374);
+    /// assert_eq!(b.params.v0, 3.12); // the speed Cross measured at
+    /// let err = bouncelab::Ball::from_preset("cricket").unwrap_err();
+    /// assert!(err.to_string().starts_with("unknown preset 'cricket' (available: superball,"));
+    /// # Ok::<(), bouncelab::BallError>(())
+    /// ```
+    pub fn from_preset(name: &str) -> Result<Ball, BallError> {
+        Ball::from_catalog(&Catalog::embedded(), name)
+    }
+
+    /// A preset from a catalog: `Catalog::load(catalog::user_presets_dir().as_deref(), None)?`
+    /// holds the user's presets as well as the embedded ones, as the command line sees them.
+    pub fn from_catalog(catalog: &Catalog, name: &str) -> Result<Ball, BallError> {
+        Ball::from_entry(catalog.get(name)?, None, None, None)
+    }
+
+    /// A catalog entry with the command line's `--params`, `--law` and `--v0` applied (each
+    /// `None` keeps the preset's), every parameter checked. A bad `v0` is named as such; any
+    /// other parameter out of its domain is the preset's, and the error names the preset.
+    pub fn from_entry(
+        entry: &Entry,
+        source: Option<ParamSource>,
+        law: Option<ContactLaw>,
+        v0: Option<f64>,
+    ) -> Result<Ball, BallError> {
+        let p = &entry.preset;
+        let source = source.unwrap_or(p.parameters);
+        let mut params = p.params_from(source);
+        if let Some(v0) = v0 {
+            params.v0 = v0;
+        }
+        params.validate().map_err(|error| {
+            // a bad v0 comes from the caller; anything else from the preset's set
+            if error.field == Field::V0 && v0.is_some() {
+                BallError::Param(error)
+            } else {
+                BallError::Preset {
+                    name: p.name.clone(),
+                    source: source.name(),
+                    error,
+                }
+            }
+        })?;
+        Ok(Ball {
+            name: Some(p.name.clone()),
+            origin: match &entry.origin {
+                Origin::Embedded => "embedded".into(),
+                Origin::File(f) => f.display().to_string(),
+            },
+            source: source.name(),
+            params,
+            law: law.unwrap_or(p.law),
+            measured: Some(p.measured.clone()),
+            description: p.description.clone(),
+        })
+    }
+
+    /// The normalized ball, m = K_p = v0 = 1, set by λ and ζ alone (and z̄_p = z_p ω0/v0 for
+    /// flattening; `None` for none), as `bouncelab run --normalized`.
+    ///
+    /// ```
+    /// use bouncelab::{Ball, ContactLaw};
+    /// // Maxwell's ball (λ = 0) keeps no energy from ζ = 1 on: e = 0
+    /// let r = Ball::normalized(0.0, 1.5, None, ContactLaw::Linear)?.impact()?;
+    /// assert_eq!((r.cor, r.rebound), (0.0, false));
+    /// # Ok::<(), bouncelab::BallError>(())
+    /// ```
+    pub fn normalized(
+        lambda: f64,
+        zeta: f64,
+        zp_bar: Option<f64>,
+        law: ContactLaw,
+    ) -> Result<Ball, BallError> {
+        validate_lambda_zeta(lambda, zeta)?;
+        if let Some(z) = zp_bar {
+            check_positive(Field::ZpBar, z)?;
+        }
+        let params = ImpactParams::from_normalized(lambda, zeta, zp_bar.unwrap_or(f64::INFINITY));
+        params.validate()?;
+        Ok(Ball {
+            name: None,
+            origin: "normalized".into(),
+            source: "normalized",
+            params,
+            law,
+            measured: None,
+            description: String::new(),
+        })
+    }
+
+    /// A ball given by its parameters, SI units (checked: the first bad field is named).
+    ///
+    /// ```
+    /// use bouncelab::{Ball, ContactLaw, ImpactParams};
+    /// let k_h = ImpactParams::k_h_matching(5.45e4, 4e-3); // Eq. 16
+    /// let p = ImpactParams { mass: 0.0374, k_p: 5.45e4, damping: 140.0, k_r: 7.08e4,
+    ///                        z_p: 4e-3, k_h, v0: 3.12 };
+    /// let r = Ball::from_params(p, ContactLaw::Linear)?.impact()?;
+    /// assert!((r.cor - 0.7506).abs() < 1e-4);
+    /// let bad = ImpactParams { mass: -1.0, ..p };
+    /// assert_eq!(Ball::from_params(bad, ContactLaw::Linear).unwrap_err().to_string(),
+    ///            "invalid mass: -1 (must not be negative)");
+    /// # Ok::<(), bouncelab::BallError>(())
+    /// ```
+    pub fn from_params(params: ImpactParams, law: ContactLaw) -> Result<Ball, BallError> {
+        params.validate()?;
+        Ok(Ball {
+            name: None,
+            origin: "parameters".into(),
+            source: "given",
+            params,
+            law,
+            measured: None,
+            description: String::new(),
+        })
+    }
+
+    /// "superball (embedded, adopted parameters)", "normalized ball (m = K_p = v0 = 1)" or
+    /// "ball given by its parameters".
+    pub fn label(&self) -> String {
+        match &self.name {
+            Some(n) => format!("{n} ({}, {} parameters)", self.origin, self.source),
+            None if self.source == "normalized" => "normalized ball (m = K_p = v0 = 1)".into(),
+            None => "ball given by its parameters".into(),
+        }
+    }
+
+    /// The same ball at another impact speed (m/s). On a preset, a parameter that the new speed
+    /// puts out of its domain (z̄_p = z_p ω0/v0) is named as the preset's.
+    pub fn with_v0(mut self, v0: f64) -> Result<Ball, BallError> {
+        self.params.v0 = v0;
+        self.params.validate().map_err(|error| match &self.name {
+            Some(name) if error.field != Field::V0 => BallError::Preset {
+                name: name.clone(),
+                source: self.source,
+                error,
+            },
+            _ => BallError::Param(error),
+        })?;
+        Ok(self)
+    }
+
+    /// The same ball on another contact law.
+    pub fn with_law(mut self, law: ContactLaw) -> Ball {
+        self.law = law;
+        self
+    }
+
+    /// The same ball with λ = K_r/K_p changed: K_r moves, m and K_p stay (Eq. 24).
+    pub fn with_lambda(self, lambda: f64) -> Result<Ball, BallError> {
+        self.with_lambda_zeta(Some(lambda), None)
+    }
+
+    /// The same ball with ζ = √(m K_p)/(2c) changed: c moves, m and K_p stay (Eq. 24).
+    pub fn with_zeta(self, zeta: f64) -> Result<Ball, BallError> {
+        self.with_lambda_zeta(None, Some(zeta))
+    }
+
+    /// λ and/or ζ changed at once (`None` keeps it), as `run --lambda L --zeta Z`.
+    pub fn with_lambda_zeta(
+        mut self,
+        lambda: Option<f64>,
+        zeta: Option<f64>,
+    ) -> Result<Ball, BallError> {
+        set_lambda_zeta(&mut self.params, lambda, zeta)?;
+        Ok(self)
+    }
+
+    /// λ = K_r/K_p.
+    pub fn lambda(&self) -> f64 {
+        self.params.normalized().lambda
+    }
+
+    /// ζ = √(m K_p)/(2c).
+    pub fn zeta(&self) -> f64 {
+        self.params.normalized().zeta
+    }
+
+    /// One impact: COR, peak force, contact time, indentations and the energy budget (no
+    /// history), as `bouncelab run`.
+    pub fn impact(&self) -> Result<ImpactResponse, BallError> {
+        self.impact_with(&SolveOptions::default().with_energy())
+    }
+
+    /// One impact with the force, indentation and displacement sampled at `samples` evenly
+    /// spaced times over the contact (2 … [`MAX_SAMPLES`]), as `bouncelab run --history`.
+    ///
+    /// ```
+    /// let r = bouncelab::Ball::from_preset("superball")?.impact_history(400)?;
+    /// let h = &r.history;
+    /// assert_eq!((h.t.len(), h.force.len()), (400, 400));
+    /// assert_eq!(h.force[0], 0.0); // F(0) = 0
+    /// assert!((h.t[399] - r.contact_time.unwrap()).abs() < 1e-15); // s: sampled up to t_f
+    /// # Ok::<(), bouncelab::BallError>(())
+    /// ```
+    pub fn impact_history(&self, samples: usize) -> Result<ImpactResponse, BallError> {
+        if !(2..=MAX_SAMPLES).contains(&samples) {
+            return Err(BallError::Samples(samples));
+        }
+        self.impact_with(&SolveOptions::default().with_samples(samples).with_energy())
+    }
+
+    /// One impact with the solver options given (tolerance, method, history, energy audit).
+    pub fn impact_with(&self, opts: &SolveOptions) -> Result<ImpactResponse, BallError> {
+        Ok(simulate(&self.params, self.law, opts)?)
+    }
+
+    /// COR, peak force, contact time and permanent indentation at each speed (m/s), as
+    /// `bouncelab sweep velocity` (Fig. 4). The speeds run in parallel.
+    ///
+    /// ```
+    /// let ball = bouncelab::Ball::from_preset("superball")?;
+    /// let rows = ball.sweep_velocity(&[1.0, 3.0, 9.0])?;
+    /// assert_eq!(rows.len(), 3);
+    /// assert!(rows[2].cor < rows[0].cor); // flattening costs energy at speed
+    /// # Ok::<(), bouncelab::BallError>(())
+    /// ```
+    pub fn sweep_velocity(&self, speeds: &[f64]) -> Result<Vec<VelocityPoint>, BallError> {
+        Ok(cor_vs_velocity(&self.params, self.law, speeds)?)
+    }
+
+    /// The recoil spring K_r (and λ) that makes the model's COR equal a measured one, holding
+    /// m, K_p, c (so ζ), z_p and v0, as `bouncelab fit --cor E` (MODEL.md §4).
+    ///
+    /// ```
+    /// let ball = bouncelab::Ball::from_preset("superball")?;
+    /// let fit = ball.fit_cor(0.75)?;
+    /// assert!((fit.cor - 0.75).abs() < 1e-12);
+    /// assert!((fit.k_r - 70447.5).abs() < 0.1); // N/m; the paper adopted 70800
+    /// let err = ball.fit_cor(0.1).unwrap_err(); // below what λ = 0 gives at this ζ
+    /// assert!(err.to_string().starts_with("cor 0.1 is out of reach at ζ = 0.1612"));
+    /// # Ok::<(), bouncelab::BallError>(())
+    /// ```
+    pub fn fit_cor(&self, cor: f64) -> Result<Fit, BallError> {
+        Ok(fit_k_r(&self.params, self.law, cor)?)
+    }
+
+    /// Drop the ball onto a rigid plate and follow its bounces — flight under gravity and
+    /// drag, each impact solved at its own speed — as `bouncelab drop` (docs/drop.md). The
+    /// drag area is the preset's measured radius (a ball that is not a preset has none: give it
+    /// a [`DropSetup`] without air, or use [`crate::drop::drop`] with a radius).
+    ///
+    /// ```
+    /// use bouncelab::{Ball, drop::DropSetup};
+    /// let ball = Ball::from_preset("tennis")?;
+    /// let run = ball.drop_test(&DropSetup::new(2.54))?; // 100 in, the ITF's drop
+    /// let first = &run.bounces[0];
+    /// assert!(first.rebound_height > 1.0 && first.rebound_height < 2.54);
+    /// assert!(run.bounces.windows(2).all(|w| w[1].rebound_height < w[0].rebound_height));
+    /// # Ok::<(), bouncelab::BallError>(())
+    /// ```
+    pub fn drop_test(&self, setup: &DropSetup) -> Result<DropRun, BallError> {
+        let ball = DropBall {
+            params: self.params,
+            law: self.law,
+            radius: self.measured.as_ref().map_or(f64::NAN, |m| m.radius),
+        };
+        Ok(crate::drop::drop(&ball, setup)?)
+    }
+}
+
+/// Change λ and/or ζ of a ball's parameters (`None` keeps it): K_r and c move, m and K_p stay
+/// (Eq. 24). Both values are checked first; then a K_r or c out of range is named by the λ or
+/// ζ that gave it.
+pub fn set_lambda_zeta(
+    params: &mut ImpactParams,
+    lambda: Option<f64>,
+    zeta: Option<f64>,
+) -> Result<(), BallError> {
+    validate_lambda_zeta(lambda.unwrap_or(0.0), zeta.unwrap_or(0.0))?;
+    let moved = params.with_lambda_zeta(lambda.unwrap_or(0.0), zeta.unwrap_or(1.0));
+    if lambda.is_some() {
+        params.k_r = moved.k_r;
+    }
+    if zeta.is_some() {
+        params.damping = moved.damping;
+    }
+    // name what the caller gave when the K_r or c it gives is out of range
+    params.validate().map_err(|e| {
+        let given = match e.field {
+            Field::KR => lambda.map(|l| (Field::Lambda, l, "K_r", "N/m")),
+            Field::Damping => zeta.map(|z| (Field::Zeta, z, "c", "kg/s")),
+            _ => None,
+        };
+        match given {
+            Some((field, value, gives, unit)) => BallError::Derived {
+                field,
+                value,
+                gives,
+                derived: e.value,
+                unit,
+                reason: e.reason,
+            },
+            None => BallError::Param(e),
+        }
+    })
+}
+
+/// COR, F̄_m and τ_f against ζ for each λ, on the normalized ball without flattening (the
+/// paper's Figs. 2–3), as `bouncelab sweep zeta`: rows grouped by λ in the order given, the
+/// points run in parallel. Each λ is checked first, as on the command line.
+///
+/// ```
+/// use bouncelab::{ContactLaw, analysis::sweep::log_space};
+/// let rows = bouncelab::sweep_zeta(&[0.0, 1.0], &log_space(0.01, 100.0, 5), ContactLaw::Linear)?;
+/// assert_eq!(rows.len(), 10);
+/// // λ = 0 (Maxwell): no rebound from ζ = 1 on
+/// assert_eq!(rows[2].zeta, 1.0);
+/// assert_eq!(rows[2].cor, 0.0);
+/// assert!(rows[7].cor > 0.0);
+/// # Ok::<(), bouncelab::BallError>(())
+/// ```
+pub fn sweep_zeta(
+    lambdas: &[f64],
+    zetas: &[f64],
+    law: ContactLaw,
+) -> Result<Vec<ZetaPoint>, BallError> {
+    if lambdas.is_empty() {
+        return Err(BallError::NoValue("lambda"));
+    }
+    for &l in lambdas {
+        validate_lambda_zeta(l, 0.0)?;
+    }
+    Ok(cor_vs_zeta(lambdas, zetas, law)?)
+}
+
+#[cfg(test)]
+mod tests;

@@ -1,0 +1,120 @@
+//! [`BallError`]: why a ball cannot be built or run, one line each, the command line's words.
+
+use super::MAX_SAMPLES;
+use crate::analysis::fit::FitError;
+use crate::catalog::CatalogError;
+use crate::drop::DropError;
+use crate::model::params::{Field, ParamError};
+use crate::solver::SolveError;
+use crate::text::number as display_number;
+use std::fmt;
+
+/// Why a ball cannot be built or run. Each message is one line, the command line's own
+/// (without its `bouncelab: error: ` prefix).
+#[derive(Debug, Clone, PartialEq)]
+pub enum BallError {
+    /// No preset of that name, or a preset file that does not load.
+    Catalog(CatalogError),
+    /// A preset whose own parameter set is out of its domain (at the speed asked for).
+    Preset {
+        /// The preset's name.
+        name: String,
+        /// `"adopted"` or `"materials"`.
+        source: &'static str,
+        /// The parameter at fault.
+        error: ParamError,
+    },
+    /// A value given (v0, λ, ζ, a parameter, a number of samples) is out of its domain.
+    Param(ParamError),
+    /// A λ or ζ given is in its domain but the K_r or c it gives for this ball is not.
+    Derived {
+        /// [`Field::Lambda`] or [`Field::Zeta`].
+        field: Field,
+        /// The value given.
+        value: f64,
+        /// `"K_r"` or `"c"`.
+        gives: &'static str,
+        /// The K_r or c it gives.
+        derived: f64,
+        /// Its unit.
+        unit: &'static str,
+        /// Why the derived value is refused.
+        reason: &'static str,
+    },
+    /// A number of history samples outside 2 … [`MAX_SAMPLES`].
+    Samples(usize),
+    /// A list that needs at least one value (the λ values of a ζ sweep) is empty.
+    NoValue(&'static str),
+    /// The impact has no answer (see [`SolveError`]).
+    Solve(SolveError),
+    /// The fit has no answer (see [`FitError`]).
+    Fit(FitError),
+    /// The drop test has no answer (see [`DropError`]).
+    Drop(DropError),
+}
+
+impl fmt::Display for BallError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            BallError::Catalog(e) => write!(f, "{e}"),
+            BallError::Preset {
+                name,
+                source,
+                error,
+            } => write!(f, "preset '{name}' ({source} parameters): {error}"),
+            BallError::Param(e) => write!(f, "{e}"),
+            BallError::Derived {
+                field,
+                value,
+                gives,
+                derived,
+                unit,
+                reason,
+            } => write!(
+                f,
+                "invalid {field}: {} (gives {gives} = {} {unit}: {reason})",
+                display_number(*value),
+                display_number(*derived)
+            ),
+            BallError::Samples(n) => {
+                write!(f, "invalid samples: {n} (must lie in 2 … {MAX_SAMPLES})")
+            }
+            BallError::NoValue(field) => write!(f, "invalid {field}: no value given"),
+            BallError::Solve(e) => write!(f, "{e}"),
+            BallError::Fit(e) => write!(f, "{e}"),
+            BallError::Drop(e) => write!(f, "{e}"),
+        }
+    }
+}
+
+impl std::error::Error for BallError {}
+
+impl From<CatalogError> for BallError {
+    fn from(e: CatalogError) -> Self {
+        BallError::Catalog(e)
+    }
+}
+
+impl From<ParamError> for BallError {
+    fn from(e: ParamError) -> Self {
+        BallError::Param(e)
+    }
+}
+
+impl From<SolveError> for BallError {
+    fn from(e: SolveError) -> Self {
+        BallError::Solve(e)
+    }
+}
+
+impl From<FitError> for BallError {
+    fn from(e: FitError) -> Self {
+        BallError::Fit(e)
+    }
+}
+
+impl From<DropError> for BallError {
+    fn from(e: DropError) -> Self {
+        BallError::Drop(e)
+    }
+}
