@@ -245,37 +245,14 @@ impl BallArgs {
     }
 }
 
-/// Change λ and/or ζ of a ball: K_r and c move, m and K_p stay (Eq. 24).
+/// Change λ and/or ζ of a ball: K_r and c move, m and K_p stay (Eq. 24). The library's own
+/// check and messages ([`crate::api::set_lambda_zeta`]), so code and command line agree.
 pub fn set_lambda_zeta(
     params: &mut ImpactParams,
     lambda: Option<f64>,
     zeta: Option<f64>,
 ) -> anyhow::Result<()> {
-    validate_lambda_zeta(lambda.unwrap_or(0.0), zeta.unwrap_or(0.0))?;
-    let moved = params.with_lambda_zeta(lambda.unwrap_or(0.0), zeta.unwrap_or(1.0));
-    if lambda.is_some() {
-        params.k_r = moved.k_r;
-    }
-    if zeta.is_some() {
-        params.damping = moved.damping;
-    }
-    // name what the user typed when the K_r or c it gives is out of range
-    params.validate().map_err(|e| {
-        let given = match e.field {
-            Field::KR => lambda.map(|l| (Field::Lambda, l, "K_r", "N/m")),
-            Field::Damping => zeta.map(|z| (Field::Zeta, z, "c", "kg/s")),
-            _ => None,
-        };
-        match given {
-            Some((field, v, name, unit)) => anyhow::anyhow!(
-                "invalid {field}: {} (gives {name} = {} {unit}: {})",
-                super::output::num(v),
-                super::output::num(e.value),
-                e.reason
-            ),
-            None => e.into(),
-        }
-    })
+    Ok(crate::api::set_lambda_zeta(params, lambda, zeta)?)
 }
 
 /// The normalized ball: m = K_p = v0 = 1; `zp_bar` = ∞ for no flattening.
