@@ -21,8 +21,6 @@
 //! # Ok::<(), bouncelab::BallError>(())
 //! ```
 
-#![warn(missing_docs)]
-
 use crate::analysis::fit::{Fit, fit_k_r};
 use crate::analysis::sweep::{VelocityPoint, ZetaPoint, cor_vs_velocity, cor_vs_zeta};
 use crate::catalog::{Catalog, Entry, Origin};

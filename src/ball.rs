@@ -8,11 +8,14 @@ use crate::preset::{Measured, ParamSource, Preset};
 /// A ball: the parameters the model runs on, its contact law, and what was measured.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Ball {
+    /// The preset's name (`"ball"` for the normalized ball).
     pub name: String,
     /// Which parameter set `params` is: "adopted", "materials", "modified" (λ or ζ moved in
     /// the explorer) or "normalized".
     pub source: String,
+    /// The parameters, SI units.
     pub params: ImpactParams,
+    /// The contact law.
     pub law: ContactLaw,
     /// What was measured (presets only).
     pub measured: Option<Measured>,

@@ -30,7 +30,9 @@ pub const MAX_FILE_BYTES: u64 = 1 << 20;
 /// Where a preset came from.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub enum Origin {
+    /// Compiled into the library ([`crate::preset::EMBEDDED`]).
     Embedded,
+    /// Read from this file (the user's presets folder or `--config`).
     File(PathBuf),
 }
 
@@ -46,7 +48,9 @@ impl fmt::Display for Origin {
 /// A preset and its origin.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Entry {
+    /// The preset, parsed and checked.
     pub preset: Preset,
+    /// Where it came from.
     pub origin: Origin,
 }
 
@@ -55,21 +59,31 @@ pub struct Entry {
 pub enum CatalogError {
     /// A file or folder could not be read.
     #[error("{}: {message}", path.display())]
-    Io { path: PathBuf, message: String },
+    Io {
+        /// The file or folder.
+        path: PathBuf,
+        /// The system's reason, one line.
+        message: String,
+    },
     /// A preset file does not parse or validate (carries file:line:column).
     #[error(transparent)]
     Preset(#[from] PresetError),
     /// Two presets share a name.
     #[error("{}", duplicate_message(name, first, second))]
     Duplicate {
+        /// The shared name.
         name: String,
+        /// Where the first preset of that name came from.
         first: Origin,
+        /// Where the second one came from.
         second: Origin,
     },
     /// No preset of that name.
     #[error("unknown preset '{name}' (available: {})", available.join(", "))]
     Unknown {
+        /// The name asked for.
         name: String,
+        /// The names the catalog holds, in its order.
         available: Vec<String>,
     },
 }
@@ -224,6 +238,7 @@ impl Catalog {
         Ok(())
     }
 
+    /// Every preset: the embedded ones first, then the files (sorted by path), then `extra`.
     pub fn entries(&self) -> &[Entry] {
         &self.entries
     }

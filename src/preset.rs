@@ -46,6 +46,8 @@ pub enum ParamSource {
 }
 
 impl ParamSource {
+    /// The set's name as the TOML, the command line (`--params`) and the JSON write it:
+    /// `"adopted"` or `"materials"`.
     pub fn name(self) -> &'static str {
         match self {
             ParamSource::Adopted => "adopted",
@@ -54,6 +56,8 @@ impl ParamSource {
     }
 }
 
+/// How the ball's contact stops being Hertzian, which sets the mean contact pressure p0 of
+/// Eqs. 15–17 (docs/model.md §3).
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "kebab-case")]
 pub enum MaterialKind {
@@ -68,11 +72,17 @@ pub enum MaterialKind {
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Measured {
+    /// Mass m, kg (the model's mass).
     pub mass: f64,
+    /// Radius R, m (Hertz stiffness, flattening, dashpot area, drag area).
     pub radius: f64,
+    /// Impact speed v0 the values below were measured at, m/s (the preset's default speed).
     pub v0: f64,
+    /// Measured coefficient of restitution, when reported.
     pub cor: Option<f64>,
+    /// Measured peak force, N, when reported.
     pub max_force: Option<f64>,
+    /// Measured contact time, s, when reported.
     pub contact_time: Option<f64>,
 }
 
@@ -80,19 +90,23 @@ pub struct Measured {
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Material {
+    /// Elastomer (flattens, Eq. 20) or metal (yields); elastomer when absent.
     #[serde(default)]
     pub kind: MaterialKind,
     /// Young's modulus for contact; from the layers by Eq. 30 when absent.
     pub modulus: Option<f64>,
+    /// Poisson's ratio ν for contact (E* = E/(1 − ν²)).
     pub poisson: f64,
     /// Modulus along the surface (Rayleigh waves); from the surface layers (Eq. 31) or the
     /// contact modulus when absent.
     pub surface_modulus: Option<f64>,
+    /// Poisson's ratio along the surface (the dashpot, Eq. 5); `poisson` when absent.
     pub surface_poisson: Option<f64>,
     /// Density; from m and R when absent (or from the surface layers, Eq. 31).
     pub density: Option<f64>,
     /// Yield strength S_y (metals).
     pub yield_strength: Option<f64>,
+    /// The ball's layers from the surface inwards (Eqs. 30, 31); empty for a uniform ball.
     #[serde(default)]
     pub layers: Vec<Layer>,
 }
@@ -101,25 +115,37 @@ pub struct Material {
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Adopted {
+    /// Dashpot c, kg/s (required to run the adopted set).
     pub damping: Option<f64>,
+    /// Flattening (or yield) indentation z_p, m (required to run the adopted set).
     pub z_p: Option<f64>,
+    /// Contact stiffness K_p, N/m (required to run the adopted set).
     pub k_p: Option<f64>,
+    /// Recoil spring K_r, N/m, fitted to the measured COR (both sets use it).
     pub k_r: f64,
 }
 
-/// A ball.
+/// A ball, as one preset TOML file holds it (docs/presets.md): what was measured, the
+/// material, and the adopted parameters. [`Preset::parse`] checks every field.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Preset {
+    /// The name `--preset` and [`crate::Ball::from_preset`] take.
     pub name: String,
+    /// One line on the ball and where its numbers come from.
     #[serde(default)]
     pub description: String,
+    /// The contact law it runs on by default (linear when absent).
     #[serde(default = "default_law")]
     pub law: ContactLaw,
+    /// The parameter set it runs on by default (adopted when absent).
     #[serde(default)]
     pub parameters: ParamSource,
+    /// What was measured on the ball.
     pub measured: Measured,
+    /// Its material data.
     pub material: Material,
+    /// The parameters the paper (or the preset's author) adopted.
     pub adopted: Adopted,
 }
 
@@ -130,14 +156,23 @@ fn default_law() -> ContactLaw {
 /// Parameters derived from the material data (docs/model.md §4).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct Derived {
+    /// Density ρ, kg/m³: given, or m / ((4/3) π R³).
     pub density: f64,
+    /// Young's modulus E for contact, Pa: given, or the layers in series (Eq. 30).
     pub contact_modulus: f64,
+    /// Effective modulus against the rigid wall, E* = E/(1 − ν²), Pa.
     pub e_star: f64,
+    /// Hertz stiffness K_h = (4/3) E* √R, N/m^{3/2} (Eq. 8).
     pub k_h: f64,
+    /// Flattening (Eq. 20) or yield (Eq. 17) indentation z_p, m.
     pub z_p: f64,
+    /// Contact stiffness K_p = 1.5 K_h √z_p, N/m (Eqs. 15, 16).
     pub k_p: f64,
+    /// Dashpot from Rayleigh-wave radiation, c = 0.94 A √(ρ G), kg/s (Eq. 5).
     pub damping: f64,
+    /// Young's modulus along the surface, Pa (Eq. 31, or the contact modulus).
     pub surface_modulus: f64,
+    /// Density along the surface, kg/m³ (Eq. 31, or the density).
     pub surface_density: f64,
 }
 

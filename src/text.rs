@@ -40,6 +40,7 @@ pub struct Style {
     /// The decimal exponents (of the leading digit) written as plain decimals, `lo..hi`;
     /// exponent form outside.
     pub plain: (i32, i32),
+    /// Which trailing zeros are dropped.
     pub trim: Trim,
     /// What a NaN or an infinity reads as; `None`: its [`number`] form ("NaN", "inf").
     pub not_finite: Option<&'static str>,

@@ -38,9 +38,13 @@ pub fn lin_space(from: f64, to: f64, n: usize) -> Vec<f64> {
 /// One point of a ζ sweep, normalized (m = K_p = v0 = 1).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct ZetaPoint {
+    /// λ = K_r/K_p.
     pub lambda: f64,
+    /// ζ = √(m K_p)/(2c).
     pub zeta: f64,
+    /// Coefficient of restitution e (0 when the ball does not rebound).
     pub cor: f64,
+    /// Peak force F̄_m = F_m/(m v0 ω0).
     pub max_force_normalized: f64,
     /// τ_f; `None` when there is no rebound.
     pub contact_time_normalized: Option<f64>,
@@ -75,13 +79,15 @@ pub fn cor_vs_zeta(
 /// One point of a speed sweep, SI units.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct VelocityPoint {
+    /// Impact speed, m/s.
     pub v0: f64,
+    /// Coefficient of restitution e (0 when the ball does not rebound).
     pub cor: f64,
-    /// N
+    /// Peak force, N.
     pub max_force: f64,
-    /// s; `None` when there is no rebound.
+    /// Contact time, s; `None` when there is no rebound.
     pub contact_time: Option<f64>,
-    /// m
+    /// Permanent indentation z_f (the flat the ball leaves with), m.
     pub permanent_indentation: f64,
 }
 

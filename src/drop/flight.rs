@@ -60,6 +60,7 @@ impl Flight {
         }
     }
 
+    /// Flight without air: free fall under gravity alone.
     pub fn vacuum() -> Flight {
         Flight { drag_per_mass: 0.0 }
     }

@@ -30,6 +30,7 @@ use std::fmt;
 
 /// Bounces allowed at most, and by default.
 pub const MAX_BOUNCES: usize = 1000;
+/// Bounces followed when the caller does not say ([`DropSetup::new`], `drop --bounces`).
 pub const DEFAULT_BOUNCES: usize = 10;
 /// The sequence stops once a rebound is lower than this (m), by default.
 pub const DEFAULT_MIN_REBOUND: f64 = 1e-3;
@@ -41,7 +42,9 @@ pub const MAX_HEIGHT: f64 = 1e4;
 /// contact law, and the radius that sets its drag area and its top-of-ball height.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct DropBall {
+    /// The impact parameters, SI units (each impact runs them at its own v0).
     pub params: ImpactParams,
+    /// The contact law of every impact.
     pub law: ContactLaw,
     /// R (m).
     pub radius: f64,
@@ -106,9 +109,13 @@ pub enum End {
 /// A bounce sequence.
 #[derive(Debug, Clone, PartialEq)]
 pub struct DropRun {
+    /// The conditions it ran under.
     pub setup: DropSetup,
+    /// The flight between impacts (gravity and the drag of `setup.air`).
     pub flight: Flight,
+    /// The bounces, first to last.
     pub bounces: Vec<Bounce>,
+    /// Why the sequence stopped.
     pub end: End,
 }
 
@@ -117,8 +124,11 @@ pub struct DropRun {
 pub enum DropError {
     /// A drop condition is out of its domain.
     Input {
+        /// The condition's name (`height`, `air_density`, `drag_coefficient`, …).
         field: &'static str,
+        /// The value given.
         value: f64,
+        /// Why it is refused ("must be positive", "not a number", …).
         reason: &'static str,
     },
     /// An impact could not be solved.

@@ -14,7 +14,9 @@ use serde::Serialize;
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "kebab-case")]
 pub enum Reference {
+    /// The lowest point of the ball (the model's heights are of this point).
     Bottom,
+    /// The highest point, one diameter above the bottom.
     Top,
 }
 
@@ -27,6 +29,7 @@ impl Reference {
         }
     }
 
+    /// `"bottom"` or `"top"`, as the output writes it.
     pub fn name(self) -> &'static str {
         match self {
             Reference::Bottom => "bottom",
@@ -42,13 +45,19 @@ pub enum Test {
     /// Release from rest at `height` (to `drop_ref` of the ball); the rebound's apex (to
     /// `rebound_ref`) is the measured value (m).
     Drop {
+        /// Release height, m, measured to `drop_ref`.
         height: f64,
+        /// The point of the ball the release height is measured to.
         drop_ref: Reference,
+        /// The point of the ball the rebound height is read at.
         rebound_ref: Reference,
     },
     /// A ball fired at a rigid wall at `speed` (m/s); the COR from the speeds just before and
     /// after impact is the measured value.
-    Cor { speed: f64 },
+    Cor {
+        /// Impact speed, m/s.
+        speed: f64,
+    },
 }
 
 /// One governing body's test and its window.
@@ -56,7 +65,9 @@ pub enum Test {
 pub struct Standard {
     /// Short name for `--standard`.
     pub name: &'static str,
+    /// The governing body and the test, as the text output heads it.
     pub title: &'static str,
+    /// The test and its conditions.
     pub test: Test,
     /// Surface the ball hits.
     pub surface: &'static str,
@@ -70,8 +81,10 @@ pub struct Standard {
     pub balls: &'static [&'static str],
 }
 
-/// 60 mph and 85 ft/s in m/s (exact conversions: 1 mph = 0.44704 m/s, 1 ft = 0.3048 m).
+/// 60 mph in m/s, the speed of the ASTM F1887 COR tests (NCAA baseball, softball; exact: 1 mph
+/// = 0.44704 m/s).
 pub const MPH_60: f64 = 60.0 * 0.44704;
+/// 85 ft/s in m/s, the speed of MLB's COR test (exact: 1 ft = 0.3048 m).
 pub const FPS_85: f64 = 85.0 * 0.3048;
 
 const fn drop_test(height: f64, rebound_ref: Reference) -> Test {
@@ -235,10 +248,13 @@ pub fn for_ball(preset: &str) -> Option<&'static Standard> {
 /// A ball measured against a standard.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct Verdict {
+    /// The standard's short name.
     pub name: &'static str,
+    /// Its window, [lo, hi] (m or COR; `None` where unbounded).
     pub window: [Option<f64>; 2],
     /// The rebound height in the standard's convention (m), or the COR.
     pub measured: f64,
+    /// Whether `measured` lies in the window (bounds included).
     pub pass: bool,
     /// Distance to the nearer bound, positive inside the window, negative outside (m or COR).
     pub margin: f64,

@@ -9,8 +9,11 @@ use serde::Serialize;
 /// (m), vertical velocity (m/s, positive upward).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct Sample {
+    /// Time since release, s.
     pub t: f64,
+    /// Height of the bottom of the ball above the plate, m (0 in contact).
     pub height: f64,
+    /// Vertical velocity, m/s, positive upward.
     pub velocity: f64,
 }
 

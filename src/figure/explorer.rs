@@ -24,10 +24,15 @@ pub const MODIFIED: &str = "modified";
 /// The explorer's charts.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Chart {
+    /// F(t) over the contact.
     ForceTime,
+    /// F against indentation z: the loading and unloading loop.
     Hysteresis,
+    /// COR against ζ at the current λ (Fig. 2).
     CorZeta,
+    /// F̄_m against ζ at the current λ (Fig. 3).
     ForceZeta,
+    /// COR against impact speed (Fig. 4).
     CorSpeed,
 }
 
@@ -47,14 +52,18 @@ impl Chart {
 /// COR and F̄_m against ζ for one λ (linear law, no flattening: Figs. 2, 3).
 #[derive(Debug, Clone, Copy)]
 pub struct ZetaSweep<'a> {
+    /// The λ of the curve.
     pub lambda: f64,
+    /// Its points, ζ increasing.
     pub points: &'a [ZetaPoint],
 }
 
 /// COR against impact speed (Fig. 4), and the speed at which the linear law starts to flatten.
 #[derive(Debug, Clone, Copy)]
 pub struct SpeedSweep<'a> {
+    /// Its points, speed increasing.
     pub points: &'a [VelocityPoint],
+    /// The speed (m/s) above which the peak indentation passes z_p, when within the sweep.
     pub v_flat: Option<f64>,
     /// The sweep runs over (0, v_max] (m/s).
     pub v_max: f64,
@@ -63,10 +72,15 @@ pub struct SpeedSweep<'a> {
 /// The pinned setting and its results, drawn dimmed behind the live ones.
 #[derive(Debug, Clone, Copy)]
 pub struct Pinned<'a> {
+    /// The pinned parameters, SI.
     pub params: ImpactParams,
+    /// The pinned contact law.
     pub law: ContactLaw,
+    /// Its impact, once computed.
     pub run: Option<&'a ImpactResponse>,
+    /// Its ζ curve, once computed.
     pub zeta: Option<ZetaSweep<'a>>,
+    /// Its COR-against-speed curve, once computed.
     pub speed: Option<SpeedSweep<'a>>,
 }
 
@@ -74,8 +88,11 @@ pub struct Pinned<'a> {
 /// points in SI on the chart's axes ([`crate::measured::overlay`]).
 #[derive(Debug, Clone, PartialEq)]
 pub struct MeasuredOverlay {
+    /// The legend's label (the file's name).
     pub label: String,
+    /// The chart the points belong on.
     pub chart: Chart,
+    /// (x, y) in the chart's SI units.
     pub points: Vec<(f64, f64)>,
 }
 
@@ -127,14 +144,17 @@ pub struct Scene<'a> {
     pub ball: Ball,
     /// Every ball with what was measured: the markers of the ζ charts.
     pub balls: Vec<Ball>,
+    /// The current impact, once computed (with its history).
     pub run: Option<&'a ImpactResponse>,
     /// The fixed curves of Fig. 2 (λ = 0, 0.4, 1).
     pub references: Vec<ZetaSweep<'a>>,
     /// The current λ's curve.
     pub zeta: Option<ZetaSweep<'a>>,
+    /// The current ball's COR-against-speed curve, once computed.
     pub speed: Option<SpeedSweep<'a>>,
     /// While COR-vs-speed sweeps are out: the highest speed they reach (the axis spans it).
     pub speed_pending: Option<f64>,
+    /// The pinned setting, drawn dimmed behind the live one.
     pub pinned: Option<Pinned<'a>>,
     /// The user's measured data, drawn on the charts they belong to.
     pub measured: &'a [MeasuredOverlay],

@@ -29,6 +29,7 @@ pub enum Tone {
 /// How one series looks in a terminal.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Look {
+    /// Its colour role.
     pub tone: Tone,
     /// The legend key; `None`: not in the terminal legend.
     pub key: Option<String>,
@@ -54,6 +55,7 @@ impl Look {
         }
     }
 
+    /// A look with its tone, legend key and text given.
     pub fn new(tone: Tone, key: Option<&str>, text: Option<&str>) -> Look {
         Look {
             tone,
@@ -66,9 +68,13 @@ impl Look {
 /// Where the terminal legend goes inside the plot.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Corner {
+    /// Upper left.
     TopLeft,
+    /// Upper right.
     TopRight,
+    /// Lower left.
     BottomLeft,
+    /// Lower right.
     BottomRight,
 }
 
@@ -87,8 +93,11 @@ pub enum Sample {
 /// One line of the terminal legend.
 #[derive(Debug, Clone, PartialEq)]
 pub struct LegendEntry {
+    /// What is drawn in front of the key.
     pub sample: Sample,
+    /// Its colour role.
     pub tone: Tone,
+    /// The text.
     pub key: String,
 }
 

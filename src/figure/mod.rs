@@ -67,6 +67,8 @@ impl Axis {
         }
     }
 
+    /// The same axis over `from..to`, in the unit shown (log axes: the values, not their
+    /// logarithms).
     pub fn with_range(mut self, from: f64, to: f64) -> Axis {
         self.range = Some((from, to));
         self
@@ -117,17 +119,24 @@ impl Role {
 /// Marker shapes, so measured points stay distinct without colour.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Marker {
+    /// ●
     Circle,
+    /// ■
     Square,
+    /// ▲
     Triangle,
+    /// ◆
     Diamond,
 }
 
 /// How a series is drawn.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Style {
+    /// A solid line through the points.
     Solid,
+    /// A dashed line.
     Dashed,
+    /// A dotted line.
     Dotted,
     /// Unconnected markers.
     Markers(Marker),
@@ -148,6 +157,7 @@ pub const PALETTE: [(u8, u8, u8); 8] = [
 
 /// Index of black and grey in [`PALETTE`], for measured values and reference lines.
 pub const BLACK: usize = 6;
+/// Index of grey in [`PALETTE`].
 pub const GREY: usize = 7;
 
 /// One plotted series.
@@ -157,7 +167,9 @@ pub struct Series {
     pub label: String,
     /// Name in the CSV `series` column: ASCII, stable, easy to filter on.
     pub id: String,
+    /// What it stands for (the CSV `kind` column).
     pub kind: Kind,
+    /// How it is drawn in the SVG.
     pub style: Style,
     /// Index into [`PALETTE`].
     pub color: usize,
@@ -170,6 +182,8 @@ pub struct Series {
 }
 
 impl Series {
+    /// An empty series with its legend label, CSV id, kind, style and colour index; its
+    /// terminal look follows its kind ([`Look::of`]).
     pub fn new(label: &str, id: &str, kind: Kind, style: Style, color: usize) -> Series {
         Series {
             label: label.into(),
@@ -183,6 +197,7 @@ impl Series {
         }
     }
 
+    /// The series with these (x, y) points, SI units.
     pub fn with_points(mut self, points: Vec<(f64, f64)>) -> Series {
         self.points = points;
         self
@@ -198,10 +213,13 @@ impl Series {
 /// A figure: what to draw, independent of how.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Figure {
+    /// First line above the plot (SVG).
     pub title: String,
     /// Second line under the title: which ball, parameters, law, speed.
     pub subtitle: String,
+    /// The horizontal axis.
     pub x: Axis,
+    /// The vertical axis.
     pub y: Axis,
     /// Drawn in this order; the legend lists those with a label, under the plot.
     pub series: Vec<Series>,

@@ -20,17 +20,28 @@ pub const AGREEMENT: f64 = 0.10;
 /// One ball: measured data, both parameter sets and the model's answers at the measured speed.
 #[derive(Debug, Clone)]
 pub struct Comparison {
+    /// The preset's name.
     pub name: String,
+    /// The preset's description.
     pub description: String,
+    /// The contact law both sets ran on.
     pub law: ContactLaw,
+    /// What was measured.
     pub measured: Measured,
+    /// The parameters derived from the material data (docs/model.md §4).
     pub derived: Derived,
+    /// The adopted parameter set, SI.
     pub adopted: ImpactParams,
+    /// The set derived from the materials, SI.
     pub materials: ImpactParams,
+    /// The impact on the adopted set at the measured speed.
     pub model_adopted: ImpactResponse,
+    /// The impact on the materials set at the measured speed.
     pub model_materials: ImpactResponse,
-    /// K_r refitted to the measured COR with each set (`None`: no COR, or out of reach).
+    /// K_r refitted to the measured COR with the adopted set (`None`: no COR, or out of
+    /// reach).
     pub fit_adopted: Option<Fit>,
+    /// Likewise with the materials set.
     pub fit_materials: Option<Fit>,
 }
 
@@ -66,6 +77,7 @@ pub fn compare(preset: &Preset, law: ContactLaw) -> Result<Comparison, SolveErro
 pub struct FigureRef {
     /// File name, relative to the report.
     pub file: String,
+    /// The caption under it.
     pub caption: String,
     /// The ball it belongs to; `None` for the figures of all balls.
     pub ball: Option<String>,

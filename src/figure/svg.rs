@@ -18,6 +18,7 @@ use std::fmt;
 
 /// Picture size in CSS pixels: the aspect of a journal figure, wide enough for the legend.
 pub const WIDTH: u32 = 800;
+/// Picture height in CSS pixels.
 pub const HEIGHT: u32 = 560;
 /// Drawing units per CSS pixel.
 const SCALE: i32 = 4;

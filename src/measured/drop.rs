@@ -24,6 +24,8 @@ const SPECS: [ColumnSpec; 2] = [
 /// Drop and rebound heights (m) and the line each came from (0: the command line).
 #[derive(Debug, Clone, PartialEq)]
 pub struct DropTest {
+    /// (drop height, rebound height, line) of each drop, in the file's order; the drop
+    /// height positive, the rebound height in [0, drop height].
     pub drops: Vec<(f64, f64, usize)>,
 }
 

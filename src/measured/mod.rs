@@ -17,12 +17,16 @@ use table::ColumnSpec;
 /// What is wrong with a measured-data text, and where.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct MeasuredError {
+    /// 1-based line of the text.
     pub line: usize,
+    /// 1-based column (of the cell at fault, or of the line's start).
     pub column: usize,
+    /// What is wrong, one line.
     pub message: String,
 }
 
 impl MeasuredError {
+    /// An error at `line`:`column`.
     pub fn at(line: usize, column: usize, message: impl Into<String>) -> MeasuredError {
         MeasuredError {
             line,
@@ -44,11 +48,15 @@ impl std::error::Error for MeasuredError {}
 /// One COR measurement, SI, with what else was measured at that speed.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct CorPoint {
+    /// Impact speed, m/s.
     pub v0: f64,
+    /// Measured coefficient of restitution.
     pub cor: f64,
     /// Standard deviation of `cor` (weights the fit), if given.
     pub cor_sd: Option<f64>,
+    /// Peak force measured at this speed, N, if given.
     pub max_force: Option<f64>,
+    /// Contact time measured at this speed, s, if given.
     pub contact_time: Option<f64>,
     /// Line of the file it came from (0: the command line).
     pub line: usize,
@@ -57,6 +65,7 @@ pub struct CorPoint {
 /// COR against impact speed.
 #[derive(Debug, Clone, PartialEq)]
 pub struct CorTable {
+    /// The measurements, in the file's order.
     pub points: Vec<CorPoint>,
     /// The line after the last one read, for errors about the whole table.
     pub end_line: usize,
@@ -65,12 +74,16 @@ pub struct CorTable {
 /// Measured data of any kind, as found in a file.
 #[derive(Debug, Clone, PartialEq)]
 pub enum Data {
+    /// A force–time trace (columns time and force).
     Trace(Trace),
+    /// A COR-against-speed table (columns v0 and cor, optionally more).
     Cor(CorTable),
+    /// Drop and rebound heights.
     Drop(DropTest),
 }
 
 impl Data {
+    /// What the data are, as messages name them: "force-time trace", "COR table", "drop test".
     pub fn kind(&self) -> &'static str {
         match self {
             Data::Trace(_) => "force-time trace",

@@ -32,11 +32,15 @@ const SPECS: [ColumnSpec; 2] = [
 /// Samples in SI, time strictly increasing.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Trace {
+    /// Sample times, s, strictly increasing.
     pub time: Vec<f64>,
+    /// Force at each time, N.
     pub force: Vec<f64>,
-    /// Line and force-cell column of each sample (for errors found later).
+    /// Line of each sample in the text (for errors found later).
     pub lines: Vec<usize>,
+    /// Column of each sample's force cell.
     pub force_columns: Vec<usize>,
+    /// The line after the last one read, for errors about the whole trace.
     pub end_line: usize,
 }
 
@@ -47,12 +51,14 @@ pub struct TraceSummary {
     pub baseline: f64,
     /// Noise standard deviation there, from the median absolute deviation (N).
     pub noise: f64,
-    /// Peak force above the baseline (N) and its time (s).
+    /// Peak force above the baseline (N).
     pub peak: f64,
+    /// Time of the peak (s).
     pub t_peak: f64,
-    /// Where the force, above the baseline, first and last exceeds 5 % of the peak,
-    /// extrapolated linearly to zero from there (s).
+    /// Where the force, above the baseline, first exceeds 5 % of the peak, extrapolated
+    /// linearly back to zero from there (s).
     pub t_start: f64,
+    /// Likewise where it last exceeds 5 % of the peak, extrapolated forward to zero (s).
     pub t_end: f64,
     /// ∫ (F − baseline) dt over [t_start, t_end] (N s) = m v0 (1 + e) for a rebound.
     pub impulse: f64,

@@ -29,12 +29,15 @@ pub enum ContactLaw {
 }
 
 impl ContactLaw {
+    /// The three laws, in the order the explorer cycles through them.
     pub const ALL: [ContactLaw; 3] = [
         ContactLaw::Linear,
         ContactLaw::ElasticPlastic,
         ContactLaw::Hertz,
     ];
 
+    /// Its name in presets, on the command line (`--law`) and in the JSON: `linear`,
+    /// `elastic-plastic`, `hertz` (the inverse of `str::parse`).
     pub fn name(self) -> &'static str {
         match self {
             ContactLaw::Linear => "linear",
@@ -82,6 +85,7 @@ pub struct Unloading {
 /// A contact law with its normalized constants.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Contact {
+    /// The law.
     pub law: ContactLaw,
     /// z̄_p, the flattening / plastic threshold (∞: none).
     pub zp_bar: f64,

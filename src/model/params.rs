@@ -43,15 +43,25 @@ pub struct Normalized {
 /// The quantity a [`ParamError`] names; it displays as the name messages give it.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum Field {
+    /// Mass m, kg.
     Mass,
+    /// Contact stiffness K_p, N/m.
     KP,
+    /// Dashpot c, kg/s.
     Damping,
+    /// Recoil spring K_r, N/m.
     KR,
+    /// Flattening (yield) indentation z_p, m.
     ZP,
+    /// Hertz stiffness K_h, N/m^{3/2}.
     KH,
+    /// Impact speed v0, m/s.
     V0,
+    /// λ = K_r/K_p.
     Lambda,
+    /// ζ = √(m K_p)/(2c).
     Zeta,
+    /// z̄_p = z_p ω0/v0.
     ZpBar,
     /// The solver's relative tolerance.
     Rtol,
@@ -96,8 +106,12 @@ impl fmt::Display for Field {
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 #[error("invalid {field}: {} ({reason})", number(*.value))]
 pub struct ParamError {
+    /// The quantity at fault.
     pub field: Field,
+    /// The value given.
     pub value: f64,
+    /// Why it is refused ("must not be negative", "out of the physically meaningful range
+    /// 1e-15 … 1e15", …).
     pub reason: &'static str,
 }
 
@@ -110,6 +124,7 @@ pub fn check_positive(field: Field, value: f64) -> Result<(), ParamError> {
 /// of the arithmetic (ζ = 1e6 is within 1e-6 of the ζ → ∞ limit), while the exact solver's
 /// modes span more than twelve decades and its sums lose their digits.
 pub const LAMBDA_MAX: f64 = 1e6;
+/// The largest ζ accepted (see [`LAMBDA_MAX`]).
 pub const ZETA_MAX: f64 = 1e6;
 /// The smallest z̄_p = z_p ω0/v0 accepted, as `--zp-bar` already requires. Each of z_p, K_p,
 /// m, v0 may lie anywhere in 1e-15 … 1e15, but together they reached z̄_p = 4e-35: the ball

@@ -85,7 +85,9 @@ pub fn exact(model: PeerModel, target: f64) -> Result<f64, PeerError> {
 /// One model calibrated by one rule, run at the ball's v0.
 #[derive(Debug, Clone)]
 pub struct Calibrated {
+    /// The peer model.
     pub model: PeerModel,
+    /// The rule that turned the target COR into its damping.
     pub rule: Rule,
     /// The normalized damping (ζ, α or χ).
     pub damping_normalized: f64,

@@ -23,39 +23,56 @@ use std::fmt::Write;
 /// The codes a snippet can be written for.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Code {
+    /// LAMMPS `pair_style granular` (hooke and hertz/material normal models).
     Lammps,
+    /// LIGGGHTS `model hertz`.
     Liggghts,
+    /// Project Chrono SMC (`Hertz` and `Flores` force models).
     Chrono,
+    /// YADE `ViscElMat` (kn, cn).
     Yade,
+    /// MuJoCo's `solref` in its direct form (stiffness and damping).
     Mujoco,
 }
 
 /// The exact calibration of every model for one ball and target COR, in SI.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct ExportSet {
+    /// The ball's name in the snippets' comments.
     pub label: String,
+    /// Mass m, kg.
     pub mass: f64,
+    /// Radius R, m.
     pub radius: f64,
+    /// Impact speed v0, m/s (the calibration holds at this speed).
     pub v0: f64,
+    /// The COR every model is calibrated to.
     pub target_cor: f64,
-    /// k (N/m) and K_h (N/m^1.5).
+    /// Linear stiffness k, N/m.
     pub k: f64,
+    /// Hertz stiffness K_h, N/m^1.5.
     pub k_h: f64,
-    /// ζ = η/(2√(mk)) of Kelvin–Voigt with tension, and η (kg/s).
+    /// ζ = η/(2√(mk)) of Kelvin–Voigt with tension.
     pub kv_zeta: f64,
+    /// Its η, kg/s.
     pub kv_eta: f64,
-    /// The same for Kelvin–Voigt clipped at F ≥ 0.
+    /// ζ of Kelvin–Voigt clipped at F ≥ 0.
     pub kv_no_tension_zeta: f64,
+    /// Its η, kg/s.
     pub kv_no_tension_eta: f64,
-    /// Tsuji's α = η/√(m K_h) and η (kg/(s·m^0.25)).
+    /// Tsuji's α = η/√(m K_h).
     pub tsuji_alpha: f64,
+    /// Its η, kg/(s·m^0.25).
     pub tsuji_eta: f64,
-    /// Hunt–Crossley's χ, and α = χ/v0 (s/m) for codes whose damping is a material constant.
+    /// Hunt–Crossley's χ (dimensionless: F = K_h δ^{3/2} (1 + χ δ̇/v0)).
     pub hunt_crossley_chi: f64,
+    /// α = χ/v0, s/m, for codes whose damping is a material constant.
     pub hunt_crossley_alpha: f64,
 }
 
 impl ExportSet {
+    /// Every model calibrated exactly to `target` for `ball` ([`calibrate::exact`]);
+    /// `label` names the ball in the snippets.
     pub fn new(ball: &PeerBall, target: f64, label: &str) -> Result<ExportSet, PeerError> {
         ball.validate()?;
         let d = |m| calibrate::exact(m, target);

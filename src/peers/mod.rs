@@ -33,6 +33,7 @@ pub enum PeerModel {
 }
 
 impl PeerModel {
+    /// The four models, in the order the output lists them.
     pub const ALL: [PeerModel; 4] = [
         PeerModel::KelvinVoigt,
         PeerModel::KelvinVoigtNoTension,
@@ -40,6 +41,8 @@ impl PeerModel {
         PeerModel::HuntCrossley,
     ];
 
+    /// Its name on the command line and in the output: `kelvin-voigt`,
+    /// `kelvin-voigt-no-tension`, `tsuji`, `hunt-crossley`.
     pub fn name(self) -> &'static str {
         match self {
             PeerModel::KelvinVoigt => "kelvin-voigt",
@@ -99,6 +102,8 @@ impl PeerBall {
         }
     }
 
+    /// Every value positive, finite and in 1e-15 … 1e15, or an error naming the first that is
+    /// not.
     pub fn validate(&self) -> Result<(), PeerError> {
         positive("mass", self.mass)?;
         positive("radius", self.radius)?;
@@ -149,8 +154,11 @@ pub enum PeerError {
     /// A value out of its domain, named: "invalid cor: 1.5 (…)".
     #[error("invalid {field}: {} ({reason})", crate::text::number(*.value))]
     Invalid {
+        /// The value's name (`mass`, `radius`, `v0`, `k`, `k_h`, `cor`, …).
         field: &'static str,
+        /// The value given.
         value: f64,
+        /// Why it is refused.
         reason: &'static str,
     },
     /// No damping ≥ 0 gives this COR: the model's COR spans (0, 1] (Kelvin–Voigt with tension
@@ -159,10 +167,20 @@ pub enum PeerError {
         "invalid cor: {} is out of reach of {model} (its COR lies in (0, 1])",
         crate::text::number(*.target)
     )]
-    OutOfReach { model: PeerModel, target: f64 },
+    OutOfReach {
+        /// The model asked.
+        model: PeerModel,
+        /// The COR asked for.
+        target: f64,
+    },
     /// The step budget ran out (not seen over the tested domain): not the input's fault.
     #[error("{model}: the impact did not end within {steps} steps")]
-    Unresolved { model: PeerModel, steps: usize },
+    Unresolved {
+        /// The model run.
+        model: PeerModel,
+        /// The steps taken.
+        steps: usize,
+    },
 }
 
 impl From<ParamError> for PeerError {

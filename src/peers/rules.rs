@@ -32,6 +32,7 @@ pub enum Rule {
 }
 
 impl Rule {
+    /// Its name in the output (text, JSON, CSV): `exact`, `log-decrement`, …
     pub fn name(self) -> &'static str {
         match self {
             Rule::Exact => "exact",

@@ -8,6 +8,7 @@ pub struct PresetError {
     pub origin: String,
     /// 1-based line and column, when known.
     pub position: Option<(usize, usize)>,
+    /// What is wrong, one line (the field's table and key first for a semantic check).
     pub message: String,
 }
 

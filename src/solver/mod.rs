@@ -51,14 +51,17 @@ impl Default for SolveOptions {
 }
 
 impl SolveOptions {
+    /// The same options with `n` history samples (0: none).
     pub fn with_samples(mut self, n: usize) -> Self {
         self.samples = n;
         self
     }
+    /// The same options with the energy audit ([`EnergyBudget`]) switched on.
     pub fn with_energy(mut self) -> Self {
         self.energy = true;
         self
     }
+    /// The same options with the method forced (the exact one runs the linear law only).
     pub fn with_method(mut self, m: Method) -> Self {
         self.method = Some(m);
         self
@@ -68,7 +71,9 @@ impl SolveOptions {
 /// Where the energy went, SI (J): ½ m v0² − ½ m v_f² = dashpot + contact + spring.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct EnergyBudget {
+    /// ½ m v0².
     pub initial_kinetic: f64,
+    /// ½ m v_f², v_f = e v0 the rebound speed.
     pub final_kinetic: f64,
     /// ∫ c y'² dt, integrated independently of the balance.
     pub dashpot: f64,
@@ -91,11 +96,13 @@ impl EnergyBudget {
 pub struct PhaseEvent {
     /// Time (s).
     pub t: f64,
+    /// What happened.
     pub kind: EventKind,
     /// Indentation at the event (m).
     pub z: f64,
 }
 
+/// What a [`PhaseEvent`] marks.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "kebab-case")]
 pub enum EventKind {
@@ -125,7 +132,9 @@ pub struct History {
 /// The answer to one impact, SI units (docs/model.md §2).
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct ImpactResponse {
+    /// The contact law run.
     pub law: ContactLaw,
+    /// The solver that ran it.
     pub method: Method,
     /// Coefficient of restitution e = −α'(t_f)/v0 (Eq. 6); 0 when there is no rebound.
     pub cor: f64,
@@ -151,9 +160,13 @@ pub struct ImpactResponse {
     pub element_displacement_normalized: f64,
     /// τ_f = ω0 t_f; `None` when there is no rebound.
     pub contact_time_normalized: Option<f64>,
+    /// The ball's normalized numbers λ, ζ, z̄_p, κ (docs/model.md §5).
     pub normalized: Normalized,
+    /// Phase switches and the end of contact, in time order.
     pub events: Vec<PhaseEvent>,
+    /// Where the energy went, when [`SolveOptions::energy`] asked for it.
     pub energy: Option<EnergyBudget>,
+    /// The sampled histories ([`SolveOptions::samples`] points; empty for 0).
     pub history: History,
     /// Solver steps taken: propagator steps (exact) or accepted and rejected integrator steps
     /// (adaptive), over every phase and event re-integration. Bounded by the solvers' budgets.
@@ -178,9 +191,13 @@ pub enum SolveError {
         number(*.zeta)
     )]
     Unresolved {
+        /// Which budget ran out.
         reason: Unresolved,
+        /// Solver steps taken before it did.
         steps: usize,
+        /// The ball's λ.
         lambda: f64,
+        /// The ball's ζ.
         zeta: f64,
     },
 }

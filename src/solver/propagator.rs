@@ -96,6 +96,8 @@ pub struct Propagator {
 }
 
 impl Propagator {
+    /// The flow of w' = A w from w(0) = w0, where `poly` = [a2, a1, a0] are the coefficients
+    /// of A's characteristic polynomial s³ + a2 s² + a1 s + a0.
     pub fn new(a: Matrix3<f64>, poly: [f64; 3], w0: Vector3<f64>) -> Self {
         Self::with_roots(a, cubic_roots(poly), None, w0)
     }
@@ -152,10 +154,12 @@ impl Propagator {
         Self::with_roots(self.a, self.roots, split, w0)
     }
 
+    /// The eigenvalues of A.
     pub fn roots(&self) -> &Roots {
         &self.roots
     }
 
+    /// The phase's matrix A.
     pub fn matrix(&self) -> &Matrix3<f64> {
         &self.a
     }

@@ -53,8 +53,10 @@ pub fn forward_jacobian<P: Residuals + ?Sized>(
     Some(jac)
 }
 
+/// When the minimizer stops.
 #[derive(Debug, Clone, Copy)]
 pub struct Options {
+    /// Most Levenberg–Marquardt iterations (each one Jacobian); 200 by default.
     pub max_iterations: usize,
     /// Stop when a Gauss–Newton step would lower the cost by less than this fraction (a test
     /// on the gradient that does not depend on the damping: a heavily damped step lowers the
@@ -77,11 +79,16 @@ impl Default for Options {
 /// Where the minimizer stopped.
 #[derive(Debug, Clone)]
 pub struct Solution {
+    /// The variables at the stop.
     pub x: Vec<f64>,
+    /// The residuals r(x) there.
     pub residuals: Vec<f64>,
+    /// ∂r/∂x there ([`Residuals::jacobian`]), one row a residual: the input of
+    /// [`super::stats::uncertainty`].
     pub jacobian: DMatrix<f64>,
     /// ½ Σ r².
     pub cost: f64,
+    /// Iterations taken.
     pub iterations: usize,
     /// A convergence test was met (not just the iteration budget).
     pub converged: bool,

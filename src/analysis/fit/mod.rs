@@ -37,8 +37,10 @@ pub enum Param {
 }
 
 impl Param {
+    /// Every parameter a fit can free, in the order the output lists them.
     pub const ALL: [Param; 5] = [Param::KP, Param::C, Param::KR, Param::ZP, Param::KH];
 
+    /// The name `--free` takes and the JSON writes: `k_p`, `c`, `k_r`, `z_p`, `k_h`.
     pub fn name(self) -> &'static str {
         match self {
             Param::KP => "k_p",
@@ -49,6 +51,7 @@ impl Param {
         }
     }
 
+    /// Its SI unit, as the text output writes it.
     pub fn unit(self) -> &'static str {
         match self {
             Param::KP | Param::KR => "N/m",
@@ -58,6 +61,7 @@ impl Param {
         }
     }
 
+    /// The parameter of that [`name`](Param::name) (surrounding blanks ignored).
     pub fn parse(s: &str) -> Option<Param> {
         Param::ALL.into_iter().find(|p| p.name() == s.trim())
     }

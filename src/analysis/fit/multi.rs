@@ -14,19 +14,31 @@ use std::fmt;
 /// What to fit to.
 #[derive(Debug, Clone, Copy)]
 pub enum FitData<'a> {
+    /// A measured force–time pulse: the model's F(t) is fitted to it, with the start of
+    /// contact in the data's clock and the force baseline fitted too.
     Trace(&'a Trace),
+    /// COR against impact speed (with peak forces and contact times where given): the model's
+    /// values at each speed are fitted to them (a drop test becomes such a table).
     Cor(&'a [CorPoint]),
 }
 
 /// One fitted quantity: value, standard error and 95 % interval (SI).
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Estimate {
+    /// Its name in the output ([`Param::name`], or `time_offset`, `baseline`).
     #[serde(skip)]
     pub name: &'static str,
+    /// Its SI unit.
     #[serde(skip)]
     pub unit: &'static str,
+    /// The fitted value.
     pub value: f64,
+    /// Its standard error from cov = s² (JᵀJ)⁻¹ ([`super::stats`]); for a model parameter,
+    /// fitted as θ = ln p, by the delta method, p s_θ.
     pub std_error: f64,
+    /// The 95 % interval: exp(θ ± t₀.₉₇₅ s_θ) for a model parameter (so it stays positive),
+    /// value ± t₀.₉₇₅ std_error for the offset and baseline; Student t at n − p degrees of
+    /// freedom; NaN when the data leave no degree of freedom or do not pin the value.
     pub ci95: [f64; 2],
 }
 
@@ -35,37 +47,55 @@ pub struct Estimate {
 pub struct MultiFit {
     /// The whole fitted ball (the free parameters moved, the rest as given).
     pub params: ImpactParams,
+    /// The contact law fitted under.
     pub law: ContactLaw,
+    /// One estimate for each free parameter, in the order given.
     pub fitted: Vec<Estimate>,
     /// Force–time: where the contact starts in the data's clock (s), and the force baseline.
     pub time_offset: Option<Estimate>,
+    /// Force–time: the constant force (N) the data read when nothing touches.
     pub baseline: Option<Estimate>,
     /// Correlations between every fitted quantity, in the order of `names`.
     pub names: Vec<&'static str>,
+    /// The correlation matrix, one row a quantity of `names`.
     pub correlation: Vec<Vec<f64>>,
     /// RMS of model − data: newtons for a trace, COR for a table.
     pub rms_residual: f64,
+    /// Data points fitted (samples of a trace; values of a table).
     pub points: usize,
+    /// Levenberg–Marquardt iterations over every start.
     pub iterations: usize,
+    /// Whether the best start met a convergence test (not just the iteration budget).
     pub converged: bool,
     /// Condition number of the column-scaled Jacobian (see [`super::stats`]).
     pub condition: f64,
+    /// What the caller should know, one line each: no degree of freedom left, a parameter
+    /// the data cannot tell from the others, an interval wider than its value, a fit that
+    /// stopped on its iteration budget.
     pub warnings: Vec<String>,
     /// The model at each data point: force (N) at each sample, or COR at each speed.
     pub model: Vec<f64>,
 }
 
+/// Why a multi-parameter fit gave no answer; each message is one line.
 #[derive(Debug, Clone, PartialEq)]
 pub enum MultiFitError {
+    /// The starting parameters are invalid.
     Params(ParamError),
+    /// No parameter was freed.
     NoFree,
+    /// A parameter was freed twice.
     Repeated(Param),
     /// K_h and K_p are tied by Eq. 16: one of them at a time.
     Tied,
+    /// Fewer data points than quantities to fit.
     TooFew {
+        /// Data points given.
         points: usize,
+        /// Quantities to fit (free parameters, and a trace's offset and baseline).
         parameters: usize,
     },
+    /// The trace holds no pulse to fit.
     NoPulse(MeasuredError),
     /// No start led to parameters the solver answers for.
     NoAnswer,

@@ -31,9 +31,13 @@ pub enum FitError {
     Params(crate::ParamError),
     /// No λ ≥ 0 reaches the COR at this ζ: the model spans [low, high).
     OutOfReach {
+        /// The measured COR asked for.
         target: f64,
+        /// The ball's ζ = √(m K_p)/(2c), held fixed.
         zeta: f64,
+        /// The COR at λ = 0 (Maxwell), the lowest the model gives at this ζ.
         low: f64,
+        /// The COR at the largest λ tried (1e6, standing for λ → ∞).
         high: f64,
     },
 }

@@ -10,6 +10,7 @@ use nalgebra::DMatrix;
 pub struct Uncertainty {
     /// s² (JᵀJ)⁺, NaN throughout when there is no degree of freedom left.
     pub covariance: DMatrix<f64>,
+    /// cov_ij / √(cov_ii cov_jj), in [−1, 1].
     pub correlation: DMatrix<f64>,
     /// t quantile 0.975 at n − p degrees of freedom (NaN when n = p).
     pub t975: f64,
@@ -23,6 +24,8 @@ pub struct Uncertainty {
 /// changes the residuals by less than 1e-8 of what the others do: not identifiable.
 pub const CONDITION_MAX: f64 = 1e8;
 
+/// The uncertainty of a least-squares minimum from its Jacobian `jac` (one row a residual, one
+/// column a variable) and its `residuals`, with n − p degrees of freedom.
 pub fn uncertainty(jac: &DMatrix<f64>, residuals: &[f64]) -> Uncertainty {
     let (n, p) = jac.shape();
     let dof = n.saturating_sub(p);

@@ -15,9 +15,13 @@ use std::ops::Range;
 /// Ticks of one axis, in drawing coordinates (log10 of the value on a log axis).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Ticks {
+    /// Lower end of the axis.
     pub lo: f64,
+    /// Upper end of the axis.
     pub hi: f64,
+    /// Labelled ticks, increasing.
     pub major: Vec<f64>,
+    /// Unlabelled ticks between them (the 2…9 of each decade on a log axis).
     pub minor: Vec<f64>,
     /// Decimals printed on a linear axis; `None` on a log axis (decade labels).
     pub decimals: Option<usize>,
