@@ -23,7 +23,7 @@
 
 use crate::analysis::fit::{Fit, fit_k_r};
 use crate::analysis::sweep::{VelocityPoint, ZetaPoint, cor_vs_velocity, cor_vs_zeta};
-use crate::catalog::{Catalog, Entry, Origin};
+use crate::catalog::{Catalog, Entry};
 use crate::drop::{DropBall, DropRun, DropSetup};
 use crate::model::contact::ContactLaw;
 use crate::model::params::{Field, ImpactParams, check_positive, validate_lambda_zeta};
@@ -59,8 +59,12 @@ pub struct Ball {
     pub description: String,
 }
 
+mod entry;
 mod error;
+mod report;
+pub use entry::Overrides;
 pub use error::BallError;
+pub use report::{BallHeader, Energy, FitReport, ImpactReport, MeasuredAt};
 
 impl Ball {
     /// An embedded preset (`superball`, `golf`, `baseball`, …) on the parameter set and contact
@@ -87,42 +91,14 @@ impl Ball {
     /// A catalog entry with the command line's `--params`, `--law` and `--v0` applied (each
     /// `None` keeps the preset's), every parameter checked. A bad `v0` is named as such; any
     /// other parameter out of its domain is the preset's, and the error names the preset.
+    /// [`Ball::from_entry_with`] takes parameter overrides too.
     pub fn from_entry(
         entry: &Entry,
         source: Option<ParamSource>,
         law: Option<ContactLaw>,
         v0: Option<f64>,
     ) -> Result<Ball, BallError> {
-        let p = &entry.preset;
-        let source = source.unwrap_or(p.parameters);
-        let mut params = p.params_from(source);
-        if let Some(v0) = v0 {
-            params.v0 = v0;
-        }
-        params.validate().map_err(|error| {
-            // a bad v0 comes from the caller; anything else from the preset's set
-            if error.field == Field::V0 && v0.is_some() {
-                BallError::Param(error)
-            } else {
-                BallError::Preset {
-                    name: p.name.clone(),
-                    source: source.name(),
-                    error,
-                }
-            }
-        })?;
-        Ok(Ball {
-            name: Some(p.name.clone()),
-            origin: match &entry.origin {
-                Origin::Embedded => "embedded".into(),
-                Origin::File(f) => f.display().to_string(),
-            },
-            source: source.name(),
-            params,
-            law: law.unwrap_or(p.law),
-            measured: Some(p.measured.clone()),
-            description: p.description.clone(),
-        })
+        Ball::from_entry_with(entry, source, law, v0, &Overrides::default())
     }
 
     /// The normalized ball, m = K_p = v0 = 1, set by λ and ζ alone (and z̄_p = z_p ω0/v0 for

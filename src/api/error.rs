@@ -89,6 +89,19 @@ impl fmt::Display for BallError {
 
 impl std::error::Error for BallError {}
 
+impl BallError {
+    /// Whether the error is no fault of the input: an impact (of a run, or of a drop's
+    /// bounce) the solver could not bring to an end within its budgets (the command line's
+    /// exit code 1; every other error is bad input, exit 2).
+    pub fn is_no_answer(&self) -> bool {
+        matches!(
+            self,
+            BallError::Solve(SolveError::Unresolved { .. })
+                | BallError::Drop(DropError::Solve(SolveError::Unresolved { .. }))
+        )
+    }
+}
+
 impl From<CatalogError> for BallError {
     fn from(e: CatalogError) -> Self {
         BallError::Catalog(e)

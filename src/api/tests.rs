@@ -1,6 +1,7 @@
 //! Tests of the library's front door against the command line's checks and messages.
 
 use super::*;
+use crate::catalog::Catalog;
 
 #[test]
 fn messages_name_the_field_and_the_preset() {
@@ -56,4 +57,65 @@ fn the_builder_is_simulate() {
     assert_eq!(b.impact().unwrap(), direct);
     let fit = b.fit_cor(direct.cor).unwrap();
     assert!((fit.lambda - 0.7).abs() < 1e-8, "{}", fit.lambda);
+}
+
+#[test]
+fn overrides_are_the_callers_and_k_h_follows() {
+    let entry = Catalog::embedded().get("golf").unwrap().clone();
+    let set = Overrides {
+        k_p: Some(2e5),
+        z_p: Some(1e-3),
+        ..Overrides::default()
+    };
+    let b = Ball::from_entry_with(&entry, None, None, None, &set).unwrap();
+    assert_eq!((b.params.k_p, b.params.z_p), (2e5, 1e-3));
+    // Eq. 16: K_p = 1.5 K_h √z_p
+    assert!((1.5 * b.params.k_h * 1e-3_f64.sqrt() / 2e5 - 1.0).abs() < 1e-12);
+    let bad = Overrides {
+        damping: Some(-3.0),
+        ..Overrides::default()
+    };
+    let e = Ball::from_entry_with(&entry, None, None, None, &bad).unwrap_err();
+    assert_eq!(e.to_string(), "invalid damping: -3 (must not be negative)");
+    // no override: the plain entry
+    assert_eq!(
+        Ball::from_entry_with(&entry, None, None, None, &Overrides::default()),
+        Ball::from_entry(&entry, None, None, None)
+    );
+}
+
+#[test]
+fn only_an_unresolved_impact_is_no_answer() {
+    use crate::solver::{SolveError, Unresolved};
+    let unresolved = SolveError::Unresolved {
+        reason: Unresolved::Steps,
+        steps: 10,
+        lambda: 0.0,
+        zeta: 1.0,
+    };
+    assert!(BallError::Solve(unresolved.clone()).is_no_answer());
+    assert!(BallError::Drop(crate::drop::DropError::Solve(unresolved)).is_no_answer());
+    assert!(!BallError::Samples(1).is_no_answer());
+    assert!(!BallError::NoValue("lambda").is_no_answer());
+}
+
+#[test]
+fn reports_carry_the_balls_values() {
+    let ball = Ball::from_preset("superball").unwrap();
+    let r = ball.impact_history(10).unwrap();
+    let rep = ImpactReport::new(&ball, &r, true);
+    assert_eq!(rep.ball.preset, Some("superball"));
+    assert_eq!(
+        (rep.mass, rep.c, rep.cor),
+        (0.0374, ball.params.damping, r.cor)
+    );
+    assert_eq!(rep.lambda, ball.params.k_r / ball.params.k_p);
+    assert_eq!(rep.force.map(<[f64]>::len), Some(10));
+    assert!(ImpactReport::new(&ball, &r, false).t.is_none());
+    let fit = ball.fit_cor(0.75).unwrap();
+    let f = FitReport::new(&ball, 0.75, &fit);
+    assert_eq!(
+        (f.k_r, f.preset_k_r, f.target_cor),
+        (fit.k_r, 70800.0, 0.75)
+    );
 }

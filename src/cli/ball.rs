@@ -1,13 +1,12 @@
 //! Choosing the ball a command runs on: a preset (embedded or user), a `--config` file, or the
 //! normalized ball, with the command-line overrides applied and validated.
 
-use crate::ball::Ball;
-use crate::catalog::{self, Catalog, Entry, Origin};
+use crate::api::{self, Ball};
+use crate::catalog::{self, Catalog, Entry};
 use crate::model::contact::ContactLaw;
-use crate::model::params::{Field, ImpactParams, check_positive, validate_lambda_zeta};
+use crate::model::params::ImpactParams;
 use crate::preset::ParamSource;
 use clap::{Args, ValueEnum};
-use serde::Serialize;
 use std::path::{Path, PathBuf};
 
 /// The name used when no preset is asked for.
@@ -98,30 +97,19 @@ pub struct Overrides {
 }
 
 impl Overrides {
-    pub fn any(&self) -> bool {
-        self.k_p.is_some() || self.damping.is_some() || self.k_r.is_some() || self.z_p.is_some()
+    /// The values given, for the library to apply and check ([`api::Overrides`]).
+    pub fn values(&self) -> api::Overrides {
+        api::Overrides {
+            k_p: self.k_p,
+            damping: self.damping,
+            k_r: self.k_r,
+            z_p: self.z_p,
+        }
     }
 
-    /// The given values set on `params`; each checked, named by its field.
-    pub fn apply(&self, params: &mut ImpactParams) -> anyhow::Result<()> {
-        use crate::analysis::fit::{Param, apply};
-        let given = [
-            (Param::KP, Field::KP, self.k_p),
-            (Param::C, Field::Damping, self.damping),
-            (Param::KR, Field::KR, self.k_r),
-            (Param::ZP, Field::ZP, self.z_p),
-        ];
-        let mut free = Vec::new();
-        let mut values = Vec::new();
-        for (p, field, v) in given {
-            if let Some(v) = v {
-                check_positive(field, v)?;
-                free.push(p);
-                values.push(v);
-            }
-        }
-        *params = apply(params, &free, &values);
-        Ok(())
+    /// Whether any of `--k-p`, `--damping`, `--k-r`, `--z-p` was given.
+    pub fn any(&self) -> bool {
+        self.values().any()
     }
 }
 
@@ -138,53 +126,6 @@ pub fn check_overrides(
         anyhow::bail!("--damping and --zeta both set c: give one of them");
     }
     Ok(())
-}
-
-/// The ball's keys of a JSON document, in this order (flattened into it).
-#[derive(Debug, Serialize)]
-pub struct BallHeader<'a> {
-    pub preset: Option<&'a str>,
-    pub origin: &'a str,
-    pub parameters: &'a str,
-    pub law: &'static str,
-}
-
-/// Where the normalized ball comes from (its `origin`).
-const NORMALIZED: &str = "normalized";
-
-/// The ball a command runs on, and where it was chosen from.
-#[derive(Debug, Clone)]
-pub struct ChosenBall {
-    pub ball: Ball,
-    /// "embedded", a file path, or "normalized".
-    pub origin: String,
-    /// The preset's description (empty for the normalized ball).
-    pub description: String,
-}
-
-impl ChosenBall {
-    /// The preset's name; `None` for the normalized ball.
-    pub fn preset(&self) -> Option<&str> {
-        (self.origin != NORMALIZED).then_some(self.ball.name.as_str())
-    }
-
-    /// The keys every JSON document names its ball by.
-    pub fn header(&self) -> BallHeader<'_> {
-        BallHeader {
-            preset: self.preset(),
-            origin: &self.origin,
-            parameters: &self.ball.source,
-            law: self.ball.law.name(),
-        }
-    }
-
-    /// "superball (embedded, adopted parameters)" or "normalized ball (m = K_p = v0 = 1)".
-    pub fn label(&self) -> String {
-        match self.preset() {
-            Some(n) => format!("{n} ({}, {} parameters)", self.origin, self.ball.source),
-            None => "normalized ball (m = K_p = v0 = 1)".into(),
-        }
-    }
 }
 
 /// The catalog: embedded presets, the user's presets folder, and `config` if given.
@@ -211,37 +152,19 @@ pub fn select(preset: Option<&str>, config: Option<&Path>) -> anyhow::Result<Ent
 }
 
 impl BallArgs {
-    /// The preset ball with `--params`, `--law`, `--v0` applied and every parameter checked.
-    pub fn resolve(&self, v0: Option<f64>) -> anyhow::Result<ChosenBall> {
+    /// The preset ball with `--params`, `--law`, `--v0` and the overrides applied, every
+    /// parameter checked by the library ([`Ball::from_entry_with`]).
+    pub fn resolve(&self, v0: Option<f64>) -> anyhow::Result<Ball> {
         let entry = select(self.choice.preset.as_deref(), self.choice.config.as_deref())?;
-        let p = &entry.preset;
-        let source = self.params.map_or(p.parameters, ParamSource::from);
-        let mut params = p.params_from(source);
-        if let Some(v0) = v0 {
-            params.v0 = v0;
-        }
-        self.set.apply(&mut params)?;
-        params.validate().map_err(|e| {
-            // a bad v0 or an overridden value comes from the command line; anything else from
-            // the preset's set
-            if (e.field == Field::V0 && v0.is_some()) || self.set.any() {
-                e.into()
-            } else {
-                anyhow::anyhow!("preset '{}' ({} parameters): {e}", p.name, source.name())
-            }
-        })?;
-        let law = self.law.map_or(p.law, ContactLaw::from);
-        Ok(ChosenBall {
-            ball: Ball {
-                params,
-                ..Ball::from_preset(p, source, law)
-            },
-            origin: match &entry.origin {
-                Origin::Embedded => "embedded".into(),
-                Origin::File(f) => f.display().to_string(),
-            },
-            description: p.description.clone(),
-        })
+        let source = self.params.map(ParamSource::from);
+        let law = self.law.map(ContactLaw::from);
+        Ok(Ball::from_entry_with(
+            &entry,
+            source,
+            law,
+            v0,
+            &self.set.values(),
+        )?)
     }
 }
 
@@ -253,30 +176,4 @@ pub fn set_lambda_zeta(
     zeta: Option<f64>,
 ) -> anyhow::Result<()> {
     Ok(crate::api::set_lambda_zeta(params, lambda, zeta)?)
-}
-
-/// The normalized ball: m = K_p = v0 = 1; `zp_bar` = ∞ for no flattening.
-pub fn normalized(
-    lambda: f64,
-    zeta: f64,
-    zp_bar: Option<f64>,
-    law: ContactLaw,
-) -> anyhow::Result<ChosenBall> {
-    validate_lambda_zeta(lambda, zeta)?;
-    if let Some(z) = zp_bar {
-        check_positive(Field::ZpBar, z)?;
-    }
-    let params = ImpactParams::from_normalized(lambda, zeta, zp_bar.unwrap_or(f64::INFINITY));
-    params.validate()?;
-    Ok(ChosenBall {
-        ball: Ball {
-            name: "ball".into(),
-            source: NORMALIZED.into(),
-            params,
-            law,
-            measured: None,
-        },
-        origin: NORMALIZED.into(),
-        description: String::new(),
-    })
 }

@@ -86,10 +86,10 @@ pub fn run(a: &DropArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         .transpose()
         .map_err(|e| anyhow::anyhow!(e))?;
     let b = a.ball.resolve(None)?;
-    let radius = b.ball.measured.as_ref().map_or(f64::NAN, |m| m.radius);
+    let radius = b.measured.as_ref().map_or(f64::NAN, |m| m.radius);
     let dball = DropBall {
-        params: b.ball.params,
-        law: b.ball.law,
+        params: b.params,
+        law: b.law,
         radius,
     };
     let air = (!a.no_drag).then(|| Air {
@@ -119,11 +119,11 @@ pub fn run(a: &DropArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         DropFormat::Text => {
             text(out, &b.label(), &run, standard.zip(verdict), radius)?;
             // no standard asked for: name the ball's own, if it has one
-            if let (None, Some(own)) = (standard, b.preset().and_then(standards::for_ball)) {
+            if let (None, Some(own)) = (standard, b.name.as_deref().and_then(standards::for_ball)) {
                 writeln!(
                     out,
                     "\n{}'s standard is {} ({}): add --standard {}",
-                    b.preset().unwrap_or_default(),
+                    b.name.as_deref().unwrap_or_default(),
                     own.name,
                     own.title,
                     own.name

@@ -305,7 +305,7 @@ fn build(a: &FigureArgs) -> anyhow::Result<Figure> {
                 .collect();
             // a user's ball joins the three of the paper
             if a.ball.choice.is_given() {
-                let b = a.ball.resolve(None)?.ball;
+                let b = a.ball.resolve(None)?.record();
                 if !balls.iter().any(|x| x.name == b.name) {
                     balls.push(b);
                 }
@@ -340,8 +340,8 @@ fn one_ball(a: &FigureArgs, v0: Option<f64>) -> anyhow::Result<(paper::Ball, Str
     let lambda = a.lambda.as_ref().filter(|l| l.len() == 1).map(|l| l[0]);
     ball::check_overrides(&a.ball.set, lambda, a.zeta)?;
     let mut b = a.ball.resolve(v0)?;
-    ball::set_lambda_zeta(&mut b.ball.params, lambda, a.zeta)?;
-    Ok((b.ball, b.origin))
+    ball::set_lambda_zeta(&mut b.params, lambda, a.zeta)?;
+    Ok((b.record(), b.origin))
 }
 
 /// `build`, with the `--measured` files drawn on it (against the ball's m and v0).

@@ -3,11 +3,11 @@
 //! has; a COR table, a force–time trace or drop tests fit several parameters at once
 //! ([`super::fit_multi`]).
 
-use super::ball::{BallArgs, BallHeader};
+use super::ball::BallArgs;
 use super::output::{self, given, human, table};
-use crate::analysis::fit::{Param, fit_k_r};
+use crate::analysis::fit::Param;
+use crate::api::FitReport;
 use clap::{Args, ValueEnum};
-use serde::Serialize;
 use std::io::Write;
 use std::path::PathBuf;
 
@@ -152,21 +152,6 @@ impl FitArgs {
     }
 }
 
-#[derive(Serialize)]
-struct Report<'a> {
-    #[serde(flatten)]
-    ball: BallHeader<'a>,
-    v0: f64,
-    target_cor: f64,
-    k_r: f64,
-    lambda: f64,
-    zeta: f64,
-    cor: f64,
-    k_p: f64,
-    preset_k_r: f64,
-    preset_lambda: f64,
-}
-
 pub fn run(a: &FitArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     let source = a.source()?;
     let free = a.free_params()?;
@@ -180,20 +165,9 @@ pub fn run(a: &FitArgs, out: &mut dyn Write) -> anyhow::Result<()> {
 fn single(a: &FitArgs, cor: f64, out: &mut dyn Write) -> anyhow::Result<()> {
     super::fit_multi::check_outputs(a)?;
     let b = a.ball.resolve(a.v0)?;
-    let f = fit_k_r(&b.ball.params, b.ball.law, cor)?;
-    let p = &b.ball.params;
-    let r = Report {
-        ball: b.header(),
-        v0: p.v0,
-        target_cor: cor,
-        k_r: f.k_r,
-        lambda: f.lambda,
-        zeta: f.zeta,
-        cor: f.cor,
-        k_p: p.k_p,
-        preset_k_r: p.k_r,
-        preset_lambda: p.k_r / p.k_p,
-    };
+    let f = b.fit_cor(cor)?;
+    let p = &b.params;
+    let r = FitReport::new(&b, cor, &f);
     match a.format {
         FitFormat::Json => output::json(out, &r)?,
         FitFormat::Text => {

@@ -2,11 +2,11 @@
 //! standard errors, 95 % intervals and correlations ([`crate::analysis::fit::fit`]); the
 //! report as text or JSON, and the `--plot` and `--save` that go with every fit.
 
-use super::ball::ChosenBall;
 use super::fit::{FitArgs, FitFormat, Source};
 use super::measured_file as files;
 use super::output;
 use crate::analysis::fit::{FitData, MultiFitError, Param, fit};
+use crate::api::Ball;
 use crate::measured::{Air, CorPoint, Flight, Trace, drop_to_cor};
 use crate::model::params::ImpactParams;
 use crate::solver::{SolveOptions, simulate};
@@ -51,17 +51,17 @@ pub fn check_outputs(a: &FitArgs) -> anyhow::Result<()> {
     Ok(())
 }
 
-fn load(a: &FitArgs, source: &Source, ball: &ChosenBall) -> anyhow::Result<Loaded> {
+fn load(a: &FitArgs, source: &Source, ball: &Ball) -> anyhow::Result<Loaded> {
     if let Some(cd) = a.drag_coefficient {
         positive("drag_coefficient", cd)?;
         positive("air_density", a.air_density)?;
     }
-    let radius = ball.ball.measured.as_ref().map_or(f64::NAN, |m| m.radius);
+    let radius = ball.measured.as_ref().map_or(f64::NAN, |m| m.radius);
     let air = a.drag_coefficient.map(|cd| Air {
         density: a.air_density,
         drag_coefficient: cd,
     });
-    let flight = Flight::new(ball.ball.params.mass, radius, air);
+    let flight = Flight::new(ball.params.mass, radius, air);
     let from_drops = |drops: Vec<(f64, f64, usize)>| -> Vec<CorPoint> {
         drops
             .iter()
@@ -146,7 +146,7 @@ fn load(a: &FitArgs, source: &Source, ball: &ChosenBall) -> anyhow::Result<Loade
                 );
             }
             let pt = CorPoint {
-                v0: ball.ball.params.v0,
+                v0: ball.params.v0,
                 cor: *e,
                 cor_sd: None,
                 max_force: None,
@@ -204,18 +204,17 @@ pub fn run(
     check_outputs(a)?;
     let ball = a.ball.resolve(a.v0)?;
     let data = load(a, source, &ball)?;
-    let free = free
-        .unwrap_or_else(|| Param::defaults(data.trace.is_some(), data.points.len(), ball.ball.law));
+    let free =
+        free.unwrap_or_else(|| Param::defaults(data.trace.is_some(), data.points.len(), ball.law));
     let input = match &data.trace {
         Some(t) => FitData::Trace(t),
         None => FitData::Cor(&data.points),
     };
-    let f = fit(&ball.ball.params, ball.ball.law, input, &free)
-        .map_err(|e| fit_error(e, &data, &free))?;
+    let f = fit(&ball.params, ball.law, input, &free).map_err(|e| fit_error(e, &data, &free))?;
     // the data's speed: the trace's (the ball's v0), else the first row's
-    let v0 = data.points.first().map_or(ball.ball.params.v0, |p| p.v0);
+    let v0 = data.points.first().map_or(ball.params.v0, |p| p.v0);
     let fitted = ImpactParams { v0, ..f.params };
-    let r = simulate(&fitted, ball.ball.law, &SolveOptions::default())?;
+    let r = simulate(&fitted, ball.law, &SolveOptions::default())?;
     let report = super::fit_report::report(&ball, &data, &f, &fitted, &r);
     match a.format {
         FitFormat::Json => output::json(out, &report)?,
@@ -250,7 +249,7 @@ fn note(a: &FitArgs, out: &mut dyn Write, line: &str) -> anyhow::Result<()> {
 /// `--plot` and `--save` after the single-COR fit.
 pub fn single_extras(
     a: &FitArgs,
-    ball: &ChosenBall,
+    ball: &Ball,
     fitted: &ImpactParams,
     cor: f64,
     out: &mut dyn Write,
@@ -259,13 +258,8 @@ pub fn single_extras(
         return Ok(());
     }
     let data = load(a, &Source::Cor(cor), ball)?;
-    let f = fit(
-        fitted,
-        ball.ball.law,
-        FitData::Cor(&data.points),
-        &[Param::KR],
-    )
-    .map_err(|e| fit_error(e, &data, &[Param::KR]))?;
+    let f = fit(fitted, ball.law, FitData::Cor(&data.points), &[Param::KR])
+        .map_err(|e| fit_error(e, &data, &[Param::KR]))?;
     if let Some(p) = &a.plot {
         let svg = super::fit_plot::svg(ball, &data, &f, fitted)?;
         super::figure::write_file(p, &svg, a.force)?;

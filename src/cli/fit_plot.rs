@@ -2,10 +2,10 @@
 //! (two figures of the shared SVG renderer, stacked). The user's data are labelled by their
 //! file name.
 
-use super::ball::ChosenBall;
 use super::fit_multi::Loaded;
 use crate::analysis::fit::MultiFit;
 use crate::analysis::sweep::lin_space;
+use crate::api::Ball;
 use crate::figure::{Axis, BLACK, Figure, Kind, Marker, Series, Style, svg};
 use crate::model::params::ImpactParams;
 use crate::solver::{SolveOptions, simulate};
@@ -13,7 +13,7 @@ use crate::solver::{SolveOptions, simulate};
 /// Points along the model's COR-against-speed curve.
 const CURVE_POINTS: usize = 120;
 
-fn subtitle(ball: &ChosenBall, f: &MultiFit) -> String {
+fn subtitle(ball: &Ball, f: &MultiFit) -> String {
     let fitted: Vec<String> = f
         .fitted
         .iter()
@@ -21,8 +21,8 @@ fn subtitle(ball: &ChosenBall, f: &MultiFit) -> String {
         .collect();
     format!(
         "{}, {} law, fitted {}",
-        ball.preset().unwrap_or("ball"),
-        ball.ball.law,
+        ball.name.as_deref().unwrap_or("ball"),
+        ball.law,
         fitted.join(", ")
     )
 }
@@ -51,7 +51,7 @@ fn residuals(x: Axis, y_label: &str, label: &str, rms: String, points: Vec<(f64,
 }
 
 /// (data and model, residuals) for a trace.
-fn trace_figures(ball: &ChosenBall, data: &Loaded, f: &MultiFit) -> Option<(Figure, Figure)> {
+fn trace_figures(ball: &Ball, data: &Loaded, f: &MultiFit) -> Option<(Figure, Figure)> {
     let t = data.trace.as_ref()?;
     let measured: Vec<(f64, f64)> = t
         .time
@@ -93,7 +93,7 @@ fn trace_figures(ball: &ChosenBall, data: &Loaded, f: &MultiFit) -> Option<(Figu
 
 /// (data and model, residuals) for COR against speed.
 fn cor_figures(
-    ball: &ChosenBall,
+    ball: &Ball,
     data: &Loaded,
     f: &MultiFit,
     p: &ImpactParams,
@@ -106,7 +106,7 @@ fn cor_figures(
         .filter_map(|v0| {
             let r = simulate(
                 &ImpactParams { v0, ..*p },
-                ball.ball.law,
+                ball.law,
                 &SolveOptions::default(),
             )
             .ok()?;
@@ -162,12 +162,7 @@ fn stack(top: &str, bottom: &str) -> String {
     )
 }
 
-pub fn svg(
-    ball: &ChosenBall,
-    data: &Loaded,
-    f: &MultiFit,
-    p: &ImpactParams,
-) -> anyhow::Result<String> {
+pub fn svg(ball: &Ball, data: &Loaded, f: &MultiFit, p: &ImpactParams) -> anyhow::Result<String> {
     let (top, bottom) = match trace_figures(ball, data, f) {
         Some(figs) => figs,
         None => cor_figures(ball, data, f, p)?,

@@ -1,10 +1,10 @@
 //! The report of a multi-parameter fit: one JSON object (keys in docs/fitting.md) or a text
 //! table with intervals, correlations and warnings.
 
-use super::ball::ChosenBall;
 use super::fit_multi::Loaded;
 use super::output::{human, table};
 use crate::analysis::fit::{Estimate, MultiFit};
+use crate::api::Ball;
 use crate::model::params::ImpactParams;
 use serde::Serialize;
 use std::collections::BTreeMap;
@@ -57,7 +57,7 @@ struct DropRow {
 }
 
 pub fn report<'a>(
-    ball: &'a ChosenBall,
+    ball: &'a Ball,
     data: &'a Loaded,
     f: &'a MultiFit,
     p: &ImpactParams,
@@ -86,10 +86,10 @@ pub fn report<'a>(
         .map(|e| (e.name, e))
         .collect();
     Report {
-        preset: ball.preset(),
+        preset: ball.name.as_deref(),
         origin: &ball.origin,
-        parameters: &ball.ball.source,
-        law: ball.ball.law.name(),
+        parameters: ball.source,
+        law: ball.law.name(),
         data: data.kind,
         file: data.file.as_deref(),
         free: f.fitted.iter().map(|e| e.name).collect(),
@@ -139,7 +139,7 @@ fn interval(e: &Estimate) -> String {
 
 pub fn text(
     out: &mut dyn Write,
-    ball: &ChosenBall,
+    ball: &Ball,
     data: &Loaded,
     f: &MultiFit,
     r: &Report,
@@ -162,7 +162,7 @@ pub fn text(
             out,
             "impact speed v0 = {} m/s (--v0 to change it), mass {} g",
             human(r.v0, 4),
-            human(ball.ball.params.mass * 1e3, 4)
+            human(ball.params.mass * 1e3, 4)
         )?;
     }
     writeln!(out)?;

@@ -2,10 +2,10 @@
 //! atomically ([`crate::catalog::write`]) and never over an existing preset without
 //! `--force`. Its comments say what it was fitted to, when, and how well.
 
-use super::ball::ChosenBall;
 use super::fit::FitArgs;
 use super::fit_multi::Loaded;
 use crate::analysis::fit::MultiFit;
+use crate::api::Ball;
 use crate::catalog::{self, Catalog, Origin};
 use crate::model::params::ImpactParams;
 use crate::preset::{Adopted, Measured, ParamSource, Preset};
@@ -69,7 +69,7 @@ fn now_utc() -> String {
     )
 }
 
-fn header(ball: &ChosenBall, data: &Loaded, f: &MultiFit, when: &str) -> Vec<String> {
+fn header(ball: &Ball, data: &Loaded, f: &MultiFit, when: &str) -> Vec<String> {
     let short = |x: f64| crate::text::short(x, 4);
     let what = match &data.file {
         Some(file) => format!("the {} {file}", data.kind),
@@ -78,12 +78,12 @@ fn header(ball: &ChosenBall, data: &Loaded, f: &MultiFit, when: &str) -> Vec<Str
     let mut h = vec![
         format!(
             "Fitted by `bouncelab fit` on {when} to {what} ({} points), {} law,",
-            f.points, ball.ball.law
+            f.points, ball.law
         ),
         format!(
             "starting from the preset '{}' ({} parameters); what was not fitted is that preset's.",
-            ball.preset().unwrap_or("ball"),
-            ball.ball.source
+            ball.name.as_deref().unwrap_or("ball"),
+            ball.source
         ),
     ];
     for e in &f.fitted {
@@ -113,7 +113,7 @@ fn header(ball: &ChosenBall, data: &Loaded, f: &MultiFit, when: &str) -> Vec<Str
 fn preset(
     base: &Preset,
     name: &str,
-    ball: &ChosenBall,
+    ball: &Ball,
     data: &Loaded,
     p: &ImpactParams,
     when: &str,
@@ -122,7 +122,7 @@ fn preset(
     Preset {
         name: name.into(),
         description: format!("fitted to {} ({}) on {when}", data.label, data.kind),
-        law: ball.ball.law,
+        law: ball.law,
         parameters: ParamSource::Adopted,
         measured: Measured {
             mass: base.measured.mass,
@@ -146,7 +146,7 @@ fn preset(
 pub fn save(
     name: &str,
     a: &FitArgs,
-    ball: &ChosenBall,
+    ball: &Ball,
     data: &Loaded,
     f: &MultiFit,
     p: &ImpactParams,

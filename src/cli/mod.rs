@@ -162,6 +162,8 @@ fn exit_code(e: &anyhow::Error) -> Option<u8> {
                 Some(crate::analysis::fit::MultiFitError::NoAnswer)
             )
             || matches!(c.downcast_ref(), Some(SolveError::Unresolved { .. }))
+            || c.downcast_ref::<crate::BallError>()
+                .is_some_and(crate::BallError::is_no_answer)
     };
     if io_kind.is_some() || e.chain().any(not_the_input) {
         Some(1)
@@ -347,19 +349,26 @@ mod tests {
     /// one line naming λ and ζ, exit 1 (not the input's fault).
     #[test]
     fn no_answer_is_one_line_and_exit_1() {
-        let e = anyhow::Error::from(SolveError::Unresolved {
+        let unresolved = SolveError::Unresolved {
             reason: Unresolved::Steps,
             steps: 1_000_001,
             lambda: 0.0,
             zeta: 1e4,
-        });
-        let (code, line) = report(&e).unwrap();
-        assert_eq!(code, 1);
-        assert_eq!(
-            line,
-            "bouncelab: error: no answer at λ = 0, ζ = 10000: the step budget of the impact \
-             ran out (1000001 steps); a nearby λ or ζ may answer"
-        );
+        };
+        // as the solver gives it, and as the library's Ball (which `run` goes through) does
+        let errors = [
+            anyhow::Error::from(unresolved.clone()),
+            anyhow::Error::from(crate::BallError::Solve(unresolved)),
+        ];
+        for e in &errors {
+            let (code, line) = report(e).unwrap();
+            assert_eq!(code, 1);
+            assert_eq!(
+                line,
+                "bouncelab: error: no answer at λ = 0, ζ = 10000: the step budget of the impact \
+                 ran out (1000001 steps); a nearby λ or ζ may answer"
+            );
+        }
     }
 
     #[test]

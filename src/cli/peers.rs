@@ -2,9 +2,10 @@
 //! Christoforou–Yigit model, as text, JSON or CSV; `--export CODE` writes the parameters for
 //! a DEM or multibody code (docs/peers.md).
 
-use super::ball::{BallArgs, ChosenBall};
+use super::ball::BallArgs;
 use super::output::{self, csv_row, given, human, num, opt_num, table};
 use crate::analysis::fit::{FitError, fit_k_r};
+use crate::api::Ball;
 use crate::model::params::ImpactParams;
 use crate::peers::PeerBall;
 use crate::peers::calibrate::{self, Calibrated};
@@ -92,11 +93,11 @@ struct Report<'a> {
 
 pub fn run(a: &PeersArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     let b = a.ball.resolve(a.v0)?;
-    let radius = b.ball.measured.as_ref().map_or(f64::NAN, |m| m.radius);
-    let ball = PeerBall::from_params(&b.ball.params, radius);
+    let radius = b.measured.as_ref().map_or(f64::NAN, |m| m.radius);
+    let ball = PeerBall::from_params(&b.params, radius);
     let (target, source) = target(a, &b)?;
     if let Some(code) = a.export {
-        let set = ExportSet::new(&ball, target, &b.ball.name)?;
+        let set = ExportSet::new(&ball, target, b.name.as_deref().unwrap_or("ball"))?;
         let code = match code {
             ExportArg::Json => return Ok(output::json(out, &set)?),
             ExportArg::Lammps => Code::Lammps,
@@ -118,7 +119,7 @@ pub fn run(a: &PeersArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         v0: ball.v0,
         target_cor: target,
         models: &rows,
-        preset: b.preset(),
+        preset: b.name.as_deref(),
         radius,
         target_source: source,
     };
@@ -131,17 +132,16 @@ pub fn run(a: &PeersArgs, out: &mut dyn Write) -> anyhow::Result<()> {
 }
 
 /// The target COR and where it came from.
-fn target(a: &PeersArgs, b: &ChosenBall) -> anyhow::Result<(f64, &'static str)> {
+fn target(a: &PeersArgs, b: &Ball) -> anyhow::Result<(f64, &'static str)> {
     if let Some(e) = a.cor {
         if !(e.is_finite() && (0.0..=1.0).contains(&e)) {
             anyhow::bail!("invalid cor: {} (a COR lies in [0, 1])", num(e));
         }
         return Ok((e, "given"));
     }
-    let (p, law) = (&b.ball.params, b.ball.law);
+    let (p, law) = (&b.params, b.law);
     match a.target {
         TargetArg::Measured => b
-            .ball
             .measured
             .as_ref()
             .and_then(|m| m.cor)
@@ -180,8 +180,8 @@ fn peer_row(ball: &PeerBall, c: &Calibrated) -> Row {
 
 /// The Christoforou–Yigit model of the same ball: K_r fitted to the target (rule `exact`,
 /// docs/model.md §4), or, when no K_r reaches it at this ζ, the preset's own K_r (rule `preset`).
-fn christoforou_yigit_row(b: &ChosenBall, target: f64) -> anyhow::Result<Row> {
-    let (p, law) = (b.ball.params, b.ball.law);
+fn christoforou_yigit_row(b: &Ball, target: f64) -> anyhow::Result<Row> {
+    let (p, law) = (b.params, b.law);
     let (params, rule) = match fit_k_r(&p, law, target) {
         Ok(f) => (ImpactParams { k_r: f.k_r, ..p }, "exact"),
         Err(FitError::OutOfReach { .. }) => (p, "preset"),
@@ -232,7 +232,7 @@ fn csv(out: &mut dyn Write, rows: &[Row]) -> std::io::Result<()> {
     Ok(())
 }
 
-fn text(out: &mut dyn Write, b: &ChosenBall, ball: &PeerBall, r: &Report) -> std::io::Result<()> {
+fn text(out: &mut dyn Write, b: &Ball, ball: &PeerBall, r: &Report) -> std::io::Result<()> {
     writeln!(
         out,
         "{}: m = {} kg, R = {} m, v0 = {} m/s",
@@ -287,7 +287,7 @@ fn text(out: &mut dyn Write, b: &ChosenBall, ball: &PeerBall, r: &Report) -> std
 /// peers calibrated to the ball's measured COR (else its Christoforou–Yigit COR) at v0.
 pub fn figure(a: &super::figure::FigureArgs) -> anyhow::Result<crate::figure::Figure> {
     use crate::figure::peers as fig;
-    let b = a.ball.resolve(a.v0)?.ball;
+    let b = a.ball.resolve(a.v0)?.record();
     let target = fig::target(&b).map_err(|e| anyhow::anyhow!(e))?;
     let built = if a.name == super::figure::FigureName::PeersForceTime {
         fig::force_time(

@@ -1,16 +1,15 @@
 //! `bouncelab run`: one impact, as a text table, one JSON object or CSV.
 
-use super::ball::{self, BallArgs, BallHeader, ChosenBall};
+use super::ball::{self, BallArgs};
 use super::output::{self, csv_row, num, opt_num};
+use crate::api::{Ball, ImpactReport};
 use crate::model::contact::ContactLaw;
-use crate::solver::{EnergyBudget, ImpactResponse, Method, SolveOptions, simulate};
+use crate::solver::{EnergyBudget, ImpactResponse};
 use clap::{Args, ValueEnum};
-use serde::Serialize;
 use std::io::Write;
 
-/// History samples by default, and at most.
+/// History samples by default (at most [`crate::api::MAX_SAMPLES`]).
 const SAMPLES: usize = 400;
-const MAX_SAMPLES: usize = 100_000;
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
 pub enum RunFormat {
@@ -64,7 +63,7 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     ball::check_overrides(&args.ball.set, args.lambda, args.zeta)?;
     let ball = if args.normalized {
         let law = args.ball.law.map_or(ContactLaw::Linear, ContactLaw::from);
-        ball::normalized(
+        Ball::normalized(
             args.lambda.unwrap_or(1.0),
             args.zeta.unwrap_or(0.1),
             args.zp_bar,
@@ -72,119 +71,22 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         )?
     } else {
         let mut b = args.ball.resolve(args.v0)?;
-        ball::set_lambda_zeta(&mut b.ball.params, args.lambda, args.zeta)?;
+        ball::set_lambda_zeta(&mut b.params, args.lambda, args.zeta)?;
         b
     };
-    if args.history && !(2..=MAX_SAMPLES).contains(&args.samples) {
-        anyhow::bail!(
-            "invalid samples: {} (must lie in 2 … {MAX_SAMPLES})",
-            args.samples
-        );
-    }
-    let samples = if args.history { args.samples } else { 0 };
-    let opts = SolveOptions::default().with_samples(samples).with_energy();
-    let r = simulate(&ball.ball.params, ball.ball.law, &opts)?;
+    // the library checks the number of samples (2 … MAX_SAMPLES)
+    let r = if args.history {
+        ball.impact_history(args.samples)?
+    } else {
+        ball.impact()?
+    };
     match args.format {
-        RunFormat::Json => output::json(out, &report(&ball, &r, args.history))?,
+        RunFormat::Json => output::json(out, &ImpactReport::new(&ball, &r, args.history))?,
         RunFormat::Csv if args.history => history_csv(out, &r)?,
         RunFormat::Csv => summary_csv(out, &ball, &r)?,
         RunFormat::Text => super::run_text::write(out, &ball, &r, args.history)?,
     }
     Ok(())
-}
-
-#[derive(Serialize)]
-struct Measured {
-    v0: f64,
-    cor: Option<f64>,
-    max_force: Option<f64>,
-    contact_time: Option<f64>,
-}
-
-#[derive(Serialize)]
-struct Energy {
-    #[serde(flatten)]
-    budget: EnergyBudget,
-    relative_residual: f64,
-}
-
-/// The JSON object of one run, SI units; `null` for infinite z_p or c and for the contact time
-/// of a ball that does not rebound.
-#[derive(Serialize)]
-struct Report<'a> {
-    #[serde(flatten)]
-    ball: BallHeader<'a>,
-    method: Method,
-    mass: f64,
-    k_p: f64,
-    k_r: f64,
-    c: f64,
-    z_p: f64,
-    k_h: f64,
-    v0: f64,
-    lambda: f64,
-    zeta: f64,
-    zp_bar: f64,
-    cor: f64,
-    rebound: bool,
-    max_force: f64,
-    contact_time: Option<f64>,
-    max_indentation: f64,
-    permanent_indentation: f64,
-    max_force_normalized: f64,
-    contact_time_normalized: Option<f64>,
-    measured: Option<Measured>,
-    energy: Option<Energy>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    t: Option<&'a [f64]>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    force: Option<&'a [f64]>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    indentation: Option<&'a [f64]>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    displacement: Option<&'a [f64]>,
-}
-
-fn report<'a>(b: &'a ChosenBall, r: &'a ImpactResponse, history: bool) -> Report<'a> {
-    let p = &b.ball.params;
-    let n = &r.normalized;
-    let h = |v: &'a Vec<f64>| history.then_some(v.as_slice());
-    Report {
-        ball: b.header(),
-        method: r.method,
-        mass: p.mass,
-        k_p: p.k_p,
-        k_r: p.k_r,
-        c: p.damping,
-        z_p: p.z_p,
-        k_h: p.k_h,
-        v0: p.v0,
-        lambda: n.lambda,
-        zeta: n.zeta,
-        zp_bar: n.zp_bar,
-        cor: r.cor,
-        rebound: r.rebound,
-        max_force: r.max_force,
-        contact_time: r.contact_time,
-        max_indentation: r.max_indentation,
-        permanent_indentation: r.permanent_indentation,
-        max_force_normalized: r.max_force_normalized,
-        contact_time_normalized: r.contact_time_normalized,
-        measured: b.ball.measured.as_ref().map(|m| Measured {
-            v0: m.v0,
-            cor: m.cor,
-            max_force: m.max_force,
-            contact_time: m.contact_time,
-        }),
-        energy: r.energy.map(|budget| Energy {
-            budget,
-            relative_residual: budget.relative_residual(),
-        }),
-        t: h(&r.history.t),
-        force: h(&r.history.force),
-        indentation: h(&r.history.indentation),
-        displacement: h(&r.history.displacement),
-    }
 }
 
 /// Columns of `run --format csv` (one row).
@@ -219,24 +121,20 @@ pub const SUMMARY_COLUMNS: [&str; 28] = [
     "energy_spring",
 ];
 
-fn summary_csv(out: &mut dyn Write, b: &ChosenBall, r: &ImpactResponse) -> std::io::Result<()> {
-    let p = &b.ball.params;
+fn summary_csv(out: &mut dyn Write, b: &Ball, r: &ImpactResponse) -> std::io::Result<()> {
+    let p = &b.params;
     let n = &r.normalized;
     let e = r.energy;
     let en = |f: fn(&EnergyBudget) -> f64| opt_num(e.as_ref().map(f));
-    let method = match r.method {
-        Method::Exact => "exact",
-        Method::Numeric => "numeric",
-    };
     csv_row(out, &SUMMARY_COLUMNS)?;
     csv_row(
         out,
         &[
-            b.preset().unwrap_or_default().to_string(),
+            b.name.clone().unwrap_or_default(),
             b.origin.clone(),
-            b.ball.source.clone(),
+            b.source.into(),
             r.law.name().into(),
-            method.into(),
+            r.method.name().into(),
             num(p.mass),
             num(p.k_p),
             num(p.k_r),

@@ -1,8 +1,8 @@
 //! `bouncelab run --format text`: a readable table, units converted at the edge (N, ms, mm),
 //! the measured values beside the model's for a preset.
 
-use super::ball::ChosenBall;
 use super::output::{difference, given, human, table};
+use crate::api::Ball;
 use crate::preset::Measured;
 use crate::solver::{EnergyBudget, ImpactResponse, Method};
 use std::io::{self, Write};
@@ -44,8 +44,8 @@ struct Units {
 }
 
 impl Units {
-    fn of(b: &ChosenBall) -> Units {
-        let dimensional = b.preset().is_some();
+    fn of(b: &Ball) -> Units {
+        let dimensional = b.name.is_some();
         let unit = |scale, name| Unit::of(dimensional, scale, name);
         Units {
             dimensional,
@@ -76,18 +76,13 @@ impl Unit {
     };
 }
 
-pub fn write(
-    out: &mut dyn Write,
-    b: &ChosenBall,
-    r: &ImpactResponse,
-    history: bool,
-) -> io::Result<()> {
+pub fn write(out: &mut dyn Write, b: &Ball, r: &ImpactResponse, history: bool) -> io::Result<()> {
     let units = Units::of(b);
     let method = match r.method {
         Method::Exact => "exact solver",
         Method::Numeric => "adaptive numerical solver",
     };
-    match b.preset() {
+    match b.name.as_deref() {
         Some(_) if !b.description.is_empty() => writeln!(out, "{}: {}", b.label(), b.description)?,
         _ => writeln!(out, "{}", b.label())?,
     }
@@ -109,11 +104,11 @@ pub fn write(
 /// The parameters the run used (SI ones for a preset), and λ, ζ, z̄_p.
 fn write_parameters(
     out: &mut dyn Write,
-    b: &ChosenBall,
+    b: &Ball,
     r: &ImpactResponse,
     units: &Units,
 ) -> io::Result<()> {
-    let (p, n) = (&b.ball.params, &r.normalized);
+    let (p, n) = (&b.params, &r.normalized);
     let mut rows: Vec<Vec<String>> = Vec::new();
     let mut row = |k: &str, v: String| rows.push(vec![k.to_string(), v]);
     if units.dimensional {
@@ -138,14 +133,13 @@ fn write_parameters(
 /// The model's answer, beside what was measured when the run is at the measured speed.
 fn write_comparison(
     out: &mut dyn Write,
-    b: &ChosenBall,
+    b: &Ball,
     r: &ImpactResponse,
     units: &Units,
 ) -> io::Result<()> {
-    let v0 = b.ball.params.v0;
+    let v0 = b.params.v0;
     // the measured values are comparable only at the measured speed
     let measured = b
-        .ball
         .measured
         .as_ref()
         .filter(|m| m.v0 == v0 && (m.cor.is_some() || m.max_force.is_some()));
@@ -161,7 +155,7 @@ fn write_comparison(
     }];
     rows.extend(comparison_rows(r, measured, units));
     table(out, "  ", &rows)?;
-    if let Some(m) = b.ball.measured.as_ref().filter(|m| m.v0 != v0) {
+    if let Some(m) = b.measured.as_ref().filter(|m| m.v0 != v0) {
         writeln!(
             out,
             "  (measured values are at v0 = {} m/s; not compared)",

@@ -1,9 +1,10 @@
 //! `bouncelab sweep zeta|velocity`: the paper's Figs. 2–3 (COR, F̄_m, τ_f against ζ for
 //! several λ) and Fig. 4 (COR against impact speed for one ball), as CSV or JSON.
 
-use super::ball::{BallArgs, BallHeader, LawArg};
+use super::ball::{BallArgs, LawArg};
 use super::output::{self, csv_row, num, opt_num};
 use crate::analysis::sweep::{lin_space, log_space};
+use crate::api::BallHeader;
 use crate::model::contact::ContactLaw;
 use crate::model::params::{Field, check_positive, validate_lambda_zeta};
 use clap::{Args, Subcommand, ValueEnum};
@@ -189,18 +190,18 @@ struct VelocityDoc<'a, T> {
 fn velocity(a: &VelocityArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     super::ball::check_overrides(&a.ball.set, a.lambda, a.zeta)?;
     let mut b = a.ball.resolve(a.v0)?;
-    super::ball::set_lambda_zeta(&mut b.ball.params, a.lambda, a.zeta)?;
-    let v0 = b.ball.params.v0;
+    super::ball::set_lambda_zeta(&mut b.params, a.lambda, a.zeta)?;
+    let v0 = b.params.v0;
     let from = a.from.unwrap_or(0.1 * v0);
     let to = a.to.unwrap_or(3.0 * v0);
     check_positive(Field::From, from)?;
     check_positive(Field::To, to)?;
-    check_points(a.points, 1, b.ball.law)?;
-    let (params, law) = (&b.ball.params, b.ball.law);
+    check_points(a.points, 1, b.law)?;
+    let (params, law) = (&b.params, b.law);
     let rows = super::budget::velocity_rows(params, law, &lin_space(from, to, a.points))?;
     match a.format {
         SweepFormat::Json => {
-            let n = b.ball.params.normalized();
+            let n = b.params.normalized();
             output::json(
                 out,
                 &VelocityDoc {

@@ -26,6 +26,16 @@ pub enum Method {
     Numeric,
 }
 
+impl Method {
+    /// `"exact"` or `"numeric"`, as the JSON and CSV write it.
+    pub fn name(self) -> &'static str {
+        match self {
+            Method::Exact => "exact",
+            Method::Numeric => "numeric",
+        }
+    }
+}
+
 /// How to solve.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SolveOptions {
