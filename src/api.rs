@@ -23,6 +23,7 @@
 
 use crate::analysis::fit::{Fit, fit_k_r};
 use crate::analysis::sweep::{VelocityPoint, ZetaPoint, cor_vs_velocity, cor_vs_zeta};
+use crate::analysis::work;
 use crate::catalog::{Catalog, Entry};
 use crate::drop::{DropBall, DropRun, DropSetup};
 use crate::model::contact::ContactLaw;
@@ -252,7 +253,8 @@ impl Ball {
     }
 
     /// COR, peak force, contact time and permanent indentation at each speed (m/s), as
-    /// `bouncelab sweep velocity` (Fig. 4). The speeds run in parallel.
+    /// `bouncelab sweep velocity` (Fig. 4). The speeds run in parallel, within the command
+    /// line's work limit ([`work::check`]: 10⁶ linear-law impacts, 25 000 on the other laws).
     ///
     /// ```
     /// let ball = bouncelab::Ball::from_preset("superball")?;
@@ -262,6 +264,8 @@ impl Ball {
     /// # Ok::<(), bouncelab::BallError>(())
     /// ```
     pub fn sweep_velocity(&self, speeds: &[f64]) -> Result<Vec<VelocityPoint>, BallError> {
+        let n = speeds.len();
+        work::check(n, self.law, &format!("{n} speeds"))?;
         Ok(cor_vs_velocity(&self.params, self.law, speeds)?)
     }
 
@@ -344,7 +348,8 @@ pub fn set_lambda_zeta(
 
 /// COR, F̄_m and τ_f against ζ for each λ, on the normalized ball without flattening (the
 /// paper's Figs. 2–3), as `bouncelab sweep zeta`: rows grouped by λ in the order given, the
-/// points run in parallel. Each λ is checked first, as on the command line.
+/// points run in parallel. Each λ is checked first, and the work limit ([`work::check`]),
+/// as on the command line.
 ///
 /// ```
 /// use bouncelab::{ContactLaw, analysis::sweep::log_space};
@@ -367,6 +372,9 @@ pub fn sweep_zeta(
     for &l in lambdas {
         validate_lambda_zeta(l, 0.0)?;
     }
+    let (nl, nz) = (lambdas.len(), zetas.len());
+    let what = format!("{nl} λ values × {nz} points");
+    work::check(nl.saturating_mul(nz), law, &what)?;
     Ok(cor_vs_zeta(lambdas, zetas, law)?)
 }
 

@@ -2,6 +2,7 @@
 
 use super::MAX_SAMPLES;
 use crate::analysis::fit::FitError;
+use crate::analysis::work::TooMuchWork;
 use crate::catalog::CatalogError;
 use crate::drop::DropError;
 use crate::model::params::{Field, ParamError};
@@ -51,6 +52,8 @@ pub enum BallError {
     Fit(FitError),
     /// The drop test has no answer (see [`DropError`]).
     Drop(DropError),
+    /// A sweep asks for more work than the limit ([`crate::analysis::work::LIMIT`]).
+    Work(TooMuchWork),
 }
 
 impl fmt::Display for BallError {
@@ -83,6 +86,7 @@ impl fmt::Display for BallError {
             BallError::Solve(e) => write!(f, "{e}"),
             BallError::Fit(e) => write!(f, "{e}"),
             BallError::Drop(e) => write!(f, "{e}"),
+            BallError::Work(e) => write!(f, "{e}"),
         }
     }
 }
@@ -123,6 +127,12 @@ impl From<SolveError> for BallError {
 impl From<FitError> for BallError {
     fn from(e: FitError) -> Self {
         BallError::Fit(e)
+    }
+}
+
+impl From<TooMuchWork> for BallError {
+    fn from(e: TooMuchWork) -> Self {
+        BallError::Work(e)
     }
 }
 

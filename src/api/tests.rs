@@ -119,3 +119,27 @@ fn reports_carry_the_balls_values() {
         (fit.k_r, 70800.0, 0.75)
     );
 }
+
+#[test]
+fn sweeps_keep_the_command_lines_work_limit() {
+    let zetas = vec![1.0; 500_001];
+    let e = sweep_zeta(&[0.5, 1.0], &zetas, ContactLaw::Linear).unwrap_err();
+    assert_eq!(
+        e.to_string(),
+        "too much work: 2 λ values × 500001 points is 1000002 linear-law impacts, worth 1000002 \
+         against the work limit of 1000000 (an impact counts 1 with the linear law, 40 with the \
+         others); ask for fewer points or values"
+    );
+    let ball = Ball::from_preset("golf")
+        .unwrap()
+        .with_law(ContactLaw::Hertz);
+    let e = ball.sweep_velocity(&vec![3.0; 25_001]).unwrap_err();
+    assert!(
+        matches!(e, BallError::Work(ref w) if w.impacts == 25_001),
+        "{e}"
+    );
+    assert!(
+        e.to_string()
+            .starts_with("too much work: 25001 speeds is 25001 hertz-law")
+    );
+}

@@ -1,13 +1,6 @@
-//! One work limit for every command, checked before any work; long work shows progress and
-//! stops on Ctrl-C.
-//!
-//! The work of a command is the number of impacts it solves, each weighted by the cost of its
-//! law: the linear law runs the exact solver (about 7 µs an impact, optimized build), the
-//! elastic–plastic and Hertz laws the adaptive one, some 40 times slower on the normalized
-//! ball of the ζ sweeps (`--law hertz --points 20000` took 17.5 s for 60 000 impacts). A
-//! command is refused, exit 2, before it starts, when its work exceeds [`LIMIT`] (about 7 s on
-//! one core): `figure cor-zeta --points 20000 --lambda <500 values>` had run 67 s and written
-//! 628 MB. (tests/cli_guarantees.rs, `work_beyond_the_limit_is_refused_before_it_starts`.)
+//! The one work limit of every command ([`crate::analysis::work`], the library's, so that the
+//! library's sweeps and the Python package apply the same), checked before any work; long
+//! work shows progress and stops on Ctrl-C.
 //!
 //! The sweeps run in chunks through [`zeta_rows`] and [`velocity_rows`]: between chunks a
 //! progress bar on stderr moves (only when stderr is a terminal, and only for work worth
@@ -22,30 +15,12 @@ use std::io::IsTerminal;
 use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, Ordering};
 
-/// The most work a command may ask for, in linear-law impacts.
-pub const LIMIT: u64 = 1_000_000;
+pub use crate::analysis::work::{LIMIT, cost};
 
-/// What one impact costs under `law`, in linear-law impacts.
-pub fn cost(law: ContactLaw) -> u64 {
-    match law {
-        ContactLaw::Linear => 1,
-        _ => 40,
-    }
-}
-
-/// Refuse `impacts` impacts under `law` beyond the limit; `what` says how they were asked
-/// for ("500 λ values × 20000 points").
+/// Refuse `impacts` impacts under `law` beyond the limit (exit 2); `what` says how they were
+/// asked for ("500 λ values × 20000 points").
 pub fn check(impacts: usize, law: ContactLaw, what: &str) -> anyhow::Result<()> {
-    let work = (impacts as u64).saturating_mul(cost(law));
-    if work > LIMIT {
-        anyhow::bail!(
-            "too much work: {what} is {impacts} {law}-law impacts, worth {work} against the \
-             work limit of {LIMIT} (an impact counts 1 with the linear law, {} with the \
-             others); ask for fewer points or values",
-            cost(ContactLaw::Hertz)
-        );
-    }
-    Ok(())
+    Ok(crate::analysis::work::check(impacts, law, what)?)
 }
 
 /// The command was stopped by SIGINT or SIGTERM: exit 130, nothing written.

@@ -1,0 +1,95 @@
+//! One work limit, checked before any work, for the command line and the library's sweeps
+//! alike ([`crate::sweep_zeta`], [`crate::Ball::sweep_velocity`], and through them the Python
+//! package).
+//!
+//! The work of a request is the number of impacts it solves, each weighted by the cost of its
+//! law: the linear law runs the exact solver (about 7 µs an impact, optimized build), the
+//! elastic–plastic and Hertz laws the adaptive one, some 40 times slower on the normalized
+//! ball of the ζ sweeps (`--law hertz --points 20000` took 17.5 s for 60 000 impacts). A
+//! request whose work exceeds [`LIMIT`] (about 7 s on one core) is refused before it starts:
+//! `figure cor-zeta --points 20000 --lambda <500 values>` had run 67 s and written 628 MB.
+//! (tests/cli_guarantees.rs, `work_beyond_the_limit_is_refused_before_it_starts`.) The lower
+//! layer, [`super::sweep::cor_vs_zeta`] and [`super::sweep::cor_vs_velocity`], applies no
+//! limit: code that means to run more calls it.
+
+use crate::model::contact::ContactLaw;
+use std::fmt;
+
+/// The most work a request may ask for, in linear-law impacts.
+pub const LIMIT: u64 = 1_000_000;
+
+/// What one impact costs under `law`, in linear-law impacts.
+pub fn cost(law: ContactLaw) -> u64 {
+    match law {
+        ContactLaw::Linear => 1,
+        _ => 40,
+    }
+}
+
+/// A request beyond [`LIMIT`]; its message says how much and how to ask for less.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct TooMuchWork {
+    /// How the impacts were asked for ("500 λ values × 20000 points").
+    pub what: String,
+    /// Impacts asked for.
+    pub impacts: usize,
+    /// Their contact law.
+    pub law: ContactLaw,
+    /// Their work, impacts × [`cost`].
+    pub work: u64,
+}
+
+impl fmt::Display for TooMuchWork {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let TooMuchWork {
+            what,
+            impacts,
+            law,
+            work,
+        } = self;
+        write!(
+            f,
+            "too much work: {what} is {impacts} {law}-law impacts, worth {work} against the \
+             work limit of {LIMIT} (an impact counts 1 with the linear law, {} with the \
+             others); ask for fewer points or values",
+            cost(ContactLaw::Hertz)
+        )
+    }
+}
+
+impl std::error::Error for TooMuchWork {}
+
+/// Refuse `impacts` impacts under `law` beyond the limit; `what` says how they were asked
+/// for ("500 λ values × 20000 points").
+pub fn check(impacts: usize, law: ContactLaw, what: &str) -> Result<(), TooMuchWork> {
+    let work = (impacts as u64).saturating_mul(cost(law));
+    if work > LIMIT {
+        return Err(TooMuchWork {
+            what: what.to_string(),
+            impacts,
+            law,
+            work,
+        });
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_limit_is_inclusive_and_weighs_the_law() {
+        assert!(check(1_000_000, ContactLaw::Linear, "x").is_ok());
+        assert!(check(1_000_001, ContactLaw::Linear, "x").is_err());
+        assert!(check(25_000, ContactLaw::Hertz, "x").is_ok());
+        let e = check(25_001, ContactLaw::ElasticPlastic, "25001 points").unwrap_err();
+        assert_eq!(e.work, 1_000_040);
+        assert_eq!(
+            e.to_string(),
+            "too much work: 25001 points is 25001 elastic-plastic-law impacts, worth 1000040 \
+             against the work limit of 1000000 (an impact counts 1 with the linear law, 40 with \
+             the others); ask for fewer points or values"
+        );
+    }
+}
