@@ -62,6 +62,7 @@ pub struct Ball {
 
 mod entry;
 mod error;
+mod fit;
 mod report;
 pub use entry::Overrides;
 pub use error::BallError;

@@ -1,7 +1,7 @@
 //! [`BallError`]: why a ball cannot be built or run, one line each, the command line's words.
 
 use super::MAX_SAMPLES;
-use crate::analysis::fit::FitError;
+use crate::analysis::fit::{FitError, MultiFitError};
 use crate::analysis::work::TooMuchWork;
 use crate::catalog::CatalogError;
 use crate::drop::DropError;
@@ -52,6 +52,18 @@ pub enum BallError {
     Fit(FitError),
     /// The drop test has no answer (see [`DropError`]).
     Drop(DropError),
+    /// A quantity that is none of the model's parameters (a drop height, the air) is out of
+    /// its domain.
+    Invalid {
+        /// Its name (`drop_height`, `rebound_height`, `drag_coefficient`, `air_density`).
+        field: &'static str,
+        /// The value given.
+        value: f64,
+        /// Why it is refused.
+        reason: String,
+    },
+    /// The multi-parameter fit has no answer (see [`MultiFitError`]).
+    MultiFit(MultiFitError),
     /// A sweep asks for more work than the limit ([`crate::analysis::work::LIMIT`]).
     Work(TooMuchWork),
 }
@@ -87,6 +99,12 @@ impl fmt::Display for BallError {
             BallError::Fit(e) => write!(f, "{e}"),
             BallError::Drop(e) => write!(f, "{e}"),
             BallError::Work(e) => write!(f, "{e}"),
+            BallError::Invalid {
+                field,
+                value,
+                reason,
+            } => write!(f, "invalid {field}: {} ({reason})", display_number(*value)),
+            BallError::MultiFit(e) => write!(f, "{e}"),
         }
     }
 }
@@ -95,13 +113,15 @@ impl std::error::Error for BallError {}
 
 impl BallError {
     /// Whether the error is no fault of the input: an impact (of a run, or of a drop's
-    /// bounce) the solver could not bring to an end within its budgets (the command line's
+    /// bounce) the solver could not bring to an end within its budgets, or a fit no start of
+    /// which the solver answered for (the command line's
     /// exit code 1; every other error is bad input, exit 2).
     pub fn is_no_answer(&self) -> bool {
         matches!(
             self,
             BallError::Solve(SolveError::Unresolved { .. })
                 | BallError::Drop(DropError::Solve(SolveError::Unresolved { .. }))
+                | BallError::MultiFit(MultiFitError::NoAnswer)
         )
     }
 }
@@ -127,6 +147,12 @@ impl From<SolveError> for BallError {
 impl From<FitError> for BallError {
     fn from(e: FitError) -> Self {
         BallError::Fit(e)
+    }
+}
+
+impl From<MultiFitError> for BallError {
+    fn from(e: MultiFitError) -> Self {
+        BallError::MultiFit(e)
     }
 }
 

@@ -7,7 +7,7 @@ use super::measured_file as files;
 use super::output;
 use crate::analysis::fit::{FitData, MultiFitError, Param, fit};
 use crate::api::Ball;
-use crate::measured::{Air, CorPoint, Flight, Trace, drop_to_cor};
+use crate::measured::{Air, CorPoint, Trace};
 use crate::model::params::ImpactParams;
 use crate::solver::{SolveOptions, simulate};
 use std::io::Write;
@@ -28,18 +28,6 @@ pub struct Loaded {
     pub end_line: usize,
 }
 
-/// A finite positive number, or an error naming `name` (numbers the model's fields do not
-/// cover: drop heights, drag).
-fn positive(name: &str, v: f64) -> anyhow::Result<()> {
-    if !(v.is_finite() && v > 0.0) {
-        anyhow::bail!(
-            "invalid {name}: {} (must be a positive number)",
-            output::num(v)
-        );
-    }
-    Ok(())
-}
-
 /// Refuse outputs that cannot be written, before any work.
 pub fn check_outputs(a: &FitArgs) -> anyhow::Result<()> {
     if let Some(p) = &a.plot {
@@ -52,31 +40,19 @@ pub fn check_outputs(a: &FitArgs) -> anyhow::Result<()> {
 }
 
 fn load(a: &FitArgs, source: &Source, ball: &Ball) -> anyhow::Result<Loaded> {
-    if let Some(cd) = a.drag_coefficient {
-        positive("drag_coefficient", cd)?;
-        positive("air_density", a.air_density)?;
-    }
-    let radius = ball.measured.as_ref().map_or(f64::NAN, |m| m.radius);
     let air = a.drag_coefficient.map(|cd| Air {
         density: a.air_density,
         drag_coefficient: cd,
     });
-    let flight = Flight::new(ball.params.mass, radius, air);
-    let from_drops = |drops: Vec<(f64, f64, usize)>| -> Vec<CorPoint> {
-        drops
-            .iter()
-            .map(|&(h, r, line)| {
-                let (v0, cor) = drop_to_cor(h, r, &flight);
-                CorPoint {
-                    v0,
-                    cor,
-                    cor_sd: None,
-                    max_force: None,
-                    contact_time: None,
-                    line,
-                }
-            })
-            .collect()
+    // the library checks the air (whatever the data) and the drop heights
+    ball.drops_to_cor(&[], air)?;
+    let from_drops = |drops: &[(f64, f64, usize)]| -> anyhow::Result<Vec<CorPoint>> {
+        let pairs: Vec<(f64, f64)> = drops.iter().map(|d| (d.0, d.1)).collect();
+        let mut points = ball.drops_to_cor(&pairs, air)?;
+        for (p, d) in points.iter_mut().zip(drops) {
+            p.line = d.2;
+        }
+        Ok(points)
     };
     let name = |p: &std::path::Path| Some(p.display().to_string());
     Ok(match source {
@@ -113,27 +89,19 @@ fn load(a: &FitArgs, source: &Source, ball: &Ball) -> anyhow::Result<Loaded> {
                 file: name(p),
                 label: files::label(p),
                 trace: None,
-                points: from_drops(t.drops.clone()),
+                points: from_drops(&t.drops)?,
                 drops,
                 end_line: t.drops.last().map_or(1, |d| d.2 + 1),
             }
         }
         Source::Drops(pairs) => {
-            for &(h, r) in pairs {
-                positive("drop_height", h)?;
-                if !(0.0..=h).contains(&r) {
-                    anyhow::bail!(
-                        "invalid rebound_height: {r} (must lie in [0, the drop height {h}])"
-                    );
-                }
-            }
             let drops: Vec<(f64, f64, usize)> = pairs.iter().map(|&(h, r)| (h, r, 0)).collect();
             Loaded {
                 kind: "drop test",
                 file: None,
                 label: "drop tests".into(),
                 trace: None,
-                points: from_drops(drops),
+                points: from_drops(&drops)?,
                 drops: pairs.clone(),
                 end_line: 0,
             }

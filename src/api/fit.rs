@@ -1,0 +1,100 @@
+//! Fitting several parameters of a ball at once to measurements — a force–time trace, a COR
+//! table, drop tests — as `bouncelab fit --trace/--cor-table/--drops` does (docs/fitting.md),
+//! with the checks of the data that are not the files' (drop heights, the air) made here once.
+
+use super::{Ball, BallError};
+use crate::analysis::fit::{FitData, MultiFit, Param, fit};
+use crate::measured::{Air, CorPoint, Flight, drop_to_cor};
+use crate::text::number;
+
+/// A finite positive number, or an error naming `field` (quantities the model's parameters do
+/// not cover: drop heights, drag).
+fn positive(field: &'static str, value: f64) -> Result<(), BallError> {
+    if value.is_finite() && value > 0.0 {
+        return Ok(());
+    }
+    Err(BallError::Invalid {
+        field,
+        value,
+        reason: "must be a positive number".into(),
+    })
+}
+
+impl Ball {
+    /// The parameters `free` (default: what the data can pin, [`Param::defaults`]) fitted to
+    /// `data` under the ball's law, the others held: values, standard errors, 95 % intervals
+    /// and correlations ([`MultiFit`]), by bounded Levenberg–Marquardt from several starts.
+    ///
+    /// ```
+    /// use bouncelab::{Ball, analysis::fit::FitData, measured::CorPoint};
+    /// let ball = Ball::from_preset("superball")?;
+    /// // the model's own COR at three speeds: the fit returns the preset's K_r and z_p
+    /// let rows = ball.sweep_velocity(&[1.0, 3.0, 6.0])?;
+    /// let points: Vec<CorPoint> = rows.iter().map(|r| CorPoint {
+    ///     v0: r.v0, cor: r.cor, cor_sd: None, max_force: None, contact_time: None, line: 0,
+    /// }).collect();
+    /// let f = ball.fit(FitData::Cor(&points), None)?;
+    /// assert_eq!(f.fitted[0].name, "k_r");
+    /// assert!((f.fitted[0].value / ball.params.k_r - 1.0).abs() < 1e-4);
+    /// # Ok::<(), bouncelab::BallError>(())
+    /// ```
+    pub fn fit(&self, data: FitData<'_>, free: Option<&[Param]>) -> Result<MultiFit, BallError> {
+        let free = match free {
+            Some(f) => f.to_vec(),
+            None => match data {
+                FitData::Trace(_) => Param::defaults(true, 0, self.law),
+                FitData::Cor(points) => Param::defaults(false, points.len(), self.law),
+            },
+        };
+        Ok(fit(&self.params, self.law, data, &free)?)
+    }
+
+    /// Drop tests as a COR table: each (drop height, rebound height) pair (m) checked and
+    /// turned into an impact speed and a COR by this ball's flight ([`drop_to_cor`]), in
+    /// vacuum or through `air` (drag on the preset's measured radius).
+    ///
+    /// ```
+    /// let ball = bouncelab::Ball::from_preset("tennis")?;
+    /// let pts = ball.drops_to_cor(&[(2.54, 1.44)], None)?;
+    /// assert!((pts[0].cor - (1.44_f64 / 2.54).sqrt()).abs() < 1e-12); // e = √(R/H) in vacuum
+    /// let e = ball.drops_to_cor(&[(1.0, 2.0)], None).unwrap_err();
+    /// assert_eq!(e.to_string(), "invalid rebound_height: 2 (must lie in [0, the drop height 1])");
+    /// # Ok::<(), bouncelab::BallError>(())
+    /// ```
+    pub fn drops_to_cor(
+        &self,
+        drops: &[(f64, f64)],
+        air: Option<Air>,
+    ) -> Result<Vec<CorPoint>, BallError> {
+        if let Some(a) = air {
+            positive("drag_coefficient", a.drag_coefficient)?;
+            positive("air_density", a.density)?;
+        }
+        for &(h, r) in drops {
+            positive("drop_height", h)?;
+            if !(0.0..=h).contains(&r) {
+                return Err(BallError::Invalid {
+                    field: "rebound_height",
+                    value: r,
+                    reason: format!("must lie in [0, the drop height {}]", number(h)),
+                });
+            }
+        }
+        let radius = self.measured.as_ref().map_or(f64::NAN, |m| m.radius);
+        let flight = Flight::new(self.params.mass, radius, air);
+        Ok(drops
+            .iter()
+            .map(|&(h, r)| {
+                let (v0, cor) = drop_to_cor(h, r, &flight);
+                CorPoint {
+                    v0,
+                    cor,
+                    cor_sd: None,
+                    max_force: None,
+                    contact_time: None,
+                    line: 0,
+                }
+            })
+            .collect())
+    }
+}
