@@ -132,6 +132,84 @@ def fit(
 ) -> dict:
     """K_r and λ that give a measured COR (keys of ``bouncelab fit --format json``)."""
 
+FreeParam = Literal["k_p", "c", "k_r", "z_p", "k_h"]
+
+class Estimate(TypedDict):
+    value: float
+    std_error: float
+    ci95: tuple[float, float]
+
+class MultiFit(TypedDict, total=False):
+    """A multi-parameter fit: the keys of ``bouncelab fit --format json`` (SI), and
+    ``model``, the model at each data point (N for a trace, COR for a table). The keys
+    ``lambda`` (λ of the fitted ball) cannot be spelled here: a Python keyword."""
+    preset: Optional[str]
+    origin: str
+    parameters: str
+    law: str
+    data: str
+    free: list[str]
+    k_p: float
+    c: float
+    k_r: float
+    z_p: float
+    k_h: float
+    zeta: float
+    rms_residual: float
+    condition_number: float
+    points: int
+    converged: bool
+    iterations: int
+    fitted: dict[str, Estimate]
+    correlation: dict[str, dict[str, float]]
+    time_offset: float
+    nuisance: dict[str, Estimate]
+    warnings: list[str]
+    model: Array
+    drops: dict[str, Array]
+
+def fit_trace(
+    time: Floats,
+    force: Floats,
+    *,
+    preset: str = "superball",
+    free: Optional[Sequence[FreeParam]] = None,
+    v0: Optional[float] = None,
+    law: Optional[Law] = None,
+    params: Optional[ParamSet] = None,
+) -> MultiFit:
+    """k_p, c, k_r (default; k_h for k_p on the Hertz law) fitted to a force–time trace (s, N),
+    with the contact start and the baseline, as ``bouncelab fit --force-time FILE``."""
+
+def fit_cor_table(
+    v0: Floats,
+    cor: Floats,
+    *,
+    cor_sd: Optional[Floats] = None,
+    max_force: Optional[Floats] = None,
+    contact_time: Optional[Floats] = None,
+    preset: str = "superball",
+    free: Optional[Sequence[FreeParam]] = None,
+    law: Optional[Law] = None,
+    params: Optional[ParamSet] = None,
+) -> MultiFit:
+    """k_r, z_p (default, k_r alone below three points) fitted to COR against speed (NaN in
+    the optional columns: not measured), as ``bouncelab fit --cor-table FILE``."""
+
+def fit_drops(
+    drop_heights: Floats,
+    rebound_heights: Floats,
+    *,
+    preset: str = "superball",
+    free: Optional[Sequence[FreeParam]] = None,
+    drag_coefficient: Optional[float] = None,
+    air_density: float = 1.204,
+    law: Optional[Law] = None,
+    params: Optional[ParamSet] = None,
+) -> MultiFit:
+    """k_r, z_p fitted to drop tests (m), in vacuum or with quadratic drag, as ``bouncelab fit
+    --drop-height H --rebound-height R …``; ``drops`` adds each drop's v0 and COR."""
+
 class Drop(TypedDict):
     height: float
     drag: bool

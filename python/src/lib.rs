@@ -6,16 +6,19 @@
 //! solver could not bring to an end: the command line's exit code 1).
 
 use bouncelab::analysis::fit::Fit;
+use bouncelab::api::{FitReport, ImpactReport};
 use bouncelab::catalog::{self, Catalog, Entry, Origin};
 use bouncelab::model::params::ImpactParams;
 use bouncelab::preset::ParamSource;
-use bouncelab::solver::{ImpactResponse, Method, SolveError};
+use bouncelab::solver::ImpactResponse;
 use bouncelab::{Ball, BallError, ContactLaw};
 use numpy::{PyArray1, PyReadonlyArray1};
 use pyo3::create_exception;
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
+
+mod fits;
 
 create_exception!(
     bouncelab,
@@ -27,11 +30,10 @@ create_exception!(
 
 /// A library error as a Python exception with the command line's message.
 fn error(e: BallError) -> PyErr {
-    match e {
-        BallError::Solve(e @ SolveError::Unresolved { .. }) => {
-            NoAnswerError::new_err(e.to_string())
-        }
-        e => PyValueError::new_err(e.to_string()),
+    if e.is_no_answer() {
+        NoAnswerError::new_err(e.to_string())
+    } else {
+        PyValueError::new_err(e.to_string())
     }
 }
 
@@ -167,59 +169,53 @@ const ENERGY_KEYS: [&str; 6] = [
 const HISTORY_KEYS: [&str; 4] = ["t", "force", "indentation", "displacement"];
 
 impl Impact {
-    fn new(py: Python<'_>, b: &Ball, r: ImpactResponse, history: bool) -> Impact {
-        let p = &b.params;
-        let n = &r.normalized;
-        let h = r.history;
+    /// The library's report of the run (`bouncelab run --format json`), as Python values.
+    fn new(py: Python<'_>, b: &Ball, r: &ImpactResponse, history: bool) -> Impact {
+        let rep = ImpactReport::new(b, r, history);
+        let series = |s: Option<&[f64]>| s.map(|v| array(py, v.to_vec()));
+        let h = [rep.t, rep.force, rep.indentation, rep.displacement].map(series);
         Impact {
-            preset: b.name.clone(),
-            origin: b.origin.clone(),
+            preset: rep.ball.preset.map(String::from),
+            origin: rep.ball.origin.to_string(),
             parameters: b.source,
-            law: r.law.name(),
-            method: match r.method {
-                Method::Exact => "exact",
-                Method::Numeric => "numeric",
-            },
-            mass: p.mass,
-            k_p: p.k_p,
-            k_r: p.k_r,
-            c: p.damping,
-            z_p: p.z_p,
-            k_h: p.k_h,
-            v0: p.v0,
-            lambda_: n.lambda,
-            zeta: n.zeta,
-            zp_bar: n.zp_bar,
-            cor: r.cor,
-            rebound: r.rebound,
-            max_force: r.max_force,
-            contact_time: r.contact_time,
-            max_indentation: r.max_indentation,
-            permanent_indentation: r.permanent_indentation,
-            max_force_normalized: r.max_force_normalized,
-            contact_time_normalized: r.contact_time_normalized,
-            measured: b
+            law: rep.ball.law,
+            method: rep.method.name(),
+            mass: rep.mass,
+            k_p: rep.k_p,
+            k_r: rep.k_r,
+            c: rep.c,
+            z_p: rep.z_p,
+            k_h: rep.k_h,
+            v0: rep.v0,
+            lambda_: rep.lambda,
+            zeta: rep.zeta,
+            zp_bar: rep.zp_bar,
+            cor: rep.cor,
+            rebound: rep.rebound,
+            max_force: rep.max_force,
+            contact_time: rep.contact_time,
+            max_indentation: rep.max_indentation,
+            permanent_indentation: rep.permanent_indentation,
+            max_force_normalized: rep.max_force_normalized,
+            contact_time_normalized: rep.contact_time_normalized,
+            measured: rep
                 .measured
-                .as_ref()
                 .map(|m| [Some(m.v0), m.cor, m.max_force, m.contact_time]),
-            energy: r.energy.map(|e| {
+            energy: rep.energy.map(|e| {
+                let b = e.budget;
                 [
-                    e.initial_kinetic,
-                    e.final_kinetic,
-                    e.dashpot,
-                    e.contact,
-                    e.spring,
-                    e.relative_residual(),
+                    b.initial_kinetic,
+                    b.final_kinetic,
+                    b.dashpot,
+                    b.contact,
+                    b.spring,
+                    e.relative_residual,
                 ]
             }),
-            history: history.then(|| {
-                [
-                    array(py, h.t),
-                    array(py, h.force),
-                    array(py, h.indentation),
-                    array(py, h.displacement),
-                ]
-            }),
+            history: match h {
+                [Some(t), Some(f), Some(z), Some(a)] => Some([t, f, z, a]),
+                _ => None,
+            },
         }
     }
 
@@ -354,7 +350,7 @@ fn impact(py: Python<'_>, ball: Ball, history: bool, samples: usize) -> PyResult
             }
         })
         .map_err(error)?;
-    Ok(Impact::new(py, &ball, r, history))
+    Ok(Impact::new(py, &ball, &r, history))
 }
 
 /// One impact of a preset, as `bouncelab run --preset NAME [--law L] [--v0 V] [--lambda L]
@@ -543,21 +539,21 @@ fn fit<'py>(
 ) -> PyResult<Bound<'py, PyDict>> {
     let ball = preset_ball(preset, params, law, v0)?;
     let f: Fit = py.detach(|| ball.fit_cor(cor)).map_err(error)?;
-    let p = &ball.params;
+    let r = FitReport::new(&ball, cor, &f);
     let d = PyDict::new(py);
-    d.set_item("preset", &ball.name)?;
-    d.set_item("origin", &ball.origin)?;
-    d.set_item("parameters", ball.source)?;
-    d.set_item("law", ball.law.name())?;
-    d.set_item("v0", p.v0)?;
-    d.set_item("target_cor", cor)?;
-    d.set_item("k_r", f.k_r)?;
-    d.set_item("lambda", f.lambda)?;
-    d.set_item("zeta", f.zeta)?;
-    d.set_item("cor", f.cor)?;
-    d.set_item("k_p", p.k_p)?;
-    d.set_item("preset_k_r", p.k_r)?;
-    d.set_item("preset_lambda", p.k_r / p.k_p)?;
+    d.set_item("preset", r.ball.preset)?;
+    d.set_item("origin", r.ball.origin)?;
+    d.set_item("parameters", r.ball.parameters)?;
+    d.set_item("law", r.ball.law)?;
+    d.set_item("v0", r.v0)?;
+    d.set_item("target_cor", r.target_cor)?;
+    d.set_item("k_r", r.k_r)?;
+    d.set_item("lambda", r.lambda)?;
+    d.set_item("zeta", r.zeta)?;
+    d.set_item("cor", r.cor)?;
+    d.set_item("k_p", r.k_p)?;
+    d.set_item("preset_k_r", r.preset_k_r)?;
+    d.set_item("preset_lambda", r.preset_lambda)?;
     Ok(d)
 }
 
@@ -621,5 +617,8 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(sweep_velocity, m)?)?;
     m.add_function(wrap_pyfunction!(fit, m)?)?;
     m.add_function(wrap_pyfunction!(drop_test, m)?)?;
+    m.add_function(wrap_pyfunction!(fits::fit_trace, m)?)?;
+    m.add_function(wrap_pyfunction!(fits::fit_cor_table, m)?)?;
+    m.add_function(wrap_pyfunction!(fits::fit_drops, m)?)?;
     Ok(())
 }

@@ -138,17 +138,7 @@ impl FitArgs {
         let Some(list) = &self.free else {
             return Ok(None);
         };
-        let mut out = Vec::new();
-        for name in list {
-            let p = Param::parse(name).ok_or_else(|| {
-                anyhow::anyhow!(
-                    "invalid free parameter '{}' (choose from k_p, c, k_r, z_p, k_h)",
-                    name.trim()
-                )
-            })?;
-            out.push(p);
-        }
-        Ok(Some(out))
+        Ok(Some(crate::analysis::fit::parse_free(list)?))
     }
 }
 

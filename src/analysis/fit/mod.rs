@@ -91,6 +91,20 @@ impl Param {
     }
 }
 
+/// A name that is no fittable parameter (a `--free` entry, a `free=` item).
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[error("invalid free parameter '{0}' (choose from k_p, c, k_r, z_p, k_h)")]
+pub struct UnknownParam(pub String);
+
+/// The parameters named (`k_p`, `c`, `k_r`, `z_p`, `k_h`; blanks around a name ignored), in
+/// the order given; an error naming the first unknown one.
+pub fn parse_free<S: AsRef<str>>(names: &[S]) -> Result<Vec<Param>, UnknownParam> {
+    names
+        .iter()
+        .map(|n| Param::parse(n.as_ref()).ok_or_else(|| UnknownParam(n.as_ref().trim().into())))
+        .collect()
+}
+
 /// `base` with the free parameters set to `values` (z_p before K_h, which reads it).
 pub fn apply(base: &ImpactParams, free: &[Param], values: &[f64]) -> ImpactParams {
     let mut b = *base;

@@ -1,0 +1,258 @@
+//! The multi-parameter fits of `bouncelab fit` from Python: a force–time trace
+//! (`--force-time`), a COR table (`--cor-table`) and drop tests (`--drop-height`/
+//! `--rebound-height`). The arrays given are checked by the library's own readers (the ones
+//! that read the command line's files), the fit is the library's [`Ball::fit`]; each function
+//! returns a dict with the keys of `bouncelab fit --format json`.
+
+use crate::{array, error, floats, preset_ball, value_error};
+use bouncelab::Ball;
+use bouncelab::analysis::fit::{Estimate, FitData, MultiFit, parse_free};
+use bouncelab::measured::{Air, CorPoint, CorTable, MeasuredError, Trace};
+use pyo3::prelude::*;
+use pyo3::types::PyDict;
+use std::fmt::Write;
+
+/// A number as the readers take it: shortest round trip (`NaN`, `inf` refused by them).
+fn cell(out: &mut String, x: Option<f64>) {
+    if let Some(x) = x {
+        let _ = write!(out, "{x:?}");
+    }
+}
+
+/// The table `columns` (header, values; `None` an empty cell) as CSV text for the readers.
+fn csv(header: &[&str], rows: usize, columns: &[&dyn Fn(usize) -> Option<f64>]) -> String {
+    let mut text = header.join(",");
+    text.push('\n');
+    for i in 0..rows {
+        for (k, col) in columns.iter().enumerate() {
+            if k > 0 {
+                text.push(',');
+            }
+            cell(&mut text, col(i));
+        }
+        text.push('\n');
+    }
+    text
+}
+
+/// A reader's error about row `line − 1` of the arrays: "`what` row N: message".
+fn data_error(what: &str, e: MeasuredError) -> PyErr {
+    value_error(format!(
+        "{what} row {}: {}",
+        e.line.saturating_sub(1),
+        e.message
+    ))
+}
+
+fn same_length(names: [&str; 2], a: usize, b: usize) -> PyResult<()> {
+    if a != b {
+        return Err(value_error(format!(
+            "{} and {} differ in length ({a} and {b})",
+            names[0], names[1]
+        )));
+    }
+    Ok(())
+}
+
+fn estimate<'py>(py: Python<'py>, e: &Estimate) -> PyResult<Bound<'py, PyDict>> {
+    let d = PyDict::new(py);
+    d.set_item("value", e.value)?;
+    d.set_item("std_error", e.std_error)?;
+    d.set_item("ci95", (e.ci95[0], e.ci95[1]))?;
+    Ok(d)
+}
+
+/// The fit as the command line's JSON has it (docs/fitting.md), with `model`: the model at
+/// each data point (force, N, of a trace; COR of a table).
+fn report<'py>(
+    py: Python<'py>,
+    ball: &Ball,
+    kind: &str,
+    f: &MultiFit,
+) -> PyResult<Bound<'py, PyDict>> {
+    let h = ball.header();
+    let d = PyDict::new(py);
+    d.set_item("preset", h.preset)?;
+    d.set_item("origin", h.origin)?;
+    d.set_item("parameters", h.parameters)?;
+    d.set_item("law", h.law)?;
+    d.set_item("data", kind)?;
+    d.set_item("free", f.fitted.iter().map(|e| e.name).collect::<Vec<_>>())?;
+    let p = &f.params;
+    let n = p.normalized();
+    for (k, v) in [
+        ("k_p", p.k_p),
+        ("c", p.damping),
+        ("k_r", p.k_r),
+        ("z_p", p.z_p),
+        ("k_h", p.k_h),
+        ("lambda", n.lambda),
+        ("zeta", n.zeta),
+        ("rms_residual", f.rms_residual),
+        ("condition_number", f.condition),
+    ] {
+        d.set_item(k, v)?;
+    }
+    d.set_item("points", f.points)?;
+    d.set_item("converged", f.converged)?;
+    d.set_item("iterations", f.iterations)?;
+    let fitted = PyDict::new(py);
+    for e in &f.fitted {
+        fitted.set_item(e.name, estimate(py, e)?)?;
+    }
+    d.set_item("fitted", fitted)?;
+    let correlation = PyDict::new(py);
+    for (i, a) in f.names.iter().enumerate() {
+        let row = PyDict::new(py);
+        for (j, b) in f.names.iter().enumerate() {
+            row.set_item(b, f.correlation[i][j])?;
+        }
+        correlation.set_item(a, row)?;
+    }
+    d.set_item("correlation", correlation)?;
+    if let Some(t) = &f.time_offset {
+        d.set_item("time_offset", t.value)?;
+        let nuisance = PyDict::new(py);
+        for e in f.time_offset.iter().chain(&f.baseline) {
+            nuisance.set_item(e.name, estimate(py, e)?)?;
+        }
+        d.set_item("nuisance", nuisance)?;
+    }
+    d.set_item("warnings", f.warnings.clone())?;
+    d.set_item("model", array(py, f.model.clone()))?;
+    Ok(d)
+}
+
+/// The `free` names, or the library's default for the data.
+fn free_list(free: Option<Vec<String>>) -> PyResult<Option<Vec<bouncelab::analysis::fit::Param>>> {
+    free.map(|names| parse_free(&names).map_err(|e| value_error(e.to_string())))
+        .transpose()
+}
+
+/// Several parameters fitted to a force–time trace, as `bouncelab fit --force-time FILE`:
+/// `time` (s, increasing) and `force` (N) arrays; the contact start in the data's clock and
+/// the force baseline are fitted too.
+#[pyfunction]
+#[pyo3(signature = (time, force, *, preset="superball", free=None, v0=None, law=None, params=None))]
+#[allow(clippy::too_many_arguments)]
+pub fn fit_trace<'py>(
+    py: Python<'py>,
+    time: &Bound<'py, PyAny>,
+    force: &Bound<'py, PyAny>,
+    preset: &str,
+    free: Option<Vec<String>>,
+    v0: Option<f64>,
+    law: Option<&str>,
+    params: Option<&str>,
+) -> PyResult<Bound<'py, PyDict>> {
+    let (t, f) = (floats(time)?, floats(force)?);
+    same_length(["time", "force"], t.len(), f.len())?;
+    let text = csv(
+        &["time_s", "force_N"],
+        t.len(),
+        &[&|i| Some(t[i]), &|i| Some(f[i])],
+    );
+    let trace = Trace::parse(&text).map_err(|e| data_error("trace", e))?;
+    let free = free_list(free)?;
+    let ball = preset_ball(preset, params, law, v0)?;
+    let fit = py
+        .detach(|| ball.fit(FitData::Trace(&trace), free.as_deref()))
+        .map_err(error)?;
+    report(py, &ball, "force-time trace", &fit)
+}
+
+/// Several parameters fitted to COR against impact speed, as `bouncelab fit --cor-table FILE`:
+/// `v0` (m/s) and `cor` arrays, and optionally the COR's standard deviations (weights) and the
+/// peak forces (N) and contact times (s) measured at each speed (NaN: not measured).
+#[pyfunction]
+#[pyo3(signature = (v0, cor, *, cor_sd=None, max_force=None, contact_time=None, preset="superball", free=None, law=None, params=None))]
+#[allow(clippy::too_many_arguments)]
+pub fn fit_cor_table<'py>(
+    py: Python<'py>,
+    v0: &Bound<'py, PyAny>,
+    cor: &Bound<'py, PyAny>,
+    cor_sd: Option<&Bound<'py, PyAny>>,
+    max_force: Option<&Bound<'py, PyAny>>,
+    contact_time: Option<&Bound<'py, PyAny>>,
+    preset: &str,
+    free: Option<Vec<String>>,
+    law: Option<&str>,
+    params: Option<&str>,
+) -> PyResult<Bound<'py, PyDict>> {
+    let (v, e) = (floats(v0)?, floats(cor)?);
+    same_length(["v0", "cor"], v.len(), e.len())?;
+    let optional = |name: &str, a: Option<&Bound<'py, PyAny>>| -> PyResult<Vec<f64>> {
+        match a {
+            Some(a) => {
+                let x = floats(a)?;
+                same_length(["v0", name], v.len(), x.len())?;
+                Ok(x)
+            }
+            None => Ok(vec![f64::NAN; v.len()]),
+        }
+    };
+    let sd = optional("cor_sd", cor_sd)?;
+    let fm = optional("max_force", max_force)?;
+    let tf = optional("contact_time", contact_time)?;
+    // NaN is "not measured": an empty cell
+    let given = |x: f64| (!x.is_nan()).then_some(x);
+    let text = csv(
+        &["v0", "cor", "cor_sd", "max_force_N", "contact_time_s"],
+        v.len(),
+        &[
+            &|i| Some(v[i]),
+            &|i| Some(e[i]),
+            &|i| given(sd[i]),
+            &|i| given(fm[i]),
+            &|i| given(tf[i]),
+        ],
+    );
+    let table = CorTable::parse(&text).map_err(|e| data_error("COR table", e))?;
+    let free = free_list(free)?;
+    let ball = preset_ball(preset, params, law, None)?;
+    let fit = py
+        .detach(|| ball.fit(FitData::Cor(&table.points), free.as_deref()))
+        .map_err(error)?;
+    report(py, &ball, "COR table", &fit)
+}
+
+/// Several parameters fitted to drop tests, as `bouncelab fit --drop-height H --rebound-height
+/// R …`: drop and rebound heights (m) of the bottom of the ball, turned into impact speeds and
+/// CORs in vacuum, or with quadratic drag when `drag_coefficient` is given (air density
+/// `air_density`, kg/m³). The dict adds `drops`: the heights with the speed and COR of each.
+#[pyfunction]
+#[pyo3(signature = (drop_heights, rebound_heights, *, preset="superball", free=None, drag_coefficient=None, air_density=1.204, law=None, params=None))]
+#[allow(clippy::too_many_arguments)]
+pub fn fit_drops<'py>(
+    py: Python<'py>,
+    drop_heights: &Bound<'py, PyAny>,
+    rebound_heights: &Bound<'py, PyAny>,
+    preset: &str,
+    free: Option<Vec<String>>,
+    drag_coefficient: Option<f64>,
+    air_density: f64,
+    law: Option<&str>,
+    params: Option<&str>,
+) -> PyResult<Bound<'py, PyDict>> {
+    let (h, r) = (floats(drop_heights)?, floats(rebound_heights)?);
+    same_length(["drop_heights", "rebound_heights"], h.len(), r.len())?;
+    let free = free_list(free)?;
+    let ball = preset_ball(preset, params, law, None)?;
+    let air = drag_coefficient.map(|cd| Air {
+        density: air_density,
+        drag_coefficient: cd,
+    });
+    let pairs: Vec<(f64, f64)> = h.iter().copied().zip(r.iter().copied()).collect();
+    let points: Vec<CorPoint> = ball.drops_to_cor(&pairs, air).map_err(error)?;
+    let fit = py
+        .detach(|| ball.fit(FitData::Cor(&points), free.as_deref()))
+        .map_err(error)?;
+    let d = report(py, &ball, "drop test", &fit)?;
+    let drops = PyDict::new(py);
+    drops.set_item("drop_height", array(py, h))?;
+    drops.set_item("rebound_height", array(py, r))?;
+    drops.set_item("v0", array(py, points.iter().map(|p| p.v0).collect()))?;
+    drops.set_item("cor", array(py, points.iter().map(|p| p.cor).collect()))?;
+    d.set_item("drops", drops)?;
+    Ok(d)
+}

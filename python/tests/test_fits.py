@@ -1,0 +1,168 @@
+"""The multi-parameter fits from Python (fit_trace, fit_cor_table, fit_drops): known parameters
+recovered from noisy synthetic data (the truth inside the 95 % intervals, the intervals
+honest about the noise), values equal to the command line's JSON on the same data, and the
+command line's error messages."""
+
+import numpy as np
+import pytest
+
+import bouncelab
+from test_bouncelab import cli_error, cli_json, no_user_presets, same  # noqa: F401
+
+G = 9.80665  # m/s², the library's g
+
+
+def superball(**moved):
+    """The superball's parameters, some moved by the factors given: what a fit must find."""
+    p = bouncelab.run(preset="superball").to_dict()
+    ball = dict(m=p["mass"], k_p=p["k_p"], c=p["c"], k_r=p["k_r"], z_p=p["z_p"])
+    return {k: v * moved.get(k, 1.0) for k, v in ball.items()}
+
+
+def truth():
+    """The superball with four of its parameters moved."""
+    return superball(k_p=0.9, c=1.3, k_r=1.15, z_p=0.8)
+
+
+def cor_at(speeds, ball):
+    return np.array([bouncelab.run_params(v0=float(v), **ball).cor for v in speeds])
+
+
+def covers(f, name, value):
+    lo, hi = f["fitted"][name]["ci95"]
+    assert lo < value < hi, (name, value, f["fitted"][name])
+
+
+def write_csv(path, header, columns):
+    rows = [",".join(repr(float(x)) for x in row) for row in zip(*columns)]
+    path.write_text(",".join(header) + "\n" + "\n".join(rows) + "\n")
+
+
+def same_as_cli(f, expected):
+    """Every key the command line writes that the bindings have too, to 1e-12."""
+    shared = {k: v for k, v in expected.items() if k in f and k != "drops"}
+    same({k: f[k] for k in shared}, shared)
+    assert len(shared) >= 20, sorted(shared)
+
+
+def trace_data(true, rng, noise=0.01, offset=0.01, baseline=2.0):
+    """F(t) of the true ball at 3.12 m/s, 200 samples over the contact and 40 of baseline on
+    either side, starting at `offset` s on the data's clock, with Gaussian noise."""
+    r = bouncelab.run_params(v0=3.12, history=True, samples=200, **true)
+    dt = r.t[1] - r.t[0]
+    t = np.concatenate([np.arange(-40, 0) * dt, r.t, r.t[-1] + np.arange(1, 41) * dt]) + offset
+    f = np.concatenate([np.zeros(40), r.force, np.zeros(40)]) + baseline
+    return t, f + rng.normal(0.0, noise * r.max_force, t.size)
+
+
+def test_fit_trace_recovers_k_p_c_k_r_the_start_and_the_baseline(tmp_path):
+    true = truth()
+    t, f = trace_data(true, np.random.default_rng(2))
+    fit = bouncelab.fit_trace(t, f, preset="superball")
+    assert fit["data"] == "force-time trace" and fit["free"] == ["k_p", "c", "k_r"]
+    for name in ("k_p", "c", "k_r"):
+        covers(fit, name, true[name])
+        assert fit["fitted"][name]["std_error"] > 0
+    lo, hi = fit["nuisance"]["time_offset"]["ci95"]
+    assert lo < 0.01 < hi
+    lo, hi = fit["nuisance"]["baseline"]["ci95"]
+    assert lo < 2.0 < hi
+    assert fit["model"].shape == t.shape and fit["warnings"] == []
+    # the command line, on the same numbers in a file, says the same
+    path = tmp_path / "trace.csv"
+    write_csv(path, ["time_s", "force_N"], [t, f])
+    same_as_cli(fit, cli_json("fit", "--force-time", str(path), "--format", "json"))
+
+
+def test_fit_cor_table_recovers_k_r_and_z_p(tmp_path):
+    base = superball(k_r=1.15, z_p=0.8)  # the fit holds the preset's k_p and c
+    speeds = np.linspace(0.5, 8.0, 12)
+    rng = np.random.default_rng(1)
+    cor = cor_at(speeds, base) + rng.normal(0.0, 0.002, speeds.size)
+    fit = bouncelab.fit_cor_table(speeds, cor, preset="superball")
+    assert fit["data"] == "COR table" and fit["free"] == ["k_r", "z_p"]
+    covers(fit, "k_r", base["k_r"])
+    covers(fit, "z_p", base["z_p"])
+    assert abs(fit["fitted"]["k_r"]["value"] / base["k_r"] - 1) < 0.02
+    assert fit["points"] == 12 and fit["model"].shape == (12,)
+    # the scatter the fit sees is the noise put in
+    assert 0.001 < fit["rms_residual"] < 0.003
+    path = tmp_path / "cor.csv"
+    write_csv(path, ["v0", "cor"], [speeds, cor])
+    same_as_cli(fit, cli_json("fit", "--cor-table", str(path), "--format", "json"))
+
+
+def test_fit_cor_table_weights_and_extra_columns():
+    true = superball(k_p=0.9, k_r=1.15)
+    speeds = np.array([1.0, 2.0, 4.0, 6.0])
+    cor = cor_at(speeds, true)
+    forces = np.array([bouncelab.run_params(v0=float(v), **true).max_force for v in speeds])
+    fit = bouncelab.fit_cor_table(speeds, cor, cor_sd=np.full(4, 0.01),
+                                  max_force=forces, contact_time=[np.nan] * 4,
+                                  free=["k_p", "k_r"], preset="superball")
+    # exact data: the parameters themselves
+    assert abs(fit["fitted"]["k_r"]["value"] / true["k_r"] - 1) < 1e-3
+    assert abs(fit["fitted"]["k_p"]["value"] / true["k_p"] - 1) < 1e-3
+
+
+def test_fit_drops_recovers_k_r_and_z_p():
+    base = superball(k_r=1.15, z_p=0.8)
+    drop = np.array([0.3, 0.6, 1.0, 1.5, 2.0, 2.5, 3.0])
+    e = cor_at(np.sqrt(2 * G * drop), base)
+    rng = np.random.default_rng(3)
+    rebound = e**2 * drop * (1 + rng.normal(0.0, 0.003, drop.size))  # vacuum: R = e² H
+    fit = bouncelab.fit_drops(drop, rebound, preset="superball")
+    assert fit["data"] == "drop test" and fit["free"] == ["k_r", "z_p"]
+    covers(fit, "k_r", base["k_r"])
+    covers(fit, "z_p", base["z_p"])
+    np.testing.assert_allclose(fit["drops"]["v0"], np.sqrt(2 * G * drop), rtol=1e-12)
+    np.testing.assert_allclose(fit["drops"]["cor"], np.sqrt(rebound / drop), rtol=1e-12)
+    args = ["fit", "--format", "json"]
+    for h, r in zip(drop, rebound):
+        args += ["--drop-height", repr(float(h)), "--rebound-height", repr(float(r))]
+    same_as_cli(fit, cli_json(*args))
+
+
+def test_fit_drops_with_drag_equals_the_cli():
+    fit = bouncelab.fit_drops([1.0, 2.0], [0.6, 1.1], preset="tennis", drag_coefficient=0.55)
+    expected = cli_json("fit", "--preset", "tennis", "--drag-coefficient", "0.55",
+                        "--drop-height", "1", "--rebound-height", "0.6",
+                        "--drop-height", "2", "--rebound-height", "1.1", "--format", "json")
+    same_as_cli(fit, expected)
+    # drag: the ball fell slower than in vacuum and rose from faster than it looks
+    assert fit["drops"]["v0"][1] < np.sqrt(2 * G * 2.0)
+
+
+@pytest.mark.parametrize("call, args", [
+    (lambda: bouncelab.fit_drops([1.0], [2.0]),
+     ["fit", "--drop-height", "1", "--rebound-height", "2"]),
+    (lambda: bouncelab.fit_drops([-1.0], [0.5]),
+     ["fit", "--drop-height", "-1", "--rebound-height", "0.5"]),
+    (lambda: bouncelab.fit_drops([1.0], [0.5], drag_coefficient=-0.4),
+     ["fit", "--drop-height", "1", "--rebound-height", "0.5", "--drag-coefficient", "-0.4"]),
+    (lambda: bouncelab.fit_cor_table([1.0, 2.0], [0.5, 0.6], free=["k_q"]),
+     ["fit", "--cor", "0.5", "--free", "k_q"]),
+])
+def test_errors_are_the_clis(call, args):
+    with pytest.raises(ValueError) as e:
+        call()
+    assert str(e.value) == cli_error(*args)
+
+
+def test_too_few_points_is_the_clis_message_without_its_option():
+    with pytest.raises(ValueError) as e:
+        bouncelab.fit_cor_table([1.0], [0.5], free=["k_r", "z_p"])
+    cli = cli_error("fit", "--drop-height", "1", "--rebound-height", "0.25", "--free", "k_r,z_p")
+    assert str(e.value) == "1 data points, fewer than the 2 parameters fitted"
+    assert cli == f"{e.value} (--free k_r,z_p)"
+
+
+def test_errors_of_the_arrays():
+    with pytest.raises(ValueError, match=r"^COR table row 2: COR 1.5 must lie in \[0, 1\]$"):
+        bouncelab.fit_cor_table([1.0, 2.0], [0.5, 1.5])
+    with pytest.raises(ValueError, match=r"^trace row 2: time not increasing"):
+        bouncelab.fit_trace([0.0, 0.0, 1.0], [0.0, 1.0, 0.0])
+    with pytest.raises(ValueError, match=r"^time and force differ in length \(3 and 2\)$"):
+        bouncelab.fit_trace([0.0, 1.0, 2.0], [0.0, 1.0])
+    with pytest.raises(ValueError, match=r"^COR table row 1: impact speed -1 must be positive"):
+        bouncelab.fit_cor_table([-1.0], [0.5])
