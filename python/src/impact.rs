@@ -1,0 +1,271 @@
+//! `Impact`: the answer to one impact as a Python object, built from the library's report of
+//! the run ([`ImpactReport`], what `bouncelab run --format json` writes).
+
+use crate::{array, error};
+use bouncelab::Ball;
+use bouncelab::api::ImpactReport;
+use bouncelab::solver::ImpactResponse;
+use numpy::PyArray1;
+use pyo3::prelude::*;
+use pyo3::types::PyDict;
+
+/// The answer to one impact, SI units; attribute names are the keys of `bouncelab run
+/// --format json` (`lambda_` for `lambda`, a Python keyword).
+#[pyclass(frozen, module = "bouncelab")]
+pub(crate) struct Impact {
+    #[pyo3(get)]
+    preset: Option<String>,
+    #[pyo3(get)]
+    origin: String,
+    #[pyo3(get)]
+    parameters: &'static str,
+    #[pyo3(get)]
+    law: &'static str,
+    #[pyo3(get)]
+    method: &'static str,
+    #[pyo3(get)]
+    mass: f64,
+    #[pyo3(get)]
+    k_p: f64,
+    #[pyo3(get)]
+    k_r: f64,
+    #[pyo3(get)]
+    c: f64,
+    #[pyo3(get)]
+    z_p: f64,
+    #[pyo3(get)]
+    k_h: f64,
+    #[pyo3(get)]
+    v0: f64,
+    #[pyo3(get)]
+    lambda_: f64,
+    #[pyo3(get)]
+    zeta: f64,
+    #[pyo3(get)]
+    zp_bar: f64,
+    #[pyo3(get)]
+    cor: f64,
+    #[pyo3(get)]
+    rebound: bool,
+    #[pyo3(get)]
+    max_force: f64,
+    #[pyo3(get)]
+    contact_time: Option<f64>,
+    #[pyo3(get)]
+    max_indentation: f64,
+    #[pyo3(get)]
+    permanent_indentation: f64,
+    #[pyo3(get)]
+    max_force_normalized: f64,
+    #[pyo3(get)]
+    contact_time_normalized: Option<f64>,
+    /// (v0, cor, max_force, contact_time) measured, presets only
+    measured: Option<[Option<f64>; 4]>,
+    /// (initial_kinetic, final_kinetic, dashpot, contact, spring, relative_residual)
+    energy: Option<[f64; 6]>,
+    /// t, force, indentation, displacement, when the history was asked for
+    history: Option<[Py<PyArray1<f64>>; 4]>,
+}
+
+const MEASURED_KEYS: [&str; 4] = ["v0", "cor", "max_force", "contact_time"];
+const ENERGY_KEYS: [&str; 6] = [
+    "initial_kinetic",
+    "final_kinetic",
+    "dashpot",
+    "contact",
+    "spring",
+    "relative_residual",
+];
+const HISTORY_KEYS: [&str; 4] = ["t", "force", "indentation", "displacement"];
+
+impl Impact {
+    /// The library's report of the run (`bouncelab run --format json`), as Python values.
+    fn new(py: Python<'_>, b: &Ball, r: &ImpactResponse, history: bool) -> Impact {
+        let rep = ImpactReport::new(b, r, history);
+        let series = |s: Option<&[f64]>| s.map(|v| array(py, v.to_vec()));
+        let h = [rep.t, rep.force, rep.indentation, rep.displacement].map(series);
+        Impact {
+            preset: rep.ball.preset.map(String::from),
+            origin: rep.ball.origin.to_string(),
+            parameters: b.source,
+            law: rep.ball.law,
+            method: rep.method.name(),
+            mass: rep.mass,
+            k_p: rep.k_p,
+            k_r: rep.k_r,
+            c: rep.c,
+            z_p: rep.z_p,
+            k_h: rep.k_h,
+            v0: rep.v0,
+            lambda_: rep.lambda,
+            zeta: rep.zeta,
+            zp_bar: rep.zp_bar,
+            cor: rep.cor,
+            rebound: rep.rebound,
+            max_force: rep.max_force,
+            contact_time: rep.contact_time,
+            max_indentation: rep.max_indentation,
+            permanent_indentation: rep.permanent_indentation,
+            max_force_normalized: rep.max_force_normalized,
+            contact_time_normalized: rep.contact_time_normalized,
+            measured: rep
+                .measured
+                .map(|m| [Some(m.v0), m.cor, m.max_force, m.contact_time]),
+            energy: rep.energy.map(|e| {
+                let b = e.budget;
+                [
+                    b.initial_kinetic,
+                    b.final_kinetic,
+                    b.dashpot,
+                    b.contact,
+                    b.spring,
+                    e.relative_residual,
+                ]
+            }),
+            history: match h {
+                [Some(t), Some(f), Some(z), Some(a)] => Some([t, f, z, a]),
+                _ => None,
+            },
+        }
+    }
+
+    fn series(&self, py: Python<'_>, i: usize) -> Option<Py<PyArray1<f64>>> {
+        self.history.as_ref().map(|h| h[i].clone_ref(py))
+    }
+}
+
+#[pymethods]
+impl Impact {
+    /// Times t (s) of the history, or None without `history=True`.
+    #[getter]
+    fn t(&self, py: Python<'_>) -> Option<Py<PyArray1<f64>>> {
+        self.series(py, 0)
+    }
+
+    /// Force F(t) (N), or None without `history=True`.
+    #[getter]
+    fn force(&self, py: Python<'_>) -> Option<Py<PyArray1<f64>>> {
+        self.series(py, 1)
+    }
+
+    /// Indentation z(t) (m), or None without `history=True`.
+    #[getter]
+    fn indentation(&self, py: Python<'_>) -> Option<Py<PyArray1<f64>>> {
+        self.series(py, 2)
+    }
+
+    /// Displacement α(t) of the centre of mass (m), or None without `history=True`.
+    #[getter]
+    fn displacement(&self, py: Python<'_>) -> Option<Py<PyArray1<f64>>> {
+        self.series(py, 3)
+    }
+
+    /// What was measured (v0, cor, max_force, contact_time), presets only.
+    #[getter]
+    fn measured<'py>(&self, py: Python<'py>) -> PyResult<Option<Bound<'py, PyDict>>> {
+        let Some(m) = self.measured else {
+            return Ok(None);
+        };
+        let d = PyDict::new(py);
+        for (k, v) in MEASURED_KEYS.iter().zip(m) {
+            d.set_item(k, v)?;
+        }
+        Ok(Some(d))
+    }
+
+    /// The energy budget (J): initial_kinetic, final_kinetic, dashpot, contact, spring and
+    /// relative_residual.
+    #[getter]
+    fn energy<'py>(&self, py: Python<'py>) -> PyResult<Option<Bound<'py, PyDict>>> {
+        let Some(e) = self.energy else {
+            return Ok(None);
+        };
+        let d = PyDict::new(py);
+        for (k, v) in ENERGY_KEYS.iter().zip(e) {
+            d.set_item(k, v)?;
+        }
+        Ok(Some(d))
+    }
+
+    /// Everything as a dict with the keys of `bouncelab run --format json` (`lambda`, not
+    /// `lambda_`; the history arrays when asked for). Infinite z_p or c stay `inf` (the JSON
+    /// writes `null`).
+    fn to_dict<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        let d = PyDict::new(py);
+        d.set_item("preset", &self.preset)?;
+        d.set_item("origin", &self.origin)?;
+        d.set_item("parameters", self.parameters)?;
+        d.set_item("law", self.law)?;
+        d.set_item("method", self.method)?;
+        let numbers = [
+            ("mass", self.mass),
+            ("k_p", self.k_p),
+            ("k_r", self.k_r),
+            ("c", self.c),
+            ("z_p", self.z_p),
+            ("k_h", self.k_h),
+            ("v0", self.v0),
+            ("lambda", self.lambda_),
+            ("zeta", self.zeta),
+            ("zp_bar", self.zp_bar),
+            ("cor", self.cor),
+        ];
+        for (k, v) in numbers {
+            d.set_item(k, v)?;
+        }
+        d.set_item("rebound", self.rebound)?;
+        d.set_item("max_force", self.max_force)?;
+        d.set_item("contact_time", self.contact_time)?;
+        d.set_item("max_indentation", self.max_indentation)?;
+        d.set_item("permanent_indentation", self.permanent_indentation)?;
+        d.set_item("max_force_normalized", self.max_force_normalized)?;
+        d.set_item("contact_time_normalized", self.contact_time_normalized)?;
+        d.set_item("measured", self.measured(py)?)?;
+        d.set_item("energy", self.energy(py)?)?;
+        for (i, k) in HISTORY_KEYS.iter().enumerate() {
+            if let Some(a) = self.series(py, i) {
+                d.set_item(k, a)?;
+            }
+        }
+        Ok(d)
+    }
+
+    fn __repr__(&self) -> String {
+        let who = match &self.preset {
+            Some(p) => format!("preset='{p}', "),
+            None => String::new(),
+        };
+        let t_f = self
+            .contact_time
+            .map_or("None".to_string(), |t| format!("{t:?}"));
+        format!(
+            "Impact({who}law='{}', v0={:?}, cor={:?}, max_force={:?}, contact_time={t_f}, \
+             rebound={})",
+            self.law,
+            self.v0,
+            self.cor,
+            self.max_force,
+            if self.rebound { "True" } else { "False" }
+        )
+    }
+}
+
+/// One impact of `ball`, its history sampled `samples` times when asked for; the GIL released
+/// while it runs.
+pub(crate) fn impact(
+    py: Python<'_>,
+    ball: Ball,
+    history: bool,
+    samples: usize,
+) -> PyResult<Impact> {
+    let r = py
+        .detach(|| {
+            if history {
+                ball.impact_history(samples)
+            } else {
+                ball.impact()
+            }
+        })
+        .map_err(error)?;
+    Ok(Impact::new(py, &ball, &r, history))
+}
