@@ -25,7 +25,7 @@ use crate::analysis::fit::{Fit, fit_k_r};
 use crate::analysis::sweep::{VelocityPoint, ZetaPoint, cor_vs_velocity, cor_vs_zeta};
 use crate::analysis::work;
 use crate::catalog::{Catalog, Entry};
-use crate::drop::{DropBall, DropRun, DropSetup};
+use crate::drop::{DropRun, DropSetup};
 use crate::model::contact::ContactLaw;
 use crate::model::params::{Field, ImpactParams, check_positive, validate_lambda_zeta};
 use crate::preset::{Measured, ParamSource};
@@ -301,12 +301,7 @@ impl Ball {
     /// # Ok::<(), bouncelab::BallError>(())
     /// ```
     pub fn drop_test(&self, setup: &DropSetup) -> Result<DropRun, BallError> {
-        let ball = DropBall {
-            params: self.params,
-            law: self.law,
-            radius: self.measured.as_ref().map_or(f64::NAN, |m| m.radius),
-        };
-        Ok(crate::drop::drop(&ball, setup)?)
+        Ok(crate::drop::drop(&self.drop_ball(), setup)?)
     }
 }
 

@@ -100,6 +100,17 @@ impl Ball {
         })
     }
 
+    /// The ball as a drop test takes it ([`crate::drop::DropBall`]): its parameters, law and
+    /// the preset's measured radius (NaN for a ball that is no preset: give such a ball no
+    /// air, or use [`crate::drop::drop`] with a radius).
+    pub fn drop_ball(&self) -> crate::drop::DropBall {
+        crate::drop::DropBall {
+            params: self.params,
+            law: self.law,
+            radius: self.measured.as_ref().map_or(f64::NAN, |m| m.radius),
+        }
+    }
+
     /// The plain ball record the figures and the explorer draw ([`crate::ball::Ball`]): the
     /// same parameters, law and measurements; a ball that is no preset is named `"ball"`.
     pub fn record(&self) -> crate::ball::Ball {

@@ -5,7 +5,7 @@ use super::ball::BallArgs;
 use super::output::{self, csv_row, given, human, num, table};
 use crate::drop::standards::{self, Reference, Standard, Test, Verdict};
 use crate::drop::{
-    Air, DEFAULT_BOUNCES, DEFAULT_MIN_REBOUND, DropBall, DropError, DropRun, DropSetup, End, G,
+    Air, DEFAULT_BOUNCES, DEFAULT_MIN_REBOUND, DropError, DropRun, DropSetup, End, G,
 };
 use clap::{Args, ValueEnum};
 use serde::Serialize;
@@ -86,12 +86,8 @@ pub fn run(a: &DropArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         .transpose()
         .map_err(|e| anyhow::anyhow!(e))?;
     let b = a.ball.resolve(None)?;
-    let radius = b.measured.as_ref().map_or(f64::NAN, |m| m.radius);
-    let dball = DropBall {
-        params: b.params,
-        law: b.law,
-        radius,
-    };
+    let dball = b.drop_ball();
+    let radius = dball.radius;
     let air = (!a.no_drag).then(|| Air {
         density: a.air_density.unwrap_or(Air::default().density),
         drag_coefficient: a
