@@ -324,16 +324,20 @@ fn explorer(choice: ball::PresetChoice, measured: Option<PathBuf>) -> anyhow::Re
         );
     }
     let entry = ball::select(choice.preset.as_deref(), choice.config.as_deref())?;
-    let overlays = match data {
+    let (overlays, loaded) = match data {
         Some((data, path)) => {
             let p = entry.preset.params();
             let label = measured_file::label(path);
-            crate::figure::explorer::MeasuredOverlay::from_data(&data, &label, p.mass, p.v0)
-                .map_err(|e| measured_file::at(path, e))?
+            let overlays =
+                crate::figure::explorer::MeasuredOverlay::from_data(&data, &label, p.mass, p.v0)
+                    .map_err(|e| measured_file::at(path, e))?;
+            let path = path.clone();
+            let loaded = crate::tui::measured::Loaded { path, label, data };
+            (overlays, Some(loaded))
         }
-        None => Vec::new(),
+        None => (Vec::new(), None),
     };
-    crate::tui::run_with_measured(entry.preset, overlays).map_err(|e| ExplorerFailed(e).into())
+    crate::tui::run_with_data(entry.preset, overlays, loaded).map_err(|e| ExplorerFailed(e).into())
 }
 
 #[cfg(test)]
