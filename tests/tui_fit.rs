@@ -277,7 +277,13 @@ fn the_fit_pane() {
     answer(&mut app, &r);
     let t = screen(&app, 120, 40);
     let s = text(&t);
-    for needle in ["k_r = ", "z_p = ", "95 % [", "residual RMS", "F applies it"] {
+    for needle in [
+        "k_r = ",
+        "z_p = ",
+        "[95 % interval]",
+        "residual RMS",
+        "F applies it",
+    ] {
         assert!(s.contains(needle), "{needle}\n{s}");
     }
     insta::assert_snapshot!("fit_pane_done", t.backend());
@@ -292,4 +298,26 @@ fn the_fit_pane() {
     // at 80×24 the pane still shows its values
     let s = text(&screen(&app, 80, 24));
     assert!(s.contains("k_r = "), "{s}");
+}
+
+#[test]
+fn the_keys() {
+    use bouncelab::tui::action::{Mode, from_key};
+    use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
+    let key = |c| {
+        from_key(
+            KeyEvent::new(KeyCode::Char(c), KeyModifiers::NONE),
+            Mode::Normal,
+        )
+    };
+    assert_eq!(key('o'), Some(Action::OpenMeasured));
+    assert_eq!(key('O'), Some(Action::ClearMeasured));
+    assert_eq!(key('f'), Some(Action::Fit));
+    assert_eq!(key('F'), Some(Action::ApplyFit));
+    // in the path entry they are text
+    let typed = from_key(
+        KeyEvent::new(KeyCode::Char('f'), KeyModifiers::NONE),
+        Mode::Input,
+    );
+    assert_eq!(typed, Some(Action::InputChar('f')));
 }

@@ -36,8 +36,14 @@ impl Widget for &FitView<'_> {
     fn render(self, area: Rect, buf: &mut Buffer) {
         let t = self.theme;
         let stale = self.standing == Standing::Stale;
+        // the stale mark takes the legend's place: a narrow pane keeps it whole
+        let legend = if stale {
+            ""
+        } else {
+            "· value ± std error [95 % interval] "
+        };
         let mut title = vec![Span::styled(
-            format!(" fit to {} ", self.pane.label),
+            format!(" fit to {} {legend}", self.pane.label),
             t.title(),
         )];
         let lines = match &self.pane.status {
@@ -75,10 +81,11 @@ fn free_names(p: &FitPane) -> String {
         .join(", ")
 }
 
-/// "k_r = 1.234e5 ± 2.10e3 N/m  95 % [1.19e5, 1.27e5]".
+/// "k_r = 1.234e5 ± 2.10e3 N/m  [1.19e5, 1.27e5]": value ± standard error, 95 % interval
+/// (the title says so).
 fn estimate(e: &Estimate) -> Line<'static> {
     Line::raw(format!(
-        " {:<4}= {} ± {} {}  95 % [{}, {}]",
+        " {:<4}= {} ± {} {}  [{}, {}]",
         e.name,
         sig(e.value, 4),
         sig(e.std_error, 3),
