@@ -11,6 +11,7 @@ pub mod ball;
 pub mod budget;
 pub mod drop;
 pub mod figure;
+pub mod figure_balls;
 mod figure_overlay;
 pub mod fit;
 pub mod fit_multi;
@@ -254,6 +255,7 @@ fn dispatch(cli: Cli, out: &mut dyn Write) -> anyhow::Result<()> {
             presets::run(&a, out)
         }
         Command::Figure(mut a) => {
+            a.settle()?;
             merge(top, &mut a.ball)?;
             figure::run(&a, out)
         }
