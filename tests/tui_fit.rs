@@ -321,3 +321,23 @@ fn the_keys() {
     );
     assert_eq!(typed, Some(Action::InputChar('f')));
 }
+
+/// Data that cannot pin K_r (two drops whose COR the ball cannot reach by K_r alone): the
+/// pane says so, as `bouncelab fit` does, rather than print an endless interval.
+#[test]
+fn an_unpinned_parameter_is_said_so() {
+    let mut app = App::new(Preset::embedded().remove(1), false);
+    let data =
+        bouncelab::measured::parse_any("drop_height_m,rebound_height_m\n1,0.55\n2,1.05\n").unwrap();
+    app.update(Action::MeasuredLoaded {
+        path: "drops.csv".into(),
+        data,
+    });
+    let r = ask_fit(&mut app);
+    answer(&mut app, &r);
+    let s = text(&screen(&app, 120, 40));
+    assert!(
+        s.contains("k_r = ") && s.contains("not pinned by the data"),
+        "{s}"
+    );
+}

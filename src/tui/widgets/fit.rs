@@ -82,16 +82,20 @@ fn free_names(p: &FitPane) -> String {
 }
 
 /// "k_r = 1.234e5 ± 2.10e3 N/m  [1.19e5, 1.27e5]": value ± standard error, 95 % interval
-/// (the title says so).
+/// (the title says so); an interval without finite ends is "not pinned by the data", as
+/// `bouncelab fit` says.
 fn estimate(e: &Estimate) -> Line<'static> {
+    let interval = if e.ci95.iter().all(|v| v.is_finite()) {
+        format!("[{}, {}]", sig(e.ci95[0], 3), sig(e.ci95[1], 3))
+    } else {
+        "not pinned by the data".into()
+    };
     Line::raw(format!(
-        " {:<4}= {} ± {} {}  [{}, {}]",
+        " {:<4}= {} ± {} {}  {interval}",
         e.name,
         sig(e.value, 4),
         sig(e.std_error, 3),
         e.unit,
-        sig(e.ci95[0], 3),
-        sig(e.ci95[1], 3)
     ))
 }
 
