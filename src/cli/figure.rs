@@ -2,7 +2,7 @@
 //! SVG, and its plotted series as CSV. The figures themselves are built in
 //! [`crate::figure::paper`]; this file reads the options, solves, and writes the files.
 
-use super::ball::{self, BallArgs};
+use super::ball::BallArgs;
 use super::figure_balls as balls;
 use super::figure_overlay as overlay;
 use crate::analysis::sweep::{lin_space, log_space};
@@ -346,8 +346,8 @@ fn build(a: &FigureArgs) -> anyhow::Result<Figure> {
         CorVelocity | ForceTime | ForceDisplacement => {
             let mut figs = Vec::new();
             for args in balls::each(&a.ball, &a.more) {
-                let (b, origin) = one_ball(a, &args)?;
-                let mut f = ball_figure(a, &b)?;
+                let (b, origin) = balls::one_ball(a, &args)?;
+                let mut f = balls::ball_figure(a, &b)?;
                 overlay::relabel_user(&mut f, &origin);
                 figs.push((b.name, f));
             }
@@ -355,30 +355,6 @@ fn build(a: &FigureArgs) -> anyhow::Result<Figure> {
         }
         PeersCorVelocity | PeersForceTime => super::peers::figure(a),
     }
-}
-
-/// One ball's figure of cor-velocity, force-time or force-displacement.
-fn ball_figure(a: &FigureArgs, b: &paper::Ball) -> anyhow::Result<Figure> {
-    if a.name == FigureName::CorVelocity {
-        return velocity_figure(b, a.from, a.to, a.points.unwrap_or(VELOCITY_POINTS));
-    }
-    let (t, d) = history_figures(b, a.points.unwrap_or(HISTORY_SAMPLES))?;
-    Ok(if a.name == FigureName::ForceTime {
-        t
-    } else {
-        d
-    })
-}
-
-/// The ball `args` of a one-ball figure, with the overrides, λ and ζ applied (and v0 for the
-/// force figures), and its origin.
-fn one_ball(a: &FigureArgs, args: &BallArgs) -> anyhow::Result<(paper::Ball, String)> {
-    let v0 = a.v0.filter(|_| a.name != FigureName::CorVelocity);
-    let lambda = a.lambda.as_ref().filter(|l| l.len() == 1).map(|l| l[0]);
-    ball::check_overrides(&args.set, lambda, a.zeta)?;
-    let mut b = args.resolve(v0)?;
-    ball::set_lambda_zeta(&mut b.ball.params, lambda, a.zeta)?;
-    Ok((b.ball, b.origin))
 }
 
 /// `build`, with the `--measured` files drawn on it (against the ball's m and v0).
@@ -389,7 +365,7 @@ fn build_all(a: &FigureArgs) -> anyhow::Result<Figure> {
     }
     let mut fig = build(a)?;
     if !a.measured.is_empty() {
-        let (b, _) = one_ball(a, &a.ball)?;
+        let (b, _) = balls::one_ball(a, &a.ball)?;
         overlay::add_measured(&mut fig, a.name, &a.measured, b.params.mass, b.params.v0)?;
     }
     Ok(fig)

@@ -11,7 +11,11 @@
 //! legend ("golf: model") and in the CSV `series` column ("golf model"), and its model curves
 //! take the ball's own colour.
 
-use super::ball::{BallArgs, LawArg, Overrides, PresetChoice, SourceArg};
+use super::ball::{self, BallArgs, LawArg, Overrides, PresetChoice, SourceArg};
+use super::figure::{
+    FigureArgs, FigureName, HISTORY_SAMPLES, VELOCITY_POINTS, history_figures, velocity_figure,
+};
+use crate::figure::paper;
 use crate::figure::{Figure, Kind};
 use clap::Args;
 use std::path::PathBuf;
@@ -68,6 +72,30 @@ pub fn each(first: &BallArgs, more: &[String]) -> Vec<BallArgs> {
         b
     }));
     all
+}
+
+/// One ball's figure of cor-velocity, force-time or force-displacement.
+pub(super) fn ball_figure(a: &FigureArgs, b: &paper::Ball) -> anyhow::Result<Figure> {
+    if a.name == FigureName::CorVelocity {
+        return velocity_figure(b, a.from, a.to, a.points.unwrap_or(VELOCITY_POINTS));
+    }
+    let (t, d) = history_figures(b, a.points.unwrap_or(HISTORY_SAMPLES))?;
+    Ok(if a.name == FigureName::ForceTime {
+        t
+    } else {
+        d
+    })
+}
+
+/// The ball `args` of a one-ball figure, with the overrides, λ and ζ applied (and v0 for the
+/// force figures), and its origin.
+pub(super) fn one_ball(a: &FigureArgs, args: &BallArgs) -> anyhow::Result<(paper::Ball, String)> {
+    let v0 = a.v0.filter(|_| a.name != FigureName::CorVelocity);
+    let lambda = a.lambda.as_ref().filter(|l| l.len() == 1).map(|l| l[0]);
+    ball::check_overrides(&args.set, lambda, a.zeta)?;
+    let mut b = args.resolve(v0)?;
+    ball::set_lambda_zeta(&mut b.ball.params, lambda, a.zeta)?;
+    Ok((b.ball, b.origin))
 }
 
 /// Colours of the balls' model curves: the palette's first six (black and grey are for
