@@ -2,7 +2,8 @@
 //! SVG, and its plotted series as CSV. The figures themselves are built in
 //! [`crate::figure::paper`]; this file reads the options, solves, and writes the files.
 
-use super::ball::{self, BallArgs};
+use super::ball::BallArgs;
+use super::figure_balls as balls;
 use super::figure_overlay as overlay;
 use crate::analysis::sweep::{lin_space, log_space};
 use crate::atomic::Outputs;
@@ -79,7 +80,13 @@ pub struct FigureArgs {
     #[arg(long)]
     pub force: bool,
     #[command(flatten)]
+    pub balls: super::figure_balls::FigureBall,
+    /// The first ball's options, from `balls` ([`FigureArgs::settle`]).
+    #[arg(skip)]
     pub ball: BallArgs,
+    /// The presets given after the first (`--preset` repeated).
+    #[arg(skip)]
+    pub more: Vec<String>,
     /// λ of the model curves, comma-separated (cor-zeta, force-zeta) [default: 0,0.4,1]; for
     /// the figures of one ball, its λ (changes K_r)
     #[arg(
@@ -107,6 +114,14 @@ pub struct FigureArgs {
     pub points: Option<usize>,
 }
 
+impl FigureArgs {
+    /// After parsing: `ball` and `more` from the ball options given.
+    pub fn settle(&mut self) -> anyhow::Result<()> {
+        (self.ball, self.more) = self.balls.settle()?;
+        Ok(())
+    }
+}
+
 /// Options that only some figures take: naming the misplaced one beats ignoring it.
 fn check_applicable(a: &FigureArgs) -> anyhow::Result<()> {
     use FigureName::*;
@@ -130,7 +145,15 @@ fn check_applicable(a: &FigureArgs) -> anyhow::Result<()> {
         &[CorZeta, ForceZeta]
     };
     let ball_figures = &[CorVelocity, ForceTime, ForceDisplacement][..];
+    let several = &[
+        CorZeta,
+        ForceZeta,
+        CorVelocity,
+        ForceTime,
+        ForceDisplacement,
+    ][..];
     let given = [
+        ("a second --preset", !a.more.is_empty(), several),
         ("--lambda", a.lambda.is_some(), lambda_for),
         ("--zeta", a.zeta.is_some(), ball_figures),
         ("--measured", !a.measured.is_empty(), ball_figures),
@@ -303,11 +326,13 @@ fn build(a: &FigureArgs) -> anyhow::Result<Figure> {
                 .iter()
                 .map(|p| embedded_ball(p, source, law))
                 .collect();
-            // a user's ball joins the three of the paper
+            // the balls asked for join the three of the paper
             if a.ball.choice.is_given() {
-                let b = a.ball.resolve(None)?.record();
-                if !balls.iter().any(|x| x.name == b.name) {
-                    balls.push(b);
+                for args in balls::each(&a.ball, &a.more) {
+                    let b = args.resolve(None)?.record();
+                    if !balls.iter().any(|x| x.name == b.name) {
+                        balls.push(b);
+                    }
                 }
             }
             let lambdas = a.lambda.clone().unwrap_or_else(|| vec![0.0, 0.4, 1.0]);
@@ -318,30 +343,18 @@ fn build(a: &FigureArgs) -> anyhow::Result<Figure> {
             let (cor, force) = zeta_figures(&lambdas, points, law, &balls)?;
             Ok(if a.name == CorZeta { cor } else { force })
         }
-        CorVelocity => {
-            let (b, origin) = one_ball(a, None)?;
-            let mut f = velocity_figure(&b, a.from, a.to, a.points.unwrap_or(VELOCITY_POINTS))?;
-            overlay::relabel_user(&mut f, &origin);
-            Ok(f)
-        }
-        ForceTime | ForceDisplacement => {
-            let (b, origin) = one_ball(a, a.v0)?;
-            let (t, d) = history_figures(&b, a.points.unwrap_or(HISTORY_SAMPLES))?;
-            let mut f = if a.name == ForceTime { t } else { d };
-            overlay::relabel_user(&mut f, &origin);
-            Ok(f)
+        CorVelocity | ForceTime | ForceDisplacement => {
+            let mut figs = Vec::new();
+            for args in balls::each(&a.ball, &a.more) {
+                let (b, origin) = balls::one_ball(a, &args)?;
+                let mut f = balls::ball_figure(a, &b)?;
+                overlay::relabel_user(&mut f, &origin);
+                figs.push((b.name, f));
+            }
+            Ok(balls::combine(figs))
         }
         PeersCorVelocity | PeersForceTime => super::peers::figure(a),
     }
-}
-
-/// The ball of a one-ball figure, with the overrides, λ and ζ applied, and its origin.
-fn one_ball(a: &FigureArgs, v0: Option<f64>) -> anyhow::Result<(paper::Ball, String)> {
-    let lambda = a.lambda.as_ref().filter(|l| l.len() == 1).map(|l| l[0]);
-    ball::check_overrides(&a.ball.set, lambda, a.zeta)?;
-    let mut b = a.ball.resolve(v0)?;
-    ball::set_lambda_zeta(&mut b.params, lambda, a.zeta)?;
-    Ok((b.record(), b.origin))
 }
 
 /// `build`, with the `--measured` files drawn on it (against the ball's m and v0).
@@ -352,7 +365,7 @@ fn build_all(a: &FigureArgs) -> anyhow::Result<Figure> {
     }
     let mut fig = build(a)?;
     if !a.measured.is_empty() {
-        let (b, _) = one_ball(a, a.v0)?;
+        let (b, _) = balls::one_ball(a, &a.ball)?;
         overlay::add_measured(&mut fig, a.name, &a.measured, b.params.mass, b.params.v0)?;
     }
     Ok(fig)

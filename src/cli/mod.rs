@@ -11,6 +11,7 @@ pub mod ball;
 pub mod budget;
 pub mod drop;
 pub mod figure;
+pub mod figure_balls;
 mod figure_overlay;
 pub mod fit;
 pub mod fit_multi;
@@ -256,6 +257,7 @@ fn dispatch(cli: Cli, out: &mut dyn Write) -> anyhow::Result<()> {
             presets::run(&a, out)
         }
         Command::Figure(mut a) => {
+            a.settle()?;
             merge(top, &mut a.ball)?;
             figure::run(&a, out)
         }
@@ -326,16 +328,20 @@ fn explorer(choice: ball::PresetChoice, measured: Option<PathBuf>) -> anyhow::Re
         );
     }
     let entry = ball::select(choice.preset.as_deref(), choice.config.as_deref())?;
-    let overlays = match data {
+    let (overlays, loaded) = match data {
         Some((data, path)) => {
             let p = entry.preset.params();
             let label = measured_file::label(path);
-            crate::figure::explorer::MeasuredOverlay::from_data(&data, &label, p.mass, p.v0)
-                .map_err(|e| measured_file::at(path, e))?
+            let overlays =
+                crate::figure::explorer::MeasuredOverlay::from_data(&data, &label, p.mass, p.v0)
+                    .map_err(|e| measured_file::at(path, e))?;
+            let path = path.clone();
+            let loaded = crate::tui::measured::Loaded { path, label, data };
+            (overlays, Some(loaded))
         }
-        None => Vec::new(),
+        None => (Vec::new(), None),
     };
-    crate::tui::run_with_measured(entry.preset, overlays).map_err(|e| ExplorerFailed(e).into())
+    crate::tui::run_with_data(entry.preset, overlays, loaded).map_err(|e| ExplorerFailed(e).into())
 }
 
 #[cfg(test)]

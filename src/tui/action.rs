@@ -93,6 +93,26 @@ pub enum Action {
     ConfirmYes,
     /// `n` or Esc to "overwrite …? y/n".
     ConfirmNo,
+    /// `o`: open the entry for a measured file's path (force–time trace, COR table or drop
+    /// test). On Enter `update` asks the loop to read it ([`super::effect::Effect::LoadMeasured`]).
+    OpenMeasured,
+    /// The loop read and parsed the measured file at `path`.
+    MeasuredLoaded {
+        path: PathBuf,
+        data: crate::measured::Data,
+    },
+    /// The measured file could not be read: `FILE:LINE:COLUMN: why`, one line.
+    MeasuredFailed {
+        msg: String,
+    },
+    /// `O`: put the measured data (and its fit) away.
+    ClearMeasured,
+    /// `f`: fit the current ball to the measured data on the fit worker.
+    Fit,
+    /// A fit finished (from the fit worker): the id of its request and the outcome.
+    FitReady(u64, Result<super::measured::FitOutcome, String>),
+    /// `F`: apply the finished fit to the ball, as one undoable change.
+    ApplyFit,
 }
 
 /// How the help scrolls.
@@ -216,6 +236,10 @@ fn normal(key: KeyEvent) -> Option<Action> {
         KeyCode::Char('d') => Some(Action::ToggleDrop),
         KeyCode::Char(' ') => Some(Action::DropPause),
         KeyCode::Char('b') => Some(Action::DropReplay),
+        KeyCode::Char('o') => Some(Action::OpenMeasured),
+        KeyCode::Char('O') => Some(Action::ClearMeasured),
+        KeyCode::Char('f') => Some(Action::Fit),
+        KeyCode::Char('F') => Some(Action::ApplyFit),
         _ => None,
     }
 }

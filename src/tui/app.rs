@@ -8,6 +8,7 @@
 mod dialogs;
 mod drop;
 mod edit;
+mod fit;
 mod scene;
 mod screen;
 mod sweeps;
@@ -62,6 +63,12 @@ pub struct App {
     drop: DropView,
     /// Measured data drawn on the charts (`bouncelab --measured FILE`).
     measured: Vec<crate::figure::explorer::MeasuredOverlay>,
+    /// The measured file's data, to fit to (`o`, `bouncelab --measured FILE`).
+    loaded: Option<super::measured::Loaded>,
+    /// The last fit asked for (`f`) and its answer: the fit pane.
+    fit: Option<super::measured::FitPane>,
+    /// The id of the last fit asked for.
+    fit_id: u64,
     /// The first help line shown.
     help_scroll: u16,
     /// The terminal's width and height, once the loop has said (`Action::Resize`).
@@ -104,6 +111,9 @@ impl App {
             save_out: None,
             drop: DropView::new(false),
             measured: Vec::new(),
+            loaded: None,
+            fit: None,
+            fit_id: 0,
             help_scroll: 0,
             size: None,
         };
@@ -209,7 +219,7 @@ impl App {
         }
         if !matches!(
             action,
-            Action::SpeedReady(..) | Action::Tick(_) | Action::Resize(..)
+            Action::SpeedReady(..) | Action::Tick(_) | Action::Resize(..) | Action::FitReady(..)
         ) {
             self.message = None;
         }
@@ -231,6 +241,12 @@ impl App {
             | Action::Saved { .. }
             | Action::SaveExists { .. }
             | Action::SaveFailed { .. } => self.answer(action),
+            Action::MeasuredLoaded { path, data } => self.measured_loaded(path, data),
+            Action::MeasuredFailed { msg } => self.error(msg),
+            Action::FitReady(id, result) => self.fit_ready(id, result),
+            Action::ClearMeasured => self.clear_measured(),
+            Action::Fit => return self.start_fit().into_iter().collect(),
+            Action::ApplyFit => self.apply_fit(),
             Action::OpenInput
             | Action::InputChar(_)
             | Action::InputBackspace
@@ -240,6 +256,7 @@ impl App {
             | Action::SavePreset
             | Action::ConfirmYes
             | Action::ConfirmNo
+            | Action::OpenMeasured
             | Action::ToggleHelp
             | Action::CloseHelp => return self.dialog(action).into_iter().collect(),
             _ => self.edit(action),

@@ -16,4 +16,10 @@ pub enum Effect {
     /// Run exactly these COR-vs-speed sweeps in the background, dropping any other that is
     /// out; each finished one comes back as `Action::SpeedReady`.
     Compute(Vec<SpeedRequest>),
+    /// Read this measured file (`o`); the loop answers `Action::MeasuredLoaded` or
+    /// `Action::MeasuredFailed`.
+    LoadMeasured(std::path::PathBuf),
+    /// Run this fit on the fit worker (`f`), replacing any not yet started; it comes back as
+    /// `Action::FitReady`.
+    Fit(super::measured::FitRequest),
 }

@@ -1,12 +1,14 @@
 //! The event loop: wait for an event, drain whatever else is queued (zero-timeout poll), apply
 //! it all, recompute once, draw once — a held key never builds a backlog. The loop also
 //! carries out the effects `update` returns: COR-vs-speed sweeps go to a worker thread (while
-//! one is out, the loop also wakes to collect it), an export (`e`) and a saved preset (`s`)
-//! are written here, and each outcome goes back to `update` as an action.
+//! one is out, the loop also wakes to collect it), fits (`f`) to the fit worker likewise, an
+//! export (`e`) and a saved preset (`s`) are written here and a measured file (`o`) read, and
+//! each outcome goes back to `update` as an action.
 
 use super::action::{self, Action};
 use super::app::{App, Effect};
 use super::export;
+use super::fit_worker::FitWorker;
 use super::save;
 use super::worker::Worker;
 use crate::catalog;
@@ -22,6 +24,7 @@ const FRAME: Duration = Duration::from_millis(33);
 
 pub fn run(terminal: &mut DefaultTerminal, app: &mut App) -> anyhow::Result<()> {
     let mut worker = Worker::spawn()?;
+    let fits = FitWorker::spawn()?;
     // test-only (see `crate::fault`): tests/tui_pty.rs checks that the terminal is restored
     // after a panic in here
     let panic_on_key = Fault::PanicInLoop.active();
@@ -30,12 +33,12 @@ pub fn run(terminal: &mut DefaultTerminal, app: &mut App) -> anyhow::Result<()> 
     let mut dirty = true;
     let mut clock = Instant::now();
     while !app.should_quit() {
-        carry_out(std::mem::take(&mut effects), app, &mut worker);
+        carry_out(std::mem::take(&mut effects), app, &mut worker, &fits);
         if dirty {
             terminal.draw(|frame| frame.render_widget(&*app, frame.area()))?;
             dirty = false;
         }
-        let waiting = !app.speed_requests().is_empty();
+        let waiting = !app.speed_requests().is_empty() || app.fitting();
         let animating = app.animating();
         let wait = if animating { FRAME } else { SWEEP_POLL };
         let mut next = if !(waiting || animating) || event::poll(wait)? {
@@ -75,6 +78,10 @@ pub fn run(terminal: &mut DefaultTerminal, app: &mut App) -> anyhow::Result<()> 
             effects.extend(app.apply(Action::SpeedReady(request, result)));
             dirty = true;
         }
+        while let Some((id, result)) = fits.try_recv() {
+            effects.extend(app.apply(Action::FitReady(id, result)));
+            dirty = true;
+        }
         if dirty {
             effects.extend(app.refresh());
         }
@@ -83,7 +90,7 @@ pub fn run(terminal: &mut DefaultTerminal, app: &mut App) -> anyhow::Result<()> 
 }
 
 /// Carry out `effects`, and those the answers to them bring, until none is left.
-fn carry_out(mut effects: Vec<Effect>, app: &mut App, worker: &mut Worker) {
+fn carry_out(mut effects: Vec<Effect>, app: &mut App, worker: &mut Worker, fits: &FitWorker) {
     while !effects.is_empty() {
         for effect in std::mem::take(&mut effects) {
             let answer = match effect {
@@ -98,6 +105,14 @@ fn carry_out(mut effects: Vec<Effect>, app: &mut App, worker: &mut Worker) {
                 Effect::Save(request) => {
                     save::write(&request, catalog::user_presets_dir().as_deref())
                 }
+                Effect::Fit(request) => {
+                    fits.want(request);
+                    continue;
+                }
+                Effect::LoadMeasured(path) => match super::measured::load(&path) {
+                    Ok(data) => Action::MeasuredLoaded { path, data },
+                    Err(msg) => Action::MeasuredFailed { msg },
+                },
             };
             effects.extend(app.update(answer));
         }

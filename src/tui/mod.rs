@@ -19,8 +19,10 @@ pub mod drop_view;
 pub mod effect;
 pub mod event;
 pub mod export;
+pub mod fit_worker;
 pub mod format;
 pub mod keys;
+pub mod measured;
 pub mod param;
 pub mod save;
 pub mod setting;
@@ -58,6 +60,15 @@ pub fn run_with_measured(
     preset: Preset,
     measured: Vec<crate::figure::explorer::MeasuredOverlay>,
 ) -> anyhow::Result<()> {
+    run_with_data(preset, measured, None)
+}
+
+/// [`run_with_measured`], with the measured file's data too, for the fit (`f`).
+pub fn run_with_data(
+    preset: Preset,
+    measured: Vec<crate::figure::explorer::MeasuredOverlay>,
+    loaded: Option<measured::Loaded>,
+) -> anyhow::Result<()> {
     if !std::io::stdout().is_terminal() {
         anyhow::bail!("the explorer needs a terminal (stdout is not one); see `bouncelab --help`");
     }
@@ -66,6 +77,9 @@ pub fn run_with_measured(
         .with_background_sweeps()
         .with_motion(motion_wanted())
         .with_measured(measured);
+    if let Some(l) = loaded {
+        app = app.with_loaded(l);
+    }
     let mut terminal = ratatui::try_init()
         .inspect_err(|_| {
             if terminal::is_raw_mode_enabled().unwrap_or(false) {

@@ -57,6 +57,8 @@ pub enum Purpose {
     Value(Param),
     /// The name to save the current setting under as a user preset (`s`).
     PresetName,
+    /// The path of a measured file to draw and fit to (`o`).
+    MeasuredPath,
 }
 
 /// The text-entry dialog.

@@ -5,6 +5,7 @@
 use super::app::{App, Overlay, View};
 use super::theme::Theme;
 use super::widgets::confirm::ConfirmDialog;
+use super::widgets::fit::FitView;
 use super::widgets::help::Help;
 use super::widgets::input::InputDialog;
 use super::widgets::plot::Plot;
@@ -35,6 +36,8 @@ pub struct Screen {
     /// Whether the readout is the tall side panel (or the compact strip).
     pub side_panel: bool,
     pub charts: Vec<(Chart, Rect)>,
+    /// The fit pane under the charts, while there is a fit (`f`).
+    pub fit: Option<Rect>,
 }
 
 /// Where everything goes, or `None` when the area is too small to use.
@@ -61,6 +64,7 @@ pub fn screen(app: &App, area: Rect) -> Option<Screen> {
         .areas(body);
         (c, r)
     };
+    let (charts, fit) = split_fit(app, charts);
     let charts = match app.view() {
         View::Impact => impact_grid(charts),
         View::Sweeps => sweeps_grid(charts),
@@ -72,7 +76,30 @@ pub fn screen(app: &App, area: Rect) -> Option<Screen> {
         readout,
         side_panel,
         charts,
+        fit,
     })
+}
+
+/// The fit pane's view, while there is a fit and the view has charts.
+fn fit_view(app: &App, theme: Theme) -> Option<FitView<'_>> {
+    if app.view() == View::Drop {
+        return None;
+    }
+    Some(FitView {
+        pane: app.fit_pane()?,
+        standing: app.fit_standing()?,
+        theme,
+    })
+}
+
+/// The charts' area less the fit pane's rows at its bottom (at most half of it).
+fn split_fit(app: &App, charts: Rect) -> (Rect, Option<Rect>) {
+    let Some(v) = fit_view(app, Theme::new(false)) else {
+        return (charts, None);
+    };
+    let h = v.height().min(charts.height / 2);
+    let [c, f] = Layout::vertical([Constraint::Fill(1), Constraint::Length(h)]).areas(charts);
+    (c, Some(f))
 }
 
 /// Force–time and force–displacement above COR vs ζ; all three in a row when short.
@@ -177,6 +204,9 @@ impl Widget for &App {
         for (chart, rect) in &s.charts {
             let fig = explorer::figure(*chart, &scene);
             Plot::new(&fig, theme).render(*rect, buf);
+        }
+        if let (Some(rect), Some(v)) = (s.fit, fit_view(self, theme)) {
+            v.render(rect, buf);
         }
         render_overlay(self, theme, area, buf);
     }

@@ -32,6 +32,7 @@ impl App {
             Action::InputSubmit => return self.submit_input(),
             Action::InputCancel => self.cancel_input(),
             Action::SavePreset => self.open_save(),
+            Action::OpenMeasured => self.open_measured(),
             Action::ConfirmYes => return self.confirm(true),
             Action::ConfirmNo => return self.confirm(false),
             Action::CloseHelp => self.overlay = Overlay::None,
@@ -73,6 +74,7 @@ impl App {
         let param = match input.purpose {
             Purpose::Value(p) => p,
             Purpose::PresetName => return self.submit_name(text),
+            Purpose::MeasuredPath => return self.submit_path(text),
         };
         if text.is_empty() {
             self.overlay = Overlay::None;

@@ -28,6 +28,9 @@ impl App {
                 | Action::Saved { .. }
                 | Action::SaveExists { .. }
                 | Action::SaveFailed { .. }
+                | Action::MeasuredLoaded { .. }
+                | Action::MeasuredFailed { .. }
+                | Action::FitReady(..)
         )
     }
 

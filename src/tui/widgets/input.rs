@@ -37,6 +37,13 @@ fn render(input: &Input, s: &Setting, theme: &Theme, area: Rect, buf: &mut Buffe
                 44,
             )
         }
+        Purpose::MeasuredPath => (
+            " Load measured data ".to_string(),
+            " force–time CSV, COR table or drop test".to_string(),
+            " file: ".to_string(),
+            " Enter loads · Esc cancels",
+            62,
+        ),
         Purpose::PresetName => {
             let v = |p: Param| sig_trim(s.get(p), 4);
             (

@@ -4,6 +4,7 @@
 
 pub mod confirm;
 pub mod drop;
+pub mod fit;
 pub mod help;
 pub mod input;
 pub mod plot;
