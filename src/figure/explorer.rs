@@ -29,6 +29,10 @@ pub enum Chart {
     CorZeta,
     ForceZeta,
     CorSpeed,
+    /// The models view (crate::figure::models): COR vs speed, force–time, force–indentation.
+    ModelsCorSpeed,
+    ModelsForceTime,
+    ModelsForceIndentation,
 }
 
 impl Chart {
@@ -40,6 +44,9 @@ impl Chart {
             Chart::CorZeta => "cor-zeta",
             Chart::ForceZeta => "force-zeta",
             Chart::CorSpeed => "cor-velocity",
+            Chart::ModelsCorSpeed => "peers-cor-velocity",
+            Chart::ModelsForceTime => "peers-force-time",
+            Chart::ModelsForceIndentation => "peers-force-indentation",
         }
     }
 }
@@ -138,6 +145,11 @@ pub struct Scene<'a> {
     pub pinned: Option<Pinned<'a>>,
     /// The user's measured data, drawn on the charts they belong to.
     pub measured: &'a [MeasuredOverlay],
+    /// The models view's calibrations, once computed for this ball.
+    pub models: Option<&'a super::models::ModelsData>,
+    /// Whether the calibrations for this ball are still out (`models` may be a stale ball's,
+    /// and is then not drawn).
+    pub models_pending: bool,
 }
 
 /// What a chart lacks to be exported (its computation failed, or a sweep is still out), as
@@ -149,6 +161,9 @@ pub fn missing(chart: Chart, scene: &Scene) -> Option<&'static str> {
         Chart::CorSpeed => {
             (scene.speed.is_none() || scene.speed_pending.is_some()).then_some("COR-vs-speed sweep")
         }
+        Chart::ModelsCorSpeed | Chart::ModelsForceTime | Chart::ModelsForceIndentation => {
+            (scene.models.is_none() || scene.models_pending).then_some("calibration of the models")
+        }
     }
 }
 
@@ -158,6 +173,9 @@ pub fn figure(chart: Chart, scene: &Scene) -> Figure {
         Chart::ForceTime | Chart::Hysteresis => history_figure(chart, scene),
         Chart::CorZeta | Chart::ForceZeta => zeta_figure(chart, scene),
         Chart::CorSpeed => speed_figure(scene),
+        Chart::ModelsCorSpeed => super::models::cor_speed(scene),
+        Chart::ModelsForceTime => super::models::force_time(scene),
+        Chart::ModelsForceIndentation => super::models::force_indentation(scene),
     };
     for m in scene.measured.iter().filter(|m| m.chart == chart) {
         fig.series.push(m.series());

@@ -8,6 +8,7 @@
 mod dialogs;
 mod drop;
 mod edit;
+mod models;
 mod scene;
 mod screen;
 mod sweeps;
@@ -62,6 +63,8 @@ pub struct App {
     drop: DropView,
     /// Measured data drawn on the charts (`bouncelab --measured FILE`).
     measured: Vec<crate::figure::explorer::MeasuredOverlay>,
+    /// The models view's calibrations (src/tui/models.rs).
+    models: crate::tui::models::Models,
     /// The first help line shown.
     help_scroll: u16,
     /// The terminal's width and height, once the loop has said (`Action::Resize`).
@@ -104,6 +107,7 @@ impl App {
             save_out: None,
             drop: DropView::new(false),
             measured: Vec::new(),
+            models: Default::default(),
             help_scroll: 0,
             size: None,
         };
@@ -209,7 +213,7 @@ impl App {
         }
         if !matches!(
             action,
-            Action::SpeedReady(..) | Action::Tick(_) | Action::Resize(..)
+            Action::SpeedReady(..) | Action::ModelsReady(..) | Action::Tick(_) | Action::Resize(..)
         ) {
             self.message = None;
         }
@@ -217,7 +221,8 @@ impl App {
             Action::Quit => self.quit = true,
             Action::Resize(w, h) => self.resize(w, h),
             Action::HelpScroll(how) => self.scroll_help(how),
-            Action::NextView | Action::PrevView => self.view = self.view.other(),
+            Action::NextView => self.view = self.view.next(),
+            Action::PrevView => self.view = self.view.prev(),
             Action::ToggleDrop | Action::DropPause | Action::DropReplay | Action::Tick(_) => {
                 self.drop_action(&action)
             }
@@ -226,6 +231,7 @@ impl App {
             ),
             Action::Export => self.export_wanted = true,
             Action::SpeedReady(..)
+            | Action::ModelsReady(..)
             | Action::Exported { .. }
             | Action::ExportFailed { .. }
             | Action::Saved { .. }
@@ -297,6 +303,7 @@ impl App {
     fn answer(&mut self, action: Action) {
         match action {
             Action::SpeedReady(request, result) => self.receive_speed(&request, result),
+            Action::ModelsReady(request, result) => self.receive_models(request, result),
             Action::Exported { files } => self.info(export::message(&files)),
             Action::ExportFailed { msg } => self.error(format!("export failed: {msg}")),
             Action::Saved { path, replaced } => self.saved(&path, replaced),
@@ -357,6 +364,7 @@ impl App {
                 .refresh(&self.setting.params, self.setting.law, preset);
         }
         let mut effects: Vec<Effect> = self.refresh_sweeps().into_iter().collect();
+        effects.extend(self.refresh_models());
         if self.export_wanted {
             effects.extend(self.prepare_export());
         }
@@ -368,6 +376,10 @@ impl App {
     fn prepare_export(&mut self) -> Option<Effect> {
         if !self.speed_wanted.is_empty() {
             self.info("export waits for the COR-vs-speed sweep…".into());
+            return None;
+        }
+        if self.models.wanted.is_some() {
+            self.info("export waits for the models' calibration…".into());
             return None;
         }
         self.export_wanted = false;

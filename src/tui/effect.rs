@@ -16,4 +16,7 @@ pub enum Effect {
     /// Run exactly these COR-vs-speed sweeps in the background, dropping any other that is
     /// out; each finished one comes back as `Action::SpeedReady`.
     Compute(Vec<SpeedRequest>),
+    /// Run exactly these calibrations of the models view in the background (none: drop the
+    /// one that is out); a finished one comes back as `Action::ModelsReady`.
+    ComputeModels(Vec<super::models::ModelsRequest>),
 }

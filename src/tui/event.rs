@@ -7,6 +7,7 @@
 use super::action::{self, Action};
 use super::app::{App, Effect};
 use super::export;
+use super::models::ModelsRequest;
 use super::save;
 use super::worker::Worker;
 use crate::catalog;
@@ -21,7 +22,10 @@ const SWEEP_POLL: Duration = Duration::from_millis(40);
 const FRAME: Duration = Duration::from_millis(33);
 
 pub fn run(terminal: &mut DefaultTerminal, app: &mut App) -> anyhow::Result<()> {
-    let mut worker = Worker::spawn()?;
+    let mut worker = Workers {
+        sweeps: Worker::spawn()?,
+        models: Worker::spawn()?,
+    };
     // test-only (see `crate::fault`): tests/tui_pty.rs checks that the terminal is restored
     // after a panic in here
     let panic_on_key = Fault::PanicInLoop.active();
@@ -35,7 +39,7 @@ pub fn run(terminal: &mut DefaultTerminal, app: &mut App) -> anyhow::Result<()> 
             terminal.draw(|frame| frame.render_widget(&*app, frame.area()))?;
             dirty = false;
         }
-        let waiting = !app.speed_requests().is_empty();
+        let waiting = !app.speed_requests().is_empty() || app.models_request().is_some();
         let animating = app.animating();
         let wait = if animating { FRAME } else { SWEEP_POLL };
         let mut next = if !(waiting || animating) || event::poll(wait)? {
@@ -71,8 +75,12 @@ pub fn run(terminal: &mut DefaultTerminal, app: &mut App) -> anyhow::Result<()> 
             dirty = true;
         }
         clock = now;
-        while let Some((request, result)) = worker.try_recv() {
+        while let Some((request, result)) = worker.sweeps.try_recv() {
             effects.extend(app.apply(Action::SpeedReady(request, result)));
+            dirty = true;
+        }
+        while let Some((request, result)) = worker.models.try_recv() {
+            effects.extend(app.apply(Action::ModelsReady(request, result)));
             dirty = true;
         }
         if dirty {
@@ -82,13 +90,23 @@ pub fn run(terminal: &mut DefaultTerminal, app: &mut App) -> anyhow::Result<()> 
     Ok(())
 }
 
+/// The background threads: COR-vs-speed sweeps, and the models view's calibrations.
+struct Workers {
+    sweeps: Worker,
+    models: Worker<ModelsRequest>,
+}
+
 /// Carry out `effects`, and those the answers to them bring, until none is left.
-fn carry_out(mut effects: Vec<Effect>, app: &mut App, worker: &mut Worker) {
+fn carry_out(mut effects: Vec<Effect>, app: &mut App, worker: &mut Workers) {
     while !effects.is_empty() {
         for effect in std::mem::take(&mut effects) {
             let answer = match effect {
                 Effect::Compute(requests) => {
-                    worker.want(&requests);
+                    worker.sweeps.want(&requests);
+                    continue;
+                }
+                Effect::ComputeModels(requests) => {
+                    worker.models.want(&requests);
                     continue;
                 }
                 Effect::Export(request) => match export::write(&request, &export::dir_from_env()) {

@@ -19,7 +19,7 @@ pub const KEYS: [(&str, &str); 31] = [
     ("u", "undo the last change"),
     ("e", "export this view (SVG + CSV files)"),
     ("s", "save as a user preset (asks a name)"),
-    ("Tab / Shift+Tab", "switch view (impact, sweeps)"),
+    ("Tab / Shift+Tab", "switch view (impact, sweeps, models)"),
     ("d", "drop test (space pauses, b replays)"),
     ("?", "this help (Esc, ? or q closes)"),
     ("q  Esc  Ctrl-C", "quit"),

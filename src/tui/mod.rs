@@ -21,6 +21,7 @@ pub mod event;
 pub mod export;
 pub mod format;
 pub mod keys;
+pub mod models;
 pub mod param;
 pub mod save;
 pub mod setting;

@@ -3,10 +3,12 @@
 //! each chart its figure, built from the state's [`crate::figure::explorer::Scene`].
 
 use super::app::{App, Overlay, View};
+use super::param::Param;
 use super::theme::Theme;
 use super::widgets::confirm::ConfirmDialog;
 use super::widgets::help::Help;
 use super::widgets::input::InputDialog;
+use super::widgets::models::ModelsTable;
 use super::widgets::plot::Plot;
 use super::widgets::readout::{self, Readout};
 use super::widgets::status::{Header, KeyHints};
@@ -48,7 +50,9 @@ pub fn screen(app: &App, area: Rect) -> Option<Screen> {
         Constraint::Length(1),
     ])
     .areas(area);
-    let side_panel = area.width >= SIDE_PANEL_WIDTH && body.height >= readout::PANEL_HEIGHT;
+    // the models view's table always goes beside its charts
+    let side_panel = (area.width >= SIDE_PANEL_WIDTH && body.height >= readout::PANEL_HEIGHT)
+        || app.view() == View::Models;
     let (charts, readout) = if side_panel {
         let w = (area.width * 3 / 10).clamp(32, 40);
         let [c, r] = Layout::horizontal([Constraint::Fill(1), Constraint::Length(w)]).areas(body);
@@ -64,6 +68,7 @@ pub fn screen(app: &App, area: Rect) -> Option<Screen> {
     let charts = match app.view() {
         View::Impact => impact_grid(charts),
         View::Sweeps => sweeps_grid(charts),
+        View::Models => models_grid(charts),
         View::Drop => Vec::new(),
     };
     Some(Screen {
@@ -103,6 +108,33 @@ fn sweeps_grid(area: Rect) -> Vec<(Chart, Rect)> {
         Layout::horizontal([Constraint::Fill(1); 2]).areas(area)
     };
     vec![(Chart::ForceZeta, a), (Chart::CorSpeed, b)]
+}
+
+/// COR vs speed above force–time and force–indentation; all three in a row when short.
+fn models_grid(area: Rect) -> Vec<(Chart, Rect)> {
+    let [cor, ft, fi] = if area.height >= 20 {
+        let [top, bottom] = Layout::vertical([Constraint::Fill(1); 2]).areas(area);
+        let [ft, fi] = Layout::horizontal([Constraint::Fill(1); 2]).areas(bottom);
+        [top, ft, fi]
+    } else {
+        Layout::horizontal([Constraint::Fill(1); 3]).areas(area)
+    };
+    vec![
+        (Chart::ModelsCorSpeed, cor),
+        (Chart::ModelsForceTime, ft),
+        (Chart::ModelsForceIndentation, fi),
+    ]
+}
+
+/// The models view's table of the state.
+fn models_table(app: &App, theme: Theme) -> ModelsTable<'_> {
+    let s = app.setting();
+    ModelsTable {
+        data: app.models(),
+        error: app.models_error(),
+        setting: (s.get(Param::Lambda), s.get(Param::Zeta), s.get(Param::V0)),
+        theme,
+    }
 }
 
 /// The readout's view of the state.
@@ -170,6 +202,8 @@ impl Widget for &App {
                 s.status.y - s.header.bottom(),
             );
             super::widgets::drop::render(self, body, buf);
+        } else if self.view() == View::Models {
+            models_table(self, theme).render(s.readout, buf);
         } else {
             readout(self, s.side_panel, theme).render(s.readout, buf);
         }
