@@ -106,7 +106,10 @@ impl ModelsTable<'_> {
                 lines.push(Line::styled(text, style));
             }
         }
-        lines.push(Line::styled("C C–Y  h H–C α fixed  ◆ target", self.theme.dim()));
+        lines.push(Line::styled(
+            "C C–Y  h H–C α fixed  ◆ target",
+            self.theme.dim(),
+        ));
         lines
     }
 }
