@@ -179,62 +179,60 @@ fn screen_title(title: &str, scene: &Scene) -> String {
     }
 }
 
+/// The COR-vs-speed curves of `d`: Christoforou–Yigit, each peer's exact calibration (flat),
+/// Hunt–Crossley with α fixed, and the calibration point.
+fn cor_series(d: &ModelsData) -> Vec<Series> {
+    let mut series = Vec::new();
+    let cy = d.cy_speed.clone();
+    series.extend(lettered(
+        0,
+        letter(None),
+        "christoforou-yigit",
+        "C–Y model",
+        cy,
+    ));
+    for (k, model) in PeerModel::ALL.into_iter().enumerate() {
+        if let Some(c) = d.exact(model) {
+            let pts = d.cy_speed.iter().map(|p| (p.0, c.response.cor)).collect();
+            let name = format!("{model} (exact)");
+            let key = format!("{} exact", short_name(Some(model)));
+            series.extend(lettered(k + 1, letter(Some(model)), &name, &key, pts));
+        }
+    }
+    let alpha = short(d.hc_alpha, 3);
+    let name = format!("hunt-crossley, fixed α = χ/v0 = {alpha} s/m");
+    let [mut mark, mut line] = lettered(5, FIXED_ALPHA, &name, "H–C α fixed", d.hc_fixed.clone());
+    for s in [&mut mark, &mut line] {
+        s.color = GREY;
+        s.look.tone = Tone::Secondary;
+    }
+    line.id = "hunt-crossley-fixed-alpha".into();
+    mark.id = "hunt-crossley-fixed-alpha letter".into();
+    series.extend([mark, line]);
+    let label = format!(
+        "calibration point (v0 = {} m/s, e = {})",
+        short(d.v0, 3),
+        short(d.target, 4)
+    );
+    let look = Look::new(Tone::Highlight, Some("calibrated here"), Some("◆"));
+    let point = Series::new(
+        &label,
+        "calibration point",
+        Kind::ThisRun,
+        Style::Markers(Marker::Diamond),
+        4,
+    );
+    series.push(point.with_points(vec![(d.v0, d.target)]).with_look(look));
+    series
+}
+
 /// COR against impact speed: the Christoforou–Yigit curve, each peer's exact calibration (flat:
 /// their COR does not depend on v0), Hunt–Crossley with α fixed, the calibration point.
 pub fn cor_speed(scene: &Scene) -> Figure {
     let data = scene.models;
     let v0 = scene.ball.params.v0;
     let (lo, hi) = crate::figure::peers::default_range(&scene.ball.params);
-    let mut series = Vec::new();
-    if let Some(d) = data {
-        series.extend(lettered(
-            0,
-            letter(None),
-            "christoforou-yigit",
-            "C–Y model",
-            d.cy_speed.clone(),
-        ));
-        for (k, model) in PeerModel::ALL.into_iter().enumerate() {
-            if let Some(c) = d.exact(model) {
-                let pts = d.cy_speed.iter().map(|p| (p.0, c.response.cor)).collect();
-                let name = format!("{model} (exact)");
-                let key = format!("{} exact", short_name(Some(model)));
-                series.extend(lettered(k + 1, letter(Some(model)), &name, &key, pts));
-            }
-        }
-        let name = format!(
-            "hunt-crossley, fixed α = χ/v0 = {} s/m",
-            short(d.hc_alpha, 3)
-        );
-        let [mut mark, mut line] =
-            lettered(5, FIXED_ALPHA, &name, "H–C α fixed", d.hc_fixed.clone());
-        for s in [&mut mark, &mut line] {
-            s.color = GREY;
-            s.look.tone = Tone::Secondary;
-        }
-        line.id = "hunt-crossley-fixed-alpha".into();
-        mark.id = "hunt-crossley-fixed-alpha letter".into();
-        series.extend([mark, line]);
-        series.push(
-            Series::new(
-                &format!(
-                    "calibration point (v0 = {} m/s, e = {})",
-                    short(d.v0, 3),
-                    short(d.target, 4)
-                ),
-                "calibration point",
-                Kind::ThisRun,
-                Style::Markers(Marker::Diamond),
-                4,
-            )
-            .with_points(vec![(d.v0, d.target)])
-            .with_look(Look::new(
-                Tone::Highlight,
-                Some("calibrated here"),
-                Some("◆"),
-            )),
-        );
-    }
+    let series = data.map(cor_series).unwrap_or_default();
     let mut fig = Figure::new(
         format!(
             "Contact models calibrated to this ball: {}",

@@ -6,6 +6,7 @@
 use crate::figure::Tone;
 use crate::figure::models::{ModelsData, letter, short_name, short_rule};
 use crate::peers::PeerModel;
+use crate::peers::calibrate::Calibrated;
 use crate::peers::rules::Rule;
 use crate::text::sig;
 use crate::tui::theme::Theme;
@@ -41,6 +42,30 @@ fn damping_unit(model: PeerModel) -> &'static str {
 }
 
 impl ModelsTable<'_> {
+    /// One rule's row: its damping and the COR it gives, with the miss when `miss`;
+    /// highlighted when an approximate rule misses by more than [`MISS_SHOWN`].
+    fn rule_line(&self, c: &Calibrated, target: f64, miss: bool) -> Line<'static> {
+        let e = c.response.cor;
+        let mut text = format!(
+            "  {:<8} {:>9} {:>6}",
+            short_rule(c.rule),
+            sig(c.damping, 4),
+            format!("{e:.4}")
+        );
+        if miss {
+            // rounded first, so that a miss below 0.0005 prints +0.000, not -0.000
+            let delta = ((e - target) * 1e3).round() / 1e3 + 0.0;
+            text.push_str(&format!(" {delta:>+6.3}"));
+        }
+        let off = c.rule != Rule::Exact && (e - target).abs() > MISS_SHOWN;
+        let style = if off {
+            self.theme.warning()
+        } else {
+            Style::default()
+        };
+        Line::styled(text, style)
+    }
+
     fn lines(&self, inner_w: usize) -> Vec<Line<'static>> {
         let (lambda, zeta, v0) = self.setting;
         let mut lines = vec![Line::raw(format!(
@@ -85,25 +110,7 @@ impl ModelsTable<'_> {
                 )),
             ]));
             for c in d.rows.iter().filter(|c| c.model == model) {
-                let e = c.response.cor;
-                let mut text = format!(
-                    "  {:<8} {:>9} {:>6}",
-                    short_rule(c.rule),
-                    sig(c.damping, 4),
-                    format!("{e:.4}")
-                );
-                if miss {
-                    // rounded first, so that a miss below 0.0005 prints +0.000, not -0.000
-                    let delta = ((e - d.target) * 1e3).round() / 1e3 + 0.0;
-                    text.push_str(&format!(" {delta:>+6.3}"));
-                }
-                let off = c.rule != Rule::Exact && (e - d.target).abs() > MISS_SHOWN;
-                let style = if off {
-                    self.theme.warning()
-                } else {
-                    Style::default()
-                };
-                lines.push(Line::styled(text, style));
+                lines.push(self.rule_line(c, d.target, miss));
             }
         }
         lines.push(Line::styled(
