@@ -28,7 +28,7 @@ use std::fs;
 const CHARTS: [Chart; 3] = [
     Chart::ModelsCorSpeed,
     Chart::ModelsForceTime,
-    Chart::ModelsForceIndentation,
+    Chart::ModelsForceDisplacement,
 ];
 
 fn press(app: &mut App, keys: &[KeyCode]) -> Vec<Effect> {
@@ -272,7 +272,7 @@ fn the_export_is_what_is_on_screen() {
         [
             "peers-cor-velocity",
             "peers-force-time",
-            "peers-force-indentation"
+            "peers-force-displacement"
         ]
     );
     for (&chart, (_, fig)) in CHARTS.iter().zip(&request.charts) {

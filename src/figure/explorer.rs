@@ -29,10 +29,10 @@ pub enum Chart {
     CorZeta,
     ForceZeta,
     CorSpeed,
-    /// The models view (crate::figure::models): COR vs speed, force–time, force–indentation.
+    /// The models view (crate::figure::models): COR vs speed, force–time, force–displacement.
     ModelsCorSpeed,
     ModelsForceTime,
-    ModelsForceIndentation,
+    ModelsForceDisplacement,
 }
 
 impl Chart {
@@ -46,7 +46,7 @@ impl Chart {
             Chart::CorSpeed => "cor-velocity",
             Chart::ModelsCorSpeed => "peers-cor-velocity",
             Chart::ModelsForceTime => "peers-force-time",
-            Chart::ModelsForceIndentation => "peers-force-indentation",
+            Chart::ModelsForceDisplacement => "peers-force-displacement",
         }
     }
 }
@@ -161,7 +161,7 @@ pub fn missing(chart: Chart, scene: &Scene) -> Option<&'static str> {
         Chart::CorSpeed => {
             (scene.speed.is_none() || scene.speed_pending.is_some()).then_some("COR-vs-speed sweep")
         }
-        Chart::ModelsCorSpeed | Chart::ModelsForceTime | Chart::ModelsForceIndentation => {
+        Chart::ModelsCorSpeed | Chart::ModelsForceTime | Chart::ModelsForceDisplacement => {
             (scene.models.is_none() || scene.models_pending).then_some("calibration of the models")
         }
     }
@@ -175,7 +175,7 @@ pub fn figure(chart: Chart, scene: &Scene) -> Figure {
         Chart::CorSpeed => speed_figure(scene),
         Chart::ModelsCorSpeed => super::models::cor_speed(scene),
         Chart::ModelsForceTime => super::models::force_time(scene),
-        Chart::ModelsForceIndentation => super::models::force_indentation(scene),
+        Chart::ModelsForceDisplacement => super::models::force_displacement(scene),
     };
     for m in scene.measured.iter().filter(|m| m.chart == chart) {
         fig.series.push(m.series());

@@ -1,7 +1,7 @@
 //! The explorer's models view as [`Figure`]s: the field's contact models (crate::peers)
 //! calibrated exactly to the explorer's ball — its Christoforou–Yigit COR at its v0 — drawn
 //! over the Christoforou–Yigit impact: COR against impact speed (log axis), force against time
-//! and force against the contact indentation. Built from [`ModelsData`], computed beforehand
+//! and force against the ball's displacement toward the wall. Built from [`ModelsData`], computed beforehand
 //! (tui/models.rs, on the background worker); nothing here solves anything.
 //!
 //! Without colour the curves are told apart by a letter each ([`letter`]), printed on the
@@ -268,11 +268,13 @@ pub fn force_time(scene: &Scene) -> Figure {
     fig
 }
 
-/// Force against the contact indentation at v0: the loading and unloading loops.
-pub fn force_indentation(scene: &Scene) -> Figure {
+/// Force against the ball's displacement toward the wall at v0 — the approach δ, the overlap
+/// of a DEM code: the peers' δ (rigid flat), the Christoforou–Yigit ball's α = z + the
+/// element's displacement — with the loading and unloading loops.
+pub fn force_displacement(scene: &Scene) -> Figure {
     let series = curves(scene, scene.models, |r| {
         let h = &r.history;
-        h.indentation
+        h.displacement
             .iter()
             .copied()
             .zip(h.force.iter().copied())
@@ -280,11 +282,11 @@ pub fn force_indentation(scene: &Scene) -> Figure {
     });
     let mut fig = Figure::new(
         format!(
-            "Contact force against indentation, models calibrated: {}",
+            "Contact force against the ball's approach, models calibrated: {}",
             scene.ball.name
         ),
         subtitle(scene, scene.models),
-        Axis::linear("contact indentation δ (mm)", "indentation", 1e3),
+        Axis::linear("ball displacement (approach) δ (mm)", "displacement", 1e3),
         Axis::linear("contact force F (N)", "force", 1.0),
         series,
     );

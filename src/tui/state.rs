@@ -62,7 +62,7 @@ impl View {
             View::Models => &[
                 Chart::ModelsCorSpeed,
                 Chart::ModelsForceTime,
-                Chart::ModelsForceIndentation,
+                Chart::ModelsForceDisplacement,
             ],
             View::Drop => &[],
         }

@@ -110,7 +110,7 @@ fn sweeps_grid(area: Rect) -> Vec<(Chart, Rect)> {
     vec![(Chart::ForceZeta, a), (Chart::CorSpeed, b)]
 }
 
-/// COR vs speed above force–time and force–indentation; all three in a row when short.
+/// COR vs speed above force–time and force–displacement; all three in a row when short.
 fn models_grid(area: Rect) -> Vec<(Chart, Rect)> {
     let [cor, ft, fi] = if area.height >= 20 {
         let [top, bottom] = Layout::vertical([Constraint::Fill(1); 2]).areas(area);
@@ -122,7 +122,7 @@ fn models_grid(area: Rect) -> Vec<(Chart, Rect)> {
     vec![
         (Chart::ModelsCorSpeed, cor),
         (Chart::ModelsForceTime, ft),
-        (Chart::ModelsForceIndentation, fi),
+        (Chart::ModelsForceDisplacement, fi),
     ]
 }
 

@@ -117,6 +117,13 @@ impl ModelsTable<'_> {
             "C C–Y  h H–C α fixed  ◆ target",
             self.theme.dim(),
         ));
+        // notes, where there is room (a short panel cuts them off)
+        lines.push(Line::raw(""));
+        if miss {
+            lines.push(Line::raw("Δe: the rule's COR − the target"));
+        }
+        lines.push(Line::raw("for a DEM code's input file:"));
+        lines.push(Line::raw("bouncelab peers --export CODE"));
         lines
     }
 }
