@@ -277,15 +277,17 @@ fn the_export_is_what_is_on_screen() {
     );
     for (&chart, (_, fig)) in CHARTS.iter().zip(&request.charts) {
         assert_eq!(fig, &ui::figure(&app, chart), "{chart:?}");
-        // every model is in it, with its letter
+        // every model is in it, under the ids of `bouncelab figure peers-*`, with its letter
         for id in [
             "christoforou-yigit",
-            "kelvin-voigt (exact)",
-            "kelvin-voigt-no-tension (exact)",
-            "tsuji (exact)",
-            "hunt-crossley (exact)",
+            "kelvin-voigt",
+            "kelvin-voigt-no-tension",
+            "tsuji",
+            "hunt-crossley",
         ] {
             assert!(fig.series.iter().any(|s| s.id == id), "{id} in {chart:?}");
+            let letter = format!("{id} letter");
+            assert!(fig.series.iter().any(|s| s.id == letter), "{letter}");
         }
     }
     let dir = tempfile::tempdir().unwrap();

@@ -91,8 +91,10 @@ fn colors(k: usize) -> (Tone, usize) {
 /// A curve and its letter: the line (legend label `"<letter>: <name>"` in the SVG), and one
 /// marker printing the letter at fraction `0.1 + 0.16 k` along it, so that the letters of
 /// different curves sit apart. The marker comes first: the terminal legend then shows the
-/// letter in front of the key.
+/// letter in front of the key. The line's CSV id is the model's name, as in
+/// `bouncelab figure peers-*` (`name` without " (exact)"); the marker's `"<id> letter"`.
 fn lettered(k: usize, letter: &str, name: &str, key: &str, pts: Vec<(f64, f64)>) -> [Series; 2] {
+    let id = name.strip_suffix(" (exact)").unwrap_or(name);
     let (tone, color) = colors(k);
     let style = [Style::Solid, Style::Dashed, Style::Dotted][k % 3];
     let at = ((0.1 + 0.16 * k as f64) * pts.len() as f64) as usize;
@@ -103,7 +105,7 @@ fn lettered(k: usize, letter: &str, name: &str, key: &str, pts: Vec<(f64, f64)>)
         .collect();
     let mut mark = Series::new(
         "",
-        &format!("{name} letter"),
+        &format!("{id} letter"),
         Kind::Model,
         Style::Markers(Marker::Square),
         color,
@@ -111,15 +113,9 @@ fn lettered(k: usize, letter: &str, name: &str, key: &str, pts: Vec<(f64, f64)>)
     .with_points(mark_at)
     .with_look(Look::new(tone, Some(key), Some(letter)));
     mark.annotations = vec![letter.to_string()];
-    let line = Series::new(
-        &format!("{letter}: {name}"),
-        name,
-        Kind::Model,
-        style,
-        color,
-    )
-    .with_points(pts)
-    .with_look(Look::new(tone, Some(key), None));
+    let line = Series::new(&format!("{letter}: {name}"), id, Kind::Model, style, color)
+        .with_points(pts)
+        .with_look(Look::new(tone, Some(key), None));
     [mark, line]
 }
 
