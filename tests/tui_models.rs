@@ -360,3 +360,44 @@ fn the_damping_on_screen_is_what_bouncelab_peers_gives() {
         assert!(data.exact(PeerModel::Tsuji).is_some());
     }
 }
+
+/// Tab goes impact → sweeps → models → impact, Shift+Tab the other way; from the drop view
+/// both go to the impact view.
+#[test]
+fn the_tab_cycle_holds_the_models_view() {
+    let mut app = App::new(Preset::embedded().remove(0), true);
+    let mut seen = vec![app.view()];
+    for _ in 0..3 {
+        press(&mut app, &[KeyCode::Tab]);
+        seen.push(app.view());
+    }
+    assert_eq!(
+        seen,
+        [View::Impact, View::Sweeps, View::Models, View::Impact]
+    );
+    press(&mut app, &[KeyCode::BackTab]);
+    assert_eq!(app.view(), View::Models);
+    press(&mut app, &[KeyCode::BackTab]);
+    assert_eq!(app.view(), View::Sweeps);
+    for key in [KeyCode::Tab, KeyCode::BackTab] {
+        press(&mut app, &[KeyCode::Char('d')]);
+        assert_eq!(app.view(), View::Drop);
+        press(&mut app, &[key]);
+        assert_eq!(app.view(), View::Impact);
+    }
+}
+
+/// Every size draws without a panic, down to the "enlarge" message, and nothing on screen is
+/// NaN or infinite.
+#[test]
+fn every_size_draws() {
+    let app = models_view(2, false);
+    for w in (1..=130).step_by(3) {
+        for h in (1..=45).step_by(2) {
+            let s = text(draw(&app, w, h).backend().buffer());
+            for bad in ["NaN", "nan", "inf"] {
+                assert!(!s.contains(bad), "{bad} at {w}×{h}:\n{s}");
+            }
+        }
+    }
+}

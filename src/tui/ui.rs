@@ -110,19 +110,21 @@ fn sweeps_grid(area: Rect) -> Vec<(Chart, Rect)> {
     vec![(Chart::ForceZeta, a), (Chart::CorSpeed, b)]
 }
 
-/// COR vs speed above force–time and force–displacement; all three in a row when short.
+/// COR vs speed above force–time and force–displacement; all three in a row when short. (The
+/// table beside them leaves the charts narrow on small terminals: stacked, each keeps a plot
+/// down to 12 rows.)
 fn models_grid(area: Rect) -> Vec<(Chart, Rect)> {
-    let [cor, ft, fi] = if area.height >= 20 {
+    let [cor, ft, fd] = if area.height >= 12 {
         let [top, bottom] = Layout::vertical([Constraint::Fill(1); 2]).areas(area);
-        let [ft, fi] = Layout::horizontal([Constraint::Fill(1); 2]).areas(bottom);
-        [top, ft, fi]
+        let [ft, fd] = Layout::horizontal([Constraint::Fill(1); 2]).areas(bottom);
+        [top, ft, fd]
     } else {
         Layout::horizontal([Constraint::Fill(1); 3]).areas(area)
     };
     vec![
         (Chart::ModelsCorSpeed, cor),
         (Chart::ModelsForceTime, ft),
-        (Chart::ModelsForceDisplacement, fi),
+        (Chart::ModelsForceDisplacement, fd),
     ]
 }
 
