@@ -15,7 +15,8 @@
 //! `worker` is what the explorer's UI thread does (the sweep goes to the background worker;
 //! `update` only returns it as an `Effect::Compute`). Two more cases run `l` under the
 //! elastic–plastic law, whose impacts take the adaptive solver (the ζ curves stay linear, as
-//! in the paper).
+//! in the paper). On the models view, `worker` is what the UI thread does when the key sends
+//! the calibration of the peer models to their background worker.
 //!
 //! Drawing includes building each chart's figure from the state (`crate::figure::explorer`),
 //! as the explorer does on every frame.
@@ -56,6 +57,7 @@ impl fmt::Display for Case {
         let view = match self.view {
             View::Impact => "impact",
             View::Sweeps => "sweeps",
+            View::Models => "models",
             View::Drop => "drop",
         };
         let key = match self.param {
@@ -65,8 +67,8 @@ impl fmt::Display for Case {
         };
         let how = match (self.view, self.worker) {
             (View::Impact | View::Drop, _) => "",
-            (View::Sweeps, false) => " sync",
-            (View::Sweeps, true) => " worker",
+            (View::Sweeps | View::Models, false) => " sync",
+            (View::Sweeps | View::Models, true) => " worker",
         };
         let law = if self.plastic { " e-p law" } else { "" };
         write!(f, "{view} {key}{how}{law}")
@@ -88,7 +90,7 @@ const fn case(view: View, param: Param, worker: bool, plastic: bool) -> Case {
     }
 }
 
-const CASES: [Case; 8] = [
+const CASES: [Case; 9] = [
     case(View::Impact, Param::Lambda, false, false),
     case(View::Impact, Param::V0, false, false),
     case(View::Sweeps, Param::Lambda, false, false),
@@ -97,6 +99,7 @@ const CASES: [Case; 8] = [
     case(View::Sweeps, Param::V0, true, false),
     case(View::Impact, Param::Lambda, false, true),
     case(View::Sweeps, Param::Lambda, false, true),
+    case(View::Models, Param::Lambda, true, false),
 ];
 
 /// The superball on the case's view, everything on screen up to date.
@@ -107,6 +110,9 @@ fn start(c: Case) -> App {
     }
     if c.view == View::Sweeps {
         app.update(Action::NextView);
+    }
+    if c.view == View::Models {
+        app.update(Action::PrevView);
     }
     if c.worker {
         app = app.with_background_sweeps();

@@ -34,6 +34,13 @@ pub enum Chart {
     ForceZeta,
     /// COR against impact speed (Fig. 4).
     CorSpeed,
+    /// The models view (crate::figure::models): COR against impact speed of every calibrated
+    /// model.
+    ModelsCorSpeed,
+    /// The models view: force against time of every calibrated model at v0.
+    ModelsForceTime,
+    /// The models view: force against the ball's approach of every calibrated model at v0.
+    ModelsForceDisplacement,
 }
 
 impl Chart {
@@ -45,6 +52,9 @@ impl Chart {
             Chart::CorZeta => "cor-zeta",
             Chart::ForceZeta => "force-zeta",
             Chart::CorSpeed => "cor-velocity",
+            Chart::ModelsCorSpeed => "peers-cor-velocity",
+            Chart::ModelsForceTime => "peers-force-time",
+            Chart::ModelsForceDisplacement => "peers-force-displacement",
         }
     }
 }
@@ -158,6 +168,11 @@ pub struct Scene<'a> {
     pub pinned: Option<Pinned<'a>>,
     /// The user's measured data, drawn on the charts they belong to.
     pub measured: &'a [MeasuredOverlay],
+    /// The models view's calibrations, once computed for this ball.
+    pub models: Option<&'a super::models::ModelsData>,
+    /// Whether the calibrations for this ball are still out (`models` may be a stale ball's,
+    /// and is then not drawn).
+    pub models_pending: bool,
 }
 
 /// What a chart lacks to be exported (its computation failed, or a sweep is still out), as
@@ -169,6 +184,9 @@ pub fn missing(chart: Chart, scene: &Scene) -> Option<&'static str> {
         Chart::CorSpeed => {
             (scene.speed.is_none() || scene.speed_pending.is_some()).then_some("COR-vs-speed sweep")
         }
+        Chart::ModelsCorSpeed | Chart::ModelsForceTime | Chart::ModelsForceDisplacement => {
+            (scene.models.is_none() || scene.models_pending).then_some("calibration of the models")
+        }
     }
 }
 
@@ -178,6 +196,9 @@ pub fn figure(chart: Chart, scene: &Scene) -> Figure {
         Chart::ForceTime | Chart::Hysteresis => history_figure(chart, scene),
         Chart::CorZeta | Chart::ForceZeta => zeta_figure(chart, scene),
         Chart::CorSpeed => speed_figure(scene),
+        Chart::ModelsCorSpeed => super::models::cor_speed(scene),
+        Chart::ModelsForceTime => super::models::force_time(scene),
+        Chart::ModelsForceDisplacement => super::models::force_displacement(scene),
     };
     for m in scene.measured.iter().filter(|m| m.chart == chart) {
         fig.series.push(m.series());

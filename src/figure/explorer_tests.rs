@@ -28,6 +28,8 @@ fn a_scene_without_results_draws_frames_and_says_what_is_missing() {
         speed_pending: Some(20.0),
         pinned: None,
         measured: &[],
+        models: None,
+        models_pending: false,
     };
     let ft = figure(Chart::ForceTime, &scene);
     assert!(ft.series.is_empty());
@@ -64,6 +66,8 @@ fn zeta_charts_show_the_decades_and_mark_the_current_lambda() {
         speed_pending: None,
         pinned: None,
         measured: &[],
+        models: None,
+        models_pending: false,
     };
     let fig = figure(Chart::CorZeta, &scene);
     assert_eq!(fig.x.range, Some((0.01, 100.0)));

@@ -83,7 +83,7 @@ pub fn exact(model: PeerModel, target: f64) -> Result<f64, PeerError> {
 }
 
 /// One model calibrated by one rule, run at the ball's v0.
-#[derive(Debug, Clone)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct Calibrated {
     /// The peer model.
     pub model: PeerModel,

@@ -51,6 +51,11 @@ pub enum Action {
     Resize(u16, u16),
     /// A COR-vs-speed sweep finished (from the background worker).
     SpeedReady(SpeedRequest, Result<SpeedCurve, String>),
+    /// The models view's calibrations finished (from their background worker).
+    ModelsReady(
+        super::models::ModelsRequest,
+        Result<crate::figure::models::ModelsData, String>,
+    ),
     /// Export the current view's charts (SVG + CSV each): `update` prepares an
     /// [`super::export::ExportRequest`], the event loop writes it.
     Export,

@@ -9,6 +9,7 @@ mod dialogs;
 mod drop;
 mod edit;
 mod fit;
+mod models;
 mod scene;
 mod screen;
 mod sweeps;
@@ -69,6 +70,8 @@ pub struct App {
     fit: Option<super::measured::FitPane>,
     /// The id of the last fit asked for.
     fit_id: u64,
+    /// The models view's calibrations (src/tui/models.rs).
+    models: crate::tui::models::Models,
     /// The first help line shown.
     help_scroll: u16,
     /// The terminal's width and height, once the loop has said (`Action::Resize`).
@@ -114,6 +117,7 @@ impl App {
             loaded: None,
             fit: None,
             fit_id: 0,
+            models: Default::default(),
             help_scroll: 0,
             size: None,
         };
@@ -219,7 +223,11 @@ impl App {
         }
         if !matches!(
             action,
-            Action::SpeedReady(..) | Action::Tick(_) | Action::Resize(..) | Action::FitReady(..)
+            Action::SpeedReady(..)
+                | Action::ModelsReady(..)
+                | Action::Tick(_)
+                | Action::Resize(..)
+                | Action::FitReady(..)
         ) {
             self.message = None;
         }
@@ -227,7 +235,8 @@ impl App {
             Action::Quit => self.quit = true,
             Action::Resize(w, h) => self.resize(w, h),
             Action::HelpScroll(how) => self.scroll_help(how),
-            Action::NextView | Action::PrevView => self.view = self.view.other(),
+            Action::NextView => self.view = self.view.next(),
+            Action::PrevView => self.view = self.view.prev(),
             Action::ToggleDrop | Action::DropPause | Action::DropReplay | Action::Tick(_) => {
                 self.drop_action(&action)
             }
@@ -236,6 +245,7 @@ impl App {
             ),
             Action::Export => self.export_wanted = true,
             Action::SpeedReady(..)
+            | Action::ModelsReady(..)
             | Action::Exported { .. }
             | Action::ExportFailed { .. }
             | Action::Saved { .. }
@@ -314,6 +324,7 @@ impl App {
     fn answer(&mut self, action: Action) {
         match action {
             Action::SpeedReady(request, result) => self.receive_speed(&request, result),
+            Action::ModelsReady(request, result) => self.receive_models(request, result),
             Action::Exported { files } => self.info(export::message(&files)),
             Action::ExportFailed { msg } => self.error(format!("export failed: {msg}")),
             Action::Saved { path, replaced } => self.saved(&path, replaced),
@@ -374,6 +385,7 @@ impl App {
                 .refresh(&self.setting.params, self.setting.law, preset);
         }
         let mut effects: Vec<Effect> = self.refresh_sweeps().into_iter().collect();
+        effects.extend(self.refresh_models());
         if self.export_wanted {
             effects.extend(self.prepare_export());
         }
@@ -385,6 +397,10 @@ impl App {
     fn prepare_export(&mut self) -> Option<Effect> {
         if !self.speed_wanted.is_empty() {
             self.info("export waits for the COR-vs-speed sweep…".into());
+            return None;
+        }
+        if self.models.wanted.is_some() {
+            self.info("export waits for the models' calibration…".into());
             return None;
         }
         self.export_wanted = false;

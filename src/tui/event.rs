@@ -9,6 +9,7 @@ use super::action::{self, Action};
 use super::app::{App, Effect};
 use super::export;
 use super::fit_worker::FitWorker;
+use super::models::ModelsRequest;
 use super::save;
 use super::worker::Worker;
 use crate::catalog;
@@ -23,8 +24,11 @@ const SWEEP_POLL: Duration = Duration::from_millis(40);
 const FRAME: Duration = Duration::from_millis(33);
 
 pub fn run(terminal: &mut DefaultTerminal, app: &mut App) -> anyhow::Result<()> {
-    let mut worker = Worker::spawn()?;
-    let fits = FitWorker::spawn()?;
+    let mut worker = Workers {
+        sweeps: Worker::spawn()?,
+        models: Worker::spawn()?,
+        fits: FitWorker::spawn()?,
+    };
     // test-only (see `crate::fault`): tests/tui_pty.rs checks that the terminal is restored
     // after a panic in here
     let panic_on_key = Fault::PanicInLoop.active();
@@ -33,12 +37,13 @@ pub fn run(terminal: &mut DefaultTerminal, app: &mut App) -> anyhow::Result<()> 
     let mut dirty = true;
     let mut clock = Instant::now();
     while !app.should_quit() {
-        carry_out(std::mem::take(&mut effects), app, &mut worker, &fits);
+        carry_out(std::mem::take(&mut effects), app, &mut worker);
         if dirty {
             terminal.draw(|frame| frame.render_widget(&*app, frame.area()))?;
             dirty = false;
         }
-        let waiting = !app.speed_requests().is_empty() || app.fitting();
+        let waiting =
+            !app.speed_requests().is_empty() || app.models_request().is_some() || app.fitting();
         let animating = app.animating();
         let wait = if animating { FRAME } else { SWEEP_POLL };
         let mut next = if !(waiting || animating) || event::poll(wait)? {
@@ -74,11 +79,15 @@ pub fn run(terminal: &mut DefaultTerminal, app: &mut App) -> anyhow::Result<()> 
             dirty = true;
         }
         clock = now;
-        while let Some((request, result)) = worker.try_recv() {
+        while let Some((request, result)) = worker.sweeps.try_recv() {
             effects.extend(app.apply(Action::SpeedReady(request, result)));
             dirty = true;
         }
-        while let Some((id, result)) = fits.try_recv() {
+        while let Some((request, result)) = worker.models.try_recv() {
+            effects.extend(app.apply(Action::ModelsReady(request, result)));
+            dirty = true;
+        }
+        while let Some((id, result)) = worker.fits.try_recv() {
             effects.extend(app.apply(Action::FitReady(id, result)));
             dirty = true;
         }
@@ -89,13 +98,24 @@ pub fn run(terminal: &mut DefaultTerminal, app: &mut App) -> anyhow::Result<()> 
     Ok(())
 }
 
+/// The background threads: COR-vs-speed sweeps, the models view's calibrations, the fits.
+struct Workers {
+    sweeps: Worker,
+    models: Worker<ModelsRequest>,
+    fits: FitWorker,
+}
+
 /// Carry out `effects`, and those the answers to them bring, until none is left.
-fn carry_out(mut effects: Vec<Effect>, app: &mut App, worker: &mut Worker, fits: &FitWorker) {
+fn carry_out(mut effects: Vec<Effect>, app: &mut App, worker: &mut Workers) {
     while !effects.is_empty() {
         for effect in std::mem::take(&mut effects) {
             let answer = match effect {
                 Effect::Compute(requests) => {
-                    worker.want(&requests);
+                    worker.sweeps.want(&requests);
+                    continue;
+                }
+                Effect::ComputeModels(requests) => {
+                    worker.models.want(&requests);
                     continue;
                 }
                 Effect::Export(request) => match export::write(&request, &export::dir_from_env()) {
@@ -106,7 +126,7 @@ fn carry_out(mut effects: Vec<Effect>, app: &mut App, worker: &mut Worker, fits:
                     save::write(&request, catalog::user_presets_dir().as_deref())
                 }
                 Effect::Fit(request) => {
-                    fits.want(request);
+                    worker.fits.want(request);
                     continue;
                 }
                 Effect::LoadMeasured(path) => match super::measured::load(&path) {

@@ -19,7 +19,7 @@ pub const KEYS: [(&str, &str); 33] = [
     ("u", "undo the last change"),
     ("e", "export this view (SVG + CSV files)"),
     ("s", "save as a user preset (asks a name)"),
-    ("Tab / Shift+Tab", "switch view (impact, sweeps)"),
+    ("Tab / Shift+Tab", "switch view (impact, sweeps, models)"),
     ("d", "drop test (space pauses, b replays)"),
     ("o / O", "load measured data / put it away"),
     ("f / F", "fit the ball to it / apply the fit"),

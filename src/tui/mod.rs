@@ -7,7 +7,8 @@
 //! [`widgets`] draw it, each from the few things it shows — a chart from its figure
 //! (`crate::figure::explorer`), the same one the export writes; [`export`] writes the current
 //! view's figures as SVG and CSV files (`e`) and [`save`] the current setting as a user preset
-//! file (`s`): in both `update` only asks, the loop writes.
+//! file (`s`): in both `update` only asks, the loop writes. The COR-vs-speed sweeps and the
+//! models view's calibrations ([`models`]) run on background [`worker`]s.
 //!
 //! The modules import each other without a cycle (tests/tui_imports.rs): state below
 //! `update`, widgets and the loop above it.
@@ -23,6 +24,7 @@ pub mod fit_worker;
 pub mod format;
 pub mod keys;
 pub mod measured;
+pub mod models;
 pub mod param;
 pub mod save;
 pub mod setting;

@@ -20,6 +20,8 @@ pub enum View {
     Impact,
     /// Normalized peak force vs ζ, COR vs impact speed.
     Sweeps,
+    /// The field's contact models calibrated to the ball (src/tui/models.rs).
+    Models,
     /// The drop test (`d`, outside the Tab cycle): src/tui/drop_view.rs.
     Drop,
 }
@@ -27,16 +29,28 @@ pub enum View {
 impl View {
     pub fn title(self) -> &'static str {
         match self {
-            View::Impact => "1/2 impact",
-            View::Sweeps => "2/2 sweeps",
+            View::Impact => "1/3 impact",
+            View::Sweeps => "2/3 sweeps",
+            View::Models => "3/3 models",
             View::Drop => "drop test",
         }
     }
 
-    pub fn other(self) -> View {
+    /// The view `Tab` goes to; from the drop view, the impact view.
+    pub fn next(self) -> View {
         match self {
             View::Impact => View::Sweeps,
+            View::Sweeps => View::Models,
+            View::Models | View::Drop => View::Impact,
+        }
+    }
+
+    /// The view `Shift+Tab` goes to; from the drop view, the impact view.
+    pub fn prev(self) -> View {
+        match self {
+            View::Impact => View::Models,
             View::Sweeps | View::Drop => View::Impact,
+            View::Models => View::Sweeps,
         }
     }
 
@@ -45,6 +59,11 @@ impl View {
         match self {
             View::Impact => &[Chart::ForceTime, Chart::Hysteresis, Chart::CorZeta],
             View::Sweeps => &[Chart::ForceZeta, Chart::CorSpeed],
+            View::Models => &[
+                Chart::ModelsCorSpeed,
+                Chart::ModelsForceTime,
+                Chart::ModelsForceDisplacement,
+            ],
             View::Drop => &[],
         }
     }

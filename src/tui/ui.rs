@@ -3,11 +3,13 @@
 //! each chart its figure, built from the state's [`crate::figure::explorer::Scene`].
 
 use super::app::{App, Overlay, View};
+use super::param::Param;
 use super::theme::Theme;
 use super::widgets::confirm::ConfirmDialog;
 use super::widgets::fit::FitView;
 use super::widgets::help::Help;
 use super::widgets::input::InputDialog;
+use super::widgets::models::ModelsTable;
 use super::widgets::plot::Plot;
 use super::widgets::readout::{self, Readout};
 use super::widgets::status::{Header, KeyHints};
@@ -51,7 +53,9 @@ pub fn screen(app: &App, area: Rect) -> Option<Screen> {
         Constraint::Length(1),
     ])
     .areas(area);
-    let side_panel = area.width >= SIDE_PANEL_WIDTH && body.height >= readout::PANEL_HEIGHT;
+    // the models view's table always goes beside its charts
+    let side_panel = (area.width >= SIDE_PANEL_WIDTH && body.height >= readout::PANEL_HEIGHT)
+        || app.view() == View::Models;
     let (charts, readout) = if side_panel {
         let w = (area.width * 3 / 10).clamp(32, 40);
         let [c, r] = Layout::horizontal([Constraint::Fill(1), Constraint::Length(w)]).areas(body);
@@ -68,6 +72,7 @@ pub fn screen(app: &App, area: Rect) -> Option<Screen> {
     let charts = match app.view() {
         View::Impact => impact_grid(charts),
         View::Sweeps => sweeps_grid(charts),
+        View::Models => models_grid(charts),
         View::Drop => Vec::new(),
     };
     Some(Screen {
@@ -130,6 +135,35 @@ fn sweeps_grid(area: Rect) -> Vec<(Chart, Rect)> {
         Layout::horizontal([Constraint::Fill(1); 2]).areas(area)
     };
     vec![(Chart::ForceZeta, a), (Chart::CorSpeed, b)]
+}
+
+/// COR vs speed above force–time and force–displacement; all three in a row when short. (The
+/// table beside them leaves the charts narrow on small terminals: stacked, each keeps a plot
+/// down to 12 rows.)
+fn models_grid(area: Rect) -> Vec<(Chart, Rect)> {
+    let [cor, ft, fd] = if area.height >= 12 {
+        let [top, bottom] = Layout::vertical([Constraint::Fill(1); 2]).areas(area);
+        let [ft, fd] = Layout::horizontal([Constraint::Fill(1); 2]).areas(bottom);
+        [top, ft, fd]
+    } else {
+        Layout::horizontal([Constraint::Fill(1); 3]).areas(area)
+    };
+    vec![
+        (Chart::ModelsCorSpeed, cor),
+        (Chart::ModelsForceTime, ft),
+        (Chart::ModelsForceDisplacement, fd),
+    ]
+}
+
+/// The models view's table of the state.
+fn models_table(app: &App, theme: Theme) -> ModelsTable<'_> {
+    let s = app.setting();
+    ModelsTable {
+        data: app.models(),
+        error: app.models_error(),
+        setting: (s.get(Param::Lambda), s.get(Param::Zeta), s.get(Param::V0)),
+        theme,
+    }
 }
 
 /// The readout's view of the state.
@@ -197,6 +231,8 @@ impl Widget for &App {
                 s.status.y - s.header.bottom(),
             );
             super::widgets::drop::render(self, body, buf);
+        } else if self.view() == View::Models {
+            models_table(self, theme).render(s.readout, buf);
         } else {
             readout(self, s.side_panel, theme).render(s.readout, buf);
         }

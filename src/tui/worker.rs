@@ -1,23 +1,39 @@
 //! A background thread for the COR-vs-speed sweeps: in some corners of the parameter space
 //! (λ ≈ 0, ζ ≫ 1, nonlinear law: the ball sinks into the dashpot) a sweep takes seconds even in
 //! release builds. The explorer stays responsive meanwhile, and a sweep the user has moved past
-//! is abandoned between two speeds. Results come back as `Action::SpeedReady`.
+//! is abandoned between two speeds. Results come back as `Action::SpeedReady`. The models
+//! view's calibrations ([`super::models::ModelsRequest`]) run on a second worker of the same
+//! kind and come back as `Action::ModelsReady`.
 
 use super::compute::{SpeedCurve, SpeedRequest};
 use std::sync::mpsc::{self, Receiver, Sender, TryRecvError};
 use std::thread;
 
-/// A finished sweep and what it was for.
-pub type Reply = (SpeedRequest, Result<SpeedCurve, String>);
-
-pub struct Worker {
-    jobs: Sender<Vec<SpeedRequest>>,
-    replies: Receiver<Reply>,
-    sent: Vec<SpeedRequest>,
+/// Work a [`Worker`] does: equal jobs give equal results, so the job is its result's key.
+pub trait Job: Clone + PartialEq + Send + 'static {
+    type Output: Send + 'static;
+    /// The job, asking `go_on` between its steps; `None` when it said stop.
+    fn run_while(&self, go_on: &mut dyn FnMut() -> bool) -> Option<Result<Self::Output, String>>;
 }
 
-impl Worker {
-    pub fn spawn() -> std::io::Result<Worker> {
+impl Job for SpeedRequest {
+    type Output = SpeedCurve;
+    fn run_while(&self, go_on: &mut dyn FnMut() -> bool) -> Option<Result<SpeedCurve, String>> {
+        SpeedRequest::run_while(self, go_on)
+    }
+}
+
+/// A finished job and what it was for.
+pub type Reply<J = SpeedRequest> = (J, Result<<J as Job>::Output, String>);
+
+pub struct Worker<J: Job = SpeedRequest> {
+    jobs: Sender<Vec<J>>,
+    replies: Receiver<Reply<J>>,
+    sent: Vec<J>,
+}
+
+impl<J: Job> Worker<J> {
+    pub fn spawn() -> std::io::Result<Worker<J>> {
         let (jobs, inbox) = mpsc::channel();
         let (outbox, replies) = mpsc::channel();
         thread::Builder::new()
@@ -31,7 +47,7 @@ impl Worker {
     }
 
     /// Ask for exactly these sweeps: what was asked before and is not among them is dropped.
-    pub fn want(&mut self, requests: &[SpeedRequest]) {
+    pub fn want(&mut self, requests: &[J]) {
         if requests != self.sent.as_slice() {
             self.sent = requests.to_vec();
             // a send fails only when the thread is gone; the explorer then waits in vain for a
@@ -40,13 +56,13 @@ impl Worker {
         }
     }
 
-    pub fn try_recv(&self) -> Option<Reply> {
+    pub fn try_recv(&self) -> Option<Reply<J>> {
         self.replies.try_recv().ok()
     }
 }
 
-fn serve(inbox: &Receiver<Vec<SpeedRequest>>, outbox: &Sender<Reply>) {
-    let mut queue: Vec<SpeedRequest> = Vec::new();
+fn serve<J: Job>(inbox: &Receiver<Vec<J>>, outbox: &Sender<Reply<J>>) {
+    let mut queue: Vec<J> = Vec::new();
     loop {
         if queue.is_empty() {
             match inbox.recv() {
@@ -58,7 +74,7 @@ fn serve(inbox: &Receiver<Vec<SpeedRequest>>, outbox: &Sender<Reply>) {
         let request = queue.remove(0);
         let mut latest = None;
         let mut gone = false;
-        let result = request.run_while(|| {
+        let result = request.run_while(&mut || {
             loop {
                 match inbox.try_recv() {
                     Ok(q) => latest = Some(q),

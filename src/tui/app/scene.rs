@@ -70,6 +70,8 @@ impl App {
                 speed: g.speed.as_ref().map(speed),
             }),
             measured: &self.measured,
+            models: self.models(),
+            models_pending: self.models.wanted.is_some(),
         }
     }
 }

@@ -7,6 +7,7 @@ pub mod drop;
 pub mod fit;
 pub mod help;
 pub mod input;
+pub mod models;
 pub mod plot;
 pub mod readout;
 pub mod status;
