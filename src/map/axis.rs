@@ -115,9 +115,11 @@ impl Axis {
         let [from, to, n] = parts[..] else {
             return Err(bad("expected FROM:TO:N, e.g. 0.01:100:200"));
         };
+        // `-0` reads as 0, so that no `-0` reaches an output
         let num = |s: &str, what: &str| {
             s.trim()
                 .parse::<f64>()
+                .map(|x| x + 0.0)
                 .map_err(|_| bad(&format!("{what} '{s}' is not a number")))
         };
         let (from, to) = (num(from, "FROM")?, num(to, "TO")?);
