@@ -3,13 +3,14 @@
 //!
 //! Source: the `_viridis_data` table of matplotlib's colormaps by Nathaniel J. Smith, Stéfan
 //! van der Walt and Eric Firing (2015, released CC0; matplotlib `_cm_listed.py`). Its 256
-//! entries are sampled here every 16th (entries 0, 16, …, 240) and the last (255), as
-//! published, and interpolated linearly between: the table's own steps are near-linear in
-//! sRGB at that spacing (the largest difference of the interpolation from a published entry is
-//! below one 8-bit level, `anchors_interpolate_the_published_entries` below).
+//! entries are sampled here every 16th (entries 0, 16, …, 240), then 248 (where the blue
+//! channel dips and turns) and the last (255), as published, and interpolated linearly
+//! between: the published entries between anchors are met within two 8-bit levels
+//! (`anchors_interpolate_the_published_entries` below; the largest, 1.8 levels of red, is
+//! near entry 152 where red turns), far below a visible step.
 
 /// (entry of the 256-entry table, sRGB in 0 … 1).
-const ANCHORS: [(u8, [f64; 3]); 17] = [
+const ANCHORS: [(u8, [f64; 3]); 18] = [
     (0, [0.267004, 0.004874, 0.329415]),
     (16, [0.282327, 0.094955, 0.417331]),
     (32, [0.278826, 0.175490, 0.483397]),
@@ -26,6 +27,7 @@ const ANCHORS: [(u8, [f64; 3]); 17] = [
     (208, [0.515992, 0.831158, 0.294279]),
     (224, [0.678489, 0.863742, 0.189503]),
     (240, [0.845561, 0.887322, 0.099702]),
+    (248, [0.926106, 0.897330, 0.104071]),
     (255, [0.993248, 0.906157, 0.143936]),
 ];
 
@@ -47,22 +49,25 @@ pub fn viridis(t: f64) -> (u8, u8, u8) {
 mod tests {
     use super::*;
 
-    /// Published entries between the anchors (matplotlib's table), within one 8-bit level.
+    /// Published entries between the anchors (matplotlib's table), within two 8-bit levels.
     #[test]
     fn anchors_interpolate_the_published_entries() {
         let published = [
             (8, [0.277018, 0.050344, 0.375715]),
             (72, [0.214298, 0.355619, 0.551184]),
             (136, [0.120565, 0.596422, 0.543611]),
+            (152, [0.132268, 0.655014, 0.519661]),
+            (168, [0.196571, 0.711827, 0.479221]),
             (200, [0.440137, 0.811138, 0.340967]),
-            (248, [0.926106, 0.897330, 0.104071]),
+            (244, [0.886271, 0.892374, 0.095374]),
+            (252, [0.964894, 0.902323, 0.123941]),
         ];
         for (entry, rgb) in published {
             let got = viridis(f64::from(entry) / 255.0);
             let want = rgb.map(|c: f64| (c * 255.0).round() as i32);
             for (g, w) in [got.0, got.1, got.2].into_iter().zip(want) {
                 assert!(
-                    (i32::from(g) - w).abs() <= 1,
+                    (i32::from(g) - w).abs() <= 2,
                     "entry {entry}: {got:?} vs {want:?}"
                 );
             }
