@@ -8,7 +8,7 @@ use super::svg::{
     draw_titles, err, finish, font, px,
 };
 use super::ticks::{Room, Ticks, fitted, ticks};
-use super::{Axis, Figure, PALETTE, colormap::viridis};
+use super::{Axis, Figure, PALETTE, Role, Series, Style, colormap::viridis};
 use crate::map::{Contour, Map, Quantity, Scale, Targets};
 use plotters::element::DashedPathElement;
 use plotters::prelude::*;
@@ -56,8 +56,27 @@ fn frame(map: &Map, v: &View) -> Figure {
         format!("{}, {} law{targets}", v.title_ball, map.spec.law.name()),
         axis_of(&map.spec.zeta, "ζ = √(m K_p)/(2c)", "zeta"),
         axis_of(&map.spec.lambda, "λ = K_r/K_p", "lambda"),
-        Vec::new(),
+        layers(v),
     )
+}
+
+/// What the picture holds, named in its `<desc>` (no points: the layers are drawn here, not
+/// by the figure renderer).
+fn layers(v: &View) -> Vec<Series> {
+    let mut names = vec![(v.quantity.name(), Role::Model), ("iso-lines", Role::Model)];
+    if let Some(t) = v.targets {
+        if t.0.iter().any(|k| k.quantity == Quantity::Cor) {
+            names.push(("target-cor", Role::Reference));
+        }
+        names.push(("feasible-outline", Role::Reference));
+    }
+    if v.own.is_some() {
+        names.push(("ball", Role::ThisRun));
+    }
+    names
+        .into_iter()
+        .map(|(id, role)| Series::new("", id, role, Style::Solid, 0))
+        .collect()
 }
 
 /// A value on an axis as drawn (log10 on a log axis).
