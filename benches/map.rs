@@ -55,5 +55,7 @@ fn fast_summary(p: (f64, f64)) -> f64 {
 /// The 200 × 120 map on the fast path (`MapSpec::with_fast`).
 #[divan::bench(sample_count = 20)]
 fn map_200x120_fast() -> usize {
-    compute(black_box(spec(120, 200).with_fast(true))).cells().len()
+    compute(black_box(spec(120, 200).with_fast(true)))
+        .cells()
+        .len()
 }

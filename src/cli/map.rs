@@ -4,6 +4,7 @@
 
 use super::ball::{BallArgs, LawArg, PresetChoice};
 use super::output::num;
+
 use crate::map::{Axis, Map, MapSpec, Param, Quantity, Scale, Targets, compute};
 use crate::model::contact::ContactLaw;
 use clap::{Args, ValueEnum};
@@ -153,28 +154,40 @@ pub fn header(normalized: bool, targets: bool) -> String {
 }
 
 /// One row per cell, λ outer, ζ inner (as `sweep zeta`); empty fields where a value does not
-/// exist (no rebound: no contact time; no answer: nothing). Built in one buffer.
+/// exist (no rebound: no contact time; no answer: nothing). Written into one buffer, each
+/// number as `text::number` writes it (shortest round-trip) without a String of its own.
 pub fn csv(map: &Map, targets: Option<&Targets>) -> String {
     let mut s = header(map.spec.normalized, targets.is_some());
-    s.reserve(map.cells().len() * 64);
-    let opt = |x: f64| if x.is_nan() { String::new() } else { num(x) };
+    s.reserve(map.cells().len() * 80);
     for (k, c) in map.cells().iter().enumerate() {
         let (i, j) = (k / map.zetas.len(), k % map.zetas.len());
         let c = c.unwrap_or(crate::map::Cell::UNRESOLVED);
-        let fields = [
-            num(map.lambdas[i]),
-            num(map.zetas[j]),
-            opt(c.cor),
-            opt(c.max_force),
-            c.contact_time.map(num).unwrap_or_default(),
-        ];
-        s.push_str(&fields.join(","));
+        push_num(&mut s, map.lambdas[i]);
+        s.push(',');
+        push_num(&mut s, map.zetas[j]);
+        for x in [c.cor, c.max_force, c.contact_time.unwrap_or(f64::NAN)] {
+            s.push(',');
+            if !x.is_nan() {
+                push_num(&mut s, x);
+            }
+        }
         if let Some(t) = targets {
             s.push_str(if t.holds(&c) { ",true" } else { ",false" });
         }
         s.push('\n');
     }
     s
+}
+
+/// `text::number(x)` appended to `s`: plain decimals in [1e-4, 1e7) and zero, exponent form
+/// outside, `inf`/`-inf` spelled out (a NaN never reaches here).
+fn push_num(s: &mut String, x: f64) {
+    use std::fmt::Write;
+    let _ = if x.is_infinite() || x == 0.0 || (1e-4..1e7).contains(&x.abs()) {
+        write!(s, "{x}")
+    } else {
+        write!(s, "{x:e}")
+    };
 }
 
 #[derive(Serialize)]
@@ -267,4 +280,27 @@ fn json(map: &Map, ball: &MapBall, targets: Option<&Targets>) -> anyhow::Result<
     let mut s = serde_json::to_string(&doc)?;
     s.push('\n');
     Ok(s)
+}
+
+#[cfg(test)]
+mod tests {
+    /// The CSV's numbers are `text::number`'s, character for character.
+    #[test]
+    fn push_num_is_number() {
+        for x in [
+            0.0,
+            1e-4,
+            9.99e-5,
+            1e7,
+            9999999.5,
+            0.1 + 0.2,
+            -3.5e-12,
+            1e300,
+            f64::INFINITY,
+        ] {
+            let mut s = String::new();
+            super::push_num(&mut s, x);
+            assert_eq!(s, crate::text::number(x), "{x}");
+        }
+    }
 }
