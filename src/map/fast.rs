@@ -7,8 +7,10 @@
 //! root of its cubic that stands apart and s² + 2σs + (σ² + ω²) the quadratic factor of the
 //! other two,
 //!
-//!     z̄(τ) = A e^{rτ} + e^{−στ} (−A C(τ) + D S(τ)),   C = cos ωτ,  S = sin(ωτ)/ω,
-//!     A = 2(σ − ζ)/((r + σ)² + ω²),  D = 1 − (r + σ) A,
+//! ```text
+//! z̄(τ) = A e^{rτ} + e^{−στ} (−A C(τ) + D S(τ)),   C = cos ωτ,  S = sin(ωτ)/ω,
+//! A = 2(σ − ζ)/((r + σ)² + ω²),  D = 1 − (r + σ) A,
+//! ```
 //!
 //! with cosh and sinh(ντ)/ν where ω² = −ν² < 0. What keeps it exact where the complex pair
 //! turns real (ω² → 0): the pair is never split into its two roots (which a double root would
