@@ -115,15 +115,15 @@ fn exact_solver_against_the_reference() {
     }
 }
 
-/// Over the plane (log grid λ 1e-3 … 1e3, ζ 1e-3 … 1e3) the fast path agrees with the exact
+/// Over the plane (log grid λ, ζ = 1e-4 … 1e4, nine points a decade) the fast path agrees with the exact
 /// solver to 1e-9 wherever it answers, and answers almost everywhere.
 #[test]
 fn fast_summary_agrees_with_the_exact_solver() {
     let (mut answered, mut total, mut worst) = (0, 0, 0.0f64);
-    for i in 0..=36 {
-        for j in 0..=36 {
-            let l = 10f64.powf(-3.0 + i as f64 / 6.0);
-            let z = 10f64.powf(-3.0 + j as f64 / 6.0);
+    for i in 0..=72 {
+        for j in 0..=72 {
+            let l = 10f64.powf(-4.0 + i as f64 / 9.0);
+            let z = 10f64.powf(-4.0 + j as f64 / 9.0);
             total += 1;
             let Some(s) = summary(l, z) else { continue };
             answered += 1;
@@ -136,6 +136,6 @@ fn fast_summary_agrees_with_the_exact_solver() {
             worst = worst.max(d);
         }
     }
-    assert!(answered * 100 >= total * 95, "{answered} of {total}");
+    assert!(answered * 100 >= total * 90, "{answered} of {total}");
     eprintln!("fast vs exact: worst {worst:e}, {answered} of {total} answered");
 }

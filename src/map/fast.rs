@@ -19,8 +19,8 @@
 //! (tests/map_precision.rs, against a 40-digit reference).
 //!
 //! τ_m is the first zero of z̄' (F̄_m = z̄(τ_m)), τ_f the first zero of z̄ after it, both by
-//! safeguarded Halley steps inside brackets found by stepping at a quarter of the pair's
-//! period; e = ∫₀^τ_f z̄ dτ − 1 (ᾱ'' = −F̄, ᾱ'(0) = 1), in closed form too. Cases it does not
+//! safeguarded Halley steps inside brackets found by doubling steps of at most a quarter of
+//! the pair's period (τ_f's first step just short of τ_m: unloading takes about as long); e = ∫₀^τ_f z̄ dτ − 1 (ᾱ'' = −F̄, ᾱ'(0) = 1), in closed form too. Cases it does not
 //! settle quickly — no rebound (λ = 0, ζ ≥ 1), slow creeps, flattening — return `None`: the
 //! caller runs the exact solver.
 
@@ -204,7 +204,7 @@ fn first_fall(flow: &Flow, k: usize, t0: f64, step0: f64, cap: f64) -> Option<f6
             return None;
         }
         (a, ga) = (b, gb);
-        step = (step * 1.5).min(cap);
+        step = (step * 2.0).min(cap);
     }
     None
 }
@@ -236,7 +236,9 @@ pub fn summary(lambda: f64, zeta: f64) -> Option<Summary> {
     let cap = period.min(2.0);
     let tau_m = first_fall(&flow, 1, 0.0, step0, cap)?;
     let z_m = flow.jet(tau_m)[0];
-    let tau_f = first_fall(&flow, 0, tau_m, step0.max(0.05 * tau_m).min(cap), cap)?;
+    // unloading takes about as long as loading: a first step just short of τ_m brackets τ_f
+    // within one or two steps
+    let tau_f = first_fall(&flow, 0, tau_m, (0.9 * tau_m).min(cap), cap)?;
     Some(Summary {
         cor: flow.integral(tau_f) - 1.0,
         max_force: z_m,
