@@ -180,6 +180,7 @@ mod tests {
             assert!(m.nearest(32, 32).is_some() && m.nearest(31, 3).is_some());
         }
         assert_eq!(strides, vec![4, 2, 1]);
+        assert_eq!(m.last_stride(), 1);
         assert!(m.is_complete() && m.cells().iter().all(Option::is_some));
         let whole = compute(spec(33));
         assert_eq!(m.cells(), whole.cells());
