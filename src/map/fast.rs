@@ -185,14 +185,15 @@ fn deflate(a2: f64, a1: f64, a0: f64, r: f64) -> (f64, f64) {
     }
 }
 
-/// The first τ after `t0` where `k`-th derivative of z̄ falls through 0 (k = 1: the peak;
-/// k = 0: separation), or `None` within [`TAU_MAX`] and [`MAX_STEPS`].
-fn first_fall(flow: &Flow, k: usize, t0: f64, step0: f64, cap: f64) -> Option<f64> {
+/// The first τ after `t0` (where the `k`-th derivative of z̄ is `g0`, known) where that
+/// derivative falls through 0 (k = 1: the peak; k = 0: separation), or `None` within
+/// [`TAU_MAX`] and [`MAX_STEPS`].
+fn first_fall(flow: &Flow, k: usize, (t0, g0): (f64, f64), step0: f64, cap: f64) -> Option<f64> {
     let g = |t: f64| {
         let j = flow.jet(t);
         (j[k], j[k + 1], j[k + 2])
     };
-    let (mut a, mut ga) = (t0, g(t0).0);
+    let (mut a, mut ga) = (t0, g0);
     let mut step = step0;
     for _ in 0..MAX_STEPS {
         let b = a + step;
@@ -234,11 +235,12 @@ pub fn summary(lambda: f64, zeta: f64) -> Option<Summary> {
     };
     let step0 = 0.25f64.min(0.5 / zeta).min(period);
     let cap = period.min(2.0);
-    let tau_m = first_fall(&flow, 1, 0.0, step0, cap)?;
+    // z̄'(0) = 1; z̄(τ_m) is the peak, known before τ_f's search starts from it
+    let tau_m = first_fall(&flow, 1, (0.0, 1.0), step0, cap)?;
     let z_m = flow.jet(tau_m)[0];
     // unloading takes about as long as loading: a first step just short of τ_m brackets τ_f
     // within one or two steps
-    let tau_f = first_fall(&flow, 0, tau_m, (0.9 * tau_m).min(cap), cap)?;
+    let tau_f = first_fall(&flow, 0, (tau_m, z_m), (0.9 * tau_m).min(cap), cap)?;
     Some(Summary {
         cor: flow.integral(tau_f) - 1.0,
         max_force: z_m,
