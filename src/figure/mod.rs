@@ -25,6 +25,7 @@ pub mod peers;
 pub mod report;
 pub mod svg;
 pub mod svg_map;
+mod svg_map_legend;
 pub mod ticks;
 
 pub use look::{Corner, LegendEntry, Look, Sample, Tone};

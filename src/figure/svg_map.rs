@@ -4,8 +4,8 @@
 //! page, fonts and frame as the paper's figures ([`super::svg`]).
 
 use super::svg::{
-    ANNOTATION_PX, AXIS_DESC_PX, HEIGHT, LEGEND_PX, RenderError, SCALE, SIDE_PX, TICK_PX, WIDTH,
-    draw_titles, err, finish, font, px,
+    ANNOTATION_PX, AXIS_DESC_PX, HEIGHT, RenderError, SCALE, SIDE_PX, TICK_PX, WIDTH, draw_titles,
+    err, finish, font, px,
 };
 use super::ticks::{Room, Ticks, fitted, ticks};
 use super::{Axis, Figure, PALETTE, Role, Series, Style, colormap::viridis};
@@ -27,7 +27,7 @@ pub struct View<'a> {
 /// Room for the colour bar at the right of the plot, CSS pixels.
 const BAR_PX: i32 = 110;
 /// Height of the legend strip under the plot.
-const LEGEND_H: i32 = 34;
+pub(super) const LEGEND_H: i32 = 34;
 
 /// (label, factor from the map's values to the unit shown) of the quantity.
 fn unit(q: Quantity, normalized: bool) -> (&'static str, f64) {
@@ -264,52 +264,60 @@ fn draw_bar(
     Ok(())
 }
 
-/// The legend strip: what each kind of line means.
-fn draw_legend(
-    area: &DrawingArea<SVGBackend, plotters::coord::Shift>,
+/// The plot: cells, axes, iso-lines, targets, the ball's mark and the frame.
+fn draw_plot(
+    plot: &DrawingArea<SVGBackend, plotters::coord::Shift>,
+    fig: &Figure,
+    map: &Map,
     v: &View,
+    (field, bar, scale): (&[f64], &Ticks, f64),
 ) -> Result<(), RenderError> {
-    let mut items: Vec<(&str, RGBColor, u32)> = vec![("iso-lines", BLACK, 1)];
+    let (tx, ty) = (
+        ticks(fig, true, Room::Picture),
+        ticks(fig, false, Room::Picture),
+    );
+    let mut chart = ChartBuilder::on(plot)
+        .margin_left(px(SIDE_PX))
+        .margin_right(px(8))
+        .margin_top(px(6))
+        .x_label_area_size(px(52))
+        .y_label_area_size(px(70))
+        .build_cartesian_2d(tx.clone(), ty.clone())
+        .map_err(err)?;
+    draw_cells(&mut chart, map, field, bar)?;
+    let (fx, fy) = (|v: &f64| tx.label(*v), |v: &f64| ty.label(*v));
+    chart
+        .configure_mesh()
+        .disable_mesh()
+        .x_desc(fig.x.label.as_str())
+        .y_desc(fig.y.label.as_str())
+        .x_label_formatter(&fx)
+        .y_label_formatter(&fy)
+        .axis_desc_style(font(AXIS_DESC_PX))
+        .label_style(font(TICK_PX))
+        .axis_style(BLACK.stroke_width(px(1) as u32))
+        .set_all_tick_mark_size(px(5))
+        .draw()
+        .map_err(err)?;
+    draw_iso(&mut chart, map, v.quantity, bar, scale)?;
     if let Some(t) = v.targets {
-        if t.0.iter().any(|k| k.quantity == Quantity::Cor) {
-            let (r, g, b) = PALETTE[1];
-            items.push(("target COR", RGBColor(r, g, b), 3));
+        draw_targets(&mut chart, map, t)?;
+    }
+    if let Some((l, z)) = v.own {
+        let p = (drawn(&map.spec.zeta, z), drawn(&map.spec.lambda, l));
+        let inside = p.0 >= tx.lo && p.0 <= tx.hi && p.1 >= ty.lo && p.1 <= ty.hi;
+        if inside {
+            let mark = EmptyElement::at(p)
+                + Circle::new((0, 0), px(6), WHITE.filled())
+                + Circle::new((0, 0), px(6), BLACK.stroke_width(px(2) as u32));
+            chart.draw_series(std::iter::once(mark)).map_err(err)?;
         }
-        items.push(("feasible region", WHITE, 2));
     }
-    let y = px(LEGEND_H / 2);
-    let mut x = px(SIDE_PX + 40);
-    for (text, colour, w) in items {
-        if colour == WHITE {
-            area.draw(&PathElement::new(
-                vec![(x, y), (x + px(30), y)],
-                BLACK.stroke_width(px(4) as u32),
-            ))
-            .map_err(err)?;
-        }
-        area.draw(&PathElement::new(
-            vec![(x, y), (x + px(30), y)],
-            colour.stroke_width(px(w as i32) as u32),
-        ))
-        .map_err(err)?;
-        let style = font(LEGEND_PX).pos(Pos::new(HPos::Left, VPos::Center));
-        area.draw(&Text::new(text, (x + px(38), y), style))
-            .map_err(err)?;
-        x += px(38 + (text.chars().count() as i32 * LEGEND_PX * 52) / 100 + 30);
-    }
-    if v.own.is_some() {
-        area.draw(&Circle::new((x + px(8), y), px(6), WHITE.filled()))
-            .map_err(err)?;
-        area.draw(&Circle::new(
-            (x + px(8), y),
-            px(6),
-            BLACK.stroke_width(px(2) as u32),
-        ))
-        .map_err(err)?;
-        let style = font(LEGEND_PX).pos(Pos::new(HPos::Left, VPos::Center));
-        area.draw(&Text::new("this ball", (x + px(20), y), style))
-            .map_err(err)?;
-    }
+    let frame = Rectangle::new(
+        [(tx.lo, ty.lo), (tx.hi, ty.hi)],
+        BLACK.stroke_width(px(1) as u32),
+    );
+    chart.draw_series(std::iter::once(frame)).map_err(err)?;
     Ok(())
 }
 
@@ -341,54 +349,9 @@ pub fn render(map: &Map, v: &View) -> Result<String, RenderError> {
         let (_, rest) = root.split_vertically(px(head));
         let (body, legend) = rest.split_vertically(px(HEIGHT as i32 - head - LEGEND_H));
         let (plot, bar_area) = body.split_horizontally(px(WIDTH as i32 - BAR_PX));
-        let (tx, ty) = (
-            ticks(&fig, true, Room::Picture),
-            ticks(&fig, false, Room::Picture),
-        );
-        let mut chart = ChartBuilder::on(&plot)
-            .margin_left(px(SIDE_PX))
-            .margin_right(px(8))
-            .margin_top(px(6))
-            .x_label_area_size(px(52))
-            .y_label_area_size(px(70))
-            .build_cartesian_2d(tx.clone(), ty.clone())
-            .map_err(err)?;
-        draw_cells(&mut chart, map, &field, &bar)?;
-        let (fx, fy) = (|v: &f64| tx.label(*v), |v: &f64| ty.label(*v));
-        chart
-            .configure_mesh()
-            .disable_mesh()
-            .x_desc(fig.x.label.as_str())
-            .y_desc(fig.y.label.as_str())
-            .x_label_formatter(&fx)
-            .y_label_formatter(&fy)
-            .axis_desc_style(font(AXIS_DESC_PX))
-            .label_style(font(TICK_PX))
-            .axis_style(BLACK.stroke_width(px(1) as u32))
-            .set_all_tick_mark_size(px(5))
-            .draw()
-            .map_err(err)?;
-        draw_iso(&mut chart, map, v.quantity, &bar, scale)?;
-        if let Some(t) = v.targets {
-            draw_targets(&mut chart, map, t)?;
-        }
-        if let Some((l, z)) = v.own {
-            let p = (drawn(&map.spec.zeta, z), drawn(&map.spec.lambda, l));
-            let inside = p.0 >= tx.lo && p.0 <= tx.hi && p.1 >= ty.lo && p.1 <= ty.hi;
-            if inside {
-                let mark = EmptyElement::at(p)
-                    + Circle::new((0, 0), px(6), WHITE.filled())
-                    + Circle::new((0, 0), px(6), BLACK.stroke_width(px(2) as u32));
-                chart.draw_series(std::iter::once(mark)).map_err(err)?;
-            }
-        }
-        let frame = Rectangle::new(
-            [(tx.lo, ty.lo), (tx.hi, ty.hi)],
-            BLACK.stroke_width(px(1) as u32),
-        );
-        chart.draw_series(std::iter::once(frame)).map_err(err)?;
+        draw_plot(&plot, &fig, map, v, (&field, &bar, scale))?;
         draw_bar(&bar_area, &bar, label)?;
-        draw_legend(&legend, v)?;
+        super::svg_map_legend::draw(&legend, v)?;
         root.present().map_err(err)?;
     }
     Ok(crate::sanitize::text(&finish(buf, &fig)).into_owned())

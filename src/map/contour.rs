@@ -45,6 +45,32 @@ struct Edge {
 pub fn contour_lines(field: &[f64], rows: usize, cols: usize, level: f64) -> Vec<Contour> {
     assert_eq!(field.len(), rows * cols, "field of rows × cols values");
     let v = |i: usize, j: usize| field[i * cols + j];
+    let point = |e: Edge| {
+        let (p, q) = if e.along_j {
+            (v(e.i, e.j), v(e.i, e.j + 1))
+        } else {
+            (v(e.i, e.j), v(e.i + 1, e.j))
+        };
+        let t = (level - p) / (q - p);
+        if e.along_j {
+            (e.i as f64, e.j as f64 + t)
+        } else {
+            (e.i as f64 + t, e.j as f64)
+        }
+    };
+    join(&segments(field, rows, cols, level))
+        .into_iter()
+        .map(|edges| Contour {
+            level,
+            index: edges.into_iter().map(point).collect(),
+            points: Vec::new(),
+        })
+        .collect()
+}
+
+/// The level's segments, square by square: each joins two crossed edges.
+fn segments(field: &[f64], rows: usize, cols: usize, level: f64) -> Vec<[Edge; 2]> {
+    let v = |i: usize, j: usize| field[i * cols + j];
     let above = |x: f64| x >= level;
     let mut segments: Vec<[Edge; 2]> = Vec::new();
     for i in 0..rows.saturating_sub(1) {
@@ -98,27 +124,7 @@ pub fn contour_lines(field: &[f64], rows: usize, cols: usize, level: f64) -> Vec
             }
         }
     }
-    let point = |e: Edge| {
-        let (p, q) = if e.along_j {
-            (v(e.i, e.j), v(e.i, e.j + 1))
-        } else {
-            (v(e.i, e.j), v(e.i + 1, e.j))
-        };
-        let t = (level - p) / (q - p);
-        if e.along_j {
-            (e.i as f64, e.j as f64 + t)
-        } else {
-            (e.i as f64 + t, e.j as f64)
-        }
-    };
-    join(&segments)
-        .into_iter()
-        .map(|edges| Contour {
-            level,
-            index: edges.into_iter().map(point).collect(),
-            points: Vec::new(),
-        })
-        .collect()
+    segments
 }
 
 /// Segments chained into polylines through their shared edges: open lines from their ends
