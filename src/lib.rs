@@ -84,6 +84,7 @@ pub mod drop;
 pub mod fault;
 #[cfg(feature = "svg")]
 pub mod figure;
+pub mod map;
 pub mod measured;
 pub mod model;
 pub mod peers;

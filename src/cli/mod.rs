@@ -18,6 +18,7 @@ pub mod fit_multi;
 mod fit_plot;
 mod fit_report;
 mod fit_save;
+pub mod map;
 pub mod measured_file;
 pub mod number;
 pub mod output;
@@ -89,6 +90,9 @@ pub enum Command {
     /// beside this model; --export writes them for LAMMPS, LIGGGHTS, Chrono, YADE or MuJoCo
     #[command(allow_negative_numbers = true)]
     Peers(peers::PeersArgs),
+    /// COR, peak force and contact time over a (λ, ζ) grid, with targets: CSV, JSON or an SVG
+    /// heat map (docs/map.md)
+    Map(map::MapArgs),
 }
 
 /// The explorer failed (its terminal, its event loop): not the input's fault.
@@ -273,6 +277,18 @@ fn dispatch(cli: Cli, out: &mut dyn Write) -> anyhow::Result<()> {
                 );
             }
             reproduce::run(&a, out)
+        }
+        Command::Map(mut a) => {
+            if top.is_given() {
+                if a.normalized {
+                    anyhow::bail!("--normalized cannot be used with --preset or --config");
+                }
+                if a.choice.is_given() {
+                    anyhow::bail!("--preset/--config given both before and after the subcommand");
+                }
+                a.choice = top;
+            }
+            map::run(&a, out)
         }
         Command::Drop(mut a) => {
             merge(top, &mut a.ball)?;

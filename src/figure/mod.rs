@@ -15,6 +15,7 @@
 //! SVG and CSV writers and the explorer's braille widget then all draw it; the explorer shows
 //! a chart by adding a [`explorer::Chart`] and a case in [`explorer::figure`].
 
+pub mod colormap;
 pub mod csv;
 pub mod explorer;
 pub mod history;
@@ -24,6 +25,8 @@ pub mod paper;
 pub mod peers;
 pub mod report;
 pub mod svg;
+pub mod svg_map;
+mod svg_map_legend;
 pub mod ticks;
 
 pub use look::{Corner, LegendEntry, Look, Sample, Tone};

@@ -21,22 +21,22 @@ pub const WIDTH: u32 = 800;
 /// Picture height in CSS pixels.
 pub const HEIGHT: u32 = 560;
 /// Drawing units per CSS pixel.
-const SCALE: i32 = 4;
+pub(super) const SCALE: i32 = 4;
 
 const FONT: &str = "sans-serif";
 /// Sizes in CSS pixels (multiplied by `SCALE` when drawn).
 const TITLE_PX: i32 = 22;
 const SUBTITLE_PX: i32 = 15;
-const AXIS_DESC_PX: i32 = 17;
-const TICK_PX: i32 = 15;
-const LEGEND_PX: i32 = 15;
-const ANNOTATION_PX: i32 = 13;
+pub(super) const AXIS_DESC_PX: i32 = 17;
+pub(super) const TICK_PX: i32 = 15;
+pub(super) const LEGEND_PX: i32 = 15;
+pub(super) const ANNOTATION_PX: i32 = 13;
 const LINE_PX: i32 = 2;
 const MARKER_PX: i32 = 5;
 const LEGEND_ROW_PX: i32 = 24;
 const LEGEND_GLYPH_PX: i32 = 30;
 const LEGEND_GAP_PX: i32 = 26;
-const SIDE_PX: i32 = 16;
+pub(super) const SIDE_PX: i32 = 16;
 /// Space between the x axis' label and the legend strip.
 const LEGEND_TOP_PX: i32 = 8;
 
@@ -52,16 +52,16 @@ impl fmt::Display for RenderError {
 
 impl std::error::Error for RenderError {}
 
-fn err<E: fmt::Debug>(e: E) -> RenderError {
+pub(super) fn err<E: fmt::Debug>(e: E) -> RenderError {
     RenderError(format!("{e:?}"))
 }
 
-const fn px(v: i32) -> i32 {
+pub(super) const fn px(v: i32) -> i32 {
     v * SCALE
 }
 
 /// A font of `size` CSS pixels. plotters writes `font-size` as size/1.24, so undo that here.
-fn font(size: i32) -> TextStyle<'static> {
+pub(super) fn font(size: i32) -> TextStyle<'static> {
     font_in(size, FontStyle::Normal)
 }
 
@@ -71,7 +71,7 @@ fn font_in(size: i32, style: FontStyle) -> TextStyle<'static> {
         .color(&BLACK)
 }
 
-fn color(i: usize) -> RGBColor {
+pub(super) fn color(i: usize) -> RGBColor {
     let (r, g, b) = PALETTE[i % PALETTE.len()];
     RGBColor(r, g, b)
 }
@@ -244,7 +244,7 @@ fn escape(s: &str) -> String {
 
 /// The picture drawn at `SCALE`, shown at `WIDTH` × `HEIGHT`, with a `<title>` and a `<desc>`
 /// naming the series (for screen readers, and for tools that list a figure's content).
-fn finish(svg: String, fig: &Figure) -> String {
+pub(super) fn finish(svg: String, fig: &Figure) -> String {
     let (w, h) = (WIDTH as i32 * SCALE, HEIGHT as i32 * SCALE);
     let open = format!("<svg width=\"{w}\" height=\"{h}\" ");
     let names: Vec<String> = fig
@@ -267,7 +267,7 @@ fn finish(svg: String, fig: &Figure) -> String {
 }
 
 /// The title and subtitle lines, centred; returns the height they take, in CSS pixels.
-fn draw_titles<DB: DrawingBackend>(
+pub(super) fn draw_titles<DB: DrawingBackend>(
     root: &DrawingArea<DB, plotters::coord::Shift>,
     fig: &Figure,
 ) -> Result<i32, RenderError> {

@@ -1,0 +1,61 @@
+//! Speed of the design map (issue 21; medians recorded in BENCHMARKS.md).
+//! Run: `cargo bench --bench map`. The whole `bouncelab map` process is timed with hyperfine
+//! (BENCHMARKS.md gives the command).
+
+use bouncelab::map::{Axis, MapSpec, Param, Scale, compute};
+use bouncelab::{ContactLaw, SolveOptions, simulate_normalized};
+use divan::black_box;
+
+fn main() {
+    divan::main();
+}
+
+/// Points across the plane: the paper's balls' region, the Maxwell edge, a stiff dashpot.
+const POINTS: [(f64, f64); 4] = [
+    (1.0, 0.1),
+    (0.4, 0.3),
+    (0.02, 1.7861026411617908),
+    (5.0, 20.0),
+];
+
+/// One linear-law impact, summary only (COR, peak force, contact time), through `simulate`
+/// (the exact solver) as a map cell runs it. Target: median ≤ 0.3 µs.
+#[divan::bench(args = POINTS)]
+fn impact_summary(p: (f64, f64)) -> f64 {
+    let r = simulate_normalized(
+        black_box(p.0),
+        black_box(p.1),
+        ContactLaw::Linear,
+        &SolveOptions::default(),
+    )
+    .unwrap();
+    r.cor + r.max_force_normalized
+}
+
+fn spec(nl: usize, nz: usize) -> MapSpec {
+    let l = Axis::new(Param::Lambda, 0.01, 100.0, nl, Scale::Log).unwrap();
+    let z = Axis::new(Param::Zeta, 0.01, 100.0, nz, Scale::Log).unwrap();
+    MapSpec::normalized(None, ContactLaw::Linear, l, z).unwrap()
+}
+
+/// A 200 × 120 normalized map (ζ × λ), every pass on all cores. Target: median ≤ 5 ms.
+#[divan::bench(sample_count = 20)]
+fn map_200x120() -> usize {
+    compute(black_box(spec(120, 200))).cells().len()
+}
+
+/// The fast linear-law summary (`map::fast`, closed form) at the same points. Target: median
+/// ≤ 0.3 µs.
+#[divan::bench(args = POINTS)]
+fn fast_summary(p: (f64, f64)) -> f64 {
+    let s = bouncelab::map::fast::summary(black_box(p.0), black_box(p.1)).unwrap();
+    s.cor + s.max_force
+}
+
+/// The 200 × 120 map on the fast path (`MapSpec::with_fast`).
+#[divan::bench(sample_count = 20)]
+fn map_200x120_fast() -> usize {
+    compute(black_box(spec(120, 200).with_fast(true)))
+        .cells()
+        .len()
+}

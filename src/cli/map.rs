@@ -1,0 +1,306 @@
+//! `bouncelab map`: COR, peak force and contact time over a (λ, ζ) grid, with targets, as
+//! CSV, JSON or an SVG heat map (docs/map.md). The library does the work ([`crate::map`]);
+//! this file reads the options, checks the work limit and writes.
+
+use super::ball::{BallArgs, LawArg, PresetChoice};
+use super::output::num;
+
+use crate::map::{Axis, Map, MapSpec, Param, Quantity, Scale, Targets, compute};
+use crate::model::contact::ContactLaw;
+use clap::{Args, ValueEnum};
+use serde::Serialize;
+use std::io::Write;
+use std::path::PathBuf;
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum MapFormat {
+    Csv,
+    Json,
+    Svg,
+}
+
+#[derive(Debug, Clone, Args)]
+pub struct MapArgs {
+    #[command(flatten)]
+    pub choice: PresetChoice,
+    /// Normalized ball, m = K_p = v0 = 1 (F̄_m and τ_f in the outputs)
+    #[arg(long, conflicts_with_all = ["preset", "config", "v0"])]
+    pub normalized: bool,
+    /// Flattening threshold z̄_p = z_p ω0/v0 of the normalized ball [default: none]
+    #[arg(long, value_name = "Z", requires = "normalized",
+          value_parser = super::number::number, allow_hyphen_values = true)]
+    pub zp_bar: Option<f64>,
+    /// Contact law [default: the preset's; linear for the normalized ball]
+    #[arg(long, value_enum)]
+    pub law: Option<LawArg>,
+    /// Impact speed v0 (m/s) [default: the preset's measured v0]
+    #[arg(long, value_name = "V", value_parser = super::number::number, allow_hyphen_values = true)]
+    pub v0: Option<f64>,
+    /// λ = K_r/K_p values: FROM:TO:N (log-spaced unless --linear-axes)
+    #[arg(long, value_name = "FROM:TO:N", allow_hyphen_values = true)]
+    pub lambda: String,
+    /// ζ = √(m K_p)/(2c) values: FROM:TO:N (log-spaced unless --linear-axes)
+    #[arg(long, value_name = "FROM:TO:N", allow_hyphen_values = true)]
+    pub zeta: String,
+    /// Space both axes evenly instead of in log10
+    #[arg(long)]
+    pub linear_axes: bool,
+    /// Targets, comma-separated: cor>=E, max_force<=F, contact_time>=T (N and s; F̄_m and τ_f
+    /// on the normalized ball); adds the `feasible` column
+    #[arg(long = "where", value_name = "CONSTRAINTS")]
+    pub targets: Option<String>,
+    /// Output format
+    #[arg(long, value_enum, default_value = "csv")]
+    pub format: MapFormat,
+    /// Write to FILE (atomically) instead of stdout; an existing file is refused unless --force
+    #[arg(long, value_name = "FILE")]
+    pub out: Option<PathBuf>,
+    /// Overwrite an existing --out file
+    #[arg(long, requires = "out")]
+    pub force: bool,
+}
+
+/// The ball a map runs on, with its name for the outputs.
+pub struct MapBall {
+    pub spec: MapSpec,
+    /// The preset's name; `None` for the normalized ball.
+    pub preset: Option<String>,
+    /// The preset's own (λ, ζ), marked on the picture.
+    pub own: Option<(f64, f64)>,
+    pub v0: f64,
+}
+
+/// The map's ball and axes from the options, each checked (exit 2 naming the flag).
+pub fn spec(a: &MapArgs) -> anyhow::Result<MapBall> {
+    let scale = if a.linear_axes {
+        Scale::Linear
+    } else {
+        Scale::Log
+    };
+    let lambda = Axis::parse(Param::Lambda, &a.lambda, scale)?;
+    let zeta = Axis::parse(Param::Zeta, &a.zeta, scale)?;
+    if a.normalized {
+        let law = a.law.map_or(ContactLaw::Linear, ContactLaw::from);
+        let spec = MapSpec::normalized(a.zp_bar, law, lambda, zeta)?;
+        return Ok(MapBall {
+            spec,
+            preset: None,
+            own: None,
+            v0: 1.0,
+        });
+    }
+    let args = BallArgs {
+        choice: a.choice.clone(),
+        law: a.law,
+        ..BallArgs::default()
+    };
+    let chosen = args.resolve(a.v0)?;
+    let b = &chosen.ball;
+    let spec = MapSpec::dimensional(b.params, b.law, lambda, zeta)?;
+    let n = b.params.normalized();
+    Ok(MapBall {
+        spec,
+        preset: chosen.preset().map(String::from),
+        own: Some((n.lambda, n.zeta)),
+        v0: b.params.v0,
+    })
+}
+
+pub fn run(a: &MapArgs, out: &mut dyn Write) -> anyhow::Result<()> {
+    let ball = spec(a)?;
+    let targets = match &a.targets {
+        Some(t) => Some(Targets::parse(t)?),
+        None => None,
+    };
+    let s = &ball.spec;
+    let what = format!("{} λ values × {} ζ values", s.lambda.n, s.zeta.n);
+    super::budget::check(s.cells(), s.law, &what)?;
+    let map = compute(ball.spec.clone());
+    let text = match a.format {
+        MapFormat::Csv => csv(&map, targets.as_ref()),
+        MapFormat::Json => json(&map, &ball, targets.as_ref())?,
+        MapFormat::Svg => {
+            let view = crate::figure::svg_map::View {
+                quantity: Quantity::Cor,
+                targets: targets.as_ref(),
+                own: ball.own,
+                title_ball: match &ball.preset {
+                    Some(p) => format!("{p} at v0 = {} m/s", num(ball.v0)),
+                    None => "normalized ball (m = K_p = v0 = 1)".into(),
+                },
+            };
+            crate::figure::svg_map::render(&map, &view)?
+        }
+    };
+    match &a.out {
+        Some(path) => super::figure::write_file(path, &text, a.force),
+        None => Ok(out.write_all(text.as_bytes())?),
+    }
+}
+
+/// The CSV header of a map: normalized or SI columns, `feasible` with targets.
+pub fn header(normalized: bool, targets: bool) -> String {
+    let mut h = String::from("lambda,zeta,cor,");
+    h.push_str(if normalized {
+        "max_force_normalized,contact_time_normalized"
+    } else {
+        "max_force,contact_time"
+    });
+    if targets {
+        h.push_str(",feasible");
+    }
+    h.push('\n');
+    h
+}
+
+/// One row per cell, λ outer, ζ inner (as `sweep zeta`); empty fields where a value does not
+/// exist (no rebound: no contact time; no answer: nothing). Written into one buffer, each
+/// number as `text::number` writes it (shortest round-trip) without a String of its own.
+pub fn csv(map: &Map, targets: Option<&Targets>) -> String {
+    let mut s = header(map.spec.normalized, targets.is_some());
+    s.reserve(map.cells().len() * 80);
+    for (k, c) in map.cells().iter().enumerate() {
+        let (i, j) = (k / map.zetas.len(), k % map.zetas.len());
+        let c = c.unwrap_or(crate::map::Cell::UNRESOLVED);
+        push_num(&mut s, map.lambdas[i]);
+        s.push(',');
+        push_num(&mut s, map.zetas[j]);
+        for x in [c.cor, c.max_force, c.contact_time.unwrap_or(f64::NAN)] {
+            s.push(',');
+            if !x.is_nan() {
+                push_num(&mut s, x);
+            }
+        }
+        if let Some(t) = targets {
+            s.push_str(if t.holds(&c) { ",true" } else { ",false" });
+        }
+        s.push('\n');
+    }
+    s
+}
+
+/// `text::number(x)` appended to `s`: plain decimals in [1e-4, 1e7) and zero, exponent form
+/// outside, `inf`/`-inf` spelled out (a NaN never reaches here).
+fn push_num(s: &mut String, x: f64) {
+    use std::fmt::Write;
+    let _ = if x.is_infinite() || x == 0.0 || (1e-4..1e7).contains(&x.abs()) {
+        write!(s, "{x}")
+    } else {
+        write!(s, "{x:e}")
+    };
+}
+
+#[derive(Serialize)]
+struct Doc<'a> {
+    map: &'static str,
+    preset: Option<&'a str>,
+    law: &'static str,
+    normalized: bool,
+    v0: f64,
+    lambda: &'a Axis,
+    zeta: &'a Axis,
+    #[serde(rename = "where")]
+    targets: Option<String>,
+    columns: Vec<&'a str>,
+    /// One array per cell, in the order of `columns` (null where a value does not exist).
+    rows: Vec<Vec<serde_json::Value>>,
+    /// The iso-lines of each COR target, as [λ, ζ] polylines.
+    iso_cor: Vec<IsoLine>,
+    /// The boundary of the feasible region, as [λ, ζ] polylines.
+    feasible_outline: Vec<Vec<(f64, f64)>>,
+}
+
+#[derive(Serialize)]
+struct IsoLine {
+    level: f64,
+    lines: Vec<Vec<(f64, f64)>>,
+}
+
+fn json(map: &Map, ball: &MapBall, targets: Option<&Targets>) -> anyhow::Result<String> {
+    let head = header(map.spec.normalized, targets.is_some());
+    let v = |x: f64| {
+        if x.is_finite() {
+            serde_json::Value::from(x)
+        } else {
+            serde_json::Value::Null
+        }
+    };
+    let rows = map
+        .cells()
+        .iter()
+        .enumerate()
+        .map(|(k, c)| {
+            let (i, j) = (k / map.zetas.len(), k % map.zetas.len());
+            let c = c.unwrap_or(crate::map::Cell::UNRESOLVED);
+            let mut row = vec![v(map.lambdas[i]), v(map.zetas[j]), v(c.cor), v(c.max_force)];
+            row.push(c.contact_time.map_or(serde_json::Value::Null, v));
+            if let Some(t) = targets {
+                row.push(t.holds(&c).into());
+            }
+            row
+        })
+        .collect();
+    let cor_levels = targets.map_or(Vec::new(), |t| {
+        t.0.iter()
+            .filter(|k| k.quantity == Quantity::Cor)
+            .map(|k| k.value)
+            .collect()
+    });
+    let iso_cor = cor_levels
+        .into_iter()
+        .map(|level| IsoLine {
+            level,
+            lines: map
+                .contours(Quantity::Cor, level)
+                .into_iter()
+                .map(|c| c.points)
+                .collect(),
+        })
+        .collect();
+    let feasible_outline = targets.map_or(Vec::new(), |t| {
+        map.feasible_outline(t)
+            .into_iter()
+            .map(|c| c.points)
+            .collect()
+    });
+    let doc = Doc {
+        map: "lambda-zeta",
+        preset: ball.preset.as_deref(),
+        law: map.spec.law.name(),
+        normalized: map.spec.normalized,
+        v0: ball.v0,
+        lambda: &map.spec.lambda,
+        zeta: &map.spec.zeta,
+        targets: targets.map(ToString::to_string),
+        columns: head.trim_end().split(',').collect(),
+        rows,
+        iso_cor,
+        feasible_outline,
+    };
+    let mut s = serde_json::to_string(&doc)?;
+    s.push('\n');
+    Ok(s)
+}
+
+#[cfg(test)]
+mod tests {
+    /// The CSV's numbers are `text::number`'s, character for character.
+    #[test]
+    fn push_num_is_number() {
+        for x in [
+            0.0,
+            1e-4,
+            9.99e-5,
+            1e7,
+            9999999.5,
+            0.1 + 0.2,
+            -3.5e-12,
+            1e300,
+            f64::INFINITY,
+        ] {
+            let mut s = String::new();
+            super::push_num(&mut s, x);
+            assert_eq!(s, crate::text::number(x), "{x}");
+        }
+    }
+}
