@@ -94,13 +94,12 @@ pub fn spec(a: &MapArgs) -> anyhow::Result<MapBall> {
         law: a.law,
         ..BallArgs::default()
     };
-    let chosen = args.resolve(a.v0)?;
-    let b = &chosen.ball;
+    let b = args.resolve(a.v0)?;
     let spec = MapSpec::dimensional(b.params, b.law, lambda, zeta)?;
     let n = b.params.normalized();
     Ok(MapBall {
         spec,
-        preset: chosen.preset().map(String::from),
+        preset: b.name.clone(),
         own: Some((n.lambda, n.zeta)),
         v0: b.params.v0,
     })

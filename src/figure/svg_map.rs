@@ -16,7 +16,9 @@ use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 /// What to draw over the map.
 pub struct View<'a> {
+    /// The quantity coloured in.
     pub quantity: Quantity,
+    /// The targets whose feasible region is outlined.
     pub targets: Option<&'a Targets>,
     /// The ball's own (λ, ζ), marked.
     pub own: Option<(f64, f64)>,

@@ -52,10 +52,15 @@ impl Param {
 /// `n` values of one parameter from `from` to `to` (both included), checked by [`Axis::new`].
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct Axis {
+    /// Which parameter the axis varies.
     pub param: Param,
+    /// The first value.
     pub from: f64,
+    /// The last value (included).
     pub to: f64,
+    /// How many values, both ends included.
     pub n: usize,
+    /// Evenly spaced in the value (linear) or in its logarithm.
     pub scale: Scale,
 }
 

@@ -13,6 +13,7 @@ use std::collections::HashMap;
 /// placed on the axes, as (λ, ζ). A closed line ends on its first vertex.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Contour {
+    /// The value the line follows.
     pub level: f64,
     /// (i, j): one of them whole, the vertex lying on a grid edge.
     pub index: Vec<(f64, f64)>,

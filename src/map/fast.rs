@@ -29,6 +29,7 @@ use crate::solver::roots::{halley_bracketed_from, newton_bracketed};
 /// One impact's summary, normalized.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Summary {
+    /// The COR e (Eq. 6).
     pub cor: f64,
     /// F̄_m = z̄_m.
     pub max_force: f64,

@@ -59,20 +59,31 @@ pub enum MapError {
     /// An axis given out of its domain (`axis` is `lambda` or `zeta`, as the flags).
     #[error("invalid {axis}: '{text}' ({reason})")]
     Axis {
+        /// `lambda` or `zeta`.
         axis: &'static str,
+        /// The axis as given.
         text: String,
+        /// Why it is refused.
         reason: String,
     },
     /// More cells than [`MAX_CELLS`].
     #[error("invalid grid: {lambdas} λ values × {zetas} ζ values is {cells} cells (at most {max})", max = MAX_CELLS)]
     TooLarge {
+        /// λ values asked for.
         lambdas: usize,
+        /// ζ values asked for.
         zetas: usize,
+        /// Their product.
         cells: usize,
     },
     /// A part of a targets text that does not read (`part` is the part, as given).
     #[error("invalid where: '{part}' ({reason})")]
-    Target { part: String, reason: String },
+    Target {
+        /// The part, as given.
+        part: String,
+        /// Why it does not read.
+        reason: String,
+    },
     /// The ball, or a K_r or c an axis end gives it, is out of its domain.
     #[error(transparent)]
     Ball(#[from] BallError),
@@ -109,7 +120,9 @@ impl Quantity {
 /// COR and force are NaN.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct Cell {
+    /// The COR e (Eq. 6).
     pub cor: f64,
+    /// Peak force: F̄_m (normalized) or N.
     pub max_force: f64,
     /// `None` when the ball does not rebound (or the solver had no answer).
     pub contact_time: Option<f64>,
@@ -140,8 +153,11 @@ pub struct MapSpec {
     pub base: ImpactParams,
     /// Whether the cells report F̄_m and τ_f (the normalized ball) or N and s.
     pub normalized: bool,
+    /// The contact law of every cell.
     pub law: ContactLaw,
+    /// The λ values (rows).
     pub lambda: Axis,
+    /// The ζ values (columns).
     pub zeta: Axis,
     /// Linear law only: take [`fast::summary`] (closed form, some three times faster, exact to
     /// 1e-12 also where the exact solver loses 2.5e-8) wherever it answers and the ball does
@@ -230,8 +246,11 @@ impl MapSpec {
 /// stored at `i * zetas.len() + j` (rows of λ, as `sweep zeta` groups its rows).
 #[derive(Debug, Clone)]
 pub struct Map {
+    /// What is evaluated.
     pub spec: MapSpec,
+    /// The λ axis' values.
     pub lambdas: Vec<f64>,
+    /// The ζ axis' values.
     pub zetas: Vec<f64>,
     /// `None` until evaluated.
     cells: Vec<Option<Cell>>,

@@ -8,8 +8,11 @@ use serde::Serialize;
 /// ∂e/∂ln λ and ∂e/∂ln ζ at (λ, ζ).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct Sensitivity {
+    /// The point's λ.
     pub lambda: f64,
+    /// The point's ζ.
     pub zeta: f64,
+    /// The COR at the point.
     pub cor: f64,
     /// ∂e/∂ln λ = λ ∂e/∂λ; 0 at λ = 0, its limit (e is smooth in λ there).
     pub d_ln_lambda: f64,

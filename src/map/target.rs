@@ -16,8 +16,11 @@ pub enum Bound {
 /// One constraint: a quantity at least or at most a value.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct Constraint {
+    /// What is bounded.
     pub quantity: Quantity,
+    /// At least or at most.
     pub bound: Bound,
+    /// The bound, in the map's units (normalized or SI).
     pub value: f64,
 }
 
