@@ -56,6 +56,7 @@ impl fmt::Display for Case {
         let view = match self.view {
             View::Impact => "impact",
             View::Sweeps => "sweeps",
+            View::Map => "map",
             View::Drop => "drop",
         };
         let key = match self.param {
@@ -64,7 +65,7 @@ impl fmt::Display for Case {
             Param::V0 => "v",
         };
         let how = match (self.view, self.worker) {
-            (View::Impact | View::Drop, _) => "",
+            (View::Impact | View::Map | View::Drop, _) => "",
             (View::Sweeps, false) => " sync",
             (View::Sweeps, true) => " worker",
         };

@@ -8,6 +8,7 @@
 mod dialogs;
 mod drop;
 mod edit;
+mod map;
 mod scene;
 mod screen;
 mod sweeps;
@@ -66,6 +67,8 @@ pub struct App {
     help_scroll: u16,
     /// The terminal's width and height, once the loop has said (`Action::Resize`).
     size: Option<(u16, u16)>,
+    /// The map view's map, quantity, targets and window.
+    map: super::map_view::MapView,
 }
 
 impl App {
@@ -106,6 +109,7 @@ impl App {
             measured: Vec::new(),
             help_scroll: 0,
             size: None,
+            map: Default::default(),
         };
         app.refresh();
         app
@@ -186,6 +190,7 @@ impl App {
             return Mode::TooSmall;
         }
         match self.overlay {
+            Overlay::None if self.view == View::Map => Mode::Map,
             Overlay::None => Mode::Normal,
             Overlay::Help => Mode::Help,
             Overlay::Input(_) => Mode::Input,
@@ -209,7 +214,7 @@ impl App {
         }
         if !matches!(
             action,
-            Action::SpeedReady(..) | Action::Tick(_) | Action::Resize(..)
+            Action::SpeedReady(..) | Action::MapPass { .. } | Action::Tick(_) | Action::Resize(..)
         ) {
             self.message = None;
         }
@@ -217,7 +222,8 @@ impl App {
             Action::Quit => self.quit = true,
             Action::Resize(w, h) => self.resize(w, h),
             Action::HelpScroll(how) => self.scroll_help(how),
-            Action::NextView | Action::PrevView => self.view = self.view.other(),
+            Action::NextView => self.view = self.view.next(),
+            Action::PrevView => self.view = self.view.prev(),
             Action::ToggleDrop | Action::DropPause | Action::DropReplay | Action::Tick(_) => {
                 self.drop_action(&action)
             }
@@ -242,6 +248,10 @@ impl App {
             | Action::ConfirmNo
             | Action::ToggleHelp
             | Action::CloseHelp => return self.dialog(action).into_iter().collect(),
+            Action::MapCursor { .. }
+            | Action::MapQuantity
+            | Action::MapTargets
+            | Action::MapPass { .. } => self.map_action(action),
             _ => self.edit(action),
         }
         Vec::new()
@@ -357,6 +367,7 @@ impl App {
                 .refresh(&self.setting.params, self.setting.law, preset);
         }
         let mut effects: Vec<Effect> = self.refresh_sweeps().into_iter().collect();
+        effects.extend(self.refresh_map());
         if self.export_wanted {
             effects.extend(self.prepare_export());
         }

@@ -3,6 +3,7 @@
 
 use super::compute::SpeedRequest;
 use super::export::ExportRequest;
+use super::map_view::MapJob;
 use super::save::SaveRequest;
 
 #[derive(Debug, Clone, PartialEq)]
@@ -16,4 +17,7 @@ pub enum Effect {
     /// Run exactly these COR-vs-speed sweeps in the background, dropping any other that is
     /// out; each finished one comes back as `Action::SpeedReady`.
     Compute(Vec<SpeedRequest>),
+    /// Refine this map in the background, pass by pass (a job before it stops on its own:
+    /// `update` set its cancel flag); each pass comes back as `Action::MapPass`.
+    Map(MapJob),
 }

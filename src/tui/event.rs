@@ -7,6 +7,7 @@
 use super::action::{self, Action};
 use super::app::{App, Effect};
 use super::export;
+use super::map_worker::MapWorker;
 use super::save;
 use super::worker::Worker;
 use crate::catalog;
@@ -17,11 +18,15 @@ use std::time::{Duration, Instant};
 
 /// How often to look for a finished sweep while one is running.
 const SWEEP_POLL: Duration = Duration::from_millis(40);
+/// How often to look for a pass of the map while one is being refined: a pass of a
+/// 200 × 60 screen's map takes some milliseconds.
+const MAP_POLL: Duration = Duration::from_millis(5);
 /// Frame period of the drop view's animation (about 30 frames a second).
 const FRAME: Duration = Duration::from_millis(33);
 
 pub fn run(terminal: &mut DefaultTerminal, app: &mut App) -> anyhow::Result<()> {
     let mut worker = Worker::spawn()?;
+    let maps = MapWorker::spawn()?;
     // test-only (see `crate::fault`): tests/tui_pty.rs checks that the terminal is restored
     // after a panic in here
     let panic_on_key = Fault::PanicInLoop.active();
@@ -30,15 +35,22 @@ pub fn run(terminal: &mut DefaultTerminal, app: &mut App) -> anyhow::Result<()> 
     let mut dirty = true;
     let mut clock = Instant::now();
     while !app.should_quit() {
-        carry_out(std::mem::take(&mut effects), app, &mut worker);
+        carry_out(std::mem::take(&mut effects), app, &mut worker, &maps);
         if dirty {
             terminal.draw(|frame| frame.render_widget(&*app, frame.area()))?;
             dirty = false;
         }
         let waiting = !app.speed_requests().is_empty();
         let animating = app.animating();
-        let wait = if animating { FRAME } else { SWEEP_POLL };
-        let mut next = if !(waiting || animating) || event::poll(wait)? {
+        let refining = app.map_pending();
+        let wait = if refining {
+            MAP_POLL
+        } else if animating {
+            FRAME
+        } else {
+            SWEEP_POLL
+        };
+        let mut next = if !(waiting || animating || refining) || event::poll(wait)? {
             Some(event::read()?)
         } else {
             None
@@ -75,6 +87,11 @@ pub fn run(terminal: &mut DefaultTerminal, app: &mut App) -> anyhow::Result<()> 
             effects.extend(app.apply(Action::SpeedReady(request, result)));
             dirty = true;
         }
+        while let Some((generation, map)) = maps.try_recv() {
+            let map = Box::new(map);
+            effects.extend(app.apply(Action::MapPass { generation, map }));
+            dirty = true;
+        }
         if dirty {
             effects.extend(app.refresh());
         }
@@ -83,12 +100,16 @@ pub fn run(terminal: &mut DefaultTerminal, app: &mut App) -> anyhow::Result<()> 
 }
 
 /// Carry out `effects`, and those the answers to them bring, until none is left.
-fn carry_out(mut effects: Vec<Effect>, app: &mut App, worker: &mut Worker) {
+fn carry_out(mut effects: Vec<Effect>, app: &mut App, worker: &mut Worker, maps: &MapWorker) {
     while !effects.is_empty() {
         for effect in std::mem::take(&mut effects) {
             let answer = match effect {
                 Effect::Compute(requests) => {
                     worker.want(&requests);
+                    continue;
+                }
+                Effect::Map(job) => {
+                    maps.want(job);
                     continue;
                 }
                 Effect::Export(request) => match export::write(&request, &export::dir_from_env()) {

@@ -20,23 +20,42 @@ pub enum View {
     Impact,
     /// Normalized peak force vs ζ, COR vs impact speed.
     Sweeps,
+    /// The design map: COR, peak force or contact time over (λ, ζ) (src/tui/map_view.rs).
+    Map,
     /// The drop test (`d`, outside the Tab cycle): src/tui/drop_view.rs.
     Drop,
 }
 
 impl View {
-    pub fn title(self) -> &'static str {
-        match self {
-            View::Impact => "1/2 impact",
-            View::Sweeps => "2/2 sweeps",
-            View::Drop => "drop test",
+    /// The views `Tab` goes through, in order (`Shift+Tab` backwards).
+    pub const CYCLE: [View; 3] = [View::Impact, View::Sweeps, View::Map];
+
+    pub fn title(self) -> String {
+        let name = match self {
+            View::Impact => "impact",
+            View::Sweeps => "sweeps",
+            View::Map => "map",
+            View::Drop => return "drop test".into(),
+        };
+        let n = View::CYCLE.len();
+        let k = View::CYCLE.iter().position(|&v| v == self).unwrap_or(0) + 1;
+        format!("{k}/{n} {name}")
+    }
+
+    /// The next view of the cycle (from the drop view: the impact view).
+    pub fn next(self) -> View {
+        match View::CYCLE.iter().position(|&v| v == self) {
+            Some(k) => View::CYCLE[(k + 1) % View::CYCLE.len()],
+            None => View::Impact,
         }
     }
 
-    pub fn other(self) -> View {
-        match self {
-            View::Impact => View::Sweeps,
-            View::Sweeps | View::Drop => View::Impact,
+    /// The previous view of the cycle (from the drop view: the impact view).
+    pub fn prev(self) -> View {
+        let n = View::CYCLE.len();
+        match View::CYCLE.iter().position(|&v| v == self) {
+            Some(k) => View::CYCLE[(k + n - 1) % n],
+            None => View::Impact,
         }
     }
 
@@ -45,7 +64,7 @@ impl View {
         match self {
             View::Impact => &[Chart::ForceTime, Chart::Hysteresis, Chart::CorZeta],
             View::Sweeps => &[Chart::ForceZeta, Chart::CorSpeed],
-            View::Drop => &[],
+            View::Map | View::Drop => &[],
         }
     }
 }
@@ -57,6 +76,8 @@ pub enum Purpose {
     Value(Param),
     /// The name to save the current setting under as a user preset (`s`).
     PresetName,
+    /// The map view's targets, `cor>=0.8,max_force<=2000` (`t`).
+    Targets,
 }
 
 /// The text-entry dialog.

@@ -73,6 +73,10 @@ impl App {
         let param = match input.purpose {
             Purpose::Value(p) => p,
             Purpose::PresetName => return self.submit_name(text),
+            Purpose::Targets => {
+                self.submit_targets(&text);
+                return None;
+            }
         };
         if text.is_empty() {
             self.overlay = Overlay::None;

@@ -22,6 +22,7 @@ impl App {
             Action::Quit
                 | Action::Resize(..)
                 | Action::SpeedReady(..)
+                | Action::MapPass { .. }
                 | Action::Tick(_)
                 | Action::Exported { .. }
                 | Action::ExportFailed { .. }

@@ -6,6 +6,8 @@ pub mod confirm;
 pub mod drop;
 pub mod help;
 pub mod input;
+pub mod map;
+pub mod map_cells;
 pub mod plot;
 pub mod readout;
 pub mod status;
