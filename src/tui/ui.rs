@@ -169,7 +169,11 @@ impl Widget for &App {
             theme,
         }
         .render(s.header, buf);
-        KeyHints { theme }.render(s.status, buf);
+        KeyHints {
+            theme,
+            map: self.view() == View::Map,
+        }
+        .render(s.status, buf);
         if self.view() == View::Drop {
             // the drop view takes the whole body (src/tui/widgets/drop.rs)
             let body = Rect::new(

@@ -33,12 +33,15 @@ pub struct MapPanel<'a> {
 impl Widget for &MapPanel<'_> {
     fn render(self, area: Rect, buf: &mut Buffer) {
         let (label, _) = unit(self.view.quantity);
+        let full = format!(" map of {label} over (λ ↑, ζ →) · {} ", self.about);
+        let title = if full.chars().count() + 2 <= usize::from(area.width) {
+            full
+        } else {
+            format!(" map of {label} ")
+        };
         let block = Block::bordered()
             .border_style(self.theme.dim())
-            .title(Line::styled(
-                format!(" map of {label} over (λ ↑, ζ →) · {} ", self.about),
-                self.theme.title(),
-            ));
+            .title(Line::styled(title, self.theme.title()));
         let inner = block.inner(area);
         block.render(area, buf);
         let note = |text: String, buf: &mut Buffer| {
@@ -288,8 +291,7 @@ impl MapPanel<'_> {
 impl MapPanel<'_> {
     /// The values under the cursor, the sensitivities, the targets and the map's progress.
     fn info(&self, map: &Map, r: &Raster, area: Rect, buf: &mut Buffer) {
-        let (l, z) = self.point;
-        let (i, j) = cell_of(map, l, z);
+        let (i, j) = cell_of(map, self.point.0, self.point.1);
         let (label, _) = unit(self.view.quantity);
         let v = r.at(i, j);
         let approx = if map.cell(i, j).is_some() { "" } else { "≈" };
@@ -303,10 +305,11 @@ impl MapPanel<'_> {
             Some(_) => " · misses the targets",
             None => "",
         };
+        // the cell's own (λ, ζ): the ball's once the arrows have moved it onto the grid
         let first = format!(
-            " cursor λ {} ζ {} · {label} {value}{meets}",
-            sig_trim(l, 4),
-            sig_trim(z, 4)
+            " cell λ {} ζ {} · {label} {value}{meets}",
+            sig_trim(map.lambdas[i], 4),
+            sig_trim(map.zetas[j], 4)
         );
         let sens = match &self.view.sensitivity {
             Some(Ok(s)) => format!(
