@@ -290,3 +290,57 @@ fn passes_come_from_the_worker_and_stale_ones_are_dropped() {
     press(&mut app, &[KeyCode::Tab]);
     assert!(!app.map_pending());
 }
+
+/// `e` in the map view writes the map on screen: the SVG heat map of the quantity shown (the
+/// code of `bouncelab map --format svg`) and its CSV, with the targets' column.
+#[test]
+fn e_exports_the_map_on_screen_as_svg_and_csv() {
+    let mut app = map_app(true, 120, 40);
+    press(&mut app, &[KeyCode::Char('n'), KeyCode::Char('t')]);
+    typed(&mut app, "cor>=0.7");
+    press(&mut app, &[KeyCode::Enter]);
+    let effects = app.update(Action::Export);
+    let request = effects
+        .into_iter()
+        .find_map(|e| match e {
+            Effect::Export(r) => Some(r),
+            _ => None,
+        })
+        .expect("an export");
+    assert!(request.charts.is_empty());
+    let m = request.map.as_ref().expect("the map");
+    assert_eq!(m.quantity, Quantity::MaxForce);
+    assert_eq!(&m.map, app.map_view().map().unwrap(), "the map on screen");
+    let dir = tempfile::tempdir().unwrap();
+    let files = bouncelab::tui::export::write(&request, dir.path()).unwrap();
+    let names: Vec<String> = files
+        .iter()
+        .map(|f| f.file_name().unwrap().to_string_lossy().into_owned())
+        .collect();
+    assert_eq!(
+        names,
+        [
+            "bouncelab-superball-map-max_force-1.svg",
+            "bouncelab-superball-map-max_force-1.csv"
+        ]
+    );
+    let svg = std::fs::read_to_string(&files[0]).unwrap();
+    assert!(svg.starts_with("<svg") || svg.contains("<svg"), "an SVG");
+    assert!(
+        svg.contains("F_m (N)") && svg.contains("cor&gt;=0.7"),
+        "quantity and targets"
+    );
+    let csv = std::fs::read_to_string(&files[1]).unwrap();
+    let mut lines = csv.lines();
+    assert_eq!(
+        lines.next(),
+        Some("lambda,zeta,cor,max_force,contact_time,feasible")
+    );
+    assert_eq!(lines.count(), m.map.cells().len());
+    let map = &m.map;
+    assert_eq!(
+        csv,
+        bouncelab::cli::map::csv(map, app.map_view().targets.as_ref()),
+        "the CSV of `bouncelab map`"
+    );
+}

@@ -377,6 +377,9 @@ impl App {
     /// The export of what is on screen, once it is up to date: while a COR-vs-speed sweep is
     /// still out the export waits for it (and says so).
     fn prepare_export(&mut self) -> Option<Effect> {
+        if self.view == View::Map {
+            return self.prepare_map_export();
+        }
         if !self.speed_wanted.is_empty() {
             self.info("export waits for the COR-vs-speed sweep…".into());
             return None;

@@ -19,6 +19,7 @@ pub mod drop_view;
 pub mod effect;
 pub mod event;
 pub mod export;
+pub mod export_map;
 pub mod format;
 pub mod keys;
 pub mod layout;

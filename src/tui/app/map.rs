@@ -7,6 +7,8 @@ use crate::map::{Map, MapSpec, Targets, sensitivity};
 use crate::model::contact::ContactLaw;
 use crate::text::sig_trim;
 use crate::tui::action::Action;
+use crate::tui::export::{ExportRequest, file_stem_part};
+use crate::tui::export_map::MapExport;
 use crate::tui::map_view::{self, MapJob, MapView, Window, cell_of, next_quantity};
 use crate::tui::param::Param;
 use crate::tui::state::{Overlay, Purpose};
@@ -216,5 +218,48 @@ impl App {
             self.setting.get(Param::Zeta),
         );
         self.map.sensitivity = Some(sensitivity(spec, l, z).map_err(|e| e.to_string()));
+    }
+}
+
+impl App {
+    /// `e` in the map view: the map on screen once it has full detail (while the worker
+    /// refines it the export waits, and says so).
+    pub(super) fn prepare_map_export(&mut self) -> Option<Effect> {
+        let map = match &self.map.map {
+            Some(Ok(m)) => m,
+            Some(Err(e)) => {
+                self.export_wanted = false;
+                let e = e.clone();
+                self.error(format!("export failed: no map ({e})"));
+                return None;
+            }
+            None => {
+                self.export_wanted = false;
+                self.error("export failed: no map yet".into());
+                return None;
+            }
+        };
+        if !map.is_complete() {
+            self.info("export waits for the map's full detail…".into());
+            return None;
+        }
+        self.export_wanted = false;
+        let s = &self.setting;
+        let export = MapExport {
+            map: map.clone(),
+            quantity: self.map.quantity,
+            targets: self.map.targets.clone(),
+            own: (s.get(Param::Lambda), s.get(Param::Zeta)),
+            title_ball: format!(
+                "{} at v0 = {} m/s",
+                self.preset().name,
+                sig_trim(s.params.v0, 4)
+            ),
+        };
+        Some(Effect::Export(ExportRequest {
+            ball: file_stem_part(&self.preset().name),
+            charts: Vec::new(),
+            map: Some(export),
+        }))
     }
 }
