@@ -276,6 +276,7 @@ fn passes_come_from_the_worker_and_stale_ones_are_dropped() {
         !app.map_view().map().unwrap().is_complete(),
         "stale pass dropped"
     );
+    assert_eq!(app.map_view().generation, now, "the map held is untouched");
     let mut fresh = app.map_view().map().unwrap().clone();
     while fresh.refine().is_some() {}
     app.update(Action::MapPass {
@@ -343,4 +344,32 @@ fn e_exports_the_map_on_screen_as_svg_and_csv() {
         bouncelab::cli::map::csv(map, app.map_view().targets.as_ref()),
         "the CSV of `bouncelab map`"
     );
+}
+
+/// Any terminal size draws without a panic, with and without colour, whatever size the map
+/// was made for; values on screen are never NaN or inf.
+#[test]
+fn every_size_draws() {
+    for color in [true, false] {
+        let mut app = map_app(color, 120, 40);
+        press(&mut app, &[KeyCode::Char('t')]);
+        typed(&mut app, "cor>=0.7");
+        press(&mut app, &[KeyCode::Enter]);
+        for (w, h) in [
+            (50, 16),
+            (51, 17),
+            (64, 20),
+            (80, 24),
+            (97, 31),
+            (200, 60),
+            (300, 90),
+        ] {
+            let t = draw(&app, w, h);
+            let text = format!("{:?}", t.backend());
+            assert!(!text.contains("NaN") && !text.contains("inf"), "{w}x{h}");
+            app.update(Action::Resize(w, h));
+            let t = draw(&app, w, h);
+            assert!(!format!("{:?}", t.backend()).contains("NaN"));
+        }
+    }
 }
