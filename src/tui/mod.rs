@@ -9,6 +9,12 @@
 //! view's figures as SVG and CSV files (`e`) and [`save`] the current setting as a user preset
 //! file (`s`): in both `update` only asks, the loop writes.
 //!
+//! The map view (`Tab` to view 3/3): its state in [`map_view`], its part of `update` in
+//! `app/map`, its panel in `widgets::map` (raster in `widgets::map_cells`); the first pass of
+//! a new map is computed in `update`, the finer ones on [`map_worker`]'s thread, and `e`
+//! writes it through [`export_map`]. [`layout`] is the screen's geometry, which `update`
+//! needs for the map's grid.
+//!
 //! The modules import each other without a cycle (tests/tui_imports.rs): state below
 //! `update`, widgets and the loop above it.
 
