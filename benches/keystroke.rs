@@ -58,6 +58,7 @@ impl fmt::Display for Case {
             View::Impact => "impact",
             View::Sweeps => "sweeps",
             View::Models => "models",
+            View::Map => "map",
             View::Drop => "drop",
         };
         let key = match self.param {
@@ -66,7 +67,7 @@ impl fmt::Display for Case {
             Param::V0 => "v",
         };
         let how = match (self.view, self.worker) {
-            (View::Impact | View::Drop, _) => "",
+            (View::Impact | View::Map | View::Drop, _) => "",
             (View::Sweeps | View::Models, false) => " sync",
             (View::Sweeps | View::Models, true) => " worker",
         };

@@ -225,8 +225,8 @@ fn calibrations_arrive_from_the_worker_and_stale_ones_are_dropped() {
     assert_eq!(asked(&effects), Some(vec![first.clone()]));
     assert!(app.models().is_none());
     // leaving the view drops the request that is out
-    let effects = press(&mut app, &[KeyCode::Tab]);
-    assert_eq!(app.view(), View::Impact);
+    let effects = press(&mut app, &[KeyCode::BackTab]);
+    assert_eq!(app.view(), View::Sweeps);
     assert_eq!(asked(&effects), Some(vec![]));
     assert!(app.models_request().is_none());
 }
@@ -367,18 +367,18 @@ fn the_damping_on_screen_is_what_bouncelab_peers_gives() {
 fn the_tab_cycle_holds_the_models_view() {
     let mut app = App::new(Preset::embedded().remove(0), true);
     let mut seen = vec![app.view()];
-    for _ in 0..3 {
+    for _ in 0..4 {
         press(&mut app, &[KeyCode::Tab]);
         seen.push(app.view());
     }
     assert_eq!(
         seen,
-        [View::Impact, View::Sweeps, View::Models, View::Impact]
+        [View::Impact, View::Sweeps, View::Models, View::Map, View::Impact]
     );
     press(&mut app, &[KeyCode::BackTab]);
-    assert_eq!(app.view(), View::Models);
+    assert_eq!(app.view(), View::Map);
     press(&mut app, &[KeyCode::BackTab]);
-    assert_eq!(app.view(), View::Sweeps);
+    assert_eq!(app.view(), View::Models);
     for key in [KeyCode::Tab, KeyCode::BackTab] {
         press(&mut app, &[KeyCode::Char('d')]);
         assert_eq!(app.view(), View::Drop);

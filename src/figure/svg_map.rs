@@ -31,8 +31,9 @@ const BAR_PX: i32 = 110;
 /// Height of the legend strip under the plot.
 pub(super) const LEGEND_H: i32 = 34;
 
-/// (label, factor from the map's values to the unit shown) of the quantity.
-fn unit(q: Quantity, normalized: bool) -> (&'static str, f64) {
+/// (label, factor from the map's values to the unit shown) of the quantity (the explorer's
+/// map view shows the same).
+pub fn unit(q: Quantity, normalized: bool) -> (&'static str, f64) {
     match (q, normalized) {
         (Quantity::Cor, _) => ("e (COR)", 1.0),
         (Quantity::MaxForce, true) => ("F̄_m", 1.0),

@@ -244,7 +244,7 @@ impl MapSpec {
 
 /// A map being evaluated or evaluated: cell (i, j) is λ = `lambdas[i]`, ζ = `zetas[j]`,
 /// stored at `i * zetas.len() + j` (rows of λ, as `sweep zeta` groups its rows).
-#[derive(Debug, Clone)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct Map {
     /// What is evaluated.
     pub spec: MapSpec,

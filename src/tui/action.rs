@@ -118,6 +118,21 @@ pub enum Action {
     FitReady(u64, Result<super::measured::FitOutcome, String>),
     /// `F`: apply the finished fit to the ball, as one undoable change.
     ApplyFit,
+    /// Map view, arrows: move the cursor, and the ball with it, by `lambda` cells up and
+    /// `zeta` cells right.
+    MapCursor {
+        lambda: i32,
+        zeta: i32,
+    },
+    /// Map view, `n`: show the next quantity (COR, peak force, contact time).
+    MapQuantity,
+    /// Map view, `t`: open the targets entry.
+    MapTargets,
+    /// One more pass of map number `generation`, from the background worker.
+    MapPass {
+        generation: u64,
+        map: Box<crate::map::Map>,
+    },
 }
 
 /// How the help scrolls.
@@ -142,6 +157,8 @@ pub enum Mode {
     Confirm,
     /// The terminal is below the minimum size: only quitting acts.
     TooSmall,
+    /// The map view: the arrows move the cursor, `n` and `t` act; other keys as in `Normal`.
+    Map,
 }
 
 /// The action for a terminal event, if any (key presses and repeats; releases are ignored).
@@ -180,8 +197,9 @@ pub fn from_key(key: KeyEvent, mode: Mode) -> Option<Action> {
             KeyCode::Char('q') | KeyCode::Esc => Some(Action::Quit),
             _ => None,
         },
-        Mode::Normal if ctrl => None,
+        Mode::Normal | Mode::Map if ctrl => None,
         Mode::Normal => normal(key),
+        Mode::Map => map(key).or_else(|| normal(key)),
     }
 }
 
@@ -199,6 +217,29 @@ fn help(code: KeyCode) -> Option<Action> {
         _ => None,
     }
 }
+
+/// The map view's own keys: arrows move the cursor a cell (Shift: [`MAP_LEAP`] cells), `n`
+/// the quantity, `t` the targets.
+fn map(key: KeyEvent) -> Option<Action> {
+    let n = if key.modifiers.contains(KeyModifiers::SHIFT) {
+        MAP_LEAP
+    } else {
+        1
+    };
+    let cursor = |lambda, zeta| Some(Action::MapCursor { lambda, zeta });
+    match key.code {
+        KeyCode::Up => cursor(n, 0),
+        KeyCode::Down => cursor(-n, 0),
+        KeyCode::Right => cursor(0, n),
+        KeyCode::Left => cursor(0, -n),
+        KeyCode::Char('n') => Some(Action::MapQuantity),
+        KeyCode::Char('t') => Some(Action::MapTargets),
+        _ => None,
+    }
+}
+
+/// Cells a Shift+arrow moves the map's cursor.
+pub const MAP_LEAP: i32 = 8;
 
 fn normal(key: KeyEvent) -> Option<Action> {
     let shift = key.modifiers.contains(KeyModifiers::SHIFT);

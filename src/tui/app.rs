@@ -9,6 +9,7 @@ mod dialogs;
 mod drop;
 mod edit;
 mod fit;
+mod map;
 mod models;
 mod scene;
 mod screen;
@@ -76,6 +77,8 @@ pub struct App {
     help_scroll: u16,
     /// The terminal's width and height, once the loop has said (`Action::Resize`).
     size: Option<(u16, u16)>,
+    /// The map view's map, quantity, targets and window.
+    map: super::map_view::MapView,
 }
 
 impl App {
@@ -120,6 +123,7 @@ impl App {
             models: Default::default(),
             help_scroll: 0,
             size: None,
+            map: Default::default(),
         };
         app.refresh();
         app
@@ -200,6 +204,7 @@ impl App {
             return Mode::TooSmall;
         }
         match self.overlay {
+            Overlay::None if self.view == View::Map => Mode::Map,
             Overlay::None => Mode::Normal,
             Overlay::Help => Mode::Help,
             Overlay::Input(_) => Mode::Input,
@@ -228,6 +233,7 @@ impl App {
                 | Action::Tick(_)
                 | Action::Resize(..)
                 | Action::FitReady(..)
+                | Action::MapPass { .. }
         ) {
             self.message = None;
         }
@@ -269,6 +275,10 @@ impl App {
             | Action::OpenMeasured
             | Action::ToggleHelp
             | Action::CloseHelp => return self.dialog(action).into_iter().collect(),
+            Action::MapCursor { .. }
+            | Action::MapQuantity
+            | Action::MapTargets
+            | Action::MapPass { .. } => self.map_action(action),
             _ => self.edit(action),
         }
         Vec::new()
@@ -386,6 +396,7 @@ impl App {
         }
         let mut effects: Vec<Effect> = self.refresh_sweeps().into_iter().collect();
         effects.extend(self.refresh_models());
+        effects.extend(self.refresh_map());
         if self.export_wanted {
             effects.extend(self.prepare_export());
         }
@@ -395,6 +406,9 @@ impl App {
     /// The export of what is on screen, once it is up to date: while a COR-vs-speed sweep is
     /// still out the export waits for it (and says so).
     fn prepare_export(&mut self) -> Option<Effect> {
+        if self.view == View::Map {
+            return self.prepare_map_export();
+        }
         if !self.speed_wanted.is_empty() {
             self.info("export waits for the COR-vs-speed sweep…".into());
             return None;

@@ -3,6 +3,7 @@
 
 use super::compute::SpeedRequest;
 use super::export::ExportRequest;
+use super::map_view::MapJob;
 use super::save::SaveRequest;
 
 #[derive(Debug, Clone, PartialEq)]
@@ -25,4 +26,7 @@ pub enum Effect {
     /// Run exactly these calibrations of the models view in the background (none: drop the
     /// one that is out); a finished one comes back as `Action::ModelsReady`.
     ComputeModels(Vec<super::models::ModelsRequest>),
+    /// Refine this map in the background, pass by pass (a job before it stops on its own:
+    /// `update` set its cancel flag); each pass comes back as `Action::MapPass`.
+    Map(MapJob),
 }

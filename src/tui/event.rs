@@ -9,6 +9,7 @@ use super::action::{self, Action};
 use super::app::{App, Effect};
 use super::export;
 use super::fit_worker::FitWorker;
+use super::map_worker::MapWorker;
 use super::models::ModelsRequest;
 use super::save;
 use super::worker::Worker;
@@ -20,6 +21,9 @@ use std::time::{Duration, Instant};
 
 /// How often to look for a finished sweep while one is running.
 const SWEEP_POLL: Duration = Duration::from_millis(40);
+/// How often to look for a pass of the map while one is being refined: a pass of a
+/// 200 × 60 screen's map takes some milliseconds.
+const MAP_POLL: Duration = Duration::from_millis(5);
 /// Frame period of the drop view's animation (about 30 frames a second).
 const FRAME: Duration = Duration::from_millis(33);
 
@@ -28,6 +32,7 @@ pub fn run(terminal: &mut DefaultTerminal, app: &mut App) -> anyhow::Result<()> 
         sweeps: Worker::spawn()?,
         models: Worker::spawn()?,
         fits: FitWorker::spawn()?,
+        maps: MapWorker::spawn()?,
     };
     // test-only (see `crate::fault`): tests/tui_pty.rs checks that the terminal is restored
     // after a panic in here
@@ -45,8 +50,15 @@ pub fn run(terminal: &mut DefaultTerminal, app: &mut App) -> anyhow::Result<()> 
         let waiting =
             !app.speed_requests().is_empty() || app.models_request().is_some() || app.fitting();
         let animating = app.animating();
-        let wait = if animating { FRAME } else { SWEEP_POLL };
-        let mut next = if !(waiting || animating) || event::poll(wait)? {
+        let refining = app.map_pending();
+        let wait = if refining {
+            MAP_POLL
+        } else if animating {
+            FRAME
+        } else {
+            SWEEP_POLL
+        };
+        let mut next = if !(waiting || animating || refining) || event::poll(wait)? {
             Some(event::read()?)
         } else {
             None
@@ -91,6 +103,11 @@ pub fn run(terminal: &mut DefaultTerminal, app: &mut App) -> anyhow::Result<()> 
             effects.extend(app.apply(Action::FitReady(id, result)));
             dirty = true;
         }
+        while let Some((generation, map)) = worker.maps.try_recv() {
+            let map = Box::new(map);
+            effects.extend(app.apply(Action::MapPass { generation, map }));
+            dirty = true;
+        }
         if dirty {
             effects.extend(app.refresh());
         }
@@ -98,11 +115,12 @@ pub fn run(terminal: &mut DefaultTerminal, app: &mut App) -> anyhow::Result<()> 
     Ok(())
 }
 
-/// The background threads: COR-vs-speed sweeps, the models view's calibrations, the fits.
+/// The background threads: COR-vs-speed sweeps, the models view's calibrations, the fits, the map's passes.
 struct Workers {
     sweeps: Worker,
     models: Worker<ModelsRequest>,
     fits: FitWorker,
+    maps: MapWorker,
 }
 
 /// Carry out `effects`, and those the answers to them bring, until none is left.
@@ -116,6 +134,10 @@ fn carry_out(mut effects: Vec<Effect>, app: &mut App, worker: &mut Workers) {
                 }
                 Effect::ComputeModels(requests) => {
                     worker.models.want(&requests);
+                    continue;
+                }
+                Effect::Map(job) => {
+                    worker.maps.want(job);
                     continue;
                 }
                 Effect::Export(request) => match export::write(&request, &export::dir_from_env()) {

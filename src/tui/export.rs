@@ -34,14 +34,19 @@ pub struct ExportRequest {
     pub ball: String,
     /// (chart name in file names, its figure), in screen order.
     pub charts: Vec<(&'static str, Figure)>,
+    /// The map view's map, after the charts (none in the other views).
+    pub map: Option<super::export_map::MapExport>,
 }
 
 impl ExportRequest {
     /// The files of export number `n` in `dir`: per chart its `.svg`, then its `.csv`.
     pub fn paths(&self, dir: &Path, n: usize) -> Vec<PathBuf> {
+        let map = self.map.iter().map(|m| m.file_name());
         self.charts
             .iter()
-            .flat_map(|(chart, _)| {
+            .map(|(chart, _)| chart.to_string())
+            .chain(map)
+            .flat_map(|chart| {
                 let stem = format!("bouncelab-{}-{chart}-{n}", self.ball);
                 ["svg", "csv"].map(|ext| dir.join(format!("{stem}.{ext}")))
             })
@@ -78,6 +83,7 @@ pub fn request(scene: &Scene, charts: &[Chart]) -> Result<ExportRequest, String>
     Ok(ExportRequest {
         ball: file_stem_part(&scene.ball.name),
         charts,
+        map: None,
     })
 }
 
@@ -107,6 +113,10 @@ pub fn write(request: &ExportRequest, dir: &Path) -> Result<Vec<PathBuf>, String
     for (_, fig) in &request.charts {
         contents.push(svg::render(fig).map_err(|e| e.to_string())?);
         contents.push(csv::to_string(fig));
+    }
+    if let Some(m) = &request.map {
+        let (svg, csv) = m.render()?;
+        contents.extend([svg, csv]);
     }
     if !dir.as_os_str().is_empty() && !dir.is_dir() {
         fs::create_dir_all(dir)

@@ -2,7 +2,7 @@
 //! `update` needs to stop the help's scrolling at its end.
 
 /// (keys, what they do); a row without text is a section heading.
-pub const KEYS: [(&str, &str); 33] = [
+pub const KEYS: [(&str, &str); 39] = [
     ("l / L", "λ up / down (±0.01, coarse ±0.1)"),
     ("z / Z", "ζ up / down (×1.1, coarse ×2)"),
     ("v / V", "v0 up / down (±0.1, coarse ±1 m/s)"),
@@ -19,12 +19,21 @@ pub const KEYS: [(&str, &str); 33] = [
     ("u", "undo the last change"),
     ("e", "export this view (SVG + CSV files)"),
     ("s", "save as a user preset (asks a name)"),
-    ("Tab / Shift+Tab", "switch view (impact, sweeps, models)"),
+    (
+        "Tab / Shift+Tab",
+        "switch view (impact, sweeps, models, map)",
+    ),
     ("d", "drop test (space pauses, b replays)"),
     ("o / O", "load measured data / put it away"),
     ("f / F", "fit the ball to it / apply the fit"),
     ("?", "this help (Esc, ? or q closes)"),
     ("q  Esc  Ctrl-C", "quit"),
+    ("", ""),
+    ("In the map view", ""),
+    ("← → / ↑ ↓", "move the cursor (the ball): ζ / λ"),
+    ("Shift+arrows", "move it 8 cells"),
+    ("n", "show COR, peak force or contact time"),
+    ("t", "targets, e.g. cor>=0.8,max_force<=2000"),
     ("", ""),
     ("In this help", ""),
     ("↑↓ j k PgUp/Dn", "scroll (Home / End: top / end)"),

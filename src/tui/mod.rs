@@ -10,6 +10,12 @@
 //! file (`s`): in both `update` only asks, the loop writes. The COR-vs-speed sweeps and the
 //! models view's calibrations ([`models`]) run on background [`worker`]s.
 //!
+//! The map view (`Tab` to view 4/4): its state in [`map_view`], its part of `update` in
+//! `app/map`, its panel in `widgets::map` (raster in `widgets::map_cells`); the first pass of
+//! a new map is computed in `update`, the finer ones on [`map_worker`]'s thread, and `e`
+//! writes it through [`export_map`]. [`layout`] is the screen's geometry, which `update`
+//! needs for the map's grid.
+//!
 //! The modules import each other without a cycle (tests/tui_imports.rs): state below
 //! `update`, widgets and the loop above it.
 
@@ -20,9 +26,13 @@ pub mod drop_view;
 pub mod effect;
 pub mod event;
 pub mod export;
+pub mod export_map;
 pub mod fit_worker;
 pub mod format;
 pub mod keys;
+pub mod layout;
+pub mod map_view;
+pub mod map_worker;
 pub mod measured;
 pub mod models;
 pub mod param;

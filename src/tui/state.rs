@@ -22,35 +22,43 @@ pub enum View {
     Sweeps,
     /// The field's contact models calibrated to the ball (src/tui/models.rs).
     Models,
+    /// The design map: COR, peak force or contact time over (λ, ζ) (src/tui/map_view.rs).
+    Map,
     /// The drop test (`d`, outside the Tab cycle): src/tui/drop_view.rs.
     Drop,
 }
 
 impl View {
-    pub fn title(self) -> &'static str {
-        match self {
-            View::Impact => "1/3 impact",
-            View::Sweeps => "2/3 sweeps",
-            View::Models => "3/3 models",
-            View::Drop => "drop test",
-        }
+    /// The views `Tab` goes through, in order (`Shift+Tab` backwards).
+    pub const CYCLE: [View; 4] = [View::Impact, View::Sweeps, View::Models, View::Map];
+
+    pub fn title(self) -> String {
+        let name = match self {
+            View::Impact => "impact",
+            View::Sweeps => "sweeps",
+            View::Models => "models",
+            View::Map => "map",
+            View::Drop => return "drop test".into(),
+        };
+        let n = View::CYCLE.len();
+        let k = View::CYCLE.iter().position(|&v| v == self).unwrap_or(0) + 1;
+        format!("{k}/{n} {name}")
     }
 
-    /// The view `Tab` goes to; from the drop view, the impact view.
+    /// The next view of the cycle (from the drop view: the impact view).
     pub fn next(self) -> View {
-        match self {
-            View::Impact => View::Sweeps,
-            View::Sweeps => View::Models,
-            View::Models | View::Drop => View::Impact,
+        match View::CYCLE.iter().position(|&v| v == self) {
+            Some(k) => View::CYCLE[(k + 1) % View::CYCLE.len()],
+            None => View::Impact,
         }
     }
 
-    /// The view `Shift+Tab` goes to; from the drop view, the impact view.
+    /// The previous view of the cycle (from the drop view: the impact view).
     pub fn prev(self) -> View {
-        match self {
-            View::Impact => View::Models,
-            View::Sweeps | View::Drop => View::Impact,
-            View::Models => View::Sweeps,
+        let n = View::CYCLE.len();
+        match View::CYCLE.iter().position(|&v| v == self) {
+            Some(k) => View::CYCLE[(k + n - 1) % n],
+            None => View::Impact,
         }
     }
 
@@ -64,7 +72,7 @@ impl View {
                 Chart::ModelsForceTime,
                 Chart::ModelsForceDisplacement,
             ],
-            View::Drop => &[],
+            View::Map | View::Drop => &[],
         }
     }
 }
@@ -78,6 +86,8 @@ pub enum Purpose {
     PresetName,
     /// The path of a measured file to draw and fit to (`o`).
     MeasuredPath,
+    /// The map view's targets, `cor>=0.8,max_force<=2000` (`t`).
+    Targets,
 }
 
 /// The text-entry dialog.

@@ -9,9 +9,10 @@ use super::widgets::confirm::ConfirmDialog;
 use super::widgets::fit::FitView;
 use super::widgets::help::Help;
 use super::widgets::input::InputDialog;
+use super::widgets::map::MapPanel;
 use super::widgets::models::ModelsTable;
 use super::widgets::plot::Plot;
-use super::widgets::readout::{self, Readout};
+use super::widgets::readout::Readout;
 use super::widgets::status::{Header, KeyHints};
 pub use crate::figure::explorer::Chart;
 use crate::figure::{Figure, explorer};
@@ -20,10 +21,8 @@ use ratatui::layout::{Constraint, Layout, Rect};
 use ratatui::text::Line;
 use ratatui::widgets::{Paragraph, Widget, Wrap};
 
+pub use super::layout::SIDE_PANEL_WIDTH;
 pub use super::state::{MIN_HEIGHT, MIN_WIDTH};
-/// From this width the readout is a panel beside the charts.
-const SIDE_PANEL_WIDTH: u16 = 80;
-
 /// The figure a chart shows for the current state (the one `e` exports).
 pub fn figure(app: &App, chart: Chart) -> Figure {
     explorer::figure(chart, &app.scene())
@@ -40,54 +39,36 @@ pub struct Screen {
     pub charts: Vec<(Chart, Rect)>,
     /// The fit pane under the charts, while there is a fit (`f`).
     pub fit: Option<Rect>,
+    /// The whole chart area (the map view draws its heat map there).
+    pub chart_area: Rect,
 }
 
 /// Where everything goes, or `None` when the area is too small to use.
 pub fn screen(app: &App, area: Rect) -> Option<Screen> {
-    if area.width < MIN_WIDTH || area.height < MIN_HEIGHT {
-        return None;
-    }
-    let [header, body, status] = Layout::vertical([
-        Constraint::Length(1),
-        Constraint::Fill(1),
-        Constraint::Length(1),
-    ])
-    .areas(area);
     // the models view's table always goes beside its charts
-    let side_panel = (area.width >= SIDE_PANEL_WIDTH && body.height >= readout::PANEL_HEIGHT)
-        || app.view() == View::Models;
-    let (charts, readout) = if side_panel {
-        let w = (area.width * 3 / 10).clamp(32, 40);
-        let [c, r] = Layout::horizontal([Constraint::Fill(1), Constraint::Length(w)]).areas(body);
-        (c, r)
-    } else {
-        let [c, r] = Layout::vertical([
-            Constraint::Fill(1),
-            Constraint::Length(readout::COMPACT_HEIGHT),
-        ])
-        .areas(body);
-        (c, r)
-    };
-    let (charts, fit) = split_fit(app, charts);
+    let b = super::layout::body(area, app.view() == View::Models)?;
+    let (charts, fit) = split_fit(app, b.charts);
     let charts = match app.view() {
         View::Impact => impact_grid(charts),
         View::Sweeps => sweeps_grid(charts),
         View::Models => models_grid(charts),
-        View::Drop => Vec::new(),
+        View::Drop | View::Map => Vec::new(),
     };
     Some(Screen {
-        header,
-        status,
-        readout,
-        side_panel,
+        header: b.header,
+        status: b.status,
+        readout: b.readout,
+        side_panel: b.side_panel,
         charts,
         fit,
+        chart_area: b.charts,
     })
 }
 
-/// The fit pane's view, while there is a fit and the view has charts.
+/// The fit pane's view, while there is a fit and the view has charts (not the map's raster).
 fn fit_view(app: &App, theme: Theme) -> Option<FitView<'_>> {
-    if app.view() == View::Drop {
+    // the map view's grid is sized by `update` from the whole chart area (layout::body)
+    if matches!(app.view(), View::Drop | View::Map) {
         return None;
     }
     Some(FitView {
@@ -183,6 +164,33 @@ fn readout(app: &App, tall: bool, theme: Theme) -> Readout<'_> {
     }
 }
 
+/// The map view's panel: the map, the current point, the other presets by their key.
+fn map_panel(app: &App, theme: Theme) -> MapPanel<'_> {
+    let s = app.setting();
+    let presets = app
+        .presets()
+        .iter()
+        .enumerate()
+        .filter(|&(i, _)| i != s.preset)
+        .map(|(i, p)| {
+            let n = p.params().normalized();
+            (i + 1, n.lambda, n.zeta)
+        })
+        .collect();
+    MapPanel {
+        view: app.map_view(),
+        point: (s.get(Param::Lambda), s.get(Param::Zeta)),
+        presets,
+        about: format!(
+            "{} at v0 = {} m/s, {} law",
+            app.preset().name,
+            crate::text::sig_trim(s.params.v0, 4),
+            s.law
+        ),
+        theme,
+    }
+}
+
 /// The overlay on top of everything, if any.
 fn render_overlay(app: &App, theme: Theme, area: Rect, buf: &mut Buffer) {
     match app.overlay() {
@@ -221,7 +229,11 @@ impl Widget for &App {
             theme,
         }
         .render(s.header, buf);
-        KeyHints { theme }.render(s.status, buf);
+        KeyHints {
+            theme,
+            map: self.view() == View::Map,
+        }
+        .render(s.status, buf);
         if self.view() == View::Drop {
             // the drop view takes the whole body (src/tui/widgets/drop.rs)
             let body = Rect::new(
@@ -235,6 +247,9 @@ impl Widget for &App {
             models_table(self, theme).render(s.readout, buf);
         } else {
             readout(self, s.side_panel, theme).render(s.readout, buf);
+        }
+        if self.view() == View::Map {
+            map_panel(self, theme).render(s.chart_area, buf);
         }
         let scene = self.scene();
         for (chart, rect) in &s.charts {

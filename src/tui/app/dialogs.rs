@@ -75,6 +75,10 @@ impl App {
             Purpose::Value(p) => p,
             Purpose::PresetName => return self.submit_name(text),
             Purpose::MeasuredPath => return self.submit_path(text),
+            Purpose::Targets => {
+                self.submit_targets(&text);
+                return None;
+            }
         };
         if text.is_empty() {
             self.overlay = Overlay::None;

@@ -23,6 +23,7 @@ impl App {
                 | Action::Resize(..)
                 | Action::SpeedReady(..)
                 | Action::ModelsReady(..)
+                | Action::MapPass { .. }
                 | Action::Tick(_)
                 | Action::Exported { .. }
                 | Action::ExportFailed { .. }

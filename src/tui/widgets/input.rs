@@ -62,6 +62,13 @@ fn render(input: &Input, s: &Setting, theme: &Theme, area: Rect, buf: &mut Buffe
                 62,
             )
         }
+        Purpose::Targets => (
+            " Map targets ".to_string(),
+            " e.g. cor>=0.8,max_force<=2000 (N, s); empty clears".to_string(),
+            " where ".to_string(),
+            " Enter accepts · Esc cancels",
+            60,
+        ),
     };
     let w = width.min(area.width);
     // border, label and cursor take the rest of the row: a longer text shows its end

@@ -7,6 +7,8 @@ pub mod drop;
 pub mod fit;
 pub mod help;
 pub mod input;
+pub mod map;
+pub mod map_cells;
 pub mod models;
 pub mod plot;
 pub mod readout;

@@ -30,6 +30,13 @@ const HINTS: [(&str, &str, u8); 17] = [
     ("q", "quit", 0),
 ];
 
+/// The map view's hints in place of `↑↓ change` and `←→ select`: the arrows move the cursor.
+const MAP_HINTS: [(&str, &str, u8); 3] = [
+    ("←→↑↓", "cursor", 0),
+    ("n", "quantity", 1),
+    ("t", "targets", 1),
+];
+
 /// The header line: ball, law, view, and the last message on the right.
 #[derive(Debug, Clone, Copy)]
 pub struct Header<'a> {
@@ -77,20 +84,29 @@ fn message(m: &Message, theme: &Theme, area: Rect, buf: &mut Buffer) {
 #[derive(Debug, Clone, Copy)]
 pub struct KeyHints {
     pub theme: Theme,
+    /// In the map view: its own hints for the arrows.
+    pub map: bool,
 }
 
 impl Widget for &KeyHints {
     fn render(self, area: Rect, buf: &mut Buffer) {
-        hints(&self.theme, area, buf);
+        let hints_shown: Vec<(&str, &str, u8)> = if self.map {
+            let mut v = MAP_HINTS.to_vec();
+            v.extend(HINTS.iter().filter(|h| !matches!(h.0, "↑↓" | "←→")));
+            v
+        } else {
+            HINTS.to_vec()
+        };
+        hints(&self.theme, &hints_shown, area, buf);
     }
 }
 
-fn hints(theme: &Theme, area: Rect, buf: &mut Buffer) {
+fn hints(theme: &Theme, all: &[(&str, &str, u8)], area: Rect, buf: &mut Buffer) {
     let width = |h: &(&str, &str, u8)| h.0.chars().count() + h.1.chars().count() + 3;
     let mut budget = usize::from(area.width);
-    let mut keep = [false; HINTS.len()];
+    let mut keep = vec![false; all.len()];
     for rank in 0..=4 {
-        for (i, h) in HINTS.iter().enumerate() {
+        for (i, h) in all.iter().enumerate() {
             if h.2 == rank && width(h) <= budget {
                 keep[i] = true;
                 budget -= width(h);
@@ -98,7 +114,7 @@ fn hints(theme: &Theme, area: Rect, buf: &mut Buffer) {
         }
     }
     let mut spans = vec![Span::raw(" ")];
-    for (h, _) in HINTS.iter().zip(keep).filter(|(_, k)| *k) {
+    for (h, _) in all.iter().zip(keep).filter(|(_, k)| *k) {
         spans.push(Span::styled(h.0, theme.key()));
         spans.push(Span::raw(format!(" {}  ", h.1)));
     }

@@ -1,0 +1,84 @@
+//! The explorer's map view at 200 × 60 (issue 21: first picture ≤ 16 ms after a key, full
+//! detail ≤ 50 ms). Run: `cargo bench --bench map_view`.
+//!
+//! Every case starts from the superball in the map view with its map up to date, a fresh
+//! clone each iteration (not timed), and presses a key through `App::update`, then renders
+//! the whole screen into a 200 × 60 `Buffer` with the widget the event loop draws (`&App`):
+//!
+//! - `first_picture`: `v` (v0 up) makes a new map: `update` evaluates its first, coarse pass
+//!   (as in the explorer, the rest goes to the background worker) and the screen is drawn —
+//!   what the user sees within the frame after the key.
+//! - `full_detail`: the same key with every pass evaluated inside `update` (all cores, as the
+//!   worker does them), then one draw: the time to the full-detail picture, without the
+//!   event loop's poll (≤ 5 ms while a map is refined) and the coarser frames in between.
+//! - `cursor`: `→` moves the cursor a cell: one impact and the sensitivities, no new map.
+//! - `draw`: the render alone of the complete map.
+
+use bouncelab::preset::Preset;
+use bouncelab::tui::action::Action;
+use bouncelab::tui::app::App;
+use bouncelab::tui::param::{Dir, Param};
+use divan::Bencher;
+use ratatui::buffer::Buffer;
+use ratatui::layout::Rect;
+use ratatui::widgets::Widget;
+
+fn main() {
+    divan::main();
+}
+
+const AREA: Rect = Rect {
+    x: 0,
+    y: 0,
+    width: 200,
+    height: 60,
+};
+
+/// The superball in the map view at 200 × 60, its map complete; with the background worker
+/// (`update` then evaluates only a new map's first pass) or without (every pass).
+fn start(background: bool) -> App {
+    let mut app = App::new(Preset::embedded().remove(0), true);
+    app.update(Action::Resize(AREA.width, AREA.height));
+    app.update(Action::NextView);
+    app.update(Action::NextView);
+    if background {
+        app = app.with_background_sweeps();
+    }
+    app
+}
+
+const V_UP: Action = Action::Step {
+    param: Param::V0,
+    dir: Dir::Up,
+    coarse: false,
+};
+
+fn key_and_draw(b: Bencher, app: App, key: Action) {
+    b.with_inputs(|| (app.clone(), Buffer::empty(AREA)))
+        .bench_local_refs(|(app, buf)| {
+            app.update(key.clone());
+            app.render(AREA, buf);
+        });
+}
+
+#[divan::bench]
+fn first_picture(b: Bencher) {
+    key_and_draw(b, start(true), V_UP);
+}
+
+#[divan::bench]
+fn full_detail(b: Bencher) {
+    key_and_draw(b, start(false), V_UP);
+}
+
+#[divan::bench]
+fn cursor(b: Bencher) {
+    key_and_draw(b, start(true), Action::MapCursor { lambda: 0, zeta: 1 });
+}
+
+#[divan::bench]
+fn draw(b: Bencher) {
+    let app = start(false);
+    b.with_inputs(|| Buffer::empty(AREA))
+        .bench_local_refs(|buf| app.render(AREA, buf));
+}

@@ -1,0 +1,57 @@
+//! Where the screen's parts go for a terminal area: header, body (charts and readout), status
+//! line. Pure geometry of a `Rect`, below `App`: `update` needs it too (the map view's grid
+//! has one cell per half character of the chart area), and the drawing uses the same numbers.
+
+use super::state::{MIN_HEIGHT, MIN_WIDTH};
+use super::widgets::readout;
+use ratatui::layout::{Constraint, Layout, Rect};
+
+/// From this width the readout is a panel beside the charts.
+pub const SIDE_PANEL_WIDTH: u16 = 80;
+
+/// The parts of a usable screen.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Body {
+    pub header: Rect,
+    pub status: Rect,
+    pub readout: Rect,
+    /// Whether the readout is the tall side panel (or the compact strip).
+    pub side_panel: bool,
+    /// Where the view's charts go.
+    pub charts: Rect,
+}
+
+/// The parts for `area`, or `None` below the minimum size; `side` puts the readout beside the
+/// charts whatever the size (the models view's table).
+pub fn body(area: Rect, side: bool) -> Option<Body> {
+    if area.width < MIN_WIDTH || area.height < MIN_HEIGHT {
+        return None;
+    }
+    let [header, body, status] = Layout::vertical([
+        Constraint::Length(1),
+        Constraint::Fill(1),
+        Constraint::Length(1),
+    ])
+    .areas(area);
+    let side_panel =
+        (area.width >= SIDE_PANEL_WIDTH && body.height >= readout::PANEL_HEIGHT) || side;
+    let (charts, readout) = if side_panel {
+        let w = (area.width * 3 / 10).clamp(32, 40);
+        let [c, r] = Layout::horizontal([Constraint::Fill(1), Constraint::Length(w)]).areas(body);
+        (c, r)
+    } else {
+        let [c, r] = Layout::vertical([
+            Constraint::Fill(1),
+            Constraint::Length(readout::COMPACT_HEIGHT),
+        ])
+        .areas(body);
+        (c, r)
+    };
+    Some(Body {
+        header,
+        status,
+        readout,
+        side_panel,
+        charts,
+    })
+}
