@@ -373,7 +373,13 @@ fn the_tab_cycle_holds_the_models_view() {
     }
     assert_eq!(
         seen,
-        [View::Impact, View::Sweeps, View::Models, View::Map, View::Impact]
+        [
+            View::Impact,
+            View::Sweeps,
+            View::Models,
+            View::Map,
+            View::Impact
+        ]
     );
     press(&mut app, &[KeyCode::BackTab]);
     assert_eq!(app.view(), View::Map);
