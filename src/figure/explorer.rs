@@ -60,9 +60,17 @@ pub struct SpeedSweep<'a> {
     pub v_max: f64,
 }
 
-/// The pinned setting and its results, drawn dimmed behind the live ones.
-#[derive(Debug, Clone, Copy)]
+/// Palette colours of pins 1, 2, … in the picture (grey first, as the one ghost always was;
+/// never orange, this run's colour). On screen every pin is dimmed and tagged `p1`, `p2`, ….
+const PIN_COLORS: [usize; 7] = [GREY, 5, 3, 2, 0, 1, 6];
+
+/// A pinned setting and its results, drawn dimmed behind the live ones.
+#[derive(Debug, Clone)]
 pub struct Pinned<'a> {
+    /// 1, 2, …: the pin's tag on screen and in the series ids (`pinned 2 model`).
+    pub number: usize,
+    /// The ball's name.
+    pub ball: String,
     pub params: ImpactParams,
     pub law: ContactLaw,
     pub run: Option<&'a ImpactResponse>,
@@ -135,7 +143,8 @@ pub struct Scene<'a> {
     pub speed: Option<SpeedSweep<'a>>,
     /// While COR-vs-speed sweeps are out: the highest speed they reach (the axis spans it).
     pub speed_pending: Option<f64>,
-    pub pinned: Option<Pinned<'a>>,
+    /// The pins, oldest first.
+    pub pinned: Vec<Pinned<'a>>,
     /// The user's measured data, drawn on the charts they belong to.
     pub measured: &'a [MeasuredOverlay],
 }
@@ -170,23 +179,73 @@ fn lambda_zeta_text(p: &ImpactParams) -> String {
     format!("λ = {}, ζ = {}", short(n.lambda, 3), short(n.zeta, 3))
 }
 
-/// A dimmed curve on screen: a grey dotted line in the picture.
-fn pinned(label: String, id: &str, points: Vec<(f64, f64)>) -> Series {
-    Series::new(&label, id, Kind::Pinned, Style::Dotted, GREY)
+impl Pinned<'_> {
+    /// "p2": the tag at the pin's curves on screen.
+    pub fn tag(&self) -> String {
+        format!("p{}", self.number)
+    }
+
+    /// The pin as the picture's legend names it: number, ball, parameters, law.
+    pub fn label(&self) -> String {
+        format!(
+            "pinned {}: {} ({}, v0 = {} m/s, {} law)",
+            self.number,
+            self.ball,
+            lambda_zeta_text(&self.params),
+            short(self.params.v0, 3),
+            self.law
+        )
+    }
+
+    /// The pin as the terminal legend names it, short enough for a chart's corner: "p2
+    /// golf"; the readout's pin table gives its parameters and differences.
+    pub fn key(&self) -> String {
+        format!("{} {}", self.tag(), self.ball)
+    }
+
+    fn color(&self) -> usize {
+        PIN_COLORS[(self.number.max(1) - 1) % PIN_COLORS.len()]
+    }
+
+    /// The pin's curve: dimmed and tagged on screen, a dotted line of its colour in the
+    /// picture; `what` ends its CSV id ("model", "displacement", "lambda=0.4").
+    fn curve(&self, what: &str, points: Vec<(f64, f64)>) -> Series {
+        let id = format!("pinned {} {what}", self.number);
+        let tag = self.tag();
+        Series::new(
+            &self.label(),
+            &id,
+            Kind::Pinned,
+            Style::Dotted,
+            self.color(),
+        )
         .with_points(points)
-        .with_look(Look::new(Tone::Ghost, Some("pinned"), None))
+        .with_look(Look::new(Tone::Ghost, Some(&self.key()), Some(&tag)))
+    }
+
+    /// The pin's run on a ζ chart: its number, dimmed, over the point; in the legend under
+    /// the pins' one entry there ("pinned"), as the ζ charts' legends are long already.
+    fn marker(&self, at: (f64, f64)) -> Series {
+        let id = format!("pinned {} run", self.number);
+        let number = self.number.to_string();
+        let look = Look::new(Tone::Ghost, Some("pinned"), Some(&number));
+        Series::new(
+            &format!("{} run", self.label()),
+            &id,
+            Kind::Pinned,
+            Style::Markers(Marker::Diamond),
+            self.color(),
+        )
+        .with_points(vec![at])
+        .with_look(look)
+    }
 }
 
-/// One run's point on a sweep's chart: the current run's ◆, or the pinned run's dimmed ◇.
-fn run_marker(label: String, pinned: bool, at: (f64, f64)) -> Series {
-    let (id, role, color, look) = if pinned {
-        let look = Look::new(Tone::Ghost, Some("pinned"), Some("◇"));
-        ("pinned run", Kind::Pinned, GREY, look)
-    } else {
-        let look = Look::new(Tone::Highlight, Some("this run"), Some("◆"));
-        ("this run", Kind::ThisRun, THIS_RUN_COLOR, look)
-    };
-    Series::new(&label, id, role, Style::Markers(Marker::Diamond), color)
+/// The current run's point on a sweep's chart: ◆.
+fn run_marker(label: String, at: (f64, f64)) -> Series {
+    let look = Look::new(Tone::Highlight, Some("this run"), Some("◆"));
+    let diamond = Style::Markers(Marker::Diamond);
+    Series::new(&label, "this run", Kind::ThisRun, diamond, THIS_RUN_COLOR)
         .with_points(vec![at])
         .with_look(look)
 }
@@ -205,24 +264,18 @@ fn history_figure(chart: Chart, scene: &Scene) -> Figure {
     let from = format!("{MODIFIED} parameters");
     let to = format!("{from} ({})", lambda_zeta_text(&scene.ball.params));
     fig.subtitle = fig.subtitle.replacen(&from, &to, 1);
-    if let Some(p) = &scene.pinned
-        && let Some(r) = p.run
-    {
+    for p in &scene.pinned {
+        let Some(r) = p.run else { continue };
         let h = &r.history;
-        let label = format!(
-            "pinned ({}, v0 = {} m/s)",
-            lambda_zeta_text(&p.params),
-            short(p.params.v0, 3)
-        );
-        let (id, xs) = if chart == Chart::ForceTime {
-            ("pinned model", &h.t)
+        let (what, xs) = if chart == Chart::ForceTime {
+            ("model", &h.t)
         } else {
-            ("pinned displacement", &h.displacement)
+            ("displacement", &h.displacement)
         };
         let pts = xs.iter().copied().zip(h.force.iter().copied()).collect();
-        let mut s = pinned(label, id, pts);
+        let mut s = p.curve(what, pts);
         if chart == Chart::Hysteresis {
-            s.look.key = Some("pinned α".into());
+            s.look.key = Some(format!("{} α", p.key()));
         }
         fig.insert_before_measured(s);
     }
@@ -231,13 +284,8 @@ fn history_figure(chart: Chart, scene: &Scene) -> Figure {
 
 /// The decades of ζ shown: 0.01 … 100, widened to take in the current and pinned ζ.
 pub fn decades(scene: &Scene) -> (i32, i32) {
-    let pinned = scene.pinned.map(|p| p.params.normalized().zeta);
-    super::ticks::covering(
-        (-2, 2),
-        pinned
-            .into_iter()
-            .chain([scene.ball.params.normalized().zeta]),
-    )
+    let pinned = scene.pinned.iter().map(|p| p.params.normalized().zeta);
+    super::ticks::covering((-2, 2), pinned.chain([scene.ball.params.normalized().zeta]))
 }
 
 /// The points of a ζ sweep inside the decades shown.
@@ -251,21 +299,22 @@ fn shown(c: &ZetaSweep, scene: &Scene) -> Vec<ZetaPoint> {
         .collect()
 }
 
-/// The pinned λ's curve and the pinned run's ◇ on Fig. 2 (`cor`) or 3.
+/// Each pin's λ curve (tagged `p1`, …) and run (its number) on Fig. 2 (`cor`) or 3, one
+/// legend entry for all.
 fn add_pinned_zeta(fig: &mut Figure, scene: &Scene, cor: bool) {
     let value = |p: &ZetaPoint| if cor { p.cor } else { p.max_force_normalized };
     let of_run = |r: &ImpactResponse| if cor { r.cor } else { r.max_force_normalized };
-    if let Some(p) = &scene.pinned {
+    for p in &scene.pinned {
         if let Some(c) = &p.zeta {
-            let label = format!("pinned, λ = {}", short(c.lambda, 3));
-            let id = format!("pinned lambda={}", short(c.lambda, 6));
+            let what = format!("lambda={}", short(c.lambda, 6));
             let pts = shown(c, scene).iter().map(|p| (p.zeta, value(p))).collect();
-            fig.insert_before_measured(pinned(label, &id, pts));
+            let mut s = p.curve(&what, pts);
+            s.look.key = Some("pinned".into());
+            fig.insert_before_measured(s);
         }
         if let Some(r) = p.run {
             let at = (p.params.normalized().zeta, of_run(r));
-            let label = format!("pinned run ({})", lambda_zeta_text(&p.params));
-            fig.insert_before_measured(run_marker(label, true, at));
+            fig.insert_before_measured(p.marker(at));
         }
     }
 }
@@ -313,11 +362,7 @@ fn zeta_figure(chart: Chart, scene: &Scene) -> Figure {
             lambda_zeta_text(&scene.ball.params),
             short(y, 3)
         );
-        fig.insert_before_measured(run_marker(
-            label,
-            false,
-            (scene.ball.params.normalized().zeta, y),
-        ));
+        fig.insert_before_measured(run_marker(label, (scene.ball.params.normalized().zeta, y)));
     }
     fig
 }
@@ -335,24 +380,22 @@ fn speed_figure(scene: &Scene) -> Figure {
     let mut fig = paper::cor_velocity(ball, rows, onset);
     let v_hi = [
         scene.speed.map(|s| s.v_max),
-        scene.pinned.and_then(|p| p.speed).map(|s| s.v_max),
         scene.speed_pending,
         Some(ball.params.v0),
     ]
     .into_iter()
     .flatten()
+    .chain(scene.pinned.iter().filter_map(|p| p.speed).map(|s| s.v_max))
     .fold(0.0, f64::max);
     let left = fig.x.range.map_or(0.0, |r| r.0);
     fig.x.range = Some((left, v_hi));
     if scene.speed_pending.is_some() {
         fig.screen_title.push_str(" · updating…");
     }
-    if let Some(p) = &scene.pinned
-        && let Some(c) = &p.speed
-    {
-        let label = format!("pinned ({}, {} law)", lambda_zeta_text(&p.params), p.law);
+    for p in &scene.pinned {
+        let Some(c) = &p.speed else { continue };
         let pts = c.points.iter().map(|p| (p.v0, p.cor)).collect();
-        fig.insert_before_measured(pinned(label, "pinned model", pts));
+        fig.insert_before_measured(p.curve("model", pts));
     }
     if let Some(r) = scene.run {
         let v0 = ball.params.v0;
@@ -361,7 +404,7 @@ fn speed_figure(scene: &Scene) -> Figure {
             short(v0, 3),
             short(r.cor, 3)
         );
-        fig.insert_before_measured(run_marker(label, false, (v0, r.cor)));
+        fig.insert_before_measured(run_marker(label, (v0, r.cor)));
     }
     fig
 }

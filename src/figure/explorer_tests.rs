@@ -26,7 +26,7 @@ fn a_scene_without_results_draws_frames_and_says_what_is_missing() {
         zeta: None,
         speed: None,
         speed_pending: Some(20.0),
-        pinned: None,
+        pinned: Vec::new(),
         measured: &[],
     };
     let ft = figure(Chart::ForceTime, &scene);
@@ -62,7 +62,7 @@ fn zeta_charts_show_the_decades_and_mark_the_current_lambda() {
         }),
         speed: None,
         speed_pending: None,
-        pinned: None,
+        pinned: Vec::new(),
         measured: &[],
     };
     let fig = figure(Chart::CorZeta, &scene);

@@ -19,7 +19,9 @@ pub use super::effect::Effect;
 use super::export;
 use super::param::Param;
 use super::save::SaveRequest;
-pub use super::state::{Confirm, Ghost, Input, Message, Overlay, Purpose, Setting, Severity, View};
+pub use super::state::{
+    Confirm, Ghost, Input, MAX_PINS, Message, Overlay, Purpose, Setting, Severity, View,
+};
 use crate::model::contact::ContactLaw;
 use crate::model::params::ImpactParams;
 use crate::preset::Preset;
@@ -39,7 +41,8 @@ pub struct App {
     overlay: Overlay,
     message: Option<Message>,
     color: bool,
-    ghost: Option<Ghost>,
+    /// The pinned runs, oldest first (at most [`MAX_PINS`]).
+    pins: Vec<Ghost>,
     undo: Vec<Setting>,
     quit: bool,
     /// The impact for `run_for`.
@@ -90,7 +93,7 @@ impl App {
             overlay: Overlay::None,
             message: None,
             color,
-            ghost: None,
+            pins: Vec::new(),
             undo: Vec::new(),
             quit: false,
             run: None,
@@ -157,8 +160,13 @@ impl App {
     pub fn color(&self) -> bool {
         self.color
     }
+    /// The pinned runs, oldest first: `p1` is the first.
+    pub fn pins(&self) -> &[Ghost] {
+        &self.pins
+    }
+    /// The latest pin.
     pub fn ghost(&self) -> Option<&Ghost> {
-        self.ghost.as_ref()
+        self.pins.last()
     }
     pub fn undo_depth(&self) -> usize {
         self.undo.len()
@@ -281,7 +289,7 @@ impl App {
                 self.info(format!("reset to the {} preset", self.presets[i].name));
             }
             Action::Pin => self.pin(),
-            Action::Unpin if self.ghost.take().is_some() => self.info("ghost cleared".into()),
+            Action::Unpin => self.unpin(),
             Action::Undo => match self.undo.pop() {
                 Some(previous) => {
                     self.setting = previous;
@@ -324,14 +332,33 @@ impl App {
         }
     }
 
+    /// Pin the current run: its curves stay, dimmed and tagged, while the setting moves on.
+    /// A run already pinned is not pinned twice; past [`MAX_PINS`] nothing is pinned.
     fn pin(&mut self) {
-        self.ghost = Some(Ghost {
+        if let Some(i) = self.pins.iter().position(|g| g.setting == self.setting) {
+            return self.info(format!("already pinned as p{}", i + 1));
+        }
+        if self.pins.len() >= MAX_PINS {
+            return self.warn(format!("{MAX_PINS} runs pinned, the most: P clears them"));
+        }
+        self.pins.push(Ghost {
             setting: self.setting.clone(),
             run: self.run.clone(),
             zeta: self.zeta.clone(),
             speed: self.speed.clone(),
         });
-        self.info("pinned: the current curves stay as a dimmed ghost (P clears)".into());
+        let n = self.pins.len();
+        self.info(format!(
+            "pinned as p{n}: its curves stay, dimmed (p pins more, P clears)"
+        ));
+    }
+
+    fn unpin(&mut self) {
+        match std::mem::take(&mut self.pins).len() {
+            0 => self.warn("nothing pinned: p pins the current run".into()),
+            1 => self.info("pin cleared".into()),
+            n => self.info(format!("{n} pins cleared")),
+        }
     }
 
     /// Recompute what the current state needs and is not up to date: the impact when the

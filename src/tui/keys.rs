@@ -15,7 +15,7 @@ pub const KEYS: [(&str, &str); 31] = [
     ("4", "the start preset, if another"),
     ("c", "cycle the contact law"),
     ("r", "reset to the preset"),
-    ("p / P", "pin curves as a ghost / clear it"),
+    ("p / P", "pin this run (≤ 8) / clear pins"),
     ("u", "undo the last change"),
     ("e", "export this view (SVG + CSV files)"),
     ("s", "save as a user preset (asks a name)"),

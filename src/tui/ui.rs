@@ -7,6 +7,7 @@ use super::theme::Theme;
 use super::widgets::confirm::ConfirmDialog;
 use super::widgets::help::Help;
 use super::widgets::input::InputDialog;
+use super::widgets::pins::PinView;
 use super::widgets::plot::Plot;
 use super::widgets::readout::{self, Readout};
 use super::widgets::status::{Header, KeyHints};
@@ -56,7 +57,7 @@ pub fn screen(app: &App, area: Rect) -> Option<Screen> {
     } else {
         let [c, r] = Layout::vertical([
             Constraint::Fill(1),
-            Constraint::Length(readout::COMPACT_HEIGHT),
+            Constraint::Length(readout::compact_height(app.pins().len())),
         ])
         .areas(body);
         (c, r)
@@ -105,18 +106,27 @@ fn sweeps_grid(area: Rect) -> Vec<(Chart, Rect)> {
     vec![(Chart::ForceZeta, a), (Chart::CorSpeed, b)]
 }
 
+/// The pins as the readout's table shows them.
+fn pin_views(app: &App) -> Vec<PinView<'_>> {
+    app.pins()
+        .iter()
+        .map(|g| PinView {
+            ball: app.presets()[g.setting.preset].name.as_str(),
+            setting: &g.setting,
+            run: g.run.as_ref(),
+        })
+        .collect()
+}
+
 /// The readout's view of the state.
-fn readout(app: &App, tall: bool, theme: Theme) -> Readout<'_> {
-    let pinned = app
-        .ghost()
-        .map(|g| (&g.setting, app.presets()[g.setting.preset].name.as_str()));
+fn readout<'a>(app: &'a App, pins: &'a [PinView<'a>], tall: bool, theme: Theme) -> Readout<'a> {
     Readout {
         preset: app.preset(),
         setting: app.setting(),
         selected: app.selected(),
         coarse: app.coarse(),
         run: app.run(),
-        pinned,
+        pins,
         tall,
         theme,
     }
@@ -171,7 +181,8 @@ impl Widget for &App {
             );
             super::widgets::drop::render(self, body, buf);
         } else {
-            readout(self, s.side_panel, theme).render(s.readout, buf);
+            let pins = pin_views(self);
+            readout(self, &pins, s.side_panel, theme).render(s.readout, buf);
         }
         let scene = self.scene();
         for (chart, rect) in &s.charts {

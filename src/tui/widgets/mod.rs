@@ -6,6 +6,7 @@ pub mod confirm;
 pub mod drop;
 pub mod help;
 pub mod input;
+pub mod pins;
 pub mod plot;
 pub mod readout;
 pub mod status;

@@ -1,6 +1,7 @@
 //! The readout: the live parameters (λ, ζ, v0, law, K_p, K_r, c) and the results (e, F_m, t_f,
 //! z_m, z_f) next to the preset's measured values and the difference. A tall panel beside the
-//! charts, or four compact lines below them on narrow terminals.
+//! charts, or four compact lines below them on narrow terminals. Pinned runs add the pin table
+//! (`pins`).
 
 use crate::preset::Preset;
 use crate::solver::ImpactResponse;
@@ -9,6 +10,7 @@ use crate::tui::format::percent_diff;
 use crate::tui::param::Param;
 use crate::tui::setting::Setting;
 use crate::tui::theme::Theme;
+use crate::tui::widgets::pins::{self, Now, PinView};
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
 use ratatui::style::Style;
@@ -20,6 +22,11 @@ pub const PANEL_HEIGHT: u16 = 22;
 /// Rows the compact form needs, border included.
 pub const COMPACT_HEIGHT: u16 = 6;
 
+/// Rows the compact form needs with `pins` pinned runs: one more line for their COR.
+pub fn compact_height(pins: usize) -> u16 {
+    COMPACT_HEIGHT + u16::from(pins > 0)
+}
+
 /// What the readout shows.
 #[derive(Debug, Clone, Copy)]
 pub struct Readout<'a> {
@@ -28,8 +35,8 @@ pub struct Readout<'a> {
     pub selected: Param,
     pub coarse: bool,
     pub run: Option<&'a ImpactResponse>,
-    /// The pinned setting and its ball's name.
-    pub pinned: Option<(&'a Setting, &'a str)>,
+    /// The pinned runs, oldest first: the pin table compares them with this run.
+    pub pins: &'a [PinView<'a>],
     /// The tall panel beside the charts, or four compact lines below them.
     pub tall: bool,
     pub theme: Theme,
@@ -38,7 +45,8 @@ pub struct Readout<'a> {
 impl Widget for &Readout<'_> {
     fn render(self, area: Rect, buf: &mut Buffer) {
         let lines = if self.tall {
-            self.panel(usize::from(area.width.saturating_sub(2)))
+            let inner = Block::bordered().inner(area);
+            self.panel(usize::from(inner.width), usize::from(inner.height))
         } else {
             self.compact()
         };
@@ -122,12 +130,26 @@ impl Readout<'_> {
     }
 
     /// The tall panel: parameters, results against the measured values, notes.
-    fn panel(&self, inner_w: usize) -> Vec<Line<'static>> {
+    fn panel(&self, inner_w: usize, inner_h: usize) -> Vec<Line<'static>> {
         let mut lines = self.parameter_lines();
         lines.push(Line::raw(""));
         lines.extend(self.result_lines(inner_w));
         lines.extend(self.notes());
+        let left = inner_h.saturating_sub(lines.len());
+        lines.extend(pins::table(
+            self.pins,
+            &self.now(),
+            (inner_w, left),
+            &self.theme,
+        ));
         lines
+    }
+
+    fn now(&self) -> Now<'_> {
+        Now {
+            setting: self.setting,
+            run: self.run,
+        }
     }
 
     fn parameter_lines(&self) -> Vec<Line<'static>> {
@@ -213,21 +235,6 @@ impl Readout<'_> {
                 theme.dim(),
             ));
         }
-        if let Some((gs, name)) = self.pinned {
-            lines.push(Line::styled(
-                format!(" pinned: {name}, {} law", gs.law),
-                theme.ghost(),
-            ));
-            lines.push(Line::styled(
-                format!(
-                    "   λ {}  ζ {}  v0 {} m/s",
-                    sig_trim(gs.get(Param::Lambda), 3),
-                    sig_trim(gs.get(Param::Zeta), 3),
-                    sig_trim(gs.get(Param::V0), 3),
-                ),
-                theme.ghost(),
-            ));
-        }
         lines
     }
 
@@ -281,6 +288,7 @@ impl Readout<'_> {
         } else {
             lines.push(Line::styled(" no result", self.theme.error()));
         }
+        lines.extend(pins::compact(self.pins, &self.now()));
         lines
     }
 }
