@@ -8,7 +8,7 @@
 
 use super::history;
 use super::paper::{self, Ball};
-use super::{Figure, GREY, Kind, Look, Marker, Series, Style, Tone};
+use super::{Figure, Kind, Look, Marker, Series, Style, Tone};
 use crate::analysis::sweep::{VelocityPoint, ZetaPoint};
 use crate::model::contact::ContactLaw;
 use crate::model::params::ImpactParams;
@@ -59,10 +59,6 @@ pub struct SpeedSweep<'a> {
     /// The sweep runs over (0, v_max] (m/s).
     pub v_max: f64,
 }
-
-/// Palette colours of pins 1, 2, … in the picture (grey first, as the one ghost always was;
-/// never orange, this run's colour). On screen every pin is dimmed and tagged `p1`, `p2`, ….
-const PIN_COLORS: [usize; 7] = [GREY, 5, 3, 2, 0, 1, 6];
 
 /// A pinned setting and its results, drawn dimmed behind the live ones.
 #[derive(Debug, Clone)]
@@ -177,68 +173,6 @@ pub fn figure(chart: Chart, scene: &Scene) -> Figure {
 fn lambda_zeta_text(p: &ImpactParams) -> String {
     let n = p.normalized();
     format!("λ = {}, ζ = {}", short(n.lambda, 3), short(n.zeta, 3))
-}
-
-impl Pinned<'_> {
-    /// "p2": the tag at the pin's curves on screen.
-    pub fn tag(&self) -> String {
-        format!("p{}", self.number)
-    }
-
-    /// The pin as the picture's legend names it: number, ball, parameters, law.
-    pub fn label(&self) -> String {
-        format!(
-            "pinned {}: {} ({}, v0 = {} m/s, {} law)",
-            self.number,
-            self.ball,
-            lambda_zeta_text(&self.params),
-            short(self.params.v0, 3),
-            self.law
-        )
-    }
-
-    /// The pin as the terminal legend names it, short enough for a chart's corner: "p2
-    /// golf"; the readout's pin table gives its parameters and differences.
-    pub fn key(&self) -> String {
-        format!("{} {}", self.tag(), self.ball)
-    }
-
-    fn color(&self) -> usize {
-        PIN_COLORS[(self.number.max(1) - 1) % PIN_COLORS.len()]
-    }
-
-    /// The pin's curve: dimmed and tagged on screen, a dotted line of its colour in the
-    /// picture; `what` ends its CSV id ("model", "displacement", "lambda=0.4").
-    fn curve(&self, what: &str, points: Vec<(f64, f64)>) -> Series {
-        let id = format!("pinned {} {what}", self.number);
-        let tag = self.tag();
-        Series::new(
-            &self.label(),
-            &id,
-            Kind::Pinned,
-            Style::Dotted,
-            self.color(),
-        )
-        .with_points(points)
-        .with_look(Look::new(Tone::Ghost, Some(&self.key()), Some(&tag)))
-    }
-
-    /// The pin's run on a ζ chart: its number, dimmed, over the point; in the legend under
-    /// the pins' one entry there ("pinned"), as the ζ charts' legends are long already.
-    fn marker(&self, at: (f64, f64)) -> Series {
-        let id = format!("pinned {} run", self.number);
-        let number = self.number.to_string();
-        let look = Look::new(Tone::Ghost, Some("pinned"), Some(&number));
-        Series::new(
-            &format!("{} run", self.label()),
-            &id,
-            Kind::Pinned,
-            Style::Markers(Marker::Diamond),
-            self.color(),
-        )
-        .with_points(vec![at])
-        .with_look(look)
-    }
 }
 
 /// The current run's point on a sweep's chart: ◆.
@@ -408,6 +342,9 @@ fn speed_figure(scene: &Scene) -> Figure {
     }
     fig
 }
+
+#[path = "explorer_pins.rs"]
+mod pins;
 
 #[cfg(test)]
 #[path = "explorer_tests.rs"]
