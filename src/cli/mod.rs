@@ -333,7 +333,8 @@ fn explorer(choice: ball::PresetChoice, measured: Option<PathBuf>) -> anyhow::Re
         }
         None => Vec::new(),
     };
-    crate::tui::run_with_measured(entry.preset, overlays).map_err(|e| ExplorerFailed(e).into())
+    let config = choice.config.clone();
+    crate::tui::run_from(entry.preset, overlays, config).map_err(|e| ExplorerFailed(e).into())
 }
 
 #[cfg(test)]

@@ -89,6 +89,8 @@ pub enum Action {
     DropReplay,
     /// The event loop's animation clock: `dt` seconds of wall time passed.
     Tick(f64),
+    /// `y`: show the `bouncelab run …` line that reproduces the screen.
+    ShowCommand,
     /// `y` to "overwrite …? y/n".
     ConfirmYes,
     /// `n` or Esc to "overwrite …? y/n".
@@ -210,6 +212,7 @@ fn normal(key: KeyEvent) -> Option<Action> {
         KeyCode::Char('u') => Some(Action::Undo),
         KeyCode::Char('e') => Some(Action::Export),
         KeyCode::Char('s') => Some(Action::SavePreset),
+        KeyCode::Char('y') => Some(Action::ShowCommand),
         KeyCode::Tab => Some(Action::NextView),
         KeyCode::BackTab => Some(Action::PrevView),
         KeyCode::Char('?') => Some(Action::ToggleHelp),

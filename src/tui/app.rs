@@ -5,6 +5,7 @@
 //! overwrite question) are handled in `dialogs`, the COR-vs-speed sweeps' bookkeeping in
 //! `sweeps`, and what the charts are drawn from in `scene`.
 
+mod command;
 mod dialogs;
 mod drop;
 mod edit;
@@ -68,6 +69,8 @@ pub struct App {
     measured: Vec<crate::figure::explorer::MeasuredOverlay>,
     /// The first help line shown.
     help_scroll: u16,
+    /// The preset file the explorer started on (`--config FILE`) and its preset's index.
+    config: Option<(usize, std::path::PathBuf)>,
     /// The terminal's width and height, once the loop has said (`Action::Resize`).
     size: Option<(u16, u16)>,
 }
@@ -109,6 +112,7 @@ impl App {
             drop: DropView::new(false),
             measured: Vec::new(),
             help_scroll: 0,
+            config: None,
             size: None,
         };
         app.refresh();
@@ -196,7 +200,8 @@ impl App {
         }
         match self.overlay {
             Overlay::None => Mode::Normal,
-            Overlay::Help => Mode::Help,
+            // the command box closes, and scrolls nothing, like the help
+            Overlay::Help | Overlay::Command(_) => Mode::Help,
             Overlay::Input(_) => Mode::Input,
             Overlay::Confirm(_) => Mode::Confirm,
         }
@@ -290,6 +295,7 @@ impl App {
                 self.info(format!("reset to the {} preset", self.presets[i].name));
             }
             Action::Pin => self.pin(),
+            Action::ShowCommand => self.overlay = Overlay::Command(self.command_line()),
             Action::Unpin => self.unpin(),
             Action::Undo => match self.undo.pop() {
                 Some(previous) => {
@@ -371,7 +377,7 @@ impl App {
         }
         self.export_wanted = false;
         match export::request(&self.scene(), self.view.charts()) {
-            Ok(r) => Some(Effect::Export(r)),
+            Ok(r) => Some(Effect::Export(r.with_header(self.csv_header()))),
             Err(e) => {
                 self.error(format!("export failed: {e}"));
                 None

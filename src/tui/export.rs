@@ -34,9 +34,17 @@ pub struct ExportRequest {
     pub ball: String,
     /// (chart name in file names, its figure), in screen order.
     pub charts: Vec<(&'static str, Figure)>,
+    /// `#` lines each CSV file starts with (the `bouncelab run` line and the parameters).
+    pub header: Vec<String>,
 }
 
 impl ExportRequest {
+    /// The request with `lines` (each starting with `#`) heading its CSV files.
+    pub fn with_header(mut self, lines: Vec<String>) -> ExportRequest {
+        self.header = lines;
+        self
+    }
+
     /// The files of export number `n` in `dir`: per chart its `.svg`, then its `.csv`.
     pub fn paths(&self, dir: &Path, n: usize) -> Vec<PathBuf> {
         self.charts
@@ -78,6 +86,7 @@ pub fn request(scene: &Scene, charts: &[Chart]) -> Result<ExportRequest, String>
     Ok(ExportRequest {
         ball: file_stem_part(&scene.ball.name),
         charts,
+        header: Vec::new(),
     })
 }
 
@@ -106,7 +115,8 @@ pub fn write(request: &ExportRequest, dir: &Path) -> Result<Vec<PathBuf>, String
     let mut contents = Vec::new();
     for (_, fig) in &request.charts {
         contents.push(svg::render(fig).map_err(|e| e.to_string())?);
-        contents.push(csv::to_string(fig));
+        let head: String = request.header.iter().map(|l| format!("{l}\n")).collect();
+        contents.push(head + &csv::to_string(fig));
     }
     if !dir.as_os_str().is_empty() && !dir.is_dir() {
         fs::create_dir_all(dir)

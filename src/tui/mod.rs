@@ -14,6 +14,7 @@
 
 pub mod action;
 pub mod app;
+pub mod command;
 pub mod compute;
 pub mod drop_view;
 pub mod effect;
@@ -58,6 +59,16 @@ pub fn run_with_measured(
     preset: Preset,
     measured: Vec<crate::figure::explorer::MeasuredOverlay>,
 ) -> anyhow::Result<()> {
+    run_from(preset, measured, None)
+}
+
+/// [`run_with_measured`] on a preset read from `config` (`bouncelab --config FILE`), which
+/// "copy as command" (`y`) then names.
+pub fn run_from(
+    preset: Preset,
+    measured: Vec<crate::figure::explorer::MeasuredOverlay>,
+    config: Option<std::path::PathBuf>,
+) -> anyhow::Result<()> {
     if !std::io::stdout().is_terminal() {
         anyhow::bail!("the explorer needs a terminal (stdout is not one); see `bouncelab --help`");
     }
@@ -66,6 +77,9 @@ pub fn run_with_measured(
         .with_background_sweeps()
         .with_motion(motion_wanted())
         .with_measured(measured);
+    if let Some(path) = config {
+        app = app.with_config(std::path::absolute(&path).unwrap_or(path));
+    }
     let mut terminal = ratatui::try_init()
         .inspect_err(|_| {
             if terminal::is_raw_mode_enabled().unwrap_or(false) {

@@ -84,6 +84,8 @@ pub enum Overlay {
     Help,
     Input(Input),
     Confirm(Confirm),
+    /// "Copy as command" (`y`): the `bouncelab run …` line of the screen, to select and copy.
+    Command(String),
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

@@ -4,6 +4,7 @@
 
 use super::app::{App, Overlay, View};
 use super::theme::Theme;
+use super::widgets::command::CommandBox;
 use super::widgets::confirm::ConfirmDialog;
 use super::widgets::help::Help;
 use super::widgets::input::InputDialog;
@@ -148,6 +149,7 @@ fn render_overlay(app: &App, theme: Theme, area: Rect, buf: &mut Buffer) {
         }
         .render(area, buf),
         Overlay::Confirm(confirm) => ConfirmDialog { confirm, theme }.render(area, buf),
+        Overlay::Command(line) => CommandBox { line, theme }.render(area, buf),
     }
 }
 

@@ -2,6 +2,7 @@
 //! never the whole state: [`plot`] draws any figure, the others the readout, the header and
 //! status line, and the dialogs. Nothing here changes the state or runs the model.
 
+pub mod command;
 pub mod confirm;
 pub mod drop;
 pub mod help;

@@ -21,6 +21,8 @@ use ratatui::widgets::{Block, Paragraph, Widget};
 pub const PANEL_HEIGHT: u16 = 22;
 /// Rows the compact form needs, border included.
 pub const COMPACT_HEIGHT: u16 = 6;
+/// Rows of the energy budget in the tall panel, shown only when they fit.
+const ENERGY_ROWS: usize = 3;
 
 /// Rows the compact form needs with `pins` pinned runs: one more line for their COR.
 pub fn compact_height(pins: usize) -> u16 {
@@ -135,6 +137,9 @@ impl Readout<'_> {
         lines.push(Line::raw(""));
         lines.extend(self.result_lines(inner_w));
         lines.extend(self.notes());
+        if inner_h >= lines.len() + ENERGY_ROWS {
+            lines.extend(self.energy_lines());
+        }
         let left = inner_h.saturating_sub(lines.len());
         lines.extend(pins::table(
             self.pins,
@@ -143,6 +148,38 @@ impl Readout<'_> {
             &self.theme,
         ));
         lines
+    }
+
+    /// Where the run's energy went (mJ): the budget `bouncelab run` prints, from the same
+    /// solver pass ([`crate::solver::EnergyBudget`]), round-off shown as 0 as there.
+    fn energy_lines(&self) -> Vec<Line<'static>> {
+        let Some(e) = self.run.and_then(|r| r.energy) else {
+            return Vec::new();
+        };
+        let mj = |x: f64| sig_trim(e.shown(x) * 1e3, 4);
+        vec![
+            Line::from(vec![
+                Span::styled(" energy mJ", self.theme.title()),
+                Span::raw(format!(
+                    " in {}  out {}",
+                    mj(e.initial_kinetic),
+                    mj(e.final_kinetic)
+                )),
+            ]),
+            Line::raw(format!(
+                "  dashpot {}  contact {}",
+                mj(e.dashpot),
+                mj(e.contact)
+            )),
+            Line::raw(format!(
+                "  spring {}  residual {}",
+                mj(e.spring),
+                match e.relative_residual() {
+                    0.0 => "0".to_string(),
+                    r => format!("{r:.0e}"),
+                }
+            )),
+        ]
     }
 
     fn now(&self) -> Now<'_> {
