@@ -91,6 +91,14 @@ pub enum Action {
     Tick(f64),
     /// `y`: show the `bouncelab run …` line that reproduces the screen.
     ShowCommand,
+    /// `g`: open the preset picker (the loop lists the presets).
+    OpenPicker,
+    /// The presets the loop found, and why the user presets could not be read.
+    PresetsListed(Vec<super::picker::PickEntry>, Option<String>),
+    /// Move the picker's highlight.
+    PickerMove(Scroll),
+    /// Enter in the picker: load the highlighted preset.
+    PickerChoose,
     /// `y` to "overwrite …? y/n".
     ConfirmYes,
     /// `n` or Esc to "overwrite …? y/n".
@@ -119,6 +127,8 @@ pub enum Mode {
     Confirm,
     /// The terminal is below the minimum size: only quitting acts.
     TooSmall,
+    /// The preset picker: arrows move, Enter loads, Esc closes.
+    Picker,
 }
 
 /// The action for a terminal event, if any (key presses and repeats; releases are ignored).
@@ -153,6 +163,7 @@ pub fn from_key(key: KeyEvent, mode: Mode) -> Option<Action> {
             _ => None,
         },
         Mode::Help => help(key.code),
+        Mode::Picker => picker(key.code),
         Mode::TooSmall => match key.code {
             KeyCode::Char('q') | KeyCode::Esc => Some(Action::Quit),
             _ => None,
@@ -173,6 +184,22 @@ fn help(code: KeyCode) -> Option<Action> {
         KeyCode::PageDown | KeyCode::Char(' ') => scroll(Scroll::PageDown),
         KeyCode::Home | KeyCode::Char('g') => scroll(Scroll::Home),
         KeyCode::End | KeyCode::Char('G') => scroll(Scroll::End),
+        _ => None,
+    }
+}
+
+/// In the preset picker: move, load, or close (`q` and `g` close it too).
+fn picker(code: KeyCode) -> Option<Action> {
+    let move_by = |s| Some(Action::PickerMove(s));
+    match code {
+        KeyCode::Esc | KeyCode::Char('q' | 'g') => Some(Action::CloseHelp),
+        KeyCode::Enter => Some(Action::PickerChoose),
+        KeyCode::Up | KeyCode::Char('k') => move_by(Scroll::Up),
+        KeyCode::Down | KeyCode::Char('j') => move_by(Scroll::Down),
+        KeyCode::PageUp => move_by(Scroll::PageUp),
+        KeyCode::PageDown => move_by(Scroll::PageDown),
+        KeyCode::Home => move_by(Scroll::Home),
+        KeyCode::End => move_by(Scroll::End),
         _ => None,
     }
 }
@@ -213,6 +240,7 @@ fn normal(key: KeyEvent) -> Option<Action> {
         KeyCode::Char('e') => Some(Action::Export),
         KeyCode::Char('s') => Some(Action::SavePreset),
         KeyCode::Char('y') => Some(Action::ShowCommand),
+        KeyCode::Char('g') => Some(Action::OpenPicker),
         KeyCode::Tab => Some(Action::NextView),
         KeyCode::BackTab => Some(Action::PrevView),
         KeyCode::Char('?') => Some(Action::ToggleHelp),

@@ -9,6 +9,7 @@ mod command;
 mod dialogs;
 mod drop;
 mod edit;
+mod picker;
 mod pins;
 mod scene;
 mod screen;
@@ -204,6 +205,7 @@ impl App {
             Overlay::Help | Overlay::Command(_) => Mode::Help,
             Overlay::Input(_) => Mode::Input,
             Overlay::Confirm(_) => Mode::Confirm,
+            Overlay::Picker(_) => Mode::Picker,
         }
     }
 
@@ -239,6 +241,10 @@ impl App {
                 "the drop view has no export: `bouncelab drop --format csv` writes its data".into(),
             ),
             Action::Export => self.export_wanted = true,
+            Action::OpenPicker => return vec![Effect::ListPresets],
+            Action::PresetsListed(..) | Action::PickerMove(_) | Action::PickerChoose => {
+                self.picker(action)
+            }
             Action::SpeedReady(..)
             | Action::Exported { .. }
             | Action::ExportFailed { .. }

@@ -16,4 +16,6 @@ pub enum Effect {
     /// Run exactly these COR-vs-speed sweeps in the background, dropping any other that is
     /// out; each finished one comes back as `Action::SpeedReady`.
     Compute(Vec<SpeedRequest>),
+    /// Read the presets for the picker (`g`); the loop answers `Action::PresetsListed`.
+    ListPresets,
 }

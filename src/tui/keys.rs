@@ -2,7 +2,7 @@
 //! `update` needs to stop the help's scrolling at its end.
 
 /// (keys, what they do); a row without text is a section heading.
-pub const KEYS: [(&str, &str); 32] = [
+pub const KEYS: [(&str, &str); 36] = [
     ("l / L", "λ up / down (±0.01, coarse ±0.1)"),
     ("z / Z", "ζ up / down (×1.1, coarse ×2)"),
     ("v / V", "v0 up / down (±0.1, coarse ±1 m/s)"),
@@ -13,6 +13,7 @@ pub const KEYS: [(&str, &str); 32] = [
     ("= or Enter", "type an exact value"),
     ("1 2 3", "load superball, golf, baseball"),
     ("4", "the start preset, if another"),
+    ("g", "pick a preset (embedded and user)"),
     ("c", "cycle the contact law"),
     ("r", "reset to the preset"),
     ("p / P", "pin this run (≤ 8) / clear pins"),
@@ -27,6 +28,9 @@ pub const KEYS: [(&str, &str); 32] = [
     ("", ""),
     ("In this help", ""),
     ("↑↓ j k PgUp/Dn", "scroll (Home / End: top / end)"),
+    ("", ""),
+    ("In the preset picker (g)", ""),
+    ("↑↓ Enter / Esc", "choose, load / close"),
     ("", ""),
     ("In the value or name entry", ""),
     ("Enter / Esc", "accept / cancel"),

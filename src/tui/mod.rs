@@ -23,6 +23,7 @@ pub mod export;
 pub mod format;
 pub mod keys;
 pub mod param;
+pub mod picker;
 pub mod save;
 pub mod setting;
 pub mod state;

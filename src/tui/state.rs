@@ -86,6 +86,8 @@ pub enum Overlay {
     Confirm(Confirm),
     /// "Copy as command" (`y`): the `bouncelab run …` line of the screen, to select and copy.
     Command(String),
+    /// The preset picker (`g`).
+    Picker(super::picker::Picker),
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

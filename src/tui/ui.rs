@@ -8,6 +8,7 @@ use super::widgets::command::CommandBox;
 use super::widgets::confirm::ConfirmDialog;
 use super::widgets::help::Help;
 use super::widgets::input::InputDialog;
+use super::widgets::picker::PickerBox;
 use super::widgets::pins::PinView;
 use super::widgets::plot::Plot;
 use super::widgets::readout::{self, Readout};
@@ -150,6 +151,7 @@ fn render_overlay(app: &App, theme: Theme, area: Rect, buf: &mut Buffer) {
         .render(area, buf),
         Overlay::Confirm(confirm) => ConfirmDialog { confirm, theme }.render(area, buf),
         Overlay::Command(line) => CommandBox { line, theme }.render(area, buf),
+        Overlay::Picker(picker) => PickerBox { picker, theme }.render(area, buf),
     }
 }
 

@@ -7,6 +7,7 @@ pub mod confirm;
 pub mod drop;
 pub mod help;
 pub mod input;
+pub mod picker;
 pub mod pins;
 pub mod plot;
 pub mod readout;
