@@ -210,6 +210,25 @@ fn pins_at_80x24_in_the_compact_strip() {
     insta::assert_snapshot!(draw(&a, 80, 24).backend());
 }
 
+/// Keys that arrive together are applied together, then refreshed once: a pin after a load in
+/// the same batch still holds the loaded ball's curves.
+#[test]
+fn a_pin_in_a_batch_holds_its_own_run() {
+    let mut a = app(0);
+    for action in [Action::LoadPreset(1), Action::Pin, Action::LoadPreset(2)] {
+        a.apply(action);
+    }
+    a.refresh();
+    let golf = app(1);
+    let g = &a.pins()[0];
+    assert_eq!(g.setting, *golf.setting());
+    assert_eq!(g.run.as_ref().unwrap().cor, golf.run().unwrap().cor);
+    assert_eq!(
+        g.zeta.as_ref().unwrap().lambda,
+        golf.zeta_curve().unwrap().lambda
+    );
+}
+
 #[test]
 fn pin_is_an_action_of_its_own() {
     let mut a = app(0);

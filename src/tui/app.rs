@@ -350,6 +350,22 @@ impl App {
     /// view shows it. Returns the sweeps to ask of the background worker when they changed,
     /// and an export once one is wanted and the view is up to date.
     pub fn refresh(&mut self) -> Vec<Effect> {
+        self.refresh_run();
+        if self.view == View::Drop {
+            let preset = &self.presets[self.setting.preset];
+            self.drop
+                .refresh(&self.setting.params, self.setting.law, preset);
+        }
+        let mut effects: Vec<Effect> = self.refresh_sweeps().into_iter().collect();
+        if self.export_wanted {
+            effects.extend(self.prepare_export());
+        }
+        effects
+    }
+
+    /// Bring the impact and the ζ curve up to the setting (a batch of keys applies several
+    /// actions before one refresh: `p` after `2` in one batch must pin golf's run).
+    pub(super) fn refresh_run(&mut self) {
         let s = &self.setting;
         let key = (s.params, s.law);
         if self.run_for != Some(key) {
@@ -362,16 +378,6 @@ impl App {
         if self.zeta.as_ref().is_none_or(|c| c.lambda != lambda) {
             self.zeta = compute::zeta_curve(lambda).map_err(|e| self.error(e)).ok();
         }
-        if self.view == View::Drop {
-            let preset = &self.presets[self.setting.preset];
-            self.drop
-                .refresh(&self.setting.params, self.setting.law, preset);
-        }
-        let mut effects: Vec<Effect> = self.refresh_sweeps().into_iter().collect();
-        if self.export_wanted {
-            effects.extend(self.prepare_export());
-        }
-        effects
     }
 
     /// The export of what is on screen, once it is up to date: while a COR-vs-speed sweep is

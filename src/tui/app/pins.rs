@@ -12,11 +12,15 @@ impl App {
         if self.pins.len() >= MAX_PINS {
             return self.warn(format!("{MAX_PINS} runs pinned, the most: P clears them"));
         }
+        // the curves of this setting, even when earlier keys of the batch changed it
+        self.refresh_run();
+        let (want, _) = self.speed_targets();
+        let speed = self.speed.clone().filter(|c| c.request == want);
         self.pins.push(Ghost {
             setting: self.setting.clone(),
             run: self.run.clone(),
             zeta: self.zeta.clone(),
-            speed: self.speed.clone(),
+            speed,
         });
         let n = self.pins.len();
         self.info(format!(
