@@ -307,7 +307,7 @@ fn pin_keeps_a_ghost_until_cleared() {
         "the sweeps view fills the ghost's sweep"
     );
     press(&mut app, &chars("P"));
-    assert!(app.ghost().is_none());
+    assert!(app.ghost().is_none() && app.pins().is_empty());
 }
 
 #[test]

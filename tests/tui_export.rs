@@ -215,7 +215,8 @@ fn pictures_parse_and_data_files_have_the_documented_headers() {
                 .iter()
                 .find(|(chart, _)| name.contains(&format!("-{chart}-")))
                 .unwrap();
-            let mut lines = text.lines();
+            // the `#` lines: the command and the parameters (tests/tui_command.rs)
+            let mut lines = text.lines().skip_while(|l| l.starts_with('#'));
             assert_eq!(lines.next(), Some(*header), "{name}");
             let rows: Vec<&str> = lines.collect();
             assert!(rows.len() > 10, "{name}");
@@ -239,6 +240,7 @@ fn rows(file: &Path, series: &str) -> Vec<(f64, f64)> {
     fs::read_to_string(file)
         .unwrap()
         .lines()
+        .skip_while(|l| l.starts_with('#'))
         .skip(1)
         .filter_map(|l| {
             let mut f = l.rsplitn(3, ',');

@@ -108,7 +108,7 @@ fn the_grid_follows_the_screen() {
     for (color, per) in [(true, 2), (false, 1)] {
         let app = map_app(color, 120, 40);
         let map = app.map_view().map().unwrap();
-        let (rows, cols) = map_view::grid(Some((120, 40)), color).unwrap();
+        let (rows, cols) = map_view::grid(Some((120, 40)), color, 0).unwrap();
         assert_eq!((map.lambdas.len(), map.zetas.len()), (rows, cols));
         assert_eq!(rows % per, 0);
         assert!(map.is_complete());
@@ -333,15 +333,25 @@ fn e_exports_the_map_on_screen_as_svg_and_csv() {
         "quantity and targets"
     );
     let csv = std::fs::read_to_string(&files[1]).unwrap();
-    let mut lines = csv.lines();
+    // the explorer's `#` lines first (the `y` command line and the parameters), then the map
+    assert!(
+        csv.starts_with("# bouncelab run --preset superball"),
+        "{csv}"
+    );
+    let mut lines = csv.lines().skip_while(|l| l.starts_with('#'));
     assert_eq!(
         lines.next(),
         Some("lambda,zeta,cor,max_force,contact_time,feasible")
     );
     assert_eq!(lines.count(), m.map.cells().len());
     let map = &m.map;
+    let data: String = csv
+        .lines()
+        .skip_while(|l| l.starts_with('#'))
+        .map(|l| format!("{l}\n"))
+        .collect();
     assert_eq!(
-        csv,
+        data,
         bouncelab::cli::map::csv(map, app.map_view().targets.as_ref()),
         "the CSV of `bouncelab map`"
     );

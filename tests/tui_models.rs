@@ -298,7 +298,9 @@ fn the_export_is_what_is_on_screen() {
         if f.extension().unwrap() == "svg" {
             roxmltree::Document::parse(&body).unwrap();
         } else {
-            let header = body.lines().next().unwrap();
+            // the explorer's `#` lines (the `y` command line and the parameters), then the data
+            let mut lines = body.lines().skip_while(|l| l.starts_with('#'));
+            let header = lines.next().unwrap();
             assert!(header.starts_with("series,kind,"), "{header}");
         }
     }

@@ -22,7 +22,7 @@ fn q_quits_with_the_terminal_restored() {
     );
     x.wait_for_first_draw();
     x.send(b"?");
-    x.wait_for("Backspace"); // the help is up: keys are read and the screen redrawn
+    x.wait_for("Keys · Esc or ? closes"); // the help is up: keys are read and the screen redrawn
     x.send(b"qq"); // the first q closes the help, the second quits
     let (status, after, out) = x.finish();
     assert!(status.success(), "{status:?}\n{}", out.escape_debug());

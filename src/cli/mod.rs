@@ -357,7 +357,9 @@ fn explorer(choice: ball::PresetChoice, measured: Option<PathBuf>) -> anyhow::Re
         }
         None => (Vec::new(), None),
     };
-    crate::tui::run_with_data(entry.preset, overlays, loaded).map_err(|e| ExplorerFailed(e).into())
+    let config = choice.config.clone();
+    crate::tui::run_from(entry.preset, overlays, loaded, config)
+        .map_err(|e| ExplorerFailed(e).into())
 }
 
 #[cfg(test)]

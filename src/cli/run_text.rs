@@ -222,14 +222,8 @@ fn comparison_rows(
 /// Where the energy went (mJ for a preset).
 fn write_energy(out: &mut dyn Write, e: &EnergyBudget, units: &Units) -> io::Result<()> {
     let energy = units.unit(1e3, "mJ");
-    // round-off (|x| < 1e-12 of the initial energy) shows as 0
-    let clean = |x: f64| {
-        if x.abs() < 1e-12 * e.initial_kinetic {
-            0.0
-        } else {
-            x
-        }
-    };
+    // round-off shows as 0
+    let clean = |x: f64| e.shown(x);
     let mut rows: Vec<Vec<String>> = [
         ("kinetic energy before", e.initial_kinetic),
         ("kinetic energy after", e.final_kinetic),

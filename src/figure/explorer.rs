@@ -8,7 +8,7 @@
 
 use super::history;
 use super::paper::{self, Ball};
-use super::{Figure, GREY, Kind, Look, Marker, Series, Style, Tone};
+use super::{Figure, Kind, Look, Marker, Series, Style, Tone};
 use crate::analysis::sweep::{VelocityPoint, ZetaPoint};
 use crate::model::contact::ContactLaw;
 use crate::model::params::ImpactParams;
@@ -79,9 +79,13 @@ pub struct SpeedSweep<'a> {
     pub v_max: f64,
 }
 
-/// The pinned setting and its results, drawn dimmed behind the live ones.
-#[derive(Debug, Clone, Copy)]
+/// A pinned setting and its results, drawn dimmed behind the live ones.
+#[derive(Debug, Clone)]
 pub struct Pinned<'a> {
+    /// 1, 2, …: the pin's tag on screen and in the series ids (`pinned 2 model`).
+    pub number: usize,
+    /// The ball's name.
+    pub ball: String,
     /// The pinned parameters, SI.
     pub params: ImpactParams,
     /// The pinned contact law.
@@ -164,8 +168,8 @@ pub struct Scene<'a> {
     pub speed: Option<SpeedSweep<'a>>,
     /// While COR-vs-speed sweeps are out: the highest speed they reach (the axis spans it).
     pub speed_pending: Option<f64>,
-    /// The pinned setting, drawn dimmed behind the live one.
-    pub pinned: Option<Pinned<'a>>,
+    /// The pins, oldest first.
+    pub pinned: Vec<Pinned<'a>>,
     /// The user's measured data, drawn on the charts they belong to.
     pub measured: &'a [MeasuredOverlay],
     /// The models view's calibrations, once computed for this ball.
@@ -211,23 +215,11 @@ fn lambda_zeta_text(p: &ImpactParams) -> String {
     format!("λ = {}, ζ = {}", short(n.lambda, 3), short(n.zeta, 3))
 }
 
-/// A dimmed curve on screen: a grey dotted line in the picture.
-fn pinned(label: String, id: &str, points: Vec<(f64, f64)>) -> Series {
-    Series::new(&label, id, Kind::Pinned, Style::Dotted, GREY)
-        .with_points(points)
-        .with_look(Look::new(Tone::Ghost, Some("pinned"), None))
-}
-
-/// One run's point on a sweep's chart: the current run's ◆, or the pinned run's dimmed ◇.
-fn run_marker(label: String, pinned: bool, at: (f64, f64)) -> Series {
-    let (id, role, color, look) = if pinned {
-        let look = Look::new(Tone::Ghost, Some("pinned"), Some("◇"));
-        ("pinned run", Kind::Pinned, GREY, look)
-    } else {
-        let look = Look::new(Tone::Highlight, Some("this run"), Some("◆"));
-        ("this run", Kind::ThisRun, THIS_RUN_COLOR, look)
-    };
-    Series::new(&label, id, role, Style::Markers(Marker::Diamond), color)
+/// The current run's point on a sweep's chart: ◆.
+fn run_marker(label: String, at: (f64, f64)) -> Series {
+    let look = Look::new(Tone::Highlight, Some("this run"), Some("◆"));
+    let diamond = Style::Markers(Marker::Diamond);
+    Series::new(&label, "this run", Kind::ThisRun, diamond, THIS_RUN_COLOR)
         .with_points(vec![at])
         .with_look(look)
 }
@@ -246,24 +238,18 @@ fn history_figure(chart: Chart, scene: &Scene) -> Figure {
     let from = format!("{MODIFIED} parameters");
     let to = format!("{from} ({})", lambda_zeta_text(&scene.ball.params));
     fig.subtitle = fig.subtitle.replacen(&from, &to, 1);
-    if let Some(p) = &scene.pinned
-        && let Some(r) = p.run
-    {
+    for p in &scene.pinned {
+        let Some(r) = p.run else { continue };
         let h = &r.history;
-        let label = format!(
-            "pinned ({}, v0 = {} m/s)",
-            lambda_zeta_text(&p.params),
-            short(p.params.v0, 3)
-        );
-        let (id, xs) = if chart == Chart::ForceTime {
-            ("pinned model", &h.t)
+        let (what, xs) = if chart == Chart::ForceTime {
+            ("model", &h.t)
         } else {
-            ("pinned displacement", &h.displacement)
+            ("displacement", &h.displacement)
         };
         let pts = xs.iter().copied().zip(h.force.iter().copied()).collect();
-        let mut s = pinned(label, id, pts);
+        let mut s = p.curve(what, pts);
         if chart == Chart::Hysteresis {
-            s.look.key = Some("pinned α".into());
+            s.look.key = Some(format!("{} α", p.key()));
         }
         fig.insert_before_measured(s);
     }
@@ -272,13 +258,8 @@ fn history_figure(chart: Chart, scene: &Scene) -> Figure {
 
 /// The decades of ζ shown: 0.01 … 100, widened to take in the current and pinned ζ.
 pub fn decades(scene: &Scene) -> (i32, i32) {
-    let pinned = scene.pinned.map(|p| p.params.normalized().zeta);
-    super::ticks::covering(
-        (-2, 2),
-        pinned
-            .into_iter()
-            .chain([scene.ball.params.normalized().zeta]),
-    )
+    let pinned = scene.pinned.iter().map(|p| p.params.normalized().zeta);
+    super::ticks::covering((-2, 2), pinned.chain([scene.ball.params.normalized().zeta]))
 }
 
 /// The points of a ζ sweep inside the decades shown.
@@ -292,21 +273,22 @@ fn shown(c: &ZetaSweep, scene: &Scene) -> Vec<ZetaPoint> {
         .collect()
 }
 
-/// The pinned λ's curve and the pinned run's ◇ on Fig. 2 (`cor`) or 3.
+/// Each pin's λ curve (tagged `p1`, …) and run (its number) on Fig. 2 (`cor`) or 3, one
+/// legend entry for all.
 fn add_pinned_zeta(fig: &mut Figure, scene: &Scene, cor: bool) {
     let value = |p: &ZetaPoint| if cor { p.cor } else { p.max_force_normalized };
     let of_run = |r: &ImpactResponse| if cor { r.cor } else { r.max_force_normalized };
-    if let Some(p) = &scene.pinned {
+    for p in &scene.pinned {
         if let Some(c) = &p.zeta {
-            let label = format!("pinned, λ = {}", short(c.lambda, 3));
-            let id = format!("pinned lambda={}", short(c.lambda, 6));
+            let what = format!("lambda={}", short(c.lambda, 6));
             let pts = shown(c, scene).iter().map(|p| (p.zeta, value(p))).collect();
-            fig.insert_before_measured(pinned(label, &id, pts));
+            let mut s = p.curve(&what, pts);
+            s.look.key = Some("pinned".into());
+            fig.insert_before_measured(s);
         }
         if let Some(r) = p.run {
             let at = (p.params.normalized().zeta, of_run(r));
-            let label = format!("pinned run ({})", lambda_zeta_text(&p.params));
-            fig.insert_before_measured(run_marker(label, true, at));
+            fig.insert_before_measured(p.marker(at));
         }
     }
 }
@@ -354,11 +336,7 @@ fn zeta_figure(chart: Chart, scene: &Scene) -> Figure {
             lambda_zeta_text(&scene.ball.params),
             short(y, 3)
         );
-        fig.insert_before_measured(run_marker(
-            label,
-            false,
-            (scene.ball.params.normalized().zeta, y),
-        ));
+        fig.insert_before_measured(run_marker(label, (scene.ball.params.normalized().zeta, y)));
     }
     fig
 }
@@ -376,24 +354,22 @@ fn speed_figure(scene: &Scene) -> Figure {
     let mut fig = paper::cor_velocity(ball, rows, onset);
     let v_hi = [
         scene.speed.map(|s| s.v_max),
-        scene.pinned.and_then(|p| p.speed).map(|s| s.v_max),
         scene.speed_pending,
         Some(ball.params.v0),
     ]
     .into_iter()
     .flatten()
+    .chain(scene.pinned.iter().filter_map(|p| p.speed).map(|s| s.v_max))
     .fold(0.0, f64::max);
     let left = fig.x.range.map_or(0.0, |r| r.0);
     fig.x.range = Some((left, v_hi));
     if scene.speed_pending.is_some() {
         fig.screen_title.push_str(" · updating…");
     }
-    if let Some(p) = &scene.pinned
-        && let Some(c) = &p.speed
-    {
-        let label = format!("pinned ({}, {} law)", lambda_zeta_text(&p.params), p.law);
+    for p in &scene.pinned {
+        let Some(c) = &p.speed else { continue };
         let pts = c.points.iter().map(|p| (p.v0, p.cor)).collect();
-        fig.insert_before_measured(pinned(label, "pinned model", pts));
+        fig.insert_before_measured(p.curve("model", pts));
     }
     if let Some(r) = scene.run {
         let v0 = ball.params.v0;
@@ -402,10 +378,13 @@ fn speed_figure(scene: &Scene) -> Figure {
             short(v0, 3),
             short(r.cor, 3)
         );
-        fig.insert_before_measured(run_marker(label, false, (v0, r.cor)));
+        fig.insert_before_measured(run_marker(label, (v0, r.cor)));
     }
     fig
 }
+
+#[path = "explorer_pins.rs"]
+mod pins;
 
 #[cfg(test)]
 #[path = "explorer_tests.rs"]

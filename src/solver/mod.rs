@@ -99,6 +99,16 @@ impl EnergyBudget {
         let loss = self.initial_kinetic - self.final_kinetic;
         (loss - self.dashpot - self.contact - self.spring).abs() / self.initial_kinetic
     }
+
+    /// `x`, one of this budget's terms, with round-off (|x| < 1e-12 of the initial energy)
+    /// shown as 0: how `run` and the explorer print the budget.
+    pub fn shown(&self, x: f64) -> f64 {
+        if x.abs() < 1e-12 * self.initial_kinetic {
+            0.0
+        } else {
+            x
+        }
+    }
 }
 
 /// A phase switch or the end of contact, in the manner of `solve_ivp`'s `t_events`.

@@ -94,6 +94,16 @@ pub enum Action {
     DropReplay,
     /// The event loop's animation clock: `dt` seconds of wall time passed.
     Tick(f64),
+    /// `y`: show the `bouncelab run …` line that reproduces the screen.
+    ShowCommand,
+    /// `g`: open the preset picker (the loop lists the presets).
+    OpenPicker,
+    /// The presets the loop found, and why the user presets could not be read.
+    PresetsListed(Vec<super::picker::PickEntry>, Option<String>),
+    /// Move the picker's highlight.
+    PickerMove(Scroll),
+    /// Enter in the picker: load the highlighted preset.
+    PickerChoose,
     /// `y` to "overwrite …? y/n".
     ConfirmYes,
     /// `n` or Esc to "overwrite …? y/n".
@@ -159,6 +169,8 @@ pub enum Mode {
     TooSmall,
     /// The map view: the arrows move the cursor, `n` and `t` act; other keys as in `Normal`.
     Map,
+    /// The preset picker: arrows move, Enter loads, Esc closes.
+    Picker,
 }
 
 /// The action for a terminal event, if any (key presses and repeats; releases are ignored).
@@ -193,6 +205,7 @@ pub fn from_key(key: KeyEvent, mode: Mode) -> Option<Action> {
             _ => None,
         },
         Mode::Help => help(key.code),
+        Mode::Picker => picker(key.code),
         Mode::TooSmall => match key.code {
             KeyCode::Char('q') | KeyCode::Esc => Some(Action::Quit),
             _ => None,
@@ -238,6 +251,22 @@ fn map(key: KeyEvent) -> Option<Action> {
     }
 }
 
+/// In the preset picker: move, load, or close (`q` and `g` close it too).
+fn picker(code: KeyCode) -> Option<Action> {
+    let move_by = |s| Some(Action::PickerMove(s));
+    match code {
+        KeyCode::Esc | KeyCode::Char('q' | 'g') => Some(Action::CloseHelp),
+        KeyCode::Enter => Some(Action::PickerChoose),
+        KeyCode::Up | KeyCode::Char('k') => move_by(Scroll::Up),
+        KeyCode::Down | KeyCode::Char('j') => move_by(Scroll::Down),
+        KeyCode::PageUp => move_by(Scroll::PageUp),
+        KeyCode::PageDown => move_by(Scroll::PageDown),
+        KeyCode::Home => move_by(Scroll::Home),
+        KeyCode::End => move_by(Scroll::End),
+        _ => None,
+    }
+}
+
 /// Cells a Shift+arrow moves the map's cursor.
 pub const MAP_LEAP: i32 = 8;
 
@@ -276,6 +305,8 @@ fn normal(key: KeyEvent) -> Option<Action> {
         KeyCode::Char('u') => Some(Action::Undo),
         KeyCode::Char('e') => Some(Action::Export),
         KeyCode::Char('s') => Some(Action::SavePreset),
+        KeyCode::Char('y') => Some(Action::ShowCommand),
+        KeyCode::Char('g') => Some(Action::OpenPicker),
         KeyCode::Tab => Some(Action::NextView),
         KeyCode::BackTab => Some(Action::PrevView),
         KeyCode::Char('?') => Some(Action::ToggleHelp),

@@ -5,12 +5,15 @@
 //! overwrite question) are handled in `dialogs`, the COR-vs-speed sweeps' bookkeeping in
 //! `sweeps`, and what the charts are drawn from in `scene`.
 
+mod command;
 mod dialogs;
 mod drop;
 mod edit;
 mod fit;
 mod map;
 mod models;
+mod picker;
+mod pins;
 mod scene;
 mod screen;
 mod sweeps;
@@ -22,7 +25,9 @@ pub use super::effect::Effect;
 use super::export;
 use super::param::Param;
 use super::save::SaveRequest;
-pub use super::state::{Confirm, Ghost, Input, Message, Overlay, Purpose, Setting, Severity, View};
+pub use super::state::{
+    Confirm, Ghost, Input, MAX_PINS, Message, Overlay, Purpose, Setting, Severity, View,
+};
 use crate::model::contact::ContactLaw;
 use crate::model::params::ImpactParams;
 use crate::preset::Preset;
@@ -42,7 +47,8 @@ pub struct App {
     overlay: Overlay,
     message: Option<Message>,
     color: bool,
-    ghost: Option<Ghost>,
+    /// The pinned runs, oldest first (at most [`MAX_PINS`]).
+    pins: Vec<Ghost>,
     undo: Vec<Setting>,
     quit: bool,
     /// The impact for `run_for`.
@@ -75,6 +81,8 @@ pub struct App {
     models: crate::tui::models::Models,
     /// The first help line shown.
     help_scroll: u16,
+    /// The preset file the explorer started on (`--config FILE`) and its preset's index.
+    config: Option<(usize, std::path::PathBuf)>,
     /// The terminal's width and height, once the loop has said (`Action::Resize`).
     size: Option<(u16, u16)>,
     /// The map view's map, quantity, targets and window.
@@ -103,7 +111,7 @@ impl App {
             overlay: Overlay::None,
             message: None,
             color,
-            ghost: None,
+            pins: Vec::new(),
             undo: Vec::new(),
             quit: false,
             run: None,
@@ -122,6 +130,7 @@ impl App {
             fit_id: 0,
             models: Default::default(),
             help_scroll: 0,
+            config: None,
             size: None,
             map: Default::default(),
         };
@@ -175,8 +184,13 @@ impl App {
     pub fn color(&self) -> bool {
         self.color
     }
+    /// The pinned runs, oldest first: `p1` is the first.
+    pub fn pins(&self) -> &[Ghost] {
+        &self.pins
+    }
+    /// The latest pin.
     pub fn ghost(&self) -> Option<&Ghost> {
-        self.ghost.as_ref()
+        self.pins.last()
     }
     pub fn undo_depth(&self) -> usize {
         self.undo.len()
@@ -206,9 +220,11 @@ impl App {
         match self.overlay {
             Overlay::None if self.view == View::Map => Mode::Map,
             Overlay::None => Mode::Normal,
-            Overlay::Help => Mode::Help,
+            // the command box closes, and scrolls nothing, like the help
+            Overlay::Help | Overlay::Command(_) => Mode::Help,
             Overlay::Input(_) => Mode::Input,
             Overlay::Confirm(_) => Mode::Confirm,
+            Overlay::Picker(_) => Mode::Picker,
         }
     }
 
@@ -250,6 +266,10 @@ impl App {
                 "the drop view has no export: `bouncelab drop --format csv` writes its data".into(),
             ),
             Action::Export => self.export_wanted = true,
+            Action::OpenPicker => return vec![Effect::ListPresets],
+            Action::PresetsListed(..) | Action::PickerMove(_) | Action::PickerChoose => {
+                self.picker(action)
+            }
             Action::SpeedReady(..)
             | Action::ModelsReady(..)
             | Action::Exported { .. }
@@ -318,7 +338,8 @@ impl App {
                 self.info(format!("reset to the {} preset", self.presets[i].name));
             }
             Action::Pin => self.pin(),
-            Action::Unpin if self.ghost.take().is_some() => self.info("ghost cleared".into()),
+            Action::ShowCommand => self.overlay = Overlay::Command(self.command_line()),
+            Action::Unpin => self.unpin(),
             Action::Undo => match self.undo.pop() {
                 Some(previous) => {
                     self.setting = previous;
@@ -362,33 +383,12 @@ impl App {
         }
     }
 
-    fn pin(&mut self) {
-        self.ghost = Some(Ghost {
-            setting: self.setting.clone(),
-            run: self.run.clone(),
-            zeta: self.zeta.clone(),
-            speed: self.speed.clone(),
-        });
-        self.info("pinned: the current curves stay as a dimmed ghost (P clears)".into());
-    }
-
     /// Recompute what the current state needs and is not up to date: the impact when the
     /// parameters or law changed, the ζ curve when λ changed, the speed sweep when the sweeps
     /// view shows it. Returns the sweeps to ask of the background worker when they changed,
     /// and an export once one is wanted and the view is up to date.
     pub fn refresh(&mut self) -> Vec<Effect> {
-        let s = &self.setting;
-        let key = (s.params, s.law);
-        if self.run_for != Some(key) {
-            self.run_for = Some(key);
-            self.run = compute::impact(&s.params, s.law)
-                .map_err(|e| self.error(e))
-                .ok();
-        }
-        let lambda = self.setting.get(Param::Lambda);
-        if self.zeta.as_ref().is_none_or(|c| c.lambda != lambda) {
-            self.zeta = compute::zeta_curve(lambda).map_err(|e| self.error(e)).ok();
-        }
+        self.refresh_run();
         if self.view == View::Drop {
             let preset = &self.presets[self.setting.preset];
             self.drop
@@ -401,6 +401,23 @@ impl App {
             effects.extend(self.prepare_export());
         }
         effects
+    }
+
+    /// Bring the impact and the ζ curve up to the setting (a batch of keys applies several
+    /// actions before one refresh: `p` after `2` in one batch must pin golf's run).
+    pub(super) fn refresh_run(&mut self) {
+        let s = &self.setting;
+        let key = (s.params, s.law);
+        if self.run_for != Some(key) {
+            self.run_for = Some(key);
+            self.run = compute::impact(&s.params, s.law)
+                .map_err(|e| self.error(e))
+                .ok();
+        }
+        let lambda = self.setting.get(Param::Lambda);
+        if self.zeta.as_ref().is_none_or(|c| c.lambda != lambda) {
+            self.zeta = compute::zeta_curve(lambda).map_err(|e| self.error(e)).ok();
+        }
     }
 
     /// The export of what is on screen, once it is up to date: while a COR-vs-speed sweep is
@@ -419,7 +436,7 @@ impl App {
         }
         self.export_wanted = false;
         match export::request(&self.scene(), self.view.charts()) {
-            Ok(r) => Some(Effect::Export(r)),
+            Ok(r) => Some(Effect::Export(r.with_header(self.csv_header()))),
             Err(e) => {
                 self.error(format!("export failed: {e}"));
                 None

@@ -46,12 +46,15 @@ pub struct SpeedCurve {
     pub points: Vec<VelocityPoint>,
 }
 
-/// One impact with its history.
+/// One impact with its history and energy budget (the budget `run` prints: the same solver
+/// options but the number of samples).
 pub fn impact(params: &ImpactParams, law: ContactLaw) -> Result<ImpactResponse, String> {
     simulate(
         params,
         law,
-        &SolveOptions::default().with_samples(HISTORY_SAMPLES),
+        &SolveOptions::default()
+            .with_samples(HISTORY_SAMPLES)
+            .with_energy(),
     )
     .map_err(|e| e.to_string())
 }

@@ -29,4 +29,6 @@ pub enum Effect {
     /// Refine this map in the background, pass by pass (a job before it stops on its own:
     /// `update` set its cancel flag); each pass comes back as `Action::MapPass`.
     Map(MapJob),
+    /// Read the presets for the picker (`g`); the loop answers `Action::PresetsListed`.
+    ListPresets,
 }

@@ -144,6 +144,10 @@ fn carry_out(mut effects: Vec<Effect>, app: &mut App, worker: &mut Workers) {
                     Ok(files) => Action::Exported { files },
                     Err(msg) => Action::ExportFailed { msg },
                 },
+                Effect::ListPresets => {
+                    let (entries, error) = super::picker::list();
+                    Action::PresetsListed(entries, error)
+                }
                 Effect::Save(request) => {
                     save::write(&request, catalog::user_presets_dir().as_deref())
                 }

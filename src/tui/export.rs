@@ -36,9 +36,17 @@ pub struct ExportRequest {
     pub charts: Vec<(&'static str, Figure)>,
     /// The map view's map, after the charts (none in the other views).
     pub map: Option<super::export_map::MapExport>,
+    /// `#` lines each CSV file starts with (the `bouncelab run` line and the parameters).
+    pub header: Vec<String>,
 }
 
 impl ExportRequest {
+    /// The request with `lines` (each starting with `#`) heading its CSV files.
+    pub fn with_header(mut self, lines: Vec<String>) -> ExportRequest {
+        self.header = lines;
+        self
+    }
+
     /// The files of export number `n` in `dir`: per chart its `.svg`, then its `.csv`.
     pub fn paths(&self, dir: &Path, n: usize) -> Vec<PathBuf> {
         let map = self.map.iter().map(|m| m.file_name());
@@ -84,6 +92,7 @@ pub fn request(scene: &Scene, charts: &[Chart]) -> Result<ExportRequest, String>
         ball: file_stem_part(&scene.ball.name),
         charts,
         map: None,
+        header: Vec::new(),
     })
 }
 
@@ -110,13 +119,14 @@ fn taken(path: &Path) -> bool {
 /// created are removed again. Every picture is rendered before the first file is created.
 pub fn write(request: &ExportRequest, dir: &Path) -> Result<Vec<PathBuf>, String> {
     let mut contents = Vec::new();
+    let head: String = request.header.iter().map(|l| format!("{l}\n")).collect();
     for (_, fig) in &request.charts {
         contents.push(svg::render(fig).map_err(|e| e.to_string())?);
-        contents.push(csv::to_string(fig));
+        contents.push(head.clone() + &csv::to_string(fig));
     }
     if let Some(m) = &request.map {
         let (svg, csv) = m.render()?;
-        contents.extend([svg, csv]);
+        contents.extend([svg, head.clone() + &csv]);
     }
     if !dir.as_os_str().is_empty() && !dir.is_dir() {
         fs::create_dir_all(dir)

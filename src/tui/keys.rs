@@ -2,7 +2,7 @@
 //! `update` needs to stop the help's scrolling at its end.
 
 /// (keys, what they do); a row without text is a section heading.
-pub const KEYS: [(&str, &str); 39] = [
+pub const KEYS: [(&str, &str); 44] = [
     ("l / L", "λ up / down (±0.01, coarse ±0.1)"),
     ("z / Z", "ζ up / down (×1.1, coarse ×2)"),
     ("v / V", "v0 up / down (±0.1, coarse ±1 m/s)"),
@@ -13,12 +13,14 @@ pub const KEYS: [(&str, &str); 39] = [
     ("= or Enter", "type an exact value"),
     ("1 2 3", "load superball, golf, baseball"),
     ("4", "the start preset, if another"),
+    ("g", "pick a preset (embedded and user)"),
     ("c", "cycle the contact law"),
     ("r", "reset to the preset"),
-    ("p / P", "pin curves as a ghost / clear it"),
+    ("p / P", "pin this run (≤ 8) / clear pins"),
     ("u", "undo the last change"),
     ("e", "export this view (SVG + CSV files)"),
     ("s", "save as a user preset (asks a name)"),
+    ("y", "show the bouncelab run command line"),
     (
         "Tab / Shift+Tab",
         "switch view (impact, sweeps, models, map)",
@@ -37,6 +39,9 @@ pub const KEYS: [(&str, &str); 39] = [
     ("", ""),
     ("In this help", ""),
     ("↑↓ j k PgUp/Dn", "scroll (Home / End: top / end)"),
+    ("", ""),
+    ("In the preset picker (g)", ""),
+    ("↑↓ Enter / Esc", "choose, load / close"),
     ("", ""),
     ("In the value or name entry", ""),
     ("Enter / Esc", "accept / cancel"),

@@ -22,8 +22,9 @@ pub struct Body {
 }
 
 /// The parts for `area`, or `None` below the minimum size; `side` puts the readout beside the
-/// charts whatever the size (the models view's table).
-pub fn body(area: Rect, side: bool) -> Option<Body> {
+/// charts whatever the size (the models view's table), `compact` is the readout strip's
+/// height when it is not beside them (`readout::compact_height`).
+pub fn body(area: Rect, side: bool, compact: u16) -> Option<Body> {
     if area.width < MIN_WIDTH || area.height < MIN_HEIGHT {
         return None;
     }
@@ -40,11 +41,8 @@ pub fn body(area: Rect, side: bool) -> Option<Body> {
         let [c, r] = Layout::horizontal([Constraint::Fill(1), Constraint::Length(w)]).areas(body);
         (c, r)
     } else {
-        let [c, r] = Layout::vertical([
-            Constraint::Fill(1),
-            Constraint::Length(readout::COMPACT_HEIGHT),
-        ])
-        .areas(body);
+        let [c, r] =
+            Layout::vertical([Constraint::Fill(1), Constraint::Length(compact)]).areas(body);
         (c, r)
     };
     Some(Body {

@@ -123,10 +123,12 @@ pub fn geometry(area: Rect) -> Option<Geometry> {
 }
 
 /// (λ rows, ζ columns) of the grid for a terminal of `size` (`None`: not known yet), drawn
-/// with colour (two rows per character) or without.
-pub fn grid(size: Option<(u16, u16)>, color: bool) -> Option<(usize, usize)> {
+/// with colour (two rows per character) or without, with `pins` runs pinned (the compact
+/// readout grows with them).
+pub fn grid(size: Option<(u16, u16)>, color: bool, pins: usize) -> Option<(usize, usize)> {
     let (w, h) = size.unwrap_or(DEFAULT_SIZE);
-    let g = geometry(layout::body(Rect::new(0, 0, w, h), false)?.charts)?;
+    let compact = super::widgets::readout::compact_height(pins);
+    let g = geometry(layout::body(Rect::new(0, 0, w, h), false, compact)?.charts)?;
     let per_char = if color { 2 } else { 1 };
     Some((
         usize::from(g.plot.height) * per_char,

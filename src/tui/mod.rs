@@ -21,6 +21,7 @@
 
 pub mod action;
 pub mod app;
+pub mod command;
 pub mod compute;
 pub mod drop_view;
 pub mod effect;
@@ -36,6 +37,7 @@ pub mod map_worker;
 pub mod measured;
 pub mod models;
 pub mod param;
+pub mod picker;
 pub mod save;
 pub mod setting;
 pub mod state;
@@ -72,14 +74,17 @@ pub fn run_with_measured(
     preset: Preset,
     measured: Vec<crate::figure::explorer::MeasuredOverlay>,
 ) -> anyhow::Result<()> {
-    run_with_data(preset, measured, None)
+    run_from(preset, measured, None, None)
 }
 
-/// [`run_with_measured`], with the measured file's data too, for the fit (`f`).
-pub fn run_with_data(
+/// [`run_with_measured`], with the measured file's data too, for the fit (`f`), and the
+/// preset's file when it was read from `config` (`bouncelab --config FILE`), which "copy as
+/// command" (`y`) then names.
+pub fn run_from(
     preset: Preset,
     measured: Vec<crate::figure::explorer::MeasuredOverlay>,
     loaded: Option<measured::Loaded>,
+    config: Option<std::path::PathBuf>,
 ) -> anyhow::Result<()> {
     if !std::io::stdout().is_terminal() {
         anyhow::bail!("the explorer needs a terminal (stdout is not one); see `bouncelab --help`");
@@ -91,6 +96,9 @@ pub fn run_with_data(
         .with_measured(measured);
     if let Some(l) = loaded {
         app = app.with_loaded(l);
+    }
+    if let Some(path) = config {
+        app = app.with_config(std::path::absolute(&path).unwrap_or(path));
     }
     let mut terminal = ratatui::try_init()
         .inspect_err(|_| {

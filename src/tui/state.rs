@@ -1,5 +1,5 @@
 //! The pieces of the explorer's state: what the model runs on, the view, the overlays, the
-//! message line and the pinned ghost. The explorer's `App` owns them and changes them.
+//! message line and the pinned runs. The explorer's `App` owns them and changes them.
 
 use super::compute::{SpeedCurve, ZetaCurve};
 use super::param::Param;
@@ -115,6 +115,10 @@ pub enum Overlay {
     Help,
     Input(Input),
     Confirm(Confirm),
+    /// "Copy as command" (`y`): the `bouncelab run …` line of the screen, to select and copy.
+    Command(String),
+    /// The preset picker (`g`).
+    Picker(super::picker::Picker),
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -131,7 +135,11 @@ pub struct Message {
     pub severity: Severity,
 }
 
-/// Pinned curves, drawn dimmed behind the live ones.
+/// How many runs can be pinned at once: past this the charts and the pin table stop being
+/// readable, so `p` refuses with a message.
+pub const MAX_PINS: usize = 8;
+
+/// A pinned run: its curves are drawn dimmed behind the live ones, tagged `p1`, `p2`, ….
 #[derive(Debug, Clone, PartialEq)]
 pub struct Ghost {
     pub setting: Setting,

@@ -5,14 +5,17 @@
 use super::app::{App, Overlay, View};
 use super::param::Param;
 use super::theme::Theme;
+use super::widgets::command::CommandBox;
 use super::widgets::confirm::ConfirmDialog;
 use super::widgets::fit::FitView;
 use super::widgets::help::Help;
 use super::widgets::input::InputDialog;
 use super::widgets::map::MapPanel;
 use super::widgets::models::ModelsTable;
+use super::widgets::picker::PickerBox;
+use super::widgets::pins::PinView;
 use super::widgets::plot::Plot;
-use super::widgets::readout::Readout;
+use super::widgets::readout::{self, Readout};
 use super::widgets::status::{Header, KeyHints};
 pub use crate::figure::explorer::Chart;
 use crate::figure::{Figure, explorer};
@@ -45,8 +48,10 @@ pub struct Screen {
 
 /// Where everything goes, or `None` when the area is too small to use.
 pub fn screen(app: &App, area: Rect) -> Option<Screen> {
-    // the models view's table always goes beside its charts
-    let b = super::layout::body(area, app.view() == View::Models)?;
+    // the models view's table always goes beside its charts; the compact readout grows a line
+    // for the pins' table
+    let compact = readout::compact_height(app.pins().len());
+    let b = super::layout::body(area, app.view() == View::Models, compact)?;
     let (charts, fit) = split_fit(app, b.charts);
     let charts = match app.view() {
         View::Impact => impact_grid(charts),
@@ -147,18 +152,27 @@ fn models_table(app: &App, theme: Theme) -> ModelsTable<'_> {
     }
 }
 
+/// The pins as the readout's table shows them.
+fn pin_views(app: &App) -> Vec<PinView<'_>> {
+    app.pins()
+        .iter()
+        .map(|g| PinView {
+            ball: app.presets()[g.setting.preset].name.as_str(),
+            setting: &g.setting,
+            run: g.run.as_ref(),
+        })
+        .collect()
+}
+
 /// The readout's view of the state.
-fn readout(app: &App, tall: bool, theme: Theme) -> Readout<'_> {
-    let pinned = app
-        .ghost()
-        .map(|g| (&g.setting, app.presets()[g.setting.preset].name.as_str()));
+fn readout<'a>(app: &'a App, pins: &'a [PinView<'a>], tall: bool, theme: Theme) -> Readout<'a> {
     Readout {
         preset: app.preset(),
         setting: app.setting(),
         selected: app.selected(),
         coarse: app.coarse(),
         run: app.run(),
-        pinned,
+        pins,
         tall,
         theme,
     }
@@ -207,6 +221,8 @@ fn render_overlay(app: &App, theme: Theme, area: Rect, buf: &mut Buffer) {
         }
         .render(area, buf),
         Overlay::Confirm(confirm) => ConfirmDialog { confirm, theme }.render(area, buf),
+        Overlay::Command(line) => CommandBox { line, theme }.render(area, buf),
+        Overlay::Picker(picker) => PickerBox { picker, theme }.render(area, buf),
     }
 }
 
@@ -246,7 +262,8 @@ impl Widget for &App {
         } else if self.view() == View::Models {
             models_table(self, theme).render(s.readout, buf);
         } else {
-            readout(self, s.side_panel, theme).render(s.readout, buf);
+            let pins = pin_views(self);
+            readout(self, &pins, s.side_panel, theme).render(s.readout, buf);
         }
         if self.view() == View::Map {
             map_panel(self, theme).render(s.chart_area, buf);

@@ -158,7 +158,7 @@ impl App {
             self.map.cancel();
             return None;
         }
-        let (rows, cols) = map_view::grid(self.size, self.color)?;
+        let (rows, cols) = map_view::grid(self.size, self.color, self.pins().len())?;
         let (l, z) = (
             self.setting.get(Param::Lambda),
             self.setting.get(Param::Zeta),
@@ -260,6 +260,7 @@ impl App {
             ball: file_stem_part(&self.preset().name),
             charts: Vec::new(),
             map: Some(export),
+            header: self.csv_header(),
         }))
     }
 }

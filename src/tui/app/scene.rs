@@ -62,13 +62,20 @@ impl App {
             zeta: self.zeta.as_ref().map(zeta),
             speed: self.speed.as_ref().map(speed),
             speed_pending: pending.reduce(f64::max),
-            pinned: self.ghost.as_ref().map(|g| Pinned {
-                params: g.setting.params,
-                law: g.setting.law,
-                run: g.run.as_ref(),
-                zeta: g.zeta.as_ref().map(zeta),
-                speed: g.speed.as_ref().map(speed),
-            }),
+            pinned: self
+                .pins
+                .iter()
+                .enumerate()
+                .map(|(i, g)| Pinned {
+                    number: i + 1,
+                    ball: self.presets[g.setting.preset].name.clone(),
+                    params: g.setting.params,
+                    law: g.setting.law,
+                    run: g.run.as_ref(),
+                    zeta: g.zeta.as_ref().map(zeta),
+                    speed: g.speed.as_ref().map(speed),
+                })
+                .collect(),
             measured: &self.measured,
             models: self.models(),
             models_pending: self.models.wanted.is_some(),

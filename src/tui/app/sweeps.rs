@@ -9,18 +9,17 @@ impl App {
     pub(super) fn refresh_sweeps(&mut self) -> Option<Effect> {
         self.speed_wanted.clear();
         if self.view == View::Sweeps {
-            let (current, ghost) = self.speed_targets();
+            let (current, pins) = self.speed_targets();
             let stale = |have: Option<&SpeedCurve>, want: &SpeedRequest| {
                 have.is_none_or(|c| c.request != *want)
             };
             if stale(self.speed.as_ref(), &current) {
                 self.speed_wanted.push(current);
             }
-            if let (Some(g), Some(want)) = (&self.ghost, ghost)
-                && stale(g.speed.as_ref(), &want)
-                && !self.speed_wanted.contains(&want)
-            {
-                self.speed_wanted.push(want);
+            for (g, want) in self.pins.iter().zip(pins) {
+                if stale(g.speed.as_ref(), &want) && !self.speed_wanted.contains(&want) {
+                    self.speed_wanted.push(want);
+                }
             }
         }
         if !self.background {
@@ -36,13 +35,13 @@ impl App {
         })
     }
 
-    /// The sweeps the current setting and the ghost need.
-    pub(super) fn speed_targets(&self) -> (SpeedRequest, Option<SpeedRequest>) {
+    /// The sweeps the current setting and each pin (in order) need.
+    pub(super) fn speed_targets(&self) -> (SpeedRequest, Vec<SpeedRequest>) {
         let request =
             |s: &Setting| SpeedRequest::new(&s.params, s.law, self.presets[s.preset].measured.v0);
         (
             request(&self.setting),
-            self.ghost.as_ref().map(|g| request(&g.setting)),
+            self.pins.iter().map(|g| request(&g.setting)).collect(),
         )
     }
 
@@ -60,14 +59,14 @@ impl App {
                 points: Vec::new(),
             }
         });
-        let (current, ghost) = self.speed_targets();
+        let (current, pins) = self.speed_targets();
         if *request == current {
             self.speed = Some(curve.clone());
         }
-        if let (Some(g), Some(want)) = (&mut self.ghost, ghost)
-            && *request == want
-        {
-            g.speed = Some(curve);
+        for (g, want) in self.pins.iter_mut().zip(pins) {
+            if *request == want {
+                g.speed = Some(curve.clone());
+            }
         }
         self.speed_wanted.retain(|r| r != request);
     }

@@ -2,6 +2,7 @@
 //! never the whole state: [`plot`] draws any figure, the others the readout, the header and
 //! status line, and the dialogs. Nothing here changes the state or runs the model.
 
+pub mod command;
 pub mod confirm;
 pub mod drop;
 pub mod fit;
@@ -10,6 +11,8 @@ pub mod input;
 pub mod map;
 pub mod map_cells;
 pub mod models;
+pub mod picker;
+pub mod pins;
 pub mod plot;
 pub mod readout;
 pub mod status;

@@ -1,6 +1,7 @@
 //! The readout: the live parameters (λ, ζ, v0, law, K_p, K_r, c) and the results (e, F_m, t_f,
 //! z_m, z_f) next to the preset's measured values and the difference. A tall panel beside the
-//! charts, or four compact lines below them on narrow terminals.
+//! charts, or four compact lines below them on narrow terminals. Pinned runs add the pin table
+//! (`pins`).
 
 use crate::preset::Preset;
 use crate::solver::ImpactResponse;
@@ -9,6 +10,7 @@ use crate::tui::format::percent_diff;
 use crate::tui::param::Param;
 use crate::tui::setting::Setting;
 use crate::tui::theme::Theme;
+use crate::tui::widgets::pins::{self, Now, PinView};
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
 use ratatui::style::Style;
@@ -19,6 +21,13 @@ use ratatui::widgets::{Block, Paragraph, Widget};
 pub const PANEL_HEIGHT: u16 = 22;
 /// Rows the compact form needs, border included.
 pub const COMPACT_HEIGHT: u16 = 6;
+/// Rows of the energy budget in the tall panel, shown only when they fit.
+const ENERGY_ROWS: usize = 3;
+
+/// Rows the compact form needs with `pins` pinned runs: one more line for their COR.
+pub fn compact_height(pins: usize) -> u16 {
+    COMPACT_HEIGHT + u16::from(pins > 0)
+}
 
 /// What the readout shows.
 #[derive(Debug, Clone, Copy)]
@@ -28,8 +37,8 @@ pub struct Readout<'a> {
     pub selected: Param,
     pub coarse: bool,
     pub run: Option<&'a ImpactResponse>,
-    /// The pinned setting and its ball's name.
-    pub pinned: Option<(&'a Setting, &'a str)>,
+    /// The pinned runs, oldest first: the pin table compares them with this run.
+    pub pins: &'a [PinView<'a>],
     /// The tall panel beside the charts, or four compact lines below them.
     pub tall: bool,
     pub theme: Theme,
@@ -38,7 +47,8 @@ pub struct Readout<'a> {
 impl Widget for &Readout<'_> {
     fn render(self, area: Rect, buf: &mut Buffer) {
         let lines = if self.tall {
-            self.panel(usize::from(area.width.saturating_sub(2)))
+            let inner = Block::bordered().inner(area);
+            self.panel(usize::from(inner.width), usize::from(inner.height))
         } else {
             self.compact()
         };
@@ -122,12 +132,61 @@ impl Readout<'_> {
     }
 
     /// The tall panel: parameters, results against the measured values, notes.
-    fn panel(&self, inner_w: usize) -> Vec<Line<'static>> {
+    fn panel(&self, inner_w: usize, inner_h: usize) -> Vec<Line<'static>> {
         let mut lines = self.parameter_lines();
         lines.push(Line::raw(""));
         lines.extend(self.result_lines(inner_w));
         lines.extend(self.notes());
+        if inner_h >= lines.len() + ENERGY_ROWS {
+            lines.extend(self.energy_lines());
+        }
+        let left = inner_h.saturating_sub(lines.len());
+        lines.extend(pins::table(
+            self.pins,
+            &self.now(),
+            (inner_w, left),
+            &self.theme,
+        ));
         lines
+    }
+
+    /// Where the run's energy went (mJ): the budget `bouncelab run` prints, from the same
+    /// solver pass ([`crate::solver::EnergyBudget`]), round-off shown as 0 as there.
+    fn energy_lines(&self) -> Vec<Line<'static>> {
+        let Some(e) = self.run.and_then(|r| r.energy) else {
+            return Vec::new();
+        };
+        let mj = |x: f64| sig_trim(e.shown(x) * 1e3, 4);
+        vec![
+            Line::from(vec![
+                Span::styled(" energy mJ", self.theme.title()),
+                Span::raw(format!(
+                    " in {}  out {}",
+                    mj(e.initial_kinetic),
+                    mj(e.final_kinetic)
+                )),
+            ]),
+            Line::raw(format!(
+                "  dashpot {}  contact {}",
+                mj(e.dashpot),
+                mj(e.contact)
+            )),
+            Line::raw(format!(
+                "  spring {}  residual {}",
+                mj(e.spring),
+                match e.relative_residual() {
+                    0.0 => "0".to_string(),
+                    r => format!("{r:.0e}"),
+                }
+            )),
+        ]
+    }
+
+    fn now(&self) -> Now<'_> {
+        Now {
+            setting: self.setting,
+            run: self.run,
+        }
     }
 
     fn parameter_lines(&self) -> Vec<Line<'static>> {
@@ -213,21 +272,6 @@ impl Readout<'_> {
                 theme.dim(),
             ));
         }
-        if let Some((gs, name)) = self.pinned {
-            lines.push(Line::styled(
-                format!(" pinned: {name}, {} law", gs.law),
-                theme.ghost(),
-            ));
-            lines.push(Line::styled(
-                format!(
-                    "   λ {}  ζ {}  v0 {} m/s",
-                    sig_trim(gs.get(Param::Lambda), 3),
-                    sig_trim(gs.get(Param::Zeta), 3),
-                    sig_trim(gs.get(Param::V0), 3),
-                ),
-                theme.ghost(),
-            ));
-        }
         lines
     }
 
@@ -281,6 +325,7 @@ impl Readout<'_> {
         } else {
             lines.push(Line::styled(" no result", self.theme.error()));
         }
+        lines.extend(pins::compact(self.pins, &self.now()));
         lines
     }
 }

@@ -1,0 +1,38 @@
+//! The `bouncelab run …` line of the screen (`y`, and the export's CSV header).
+
+use super::{App, Setting};
+use crate::tui::command::{self, Source};
+use std::path::PathBuf;
+
+impl App {
+    /// The explorer started on the preset read from `path` (`bouncelab --config FILE`): the
+    /// command names that file for it.
+    pub fn with_config(mut self, path: PathBuf) -> App {
+        self.config = Some((self.setting.preset, path));
+        self
+    }
+
+    /// The `bouncelab run` line that runs what the screen shows.
+    pub fn command_line(&self) -> String {
+        self.command_for(&self.setting)
+    }
+
+    fn command_for(&self, s: &Setting) -> String {
+        let preset = &self.presets[s.preset];
+        let source = match &self.config {
+            Some((i, path)) if *i == s.preset => Source::Config(path),
+            _ => Source::Name(&preset.name),
+        };
+        command::run_line(source, preset, s)
+    }
+
+    /// The `#` lines an export's CSV files start with.
+    pub(super) fn csv_header(&self) -> Vec<String> {
+        let pins: Vec<String> = self
+            .pins
+            .iter()
+            .map(|g| self.command_for(&g.setting))
+            .collect();
+        command::csv_header(&self.command_line(), self.preset(), &self.setting, &pins)
+    }
+}

@@ -1,0 +1,68 @@
+//! The preset picker (`g`) in [`App::update`]: the listed presets come back from the loop,
+//! the arrows move the highlight, Enter loads the preset.
+
+use super::{App, Overlay, Setting};
+use crate::tui::action::{Action, Scroll};
+use crate::tui::picker::Picker;
+
+/// Rows a PgUp / PgDn moves the highlight.
+const PAGE: usize = 10;
+
+impl App {
+    pub(super) fn picker(&mut self, action: Action) {
+        match action {
+            Action::PresetsListed(entries, error) => {
+                // the current ball highlighted, when listed
+                let now = &self.preset().name;
+                let selected = entries
+                    .iter()
+                    .position(|e| &e.preset.name == now)
+                    .unwrap_or(0);
+                if let Some(e) = &error {
+                    self.warn(e.clone());
+                }
+                self.overlay = Overlay::Picker(Picker {
+                    entries,
+                    selected,
+                    error,
+                });
+            }
+            Action::PickerMove(how) => {
+                if let Overlay::Picker(p) = &mut self.overlay {
+                    let last = p.entries.len().saturating_sub(1);
+                    p.selected = match how {
+                        Scroll::Up => p.selected.saturating_sub(1),
+                        Scroll::Down => (p.selected + 1).min(last),
+                        Scroll::PageUp => p.selected.saturating_sub(PAGE),
+                        Scroll::PageDown => (p.selected + PAGE).min(last),
+                        Scroll::Home => 0,
+                        Scroll::End => last,
+                    };
+                }
+            }
+            Action::PickerChoose => self.choose(),
+            _ => {}
+        }
+    }
+
+    /// Load the highlighted preset: one the explorer has already by its place, another one
+    /// added to its presets (so `r` and undo find it), and close the picker.
+    fn choose(&mut self) {
+        let Overlay::Picker(p) = std::mem::replace(&mut self.overlay, Overlay::None) else {
+            return;
+        };
+        let Some(entry) = p.entries.into_iter().nth(p.selected) else {
+            return;
+        };
+        let i = match self.presets.iter().position(|q| *q == entry.preset) {
+            Some(i) => i,
+            None => {
+                self.presets.push(entry.preset);
+                self.presets.len() - 1
+            }
+        };
+        let name = self.presets[i].name.clone();
+        self.change(Setting::from_preset(i, &self.presets[i]));
+        self.info(format!("loaded {name}"));
+    }
+}

@@ -1,0 +1,52 @@
+//! The preset picker (`g`): what it lists and how the event loop reads it. Listing reads the
+//! user presets folder, so it is an effect ([`super::effect::Effect::ListPresets`]) carried
+//! out by the loop with [`list`]; the state keeps the answer in a [`Picker`].
+
+use crate::catalog::{self, Catalog, Origin};
+use crate::preset::Preset;
+
+/// One preset in the picker.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PickEntry {
+    pub preset: Preset,
+    /// "embedded", or the file it was read from.
+    pub origin: String,
+}
+
+/// The open picker: every preset, the highlighted one, and why the user presets could not be
+/// read (then only the embedded ones are listed).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Picker {
+    pub entries: Vec<PickEntry>,
+    pub selected: usize,
+    pub error: Option<String>,
+}
+
+/// Every preset `run --preset` knows now: embedded ones, then user presets from `dir` (one
+/// just saved too). When the folder cannot be read, the embedded ones and the reason.
+pub fn list_in(dir: Option<&std::path::Path>) -> (Vec<PickEntry>, Option<String>) {
+    let (catalog, error) = match Catalog::load(dir, None) {
+        Ok(c) => (c, None),
+        Err(e) => (
+            Catalog::embedded(),
+            Some(format!("user presets not read: {e}")),
+        ),
+    };
+    let entries = catalog
+        .entries()
+        .iter()
+        .map(|e| PickEntry {
+            preset: e.preset.clone(),
+            origin: match &e.origin {
+                Origin::Embedded => "embedded".into(),
+                Origin::File(p) => p.display().to_string(),
+            },
+        })
+        .collect();
+    (entries, error)
+}
+
+/// [`list_in`] the user presets folder.
+pub fn list() -> (Vec<PickEntry>, Option<String>) {
+    list_in(catalog::user_presets_dir().as_deref())
+}

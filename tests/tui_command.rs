@@ -1,0 +1,191 @@
+//! "Copy as command" (`y`) and the energy budget: the `bouncelab run …` line the explorer
+//! shows runs, through the real command line, to the COR and energy budget on screen; the same
+//! line and the parameters head every CSV an export writes.
+
+mod common;
+
+use bouncelab::preset::Preset;
+use bouncelab::tui::action::{self, Action, Mode};
+use bouncelab::tui::app::{App, Effect, Overlay};
+use bouncelab::tui::export;
+use ratatui::Terminal;
+use ratatui::backend::TestBackend;
+use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
+use serde_json::Value;
+use std::fs;
+use std::path::Path;
+
+fn app(i: usize) -> App {
+    App::new(Preset::embedded().remove(i), true)
+}
+
+fn press(app: &mut App, keys: &str) -> Vec<Effect> {
+    let mut effects = Vec::new();
+    for c in keys.chars() {
+        let m = if c.is_ascii_uppercase() {
+            KeyModifiers::SHIFT
+        } else {
+            KeyModifiers::NONE
+        };
+        let code = match c {
+            '\u{1b}' => KeyCode::Esc,
+            c => KeyCode::Char(c),
+        };
+        if let Some(a) = action::from_key(KeyEvent::new(code, m), app.mode()) {
+            effects = app.update(a);
+        }
+    }
+    effects
+}
+
+/// The line `y` shows.
+fn shown(app: &mut App) -> String {
+    press(app, "y");
+    let Overlay::Command(line) = app.overlay().clone() else {
+        panic!("y shows the command: {:?}", app.overlay());
+    };
+    press(app, "\u{1b}");
+    assert_eq!(app.overlay(), &Overlay::None, "Esc closes it");
+    line
+}
+
+/// Run `line` (plain words, no quoting needed) through the binary, as JSON.
+fn run_json(line: &str, config_home: &Path) -> Value {
+    let words: Vec<&str> = line.split(' ').collect();
+    assert_eq!(&words[..2], ["bouncelab", "run"]);
+    let mut args = words[1..].to_vec();
+    args.extend(["--format", "json"]);
+    let o = common::bl_in(config_home, &args);
+    assert_eq!(o.code, 0, "{line}: {}", o.stderr);
+    serde_json::from_str(&o.stdout).unwrap()
+}
+
+/// The screen's run and `run`'s agree: COR, peak force, law, and every term of the budget.
+fn assert_same_run(app: &App, v: &Value) {
+    let r = app.run().expect("a run on screen");
+    let close = |a: f64, b: f64| (a - b).abs() <= 1e-12 * b.abs().max(1e-300);
+    let f = |k: &str| common::f(v, k);
+    assert!(close(r.cor, f("cor")), "COR {} vs {}", r.cor, f("cor"));
+    assert!(close(r.max_force, f("max_force")));
+    assert_eq!(v["law"], app.setting().law.name());
+    let e = r.energy.expect("the explorer computes the budget");
+    let ve = &v["energy"];
+    for (mine, key) in [
+        (e.initial_kinetic, "initial_kinetic"),
+        (e.final_kinetic, "final_kinetic"),
+        (e.dashpot, "dashpot"),
+        (e.contact, "contact"),
+        (e.spring, "spring"),
+    ] {
+        let theirs = common::f(ve, key);
+        assert!(
+            (mine - theirs).abs() <= 1e-12 * e.initial_kinetic,
+            "{key}: {mine} vs {theirs}"
+        );
+    }
+}
+
+#[test]
+fn y_shows_the_line_and_only_esc_or_the_help_keys_close_it() {
+    let mut a = app(1);
+    press(&mut a, "y");
+    assert_eq!(a.mode(), Mode::Help);
+    let before = a.setting().clone();
+    press(&mut a, "lv");
+    assert_eq!(a.setting(), &before, "keys under the box change nothing");
+    let mut t = Terminal::new(TestBackend::new(80, 24)).unwrap();
+    t.draw(|f| f.render_widget(&a, f.area())).unwrap();
+    insta::assert_snapshot!(t.backend());
+    a.update(Action::CloseHelp);
+    assert_eq!(a.overlay(), &Overlay::None);
+}
+
+#[test]
+fn the_preset_line_runs_to_the_screen() {
+    let home = tempfile::tempdir().unwrap();
+    let mut a = app(1);
+    let line = shown(&mut a);
+    assert_eq!(line, "bouncelab run --preset golf --v0 1.47");
+    assert_same_run(&a, &run_json(&line, home.path()));
+}
+
+#[test]
+fn moved_parameters_and_law_run_to_the_screen() {
+    let home = tempfile::tempdir().unwrap();
+    for (ball, keys) in [
+        (0, "lllZZvv"),
+        (1, "LLzzzVc"),
+        (2, "vvvvvcc"),
+        (0, "cLLLLZ"),
+    ] {
+        let mut a = app(ball);
+        press(&mut a, keys);
+        let line = shown(&mut a);
+        assert!(line.contains(" --v0 "), "{line}");
+        assert_same_run(&a, &run_json(&line, home.path()));
+    }
+}
+
+#[test]
+fn a_start_preset_from_a_file_is_named_by_its_file() {
+    let home = tempfile::tempdir().unwrap();
+    let file = home.path().join("my ball.toml");
+    fs::write(&file, common::SUPERBALL.replace("superball", "myball")).unwrap();
+    let preset = Preset::parse(&fs::read_to_string(&file).unwrap(), "my ball.toml").unwrap();
+    let mut a = App::new(preset, true).with_config(file.clone());
+    press(&mut a, "zz");
+    let line = shown(&mut a);
+    let quoted = format!("--config '{}'", file.display());
+    assert!(line.contains(&quoted), "{line}");
+    // the shell's reading of the quoted path
+    let args: Vec<String> = line
+        .replace(&quoted, "--config FILE")
+        .split(' ')
+        .skip(1)
+        .map(|w| match w {
+            "FILE" => file.display().to_string(),
+            w => w.into(),
+        })
+        .chain(["--format".into(), "json".into()])
+        .collect();
+    let args: Vec<&str> = args.iter().map(String::as_str).collect();
+    let o = common::bl_in(home.path(), &args);
+    assert_eq!(o.code, 0, "{}", o.stderr);
+    assert_same_run(&a, &serde_json::from_str(&o.stdout).unwrap());
+    // another ball loaded is named by its name
+    press(&mut a, "2");
+    assert!(shown(&mut a).starts_with("bouncelab run --preset golf "));
+}
+
+#[test]
+fn every_export_csv_starts_with_the_line_and_the_parameters() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut a = app(0);
+    press(&mut a, "2vp1lll");
+    let line = shown(&mut a);
+    let effects = press(&mut a, "e");
+    let request = effects
+        .into_iter()
+        .find_map(|e| match e {
+            Effect::Export(r) => Some(r),
+            _ => None,
+        })
+        .expect("an export");
+    let files = export::write(&request, dir.path()).unwrap();
+    let csvs: Vec<_> = files
+        .iter()
+        .filter(|f| f.extension().unwrap() == "csv")
+        .collect();
+    assert_eq!(csvs.len(), 3);
+    for f in csvs {
+        let text = fs::read_to_string(f).unwrap();
+        let head: Vec<&str> = text.lines().take_while(|l| l.starts_with('#')).collect();
+        assert_eq!(head[0], format!("# {line}"));
+        assert_eq!(head[1], "# ball superball (adopted parameters), linear law");
+        assert!(head[2].starts_with("# lambda ") && head[2].contains(", k_r "));
+        assert_eq!(head[3], "# pinned 1: bouncelab run --preset golf --v0 1.57");
+        assert_eq!(head.len(), 4);
+        let first = text.lines().nth(4).unwrap();
+        assert!(first.starts_with("series,kind,"), "{first}");
+    }
+}
