@@ -333,6 +333,13 @@ fn speed_figure(scene: &Scene) -> Figure {
     // the flattening onset is the linear law's; the other laws flatten elsewhere
     let onset = onset.filter(|_| ball.law == ContactLaw::Linear);
     let mut fig = paper::cor_velocity(ball, rows, onset);
+    // the ball's mark as on the ζ charts, where it must differ from the other balls'
+    let names: Vec<&str> = scene.balls.iter().map(|b| b.name.as_str()).collect();
+    if let Some(i) = names.iter().position(|n| *n == ball.name)
+        && let Some(s) = fig.series.iter_mut().find(|s| s.id == "measured cor")
+    {
+        s.look.text = Some(paper::initials(&names)[i].clone());
+    }
     let v_hi = [
         scene.speed.map(|s| s.v_max),
         scene.pinned.and_then(|p| p.speed).map(|s| s.v_max),

@@ -3,6 +3,7 @@
 
 use super::{App, Confirm, Effect, Input, Overlay, Purpose};
 use crate::cli::number::number;
+use crate::model::params::ImpactParams;
 use crate::tui::action::Action;
 use crate::tui::param::Param;
 use crate::tui::save::{self, SaveRequest};
@@ -78,15 +79,11 @@ impl App {
             self.overlay = Overlay::None;
             return None;
         }
-        let lambda_zeta = (
-            self.setting.get(Param::Lambda),
-            self.setting.get(Param::Zeta),
-        );
-        let checked = read_value(&text, param, lambda_zeta);
+        let checked = read_value(&text, param, &self.setting.params);
         match checked {
-            Ok(v) => {
+            Ok(params) => {
                 self.overlay = Overlay::None;
-                self.set_param(param, v);
+                self.set_params(params);
             }
             Err(why) => {
                 if let Overlay::Input(input) = &mut self.overlay {
@@ -170,7 +167,7 @@ impl App {
 
 /// A typed value for `param`, read as the command line reads numbers (so `1e999` is a
 /// number, out of range) and checked by [`Param::check`]; or why not, in one line.
-fn read_value(text: &str, param: Param, lambda_zeta: (f64, f64)) -> Result<f64, String> {
+fn read_value(text: &str, param: Param, params: &ImpactParams) -> Result<ImpactParams, String> {
     let kept = format!("; {} kept", param.symbol());
     let v = number(text).map_err(|e| {
         // a long text is not echoed: the reason stays readable
@@ -180,5 +177,5 @@ fn read_value(text: &str, param: Param, lambda_zeta: (f64, f64)) -> Result<f64, 
             format!("{e}{kept}")
         }
     })?;
-    param.check(v, lambda_zeta).map(|()| v)
+    param.check(v, params)
 }

