@@ -4,11 +4,14 @@
 //! line (8), the entry's cursor and the smaller items (10), stale sweeps dropped (11).
 
 use bouncelab::figure::Sample;
+use bouncelab::figure::explorer::MeasuredOverlay;
 use bouncelab::preset::Preset;
 use bouncelab::tui::action::{self, Action};
 use bouncelab::tui::app::{App, Overlay};
 use bouncelab::tui::param::{Dir, Param, V0_MIN};
 use bouncelab::tui::ui::Chart;
+use ratatui::Terminal;
+use ratatui::backend::TestBackend;
 use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
 use std::process::Command;
 
@@ -168,4 +171,81 @@ fn measured_marker_letters_never_collide() {
     let speed = bouncelab::tui::ui::figure(&app, Chart::CorSpeed);
     let mark = speed.series.iter().find(|s| s.id == "measured cor");
     assert_eq!(mark.and_then(|s| s.look.text.as_deref()), Some("SC"));
+}
+fn draw(app: &App, w: u16, h: u16) -> Terminal<TestBackend> {
+    let mut t = Terminal::new(TestBackend::new(w, h)).unwrap();
+    t.draw(|f| f.render_widget(app, f.area())).unwrap();
+    t
+}
+
+fn screen_text(t: &Terminal<TestBackend>) -> Vec<String> {
+    let buf = t.backend().buffer();
+    (0..buf.area.height)
+        .map(|y| {
+            (0..buf.area.width)
+                .map(|x| buf[(x, y)].symbol())
+                .collect::<String>()
+        })
+        .collect()
+}
+
+/// Defect 3: at 12 m/s the readout compares nothing with the peak force measured at 3.12 m/s
+/// and says where it was measured; at 0.01 m/s a force trace measured at 3.12 m/s neither
+/// draws on force–time nor stretches its force axis (the title says where the data is).
+#[test]
+fn measured_values_are_compared_and_drawn_only_at_their_speed() {
+    let mut app = superball();
+    assert_eq!(enter(&mut app, Param::V0, "12"), None);
+    let rows = screen_text(&draw(&app, 120, 40));
+    let text = rows.join("\n");
+    // the readout panel, its wrapped lines joined
+    let panel: Vec<String> = rows
+        .iter()
+        .map(|r| {
+            r.chars()
+                .skip(85)
+                .take(32)
+                .collect::<String>()
+                .trim()
+                .to_string()
+        })
+        .collect();
+    assert!(
+        panel
+            .join(" ")
+            .contains("measured at v0 = 3.12 m/s: not compared"),
+        "{text}"
+    );
+    assert!(
+        !text.contains("121.8"),
+        "F_m compared with 121.8 N at 12 m/s:\n{text}"
+    );
+    assert!(
+        !text.contains('%'),
+        "a difference at another speed:\n{text}"
+    );
+
+    let trace = MeasuredOverlay {
+        label: "drop.csv".into(),
+        chart: Chart::ForceTime,
+        points: vec![(0.0, 0.0), (1e-3, 125.0), (2e-3, 0.0)],
+        v0: Some(3.12),
+    };
+    let mut app = superball().with_measured(vec![trace]);
+    let at_312 = bouncelab::tui::ui::figure(&app, Chart::ForceTime);
+    assert!(at_312.series.iter().any(|s| s.id == "measured drop.csv"));
+    assert_eq!(enter(&mut app, Param::V0, "0.01"), None);
+    let fig = bouncelab::tui::ui::figure(&app, Chart::ForceTime);
+    assert!(fig.series.iter().all(|s| !s.id.starts_with("measured")));
+    let peak = app.run().unwrap().max_force;
+    let (_, top) = fig.data_extent(false).unwrap();
+    assert!(
+        top <= peak * (1.0 + 1e-12),
+        "axis stretched to {top} N, peak {peak} N"
+    );
+    assert!(
+        fig.screen_title.contains("data at 3.12 m/s"),
+        "{}",
+        fig.screen_title
+    );
 }

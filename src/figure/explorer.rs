@@ -77,6 +77,15 @@ pub struct MeasuredOverlay {
     pub label: String,
     pub chart: Chart,
     pub points: Vec<(f64, f64)>,
+    /// The impact speed it was measured at (m/s), for data of one impact (a force trace):
+    /// drawn only while the explorer runs at that speed. `None`: data across speeds.
+    pub v0: Option<f64>,
+}
+
+/// Whether `v0` is the speed `at` a measurement was taken: the tolerance of
+/// [`crate::ball::Ball::measured_at`].
+pub fn same_speed(at: f64, v0: f64) -> bool {
+    (at - v0).abs() <= 1e-9 * at
 }
 
 impl MeasuredOverlay {
@@ -89,19 +98,25 @@ impl MeasuredOverlay {
         v0: f64,
     ) -> Result<Vec<MeasuredOverlay>, crate::measured::MeasuredError> {
         use crate::measured::{Data, overlay};
-        let one = |chart, points| MeasuredOverlay {
+        let one = |chart, points, at| MeasuredOverlay {
             label: label.to_string(),
             chart,
             points,
+            v0: at,
         };
         Ok(match data {
             Data::Trace(t) => vec![
-                one(Chart::ForceTime, overlay::aligned(t)?),
-                one(Chart::Hysteresis, overlay::displacement(t, mass, v0)?),
+                one(Chart::ForceTime, overlay::aligned(t)?, Some(v0)),
+                one(
+                    Chart::Hysteresis,
+                    overlay::displacement(t, mass, v0)?,
+                    Some(v0),
+                ),
             ],
             _ => vec![one(
                 Chart::CorSpeed,
                 overlay::cor_points(data).unwrap_or_default(),
+                None,
             )],
         })
     }
@@ -159,8 +174,18 @@ pub fn figure(chart: Chart, scene: &Scene) -> Figure {
         Chart::CorZeta | Chart::ForceZeta => zeta_figure(chart, scene),
         Chart::CorSpeed => speed_figure(scene),
     };
+    let v0 = scene.ball.params.v0;
     for m in scene.measured.iter().filter(|m| m.chart == chart) {
-        fig.series.push(m.series());
+        match m.v0 {
+            // measured at another speed: neither drawn nor stretching the axes; said instead
+            Some(at) if !same_speed(at, v0) => {
+                let at = short(at, 4);
+                fig.screen_title.push_str(&format!(" · data at {at} m/s"));
+                fig.subtitle
+                    .push_str(&format!("; measured {} (at {at} m/s) not shown", m.label));
+            }
+            _ => fig.series.push(m.series()),
+        }
     }
     fig
 }

@@ -13,7 +13,7 @@ use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
 use ratatui::style::Style;
 use ratatui::text::{Line, Span};
-use ratatui::widgets::{Block, Paragraph, Widget};
+use ratatui::widgets::{Block, Paragraph, Widget, Wrap};
 
 /// Rows the tall panel needs, border included.
 pub const PANEL_HEIGHT: u16 = 22;
@@ -42,7 +42,11 @@ impl Widget for &Readout<'_> {
         } else {
             self.compact()
         };
-        Paragraph::new(lines).block(self.block()).render(area, buf);
+        // a long note (no rebound: …, measured at …) wraps rather than being cut
+        Paragraph::new(lines)
+            .block(self.block())
+            .wrap(Wrap { trim: false })
+            .render(area, buf);
     }
 }
 
@@ -54,10 +58,27 @@ struct Row {
     model_value: f64,
 }
 
-fn results(preset: &Preset, r: Option<&ImpactResponse>) -> Vec<Row> {
-    let m = &preset.measured;
+/// Whether the preset's measured values were taken at `v0`: only then are they compared.
+fn measured_here(preset: &Preset, v0: f64) -> bool {
+    crate::figure::explorer::same_speed(preset.measured.v0, v0)
+}
+
+/// The results against the preset's measured values; no measured values away from the speed
+/// they were taken at (a peak force at 3.12 m/s says nothing of one at 12 m/s).
+fn results(preset: &Preset, r: Option<&ImpactResponse>, v0: f64) -> Vec<Row> {
     let Some(r) = r else {
         return Vec::new();
+    };
+    let none = crate::preset::Measured {
+        cor: None,
+        max_force: None,
+        contact_time: None,
+        ..preset.measured.clone()
+    };
+    let m = if measured_here(preset, v0) {
+        &preset.measured
+    } else {
+        &none
     };
     let t_f = r.contact_time.map(|t| t * 1e3);
     vec![
@@ -173,7 +194,7 @@ impl Readout<'_> {
             ),
             theme.title(),
         )];
-        let rows = results(self.preset, self.run);
+        let rows = results(self.preset, self.run, self.setting.params.v0);
         if rows.is_empty() {
             lines.push(Line::styled(" no result", theme.error()));
         }
@@ -208,8 +229,13 @@ impl Readout<'_> {
         // only the speed it runs at: claim no measurement then
         let m = &self.preset.measured;
         if m.cor.is_some() || m.max_force.is_some() || m.contact_time.is_some() {
+            let elsewhere = if measured_here(self.preset, self.setting.params.v0) {
+                ""
+            } else {
+                ": not compared"
+            };
             lines.push(Line::styled(
-                format!(" measured at v0 = {} m/s", sig_trim(m.v0, 4)),
+                format!(" measured at v0 = {} m/s{elsewhere}", sig_trim(m.v0, 4)),
                 theme.dim(),
             ));
         }
@@ -253,7 +279,7 @@ impl Readout<'_> {
                 sig(s.params.damping, 3)
             )),
         ];
-        let rows = results(self.preset, self.run);
+        let rows = results(self.preset, self.run, self.setting.params.v0);
         let fmt = |row: &Row| {
             let name = row.name.split(' ').next().unwrap_or("");
             match row.measured {
