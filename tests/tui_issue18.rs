@@ -249,3 +249,76 @@ fn measured_values_are_compared_and_drawn_only_at_their_speed() {
         fig.screen_title
     );
 }
+
+/// Defect 8: a message has its own line(s) under the charts, wrapped at spaces, and leaves the
+/// header's title whole; the readout's long notes wrap too.
+#[test]
+fn messages_have_their_own_line_and_wrap() {
+    for (w, h) in [(120, 40), (80, 24), (60, 20)] {
+        let mut app = superball();
+        app.update(Action::Resize(w, h));
+        press(&mut app, &[KeyCode::Char('=')]);
+        press(&mut app, &chars("1e-16"));
+        press(&mut app, &[KeyCode::Enter]);
+        let msg = app.message().expect("the refusal's message").text.clone();
+        assert!(
+            w > 80 || msg.chars().count() > usize::from(w),
+            "a long message: {msg}"
+        );
+        let rows = screen_text(&draw(&app, w, h));
+        let title = " bouncelab · superball · linear law · view 1/2 impact";
+        assert_eq!(rows[0].trim_end(), title, "{w}×{h}");
+        let s = bouncelab::tui::ui::screen(&app, ratatui::layout::Rect::new(0, 0, w, h)).unwrap();
+        let shown: Vec<&str> = (s.message.y..s.message.bottom())
+            .map(|y| rows[usize::from(y)].trim())
+            .collect();
+        assert_eq!(shown.join(" "), msg, "{w}×{h}");
+        assert!(s.message.bottom() == s.status.y && s.message.y >= 1);
+    }
+    // the readout's note at λ = 0, ζ = 1000 (no rebound) wraps inside the panel
+    let mut app = superball();
+    assert_eq!(enter(&mut app, Param::Lambda, "0"), None);
+    assert_eq!(enter(&mut app, Param::Zeta, "1000"), None);
+    let rows = screen_text(&draw(&app, 120, 40));
+    let panel: Vec<String> = rows
+        .iter()
+        .map(|r| {
+            r.chars()
+                .skip(85)
+                .take(32)
+                .collect::<String>()
+                .trim()
+                .to_string()
+        })
+        .collect();
+    assert!(
+        panel
+            .join(" ")
+            .contains("no rebound: the ball sinks into the dashpot"),
+        "{}",
+        rows.join("\n")
+    );
+}
+
+/// Defect 10: at 80×24 the impact view puts two panes a row (force–time and force–
+/// displacement above, COR vs ζ and the readout below), so each chart is about half the width
+/// and keeps its legend and units (three charts and the panel in a row left 22 columns each).
+#[test]
+fn at_80x24_charts_take_half_the_width_and_keep_their_legends() {
+    let app = superball();
+    let area = ratatui::layout::Rect::new(0, 0, 80, 24);
+    let s = bouncelab::tui::ui::screen(&app, area).unwrap();
+    assert_eq!(s.charts.len(), 3);
+    for (chart, r) in &s.charts {
+        assert!(r.width >= 38, "{chart:?} is {} columns", r.width);
+    }
+    let rows = screen_text(&draw(&app, 80, 24));
+    let text = rows.join("\n");
+    for shown in ["━ model", "━ contact z", "━ ball α", "F [N] vs t [ms]"] {
+        assert!(text.contains(shown), "{shown} missing:\n{text}");
+    }
+    // the readout still shows every result
+    for shown in ["e 0.7506", "F_m 117.3", "t_f 2.743", "z_m 2.153"] {
+        assert!(text.contains(shown), "{shown} missing:\n{text}");
+    }
+}

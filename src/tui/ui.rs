@@ -9,7 +9,7 @@ use super::widgets::help::Help;
 use super::widgets::input::InputDialog;
 use super::widgets::plot::Plot;
 use super::widgets::readout::{self, Readout};
-use super::widgets::status::{Header, KeyHints};
+use super::widgets::status::{Header, KeyHints, MessageLine, message_lines};
 pub use crate::figure::explorer::Chart;
 use crate::figure::{Figure, explorer};
 use ratatui::buffer::Buffer;
@@ -30,6 +30,8 @@ pub fn figure(app: &App, chart: Chart) -> Figure {
 #[derive(Debug, Clone, PartialEq)]
 pub struct Screen {
     pub header: Rect,
+    /// The message line(s) above the key hints.
+    pub message: Rect,
     pub status: Rect,
     pub readout: Rect,
     /// Whether the readout is the tall side panel (or the compact strip).
@@ -42,9 +44,11 @@ pub fn screen(app: &App, area: Rect) -> Option<Screen> {
     if area.width < MIN_WIDTH || area.height < MIN_HEIGHT {
         return None;
     }
-    let [header, body, status] = Layout::vertical([
+    let message_rows = message_lines(app.message(), area.width).len() as u16;
+    let [header, body, message, status] = Layout::vertical([
         Constraint::Length(1),
         Constraint::Fill(1),
+        Constraint::Length(message_rows),
         Constraint::Length(1),
     ])
     .areas(area);
@@ -52,22 +56,33 @@ pub fn screen(app: &App, area: Rect) -> Option<Screen> {
     let (charts, readout) = if side_panel {
         let w = (area.width * 3 / 10).clamp(32, 40);
         let [c, r] = Layout::horizontal([Constraint::Fill(1), Constraint::Length(w)]).areas(body);
-        (c, r)
+        (
+            match app.view() {
+                View::Impact => impact_grid(c),
+                View::Sweeps => sweeps_grid(c),
+                View::Drop => Vec::new(),
+            },
+            r,
+        )
+    } else if app.view() == View::Impact {
+        narrow_impact_grid(body)
     } else {
         let [c, r] = Layout::vertical([
             Constraint::Fill(1),
             Constraint::Length(readout::COMPACT_HEIGHT),
         ])
         .areas(body);
-        (c, r)
-    };
-    let charts = match app.view() {
-        View::Impact => impact_grid(charts),
-        View::Sweeps => sweeps_grid(charts),
-        View::Drop => Vec::new(),
+        (
+            match app.view() {
+                View::Sweeps => sweeps_grid(c),
+                _ => Vec::new(),
+            },
+            r,
+        )
     };
     Some(Screen {
         header,
+        message,
         status,
         readout,
         side_panel,
@@ -93,6 +108,21 @@ fn impact_grid(area: Rect) -> Vec<(Chart, Rect)> {
             (Chart::CorZeta, cz),
         ]
     }
+}
+
+/// Without room for the side panel (80×24, 60×20): two panes a row, so each chart keeps half
+/// the width (its legend and units) — force–time and force–displacement above, COR vs ζ and
+/// the compact readout below — rather than three charts and the panel in a row.
+fn narrow_impact_grid(body: Rect) -> (Vec<(Chart, Rect)>, Rect) {
+    let [top, bottom] = Layout::vertical([Constraint::Fill(1); 2]).areas(body);
+    let [ft, fd] = Layout::horizontal([Constraint::Fill(1); 2]).areas(top);
+    let [cz, r] = Layout::horizontal([Constraint::Fill(1); 2]).areas(bottom);
+    let charts = vec![
+        (Chart::ForceTime, ft),
+        (Chart::Hysteresis, fd),
+        (Chart::CorZeta, cz),
+    ];
+    (charts, r)
 }
 
 /// Peak force vs ζ above COR vs speed; side by side when short.
@@ -156,10 +186,14 @@ impl Widget for &App {
             ball: &self.preset().name,
             law: self.setting().law,
             view: self.view(),
-            message: self.message(),
             theme,
         }
         .render(s.header, buf);
+        MessageLine {
+            message: self.message(),
+            theme,
+        }
+        .render(s.message, buf);
         KeyHints { theme }.render(s.status, buf);
         if self.view() == View::Drop {
             // the drop view takes the whole body (src/tui/widgets/drop.rs)
@@ -167,7 +201,7 @@ impl Widget for &App {
                 area.x,
                 s.header.bottom(),
                 area.width,
-                s.status.y - s.header.bottom(),
+                s.message.y - s.header.bottom(),
             );
             super::widgets::drop::render(self, body, buf);
         } else {

@@ -69,7 +69,7 @@ fn render(input: &Input, s: &Setting, theme: &Theme, area: Rect, buf: &mut Buffe
     ];
     // the reason is wrapped at spaces, never cut mid-word: the dialog grows for it
     let reason = match &input.error {
-        Some(e) => wrap(e, (w as usize).saturating_sub(3)),
+        Some(e) => crate::tui::format::wrap(e, (w as usize).saturating_sub(3)),
         None => vec![String::new()],
     };
     let h = (5 + reason.len() as u16).min(area.height);
@@ -100,22 +100,4 @@ fn tail(text: &str, room: usize) -> String {
     let keep = room.saturating_sub(1);
     let end: String = text.chars().skip(n - keep).collect();
     format!("…{end}")
-}
-
-/// `text` in lines of at most `width` characters, broken at spaces (a longer word alone).
-fn wrap(text: &str, width: usize) -> Vec<String> {
-    let mut lines = vec![String::new()];
-    for word in text.split(' ') {
-        let last = lines.last_mut().expect("one line at least");
-        let n = last.chars().count();
-        if n == 0 {
-            last.push_str(word);
-        } else if n + 1 + word.chars().count() <= width {
-            last.push(' ');
-            last.push_str(word);
-        } else {
-            lines.push(word.to_string());
-        }
-    }
-    lines
 }
