@@ -3,8 +3,8 @@
 //! (3), curves told apart without colour (4), unique marker letters (7), messages on their own
 //! line (8), the entry's cursor and the smaller items (10), stale sweeps dropped (11).
 
-use bouncelab::figure::Sample;
 use bouncelab::figure::explorer::MeasuredOverlay;
+use bouncelab::figure::{Sample, Style};
 use bouncelab::preset::Preset;
 use bouncelab::tui::action::{self, Action};
 use bouncelab::tui::app::{App, Overlay};
@@ -314,11 +314,78 @@ fn at_80x24_charts_take_half_the_width_and_keep_their_legends() {
     }
     let rows = screen_text(&draw(&app, 80, 24));
     let text = rows.join("\n");
-    for shown in ["━ model", "━ contact z", "━ ball α", "F [N] vs t [ms]"] {
+    for shown in ["━ model", "━ contact z", "╍ ball α", "F [N] vs t [ms]"] {
         assert!(text.contains(shown), "{shown} missing:\n{text}");
     }
     // the readout still shows every result
     for shown in ["e 0.7506", "F_m 117.3", "t_f 2.743", "z_m 2.153"] {
+        assert!(text.contains(shown), "{shown} missing:\n{text}");
+    }
+}
+
+/// Defect 11: a slow COR-vs-speed sweep shows a coarse curve early, marked as being refined;
+/// taking it does not cancel the sweep (no new request to the worker), and the finished curve
+/// replaces it.
+#[test]
+fn a_coarse_sweep_is_drawn_as_refining_until_the_whole_one_comes() {
+    use bouncelab::tui::app::Effect;
+    let mut app = superball().with_background_sweeps();
+    app.update(Action::NextView);
+    let req = app.speed_requests()[0].clone();
+    let mut coarse = Vec::new();
+    let whole = req.run_refining(|| true, |c| coarse.push(c)).unwrap();
+    let effects = app.update(Action::SpeedReady(req.clone(), Ok(coarse[0].clone())));
+    assert!(
+        !effects.iter().any(|e| matches!(e, Effect::Compute(_))),
+        "the sweep was asked again (or dropped)"
+    );
+    assert_eq!(app.speed_requests(), std::slice::from_ref(&req));
+    let fig = bouncelab::tui::ui::figure(&app, Chart::CorSpeed);
+    assert!(
+        fig.screen_title.ends_with(" · refining…"),
+        "{}",
+        fig.screen_title
+    );
+    let model = fig.series.iter().find(|s| s.id == "model").unwrap();
+    assert_eq!(model.points.len(), coarse[0].points.len());
+    app.update(Action::SpeedReady(req, whole));
+    assert!(app.speed_requests().is_empty());
+    let fig = bouncelab::tui::ui::figure(&app, Chart::CorSpeed);
+    assert!(!fig.screen_title.contains('…'), "{}", fig.screen_title);
+}
+
+/// Defect 4: without colour the λ = 0, 0.4, 1 and current curves differ in the figure (line
+/// style, a name at the curve's end) — the description the SVG export draws too — and so do
+/// contact z and ball α; the legend's samples differ as well.
+#[test]
+fn curves_are_told_apart_without_colour() {
+    let mut app = App::new(Preset::embedded().remove(0), false);
+    assert_eq!(enter(&mut app, Param::Lambda, "0.001"), None);
+    assert_eq!(enter(&mut app, Param::Zeta, "10"), None);
+    for chart in [Chart::CorZeta, Chart::ForceZeta] {
+        let fig = bouncelab::tui::ui::figure(&app, chart);
+        let curves: Vec<_> = fig
+            .series
+            .iter()
+            .filter(|s| s.id.starts_with("model lambda="))
+            .map(|s| (s.style, s.look.text.clone().expect("a name at the end")))
+            .collect();
+        assert_eq!(curves.len(), 4, "{curves:?}");
+        let mut names: Vec<&String> = curves.iter().map(|c| &c.1).collect();
+        names.dedup();
+        assert_eq!(names.len(), 4, "{curves:?}");
+        // the current λ solid, every fixed one not
+        let solid = curves.iter().filter(|c| c.0 == Style::Solid).count();
+        assert_eq!(solid, 1, "{curves:?}");
+        let samples: Vec<_> = fig.legend().into_iter().map(|e| e.sample).collect();
+        assert!(samples.contains(&Sample::Dashed) && samples.contains(&Sample::Dotted));
+    }
+    let fig = bouncelab::tui::ui::figure(&app, Chart::Hysteresis);
+    let style = |id: &str| fig.series.iter().find(|s| s.id == id).unwrap().style;
+    assert_ne!(style("model indentation"), style("model displacement"));
+    // and on a screen without colour: the names at the curves' ends, the dashed sample
+    let text = screen_text(&draw(&app, 120, 40)).join("\n");
+    for shown in ["λ=0.4", "now", "╍ λ=0", "┄ λ=0.4", "╍ ball α"] {
         assert!(text.contains(shown), "{shown} missing:\n{text}");
     }
 }

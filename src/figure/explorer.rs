@@ -58,6 +58,8 @@ pub struct SpeedSweep<'a> {
     pub v_flat: Option<f64>,
     /// The sweep runs over (0, v_max] (m/s).
     pub v_max: f64,
+    /// Some speeds only, more to come: the title says the curve is being refined.
+    pub refining: bool,
 }
 
 /// The pinned setting and its results, drawn dimmed behind the live ones.
@@ -316,14 +318,25 @@ fn zeta_figure(chart: Chart, scene: &Scene) -> Figure {
     };
     let mut fig = build(&rows, &scene.balls, ContactLaw::Linear);
     fig.x.range = Some((z_lo, z_hi));
-    if let Some(c) = &scene.zeta {
-        let id = format!("model lambda={}", short(c.lambda, 6));
-        if let Some(s) = fig.series.iter_mut().find(|s| s.id == id) {
-            s.look = Look::new(
-                Tone::Current,
-                Some(&format!("λ={} now", short(c.lambda, 4))),
-                None,
-            );
+    // told apart without colour (NO_COLOR, greyscale print): the current λ solid, the fixed
+    // ones dashed, dotted, dashed, each named at its right end
+    const REFERENCE_STYLES: [Style; 3] = [Style::Dashed, Style::Dotted, Style::Dashed];
+    let now = scene
+        .zeta
+        .as_ref()
+        .map(|c| format!("model lambda={}", short(c.lambda, 6)));
+    for s in fig
+        .series
+        .iter_mut()
+        .filter(|s| s.id.starts_with("model lambda="))
+    {
+        let lambda = s.look.key.clone().unwrap_or_default();
+        if Some(&s.id) == now.as_ref() {
+            s.style = Style::Solid;
+            s.look = Look::new(Tone::Current, Some(&format!("{lambda} now")), Some("now"));
+        } else if let Tone::Reference(i) = s.look.tone {
+            s.style = REFERENCE_STYLES[i % REFERENCE_STYLES.len()];
+            s.look.text = Some(lambda);
         }
     }
     add_pinned_zeta(&mut fig, scene, cor);
@@ -376,7 +389,9 @@ fn speed_figure(scene: &Scene) -> Figure {
     .fold(0.0, f64::max);
     let left = fig.x.range.map_or(0.0, |r| r.0);
     fig.x.range = Some((left, v_hi));
-    if scene.speed_pending.is_some() {
+    if scene.speed.is_some_and(|s| s.refining) {
+        fig.screen_title.push_str(" · refining…");
+    } else if scene.speed_pending.is_some() {
         fig.screen_title.push_str(" · updating…");
     }
     if let Some(p) = &scene.pinned

@@ -3,7 +3,7 @@
 //! label sits over the column where the curve's dot for its value lands. Pinned series are
 //! drawn dimmed behind the live ones; measured values and thresholds dotted; markers as text.
 
-use crate::figure::look::dotted;
+use crate::figure::look::{dashed, dotted};
 use crate::figure::ticks::{Room, ticks};
 use crate::figure::{Corner, Figure, Role, Sample, Series, Style as Stroke};
 use crate::tui::theme::Theme;
@@ -181,19 +181,19 @@ impl<'a> Plot<'a> {
             for pass_dotted in [true, false] {
                 for s in lines.iter().filter(|s| dotted(s) == pass_dotted) {
                     let color = self.color(s);
+                    if pass_dotted || dashed(s) {
+                        let coords = self.patterned(s, n, l);
+                        ctx.draw(&canvas::Points {
+                            coords: &coords,
+                            color,
+                        });
+                        continue;
+                    }
                     for w in self.drawn(s).windows(2) {
                         let (Some(a), Some(b)) = (w[0], w[1]) else {
                             continue;
                         };
-                        if pass_dotted {
-                            let coords = dots(a, b, n, l);
-                            ctx.draw(&canvas::Points {
-                                coords: &coords,
-                                color,
-                            });
-                        } else {
-                            ctx.draw(&canvas::Line::new(a.0, a.1, b.0, b.1, color));
-                        }
+                        ctx.draw(&canvas::Line::new(a.0, a.1, b.0, b.1, color));
                     }
                 }
             }
@@ -205,6 +205,35 @@ impl<'a> Plot<'a> {
             .paint(paint)
             .render(area, &mut scratch);
         scratch
+    }
+
+    /// The dots of a dotted (every third dot) or dashed (three dots on, three off) series, the
+    /// pattern running on across its points so short segments keep it. `n`: dots a dotted
+    /// line has over the plot's span.
+    fn patterned(&self, s: &Series, n: f64, l: &PlotLayout) -> Vec<(f64, f64)> {
+        let every = 3.0 * n;
+        let keep = |k: usize| {
+            if dashed(s) {
+                (k / 3).is_multiple_of(2)
+            } else {
+                k.is_multiple_of(3)
+            }
+        };
+        let mut out = Vec::new();
+        let mut k = 0;
+        for w in self.drawn(s).windows(2) {
+            let (Some(a), Some(b)) = (w[0], w[1]) else {
+                continue;
+            };
+            let pts = dots(a, b, every, l);
+            for p in &pts[..pts.len() - 1] {
+                if keep(k) {
+                    out.push(*p);
+                }
+                k += 1;
+            }
+        }
+        out
     }
 
     fn draw_series(&self, l: &PlotLayout, buf: &mut Buffer) {
@@ -228,28 +257,46 @@ impl<'a> Plot<'a> {
         }
     }
 
-    /// Line tags (a threshold's name, right of its last point), then markers; a marker whose
-    /// cell another took moves right, so both show.
+    /// Line tags (a threshold's name, a curve's λ) at the line's last point — right of it, or
+    /// ending left of it at the plot's edge, a row up or down when another tag is there — then
+    /// markers; a marker whose cell another took moves right, so both show.
     fn draw_marks(&self, l: &PlotLayout, buf: &mut Buffer) {
         let cell = |p: Option<(f64, f64)>| Some((l.col(p?.0)?, l.row(p?.1)?));
+        let mut tagged: Vec<(u16, u16, u16)> = Vec::new();
         for s in &self.figure.series {
             let (Stroke::Solid | Stroke::Dashed | Stroke::Dotted, Some(tag)) =
                 (s.style, &s.look.text)
             else {
                 continue;
             };
-            let top = self
-                .drawn(s)
+            let last = self.drawn(s).into_iter().flatten().next_back();
+            let Some((col, row)) = cell(last) else {
+                continue;
+            };
+            let w = tag.chars().count() as u16;
+            let x = if col + 1 + w <= l.plot.right() {
+                col + 1
+            } else {
+                col.saturating_sub(w).max(l.plot.x)
+            };
+            let free = |y: u16| {
+                !tagged
+                    .iter()
+                    .any(|&(ty, a, b)| ty == y && x < b && a < x + w)
+            };
+            let Some(y) = [0i32, -1, 1, -2, 2]
                 .into_iter()
-                .flatten()
-                .max_by(|a, b| a.1.total_cmp(&b.1));
-            if let Some((col, row)) = cell(top)
-                && col + 1 < l.plot.right()
-            {
-                let room = usize::from(l.plot.right() - col - 1);
-                let style = Style::default().fg(self.color(s));
-                buf.set_stringn(col + 1, row, tag, room, style);
-            }
+                .map(|d| i32::from(row) + d)
+                .filter(|&y| y >= i32::from(l.plot.y) && y < i32::from(l.plot.bottom()))
+                .map(|y| y as u16)
+                .find(|&y| free(y))
+            else {
+                continue;
+            };
+            let room = usize::from(l.plot.right() - x);
+            let style = Style::default().fg(self.color(s));
+            buf.set_stringn(x, y, tag, room, style);
+            tagged.push((y, x, x + w));
         }
         let mut taken: Vec<(u16, u16)> = Vec::new();
         for s in &self.figure.series {
@@ -282,6 +329,7 @@ impl<'a> Plot<'a> {
                 let sample = match e.sample {
                     Sample::Line => "━".to_string(),
                     Sample::Dotted => "┄".to_string(),
+                    Sample::Dashed => "╍".to_string(),
                     Sample::Marks(texts) => texts.join(" "),
                 };
                 Line::from(vec![
