@@ -19,6 +19,7 @@ pub mod csv;
 pub mod explorer;
 pub mod history;
 pub mod look;
+pub mod overlay;
 pub mod paper;
 pub mod peers;
 pub mod report;

@@ -9,3 +9,4 @@ pub mod input;
 pub mod plot;
 pub mod readout;
 pub mod status;
+pub mod strokes;

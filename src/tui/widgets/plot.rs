@@ -3,6 +3,7 @@
 //! label sits over the column where the curve's dot for its value lands. Pinned series are
 //! drawn dimmed behind the live ones; measured values and thresholds dotted; markers as text.
 
+use super::strokes::patterned;
 use crate::figure::look::{dashed, dotted};
 use crate::figure::ticks::{Room, ticks};
 use crate::figure::{Corner, Figure, Role, Sample, Series, Style as Stroke};
@@ -57,22 +58,6 @@ impl PlotLayout {
         let dot = ((hi - y) * (dots - 1.0) / (hi - lo)).round();
         (y >= lo && y <= hi).then(|| self.plot.y + (dot as u16) / 4)
     }
-}
-
-/// Points from `a` to `b` (plot units) for a dotted line: `n` over the whole span of the
-/// plot, as many in proportion over a shorter segment.
-fn dots(a: (f64, f64), b: (f64, f64), n: f64, l: &PlotLayout) -> Vec<(f64, f64)> {
-    let ([x0, x1], [y0, y1]) = (l.x.bounds, l.y.bounds);
-    let span = ((b.0 - a.0) / (x1 - x0))
-        .abs()
-        .max(((b.1 - a.1) / (y1 - y0)).abs());
-    let k = (n * span).ceil().max(1.0) as usize;
-    (0..=k)
-        .map(|i| {
-            let t = i as f64 / k as f64;
-            (a.0 + t * (b.0 - a.0), a.1 + t * (b.1 - a.1))
-        })
-        .collect()
 }
 
 impl<'a> Plot<'a> {
@@ -182,7 +167,8 @@ impl<'a> Plot<'a> {
                 for s in lines.iter().filter(|s| dotted(s) == pass_dotted) {
                     let color = self.color(s);
                     if pass_dotted || dashed(s) {
-                        let coords = self.patterned(s, n, l);
+                        let bounds = (l.x.bounds, l.y.bounds);
+                        let coords = patterned(&self.drawn(s), dashed(s), n, bounds);
                         ctx.draw(&canvas::Points {
                             coords: &coords,
                             color,
@@ -205,35 +191,6 @@ impl<'a> Plot<'a> {
             .paint(paint)
             .render(area, &mut scratch);
         scratch
-    }
-
-    /// The dots of a dotted (every third dot) or dashed (three dots on, three off) series, the
-    /// pattern running on across its points so short segments keep it. `n`: dots a dotted
-    /// line has over the plot's span.
-    fn patterned(&self, s: &Series, n: f64, l: &PlotLayout) -> Vec<(f64, f64)> {
-        let every = 3.0 * n;
-        let keep = |k: usize| {
-            if dashed(s) {
-                (k / 3).is_multiple_of(2)
-            } else {
-                k.is_multiple_of(3)
-            }
-        };
-        let mut out = Vec::new();
-        let mut k = 0;
-        for w in self.drawn(s).windows(2) {
-            let (Some(a), Some(b)) = (w[0], w[1]) else {
-                continue;
-            };
-            let pts = dots(a, b, every, l);
-            for p in &pts[..pts.len() - 1] {
-                if keep(k) {
-                    out.push(*p);
-                }
-                k += 1;
-            }
-        }
-        out
     }
 
     fn draw_series(&self, l: &PlotLayout, buf: &mut Buffer) {
