@@ -389,3 +389,51 @@ fn curves_are_told_apart_without_colour() {
         assert!(text.contains(shown), "{shown} missing:\n{text}");
     }
 }
+
+/// Defect 10: the entry's cursor moves with ← → Home End; typing, Backspace and Delete act at
+/// it (the value typed is the one taken).
+#[test]
+fn the_entry_cursor_moves_and_edits_in_place() {
+    let mut app = superball();
+    press(&mut app, &[KeyCode::Char('=')]);
+    press(&mut app, &chars("0.5"));
+    press(&mut app, &[KeyCode::Home, KeyCode::Char('1'), KeyCode::End]);
+    press(&mut app, &chars("9"));
+    press(
+        &mut app,
+        &[KeyCode::Left, KeyCode::Left, KeyCode::Backspace],
+    );
+    let text = |app: &App| match app.overlay() {
+        Overlay::Input(i) => (i.text.clone(), i.cursor),
+        other => panic!("no entry: {other:?}"),
+    };
+    // 0.5 → 10.5 (Home, 1) → 10.59 (End, 9) → 1059 (two left, Backspace took the '.')
+    assert_eq!(text(&app), ("1059".into(), 2));
+    press(&mut app, &[KeyCode::Delete]);
+    assert_eq!(text(&app), ("109".into(), 2));
+    press(&mut app, &[KeyCode::Right, KeyCode::Right, KeyCode::Right]);
+    assert_eq!(text(&app), ("109".into(), 3), "stops at the end");
+    press(&mut app, &[KeyCode::Home, KeyCode::Delete, KeyCode::Right]);
+    press(&mut app, &chars("."));
+    assert_eq!(text(&app), ("0.9".into(), 2));
+    // drawn with the cursor on the 9
+    let rows = screen_text(&draw(&app, 120, 40));
+    assert!(
+        rows.iter().any(|r| r.contains("λ = 0.9 ")),
+        "{}",
+        rows.join("\n")
+    );
+    press(&mut app, &[KeyCode::Enter]);
+    assert_eq!(app.setting().get(Param::Lambda), 0.9);
+}
+
+/// Defect 10: a second `P` with nothing pinned says so.
+#[test]
+fn unpinning_with_nothing_pinned_says_so() {
+    let mut app = superball();
+    press(&mut app, &chars("pP"));
+    assert_eq!(app.message().unwrap().text, "ghost cleared");
+    press(&mut app, &chars("P"));
+    let said = &app.message().expect("a message").text;
+    assert!(said.contains("nothing pinned"), "{said}");
+}

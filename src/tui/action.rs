@@ -2,6 +2,7 @@
 
 use super::compute::{SpeedCurve, SpeedRequest};
 use super::param::{Dir, Param};
+use super::state::CursorMove;
 use ratatui::crossterm::event::{Event, KeyCode, KeyEvent, KeyEventKind, KeyModifiers};
 use std::path::PathBuf;
 
@@ -31,6 +32,10 @@ pub enum Action {
     InputBackspace,
     /// Ctrl-U in the entry: clear it.
     InputClear,
+    /// Delete in the entry: the character under the cursor goes.
+    InputDelete,
+    /// ← → Home End in the entry.
+    InputCursor(super::state::CursorMove),
     InputSubmit,
     InputCancel,
     /// Load preset number `i` (0-based: superball, golf, baseball, then the start preset when
@@ -142,6 +147,11 @@ pub fn from_key(key: KeyEvent, mode: Mode) -> Option<Action> {
             KeyCode::Enter => Some(Action::InputSubmit),
             KeyCode::Esc => Some(Action::InputCancel),
             KeyCode::Backspace => Some(Action::InputBackspace),
+            KeyCode::Delete => Some(Action::InputDelete),
+            KeyCode::Left => Some(Action::InputCursor(CursorMove::Left)),
+            KeyCode::Right => Some(Action::InputCursor(CursorMove::Right)),
+            KeyCode::Home => Some(Action::InputCursor(CursorMove::Home)),
+            KeyCode::End => Some(Action::InputCursor(CursorMove::End)),
             KeyCode::Char(c) if !ctrl && !c.is_control() => Some(Action::InputChar(c)),
             _ => None,
         },

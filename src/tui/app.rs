@@ -235,6 +235,8 @@ impl App {
             | Action::InputChar(_)
             | Action::InputBackspace
             | Action::InputClear
+            | Action::InputDelete
+            | Action::InputCursor(_)
             | Action::InputSubmit
             | Action::InputCancel
             | Action::SavePreset
@@ -282,6 +284,7 @@ impl App {
             }
             Action::Pin => self.pin(),
             Action::Unpin if self.ghost.take().is_some() => self.info("ghost cleared".into()),
+            Action::Unpin => self.warn("nothing pinned: p pins the current curves".into()),
             Action::Undo => match self.undo.pop() {
                 Some(previous) => {
                     self.setting = previous;

@@ -20,14 +20,18 @@ impl App {
         match action {
             Action::OpenInput => self.open_input(Purpose::Value(self.selected), String::new()),
             Action::InputChar(c) => self.input_char(c),
-            Action::InputClear => {
+            Action::InputClear | Action::InputBackspace | Action::InputDelete => {
                 if let Overlay::Input(input) = &mut self.overlay {
-                    input.text.clear();
+                    match action {
+                        Action::InputClear => input.clear(),
+                        Action::InputBackspace => input.backspace(),
+                        _ => input.delete(),
+                    }
                 }
             }
-            Action::InputBackspace => {
+            Action::InputCursor(m) => {
                 if let Overlay::Input(input) = &mut self.overlay {
-                    input.text.pop();
+                    input.move_cursor(m);
                 }
             }
             Action::InputSubmit => return self.submit_input(),
@@ -49,17 +53,13 @@ impl App {
     }
 
     pub(super) fn open_input(&mut self, purpose: Purpose, text: String) {
-        self.overlay = Overlay::Input(Input {
-            purpose,
-            text,
-            error: None,
-        });
+        self.overlay = Overlay::Input(Input::new(purpose, text));
     }
 
     pub(super) fn input_char(&mut self, c: char) {
         if let Overlay::Input(input) = &mut self.overlay {
             if input.text.chars().count() < ENTRY_MAX {
-                input.text.push(c);
+                input.insert(c);
             } else {
                 input.error = Some(format!("the entry holds at most {ENTRY_MAX} characters"));
             }
