@@ -437,3 +437,28 @@ fn unpinning_with_nothing_pinned_says_so() {
     let said = &app.message().expect("a message").text;
     assert!(said.contains("nothing pinned"), "{said}");
 }
+
+/// Defect 10: COR against speed marks where the elastic–plastic law starts to flatten (it
+/// was drawn for the linear law only): between the sweep's last speed without a permanent
+/// indentation and its first with one.
+#[test]
+fn the_flattening_onset_is_marked_for_the_elastic_plastic_law() {
+    let mut app = superball();
+    press(&mut app, &chars("c"));
+    assert_eq!(app.setting().law.to_string(), "elastic-plastic");
+    press(&mut app, &[KeyCode::Tab]);
+    let fig = bouncelab::tui::ui::figure(&app, Chart::CorSpeed);
+    let onset = fig
+        .series
+        .iter()
+        .find(|s| s.id == "flattening_onset")
+        .expect("the flattening onset")
+        .points[0]
+        .0;
+    let curve = app.speed_curve().unwrap();
+    let below = curve.points.iter().filter(|p| p.v0 < onset);
+    let above = curve.points.iter().filter(|p| p.v0 > onset);
+    assert!(below.clone().count() > 0 && above.clone().count() > 0);
+    assert!(below.into_iter().all(|p| p.permanent_indentation == 0.0));
+    assert!(above.into_iter().all(|p| p.permanent_indentation > 0.0));
+}

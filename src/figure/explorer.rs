@@ -298,6 +298,15 @@ fn zeta_figure(chart: Chart, scene: &Scene) -> Figure {
     fig
 }
 
+/// Where a sweep starts to flatten: midway between its last speed without a permanent
+/// indentation and its first with one (to the sweep's spacing); `None` when it never does,
+/// or already does at its first speed.
+pub fn first_flattened(rows: &[VelocityPoint]) -> Option<f64> {
+    let i = rows.iter().position(|r| r.permanent_indentation > 0.0)?;
+    let before = rows.get(i.checked_sub(1)?)?;
+    Some(0.5 * (before.v0 + rows[i].v0))
+}
+
 /// Fig. 4 for the current ball, with the pinned sweep and this run; the axis reaches as far
 /// as the sweeps still out.
 fn speed_figure(scene: &Scene) -> Figure {
@@ -306,8 +315,13 @@ fn speed_figure(scene: &Scene) -> Figure {
         Some(s) => (s.points, s.v_flat),
         None => (&[][..], None),
     };
-    // the flattening onset is the linear law's; the other laws flatten elsewhere
-    let onset = onset.filter(|_| ball.law == ContactLaw::Linear);
+    // the onset computed for the sweep is the linear law's; the elastic–plastic law's is
+    // where its sweep first leaves a permanent indentation; Hertz never flattens
+    let onset = match ball.law {
+        ContactLaw::Linear => onset,
+        ContactLaw::ElasticPlastic => first_flattened(rows),
+        ContactLaw::Hertz => None,
+    };
     let mut fig = paper::cor_velocity(ball, rows, onset);
     // the ball's mark as on the ζ charts, where it must differ from the other balls'
     let names: Vec<&str> = scene.balls.iter().map(|b| b.name.as_str()).collect();
