@@ -462,3 +462,44 @@ fn the_flattening_onset_is_marked_for_the_elastic_plastic_law() {
     assert!(below.into_iter().all(|p| p.permanent_indentation == 0.0));
     assert!(above.into_iter().all(|p| p.permanent_indentation > 0.0));
 }
+
+/// The drawn cells of `fig` its legend covers in an area `w`×`h`: the plot drawn with and
+/// without a legend, compared.
+fn covered_by_legend(fig: &bouncelab::figure::Figure, w: u16, h: u16) -> Vec<(u16, u16)> {
+    use bouncelab::tui::theme::Theme;
+    use bouncelab::tui::widgets::plot::Plot;
+    use ratatui::widgets::Widget;
+    let area = ratatui::layout::Rect::new(0, 0, w, h);
+    let render = |f: &bouncelab::figure::Figure| {
+        let mut buf = ratatui::buffer::Buffer::empty(area);
+        Plot::new(f, Theme::new(false)).render(area, &mut buf);
+        buf
+    };
+    let mut bare = fig.clone();
+    for s in &mut bare.series {
+        s.look.key = None;
+    }
+    let (with, without) = (render(fig), render(&bare));
+    area.positions()
+        .filter(|&p| without[p].symbol() != " " && with[p].symbol() != without[p].symbol())
+        .map(|p| (p.x, p.y))
+        .collect()
+}
+
+/// Defect 10: legends go to the corner where they cover the fewest curve cells: COR vs ζ at
+/// λ = 0.001, ζ = 10 (the legend was over the "now" curve), force–time with the measured
+/// peak line (the legend was over it).
+#[test]
+fn legends_sit_where_the_curves_are_not() {
+    let mut app = superball();
+    assert_eq!(enter(&mut app, Param::Lambda, "0.001"), None);
+    assert_eq!(enter(&mut app, Param::Zeta, "10"), None);
+    let fig = bouncelab::tui::ui::figure(&app, Chart::CorZeta);
+    assert_eq!(covered_by_legend(&fig, 84, 20), []);
+    // force–time: the measured peak force runs along the plot's top row (y = 1); the legend
+    // leaves it whole (it was drawn top right, over it)
+    let fig = bouncelab::tui::ui::figure(&superball(), Chart::ForceTime);
+    assert!(fig.series.iter().any(|s| s.id == "measured max_force"));
+    let covered = covered_by_legend(&fig, 42, 18);
+    assert!(covered.iter().all(|&(_, y)| y != 1), "{covered:?}");
+}

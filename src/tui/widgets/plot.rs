@@ -303,11 +303,8 @@ impl<'a> Plot<'a> {
     fn draw_legend(&self, l: &PlotLayout, buf: &mut Buffer) {
         let legend = self.legend_lines();
         let p = l.plot;
-        let corner = self.figure.legend_corner;
-        let top = matches!(corner, Corner::TopLeft | Corner::TopRight);
-        let left = matches!(corner, Corner::TopLeft | Corner::BottomLeft);
         // bottom legends keep clear of the lowest row, where curves often run along zero
-        let room = p.height.saturating_sub(if top { 1 } else { 2 });
+        let room = p.height.saturating_sub(2);
         let width = legend.iter().map(Line::width).max().unwrap_or(0) as u16;
         // a legend may take half the plot's rows and half its width
         let fits = |rows: u16, w: u16| rows <= room && 2 * rows <= p.height && 2 * w <= p.width;
@@ -328,20 +325,32 @@ impl<'a> Plot<'a> {
             vec![one]
         };
         let width = lines.iter().map(Line::width).max().unwrap_or(0) as u16;
-        let x = if left { p.x + 1 } else { p.right() - width - 1 };
-        let y0 = if top {
-            p.y
-        } else {
-            p.bottom() - 1 - lines.len() as u16
+        let h = lines.len() as u16;
+        let place = |corner: Corner| {
+            let top = matches!(corner, Corner::TopLeft | Corner::TopRight);
+            let left = matches!(corner, Corner::TopLeft | Corner::BottomLeft);
+            let x = if left { p.x + 1 } else { p.right() - width - 1 };
+            let y0 = if top { p.y } else { p.bottom() - 1 - h };
+            (left, Rect::new(x - 1, y0, width + 2, h))
         };
+        // the corner where the legend covers the fewest drawn cells; the figure's on a tie
+        let covered = |r: Rect| r.positions().filter(|&q| buf[q].symbol() != " ").count();
+        let preferred = self.figure.legend_corner;
+        let corner = [
+            preferred,
+            Corner::TopRight,
+            Corner::TopLeft,
+            Corner::BottomRight,
+            Corner::BottomLeft,
+        ]
+        .into_iter()
+        .min_by_key(|&c| covered(place(c).1))
+        .unwrap_or(preferred);
+        let (left, r) = place(corner);
+        let x = r.x + 1;
         for (i, line) in lines.iter().enumerate() {
-            let y = y0 + i as u16;
-            buf.set_string(
-                x - 1,
-                y,
-                " ".repeat(usize::from(width + 2)),
-                Style::default(),
-            );
+            let y = r.y + i as u16;
+            buf.set_string(r.x, y, " ".repeat(usize::from(r.width)), Style::default());
             let w = line.width() as u16;
             buf.set_line(if left { x } else { x + width - w }, y, line, w);
         }
