@@ -503,3 +503,19 @@ fn legends_sit_where_the_curves_are_not() {
     let covered = covered_by_legend(&fig, 42, 18);
     assert!(covered.iter().all(|&(_, y)| y != 1), "{covered:?}");
 }
+
+/// Defect 10: the top of force–time's force axis is a labelled tick, at every size.
+#[test]
+fn the_top_of_the_force_axis_is_labelled() {
+    use bouncelab::tui::theme::Theme;
+    use bouncelab::tui::widgets::plot::Plot;
+    let fig = bouncelab::tui::ui::figure(&superball(), Chart::ForceTime);
+    for (w, h) in [(42, 18), (40, 11), (28, 8), (60, 30), (84, 20)] {
+        let plot = Plot::new(&fig, Theme::new(false));
+        let l = plot.layout(ratatui::layout::Rect::new(0, 0, w, h)).unwrap();
+        let top = l.y.ticks.last().unwrap();
+        assert_eq!(top.0, l.y.bounds[1], "{w}×{h}: {:?}", l.y);
+        assert!(!top.1.is_empty());
+        assert_eq!(l.row(top.0), Some(l.plot.y));
+    }
+}

@@ -66,8 +66,20 @@ impl<'a> Plot<'a> {
     }
 
     /// The x (`x: true`) or y axis with room for about `labels` tick labels.
+    /// A fitted linear y axis ends on a labelled tick: its top is raised to the next major
+    /// tick when the data's margin left it above the last one (force–time's top row had no
+    /// label).
     fn axis(&self, x: bool, labels: usize) -> Axis {
-        let t = ticks(self.figure, x, Room::Labels(labels));
+        let mut t = ticks(self.figure, x, Room::Labels(labels));
+        let fitted = if x { &self.figure.x } else { &self.figure.y };
+        if let (false, false, None, [.., a, b]) = (x, fitted.log, fitted.range, t.major.as_slice())
+        {
+            let next = b + (b - a);
+            if t.hi > b + 1e-9 * (b - a) && next.is_finite() {
+                t.major.push(next);
+                t.hi = next;
+            }
+        }
         Axis {
             bounds: [t.lo, t.hi],
             ticks: t.labels(),
