@@ -2,7 +2,6 @@
 
 use super::compute::{SpeedCurve, SpeedRequest};
 use super::param::{Dir, Param};
-use super::state::CursorMove;
 use ratatui::crossterm::event::{Event, KeyCode, KeyEvent, KeyEventKind, KeyModifiers};
 use std::path::PathBuf;
 
@@ -35,7 +34,7 @@ pub enum Action {
     /// Delete in the entry: the character under the cursor goes.
     InputDelete,
     /// ← → Home End in the entry.
-    InputCursor(super::state::CursorMove),
+    InputCursor(CursorMove),
     InputSubmit,
     InputCancel,
     /// Load preset number `i` (0-based: superball, golf, baseball, then the start preset when
@@ -228,6 +227,15 @@ fn normal(key: KeyEvent) -> Option<Action> {
         KeyCode::Char('b') => Some(Action::DropReplay),
         _ => None,
     }
+}
+
+/// Where ← → Home End move the entry's cursor.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum CursorMove {
+    Left,
+    Right,
+    Home,
+    End,
 }
 
 #[cfg(test)]

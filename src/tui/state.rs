@@ -1,6 +1,7 @@
 //! The pieces of the explorer's state: what the model runs on, the view, the overlays, the
 //! message line and the pinned ghost. The explorer's `App` owns them and changes them.
 
+pub use super::action::CursorMove;
 use super::compute::{SpeedCurve, ZetaCurve};
 use super::param::Param;
 use super::save::SaveRequest;
@@ -68,15 +69,6 @@ pub struct Input {
     pub error: Option<String>,
     /// Characters of `text` before the cursor (0 … its length).
     pub cursor: usize,
-}
-
-/// Where ← → Home End move the entry's cursor.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum CursorMove {
-    Left,
-    Right,
-    Home,
-    End,
 }
 
 impl Input {
