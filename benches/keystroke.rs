@@ -20,6 +20,11 @@
 //!
 //! Drawing includes building each chart's figure from the state (`crate::figure::explorer`),
 //! as the explorer does on every frame.
+//!
+//! The slowest corner (issue 18, defect 11): elastic–plastic law, λ = 0, ζ = 1000, sweeps
+//! view, `z` (`sweeps z worker e-p corner`): the UI thread's work per key; and the worker's
+//! COR-vs-speed sweep there (`corner_sweep`): until its first coarse curve (4 speeds, drawn
+//! as "refining…") and whole (40 speeds).
 
 use bouncelab::preset::Preset;
 use bouncelab::tui::action::Action;
@@ -50,6 +55,8 @@ struct Case {
     worker: bool,
     /// The preset's linear law, or the elastic–plastic one (`c` once: the adaptive solver).
     plastic: bool,
+    /// Start at λ = 0, ζ = 1000 (the ball sinks into the dashpot).
+    corner: bool,
 }
 
 impl fmt::Display for Case {
@@ -72,7 +79,8 @@ impl fmt::Display for Case {
             (View::Sweeps | View::Models, true) => " worker",
         };
         let law = if self.plastic { " e-p law" } else { "" };
-        write!(f, "{view} {key}{how}{law}")
+        let corner = if self.corner { " corner" } else { "" };
+        write!(f, "{view} {key}{how}{law}{corner}")
     }
 }
 
@@ -88,10 +96,16 @@ const fn case(view: View, param: Param, worker: bool, plastic: bool) -> Case {
         param,
         worker,
         plastic,
+        corner: false,
     }
 }
 
-const CASES: [Case; 9] = [
+const CORNER: Case = Case {
+    corner: true,
+    ..case(View::Sweeps, Param::Zeta, true, true)
+};
+
+const CASES: [Case; 10] = [
     case(View::Impact, Param::Lambda, false, false),
     case(View::Impact, Param::V0, false, false),
     case(View::Sweeps, Param::Lambda, false, false),
@@ -101,6 +115,7 @@ const CASES: [Case; 9] = [
     case(View::Impact, Param::Lambda, false, true),
     case(View::Sweeps, Param::Lambda, false, true),
     case(View::Models, Param::Lambda, true, false),
+    CORNER,
 ];
 
 /// The superball on the case's view, everything on screen up to date.
@@ -108,6 +123,11 @@ fn start(c: Case) -> App {
     let mut app = App::new(Preset::embedded().remove(0), true);
     if c.plastic {
         app.update(Action::CycleLaw);
+    }
+    if c.corner {
+        type_value(&mut app, "0");
+        app.update(Action::SelectNext);
+        type_value(&mut app, "1000");
     }
     if c.view == View::Sweeps {
         app.update(Action::NextView);
@@ -119,6 +139,28 @@ fn start(c: Case) -> App {
         app = app.with_background_sweeps();
     }
     app
+}
+
+/// Type `text` as the selected parameter's value.
+fn type_value(app: &mut App, text: &str) {
+    app.update(Action::OpenInput);
+    for ch in text.chars() {
+        app.update(Action::InputChar(ch));
+    }
+    app.update(Action::InputSubmit);
+}
+
+/// The worker's sweep at the corner: until its first coarse curve, or whole.
+#[divan::bench(args = ["first coarse curve", "whole"])]
+fn corner_sweep(b: Bencher, until: &str) {
+    let mut app = start(CORNER);
+    app.update(key(CORNER));
+    let request = app.speed_requests()[0].clone();
+    let first = until.starts_with("first");
+    b.bench_local(|| {
+        let stop = std::cell::Cell::new(false);
+        request.run_refining(|| !(first && stop.get()), |_| stop.set(true))
+    });
 }
 
 fn key(c: Case) -> Action {

@@ -153,10 +153,16 @@ fn the_load_error_is_on_screen_with_file_line_and_column() {
     let msg = measured::load(&bad).unwrap_err();
     app.update(Action::MeasuredFailed { msg });
     let shown = text(&screen(&app, 160, 40));
-    let first = shown.lines().next().unwrap();
+    let rows: Vec<&str> = shown.lines().collect();
+    // the message has its own line(s) above the key hints
+    let s = bouncelab::tui::ui::screen(&app, ratatui::layout::Rect::new(0, 0, 160, 40)).unwrap();
+    let line = (s.message.y..s.message.bottom())
+        .map(|y| rows[usize::from(y)].trim())
+        .collect::<Vec<_>>()
+        .join(" ");
     assert!(
-        first.contains("b.csv:2:3: force 'zero' is not a number"),
-        "{first}"
+        line.contains("b.csv:2:3: force 'zero' is not a number"),
+        "{line}"
     );
 }
 

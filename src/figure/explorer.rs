@@ -15,6 +15,8 @@ use crate::model::params::ImpactParams;
 use crate::solver::ImpactResponse;
 use crate::text::short;
 
+pub use super::overlay::{MeasuredOverlay, same_speed};
+
 /// Palette index of this run's marker: orange, which no model curve of these figures uses.
 const THIS_RUN_COLOR: usize = 4;
 
@@ -77,6 +79,8 @@ pub struct SpeedSweep<'a> {
     pub v_flat: Option<f64>,
     /// The sweep runs over (0, v_max] (m/s).
     pub v_max: f64,
+    /// Some speeds only, more to come: the title says the curve is being refined.
+    pub refining: bool,
 }
 
 /// A pinned setting and its results, drawn dimmed behind the live ones.
@@ -96,58 +100,6 @@ pub struct Pinned<'a> {
     pub zeta: Option<ZetaSweep<'a>>,
     /// Its COR-against-speed curve, once computed.
     pub speed: Option<SpeedSweep<'a>>,
-}
-
-/// Measured data on one chart (`bouncelab --measured FILE`), labelled by its file name;
-/// points in SI on the chart's axes ([`crate::measured::overlay`]).
-#[derive(Debug, Clone, PartialEq)]
-pub struct MeasuredOverlay {
-    /// The legend's label (the file's name).
-    pub label: String,
-    /// The chart the points belong on.
-    pub chart: Chart,
-    /// (x, y) in the chart's SI units.
-    pub points: Vec<(f64, f64)>,
-}
-
-impl MeasuredOverlay {
-    /// The charts `data` can be drawn on: a trace on force–time and (with the ball's `mass`
-    /// and `v0`) force–displacement, a COR table or drop test on COR against speed.
-    pub fn from_data(
-        data: &crate::measured::Data,
-        label: &str,
-        mass: f64,
-        v0: f64,
-    ) -> Result<Vec<MeasuredOverlay>, crate::measured::MeasuredError> {
-        use crate::measured::{Data, overlay};
-        let one = |chart, points| MeasuredOverlay {
-            label: label.to_string(),
-            chart,
-            points,
-        };
-        Ok(match data {
-            Data::Trace(t) => vec![
-                one(Chart::ForceTime, overlay::aligned(t)?),
-                one(Chart::Hysteresis, overlay::displacement(t, mass, v0)?),
-            ],
-            _ => vec![one(
-                Chart::CorSpeed,
-                overlay::cor_points(data).unwrap_or_default(),
-            )],
-        })
-    }
-
-    fn series(&self) -> Series {
-        Series::new(
-            &self.label,
-            &format!("measured {}", self.label),
-            Kind::Measured,
-            Style::Markers(Marker::Circle),
-            super::BLACK,
-        )
-        .with_points(self.points.clone())
-        .with_look(Look::new(Tone::Measured, Some(&self.label), Some("+")))
-    }
 }
 
 /// What the explorer shows: the results it holds and how they are to be drawn.
@@ -204,8 +156,18 @@ pub fn figure(chart: Chart, scene: &Scene) -> Figure {
         Chart::ModelsForceTime => super::models::force_time(scene),
         Chart::ModelsForceDisplacement => super::models::force_displacement(scene),
     };
+    let v0 = scene.ball.params.v0;
     for m in scene.measured.iter().filter(|m| m.chart == chart) {
-        fig.series.push(m.series());
+        match m.v0 {
+            // measured at another speed: neither drawn nor stretching the axes; said instead
+            Some(at) if !same_speed(at, v0) => {
+                let at = short(at, 4);
+                fig.screen_title.push_str(&format!(" · data at {at} m/s"));
+                fig.subtitle
+                    .push_str(&format!("; measured {} (at {at} m/s) not shown", m.label));
+            }
+            _ => fig.series.push(m.series()),
+        }
     }
     fig
 }
@@ -314,14 +276,25 @@ fn zeta_figure(chart: Chart, scene: &Scene) -> Figure {
     };
     let mut fig = build(&rows, &scene.balls, ContactLaw::Linear);
     fig.x.range = Some((z_lo, z_hi));
-    if let Some(c) = &scene.zeta {
-        let id = format!("model lambda={}", short(c.lambda, 6));
-        if let Some(s) = fig.series.iter_mut().find(|s| s.id == id) {
-            s.look = Look::new(
-                Tone::Current,
-                Some(&format!("λ={} now", short(c.lambda, 4))),
-                None,
-            );
+    // told apart without colour (NO_COLOR, greyscale print): the current λ solid, the fixed
+    // ones dashed, dotted, dashed, each named at its right end
+    const REFERENCE_STYLES: [Style; 3] = [Style::Dashed, Style::Dotted, Style::Dashed];
+    let now = scene
+        .zeta
+        .as_ref()
+        .map(|c| format!("model lambda={}", short(c.lambda, 6)));
+    for s in fig
+        .series
+        .iter_mut()
+        .filter(|s| s.id.starts_with("model lambda="))
+    {
+        let lambda = s.look.key.clone().unwrap_or_default();
+        if Some(&s.id) == now.as_ref() {
+            s.style = Style::Solid;
+            s.look = Look::new(Tone::Current, Some(&format!("{lambda} now")), Some("now"));
+        } else if let Tone::Reference(i) = s.look.tone {
+            s.style = REFERENCE_STYLES[i % REFERENCE_STYLES.len()];
+            s.look.text = Some(lambda);
         }
     }
     add_pinned_zeta(&mut fig, scene, cor);
@@ -341,6 +314,15 @@ fn zeta_figure(chart: Chart, scene: &Scene) -> Figure {
     fig
 }
 
+/// Where a sweep starts to flatten: midway between its last speed without a permanent
+/// indentation and its first with one (to the sweep's spacing); `None` when it never does,
+/// or already does at its first speed.
+pub fn first_flattened(rows: &[VelocityPoint]) -> Option<f64> {
+    let i = rows.iter().position(|r| r.permanent_indentation > 0.0)?;
+    let before = rows.get(i.checked_sub(1)?)?;
+    Some(0.5 * (before.v0 + rows[i].v0))
+}
+
 /// Fig. 4 for the current ball, with the pinned sweep and this run; the axis reaches as far
 /// as the sweeps still out.
 fn speed_figure(scene: &Scene) -> Figure {
@@ -349,9 +331,21 @@ fn speed_figure(scene: &Scene) -> Figure {
         Some(s) => (s.points, s.v_flat),
         None => (&[][..], None),
     };
-    // the flattening onset is the linear law's; the other laws flatten elsewhere
-    let onset = onset.filter(|_| ball.law == ContactLaw::Linear);
+    // the onset computed for the sweep is the linear law's; the elastic–plastic law's is
+    // where its sweep first leaves a permanent indentation; Hertz never flattens
+    let onset = match ball.law {
+        ContactLaw::Linear => onset,
+        ContactLaw::ElasticPlastic => first_flattened(rows),
+        ContactLaw::Hertz => None,
+    };
     let mut fig = paper::cor_velocity(ball, rows, onset);
+    // the ball's mark as on the ζ charts, where it must differ from the other balls'
+    let names: Vec<&str> = scene.balls.iter().map(|b| b.name.as_str()).collect();
+    if let Some(i) = names.iter().position(|n| *n == ball.name)
+        && let Some(s) = fig.series.iter_mut().find(|s| s.id == "measured cor")
+    {
+        s.look.text = Some(paper::initials(&names)[i].clone());
+    }
     let v_hi = [
         scene.speed.map(|s| s.v_max),
         scene.speed_pending,
@@ -363,7 +357,9 @@ fn speed_figure(scene: &Scene) -> Figure {
     .fold(0.0, f64::max);
     let left = fig.x.range.map_or(0.0, |r| r.0);
     fig.x.range = Some((left, v_hi));
-    if scene.speed_pending.is_some() {
+    if scene.speed.is_some_and(|s| s.refining) {
+        fig.screen_title.push_str(" · refining…");
+    } else if scene.speed_pending.is_some() {
         fig.screen_title.push_str(" · updating…");
     }
     for p in &scene.pinned {

@@ -83,8 +83,10 @@ pub enum Corner {
 pub enum Sample {
     /// A curve: "━".
     Line,
-    /// A measured value or threshold drawn dotted: "┄".
+    /// A measured value or threshold, or a curve drawn dotted: "┄".
     Dotted,
+    /// A curve drawn dashed: "╍".
+    Dashed,
     /// Markers: their texts, e.g. "◆", or "S G B" for the balls' letters (then the whole
     /// entry takes the tone).
     Marks(Vec<String>),
@@ -101,10 +103,20 @@ pub struct LegendEntry {
     pub key: String,
 }
 
-/// Whether a terminal draws the series as a dotted line: measured values and thresholds are
-/// dotted, curves solid.
+/// Whether a terminal draws the series as a dotted line: measured values and thresholds, and
+/// model curves the figure draws dotted.
 pub fn dotted(s: &Series) -> bool {
-    matches!(s.kind, Role::Measured | Role::Reference) && !matches!(s.style, Style::Markers(_))
+    match s.kind {
+        Role::Measured | Role::Reference => !matches!(s.style, Style::Markers(_)),
+        Role::Model => s.style == Style::Dotted,
+        Role::Pinned | Role::ThisRun => false,
+    }
+}
+
+/// Whether a terminal draws the series dashed: model curves the figure draws dashed, so that
+/// curves stay apart without colour (NO_COLOR), as in the SVG picture.
+pub fn dashed(s: &Series) -> bool {
+    s.kind == Role::Model && s.style == Style::Dashed
 }
 
 /// The legend of `series`: one entry per distinct (key, tone), in series order. Markers that
@@ -119,6 +131,7 @@ pub fn legend(series: &[Series]) -> Vec<LegendEntry> {
                 Sample::Marks(vec![s.look.text.clone().unwrap_or_else(|| "●".into())])
             }
             _ if dotted(s) => Sample::Dotted,
+            _ if dashed(s) => Sample::Dashed,
             _ => Sample::Line,
         };
         let same = out

@@ -21,6 +21,7 @@ pub mod explorer;
 pub mod history;
 pub mod look;
 pub mod models;
+pub mod overlay;
 pub mod paper;
 pub mod peers;
 pub mod report;

@@ -108,6 +108,8 @@ fn zeta_series(
             )),
         );
     }
+    let names: Vec<&str> = balls.iter().map(|b| b.name.as_str()).collect();
+    let letters = initials(&names);
     for (i, b) in balls.iter().enumerate() {
         let Some(value) = measured(b) else { continue };
         let n = b.params.normalized();
@@ -119,16 +121,17 @@ fn zeta_series(
             BLACK,
         )
         .with_points(vec![(n.zeta, value)])
-        .with_look(measured_look(&b.name));
+        .with_look(measured_look(&letters[i]));
         s.annotations = vec![b.name.clone()];
         series.push(s);
     }
     series
 }
 
-/// A ball's measured marker on screen: its initial, in the legend as "S G B measured".
-fn measured_look(name: &str) -> Look {
-    Look::new(Tone::Measured, Some("measured"), Some(&initial(name)))
+/// A ball's measured marker on screen, `letters` from [`initials`]: in the legend as
+/// "S G B measured".
+fn measured_look(letters: &str) -> Look {
+    Look::new(Tone::Measured, Some("measured"), Some(letters))
 }
 
 /// The letter that marks a ball's measured point on screen: its name's initial.
@@ -136,6 +139,30 @@ pub fn initial(name: &str) -> String {
     name.chars()
         .next()
         .map_or("?".into(), |c| c.to_uppercase().collect())
+}
+
+/// The marks of several balls' measured points on screen, one per name and no two alike: the
+/// initial when it is free ("S" superball), else the initials of the name's words ("SC"
+/// superball-custom, "TT" table-tennis), else its first two letters ("So" softball), else the
+/// initial and a number.
+pub fn initials(names: &[&str]) -> Vec<String> {
+    let mut out: Vec<String> = Vec::new();
+    for name in names {
+        let words: String = name
+            .split(|c: char| !c.is_alphanumeric())
+            .filter_map(|w| w.chars().next())
+            .flat_map(char::to_uppercase)
+            .collect();
+        let first_two: String = initial(name) + &name.chars().skip(1).take(1).collect::<String>();
+        let numbered = (2..).map(|k| format!("{}{k}", initial(name)));
+        let mark = [initial(name), words, first_two]
+            .into_iter()
+            .chain(numbered)
+            .find(|m| !m.is_empty() && !out.contains(m))
+            .unwrap_or_default();
+        out.push(mark);
+    }
+    out
 }
 
 /// The COR axis, 0 … 1 with a sliver below 0 so that a COR of 0 (no rebound) shows as a
@@ -274,7 +301,7 @@ pub fn cor_velocity(ball: &Ball, rows: &[VelocityPoint], onset: Option<f64>) -> 
             BLACK,
         )
         .with_points(vec![(v, e)])
-        .with_look(measured_look(&ball.name));
+        .with_look(measured_look(&initial(&ball.name)));
         s.annotations = vec![format!("e = {}", short(e, 3))];
         series.push(s);
     }

@@ -136,6 +136,11 @@ pub const ZP_BAR_MIN: f64 = 1e-15;
 
 /// Largest magnitude accepted for any parameter: beyond it products overflow or lose meaning.
 const ABSURD: f64 = 1e15;
+/// The physically meaningful range of a positive parameter (v0, m, K_p, …): 1e-15 … 1e15, the
+/// bounds [`check_positive`] holds. The explorer's v0 range is this one (`tui::param`).
+pub const MEANINGFUL_MIN: f64 = 1.0 / ABSURD;
+/// The upper end of that range (see [`MEANINGFUL_MIN`]).
+pub const MEANINGFUL_MAX: f64 = ABSURD;
 
 fn check(field: Field, value: f64, allow_zero: bool, allow_inf: bool) -> Result<(), ParamError> {
     let err = |reason| {

@@ -31,6 +31,10 @@ pub enum Action {
     InputBackspace,
     /// Ctrl-U in the entry: clear it.
     InputClear,
+    /// Delete in the entry: the character under the cursor goes.
+    InputDelete,
+    /// ← → Home End in the entry.
+    InputCursor(CursorMove),
     InputSubmit,
     InputCancel,
     /// Load preset number `i` (0-based: superball, golf, baseball, then the start preset when
@@ -196,6 +200,11 @@ pub fn from_key(key: KeyEvent, mode: Mode) -> Option<Action> {
             KeyCode::Enter => Some(Action::InputSubmit),
             KeyCode::Esc => Some(Action::InputCancel),
             KeyCode::Backspace => Some(Action::InputBackspace),
+            KeyCode::Delete => Some(Action::InputDelete),
+            KeyCode::Left => Some(Action::InputCursor(CursorMove::Left)),
+            KeyCode::Right => Some(Action::InputCursor(CursorMove::Right)),
+            KeyCode::Home => Some(Action::InputCursor(CursorMove::Home)),
+            KeyCode::End => Some(Action::InputCursor(CursorMove::End)),
             KeyCode::Char(c) if !ctrl && !c.is_control() => Some(Action::InputChar(c)),
             _ => None,
         },
@@ -319,6 +328,15 @@ fn normal(key: KeyEvent) -> Option<Action> {
         KeyCode::Char('F') => Some(Action::ApplyFit),
         _ => None,
     }
+}
+
+/// Where ← → Home End move the entry's cursor.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum CursorMove {
+    Left,
+    Right,
+    Home,
+    End,
 }
 
 #[cfg(test)]

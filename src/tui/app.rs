@@ -287,6 +287,8 @@ impl App {
             | Action::InputChar(_)
             | Action::InputBackspace
             | Action::InputClear
+            | Action::InputDelete
+            | Action::InputCursor(_)
             | Action::InputSubmit
             | Action::InputCancel
             | Action::SavePreset
@@ -310,12 +312,12 @@ impl App {
             Action::Step { param, dir, coarse } => {
                 self.selected = param;
                 let value = param.step(self.setting.get(param), dir, coarse || self.coarse);
-                self.set_param(param, value);
+                self.step_param(param, value);
             }
             Action::StepSelected { dir, coarse } => {
                 let param = self.selected;
                 let value = param.step(self.setting.get(param), dir, coarse || self.coarse);
-                self.set_param(param, value);
+                self.step_param(param, value);
             }
             Action::SelectNext => self.selected = self.selected.next(),
             Action::SelectPrev => self.selected = self.selected.prev(),

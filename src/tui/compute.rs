@@ -43,7 +43,29 @@ pub struct SpeedRequest {
 #[derive(Debug, Clone, PartialEq)]
 pub struct SpeedCurve {
     pub request: SpeedRequest,
+    /// In order of speed.
     pub points: Vec<VelocityPoint>,
+    /// Some of the speeds only: the sweep is still being refined ([`SpeedRequest::run_refining`]).
+    pub refining: bool,
+}
+
+/// The sweep's speeds (indices into [`SpeedRequest::speeds`]) in the order they are computed:
+/// the ends and every 13th first (4 points: the curve's shape), then every 6th, every 3rd, and
+/// the rest — each group a coarse curve the next refines. Every index once.
+pub fn refinement_levels(n: usize) -> Vec<Vec<usize>> {
+    let mut done = vec![false; n];
+    let mut levels = Vec::new();
+    for stride in [13, 6, 3, 1] {
+        let mut level: Vec<usize> = (0..n).step_by(stride).collect();
+        if stride > 1 && n > 0 {
+            level.push(n - 1);
+        }
+        level.retain(|&i| !std::mem::replace(&mut done[i], true));
+        if !level.is_empty() {
+            levels.push(level);
+        }
+    }
+    levels
 }
 
 /// One impact with its history and energy budget (the budget `run` prints: the same solver
@@ -140,22 +162,42 @@ impl SpeedRequest {
     }
 
     /// The sweep one speed at a time, asking `go_on` before each; `None` when it said stop.
-    /// (Some corners — λ ≈ 0, ζ ≫ 1 with a nonlinear law — take seconds a point.)
-    pub fn run_while(&self, mut go_on: impl FnMut() -> bool) -> Option<Result<SpeedCurve, String>> {
-        let mut points = Vec::with_capacity(SPEED_POINTS);
-        for v in self.speeds() {
-            if !go_on() {
-                return None;
+    /// (Some corners — λ ≈ 0, ζ ≫ 1 with a nonlinear law — take tens of ms a point.)
+    pub fn run_while(&self, go_on: impl FnMut() -> bool) -> Option<Result<SpeedCurve, String>> {
+        self.run_refining(go_on, |_| {})
+    }
+
+    /// [`SpeedRequest::run_while`], coarse to fine ([`refinement_levels`]): after each level
+    /// but the last, `partial` gets the curve so far (`refining: true`), so a slow sweep shows
+    /// its shape early. The finished curve is the same as computing the speeds in order.
+    pub fn run_refining(
+        &self,
+        mut go_on: impl FnMut() -> bool,
+        mut partial: impl FnMut(SpeedCurve),
+    ) -> Option<Result<SpeedCurve, String>> {
+        let speeds = self.speeds();
+        let mut found: Vec<Option<VelocityPoint>> = vec![None; speeds.len()];
+        let levels = refinement_levels(speeds.len());
+        let curve = |found: &[Option<VelocityPoint>], refining| SpeedCurve {
+            request: self.clone(),
+            points: found.iter().flatten().cloned().collect(),
+            refining,
+        };
+        for (k, level) in levels.iter().enumerate() {
+            for &i in level {
+                if !go_on() {
+                    return None;
+                }
+                match cor_vs_velocity(&self.params, self.law, &[speeds[i]]) {
+                    Ok(p) => found[i] = p.into_iter().next(),
+                    Err(e) => return Some(Err(e.to_string())),
+                }
             }
-            match cor_vs_velocity(&self.params, self.law, &[v]) {
-                Ok(p) => points.extend(p),
-                Err(e) => return Some(Err(e.to_string())),
+            if k + 1 < levels.len() {
+                partial(curve(&found, true));
             }
         }
-        Some(Ok(SpeedCurve {
-            request: self.clone(),
-            points,
-        }))
+        Some(Ok(curve(&found, false)))
     }
 }
 
@@ -214,6 +256,36 @@ mod tests {
                     req
                 );
             }
+        }
+    }
+
+    #[test]
+    fn refinement_covers_every_speed_once_coarse_first() {
+        let levels = refinement_levels(SPEED_POINTS);
+        assert_eq!(levels[0], [0, 13, 26, 39]);
+        let mut all: Vec<usize> = levels.concat();
+        all.sort_unstable();
+        assert_eq!(all, (0..SPEED_POINTS).collect::<Vec<_>>());
+    }
+
+    #[test]
+    fn a_refined_sweep_shows_coarse_curves_then_the_whole_one() {
+        let p = Preset::embedded()[0].params();
+        let req = SpeedRequest::new(&p, ContactLaw::Linear, 3.12);
+        let mut partials = Vec::new();
+        let done = req
+            .run_refining(|| true, |c| partials.push(c))
+            .unwrap()
+            .unwrap();
+        assert_eq!(done, req.run().unwrap());
+        assert!(!done.refining && done.points.len() == SPEED_POINTS);
+        assert_eq!(partials.len(), refinement_levels(SPEED_POINTS).len() - 1);
+        assert_eq!(partials[0].points.len(), 4);
+        for c in &partials {
+            assert!(c.refining);
+            // in order of speed, each point one of the finished curve's
+            assert!(c.points.windows(2).all(|w| w[0].v0 < w[1].v0));
+            assert!(c.points.iter().all(|q| done.points.contains(q)));
         }
     }
 

@@ -2,7 +2,7 @@
 //! `update` needs to stop the help's scrolling at its end.
 
 /// (keys, what they do); a row without text is a section heading.
-pub const KEYS: [(&str, &str); 44] = [
+pub const KEYS: [(&str, &str); 45] = [
     ("l / L", "λ up / down (±0.01, coarse ±0.1)"),
     ("z / Z", "ζ up / down (×1.1, coarse ×2)"),
     ("v / V", "v0 up / down (±0.1, coarse ±1 m/s)"),
@@ -45,7 +45,8 @@ pub const KEYS: [(&str, &str); 44] = [
     ("", ""),
     ("In the value or name entry", ""),
     ("Enter / Esc", "accept / cancel"),
-    ("Backspace", "delete a character"),
+    ("← → Home End", "move the cursor"),
+    ("Backspace / Del", "delete before / at the cursor"),
     ("Ctrl-U", "clear the entry"),
     ("", ""),
     ("At \"overwrite …? y/n\"", ""),

@@ -13,6 +13,8 @@ pub const SIDE_PANEL_WIDTH: u16 = 80;
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Body {
     pub header: Rect,
+    /// The message line(s) above the key hints (no rows without a message).
+    pub message: Rect,
     pub status: Rect,
     pub readout: Rect,
     /// Whether the readout is the tall side panel (or the compact strip).
@@ -23,14 +25,16 @@ pub struct Body {
 
 /// The parts for `area`, or `None` below the minimum size; `side` puts the readout beside the
 /// charts whatever the size (the models view's table), `compact` is the readout strip's
-/// height when it is not beside them (`readout::compact_height`).
-pub fn body(area: Rect, side: bool, compact: u16) -> Option<Body> {
+/// height when it is not beside them (`readout::compact_height`), `message` the rows of the
+/// message above the key hints (`status::message_lines`).
+pub fn body(area: Rect, side: bool, compact: u16, message: u16) -> Option<Body> {
     if area.width < MIN_WIDTH || area.height < MIN_HEIGHT {
         return None;
     }
-    let [header, body, status] = Layout::vertical([
+    let [header, body, message, status] = Layout::vertical([
         Constraint::Length(1),
         Constraint::Fill(1),
+        Constraint::Length(message),
         Constraint::Length(1),
     ])
     .areas(area);
@@ -47,6 +51,7 @@ pub fn body(area: Rect, side: bool, compact: u16) -> Option<Body> {
     };
     Some(Body {
         header,
+        message,
         status,
         readout,
         side_panel,

@@ -124,11 +124,15 @@ pub fn geometry(area: Rect) -> Option<Geometry> {
 
 /// (λ rows, ζ columns) of the grid for a terminal of `size` (`None`: not known yet), drawn
 /// with colour (two rows per character) or without, with `pins` runs pinned (the compact
-/// readout grows with them).
+/// readout grows with them). A message of more than one row is left out: while one shows, the
+/// map is drawn a row or two shorter, each row of the plot the nearest λ of the grid
+/// (`widgets::map`).
 pub fn grid(size: Option<(u16, u16)>, color: bool, pins: usize) -> Option<(usize, usize)> {
     let (w, h) = size.unwrap_or(DEFAULT_SIZE);
     let compact = super::widgets::readout::compact_height(pins);
-    let g = geometry(layout::body(Rect::new(0, 0, w, h), false, compact)?.charts)?;
+    // the message row kept when there is no message; a longer message shortens the drawing
+    let quiet = super::widgets::status::message_lines(None, w).len() as u16;
+    let g = geometry(layout::body(Rect::new(0, 0, w, h), false, compact, quiet)?.charts)?;
     let per_char = if color { 2 } else { 1 };
     Some((
         usize::from(g.plot.height) * per_char,

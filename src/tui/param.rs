@@ -1,8 +1,10 @@
-//! The three parameters the explorer changes live (λ, ζ, v0): their ranges, steps and clamping.
-//! Everything else about the ball comes from the preset.
+//! The three parameters the explorer changes live (λ, ζ, v0): their ranges, steps and checks.
+//! Everything else about the ball comes from the preset. The ranges and the checks are the
+//! command line's (`bouncelab run --lambda/--zeta/--v0`): the library's constants and its
+//! `api::set_lambda_zeta` / `ImpactParams::validate`, so a value one takes the other takes.
 
-use crate::model::params::{Field, ImpactParams, check_positive, validate_lambda_zeta};
-use crate::text::sig_trim;
+use crate::model::params::{ImpactParams, LAMBDA_MAX, MEANINGFUL_MAX, MEANINGFUL_MIN, ZETA_MAX};
+use crate::text::{short, sig_trim};
 
 /// A live parameter.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -22,8 +24,8 @@ pub enum Dir {
     Down,
 }
 
-/// Smallest impact speed the explorer accepts (m/s): v0 must be positive.
-pub const V0_MIN: f64 = 0.01;
+/// Smallest impact speed the explorer accepts (m/s), as `run --v0`: the meaningful minimum.
+pub const V0_MIN: f64 = MEANINGFUL_MIN;
 
 impl Param {
     pub const ALL: [Param; 3] = [Param::Lambda, Param::Zeta, Param::V0];
@@ -43,19 +45,21 @@ impl Param {
         }
     }
 
-    /// Accepted closed range [lo, hi].
+    /// The closed range [lo, hi] `run` accepts (λ, ζ: 0 … 1e6; v0: 1e-15 … 1e15 m/s). Inside
+    /// it [`Param::check`] may still refuse a value: a ζ in (0, 1e-15), or a v0 that makes
+    /// z̄_p = z_p ω0/v0 too small, as `run` does.
     pub fn range(self) -> (f64, f64) {
         match self {
-            Param::Lambda => (0.0, 1e3),
-            Param::Zeta => (1e-3, 1e3),
-            Param::V0 => (V0_MIN, 100.0),
+            Param::Lambda => (0.0, LAMBDA_MAX),
+            Param::Zeta => (0.0, ZETA_MAX),
+            Param::V0 => (V0_MIN, MEANINGFUL_MAX),
         }
     }
 
-    /// The range as users read it, e.g. "0.001 … 1000".
+    /// The range as users read it, e.g. "0 … 1e6".
     pub fn range_text(self) -> String {
         let (lo, hi) = self.range();
-        format!("{lo} … {hi}{}", self.unit())
+        format!("{} … {}{}", short(lo, 4), short(hi, 4), self.unit())
     }
 
     /// One step from `value`: λ ±0.01 / ±0.1, ζ ×÷1.1 / ×÷2 (log scale), v0 ±0.1 / ±1 m/s.
@@ -72,7 +76,7 @@ impl Param {
         }
     }
 
-    /// `value` brought into range; `None` for a value that is not a finite number.
+    /// `value` brought into [`Param::range`]; `None` for a value that is not a finite number.
     /// The flag tells whether it had to move.
     pub fn clamp(self, value: f64) -> Option<(f64, bool)> {
         if !value.is_finite() {
@@ -83,11 +87,12 @@ impl Param {
         Some((v, v != value))
     }
 
-    /// Whether a typed `value` may be used, with the current λ and ζ (`lambda_zeta`): in the
-    /// explorer's range, and valid for `run` too (`validate_lambda_zeta`, `check_positive`:
-    /// the command line's own checks). Refused, never clamped: the reason names the range.
-    pub fn check(self, value: f64, (lambda, zeta): (f64, f64)) -> Result<(), String> {
+    /// `params` with this parameter set to `value`, if `run` takes it: checked by the command
+    /// line's own path (`api::set_lambda_zeta` for λ and ζ, `ImpactParams::validate` for v0,
+    /// as `run --v0`). Refused, never clamped: the reason names the range.
+    pub fn check(self, value: f64, params: &ImpactParams) -> Result<ImpactParams, String> {
         let (lo, hi) = self.range();
+        let kept = format!("{} kept", self.symbol());
         if !(lo..=hi).contains(&value) {
             let shown = if value.is_finite() {
                 sig_trim(value, 6)
@@ -95,17 +100,22 @@ impl Param {
                 "that".into()
             };
             return Err(format!(
-                "{shown} is out of range {}; {} kept",
-                self.range_text(),
-                self.symbol()
+                "{shown} is out of range {}; {kept}",
+                self.range_text()
             ));
         }
+        let mut next = *params;
         let valid = match self {
-            Param::Lambda => validate_lambda_zeta(value, zeta),
-            Param::Zeta => validate_lambda_zeta(lambda, value),
-            Param::V0 => check_positive(Field::V0, value),
+            Param::Lambda => crate::api::set_lambda_zeta(&mut next, Some(value), None),
+            Param::Zeta => crate::api::set_lambda_zeta(&mut next, None, Some(value)),
+            Param::V0 => {
+                next.v0 = value;
+                next.validate().map_err(Into::into)
+            }
         };
-        valid.map_err(|e| format!("{e}; {} kept", self.symbol()))
+        valid
+            .map(|()| next)
+            .map_err(|e| format!("{e}; {kept} (range {})", self.range_text()))
     }
 
     /// The parameter's value in `params`.
@@ -156,7 +166,7 @@ mod tests {
     #[test]
     fn clamp_reports_movement_and_refuses_non_numbers() {
         assert_eq!(Param::Lambda.clamp(-0.01), Some((0.0, true)));
-        assert_eq!(Param::Zeta.clamp(5e3), Some((1e3, true)));
+        assert_eq!(Param::Zeta.clamp(5e6), Some((ZETA_MAX, true)));
         assert_eq!(Param::V0.clamp(0.0), Some((V0_MIN, true)));
         assert_eq!(Param::V0.clamp(3.0), Some((3.0, false)));
         assert_eq!(Param::Zeta.clamp(f64::NAN), None);

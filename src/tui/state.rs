@@ -1,6 +1,7 @@
 //! The pieces of the explorer's state: what the model runs on, the view, the overlays, the
 //! message line and the pinned runs. The explorer's `App` owns them and changes them.
 
+pub use super::action::CursorMove;
 use super::compute::{SpeedCurve, ZetaCurve};
 use super::param::Param;
 use super::save::SaveRequest;
@@ -97,6 +98,68 @@ pub struct Input {
     pub text: String,
     /// Why the last entry was refused.
     pub error: Option<String>,
+    /// Characters of `text` before the cursor (0 … its length).
+    pub cursor: usize,
+}
+
+impl Input {
+    /// A dialog holding `text`, the cursor at its end.
+    pub fn new(purpose: Purpose, text: String) -> Input {
+        let cursor = text.chars().count();
+        Input {
+            purpose,
+            text,
+            error: None,
+            cursor,
+        }
+    }
+
+    /// Byte offset of the `i`-th character (the end for `i` past it).
+    fn at(&self, i: usize) -> usize {
+        self.text
+            .char_indices()
+            .nth(i)
+            .map_or(self.text.len(), |(b, _)| b)
+    }
+
+    /// Type `c` at the cursor.
+    pub fn insert(&mut self, c: char) {
+        let b = self.at(self.cursor);
+        self.text.insert(b, c);
+        self.cursor += 1;
+    }
+
+    /// Backspace: the character before the cursor goes.
+    pub fn backspace(&mut self) {
+        if self.cursor > 0 {
+            self.cursor -= 1;
+            let b = self.at(self.cursor);
+            self.text.remove(b);
+        }
+    }
+
+    /// Delete: the character under the cursor goes.
+    pub fn delete(&mut self) {
+        if self.cursor < self.text.chars().count() {
+            let b = self.at(self.cursor);
+            self.text.remove(b);
+        }
+    }
+
+    pub fn clear(&mut self) {
+        self.text.clear();
+        self.cursor = 0;
+    }
+
+    pub fn move_cursor(&mut self, m: CursorMove) {
+        let n = self.text.chars().count();
+        self.cursor = match m {
+            CursorMove::Left => self.cursor.saturating_sub(1),
+            CursorMove::Right => (self.cursor + 1).min(n),
+            CursorMove::Home => 0,
+            CursorMove::End => n,
+        };
+    }
 }
 
 /// The question before a preset file is replaced: the save waits for `y` or `n`.

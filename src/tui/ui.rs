@@ -16,7 +16,7 @@ use super::widgets::picker::PickerBox;
 use super::widgets::pins::PinView;
 use super::widgets::plot::Plot;
 use super::widgets::readout::{self, Readout};
-use super::widgets::status::{Header, KeyHints};
+use super::widgets::status::{Header, KeyHints, MessageLine, message_lines};
 pub use crate::figure::explorer::Chart;
 use crate::figure::{Figure, explorer};
 use ratatui::buffer::Buffer;
@@ -35,6 +35,8 @@ pub fn figure(app: &App, chart: Chart) -> Figure {
 #[derive(Debug, Clone, PartialEq)]
 pub struct Screen {
     pub header: Rect,
+    /// The message line(s) above the key hints.
+    pub message: Rect,
     pub status: Rect,
     pub readout: Rect,
     /// Whether the readout is the tall side panel (or the compact strip).
@@ -49,20 +51,30 @@ pub struct Screen {
 /// Where everything goes, or `None` when the area is too small to use.
 pub fn screen(app: &App, area: Rect) -> Option<Screen> {
     // the models view's table always goes beside its charts; the compact readout grows a line
-    // for the pins' table
+    // for the pins' table; messages take their own rows above the key hints
     let compact = readout::compact_height(app.pins().len());
-    let b = super::layout::body(area, app.view() == View::Models, compact)?;
-    let (charts, fit) = split_fit(app, b.charts);
-    let charts = match app.view() {
-        View::Impact => impact_grid(charts),
-        View::Sweeps => sweeps_grid(charts),
-        View::Models => models_grid(charts),
-        View::Drop | View::Map => Vec::new(),
+    let message_rows = message_lines(app.message(), area.width).len() as u16;
+    let b = super::layout::body(area, app.view() == View::Models, compact, message_rows)?;
+    let (charts, readout, fit) = if !b.side_panel && app.view() == View::Impact {
+        // narrow: two panes a row, the readout the fourth (legends and units keep their room)
+        let (body, fit) = split_fit(app, b.charts.union(b.readout));
+        let (charts, readout) = narrow_impact_grid(body);
+        (charts, readout, fit)
+    } else {
+        let (charts, fit) = split_fit(app, b.charts);
+        let charts = match app.view() {
+            View::Impact => impact_grid(charts),
+            View::Sweeps => sweeps_grid(charts),
+            View::Models => models_grid(charts),
+            View::Drop | View::Map => Vec::new(),
+        };
+        (charts, b.readout, fit)
     };
     Some(Screen {
         header: b.header,
+        message: b.message,
         status: b.status,
-        readout: b.readout,
+        readout,
         side_panel: b.side_panel,
         charts,
         fit,
@@ -111,6 +123,21 @@ fn impact_grid(area: Rect) -> Vec<(Chart, Rect)> {
             (Chart::CorZeta, cz),
         ]
     }
+}
+
+/// Without room for the side panel (80×24, 60×20): two panes a row, so each chart keeps half
+/// the width (its legend and units) — force–time and force–displacement above, COR vs ζ and
+/// the compact readout below — rather than three charts and the panel in a row.
+fn narrow_impact_grid(body: Rect) -> (Vec<(Chart, Rect)>, Rect) {
+    let [top, bottom] = Layout::vertical([Constraint::Fill(1); 2]).areas(body);
+    let [ft, fd] = Layout::horizontal([Constraint::Fill(1); 2]).areas(top);
+    let [cz, r] = Layout::horizontal([Constraint::Fill(1); 2]).areas(bottom);
+    let charts = vec![
+        (Chart::ForceTime, ft),
+        (Chart::Hysteresis, fd),
+        (Chart::CorZeta, cz),
+    ];
+    (charts, r)
 }
 
 /// Peak force vs ζ above COR vs speed; side by side when short.
@@ -241,10 +268,14 @@ impl Widget for &App {
             ball: &self.preset().name,
             law: self.setting().law,
             view: self.view(),
-            message: self.message(),
             theme,
         }
         .render(s.header, buf);
+        MessageLine {
+            message: self.message(),
+            theme,
+        }
+        .render(s.message, buf);
         KeyHints {
             theme,
             map: self.view() == View::Map,
@@ -256,7 +287,7 @@ impl Widget for &App {
                 area.x,
                 s.header.bottom(),
                 area.width,
-                s.status.y - s.header.bottom(),
+                s.message.y - s.header.bottom(),
             );
             super::widgets::drop::render(self, body, buf);
         } else if self.view() == View::Models {

@@ -14,12 +14,30 @@ pub trait Job: Clone + PartialEq + Send + 'static {
     type Output: Send + 'static;
     /// The job, asking `go_on` between its steps; `None` when it said stop.
     fn run_while(&self, go_on: &mut dyn FnMut() -> bool) -> Option<Result<Self::Output, String>>;
+
+    /// [`Job::run_while`], handing `partial` what it has so far between its steps when it
+    /// can (a coarse COR-vs-speed curve); by default it has nothing to show early.
+    fn run_refining(
+        &self,
+        go_on: &mut dyn FnMut() -> bool,
+        _partial: &mut dyn FnMut(Self::Output),
+    ) -> Option<Result<Self::Output, String>> {
+        self.run_while(go_on)
+    }
 }
 
 impl Job for SpeedRequest {
     type Output = SpeedCurve;
     fn run_while(&self, go_on: &mut dyn FnMut() -> bool) -> Option<Result<SpeedCurve, String>> {
         SpeedRequest::run_while(self, go_on)
+    }
+
+    fn run_refining(
+        &self,
+        go_on: &mut dyn FnMut() -> bool,
+        partial: &mut dyn FnMut(SpeedCurve),
+    ) -> Option<Result<SpeedCurve, String>> {
+        SpeedRequest::run_refining(self, go_on, partial)
     }
 }
 
@@ -61,6 +79,41 @@ impl<J: Job> Worker<J> {
     }
 }
 
+/// The newest list of sweeps asked for in `inbox` (`None`: nothing new), and whether the
+/// explorer is gone. Older lists are dropped unread: only the latest key's sweeps matter.
+fn newest<J>(inbox: &Receiver<Vec<J>>) -> (Option<Vec<J>>, bool) {
+    let mut latest = None;
+    loop {
+        match inbox.try_recv() {
+            Ok(q) => latest = Some(q),
+            Err(TryRecvError::Empty) => return (latest, false),
+            Err(TryRecvError::Disconnected) => return (latest, true),
+        }
+    }
+}
+
+/// Whether to go on with `request` now that `latest` was asked for (`None`: nothing new).
+pub fn still_wanted<J: PartialEq>(request: &J, latest: Option<&[J]>) -> bool {
+    latest.is_none_or(|q| q.contains(request))
+}
+
+/// The sweeps left once `request` stopped (`finished`, or abandoned for a newer list):
+/// the newest list when there is one — without `request` if it finished — else `queue`.
+pub fn left_after<J: PartialEq>(
+    queue: Vec<J>,
+    request: &J,
+    latest: Option<Vec<J>>,
+    finished: bool,
+) -> Vec<J> {
+    match latest {
+        Some(q) => q
+            .into_iter()
+            .filter(|r| !(finished && r == request))
+            .collect(),
+        None => queue,
+    }
+}
+
 fn serve<J: Job>(inbox: &Receiver<Vec<J>>, outbox: &Sender<Reply<J>>) {
     let mut queue: Vec<J> = Vec::new();
     loop {
@@ -69,37 +122,39 @@ fn serve<J: Job>(inbox: &Receiver<Vec<J>>, outbox: &Sender<Reply<J>>) {
                 Ok(q) => queue = q,
                 Err(_) => return,
             }
-            continue;
         }
-        let request = queue.remove(0);
-        let mut latest = None;
-        let mut gone = false;
-        let result = request.run_while(&mut || {
-            loop {
-                match inbox.try_recv() {
-                    Ok(q) => latest = Some(q),
-                    Err(TryRecvError::Empty) => break,
-                    Err(TryRecvError::Disconnected) => {
-                        gone = true;
-                        break;
-                    }
-                }
-            }
-            !gone
-                && latest
-                    .as_ref()
-                    .is_none_or(|q: &Vec<_>| q.contains(&request))
-        });
+        // a burst of keys leaves many lists: start on the newest
+        let (latest, gone) = newest(inbox);
         if gone {
             return;
         }
         if let Some(q) = latest {
-            let finished = result.is_some();
-            queue = q
-                .into_iter()
-                .filter(|r| !(finished && *r == request))
-                .collect();
+            queue = q;
         }
+        let Some(request) = queue.first().cloned() else {
+            continue;
+        };
+        queue.remove(0);
+        let mut latest: Option<Vec<J>> = None;
+        let mut gone = false;
+        let result = request.run_refining(
+            &mut || {
+                let (newer, g) = newest(inbox);
+                gone = g;
+                if newer.is_some() {
+                    latest = newer;
+                }
+                !gone && still_wanted(&request, latest.as_deref())
+            },
+            // a coarse curve early; a send fails only when the explorer is gone
+            &mut |coarse| {
+                let _ = outbox.send((request.clone(), Ok(coarse)));
+            },
+        );
+        if gone {
+            return;
+        }
+        queue = left_after(queue, &request, latest, result.is_some());
         if let Some(r) = result
             && outbox.send((request, r)).is_err()
         {
@@ -126,6 +181,54 @@ mod tests {
         }
     }
 
+    fn request(v0: f64) -> SpeedRequest {
+        let p = Preset::embedded()[0].params();
+        SpeedRequest::new(
+            &crate::model::params::ImpactParams { v0, ..p },
+            ContactLaw::Linear,
+            3.12,
+        )
+    }
+
+    /// Issue 18, defect 11: a sweep the user has moved past is dropped at the next point; one
+    /// still wanted goes on; a finished one is not asked again; an abandoned one that is still
+    /// in the newest list comes back in its place there.
+    #[test]
+    fn stale_sweeps_are_dropped_and_wanted_ones_kept() {
+        let (a, b, c) = (request(3.0), request(30.0), request(60.0));
+        assert_ne!(a, b);
+        assert!(still_wanted(&a, None));
+        assert!(!still_wanted(&a, Some(std::slice::from_ref(&b))));
+        assert!(!still_wanted(&a, Some(&[])));
+        assert!(still_wanted(&a, Some(&[b.clone(), a.clone()])));
+        let queue = vec![c.clone()];
+        assert_eq!(left_after(queue.clone(), &a, None, true), queue);
+        let newer = Some(vec![b.clone(), c.clone()]);
+        assert_eq!(
+            left_after(queue.clone(), &a, newer, false),
+            [b.clone(), c.clone()]
+        );
+        let again = Some(vec![a.clone(), b.clone()]);
+        assert_eq!(
+            left_after(queue.clone(), &a, again.clone(), true),
+            std::slice::from_ref(&b)
+        );
+        assert_eq!(left_after(queue, &a, again, false), [a, b]);
+    }
+
+    /// Of a burst of lists only the newest is read; the rest are dropped unread.
+    #[test]
+    fn a_burst_leaves_only_the_newest_list() {
+        let (tx, rx) = mpsc::channel();
+        for v0 in 1..=30 {
+            tx.send(vec![request(f64::from(v0))]).unwrap();
+        }
+        assert_eq!(newest(&rx), (Some(vec![request(30.0)]), false));
+        assert_eq!(newest(&rx), (None, false));
+        drop(tx);
+        assert_eq!(newest(&rx), (None, true));
+    }
+
     #[test]
     fn replies_with_the_latest_wanted_sweeps() {
         let p = Preset::embedded()[0].params();
@@ -134,9 +237,14 @@ mod tests {
         let mut w = Worker::spawn().unwrap();
         w.want(std::slice::from_ref(&a));
         w.want(std::slice::from_ref(&b));
-        let (req, curve) = wait(&w);
-        // `a` may have finished before `b` was asked for; `b` always comes
-        let (req, curve) = if req == a { wait(&w) } else { (req, curve) };
+        // `a` may have finished (or sent coarse curves) before `b` was asked for; `b`'s
+        // finished curve always comes, after its coarse ones
+        let (req, curve) = loop {
+            let (req, curve) = wait(&w);
+            if req == b && !curve.as_ref().is_ok_and(|c| c.refining) {
+                break (req, curve);
+            }
+        };
         assert_eq!(req, b);
         assert_eq!(curve.unwrap(), b.run().unwrap());
     }

@@ -3,6 +3,7 @@
 
 use super::{App, Confirm, Effect, Input, Overlay, Purpose};
 use crate::cli::number::number;
+use crate::model::params::ImpactParams;
 use crate::tui::action::Action;
 use crate::tui::param::Param;
 use crate::tui::save::{self, SaveRequest};
@@ -19,14 +20,18 @@ impl App {
         match action {
             Action::OpenInput => self.open_input(Purpose::Value(self.selected), String::new()),
             Action::InputChar(c) => self.input_char(c),
-            Action::InputClear => {
+            Action::InputClear | Action::InputBackspace | Action::InputDelete => {
                 if let Overlay::Input(input) = &mut self.overlay {
-                    input.text.clear();
+                    match action {
+                        Action::InputClear => input.clear(),
+                        Action::InputBackspace => input.backspace(),
+                        _ => input.delete(),
+                    }
                 }
             }
-            Action::InputBackspace => {
+            Action::InputCursor(m) => {
                 if let Overlay::Input(input) = &mut self.overlay {
-                    input.text.pop();
+                    input.move_cursor(m);
                 }
             }
             Action::InputSubmit => return self.submit_input(),
@@ -49,17 +54,13 @@ impl App {
     }
 
     pub(super) fn open_input(&mut self, purpose: Purpose, text: String) {
-        self.overlay = Overlay::Input(Input {
-            purpose,
-            text,
-            error: None,
-        });
+        self.overlay = Overlay::Input(Input::new(purpose, text));
     }
 
     pub(super) fn input_char(&mut self, c: char) {
         if let Overlay::Input(input) = &mut self.overlay {
             if input.text.chars().count() < ENTRY_MAX {
-                input.text.push(c);
+                input.insert(c);
             } else {
                 input.error = Some(format!("the entry holds at most {ENTRY_MAX} characters"));
             }
@@ -84,15 +85,11 @@ impl App {
             self.overlay = Overlay::None;
             return None;
         }
-        let lambda_zeta = (
-            self.setting.get(Param::Lambda),
-            self.setting.get(Param::Zeta),
-        );
-        let checked = read_value(&text, param, lambda_zeta);
+        let checked = read_value(&text, param, &self.setting.params);
         match checked {
-            Ok(v) => {
+            Ok(params) => {
                 self.overlay = Overlay::None;
-                self.set_param(param, v);
+                self.set_params(params);
             }
             Err(why) => {
                 if let Overlay::Input(input) = &mut self.overlay {
@@ -176,7 +173,7 @@ impl App {
 
 /// A typed value for `param`, read as the command line reads numbers (so `1e999` is a
 /// number, out of range) and checked by [`Param::check`]; or why not, in one line.
-fn read_value(text: &str, param: Param, lambda_zeta: (f64, f64)) -> Result<f64, String> {
+fn read_value(text: &str, param: Param, params: &ImpactParams) -> Result<ImpactParams, String> {
     let kept = format!("; {} kept", param.symbol());
     let v = number(text).map_err(|e| {
         // a long text is not echoed: the reason stays readable
@@ -186,5 +183,5 @@ fn read_value(text: &str, param: Param, lambda_zeta: (f64, f64)) -> Result<f64, 
             format!("{e}{kept}")
         }
     })?;
-    param.check(v, lambda_zeta).map(|()| v)
+    param.check(v, params)
 }

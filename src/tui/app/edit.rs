@@ -1,26 +1,38 @@
 //! How `update` changes the setting (with undo) and says what it did.
 
 use super::{App, Message, Setting, Severity, UNDO_DEPTH};
-use crate::text::sig_trim;
+use crate::model::params::ImpactParams;
+use crate::text::short;
 use crate::tui::param::Param;
 
 impl App {
-    /// Set `param` to `value` brought into range; a note when it had to move.
-    pub(super) fn set_param(&mut self, param: Param, value: f64) {
-        let Some((v, moved)) = param.clamp(value) else {
+    /// A stepping key moved `param` to `value`: taken when `run` takes it; past a bound it
+    /// stops at the bound (or, when `run` refuses even that, where it is) and says so.
+    pub(super) fn step_param(&mut self, param: Param, value: f64) {
+        let now = self.setting.get(param);
+        let Some((bound, moved)) = param.clamp(value) else {
             self.warn(format!("{} must be a finite number", param.symbol()));
             return;
         };
-        if moved {
+        let params = &self.setting.params;
+        let (params, held) = match param.check(bound, params) {
+            Ok(p) => (p, moved.then_some(bound)),
+            Err(_) => (*params, Some(now)),
+        };
+        if let Some(at) = held {
             self.warn(format!(
-                "{} held at {}{} (range {})",
+                "{} held at {}{}: the range is {}",
                 param.symbol(),
-                sig_trim(v, 4),
+                short(at, 4),
                 param.unit(),
                 param.range_text()
             ));
         }
-        let params = param.set(&self.setting.params, v);
+        self.set_params(params);
+    }
+
+    /// Take parameters already checked ([`Param::check`]).
+    pub(super) fn set_params(&mut self, params: ImpactParams) {
         self.change(Setting {
             params,
             ..self.setting.clone()

@@ -150,7 +150,7 @@ impl App {
         }
         let n = outcome.params.normalized();
         for (param, v) in [(Param::Lambda, n.lambda), (Param::Zeta, n.zeta)] {
-            if let Err(why) = param.check(v, (n.lambda, n.zeta)) {
+            if let Err(why) = param.check(v, &outcome.params) {
                 return self.warn(format!("fit not applied: {why}"));
             }
         }

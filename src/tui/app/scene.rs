@@ -21,6 +21,7 @@ fn speed(c: &SpeedCurve) -> SpeedSweep<'_> {
         points: &c.points,
         v_flat: c.request.v_flat,
         v_max: c.request.v_max,
+        refining: c.refining,
     }
 }
 

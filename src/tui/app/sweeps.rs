@@ -10,8 +10,9 @@ impl App {
         self.speed_wanted.clear();
         if self.view == View::Sweeps {
             let (current, pins) = self.speed_targets();
+            // a curve still being refined is wanted until its last point
             let stale = |have: Option<&SpeedCurve>, want: &SpeedRequest| {
-                have.is_none_or(|c| c.request != *want)
+                have.is_none_or(|c| c.request != *want || c.refining)
             };
             if stale(self.speed.as_ref(), &current) {
                 self.speed_wanted.push(current);
@@ -46,17 +47,20 @@ impl App {
     }
 
     /// A finished sweep goes wherever it is (still) wanted. A failed one leaves an empty curve
-    /// for its request, so it is not asked for again.
+    /// for its request, so it is not asked for again. A coarse one (`refining`) is drawn and
+    /// stays wanted.
     pub(super) fn receive_speed(
         &mut self,
         request: &SpeedRequest,
         result: Result<SpeedCurve, String>,
     ) {
+        let refining = result.as_ref().is_ok_and(|c| c.refining);
         let curve = result.unwrap_or_else(|e| {
             self.error(e);
             SpeedCurve {
                 request: request.clone(),
                 points: Vec::new(),
+                refining: false,
             }
         });
         let (current, pins) = self.speed_targets();
@@ -68,6 +72,8 @@ impl App {
                 g.speed = Some(curve.clone());
             }
         }
-        self.speed_wanted.retain(|r| r != request);
+        if !refining {
+            self.speed_wanted.retain(|r| r != request);
+        }
     }
 }

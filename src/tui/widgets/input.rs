@@ -75,15 +75,15 @@ fn render(input: &Input, s: &Setting, theme: &Theme, area: Rect, buf: &mut Buffe
     let room = (w as usize).saturating_sub(label.chars().count() + 3);
     let mut lines = vec![
         Line::styled(about, theme.dim()),
-        Line::from(vec![
-            Span::styled(label, theme.title()),
-            Span::raw(tail(&input.text, room)),
-            Span::styled("█", theme.dim()),
-        ]),
+        Line::from(
+            std::iter::once(Span::styled(label, theme.title()))
+                .chain(with_cursor(input, room, theme))
+                .collect::<Vec<_>>(),
+        ),
     ];
     // the reason is wrapped at spaces, never cut mid-word: the dialog grows for it
     let reason = match &input.error {
-        Some(e) => wrap(e, (w as usize).saturating_sub(3)),
+        Some(e) => crate::tui::format::wrap(e, (w as usize).saturating_sub(3)),
         None => vec![String::new()],
     };
     let h = (5 + reason.len() as u16).min(area.height);
@@ -105,31 +105,57 @@ fn render(input: &Input, s: &Setting, theme: &Theme, area: Rect, buf: &mut Buffe
         .render(popup, buf);
 }
 
-/// The end of `text` in `room` characters: "…" and the last ones when it is longer.
-fn tail(text: &str, room: usize) -> String {
-    let n = text.chars().count();
-    if n <= room {
-        return text.to_string();
-    }
-    let keep = room.saturating_sub(1);
-    let end: String = text.chars().skip(n - keep).collect();
-    format!("…{end}")
+/// The entry's text with the cursor shown, in `room` cells plus one: the character under the
+/// cursor reversed, or "█" after the end. A longer text shows the cells around the cursor,
+/// "…" where it goes on.
+fn with_cursor(input: &Input, room: usize, theme: &Theme) -> Vec<Span<'static>> {
+    let chars: Vec<char> = input.text.chars().collect();
+    let n = chars.len();
+    let at = input.cursor.min(n);
+    let cells = room.max(3) + 1;
+    let to = (at + 1).max(cells).min(n + 1);
+    let from = to.saturating_sub(cells);
+    (from..to)
+        .map(|i| {
+            if i == at {
+                let c = chars.get(i).map_or("█".to_string(), char::to_string);
+                let style = if i < n { theme.selected() } else { theme.dim() };
+                Span::styled(c, style)
+            } else if (i == from && from > 0) || (i + 1 == to && to <= n) {
+                Span::styled("…", theme.dim())
+            } else {
+                // the cell after the end, when the cursor is elsewhere, is blank
+                Span::raw(chars.get(i).map_or(" ".to_string(), char::to_string))
+            }
+        })
+        .collect()
 }
 
-/// `text` in lines of at most `width` characters, broken at spaces (a longer word alone).
-fn wrap(text: &str, width: usize) -> Vec<String> {
-    let mut lines = vec![String::new()];
-    for word in text.split(' ') {
-        let last = lines.last_mut().expect("one line at least");
-        let n = last.chars().count();
-        if n == 0 {
-            last.push_str(word);
-        } else if n + 1 + word.chars().count() <= width {
-            last.push(' ');
-            last.push_str(word);
-        } else {
-            lines.push(word.to_string());
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every text length, cursor place and width: no panic, the cursor's cell always shown, the
+    /// line never wider than the room given.
+    #[test]
+    fn the_cursor_is_always_shown_within_the_room() {
+        let theme = Theme::new(false);
+        for n in 0..12 {
+            let text: String = "0123456789ab".chars().take(n).collect();
+            for cursor in 0..=n {
+                for room in 0..9 {
+                    let mut input = Input::new(Purpose::PresetName, text.clone());
+                    input.cursor = cursor;
+                    let spans = with_cursor(&input, room, &theme);
+                    assert_eq!(
+                        spans.len(),
+                        (n + 1).min(room.max(3) + 1),
+                        "{n} {cursor} {room}"
+                    );
+                    let shown = |s: &Span| s.style == theme.selected() || s.content == "█";
+                    assert_eq!(spans.iter().filter(|s| shown(s)).count(), 1);
+                }
+            }
         }
     }
-    lines
 }

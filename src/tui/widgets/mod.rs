@@ -16,3 +16,4 @@ pub mod pins;
 pub mod plot;
 pub mod readout;
 pub mod status;
+pub mod strokes;

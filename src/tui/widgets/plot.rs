@@ -3,7 +3,8 @@
 //! label sits over the column where the curve's dot for its value lands. Pinned series are
 //! drawn dimmed behind the live ones; measured values and thresholds dotted; markers as text.
 
-use crate::figure::look::dotted;
+use super::strokes::patterned;
+use crate::figure::look::{dashed, dotted};
 use crate::figure::ticks::{Room, ticks};
 use crate::figure::{Corner, Figure, Role, Sample, Series, Style as Stroke};
 use crate::tui::theme::Theme;
@@ -59,30 +60,26 @@ impl PlotLayout {
     }
 }
 
-/// Points from `a` to `b` (plot units) for a dotted line: `n` over the whole span of the
-/// plot, as many in proportion over a shorter segment.
-fn dots(a: (f64, f64), b: (f64, f64), n: f64, l: &PlotLayout) -> Vec<(f64, f64)> {
-    let ([x0, x1], [y0, y1]) = (l.x.bounds, l.y.bounds);
-    let span = ((b.0 - a.0) / (x1 - x0))
-        .abs()
-        .max(((b.1 - a.1) / (y1 - y0)).abs());
-    let k = (n * span).ceil().max(1.0) as usize;
-    (0..=k)
-        .map(|i| {
-            let t = i as f64 / k as f64;
-            (a.0 + t * (b.0 - a.0), a.1 + t * (b.1 - a.1))
-        })
-        .collect()
-}
-
 impl<'a> Plot<'a> {
     pub fn new(figure: &'a Figure, theme: Theme) -> Plot<'a> {
         Plot { figure, theme }
     }
 
     /// The x (`x: true`) or y axis with room for about `labels` tick labels.
+    /// A fitted linear y axis ends on a labelled tick: its top is raised to the next major
+    /// tick when the data's margin left it above the last one (force–time's top row had no
+    /// label).
     fn axis(&self, x: bool, labels: usize) -> Axis {
-        let t = ticks(self.figure, x, Room::Labels(labels));
+        let mut t = ticks(self.figure, x, Room::Labels(labels));
+        let fitted = if x { &self.figure.x } else { &self.figure.y };
+        if let (false, false, None, [.., a, b]) = (x, fitted.log, fitted.range, t.major.as_slice())
+        {
+            let next = b + (b - a);
+            if t.hi > b + 1e-9 * (b - a) && next.is_finite() {
+                t.major.push(next);
+                t.hi = next;
+            }
+        }
         Axis {
             bounds: [t.lo, t.hi],
             ticks: t.labels(),
@@ -181,19 +178,20 @@ impl<'a> Plot<'a> {
             for pass_dotted in [true, false] {
                 for s in lines.iter().filter(|s| dotted(s) == pass_dotted) {
                     let color = self.color(s);
+                    if pass_dotted || dashed(s) {
+                        let bounds = (l.x.bounds, l.y.bounds);
+                        let coords = patterned(&self.drawn(s), dashed(s), n, bounds);
+                        ctx.draw(&canvas::Points {
+                            coords: &coords,
+                            color,
+                        });
+                        continue;
+                    }
                     for w in self.drawn(s).windows(2) {
                         let (Some(a), Some(b)) = (w[0], w[1]) else {
                             continue;
                         };
-                        if pass_dotted {
-                            let coords = dots(a, b, n, l);
-                            ctx.draw(&canvas::Points {
-                                coords: &coords,
-                                color,
-                            });
-                        } else {
-                            ctx.draw(&canvas::Line::new(a.0, a.1, b.0, b.1, color));
-                        }
+                        ctx.draw(&canvas::Line::new(a.0, a.1, b.0, b.1, color));
                     }
                 }
             }
@@ -228,28 +226,46 @@ impl<'a> Plot<'a> {
         }
     }
 
-    /// Line tags (a threshold's name, right of its last point), then markers; a marker whose
-    /// cell another took moves right, so both show.
+    /// Line tags (a threshold's name, a curve's λ) at the line's last point — right of it, or
+    /// ending left of it at the plot's edge, a row up or down when another tag is there — then
+    /// markers; a marker whose cell another took moves right, so both show.
     fn draw_marks(&self, l: &PlotLayout, buf: &mut Buffer) {
         let cell = |p: Option<(f64, f64)>| Some((l.col(p?.0)?, l.row(p?.1)?));
+        let mut tagged: Vec<(u16, u16, u16)> = Vec::new();
         for s in &self.figure.series {
             let (Stroke::Solid | Stroke::Dashed | Stroke::Dotted, Some(tag)) =
                 (s.style, &s.look.text)
             else {
                 continue;
             };
-            let top = self
-                .drawn(s)
+            let last = self.drawn(s).into_iter().flatten().next_back();
+            let Some((col, row)) = cell(last) else {
+                continue;
+            };
+            let w = tag.chars().count() as u16;
+            let x = if col + 1 + w <= l.plot.right() {
+                col + 1
+            } else {
+                col.saturating_sub(w).max(l.plot.x)
+            };
+            let free = |y: u16| {
+                !tagged
+                    .iter()
+                    .any(|&(ty, a, b)| ty == y && x < b && a < x + w)
+            };
+            let Some(y) = [0i32, -1, 1, -2, 2]
                 .into_iter()
-                .flatten()
-                .max_by(|a, b| a.1.total_cmp(&b.1));
-            if let Some((col, row)) = cell(top)
-                && col + 1 < l.plot.right()
-            {
-                let room = usize::from(l.plot.right() - col - 1);
-                let style = Style::default().fg(self.color(s));
-                buf.set_stringn(col + 1, row, tag, room, style);
-            }
+                .map(|d| i32::from(row) + d)
+                .filter(|&y| y >= i32::from(l.plot.y) && y < i32::from(l.plot.bottom()))
+                .map(|y| y as u16)
+                .find(|&y| free(y))
+            else {
+                continue;
+            };
+            let room = usize::from(l.plot.right() - x);
+            let style = Style::default().fg(self.color(s));
+            buf.set_stringn(x, y, tag, room, style);
+            tagged.push((y, x, x + w));
         }
         let mut taken: Vec<(u16, u16)> = Vec::new();
         for s in &self.figure.series {
@@ -282,6 +298,7 @@ impl<'a> Plot<'a> {
                 let sample = match e.sample {
                     Sample::Line => "━".to_string(),
                     Sample::Dotted => "┄".to_string(),
+                    Sample::Dashed => "╍".to_string(),
                     Sample::Marks(texts) => texts.join(" "),
                 };
                 Line::from(vec![
@@ -298,11 +315,8 @@ impl<'a> Plot<'a> {
     fn draw_legend(&self, l: &PlotLayout, buf: &mut Buffer) {
         let legend = self.legend_lines();
         let p = l.plot;
-        let corner = self.figure.legend_corner;
-        let top = matches!(corner, Corner::TopLeft | Corner::TopRight);
-        let left = matches!(corner, Corner::TopLeft | Corner::BottomLeft);
         // bottom legends keep clear of the lowest row, where curves often run along zero
-        let room = p.height.saturating_sub(if top { 1 } else { 2 });
+        let room = p.height.saturating_sub(2);
         let width = legend.iter().map(Line::width).max().unwrap_or(0) as u16;
         // a legend may take half the plot's rows and half its width
         let fits = |rows: u16, w: u16| rows <= room && 2 * rows <= p.height && 2 * w <= p.width;
@@ -323,20 +337,32 @@ impl<'a> Plot<'a> {
             vec![one]
         };
         let width = lines.iter().map(Line::width).max().unwrap_or(0) as u16;
-        let x = if left { p.x + 1 } else { p.right() - width - 1 };
-        let y0 = if top {
-            p.y
-        } else {
-            p.bottom() - 1 - lines.len() as u16
+        let h = lines.len() as u16;
+        let place = |corner: Corner| {
+            let top = matches!(corner, Corner::TopLeft | Corner::TopRight);
+            let left = matches!(corner, Corner::TopLeft | Corner::BottomLeft);
+            let x = if left { p.x + 1 } else { p.right() - width - 1 };
+            let y0 = if top { p.y } else { p.bottom() - 1 - h };
+            (left, Rect::new(x - 1, y0, width + 2, h))
         };
+        // the corner where the legend covers the fewest drawn cells; the figure's on a tie
+        let covered = |r: Rect| r.positions().filter(|&q| buf[q].symbol() != " ").count();
+        let preferred = self.figure.legend_corner;
+        let corner = [
+            preferred,
+            Corner::TopRight,
+            Corner::TopLeft,
+            Corner::BottomRight,
+            Corner::BottomLeft,
+        ]
+        .into_iter()
+        .min_by_key(|&c| covered(place(c).1))
+        .unwrap_or(preferred);
+        let (left, r) = place(corner);
+        let x = r.x + 1;
         for (i, line) in lines.iter().enumerate() {
-            let y = y0 + i as u16;
-            buf.set_string(
-                x - 1,
-                y,
-                " ".repeat(usize::from(width + 2)),
-                Style::default(),
-            );
+            let y = r.y + i as u16;
+            buf.set_string(r.x, y, " ".repeat(usize::from(r.width)), Style::default());
             let w = line.width() as u16;
             buf.set_line(if left { x } else { x + width - w }, y, line, w);
         }

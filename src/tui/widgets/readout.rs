@@ -15,7 +15,7 @@ use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
 use ratatui::style::Style;
 use ratatui::text::{Line, Span};
-use ratatui::widgets::{Block, Paragraph, Widget};
+use ratatui::widgets::{Block, Paragraph, Widget, Wrap};
 
 /// Rows the tall panel needs, border included.
 pub const PANEL_HEIGHT: u16 = 22;
@@ -46,13 +46,20 @@ pub struct Readout<'a> {
 
 impl Widget for &Readout<'_> {
     fn render(self, area: Rect, buf: &mut Buffer) {
+        let inner_w = usize::from(area.width.saturating_sub(2));
         let lines = if self.tall {
             let inner = Block::bordered().inner(area);
             self.panel(usize::from(inner.width), usize::from(inner.height))
+        } else if inner_w < 60 {
+            self.narrow()
         } else {
             self.compact()
         };
-        Paragraph::new(lines).block(self.block()).render(area, buf);
+        // a long note (no rebound: …, measured at …) wraps rather than being cut
+        Paragraph::new(lines)
+            .block(self.block())
+            .wrap(Wrap { trim: false })
+            .render(area, buf);
     }
 }
 
@@ -64,10 +71,27 @@ struct Row {
     model_value: f64,
 }
 
-fn results(preset: &Preset, r: Option<&ImpactResponse>) -> Vec<Row> {
-    let m = &preset.measured;
+/// Whether the preset's measured values were taken at `v0`: only then are they compared.
+fn measured_here(preset: &Preset, v0: f64) -> bool {
+    crate::figure::explorer::same_speed(preset.measured.v0, v0)
+}
+
+/// The results against the preset's measured values; no measured values away from the speed
+/// they were taken at (a peak force at 3.12 m/s says nothing of one at 12 m/s).
+fn results(preset: &Preset, r: Option<&ImpactResponse>, v0: f64) -> Vec<Row> {
     let Some(r) = r else {
         return Vec::new();
+    };
+    let none = crate::preset::Measured {
+        cor: None,
+        max_force: None,
+        contact_time: None,
+        ..preset.measured.clone()
+    };
+    let m = if measured_here(preset, v0) {
+        &preset.measured
+    } else {
+        &none
     };
     let t_f = r.contact_time.map(|t| t * 1e3);
     vec![
@@ -232,7 +256,7 @@ impl Readout<'_> {
             ),
             theme.title(),
         )];
-        let rows = results(self.preset, self.run);
+        let rows = results(self.preset, self.run, self.setting.params.v0);
         if rows.is_empty() {
             lines.push(Line::styled(" no result", theme.error()));
         }
@@ -267,11 +291,56 @@ impl Readout<'_> {
         // only the speed it runs at: claim no measurement then
         let m = &self.preset.measured;
         if m.cor.is_some() || m.max_force.is_some() || m.contact_time.is_some() {
+            let elsewhere = if measured_here(self.preset, self.setting.params.v0) {
+                ""
+            } else {
+                ": not compared"
+            };
             lines.push(Line::styled(
-                format!(" measured at v0 = {} m/s", sig_trim(m.v0, 4)),
+                format!(" measured at v0 = {} m/s{elsewhere}", sig_trim(m.v0, 4)),
                 theme.dim(),
             ));
         }
+        lines
+    }
+
+    /// Short lines, one or two quantities each, for a pane beside a chart (80×24).
+    fn narrow(&self) -> Vec<Line<'static>> {
+        let s = self.setting;
+        let n = s.params.normalized();
+        let p = |param: Param, text: String| Span::styled(text, self.param_style(param));
+        let mut lines = vec![
+            Line::from(vec![
+                Span::raw(" "),
+                p(Param::Lambda, format!("λ {}", sig(n.lambda, 4))),
+                Span::raw("  "),
+                p(Param::Zeta, format!("ζ {}", sig(n.zeta, 4))),
+            ]),
+            Line::from(vec![
+                Span::raw(" "),
+                p(Param::V0, format!("v0 {} m/s", sig_trim(s.params.v0, 4))),
+                Span::raw(format!("  {} law", s.law)),
+            ]),
+            Line::raw(format!(
+                " K_p {} N/m  K_r {} N/m",
+                sig(s.params.k_p, 3),
+                sig(s.params.k_r, 3)
+            )),
+            Line::raw(format!(" c {} kg/s", sig(s.params.damping, 3))),
+        ];
+        let rows = results(self.preset, self.run, s.params.v0);
+        if rows.len() < 5 {
+            lines.push(Line::styled(" no result", self.theme.error()));
+            return lines;
+        }
+        for (row, unit) in rows[..3].iter().zip(["", " N", " ms"]) {
+            lines.push(Line::raw(format!(" {}{unit}", compact_row(row))));
+        }
+        lines.push(Line::raw(format!(
+            " {} mm  {} mm",
+            compact_row(&rows[3]),
+            compact_row(&rows[4])
+        )));
         lines
     }
 
@@ -297,19 +366,8 @@ impl Readout<'_> {
                 sig(s.params.damping, 3)
             )),
         ];
-        let rows = results(self.preset, self.run);
-        let fmt = |row: &Row| {
-            let name = row.name.split(' ').next().unwrap_or("");
-            match row.measured {
-                Some(m) => format!(
-                    "{name} {} ({}, {})",
-                    row.model,
-                    sig_trim(m, 4),
-                    percent_diff(row.model_value, m)
-                ),
-                None => format!("{name} {}", row.model),
-            }
-        };
+        let rows = results(self.preset, self.run, self.setting.params.v0);
+        let fmt = compact_row;
         if rows.len() == 5 {
             lines.push(Line::raw(format!(
                 " {}  {} N",
@@ -327,5 +385,19 @@ impl Readout<'_> {
         }
         lines.extend(pins::compact(self.pins, &self.now()));
         lines
+    }
+}
+
+/// "e 0.7506 (0.75, +0.1%)": a result with its measured value and the difference, if any.
+fn compact_row(row: &Row) -> String {
+    let name = row.name.split(' ').next().unwrap_or("");
+    match row.measured {
+        Some(m) => format!(
+            "{name} {} ({}, {})",
+            row.model,
+            sig_trim(m, 4),
+            percent_diff(row.model_value, m)
+        ),
+        None => format!("{name} {}", row.model),
     }
 }

@@ -1,6 +1,8 @@
-//! The header (ball, law, view, the last message) and the status line of key hints.
+//! The header (ball, law, view), the message line under the charts (the last action's
+//! message, wrapped) and the status line of key hints.
 
 use crate::model::contact::ContactLaw;
+use crate::tui::format::wrap;
 use crate::tui::state::{Message, Severity, View};
 use crate::tui::theme::Theme;
 use ratatui::buffer::Buffer;
@@ -37,13 +39,12 @@ const MAP_HINTS: [(&str, &str, u8); 3] = [
     ("t", "targets", 1),
 ];
 
-/// The header line: ball, law, view, and the last message on the right.
+/// The header line: ball, law, view.
 #[derive(Debug, Clone, Copy)]
 pub struct Header<'a> {
     pub ball: &'a str,
     pub law: ContactLaw,
     pub view: View,
-    pub message: Option<&'a Message>,
     pub theme: Theme,
 }
 
@@ -60,24 +61,50 @@ impl Widget for &Header<'_> {
             )),
         ]);
         left.render(area, buf);
-        if let Some(m) = self.message {
-            message(m, &theme, area, buf);
-        }
     }
 }
 
-/// The message, right-aligned; it wins over the left part when they meet.
-fn message(m: &Message, theme: &Theme, area: Rect, buf: &mut Buffer) {
-    let style = match m.severity {
-        Severity::Info => theme.info(),
-        Severity::Warning => theme.warning(),
-        Severity::Error => theme.error(),
+/// Most rows the message line grows to; a message longer than that ends in "…".
+pub const MESSAGE_ROWS: usize = 3;
+
+/// The message's lines at `width`: wrapped at spaces, never cut mid-word within
+/// [`MESSAGE_ROWS`] rows (one empty row when there is no message).
+pub fn message_lines(m: Option<&Message>, width: u16) -> Vec<String> {
+    let Some(m) = m else {
+        return vec![String::new()];
     };
-    let text = format!(" {} ", m.text);
-    let w = (text.chars().count() as u16).min(area.width);
-    let x = area.right() - w;
-    let room = usize::from(w);
-    buf.set_stringn(x, area.y, text, room, style);
+    let mut lines = wrap(&m.text, usize::from(width.saturating_sub(2)));
+    if lines.len() > MESSAGE_ROWS {
+        lines.truncate(MESSAGE_ROWS);
+        if let Some(last) = lines.last_mut() {
+            last.push('…');
+        }
+    }
+    lines
+}
+
+/// The message line(s): the last action's message, in its severity's style.
+#[derive(Debug, Clone, Copy)]
+pub struct MessageLine<'a> {
+    pub message: Option<&'a Message>,
+    pub theme: Theme,
+}
+
+impl Widget for &MessageLine<'_> {
+    fn render(self, area: Rect, buf: &mut Buffer) {
+        let Some(m) = self.message else { return };
+        let style = match m.severity {
+            Severity::Info => self.theme.info(),
+            Severity::Warning => self.theme.warning(),
+            Severity::Error => self.theme.error(),
+        };
+        for (i, line) in message_lines(self.message, area.width).iter().enumerate() {
+            let y = area.y + i as u16;
+            if y < area.bottom() {
+                buf.set_stringn(area.x + 1, y, line, usize::from(area.width), style);
+            }
+        }
+    }
 }
 
 /// The status line of key hints, as many as fit.
