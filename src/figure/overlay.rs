@@ -58,15 +58,58 @@ impl MeasuredOverlay {
         })
     }
 
+    /// A trace (hundreds of samples of one impact) as a dotted line, which leaves the model's
+    /// curve visible under it; a few points across speeds (a COR table) as `+` markers.
     pub(super) fn series(&self) -> Series {
+        let trace = matches!(self.chart, Chart::ForceTime | Chart::Hysteresis);
+        let (style, text) = if trace {
+            (Style::Dotted, None)
+        } else {
+            (Style::Markers(Marker::Circle), Some("+"))
+        };
         Series::new(
             &self.label,
             &format!("measured {}", self.label),
             Kind::Measured,
-            Style::Markers(Marker::Circle),
+            style,
             super::BLACK,
         )
         .with_points(self.points.clone())
-        .with_look(Look::new(Tone::Measured, Some(&self.label), Some("+")))
+        .with_look(Look::new(Tone::Measured, Some(&self.label), text))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::measured::parse_any;
+
+    /// A trace of hundreds of samples is a dotted line (markers would cover the model's curve
+    /// under them); a COR table's few points are `+` markers.
+    #[test]
+    fn a_trace_is_a_line_and_a_cor_table_markers() {
+        let mut text = String::from("time_s,force_N\n");
+        for k in 0..400 {
+            let t = f64::from(k) * 1e-5;
+            let f = if (100..300).contains(&k) {
+                100.0 * (std::f64::consts::PI * f64::from(k - 100) / 200.0).sin()
+            } else {
+                0.0
+            };
+            text.push_str(&format!("{t},{f}\n"));
+        }
+        let trace =
+            MeasuredOverlay::from_data(&parse_any(&text).unwrap(), "t.csv", 0.0459, 1.47).unwrap();
+        assert_eq!(trace.len(), 2);
+        for o in &trace {
+            let s = o.series();
+            assert_eq!(s.style, Style::Dotted, "{:?}", o.chart);
+            assert_eq!(s.look.text, None);
+        }
+        let table = parse_any("v0,cor\n1,0.8\n2,0.78\n3,0.75\n").unwrap();
+        let cor = MeasuredOverlay::from_data(&table, "c.csv", 0.0459, 1.47).unwrap();
+        let s = cor[0].series();
+        assert_eq!(s.style, Style::Markers(Marker::Circle));
+        assert_eq!(s.look.text.as_deref(), Some("+"));
     }
 }
