@@ -21,6 +21,14 @@
 //!   undoes them: new files are removed, replaced ones put back from a hard link taken before
 //!   the first rename (`a_failed_rename_puts_the_replaced_files_back`). Only on a file system
 //!   without hard links does a replaced file stay replaced then.
+//! - without `force` on a file system without hard links (FAT, some network shares), where
+//!   the no-clobber rename is refused, the name is claimed with an empty file created "new"
+//!   (fails if it exists) and the complete temporary renamed over it ([`claim_then_rename`]):
+//!   still no clobbering; a kill between those two steps (microseconds) can leave an empty
+//!   file, which a reader reports naming the file.
+//!
+//! This is the one atomic writer of the program: preset files (`catalog::write`) go through
+//! it too.
 
 use std::ffi::OsStr;
 use std::fs;
@@ -106,10 +114,7 @@ impl Outputs {
             .tempfile_in(dir)
             // tempfile names its temporary in the message: the user knows only `path`
             .map_err(|e| fail(io::Error::new(e.kind(), without_path(&e))))?;
-        let file = tmp.as_file_mut();
-        file.write_all(bytes)
-            .and_then(|()| file.sync_all())
-            .map_err(fail)?;
+        write_synced(tmp.as_file_mut(), bytes).map_err(fail)?;
         self.staged.push((path.to_path_buf(), tmp));
         Ok(())
     }
@@ -135,7 +140,7 @@ impl Outputs {
             let result = if self.force {
                 tmp.persist(&path).map(drop)
             } else {
-                tmp.persist_noclobber(&path).map(drop)
+                persist_new(tmp, &path)
             };
             if let Err(e) = result {
                 // dropping `e` removes the temporary file; the remaining ones go with `staged`
@@ -163,6 +168,63 @@ impl Outputs {
         }
         Ok(published)
     }
+}
+
+/// Publish `tmp` as `path`, which must not exist (checked in the same step). Where the file
+/// system has no hard links the no-clobber rename may be refused; then [`claim_then_rename`].
+fn persist_new(tmp: NamedTempFile, path: &Path) -> Result<(), tempfile::PersistError> {
+    match tmp.persist_noclobber(path) {
+        Ok(_) => Ok(()),
+        Err(e) if no_hard_links(&e.error) => {
+            let tmp = e.file;
+            match claim_then_rename(tmp.path(), path) {
+                Ok(()) => Ok(()),
+                // dropping `tmp` (inside the error) removes the temporary file
+                Err(error) => Err(tempfile::PersistError { error, file: tmp }),
+            }
+        }
+        Err(e) => Err(e),
+    }
+}
+
+/// Whether a failed no-clobber publication means the file system has no hard links (rather
+/// than a real error). EPERM is what Linux's FAT driver answers; a folder we may not write to
+/// fails earlier, when the temporary file is created.
+fn no_hard_links(e: &io::Error) -> bool {
+    matches!(
+        e.kind(),
+        io::ErrorKind::Unsupported | io::ErrorKind::PermissionDenied
+    )
+}
+
+/// The publication without hard links: take the name with an empty file created "new"
+/// (`AlreadyExists` if it exists), then move the complete temporary file over it.
+fn claim_then_rename(tmp: &Path, path: &Path) -> io::Result<()> {
+    fs::OpenOptions::new()
+        .write(true)
+        .create_new(true)
+        .open(path)?;
+    fs::rename(tmp, path).inspect_err(|_| {
+        // the empty placeholder is ours: do not leave it behind as a broken file
+        let _ = fs::remove_file(path);
+    })
+}
+
+/// Write all of `bytes` and wait until they are on disk.
+fn write_synced(file: &mut fs::File, bytes: &[u8]) -> io::Result<()> {
+    use crate::fault::{self, Fault};
+    if Fault::PauseMidSave.active() {
+        // test-only (see `crate::fault`): stop with half the text written, so that a test can
+        // kill the process mid-write
+        let half = bytes.len() / 2;
+        file.write_all(&bytes[..half])?;
+        file.sync_all()?;
+        std::thread::sleep(fault::PAUSE);
+        file.write_all(&bytes[half..])?;
+    } else {
+        file.write_all(bytes)?;
+    }
+    file.sync_all()
 }
 
 /// A second name for the file at `path` (`.NAME.PID-bakN.tmp`, beside it), to put it back if
@@ -372,6 +434,20 @@ mod tests {
         let mut kept = names[2..].to_vec();
         kept.sort();
         assert_eq!(entries(dir.path()), kept);
+    }
+
+    #[test]
+    fn the_fallback_without_links_does_not_clobber_either() {
+        let dir = tempfile::tempdir().unwrap();
+        let (tmp, p) = (dir.path().join(".t.tmp"), dir.path().join("a.toml"));
+        fs::write(&tmp, "new").unwrap();
+        claim_then_rename(&tmp, &p).unwrap();
+        assert_eq!(fs::read_to_string(&p).unwrap(), "new");
+        assert!(!tmp.exists());
+        fs::write(&tmp, "newer").unwrap();
+        let e = claim_then_rename(&tmp, &p).unwrap_err();
+        assert_eq!(e.kind(), io::ErrorKind::AlreadyExists);
+        assert_eq!(fs::read_to_string(&p).unwrap(), "new");
     }
 
     #[test]

@@ -322,3 +322,47 @@ fn overrides_on_run_sweep_and_figure() {
         ],
     );
 }
+
+/// One drop and one free parameter is an exact solve: "1 point", no NaN standard error, and
+/// in JSON the same null `std_error`/`ci95` keys plus `"exact": true`; a saved preset's
+/// header says the same. Two drops leave a residual: no `exact` key, finite errors.
+#[test]
+fn one_drop_is_an_exact_solve_not_a_nan_error() {
+    let dir = tempfile::tempdir().unwrap();
+    let args = ["fit", "--drop-height", "1", "--rebound-height", "0.5"];
+    let text = ok_at(dir.path(), &args);
+    assert!(text.contains("(1 point);"), "{text}");
+    assert!(!text.contains("NaN"), "{text}");
+    assert!(
+        text.contains("exact: no residual to estimate it from"),
+        "{text}"
+    );
+    let v = json_at(dir.path(), &[&args[..], &["--format", "json"]].concat());
+    assert_eq!(v["exact"], true, "{v}");
+    assert!(v["fitted"]["k_r"]["std_error"].is_null(), "{v}");
+    assert!(v["fitted"]["k_r"]["ci95"][0].is_null(), "{v}");
+    assert_eq!(v["points"], 1);
+    ok_at(dir.path(), &[&args[..], &["--save", "one-drop"]].concat());
+    let saved =
+        std::fs::read_to_string(dir.path().join("bouncelab/presets/one-drop.toml")).unwrap();
+    assert!(saved.contains("(1 point),"), "{saved}");
+    assert!(!saved.contains("NaN"), "{saved}");
+    assert!(saved.contains("exact: no residual"), "{saved}");
+    // K_r from two drops: a residual is left
+    let two = [
+        "fit",
+        "--drop-height",
+        "1",
+        "--rebound-height",
+        "0.5",
+        "--drop-height",
+        "2",
+        "--rebound-height",
+        "0.9",
+        "--format",
+        "json",
+    ];
+    let v = json_at(dir.path(), &two);
+    assert!(v.get("exact").is_none(), "{v}");
+    assert!(f(&v["fitted"]["k_r"], "std_error").is_finite(), "{v}");
+}

@@ -46,6 +46,10 @@ pub struct Report<'a> {
     max_force: f64,
     contact_time: Option<f64>,
     warnings: &'a [String],
+    /// As many data as fitted quantities: an exact solve, with no residual to estimate the
+    /// uncertainty from (`std_error` and `ci95` are null then). Present only when true.
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    exact: bool,
 }
 
 #[derive(Serialize)]
@@ -126,8 +130,23 @@ pub fn report<'a>(
         max_force: r.max_force,
         contact_time: r.contact_time,
         warnings: &f.warnings,
+        exact: exact(f),
     }
 }
+
+/// Whether the fit had as many data as quantities fitted (no degree of freedom left): the
+/// values solve the data exactly and no standard error or interval can be estimated.
+pub fn exact(f: &MultiFit) -> bool {
+    f.points <= f.names.len()
+}
+
+/// "1 point", "7 points".
+pub fn points(n: usize) -> String {
+    format!("{n} point{}", if n == 1 { "" } else { "s" })
+}
+
+/// The text in place of an interval for an exact solve.
+pub const EXACT: &str = "exact: no residual to estimate it from";
 
 fn interval(e: &Estimate) -> String {
     if e.ci95.iter().all(|v| v.is_finite()) {
@@ -152,9 +171,9 @@ pub fn text(
     let free: Vec<&str> = r.free.clone();
     writeln!(
         out,
-        "fitting {} to {what} ({} points); the rest of the ball held",
+        "fitting {} to {what} ({}); the rest of the ball held",
         free.join(", "),
-        f.points
+        points(f.points)
     )?;
     if data.trace.is_some() {
         // the trace's speed is not in the data: say which one the fit assumed
@@ -173,12 +192,18 @@ pub fn text(
         "95 % interval".into(),
         "unit".into(),
     ]];
+    let exact = exact(f);
     for e in f.fitted.iter().chain(&f.time_offset).chain(&f.baseline) {
+        let (error, interval) = if exact {
+            ("–".into(), EXACT.into())
+        } else {
+            (human(e.std_error, 3), interval(e))
+        };
         rows.push(vec![
             e.name.into(),
             human(e.value, 5),
-            human(e.std_error, 3),
-            interval(e),
+            error,
+            interval,
             e.unit.into(),
         ]);
     }

@@ -77,8 +77,9 @@ fn header(ball: &Ball, data: &Loaded, f: &MultiFit, when: &str) -> Vec<String> {
     };
     let mut h = vec![
         format!(
-            "Fitted by `bouncelab fit` on {when} to {what} ({} points), {} law,",
-            f.points, ball.law
+            "Fitted by `bouncelab fit` on {when} to {what} ({}), {} law,",
+            super::fit_report::points(f.points),
+            ball.law
         ),
         format!(
             "starting from the preset '{}' ({} parameters); what was not fitted is that preset's.",
@@ -86,7 +87,16 @@ fn header(ball: &Ball, data: &Loaded, f: &MultiFit, when: &str) -> Vec<String> {
             ball.source
         ),
     ];
-    for e in &f.fitted {
+    let exact = super::fit_report::exact(f);
+    for e in f.fitted.iter().filter(|_| exact) {
+        let (name, unit) = (e.name, e.unit);
+        let value = short(e.value);
+        h.push(format!(
+            "{name} = {value} {unit} ({})",
+            super::fit_report::EXACT
+        ));
+    }
+    for e in f.fitted.iter().filter(|_| !exact) {
         h.push(format!(
             "{} = {} {} ± {} (95 %: {} … {})",
             e.name,

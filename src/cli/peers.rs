@@ -304,6 +304,8 @@ pub fn figure(a: &super::figure::FigureArgs) -> anyhow::Result<crate::figure::Fi
             anyhow::bail!("invalid speed range: --from {from} must be below --to {to}");
         }
         let n = a.points.unwrap_or(super::figure::VELOCITY_POINTS);
+        // one Christoforou–Yigit impact per speed, as `figure cor-velocity`: the same limit
+        super::budget::check(n, b.law, &format!("{n} points"))?;
         let speeds = crate::analysis::sweep::log_space(from, to, n);
         fig::cor_velocity(&b, target, &speeds)
     };
