@@ -279,6 +279,7 @@ impl Widget for &App {
         KeyHints {
             theme,
             map: self.view() == View::Map,
+            drop: self.view() == View::Drop,
         }
         .render(s.status, buf);
         if self.view() == View::Drop {

@@ -113,13 +113,22 @@ pub struct KeyHints {
     pub theme: Theme,
     /// In the map view: its own hints for the arrows.
     pub map: bool,
+    /// In the drop view: its own keys in place of `e`, which exports nothing there.
+    pub drop: bool,
 }
+
+/// The drop view's own keys (src/tui/drop_view.rs).
+const DROP_HINTS: [(&str, &str, u8); 2] = [("space", "pause", 0), ("b", "replay", 1)];
 
 impl Widget for &KeyHints {
     fn render(self, area: Rect, buf: &mut Buffer) {
         let hints_shown: Vec<(&str, &str, u8)> = if self.map {
             let mut v = MAP_HINTS.to_vec();
             v.extend(HINTS.iter().filter(|h| !matches!(h.0, "↑↓" | "←→")));
+            v
+        } else if self.drop {
+            let mut v = DROP_HINTS.to_vec();
+            v.extend(HINTS.iter().filter(|h| h.0 != "e"));
             v
         } else {
             HINTS.to_vec()
