@@ -23,7 +23,7 @@
 //!   without hard links does a replaced file stay replaced then.
 //! - without `force` on a file system without hard links (FAT, some network shares), where
 //!   the no-clobber rename is refused, the name is claimed with an empty file created "new"
-//!   (fails if it exists) and the complete temporary renamed over it ([`claim_then_rename`]):
+//!   (fails if it exists) and the complete temporary renamed over it (`claim_then_rename`):
 //!   still no clobbering; a kill between those two steps (microseconds) can leave an empty
 //!   file, which a reader reports naming the file.
 //!

@@ -13,9 +13,11 @@
 //! - in the presets folder only regular `*.toml` files not starting with `.` are read, in
 //!   file-name order; a missing folder means no user presets.
 //!
-//! Writing a preset file (the explorer's `s`) is in [`mod@write`]: atomic, and never replacing a
-//! file unless asked to.
+//! Writing a preset file (the explorer's `s`, `fit --save`) is the application's: `write`
+//! (feature `tui`), atomic, and never replacing a file unless asked to.
 
+// through the application's atomic writer (`crate::atomic`, feature `tui`)
+#[cfg(feature = "tui")]
 pub mod write;
 
 use crate::preset::{Preset, PresetError};
