@@ -104,14 +104,8 @@ fn exact_solver_against_the_reference() {
         let worst = rel(r.cor, e)
             .max(rel(r.max_force_normalized, f))
             .max(rel(tf, t));
-        if l == 0.02 || l == 0.05 {
-            assert!(
-                worst > 1e-10,
-                "λ = {l}, ζ = {z}: {worst} (fixed? tighten this test)"
-            );
-        } else {
-            assert!(worst < 1e-12, "λ = {l}, ζ = {z}: {worst}");
-        }
+        assert!(worst < 1e-12, "λ = {l}, ζ = {z}: {worst}");
+        eprintln!("λ = {l}, ζ = {z}: worst {worst:e}");
     }
 }
 
