@@ -21,9 +21,8 @@ pub(in crate::solver) use fast_slow::pair_flow;
 
 mod cubic;
 mod fast_slow;
+pub(crate) use cubic::isolated_root;
 pub use cubic::{Roots, cubic_roots};
-#[allow(unused_imports)]
-pub(crate) use cubic::{deflate, isolated_root};
 use fast_slow::SplitState;
 use nalgebra::{Complex, Matrix3, Vector3};
 

@@ -62,7 +62,7 @@ const NEAR_DOUBLE: f64 = 1e-4;
 /// s³ + a2 s² + a1 s + a0 = (s − r)(s² + p1 s + p0). Backward division (p0 = −a0/r) is
 /// stable when r is the larger root, |r|³ ≥ a0 = |r|·|p0|; forward division (p1 = a2 + r)
 /// when it is the smaller.
-pub(crate) fn deflate([a2, a1, a0]: [f64; 3], r: f64) -> (f64, f64) {
+fn deflate([a2, a1, a0]: [f64; 3], r: f64) -> (f64, f64) {
     if r != 0.0 && r.abs().powi(3) >= a0 {
         let p0 = -a0 / r;
         ((p0 - a1) / r, p0)
