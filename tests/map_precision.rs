@@ -104,38 +104,71 @@ fn exact_solver_against_the_reference() {
         let worst = rel(r.cor, e)
             .max(rel(r.max_force_normalized, f))
             .max(rel(tf, t));
-        if l == 0.02 || l == 0.05 {
-            assert!(
-                worst > 1e-10,
-                "λ = {l}, ζ = {z}: {worst} (fixed? tighten this test)"
-            );
-        } else {
-            assert!(worst < 1e-12, "λ = {l}, ζ = {z}: {worst}");
-        }
+        assert!(worst < 1e-12, "λ = {l}, ζ = {z}: {worst}");
+        eprintln!("λ = {l}, ζ = {z}: worst {worst:e}");
     }
 }
 
-/// Over the plane (log grid λ, ζ = 1e-4 … 1e4, nine points a decade) the fast path agrees with the exact
-/// solver to 1e-9 wherever it answers, and answers almost everywhere.
+/// The fast path's answer and the exact solver's (`bouncelab run`) at (λ, ζ): their worst
+/// relative difference over e, F̄_m, τ_f, or `None` where the fast path does not answer.
+fn fast_vs_exact(l: f64, z: f64) -> Option<f64> {
+    let s = summary(l, z)?;
+    let r = simulate_normalized(l, z, ContactLaw::Linear, &SolveOptions::default()).unwrap();
+    let tf = r.contact_time_normalized.unwrap_or(f64::NAN);
+    let d = rel(s.cor, r.cor)
+        .max(rel(s.max_force, r.max_force_normalized))
+        .max(rel(s.contact_time, tf));
+    assert!(d < 1e-12, "λ = {l}, ζ = {z}: {d:e} {s:?} vs e = {}", r.cor);
+    Some(d)
+}
+
+/// Over the plane (log grid λ = 1e-6 … 1e6, ten points a decade, ζ = 1e-4 … 1e4, fifteen) the
+/// fast path agrees with the exact solver to 1e-12 wherever it answers (the map takes it in
+/// place of `run` on that promise), and answers almost everywhere: it leaves to the exact
+/// solver the cases without rebound, contacts past τ = 1e3, and those its rounding bound cannot
+/// keep to 1e-13 (small e with long creeping contact, λ < 1e-3 and ζ ~ 1 … 30).
 #[test]
 fn fast_summary_agrees_with_the_exact_solver() {
     let (mut answered, mut total, mut worst) = (0, 0, 0.0f64);
-    for i in 0..=72 {
-        for j in 0..=72 {
-            let l = 10f64.powf(-4.0 + i as f64 / 9.0);
-            let z = 10f64.powf(-4.0 + j as f64 / 9.0);
+    for i in 0..=120 {
+        for j in 0..=120 {
+            let l = 10f64.powf(-6.0 + i as f64 / 10.0);
+            let z = 10f64.powf(-4.0 + j as f64 / 15.0);
             total += 1;
-            let Some(s) = summary(l, z) else { continue };
-            answered += 1;
-            let r =
-                simulate_normalized(l, z, ContactLaw::Linear, &SolveOptions::default()).unwrap();
-            let d = rel(s.cor, r.cor)
-                .max(rel(s.max_force, r.max_force_normalized))
-                .max(rel(s.contact_time, r.contact_time_normalized.unwrap()));
-            assert!(d < 1e-9, "λ = {l}, ζ = {z}: {d} {s:?} vs e = {}", r.cor);
-            worst = worst.max(d);
+            if let Some(d) = fast_vs_exact(l, z) {
+                answered += 1;
+                worst = worst.max(d);
+            }
         }
     }
     assert!(answered * 100 >= total * 90, "{answered} of {total}");
     eprintln!("fast vs exact: worst {worst:e}, {answered} of {total} answered");
+}
+
+/// Where the complex pair turns real (the two reference points, and a fine ζ sweep across the
+/// turning point at λ = 0.02 and 0.05, a few ulps either side), as λ → 0 and at large ζ the
+/// two agree to 1e-12 as well, and the fast path answers at the turning points.
+#[test]
+fn fast_and_exact_agree_at_the_edges() {
+    for (l, z) in [(0.02, 1.7861026411617908), (0.05, 0.9044760255043721)] {
+        for k in -3..=3 {
+            let z = z + k as f64 * f64::EPSILON * z;
+            assert!(fast_vs_exact(l, z).is_some(), "λ = {l}, ζ = {z}");
+        }
+        for k in -50..=50 {
+            fast_vs_exact(l, z * (1.0 + k as f64 * 1e-4));
+        }
+    }
+    let mut answered = 0;
+    for l in [0.0, 1e-15, 1e-12, 1e-9] {
+        for j in 0..=40 {
+            answered += fast_vs_exact(l, 10f64.powf(-4.0 + j as f64 / 10.0)).is_some() as usize;
+        }
+    }
+    for l in [1e-3, 1.0, 1e3, 1e6] {
+        for z in [1e4, 1e5, 1e6] {
+            answered += fast_vs_exact(l, z).is_some() as usize;
+        }
+    }
+    assert!(answered > 60, "{answered}");
 }

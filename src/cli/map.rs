@@ -81,7 +81,7 @@ pub fn spec(a: &MapArgs) -> anyhow::Result<MapBall> {
     let zeta = Axis::parse(Param::Zeta, &a.zeta, scale)?;
     if a.normalized {
         let law = a.law.map_or(ContactLaw::Linear, ContactLaw::from);
-        let spec = MapSpec::normalized(a.zp_bar, law, lambda, zeta)?;
+        let spec = MapSpec::normalized(a.zp_bar, law, lambda, zeta)?.with_fast(true);
         return Ok(MapBall {
             spec,
             preset: None,
@@ -95,7 +95,7 @@ pub fn spec(a: &MapArgs) -> anyhow::Result<MapBall> {
         ..BallArgs::default()
     };
     let b = args.resolve(a.v0)?;
-    let spec = MapSpec::dimensional(b.params, b.law, lambda, zeta)?;
+    let spec = MapSpec::dimensional(b.params, b.law, lambda, zeta)?.with_fast(true);
     let n = b.params.normalized();
     Ok(MapBall {
         spec,

@@ -14,17 +14,18 @@
 //!
 //! with cosh and sinh(ντ)/ν where ω² = −ν² < 0. What keeps it exact where the complex pair
 //! turns real (ω² → 0): the pair is never split into its two roots (which a double root would
-//! leave with only half the digits), only σ and ω² enter, and C and S are smooth in ω². The
-//! exact solver (`solver::exact`) splits the pair and loses 2.5e-8 in τ_f there
-//! (tests/map_precision.rs, against a 40-digit reference).
+//! leave with only half the digits), only σ and ω² enter, and C and S are smooth in ω² (the
+//! exact solver's roots keep the pair so too: `propagator::cubic`).
 //!
 //! τ_m is the first zero of z̄' (F̄_m = z̄(τ_m)), τ_f the first zero of z̄ after it, both by
 //! safeguarded Halley steps inside brackets found by doubling steps of at most a quarter of
 //! the pair's period (τ_f's first step just short of τ_m: unloading takes about as long); e = ∫₀^τ_f z̄ dτ − 1 (ᾱ'' = −F̄, ᾱ'(0) = 1), in closed form too. Cases it does not
-//! settle quickly — no rebound (λ = 0, ζ ≥ 1), slow creeps, flattening — return `None`: the
+//! settle quickly — no rebound (λ = 0, ζ ≥ 1), slow creeps, flattening — and those whose
+//! rounding bound (`Flow::rounding`) cannot keep 1e-13 return `None`: the
 //! caller runs the exact solver.
 
-use crate::solver::roots::{halley_bracketed_from, newton_bracketed};
+use crate::solver::propagator::isolated_root;
+use crate::solver::roots::halley_bracketed_from;
 
 /// One impact's summary, normalized.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -40,11 +41,21 @@ pub struct Summary {
 /// Longest contact the fast path follows (τ); past it the exact solver's creep handling is
 /// the one to trust.
 const TAU_MAX: f64 = 1e3;
+/// What multiplies ε times the terms' sizes in [`Flow::rounding`]: the roots, A, D, P, Q
+/// carry a few roundings each (measured over tests/map_precision.rs's grid: the differences to
+/// the exact solver stay below 2 ε times the terms' sizes).
+const ROUNDING_FACTOR: f64 = 1.0;
+/// The relative precision a summary must keep, by the bound of [`Flow::rounding`], to be
+/// returned: the exact solver (`bouncelab run`) keeps 1e-12 and the map promises its values
+/// to 1e-12; a summary that cannot is left to it.
+const KEEP: f64 = 1e-13;
 /// Most bracket steps per event.
 const MAX_STEPS: usize = 400;
 
 /// The flow z̄(τ) in closed form.
 struct Flow {
+    /// The scales of A, D, P, Q's rounding: Σ|terms|/|denominator| as each was formed.
+    size: [f64; 4],
     r: f64,
     sigma: f64,
     omega2: f64,
@@ -58,20 +69,40 @@ struct Flow {
 impl Flow {
     fn new(lambda: f64, zeta: f64) -> Option<Flow> {
         let (a2, a1, a0) = (2.0 * zeta * (1.0 + lambda), 1.0, 2.0 * zeta * lambda);
-        let r = isolated_root(a2, a1, a0)?;
-        let (p1, p0) = deflate(a2, a1, a0, r);
+        let (r, p1, p0) = isolated_root([a2, a1, a0]);
         let sigma = 0.5 * p1;
         let omega2 = p0 - sigma * sigma;
         let gap = (r + sigma) * (r + sigma) + omega2;
         if !(gap > 0.0 && p0 > 0.0) {
             return None;
         }
-        let a = 2.0 * (sigma - zeta) / gap;
-        let d = 1.0 - (r + sigma) * a;
+        // Z(s) = (s + a0)/cubic (Laplace, z̄(0) = 0, z̄'(0) = 1, z̄''(0) = −2ζ): A is the
+        // residue at r, (r + a0)/p'(r) = 2(σ − ζ)/gap; D from matching at s = −σ,
+        // (σ − a0 + A ω²)/(σ + r) = 1 − (r + σ) A. Of each two equal forms the one whose
+        // terms are smaller is taken, and `size` keeps Σ|terms|/|denominator|: the scale of
+        // each coefficient's rounding (a large ζ with a small λ makes (r + σ) A ≈ 1: that
+        // form lost 2e-11 in F̄_m at λ = 7e-6, ζ = 271).
+        let sum = |t: [f64; 3], den: f64| (t.iter().sum::<f64>() / den, abs_sum(t) / den.abs());
+        let a = [
+            sum([r, a0, 0.0], gap),
+            sum([2.0 * sigma, -2.0 * zeta, 0.0], gap),
+        ];
+        let (a, sa) = if a[0].1 <= a[1].1 { a[0] } else { a[1] };
+        let d = [
+            (1.0 - (r + sigma) * a, 1.0 + (r + sigma).abs() * sa),
+            (
+                (sigma - a0 + a * omega2) / (sigma + r),
+                (sigma.abs() + a0 + sa * omega2.abs()) / (sigma + r).abs(),
+            ),
+        ];
+        let (d, sd) = if d[0].1 <= d[1].1 { d[0] } else { d[1] };
         let b = -a;
         let p = -(d + sigma * b) / p0;
+        let sp = (sd + sigma.abs() * sa) / p0;
         let q = b + sigma * p;
+        let size = [sa, sd, sp, sa + sigma.abs() * sp];
         Some(Flow {
+            size,
             r,
             sigma,
             omega2,
@@ -127,6 +158,34 @@ impl Flow {
         out
     }
 
+    /// A bound on the rounding of z̄(τ) and ∫₀^τ z̄ as evaluated here: ε times the sizes of
+    /// the terms summed (z̄ is their small difference where the ball nearly sticks), each
+    /// exponential's argument good to ε·rate·τ, times [`ROUNDING_FACTOR`] for the roots'
+    /// and coefficients' own rounding. Only the order of magnitude matters: it tells the
+    /// cases that keep 1e-12 from those (small e, long contact) that do not. Returns (for z̄, for the integral).
+    fn rounding(&self, t: f64) -> (f64, f64) {
+        let decay = (-self.sigma * t).exp();
+        let (cm, sm) = if self.omega2 > 0.0 {
+            (decay, decay * t.min(1.0 / self.omega2.sqrt()))
+        } else {
+            self.cs(t)
+        };
+        // each exponential's argument is good to ε·rate·τ: its term's rounding grows so
+        let real = (self.r * t).exp() * (1.0 + self.r.abs() * t);
+        let grow = 1.0 + (self.sigma.abs() + self.omega2.abs().sqrt()) * t;
+        let (cm, sm) = (cm * grow, sm * grow);
+        let k = ROUNDING_FACTOR * f64::EPSILON;
+        let [sa, sd, sp, sq] = self.size;
+        let z = sa * (real + cm) + sd * sm;
+        let int = if self.r == 0.0 {
+            sa * t
+        } else {
+            sa * (1.0 + real) / self.r.abs()
+        };
+        let int = int + sp * (1.0 + cm) + sq * sm;
+        (k * z, k * int)
+    }
+
     /// ∫₀^τ z̄ dτ.
     fn integral(&self, t: f64) -> f64 {
         let real = if self.r == 0.0 {
@@ -139,51 +198,9 @@ impl Flow {
     }
 }
 
-/// The real root of s³ + a2 s² + a1 s + a0 that stands apart from the other two (the only
-/// real one, or with three real roots the one off the closest pair), to rounding.
-fn isolated_root(a2: f64, a1: f64, a0: f64) -> Option<f64> {
-    let f = |s: f64| (((s + a2) * s + a1) * s + a0, (3.0 * s + 2.0 * a2) * s + a1);
-    let r = if a0 == 0.0 {
-        0.0
-    } else {
-        newton_bracketed(f, -(a2 + a1 + a0).max(1.0) * 1.01, 0.0)
-    };
-    let (p1, p0) = deflate(a2, a1, a0, r);
-    let q = 0.25 * p1 * p1 - p0;
-    if q <= 0.0 {
-        return Some(r);
-    }
-    let (c, h) = (-0.5 * p1, q.sqrt());
-    let (near, far) = if (r - (c + h)).abs() < (r - (c - h)).abs() {
-        (c + h, c - h)
-    } else {
-        (c - h, c + h)
-    };
-    if 2.0 * h <= (r - near).abs() {
-        return Some(r);
-    }
-    // r is one of the close pair: the root apart is `far`, polished on the full cubic
-    let mut x = far;
-    for _ in 0..4 {
-        let (v, dv) = f(x);
-        if dv == 0.0 {
-            return None;
-        }
-        x -= v / dv;
-    }
-    Some(x)
-}
-
-/// s³ + a2 s² + a1 s + a0 = (s − r)(s² + p1 s + p0); backward division (p0 = −a0/r) when r is
-/// the larger root in size, forward (p1 = a2 + r) otherwise: each stable where it is used.
-fn deflate(a2: f64, a1: f64, a0: f64, r: f64) -> (f64, f64) {
-    if r != 0.0 && r.abs().powi(3) >= a0 {
-        let p0 = -a0 / r;
-        ((p0 - a1) / r, p0)
-    } else {
-        let p1 = a2 + r;
-        (p1, a1 + r * p1)
-    }
+/// Σ|terms|.
+fn abs_sum(terms: [f64; 3]) -> f64 {
+    terms.iter().map(|t| t.abs()).sum()
 }
 
 /// The first τ after `t0` (where the `k`-th derivative of z̄ is `g0`, known) where that
@@ -242,8 +259,15 @@ pub fn summary(lambda: f64, zeta: f64) -> Option<Summary> {
     // unloading takes about as long as loading: a first step just short of τ_m brackets τ_f
     // within one or two steps
     let tau_f = first_fall(&flow, 0, (tau_m, z_m), (0.9 * tau_m).min(cap), cap)?;
-    Some(Summary {
-        cor: flow.integral(tau_f) - 1.0,
+    let cor = flow.integral(tau_f) - 1.0;
+    // z̄' = 0 at τ_m and z̄ = 0 at τ_f: F̄_m and e are stationary in their τ, only the sums'
+    // rounding enters; τ_f moves by z̄'s rounding over the slope it crosses 0 with
+    let (dz_m, _) = flow.rounding(tau_m);
+    let (dz_f, dint) = flow.rounding(tau_f);
+    let slope = flow.jet(tau_f)[1].abs();
+    let precise = dz_m <= KEEP * z_m && dint <= KEEP * cor.abs() && dz_f <= KEEP * slope * tau_f;
+    precise.then_some(Summary {
+        cor,
         max_force: z_m,
         contact_time: tau_f,
     })

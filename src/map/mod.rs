@@ -32,8 +32,8 @@
 //! between passes ([`Map::nearest`] fills the cells not yet evaluated from the coarse lattice)
 //! and stops when it likes. [`Map::refine_until`] also stops inside a pass once a flag is
 //! set; the next call takes the pass up where it stopped. For the linear law,
-//! [`MapSpec::with_fast`] takes the closed form of [`fast`] (about three times faster, and
-//! exact where the exact solver is not) wherever it answers.
+//! [`MapSpec::with_fast`] takes the closed form of [`fast`] (about three times faster, within
+//! 1e-12 of the exact solver) wherever it answers.
 
 mod axis;
 mod contour;
@@ -159,10 +159,11 @@ pub struct MapSpec {
     pub lambda: Axis,
     /// The ζ values (columns).
     pub zeta: Axis,
-    /// Linear law only: take [`fast::summary`] (closed form, some three times faster, exact to
-    /// 1e-12 also where the exact solver loses 2.5e-8) wherever it answers and the ball does
-    /// not flatten; the exact solver elsewhere. Off by default, so that each cell is `run`'s
-    /// own answer (the two agree to 2e-12 except near where the complex pair turns real).
+    /// Linear law only: take [`fast::summary`] (closed form, some three times faster) wherever
+    /// it answers and the ball does not flatten; the exact solver elsewhere. It answers only
+    /// where its rounding bound keeps 1e-13, and agrees with the exact solver (`run`) to 1e-12
+    /// there (tests/map_precision.rs, a dense grid and the turning points): `bouncelab map`
+    /// and the explorer turn it on. Off by default: each cell then is `run`'s own answer.
     pub fast: bool,
 }
 

@@ -21,6 +21,7 @@ pub(in crate::solver) use fast_slow::pair_flow;
 
 mod cubic;
 mod fast_slow;
+pub(crate) use cubic::isolated_root;
 pub use cubic::{Roots, cubic_roots};
 use fast_slow::SplitState;
 use nalgebra::{Complex, Matrix3, Vector3};

@@ -51,31 +51,80 @@ fn polish(a: [f64; 3], mut s: C) -> C {
     s
 }
 
-/// Roots of s³ + a2 s² + a1 s + a0 with a_i ≥ 0.
-pub fn cubic_roots(a: [f64; 3]) -> Roots {
-    let [a2, a1, a0] = a;
-    // A real root in [−B, 0]: p(0) = a0 ≥ 0, and −B lies left of every root, so p(−B) < 0. a0 = 0 (λ = 0 or ζ = 0) has the root 0 exactly.
-    let r = if a0 == 0.0 {
-        0.0
-    } else {
-        // Lagrange's bound max(1, Σ a_i): cruder than Fujiwara's, but needs no cube root, and
-        // the bracketed iteration starts from the secant point anyway
-        let bound = (a2 + a1 + a0).max(1.0) * 1.01;
-        let p = |s: f64| (((s + a2) * s + a1) * s + a0, (3.0 * s + 2.0 * a2) * s + a1);
-        newton_bracketed(p, -bound, 0.0)
-    };
-    // Deflate: s³ + a2 s² + a1 s + a0 = (s − r)(s² + p1 s + p0). Backward division
-    // (p0 = −a0/r) is stable when r is the larger root, |r|³ ≥ a0 = |r|·|p0|; forward division
-    // (p1 = a2 + r) when it is the smaller. The pair is then polished on the full cubic.
-    let (p1, p0) = if r != 0.0 && r.abs().powi(3) >= a0 {
+/// A pair closer than this (((s2 − s3)/2)² < NEAR_DOUBLE · centre²) is near-double: its
+/// roots are not polished one by one on the cubic, where p' ≈ 0 leaves each with only half
+/// the digits (a centre off by ~1e-8 cost τ_f 2.5e-8 at λ = 0.02, ζ = 1.7861026411617908;
+/// tests/map_precision.rs). Its centre and q from the quadratic factor are exact to rounding
+/// (q to ε·centre² absolute, which the flow, smooth in q, sees only as ε). Below it, a
+/// polished root would lose at most ~ε/√NEAR_DOUBLE = 1e2 ε to its neighbour.
+const NEAR_DOUBLE: f64 = 1e-4;
+
+/// s³ + a2 s² + a1 s + a0 = (s − r)(s² + p1 s + p0). Backward division (p0 = −a0/r) is
+/// stable when r is the larger root, |r|³ ≥ a0 = |r|·|p0|; forward division (p1 = a2 + r)
+/// when it is the smaller.
+fn deflate([a2, a1, a0]: [f64; 3], r: f64) -> (f64, f64) {
+    if r != 0.0 && r.abs().powi(3) >= a0 {
         let p0 = -a0 / r;
         ((p0 - a1) / r, p0)
     } else {
         let p1 = a2 + r;
         (p1, a1 + r * p1)
+    }
+}
+
+/// A real root of the cubic (a_i ≥ 0) that is not one of a near-double pair: bracketed Newton
+/// in [−B, 0] finds some real root, which near a double root is good to half the digits only;
+/// then the root apart from that pair, polished on the full cubic (it is simple there), and
+/// the deflated quadratic (p1, p0).
+pub(crate) fn isolated_root(a: [f64; 3]) -> (f64, f64, f64) {
+    let [a2, a1, a0] = a;
+    let p = |s: f64| (((s + a2) * s + a1) * s + a0, (3.0 * s + 2.0 * a2) * s + a1);
+    let r = if a0 == 0.0 {
+        0.0
+    } else {
+        // Lagrange's bound max(1, Σ a_i) lies left of every root, so p(−B) < 0 ≤ p(0) = a0:
+        // cruder than Fujiwara's, but needs no cube root, and the bracketed iteration starts
+        // from the secant point anyway. a0 = 0 (λ = 0 or ζ = 0) has the root 0 exactly.
+        let bound = (a2 + a1 + a0).max(1.0) * 1.01;
+        newton_bracketed(p, -bound, 0.0)
     };
+    let (p1, p0) = deflate(a, r);
+    let (c, q) = (-0.5 * p1, 0.25 * p1 * p1 - p0);
+    if q <= 0.0 {
+        return (r, p1, p0);
+    }
+    let h = q.sqrt();
+    let (near, far) = if (r - (c + h)).abs() < (r - (c - h)).abs() {
+        (c + h, c - h)
+    } else {
+        (c - h, c + h)
+    };
+    let (half, mid) = (0.5 * (r - near), 0.5 * (r + near));
+    if half * half >= NEAR_DOUBLE * mid * mid {
+        return (r, p1, p0);
+    }
+    let mut x = far;
+    for _ in 0..4 {
+        let (v, dv) = p(x);
+        if dv == 0.0 {
+            break;
+        }
+        x -= v / dv;
+    }
+    let (p1, p0) = deflate(a, x);
+    (x, p1, p0)
+}
+
+/// Roots of s³ + a2 s² + a1 s + a0 with a_i ≥ 0.
+pub fn cubic_roots(a: [f64; 3]) -> Roots {
+    let (r, p1, p0) = isolated_root(a);
     let centre = -0.5 * p1;
     let q = centre * centre - p0;
+    if q.abs() < NEAR_DOUBLE * centre * centre {
+        // near-double pair: centre and q as the quadratic factor gives them
+        return ordered(r, centre, q);
+    }
+    // a pair well apart: each root polished on the full cubic
     let h = if q < 0.0 {
         C::new(0.0, (-q).sqrt())
     } else {
@@ -89,10 +138,26 @@ pub fn cubic_roots(a: [f64; 3]) -> Roots {
             q: -(s2.im * s2.im),
         };
     }
-    // Three real roots: the leftmost becomes s1 and `all()` puts the rightmost last, so that
-    // s3 − s1 is the widest spacing and the last divided difference does not cancel.
     let s3 = polish(a, C::new(centre, 0.0) - h);
     let mut all = [r, s2.re, s3.re];
+    all.sort_by(f64::total_cmp);
+    Roots {
+        s1: all[0],
+        centre: 0.5 * (all[1] + all[2]),
+        q: (0.5 * (all[2] - all[1])).powi(2),
+    }
+}
+
+/// `Roots` from the real root r and the pair's centre and q. Three real roots: the leftmost
+/// becomes s1 and `all()` puts the rightmost last, so that s3 − s1 is the widest spacing and
+/// the last divided difference does not cancel. The pair (centre, q) is kept as it is while
+/// r lies left of it.
+fn ordered(r: f64, centre: f64, q: f64) -> Roots {
+    if q < 0.0 || r <= centre - q.sqrt() {
+        return Roots { s1: r, centre, q };
+    }
+    let h = q.sqrt();
+    let mut all = [r, centre - h, centre + h];
     all.sort_by(f64::total_cmp);
     Roots {
         s1: all[0],

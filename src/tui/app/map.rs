@@ -171,7 +171,7 @@ impl App {
         let (params, law) = (self.setting.params, self.setting.law);
         let spec = window
             .axes(rows, cols)
-            .and_then(|(la, za)| MapSpec::dimensional(params, law, la, za));
+            .and_then(|(la, za)| Ok(MapSpec::dimensional(params, law, la, za)?.with_fast(true)));
         let spec = match spec {
             Ok(s) => s,
             Err(e) => {
