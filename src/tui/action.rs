@@ -132,6 +132,12 @@ pub enum Action {
     FitReady(u64, Result<super::measured::FitOutcome, String>),
     /// `F`: apply the finished fit to the ball, as one undoable change.
     ApplyFit,
+    /// `m`: open the physical-inputs form.
+    OpenForm,
+    /// ↑ / ↓ in the form: the previous / next field.
+    FormMove(Scroll),
+    /// Enter or `=` in the form: type a value for the highlighted field.
+    FormEdit,
     /// Map view, arrows: move the cursor, and the ball with it, by `lambda` cells up and
     /// `zeta` cells right.
     MapCursor {
@@ -175,6 +181,9 @@ pub enum Mode {
     Map,
     /// The preset picker: arrows move, Enter loads, Esc closes.
     Picker,
+    /// The physical-inputs form: arrows select a field, Enter or `=` types its value, Esc
+    /// closes.
+    Form,
 }
 
 /// The action for a terminal event, if any (key presses and repeats; releases are ignored).
@@ -215,6 +224,7 @@ pub fn from_key(key: KeyEvent, mode: Mode) -> Option<Action> {
         },
         Mode::Help => help(key.code),
         Mode::Picker => picker(key.code),
+        Mode::Form => form(key.code),
         Mode::TooSmall => match key.code {
             KeyCode::Char('q') | KeyCode::Esc => Some(Action::Quit),
             _ => None,
@@ -276,6 +286,17 @@ fn picker(code: KeyCode) -> Option<Action> {
     }
 }
 
+/// In the physical-inputs form: select a field, type its value, or close (`m`, `q` too).
+fn form(code: KeyCode) -> Option<Action> {
+    match code {
+        KeyCode::Esc | KeyCode::Char('q' | 'm') => Some(Action::CloseHelp),
+        KeyCode::Enter | KeyCode::Char('=') => Some(Action::FormEdit),
+        KeyCode::Up | KeyCode::Char('k') => Some(Action::FormMove(Scroll::Up)),
+        KeyCode::Down | KeyCode::Char('j') => Some(Action::FormMove(Scroll::Down)),
+        _ => None,
+    }
+}
+
 /// Cells a Shift+arrow moves the map's cursor.
 pub const MAP_LEAP: i32 = 8;
 
@@ -316,6 +337,7 @@ fn normal(key: KeyEvent) -> Option<Action> {
         KeyCode::Char('s') => Some(Action::SavePreset),
         KeyCode::Char('y') => Some(Action::ShowCommand),
         KeyCode::Char('g') => Some(Action::OpenPicker),
+        KeyCode::Char('m') => Some(Action::OpenForm),
         KeyCode::Tab => Some(Action::NextView),
         KeyCode::BackTab => Some(Action::PrevView),
         KeyCode::Char('?') => Some(Action::ToggleHelp),

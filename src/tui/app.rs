@@ -10,6 +10,7 @@ mod dialogs;
 mod drop;
 mod edit;
 mod fit;
+mod form;
 mod map;
 mod models;
 mod picker;
@@ -225,6 +226,7 @@ impl App {
             Overlay::Input(_) => Mode::Input,
             Overlay::Confirm(_) => Mode::Confirm,
             Overlay::Picker(_) => Mode::Picker,
+            Overlay::Form(_) => Mode::Form,
         }
     }
 
@@ -297,6 +299,7 @@ impl App {
             | Action::OpenMeasured
             | Action::ToggleHelp
             | Action::CloseHelp => return self.dialog(action).into_iter().collect(),
+            Action::OpenForm | Action::FormMove(_) | Action::FormEdit => self.form(action),
             Action::MapCursor { .. }
             | Action::MapQuantity
             | Action::MapTargets

@@ -37,6 +37,7 @@ pub mod map_worker;
 pub mod measured;
 pub mod models;
 pub mod param;
+pub mod physical;
 pub mod picker;
 pub mod save;
 pub mod setting;

@@ -199,6 +199,7 @@ fn readout<'a>(app: &'a App, pins: &'a [PinView<'a>], tall: bool, theme: Theme) 
         selected: app.selected(),
         coarse: app.coarse(),
         run: app.run(),
+        validity: app.validity(),
         pins,
         tall,
         theme,
@@ -250,6 +251,13 @@ fn render_overlay(app: &App, theme: Theme, area: Rect, buf: &mut Buffer) {
         Overlay::Confirm(confirm) => ConfirmDialog { confirm, theme }.render(area, buf),
         Overlay::Command(line) => CommandBox { line, theme }.render(area, buf),
         Overlay::Picker(picker) => PickerBox { picker, theme }.render(area, buf),
+        Overlay::Form(form) => crate::tui::widgets::form::FormBox {
+            form: *form,
+            setting: app.setting(),
+            warning: app.validity(),
+            theme,
+        }
+        .render(area, buf),
     }
 }
 

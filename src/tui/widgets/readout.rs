@@ -30,13 +30,15 @@ pub fn compact_height(pins: usize) -> u16 {
 }
 
 /// What the readout shows.
-#[derive(Debug, Clone, Copy)]
+#[derive(Debug, Clone)]
 pub struct Readout<'a> {
     pub preset: &'a Preset,
     pub setting: &'a Setting,
     pub selected: Param,
     pub coarse: bool,
     pub run: Option<&'a ImpactResponse>,
+    /// Why the run is outside the model's validity (z_m or α_max beyond R), if it is.
+    pub validity: Option<String>,
     /// The pinned runs, oldest first: the pin table compares them with this run.
     pub pins: &'a [PinView<'a>],
     /// The tall panel beside the charts, or four compact lines below them.
@@ -279,6 +281,9 @@ impl Readout<'_> {
     fn notes(&self) -> Vec<Line<'static>> {
         let theme = &self.theme;
         let mut lines = Vec::new();
+        if let Some(w) = &self.validity {
+            lines.push(Line::styled(format!(" {w}"), theme.warning()));
+        }
         if let Some(r) = self.run {
             let note = match (r.rebound, r.permanent_indentation > 0.0) {
                 (false, _) => " no rebound: the ball sinks into the dashpot",
