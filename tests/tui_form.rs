@@ -149,7 +149,10 @@ fn the_validity_warning_appears_exactly_when_z_m_or_alpha_exceeds_r() {
     assert!(w.contains(&mm(alpha)) && w.contains(&mm(alpha - r)), "{w}");
     // the message and the readout say it
     assert!(a.message().unwrap().text.contains("outside the model"));
-    // R just above α_max: no warning; just below z_m: z_m named
+    // R just below α_max: α_max named; just above: no warning; just below z_m: z_m named
+    set(&mut a, Field::Radius, &format!("{}", alpha * 0.999));
+    let w = a.validity().expect("a warning");
+    assert!(w.contains("α_max") && !w.contains("z_m"), "{w}");
     set(&mut a, Field::Radius, &format!("{}", alpha * 1.001));
     assert_eq!(a.validity(), None);
     set(&mut a, Field::Radius, &format!("{}", z_m * 0.999));

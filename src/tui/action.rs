@@ -132,6 +132,17 @@ pub enum Action {
     FitReady(u64, Result<super::measured::FitOutcome, String>),
     /// `F`: apply the finished fit to the ball, as one undoable change.
     ApplyFit,
+    /// `x`: put the crosshair on the view's first chart; with it on, on the next chart.
+    Crosshair,
+    /// Tab with the crosshair on: the next chart (past the last: off).
+    CrosshairNext,
+    /// Esc with the crosshair on: take it away.
+    CrosshairOff,
+    /// Arrows with the crosshair on: `dx` steps right, `dy` steps up (Shift: ten at once).
+    CrosshairMove {
+        dx: i32,
+        dy: i32,
+    },
     /// `m`: open the physical-inputs form.
     OpenForm,
     /// ↑ / ↓ in the form: the previous / next field.
@@ -181,6 +192,9 @@ pub enum Mode {
     Map,
     /// The preset picker: arrows move, Enter loads, Esc closes.
     Picker,
+    /// The crosshair is on a chart: arrows move it, Tab and `x` go to the next chart, Esc
+    /// takes it away; other keys as in `Normal`.
+    Crosshair,
     /// The physical-inputs form: arrows select a field, Enter or `=` types its value, Esc
     /// closes.
     Form,
@@ -229,9 +243,10 @@ pub fn from_key(key: KeyEvent, mode: Mode) -> Option<Action> {
             KeyCode::Char('q') | KeyCode::Esc => Some(Action::Quit),
             _ => None,
         },
-        Mode::Normal | Mode::Map if ctrl => None,
+        Mode::Normal | Mode::Map | Mode::Crosshair if ctrl => None,
         Mode::Normal => normal(key),
         Mode::Map => map(key).or_else(|| normal(key)),
+        Mode::Crosshair => crosshair(key).or_else(|| normal(key)),
     }
 }
 
@@ -282,6 +297,26 @@ fn picker(code: KeyCode) -> Option<Action> {
         KeyCode::PageDown => move_by(Scroll::PageDown),
         KeyCode::Home => move_by(Scroll::Home),
         KeyCode::End => move_by(Scroll::End),
+        _ => None,
+    }
+}
+
+/// With the crosshair on: arrows move it a step (Shift: [`crate::tui::crosshair::LEAP`]
+/// steps), Tab or `x` the next chart, Esc off.
+fn crosshair(key: KeyEvent) -> Option<Action> {
+    let n = if key.modifiers.contains(KeyModifiers::SHIFT) {
+        crate::tui::crosshair::LEAP as i32
+    } else {
+        1
+    };
+    let to = |dx, dy| Some(Action::CrosshairMove { dx, dy });
+    match key.code {
+        KeyCode::Right => to(n, 0),
+        KeyCode::Left => to(-n, 0),
+        KeyCode::Up => to(0, n),
+        KeyCode::Down => to(0, -n),
+        KeyCode::Tab | KeyCode::Char('x') => Some(Action::CrosshairNext),
+        KeyCode::Esc => Some(Action::CrosshairOff),
         _ => None,
     }
 }
@@ -338,6 +373,7 @@ fn normal(key: KeyEvent) -> Option<Action> {
         KeyCode::Char('y') => Some(Action::ShowCommand),
         KeyCode::Char('g') => Some(Action::OpenPicker),
         KeyCode::Char('m') => Some(Action::OpenForm),
+        KeyCode::Char('x') => Some(Action::Crosshair),
         KeyCode::Tab => Some(Action::NextView),
         KeyCode::BackTab => Some(Action::PrevView),
         KeyCode::Char('?') => Some(Action::ToggleHelp),

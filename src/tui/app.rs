@@ -6,6 +6,7 @@
 //! `sweeps`, and what the charts are drawn from in `scene`.
 
 mod command;
+mod crosshair;
 mod dialogs;
 mod drop;
 mod edit;
@@ -88,6 +89,8 @@ pub struct App {
     size: Option<(u16, u16)>,
     /// The map view's map, quantity, targets and window.
     map: super::map_view::MapView,
+    /// The crosshair (`x`), when it is on.
+    crosshair: Option<super::crosshair::Crosshair>,
 }
 
 impl App {
@@ -134,6 +137,7 @@ impl App {
             config: None,
             size: None,
             map: Default::default(),
+            crosshair: None,
         };
         app.refresh();
         app
@@ -220,6 +224,7 @@ impl App {
         }
         match self.overlay {
             Overlay::None if self.view == View::Map => Mode::Map,
+            Overlay::None if self.crosshair().is_some() => Mode::Crosshair,
             Overlay::None => Mode::Normal,
             // the command box closes, and scrolls nothing, like the help
             Overlay::Help | Overlay::Command(_) => Mode::Help,
@@ -259,8 +264,18 @@ impl App {
             Action::Quit => self.quit = true,
             Action::Resize(w, h) => self.resize(w, h),
             Action::HelpScroll(how) => self.scroll_help(how),
-            Action::NextView => self.view = self.view.next(),
-            Action::PrevView => self.view = self.view.prev(),
+            Action::NextView => {
+                self.view = self.view.next();
+                self.crosshair = None;
+            }
+            Action::PrevView => {
+                self.view = self.view.prev();
+                self.crosshair = None;
+            }
+            Action::Crosshair
+            | Action::CrosshairNext
+            | Action::CrosshairOff
+            | Action::CrosshairMove { .. } => self.crosshair_action(action),
             Action::ToggleDrop | Action::DropPause | Action::DropReplay | Action::Tick(_) => {
                 self.drop_action(&action)
             }

@@ -23,6 +23,7 @@ pub mod action;
 pub mod app;
 pub mod command;
 pub mod compute;
+pub mod crosshair;
 pub mod drop_view;
 pub mod effect;
 pub mod event;

@@ -308,8 +308,12 @@ impl Widget for &App {
             map_panel(self, theme).render(s.chart_area, buf);
         }
         let scene = self.scene();
+        let cross = self.crosshair();
         for (chart, rect) in &s.charts {
-            let fig = explorer::figure(*chart, &scene);
+            let mut fig = explorer::figure(*chart, &scene);
+            if let Some(c) = cross.filter(|c| self.view().charts().get(c.chart) == Some(chart)) {
+                super::crosshair::draw_on(c, &mut fig);
+            }
             Plot::new(&fig, theme).render(*rect, buf);
         }
         if let (Some(rect), Some(v)) = (s.fit, fit_view(self, theme)) {
