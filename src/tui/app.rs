@@ -358,7 +358,12 @@ impl App {
                 self.info(format!("reset to the {} preset", self.presets[i].name));
             }
             Action::Pin => self.pin(),
-            Action::ShowCommand => self.overlay = Overlay::Command(self.command_line()),
+            Action::ShowCommand => {
+                self.overlay = Overlay::Command(self.command_line());
+                if let Some(w) = super::command::not_carried(self.preset(), &self.setting) {
+                    self.warn(w);
+                }
+            }
             Action::Unpin => self.unpin(),
             Action::Undo => match self.undo.pop() {
                 Some(previous) => {
