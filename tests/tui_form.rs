@@ -179,3 +179,14 @@ fn the_form_at_120x40_and_80x24() {
     key(&mut b, KeyCode::Enter);
     insta::assert_snapshot!("form_entry_80x24", draw(&b, 80, 24).backend());
 }
+
+#[test]
+fn the_narrow_readout_at_80x24_keeps_the_warning() {
+    let mut a = superball();
+    set(&mut a, Field::Lambda, "0.001");
+    set(&mut a, Field::Zeta, "10");
+    key(&mut a, KeyCode::Esc);
+    key(&mut a, KeyCode::Char('['));
+    assert!(!a.message().unwrap().text.contains("outside"));
+    insta::assert_snapshot!("readout_outside_80x24", draw(&a, 80, 24).backend());
+}
