@@ -190,3 +190,18 @@ fn the_narrow_readout_at_80x24_keeps_the_warning() {
     assert!(!a.message().unwrap().text.contains("outside"));
     insta::assert_snapshot!("readout_outside_80x24", draw(&a, 80, 24).backend());
 }
+
+/// A ball changed in the form saves as it runs: its preset gives back the same parameters
+/// and radius.
+#[test]
+fn a_saved_preset_keeps_the_form_values() {
+    let mut a = superball();
+    set(&mut a, Field::Mass, "0.05");
+    set(&mut a, Field::Radius, "0.03");
+    set(&mut a, Field::ZP, "0.003");
+    let s = a.setting().clone();
+    let (preset, _) = bouncelab::tui::save::preset_for(a.preset(), &s, "mine");
+    let back = bouncelab::tui::setting::Setting::from_preset(s.preset, &preset);
+    assert_eq!(back.params, s.params);
+    assert_eq!(back.radius, 0.03);
+}
