@@ -156,3 +156,13 @@ fn the_crosshair_at_120x40_and_80x24() {
     insta::assert_snapshot!("crosshair_120x40", draw(&a, 120, 40).backend());
     insta::assert_snapshot!("crosshair_80x24", draw(&a, 80, 24).backend());
 }
+
+#[test]
+fn a_number_without_unit_reads_without_one() {
+    let mut a = App::new(Preset::embedded().remove(0), true);
+    for _ in 0..3 {
+        key(&mut a, KeyCode::Char('x'));
+    }
+    let msg = a.message().unwrap().text.clone();
+    assert!(msg.starts_with("+ zeta ") && !msg.contains('–'), "{msg}");
+}

@@ -113,10 +113,14 @@ pub fn nearest(curve: &Series, x: f64, log: bool) -> Option<(f64, f64)> {
         .copied()
 }
 
-/// The unit an axis label names in its last parentheses ("time t (ms)" → "ms"), if any.
+/// The unit an axis label names in its last parentheses ("time t (ms)" → "ms"), if any
+/// ("COR e (–)" has none).
 fn unit(a: &Axis) -> String {
     match (a.label.rfind('('), a.label.rfind(')')) {
-        (Some(i), Some(j)) if i < j => format!(" {}", &a.label[i + 1..j]),
+        // "(–)" marks a number without unit
+        (Some(i), Some(j)) if i < j && !matches!(a.label[i + 1..j].trim(), "–" | "-" | "") => {
+            format!(" {}", &a.label[i + 1..j])
+        }
         _ => String::new(),
     }
 }
