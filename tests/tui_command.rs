@@ -189,3 +189,49 @@ fn every_export_csv_starts_with_the_line_and_the_parameters() {
         assert!(first.starts_with("series,kind,"), "{first}");
     }
 }
+
+/// The form's K_p and z_p are `run`'s --k-p and --z-p: with λ and ζ moved too, the line
+/// still runs to the screen. A mass typed in the form is not carried, and `y` says so.
+#[test]
+fn form_values_run_to_the_screen_or_are_named_as_not_carried() {
+    use bouncelab::tui::physical::Field;
+    let home = tempfile::tempdir().unwrap();
+    let mut a = app(0);
+    for (field, value) in [
+        (Field::KP, 61000.0),
+        (Field::ZP, 0.003),
+        (Field::Lambda, 0.5),
+    ] {
+        let next = field.check(value, a.setting()).unwrap();
+        set_setting(&mut a, field, value);
+        assert_eq!(*a.setting(), next);
+    }
+    press(&mut a, "z");
+    let line = shown(&mut a);
+    assert!(
+        line.contains(" --k-p 61000 --z-p 0.003 --lambda "),
+        "{line}"
+    );
+    assert_same_run(&a, &run_json(&line, home.path()));
+    set_setting(&mut a, Field::Mass, 0.05);
+    press(&mut a, "y");
+    let m = a.message().expect("a warning").text.clone();
+    assert!(m.contains("m typed in the form"), "{m}");
+}
+
+/// Type `value` for `field` in the form (`m`), then close it.
+fn set_setting(a: &mut App, field: bouncelab::tui::physical::Field, value: f64) {
+    use bouncelab::tui::physical::Field;
+    a.update(Action::OpenForm);
+    let n = Field::ALL.iter().position(|&f| f == field).unwrap();
+    for _ in 0..n {
+        a.update(Action::FormMove(bouncelab::tui::action::Scroll::Down));
+    }
+    a.update(Action::FormEdit);
+    a.update(Action::InputClear);
+    for c in value.to_string().chars() {
+        a.update(Action::InputChar(c));
+    }
+    a.update(Action::InputSubmit);
+    a.update(Action::CloseHelp);
+}

@@ -215,6 +215,11 @@ fn history_figure(chart: Chart, scene: &Scene) -> Figure {
         }
         fig.insert_before_measured(s);
     }
+    if chart == Chart::ForceTime {
+        for s in labels::result_labels(run) {
+            fig.insert_before_measured(s);
+        }
+    }
     fig
 }
 
@@ -378,6 +383,10 @@ fn speed_figure(scene: &Scene) -> Figure {
     }
     fig
 }
+
+#[path = "explorer_labels.rs"]
+mod labels;
+pub use labels::result_labels;
 
 #[path = "explorer_pins.rs"]
 mod pins;

@@ -132,6 +132,23 @@ pub enum Action {
     FitReady(u64, Result<super::measured::FitOutcome, String>),
     /// `F`: apply the finished fit to the ball, as one undoable change.
     ApplyFit,
+    /// `x`: put the crosshair on the view's first chart; with it on, on the next chart.
+    Crosshair,
+    /// Tab with the crosshair on: the next chart (past the last: off).
+    CrosshairNext,
+    /// Esc with the crosshair on: take it away.
+    CrosshairOff,
+    /// Arrows with the crosshair on: `dx` steps right, `dy` steps up (Shift: ten at once).
+    CrosshairMove {
+        dx: i32,
+        dy: i32,
+    },
+    /// `m`: open the physical-inputs form.
+    OpenForm,
+    /// ↑ / ↓ in the form: the previous / next field.
+    FormMove(Scroll),
+    /// Enter or `=` in the form: type a value for the highlighted field.
+    FormEdit,
     /// Map view, arrows: move the cursor, and the ball with it, by `lambda` cells up and
     /// `zeta` cells right.
     MapCursor {
@@ -175,6 +192,12 @@ pub enum Mode {
     Map,
     /// The preset picker: arrows move, Enter loads, Esc closes.
     Picker,
+    /// The crosshair is on a chart: arrows move it, Tab and `x` go to the next chart, Esc
+    /// takes it away; other keys as in `Normal`.
+    Crosshair,
+    /// The physical-inputs form: arrows select a field, Enter or `=` types its value, Esc
+    /// closes.
+    Form,
 }
 
 /// The action for a terminal event, if any (key presses and repeats; releases are ignored).
@@ -215,13 +238,15 @@ pub fn from_key(key: KeyEvent, mode: Mode) -> Option<Action> {
         },
         Mode::Help => help(key.code),
         Mode::Picker => picker(key.code),
+        Mode::Form => form(key.code),
         Mode::TooSmall => match key.code {
             KeyCode::Char('q') | KeyCode::Esc => Some(Action::Quit),
             _ => None,
         },
-        Mode::Normal | Mode::Map if ctrl => None,
+        Mode::Normal | Mode::Map | Mode::Crosshair if ctrl => None,
         Mode::Normal => normal(key),
         Mode::Map => map(key).or_else(|| normal(key)),
+        Mode::Crosshair => crosshair(key).or_else(|| normal(key)),
     }
 }
 
@@ -276,6 +301,10 @@ fn picker(code: KeyCode) -> Option<Action> {
     }
 }
 
+#[path = "action_modal.rs"]
+mod modal;
+use modal::{crosshair, form};
+
 /// Cells a Shift+arrow moves the map's cursor.
 pub const MAP_LEAP: i32 = 8;
 
@@ -316,6 +345,8 @@ fn normal(key: KeyEvent) -> Option<Action> {
         KeyCode::Char('s') => Some(Action::SavePreset),
         KeyCode::Char('y') => Some(Action::ShowCommand),
         KeyCode::Char('g') => Some(Action::OpenPicker),
+        KeyCode::Char('m') => Some(Action::OpenForm),
+        KeyCode::Char('x') => Some(Action::Crosshair),
         KeyCode::Tab => Some(Action::NextView),
         KeyCode::BackTab => Some(Action::PrevView),
         KeyCode::Char('?') => Some(Action::ToggleHelp),

@@ -6,10 +6,12 @@
 //! `sweeps`, and what the charts are drawn from in `scene`.
 
 mod command;
+mod crosshair;
 mod dialogs;
 mod drop;
 mod edit;
 mod fit;
+mod form;
 mod map;
 mod models;
 mod picker;
@@ -87,6 +89,8 @@ pub struct App {
     size: Option<(u16, u16)>,
     /// The map view's map, quantity, targets and window.
     map: super::map_view::MapView,
+    /// The crosshair (`x`), when it is on.
+    crosshair: Option<super::crosshair::Crosshair>,
 }
 
 impl App {
@@ -133,6 +137,7 @@ impl App {
             config: None,
             size: None,
             map: Default::default(),
+            crosshair: None,
         };
         app.refresh();
         app
@@ -219,12 +224,14 @@ impl App {
         }
         match self.overlay {
             Overlay::None if self.view == View::Map => Mode::Map,
+            Overlay::None if self.crosshair().is_some() => Mode::Crosshair,
             Overlay::None => Mode::Normal,
             // the command box closes, and scrolls nothing, like the help
             Overlay::Help | Overlay::Command(_) => Mode::Help,
             Overlay::Input(_) => Mode::Input,
             Overlay::Confirm(_) => Mode::Confirm,
             Overlay::Picker(_) => Mode::Picker,
+            Overlay::Form(_) => Mode::Form,
         }
     }
 
@@ -257,8 +264,18 @@ impl App {
             Action::Quit => self.quit = true,
             Action::Resize(w, h) => self.resize(w, h),
             Action::HelpScroll(how) => self.scroll_help(how),
-            Action::NextView => self.view = self.view.next(),
-            Action::PrevView => self.view = self.view.prev(),
+            Action::NextView => {
+                self.view = self.view.next();
+                self.crosshair = None;
+            }
+            Action::PrevView => {
+                self.view = self.view.prev();
+                self.crosshair = None;
+            }
+            Action::Crosshair
+            | Action::CrosshairNext
+            | Action::CrosshairOff
+            | Action::CrosshairMove { .. } => self.crosshair_action(action),
             Action::ToggleDrop | Action::DropPause | Action::DropReplay | Action::Tick(_) => {
                 self.drop_action(&action)
             }
@@ -297,6 +314,7 @@ impl App {
             | Action::OpenMeasured
             | Action::ToggleHelp
             | Action::CloseHelp => return self.dialog(action).into_iter().collect(),
+            Action::OpenForm | Action::FormMove(_) | Action::FormEdit => self.form(action),
             Action::MapCursor { .. }
             | Action::MapQuantity
             | Action::MapTargets
@@ -340,7 +358,12 @@ impl App {
                 self.info(format!("reset to the {} preset", self.presets[i].name));
             }
             Action::Pin => self.pin(),
-            Action::ShowCommand => self.overlay = Overlay::Command(self.command_line()),
+            Action::ShowCommand => {
+                self.overlay = Overlay::Command(self.command_line());
+                if let Some(w) = super::command::not_carried(self.preset(), &self.setting) {
+                    self.warn(w);
+                }
+            }
             Action::Unpin => self.unpin(),
             Action::Undo => match self.undo.pop() {
                 Some(previous) => {

@@ -47,13 +47,50 @@ pub fn run_line(source: Source, preset: &Preset, setting: &Setting) -> String {
     }
     let base = preset.params();
     let p = &setting.params;
-    if p.k_r != base.k_r || p.damping != base.damping {
+    // K_p and z_p typed in the form (`m`) are `run`'s overrides; λ and ζ below are then taken
+    // on the overridden ball, as `run` applies --lambda/--zeta after --k-p/--z-p
+    for (option, now, was) in [("--k-p", p.k_p, base.k_p), ("--z-p", p.z_p, base.z_p)] {
+        if now != was {
+            words.extend([option.into(), number(now)]);
+        }
+    }
+    if p.mass != base.mass {
+        // `run` runs the preset's mass: K_r and c as they are, not λ and ζ, which would move
+        // them with it (see `not_carried`)
+        for (option, now, was) in [
+            ("--k-r", p.k_r, base.k_r),
+            ("--damping", p.damping, base.damping),
+        ] {
+            if now != was {
+                words.extend([option.into(), number(now)]);
+            }
+        }
+    } else if p.k_r != base.k_r || p.damping != base.damping {
         for (option, param) in [("--lambda", Param::Lambda), ("--zeta", Param::Zeta)] {
             words.extend([option.into(), number(setting.get(param))]);
         }
     }
     words.extend(["--v0".into(), number(p.v0)]);
     words.join(" ")
+}
+
+/// What the line cannot carry: a mass or radius typed in the form (`m`) — `run` has no such
+/// options and runs the preset's. `None` when the line reproduces the setting.
+pub fn not_carried(preset: &Preset, setting: &Setting) -> Option<String> {
+    let mut off = Vec::new();
+    if setting.params.mass != preset.measured.mass {
+        off.push("m");
+    }
+    if setting.radius != preset.measured.radius {
+        off.push("R");
+    }
+    (!off.is_empty()).then(|| {
+        format!(
+            "{} typed in the form: `run` has no option for {} and runs the preset's",
+            off.join(" and "),
+            if off.len() > 1 { "them" } else { "it" }
+        )
+    })
 }
 
 /// The `#` lines an export's CSV files start with: the command, the ball and law, every

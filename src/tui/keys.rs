@@ -2,7 +2,7 @@
 //! `update` needs to stop the help's scrolling at its end.
 
 /// (keys, what they do); a row without text is a section heading.
-pub const KEYS: [(&str, &str); 45] = [
+pub const KEYS: [(&str, &str); 55] = [
     ("l / L", "λ up / down (±0.01, coarse ±0.1)"),
     ("z / Z", "ζ up / down (×1.1, coarse ×2)"),
     ("v / V", "v0 up / down (±0.1, coarse ±1 m/s)"),
@@ -14,6 +14,8 @@ pub const KEYS: [(&str, &str); 45] = [
     ("1 2 3", "load superball, golf, baseball"),
     ("4", "the start preset, if another"),
     ("g", "pick a preset (embedded and user)"),
+    ("m", "edit m, R, K_p, K_r, c, z_p, λ, ζ, v0"),
+    ("x", "crosshair: read values off a chart"),
     ("c", "cycle the contact law"),
     ("r", "reset to the preset"),
     ("p / P", "pin this run (≤ 8) / clear pins"),
@@ -42,6 +44,14 @@ pub const KEYS: [(&str, &str); 45] = [
     ("", ""),
     ("In the preset picker (g)", ""),
     ("↑↓ Enter / Esc", "choose, load / close"),
+    ("", ""),
+    ("With the crosshair (x)", ""),
+    ("←→↑↓ Shift: ×10", "move it; it reads x, y and the curve"),
+    ("Tab or x / Esc", "next chart / take it away"),
+    ("", ""),
+    ("In the physical inputs (m)", ""),
+    ("↑↓ Enter or =", "choose a field, type its value"),
+    ("Esc or m", "close (u undoes each value)"),
     ("", ""),
     ("In the value or name entry", ""),
     ("Enter / Esc", "accept / cancel"),

@@ -119,8 +119,9 @@ pub fn preset_for(source: &Preset, setting: &Setting, name: &str) -> (Preset, Ve
         law: setting.law,
         parameters: ParamSource::Adopted,
         measured: Measured {
-            mass: source.measured.mass,
-            radius: source.measured.radius,
+            // the form (`m`) may have changed them: the preset runs as the screen does
+            mass: p.mass,
+            radius: setting.radius,
             v0: p.v0,
             cor: keep(source.measured.cor),
             max_force: keep(source.measured.max_force),

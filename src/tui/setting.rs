@@ -13,6 +13,9 @@ pub struct Setting {
     pub preset: usize,
     pub params: ImpactParams,
     pub law: ContactLaw,
+    /// The ball's radius R (m): the preset's, or typed in the form (`m`); the run is outside
+    /// the model's validity once z_m or α_max exceeds it.
+    pub radius: f64,
 }
 
 impl Setting {
@@ -21,6 +24,7 @@ impl Setting {
             preset: index,
             params: preset.params(),
             law: preset.law,
+            radius: preset.measured.radius,
         }
     }
 

@@ -89,6 +89,8 @@ pub enum Purpose {
     MeasuredPath,
     /// The map view's targets, `cor>=0.8,max_force<=2000` (`t`).
     Targets,
+    /// A field of the physical-inputs form (`m`): Enter returns to the form.
+    Physical(super::physical::Field),
 }
 
 /// The text-entry dialog.
@@ -182,6 +184,8 @@ pub enum Overlay {
     Command(String),
     /// The preset picker (`g`).
     Picker(super::picker::Picker),
+    /// The physical-inputs form (`m`).
+    Form(super::physical::Form),
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

@@ -199,6 +199,7 @@ fn readout<'a>(app: &'a App, pins: &'a [PinView<'a>], tall: bool, theme: Theme) 
         selected: app.selected(),
         coarse: app.coarse(),
         run: app.run(),
+        validity: app.validity(),
         pins,
         tall,
         theme,
@@ -250,6 +251,13 @@ fn render_overlay(app: &App, theme: Theme, area: Rect, buf: &mut Buffer) {
         Overlay::Confirm(confirm) => ConfirmDialog { confirm, theme }.render(area, buf),
         Overlay::Command(line) => CommandBox { line, theme }.render(area, buf),
         Overlay::Picker(picker) => PickerBox { picker, theme }.render(area, buf),
+        Overlay::Form(form) => crate::tui::widgets::form::FormBox {
+            form: *form,
+            setting: app.setting(),
+            warning: app.validity(),
+            theme,
+        }
+        .render(area, buf),
     }
 }
 
@@ -301,8 +309,12 @@ impl Widget for &App {
             map_panel(self, theme).render(s.chart_area, buf);
         }
         let scene = self.scene();
+        let cross = self.crosshair();
         for (chart, rect) in &s.charts {
-            let fig = explorer::figure(*chart, &scene);
+            let mut fig = explorer::figure(*chart, &scene);
+            if let Some(c) = cross.filter(|c| self.view().charts().get(c.chart) == Some(chart)) {
+                super::crosshair::draw_on(c, &mut fig);
+            }
             Plot::new(&fig, theme).render(*rect, buf);
         }
         if let (Some(rect), Some(v)) = (s.fit, fit_view(self, theme)) {

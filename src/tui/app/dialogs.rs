@@ -80,6 +80,10 @@ impl App {
                 self.submit_targets(&text);
                 return None;
             }
+            Purpose::Physical(field) => {
+                self.submit_physical(field, &text);
+                return None;
+            }
         };
         if text.is_empty() {
             self.overlay = Overlay::None;
@@ -102,10 +106,13 @@ impl App {
     }
 
     pub(super) fn cancel_input(&mut self) {
-        if let Overlay::Input(input) = &self.overlay
-            && input.purpose == Purpose::PresetName
-        {
-            self.info("not saved".into());
+        if let Overlay::Input(input) = &self.overlay {
+            match input.purpose {
+                Purpose::PresetName => self.info("not saved".into()),
+                // Esc in a form field's entry goes back to the form
+                Purpose::Physical(field) => return self.open_form(field),
+                _ => {}
+            }
         }
         self.overlay = Overlay::None;
     }

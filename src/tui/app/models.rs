@@ -7,11 +7,12 @@ use crate::tui::models::ModelsRequest;
 
 impl App {
     /// The calibration the current ball needs: its Christoforou–Yigit COR at v0 as the target,
-    /// the preset's radius. `None` without an impact to calibrate to.
+    /// the ball's radius (the preset's, or typed in the form). `None` without an impact to
+    /// calibrate to.
     pub fn models_target(&self) -> Option<ModelsRequest> {
         let run = self.run.as_ref()?;
-        let radius = self.preset().measured.radius;
         let s = &self.setting;
+        let radius = s.radius;
         Some(ModelsRequest::new(&s.params, s.law, radius, run.cor))
     }
 

@@ -62,6 +62,18 @@ fn render(input: &Input, s: &Setting, theme: &Theme, area: Rect, buf: &mut Buffe
                 62,
             )
         }
+        Purpose::Physical(f) => (
+            format!(" Set {} ", f.symbol()),
+            format!(
+                " range {}, now {} {}",
+                f.range_text(),
+                sig_trim(f.get(s), 6),
+                f.unit()
+            ),
+            format!(" {} = ", f.symbol()),
+            " Enter accepts · Esc back to the form",
+            50,
+        ),
         Purpose::Targets => (
             " Map targets ".to_string(),
             " e.g. cor>=0.8,max_force<=2000 (N, s); empty clears".to_string(),

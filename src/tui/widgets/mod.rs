@@ -6,6 +6,7 @@ pub mod command;
 pub mod confirm;
 pub mod drop;
 pub mod fit;
+pub mod form;
 pub mod help;
 pub mod input;
 pub mod map;

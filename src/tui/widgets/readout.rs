@@ -30,13 +30,15 @@ pub fn compact_height(pins: usize) -> u16 {
 }
 
 /// What the readout shows.
-#[derive(Debug, Clone, Copy)]
+#[derive(Debug, Clone)]
 pub struct Readout<'a> {
     pub preset: &'a Preset,
     pub setting: &'a Setting,
     pub selected: Param,
     pub coarse: bool,
     pub run: Option<&'a ImpactResponse>,
+    /// Why the run is outside the model's validity (z_m or α_max beyond R), if it is.
+    pub validity: Option<String>,
     /// The pinned runs, oldest first: the pin table compares them with this run.
     pub pins: &'a [PinView<'a>],
     /// The tall panel beside the charts, or four compact lines below them.
@@ -147,12 +149,17 @@ impl Readout<'_> {
 
     fn block(&self) -> Block<'static> {
         let p = self.preset;
+        let mut title = vec![Span::styled(
+            format!(" {} · {} ", p.name, p.parameters.name()),
+            self.theme.title(),
+        )];
+        // the short readouts may have no row left for the warning: the title says it
+        if !self.tall && self.validity.is_some() {
+            title.push(Span::styled("beyond R ", self.theme.warning()));
+        }
         Block::bordered()
             .border_style(self.theme.dim())
-            .title(Line::styled(
-                format!(" {} · {} ", p.name, p.parameters.name()),
-                self.theme.title(),
-            ))
+            .title(Line::from(title))
     }
 
     /// The tall panel: parameters, results against the measured values, notes.
@@ -279,6 +286,7 @@ impl Readout<'_> {
     fn notes(&self) -> Vec<Line<'static>> {
         let theme = &self.theme;
         let mut lines = Vec::new();
+        lines.extend(self.validity_line());
         if let Some(r) = self.run {
             let note = match (r.rebound, r.permanent_indentation > 0.0) {
                 (false, _) => " no rebound: the ball sinks into the dashpot",
@@ -341,7 +349,14 @@ impl Readout<'_> {
             compact_row(&rows[3]),
             compact_row(&rows[4])
         )));
+        lines.extend(self.validity_line());
         lines
+    }
+
+    /// The validity warning as a line (it wraps), if the run leaves the model.
+    fn validity_line(&self) -> Option<Line<'static>> {
+        let w = self.validity.as_ref()?;
+        Some(Line::styled(format!(" {w}"), self.theme.warning()))
     }
 
     /// Four lines for narrow terminals.
@@ -383,6 +398,7 @@ impl Readout<'_> {
         } else {
             lines.push(Line::styled(" no result", self.theme.error()));
         }
+        lines.extend(self.validity_line());
         lines.extend(pins::compact(self.pins, &self.now()));
         lines
     }

@@ -1,0 +1,86 @@
+//! The physical-inputs form (`m`) as part of [`App::update`]: the highlighted field moves,
+//! Enter types a value through the value entry, and each accepted value is one undoable change.
+
+use super::{App, Overlay, Purpose};
+use crate::cli::number::number;
+use crate::text::sig_trim;
+use crate::tui::action::{Action, Scroll};
+use crate::tui::physical::{self, Field, Form};
+
+impl App {
+    pub(super) fn form(&mut self, action: Action) {
+        match action {
+            Action::OpenForm => self.open_form(Field::Mass),
+            Action::FormMove(how) => {
+                if let Overlay::Form(f) = &mut self.overlay {
+                    f.selected = match how {
+                        Scroll::Up | Scroll::PageUp => f.selected.prev(),
+                        Scroll::Down | Scroll::PageDown => f.selected.next(),
+                        Scroll::Home => Field::ALL[0],
+                        Scroll::End => Field::ALL[Field::ALL.len() - 1],
+                    };
+                }
+            }
+            Action::FormEdit => {
+                if let Overlay::Form(f) = self.overlay {
+                    let now = sig_trim(f.selected.get(&self.setting), 6);
+                    self.open_input(Purpose::Physical(f.selected), now);
+                }
+            }
+            _ => {}
+        }
+    }
+
+    pub(super) fn open_form(&mut self, selected: Field) {
+        self.overlay = Overlay::Form(Form { selected });
+        if let Some(w) = self.validity() {
+            self.warn(w);
+        }
+    }
+
+    /// Enter in a form field's entry: an accepted value is one undoable change and the form
+    /// comes back; a refused one keeps the entry open with the reason and the range.
+    pub(super) fn submit_physical(&mut self, field: Field, text: &str) {
+        if text.is_empty() {
+            self.open_form(field);
+            return;
+        }
+        let checked = number(text)
+            .map_err(|e| {
+                format!(
+                    "{e}; {} kept (range {})",
+                    field.symbol(),
+                    field.range_text()
+                )
+            })
+            .and_then(|v| field.check(v, &self.setting));
+        match checked {
+            Ok(next) => {
+                self.change(next);
+                // the run the warning reads is the new one
+                self.refresh_run();
+                self.open_form(field);
+                if self.message.is_none() {
+                    self.info(format!(
+                        "{} = {} {}",
+                        field.symbol(),
+                        sig_trim(field.get(&self.setting), 6),
+                        field.unit()
+                    ));
+                }
+            }
+            Err(why) => {
+                if let Overlay::Input(input) = &mut self.overlay {
+                    input.error = Some(why.clone());
+                }
+                self.warn(why);
+            }
+        }
+    }
+
+    /// Whether the current run leaves the model's validity (z_m or α_max beyond R), and by
+    /// how much: [`physical::validity`] on the run's own numbers.
+    pub fn validity(&self) -> Option<String> {
+        physical::validity(self.run.as_ref()?, self.setting.radius)
+    }
+}

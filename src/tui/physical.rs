@@ -1,0 +1,220 @@
+//! The physical inputs the form (`m`) edits — m, R, K_p, K_r, c, z_p besides λ, ζ, v0 — their
+//! checks, and whether a run stays inside the model's validity (indentation and ball
+//! displacement below the radius).
+//!
+//! Each value is checked by the command line's own path: K_p, c, K_r, z_p by
+//! [`crate::api::Overrides::apply`] (as `run --k-p/--damping/--k-r/--z-p`, K_h following K_p
+//! and z_p by Eq. 16), m by `check_positive`, λ, ζ, v0 by [`Param::check`]; then the whole set
+//! by [`ImpactParams::validate`]. Refused, never clamped: the message names the range.
+
+use super::param::Param;
+use super::setting::Setting;
+use crate::api::Overrides;
+use crate::model::params::{self, ImpactParams, MEANINGFUL_MAX, MEANINGFUL_MIN};
+use crate::solver::ImpactResponse;
+use crate::text::{short, sig_trim};
+
+/// A field of the form, in the order shown.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Field {
+    Mass,
+    Radius,
+    KP,
+    KR,
+    C,
+    ZP,
+    Lambda,
+    Zeta,
+    V0,
+}
+
+impl Field {
+    pub const ALL: [Field; 9] = [
+        Field::Mass,
+        Field::Radius,
+        Field::KP,
+        Field::KR,
+        Field::C,
+        Field::ZP,
+        Field::Lambda,
+        Field::Zeta,
+        Field::V0,
+    ];
+
+    pub fn symbol(self) -> &'static str {
+        match self {
+            Field::Mass => "m",
+            Field::Radius => "R",
+            Field::KP => "K_p",
+            Field::KR => "K_r",
+            Field::C => "c",
+            Field::ZP => "z_p",
+            Field::Lambda => "λ",
+            Field::Zeta => "ζ",
+            Field::V0 => "v0",
+        }
+    }
+
+    /// The SI unit values are typed in (as the command line's overrides take them).
+    pub fn unit(self) -> &'static str {
+        match self {
+            Field::Mass => "kg",
+            Field::Radius | Field::ZP => "m",
+            Field::KP | Field::KR => "N/m",
+            Field::C => "kg/s",
+            Field::V0 => "m/s",
+            Field::Lambda | Field::Zeta => "",
+        }
+    }
+
+    /// The live parameter this field is, if it is one.
+    fn live(self) -> Option<Param> {
+        match self {
+            Field::Lambda => Some(Param::Lambda),
+            Field::Zeta => Some(Param::Zeta),
+            Field::V0 => Some(Param::V0),
+            _ => None,
+        }
+    }
+
+    /// The field's value in `s` (SI).
+    pub fn get(self, s: &Setting) -> f64 {
+        let p = &s.params;
+        match self {
+            Field::Mass => p.mass,
+            Field::Radius => s.radius,
+            Field::KP => p.k_p,
+            Field::KR => p.k_r,
+            Field::C => p.damping,
+            Field::ZP => p.z_p,
+            Field::Lambda | Field::Zeta | Field::V0 => self.live().map_or(f64::NAN, |q| s.get(q)),
+        }
+    }
+
+    /// The range the command line holds a positive input to, e.g. "1e-15 … 1e15 N/m".
+    pub fn range_text(self) -> String {
+        match self.live() {
+            Some(p) => p.range_text(),
+            None => format!(
+                "{} … {} {}",
+                short(MEANINGFUL_MIN, 4),
+                short(MEANINGFUL_MAX, 4),
+                self.unit()
+            ),
+        }
+    }
+
+    /// `s` with this field set to `value`, if the command line takes it; or why not, with the
+    /// range. K_p, K_r, c, z_p go through [`Overrides::apply`]; m keeps λ and ζ's meaning only
+    /// through K_p and c, as `run` does (ζ moves with m).
+    pub fn check(self, value: f64, s: &Setting) -> Result<Setting, String> {
+        if let Some(p) = self.live() {
+            let params = p.check(value, &s.params)?;
+            return Ok(Setting {
+                params,
+                ..s.clone()
+            });
+        }
+        let refuse =
+            |e: String| format!("{e}; {} kept (range {})", self.symbol(), self.range_text());
+        let mut next = s.clone();
+        match self {
+            Field::Mass => {
+                params::check_positive(params::Field::Mass, value)
+                    .map_err(|e| refuse(e.to_string()))?;
+                next.params.mass = value;
+            }
+            Field::Radius => {
+                if !(MEANINGFUL_MIN..=MEANINGFUL_MAX).contains(&value) {
+                    let shown = if value.is_finite() {
+                        sig_trim(value, 6)
+                    } else {
+                        "that".into()
+                    };
+                    return Err(refuse(format!("invalid R: {shown}")));
+                }
+                next.radius = value;
+            }
+            _ => {
+                let o = self.overrides(value);
+                o.apply(&mut next.params)
+                    .map_err(|e| refuse(e.to_string()))?;
+            }
+        }
+        next.params.validate().map_err(|e| refuse(e.to_string()))?;
+        Ok(next)
+    }
+
+    fn overrides(self, v: f64) -> Overrides {
+        let mut o = Overrides::default();
+        match self {
+            Field::KP => o.k_p = Some(v),
+            Field::KR => o.k_r = Some(v),
+            Field::C => o.damping = Some(v),
+            Field::ZP => o.z_p = Some(v),
+            _ => {}
+        }
+        o
+    }
+
+    /// The field after this one (↓), wrapping.
+    pub fn next(self) -> Field {
+        let i = Field::ALL.iter().position(|&f| f == self).unwrap_or(0);
+        Field::ALL[(i + 1) % Field::ALL.len()]
+    }
+
+    /// The field before this one (↑), wrapping.
+    pub fn prev(self) -> Field {
+        let n = Field::ALL.len();
+        let i = Field::ALL.iter().position(|&f| f == self).unwrap_or(0);
+        Field::ALL[(i + n - 1) % n]
+    }
+}
+
+/// The form's state: which field is highlighted.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Form {
+    pub selected: Field,
+}
+
+/// The derived quantities the form shows: ω0 = √(K_p/m) (rad/s), z̄_p = z_p ω0/v0, λ, ζ.
+pub fn derived(p: &ImpactParams) -> [(&'static str, f64); 4] {
+    let n = p.normalized();
+    [
+        ("ω0 rad/s", p.omega0()),
+        ("z̄_p", n.zp_bar),
+        ("λ", n.lambda),
+        ("ζ", n.zeta),
+    ]
+}
+
+/// Where a run leaves the model's validity: the contact model is a small-deformation model,
+/// so a peak indentation z_m or a peak ball displacement α_max beyond the radius R is outside
+/// it. From the run's own numbers (z_m from the solver, α_max the largest sampled α).
+pub fn validity(run: &ImpactResponse, radius: f64) -> Option<String> {
+    let z_m = run.max_indentation;
+    let alpha = run
+        .history
+        .displacement
+        .iter()
+        .copied()
+        .fold(f64::NAN, f64::max);
+    let mm = |x: f64| sig_trim(x * 1e3, 3);
+    let mut over = Vec::new();
+    if z_m > radius {
+        over.push(format!("z_m {} mm", mm(z_m)));
+    }
+    if alpha > radius {
+        over.push(format!("α_max {} mm", mm(alpha)));
+    }
+    let worst = z_m.max(alpha);
+    (!over.is_empty()).then(|| {
+        format!(
+            "outside the model: {} > R {} mm (by {} mm, ×{})",
+            over.join(", "),
+            mm(radius),
+            mm(worst - radius),
+            sig_trim(worst / radius, 3)
+        )
+    })
+}

@@ -1,0 +1,96 @@
+//! The physical-inputs form (`m`): each field with its value and unit, the highlighted one
+//! marked ▶, the derived ω0, z̄_p, λ, ζ of the current values, and the validity warning when the
+//! run leaves the model (z_m or α_max beyond R).
+
+use crate::text::sig_trim;
+use crate::tui::physical::{self, Field, Form};
+use crate::tui::setting::Setting;
+use crate::tui::theme::Theme;
+use ratatui::buffer::Buffer;
+use ratatui::layout::Rect;
+use ratatui::text::{Line, Span};
+use ratatui::widgets::{Block, Clear, Paragraph, Widget, Wrap};
+
+/// The form, centred on the area it is given.
+#[derive(Debug, Clone)]
+pub struct FormBox<'a> {
+    pub form: Form,
+    pub setting: &'a Setting,
+    /// Why the current run is outside the model, if it is ([`physical::validity`]).
+    pub warning: Option<String>,
+    pub theme: Theme,
+}
+
+impl Widget for &FormBox<'_> {
+    fn render(self, area: Rect, buf: &mut Buffer) {
+        let w = 46.min(area.width);
+        let inner = usize::from(w.saturating_sub(2));
+        let mut lines = self.field_lines();
+        let d = physical::derived(&self.setting.params);
+        let derived: Vec<String> = d
+            .iter()
+            .map(|(name, v)| format!("{name} {}", sig_trim(*v, 4)))
+            .collect();
+        lines.push(Line::styled(
+            format!(" {}  {}", derived[0], derived[1]),
+            self.theme.dim(),
+        ));
+        lines.push(Line::styled(
+            format!(" {}  {}", derived[2], derived[3]),
+            self.theme.dim(),
+        ));
+        let warning = self
+            .warning
+            .as_deref()
+            .map(|t| crate::tui::format::wrap(t, inner.saturating_sub(1)))
+            .unwrap_or_default();
+        for l in &warning {
+            lines.push(Line::styled(format!(" {l}"), self.theme.warning()));
+        }
+        lines.push(Line::styled(
+            " ↑↓ field · Enter/= type · Esc closes",
+            self.theme.dim(),
+        ));
+        let h = (lines.len() as u16 + 2).min(area.height);
+        let popup = Rect::new(
+            area.x + (area.width - w) / 2,
+            area.y + (area.height - h) / 2,
+            w,
+            h,
+        );
+        Clear.render(popup, buf);
+        let title = Line::styled(" Physical inputs (SI) ", self.theme.title());
+        Paragraph::new(lines)
+            .block(Block::bordered().title(title))
+            .wrap(Wrap { trim: false })
+            .render(popup, buf);
+    }
+}
+
+impl FormBox<'_> {
+    fn field_lines(&self) -> Vec<Line<'static>> {
+        Field::ALL
+            .iter()
+            .map(|&f| {
+                let here = f == self.form.selected;
+                let style = if here {
+                    self.theme.selected()
+                } else {
+                    ratatui::style::Style::default()
+                };
+                Line::from(vec![
+                    Span::raw(if here { "▶" } else { " " }),
+                    Span::styled(
+                        format!(
+                            "{:<4}{:>12} {}",
+                            f.symbol(),
+                            sig_trim(f.get(self.setting), 6),
+                            f.unit()
+                        ),
+                        style,
+                    ),
+                ])
+            })
+            .collect()
+    }
+}
