@@ -30,9 +30,7 @@ impl Ball {
     /// let ball = Ball::from_preset("superball")?;
     /// // the model's own COR at three speeds: the fit returns the preset's K_r and z_p
     /// let rows = ball.sweep_velocity(&[1.0, 3.0, 6.0])?;
-    /// let points: Vec<CorPoint> = rows.iter().map(|r| CorPoint {
-    ///     v0: r.v0, cor: r.cor, cor_sd: None, max_force: None, contact_time: None, line: 0,
-    /// }).collect();
+    /// let points: Vec<CorPoint> = rows.iter().map(|r| CorPoint::new(r.v0, r.cor)).collect();
     /// let f = ball.fit(FitData::Cor(&points), None)?;
     /// assert_eq!(f.fitted[0].name, "k_r");
     /// assert!((f.fitted[0].value / ball.params.k_r - 1.0).abs() < 1e-4);
@@ -86,14 +84,7 @@ impl Ball {
             .iter()
             .map(|&(h, r)| {
                 let (v0, cor) = drop_to_cor(h, r, &flight);
-                CorPoint {
-                    v0,
-                    cor,
-                    cor_sd: None,
-                    max_force: None,
-                    contact_time: None,
-                    line: 0,
-                }
+                CorPoint::new(v0, cor)
             })
             .collect())
     }

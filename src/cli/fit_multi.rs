@@ -113,14 +113,7 @@ fn load(a: &FitArgs, source: &Source, ball: &Ball) -> anyhow::Result<Loaded> {
                     output::num(*e)
                 );
             }
-            let pt = CorPoint {
-                v0: ball.params.v0,
-                cor: *e,
-                cor_sd: None,
-                max_force: None,
-                contact_time: None,
-                line: 0,
-            };
+            let pt = CorPoint::new(ball.params.v0, *e);
             Loaded {
                 kind: "COR",
                 file: None,

@@ -62,6 +62,20 @@ pub struct CorPoint {
     pub line: usize,
 }
 
+impl CorPoint {
+    /// A COR `cor` at `v0` (m/s) with nothing else measured, not from a file (line 0).
+    pub fn new(v0: f64, cor: f64) -> CorPoint {
+        CorPoint {
+            v0,
+            cor,
+            cor_sd: None,
+            max_force: None,
+            contact_time: None,
+            line: 0,
+        }
+    }
+}
+
 /// COR against impact speed.
 #[derive(Debug, Clone, PartialEq)]
 pub struct CorTable {

@@ -115,7 +115,11 @@ pub fn request(
         Data::Cor(t) => FitInput::Cor(t.points.clone()),
         data => {
             let pts = overlay::cor_points(data).unwrap_or_default();
-            FitInput::Cor(pts.into_iter().map(|(v0, cor)| point(v0, cor)).collect())
+            FitInput::Cor(
+                pts.into_iter()
+                    .map(|(v0, cor)| CorPoint::new(v0, cor))
+                    .collect(),
+            )
         }
     };
     let (trace, n) = match &input {
@@ -133,17 +137,6 @@ pub fn request(
         input,
         label: loaded.label.clone(),
     })
-}
-
-fn point(v0: f64, cor: f64) -> CorPoint {
-    CorPoint {
-        v0,
-        cor,
-        cor_sd: None,
-        max_force: None,
-        contact_time: None,
-        line: 0,
-    }
 }
 
 /// Run `r` with the library's fit: the worker's job.
