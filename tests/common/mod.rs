@@ -1,6 +1,8 @@
 //! Helpers for the tests that run the `bouncelab` binary.
 #![allow(dead_code)]
 
+pub mod golden;
+
 use serde_json::Value;
 use std::path::Path;
 use std::process::{Command, Stdio};
