@@ -115,6 +115,39 @@ pub(crate) fn isolated_root(a: [f64; 3]) -> (f64, f64, f64) {
     (x, p1, p0)
 }
 
+/// The one real root of the cubic (a_i ≥ 0) where the other two are a complex pair, and the
+/// deflated quadratic (p1, p0), as [`isolated_root`] gives them, without its bracketed
+/// search: Cardano's root (u − p/3u with u the cube root free of cancellation) polished by
+/// Newton on the full cubic, where the root is simple. `None` where the discriminant leaves
+/// three real roots, or the polish does not settle: [`isolated_root`] answers there.
+pub(crate) fn lone_real_root(a: [f64; 3]) -> Option<(f64, f64, f64)> {
+    let [a2, a1, a0] = a;
+    let shift = a2 / 3.0;
+    // s = t − a2/3: t³ + p t + q = 0
+    let p = a1 - a2 * shift;
+    let q = (2.0 * shift * shift - a1) * shift + a0;
+    let disc = 0.25 * q * q + p * p * p / 27.0;
+    if disc.is_nan() || disc <= 0.0 {
+        return None;
+    }
+    let u = (-0.5 * q - q.signum() * disc.sqrt()).cbrt();
+    if u == 0.0 {
+        return None;
+    }
+    let mut r = u - p / (3.0 * u) - shift;
+    for _ in 0..4 {
+        let v = ((r + a2) * r + a1) * r + a0;
+        let dv = (3.0 * r + 2.0 * a2) * r + a1;
+        let step = v / dv;
+        r -= step;
+        if step.abs() <= 4.0 * f64::EPSILON * r.abs() {
+            let (p1, p0) = deflate(a, r);
+            return Some((r, p1, p0));
+        }
+    }
+    None
+}
+
 /// Roots of s³ + a2 s² + a1 s + a0 with a_i ≥ 0.
 pub fn cubic_roots(a: [f64; 3]) -> Roots {
     let (r, p1, p0) = isolated_root(a);
