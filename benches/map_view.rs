@@ -12,12 +12,15 @@
 //!   worker does them), then one draw: the time to the full-detail picture, without the
 //!   event loop's poll (≤ 5 ms while a map is refined) and the coarser frames in between.
 //! - `cursor`: `→` moves the cursor a cell: one impact and the sensitivities, no new map.
+//! - `full_detail_tennis`: `full_detail` for the tennis ball, which flattens over much of its
+//!   map (those cells take the exact solver, the others the closed form).
 //! - `draw`: the render alone of the complete map.
 
 use bouncelab::preset::Preset;
 use bouncelab::tui::action::Action;
 use bouncelab::tui::app::App;
 use bouncelab::tui::param::{Dir, Param};
+use bouncelab::tui::state::View;
 use divan::Bencher;
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
@@ -34,17 +37,26 @@ const AREA: Rect = Rect {
     height: 60,
 };
 
-/// The superball in the map view at 200 × 60, its map complete; with the background worker
+/// A preset in the map view at 200 × 60, its map complete; with the background worker
 /// (`update` then evaluates only a new map's first pass) or without (every pass).
-fn start(background: bool) -> App {
-    let mut app = App::new(Preset::embedded().remove(0), true);
+fn start_with(preset: &str, background: bool) -> App {
+    let preset = Preset::embedded_all()
+        .into_iter()
+        .find(|p| p.name == preset);
+    let mut app = App::new(preset.expect("an embedded preset"), true);
     app.update(Action::Resize(AREA.width, AREA.height));
-    app.update(Action::NextView);
-    app.update(Action::NextView);
+    while app.view() != View::Map {
+        app.update(Action::NextView);
+    }
     if background {
         app = app.with_background_sweeps();
     }
     app
+}
+
+/// The superball (the explorer's default) in the map view.
+fn start(background: bool) -> App {
+    start_with("superball", background)
 }
 
 const V_UP: Action = Action::Step {
@@ -69,6 +81,12 @@ fn first_picture(b: Bencher) {
 #[divan::bench]
 fn full_detail(b: Bencher) {
     key_and_draw(b, start(false), V_UP);
+}
+
+/// The tennis ball flattens over much of its map: those cells take the exact solver.
+#[divan::bench]
+fn full_detail_tennis(b: Bencher) {
+    key_and_draw(b, start_with("tennis", false), V_UP);
 }
 
 #[divan::bench]

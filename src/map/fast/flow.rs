@@ -29,7 +29,13 @@ pub(super) struct Flow {
     /// The antiderivative of e^{−στ}(−A C + D S) is e^{−στ}(P C + Q S).
     p: f64,
     q: f64,
+    /// z̄^{(k)} = A r^k e^{rτ} + c_k e^{−στ} C + s_k e^{−στ} S, k < [`JET`]: rows (A r^k, c_k,
+    /// s_k), so that a jet's entries are independent sums, not a chain.
+    jet: [[f64; 3]; JET],
 }
+
+/// The most derivatives a jet gives (z̄ … z̄^{(5)}).
+pub(super) const JET: usize = 6;
 
 /// The flow's transcendental values at one τ: e^{rτ}, e^{−στ} C(τ) and e^{−στ} S(τ).
 #[derive(Clone, Copy)]
@@ -91,6 +97,14 @@ impl Flow {
         let q = b + sigma * p;
         let size = [sa, sd, sp, sa + sigma.abs() * sp];
         let omega = if omega2 > 0.0 { omega2.sqrt() } else { 0.0 };
+        // (e^{−στ}(c C + s S))' = e^{−στ}((s − σc) C + (−ω² c − σs) S), as u = (C, S) has
+        // u' = (−ω² S, C)
+        let mut jet = [[0.0; 3]; JET];
+        let (mut ar, mut c, mut s) = (a, -a, d);
+        for row in &mut jet {
+            *row = [ar, c, s];
+            (ar, c, s) = (ar * r, s - sigma * c, -omega2 * c - sigma * s);
+        }
         Some(Flow {
             size,
             r,
@@ -101,6 +115,7 @@ impl Flow {
             d,
             p,
             q,
+            jet,
         })
     }
 
@@ -147,23 +162,37 @@ impl Flow {
         }
     }
 
-    /// (z̄, z̄', …, z̄^{(N−1)}) at a point.
-    pub fn jet<const N: usize>(&self, pt: &Point) -> [f64; N] {
-        let (s, w2) = (self.sigma, self.omega2);
-        // g = −A C + D S and its derivatives, all under e^{−στ}: with u = (C, S),
-        // u' = (−ω² S, C), and (e^{−στ} g)' = e^{−στ}(g' − σ g)
-        let mut g = -self.a * pt.ec + self.d * pt.es;
-        let mut dg = self.a * w2 * pt.es + self.d * pt.ec;
-        let mut ex = self.a * pt.real;
-        let mut out = [0.0; N];
-        for o in &mut out {
-            *o = ex + g;
-            // next derivative: (g, g') → (g' − σ g, g'' − σ g') with g'' = −ω² g
-            let (ng, ndg) = (dg - s * g, -w2 * g - s * dg);
-            (g, dg) = (ng, ndg);
-            ex *= self.r;
+    /// The point `h` after `pt` where the pair oscillates and every rate times h is small
+    /// (≤ [`SMALL`]): e^{rh}, e^{−σh}, cos ωh and sin(ωh)/ω by their series, the pair's
+    /// values turned by the angle sum (C(τ+h) = C cos ωh − ω² S S(h), S(τ+h) = S cos ωh +
+    /// C S(h)): a few dozen multiplications where [`Flow::at`] takes `sin_cos` and two `exp`.
+    /// `None` otherwise.
+    pub fn shift(&self, pt: &Point, h: f64) -> Option<Point> {
+        let rate = self.r.abs().max(self.sigma.abs()).max(self.omega);
+        if !(self.omega > 0.0 && rate * h.abs() <= SMALL) {
+            return None;
         }
-        out
+        let (cos, sinc) = cos_sinc(self.omega * h);
+        let (s_h, decay) = (h * sinc, exp_small(-self.sigma * h));
+        let (ec, es) = (
+            pt.ec * cos - self.omega2 * pt.es * s_h,
+            pt.es * cos + pt.ec * s_h,
+        );
+        Some(Point {
+            t: pt.t + h,
+            real: pt.real * exp_small(self.r * h),
+            decay: pt.decay * decay,
+            ec: ec * decay,
+            es: es * decay,
+        })
+    }
+
+    /// (z̄, z̄', …, z̄^{(N−1)}) at a point, N ≤ [`JET`].
+    pub fn jet<const N: usize>(&self, pt: &Point) -> [f64; N] {
+        std::array::from_fn(|k| {
+            let [ar, c, s] = self.jet[k];
+            ar * pt.real + c * pt.ec + s * pt.es
+        })
     }
 
     /// A bound on the rounding of z̄(τ) and ∫₀^τ z̄ as evaluated here: ε times the sizes of
@@ -210,6 +239,42 @@ impl Flow {
         };
         real + self.p * pt.ec + self.q * pt.es - self.p
     }
+}
+
+/// Largest |rate × h| for [`Flow::shift`]'s series: eleven terms of e^x leave x¹¹/11! ≈
+/// 1e-21 at x = 1/16.
+const SMALL: f64 = 1.0 / 16.0;
+
+/// 1/k!, k ≤ 13.
+const INV_FACTORIAL: [f64; 14] = {
+    let mut c = [1.0; 14];
+    let mut k = 1;
+    while k < 14 {
+        c[k] = c[k - 1] / k as f64;
+        k += 1;
+    }
+    c
+};
+
+/// eˣ for |x| ≤ [`SMALL`]: Σ xᵏ/k!, k ≤ 10.
+fn exp_small(x: f64) -> f64 {
+    (0..=10)
+        .rev()
+        .fold(0.0, |sum, k| sum * x + INV_FACTORIAL[k])
+}
+
+/// (cos x, sin(x)/x) for |x| ≤ [`SMALL`], each to x¹⁰ (the next terms, x¹²/12! and x¹²/13!,
+/// are below 1e-23).
+fn cos_sinc(x: f64) -> (f64, f64) {
+    let x2 = x * x;
+    let sign = |k: usize| if k.is_multiple_of(2) { 1.0 } else { -1.0 };
+    let cos = (0..=5)
+        .rev()
+        .fold(0.0, |sum, k| sum * x2 + sign(k) * INV_FACTORIAL[2 * k]);
+    let sinc = (0..=5)
+        .rev()
+        .fold(0.0, |sum, k| sum * x2 + sign(k) * INV_FACTORIAL[2 * k + 1]);
+    (cos, sinc)
 }
 
 /// Σ|terms|.

@@ -137,7 +137,7 @@ fn refine_both(flow: &Flow, guesses: [Option<Point>; 2]) -> [Option<Root>; 2] {
                 });
                 *slot = None;
             } else {
-                *point = flow.at(t);
+                *point = flow.shift(point, -h).unwrap_or_else(|| flow.at(t));
             }
         }
         if points.iter().all(Option::is_none) {
