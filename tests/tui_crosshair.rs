@@ -166,3 +166,30 @@ fn a_number_without_unit_reads_without_one() {
     let msg = a.message().unwrap().text.clone();
     assert!(msg.starts_with("+ zeta ") && !msg.contains('–'), "{msg}");
 }
+
+/// The labelled peak force and contact time are whole on screen at every size the explorer
+/// lays out two panes a row or more: near the plot's right edge the label is written
+/// mirrored ("t_f 2.6 ms▲"), its glyph still on its point, never cut ("▲t_").
+#[test]
+fn the_peak_force_and_contact_time_labels_are_never_cut() {
+    let a = App::new(Preset::embedded().remove(0), false);
+    let r = a.run().unwrap();
+    let f_m = format!("F_m {} N", short(r.max_force, 4));
+    let t_f = format!("t_f {} ms", short(r.contact_time.unwrap() * 1e3, 4));
+    for (w, h) in [(80, 24), (100, 30), (120, 40), (200, 60)] {
+        let t = draw(&a, w, h);
+        let screen: String = t
+            .backend()
+            .buffer()
+            .content()
+            .chunks(usize::from(w))
+            .map(|row| row.iter().map(|c| c.symbol()).collect::<String>() + "\n")
+            .collect();
+        for label in [&f_m, &t_f] {
+            assert!(
+                screen.contains(label.as_str()),
+                "{w}×{h}: no '{label}' in\n{screen}"
+            );
+        }
+    }
+}

@@ -280,10 +280,11 @@ impl<'a> Plot<'a> {
                 while taken.contains(&(col, row)) && col + 1 < l.plot.right() {
                     col += 1;
                 }
-                let room = usize::from(l.plot.right() - col);
+                let (x, text) = marker_text_at(text, col, (l.plot.x, l.plot.right()));
+                let room = usize::from(l.plot.right() - x);
                 let style = self.theme.tone(s.look.tone);
-                let (end, _) = buf.set_stringn(col, row, text, room, style);
-                taken.extend((col..end).map(|c| (c, row)));
+                let (end, _) = buf.set_stringn(x, row, &text, room, style);
+                taken.extend((x..end).map(|c| (c, row)));
             }
         }
     }
@@ -384,5 +385,23 @@ impl Widget for &Plot<'_> {
         self.draw_series(&l, buf);
         self.draw_marks(&l, buf);
         self.draw_legend(&l, buf);
+    }
+}
+
+/// Where a marker's text starts on its row, and the text: from the marker's column when it
+/// fits before the plot's right edge; a labelled marker ("▲t_f 2.6 ms", its glyph first) that
+/// does not is written mirrored, "t_f 2.6 ms▲", so that it ends on its column and the glyph
+/// stays on its point; other texts end at the edge.
+fn marker_text_at(text: &str, col: u16, (left, right): (u16, u16)) -> (u16, String) {
+    let w = text.chars().count() as u16;
+    if col + w <= right {
+        return (col, text.to_string());
+    }
+    let mut chars = text.chars();
+    match chars.next() {
+        Some(glyph @ ('●' | '▲')) if col + 1 >= left + w => {
+            (col + 1 - w, format!("{}{glyph}", chars.as_str()))
+        }
+        _ => (right.saturating_sub(w).max(left), text.to_string()),
     }
 }
