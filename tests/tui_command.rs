@@ -126,6 +126,35 @@ fn moved_parameters_and_law_run_to_the_screen() {
     }
 }
 
+/// A modulus typed in the form (`m`, E) is a K_p = 2π E z_p: the line says `--k-p` and runs to
+/// the screen.
+#[test]
+fn a_typed_modulus_runs_to_the_screen() {
+    use bouncelab::tui::physical::Field;
+    let home = tempfile::tempdir().unwrap();
+    let mut a = app(0);
+    let code = |a: &mut App, c: KeyCode| {
+        if let Some(act) = action::from_key(KeyEvent::new(c, KeyModifiers::NONE), a.mode()) {
+            a.update(act);
+        }
+    };
+    press(&mut a, "m");
+    while !matches!(a.overlay(), Overlay::Form(f) if f.selected == Field::E) {
+        code(&mut a, KeyCode::Down);
+    }
+    press(&mut a, "=");
+    a.update(Action::InputClear);
+    press(&mut a, "3e6");
+    code(&mut a, KeyCode::Enter);
+    press(&mut a, "\u{1b}");
+    assert!(
+        (a.setting().params.k_p / (2.0 * std::f64::consts::PI * 3e6 * 0.004) - 1.0).abs() < 1e-15
+    );
+    let line = shown(&mut a);
+    assert!(line.contains(" --k-p "), "{line}");
+    assert_same_run(&a, &run_json(&line, home.path()));
+}
+
 #[test]
 fn a_start_preset_from_a_file_is_named_by_its_file() {
     let home = tempfile::tempdir().unwrap();

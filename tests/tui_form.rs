@@ -86,6 +86,7 @@ fn a_value_out_of_range_is_refused_with_the_range_never_clamped() {
         (Field::Mass, "0", "1e-15 … 1e15 kg"),
         (Field::Radius, "-1", "1e-15 … 1e15 m"),
         (Field::ZP, "1e999", "1e-15 … 1e15 m"),
+        (Field::E, "-5", "1e-15 … 1e15 Pa"),
         (Field::Lambda, "-1", "0 … 1e6"),
         (Field::V0, "1000000000000000000", "1e-15 … 1e15 m/s"),
     ] {
@@ -204,4 +205,41 @@ fn a_saved_preset_keeps_the_form_values() {
     let back = bouncelab::tui::setting::Setting::from_preset(s.preset, &preset);
     assert_eq!(back.params, s.params);
     assert_eq!(back.radius, 0.03);
+}
+
+/// E is the modulus K_p and z_p imply for an elastomer (K_p = 2π E z_p, Eq. 20): shown so, and
+/// a typed E sets K_p to 2π E z_p with z_p kept and K_h following (as `run --k-p`), one
+/// undoable change.
+#[test]
+fn e_is_the_modulus_k_p_and_z_p_imply_and_a_typed_e_sets_k_p() {
+    let mut a = superball();
+    let p = a.setting().params;
+    let two_pi = 2.0 * std::f64::consts::PI;
+    assert_eq!(Field::E.get(a.setting()), p.k_p / (two_pi * p.z_p));
+    // the superball's adopted K_p and z_p imply E within 2 % of its material's 2.2 MPa
+    assert!((Field::E.get(a.setting()) / 2.2e6 - 1.0).abs() < 0.02);
+    set(&mut a, Field::E, "3e6");
+    let q = a.setting().params;
+    assert_eq!(q.k_p, two_pi * 3e6 * p.z_p);
+    assert_eq!(q.z_p, p.z_p);
+    assert_eq!(
+        q.k_h,
+        bouncelab::model::params::ImpactParams::k_h_matching(q.k_p, q.z_p)
+    );
+    assert!((Field::E.get(a.setting()) / 3e6 - 1.0).abs() < 1e-15);
+    assert_eq!(a.undo_depth(), 1);
+    key(&mut a, KeyCode::Esc);
+    key(&mut a, KeyCode::Char('u'));
+    assert_eq!(a.setting().params, p);
+}
+
+/// A metal ball's K_p follows its yield strength, not E: the field shows "—" and a typed E
+/// is refused with the reason, nothing changed.
+#[test]
+fn a_metal_ball_has_no_e_to_type() {
+    let mut s = superball().setting().clone();
+    s.elastomer = false;
+    assert!(Field::E.get(&s).is_nan());
+    let why = Field::E.check(3e6, &s).unwrap_err();
+    assert!(why.contains("metal") && why.contains("type K_p"), "{why}");
 }

@@ -1,6 +1,12 @@
-//! The physical inputs the form (`m`) edits — m, R, K_p, K_r, c, z_p besides λ, ζ, v0 — their
-//! checks, and whether a run stays inside the model's validity (indentation and ball
+//! The physical inputs the form (`m`) edits — m, R, K_p, K_r, c, z_p, E besides λ, ζ, v0 —
+//! their checks, and whether a run stays inside the model's validity (indentation and ball
 //! displacement below the radius).
+//!
+//! E is the contact modulus as the model ties it to K_p for an elastomer ball: flattening at
+//! the mean pressure p0 = E z_p/R (Eq. 20) gives K_p = 2π E z_p (Eqs. 15–17; docs/model.md
+//! §3). The form shows E = K_p/(2π z_p) of the current values, and a typed E sets K_p = 2π E
+//! z_p, z_p kept: what `run --k-p` with that K_p runs. A metal ball's K_p follows its yield
+//! strength instead (p0 = 2.2 S_y), and its E is not offered.
 //!
 //! Each value is checked by the command line's own path: K_p, c, K_r, z_p by
 //! [`crate::api::Overrides::apply`] (as `run --k-p/--damping/--k-r/--z-p`, K_h following K_p
@@ -23,19 +29,22 @@ pub enum Field {
     KR,
     C,
     ZP,
+    /// The contact modulus E, tied to K_p by K_p = 2π E z_p (elastomers, Eq. 20).
+    E,
     Lambda,
     Zeta,
     V0,
 }
 
 impl Field {
-    pub const ALL: [Field; 9] = [
+    pub const ALL: [Field; 10] = [
         Field::Mass,
         Field::Radius,
         Field::KP,
         Field::KR,
         Field::C,
         Field::ZP,
+        Field::E,
         Field::Lambda,
         Field::Zeta,
         Field::V0,
@@ -49,6 +58,7 @@ impl Field {
             Field::KR => "K_r",
             Field::C => "c",
             Field::ZP => "z_p",
+            Field::E => "E",
             Field::Lambda => "λ",
             Field::Zeta => "ζ",
             Field::V0 => "v0",
@@ -62,6 +72,7 @@ impl Field {
             Field::Radius | Field::ZP => "m",
             Field::KP | Field::KR => "N/m",
             Field::C => "kg/s",
+            Field::E => "Pa",
             Field::V0 => "m/s",
             Field::Lambda | Field::Zeta => "",
         }
@@ -87,6 +98,8 @@ impl Field {
             Field::KR => p.k_r,
             Field::C => p.damping,
             Field::ZP => p.z_p,
+            Field::E if s.elastomer => modulus(p),
+            Field::E => f64::NAN,
             Field::Lambda | Field::Zeta | Field::V0 => self.live().map_or(f64::NAN, |q| s.get(q)),
         }
     }
@@ -126,14 +139,25 @@ impl Field {
             }
             Field::Radius => {
                 if !(MEANINGFUL_MIN..=MEANINGFUL_MAX).contains(&value) {
-                    let shown = if value.is_finite() {
-                        sig_trim(value, 6)
-                    } else {
-                        "that".into()
-                    };
-                    return Err(refuse(format!("invalid R: {shown}")));
+                    return Err(refuse(format!("invalid R: {}", shown(value))));
                 }
                 next.radius = value;
+            }
+            Field::E => {
+                if !s.elastomer {
+                    return Err(
+                        "E sets K_p = 2π E z_p for an elastomer ball only (Eq. 20); this \
+                         ball's material is a metal, whose K_p follows its yield strength: \
+                         type K_p"
+                            .into(),
+                    );
+                }
+                params::check_positive(params::Field::KP, value)
+                    .map_err(|_| refuse(format!("invalid E: {}", shown(value))))?;
+                Field::KP
+                    .overrides(k_p_of(value, s.params.z_p))
+                    .apply(&mut next.params)
+                    .map_err(|e| refuse(e.to_string()))?;
             }
             _ => {
                 let o = self.overrides(value);
@@ -169,6 +193,26 @@ impl Field {
         let i = Field::ALL.iter().position(|&f| f == self).unwrap_or(0);
         Field::ALL[(i + n - 1) % n]
     }
+}
+
+/// A typed value as a refusal shows it.
+fn shown(value: f64) -> String {
+    if value.is_finite() {
+        sig_trim(value, 6)
+    } else {
+        "that".into()
+    }
+}
+
+/// The contact modulus the values imply for an elastomer ball: E = K_p/(2π z_p) (Eq. 20 with
+/// Eqs. 15–17).
+pub fn modulus(p: &ImpactParams) -> f64 {
+    p.k_p / (2.0 * std::f64::consts::PI * p.z_p)
+}
+
+/// K_p = 2π E z_p.
+fn k_p_of(e: f64, z_p: f64) -> f64 {
+    2.0 * std::f64::consts::PI * e * z_p
 }
 
 /// The form's state: which field is highlighted.

@@ -16,6 +16,9 @@ pub struct Setting {
     /// The ball's radius R (m): the preset's, or typed in the form (`m`); the run is outside
     /// the model's validity once z_m or α_max exceeds it.
     pub radius: f64,
+    /// Whether the ball flattens as an elastomer (p0 = E z_p/R, Eq. 20), which ties its
+    /// contact modulus to K_p: K_p = 2π E z_p (the form's E field).
+    pub elastomer: bool,
 }
 
 impl Setting {
@@ -25,6 +28,7 @@ impl Setting {
             params: preset.params(),
             law: preset.law,
             radius: preset.measured.radius,
+            elastomer: preset.material.kind == crate::preset::MaterialKind::Elastomer,
         }
     }
 

@@ -1,5 +1,5 @@
-//! The physical-inputs form (`m`): each field with its value and unit, the highlighted one
-//! marked ▶, the derived ω0, z̄_p, λ, ζ of the current values, and the validity warning when the
+//! The physical-inputs form (`m`): each field with its value and unit (E with the relation
+//! that ties it to K_p, "—" for a metal ball), the highlighted one marked ▶, the derived ω0, z̄_p, λ, ζ of the current values, and the validity warning when the
 //! run leaves the model (z_m or α_max beyond R).
 
 use crate::text::sig_trim;
@@ -78,18 +78,21 @@ impl FormBox<'_> {
                 } else {
                     ratatui::style::Style::default()
                 };
-                Line::from(vec![
+                let v = f.get(self.setting);
+                let value = if v.is_nan() {
+                    "—".into()
+                } else {
+                    sig_trim(v, 6)
+                };
+                let mut spans = vec![
                     Span::raw(if here { "▶" } else { " " }),
-                    Span::styled(
-                        format!(
-                            "{:<4}{:>12} {}",
-                            f.symbol(),
-                            sig_trim(f.get(self.setting), 6),
-                            f.unit()
-                        ),
-                        style,
-                    ),
-                ])
+                    Span::styled(format!("{:<4}{value:>12} {}", f.symbol(), f.unit()), style),
+                ];
+                if f == Field::E {
+                    // what E is in this model: the modulus K_p and z_p imply (Eq. 20)
+                    spans.push(Span::styled("  K_p = 2π E z_p", self.theme.dim()));
+                }
+                Line::from(spans)
             })
             .collect()
     }
