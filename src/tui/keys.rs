@@ -14,7 +14,7 @@ pub const KEYS: [(&str, &str); 55] = [
     ("1 2 3", "load superball, golf, baseball"),
     ("4", "the start preset, if another"),
     ("g", "pick a preset (embedded and user)"),
-    ("m", "edit m, R, K_p, K_r, c, z_p, λ, ζ, v0"),
+    ("m", "edit m, R, K_p, K_r, c, z_p, E, λ, ζ, v0"),
     ("x", "crosshair: read values off a chart"),
     ("c", "cycle the contact law"),
     ("r", "reset to the preset"),
