@@ -12,6 +12,7 @@ mod drop;
 mod edit;
 mod fit;
 mod form;
+mod getters;
 mod map;
 mod models;
 mod picker;
@@ -155,84 +156,6 @@ impl App {
     pub fn with_measured(mut self, m: Vec<crate::figure::explorer::MeasuredOverlay>) -> App {
         self.measured = m;
         self
-    }
-
-    /// Sweeps still to come from the background worker.
-    pub fn speed_requests(&self) -> &[SpeedRequest] {
-        &self.speed_wanted
-    }
-
-    pub fn presets(&self) -> &[Preset] {
-        &self.presets
-    }
-    pub fn preset(&self) -> &Preset {
-        &self.presets[self.setting.preset]
-    }
-    pub fn setting(&self) -> &Setting {
-        &self.setting
-    }
-    pub fn selected(&self) -> Param {
-        self.selected
-    }
-    pub fn coarse(&self) -> bool {
-        self.coarse
-    }
-    pub fn view(&self) -> View {
-        self.view
-    }
-    pub fn overlay(&self) -> &Overlay {
-        &self.overlay
-    }
-    pub fn message(&self) -> Option<&Message> {
-        self.message.as_ref()
-    }
-    pub fn color(&self) -> bool {
-        self.color
-    }
-    /// The pinned runs, oldest first: `p1` is the first.
-    pub fn pins(&self) -> &[Ghost] {
-        &self.pins
-    }
-    /// The latest pin.
-    pub fn ghost(&self) -> Option<&Ghost> {
-        self.pins.last()
-    }
-    pub fn undo_depth(&self) -> usize {
-        self.undo.len()
-    }
-    /// The first help line shown.
-    pub fn help_scroll(&self) -> u16 {
-        self.help_scroll
-    }
-    pub fn should_quit(&self) -> bool {
-        self.quit
-    }
-    pub fn run(&self) -> Option<&ImpactResponse> {
-        self.run.as_ref()
-    }
-    pub fn zeta_curve(&self) -> Option<&ZetaCurve> {
-        self.zeta.as_ref()
-    }
-    pub fn speed_curve(&self) -> Option<&SpeedCurve> {
-        self.speed.as_ref()
-    }
-
-    /// What the keyboard is talking to.
-    pub fn mode(&self) -> Mode {
-        if self.too_small() {
-            return Mode::TooSmall;
-        }
-        match self.overlay {
-            Overlay::None if self.view == View::Map => Mode::Map,
-            Overlay::None if self.crosshair().is_some() => Mode::Crosshair,
-            Overlay::None => Mode::Normal,
-            // the command box closes, and scrolls nothing, like the help
-            Overlay::Help | Overlay::Command(_) => Mode::Help,
-            Overlay::Input(_) => Mode::Input,
-            Overlay::Confirm(_) => Mode::Confirm,
-            Overlay::Picker(_) => Mode::Picker,
-            Overlay::Form(_) => Mode::Form,
-        }
     }
 
     /// Apply one action and bring the curves up to date; returns what the event loop is to
