@@ -1,0 +1,121 @@
+//! The readout's short forms: lines beside a chart at 80 × 24 (`narrow`) and the four lines
+//! below the charts on narrow terminals (`compact`).
+
+use super::{Readout, Row, results};
+use crate::text::{sig, sig_trim};
+use crate::tui::format::percent_diff;
+use crate::tui::param::Param;
+use crate::tui::widgets::pins;
+use ratatui::text::{Line, Span};
+
+impl Readout<'_> {
+    /// λ, ζ and v0, each styled as selected or not.
+    fn knobs(&self) -> [Span<'static>; 3] {
+        let s = self.setting;
+        let n = s.params.normalized();
+        let p = |param: Param, text: String| Span::styled(text, self.param_style(param));
+        [
+            p(Param::Lambda, format!("λ {}", sig(n.lambda, 4))),
+            p(Param::Zeta, format!("ζ {}", sig(n.zeta, 4))),
+            p(Param::V0, format!("v0 {} m/s", sig_trim(s.params.v0, 4))),
+        ]
+    }
+
+    /// Short lines, one or two quantities each, for a pane beside a chart (80×24).
+    pub(super) fn narrow(&self) -> Vec<Line<'static>> {
+        let s = self.setting;
+        let [lambda, zeta, v0] = self.knobs();
+        let mut lines = vec![
+            Line::from(vec![Span::raw(" "), lambda, Span::raw("  "), zeta]),
+            Line::from(vec![
+                Span::raw(" "),
+                v0,
+                Span::raw(format!("  {} law", s.law)),
+            ]),
+            Line::raw(format!(
+                " K_p {} N/m  K_r {} N/m",
+                sig(s.params.k_p, 3),
+                sig(s.params.k_r, 3)
+            )),
+            Line::raw(format!(" c {} kg/s", sig(s.params.damping, 3))),
+        ];
+        let rows = results(self.preset, self.run, s.params.v0);
+        if rows.len() < 5 {
+            lines.push(Line::styled(" no result", self.theme.error()));
+            return lines;
+        }
+        for (row, unit) in rows[..3].iter().zip(["", " N", " ms"]) {
+            lines.push(Line::raw(format!(" {}{unit}", compact_row(row))));
+        }
+        lines.push(Line::raw(format!(
+            " {} mm  {} mm",
+            compact_row(&rows[3]),
+            compact_row(&rows[4])
+        )));
+        lines.extend(self.validity_line());
+        lines
+    }
+
+    /// The validity warning as a line (it wraps), if the run leaves the model.
+    pub(super) fn validity_line(&self) -> Option<Line<'static>> {
+        let w = self.validity.as_ref()?;
+        Some(Line::styled(format!(" {w}"), self.theme.warning()))
+    }
+
+    /// Four lines for narrow terminals.
+    pub(super) fn compact(&self) -> Vec<Line<'static>> {
+        let s = self.setting;
+        let [lambda, zeta, v0] = self.knobs();
+        let mut lines = vec![
+            Line::from(vec![
+                Span::raw(" "),
+                lambda,
+                Span::raw("  "),
+                zeta,
+                Span::raw("  "),
+                v0,
+                Span::raw(format!("  {}", s.law)),
+            ]),
+            Line::raw(format!(
+                " K_p {} N/m  K_r {} N/m  c {} kg/s",
+                sig(s.params.k_p, 3),
+                sig(s.params.k_r, 3),
+                sig(s.params.damping, 3)
+            )),
+        ];
+        let rows = results(self.preset, self.run, self.setting.params.v0);
+        let fmt = compact_row;
+        if rows.len() == 5 {
+            lines.push(Line::raw(format!(
+                " {}  {} N",
+                fmt(&rows[0]),
+                fmt(&rows[1])
+            )));
+            lines.push(Line::raw(format!(
+                " {} ms  {} mm  {} mm",
+                fmt(&rows[2]),
+                fmt(&rows[3]),
+                fmt(&rows[4])
+            )));
+        } else {
+            lines.push(Line::styled(" no result", self.theme.error()));
+        }
+        lines.extend(self.validity_line());
+        lines.extend(pins::compact(self.pins, &self.now()));
+        lines
+    }
+}
+
+/// "e 0.7506 (0.75, +0.1%)": a result with its measured value and the difference, if any.
+fn compact_row(row: &Row) -> String {
+    let name = row.name.split(' ').next().unwrap_or("");
+    match row.measured {
+        Some(m) => format!(
+            "{name} {} ({}, {})",
+            row.model,
+            sig_trim(m, 4),
+            percent_diff(row.model_value, m)
+        ),
+        None => format!("{name} {}", row.model),
+    }
+}
