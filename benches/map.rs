@@ -52,6 +52,23 @@ fn fast_summary(p: (f64, f64)) -> f64 {
     s.cor + s.max_force
 }
 
+/// `map::fast::summary` over every (λ, ζ) of the 200 × 120 map, one after the other on one
+/// core (where it answers: the map then takes the exact solver for the rest): the cost of an
+/// impact across the plane, not only at the four points. Per impact: the median / 24 000.
+#[divan::bench(sample_count = 20)]
+fn fast_summary_grid() -> f64 {
+    let l = Axis::new(Param::Lambda, 0.01, 100.0, 120, Scale::Log).unwrap();
+    let z = Axis::new(Param::Zeta, 0.01, 100.0, 200, Scale::Log).unwrap();
+    let mut sum = 0.0;
+    for i in 0..l.n {
+        for j in 0..z.n {
+            let (lambda, zeta) = (black_box(l.value(i)), black_box(z.value(j)));
+            sum += bouncelab::map::fast::summary(lambda, zeta).map_or(0.0, |s| s.cor);
+        }
+    }
+    sum
+}
+
 /// The 200 × 120 map on the fast path (`MapSpec::with_fast`).
 #[divan::bench(sample_count = 20)]
 fn map_200x120_fast() -> usize {
