@@ -229,8 +229,10 @@ impl Flow {
         let real = if self.r == 0.0 {
             self.a * pt.t
         } else {
-            // e^{rτ} − 1 without the cancellation of a small rτ
-            let em1 = if (self.r * pt.t).abs() < 0.5 {
+            // e^{rτ} − 1: the subtraction's absolute error, ε, is what `rounding` budgets
+            // (ε|A|(1 + e^{rτ})/|r|); exp_m1 only where rτ is so small that it would leave
+            // nothing of the difference (λ → 0)
+            let em1 = if (self.r * pt.t).abs() < 1e-3 {
                 (self.r * pt.t).exp_m1()
             } else {
                 pt.real - 1.0
