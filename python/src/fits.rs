@@ -8,6 +8,8 @@ use crate::{array, error, floats, preset_ball, value_error};
 use bouncelab::Ball;
 use bouncelab::analysis::fit::{Estimate, FitData, MultiFit, parse_free};
 use bouncelab::measured::{Air, CorPoint, CorTable, MeasuredError, Trace};
+use bouncelab::model::params::ImpactParams;
+use bouncelab::solver::SolveOptions;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use std::fmt::Write;
@@ -64,11 +66,16 @@ fn estimate<'py>(py: Python<'py>, e: &Estimate) -> PyResult<Bound<'py, PyDict>> 
 
 /// The fit as the command line's JSON has it (docs/fitting.md), with `model`: the model at
 /// each data point (force, N, of a trace; COR of a table).
+/// The dict of `bouncelab fit --format json`: the fit, and the fitted ball's impact at `v0`,
+/// the data's speed (a trace's: the ball's; a table's or drop tests': the first row's), as
+/// the command line reports it (`cor`, `max_force`, `contact_time`); `target_cor` as it
+/// writes it for drop tests (the first drop's COR).
 fn report<'py>(
     py: Python<'py>,
     ball: &Ball,
     kind: &str,
     f: &MultiFit,
+    (v0, target_cor): (f64, Option<f64>),
 ) -> PyResult<Bound<'py, PyDict>> {
     let h = ball.header();
     let d = PyDict::new(py);
@@ -118,7 +125,25 @@ fn report<'py>(
         }
         d.set_item("nuisance", nuisance)?;
     }
+    let fitted = Ball {
+        params: ImpactParams { v0, ..f.params },
+        ..ball.clone()
+    };
+    // as the command line solves it (default options: the same COR, F_m and t_f)
+    let r = py
+        .detach(|| fitted.impact_with(&SolveOptions::default()))
+        .map_err(error)?;
+    d.set_item("v0", v0)?;
+    if let Some(e) = target_cor {
+        d.set_item("target_cor", e)?;
+    }
+    d.set_item("cor", r.cor)?;
+    d.set_item("max_force", r.max_force)?;
+    d.set_item("contact_time", r.contact_time)?;
     d.set_item("warnings", f.warnings.clone())?;
+    if f.exact() {
+        d.set_item("exact", true)?;
+    }
     d.set_item("model", array(py, f.model.clone()))?;
     Ok(d)
 }
@@ -158,7 +183,7 @@ pub fn fit_trace<'py>(
     let fit = py
         .detach(|| ball.fit(FitData::Trace(&trace), free.as_deref()))
         .map_err(error)?;
-    report(py, &ball, "force-time trace", &fit)
+    report(py, &ball, "force-time trace", &fit, (ball.params.v0, None))
 }
 
 /// Several parameters fitted to COR against impact speed, as `bouncelab fit --cor-table FILE`:
@@ -213,7 +238,7 @@ pub fn fit_cor_table<'py>(
     let fit = py
         .detach(|| ball.fit(FitData::Cor(&table.points), free.as_deref()))
         .map_err(error)?;
-    report(py, &ball, "COR table", &fit)
+    report(py, &ball, "COR table", &fit, (v[0], None))
 }
 
 /// Several parameters fitted to drop tests, as `bouncelab fit --drop-height H --rebound-height
@@ -247,7 +272,13 @@ pub fn fit_drops<'py>(
     let fit = py
         .detach(|| ball.fit(FitData::Cor(&points), free.as_deref()))
         .map_err(error)?;
-    let d = report(py, &ball, "drop test", &fit)?;
+    let d = report(
+        py,
+        &ball,
+        "drop test",
+        &fit,
+        (points[0].v0, Some(points[0].cor)),
+    )?;
     let drops = PyDict::new(py);
     drops.set_item("drop_height", array(py, h))?;
     drops.set_item("rebound_height", array(py, r))?;

@@ -130,14 +130,8 @@ pub fn report<'a>(
         max_force: r.max_force,
         contact_time: r.contact_time,
         warnings: &f.warnings,
-        exact: exact(f),
+        exact: f.exact(),
     }
-}
-
-/// Whether the fit had as many data as quantities fitted (no degree of freedom left): the
-/// values solve the data exactly and no standard error or interval can be estimated.
-pub fn exact(f: &MultiFit) -> bool {
-    f.points <= f.names.len()
 }
 
 /// "1 point", "7 points".
@@ -192,7 +186,7 @@ pub fn text(
         "95 % interval".into(),
         "unit".into(),
     ]];
-    let exact = exact(f);
+    let exact = f.exact();
     for e in f.fitted.iter().chain(&f.time_offset).chain(&f.baseline) {
         let (error, interval) = if exact {
             ("–".into(), EXACT.into())

@@ -87,7 +87,7 @@ fn header(ball: &Ball, data: &Loaded, f: &MultiFit, when: &str) -> Vec<String> {
             ball.source
         ),
     ];
-    let exact = super::fit_report::exact(f);
+    let exact = f.exact();
     for e in f.fitted.iter().filter(|_| exact) {
         let (name, unit) = (e.name, e.unit);
         let value = short(e.value);

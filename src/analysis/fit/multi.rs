@@ -77,6 +77,14 @@ pub struct MultiFit {
     pub model: Vec<f64>,
 }
 
+impl MultiFit {
+    /// Whether the fit had as many data as quantities fitted (no degree of freedom left): the
+    /// values solve the data exactly and no standard error or interval can be estimated.
+    pub fn exact(&self) -> bool {
+        self.points <= self.names.len()
+    }
+}
+
 /// Why a multi-parameter fit gave no answer; each message is one line.
 #[derive(Debug, Clone, PartialEq)]
 pub enum MultiFitError {
