@@ -1,11 +1,15 @@
 //! The explorer's state machine: key → action → `update` → state.
 
+mod tui_common;
+
 use bouncelab::ContactLaw;
 use bouncelab::preset::Preset;
 use bouncelab::tui::action::{self, Action, Mode};
 use bouncelab::tui::app::{App, Overlay, Severity, View};
 use bouncelab::tui::param::{Dir, Param, V0_MIN};
 use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
+
+use tui_common::*;
 
 fn superball() -> App {
     App::new(Preset::embedded().remove(0), true)
@@ -17,23 +21,6 @@ fn get(app: &App, p: Param) -> f64 {
 
 fn close(a: f64, b: f64) -> bool {
     (a - b).abs() <= 1e-9 * b.abs().max(1.0)
-}
-
-/// Press keys as the event loop would: map with the current mode, then update.
-fn press(app: &mut App, keys: &[KeyCode]) {
-    for &code in keys {
-        let modifiers = match code {
-            KeyCode::Char(c) if c.is_ascii_uppercase() => KeyModifiers::SHIFT,
-            _ => KeyModifiers::NONE,
-        };
-        if let Some(a) = action::from_key(KeyEvent::new(code, modifiers), app.mode()) {
-            app.update(a);
-        }
-    }
-}
-
-fn chars(s: &str) -> Vec<KeyCode> {
-    s.chars().map(KeyCode::Char).collect()
 }
 
 fn warned(app: &App) -> bool {

@@ -3,6 +3,8 @@
 //! chart with Tab or `x`, and leaves with Esc. And the force–time chart's labelled peak force
 //! and contact time, in the shared figure (screen and SVG).
 
+mod tui_common;
+
 use bouncelab::figure::explorer::{self, Chart};
 use bouncelab::figure::{Axis, Figure, Kind, Look, Series, Style, Tone};
 use bouncelab::preset::Preset;
@@ -10,9 +12,9 @@ use bouncelab::text::short;
 use bouncelab::tui::action::{self, Mode};
 use bouncelab::tui::app::App;
 use bouncelab::tui::crosshair::{self, STEPS};
-use ratatui::Terminal;
-use ratatui::backend::TestBackend;
 use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
+
+use tui_common::*;
 
 fn key_with(app: &mut App, code: KeyCode, m: KeyModifiers) {
     if let Some(a) = action::from_key(KeyEvent::new(code, m), app.mode()) {
@@ -138,12 +140,6 @@ fn the_force_time_chart_labels_peak_force_and_contact_time() {
         "t_f {} ms",
         short(r.contact_time.unwrap() * 1e3, 4)
     )));
-}
-
-fn draw(app: &App, w: u16, h: u16) -> Terminal<TestBackend> {
-    let mut t = Terminal::new(TestBackend::new(w, h)).unwrap();
-    t.draw(|f| f.render_widget(app, f.area())).unwrap();
-    t
 }
 
 #[test]

@@ -1,13 +1,15 @@
 //! The explorer's drop view (`d`): a snapshot, the keys that re-run it, the animation clock,
 //! and the reduced-motion setting.
 
+mod tui_common;
+
 use bouncelab::drop::standards;
 use bouncelab::preset::Preset;
-use bouncelab::tui::action::{self, Action};
+use bouncelab::tui::action::Action;
 use bouncelab::tui::app::{App, View};
-use ratatui::Terminal;
-use ratatui::backend::TestBackend;
-use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
+use ratatui::crossterm::event::KeyCode;
+
+use tui_common::*;
 
 fn preset(name: &str) -> Preset {
     Preset::embedded_all()
@@ -16,30 +18,12 @@ fn preset(name: &str) -> Preset {
         .unwrap()
 }
 
-fn press(app: &mut App, keys: &[KeyCode]) {
-    for &code in keys {
-        let m = match code {
-            KeyCode::Char(c) if c.is_ascii_uppercase() => KeyModifiers::SHIFT,
-            _ => KeyModifiers::NONE,
-        };
-        if let Some(a) = action::from_key(KeyEvent::new(code, m), app.mode()) {
-            app.update(a);
-        }
-    }
-}
-
-fn screen(app: &App, w: u16, h: u16) -> Terminal<TestBackend> {
-    let mut t = Terminal::new(TestBackend::new(w, h)).unwrap();
-    t.draw(|f| f.render_widget(app, f.area())).unwrap();
-    t
-}
-
 #[test]
 fn drop_view_tennis() {
     let mut app = App::new(preset("tennis"), false);
     press(&mut app, &[KeyCode::Char('d')]);
     assert_eq!(app.view(), View::Drop);
-    let t = screen(&app, 120, 36);
+    let t = draw(&app, 120, 36);
     // the key hints offer the drop view's own keys, not `e`, which exports nothing there
     let hints: String = (0..120)
         .map(|x| t.backend().buffer()[(x, 35)].symbol().to_string())
@@ -136,7 +120,7 @@ fn reduced_motion_shows_the_whole_sequence_still() {
     assert_eq!(d.t, d.duration());
     press(&mut app, &[KeyCode::Char(' ')]);
     assert!(!app.animating(), "space does not start an animation");
-    let text = format!("{:?}", screen(&app, 120, 36).backend());
+    let text = format!("{:?}", draw(&app, 120, 36).backend());
     assert!(text.contains("reduced motion"), "{text}");
     assert!(text.contains("PASS"), "{text}");
 }

@@ -2,14 +2,16 @@
 //! (refused with the range, never clamped), each accepted value one undoable change, and the
 //! warning when a run leaves the model's validity (z_m or α_max beyond the radius R).
 
+mod tui_common;
+
 use bouncelab::preset::Preset;
 use bouncelab::tui::action::{self, Action};
 use bouncelab::tui::app::{App, Overlay, Severity};
 use bouncelab::tui::param::Param;
 use bouncelab::tui::physical::{self, Field};
-use ratatui::Terminal;
-use ratatui::backend::TestBackend;
 use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
+
+use tui_common::*;
 
 fn superball() -> App {
     App::new(Preset::embedded().remove(0), true)
@@ -44,12 +46,6 @@ fn set(app: &mut App, field: Field, text: &str) {
     app.update(Action::InputClear);
     typed(app, text);
     key(app, KeyCode::Enter);
-}
-
-fn draw(app: &App, w: u16, h: u16) -> Terminal<TestBackend> {
-    let mut t = Terminal::new(TestBackend::new(w, h)).unwrap();
-    t.draw(|f| f.render_widget(app, f.area())).unwrap();
-    t
 }
 
 #[test]

@@ -1,38 +1,18 @@
 //! What the explorer refuses, and says so (issue 18): keys below the minimum size, the help's
 //! own keys, over-long names and values.
 
+mod tui_common;
+
 use bouncelab::preset::Preset;
 use bouncelab::tui::action::{self, Action, Mode};
 use bouncelab::tui::app::{App, Overlay};
 use bouncelab::tui::param::Param;
-use ratatui::Terminal;
-use ratatui::backend::TestBackend;
 use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
+
+use tui_common::*;
 
 fn superball() -> App {
     App::new(Preset::embedded().remove(0), true)
-}
-
-fn press(app: &mut App, keys: &[KeyCode]) {
-    for &code in keys {
-        let m = match code {
-            KeyCode::Char(c) if c.is_ascii_uppercase() => KeyModifiers::SHIFT,
-            _ => KeyModifiers::NONE,
-        };
-        if let Some(a) = action::from_key(KeyEvent::new(code, m), app.mode()) {
-            app.update(a);
-        }
-    }
-}
-
-fn chars(s: &str) -> Vec<KeyCode> {
-    s.chars().map(KeyCode::Char).collect()
-}
-
-fn draw(app: &App, w: u16, h: u16) -> Terminal<TestBackend> {
-    let mut t = Terminal::new(TestBackend::new(w, h)).unwrap();
-    t.draw(|f| f.render_widget(app, f.area())).unwrap();
-    t
 }
 
 fn input_error(app: &App) -> Option<String> {

@@ -3,36 +3,22 @@
 //! (3), curves told apart without colour (4), unique marker letters (7), messages on their own
 //! line (8), the entry's cursor and the smaller items (10), stale sweeps dropped (11).
 
+mod tui_common;
+
 use bouncelab::figure::explorer::MeasuredOverlay;
 use bouncelab::figure::{Sample, Style};
 use bouncelab::preset::Preset;
-use bouncelab::tui::action::{self, Action};
+use bouncelab::tui::action::Action;
 use bouncelab::tui::app::{App, Overlay};
 use bouncelab::tui::param::{Dir, Param, V0_MIN};
 use bouncelab::tui::ui::Chart;
-use ratatui::Terminal;
-use ratatui::backend::TestBackend;
-use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
+use ratatui::crossterm::event::KeyCode;
 use std::process::Command;
+
+use tui_common::*;
 
 fn superball() -> App {
     App::new(Preset::embedded().remove(0), true)
-}
-
-fn press(app: &mut App, keys: &[KeyCode]) {
-    for &code in keys {
-        let m = match code {
-            KeyCode::Char(c) if c.is_ascii_uppercase() => KeyModifiers::SHIFT,
-            _ => KeyModifiers::NONE,
-        };
-        if let Some(a) = action::from_key(KeyEvent::new(code, m), app.mode()) {
-            app.update(a);
-        }
-    }
-}
-
-fn chars(s: &str) -> Vec<KeyCode> {
-    s.chars().map(KeyCode::Char).collect()
 }
 
 /// Select `param` and type `text` into its entry; the entry's reason when refused.
@@ -172,23 +158,6 @@ fn measured_marker_letters_never_collide() {
     let mark = speed.series.iter().find(|s| s.id == "measured cor");
     assert_eq!(mark.and_then(|s| s.look.text.as_deref()), Some("SC"));
 }
-fn draw(app: &App, w: u16, h: u16) -> Terminal<TestBackend> {
-    let mut t = Terminal::new(TestBackend::new(w, h)).unwrap();
-    t.draw(|f| f.render_widget(app, f.area())).unwrap();
-    t
-}
-
-fn screen_text(t: &Terminal<TestBackend>) -> Vec<String> {
-    let buf = t.backend().buffer();
-    (0..buf.area.height)
-        .map(|y| {
-            (0..buf.area.width)
-                .map(|x| buf[(x, y)].symbol())
-                .collect::<String>()
-        })
-        .collect()
-}
-
 /// Defect 3: at 12 m/s the readout compares nothing with the peak force measured at 3.12 m/s
 /// and says where it was measured; at 0.01 m/s a force trace measured at 3.12 m/s neither
 /// draws on force–time nor stretches its force axis (the title says where the data is).

@@ -2,6 +2,8 @@
 //! the ball, the quantity, the targets entry, the worker's passes (stale ones dropped), and
 //! the cell under the cursor against `run` at the same (λ, ζ).
 
+mod tui_common;
+
 use bouncelab::map::Quantity;
 use bouncelab::preset::Preset;
 use bouncelab::solver::{SolveOptions, simulate};
@@ -10,10 +12,10 @@ use bouncelab::tui::app::{App, Effect, View};
 use bouncelab::tui::map_view::{self, cell_of};
 use bouncelab::tui::param::Param;
 use bouncelab::tui::widgets::map_cells::RAMP;
-use ratatui::Terminal;
-use ratatui::backend::TestBackend;
 use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
 use ratatui::style::Color;
+
+use tui_common::*;
 
 /// The superball in the map view of a `w` × `h` terminal (every pass evaluated in `update`).
 fn map_app(color: bool, w: u16, h: u16) -> App {
@@ -24,22 +26,8 @@ fn map_app(color: bool, w: u16, h: u16) -> App {
     app
 }
 
-fn press(app: &mut App, keys: &[KeyCode]) {
-    for &code in keys {
-        if let Some(a) = action::from_key(KeyEvent::new(code, KeyModifiers::NONE), app.mode()) {
-            app.update(a);
-        }
-    }
-}
-
 fn typed(app: &mut App, text: &str) {
     press(app, &text.chars().map(KeyCode::Char).collect::<Vec<_>>());
-}
-
-fn draw(app: &App, w: u16, h: u16) -> Terminal<TestBackend> {
-    let mut t = Terminal::new(TestBackend::new(w, h)).unwrap();
-    t.draw(|f| f.render_widget(app, f.area())).unwrap();
-    t
 }
 
 fn point(app: &App) -> (f64, f64) {

@@ -4,26 +4,28 @@
 //! bookkeeping in `App::update` (results arrive, stale ones are dropped), the export equal to
 //! the screen, and the calibrated damping on screen equal to `bouncelab peers`.
 
+mod tui_common;
+
 mod common;
 
 use bouncelab::peers::PeerModel;
 use bouncelab::preset::Preset;
 use bouncelab::text::sig;
-use bouncelab::tui::action::{self, Action};
+use bouncelab::tui::action::Action;
 use bouncelab::tui::app::{App, Effect, View};
 use bouncelab::tui::export;
 use bouncelab::tui::models::ModelsRequest;
 use bouncelab::tui::theme::Theme;
 use bouncelab::tui::ui::{self, Chart};
 use bouncelab::tui::widgets::plot::Plot;
-use ratatui::Terminal;
-use ratatui::backend::TestBackend;
 use ratatui::buffer::Buffer;
-use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
+use ratatui::crossterm::event::KeyCode;
 use ratatui::layout::Rect;
 use ratatui::style::Color;
 use std::collections::HashSet;
 use std::fs;
+
+use tui_common::*;
 
 const CHARTS: [Chart; 3] = [
     Chart::ModelsCorSpeed,
@@ -31,32 +33,12 @@ const CHARTS: [Chart; 3] = [
     Chart::ModelsForceDisplacement,
 ];
 
-fn press(app: &mut App, keys: &[KeyCode]) -> Vec<Effect> {
-    let mut effects = Vec::new();
-    for &code in keys {
-        let m = match code {
-            KeyCode::Char(c) if c.is_ascii_uppercase() => KeyModifiers::SHIFT,
-            _ => KeyModifiers::NONE,
-        };
-        if let Some(a) = action::from_key(KeyEvent::new(code, m), app.mode()) {
-            effects.extend(app.update(a));
-        }
-    }
-    effects
-}
-
 /// Preset `i` on the models view, calibrations computed in `update` (as tests run them).
 fn models_view(i: usize, color: bool) -> App {
     let mut app = App::new(Preset::embedded().remove(i), color);
     press(&mut app, &[KeyCode::Tab, KeyCode::Tab]);
     assert_eq!(app.view(), View::Models);
     app
-}
-
-fn draw(app: &App, w: u16, h: u16) -> Terminal<TestBackend> {
-    let mut t = Terminal::new(TestBackend::new(w, h)).unwrap();
-    t.draw(|f| f.render_widget(app, f.area())).unwrap();
-    t
 }
 
 fn text(buf: &Buffer) -> String {

@@ -1,16 +1,18 @@
 //! Pinning several runs (`p` adds one, `P` clears them all): the state, the pin table in the
 //! readout, the charts' tagged curves, and the export drawing every pin.
 
+mod tui_common;
+
 use bouncelab::preset::Preset;
 use bouncelab::tui::action::{self, Action};
 use bouncelab::tui::app::{App, Effect, MAX_PINS, Severity, View};
 use bouncelab::tui::export;
 use bouncelab::tui::param::Param;
 use bouncelab::tui::ui::{self, Chart};
-use ratatui::Terminal;
-use ratatui::backend::TestBackend;
 use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
 use std::fs;
+
+use tui_common::*;
 
 fn app(i: usize) -> App {
     App::new(Preset::embedded().remove(i), true)
@@ -39,12 +41,6 @@ fn press(app: &mut App, keys: &str) -> Vec<Effect> {
 fn message(app: &App) -> (String, Severity) {
     let m = app.message().expect("a message");
     (m.text.clone(), m.severity)
-}
-
-fn draw(app: &App, w: u16, h: u16) -> Terminal<TestBackend> {
-    let mut t = Terminal::new(TestBackend::new(w, h)).unwrap();
-    t.draw(|f| f.render_widget(app, f.area())).unwrap();
-    t
 }
 
 /// Superball, golf at a higher speed, baseball at another λ: three pins, then golf live.

@@ -1,11 +1,13 @@
 //! What the explorer draws: snapshots of whole screens (TestBackend), the log axis's decade
 //! labels, colour off under NO_COLOR, and no panic at any size.
 
+mod tui_common;
+
 use bouncelab::figure::{
     Axis as FigAxis, Figure, Kind, Look, Marker as Shape, Series, Style as Stroke, Tone,
 };
 use bouncelab::preset::Preset;
-use bouncelab::tui::action::{self, Action};
+use bouncelab::tui::action::Action;
 use bouncelab::tui::app::App;
 use bouncelab::tui::theme::Theme;
 use bouncelab::tui::ui::{self, Chart};
@@ -13,10 +15,12 @@ use bouncelab::tui::widgets::plot::Plot;
 use ratatui::Terminal;
 use ratatui::backend::TestBackend;
 use ratatui::buffer::Buffer;
-use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
+use ratatui::crossterm::event::KeyCode;
 use ratatui::layout::Rect;
 use ratatui::style::Color;
 use ratatui::widgets::Widget;
+
+use tui_common::*;
 
 fn app(i: usize) -> App {
     App::new(Preset::embedded().remove(i), true)
@@ -26,18 +30,6 @@ fn draw(app: &App, w: u16, h: u16) -> Terminal<TestBackend> {
     let mut t = Terminal::new(TestBackend::new(w, h)).unwrap();
     t.draw(|f| f.render_widget(app, f.area())).unwrap();
     t
-}
-
-fn press(app: &mut App, keys: &[KeyCode]) {
-    for &code in keys {
-        let m = match code {
-            KeyCode::Char(c) if c.is_ascii_uppercase() => KeyModifiers::SHIFT,
-            _ => KeyModifiers::NONE,
-        };
-        if let Some(a) = action::from_key(KeyEvent::new(code, m), app.mode()) {
-            app.update(a);
-        }
-    }
 }
 
 fn text(buf: &Buffer) -> String {
@@ -324,13 +316,14 @@ fn resize_storm() {
         let w = 1 + (seed >> 8) as u16 % 220;
         let h = 1 + (seed >> 20) as u16 % 70;
         t.backend_mut().resize(w, h);
-        match i % 50 {
-            10 => press(&mut a, &[KeyCode::Tab]),
-            20 => press(&mut a, &[KeyCode::Char('?')]),
-            30 => press(&mut a, &[KeyCode::Esc, KeyCode::Char('=')]),
-            40 => press(&mut a, &[KeyCode::Esc]),
-            _ => {}
-        }
+        let keys: &[KeyCode] = match i % 50 {
+            10 => &[KeyCode::Tab],
+            20 => &[KeyCode::Char('?')],
+            30 => &[KeyCode::Esc, KeyCode::Char('=')],
+            40 => &[KeyCode::Esc],
+            _ => &[],
+        };
+        press(&mut a, keys);
         t.draw(|f| f.render_widget(&a, f.area())).unwrap();
         assert_eq!(t.backend().buffer().area, Rect::new(0, 0, w, h));
     }
