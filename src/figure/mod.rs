@@ -15,6 +15,7 @@
 //! SVG and CSV writers and the explorer's braille widget then all draw it; the explorer shows
 //! a chart by adding a [`explorer::Chart`] and a case in [`explorer::figure`].
 
+pub mod chart;
 pub mod colormap;
 pub mod csv;
 pub mod explorer;

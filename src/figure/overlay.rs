@@ -1,7 +1,7 @@
 //! The user's measured data on the explorer's charts (`bouncelab --measured FILE`), and the
 //! speed it was measured at: a force trace belongs to one impact speed only.
 
-use super::explorer::Chart;
+use super::chart::Chart;
 use super::{Kind, Look, Marker, Series, Style, Tone};
 
 /// Measured data on one chart (`bouncelab --measured FILE`), labelled by its file name;
