@@ -3,6 +3,7 @@
 //! line and the parameters head every CSV an export writes.
 
 mod common;
+mod tui_common;
 
 use bouncelab::preset::Preset;
 use bouncelab::tui::action::{self, Action, Mode};
@@ -14,37 +15,19 @@ use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
 use serde_json::Value;
 use std::fs;
 use std::path::Path;
+use tui_common::type_keys;
 
 fn app(i: usize) -> App {
     App::new(Preset::embedded().remove(i), true)
 }
 
-fn press(app: &mut App, keys: &str) -> Vec<Effect> {
-    let mut effects = Vec::new();
-    for c in keys.chars() {
-        let m = if c.is_ascii_uppercase() {
-            KeyModifiers::SHIFT
-        } else {
-            KeyModifiers::NONE
-        };
-        let code = match c {
-            '\u{1b}' => KeyCode::Esc,
-            c => KeyCode::Char(c),
-        };
-        if let Some(a) = action::from_key(KeyEvent::new(code, m), app.mode()) {
-            effects = app.update(a);
-        }
-    }
-    effects
-}
-
 /// The line `y` shows.
 fn shown(app: &mut App) -> String {
-    press(app, "y");
+    type_keys(app, "y");
     let Overlay::Command(line) = app.overlay().clone() else {
         panic!("y shows the command: {:?}", app.overlay());
     };
-    press(app, "\u{1b}");
+    type_keys(app, "\u{1b}");
     assert_eq!(app.overlay(), &Overlay::None, "Esc closes it");
     line
 }
@@ -88,10 +71,10 @@ fn assert_same_run(app: &App, v: &Value) {
 #[test]
 fn y_shows_the_line_and_only_esc_or_the_help_keys_close_it() {
     let mut a = app(1);
-    press(&mut a, "y");
+    type_keys(&mut a, "y");
     assert_eq!(a.mode(), Mode::Help);
     let before = a.setting().clone();
-    press(&mut a, "lv");
+    type_keys(&mut a, "lv");
     assert_eq!(a.setting(), &before, "keys under the box change nothing");
     let mut t = Terminal::new(TestBackend::new(80, 24)).unwrap();
     t.draw(|f| f.render_widget(&a, f.area())).unwrap();
@@ -119,7 +102,7 @@ fn moved_parameters_and_law_run_to_the_screen() {
         (0, "cLLLLZ"),
     ] {
         let mut a = app(ball);
-        press(&mut a, keys);
+        type_keys(&mut a, keys);
         let line = shown(&mut a);
         assert!(line.contains(" --v0 "), "{line}");
         assert_same_run(&a, &run_json(&line, home.path()));
@@ -138,15 +121,15 @@ fn a_typed_modulus_runs_to_the_screen() {
             a.update(act);
         }
     };
-    press(&mut a, "m");
+    type_keys(&mut a, "m");
     while !matches!(a.overlay(), Overlay::Form(f) if f.selected == Field::E) {
         code(&mut a, KeyCode::Down);
     }
-    press(&mut a, "=");
+    type_keys(&mut a, "=");
     a.update(Action::InputClear);
-    press(&mut a, "3e6");
+    type_keys(&mut a, "3e6");
     code(&mut a, KeyCode::Enter);
-    press(&mut a, "\u{1b}");
+    type_keys(&mut a, "\u{1b}");
     assert!(
         (a.setting().params.k_p / (2.0 * std::f64::consts::PI * 3e6 * 0.004) - 1.0).abs() < 1e-15
     );
@@ -162,7 +145,7 @@ fn a_start_preset_from_a_file_is_named_by_its_file() {
     fs::write(&file, common::SUPERBALL.replace("superball", "myball")).unwrap();
     let preset = Preset::parse(&fs::read_to_string(&file).unwrap(), "my ball.toml").unwrap();
     let mut a = App::new(preset, true).with_config(file.clone());
-    press(&mut a, "zz");
+    type_keys(&mut a, "zz");
     let line = shown(&mut a);
     let quoted = format!("--config '{}'", file.display());
     assert!(line.contains(&quoted), "{line}");
@@ -182,7 +165,7 @@ fn a_start_preset_from_a_file_is_named_by_its_file() {
     assert_eq!(o.code, 0, "{}", o.stderr);
     assert_same_run(&a, &serde_json::from_str(&o.stdout).unwrap());
     // another ball loaded is named by its name
-    press(&mut a, "2");
+    type_keys(&mut a, "2");
     assert!(shown(&mut a).starts_with("bouncelab run --preset golf "));
 }
 
@@ -190,9 +173,9 @@ fn a_start_preset_from_a_file_is_named_by_its_file() {
 fn every_export_csv_starts_with_the_line_and_the_parameters() {
     let dir = tempfile::tempdir().unwrap();
     let mut a = app(0);
-    press(&mut a, "2vp1lll");
+    type_keys(&mut a, "2vp1lll");
     let line = shown(&mut a);
-    let effects = press(&mut a, "e");
+    let effects = type_keys(&mut a, "e");
     let request = effects
         .into_iter()
         .find_map(|e| match e {
@@ -235,7 +218,7 @@ fn form_values_run_to_the_screen_or_are_named_as_not_carried() {
         set_setting(&mut a, field, value);
         assert_eq!(*a.setting(), next);
     }
-    press(&mut a, "z");
+    type_keys(&mut a, "z");
     let line = shown(&mut a);
     assert!(
         line.contains(" --k-p 61000 --z-p 0.003 --lambda "),
@@ -243,7 +226,7 @@ fn form_values_run_to_the_screen_or_are_named_as_not_carried() {
     );
     assert_same_run(&a, &run_json(&line, home.path()));
     set_setting(&mut a, Field::Mass, 0.05);
-    press(&mut a, "y");
+    type_keys(&mut a, "y");
     let m = a.message().expect("a warning").text.clone();
     assert!(m.contains("m typed in the form"), "{m}");
 }

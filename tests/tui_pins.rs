@@ -4,38 +4,17 @@
 mod tui_common;
 
 use bouncelab::preset::Preset;
-use bouncelab::tui::action::{self, Action};
+use bouncelab::tui::action::Action;
 use bouncelab::tui::app::{App, Effect, MAX_PINS, Severity, View};
 use bouncelab::tui::export;
 use bouncelab::tui::param::Param;
 use bouncelab::tui::ui::{self, Chart};
-use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
 use std::fs;
 
 use tui_common::*;
 
 fn app(i: usize) -> App {
     App::new(Preset::embedded().remove(i), true)
-}
-
-/// Press keys as the event loop would; returns the effects of the last one.
-fn press(app: &mut App, keys: &str) -> Vec<Effect> {
-    let mut effects = Vec::new();
-    for c in keys.chars() {
-        let m = if c.is_ascii_uppercase() {
-            KeyModifiers::SHIFT
-        } else {
-            KeyModifiers::NONE
-        };
-        let code = match c {
-            '\t' => KeyCode::Tab,
-            c => KeyCode::Char(c),
-        };
-        if let Some(a) = action::from_key(KeyEvent::new(code, m), app.mode()) {
-            effects = app.update(a);
-        }
-    }
-    effects
 }
 
 fn message(app: &App) -> (String, Severity) {
@@ -46,7 +25,7 @@ fn message(app: &App) -> (String, Severity) {
 /// Superball, golf at a higher speed, baseball at another λ: three pins, then golf live.
 fn three_balls() -> App {
     let mut a = app(0);
-    press(&mut a, "p2vvvp3lllp2");
+    type_keys(&mut a, "p2vvvp3lllp2");
     a
 }
 
@@ -60,27 +39,27 @@ fn p_adds_pins_in_order_and_capital_p_clears_them_all() {
     let golf_v0 = a.pins()[1].setting.get(Param::V0);
     assert!((golf_v0 - (a.setting().get(Param::V0) + 0.3)).abs() < 1e-9);
     let mut a = a;
-    press(&mut a, "P");
+    type_keys(&mut a, "P");
     assert!(a.pins().is_empty());
     assert_eq!(message(&a), ("3 pins cleared".into(), Severity::Info));
-    press(&mut a, "P");
+    type_keys(&mut a, "P");
     assert_eq!(message(&a).1, Severity::Warning, "nothing to clear is said");
-    press(&mut a, "pP");
+    type_keys(&mut a, "pP");
     assert_eq!(message(&a), ("pin cleared".into(), Severity::Info));
 }
 
 #[test]
 fn the_same_run_is_not_pinned_twice_and_the_number_is_capped() {
     let mut a = app(0);
-    press(&mut a, "pp");
+    type_keys(&mut a, "pp");
     assert_eq!(a.pins().len(), 1);
     assert_eq!(message(&a), ("already pinned as p1".into(), Severity::Info));
     for _ in 1..MAX_PINS {
-        press(&mut a, "vp");
+        type_keys(&mut a, "vp");
     }
     assert_eq!(a.pins().len(), MAX_PINS);
     let before = a.pins().to_vec();
-    press(&mut a, "vp");
+    type_keys(&mut a, "vp");
     assert_eq!(a.pins(), &before[..], "no pin past the cap");
     let (text, severity) = message(&a);
     assert_eq!(severity, Severity::Warning);
@@ -90,7 +69,7 @@ fn the_same_run_is_not_pinned_twice_and_the_number_is_capped() {
 #[test]
 fn every_pin_gets_its_own_speed_sweep() {
     let mut a = three_balls();
-    press(&mut a, "\t");
+    type_keys(&mut a, "\t");
     assert_eq!(a.view(), View::Sweeps);
     assert!(a.pins().iter().all(|g| g.speed.is_some()));
     let fig = ui::figure(&a, Chart::CorSpeed);
@@ -154,7 +133,7 @@ fn each_pin_is_tagged_and_labelled_by_ball_and_parameters() {
 fn export_writes_every_pin() {
     let dir = tempfile::tempdir().unwrap();
     let mut a = three_balls();
-    let effects = press(&mut a, "e");
+    let effects = type_keys(&mut a, "e");
     let request = effects
         .into_iter()
         .find_map(|e| match e {

@@ -47,3 +47,17 @@ pub fn screen_text(t: &Terminal<TestBackend>) -> Vec<String> {
         })
         .collect()
 }
+
+/// Type `keys` as a terminal sends them: a letter (upper case with Shift), `\t` Tab, `\u{1b}`
+/// Esc; the effects `update` returned, in order.
+pub fn type_keys(app: &mut App, keys: &str) -> Vec<Effect> {
+    let codes: Vec<KeyCode> = keys
+        .chars()
+        .map(|c| match c {
+            '\t' => KeyCode::Tab,
+            '\u{1b}' => KeyCode::Esc,
+            c => KeyCode::Char(c),
+        })
+        .collect();
+    press(app, &codes)
+}
