@@ -283,3 +283,53 @@ fn cos_sinc(x: f64) -> (f64, f64) {
 fn abs_sum(terms: [f64; 3]) -> f64 {
     terms.iter().map(|t| t.abs()).sum()
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn close(a: f64, b: f64, ulps: f64) -> bool {
+        (a - b).abs() <= ulps * f64::EPSILON * b.abs().max(f64::MIN_POSITIVE)
+    }
+
+    /// The series agree with libm's exp, cos and sin to an ulp or two over |x| ≤ 1/16.
+    #[test]
+    fn the_small_series_are_exp_cos_and_sinc() {
+        for i in -100..=100 {
+            let x = SMALL * f64::from(i) / 100.0;
+            assert!(close(exp_small(x), x.exp(), 2.0), "exp({x})");
+            let (c, s) = cos_sinc(x);
+            assert!(close(c, x.cos(), 2.0), "cos({x})");
+            let sinc = if x == 0.0 { 1.0 } else { x.sin() / x };
+            assert!(close(s, sinc, 2.0), "sin({x})/{x}");
+        }
+    }
+
+    /// A point turned by `shift` is the point `at` evaluates there, over an oscillating flow
+    /// (λ = 1, ζ = 0.1; 0.4, 0.3) and a stiff one (5, 20), to a few ε times each exponential's
+    /// argument (`at` takes e^{rτ} from rτ, itself good to ε·|rτ|: what `rounding` counts); a
+    /// step too long for the series is refused.
+    #[test]
+    fn a_shifted_point_is_the_point_there() {
+        for (lambda, zeta) in [(1.0, 0.1), (0.4, 0.3), (5.0, 20.0)] {
+            let flow = Flow::new(lambda, zeta).unwrap();
+            let rate = flow.r.abs().max(flow.sigma.abs()).max(flow.omega);
+            for (t, f) in [(1.5, 0.1), (3.2, -0.02), (0.7, 0.5), (2.0, -1.0)] {
+                let h = f * SMALL / rate;
+                let (moved, there) = (flow.shift(&flow.at(t), h).unwrap(), flow.at(t + h));
+                let real = 4.0 * (1.0 + flow.r.abs() * t);
+                let pair = 4.0 * (1.0 + (flow.sigma + flow.omega) * t);
+                let size = there.ec.hypot(flow.omega * there.es);
+                let case = format!("λ = {lambda}, ζ = {zeta}, τ = {t}, h = {h}");
+                assert!(close(moved.real, there.real, real), "{case}");
+                assert!(
+                    (moved.ec - there.ec).abs() <= pair * f64::EPSILON * size,
+                    "{case}"
+                );
+                let es = (moved.es - there.es).abs() * flow.omega;
+                assert!(es <= pair * f64::EPSILON * size, "{case}");
+            }
+            assert!(flow.shift(&flow.at(1.0), 1.01 * SMALL / rate).is_none());
+        }
+    }
+}
