@@ -149,6 +149,10 @@ fn fit_error(e: MultiFitError, data: &Loaded, free: &[Param]) -> anyhow::Error {
         .unwrap_or_default();
     match e {
         MultiFitError::Params(p) => p.into(),
+        e @ MultiFitError::Contradicts { .. } => match &data.file {
+            Some(f) => anyhow::anyhow!("{f}: {e}"),
+            None => anyhow::anyhow!("{e}"),
+        },
         MultiFitError::NoPulse(m) => {
             anyhow::anyhow!("{}:{m}", data.file.clone().unwrap_or_default())
         }

@@ -51,6 +51,8 @@ pub struct Report<'a> {
     identified: bool,
     /// The free parameters the data do not pin.
     not_pinned: &'a [&'static str],
+    /// The free parameters that ran to the bound of their search.
+    on_bound: &'a [&'static str],
     /// The test of systematic residuals, where one applies.
     #[serde(skip_serializing_if = "Option::is_none")]
     lack_of_fit: Option<crate::analysis::fit::verdict::LackOfFit>,
@@ -140,6 +142,7 @@ pub fn report<'a>(
         warnings: &f.warnings,
         identified: f.identified,
         not_pinned: &f.not_pinned,
+        on_bound: &f.on_bound,
         lack_of_fit: f.lack_of_fit,
         exact: f.exact(),
     }

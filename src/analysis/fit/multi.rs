@@ -84,6 +84,10 @@ pub struct MultiFit {
     /// The free parameters the data do not pin (an interval wider than a factor
     /// [`super::verdict::PIN_RATIO`], no finite interval, or a value on the search's bound).
     pub not_pinned: Vec<&'static str>,
+    /// The free parameters that ran to the bound of their search (±5 decades from the start
+    /// for a COR table, ±4 for a trace): the data ask for more than the model gives with the
+    /// others held.
+    pub on_bound: Vec<&'static str>,
     /// A test of whether the model can follow the data at all (systematic residuals); `None`
     /// where no test applies (too few points, no degree of freedom).
     pub lack_of_fit: Option<super::verdict::LackOfFit>,
@@ -209,11 +213,11 @@ pub fn fit(
     match data {
         FitData::Trace(trace) => {
             let summary = trace.summary().map_err(MultiFitError::NoPulse)?;
+            too_few(trace.time.len(), free.len() + 2)?;
             if !free.contains(&Param::V0) {
                 check_impulse(base, trace, &summary)?;
             }
             let p = TraceProblem::new(*base, law, free.to_vec(), trace, summary);
-            too_few(trace.time.len(), free.len() + 2)?;
             // a minimum at the noise floor needs no further start
             let floor = 1.5 * summary.noise;
             let sol =
@@ -273,6 +277,7 @@ fn fit_cor(
 ) -> Result<MultiFit, MultiFitError> {
     let p = CorProblem::new(*base, law, free.to_vec(), points);
     too_few(p.count(), free.len())?;
+    check_scale(&p)?;
     let mut sol = best(&p, p.starts(), |x| p.bounds(x), 0.0).ok_or(MultiFitError::NoAnswer)?;
     let mut t_dof = None;
     if p.count() > points.len() {
@@ -318,6 +323,46 @@ fn fit_cor(
     };
     judge(&mut f, lack);
     Ok(f)
+}
+
+/// Peak forces and contact times more than [`verdict::SCALE_MAX`] from the starting ball's,
+/// either way, lie beyond what the search (±5 decades in each parameter) can bring the model
+/// to: refused, naming the row, rather than fitted to the other kinds while these are
+/// outvoted.
+fn check_scale(p: &CorProblem) -> Result<(), MultiFitError> {
+    let x0: Vec<f64> = p.free.iter().map(|q| q.get(&p.base).ln()).collect();
+    let Some(pred) = p.predict(&x0) else {
+        return Ok(());
+    };
+    for (q, (_, f, t)) in p.points.iter().zip(&pred) {
+        let kinds = [
+            ("peak force", "N", q.max_force, Some(*f)),
+            ("contact time", "s", q.contact_time, *t),
+        ];
+        for (what, unit, measured, model) in kinds {
+            let (Some(m), Some(model)) = (measured, model) else {
+                continue;
+            };
+            let ratio = m / model;
+            if !(1.0 / verdict::SCALE_MAX..=verdict::SCALE_MAX).contains(&ratio) {
+                let row = if q.line > 0 {
+                    format!("line {}: ", q.line)
+                } else {
+                    String::new()
+                };
+                return Err(MultiFitError::OutOfReach(format!(
+                    "{row}the {what} measured at v0 = {} m/s, {} {unit}, is {}× the model's {} \
+                     {unit}: beyond a factor {} either way, out of the fit's reach",
+                    sig(q.v0, 4),
+                    sig(m, 4),
+                    sig(ratio, 3),
+                    sig(model, 4),
+                    verdict::SCALE_MAX
+                )));
+            }
+        }
+    }
+    Ok(())
 }
 
 /// An exact solve (as many data as parameters) must reproduce every datum to
@@ -523,6 +568,10 @@ fn finish(
         }
     }
     let not_pinned = verdict::not_pinned(&fitted, best, names.len());
+    let on_bound = (0..free.len())
+        .filter(|&j| verdict::on_bound(sol.x[j], best.lo[j], best.hi[j]))
+        .map(|j| free[j].name())
+        .collect();
     Ok(MultiFit {
         params,
         law,
@@ -540,6 +589,7 @@ fn finish(
         model,
         identified: false,
         not_pinned,
+        on_bound,
         lack_of_fit: None,
     })
 }

@@ -15,6 +15,11 @@ pub const PIN_RATIO: f64 = 100.0;
 /// miss, or the target is out of the model's reach.
 pub const EXACT_MISS: f64 = 1e-9;
 
+/// A measured peak force or contact time more than this factor from the starting ball's is
+/// out of the fit's reach (the search moves each parameter ±5 decades: a contact time
+/// ∝ 1/√K moves 2.5).
+pub const SCALE_MAX: f64 = 1e3;
+
 /// Below this p-value the residuals are called systematic: the model cannot follow the data.
 pub const LACK_OF_FIT_P: f64 = 1e-3;
 
@@ -142,6 +147,18 @@ pub(super) fn judge(f: &mut super::MultiFit, lack: Option<LackOfFit>) {
         ));
     }
     f.identified = f.converged && f.not_pinned.is_empty();
+    for name in &f.on_bound {
+        let value = f
+            .fitted
+            .iter()
+            .find(|e| e.name == *name)
+            .map_or(f64::NAN, |e| e.value);
+        f.warnings.push(format!(
+            "{name} ran to the bound of its search ({}): the data ask for more than the model \
+             gives with the rest of the ball held",
+            crate::text::sig(value, 4)
+        ));
+    }
     if !f.not_pinned.is_empty() {
         let pinnable: Vec<&str> = f
             .fitted
@@ -153,8 +170,12 @@ pub(super) fn judge(f: &mut super::MultiFit, lack: Option<LackOfFit>) {
             "the data do not pin {}: {}",
             f.not_pinned.join(", "),
             if pinnable.is_empty() {
-                "add data (other speeds, forces or contact times) or fit fewer parameters"
-                    .to_string()
+                if f.fitted.len() == 1 {
+                    "add data (more points, other speeds, forces or contact times)".to_string()
+                } else {
+                    "add data (other speeds, forces or contact times) or fit fewer parameters"
+                        .to_string()
+                }
             } else {
                 format!("fit --free {} alone, or add data", pinnable.join(","))
             }
@@ -199,7 +220,12 @@ mod tests {
         let e = |lo: f64, hi: f64| Estimate {
             name: "k_r",
             unit: "N/m",
-            value: (lo * hi).sqrt(),
+            // an exact solve has a value and no interval
+            value: if lo.is_finite() {
+                (lo * hi).sqrt()
+            } else {
+                1.0
+            },
             std_error: 1.0,
             ci95: [lo, hi],
         };
