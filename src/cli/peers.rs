@@ -89,6 +89,8 @@ struct Report<'a> {
     preset: Option<&'a str>,
     radius: f64,
     target_source: &'static str,
+    /// What the caller should know about the ball at v0 ([`Ball::warnings`]).
+    warnings: Vec<String>,
 }
 
 pub fn run(a: &PeersArgs, out: &mut dyn Write) -> anyhow::Result<()> {
@@ -122,6 +124,7 @@ pub fn run(a: &PeersArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         preset: b.name.as_deref(),
         radius,
         target_source: source,
+        warnings: b.warnings(&b.impact()?),
     };
     match a.format {
         PeersFormat::Json => output::json(out, &report)?,
