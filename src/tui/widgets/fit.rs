@@ -116,6 +116,9 @@ fn outcome(o: &FitOutcome, standing: Standing, t: &Theme) -> Vec<Line<'static>> 
     if !o.converged {
         rms.push_str(" · not converged");
     }
+    if !o.not_pinned.is_empty() {
+        rms.push_str(&format!(" · {} not pinned", o.not_pinned.join(", ")));
+    }
     lines.push(Line::raw(rms));
     if let Some(w) = o.warnings.first() {
         lines.push(Line::styled(format!(" {w}"), t.warning()));
