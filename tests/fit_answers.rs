@@ -361,3 +361,17 @@ fn a_parameter_run_to_its_bound_is_no_answer() {
     let w = v["warnings"].to_string();
     assert!(w.contains("bound of its search"), "{w}");
 }
+
+/// `--drag-coefficient` was silently ignored with `--force-time` (issue 28): refused.
+#[test]
+fn drag_is_refused_where_there_is_no_flight() {
+    bad(
+        &["fit", "--cor", "0.7", "--drag-coefficient", "0.47"],
+        &["--drag-coefficient corrects drop tests"],
+    );
+    let (_dir, path) = file_with(b"v0,cor\n1,0.8\n2,0.78\n3,0.76\n");
+    bad(
+        &["fit", "--cor-table", &path, "--drag-coefficient", "0.47"],
+        &["--drag-coefficient corrects drop tests"],
+    );
+}

@@ -126,6 +126,9 @@ impl App {
             }
             _ => match &self.fit.as_ref().map(|p| &p.status) {
                 Some(FitStatus::Done(Err(e))) => self.error(format!("fit failed: {e}")),
+                Some(FitStatus::Done(Ok(o))) if !o.identified => self.warn(
+                    "fit done, but it gave no answer (see the pane): F twice applies it".into(),
+                ),
                 _ => self.info("fit done: F applies it (u undoes)".into()),
             },
         }
