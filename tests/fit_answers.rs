@@ -375,3 +375,10 @@ fn drag_is_refused_where_there_is_no_flight() {
         &["--drag-coefficient corrects drop tests"],
     );
 }
+
+/// `peers --cor 0.9999999` printed "target COR 1 (given)" (issue 28): the target as typed.
+#[test]
+fn a_target_cor_is_printed_as_given() {
+    let text = ok(&["peers", "--cor", "0.9999999"]);
+    assert!(text.contains("target COR 0.9999999 (given)"), "{text}");
+}

@@ -127,7 +127,8 @@ pub fn fit_k_r(params: &ImpactParams, law: ContactLaw, target: f64) -> Result<Fi
     // "exact" is verified: the root must reproduce the target (a COR that is not continuous
     // in λ, or a root find that stopped short, is refused rather than reported as a fit)
     let got = cor(lambda);
-    if !((got - target).abs() <= super::verdict::EXACT_MISS * target.max(1e-300)) {
+    let hit = (got - target).abs() <= super::verdict::EXACT_MISS * target.max(1e-300);
+    if !hit {
         return Err(FitError::OutOfReach {
             target,
             zeta,
