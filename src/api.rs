@@ -64,9 +64,11 @@ mod entry;
 mod error;
 mod fit;
 mod report;
+mod warnings;
 pub use entry::Overrides;
 pub use error::BallError;
 pub use report::{BallHeader, Energy, FitReport, ImpactReport, MeasuredAt};
+pub use warnings::{ENERGY_RESIDUAL_MAX, indentation_warning};
 
 impl Ball {
     /// An embedded preset (`superball`, `golf`, `baseball`, …) on the parameter set and contact

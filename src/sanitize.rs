@@ -12,7 +12,9 @@
 //! - every file written through `crate::atomic` is passed through [`text`], and
 //!   `figure::svg::render` too: an SVG stays well-formed XML (`a_figure_with_control_characters_is_valid_xml`).
 //!
-//! JSON needs nothing: serde_json escapes control characters itself.
+//! JSON escapes them itself: `cli::output::json` writes every such character as `\uXXXX`, so
+//! the sanitizer finds nothing to rewrite and the document stays valid JSON
+//! (tests/escaping.rs, `json_stays_json_whatever_a_name_holds`).
 
 use std::borrow::Cow;
 use std::io::{self, Write};
@@ -20,7 +22,7 @@ use std::io::{self, Write};
 /// Characters never written as themselves: C0 and C1 controls and DEL (`char::is_control`),
 /// the bidirectional overrides and isolates, which reorder what a terminal shows, and the two
 /// noncharacters XML 1.0 forbids.
-fn hostile(c: char) -> bool {
+pub fn hostile(c: char) -> bool {
     c.is_control()
         || matches!(
             c,

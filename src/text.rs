@@ -16,7 +16,11 @@ pub fn number(x: f64) -> String {
         "NaN".into()
     } else if x.is_infinite() {
         if x > 0.0 { "inf".into() } else { "-inf".into() }
-    } else if x == 0.0 || (1e-4..1e7).contains(&x.abs()) {
+    } else if x == 0.0 {
+        // −0 (a velocity at rest, a rounded trajectory) is written as 0: "-0" in a CSV or an
+        // export reads as a sign where there is none (issue 28)
+        "0".into()
+    } else if (1e-4..1e7).contains(&x.abs()) {
         format!("{x}")
     } else {
         format!("{x:e}")
@@ -169,6 +173,7 @@ mod tests {
         assert_eq!(number(f64::INFINITY), "inf");
         assert_eq!(number(f64::NAN), "NaN");
         assert_eq!(number(-2.0), "-2");
+        assert_eq!(number(-0.0), "0");
     }
 
     #[test]

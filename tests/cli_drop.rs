@@ -19,7 +19,8 @@ fn json_holds_the_issues_keys_and_the_verdict() {
     ]);
     // serde_json's map sorts its keys
     let keys: Vec<&String> = v.as_object().unwrap().keys().collect();
-    assert_eq!(keys, ["bounces", "drag", "height", "standard"]);
+    // (issue 27 added `warnings`, the first impact's)
+    assert_eq!(keys, ["bounces", "drag", "height", "standard", "warnings"]);
     // the standard's drop height is the default
     assert_eq!(f(&v, "height"), 2.54);
     assert_eq!(v["drag"], true);
@@ -314,4 +315,14 @@ fn every_new_ball_runs_through_the_other_commands() {
             assert!(out.exists(), "{ball} {fig}");
         }
     }
+}
+
+/// The trajectory's first row read `0,1,-0` (the velocity at release): no field is "-0"
+/// (issue 28).
+#[test]
+fn no_negative_zero_in_the_trajectory() {
+    let csv = ok(&["drop", "--preset", "tennis", "--format", "csv"]);
+    let fields = csv.lines().skip(1).flat_map(|l| l.split(','));
+    assert_eq!(fields.filter(|f| *f == "-0").count(), 0);
+    assert!(csv.lines().nth(1).unwrap().ends_with(",0"), "{csv}");
 }

@@ -362,7 +362,12 @@ fn one_drop_is_an_exact_solve_not_a_nan_error() {
         "--format",
         "json",
     ];
-    let v = json_at(dir.path(), &two);
+    // (its interval, 2092 … 674765 N/m at one degree of freedom, spans more than a factor
+    // 100: the fit reports it and exits 1, no answer — issue 27)
+    let o = bl_at(dir.path(), &two);
+    assert_eq!(o.code, 1, "{}", o.stderr);
+    let v: serde_json::Value = serde_json::from_str(&o.stdout).unwrap();
     assert!(v.get("exact").is_none(), "{v}");
     assert!(f(&v["fitted"]["k_r"], "std_error").is_finite(), "{v}");
+    assert_eq!(v["not_pinned"], serde_json::json!(["k_r"]));
 }

@@ -100,3 +100,31 @@ fn a_figure_with_control_characters_is_valid_xml() {
         svg.texts
     );
 }
+
+/// A path holding DEL, a C1 control or U+202E was written into JSON as `\u{7f}` (the terminal
+/// sanitizer's escape, not JSON's): `run --config $'cfg\x7fdel.toml' --format json | jq .`
+/// failed (issue 28). Now JSON escapes them itself, and the name reads back exactly.
+#[test]
+fn json_stays_json_whatever_a_name_holds() {
+    let dir = tempfile::tempdir().unwrap();
+    for name in [
+        "cfg\u{7f}del.toml",
+        "c1\u{85}x.toml",
+        "rlo\u{202e}lmth.toml",
+    ] {
+        std::fs::write(dir.path().join(name), renamed("superball2", "7.08e4")).unwrap();
+        for args in [
+            &["run", "--config", name, "--format", "json"][..],
+            &["presets", "--config", name, "--format", "json"][..],
+            &[
+                "sweep", "velocity", "--config", name, "--points", "2", "--format", "json",
+            ][..],
+        ] {
+            let out = ok_at(dir.path(), args);
+            assert_clean("stdout", &out);
+            let v: serde_json::Value = serde_json::from_str(&out)
+                .unwrap_or_else(|e| panic!("{args:?}: not JSON ({e}): {out}"));
+            assert!(v.to_string().contains(name), "{args:?}: {out}");
+        }
+    }
+}

@@ -346,4 +346,17 @@ fn an_unpinned_parameter_is_said_so() {
         s.contains("k_r = ") && s.contains("not pinned by the data"),
         "{s}"
     );
+    // F asks first for a fit that gave no answer (issue 27: it applied a fit the pane itself
+    // marked "not converged"): the first F only says so, the second applies it
+    let before = app.setting().params;
+    app.update(Action::ApplyFit);
+    assert_eq!(app.setting().params, before);
+    let m = app.message().unwrap().text.clone();
+    assert!(
+        m.contains("no answer") && m.contains("F again applies"),
+        "{m}"
+    );
+    app.update(Action::ApplyFit);
+    assert_ne!(app.setting().params, before);
+    assert_eq!(app.fit_standing(), Some(Standing::Applied));
 }

@@ -47,6 +47,9 @@ fn o_names_a_bad_file_then_f_fits_and_shift_f_applies() {
     x.send(b"f");
     x.wait_for("k_p");
     x.wait_for("residual");
+    // this trace's fit pins no k_r (λ → 0): F asks first, the second F applies (issue 27)
+    x.send(b"F");
+    x.wait_for("anyway");
     x.send(b"F");
     x.wait_for("applied");
     x.send(b"q");

@@ -141,6 +141,18 @@ fn report<'py>(
     d.set_item("max_force", r.max_force)?;
     d.set_item("contact_time", r.contact_time)?;
     d.set_item("warnings", f.warnings.clone())?;
+    // whether the fit answered (docs/fitting.md): the caller checks `identified`, as the
+    // command line's exit code does
+    d.set_item("identified", f.identified)?;
+    d.set_item("not_pinned", f.not_pinned.clone())?;
+    d.set_item("on_bound", f.on_bound.clone())?;
+    if let Some(t) = &f.lack_of_fit {
+        let lack = PyDict::new(py);
+        lack.set_item("test", t.test)?;
+        lack.set_item("statistic", t.statistic)?;
+        lack.set_item("p_value", t.p_value)?;
+        d.set_item("lack_of_fit", lack)?;
+    }
     if f.exact() {
         d.set_item("exact", true)?;
     }

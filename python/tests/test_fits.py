@@ -7,7 +7,9 @@ import numpy as np
 import pytest
 
 import bouncelab
-from test_bouncelab import cli_error, cli_json, no_user_presets, same  # noqa: F401
+import json
+
+from test_bouncelab import cli, cli_error, cli_json, no_user_presets, same  # noqa: F401
 
 G = 9.80665  # m/s², the library's g
 
@@ -126,11 +128,20 @@ def test_fit_drops_recovers_k_r_and_z_p():
     same_as_cli(fit, cli_json(*args))
 
 
+def cli_report(*args):
+    """The command line's JSON report whether or not the fit answered: exit 0 with
+    `identified` true, or exit 1 with it false (issue 27: the report is still printed)."""
+    code, out, err = cli(*args)
+    report = json.loads(out)
+    assert (code, report["identified"]) in [(0, True), (1, False)], (code, err)
+    return report
+
+
 def test_fit_drops_with_drag_equals_the_cli():
     fit = bouncelab.fit_drops([1.0, 2.0], [0.6, 1.1], preset="tennis", drag_coefficient=0.55)
-    expected = cli_json("fit", "--preset", "tennis", "--drag-coefficient", "0.55",
-                        "--drop-height", "1", "--rebound-height", "0.6",
-                        "--drop-height", "2", "--rebound-height", "1.1", "--format", "json")
+    expected = cli_report("fit", "--preset", "tennis", "--drag-coefficient", "0.55",
+                          "--drop-height", "1", "--rebound-height", "0.6",
+                          "--drop-height", "2", "--rebound-height", "1.1", "--format", "json")
     same_as_cli(fit, expected)
     # drag: the ball fell slower than in vacuum and rose from faster than it looks
     assert fit["drops"]["v0"][1] < np.sqrt(2 * G * 2.0)
@@ -169,3 +180,24 @@ def test_errors_of_the_arrays():
         bouncelab.fit_trace([0.0, 1.0, 2.0], [0.0, 1.0])
     with pytest.raises(ValueError, match=r"^COR table row 1: impact speed -1 must be positive"):
         bouncelab.fit_cor_table([-1.0], [0.5])
+
+
+def test_an_exact_drop_that_misses_is_out_of_reach():
+    """A golf ball dropped 1 m, rebounding 0.5 m: e = 0.707, below the 0.813 the model gives at
+    λ = 0. It was returned as an exact fit with K_r on its bound (issue 27)."""
+    with pytest.raises(ValueError, match="out of reach"):
+        bouncelab.fit_drops([1.0], [0.5], preset="golf")
+    assert cli_error("fit", "--preset", "golf", "--drop-height", "1",
+                     "--rebound-height", "0.5")
+
+
+def test_a_fit_without_an_answer_says_so():
+    """Forty drops from one height cannot pin both K_r and z_p: the dict says which one, as
+    the command line's report does before it exits 1."""
+    rng = np.random.default_rng(5)
+    rebound = 0.6 + 0.01 * rng.normal(size=40)
+    fit = bouncelab.fit_drops(np.ones(40), rebound, preset="tennis")
+    assert fit["identified"] is False
+    assert len(fit["not_pinned"]) == 1 and fit["not_pinned"][0] in ("k_r", "z_p")
+    one = bouncelab.fit_drops(np.ones(40), rebound, preset="tennis", free=["k_r"])
+    assert one["identified"] is True and one["not_pinned"] == []

@@ -89,6 +89,8 @@ pub struct VelocityPoint {
     pub contact_time: Option<f64>,
     /// Permanent indentation z_f (the flat the ball leaves with), m.
     pub permanent_indentation: f64,
+    /// Peak indentation z_m, m.
+    pub max_indentation: f64,
 }
 
 /// COR against impact speed for one ball (Fig. 4): flat until flattening starts, then falling.
@@ -111,6 +113,7 @@ pub fn cor_vs_velocity(
                 max_force: r.max_force,
                 contact_time: r.contact_time,
                 permanent_indentation: r.permanent_indentation,
+                max_indentation: r.max_indentation,
             })
         })
         .collect()

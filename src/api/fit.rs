@@ -80,12 +80,59 @@ impl Ball {
         }
         let radius = self.measured.as_ref().map_or(f64::NAN, |m| m.radius);
         let flight = Flight::new(self.params.mass, radius, air);
-        Ok(drops
+        drops
             .iter()
-            .map(|&(h, r)| {
+            .enumerate()
+            .map(|(i, &(h, r))| {
                 let (v0, cor) = drop_to_cor(h, r, &flight);
-                CorPoint::new(v0, cor)
+                check_corrected(i, drops.len(), (h, r), v0, cor)?;
+                Ok(CorPoint::new(v0, cor))
             })
-            .collect())
+            .collect()
     }
+}
+
+/// A drop's corrected speed and COR must be a possible impact: finite, e ≤ 1, and a drag
+/// correction no larger than the rebound measured (the rise in vacuum that the launch speed
+/// would give, v²/2g, less the rebound, is what drag took): otherwise the drag correction, not
+/// the ball, makes the number, and the row is refused.
+fn check_corrected(
+    row: usize,
+    rows: usize,
+    (h, r): (f64, f64),
+    v0: f64,
+    cor: f64,
+) -> Result<(), BallError> {
+    let launch = cor * v0;
+    let correction = launch * launch / (2.0 * crate::drop::flight::G) - r;
+    let what = match rows {
+        1 => format!("the drop from {} m to {} m", number(h), number(r)),
+        _ => format!(
+            "drop {} of {rows}, {} m to {} m",
+            row + 1,
+            number(h),
+            number(r)
+        ),
+    };
+    let reason = if !(v0.is_finite() && cor.is_finite()) {
+        format!("{what}: the drag correction gives no finite speed")
+    } else if cor > 1.0 {
+        format!(
+            "{what}: corrected for drag it implies COR {} > 1; the drag correction is larger \
+             than these heights allow (check --drag-coefficient and the heights)",
+            crate::text::sig(cor, 4)
+        )
+    } else if correction > r {
+        format!(
+            "{what}: the drag correction ({} m) is larger than the rebound itself",
+            crate::text::sig(correction, 3)
+        )
+    } else {
+        return Ok(());
+    };
+    Err(BallError::Invalid {
+        field: "rebound_height",
+        value: r,
+        reason,
+    })
 }

@@ -107,6 +107,9 @@ pub struct ImpactReport<'a> {
     pub measured: Option<MeasuredAt>,
     /// The energy budget, when the run audited it.
     pub energy: Option<Energy>,
+    /// What the caller should know about this answer ([`Ball::warnings`]); empty when
+    /// nothing.
+    pub warnings: Vec<String>,
     /// History times, s (with the history only).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub t: Option<&'a [f64]>,
@@ -158,6 +161,7 @@ impl<'a> ImpactReport<'a> {
                 budget,
                 relative_residual: budget.relative_residual(),
             }),
+            warnings: ball.warnings(r),
             t: h(&r.history.t),
             force: h(&r.history.force),
             indentation: h(&r.history.indentation),

@@ -110,10 +110,17 @@ pub fn run(a: &DropArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         .transpose()
         .map_err(drop_error)?;
     match a.format {
-        DropFormat::Json => output::json(out, &report(&run, verdict.as_ref()))?,
+        DropFormat::Json => {
+            let mut r = report(&run, verdict.as_ref());
+            r.warnings = first_impact_warnings(&b, &run)?;
+            output::json(out, &r)?
+        }
         DropFormat::Csv => trajectory_csv(out, &run)?,
         DropFormat::Text => {
             text(out, &b.label(), &run, standard.zip(verdict), radius)?;
+            for w in first_impact_warnings(&b, &run)? {
+                writeln!(out, "warning: {w}")?;
+            }
             // no standard asked for: name the ball's own, if it has one
             if let (None, Some(own)) = (standard, b.name.as_deref().and_then(standards::for_ball)) {
                 writeln!(
@@ -147,6 +154,17 @@ struct Report<'a> {
     bounces: &'a [crate::drop::Bounce],
     #[serde(skip_serializing_if = "Option::is_none")]
     standard: Option<StandardJson>,
+    /// What the caller should know (the first, fastest impact's [`Ball::warnings`]).
+    warnings: Vec<String>,
+}
+
+/// The warnings of the drop's first impact, the fastest: later ones only slow down.
+fn first_impact_warnings(b: &crate::api::Ball, run: &DropRun) -> anyhow::Result<Vec<String>> {
+    let Some(first) = run.bounces.first() else {
+        return Ok(Vec::new());
+    };
+    let ball = b.clone().with_v0(first.v_in)?;
+    Ok(ball.warnings(&ball.impact()?))
 }
 
 fn report<'a>(run: &'a DropRun, v: Option<&Verdict>) -> Report<'a> {
@@ -161,6 +179,7 @@ fn report<'a>(run: &'a DropRun, v: Option<&Verdict>) -> Report<'a> {
             verdict: if v.pass { "pass" } else { "fail" },
             margin: v.margin,
         }),
+        warnings: Vec::new(),
     }
 }
 

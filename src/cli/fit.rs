@@ -120,6 +120,14 @@ impl FitArgs {
         if let Some(p) = &self.drop_test {
             given.push(Source::DropFile(p.clone()));
         }
+        // air drag corrects drop heights only: silently ignored elsewhere (issue 28)
+        let drops = matches!(given.as_slice(), [Source::Drops(_) | Source::DropFile(_)]);
+        if self.drag_coefficient.is_some() && given.len() == 1 && !drops {
+            anyhow::bail!(
+                "--drag-coefficient corrects drop tests (--drop-height, --drop-test) only: a \
+                 COR, a COR table or a force-time trace has no flight to correct"
+            );
+        }
         match given.len() {
             1 => Ok(given.pop().unwrap_or(Source::Cor(f64::NAN))),
             0 => anyhow::bail!(

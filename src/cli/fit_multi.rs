@@ -46,11 +46,23 @@ fn load(a: &FitArgs, source: &Source, ball: &Ball) -> anyhow::Result<Loaded> {
     });
     // the library checks the air (whatever the data) and the drop heights
     ball.drops_to_cor(&[], air)?;
+    // a file's rows one at a time, so that a refused drop is named by its line
     let from_drops = |drops: &[(f64, f64, usize)]| -> anyhow::Result<Vec<CorPoint>> {
-        let pairs: Vec<(f64, f64)> = drops.iter().map(|d| (d.0, d.1)).collect();
-        let mut points = ball.drops_to_cor(&pairs, air)?;
-        for (p, d) in points.iter_mut().zip(drops) {
-            p.line = d.2;
+        if drops.iter().all(|d| d.2 == 0) {
+            let pairs: Vec<(f64, f64)> = drops.iter().map(|d| (d.0, d.1)).collect();
+            return Ok(ball.drops_to_cor(&pairs, air)?);
+        }
+        let file = match source {
+            Source::DropFile(p) => p.display().to_string(),
+            _ => String::new(),
+        };
+        let mut points = Vec::with_capacity(drops.len());
+        for d in drops {
+            let mut p = ball
+                .drops_to_cor(&[(d.0, d.1)], air)
+                .map_err(|e| anyhow::anyhow!("{file}:{}:1: {e}", d.2))?;
+            p[0].line = d.2;
+            points.append(&mut p);
         }
         Ok(points)
     };
@@ -137,6 +149,10 @@ fn fit_error(e: MultiFitError, data: &Loaded, free: &[Param]) -> anyhow::Error {
         .unwrap_or_default();
     match e {
         MultiFitError::Params(p) => p.into(),
+        e @ MultiFitError::Contradicts { .. } => match &data.file {
+            Some(f) => anyhow::anyhow!("{f}: {e}"),
+            None => anyhow::anyhow!("{e}"),
+        },
         MultiFitError::NoPulse(m) => {
             anyhow::anyhow!("{}:{m}", data.file.clone().unwrap_or_default())
         }
@@ -181,6 +197,7 @@ pub fn run(
         FitFormat::Json => output::json(out, &report)?,
         FitFormat::Text => super::fit_report::text(out, &ball, &data, &f, &report)?,
     }
+    refuse_unanswered(a, &f)?;
     if let Some(p) = &a.plot {
         let svg = super::fit_plot::svg(&ball, &data, &f, &fitted)?;
         super::figure::write_file(p, &svg, a.force)?;
@@ -195,6 +212,31 @@ pub fn run(
         )?;
     }
     Ok(())
+}
+
+/// A fit that did not answer (not converged, or a parameter the data do not pin) is reported
+/// but neither plotted nor saved, and the command exits 1 (docs/fitting.md).
+fn refuse_unanswered(a: &FitArgs, f: &crate::analysis::fit::MultiFit) -> anyhow::Result<()> {
+    if f.identified {
+        return Ok(());
+    }
+    let mut why = Vec::new();
+    if !f.converged {
+        why.push(format!(
+            "it did not converge in {} iterations",
+            f.iterations
+        ));
+    }
+    if !f.not_pinned.is_empty() {
+        why.push(format!("the data do not pin {}", f.not_pinned.join(", ")));
+    }
+    let refused = match (&a.plot, &a.save) {
+        (None, None) => "",
+        (Some(_), None) => "; --plot not written",
+        (None, Some(_)) => "; --save not written",
+        (Some(_), Some(_)) => "; --plot and --save not written",
+    };
+    Err(MultiFitError::Unanswered(format!("{}{refused}", why.join(" and "))).into())
 }
 
 /// Outputs written besides the report: on stdout after a text report, on stderr after JSON

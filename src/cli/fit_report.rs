@@ -46,6 +46,16 @@ pub struct Report<'a> {
     max_force: f64,
     contact_time: Option<f64>,
     warnings: &'a [String],
+    /// Whether the fit answered: converged, every free parameter pinned by the data
+    /// (docs/fitting.md); `false` exits 1.
+    identified: bool,
+    /// The free parameters the data do not pin.
+    not_pinned: &'a [&'static str],
+    /// The free parameters that ran to the bound of their search.
+    on_bound: &'a [&'static str],
+    /// The test of systematic residuals, where one applies.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    lack_of_fit: Option<crate::analysis::fit::verdict::LackOfFit>,
     /// As many data as fitted quantities: an exact solve, with no residual to estimate the
     /// uncertainty from (`std_error` and `ci95` are null then). Present only when true.
     #[serde(skip_serializing_if = "std::ops::Not::not")]
@@ -130,8 +140,30 @@ pub fn report<'a>(
         max_force: r.max_force,
         contact_time: r.contact_time,
         warnings: &f.warnings,
+        identified: f.identified,
+        not_pinned: &f.not_pinned,
+        on_bound: &f.on_bound,
+        lack_of_fit: f.lack_of_fit,
         exact: f.exact(),
     }
+}
+
+/// "yes", or why the fit gave no answer (it then exits 1).
+fn answered(f: &MultiFit) -> String {
+    if f.identified {
+        return "yes".into();
+    }
+    let mut why = Vec::new();
+    if !f.converged {
+        why.push("not converged".to_string());
+    }
+    if !f.not_pinned.is_empty() {
+        why.push(format!(
+            "{} not pinned by the data",
+            f.not_pinned.join(", ")
+        ));
+    }
+    format!("NO ({})", why.join("; "))
 }
 
 /// "1 point", "7 points".
@@ -246,6 +278,7 @@ pub fn text(
                 }
             ),
         ],
+        vec!["answered".into(), answered(f)],
         vec![
             format!("model at v0 = {} m/s", human(r.v0, 4)),
             format!(

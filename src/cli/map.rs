@@ -298,7 +298,7 @@ fn json(map: &Map, ball: &MapBall, targets: Option<&Targets>) -> anyhow::Result<
         iso_cor,
         feasible_outline,
     };
-    let mut s = serde_json::to_string(&doc)?;
+    let mut s = super::output::json_string(&doc)?;
     s.push('\n');
     Ok(s)
 }

@@ -164,7 +164,10 @@ fn exit_code(e: &anyhow::Error) -> Option<u8> {
             || c.is::<crate::figure::svg::RenderError>()
             || matches!(
                 c.downcast_ref(),
-                Some(crate::analysis::fit::MultiFitError::NoAnswer)
+                Some(
+                    crate::analysis::fit::MultiFitError::NoAnswer
+                        | crate::analysis::fit::MultiFitError::Unanswered(_)
+                )
             )
             || matches!(c.downcast_ref(), Some(SolveError::Unresolved { .. }))
             || c.downcast_ref::<crate::BallError>()

@@ -20,8 +20,42 @@ pub fn csv_row<S: AsRef<str>>(out: &mut dyn Write, fields: &[S]) -> io::Result<(
 
 /// A JSON document on one line (pipe it to `jq` to read it). Non-finite numbers become `null`.
 pub fn json<T: Serialize>(out: &mut dyn Write, value: &T) -> io::Result<()> {
-    serde_json::to_writer(&mut *out, value).map_err(io::Error::from)?;
+    out.write_all(json_string(value)?.as_bytes())?;
     writeln!(out)
+}
+
+/// `value` as one line of JSON in which every character the terminal sanitizer would rewrite
+/// (DEL, C1 controls, the bidirectional overrides: `crate::sanitize`) is a JSON escape
+/// `\u007f` — serde_json escapes only C0 itself, and the sanitizer's visible `\u{7f}` is no
+/// JSON (issue 28: `run --config $'cfg\x7fdel.toml' --format json | jq .` failed).
+pub fn json_string<T: Serialize>(value: &T) -> io::Result<String> {
+    let mut buf = Vec::new();
+    let mut ser = serde_json::Serializer::with_formatter(&mut buf, Escaping);
+    value.serialize(&mut ser).map_err(io::Error::from)?;
+    // serde_json writes UTF-8
+    String::from_utf8(buf).map_err(|e| io::Error::new(io::ErrorKind::InvalidData, e))
+}
+
+/// serde_json's compact format with hostile characters escaped.
+struct Escaping;
+
+impl serde_json::ser::Formatter for Escaping {
+    fn write_string_fragment<W: ?Sized + Write>(
+        &mut self,
+        writer: &mut W,
+        fragment: &str,
+    ) -> io::Result<()> {
+        let mut start = 0;
+        for (i, c) in fragment.char_indices() {
+            if crate::sanitize::hostile(c) {
+                writer.write_all(&fragment.as_bytes()[start..i])?;
+                // hostile characters are all in the Basic Multilingual Plane: one \uXXXX
+                write!(writer, "\\u{:04x}", c as u32)?;
+                start = i + c.len_utf8();
+            }
+        }
+        writer.write_all(&fragment.as_bytes()[start..])
+    }
 }
 
 /// Columns a cell takes on a terminal: combining marks (the bar of z̄) take none.

@@ -89,6 +89,8 @@ struct Report<'a> {
     preset: Option<&'a str>,
     radius: f64,
     target_source: &'static str,
+    /// What the caller should know about the ball at v0 ([`Ball::warnings`]).
+    warnings: Vec<String>,
 }
 
 pub fn run(a: &PeersArgs, out: &mut dyn Write) -> anyhow::Result<()> {
@@ -122,6 +124,7 @@ pub fn run(a: &PeersArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         preset: b.name.as_deref(),
         radius,
         target_source: source,
+        warnings: b.warnings(&b.impact()?),
     };
     match a.format {
         PeersFormat::Json => output::json(out, &report)?,
@@ -244,7 +247,12 @@ fn text(out: &mut dyn Write, b: &Ball, ball: &PeerBall, r: &Report) -> std::io::
     writeln!(
         out,
         "target COR {} ({}); k = K_p = {} N/m, K_h = {} N/m^1.5",
-        given(r.target_cor, 6),
+        // a target typed is shown as typed: 0.9999999 is not "1" (issue 28)
+        if r.target_source == "given" {
+            crate::text::number(r.target_cor)
+        } else {
+            given(r.target_cor, 6)
+        },
         r.target_source,
         human(ball.k, 4),
         human(ball.k_h, 4)

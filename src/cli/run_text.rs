@@ -98,6 +98,9 @@ pub fn write(out: &mut dyn Write, b: &Ball, r: &ImpactResponse, history: bool) -
     if history {
         write_history(out, r, &units.force, &units.time, &units.length)?;
     }
+    for w in b.warnings(r) {
+        writeln!(out, "warning: {w}")?;
+    }
     Ok(())
 }
 

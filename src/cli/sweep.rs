@@ -187,6 +187,14 @@ struct VelocityDoc<'a, T> {
     rows: &'a [T],
 }
 
+/// A speed sweep's row with what the caller should know about it.
+#[derive(Serialize)]
+struct VelocityRow<'a> {
+    #[serde(flatten)]
+    point: &'a crate::analysis::sweep::VelocityPoint,
+    warnings: Vec<String>,
+}
+
 fn velocity(a: &VelocityArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     super::ball::check_overrides(&a.ball.set, a.lambda, a.zeta)?;
     let mut b = a.ball.resolve(a.v0)?;
@@ -209,7 +217,18 @@ fn velocity(a: &VelocityArgs, out: &mut dyn Write) -> anyhow::Result<()> {
                     ball: b.header(),
                     lambda: n.lambda,
                     zeta: n.zeta,
-                    rows: &rows,
+                    rows: &rows
+                        .iter()
+                        .map(|point| VelocityRow {
+                            point,
+                            warnings: crate::api::indentation_warning(
+                                point.max_indentation,
+                                b.radius(),
+                            )
+                            .into_iter()
+                            .collect(),
+                        })
+                        .collect::<Vec<_>>(),
                 },
             )?
         }

@@ -86,9 +86,21 @@ impl std::fmt::Display for Targets {
     }
 }
 
+/// `s` up to `max` characters, with "… (N characters)" when it was longer.
+fn cut(s: &str, max: usize) -> String {
+    let n = s.chars().count();
+    if n <= max {
+        return s.to_string();
+    }
+    let head: String = s.chars().take(max).collect();
+    format!("{head}… ({n} characters)")
+}
+
 fn parse_one(part: &str) -> Result<Constraint, MapError> {
+    // a part is echoed in the error: a 120 kB one is cut to its first 60 characters, so the
+    // line stays one readable line (issue 28)
     let bad = |reason: String| MapError::Target {
-        part: part.to_string(),
+        part: cut(part, 60),
         reason,
     };
     if part.is_empty() {
@@ -168,5 +180,10 @@ mod tests {
             assert!(e.starts_with(&format!("invalid where: '{part}'")), "{e}");
             assert!(e.contains(why), "{e}");
         }
+        // a 120 kB part was echoed whole (issue 28): cut, its length said
+        let long = format!("cor>={}", "9".repeat(120_000));
+        let e = Targets::parse(&long).unwrap_err().to_string();
+        assert!(e.len() < 300, "{} bytes", e.len());
+        assert!(e.contains("… (120005 characters)"), "{e}");
     }
 }

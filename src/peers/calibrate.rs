@@ -82,6 +82,19 @@ pub fn exact(model: PeerModel, target: f64) -> Result<f64, PeerError> {
     }
 }
 
+/// An exact row is re-solved: the ball's impact at the calibrated damping must give the
+/// target to [`COR_TOL`] relative, or the target is out of reach (docs/peers.md §4).
+fn verify(model: PeerModel, target: f64, r: &ImpactResponse) -> Result<(), PeerError> {
+    if (r.cor - target).abs() <= COR_TOL * target {
+        return Ok(());
+    }
+    Err(PeerError::Missed {
+        model,
+        target,
+        got: r.cor,
+    })
+}
+
 /// One model calibrated by one rule, run at the ball's v0.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Calibrated {
@@ -115,6 +128,9 @@ pub fn compare(ball: &PeerBall, target: f64, samples: usize) -> Result<Vec<Calib
             };
             let damping = ball.damping_si(model, d);
             let response = impact(model, ball, damping, samples)?;
+            if rule == Rule::Exact {
+                verify(model, target, &response)?;
+            }
             rows.push(Calibrated {
                 model,
                 rule,

@@ -173,6 +173,23 @@ pub enum PeerError {
         /// The COR asked for.
         target: f64,
     },
+    /// The exact calibration's damping, run as the ball's impact, misses the target by more
+    /// than [`calibrate::COR_TOL`] (relative): a target below what the impact resolves.
+    #[error(
+        "invalid cor: {} is out of reach of {model}'s exact calibration: its impact gives COR \
+         {} (a miss of {} %); targets from 1e-6 to 1 are verified for every preset",
+        crate::text::number(*.target),
+        crate::text::sig(*.got, 4),
+        crate::text::sig(100.0 * (*.got - *.target).abs() / *.target, 2)
+    )]
+    Missed {
+        /// The model asked.
+        model: PeerModel,
+        /// The COR asked for.
+        target: f64,
+        /// The COR its impact gives.
+        got: f64,
+    },
     /// The step budget ran out (not seen over the tested domain): not the input's fault.
     #[error("{model}: the impact did not end within {steps} steps")]
     Unresolved {

@@ -57,6 +57,10 @@ pub struct FitOutcome {
     pub points: usize,
     pub converged: bool,
     pub warnings: Vec<String>,
+    /// Whether the fit answered: converged, every free parameter pinned (docs/fitting.md).
+    pub identified: bool,
+    /// The free parameters the data do not pin.
+    pub not_pinned: Vec<&'static str>,
 }
 
 /// Where a fit is: out on the worker, or back. (The explorer holds one: the size of the
@@ -77,6 +81,8 @@ pub struct FitPane {
     pub law: ContactLaw,
     pub free: Vec<Param>,
     pub status: FitStatus,
+    /// `F` was pressed once on a fit that did not answer: the next `F` applies it anyway.
+    pub armed: bool,
 }
 
 /// How a finished fit stands to the ball on screen.
@@ -155,5 +161,7 @@ pub fn run(r: &FitRequest) -> Result<FitOutcome, String> {
         points: f.points,
         converged: f.converged,
         warnings: f.warnings,
+        identified: f.identified,
+        not_pinned: f.not_pinned,
     })
 }

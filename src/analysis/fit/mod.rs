@@ -1,4 +1,4 @@
-//! Fitting the model to measurements (MODEL.md §4, docs/fitting.md).
+//! Fitting the model to measurements (docs/model.md §4, docs/fitting.md).
 //!
 //! - [`fit_k_r`]: K_r (λ) from one COR at fixed ζ, a bracketed root find (the original fit).
 //! - [`fit`]: several parameters at once from a force–time trace or a COR-against-speed table
@@ -13,6 +13,7 @@ mod multi;
 mod single;
 pub mod stats;
 mod trace;
+pub mod verdict;
 
 pub use multi::{Estimate, FitData, MultiFit, MultiFitError, fit};
 pub use single::{Fit, FitError, fit_k_r};
@@ -34,13 +35,24 @@ pub enum Param {
     /// K_h (N/m^1.5); moves K_p with it, K_p = 1.5 K_h √z_p (Eq. 16), as the adopted set ties
     /// them.
     KH,
+    /// The impact speed v0 (m/s): a force–time trace carries it in its impulse,
+    /// I = m v0 (1 + e), so it can be fitted from a trace alone (not from a COR table, whose
+    /// rows give their speeds).
+    V0,
 }
 
 impl Param {
     /// Every parameter a fit can free, in the order the output lists them.
-    pub const ALL: [Param; 5] = [Param::KP, Param::C, Param::KR, Param::ZP, Param::KH];
+    pub const ALL: [Param; 6] = [
+        Param::KP,
+        Param::C,
+        Param::KR,
+        Param::ZP,
+        Param::KH,
+        Param::V0,
+    ];
 
-    /// The name `--free` takes and the JSON writes: `k_p`, `c`, `k_r`, `z_p`, `k_h`.
+    /// The name `--free` takes and the JSON writes: `k_p`, `c`, `k_r`, `z_p`, `k_h`, `v0`.
     pub fn name(self) -> &'static str {
         match self {
             Param::KP => "k_p",
@@ -48,6 +60,7 @@ impl Param {
             Param::KR => "k_r",
             Param::ZP => "z_p",
             Param::KH => "k_h",
+            Param::V0 => "v0",
         }
     }
 
@@ -58,6 +71,7 @@ impl Param {
             Param::C => "kg/s",
             Param::ZP => "m",
             Param::KH => "N/m^1.5",
+            Param::V0 => "m/s",
         }
     }
 
@@ -74,6 +88,7 @@ impl Param {
             Param::KR => b.k_r,
             Param::ZP => b.z_p,
             Param::KH => ImpactParams::k_h_matching(b.k_p, b.z_p),
+            Param::V0 => b.v0,
         }
     }
 
@@ -93,10 +108,10 @@ impl Param {
 
 /// A name that is no fittable parameter (a `--free` entry, a `free=` item).
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
-#[error("invalid free parameter '{0}' (choose from k_p, c, k_r, z_p, k_h)")]
+#[error("invalid free parameter '{0}' (choose from k_p, c, k_r, z_p, k_h, v0)")]
 pub struct UnknownParam(pub String);
 
-/// The parameters named (`k_p`, `c`, `k_r`, `z_p`, `k_h`; blanks around a name ignored), in
+/// The parameters named (`k_p`, `c`, `k_r`, `z_p`, `k_h`, `v0`; blanks around a name ignored), in
 /// the order given; an error naming the first unknown one.
 pub fn parse_free<S: AsRef<str>>(names: &[S]) -> Result<Vec<Param>, UnknownParam> {
     names
@@ -117,6 +132,7 @@ pub fn apply(base: &ImpactParams, free: &[Param], values: &[f64]) -> ImpactParam
             Param::KR => b.k_r = v,
             Param::ZP => b.z_p = v,
             Param::KH => b.k_p = 1.5 * v * b.z_p.sqrt(),
+            Param::V0 => b.v0 = v,
         }
     }
     // K_h follows K_p and z_p when either moves (and is kept as given when neither does, or

@@ -1,13 +1,15 @@
 //! Several parameters at once: restarts, the best minimum, and its uncertainty.
 
-use super::Param;
 use super::cor::CorProblem;
 use super::lm::{self, Residuals, Solution};
 use super::stats::{CONDITION_MAX, uncertainty};
 use super::trace::TraceProblem;
+use super::verdict::{self, judge};
+use super::{Param, fit_k_r};
 use crate::measured::{CorPoint, MeasuredError, Trace};
 use crate::model::contact::ContactLaw;
 use crate::model::params::{ImpactParams, ParamError};
+use crate::text::sig;
 use serde::Serialize;
 use std::fmt;
 
@@ -75,6 +77,20 @@ pub struct MultiFit {
     pub warnings: Vec<String>,
     /// The model at each data point: force (N) at each sample, or COR at each speed.
     pub model: Vec<f64>,
+    /// Whether the fit answered: it converged and the data pin every free parameter
+    /// ([`super::verdict::pinned`]). A fit that did not answer still reports what it found,
+    /// but the command line exits 1 and refuses to save or plot it.
+    pub identified: bool,
+    /// The free parameters the data do not pin (an interval wider than a factor
+    /// [`super::verdict::PIN_RATIO`], no finite interval, or a value on the search's bound).
+    pub not_pinned: Vec<&'static str>,
+    /// The free parameters that ran to the bound of their search (±5 decades from the start
+    /// for a COR table, ±4 for a trace): the data ask for more than the model gives with the
+    /// others held.
+    pub on_bound: Vec<&'static str>,
+    /// A test of whether the model can follow the data at all (systematic residuals); `None`
+    /// where no test applies (too few points, no degree of freedom).
+    pub lack_of_fit: Option<super::verdict::LackOfFit>,
 }
 
 impl MultiFit {
@@ -107,6 +123,29 @@ pub enum MultiFitError {
     NoPulse(MeasuredError),
     /// No start led to parameters the solver answers for.
     NoAnswer,
+    /// The trace's impulse contradicts the impact speed and mass: I = m v0 (1 + e) needs
+    /// 0 ≤ e ≤ 1, so v0 must lie in [I/(2m), I/m].
+    Contradicts {
+        /// The restitution the impulse implies at the given v0.
+        implied: f64,
+        /// The impact speed given (m/s).
+        v0: f64,
+        /// The impulse of the pulse (N s).
+        impulse: f64,
+        /// The speeds the impulse allows (m/s): I/(2m) and I/m.
+        allowed: [f64; 2],
+    },
+    /// As many data as parameters, and no parameters of the model reproduce them (the miss of
+    /// the best, or a parameter pressed on its bound): the message says what is reachable.
+    OutOfReach(String),
+    /// The fit ran but gave no answer (did not converge, or the data do not pin a
+    /// parameter): the reason. Not the input's fault alone: the command line exits 1.
+    Unanswered(String),
+    /// `v0` is free but the data carry their own speeds (a COR table or drop tests).
+    SpeedNotFree,
+    /// A value that is not a finite number came up on the way (data or parameters far outside
+    /// any ball's range).
+    NonFinite,
 }
 
 impl fmt::Display for MultiFitError {
@@ -128,6 +167,34 @@ impl fmt::Display for MultiFitError {
                 f,
                 "no starting point gave parameters the solver answers for"
             ),
+            MultiFitError::Contradicts {
+                implied,
+                v0,
+                impulse,
+                allowed,
+            } => write!(
+                f,
+                "the pulse's impulse {} N s implies e = {} at v0 = {} m/s (I = m v0 (1 + e)), \
+                 outside 0 … 1: the trace allows v0 from {} to {} m/s (give --v0, or --free v0 \
+                 to fit it)",
+                crate::text::sig(*impulse, 4),
+                crate::text::sig(*implied, 3),
+                crate::text::number(*v0),
+                crate::text::sig(allowed[0], 4),
+                crate::text::sig(allowed[1], 4)
+            ),
+            MultiFitError::OutOfReach(m) => write!(f, "{m}"),
+            MultiFitError::Unanswered(why) => write!(f, "the fit gave no answer: {why}"),
+            MultiFitError::SpeedNotFree => write!(
+                f,
+                "v0 can be fitted from a force-time trace only: a COR table or drop test gives \
+                 each row's speed"
+            ),
+            MultiFitError::NonFinite => write!(
+                f,
+                "the fit met a value that is not a finite number: the data lie far outside \
+                 any ball's range"
+            ),
         }
     }
 }
@@ -146,19 +213,59 @@ pub fn fit(
     match data {
         FitData::Trace(trace) => {
             let summary = trace.summary().map_err(MultiFitError::NoPulse)?;
-            let p = TraceProblem::new(*base, law, free.to_vec(), trace, summary);
             too_few(trace.time.len(), free.len() + 2)?;
+            if !free.contains(&Param::V0) {
+                check_impulse(base, trace, &summary)?;
+            }
+            let p = TraceProblem::new(*base, law, free.to_vec(), trace, summary);
             // a minimum at the noise floor needs no further start
             let floor = 1.5 * summary.noise;
             let sol =
                 best(&p, p.starts(), |x| p.bounds(x), floor).ok_or(MultiFitError::NoAnswer)?;
-            let model = p.model(&sol.x).map(|m| m.0).unwrap_or_default();
-            let ball = p.ball(&sol.x);
-            let rms = rms(&sol.residuals);
-            Ok(finish(ball, law, free, &sol, None, rms, model))
+            let model = p.model(&sol.sol.x).map(|m| m.0).unwrap_or_default();
+            let ball = p.ball(&sol.sol.x);
+            let rms = rms(&sol.sol.residuals);
+            let mut f = finish(ball, law, free, &sol, None, rms, model)?;
+            // the model's misses matter only above the noise's scale (a noise-free synthetic
+            // trace leaves rounding's systematic residuals)
+            let lack = verdict::runs_test(&sol.sol.residuals)
+                .filter(|_| rms > 1e-6 * summary.peak.abs().max(f64::MIN_POSITIVE));
+            judge(&mut f, lack);
+            Ok(f)
         }
-        FitData::Cor(points) => fit_cor(base, law, points, free),
+        FitData::Cor(points) => {
+            if free.contains(&Param::V0) {
+                return Err(MultiFitError::SpeedNotFree);
+            }
+            fit_cor(base, law, points, free)
+        }
     }
+}
+
+/// A trace whose impulse needs e outside [0, 1] at the given speed cannot come from this
+/// ball: refused, with the speeds it allows (three standard errors of the impulse's noise
+/// are given to it).
+fn check_impulse(
+    base: &ImpactParams,
+    trace: &Trace,
+    s: &crate::measured::TraceSummary,
+) -> Result<(), MultiFitError> {
+    let n = trace.time.len();
+    let dt = (trace.time[n - 1] - trace.time[0]) / (n - 1).max(1) as f64;
+    let (e, sd) = verdict::implied_cor(s, base.mass, base.v0, dt);
+    if !(e.is_finite() && sd.is_finite()) {
+        return Err(MultiFitError::NonFinite);
+    }
+    if e < -3.0 * sd || e > 1.0 + 3.0 * sd {
+        let m = base.mass;
+        return Err(MultiFitError::Contradicts {
+            implied: e,
+            v0: base.v0,
+            impulse: s.impulse,
+            allowed: [s.impulse / (2.0 * m), s.impulse / m],
+        });
+    }
+    Ok(())
 }
 
 /// A COR table (with peak forces and contact times where given).
@@ -170,11 +277,12 @@ fn fit_cor(
 ) -> Result<MultiFit, MultiFitError> {
     let p = CorProblem::new(*base, law, free.to_vec(), points);
     too_few(p.count(), free.len())?;
+    check_scale(&p)?;
     let mut sol = best(&p, p.starts(), |x| p.bounds(x), 0.0).ok_or(MultiFitError::NoAnswer)?;
     let mut t_dof = None;
     if p.count() > points.len() {
         // mixed kinds: weigh each by its own scatter, then fit again from there
-        let kinds = p.rms_by_kind(&sol.x).ok_or(MultiFitError::NoAnswer)?;
+        let kinds = p.rms_by_kind(&sol.sol.x).ok_or(MultiFitError::NoAnswer)?;
         let counts = p.count_by_kind();
         for k in 0..3 {
             if kinds[k].is_finite() && (k > 0 || points.iter().all(|q| q.cor_sd.is_none())) {
@@ -189,16 +297,119 @@ fn fit_cor(
                 t_dof = Some(t_dof.map_or(dof, |d: usize| d.min(dof)));
             }
         }
-        let again = best(&p, vec![sol.x.clone()], |x| p.bounds(x), 0.0);
-        let its = sol.iterations;
+        let again = best(&p, vec![sol.sol.x.clone()], |x| p.bounds(x), 0.0);
+        let its = sol.sol.iterations;
         sol = again.ok_or(MultiFitError::NoAnswer)?;
-        sol.iterations += its;
+        sol.sol.iterations += its;
     }
-    let pred = p.predict(&sol.x).ok_or(MultiFitError::NoAnswer)?;
+    let pred = p.predict(&sol.sol.x).ok_or(MultiFitError::NoAnswer)?;
     let model: Vec<f64> = pred.iter().map(|q| q.0).collect();
     let misses: Vec<f64> = model.iter().zip(points).map(|(m, q)| m - q.cor).collect();
-    let ball = p.ball(&sol.x);
-    Ok(finish(ball, law, free, &sol, t_dof, rms(&misses), model))
+    if p.count() == free.len() {
+        verify_exact(&p, &sol, &pred)?;
+    }
+    let ball = p.ball(&sol.sol.x);
+    let mut f = finish(ball, law, free, &sol, t_dof, rms(&misses), model)?;
+    let dof = sol.sol.residuals.len().saturating_sub(free.len());
+    // χ² when every row carries its standard deviation (and nothing else was measured), else
+    // the runs test of the COR misses in the data's order of speed
+    let lack = if points.iter().all(|q| q.cor_sd.is_some()) && p.count() == points.len() {
+        verdict::chi2_test(&sol.sol.residuals, dof)
+    } else {
+        let mut by_speed: Vec<(f64, f64)> = points.iter().map(|q| q.v0).zip(misses).collect();
+        by_speed.sort_by(|a, b| a.0.total_cmp(&b.0));
+        let r: Vec<f64> = by_speed.iter().map(|m| m.1).collect();
+        verdict::runs_test(&r).filter(|_| f.rms_residual > 1e-9)
+    };
+    judge(&mut f, lack);
+    Ok(f)
+}
+
+/// Peak forces and contact times more than [`verdict::SCALE_MAX`] from the starting ball's,
+/// either way, lie beyond what the search (±5 decades in each parameter) can bring the model
+/// to: refused, naming the row, rather than fitted to the other kinds while these are
+/// outvoted.
+fn check_scale(p: &CorProblem) -> Result<(), MultiFitError> {
+    let x0: Vec<f64> = p.free.iter().map(|q| q.get(&p.base).ln()).collect();
+    let Some(pred) = p.predict(&x0) else {
+        return Ok(());
+    };
+    for (q, (_, f, t)) in p.points.iter().zip(&pred) {
+        let kinds = [
+            ("peak force", "N", q.max_force, Some(*f)),
+            ("contact time", "s", q.contact_time, *t),
+        ];
+        for (what, unit, measured, model) in kinds {
+            let (Some(m), Some(model)) = (measured, model) else {
+                continue;
+            };
+            let ratio = m / model;
+            if !(1.0 / verdict::SCALE_MAX..=verdict::SCALE_MAX).contains(&ratio) {
+                let row = if q.line > 0 {
+                    format!("line {}: ", q.line)
+                } else {
+                    String::new()
+                };
+                return Err(MultiFitError::OutOfReach(format!(
+                    "{row}the {what} measured at v0 = {} m/s, {} {unit}, is {}× the model's {} \
+                     {unit}: beyond a factor {} either way, out of the fit's reach",
+                    sig(q.v0, 4),
+                    sig(m, 4),
+                    sig(ratio, 3),
+                    sig(model, 4),
+                    verdict::SCALE_MAX
+                )));
+            }
+        }
+    }
+    Ok(())
+}
+
+/// An exact solve (as many data as parameters) must reproduce every datum to
+/// [`verdict::EXACT_MISS`] with no parameter on its bound; otherwise the data are out of the
+/// model's reach. One COR with K_r free says how far the model reaches ([`fit_k_r`]'s range).
+fn verify_exact(
+    p: &CorProblem,
+    sol: &Best,
+    pred: &[(f64, f64, Option<f64>)],
+) -> Result<(), MultiFitError> {
+    let rel = |m: f64, d: f64| (m - d).abs() <= verdict::EXACT_MISS * d.abs().max(1e-300);
+    let hit = p.points.iter().zip(pred).all(|(q, (e, f, t))| {
+        rel(*e, q.cor)
+            && q.max_force.is_none_or(|m| rel(*f, m))
+            && q.contact_time.is_none_or(|m| t.is_some_and(|t| rel(t, m)))
+    });
+    let pressed: Vec<&str> = (0..p.free.len())
+        .filter(|&j| verdict::on_bound(sol.sol.x[j], sol.lo[j], sol.hi[j]))
+        .map(|j| p.free[j].name())
+        .collect();
+    if hit && pressed.is_empty() {
+        return Ok(());
+    }
+    if let ([q], [Param::KR]) = (p.points, p.free.as_slice()) {
+        let at = ImpactParams { v0: q.v0, ..p.base };
+        if let Err(e @ super::FitError::OutOfReach { .. }) = fit_k_r(&at, p.law, q.cor) {
+            return Err(MultiFitError::OutOfReach(format!(
+                "{e} at v0 = {} m/s",
+                crate::text::sig(q.v0, 4)
+            )));
+        }
+    }
+    let closest: Vec<String> = p
+        .points
+        .iter()
+        .zip(pred)
+        .map(|(q, (e, _, _))| format!("COR {} for {}", sig(*e, 4), sig(q.cor, 4)))
+        .collect();
+    Err(MultiFitError::OutOfReach(format!(
+        "out of reach: the model comes no closer than {}{}",
+        closest.join(", "),
+        if pressed.is_empty() {
+            String::new()
+        } else {
+            format!(" ({} on the bound of the search)", pressed.join(", "))
+        }
+    )))
 }
 
 fn check_free(free: &[Param]) -> Result<(), MultiFitError> {
@@ -232,6 +443,19 @@ fn rms(r: &[f64]) -> f64 {
     (r.iter().map(|v| v * v).sum::<f64>() / r.len().max(1) as f64).sqrt()
 }
 
+/// A minimum and the box it was searched in.
+pub(super) struct Best {
+    pub sol: Solution,
+    pub lo: Vec<f64>,
+    pub hi: Vec<f64>,
+}
+
+/// Whether a solution's residuals and Jacobian are finite numbers (the SVD of the uncertainty
+/// is undefined otherwise).
+fn finite(s: &Solution) -> bool {
+    s.residuals.iter().all(|r| r.is_finite()) && s.jacobian.iter().all(|j| j.is_finite())
+}
+
 /// The lowest minimum over `starts`; stops early once the RMS residual is at `floor`, or when
 /// two starts have converged to the same lowest cost (to 1e-9) where the data pin every
 /// parameter: the restarts are there to escape a local minimum, and two ways into the same
@@ -242,14 +466,14 @@ fn best<P: Residuals>(
     starts: Vec<Vec<f64>>,
     bounds: impl Fn(&[f64]) -> (Vec<f64>, Vec<f64>),
     floor: f64,
-) -> Option<Solution> {
+) -> Option<Best> {
     // the most promising start first: one evaluation each
     let mut starts: Vec<(f64, Vec<f64>)> = starts
         .into_iter()
         .filter_map(|x0| Some((p.residuals(&x0).map(|r| rms(&r))?, x0)))
         .collect();
     starts.sort_by(|a, b| a.0.total_cmp(&b.0));
-    let mut best: Option<Solution> = None;
+    let mut best: Option<Best> = None;
     let mut iterations = 0;
     for (_, x0) in starts {
         let (lo, hi) = bounds(&x0);
@@ -257,21 +481,23 @@ fn best<P: Residuals>(
             continue;
         };
         iterations += s.iterations;
-        let same = best.as_ref().is_some_and(|b| {
+        let same = best.as_ref().map(|b| &b.sol).is_some_and(|b| {
             b.converged
                 && (s.cost - b.cost).abs() <= (1e-9 * b.cost).max(1e-3 * variance(b))
+                && finite(&s)
                 && uncertainty(&s.jacobian, &s.residuals).condition < CONDITION_MAX
         });
         let done = s.converged && (rms(&s.residuals) <= floor || same);
-        if best.as_ref().is_none_or(|b| s.cost < b.cost) {
-            best = Some(s);
+        let done = done && s.residuals.iter().all(|r| r.is_finite());
+        if best.as_ref().is_none_or(|b| s.cost < b.sol.cost) {
+            best = Some(Best { sol: s, lo, hi });
         }
         if done {
             break;
         }
     }
     best.map(|mut b| {
-        b.iterations = iterations;
+        b.sol.iterations = iterations;
         b
     })
 }
@@ -281,11 +507,15 @@ fn finish(
     params: ImpactParams,
     law: ContactLaw,
     free: &[Param],
-    sol: &Solution,
+    best: &Best,
     t_dof: Option<usize>,
     rms_residual: f64,
     model: Vec<f64>,
-) -> MultiFit {
+) -> Result<MultiFit, MultiFitError> {
+    let sol = &best.sol;
+    if !finite(sol) || !rms_residual.is_finite() {
+        return Err(MultiFitError::NonFinite);
+    }
     let mut u = uncertainty(&sol.jacobian, &sol.residuals);
     if let Some(d) = t_dof {
         u.t975 = super::stats::t975(d);
@@ -337,7 +567,12 @@ fn finish(
             e.ci95 = [f64::NAN, f64::NAN];
         }
     }
-    MultiFit {
+    let not_pinned = verdict::not_pinned(&fitted, best, names.len());
+    let on_bound = (0..free.len())
+        .filter(|&j| verdict::on_bound(sol.x[j], best.lo[j], best.hi[j]))
+        .map(|j| free[j].name())
+        .collect();
+    Ok(MultiFit {
         params,
         law,
         fitted,
@@ -352,7 +587,11 @@ fn finish(
         condition: u.condition,
         warnings,
         model,
-    }
+        identified: false,
+        not_pinned,
+        on_bound,
+        lack_of_fit: None,
+    })
 }
 
 fn warnings(

@@ -1,4 +1,4 @@
-//! Fitting K_r (λ) to a measured COR at fixed ζ (MODEL.md §4): e increases with λ, so this is
+//! Fitting K_r (λ) to a measured COR at fixed ζ (docs/model.md §4): e increases with λ, so this is
 //! a bracketed 1-D root find.
 
 use crate::model::contact::ContactLaw;
@@ -124,11 +124,23 @@ pub fn fit_k_r(params: &ImpactParams, law: ContactLaw, target: f64) -> Result<Fi
             1e-13 * hi,
         )
     };
+    // "exact" is verified: the root must reproduce the target (a COR that is not continuous
+    // in λ, or a root find that stopped short, is refused rather than reported as a fit)
+    let got = cor(lambda);
+    let hit = (got - target).abs() <= super::verdict::EXACT_MISS * target.max(1e-300);
+    if !hit {
+        return Err(FitError::OutOfReach {
+            target,
+            zeta,
+            low,
+            high: e_hi,
+        });
+    }
     Ok(Fit {
         k_r: lambda * params.k_p,
         lambda,
         zeta,
-        cor: cor(lambda),
+        cor: got,
     })
 }
 

@@ -119,7 +119,13 @@ impl<'a> TraceProblem<'a> {
     /// λ (a single spring K gives t_c = π √(m/K) and F_m = v0 √(m K); the Maxwell limit, Eq.
     /// 28, turns the COR the impulse shows, I = m v0 (1 + e), into ζ), then the given ball.
     pub fn starts(&self) -> Vec<Vec<f64>> {
-        let (m, v0, s) = (self.base.mass, self.base.v0, &self.summary);
+        let (m, s) = (self.base.mass, &self.summary);
+        // a free v0 starts where the impulse puts it for e = 0.75 (I = m v0 (1 + e))
+        let v0 = if self.free.contains(&Param::V0) {
+            s.impulse / (1.75 * m)
+        } else {
+            self.base.v0
+        };
         let width = s.t_end - s.t_start;
         let k_width = m * (std::f64::consts::PI / width).powi(2);
         let k_peak = (s.peak / v0).powi(2) / m;
@@ -139,6 +145,7 @@ impl<'a> TraceProblem<'a> {
                 Param::C => (m * k_p).sqrt() / (2.0 * zeta),
                 Param::KH => k_h * (1.0 + lambda) / lambda,
                 Param::ZP => self.base.z_p,
+                Param::V0 => v0,
             };
             out.push(
                 self.free

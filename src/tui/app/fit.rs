@@ -102,6 +102,7 @@ impl App {
                     law: r.law,
                     free: r.free.clone(),
                     status: FitStatus::Running,
+                    armed: false,
                 });
                 self.info(format!("fitting {} to {}…", names(&r.free), r.label));
                 Some(Effect::Fit(r))
@@ -125,6 +126,9 @@ impl App {
             }
             _ => match &self.fit.as_ref().map(|p| &p.status) {
                 Some(FitStatus::Done(Err(e))) => self.error(format!("fit failed: {e}")),
+                Some(FitStatus::Done(Ok(o))) if !o.identified => self.warn(
+                    "fit done, but it gave no answer (see the pane): F twice applies it".into(),
+                ),
                 _ => self.info("fit done: F applies it (u undoes)".into()),
             },
         }
@@ -141,6 +145,24 @@ impl App {
             FitStatus::Done(Err(_)) => return self.warn("the fit failed: nothing to apply".into()),
             FitStatus::Done(Ok(o)) => o.clone(),
         };
+        // a fit that did not answer is applied only when asked twice (issue 27: `F` applied a
+        // fit the pane itself marked "not converged")
+        if !outcome.identified && !pane.armed && standing != Some(Standing::Applied) {
+            if let Some(p) = &mut self.fit {
+                p.armed = true;
+            }
+            let mut why = Vec::new();
+            if !outcome.converged {
+                why.push("not converged".to_string());
+            }
+            if !outcome.not_pinned.is_empty() {
+                why.push(format!("{} not pinned", outcome.not_pinned.join(", ")));
+            }
+            return self.warn(format!(
+                "the fit gave no answer ({}): F again applies it anyway",
+                why.join("; ")
+            ));
+        }
         match standing {
             Some(Standing::Applied) => return self.info("the fit is already applied".into()),
             Some(Standing::Stale) => {

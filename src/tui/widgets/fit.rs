@@ -116,11 +116,17 @@ fn outcome(o: &FitOutcome, standing: Standing, t: &Theme) -> Vec<Line<'static>> 
     if !o.converged {
         rms.push_str(" · not converged");
     }
+    if !o.not_pinned.is_empty() {
+        rms.push_str(&format!(" · {} not pinned", o.not_pinned.join(", ")));
+    }
     lines.push(Line::raw(rms));
     if let Some(w) = o.warnings.first() {
         lines.push(Line::styled(format!(" {w}"), t.warning()));
     }
     let (keys, style) = match standing {
+        Standing::Ready if !o.identified => {
+            (" no answer: F twice applies it · f fits again", t.warning())
+        }
         Standing::Ready => (" F applies it (u undoes) · f fits again", t.info()),
         Standing::Applied => (" applied: u undoes · f fits again", t.info()),
         Standing::Stale => (" stale: F refuses it · f fits the ball now", t.warning()),

@@ -291,9 +291,13 @@ impl Readout<'_> {
         let mut lines = Vec::new();
         lines.extend(self.validity_line());
         if let Some(r) = self.run {
+            // the Hertz law is elastic: it never flattens, whatever z_m and z_p (it said "no
+            // flattening (z_m < z_p)" with z_m 11 mm > z_p 6 mm; tests/tui_issue27.rs)
+            let hertz = self.setting.law == crate::model::contact::ContactLaw::Hertz;
             let note = match (r.rebound, r.permanent_indentation > 0.0) {
                 (false, _) => " no rebound: the ball sinks into the dashpot",
                 (true, true) => " flattened: z_f > 0",
+                (true, false) if hertz => " Hertz: elastic, never flattens",
                 (true, false) => " no flattening (z_m < z_p)",
             };
             lines.push(Line::styled(note, theme.dim()));

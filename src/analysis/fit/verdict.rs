@@ -1,0 +1,239 @@
+//! Whether a fit answered (docs/fitting.md, "Did the fit answer?"): every free parameter
+//! pinned by the data, exact solves verified, the trace's impulse consistent with the setup,
+//! and a test of whether the model can follow the data at all.
+
+use super::Estimate;
+use crate::measured::TraceSummary;
+use serde::Serialize;
+use statrs::distribution::{ChiSquared, ContinuousCDF, Normal};
+
+/// A free parameter whose 95 % interval spans more than this factor (hi/lo) is not pinned by
+/// the data: the fit names a value but the data would take anything across two decades.
+pub const PIN_RATIO: f64 = 100.0;
+
+/// An exact solve (as many data as parameters) must reproduce its target to this relative
+/// miss, or the target is out of the model's reach.
+pub const EXACT_MISS: f64 = 1e-9;
+
+/// A measured peak force or contact time more than this factor from the starting ball's is
+/// out of the fit's reach (the search moves each parameter ±5 decades: a contact time
+/// ∝ 1/√K moves 2.5).
+pub const SCALE_MAX: f64 = 1e3;
+
+/// Below this p-value the residuals are called systematic: the model cannot follow the data.
+pub const LACK_OF_FIT_P: f64 = 1e-3;
+
+/// A test of the residuals for a model that cannot follow the data.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct LackOfFit {
+    /// `"runs"` (Wald–Wolfowitz runs test of the residuals' signs, in data order: too few
+    /// runs means the misses are systematic) or `"chi2"` (Σ(r/σ)² against χ² at n − p
+    /// degrees of freedom, when every point carries its standard deviation).
+    pub test: &'static str,
+    /// The runs test's z (negative: fewer runs than chance), or χ².
+    pub statistic: f64,
+    /// One-sided p-value: the chance of residuals this systematic (this large) from noise.
+    pub p_value: f64,
+}
+
+impl LackOfFit {
+    /// Whether the test says the model cannot follow the data.
+    pub fn significant(&self) -> bool {
+        self.p_value < LACK_OF_FIT_P
+    }
+}
+
+/// Wald–Wolfowitz runs test of the signs of `r` in order (zeros skipped); `None` below 20
+/// signs, where the normal approximation is not to be trusted. Mean runs μ = 2n₊n₋/n + 1,
+/// variance (μ − 1)(μ − 2)/(n − 1); p = Φ(z) for too few runs.
+pub fn runs_test(r: &[f64]) -> Option<LackOfFit> {
+    let signs: Vec<bool> = r.iter().filter(|v| **v != 0.0).map(|v| *v > 0.0).collect();
+    let n = signs.len() as f64;
+    let pos = signs.iter().filter(|s| **s).count() as f64;
+    let neg = n - pos;
+    if signs.len() < 20 || pos == 0.0 || neg == 0.0 {
+        return None;
+    }
+    let runs = 1.0 + signs.windows(2).filter(|w| w[0] != w[1]).count() as f64;
+    let mu = 2.0 * pos * neg / n + 1.0;
+    let var = (mu - 1.0) * (mu - 2.0) / (n - 1.0);
+    if var <= 0.0 {
+        return None;
+    }
+    let z = (runs - mu) / var.sqrt();
+    let p = Normal::standard().cdf(z);
+    Some(LackOfFit {
+        test: "runs",
+        statistic: z,
+        p_value: p,
+    })
+}
+
+/// χ² = Σ r² of residuals already divided by their standard deviations, at `dof` degrees of
+/// freedom; p = P(χ²_dof ≥ χ²). `None` without a degree of freedom.
+pub fn chi2_test(r: &[f64], dof: usize) -> Option<LackOfFit> {
+    if dof == 0 {
+        return None;
+    }
+    let chi2: f64 = r.iter().map(|v| v * v).sum();
+    let p = ChiSquared::new(dof as f64).ok()?.sf(chi2);
+    Some(LackOfFit {
+        test: "chi2",
+        statistic: chi2,
+        p_value: p,
+    })
+}
+
+/// Whether the data pin an estimate: with residuals left, a finite interval spanning at most
+/// [`PIN_RATIO`]; an exact solve (no residual) pins what it verified. Never a value on the
+/// search's bound.
+pub fn pinned(e: &Estimate, dof: usize, on_bound: bool) -> bool {
+    if on_bound || !e.value.is_finite() {
+        return false;
+    }
+    if dof == 0 {
+        return true;
+    }
+    let [lo, hi] = e.ci95;
+    lo.is_finite() && hi.is_finite() && lo > 0.0 && hi / lo <= PIN_RATIO
+}
+
+/// Whether `x` sits on (within 1e-6 of) the box `[lo, hi]` it was searched in.
+pub fn on_bound(x: f64, lo: f64, hi: f64) -> bool {
+    let tol = 1e-6 * (hi - lo).abs().max(1.0);
+    x - lo <= tol || hi - x <= tol
+}
+
+/// The restitution a force pulse implies at the given speed and mass: I = m v0 (1 + e)
+/// (docs/model.md §2, the impulse of the contact force is the change of momentum), and its
+/// standard error from the noise, σ_I = noise · √(n) · Δt over the n samples of the pulse.
+pub fn implied_cor(s: &TraceSummary, mass: f64, v0: f64, dt: f64) -> (f64, f64) {
+    let samples = ((s.t_end - s.t_start) / dt).max(1.0);
+    let sd_impulse = s.noise * samples.sqrt() * dt;
+    (s.impulse / (mass * v0) - 1.0, sd_impulse / (mass * v0))
+}
+
+/// The free parameters (the first `fitted.len()` variables of `best`) the data do not pin,
+/// with `quantities` fitted in all (a trace's start and baseline included).
+pub(super) fn not_pinned(
+    fitted: &[Estimate],
+    best: &super::multi::Best,
+    quantities: usize,
+) -> Vec<&'static str> {
+    let dof = best.sol.residuals.len().saturating_sub(quantities);
+    fitted
+        .iter()
+        .enumerate()
+        .filter(|(j, e)| {
+            let (x, lo, hi) = (best.sol.x[*j], best.lo[*j], best.hi[*j]);
+            !pinned(e, dof, on_bound(x, lo, hi))
+        })
+        .map(|(_, e)| e.name)
+        .collect()
+}
+
+/// The verdict on a finished fit: the lack-of-fit test, whether it answered, and the warnings
+/// that say why not (naming the `--free` set the data can pin).
+pub(super) fn judge(f: &mut super::MultiFit, lack: Option<LackOfFit>) {
+    f.lack_of_fit = lack;
+    if let Some(t) = lack.filter(LackOfFit::significant) {
+        f.warnings.push(format!(
+            "the model cannot follow these data: the residuals are systematic ({} test {} = \
+             {}, p = {})",
+            t.test,
+            if t.test == "runs" { "z" } else { "χ²" },
+            crate::text::sig(t.statistic, 3),
+            crate::text::sig(t.p_value, 2)
+        ));
+    }
+    f.identified = f.converged && f.not_pinned.is_empty();
+    for name in &f.on_bound {
+        let value = f
+            .fitted
+            .iter()
+            .find(|e| e.name == *name)
+            .map_or(f64::NAN, |e| e.value);
+        f.warnings.push(format!(
+            "{name} ran to the bound of its search ({}): the data ask for more than the model \
+             gives with the rest of the ball held",
+            crate::text::sig(value, 4)
+        ));
+    }
+    if !f.not_pinned.is_empty() {
+        let pinnable: Vec<&str> = f
+            .fitted
+            .iter()
+            .map(|e| e.name)
+            .filter(|n| !f.not_pinned.contains(n))
+            .collect();
+        f.warnings.push(format!(
+            "the data do not pin {}: {}",
+            f.not_pinned.join(", "),
+            if pinnable.is_empty() {
+                if f.fitted.len() == 1 {
+                    "add data (more points, other speeds, forces or contact times)".to_string()
+                } else {
+                    "add data (other speeds, forces or contact times) or fit fewer parameters"
+                        .to_string()
+                }
+            } else {
+                format!("fit --free {} alone, or add data", pinnable.join(","))
+            }
+        ));
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Alternating signs: as many runs as possible, p near 1; a block of + then a block of −
+    /// (a systematic miss): two runs, p tiny.
+    #[test]
+    fn runs_test_tells_noise_from_a_systematic_miss() {
+        let alt: Vec<f64> = (0..40)
+            .map(|i| if i % 2 == 0 { 1.0 } else { -1.0 })
+            .collect();
+        let t = runs_test(&alt).unwrap();
+        assert!(t.p_value > 0.99 && !t.significant(), "{t:?}");
+        let block: Vec<f64> = (0..40).map(|i| if i < 20 { 1.0 } else { -1.0 }).collect();
+        let t = runs_test(&block).unwrap();
+        // μ = 21, σ² = 20·19/39: z = (2 − 21)/3.1213 = −6.087
+        assert!((t.statistic + 6.0873).abs() < 1e-3, "{t:?}");
+        assert!(t.significant());
+        assert!(runs_test(&block[..10]).is_none());
+    }
+
+    /// χ² of 10 unit residuals at 10 degrees of freedom is the median-ish value (p ≈ 0.44);
+    /// residuals of 5σ are not noise.
+    #[test]
+    fn chi2_test_against_its_table() {
+        let t = chi2_test(&[1.0; 10], 10).unwrap();
+        // P(χ²₁₀ ≥ 10) = 0.44049
+        assert!((t.p_value - 0.44049).abs() < 1e-4, "{t:?}");
+        assert!(chi2_test(&[5.0; 10], 8).unwrap().significant());
+        assert!(chi2_test(&[1.0], 0).is_none());
+    }
+
+    #[test]
+    fn an_interval_over_two_decades_is_not_pinned() {
+        let e = |lo: f64, hi: f64| Estimate {
+            name: "k_r",
+            unit: "N/m",
+            // an exact solve has a value and no interval
+            value: if lo.is_finite() {
+                (lo * hi).sqrt()
+            } else {
+                1.0
+            },
+            std_error: 1.0,
+            ci95: [lo, hi],
+        };
+        assert!(pinned(&e(1.0, 99.0), 3, false));
+        assert!(!pinned(&e(1.0, 101.0), 3, false));
+        assert!(!pinned(&e(2.6e-180, 2.8e183), 3, false));
+        assert!(!pinned(&e(f64::NAN, f64::NAN), 3, false));
+        assert!(pinned(&e(f64::NAN, f64::NAN), 0, false));
+        assert!(!pinned(&e(1.0, 2.0), 3, true));
+    }
+}

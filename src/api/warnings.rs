@@ -1,0 +1,59 @@
+//! What the caller should know about an answer, carried with it (docs/guarantees.md, "Warnings
+//! travel with the answer"): the JSON `warnings` array of run, sweep velocity, drop and peers,
+//! a `warning:` line in text, and the explorer's readout.
+
+use super::Ball;
+use crate::solver::ImpactResponse;
+use crate::text::sig;
+
+/// The energy audit (docs/model.md §8) must close to this fraction of the impact energy; a
+/// larger residual means the numbers were not computed to their promised accuracy.
+pub const ENERGY_RESIDUAL_MAX: f64 = 1e-6;
+
+/// A peak indentation `z_m` beyond the ball's `radius` (both m): the contact would reach past
+/// the ball's centre, far outside the small-deformation contact the laws describe
+/// (docs/model.md §3). `None` within, or with no radius known (NaN).
+pub fn indentation_warning(z_m: f64, radius: f64) -> Option<String> {
+    (radius.is_finite() && z_m > radius).then(|| {
+        format!(
+            "peak indentation {} mm exceeds the ball's radius {} mm: outside the model's range \
+             (the contact laws assume a deformation small against the ball)",
+            sig(z_m * 1e3, 4),
+            sig(radius * 1e3, 4)
+        )
+    })
+}
+
+impl Ball {
+    /// The ball's radius, m (its preset's measured radius; NaN for a ball that is no preset).
+    pub fn radius(&self) -> f64 {
+        self.measured.as_ref().map_or(f64::NAN, |m| m.radius)
+    }
+
+    /// The warnings of an impact `r` of this ball: an indentation beyond its radius, an energy
+    /// balance that does not close.
+    ///
+    /// ```
+    /// let b = bouncelab::Ball::from_preset("superball")?;
+    /// assert!(b.warnings(&b.impact()?).is_empty());
+    /// let fast = b.with_v0(45.0)?;
+    /// let w = fast.warnings(&fast.impact()?);
+    /// assert!(w[0].starts_with("peak indentation 31.05 mm exceeds the ball's radius 21.55 mm"));
+    /// # Ok::<(), bouncelab::BallError>(())
+    /// ```
+    pub fn warnings(&self, r: &ImpactResponse) -> Vec<String> {
+        let mut w: Vec<String> = indentation_warning(r.max_indentation, self.radius())
+            .into_iter()
+            .collect();
+        if let Some(e) = &r.energy {
+            let residual = e.relative_residual();
+            if residual.abs() > ENERGY_RESIDUAL_MAX {
+                w.push(format!(
+                    "the energy balance closes only to {} of the impact energy",
+                    sig(residual.abs(), 2)
+                ));
+            }
+        }
+        w
+    }
+}
