@@ -53,6 +53,9 @@ class Impact:
     permanent_indentation: float
     max_force_normalized: float
     contact_time_normalized: Optional[float]
+    #: what the caller should know about this answer (an indentation beyond the ball's
+    #: radius, an energy balance that does not close); ``[]`` when nothing
+    warnings: list[str]
     @property
     def measured(self) -> Optional[Measured]: ...
     @property

@@ -65,6 +65,9 @@ pub(crate) struct Impact {
     energy: Option<[f64; 6]>,
     /// t, force, indentation, displacement, when the history was asked for
     history: Option<[Py<PyArray1<f64>>; 4]>,
+    /// What the caller should know about this answer (the JSON's `warnings`).
+    #[pyo3(get)]
+    warnings: Vec<String>,
 }
 
 const MEASURED_KEYS: [&str; 4] = ["v0", "cor", "max_force", "contact_time"];
@@ -126,6 +129,7 @@ impl Impact {
                 [Some(t), Some(f), Some(z), Some(a)] => Some([t, f, z, a]),
                 _ => None,
             },
+            warnings: rep.warnings,
         }
     }
 
@@ -222,6 +226,7 @@ impl Impact {
         d.set_item("contact_time_normalized", self.contact_time_normalized)?;
         d.set_item("measured", self.measured(py)?)?;
         d.set_item("energy", self.energy(py)?)?;
+        d.set_item("warnings", self.warnings.clone())?;
         for (i, k) in HISTORY_KEYS.iter().enumerate() {
             if let Some(a) = self.series(py, i) {
                 d.set_item(k, a)?;

@@ -350,6 +350,7 @@ fn drop_test<'py>(
     d.set_item("height", run.setup.height)?;
     d.set_item("drag", run.drag())?;
     d.set_item("bounces", b)?;
+    d.set_item("warnings", ball.drop_warnings(&run).map_err(error)?)?;
     Ok(d)
 }
 

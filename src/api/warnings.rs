@@ -2,7 +2,7 @@
 //! travel with the answer"): the JSON `warnings` array of run, sweep velocity, drop and peers,
 //! a `warning:` line in text, and the explorer's readout.
 
-use super::Ball;
+use super::{Ball, BallError};
 use crate::solver::ImpactResponse;
 use crate::text::sig;
 
@@ -55,5 +55,15 @@ impl Ball {
             }
         }
         w
+    }
+
+    /// The warnings of a drop test `run` of this ball: those of its first impact, the
+    /// fastest (the later ones only slow down).
+    pub fn drop_warnings(&self, run: &crate::drop::DropRun) -> Result<Vec<String>, BallError> {
+        let Some(first) = run.bounces.first() else {
+            return Ok(Vec::new());
+        };
+        let ball = self.clone().with_v0(first.v_in)?;
+        Ok(ball.warnings(&ball.impact()?))
     }
 }

@@ -112,13 +112,13 @@ pub fn run(a: &DropArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     match a.format {
         DropFormat::Json => {
             let mut r = report(&run, verdict.as_ref());
-            r.warnings = first_impact_warnings(&b, &run)?;
+            r.warnings = b.drop_warnings(&run)?;
             output::json(out, &r)?
         }
         DropFormat::Csv => trajectory_csv(out, &run)?,
         DropFormat::Text => {
             text(out, &b.label(), &run, standard.zip(verdict), radius)?;
-            for w in first_impact_warnings(&b, &run)? {
+            for w in b.drop_warnings(&run)? {
                 writeln!(out, "warning: {w}")?;
             }
             // no standard asked for: name the ball's own, if it has one
@@ -156,15 +156,6 @@ struct Report<'a> {
     standard: Option<StandardJson>,
     /// What the caller should know (the first, fastest impact's [`Ball::warnings`]).
     warnings: Vec<String>,
-}
-
-/// The warnings of the drop's first impact, the fastest: later ones only slow down.
-fn first_impact_warnings(b: &crate::api::Ball, run: &DropRun) -> anyhow::Result<Vec<String>> {
-    let Some(first) = run.bounces.first() else {
-        return Ok(Vec::new());
-    };
-    let ball = b.clone().with_v0(first.v_in)?;
-    Ok(ball.warnings(&ball.impact()?))
 }
 
 fn report<'a>(run: &'a DropRun, v: Option<&Verdict>) -> Report<'a> {
