@@ -1,4 +1,4 @@
-//! Fitting the model to measurements (MODEL.md §4, docs/fitting.md).
+//! Fitting the model to measurements (docs/model.md §4, docs/fitting.md).
 //!
 //! - [`fit_k_r`]: K_r (λ) from one COR at fixed ζ, a bracketed root find (the original fit).
 //! - [`fit`]: several parameters at once from a force–time trace or a COR-against-speed table

@@ -1,4 +1,4 @@
-//! Fitting K_r (λ) to a measured COR at fixed ζ (MODEL.md §4): e increases with λ, so this is
+//! Fitting K_r (λ) to a measured COR at fixed ζ (docs/model.md §4): e increases with λ, so this is
 //! a bracketed 1-D root find.
 
 use crate::model::contact::ContactLaw;
