@@ -1,10 +1,10 @@
 //! The report of a multi-parameter fit: one JSON object (keys in docs/fitting.md) or a text
 //! table with intervals, correlations and warnings.
 
-use super::fit_multi::Loaded;
-use super::output::{human, table};
+use super::multi::Loaded;
 use crate::analysis::fit::{Estimate, MultiFit};
 use crate::api::Ball;
+use crate::cli::output::{human, table};
 use crate::model::params::ImpactParams;
 use serde::Serialize;
 use std::collections::BTreeMap;

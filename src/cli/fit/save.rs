@@ -2,8 +2,8 @@
 //! atomically ([`crate::catalog::write`]) and never over an existing preset without
 //! `--force`. Its comments say what it was fitted to, when, and how well.
 
-use super::fit::FitArgs;
-use super::fit_multi::Loaded;
+use super::FitArgs;
+use super::multi::Loaded;
 use crate::analysis::fit::MultiFit;
 use crate::api::Ball;
 use crate::catalog::{self, Catalog, Origin};
@@ -78,7 +78,7 @@ fn header(ball: &Ball, data: &Loaded, f: &MultiFit, when: &str) -> Vec<String> {
     let mut h = vec![
         format!(
             "Fitted by `bouncelab fit` on {when} to {what} ({}), {} law,",
-            super::fit_report::points(f.points),
+            super::report::points(f.points),
             ball.law
         ),
         format!(
@@ -93,7 +93,7 @@ fn header(ball: &Ball, data: &Loaded, f: &MultiFit, when: &str) -> Vec<String> {
         let value = short(e.value);
         h.push(format!(
             "{name} = {value} {unit} ({})",
-            super::fit_report::EXACT
+            super::report::EXACT
         ));
     }
     for e in f.fitted.iter().filter(|_| !exact) {
@@ -161,7 +161,7 @@ pub fn save(
     f: &MultiFit,
     p: &ImpactParams,
 ) -> anyhow::Result<PathBuf> {
-    let base = super::ball::select(
+    let base = crate::cli::ball::select(
         a.ball.choice.preset.as_deref(),
         a.ball.choice.config.as_deref(),
     )?

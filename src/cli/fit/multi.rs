@@ -2,11 +2,11 @@
 //! standard errors, 95 % intervals and correlations ([`crate::analysis::fit::fit`]); the
 //! report as text or JSON, and the `--plot` and `--save` that go with every fit.
 
-use super::fit::{FitArgs, FitFormat, Source};
-use super::measured_file as files;
-use super::output;
+use super::{FitArgs, FitFormat, Source};
 use crate::analysis::fit::{FitData, MultiFitError, Param, fit};
 use crate::api::Ball;
+use crate::cli::measured_file as files;
+use crate::cli::output;
 use crate::measured::{Air, CorPoint, Trace};
 use crate::model::params::ImpactParams;
 use crate::solver::{SolveOptions, simulate};
@@ -31,10 +31,10 @@ pub struct Loaded {
 /// Refuse outputs that cannot be written, before any work.
 pub fn check_outputs(a: &FitArgs) -> anyhow::Result<()> {
     if let Some(p) = &a.plot {
-        super::figure::check_writable(&[p.as_path()], a.force)?;
+        crate::cli::figure::check_writable(&[p.as_path()], a.force)?;
     }
     if let Some(name) = &a.save {
-        super::fit_save::check(name, a.force)?;
+        super::save::check(name, a.force)?;
     }
     Ok(())
 }
@@ -176,18 +176,18 @@ pub fn run(
     let v0 = data.points.first().map_or(ball.params.v0, |p| p.v0);
     let fitted = ImpactParams { v0, ..f.params };
     let r = simulate(&fitted, ball.law, &SolveOptions::default())?;
-    let report = super::fit_report::report(&ball, &data, &f, &fitted, &r);
+    let report = super::report::report(&ball, &data, &f, &fitted, &r);
     match a.format {
         FitFormat::Json => output::json(out, &report)?,
-        FitFormat::Text => super::fit_report::text(out, &ball, &data, &f, &report)?,
+        FitFormat::Text => super::report::text(out, &ball, &data, &f, &report)?,
     }
     if let Some(p) = &a.plot {
-        let svg = super::fit_plot::svg(&ball, &data, &f, &fitted)?;
-        super::figure::write_file(p, &svg, a.force)?;
+        let svg = super::plot::svg(&ball, &data, &f, &fitted)?;
+        crate::cli::figure::write_file(p, &svg, a.force)?;
         note(a, out, &format!("plot: {}", p.display()))?;
     }
     if let Some(name) = &a.save {
-        let path = super::fit_save::save(name, a, &ball, &data, &f, &fitted)?;
+        let path = super::save::save(name, a, &ball, &data, &f, &fitted)?;
         note(
             a,
             out,
@@ -222,12 +222,12 @@ pub fn single_extras(
     let f = fit(fitted, ball.law, FitData::Cor(&data.points), &[Param::KR])
         .map_err(|e| fit_error(e, &data, &[Param::KR]))?;
     if let Some(p) = &a.plot {
-        let svg = super::fit_plot::svg(ball, &data, &f, fitted)?;
-        super::figure::write_file(p, &svg, a.force)?;
+        let svg = super::plot::svg(ball, &data, &f, fitted)?;
+        crate::cli::figure::write_file(p, &svg, a.force)?;
         note(a, out, &format!("plot: {}", p.display()))?;
     }
     if let Some(name) = &a.save {
-        let path = super::fit_save::save(name, a, ball, &data, &f, fitted)?;
+        let path = super::save::save(name, a, ball, &data, &f, fitted)?;
         note(
             a,
             out,

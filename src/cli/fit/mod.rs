@@ -1,7 +1,7 @@
 //! `bouncelab fit`: the model fitted to measurements (docs/fitting.md). One COR fits the
 //! recoil spring K_r (and λ) at the ball's ζ, z_p and v0 (docs/model.md §4), as it always
 //! has; a COR table, a force–time trace or drop tests fit several parameters at once
-//! ([`super::fit_multi`]).
+//! ([`multi`]).
 
 use super::ball::BallArgs;
 use super::output::{self, given, human, table};
@@ -10,6 +10,11 @@ use crate::api::FitReport;
 use clap::{Args, ValueEnum};
 use std::io::Write;
 use std::path::PathBuf;
+
+pub mod multi;
+mod plot;
+mod report;
+mod save;
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
 pub enum FitFormat {
@@ -147,13 +152,13 @@ pub fn run(a: &FitArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     let free = a.free_params()?;
     match (&source, free.as_deref()) {
         (Source::Cor(e), None) | (Source::Cor(e), Some([Param::KR])) => single(a, *e, out),
-        _ => super::fit_multi::run(a, &source, free, out),
+        _ => multi::run(a, &source, free, out),
     }
 }
 
 /// One COR: K_r by a root find (the original `fit`, its output unchanged).
 fn single(a: &FitArgs, cor: f64, out: &mut dyn Write) -> anyhow::Result<()> {
-    super::fit_multi::check_outputs(a)?;
+    multi::check_outputs(a)?;
     let b = a.ball.resolve(a.v0)?;
     let f = b.fit_cor(cor)?;
     let p = &b.params;
@@ -187,5 +192,5 @@ fn single(a: &FitArgs, cor: f64, out: &mut dyn Write) -> anyhow::Result<()> {
         }
     }
     let fitted = crate::model::params::ImpactParams { k_r: f.k_r, ..*p };
-    super::fit_multi::single_extras(a, &b, &fitted, cor, out)
+    multi::single_extras(a, &b, &fitted, cor, out)
 }
