@@ -1,12 +1,15 @@
 //! `bouncelab fit`: the model fitted to measurements (docs/fitting.md). One COR fits the
 //! recoil spring K_r (and λ) at the ball's ζ, z_p and v0 (docs/model.md §4), as it always
 //! has; a COR table, a force–time trace or drop tests fit several parameters at once
-//! ([`multi`]).
+//! ([`multi`]). The types the fit's files share ([`FitArgs`], [`Source`], [`Loaded`]) live
+//! here; `multi` uses `plot`, `report` and `save`, which use only these types and each other
+//! downward (`save` uses `report`).
 
 use super::ball::BallArgs;
 use super::output::{self, given, human, table};
 use crate::analysis::fit::Param;
 use crate::api::FitReport;
+use crate::measured::{CorPoint, Trace};
 use clap::{Args, ValueEnum};
 use std::io::Write;
 use std::path::PathBuf;
@@ -92,6 +95,22 @@ pub enum Source {
     /// (drop, rebound) heights from the command line
     Drops(Vec<(f64, f64)>),
     DropFile(PathBuf),
+}
+
+/// The data of a fit, loaded and labelled.
+pub struct Loaded {
+    /// "force-time trace", "COR table", "drop test", "COR".
+    pub kind: &'static str,
+    /// The file, or `None` for data given on the command line.
+    pub file: Option<String>,
+    /// The legend label: the file name, or what was typed.
+    pub label: String,
+    pub trace: Option<Trace>,
+    pub points: Vec<CorPoint>,
+    /// (drop, rebound) heights of drop tests.
+    pub drops: Vec<(f64, f64)>,
+    /// Line after the file's last, for errors about the whole file.
+    pub end_line: usize,
 }
 
 impl FitArgs {

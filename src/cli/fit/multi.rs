@@ -2,31 +2,15 @@
 //! standard errors, 95 % intervals and correlations ([`crate::analysis::fit::fit`]); the
 //! report as text or JSON, and the `--plot` and `--save` that go with every fit.
 
-use super::{FitArgs, FitFormat, Source};
+use super::{FitArgs, FitFormat, Loaded, Source};
 use crate::analysis::fit::{FitData, MultiFitError, Param, fit};
 use crate::api::Ball;
 use crate::cli::measured_file as files;
 use crate::cli::output;
-use crate::measured::{Air, CorPoint, Trace};
+use crate::measured::{Air, CorPoint};
 use crate::model::params::ImpactParams;
 use crate::solver::{SolveOptions, simulate};
 use std::io::Write;
-
-/// The data of a fit, loaded and labelled.
-pub struct Loaded {
-    /// "force-time trace", "COR table", "drop test", "COR".
-    pub kind: &'static str,
-    /// The file, or `None` for data given on the command line.
-    pub file: Option<String>,
-    /// The legend label: the file name, or what was typed.
-    pub label: String,
-    pub trace: Option<Trace>,
-    pub points: Vec<CorPoint>,
-    /// (drop, rebound) heights of drop tests.
-    pub drops: Vec<(f64, f64)>,
-    /// Line after the file's last, for errors about the whole file.
-    pub end_line: usize,
-}
 
 /// Refuse outputs that cannot be written, before any work.
 pub fn check_outputs(a: &FitArgs) -> anyhow::Result<()> {

@@ -2,7 +2,7 @@
 //! (two figures of the shared SVG renderer, stacked). The user's data are labelled by their
 //! file name.
 
-use super::multi::Loaded;
+use super::Loaded;
 use crate::analysis::fit::MultiFit;
 use crate::analysis::sweep::lin_space;
 use crate::api::Ball;

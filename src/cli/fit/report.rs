@@ -1,7 +1,7 @@
 //! The report of a multi-parameter fit: one JSON object (keys in docs/fitting.md) or a text
 //! table with intervals, correlations and warnings.
 
-use super::multi::Loaded;
+use super::Loaded;
 use crate::analysis::fit::{Estimate, MultiFit};
 use crate::api::Ball;
 use crate::cli::output::{human, table};

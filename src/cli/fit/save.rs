@@ -3,7 +3,7 @@
 //! `--force`. Its comments say what it was fitted to, when, and how well.
 
 use super::FitArgs;
-use super::multi::Loaded;
+use super::Loaded;
 use crate::analysis::fit::MultiFit;
 use crate::api::Ball;
 use crate::catalog::{self, Catalog, Origin};
