@@ -11,8 +11,6 @@ pub mod ball;
 pub mod budget;
 pub mod drop;
 pub mod figure;
-pub mod figure_balls;
-mod figure_overlay;
 pub mod fit;
 pub mod map;
 pub mod measured_file;

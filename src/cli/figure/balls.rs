@@ -1,6 +1,6 @@
 //! `figure --preset A --preset B …`: several balls on one figure. Only `figure` takes
 //! `--preset` more than once: its ball options are declared here ([`FigureBall`]) rather than
-//! through the shared [`super::ball::PresetChoice`], which every other subcommand keeps as
+//! through the shared [`crate::cli::ball::PresetChoice`], which every other subcommand keeps as
 //! it is (one `--preset`, a repeat refused by clap). After parsing, [`FigureBall::settle`]
 //! gives `figure` the usual [`BallArgs`] of its first ball (so `bouncelab --preset golf
 //! figure …` merges as before) and the names of the others.
@@ -11,10 +11,10 @@
 //! legend ("golf: model") and in the CSV `series` column ("golf model"), and its model curves
 //! take the ball's own colour.
 
-use super::ball::{self, BallArgs, LawArg, Overrides, PresetChoice, SourceArg};
-use super::figure::{
+use super::{
     FigureArgs, FigureName, HISTORY_SAMPLES, VELOCITY_POINTS, history_figures, velocity_figure,
 };
+use crate::cli::ball::{self, BallArgs, LawArg, Overrides, PresetChoice, SourceArg};
 use crate::figure::paper;
 use crate::figure::{Figure, Kind};
 use clap::Args;

@@ -1,8 +1,8 @@
 //! What `figure` adds to the paper's figures: measured data from files (`--measured`,
 //! labelled by file name), and the user's own measurements never credited to Cross (1999).
 
-use super::figure::FigureName;
-use super::measured_file as files;
+use super::FigureName;
+use crate::cli::measured_file as files;
 use crate::figure::{BLACK, Figure, Kind, Marker, Series, Style};
 use crate::measured::{Data, overlay};
 use std::path::Path;

@@ -3,8 +3,6 @@
 //! [`crate::figure::paper`]; this file reads the options, solves, and writes the files.
 
 use super::ball::BallArgs;
-use super::figure_balls as balls;
-use super::figure_overlay as overlay;
 use crate::analysis::sweep::{lin_space, log_space};
 use crate::atomic::Outputs;
 use crate::figure::{Figure, csv, paper, svg};
@@ -15,6 +13,9 @@ use crate::solver::{SolveOptions, simulate};
 use clap::{Args, ValueEnum};
 use std::io::Write;
 use std::path::{Path, PathBuf};
+
+pub mod balls;
+mod overlay;
 
 /// Points along a curve: enough for smooth curves on a log axis, few enough for a small file.
 pub const ZETA_POINTS: usize = 400;
@@ -80,7 +81,7 @@ pub struct FigureArgs {
     #[arg(long)]
     pub force: bool,
     #[command(flatten)]
-    pub balls: super::figure_balls::FigureBall,
+    pub balls: balls::FigureBall,
     /// The first ball's options, from `balls` ([`FigureArgs::settle`]).
     #[arg(skip)]
     pub ball: BallArgs,
