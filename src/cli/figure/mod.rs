@@ -16,6 +16,7 @@ use std::path::{Path, PathBuf};
 
 pub mod balls;
 mod overlay;
+mod peers;
 
 /// Points along a curve: enough for smooth curves on a log axis, few enough for a small file.
 pub const ZETA_POINTS: usize = 400;
@@ -354,7 +355,7 @@ fn build(a: &FigureArgs) -> anyhow::Result<Figure> {
             }
             Ok(balls::combine(figs))
         }
-        PeersCorVelocity | PeersForceTime => super::peers::figure(a),
+        PeersCorVelocity | PeersForceTime => peers::figure(a),
     }
 }
 
