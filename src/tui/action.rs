@@ -58,7 +58,7 @@ pub enum Action {
     /// The models view's calibrations finished (from their background worker).
     ModelsReady(
         super::models::ModelsRequest,
-        Result<crate::figure::models::ModelsData, String>,
+        Result<crate::figure::explorer::models::ModelsData, String>,
     ),
     /// Export the current view's charts (SVG + CSV each): `update` prepares an
     /// [`super::export::ExportRequest`], the event loop writes it.

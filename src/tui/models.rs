@@ -8,7 +8,7 @@
 use super::compute::HISTORY_SAMPLES;
 use super::worker::Job;
 use crate::analysis::sweep::log_space;
-use crate::figure::models::ModelsData;
+use crate::figure::explorer::models::ModelsData;
 use crate::model::contact::ContactLaw;
 use crate::model::params::ImpactParams;
 use crate::peers::calibrate::{self, christoforou_yigit_cor};

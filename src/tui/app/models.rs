@@ -2,7 +2,7 @@
 //! is for the ball as it is now (a late answer for a ball the user has changed is dropped).
 
 use super::{App, Effect, View};
-use crate::figure::models::ModelsData;
+use crate::figure::explorer::models::ModelsData;
 use crate::tui::models::ModelsRequest;
 
 impl App {

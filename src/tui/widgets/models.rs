@@ -4,7 +4,7 @@
 //! are the ones on the curves. Damping in the units of `bouncelab peers`.
 
 use crate::figure::Tone;
-use crate::figure::models::{ModelsData, letter, short_name, short_rule};
+use crate::figure::explorer::models::{ModelsData, letter, short_name, short_rule};
 use crate::peers::PeerModel;
 use crate::peers::calibrate::Calibrated;
 use crate::peers::rules::Rule;

@@ -88,7 +88,7 @@ pub struct Scene<'a> {
     /// The user's measured data, drawn on the charts they belong to.
     pub measured: &'a [MeasuredOverlay],
     /// The models view's calibrations, once computed for this ball.
-    pub models: Option<&'a super::models::ModelsData>,
+    pub models: Option<&'a models::ModelsData>,
     /// Whether the calibrations for this ball are still out (`models` may be a stale ball's,
     /// and is then not drawn).
     pub models_pending: bool,
@@ -115,9 +115,9 @@ pub fn figure(chart: Chart, scene: &Scene) -> Figure {
         Chart::ForceTime | Chart::Hysteresis => history_figure(chart, scene),
         Chart::CorZeta | Chart::ForceZeta => zeta_figure(chart, scene),
         Chart::CorSpeed => speed_figure(scene),
-        Chart::ModelsCorSpeed => super::models::cor_speed(scene),
-        Chart::ModelsForceTime => super::models::force_time(scene),
-        Chart::ModelsForceDisplacement => super::models::force_displacement(scene),
+        Chart::ModelsCorSpeed => models::cor_speed(scene),
+        Chart::ModelsForceTime => models::force_time(scene),
+        Chart::ModelsForceDisplacement => models::force_displacement(scene),
     };
     let v0 = scene.ball.params.v0;
     for m in scene.measured.iter().filter(|m| m.chart == chart) {
@@ -347,13 +347,11 @@ fn speed_figure(scene: &Scene) -> Figure {
     fig
 }
 
-#[path = "explorer_labels.rs"]
 mod labels;
+pub mod models;
 pub use labels::result_labels;
 
-#[path = "explorer_pins.rs"]
 mod pins;
 
 #[cfg(test)]
-#[path = "explorer_tests.rs"]
 mod tests;

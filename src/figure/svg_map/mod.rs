@@ -3,16 +3,18 @@
 //! each COR target, the feasible region outlined, and the preset's own (λ, ζ) marked. Same
 //! page, fonts and frame as the paper's figures ([`super::svg`]).
 
-use super::svg::{
+use crate::figure::svg::{
     ANNOTATION_PX, AXIS_DESC_PX, HEIGHT, RenderError, SCALE, SIDE_PX, TICK_PX, WIDTH, draw_titles,
     err, finish, font, px,
 };
-use super::ticks::{Room, Ticks, fitted, ticks};
-use super::{Axis, Figure, PALETTE, Role, Series, Style, colormap::viridis};
+use crate::figure::ticks::{Room, Ticks, fitted, ticks};
+use crate::figure::{Axis, Figure, PALETTE, Role, Series, Style, colormap::viridis};
 use crate::map::{Contour, Map, Quantity, Scale, Targets};
 use plotters::element::DashedPathElement;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
+
+mod legend;
 
 /// What to draw over the map.
 pub struct View<'a> {
@@ -354,7 +356,7 @@ pub fn render(map: &Map, v: &View) -> Result<String, RenderError> {
         let (plot, bar_area) = body.split_horizontally(px(WIDTH as i32 - BAR_PX));
         draw_plot(&plot, &fig, map, v, (&field, &bar, scale))?;
         draw_bar(&bar_area, &bar, label)?;
-        super::svg_map_legend::draw(&legend, v)?;
+        legend::draw(&legend, v)?;
         root.present().map_err(err)?;
     }
     Ok(crate::sanitize::text(&finish(buf, &fig)).into_owned())

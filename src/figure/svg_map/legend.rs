@@ -1,9 +1,9 @@
 //! The legend strip under the design map's SVG ([`super::svg_map`]): what each kind of line
 //! means.
 
-use super::PALETTE;
-use super::svg::{LEGEND_PX, RenderError, SIDE_PX, err, font, px};
-use super::svg_map::{LEGEND_H, View};
+use super::{LEGEND_H, View};
+use crate::figure::PALETTE;
+use crate::figure::svg::{LEGEND_PX, RenderError, SIDE_PX, err, font, px};
 use crate::map::Quantity;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};

@@ -7,8 +7,8 @@
 //! Without colour the curves are told apart by a letter each ([`letter`]), printed on the
 //! curve and in front of its legend key; the SVG writes the same letters beside the markers.
 
-use super::explorer::Scene;
-use super::{Axis, Corner, Figure, GREY, Kind, Look, Marker, Series, Style, Tone};
+use super::Scene;
+use crate::figure::{Axis, Corner, Figure, GREY, Kind, Look, Marker, Series, Style, Tone};
 use crate::peers::PeerModel;
 use crate::peers::calibrate::Calibrated;
 use crate::peers::rules::Rule;
