@@ -3,6 +3,9 @@
 //! carries the 1-based line and column it is about.
 
 mod drop;
+/// Reading a data file from disk (anyhow, which the `tui` and `cli` features bring).
+#[cfg(feature = "tui")]
+pub mod file;
 pub mod overlay;
 mod table;
 mod trace;

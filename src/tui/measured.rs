@@ -21,7 +21,7 @@ pub struct Loaded {
 /// Read and parse the measured file at `path` (the loop's part of `o`): its data, or one
 /// line `FILE:LINE:COLUMN: why` (`FILE: why` about the file as a whole).
 pub fn load(path: &std::path::Path) -> Result<Data, String> {
-    crate::cli::measured_file::any(path).map_err(|e| e.to_string())
+    crate::measured::file::any(path).map_err(|e| e.to_string())
 }
 
 /// What a fit is fitted to: a trace, or COR against speed (a drop test becomes such a table).

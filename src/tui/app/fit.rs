@@ -32,7 +32,7 @@ impl App {
     /// The loop read `data` from `path`: it replaces what was drawn (and any fit to it),
     /// unless it cannot be drawn for the current ball, which changes nothing.
     pub(super) fn measured_loaded(&mut self, path: PathBuf, data: Data) {
-        let label = crate::cli::measured_file::label(&path);
+        let label = crate::measured::file::label(&path);
         let p = self.setting.params;
         match MeasuredOverlay::from_data(&data, &label, p.mass, p.v0) {
             Ok(overlays) => {

@@ -1,6 +1,6 @@
-//! Reading a number from the command line: what `str::parse::<f64>` does, with three
-//! differences that keep the outputs honest (tests/cli_guarantees.rs,
-//! `numbers_are_read_as_typed`):
+//! Reading a number typed by a user (the command line, the explorer's fields): what
+//! `str::parse::<f64>` does, with three differences that keep the outputs honest
+//! (tests/cli_guarantees.rs, `numbers_are_read_as_typed`):
 //!
 //! - `-0` is read as `0`: a negative zero would otherwise reach the CSV and JSON as `-0`;
 //! - a literal that is not zero but rounds to zero (`1e-400`) is refused, as one that rounds to

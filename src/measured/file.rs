@@ -64,14 +64,17 @@ pub fn at(path: &Path, e: MeasuredError) -> anyhow::Error {
     anyhow::anyhow!("{}:{e}", path.display())
 }
 
+/// The force–time trace in `path`.
 pub fn trace(path: &Path) -> anyhow::Result<Trace> {
     Trace::parse(&read_text(path)?).map_err(|e| at(path, e))
 }
 
+/// The COR table in `path`.
 pub fn cor_table(path: &Path) -> anyhow::Result<CorTable> {
     CorTable::parse(&read_text(path)?).map_err(|e| at(path, e))
 }
 
+/// The drop tests in `path`.
 pub fn drop_test(path: &Path) -> anyhow::Result<DropTest> {
     DropTest::parse(&read_text(path)?).map_err(|e| at(path, e))
 }
