@@ -344,7 +344,7 @@ fn e_exports_the_map_on_screen_as_svg_and_csv() {
         .collect();
     assert_eq!(
         data,
-        bouncelab::cli::map::csv(map, app.map_view().targets.as_ref()),
+        bouncelab::map::csv::csv(map, app.map_view().targets.as_ref()),
         "the CSV of `bouncelab map`"
     );
 }

@@ -1,6 +1,6 @@
 //! `e` in the map view: the map on screen as an SVG heat map and a CSV table, through the
 //! same code as `bouncelab map --format svg` and its CSV ([`crate::figure::svg_map`],
-//! [`crate::cli::map::csv`]): the quantity shown, the targets set, the ball marked.
+//! [`crate::map::csv`]): the quantity shown, the targets set, the ball marked.
 
 use crate::figure::svg_map;
 use crate::map::{Map, Quantity, Targets};
@@ -32,7 +32,7 @@ impl MapExport {
             title_ball: self.title_ball.clone(),
         };
         let svg = svg_map::render(&self.map, &view).map_err(|e| e.to_string())?;
-        let csv = crate::cli::map::csv(&self.map, self.targets.as_ref());
+        let csv = crate::map::csv::csv(&self.map, self.targets.as_ref());
         Ok((svg, csv))
     }
 }
