@@ -298,7 +298,12 @@ impl Widget for &App {
                 area.width,
                 s.message.y - s.header.bottom(),
             );
-            super::widgets::drop::render(self, body, buf);
+            super::widgets::drop::DropPanel {
+                drop: self.drop_view(),
+                ball: &self.preset().name,
+                theme,
+            }
+            .render(body, buf);
         } else if self.view() == View::Models {
             models_table(self, theme).render(s.readout, buf);
         } else {

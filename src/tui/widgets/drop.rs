@@ -5,7 +5,6 @@
 
 use crate::drop::standards::Test;
 use crate::text::sig;
-use crate::tui::app::App;
 use crate::tui::drop_view::DropView;
 use crate::tui::theme::Theme;
 use ratatui::buffer::Buffer;
@@ -20,10 +19,23 @@ use ratatui::widgets::{Axis, Block, Chart, Dataset, GraphType, Paragraph, Widget
 const BALL_WIDTH: u16 = 18;
 const READOUT_WIDTH: u16 = 38;
 
-/// The drop view in `area` (between the header and the status line).
-pub fn render(app: &App, area: Rect, buf: &mut Buffer) {
-    let d = app.drop_view();
-    let theme = Theme::new(app.color());
+/// The drop view in its area (between the header and the status line).
+#[derive(Debug, Clone, Copy)]
+pub struct DropPanel<'a> {
+    pub drop: &'a DropView,
+    /// The ball's name, for the readout's title.
+    pub ball: &'a str,
+    pub theme: Theme,
+}
+
+impl Widget for DropPanel<'_> {
+    fn render(self, area: Rect, buf: &mut Buffer) {
+        render(self, area, buf);
+    }
+}
+
+fn render(p: DropPanel, area: Rect, buf: &mut Buffer) {
+    let (d, theme) = (p.drop, p.theme);
     let wide = area.width >= 90;
     let (left, readout) = if wide {
         let [l, r] = Layout::horizontal([Constraint::Fill(1), Constraint::Length(READOUT_WIDTH)])
@@ -37,7 +49,7 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer) {
         Layout::horizontal([Constraint::Fill(1), Constraint::Length(BALL_WIDTH)]).areas(left);
     render_chart(d, theme, chart, buf);
     render_ball(d, theme, ball, buf);
-    render_readout(app, d, theme, readout, buf);
+    render_readout(p.ball, d, theme, readout, buf);
 }
 
 /// What the height–time chart draws, in m and s.
@@ -171,11 +183,8 @@ fn render_ball(d: &DropView, theme: Theme, area: Rect, buf: &mut Buffer) {
         .render(area, buf);
 }
 
-fn render_readout(app: &App, d: &DropView, theme: Theme, area: Rect, buf: &mut Buffer) {
-    let mut lines = vec![Line::styled(
-        format!("{} · drop test", app.preset().name),
-        theme.title(),
-    )];
+fn render_readout(ball: &str, d: &DropView, theme: Theme, area: Rect, buf: &mut Buffer) {
+    let mut lines = vec![Line::styled(format!("{ball} · drop test"), theme.title())];
     match (&d.run, d.sequence()) {
         (Err(e), _) => lines.push(Line::styled(e.clone(), theme.error())),
         (_, Some(run)) => {
