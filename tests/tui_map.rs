@@ -9,9 +9,9 @@ use bouncelab::preset::Preset;
 use bouncelab::solver::{SolveOptions, simulate};
 use bouncelab::tui::action::{self, Action, Mode};
 use bouncelab::tui::app::{App, Effect, View};
-use bouncelab::tui::map_view::{self, cell_of};
 use bouncelab::tui::param::Param;
-use bouncelab::tui::widgets::map_cells::RAMP;
+use bouncelab::tui::views::map::cells::RAMP;
+use bouncelab::tui::views::map::state::{self as map_view, cell_of};
 use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
 use ratatui::style::Color;
 

@@ -89,7 +89,7 @@ pub struct App {
     /// The terminal's width and height, once the loop has said (`Action::Resize`).
     size: Option<(u16, u16)>,
     /// The map view's map, quantity, targets and window.
-    map: super::map_view::MapView,
+    map: crate::tui::views::map::state::MapView,
     /// The crosshair (`x`), when it is on.
     crosshair: Option<super::crosshair::Crosshair>,
 }

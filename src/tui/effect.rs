@@ -3,8 +3,8 @@
 
 use super::compute::SpeedRequest;
 use super::export::ExportRequest;
-use super::map_view::MapJob;
 use super::save::SaveRequest;
+use crate::tui::views::map::state::MapJob;
 
 #[derive(Debug, Clone, PartialEq)]
 pub enum Effect {

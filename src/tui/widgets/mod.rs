@@ -9,8 +9,6 @@ pub mod fit;
 pub mod form;
 pub mod help;
 pub mod input;
-pub mod map;
-pub mod map_cells;
 pub mod models;
 pub mod picker;
 pub mod pins;

@@ -4,14 +4,14 @@
 //! colour bar with its numbers on the right, the marks (cursor, iso-COR line, feasible
 //! outline, other presets by their number) and the line of values under the cursor.
 
-use super::map_cells::{
-    CURSOR, ISO, OUTLINE, Raster, cell_of_slot, colour, contrast, dimmed, rgb, shade, slot_of_cell,
-};
 use crate::figure::ticks::{Ticks, fitted};
 use crate::map::{Axis, Map};
 use crate::text::sig_trim;
-use crate::tui::map_view::{Geometry, MapView, cell_of, geometry, unit};
 use crate::tui::theme::Theme;
+use crate::tui::views::map::cells::{
+    CURSOR, ISO, OUTLINE, Raster, cell_of_slot, colour, contrast, dimmed, rgb, shade, slot_of_cell,
+};
+use crate::tui::views::map::state::{Geometry, MapView, cell_of, geometry, unit};
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
 use ratatui::style::{Modifier, Style};

@@ -11,10 +11,10 @@
 //! the window is centred on it again. The grid has one cell per screen cell of the heat map:
 //! a column per character, two rows per character (half blocks), one without colour.
 
-use super::layout;
 use crate::map::{Axis, Map, MapError, MapSpec, Param, Quantity, Scale, Sensitivity, Targets};
 use crate::model::contact::ContactLaw;
 use crate::model::params::ImpactParams;
+use crate::tui::layout;
 use ratatui::layout::Rect;
 use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, Ordering};
@@ -129,9 +129,9 @@ pub fn geometry(area: Rect) -> Option<Geometry> {
 /// (`widgets::map`).
 pub fn grid(size: Option<(u16, u16)>, color: bool, pins: usize) -> Option<(usize, usize)> {
     let (w, h) = size.unwrap_or(DEFAULT_SIZE);
-    let compact = super::widgets::readout::compact_height(pins);
+    let compact = crate::tui::widgets::readout::compact_height(pins);
     // the message row kept when there is no message; a longer message shortens the drawing
-    let quiet = super::widgets::status::message_lines(None, w).len() as u16;
+    let quiet = crate::tui::widgets::status::message_lines(None, w).len() as u16;
     let g = geometry(layout::body(Rect::new(0, 0, w, h), false, compact, quiet)?.charts)?;
     let per_char = if color { 2 } else { 1 };
     Some((

@@ -1,7 +1,7 @@
 //! The heat map's raster: which map cell each half character shows, its colour (viridis, the
 //! SVG heat map's colour map) or shade (without colour), and the marks drawn over it (the
 //! iso-COR line, the feasible region's outline, the presets, the cursor). Pure functions of
-//! the map; `super::map` draws them.
+//! the map; `crate::tui::views::map::widget` draws them.
 
 use crate::figure::colormap::viridis;
 use crate::map::{Map, Quantity, Targets, contour_lines};

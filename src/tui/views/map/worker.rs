@@ -3,8 +3,8 @@
 //! the screen grows finer while the keys stay free. A job stops inside its pass once `update`
 //! sets its cancel flag (the ball or the view changed); the thread then waits for the next.
 
-use super::map_view::MapJob;
 use crate::map::Map;
+use crate::tui::views::map::state::MapJob;
 use std::sync::atomic::Ordering;
 use std::sync::mpsc::{self, Receiver, Sender};
 use std::thread;
