@@ -23,7 +23,6 @@ mod sweeps;
 
 use super::action::{Action, Mode};
 use super::compute::{self, SpeedCurve, SpeedRequest, ZetaCurve};
-use super::drop_view::DropView;
 pub use super::effect::Effect;
 use super::export;
 use super::param::Param;
@@ -35,6 +34,7 @@ use crate::model::contact::ContactLaw;
 use crate::model::params::ImpactParams;
 use crate::preset::Preset;
 use crate::solver::ImpactResponse;
+use crate::tui::views::drop::state::DropView;
 
 /// How many changes `u` can undo.
 const UNDO_DEPTH: usize = 500;

@@ -24,7 +24,6 @@ pub mod app;
 pub mod command;
 pub mod compute;
 pub mod crosshair;
-pub mod drop_view;
 pub mod effect;
 pub mod event;
 pub mod export;

@@ -298,7 +298,7 @@ impl Widget for &App {
                 area.width,
                 s.message.y - s.header.bottom(),
             );
-            super::widgets::drop::DropPanel {
+            crate::tui::views::drop::widget::DropPanel {
                 drop: self.drop_view(),
                 ball: &self.preset().name,
                 theme,

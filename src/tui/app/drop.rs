@@ -2,7 +2,7 @@
 //! setting (src/tui/drop_view.rs holds the view's state).
 
 use super::{Action, App, View};
-use crate::tui::drop_view::DropView;
+use crate::tui::views::drop::state::DropView;
 
 impl App {
     /// Animate the drop view (the explorer does, unless under reduced motion; tests see the

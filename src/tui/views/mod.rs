@@ -2,4 +2,5 @@
 //! and its export live together, so a view is one folder to read (and to delete). Its part of
 //! `update` is in `tui/app/<view>.rs`, where `App`'s fields are.
 
+pub mod drop;
 pub mod map;

@@ -5,8 +5,8 @@
 
 use crate::drop::standards::Test;
 use crate::text::sig;
-use crate::tui::drop_view::DropView;
 use crate::tui::theme::Theme;
+use crate::tui::views::drop::state::DropView;
 use ratatui::buffer::Buffer;
 use ratatui::layout::{Constraint, Layout, Rect};
 use ratatui::style::{Color, Style};
