@@ -57,7 +57,7 @@ pub enum Action {
     SpeedReady(SpeedRequest, Result<SpeedCurve, String>),
     /// The models view's calibrations finished (from their background worker).
     ModelsReady(
-        super::models::ModelsRequest,
+        crate::tui::views::models::state::ModelsRequest,
         Result<crate::figure::explorer::models::ModelsData, String>,
     ),
     /// Export the current view's charts (SVG + CSV each): `update` prepares an

@@ -81,7 +81,7 @@ pub struct App {
     /// The id of the last fit asked for.
     fit_id: u64,
     /// The models view's calibrations (src/tui/models.rs).
-    models: crate::tui::models::Models,
+    models: crate::tui::views::models::state::Models,
     /// The first help line shown.
     help_scroll: u16,
     /// The preset file the explorer started on (`--config FILE`) and its preset's index.

@@ -25,7 +25,7 @@ pub enum Effect {
     Fit(super::measured::FitRequest),
     /// Run exactly these calibrations of the models view in the background (none: drop the
     /// one that is out); a finished one comes back as `Action::ModelsReady`.
-    ComputeModels(Vec<super::models::ModelsRequest>),
+    ComputeModels(Vec<crate::tui::views::models::state::ModelsRequest>),
     /// Refine this map in the background, pass by pass (a job before it stops on its own:
     /// `update` set its cancel flag); each pass comes back as `Action::MapPass`.
     Map(MapJob),

@@ -32,7 +32,6 @@ pub mod format;
 pub mod keys;
 pub mod layout;
 pub mod measured;
-pub mod models;
 pub mod param;
 pub mod physical;
 pub mod picker;

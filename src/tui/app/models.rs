@@ -3,7 +3,7 @@
 
 use super::{App, Effect, View};
 use crate::figure::explorer::models::ModelsData;
-use crate::tui::models::ModelsRequest;
+use crate::tui::views::models::state::ModelsRequest;
 
 impl App {
     /// The calibration the current ball needs: its Christoforou–Yigit COR at v0 as the target,

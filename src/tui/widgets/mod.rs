@@ -8,7 +8,6 @@ pub mod fit;
 pub mod form;
 pub mod help;
 pub mod input;
-pub mod models;
 pub mod picker;
 pub mod pins;
 pub mod plot;

@@ -2,11 +2,9 @@
 //! (`crate::peers::calibrate::compare`, the same call as `bouncelab peers`), the
 //! Christoforou–Yigit COR against speed, and Hunt–Crossley with α fixed. A calibration with
 //! its sweep takes tens of milliseconds in debug builds, so it runs on a background
-//! [`super::worker::Worker`] and comes back as `Action::ModelsReady`; a request the user has
+//! [`crate::tui::worker::Worker`] and comes back as `Action::ModelsReady`; a request the user has
 //! moved past is abandoned between two speeds and its late answer dropped.
 
-use super::compute::HISTORY_SAMPLES;
-use super::worker::Job;
 use crate::analysis::sweep::log_space;
 use crate::figure::explorer::models::ModelsData;
 use crate::model::contact::ContactLaw;
@@ -14,6 +12,8 @@ use crate::model::params::ImpactParams;
 use crate::peers::calibrate::{self, christoforou_yigit_cor};
 use crate::peers::rules::Rule;
 use crate::peers::{PeerBall, PeerModel, cor};
+use crate::tui::compute::HISTORY_SAMPLES;
+use crate::tui::worker::Job;
 
 /// Points of the COR-vs-speed sweep, log-spaced over v0/10 … 10 v0.
 pub const MODELS_SPEEDS: usize = 25;
