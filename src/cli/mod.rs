@@ -346,7 +346,7 @@ fn explorer(choice: ball::PresetChoice, measured: Option<PathBuf>) -> anyhow::Re
                 crate::figure::explorer::MeasuredOverlay::from_data(&data, &label, p.mass, p.v0)
                     .map_err(|e| measured_file::at(path, e))?;
             let path = path.clone();
-            let loaded = crate::tui::measured::Loaded { path, label, data };
+            let loaded = crate::tui::views::fit::state::Loaded { path, label, data };
             (overlays, Some(loaded))
         }
         None => (Vec::new(), None),

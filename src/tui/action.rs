@@ -129,7 +129,10 @@ pub enum Action {
     /// `f`: fit the current ball to the measured data on the fit worker.
     Fit,
     /// A fit finished (from the fit worker): the id of its request and the outcome.
-    FitReady(u64, Result<super::measured::FitOutcome, String>),
+    FitReady(
+        u64,
+        Result<crate::tui::views::fit::state::FitOutcome, String>,
+    ),
     /// `F`: apply the finished fit to the ball, as one undoable change.
     ApplyFit,
     /// `x`: put the crosshair on the view's first chart; with it on, on the next chart.

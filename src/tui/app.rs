@@ -75,9 +75,9 @@ pub struct App {
     /// Measured data drawn on the charts (`bouncelab --measured FILE`).
     measured: Vec<crate::figure::explorer::MeasuredOverlay>,
     /// The measured file's data, to fit to (`o`, `bouncelab --measured FILE`).
-    loaded: Option<super::measured::Loaded>,
+    loaded: Option<crate::tui::views::fit::state::Loaded>,
     /// The last fit asked for (`f`) and its answer: the fit pane.
-    fit: Option<super::measured::FitPane>,
+    fit: Option<crate::tui::views::fit::state::FitPane>,
     /// The id of the last fit asked for.
     fit_id: u64,
     /// The models view's calibrations (src/tui/models.rs).

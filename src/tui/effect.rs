@@ -22,7 +22,7 @@ pub enum Effect {
     LoadMeasured(std::path::PathBuf),
     /// Run this fit on the fit worker (`f`), replacing any not yet started; it comes back as
     /// `Action::FitReady`.
-    Fit(super::measured::FitRequest),
+    Fit(crate::tui::views::fit::state::FitRequest),
     /// Run exactly these calibrations of the models view in the background (none: drop the
     /// one that is out); a finished one comes back as `Action::ModelsReady`.
     ComputeModels(Vec<crate::tui::views::models::state::ModelsRequest>),

@@ -27,11 +27,9 @@ pub mod crosshair;
 pub mod effect;
 pub mod event;
 pub mod export;
-pub mod fit_worker;
 pub mod format;
 pub mod keys;
 pub mod layout;
-pub mod measured;
 pub mod param;
 pub mod physical;
 pub mod picker;
@@ -81,7 +79,7 @@ pub fn run_with_measured(
 pub fn run_from(
     preset: Preset,
     measured: Vec<crate::figure::explorer::MeasuredOverlay>,
-    loaded: Option<measured::Loaded>,
+    loaded: Option<views::fit::state::Loaded>,
     config: Option<std::path::PathBuf>,
 ) -> anyhow::Result<()> {
     if !std::io::stdout().is_terminal() {

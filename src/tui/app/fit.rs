@@ -9,8 +9,10 @@
 use super::{App, Effect, Overlay, Purpose, Setting};
 use crate::figure::explorer::MeasuredOverlay;
 use crate::measured::Data;
-use crate::tui::measured::{self, FitOutcome, FitPane, FitStatus, Loaded, Standing};
 use crate::tui::param::Param;
+use crate::tui::views::fit::state::{
+    self as measured, FitOutcome, FitPane, FitStatus, Loaded, Standing,
+};
 use std::path::PathBuf;
 
 impl App {

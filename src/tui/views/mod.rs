@@ -3,5 +3,6 @@
 //! `update` is in `tui/app/<view>.rs`, where `App`'s fields are.
 
 pub mod drop;
+pub mod fit;
 pub mod map;
 pub mod models;

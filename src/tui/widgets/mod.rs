@@ -4,7 +4,6 @@
 
 pub mod command;
 pub mod confirm;
-pub mod fit;
 pub mod form;
 pub mod help;
 pub mod input;

@@ -4,7 +4,7 @@
 //! (its answer would be superseded anyway, `App` keeps the id of the latest). Each finished
 //! fit comes back as `Action::FitReady`.
 
-use super::measured::{self, FitOutcome, FitRequest};
+use crate::tui::views::fit::state::{self as measured, FitOutcome, FitRequest};
 use std::sync::mpsc::{self, Receiver, Sender};
 use std::thread;
 
@@ -53,7 +53,7 @@ mod tests {
     use super::*;
     use crate::measured::{CorTable, Data};
     use crate::preset::Preset;
-    use crate::tui::measured::{Loaded, request};
+    use crate::tui::views::fit::state::{Loaded, request};
     use std::time::{Duration, Instant};
 
     #[test]

@@ -1,5 +1,5 @@
 //! Measured data in the explorer (`o`) and the fit of the current ball to it (`f`, `F`): the
-//! data loaded, the fit asked of the fit worker ([`super::fit_worker`]) and what came back.
+//! data loaded, the fit asked of the fit worker ([`crate::tui::views::fit::worker`]) and what came back.
 //! The fit is the library's ([`crate::analysis::fit::fit`]) with the free parameters the
 //! command line's `fit` takes by default for the kind of data ([`Param::defaults`]).
 

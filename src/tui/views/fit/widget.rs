@@ -4,8 +4,8 @@
 
 use crate::analysis::fit::Estimate;
 use crate::text::sig;
-use crate::tui::measured::{FitOutcome, FitPane, FitStatus, Standing};
 use crate::tui::theme::Theme;
+use crate::tui::views::fit::state::{FitOutcome, FitPane, FitStatus, Standing};
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
 use ratatui::text::{Line, Span};
