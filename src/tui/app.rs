@@ -80,7 +80,7 @@ pub struct App {
     fit: Option<crate::tui::views::fit::state::FitPane>,
     /// The id of the last fit asked for.
     fit_id: u64,
-    /// The models view's calibrations (src/tui/models.rs).
+    /// The models view's calibrations (src/tui/views/models/state.rs).
     models: crate::tui::views::models::state::Models,
     /// The first help line shown.
     help_scroll: u16,

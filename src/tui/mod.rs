@@ -8,15 +8,15 @@
 //! (`crate::figure::explorer`), the same one the export writes; [`export`] writes the current
 //! view's figures as SVG and CSV files (`e`) and [`save`] the current setting as a user preset
 //! file (`s`): in both `update` only asks, the loop writes. The COR-vs-speed sweeps and the
-//! models view's calibrations ([`models`]) run on background [`worker`]s.
+//! models view's calibrations ([`views::models`]) run on background [`worker`]s.
 //!
-//! The map view (`Tab` to view 4/4): its state in [`map_view`], its part of `update` in
-//! `app/map`, its panel in `widgets::map` (raster in `widgets::map_cells`); the first pass of
-//! a new map is computed in `update`, the finer ones on [`map_worker`]'s thread, and `e`
-//! writes it through [`export_map`]. [`layout`] is the screen's geometry, which `update`
-//! needs for the map's grid.
+//! A view with state of its own has a folder in [`views`] — `map`, `models`, `drop`, and `fit`
+//! (the measured data and the fit pane) — holding its state, its worker, its widget and its
+//! export; its part of `update` is `app/<view>.rs`. The map's first pass is computed in
+//! `update`, the finer ones on its worker's thread. [`layout`] is the screen's geometry, which
+//! `update` needs for the map's grid.
 //!
-//! The modules import each other without a cycle (tests/tui_imports.rs): state below
+//! The modules import each other without a cycle (tests/architecture.rs): state below
 //! `update`, widgets and the loop above it.
 
 pub mod action;

@@ -21,11 +21,11 @@ pub enum View {
     Impact,
     /// Normalized peak force vs ζ, COR vs impact speed.
     Sweeps,
-    /// The field's contact models calibrated to the ball (src/tui/models.rs).
+    /// The field's contact models calibrated to the ball (src/tui/views/models/state.rs).
     Models,
-    /// The design map: COR, peak force or contact time over (λ, ζ) (src/tui/map_view.rs).
+    /// The design map: COR, peak force or contact time over (λ, ζ) (src/tui/views/map/state.rs).
     Map,
-    /// The drop test (`d`, outside the Tab cycle): src/tui/drop_view.rs.
+    /// The drop test (`d`, outside the Tab cycle): src/tui/views/drop/state.rs.
     Drop,
 }
 

@@ -291,7 +291,7 @@ impl Widget for &App {
         }
         .render(s.status, buf);
         if self.view() == View::Drop {
-            // the drop view takes the whole body (src/tui/widgets/drop.rs)
+            // the drop view takes the whole body (src/tui/views/drop/widget.rs)
             let body = Rect::new(
                 area.x,
                 s.header.bottom(),

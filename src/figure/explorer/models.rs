@@ -2,7 +2,7 @@
 //! calibrated exactly to the explorer's ball — its Christoforou–Yigit COR at its v0 — drawn
 //! over the Christoforou–Yigit impact: COR against impact speed (log axis), force against time
 //! and force against the ball's displacement toward the wall. Built from [`ModelsData`], computed beforehand
-//! (tui/models.rs, on the background worker); nothing here solves anything.
+//! (src/tui/views/models/state.rs, on the background worker); nothing here solves anything.
 //!
 //! Without colour the curves are told apart by a letter each ([`letter`]), printed on the
 //! curve and in front of its legend key; the SVG writes the same letters beside the markers.

@@ -1,5 +1,5 @@
 //! The drop view's part of [`App`]: its clock, its keys (`d`, space, `b`) and the motion
-//! setting (src/tui/drop_view.rs holds the view's state).
+//! setting (src/tui/views/drop/state.rs holds the view's state).
 
 use super::{Action, App, View};
 use crate::tui::views::drop::state::DropView;

@@ -1,6 +1,6 @@
 //! The map view's part of `update`: the cursor (which moves the ball), the quantity, the
 //! targets, the passes coming back from the worker, and the map kept up to date with the
-//! ball and the screen (src/tui/map_view.rs says what the map is).
+//! ball and the screen (src/tui/views/map/state.rs says what the map is).
 
 use super::{App, Effect, Setting, View};
 use crate::map::{Map, MapSpec, Targets, sensitivity};

@@ -1,6 +1,6 @@
 //! The explorer's drop view (`d`): the current ball released so that it meets the plate at the
 //! explorer's v0, its bounce sequence (src/drop), the verdict of its own standard, and the
-//! animation clock. State and logic only; `widgets::drop` draws it.
+//! animation clock. State and logic only; `views::drop::widget` draws it.
 //!
 //! The height: the fall from rest that ends at v0 in standard air
 //! ([`Flight::fall_height_for`]), so the λ, ζ and v0 keys all re-run the drop, and a new ball's

@@ -1,4 +1,4 @@
-//! The drop view (`d`, src/tui/drop_view.rs): height against time in braille with the
+//! The drop view (`d`, src/tui/views/drop/state.rs): height against time in braille with the
 //! standard's window as a band on the first rebound, the ball on a ratatui Canvas above the
 //! plate, and a readout with the bounces and the verdict. Reads the state only, and draws with
 //! ratatui's own `Chart` and `Canvas`, so it stands apart from the explorer's chart module.

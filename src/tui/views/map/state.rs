@@ -1,6 +1,6 @@
 //! The map view's state (issue 21): the design map of the current ball over (λ, ζ), the
 //! quantity shown, the user's targets, and the window of the plane on screen. `App::update`
-//! changes it (src/tui/app/map.rs); the widget (src/tui/widgets/map.rs) only reads it.
+//! changes it (src/tui/app/map.rs); the widget (src/tui/views/map/widget.rs) only reads it.
 //!
 //! The map is dimensional: the current ball at its v0, flattening included (its m, K_p, z_p
 //! and law held, K_r and c varied: [`MapSpec::dimensional`]). Its window is log-spaced on both
@@ -126,7 +126,7 @@ pub fn geometry(area: Rect) -> Option<Geometry> {
 /// with colour (two rows per character) or without, with `pins` runs pinned (the compact
 /// readout grows with them). A message of more than one row is left out: while one shows, the
 /// map is drawn a row or two shorter, each row of the plot the nearest λ of the grid
-/// (`widgets::map`).
+/// (`views::map::widget`).
 pub fn grid(size: Option<(u16, u16)>, color: bool, pins: usize) -> Option<(usize, usize)> {
     let (w, h) = size.unwrap_or(DEFAULT_SIZE);
     let compact = crate::tui::widgets::readout::compact_height(pins);
