@@ -9,8 +9,9 @@
 //!   full disk or a kill mid-write leaves the old file as it was
 //!   (tests/cli_guarantees.rs, `a_full_disk_leaves_the_old_figure_untouched`);
 //! - a command that fails while staging leaves no new file and no temporary one: dropping
-//!   [`Outputs`] removes its temporaries (`a_failure_leaves_no_new_file_and_a_rerun_is_not_refused`,
-//!   and the unit tests in `atomic/tests.rs`);
+//!   [`Outputs`] removes its temporaries
+//!   (`a_failure_leaves_no_new_file_and_a_rerun_is_not_refused`, and the unit tests in
+//!   `atomic/tests.rs`);
 //! - without `force` a target that exists is never replaced, not even one that appears while
 //!   the command runs (`persist_noclobber`); if one does, the files this commit had already
 //!   published are removed again;

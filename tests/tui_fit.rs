@@ -1,6 +1,6 @@
 //! Measured data and the fit in the explorer (`o`, `f`, `F`, `O`): through `App::update` and
-//! its effects, the fit run as the fit worker runs it (`bouncelab::tui::views::fit::state::run`), and
-//! the fit pane drawn on a TestBackend.
+//! its effects, the fit run as the fit worker runs it
+//! (`bouncelab::tui::views::fit::state::run`), and the fit pane drawn on a TestBackend.
 
 mod fit_common;
 
