@@ -72,14 +72,8 @@ pub struct App {
     save_out: Option<SaveRequest>,
     /// The drop view's sequence and animation clock.
     drop: DropView,
-    /// Measured data drawn on the charts (`bouncelab --measured FILE`).
-    measured: Vec<crate::figure::explorer::MeasuredOverlay>,
-    /// The measured file's data, to fit to (`o`, `bouncelab --measured FILE`).
-    loaded: Option<crate::tui::views::fit::state::Loaded>,
-    /// The last fit asked for (`f`) and its answer: the fit pane.
-    fit: Option<crate::tui::views::fit::state::FitPane>,
-    /// The id of the last fit asked for.
-    fit_id: u64,
+    /// Measured data, the data to fit and the fit pane.
+    fit: crate::tui::views::fit::state::FitState,
     /// The models view's calibrations (src/tui/views/models/state.rs).
     models: crate::tui::views::models::state::Models,
     /// The first help line shown.
@@ -129,10 +123,7 @@ impl App {
             export_wanted: false,
             save_out: None,
             drop: DropView::new(false),
-            measured: Vec::new(),
-            loaded: None,
-            fit: None,
-            fit_id: 0,
+            fit: Default::default(),
             models: Default::default(),
             help_scroll: 0,
             config: None,
@@ -154,7 +145,7 @@ impl App {
 
     /// Draw the user's measured data on the charts it belongs to.
     pub fn with_measured(mut self, m: Vec<crate::figure::explorer::MeasuredOverlay>) -> App {
-        self.measured = m;
+        self.fit.overlays = m;
         self
     }
 

@@ -77,7 +77,7 @@ impl App {
                     speed: g.speed.as_ref().map(speed),
                 })
                 .collect(),
-            measured: &self.measured,
+            measured: &self.fit.overlays,
             models: self.models(),
             models_pending: self.models.wanted.is_some(),
         }

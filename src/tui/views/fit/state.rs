@@ -1,5 +1,5 @@
 //! Measured data in the explorer (`o`) and the fit of the current ball to it (`f`, `F`): the
-//! data loaded, the fit asked of the fit worker ([`crate::tui::views::fit::worker`]) and what came back.
+//! data loaded, the fit asked of the fit worker ([`super::worker`]) and what came back.
 //! The fit is the library's ([`crate::analysis::fit::fit`]) with the free parameters the
 //! command line's `fit` takes by default for the kind of data ([`Param::defaults`]).
 
@@ -16,6 +16,20 @@ pub struct Loaded {
     /// The file name: the legend label.
     pub label: String,
     pub data: Data,
+}
+
+/// The fit's part of the explorer's state: the measured data drawn on the charts, the data a
+/// fit is fitted to, and the fit pane.
+#[derive(Debug, Clone, Default)]
+pub struct FitState {
+    /// Measured data drawn on the charts (`bouncelab --measured FILE`).
+    pub overlays: Vec<crate::figure::explorer::MeasuredOverlay>,
+    /// The measured file's data, to fit to (`o`, `bouncelab --measured FILE`).
+    pub loaded: Option<Loaded>,
+    /// The last fit asked for (`f`) and its answer: the fit pane.
+    pub pane: Option<FitPane>,
+    /// The id of the last fit asked for.
+    pub id: u64,
 }
 
 /// Read and parse the measured file at `path` (the loop's part of `o`): its data, or one
