@@ -105,7 +105,6 @@ fn picker(code: KeyCode) -> Option<Action> {
     }
 }
 
-#[path = "action_modal.rs"]
 mod modal;
 use modal::{crosshair, form};
 

@@ -1,5 +1,5 @@
 //! What the user can ask for ([`Action`]) and the input modes; the key → action mapping is in
-//! `action_keys.rs` ([`from_key`]).
+//! `action/keys.rs` ([`from_key`]).
 
 use super::compute::{SpeedCurve, SpeedRequest};
 use super::param::{Dir, Param};
@@ -203,7 +203,6 @@ pub enum Mode {
     Form,
 }
 
-#[path = "action_keys.rs"]
 mod keys;
 pub use keys::{MAP_LEAP, from_event, from_key};
 
