@@ -22,7 +22,7 @@ mod screen;
 mod sweeps;
 
 use super::action::{Action, Mode};
-use super::compute::{self, SpeedCurve, SpeedRequest, ZetaCurve};
+use super::compute::{self, ZetaCurve};
 pub use super::effect::Effect;
 use super::export;
 use super::param::Param;
@@ -35,6 +35,7 @@ use crate::model::params::ImpactParams;
 use crate::preset::Preset;
 use crate::solver::ImpactResponse;
 use crate::tui::views::drop::state::DropView;
+use crate::tui::views::sweeps::speed::{SpeedCurve, SpeedRequest};
 
 /// How many changes `u` can undo.
 const UNDO_DEPTH: usize = 500;

@@ -1,10 +1,10 @@
 //! What `App::update` asks the event loop to do: the explorer's only side effects. `update`
 //! returns them; the loop carries them out and reports each outcome back as an action.
 
-use super::compute::SpeedRequest;
 use super::export::ExportRequest;
 use super::save::SaveRequest;
 use crate::tui::views::map::state::MapJob;
+use crate::tui::views::sweeps::speed::SpeedRequest;
 
 #[derive(Debug, Clone, PartialEq)]
 pub enum Effect {

@@ -2,12 +2,13 @@
 //! message line and the pinned runs. The explorer's `App` owns them and changes them.
 
 pub use super::action::CursorMove;
-use super::compute::{SpeedCurve, ZetaCurve};
+use super::compute::ZetaCurve;
 use super::param::Param;
 use super::save::SaveRequest;
 pub use super::setting::Setting;
 use crate::figure::explorer::Chart;
 use crate::solver::ImpactResponse;
+use crate::tui::views::sweeps::speed::SpeedCurve;
 
 /// Below this the explorer asks for a larger terminal, and only resize and quit act (the
 /// screen shows nothing else, so no other key may change what is unseen).

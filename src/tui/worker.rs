@@ -5,7 +5,7 @@
 //! view's calibrations ([`crate::tui::views::models::state::ModelsRequest`]) run on a second
 //! worker of the same kind and come back as `Action::ModelsReady`.
 
-use super::compute::{SpeedCurve, SpeedRequest};
+use crate::tui::views::sweeps::speed::{SpeedCurve, SpeedRequest};
 use std::sync::mpsc::{self, Receiver, Sender, TryRecvError};
 use std::thread;
 

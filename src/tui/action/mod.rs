@@ -1,8 +1,8 @@
 //! What the user can ask for ([`Action`]) and the input modes; the key → action mapping is in
 //! `action/keys.rs` ([`from_key`]).
 
-use super::compute::{SpeedCurve, SpeedRequest};
 use super::param::{Dir, Param};
+use crate::tui::views::sweeps::speed::{SpeedCurve, SpeedRequest};
 use std::path::PathBuf;
 
 /// Everything the user can ask for. [`super::app::App::update`] is the only place they act.

@@ -6,8 +6,9 @@ use super::App;
 use crate::figure::explorer::{MODIFIED, Pinned, Scene, SpeedSweep, ZetaSweep};
 use crate::figure::paper::Ball;
 use crate::preset::Preset;
-use crate::tui::compute::{SpeedCurve, ZetaCurve, reference_curves};
+use crate::tui::compute::{ZetaCurve, reference_curves};
 use crate::tui::setting::Setting;
+use crate::tui::views::sweeps::speed::SpeedCurve;
 
 fn zeta(c: &ZetaCurve) -> ZetaSweep<'_> {
     ZetaSweep {

@@ -1,7 +1,7 @@
 //! Which COR-vs-speed sweeps the state needs, and where a finished one goes.
 
 use super::{App, Effect, Setting, View};
-use crate::tui::compute::{SpeedCurve, SpeedRequest};
+use crate::tui::views::sweeps::speed::{SpeedCurve, SpeedRequest};
 
 impl App {
     /// List the sweeps the sweeps view needs and does not have; run them here, or, with a

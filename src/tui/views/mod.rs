@@ -6,3 +6,4 @@ pub mod drop;
 pub mod fit;
 pub mod map;
 pub mod models;
+pub mod sweeps;
