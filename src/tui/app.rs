@@ -60,12 +60,8 @@ pub struct App {
     run_for: Option<(ImpactParams, ContactLaw)>,
     /// COR and F̄_m vs ζ at the current λ.
     zeta: Option<ZetaCurve>,
-    /// COR vs speed; computed only while the sweeps view shows it.
-    speed: Option<SpeedCurve>,
-    /// Sweeps still to come (see [`App::with_background_sweeps`]).
-    speed_wanted: Vec<SpeedRequest>,
-    /// The sweeps last asked of the background worker ([`Effect::Compute`]).
-    speed_asked: Vec<SpeedRequest>,
+    /// COR vs speed, and the sweeps asked; computed only while the sweeps view shows it.
+    sweeps: crate::tui::views::sweeps::state::Sweeps,
     background: bool,
     /// `e` was pressed: export once the view's curves are up to date.
     export_wanted: bool,
@@ -117,9 +113,7 @@ impl App {
             run: None,
             run_for: None,
             zeta: None,
-            speed: None,
-            speed_wanted: Vec::new(),
-            speed_asked: Vec::new(),
+            sweeps: Default::default(),
             background: false,
             export_wanted: false,
             save_out: None,
@@ -366,7 +360,7 @@ impl App {
         if self.view == View::Map {
             return self.prepare_map_export();
         }
-        if !self.speed_wanted.is_empty() {
+        if !self.sweeps.wanted.is_empty() {
             self.info("export waits for the COR-vs-speed sweep…".into());
             return None;
         }

@@ -55,14 +55,14 @@ impl App {
         if !preset_lambda_zeta(preset, &self.setting) {
             current.source = MODIFIED.into();
         }
-        let pending = self.speed_wanted.iter().map(|r| r.v_max);
+        let pending = self.sweeps.wanted.iter().map(|r| r.v_max);
         Scene {
             ball: current,
             balls: self.presets.iter().map(ball).collect(),
             run: self.run.as_ref(),
             references: reference_curves().iter().map(zeta).collect(),
             zeta: self.zeta.as_ref().map(zeta),
-            speed: self.speed.as_ref().map(speed),
+            speed: self.sweeps.curve.as_ref().map(speed),
             speed_pending: pending.reduce(f64::max),
             pinned: self
                 .pins
