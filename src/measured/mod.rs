@@ -4,7 +4,7 @@
 //! the 1-based line and column it is about.
 
 mod drop;
-/// Reading a data file from disk (anyhow, which the `tui` and `cli` features bring).
+// reading a data file from disk: anyhow, which the `tui` and `cli` features bring
 #[cfg(feature = "tui")]
 pub mod file;
 pub mod overlay;
