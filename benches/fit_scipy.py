@@ -1,7 +1,7 @@
 """The force-time fit of benches/fit.rs with SciPy: least_squares (trust region reflective,
 bounds, finite-difference Jacobian) over solve_ivp, for the ratio in BENCHMARKS.md.
 
-Model (MODEL.md section 2, linear law below flattening): state (a, a', y), a(0) = y(0) = 0,
+Model (docs/model.md §2, linear law below flattening): state (a, a', y), a(0) = y(0) = 0,
 a'(0) = v0; F = K_p (a - y); a'' = -F/m; y' = (F - K_r y)/c; contact ends at F = 0 falling
 (RK45, rtol 1e-10, atol 1e-14 on the state scale). Residual at each sample time t:
 b + F(t - t0) - data, F = 0 outside the contact. Variables: ln K_p, ln c, ln K_r, t0, b,

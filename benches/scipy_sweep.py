@@ -1,6 +1,6 @@
 """The 4 x 400-point COR-vs-zeta sweep with SciPy's solve_ivp, for the ratio in BENCHMARKS.md.
 
-Normalized linear law below flattening (MODEL.md §5): x = (a, a', y), x(0) = (0, 1, 0),
+Normalized linear law below flattening (docs/model.md §5): x = (a, a', y), x(0) = (0, 1, 0),
     a'' = -(a - y),  y' = 2 zeta ((a - y) - lam y),  F = a - y,
 RK45 at rtol 1e-10 (atol 1e-13), terminal event at F = 0 falling. Prints one JSON object:
 median wall time of the sweep over REPEATS runs, and the COR values (for the accuracy check).

@@ -273,7 +273,7 @@ impl Ball {
     }
 
     /// The recoil spring K_r (and λ) that makes the model's COR equal a measured one, holding
-    /// m, K_p, c (so ζ), z_p and v0, as `bouncelab fit --cor E` (MODEL.md §4).
+    /// m, K_p, c (so ζ), z_p and v0, as `bouncelab fit --cor E` (docs/model.md §4).
     ///
     /// ```
     /// let ball = bouncelab::Ball::from_preset("superball")?;

@@ -23,7 +23,7 @@
 //! // another contact law
 //! assert!(soft.with_law(ContactLaw::Hertz).impact()?.rebound);
 //!
-//! // the recoil spring K_r that gives a measured COR (MODEL.md §4)
+//! // the recoil spring K_r that gives a measured COR (docs/model.md §4)
 //! let fit = Ball::from_preset("superball")?.fit_cor(0.75)?;
 //! println!("K_r = {:.0} N/m, λ = {:.4}", fit.k_r, fit.lambda);
 //! # Ok::<(), bouncelab::BallError>(())

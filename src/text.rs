@@ -5,9 +5,12 @@
 //! same `f64`, for CSV, JSON-adjacent text and messages. The rest round to significant digits
 //! through one engine, [`digits`], in the styles the outputs have always used: [`human`] and
 //! [`given`] for the command line's text, [`short`] for figure labels, [`sig`] and
-//! [`sig_trim`] for the explorer's screen (which never shows NaN or inf).
+//! [`sig_trim`] for the explorer's screen (which never shows NaN or inf). Reading a number
+//! typed by a user (command line, explorer) is [`parse::number`].
 
 use std::io;
+
+pub mod parse;
 
 /// A number for messages and CSV: plain decimals in [1e-4, 1e7), exponent notation outside
 /// it (so 1e300 is not 301 digits), `inf`/`-inf`/`NaN` spelled out; shortest round-trip form.

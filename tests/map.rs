@@ -1,6 +1,6 @@
 //! The design map (issue 21) against independent paths: each cell is what `run` gives at that
 //! (λ, ζ) (through `Ball`, the command line's own path); the λ → 0 row approaches Maxwell's
-//! closed form (MODEL.md §5, Eq. 28); the feasible mask is a brute-force check cell by cell;
+//! closed form (docs/model.md §5, Eq. 28); the feasible mask is a brute-force check cell by cell;
 //! every iso-line vertex lies at its level.
 
 use bouncelab::map::{Axis, Map, MapSpec, Param, Quantity, Scale, Targets, compute};

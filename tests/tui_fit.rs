@@ -1,6 +1,6 @@
 //! Measured data and the fit in the explorer (`o`, `f`, `F`, `O`): through `App::update` and
-//! its effects, the fit run as the fit worker runs it (`bouncelab::tui::measured::run`), and
-//! the fit pane drawn on a TestBackend.
+//! its effects, the fit run as the fit worker runs it
+//! (`bouncelab::tui::views::fit::state::run`), and the fit pane drawn on a TestBackend.
 
 mod fit_common;
 
@@ -9,9 +9,9 @@ use bouncelab::measured::Data;
 use bouncelab::preset::Preset;
 use bouncelab::tui::action::Action;
 use bouncelab::tui::app::{App, Effect, Overlay, Purpose};
-use bouncelab::tui::measured::{self, FitRequest, FitStatus, Standing};
 use bouncelab::tui::param::{Dir, Param};
 use bouncelab::tui::ui::figure;
+use bouncelab::tui::views::fit::state::{self as measured, FitRequest, FitStatus, Standing};
 use bouncelab::{ContactLaw, ImpactParams, SolveOptions, simulate};
 use ratatui::Terminal;
 use ratatui::backend::TestBackend;

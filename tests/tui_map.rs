@@ -9,9 +9,9 @@ use bouncelab::preset::Preset;
 use bouncelab::solver::{SolveOptions, simulate};
 use bouncelab::tui::action::{self, Action, Mode};
 use bouncelab::tui::app::{App, Effect, View};
-use bouncelab::tui::map_view::{self, cell_of};
 use bouncelab::tui::param::Param;
-use bouncelab::tui::widgets::map_cells::RAMP;
+use bouncelab::tui::views::map::cells::RAMP;
+use bouncelab::tui::views::map::state::{self as map_view, cell_of};
 use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
 use ratatui::style::Color;
 
@@ -344,7 +344,7 @@ fn e_exports_the_map_on_screen_as_svg_and_csv() {
         .collect();
     assert_eq!(
         data,
-        bouncelab::cli::map::csv(map, app.map_view().targets.as_ref()),
+        bouncelab::map::csv::csv(map, app.map_view().targets.as_ref()),
         "the CSV of `bouncelab map`"
     );
 }

@@ -1,5 +1,6 @@
 //! The explorer's models view (Tab, Tab): the field's contact models calibrated to the ball,
-//! drawn over the Christoforou–Yigit model (src/figure/models.rs, src/tui/models.rs).
+//! drawn over the Christoforou–Yigit model (src/figure/explorer/models.rs,
+//! src/tui/views/models/state.rs).
 //! Snapshots at 120×40 and 80×24 with and without colour, the background calibration's
 //! bookkeeping in `App::update` (results arrive, stale ones are dropped), the export equal to
 //! the screen, and the calibrated damping on screen equal to `bouncelab peers`.
@@ -14,9 +15,9 @@ use bouncelab::text::sig;
 use bouncelab::tui::action::Action;
 use bouncelab::tui::app::{App, Effect, View};
 use bouncelab::tui::export;
-use bouncelab::tui::models::ModelsRequest;
 use bouncelab::tui::theme::Theme;
 use bouncelab::tui::ui::{self, Chart};
+use bouncelab::tui::views::models::state::ModelsRequest;
 use bouncelab::tui::widgets::plot::Plot;
 use ratatui::buffer::Buffer;
 use ratatui::crossterm::event::KeyCode;

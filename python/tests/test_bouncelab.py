@@ -2,8 +2,9 @@
 
 Two references: the transcripts stored by the Rust test tests/cli_golden.rs (tests/golden/*.txt,
 what `bouncelab ARGS` printed, byte for byte), and the `bouncelab` binary itself, run on the
-same arguments (BOUNCELAB_BIN, default target/debug/bouncelab at the repository's root; .ci/run
-builds it before pytest runs). Values must agree to 1e-12, messages word for word.
+same arguments (BOUNCELAB_BIN, default $CARGO_TARGET_DIR/debug/bouncelab, CARGO_TARGET_DIR
+defaulting to target/ at the repository's root; .ci/run builds it before pytest runs). Values
+must agree to 1e-12, messages word for word.
 """
 
 import json
@@ -33,7 +34,8 @@ def no_user_presets(tmp_path, monkeypatch):
 
 
 def binary():
-    path = os.environ.get("BOUNCELAB_BIN") or str(ROOT / "target" / "debug" / "bouncelab")
+    target = ROOT / os.environ.get("CARGO_TARGET_DIR", "target")  # an absolute one replaces ROOT
+    path = os.environ.get("BOUNCELAB_BIN") or str(target / "debug" / "bouncelab")
     if not Path(path).is_file():
         if os.environ.get("BOUNCELAB_BIN"):
             pytest.fail(f"BOUNCELAB_BIN={path} is not a file")

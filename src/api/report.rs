@@ -171,7 +171,7 @@ impl<'a> ImpactReport<'a> {
 }
 
 /// The recoil spring fitted to one measured COR, as `bouncelab fit --cor E --format json`
-/// writes it (MODEL.md §4), SI units.
+/// writes it (docs/model.md §4), SI units.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct FitReport<'a> {
     /// Which ball.

@@ -11,16 +11,10 @@ pub mod ball;
 pub mod budget;
 pub mod drop;
 pub mod figure;
-pub mod figure_balls;
-mod figure_overlay;
 pub mod fit;
-pub mod fit_multi;
-mod fit_plot;
-mod fit_report;
-mod fit_save;
 pub mod map;
-pub mod measured_file;
-pub mod number;
+pub use crate::measured::file as measured_file;
+pub use crate::text::parse as number;
 pub mod output;
 pub mod peers;
 pub mod presets;
@@ -355,7 +349,7 @@ fn explorer(choice: ball::PresetChoice, measured: Option<PathBuf>) -> anyhow::Re
                 crate::figure::explorer::MeasuredOverlay::from_data(&data, &label, p.mass, p.v0)
                     .map_err(|e| measured_file::at(path, e))?;
             let path = path.clone();
-            let loaded = crate::tui::measured::Loaded { path, label, data };
+            let loaded = crate::tui::views::fit::state::Loaded { path, label, data };
             (overlays, Some(loaded))
         }
         None => (Vec::new(), None),

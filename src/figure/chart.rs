@@ -14,8 +14,8 @@ pub enum Chart {
     ForceZeta,
     /// COR against impact speed (Fig. 4).
     CorSpeed,
-    /// The models view (crate::figure::models): COR against impact speed of every calibrated
-    /// model.
+    /// The models view (crate::figure::explorer::models): COR against impact speed of every
+    /// calibrated model.
     ModelsCorSpeed,
     /// The models view: force against time of every calibrated model at v0.
     ModelsForceTime,

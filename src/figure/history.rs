@@ -1,8 +1,8 @@
 //! Figs. 5–8 of the paper: the contact force of one impact against time and against
 //! displacement, drawn from the sampled history of an [`ImpactResponse`].
 
-use super::paper::Ball;
 use super::{Axis, BLACK, Corner, Figure, GREY, Kind, Look, Marker, Series, Style, Tone};
+use crate::ball::Ball;
 use crate::model::contact::ContactLaw;
 use crate::solver::ImpactResponse;
 use crate::text::short;

@@ -21,14 +21,12 @@ pub mod csv;
 pub mod explorer;
 pub mod history;
 pub mod look;
-pub mod models;
 pub mod overlay;
 pub mod paper;
 pub mod peers;
 pub mod report;
 pub mod svg;
 pub mod svg_map;
-mod svg_map_legend;
 pub mod ticks;
 
 pub use look::{Corner, LegendEntry, Look, Sample, Tone};

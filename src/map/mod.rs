@@ -37,6 +37,7 @@
 
 mod axis;
 mod contour;
+pub mod csv;
 mod eval;
 pub mod fast;
 mod sensitivity;

@@ -87,7 +87,7 @@ mod tests {
         }
     }
 
-    /// At fixed ζ a stiffer recoil spring keeps more energy (MODEL.md §4): ∂e/∂ln λ > 0.
+    /// At fixed ζ a stiffer recoil spring keeps more energy (docs/model.md §4): ∂e/∂ln λ > 0.
     #[test]
     fn cor_rises_with_lambda() {
         let s = sensitivity(&spec(), 0.5, 0.3).unwrap();

@@ -1,8 +1,12 @@
 //! Measured data read from text: force–time traces, COR-against-speed tables and drop tests
-//! (docs/fitting.md). Parsing only, from `&str`: reading the file is the caller's. Every error
-//! carries the 1-based line and column it is about.
+//! (docs/fitting.md). Parsing from `&str`; reading a file at the edge (a regular file, a size
+//! limit, UTF-8) is `file`'s (with the `tui` feature). Every error carries
+//! the 1-based line and column it is about.
 
 mod drop;
+// reading a data file from disk: anyhow, which the `tui` and `cli` features bring
+#[cfg(feature = "tui")]
+pub mod file;
 pub mod overlay;
 mod table;
 mod trace;

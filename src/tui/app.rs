@@ -22,8 +22,7 @@ mod screen;
 mod sweeps;
 
 use super::action::{Action, Mode};
-use super::compute::{self, SpeedCurve, SpeedRequest, ZetaCurve};
-use super::drop_view::DropView;
+use super::compute::{self, ZetaCurve};
 pub use super::effect::Effect;
 use super::export;
 use super::param::Param;
@@ -35,6 +34,8 @@ use crate::model::contact::ContactLaw;
 use crate::model::params::ImpactParams;
 use crate::preset::Preset;
 use crate::solver::ImpactResponse;
+use crate::tui::views::drop::state::DropView;
+use crate::tui::views::sweeps::speed::{SpeedCurve, SpeedRequest};
 
 /// How many changes `u` can undo.
 const UNDO_DEPTH: usize = 500;
@@ -59,12 +60,8 @@ pub struct App {
     run_for: Option<(ImpactParams, ContactLaw)>,
     /// COR and F̄_m vs ζ at the current λ.
     zeta: Option<ZetaCurve>,
-    /// COR vs speed; computed only while the sweeps view shows it.
-    speed: Option<SpeedCurve>,
-    /// Sweeps still to come (see [`App::with_background_sweeps`]).
-    speed_wanted: Vec<SpeedRequest>,
-    /// The sweeps last asked of the background worker ([`Effect::Compute`]).
-    speed_asked: Vec<SpeedRequest>,
+    /// COR vs speed, and the sweeps asked; computed only while the sweeps view shows it.
+    sweeps: crate::tui::views::sweeps::state::Sweeps,
     background: bool,
     /// `e` was pressed: export once the view's curves are up to date.
     export_wanted: bool,
@@ -72,16 +69,10 @@ pub struct App {
     save_out: Option<SaveRequest>,
     /// The drop view's sequence and animation clock.
     drop: DropView,
-    /// Measured data drawn on the charts (`bouncelab --measured FILE`).
-    measured: Vec<crate::figure::explorer::MeasuredOverlay>,
-    /// The measured file's data, to fit to (`o`, `bouncelab --measured FILE`).
-    loaded: Option<super::measured::Loaded>,
-    /// The last fit asked for (`f`) and its answer: the fit pane.
-    fit: Option<super::measured::FitPane>,
-    /// The id of the last fit asked for.
-    fit_id: u64,
-    /// The models view's calibrations (src/tui/models.rs).
-    models: crate::tui::models::Models,
+    /// Measured data, the data to fit and the fit pane.
+    fit: crate::tui::views::fit::state::FitState,
+    /// The models view's calibrations (src/tui/views/models/state.rs).
+    models: crate::tui::views::models::state::Models,
     /// The first help line shown.
     help_scroll: u16,
     /// The preset file the explorer started on (`--config FILE`) and its preset's index.
@@ -89,7 +80,7 @@ pub struct App {
     /// The terminal's width and height, once the loop has said (`Action::Resize`).
     size: Option<(u16, u16)>,
     /// The map view's map, quantity, targets and window.
-    map: super::map_view::MapView,
+    map: crate::tui::views::map::state::MapView,
     /// The crosshair (`x`), when it is on.
     crosshair: Option<super::crosshair::Crosshair>,
 }
@@ -122,17 +113,12 @@ impl App {
             run: None,
             run_for: None,
             zeta: None,
-            speed: None,
-            speed_wanted: Vec::new(),
-            speed_asked: Vec::new(),
+            sweeps: Default::default(),
             background: false,
             export_wanted: false,
             save_out: None,
             drop: DropView::new(false),
-            measured: Vec::new(),
-            loaded: None,
-            fit: None,
-            fit_id: 0,
+            fit: Default::default(),
             models: Default::default(),
             help_scroll: 0,
             config: None,
@@ -154,7 +140,7 @@ impl App {
 
     /// Draw the user's measured data on the charts it belongs to.
     pub fn with_measured(mut self, m: Vec<crate::figure::explorer::MeasuredOverlay>) -> App {
-        self.measured = m;
+        self.fit.overlays = m;
         self
     }
 
@@ -374,7 +360,7 @@ impl App {
         if self.view == View::Map {
             return self.prepare_map_export();
         }
-        if !self.speed_wanted.is_empty() {
+        if !self.sweeps.wanted.is_empty() {
             self.info("export waits for the COR-vs-speed sweep…".into());
             return None;
         }

@@ -1,10 +1,10 @@
 //! What `App::update` asks the event loop to do: the explorer's only side effects. `update`
 //! returns them; the loop carries them out and reports each outcome back as an action.
 
-use super::compute::SpeedRequest;
 use super::export::ExportRequest;
-use super::map_view::MapJob;
 use super::save::SaveRequest;
+use crate::tui::views::map::state::MapJob;
+use crate::tui::views::sweeps::speed::SpeedRequest;
 
 #[derive(Debug, Clone, PartialEq)]
 pub enum Effect {
@@ -22,10 +22,10 @@ pub enum Effect {
     LoadMeasured(std::path::PathBuf),
     /// Run this fit on the fit worker (`f`), replacing any not yet started; it comes back as
     /// `Action::FitReady`.
-    Fit(super::measured::FitRequest),
+    Fit(crate::tui::views::fit::state::FitRequest),
     /// Run exactly these calibrations of the models view in the background (none: drop the
     /// one that is out); a finished one comes back as `Action::ModelsReady`.
-    ComputeModels(Vec<super::models::ModelsRequest>),
+    ComputeModels(Vec<crate::tui::views::models::state::ModelsRequest>),
     /// Refine this map in the background, pass by pass (a job before it stops on its own:
     /// `update` set its cancel flag); each pass comes back as `Action::MapPass`.
     Map(MapJob),

@@ -8,13 +8,13 @@
 use super::action::{self, Action};
 use super::app::{App, Effect};
 use super::export;
-use super::fit_worker::FitWorker;
-use super::map_worker::MapWorker;
-use super::models::ModelsRequest;
 use super::save;
 use super::worker::Worker;
 use crate::catalog;
 use crate::fault::Fault;
+use crate::tui::views::fit::worker::FitWorker;
+use crate::tui::views::map::worker::MapWorker;
+use crate::tui::views::models::state::ModelsRequest;
 use ratatui::DefaultTerminal;
 use ratatui::crossterm::event;
 use std::time::{Duration, Instant};
@@ -155,7 +155,7 @@ fn carry_out(mut effects: Vec<Effect>, app: &mut App, worker: &mut Workers) {
                     worker.fits.want(request);
                     continue;
                 }
-                Effect::LoadMeasured(path) => match super::measured::load(&path) {
+                Effect::LoadMeasured(path) => match crate::tui::views::fit::state::load(&path) {
                     Ok(data) => Action::MeasuredLoaded { path, data },
                     Err(msg) => Action::MeasuredFailed { msg },
                 },

@@ -35,7 +35,7 @@ pub struct ExportRequest {
     /// (chart name in file names, its figure), in screen order.
     pub charts: Vec<(&'static str, Figure)>,
     /// The map view's map, after the charts (none in the other views).
-    pub map: Option<super::export_map::MapExport>,
+    pub map: Option<crate::tui::views::map::export::MapExport>,
     /// `#` lines each CSV file starts with (the `bouncelab run` line and the parameters).
     pub header: Vec<String>,
 }

@@ -8,15 +8,15 @@
 //! (`crate::figure::explorer`), the same one the export writes; [`export`] writes the current
 //! view's figures as SVG and CSV files (`e`) and [`save`] the current setting as a user preset
 //! file (`s`): in both `update` only asks, the loop writes. The COR-vs-speed sweeps and the
-//! models view's calibrations ([`models`]) run on background [`worker`]s.
+//! models view's calibrations ([`views::models`]) run on background [`worker`]s.
 //!
-//! The map view (`Tab` to view 4/4): its state in [`map_view`], its part of `update` in
-//! `app/map`, its panel in `widgets::map` (raster in `widgets::map_cells`); the first pass of
-//! a new map is computed in `update`, the finer ones on [`map_worker`]'s thread, and `e`
-//! writes it through [`export_map`]. [`layout`] is the screen's geometry, which `update`
-//! needs for the map's grid.
+//! A view with state of its own has a folder in [`views`] — `map`, `models`, `drop`, and `fit`
+//! (the measured data and the fit pane) — holding its state, its worker, its widget and its
+//! export; its part of `update` is `app/<view>.rs`. The map's first pass is computed in
+//! `update`, the finer ones on its worker's thread. [`layout`] is the screen's geometry, which
+//! `update` needs for the map's grid.
 //!
-//! The modules import each other without a cycle (tests/tui_imports.rs): state below
+//! The modules import each other without a cycle (tests/architecture.rs): state below
 //! `update`, widgets and the loop above it.
 
 pub mod action;
@@ -24,19 +24,12 @@ pub mod app;
 pub mod command;
 pub mod compute;
 pub mod crosshair;
-pub mod drop_view;
 pub mod effect;
 pub mod event;
 pub mod export;
-pub mod export_map;
-pub mod fit_worker;
 pub mod format;
 pub mod keys;
 pub mod layout;
-pub mod map_view;
-pub mod map_worker;
-pub mod measured;
-pub mod models;
 pub mod param;
 pub mod physical;
 pub mod picker;
@@ -45,6 +38,7 @@ pub mod setting;
 pub mod state;
 pub mod theme;
 pub mod ui;
+pub mod views;
 pub mod widgets;
 pub mod worker;
 
@@ -85,7 +79,7 @@ pub fn run_with_measured(
 pub fn run_from(
     preset: Preset,
     measured: Vec<crate::figure::explorer::MeasuredOverlay>,
-    loaded: Option<measured::Loaded>,
+    loaded: Option<views::fit::state::Loaded>,
     config: Option<std::path::PathBuf>,
 ) -> anyhow::Result<()> {
     if !std::io::stdout().is_terminal() {

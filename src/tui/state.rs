@@ -2,12 +2,13 @@
 //! message line and the pinned runs. The explorer's `App` owns them and changes them.
 
 pub use super::action::CursorMove;
-use super::compute::{SpeedCurve, ZetaCurve};
+use super::compute::ZetaCurve;
 use super::param::Param;
 use super::save::SaveRequest;
 pub use super::setting::Setting;
 use crate::figure::explorer::Chart;
 use crate::solver::ImpactResponse;
+use crate::tui::views::sweeps::speed::SpeedCurve;
 
 /// Below this the explorer asks for a larger terminal, and only resize and quit act (the
 /// screen shows nothing else, so no other key may change what is unseen).
@@ -21,11 +22,11 @@ pub enum View {
     Impact,
     /// Normalized peak force vs ζ, COR vs impact speed.
     Sweeps,
-    /// The field's contact models calibrated to the ball (src/tui/models.rs).
+    /// The field's contact models calibrated to the ball (src/tui/views/models/state.rs).
     Models,
-    /// The design map: COR, peak force or contact time over (λ, ζ) (src/tui/map_view.rs).
+    /// The design map: COR, peak force or contact time over (λ, ζ) (src/tui/views/map/state.rs).
     Map,
-    /// The drop test (`d`, outside the Tab cycle): src/tui/drop_view.rs.
+    /// The drop test (`d`, outside the Tab cycle): src/tui/views/drop/state.rs.
     Drop,
 }
 

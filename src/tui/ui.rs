@@ -7,11 +7,8 @@ use super::param::Param;
 use super::theme::Theme;
 use super::widgets::command::CommandBox;
 use super::widgets::confirm::ConfirmDialog;
-use super::widgets::fit::FitView;
 use super::widgets::help::Help;
 use super::widgets::input::InputDialog;
-use super::widgets::map::MapPanel;
-use super::widgets::models::ModelsTable;
 use super::widgets::picker::PickerBox;
 use super::widgets::pins::PinView;
 use super::widgets::plot::Plot;
@@ -19,6 +16,9 @@ use super::widgets::readout::{self, Readout};
 use super::widgets::status::{Header, KeyHints, MessageLine, message_lines};
 pub use crate::figure::explorer::Chart;
 use crate::figure::{Figure, explorer};
+use crate::tui::views::fit::widget::FitView;
+use crate::tui::views::map::widget::MapPanel;
+use crate::tui::views::models::widget::ModelsTable;
 use ratatui::buffer::Buffer;
 use ratatui::layout::{Constraint, Layout, Rect};
 use ratatui::text::Line;
@@ -291,14 +291,19 @@ impl Widget for &App {
         }
         .render(s.status, buf);
         if self.view() == View::Drop {
-            // the drop view takes the whole body (src/tui/widgets/drop.rs)
+            // the drop view takes the whole body (src/tui/views/drop/widget.rs)
             let body = Rect::new(
                 area.x,
                 s.header.bottom(),
                 area.width,
                 s.message.y - s.header.bottom(),
             );
-            super::widgets::drop::render(self, body, buf);
+            crate::tui::views::drop::widget::DropPanel {
+                drop: self.drop_view(),
+                ball: &self.preset().name,
+                theme,
+            }
+            .render(body, buf);
         } else if self.view() == View::Models {
             models_table(self, theme).render(s.readout, buf);
         } else {

@@ -2,10 +2,10 @@
 //! (λ ≈ 0, ζ ≫ 1, nonlinear law: the ball sinks into the dashpot) a sweep takes seconds even in
 //! release builds. The explorer stays responsive meanwhile, and a sweep the user has moved past
 //! is abandoned between two speeds. Results come back as `Action::SpeedReady`. The models
-//! view's calibrations ([`super::models::ModelsRequest`]) run on a second worker of the same
-//! kind and come back as `Action::ModelsReady`.
+//! view's calibrations ([`crate::tui::views::models::state::ModelsRequest`]) run on a second
+//! worker of the same kind and come back as `Action::ModelsReady`.
 
-use super::compute::{SpeedCurve, SpeedRequest};
+use crate::tui::views::sweeps::speed::{SpeedCurve, SpeedRequest};
 use std::sync::mpsc::{self, Receiver, Sender, TryRecvError};
 use std::thread;
 

@@ -2,8 +2,8 @@
 //! name to save a preset under) and the question before a preset file is overwritten.
 
 use super::{App, Confirm, Effect, Input, Overlay, Purpose};
-use crate::cli::number::number;
 use crate::model::params::ImpactParams;
+use crate::text::parse::number;
 use crate::tui::action::Action;
 use crate::tui::param::Param;
 use crate::tui::save::{self, SaveRequest};

@@ -1,8 +1,8 @@
 //! The drop view's part of [`App`]: its clock, its keys (`d`, space, `b`) and the motion
-//! setting (src/tui/drop_view.rs holds the view's state).
+//! setting (src/tui/views/drop/state.rs holds the view's state).
 
 use super::{Action, App, View};
-use crate::tui::drop_view::DropView;
+use crate::tui::views::drop::state::DropView;
 
 impl App {
     /// Animate the drop view (the explorer does, unless under reduced motion; tests see the

@@ -9,8 +9,10 @@
 use super::{App, Effect, Overlay, Purpose, Setting};
 use crate::figure::explorer::MeasuredOverlay;
 use crate::measured::Data;
-use crate::tui::measured::{self, FitOutcome, FitPane, FitStatus, Loaded, Standing};
 use crate::tui::param::Param;
+use crate::tui::views::fit::state::{
+    self as measured, FitOutcome, FitPane, FitStatus, Loaded, Standing,
+};
 use std::path::PathBuf;
 
 impl App {
@@ -32,14 +34,14 @@ impl App {
     /// The loop read `data` from `path`: it replaces what was drawn (and any fit to it),
     /// unless it cannot be drawn for the current ball, which changes nothing.
     pub(super) fn measured_loaded(&mut self, path: PathBuf, data: Data) {
-        let label = crate::cli::measured_file::label(&path);
+        let label = crate::measured::file::label(&path);
         let p = self.setting.params;
         match MeasuredOverlay::from_data(&data, &label, p.mass, p.v0) {
             Ok(overlays) => {
                 self.info(format!("loaded {label}: a {} (f fits)", data.kind()));
-                self.measured = overlays;
-                self.loaded = Some(Loaded { path, label, data });
-                self.fit = None;
+                self.fit.overlays = overlays;
+                self.fit.loaded = Some(Loaded { path, label, data });
+                self.fit.pane = None;
             }
             Err(e) => self.error(format!("{}:{e}", path.display())),
         }
@@ -47,55 +49,56 @@ impl App {
 
     /// `--measured FILE` at the start: the data to fit to, besides its overlays.
     pub fn with_loaded(mut self, loaded: Loaded) -> App {
-        self.loaded = Some(loaded);
+        self.fit.loaded = Some(loaded);
         self
     }
 
     /// The measured data the explorer holds, if any.
     pub fn loaded(&self) -> Option<&Loaded> {
-        self.loaded.as_ref()
+        self.fit.loaded.as_ref()
     }
 
     /// The fit pane's content, if a fit was asked for.
     pub fn fit_pane(&self) -> Option<&FitPane> {
-        self.fit.as_ref()
+        self.fit.pane.as_ref()
     }
 
     /// Whether a fit is out on the worker.
     pub fn fitting(&self) -> bool {
         self.fit
+            .pane
             .as_ref()
             .is_some_and(|f| f.status == FitStatus::Running)
     }
 
     /// How the fit shown stands to the current ball.
     pub fn fit_standing(&self) -> Option<Standing> {
-        let f = self.fit.as_ref()?;
+        let f = self.fit.pane.as_ref()?;
         Some(f.standing(&self.setting.params, self.setting.law))
     }
 
     /// `O`: no more measured data, nor fit.
     pub(super) fn clear_measured(&mut self) {
-        if self.loaded.is_none() && self.measured.is_empty() {
+        if self.fit.loaded.is_none() && self.fit.overlays.is_empty() {
             return self.warn("no measured data to put away (o loads a file)".into());
         }
-        self.loaded = None;
-        self.measured.clear();
-        self.fit = None;
+        self.fit.loaded = None;
+        self.fit.overlays.clear();
+        self.fit.pane = None;
         self.info("measured data put away".into());
     }
 
     /// `f`: the fit of the current ball to the loaded data, for the fit worker.
     pub(super) fn start_fit(&mut self) -> Option<Effect> {
-        let Some(loaded) = &self.loaded else {
+        let Some(loaded) = &self.fit.loaded else {
             self.warn("no measured data to fit to: o loads a file".into());
             return None;
         };
-        self.fit_id += 1;
+        self.fit.id += 1;
         let s = &self.setting;
-        match measured::request(self.fit_id, loaded, &s.params, s.law) {
+        match measured::request(self.fit.id, loaded, &s.params, s.law) {
             Ok(r) => {
-                self.fit = Some(FitPane {
+                self.fit.pane = Some(FitPane {
                     id: r.id,
                     label: r.label.clone(),
                     base: r.base,
@@ -116,7 +119,7 @@ impl App {
 
     /// A fit came back: shown if it is the latest asked for, dropped if superseded.
     pub(super) fn fit_ready(&mut self, id: u64, result: Result<FitOutcome, String>) {
-        let Some(pane) = self.fit.as_mut().filter(|p| p.id == id) else {
+        let Some(pane) = self.fit.pane.as_mut().filter(|p| p.id == id) else {
             return;
         };
         pane.status = FitStatus::Done(result);
@@ -124,7 +127,7 @@ impl App {
             Some(Standing::Stale) => {
                 self.warn("fit done, but the ball changed meanwhile: stale (f fits again)".into())
             }
-            _ => match &self.fit.as_ref().map(|p| &p.status) {
+            _ => match &self.fit.pane.as_ref().map(|p| &p.status) {
                 Some(FitStatus::Done(Err(e))) => self.error(format!("fit failed: {e}")),
                 Some(FitStatus::Done(Ok(o))) if !o.identified => self.warn(
                     "fit done, but it gave no answer (see the pane): F twice applies it".into(),
@@ -137,7 +140,7 @@ impl App {
     /// `F`: the fitted ball in place of the current one, as one change `u` undoes.
     pub(super) fn apply_fit(&mut self) {
         let standing = self.fit_standing();
-        let Some(pane) = &self.fit else {
+        let Some(pane) = &self.fit.pane else {
             return self.warn("no fit to apply: f fits the ball to the measured data".into());
         };
         let outcome = match &pane.status {

@@ -2,7 +2,7 @@
 //! Enter types a value through the value entry, and each accepted value is one undoable change.
 
 use super::{App, Overlay, Purpose};
-use crate::cli::number::number;
+use crate::text::parse::number;
 use crate::text::sig_trim;
 use crate::tui::action::{Action, Scroll};
 use crate::tui::physical::{self, Field, Form};

@@ -9,7 +9,7 @@ use crate::tui::setting::Setting;
 impl App {
     /// Sweeps still to come from the background worker.
     pub fn speed_requests(&self) -> &[SpeedRequest] {
-        &self.speed_wanted
+        &self.sweeps.wanted
     }
 
     pub fn presets(&self) -> &[Preset] {
@@ -64,7 +64,7 @@ impl App {
         self.zeta.as_ref()
     }
     pub fn speed_curve(&self) -> Option<&SpeedCurve> {
-        self.speed.as_ref()
+        self.sweeps.curve.as_ref()
     }
 
     /// What the keyboard is talking to.

@@ -1,6 +1,6 @@
 //! The map view's part of `update`: the cursor (which moves the ball), the quantity, the
 //! targets, the passes coming back from the worker, and the map kept up to date with the
-//! ball and the screen (src/tui/map_view.rs says what the map is).
+//! ball and the screen (src/tui/views/map/state.rs says what the map is).
 
 use super::{App, Effect, Setting, View};
 use crate::map::{Map, MapSpec, Targets, sensitivity};
@@ -8,10 +8,12 @@ use crate::model::contact::ContactLaw;
 use crate::text::sig_trim;
 use crate::tui::action::Action;
 use crate::tui::export::{ExportRequest, file_stem_part};
-use crate::tui::export_map::MapExport;
-use crate::tui::map_view::{self, MapJob, MapView, Window, cell_of, next_quantity};
 use crate::tui::param::Param;
 use crate::tui::state::{Overlay, Purpose};
+use crate::tui::views::map::export::MapExport;
+use crate::tui::views::map::state::{
+    self as map_view, MapJob, MapView, Window, cell_of, next_quantity,
+};
 use std::sync::Arc;
 use std::sync::atomic::AtomicBool;
 

@@ -2,8 +2,8 @@
 //! is for the ball as it is now (a late answer for a ball the user has changed is dropped).
 
 use super::{App, Effect, View};
-use crate::figure::models::ModelsData;
-use crate::tui::models::ModelsRequest;
+use crate::figure::explorer::models::ModelsData;
+use crate::tui::views::models::state::ModelsRequest;
 
 impl App {
     /// The calibration the current ball needs: its Christoforou–Yigit COR at v0 as the target,

@@ -15,7 +15,7 @@ impl App {
         // the curves of this setting, even when earlier keys of the batch changed it
         self.refresh_run();
         let (want, _) = self.speed_targets();
-        let speed = self.speed.clone().filter(|c| c.request == want);
+        let speed = self.sweeps.curve.clone().filter(|c| c.request == want);
         self.pins.push(Ghost {
             setting: self.setting.clone(),
             run: self.run.clone(),

@@ -6,8 +6,9 @@ use super::App;
 use crate::figure::explorer::{MODIFIED, Pinned, Scene, SpeedSweep, ZetaSweep};
 use crate::figure::paper::Ball;
 use crate::preset::Preset;
-use crate::tui::compute::{SpeedCurve, ZetaCurve, reference_curves};
+use crate::tui::compute::{ZetaCurve, reference_curves};
 use crate::tui::setting::Setting;
+use crate::tui::views::sweeps::speed::SpeedCurve;
 
 fn zeta(c: &ZetaCurve) -> ZetaSweep<'_> {
     ZetaSweep {
@@ -54,14 +55,14 @@ impl App {
         if !preset_lambda_zeta(preset, &self.setting) {
             current.source = MODIFIED.into();
         }
-        let pending = self.speed_wanted.iter().map(|r| r.v_max);
+        let pending = self.sweeps.wanted.iter().map(|r| r.v_max);
         Scene {
             ball: current,
             balls: self.presets.iter().map(ball).collect(),
             run: self.run.as_ref(),
             references: reference_curves().iter().map(zeta).collect(),
             zeta: self.zeta.as_ref().map(zeta),
-            speed: self.speed.as_ref().map(speed),
+            speed: self.sweeps.curve.as_ref().map(speed),
             speed_pending: pending.reduce(f64::max),
             pinned: self
                 .pins
@@ -77,7 +78,7 @@ impl App {
                     speed: g.speed.as_ref().map(speed),
                 })
                 .collect(),
-            measured: &self.measured,
+            measured: &self.fit.overlays,
             models: self.models(),
             models_pending: self.models.wanted.is_some(),
         }

@@ -1,38 +1,38 @@
 //! Which COR-vs-speed sweeps the state needs, and where a finished one goes.
 
 use super::{App, Effect, Setting, View};
-use crate::tui::compute::{SpeedCurve, SpeedRequest};
+use crate::tui::views::sweeps::speed::{SpeedCurve, SpeedRequest};
 
 impl App {
     /// List the sweeps the sweeps view needs and does not have; run them here, or, with a
     /// background worker, ask for them when the list changed.
     pub(super) fn refresh_sweeps(&mut self) -> Option<Effect> {
-        self.speed_wanted.clear();
+        self.sweeps.wanted.clear();
         if self.view == View::Sweeps {
             let (current, pins) = self.speed_targets();
             // a curve still being refined is wanted until its last point
             let stale = |have: Option<&SpeedCurve>, want: &SpeedRequest| {
                 have.is_none_or(|c| c.request != *want || c.refining)
             };
-            if stale(self.speed.as_ref(), &current) {
-                self.speed_wanted.push(current);
+            if stale(self.sweeps.curve.as_ref(), &current) {
+                self.sweeps.wanted.push(current);
             }
             for (g, want) in self.pins.iter().zip(pins) {
-                if stale(g.speed.as_ref(), &want) && !self.speed_wanted.contains(&want) {
-                    self.speed_wanted.push(want);
+                if stale(g.speed.as_ref(), &want) && !self.sweeps.wanted.contains(&want) {
+                    self.sweeps.wanted.push(want);
                 }
             }
         }
         if !self.background {
-            for request in std::mem::take(&mut self.speed_wanted) {
+            for request in std::mem::take(&mut self.sweeps.wanted) {
                 let result = request.run();
                 self.receive_speed(&request, result);
             }
             return None;
         }
-        (self.speed_wanted != self.speed_asked).then(|| {
-            self.speed_asked = self.speed_wanted.clone();
-            Effect::Compute(self.speed_wanted.clone())
+        (self.sweeps.wanted != self.sweeps.asked).then(|| {
+            self.sweeps.asked = self.sweeps.wanted.clone();
+            Effect::Compute(self.sweeps.wanted.clone())
         })
     }
 
@@ -65,7 +65,7 @@ impl App {
         });
         let (current, pins) = self.speed_targets();
         if *request == current {
-            self.speed = Some(curve.clone());
+            self.sweeps.curve = Some(curve.clone());
         }
         for (g, want) in self.pins.iter_mut().zip(pins) {
             if *request == want {
@@ -73,7 +73,7 @@ impl App {
             }
         }
         if !refining {
-            self.speed_wanted.retain(|r| r != request);
+            self.sweeps.wanted.retain(|r| r != request);
         }
     }
 }

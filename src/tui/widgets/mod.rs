@@ -4,14 +4,9 @@
 
 pub mod command;
 pub mod confirm;
-pub mod drop;
-pub mod fit;
 pub mod form;
 pub mod help;
 pub mod input;
-pub mod map;
-pub mod map_cells;
-pub mod models;
 pub mod picker;
 pub mod pins;
 pub mod plot;

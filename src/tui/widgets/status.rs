@@ -117,7 +117,7 @@ pub struct KeyHints {
     pub drop: bool,
 }
 
-/// The drop view's own keys (src/tui/drop_view.rs).
+/// The drop view's own keys (src/tui/views/drop/state.rs).
 const DROP_HINTS: [(&str, &str, u8); 2] = [("space", "pause", 0), ("b", "replay", 1)];
 
 impl Widget for &KeyHints {

@@ -1,0 +1,223 @@
+//! `bouncelab fit`: the model fitted to measurements (docs/fitting.md). One COR fits the
+//! recoil spring K_r (and λ) at the ball's ζ, z_p and v0 (docs/model.md §4), as it always
+//! has; a COR table, a force–time trace or drop tests fit several parameters at once
+//! ([`multi`]). The types the fit's files share ([`FitArgs`], [`Source`], [`Loaded`]) live
+//! here; `multi` uses `plot`, `report` and `save`, which use only these types and each other
+//! downward (`save` uses `report`).
+
+use super::ball::BallArgs;
+use super::output::{self, given, human, table};
+use crate::analysis::fit::Param;
+use crate::api::FitReport;
+use crate::measured::{CorPoint, Trace};
+use clap::{Args, ValueEnum};
+use std::io::Write;
+use std::path::PathBuf;
+
+pub mod multi;
+mod plot;
+mod report;
+mod save;
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum FitFormat {
+    Text,
+    Json,
+}
+
+#[derive(Debug, Clone, Args)]
+pub struct FitArgs {
+    #[command(flatten)]
+    pub ball: BallArgs,
+    /// Measured coefficient of restitution to match, in [0, 1]
+    #[arg(long, value_name = "E", value_parser = super::number::number, allow_hyphen_values = true)]
+    pub cor: Option<f64>,
+    /// COR against impact speed: CSV with columns v0 and cor (optional cor_sd, max_force_N,
+    /// contact_time_s)
+    #[arg(long, value_name = "FILE")]
+    pub cor_table: Option<PathBuf>,
+    /// Force–time trace: CSV with a time column (time, t, time_s, time_ms, time_us) and a
+    /// force column (force, F, force_N, force_kN)
+    #[arg(long, value_name = "FILE")]
+    pub force_time: Option<PathBuf>,
+    /// Drop height (m), with --rebound-height; repeatable
+    #[arg(long, value_name = "H", requires = "rebound_height", value_parser = super::number::number, allow_hyphen_values = true)]
+    pub drop_height: Vec<f64>,
+    /// Rebound height (m) of each --drop-height, in the same order
+    #[arg(long, value_name = "R", requires = "drop_height", value_parser = super::number::number, allow_hyphen_values = true)]
+    pub rebound_height: Vec<f64>,
+    /// Drop tests from a CSV with columns drop_height_m, rebound_height_m
+    #[arg(long, value_name = "FILE")]
+    pub drop_test: Option<PathBuf>,
+    /// Drop tests: correct for quadratic air drag with this drag coefficient (≈ 0.47 for a
+    /// smooth sphere) [default: no drag]
+    #[arg(long, value_name = "CD", value_parser = super::number::number, allow_hyphen_values = true)]
+    pub drag_coefficient: Option<f64>,
+    /// Drop tests: air density for the drag correction, kg/m³
+    #[arg(
+        long,
+        value_name = "RHO",
+        default_value_t = 1.204,
+        requires = "drag_coefficient",
+        value_parser = super::number::number,
+        allow_hyphen_values = true
+    )]
+    pub air_density: f64,
+    /// Impact speed v0 (m/s) the COR or the trace was measured at [default: the preset's
+    /// measured v0]
+    #[arg(long, value_name = "V", value_parser = super::number::number, allow_hyphen_values = true)]
+    pub v0: Option<f64>,
+    /// Parameters to fit, comma-separated, from k_p, c, k_r, z_p, k_h [default: k_p,c,k_r
+    /// for a trace (k_h,c,k_r for the Hertz law), k_r,z_p for a COR table or drop tests of
+    /// three points or more, k_r for fewer]
+    #[arg(long, value_name = "P,P,...", value_delimiter = ',')]
+    pub free: Option<Vec<String>>,
+    /// Save the fitted ball as the user preset NAME (never overwriting one without --force)
+    #[arg(long, value_name = "NAME")]
+    pub save: Option<String>,
+    /// Draw data, model and residuals as one SVG
+    #[arg(long, value_name = "FILE.svg")]
+    pub plot: Option<PathBuf>,
+    /// Overwrite an existing --plot file or --save preset
+    #[arg(long)]
+    pub force: bool,
+    /// Output format
+    #[arg(long, value_enum, default_value = "text")]
+    pub format: FitFormat,
+}
+
+/// What a fit is given.
+#[derive(Debug, Clone)]
+pub enum Source {
+    Cor(f64),
+    CorTable(PathBuf),
+    Trace(PathBuf),
+    /// (drop, rebound) heights from the command line
+    Drops(Vec<(f64, f64)>),
+    DropFile(PathBuf),
+}
+
+/// The data of a fit, loaded and labelled.
+pub struct Loaded {
+    /// "force-time trace", "COR table", "drop test", "COR".
+    pub kind: &'static str,
+    /// The file, or `None` for data given on the command line.
+    pub file: Option<String>,
+    /// The legend label: the file name, or what was typed.
+    pub label: String,
+    pub trace: Option<Trace>,
+    pub points: Vec<CorPoint>,
+    /// (drop, rebound) heights of drop tests.
+    pub drops: Vec<(f64, f64)>,
+    /// Line after the file's last, for errors about the whole file.
+    pub end_line: usize,
+}
+
+impl FitArgs {
+    /// The one kind of data given, or an error listing the choices.
+    pub fn source(&self) -> anyhow::Result<Source> {
+        let mut given = Vec::new();
+        if let Some(e) = self.cor {
+            given.push(Source::Cor(e));
+        }
+        if let Some(p) = &self.cor_table {
+            given.push(Source::CorTable(p.clone()));
+        }
+        if let Some(p) = &self.force_time {
+            given.push(Source::Trace(p.clone()));
+        }
+        if !self.drop_height.is_empty() {
+            if self.drop_height.len() != self.rebound_height.len() {
+                anyhow::bail!(
+                    "{} --drop-height but {} --rebound-height: give one rebound height per drop",
+                    self.drop_height.len(),
+                    self.rebound_height.len()
+                );
+            }
+            let pairs = self
+                .drop_height
+                .iter()
+                .copied()
+                .zip(self.rebound_height.iter().copied());
+            given.push(Source::Drops(pairs.collect()));
+        }
+        if let Some(p) = &self.drop_test {
+            given.push(Source::DropFile(p.clone()));
+        }
+        // air drag corrects drop heights only: silently ignored elsewhere (issue 28)
+        let drops = matches!(given.as_slice(), [Source::Drops(_) | Source::DropFile(_)]);
+        if self.drag_coefficient.is_some() && given.len() == 1 && !drops {
+            anyhow::bail!(
+                "--drag-coefficient corrects drop tests (--drop-height, --drop-test) only: a \
+                 COR, a COR table or a force-time trace has no flight to correct"
+            );
+        }
+        match given.len() {
+            1 => Ok(given.pop().unwrap_or(Source::Cor(f64::NAN))),
+            0 => anyhow::bail!(
+                "nothing to fit: give --cor E, --cor-table FILE, --force-time FILE, \
+                 --drop-height H --rebound-height R, or --drop-test FILE"
+            ),
+            _ => anyhow::bail!(
+                "give one kind of data to fit: --cor, --cor-table, --force-time, \
+                 --drop-height/--rebound-height and --drop-test exclude each other"
+            ),
+        }
+    }
+
+    /// `--free` as parameters; `None` when not given.
+    pub fn free_params(&self) -> anyhow::Result<Option<Vec<Param>>> {
+        let Some(list) = &self.free else {
+            return Ok(None);
+        };
+        Ok(Some(crate::analysis::fit::parse_free(list)?))
+    }
+}
+
+pub fn run(a: &FitArgs, out: &mut dyn Write) -> anyhow::Result<()> {
+    let source = a.source()?;
+    let free = a.free_params()?;
+    match (&source, free.as_deref()) {
+        (Source::Cor(e), None) | (Source::Cor(e), Some([Param::KR])) => single(a, *e, out),
+        _ => multi::run(a, &source, free, out),
+    }
+}
+
+/// One COR: K_r by a root find (the original `fit`, its output unchanged).
+fn single(a: &FitArgs, cor: f64, out: &mut dyn Write) -> anyhow::Result<()> {
+    multi::check_outputs(a)?;
+    let b = a.ball.resolve(a.v0)?;
+    let f = b.fit_cor(cor)?;
+    let p = &b.params;
+    let r = FitReport::new(&b, cor, &f);
+    match a.format {
+        FitFormat::Json => output::json(out, &r)?,
+        FitFormat::Text => {
+            writeln!(out, "{}, {} law", b.label(), r.ball.law)?;
+            writeln!(
+                out,
+                "fitting K_r at v0 = {} m/s, holding m, K_p, c (ζ = {}) and z_p",
+                given(r.v0, 6),
+                human(r.zeta, 4)
+            )?;
+            writeln!(out)?;
+            let rows = vec![
+                vec!["target COR".into(), given(r.target_cor, 6)],
+                vec!["fitted K_r".into(), format!("{} N/m", human(r.k_r, 5))],
+                vec!["fitted λ = K_r/K_p".into(), human(r.lambda, 5)],
+                vec!["model COR at the fit".into(), human(r.cor, 6)],
+                vec![
+                    "preset's K_r".into(),
+                    format!(
+                        "{} N/m (λ = {})",
+                        human(r.preset_k_r, 5),
+                        human(r.preset_lambda, 5)
+                    ),
+                ],
+            ];
+            table(out, "  ", &rows)?;
+        }
+    }
+    let fitted = crate::model::params::ImpactParams { k_r: f.k_r, ..*p };
+    multi::single_extras(a, &b, &fitted, cor, out)
+}

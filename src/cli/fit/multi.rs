@@ -1,0 +1,264 @@
+//! `bouncelab fit` on a COR table, a force–time trace or drop tests: several parameters with
+//! standard errors, 95 % intervals and correlations ([`crate::analysis::fit::fit`]); the
+//! report as text or JSON, and the `--plot` and `--save` that go with every fit.
+
+use super::{FitArgs, FitFormat, Loaded, Source};
+use crate::analysis::fit::{FitData, MultiFitError, Param, fit};
+use crate::api::Ball;
+use crate::cli::measured_file as files;
+use crate::cli::output;
+use crate::measured::{Air, CorPoint};
+use crate::model::params::ImpactParams;
+use crate::solver::{SolveOptions, simulate};
+use std::io::Write;
+
+/// Refuse outputs that cannot be written, before any work.
+pub fn check_outputs(a: &FitArgs) -> anyhow::Result<()> {
+    if let Some(p) = &a.plot {
+        crate::cli::figure::check_writable(&[p.as_path()], a.force)?;
+    }
+    if let Some(name) = &a.save {
+        super::save::check(name, a.force)?;
+    }
+    Ok(())
+}
+
+fn load(a: &FitArgs, source: &Source, ball: &Ball) -> anyhow::Result<Loaded> {
+    let air = a.drag_coefficient.map(|cd| Air {
+        density: a.air_density,
+        drag_coefficient: cd,
+    });
+    // the library checks the air (whatever the data) and the drop heights
+    ball.drops_to_cor(&[], air)?;
+    // a file's rows one at a time, so that a refused drop is named by its line
+    let from_drops = |drops: &[(f64, f64, usize)]| -> anyhow::Result<Vec<CorPoint>> {
+        if drops.iter().all(|d| d.2 == 0) {
+            let pairs: Vec<(f64, f64)> = drops.iter().map(|d| (d.0, d.1)).collect();
+            return Ok(ball.drops_to_cor(&pairs, air)?);
+        }
+        let file = match source {
+            Source::DropFile(p) => p.display().to_string(),
+            _ => String::new(),
+        };
+        let mut points = Vec::with_capacity(drops.len());
+        for d in drops {
+            let mut p = ball
+                .drops_to_cor(&[(d.0, d.1)], air)
+                .map_err(|e| anyhow::anyhow!("{file}:{}:1: {e}", d.2))?;
+            p[0].line = d.2;
+            points.append(&mut p);
+        }
+        Ok(points)
+    };
+    let name = |p: &std::path::Path| Some(p.display().to_string());
+    Ok(match source {
+        Source::Trace(p) => {
+            let t = files::trace(p)?;
+            let end_line = t.end_line;
+            Loaded {
+                kind: "force-time trace",
+                file: name(p),
+                label: files::label(p),
+                trace: Some(t),
+                points: vec![],
+                drops: vec![],
+                end_line,
+            }
+        }
+        Source::CorTable(p) => {
+            let t = files::cor_table(p)?;
+            Loaded {
+                kind: "COR table",
+                file: name(p),
+                label: files::label(p),
+                trace: None,
+                points: t.points,
+                drops: vec![],
+                end_line: t.end_line,
+            }
+        }
+        Source::DropFile(p) => {
+            let t = files::drop_test(p)?;
+            let drops = t.drops.iter().map(|d| (d.0, d.1)).collect();
+            Loaded {
+                kind: "drop test",
+                file: name(p),
+                label: files::label(p),
+                trace: None,
+                points: from_drops(&t.drops)?,
+                drops,
+                end_line: t.drops.last().map_or(1, |d| d.2 + 1),
+            }
+        }
+        Source::Drops(pairs) => {
+            let drops: Vec<(f64, f64, usize)> = pairs.iter().map(|&(h, r)| (h, r, 0)).collect();
+            Loaded {
+                kind: "drop test",
+                file: None,
+                label: "drop tests".into(),
+                trace: None,
+                points: from_drops(&drops)?,
+                drops: pairs.clone(),
+                end_line: 0,
+            }
+        }
+        Source::Cor(e) => {
+            if !(0.0..=1.0).contains(e) {
+                anyhow::bail!(
+                    "invalid cor: {} (a measured COR lies in [0, 1])",
+                    output::num(*e)
+                );
+            }
+            let pt = CorPoint::new(ball.params.v0, *e);
+            Loaded {
+                kind: "COR",
+                file: None,
+                label: format!("COR {}", output::num(*e)),
+                trace: None,
+                points: vec![pt],
+                drops: vec![],
+                end_line: 0,
+            }
+        }
+    })
+}
+
+/// A fit error for the user: where the data are at fault, the file and line.
+fn fit_error(e: MultiFitError, data: &Loaded, free: &[Param]) -> anyhow::Error {
+    let names: Vec<&str> = free.iter().map(|p| p.name()).collect();
+    let place = data
+        .file
+        .as_ref()
+        .map(|f| format!("{f}:{}:1: ", data.end_line))
+        .unwrap_or_default();
+    match e {
+        MultiFitError::Params(p) => p.into(),
+        e @ MultiFitError::Contradicts { .. } => match &data.file {
+            Some(f) => anyhow::anyhow!("{f}: {e}"),
+            None => anyhow::anyhow!("{e}"),
+        },
+        MultiFitError::NoPulse(m) => {
+            anyhow::anyhow!("{}:{m}", data.file.clone().unwrap_or_default())
+        }
+        MultiFitError::TooFew { points, parameters } => anyhow::anyhow!(
+            "{place}{points} data points, fewer than the {parameters} parameters fitted \
+             (--free {}{})",
+            names.join(","),
+            if data.trace.is_some() {
+                ", with the contact start and the baseline"
+            } else {
+                ""
+            }
+        ),
+        // no answer is not the input's fault: exit 1 (cli::exit_code)
+        MultiFitError::NoAnswer => anyhow::Error::new(e),
+        e => anyhow::anyhow!("{e}"),
+    }
+}
+
+pub fn run(
+    a: &FitArgs,
+    source: &Source,
+    free: Option<Vec<Param>>,
+    out: &mut dyn Write,
+) -> anyhow::Result<()> {
+    check_outputs(a)?;
+    let ball = a.ball.resolve(a.v0)?;
+    let data = load(a, source, &ball)?;
+    let free =
+        free.unwrap_or_else(|| Param::defaults(data.trace.is_some(), data.points.len(), ball.law));
+    let input = match &data.trace {
+        Some(t) => FitData::Trace(t),
+        None => FitData::Cor(&data.points),
+    };
+    let f = fit(&ball.params, ball.law, input, &free).map_err(|e| fit_error(e, &data, &free))?;
+    // the data's speed: the trace's (the ball's v0), else the first row's
+    let v0 = data.points.first().map_or(ball.params.v0, |p| p.v0);
+    let fitted = ImpactParams { v0, ..f.params };
+    let r = simulate(&fitted, ball.law, &SolveOptions::default())?;
+    let report = super::report::report(&ball, &data, &f, &fitted, &r);
+    match a.format {
+        FitFormat::Json => output::json(out, &report)?,
+        FitFormat::Text => super::report::text(out, &ball, &data, &f, &report)?,
+    }
+    refuse_unanswered(a, &f)?;
+    if let Some(p) = &a.plot {
+        let svg = super::plot::svg(&ball, &data, &f, &fitted)?;
+        crate::cli::figure::write_file(p, &svg, a.force)?;
+        note(a, out, &format!("plot: {}", p.display()))?;
+    }
+    if let Some(name) = &a.save {
+        let path = super::save::save(name, a, &ball, &data, &f, &fitted)?;
+        note(
+            a,
+            out,
+            &format!("saved preset '{name}' to {}", path.display()),
+        )?;
+    }
+    Ok(())
+}
+
+/// A fit that did not answer (not converged, or a parameter the data do not pin) is reported
+/// but neither plotted nor saved, and the command exits 1 (docs/fitting.md).
+fn refuse_unanswered(a: &FitArgs, f: &crate::analysis::fit::MultiFit) -> anyhow::Result<()> {
+    if f.identified {
+        return Ok(());
+    }
+    let mut why = Vec::new();
+    if !f.converged {
+        why.push(format!(
+            "it did not converge in {} iterations",
+            f.iterations
+        ));
+    }
+    if !f.not_pinned.is_empty() {
+        why.push(format!("the data do not pin {}", f.not_pinned.join(", ")));
+    }
+    let refused = match (&a.plot, &a.save) {
+        (None, None) => "",
+        (Some(_), None) => "; --plot not written",
+        (None, Some(_)) => "; --save not written",
+        (Some(_), Some(_)) => "; --plot and --save not written",
+    };
+    Err(MultiFitError::Unanswered(format!("{}{refused}", why.join(" and "))).into())
+}
+
+/// Outputs written besides the report: on stdout after a text report, on stderr after JSON
+/// (stdout stays one JSON document).
+fn note(a: &FitArgs, out: &mut dyn Write, line: &str) -> anyhow::Result<()> {
+    match a.format {
+        FitFormat::Text => writeln!(out, "{line}")?,
+        FitFormat::Json => eprintln!("bouncelab: {line}"),
+    }
+    Ok(())
+}
+
+/// `--plot` and `--save` after the single-COR fit.
+pub fn single_extras(
+    a: &FitArgs,
+    ball: &Ball,
+    fitted: &ImpactParams,
+    cor: f64,
+    out: &mut dyn Write,
+) -> anyhow::Result<()> {
+    if a.plot.is_none() && a.save.is_none() {
+        return Ok(());
+    }
+    let data = load(a, &Source::Cor(cor), ball)?;
+    let f = fit(fitted, ball.law, FitData::Cor(&data.points), &[Param::KR])
+        .map_err(|e| fit_error(e, &data, &[Param::KR]))?;
+    if let Some(p) = &a.plot {
+        let svg = super::plot::svg(ball, &data, &f, fitted)?;
+        crate::cli::figure::write_file(p, &svg, a.force)?;
+        note(a, out, &format!("plot: {}", p.display()))?;
+    }
+    if let Some(name) = &a.save {
+        let path = super::save::save(name, a, ball, &data, &f, fitted)?;
+        note(
+            a,
+            out,
+            &format!("saved preset '{name}' to {}", path.display()),
+        )?;
+    }
+    Ok(())
+}

@@ -1,0 +1,297 @@
+//! The report of a multi-parameter fit: one JSON object (keys in docs/fitting.md) or a text
+//! table with intervals, correlations and warnings.
+
+use super::Loaded;
+use crate::analysis::fit::{Estimate, MultiFit};
+use crate::api::Ball;
+use crate::cli::output::{human, table};
+use crate::model::params::ImpactParams;
+use serde::Serialize;
+use std::collections::BTreeMap;
+use std::io::Write;
+
+#[derive(Serialize)]
+pub struct Report<'a> {
+    preset: Option<&'a str>,
+    origin: &'a str,
+    parameters: &'a str,
+    law: &'static str,
+    data: &'static str,
+    file: Option<&'a str>,
+    free: Vec<&'static str>,
+    k_p: f64,
+    c: f64,
+    k_r: f64,
+    z_p: f64,
+    k_h: f64,
+    lambda: f64,
+    zeta: f64,
+    rms_residual: f64,
+    points: usize,
+    converged: bool,
+    iterations: usize,
+    condition_number: f64,
+    fitted: BTreeMap<&'static str, &'a Estimate>,
+    correlation: BTreeMap<&'static str, BTreeMap<&'static str, f64>>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    time_offset: Option<f64>,
+    #[serde(skip_serializing_if = "BTreeMap::is_empty")]
+    nuisance: BTreeMap<&'static str, &'a Estimate>,
+    v0: f64,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    target_cor: Option<f64>,
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    drops: Vec<DropRow>,
+    cor: f64,
+    max_force: f64,
+    contact_time: Option<f64>,
+    warnings: &'a [String],
+    /// Whether the fit answered: converged, every free parameter pinned by the data
+    /// (docs/fitting.md); `false` exits 1.
+    identified: bool,
+    /// The free parameters the data do not pin.
+    not_pinned: &'a [&'static str],
+    /// The free parameters that ran to the bound of their search.
+    on_bound: &'a [&'static str],
+    /// The test of systematic residuals, where one applies.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    lack_of_fit: Option<crate::analysis::fit::verdict::LackOfFit>,
+    /// As many data as fitted quantities: an exact solve, with no residual to estimate the
+    /// uncertainty from (`std_error` and `ci95` are null then). Present only when true.
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    exact: bool,
+}
+
+#[derive(Serialize)]
+struct DropRow {
+    drop_height: f64,
+    rebound_height: f64,
+    v0: f64,
+    cor: f64,
+}
+
+pub fn report<'a>(
+    ball: &'a Ball,
+    data: &'a Loaded,
+    f: &'a MultiFit,
+    p: &ImpactParams,
+    r: &crate::ImpactResponse,
+) -> Report<'a> {
+    let n = p.normalized();
+    let correlation = f
+        .names
+        .iter()
+        .enumerate()
+        .map(|(i, a)| {
+            (
+                *a,
+                f.names
+                    .iter()
+                    .enumerate()
+                    .map(|(j, b)| (*b, f.correlation[i][j]))
+                    .collect(),
+            )
+        })
+        .collect();
+    let nuisance = f
+        .time_offset
+        .iter()
+        .chain(&f.baseline)
+        .map(|e| (e.name, e))
+        .collect();
+    Report {
+        preset: ball.name.as_deref(),
+        origin: &ball.origin,
+        parameters: ball.source,
+        law: ball.law.name(),
+        data: data.kind,
+        file: data.file.as_deref(),
+        free: f.fitted.iter().map(|e| e.name).collect(),
+        k_p: p.k_p,
+        c: p.damping,
+        k_r: p.k_r,
+        z_p: p.z_p,
+        k_h: p.k_h,
+        lambda: n.lambda,
+        zeta: n.zeta,
+        rms_residual: f.rms_residual,
+        points: f.points,
+        converged: f.converged,
+        iterations: f.iterations,
+        condition_number: f.condition,
+        fitted: f.fitted.iter().map(|e| (e.name, e)).collect(),
+        correlation,
+        time_offset: f.time_offset.as_ref().map(|e| e.value),
+        nuisance,
+        v0: p.v0,
+        target_cor: (data.kind != "COR table" && data.trace.is_none()).then(|| data.points[0].cor),
+        drops: data
+            .drops
+            .iter()
+            .zip(&data.points)
+            .map(|(&(h, r), q)| DropRow {
+                drop_height: h,
+                rebound_height: r,
+                v0: q.v0,
+                cor: q.cor,
+            })
+            .collect(),
+        cor: r.cor,
+        max_force: r.max_force,
+        contact_time: r.contact_time,
+        warnings: &f.warnings,
+        identified: f.identified,
+        not_pinned: &f.not_pinned,
+        on_bound: &f.on_bound,
+        lack_of_fit: f.lack_of_fit,
+        exact: f.exact(),
+    }
+}
+
+/// "yes", or why the fit gave no answer (it then exits 1).
+fn answered(f: &MultiFit) -> String {
+    if f.identified {
+        return "yes".into();
+    }
+    let mut why = Vec::new();
+    if !f.converged {
+        why.push("not converged".to_string());
+    }
+    if !f.not_pinned.is_empty() {
+        why.push(format!(
+            "{} not pinned by the data",
+            f.not_pinned.join(", ")
+        ));
+    }
+    format!("NO ({})", why.join("; "))
+}
+
+/// "1 point", "7 points".
+pub fn points(n: usize) -> String {
+    format!("{n} point{}", if n == 1 { "" } else { "s" })
+}
+
+/// The text in place of an interval for an exact solve.
+pub const EXACT: &str = "exact: no residual to estimate it from";
+
+fn interval(e: &Estimate) -> String {
+    if e.ci95.iter().all(|v| v.is_finite()) {
+        format!("{} … {}", human(e.ci95[0], 4), human(e.ci95[1], 4))
+    } else {
+        "not pinned by the data".into()
+    }
+}
+
+pub fn text(
+    out: &mut dyn Write,
+    ball: &Ball,
+    data: &Loaded,
+    f: &MultiFit,
+    r: &Report,
+) -> anyhow::Result<()> {
+    writeln!(out, "{}, {} law", ball.label(), r.law)?;
+    let what = match &data.file {
+        Some(file) => format!("the {} {file}", data.kind),
+        None => format!("the {} given", data.kind),
+    };
+    let free: Vec<&str> = r.free.clone();
+    writeln!(
+        out,
+        "fitting {} to {what} ({}); the rest of the ball held",
+        free.join(", "),
+        points(f.points)
+    )?;
+    if data.trace.is_some() {
+        // the trace's speed is not in the data: say which one the fit assumed
+        writeln!(
+            out,
+            "impact speed v0 = {} m/s (--v0 to change it), mass {} g",
+            human(r.v0, 4),
+            human(ball.params.mass * 1e3, 4)
+        )?;
+    }
+    writeln!(out)?;
+    let mut rows = vec![vec![
+        "".into(),
+        "value".into(),
+        "std. error".into(),
+        "95 % interval".into(),
+        "unit".into(),
+    ]];
+    let exact = f.exact();
+    for e in f.fitted.iter().chain(&f.time_offset).chain(&f.baseline) {
+        let (error, interval) = if exact {
+            ("–".into(), EXACT.into())
+        } else {
+            (human(e.std_error, 3), interval(e))
+        };
+        rows.push(vec![
+            e.name.into(),
+            human(e.value, 5),
+            error,
+            interval,
+            e.unit.into(),
+        ]);
+    }
+    table(out, "  ", &rows)?;
+    writeln!(out)?;
+    writeln!(out, "  correlation")?;
+    let mut rows = vec![
+        std::iter::once(String::new())
+            .chain(f.names.iter().map(|s| s.to_string()))
+            .collect::<Vec<_>>(),
+    ];
+    for (i, a) in f.names.iter().enumerate() {
+        rows.push(
+            std::iter::once(a.to_string())
+                .chain(f.correlation[i].iter().map(|c| {
+                    if c.is_finite() {
+                        format!("{c:+.3}")
+                    } else {
+                        "–".into()
+                    }
+                }))
+                .collect(),
+        );
+    }
+    table(out, "  ", &rows)?;
+    writeln!(out)?;
+    let unit = if data.trace.is_some() { " N" } else { " (COR)" };
+    let rows = vec![
+        vec![
+            "λ = K_r/K_p, ζ".into(),
+            format!("{}, {}", human(r.lambda, 4), human(r.zeta, 4)),
+        ],
+        vec![
+            "rms residual".into(),
+            format!("{}{unit}", human(r.rms_residual, 4)),
+        ],
+        vec![
+            "iterations".into(),
+            format!(
+                "{}{}",
+                r.iterations,
+                if r.converged {
+                    ", converged"
+                } else {
+                    ", NOT converged"
+                }
+            ),
+        ],
+        vec!["answered".into(), answered(f)],
+        vec![
+            format!("model at v0 = {} m/s", human(r.v0, 4)),
+            format!(
+                "COR {}, peak force {} N, contact time {} ms",
+                human(r.cor, 4),
+                human(r.max_force, 4),
+                r.contact_time.map_or("–".into(), |t| human(t * 1e3, 4))
+            ),
+        ],
+    ];
+    table(out, "  ", &rows)?;
+    for w in &f.warnings {
+        writeln!(out, "warning: {w}")?;
+    }
+    Ok(())
+}

@@ -1,0 +1,203 @@
+//! `fit --save NAME`: the fitted ball as a user preset `<presets>/NAME.toml`, written
+//! atomically ([`crate::catalog::write`]) and never over an existing preset without
+//! `--force`. Its comments say what it was fitted to, when, and how well.
+
+use super::FitArgs;
+use super::Loaded;
+use crate::analysis::fit::MultiFit;
+use crate::api::Ball;
+use crate::catalog::{self, Catalog, Origin};
+use crate::model::params::ImpactParams;
+use crate::preset::{Adopted, Measured, ParamSource, Preset};
+use std::path::{Path, PathBuf};
+
+fn dir() -> anyhow::Result<PathBuf> {
+    catalog::user_presets_dir().ok_or_else(|| {
+        anyhow::anyhow!("--save: no folder for user presets (set XDG_CONFIG_HOME or HOME)")
+    })
+}
+
+/// Where `name` goes: the file of the user preset already called so, or `<dir>/name.toml`;
+/// and whether it exists.
+fn target(name: &str) -> anyhow::Result<(PathBuf, bool)> {
+    let dir = dir()?;
+    let cat = Catalog::load(Some(&dir), None)?;
+    if let Some(e) = cat.entries().iter().find(|e| e.preset.name == name)
+        && let Origin::File(f) = &e.origin
+    {
+        return Ok((f.clone(), true));
+    }
+    let path = dir.join(format!("{name}.toml"));
+    let exists = std::fs::symlink_metadata(&path).is_ok();
+    Ok((path, exists))
+}
+
+/// A name the catalog can take, and no preset replaced without `force` (checked before the
+/// fit runs, and again when writing).
+pub fn check(name: &str, force: bool) -> anyhow::Result<()> {
+    crate::tui::save::check_name(name)
+        .map_err(|e| anyhow::anyhow!("invalid --save name '{name}': {e}"))?;
+    let (path, exists) = target(name)?;
+    if exists && !force {
+        anyhow::bail!(
+            "preset '{name}' exists ({}): use --force to replace it",
+            path.display()
+        );
+    }
+    Ok(())
+}
+
+/// Now, UTC, as "2026-11-23 18:55 UTC" (days to a civil date: H. Hinnant's algorithm).
+fn now_utc() -> String {
+    let secs = std::time::SystemTime::now()
+        .duration_since(std::time::UNIX_EPOCH)
+        .map_or(0, |d| d.as_secs()) as i64;
+    let (days, rem) = (secs.div_euclid(86_400), secs.rem_euclid(86_400));
+    let z = days + 719_468;
+    let era = z.div_euclid(146_097);
+    let doe = z - era * 146_097;
+    let yoe = (doe - doe / 1460 + doe / 36_524 - doe / 146_096) / 365;
+    let doy = doe - (365 * yoe + yoe / 4 - yoe / 100);
+    let mp = (5 * doy + 2) / 153;
+    let day = doy - (153 * mp + 2) / 5 + 1;
+    let month = if mp < 10 { mp + 3 } else { mp - 9 };
+    let year = yoe + era * 400 + (month <= 2) as i64;
+    format!(
+        "{year:04}-{month:02}-{day:02} {:02}:{:02} UTC",
+        rem / 3600,
+        rem % 3600 / 60
+    )
+}
+
+fn header(ball: &Ball, data: &Loaded, f: &MultiFit, when: &str) -> Vec<String> {
+    let short = |x: f64| crate::text::short(x, 4);
+    let what = match &data.file {
+        Some(file) => format!("the {} {file}", data.kind),
+        None => format!("the {} given on the command line", data.kind),
+    };
+    let mut h = vec![
+        format!(
+            "Fitted by `bouncelab fit` on {when} to {what} ({}), {} law,",
+            super::report::points(f.points),
+            ball.law
+        ),
+        format!(
+            "starting from the preset '{}' ({} parameters); what was not fitted is that preset's.",
+            ball.name.as_deref().unwrap_or("ball"),
+            ball.source
+        ),
+    ];
+    let exact = f.exact();
+    for e in f.fitted.iter().filter(|_| exact) {
+        let (name, unit) = (e.name, e.unit);
+        let value = short(e.value);
+        h.push(format!(
+            "{name} = {value} {unit} ({})",
+            super::report::EXACT
+        ));
+    }
+    for e in f.fitted.iter().filter(|_| !exact) {
+        h.push(format!(
+            "{} = {} {} ± {} (95 %: {} … {})",
+            e.name,
+            short(e.value),
+            e.unit,
+            short(e.std_error),
+            short(e.ci95[0]),
+            short(e.ci95[1])
+        ));
+    }
+    h.push(format!(
+        "rms residual {}{}, {} iterations{}.",
+        short(f.rms_residual),
+        if data.trace.is_some() { " N" } else { "" },
+        f.iterations,
+        if f.converged { "" } else { ", not converged" }
+    ));
+    h.extend(f.warnings.iter().map(|w| format!("warning: {w}")));
+    h
+}
+
+/// The fitted ball as a preset: the base preset's ball and material data, the fit as the
+/// adopted set (K_h then follows Eq. 16 from K_p and z_p), `[measured] v0` the data's speed.
+fn preset(
+    base: &Preset,
+    name: &str,
+    ball: &Ball,
+    data: &Loaded,
+    p: &ImpactParams,
+    when: &str,
+) -> Preset {
+    let single = (data.trace.is_none() && data.points.len() == 1).then(|| data.points[0].cor);
+    Preset {
+        name: name.into(),
+        description: format!("fitted to {} ({}) on {when}", data.label, data.kind),
+        law: ball.law,
+        parameters: ParamSource::Adopted,
+        measured: Measured {
+            mass: base.measured.mass,
+            radius: base.measured.radius,
+            v0: p.v0,
+            cor: single,
+            max_force: None,
+            contact_time: None,
+        },
+        material: base.material.clone(),
+        adopted: Adopted {
+            damping: Some(p.damping),
+            z_p: Some(p.z_p),
+            k_p: Some(p.k_p),
+            k_r: p.k_r,
+        },
+    }
+}
+
+/// Write the preset; returns its path.
+pub fn save(
+    name: &str,
+    a: &FitArgs,
+    ball: &Ball,
+    data: &Loaded,
+    f: &MultiFit,
+    p: &ImpactParams,
+) -> anyhow::Result<PathBuf> {
+    let base = crate::cli::ball::select(
+        a.ball.choice.preset.as_deref(),
+        a.ball.choice.config.as_deref(),
+    )?
+    .preset;
+    let when = now_utc();
+    let preset = preset(&base, name, ball, data, p, &when);
+    let text = preset.to_toml(&header(ball, data, f, &when));
+    Preset::parse(&text, name)
+        .map_err(|e| anyhow::anyhow!("the fitted ball is not a valid preset: {e}"))?;
+    let (path, exists) = target(name)?;
+    if exists && !a.force {
+        anyhow::bail!(
+            "preset '{name}' exists ({}): use --force to replace it",
+            path.display()
+        );
+    }
+    let folder = path.parent().unwrap_or(Path::new("."));
+    std::fs::create_dir_all(folder).map_err(|e| {
+        anyhow::Error::new(e).context(format!("cannot create {}", folder.display()))
+    })?;
+    let written = if exists {
+        catalog::write::replace(&path, &text)
+    } else {
+        catalog::write::create_new(&path, &text)
+    };
+    written
+        .map_err(|e| anyhow::Error::new(e).context(format!("cannot write {}", path.display())))?;
+    Ok(path)
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn utc_date_format() {
+        let s = super::now_utc();
+        assert_eq!(s.len(), "2026-11-23 18:55 UTC".len(), "{s}");
+        assert!(s.starts_with("20") && s.ends_with(" UTC"), "{s}");
+    }
+}

@@ -1,0 +1,52 @@
+//! Reading a number typed by a user (the command line, the explorer's fields): what
+//! `str::parse::<f64>` does, with three differences that keep the outputs honest
+//! (tests/cli_guarantees.rs, `numbers_are_read_as_typed`):
+//!
+//! - `-0` is read as `0`: a negative zero would otherwise reach the CSV and JSON as `-0`;
+//! - a literal that is not zero but rounds to zero (`1e-400`) is refused, as one that rounds to
+//!   a subnormal (`1e-320`) is refused by the range checks: neither is silently replaced;
+//! - `inf`, `-inf` and `nan` are numbers (the range checks then refuse them, naming the
+//!   field); the arguments that use this parser also set `allow_hyphen_values`, so clap does
+//!   not take `-inf` for an option.
+
+/// A value parser for clap: `#[arg(value_parser = number, allow_hyphen_values = true)]`.
+pub fn number(text: &str) -> Result<f64, String> {
+    let t = text.trim();
+    let x: f64 = t
+        .parse()
+        .map_err(|_| format!("'{}' is not a number", crate::sanitize::line(text)))?;
+    if x == 0.0 && !x.is_nan() {
+        if has_nonzero_digit(t) {
+            return Err(format!(
+                "{t} is too small: it rounds to 0 (numbers below about 1e-308 cannot be held)"
+            ));
+        }
+        return Ok(0.0);
+    }
+    Ok(x)
+}
+
+/// Whether the mantissa of a decimal literal (before any exponent) has a digit other than 0.
+fn has_nonzero_digit(t: &str) -> bool {
+    t.chars()
+        .take_while(|c| !matches!(c, 'e' | 'E'))
+        .any(|c| c.is_ascii_digit() && c != '0')
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn zeros_underflow_and_infinities() {
+        assert_eq!(number("-0").unwrap().to_bits(), 0f64.to_bits());
+        assert_eq!(number("-0.0e5").unwrap().to_bits(), 0f64.to_bits());
+        assert_eq!(number("0").unwrap(), 0.0);
+        assert!(number("1e-400").unwrap_err().contains("rounds to 0"));
+        assert!(number("-5e-999").unwrap_err().contains("rounds to 0"));
+        assert_eq!(number("1e-320").unwrap(), 1e-320);
+        assert_eq!(number("-inf").unwrap(), f64::NEG_INFINITY);
+        assert!(number("nan").unwrap().is_nan());
+        assert!(number("abc").is_err());
+    }
+}

@@ -1,0 +1,333 @@
+//! What the user can ask for ([`Action`]) and the input modes; the key → action mapping is in
+//! `action/keys.rs` ([`from_key`]).
+
+use super::param::{Dir, Param};
+use crate::tui::views::sweeps::speed::{SpeedCurve, SpeedRequest};
+use std::path::PathBuf;
+
+/// Everything the user can ask for. [`super::app::App::update`] is the only place they act.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Action {
+    Quit,
+    /// Step `param` (and select it); `coarse` forces the coarse step, otherwise the current
+    /// step size applies.
+    Step {
+        param: Param,
+        dir: Dir,
+        coarse: bool,
+    },
+    /// Step the selected parameter.
+    StepSelected {
+        dir: Dir,
+        coarse: bool,
+    },
+    SelectNext,
+    SelectPrev,
+    /// Choose the coarse (true) or fine step for `l`/`z`/`v` and the arrows.
+    SetCoarse(bool),
+    /// Open the value entry for the selected parameter.
+    OpenInput,
+    InputChar(char),
+    InputBackspace,
+    /// Ctrl-U in the entry: clear it.
+    InputClear,
+    /// Delete in the entry: the character under the cursor goes.
+    InputDelete,
+    /// ← → Home End in the entry.
+    InputCursor(CursorMove),
+    InputSubmit,
+    InputCancel,
+    /// Load preset number `i` (0-based: superball, golf, baseball, then the start preset when
+    /// it is none of these).
+    LoadPreset(usize),
+    CycleLaw,
+    Reset,
+    Pin,
+    Unpin,
+    Undo,
+    NextView,
+    PrevView,
+    ToggleHelp,
+    CloseHelp,
+    /// Scroll the help.
+    HelpScroll(Scroll),
+    /// The terminal is now `width` × `height` cells.
+    Resize(u16, u16),
+    /// A COR-vs-speed sweep finished (from the background worker).
+    SpeedReady(SpeedRequest, Result<SpeedCurve, String>),
+    /// The models view's calibrations finished (from their background worker).
+    ModelsReady(
+        crate::tui::views::models::state::ModelsRequest,
+        Result<crate::figure::explorer::models::ModelsData, String>,
+    ),
+    /// Export the current view's charts (SVG + CSV each): `update` prepares an
+    /// [`super::export::ExportRequest`], the event loop writes it.
+    Export,
+    /// The event loop wrote these files for the pending export.
+    Exported {
+        files: Vec<PathBuf>,
+    },
+    /// The pending export could not be written: why, in one line.
+    ExportFailed {
+        msg: String,
+    },
+    /// Save the current setting as a user preset: opens the name prompt. On Enter `update`
+    /// prepares a [`super::save::SaveRequest`], the event loop writes it.
+    SavePreset,
+    /// The event loop wrote the pending save to `path` (`replaced`: over an existing file the
+    /// user agreed to overwrite).
+    Saved {
+        path: PathBuf,
+        replaced: bool,
+    },
+    /// The pending save was not written because `path` exists (or holds a preset of that
+    /// name, `holds`): ask before overwriting it.
+    SaveExists {
+        path: PathBuf,
+        holds: Option<String>,
+    },
+    /// The pending save could not be written: why, in one line.
+    SaveFailed {
+        msg: String,
+    },
+    /// `d`: open the drop view, or leave it for the impact view.
+    ToggleDrop,
+    /// Space in the drop view: pause or resume the animation.
+    DropPause,
+    /// `b` in the drop view: replay the drop from the release.
+    DropReplay,
+    /// The event loop's animation clock: `dt` seconds of wall time passed.
+    Tick(f64),
+    /// `y`: show the `bouncelab run …` line that reproduces the screen.
+    ShowCommand,
+    /// `g`: open the preset picker (the loop lists the presets).
+    OpenPicker,
+    /// The presets the loop found, and why the user presets could not be read.
+    PresetsListed(Vec<super::picker::PickEntry>, Option<String>),
+    /// Move the picker's highlight.
+    PickerMove(Scroll),
+    /// Enter in the picker: load the highlighted preset.
+    PickerChoose,
+    /// `y` to "overwrite …? y/n".
+    ConfirmYes,
+    /// `n` or Esc to "overwrite …? y/n".
+    ConfirmNo,
+    /// `o`: open the entry for a measured file's path (force–time trace, COR table or drop
+    /// test). On Enter `update` asks the loop to read it ([`super::effect::Effect::LoadMeasured`]).
+    OpenMeasured,
+    /// The loop read and parsed the measured file at `path`.
+    MeasuredLoaded {
+        path: PathBuf,
+        data: crate::measured::Data,
+    },
+    /// The measured file could not be read: `FILE:LINE:COLUMN: why`, one line.
+    MeasuredFailed {
+        msg: String,
+    },
+    /// `O`: put the measured data (and its fit) away.
+    ClearMeasured,
+    /// `f`: fit the current ball to the measured data on the fit worker.
+    Fit,
+    /// A fit finished (from the fit worker): the id of its request and the outcome.
+    FitReady(
+        u64,
+        Result<crate::tui::views::fit::state::FitOutcome, String>,
+    ),
+    /// `F`: apply the finished fit to the ball, as one undoable change.
+    ApplyFit,
+    /// `x`: put the crosshair on the view's first chart; with it on, on the next chart.
+    Crosshair,
+    /// Tab with the crosshair on: the next chart (past the last: off).
+    CrosshairNext,
+    /// Esc with the crosshair on: take it away.
+    CrosshairOff,
+    /// Arrows with the crosshair on: `dx` steps right, `dy` steps up (Shift: ten at once).
+    CrosshairMove {
+        dx: i32,
+        dy: i32,
+    },
+    /// `m`: open the physical-inputs form.
+    OpenForm,
+    /// ↑ / ↓ in the form: the previous / next field.
+    FormMove(Scroll),
+    /// Enter or `=` in the form: type a value for the highlighted field.
+    FormEdit,
+    /// Map view, arrows: move the cursor, and the ball with it, by `lambda` cells up and
+    /// `zeta` cells right.
+    MapCursor {
+        lambda: i32,
+        zeta: i32,
+    },
+    /// Map view, `n`: show the next quantity (COR, peak force, contact time).
+    MapQuantity,
+    /// Map view, `t`: open the targets entry.
+    MapTargets,
+    /// One more pass of map number `generation`, from the background worker.
+    MapPass {
+        generation: u64,
+        map: Box<crate::map::Map>,
+    },
+}
+
+/// How the help scrolls.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Scroll {
+    Up,
+    Down,
+    PageUp,
+    PageDown,
+    Home,
+    End,
+}
+
+/// What the keyboard is talking to.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Mode {
+    Normal,
+    Help,
+    /// Typing a value or a name: printable keys are text.
+    Input,
+    /// A yes/no question: only `y`, `n` and Esc answer, other keys do nothing.
+    Confirm,
+    /// The terminal is below the minimum size: only quitting acts.
+    TooSmall,
+    /// The map view: the arrows move the cursor, `n` and `t` act; other keys as in `Normal`.
+    Map,
+    /// The preset picker: arrows move, Enter loads, Esc closes.
+    Picker,
+    /// The crosshair is on a chart: arrows move it, Tab and `x` go to the next chart, Esc
+    /// takes it away; other keys as in `Normal`.
+    Crosshair,
+    /// The physical-inputs form: arrows select a field, Enter or `=` types its value, Esc
+    /// closes.
+    Form,
+}
+
+mod keys;
+pub use keys::{MAP_LEAP, from_event, from_key};
+
+/// Where ← → Home End move the entry's cursor.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum CursorMove {
+    Left,
+    Right,
+    Home,
+    End,
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use ratatui::crossterm::event::{Event, KeyCode, KeyEvent, KeyEventKind, KeyModifiers};
+
+    fn key(code: KeyCode) -> KeyEvent {
+        KeyEvent::new(code, KeyModifiers::NONE)
+    }
+
+    #[test]
+    fn parameter_keys() {
+        assert_eq!(
+            from_key(key(KeyCode::Char('l')), Mode::Normal),
+            Some(Action::Step {
+                param: Param::Lambda,
+                dir: Dir::Up,
+                coarse: false
+            })
+        );
+        let shift_l = KeyEvent::new(KeyCode::Char('L'), KeyModifiers::SHIFT);
+        assert_eq!(
+            from_key(shift_l, Mode::Normal),
+            Some(Action::Step {
+                param: Param::Lambda,
+                dir: Dir::Down,
+                coarse: false
+            })
+        );
+        let shift_up = KeyEvent::new(KeyCode::Up, KeyModifiers::SHIFT);
+        assert_eq!(
+            from_key(shift_up, Mode::Normal),
+            Some(Action::StepSelected {
+                dir: Dir::Up,
+                coarse: true
+            })
+        );
+        assert_eq!(
+            from_key(key(KeyCode::Char('3')), Mode::Normal),
+            Some(Action::LoadPreset(2))
+        );
+        assert_eq!(
+            from_key(key(KeyCode::Char('e')), Mode::Normal),
+            Some(Action::Export)
+        );
+        assert_eq!(
+            from_key(key(KeyCode::Char('e')), Mode::Input),
+            Some(Action::InputChar('e'))
+        );
+    }
+
+    #[test]
+    fn quitting() {
+        let ctrl_c = KeyEvent::new(KeyCode::Char('c'), KeyModifiers::CONTROL);
+        for mode in [
+            Mode::Normal,
+            Mode::Help,
+            Mode::Input,
+            Mode::Confirm,
+            Mode::TooSmall,
+        ] {
+            assert_eq!(from_key(ctrl_c, mode), Some(Action::Quit));
+        }
+        assert_eq!(
+            from_key(key(KeyCode::Esc), Mode::Normal),
+            Some(Action::Quit)
+        );
+        assert_eq!(
+            from_key(key(KeyCode::Esc), Mode::Help),
+            Some(Action::CloseHelp)
+        );
+        assert_eq!(
+            from_key(key(KeyCode::Esc), Mode::Input),
+            Some(Action::InputCancel)
+        );
+        assert_eq!(
+            from_key(key(KeyCode::Char('q')), Mode::Input),
+            Some(Action::InputChar('q'))
+        );
+        assert_eq!(
+            from_key(key(KeyCode::Char('c')), Mode::Normal),
+            Some(Action::CycleLaw)
+        );
+    }
+
+    #[test]
+    fn save_and_the_question() {
+        assert_eq!(
+            from_key(key(KeyCode::Char('s')), Mode::Normal),
+            Some(Action::SavePreset)
+        );
+        assert_eq!(
+            from_key(key(KeyCode::Char('s')), Mode::Input),
+            Some(Action::InputChar('s'))
+        );
+        let answer = |c| from_key(key(c), Mode::Confirm);
+        assert_eq!(answer(KeyCode::Char('y')), Some(Action::ConfirmYes));
+        assert_eq!(answer(KeyCode::Char('Y')), Some(Action::ConfirmYes));
+        assert_eq!(answer(KeyCode::Char('n')), Some(Action::ConfirmNo));
+        assert_eq!(answer(KeyCode::Esc), Some(Action::ConfirmNo));
+        // a stray key does not answer, and q does not quit past the question
+        for c in [KeyCode::Enter, KeyCode::Char('q'), KeyCode::Char('l')] {
+            assert_eq!(answer(c), None, "{c:?}");
+        }
+    }
+
+    #[test]
+    fn releases_are_ignored() {
+        let mut k = key(KeyCode::Char('l'));
+        k.kind = KeyEventKind::Release;
+        assert_eq!(from_event(&Event::Key(k), Mode::Normal), None);
+        assert_eq!(
+            from_event(&Event::Resize(10, 10), Mode::Normal),
+            Some(Action::Resize(10, 10))
+        );
+    }
+}

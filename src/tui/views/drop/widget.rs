@@ -1,0 +1,243 @@
+//! The drop view (`d`, src/tui/views/drop/state.rs): height against time in braille with the
+//! standard's window as a band on the first rebound, the ball on a ratatui Canvas above the
+//! plate, and a readout with the bounces and the verdict. Reads the state only, and draws with
+//! ratatui's own `Chart` and `Canvas`, so it stands apart from the explorer's chart module.
+
+use crate::drop::standards::Test;
+use crate::text::sig;
+use crate::tui::theme::Theme;
+use crate::tui::views::drop::state::DropView;
+use ratatui::buffer::Buffer;
+use ratatui::layout::{Constraint, Layout, Rect};
+use ratatui::style::{Color, Style};
+use ratatui::symbols::Marker;
+use ratatui::text::{Line, Span};
+use ratatui::widgets::canvas::{Canvas, Circle, Line as CanvasLine};
+use ratatui::widgets::{Axis, Block, Chart, Dataset, GraphType, Paragraph, Widget, Wrap};
+
+/// Width of the ball's column and of the readout.
+const BALL_WIDTH: u16 = 18;
+const READOUT_WIDTH: u16 = 38;
+
+/// The drop view in its area (between the header and the status line).
+#[derive(Debug, Clone, Copy)]
+pub struct DropPanel<'a> {
+    pub drop: &'a DropView,
+    /// The ball's name, for the readout's title.
+    pub ball: &'a str,
+    pub theme: Theme,
+}
+
+impl Widget for DropPanel<'_> {
+    fn render(self, area: Rect, buf: &mut Buffer) {
+        render(self, area, buf);
+    }
+}
+
+fn render(p: DropPanel, area: Rect, buf: &mut Buffer) {
+    let (d, theme) = (p.drop, p.theme);
+    let wide = area.width >= 90;
+    let (left, readout) = if wide {
+        let [l, r] = Layout::horizontal([Constraint::Fill(1), Constraint::Length(READOUT_WIDTH)])
+            .areas(area);
+        (l, r)
+    } else {
+        let [l, r] = Layout::vertical([Constraint::Fill(1), Constraint::Length(7)]).areas(area);
+        (l, r)
+    };
+    let [chart, ball] =
+        Layout::horizontal([Constraint::Fill(1), Constraint::Length(BALL_WIDTH)]).areas(left);
+    render_chart(d, theme, chart, buf);
+    render_ball(d, theme, ball, buf);
+    render_readout(p.ball, d, theme, readout, buf);
+}
+
+/// What the height–time chart draws, in m and s.
+struct Curves {
+    all: Vec<(f64, f64)>,
+    flown: Vec<(f64, f64)>,
+    now: Vec<(f64, f64)>,
+    band: Option<[Vec<(f64, f64)>; 2]>,
+    t_hi: f64,
+    h_hi: f64,
+}
+
+fn curves(d: &DropView) -> Curves {
+    let mut c = Curves {
+        all: Vec::new(),
+        flown: Vec::new(),
+        now: Vec::new(),
+        band: None,
+        t_hi: 1e-3,
+        h_hi: 1e-3,
+    };
+    if let Some(run) = d.sequence() {
+        c.t_hi = run.duration().max(1e-3);
+        c.h_hi = run.setup.height * 1.05;
+        c.all = run
+            .trajectory(c.t_hi / 400.0)
+            .iter()
+            .map(|s| (s.t, s.height))
+            .collect();
+        c.flown = c.all.iter().copied().filter(|p| p.0 <= d.t).collect();
+        c.flown.push((d.t, d.height_now()));
+        c.now = vec![(d.t, d.height_now())];
+    }
+    if let Some((lo, hi)) = d.band() {
+        c.band = Some([vec![(0.0, lo), (c.t_hi, lo)], vec![(0.0, hi), (c.t_hi, hi)]]);
+        c.h_hi = c.h_hi.max(hi * 1.05);
+    }
+    c
+}
+
+/// Three labels along an axis: 0, the middle and the end.
+fn labels(hi: f64) -> Vec<String> {
+    vec!["0".into(), sig(hi / 2.0, 3), sig(hi, 3)]
+}
+
+/// Height (m) against time (s) on ratatui's braille `Chart`: the whole sequence dimmed, the
+/// part already flown bright, the ball now as a dot, the standard's window as two lines.
+fn render_chart(d: &DropView, theme: Theme, area: Rect, buf: &mut Buffer) {
+    let c = curves(d);
+    let live = Style::default().fg(theme.current());
+    let line = |name: Option<String>, data, style| {
+        let set = Dataset::default()
+            .marker(Marker::Braille)
+            .graph_type(GraphType::Line)
+            .style(style)
+            .data(data);
+        match name {
+            Some(n) => set.name(n),
+            None => set,
+        }
+    };
+    let mut sets = vec![
+        line(None, &c.all, theme.ghost()),
+        line(Some("bottom of the ball".into()), &c.flown, live),
+        Dataset::default()
+            .marker(Marker::Dot)
+            .graph_type(GraphType::Scatter)
+            .style(live)
+            .data(&c.now),
+    ];
+    if let (Some([lo, hi]), Some((s, _))) = (&c.band, d.verdict) {
+        sets.push(line(
+            Some(format!("{} window", s.name)),
+            hi,
+            theme.measured(),
+        ));
+        sets.push(line(None, lo, theme.measured()));
+    }
+    Chart::new(sets)
+        .hidden_legend_constraints((Constraint::Ratio(1, 2), Constraint::Ratio(1, 2)))
+        .block(Block::bordered().title(Span::styled("Drop · height [m] vs t [s]", theme.title())))
+        .x_axis(
+            Axis::default()
+                .style(theme.axis())
+                .bounds([0.0, c.t_hi])
+                .labels(labels(c.t_hi)),
+        )
+        .y_axis(
+            Axis::default()
+                .style(theme.axis())
+                .bounds([0.0, c.h_hi])
+                .labels(labels(c.h_hi)),
+        )
+        .render(area, buf);
+}
+
+/// The ball (to scale in height: its bottom at the current height) above the plate.
+fn render_ball(d: &DropView, theme: Theme, area: Rect, buf: &mut Buffer) {
+    let top = d.sequence().map_or(1.0, |r| r.setup.height) + 2.0 * d.radius;
+    let h = d.height_now();
+    // the drawn radius: the true one, or at least a few cells so the ball stays visible
+    let inner = Block::bordered().inner(area);
+    let rows = f64::from(inner.height.max(1));
+    let cell = top / rows;
+    let r = d.radius.max(0.8 * cell);
+    // braille dots are about square (a cell is 2 dots wide, 4 tall, and twice as tall as
+    // wide): equal metres per dot across and up keeps the ball round
+    let half_width = top * f64::from(inner.width.max(1)) / (4.0 * rows);
+    let color = theme.current();
+    let plate = theme.c(Color::Gray);
+    Canvas::default()
+        .block(Block::bordered().title(Span::styled("ball", theme.title())))
+        .marker(Marker::Braille)
+        .x_bounds([-half_width, half_width])
+        .y_bounds([0.0, top])
+        .paint(move |ctx| {
+            ctx.draw(&CanvasLine {
+                x1: -half_width,
+                y1: 0.0,
+                x2: half_width,
+                y2: 0.0,
+                color: plate,
+            });
+            ctx.draw(&Circle {
+                x: 0.0,
+                y: h + r,
+                radius: r,
+                color,
+            });
+        })
+        .render(area, buf);
+}
+
+fn render_readout(ball: &str, d: &DropView, theme: Theme, area: Rect, buf: &mut Buffer) {
+    let mut lines = vec![Line::styled(format!("{ball} · drop test"), theme.title())];
+    match (&d.run, d.sequence()) {
+        (Err(e), _) => lines.push(Line::styled(e.clone(), theme.error())),
+        (_, Some(run)) => {
+            lines.push(Line::raw(format!(
+                "H {} m → v_in {} m/s",
+                sig(run.setup.height, 4),
+                sig(run.bounces[0].v_in, 4)
+            )));
+            lines.push(Line::styled("drag ½ρC_dAv², C_d 0.47", theme.dim()));
+            lines.push(Line::raw(""));
+            lines.push(Line::styled(" #  rebound m    COR", theme.dim()));
+            for (i, b) in run.bounces.iter().enumerate().take(6) {
+                lines.push(Line::raw(format!(
+                    "{:>2}  {:<10}  {}",
+                    i + 1,
+                    sig(b.rebound_height, 4),
+                    sig(b.cor, 4)
+                )));
+            }
+        }
+        _ => {}
+    }
+    lines.push(Line::raw(""));
+    match d.verdict {
+        Some((s, v)) => {
+            let unit = match s.test {
+                Test::Drop { .. } => " m",
+                Test::Cor { .. } => "",
+            };
+            lines.push(Line::raw(format!("standard {}", s.name)));
+            lines.push(Line::raw(format!("measured {}{unit}", sig(v.measured, 4))));
+            let (word, style) = if v.pass {
+                ("PASS", theme.info())
+            } else {
+                ("FAIL", theme.error())
+            };
+            lines.push(Line::from(vec![
+                Span::styled(word, style),
+                Span::raw(format!(" margin {:+.3}{unit}", v.margin)),
+            ]));
+            lines.push(Line::styled("(at the standard's own height)", theme.dim()));
+        }
+        None => lines.push(Line::styled("no standard for this ball", theme.dim())),
+    }
+    lines.push(Line::raw(""));
+    let keys = if d.motion {
+        "space pause · b replay · d back"
+    } else {
+        "reduced motion · d back"
+    };
+    lines.push(Line::styled(keys, theme.key()));
+    Paragraph::new(lines)
+        .wrap(Wrap { trim: true })
+        .block(Block::bordered())
+        .render(area, buf);
+}

@@ -1,0 +1,339 @@
+//! The map view's panel: the heat map of one quantity over (λ, ζ) in half blocks (`▀`, the
+//! upper cell as foreground, the lower as background: two λ rows per character; without
+//! colour a shade ramp, one row per character), λ labels on the left, ζ labels below, the
+//! colour bar with its numbers on the right, the marks (cursor, iso-COR line, feasible
+//! outline, other presets by their number) and the line of values under the cursor.
+
+use crate::figure::ticks::{Ticks, fitted};
+use crate::map::{Axis, Map};
+use crate::text::sig_trim;
+use crate::tui::theme::Theme;
+use crate::tui::views::map::cells::{
+    CURSOR, ISO, OUTLINE, Raster, cell_of_slot, colour, contrast, dimmed, rgb, shade, slot_of_cell,
+};
+use crate::tui::views::map::state::{Geometry, MapView, cell_of, geometry, unit};
+use ratatui::buffer::Buffer;
+use ratatui::layout::Rect;
+use ratatui::style::{Modifier, Style};
+use ratatui::text::Line;
+use ratatui::widgets::{Block, Paragraph, Widget, Wrap};
+
+/// What the panel shows.
+pub struct MapPanel<'a> {
+    pub view: &'a MapView,
+    /// The current ball's (λ, ζ): the cursor.
+    pub point: (f64, f64),
+    /// The other presets: (the key that loads it, λ, ζ).
+    pub presets: Vec<(usize, f64, f64)>,
+    /// "superball at v0 = 3.12 m/s, linear law".
+    pub about: String,
+    pub theme: Theme,
+}
+
+impl Widget for &MapPanel<'_> {
+    fn render(self, area: Rect, buf: &mut Buffer) {
+        let (label, _) = unit(self.view.quantity);
+        let full = format!(" map of {label} over (λ ↑, ζ →) · {} ", self.about);
+        let title = if full.chars().count() + 2 <= usize::from(area.width) {
+            full
+        } else {
+            format!(" map of {label} ")
+        };
+        let block = Block::bordered()
+            .border_style(self.theme.dim())
+            .title(Line::styled(title, self.theme.title()));
+        let inner = block.inner(area);
+        block.render(area, buf);
+        let note = |text: String, buf: &mut Buffer| {
+            Paragraph::new(text)
+                .wrap(Wrap { trim: true })
+                .render(inner, buf)
+        };
+        let Some(g) = geometry(area) else {
+            return note("enlarge the terminal for the map".into(), buf);
+        };
+        match &self.view.map {
+            None => note("computing the map…".into(), buf),
+            Some(Err(e)) => note(format!("no map: {e}"), buf),
+            Some(Ok(map)) => self.draw(map, &g, buf),
+        }
+    }
+}
+
+/// The span of the values shown, as the colour bar's ticks (as the SVG heat map's bar).
+fn bar_ticks(values: &[f64], rows: u16) -> Ticks {
+    let (lo, hi) = values
+        .iter()
+        .filter(|x| x.is_finite())
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &x| {
+            (a.min(x), b.max(x))
+        });
+    let n = usize::from(rows / 3).clamp(2, 6);
+    if lo.is_finite() && hi > lo {
+        fitted(lo, hi, n)
+    } else if lo.is_finite() {
+        fitted(
+            lo - 0.5 * lo.abs().max(1e-9),
+            hi + 0.5 * hi.abs().max(1e-9),
+            n,
+        )
+    } else {
+        fitted(0.0, 1.0, n)
+    }
+}
+
+impl MapPanel<'_> {
+    fn draw(&self, map: &Map, g: &Geometry, buf: &mut Buffer) {
+        let (_, scale) = unit(self.view.quantity);
+        let r = Raster::new(map, self.view.quantity, scale, self.view.targets.as_ref());
+        let bar = bar_ticks(&r.values, g.plot.height);
+        self.cells(&r, &bar, g.plot, buf);
+        self.marks(&r, g.plot, buf);
+        self.labels(map, g, buf);
+        self.bar(&bar, g.bar, buf);
+        self.info(map, &r, g.info, buf);
+    }
+
+    /// Half-block rows: 2 per character with colour, 1 without.
+    fn per_char(&self) -> usize {
+        if self.theme.color { 2 } else { 1 }
+    }
+
+    /// The map cell a half row `y` (0 at the top) and a column `x` of the plot show.
+    fn cell_at(&self, r: &Raster, plot: Rect, x: usize, y: usize) -> (usize, usize) {
+        let h = usize::from(plot.height) * self.per_char();
+        let i = cell_of_slot(h - 1 - y, h, r.rows());
+        (i, cell_of_slot(x, usize::from(plot.width), r.cols()))
+    }
+
+    /// The screen position (column, row) of cell (i, j).
+    fn pos_of(&self, r: &Raster, plot: Rect, (i, j): (usize, usize)) -> (u16, u16) {
+        let h = usize::from(plot.height) * self.per_char();
+        let y = h - 1 - slot_of_cell(i, r.rows(), h);
+        let x = slot_of_cell(j, r.cols(), usize::from(plot.width));
+        (plot.x + x as u16, plot.y + (y / self.per_char()) as u16)
+    }
+
+    fn cells(&self, r: &Raster, bar: &Ticks, plot: Rect, buf: &mut Buffer) {
+        let m = r.cols();
+        for row in 0..plot.height {
+            for col in 0..plot.width {
+                let (x, y) = (usize::from(col), usize::from(row) * self.per_char());
+                let cell = &mut buf[(plot.x + col, plot.y + row)];
+                let (i, j) = self.cell_at(r, plot, x, y);
+                if self.theme.color {
+                    let paint = |(i, j): (usize, usize)| {
+                        let c = colour(r.at(i, j), bar.lo, bar.hi);
+                        rgb(if r.feasible[i * m + j] { c } else { dimmed(c) })
+                    };
+                    let below = self.cell_at(r, plot, x, y + 1);
+                    cell.set_symbol("▀")
+                        .set_style(Style::default().fg(paint((i, j))).bg(paint(below)));
+                } else {
+                    let dim = if r.feasible[i * m + j] {
+                        Style::default()
+                    } else {
+                        Style::default().add_modifier(Modifier::DIM)
+                    };
+                    cell.set_symbol(shade(r.at(i, j), bar.lo, bar.hi))
+                        .set_style(dim);
+                }
+            }
+        }
+    }
+
+    /// A mark over the heat map at cell (i, j): black or white on the cell's colour.
+    fn mark(&self, r: &Raster, plot: Rect, at: (usize, usize), symbol: &str, buf: &mut Buffer) {
+        let (x, y) = self.pos_of(r, plot, at);
+        let cell = &mut buf[(x, y)];
+        let style = if self.theme.color {
+            let bg = cell.bg;
+            let rgb = match bg {
+                ratatui::style::Color::Rgb(r, g, b) => (r, g, b),
+                _ => (0, 0, 0),
+            };
+            Style::default().fg(contrast(rgb)).bg(bg)
+        } else {
+            Style::default()
+        };
+        cell.set_symbol(symbol)
+            .set_style(style.add_modifier(Modifier::BOLD));
+    }
+
+    fn marks(&self, r: &Raster, plot: Rect, buf: &mut Buffer) {
+        if self.view.targets.is_some() {
+            for at in r.outline() {
+                self.mark(r, plot, at, OUTLINE, buf);
+            }
+        }
+        let level = match &self.view.sensitivity {
+            Some(Ok(s)) => Some(s.cor),
+            _ => None,
+        };
+        if let Some(level) = level.filter(|e| e.is_finite()) {
+            for at in r.iso_cor(level) {
+                self.mark(r, plot, at, ISO, buf);
+            }
+        }
+        let map = r.map;
+        let inside = |l: f64, z: f64| {
+            let (a, b) = (&map.spec.lambda, &map.spec.zeta);
+            l >= a.from && l <= a.to && z >= b.from && z <= b.to
+        };
+        for &(key, l, z) in &self.presets {
+            if inside(l, z) {
+                let digit = char::from_digit(key as u32 % 10, 10).unwrap_or('?');
+                self.mark(r, plot, cell_of(map, l, z), &digit.to_string(), buf);
+            }
+        }
+        let (l, z) = self.point;
+        self.mark(r, plot, cell_of(map, l, z), CURSOR, buf);
+        if !self.theme.color {
+            let (x, y) = self.pos_of(r, plot, cell_of(map, l, z));
+            buf[(x, y)].modifier.insert(Modifier::REVERSED);
+        }
+    }
+}
+
+/// Tick values of a log axis: 1, 2, 5 × 10^k (or 1 × 10^k alone, or 1, 3 × 10^k) inside it,
+/// the richest set whose neighbours lie `room` slots apart on `slots`.
+fn log_ticks(a: &Axis, slots: usize, room: usize) -> Vec<(usize, f64)> {
+    let sets: [&[f64]; 3] = [&[1.0, 2.0, 5.0], &[1.0, 3.0], &[1.0]];
+    let (k0, k1) = (a.from.log10().floor() as i32, a.to.log10().ceil() as i32);
+    for set in sets {
+        let mut out = Vec::new();
+        for k in k0..=k1 {
+            for &m in set {
+                let v = m * 10f64.powi(k);
+                if v >= a.from * (1.0 - 1e-9) && v <= a.to * (1.0 + 1e-9) {
+                    let slot = (a.index_of(v) / (a.n.max(2) - 1) as f64 * (slots - 1) as f64)
+                        .round() as usize;
+                    out.push((slot, v));
+                }
+            }
+        }
+        if out.windows(2).all(|w| w[1].0 >= w[0].0 + room) || set.len() == 1 {
+            return out;
+        }
+    }
+    Vec::new()
+}
+
+impl MapPanel<'_> {
+    fn labels(&self, map: &Map, g: &Geometry, buf: &mut Buffer) {
+        let axis = self.theme.axis();
+        let rows = usize::from(g.plot.height);
+        // λ: the top row is the largest value
+        for (slot, v) in log_ticks(&map.spec.lambda, rows, 2) {
+            let y = g.plot.bottom() - 1 - slot as u16;
+            let text = format!(
+                "{:>w$}",
+                sig_trim(v, 2),
+                w = usize::from(g.gutter.width) - 1
+            );
+            buf.set_stringn(g.gutter.x, y, text, usize::from(g.gutter.width) - 1, axis);
+        }
+        let cols = usize::from(g.plot.width);
+        let mut free = 0u16;
+        for (slot, v) in log_ticks(&map.spec.zeta, cols, 7) {
+            let text = sig_trim(v, 2);
+            let w = text.chars().count() as u16;
+            let x = (g.plot.x + slot as u16).saturating_sub(w / 2).max(free);
+            if x + w <= g.plot.right() + 2 {
+                buf.set_stringn(x, g.x_labels.y, &text, usize::from(w), axis);
+                free = x + w + 1;
+            }
+        }
+        buf.set_string(g.plot.right() + 3, g.x_labels.y, "ζ", self.theme.title());
+        buf.set_string(g.gutter.x, g.gutter.y, "λ", self.theme.title());
+        // where the cursor is, on both axes
+        let r = Raster {
+            map,
+            values: Vec::new(),
+            feasible: Vec::new(),
+        };
+        let (x, y) = self.pos_of(&r, g.plot, cell_of(map, self.point.0, self.point.1));
+        buf.set_string(g.gutter.right() - 1, y, "▶", self.theme.warning());
+        buf.set_string(x, g.x_labels.y, "▲", self.theme.warning());
+    }
+
+    /// The colour bar (top: the high end) and its numbers.
+    fn bar(&self, t: &Ticks, area: Rect, buf: &mut Buffer) {
+        let h = f64::from(area.height) * self.per_char() as f64;
+        let value = |y: f64| t.hi - (y + 0.5) / h * (t.hi - t.lo);
+        for row in 0..area.height {
+            let y = f64::from(row) * self.per_char() as f64;
+            for dx in 1..3 {
+                let cell = &mut buf[(area.x + dx, area.y + row)];
+                if self.theme.color {
+                    let (a, b) = (
+                        colour(value(y), t.lo, t.hi),
+                        colour(value(y + 1.0), t.lo, t.hi),
+                    );
+                    cell.set_symbol("▀")
+                        .set_style(Style::default().fg(rgb(a)).bg(rgb(b)));
+                } else {
+                    cell.set_symbol(shade(value(y), t.lo, t.hi));
+                }
+            }
+        }
+        let rows = f64::from(area.height);
+        for &m in &t.major {
+            let row = ((t.hi - m) / (t.hi - t.lo) * rows)
+                .floor()
+                .clamp(0.0, rows - 1.0) as u16;
+            let w = usize::from(area.width.saturating_sub(4));
+            buf.set_stringn(area.x + 4, area.y + row, t.label(m), w, self.theme.axis());
+        }
+    }
+}
+
+impl MapPanel<'_> {
+    /// The values under the cursor, the sensitivities, the targets and the map's progress.
+    fn info(&self, map: &Map, r: &Raster, area: Rect, buf: &mut Buffer) {
+        let (i, j) = cell_of(map, self.point.0, self.point.1);
+        let (label, _) = unit(self.view.quantity);
+        let v = r.at(i, j);
+        let approx = if map.cell(i, j).is_some() { "" } else { "≈" };
+        let value = if v.is_nan() {
+            "none".to_string()
+        } else {
+            format!("{approx}{}", sig_trim(v, 4))
+        };
+        let meets = match self.view.targets {
+            Some(_) if r.feasible[i * r.cols() + j] => " · meets the targets",
+            Some(_) => " · misses the targets",
+            None => "",
+        };
+        // the cell's own (λ, ζ): the ball's once the arrows have moved it onto the grid
+        let first = format!(
+            " cell λ {} ζ {} · {label} {value}{meets}",
+            sig_trim(map.lambdas[i], 4),
+            sig_trim(map.zetas[j], 4)
+        );
+        let sens = match &self.view.sensitivity {
+            Some(Ok(s)) => format!(
+                " ∂e/∂ln λ {:+.3}  ∂e/∂ln ζ {:+.3}",
+                s.d_ln_lambda, s.d_ln_zeta
+            ),
+            Some(Err(e)) => format!(" no sensitivities: {e}"),
+            None => String::new(),
+        };
+        let targets = match &self.view.targets {
+            Some(t) => format!(" · where {t}"),
+            None => " · t: targets".to_string(),
+        };
+        let progress = if map.is_complete() {
+            format!(" · {}×{} cells", map.zetas.len(), map.lambdas.len())
+        } else {
+            " · refining…".to_string()
+        };
+        let second = format!("{sens}{targets}{progress}");
+        let lines = if area.height >= 2 {
+            vec![Line::raw(first), Line::styled(second, self.theme.dim())]
+        } else {
+            vec![Line::raw(format!("{first} ·{second}"))]
+        };
+        Paragraph::new(lines).render(area, buf);
+    }
+}

@@ -1,0 +1,142 @@
+//! The models view's table, beside its charts: for each peer model and each rule published
+//! for it, the damping the rule gives for the target COR and the COR that damping really
+//! produces at v0 (with the miss, Δe, when there is room). The letters in front of the models
+//! are the ones on the curves. Damping in the units of `bouncelab peers`.
+
+use crate::figure::Tone;
+use crate::figure::explorer::models::{ModelsData, letter, short_name, short_rule};
+use crate::peers::PeerModel;
+use crate::peers::calibrate::Calibrated;
+use crate::peers::rules::Rule;
+use crate::text::sig;
+use crate::tui::theme::Theme;
+use ratatui::buffer::Buffer;
+use ratatui::layout::Rect;
+use ratatui::style::Style;
+use ratatui::text::{Line, Span};
+use ratatui::widgets::{Block, Paragraph, Widget, Wrap};
+
+/// From this inner width the table shows the miss Δe = e − target too.
+const WIDTH_FOR_MISS: usize = 34;
+/// A rule whose COR misses the target by more than this is shown highlighted.
+const MISS_SHOWN: f64 = 0.005;
+
+/// What the table shows.
+#[derive(Debug, Clone, Copy)]
+pub struct ModelsTable<'a> {
+    pub data: Option<&'a ModelsData>,
+    /// Why the calibration failed, if it did.
+    pub error: Option<&'a str>,
+    /// λ, ζ and v0 of the ball, as the readout would show them.
+    pub setting: (f64, f64, f64),
+    pub theme: Theme,
+}
+
+/// The damping's name and unit, as `bouncelab peers` reports it.
+fn damping_unit(model: PeerModel) -> &'static str {
+    match model {
+        PeerModel::KelvinVoigt | PeerModel::KelvinVoigtNoTension => "η kg/s",
+        PeerModel::Tsuji => "η kg/(s·m^¼)",
+        PeerModel::HuntCrossley => "χ",
+    }
+}
+
+impl ModelsTable<'_> {
+    /// One rule's row: its damping and the COR it gives, with the miss when `miss`;
+    /// highlighted when an approximate rule misses by more than [`MISS_SHOWN`].
+    fn rule_line(&self, c: &Calibrated, target: f64, miss: bool) -> Line<'static> {
+        let e = c.response.cor;
+        let mut text = format!(
+            "  {:<8} {:>9} {:>6}",
+            short_rule(c.rule),
+            sig(c.damping, 4),
+            format!("{e:.4}")
+        );
+        if miss {
+            // rounded first, so that a miss below 0.0005 prints +0.000, not -0.000
+            let delta = ((e - target) * 1e3).round() / 1e3 + 0.0;
+            text.push_str(&format!(" {delta:>+6.3}"));
+        }
+        let off = c.rule != Rule::Exact && (e - target).abs() > MISS_SHOWN;
+        let style = if off {
+            self.theme.warning()
+        } else {
+            Style::default()
+        };
+        Line::styled(text, style)
+    }
+
+    fn lines(&self, inner_w: usize) -> Vec<Line<'static>> {
+        let (lambda, zeta, v0) = self.setting;
+        let mut lines = vec![Line::raw(format!(
+            "λ {} ζ {} v0 {} m/s",
+            sig(lambda, 4),
+            sig(zeta, 4),
+            sig(v0, 3)
+        ))];
+        let Some(d) = self.data else {
+            let text = match self.error {
+                Some(e) => format!("no calibration: {e}"),
+                None => "calibrating…".into(),
+            };
+            let style = if self.error.is_some() {
+                self.theme.error()
+            } else {
+                self.theme.dim()
+            };
+            lines.push(Line::styled(text, style));
+            return lines;
+        };
+        lines.push(Line::raw(format!(
+            "target e {} = C–Y at v0",
+            sig(d.target, 4)
+        )));
+        let miss = inner_w >= WIDTH_FOR_MISS;
+        let head = format!(
+            "  {:<8} {:>9} {:>6}{}",
+            "rule",
+            "damping",
+            "e",
+            if miss { "     Δe" } else { "" }
+        );
+        lines.push(Line::styled(head, self.theme.dim()));
+        for (k, model) in PeerModel::ALL.into_iter().enumerate() {
+            lines.push(Line::from(vec![
+                Span::styled(letter(Some(model)), self.theme.tone(Tone::Reference(k))),
+                Span::raw(format!(
+                    " {}, {}",
+                    short_name(Some(model)),
+                    damping_unit(model)
+                )),
+            ]));
+            for c in d.rows.iter().filter(|c| c.model == model) {
+                lines.push(self.rule_line(c, d.target, miss));
+            }
+        }
+        lines.push(Line::styled(
+            "C C–Y  h H–C α fixed  ◆ target",
+            self.theme.dim(),
+        ));
+        // notes, where there is room (a short panel cuts them off)
+        lines.push(Line::raw(""));
+        if miss {
+            lines.push(Line::raw("Δe: the rule's COR − the target"));
+        }
+        lines.push(Line::raw("for a DEM code's input file:"));
+        lines.push(Line::raw("bouncelab peers --export CODE"));
+        lines
+    }
+}
+
+impl Widget for &ModelsTable<'_> {
+    fn render(self, area: Rect, buf: &mut Buffer) {
+        let block = Block::bordered()
+            .border_style(self.theme.dim())
+            .title(Line::styled(" rule → COR obtained ", self.theme.title()));
+        let inner_w = usize::from(block.inner(area).width);
+        Paragraph::new(self.lines(inner_w))
+            .block(block)
+            .wrap(Wrap { trim: false })
+            .render(area, buf);
+    }
+}
