@@ -151,7 +151,7 @@ impl App {
         // a fit that did not answer is applied only when asked twice (issue 27: `F` applied a
         // fit the pane itself marked "not converged")
         if !outcome.identified && !pane.armed && standing != Some(Standing::Applied) {
-            if let Some(p) = &mut self.fit {
+            if let Some(p) = &mut self.fit.pane {
                 p.armed = true;
             }
             let mut why = Vec::new();
