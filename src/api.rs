@@ -60,10 +60,12 @@ pub struct Ball {
     pub description: String,
 }
 
+mod collide;
 mod entry;
 mod error;
 mod fit;
 mod report;
+pub use collide::CollisionReport;
 pub use entry::Overrides;
 pub use error::BallError;
 pub use report::{BallHeader, Energy, FitReport, ImpactReport, MeasuredAt};
