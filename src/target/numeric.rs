@@ -124,6 +124,8 @@ struct Watcher<'a> {
     hit: Option<(f64, usize, f64, X)>,
     last: (f64, X),
     s_max: f64,
+    /// Where s̄ peaks within a step (τ), and the step's start (τ, x) to integrate to it from.
+    peaks: Vec<(f64, f64, X)>,
 }
 
 impl Solout<f64, X> for Watcher<'_> {
@@ -145,7 +147,7 @@ impl Solout<f64, X> for Watcher<'_> {
         let (da, db) = (sdot(x_prev), sdot(x));
         if da > 0.0 && db <= 0.0 {
             let tp = brent(|tt| sdot(&at(tt)), t_prev, t, da, db, 1e-15 * t.abs());
-            self.s_max = self.s_max.max(at(tp)[3]);
+            self.peaks.push((tp, t_prev, *x_prev));
         }
         self.s_max = self.s_max.max(x[3]);
         self.last = (t, *x);
@@ -225,9 +227,17 @@ pub(super) fn solve(
             hit: None,
             last: (t, x),
             s_max,
+            peaks: Vec::new(),
         };
         let done = integrate(&chain, t, x, t_max, &mut w);
         s_max = w.s_max;
+        // each peak of the deflection, integrated to rather than read off the dense output
+        for (tp, t0, x0) in std::mem::take(&mut w.peaks) {
+            let mut end = End(t0, x0);
+            if integrate(&chain, t0, x0, tp, &mut end) {
+                s_max = s_max.max(end.1[3]);
+            }
+        }
         let Some((tc, which, tp, xp)) = w.hit else {
             if !done {
                 return Err((Unresolved::Steps, phases));

@@ -293,7 +293,7 @@ fn the_exact_and_the_integrated_compliant_solvers_agree() {
             let t = e.contact_time.unwrap();
             assert!(rel(n.contact_time.unwrap(), t) <= 1e-9, "{what}");
             let (sn, se) = (n.max_target_deflection, e.max_target_deflection);
-            assert!(rel(sn, se) <= 1e-8, "{what}: {sn} {se}");
+            assert!(rel(sn, se) <= 1e-9, "{what}: {sn} {se}");
             assert!(e.cor > 0.0 && e.cor < 1.0, "{what}");
         }
     }
