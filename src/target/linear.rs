@@ -2,7 +2,9 @@
 //! (docs/targets.md §4). The state u = (ᾱ, ᾱ', ȳ, s̄) of the reduced ball obeys the linear
 //! system u' = A u of docs/targets.md §2:
 //!
-//!     ᾱ'' = −F̄,   ȳ' = 2ζ(F̄ − λȳ),   s̄' = 2ζ_s(F̄ − λ_s s̄),   F̄ = z̄ = ᾱ − ȳ − s̄,
+//! ```text
+//! ᾱ'' = −F̄,   ȳ' = 2ζ(F̄ − λȳ),   s̄' = 2ζ_s(F̄ − λ_s s̄),   F̄ = z̄ = ᾱ − ȳ − s̄,
+//! ```
 //!
 //! and, for a surface without damping (c_s = 0, ζ_s = ∞), the surface a spring in series with the
 //! contact: s̄ = F̄/λ_s, F̄ = k_e (ᾱ − ȳ) with k_e = λ_s/(1 + λ_s). A locked dashpot (c = ∞,

@@ -18,8 +18,9 @@
 //! let bat = Target { mass: 0.8, speed: 30.0, ..Target::wall() };
 //! let r = ball.collide(&bat)?;
 //! // batted-ball speed from the apparent COR (docs/targets.md §3)
-//! let bbs = r.apparent_cor * 40.0 + (1.0 + r.apparent_cor) * 30.0;
-//! assert!((r.ball_speed_out - bbs).abs() < 1e-9);
+//! let c = &r.collision;
+//! let bbs = c.apparent_cor * 40.0 + (1.0 + c.apparent_cor) * 30.0;
+//! assert!((c.ball_speed_out - bbs).abs() < 1e-9);
 //! # Ok::<(), bouncelab::BallError>(())
 //! ```
 

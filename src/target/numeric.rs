@@ -2,7 +2,9 @@
 //! (docs/targets.md §4). State x = (z̄, ᾱ', ȳ, s̄), z̄ carried directly as in the adaptive
 //! solver (docs/model.md §8):
 //!
-//!     ᾱ'' = −F̄(z̄),   ȳ' = 2ζ(F̄ − λȳ),   s̄' = 2ζ_s(F̄ − λ_s s̄),   z̄' = ᾱ' − ȳ' − s̄'.
+//! ```text
+//! ᾱ'' = −F̄(z̄),   ȳ' = 2ζ(F̄ − λȳ),   s̄' = 2ζ_s(F̄ − λ_s s̄),   z̄' = ᾱ' − ȳ' − s̄'.
+//! ```
 //!
 //! A surface without damping (c_s = 0) is a spring in series with the contact, s̄ = F̄/λ_s at
 //! all times; differentiating it, s̄' = k z̄'/λ_s with k = dF̄/dz̄ on the branch in force, so that
