@@ -135,6 +135,11 @@ pub(super) fn solve(n: &Normalized, s: &Surface) -> Result<Outcome, (Unresolved,
             (s_grid, k_s) = (d, k);
         }
         if f_prev > 0.0 && f <= 0.0 {
+            // a ball with no energy left to leave with has come to rest: F̄ falls through 0
+            // in the rounding of the creep, not at a separation
+            if sys.energy2(&u).sqrt() < REST_COR {
+                break None;
+            }
             break Some(separation(
                 &sys,
                 (k - 1) as f64 * h,

@@ -364,3 +364,31 @@ fn the_bat_test_is_the_pair_cor_at_136_mph_on_the_bat_at_rest() {
     assert_eq!(run.pass, run.bbcor <= 0.5);
     assert_eq!(run.verdict, if run.pass { "PASS" } else { "FAIL" });
 }
+
+/// Maxwell's ball (λ = 0) past ζ = 1 sinks into its dashpot on any target: no rebound, said by
+/// both compliant solvers after a bounded time, as today's solver says it at the wall.
+#[test]
+fn a_ball_that_stays_is_no_rebound_on_a_compliant_target_too() {
+    let p = Ball::normalized(0.0, 2.0, None, ContactLaw::Linear)
+        .unwrap()
+        .params;
+    let target = Target {
+        mass: 3.0,
+        speed: 0.0,
+        stiffness: 2.0,
+        damping: 0.0,
+    };
+    for method in [None, Some(Method::Numeric)] {
+        let c = collide(&p, ContactLaw::Linear, &target, 1.0, method).unwrap();
+        assert!(!c.rebound && c.cor == 0.0, "{method:?}: {c:?}");
+        assert_eq!(c.contact_time, None);
+        // no rebound: the two move on together at the centre of mass's speed, m v/(m + M)
+        // toward the target (each speed out is counted the other way round)
+        assert!((c.ball_speed_out - c.target_speed_out).abs() < 1e-15);
+        assert!(
+            (c.ball_speed_out + 1.0 / 4.0).abs() < 1e-12,
+            "{}",
+            c.ball_speed_out
+        );
+    }
+}
