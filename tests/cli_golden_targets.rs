@@ -67,6 +67,10 @@ const CASES: &[(&str, &[&str])] = &[
         ],
     ),
     (
+        "peers-text-pair",
+        &["peers", "--preset", "golf", "--pair", "golf"],
+    ),
+    (
         "bad-collide-never-meet",
         &["collide", "--target-mass", "1", "--target-speed", "-5"],
     ),

@@ -167,3 +167,40 @@ fn bad_targets_are_one_line_and_exit_2() {
         &["target_speed"],
     );
 }
+
+/// `peers --pair PRESET` calibrates for the pair: the reduced ball of `collide
+/// --target-preset` (m_eff, R_eff, the partner at rest), and its COR as the target.
+#[test]
+fn peers_pair_calibrates_for_the_pair() {
+    let p = json(&[
+        "peers", "--preset", "golf", "--pair", "tennis", "--format", "json",
+    ]);
+    let c = json(&[
+        "collide",
+        "--preset",
+        "golf",
+        "--target-preset",
+        "tennis",
+        "--format",
+        "json",
+    ]);
+    assert_eq!(f(&p, "mass"), f(&c, "effective_mass"));
+    assert_eq!(f(&p, "radius"), f(&c, "effective_radius"));
+    assert_eq!(p["pair"]["preset"], "tennis");
+    assert_eq!(p["target_source"], "christoforou-yigit");
+    let (e_pair, e_model) = (f(&p, "target_cor"), f(&c, "cor"));
+    assert!((e_pair - e_model).abs() <= 1e-12, "{e_pair} {e_model}");
+    // every exact row reaches it
+    for row in p["models"].as_array().unwrap() {
+        if row["rule"] == "exact" {
+            assert!((f(row, "cor") - e_pair).abs() < 1e-9, "{row}");
+        }
+    }
+    // without --pair, no pair key: the output is as before
+    let alone = json(&["peers", "--preset", "golf", "--format", "json"]);
+    assert!(alone.get("pair").is_none());
+    bad(
+        &["peers", "--preset", "golf", "--pair", "cricket"],
+        &["unknown preset 'cricket'"],
+    );
+}
