@@ -101,76 +101,79 @@ fn text(
     r: &CollisionReport,
     other: Option<&str>,
 ) -> std::io::Result<()> {
-    let (t, c) = (&r.target, &r.collision);
     let what = other.map_or("a target".to_string(), |o| format!("{o} (a rigid body)"));
     writeln!(out, "{} against {what}", ball.label())?;
-    writeln!(out, "  law {}, method {}", r.law, c.method.name())?;
+    writeln!(out, "  law {}, method {}", r.law, r.collision.method.name())?;
     writeln!(out)?;
-    let ms = |v: f64| format!("{} m/s", human(v, 4));
+    table(out, "  ", &setup_rows(r))?;
+    writeln!(out)?;
+    table(out, "  ", &result_rows(r))
+}
+
+fn ms(v: f64) -> String {
+    format!("{} m/s", human(v, 4))
+}
+
+fn mm(x: f64) -> String {
+    format!("{} mm", human(x * 1e3, 4))
+}
+
+/// The ball, the target, the pair (and the DEM pair with a target preset).
+fn setup_rows(r: &CollisionReport) -> Vec<Vec<String>> {
+    let (t, c) = (&r.target, &r.collision);
+    let ball = format!(
+        "m {}, {} toward the target",
+        mass(r.ball_mass),
+        ms(r.ball_speed)
+    );
+    let target = format!(
+        "M {}, {} toward the ball, {}",
+        mass(t.mass),
+        ms(t.speed),
+        surface(t)
+    );
+    let pair = format!(
+        "m* {}, closing speed {}",
+        mass(c.reduced_mass),
+        ms(c.closing_speed)
+    );
     let mut rows = vec![
-        vec![
-            "ball".into(),
-            format!(
-                "m {}, {} toward the target",
-                mass(r.ball_mass),
-                ms(r.ball_speed)
-            ),
-        ],
-        vec![
-            "target".into(),
-            format!(
-                "M {}, {} toward the ball, {}",
-                mass(t.mass),
-                ms(t.speed),
-                surface(t)
-            ),
-        ],
-        vec![
-            "pair".into(),
-            format!(
-                "m* {}, closing speed {}",
-                mass(c.reduced_mass),
-                ms(c.closing_speed)
-            ),
-        ],
+        vec!["ball".into(), ball],
+        vec!["target".into(), target],
+        vec!["pair".into(), pair],
     ];
     if let (Some(m), Some(radius)) = (r.effective_mass, r.effective_radius) {
-        let line = format!("m_eff {}, R_eff {} mm", mass(m), human(radius * 1e3, 4));
+        let line = format!("m_eff {}, R_eff {}", mass(m), mm(radius));
         rows.push(vec!["DEM pair".into(), line]);
     }
-    table(out, "  ", &rows)?;
-    writeln!(out)?;
+    rows
+}
+
+/// e, e_A, the speeds out, F_m, t_f, the indentations (and the surface's deflection).
+fn result_rows(r: &CollisionReport) -> Vec<Vec<String>> {
+    let c = &r.collision;
     let contact = c.contact_time.map_or("– (no rebound)".into(), |t| {
         format!("{} ms", human(t * 1e3, 4))
     });
+    let row = |k: &str, v: String| vec![k.to_string(), v];
     let mut rows = vec![
-        vec!["COR of the pair e".into(), human(c.cor, 4)],
-        vec!["apparent COR e_A".into(), human(c.apparent_cor, 4)],
-        vec![
-            "ball speed out".into(),
+        row("COR of the pair e", human(c.cor, 4)),
+        row("apparent COR e_A", human(c.apparent_cor, 4)),
+        row(
+            "ball speed out",
             format!("{} (away from the target)", ms(c.ball_speed_out)),
-        ],
-        vec![
-            "target speed out".into(),
+        ),
+        row(
+            "target speed out",
             format!("{} (in its original direction)", ms(c.target_speed_out)),
-        ],
-        vec![
-            "peak force F_m".into(),
-            format!("{} N", human(c.max_force, 4)),
-        ],
-        vec!["contact time t_f".into(), contact],
-        vec![
-            "peak indentation z_m".into(),
-            format!("{} mm", human(c.max_indentation * 1e3, 4)),
-        ],
-        vec![
-            "permanent indentation z_f".into(),
-            format!("{} mm", human(c.permanent_indentation * 1e3, 4)),
-        ],
+        ),
+        row("peak force F_m", format!("{} N", human(c.max_force, 4))),
+        row("contact time t_f", contact),
+        row("peak indentation z_m", mm(c.max_indentation)),
+        row("permanent indentation z_f", mm(c.permanent_indentation)),
     ];
-    if !t.is_rigid() {
-        let s = format!("{} mm", human(c.max_target_deflection * 1e3, 4));
-        rows.push(vec!["peak surface deflection".into(), s]);
+    if !r.target.is_rigid() {
+        rows.push(row("peak surface deflection", mm(c.max_target_deflection)));
     }
-    table(out, "  ", &rows)
+    rows
 }

@@ -115,56 +115,22 @@ pub(super) fn solve(n: &Normalized, s: &Surface) -> Result<Outcome, (Unresolved,
         0.0
     };
     let h = (0.01 * (1.0 + soft + 1.0 / s.lambda_s).sqrt()).max(t_max / MAX_STEPS as f64);
-    let step = (sys.a * h).exp();
-    let mut u = Vector4::new(0.0, 1.0, 0.0, 0.0);
-    let (mut f_prev, mut f_grid, mut k_peak) = (0.0, 0.0, 0);
-    let (mut s_grid, mut k_s) = (0.0, 0);
-    let mut k = 0;
-    let end = loop {
-        k += 1;
-        if k as f64 * h > t_max {
-            break None;
-        }
-        u = step * u;
-        let f = (sys.force * u)[0];
-        if f > f_grid {
-            (f_grid, k_peak) = (f, k);
-        }
-        let d = sys.deflection(&u);
-        if d > s_grid {
-            (s_grid, k_s) = (d, k);
-        }
-        if f_prev > 0.0 && f <= 0.0 {
-            // a ball with no energy left to leave with has come to rest: F̄ falls through 0
-            // in the rounding of the creep, not at a separation
-            if sys.energy2(&u).sqrt() < REST_COR {
-                break None;
-            }
-            break Some(separation(
-                &sys,
-                (k - 1) as f64 * h,
-                k as f64 * h,
-                f_prev,
-                f,
-            ));
-        }
-        f_prev = f;
-    };
-    let f_max = sys.peak(sys.force, k_peak as f64 * h, h, f_grid);
+    let w = walk(&sys, h, t_max);
+    let f_max = sys.peak(sys.force, w.k_peak as f64 * h, h, w.f_grid);
     let s_max = if sys.spring_only {
         f_max / s.lambda_s
     } else {
         sys.peak(
             RowVector4::new(0.0, 0.0, 0.0, 1.0),
-            k_s as f64 * h,
+            w.k_s as f64 * h,
             h,
-            s_grid,
+            w.s_grid,
         )
     };
-    let (rebound, tau_end, u_end) = match end {
+    let (rebound, tau_end, u_end) = match w.end {
         Some(tau) => (true, tau, sys.at(tau)),
-        None if sys.energy2(&u).sqrt() < REST_COR => (false, t_max, u),
-        None => return Err((Unresolved::Horizon, k)),
+        None if sys.energy2(&w.u).sqrt() < REST_COR => (false, t_max, w.u),
+        None => return Err((Unresolved::Horizon, w.k)),
     };
     Ok(Outcome {
         rebound,
@@ -176,6 +142,57 @@ pub(super) fn solve(n: &Normalized, s: &Surface) -> Result<Outcome, (Unresolved,
         s_max,
         method: Method::Exact,
     })
+}
+
+/// The grid walk of `solve`: where F̄ first fell to 0 (refined), or `None` at the horizon or at
+/// rest; the state and step there; the grid's peaks of F̄ and s̄ and their steps.
+struct Walk {
+    end: Option<f64>,
+    u: Vector4<f64>,
+    k: usize,
+    f_grid: f64,
+    k_peak: usize,
+    s_grid: f64,
+    k_s: usize,
+}
+
+fn walk(sys: &System, h: f64, t_max: f64) -> Walk {
+    let step = (sys.a * h).exp();
+    let mut w = Walk {
+        end: None,
+        u: Vector4::new(0.0, 1.0, 0.0, 0.0),
+        k: 0,
+        f_grid: 0.0,
+        k_peak: 0,
+        s_grid: 0.0,
+        k_s: 0,
+    };
+    let mut f_prev = 0.0;
+    loop {
+        w.k += 1;
+        if w.k as f64 * h > t_max {
+            return w;
+        }
+        w.u = step * w.u;
+        let f = (sys.force * w.u)[0];
+        if f > w.f_grid {
+            (w.f_grid, w.k_peak) = (f, w.k);
+        }
+        let d = sys.deflection(&w.u);
+        if d > w.s_grid {
+            (w.s_grid, w.k_s) = (d, w.k);
+        }
+        if f_prev > 0.0 && f <= 0.0 {
+            // a ball with no energy left to leave with has come to rest: F̄ falls through 0
+            // in the rounding of the creep, not at a separation
+            if sys.energy2(&w.u).sqrt() >= REST_COR {
+                let (a, b) = ((w.k - 1) as f64 * h, w.k as f64 * h);
+                w.end = Some(separation(sys, a, b, f_prev, f));
+            }
+            return w;
+        }
+        f_prev = f;
+    }
 }
 
 /// The time in [a, b] at which F̄ falls to 0, by Brent on the exact flow (the grid's values at

@@ -214,66 +214,97 @@ pub(super) fn solve(
         zp_bar: n.zp_bar,
         kappa: n.kappa,
     };
-    let mut chain = Chain {
-        n: *n,
-        s: *s,
-        contact,
-        phase: Phase::Loading,
+    let mut run = Run {
+        chain: Chain {
+            n: *n,
+            s: *s,
+            contact,
+            phase: Phase::Loading,
+        },
+        t_max: horizon(n, s),
+        t: 0.0,
+        x: [0.0, 1.0, 0.0, 0.0],
+        peaks: (0.0, 0.0, 0.0),
     };
-    let t_max = horizon(n, s);
-    let (mut t, mut x): (f64, X) = (0.0, [0.0, 1.0, 0.0, 0.0]);
-    let (mut f_max, mut z_max, mut s_max) = (0.0f64, 0.0f64, 0.0f64);
     for phases in 0..MAX_PHASES {
+        if let Some(end) = run.phase().map_err(|r| (r, phases))? {
+            return Ok(end);
+        }
+    }
+    Err((Unresolved::Phases, MAX_PHASES))
+}
+
+/// A run between phases: the branch in force, where the next phase starts, and the peaks so
+/// far (F̄_m, z̄_m, s̄_m).
+struct Run {
+    chain: Chain,
+    t_max: f64,
+    t: f64,
+    x: X,
+    peaks: (f64, f64, f64),
+}
+
+impl Run {
+    /// One phase, to its event: the outcome when the run is over, `None` when another phase
+    /// follows, or the budget that ran out.
+    fn phase(&mut self) -> Result<Option<Outcome>, Unresolved> {
+        let chain = &self.chain;
+        let (f_max, z_max, mut s_max) = self.peaks;
         let mut w = Watcher {
-            chain: &chain,
+            chain,
             hit: None,
-            last: (t, x),
+            last: (self.t, self.x),
             s_max,
             peaks: Vec::new(),
         };
-        let done = integrate(&chain, t, x, t_max, &mut w);
+        let done = integrate(chain, self.t, self.x, self.t_max, &mut w);
         s_max = w.s_max;
         // each peak of the deflection, integrated to rather than read off the dense output
         for (tp, t0, x0) in std::mem::take(&mut w.peaks) {
             let mut end = End(t0, x0);
-            if integrate(&chain, t0, x0, tp, &mut end) {
+            if integrate(chain, t0, x0, tp, &mut end) {
                 s_max = s_max.max(end.1[3]);
             }
         }
         let Some((tc, which, tp, xp)) = w.hit else {
-            if !done {
-                return Err((Unresolved::Steps, phases));
-            }
             // the horizon: at rest, or no answer
             let (t_end, x_end) = w.last;
-            if chain.energy2(&x_end).sqrt() < REST_COR {
-                return Ok(outcome(false, t_end, x_end[1], (f_max, z_max, 0.0, s_max)));
-            }
-            return Err((Unresolved::Horizon, phases));
+            return match (done, chain.energy2(&x_end).sqrt() < REST_COR) {
+                (false, _) => Err(Unresolved::Steps),
+                (true, true) => Ok(Some(outcome(
+                    false,
+                    t_end,
+                    x_end[1],
+                    (f_max, z_max, 0.0, s_max),
+                ))),
+                (true, false) => Err(Unresolved::Horizon),
+            };
         };
         // the state at the event, integrated to it rather than read off the dense output
         let mut end = End(tp, xp);
-        if !integrate(&chain, tp, xp, tc, &mut end) {
-            return Err((Unresolved::Steps, phases));
+        if !integrate(chain, tp, xp, tc, &mut end) {
+            return Err(Unresolved::Steps);
         }
-        (t, x) = (tc, end.1);
-        s_max = s_max.max(x[3]);
-        match (chain.phase, which) {
+        (self.t, self.x) = (tc, end.1);
+        let x = self.x;
+        self.peaks.2 = s_max.max(x[3]);
+        match (self.chain.phase, which) {
             (Phase::Loading, _) => {
-                let u = contact.unload_from(x[0]);
-                f_max = f_max.max(u.f_m);
-                z_max = z_max.max(u.z_m);
-                chain.phase = Phase::Unloading(u);
+                let u = self.chain.contact.unload_from(x[0]);
+                self.peaks.0 = f_max.max(u.f_m);
+                self.peaks.1 = z_max.max(u.z_m);
+                self.chain.phase = Phase::Unloading(u);
             }
             (Phase::Unloading(u), 0) => {
                 // at rest, the fall of z̄ to z̄_f is the creep's rounding, not a separation
-                let left = chain.energy2(&x).sqrt() >= REST_COR;
-                return Ok(outcome(left, t, x[1], (f_max, z_max, u.z_f, s_max)));
+                let left = self.chain.energy2(&x).sqrt() >= REST_COR;
+                let peaks = (f_max, z_max, u.z_f, self.peaks.2);
+                return Ok(Some(outcome(left, tc, x[1], peaks)));
             }
-            (Phase::Unloading(_), _) => chain.phase = Phase::Loading,
+            (Phase::Unloading(_), _) => self.chain.phase = Phase::Loading,
         }
+        Ok(None)
     }
-    Err((Unresolved::Phases, MAX_PHASES))
 }
 
 fn outcome(rebound: bool, tau: f64, v: f64, (f, z, z_f, s): (f64, f64, f64, f64)) -> Outcome {
