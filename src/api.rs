@@ -60,11 +60,13 @@ pub struct Ball {
     pub description: String,
 }
 
+mod collide;
 mod entry;
 mod error;
 mod fit;
 mod report;
 mod warnings;
+pub use collide::CollisionReport;
 pub use entry::Overrides;
 pub use error::BallError;
 pub use report::{BallHeader, Energy, FitReport, ImpactReport, MeasuredAt};

@@ -50,6 +50,8 @@
 //!   calibrated to the same ball;
 //! - [`mod@drop`]: drop tests and bounce sequences (flight with drag between impacts), and the
 //!   sports' standards they are judged by;
+//! - [`target`]: two-body impacts — a target of finite mass, moving, with a surface that
+//!   gives (bats, rackets, another ball);
 //! - [`preset`] and [`catalog`]: the ball presets (TOML) and where they are found.
 //!
 //! The physics does no I/O: plain data in, plain data out (only [`catalog`] reads preset files).
@@ -95,6 +97,7 @@ pub mod sanitize;
 #[doc(hidden)]
 pub mod signals;
 pub mod solver;
+pub mod target;
 pub mod text;
 #[cfg(feature = "tui")]
 #[doc(hidden)]

@@ -15,8 +15,10 @@ to an end raises ``NoAnswerError``, a ``ValueError`` too.
 """
 
 from ._native import (
+    Collision,
     Impact,
     NoAnswerError,
+    collide,
     drop,
     fit,
     fit_cor_table,
@@ -31,8 +33,10 @@ from ._native import (
 )
 
 __all__ = [
+    "Collision",
     "Impact",
     "NoAnswerError",
+    "collide",
     "drop",
     "fit",
     "fit_cor_table",

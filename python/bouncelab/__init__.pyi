@@ -231,3 +231,45 @@ def drop(
 ) -> Drop:
     """A drop test, bounce by bounce, as ``bouncelab drop``: ``bounces`` holds arrays v_in,
     v_out, cor, rebound_height, contact_time, max_force, t_start (one entry a bounce)."""
+
+class Collision:
+    """A two-body impact, SI units: the keys of ``bouncelab collide --format json``."""
+
+    ball: Optional[str]
+    law: Law
+    ball_mass: float
+    ball_speed: float
+    target_mass: float
+    target_speed: float
+    target_stiffness: float
+    target_damping: float
+    cor: float
+    apparent_cor: float
+    ball_speed_out: float
+    target_speed_out: float
+    max_force: float
+    contact_time: Optional[float]
+    reduced_mass: float
+    closing_speed: float
+    rebound: bool
+    max_indentation: float
+    permanent_indentation: float
+    max_target_deflection: float
+    method: Literal["exact", "numeric"]
+    effective_mass: Optional[float]
+    effective_radius: Optional[float]
+
+def collide(
+    preset: str = "superball",
+    v0: Optional[float] = None,
+    target_mass: Optional[float] = None,
+    target_speed: float = 0.0,
+    target_stiffness: float = float("inf"),
+    target_damping: float = 0.0,
+    target_preset: Optional[str] = None,
+    law: Optional[Law] = None,
+    params: Optional[ParamSet] = None,
+) -> Collision:
+    """The ball against a target of mass M (inf: the wall) moving at v_t toward it, rigid or
+    with a surface K_s ∥ c_s, as ``bouncelab collide``; or against another preset ball
+    (``target_preset``)."""

@@ -17,6 +17,7 @@ use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
+mod collide;
 mod fits;
 mod impact;
 
@@ -357,6 +358,8 @@ fn drop_test<'py>(
 #[pymodule]
 fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<Impact>()?;
+    m.add_class::<collide::Collision>()?;
+    m.add_function(wrap_pyfunction!(collide::collide, m)?)?;
     m.add("NoAnswerError", m.py().get_type::<NoAnswerError>())?;
     m.add_function(wrap_pyfunction!(presets, m)?)?;
     m.add_function(wrap_pyfunction!(run, m)?)?;

@@ -8,7 +8,9 @@
 //! kinds to these codes.
 
 pub mod ball;
+pub mod bat;
 pub mod budget;
+pub mod collide;
 pub mod drop;
 pub mod figure;
 pub mod fit;
@@ -87,6 +89,13 @@ pub enum Command {
     /// COR, peak force and contact time over a (λ, ζ) grid, with targets: CSV, JSON or an SVG
     /// heat map (docs/map.md)
     Map(map::MapArgs),
+    /// The ball against a target of mass M moving at v_t, rigid or with a surface that gives:
+    /// the pair's COR, the apparent COR, both outgoing speeds (docs/targets.md)
+    #[command(allow_negative_numbers = true)]
+    Collide(collide::CollideArgs),
+    /// A bat of effective mass M_eff: batted-ball speed, and the NCAA BBCOR test with a verdict
+    #[command(allow_negative_numbers = true)]
+    Bat(bat::BatArgs),
 }
 
 /// The explorer failed (its terminal, its event loop): not the input's fault.
@@ -290,6 +299,14 @@ fn dispatch(cli: Cli, out: &mut dyn Write) -> anyhow::Result<()> {
         Command::Drop(mut a) => {
             merge(top, &mut a.ball)?;
             drop::run(&a, out)
+        }
+        Command::Collide(mut a) => {
+            merge(top, &mut a.ball)?;
+            collide::run(&a, out)
+        }
+        Command::Bat(mut a) => {
+            merge(top, &mut a.ball)?;
+            bat::run(&a, out)
         }
         Command::Standards(a) => {
             if top.is_given() {

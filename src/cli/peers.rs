@@ -57,6 +57,11 @@ pub struct PeersArgs {
     /// Target when --cor is not given
     #[arg(long, value_enum, default_value = "measured")]
     pub target: TargetArg,
+    /// Calibrate for the pair with another preset ball (docs/targets.md): m_eff = m1 m2/(m1 +
+    /// m2), R_eff = R1 R2/(R1 + R2), v0 the closing speed; the target COR is the model's for
+    /// the pair unless --cor or another --target is given
+    #[arg(long, value_name = "PRESET")]
+    pub pair: Option<String>,
     /// Output format
     #[arg(long, value_enum, default_value = "text")]
     pub format: PeersFormat,
@@ -91,10 +96,25 @@ struct Report<'a> {
     target_source: &'static str,
     /// What the caller should know about the ball at v0 ([`Ball::warnings`]).
     warnings: Vec<String>,
+    /// With --pair only.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pair: Option<Pair>,
+}
+
+/// The pair `--pair` calibrates for: the other preset and the effective mass and radius.
+#[derive(Debug, Clone, Serialize)]
+struct Pair {
+    preset: String,
+    effective_mass: f64,
+    effective_radius: f64,
 }
 
 pub fn run(a: &PeersArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     let b = a.ball.resolve(a.v0)?;
+    let (b, pair) = match &a.pair {
+        Some(name) => pair_ball(a, b, name)?,
+        None => (b, None),
+    };
     let radius = b.measured.as_ref().map_or(f64::NAN, |m| m.radius);
     let ball = PeerBall::from_params(&b.params, radius);
     let (target, source) = target(a, &b)?;
@@ -125,6 +145,7 @@ pub fn run(a: &PeersArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         radius,
         target_source: source,
         warnings: b.warnings(&b.impact()?),
+        pair,
     };
     match a.format {
         PeersFormat::Json => output::json(out, &report)?,
@@ -143,7 +164,12 @@ fn target(a: &PeersArgs, b: &Ball) -> anyhow::Result<(f64, &'static str)> {
         return Ok((e, "given"));
     }
     let (p, law) = (&b.params, b.law);
-    match a.target {
+    // a measured COR is the ball's against a wall, not the pair's: a pair takes the model's
+    let which = match (&a.pair, a.target) {
+        (Some(_), TargetArg::Measured) => TargetArg::ChristoforouYigit,
+        (_, which) => which,
+    };
+    match which {
         TargetArg::Measured => b
             .measured
             .as_ref()
@@ -166,6 +192,28 @@ fn target(a: &PeersArgs, b: &Ball) -> anyhow::Result<(f64, &'static str)> {
             Ok((mean, "christoforou-yigit-curve"))
         }
     }
+}
+
+/// The ball as the pair with preset `name` presents it to a DEM code: mass m_eff and radius
+/// R_eff (the presets' measured radii), the rest of the ball kept, v0 the closing speed (the
+/// partner at rest): the reduced ball of docs/targets.md §2, a rigid partner.
+fn pair_ball(a: &PeersArgs, mut b: Ball, name: &str) -> anyhow::Result<(Ball, Option<Pair>)> {
+    let entry = super::ball::select(Some(name), a.ball.choice.config.as_deref())?;
+    let other = Ball::from_entry(&entry, None, None, None)?;
+    let (m1, m2) = (b.params.mass, other.params.mass);
+    let radius = |x: &Ball| x.measured.as_ref().map_or(f64::NAN, |m| m.radius);
+    let (r1, r2) = (radius(&b), radius(&other));
+    let pair = Pair {
+        preset: other.name.clone().unwrap_or_default(),
+        effective_mass: m1 * m2 / (m1 + m2),
+        effective_radius: r1 * r2 / (r1 + r2),
+    };
+    b.params.mass = pair.effective_mass;
+    b.params.validate()?;
+    if let Some(m) = b.measured.as_mut() {
+        (m.mass, m.radius, m.cor) = (pair.effective_mass, pair.effective_radius, None);
+    }
+    Ok((b, Some(pair)))
 }
 
 fn peer_row(ball: &PeerBall, c: &Calibrated) -> Row {
@@ -244,6 +292,15 @@ fn text(out: &mut dyn Write, b: &Ball, ball: &PeerBall, r: &Report) -> std::io::
         given(ball.radius, 6),
         given(ball.v0, 6)
     )?;
+    if let Some(p) = &r.pair {
+        writeln!(
+            out,
+            "pair with {}: m_eff = {} kg, R_eff = {} m (the partner at rest, v0 the closing speed)",
+            p.preset,
+            given(p.effective_mass, 6),
+            given(p.effective_radius, 6)
+        )?;
+    }
     writeln!(
         out,
         "target COR {} ({}); k = K_p = {} N/m, K_h = {} N/m^1.5",

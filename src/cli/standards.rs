@@ -3,6 +3,7 @@
 
 use super::output::{self, given, table};
 use crate::drop::standards::{STANDARDS, Standard, Test};
+use crate::target::bat::{BAT_STANDARDS, BatTest};
 use clap::{Args, ValueEnum};
 use std::io::Write;
 
@@ -21,7 +22,16 @@ pub struct StandardsArgs {
 
 pub fn run(a: &StandardsArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     match a.format {
-        StandardsFormat::Json => output::json(out, &STANDARDS)?,
+        // the ball standards, then the bat standards (`test.kind` "bbcor"), in one list
+        StandardsFormat::Json => {
+            let mut all = serde_json::to_value(STANDARDS)?;
+            if let Some(list) = all.as_array_mut() {
+                for s in &BAT_STANDARDS {
+                    list.push(serde_json::to_value(s)?);
+                }
+            }
+            output::json(out, &all)?
+        }
         StandardsFormat::Text => text(out)?,
     }
     Ok(())
@@ -73,12 +83,27 @@ fn text(out: &mut dyn Write) -> std::io::Result<()> {
             s.title.into(),
         ]);
     }
+    for s in &BAT_STANDARDS {
+        let BatTest::Bbcor { speed } = s.test;
+        let hi = s.window[1].map_or("–".into(), |h| format!("≤ {}", given(h, 4)));
+        rows.push(vec![
+            s.name.into(),
+            format!("bat BBCOR at {} m/s", given(speed, 4)),
+            hi,
+            s.balls.join(", "),
+            s.title.into(),
+        ]);
+    }
     table(out, "", &rows)?;
     writeln!(out)?;
     writeln!(out, "sources, and what could not be confirmed:")?;
-    for s in &STANDARDS {
-        writeln!(out, "  {}: {}", s.name, s.source)?;
-        if let Some(u) = s.unconfirmed {
+    let sources = STANDARDS.iter().map(|s| (s.name, s.source, s.unconfirmed));
+    let bats = BAT_STANDARDS
+        .iter()
+        .map(|s| (s.name, s.source, s.unconfirmed));
+    for (name, source, unconfirmed) in sources.chain(bats) {
+        writeln!(out, "  {name}: {source}")?;
+        if let Some(u) = unconfirmed {
             writeln!(out, "    not confirmed: {u}")?;
         }
     }
@@ -86,6 +111,6 @@ fn text(out: &mut dyn Write) -> std::io::Result<()> {
     writeln!(
         out,
         "heights are of the bottom or the top of the ball as each body reads them; \
-         `bouncelab drop --standard NAME` judges a ball"
+         `bouncelab drop --standard NAME` judges a ball, `bouncelab bat` a bat"
     )
 }

@@ -71,6 +71,14 @@ pub enum Field {
     From,
     /// The last value of a sweep's range.
     To,
+    /// A target's mass M, kg (docs/targets.md).
+    TargetMass,
+    /// A target's speed v_t toward the ball, m/s.
+    TargetSpeed,
+    /// A target's stiffness K_s, N/m.
+    TargetStiffness,
+    /// A target's damping c_s, kg/s.
+    TargetDamping,
 }
 
 impl Field {
@@ -91,6 +99,10 @@ impl Field {
             Field::Method => "method",
             Field::From => "from",
             Field::To => "to",
+            Field::TargetMass => "target_mass",
+            Field::TargetSpeed => "target_speed",
+            Field::TargetStiffness => "target_stiffness",
+            Field::TargetDamping => "target_damping",
         }
     }
 }
@@ -141,6 +153,17 @@ const ABSURD: f64 = 1e15;
 pub const MEANINGFUL_MIN: f64 = 1.0 / ABSURD;
 /// The upper end of that range (see [`MEANINGFUL_MIN`]).
 pub const MEANINGFUL_MAX: f64 = ABSURD;
+
+/// A value in the meaningful range 1e-15 … 1e15, zero too when `allow_zero`, +∞ too when
+/// `allow_inf`; NaN and negative values never: else an error naming `field`.
+pub fn check_range(
+    field: Field,
+    value: f64,
+    allow_zero: bool,
+    allow_inf: bool,
+) -> Result<(), ParamError> {
+    check(field, value, allow_zero, allow_inf)
+}
 
 fn check(field: Field, value: f64, allow_zero: bool, allow_inf: bool) -> Result<(), ParamError> {
     let err = |reason| {

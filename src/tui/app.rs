@@ -341,10 +341,11 @@ impl App {
     /// actions before one refresh: `p` after `2` in one batch must pin golf's run).
     pub(super) fn refresh_run(&mut self) {
         let s = &self.setting;
-        let key = (s.params, s.law);
+        // the pair's run: the reduced ball at the closing speed (the ball's own at the wall)
+        let key = (s.run_params(), s.law);
         if self.run_for != Some(key) {
             self.run_for = Some(key);
-            self.run = compute::impact(&s.params, s.law)
+            self.run = compute::impact(&key.0, s.law)
                 .map_err(|e| self.error(e))
                 .ok();
         }

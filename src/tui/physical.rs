@@ -34,10 +34,14 @@ pub enum Field {
     Lambda,
     Zeta,
     V0,
+    /// The target's mass M (∞: the wall; docs/targets.md).
+    TargetMass,
+    /// The target's speed toward the ball v_t.
+    TargetSpeed,
 }
 
 impl Field {
-    pub const ALL: [Field; 10] = [
+    pub const ALL: [Field; 12] = [
         Field::Mass,
         Field::Radius,
         Field::KP,
@@ -48,6 +52,8 @@ impl Field {
         Field::Lambda,
         Field::Zeta,
         Field::V0,
+        Field::TargetMass,
+        Field::TargetSpeed,
     ];
 
     pub fn symbol(self) -> &'static str {
@@ -62,18 +68,20 @@ impl Field {
             Field::Lambda => "λ",
             Field::Zeta => "ζ",
             Field::V0 => "v0",
+            Field::TargetMass => "M",
+            Field::TargetSpeed => "v_t",
         }
     }
 
     /// The SI unit values are typed in (as the command line's overrides take them).
     pub fn unit(self) -> &'static str {
         match self {
-            Field::Mass => "kg",
+            Field::Mass | Field::TargetMass => "kg",
             Field::Radius | Field::ZP => "m",
             Field::KP | Field::KR => "N/m",
             Field::C => "kg/s",
             Field::E => "Pa",
-            Field::V0 => "m/s",
+            Field::V0 | Field::TargetSpeed => "m/s",
             Field::Lambda | Field::Zeta => "",
         }
     }
@@ -100,6 +108,8 @@ impl Field {
             Field::ZP => p.z_p,
             Field::E if s.elastomer => modulus(p),
             Field::E => f64::NAN,
+            Field::TargetMass => s.target_mass,
+            Field::TargetSpeed => s.target_speed,
             Field::Lambda | Field::Zeta | Field::V0 => self.live().map_or(f64::NAN, |q| s.get(q)),
         }
     }
@@ -108,6 +118,12 @@ impl Field {
     pub fn range_text(self) -> String {
         match self.live() {
             Some(p) => p.range_text(),
+            None if self == Field::TargetMass => format!(
+                "{} … {} kg, or inf (the wall)",
+                short(MEANINGFUL_MIN, 4),
+                short(MEANINGFUL_MAX, 4)
+            ),
+            None if self == Field::TargetSpeed => "v0 + v_t > 0 m/s".into(),
             None => format!(
                 "{} … {} {}",
                 short(MEANINGFUL_MIN, 4),
@@ -123,10 +139,12 @@ impl Field {
     pub fn check(self, value: f64, s: &Setting) -> Result<Setting, String> {
         if let Some(p) = self.live() {
             let params = p.check(value, &s.params)?;
-            return Ok(Setting {
+            let next = Setting {
                 params,
                 ..s.clone()
-            });
+            };
+            closing(&next).map_err(|e| format!("{e}; {} kept", self.symbol()))?;
+            return Ok(next);
         }
         let refuse =
             |e: String| format!("{e}; {} kept (range {})", self.symbol(), self.range_text());
@@ -142,6 +160,23 @@ impl Field {
                     return Err(refuse(format!("invalid R: {}", shown(value))));
                 }
                 next.radius = value;
+            }
+            Field::TargetMass | Field::TargetSpeed => {
+                let t = crate::target::Target {
+                    mass: if self == Field::TargetMass {
+                        value
+                    } else {
+                        s.target_mass
+                    },
+                    speed: if self == Field::TargetSpeed {
+                        value
+                    } else {
+                        s.target_speed
+                    },
+                    ..crate::target::Target::wall()
+                };
+                t.validate().map_err(|e| refuse(e.to_string()))?;
+                (next.target_mass, next.target_speed) = (t.mass, t.speed);
             }
             Field::E => {
                 if !s.elastomer {
@@ -166,6 +201,7 @@ impl Field {
             }
         }
         next.params.validate().map_err(|e| refuse(e.to_string()))?;
+        closing(&next).map_err(refuse)?;
         Ok(next)
     }
 
@@ -193,6 +229,18 @@ impl Field {
         let i = Field::ALL.iter().position(|&f| f == self).unwrap_or(0);
         Field::ALL[(i + n - 1) % n]
     }
+}
+
+/// The ball and the target must meet (v0 + v_t > 0), and the pair's reduced ball be one the
+/// model takes (docs/targets.md §2).
+fn closing(s: &Setting) -> Result<(), String> {
+    if s.params.v0 + s.target_speed <= 0.0 {
+        return Err(format!(
+            "the ball and the target never meet: v0 + v_t = {} m/s must be positive",
+            sig_trim(s.params.v0 + s.target_speed, 6)
+        ));
+    }
+    s.run_params().validate().map_err(|e| e.to_string())
 }
 
 /// A typed value as a refusal shows it.

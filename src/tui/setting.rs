@@ -19,6 +19,11 @@ pub struct Setting {
     /// Whether the ball flattens as an elastomer (p0 = E z_p/R, Eq. 20), which ties its
     /// contact modulus to K_p: K_p = 2π E z_p (the form's E field).
     pub elastomer: bool,
+    /// The target's mass M (kg; ∞: today's wall) and speed toward the ball v_t (m/s), typed in
+    /// the form: the run is the pair's, the reduced ball at the closing speed
+    /// (docs/targets.md §2).
+    pub target_mass: f64,
+    pub target_speed: f64,
 }
 
 impl Setting {
@@ -29,6 +34,22 @@ impl Setting {
             law: preset.law,
             radius: preset.measured.radius,
             elastomer: preset.material.kind == crate::preset::MaterialKind::Elastomer,
+            target_mass: f64::INFINITY,
+            target_speed: 0.0,
+        }
+    }
+
+    /// The parameters the run is made on: the ball's against the wall, else the reduced ball
+    /// m* = m/(1 + m/M) at the closing speed v0 + v_t (docs/targets.md §2: a rigid target).
+    pub fn run_params(&self) -> ImpactParams {
+        if self.target_mass == f64::INFINITY && self.target_speed == 0.0 {
+            return self.params;
+        }
+        let p = &self.params;
+        ImpactParams {
+            mass: p.mass / (1.0 + p.mass / self.target_mass),
+            v0: p.v0 + self.target_speed,
+            ..*p
         }
     }
 

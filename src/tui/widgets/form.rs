@@ -81,6 +81,9 @@ impl FormBox<'_> {
                 let v = f.get(self.setting);
                 let value = if v.is_nan() {
                     "—".into()
+                } else if v == f64::INFINITY {
+                    // the target's mass M = ∞: the wall (docs/targets.md)
+                    "∞".into()
                 } else {
                     sig_trim(v, 6)
                 };

@@ -1,0 +1,126 @@
+//! `collide`: the ball against a target of mass M moving at v_t, rigid or with a surface of its
+//! own (docs/targets.md), as `bouncelab collide --format json`: the same fields, by the same
+//! names.
+
+use crate::{error, preset_ball};
+use bouncelab::Ball;
+use bouncelab::api::CollisionReport;
+use bouncelab::catalog::Catalog;
+use bouncelab::target::Target;
+use pyo3::prelude::*;
+
+/// A two-body impact, SI units; attribute names are the keys of `bouncelab collide --format
+/// json` (the target's fields as `target_mass`, `target_speed`, `target_stiffness`,
+/// `target_damping`).
+#[pyclass(frozen, get_all, module = "bouncelab")]
+pub(crate) struct Collision {
+    ball: Option<String>,
+    law: &'static str,
+    ball_mass: f64,
+    ball_speed: f64,
+    target_mass: f64,
+    target_speed: f64,
+    target_stiffness: f64,
+    target_damping: f64,
+    cor: f64,
+    apparent_cor: f64,
+    ball_speed_out: f64,
+    target_speed_out: f64,
+    max_force: f64,
+    contact_time: Option<f64>,
+    reduced_mass: f64,
+    closing_speed: f64,
+    rebound: bool,
+    max_indentation: f64,
+    permanent_indentation: f64,
+    max_target_deflection: f64,
+    method: &'static str,
+    effective_mass: Option<f64>,
+    effective_radius: Option<f64>,
+}
+
+#[pymethods]
+impl Collision {
+    fn __repr__(&self) -> String {
+        format!(
+            "Collision(cor={}, apparent_cor={}, ball_speed_out={}, target_speed_out={})",
+            self.cor, self.apparent_cor, self.ball_speed_out, self.target_speed_out
+        )
+    }
+}
+
+impl From<CollisionReport> for Collision {
+    fn from(r: CollisionReport) -> Collision {
+        let (t, c) = (r.target, r.collision);
+        Collision {
+            ball: r.ball,
+            law: r.law.name(),
+            ball_mass: r.ball_mass,
+            ball_speed: r.ball_speed,
+            target_mass: t.mass,
+            target_speed: t.speed,
+            target_stiffness: t.stiffness,
+            target_damping: t.damping,
+            cor: c.cor,
+            apparent_cor: c.apparent_cor,
+            ball_speed_out: c.ball_speed_out,
+            target_speed_out: c.target_speed_out,
+            max_force: c.max_force,
+            contact_time: c.contact_time,
+            reduced_mass: c.reduced_mass,
+            closing_speed: c.closing_speed,
+            rebound: c.rebound,
+            max_indentation: c.max_indentation,
+            permanent_indentation: c.permanent_indentation,
+            max_target_deflection: c.max_target_deflection,
+            method: c.method.name(),
+            effective_mass: r.effective_mass,
+            effective_radius: r.effective_radius,
+        }
+    }
+}
+
+/// A preset ball against a target, as `bouncelab collide --preset NAME [--v0 V] --target-mass M
+/// [--target-speed V_T] [--target-stiffness K_S] [--target-damping C_S]`, or against another
+/// preset ball with `target_preset` (instead of `target_mass`). `target_mass = inf` is the wall.
+#[pyfunction]
+#[pyo3(signature = (preset="superball", v0=None, target_mass=None, target_speed=0.0, target_stiffness=f64::INFINITY, target_damping=0.0, target_preset=None, law=None, params=None))]
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn collide(
+    preset: &str,
+    v0: Option<f64>,
+    target_mass: Option<f64>,
+    target_speed: f64,
+    target_stiffness: f64,
+    target_damping: f64,
+    target_preset: Option<&str>,
+    law: Option<&str>,
+    params: Option<&str>,
+) -> PyResult<Collision> {
+    let ball = preset_ball(preset, params, law, v0)?;
+    let surface = (target_stiffness, target_damping);
+    let report = match (target_mass, target_preset) {
+        (None, Some(name)) => {
+            let cat = crate::load_catalog()?;
+            let other = other_ball(&cat, name)?;
+            ball.collide_ball(&other, target_speed, surface)
+        }
+        (Some(mass), None) => ball.collide(&Target {
+            mass,
+            speed: target_speed,
+            stiffness: surface.0,
+            damping: surface.1,
+        }),
+        _ => {
+            return Err(crate::value_error(
+                "give one of target_mass and target_preset".into(),
+            ));
+        }
+    };
+    Ok(report.map_err(error)?.into())
+}
+
+fn other_ball(cat: &Catalog, name: &str) -> PyResult<Ball> {
+    let entry = crate::entry(cat, name)?;
+    Ball::from_entry(&entry, None, None, None).map_err(error)
+}

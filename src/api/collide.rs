@@ -1,0 +1,111 @@
+//! Two-body impacts through [`Ball`]: a ball against a target of finite mass, moving, with a
+//! surface that gives ([`crate::target`], docs/targets.md), as `bouncelab collide` and `bat`.
+
+use super::{Ball, BallError};
+use crate::model::contact::ContactLaw;
+use crate::solver::Method;
+use crate::target::bat::{self, BatRun};
+use crate::target::{Collision, Target, collide};
+use serde::Serialize;
+
+/// One two-body impact as the command line reports it: the ball, the target and the answer
+/// (whose fields sit at the top level of the JSON: `cor`, `apparent_cor`, `ball_speed_out`, …).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct CollisionReport {
+    /// The ball's preset name (`None` for a ball that is no preset).
+    pub ball: Option<String>,
+    /// The ball's contact law.
+    pub law: ContactLaw,
+    /// The ball's mass m (kg).
+    pub ball_mass: f64,
+    /// The ball's speed toward the target before the impact (m/s).
+    pub ball_speed: f64,
+    /// What it hit.
+    pub target: Target,
+    /// The answer, SI.
+    #[serde(flatten)]
+    pub collision: Collision,
+    /// Ball on ball: the pair's effective mass m_eff = m1 m2/(m1 + m2) as DEM codes use it
+    /// (kg; the reduced mass).
+    pub effective_mass: Option<f64>,
+    /// Ball on ball: the pair's effective radius R_eff = R1 R2/(R1 + R2) (m).
+    pub effective_radius: Option<f64>,
+}
+
+impl Ball {
+    /// This ball at its speed v0 against `target` (docs/targets.md): the pair's COR, the
+    /// apparent COR, both outgoing speeds, peak force and contact time.
+    ///
+    /// ```
+    /// use bouncelab::{Ball, target::Target};
+    /// let golf = Ball::from_preset("golf")?;
+    /// // the wall: today's impact
+    /// let wall = golf.collide(&Target::wall())?;
+    /// assert_eq!(wall.collision.cor, golf.impact()?.cor);
+    /// // a club face of 0.2 kg at rest: the ball leaves faster than the club's share would say
+    /// let face = golf.collide(&Target { mass: 0.2, ..Target::wall() })?;
+    /// assert!(face.collision.apparent_cor < face.collision.cor);
+    /// # Ok::<(), bouncelab::BallError>(())
+    /// ```
+    pub fn collide(&self, target: &Target) -> Result<CollisionReport, BallError> {
+        self.collide_with(target, None)
+    }
+
+    /// [`Ball::collide`] with the solver forced: [`Method::Exact`] (a rigid target on the
+    /// linear law, or a compliant one without flattening) or [`Method::Numeric`].
+    pub fn collide_with(
+        &self,
+        target: &Target,
+        method: Option<Method>,
+    ) -> Result<CollisionReport, BallError> {
+        let collision = collide(&self.params, self.law, target, self.params.v0, method)?;
+        Ok(CollisionReport {
+            ball: self.name.clone(),
+            law: self.law,
+            ball_mass: self.params.mass,
+            ball_speed: self.params.v0,
+            target: *target,
+            collision,
+            effective_mass: None,
+            effective_radius: None,
+        })
+    }
+
+    /// Ball on ball, head-on: this ball at its v0 against `other` (a rigid body of its mass)
+    /// coming at `other_speed`, with the pair's m_eff and R_eff (the radii of the presets'
+    /// measurements; `None` for a ball that is no preset). `surface` gives the other ball's
+    /// give as K_s, c_s (`Target::wall()`'s: none).
+    pub fn collide_ball(
+        &self,
+        other: &Ball,
+        other_speed: f64,
+        surface: (f64, f64),
+    ) -> Result<CollisionReport, BallError> {
+        let target = Target {
+            mass: other.params.mass,
+            speed: other_speed,
+            stiffness: surface.0,
+            damping: surface.1,
+        };
+        let mut r = self.collide(&target)?;
+        r.effective_mass = Some(r.collision.reduced_mass);
+        r.effective_radius = match (&self.measured, &other.measured) {
+            (Some(a), Some(b)) => Some(a.radius * b.radius / (a.radius + b.radius)),
+            _ => None,
+        };
+        Ok(r)
+    }
+
+    /// A bat of effective mass `bat_mass` at the impact point (rigid, or with `surface` =
+    /// (K_s, c_s)): the batted-ball speed at `ball_speed` against `bat_speed`, and the NCAA
+    /// BBCOR test's pair COR at 136 mph onto the bat at rest, judged against ≤ 0.50
+    /// (docs/targets.md §5).
+    pub fn bat(
+        &self,
+        bat_mass: f64,
+        speeds: (f64, f64),
+        surface: (f64, f64),
+    ) -> Result<BatRun, BallError> {
+        Ok(bat::run(&self.params, self.law, bat_mass, speeds, surface)?)
+    }
+}

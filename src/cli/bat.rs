@@ -1,0 +1,129 @@
+//! `bouncelab bat`: a bat of effective mass M_eff at the impact point — the batted-ball speed
+//! of a game impact, and the NCAA BBCOR test (136 mph onto the bat at rest) with its verdict
+//! against ≤ 0.50 (docs/targets.md §5).
+
+use super::ball::BallArgs;
+use super::output::{self, human, table};
+use crate::target::bat::{BAT_STANDARDS, BatRun, MPH_136};
+use clap::{Args, ValueEnum};
+use serde::Serialize;
+use std::io::Write;
+
+/// The preset `bat` runs when none is given.
+const BAT_BALL: &str = "baseball";
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum BatFormat {
+    Text,
+    Json,
+}
+
+#[derive(Debug, Clone, Args)]
+pub struct BatArgs {
+    /// The ball [default: baseball]
+    #[command(flatten)]
+    pub ball: BallArgs,
+    /// The bat's effective mass at the impact point M_eff (kg)
+    #[arg(long, value_name = "KG", value_parser = super::number::number, allow_hyphen_values = true)]
+    pub bat_mass: f64,
+    /// The pitched ball's speed toward the bat (m/s)
+    #[arg(long, value_name = "V", default_value_t = 40.0, value_parser = super::number::number, allow_hyphen_values = true)]
+    pub ball_speed: f64,
+    /// The bat's speed at the impact point toward the ball (m/s)
+    #[arg(long, value_name = "V", default_value_t = 30.0, value_parser = super::number::number, allow_hyphen_values = true)]
+    pub bat_speed: f64,
+    /// The stiffness K_s of the barrel at the impact point (N/m) [default: rigid]
+    #[arg(long, value_name = "N/m", value_parser = super::number::number, allow_hyphen_values = true)]
+    pub bat_stiffness: Option<f64>,
+    /// The damping c_s in parallel with K_s (kg/s) [default: 0]
+    #[arg(long, value_name = "kg/s", value_parser = super::number::number, allow_hyphen_values = true, requires = "bat_stiffness")]
+    pub bat_damping: Option<f64>,
+    /// Output format
+    #[arg(long, value_enum, default_value = "text")]
+    pub format: BatFormat,
+}
+
+/// `bat --format json`: what was asked, then the run's fields at the top level.
+#[derive(Serialize)]
+struct BatJson<'a> {
+    ball: Option<&'a str>,
+    bat_mass: f64,
+    ball_speed: f64,
+    bat_speed: f64,
+    standard: &'static str,
+    #[serde(flatten)]
+    run: &'a BatRun,
+}
+
+pub fn run(a: &BatArgs, out: &mut dyn Write) -> anyhow::Result<()> {
+    let mut args = a.ball.clone();
+    if !args.choice.is_given() {
+        args.choice.preset = Some(BAT_BALL.into());
+    }
+    let ball = args.resolve(None)?;
+    let surface = (
+        a.bat_stiffness.unwrap_or(f64::INFINITY),
+        a.bat_damping.unwrap_or(0.0),
+    );
+    let r = ball.bat(a.bat_mass, (a.ball_speed, a.bat_speed), surface)?;
+    match a.format {
+        BatFormat::Json => output::json(
+            out,
+            &BatJson {
+                ball: ball.name.as_deref(),
+                bat_mass: a.bat_mass,
+                ball_speed: a.ball_speed,
+                bat_speed: a.bat_speed,
+                standard: BAT_STANDARDS[0].name,
+                run: &r,
+            },
+        )?,
+        BatFormat::Text => {
+            let head = format!(
+                "{} against a bat of effective mass {} kg at the impact point",
+                ball.label(),
+                human(a.bat_mass, 4)
+            );
+            text(out, &head, a, &r)?;
+        }
+    }
+    Ok(())
+}
+
+fn text(out: &mut dyn Write, head: &str, a: &BatArgs, r: &BatRun) -> std::io::Result<()> {
+    writeln!(out, "{head}")?;
+    writeln!(out)?;
+    let ms = |v: f64| format!("{} m/s", human(v, 4));
+    writeln!(
+        out,
+        "game: ball at {}, bat at {}, toward each other",
+        ms(a.ball_speed),
+        ms(a.bat_speed)
+    )?;
+    let g = &r.game;
+    let rows = vec![
+        vec!["batted-ball speed BBS".into(), ms(r.bbs)],
+        vec!["apparent COR e_A".into(), human(r.apparent_cor, 4)],
+        vec!["COR of the pair e".into(), human(g.cor, 4)],
+        vec![
+            "peak force F_m".into(),
+            format!("{} N", human(g.max_force, 4)),
+        ],
+    ];
+    table(out, "  ", &rows)?;
+    writeln!(out)?;
+    writeln!(
+        out,
+        "NCAA BBCOR: ball at {} (136 mph) onto the bat at rest",
+        ms(MPH_136)
+    )?;
+    let rows = vec![
+        vec!["BBCOR (the pair's e)".into(), human(r.bbcor, 4)],
+        vec!["apparent COR e_A".into(), human(r.test.apparent_cor, 4)],
+        vec![
+            "verdict".into(),
+            format!("{} (BBCOR ≤ {})", r.verdict, human(r.limit, 2)),
+        ],
+    ];
+    table(out, "  ", &rows)
+}

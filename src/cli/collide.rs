@@ -1,0 +1,179 @@
+//! `bouncelab collide`: the ball against a target of mass M moving at v_t, rigid or with a
+//! surface of its own (docs/targets.md), as a text table or one JSON object.
+
+use super::ball::{self, BallArgs};
+use super::output::{self, human, table};
+use crate::api::{Ball, CollisionReport};
+use crate::target::Target;
+use clap::{Args, ValueEnum};
+use std::io::Write;
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum CollideFormat {
+    Text,
+    Json,
+}
+
+#[derive(Debug, Clone, Args)]
+pub struct CollideArgs {
+    #[command(flatten)]
+    pub ball: BallArgs,
+    /// The ball's speed toward the target (m/s) [default: the preset's measured v0]
+    #[arg(long, value_name = "V", value_parser = super::number::number, allow_hyphen_values = true)]
+    pub v0: Option<f64>,
+    /// The target's mass M (kg); `inf` for an immovable one (today's wall)
+    #[arg(
+        long,
+        value_name = "KG",
+        value_parser = super::number::number,
+        allow_hyphen_values = true,
+        required_unless_present = "target_preset",
+        conflicts_with = "target_preset"
+    )]
+    pub target_mass: Option<f64>,
+    /// Another ball as the target: its preset's mass (the pair's m_eff and R_eff are reported)
+    #[arg(long, value_name = "NAME")]
+    pub target_preset: Option<String>,
+    /// The target's speed toward the ball (m/s; negative: receding)
+    #[arg(long, value_name = "V", default_value_t = 0.0, value_parser = super::number::number, allow_hyphen_values = true)]
+    pub target_speed: f64,
+    /// The stiffness K_s of the target's surface (N/m) [default: rigid]
+    #[arg(long, value_name = "N/m", value_parser = super::number::number, allow_hyphen_values = true)]
+    pub target_stiffness: Option<f64>,
+    /// The damping c_s in parallel with K_s (kg/s) [default: 0]
+    #[arg(long, value_name = "kg/s", value_parser = super::number::number, allow_hyphen_values = true, requires = "target_stiffness")]
+    pub target_damping: Option<f64>,
+    /// Output format
+    #[arg(long, value_enum, default_value = "text")]
+    pub format: CollideFormat,
+}
+
+pub fn run(a: &CollideArgs, out: &mut dyn Write) -> anyhow::Result<()> {
+    let ball = a.ball.resolve(a.v0)?;
+    let surface = (
+        a.target_stiffness.unwrap_or(f64::INFINITY),
+        a.target_damping.unwrap_or(0.0),
+    );
+    let report = match &a.target_preset {
+        Some(name) => {
+            let entry = ball::select(Some(name), a.ball.choice.config.as_deref())?;
+            let other = Ball::from_entry(&entry, None, None, None)?;
+            ball.collide_ball(&other, a.target_speed, surface)?
+        }
+        None => ball.collide(&Target {
+            mass: a.target_mass.unwrap_or(f64::NAN),
+            speed: a.target_speed,
+            stiffness: surface.0,
+            damping: surface.1,
+        })?,
+    };
+    match a.format {
+        CollideFormat::Json => output::json(out, &report)?,
+        CollideFormat::Text => text(out, &ball, &report, a.target_preset.as_deref())?,
+    }
+    Ok(())
+}
+
+/// "500 g", "∞ (immovable)".
+fn mass(m: f64) -> String {
+    if m.is_infinite() {
+        "∞ (immovable)".into()
+    } else {
+        format!("{} g", human(m * 1e3, 4))
+    }
+}
+
+fn surface(t: &Target) -> String {
+    if t.is_rigid() {
+        "rigid".into()
+    } else {
+        format!(
+            "K_s {} N/m, c_s {} kg/s",
+            human(t.stiffness, 4),
+            human(t.damping, 4)
+        )
+    }
+}
+
+fn text(
+    out: &mut dyn Write,
+    ball: &Ball,
+    r: &CollisionReport,
+    other: Option<&str>,
+) -> std::io::Result<()> {
+    let what = other.map_or("a target".to_string(), |o| format!("{o} (a rigid body)"));
+    writeln!(out, "{} against {what}", ball.label())?;
+    writeln!(out, "  law {}, method {}", r.law, r.collision.method.name())?;
+    writeln!(out)?;
+    table(out, "  ", &setup_rows(r))?;
+    writeln!(out)?;
+    table(out, "  ", &result_rows(r))
+}
+
+fn ms(v: f64) -> String {
+    format!("{} m/s", human(v, 4))
+}
+
+fn mm(x: f64) -> String {
+    format!("{} mm", human(x * 1e3, 4))
+}
+
+/// The ball, the target, the pair (and the DEM pair with a target preset).
+fn setup_rows(r: &CollisionReport) -> Vec<Vec<String>> {
+    let (t, c) = (&r.target, &r.collision);
+    let ball = format!(
+        "m {}, {} toward the target",
+        mass(r.ball_mass),
+        ms(r.ball_speed)
+    );
+    let target = format!(
+        "M {}, {} toward the ball, {}",
+        mass(t.mass),
+        ms(t.speed),
+        surface(t)
+    );
+    let pair = format!(
+        "m* {}, closing speed {}",
+        mass(c.reduced_mass),
+        ms(c.closing_speed)
+    );
+    let mut rows = vec![
+        vec!["ball".into(), ball],
+        vec!["target".into(), target],
+        vec!["pair".into(), pair],
+    ];
+    if let (Some(m), Some(radius)) = (r.effective_mass, r.effective_radius) {
+        let line = format!("m_eff {}, R_eff {}", mass(m), mm(radius));
+        rows.push(vec!["DEM pair".into(), line]);
+    }
+    rows
+}
+
+/// e, e_A, the speeds out, F_m, t_f, the indentations (and the surface's deflection).
+fn result_rows(r: &CollisionReport) -> Vec<Vec<String>> {
+    let c = &r.collision;
+    let contact = c.contact_time.map_or("– (no rebound)".into(), |t| {
+        format!("{} ms", human(t * 1e3, 4))
+    });
+    let row = |k: &str, v: String| vec![k.to_string(), v];
+    let mut rows = vec![
+        row("COR of the pair e", human(c.cor, 4)),
+        row("apparent COR e_A", human(c.apparent_cor, 4)),
+        row(
+            "ball speed out",
+            format!("{} (away from the target)", ms(c.ball_speed_out)),
+        ),
+        row(
+            "target speed out",
+            format!("{} (in its original direction)", ms(c.target_speed_out)),
+        ),
+        row("peak force F_m", format!("{} N", human(c.max_force, 4))),
+        row("contact time t_f", contact),
+        row("peak indentation z_m", mm(c.max_indentation)),
+        row("permanent indentation z_f", mm(c.permanent_indentation)),
+    ];
+    if !r.target.is_rigid() {
+        rows.push(row("peak surface deflection", mm(c.max_target_deflection)));
+    }
+    rows
+}

@@ -1,0 +1,321 @@
+//! The integrated impact of the reduced ball on a compliant surface, any contact law
+//! (docs/targets.md §4). State x = (z̄, ᾱ', ȳ, s̄), z̄ carried directly as in the adaptive
+//! solver (docs/model.md §8):
+//!
+//! ```text
+//! ᾱ'' = −F̄(z̄),   ȳ' = 2ζ(F̄ − λȳ),   s̄' = 2ζ_s(F̄ − λ_s s̄),   z̄' = ᾱ' − ȳ' − s̄'.
+//! ```
+//!
+//! A surface without damping (c_s = 0) is a spring in series with the contact, s̄ = F̄/λ_s at
+//! all times; differentiating it, s̄' = k z̄'/λ_s with k = dF̄/dz̄ on the branch in force, so that
+//! z̄' = (ᾱ' − ȳ')/(1 + k/λ_s): the constraint is held by the equations rather than solved for.
+//!
+//! Phases as in the adaptive solver: loading until z̄' falls through 0 (unload from z̄_m),
+//! unloading until z̄ falls to z̄_f (F = 0: separation) or rises back past z̄_m (reload). Each
+//! phase is integrated by the `differential-equations` crate's DOP853; events are found on its
+//! dense output (Brent) and the state there by integrating to them. Explicit only: a surface
+//! dashpot so weak that the phase is stiff runs out of the step budget and says so (no answer).
+
+use super::{Outcome, Surface, horizon};
+use crate::model::contact::{Contact, ContactLaw, Unloading};
+use crate::model::params::Normalized;
+use crate::solver::roots::brent;
+use crate::solver::{Method, Unresolved};
+use differential_equations::interpolate::Interpolation;
+use differential_equations::methods::ExplicitRungeKutta;
+use differential_equations::ode::{ODE, solve_ode};
+use differential_equations::prelude::{ControlFlag, Solout};
+use differential_equations::solution::Solution;
+
+type X = [f64; 4];
+
+/// Tolerance of DOP853 (relative; absolute 1e-2 of it: states are of order 1).
+const RTOL: f64 = 1e-12;
+/// Step budget of one phase.
+const MAX_STEPS: usize = 200_000;
+/// Phase budget (load, unload, reload …).
+const MAX_PHASES: usize = 256;
+/// How far past z̄_m, relative, an unloading ball must rise before it reloads (against the
+/// integrator's noise at a slow turn, as `solver::numeric::RELOAD_SLACK`).
+const RELOAD: f64 = 1e-9;
+/// A ball whose remaining energy could not give it a COR above this has come to rest.
+const REST_COR: f64 = 1e-9;
+
+#[derive(Clone, Copy)]
+enum Phase {
+    Loading,
+    Unloading(Unloading),
+}
+
+struct Chain {
+    n: Normalized,
+    s: Surface,
+    contact: Contact,
+    phase: Phase,
+}
+
+impl Chain {
+    fn force(&self, z: f64) -> f64 {
+        match &self.phase {
+            Phase::Loading => self.contact.loading_force(z),
+            Phase::Unloading(u) => self.contact.unloading_force(z, u),
+        }
+    }
+
+    fn stiffness(&self, z: f64) -> f64 {
+        match &self.phase {
+            Phase::Loading => self.contact.loading_stiffness(z),
+            Phase::Unloading(u) => self.contact.unloading_stiffness(z, u),
+        }
+    }
+
+    /// (F̄, ȳ', s̄', z̄') at x.
+    fn rates(&self, x: &X) -> (f64, f64, f64, f64) {
+        let f = self.force(x[0]);
+        let ydot = if self.n.zeta > 0.0 {
+            2.0 * self.n.zeta * (f - self.n.lambda * x[2])
+        } else {
+            0.0
+        };
+        if self.s.zeta_s.is_infinite() {
+            let zdot = (x[1] - ydot) / (1.0 + self.stiffness(x[0]) / self.s.lambda_s);
+            let sdot = self.stiffness(x[0]) * zdot / self.s.lambda_s;
+            (f, ydot, sdot, zdot)
+        } else {
+            let sdot = 2.0 * self.s.zeta_s * (f - self.s.lambda_s * x[3]);
+            (f, ydot, sdot, x[1] - ydot - sdot)
+        }
+    }
+
+    /// What ends the phase, as g crossing 0 upward: the turn (−z̄'), separation (z̄_f − z̄),
+    /// reload (z̄ − z̄_m(1 + RELOAD)).
+    fn watches(&self, x: &X) -> [f64; 2] {
+        match &self.phase {
+            Phase::Loading => [-self.rates(x).3, f64::NEG_INFINITY],
+            Phase::Unloading(u) => [u.z_f - x[0], x[0] - u.z_m * (1.0 + RELOAD)],
+        }
+    }
+
+    /// Twice the energy still held; √ of it bounds the COR.
+    fn energy2(&self, x: &X) -> f64 {
+        let contact = match &self.phase {
+            Phase::Loading => self.contact.loading_work(x[0]),
+            Phase::Unloading(u) => self.contact.unloading_work(x[0], u),
+        };
+        let f = self.force(x[0]);
+        let surface = if self.s.zeta_s.is_infinite() {
+            f * f / self.s.lambda_s
+        } else {
+            self.s.lambda_s * x[3] * x[3]
+        };
+        x[1] * x[1] + 2.0 * contact + self.n.lambda * x[2] * x[2] + surface
+    }
+}
+
+impl ODE<f64, X> for Chain {
+    fn diff(&self, _t: f64, x: &X, dx: &mut X) {
+        let (f, ydot, sdot, zdot) = self.rates(x);
+        *dx = [zdot, -f, ydot, sdot];
+    }
+}
+
+/// Finds the first watched crossing on each step's dense output, and the surface's peak
+/// deflection on it (where s̄' falls through 0).
+struct Watcher<'a> {
+    chain: &'a Chain,
+    hit: Option<(f64, usize, f64, X)>,
+    last: (f64, X),
+    s_max: f64,
+    /// Where s̄ peaks within a step (τ), and the step's start (τ, x) to integrate to it from.
+    peaks: Vec<(f64, f64, X)>,
+}
+
+impl Solout<f64, X> for Watcher<'_> {
+    fn solout<I>(
+        &mut self,
+        t: f64,
+        t_prev: f64,
+        x: &X,
+        x_prev: &X,
+        interp: &mut I,
+        _s: &mut Solution<f64, X>,
+    ) -> ControlFlag<f64, X>
+    where
+        I: Interpolation<f64, X> + ?Sized,
+    {
+        let mut at = |tt: f64| interp.interpolate(tt).unwrap_or(*x);
+        // the surface's peak deflection, where s̄' falls through 0 within the step
+        let sdot = |x: &X| self.chain.rates(x).2;
+        let (da, db) = (sdot(x_prev), sdot(x));
+        if da > 0.0 && db <= 0.0 {
+            let tp = brent(|tt| sdot(&at(tt)), t_prev, t, da, db, 1e-15 * t.abs());
+            self.peaks.push((tp, t_prev, *x_prev));
+        }
+        self.s_max = self.s_max.max(x[3]);
+        self.last = (t, *x);
+        let (ga, gb) = (self.chain.watches(x_prev), self.chain.watches(x));
+        let mut best: Option<(f64, usize)> = None;
+        for i in 0..2 {
+            if ga[i] < 0.0 && gb[i] >= 0.0 {
+                let g = |tt: f64| self.chain.watches(&at(tt))[i];
+                let tc = brent(g, t_prev, t, ga[i], gb[i], 1e-15 * t.abs().max(1e-300));
+                if best.is_none_or(|(bt, _)| tc < bt) {
+                    best = Some((tc, i));
+                }
+            }
+        }
+        match best {
+            Some((tc, i)) => {
+                self.hit = Some((tc, i, t_prev, *x_prev));
+                ControlFlag::Terminate
+            }
+            None => ControlFlag::Continue,
+        }
+    }
+}
+
+/// Keeps the last state reached.
+struct End(f64, X);
+
+impl Solout<f64, X> for End {
+    fn solout<I>(
+        &mut self,
+        t: f64,
+        _tp: f64,
+        x: &X,
+        _xp: &X,
+        _i: &mut I,
+        _s: &mut Solution<f64, X>,
+    ) -> ControlFlag<f64, X>
+    where
+        I: Interpolation<f64, X> + ?Sized,
+    {
+        (self.0, self.1) = (t, *x);
+        ControlFlag::Continue
+    }
+}
+
+fn integrate<O: Solout<f64, X>>(chain: &Chain, t0: f64, x0: X, tf: f64, out: &mut O) -> bool {
+    let mut m = ExplicitRungeKutta::dop853()
+        .rtol(RTOL)
+        .atol(RTOL * 1e-2)
+        .max_steps(MAX_STEPS);
+    t0 >= tf || solve_ode(&mut m, chain, t0, tf, &x0, out).is_ok()
+}
+
+/// The impact, any law; an error is the budget that ran out, with the phases taken.
+pub(super) fn solve(
+    n: &Normalized,
+    law: ContactLaw,
+    s: &Surface,
+) -> Result<Outcome, (Unresolved, usize)> {
+    let contact = Contact {
+        law,
+        zp_bar: n.zp_bar,
+        kappa: n.kappa,
+    };
+    let mut run = Run {
+        chain: Chain {
+            n: *n,
+            s: *s,
+            contact,
+            phase: Phase::Loading,
+        },
+        t_max: horizon(n, s),
+        t: 0.0,
+        x: [0.0, 1.0, 0.0, 0.0],
+        peaks: (0.0, 0.0, 0.0),
+    };
+    for phases in 0..MAX_PHASES {
+        if let Some(end) = run.phase().map_err(|r| (r, phases))? {
+            return Ok(end);
+        }
+    }
+    Err((Unresolved::Phases, MAX_PHASES))
+}
+
+/// A run between phases: the branch in force, where the next phase starts, and the peaks so
+/// far (F̄_m, z̄_m, s̄_m).
+struct Run {
+    chain: Chain,
+    t_max: f64,
+    t: f64,
+    x: X,
+    peaks: (f64, f64, f64),
+}
+
+impl Run {
+    /// One phase, to its event: the outcome when the run is over, `None` when another phase
+    /// follows, or the budget that ran out.
+    fn phase(&mut self) -> Result<Option<Outcome>, Unresolved> {
+        let chain = &self.chain;
+        let (f_max, z_max, mut s_max) = self.peaks;
+        let mut w = Watcher {
+            chain,
+            hit: None,
+            last: (self.t, self.x),
+            s_max,
+            peaks: Vec::new(),
+        };
+        let done = integrate(chain, self.t, self.x, self.t_max, &mut w);
+        s_max = w.s_max;
+        // each peak of the deflection, integrated to rather than read off the dense output
+        for (tp, t0, x0) in std::mem::take(&mut w.peaks) {
+            let mut end = End(t0, x0);
+            if integrate(chain, t0, x0, tp, &mut end) {
+                s_max = s_max.max(end.1[3]);
+            }
+        }
+        let Some((tc, which, tp, xp)) = w.hit else {
+            // the horizon: at rest, or no answer
+            let (t_end, x_end) = w.last;
+            return match (done, chain.energy2(&x_end).sqrt() < REST_COR) {
+                (false, _) => Err(Unresolved::Steps),
+                (true, true) => Ok(Some(outcome(
+                    false,
+                    t_end,
+                    x_end[1],
+                    (f_max, z_max, 0.0, s_max),
+                ))),
+                (true, false) => Err(Unresolved::Horizon),
+            };
+        };
+        // the state at the event, integrated to it rather than read off the dense output
+        let mut end = End(tp, xp);
+        if !integrate(chain, tp, xp, tc, &mut end) {
+            return Err(Unresolved::Steps);
+        }
+        (self.t, self.x) = (tc, end.1);
+        let x = self.x;
+        self.peaks.2 = s_max.max(x[3]);
+        match (self.chain.phase, which) {
+            (Phase::Loading, _) => {
+                let u = self.chain.contact.unload_from(x[0]);
+                self.peaks.0 = f_max.max(u.f_m);
+                self.peaks.1 = z_max.max(u.z_m);
+                self.chain.phase = Phase::Unloading(u);
+            }
+            (Phase::Unloading(u), 0) => {
+                // at rest, the fall of z̄ to z̄_f is the creep's rounding, not a separation
+                let left = self.chain.energy2(&x).sqrt() >= REST_COR;
+                let peaks = (f_max, z_max, u.z_f, self.peaks.2);
+                return Ok(Some(outcome(left, tc, x[1], peaks)));
+            }
+            (Phase::Unloading(_), _) => self.chain.phase = Phase::Loading,
+        }
+        Ok(None)
+    }
+}
+
+fn outcome(rebound: bool, tau: f64, v: f64, (f, z, z_f, s): (f64, f64, f64, f64)) -> Outcome {
+    Outcome {
+        rebound,
+        tau_end: tau,
+        velocity_end: v,
+        f_max: f,
+        z_max: z,
+        z_f,
+        s_max: s,
+        method: Method::Numeric,
+    }
+}
