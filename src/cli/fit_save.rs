@@ -119,7 +119,8 @@ fn header(ball: &Ball, data: &Loaded, f: &MultiFit, when: &str) -> Vec<String> {
 }
 
 /// The fitted ball as a preset: the base preset's ball and material data, the fit as the
-/// adopted set (K_h then follows Eq. 16 from K_p and z_p), `[measured] v0` the data's speed.
+/// adopted set (K_h then follows Eq. 16 from K_p and z_p), `[measured] v0` the data's speed,
+/// m and R the fitted ball's (`--mass`, `--radius`).
 fn preset(
     base: &Preset,
     name: &str,
@@ -135,8 +136,12 @@ fn preset(
         law: ball.law,
         parameters: ParamSource::Adopted,
         measured: Measured {
-            mass: base.measured.mass,
-            radius: base.measured.radius,
+            // the fitted ball's: --mass and --radius replace the base preset's
+            mass: p.mass,
+            radius: ball
+                .measured
+                .as_ref()
+                .map_or(base.measured.radius, |m| m.radius),
             v0: p.v0,
             cor: single,
             max_force: None,

@@ -57,7 +57,8 @@ pub struct RunArgs {
 pub fn run(args: &RunArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     if args.normalized && args.ball.set.any() {
         anyhow::bail!(
-            "--normalized runs m = K_p = v0 = 1: --k-p, --damping, --k-r and --z-p do not apply"
+            "--normalized runs m = K_p = v0 = 1: --mass, --radius, --k-p, --damping, --k-r and \
+             --z-p do not apply"
         );
     }
     ball::check_overrides(&args.ball.set, args.lambda, args.zeta)?;
