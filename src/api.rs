@@ -58,14 +58,19 @@ pub struct Ball {
     pub measured: Option<Measured>,
     /// The preset's description (empty for other balls).
     pub description: String,
+    /// A fitted preset's `[fit]` table, on its adopted set and law: the source of
+    /// [`Ball::intervals`] (`None` for every other ball).
+    pub fit: Option<crate::preset::FitTable>,
 }
 
 mod entry;
 mod error;
 mod fit;
+mod intervals;
 mod report;
 pub use entry::Overrides;
 pub use error::BallError;
+pub use intervals::{Intervals, bands, holds, intervals};
 pub use report::{BallHeader, Energy, FitReport, ImpactReport, MeasuredAt};
 
 impl Ball {
@@ -133,6 +138,7 @@ impl Ball {
             law,
             measured: None,
             description: String::new(),
+            fit: None,
         })
     }
 
@@ -160,6 +166,7 @@ impl Ball {
             law,
             measured: None,
             description: String::new(),
+            fit: None,
         })
     }
 

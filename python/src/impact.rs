@@ -3,7 +3,7 @@
 
 use crate::{array, error};
 use bouncelab::Ball;
-use bouncelab::api::ImpactReport;
+use bouncelab::api::{ImpactReport, Intervals};
 use bouncelab::solver::ImpactResponse;
 use numpy::PyArray1;
 use pyo3::prelude::*;
@@ -65,6 +65,8 @@ pub(crate) struct Impact {
     energy: Option<[f64; 6]>,
     /// t, force, indentation, displacement, when the history was asked for
     history: Option<[Py<PyArray1<f64>>; 4]>,
+    /// 95 % intervals on a fitted preset (docs/fitting.md, "Prediction intervals")
+    intervals: Option<Intervals>,
 }
 
 const MEASURED_KEYS: [&str; 4] = ["v0", "cor", "max_force", "contact_time"];
@@ -80,7 +82,13 @@ const HISTORY_KEYS: [&str; 4] = ["t", "force", "indentation", "displacement"];
 
 impl Impact {
     /// The library's report of the run (`bouncelab run --format json`), as Python values.
-    fn new(py: Python<'_>, b: &Ball, r: &ImpactResponse, history: bool) -> Impact {
+    fn new(
+        py: Python<'_>,
+        b: &Ball,
+        r: &ImpactResponse,
+        history: bool,
+        intervals: Option<Intervals>,
+    ) -> Impact {
         let rep = ImpactReport::new(b, r, history);
         let series = |s: Option<&[f64]>| s.map(|v| array(py, v.to_vec()));
         let h = [rep.t, rep.force, rep.indentation, rep.displacement].map(series);
@@ -126,6 +134,7 @@ impl Impact {
                 [Some(t), Some(f), Some(z), Some(a)] => Some([t, f, z, a]),
                 _ => None,
             },
+            intervals,
         }
     }
 
@@ -158,6 +167,26 @@ impl Impact {
     #[getter]
     fn displacement(&self, py: Python<'_>) -> Option<Py<PyArray1<f64>>> {
         self.series(py, 3)
+    }
+
+    /// The 95 % interval (lo, hi) of the COR on a preset saved by `fit --save`, else None.
+    #[getter]
+    fn cor_ci95(&self) -> Option<(f64, f64)> {
+        self.intervals.map(|i| i.cor_ci95.into())
+    }
+
+    /// The 95 % interval (lo, hi) of the peak force (N) on a fitted preset, else None.
+    #[getter]
+    fn max_force_ci95(&self) -> Option<(f64, f64)> {
+        self.intervals.map(|i| i.max_force_ci95.into())
+    }
+
+    /// The 95 % interval (lo, hi) of the contact time (s) on a fitted preset, else None.
+    #[getter]
+    fn contact_time_ci95(&self) -> Option<(f64, f64)> {
+        self.intervals
+            .and_then(|i| i.contact_time_ci95)
+            .map(Into::into)
     }
 
     /// What was measured (v0, cor, max_force, contact_time), presets only.
@@ -222,6 +251,11 @@ impl Impact {
         d.set_item("contact_time_normalized", self.contact_time_normalized)?;
         d.set_item("measured", self.measured(py)?)?;
         d.set_item("energy", self.energy(py)?)?;
+        if self.intervals.is_some() {
+            d.set_item("cor_ci95", self.cor_ci95())?;
+            d.set_item("max_force_ci95", self.max_force_ci95())?;
+            d.set_item("contact_time_ci95", self.contact_time_ci95())?;
+        }
         for (i, k) in HISTORY_KEYS.iter().enumerate() {
             if let Some(a) = self.series(py, i) {
                 d.set_item(k, a)?;
@@ -258,14 +292,15 @@ pub(crate) fn impact(
     history: bool,
     samples: usize,
 ) -> PyResult<Impact> {
-    let r = py
+    let (r, intervals) = py
         .detach(|| {
-            if history {
+            let r = if history {
                 ball.impact_history(samples)
             } else {
                 ball.impact()
-            }
+            }?;
+            Ok::<_, bouncelab::BallError>((r, ball.intervals().transpose()?))
         })
         .map_err(error)?;
-    Ok(Impact::new(py, &ball, &r, history))
+    Ok(Impact::new(py, &ball, &r, history, intervals))
 }

@@ -135,6 +135,11 @@ impl Ball {
             law: law.unwrap_or(p.law),
             measured: Some(p.measured.clone()),
             description: p.description.clone(),
+            // the table describes the fit's ball: its adopted set under its law
+            fit: p
+                .fit
+                .clone()
+                .filter(|_| source == ParamSource::Adopted && law.is_none_or(|l| l == p.law)),
         })
     }
 

@@ -107,6 +107,10 @@ pub struct ImpactReport<'a> {
     pub measured: Option<MeasuredAt>,
     /// The energy budget, when the run audited it.
     pub energy: Option<Energy>,
+    /// `cor_ci95`, `max_force_ci95`, `contact_time_ci95`: on a fitted preset only
+    /// ([`Ball::intervals`]; set by the caller, `None` from [`ImpactReport::new`]).
+    #[serde(flatten, skip_serializing_if = "Option::is_none")]
+    pub intervals: Option<super::Intervals>,
     /// History times, s (with the history only).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub t: Option<&'a [f64]>,
@@ -158,6 +162,7 @@ impl<'a> ImpactReport<'a> {
                 budget,
                 relative_residual: budget.relative_residual(),
             }),
+            intervals: None,
             t: h(&r.history.t),
             force: h(&r.history.force),
             indentation: h(&r.history.indentation),

@@ -2,11 +2,14 @@
 //! text table, one JSON object, or the trajectory as CSV; with `--standard`, the verdict.
 
 use super::ball::BallArgs;
+use super::intervals_text::line;
 use super::output::{self, csv_row, given, human, num, table};
+use crate::api::{self, Ball, BallError};
 use crate::drop::standards::{self, Reference, Standard, Test, Verdict};
 use crate::drop::{
-    Air, DEFAULT_BOUNCES, DEFAULT_MIN_REBOUND, DropError, DropRun, DropSetup, End, G,
+    Air, DEFAULT_BOUNCES, DEFAULT_MIN_REBOUND, DropBall, DropError, DropRun, DropSetup, End, G,
 };
+use crate::model::params::ImpactParams;
 use clap::{Args, ValueEnum};
 use serde::Serialize;
 use std::io::Write;
@@ -105,15 +108,32 @@ pub fn run(a: &DropArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         min_rebound: a.min_rebound,
     };
     let run = crate::drop::drop(&dball, &setup).map_err(drop_error)?;
+    let bands = bounce_intervals(&b, &dball, &setup)?;
     let verdict = standard
         .map(|s| s.judge(&dball, air))
         .transpose()
         .map_err(drop_error)?;
     match a.format {
-        DropFormat::Json => output::json(out, &report(&run, verdict.as_ref()))?,
+        DropFormat::Json => output::json(out, &report(&run, &bands, verdict.as_ref()))?,
         DropFormat::Csv => trajectory_csv(out, &run)?,
         DropFormat::Text => {
             text(out, &b.label(), &run, standard.zip(verdict), radius)?;
+            if let (Some(i), Some(first), Some(fit)) = (bands.first(), run.bounces.first(), &b.fit)
+            {
+                writeln!(
+                    out,
+                    "\nfirst bounce, 95 % from the preset's fit (delta method, Student t, {} dof):\n  {}\n  {}",
+                    fit.dof,
+                    line("COR", first.cor, i.cor_ci95, 1.0, ""),
+                    line(
+                        "rebound height",
+                        first.rebound_height,
+                        i.rebound_height_ci95,
+                        1e3,
+                        "mm"
+                    )
+                )?;
+            }
             // no standard asked for: name the ball's own, if it has one
             if let (None, Some(own)) = (standard, b.name.as_deref().and_then(standards::for_ball)) {
                 writeln!(
@@ -139,21 +159,81 @@ struct StandardJson {
     margin: f64,
 }
 
+/// One bounce's 95 % intervals on a fitted preset (docs/fitting.md, "Prediction intervals").
+#[derive(Debug, Clone, Copy, Serialize)]
+struct BounceIntervals {
+    cor_ci95: [f64; 2],
+    max_force_ci95: [f64; 2],
+    contact_time_ci95: [f64; 2],
+    rebound_height_ci95: [f64; 2],
+}
+
+/// A bounce, with its intervals when the ball carries a fit.
+#[derive(Serialize)]
+struct BounceRow<'a> {
+    #[serde(flatten)]
+    bounce: &'a crate::drop::Bounce,
+    #[serde(flatten, skip_serializing_if = "Option::is_none")]
+    intervals: Option<BounceIntervals>,
+}
+
+/// The delta method over the whole drop (each perturbed ball dropped again, so the intervals
+/// of later bounces carry the earlier ones'): e, F_m, t_f and the rebound height of every
+/// bounce all runs share; empty without a fit or when an override moved it.
+fn bounce_intervals(
+    b: &Ball,
+    dball: &DropBall,
+    setup: &DropSetup,
+) -> anyhow::Result<Vec<BounceIntervals>> {
+    let Some(fit) = b.fit.as_ref().filter(|f| api::holds(&b.params, f)) else {
+        return Ok(Vec::new());
+    };
+    let outputs = |p: &ImpactParams| -> Result<Vec<f64>, BallError> {
+        let ball = DropBall {
+            params: *p,
+            ..*dball
+        };
+        let run = crate::drop::drop(&ball, setup)?;
+        let per = |x: &crate::drop::Bounce| [x.cor, x.max_force, x.contact_time, x.rebound_height];
+        Ok(run.bounces.iter().flat_map(per).collect())
+    };
+    let bands = api::bands(&b.params, fit, outputs)?;
+    Ok(bands
+        .chunks_exact(4)
+        .map(|c| BounceIntervals {
+            cor_ci95: c[0],
+            max_force_ci95: c[1],
+            contact_time_ci95: c[2],
+            rebound_height_ci95: c[3],
+        })
+        .collect())
+}
+
 /// The JSON document of the issue, SI: `standard` only with `--standard`.
 #[derive(Serialize)]
 struct Report<'a> {
     height: f64,
     drag: bool,
-    bounces: &'a [crate::drop::Bounce],
+    bounces: Vec<BounceRow<'a>>,
     #[serde(skip_serializing_if = "Option::is_none")]
     standard: Option<StandardJson>,
 }
 
-fn report<'a>(run: &'a DropRun, v: Option<&Verdict>) -> Report<'a> {
+fn report<'a>(run: &'a DropRun, bands: &[BounceIntervals], v: Option<&Verdict>) -> Report<'a> {
+    let bands = bands
+        .iter()
+        .copied()
+        .map(Some)
+        .chain(std::iter::repeat(None));
     Report {
         height: run.setup.height,
         drag: run.drag(),
-        bounces: &run.bounces,
+        bounces: run
+            .bounces
+            .iter()
+            .zip(bands)
+            .map(|(bounce, intervals)| BounceRow { bounce, intervals })
+            .collect(),
         standard: v.map(|v| StandardJson {
             name: v.name,
             window: v.window,

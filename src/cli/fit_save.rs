@@ -8,7 +8,7 @@ use crate::analysis::fit::MultiFit;
 use crate::api::Ball;
 use crate::catalog::{self, Catalog, Origin};
 use crate::model::params::ImpactParams;
-use crate::preset::{Adopted, Measured, ParamSource, Preset};
+use crate::preset::{Adopted, FitTable, Measured, ParamSource, Preset};
 use std::path::{Path, PathBuf};
 
 fn dir() -> anyhow::Result<PathBuf> {
@@ -126,6 +126,7 @@ fn preset(
     name: &str,
     ball: &Ball,
     data: &Loaded,
+    f: &MultiFit,
     p: &ImpactParams,
     when: &str,
 ) -> Preset {
@@ -154,7 +155,33 @@ fn preset(
             k_p: Some(p.k_p),
             k_r: p.k_r,
         },
+        fit: fit_table(f),
     }
+}
+
+/// The fit's uncertainty as the preset's `[fit]` table (docs/fitting.md, "Prediction
+/// intervals"): cov_ij = r_ij s_i s_j of the free parameters' correlations and standard errors,
+/// dof = n − p; `None` when no degree of freedom is left or a standard error is not finite.
+fn fit_table(f: &MultiFit) -> Option<FitTable> {
+    let dof = f.points.checked_sub(f.names.len()).filter(|&d| d > 0)?;
+    let se: Vec<f64> = f.fitted.iter().map(|e| e.std_error).collect();
+    if se.iter().any(|s| !s.is_finite()) {
+        return None;
+    }
+    let k = se.len();
+    // r_ij s_i s_j, symmetric to the last bit
+    let cov =
+        |i: usize, j: usize| 0.5 * (f.correlation[i][j] + f.correlation[j][i]) * (se[i] * se[j]);
+    let covariance = (0..k)
+        .map(|i| (0..k).map(|j| cov(i, j)).collect())
+        .collect();
+    Some(FitTable {
+        free: f.fitted.iter().map(|e| e.name.to_string()).collect(),
+        values: f.fitted.iter().map(|e| e.value).collect(),
+        covariance,
+        dof: u32::try_from(dof).ok()?,
+        residual_sd: f.rms_residual * (f.points as f64 / dof as f64).sqrt(),
+    })
 }
 
 /// Write the preset; returns its path.
@@ -172,7 +199,7 @@ pub fn save(
     )?
     .preset;
     let when = now_utc();
-    let preset = preset(&base, name, ball, data, p, &when);
+    let preset = preset(&base, name, ball, data, f, p, &when);
     let text = preset.to_toml(&header(ball, data, f, &when));
     Preset::parse(&text, name)
         .map_err(|e| anyhow::anyhow!("the fitted ball is not a valid preset: {e}"))?;

@@ -18,6 +18,7 @@ pub mod fit_multi;
 mod fit_plot;
 mod fit_report;
 mod fit_save;
+mod intervals_text;
 pub mod map;
 pub mod measured_file;
 pub mod number;
