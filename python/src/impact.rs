@@ -304,3 +304,19 @@ pub(crate) fn impact(
         .map_err(error)?;
     Ok(Impact::new(py, &ball, &r, history, intervals))
 }
+
+/// `NAME_ci95_lo` and `NAME_ci95_hi` arrays in `d`, one entry per row of `bands`.
+pub(crate) fn interval_columns<const N: usize>(
+    py: Python<'_>,
+    d: &Bound<'_, PyDict>,
+    names: [&str; N],
+    bands: &[[[f64; 2]; N]],
+) -> PyResult<()> {
+    for (k, name) in names.iter().enumerate() {
+        for (side, end) in ["lo", "hi"].iter().enumerate() {
+            let v: Vec<f64> = bands.iter().map(|b| b[k][side]).collect();
+            d.set_item(format!("{name}_ci95_{end}"), array(py, v))?;
+        }
+    }
+    Ok(())
+}

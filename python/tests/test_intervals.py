@@ -21,7 +21,8 @@ def binary():
     return path
 
 
-def test_a_fitted_preset_carries_its_intervals(tmp_path, monkeypatch):
+def fitted(tmp_path, monkeypatch):
+    """A preset `bbfit` fitted to noisy baseball CORs and saved; the environment for the CLI."""
     home = tmp_path / "config"
     monkeypatch.setenv("XDG_CONFIG_HOME", str(home))
     monkeypatch.setenv("HOME", str(home))
@@ -34,14 +35,17 @@ def test_a_fitted_preset_carries_its_intervals(tmp_path, monkeypatch):
     env = dict(os.environ)
     fit = [binary(), "fit", "--preset", "baseball", "--cor-table", str(table), "--save", "bbfit"]
     subprocess.run(fit, check=True, capture_output=True, env=env)
-    cli = json.loads(
-        subprocess.run(
-            [binary(), "run", "--preset", "bbfit", "--v0", "45", "--format", "json"],
-            check=True,
-            capture_output=True,
-            env=env,
-        ).stdout
-    )
+    return env
+
+
+def cli_json(env, *args):
+    out = subprocess.run([binary(), *args, "--format", "json"], check=True, capture_output=True, env=env)
+    return json.loads(out.stdout)
+
+
+def test_a_fitted_preset_carries_its_intervals(tmp_path, monkeypatch):
+    env = fitted(tmp_path, monkeypatch)
+    cli = cli_json(env, "run", "--preset", "bbfit", "--v0", "45")
     r = bouncelab.run(preset="bbfit", v0=45)
     for key in ["cor_ci95", "max_force_ci95", "contact_time_ci95"]:
         lo, hi = getattr(r, key)
@@ -52,3 +56,23 @@ def test_a_fitted_preset_carries_its_intervals(tmp_path, monkeypatch):
     assert r.cor_ci95[0] < r.cor < r.cor_ci95[1]
     plain = bouncelab.run(preset="baseball")
     assert plain.cor_ci95 is None and "cor_ci95" not in plain.to_dict()
+
+
+def test_sweep_and_drop_carry_them_too(tmp_path, monkeypatch):
+    env = fitted(tmp_path, monkeypatch)
+    rows = cli_json(env, "sweep", "velocity", "--preset", "bbfit", "--points", "4")["rows"]
+    sweep = bouncelab.sweep_velocity(preset="bbfit", speeds=[r["v0"] for r in rows])
+    bounces = cli_json(env, "drop", "--preset", "bbfit", "--bounces", "3")["bounces"]
+    drop = bouncelab.drop(preset="bbfit", bounces=3)["bounces"]
+    for table, cli, keys in [
+        (sweep, rows, ["cor", "max_force", "contact_time"]),
+        (drop, bounces, ["cor", "max_force", "contact_time", "rebound_height"]),
+    ]:
+        for key in keys:
+            for i, row in enumerate(cli):
+                lo, hi = row[f"{key}_ci95"]
+                assert table[f"{key}_ci95_lo"][i] == pytest.approx(lo, rel=1e-12)
+                assert table[f"{key}_ci95_hi"][i] == pytest.approx(hi, rel=1e-12)
+                assert lo <= row[key] <= hi
+    assert "cor_ci95_lo" not in bouncelab.sweep_velocity(preset="baseball", speeds=[1.0])
+    assert "cor_ci95_lo" not in bouncelab.drop(preset="baseball", bounces=1)["bounces"]

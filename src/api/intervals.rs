@@ -103,4 +103,34 @@ impl Ball {
         let fit = self.fit.as_ref()?;
         holds(&self.params, fit).then(|| intervals(&self.params, self.law, fit))
     }
+
+    /// The 95 % intervals of every bounce of a drop, (e, F_m, t_f, rebound height) each, by
+    /// the delta method over the whole drop (each perturbed ball dropped again, so a later
+    /// bounce's interval carries the earlier ones'), for the bounces every run shares; `None`
+    /// as for [`Ball::intervals`].
+    pub fn drop_intervals(
+        &self,
+        setup: &crate::drop::DropSetup,
+    ) -> Option<Result<Vec<[[f64; 2]; 4]>, BallError>> {
+        let fit = self.fit.as_ref()?;
+        if !holds(&self.params, fit) {
+            return None;
+        }
+        let dball = self.drop_ball();
+        let outputs = |p: &ImpactParams| -> Result<Vec<f64>, BallError> {
+            let ball = crate::drop::DropBall {
+                params: *p,
+                ..dball
+            };
+            let run = crate::drop::drop(&ball, setup)?;
+            let per =
+                |x: &crate::drop::Bounce| [x.cor, x.max_force, x.contact_time, x.rebound_height];
+            Ok(run.bounces.iter().flat_map(per).collect())
+        };
+        Some(bands(&self.params, fit, outputs).map(|b| {
+            b.chunks_exact(4)
+                .map(|c| [c[0], c[1], c[2], c[3]])
+                .collect()
+        }))
+    }
 }

@@ -4,12 +4,11 @@
 use super::ball::BallArgs;
 use super::intervals_text::line;
 use super::output::{self, csv_row, given, human, num, table};
-use crate::api::{self, Ball, BallError};
+use crate::api::Ball;
 use crate::drop::standards::{self, Reference, Standard, Test, Verdict};
 use crate::drop::{
-    Air, DEFAULT_BOUNCES, DEFAULT_MIN_REBOUND, DropBall, DropError, DropRun, DropSetup, End, G,
+    Air, DEFAULT_BOUNCES, DEFAULT_MIN_REBOUND, DropError, DropRun, DropSetup, End, G,
 };
-use crate::model::params::ImpactParams;
 use clap::{Args, ValueEnum};
 use serde::Serialize;
 use std::io::Write;
@@ -108,7 +107,7 @@ pub fn run(a: &DropArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         min_rebound: a.min_rebound,
     };
     let run = crate::drop::drop(&dball, &setup).map_err(drop_error)?;
-    let bands = bounce_intervals(&b, &dball, &setup)?;
+    let bands = bounce_intervals(&b, &setup)?;
     let verdict = standard
         .map(|s| s.judge(&dball, air))
         .transpose()
@@ -177,29 +176,14 @@ struct BounceRow<'a> {
     intervals: Option<BounceIntervals>,
 }
 
-/// The delta method over the whole drop (each perturbed ball dropped again, so the intervals
-/// of later bounces carry the earlier ones'): e, F_m, t_f and the rebound height of every
-/// bounce all runs share; empty without a fit or when an override moved it.
-fn bounce_intervals(
-    b: &Ball,
-    dball: &DropBall,
-    setup: &DropSetup,
-) -> anyhow::Result<Vec<BounceIntervals>> {
-    let Some(fit) = b.fit.as_ref().filter(|f| api::holds(&b.params, f)) else {
+/// A fitted preset's bounce intervals ([`Ball::drop_intervals`]); empty without a fit or when
+/// an override moved it.
+fn bounce_intervals(b: &Ball, setup: &DropSetup) -> anyhow::Result<Vec<BounceIntervals>> {
+    let Some(bands) = b.drop_intervals(setup).transpose()? else {
         return Ok(Vec::new());
     };
-    let outputs = |p: &ImpactParams| -> Result<Vec<f64>, BallError> {
-        let ball = DropBall {
-            params: *p,
-            ..*dball
-        };
-        let run = crate::drop::drop(&ball, setup)?;
-        let per = |x: &crate::drop::Bounce| [x.cor, x.max_force, x.contact_time, x.rebound_height];
-        Ok(run.bounces.iter().flat_map(per).collect())
-    };
-    let bands = api::bands(&b.params, fit, outputs)?;
     Ok(bands
-        .chunks_exact(4)
+        .iter()
         .map(|c| BounceIntervals {
             cor_ci95: c[0],
             max_force_ci95: c[1],
