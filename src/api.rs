@@ -58,17 +58,22 @@ pub struct Ball {
     pub measured: Option<Measured>,
     /// The preset's description (empty for other balls).
     pub description: String,
+    /// A fitted preset's `[fit]` table, on its adopted set and law: the source of
+    /// [`Ball::intervals`] (`None` for every other ball).
+    pub fit: Option<crate::preset::FitTable>,
 }
 
 mod collide;
 mod entry;
 mod error;
 mod fit;
+mod intervals;
 mod report;
 mod warnings;
 pub use collide::CollisionReport;
 pub use entry::Overrides;
 pub use error::BallError;
+pub use intervals::{Intervals, bands, holds, intervals};
 pub use report::{BallHeader, Energy, FitReport, ImpactReport, MeasuredAt};
 pub use warnings::{ENERGY_RESIDUAL_MAX, indentation_warning};
 
@@ -137,6 +142,7 @@ impl Ball {
             law,
             measured: None,
             description: String::new(),
+            fit: None,
         })
     }
 
@@ -164,6 +170,7 @@ impl Ball {
             law,
             measured: None,
             description: String::new(),
+            fit: None,
         })
     }
 

@@ -6,8 +6,11 @@ use crate::model::materials::{self, Layer};
 use crate::model::params::ImpactParams;
 use serde::{Deserialize, Serialize};
 
+mod fit_table;
 mod text;
 mod usable;
+
+pub use fit_table::FitTable;
 
 /// The three balls of the paper, embedded in the binary, first; then the balls of the drop
 /// tests (docs/drop.md, "The new balls").
@@ -147,6 +150,9 @@ pub struct Preset {
     pub material: Material,
     /// The parameters the paper (or the preset's author) adopted.
     pub adopted: Adopted,
+    /// A fitted preset's uncertainty (`fit … --save`): the source of its 95 % intervals.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub fit: Option<FitTable>,
 }
 
 fn default_law() -> ContactLaw {

@@ -169,3 +169,36 @@ fn unreachable_rule_inputs_are_said() {
     assert!(t.contains("not representable"), "{t}");
     assert!(!t.contains("coefficientRestitution peratomtypepair"), "{t}");
 }
+
+/// The MuJoCo comment's contact time is the clipped Kelvin–Voigt one, 2 arccos ζ / ω_d
+/// (docs/peers.md §3), not the undamped half-period π/ω, and the advised step is that time
+/// over a whole number of steps; the geom carries `priority="1"` so the plane's solimp and
+/// condim are not mixed in (python/tests/test_exports_real.py runs it in MuJoCo).
+#[test]
+fn mujoco_step_comes_from_the_clipped_contact_time() {
+    let b = ball();
+    for target in [0.3, 0.84] {
+        let s = ExportSet::new(&b, target, "golf").unwrap();
+        let t = snippet(Code::Mujoco, &s);
+        let sol = numbers_after(&t, "<geom", "", "solref=\"", 2);
+        let (omega, zeta) = ((-sol[0]).sqrt(), -sol[1] / (2.0 * (-sol[0]).sqrt()));
+        let t_c = 2.0 * zeta.acos() / (omega * (1.0 - zeta * zeta).sqrt());
+        let said = numbers_after(&t, "The contact lasts", "", "lasts", 1)[0];
+        assert!((said - t_c).abs() < 1e-9 * t_c, "{said} vs {t_c}");
+        let h = numbers_after(&t, "<option", "", "timestep=\"", 1)[0];
+        let n = t_c / h;
+        assert!((n - n.round()).abs() < 1e-6 && n >= 20.0, "t_c/h = {n}");
+        assert!(t.contains("priority=\"1\" condim=\"1\""), "{t}");
+    }
+}
+
+/// LAMMPS gets a `timestep` line (before the fixes it holds for).
+#[test]
+fn lammps_snippet_advises_a_timestep() {
+    let s = ExportSet::new(&ball(), 0.5, "golf").unwrap();
+    let t = snippet(Code::Lammps, &s);
+    let h = numbers_after(&t, "timestep", "", "timestep", 1)[0];
+    let t_c = PI * (ball().mass / ball().k).sqrt();
+    assert!(h > 0.0 && h < t_c / 20.0, "{h}");
+    assert_eq!(Some(h), s.lammps_timestep);
+}

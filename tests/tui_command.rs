@@ -203,9 +203,9 @@ fn every_export_csv_starts_with_the_line_and_the_parameters() {
 }
 
 /// The form's K_p and z_p are `run`'s --k-p and --z-p: with λ and ζ moved too, the line
-/// still runs to the screen. A mass typed in the form is not carried, and `y` says so.
+/// still runs to the screen; so do a mass and a radius typed after them (`--mass`, `--radius`).
 #[test]
-fn form_values_run_to_the_screen_or_are_named_as_not_carried() {
+fn form_values_run_to_the_screen() {
     use bouncelab::tui::physical::Field;
     let home = tempfile::tempdir().unwrap();
     let mut a = app(0);
@@ -226,9 +226,37 @@ fn form_values_run_to_the_screen_or_are_named_as_not_carried() {
     );
     assert_same_run(&a, &run_json(&line, home.path()));
     set_setting(&mut a, Field::Mass, 0.05);
+    set_setting(&mut a, Field::Radius, 0.025);
+    let line = shown(&mut a);
+    assert!(line.contains(" --mass 0.05 --radius 0.025 --k-p 61000 --z-p 0.003 --lambda "));
+    assert_same_run(&a, &run_json(&line, home.path()));
+    let v = run_json(&line, home.path());
+    assert_eq!(common::f(&v, "mass"), 0.05);
     type_keys(&mut a, "y");
-    let m = a.message().expect("a warning").text.clone();
-    assert!(m.contains("m typed in the form"), "{m}");
+    assert!(
+        a.message().is_none(),
+        "nothing left uncarried: {:?}",
+        a.message()
+    );
+}
+
+/// Issue 27: after a mass typed in the form (50 g), `y` printed `bouncelab run --preset superball
+/// --v0 3.12`, which runs e 0.7506 where the screen shows 0.7395. The line now carries the
+/// mass and runs to the screen's numbers.
+#[test]
+fn a_typed_mass_runs_to_the_screen() {
+    use bouncelab::tui::physical::Field;
+    let home = tempfile::tempdir().unwrap();
+    let mut a = app(0);
+    set_setting(&mut a, Field::Mass, 0.05);
+    let on_screen = a.run().expect("a run").cor;
+    assert!((on_screen - 0.7395).abs() < 5e-5, "{on_screen}");
+    let line = shown(&mut a);
+    assert_eq!(
+        line,
+        "bouncelab run --preset superball --mass 0.05 --v0 3.12"
+    );
+    assert_same_run(&a, &run_json(&line, home.path()));
 }
 
 /// Type `value` for `field` in the form (`m`), then close it.

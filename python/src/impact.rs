@@ -3,7 +3,7 @@
 
 use crate::{array, error};
 use bouncelab::Ball;
-use bouncelab::api::ImpactReport;
+use bouncelab::api::{ImpactReport, Intervals};
 use bouncelab::solver::ImpactResponse;
 use numpy::PyArray1;
 use pyo3::prelude::*;
@@ -68,6 +68,8 @@ pub(crate) struct Impact {
     /// What the caller should know about this answer (the JSON's `warnings`).
     #[pyo3(get)]
     warnings: Vec<String>,
+    /// 95 % intervals on a fitted preset (docs/fitting.md, "Prediction intervals")
+    intervals: Option<Intervals>,
 }
 
 const MEASURED_KEYS: [&str; 4] = ["v0", "cor", "max_force", "contact_time"];
@@ -83,7 +85,13 @@ const HISTORY_KEYS: [&str; 4] = ["t", "force", "indentation", "displacement"];
 
 impl Impact {
     /// The library's report of the run (`bouncelab run --format json`), as Python values.
-    fn new(py: Python<'_>, b: &Ball, r: &ImpactResponse, history: bool) -> Impact {
+    fn new(
+        py: Python<'_>,
+        b: &Ball,
+        r: &ImpactResponse,
+        history: bool,
+        intervals: Option<Intervals>,
+    ) -> Impact {
         let rep = ImpactReport::new(b, r, history);
         let series = |s: Option<&[f64]>| s.map(|v| array(py, v.to_vec()));
         let h = [rep.t, rep.force, rep.indentation, rep.displacement].map(series);
@@ -130,6 +138,7 @@ impl Impact {
                 _ => None,
             },
             warnings: rep.warnings,
+            intervals,
         }
     }
 
@@ -162,6 +171,26 @@ impl Impact {
     #[getter]
     fn displacement(&self, py: Python<'_>) -> Option<Py<PyArray1<f64>>> {
         self.series(py, 3)
+    }
+
+    /// The 95 % interval (lo, hi) of the COR on a preset saved by `fit --save`, else None.
+    #[getter]
+    fn cor_ci95(&self) -> Option<(f64, f64)> {
+        self.intervals.map(|i| i.cor_ci95.into())
+    }
+
+    /// The 95 % interval (lo, hi) of the peak force (N) on a fitted preset, else None.
+    #[getter]
+    fn max_force_ci95(&self) -> Option<(f64, f64)> {
+        self.intervals.map(|i| i.max_force_ci95.into())
+    }
+
+    /// The 95 % interval (lo, hi) of the contact time (s) on a fitted preset, else None.
+    #[getter]
+    fn contact_time_ci95(&self) -> Option<(f64, f64)> {
+        self.intervals
+            .and_then(|i| i.contact_time_ci95)
+            .map(Into::into)
     }
 
     /// What was measured (v0, cor, max_force, contact_time), presets only.
@@ -227,6 +256,11 @@ impl Impact {
         d.set_item("measured", self.measured(py)?)?;
         d.set_item("energy", self.energy(py)?)?;
         d.set_item("warnings", self.warnings.clone())?;
+        if self.intervals.is_some() {
+            d.set_item("cor_ci95", self.cor_ci95())?;
+            d.set_item("max_force_ci95", self.max_force_ci95())?;
+            d.set_item("contact_time_ci95", self.contact_time_ci95())?;
+        }
         for (i, k) in HISTORY_KEYS.iter().enumerate() {
             if let Some(a) = self.series(py, i) {
                 d.set_item(k, a)?;
@@ -263,14 +297,31 @@ pub(crate) fn impact(
     history: bool,
     samples: usize,
 ) -> PyResult<Impact> {
-    let r = py
+    let (r, intervals) = py
         .detach(|| {
-            if history {
+            let r = if history {
                 ball.impact_history(samples)
             } else {
                 ball.impact()
-            }
+            }?;
+            Ok::<_, bouncelab::BallError>((r, ball.intervals().transpose()?))
         })
         .map_err(error)?;
-    Ok(Impact::new(py, &ball, &r, history))
+    Ok(Impact::new(py, &ball, &r, history, intervals))
+}
+
+/// `NAME_ci95_lo` and `NAME_ci95_hi` arrays in `d`, one entry per row of `bands`.
+pub(crate) fn interval_columns<const N: usize>(
+    py: Python<'_>,
+    d: &Bound<'_, PyDict>,
+    names: [&str; N],
+    bands: &[[[f64; 2]; N]],
+) -> PyResult<()> {
+    for (k, name) in names.iter().enumerate() {
+        for (side, end) in ["lo", "hi"].iter().enumerate() {
+            let v: Vec<f64> = bands.iter().map(|b| b[k][side]).collect();
+            d.set_item(format!("{name}_ci95_{end}"), array(py, v))?;
+        }
+    }
+    Ok(())
 }

@@ -6,7 +6,7 @@
 //! solver could not bring to an end: the command line's exit code 1).
 
 use bouncelab::analysis::fit::Fit;
-use bouncelab::api::FitReport;
+use bouncelab::api::{self, FitReport};
 use bouncelab::catalog::{self, Catalog, Entry, Origin};
 use bouncelab::model::params::ImpactParams;
 use bouncelab::preset::ParamSource;
@@ -21,7 +21,7 @@ mod collide;
 mod fits;
 mod impact;
 
-use impact::{Impact, impact};
+use impact::{Impact, impact, interval_columns};
 
 create_exception!(
     bouncelab,
@@ -270,6 +270,25 @@ fn sweep_velocity<'py>(
     d.set_item("max_force", col(|r| r.max_force))?;
     d.set_item("contact_time", col(|r| none_as_nan(r.contact_time)))?;
     d.set_item("permanent_indentation", col(|r| r.permanent_indentation))?;
+    // a fitted preset's 95 % intervals at each speed (docs/fitting.md), as the CSV's columns
+    if let Some(fit) = ball.fit.as_ref().filter(|f| api::holds(&ball.params, f)) {
+        let bands = py
+            .detach(|| {
+                rows.iter()
+                    .map(|r| {
+                        let p = ImpactParams {
+                            v0: r.v0,
+                            ..ball.params
+                        };
+                        let i = api::intervals(&p, ball.law, fit)?;
+                        let t = i.contact_time_ci95.unwrap_or([f64::NAN; 2]);
+                        Ok([i.cor_ci95, i.max_force_ci95, t])
+                    })
+                    .collect::<Result<Vec<_>, BallError>>()
+            })
+            .map_err(error)?;
+        interval_columns(py, &d, ["cor", "max_force", "contact_time"], &bands)?;
+    }
     Ok(d)
 }
 
@@ -347,6 +366,13 @@ fn drop_test<'py>(
     b.set_item("contact_time", col(|r| r.contact_time))?;
     b.set_item("max_force", col(|r| r.max_force))?;
     b.set_item("t_start", col(|r| r.t_start))?;
+    if let Some(bands) = py
+        .detach(|| ball.drop_intervals(&setup).transpose())
+        .map_err(error)?
+    {
+        let names = ["cor", "max_force", "contact_time", "rebound_height"];
+        interval_columns(py, &b, names, &bands)?;
+    }
     let d = PyDict::new(py);
     d.set_item("height", run.setup.height)?;
     d.set_item("drag", run.drag())?;

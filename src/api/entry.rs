@@ -1,19 +1,31 @@
 //! A preset ball with the caller's choices applied: parameter set, contact law, speed and
-//! parameter overrides — what the command line's `--params`, `--law`, `--v0`, `--k-p`,
-//! `--damping`, `--k-r`, `--z-p` choose, checked here once for the command line, the explorer's
-//! exports and the Python package.
+//! parameter overrides — what the command line's `--params`, `--law`, `--v0`, `--mass`,
+//! `--radius`, `--k-p`, `--damping`, `--k-r`, `--z-p` choose, checked here once for the command
+//! line, the explorer's exports and the Python package.
+//!
+//! `--mass` and `--radius` replace the preset's measured m and R, the ball its parameter set is
+//! derived from (docs/presets.md, "Mass and radius"): with the adopted set m is the model's mass
+//! (K_p, c, K_r, z_p, K_h stay: λ stays, ζ = √(m K_p)/(2c) moves) and R enters no parameter
+//! (K_h is Eq. 16's) but what reads the ball's size — air drag and buoyancy (`drop`), the
+//! peers' radius (`peers`, the exports' k_n = K_h/√R), the check z_m < R; with the materials
+//! set everything derived from m and R follows as well: the density when not given, K_h
+//! (Eq. 8), z_p and K_p (Eqs. 15–20), c (Eq. 5).
 
 use super::{Ball, BallError};
 use crate::analysis::fit::{Param, apply};
 use crate::catalog::{Entry, Origin};
 use crate::model::contact::ContactLaw;
 use crate::model::params::{Field, ImpactParams, check_positive};
-use crate::preset::ParamSource;
+use crate::preset::{ParamSource, Preset};
 
 /// Parameters set over a preset's, SI units (`None` keeps the preset's), so that a fitted ball
 /// can be tried without editing its TOML. K_h follows K_p and z_p (Eq. 16) when either is set.
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
 pub struct Overrides {
+    /// Mass m, kg (the preset's measured mass replaced; see the module docs).
+    pub mass: Option<f64>,
+    /// Radius R, m (the preset's measured radius replaced; see the module docs).
+    pub radius: Option<f64>,
     /// Contact stiffness K_p, N/m.
     pub k_p: Option<f64>,
     /// Dashpot c, kg/s.
@@ -27,12 +39,35 @@ pub struct Overrides {
 impl Overrides {
     /// Whether any value is set.
     pub fn any(&self) -> bool {
+        self.mass.is_some() || self.radius.is_some() || self.parameters()
+    }
+
+    /// Whether any of K_p, c, K_r, z_p is set.
+    pub fn parameters(&self) -> bool {
         self.k_p.is_some() || self.damping.is_some() || self.k_r.is_some() || self.z_p.is_some()
     }
 
-    /// The values set on `params`; each checked (finite, positive, in 1e-15 … 1e15) and named
-    /// by its field, `params` unchanged on an error.
+    /// `preset` with the mass and radius given as its measured ones, each checked and named.
+    pub fn sized(&self, preset: &Preset) -> Result<Preset, BallError> {
+        let mut p = preset.clone();
+        if let Some(m) = self.mass {
+            check_positive(Field::Mass, m)?;
+            p.measured.mass = m;
+        }
+        if let Some(r) = self.radius {
+            check_positive(Field::Radius, r)?;
+            p.measured.radius = r;
+        }
+        Ok(p)
+    }
+
+    /// The values set on `params` (m included; R is no parameter, [`Overrides::sized`] sets
+    /// it); each checked (finite, positive, in 1e-15 … 1e15) and named by its field, `params`
+    /// unchanged on an error.
     pub fn apply(&self, params: &mut ImpactParams) -> Result<(), BallError> {
+        if let Some(m) = self.mass {
+            check_positive(Field::Mass, m)?;
+        }
         let given = [
             (Param::KP, Field::KP, self.k_p),
             (Param::C, Field::Damping, self.damping),
@@ -49,6 +84,9 @@ impl Overrides {
             }
         }
         *params = apply(params, &free, &values);
+        if let Some(m) = self.mass {
+            params.mass = m;
+        }
         Ok(())
     }
 }
@@ -66,7 +104,7 @@ impl Ball {
         v0: Option<f64>,
         overrides: &Overrides,
     ) -> Result<Ball, BallError> {
-        let p = &entry.preset;
+        let p = &overrides.sized(&entry.preset)?;
         let source = source.unwrap_or(p.parameters);
         let mut params = p.params_from(source);
         if let Some(v0) = v0 {
@@ -97,6 +135,11 @@ impl Ball {
             law: law.unwrap_or(p.law),
             measured: Some(p.measured.clone()),
             description: p.description.clone(),
+            // the table describes the fit's ball: its adopted set under its law
+            fit: p
+                .fit
+                .clone()
+                .filter(|_| source == ParamSource::Adopted && law.is_none_or(|l| l == p.law)),
         })
     }
 

@@ -110,6 +110,10 @@ pub struct ImpactReport<'a> {
     /// What the caller should know about this answer ([`Ball::warnings`]); empty when
     /// nothing.
     pub warnings: Vec<String>,
+    /// `cor_ci95`, `max_force_ci95`, `contact_time_ci95`: on a fitted preset only
+    /// ([`Ball::intervals`]; set by the caller, `None` from [`ImpactReport::new`]).
+    #[serde(flatten, skip_serializing_if = "Option::is_none")]
+    pub intervals: Option<super::Intervals>,
     /// History times, s (with the history only).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub t: Option<&'a [f64]>,
@@ -162,6 +166,7 @@ impl<'a> ImpactReport<'a> {
                 relative_residual: budget.relative_residual(),
             }),
             warnings: ball.warnings(r),
+            intervals: None,
             t: h(&r.history.t),
             force: h(&r.history.force),
             indentation: h(&r.history.indentation),

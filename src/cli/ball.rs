@@ -79,9 +79,13 @@ pub struct BallArgs {
 }
 
 /// Parameters set on the command line over the preset's, so that a fitted ball can be tried
-/// without editing TOML. K_h follows K_p and z_p (Eq. 16) when either is set.
+/// without editing TOML. K_h follows K_p and z_p (Eq. 16) when either is set; `--mass` and
+/// `--radius` replace the measured m and R the parameter set is derived from
+/// ([`api::Overrides`]).
 #[derive(Debug, Clone, Default, Args)]
 pub struct Overrides {
+    #[command(flatten)]
+    pub size: Size,
     /// Contact stiffness K_p, N/m [default: the preset's]
     #[arg(long = "k-p", value_name = "N/m", value_parser = super::number::number, allow_hyphen_values = true)]
     pub k_p: Option<f64>,
@@ -96,10 +100,24 @@ pub struct Overrides {
     pub z_p: Option<f64>,
 }
 
+/// The ball's mass and radius over the preset's measured ones (every command that takes a
+/// ball, `map` included).
+#[derive(Debug, Clone, Default, Args)]
+pub struct Size {
+    /// Mass m, kg [default: the preset's measured mass]
+    #[arg(long, value_name = "kg", value_parser = super::number::number, allow_hyphen_values = true)]
+    pub mass: Option<f64>,
+    /// Radius R, m: air drag, the peers' radius, z_m < R; K_h etc. with --params materials [default: the preset's]
+    #[arg(long, value_name = "m", value_parser = super::number::number, allow_hyphen_values = true)]
+    pub radius: Option<f64>,
+}
+
 impl Overrides {
     /// The values given, for the library to apply and check ([`api::Overrides`]).
     pub fn values(&self) -> api::Overrides {
         api::Overrides {
+            mass: self.size.mass,
+            radius: self.size.radius,
             k_p: self.k_p,
             damping: self.damping,
             k_r: self.k_r,
@@ -107,7 +125,7 @@ impl Overrides {
         }
     }
 
-    /// Whether any of `--k-p`, `--damping`, `--k-r`, `--z-p` was given.
+    /// Whether any of `--mass`, `--radius`, `--k-p`, `--damping`, `--k-r`, `--z-p` was given.
     pub fn any(&self) -> bool {
         self.values().any()
     }

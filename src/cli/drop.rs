@@ -2,7 +2,9 @@
 //! text table, one JSON object, or the trajectory as CSV; with `--standard`, the verdict.
 
 use super::ball::BallArgs;
+use super::intervals_text::line;
 use super::output::{self, csv_row, given, human, num, table};
+use crate::api::Ball;
 use crate::drop::standards::{self, Reference, Standard, Test, Verdict};
 use crate::drop::{
     Air, DEFAULT_BOUNCES, DEFAULT_MIN_REBOUND, DropError, DropRun, DropSetup, End, G,
@@ -105,13 +107,14 @@ pub fn run(a: &DropArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         min_rebound: a.min_rebound,
     };
     let run = crate::drop::drop(&dball, &setup).map_err(drop_error)?;
+    let bands = bounce_intervals(&b, &setup)?;
     let verdict = standard
         .map(|s| s.judge(&dball, air))
         .transpose()
         .map_err(drop_error)?;
     match a.format {
         DropFormat::Json => {
-            let mut r = report(&run, verdict.as_ref());
+            let mut r = report(&run, &bands, verdict.as_ref());
             r.warnings = b.drop_warnings(&run)?;
             output::json(out, &r)?
         }
@@ -120,6 +123,22 @@ pub fn run(a: &DropArgs, out: &mut dyn Write) -> anyhow::Result<()> {
             text(out, &b.label(), &run, standard.zip(verdict), radius)?;
             for w in b.drop_warnings(&run)? {
                 writeln!(out, "warning: {w}")?;
+            }
+            if let (Some(i), Some(first), Some(fit)) = (bands.first(), run.bounces.first(), &b.fit)
+            {
+                writeln!(
+                    out,
+                    "\nfirst bounce, 95 % from the preset's fit (delta method, Student t, {} dof):\n  {}\n  {}",
+                    fit.dof,
+                    line("COR", first.cor, i.cor_ci95, 1.0, ""),
+                    line(
+                        "rebound height",
+                        first.rebound_height,
+                        i.rebound_height_ci95,
+                        1e3,
+                        "mm"
+                    )
+                )?;
             }
             // no standard asked for: name the ball's own, if it has one
             if let (None, Some(own)) = (standard, b.name.as_deref().and_then(standards::for_ball)) {
@@ -146,23 +165,68 @@ struct StandardJson {
     margin: f64,
 }
 
+/// One bounce's 95 % intervals on a fitted preset (docs/fitting.md, "Prediction intervals").
+#[derive(Debug, Clone, Copy, Serialize)]
+struct BounceIntervals {
+    cor_ci95: [f64; 2],
+    max_force_ci95: [f64; 2],
+    contact_time_ci95: [f64; 2],
+    rebound_height_ci95: [f64; 2],
+}
+
+/// A bounce, with its intervals when the ball carries a fit.
+#[derive(Serialize)]
+struct BounceRow<'a> {
+    #[serde(flatten)]
+    bounce: &'a crate::drop::Bounce,
+    #[serde(flatten, skip_serializing_if = "Option::is_none")]
+    intervals: Option<BounceIntervals>,
+}
+
+/// A fitted preset's bounce intervals ([`Ball::drop_intervals`]); empty without a fit or when
+/// an override moved it.
+fn bounce_intervals(b: &Ball, setup: &DropSetup) -> anyhow::Result<Vec<BounceIntervals>> {
+    let Some(bands) = b.drop_intervals(setup).transpose()? else {
+        return Ok(Vec::new());
+    };
+    Ok(bands
+        .iter()
+        .map(|c| BounceIntervals {
+            cor_ci95: c[0],
+            max_force_ci95: c[1],
+            contact_time_ci95: c[2],
+            rebound_height_ci95: c[3],
+        })
+        .collect())
+}
+
 /// The JSON document of the issue, SI: `standard` only with `--standard`.
 #[derive(Serialize)]
 struct Report<'a> {
     height: f64,
     drag: bool,
-    bounces: &'a [crate::drop::Bounce],
+    bounces: Vec<BounceRow<'a>>,
     #[serde(skip_serializing_if = "Option::is_none")]
     standard: Option<StandardJson>,
     /// What the caller should know (the first, fastest impact's [`Ball::warnings`]).
     warnings: Vec<String>,
 }
 
-fn report<'a>(run: &'a DropRun, v: Option<&Verdict>) -> Report<'a> {
+fn report<'a>(run: &'a DropRun, bands: &[BounceIntervals], v: Option<&Verdict>) -> Report<'a> {
+    let bands = bands
+        .iter()
+        .copied()
+        .map(Some)
+        .chain(std::iter::repeat(None));
     Report {
         height: run.setup.height,
         drag: run.drag(),
-        bounces: &run.bounces,
+        bounces: run
+            .bounces
+            .iter()
+            .zip(bands)
+            .map(|(bounce, intervals)| BounceRow { bounce, intervals })
+            .collect(),
         standard: v.map(|v| StandardJson {
             name: v.name,
             window: v.window,

@@ -2,7 +2,7 @@
 //! CSV, JSON or an SVG heat map (docs/map.md). The library does the work ([`crate::map`]);
 //! this file reads the options, checks the work limit and writes.
 
-use super::ball::{BallArgs, LawArg, PresetChoice};
+use super::ball::{BallArgs, LawArg, Overrides, PresetChoice, Size};
 use super::output::num;
 
 use crate::map::csv::{csv, header};
@@ -37,6 +37,8 @@ pub struct MapArgs {
     /// Impact speed v0 (m/s) [default: the preset's measured v0]
     #[arg(long, value_name = "V", value_parser = super::number::number, allow_hyphen_values = true)]
     pub v0: Option<f64>,
+    #[command(flatten)]
+    pub size: Size,
     /// λ = K_r/K_p values: FROM:TO:N (log-spaced unless --linear-axes)
     #[arg(long, value_name = "FROM:TO:N", allow_hyphen_values = true)]
     pub lambda: String,
@@ -81,6 +83,9 @@ pub fn spec(a: &MapArgs) -> anyhow::Result<MapBall> {
     let lambda = Axis::parse(Param::Lambda, &a.lambda, scale)?;
     let zeta = Axis::parse(Param::Zeta, &a.zeta, scale)?;
     if a.normalized {
+        if a.size.mass.is_some() || a.size.radius.is_some() {
+            anyhow::bail!("--normalized runs m = K_p = v0 = 1: --mass and --radius do not apply");
+        }
         let law = a.law.map_or(ContactLaw::Linear, ContactLaw::from);
         let spec = MapSpec::normalized(a.zp_bar, law, lambda, zeta)?.with_fast(true);
         return Ok(MapBall {
@@ -93,6 +98,10 @@ pub fn spec(a: &MapArgs) -> anyhow::Result<MapBall> {
     let args = BallArgs {
         choice: a.choice.clone(),
         law: a.law,
+        set: Overrides {
+            size: a.size.clone(),
+            ..Overrides::default()
+        },
         ..BallArgs::default()
     };
     let b = args.resolve(a.v0)?;

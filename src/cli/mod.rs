@@ -14,6 +14,7 @@ pub mod collide;
 pub mod drop;
 pub mod figure;
 pub mod fit;
+mod intervals_text;
 pub mod map;
 pub use crate::measured::file as measured_file;
 pub use crate::text::parse as number;

@@ -57,7 +57,8 @@ pub struct RunArgs {
 pub fn run(args: &RunArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     if args.normalized && args.ball.set.any() {
         anyhow::bail!(
-            "--normalized runs m = K_p = v0 = 1: --k-p, --damping, --k-r and --z-p do not apply"
+            "--normalized runs m = K_p = v0 = 1: --mass, --radius, --k-p, --damping, --k-r and \
+             --z-p do not apply"
         );
     }
     ball::check_overrides(&args.ball.set, args.lambda, args.zeta)?;
@@ -80,11 +81,19 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     } else {
         ball.impact()?
     };
+    // a fitted preset's 95 % intervals (docs/fitting.md), when no override moved the fit
+    let intervals = ball.intervals().transpose()?;
     match args.format {
-        RunFormat::Json => output::json(out, &ImpactReport::new(&ball, &r, args.history))?,
+        RunFormat::Json => {
+            let mut report = ImpactReport::new(&ball, &r, args.history);
+            report.intervals = intervals;
+            output::json(out, &report)?
+        }
         RunFormat::Csv if args.history => history_csv(out, &r)?,
         RunFormat::Csv => summary_csv(out, &ball, &r)?,
-        RunFormat::Text => super::run_text::write(out, &ball, &r, args.history)?,
+        RunFormat::Text => {
+            super::run_text::write(out, &ball, &r, intervals.as_ref(), args.history)?
+        }
     }
     Ok(())
 }

@@ -2,7 +2,7 @@
 //! the measured values beside the model's for a preset.
 
 use super::output::{difference, given, human, table};
-use crate::api::Ball;
+use crate::api::{Ball, Intervals};
 use crate::preset::Measured;
 use crate::solver::{EnergyBudget, ImpactResponse, Method};
 use std::io::{self, Write};
@@ -76,7 +76,13 @@ impl Unit {
     };
 }
 
-pub fn write(out: &mut dyn Write, b: &Ball, r: &ImpactResponse, history: bool) -> io::Result<()> {
+pub fn write(
+    out: &mut dyn Write,
+    b: &Ball,
+    r: &ImpactResponse,
+    intervals: Option<&Intervals>,
+    history: bool,
+) -> io::Result<()> {
     let units = Units::of(b);
     let method = match r.method {
         Method::Exact => "exact solver",
@@ -91,6 +97,11 @@ pub fn write(out: &mut dyn Write, b: &Ball, r: &ImpactResponse, history: bool) -
     write_parameters(out, b, r, &units)?;
     writeln!(out)?;
     write_comparison(out, b, r, &units)?;
+    if let (Some(i), Some(fit)) = (intervals, &b.fit) {
+        writeln!(out)?;
+        let values = [r.cor, r.max_force, r.contact_time.unwrap_or(f64::NAN)];
+        super::intervals_text::write(out, i, values, fit.dof)?;
+    }
     if let Some(e) = &r.energy {
         writeln!(out)?;
         write_energy(out, e, &units)?;

@@ -3,9 +3,10 @@
 
 use super::ball::{BallArgs, LawArg};
 use super::output::{self, csv_row, num, opt_num};
-use crate::analysis::sweep::{lin_space, log_space};
-use crate::api::BallHeader;
+use crate::analysis::sweep::{VelocityPoint, lin_space, log_space};
+use crate::api::{self, Ball, BallHeader, Intervals};
 use crate::model::contact::ContactLaw;
+use crate::model::params::ImpactParams;
 use crate::model::params::{Field, check_positive, validate_lambda_zeta};
 use clap::{Args, Subcommand, ValueEnum};
 use serde::Serialize;
@@ -187,14 +188,6 @@ struct VelocityDoc<'a, T> {
     rows: &'a [T],
 }
 
-/// A speed sweep's row with what the caller should know about it.
-#[derive(Serialize)]
-struct VelocityRow<'a> {
-    #[serde(flatten)]
-    point: &'a crate::analysis::sweep::VelocityPoint,
-    warnings: Vec<String>,
-}
-
 fn velocity(a: &VelocityArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     super::ball::check_overrides(&a.ball.set, a.lambda, a.zeta)?;
     let mut b = a.ball.resolve(a.v0)?;
@@ -207,6 +200,18 @@ fn velocity(a: &VelocityArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     check_points(a.points, 1, b.law)?;
     let (params, law) = (&b.params, b.law);
     let rows = super::budget::velocity_rows(params, law, &lin_space(from, to, a.points))?;
+    let bands = velocity_intervals(&b, &rows)?;
+    let rows: Vec<VelocityRow> = rows
+        .iter()
+        .zip(bands.iter().map(Some).chain(std::iter::repeat(None)))
+        .map(|(row, i)| VelocityRow {
+            row,
+            intervals: i.copied(),
+            warnings: crate::api::indentation_warning(row.max_indentation, b.radius())
+                .into_iter()
+                .collect(),
+        })
+        .collect();
     match a.format {
         SweepFormat::Json => {
             let n = b.params.normalized();
@@ -217,45 +222,82 @@ fn velocity(a: &VelocityArgs, out: &mut dyn Write) -> anyhow::Result<()> {
                     ball: b.header(),
                     lambda: n.lambda,
                     zeta: n.zeta,
-                    rows: &rows
-                        .iter()
-                        .map(|point| VelocityRow {
-                            point,
-                            warnings: crate::api::indentation_warning(
-                                point.max_indentation,
-                                b.radius(),
-                            )
-                            .into_iter()
-                            .collect(),
-                        })
-                        .collect::<Vec<_>>(),
+                    rows: &rows,
                 },
             )?
         }
-        SweepFormat::Csv => {
-            csv_row(
-                out,
-                &[
-                    "v0",
-                    "cor",
-                    "max_force",
-                    "contact_time",
-                    "permanent_indentation",
-                ],
-            )?;
-            for r in &rows {
-                csv_row(
-                    out,
-                    &[
-                        num(r.v0),
-                        num(r.cor),
-                        num(r.max_force),
-                        opt_num(r.contact_time),
-                        num(r.permanent_indentation),
-                    ],
-                )?;
-            }
+        SweepFormat::Csv => velocity_csv(out, &rows, !bands.is_empty())?,
+    }
+    Ok(())
+}
+
+/// A row of `sweep velocity`, with a fitted preset's 95 % intervals (docs/fitting.md) and
+/// what the caller should know about it (an indentation beyond the radius).
+#[derive(Serialize)]
+struct VelocityRow<'a> {
+    #[serde(flatten)]
+    row: &'a VelocityPoint,
+    #[serde(flatten, skip_serializing_if = "Option::is_none")]
+    intervals: Option<Intervals>,
+    warnings: Vec<String>,
+}
+
+/// The intervals at each row's speed when the ball carries a fit no override moved; empty
+/// otherwise.
+fn velocity_intervals(b: &Ball, rows: &[VelocityPoint]) -> anyhow::Result<Vec<Intervals>> {
+    let Some(fit) = b.fit.as_ref().filter(|f| api::holds(&b.params, f)) else {
+        return Ok(Vec::new());
+    };
+    rows.iter()
+        .map(|r| {
+            let p = ImpactParams {
+                v0: r.v0,
+                ..b.params
+            };
+            Ok(api::intervals(&p, b.law, fit)?)
+        })
+        .collect()
+}
+
+fn velocity_csv(out: &mut dyn Write, rows: &[VelocityRow], bands: bool) -> anyhow::Result<()> {
+    let mut head = vec![
+        "v0",
+        "cor",
+        "max_force",
+        "contact_time",
+        "permanent_indentation",
+    ];
+    if bands {
+        head.extend([
+            "cor_ci95_lo",
+            "cor_ci95_hi",
+            "max_force_ci95_lo",
+            "max_force_ci95_hi",
+            "contact_time_ci95_lo",
+            "contact_time_ci95_hi",
+        ]);
+    }
+    csv_row(out, &head)?;
+    for VelocityRow { row: r, intervals, .. } in rows {
+        let mut cells = vec![
+            num(r.v0),
+            num(r.cor),
+            num(r.max_force),
+            opt_num(r.contact_time),
+            num(r.permanent_indentation),
+        ];
+        if let Some(i) = intervals {
+            let ct = i.contact_time_ci95;
+            cells.extend([
+                num(i.cor_ci95[0]),
+                num(i.cor_ci95[1]),
+                num(i.max_force_ci95[0]),
+                num(i.max_force_ci95[1]),
+                opt_num(ct.map(|c| c[0])),
+                opt_num(ct.map(|c| c[1])),
+            ]);
         }
+        csv_row(out, &cells)?;
     }
     Ok(())
 }

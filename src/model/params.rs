@@ -45,6 +45,8 @@ pub struct Normalized {
 pub enum Field {
     /// Mass m, kg.
     Mass,
+    /// Radius R, m (a ball's, where a command takes it: `--radius`).
+    Radius,
     /// Contact stiffness K_p, N/m.
     KP,
     /// Dashpot c, kg/s.
@@ -86,6 +88,7 @@ impl Field {
     pub const fn as_str(self) -> &'static str {
         match self {
             Field::Mass => "mass",
+            Field::Radius => "radius",
             Field::KP => "k_p",
             Field::Damping => "damping",
             Field::KR => "k_r",

@@ -14,10 +14,9 @@
 //! (a + d (b v + k r) = (1 − d) a0 with b = damping/d_max, k = stiffness·d/d_max²).
 
 use super::rules::{self, Rule};
-use super::{PeerBall, PeerError, PeerModel, calibrate};
+use super::{PeerBall, PeerError, PeerModel, calibrate, impact};
 use crate::text::number as num;
 use serde::Serialize;
-use std::f64::consts::PI;
 use std::fmt::Write;
 
 /// The codes a snippet can be written for.
@@ -68,7 +67,18 @@ pub struct ExportSet {
     pub hunt_crossley_chi: f64,
     /// α = χ/v0, s/m, for codes whose damping is a material constant.
     pub hunt_crossley_alpha: f64,
+    /// Contact time of the clipped Kelvin–Voigt model, s (the MuJoCo contact's).
+    pub kv_no_tension_contact_time: Option<f64>,
+    /// MuJoCo `timestep` (Euler) keeping every contact phase within [`STEP_TOL`], s.
+    pub mujoco_timestep: Option<f64>,
+    /// LAMMPS `timestep` (velocity Verlet) doing the same for every `fix` line, s.
+    pub lammps_timestep: Option<f64>,
 }
+
+/// How far from the target an advised time step may leave the COR at any contact phase
+/// (docs/peers.md §5): 3/4 of the 0.002 the real codes are held to, for phases between those
+/// checked.
+pub const STEP_TOL: f64 = 1.5e-3;
 
 impl ExportSet {
     /// Every model calibrated exactly to `target` for `ball` ([`calibrate::exact`]);
@@ -82,7 +92,7 @@ impl ExportSet {
             d(PeerModel::Tsuji)?,
             d(PeerModel::HuntCrossley)?,
         );
-        Ok(ExportSet {
+        let mut set = ExportSet {
             label: label.to_string(),
             mass: ball.mass,
             radius: ball.radius,
@@ -98,7 +108,25 @@ impl ExportSet {
             tsuji_eta: ball.damping_si(PeerModel::Tsuji, ts),
             hunt_crossley_chi: hc,
             hunt_crossley_alpha: hc / ball.v0,
-        })
+            kv_no_tension_contact_time: None,
+            mujoco_timestep: None,
+            lammps_timestep: None,
+        };
+        set.kv_no_tension_contact_time = impact(
+            PeerModel::KelvinVoigtNoTension,
+            ball,
+            set.kv_no_tension_eta,
+            0,
+        )?
+        .contact_time;
+        set.mujoco_timestep = set.mujoco_step(ball)?.map(|s| s.h);
+        set.lammps_timestep = set
+            .lammps_steps(ball)?
+            .iter()
+            .map(|(_, s)| s.map(|s| s.h))
+            .try_fold(f64::INFINITY, |h, s| s.map(|s| h.min(s)))
+            .filter(|h| h.is_finite());
+        Ok(set)
     }
 
     /// The effective Young modulus E* = 3 K_h / (4 √R) of the Hertz stiffness.
@@ -154,6 +182,26 @@ fn lammps(s: &ExportSet) -> String {
     let mut o = String::new();
     s.header(&mut o, "#", "");
     let k_n = s.k_h / s.radius.sqrt();
+    match s.lammps_timestep {
+        Some(h) => {
+            let _ = writeln!(
+                o,
+                "# velocity Verlet (fix nve/sphere): at this step every fix below gives the target COR\n\
+                 # within {} wherever in a step the ball meets the wall (the error shrinks about\n\
+                 # in proportion to the step)\n\
+                 timestep {}",
+                num(STEP_TOL),
+                num(h)
+            );
+        }
+        None => {
+            let _ = writeln!(
+                o,
+                "# no timestep down to contact time/100000 keeps every contact phase within {}",
+                num(STEP_TOL)
+            );
+        }
+    }
     let _ = write!(
         o,
         "# units si; fix wall/gran uses m_eff = m, R_eff = R (the wall has infinite mass and radius)\n\
@@ -309,13 +357,42 @@ fn mujoco(s: &ExportSet) -> String {
         "<!-- A contact is a soft unilateral constraint: a + d (b v + k r) = (1 - d) a0 with\n\
          b = damping/dmax, k = stiffness d/dmax² for solref = \"-stiffness -damping\"; at\n\
          d = dmin = dmax it is the clipped Kelvin-Voigt law per unit mass, a = -(η/m) v - (k/m) r.\n\
-         condim 1 keeps the constraint's inverse inertia 1/m. Take timestep <= contact time/50\n\
-         (contact time ≈ {} s). Equivalent (timeconst, dampratio) = ({}, {}). -->\n\
-         <geom type=\"sphere\" size=\"{}\" mass=\"{}\" condim=\"1\" solref=\"-{} -{}\" \
-         solimp=\"0.9999 0.9999 0.001 0.5 2\"/>\n",
-        num(PI / omega),
+         condim 1 keeps the constraint's inverse inertia 1/m. priority 1 makes this geom's condim,\n\
+         solref and solimp the contact's: without it MuJoCo takes the larger condim and the mean\n\
+         solimp of the two geoms, and the default plane's solimp moves the COR by up to 2e-3 (or\n\
+         give the plane condim=\"1\" and this solimp). Equivalent (timeconst, dampratio) = ({}, {}).\n",
         num(1.0 / (s.kv_no_tension_zeta * omega)),
         num(s.kv_no_tension_zeta),
+    );
+    let t_c = s.kv_no_tension_contact_time.map_or("none".into(), num);
+    match s.mujoco_timestep {
+        Some(h) => {
+            let _ = writeln!(
+                o,
+                "The contact lasts {} s; at the time step below (integrator Euler, the default)\n\
+                 every contact phase (where in a step the ball meets the plane) gives the target COR\n\
+                 within {}, an error that shrinks about in proportion to the step. The option goes\n\
+                 under <mujoco>, the geom into a body with a free joint. -->\n\
+                 <option timestep=\"{}\" integrator=\"Euler\"/>",
+                t_c,
+                num(STEP_TOL),
+                num(h)
+            );
+        }
+        None => {
+            let _ = writeln!(
+                o,
+                "No time step down to contact time/100000 keeps every contact phase within {} of\n\
+                 the target (contact time {} s). -->",
+                num(STEP_TOL),
+                t_c
+            );
+        }
+    }
+    let _ = writeln!(
+        o,
+        "<geom type=\"sphere\" size=\"{}\" mass=\"{}\" priority=\"1\" condim=\"1\" \
+         solref=\"-{} -{}\" solimp=\"0.9999 0.9999 0.001 0.5 2\"/>",
         num(s.radius),
         num(s.mass),
         num(kk),

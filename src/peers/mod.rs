@@ -11,6 +11,7 @@ pub mod export;
 mod integrate;
 mod laws;
 pub mod rules;
+pub mod steps;
 
 use crate::model::contact::ContactLaw;
 use crate::model::params::{ImpactParams, Normalized, ParamError};

@@ -12,6 +12,7 @@ pub(super) fn preset(p: &Preset) -> Result<(), Bad> {
     measured(&p.measured)?;
     material(&p.material)?;
     adopted(&p.adopted, p.parameters)?;
+    super::fit_table::check(p)?;
     usable::check(p)
 }
 

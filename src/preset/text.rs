@@ -97,6 +97,9 @@ impl Preset {
         opt(&mut out, "z_p", a.z_p, "m");
         opt(&mut out, "k_p", a.k_p, "N/m");
         line(&mut out, "k_r", number(a.k_r), "N/m");
+        if let Some(f) = &self.fit {
+            f.write(&mut out);
+        }
         out
     }
 }

@@ -3,10 +3,16 @@
 //!
 //! The line names the ball as `run` finds it — `--preset NAME` (embedded or user preset), or
 //! `--config FILE` for the preset the explorer was started on from a file — then the law when
-//! it is not the preset's, λ and ζ when K_r or c moved off the preset's (`run` sets K_r = λ K_p
-//! and c = √(m K_p)/(2ζ) from them, as the explorer does: Eq. 24), and v0. Numbers are written
-//! in the shortest form that reads back to the same `f64`.
+//! it is not the preset's, the mass and radius typed in the form (`--mass`, `--radius`: the
+//! preset's set derived for them), K_p and z_p when they differ from that ball's, λ and ζ when
+//! K_r or c do (`run` sets K_r = λ K_p and c = √(m K_p)/(2ζ) from them on that ball, as the
+//! explorer does: Eq. 24), and v0. Numbers are written in the shortest form that reads back to
+//! the same `f64`. [`not_carried`] builds the ball `run` makes of the line and names what
+//! differs from the screen's, if anything.
 
+use crate::api::{self, Overrides};
+use crate::model::contact::ContactLaw;
+use crate::model::params::ImpactParams;
 use crate::preset::Preset;
 use crate::text::number;
 use crate::tui::param::Param;
@@ -33,6 +39,70 @@ pub fn shell_word(s: &str) -> String {
     }
 }
 
+/// The options that take `run` from the preset to `setting` (module docs), in their order.
+struct Options {
+    law: Option<ContactLaw>,
+    /// --mass, --radius, --k-p, --z-p (None: the preset's).
+    mass: Option<f64>,
+    radius: Option<f64>,
+    k_p: Option<f64>,
+    z_p: Option<f64>,
+    /// --lambda and --zeta, when K_r or c is not what the ball above has.
+    lambda_zeta: Option<(f64, f64)>,
+    v0: f64,
+}
+
+impl Options {
+    fn of(preset: &Preset, setting: &Setting) -> Options {
+        let p = &setting.params;
+        let differs = |now: f64, was: f64| (now != was).then_some(now);
+        let mass = differs(p.mass, preset.measured.mass);
+        let radius = differs(setting.radius, preset.measured.radius);
+        let base = Self::sized(preset, mass, radius);
+        let mut o = Options {
+            law: (setting.law != preset.law).then_some(setting.law),
+            mass,
+            radius,
+            k_p: differs(p.k_p, base.k_p),
+            z_p: differs(p.z_p, base.z_p),
+            lambda_zeta: None,
+            v0: p.v0,
+        };
+        // λ and ζ are taken on the ball the options above make, as `run` applies them
+        let ball = o.ball(preset).unwrap_or(base);
+        if p.k_r != ball.k_r || p.damping != ball.damping {
+            o.lambda_zeta = Some((setting.get(Param::Lambda), setting.get(Param::Zeta)));
+        }
+        o
+    }
+
+    /// The preset's parameter set derived for mass `m` and radius `r` (`run --mass --radius`).
+    fn sized(preset: &Preset, m: Option<f64>, r: Option<f64>) -> ImpactParams {
+        let mut sized = preset.clone();
+        sized.measured.mass = m.unwrap_or(sized.measured.mass);
+        sized.measured.radius = r.unwrap_or(sized.measured.radius);
+        sized.params()
+    }
+
+    /// The parameters `run` builds from these options, by the library's own steps
+    /// ([`Overrides::apply`], [`api::set_lambda_zeta`]); `None` where it would refuse them.
+    fn ball(&self, preset: &Preset) -> Option<ImpactParams> {
+        let mut p = Self::sized(preset, self.mass, self.radius);
+        p.v0 = self.v0;
+        let set = Overrides {
+            mass: self.mass,
+            k_p: self.k_p,
+            z_p: self.z_p,
+            ..Overrides::default()
+        };
+        set.apply(&mut p).ok()?;
+        if let Some((l, z)) = self.lambda_zeta {
+            api::set_lambda_zeta(&mut p, Some(l), Some(z)).ok()?;
+        }
+        Some(p)
+    }
+}
+
 /// The `bouncelab run` line that runs `setting` of the ball `preset` found at `source`.
 pub fn run_line(source: Source, preset: &Preset, setting: &Setting) -> String {
     let mut words = vec!["bouncelab".to_string(), "run".into()];
@@ -42,53 +112,53 @@ pub fn run_line(source: Source, preset: &Preset, setting: &Setting) -> String {
             words.extend(["--config".into(), shell_word(&path.to_string_lossy())])
         }
     }
-    if setting.law != preset.law {
-        words.extend(["--law".into(), setting.law.name().into()]);
+    let o = Options::of(preset, setting);
+    if let Some(law) = o.law {
+        words.extend(["--law".into(), law.name().into()]);
     }
-    let base = preset.params();
-    let p = &setting.params;
-    // K_p and z_p typed in the form (`m`) are `run`'s overrides; λ and ζ below are then taken
-    // on the overridden ball, as `run` applies --lambda/--zeta after --k-p/--z-p
-    for (option, now, was) in [("--k-p", p.k_p, base.k_p), ("--z-p", p.z_p, base.z_p)] {
-        if now != was {
-            words.extend([option.into(), number(now)]);
+    for (option, value) in [
+        ("--mass", o.mass),
+        ("--radius", o.radius),
+        ("--k-p", o.k_p),
+        ("--z-p", o.z_p),
+    ] {
+        if let Some(v) = value {
+            words.extend([option.into(), number(v)]);
         }
     }
-    if p.mass != base.mass {
-        // `run` runs the preset's mass: K_r and c as they are, not λ and ζ, which would move
-        // them with it (see `not_carried`)
-        for (option, now, was) in [
-            ("--k-r", p.k_r, base.k_r),
-            ("--damping", p.damping, base.damping),
-        ] {
-            if now != was {
-                words.extend([option.into(), number(now)]);
-            }
-        }
-    } else if p.k_r != base.k_r || p.damping != base.damping {
-        for (option, param) in [("--lambda", Param::Lambda), ("--zeta", Param::Zeta)] {
-            words.extend([option.into(), number(setting.get(param))]);
-        }
+    if let Some((l, z)) = o.lambda_zeta {
+        words.extend(["--lambda".into(), number(l), "--zeta".into(), number(z)]);
     }
-    words.extend(["--v0".into(), number(p.v0)]);
+    words.extend(["--v0".into(), number(o.v0)]);
     words.join(" ")
 }
 
-/// What the line cannot carry: a mass or radius typed in the form (`m`) — `run` has no such
-/// options and runs the preset's. `None` when the line reproduces the setting.
+/// What the line cannot carry: the parameters the ball `run` builds from it differs in (by
+/// more than the rounding of λ and ζ, 1e-12), found by building that ball with the library's
+/// own steps. `None` when the line reproduces the setting.
 pub fn not_carried(preset: &Preset, setting: &Setting) -> Option<String> {
-    let mut off = Vec::new();
-    if setting.params.mass != preset.measured.mass {
-        off.push("m");
-    }
-    if setting.radius != preset.measured.radius {
-        off.push("R");
-    }
+    let o = Options::of(preset, setting);
+    let Some(b) = o.ball(preset) else {
+        return Some("`run` would refuse this setting's options".into());
+    };
+    let p = &setting.params;
+    let off: Vec<&str> = [
+        ("m", p.mass, b.mass),
+        ("K_p", p.k_p, b.k_p),
+        ("K_r", p.k_r, b.k_r),
+        ("c", p.damping, b.damping),
+        ("z_p", p.z_p, b.z_p),
+        ("K_h", p.k_h, b.k_h),
+        ("v0", p.v0, b.v0),
+    ]
+    .into_iter()
+    .filter(|(_, a, b)| (a - b).abs() > 1e-12 * a.abs())
+    .map(|(name, _, _)| name)
+    .collect();
     (!off.is_empty()).then(|| {
         format!(
-            "{} typed in the form: `run` has no option for {} and runs the preset's",
-            off.join(" and "),
-            if off.len() > 1 { "them" } else { "it" }
+            "the line runs another {}: `run` has no option that sets it as the screen has it",
+            off.join(", ")
         )
     })
 }
@@ -150,5 +220,34 @@ mod tests {
         let line = run_line(Source::Config(Path::new("/a b/x.toml")), p, &moved);
         assert!(line.starts_with("bouncelab run --config '/a b/x.toml' --law "));
         assert!(line.contains(" --lambda 0.5 --zeta "), "{line}");
+    }
+
+    /// On a ball of the materials set a typed mass moves the derived density, hence c (Eq. 5),
+    /// and a typed radius K_p, z_p (Eqs. 15–20) and c for `run`: the line adds `--k-p`, `--z-p`
+    /// and ζ and reproduces the screen (the elastomer's K_h of Eq. 8 is Eq. 16's of its K_p
+    /// and z_p). A parameter no option reaches (here a K_h set by hand) is named.
+    #[test]
+    fn a_materials_ball_runs_to_the_screen_or_names_what_is_not_carried() {
+        let mut p = Preset::embedded()[0].clone();
+        p.parameters = crate::preset::ParamSource::Materials;
+        let mut s = Setting::from_preset(0, &p);
+        assert_eq!(not_carried(&p, &s), None);
+        s.params.mass = 0.05;
+        let line = run_line(Source::Name(&p.name), &p, &s);
+        assert!(
+            line.contains(" --mass 0.05 --lambda ") && line.contains(" --zeta "),
+            "{line}"
+        );
+        assert_eq!(not_carried(&p, &s), None, "{line}");
+        s.radius = 0.03;
+        let line = run_line(Source::Name(&p.name), &p, &s);
+        assert!(
+            line.contains(" --radius 0.03 --k-p ") && line.contains(" --z-p "),
+            "{line}"
+        );
+        assert_eq!(not_carried(&p, &s), None, "{line}");
+        s.params.k_h *= 1.5;
+        let why = not_carried(&p, &s).expect("K_h is not carried");
+        assert!(why.contains("another K_h:"), "{why}");
     }
 }

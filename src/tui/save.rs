@@ -134,6 +134,8 @@ pub fn preset_for(source: &Preset, setting: &Setting, name: &str) -> (Preset, Ve
             k_p: Some(p.k_p),
             k_r: p.k_r,
         },
+        // the explorer's setting is not the fit's ball: no interval is claimed for it
+        fit: None,
     };
     (preset, header)
 }

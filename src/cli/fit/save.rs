@@ -8,7 +8,7 @@ use crate::analysis::fit::MultiFit;
 use crate::api::Ball;
 use crate::catalog::{self, Catalog, Origin};
 use crate::model::params::ImpactParams;
-use crate::preset::{Adopted, Measured, ParamSource, Preset};
+use crate::preset::{Adopted, FitTable, Measured, ParamSource, Preset};
 use std::path::{Path, PathBuf};
 
 fn dir() -> anyhow::Result<PathBuf> {
@@ -119,12 +119,14 @@ fn header(ball: &Ball, data: &Loaded, f: &MultiFit, when: &str) -> Vec<String> {
 }
 
 /// The fitted ball as a preset: the base preset's ball and material data, the fit as the
-/// adopted set (K_h then follows Eq. 16 from K_p and z_p), `[measured] v0` the data's speed.
+/// adopted set (K_h then follows Eq. 16 from K_p and z_p), `[measured] v0` the data's speed,
+/// m and R the fitted ball's (`--mass`, `--radius`).
 fn preset(
     base: &Preset,
     name: &str,
     ball: &Ball,
     data: &Loaded,
+    f: &MultiFit,
     p: &ImpactParams,
     when: &str,
 ) -> Preset {
@@ -135,8 +137,12 @@ fn preset(
         law: ball.law,
         parameters: ParamSource::Adopted,
         measured: Measured {
-            mass: base.measured.mass,
-            radius: base.measured.radius,
+            // the fitted ball's: --mass and --radius replace the base preset's
+            mass: p.mass,
+            radius: ball
+                .measured
+                .as_ref()
+                .map_or(base.measured.radius, |m| m.radius),
             v0: p.v0,
             cor: single,
             max_force: None,
@@ -149,7 +155,38 @@ fn preset(
             k_p: Some(p.k_p),
             k_r: p.k_r,
         },
+        fit: fit_table(f),
     }
+}
+
+/// The fit's uncertainty as the preset's `[fit]` table (docs/fitting.md, "Prediction
+/// intervals"): cov_ij = r_ij s_i s_j of the free parameters' correlations and standard errors,
+/// dof = n − p; `None` when no degree of freedom is left, a standard error is not finite, or
+/// v0 was fitted.
+fn fit_table(f: &MultiFit) -> Option<FitTable> {
+    let dof = f.points.checked_sub(f.names.len()).filter(|&d| d > 0)?;
+    // a fitted v0 is the trace's speed, not the ball's: its covariance is no preset's
+    if f.fitted.iter().any(|e| e.name == "v0") {
+        return None;
+    }
+    let se: Vec<f64> = f.fitted.iter().map(|e| e.std_error).collect();
+    if se.iter().any(|s| !s.is_finite()) {
+        return None;
+    }
+    let k = se.len();
+    // r_ij s_i s_j, symmetric to the last bit
+    let cov =
+        |i: usize, j: usize| 0.5 * (f.correlation[i][j] + f.correlation[j][i]) * (se[i] * se[j]);
+    let covariance = (0..k)
+        .map(|i| (0..k).map(|j| cov(i, j)).collect())
+        .collect();
+    Some(FitTable {
+        free: f.fitted.iter().map(|e| e.name.to_string()).collect(),
+        values: f.fitted.iter().map(|e| e.value).collect(),
+        covariance,
+        dof: u32::try_from(dof).ok()?,
+        residual_sd: f.rms_residual * (f.points as f64 / dof as f64).sqrt(),
+    })
 }
 
 /// Write the preset; returns its path.
@@ -167,7 +204,7 @@ pub fn save(
     )?
     .preset;
     let when = now_utc();
-    let preset = preset(&base, name, ball, data, p, &when);
+    let preset = preset(&base, name, ball, data, f, p, &when);
     let text = preset.to_toml(&header(ball, data, f, &when));
     Preset::parse(&text, name)
         .map_err(|e| anyhow::anyhow!("the fitted ball is not a valid preset: {e}"))?;

@@ -1,0 +1,78 @@
+"""Prediction intervals on a preset saved by `fit --save` (docs/fitting.md, "Prediction
+intervals"): Python's `run` reports the same 95 % intervals as `bouncelab run --format json`,
+and none on a plain preset."""
+
+import json
+import os
+import subprocess
+from pathlib import Path
+
+import pytest
+
+import bouncelab
+
+ROOT = Path(__file__).resolve().parents[2]
+
+
+def binary():
+    path = os.environ.get("BOUNCELAB_BIN") or str(ROOT / "target" / "debug" / "bouncelab")
+    if not Path(path).is_file():
+        pytest.skip(f"no bouncelab binary at {path}")
+    return path
+
+
+def fitted(tmp_path, monkeypatch):
+    """A preset `bbfit` fitted to noisy baseball CORs and saved; the environment for the CLI."""
+    home = tmp_path / "config"
+    monkeypatch.setenv("XDG_CONFIG_HOME", str(home))
+    monkeypatch.setenv("HOME", str(home))
+    table = tmp_path / "cors.csv"
+    noise = [0.004, -0.006, 0.002, 0.005, -0.003, -0.001, 0.006, -0.004]
+    rows = ["v0,cor"]
+    for v0, n in zip([1, 2, 3, 5, 8, 12, 18, 25], noise):
+        rows.append(f"{v0},{bouncelab.run(preset='baseball', v0=v0).cor + n}")
+    table.write_text("\n".join(rows) + "\n")
+    env = dict(os.environ)
+    fit = [binary(), "fit", "--preset", "baseball", "--cor-table", str(table), "--save", "bbfit"]
+    subprocess.run(fit, check=True, capture_output=True, env=env)
+    return env
+
+
+def cli_json(env, *args):
+    out = subprocess.run([binary(), *args, "--format", "json"], check=True, capture_output=True, env=env)
+    return json.loads(out.stdout)
+
+
+def test_a_fitted_preset_carries_its_intervals(tmp_path, monkeypatch):
+    env = fitted(tmp_path, monkeypatch)
+    cli = cli_json(env, "run", "--preset", "bbfit", "--v0", "45")
+    r = bouncelab.run(preset="bbfit", v0=45)
+    for key in ["cor_ci95", "max_force_ci95", "contact_time_ci95"]:
+        lo, hi = getattr(r, key)
+        assert lo < hi
+        assert lo == pytest.approx(cli[key][0], rel=1e-12)
+        assert hi == pytest.approx(cli[key][1], rel=1e-12)
+        assert r.to_dict()[key] == tuple(cli[key])
+    assert r.cor_ci95[0] < r.cor < r.cor_ci95[1]
+    plain = bouncelab.run(preset="baseball")
+    assert plain.cor_ci95 is None and "cor_ci95" not in plain.to_dict()
+
+
+def test_sweep_and_drop_carry_them_too(tmp_path, monkeypatch):
+    env = fitted(tmp_path, monkeypatch)
+    rows = cli_json(env, "sweep", "velocity", "--preset", "bbfit", "--points", "4")["rows"]
+    sweep = bouncelab.sweep_velocity(preset="bbfit", speeds=[r["v0"] for r in rows])
+    bounces = cli_json(env, "drop", "--preset", "bbfit", "--bounces", "3")["bounces"]
+    drop = bouncelab.drop(preset="bbfit", bounces=3)["bounces"]
+    for table, cli, keys in [
+        (sweep, rows, ["cor", "max_force", "contact_time"]),
+        (drop, bounces, ["cor", "max_force", "contact_time", "rebound_height"]),
+    ]:
+        for key in keys:
+            for i, row in enumerate(cli):
+                lo, hi = row[f"{key}_ci95"]
+                assert table[f"{key}_ci95_lo"][i] == pytest.approx(lo, rel=1e-12)
+                assert table[f"{key}_ci95_hi"][i] == pytest.approx(hi, rel=1e-12)
+                assert lo <= row[key] <= hi
+    assert "cor_ci95_lo" not in bouncelab.sweep_velocity(preset="baseball", speeds=[1.0])
+    assert "cor_ci95_lo" not in bouncelab.drop(preset="baseball", bounces=1)["bounces"]
