@@ -238,7 +238,7 @@ fn no_module_imports_one_that_imports_it_back() {
     for (from, to) in [
         ("cli::fit::multi", "cli::fit::save"),
         ("cli::fit::save", "cli::fit"),
-        ("tui::app::map", "tui::views::map::state"),
+        ("tui::views::map::update", "tui::views::map::state"),
     ] {
         assert!(graph[from].contains(to), "{from} → {to}: {:?}", graph[from]);
     }

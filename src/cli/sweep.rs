@@ -278,7 +278,10 @@ fn velocity_csv(out: &mut dyn Write, rows: &[VelocityRow], bands: bool) -> anyho
         ]);
     }
     csv_row(out, &head)?;
-    for VelocityRow { row: r, intervals, .. } in rows {
+    for VelocityRow {
+        row: r, intervals, ..
+    } in rows
+    {
         let mut cells = vec![
             num(r.v0),
             num(r.cor),

@@ -8,18 +8,13 @@
 mod command;
 mod crosshair;
 mod dialogs;
-mod drop;
 mod edit;
-mod fit;
 mod form;
 mod getters;
-mod map;
-mod models;
 mod picker;
 mod pins;
 mod scene;
 mod screen;
-mod sweeps;
 
 use super::action::{Action, Mode};
 use super::compute::{self, ZetaCurve};
@@ -43,46 +38,46 @@ const UNDO_DEPTH: usize = 500;
 /// The explorer.
 #[derive(Debug, Clone)]
 pub struct App {
-    presets: Vec<Preset>,
-    setting: Setting,
-    selected: Param,
-    coarse: bool,
-    view: View,
-    overlay: Overlay,
-    message: Option<Message>,
-    color: bool,
+    pub(in crate::tui) presets: Vec<Preset>,
+    pub(in crate::tui) setting: Setting,
+    pub(in crate::tui) selected: Param,
+    pub(in crate::tui) coarse: bool,
+    pub(in crate::tui) view: View,
+    pub(in crate::tui) overlay: Overlay,
+    pub(in crate::tui) message: Option<Message>,
+    pub(in crate::tui) color: bool,
     /// The pinned runs, oldest first (at most [`MAX_PINS`]).
-    pins: Vec<Ghost>,
-    undo: Vec<Setting>,
-    quit: bool,
+    pub(in crate::tui) pins: Vec<Ghost>,
+    pub(in crate::tui) undo: Vec<Setting>,
+    pub(in crate::tui) quit: bool,
     /// The impact for `run_for`.
-    run: Option<ImpactResponse>,
-    run_for: Option<(ImpactParams, ContactLaw)>,
+    pub(in crate::tui) run: Option<ImpactResponse>,
+    pub(in crate::tui) run_for: Option<(ImpactParams, ContactLaw)>,
     /// COR and F̄_m vs ζ at the current λ.
-    zeta: Option<ZetaCurve>,
+    pub(in crate::tui) zeta: Option<ZetaCurve>,
     /// COR vs speed, and the sweeps asked; computed only while the sweeps view shows it.
-    sweeps: crate::tui::views::sweeps::state::Sweeps,
-    background: bool,
+    pub(in crate::tui) sweeps: crate::tui::views::sweeps::state::Sweeps,
+    pub(in crate::tui) background: bool,
     /// `e` was pressed: export once the view's curves are up to date.
-    export_wanted: bool,
+    pub(in crate::tui) export_wanted: bool,
     /// The save handed to the event loop, until its answer comes back.
-    save_out: Option<SaveRequest>,
+    pub(in crate::tui) save_out: Option<SaveRequest>,
     /// The drop view's sequence and animation clock.
-    drop: DropView,
+    pub(in crate::tui) drop: DropView,
     /// Measured data, the data to fit and the fit pane.
-    fit: crate::tui::views::fit::state::FitState,
+    pub(in crate::tui) fit: crate::tui::views::fit::state::FitState,
     /// The models view's calibrations (src/tui/views/models/state.rs).
-    models: crate::tui::views::models::state::Models,
+    pub(in crate::tui) models: crate::tui::views::models::state::Models,
     /// The first help line shown.
-    help_scroll: u16,
+    pub(in crate::tui) help_scroll: u16,
     /// The preset file the explorer started on (`--config FILE`) and its preset's index.
-    config: Option<(usize, std::path::PathBuf)>,
+    pub(in crate::tui) config: Option<(usize, std::path::PathBuf)>,
     /// The terminal's width and height, once the loop has said (`Action::Resize`).
-    size: Option<(u16, u16)>,
+    pub(in crate::tui) size: Option<(u16, u16)>,
     /// The map view's map, quantity, targets and window.
-    map: crate::tui::views::map::state::MapView,
+    pub(in crate::tui) map: crate::tui::views::map::state::MapView,
     /// The crosshair (`x`), when it is on.
-    crosshair: Option<super::crosshair::Crosshair>,
+    pub(in crate::tui) crosshair: Option<super::crosshair::Crosshair>,
 }
 
 impl App {

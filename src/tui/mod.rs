@@ -12,7 +12,7 @@
 //!
 //! A view with state of its own has a folder in [`views`] — `map`, `models`, `drop`, and `fit`
 //! (the measured data and the fit pane) — holding its state, its worker, its widget and its
-//! export; its part of `update` is `app/<view>.rs`. The map's first pass is computed in
+//! export, and its part of `update` (`update.rs`). The map's first pass is computed in
 //! `update`, the finer ones on its worker's thread. [`layout`] is the screen's geometry, which
 //! `update` needs for the map's grid.
 //!

@@ -94,6 +94,16 @@ pub struct Solution {
     pub converged: bool,
 }
 
+/// A minimum and the box it was searched in.
+pub(crate) struct Best {
+    /// The minimum.
+    pub sol: Solution,
+    /// The box's lower corner.
+    pub lo: Vec<f64>,
+    /// Its upper corner.
+    pub hi: Vec<f64>,
+}
+
 fn cost(r: &[f64]) -> f64 {
     0.5 * r.iter().map(|v| v * v).sum::<f64>()
 }

@@ -7,15 +7,18 @@
 //!   estimates read off the data and restarted from a few others, with standard errors, 95 %
 //!   intervals and correlations from the Jacobian and the residual variance ([`stats`]).
 
+mod checks;
 mod cor;
 pub mod lm;
 mod multi;
+mod result;
 mod single;
 pub mod stats;
 mod trace;
 pub mod verdict;
 
-pub use multi::{Estimate, FitData, MultiFit, MultiFitError, fit};
+pub use multi::fit;
+pub use result::{Estimate, FitData, MultiFit, MultiFitError};
 pub use single::{Fit, FitError, fit_k_r};
 
 use crate::model::contact::ContactLaw;

@@ -3,8 +3,8 @@
 //! and a test of whether the model can follow the data at all.
 
 use super::Estimate;
+pub use super::result::{LACK_OF_FIT_P, LackOfFit};
 use crate::measured::TraceSummary;
-use serde::Serialize;
 use statrs::distribution::{ChiSquared, ContinuousCDF, Normal};
 
 /// A free parameter whose 95 % interval spans more than this factor (hi/lo) is not pinned by
@@ -19,29 +19,6 @@ pub const EXACT_MISS: f64 = 1e-9;
 /// out of the fit's reach (the search moves each parameter ±5 decades: a contact time
 /// ∝ 1/√K moves 2.5).
 pub const SCALE_MAX: f64 = 1e3;
-
-/// Below this p-value the residuals are called systematic: the model cannot follow the data.
-pub const LACK_OF_FIT_P: f64 = 1e-3;
-
-/// A test of the residuals for a model that cannot follow the data.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
-pub struct LackOfFit {
-    /// `"runs"` (Wald–Wolfowitz runs test of the residuals' signs, in data order: too few
-    /// runs means the misses are systematic) or `"chi2"` (Σ(r/σ)² against χ² at n − p
-    /// degrees of freedom, when every point carries its standard deviation).
-    pub test: &'static str,
-    /// The runs test's z (negative: fewer runs than chance), or χ².
-    pub statistic: f64,
-    /// One-sided p-value: the chance of residuals this systematic (this large) from noise.
-    pub p_value: f64,
-}
-
-impl LackOfFit {
-    /// Whether the test says the model cannot follow the data.
-    pub fn significant(&self) -> bool {
-        self.p_value < LACK_OF_FIT_P
-    }
-}
 
 /// Wald–Wolfowitz runs test of the signs of `r` in order (zeros skipped); `None` below 20
 /// signs, where the normal approximation is not to be trusted. Mean runs μ = 2n₊n₋/n + 1,
@@ -117,7 +94,7 @@ pub fn implied_cor(s: &TraceSummary, mass: f64, v0: f64, dt: f64) -> (f64, f64) 
 /// with `quantities` fitted in all (a trace's start and baseline included).
 pub(super) fn not_pinned(
     fitted: &[Estimate],
-    best: &super::multi::Best,
+    best: &super::lm::Best,
     quantities: usize,
 ) -> Vec<&'static str> {
     let dof = best.sol.residuals.len().saturating_sub(quantities);
@@ -134,7 +111,7 @@ pub(super) fn not_pinned(
 
 /// The verdict on a finished fit: the lack-of-fit test, whether it answered, and the warnings
 /// that say why not (naming the `--free` set the data can pin).
-pub(super) fn judge(f: &mut super::MultiFit, lack: Option<LackOfFit>) {
+pub(super) fn judge(f: &mut super::result::MultiFit, lack: Option<LackOfFit>) {
     f.lack_of_fit = lack;
     if let Some(t) = lack.filter(LackOfFit::significant) {
         f.warnings.push(format!(

@@ -27,7 +27,7 @@ impl App {
     }
 
     /// The `#` lines an export's CSV files start with.
-    pub(super) fn csv_header(&self) -> Vec<String> {
+    pub(in crate::tui) fn csv_header(&self) -> Vec<String> {
         let pins: Vec<String> = self
             .pins
             .iter()

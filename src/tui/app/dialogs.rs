@@ -53,7 +53,7 @@ impl App {
         None
     }
 
-    pub(super) fn open_input(&mut self, purpose: Purpose, text: String) {
+    pub(in crate::tui) fn open_input(&mut self, purpose: Purpose, text: String) {
         self.overlay = Overlay::Input(Input::new(purpose, text));
     }
 

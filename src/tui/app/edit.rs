@@ -40,7 +40,7 @@ impl App {
     }
 
     /// Move to `next`, remembering the current setting for undo.
-    pub(super) fn change(&mut self, next: Setting) {
+    pub(in crate::tui) fn change(&mut self, next: Setting) {
         if next != self.setting {
             let previous = std::mem::replace(&mut self.setting, next);
             if self.undo.len() == UNDO_DEPTH {
@@ -50,19 +50,19 @@ impl App {
         }
     }
 
-    pub(super) fn info(&mut self, text: String) {
+    pub(in crate::tui) fn info(&mut self, text: String) {
         self.message = Some(Message {
             text,
             severity: Severity::Info,
         });
     }
-    pub(super) fn warn(&mut self, text: String) {
+    pub(in crate::tui) fn warn(&mut self, text: String) {
         self.message = Some(Message {
             text,
             severity: Severity::Warning,
         });
     }
-    pub(super) fn error(&mut self, text: String) {
+    pub(in crate::tui) fn error(&mut self, text: String) {
         self.message = Some(Message {
             text,
             severity: Severity::Error,

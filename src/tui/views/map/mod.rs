@@ -1,10 +1,11 @@
 //! The map view (`Tab` to view 4/4, issue 21): the design map of the current ball over (λ, ζ).
 //! Its state in [`state`], the finer passes on [`worker`]'s thread, its panel in [`widget`]
 //! (the raster in [`cells`]), `e` writes it through [`export`]; its part of `update` is
-//! `tui/app/map.rs`.
+//! `update.rs`.
 
 pub mod cells;
 pub mod export;
 pub mod state;
+mod update;
 pub mod widget;
 pub mod worker;

@@ -1,6 +1,6 @@
 //! The map view's state (issue 21): the design map of the current ball over (λ, ζ), the
 //! quantity shown, the user's targets, and the window of the plane on screen. `App::update`
-//! changes it (src/tui/app/map.rs); the widget (src/tui/views/map/widget.rs) only reads it.
+//! changes it (src/tui/views/map/update.rs); the widget (src/tui/views/map/widget.rs) only reads it.
 //!
 //! The map is dimensional: the current ball at its v0, flattening included (its m, K_p, z_p
 //! and law held, K_r and c varied: [`MapSpec::dimensional`]). Its window is log-spaced on both

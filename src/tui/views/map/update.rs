@@ -2,11 +2,11 @@
 //! targets, the passes coming back from the worker, and the map kept up to date with the
 //! ball and the screen (src/tui/views/map/state.rs says what the map is).
 
-use super::{App, Effect, Setting, View};
 use crate::map::{Map, MapSpec, Targets, sensitivity};
 use crate::model::contact::ContactLaw;
 use crate::text::sig_trim;
 use crate::tui::action::Action;
+use crate::tui::app::{App, Effect, Setting, View};
 use crate::tui::export::{ExportRequest, file_stem_part};
 use crate::tui::param::Param;
 use crate::tui::state::{Overlay, Purpose};
@@ -30,7 +30,7 @@ impl App {
     }
 
     /// The map view's actions.
-    pub(super) fn map_action(&mut self, action: Action) {
+    pub(in crate::tui) fn map_action(&mut self, action: Action) {
         match action {
             Action::MapCursor { lambda, zeta } => self.move_cursor(lambda, zeta),
             Action::MapQuantity if self.view == View::Map => {
@@ -127,7 +127,7 @@ impl App {
 
     /// `Enter` in the targets entry: empty clears them; a text that does not read keeps the
     /// entry open with the reason (one line naming the part at fault).
-    pub(super) fn submit_targets(&mut self, text: &str) {
+    pub(in crate::tui) fn submit_targets(&mut self, text: &str) {
         if text.is_empty() {
             self.overlay = Overlay::None;
             if self.map.targets.take().is_some() {
@@ -155,7 +155,7 @@ impl App {
     /// the window for the current ball (a new one when the ball, law, v0, window or grid
     /// changed: its first, coarse pass here, within the frame, when the law is linear; the
     /// rest on the worker), and the sensitivities at the current point.
-    pub(super) fn refresh_map(&mut self) -> Option<Effect> {
+    pub(in crate::tui) fn refresh_map(&mut self) -> Option<Effect> {
         if self.view != View::Map {
             self.map.cancel();
             return None;
@@ -226,7 +226,7 @@ impl App {
 impl App {
     /// `e` in the map view: the map on screen once it has full detail (while the worker
     /// refines it the export waits, and says so).
-    pub(super) fn prepare_map_export(&mut self) -> Option<Effect> {
+    pub(in crate::tui) fn prepare_map_export(&mut self) -> Option<Effect> {
         let map = match &self.map.map {
             Some(Ok(m)) => m,
             Some(Err(e)) => {

@@ -1,7 +1,8 @@
 //! The drop view's part of [`App`]: its clock, its keys (`d`, space, `b`) and the motion
 //! setting (src/tui/views/drop/state.rs holds the view's state).
 
-use super::{Action, App, View};
+use crate::tui::action::Action;
+use crate::tui::app::{App, View};
 use crate::tui::views::drop::state::DropView;
 
 impl App {
@@ -22,7 +23,7 @@ impl App {
     }
 
     /// The drop view's keys (`d`, space, `b`) and the animation clock.
-    pub(super) fn drop_action(&mut self, action: &Action) {
+    pub(in crate::tui) fn drop_action(&mut self, action: &Action) {
         match action {
             Action::ToggleDrop => {
                 self.view = if self.view == View::Drop {

@@ -1,12 +1,12 @@
 //! Which COR-vs-speed sweeps the state needs, and where a finished one goes.
 
-use super::{App, Effect, Setting, View};
+use crate::tui::app::{App, Effect, Setting, View};
 use crate::tui::views::sweeps::speed::{SpeedCurve, SpeedRequest};
 
 impl App {
     /// List the sweeps the sweeps view needs and does not have; run them here, or, with a
     /// background worker, ask for them when the list changed.
-    pub(super) fn refresh_sweeps(&mut self) -> Option<Effect> {
+    pub(in crate::tui) fn refresh_sweeps(&mut self) -> Option<Effect> {
         self.sweeps.wanted.clear();
         if self.view == View::Sweeps {
             let (current, pins) = self.speed_targets();
@@ -37,7 +37,7 @@ impl App {
     }
 
     /// The sweeps the current setting and each pin (in order) need.
-    pub(super) fn speed_targets(&self) -> (SpeedRequest, Vec<SpeedRequest>) {
+    pub(in crate::tui) fn speed_targets(&self) -> (SpeedRequest, Vec<SpeedRequest>) {
         let request =
             |s: &Setting| SpeedRequest::new(&s.params, s.law, self.presets[s.preset].measured.v0);
         (
@@ -49,7 +49,7 @@ impl App {
     /// A finished sweep goes wherever it is (still) wanted. A failed one leaves an empty curve
     /// for its request, so it is not asked for again. A coarse one (`refining`) is drawn and
     /// stays wanted.
-    pub(super) fn receive_speed(
+    pub(in crate::tui) fn receive_speed(
         &mut self,
         request: &SpeedRequest,
         result: Result<SpeedCurve, String>,

@@ -1,8 +1,8 @@
 //! Which calibration the models view needs, and where a finished one goes: kept only when it
 //! is for the ball as it is now (a late answer for a ball the user has changed is dropped).
 
-use super::{App, Effect, View};
 use crate::figure::explorer::models::ModelsData;
+use crate::tui::app::{App, Effect, View};
 use crate::tui::views::models::state::ModelsRequest;
 
 impl App {
@@ -33,7 +33,7 @@ impl App {
 
     /// While the models view shows: ask for the calibration the ball needs and does not have;
     /// run it here, or, with a background worker, ask for it when that changed.
-    pub(super) fn refresh_models(&mut self) -> Option<Effect> {
+    pub(in crate::tui) fn refresh_models(&mut self) -> Option<Effect> {
         let target = self.models_target().filter(|_| self.view == View::Models);
         let held = self.models.held.as_ref().map(|h| &h.0);
         let wanted = target.filter(|t| held != Some(t));
@@ -52,7 +52,7 @@ impl App {
     }
 
     /// A finished calibration is kept when it is for the ball as it is now, dropped otherwise.
-    pub(super) fn receive_models(
+    pub(in crate::tui) fn receive_models(
         &mut self,
         request: ModelsRequest,
         result: Result<ModelsData, String>,

@@ -6,9 +6,9 @@
 //! not applied ([`Standing::Stale`]); an answer to a fit superseded by a later `f` (or by
 //! `O`, or a new file) is dropped.
 
-use super::{App, Effect, Overlay, Purpose, Setting};
 use crate::figure::explorer::MeasuredOverlay;
 use crate::measured::Data;
+use crate::tui::app::{App, Effect, Overlay, Purpose, Setting};
 use crate::tui::param::Param;
 use crate::tui::views::fit::state::{
     self as measured, FitOutcome, FitPane, FitStatus, Loaded, Standing,
@@ -17,12 +17,12 @@ use std::path::PathBuf;
 
 impl App {
     /// `o`: the path entry.
-    pub(super) fn open_measured(&mut self) {
+    pub(in crate::tui) fn open_measured(&mut self) {
         self.open_input(Purpose::MeasuredPath, String::new());
     }
 
     /// Enter in the path entry: the loop is to read the file.
-    pub(super) fn submit_path(&mut self, text: String) -> Option<Effect> {
+    pub(in crate::tui) fn submit_path(&mut self, text: String) -> Option<Effect> {
         self.overlay = Overlay::None;
         if text.is_empty() {
             return None;
@@ -33,7 +33,7 @@ impl App {
 
     /// The loop read `data` from `path`: it replaces what was drawn (and any fit to it),
     /// unless it cannot be drawn for the current ball, which changes nothing.
-    pub(super) fn measured_loaded(&mut self, path: PathBuf, data: Data) {
+    pub(in crate::tui) fn measured_loaded(&mut self, path: PathBuf, data: Data) {
         let label = crate::measured::file::label(&path);
         let p = self.setting.params;
         match MeasuredOverlay::from_data(&data, &label, p.mass, p.v0) {
@@ -78,7 +78,7 @@ impl App {
     }
 
     /// `O`: no more measured data, nor fit.
-    pub(super) fn clear_measured(&mut self) {
+    pub(in crate::tui) fn clear_measured(&mut self) {
         if self.fit.loaded.is_none() && self.fit.overlays.is_empty() {
             return self.warn("no measured data to put away (o loads a file)".into());
         }
@@ -89,7 +89,7 @@ impl App {
     }
 
     /// `f`: the fit of the current ball to the loaded data, for the fit worker.
-    pub(super) fn start_fit(&mut self) -> Option<Effect> {
+    pub(in crate::tui) fn start_fit(&mut self) -> Option<Effect> {
         let Some(loaded) = &self.fit.loaded else {
             self.warn("no measured data to fit to: o loads a file".into());
             return None;
@@ -118,7 +118,7 @@ impl App {
     }
 
     /// A fit came back: shown if it is the latest asked for, dropped if superseded.
-    pub(super) fn fit_ready(&mut self, id: u64, result: Result<FitOutcome, String>) {
+    pub(in crate::tui) fn fit_ready(&mut self, id: u64, result: Result<FitOutcome, String>) {
         let Some(pane) = self.fit.pane.as_mut().filter(|p| p.id == id) else {
             return;
         };
@@ -138,7 +138,7 @@ impl App {
     }
 
     /// `F`: the fitted ball in place of the current one, as one change `u` undoes.
-    pub(super) fn apply_fit(&mut self) {
+    pub(in crate::tui) fn apply_fit(&mut self) {
         let standing = self.fit_standing();
         let Some(pane) = &self.fit.pane else {
             return self.warn("no fit to apply: f fits the ball to the measured data".into());
