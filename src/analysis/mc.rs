@@ -1,0 +1,475 @@
+//! Monte Carlo: the spread of the COR, peak force and contact time when a ball's parameters
+//! are known only to a tolerance (docs/scale.md). No I/O; the command line (`bouncelab mc`),
+//! the Python package and its Dask path all call [`Sampler`].
+//!
+//! What holds:
+//!
+//! - **A sample is a function of (seed, index) alone.** Sample `i` draws its variates from
+//!   ChaCha8 keyed by the seed on stream `i` (a counter-based generator: no state passes from
+//!   one sample to the next), so the same seed gives the same samples on any number of
+//!   threads, in any chunking, on any machine of a cluster (`same_answer_on_one_thread_and_many`).
+//! - **Spreads are relative.** A spread `s` on a parameter of nominal value `v`: `normal`
+//!   draws v(1 + s N), sd s·v; `uniform` draws v(1 + s U), U uniform on [−1, 1), sd s·v/√3;
+//!   `lognormal` draws v·exp(μ + σN) with σ² = ln(1 + s²), μ = −σ²/2, so its mean is v and
+//!   its sd s·v as the normal's, and it never crosses 0.
+//! - **K_h follows K_p and z_p** (Eq. 16) when either is varied, as the fit and the command
+//!   line's overrides tie them ([`super::fit::apply`]).
+//! - **Each impact is `run`'s**: the closed form of [`crate::map::fast`] where it answers and
+//!   the ball does not flatten (to 1e-12 of the exact solver), else [`crate::simulate`].
+
+use super::fit::{Param, apply};
+use super::mc_stats::{Stats, stats};
+use crate::model::contact::ContactLaw;
+use crate::model::params::ImpactParams;
+use crate::solver::{SolveError, SolveOptions, simulate};
+use chacha20::ChaCha8Rng;
+use chacha20::rand_core::SeedableRng;
+use rand_distr::{Distribution, StandardNormal, StandardUniform};
+use rayon::prelude::*;
+use serde::Serialize;
+
+pub use super::mc_stats::{PROBS, Quantiles};
+
+/// The distribution of every varied parameter.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Dist {
+    /// v(1 + s N), N standard normal.
+    Normal,
+    /// v(1 + s U), U uniform on [−1, 1).
+    Uniform,
+    /// v·exp(μ + σN): mean v, sd s·v.
+    Lognormal,
+}
+
+impl Dist {
+    /// `normal`, `uniform` or `lognormal`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Dist::Normal => "normal",
+            Dist::Uniform => "uniform",
+            Dist::Lognormal => "lognormal",
+        }
+    }
+
+    /// The distribution of that [`name`](Dist::name).
+    pub fn parse(s: &str) -> Option<Dist> {
+        [Dist::Normal, Dist::Uniform, Dist::Lognormal]
+            .into_iter()
+            .find(|d| d.name() == s.trim())
+    }
+}
+
+/// A parameter a Monte Carlo can vary: one a fit can free, the mass or the impact speed.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub enum Varied {
+    /// K_p, c, K_r, z_p or K_h (K_h moves K_p with it, Eq. 16).
+    Param(Param),
+    /// The mass m (kg).
+    Mass,
+    /// The impact speed v0 (m/s).
+    V0,
+}
+
+impl Varied {
+    /// Every parameter, in the order the outputs list them.
+    pub const ALL: [Varied; 7] = [
+        Varied::Param(Param::KP),
+        Varied::Param(Param::C),
+        Varied::Param(Param::KR),
+        Varied::Param(Param::ZP),
+        Varied::Param(Param::KH),
+        Varied::Mass,
+        Varied::V0,
+    ];
+
+    /// `k_p`, `c`, `k_r`, `z_p`, `k_h`, `m` or `v0`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Varied::Param(p) => p.name(),
+            Varied::Mass => "m",
+            Varied::V0 => "v0",
+        }
+    }
+
+    /// The parameter of that [`name`](Varied::name).
+    pub fn parse(s: &str) -> Option<Varied> {
+        Varied::ALL.into_iter().find(|v| v.name() == s.trim())
+    }
+
+    /// Its nominal value in `p`.
+    pub fn get(self, p: &ImpactParams) -> f64 {
+        match self {
+            Varied::Param(q) => q.get(p),
+            Varied::Mass => p.mass,
+            Varied::V0 => p.v0,
+        }
+    }
+}
+
+/// One varied parameter and its relative spread (0.05 for 5 %).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Spread {
+    /// The parameter.
+    pub what: Varied,
+    /// Its relative spread, ≥ 0.
+    pub spread: f64,
+}
+
+/// Why a Monte Carlo cannot run, one line naming the field.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum McError {
+    /// A `--vary` entry names no parameter that can vary.
+    #[error("invalid vary: unknown parameter '{0}' (choose from k_p, c, k_r, z_p, k_h, m, v0)")]
+    Unknown(String),
+    /// A `--vary` entry without `=` or with a spread that is not a number.
+    #[error("invalid vary: '{0}' is not NAME=SPREAD (e.g. k_p=5% or k_p=0.05)")]
+    Syntax(String),
+    /// A spread below 0 or not finite.
+    #[error("invalid vary {0}: {1} (the spread must be a finite number ≥ 0)")]
+    Spread(&'static str, f64),
+    /// A uniform spread of 1 (100 %) or more would reach 0.
+    #[error("invalid vary {0}: {1} (a uniform spread must be below 1, 100 %: the parameter would reach 0)")]
+    UniformWide(&'static str, f64),
+    /// The same parameter twice.
+    #[error("invalid vary: {0} given twice")]
+    Twice(&'static str),
+    /// Nothing to vary.
+    #[error("invalid vary: no parameter given")]
+    Empty,
+    /// No sample asked for.
+    #[error("invalid samples: 0 (must be at least 1)")]
+    NoSamples,
+    /// A normal draw crossed into a parameter's forbidden domain.
+    #[error("invalid vary: sample {index} draws an out-of-domain ball ({reason}); a normal spread this wide crosses 0: use --dist lognormal or a smaller spread")]
+    Domain {
+        /// The sample's index.
+        index: u64,
+        /// The parameter's own message.
+        reason: String,
+    },
+    /// An impact without an answer (not the input's fault).
+    #[error(transparent)]
+    Solve(SolveError),
+}
+
+/// `k_p=5%,c=0.05,…`: the parameters and their relative spreads, in [`Varied::ALL`]'s order.
+pub fn parse_vary(text: &str) -> Result<Vec<Spread>, McError> {
+    let mut out: Vec<Spread> = Vec::new();
+    for item in text.split(',').map(str::trim).filter(|s| !s.is_empty()) {
+        let (name, value) = item
+            .split_once('=')
+            .ok_or_else(|| McError::Syntax(item.into()))?;
+        let what = Varied::parse(name).ok_or_else(|| McError::Unknown(name.trim().into()))?;
+        let value = value.trim();
+        let (number, scale) = match value.strip_suffix('%') {
+            Some(v) => (v.trim(), 0.01),
+            None => (value, 1.0),
+        };
+        let spread = number
+            .parse::<f64>()
+            .map_err(|_| McError::Syntax(item.into()))?
+            * scale;
+        if out.iter().any(|s| s.what == what) {
+            return Err(McError::Twice(what.name()));
+        }
+        out.push(Spread { what, spread });
+    }
+    out.sort_by_key(|s| s.what);
+    Ok(out)
+}
+
+/// What a Monte Carlo runs: the spreads, their distribution, how many samples, the seed.
+#[derive(Debug, Clone, PartialEq)]
+pub struct McSpec {
+    /// The varied parameters, in [`Varied::ALL`]'s order.
+    pub vary: Vec<Spread>,
+    /// Their distribution.
+    pub dist: Dist,
+    /// Number of samples.
+    pub samples: usize,
+    /// The generator's seed.
+    pub seed: u64,
+}
+
+impl McSpec {
+    /// A checked spec: at least one parameter and one sample, each spread finite and ≥ 0 (< 1
+    /// for `uniform`), no parameter twice. The spreads are put in [`Varied::ALL`]'s order, so
+    /// that the order they were given in does not change the samples.
+    pub fn new(
+        mut vary: Vec<Spread>,
+        dist: Dist,
+        samples: usize,
+        seed: u64,
+    ) -> Result<McSpec, McError> {
+        if vary.is_empty() {
+            return Err(McError::Empty);
+        }
+        vary.sort_by_key(|s| s.what);
+        for (i, s) in vary.iter().enumerate() {
+            if !(s.spread.is_finite() && s.spread >= 0.0) {
+                return Err(McError::Spread(s.what.name(), s.spread));
+            }
+            if dist == Dist::Uniform && s.spread >= 1.0 {
+                return Err(McError::UniformWide(s.what.name(), s.spread));
+            }
+            if i > 0 && vary[i - 1].what == s.what {
+                return Err(McError::Twice(s.what.name()));
+            }
+        }
+        if samples == 0 {
+            return Err(McError::NoSamples);
+        }
+        Ok(McSpec {
+            vary,
+            dist,
+            samples,
+            seed,
+        })
+    }
+}
+
+/// One sample's answer; `contact_time` NaN where the ball stays at the wall.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Outcome {
+    /// The COR e.
+    pub cor: f64,
+    /// Peak force F_m, N.
+    pub max_force: f64,
+    /// Contact time t_f, s (NaN: no rebound).
+    pub contact_time: f64,
+}
+
+/// The samples `start … start + len` of a run, one column a quantity, in index order.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Samples {
+    /// Index of the first sample.
+    pub start: u64,
+    /// COR of each sample.
+    pub cor: Vec<f64>,
+    /// Peak force of each sample, N.
+    pub max_force: Vec<f64>,
+    /// Contact time of each sample, s (NaN: no rebound).
+    pub contact_time: Vec<f64>,
+}
+
+impl Samples {
+    /// Number of samples held.
+    pub fn len(&self) -> usize {
+        self.cor.len()
+    }
+
+    /// Whether none is held.
+    pub fn is_empty(&self) -> bool {
+        self.cor.is_empty()
+    }
+
+    /// `other`, the samples that follow these, appended.
+    pub fn extend(&mut self, other: Samples) {
+        debug_assert_eq!(other.start, self.start + self.len() as u64);
+        self.cor.extend(other.cor);
+        self.max_force.extend(other.max_force);
+        self.contact_time.extend(other.contact_time);
+    }
+}
+
+/// The statistics of the three quantities.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct McStats {
+    /// Of the COR.
+    pub cor: Stats,
+    /// Of the peak force, N.
+    pub max_force: Stats,
+    /// Of the contact time, s, over the samples that rebound.
+    pub contact_time: Stats,
+}
+
+/// The statistics of `s` (a whole run, or any samples): a function of the values in index
+/// order only.
+pub fn summarize(s: &Samples) -> McStats {
+    McStats {
+        cor: stats(&s.cor),
+        max_force: stats(&s.max_force),
+        contact_time: stats(&s.contact_time),
+    }
+}
+
+/// Samples solved in parallel between two scans in index order (which keep the first error
+/// by index, whatever the threads did).
+const BLOCK: usize = 1 << 14;
+
+/// Draws and solves the samples of one spec on one ball.
+#[derive(Debug, Clone)]
+pub struct Sampler {
+    base: ImpactParams,
+    law: ContactLaw,
+    spec: McSpec,
+    /// ChaCha8's key: the seed expanded as `ChaCha8Rng::seed_from_u64` expands it.
+    key: [u8; 32],
+}
+
+/// The key `SeedableRng::seed_from_u64` makes of a seed (rand_core's own expansion), kept so
+/// that each sample's generator is built from it without a clone (ChaCha8Rng has none):
+/// `ChaCha8Rng::from_seed(key(s))` is `ChaCha8Rng::seed_from_u64(s)`.
+fn key(seed: u64) -> [u8; 32] {
+    struct Key([u8; 32]);
+    impl SeedableRng for Key {
+        type Seed = [u8; 32];
+        fn from_seed(seed: [u8; 32]) -> Key {
+            Key(seed)
+        }
+    }
+    Key::seed_from_u64(seed).0
+}
+
+impl Sampler {
+    /// The sampler of `spec` around the nominal ball `base` under `law`.
+    pub fn new(base: ImpactParams, law: ContactLaw, spec: McSpec) -> Sampler {
+        Sampler {
+            base,
+            law,
+            key: key(spec.seed),
+            spec,
+        }
+    }
+
+    /// The spec it runs.
+    pub fn spec(&self) -> &McSpec {
+        &self.spec
+    }
+
+    /// The varied parameters' values of sample `index`, in the spec's order.
+    pub fn inputs(&self, index: u64) -> Vec<f64> {
+        let mut rng = ChaCha8Rng::from_seed(self.key);
+        rng.set_stream(index);
+        let dist = self.spec.dist;
+        self.spec
+            .vary
+            .iter()
+            .map(|s| {
+                let v = s.what.get(&self.base);
+                match dist {
+                    Dist::Normal => {
+                        let n: f64 = StandardNormal.sample(&mut rng);
+                        v * (1.0 + s.spread * n)
+                    }
+                    Dist::Uniform => {
+                        let u: f64 = StandardUniform.sample(&mut rng);
+                        v * (1.0 + s.spread * (2.0 * u - 1.0))
+                    }
+                    Dist::Lognormal => {
+                        let n: f64 = StandardNormal.sample(&mut rng);
+                        let var = s.spread.mul_add(s.spread, 1.0).ln();
+                        v * (var.sqrt() * n - 0.5 * var).exp()
+                    }
+                }
+            })
+            .collect()
+    }
+
+    /// The ball of sample `index`, checked.
+    pub fn params(&self, index: u64) -> Result<ImpactParams, McError> {
+        let values = self.inputs(index);
+        let mut free = Vec::new();
+        let mut fit_values = Vec::new();
+        let mut p = self.base;
+        for (s, v) in self.spec.vary.iter().zip(values) {
+            match s.what {
+                Varied::Param(q) => {
+                    free.push(q);
+                    fit_values.push(v);
+                }
+                Varied::Mass => p.mass = v,
+                Varied::V0 => p.v0 = v,
+            }
+        }
+        let p = apply(&p, &free, &fit_values);
+        p.validate().map_err(|e| McError::Domain {
+            index,
+            reason: e.to_string(),
+        })?;
+        Ok(p)
+    }
+
+    /// Sample `index`: its ball, and the impact `bouncelab run` would solve for it.
+    pub fn outcome(&self, index: u64) -> Result<Outcome, McError> {
+        let p = self.params(index)?;
+        impact(&p, self.law).map_err(McError::Solve)
+    }
+
+    /// The samples `start … start + count`, on all cores; the first error by index, if any.
+    pub fn samples(&self, start: u64, count: usize) -> Result<Samples, McError> {
+        let mut out = Samples {
+            start,
+            cor: Vec::with_capacity(count),
+            max_force: Vec::with_capacity(count),
+            contact_time: Vec::with_capacity(count),
+        };
+        let mut done = 0usize;
+        while done < count {
+            let n = BLOCK.min(count - done);
+            let first = start + done as u64;
+            let block: Vec<Result<Outcome, McError>> = (0..n as u64)
+                .into_par_iter()
+                .map(|k| self.outcome(first + k))
+                .collect();
+            for r in block {
+                let o = r?;
+                out.cor.push(o.cor);
+                out.max_force.push(o.max_force);
+                out.contact_time.push(o.contact_time);
+            }
+            done += n;
+        }
+        Ok(out)
+    }
+}
+
+/// One impact as `bouncelab run` solves it (COR, F_m, t_f): the closed form where it answers
+/// and the ball does not flatten (z̄_m ≤ z̄_p), SI by F = F̄ m v0 ω0 and t = τ/ω0; else the
+/// solver with its default options.
+pub fn impact(p: &ImpactParams, law: ContactLaw) -> Result<Outcome, SolveError> {
+    if law == ContactLaw::Linear {
+        let n = p.normalized();
+        if let Some(s) = crate::map::fast::summary(n.lambda, n.zeta)
+            && s.max_force <= n.zp_bar
+        {
+            let w0 = p.omega0();
+            return Ok(Outcome {
+                cor: s.cor,
+                max_force: s.max_force * p.mass * p.v0 * w0,
+                contact_time: s.contact_time / w0,
+            });
+        }
+    }
+    let r = simulate(p, law, &SolveOptions::default())?;
+    Ok(Outcome {
+        cor: r.cor,
+        max_force: r.max_force,
+        contact_time: r.contact_time.unwrap_or(f64::NAN),
+    })
+}
+
+/// A whole run's statistics, with what it ran.
+#[derive(Debug, Clone, PartialEq)]
+pub struct McSummary {
+    /// The spec.
+    pub spec: McSpec,
+    /// Samples in which the ball stayed at the wall (no contact time).
+    pub no_rebound: usize,
+    /// The statistics.
+    pub stats: McStats,
+}
+
+/// The summary of a complete run's samples.
+pub fn summary(spec: &McSpec, s: &Samples) -> McSummary {
+    McSummary {
+        spec: spec.clone(),
+        no_rebound: s.contact_time.iter().filter(|t| t.is_nan()).count(),
+        stats: summarize(s),
+    }
+}
+
+#[cfg(test)]
+#[path = "mc_tests.rs"]
+mod tests;
