@@ -63,9 +63,11 @@ pub struct Ball {
 mod entry;
 mod error;
 mod fit;
+mod mc;
 mod report;
 pub use entry::Overrides;
 pub use error::BallError;
+pub use mc::{McReport, MonteCarlo};
 pub use report::{BallHeader, Energy, FitReport, ImpactReport, MeasuredAt};
 
 impl Ball {

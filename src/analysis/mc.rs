@@ -18,7 +18,7 @@
 //!   the ball does not flatten (to 1e-12 of the exact solver), else [`crate::simulate`].
 
 use super::fit::{Param, apply};
-use super::mc_stats::{Stats, stats};
+use super::mc_stats::stats;
 use crate::model::contact::ContactLaw;
 use crate::model::params::ImpactParams;
 use crate::solver::{SolveError, SolveOptions, simulate};
@@ -28,7 +28,7 @@ use rand_distr::{Distribution, StandardNormal, StandardUniform};
 use rayon::prelude::*;
 use serde::Serialize;
 
-pub use super::mc_stats::{PROBS, Quantiles};
+pub use super::mc_stats::{PROBS, Quantiles, Stats};
 
 /// The distribution of every varied parameter.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
@@ -129,7 +129,9 @@ pub enum McError {
     #[error("invalid vary {0}: {1} (the spread must be a finite number ≥ 0)")]
     Spread(&'static str, f64),
     /// A uniform spread of 1 (100 %) or more would reach 0.
-    #[error("invalid vary {0}: {1} (a uniform spread must be below 1, 100 %: the parameter would reach 0)")]
+    #[error(
+        "invalid vary {0}: {1} (a uniform spread must be below 1, 100 %: the parameter would reach 0)"
+    )]
     UniformWide(&'static str, f64),
     /// The same parameter twice.
     #[error("invalid vary: {0} given twice")]
@@ -141,7 +143,9 @@ pub enum McError {
     #[error("invalid samples: 0 (must be at least 1)")]
     NoSamples,
     /// A normal draw crossed into a parameter's forbidden domain.
-    #[error("invalid vary: sample {index} draws an out-of-domain ball ({reason}); a normal spread this wide crosses 0: use --dist lognormal or a smaller spread")]
+    #[error(
+        "invalid vary: sample {index} draws an out-of-domain ball ({reason}); a normal spread this wide crosses 0: use --dist lognormal or a smaller spread"
+    )]
     Domain {
         /// The sample's index.
         index: u64,

@@ -131,7 +131,10 @@ pub fn stats(values: &[f64]) -> Stats {
 /// reordered. Each order statistic is selected within the part of the slice left of the
 /// previous one's right: ascending ranks need only the slice beyond the last rank found.
 pub fn quantiles<const K: usize>(values: &mut [f64], percents: &[f64; K]) -> [f64; K] {
-    debug_assert!(percents.windows(2).all(|w| w[0] <= w[1]), "ascending percents");
+    debug_assert!(
+        percents.windows(2).all(|w| w[0] <= w[1]),
+        "ascending percents"
+    );
     let n = values.len();
     let mut out = [0.0; K];
     let mut from = 0usize; // values[..from] are ≤ values[from..] and already placed
@@ -197,7 +200,10 @@ mod tests {
     #[test]
     fn undefined_samples_are_left_out_and_none_left_is_nan() {
         let s = stats(&[f64::NAN, 2.0, f64::NAN, 4.0]);
-        assert_eq!((s.n, s.mean, s.min, s.max, s.q.q50), (2, 3.0, 2.0, 4.0, 3.0));
+        assert_eq!(
+            (s.n, s.mean, s.min, s.max, s.q.q50),
+            (2, 3.0, 2.0, 4.0, 3.0)
+        );
         assert!((s.sd - 2f64.sqrt()).abs() < 1e-15);
         let none = stats(&[f64::NAN]);
         assert_eq!(none.n, 0);

@@ -43,7 +43,10 @@ fn bad_vary_names_the_field() {
         "invalid vary k_p: -0.05 (the spread must be a finite number ≥ 0)"
     );
     let e = McSpec::new(parse_vary("k_r=1").unwrap(), Dist::Uniform, 10, 1).unwrap_err();
-    assert!(e.to_string().starts_with("invalid vary k_r: 1 (a uniform"), "{e}");
+    assert!(
+        e.to_string().starts_with("invalid vary k_r: 1 (a uniform"),
+        "{e}"
+    );
     let e = McSpec::new(parse_vary("k_r=1%").unwrap(), Dist::Normal, 0, 1).unwrap_err();
     assert_eq!(e.to_string(), "invalid samples: 0 (must be at least 1)");
     assert_eq!(
@@ -59,7 +62,12 @@ fn zero_spread_is_the_deterministic_impact() {
     let r = ball.impact().unwrap();
     let s = spec("k_p=0,c=0,k_r=0", Dist::Normal, 50, 7);
     let st = summarize(&run(&ball, &s));
-    assert!((st.cor.mean - r.cor).abs() < 1e-12, "{} {}", st.cor.mean, r.cor);
+    assert!(
+        (st.cor.mean - r.cor).abs() < 1e-12,
+        "{} {}",
+        st.cor.mean,
+        r.cor
+    );
     assert_eq!(st.cor.sd, 0.0);
     assert_eq!(st.cor.min, st.cor.max);
     let rel = |a: f64, b: f64| ((a - b) / b).abs();
@@ -117,7 +125,13 @@ fn same_answer_on_one_thread_and_many_and_in_any_chunks() {
     // a sample alone is the same sample
     assert_eq!(sampler.outcome(12_345).unwrap().cor, one.cor[12_345]);
     // another seed, other samples
-    let other = run(&ball, &McSpec { seed: 43, ..s.clone() });
+    let other = run(
+        &ball,
+        &McSpec {
+            seed: 43,
+            ..s.clone()
+        },
+    );
     assert_ne!(other.cor[0], one.cor[0]);
 }
 

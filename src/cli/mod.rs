@@ -19,6 +19,7 @@ mod fit_plot;
 mod fit_report;
 mod fit_save;
 pub mod map;
+pub mod mc;
 pub mod measured_file;
 pub mod number;
 pub mod output;
@@ -93,6 +94,10 @@ pub enum Command {
     /// COR, peak force and contact time over a (λ, ζ) grid, with targets: CSV, JSON or an SVG
     /// heat map (docs/map.md)
     Map(map::MapArgs),
+    /// Monte Carlo over a ball's parameter tolerances: quantiles, mean and sd of the COR, peak
+    /// force and contact time (docs/scale.md)
+    #[command(allow_negative_numbers = true)]
+    Mc(mc::McArgs),
 }
 
 /// The explorer failed (its terminal, its event loop): not the input's fault.
@@ -293,6 +298,10 @@ fn dispatch(cli: Cli, out: &mut dyn Write) -> anyhow::Result<()> {
         Command::Drop(mut a) => {
             merge(top, &mut a.ball)?;
             drop::run(&a, out)
+        }
+        Command::Mc(mut a) => {
+            merge(top, &mut a.ball)?;
+            mc::run(&a, out)
         }
         Command::Standards(a) => {
             if top.is_given() {
