@@ -52,7 +52,11 @@ def monte_carlo(
     params: Optional[str] = None,
 ) -> Dict[str, Any]:
     """``bouncelab.monte_carlo`` with its samples computed on the workers of ``client`` (a
-    ``distributed.Client``), ``chunk`` samples a task; the same dict, the same numbers."""
+    ``distributed.Client``), ``chunk`` samples a task; the same dict, the same numbers.
+
+    With ``client=None`` the tasks go to Dask's current scheduler as a ``dask.delayed`` graph
+    (``dask.compute``): Dask's local schedulers, or Ray's once ``ray.util.dask.
+    enable_dask_on_ray()`` made it the default."""
     if isinstance(vary, Mapping):
         vary = dict(vary)
     options = dict(
@@ -72,9 +76,15 @@ def monte_carlo(
     _native.monte_carlo_chunk(**options, start=0, count=min(chunk, samples), check_only=True)
     starts = list(range(0, samples, chunk))
     counts = [min(chunk, samples - s) for s in starts]
-    # pure tasks: a key is a hash of the arguments, so equal requests share their results
-    futures = client.map(_chunk, [options] * len(starts), starts, counts)
-    parts = client.gather(futures)
+    if client is None:
+        import dask
+
+        tasks = [dask.delayed(_chunk, pure=True)(options, s, c) for s, c in zip(starts, counts)]
+        parts = dask.compute(*tasks)
+    else:
+        # pure tasks: a key is a hash of the arguments, so equal requests share their results
+        futures = client.map(_chunk, [options] * len(starts), starts, counts)
+        parts = client.gather(futures)
     cor, max_force, contact_time = (
         np.concatenate([p[k] for p in parts]) for k in range(3)
     )

@@ -122,6 +122,18 @@ def test_dask_gives_the_single_process_answer(client):
     assert bouncelab.dask.monte_carlo(client, **{**kw, "seed": 24}, chunk=5_000) != one
 
 
+def test_dask_without_a_client_uses_dasks_own_scheduler():
+    pytest.importorskip("dask")
+    import dask
+
+    import bouncelab.dask
+
+    kw = dict(preset="tennis", vary="k_r=5%,c=2%", samples=2_500, seed=4, dist="lognormal")
+    one = bouncelab.monte_carlo(**kw)
+    with dask.config.set(scheduler="threads"):
+        assert bouncelab.dask.monte_carlo(None, **kw, chunk=1_000) == one
+
+
 def test_dask_refuses_bad_input_on_the_client(client):
     import bouncelab.dask
 
