@@ -13,11 +13,11 @@
 //!   `lognormal` draws v·exp(μ + σN) with σ² = ln(1 + s²), μ = −σ²/2, so its mean is v and
 //!   its sd s·v as the normal's, and it never crosses 0.
 //! - **K_h follows K_p and z_p** (Eq. 16) when either is varied, as the fit and the command
-//!   line's overrides tie them ([`super::fit::apply`]).
+//!   line's overrides tie them (as [`super::fit::apply`]).
 //! - **Each impact is `run`'s**: the closed form of [`crate::map::fast`] where it answers and
 //!   the ball does not flatten (to 1e-12 of the exact solver), else [`crate::simulate`].
 
-use super::fit::{Param, apply};
+use super::fit::Param;
 use super::mc_stats::stats;
 use crate::model::contact::ContactLaw;
 use crate::model::params::ImpactParams;
@@ -344,50 +344,58 @@ impl Sampler {
 
     /// The varied parameters' values of sample `index`, in the spec's order.
     pub fn inputs(&self, index: u64) -> Vec<f64> {
-        let mut rng = ChaCha8Rng::from_seed(self.key);
-        rng.set_stream(index);
-        let dist = self.spec.dist;
-        self.spec
-            .vary
-            .iter()
-            .map(|s| {
-                let v = s.what.get(&self.base);
-                match dist {
-                    Dist::Normal => {
-                        let n: f64 = StandardNormal.sample(&mut rng);
-                        v * (1.0 + s.spread * n)
-                    }
-                    Dist::Uniform => {
-                        let u: f64 = StandardUniform.sample(&mut rng);
-                        v * (1.0 + s.spread * (2.0 * u - 1.0))
-                    }
-                    Dist::Lognormal => {
-                        let n: f64 = StandardNormal.sample(&mut rng);
-                        let var = s.spread.mul_add(s.spread, 1.0).ln();
-                        v * (var.sqrt() * n - 0.5 * var).exp()
-                    }
-                }
-            })
-            .collect()
+        let (values, n) = self.draw(index);
+        values[..n].to_vec()
     }
 
-    /// The ball of sample `index`, checked.
-    pub fn params(&self, index: u64) -> Result<ImpactParams, McError> {
-        let values = self.inputs(index);
-        let mut free = Vec::new();
-        let mut fit_values = Vec::new();
-        let mut p = self.base;
-        for (s, v) in self.spec.vary.iter().zip(values) {
-            match s.what {
-                Varied::Param(q) => {
-                    free.push(q);
-                    fit_values.push(v);
+    /// The values of [`Sampler::inputs`] without an allocation: the first `n` of the array.
+    fn draw(&self, index: u64) -> ([f64; Varied::ALL.len()], usize) {
+        let mut rng = ChaCha8Rng::from_seed(self.key);
+        rng.set_stream(index);
+        let mut out = [0.0; Varied::ALL.len()];
+        for (slot, s) in out.iter_mut().zip(&self.spec.vary) {
+            let v = s.what.get(&self.base);
+            *slot = match self.spec.dist {
+                Dist::Normal => {
+                    let n: f64 = StandardNormal.sample(&mut rng);
+                    v * (1.0 + s.spread * n)
                 }
+                Dist::Uniform => {
+                    let u: f64 = StandardUniform.sample(&mut rng);
+                    v * (1.0 + s.spread * (2.0 * u - 1.0))
+                }
+                Dist::Lognormal => {
+                    let n: f64 = StandardNormal.sample(&mut rng);
+                    let var = s.spread.mul_add(s.spread, 1.0).ln();
+                    v * (var.sqrt() * n - 0.5 * var).exp()
+                }
+            };
+        }
+        (out, self.spec.vary.len())
+    }
+
+    /// The ball of sample `index`, checked. The values are set in [`Varied::ALL`]'s order (z_p
+    /// before K_h, which reads it) and K_h then follows K_p and z_p, as
+    /// [`super::fit::apply`] does (`k_h_follows_k_p_…` holds the two to the same ball).
+    pub fn params(&self, index: u64) -> Result<ImpactParams, McError> {
+        let (values, n) = self.draw(index);
+        let mut p = self.base;
+        let mut tied = false;
+        for (s, &v) in self.spec.vary.iter().zip(&values[..n]) {
+            match s.what {
+                Varied::Param(Param::KP) => p.k_p = v,
+                Varied::Param(Param::C) => p.damping = v,
+                Varied::Param(Param::KR) => p.k_r = v,
+                Varied::Param(Param::ZP) => p.z_p = v,
+                Varied::Param(Param::KH) => p.k_p = 1.5 * v * p.z_p.sqrt(),
                 Varied::Mass => p.mass = v,
                 Varied::V0 => p.v0 = v,
             }
+            tied |= matches!(s.what, Varied::Param(Param::KP | Param::ZP | Param::KH));
         }
-        let p = apply(&p, &free, &fit_values);
+        if tied && p.z_p.is_finite() {
+            p.k_h = ImpactParams::k_h_matching(p.k_p, p.z_p);
+        }
         p.validate().map_err(|e| McError::Domain {
             index,
             reason: e.to_string(),

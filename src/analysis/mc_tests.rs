@@ -1,5 +1,6 @@
 use super::*;
 use crate::Ball;
+use crate::analysis::fit::apply;
 
 fn golf() -> Ball {
     Ball::from_preset("golf").unwrap()
@@ -171,6 +172,21 @@ fn k_h_follows_k_p_and_mass_and_speed_vary_too() {
     let v = s.inputs(0);
     assert_eq!((p.k_p, p.mass, p.v0), (v[0], v[1], v[2]));
     assert_eq!(p.k_h, ImpactParams::k_h_matching(p.k_p, p.z_p));
+    // the fit's and the overrides' own application gives the same ball, K_h and z_p included
+    let base = ImpactParams {
+        mass: v[1],
+        v0: v[2],
+        ..ball.params
+    };
+    assert_eq!(p, apply(&base, &[Param::KP], &[v[0]]));
+    let s = Sampler::new(
+        ball.params,
+        ball.law,
+        spec("k_p=5%,c=1%,k_r=2%,z_p=3%,k_h=4%", Dist::Normal, 1, 2),
+    );
+    let (p, v) = (s.params(0).unwrap(), s.inputs(0));
+    let all = [Param::KP, Param::C, Param::KR, Param::ZP, Param::KH];
+    assert_eq!(p, apply(&ball.params, &all, &v));
 }
 
 /// A normal spread so wide that K_r crosses 0 is refused with the sample that did; the
