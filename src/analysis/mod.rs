@@ -3,6 +3,7 @@
 
 pub mod fit;
 pub mod mc;
+mod mc_spec;
 mod mc_stats;
 pub mod sweep;
 pub mod work;
