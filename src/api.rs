@@ -68,12 +68,14 @@ mod entry;
 mod error;
 mod fit;
 mod intervals;
+mod mc;
 mod report;
 mod warnings;
 pub use collide::CollisionReport;
 pub use entry::Overrides;
 pub use error::BallError;
 pub use intervals::{Intervals, bands, holds, intervals};
+pub use mc::{McReport, MonteCarlo};
 pub use report::{BallHeader, Energy, FitReport, ImpactReport, MeasuredAt};
 pub use warnings::{ENERGY_RESIDUAL_MAX, indentation_warning};
 

@@ -43,8 +43,9 @@
 //!   [`ImpactResponse`];
 //! - [`model`]: the parameters ([`ImpactParams`], normalized as λ, ζ, z̄_p, κ), the contact laws
 //!   ([`ContactLaw`]) and the material formulas;
-//! - [`analysis`]: sweeps, and fits of the model to measurements (one COR, COR tables,
-//!   force–time traces);
+//! - [`analysis`]: sweeps, fits of the model to measurements (one COR, COR tables,
+//!   force–time traces), and the Monte Carlo over parameter tolerances ([`analysis::mc`],
+//!   [`Ball::monte_carlo`]);
 //! - [`measured`]: measured data read from text (traces, COR tables, drop tests);
 //! - [`peers`]: the field's other contact models (Kelvin–Voigt, Tsuji, Hunt–Crossley)
 //!   calibrated to the same ball;

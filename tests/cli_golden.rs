@@ -182,6 +182,41 @@ const CASES: &[(&str, &[&str])] = &[
     ),
     ("standards-text", &["standards"]),
     ("bad-standard", &["drop", "--standard", "wimbledon"]),
+    (
+        "mc-text-golf",
+        &[
+            "mc",
+            "--preset",
+            "golf",
+            "--vary",
+            "k_p=5%,c=5%,k_r=5%",
+            "--samples",
+            "200",
+            "--seed",
+            "7",
+        ],
+    ),
+    (
+        "mc-json-uniform-csv",
+        &[
+            "mc",
+            "--preset",
+            "tennis",
+            "--vary",
+            "k_r=10%,v0=0.02",
+            "--dist",
+            "uniform",
+            "--samples",
+            "12",
+            "--seed",
+            "3",
+            "--format",
+            "json",
+            "--csv-out",
+            "{dir}/samples.csv",
+        ],
+    ),
+    ("bad-mc-vary", &["mc", "--vary", "k_q=5%"]),
 ];
 
 #[test]

@@ -12,6 +12,10 @@ units, the names of the command line's JSON and CSV output, numpy arrays out.
 Every error raises ``ValueError`` with the one-line message ``bouncelab`` prints on the
 command line (without its ``bouncelab: error:`` prefix); an impact the solver could not bring
 to an end raises ``NoAnswerError``, a ``ValueError`` too.
+
+``bouncelab.monte_carlo`` spreads a ball's parameters over their tolerances (as ``bouncelab
+mc``); ``bouncelab.dask.monte_carlo`` runs the same on a Dask cluster (docs/scale.md; the
+``dask`` submodule needs ``distributed`` and is imported on first use).
 """
 
 from ._native import (
@@ -24,6 +28,7 @@ from ._native import (
     fit_cor_table,
     fit_drops,
     fit_trace,
+    monte_carlo,
     presets,
     run,
     run_normalized,
@@ -42,6 +47,7 @@ __all__ = [
     "fit_cor_table",
     "fit_drops",
     "fit_trace",
+    "monte_carlo",
     "presets",
     "run",
     "run_normalized",
@@ -49,3 +55,13 @@ __all__ = [
     "sweep_velocity",
     "sweep_zeta",
 ]
+
+
+def __getattr__(name):
+    # ``bouncelab.dask`` without an explicit import, and without importing Dask before it is
+    # asked for (it is an optional dependency)
+    if name == "dask":
+        import importlib
+
+        return importlib.import_module(".dask", __name__)
+    raise AttributeError(f"module 'bouncelab' has no attribute {name!r}")

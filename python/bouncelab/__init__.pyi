@@ -273,3 +273,41 @@ def collide(
     """The ball against a target of mass M (inf: the wall) moving at v_t toward it, rigid or
     with a surface K_s ∥ c_s, as ``bouncelab collide``; or against another preset ball
     (``target_preset``)."""
+
+Dist = Literal["normal", "uniform", "lognormal"]
+
+class McStats(TypedDict):
+    n: int
+    mean: float
+    sd: float
+    min: float
+    max: float
+    q: dict[str, float]
+
+class MonteCarlo(TypedDict, total=False):
+    samples: int
+    seed: int
+    preset: Optional[str]
+    law: str
+    v0: float
+    dist: str
+    vary: dict[str, float]
+    no_rebound: int
+    stats: dict[str, McStats]
+    values: dict[str, Array]
+
+def monte_carlo(
+    *,
+    preset: str = "superball",
+    vary: Union[str, dict[str, float]],
+    samples: int = 10000,
+    seed: int = 0,
+    dist: Dist = "normal",
+    v0: Optional[float] = None,
+    law: Optional[Law] = None,
+    params: Optional[ParamSet] = None,
+    return_samples: bool = False,
+) -> MonteCarlo:
+    """COR, max_force and contact_time over ``samples`` samples of the preset's parameters
+    spread by ``vary`` (fractions: {"k_p": 0.05}, or "k_p=5%,…"), as ``bouncelab mc --format
+    json``; with ``return_samples``, ``values`` holds each sample's values as arrays."""

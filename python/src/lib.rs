@@ -20,6 +20,7 @@ use pyo3::types::PyDict;
 mod collide;
 mod fits;
 mod impact;
+mod mc;
 
 use impact::{Impact, impact, interval_columns};
 
@@ -398,5 +399,8 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(fits::fit_trace, m)?)?;
     m.add_function(wrap_pyfunction!(fits::fit_cor_table, m)?)?;
     m.add_function(wrap_pyfunction!(fits::fit_drops, m)?)?;
+    m.add_function(wrap_pyfunction!(mc::monte_carlo, m)?)?;
+    m.add_function(wrap_pyfunction!(mc::monte_carlo_chunk, m)?)?;
+    m.add_function(wrap_pyfunction!(mc::monte_carlo_merge, m)?)?;
     Ok(())
 }

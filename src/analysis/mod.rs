@@ -1,5 +1,9 @@
-//! What users do with single impacts: sweeps (the paper's Figs. 2–4) and fits (docs/model.md §4).
+//! What users do with single impacts: sweeps (the paper's Figs. 2–4), fits (docs/model.md §4)
+//! and Monte Carlo over tolerances (docs/scale.md).
 
 pub mod fit;
+pub mod mc;
+mod mc_spec;
+mod mc_stats;
 pub mod sweep;
 pub mod work;

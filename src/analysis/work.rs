@@ -26,6 +26,27 @@ pub fn cost(law: ContactLaw) -> u64 {
     }
 }
 
+/// Linear-law Monte Carlo samples that count as one impact: each is solved in closed form
+/// ([`crate::map::fast`], some 0.3 µs against the exact solver's 2–3 µs, BENCHMARKS.md) unless
+/// the ball flattens. 10⁷ samples are then the limit, as 10⁶ impacts are.
+pub const SAMPLES_PER_IMPACT: u64 = 10;
+
+/// Refuse a Monte Carlo of `samples` samples under `law` beyond the limit: a linear-law
+/// sample counts 1/[`SAMPLES_PER_IMPACT`] of an impact, any other a whole impact.
+pub fn check_samples(samples: usize, law: ContactLaw) -> Result<(), TooMuchWork> {
+    let n = samples as u64;
+    let (impacts, what) = match law {
+        ContactLaw::Linear => (
+            n.div_ceil(SAMPLES_PER_IMPACT),
+            format!(
+                "{samples} samples ({SAMPLES_PER_IMPACT} linear-law samples count as one impact)"
+            ),
+        ),
+        _ => (n, format!("{samples} samples")),
+    };
+    check(impacts as usize, law, &what)
+}
+
 /// A request beyond [`LIMIT`]; its message says how much and how to ask for less.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct TooMuchWork {
@@ -91,5 +112,18 @@ mod tests {
              against the work limit of 1000000 (an impact counts 1 with the linear law, 40 with \
              the others); ask for fewer points or values"
         );
+    }
+
+    #[test]
+    fn monte_carlo_samples_count_a_tenth_on_the_linear_law() {
+        assert!(check_samples(10_000_000, ContactLaw::Linear).is_ok());
+        let e = check_samples(10_000_001, ContactLaw::Linear).unwrap_err();
+        assert_eq!(e.work, 1_000_001);
+        assert!(e.to_string().starts_with(
+            "too much work: 10000001 samples (10 linear-law samples count as one impact) is \
+             1000001 linear-law impacts"
+        ));
+        assert!(check_samples(25_000, ContactLaw::Hertz).is_ok());
+        assert!(check_samples(25_001, ContactLaw::Hertz).is_err());
     }
 }

@@ -2,6 +2,7 @@
 
 use super::MAX_SAMPLES;
 use crate::analysis::fit::{FitError, MultiFitError};
+use crate::analysis::mc::McError;
 use crate::analysis::work::TooMuchWork;
 use crate::catalog::CatalogError;
 use crate::drop::DropError;
@@ -66,6 +67,8 @@ pub enum BallError {
     MultiFit(MultiFitError),
     /// A sweep asks for more work than the limit ([`crate::analysis::work::LIMIT`]).
     Work(TooMuchWork),
+    /// A Monte Carlo that cannot run (see [`McError`]).
+    MonteCarlo(McError),
 }
 
 impl fmt::Display for BallError {
@@ -105,6 +108,7 @@ impl fmt::Display for BallError {
                 reason,
             } => write!(f, "invalid {field}: {} ({reason})", display_number(*value)),
             BallError::MultiFit(e) => write!(f, "{e}"),
+            BallError::MonteCarlo(e) => write!(f, "{e}"),
         }
     }
 }
@@ -122,6 +126,7 @@ impl BallError {
             BallError::Solve(SolveError::Unresolved { .. })
                 | BallError::Drop(DropError::Solve(SolveError::Unresolved { .. }))
                 | BallError::MultiFit(MultiFitError::NoAnswer)
+                | BallError::MonteCarlo(McError::Solve(SolveError::Unresolved { .. }))
         )
     }
 }
@@ -165,5 +170,11 @@ impl From<TooMuchWork> for BallError {
 impl From<DropError> for BallError {
     fn from(e: DropError) -> Self {
         BallError::Drop(e)
+    }
+}
+
+impl From<McError> for BallError {
+    fn from(e: McError) -> Self {
+        BallError::MonteCarlo(e)
     }
 }

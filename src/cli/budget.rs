@@ -124,3 +124,47 @@ pub fn velocity_rows(
         cor_vs_velocity(params, law, chunk).map_err(anyhow::Error::from)
     })
 }
+
+/// Long work its caller does in steps (the Monte Carlo's blocks of samples): the bar of
+/// [`velocity_rows`] on stderr and the same Ctrl-C check between steps.
+pub struct Progress {
+    flag: Arc<AtomicBool>,
+    bar: indicatif::ProgressBar,
+}
+
+impl Progress {
+    /// `total` units of `unit_cost` linear-law impacts each, named `unit` on the bar.
+    pub fn new(total: u64, unit_cost: f64, unit: &str) -> Progress {
+        let flag = interrupt_flag();
+        let worth = total as f64 * unit_cost >= SHOW_FROM as f64;
+        let bar = if std::io::stderr().is_terminal() && worth {
+            let template =
+                format!("{{bar:40}} {{pos}}/{{len}} {unit}, {{eta}} left (Ctrl-C stops)");
+            let style = indicatif::ProgressStyle::with_template(&template)
+                .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar());
+            indicatif::ProgressBar::new(total).with_style(style)
+        } else {
+            indicatif::ProgressBar::hidden()
+        };
+        Progress { flag, bar }
+    }
+
+    /// Before a step: [`Interrupted`] once a SIGINT or SIGTERM came.
+    pub fn check(&self) -> anyhow::Result<()> {
+        if self.flag.load(Ordering::Relaxed) {
+            self.bar.finish_and_clear();
+            return Err(Interrupted.into());
+        }
+        Ok(())
+    }
+
+    /// After a step of `n` units.
+    pub fn advance(&self, n: u64) {
+        self.bar.inc(n);
+    }
+
+    /// The work is done: the bar goes.
+    pub fn finish(&self) {
+        self.bar.finish_and_clear();
+    }
+}

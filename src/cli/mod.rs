@@ -18,6 +18,7 @@ mod intervals_text;
 pub mod map;
 pub use crate::measured::file as measured_file;
 pub use crate::text::parse as number;
+pub mod mc;
 pub mod output;
 pub mod peers;
 pub mod presets;
@@ -97,6 +98,10 @@ pub enum Command {
     /// A bat of effective mass M_eff: batted-ball speed, and the NCAA BBCOR test with a verdict
     #[command(allow_negative_numbers = true)]
     Bat(bat::BatArgs),
+    /// Monte Carlo over a ball's parameter tolerances: quantiles, mean and sd of the COR, peak
+    /// force and contact time (docs/scale.md)
+    #[command(allow_negative_numbers = true)]
+    Mc(mc::McArgs),
 }
 
 /// The explorer failed (its terminal, its event loop): not the input's fault.
@@ -308,6 +313,10 @@ fn dispatch(cli: Cli, out: &mut dyn Write) -> anyhow::Result<()> {
         Command::Bat(mut a) => {
             merge(top, &mut a.ball)?;
             bat::run(&a, out)
+        }
+        Command::Mc(mut a) => {
+            merge(top, &mut a.ball)?;
+            mc::run(&a, out)
         }
         Command::Standards(a) => {
             if top.is_given() {

@@ -19,6 +19,7 @@ pub mod chart;
 pub mod colormap;
 pub mod csv;
 pub mod explorer;
+pub mod histogram;
 pub mod history;
 pub mod look;
 pub mod overlay;

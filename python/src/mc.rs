@@ -1,0 +1,233 @@
+//! The Monte Carlo from Python: `monte_carlo` (a whole run, as `bouncelab mc --format json`),
+//! and the two halves the Dask path (`bouncelab/dask.py`) puts on a cluster:
+//! `monte_carlo_chunk` (the samples of an index range, a task's work) and `monte_carlo_merge`
+//! (the same summary from all the samples, in index order). A sample is a function of the
+//! seed and its index alone (docs/scale.md), so the chunks give the single call's samples and
+//! the merge its numbers, bit for bit.
+
+use crate::{array, error, preset_ball};
+use bouncelab::analysis::mc::{
+    Dist, McError, McSpec, McSummary, Samples, Spread, Stats, Varied, parse_vary, summary,
+};
+use bouncelab::api::MonteCarlo;
+use numpy::{PyArray1, PyReadonlyArray1};
+use pyo3::exceptions::PyValueError;
+use pyo3::prelude::*;
+use pyo3::types::PyDict;
+
+/// `vary` as a dict {"k_p": 0.05, …} (fractions) or the command line's text "k_p=5%,…".
+fn spreads(vary: &Bound<'_, PyAny>) -> PyResult<Vec<Spread>> {
+    if let Ok(text) = vary.extract::<String>() {
+        return parse_vary(&text).map_err(|e| error(e.into()));
+    }
+    let dict = vary.cast::<PyDict>().map_err(|_| {
+        PyValueError::new_err("invalid vary: give a dict {\"k_p\": 0.05, …} or \"k_p=5%,…\"")
+    })?;
+    let mut out = Vec::new();
+    for (k, v) in dict.iter() {
+        let name: String = k.extract()?;
+        let what = Varied::parse(&name).ok_or_else(|| error(McError::Unknown(name).into()))?;
+        out.push(Spread {
+            what,
+            spread: v.extract::<f64>()?,
+        });
+    }
+    Ok(out)
+}
+
+/// The arguments every Monte Carlo function shares.
+struct Request {
+    ball: bouncelab::Ball,
+    spec: McSpec,
+}
+
+#[allow(clippy::too_many_arguments)]
+fn request(
+    preset: &str,
+    vary: &Bound<'_, PyAny>,
+    samples: usize,
+    seed: u64,
+    dist: &str,
+    v0: Option<f64>,
+    law: Option<&str>,
+    params: Option<&str>,
+) -> PyResult<Request> {
+    let ball = preset_ball(preset, params, law, v0)?;
+    let dist = Dist::parse(dist).ok_or_else(|| {
+        PyValueError::new_err(format!(
+            "invalid dist: '{dist}' (choose from normal, uniform, lognormal)"
+        ))
+    })?;
+    let spec = McSpec::new(spreads(vary)?, dist, samples, seed).map_err(|e| error(e.into()))?;
+    Ok(Request { ball, spec })
+}
+
+fn stats_dict<'py>(py: Python<'py>, s: &Stats) -> PyResult<Bound<'py, PyDict>> {
+    let q = PyDict::new(py);
+    for (name, v) in ["1", "2.5", "5", "25", "50", "75", "95", "97.5", "99"]
+        .iter()
+        .zip(s.q.values())
+    {
+        q.set_item(name, v)?;
+    }
+    let d = PyDict::new(py);
+    d.set_item("n", s.n)?;
+    d.set_item("mean", s.mean)?;
+    d.set_item("sd", s.sd)?;
+    d.set_item("min", s.min)?;
+    d.set_item("max", s.max)?;
+    d.set_item("q", q)?;
+    Ok(d)
+}
+
+/// The dict of `bouncelab mc --format json` (NaN where the JSON has null).
+fn report<'py>(py: Python<'py>, r: &Request, s: &McSummary) -> PyResult<Bound<'py, PyDict>> {
+    let vary = PyDict::new(py);
+    for v in &r.spec.vary {
+        vary.set_item(v.what.name(), v.spread)?;
+    }
+    let stats = PyDict::new(py);
+    stats.set_item("cor", stats_dict(py, &s.stats.cor)?)?;
+    stats.set_item("max_force", stats_dict(py, &s.stats.max_force)?)?;
+    stats.set_item("contact_time", stats_dict(py, &s.stats.contact_time)?)?;
+    let d = PyDict::new(py);
+    d.set_item("samples", r.spec.samples)?;
+    d.set_item("seed", r.spec.seed)?;
+    d.set_item("preset", r.ball.name.as_deref())?;
+    d.set_item("law", r.ball.law.name())?;
+    d.set_item("v0", r.ball.params.v0)?;
+    d.set_item("dist", r.spec.dist.name())?;
+    d.set_item("vary", vary)?;
+    d.set_item("no_rebound", s.no_rebound)?;
+    d.set_item("stats", stats)?;
+    Ok(d)
+}
+
+/// A Monte Carlo over a preset's parameter tolerances, as `bouncelab mc --format json`: a dict
+/// with its keys (`samples`, `seed`, `stats` → `cor`, `max_force`, `contact_time` → `n`,
+/// `mean`, `sd`, `min`, `max`, `q` → `"1"` … `"99"`, …). With `return_samples`, `values`
+/// holds each sample's cor, max_force, contact_time (NaN: no rebound) and varied parameters
+/// as numpy arrays. The GIL is released while the samples run (in parallel).
+#[pyfunction]
+#[pyo3(signature = (*, preset="superball", vary, samples=10_000, seed=0, dist="normal", v0=None, law=None, params=None, return_samples=false))]
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn monte_carlo<'py>(
+    py: Python<'py>,
+    preset: &str,
+    vary: &Bound<'py, PyAny>,
+    samples: usize,
+    seed: u64,
+    dist: &str,
+    v0: Option<f64>,
+    law: Option<&str>,
+    params: Option<&str>,
+    return_samples: bool,
+) -> PyResult<Bound<'py, PyDict>> {
+    let r = request(preset, vary, samples, seed, dist, v0, law, params)?;
+    let mc: MonteCarlo = py
+        .detach(|| r.ball.monte_carlo(&r.spec))
+        .map_err(error)?;
+    let d = report(py, &r, &mc.summary)?;
+    if return_samples {
+        let values = PyDict::new(py);
+        let sampler = r.ball.sampler(&r.spec);
+        let inputs: Vec<Vec<f64>> = (0..mc.samples.len() as u64)
+            .map(|i| sampler.inputs(i))
+            .collect();
+        for (k, v) in r.spec.vary.iter().enumerate() {
+            values.set_item(v.what.name(), array(py, inputs.iter().map(|x| x[k]).collect()))?;
+        }
+        let Samples {
+            cor,
+            max_force,
+            contact_time,
+            ..
+        } = mc.samples;
+        values.set_item("cor", array(py, cor))?;
+        values.set_item("max_force", array(py, max_force))?;
+        values.set_item("contact_time", array(py, contact_time))?;
+        d.set_item("values", values)?;
+    }
+    Ok(d)
+}
+
+type Columns = (Py<PyArray1<f64>>, Py<PyArray1<f64>>, Py<PyArray1<f64>>);
+
+/// The samples `start … start + count` of the run `monte_carlo` would make with the same
+/// arguments: (cor, max_force, contact_time) as numpy arrays — one Dask task's work. With
+/// `check_only`, every argument and the work limit for `count` samples are checked and empty
+/// arrays returned (the Dask client's check before it sends a task).
+#[pyfunction]
+#[pyo3(signature = (*, preset="superball", vary, samples, seed=0, dist="normal", v0=None, law=None, params=None, start, count, check_only=false))]
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn monte_carlo_chunk(
+    py: Python<'_>,
+    preset: &str,
+    vary: &Bound<'_, PyAny>,
+    samples: usize,
+    seed: u64,
+    dist: &str,
+    v0: Option<f64>,
+    law: Option<&str>,
+    params: Option<&str>,
+    start: u64,
+    count: usize,
+    check_only: bool,
+) -> PyResult<Columns> {
+    let r = request(preset, vary, samples, seed, dist, v0, law, params)?;
+    if start.saturating_add(count as u64) > samples as u64 {
+        return Err(PyValueError::new_err(format!(
+            "invalid chunk: samples {start} … {} lie beyond the run's {samples}",
+            start.saturating_add(count as u64)
+        )));
+    }
+    if check_only {
+        bouncelab::analysis::work::check_samples(count, r.ball.law)
+            .map_err(|e| error(e.into()))?;
+        return Ok((array(py, vec![]), array(py, vec![]), array(py, vec![])));
+    }
+    let s = py
+        .detach(|| r.ball.monte_carlo_samples(&r.spec, start, count))
+        .map_err(error)?;
+    Ok((
+        array(py, s.cor),
+        array(py, s.max_force),
+        array(py, s.contact_time),
+    ))
+}
+
+/// The dict `monte_carlo` returns, from all the samples of the run (cor, max_force,
+/// contact_time, in index order: the chunks of `monte_carlo_chunk` concatenated).
+#[pyfunction]
+#[pyo3(signature = (*, preset="superball", vary, samples, seed=0, dist="normal", v0=None, law=None, params=None, cor, max_force, contact_time))]
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn monte_carlo_merge<'py>(
+    py: Python<'py>,
+    preset: &str,
+    vary: &Bound<'py, PyAny>,
+    samples: usize,
+    seed: u64,
+    dist: &str,
+    v0: Option<f64>,
+    law: Option<&str>,
+    params: Option<&str>,
+    cor: PyReadonlyArray1<'py, f64>,
+    max_force: PyReadonlyArray1<'py, f64>,
+    contact_time: PyReadonlyArray1<'py, f64>,
+) -> PyResult<Bound<'py, PyDict>> {
+    let r = request(preset, vary, samples, seed, dist, v0, law, params)?;
+    let all = Samples {
+        start: 0,
+        cor: cor.as_array().to_vec(),
+        max_force: max_force.as_array().to_vec(),
+        contact_time: contact_time.as_array().to_vec(),
+    };
+    let lens = [all.cor.len(), all.max_force.len(), all.contact_time.len()];
+    if lens.iter().any(|&n| n != samples) {
+        return Err(PyValueError::new_err(format!(
+            "invalid merge: {lens:?} values for a run of {samples} samples"
+        )));
+    }
+    let s = py.detach(|| summary(&r.spec, &all));
+    report(py, &r, &s)
+}

@@ -1,0 +1,145 @@
+"""The Monte Carlo from Python against the command line (BOUNCELAB_BIN), against closed forms,
+and on a real Dask cluster against the single-process call (docs/scale.md)."""
+
+import json
+import os
+import pickle
+import subprocess
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import bouncelab
+
+ROOT = Path(__file__).resolve().parents[2]
+VARY = {"k_p": 0.05, "c": 0.05, "k_r": 0.05}
+
+
+@pytest.fixture(autouse=True)
+def no_user_presets(tmp_path, monkeypatch):
+    monkeypatch.setenv("XDG_CONFIG_HOME", str(tmp_path / "config"))
+
+
+def binary():
+    path = os.environ.get("BOUNCELAB_BIN") or str(ROOT / "target" / "debug" / "bouncelab")
+    if not Path(path).is_file():
+        if os.environ.get("BOUNCELAB_BIN"):
+            pytest.fail(f"BOUNCELAB_BIN={path} is not a file")
+        pytest.skip(f"no bouncelab binary at {path}")
+    return path
+
+
+def cli(*args):
+    p = subprocess.run([binary(), *args], capture_output=True, text=True, env=os.environ)
+    return p.returncode, p.stdout, p.stderr
+
+
+@pytest.mark.parametrize("dist", ["normal", "uniform", "lognormal"])
+def test_the_same_numbers_as_the_command_line(dist):
+    code, out, err = cli(
+        "mc", "--preset", "golf", "--vary", "k_p=5%,c=5%,k_r=5%", "--dist", dist,
+        "--samples", "3000", "--seed", "17", "--format", "json",
+    )
+    assert code == 0, err
+    # json.loads reads each number back exactly (shortest round-trip text): equality is exact
+    assert bouncelab.monte_carlo(
+        preset="golf", vary=VARY, samples=3000, seed=17, dist=dist
+    ) == json.loads(out)
+
+
+def test_vary_as_the_command_line_writes_it():
+    a = bouncelab.monte_carlo(preset="tennis", vary="k_r=10%,v0=0.02", samples=50, seed=2)
+    b = bouncelab.monte_carlo(preset="tennis", vary={"v0": 0.02, "k_r": 0.1}, samples=50, seed=2)
+    assert a == b and list(a["vary"]) == ["k_r", "v0"]
+
+
+def test_samples_give_the_quantiles_numpy_computes():
+    r = bouncelab.monte_carlo(preset="golf", vary=VARY, samples=2001, seed=3, return_samples=True)
+    v = r["values"]
+    assert set(v) == {"k_p", "c", "k_r", "cor", "max_force", "contact_time"}
+    assert all(a.shape == (2001,) for a in v.values())
+    for key in ["cor", "max_force", "contact_time"]:
+        st = r["stats"][key]
+        assert st["mean"] == pytest.approx(np.mean(v[key]), rel=1e-14)
+        assert st["sd"] == pytest.approx(np.std(v[key], ddof=1), rel=1e-12)
+        assert (st["min"], st["max"]) == (v[key].min(), v[key].max())
+        for p, q in st["q"].items():
+            # numpy's default method is type 7, as bouncelab's
+            assert q == pytest.approx(np.quantile(v[key], float(p) / 100), rel=1e-15)
+    # the inputs' spread: sd 5 % of the nominal value (2001 samples: within 5 standard errors)
+    k_p = bouncelab.run(preset="golf").k_p
+    assert np.std(v["k_p"], ddof=1) / k_p == pytest.approx(0.05, rel=5 / np.sqrt(2 * 2001))
+
+
+def test_zero_spread_is_the_impact_of_run():
+    r = bouncelab.monte_carlo(preset="golf", vary={"k_r": 0.0}, samples=5, seed=1)
+    assert r["stats"]["cor"]["mean"] == pytest.approx(bouncelab.run(preset="golf").cor, abs=1e-12)
+    assert r["stats"]["cor"]["sd"] == 0.0
+
+
+@pytest.mark.parametrize(
+    "kwargs, message",
+    [
+        ({"vary": {"k_q": 0.05}}, "invalid vary: unknown parameter 'k_q'"),
+        ({"vary": {"k_p": -0.05}}, "invalid vary k_p: -0.05"),
+        ({"vary": VARY, "samples": 0}, "invalid samples: 0 (must be at least 1)"),
+        ({"vary": VARY, "dist": "cauchy"}, "invalid dist: 'cauchy'"),
+    ],
+)
+def test_bad_input_raises_the_command_lines_message(kwargs, message):
+    with pytest.raises(ValueError) as e:
+        bouncelab.monte_carlo(preset="golf", **kwargs)
+    assert str(e.value).startswith(message)
+
+
+def test_the_results_pickle():
+    r = bouncelab.monte_carlo(preset="golf", vary=VARY, samples=20, seed=1, return_samples=True)
+    back = pickle.loads(pickle.dumps(r))
+    assert back["stats"] == r["stats"]
+    assert np.array_equal(back["values"]["cor"], r["values"]["cor"])
+
+
+@pytest.fixture(scope="module")
+def client():
+    distributed = pytest.importorskip("distributed")
+    with distributed.LocalCluster(
+        n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None
+    ) as cluster, distributed.Client(cluster) as c:
+        yield c
+
+
+def test_dask_gives_the_single_process_answer(client):
+    import bouncelab.dask
+
+    kw = dict(preset="golf", vary=VARY, samples=10_007, seed=23)
+    one = bouncelab.monte_carlo(**kw)
+    # uneven chunks, on two worker processes
+    on_cluster = bouncelab.dask.monte_carlo(client, **kw, chunk=3_000)
+    assert on_cluster == one
+    assert pickle.loads(pickle.dumps(on_cluster)) == one
+    # another seed, another answer
+    assert bouncelab.dask.monte_carlo(client, **{**kw, "seed": 24}, chunk=5_000) != one
+
+
+def test_dask_without_a_client_uses_dasks_own_scheduler():
+    pytest.importorskip("dask")
+    import dask
+
+    import bouncelab.dask
+
+    kw = dict(preset="tennis", vary="k_r=5%,c=2%", samples=2_500, seed=4, dist="lognormal")
+    one = bouncelab.monte_carlo(**kw)
+    with dask.config.set(scheduler="threads"):
+        assert bouncelab.dask.monte_carlo(None, **kw, chunk=1_000) == one
+
+
+def test_dask_refuses_bad_input_on_the_client(client):
+    import bouncelab.dask
+
+    with pytest.raises(ValueError, match="invalid vary: unknown parameter 'spin'"):
+        bouncelab.dask.monte_carlo(client, preset="golf", vary={"spin": 0.1}, samples=10)
+    with pytest.raises(ValueError, match="invalid chunk: 0"):
+        bouncelab.dask.monte_carlo(client, preset="golf", vary=VARY, samples=10, chunk=0)
+    with pytest.raises(ValueError, match="too much work: 20000000 samples"):
+        bouncelab.dask.monte_carlo(client, preset="golf", vary=VARY, samples=10**8, chunk=2 * 10**7)

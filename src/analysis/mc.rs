@@ -1,0 +1,286 @@
+//! Monte Carlo: the spread of the COR, peak force and contact time when a ball's parameters
+//! are known only to a tolerance (docs/scale.md). No I/O; the command line (`bouncelab mc`),
+//! the Python package and its Dask path all call [`Sampler`].
+//!
+//! What holds:
+//!
+//! - **A sample is a function of (seed, index) alone.** Sample `i` draws its variates from
+//!   ChaCha8 keyed by the seed on stream `i` (a counter-based generator: no state passes from
+//!   one sample to the next), so the same seed gives the same samples on any number of
+//!   threads, in any chunking, on any machine of a cluster (`same_answer_on_one_thread_and_many`).
+//! - **Spreads are relative.** A spread `s` on a parameter of nominal value `v`: `normal`
+//!   draws v(1 + s N), sd s·v; `uniform` draws v(1 + s U), U uniform on [−1, 1), sd s·v/√3;
+//!   `lognormal` draws v·exp(μ + σN) with σ² = ln(1 + s²), μ = −σ²/2, so its mean is v and
+//!   its sd s·v as the normal's, and it never crosses 0.
+//! - **K_h follows K_p and z_p** (Eq. 16) when either is varied, as the fit and the command
+//!   line's overrides tie them (as [`super::fit::apply`]).
+//! - **Each impact is `run`'s**: the closed form of [`crate::map::fast`] where it answers and
+//!   the ball does not flatten (to 1e-12 of the exact solver), else [`crate::simulate`].
+
+use super::fit::Param;
+use super::mc_stats::stats;
+use crate::model::contact::ContactLaw;
+use crate::model::params::ImpactParams;
+use crate::solver::{SolveError, SolveOptions, simulate};
+use chacha20::ChaCha8Rng;
+use chacha20::rand_core::SeedableRng;
+use rand_distr::{Distribution, StandardNormal, StandardUniform};
+use rayon::prelude::*;
+use serde::Serialize;
+
+pub use super::mc_spec::{Dist, McError, McSpec, Spread, Varied, parse_vary};
+pub use super::mc_stats::{PROBS, Quantiles, Stats};
+
+/// One sample's answer; `contact_time` NaN where the ball stays at the wall.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Outcome {
+    /// The COR e.
+    pub cor: f64,
+    /// Peak force F_m, N.
+    pub max_force: f64,
+    /// Contact time t_f, s (NaN: no rebound).
+    pub contact_time: f64,
+}
+
+/// The samples `start … start + len` of a run, one column a quantity, in index order.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Samples {
+    /// Index of the first sample.
+    pub start: u64,
+    /// COR of each sample.
+    pub cor: Vec<f64>,
+    /// Peak force of each sample, N.
+    pub max_force: Vec<f64>,
+    /// Contact time of each sample, s (NaN: no rebound).
+    pub contact_time: Vec<f64>,
+}
+
+impl Samples {
+    /// Number of samples held.
+    pub fn len(&self) -> usize {
+        self.cor.len()
+    }
+
+    /// Whether none is held.
+    pub fn is_empty(&self) -> bool {
+        self.cor.is_empty()
+    }
+
+    /// `other`, the samples that follow these, appended.
+    pub fn extend(&mut self, other: Samples) {
+        debug_assert_eq!(other.start, self.start + self.len() as u64);
+        self.cor.extend(other.cor);
+        self.max_force.extend(other.max_force);
+        self.contact_time.extend(other.contact_time);
+    }
+}
+
+/// The statistics of the three quantities.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct McStats {
+    /// Of the COR.
+    pub cor: Stats,
+    /// Of the peak force, N.
+    pub max_force: Stats,
+    /// Of the contact time, s, over the samples that rebound.
+    pub contact_time: Stats,
+}
+
+/// The statistics of `s` (a whole run, or any samples): a function of the values in index
+/// order only.
+pub fn summarize(s: &Samples) -> McStats {
+    McStats {
+        cor: stats(&s.cor),
+        max_force: stats(&s.max_force),
+        contact_time: stats(&s.contact_time),
+    }
+}
+
+/// Samples solved in parallel between two scans in index order (which keep the first error
+/// by index, whatever the threads did).
+const BLOCK: usize = 1 << 14;
+
+/// Draws and solves the samples of one spec on one ball.
+#[derive(Debug, Clone)]
+pub struct Sampler {
+    base: ImpactParams,
+    law: ContactLaw,
+    spec: McSpec,
+    /// ChaCha8's key: the seed expanded as `ChaCha8Rng::seed_from_u64` expands it.
+    key: [u8; 32],
+}
+
+/// The key `SeedableRng::seed_from_u64` makes of a seed (rand_core's own expansion), kept so
+/// that each sample's generator is built from it without a clone (ChaCha8Rng has none):
+/// `ChaCha8Rng::from_seed(key(s))` is `ChaCha8Rng::seed_from_u64(s)`.
+fn key(seed: u64) -> [u8; 32] {
+    struct Key([u8; 32]);
+    impl SeedableRng for Key {
+        type Seed = [u8; 32];
+        fn from_seed(seed: [u8; 32]) -> Key {
+            Key(seed)
+        }
+    }
+    Key::seed_from_u64(seed).0
+}
+
+impl Sampler {
+    /// The sampler of `spec` around the nominal ball `base` under `law`.
+    pub fn new(base: ImpactParams, law: ContactLaw, spec: McSpec) -> Sampler {
+        Sampler {
+            base,
+            law,
+            key: key(spec.seed),
+            spec,
+        }
+    }
+
+    /// The spec it runs.
+    pub fn spec(&self) -> &McSpec {
+        &self.spec
+    }
+
+    /// The varied parameters' values of sample `index`, in the spec's order.
+    pub fn inputs(&self, index: u64) -> Vec<f64> {
+        let (values, n) = self.draw(index);
+        values[..n].to_vec()
+    }
+
+    /// The values of [`Sampler::inputs`] without an allocation: the first `n` of the array.
+    fn draw(&self, index: u64) -> ([f64; Varied::ALL.len()], usize) {
+        let mut rng = ChaCha8Rng::from_seed(self.key);
+        rng.set_stream(index);
+        let mut out = [0.0; Varied::ALL.len()];
+        for (slot, s) in out.iter_mut().zip(&self.spec.vary) {
+            let v = s.what.get(&self.base);
+            *slot = match self.spec.dist {
+                Dist::Normal => {
+                    let n: f64 = StandardNormal.sample(&mut rng);
+                    v * (1.0 + s.spread * n)
+                }
+                Dist::Uniform => {
+                    let u: f64 = StandardUniform.sample(&mut rng);
+                    v * (1.0 + s.spread * (2.0 * u - 1.0))
+                }
+                Dist::Lognormal => {
+                    let n: f64 = StandardNormal.sample(&mut rng);
+                    let var = s.spread.mul_add(s.spread, 1.0).ln();
+                    v * (var.sqrt() * n - 0.5 * var).exp()
+                }
+            };
+        }
+        (out, self.spec.vary.len())
+    }
+
+    /// The ball of sample `index`, checked. The values are set in [`Varied::ALL`]'s order (z_p
+    /// before K_h, which reads it) and K_h then follows K_p and z_p, as
+    /// [`super::fit::apply`] does (`k_h_follows_k_p_…` holds the two to the same ball).
+    pub fn params(&self, index: u64) -> Result<ImpactParams, McError> {
+        let (values, n) = self.draw(index);
+        let mut p = self.base;
+        let mut tied = false;
+        for (s, &v) in self.spec.vary.iter().zip(&values[..n]) {
+            match s.what {
+                Varied::Param(Param::KP) => p.k_p = v,
+                Varied::Param(Param::C) => p.damping = v,
+                Varied::Param(Param::KR) => p.k_r = v,
+                Varied::Param(Param::ZP) => p.z_p = v,
+                Varied::Param(Param::KH) => p.k_p = 1.5 * v * p.z_p.sqrt(),
+                Varied::Mass => p.mass = v,
+                // (the fit's v0 and the Monte Carlo's are the same speed)
+                Varied::V0 | Varied::Param(Param::V0) => p.v0 = v,
+            }
+            tied |= matches!(s.what, Varied::Param(Param::KP | Param::ZP | Param::KH));
+        }
+        if tied && p.z_p.is_finite() {
+            p.k_h = ImpactParams::k_h_matching(p.k_p, p.z_p);
+        }
+        p.validate().map_err(|e| McError::Domain {
+            index,
+            reason: e.to_string(),
+        })?;
+        Ok(p)
+    }
+
+    /// Sample `index`: its ball, and the impact `bouncelab run` would solve for it.
+    pub fn outcome(&self, index: u64) -> Result<Outcome, McError> {
+        let p = self.params(index)?;
+        impact(&p, self.law).map_err(McError::Solve)
+    }
+
+    /// The samples `start … start + count`, on all cores; the first error by index, if any.
+    pub fn samples(&self, start: u64, count: usize) -> Result<Samples, McError> {
+        let mut out = Samples {
+            start,
+            cor: Vec::with_capacity(count),
+            max_force: Vec::with_capacity(count),
+            contact_time: Vec::with_capacity(count),
+        };
+        let mut done = 0usize;
+        while done < count {
+            let n = BLOCK.min(count - done);
+            let first = start + done as u64;
+            let block: Vec<Result<Outcome, McError>> = (0..n as u64)
+                .into_par_iter()
+                .map(|k| self.outcome(first + k))
+                .collect();
+            for r in block {
+                let o = r?;
+                out.cor.push(o.cor);
+                out.max_force.push(o.max_force);
+                out.contact_time.push(o.contact_time);
+            }
+            done += n;
+        }
+        Ok(out)
+    }
+}
+
+/// One impact as `bouncelab run` solves it (COR, F_m, t_f): the closed form where it answers
+/// and the ball does not flatten (z̄_m ≤ z̄_p), SI by F = F̄ m v0 ω0 and t = τ/ω0; else the
+/// solver with its default options.
+pub fn impact(p: &ImpactParams, law: ContactLaw) -> Result<Outcome, SolveError> {
+    if law == ContactLaw::Linear {
+        let n = p.normalized();
+        if let Some(s) = crate::map::fast::summary(n.lambda, n.zeta)
+            && s.max_force <= n.zp_bar
+        {
+            let w0 = p.omega0();
+            return Ok(Outcome {
+                cor: s.cor,
+                max_force: s.max_force * p.mass * p.v0 * w0,
+                contact_time: s.contact_time / w0,
+            });
+        }
+    }
+    let r = simulate(p, law, &SolveOptions::default())?;
+    Ok(Outcome {
+        cor: r.cor,
+        max_force: r.max_force,
+        contact_time: r.contact_time.unwrap_or(f64::NAN),
+    })
+}
+
+/// A whole run's statistics, with what it ran.
+#[derive(Debug, Clone, PartialEq)]
+pub struct McSummary {
+    /// The spec.
+    pub spec: McSpec,
+    /// Samples in which the ball stayed at the wall (no contact time).
+    pub no_rebound: usize,
+    /// The statistics.
+    pub stats: McStats,
+}
+
+/// The summary of a complete run's samples.
+pub fn summary(spec: &McSpec, s: &Samples) -> McSummary {
+    McSummary {
+        spec: spec.clone(),
+        no_rebound: s.contact_time.iter().filter(|t| t.is_nan()).count(),
+        stats: summarize(s),
+    }
+}
+
+#[cfg(test)]
+#[path = "mc_tests.rs"]
+mod tests;

@@ -1,0 +1,211 @@
+//! What a Monte Carlo runs ([`super::mc`]): the parameters that can vary, their relative
+//! spreads and distribution, the number of samples and the seed, each checked, with the one-line
+//! errors of bad input (docs/scale.md).
+
+use super::fit::Param;
+use crate::model::params::ImpactParams;
+use crate::solver::SolveError;
+use serde::Serialize;
+
+/// The distribution of every varied parameter.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Dist {
+    /// v(1 + s N), N standard normal.
+    Normal,
+    /// v(1 + s U), U uniform on [−1, 1).
+    Uniform,
+    /// v·exp(μ + σN): mean v, sd s·v.
+    Lognormal,
+}
+
+impl Dist {
+    /// `normal`, `uniform` or `lognormal`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Dist::Normal => "normal",
+            Dist::Uniform => "uniform",
+            Dist::Lognormal => "lognormal",
+        }
+    }
+
+    /// The distribution of that [`name`](Dist::name).
+    pub fn parse(s: &str) -> Option<Dist> {
+        [Dist::Normal, Dist::Uniform, Dist::Lognormal]
+            .into_iter()
+            .find(|d| d.name() == s.trim())
+    }
+}
+
+/// A parameter a Monte Carlo can vary: one a fit can free, the mass or the impact speed.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub enum Varied {
+    /// K_p, c, K_r, z_p or K_h (K_h moves K_p with it, Eq. 16).
+    Param(Param),
+    /// The mass m (kg).
+    Mass,
+    /// The impact speed v0 (m/s).
+    V0,
+}
+
+impl Varied {
+    /// Every parameter, in the order the outputs list them.
+    pub const ALL: [Varied; 7] = [
+        Varied::Param(Param::KP),
+        Varied::Param(Param::C),
+        Varied::Param(Param::KR),
+        Varied::Param(Param::ZP),
+        Varied::Param(Param::KH),
+        Varied::Mass,
+        Varied::V0,
+    ];
+
+    /// `k_p`, `c`, `k_r`, `z_p`, `k_h`, `m` or `v0`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Varied::Param(p) => p.name(),
+            Varied::Mass => "m",
+            Varied::V0 => "v0",
+        }
+    }
+
+    /// The parameter of that [`name`](Varied::name).
+    pub fn parse(s: &str) -> Option<Varied> {
+        Varied::ALL.into_iter().find(|v| v.name() == s.trim())
+    }
+
+    /// Its nominal value in `p`.
+    pub fn get(self, p: &ImpactParams) -> f64 {
+        match self {
+            Varied::Param(q) => q.get(p),
+            Varied::Mass => p.mass,
+            Varied::V0 => p.v0,
+        }
+    }
+}
+
+/// One varied parameter and its relative spread (0.05 for 5 %).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Spread {
+    /// The parameter.
+    pub what: Varied,
+    /// Its relative spread, ≥ 0.
+    pub spread: f64,
+}
+
+/// Why a Monte Carlo cannot run, one line naming the field.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum McError {
+    /// A `--vary` entry names no parameter that can vary.
+    #[error("invalid vary: unknown parameter '{0}' (choose from k_p, c, k_r, z_p, k_h, m, v0)")]
+    Unknown(String),
+    /// A `--vary` entry without `=` or with a spread that is not a number.
+    #[error("invalid vary: '{0}' is not NAME=SPREAD (e.g. k_p=5% or k_p=0.05)")]
+    Syntax(String),
+    /// A spread below 0 or not finite.
+    #[error("invalid vary {0}: {1} (the spread must be a finite number ≥ 0)")]
+    Spread(&'static str, f64),
+    /// A uniform spread of 1 (100 %) or more would reach 0.
+    #[error(
+        "invalid vary {0}: {1} (a uniform spread must be below 1, 100 %: the parameter would reach 0)"
+    )]
+    UniformWide(&'static str, f64),
+    /// The same parameter twice.
+    #[error("invalid vary: {0} given twice")]
+    Twice(&'static str),
+    /// Nothing to vary.
+    #[error("invalid vary: no parameter given")]
+    Empty,
+    /// No sample asked for.
+    #[error("invalid samples: 0 (must be at least 1)")]
+    NoSamples,
+    /// A normal draw crossed into a parameter's forbidden domain.
+    #[error(
+        "invalid vary: sample {index} draws an out-of-domain ball ({reason}); a normal spread this wide crosses 0: use --dist lognormal or a smaller spread"
+    )]
+    Domain {
+        /// The sample's index.
+        index: u64,
+        /// The parameter's own message.
+        reason: String,
+    },
+    /// An impact without an answer (not the input's fault).
+    #[error(transparent)]
+    Solve(SolveError),
+}
+
+/// `k_p=5%,c=0.05,…`: the parameters and their relative spreads, in [`Varied::ALL`]'s order.
+pub fn parse_vary(text: &str) -> Result<Vec<Spread>, McError> {
+    let mut out: Vec<Spread> = Vec::new();
+    for item in text.split(',').map(str::trim).filter(|s| !s.is_empty()) {
+        let (name, value) = item
+            .split_once('=')
+            .ok_or_else(|| McError::Syntax(item.into()))?;
+        let what = Varied::parse(name).ok_or_else(|| McError::Unknown(name.trim().into()))?;
+        let value = value.trim();
+        let (number, scale) = match value.strip_suffix('%') {
+            Some(v) => (v.trim(), 0.01),
+            None => (value, 1.0),
+        };
+        let spread = number
+            .parse::<f64>()
+            .map_err(|_| McError::Syntax(item.into()))?
+            * scale;
+        if out.iter().any(|s| s.what == what) {
+            return Err(McError::Twice(what.name()));
+        }
+        out.push(Spread { what, spread });
+    }
+    out.sort_by_key(|s| s.what);
+    Ok(out)
+}
+
+/// What a Monte Carlo runs: the spreads, their distribution, how many samples, the seed.
+#[derive(Debug, Clone, PartialEq)]
+pub struct McSpec {
+    /// The varied parameters, in [`Varied::ALL`]'s order.
+    pub vary: Vec<Spread>,
+    /// Their distribution.
+    pub dist: Dist,
+    /// Number of samples.
+    pub samples: usize,
+    /// The generator's seed.
+    pub seed: u64,
+}
+
+impl McSpec {
+    /// A checked spec: at least one parameter and one sample, each spread finite and ≥ 0 (< 1
+    /// for `uniform`), no parameter twice. The spreads are put in [`Varied::ALL`]'s order, so
+    /// that the order they were given in does not change the samples.
+    pub fn new(
+        mut vary: Vec<Spread>,
+        dist: Dist,
+        samples: usize,
+        seed: u64,
+    ) -> Result<McSpec, McError> {
+        if vary.is_empty() {
+            return Err(McError::Empty);
+        }
+        vary.sort_by_key(|s| s.what);
+        for (i, s) in vary.iter().enumerate() {
+            if !(s.spread.is_finite() && s.spread >= 0.0) {
+                return Err(McError::Spread(s.what.name(), s.spread));
+            }
+            if dist == Dist::Uniform && s.spread >= 1.0 {
+                return Err(McError::UniformWide(s.what.name(), s.spread));
+            }
+            if i > 0 && vary[i - 1].what == s.what {
+                return Err(McError::Twice(s.what.name()));
+            }
+        }
+        if samples == 0 {
+            return Err(McError::NoSamples);
+        }
+        Ok(McSpec {
+            vary,
+            dist,
+            samples,
+            seed,
+        })
+    }
+}

@@ -1,0 +1,229 @@
+use super::*;
+use crate::Ball;
+use crate::analysis::fit::apply;
+
+fn golf() -> Ball {
+    Ball::from_preset("golf").unwrap()
+}
+
+fn spec(text: &str, dist: Dist, samples: usize, seed: u64) -> McSpec {
+    McSpec::new(parse_vary(text).unwrap(), dist, samples, seed).unwrap()
+}
+
+fn run(ball: &Ball, s: &McSpec) -> Samples {
+    Sampler::new(ball.params, ball.law, s.clone())
+        .samples(0, s.samples)
+        .unwrap()
+}
+
+#[test]
+fn vary_is_parsed_in_percent_or_fraction_and_put_in_order() {
+    let v = parse_vary("k_r=0.05, k_p=5%,c=2.5 %").unwrap();
+    let names: Vec<&str> = v.iter().map(|s| s.what.name()).collect();
+    assert_eq!(names, ["k_p", "c", "k_r"]);
+    assert_eq!(v[0].spread, 0.05);
+    assert_eq!(v[1].spread, 0.025);
+    assert_eq!(v[2].spread, 0.05);
+}
+
+#[test]
+fn bad_vary_names_the_field() {
+    let msg = |t: &str| parse_vary(t).unwrap_err().to_string();
+    assert_eq!(
+        msg("k_q=5%"),
+        "invalid vary: unknown parameter 'k_q' (choose from k_p, c, k_r, z_p, k_h, m, v0)"
+    );
+    assert_eq!(
+        msg("k_p"),
+        "invalid vary: 'k_p' is not NAME=SPREAD (e.g. k_p=5% or k_p=0.05)"
+    );
+    assert_eq!(msg("c=1%,c=2%"), "invalid vary: c given twice");
+    let e = McSpec::new(parse_vary("k_p=-5%").unwrap(), Dist::Normal, 10, 1).unwrap_err();
+    assert_eq!(
+        e.to_string(),
+        "invalid vary k_p: -0.05 (the spread must be a finite number ≥ 0)"
+    );
+    let e = McSpec::new(parse_vary("k_r=1").unwrap(), Dist::Uniform, 10, 1).unwrap_err();
+    assert!(
+        e.to_string().starts_with("invalid vary k_r: 1 (a uniform"),
+        "{e}"
+    );
+    let e = McSpec::new(parse_vary("k_r=1%").unwrap(), Dist::Normal, 0, 1).unwrap_err();
+    assert_eq!(e.to_string(), "invalid samples: 0 (must be at least 1)");
+    assert_eq!(
+        McSpec::new(vec![], Dist::Normal, 1, 1).unwrap_err(),
+        McError::Empty
+    );
+}
+
+/// With no spread every sample is the nominal ball: the statistics are `run`'s impact, sd 0.
+#[test]
+fn zero_spread_is_the_deterministic_impact() {
+    let ball = golf();
+    let r = ball.impact().unwrap();
+    let s = spec("k_p=0,c=0,k_r=0", Dist::Normal, 50, 7);
+    let st = summarize(&run(&ball, &s));
+    assert!(
+        (st.cor.mean - r.cor).abs() < 1e-12,
+        "{} {}",
+        st.cor.mean,
+        r.cor
+    );
+    assert_eq!(st.cor.sd, 0.0);
+    assert_eq!(st.cor.min, st.cor.max);
+    let rel = |a: f64, b: f64| ((a - b) / b).abs();
+    assert!(rel(st.max_force.q.q50, r.max_force) < 1e-12);
+    assert!(rel(st.contact_time.q.q99, r.contact_time.unwrap()) < 1e-12);
+}
+
+/// The inputs' moments and quantiles against each distribution's closed form (20 000
+/// samples: the tolerances are some five standard errors).
+#[test]
+fn the_inputs_follow_their_distribution() {
+    let ball = golf();
+    let k_p = ball.params.k_p;
+    let n = 20_000;
+    let draw = |dist| {
+        let s = Sampler::new(ball.params, ball.law, spec("k_p=10%", dist, n, 3));
+        let v: Vec<f64> = (0..n as u64).map(|i| s.inputs(i)[0] / k_p).collect();
+        crate::analysis::mc_stats::stats(&v)
+    };
+    let normal = draw(Dist::Normal);
+    assert!((normal.mean - 1.0).abs() < 5.0 * 0.1 / (n as f64).sqrt());
+    assert!((normal.sd / 0.1 - 1.0).abs() < 5.0 / (2.0 * n as f64).sqrt());
+    // the normal's 97.5 % point is 1.959964 sd above the mean
+    assert!((normal.q.q97_5 - (1.0 + 0.1 * 1.959964)).abs() < 0.005);
+    let uniform = draw(Dist::Uniform);
+    assert!((uniform.sd - 0.1 / 3f64.sqrt()).abs() < 0.01 * 0.1 / 3f64.sqrt());
+    assert!(uniform.min >= 0.9 && uniform.max < 1.1);
+    // a uniform's quartiles lie halfway to its ends
+    assert!((uniform.q.q25 - 0.95).abs() < 0.002 && (uniform.q.q75 - 1.05).abs() < 0.002);
+    let log = draw(Dist::Lognormal);
+    assert!((log.mean - 1.0).abs() < 5.0 * 0.1 / (n as f64).sqrt());
+    assert!((log.sd / 0.1 - 1.0).abs() < 0.03);
+    // the median of exp(μ + σN) is e^μ = (1 + s²)^(−1/2)
+    assert!((log.q.q50 - 1.01f64.powf(-0.5)).abs() < 0.003);
+    assert!(log.min > 0.0);
+}
+
+#[test]
+fn same_answer_on_one_thread_and_many_and_in_any_chunks() {
+    let ball = golf();
+    let s = spec("k_p=5%,c=5%,k_r=5%", Dist::Normal, 3 * BLOCK / 2 + 17, 42);
+    let on = |threads| {
+        let pool = rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .unwrap();
+        pool.install(|| run(&ball, &s))
+    };
+    let one = on(1);
+    assert_eq!(one, on(3));
+    let sampler = Sampler::new(ball.params, ball.law, s.clone());
+    let mut chunks = sampler.samples(0, 1000).unwrap();
+    chunks.extend(sampler.samples(1000, s.samples - 1000).unwrap());
+    assert_eq!(chunks, one);
+    // a sample alone is the same sample
+    assert_eq!(sampler.outcome(12_345).unwrap().cor, one.cor[12_345]);
+    // another seed, other samples
+    let other = run(
+        &ball,
+        &McSpec {
+            seed: 43,
+            ..s.clone()
+        },
+    );
+    assert_ne!(other.cor[0], one.cor[0]);
+}
+
+/// A small spread on K_r alone: the COR's sd is |∂e/∂K_r| s K_r to first order (the slope by
+/// central differences through `Ball`), and its median the nominal COR.
+#[test]
+fn small_spreads_propagate_as_the_derivative_says() {
+    let ball = golf();
+    let k_r = ball.params.k_r;
+    let cor_at = |k| {
+        let mut b = ball.clone();
+        b.params.k_r = k;
+        b.impact().unwrap().cor
+    };
+    let h = 1e-4 * k_r;
+    let slope = (cor_at(k_r + h) - cor_at(k_r - h)) / (2.0 * h);
+    let s = spec("k_r=0.5%", Dist::Normal, 20_000, 5);
+    let st = summarize(&run(&ball, &s));
+    let expected = slope.abs() * 0.005 * k_r;
+    assert!(
+        (st.cor.sd / expected - 1.0).abs() < 0.04,
+        "{} vs {expected}",
+        st.cor.sd
+    );
+    assert!((st.cor.q.q50 - cor_at(k_r)).abs() < 0.05 * expected);
+}
+
+#[test]
+fn k_h_follows_k_p_and_mass_and_speed_vary_too() {
+    let ball = golf();
+    let s = Sampler::new(
+        ball.params,
+        ball.law,
+        spec("k_p=5%,m=1%,v0=2%", Dist::Uniform, 1, 9),
+    );
+    let p = s.params(0).unwrap();
+    let v = s.inputs(0);
+    assert_eq!((p.k_p, p.mass, p.v0), (v[0], v[1], v[2]));
+    assert_eq!(p.k_h, ImpactParams::k_h_matching(p.k_p, p.z_p));
+    // the fit's and the overrides' own application gives the same ball, K_h and z_p included
+    let base = ImpactParams {
+        mass: v[1],
+        v0: v[2],
+        ..ball.params
+    };
+    assert_eq!(p, apply(&base, &[Param::KP], &[v[0]]));
+    let s = Sampler::new(
+        ball.params,
+        ball.law,
+        spec("k_p=5%,c=1%,k_r=2%,z_p=3%,k_h=4%", Dist::Normal, 1, 2),
+    );
+    let (p, v) = (s.params(0).unwrap(), s.inputs(0));
+    let all = [Param::KP, Param::C, Param::KR, Param::ZP, Param::KH];
+    assert_eq!(p, apply(&ball.params, &all, &v));
+}
+
+/// A normal spread so wide that K_r crosses 0 is refused with the sample that did; the
+/// lognormal of the same spread never crosses.
+#[test]
+fn a_normal_draw_out_of_the_domain_is_named() {
+    let ball = golf();
+    let wide = spec("k_r=200%", Dist::Normal, 200, 1);
+    let e = Sampler::new(ball.params, ball.law, wide)
+        .samples(0, 200)
+        .unwrap_err();
+    assert!(
+        e.to_string().starts_with("invalid vary: sample ") && e.to_string().contains("k_r"),
+        "{e}"
+    );
+    let log = spec("k_r=200%", Dist::Lognormal, 200, 1);
+    assert_eq!(run(&ball, &log).len(), 200);
+}
+
+/// Another law runs the solver for each sample: its zero-spread answer is `run`'s.
+#[test]
+fn other_laws_run_the_solver() {
+    let ball = golf().with_law(ContactLaw::Hertz);
+    let s = spec("c=0", Dist::Normal, 3, 1);
+    let st = summarize(&run(&ball, &s));
+    let r = ball.impact().unwrap();
+    assert!((st.cor.mean - r.cor).abs() < 1e-12);
+}
+
+/// The key kept is the one `seed_from_u64` derives: sample i is ChaCha8Rng::seed_from_u64(seed)
+/// on stream i.
+#[test]
+fn each_sample_is_chacha8_of_the_seed_on_its_own_stream() {
+    use chacha20::rand_core::Rng;
+    let mut a = ChaCha8Rng::seed_from_u64(42);
+    a.set_stream(7);
+    let mut b = ChaCha8Rng::from_seed(key(42));
+    b.set_stream(7);
+    assert_eq!(a.next_u64(), b.next_u64());
+}

@@ -1,0 +1,267 @@
+//! `bouncelab mc`: a Monte Carlo over a ball's parameter tolerances — quantiles, mean, sd and
+//! extremes of the COR, peak force and contact time (docs/scale.md). The library samples
+//! ([`crate::analysis::mc`]); this file reads the options, checks the work limit, runs the
+//! samples in blocks with a progress bar and Ctrl-C, and writes.
+
+use super::ball::BallArgs;
+use super::budget::Progress;
+use super::figure::{check_writable, commit};
+use super::output::{self, csv_row, given, human, num, table};
+use crate::analysis::mc::{
+    Dist, McSpec, McStats, PROBS, Sampler, Samples, Stats, parse_vary, summary,
+};
+use crate::analysis::work;
+use crate::api::{Ball, McReport};
+use crate::atomic::Outputs;
+use crate::figure::{Axis, histogram, svg};
+use crate::model::contact::ContactLaw;
+use clap::{Args, ValueEnum};
+use std::io::Write;
+use std::path::PathBuf;
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum McFormat {
+    Text,
+    Json,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum DistArg {
+    Normal,
+    Uniform,
+    Lognormal,
+}
+
+impl From<DistArg> for Dist {
+    fn from(d: DistArg) -> Dist {
+        match d {
+            DistArg::Normal => Dist::Normal,
+            DistArg::Uniform => Dist::Uniform,
+            DistArg::Lognormal => Dist::Lognormal,
+        }
+    }
+}
+
+#[derive(Debug, Clone, Args)]
+pub struct McArgs {
+    #[command(flatten)]
+    pub ball: BallArgs,
+    /// Nominal impact speed v0 (m/s) [default: the preset's measured v0]
+    #[arg(long, value_name = "V", value_parser = super::number::number, allow_hyphen_values = true)]
+    pub v0: Option<f64>,
+    /// Parameters and relative spreads, comma-separated: NAME=SPREAD with NAME one of k_p, c,
+    /// k_r, z_p, k_h, m, v0 and SPREAD a percentage (5%) or a fraction (0.05)
+    #[arg(long, value_name = "NAME=SPREAD,…", allow_hyphen_values = true)]
+    pub vary: String,
+    /// Distribution of each varied parameter: normal (sd = spread), uniform (± spread) or
+    /// lognormal (mean and sd as the normal's)
+    #[arg(long, value_enum, default_value = "normal")]
+    pub dist: DistArg,
+    /// Number of samples
+    #[arg(long, value_name = "N", default_value_t = 10_000)]
+    pub samples: usize,
+    /// Seed of the generator: the same seed gives the same answer on any number of threads
+    #[arg(long, value_name = "S", default_value_t = 0)]
+    pub seed: u64,
+    /// Output format
+    #[arg(long, value_enum, default_value = "text")]
+    pub format: McFormat,
+    /// Write every sample (index, the varied parameters, cor, max_force, contact_time) as CSV
+    #[arg(long, value_name = "FILE")]
+    pub csv_out: Option<PathBuf>,
+    /// Write a histogram of the COR with its 2.5 % and 97.5 % points as SVG
+    #[arg(long, value_name = "FILE")]
+    pub svg_out: Option<PathBuf>,
+    /// Overwrite existing --csv-out and --svg-out files
+    #[arg(long)]
+    pub force: bool,
+}
+
+/// One statistic of a quantity (a row of the text table).
+type StatOf = fn(&Stats) -> f64;
+
+/// Samples solved between two looks at the bar and the Ctrl-C flag.
+const STEP: usize = 1 << 16;
+
+/// Bins of the SVG histogram.
+const BINS: usize = 60;
+
+pub fn run(a: &McArgs, out: &mut dyn Write) -> anyhow::Result<()> {
+    let ball = a.ball.resolve(a.v0)?;
+    let spec = McSpec::new(parse_vary(&a.vary)?, a.dist.into(), a.samples, a.seed)?;
+    work::check_samples(spec.samples, ball.law)?;
+    let paths: Vec<&std::path::Path> = [&a.csv_out, &a.svg_out]
+        .into_iter()
+        .flatten()
+        .map(PathBuf::as_path)
+        .collect();
+    check_writable(&paths, a.force)?;
+    let sampler = ball.sampler(&spec);
+    let samples = run_samples(&sampler, ball.law)?;
+    let s = summary(&spec, &samples);
+    // both files or neither (crate::atomic), before the report
+    let mut files = Outputs::new(a.force);
+    if let Some(p) = &a.csv_out {
+        files.text(p, &samples_csv(&sampler, &samples))?;
+    }
+    if let Some(p) = &a.svg_out {
+        let fig = cor_histogram(&ball, &spec, &samples, &s.stats);
+        files.text(p, &svg::render(&fig)?)?;
+    }
+    commit(files)?;
+    match a.format {
+        McFormat::Json => output::json(out, &McReport::new(&ball, &s))?,
+        McFormat::Text => text(out, &ball, &spec, s.no_rebound, &s.stats)?,
+    }
+    Ok(())
+}
+
+/// Every sample, in blocks of [`STEP`] with the bar and the Ctrl-C check between them (the
+/// blocks change no sample: each is a function of its index).
+fn run_samples(sampler: &Sampler, law: ContactLaw) -> anyhow::Result<Samples> {
+    let n = sampler.spec().samples;
+    let unit_cost = match law {
+        ContactLaw::Linear => 1.0 / work::SAMPLES_PER_IMPACT as f64,
+        _ => work::cost(law) as f64,
+    };
+    let progress = Progress::new(n as u64, unit_cost, "samples");
+    let mut all = Samples::default();
+    let mut done = 0usize;
+    while done < n {
+        progress.check()?;
+        let count = STEP.min(n - done);
+        let block = sampler
+            .samples(done as u64, count)
+            .map_err(crate::BallError::from)?;
+        all.extend(block);
+        done += count;
+        progress.advance(count as u64);
+    }
+    progress.finish();
+    Ok(all)
+}
+
+/// `index, <varied parameters>, cor, max_force, contact_time` (SI; contact_time empty where
+/// the ball does not rebound).
+fn samples_csv(sampler: &Sampler, s: &Samples) -> String {
+    let mut buf = Vec::new();
+    let mut header = vec!["index".to_string()];
+    header.extend(
+        sampler
+            .spec()
+            .vary
+            .iter()
+            .map(|v| v.what.name().to_string()),
+    );
+    header.extend(["cor", "max_force", "contact_time"].map(String::from));
+    let mut rows = || -> std::io::Result<()> {
+        csv_row(&mut buf, &header)?;
+        for i in 0..s.len() {
+            let index = s.start + i as u64;
+            let mut row = vec![index.to_string()];
+            row.extend(sampler.inputs(index).into_iter().map(num));
+            let t = s.contact_time[i];
+            row.extend([num(s.cor[i]), num(s.max_force[i])]);
+            row.push(if t.is_nan() { String::new() } else { num(t) });
+            csv_row(&mut buf, &row)?;
+        }
+        Ok(())
+    };
+    rows().expect("writing to memory");
+    String::from_utf8(buf).expect("CSV of ASCII and the given names")
+}
+
+fn cor_histogram(
+    ball: &Ball,
+    spec: &McSpec,
+    samples: &Samples,
+    stats: &McStats,
+) -> crate::figure::Figure {
+    let vary: Vec<String> = spec
+        .vary
+        .iter()
+        .map(|v| format!("{} ±{} %", v.what.name(), given(100.0 * v.spread, 6)))
+        .collect();
+    let subtitle = format!(
+        "{} samples, {} ({}), seed {}",
+        spec.samples,
+        spec.dist.name(),
+        vary.join(", "),
+        spec.seed
+    );
+    let marks = [
+        ("2.5 %", "q2.5", stats.cor.q.q2_5),
+        ("97.5 %", "q97.5", stats.cor.q.q97_5),
+    ];
+    histogram::figure(
+        &format!("COR of {}", ball.label()),
+        &subtitle,
+        Axis::linear("e", "cor", 1.0),
+        &samples.cor,
+        BINS,
+        &marks,
+    )
+}
+
+fn text(
+    out: &mut dyn Write,
+    ball: &Ball,
+    spec: &McSpec,
+    no_rebound: usize,
+    st: &McStats,
+) -> std::io::Result<()> {
+    writeln!(out, "{}", ball.label())?;
+    let vary: Vec<String> = spec
+        .vary
+        .iter()
+        .map(|v| format!("{} {}", v.what.name(), given(100.0 * v.spread, 6)))
+        .collect();
+    writeln!(
+        out,
+        "{} samples, seed {}, {} spreads (%): {}; {} law, v0 = {} m/s",
+        spec.samples,
+        spec.seed,
+        spec.dist.name(),
+        vary.join(", "),
+        ball.law.name(),
+        given(ball.params.v0, 6)
+    )?;
+    writeln!(out)?;
+    let cell = |x: f64, scale: f64| {
+        if x.is_nan() {
+            "–".to_string()
+        } else {
+            human(x * scale, 5)
+        }
+    };
+    let cols = [
+        (&st.cor, 1.0),
+        (&st.max_force, 1.0),
+        (&st.contact_time, 1e3),
+    ];
+    let mut rows = vec![["", "COR", "F_m N", "t_f ms"].map(String::from).to_vec()];
+    let stat_rows: [(&str, StatOf); 4] = [
+        ("mean", |s| s.mean),
+        ("sd", |s| s.sd),
+        ("min", |s| s.min),
+        ("max", |s| s.max),
+    ];
+    for (name, f) in stat_rows {
+        let mut r = vec![name.to_string()];
+        r.extend(cols.iter().map(|(s, k)| cell(f(s), *k)));
+        rows.push(r);
+    }
+    for (k, p) in PROBS.iter().enumerate() {
+        let mut r = vec![format!("{} %", given(*p, 3))];
+        r.extend(cols.iter().map(|(s, sc)| cell(s.q.values()[k], *sc)));
+        rows.push(r);
+    }
+    table(out, "  ", &rows)?;
+    if no_rebound > 0 {
+        writeln!(
+            out,
+            "\n{no_rebound} samples did not rebound (e = 0): left out of t_f"
+        )?;
+    }
+    Ok(())
+}
