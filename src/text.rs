@@ -20,8 +20,7 @@ pub fn number(x: f64) -> String {
     } else if x.is_infinite() {
         if x > 0.0 { "inf".into() } else { "-inf".into() }
     } else if x == 0.0 {
-        // −0 (a velocity at rest, a rounded trajectory) is written as 0: "-0" in a CSV or an
-        // export reads as a sign where there is none (issue 28)
+        // −0 (a velocity at rest, a rounded trajectory) is written as 0: a zero has no sign
         "0".into()
     } else if (1e-4..1e7).contains(&x.abs()) {
         format!("{x}")

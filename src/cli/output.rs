@@ -27,7 +27,7 @@ pub fn json<T: Serialize>(out: &mut dyn Write, value: &T) -> io::Result<()> {
 /// `value` as one line of JSON in which every character the terminal sanitizer would rewrite
 /// (DEL, C1 controls, the bidirectional overrides: `crate::sanitize`) is a JSON escape
 /// `\u007f` — serde_json escapes only C0 itself, and the sanitizer's visible `\u{7f}` is no
-/// JSON (issue 28: `run --config $'cfg\x7fdel.toml' --format json | jq .` failed).
+/// JSON (tests/escaping.rs, `json_stays_json_whatever_a_name_holds`).
 pub fn json_string<T: Serialize>(value: &T) -> io::Result<String> {
     let mut buf = Vec::new();
     let mut ser = serde_json::Serializer::with_formatter(&mut buf, Escaping);

@@ -304,7 +304,7 @@ fn text(out: &mut dyn Write, b: &Ball, ball: &PeerBall, r: &Report) -> std::io::
     writeln!(
         out,
         "target COR {} ({}); k = K_p = {} N/m, K_h = {} N/m^1.5",
-        // a target typed is shown as typed: 0.9999999 is not "1" (issue 28)
+        // a target typed is shown as typed, every digit (0.9999999, never a rounded 1)
         if r.target_source == "given" {
             crate::text::number(r.target_cor)
         } else {

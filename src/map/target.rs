@@ -97,8 +97,8 @@ fn cut(s: &str, max: usize) -> String {
 }
 
 fn parse_one(part: &str) -> Result<Constraint, MapError> {
-    // a part is echoed in the error: a 120 kB one is cut to its first 60 characters, so the
-    // line stays one readable line (issue 28)
+    // a part is echoed in the error cut to its first 60 characters, with its length, so the
+    // error stays one readable line whatever was given
     let bad = |reason: String| MapError::Target {
         part: cut(part, 60),
         reason,
@@ -180,7 +180,7 @@ mod tests {
             assert!(e.starts_with(&format!("invalid where: '{part}'")), "{e}");
             assert!(e.contains(why), "{e}");
         }
-        // a 120 kB part was echoed whole (issue 28): cut, its length said
+        // a 120 kB part: cut, its length said
         let long = format!("cor>={}", "9".repeat(120_000));
         let e = Targets::parse(&long).unwrap_err().to_string();
         assert!(e.len() < 300, "{} bytes", e.len());

@@ -90,6 +90,20 @@ pub fn implied_cor(s: &TraceSummary, mass: f64, v0: f64, dt: f64) -> (f64, f64) 
     (s.impulse / (mass * v0) - 1.0, sd_impulse / (mass * v0))
 }
 
+/// Why a fit gave no answer, one reason each ("not converged", "z_p not pinned by the data");
+/// empty when it answered. The command line's report and error and the explorer's message
+/// all say it in these words.
+pub fn no_answer_reasons(converged: bool, not_pinned: &[&str]) -> Vec<String> {
+    let mut why = Vec::new();
+    if !converged {
+        why.push("not converged".to_string());
+    }
+    if !not_pinned.is_empty() {
+        why.push(format!("{} not pinned by the data", not_pinned.join(", ")));
+    }
+    why
+}
+
 /// The free parameters (the first `fitted.len()` variables of `best`) the data do not pin,
 /// with `quantities` fitted in all (a trace's start and baseline included).
 pub(super) fn not_pinned(

@@ -144,7 +144,8 @@ impl FitArgs {
         if let Some(p) = &self.drop_test {
             given.push(Source::DropFile(p.clone()));
         }
-        // air drag corrects drop heights only: silently ignored elsewhere (issue 28)
+        // air drag corrects drop heights only: with other data it is refused, not ignored
+        // (tests/fit_answers.rs, drag_is_refused_where_there_is_no_flight)
         let drops = matches!(given.as_slice(), [Source::Drops(_) | Source::DropFile(_)]);
         if self.drag_coefficient.is_some() && given.len() == 1 && !drops {
             anyhow::bail!(

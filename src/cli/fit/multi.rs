@@ -204,23 +204,14 @@ fn refuse_unanswered(a: &FitArgs, f: &crate::analysis::fit::MultiFit) -> anyhow:
     if f.identified {
         return Ok(());
     }
-    let mut why = Vec::new();
-    if !f.converged {
-        why.push(format!(
-            "it did not converge in {} iterations",
-            f.iterations
-        ));
-    }
-    if !f.not_pinned.is_empty() {
-        why.push(format!("the data do not pin {}", f.not_pinned.join(", ")));
-    }
+    let why = crate::analysis::fit::verdict::no_answer_reasons(f.converged, &f.not_pinned);
     let refused = match (&a.plot, &a.save) {
         (None, None) => "",
         (Some(_), None) => "; --plot not written",
         (None, Some(_)) => "; --save not written",
         (Some(_), Some(_)) => "; --plot and --save not written",
     };
-    Err(MultiFitError::Unanswered(format!("{}{refused}", why.join(" and "))).into())
+    Err(MultiFitError::Unanswered(format!("{}{refused}", why.join("; "))).into())
 }
 
 /// Outputs written besides the report: on stdout after a text report, on stderr after JSON

@@ -153,16 +153,7 @@ fn answered(f: &MultiFit) -> String {
     if f.identified {
         return "yes".into();
     }
-    let mut why = Vec::new();
-    if !f.converged {
-        why.push("not converged".to_string());
-    }
-    if !f.not_pinned.is_empty() {
-        why.push(format!(
-            "{} not pinned by the data",
-            f.not_pinned.join(", ")
-        ));
-    }
+    let why = crate::analysis::fit::verdict::no_answer_reasons(f.converged, &f.not_pinned);
     format!("NO ({})", why.join("; "))
 }
 

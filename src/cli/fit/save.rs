@@ -166,7 +166,10 @@ fn preset(
 fn fit_table(f: &MultiFit) -> Option<FitTable> {
     let dof = f.points.checked_sub(f.names.len()).filter(|&d| d > 0)?;
     // a fitted v0 is the trace's speed, not the ball's: its covariance is no preset's
-    if f.fitted.iter().any(|e| e.name == "v0") {
+    if f.fitted
+        .iter()
+        .any(|e| e.name == crate::analysis::fit::Param::V0.name())
+    {
         return None;
     }
     let se: Vec<f64> = f.fitted.iter().map(|e| e.std_error).collect();

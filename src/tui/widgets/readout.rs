@@ -291,8 +291,8 @@ impl Readout<'_> {
         let mut lines = Vec::new();
         lines.extend(self.validity_line());
         if let Some(r) = self.run {
-            // the Hertz law is elastic: it never flattens, whatever z_m and z_p (it said "no
-            // flattening (z_m < z_p)" with z_m 11 mm > z_p 6 mm; tests/tui_issue27.rs)
+            // the Hertz law is elastic: it never flattens, whatever z_m and z_p (docs/model.md
+            // §3; tests/answer_warnings.rs)
             let hertz = self.setting.law == crate::model::contact::ContactLaw::Hertz;
             let note = match (r.rebound, r.permanent_indentation > 0.0) {
                 (false, _) => " no rebound: the ball sinks into the dashpot",

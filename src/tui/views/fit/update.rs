@@ -148,19 +148,16 @@ impl App {
             FitStatus::Done(Err(_)) => return self.warn("the fit failed: nothing to apply".into()),
             FitStatus::Done(Ok(o)) => o.clone(),
         };
-        // a fit that did not answer is applied only when asked twice (issue 27: `F` applied a
-        // fit the pane itself marked "not converged")
+        // a fit that did not answer (docs/fitting.md) is applied only when asked twice
+        // (tests/tui_fit.rs, an_unpinned_parameter_is_said_so)
         if !outcome.identified && !pane.armed && standing != Some(Standing::Applied) {
             if let Some(p) = &mut self.fit.pane {
                 p.armed = true;
             }
-            let mut why = Vec::new();
-            if !outcome.converged {
-                why.push("not converged".to_string());
-            }
-            if !outcome.not_pinned.is_empty() {
-                why.push(format!("{} not pinned", outcome.not_pinned.join(", ")));
-            }
+            let why = crate::analysis::fit::verdict::no_answer_reasons(
+                outcome.converged,
+                &outcome.not_pinned,
+            );
             return self.warn(format!(
                 "the fit gave no answer ({}): F again applies it anyway",
                 why.join("; ")
