@@ -16,7 +16,7 @@ fn messages_name_the_field_and_the_preset() {
         .unwrap_err();
     assert_eq!(
         e.to_string(),
-        "invalid lambda: 2000000 (above 1e6, where the recoil spring is rigid)"
+        "invalid lambda: 2000000 (above 1e6, where the recoil spring is rigid; the range is 0 or 1e-15 … 1e6)"
     );
     // a ζ in its domain whose c is not: named by the ζ given
     let e = Ball::from_preset("superball")

@@ -141,6 +141,51 @@ pub fn check_positive(field: Field, value: f64) -> Result<(), ParamError> {
 pub const LAMBDA_MAX: f64 = 1e6;
 /// The largest ζ accepted (see [`LAMBDA_MAX`]).
 pub const ZETA_MAX: f64 = 1e6;
+
+/// The values a parameter takes, as one source for every check, prompt and message: zero
+/// (when `zero`) and the closed interval `lo … hi`. `text` is how users read it; the test
+/// `each_range_reads_as_its_bounds` holds it to the numbers.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Range {
+    /// Whether 0 is taken besides `lo … hi`.
+    pub zero: bool,
+    /// The smallest positive value taken.
+    pub lo: f64,
+    /// The largest value taken.
+    pub hi: f64,
+    /// The range as users read it, e.g. "0 or 1e-15 … 1e6".
+    pub text: &'static str,
+}
+
+impl Range {
+    /// Whether `value` is in the range (never NaN or ±∞).
+    pub fn contains(&self, value: f64) -> bool {
+        (self.zero && value == 0.0) || (self.lo..=self.hi).contains(&value)
+    }
+}
+
+/// λ's values: 0 (Maxwell), or 1e-15 … 1e6 ([`LAMBDA_MAX`]); between them K_r leaves the
+/// meaningful range of [`check_positive`].
+pub const LAMBDA_RANGE: Range = Range {
+    zero: true,
+    lo: MEANINGFUL_MIN,
+    hi: LAMBDA_MAX,
+    text: "0 or 1e-15 … 1e6",
+};
+/// ζ's values: 0 (a rigid dashpot), or 1e-15 … 1e6 ([`ZETA_MAX`]).
+pub const ZETA_RANGE: Range = Range {
+    zero: true,
+    lo: MEANINGFUL_MIN,
+    hi: ZETA_MAX,
+    text: "0 or 1e-15 … 1e6",
+};
+/// A positive parameter's values (v0, m, K_p, …): 1e-15 … 1e15.
+pub const POSITIVE_RANGE: Range = Range {
+    zero: false,
+    lo: MEANINGFUL_MIN,
+    hi: MEANINGFUL_MAX,
+    text: "1e-15 … 1e15",
+};
 /// The smallest z̄_p = z_p ω0/v0 accepted, as `--zp-bar` already requires. Each of z_p, K_p,
 /// m, v0 may lie anywhere in 1e-15 … 1e15, but together they reached z̄_p = 4e-35: the ball
 /// then flattens to z_m with z_r = z_p √(2 z_m/z_p − 1) below the rounding of z_m, z_f = z_m,
@@ -292,21 +337,39 @@ pub fn damping_for_zeta(mass: f64, k_p: f64, zeta: f64) -> f64 {
 
 /// Check a normalized pair before use (λ ≥ 0, ζ ≥ 0, both finite).
 pub fn validate_lambda_zeta(lambda: f64, zeta: f64) -> Result<(), ParamError> {
-    check(Field::Lambda, lambda, true, false)?;
-    check(Field::Zeta, zeta, true, false)?;
-    if lambda > LAMBDA_MAX {
-        return Err(ParamError {
-            field: Field::Lambda,
-            value: lambda,
-            reason: "above 1e6, where the recoil spring is rigid",
-        });
+    // NaN, ±∞ and negative values by the common check; a finite value ≥ 0 against λ's and
+    // ζ's own range, which the common one (1e-15 … 1e15) does not know
+    for (field, value) in [(Field::Lambda, lambda), (Field::Zeta, zeta)] {
+        if !(value.is_finite() && value >= 0.0) {
+            check(field, value, true, false)?;
+        }
     }
-    if zeta > ZETA_MAX {
-        return Err(ParamError {
-            field: Field::Zeta,
-            value: zeta,
-            reason: "above 1e6, where the dashpot is absent",
-        });
+    for (field, value, range, above) in [
+        (
+            Field::Lambda,
+            lambda,
+            LAMBDA_RANGE,
+            "above 1e6, where the recoil spring is rigid; the range is 0 or 1e-15 … 1e6",
+        ),
+        (
+            Field::Zeta,
+            zeta,
+            ZETA_RANGE,
+            "above 1e6, where the dashpot is absent; the range is 0 or 1e-15 … 1e6",
+        ),
+    ] {
+        if !range.contains(value) {
+            let reason = if value > range.hi {
+                above
+            } else {
+                "outside the range 0 or 1e-15 … 1e6"
+            };
+            return Err(ParamError {
+                field,
+                value,
+                reason,
+            });
+        }
     }
     Ok(())
 }
@@ -314,6 +377,32 @@ pub fn validate_lambda_zeta(lambda: f64, zeta: f64) -> Result<(), ParamError> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::text::short;
+
+    #[test]
+    fn each_range_reads_as_its_bounds() {
+        for r in [LAMBDA_RANGE, ZETA_RANGE, POSITIVE_RANGE] {
+            let zero = if r.zero { "0 or " } else { "" };
+            let text = format!("{zero}{} … {}", short(r.lo, 4), short(r.hi, 4));
+            assert_eq!(r.text, text);
+            assert_eq!(r.contains(0.0), r.zero);
+            assert!(r.contains(r.lo) && r.contains(r.hi));
+            assert!(!r.contains(r.lo / 10.0) && !r.contains(r.hi * (1.0 + 1e-15)));
+            assert!(!r.contains(f64::NAN) && !r.contains(f64::INFINITY));
+        }
+        // the reasons validate_lambda_zeta gives name the same range
+        assert!(LAMBDA_RANGE.text == ZETA_RANGE.text);
+    }
+
+    #[test]
+    fn a_lambda_below_the_smallest_positive_names_its_own_range() {
+        // it named the positive parameters' range 1e-15 … 1e15, which λ = 1e7 is in
+        let e = validate_lambda_zeta(1e-16, 1.0).unwrap_err();
+        assert_eq!(e.field, Field::Lambda);
+        assert_eq!(e.reason, "outside the range 0 or 1e-15 … 1e6");
+        assert!(validate_lambda_zeta(0.0, 0.0).is_ok());
+        assert!(validate_lambda_zeta(1e-15, 1e6).is_ok());
+    }
 
     #[test]
     fn normalized_round_trip() {

@@ -3,8 +3,9 @@
 //! command line's (`bouncelab run --lambda/--zeta/--v0`): the library's constants and its
 //! `api::set_lambda_zeta` / `ImpactParams::validate`, so a value one takes the other takes.
 
-use crate::model::params::{ImpactParams, LAMBDA_MAX, MEANINGFUL_MAX, MEANINGFUL_MIN, ZETA_MAX};
-use crate::text::{short, sig_trim};
+use crate::model::params::{
+    ImpactParams, LAMBDA_RANGE, MEANINGFUL_MIN, POSITIVE_RANGE, Range, ZETA_RANGE,
+};
 
 /// A live parameter.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -45,21 +46,21 @@ impl Param {
         }
     }
 
-    /// The closed range [lo, hi] `run` accepts (λ, ζ: 0 … 1e6; v0: 1e-15 … 1e15 m/s). Inside
-    /// it [`Param::check`] may still refuse a value: a ζ in (0, 1e-15), or a v0 that makes
-    /// z̄_p = z_p ω0/v0 too small, as `run` does.
-    pub fn range(self) -> (f64, f64) {
+    /// The values `run` accepts (λ, ζ: 0 or 1e-15 … 1e6; v0: 1e-15 … 1e15 m/s): the
+    /// library's own ranges, one source for the prompt, the checks and the messages. Inside
+    /// it [`Param::check`] may still refuse a value: a v0 that makes z̄_p = z_p ω0/v0 too
+    /// small, or a λ that takes K_r out of its range, as `run` does.
+    pub fn range(self) -> Range {
         match self {
-            Param::Lambda => (0.0, LAMBDA_MAX),
-            Param::Zeta => (0.0, ZETA_MAX),
-            Param::V0 => (V0_MIN, MEANINGFUL_MAX),
+            Param::Lambda => LAMBDA_RANGE,
+            Param::Zeta => ZETA_RANGE,
+            Param::V0 => POSITIVE_RANGE,
         }
     }
 
-    /// The range as users read it, e.g. "0 … 1e6".
+    /// The range as users read it, e.g. "0 or 1e-15 … 1e6", "1e-15 … 1e15 m/s".
     pub fn range_text(self) -> String {
-        let (lo, hi) = self.range();
-        format!("{} … {}{}", short(lo, 4), short(hi, 4), self.unit())
+        format!("{}{}", self.range().text, self.unit())
     }
 
     /// One step from `value`: λ ±0.01 / ±0.1, ζ ×÷1.1 / ×÷2 (log scale), v0 ±0.1 / ±1 m/s.
@@ -76,34 +77,25 @@ impl Param {
         }
     }
 
-    /// `value` brought into [`Param::range`]; `None` for a value that is not a finite number.
-    /// The flag tells whether it had to move.
+    /// `value` brought into [`Param::range`]'s closed span 0 (or its smallest value) … its
+    /// largest; `None` for a value that is not a finite number. The flag tells whether it had
+    /// to move.
     pub fn clamp(self, value: f64) -> Option<(f64, bool)> {
         if !value.is_finite() {
             return None;
         }
-        let (lo, hi) = self.range();
-        let v = value.clamp(lo, hi);
+        let r = self.range();
+        let lo = if r.zero { 0.0 } else { r.lo };
+        let v = value.clamp(lo, r.hi);
         Some((v, v != value))
     }
 
     /// `params` with this parameter set to `value`, if `run` takes it: checked by the command
     /// line's own path (`api::set_lambda_zeta` for λ and ζ, `ImpactParams::validate` for v0,
-    /// as `run --v0`). Refused, never clamped: the reason names the range.
+    /// as `run --v0`). Refused, never clamped, with the command line's message word for word
+    /// ("invalid lambda: 1e-16 (outside the range 0 or 1e-15 … 1e6); λ kept"), the range added
+    /// when the reason does not name it.
     pub fn check(self, value: f64, params: &ImpactParams) -> Result<ImpactParams, String> {
-        let (lo, hi) = self.range();
-        let kept = format!("{} kept", self.symbol());
-        if !(lo..=hi).contains(&value) {
-            let shown = if value.is_finite() {
-                sig_trim(value, 6)
-            } else {
-                "that".into()
-            };
-            return Err(format!(
-                "{shown} is out of range {}; {kept}",
-                self.range_text()
-            ));
-        }
         let mut next = *params;
         let valid = match self {
             Param::Lambda => crate::api::set_lambda_zeta(&mut next, Some(value), None),
@@ -113,9 +105,16 @@ impl Param {
                 next.validate().map_err(Into::into)
             }
         };
-        valid
-            .map(|()| next)
-            .map_err(|e| format!("{e}; {kept} (range {})", self.range_text()))
+        valid.map(|()| next).map_err(|e| {
+            let said = e.to_string();
+            let kept = format!("{said}; {} kept", self.symbol());
+            // the range once: named here unless the reason already names it
+            if said.contains(self.range().text) {
+                kept
+            } else {
+                format!("{kept} (range {})", self.range_text())
+            }
+        })
     }
 
     /// The parameter's value in `params`.
@@ -166,11 +165,36 @@ mod tests {
     #[test]
     fn clamp_reports_movement_and_refuses_non_numbers() {
         assert_eq!(Param::Lambda.clamp(-0.01), Some((0.0, true)));
-        assert_eq!(Param::Zeta.clamp(5e6), Some((ZETA_MAX, true)));
+        assert_eq!(Param::Zeta.clamp(5e6), Some((1e6, true)));
         assert_eq!(Param::V0.clamp(0.0), Some((V0_MIN, true)));
         assert_eq!(Param::V0.clamp(3.0), Some((3.0, false)));
         assert_eq!(Param::Zeta.clamp(f64::NAN), None);
         assert_eq!(Param::Zeta.clamp(f64::INFINITY), None);
+    }
+
+    #[test]
+    fn every_refusal_is_the_command_line_s_message_with_the_range() {
+        // three messages for one range before: "out of the physically meaningful range
+        // 1e-15 … 1e15; λ kept (range 0 … 1e6)", "is out of range 0 … 1e6", "that is out
+        // of range" (issue 29, item 8)
+        let p = ImpactParams::from_normalized(1.0, 0.2, 3.0);
+        let said = |param: Param, v: f64| param.check(v, &p).unwrap_err();
+        assert_eq!(
+            said(Param::Lambda, 1e-16),
+            "invalid lambda: 1e-16 (outside the range 0 or 1e-15 … 1e6); λ kept"
+        );
+        assert!(said(Param::Lambda, 1000000.0000000001).contains("the range is 0 or 1e-15 … 1e6"));
+        assert_eq!(
+            said(Param::Zeta, f64::INFINITY),
+            "invalid zeta: inf (must be finite); ζ kept (range 0 or 1e-15 … 1e6)"
+        );
+        assert_eq!(
+            said(Param::V0, f64::NAN),
+            "invalid v0: NaN (not a number); v0 kept (range 1e-15 … 1e15 m/s)"
+        );
+        assert_eq!(Param::Lambda.range_text(), "0 or 1e-15 … 1e6");
+        assert_eq!(Param::V0.range_text(), "1e-15 … 1e15 m/s");
+        assert!(Param::Lambda.check(0.0, &p).is_ok() && Param::Zeta.check(0.0, &p).is_ok());
     }
 
     #[test]
