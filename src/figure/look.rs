@@ -87,6 +87,8 @@ pub enum Sample {
     Dotted,
     /// A curve drawn dashed: "╍".
     Dashed,
+    /// A curve drawn in long dashes: "═".
+    LongDashed,
     /// Markers: their texts, e.g. "◆", or "S G B" for the balls' letters (then the whole
     /// entry takes the tone).
     Marks(Vec<String>),
@@ -119,6 +121,11 @@ pub fn dashed(s: &Series) -> bool {
     s.kind == Role::Model && s.style == Style::Dashed
 }
 
+/// Whether a terminal draws the series in long dashes (model curves the figure draws so).
+pub fn long_dashed(s: &Series) -> bool {
+    s.kind == Role::Model && s.style == Style::LongDashed
+}
+
 /// The legend of `series`: one entry per distinct (key, tone), in series order. Markers that
 /// share a key gather their texts in one entry ("S G B measured"); a line and a marker that
 /// share one ("pinned") keep the first's sample.
@@ -132,6 +139,7 @@ pub fn legend(series: &[Series]) -> Vec<LegendEntry> {
             }
             _ if dotted(s) => Sample::Dotted,
             _ if dashed(s) => Sample::Dashed,
+            _ if long_dashed(s) => Sample::LongDashed,
             _ => Sample::Line,
         };
         let same = out

@@ -143,6 +143,9 @@ pub enum Style {
     Dashed,
     /// A dotted line.
     Dotted,
+    /// Long dashes with short gaps: a fourth line that differs from the other three without
+    /// colour (the explorer's COR–ζ chart draws the current λ and three references).
+    LongDashed,
     /// Unconnected markers.
     Markers(Marker),
 }

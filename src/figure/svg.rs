@@ -123,6 +123,7 @@ fn stroke<DB: DrawingBackend>(
     match style {
         Style::Dashed => DashedPathElement::new(pts, px(8), px(5), line).into_dyn(),
         Style::Dotted => DashedPathElement::new(pts, px(2), px(3), line).into_dyn(),
+        Style::LongDashed => DashedPathElement::new(pts, px(16), px(4), line).into_dyn(),
         _ => PathElement::new(pts, line).into_dyn(),
     }
 }
@@ -146,6 +147,11 @@ fn draw_series<'a>(chart: &mut Chart<'a>, fig: &Figure, s: &Series) -> Result<()
         Style::Dotted => {
             chart
                 .draw_series(DashedLineSeries::new(pts, px(2), px(3), line))
+                .map_err(err)?;
+        }
+        Style::LongDashed => {
+            chart
+                .draw_series(DashedLineSeries::new(pts, px(16), px(4), line))
                 .map_err(err)?;
         }
         Style::Markers(shape) => {

@@ -245,8 +245,9 @@ fn zeta_figure(chart: Chart, scene: &Scene) -> Figure {
     let mut fig = build(&rows, &scene.balls, ContactLaw::Linear);
     fig.x.range = Some((z_lo, z_hi));
     // told apart without colour (NO_COLOR, greyscale print): the current λ solid, the fixed
-    // ones dashed, dotted, dashed, each named at its right end
-    const REFERENCE_STYLES: [Style; 3] = [Style::Dashed, Style::Dotted, Style::Dashed];
+    // ones dashed, dotted, in long dashes, each named at its right end: four lines, four
+    // patterns (tests/tui_render.rs: `no_color_cor_zeta_lines_each_have_their_own_glyph`)
+    const REFERENCE_STYLES: [Style; 3] = [Style::Dashed, Style::Dotted, Style::LongDashed];
     let now = scene
         .zeta
         .as_ref()

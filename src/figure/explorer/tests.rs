@@ -80,3 +80,51 @@ fn zeta_charts_show_the_decades_and_mark_the_current_lambda() {
     let legend: Vec<String> = fig.legend().into_iter().map(|e| e.key).collect();
     assert_eq!(legend[1..], ["this run", "measured"]);
 }
+
+#[test]
+fn no_color_cor_zeta_lines_each_have_their_own_glyph() {
+    // the current λ and the three references λ = 0, 0.4, 1: the references were dashed,
+    // dotted, dashed, so λ = 0 and λ = 1 shared "╍" without colour (issue 29, item 12)
+    let p = &Preset::embedded()[0];
+    let run = simulate(&p.params(), p.law, &SolveOptions::default()).unwrap();
+    let lambda = p.params().normalized().lambda;
+    let zetas = log_space(1e-3, 1e3, 41);
+    let sweep = |l: f64| cor_vs_zeta(&[l], &zetas, ContactLaw::Linear).unwrap();
+    let (now, r0, r1, r2) = (sweep(lambda), sweep(0.0), sweep(0.4), sweep(1.0));
+    let references: Vec<ZetaSweep> = [(0.0, &r0), (0.4, &r1), (1.0, &r2)]
+        .into_iter()
+        .map(|(lambda, points)| ZetaSweep {
+            lambda,
+            points: points.as_slice(),
+        })
+        .collect();
+    let scene = Scene {
+        ball: ball(p),
+        balls: vec![ball(p)],
+        run: Some(&run),
+        references,
+        zeta: Some(ZetaSweep {
+            lambda,
+            points: &now,
+        }),
+        speed: None,
+        speed_pending: None,
+        pinned: Vec::new(),
+        measured: &[],
+        models: None,
+        models_pending: false,
+    };
+    let fig = figure(Chart::CorZeta, &scene);
+    let lines: Vec<(String, crate::figure::Sample)> = fig
+        .legend()
+        .into_iter()
+        .filter(|e| e.key.contains("λ") || e.key.contains("lambda"))
+        .map(|e| (e.key, e.sample))
+        .collect();
+    assert_eq!(lines.len(), 4, "{lines:?}");
+    for (i, a) in lines.iter().enumerate() {
+        for b in &lines[i + 1..] {
+            assert_ne!(a.1, b.1, "{} and {} share a glyph", a.0, b.0);
+        }
+    }
+}

@@ -3,8 +3,8 @@
 //! label sits over the column where the curve's dot for its value lands. Pinned series are
 //! drawn dimmed behind the live ones; measured values and thresholds dotted; markers as text.
 
-use super::strokes::patterned;
-use crate::figure::look::{dashed, dotted};
+use super::strokes::{Pattern, patterned};
+use crate::figure::look::{dashed, dotted, long_dashed};
 use crate::figure::ticks::{Room, ticks};
 use crate::figure::{Corner, Figure, Role, Sample, Series, Style as Stroke};
 use crate::tui::theme::Theme;
@@ -178,9 +178,16 @@ impl<'a> Plot<'a> {
             for pass_dotted in [true, false] {
                 for s in lines.iter().filter(|s| dotted(s) == pass_dotted) {
                     let color = self.color(s);
-                    if pass_dotted || dashed(s) {
+                    let pattern = if dashed(s) {
+                        Some(Pattern::Dashed)
+                    } else if long_dashed(s) {
+                        Some(Pattern::LongDashed)
+                    } else {
+                        pass_dotted.then_some(Pattern::Dotted)
+                    };
+                    if let Some(pattern) = pattern {
                         let bounds = (l.x.bounds, l.y.bounds);
-                        let coords = patterned(&self.drawn(s), dashed(s), n, bounds);
+                        let coords = patterned(&self.drawn(s), pattern, n, bounds);
                         ctx.draw(&canvas::Points {
                             coords: &coords,
                             color,
@@ -233,7 +240,7 @@ impl<'a> Plot<'a> {
         let cell = |p: Option<(f64, f64)>| Some((l.col(p?.0)?, l.row(p?.1)?));
         let mut tagged: Vec<(u16, u16, u16)> = Vec::new();
         for s in &self.figure.series {
-            let (Stroke::Solid | Stroke::Dashed | Stroke::Dotted, Some(tag)) =
+            let (Stroke::Solid | Stroke::Dashed | Stroke::Dotted | Stroke::LongDashed, Some(tag)) =
                 (s.style, &s.look.text)
             else {
                 continue;
@@ -300,6 +307,7 @@ impl<'a> Plot<'a> {
                     Sample::Line => "━".to_string(),
                     Sample::Dotted => "┄".to_string(),
                     Sample::Dashed => "╍".to_string(),
+                    Sample::LongDashed => "═".to_string(),
                     Sample::Marks(texts) => texts.join(" "),
                 };
                 Line::from(vec![

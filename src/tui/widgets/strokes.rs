@@ -20,24 +20,39 @@ pub fn dots(a: (f64, f64), b: (f64, f64), n: f64, bounds: Bounds) -> Vec<(f64, f
         .collect()
 }
 
-/// The dots of a dotted (every third dot) or dashed (three dots on, three off) series, the
-/// pattern running on across its points so short segments keep it. `n`: dots a dotted
-/// line has over the plot's span. `points`: in plot units, `None` where the axes cannot
-/// show one.
+/// A line drawn in dots on the braille canvas; each looks different without colour.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Pattern {
+    /// Every third dot.
+    Dotted,
+    /// Three dots on, three off.
+    Dashed,
+    /// Six dots on, two off.
+    LongDashed,
+}
+
+impl Pattern {
+    /// Whether the `k`-th dot along the line is drawn.
+    fn keeps(self, k: usize) -> bool {
+        match self {
+            Pattern::Dotted => k.is_multiple_of(3),
+            Pattern::Dashed => (k / 3).is_multiple_of(2),
+            Pattern::LongDashed => k % 8 < 6,
+        }
+    }
+}
+
+/// The dots of a series in `pattern`, the pattern running on across its points so short
+/// segments keep it. `n`: dots a dotted line has over the plot's span. `points`: in plot
+/// units, `None` where the axes cannot show one.
 pub fn patterned(
     points: &[Option<(f64, f64)>],
-    dashed: bool,
+    pattern: Pattern,
     n: f64,
     bounds: Bounds,
 ) -> Vec<(f64, f64)> {
     let every = 3.0 * n;
-    let keep = |k: usize| {
-        if dashed {
-            (k / 3).is_multiple_of(2)
-        } else {
-            k.is_multiple_of(3)
-        }
-    };
+    let keep = |k: usize| pattern.keeps(k);
     let mut out = Vec::new();
     let mut k = 0;
     for w in points.windows(2) {
