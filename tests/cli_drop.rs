@@ -211,7 +211,7 @@ fn text_names_the_drag_model_and_the_verdict() {
         out.contains("judged on the standard's own drop, not on the 1 m above"),
         "{out}"
     );
-    assert!(out.contains("measured 1.410 m: PASS"), "{out}");
+    assert!(out.contains("predicted 1.410 m: PASS"), "{out}");
     let out = ok(&[
         "--preset",
         "football",

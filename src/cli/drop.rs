@@ -345,7 +345,7 @@ fn verdict_text(
     writeln!(out, "  {conditions}, {}", s.surface)?;
     writeln!(
         out,
-        "  window {}, measured {}{unit}: {}, margin {}{}{unit}",
+        "  window {}, predicted {}{unit}: {}, margin {}{}{unit}",
         super::standards::window_cell(s),
         human(v.measured, 4),
         if v.pass { "PASS" } else { "FAIL" },

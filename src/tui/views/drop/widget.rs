@@ -215,7 +215,8 @@ fn render_readout(ball: &str, d: &DropView, theme: Theme, area: Rect, buf: &mut 
                 Test::Cor { .. } => "",
             };
             lines.push(Line::raw(format!("standard {}", s.name)));
-            lines.push(Line::raw(format!("measured {}{unit}", sig(v.measured, 4))));
+            // the model's value where the standard measures one
+            lines.push(Line::raw(format!("predicted {}{unit}", sig(v.measured, 4))));
             let (word, style) = if v.pass {
                 ("PASS", theme.info())
             } else {
