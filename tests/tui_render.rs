@@ -376,3 +376,26 @@ fn a_figure_draws_its_curve_tag_markers_and_legend() {
         "braille:\n{s}"
     );
 }
+
+/// Issue 29, item 5: a chart's title keeps its units at every size the explorer promises —
+/// "F [N] vs t [ms" at 60×20 and "vs α, z [m" at 80×24 lost them; the rest of a title goes
+/// first (`tui::widgets::title`).
+#[test]
+fn chart_titles_keep_their_units_at_every_size() {
+    for (w, h) in [(60, 20), (80, 24), (100, 30), (120, 40), (200, 60)] {
+        let mut a = app(0);
+        for view in 0..4 {
+            let t = draw(&a, w, h);
+            let s = text(t.backend().buffer());
+            for row in s.lines().filter(|r| r.contains('┌')) {
+                let opened = row.matches('[').count();
+                assert_eq!(
+                    opened,
+                    row.matches(']').count(),
+                    "{w}×{h} view {view}: {row}"
+                );
+            }
+            press(&mut a, &[KeyCode::Tab]);
+        }
+    }
+}

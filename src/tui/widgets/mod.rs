@@ -13,3 +13,4 @@ pub mod plot;
 pub mod readout;
 pub mod status;
 pub mod strokes;
+pub mod title;

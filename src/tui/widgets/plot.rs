@@ -381,10 +381,13 @@ impl<'a> Plot<'a> {
 impl Widget for &Plot<'_> {
     fn render(self, area: Rect, buf: &mut Buffer) {
         let area = area.intersection(buf.area);
+        // the frame's top row less its corners and the space before the title (the one
+        // after it may meet the corner)
+        let room = usize::from(area.width).saturating_sub(3);
         Block::bordered()
             .border_style(self.theme.dim())
             .title(Line::styled(
-                format!(" {} ", self.figure.screen_title),
+                format!(" {} ", super::title::fit(&self.figure.screen_title, room)),
                 self.theme.title(),
             ))
             .render(area, buf);

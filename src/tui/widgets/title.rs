@@ -1,0 +1,129 @@
+//! A chart's title fitted to its frame: the axes and their units stay, everything else goes
+//! first (issue 29, item 5: "F [N] vs t [ms" at 60×20 lost the unit it most needed).
+//!
+//! Titles are parts joined by " · ": a name ("Force–time"), the axes with their units
+//! ("F [N] vs t [ms]"), qualifiers ("linear law, no flattening"), the crosshair's reading
+//! ("+(1.2, 60.9)"). When the whole title does not fit, the parts other than the axes and a
+//! reading are dropped, those right of the axes first; then the axes are written tighter
+//! ("F[N]–t[ms]"); last, whole words are cut from the right with "…", never inside a
+//! bracketed unit.
+
+/// `title` in at most `width` characters (a terminal cell each).
+pub fn fit(title: &str, width: usize) -> String {
+    let fits = |s: &str| s.chars().count() <= width;
+    if fits(title) {
+        return title.to_string();
+    }
+    let mut parts: Vec<&str> = title.split(" · ").collect();
+    let axes = parts
+        .iter()
+        .position(|p| p.contains(" vs ") || p.contains('['))
+        .unwrap_or(0);
+    // the parts that stay: the axes, and a reading (the crosshair's "+(x, y)")
+    let kept = |i: usize, p: &str| i == axes || p.starts_with("+(");
+    // the others go, those after the axes from the right first, then those before them
+    let order: Vec<usize> = (axes + 1..parts.len())
+        .rev()
+        .chain((0..axes).rev())
+        .filter(|&i| !kept(i, parts[i]))
+        .collect();
+    let mut gone = vec![false; parts.len()];
+    for i in order {
+        gone[i] = true;
+        let candidate = join(&parts, &gone);
+        if fits(&candidate) {
+            return candidate;
+        }
+    }
+    let tight = tighten(parts[axes]);
+    parts[axes] = &tight;
+    let candidate = join(&parts, &gone);
+    if fits(&candidate) {
+        return candidate;
+    }
+    cut_words(&candidate, width)
+}
+
+/// The parts not `gone`, joined as titles are.
+fn join(parts: &[&str], gone: &[bool]) -> String {
+    let left: Vec<&str> = parts
+        .iter()
+        .zip(gone)
+        .filter(|(_, g)| !**g)
+        .map(|(p, _)| *p)
+        .collect();
+    left.join(" · ")
+}
+
+/// The axes written without spaces a reader can spare: "F [N] vs t [ms] (log)" →
+/// "F[N]–t[ms] log".
+fn tighten(axes: &str) -> String {
+    axes.replace(" [", "[")
+        .replace(" vs ", "–")
+        .replace(" (log)", " log")
+        .replace(", ", ",")
+}
+
+/// Whole words of `text` from the left, then "…", in at most `width` characters; a bracketed
+/// unit counts as part of its word, so "[ms" never shows. Nothing (not even "…") when not one
+/// word fits.
+fn cut_words(text: &str, width: usize) -> String {
+    let mut out = String::new();
+    for word in text.split(' ') {
+        let next = if out.is_empty() {
+            word.to_string()
+        } else {
+            format!("{out} {word}")
+        };
+        // room for the ellipsis after it
+        if next.chars().count() + 1 > width {
+            break;
+        }
+        out = next;
+    }
+    if out.is_empty() {
+        return if width >= 1 {
+            "…".into()
+        } else {
+            String::new()
+        };
+    }
+    out + "…"
+}
+
+#[cfg(test)]
+mod tests {
+    use super::fit;
+
+    #[test]
+    fn the_units_stay_and_the_rest_goes_first() {
+        let t = "Force–time · F [N] vs t [ms]";
+        assert_eq!(fit(t, 40), t);
+        // 60×20 cut it to "Force–time · F [N] vs t [ms"
+        assert_eq!(fit(t, 26), "F [N] vs t [ms]");
+        assert_eq!(fit(t, 12), "F[N]–t[ms]");
+        let c = "COR e vs ζ (log) · linear law, no flattening";
+        assert_eq!(fit(c, 30), "COR e vs ζ (log)");
+        assert_eq!(fit(c, 14), "COR e–ζ log");
+        let h = "Force–displacement · F [N] vs α, z [mm]";
+        // 80×24 showed "vs α, z [m"
+        assert_eq!(fit(h, 34), "F [N] vs α, z [mm]");
+        // the crosshair's reading stays with the axes
+        let x = "+(1.2, 60.9) · Force–time · F [N] vs t [ms]";
+        assert_eq!(fit(x, 36), "+(1.2, 60.9) · F [N] vs t [ms]");
+        assert_eq!(fit(x, 26), "+(1.2, 60.9) · F[N]–t[ms]");
+    }
+
+    #[test]
+    fn a_title_that_cannot_fit_is_cut_at_a_word_with_an_ellipsis() {
+        let t = "Normalized peak force Fm/(m v0 ω0) vs ζ (log) · linear law";
+        let got = fit(t, 20);
+        assert!(got.ends_with('…') && got.chars().count() <= 20, "{got}");
+        assert!(!got.contains('['), "{got}");
+        assert_eq!(fit("abc", 2), "…");
+        assert_eq!(fit("abc", 0), "");
+        for w in 0..60 {
+            assert!(fit(t, w).chars().count() <= w, "{w}");
+        }
+    }
+}
