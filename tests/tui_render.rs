@@ -399,3 +399,42 @@ fn chart_titles_keep_their_units_at_every_size() {
         }
     }
 }
+
+/// Issue 29, item 7: at v0 = 1e-15 m/s every force tick read "0┤"; at 1e15 a tick label took
+/// half the chart. The labels are written in a power of ten shown on the frame ("×10⁻¹⁵"),
+/// short, distinct and never wrapped, at every size.
+#[test]
+fn extreme_speeds_get_scaled_tick_labels() {
+    for v0 in ["1e-15", "1e15"] {
+        for (w, h) in [(60, 20), (80, 24), (120, 40), (200, 60)] {
+            let mut a = app(0);
+            press(
+                &mut a,
+                &[KeyCode::Right, KeyCode::Right, KeyCode::Char('=')],
+            );
+            press(&mut a, &chars(v0));
+            press(&mut a, &[KeyCode::Enter]);
+            assert_eq!(a.setting().params.v0, v0.parse::<f64>().unwrap());
+            let rows = screen_text(&draw(&a, w, h));
+            let s = rows.join("\n");
+            assert!(s.contains("×10"), "{w}×{h} v0 {v0}: no factor\n{s}");
+            // the force–time chart's y labels: the cells left of its axis
+            let labels: Vec<String> = rows
+                .iter()
+                .filter_map(|r| {
+                    let (left, _) = r.split_once('┤')?;
+                    let label = left.trim_start_matches('│').trim();
+                    (!label.is_empty() && !label.contains('│')).then(|| label.to_string())
+                })
+                .collect();
+            assert!(labels.len() >= 2, "{w}×{h} v0 {v0}: {labels:?}\n{s}");
+            assert!(
+                labels.iter().all(|l| l.chars().count() <= 6),
+                "{w}×{h} v0 {v0}: long labels {labels:?}"
+            );
+            let mut distinct = labels.clone();
+            distinct.dedup();
+            assert_eq!(distinct.len(), labels.len(), "{w}×{h} v0 {v0}: {labels:?}");
+        }
+    }
+}

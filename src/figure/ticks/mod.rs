@@ -312,6 +312,52 @@ impl Ticks {
     pub fn labels(&self) -> Vec<(f64, String)> {
         self.major.iter().map(|&v| (v, self.label(v))).collect()
     }
+
+    /// The power of ten a terminal writes a linear axis' labels in when its values are too
+    /// large or too small to read as they are (issue 29, item 7: v0 = 1e15 gave 17-digit
+    /// labels, 1e-15 m/s a column of "0"): a multiple of 3, as SI prefixes go, when the
+    /// largest tick lies outside 0.001 … 100 000; `None` otherwise and on a log axis.
+    pub fn label_exponent(&self) -> Option<i32> {
+        self.decimals?;
+        let m = self.major.iter().fold(0.0_f64, |a, v| a.max(v.abs()));
+        if !(m.is_finite() && m > 0.0) || (1e-3..1e5).contains(&m) {
+            return None;
+        }
+        Some(3 * (m.log10() / 3.0).floor() as i32)
+    }
+
+    /// The major ticks with their labels written in units of 10^`label_exponent` (the
+    /// exponent returned with them), with the decimals their step needs at that scale.
+    pub fn scaled_labels(&self) -> (Option<i32>, Vec<(f64, String)>) {
+        let Some(e) = self.label_exponent() else {
+            return (None, self.labels());
+        };
+        let unit = 10f64.powi(e);
+        let step = match self.major.as_slice() {
+            [a, b, ..] => (b - a) / unit,
+            _ => 1.0,
+        };
+        let d = decimals_for(step);
+        let labels = self
+            .major
+            .iter()
+            .map(|&v| (v, tick_label(v / unit, d)))
+            .collect();
+        (Some(e), labels)
+    }
+}
+
+/// "×10⁻¹⁵": the factor a scaled axis' labels are in.
+pub fn factor_label(exponent: i32) -> String {
+    const SUPER: [char; 10] = ['⁰', '¹', '²', '³', '⁴', '⁵', '⁶', '⁷', '⁸', '⁹'];
+    let digits: String = exponent
+        .unsigned_abs()
+        .to_string()
+        .chars()
+        .filter_map(|c| c.to_digit(10).map(|d| SUPER[d as usize]))
+        .collect();
+    let sign = if exponent < 0 { "⁻" } else { "" };
+    format!("×10{sign}{digits}")
 }
 
 /// The label of `x` on an axis whose ticks are `step` apart; "—" when either is not a

@@ -5,7 +5,7 @@
 
 use super::strokes::{Pattern, patterned};
 use crate::figure::look::{dashed, dotted, long_dashed};
-use crate::figure::ticks::{Room, ticks};
+use crate::figure::ticks::{Room, factor_label, ticks};
 use crate::figure::{Corner, Figure, Role, Sample, Series, Style as Stroke};
 use crate::tui::theme::Theme;
 use ratatui::buffer::Buffer;
@@ -22,6 +22,9 @@ pub struct Axis {
     pub bounds: [f64; 2],
     /// (position in plot units, label)
     pub ticks: Vec<(f64, String)>,
+    /// The power of ten the labels are written in (shown on the frame as "×10⁻¹⁵"), when
+    /// the values are too large or small to read as they are.
+    pub exponent: Option<i32>,
 }
 
 /// A figure drawn in a terminal.
@@ -80,9 +83,11 @@ impl<'a> Plot<'a> {
                 t.hi = next;
             }
         }
+        let (exponent, ticks) = t.scaled_labels();
         Axis {
             bounds: [t.lo, t.hi],
-            ticks: t.labels(),
+            ticks,
+            exponent,
         }
     }
 
@@ -144,6 +149,21 @@ impl<'a> Plot<'a> {
             }
             buf.set_stringn(start, axis_y + 1, label, usize::from(w), style);
             free_from = start + w + 1;
+        }
+    }
+
+    /// The powers of ten of scaled axes, on the frame's right end: y's on the top border
+    /// ("y ×10⁻¹⁵"), x's on the bottom one, where no title, label or curve is.
+    fn draw_factors(&self, area: Rect, l: &PlotLayout, buf: &mut Buffer) {
+        let style = self.theme.axis();
+        for (axis, row, name) in [(&l.y, area.y, "y"), (&l.x, area.bottom() - 1, "x")] {
+            let Some(e) = axis.exponent else { continue };
+            let text = format!(" {name} {} ", factor_label(e));
+            let w = text.chars().count() as u16;
+            if w + 4 > area.width {
+                continue;
+            }
+            buf.set_stringn(area.right() - 1 - w, row, &text, usize::from(w), style);
         }
     }
 
@@ -381,9 +401,14 @@ impl<'a> Plot<'a> {
 impl Widget for &Plot<'_> {
     fn render(self, area: Rect, buf: &mut Buffer) {
         let area = area.intersection(buf.area);
-        // the frame's top row less its corners and the space before the title (the one
-        // after it may meet the corner)
-        let room = usize::from(area.width).saturating_sub(3);
+        let layout = self.layout(area);
+        // the frame's top row less its corners, the space before the title (the one after
+        // it may meet the corner) and the y axis' power of ten
+        let factor = layout
+            .as_ref()
+            .and_then(|l| l.y.exponent)
+            .map_or(0, |e| factor_label(e).chars().count() + 4);
+        let room = usize::from(area.width).saturating_sub(3 + factor);
         Block::bordered()
             .border_style(self.theme.dim())
             .title(Line::styled(
@@ -391,7 +416,8 @@ impl Widget for &Plot<'_> {
                 self.theme.title(),
             ))
             .render(area, buf);
-        let Some(l) = self.layout(area) else { return };
+        let Some(l) = layout else { return };
+        self.draw_factors(area, &l, buf);
         self.draw_axes(&l, buf);
         self.draw_series(&l, buf);
         self.draw_marks(&l, buf);
