@@ -154,3 +154,30 @@ fn a_long_reason_wraps_in_the_entry() {
     press(&mut app, &[KeyCode::Enter]);
     insta::assert_snapshot!(draw(&app, 80, 24).backend());
 }
+
+/// Issue 29, item 11: at 60 columns the help cut its longest lines ("switch view (impact,
+/// sweeps, models, ma"); they wrap under their text column, and the scroll reaches the end.
+#[test]
+fn the_help_wraps_at_sixty_columns_and_scrolls_to_its_end() {
+    let mut app = superball();
+    app.update(Action::Resize(60, 20));
+    press(&mut app, &[KeyCode::Char('?')]);
+    let mut seen = String::new();
+    for _ in 0..40 {
+        let rows = screen_text(&draw(&app, 60, 20));
+        seen.push_str(&rows.join("\n"));
+        press(&mut app, &[KeyCode::PageDown]);
+    }
+    for (_, text) in bouncelab::tui::keys::KEYS
+        .iter()
+        .filter(|k| !k.1.is_empty())
+    {
+        for word in text.split(' ') {
+            assert!(
+                seen.contains(word),
+                "'{word}' of '{text}' never shown:\n{seen}"
+            );
+        }
+    }
+    assert!(seen.contains("switch view"), "{seen}");
+}

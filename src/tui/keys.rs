@@ -63,9 +63,72 @@ pub const KEYS: [(&str, &str); 55] = [
     ("y / n or Esc", "replace the file / keep it"),
 ];
 
-/// The first help line that can be shown at the top when the screen is `height` rows: the
+/// One row of the help as a screen `width` columns wide shows it.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct HelpRow {
+    /// The key, padded to the key column; blank on a text's continuation rows.
+    pub key: String,
+    /// The text (or a part of it, wrapped at spaces), or a section's heading.
+    pub text: String,
+    /// Whether the row is a section's heading.
+    pub heading: bool,
+}
+
+/// The help's box width on a screen `width` columns wide: its widest row, or the screen.
+pub fn help_width(width: u16) -> u16 {
+    let (key_w, text_w) = help_columns();
+    ((key_w + text_w + 5) as u16).min(width)
+}
+
+/// The widths of the key column and of the widest text.
+fn help_columns() -> (usize, usize) {
+    // section headings (rows without text) span the line: they do not widen the key column
+    let key_w = KEYS
+        .iter()
+        .filter(|k| !k.1.is_empty())
+        .map(|k| k.0.chars().count())
+        .max()
+        .unwrap_or(0);
+    let text_w = KEYS.iter().map(|k| k.1.chars().count()).max().unwrap_or(0);
+    (key_w, text_w)
+}
+
+/// The help's rows in a box [`help_width`] wide: a text wider than its column wraps at
+/// spaces onto rows under it (at 60 columns "switch view (impact, sweeps, models, ma" was cut).
+pub fn help_rows(width: u16) -> Vec<HelpRow> {
+    let (key_w, _) = help_columns();
+    // the box's inside less " key  " before the text
+    let text_col = usize::from(help_width(width))
+        .saturating_sub(key_w + 5)
+        .max(8);
+    let mut rows = Vec::new();
+    for (k, t) in KEYS {
+        if t.is_empty() {
+            rows.push(HelpRow {
+                key: String::new(),
+                text: (*k).to_string(),
+                heading: true,
+            });
+            continue;
+        }
+        for (i, part) in crate::tui::format::wrap(t, text_col)
+            .into_iter()
+            .enumerate()
+        {
+            let key: &str = if i == 0 { k } else { "" };
+            rows.push(HelpRow {
+                key: format!("{key:<key_w$}"),
+                text: part,
+                heading: false,
+            });
+        }
+    }
+    rows
+}
+
+/// The first help row that can be shown at the top on a `width` × `height` screen: the
 /// help's box takes the whole height at most, two rows of it the border.
-pub fn help_max_scroll(height: u16) -> u16 {
-    let rows = height.saturating_sub(2) as usize;
-    KEYS.len().saturating_sub(rows) as u16
+pub fn help_max_scroll(width: u16, height: u16) -> u16 {
+    let shown = height.saturating_sub(2) as usize;
+    help_rows(width).len().saturating_sub(shown) as u16
 }

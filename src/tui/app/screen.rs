@@ -61,6 +61,6 @@ impl App {
 
     /// The last scroll position of the help on the known screen (none known: all of it fits).
     fn help_max(&self) -> u16 {
-        self.size.map_or(0, |(_, h)| help_max_scroll(h))
+        self.size.map_or(0, |(w, h)| help_max_scroll(w, h))
     }
 }

@@ -1,6 +1,6 @@
 //! The help overlay (`?`): every key.
 
-use crate::tui::keys::{KEYS, help_max_scroll};
+use crate::tui::keys::{help_max_scroll, help_rows, help_width};
 use crate::tui::theme::Theme;
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
@@ -22,38 +22,32 @@ impl Widget for &Help {
 }
 
 fn render(theme: &Theme, scroll: u16, area: Rect, buf: &mut Buffer) {
-    // section headings (rows without text) span the line: they do not widen the key column
-    let key_w = KEYS
-        .iter()
-        .filter(|k| !k.1.is_empty())
-        .map(|k| k.0.chars().count())
-        .max()
-        .unwrap_or(0);
-    let text_w = KEYS.iter().map(|k| k.1.chars().count()).max().unwrap_or(0);
-    let w = ((key_w + text_w + 5) as u16).min(area.width);
-    let h = (KEYS.len() as u16 + 2).min(area.height);
+    let rows = help_rows(area.width);
+    let w = help_width(area.width);
+    let h = (rows.len() as u16 + 2).min(area.height);
     let popup = Rect::new(
         area.x + (area.width - w) / 2,
         area.y + (area.height - h) / 2,
         w,
         h,
     );
-    let lines: Vec<Line> = KEYS
-        .iter()
-        .map(|(k, t)| {
-            if t.is_empty() {
-                Line::styled(format!(" {k}"), theme.title())
+    let lines: Vec<Line> = rows
+        .into_iter()
+        .map(|r| {
+            if r.heading {
+                Line::styled(format!(" {}", r.text), theme.title())
             } else {
                 Line::from(vec![
-                    Span::styled(format!(" {k:<key_w$}  "), theme.key()),
-                    Span::raw(*t),
+                    Span::styled(format!(" {}  ", r.key), theme.key()),
+                    Span::raw(r.text),
                 ])
             }
         })
         .collect();
     // `update` keeps the scroll within the screen it knows; a smaller area still shows the end
-    let scroll = scroll.min(help_max_scroll(area.height));
-    let more = if scroll < help_max_scroll(area.height) {
+    let last = help_max_scroll(area.width, area.height);
+    let scroll = scroll.min(last);
+    let more = if scroll < last {
         " ↓ more "
     } else if scroll > 0 {
         " ↑ more "
