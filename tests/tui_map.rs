@@ -376,3 +376,28 @@ fn every_size_draws() {
         }
     }
 }
+
+/// Issue 29, item 11: the map's viridis cells were sent as 24-bit colour whatever the
+/// terminal; one that does not announce it (COLORTERM) gets the 256 or 16 colours it has.
+#[test]
+fn the_map_uses_only_colours_the_terminal_shows() {
+    use bouncelab::tui::palette::Depth;
+    for depth in [Depth::TrueColor, Depth::Indexed, Depth::Ansi] {
+        let a = map_app(true, 120, 40).with_color_depth(depth);
+        let t = draw(&a, 120, 40);
+        let cells = t.backend().buffer().content();
+        let rgb = cells
+            .iter()
+            .filter(|c| matches!(c.fg, Color::Rgb(..)) || matches!(c.bg, Color::Rgb(..)))
+            .count();
+        let indexed = cells
+            .iter()
+            .filter(|c| matches!(c.bg, Color::Indexed(..)))
+            .count();
+        match depth {
+            Depth::TrueColor => assert!(rgb > 100, "the map in 24-bit colour: {rgb}"),
+            Depth::Indexed => assert!(rgb == 0 && indexed > 100, "{rgb} {indexed}"),
+            Depth::Ansi => assert!(rgb == 0 && indexed == 0, "{rgb} {indexed}"),
+        }
+    }
+}

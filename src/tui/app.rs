@@ -46,6 +46,8 @@ pub struct App {
     pub(in crate::tui) overlay: Overlay,
     pub(in crate::tui) message: Option<Message>,
     pub(in crate::tui) color: bool,
+    /// The colours the terminal shows (24-bit ones are brought down to them when drawn).
+    pub(in crate::tui) depth: super::palette::Depth,
     /// The pinned runs, oldest first (at most [`MAX_PINS`]).
     pub(in crate::tui) pins: Vec<Ghost>,
     pub(in crate::tui) undo: Vec<Setting>,
@@ -102,6 +104,7 @@ impl App {
             overlay: Overlay::None,
             message: None,
             color,
+            depth: super::palette::Depth::TrueColor,
             pins: Vec::new(),
             undo: Vec::new(),
             quit: false,

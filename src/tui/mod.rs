@@ -30,6 +30,7 @@ pub mod export;
 pub mod format;
 pub mod keys;
 pub mod layout;
+pub mod palette;
 pub mod param;
 pub mod physical;
 pub mod picker;
@@ -89,6 +90,10 @@ pub fn run_from(
     let mut app = app::App::new(preset, color_wanted())
         .with_background_sweeps()
         .with_motion(motion_wanted())
+        .with_color_depth(palette::detect(
+            std::env::var("COLORTERM").ok().as_deref(),
+            std::env::var("TERM").ok().as_deref(),
+        ))
         .with_measured(measured);
     if let Some(l) = loaded {
         app = app.with_loaded(l);

@@ -326,5 +326,7 @@ impl Widget for &App {
             v.render(rect, buf);
         }
         render_overlay(self, theme, area, buf);
+        // the map's 24-bit cells in colours the terminal shows
+        super::palette::bring_down(buf, area, self.color_depth());
     }
 }

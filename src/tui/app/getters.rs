@@ -39,6 +39,15 @@ impl App {
     pub fn color(&self) -> bool {
         self.color
     }
+    /// The colours the terminal shows ([`App::with_color_depth`]).
+    pub fn color_depth(&self) -> crate::tui::palette::Depth {
+        self.depth
+    }
+    /// Draw for a terminal that shows `depth` colours (24-bit unless told).
+    pub fn with_color_depth(mut self, depth: crate::tui::palette::Depth) -> App {
+        self.depth = depth;
+        self
+    }
     /// The pinned runs, oldest first: `p1` is the first.
     pub fn pins(&self) -> &[Ghost] {
         &self.pins
