@@ -124,3 +124,27 @@ fn reduced_motion_shows_the_whole_sequence_still() {
     assert!(text.contains("reduced motion"), "{text}");
     assert!(text.contains("PASS"), "{text}");
 }
+
+/// Issue 29, item 9: at 60×20 and 80×24 the drop view showed no rebound and no verdict (its
+/// seven-row readout held the setting only); its ticks read "0 0.716 1.43"; under NO_COLOR
+/// the legend named two lines it drew alike. Now the verdict and the first rebound show at
+/// every size, the ticks are round, and the legend carries each line's look.
+#[test]
+fn the_drop_view_shows_its_verdict_and_rebounds_at_small_sizes() {
+    for (w, h) in [(60, 20), (80, 24), (100, 30), (120, 40), (200, 60)] {
+        let mut app = App::new(preset("tennis"), false);
+        app.update(Action::Resize(w, h));
+        press(&mut app, &[KeyCode::Char('d')]);
+        let s = screen_text(&draw(&app, w, h)).join("\n");
+        assert!(s.contains("itf PASS"), "{w}×{h}: no verdict\n{s}");
+        assert!(s.contains("1.410"), "{w}×{h}: no first rebound\n{s}");
+        assert!(
+            !s.contains("2.67") && !s.contains("5.34"),
+            "{w}×{h}: ticks\n{s}"
+        );
+        // where the chart has room for its legend (ratatui hides it above half the chart)
+        if w == 80 || w >= 120 {
+            assert!(s.contains("┄ itf window"), "{w}×{h}: legend\n{s}");
+        }
+    }
+}

@@ -42,14 +42,22 @@ fn render(p: DropPanel, area: Rect, buf: &mut Buffer) {
             .areas(area);
         (l, r)
     } else {
-        let [l, r] = Layout::vertical([Constraint::Fill(1), Constraint::Length(7)]).areas(area);
+        // below the chart: the setting and verdict beside the rebounds, as many rows as the
+        // longer needs and the chart can spare (at 80 × 24 seven rows cut off the rebounds,
+        // the verdict and the keys)
+        let rows = (area.height * 45 / 100).clamp(7, 10);
+        let [l, r] = Layout::vertical([Constraint::Fill(1), Constraint::Length(rows)]).areas(area);
         (l, r)
     };
     let [chart, ball] =
         Layout::horizontal([Constraint::Fill(1), Constraint::Length(BALL_WIDTH)]).areas(left);
     render_chart(d, theme, chart, buf);
     render_ball(d, theme, ball, buf);
-    render_readout(p.ball, d, theme, readout, buf);
+    if wide {
+        render_readout(p.ball, d, theme, readout, buf);
+    } else {
+        render_readout_beside(p.ball, d, theme, readout, buf);
+    }
 }
 
 /// What the height–time chart draws, in m and s.
@@ -62,7 +70,8 @@ struct Curves {
     h_hi: f64,
 }
 
-fn curves(d: &DropView) -> Curves {
+/// The curves of `d` for a chart `width` cells wide.
+fn curves(d: &DropView, width: u16) -> Curves {
     let mut c = Curves {
         all: Vec::new(),
         flown: Vec::new(),
@@ -84,26 +93,49 @@ fn curves(d: &DropView) -> Curves {
         c.now = vec![(d.t, d.height_now())];
     }
     if let Some((lo, hi)) = d.band() {
-        c.band = Some([vec![(0.0, lo), (c.t_hi, lo)], vec![(0.0, hi), (c.t_hi, hi)]]);
+        // dotted, as the explorer draws thresholds: told apart from the flight without colour;
+        // a dot every third braille column of the chart
+        let n = (f64::from(width) * 2.0 / 3.0).max(2.0);
+        let dots = |h: f64| -> Vec<(f64, f64)> {
+            let n = n as u32;
+            (0..=n)
+                .map(|i| (c.t_hi * f64::from(i) / f64::from(n), h))
+                .collect()
+        };
+        c.band = Some([dots(lo), dots(hi)]);
         c.h_hi = c.h_hi.max(hi * 1.05);
     }
     c
 }
 
-/// Three labels along an axis: 0, the middle and the end.
-fn labels(hi: f64) -> Vec<String> {
-    vec!["0".into(), sig(hi / 2.0, 3), sig(hi, 3)]
+/// The axis' top and its labels, evenly spaced from 0 as ratatui places them: 2 to 4 round
+/// steps (1, 2, 2.5, 5 × 10^k), the count that wastes the least room above `hi` ("0 0.716
+/// 1.43" became "0 0.5 1 1.5").
+fn axis_labels(hi: f64) -> (f64, Vec<String>) {
+    let (top, step) = (2..=4)
+        .map(|n| {
+            let step = crate::figure::ticks::nice_ceil(hi / f64::from(n));
+            (f64::from(n) * step, step)
+        })
+        .min_by(|a, b| a.0.total_cmp(&b.0))
+        .unwrap_or((hi, hi));
+    let n = (top / step).round() as usize;
+    let labels = (0..=n)
+        .map(|i| crate::figure::ticks::step_label(i as f64 * step, step))
+        .collect();
+    (top, labels)
 }
 
 /// Height (m) against time (s) on ratatui's braille `Chart`: the whole sequence dimmed, the
 /// part already flown bright, the ball now as a dot, the standard's window as two lines.
 fn render_chart(d: &DropView, theme: Theme, area: Rect, buf: &mut Buffer) {
-    let c = curves(d);
+    let c = curves(d, area.width);
+    let ((t_top, t_labels), (h_top, h_labels)) = (axis_labels(c.t_hi), axis_labels(c.h_hi));
     let live = Style::default().fg(theme.current());
-    let line = |name: Option<String>, data, style| {
+    let drawn = |name: Option<String>, data, style, graph| {
         let set = Dataset::default()
             .marker(Marker::Braille)
-            .graph_type(GraphType::Line)
+            .graph_type(graph)
             .style(style)
             .data(data);
         match name {
@@ -111,9 +143,11 @@ fn render_chart(d: &DropView, theme: Theme, area: Rect, buf: &mut Buffer) {
             None => set,
         }
     };
+    let line = |name, data, style| drawn(name, data, style, GraphType::Line);
+    // each name with its line's look, so the legend reads without colour (NO_COLOR)
     let mut sets = vec![
         line(None, &c.all, theme.ghost()),
-        line(Some("bottom of the ball".into()), &c.flown, live),
+        line(Some("━ bottom of the ball".into()), &c.flown, live),
         Dataset::default()
             .marker(Marker::Dot)
             .graph_type(GraphType::Scatter)
@@ -121,12 +155,9 @@ fn render_chart(d: &DropView, theme: Theme, area: Rect, buf: &mut Buffer) {
             .data(&c.now),
     ];
     if let (Some([lo, hi]), Some((s, _))) = (&c.band, d.verdict) {
-        sets.push(line(
-            Some(format!("{} window", s.name)),
-            hi,
-            theme.measured(),
-        ));
-        sets.push(line(None, lo, theme.measured()));
+        let dotted = |name, data| drawn(name, data, theme.measured(), GraphType::Scatter);
+        sets.push(dotted(Some(format!("┄ {} window", s.name)), hi));
+        sets.push(dotted(None, lo));
     }
     Chart::new(sets)
         .hidden_legend_constraints((Constraint::Ratio(1, 2), Constraint::Ratio(1, 2)))
@@ -134,14 +165,14 @@ fn render_chart(d: &DropView, theme: Theme, area: Rect, buf: &mut Buffer) {
         .x_axis(
             Axis::default()
                 .style(theme.axis())
-                .bounds([0.0, c.t_hi])
-                .labels(labels(c.t_hi)),
+                .bounds([0.0, t_top])
+                .labels(t_labels),
         )
         .y_axis(
             Axis::default()
                 .style(theme.axis())
-                .bounds([0.0, c.h_hi])
-                .labels(labels(c.h_hi)),
+                .bounds([0.0, h_top])
+                .labels(h_labels),
         )
         .render(area, buf);
 }
@@ -183,7 +214,42 @@ fn render_ball(d: &DropView, theme: Theme, area: Rect, buf: &mut Buffer) {
         .render(area, buf);
 }
 
+/// The readout in one column (wide screens): the setting, the rebounds, the verdict, the keys.
 fn render_readout(ball: &str, d: &DropView, theme: Theme, area: Rect, buf: &mut Buffer) {
+    let mut lines = setting_lines(ball, d, theme);
+    lines.push(Line::raw(""));
+    lines.extend(bounce_lines(d, theme));
+    lines.push(Line::raw(""));
+    lines.extend(verdict_lines(d, theme));
+    lines.push(Line::raw(""));
+    lines.push(keys_line(d, theme));
+    Paragraph::new(lines)
+        .wrap(Wrap { trim: true })
+        .block(Block::bordered())
+        .render(area, buf);
+}
+
+/// The readout under the chart (narrow screens): the setting and the verdict on the left,
+/// the rebounds on the right, so both show in a few rows; the status line has the keys.
+fn render_readout_beside(ball: &str, d: &DropView, theme: Theme, area: Rect, buf: &mut Buffer) {
+    let block = Block::bordered();
+    let inner = block.inner(area);
+    block.render(area, buf);
+    let [left, right] =
+        Layout::horizontal([Constraint::Fill(1), Constraint::Length(22)]).areas(inner);
+    let mut lines = setting_lines(ball, d, theme);
+    lines.extend(verdict_lines(d, theme));
+    if !d.motion {
+        lines.push(keys_line(d, theme));
+    }
+    Paragraph::new(lines)
+        .wrap(Wrap { trim: true })
+        .render(left, buf);
+    Paragraph::new(bounce_lines(d, theme)).render(right, buf);
+}
+
+/// The ball, the drop and the air.
+fn setting_lines(ball: &str, d: &DropView, theme: Theme) -> Vec<Line<'static>> {
     let mut lines = vec![Line::styled(format!("{ball} · drop test"), theme.title())];
     match (&d.run, d.sequence()) {
         (Err(e), _) => lines.push(Line::styled(e.clone(), theme.error())),
@@ -194,51 +260,60 @@ fn render_readout(ball: &str, d: &DropView, theme: Theme, area: Rect, buf: &mut 
                 sig(run.bounces[0].v_in, 4)
             )));
             lines.push(Line::styled("drag ½ρC_dAv², C_d 0.47", theme.dim()));
-            lines.push(Line::raw(""));
-            lines.push(Line::styled(" #  rebound m    COR", theme.dim()));
-            for (i, b) in run.bounces.iter().enumerate().take(6) {
-                lines.push(Line::raw(format!(
-                    "{:>2}  {:<10}  {}",
-                    i + 1,
-                    sig(b.rebound_height, 4),
-                    sig(b.cor, 4)
-                )));
-            }
         }
         _ => {}
     }
-    lines.push(Line::raw(""));
-    match d.verdict {
-        Some((s, v)) => {
-            let unit = match s.test {
-                Test::Drop { .. } => " m",
-                Test::Cor { .. } => "",
-            };
-            lines.push(Line::raw(format!("standard {}", s.name)));
-            // the model's value where the standard measures one
-            lines.push(Line::raw(format!("predicted {}{unit}", sig(v.measured, 4))));
-            let (word, style) = if v.pass {
-                ("PASS", theme.info())
-            } else {
-                ("FAIL", theme.error())
-            };
-            lines.push(Line::from(vec![
-                Span::styled(word, style),
-                Span::raw(format!(" margin {:+.3}{unit}", v.margin)),
-            ]));
-            lines.push(Line::styled("(at the standard's own height)", theme.dim()));
-        }
-        None => lines.push(Line::styled("no standard for this ball", theme.dim())),
+    lines
+}
+
+/// The first six rebounds: height and COR.
+fn bounce_lines(d: &DropView, theme: Theme) -> Vec<Line<'static>> {
+    let Some(run) = d.sequence() else {
+        return Vec::new();
+    };
+    let mut lines = vec![Line::styled(" #  rebound m    COR", theme.dim())];
+    for (i, b) in run.bounces.iter().enumerate().take(6) {
+        lines.push(Line::raw(format!(
+            "{:>2}  {:<10}  {}",
+            i + 1,
+            sig(b.rebound_height, 4),
+            sig(b.cor, 4)
+        )));
     }
-    lines.push(Line::raw(""));
+    lines
+}
+
+/// The standard's verdict on the model's prediction.
+fn verdict_lines(d: &DropView, theme: Theme) -> Vec<Line<'static>> {
+    let Some((s, v)) = d.verdict else {
+        return vec![Line::styled("no standard for this ball", theme.dim())];
+    };
+    let unit = match s.test {
+        Test::Drop { .. } => " m",
+        Test::Cor { .. } => "",
+    };
+    let (word, style) = if v.pass {
+        ("PASS", theme.info())
+    } else {
+        ("FAIL", theme.error())
+    };
+    vec![
+        Line::from(vec![
+            Span::raw(format!("{} ", s.name)),
+            Span::styled(word, style),
+            Span::raw(format!(" margin {:+.3}{unit}", v.margin)),
+        ]),
+        // the model's value where the standard measures one
+        Line::raw(format!("predicted {}{unit}", sig(v.measured, 4))),
+        Line::styled("(at the standard's own height)", theme.dim()),
+    ]
+}
+
+fn keys_line(d: &DropView, theme: Theme) -> Line<'static> {
     let keys = if d.motion {
         "space pause · b replay · d back"
     } else {
         "reduced motion · d back"
     };
-    lines.push(Line::styled(keys, theme.key()));
-    Paragraph::new(lines)
-        .wrap(Wrap { trim: true })
-        .block(Block::bordered())
-        .render(area, buf);
+    Line::styled(keys, theme.key())
 }
