@@ -438,3 +438,28 @@ fn extreme_speeds_get_scaled_tick_labels() {
         }
     }
 }
+
+/// Issue 29, item 4: labels never under a legend or another label — at 60×20 the legend
+/// covered "F_m 117.3 N" ("m 117.3 N" showed), with pins "p2p▲t_f" ran together. Each value
+/// label shows whole at every size, with and without pins.
+#[test]
+fn value_labels_show_whole_beside_legends_and_pins() {
+    for (w, h) in [(60, 20), (80, 24), (100, 30), (120, 40), (200, 60)] {
+        for pins in [0, 3] {
+            let mut a = app(0);
+            a.update(Action::Resize(w, h));
+            for _ in 0..pins {
+                press(&mut a, &[KeyCode::Char('p'), KeyCode::Char('v')]);
+            }
+            let s = screen_text(&draw(&a, w, h)).join("\n");
+            let run = a.run().unwrap();
+            let f = format!("F_m {} N", bouncelab::text::sig(run.max_force, 4));
+            let t = format!(
+                "t_f {} ms",
+                bouncelab::text::sig(run.contact_time.unwrap() * 1e3, 4)
+            );
+            assert!(s.contains(&f), "{w}×{h}, {pins} pins: no '{f}'\n{s}");
+            assert!(s.contains(&t), "{w}×{h}, {pins} pins: no '{t}'\n{s}");
+        }
+    }
+}

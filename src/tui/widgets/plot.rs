@@ -256,7 +256,13 @@ impl<'a> Plot<'a> {
     /// Line tags (a threshold's name, a curve's λ) at the line's last point — right of it, or
     /// ending left of it at the plot's edge, a row up or down when another tag is there — then
     /// markers; a marker whose cell another took moves right, so both show.
-    fn draw_marks(&self, l: &PlotLayout, buf: &mut Buffer) {
+    /// Returns the cells the tags and markers took, and the labels that found no room (the
+    /// legend shows those).
+    fn draw_marks(
+        &self,
+        l: &PlotLayout,
+        buf: &mut Buffer,
+    ) -> (Vec<(u16, u16)>, Vec<Line<'static>>) {
         let cell = |p: Option<(f64, f64)>| Some((l.col(p?.0)?, l.row(p?.1)?));
         let mut tagged: Vec<(u16, u16, u16)> = Vec::new();
         for s in &self.figure.series {
@@ -294,26 +300,44 @@ impl<'a> Plot<'a> {
             buf.set_stringn(x, y, tag, room, style);
             tagged.push((y, x, x + w));
         }
-        let mut taken: Vec<(u16, u16)> = Vec::new();
+        // every cell a tag or a marker's text took: nothing later writes over them, and the
+        // legend keeps off them (issue 29, item 4: "p2p▲t_f", the legend over "F_m 117.3 N")
+        let mut taken: Vec<(u16, u16)> = tagged
+            .iter()
+            .flat_map(|&(y, a, b)| (a..b).map(move |x| (x, y)))
+            .collect();
+        let mut dropped = Vec::new();
         for s in &self.figure.series {
             let Stroke::Markers(_) = s.style else {
                 continue;
             };
             let text = s.look.text.as_deref().unwrap_or("●");
+            let style = self.theme.tone(s.look.tone);
             for p in self.drawn(s) {
-                let Some((mut col, row)) = cell(p) else {
+                let Some((col, row)) = cell(p) else {
                     continue;
                 };
-                while taken.contains(&(col, row)) && col + 1 < l.plot.right() {
-                    col += 1;
+                let bounds = (l.plot.x, l.plot.right(), l.plot.y, l.plot.bottom());
+                let pieces = marker_place(text, (col, row), bounds, &taken);
+                if pieces.len() == 1 && pieces[0].2.chars().count() < text.chars().count() {
+                    // the glyph alone: its label goes to the legend
+                    let mut chars = text.chars();
+                    let glyph = chars.next().map(String::from).unwrap_or_default();
+                    let label = chars.as_str().to_string();
+                    dropped.push(Line::from(vec![
+                        Span::styled(glyph, style),
+                        Span::raw(" "),
+                        Span::raw(label),
+                    ]));
                 }
-                let (x, text) = marker_text_at(text, col, (l.plot.x, l.plot.right()));
-                let room = usize::from(l.plot.right() - x);
-                let style = self.theme.tone(s.look.tone);
-                let (end, _) = buf.set_stringn(x, row, &text, room, style);
-                taken.extend((x..end).map(|c| (c, row)));
+                for (x, y, piece) in pieces {
+                    let room = usize::from(l.plot.right() - x);
+                    let (end, _) = buf.set_stringn(x, y, &piece, room, style);
+                    taken.extend((x..end).map(|c| (c, y)));
+                }
             }
         }
+        (taken, dropped)
     }
 
     /// The figure's legend, a line an entry.
@@ -341,29 +365,26 @@ impl<'a> Plot<'a> {
 
     /// The legend in its corner, one entry a line; on one line when that does not fit; not at
     /// all when neither does.
-    fn draw_legend(&self, l: &PlotLayout, buf: &mut Buffer) {
-        let legend = self.legend_lines();
+    /// It keeps off the cells of `labels` (tags and markers' texts) where a corner allows.
+    fn draw_legend(
+        &self,
+        l: &PlotLayout,
+        (labels, dropped): (&[(u16, u16)], Vec<Line<'static>>),
+        buf: &mut Buffer,
+    ) {
         let p = l.plot;
         // bottom legends keep clear of the lowest row, where curves often run along zero
         let room = p.height.saturating_sub(2);
-        let width = legend.iter().map(Line::width).max().unwrap_or(0) as u16;
-        // a legend may take half the plot's rows and half its width
-        let fits = |rows: u16, w: u16| rows <= room && 2 * rows <= p.height && 2 * w <= p.width;
-        let lines = if fits(legend.len() as u16, width) {
-            legend
-        } else {
-            let mut spans = Vec::new();
-            for (i, line) in legend.iter().enumerate() {
-                if i > 0 {
-                    spans.push(Span::raw("  "));
-                }
-                spans.extend(line.spans.iter().cloned());
-            }
-            let one = Line::from(spans);
-            if !fits(1, one.width() as u16) {
-                return;
-            }
-            vec![one]
+        // a legend may take half the plot's rows and half its width; value labels that found
+        // no place beside their points (alone, when the whole legend has no room) its width
+        let half = |rows: u16, w: u16| rows <= room && 2 * rows <= p.height && 2 * w <= p.width;
+        let whole = |rows: u16, w: u16| rows <= room && w + 2 <= p.width;
+        let mut legend = self.legend_lines();
+        legend.extend(dropped.iter().cloned());
+        let Some(lines) =
+            stacked_or_in_one(legend, &half).or_else(|| stacked_or_in_one(dropped, &whole))
+        else {
+            return;
         };
         let width = lines.iter().map(Line::width).max().unwrap_or(0) as u16;
         let h = lines.len() as u16;
@@ -374,8 +395,12 @@ impl<'a> Plot<'a> {
             let y0 = if top { p.y } else { p.bottom() - 1 - h };
             (left, Rect::new(x - 1, y0, width + 2, h))
         };
-        // the corner where the legend covers the fewest drawn cells; the figure's on a tie
-        let covered = |r: Rect| r.positions().filter(|&q| buf[q].symbol() != " ").count();
+        // the corner where the legend covers no label and the fewest drawn cells; the
+        // figure's on a tie
+        let covered = |r: Rect| {
+            let over_labels = labels.iter().filter(|&&(x, y)| r.contains((x, y).into()));
+            1000 * over_labels.count() + r.positions().filter(|&q| buf[q].symbol() != " ").count()
+        };
         let preferred = self.figure.legend_corner;
         let corner = [
             preferred,
@@ -420,8 +445,8 @@ impl Widget for &Plot<'_> {
         self.draw_factors(area, &l, buf);
         self.draw_axes(&l, buf);
         self.draw_series(&l, buf);
-        self.draw_marks(&l, buf);
-        self.draw_legend(&l, buf);
+        let (labels, dropped) = self.draw_marks(&l, buf);
+        self.draw_legend(&l, (&labels, dropped), buf);
     }
 }
 
@@ -441,4 +466,70 @@ fn marker_text_at(text: &str, col: u16, (left, right): (u16, u16)) -> (u16, Stri
         }
         _ => (right.saturating_sub(w).max(left), text.to_string()),
     }
+}
+
+/// Where a marker's text goes, as pieces (x, y, text), clear of the `taken` cells: where
+/// [`marker_text_at`] puts it; else, for a labelled marker ("▲t_f 2.7 ms"), its glyph on the
+/// point and the label on the row above or below; else the glyph alone. A marker without a
+/// label ("S", "◆") whose cell is taken moves right, so both show.
+fn marker_place(
+    text: &str,
+    (col, row): (u16, u16),
+    (left, right, top, bottom): (u16, u16, u16, u16),
+    taken: &[(u16, u16)],
+) -> Vec<(u16, u16, String)> {
+    let clear = |x: u16, y: u16, t: &str| {
+        let w = t.chars().count() as u16;
+        x >= left && x + w <= right && (x..x + w).all(|c| !taken.contains(&(c, y)))
+    };
+    let mut chars = text.chars();
+    let glyph = chars.next().unwrap_or('●');
+    let label = chars.as_str();
+    if !matches!(glyph, '●' | '▲' | '◆') || label.is_empty() {
+        let mut x = col;
+        while taken.contains(&(x, row)) && x + 1 < right {
+            x += 1;
+        }
+        let (x, t) = marker_text_at(text, x, (left, right));
+        return vec![(x, row, t)];
+    }
+    let (x, t) = marker_text_at(text, col, (left, right));
+    if clear(x, row, &t) {
+        return vec![(x, row, t)];
+    }
+    let g = glyph.to_string();
+    let w = label.chars().count() as u16;
+    for y in [row.checked_sub(1), Some(row + 1)].into_iter().flatten() {
+        if y < top || y >= bottom {
+            continue;
+        }
+        let starts = [col, (col + 1).saturating_sub(w)];
+        if let Some(&x) = starts.iter().find(|&&x| clear(x, y, label)) {
+            return vec![(col, row, g), (x, y, label.to_string())];
+        }
+    }
+    vec![(col, row, g)]
+}
+
+/// `lines` one under the other when they fit, else on one line when that fits.
+fn stacked_or_in_one(
+    lines: Vec<Line<'static>>,
+    fits: &dyn Fn(u16, u16) -> bool,
+) -> Option<Vec<Line<'static>>> {
+    if lines.is_empty() {
+        return None;
+    }
+    let width = lines.iter().map(Line::width).max().unwrap_or(0) as u16;
+    if fits(lines.len() as u16, width) {
+        return Some(lines);
+    }
+    let mut spans = Vec::new();
+    for (i, line) in lines.iter().enumerate() {
+        if i > 0 {
+            spans.push(Span::raw("  "));
+        }
+        spans.extend(line.spans.iter().cloned());
+    }
+    let one = Line::from(spans);
+    fits(1, one.width() as u16).then(|| vec![one])
 }
