@@ -7,6 +7,7 @@ pub mod confirm;
 pub mod form;
 pub mod help;
 pub mod input;
+pub mod marks;
 pub mod picker;
 pub mod pins;
 pub mod plot;
