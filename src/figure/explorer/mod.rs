@@ -278,7 +278,20 @@ fn zeta_figure(chart: Chart, scene: &Scene) -> Figure {
             lambda_zeta_text(&scene.ball.params),
             short(y, 3)
         );
-        fig.insert_before_measured(run_marker(label, (scene.ball.params.normalized().zeta, y)));
+        let mut marker = run_marker(label, (scene.ball.params.normalized().zeta, y));
+        // the curves are the linear law's without flattening: a run under another law, or
+        // one that flattened, lies off them and says so, hollow (issue 29, item 11)
+        let flattened = r.permanent_indentation > 0.0;
+        if scene.ball.law != ContactLaw::Linear || flattened {
+            let why = if flattened {
+                "flattened".to_string()
+            } else {
+                format!("{} law", scene.ball.law)
+            };
+            let key = format!("this run: {why}, off curves");
+            marker.look = Look::new(Tone::Highlight, Some(&key), Some("◇"));
+        }
+        fig.insert_before_measured(marker);
     }
     fig
 }

@@ -128,3 +128,43 @@ fn no_color_cor_zeta_lines_each_have_their_own_glyph() {
         }
     }
 }
+
+#[test]
+fn a_run_off_the_linear_curves_is_drawn_hollow_and_says_so() {
+    // the COR–ζ curves are the linear law's without flattening: a Hertz run's ◆ sat at its
+    // own e, off every curve, as if on them (issue 29, item 11)
+    let p = &Preset::embedded()[0];
+    for (law, glyph) in [(ContactLaw::Linear, "◆"), (ContactLaw::Hertz, "◇")] {
+        let run = simulate(&p.params(), law, &SolveOptions::default()).unwrap();
+        let lambda = p.params().normalized().lambda;
+        let points = cor_vs_zeta(&[lambda], &log_space(1e-2, 1e2, 21), ContactLaw::Linear).unwrap();
+        let mut b = ball(p);
+        b.law = law;
+        let scene = Scene {
+            ball: b.clone(),
+            balls: vec![b],
+            run: Some(&run),
+            references: Vec::new(),
+            zeta: Some(ZetaSweep {
+                lambda,
+                points: &points,
+            }),
+            speed: None,
+            speed_pending: None,
+            pinned: Vec::new(),
+            measured: &[],
+            models: None,
+            models_pending: false,
+        };
+        let fig = figure(Chart::CorZeta, &scene);
+        let marker = fig.series.iter().find(|s| s.id == "this run").unwrap();
+        assert_eq!(marker.look.text.as_deref(), Some(glyph), "{law}");
+        let off = marker
+            .look
+            .key
+            .as_deref()
+            .unwrap()
+            .contains("off curves");
+        assert_eq!(off, law != ContactLaw::Linear, "{law}");
+    }
+}
