@@ -1,5 +1,6 @@
-//! This run's labelled results on the force–time chart (screen and SVG): the peak force and
-//! the contact time, each a marker with its value.
+//! This run's labelled results (screen and SVG): on the force–time chart the peak force and
+//! the contact time, on the hysteresis chart the energy the open loop leaves in the spring,
+//! each a marker with its value.
 
 use crate::figure::{Kind, Look, Marker, Series, Style, Tone};
 use crate::solver::ImpactResponse;
@@ -38,6 +39,23 @@ pub fn result_labels(run: &ImpactResponse) -> Vec<Series> {
         ));
     }
     out
+}
+
+/// Where the ball's α path ends open on the hysteresis chart, the energy still in the recoil
+/// spring when the ball leaves (the loop does not close: "spring left 19.42 mJ", issue 29
+/// item 11); nothing when it holds less than 0.1 % of the impact's energy.
+pub fn open_loop_label(run: &ImpactResponse) -> Option<Series> {
+    let e = run.energy.as_ref()?;
+    (e.spring > 1e-3 * e.initial_kinetic).then_some(())?;
+    let alpha = *run.history.displacement.last()?;
+    let text = format!("spring left {} mJ", short(e.spring * 1e3, 4));
+    Some(label_series(
+        &format!("energy in the recoil spring at separation ({text})"),
+        "model spring_energy_left",
+        Marker::Circle,
+        (alpha, 0.0),
+        &text,
+    ))
 }
 
 fn label_series(label: &str, id: &str, m: Marker, at: (f64, f64), text: &str) -> Series {

@@ -182,6 +182,8 @@ fn history_figure(chart: Chart, scene: &Scene) -> Figure {
         for s in labels::result_labels(run) {
             fig.insert_before_measured(s);
         }
+    } else if let Some(s) = labels::open_loop_label(run) {
+        fig.insert_before_measured(s);
     }
     fig
 }

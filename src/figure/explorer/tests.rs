@@ -159,12 +159,48 @@ fn a_run_off_the_linear_curves_is_drawn_hollow_and_says_so() {
         let fig = figure(Chart::CorZeta, &scene);
         let marker = fig.series.iter().find(|s| s.id == "this run").unwrap();
         assert_eq!(marker.look.text.as_deref(), Some(glyph), "{law}");
-        let off = marker
-            .look
-            .key
-            .as_deref()
-            .unwrap()
-            .contains("off curves");
+        let off = marker.look.key.as_deref().unwrap().contains("off curves");
         assert_eq!(off, law != ContactLaw::Linear, "{law}");
     }
+}
+
+#[test]
+fn the_open_hysteresis_loop_says_what_the_spring_keeps() {
+    // the ball's α path ends open at F = 0: the recoil spring still holds energy (19.42 mJ
+    // for the superball, the readout's "spring"); unexplained before (issue 29, item 11)
+    let p = &Preset::embedded()[0];
+    let options = SolveOptions {
+        energy: true,
+        ..SolveOptions::default().with_samples(200)
+    };
+    let run = simulate(&p.params(), p.law, &options).unwrap();
+    let scene = Scene {
+        ball: ball(p),
+        balls: vec![ball(p)],
+        run: Some(&run),
+        references: Vec::new(),
+        zeta: None,
+        speed: None,
+        speed_pending: None,
+        pinned: Vec::new(),
+        measured: &[],
+        models: None,
+        models_pending: false,
+    };
+    let fig = figure(Chart::Hysteresis, &scene);
+    let label = fig
+        .series
+        .iter()
+        .find(|s| s.id == "model spring_energy_left")
+        .expect("the open loop's label");
+    let spring = run.energy.unwrap().spring;
+    assert_eq!(
+        label.look.text.as_deref(),
+        Some(format!("●spring left {} mJ", crate::text::short(spring * 1e3, 4)).as_str())
+    );
+    assert_eq!(
+        label.points,
+        [(*run.history.displacement.last().unwrap(), 0.0)]
+    );
+    assert!(label.look.text.as_deref().unwrap().contains("19.42"));
 }
