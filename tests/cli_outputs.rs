@@ -189,3 +189,52 @@ fn reproduce_refuses_a_dangling_link() {
     assert_eq!(code, 1, "{err}");
     assert_eq!(names(d), ["figs"]);
 }
+
+/// 20 real processes saving one preset name at once, in one config folder: their exit codes and
+/// stderr lines.
+fn save_race(dir: &Path, name: &str, force: bool) -> Vec<(i32, String)> {
+    let children: Vec<_> = (0..20)
+        .map(|_| {
+            let mut args = vec!["fit", "--cor", "0.8", "--save", name];
+            args.extend(force.then_some("--force"));
+            Command::new(env!("CARGO_BIN_EXE_bouncelab"))
+                .args(&args)
+                .env("XDG_CONFIG_HOME", dir)
+                .env("HOME", dir)
+                .stdin(Stdio::null())
+                .stdout(Stdio::null())
+                .stderr(Stdio::piped())
+                .spawn()
+                .unwrap()
+        })
+        .collect();
+    children
+        .into_iter()
+        .map(|c| {
+            let o = c.wait_with_output().unwrap();
+            let err = String::from_utf8(o.stderr).unwrap();
+            (o.status.code().expect("exited"), err)
+        })
+        .collect()
+}
+
+/// With `--force` every one of 20 concurrent saves of one name succeeds (the last wins); without
+/// it one succeeds and the others exit 2 because the preset exists, never 1 "File exists".
+#[test]
+fn concurrent_saves_of_one_name() {
+    let d = tempfile::tempdir().unwrap();
+    for (code, err) in save_race(d.path(), "readers", true) {
+        assert_eq!(code, 0, "{err}");
+    }
+    let folder = presets(d.path());
+    assert_eq!(names(&folder), ["readers.toml"], "one preset, no temporary");
+    let results = save_race(d.path(), "racers", false);
+    let won = results.iter().filter(|r| r.0 == 0).count();
+    assert_eq!(won, 1, "{results:?}");
+    for (code, err) in results.iter().filter(|r| r.0 != 0) {
+        assert_eq!(*code, 2, "{err}");
+        assert!(err.contains("exists") && err.contains("--force"), "{err}");
+        assert!(!err.contains("os error"), "{err}");
+    }
+    assert_eq!(names(&folder), ["racers.toml", "readers.toml"]);
+}
