@@ -141,7 +141,12 @@ fn preset(
     let single = (data.trace.is_none() && data.points.len() == 1).then(|| data.points[0].cor);
     Preset {
         name: name.into(),
-        description: format!("fitted to {} ({}) on {when}", data.label, data.kind),
+        // a description holds no control character (preset::check): a file name's are shown
+        description: format!(
+            "fitted to {} ({}) on {when}",
+            crate::sanitize::line(&data.label),
+            data.kind
+        ),
         law: ball.law,
         parameters: ParamSource::Adopted,
         measured: Measured {
