@@ -20,7 +20,7 @@ pub enum Refused {
 
 /// The number `text` (trimmed) holds, by the rules of this module: one reader for the command
 /// line, the explorer and measured-data files (`measured::table`), so that `1e-400` is refused
-/// alike everywhere (tests/measured_bad_files.rs, `numbers_in_files_are_read_as_arguments_are`).
+/// alike everywhere (tests/measured_readers.rs, `numbers_in_files_are_read_as_arguments_are`).
 pub fn read(text: &str) -> Result<f64, Refused> {
     let t = text.trim();
     let x: f64 = t.parse().map_err(|_| Refused::NotANumber)?;
