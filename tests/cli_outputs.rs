@@ -238,3 +238,30 @@ fn concurrent_saves_of_one_name() {
     }
     assert_eq!(names(&folder), ["racers.toml", "readers.toml"]);
 }
+
+/// A reader that went away (`… | head`) is no failure: the files are published and the command
+/// exits 0, as for any closed pipe.
+#[test]
+fn a_closed_stdout_still_publishes() {
+    let d = tempfile::tempdir().unwrap();
+    fs::write(d.path().join("cor.csv"), COR).unwrap();
+    for args in [
+        &["figure", "force-time", "--out", "a.svg"][..],
+        &["fit", "--cor-table", "cor.csv", "--plot", "p.svg"],
+    ] {
+        let (reader, writer) = std::io::pipe().unwrap();
+        drop(reader);
+        let o = Command::new(env!("CARGO_BIN_EXE_bouncelab"))
+            .args(args)
+            .current_dir(d.path())
+            .env("XDG_CONFIG_HOME", d.path())
+            .stdin(Stdio::null())
+            .stdout(Stdio::from(writer))
+            .stderr(Stdio::piped())
+            .output()
+            .unwrap();
+        let err = String::from_utf8(o.stderr).unwrap();
+        assert_eq!(o.status.code(), Some(0), "{args:?}: {err}");
+    }
+    assert_eq!(names(d.path()), ["a.svg", "cor.csv", "p.svg"]);
+}

@@ -81,7 +81,9 @@ pub fn commit(files: Outputs) -> anyhow::Result<Vec<PathBuf>> {
 /// The report on stdout first, then the files: a stdout that cannot take the report (full, an
 /// I/O error) fails the command with nothing published. A reader that went away (a closed
 /// pipe, `| head`) is no failure: the files are published and the command ends as for any
-/// closed pipe (exit 0).
+/// closed pipe (exit 0; `a_closed_stdout_still_publishes`). A report that names the files
+/// (`figure`, `reproduce`) so names them just before they are published: a publication that
+/// still fails (a file that appeared meanwhile) ends in its error line after it.
 pub fn report_then_commit(
     out: &mut dyn Write,
     report: &[u8],
