@@ -67,6 +67,13 @@ fn errors_keep_their_place_with_every_line_end() {
         &["fit", "--force-time", "t.csv"],
         &["t.csv:1:8: unknown column 'colour'"],
     );
+    // an invisible character in a name is shown, so the user sees why `force` is unknown
+    bad(
+        "t.csv",
+        "time_s,force\u{200b}\n0,1\n".as_bytes(),
+        &["fit", "--force-time", "t.csv"],
+        &["t.csv:1:8: unknown column 'force\\u{200b}'"],
+    );
 }
 
 /// `1e-400` rounds to 0: refused in a file as it is as an argument, never read as 0.
