@@ -171,6 +171,26 @@ impl Outputs {
     }
 }
 
+/// Whether a file can be staged for `path` (its folder exists and takes a new file): a
+/// temporary of the staging's own name made and removed at once, so that a command refuses a
+/// read-only folder before its work, not after it (`cli::outputs::check`). A full disk shows
+/// only when the staging writes.
+pub fn probe(path: &Path) -> Result<(), OutputError> {
+    let name = path.file_name().unwrap_or(OsStr::new("output"));
+    let prefix = format!(".{}.{}-", name.to_string_lossy(), std::process::id());
+    tempfile::Builder::new()
+        .prefix(&prefix)
+        .suffix(".tmp")
+        .rand_bytes(8)
+        .tempfile_in(folder(path))
+        .map(drop)
+        .map_err(|e| OutputError {
+            path: path.to_path_buf(),
+            error: io::Error::new(e.kind(), without_path(&e)),
+            exists: false,
+        })
+}
+
 /// Publish `tmp` as `path`, which must not exist (checked in the same step). Where the file
 /// system has no hard links the no-clobber rename may be refused; then [`claim_then_rename`].
 fn persist_new(tmp: NamedTempFile, path: &Path) -> Result<(), tempfile::PersistError> {

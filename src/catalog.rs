@@ -180,6 +180,19 @@ fn describe_io(e: &std::io::Error) -> String {
 #[derive(Debug, Clone, PartialEq)]
 pub struct Catalog {
     entries: Vec<Entry>,
+    /// `*.toml` entries of the presets folder that are symbolic links leading to no file
+    /// (dangling or looping): skipped, and said so by the caller ([`Catalog::skipped`]).
+    skipped: Vec<Skipped>,
+}
+
+/// A `*.toml` name in the presets folder that was not read, and why ("a symbolic link to a
+/// missing file", "a symbolic link that cannot be followed: …").
+#[derive(Debug, Clone, PartialEq)]
+pub struct Skipped {
+    /// The link, in the presets folder.
+    pub path: PathBuf,
+    /// Why it was not read.
+    pub why: String,
 }
 
 impl Catalog {
@@ -193,6 +206,7 @@ impl Catalog {
                     origin: Origin::Embedded,
                 })
                 .collect(),
+            skipped: Vec::new(),
         }
     }
 
@@ -200,10 +214,11 @@ impl Catalog {
     /// given on the command line; not counted twice if it is also in `dir`).
     pub fn load(dir: Option<&Path>, extra: Option<&Path>) -> Result<Catalog, CatalogError> {
         let mut catalog = Catalog::embedded();
-        let mut files = match dir {
+        let (mut files, skipped) = match dir {
             Some(d) => preset_files(d)?,
-            None => Vec::new(),
+            None => (Vec::new(), Vec::new()),
         };
+        catalog.skipped = skipped;
         if let Some(x) = extra {
             let same = |a: &Path| match (a.canonicalize(), x.canonicalize()) {
                 (Ok(a), Ok(b)) => a == b,
@@ -221,6 +236,12 @@ impl Catalog {
             })?;
         }
         Ok(catalog)
+    }
+
+    /// The presets folder's `*.toml` links that lead to no file, skipped by [`Catalog::load`]
+    /// (the command line warns once: tests/cli_small.rs, `dangling_links_are_named_once`).
+    pub fn skipped(&self) -> &[Skipped] {
+        &self.skipped
     }
 
     /// Add one entry; a name already taken is an error naming both origins.
@@ -267,14 +288,15 @@ impl Catalog {
 }
 
 /// The regular, non-hidden `*.toml` files of `dir`, sorted; none if `dir` does not exist.
-fn preset_files(dir: &Path) -> Result<Vec<PathBuf>, CatalogError> {
+/// Besides, the `*.toml` symbolic links that lead to no file (dangling, looping), skipped.
+fn preset_files(dir: &Path) -> Result<(Vec<PathBuf>, Vec<Skipped>), CatalogError> {
     let io = |path: &Path, e: std::io::Error| CatalogError::Io {
         path: path.to_path_buf(),
         message: describe_io(&e),
     };
     let read = match std::fs::read_dir(dir) {
         Ok(r) => r,
-        Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(Vec::new()),
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok((Vec::new(), Vec::new())),
         Err(e) if e.kind() == std::io::ErrorKind::NotADirectory => {
             return Err(CatalogError::Io {
                 path: dir.to_path_buf(),
@@ -283,7 +305,7 @@ fn preset_files(dir: &Path) -> Result<Vec<PathBuf>, CatalogError> {
         }
         Err(e) => return Err(io(dir, e)),
     };
-    let mut files = Vec::new();
+    let (mut files, mut skipped) = (Vec::new(), Vec::new());
     for entry in read {
         let entry = entry.map_err(|e| io(dir, e))?;
         let path = entry.path();
@@ -294,10 +316,22 @@ fn preset_files(dir: &Path) -> Result<Vec<PathBuf>, CatalogError> {
         }
         if path.is_file() {
             files.push(path);
+        } else if entry.file_type().is_ok_and(|t| t.is_symlink())
+            && let Err(e) = std::fs::metadata(&path)
+        {
+            let why = match e.kind() {
+                std::io::ErrorKind::NotFound => "a symbolic link to a missing file".into(),
+                _ => format!(
+                    "a symbolic link that cannot be followed: {}",
+                    describe_io(&e)
+                ),
+            };
+            skipped.push(Skipped { path, why });
         }
     }
     files.sort();
-    Ok(files)
+    skipped.sort_by(|a, b| a.path.cmp(&b.path));
+    Ok((files, skipped))
 }
 
 #[cfg(test)]

@@ -19,14 +19,33 @@
 use std::borrow::Cow;
 use std::io::{self, Write};
 
-/// Characters never written as themselves: C0 and C1 controls and DEL (`char::is_control`),
-/// the bidirectional overrides and isolates, which reorder what a terminal shows, and the two
-/// noncharacters XML 1.0 forbids.
+/// Characters never written as themselves: [`control`] characters and [`invisible`] ones.
 pub fn hostile(c: char) -> bool {
+    control(c) || invisible(c)
+}
+
+/// C0 and C1 controls and DEL (`char::is_control`), the bidirectional overrides and isolates,
+/// which reorder what a terminal shows, and the two noncharacters XML 1.0 forbids: refused in
+/// a preset's name and description at load (`preset::check`).
+pub fn control(c: char) -> bool {
     c.is_control()
         || matches!(
             c,
             '\u{202a}'..='\u{202e}' | '\u{2066}'..='\u{2069}' | '\u{fffe}' | '\u{ffff}'
+        )
+}
+
+/// The Unicode categories that print as nothing or as a line break: Cf, format characters
+/// (U+200B zero-width space, U+FEFF, the marks U+200E/F and U+061C, U+00AD soft hyphen, …),
+/// Zl (U+2028) and Zp (U+2029). `golf\u{200B}` lists as `golf`: refused in preset names at
+/// load (`preset::check`), shown as `\u{200b}` in every output
+/// (tests/escaping.rs, `invisible_characters_cannot_hide`).
+pub fn invisible(c: char) -> bool {
+    use unicode_properties::{GeneralCategory as G, UnicodeGeneralCategory};
+    !c.is_ascii()
+        && matches!(
+            c.general_category(),
+            G::Format | G::LineSeparator | G::ParagraphSeparator
         )
 }
 
@@ -59,11 +78,16 @@ pub fn text(s: &str) -> Cow<'_, str> {
     escaped(s, |c| c == '\n')
 }
 
-/// The first control character of `s` not in `allowed`, and its char index.
+/// The first [`control`] character of `s` not in `allowed`, and its char index.
 pub fn first_control(s: &str, allowed: &[char]) -> Option<(usize, char)> {
     s.chars()
         .enumerate()
-        .find(|&(_, c)| hostile(c) && !allowed.contains(&c))
+        .find(|&(_, c)| control(c) && !allowed.contains(&c))
+}
+
+/// The first [`invisible`] character of `s`, and its char index.
+pub fn first_invisible(s: &str) -> Option<(usize, char)> {
+    s.chars().enumerate().find(|&(_, c)| invisible(c))
 }
 
 /// A writer that passes text on with [`text`] applied. Bytes that are not UTF-8 pass
@@ -158,6 +182,21 @@ mod tests {
         assert!(matches!(text("plain λ ζ"), Cow::Borrowed(_)));
         assert_eq!(first_control("ab\u{7f}", &[]), Some((2, '\u{7f}')));
         assert_eq!(first_control("\ta\u{1b}", &['\t']), Some((2, '\u{1b}')));
+    }
+
+    #[test]
+    fn invisible_characters_become_visible() {
+        for c in [
+            '\u{200b}', '\u{feff}', '\u{200e}', '\u{200f}', '\u{61c}', '\u{2028}', '\u{2029}',
+        ] {
+            assert!(invisible(c) && hostile(c) && !control(c), "{c:?}");
+            let shown = line(&format!("golf{c}")).into_owned();
+            assert_eq!(shown, format!("golf\\u{{{:x}}}", c as u32));
+        }
+        // tag characters (Cf) outside the BMP too
+        assert!(invisible('\u{e0041}'));
+        assert!(!invisible('λ') && !invisible(' ') && !invisible('\u{a0}'));
+        assert_eq!(first_invisible("ab\u{200b}"), Some((2, '\u{200b}')));
     }
 
     #[test]

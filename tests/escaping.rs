@@ -128,3 +128,95 @@ fn json_stays_json_whatever_a_name_holds() {
         }
     }
 }
+
+/// The characters that print as nothing or as a line break (Unicode Cf, Zl, Zp).
+const INVISIBLE: [char; 8] = [
+    '\u{200b}',
+    '\u{feff}',
+    '\u{200e}',
+    '\u{200f}',
+    '\u{61c}',
+    '\u{2028}',
+    '\u{2029}',
+    '\u{e0041}',
+];
+
+/// `name = "golf\u200B"` loaded as a second preset that listed as "golf" (issue 28): a name
+/// holding a Cf, Zl or Zp character is refused at load (file:line:column), so no two names can
+/// differ by them alone; in a description or a path they are shown escaped, in text and JSON.
+#[test]
+fn invisible_characters_cannot_hide() {
+    for c in INVISIBLE {
+        let text = renamed(&format!("golf{c}"), "7.08e4");
+        let line = text[..text.find("name = ").unwrap()].matches('\n').count() + 1;
+        let home = config_home(&[("golf2.toml", &text)]);
+        let o = bl_in(home.path(), &["presets"]);
+        assert_bad(
+            &o,
+            &[
+                &format!("golf2.toml:{line}:1: name: holds an invisible character"),
+                &format!("U+{:04X}", c as u32),
+            ],
+        );
+    }
+    let described = renamed("described", "7.08e4").replace(
+        "description = \"",
+        "description = \"zero\u{200b}width\u{2028}and\u{feff} ",
+    );
+    let home = config_home(&[("described.toml", &described)]);
+    let out = ok_at(home.path(), &["presets"]);
+    assert!(
+        out.contains("zero\\u{200b}width\\u{2028}and\\u{feff}"),
+        "{out}"
+    );
+    assert!(!out.chars().any(|c| INVISIBLE.contains(&c)), "{out}");
+    let out = ok_at(home.path(), &["presets", "--format", "json"]);
+    assert!(!out.chars().any(|c| INVISIBLE.contains(&c)), "{out}");
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert!(
+        v.to_string()
+            .contains("zero\u{200b}width\u{2028}and\u{feff}")
+    );
+    // a path with a tag character (beyond the BMP): a surrogate pair in JSON
+    let dir = tempfile::tempdir().unwrap();
+    let name = "tag\u{e0041}.toml";
+    std::fs::write(dir.path().join(name), renamed("tagged", "7.08e4")).unwrap();
+    let out = ok_at(dir.path(), &["run", "--config", name, "--format", "json"]);
+    assert!(out.contains("\\udb40\\udc41"), "{out}");
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert!(v.to_string().contains(name), "{out}");
+}
+
+/// A data file whose name holds CR, LF, DEL, ESC or U+202E broke `fit --save` with a raw TOML
+/// error: the name goes into the preset's comments and description escaped, and the saved
+/// preset loads.
+#[test]
+fn fit_save_holds_any_data_file_name() {
+    let dir = tempfile::tempdir().unwrap();
+    for (i, bad) in [
+        "\r",
+        "\n",
+        "\u{7f}",
+        "\u{1b}[2J",
+        "\u{202e}",
+        "\"\\#",
+        "\u{200b}",
+    ]
+    .iter()
+    .enumerate()
+    {
+        let file = format!("cor{bad}.csv");
+        std::fs::write(dir.path().join(&file), "v0,cor\n2,0.8\n4,0.75\n6,0.7\n").unwrap();
+        let name = format!("fitted{i}");
+        let o = bl_at(dir.path(), &["fit", "--cor-table", &file, "--save", &name]);
+        assert_eq!(o.code, 0, "{file:?}: {}", o.stderr);
+        let out = ok_at(dir.path(), &["presets", "--format", "json"]);
+        let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+        let listed = v
+            .as_array()
+            .unwrap()
+            .iter()
+            .any(|p| p["name"] == name.as_str());
+        assert!(listed, "{file:?}: {out}");
+    }
+}

@@ -149,12 +149,34 @@ pub fn check_overrides(
 /// The catalog: embedded presets, the user's presets folder, and `config` if given.
 /// A `--config` file that cannot be read is named as such.
 pub fn load_catalog(config: Option<&Path>) -> anyhow::Result<Catalog> {
-    Catalog::load(catalog::user_presets_dir().as_deref(), config).map_err(|e| match e {
-        catalog::CatalogError::Io { path, message } if Some(path.as_path()) == config => {
-            anyhow::anyhow!("--config {}: {message}", path.display())
+    let cat =
+        Catalog::load(catalog::user_presets_dir().as_deref(), config).map_err(|e| match e {
+            catalog::CatalogError::Io { path, message } if Some(path.as_path()) == config => {
+                anyhow::anyhow!("--config {}: {message}", path.display())
+            }
+            e => e.into(),
+        })?;
+    warn_skipped(cat.skipped());
+    Ok(cat)
+}
+
+/// The presets folder's links that lead nowhere, each named once a run on stderr as a warning
+/// (a command may load the catalog more than once).
+fn warn_skipped(skipped: &[catalog::Skipped]) {
+    static WARNED: std::sync::Once = std::sync::Once::new();
+    if skipped.is_empty() {
+        return;
+    }
+    WARNED.call_once(|| {
+        for s in skipped {
+            let line = format!(
+                "bouncelab: warning: {} skipped: {}",
+                s.path.display(),
+                s.why
+            );
+            eprintln!("{}", crate::sanitize::line(&line));
         }
-        e => e.into(),
-    })
+    });
 }
 
 /// The preset entry chosen by `--preset` / `--config` (default: superball).

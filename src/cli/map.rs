@@ -124,6 +124,10 @@ pub fn run(a: &MapArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     let s = &ball.spec;
     let what = format!("{} λ values × {} ζ values", s.lambda.n, s.zeta.n);
     super::budget::check(s.cells(), s.law, &what)?;
+    // the target before the grid: the one check of every command (cli::outputs)
+    if let Some(path) = &a.out {
+        super::outputs::check(&[path.as_path()], a.force)?;
+    }
     let map = compute(ball.spec.clone());
     let text = match a.format {
         MapFormat::Csv => csv(&map, targets.as_ref()),

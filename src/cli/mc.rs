@@ -5,8 +5,8 @@
 
 use super::ball::BallArgs;
 use super::budget::Progress;
-use super::figure::{check_writable, commit};
 use super::output::{self, csv_row, given, human, num, table};
+use super::outputs::{check as check_writable, report_then_commit};
 use crate::analysis::mc::{
     Dist, McSpec, McStats, PROBS, Sampler, Samples, Stats, parse_vary, summary,
 };
@@ -99,7 +99,7 @@ pub fn run(a: &McArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     let sampler = ball.sampler(&spec);
     let samples = run_samples(&sampler, ball.law)?;
     let s = summary(&spec, &samples);
-    // both files or neither (crate::atomic), before the report
+    // both files or neither (crate::atomic), published once the report is out
     let mut files = Outputs::new(a.force);
     if let Some(p) = &a.csv_out {
         files.text(p, &samples_csv(&sampler, &samples))?;
@@ -108,11 +108,12 @@ pub fn run(a: &McArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         let fig = cor_histogram(&ball, &spec, &samples, &s.stats);
         files.text(p, &svg::render(&fig)?)?;
     }
-    commit(files)?;
+    let mut report = Vec::new();
     match a.format {
-        McFormat::Json => output::json(out, &McReport::new(&ball, &s))?,
-        McFormat::Text => text(out, &ball, &spec, s.no_rebound, &s.stats)?,
+        McFormat::Json => output::json(&mut report, &McReport::new(&ball, &s))?,
+        McFormat::Text => text(&mut report, &ball, &spec, s.no_rebound, &s.stats)?,
     }
+    report_then_commit(out, &report, files)?;
     Ok(())
 }
 

@@ -20,6 +20,7 @@ pub use crate::measured::file as measured_file;
 pub use crate::text::parse as number;
 pub mod mc;
 pub mod output;
+pub mod outputs;
 pub mod peers;
 pub mod presets;
 pub mod reproduce;

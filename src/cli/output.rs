@@ -25,7 +25,8 @@ pub fn json<T: Serialize>(out: &mut dyn Write, value: &T) -> io::Result<()> {
 }
 
 /// `value` as one line of JSON in which every character the terminal sanitizer would rewrite
-/// (DEL, C1 controls, the bidirectional overrides: `crate::sanitize`) is a JSON escape
+/// (DEL, C1 controls, the bidirectional overrides, the invisible format characters:
+/// `crate::sanitize`) is a JSON escape
 /// `\u007f` — serde_json escapes only C0 itself, and the sanitizer's visible `\u{7f}` is no
 /// JSON (tests/escaping.rs, `json_stays_json_whatever_a_name_holds`).
 pub fn json_string<T: Serialize>(value: &T) -> io::Result<String> {
@@ -49,8 +50,11 @@ impl serde_json::ser::Formatter for Escaping {
         for (i, c) in fragment.char_indices() {
             if crate::sanitize::hostile(c) {
                 writer.write_all(&fragment.as_bytes()[start..i])?;
-                // hostile characters are all in the Basic Multilingual Plane: one \uXXXX
-                write!(writer, "\\u{:04x}", c as u32)?;
+                // one \uXXXX per UTF-16 unit: a surrogate pair beyond the Basic Multilingual
+                // Plane (the Cf tag characters U+E0001…)
+                for unit in c.encode_utf16(&mut [0; 2]) {
+                    write!(writer, "\\u{:04x}", unit)?;
+                }
                 start = i + c.len_utf8();
             }
         }

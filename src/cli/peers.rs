@@ -62,8 +62,9 @@ pub struct PeersArgs {
     /// the pair unless --cor or another --target is given
     #[arg(long, value_name = "PRESET")]
     pub pair: Option<String>,
-    /// Output format
-    #[arg(long, value_enum, default_value = "text")]
+    /// Output format of the comparison (not with --export, whose CODE is the format; `--export
+    /// json` is the JSON one)
+    #[arg(long, value_enum, default_value = "text", conflicts_with = "export")]
     pub format: PeersFormat,
     /// Write the exactly calibrated parameters for a code instead of the comparison
     #[arg(long, value_enum, value_name = "CODE")]

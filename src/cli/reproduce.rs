@@ -7,8 +7,8 @@
 //! so a failure leaves no half-written set.
 
 use super::figure::{
-    HISTORY_SAMPLES, VELOCITY_POINTS, ZETA_POINTS, commit, embedded_ball, history_figures,
-    velocity_figure, zeta_figures,
+    HISTORY_SAMPLES, VELOCITY_POINTS, ZETA_POINTS, embedded_ball, history_figures, velocity_figure,
+    zeta_figures,
 };
 use super::output::given;
 use crate::atomic::Outputs;
@@ -18,7 +18,7 @@ use crate::preset::Preset;
 use clap::Args;
 use std::fs;
 use std::io::Write;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 /// Peak indentation, in units of z_p, of the extra force–displacement figure of each ball: far
 /// enough past flattening that the permanent indentation z_f is plain to see.
@@ -120,12 +120,31 @@ fn plan(presets: &[Preset]) -> anyhow::Result<Vec<Planned>> {
     Ok(out)
 }
 
+/// `--out` must be a folder or nothing yet: a file, or a symbolic link that leads nowhere
+/// (dangling or looping), is refused naming it (exit 2), never met by "File exists" from
+/// creating the folder (tests/cli_outputs.rs, `reproduce_refuses_a_dangling_link`).
+fn check_folder(dir: &Path) -> anyhow::Result<()> {
+    let Ok(entry) = fs::symlink_metadata(dir) else {
+        return Ok(());
+    };
+    if entry.file_type().is_symlink() && !dir.exists() {
+        let to = fs::read_link(dir).map_or_else(|_| "?".into(), |t| t.display().to_string());
+        anyhow::bail!(
+            "--out {} is a symbolic link to {to}, which does not lead to a folder: remove it or \
+             give another --out",
+            dir.display()
+        );
+    }
+    if !dir.is_dir() {
+        anyhow::bail!("{} exists and is not a directory", dir.display());
+    }
+    Ok(())
+}
+
 pub fn run(a: &ReproduceArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     let presets = Preset::embedded();
     let dir = &a.out;
-    if dir.exists() && !dir.is_dir() {
-        anyhow::bail!("{} exists and is not a directory", dir.display());
-    }
+    check_folder(dir)?;
     let mut files: Vec<String> = stems(&presets)
         .iter()
         .flat_map(|s| [format!("{s}.svg"), format!("{s}.csv")])
@@ -174,17 +193,19 @@ pub fn run(a: &ReproduceArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     fs::create_dir_all(dir)
         .map_err(|e| anyhow::Error::new(e).context(format!("cannot create {}", dir.display())))?;
     // every file or none (crate::atomic); a folder this run created goes again on failure
+    // and none when stdout cannot take their names (cli::outputs)
     let mut files = Outputs::new(a.force);
+    let report: String = texts
+        .iter()
+        .map(|(name, _)| format!("{}\n", dir.join(name).display()))
+        .collect();
     let written = texts
         .iter()
         .try_for_each(|(name, text)| files.text(&dir.join(name), text))
         .map_err(anyhow::Error::new)
-        .and_then(|()| commit(files));
+        .and_then(|()| super::outputs::report_then_commit(out, report.as_bytes(), files));
     match written {
-        Ok(paths) => paths
-            .iter()
-            .try_for_each(|p| writeln!(out, "{}", p.display()))
-            .map_err(Into::into),
+        Ok(_) => Ok(()),
         Err(e) => {
             if created {
                 let _ = fs::remove_dir(dir);

@@ -7,8 +7,10 @@
 use super::MeasuredError;
 use super::table::{self, ColumnSpec};
 pub use crate::drop::{Air, Flight, G};
+use crate::model::params::{MEANINGFUL_MAX, MEANINGFUL_MIN};
 
-const SPECS: [ColumnSpec; 2] = [
+/// The columns of a drop test (also how `parse_any` tells one).
+pub(super) const SPECS: [ColumnSpec; 2] = [
     ColumnSpec {
         name: "drop height",
         aliases: &[("drop_height_m", 1.0), ("drop_height", 1.0)],
@@ -51,6 +53,14 @@ impl DropTest {
             if h <= 0.0 {
                 return Err(at(0, format!("drop height {h} m must be positive")));
             }
+            // heights in the range a measurement can have, as every measured quantity
+            // (`super::in_domain`): 1e-310 m is no drop, 1e300 m no rebound
+            if !(MEANINGFUL_MIN..=MEANINGFUL_MAX).contains(&h) {
+                return Err(at(0, out_of_range("drop height", h)));
+            }
+            if r > 0.0 && r < MEANINGFUL_MIN {
+                return Err(at(1, out_of_range("rebound height", r)));
+            }
             if !(0.0..=h).contains(&r) {
                 return Err(at(
                     1,
@@ -61,6 +71,15 @@ impl DropTest {
         }
         Ok(DropTest { drops })
     }
+}
+
+fn out_of_range(name: &str, v: f64) -> String {
+    format!(
+        "{name} {} m is out of the range a measurement can have ({} … {} m)",
+        crate::text::number(v),
+        crate::text::number(MEANINGFUL_MIN),
+        crate::text::number(MEANINGFUL_MAX)
+    )
 }
 
 #[cfg(test)]

@@ -8,6 +8,7 @@ mod drop;
 #[cfg(feature = "tui")]
 pub mod file;
 pub mod overlay;
+mod rows;
 mod table;
 mod trace;
 
@@ -148,19 +149,29 @@ const COR_SPECS: [ColumnSpec; 5] = [
     },
 ];
 
-/// A positive number, or an error at its cell.
-fn positive(
+/// A measured quantity in its domain, or an error at its cell naming it: positive (else "must
+/// be positive", as before) and within the physically meaningful range the model's own
+/// parameters keep (`model::params::check_positive`, 1e-15 … 1e15), or below `max` where the
+/// quantity has a tighter bound (a COR's standard deviation, at most 1). A value outside it is
+/// the file's fault, exit 2 at its place, not a fit with no starting point
+/// (tests/measured_readers.rs, `out_of_domain_numbers_are_named_at_their_cell`).
+fn in_domain(
     p: &table::Parsed,
     k: usize,
     row: usize,
     name: &str,
+    max: f64,
 ) -> Result<Option<f64>, MeasuredError> {
+    use crate::model::params::{MEANINGFUL_MAX, MEANINGFUL_MIN};
+    let at = |why: String| MeasuredError::at(p.lines[row], p.cell_columns[k][row], why);
     match p.columns[k][row] {
-        Some(v) if v <= 0.0 => Err(MeasuredError::at(
-            p.lines[row],
-            p.cell_columns[k][row],
-            format!("{name} {v} must be positive"),
-        )),
+        Some(v) if v <= 0.0 => Err(at(format!("{name} {v} must be positive"))),
+        Some(v) if !(MEANINGFUL_MIN..=max.min(MEANINGFUL_MAX)).contains(&v) => Err(at(format!(
+            "{name} {} is out of the range a measurement can have ({} … {})",
+            crate::text::number(v),
+            crate::text::number(MEANINGFUL_MIN),
+            crate::text::number(max.min(MEANINGFUL_MAX))
+        ))),
         v => Ok(v),
     }
 }
@@ -198,11 +209,11 @@ impl CorTable {
                 ));
             }
             points.push(CorPoint {
-                v0: positive(&p, 0, i, "impact speed")?.unwrap_or(f64::NAN),
+                v0: in_domain(&p, 0, i, "impact speed", f64::MAX)?.unwrap_or(f64::NAN),
                 cor,
-                cor_sd: positive(&p, 2, i, "COR standard deviation")?,
-                max_force: positive(&p, 3, i, "peak force")?,
-                contact_time: positive(&p, 4, i, "contact time")?,
+                cor_sd: in_domain(&p, 2, i, "COR standard deviation", 1.0)?,
+                max_force: in_domain(&p, 3, i, "peak force", f64::MAX)?,
+                contact_time: in_domain(&p, 4, i, "contact time", f64::MAX)?,
                 line: p.lines[i],
             });
         }
@@ -213,19 +224,26 @@ impl CorTable {
     }
 }
 
-/// Read measured data of whichever kind the header names: time and force columns make a
-/// trace, drop and rebound heights a drop test, anything else is read as a COR table.
+/// Read measured data of whichever kind the header names: the kind that knows the most of its
+/// column names (drop tests, then traces, first on a tie), a COR table when none knows any.
+/// `time_ms,forse_N` is so a trace whose reader blames `forse_N`, not a COR table that blames
+/// `time_ms` (tests/measured_readers.rs, `the_misspelt_column_is_blamed`).
 pub fn parse_any(text: &str) -> Result<Data, MeasuredError> {
     let names = table::header_names(text).unwrap_or_default();
-    let has = |list: &[&str]| names.iter().any(|n| list.contains(&n.as_str()));
-    if has(&[
-        "drop_height_m",
-        "drop_height",
-        "rebound_height_m",
-        "rebound_height",
-    ]) {
+    let known = |specs: &[ColumnSpec]| {
+        names
+            .iter()
+            .filter(|n| {
+                specs
+                    .iter()
+                    .any(|s| s.aliases.iter().any(|a| a.0 == n.as_str()))
+            })
+            .count()
+    };
+    let (drops, trace, cor) = (known(&drop::SPECS), known(&trace::SPECS), known(&COR_SPECS));
+    if drops > 0 && drops >= trace && drops >= cor {
         DropTest::parse(text).map(Data::Drop)
-    } else if has(&["force", "f", "force_n", "force_kn"]) {
+    } else if trace > 0 && trace >= cor {
         Trace::parse(text).map(Data::Trace)
     } else {
         CorTable::parse(text).map(Data::Cor)

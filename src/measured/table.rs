@@ -1,9 +1,13 @@
 //! A delimited text table as measured data comes: `#` comment lines and blank lines skipped, a
-//! header row naming the columns, then numbers. The separator is read off the header (tab,
-//! then `;`, then `,`); with `;` a decimal comma (`0,75`) is read as a decimal point. Errors
-//! carry the 1-based line and column of the cell at fault.
+//! header row naming the columns, then numbers. The rows are the `csv` crate's ([`rows`]:
+//! quoting, BOM, every line end); the separator is read off the header (tab, then `;`, then
+//! `,`); with `;` a decimal comma (`0,75`) is read as a decimal point. Errors carry the 1-based
+//! line and column of the cell at fault.
 
 use super::MeasuredError;
+use super::rows::{self, Cell, Row, Rows};
+use crate::text::parse;
+use std::borrow::Cow;
 
 /// Most data rows read: a million samples is far more than any force plate records in one
 /// impact, and bounds the memory a wrong file can take.
@@ -34,95 +38,65 @@ pub struct Parsed {
 /// Lowered header names of a table, or `None` when it has no header line (used to tell the
 /// kinds of data apart).
 pub fn header_names(text: &str) -> Option<Vec<String>> {
-    let (_, line) = content_lines(text).next()?;
-    let sep = separator(line);
-    Some(line.split(sep).map(|c| c.trim().to_lowercase()).collect())
-}
-
-fn content_lines(text: &str) -> impl Iterator<Item = (usize, &str)> {
-    text.lines()
-        .enumerate()
-        .map(|(i, l)| (i + 1, l))
-        .filter(|(_, l)| {
-            let t = l.trim();
-            !t.is_empty() && !t.starts_with('#')
-        })
-}
-
-fn separator(header: &str) -> char {
-    if header.contains('\t') {
-        '\t'
-    } else if header.contains(';') {
-        ';'
-    } else {
-        ','
-    }
-}
-
-/// Cells of one line with the 1-based character column each starts at.
-fn cells(line: &str, sep: char) -> Vec<(usize, &str)> {
-    let mut out = Vec::new();
-    let mut col = 1;
-    for cell in line.split(sep) {
-        let lead = cell.chars().take_while(|c| c.is_whitespace()).count();
-        out.push((col + lead, cell.trim()));
-        col += cell.chars().count() + 1;
-    }
-    out
+    let text = rows::normalized(text);
+    let header = Rows::new(&text, rows::separator(&text)).next()?.ok()?;
+    Some(header.cells.iter().map(|c| c.text.to_lowercase()).collect())
 }
 
 /// Read `text` against `specs`.
 pub fn read(text: &str, specs: &[ColumnSpec]) -> Result<Parsed, MeasuredError> {
-    let mut lines = content_lines(text);
-    let Some((hline, header)) = lines.next() else {
+    let text = rows::normalized(text);
+    let sep = rows::separator(&text);
+    let mut lines = Rows::new(&text, sep);
+    let Some(header) = lines.next().transpose()? else {
         return Err(MeasuredError::at(1, 1, "no data: the file is empty"));
     };
-    let sep = separator(header);
-    let map = header_map(hline, &cells(header, sep), specs)?;
+    let map = header_map(&header, specs)?;
     let mut parsed = Parsed {
         columns: vec![Vec::new(); specs.len()],
         lines: Vec::new(),
         cell_columns: vec![Vec::new(); specs.len()],
-        end_line: text.lines().count() + 1,
+        end_line: rows::line_count(&text) + 1,
     };
-    for (ln, line) in lines {
+    for row in lines {
+        let row = row?;
         if parsed.lines.len() == MAX_ROWS {
             return Err(MeasuredError::at(
-                ln,
+                row.line,
                 1,
                 format!("more than {MAX_ROWS} data rows: not one measurement"),
             ));
         }
-        let row = cells(line, sep);
-        if row.len() != map.len() {
+        if row.cells.len() != map.len() {
+            let last = row.cells.last();
             return Err(MeasuredError::at(
-                ln,
-                row.last().map_or(1, |c| c.0),
+                last.map_or(row.line, |c| c.line),
+                last.map_or(1, |c| c.column),
                 format!(
                     "{} fields, but the header names {} (separator '{}')",
-                    row.len(),
+                    row.cells.len(),
                     map.len(),
-                    sep.escape_default()
+                    char::from(sep).escape_default()
                 ),
             ));
         }
         let mut values = vec![(None, 0); specs.len()];
-        for ((col, cell), slot) in row.iter().zip(&map) {
+        for (cell, slot) in row.cells.iter().zip(&map) {
             let (k, factor) = *slot;
             values[k] = (
-                cell_value(ln, *col, cell, sep, &specs[k])?.map(|v| v * factor),
-                *col,
+                cell_value(cell, sep, &specs[k])?.map(|v| v * factor),
+                cell.column,
             );
         }
         for (k, (v, col)) in values.into_iter().enumerate() {
             parsed.columns[k].push(v);
             parsed.cell_columns[k].push(col);
         }
-        parsed.lines.push(ln);
+        parsed.lines.push(row.line);
     }
     if parsed.lines.is_empty() {
         return Err(MeasuredError::at(
-            hline + 1,
+            header.line + 1,
             1,
             "no data rows after the header",
         ));
@@ -131,24 +105,22 @@ pub fn read(text: &str, specs: &[ColumnSpec]) -> Result<Parsed, MeasuredError> {
 }
 
 /// Which spec (and factor) each header cell is; every required spec present once.
-fn header_map(
-    line: usize,
-    header: &[(usize, &str)],
-    specs: &[ColumnSpec],
-) -> Result<Vec<(usize, f64)>, MeasuredError> {
-    if let Some((col, cell)) = header.iter().find(|(_, c)| c.parse::<f64>().is_ok()) {
+fn header_map(header: &Row, specs: &[ColumnSpec]) -> Result<Vec<(usize, f64)>, MeasuredError> {
+    let line = header.line;
+    if let Some(cell) = header.cells.iter().find(|c| c.text.parse::<f64>().is_ok()) {
         return Err(MeasuredError::at(
-            line,
-            *col,
+            cell.line,
+            cell.column,
             format!(
-                "no header: '{cell}' is a number; the first line must name the columns ({})",
+                "no header: '{}' is a number; the first line must name the columns ({})",
+                escape(&cell.text),
                 expected(specs)
             ),
         ));
     }
     let mut map = Vec::new();
-    for (col, cell) in header {
-        let name = cell.to_lowercase();
+    for cell in &header.cells {
+        let name = cell.text.to_lowercase();
         let found = specs.iter().enumerate().find_map(|(k, s)| {
             s.aliases
                 .iter()
@@ -157,22 +129,22 @@ fn header_map(
         });
         let Some((k, f)) = found else {
             return Err(MeasuredError::at(
-                line,
-                *col,
+                cell.line,
+                cell.column,
                 format!(
                     "unknown column '{}' (expected {})",
-                    escape(cell),
+                    escape(&cell.text),
                     expected(specs)
                 ),
             ));
         };
         if map.iter().any(|&(j, _)| j == k) {
             return Err(MeasuredError::at(
-                line,
-                *col,
+                cell.line,
+                cell.column,
                 format!(
                     "column '{}' gives {} a second time",
-                    escape(cell),
+                    escape(&cell.text),
                     specs[k].name
                 ),
             ));
@@ -206,54 +178,38 @@ fn expected(specs: &[ColumnSpec]) -> String {
         .join(", ")
 }
 
-/// Control characters escaped so a message stays one harmless line.
+/// Hostile characters escaped visibly (`crate::sanitize::line`), at most 40 characters, so a
+/// message stays one harmless line.
 fn escape(s: &str) -> String {
-    s.chars()
-        .take(40)
-        .map(|c| {
-            if c.is_control() {
-                c.escape_default().to_string()
-            } else {
-                c.to_string()
-            }
-        })
-        .collect()
+    let cut: String = s.chars().take(40).collect();
+    crate::sanitize::line(&cut).into_owned()
 }
 
-fn cell_value(
-    line: usize,
-    col: usize,
-    cell: &str,
-    sep: char,
-    spec: &ColumnSpec,
-) -> Result<Option<f64>, MeasuredError> {
-    if cell.is_empty() {
+/// A cell's number in the unit of its column: read by the command line's own reader
+/// (`text::parse::read`, so `1e-400` is refused here as there), finite; empty only in an
+/// optional column.
+fn cell_value(cell: &Cell, sep: u8, spec: &ColumnSpec) -> Result<Option<f64>, MeasuredError> {
+    let at = |message: String| MeasuredError::at(cell.line, cell.column, message);
+    if cell.text.is_empty() {
         return if spec.required {
-            Err(MeasuredError::at(
-                line,
-                col,
-                format!("empty {} cell", spec.name),
-            ))
+            Err(at(format!("empty {} cell", spec.name)))
         } else {
             Ok(None)
         };
     }
-    let text = if sep == ';' && !cell.contains('.') {
-        cell.replacen(',', ".", 1)
+    // a decimal comma (0,75) where `;` separates the cells
+    let text = if sep == b';' && !cell.text.contains('.') {
+        Cow::Owned(cell.text.replacen(',', ".", 1))
     } else {
-        cell.to_string()
+        Cow::Borrowed(cell.text.as_str())
     };
-    match text.parse::<f64>() {
+    let shown = escape(&cell.text);
+    match parse::read(&text) {
         Ok(v) if v.is_finite() => Ok(Some(v)),
-        Ok(_) => Err(MeasuredError::at(
-            line,
-            col,
-            format!("{} '{}' is not a finite number", spec.name, escape(cell)),
-        )),
-        Err(_) => Err(MeasuredError::at(
-            line,
-            col,
-            format!("{} '{}' is not a number", spec.name, escape(cell)),
-        )),
+        Ok(_) => Err(at(format!(
+            "{} '{shown}' is not a finite number",
+            spec.name
+        ))),
+        Err(why) => Err(at(format!("{} {}", spec.name, parse::refusal(&shown, why)))),
     }
 }

@@ -5,7 +5,8 @@
 use super::MeasuredError;
 use super::table::{self, ColumnSpec};
 
-const SPECS: [ColumnSpec; 2] = [
+/// The columns of a trace (also how `parse_any` tells one).
+pub(super) const SPECS: [ColumnSpec; 2] = [
     ColumnSpec {
         name: "time",
         aliases: &[

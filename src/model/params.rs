@@ -317,9 +317,15 @@ impl ImpactParams {
         }
     }
 
-    /// The same ball with λ and ζ changed: K_r and c move, m and K_p stay (Eq. 24).
+    /// The same ball with λ and ζ changed: K_r and c move, m and K_p stay (Eq. 24). A λ within
+    /// [`LAMBDA_MAX`] reads back within it (K_r one ulp down where the product rounded above),
+    /// so that λ = 1e6 is not refused (`round_trips_stay_within_the_given_values`).
     pub fn with_lambda_zeta(mut self, lambda: f64, zeta: f64) -> Self {
-        self.k_r = lambda * self.k_p;
+        let mut k_r = lambda * self.k_p;
+        while k_r > 0.0 && k_r / self.k_p > lambda.max(LAMBDA_MAX) {
+            k_r = k_r.next_down();
+        }
+        self.k_r = k_r;
         self.damping = damping_for_zeta(self.mass, self.k_p, zeta);
         self
     }
@@ -332,7 +338,16 @@ pub fn damping_for_zeta(mass: f64, k_p: f64, zeta: f64) -> f64 {
     if zeta == 0.0 {
         return f64::INFINITY;
     }
-    (mass * k_p).sqrt() / (2.0 * zeta)
+    // a ζ within ZETA_MAX must read back from c (`normalized`) within it: `map --zeta …:1e6`
+    // on a golf ball gave c whose ζ was 1000000.0000000001 (issue 28); c moves up by an ulp or
+    // two until it does (`round_trips_stay_within_the_given_values`). Below the edge c is left
+    // as computed: ζ reads back to within an ulp or two either way
+    let root = (mass * k_p).sqrt();
+    let mut c = root / (2.0 * zeta);
+    while c.is_finite() && c > 0.0 && root / (2.0 * c) > zeta.max(ZETA_MAX) {
+        c = c.next_up();
+    }
+    c
 }
 
 /// Check a normalized pair before use (λ ≥ 0, ζ ≥ 0, both finite).
@@ -459,5 +474,38 @@ mod tests {
         assert_eq!(p.validate().unwrap_err().field, Field::ZpBar);
         p.v0 = 1.0;
         assert!(p.validate().is_ok());
+    }
+
+    /// λ and ζ given at the edge of their range (1e6) read back within it, on any ball, and
+    /// every λ, ζ to within a few ulps: a
+    /// golf ball's c for ζ = 1e6 read back as 1000000.0000000001 and `map --zeta …:1e6` was
+    /// refused (issue 28).
+    #[test]
+    fn round_trips_stay_within_the_given_values() {
+        let golf = crate::preset::Preset::embedded()
+            .into_iter()
+            .find(|p| p.name == "golf")
+            .unwrap();
+        let mut balls = vec![golf.params_from(golf.parameters)];
+        for i in 0..200 {
+            let x = 1.0 + 0.37 * i as f64;
+            balls.push(ImpactParams {
+                mass: 1e-3 * x,
+                k_p: 1e3 * x * x,
+                ..balls[0]
+            });
+        }
+        for b in balls {
+            let edge = b.with_lambda_zeta(LAMBDA_MAX, ZETA_MAX);
+            assert!(edge.validate().is_ok(), "{b:?}: {:?}", edge.normalized());
+            for (lambda, zeta) in [(LAMBDA_MAX, ZETA_MAX), (0.3, 0.7), (1e-6, 1e-4)] {
+                let n = b.with_lambda_zeta(lambda, zeta).normalized();
+                assert!((n.zeta - zeta).abs() <= 4.0 * f64::EPSILON * zeta, "{n:?}");
+                assert!(
+                    (n.lambda - lambda).abs() <= 4.0 * f64::EPSILON * lambda,
+                    "{n:?}"
+                );
+            }
+        }
     }
 }

@@ -59,6 +59,18 @@ fn text(p: &Preset) -> Result<(), Bad> {
             return Err(bad("", key, msg));
         }
     }
+    // a name is what presets are told apart by: nothing in it may print as nothing, or
+    // `golf\u{200B}` lists as a second "golf" (crate::sanitize::invisible; tests/escaping.rs,
+    // `invisible_characters_cannot_hide`); a description shows them escaped instead
+    if let Some((i, c)) = crate::sanitize::first_invisible(&p.name) {
+        let msg = format!(
+            "holds an invisible character, U+{:04X} (character {}): a name must print as it \
+             compares",
+            c as u32,
+            i + 1
+        );
+        return Err(bad("", "name", msg));
+    }
     if p.name.trim().is_empty() || p.name.chars().any(|c| c.is_whitespace() || c == '/') {
         return Err(bad(
             "",

@@ -33,14 +33,17 @@ fn opt(out: &mut String, key: &str, value: Option<f64>, note: &str) {
 }
 
 impl Preset {
-    /// The preset as TOML; `header` lines come first, each as a `#` comment. Every value is
+    /// The preset as TOML; `header` lines come first, each as a `#` comment (its hostile
+    /// characters shown escaped); every string value is the toml crate's. Every value is
     /// written, none is defaulted away, so `Preset::parse(&p.to_toml(..))` gives `p` back
     /// exactly. Numbers must be finite (the schema has no infinity): callers check
     /// [`Preset::parse`] on the result.
     pub fn to_toml(&self, header: &[String]) -> String {
         let mut out = String::new();
+        // a comment ends at a line break: whatever a header holds (a data file's name with CR,
+        // LF, ESC…) stays in its comment, shown as `\u{a}` (crate::sanitize)
         for h in header {
-            let _ = writeln!(out, "# {h}");
+            let _ = writeln!(out, "# {}", crate::sanitize::line(h));
         }
         line(&mut out, "name", string(&self.name), "");
         line(&mut out, "description", string(&self.description), "");

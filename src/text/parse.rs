@@ -9,21 +9,46 @@
 //!   field); the arguments that use this parser also set `allow_hyphen_values`, so clap does
 //!   not take `-inf` for an option.
 
-/// A value parser for clap: `#[arg(value_parser = number, allow_hyphen_values = true)]`.
-pub fn number(text: &str) -> Result<f64, String> {
+/// Why a text is not read as a number ([`read`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Refused {
+    /// Not a decimal literal (nor `inf`, `nan`).
+    NotANumber,
+    /// A literal that is not zero but rounds to zero (`1e-400`).
+    RoundsToZero,
+}
+
+/// The number `text` (trimmed) holds, by the rules of this module: one reader for the command
+/// line, the explorer and measured-data files (`measured::table`), so that `1e-400` is refused
+/// alike everywhere (tests/measured_readers.rs, `numbers_in_files_are_read_as_arguments_are`).
+pub fn read(text: &str) -> Result<f64, Refused> {
     let t = text.trim();
-    let x: f64 = t
-        .parse()
-        .map_err(|_| format!("'{}' is not a number", crate::sanitize::line(text)))?;
+    let x: f64 = t.parse().map_err(|_| Refused::NotANumber)?;
     if x == 0.0 && !x.is_nan() {
         if has_nonzero_digit(t) {
-            return Err(format!(
-                "{t} is too small: it rounds to 0 (numbers below about 1e-308 cannot be held)"
-            ));
+            return Err(Refused::RoundsToZero);
         }
         return Ok(0.0);
     }
     Ok(x)
+}
+
+/// What is wrong with `shown` (the text as the message shows it) when [`read`] refused it.
+pub fn refusal(shown: &str, why: Refused) -> String {
+    match why {
+        Refused::NotANumber => format!("'{shown}' is not a number"),
+        Refused::RoundsToZero => format!(
+            "{shown} is too small: it rounds to 0 (numbers below about 1e-308 cannot be held)"
+        ),
+    }
+}
+
+/// A value parser for clap: `#[arg(value_parser = number, allow_hyphen_values = true)]`.
+pub fn number(text: &str) -> Result<f64, String> {
+    read(text).map_err(|why| match why {
+        Refused::NotANumber => refusal(&crate::sanitize::line(text), why),
+        Refused::RoundsToZero => refusal(text.trim(), why),
+    })
 }
 
 /// Whether the mantissa of a decimal literal (before any exponent) has a digit other than 0.

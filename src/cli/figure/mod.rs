@@ -194,40 +194,9 @@ fn check_applicable(a: &FigureArgs) -> anyhow::Result<()> {
     Ok(())
 }
 
-/// Refuse what cannot or should not be written, before any work: an existing file (unless
-/// `force`), a directory, a missing parent folder.
-pub fn check_writable(paths: &[&Path], force: bool) -> anyhow::Result<()> {
-    // compared as absolute paths, so `a.svg` and `./a.svg` are one file
-    let same = |a: &Path, b: &Path| match (std::path::absolute(a), std::path::absolute(b)) {
-        (Ok(a), Ok(b)) => a == b,
-        _ => a == b,
-    };
-    for (i, p) in paths.iter().enumerate() {
-        if paths[..i].iter().any(|q| same(q, p)) {
-            anyhow::bail!(
-                "{} is given twice: --out and --csv-out must differ",
-                p.display()
-            );
-        }
-        if p.is_dir() {
-            anyhow::bail!("{} is a directory, not a file", p.display());
-        }
-        if p.exists() && !force {
-            anyhow::bail!("{} exists (use --force to overwrite it)", p.display());
-        }
-        let parent = p.parent().filter(|d| !d.as_os_str().is_empty());
-        if let Some(d) = parent
-            && !d.is_dir()
-        {
-            anyhow::bail!(
-                "cannot write {}: no such directory {}",
-                p.display(),
-                d.display()
-            );
-        }
-    }
-    Ok(())
-}
+/// The one check of every command's outputs (`cli::outputs`), under the name the commands
+/// that came first call it by.
+pub use super::outputs::{check as check_writable, commit};
 
 /// Write `text` to `path` atomically (a temporary file renamed into place, see
 /// [`crate::atomic`]); without `force` the file must not exist (checked again at the rename,
@@ -237,21 +206,6 @@ pub fn write_file(path: &Path, text: &str, force: bool) -> anyhow::Result<()> {
     files.text(path, text)?;
     commit(files)?;
     Ok(())
-}
-
-/// Publish staged files; an existing target is bad input (exit 2), any other failure I/O.
-pub fn commit(files: Outputs) -> anyhow::Result<Vec<PathBuf>> {
-    if super::budget::interrupted() {
-        // Ctrl-C during the work: the staged files go with `files`
-        return Err(super::budget::Interrupted.into());
-    }
-    files.commit().map_err(|e| {
-        if e.exists {
-            anyhow::anyhow!("{e}")
-        } else {
-            anyhow::Error::new(e)
-        }
-    })
 }
 
 /// An embedded preset on the chosen (or its own) parameter set.
@@ -380,14 +334,13 @@ pub fn run(a: &FigureArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     check_writable(&paths, a.force)?;
     let fig = build_all(a)?;
     let picture = svg::render(&fig)?;
-    // both files or neither (crate::atomic)
+    // both files or neither (crate::atomic), and none when stdout cannot take their names
     let mut files = Outputs::new(a.force);
     files.text(&a.out, &picture)?;
     if let Some(d) = &a.csv_out {
         files.text(d, &csv::to_string(&fig))?;
     }
-    for p in commit(files)? {
-        writeln!(out, "{}", p.display())?;
-    }
+    let report: String = paths.iter().map(|p| format!("{}\n", p.display())).collect();
+    super::outputs::report_then_commit(out, report.as_bytes(), files)?;
     Ok(())
 }

@@ -185,12 +185,15 @@ pub fn run(a: &FitArgs, out: &mut dyn Write) -> anyhow::Result<()> {
 }
 
 /// One COR: K_r by a root find (the original `fit`, its output unchanged).
-fn single(a: &FitArgs, cor: f64, out: &mut dyn Write) -> anyhow::Result<()> {
+fn single(a: &FitArgs, cor: f64, stdout: &mut dyn Write) -> anyhow::Result<()> {
     multi::check_outputs(a)?;
     let b = a.ball.resolve(a.v0)?;
     let f = b.fit_cor(cor)?;
     let p = &b.params;
     let r = FitReport::new(&b, cor, &f);
+    // the report first in memory: it goes out with the files, or not at all (cli::outputs)
+    let mut report = Vec::new();
+    let out = &mut report;
     match a.format {
         FitFormat::Json => output::json(out, &r)?,
         FitFormat::Text => {
@@ -220,5 +223,5 @@ fn single(a: &FitArgs, cor: f64, out: &mut dyn Write) -> anyhow::Result<()> {
         }
     }
     let fitted = crate::model::params::ImpactParams { k_r: f.k_r, ..*p };
-    multi::single_extras(a, &b, &fitted, cor, out)
+    multi::single_extras(a, &b, &fitted, cor, stdout, &report)
 }

@@ -3,10 +3,11 @@
 //! report as text or JSON, and the `--plot` and `--save` that go with every fit.
 
 use super::{FitArgs, FitFormat, Loaded, Source};
-use crate::analysis::fit::{FitData, MultiFitError, Param, fit};
+use crate::analysis::fit::{FitData, MultiFit, MultiFitError, Param, fit};
 use crate::api::Ball;
+use crate::atomic::Outputs;
 use crate::cli::measured_file as files;
-use crate::cli::output;
+use crate::cli::{output, outputs};
 use crate::measured::{Air, CorPoint};
 use crate::model::params::ImpactParams;
 use crate::solver::{SolveOptions, simulate};
@@ -177,23 +178,49 @@ pub fn run(
     let fitted = ImpactParams { v0, ..f.params };
     let r = simulate(&fitted, ball.law, &SolveOptions::default())?;
     let report = super::report::report(&ball, &data, &f, &fitted, &r);
+    let mut text = Vec::new();
     match a.format {
-        FitFormat::Json => output::json(out, &report)?,
-        FitFormat::Text => super::report::text(out, &ball, &data, &f, &report)?,
+        FitFormat::Json => output::json(&mut text, &report)?,
+        FitFormat::Text => super::report::text(&mut text, &ball, &data, &f, &report)?,
     }
-    refuse_unanswered(a, &f)?;
+    if !f.identified {
+        out.write_all(&text)?;
+        return refuse_unanswered(a, &f);
+    }
+    publish(a, out, &text, (&ball, &data, &f, &fitted))
+}
+
+/// The report, the `--plot` and the `--save` of a fit as one transaction
+/// (`cli::outputs`): the files staged, the report written, then the files published; a
+/// failure anywhere (a preset folder that takes no file, a full stdout) leaves none of them
+/// (tests/cli_outputs.rs, `fit_is_all_or_nothing`).
+fn publish(
+    a: &FitArgs,
+    out: &mut dyn Write,
+    report: &[u8],
+    (ball, data, f, fitted): (&Ball, &Loaded, &MultiFit, &ImpactParams),
+) -> anyhow::Result<()> {
+    let mut files = Outputs::new(a.force);
+    let mut notes = Vec::new();
     if let Some(p) = &a.plot {
-        let svg = super::plot::svg(&ball, &data, &f, &fitted)?;
-        crate::cli::figure::write_file(p, &svg, a.force)?;
-        note(a, out, &format!("plot: {}", p.display()))?;
+        files.text(p, &super::plot::svg(ball, data, f, fitted)?)?;
+        notes.push(format!("plot: {}", p.display()));
     }
+    let mut created = None;
     if let Some(name) = &a.save {
-        let path = super::save::save(name, a, &ball, &data, &f, &fitted)?;
-        note(
-            a,
-            out,
-            &format!("saved preset '{name}' to {}", path.display()),
-        )?;
+        let (path, folder) = super::save::stage(name, a, ball, data, f, fitted, &mut files)?;
+        notes.push(format!("saved preset '{name}' to {}", path.display()));
+        created = folder.map(|top| (top, path));
+    }
+    if let Err(e) = outputs::report_then_commit(out, report, files) {
+        if let Some((top, path)) = &created {
+            let inner = path.parent().unwrap_or(top);
+            super::save::remove_created(Some(top), inner);
+        }
+        return Err(e);
+    }
+    for line in notes {
+        note(a, out, &line)?;
     }
     Ok(())
 }
@@ -224,32 +251,21 @@ fn note(a: &FitArgs, out: &mut dyn Write, line: &str) -> anyhow::Result<()> {
     Ok(())
 }
 
-/// `--plot` and `--save` after the single-COR fit.
+/// The single-COR fit's report, `--plot` and `--save`, as one transaction (see [`publish`]).
 pub fn single_extras(
     a: &FitArgs,
     ball: &Ball,
     fitted: &ImpactParams,
     cor: f64,
     out: &mut dyn Write,
+    report: &[u8],
 ) -> anyhow::Result<()> {
     if a.plot.is_none() && a.save.is_none() {
+        out.write_all(report)?;
         return Ok(());
     }
     let data = load(a, &Source::Cor(cor), ball)?;
     let f = fit(fitted, ball.law, FitData::Cor(&data.points), &[Param::KR])
         .map_err(|e| fit_error(e, &data, &[Param::KR]))?;
-    if let Some(p) = &a.plot {
-        let svg = super::plot::svg(ball, &data, &f, fitted)?;
-        crate::cli::figure::write_file(p, &svg, a.force)?;
-        note(a, out, &format!("plot: {}", p.display()))?;
-    }
-    if let Some(name) = &a.save {
-        let path = super::save::save(name, a, ball, &data, &f, fitted)?;
-        note(
-            a,
-            out,
-            &format!("saved preset '{name}' to {}", path.display()),
-        )?;
-    }
-    Ok(())
+    publish(a, out, report, (ball, &data, &f, fitted))
 }

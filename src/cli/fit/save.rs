@@ -1,11 +1,12 @@
-//! `fit --save NAME`: the fitted ball as a user preset `<presets>/NAME.toml`, written
-//! atomically ([`crate::catalog::write`]) and never over an existing preset without
-//! `--force`. Its comments say what it was fitted to, when, and how well.
+//! `fit --save NAME`: the fitted ball as a user preset `<presets>/NAME.toml`, staged with the
+//! fit's other outputs and published with them ([`crate::cli::outputs`]), never over an
+//! existing preset without `--force`. Its comments say what it was fitted to, when, and how well.
 
 use super::FitArgs;
 use super::Loaded;
 use crate::analysis::fit::MultiFit;
 use crate::api::Ball;
+use crate::atomic::Outputs;
 use crate::catalog::{self, Catalog, Origin};
 use crate::model::params::ImpactParams;
 use crate::preset::{Adopted, FitTable, Measured, ParamSource, Preset};
@@ -43,6 +44,13 @@ pub fn check(name: &str, force: bool) -> anyhow::Result<()> {
             "preset '{name}' exists ({}): use --force to replace it",
             path.display()
         );
+    }
+    // a folder that takes no new file is found now, not after the fit (cli::outputs)
+    if let Some(dir) = path
+        .parent()
+        .and_then(|d| d.ancestors().find(|d| d.exists()))
+    {
+        crate::atomic::probe(&dir.join(path.file_name().unwrap_or_default()))?;
     }
     Ok(())
 }
@@ -133,7 +141,12 @@ fn preset(
     let single = (data.trace.is_none() && data.points.len() == 1).then(|| data.points[0].cor);
     Preset {
         name: name.into(),
-        description: format!("fitted to {} ({}) on {when}", data.label, data.kind),
+        // a description holds no control character (preset::check): a file name's are shown
+        description: format!(
+            "fitted to {} ({}) on {when}",
+            crate::sanitize::line(&data.label),
+            data.kind
+        ),
         law: ball.law,
         parameters: ParamSource::Adopted,
         measured: Measured {
@@ -192,15 +205,18 @@ fn fit_table(f: &MultiFit) -> Option<FitTable> {
     })
 }
 
-/// Write the preset; returns its path.
-pub fn save(
+/// The preset staged in `files`, to be published with the fit's other outputs
+/// (`cli::outputs`); returns its path and the presets folder when this call created it (to be
+/// removed again if nothing is published).
+pub fn stage(
     name: &str,
     a: &FitArgs,
     ball: &Ball,
     data: &Loaded,
     f: &MultiFit,
     p: &ImpactParams,
-) -> anyhow::Result<PathBuf> {
+    files: &mut Outputs,
+) -> anyhow::Result<(PathBuf, Option<PathBuf>)> {
     let base = crate::cli::ball::select(
         a.ball.choice.preset.as_deref(),
         a.ball.choice.config.as_deref(),
@@ -219,17 +235,36 @@ pub fn save(
         );
     }
     let folder = path.parent().unwrap_or(Path::new("."));
+    let created = first_missing(folder);
     std::fs::create_dir_all(folder).map_err(|e| {
         anyhow::Error::new(e).context(format!("cannot create {}", folder.display()))
     })?;
-    let written = if exists {
-        catalog::write::replace(&path, &text)
-    } else {
-        catalog::write::create_new(&path, &text)
+    // the TOML as built: its own quoting holds whatever a name or path contains
+    if let Err(e) = files.bytes(&path, text.as_bytes()) {
+        remove_created(created.as_deref(), folder);
+        return Err(e.into());
+    }
+    Ok((path, created))
+}
+
+/// The outermost folder of `dir` (itself or a parent) that does not exist yet.
+fn first_missing(dir: &Path) -> Option<PathBuf> {
+    dir.ancestors()
+        .take_while(|d| !d.as_os_str().is_empty() && !d.exists())
+        .last()
+        .map(Path::to_path_buf)
+}
+
+/// Remove the folders from `inner` up to `created` that this run made, while empty.
+pub fn remove_created(created: Option<&Path>, inner: &Path) {
+    let Some(top) = created else {
+        return;
     };
-    written
-        .map_err(|e| anyhow::Error::new(e).context(format!("cannot write {}", path.display())))?;
-    Ok(path)
+    for d in inner.ancestors() {
+        if std::fs::remove_dir(d).is_err() || d == top {
+            break;
+        }
+    }
 }
 
 #[cfg(test)]
