@@ -95,6 +95,63 @@ pub fn check(impacts: usize, law: ContactLaw, what: &str) -> Result<(), TooMuchW
     Ok(())
 }
 
+/// Long library work watched from outside (a fit's model runs): after each step it is told
+/// how many steps are done and answers whether to go on. The library does no I/O; the watcher
+/// draws the progress bar and reads Ctrl-C (`cli::budget`) or asks Python for a
+/// KeyboardInterrupt.
+pub trait Watch {
+    /// `done` steps are done; `false` stops the work (it then ends with an "interrupted"
+    /// error and no answer).
+    fn step(&self, done: u64) -> bool;
+}
+
+/// No one watching: the work always goes on.
+pub struct Unwatched;
+
+impl Watch for Unwatched {
+    fn step(&self, _done: u64) -> bool {
+        true
+    }
+}
+
+/// Model runs a multi-parameter fit may make at most: each start's Levenberg–Marquardt
+/// iterations (200, `fit::lm::Options`) each cost a trial run and a Jacobian (`free` + 1
+/// runs), for at most `starts` starts. A bound, not an estimate: fits converge in 5–30
+/// iterations (BENCHMARKS.md).
+pub fn fit_runs(free: usize, starts: usize) -> u64 {
+    starts as u64 * (1 + 200 * (free as u64 + 2))
+}
+
+/// Samples interpolated that cost about as much as one linear-law impact (≈ 1 µs: a few ns
+/// each, against the exact solver's microseconds, BENCHMARKS.md).
+pub const POINTS_PER_IMPACT: u64 = 200;
+
+/// Refuse a trace fit beyond the limit before it starts: at most [`fit_runs`] model runs, each
+/// one impact under `law` with `history` samples and an interpolation at `samples` times (the
+/// trace's bins, `fit::bins`), priced in linear-law impacts.
+pub fn check_trace_fit(
+    rows: usize,
+    samples: usize,
+    free: usize,
+    law: ContactLaw,
+) -> Result<(), TooMuchWork> {
+    let per_run = cost(law) + (samples as u64).div_ceil(POINTS_PER_IMPACT);
+    let runs = fit_runs(free, 4);
+    let work = runs.saturating_mul(per_run);
+    if work > LIMIT {
+        return Err(TooMuchWork {
+            what: format!(
+                "a fit of {free} parameters to {rows} rows in {samples} bins (up to {runs} \
+                 model runs)"
+            ),
+            impacts: runs as usize,
+            law,
+            work,
+        });
+    }
+    Ok(())
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -1,6 +1,7 @@
 //! Several parameters at once: restarts, the best minimum, and its uncertainty.
 
 use super::Param;
+use super::bins::Samples;
 use super::checks::{check_free, check_impulse, check_scale, too_few, verify_exact};
 use super::cor::CorProblem;
 use super::lm::{self, Best, Residuals, Solution};
@@ -8,7 +9,8 @@ use super::result::{Estimate, FitData, MultiFit, MultiFitError};
 use super::stats::{CONDITION_MAX, uncertainty};
 use super::trace::TraceProblem;
 use super::verdict::{self, judge};
-use crate::measured::CorPoint;
+use crate::analysis::work::{Unwatched, Watch, check_trace_fit};
+use crate::measured::{CorPoint, Trace, TraceSummary};
 use crate::model::contact::ContactLaw;
 use crate::model::params::ImpactParams;
 
@@ -19,31 +21,23 @@ pub fn fit(
     data: FitData,
     free: &[Param],
 ) -> Result<MultiFit, MultiFitError> {
+    fit_watched(base, law, data, free, &Unwatched)
+}
+
+/// [`fit`], each model run of a trace fit reported to `watch`, which may stop it
+/// ([`MultiFitError::Interrupted`]); a trace fit's work is checked against the work limit
+/// before it starts ([`crate::analysis::work::check_trace_fit`]).
+pub fn fit_watched(
+    base: &ImpactParams,
+    law: ContactLaw,
+    data: FitData,
+    free: &[Param],
+    watch: &dyn Watch,
+) -> Result<MultiFit, MultiFitError> {
     check_free(free)?;
     base.validate().map_err(MultiFitError::Params)?;
     match data {
-        FitData::Trace(trace) => {
-            let summary = trace.summary().map_err(MultiFitError::NoPulse)?;
-            too_few(trace.time.len(), free.len() + 2)?;
-            if !free.contains(&Param::V0) {
-                check_impulse(base, trace, &summary)?;
-            }
-            let p = TraceProblem::new(*base, law, free.to_vec(), trace, summary);
-            // a minimum at the noise floor needs no further start
-            let floor = 1.5 * summary.noise;
-            let sol =
-                best(&p, p.starts(), |x| p.bounds(x), floor).ok_or(MultiFitError::NoAnswer)?;
-            let model = p.model(&sol.sol.x).map(|m| m.0).unwrap_or_default();
-            let ball = p.ball(&sol.sol.x);
-            let rms = rms(&sol.sol.residuals);
-            let mut f = finish(ball, law, free, &sol, None, rms, model)?;
-            // the model's misses matter only above the noise's scale (a noise-free synthetic
-            // trace leaves rounding's systematic residuals)
-            let lack = verdict::runs_test(&sol.sol.residuals)
-                .filter(|_| rms > 1e-6 * summary.peak.abs().max(f64::MIN_POSITIVE));
-            judge(&mut f, lack);
-            Ok(f)
-        }
+        FitData::Trace(trace) => fit_trace(base, law, trace, free, watch, Samples::of),
         FitData::Cor(points) => {
             if free.contains(&Param::V0) {
                 return Err(MultiFitError::SpeedNotFree);
@@ -51,6 +45,46 @@ pub fn fit(
             fit_cor(base, law, points, free)
         }
     }
+}
+
+/// A force–time trace, compared with the model at the samples `choose` makes of it (rows or
+/// bins, [`Samples::of`]).
+pub(super) fn fit_trace(
+    base: &ImpactParams,
+    law: ContactLaw,
+    trace: &Trace,
+    free: &[Param],
+    watch: &dyn Watch,
+    choose: fn(&Trace, &TraceSummary) -> Samples,
+) -> Result<MultiFit, MultiFitError> {
+    let summary = trace.summary().map_err(MultiFitError::NoPulse)?;
+    too_few(trace.time.len(), free.len() + 2)?;
+    if !free.contains(&Param::V0) {
+        check_impulse(base, trace, &summary)?;
+    }
+    let samples = choose(trace, &summary);
+    let rows = trace.time.len();
+    check_trace_fit(rows, samples.len(), free.len(), law)?;
+    let p = TraceProblem::new(*base, law, free.to_vec(), trace, summary, samples, watch);
+    // a minimum at the noise floor needs no further start
+    let floor = 1.5 * summary.noise;
+    let sol = best(&p, p.starts(), |x| p.bounds(x), floor);
+    if p.stopped() {
+        return Err(MultiFitError::Interrupted);
+    }
+    let sol = sol.ok_or(MultiFitError::NoAnswer)?;
+    let model = p.model_at_rows(&sol.sol.x).unwrap_or_default();
+    let ball = p.ball(&sol.sol.x);
+    let rms = rms(&sol.sol.residuals);
+    let mut f = finish(ball, law, free, &sol, None, rms, model)?;
+    // the trace's rows, whether compared one by one or in bins
+    f.points = rows;
+    // the model's misses matter only above the noise's scale (a noise-free synthetic trace
+    // leaves rounding's systematic residuals)
+    let lack = verdict::runs_test(&sol.sol.residuals)
+        .filter(|_| rms > 1e-6 * summary.peak.abs().max(f64::MIN_POSITIVE));
+    judge(&mut f, lack);
+    Ok(f)
 }
 
 /// A COR table (with peak forces and contact times where given).
@@ -145,6 +179,9 @@ fn best<P: Residuals>(
     let mut best: Option<Best> = None;
     let mut iterations = 0;
     for (_, x0) in starts {
+        if p.stopped() {
+            return None;
+        }
         let (lo, hi) = bounds(&x0);
         let Some(s) = lm::minimize(p, &x0, &lo, &hi, lm::Options::default()) else {
             continue;
