@@ -6,7 +6,7 @@ use super::ball::{BallArgs, LawArg, Overrides, PresetChoice, Size};
 use super::output::num;
 
 use crate::map::csv::{csv, header};
-use crate::map::{Axis, Map, MapSpec, Param, Quantity, Scale, Targets, compute};
+use crate::map::{Axis, Map, MapSpec, Param, Quantity, Scale, Targets};
 use crate::model::contact::ContactLaw;
 use clap::{Args, ValueEnum};
 use serde::Serialize;
@@ -124,7 +124,7 @@ pub fn run(a: &MapArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     let s = &ball.spec;
     let what = format!("{} λ values × {} ζ values", s.lambda.n, s.zeta.n);
     super::budget::check(s.cells(), s.law, &what)?;
-    let map = compute(ball.spec.clone());
+    let map = super::budget::map(ball.spec.clone())?;
     let text = match a.format {
         MapFormat::Csv => csv(&map, targets.as_ref()),
         MapFormat::Json => json(&map, &ball, targets.as_ref())?,
