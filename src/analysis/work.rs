@@ -114,42 +114,66 @@ impl Watch for Unwatched {
     }
 }
 
-/// Model runs a multi-parameter fit may make at most: each start's Levenberg–Marquardt
-/// iterations (200, `fit::lm::Options`) each cost a trial run and a Jacobian (`free` + 1
-/// runs), for at most `starts` starts. A bound, not an estimate: fits converge in 5–30
-/// iterations (BENCHMARKS.md).
-pub fn fit_runs(free: usize, starts: usize) -> u64 {
-    starts as u64 * (1 + 200 * (free as u64 + 2))
+/// Impacts run between two looks of a [`Watch`] at a sweep: some 10 ms of work on one core
+/// (linear law ≈ 7 µs an impact, the others 40 times that).
+pub fn chunk(law: ContactLaw) -> usize {
+    (1_024 / cost(law)).max(1) as usize
 }
 
-/// Samples interpolated that cost about as much as one linear-law impact (≈ 1 µs: a few ns
-/// each, against the exact solver's microseconds, BENCHMARKS.md).
+/// Most Levenberg–Marquardt iterations a start of a fit takes (`fit::lm::Options`).
+pub const FIT_ITERATIONS: usize = 200;
+
+/// Fewest iterations worth a start: a fit whose work allows fewer is refused before it
+/// starts (fits converge in 5–30, BENCHMARKS.md).
+pub const FIT_MIN_ITERATIONS: usize = 10;
+
+/// Samples interpolated that cost about as much as one linear-law impact (a few ns each,
+/// against the exact solver's microseconds, BENCHMARKS.md).
 pub const POINTS_PER_IMPACT: u64 = 200;
 
-/// Refuse a trace fit beyond the limit before it starts: at most [`fit_runs`] model runs, each
-/// one impact under `law` with `history` samples and an interpolation at `samples` times (the
-/// trace's bins, `fit::bins`), priced in linear-law impacts.
-pub fn check_trace_fit(
-    rows: usize,
-    samples: usize,
-    free: usize,
+/// What one model run of a fit costs, in linear-law impacts: a trace fit's, one impact under
+/// `law` and an interpolation at `samples` times (its rows or bins, `fit::bins`); a COR
+/// table's, one impact a row (`samples` rows).
+pub fn fit_run_cost(trace: bool, samples: usize, law: ContactLaw) -> u64 {
+    if trace {
+        cost(law) + (samples as u64).div_ceil(POINTS_PER_IMPACT)
+    } else {
+        (samples as u64).saturating_mul(cost(law))
+    }
+}
+
+/// The iterations each start of a fit may take, so that its whole work stays within
+/// [`LIMIT`]: [`FIT_ITERATIONS`], fewer where a model run costs much (`run_cost`, from
+/// [`fit_run_cost`]); a refusal when fewer than [`FIT_MIN_ITERATIONS`] would be left. A start
+/// costs its ranking run, its first residuals and Jacobian (`vars` + 2 runs) and per
+/// iteration a trial and a Jacobian (`vars` + 2 runs: a trace's slope is one more).
+pub fn fit_iterations(
+    run_cost: u64,
+    vars: usize,
+    starts: usize,
     law: ContactLaw,
-) -> Result<(), TooMuchWork> {
-    let per_run = cost(law) + (samples as u64).div_ceil(POINTS_PER_IMPACT);
-    let runs = fit_runs(free, 4);
-    let work = runs.saturating_mul(per_run);
-    if work > LIMIT {
+    what: impl FnOnce() -> String,
+) -> Result<usize, TooMuchWork> {
+    let per_iteration = (vars as u64 + 2).saturating_mul(run_cost);
+    let first = (vars as u64 + 3).saturating_mul(run_cost);
+    let starts = starts.max(1) as u64;
+    let budget = LIMIT / starts;
+    let iterations = budget.saturating_sub(first) / per_iteration.max(1);
+    if iterations < FIT_MIN_ITERATIONS as u64 {
+        let least = first + FIT_MIN_ITERATIONS as u64 * per_iteration;
+        let runs = starts * (vars as u64 + 3 + FIT_MIN_ITERATIONS as u64 * (vars as u64 + 2));
         return Err(TooMuchWork {
             what: format!(
-                "a fit of {free} parameters to {rows} rows in {samples} bins (up to {runs} \
-                 model runs)"
+                "{} ({} starts of at least {FIT_MIN_ITERATIONS} iterations, {runs} model runs)",
+                what(),
+                starts
             ),
-            impacts: runs as usize,
+            impacts: (runs.saturating_mul(run_cost) / cost(law).max(1)) as usize,
             law,
-            work,
+            work: least.saturating_mul(starts),
         });
     }
-    Ok(())
+    Ok((iterations as usize).min(FIT_ITERATIONS))
 }
 
 #[cfg(test)]
@@ -182,5 +206,33 @@ mod tests {
         ));
         assert!(check_samples(25_000, ContactLaw::Hertz).is_ok());
         assert!(check_samples(25_001, ContactLaw::Hertz).is_err());
+    }
+
+    #[test]
+    fn a_fit_takes_fewer_iterations_where_runs_cost_much_and_is_refused_below_ten() {
+        // a 2 000-row trace: runs of 1 + 10, the full 200 iterations
+        let run = fit_run_cost(true, 2_000, ContactLaw::Linear);
+        assert_eq!(run, 11);
+        assert_eq!(
+            fit_iterations(run, 5, 4, ContactLaw::Linear, String::new),
+            Ok(200)
+        );
+        // 20 000 drop tests: a run is 20 000 impacts; even 10 iterations of 4 runs are too many
+        let run = fit_run_cost(false, 20_000, ContactLaw::Linear);
+        let e = fit_iterations(run, 2, 7, ContactLaw::Linear, || "20000 drops".into());
+        let e = e.unwrap_err();
+        assert!(e.work > LIMIT, "{e}");
+        assert!(
+            e.to_string()
+                .starts_with("too much work: 20000 drops (7 starts"),
+            "{e}"
+        );
+        // 300 COR points, 2 free: 1e6/7 per start, runs of 300 impacts, 5 to start and 4 an
+        // iteration: (142 857 − 1 500)/1 200 = 117 iterations
+        let run = fit_run_cost(false, 300, ContactLaw::Linear);
+        assert_eq!(
+            fit_iterations(run, 2, 7, ContactLaw::Linear, String::new),
+            Ok(117)
+        );
     }
 }

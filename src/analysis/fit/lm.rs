@@ -74,7 +74,7 @@ pub struct Options {
 impl Default for Options {
     fn default() -> Self {
         Options {
-            max_iterations: 200,
+            max_iterations: crate::analysis::work::FIT_ITERATIONS,
             ftol: 1e-9,
             xtol: 1e-8,
         }

@@ -9,7 +9,7 @@ use super::result::{Estimate, FitData, MultiFit, MultiFitError};
 use super::stats::{CONDITION_MAX, uncertainty};
 use super::trace::TraceProblem;
 use super::verdict::{self, judge};
-use crate::analysis::work::{Unwatched, Watch, check_trace_fit};
+use crate::analysis::work::{Unwatched, Watch, fit_iterations, fit_run_cost};
 use crate::measured::{CorPoint, Trace, TraceSummary};
 use crate::model::contact::ContactLaw;
 use crate::model::params::ImpactParams;
@@ -26,7 +26,7 @@ pub fn fit(
 
 /// [`fit`], each model run of a trace fit reported to `watch`, which may stop it
 /// ([`MultiFitError::Interrupted`]); a trace fit's work is checked against the work limit
-/// before it starts ([`crate::analysis::work::check_trace_fit`]).
+/// before it starts ([`crate::analysis::work::fit_iterations`]).
 pub fn fit_watched(
     base: &ImpactParams,
     law: ContactLaw,
@@ -64,11 +64,20 @@ pub(super) fn fit_trace(
     }
     let samples = choose(trace, &summary);
     let rows = trace.time.len();
-    check_trace_fit(rows, samples.len(), free.len(), law)?;
+    let bins = samples.len();
     let p = TraceProblem::new(*base, law, free.to_vec(), trace, summary, samples, watch);
+    let starts = p.starts();
+    let run = fit_run_cost(true, bins, law);
+    let what = || {
+        format!(
+            "a fit of {} parameters to {rows} rows ({bins} bins)",
+            free.len()
+        )
+    };
+    let iterations = fit_iterations(run, free.len() + 2, starts.len(), law, what)?;
     // a minimum at the noise floor needs no further start
     let floor = 1.5 * summary.noise;
-    let sol = best(&p, p.starts(), |x| p.bounds(x), floor);
+    let sol = best(&p, starts, |x| p.bounds(x), floor, iterations);
     if p.stopped() {
         return Err(MultiFitError::Interrupted);
     }
@@ -97,7 +106,19 @@ fn fit_cor(
     let p = CorProblem::new(*base, law, free.to_vec(), points);
     too_few(p.count(), free.len())?;
     check_scale(&p)?;
-    let mut sol = best(&p, p.starts(), |x| p.bounds(x), 0.0).ok_or(MultiFitError::NoAnswer)?;
+    let starts = p.starts();
+    let run = fit_run_cost(false, points.len(), law);
+    let what = || {
+        format!(
+            "a fit of {} parameters to {} rows",
+            free.len(),
+            points.len()
+        )
+    };
+    // (one start more: a table of mixed kinds is fitted again from the first minimum)
+    let iterations = fit_iterations(run, free.len(), starts.len() + 1, law, what)?;
+    let mut sol =
+        best(&p, starts, |x| p.bounds(x), 0.0, iterations).ok_or(MultiFitError::NoAnswer)?;
     let mut t_dof = None;
     if p.count() > points.len() {
         // mixed kinds: weigh each by its own scatter, then fit again from there
@@ -116,7 +137,13 @@ fn fit_cor(
                 t_dof = Some(t_dof.map_or(dof, |d: usize| d.min(dof)));
             }
         }
-        let again = best(&p, vec![sol.sol.x.clone()], |x| p.bounds(x), 0.0);
+        let again = best(
+            &p,
+            vec![sol.sol.x.clone()],
+            |x| p.bounds(x),
+            0.0,
+            iterations,
+        );
         let its = sol.sol.iterations;
         sol = again.ok_or(MultiFitError::NoAnswer)?;
         sol.sol.iterations += its;
@@ -163,13 +190,19 @@ fn finite(s: &Solution) -> bool {
 /// two starts have converged to the same lowest cost (to 1e-9) where the data pin every
 /// parameter: the restarts are there to escape a local minimum, and two ways into the same
 /// one make another unlikely. (A flat region, where a parameter has no effect, is not such a
-/// minimum: two starts in it would agree and stop the search too early.)
+/// minimum: two starts in it would agree and stop the search too early.) Each start takes at
+/// most `max_iterations` ([`crate::analysis::work::fit_iterations`]).
 fn best<P: Residuals>(
     p: &P,
     starts: Vec<Vec<f64>>,
     bounds: impl Fn(&[f64]) -> (Vec<f64>, Vec<f64>),
     floor: f64,
+    max_iterations: usize,
 ) -> Option<Best> {
+    let opts = lm::Options {
+        max_iterations,
+        ..lm::Options::default()
+    };
     // the most promising start first: one evaluation each
     let mut starts: Vec<(f64, Vec<f64>)> = starts
         .into_iter()
@@ -183,7 +216,7 @@ fn best<P: Residuals>(
             return None;
         }
         let (lo, hi) = bounds(&x0);
-        let Some(s) = lm::minimize(p, &x0, &lo, &hi, lm::Options::default()) else {
+        let Some(s) = lm::minimize(p, &x0, &lo, &hi, opts) else {
             continue;
         };
         iterations += s.iterations;
