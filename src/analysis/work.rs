@@ -127,16 +127,22 @@ pub const FIT_ITERATIONS: usize = 200;
 /// starts (fits converge in 5–30, BENCHMARKS.md).
 pub const FIT_MIN_ITERATIONS: usize = 10;
 
-/// Samples interpolated that cost about as much as one linear-law impact (a few ns each,
-/// against the exact solver's microseconds, BENCHMARKS.md).
-pub const POINTS_PER_IMPACT: u64 = 200;
+/// Samples interpolated that cost about as much as one linear-law impact (a few tens of ns
+/// each, against the exact solver's microseconds: benches/fit.rs, see [`HISTORY_PER_IMPACT`]).
+pub const POINTS_PER_IMPACT: u64 = 100;
+
+/// History samples that cost about one impact more each run: a trace fit's model runs record
+/// the force at `history` times (benches/fit.rs: a linear-law run with 640 history samples and
+/// 2 000 rows interpolated takes ≈ 240 µs, some 34 exact-solver impacts).
+pub const HISTORY_PER_IMPACT: u64 = 100;
 
 /// What one model run of a fit costs, in linear-law impacts: a trace fit's, one impact under
-/// `law` and an interpolation at `samples` times (its rows or bins, `fit::bins`); a COR
-/// table's, one impact a row (`samples` rows).
-pub fn fit_run_cost(trace: bool, samples: usize, law: ContactLaw) -> u64 {
-    if trace {
-        cost(law) + (samples as u64).div_ceil(POINTS_PER_IMPACT)
+/// `law` recorded at `history` times and an interpolation at `samples` times (its rows or
+/// bins, `fit::bins`); a COR table's, one impact a row (`samples` rows, no history).
+pub fn fit_run_cost(samples: usize, history: usize, law: ContactLaw) -> u64 {
+    if history > 0 {
+        let recorded = 1 + (history as u64).div_ceil(HISTORY_PER_IMPACT);
+        cost(law) * recorded + (samples as u64).div_ceil(POINTS_PER_IMPACT)
     } else {
         (samples as u64).saturating_mul(cost(law))
     }
@@ -210,15 +216,15 @@ mod tests {
 
     #[test]
     fn a_fit_takes_fewer_iterations_where_runs_cost_much_and_is_refused_below_ten() {
-        // a 2 000-row trace: runs of 1 + 10, the full 200 iterations
-        let run = fit_run_cost(true, 2_000, ContactLaw::Linear);
-        assert_eq!(run, 11);
+        // a 2 000-row trace, 640 history samples: runs of 1 × 8 + 20, the full 200 iterations
+        let run = fit_run_cost(2_000, 640, ContactLaw::Linear);
+        assert_eq!(run, 28);
         assert_eq!(
             fit_iterations(run, 5, 4, ContactLaw::Linear, String::new),
             Ok(200)
         );
         // 20 000 drop tests: a run is 20 000 impacts; even 10 iterations of 4 runs are too many
-        let run = fit_run_cost(false, 20_000, ContactLaw::Linear);
+        let run = fit_run_cost(20_000, 0, ContactLaw::Linear);
         let e = fit_iterations(run, 2, 7, ContactLaw::Linear, || "20000 drops".into());
         let e = e.unwrap_err();
         assert!(e.work > LIMIT, "{e}");
@@ -229,10 +235,22 @@ mod tests {
         );
         // 300 COR points, 2 free: 1e6/7 per start, runs of 300 impacts, 5 to start and 4 an
         // iteration: (142 857 − 1 500)/1 200 = 117 iterations
-        let run = fit_run_cost(false, 300, ContactLaw::Linear);
+        let run = fit_run_cost(300, 0, ContactLaw::Linear);
         assert_eq!(
             fit_iterations(run, 2, 7, ContactLaw::Linear, String::new),
             Ok(117)
+        );
+    }
+
+    #[test]
+    fn a_hertz_trace_fit_is_held_to_fewer_iterations() {
+        // 3 000 bins, 1 000 history samples, 6 variables: runs of 40 × 11 + 30 = 470, 4 starts
+        // of (250 000 − 9 × 470)/(8 × 470) = 65 iterations
+        let run = fit_run_cost(3_000, 1_000, ContactLaw::Hertz);
+        assert_eq!(run, 470);
+        assert_eq!(
+            fit_iterations(run, 6, 4, ContactLaw::Hertz, String::new),
+            Ok(65)
         );
     }
 }

@@ -67,7 +67,7 @@ pub(super) fn fit_trace(
     let bins = samples.len();
     let p = TraceProblem::new(*base, law, free.to_vec(), trace, summary, samples, watch);
     let starts = p.starts();
-    let run = fit_run_cost(true, bins, law);
+    let run = fit_run_cost(bins, p.history(), law);
     let what = || {
         format!(
             "a fit of {} parameters to {rows} rows ({bins} bins)",
@@ -107,7 +107,7 @@ fn fit_cor(
     too_few(p.count(), free.len())?;
     check_scale(&p)?;
     let starts = p.starts();
-    let run = fit_run_cost(false, points.len(), law);
+    let run = fit_run_cost(points.len(), 0, law);
     let what = || {
         format!(
             "a fit of {} parameters to {} rows",

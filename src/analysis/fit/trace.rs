@@ -102,6 +102,11 @@ impl<'a> TraceProblem<'a> {
         }
     }
 
+    /// Samples of each model run's history.
+    pub fn history(&self) -> usize {
+        self.history
+    }
+
     /// Whether the watch stopped the fit.
     pub fn stopped(&self) -> bool {
         self.stopped.get()
