@@ -26,6 +26,11 @@ fn truth() -> ImpactParams {
 /// 2 000 samples 5 µs apart, contact from 0.8123 ms, noise 1 N (a fixed pseudo-random
 /// sequence, so both sides fit the same numbers), baseline 0.3 N; as CSV text.
 fn trace_csv() -> String {
+    dense_csv(2000, 5e-6)
+}
+
+/// `rows` samples `dt` apart from −1.7 ms, otherwise as [`trace_csv`].
+fn dense_csv(rows: usize, dt: f64) -> String {
     let r = simulate(
         &truth(),
         ContactLaw::Linear,
@@ -46,8 +51,8 @@ fn trace_csv() -> String {
         (-2.0 * a.ln()).sqrt() * (std::f64::consts::TAU * b).cos()
     };
     let mut text = String::from("time_s,force_N\n");
-    for i in 0..2000 {
-        let t = -1.7e-3 + i as f64 * 5e-6;
+    for i in 0..rows {
+        let t = -1.7e-3 + i as f64 * dt;
         let s = t - 0.8123e-3;
         let f = if s <= 0.0 || s >= tf {
             0.0
@@ -66,7 +71,59 @@ fn median(mut v: Vec<f64>) -> f64 {
     v[v.len() / 2]
 }
 
+/// Dense traces over the same 10 ms (issue 30, item 4: binned to the model's resolution):
+/// parse and fit timed apart, medians of `runs`.
+fn dense(rows: usize, runs: usize) {
+    let csv = dense_csv(rows, 1e-2 / rows as f64);
+    let (mut parse, mut fits) = (Vec::new(), Vec::new());
+    let mut last = None;
+    for _ in 0..runs {
+        let t0 = Instant::now();
+        let trace = Trace::parse(&csv).unwrap();
+        parse.push(t0.elapsed().as_secs_f64());
+        let t = truth();
+        let start = ImpactParams {
+            k_p: 2e5,
+            damping: 24.0,
+            k_r: 3.6e4,
+            ..t
+        };
+        let free = [Param::KP, Param::C, Param::KR];
+        let t1 = Instant::now();
+        let f = fit(&start, ContactLaw::Linear, FitData::Trace(&trace), &free).unwrap();
+        fits.push(t1.elapsed().as_secs_f64());
+        last = Some(f);
+    }
+    let f = last.unwrap();
+    println!(
+        "dense trace, {rows} rows: parse median {:.1} ms, fit median {:.1} ms over {runs} runs, {} iterations, rms {:.4} N, peak memory of the process so far {}",
+        median(parse) * 1e3,
+        median(fits) * 1e3,
+        f.iterations,
+        f.rms_residual,
+        peak_memory()
+    );
+    for e in &f.fitted {
+        println!("  {} = {:.6e} ± {:.2e}", e.name, e.value, e.std_error);
+    }
+}
+
+/// The process's peak resident memory (Linux: VmHWM in /proc/self/status).
+fn peak_memory() -> String {
+    std::fs::read_to_string("/proc/self/status")
+        .ok()
+        .and_then(|s| {
+            s.lines()
+                .find(|l| l.starts_with("VmHWM:"))
+                .map(|l| l["VmHWM:".len()..].trim().to_string())
+        })
+        .unwrap_or_else(|| "unknown".into())
+}
+
 fn main() {
+    dense(10_000, 21);
+    dense(100_000, 5);
+    dense(999_999, 5);
     let csv = trace_csv();
     let trace = Trace::parse(&csv).unwrap();
     // the fit is given m, v0 and a ball far from the truth

@@ -22,8 +22,6 @@
 //! ```
 
 use crate::analysis::fit::{Fit, fit_k_r};
-use crate::analysis::sweep::{VelocityPoint, ZetaPoint, cor_vs_velocity, cor_vs_zeta};
-use crate::analysis::work;
 use crate::catalog::{Catalog, Entry};
 use crate::drop::{DropRun, DropSetup};
 use crate::model::contact::ContactLaw;
@@ -70,6 +68,7 @@ mod fit;
 mod intervals;
 mod mc;
 mod report;
+mod sweep;
 mod warnings;
 pub use collide::CollisionReport;
 pub use entry::Overrides;
@@ -77,6 +76,7 @@ pub use error::BallError;
 pub use intervals::{Intervals, bands, holds, intervals};
 pub use mc::{McReport, MonteCarlo};
 pub use report::{BallHeader, Energy, FitReport, ImpactReport, MeasuredAt};
+pub use sweep::{sweep_zeta, sweep_zeta_watched};
 pub use warnings::{ENERGY_RESIDUAL_MAX, indentation_warning};
 
 impl Ball {
@@ -266,23 +266,6 @@ impl Ball {
         Ok(simulate(&self.params, self.law, opts)?)
     }
 
-    /// COR, peak force, contact time and permanent indentation at each speed (m/s), as
-    /// `bouncelab sweep velocity` (Fig. 4). The speeds run in parallel, within the command
-    /// line's work limit ([`work::check`]: 10⁶ linear-law impacts, 25 000 on the other laws).
-    ///
-    /// ```
-    /// let ball = bouncelab::Ball::from_preset("superball")?;
-    /// let rows = ball.sweep_velocity(&[1.0, 3.0, 9.0])?;
-    /// assert_eq!(rows.len(), 3);
-    /// assert!(rows[2].cor < rows[0].cor); // flattening costs energy at speed
-    /// # Ok::<(), bouncelab::BallError>(())
-    /// ```
-    pub fn sweep_velocity(&self, speeds: &[f64]) -> Result<Vec<VelocityPoint>, BallError> {
-        let n = speeds.len();
-        work::check(n, self.law, &format!("{n} speeds"))?;
-        Ok(cor_vs_velocity(&self.params, self.law, speeds)?)
-    }
-
     /// The recoil spring K_r (and λ) that makes the model's COR equal a measured one, holding
     /// m, K_p, c (so ζ), z_p and v0, as `bouncelab fit --cor E` (docs/model.md §4).
     ///
@@ -353,38 +336,6 @@ pub fn set_lambda_zeta(
             None => BallError::Param(e),
         }
     })
-}
-
-/// COR, F̄_m and τ_f against ζ for each λ, on the normalized ball without flattening (the
-/// paper's Figs. 2–3), as `bouncelab sweep zeta`: rows grouped by λ in the order given, the
-/// points run in parallel. Each λ is checked first, and the work limit ([`work::check`]),
-/// as on the command line.
-///
-/// ```
-/// use bouncelab::{ContactLaw, analysis::sweep::log_space};
-/// let rows = bouncelab::sweep_zeta(&[0.0, 1.0], &log_space(0.01, 100.0, 5), ContactLaw::Linear)?;
-/// assert_eq!(rows.len(), 10);
-/// // λ = 0 (Maxwell): no rebound from ζ = 1 on
-/// assert_eq!(rows[2].zeta, 1.0);
-/// assert_eq!(rows[2].cor, 0.0);
-/// assert!(rows[7].cor > 0.0);
-/// # Ok::<(), bouncelab::BallError>(())
-/// ```
-pub fn sweep_zeta(
-    lambdas: &[f64],
-    zetas: &[f64],
-    law: ContactLaw,
-) -> Result<Vec<ZetaPoint>, BallError> {
-    if lambdas.is_empty() {
-        return Err(BallError::NoValue("lambda"));
-    }
-    for &l in lambdas {
-        validate_lambda_zeta(l, 0.0)?;
-    }
-    let (nl, nz) = (lambdas.len(), zetas.len());
-    let what = format!("{nl} λ values × {nz} points");
-    work::check(nl.saturating_mul(nz), law, &what)?;
-    Ok(cor_vs_zeta(lambdas, zetas, law)?)
 }
 
 #[cfg(test)]

@@ -231,19 +231,56 @@ fn claim_then_rename(tmp: &Path, path: &Path) -> io::Result<()> {
     })
 }
 
-/// Write all of `bytes` and wait until they are on disk.
+static STOP: std::sync::OnceLock<std::sync::Arc<std::sync::atomic::AtomicBool>> =
+    std::sync::OnceLock::new();
+
+/// Stop staging once `flag` is set (the command line's SIGINT/SIGTERM flag): the write then
+/// fails with [`io::ErrorKind::Interrupted`] and the temporary file is removed with its
+/// [`Outputs`], so a signal mid-write leaves nothing behind (tests/cli_progress_pty.rs,
+/// `a_signal_mid_write_leaves_no_temporary_file`).
+pub fn stop_on(flag: std::sync::Arc<std::sync::atomic::AtomicBool>) {
+    let _ = STOP.set(flag);
+}
+
+fn stopped() -> bool {
+    STOP.get()
+        .is_some_and(|f| f.load(std::sync::atomic::Ordering::Relaxed))
+}
+
+/// Bytes written between two looks at the stop flag.
+const WRITE_CHUNK: usize = 1 << 20;
+
+/// Write all of `bytes` and wait until they are on disk; [`io::ErrorKind::Interrupted`] once
+/// the stop flag is set.
 fn write_synced(file: &mut fs::File, bytes: &[u8]) -> io::Result<()> {
     use crate::fault::{self, Fault};
-    if Fault::PauseMidSave.active() {
-        // test-only (see `crate::fault`): stop with half the text written, so that a test can
-        // kill the process mid-write
-        let half = bytes.len() / 2;
-        file.write_all(&bytes[..half])?;
-        file.sync_all()?;
-        std::thread::sleep(fault::PAUSE);
-        file.write_all(&bytes[half..])?;
+    let stop = || io::Error::new(io::ErrorKind::Interrupted, "interrupted");
+    let half = bytes.len() / 2;
+    let pause = Fault::PauseMidSave.active();
+    let (first, second) = if pause {
+        bytes.split_at(half)
     } else {
-        file.write_all(bytes)?;
+        (bytes, &bytes[..0])
+    };
+    for (i, part) in [first, second].into_iter().enumerate() {
+        for chunk in part.chunks(WRITE_CHUNK) {
+            if stopped() {
+                return Err(stop());
+            }
+            file.write_all(chunk)?;
+        }
+        if pause && i == 0 {
+            // test-only (see `crate::fault`): stop with half the text written, so that a test
+            // can kill or signal the process mid-write
+            file.sync_all()?;
+            let until = std::time::Instant::now() + fault::PAUSE;
+            while std::time::Instant::now() < until && !stopped() {
+                std::thread::sleep(std::time::Duration::from_millis(10));
+            }
+        }
+    }
+    if stopped() {
+        return Err(stop());
     }
     file.sync_all()
 }

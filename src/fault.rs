@@ -19,6 +19,9 @@ pub enum Fault {
     /// `pause-mid-save`: saving a preset stops for [`PAUSE`] after writing part of the
     /// temporary file, long enough for a test to kill the process there.
     PauseMidSave,
+    /// `slow-work`: each step of watched long work (a fit's model run) takes 20 ms more, so
+    /// that a test can signal the command mid-work (tests/cli_progress_pty.rs).
+    SlowWork,
 }
 
 /// How long `pause-mid-save` sleeps: far longer than a test needs to send SIGKILL.
@@ -29,6 +32,7 @@ impl Fault {
         match self {
             Fault::PanicInLoop => "panic-in-loop",
             Fault::PauseMidSave => "pause-mid-save",
+            Fault::SlowWork => "slow-work",
         }
     }
 

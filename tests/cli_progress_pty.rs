@@ -40,3 +40,105 @@ fn long_work_shows_progress_and_a_signal_stops_it_writing_nothing() {
         assert!(left.is_empty(), "{left:?}");
     }
 }
+
+/// The files left in `dir`, by name.
+fn left(dir: &std::path::Path) -> Vec<std::ffi::OsString> {
+    std::fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name())
+        .collect()
+}
+
+/// A 999 999-row force trace (the most a file may hold): a half-sine pulse of 60 N over
+/// 3 ms from 2 ms, on 10 ms, with a little alternating noise.
+fn dense_trace(path: &std::path::Path) {
+    use std::fmt::Write as _;
+    let rows = 999_999;
+    let mut text = String::with_capacity(rows * 24);
+    text.push_str("time_s,force_N\n");
+    for i in 0..rows {
+        let t = i as f64 * 1e-8;
+        let s = (t - 2e-3) / 3e-3;
+        let pulse = if (0.0..1.0).contains(&s) {
+            60.0 * (std::f64::consts::PI * s).sin()
+        } else {
+            0.0
+        };
+        let noise = if i % 2 == 0 { 0.1 } else { -0.1 };
+        writeln!(text, "{t:e},{:.4}", pulse + noise).unwrap();
+    }
+    std::fs::write(path, text).unwrap();
+}
+
+#[test]
+fn a_dense_trace_fit_shows_progress_and_a_signal_stops_it_writing_nothing() {
+    let data = tempfile::tempdir().unwrap();
+    let trace = data.path().join("dense.csv");
+    dense_trace(&trace);
+    for sig in [Signal::INT, Signal::TERM] {
+        let home = tempfile::tempdir().unwrap();
+        let plot = home.path().join("fit.svg");
+        let args = [
+            "fit",
+            "--preset",
+            "tennis",
+            "--force-time",
+            trace.to_str().unwrap(),
+            "--free",
+            "k_p,c,k_r,v0",
+            "--plot",
+            plot.to_str().unwrap(),
+        ];
+        // each model run slowed to 20 ms: the fit is still running when the signal comes
+        let mut x = Explorer::spawn(home.path(), Some("slow-work"), &args);
+        x.wait_for("model runs,"); // the counter
+        x.signal(sig);
+        let (status, _, text) = x.finish();
+        assert_eq!(
+            status.code(),
+            Some(130),
+            "{status:?}\n{}",
+            text.escape_debug()
+        );
+        assert!(text.contains("interrupted"), "{}", text.escape_debug());
+        assert!(left(home.path()).is_empty(), "{:?}", left(home.path()));
+    }
+}
+
+#[test]
+fn a_signal_mid_write_leaves_no_temporary_file() {
+    for sig in [Signal::INT, Signal::TERM] {
+        let home = tempfile::tempdir().unwrap();
+        let out = home.path().join("m.svg");
+        let args = [
+            "map",
+            "--normalized",
+            "--lambda",
+            "0.1:10:40",
+            "--zeta",
+            "0.1:10:40",
+            "--format",
+            "svg",
+            "--out",
+            out.to_str().unwrap(),
+        ];
+        // the write stops halfway (30 s) with its temporary file on disk
+        let mut x = Explorer::spawn(home.path(), Some("pause-mid-save"), &args);
+        let dir = home.path().to_path_buf();
+        x.wait_until("the temporary file", || {
+            left(&dir)
+                .iter()
+                .any(|n| n.to_string_lossy().starts_with(".m.svg."))
+        });
+        x.signal(sig);
+        let (status, _, text) = x.finish();
+        assert_eq!(
+            status.code(),
+            Some(130),
+            "{status:?}\n{}",
+            text.escape_debug()
+        );
+        assert!(text.contains("interrupted"), "{}", text.escape_debug());
+        assert!(left(home.path()).is_empty(), "{:?}", left(home.path()));
+    }
+}

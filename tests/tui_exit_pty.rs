@@ -56,3 +56,107 @@ fn the_debris_of_a_killed_save_is_removed_at_start() {
     assert!(!debris.exists(), "the dead save's temporary is removed");
     assert!(other.exists(), "a file of another kind is left alone");
 }
+
+#[test]
+fn other_terminating_signals_restore_the_terminal_too() {
+    for (sig, n) in [
+        (Signal::USR1, 10),
+        (Signal::USR2, 12),
+        (Signal::ALARM, 14),
+        (Signal::VTALARM, 26),
+    ] {
+        let home = tempfile::tempdir().unwrap();
+        let mut x = Explorer::spawn(home.path(), None, &[]);
+        let before = modes(&x.before);
+        x.wait_for_first_draw();
+        x.wait_for(HIDE_CURSOR);
+        x.signal(sig);
+        let (status, after, out) = x.finish();
+        assert_eq!(
+            status.code(),
+            Some(128 + n),
+            "signal {n}: {status:?}, killed by {:?}",
+            signal(&status)
+        );
+        assert_restored(&before, &after, &out);
+    }
+}
+
+/// The state letter of process `pid` (`T` when stopped), from /proc.
+fn state(pid: u32) -> char {
+    let stat = fs::read_to_string(format!("/proc/{pid}/stat")).unwrap_or_default();
+    // "pid (comm) S …": the state follows the command's closing parenthesis
+    stat.rsplit_once(") ")
+        .and_then(|(_, rest)| rest.chars().next())
+        .unwrap_or('?')
+}
+
+#[test]
+fn ctrl_z_and_sigtstp_suspend_with_the_terminal_restored_and_sigcont_redraws() {
+    use rustix::termios::LocalModes;
+    for how in ["ctrl-z", "sigtstp"] {
+        let home = tempfile::tempdir().unwrap();
+        let mut x = Explorer::spawn(home.path(), None, &[]);
+        let before = modes(&x.before);
+        x.wait_for_first_draw();
+        x.wait_for(HIDE_CURSOR);
+        match how {
+            "ctrl-z" => x.send(b"\x1a"),
+            _ => x.signal(Signal::TSTP),
+        }
+        let pid = x.pid();
+        x.wait_until("the explorer stopped", || state(pid) == 'T');
+        // stopped with the terminal as it was: cooked mode, the main screen, the cursor shown
+        let now = x.termios_now();
+        assert!(
+            now.local_modes
+                .contains(LocalModes::ICANON | LocalModes::ECHO),
+            "{how}: raw mode left on while stopped"
+        );
+        assert_eq!(modes(&now), before, "{how}");
+        // (what it wrote before it stopped may still be on its way through the pty)
+        x.wait_for(pty::LEAVE_ALT_SCREEN);
+        x.wait_for(pty::SHOW_CURSOR);
+        let out = x.output();
+        assert!(out.rfind(pty::LEAVE_ALT_SCREEN) > out.rfind(pty::ENTER_ALT_SCREEN));
+        assert!(out.rfind(pty::SHOW_CURSOR) > out.rfind(HIDE_CURSOR));
+        // continued: back on the alternate screen, drawn whole again, and it still takes keys
+        x.signal(Signal::CONT);
+        x.wait_for(pty::ENTER_ALT_SCREEN);
+        x.wait_for("bouncelab");
+        assert_ne!(state(pid), 'T');
+        x.send(b"q");
+        let (status, after, out) = x.finish();
+        assert_eq!(
+            status.code(),
+            Some(0),
+            "{how}: {status:?}\n{}",
+            out.escape_debug()
+        );
+        assert_restored(&before, &after, &out);
+    }
+}
+
+#[test]
+fn a_key_after_a_burst_of_resizes_is_not_lost() {
+    for trial in 0..3 {
+        let home = tempfile::tempdir().unwrap();
+        let mut x = Explorer::spawn(home.path(), None, &[]);
+        let before = modes(&x.before);
+        x.wait_for_first_draw();
+        x.wait_for(HIDE_CURSOR);
+        // the burst and the key come while the explorer reads nothing (stopped, as when it is
+        // busy or its output is blocked): on waking it finds both the resizes and the key
+        x.signal(Signal::STOP);
+        let pid = x.pid();
+        x.wait_until("the explorer stopped", || state(pid) == 'T');
+        for i in 0..20u16 {
+            x.resize(100 + i, 30 + i % 7);
+        }
+        x.send(b"q");
+        x.signal(Signal::CONT);
+        let (status, after, out) = x.finish();
+        assert_eq!(status.code(), Some(0), "trial {trial}: {status:?}");
+        assert_restored(&before, &after, &out);
+    }
+}

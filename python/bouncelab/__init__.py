@@ -37,6 +37,24 @@ from ._native import (
     sweep_zeta,
 )
 
+from ._boundary import guard as _guard
+
+# every function of the native module through the boundary: panics raise RuntimeError, and
+# numbers too large for it name their argument (bouncelab/_boundary.py)
+collide = _guard(collide)
+drop = _guard(drop)
+fit = _guard(fit)
+fit_cor_table = _guard(fit_cor_table)
+fit_drops = _guard(fit_drops)
+fit_trace = _guard(fit_trace)
+monte_carlo = _guard(monte_carlo)
+presets = _guard(presets)
+run = _guard(run)
+run_normalized = _guard(run_normalized)
+run_params = _guard(run_params)
+sweep_velocity = _guard(sweep_velocity)
+sweep_zeta = _guard(sweep_zeta)
+
 __all__ = [
     "Collision",
     "Impact",

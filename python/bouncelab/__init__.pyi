@@ -85,7 +85,7 @@ def run(
     lambda_: Optional[float] = None,
     zeta: Optional[float] = None,
     history: bool = False,
-    samples: int = 400,
+    samples: Optional[int] = None,
     params: Optional[ParamSet] = None,
 ) -> Impact:
     """One impact of a preset, as ``bouncelab run --preset NAME``."""
@@ -96,7 +96,7 @@ def run_normalized(
     zp_bar: Optional[float] = None,
     law: Law = "linear",
     history: bool = False,
-    samples: int = 400,
+    samples: Optional[int] = None,
 ) -> Impact:
     """One impact of the normalized ball (m = K_p = v0 = 1), as ``run --normalized``."""
 
@@ -111,7 +111,7 @@ def run_params(
     k_h: Optional[float] = None,
     law: Law = "linear",
     history: bool = False,
-    samples: int = 400,
+    samples: Optional[int] = None,
 ) -> Impact:
     """One impact of a ball given by its parameters (SI); z_p = inf: no flattening."""
 

@@ -192,9 +192,9 @@ pub fn fit_trace<'py>(
     let trace = Trace::parse(&text).map_err(|e| data_error("trace", e))?;
     let free = free_list(free)?;
     let ball = preset_ball(preset, params, law, v0)?;
-    let fit = py
-        .detach(|| ball.fit(FitData::Trace(&trace), free.as_deref()))
-        .map_err(error)?;
+    let fit = crate::interrupt::detach_watched(py, |w| {
+        ball.fit_watched(FitData::Trace(&trace), free.as_deref(), w)
+    })?;
     report(py, &ball, "force-time trace", &fit, (ball.params.v0, None))
 }
 

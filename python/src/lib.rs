@@ -20,6 +20,7 @@ use pyo3::types::PyDict;
 mod collide;
 mod fits;
 mod impact;
+mod interrupt;
 mod mc;
 
 use impact::{Impact, impact, interval_columns};
@@ -32,17 +33,31 @@ create_exception!(
      (the command line's exit code 1). A nearby λ or ζ may answer."
 );
 
-/// A library error as a Python exception with the command line's message.
+/// A library error as a Python exception with the command line's message (control
+/// characters made visible, as the command line shows them: bouncelab::sanitize).
 fn error(e: BallError) -> PyErr {
+    let message = bouncelab::sanitize::line(&e.to_string()).into_owned();
     if e.is_no_answer() {
-        NoAnswerError::new_err(e.to_string())
+        NoAnswerError::new_err(message)
     } else {
-        PyValueError::new_err(e.to_string())
+        PyValueError::new_err(message)
     }
 }
 
 fn value_error(message: String) -> PyErr {
-    PyValueError::new_err(message)
+    PyValueError::new_err(bouncelab::sanitize::line(&message).into_owned())
+}
+
+/// History samples when `history` is asked for; `samples` without it is refused, as the
+/// command line refuses `--samples` without `--history`.
+fn history_samples(history: bool, samples: Option<usize>) -> PyResult<usize> {
+    match (history, samples) {
+        (false, Some(n)) => Err(value_error(format!(
+            "samples={n} applies only with history=True (the command line's --samples needs \
+             --history)"
+        ))),
+        (_, n) => Ok(n.unwrap_or(400)),
+    }
 }
 
 /// A contact law by its command-line name: linear, elastic-plastic, hertz.
@@ -106,7 +121,7 @@ fn array<'py>(py: Python<'py>, v: Vec<f64>) -> Py<PyArray1<f64>> {
 /// One impact of a preset, as `bouncelab run --preset NAME [--law L] [--v0 V] [--lambda L]
 /// [--zeta Z] [--params SET] [--history --samples N]`.
 #[pyfunction]
-#[pyo3(signature = (preset="superball", law=None, v0=None, lambda_=None, zeta=None, history=false, samples=400, params=None))]
+#[pyo3(signature = (preset="superball", law=None, v0=None, lambda_=None, zeta=None, history=false, samples=None, params=None))]
 #[allow(clippy::too_many_arguments)]
 fn run(
     py: Python<'_>,
@@ -116,9 +131,10 @@ fn run(
     lambda_: Option<f64>,
     zeta: Option<f64>,
     history: bool,
-    samples: usize,
+    samples: Option<usize>,
     params: Option<&str>,
 ) -> PyResult<Impact> {
+    let samples = history_samples(history, samples)?;
     let ball = preset_ball(preset, params, law, v0)?
         .with_lambda_zeta(lambda_, zeta)
         .map_err(error)?;
@@ -127,7 +143,7 @@ fn run(
 
 /// One impact of the normalized ball (m = K_p = v0 = 1), as `bouncelab run --normalized`.
 #[pyfunction]
-#[pyo3(signature = (lambda_=1.0, zeta=0.1, zp_bar=None, law="linear", history=false, samples=400))]
+#[pyo3(signature = (lambda_=1.0, zeta=0.1, zp_bar=None, law="linear", history=false, samples=None))]
 fn run_normalized(
     py: Python<'_>,
     lambda_: f64,
@@ -135,8 +151,9 @@ fn run_normalized(
     zp_bar: Option<f64>,
     law: &str,
     history: bool,
-    samples: usize,
+    samples: Option<usize>,
 ) -> PyResult<Impact> {
+    let samples = history_samples(history, samples)?;
     let ball = Ball::normalized(lambda_, zeta, zp_bar, self::law(law)?).map_err(error)?;
     impact(py, ball, history, samples)
 }
@@ -144,7 +161,7 @@ fn run_normalized(
 /// One impact of a ball given by its parameters, SI units. `z_p = inf` (the default) is no
 /// flattening; `k_h` defaults to the Hertz stiffness that meets K_p at z_p (Eq. 16).
 #[pyfunction]
-#[pyo3(signature = (*, m, k_p, c, k_r, v0, z_p=f64::INFINITY, k_h=None, law="linear", history=false, samples=400))]
+#[pyo3(signature = (*, m, k_p, c, k_r, v0, z_p=f64::INFINITY, k_h=None, law="linear", history=false, samples=None))]
 #[allow(clippy::too_many_arguments)]
 fn run_params(
     py: Python<'_>,
@@ -157,8 +174,9 @@ fn run_params(
     k_h: Option<f64>,
     law: &str,
     history: bool,
-    samples: usize,
+    samples: Option<usize>,
 ) -> PyResult<Impact> {
+    let samples = history_samples(history, samples)?;
     let k_h = k_h.unwrap_or_else(|| {
         ImpactParams::k_h_matching(k_p, if z_p.is_finite() { z_p } else { 1.0 })
     });
@@ -222,9 +240,9 @@ fn sweep_zeta<'py>(
     law: &str,
 ) -> PyResult<Bound<'py, PyDict>> {
     let (lambdas, zetas, law) = (floats(lambdas)?, floats(zetas)?, self::law(law)?);
-    let rows = py
-        .detach(|| bouncelab::sweep_zeta(&lambdas, &zetas, law))
-        .map_err(error)?;
+    let rows = interrupt::detach_watched(py, |w| {
+        bouncelab::api::sweep_zeta_watched(&lambdas, &zetas, law, w)
+    })?;
     let col = |f: fn(&bouncelab::analysis::sweep::ZetaPoint) -> f64| {
         array(py, rows.iter().map(f).collect())
     };
@@ -261,7 +279,7 @@ fn sweep_velocity<'py>(
             bouncelab::analysis::sweep::lin_space(0.1 * ball.params.v0, 3.0 * ball.params.v0, 60)
         }
     };
-    let rows = py.detach(|| ball.sweep_velocity(&speeds)).map_err(error)?;
+    let rows = interrupt::detach_watched(py, |w| ball.sweep_velocity_watched(&speeds, w))?;
     let col = |f: fn(&bouncelab::analysis::sweep::VelocityPoint) -> f64| {
         array(py, rows.iter().map(f).collect())
     };
@@ -346,6 +364,12 @@ fn drop_test<'py>(
     params: Option<&str>,
 ) -> PyResult<Bound<'py, PyDict>> {
     use bouncelab::drop::{Air, Bounce, DropSetup};
+    if !drag && (drag_coefficient.is_some() || air_density.is_some()) {
+        // as the command line refuses --no-drag with --drag-coefficient or --air-density
+        return Err(value_error(
+            "drag=False cannot be used with drag_coefficient or air_density".into(),
+        ));
+    }
     let ball = preset_ball(preset, params, law, None)?;
     let air = drag.then(|| Air {
         density: air_density.unwrap_or(Air::default().density),

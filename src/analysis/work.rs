@@ -95,6 +95,93 @@ pub fn check(impacts: usize, law: ContactLaw, what: &str) -> Result<(), TooMuchW
     Ok(())
 }
 
+/// Long library work watched from outside (a fit's model runs): after each step it is told
+/// how many steps are done and answers whether to go on. The library does no I/O; the watcher
+/// draws the progress bar and reads Ctrl-C (`cli::budget`) or asks Python for a
+/// KeyboardInterrupt.
+pub trait Watch {
+    /// `done` steps are done; `false` stops the work (it then ends with an "interrupted"
+    /// error and no answer).
+    fn step(&self, done: u64) -> bool;
+}
+
+/// No one watching: the work always goes on.
+pub struct Unwatched;
+
+impl Watch for Unwatched {
+    fn step(&self, _done: u64) -> bool {
+        true
+    }
+}
+
+/// Impacts run between two looks of a [`Watch`] at a sweep: some 10 ms of work on one core
+/// (linear law ≈ 7 µs an impact, the others 40 times that).
+pub fn chunk(law: ContactLaw) -> usize {
+    (1_024 / cost(law)).max(1) as usize
+}
+
+/// Most Levenberg–Marquardt iterations a start of a fit takes (`fit::lm::Options`).
+pub const FIT_ITERATIONS: usize = 200;
+
+/// Fewest iterations worth a start: a fit whose work allows fewer is refused before it
+/// starts (fits converge in 5–30, BENCHMARKS.md).
+pub const FIT_MIN_ITERATIONS: usize = 10;
+
+/// Samples interpolated that cost about as much as one linear-law impact (a few tens of ns
+/// each, against the exact solver's microseconds: benches/fit.rs, see [`HISTORY_PER_IMPACT`]).
+pub const POINTS_PER_IMPACT: u64 = 100;
+
+/// History samples that cost about one impact more each run: a trace fit's model runs record
+/// the force at `history` times (benches/fit.rs: a linear-law run with 640 history samples and
+/// 2 000 rows interpolated takes ≈ 240 µs, some 34 exact-solver impacts).
+pub const HISTORY_PER_IMPACT: u64 = 100;
+
+/// What one model run of a fit costs, in linear-law impacts: a trace fit's, one impact under
+/// `law` recorded at `history` times and an interpolation at `samples` times (its rows or
+/// bins, `fit::bins`); a COR table's, one impact a row (`samples` rows, no history).
+pub fn fit_run_cost(samples: usize, history: usize, law: ContactLaw) -> u64 {
+    if history > 0 {
+        let recorded = 1 + (history as u64).div_ceil(HISTORY_PER_IMPACT);
+        cost(law) * recorded + (samples as u64).div_ceil(POINTS_PER_IMPACT)
+    } else {
+        (samples as u64).saturating_mul(cost(law))
+    }
+}
+
+/// The iterations each start of a fit may take, so that its whole work stays within
+/// [`LIMIT`]: [`FIT_ITERATIONS`], fewer where a model run costs much (`run_cost`, from
+/// [`fit_run_cost`]); a refusal when fewer than [`FIT_MIN_ITERATIONS`] would be left. A start
+/// costs its ranking run, its first residuals and Jacobian (`vars` + 2 runs) and per
+/// iteration a trial and a Jacobian (`vars` + 2 runs: a trace's slope is one more).
+pub fn fit_iterations(
+    run_cost: u64,
+    vars: usize,
+    starts: usize,
+    law: ContactLaw,
+    what: impl FnOnce() -> String,
+) -> Result<usize, TooMuchWork> {
+    let per_iteration = (vars as u64 + 2).saturating_mul(run_cost);
+    let first = (vars as u64 + 3).saturating_mul(run_cost);
+    let starts = starts.max(1) as u64;
+    let budget = LIMIT / starts;
+    let iterations = budget.saturating_sub(first) / per_iteration.max(1);
+    if iterations < FIT_MIN_ITERATIONS as u64 {
+        let least = first + FIT_MIN_ITERATIONS as u64 * per_iteration;
+        let runs = starts * (vars as u64 + 3 + FIT_MIN_ITERATIONS as u64 * (vars as u64 + 2));
+        return Err(TooMuchWork {
+            what: format!(
+                "{} ({} starts of at least {FIT_MIN_ITERATIONS} iterations, {runs} model runs)",
+                what(),
+                starts
+            ),
+            impacts: (runs.saturating_mul(run_cost) / cost(law).max(1)) as usize,
+            law,
+            work: least.saturating_mul(starts),
+        });
+    }
+    Ok((iterations as usize).min(FIT_ITERATIONS))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -125,5 +212,45 @@ mod tests {
         ));
         assert!(check_samples(25_000, ContactLaw::Hertz).is_ok());
         assert!(check_samples(25_001, ContactLaw::Hertz).is_err());
+    }
+
+    #[test]
+    fn a_fit_takes_fewer_iterations_where_runs_cost_much_and_is_refused_below_ten() {
+        // a 2 000-row trace, 640 history samples: runs of 1 × 8 + 20, the full 200 iterations
+        let run = fit_run_cost(2_000, 640, ContactLaw::Linear);
+        assert_eq!(run, 28);
+        assert_eq!(
+            fit_iterations(run, 5, 4, ContactLaw::Linear, String::new),
+            Ok(200)
+        );
+        // 20 000 drop tests: a run is 20 000 impacts; even 10 iterations of 4 runs are too many
+        let run = fit_run_cost(20_000, 0, ContactLaw::Linear);
+        let e = fit_iterations(run, 2, 7, ContactLaw::Linear, || "20000 drops".into());
+        let e = e.unwrap_err();
+        assert!(e.work > LIMIT, "{e}");
+        assert!(
+            e.to_string()
+                .starts_with("too much work: 20000 drops (7 starts"),
+            "{e}"
+        );
+        // 300 COR points, 2 free: 1e6/7 per start, runs of 300 impacts, 5 to start and 4 an
+        // iteration: (142 857 − 1 500)/1 200 = 117 iterations
+        let run = fit_run_cost(300, 0, ContactLaw::Linear);
+        assert_eq!(
+            fit_iterations(run, 2, 7, ContactLaw::Linear, String::new),
+            Ok(117)
+        );
+    }
+
+    #[test]
+    fn a_hertz_trace_fit_is_held_to_fewer_iterations() {
+        // 3 000 bins, 1 000 history samples, 6 variables: runs of 40 × 11 + 30 = 470, 4 starts
+        // of (250 000 − 9 × 470)/(8 × 470) = 65 iterations
+        let run = fit_run_cost(3_000, 1_000, ContactLaw::Hertz);
+        assert_eq!(run, 470);
+        assert_eq!(
+            fit_iterations(run, 6, 4, ContactLaw::Hertz, String::new),
+            Ok(65)
+        );
     }
 }

@@ -69,6 +69,8 @@ pub enum BallError {
     Work(TooMuchWork),
     /// A Monte Carlo that cannot run (see [`McError`]).
     MonteCarlo(McError),
+    /// Long work stopped by its watch ([`crate::analysis::work::Watch`]: Ctrl-C in Python).
+    Interrupted,
 }
 
 impl fmt::Display for BallError {
@@ -109,6 +111,7 @@ impl fmt::Display for BallError {
             } => write!(f, "invalid {field}: {} ({reason})", display_number(*value)),
             BallError::MultiFit(e) => write!(f, "{e}"),
             BallError::MonteCarlo(e) => write!(f, "{e}"),
+            BallError::Interrupted => write!(f, "interrupted"),
         }
     }
 }

@@ -3,7 +3,7 @@
 //! with the checks of the data that are not the files' (drop heights, the air) made here once.
 
 use super::{Ball, BallError};
-use crate::analysis::fit::{FitData, MultiFit, Param, fit};
+use crate::analysis::fit::{FitData, MultiFit, Param, fit_watched};
 use crate::measured::{Air, CorPoint, Flight, drop_to_cor};
 use crate::text::number;
 
@@ -37,6 +37,17 @@ impl Ball {
     /// # Ok::<(), bouncelab::BallError>(())
     /// ```
     pub fn fit(&self, data: FitData<'_>, free: Option<&[Param]>) -> Result<MultiFit, BallError> {
+        self.fit_watched(data, free, &crate::analysis::work::Unwatched)
+    }
+
+    /// [`Ball::fit`], each model run of a trace fit reported to `watch`, which may stop it
+    /// (`MultiFitError::Interrupted`): the Python package's Ctrl-C.
+    pub fn fit_watched(
+        &self,
+        data: FitData<'_>,
+        free: Option<&[Param]>,
+        watch: &dyn crate::analysis::work::Watch,
+    ) -> Result<MultiFit, BallError> {
         let free = match free {
             Some(f) => f.to_vec(),
             None => match data {
@@ -44,7 +55,7 @@ impl Ball {
                 FitData::Cor(points) => Param::defaults(false, points.len(), self.law),
             },
         };
-        Ok(fit(&self.params, self.law, data, &free)?)
+        Ok(fit_watched(&self.params, self.law, data, &free, watch)?)
     }
 
     /// Drop tests as a COR table: each (drop height, rebound height) pair (m) checked and

@@ -48,8 +48,9 @@ pub fn interrupted() -> bool {
     FLAG.get().is_some_and(|f| f.load(Ordering::Relaxed))
 }
 
-/// Set by SIGINT or SIGTERM once this was called.
-fn interrupt_flag() -> Arc<AtomicBool> {
+/// Set by SIGINT or SIGTERM once this was called; the atomic writer looks at it too, so a
+/// signal mid-write stops the staging and its temporaries go ([`crate::atomic::stop_on`]).
+pub fn interrupt_flag() -> Arc<AtomicBool> {
     FLAG.get_or_init(|| {
         let flag = Arc::new(AtomicBool::new(false));
         #[cfg(unix)]
@@ -58,9 +59,50 @@ fn interrupt_flag() -> Arc<AtomicBool> {
             let _ = signal_hook::flag::register_conditional_shutdown(sig, 130, flag.clone());
             let _ = signal_hook::flag::register(sig, flag.clone());
         }
+        crate::atomic::stop_on(flag.clone());
         flag
     })
     .clone()
+}
+
+/// The watch of the library's long work ([`crate::analysis::work::Watch`], a fit's model
+/// runs): a counter on stderr on a terminal, and Ctrl-C (SIGINT) or SIGTERM stops the work.
+pub struct Watcher {
+    flag: Arc<AtomicBool>,
+    bar: indicatif::ProgressBar,
+}
+
+impl Watcher {
+    /// Counting steps named `unit` ("model runs") on a terminal.
+    pub fn new(unit: &str) -> Watcher {
+        let flag = interrupt_flag();
+        let bar = if std::io::stderr().is_terminal() {
+            let template = format!("{{spinner}} {{pos}} {unit}, {{elapsed}} (Ctrl-C stops)");
+            let style = indicatif::ProgressStyle::with_template(&template)
+                .unwrap_or_else(|_| indicatif::ProgressStyle::default_spinner());
+            indicatif::ProgressBar::new_spinner().with_style(style)
+        } else {
+            indicatif::ProgressBar::hidden()
+        };
+        Watcher { flag, bar }
+    }
+}
+
+impl crate::analysis::work::Watch for Watcher {
+    fn step(&self, done: u64) -> bool {
+        if crate::fault::Fault::SlowWork.active() {
+            // test-only (crate::fault): slow enough for a test to signal mid-work
+            std::thread::sleep(std::time::Duration::from_millis(20));
+        }
+        self.bar.set_position(done);
+        !self.flag.load(Ordering::Relaxed)
+    }
+}
+
+impl Drop for Watcher {
+    fn drop(&mut self) {
+        self.bar.finish_and_clear();
+    }
 }
 
 /// Run `work` over `items` in chunks, with a bar and the interruption check between them.
@@ -123,6 +165,23 @@ pub fn velocity_rows(
     chunked(speeds, cost(law), |chunk| {
         cor_vs_velocity(params, law, chunk).map_err(anyhow::Error::from)
     })
+}
+
+/// The design map ([`crate::map::compute`]) pass by pass on all cores, with the bar over its
+/// cells; a SIGINT or SIGTERM stops the pass under way (each cell looks at the flag) and the
+/// command ends with [`Interrupted`].
+pub fn map(spec: crate::map::MapSpec) -> anyhow::Result<crate::map::Map> {
+    let progress = Progress::new(spec.cells() as u64, cost(spec.law) as f64, "cells");
+    let mut map = crate::map::Map::new(spec);
+    while let Some(pass) = map.refine_until(&progress.flag) {
+        if !pass.complete {
+            progress.check()?;
+        }
+        progress.advance(pass.evaluated as u64);
+    }
+    progress.check()?;
+    progress.finish();
+    Ok(map)
 }
 
 /// Long work its caller does in steps (the Monte Carlo's blocks of samples): the bar of

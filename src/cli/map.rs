@@ -6,7 +6,7 @@ use super::ball::{BallArgs, LawArg, Overrides, PresetChoice, Size};
 use super::output::num;
 
 use crate::map::csv::{csv, header};
-use crate::map::{Axis, Map, MapSpec, Param, Quantity, Scale, Targets, compute};
+use crate::map::{Axis, Map, MapSpec, Param, Quantity, Scale, Targets};
 use crate::model::contact::ContactLaw;
 use clap::{Args, ValueEnum};
 use serde::Serialize;
@@ -128,7 +128,7 @@ pub fn run(a: &MapArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     if let Some(path) = &a.out {
         super::outputs::check(&[path.as_path()], a.force)?;
     }
-    let map = compute(ball.spec.clone());
+    let map = super::budget::map(ball.spec.clone())?;
     let text = match a.format {
         MapFormat::Csv => csv(&map, targets.as_ref()),
         MapFormat::Json => json(&map, &ball, targets.as_ref())?,

@@ -146,7 +146,7 @@ fn report(e: &anyhow::Error) -> Option<(u8, String)> {
     let code = exit_code(e)?;
     let line = if code == 130 {
         // an interruption is no error of the command's
-        format!("bouncelab: {e}")
+        format!("bouncelab: {}", budget::Interrupted)
     } else {
         format!("bouncelab: error: {}", one_line(&format!("{e:#}")))
     };
@@ -166,7 +166,9 @@ fn exit_code(e: &anyhow::Error) -> Option<u8> {
         return None;
     }
     // Ctrl-C during long work (cli::budget): the shell's code for SIGINT
-    if e.downcast_ref::<budget::Interrupted>().is_some() {
+    // (a SIGINT or SIGTERM that stopped a write makes any failure an interruption: the
+    // atomic writer removed what it had staged)
+    if e.downcast_ref::<budget::Interrupted>().is_some() || budget::interrupted() {
         return Some(130);
     }
     let not_the_input = |c: &(dyn std::error::Error + 'static)| {

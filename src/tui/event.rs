@@ -26,6 +26,9 @@ const SWEEP_POLL: Duration = Duration::from_millis(40);
 const MAP_POLL: Duration = Duration::from_millis(5);
 /// Frame period of the drop view's animation (about 30 frames a second).
 const FRAME: Duration = Duration::from_millis(33);
+/// How often an idle loop wakes to see whether a resumed suspension wants the screen redrawn
+/// whole (crate::signals).
+const IDLE: Duration = Duration::from_millis(100);
 
 pub fn run(terminal: &mut DefaultTerminal, app: &mut App) -> anyhow::Result<()> {
     let mut worker = Workers {
@@ -55,14 +58,22 @@ pub fn run(terminal: &mut DefaultTerminal, app: &mut App) -> anyhow::Result<()> 
             MAP_POLL
         } else if animating {
             FRAME
-        } else {
+        } else if waiting {
             SWEEP_POLL
+        } else {
+            IDLE
         };
-        let mut next = if !(waiting || animating || refining) || event::poll(wait)? {
+        let mut next = if event::poll(wait)? {
             Some(event::read()?)
         } else {
             None
         };
+        if crate::signals::take_redraw() {
+            // back from Ctrl-Z or SIGTSTP on a cleared screen: a blank frame makes the next
+            // one draw every cell (Terminal::clear would ask the terminal for the cursor)
+            terminal.draw(|f| f.render_widget(ratatui::widgets::Clear, f.area()))?;
+            dirty = true;
+        }
         while let Some(ev) = next {
             if panic_on_key && matches!(ev, event::Event::Key(_)) {
                 panic!(
@@ -71,7 +82,10 @@ pub fn run(terminal: &mut DefaultTerminal, app: &mut App) -> anyhow::Result<()> 
                 );
             }
             dirty = true; // a resize, too, needs a new frame
-            if let Some(a) = action::from_event(&ev, app.mode()) {
+            if is_suspend(&ev) {
+                // raw mode delivers Ctrl-Z as a key: suspend as the shell's SIGTSTP would
+                crate::signals::suspend();
+            } else if let Some(a) = action::from_event(&ev, app.mode()) {
                 effects.extend(app.apply(a));
             }
             if app.should_quit() {
@@ -113,6 +127,14 @@ pub fn run(terminal: &mut DefaultTerminal, app: &mut App) -> anyhow::Result<()> 
         }
     }
     Ok(())
+}
+
+/// Ctrl-Z, pressed.
+fn is_suspend(ev: &event::Event) -> bool {
+    use event::{KeyCode, KeyEventKind, KeyModifiers};
+    matches!(ev, event::Event::Key(k) if k.code == KeyCode::Char('z')
+        && k.modifiers.contains(KeyModifiers::CONTROL)
+        && k.kind == KeyEventKind::Press)
 }
 
 /// The background threads: COR-vs-speed sweeps, the models view's calibrations, the fits, the map's passes.

@@ -109,7 +109,7 @@ pub fn run_from(
         })
         .context("cannot set the terminal up for the explorer")?;
     // a terminating signal restores the terminal too, then exits 128 + n (crate::signals)
-    let guard = crate::signals::TerminalGuard::new(restore_all);
+    let guard = crate::signals::TerminalGuard::new(restore_all, resume_all);
     let result = guard
         .map_err(anyhow::Error::from)
         .and_then(|_guard| event::run(&mut terminal, &mut app));
@@ -122,6 +122,18 @@ fn restore_all() {
     // errors ignored: after SIGHUP the terminal is gone (ratatui::restore would print them)
     let _ = ratatui::try_restore();
     let _ = ratatui::crossterm::execute!(std::io::stdout(), ratatui::crossterm::cursor::Show);
+}
+
+/// After a suspension (Ctrl-Z, SIGTSTP; crate::signals): raw mode, the alternate screen, the
+/// cursor hidden, as `ratatui::try_init` left them.
+fn resume_all() {
+    let _ = terminal::enable_raw_mode();
+    let _ = ratatui::crossterm::execute!(
+        std::io::stdout(),
+        terminal::EnterAlternateScreen,
+        terminal::Clear(terminal::ClearType::All),
+        ratatui::crossterm::cursor::Hide
+    );
 }
 
 /// Saves and exports killed mid-write (kill -9) leave their temporary files: remove those of

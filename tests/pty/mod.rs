@@ -249,6 +249,21 @@ impl Explorer {
         (status, after, out)
     }
 
+    /// The child's process id.
+    pub fn pid(&self) -> u32 {
+        self.child.id()
+    }
+
+    /// The terminal's settings now, while the child runs.
+    pub fn termios_now(&self) -> Termios {
+        tcgetattr(self.slave.as_ref().expect("the slave is open")).expect("tcgetattr")
+    }
+
+    /// Everything the child printed so far.
+    pub fn output(&self) -> String {
+        String::from_utf8_lossy(&self.output).into_owned()
+    }
+
     /// Kill the child and fail with what it printed.
     fn fail(&mut self, why: &str) -> ! {
         let _ = self.child.kill();

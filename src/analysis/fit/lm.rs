@@ -26,6 +26,11 @@ pub trait Residuals {
     fn max_step(&self, _j: usize) -> f64 {
         1.0
     }
+    /// Whether the work was stopped from outside ([`crate::analysis::work::Watch`]): the
+    /// minimizer then ends at once.
+    fn stopped(&self) -> bool {
+        false
+    }
     /// ∂r/∂x at `x`, where `r` = r(x).
     fn jacobian(&self, x: &[f64], r: &[f64]) -> Option<DMatrix<f64>> {
         forward_jacobian(self, x, r)
@@ -69,7 +74,7 @@ pub struct Options {
 impl Default for Options {
     fn default() -> Self {
         Options {
-            max_iterations: 200,
+            max_iterations: crate::analysis::work::FIT_ITERATIONS,
             ftol: 1e-9,
             xtol: 1e-8,
         }
@@ -131,6 +136,9 @@ pub fn minimize<P: Residuals>(
     let mut converged = false;
     let mut it = 0;
     while it < opts.max_iterations && !converged {
+        if p.stopped() {
+            return None;
+        }
         it += 1;
         let jtj = jac.transpose() * &jac;
         let g = jac.transpose() * DVector::from_column_slice(&r);

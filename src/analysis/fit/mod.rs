@@ -7,6 +7,7 @@
 //!   estimates read off the data and restarted from a few others, with standard errors, 95 %
 //!   intervals and correlations from the Jacobian and the residual variance ([`stats`]).
 
+mod bins;
 mod checks;
 mod cor;
 pub mod lm;
@@ -17,7 +18,7 @@ pub mod stats;
 mod trace;
 pub mod verdict;
 
-pub use multi::fit;
+pub use multi::{fit, fit_watched};
 pub use result::{Estimate, FitData, MultiFit, MultiFitError};
 pub use single::{Fit, FitError, fit_k_r};
 

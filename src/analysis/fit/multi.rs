@@ -1,6 +1,7 @@
 //! Several parameters at once: restarts, the best minimum, and its uncertainty.
 
 use super::Param;
+use super::bins::Samples;
 use super::checks::{check_free, check_impulse, check_scale, too_few, verify_exact};
 use super::cor::CorProblem;
 use super::lm::{self, Best, Residuals, Solution};
@@ -8,7 +9,8 @@ use super::result::{Estimate, FitData, MultiFit, MultiFitError};
 use super::stats::{CONDITION_MAX, uncertainty};
 use super::trace::TraceProblem;
 use super::verdict::{self, judge};
-use crate::measured::CorPoint;
+use crate::analysis::work::{Unwatched, Watch, fit_iterations, fit_run_cost};
+use crate::measured::{CorPoint, Trace, TraceSummary};
 use crate::model::contact::ContactLaw;
 use crate::model::params::ImpactParams;
 
@@ -19,31 +21,23 @@ pub fn fit(
     data: FitData,
     free: &[Param],
 ) -> Result<MultiFit, MultiFitError> {
+    fit_watched(base, law, data, free, &Unwatched)
+}
+
+/// [`fit`], each model run of a trace fit reported to `watch`, which may stop it
+/// ([`MultiFitError::Interrupted`]); a trace fit's work is checked against the work limit
+/// before it starts ([`crate::analysis::work::fit_iterations`]).
+pub fn fit_watched(
+    base: &ImpactParams,
+    law: ContactLaw,
+    data: FitData,
+    free: &[Param],
+    watch: &dyn Watch,
+) -> Result<MultiFit, MultiFitError> {
     check_free(free)?;
     base.validate().map_err(MultiFitError::Params)?;
     match data {
-        FitData::Trace(trace) => {
-            let summary = trace.summary().map_err(MultiFitError::NoPulse)?;
-            too_few(trace.time.len(), free.len() + 2)?;
-            if !free.contains(&Param::V0) {
-                check_impulse(base, trace, &summary)?;
-            }
-            let p = TraceProblem::new(*base, law, free.to_vec(), trace, summary);
-            // a minimum at the noise floor needs no further start
-            let floor = 1.5 * summary.noise;
-            let sol =
-                best(&p, p.starts(), |x| p.bounds(x), floor).ok_or(MultiFitError::NoAnswer)?;
-            let model = p.model(&sol.sol.x).map(|m| m.0).unwrap_or_default();
-            let ball = p.ball(&sol.sol.x);
-            let rms = rms(&sol.sol.residuals);
-            let mut f = finish(ball, law, free, &sol, None, rms, model)?;
-            // the model's misses matter only above the noise's scale (a noise-free synthetic
-            // trace leaves rounding's systematic residuals)
-            let lack = verdict::runs_test(&sol.sol.residuals)
-                .filter(|_| rms > 1e-6 * summary.peak.abs().max(f64::MIN_POSITIVE));
-            judge(&mut f, lack);
-            Ok(f)
-        }
+        FitData::Trace(trace) => fit_trace(base, law, trace, free, watch, Samples::of),
         FitData::Cor(points) => {
             if free.contains(&Param::V0) {
                 return Err(MultiFitError::SpeedNotFree);
@@ -51,6 +45,55 @@ pub fn fit(
             fit_cor(base, law, points, free)
         }
     }
+}
+
+/// A force–time trace, compared with the model at the samples `choose` makes of it (rows or
+/// bins, [`Samples::of`]).
+pub(super) fn fit_trace(
+    base: &ImpactParams,
+    law: ContactLaw,
+    trace: &Trace,
+    free: &[Param],
+    watch: &dyn Watch,
+    choose: fn(&Trace, &TraceSummary) -> Samples,
+) -> Result<MultiFit, MultiFitError> {
+    let summary = trace.summary().map_err(MultiFitError::NoPulse)?;
+    too_few(trace.time.len(), free.len() + 2)?;
+    if !free.contains(&Param::V0) {
+        check_impulse(base, trace, &summary)?;
+    }
+    let samples = choose(trace, &summary);
+    let rows = trace.time.len();
+    let bins = samples.len();
+    let p = TraceProblem::new(*base, law, free.to_vec(), trace, summary, samples, watch);
+    let starts = p.starts();
+    let run = fit_run_cost(bins, p.history(), law);
+    let what = || {
+        format!(
+            "a fit of {} parameters to {rows} rows ({bins} bins)",
+            free.len()
+        )
+    };
+    let iterations = fit_iterations(run, free.len() + 2, starts.len(), law, what)?;
+    // a minimum at the noise floor needs no further start
+    let floor = 1.5 * summary.noise;
+    let sol = best(&p, starts, |x| p.bounds(x), floor, iterations);
+    if p.stopped() {
+        return Err(MultiFitError::Interrupted);
+    }
+    let sol = sol.ok_or(MultiFitError::NoAnswer)?;
+    let model = p.model_at_rows(&sol.sol.x).unwrap_or_default();
+    let ball = p.ball(&sol.sol.x);
+    let rms = rms(&sol.sol.residuals);
+    let mut f = finish(ball, law, free, &sol, None, rms, model)?;
+    // the trace's rows, whether compared one by one or in bins
+    f.points = rows;
+    // the model's misses matter only above the noise's scale (a noise-free synthetic trace
+    // leaves rounding's systematic residuals)
+    let lack = verdict::runs_test(&sol.sol.residuals)
+        .filter(|_| rms > 1e-6 * summary.peak.abs().max(f64::MIN_POSITIVE));
+    judge(&mut f, lack);
+    Ok(f)
 }
 
 /// A COR table (with peak forces and contact times where given).
@@ -63,7 +106,19 @@ fn fit_cor(
     let p = CorProblem::new(*base, law, free.to_vec(), points);
     too_few(p.count(), free.len())?;
     check_scale(&p)?;
-    let mut sol = best(&p, p.starts(), |x| p.bounds(x), 0.0).ok_or(MultiFitError::NoAnswer)?;
+    let starts = p.starts();
+    let run = fit_run_cost(points.len(), 0, law);
+    let what = || {
+        format!(
+            "a fit of {} parameters to {} rows",
+            free.len(),
+            points.len()
+        )
+    };
+    // (one start more: a table of mixed kinds is fitted again from the first minimum)
+    let iterations = fit_iterations(run, free.len(), starts.len() + 1, law, what)?;
+    let mut sol =
+        best(&p, starts, |x| p.bounds(x), 0.0, iterations).ok_or(MultiFitError::NoAnswer)?;
     let mut t_dof = None;
     if p.count() > points.len() {
         // mixed kinds: weigh each by its own scatter, then fit again from there
@@ -82,7 +137,13 @@ fn fit_cor(
                 t_dof = Some(t_dof.map_or(dof, |d: usize| d.min(dof)));
             }
         }
-        let again = best(&p, vec![sol.sol.x.clone()], |x| p.bounds(x), 0.0);
+        let again = best(
+            &p,
+            vec![sol.sol.x.clone()],
+            |x| p.bounds(x),
+            0.0,
+            iterations,
+        );
         let its = sol.sol.iterations;
         sol = again.ok_or(MultiFitError::NoAnswer)?;
         sol.sol.iterations += its;
@@ -129,13 +190,19 @@ fn finite(s: &Solution) -> bool {
 /// two starts have converged to the same lowest cost (to 1e-9) where the data pin every
 /// parameter: the restarts are there to escape a local minimum, and two ways into the same
 /// one make another unlikely. (A flat region, where a parameter has no effect, is not such a
-/// minimum: two starts in it would agree and stop the search too early.)
+/// minimum: two starts in it would agree and stop the search too early.) Each start takes at
+/// most `max_iterations` ([`crate::analysis::work::fit_iterations`]).
 fn best<P: Residuals>(
     p: &P,
     starts: Vec<Vec<f64>>,
     bounds: impl Fn(&[f64]) -> (Vec<f64>, Vec<f64>),
     floor: f64,
+    max_iterations: usize,
 ) -> Option<Best> {
+    let opts = lm::Options {
+        max_iterations,
+        ..lm::Options::default()
+    };
     // the most promising start first: one evaluation each
     let mut starts: Vec<(f64, Vec<f64>)> = starts
         .into_iter()
@@ -145,8 +212,11 @@ fn best<P: Residuals>(
     let mut best: Option<Best> = None;
     let mut iterations = 0;
     for (_, x0) in starts {
+        if p.stopped() {
+            return None;
+        }
         let (lo, hi) = bounds(&x0);
-        let Some(s) = lm::minimize(p, &x0, &lo, &hi, lm::Options::default()) else {
+        let Some(s) = lm::minimize(p, &x0, &lo, &hi, opts) else {
             continue;
         };
         iterations += s.iterations;

@@ -141,6 +141,17 @@ pub enum MultiFitError {
     /// A value that is not a finite number came up on the way (data or parameters far outside
     /// any ball's range).
     NonFinite,
+    /// The fit's work is beyond the work limit ([`crate::analysis::work`]), refused before it
+    /// started.
+    TooMuchWork(crate::analysis::work::TooMuchWork),
+    /// The fit's watch stopped it ([`crate::analysis::work::Watch`]: Ctrl-C, KeyboardInterrupt).
+    Interrupted,
+}
+
+impl From<crate::analysis::work::TooMuchWork> for MultiFitError {
+    fn from(e: crate::analysis::work::TooMuchWork) -> Self {
+        MultiFitError::TooMuchWork(e)
+    }
 }
 
 impl fmt::Display for MultiFitError {
@@ -190,6 +201,8 @@ impl fmt::Display for MultiFitError {
                 "the fit met a value that is not a finite number: the data lie far outside \
                  any ball's range"
             ),
+            MultiFitError::TooMuchWork(e) => write!(f, "{e}"),
+            MultiFitError::Interrupted => write!(f, "interrupted: the fit was stopped"),
         }
     }
 }

@@ -1,15 +1,20 @@
 //! The force–time problem: x = (ln p₁ … ln p_k, t0, b); the model force at a sample time t is
 //! b + F(t − t0), F from the solver's history (linear interpolation between samples spaced
 //! no wider than the data's, at least 400 over the pulse, by [`interpolate`]),
-//! zero outside the contact.
+//! zero outside the contact. A dense trace is compared in bins of its rows, each residual
+//! weighted by √(rows) ([`super::bins`]); every model run is reported to the fit's
+//! [`Watch`], which may stop the fit.
 
+use super::bins::Samples;
 use super::lm::{Residuals, forward_jacobian};
 use super::{Param, apply};
+use crate::analysis::work::Watch;
 use crate::measured::{Trace, TraceSummary};
 use crate::model::contact::ContactLaw;
 use crate::model::params::ImpactParams;
 use crate::solver::{SolveOptions, simulate};
 use nalgebra::DMatrix;
+use std::cell::Cell;
 
 pub(super) struct TraceProblem<'a> {
     pub base: ImpactParams,
@@ -17,8 +22,16 @@ pub(super) struct TraceProblem<'a> {
     pub free: Vec<Param>,
     pub trace: &'a Trace,
     pub summary: TraceSummary,
-    samples: usize,
+    /// The rows, or their bins, the residuals are taken at.
+    pub data: Samples,
+    /// Samples of the model's history over the contact.
+    history: usize,
     log_step: f64,
+    watch: &'a dyn Watch,
+    /// Model runs so far.
+    runs: Cell<u64>,
+    /// The watch said stop: every later run gives no answer, and the fit ends.
+    stopped: Cell<bool>,
 }
 
 /// Model force on a uniform history grid `t` (t[0] = 0), at time `s`, and its slope:
@@ -60,12 +73,15 @@ impl<'a> TraceProblem<'a> {
         free: Vec<Param>,
         trace: &'a Trace,
         summary: TraceSummary,
+        data: Samples,
+        watch: &'a dyn Watch,
     ) -> Self {
-        // at least 400 samples over the contact, and no fewer than the data have
-        let n = trace.time.len();
-        let dt = (trace.time[n - 1] - trace.time[0]) / (n - 1) as f64;
+        // at least 400 samples over the contact, and no fewer than the data (or their bins)
+        // have
+        let n = data.len();
+        let dt = (data.time[n - 1] - data.time[0]) / (n - 1).max(1) as f64;
         let width = summary.t_end - summary.t_start;
-        let samples = ((width / dt) as usize).clamp(400, 20_000);
+        let history = ((width / dt) as usize).clamp(400, 20_000);
         let log_step = if law == ContactLaw::Linear {
             1e-5
         } else {
@@ -77,9 +93,46 @@ impl<'a> TraceProblem<'a> {
             free,
             trace,
             summary,
-            samples,
+            data,
+            history,
             log_step,
+            watch,
+            runs: Cell::new(0),
+            stopped: Cell::new(false),
         }
+    }
+
+    /// Samples of each model run's history.
+    pub fn history(&self) -> usize {
+        self.history
+    }
+
+    /// Whether the watch stopped the fit.
+    pub fn stopped(&self) -> bool {
+        self.stopped.get()
+    }
+
+    /// The solver's history at `x`, or `None` when it has no answer or the watch stops the
+    /// fit (asked before every run).
+    fn run(&self, x: &[f64]) -> Option<crate::solver::History> {
+        let runs = self.runs.get() + 1;
+        self.runs.set(runs);
+        if self.stopped.get() || !self.watch.step(runs) {
+            self.stopped.set(true);
+            return None;
+        }
+        let p = self.ball(x);
+        p.validate().ok()?;
+        let opts = SolveOptions::default().with_samples(self.history);
+        Some(simulate(&p, self.law, &opts).ok()?.history)
+    }
+
+    /// The model force at every row of the trace (not its bins), for the report and plots.
+    pub fn model_at_rows(&self, x: &[f64]) -> Option<Vec<f64>> {
+        let h = self.run(x)?;
+        let (t0, b) = (x[self.k()], x[self.k() + 1]);
+        let f = |t: f64| interpolate(&h.t, &h.force, t - t0).0 + b;
+        Some(self.trace.time.iter().map(|&t| f(t)).collect())
     }
 
     pub fn k(&self) -> usize {
@@ -91,20 +144,13 @@ impl<'a> TraceProblem<'a> {
         apply(&self.base, &self.free, &values)
     }
 
-    /// (model force at each sample, its slope in t) or `None` when the solver has no answer.
+    /// (model force at each sample (row or bin), its slope in t) or `None` when the solver has
+    /// no answer.
     pub fn model(&self, x: &[f64]) -> Option<(Vec<f64>, Vec<f64>)> {
-        let p = self.ball(x);
-        p.validate().ok()?;
-        let r = simulate(
-            &p,
-            self.law,
-            &SolveOptions::default().with_samples(self.samples),
-        )
-        .ok()?;
+        let h = self.run(x)?;
         let (t0, b) = (x[self.k()], x[self.k() + 1]);
-        let h = &r.history;
         Some(
-            self.trace
+            self.data
                 .time
                 .iter()
                 .map(|&t| {
@@ -186,12 +232,18 @@ impl<'a> TraceProblem<'a> {
 impl Residuals for TraceProblem<'_> {
     fn residuals(&self, x: &[f64]) -> Option<Vec<f64>> {
         let (f, _) = self.model(x)?;
+        let d = &self.data;
         Some(
             f.iter()
-                .zip(&self.trace.force)
-                .map(|(m, d)| m - d)
+                .zip(&d.force)
+                .zip(&d.weight)
+                .map(|((m, d), w)| w * (m - d))
                 .collect(),
         )
+    }
+
+    fn stopped(&self) -> bool {
+        self.stopped.get()
     }
 
     fn step(&self, j: usize) -> f64 {
@@ -228,9 +280,9 @@ impl Residuals for TraceProblem<'_> {
         let (_, slope) = self.model(x)?;
         let mut jac = DMatrix::zeros(r.len(), k + 2);
         jac.columns_mut(0, k).copy_from(&part);
-        for (i, s) in slope.iter().enumerate() {
-            jac[(i, k)] = -s;
-            jac[(i, k + 1)] = 1.0;
+        for (i, (s, w)) in slope.iter().zip(&self.data.weight).enumerate() {
+            jac[(i, k)] = -w * s;
+            jac[(i, k + 1)] = *w;
         }
         Some(jac)
     }
@@ -250,5 +302,8 @@ impl Residuals for Sub<'_, '_> {
     }
     fn step(&self, j: usize) -> f64 {
         self.p.step(j)
+    }
+    fn stopped(&self) -> bool {
+        self.p.stopped()
     }
 }

@@ -3,7 +3,7 @@
 //! report as text or JSON, and the `--plot` and `--save` that go with every fit.
 
 use super::{FitArgs, FitFormat, Loaded, Source};
-use crate::analysis::fit::{FitData, MultiFit, MultiFitError, Param, fit};
+use crate::analysis::fit::{FitData, MultiFit, MultiFitError, Param, fit_watched};
 use crate::api::Ball;
 use crate::atomic::Outputs;
 use crate::cli::measured_file as files;
@@ -153,6 +153,8 @@ fn fit_error(e: MultiFitError, data: &Loaded, free: &[Param]) -> anyhow::Error {
         ),
         // no answer is not the input's fault: exit 1 (cli::exit_code)
         MultiFitError::NoAnswer => anyhow::Error::new(e),
+        // Ctrl-C or SIGTERM: exit 130, nothing written
+        MultiFitError::Interrupted => crate::cli::budget::Interrupted.into(),
         e => anyhow::anyhow!("{e}"),
     }
 }
@@ -172,7 +174,10 @@ pub fn run(
         Some(t) => FitData::Trace(t),
         None => FitData::Cor(&data.points),
     };
-    let f = fit(&ball.params, ball.law, input, &free).map_err(|e| fit_error(e, &data, &free))?;
+    let watch = crate::cli::budget::Watcher::new("model runs");
+    let f = fit_watched(&ball.params, ball.law, input, &free, &watch)
+        .map_err(|e| fit_error(e, &data, &free))?;
+    drop(watch);
     // the data's speed: the trace's (the ball's v0), else the first row's
     let v0 = data.points.first().map_or(ball.params.v0, |p| p.v0);
     let fitted = ImpactParams { v0, ..f.params };
@@ -265,7 +270,7 @@ pub fn single_extras(
         return Ok(());
     }
     let data = load(a, &Source::Cor(cor), ball)?;
-    let f = fit(fitted, ball.law, FitData::Cor(&data.points), &[Param::KR])
+    let f = crate::analysis::fit::fit(fitted, ball.law, FitData::Cor(&data.points), &[Param::KR])
         .map_err(|e| fit_error(e, &data, &[Param::KR]))?;
     publish(a, out, report, (ball, &data, &f, fitted))
 }

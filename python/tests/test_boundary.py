@@ -1,0 +1,156 @@
+"""Python like Python at the native boundary (issue 28): panics raise RuntimeError, numbers
+too large name their argument, messages carry no raw control characters, what the command
+line refuses is refused, and Ctrl-C stops long work within a fraction of a second."""
+
+import os
+import signal
+import threading
+import time
+
+import numpy as np
+import pytest
+
+import bouncelab
+from bouncelab import _boundary
+from test_bouncelab import no_user_presets  # noqa: F401
+
+
+# ---- panics
+
+
+class PanicException(BaseException):
+    """Stands for PyO3's pyo3_runtime.PanicException (matched by its name)."""
+
+
+def test_a_panic_becomes_a_runtime_error_with_its_message():
+    def native(**_):
+        raise PanicException("Singular value was NaN\x1b[2J")
+
+    f = _boundary.guard(native)
+    with pytest.raises(RuntimeError) as e:
+        f(x=1)
+    assert "Singular value was NaN" in str(e.value)
+    assert "\x1b" not in str(e.value)
+    # what is not a panic passes unchanged
+    g = _boundary.guard(lambda: (_ for _ in ()).throw(KeyboardInterrupt()))
+    with pytest.raises(KeyboardInterrupt):
+        g()
+
+
+def test_far_out_drop_heights_raise_an_exception_that_except_exception_catches():
+    # once a PanicException (a BaseException) from nalgebra's SVD
+    with pytest.raises(Exception) as e:
+        bouncelab.fit_drops(
+            [3e4, 6e4, 9e4], [1.5e4, 3e4, 4.5e4], preset="tennis", drag_coefficient=0.47
+        )
+    assert isinstance(e.value, (ValueError, RuntimeError)), repr(e.value)
+
+
+# ---- overflow names its argument
+
+
+@pytest.mark.parametrize(
+    "call, name",
+    [
+        (lambda: bouncelab.run(history=True, samples=-1), "samples"),
+        (lambda: bouncelab.drop(bounces=10**30), "bounces"),
+        (lambda: bouncelab.run(v0=10**400), "v0"),
+        (lambda: bouncelab.run_params(m=1, k_p=1, c=1, k_r=1, v0=10**400), "v0"),
+    ],
+)
+def test_a_number_out_of_range_names_its_argument(call, name):
+    with pytest.raises((OverflowError, ValueError)) as e:
+        call()
+    assert str(e.value).startswith(f"invalid {name}:"), str(e.value)
+    assert len(str(e.value)) < 200
+
+
+# ---- no raw control characters
+
+
+@pytest.mark.parametrize("raw", ["\x1b[31m", "\x07", "\x00", "\u202e"])
+def test_messages_show_control_characters_visibly(raw):
+    with pytest.raises(ValueError) as e:
+        bouncelab.run(preset=f"gol{raw}f")
+    message = str(e.value)
+    assert raw not in message, repr(message)
+    assert "gol" in message
+
+
+# ---- refused as the command line refuses
+
+
+def test_samples_without_history_is_refused():
+    with pytest.raises(ValueError, match="history"):
+        bouncelab.run(samples=5)
+    with pytest.raises(ValueError, match="history"):
+        bouncelab.run_normalized(samples=5)
+    assert len(bouncelab.run(samples=50, history=True).t) == 50
+
+
+def test_drag_coefficient_without_drag_is_refused():
+    with pytest.raises(ValueError, match="drag=False"):
+        bouncelab.drop(drag=False, drag_coefficient=0.5)
+    with pytest.raises(ValueError, match="drag=False"):
+        bouncelab.drop(drag=False, air_density=1.0)
+
+
+def test_an_empty_sweep_is_refused():
+    with pytest.raises(ValueError, match="^invalid zeta: no value given"):
+        bouncelab.sweep_zeta([0.4], [])
+    with pytest.raises(ValueError, match="^invalid speeds: no value given"):
+        bouncelab.sweep_velocity("golf", [])
+
+
+def test_twenty_thousand_drops_are_beyond_the_work_limit():
+    h = np.full(20_000, 1.0)
+    r = np.linspace(0.4, 0.6, 20_000)
+    start = time.perf_counter()
+    with pytest.raises(ValueError, match="^too much work: a fit of"):
+        bouncelab.fit_drops(h, r, preset="tennis")
+    # refused before the fit: it would take minutes
+    assert time.perf_counter() - start < 5
+
+
+# ---- Ctrl-C
+
+
+def interrupted_after(delay, call):
+    """Send SIGINT to this process `delay` s into `call`; the seconds from the signal to the
+    KeyboardInterrupt."""
+    sent = []
+
+    def send():
+        sent.append(time.perf_counter())
+        os.kill(os.getpid(), signal.SIGINT)
+
+    timer = threading.Timer(delay, send)
+    timer.start()
+    try:
+        with pytest.raises(KeyboardInterrupt):
+            call()
+    finally:
+        timer.cancel()
+    assert sent, "the work ended before the signal"
+    return time.perf_counter() - sent[0]
+
+
+def test_ctrl_c_stops_a_sweep_promptly():
+    zetas = np.logspace(-2, 2, 25_000)
+    late = interrupted_after(0.3, lambda: bouncelab.sweep_zeta([1.0], zetas, law="hertz"))
+    print(f"KeyboardInterrupt {late * 1e3:.0f} ms after SIGINT")
+    assert late < 0.5
+
+
+def test_ctrl_c_stops_a_trace_fit_promptly():
+    # a dense Hertz trace with the speed free: seconds of fitting
+    t = np.arange(999_999) * 1e-8
+    s = (t - 2e-3) / 3e-3
+    f = np.where((s > 0) & (s < 1), 60.0 * np.sin(np.pi * np.clip(s, 0, 1)), 0.0)
+    f += np.where(np.arange(t.size) % 2 == 0, 0.1, -0.1)
+    call = lambda: bouncelab.fit_trace(  # noqa: E731
+        t, f, preset="tennis", law="hertz", free=["k_h", "c", "k_r", "v0"]
+    )
+    late = interrupted_after(1.5, call)
+    print(f"KeyboardInterrupt {late * 1e3:.0f} ms after SIGINT")
+    assert late < 0.5
