@@ -63,6 +63,7 @@ pub struct Ball {
     pub fit: Option<crate::preset::FitTable>,
 }
 
+mod batch;
 mod collide;
 mod entry;
 mod error;
@@ -71,6 +72,10 @@ mod intervals;
 mod mc;
 mod report;
 mod warnings;
+pub use batch::{
+    BallOutcome, BatchReport, BatchSetup, BatchSummary, BatchUnanswered, StandardRef,
+    quantity as batch_quantity,
+};
 pub use collide::CollisionReport;
 pub use entry::Overrides;
 pub use error::BallError;
