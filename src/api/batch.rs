@@ -115,6 +115,12 @@ impl Ball {
         setup: &BatchSetup<'_>,
     ) -> BallOutcome {
         let mut o = BallOutcome::new(id, line, data.kind());
+        // the rows given (a fit that answers counts the values it fitted)
+        o.points = match data {
+            Data::Trace(t) => t.time.len(),
+            Data::Cor(t) => t.points.len(),
+            Data::Drop(d) => d.drops.len(),
+        };
         let f = match self.fit_batch_data(data, setup) {
             Ok(f) => f,
             Err(e) => {

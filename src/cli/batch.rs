@@ -363,7 +363,7 @@ fn text(
     if warned > 0 {
         writeln!(
             out,
-            "{warned} balls carry warnings of their fit (--format json or --csv-out lists them)"
+            "balls whose fit warns: {warned} (--format json or --csv-out gives the warnings)"
         )?;
     }
     Ok(())
