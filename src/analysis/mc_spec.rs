@@ -3,6 +3,7 @@
 //! errors of bad input (docs/scale.md).
 
 use super::fit::Param;
+use super::mc_corr::Correlation;
 use crate::model::params::ImpactParams;
 use crate::solver::SolveError;
 use serde::Serialize;
@@ -129,6 +130,12 @@ pub enum McError {
         /// The parameter's own message.
         reason: String,
     },
+    /// A `--correlate` that names no pair of varied parameters, or no correlation matrix.
+    #[error("invalid correlate: {0}")]
+    Correlate(String),
+    /// `--vary fit` on a ball without a saved fit, or with options that do not go with it.
+    #[error("invalid vary fit: {0}")]
+    Fit(String),
     /// An impact without an answer (not the input's fault).
     #[error(transparent)]
     Solve(SolveError),
@@ -171,6 +178,8 @@ pub struct McSpec {
     pub samples: usize,
     /// The generator's seed.
     pub seed: u64,
+    /// Correlations between the varied parameters (`None`: independent).
+    pub correlation: Option<Correlation>,
 }
 
 impl McSpec {
@@ -206,6 +215,17 @@ impl McSpec {
             dist,
             samples,
             seed,
+            correlation: None,
+        })
+    }
+
+    /// This spec with the varied parameters correlated by `pairs` (A, B, ρ), the matrix
+    /// checked positive definite ([`Correlation::new`]).
+    pub fn with_correlation(self, pairs: Vec<(Varied, Varied, f64)>) -> Result<McSpec, McError> {
+        let correlation = Some(Correlation::new(&self.vary, pairs)?);
+        Ok(McSpec {
+            correlation,
+            ..self
         })
     }
 }
