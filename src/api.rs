@@ -71,6 +71,7 @@ mod fit;
 mod intervals;
 mod mc;
 mod report;
+mod rows;
 mod warnings;
 pub use batch::{
     BallOutcome, BatchReport, BatchSetup, BatchSummary, BatchUnanswered, StandardRef,
@@ -82,6 +83,7 @@ pub use error::BallError;
 pub use intervals::{Intervals, bands, holds, intervals};
 pub use mc::{McReport, MonteCarlo};
 pub use report::{BallHeader, Energy, FitReport, ImpactReport, MeasuredAt};
+pub use rows::{ImpactRow, impact_row, impact_rows};
 pub use warnings::{ENERGY_RESIDUAL_MAX, indentation_warning};
 
 impl Ball {
