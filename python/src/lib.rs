@@ -17,6 +17,7 @@ use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
+mod arrays;
 mod collide;
 mod fits;
 mod impact;
@@ -400,6 +401,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(fits::fit_cor_table, m)?)?;
     m.add_function(wrap_pyfunction!(fits::fit_drops, m)?)?;
     m.add_function(wrap_pyfunction!(mc::monte_carlo, m)?)?;
+    m.add_function(wrap_pyfunction!(arrays::impacts, m)?)?;
     m.add_function(wrap_pyfunction!(mc::monte_carlo_chunk, m)?)?;
     m.add_function(wrap_pyfunction!(mc::monte_carlo_merge, m)?)?;
     Ok(())
