@@ -18,6 +18,7 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
 mod arrays;
+mod catalog_cache;
 mod collide;
 mod fits;
 mod impact;
@@ -64,8 +65,9 @@ fn source(name: &str) -> PyResult<ParamSource> {
 
 /// The presets the command line knows: the embedded ones and the user's folder
 /// (`$XDG_CONFIG_HOME/bouncelab/presets`).
-fn load_catalog() -> PyResult<Catalog> {
-    Catalog::load(catalog::user_presets_dir().as_deref(), None)
+fn load_catalog() -> PyResult<std::sync::Arc<Catalog>> {
+    // kept between calls while the folder is unchanged (catalog_cache.rs)
+    catalog_cache::catalog(catalog::user_presets_dir().as_deref())
         .map_err(|e| error(BallError::Catalog(e)))
 }
 
