@@ -51,9 +51,9 @@ fn draws_only(b: divan::Bencher) {
 
 /// The impact alone, at the nominal golf ball (the closed form of `map::fast`).
 #[divan::bench]
-fn impact_only() -> f64 {
+fn impact_only(b: divan::Bencher) {
     let golf = Ball::from_preset("golf").unwrap();
-    impact(black_box(&golf.params), golf.law).unwrap().cor
+    b.bench_local(|| impact(black_box(&golf.params), golf.law).unwrap().cor);
 }
 
 /// One sample with a correlation (the Cholesky product added).

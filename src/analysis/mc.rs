@@ -29,8 +29,8 @@ use rayon::prelude::*;
 use serde::Serialize;
 use statrs::distribution::{ContinuousCDF, Normal};
 
-pub use super::mc_corr::{Correlation, parse_correlate};
-pub use super::mc_spec::{Dist, McError, McSpec, Spread, Varied, parse_vary};
+pub use super::mc_corr::parse_correlate;
+pub use super::mc_spec::{Correlation, Dist, McError, McSpec, Spread, Varied, parse_vary};
 pub use super::mc_stats::{PROBS, Quantiles, Stats};
 
 /// One sample's answer; `contact_time` NaN where the ball stays at the wall.

@@ -5,87 +5,10 @@
 //! and uses y = L z: y is standard normal with correlation R. `normal` and `lognormal` take
 //! y for their normal variate, so the normal's parameters have correlation R exactly (the
 //! lognormal's, that of their logarithms); `uniform` takes U = 2Φ(y) − 1 (a Gaussian copula:
-//! the uniforms' rank correlation is (6/π) asin(R/2)).
+//! the uniforms' rank correlation is (6/π) asin(R/2)). The matrix and its factor are
+//! [`super::mc_spec::Correlation`] (the spec holds it); this file reads `--correlate`.
 
-use super::mc_spec::{McError, Spread, Varied};
-use nalgebra::DMatrix;
-
-/// A correlation matrix over a spec's varied parameters (in the spec's order) and its
-/// Cholesky factor.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Correlation {
-    /// R, row-major, n × n: symmetric, unit diagonal, positive definite.
-    pub matrix: Vec<Vec<f64>>,
-    /// The pairs as given, (first, second, ρ), for the reports.
-    pub pairs: Vec<(Varied, Varied, f64)>,
-    /// L, lower triangular, row-major: R = L Lᵀ.
-    lower: Vec<Vec<f64>>,
-}
-
-impl Correlation {
-    /// R over `vary` with the off-diagonal `pairs` set (the rest 0), checked positive
-    /// definite by its Cholesky factorization.
-    pub fn new(vary: &[Spread], pairs: Vec<(Varied, Varied, f64)>) -> Result<Correlation, McError> {
-        let n = vary.len();
-        let index = |v: Varied| vary.iter().position(|s| s.what == v);
-        let mut r = DMatrix::<f64>::identity(n, n);
-        let mut set = vec![vec![false; n]; n];
-        for &(a, b, rho) in &pairs {
-            let name = || format!("{}:{}", a.name(), b.name());
-            let (Some(i), Some(j)) = (index(a), index(b)) else {
-                return Err(McError::Correlate(format!(
-                    "{} names a parameter not in --vary",
-                    name()
-                )));
-            };
-            if i == j {
-                return Err(McError::Correlate(format!(
-                    "{} correlates a parameter with itself",
-                    name()
-                )));
-            }
-            if !(rho.is_finite() && (-1.0..=1.0).contains(&rho)) {
-                return Err(McError::Correlate(format!(
-                    "{} = {rho}: a correlation lies in [-1, 1]",
-                    name()
-                )));
-            }
-            if set[i][j] {
-                return Err(McError::Correlate(format!("{} given twice", name())));
-            }
-            (set[i][j], set[j][i]) = (true, true);
-            (r[(i, j)], r[(j, i)]) = (rho, rho);
-        }
-        let matrix: Vec<Vec<f64>> = (0..n)
-            .map(|i| (0..n).map(|j| r[(i, j)]).collect())
-            .collect();
-        let chol = r.cholesky().ok_or_else(|| {
-            McError::Correlate(
-                "the correlation matrix is not positive definite (no set of parameters can be \
-                 correlated so): weaken the correlations"
-                    .into(),
-            )
-        })?;
-        let l = chol.l();
-        let lower = (0..n)
-            .map(|i| (0..n).map(|j| l[(i, j)]).collect())
-            .collect();
-        Ok(Correlation {
-            matrix,
-            pairs,
-            lower,
-        })
-    }
-
-    /// y = L z over the first `n` entries of `z`, in place (L lower triangular: from the
-    /// last row up, each row reads only entries not yet overwritten).
-    pub fn apply(&self, z: &mut [f64]) {
-        let n = self.lower.len();
-        for i in (0..n).rev() {
-            z[i] = (0..=i).map(|j| self.lower[i][j] * z[j]).sum();
-        }
-    }
-}
+use super::mc_spec::{McError, Varied};
 
 /// `k_p:c=0.5,k_p:k_r=-0.2`: pairs of varied parameters and their correlations.
 pub fn parse_correlate(text: &str) -> Result<Vec<(Varied, Varied, f64)>, McError> {
@@ -107,7 +30,7 @@ pub fn parse_correlate(text: &str) -> Result<Vec<(Varied, Varied, f64)>, McError
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::analysis::mc::parse_vary;
+    use crate::analysis::mc::{Correlation, parse_vary};
 
     #[test]
     fn cholesky_of_a_pair() {
