@@ -61,6 +61,7 @@ pub struct Ball {
     pub fit: Option<crate::preset::FitTable>,
 }
 
+mod batch;
 mod collide;
 mod entry;
 mod error;
@@ -68,14 +69,20 @@ mod fit;
 mod intervals;
 mod mc;
 mod report;
+mod rows;
 mod sweep;
 mod warnings;
+pub use batch::{
+    BallOutcome, BatchReport, BatchSetup, BatchSummary, BatchUnanswered, StandardRef,
+    quantity as batch_quantity,
+};
 pub use collide::CollisionReport;
 pub use entry::Overrides;
 pub use error::BallError;
 pub use intervals::{Intervals, bands, holds, intervals};
 pub use mc::{McReport, MonteCarlo};
 pub use report::{BallHeader, Energy, FitReport, ImpactReport, MeasuredAt};
+pub use rows::{ImpactRow, impact_row, impact_rows};
 pub use sweep::{sweep_zeta, sweep_zeta_watched};
 pub use warnings::{ENERGY_RESIDUAL_MAX, indentation_warning};
 

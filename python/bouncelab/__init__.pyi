@@ -72,6 +72,9 @@ class Impact:
     @property
     def displacement(self) -> Optional[Array]:
         """α(t) (m), with ``history=True``."""
+    def __eq__(self, other: object) -> bool:
+        """Equal values (every attribute; the history arrays element by element)."""
+    def __reduce__(self) -> tuple: ...
     def to_dict(self) -> dict:
         """The keys of ``bouncelab run --format json`` (``lambda``, not ``lambda_``)."""
 
@@ -114,6 +117,21 @@ def run_params(
     samples: Optional[int] = None,
 ) -> Impact:
     """One impact of a ball given by its parameters (SI); z_p = inf: no flattening."""
+
+def impacts(
+    *,
+    m: Floats,
+    k_p: Floats,
+    c: Floats,
+    k_r: Floats,
+    v0: Floats,
+    z_p: Optional[Floats] = None,
+    k_h: Optional[Floats] = None,
+    law: Law = "linear",
+) -> dict[str, Array]:
+    """Many impacts (SI), the arguments broadcast as a ufunc's: arrays of the broadcast shape
+    ``cor``, ``max_force``, ``contact_time`` (NaN without rebound), ``max_indentation``,
+    ``permanent_indentation`` and ``rebound`` (bool); element i is ``run_params``'s answer."""
 
 def sweep_zeta(lambdas: Floats, zetas: Floats, law: Law = "linear") -> dict[str, Array]:
     """COR, F̄_m, τ_f against ζ per λ (columns of ``bouncelab sweep zeta``)."""

@@ -2,6 +2,11 @@
 //! the run ([`ImpactReport`], what `bouncelab run --format json` writes).
 
 use crate::{array, error};
+
+// pickling and value equality (`__reduce__`, `__eq__`): a child module, so that it reads the
+// fields without widening them
+#[path = "impact_state.rs"]
+mod state;
 use bouncelab::Ball;
 use bouncelab::api::{ImpactReport, Intervals};
 use bouncelab::solver::ImpactResponse;
@@ -18,11 +23,11 @@ pub(crate) struct Impact {
     #[pyo3(get)]
     origin: String,
     #[pyo3(get)]
-    parameters: &'static str,
+    parameters: String,
     #[pyo3(get)]
-    law: &'static str,
+    law: String,
     #[pyo3(get)]
-    method: &'static str,
+    method: String,
     #[pyo3(get)]
     mass: f64,
     #[pyo3(get)]
@@ -98,9 +103,9 @@ impl Impact {
         Impact {
             preset: rep.ball.preset.map(String::from),
             origin: rep.ball.origin.to_string(),
-            parameters: b.source,
-            law: rep.ball.law,
-            method: rep.method.name(),
+            parameters: b.source.into(),
+            law: rep.ball.law.into(),
+            method: rep.method.name().into(),
             mass: rep.mass,
             k_p: rep.k_p,
             k_r: rep.k_r,
@@ -227,9 +232,9 @@ impl Impact {
         let d = PyDict::new(py);
         d.set_item("preset", &self.preset)?;
         d.set_item("origin", &self.origin)?;
-        d.set_item("parameters", self.parameters)?;
-        d.set_item("law", self.law)?;
-        d.set_item("method", self.method)?;
+        d.set_item("parameters", &self.parameters)?;
+        d.set_item("law", &self.law)?;
+        d.set_item("method", &self.method)?;
         let numbers = [
             ("mass", self.mass),
             ("k_p", self.k_p),
@@ -267,6 +272,30 @@ impl Impact {
             }
         }
         Ok(d)
+    }
+
+    /// Pickling (and `copy.copy`, `copy.deepcopy`): rebuilt from [`Impact::to_dict`] by
+    /// `Impact._from_state` (python/tests/test_pickle.py).
+    fn __reduce__<'py>(
+        slf: &Bound<'py, Self>,
+    ) -> PyResult<(Bound<'py, PyAny>, (Bound<'py, PyDict>,))> {
+        let rebuild = slf.get_type().getattr("_from_state")?;
+        Ok((rebuild, (slf.get().to_dict(slf.py())?,)))
+    }
+
+    /// The impact of a state [`Impact::__reduce__`] wrote.
+    #[classmethod]
+    fn _from_state(
+        _cls: &Bound<'_, pyo3::types::PyType>,
+        state: &Bound<'_, PyDict>,
+    ) -> PyResult<Impact> {
+        state::from_state(state)
+    }
+
+    /// Equal values: every attribute, the history arrays element by element (a NaN equals a
+    /// NaN, so that a copy equals its original).
+    fn __eq__(&self, other: PyRef<'_, Impact>) -> bool {
+        state::same(self, &other)
     }
 
     fn __repr__(&self) -> String {

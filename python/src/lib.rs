@@ -17,6 +17,8 @@ use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
+mod arrays;
+mod catalog_cache;
 mod collide;
 mod fits;
 mod impact;
@@ -78,8 +80,9 @@ fn source(name: &str) -> PyResult<ParamSource> {
 
 /// The presets the command line knows: the embedded ones and the user's folder
 /// (`$XDG_CONFIG_HOME/bouncelab/presets`).
-fn load_catalog() -> PyResult<Catalog> {
-    Catalog::load(catalog::user_presets_dir().as_deref(), None)
+fn load_catalog() -> PyResult<std::sync::Arc<Catalog>> {
+    // kept between calls while the folder is unchanged (catalog_cache.rs)
+    catalog_cache::catalog(catalog::user_presets_dir().as_deref())
         .map_err(|e| error(BallError::Catalog(e)))
 }
 
@@ -424,6 +427,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(fits::fit_cor_table, m)?)?;
     m.add_function(wrap_pyfunction!(fits::fit_drops, m)?)?;
     m.add_function(wrap_pyfunction!(mc::monte_carlo, m)?)?;
+    m.add_function(wrap_pyfunction!(arrays::impacts, m)?)?;
     m.add_function(wrap_pyfunction!(mc::monte_carlo_chunk, m)?)?;
     m.add_function(wrap_pyfunction!(mc::monte_carlo_merge, m)?)?;
     Ok(())

@@ -27,8 +27,10 @@ use chacha20::rand_core::SeedableRng;
 use rand_distr::{Distribution, StandardNormal, StandardUniform};
 use rayon::prelude::*;
 use serde::Serialize;
+use statrs::distribution::{ContinuousCDF, Normal};
 
-pub use super::mc_spec::{Dist, McError, McSpec, Spread, Varied, parse_vary};
+pub use super::mc_corr::parse_correlate;
+pub use super::mc_spec::{Correlation, Dist, McError, McSpec, Spread, Varied, parse_vary};
 pub use super::mc_stats::{PROBS, Quantiles, Stats};
 
 /// One sample's answer; `contact_time` NaN where the ball stays at the wall.
@@ -150,6 +152,9 @@ impl Sampler {
     fn draw(&self, index: u64) -> ([f64; Varied::ALL.len()], usize) {
         let mut rng = ChaCha8Rng::from_seed(self.key);
         rng.set_stream(index);
+        if let Some(c) = &self.spec.correlation {
+            return self.draw_correlated(&mut rng, c);
+        }
         let mut out = [0.0; Varied::ALL.len()];
         for (slot, s) in out.iter_mut().zip(&self.spec.vary) {
             let v = s.what.get(&self.base);
@@ -164,12 +169,39 @@ impl Sampler {
                 }
                 Dist::Lognormal => {
                     let n: f64 = StandardNormal.sample(&mut rng);
-                    let var = s.spread.mul_add(s.spread, 1.0).ln();
-                    v * (var.sqrt() * n - 0.5 * var).exp()
+                    lognormal(v, s.spread, n)
                 }
             };
         }
         (out, self.spec.vary.len())
+    }
+
+    /// Correlated draws (`super::mc_corr`): one standard normal per parameter, y = L z, each
+    /// y the normal variate of its parameter (a Gaussian copula for `uniform`).
+    fn draw_correlated(
+        &self,
+        rng: &mut ChaCha8Rng,
+        c: &Correlation,
+    ) -> ([f64; Varied::ALL.len()], usize) {
+        let n = self.spec.vary.len();
+        let mut y = [0.0; Varied::ALL.len()];
+        for slot in &mut y[..n] {
+            *slot = StandardNormal.sample(rng);
+        }
+        c.apply(&mut y[..n]);
+        let mut out = [0.0; Varied::ALL.len()];
+        for ((slot, s), &y) in out.iter_mut().zip(&self.spec.vary).zip(&y) {
+            let v = s.what.get(&self.base);
+            *slot = match self.spec.dist {
+                Dist::Normal => v * (1.0 + s.spread * y),
+                Dist::Uniform => {
+                    let u = Normal::standard().cdf(y);
+                    v * (1.0 + s.spread * (2.0 * u - 1.0))
+                }
+                Dist::Lognormal => lognormal(v, s.spread, y),
+            };
+        }
+        (out, n)
     }
 
     /// The ball of sample `index`, checked. The values are set in [`Varied::ALL`]'s order (z_p
@@ -234,6 +266,12 @@ impl Sampler {
         }
         Ok(out)
     }
+}
+
+/// v·exp(σn − σ²/2), σ² = ln(1 + s²): mean v and sd s·v for a standard normal n.
+fn lognormal(v: f64, spread: f64, n: f64) -> f64 {
+    let var = spread.mul_add(spread, 1.0).ln();
+    v * (var.sqrt() * n - 0.5 * var).exp()
 }
 
 /// One impact as `bouncelab run` solves it (COR, F_m, t_f): the closed form where it answers

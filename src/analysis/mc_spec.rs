@@ -5,6 +5,7 @@
 use super::fit::Param;
 use crate::model::params::ImpactParams;
 use crate::solver::SolveError;
+use nalgebra::DMatrix;
 use serde::Serialize;
 
 /// The distribution of every varied parameter.
@@ -129,6 +130,12 @@ pub enum McError {
         /// The parameter's own message.
         reason: String,
     },
+    /// A `--correlate` that names no pair of varied parameters, or no correlation matrix.
+    #[error("invalid correlate: {0}")]
+    Correlate(String),
+    /// `--vary fit` on a ball without a saved fit, or with options that do not go with it.
+    #[error("invalid vary fit: {0}")]
+    Fit(String),
     /// An impact without an answer (not the input's fault).
     #[error(transparent)]
     Solve(SolveError),
@@ -171,6 +178,8 @@ pub struct McSpec {
     pub samples: usize,
     /// The generator's seed.
     pub seed: u64,
+    /// Correlations between the varied parameters (`None`: independent).
+    pub correlation: Option<Correlation>,
 }
 
 impl McSpec {
@@ -206,6 +215,94 @@ impl McSpec {
             dist,
             samples,
             seed,
+            correlation: None,
         })
+    }
+
+    /// This spec with the varied parameters correlated by `pairs` (A, B, ρ), the matrix
+    /// checked positive definite ([`Correlation::new`]).
+    pub fn with_correlation(self, pairs: Vec<(Varied, Varied, f64)>) -> Result<McSpec, McError> {
+        let correlation = Some(Correlation::new(&self.vary, pairs)?);
+        Ok(McSpec {
+            correlation,
+            ..self
+        })
+    }
+}
+
+/// A correlation matrix over a spec's varied parameters (in the spec's order) and its
+/// Cholesky factor.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Correlation {
+    /// R, row-major, n × n: symmetric, unit diagonal, positive definite.
+    pub matrix: Vec<Vec<f64>>,
+    /// The pairs as given, (first, second, ρ), for the reports.
+    pub pairs: Vec<(Varied, Varied, f64)>,
+    /// L, lower triangular, row-major: R = L Lᵀ.
+    lower: Vec<Vec<f64>>,
+}
+
+impl Correlation {
+    /// R over `vary` with the off-diagonal `pairs` set (the rest 0), checked positive
+    /// definite by its Cholesky factorization.
+    pub fn new(vary: &[Spread], pairs: Vec<(Varied, Varied, f64)>) -> Result<Correlation, McError> {
+        let n = vary.len();
+        let index = |v: Varied| vary.iter().position(|s| s.what == v);
+        let mut r = DMatrix::<f64>::identity(n, n);
+        let mut set = vec![vec![false; n]; n];
+        for &(a, b, rho) in &pairs {
+            let name = || format!("{}:{}", a.name(), b.name());
+            let (Some(i), Some(j)) = (index(a), index(b)) else {
+                return Err(McError::Correlate(format!(
+                    "{} names a parameter not in --vary",
+                    name()
+                )));
+            };
+            if i == j {
+                return Err(McError::Correlate(format!(
+                    "{} correlates a parameter with itself",
+                    name()
+                )));
+            }
+            if !(rho.is_finite() && (-1.0..=1.0).contains(&rho)) {
+                return Err(McError::Correlate(format!(
+                    "{} = {rho}: a correlation lies in [-1, 1]",
+                    name()
+                )));
+            }
+            if set[i][j] {
+                return Err(McError::Correlate(format!("{} given twice", name())));
+            }
+            (set[i][j], set[j][i]) = (true, true);
+            (r[(i, j)], r[(j, i)]) = (rho, rho);
+        }
+        let matrix: Vec<Vec<f64>> = (0..n)
+            .map(|i| (0..n).map(|j| r[(i, j)]).collect())
+            .collect();
+        let chol = r.cholesky().ok_or_else(|| {
+            McError::Correlate(
+                "the correlation matrix is not positive definite (no set of parameters can be \
+                 correlated so): weaken the correlations"
+                    .into(),
+            )
+        })?;
+        let l = chol.l();
+        let lower = (0..n)
+            .map(|i| (0..n).map(|j| l[(i, j)]).collect())
+            .collect();
+        Ok(Correlation {
+            matrix,
+            pairs,
+            lower,
+        })
+    }
+
+    /// y = L z over the first `n` entries of `z`, in place (L lower triangular: from the
+    /// last row up, each row reads only entries not yet overwritten).
+    pub fn apply(&self, z: &mut [f64]) {
+        let n = self.lower.len();
+        for i in (0..n).rev() {
+            z[i] = (0..=i).map(|j| self.lower[i][j] * z[j]).sum();
+        }
     }
 }

@@ -1,8 +1,11 @@
 //! What users do with single impacts: sweeps (the paper's Figs. 2–4), fits (docs/model.md §4)
 //! and Monte Carlo over tolerances (docs/scale.md).
 
+pub mod batch;
+mod batch_stats;
 pub mod fit;
 pub mod mc;
+mod mc_corr;
 mod mc_spec;
 mod mc_stats;
 pub mod sweep;

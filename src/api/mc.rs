@@ -2,7 +2,9 @@
 //! work limit, and the report `bouncelab mc --format json` writes (docs/scale.md).
 
 use super::{Ball, BallError};
-use crate::analysis::mc::{McSpec, McStats, McSummary, Sampler, Samples, summary};
+use crate::analysis::mc::{
+    Dist, McError, McSpec, McStats, McSummary, Sampler, Samples, Varied, summary,
+};
 use crate::analysis::work;
 use serde::Serialize;
 use serde::ser::SerializeMap;
@@ -56,6 +58,64 @@ impl Ball {
     }
 }
 
+impl Ball {
+    /// The spec that samples this ball's own fit (`bouncelab mc --vary fit`): the multivariate
+    /// normal of the preset's `[fit]` table (its values the means, its covariance C), as
+    /// relative spreads s_i = √C_ii / value_i and correlations C_ij / √(C_ii C_jj) — the
+    /// normal v_i (1 + s_i y_i) with corr(y) = R has covariance C exactly.
+    pub fn fit_spec(&self, samples: usize, seed: u64) -> Result<McSpec, BallError> {
+        let Some(fit) = &self.fit else {
+            return Err(McError::Fit(format!(
+                "{} carries no fit to sample (a preset saved by `bouncelab fit … --save NAME` \
+                 does, under its own law and adopted parameters)",
+                self.label()
+            ))
+            .into());
+        };
+        let params = fit.params();
+        let sd: Vec<f64> = (0..params.len())
+            .map(|i| fit.covariance[i][i].sqrt())
+            .collect();
+        let vary = params
+            .iter()
+            .zip(&fit.values)
+            .zip(&sd)
+            .map(|((p, v), sd)| crate::analysis::mc::Spread {
+                what: Varied::Param(*p),
+                spread: sd / v,
+            })
+            .collect();
+        let mut pairs = Vec::new();
+        for i in 0..params.len() {
+            for j in 0..i {
+                if sd[i] > 0.0 && sd[j] > 0.0 {
+                    let rho = (fit.covariance[i][j] / (sd[i] * sd[j])).clamp(-1.0, 1.0);
+                    pairs.push((Varied::Param(params[j]), Varied::Param(params[i]), rho));
+                }
+            }
+        }
+        let spec = McSpec::new(vary, Dist::Normal, samples, seed)?;
+        Ok(if pairs.is_empty() {
+            spec
+        } else {
+            spec.with_correlation(pairs)?
+        })
+    }
+}
+
+/// The correlations given, as a JSON object `{"k_p:c": 0.5, …}`.
+struct CorrMap<'a>(&'a [(Varied, Varied, f64)]);
+
+impl Serialize for CorrMap<'_> {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        let mut m = s.serialize_map(Some(self.0.len()))?;
+        for (a, b, rho) in self.0 {
+            m.serialize_entry(&format!("{}:{}", a.name(), b.name()), rho)?;
+        }
+        m.end()
+    }
+}
+
 /// The parameters varied and their spreads, as a JSON object in the spec's order.
 struct VaryMap<'a>(&'a McSpec);
 
@@ -86,6 +146,9 @@ pub struct McReport<'a> {
     /// `normal`, `uniform` or `lognormal`.
     pub dist: &'static str,
     vary: VaryMap<'a>,
+    /// Correlations between the varied parameters, when given.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    correlate: Option<CorrMap<'a>>,
     /// Samples in which the ball stayed at the wall (left out of `contact_time`).
     pub no_rebound: usize,
     /// The statistics.
@@ -104,6 +167,7 @@ impl<'a> McReport<'a> {
             v0: ball.params.v0,
             dist: spec.dist.name(),
             vary: VaryMap(spec),
+            correlate: spec.correlation.as_ref().map(|c| CorrMap(&c.pairs)),
             no_rebound: summary.no_rebound,
             stats: &summary.stats,
         }

@@ -8,7 +8,8 @@ use super::budget::Progress;
 use super::output::{self, csv_row, given, human, num, table};
 use super::outputs::{check as check_writable, report_then_commit};
 use crate::analysis::mc::{
-    Dist, McSpec, McStats, PROBS, Sampler, Samples, Stats, parse_vary, summary,
+    Dist, McError, McSpec, McStats, PROBS, Sampler, Samples, Stats, parse_correlate, parse_vary,
+    summary,
 };
 use crate::analysis::work;
 use crate::api::{Ball, McReport};
@@ -50,13 +51,18 @@ pub struct McArgs {
     #[arg(long, value_name = "V", value_parser = super::number::number, allow_hyphen_values = true)]
     pub v0: Option<f64>,
     /// Parameters and relative spreads, comma-separated: NAME=SPREAD with NAME one of k_p, c,
-    /// k_r, z_p, k_h, m, v0 and SPREAD a percentage (5%) or a fraction (0.05)
+    /// k_r, z_p, k_h, m, v0 and SPREAD a percentage (5%) or a fraction (0.05); or `fit`: the
+    /// multivariate normal of a fitted preset's own covariance (its [fit] table)
     #[arg(long, value_name = "NAME=SPREAD,…", allow_hyphen_values = true)]
     pub vary: String,
     /// Distribution of each varied parameter: normal (sd = spread), uniform (± spread) or
-    /// lognormal (mean and sd as the normal's)
-    #[arg(long, value_enum, default_value = "normal")]
-    pub dist: DistArg,
+    /// lognormal (mean and sd as the normal's) [default: normal]
+    #[arg(long, value_enum)]
+    pub dist: Option<DistArg>,
+    /// Correlations between varied parameters, comma-separated: A:B=RHO (e.g. k_p:c=0.5); the
+    /// matrix must be positive definite
+    #[arg(long, value_name = "A:B=RHO,…", allow_hyphen_values = true)]
+    pub correlate: Option<String>,
     /// Number of samples
     #[arg(long, value_name = "N", default_value_t = 10_000)]
     pub samples: usize,
@@ -88,7 +94,7 @@ const BINS: usize = 60;
 
 pub fn run(a: &McArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     let ball = a.ball.resolve(a.v0)?;
-    let spec = McSpec::new(parse_vary(&a.vary)?, a.dist.into(), a.samples, a.seed)?;
+    let spec = spec(a, &ball)?;
     work::check_samples(spec.samples, ball.law)?;
     let paths: Vec<&std::path::Path> = [&a.csv_out, &a.svg_out]
         .into_iter()
@@ -115,6 +121,31 @@ pub fn run(a: &McArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     }
     report_then_commit(out, &report, files)?;
     Ok(())
+}
+
+/// The spec of `--vary` (or `--vary fit`), `--dist` and `--correlate`.
+fn spec(a: &McArgs, ball: &Ball) -> anyhow::Result<McSpec> {
+    if a.vary.trim() == "fit" {
+        let refuse = |what: &str| {
+            crate::BallError::from(McError::Fit(format!(
+                "{what} does not go with it: the fit's own covariance gives the normal \
+                 distribution and the correlations"
+            )))
+        };
+        if a.dist.is_some_and(|d| d != DistArg::Normal) {
+            return Err(refuse("--dist").into());
+        }
+        if a.correlate.is_some() {
+            return Err(refuse("--correlate").into());
+        }
+        return Ok(ball.fit_spec(a.samples, a.seed)?);
+    }
+    let dist = a.dist.unwrap_or(DistArg::Normal).into();
+    let spec = McSpec::new(parse_vary(&a.vary)?, dist, a.samples, a.seed)?;
+    Ok(match &a.correlate {
+        Some(text) => spec.with_correlation(parse_correlate(text)?)?,
+        None => spec,
+    })
 }
 
 /// Every sample, in blocks of [`STEP`] with the bar and the Ctrl-C check between them (the
@@ -227,6 +258,14 @@ fn text(
         ball.law.name(),
         given(ball.params.v0, 6)
     )?;
+    if let Some(c) = &spec.correlation {
+        let pairs: Vec<String> = c
+            .pairs
+            .iter()
+            .map(|(x, y, rho)| format!("{}:{} {}", x.name(), y.name(), given(*rho, 6)))
+            .collect();
+        writeln!(out, "correlated: {}", pairs.join(", "))?;
+    }
     writeln!(out)?;
     let cell = |x: f64, scale: f64| {
         if x.is_nan() {

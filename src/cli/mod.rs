@@ -9,6 +9,7 @@
 
 pub mod ball;
 pub mod bat;
+pub mod batch;
 pub mod budget;
 pub mod collide;
 pub mod drop;
@@ -103,6 +104,10 @@ pub enum Command {
     /// force and contact time (docs/scale.md)
     #[command(allow_negative_numbers = true)]
     Mc(mc::McArgs),
+    /// A batch of balls in one CSV (an id column): one fit and one verdict per ball against a
+    /// standard, the summary with Cpk (docs/batch.md)
+    #[command(allow_negative_numbers = true)]
+    Batch(batch::BatchArgs),
 }
 
 /// The explorer failed (its terminal, its event loop): not the input's fault.
@@ -174,6 +179,7 @@ fn exit_code(e: &anyhow::Error) -> Option<u8> {
     let not_the_input = |c: &(dyn std::error::Error + 'static)| {
         c.is::<ExplorerFailed>()
             || c.is::<crate::figure::svg::RenderError>()
+            || c.is::<crate::api::BatchUnanswered>()
             || matches!(
                 c.downcast_ref(),
                 Some(
@@ -320,6 +326,10 @@ fn dispatch(cli: Cli, out: &mut dyn Write) -> anyhow::Result<()> {
         Command::Mc(mut a) => {
             merge(top, &mut a.ball)?;
             mc::run(&a, out)
+        }
+        Command::Batch(mut a) => {
+            merge(top, &mut a.ball)?;
+            batch::run(&a, out)
         }
         Command::Standards(a) => {
             if top.is_given() {

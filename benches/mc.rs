@@ -1,0 +1,80 @@
+//! Speed of the Monte Carlo (issue 32: 1e7 linear-law samples ≤ 5 s on one core; medians in
+//! BENCHMARKS.md). Run: `cargo bench --bench mc`. The golf ball with K_p, c and K_r spread by
+//! 5 % (normal), as docs/scale.md's first example.
+
+use bouncelab::Ball;
+use bouncelab::analysis::mc::{Dist, McSpec, Sampler, impact, parse_vary};
+use divan::black_box;
+
+fn main() {
+    divan::main();
+}
+
+fn sampler(correlate: bool) -> Sampler {
+    let golf = Ball::from_preset("golf").unwrap();
+    let mut spec = McSpec::new(
+        parse_vary("k_p=5%,c=5%,k_r=5%").unwrap(),
+        Dist::Normal,
+        10_000_000,
+        1,
+    )
+    .unwrap();
+    if correlate {
+        let pairs = bouncelab::analysis::mc::parse_correlate("k_p:c=0.5").unwrap();
+        spec = spec.with_correlation(pairs).unwrap();
+    }
+    golf.sampler(&spec)
+}
+
+/// One sample: its draws (ChaCha8 on the sample's stream, three normals), its ball checked,
+/// and its impact.
+#[divan::bench]
+fn one_sample(b: divan::Bencher) {
+    let s = sampler(false);
+    let mut i = 0u64;
+    b.bench_local(|| {
+        i += 1;
+        s.outcome(black_box(i)).unwrap().cor
+    });
+}
+
+/// The draws and the checked ball alone (no impact).
+#[divan::bench]
+fn draws_only(b: divan::Bencher) {
+    let s = sampler(false);
+    let mut i = 0u64;
+    b.bench_local(|| {
+        i += 1;
+        s.params(black_box(i)).unwrap().k_p
+    });
+}
+
+/// The impact alone, at the nominal golf ball (the closed form of `map::fast`).
+#[divan::bench]
+fn impact_only(b: divan::Bencher) {
+    let golf = Ball::from_preset("golf").unwrap();
+    b.bench_local(|| impact(black_box(&golf.params), golf.law).unwrap().cor);
+}
+
+/// One sample with a correlation (the Cholesky product added).
+#[divan::bench]
+fn one_sample_correlated(b: divan::Bencher) {
+    let s = sampler(true);
+    let mut i = 0u64;
+    b.bench_local(|| {
+        i += 1;
+        s.outcome(black_box(i)).unwrap().cor
+    });
+}
+
+/// 100,000 samples on one thread, through `Sampler::samples` (blocks, ordering, the columns):
+/// per sample, the median / 1e5; 1e7 samples take 100 × the median.
+#[divan::bench(sample_count = 10)]
+fn block_1e5_one_thread(b: divan::Bencher) {
+    let s = sampler(false);
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(1)
+        .build()
+        .unwrap();
+    b.bench_local(|| pool.install(|| s.samples(0, 100_000).unwrap().len()));
+}

@@ -1,0 +1,161 @@
+//! `bouncelab.impacts`: many impacts from numpy arrays (issue 30 item 5). The arguments are
+//! broadcast as numpy's ufuncs broadcast them (numpy's own `broadcast_shapes`, so the rules
+//! and the errors are numpy's); the impacts run on all cores without the GIL
+//! ([`bouncelab::api::impact_rows`], each row the answer `run_params` gives); the answer is a
+//! dict of arrays of the broadcast shape.
+
+use crate::{error, law};
+use bouncelab::analysis::work;
+use bouncelab::api::impact_rows;
+use bouncelab::model::params::ImpactParams;
+use numpy::{PyArray1, PyReadonlyArray1, PyUntypedArrayMethods};
+use pyo3::exceptions::PyValueError;
+use pyo3::prelude::*;
+use pyo3::types::{PyDict, PyTuple};
+
+/// An argument over the broadcast shape: one value for all, or one per element (flat, C
+/// order).
+enum Column<'a> {
+    One(f64),
+    Each(&'a [f64]),
+}
+
+impl Column<'_> {
+    fn at(&self, i: usize) -> f64 {
+        match self {
+            Column::One(v) => *v,
+            Column::Each(s) => s[i],
+        }
+    }
+}
+
+/// Each argument as a float64 array, and the shape they broadcast to (numpy's rules and
+/// errors).
+fn shapes<'py>(
+    py: Python<'py>,
+    args: &[Bound<'py, PyAny>],
+) -> PyResult<(Vec<Bound<'py, PyAny>>, Bound<'py, PyTuple>)> {
+    let np = py.import("numpy")?;
+    let arrays: Vec<Bound<'py, PyAny>> = args
+        .iter()
+        .map(|a| np.call_method1("asarray", (a, "float64")))
+        .collect::<PyResult<_>>()?;
+    let each: Vec<Bound<'py, PyAny>> = arrays
+        .iter()
+        .map(|a| a.getattr("shape"))
+        .collect::<PyResult<_>>()?;
+    let shape = np
+        .call_method1("broadcast_shapes", PyTuple::new(py, each)?)?
+        .cast_into::<PyTuple>()?;
+    Ok((arrays, shape))
+}
+
+/// Each array flat, C-ordered, over `shape` (a size-1 array stays one value: no copy).
+fn flatten<'py>(
+    arrays: &[Bound<'py, PyAny>],
+    shape: &Bound<'py, PyTuple>,
+) -> PyResult<Vec<PyReadonlyArray1<'py, f64>>> {
+    let np = shape.py().import("numpy")?;
+    arrays
+        .iter()
+        .map(|a| {
+            let size: usize = a.getattr("size")?.extract()?;
+            let full = if size == 1 {
+                a.clone()
+            } else {
+                np.call_method1("broadcast_to", (a, shape))?
+            };
+            np.call_method1("ascontiguousarray", (full,))?
+                .call_method0("ravel")?
+                .extract::<PyReadonlyArray1<'py, f64>>()
+        })
+        .collect()
+}
+
+/// Many impacts, SI units, from numbers or numpy arrays broadcast together as a ufunc's
+/// arguments: a dict of arrays of the broadcast shape, `cor`, `max_force`, `contact_time`
+/// (NaN where the ball stays at the wall), `max_indentation`, `permanent_indentation` and
+/// `rebound` (bool). Element i is what `run_params` gives for the i-th values; `z_p = inf`
+/// is no flattening and `k_h` defaults to the Hertz stiffness meeting K_p at z_p (Eq. 16).
+#[pyfunction]
+#[pyo3(signature = (*, m, k_p, c, k_r, v0, z_p=None, k_h=None, law="linear"))]
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn impacts<'py>(
+    py: Python<'py>,
+    m: Bound<'py, PyAny>,
+    k_p: Bound<'py, PyAny>,
+    c: Bound<'py, PyAny>,
+    k_r: Bound<'py, PyAny>,
+    v0: Bound<'py, PyAny>,
+    z_p: Option<Bound<'py, PyAny>>,
+    k_h: Option<Bound<'py, PyAny>>,
+    law: &str,
+) -> PyResult<Bound<'py, PyDict>> {
+    let law = self::law(law)?;
+    let inf = f64::INFINITY.into_pyobject(py)?.into_any();
+    let nan = f64::NAN.into_pyobject(py)?.into_any();
+    let args = [m, k_p, c, k_r, v0, z_p.unwrap_or(inf), k_h.unwrap_or(nan)];
+    let (arrays, shape) = shapes(py, &args)?;
+    let n: usize = shape
+        .iter()
+        .map(|d| d.extract::<usize>())
+        .product::<PyResult<usize>>()?;
+    // the work limit before any copy (linear-law impacts count as Monte Carlo samples)
+    work::check_samples(n, law).map_err(|e| error(e.into()))?;
+    let flat = flatten(&arrays, &shape)?;
+    let cols: Vec<Column<'_>> = flat
+        .iter()
+        .map(|a| {
+            let s = a.as_slice()?;
+            Ok(if a.len() == 1 && n != 1 {
+                Column::One(s[0])
+            } else {
+                Column::Each(s)
+            })
+        })
+        .collect::<PyResult<_>>()?;
+    let params = |i: usize| {
+        let (k_p, z_p, k_h) = (cols[1].at(i), cols[5].at(i), cols[6].at(i));
+        let k_h = if k_h.is_nan() {
+            ImpactParams::k_h_matching(k_p, if z_p.is_finite() { z_p } else { 1.0 })
+        } else {
+            k_h
+        };
+        ImpactParams {
+            mass: cols[0].at(i),
+            k_p,
+            damping: cols[2].at(i),
+            k_r: cols[3].at(i),
+            v0: cols[4].at(i),
+            z_p,
+            k_h,
+        }
+    };
+    let rows = py
+        .detach(|| impact_rows(n, law, params))
+        .map_err(|(i, e)| {
+            let msg = format!("element {i}: {e}");
+            if e.is_no_answer() {
+                crate::NoAnswerError::new_err(msg)
+            } else {
+                PyValueError::new_err(msg)
+            }
+        })?;
+    let d = PyDict::new(py);
+    let column = |f: fn(&bouncelab::api::ImpactRow) -> f64| -> PyResult<Bound<'py, PyAny>> {
+        let v: Vec<f64> = rows.iter().map(f).collect();
+        PyArray1::from_vec(py, v).call_method1("reshape", (&shape,))
+    };
+    d.set_item("cor", column(|r| r.cor)?)?;
+    d.set_item("max_force", column(|r| r.max_force)?)?;
+    d.set_item("contact_time", column(|r| r.contact_time)?)?;
+    d.set_item("max_indentation", column(|r| r.max_indentation)?)?;
+    d.set_item(
+        "permanent_indentation",
+        column(|r| r.permanent_indentation)?,
+    )?;
+    let rebound: Vec<bool> = rows.iter().map(|r| r.rebound).collect();
+    let rebound = PyArray1::from_vec(py, rebound).call_method1("reshape", (&shape,))?;
+    d.set_item("rebound", rebound)?;
+    Ok(d)
+}

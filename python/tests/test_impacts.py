@@ -1,0 +1,72 @@
+"""`bouncelab.impacts`: numpy arrays broadcast as a ufunc's arguments, each element the answer
+`run_params` gives for its values (issue 30 item 5)."""
+
+import numpy as np
+import pytest
+
+import bouncelab
+
+KEYS = ["cor", "max_force", "contact_time", "max_indentation", "permanent_indentation"]
+
+
+def same_as_run_params(out, index, **kw):
+    r = bouncelab.run_params(**kw)
+    for k in KEYS:
+        want = getattr(r, k)
+        got = out[k][index]
+        if want is None:  # no rebound: no contact time
+            assert np.isnan(got), (k, index)
+        else:
+            assert got == pytest.approx(want, rel=1e-12, abs=1e-300), (k, index, kw)
+    assert bool(out["rebound"][index]) == r.rebound
+
+
+def test_arrays_broadcast_like_a_ufunc():
+    k_p = np.array([[2e4], [5e4], [2e5]])  # (3, 1)
+    c = np.array([2.0, 10.0, 40.0, 150.0])  # (4,)
+    out = bouncelab.impacts(m=0.05, k_p=k_p, c=c, k_r=7e4, v0=3.0, z_p=2e-3)
+    assert set(out) == set(KEYS) | {"rebound"}
+    for k in out:
+        assert out[k].shape == (3, 4), k
+    assert out["rebound"].dtype == np.bool_
+    for i in range(3):
+        for j in range(4):
+            same_as_run_params(
+                out, (i, j), m=0.05, k_p=k_p[i, 0], c=c[j], k_r=7e4, v0=3.0, z_p=2e-3
+            )
+
+
+def test_scalars_give_zero_dimensional_arrays():
+    out = bouncelab.impacts(m=0.0495, k_p=5.45e4, c=10.0, k_r=7.08e4, v0=3.12)
+    assert out["cor"].shape == ()
+    same_as_run_params(out, (), m=0.0495, k_p=5.45e4, c=10.0, k_r=7.08e4, v0=3.12)
+
+
+def test_every_law_and_flattening_agree_with_run_params():
+    v0 = np.linspace(0.5, 30.0, 7)
+    for law in ["linear", "hertz", "elastic-plastic"]:
+        out = bouncelab.impacts(m=0.0456, k_p=5.6e5, c=1200.0, k_r=5.6e5, v0=v0, z_p=3e-3, law=law)
+        for i, v in enumerate(v0):
+            same_as_run_params(
+                out, i, m=0.0456, k_p=5.6e5, c=1200.0, k_r=5.6e5, v0=v, z_p=3e-3, law=law
+            )
+    # the fast speeds flatten the golf ball: some permanent indentation
+    assert (out["permanent_indentation"] > 0).any()
+
+
+def test_bad_input_names_the_element_or_is_numpys():
+    with pytest.raises(ValueError, match=r"element 2: invalid k_p: -1"):
+        bouncelab.impacts(m=0.05, k_p=[1e5, 2e5, -1.0], c=10.0, k_r=7e4, v0=3.0)
+    with pytest.raises(ValueError, match="shape"):
+        bouncelab.impacts(m=0.05, k_p=np.ones(3), c=np.ones(4), k_r=7e4, v0=3.0)
+    with pytest.raises(ValueError, match="law"):
+        bouncelab.impacts(m=0.05, k_p=1e5, c=10.0, k_r=7e4, v0=3.0, law="plastic")
+    # the work limit holds here too, before any copy (a broadcast view of 10⁹ elements)
+    many = np.broadcast_to(3.0, (10**9,))
+    with pytest.raises(ValueError, match="limit"):
+        bouncelab.impacts(m=0.05, k_p=1e5, c=10.0, k_r=7e4, v0=many)
+
+
+def test_empty_arrays_give_empty_answers():
+    out = bouncelab.impacts(m=0.05, k_p=np.ones(0), c=10.0, k_r=7e4, v0=3.0)
+    assert out["cor"].shape == (0,)

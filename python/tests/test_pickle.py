@@ -1,0 +1,90 @@
+"""`Impact` pickles (every protocol), copies and compares by value (issue 32: results and
+`Impact` are picklable, so they travel to Dask workers and process pools)."""
+
+import concurrent.futures
+import copy
+import os
+import pickle
+import subprocess
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import bouncelab
+
+ROOT = Path(__file__).resolve().parents[2]
+
+
+@pytest.fixture(autouse=True)
+def no_user_presets(tmp_path, monkeypatch):
+    monkeypatch.setenv("XDG_CONFIG_HOME", str(tmp_path / "config"))
+
+
+def same_dicts(a, b):
+    assert a.keys() == b.keys()
+    for k in a:
+        if isinstance(a[k], np.ndarray):
+            np.testing.assert_array_equal(a[k], b[k])
+        else:
+            assert a[k] == b[k], k
+
+
+@pytest.mark.parametrize("protocol", range(pickle.HIGHEST_PROTOCOL + 1))
+def test_every_protocol_gives_the_same_impact(protocol):
+    for r in [
+        bouncelab.run(preset="golf", v0=3.0),
+        bouncelab.run(preset="tennis", law="elastic-plastic", v0=30.0, history=True, samples=50),
+        bouncelab.run_params(m=0.05, k_p=1e5, k_r=1e5, c=50.0, v0=2.0),
+    ]:
+        back = pickle.loads(pickle.dumps(r, protocol=protocol))
+        assert type(back) is bouncelab.Impact
+        assert back == r
+        same_dicts(back.to_dict(), r.to_dict())
+        assert repr(back) == repr(r)
+
+
+def test_copies_are_equal_and_values_compare():
+    r = bouncelab.run(preset="superball", history=True, samples=20)
+    shallow, deep = copy.copy(r), copy.deepcopy(r)
+    assert shallow == r and deep == r
+    # a deep copy owns its arrays
+    assert deep.force is not r.force
+    np.testing.assert_array_equal(deep.force, r.force)
+    # other values, not equal; another type, not equal either
+    assert bouncelab.run(preset="superball", v0=3.0) != bouncelab.run(preset="superball", v0=3.1)
+    assert r != bouncelab.run(preset="superball")  # the same impact without its history
+    assert r != r.to_dict()
+    assert bouncelab.run(preset="golf") == bouncelab.run(preset="golf")
+
+
+def test_an_impact_crosses_a_process_pool():
+    speeds = [1.0, 2.0, 3.0]
+    with concurrent.futures.ProcessPoolExecutor(max_workers=2) as pool:
+        got = list(pool.map(run_golf, speeds))
+    assert got == [bouncelab.run(preset="golf", v0=v) for v in speeds]
+
+
+def run_golf(v0):
+    return bouncelab.run(preset="golf", v0=v0)
+
+
+def test_a_fitted_presets_intervals_travel_too(tmp_path, monkeypatch):
+    path = os.environ.get("BOUNCELAB_BIN") or str(ROOT / "target" / "debug" / "bouncelab")
+    if not Path(path).is_file():
+        pytest.skip(f"no bouncelab binary at {path}")
+    home = tmp_path / "config"
+    monkeypatch.setenv("HOME", str(home))
+    table = tmp_path / "cors.csv"
+    noise = [0.004, -0.006, 0.002, 0.005, -0.003, -0.001, 0.006, -0.004]
+    rows = ["v0,cor"]
+    for v0, n in zip([1, 2, 3, 5, 8, 12, 18, 25], noise):
+        rows.append(f"{v0},{bouncelab.run(preset='baseball', v0=v0).cor + n}")
+    table.write_text("\n".join(rows) + "\n")
+    fit = [path, "fit", "--preset", "baseball", "--cor-table", str(table), "--save", "bbfit"]
+    subprocess.run(fit, check=True, capture_output=True, env=dict(os.environ))
+    r = bouncelab.run(preset="bbfit", v0=45)
+    assert r.cor_ci95 is not None
+    back = pickle.loads(pickle.dumps(r))
+    assert back == r and back.cor_ci95 == r.cor_ci95
+    assert back.contact_time_ci95 == r.contact_time_ci95

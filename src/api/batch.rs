@@ -1,0 +1,288 @@
+//! A batch of balls, one fit and one verdict each (docs/batch.md): each ball's data fitted
+//! from this ball as the start (as `bouncelab fit` fits one file), the fitted ball run through
+//! the standard's own test, and the summary over the batch against the standard's window.
+//! What `bouncelab batch` writes and `bouncelab.batch` returns.
+
+use super::Ball;
+use crate::analysis::batch::{BatchStats, stats};
+use crate::analysis::fit::verdict::no_answer_reasons;
+use crate::analysis::fit::{FitData, MultiFit, Param};
+use crate::drop::standards::{Standard, Test};
+use crate::measured::{Air, Data, Flight};
+use serde::Serialize;
+
+/// What a batch asks of every ball.
+#[derive(Debug, Clone, Copy)]
+pub struct BatchSetup<'a> {
+    /// The standard each fitted ball is judged against.
+    pub standard: &'static Standard,
+    /// The parameters fitted (`None`: what each ball's data can pin, [`Param::defaults`]).
+    pub free: Option<&'a [Param]>,
+    /// The air of the drop tests, fitted and judged alike (`None`: vacuum).
+    pub air: Option<Air>,
+}
+
+/// One ball of a batch: its fit and its verdict, or why it has none (`error`). SI.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct BallOutcome {
+    /// The ball's id.
+    pub id: String,
+    /// The batch line its rows begin at.
+    pub line: usize,
+    /// "drop test", "COR table" or "force-time trace".
+    pub data: &'static str,
+    /// Data points fitted.
+    pub points: usize,
+    /// The parameters fitted.
+    pub free: Vec<&'static str>,
+    /// The fitted ball's K_p (N/m), c (kg/s), K_r (N/m), z_p (m).
+    pub k_p: Option<f64>,
+    /// Damping c, kg/s.
+    pub c: Option<f64>,
+    /// Recoil stiffness K_r, N/m.
+    pub k_r: Option<f64>,
+    /// Flattening threshold z_p, m.
+    pub z_p: Option<f64>,
+    /// Whether the fit answered: converged, every free parameter pinned (docs/fitting.md).
+    pub identified: bool,
+    /// The fitted ball's COR at the standard's impact speed.
+    pub cor: Option<f64>,
+    /// What the standard measures, on the fitted ball: the rebound height (m, in the
+    /// standard's convention) or the COR.
+    pub measured: Option<f64>,
+    /// `PASS` or `FAIL`; `None` without a fit.
+    pub verdict: Option<&'static str>,
+    /// Distance to the nearer bound of the window, positive inside.
+    pub margin: Option<f64>,
+    /// What the fit warns of.
+    pub warnings: Vec<String>,
+    /// Why the ball has no verdict: its data could not be fitted.
+    pub error: Option<String>,
+}
+
+impl BallOutcome {
+    fn new(id: &str, line: usize, data: &'static str) -> BallOutcome {
+        BallOutcome {
+            id: id.to_string(),
+            line,
+            data,
+            points: 0,
+            free: Vec::new(),
+            k_p: None,
+            c: None,
+            k_r: None,
+            z_p: None,
+            identified: false,
+            cor: None,
+            measured: None,
+            verdict: None,
+            margin: None,
+            warnings: Vec::new(),
+            error: None,
+        }
+    }
+}
+
+/// The name and unit of what a standard measures: `rebound_height` (m) or `cor`.
+pub fn quantity(s: &Standard) -> (&'static str, &'static str) {
+    match s.test {
+        Test::Drop { .. } => ("rebound_height", "m"),
+        Test::Cor { .. } => ("cor", ""),
+    }
+}
+
+impl Ball {
+    /// Ball `id` of a batch (its rows from `line`): `data` fitted from this ball and the
+    /// fitted ball judged by `setup.standard`. Never fails: a ball that cannot be fitted or
+    /// judged says why in its `error`.
+    ///
+    /// ```
+    /// use bouncelab::{Ball, api::BatchSetup, drop::standards, measured::parse_any};
+    /// let tennis = Ball::from_preset("tennis")?;
+    /// let setup = BatchSetup { standard: standards::find("itf").unwrap(), free: None, air: None };
+    /// // one drop at the standard's own height, in vacuum: the fit returns that rebound
+    /// let data = parse_any("drop_height_m,rebound_height_m\n2.54,1.40\n").unwrap();
+    /// let o = tennis.judge_in_batch("A1", 2, &data, &setup);
+    /// assert_eq!(o.verdict, Some("PASS"));
+    /// assert!((o.measured.unwrap() - 1.40).abs() < 1e-6, "{o:?}");
+    /// # Ok::<(), bouncelab::BallError>(())
+    /// ```
+    pub fn judge_in_batch(
+        &self,
+        id: &str,
+        line: usize,
+        data: &Data,
+        setup: &BatchSetup<'_>,
+    ) -> BallOutcome {
+        let mut o = BallOutcome::new(id, line, data.kind());
+        // the rows given (a fit that answers counts the values it fitted)
+        o.points = match data {
+            Data::Trace(t) => t.time.len(),
+            Data::Cor(t) => t.points.len(),
+            Data::Drop(d) => d.drops.len(),
+        };
+        let f = match self.fit_batch_data(data, setup) {
+            Ok(f) => f,
+            Err(e) => {
+                o.error = Some(e);
+                return o;
+            }
+        };
+        o.points = f.points;
+        o.free = f.fitted.iter().map(|e| e.name).collect();
+        let p = &f.params;
+        (o.k_p, o.c, o.k_r, o.z_p) = (Some(p.k_p), Some(p.damping), Some(p.k_r), Some(p.z_p));
+        o.identified = f.identified;
+        o.warnings.clone_from(&f.warnings);
+        if !f.identified {
+            let why = no_answer_reasons(f.converged, &f.not_pinned);
+            o.error = Some(format!("the fit gave no answer: {}", why.join("; ")));
+            return o;
+        }
+        let fitted = Ball {
+            params: f.params,
+            ..self.clone()
+        };
+        if let Err(e) = judge(&fitted, setup, &mut o) {
+            o.error = Some(e);
+        }
+        o
+    }
+
+    /// The fit of one ball's data (drop tests through this ball's flight in `setup.air`).
+    fn fit_batch_data(&self, data: &Data, setup: &BatchSetup<'_>) -> Result<MultiFit, String> {
+        let points = match data {
+            Data::Trace(t) => {
+                return self
+                    .fit(FitData::Trace(t), setup.free)
+                    .map_err(|e| e.to_string());
+            }
+            Data::Cor(t) => t.points.clone(),
+            Data::Drop(d) => {
+                let pairs: Vec<(f64, f64)> = d.drops.iter().map(|d| (d.0, d.1)).collect();
+                self.drops_to_cor(&pairs, setup.air)
+                    .map_err(|e| e.to_string())?
+            }
+        };
+        self.fit(FitData::Cor(&points), setup.free)
+            .map_err(|e| e.to_string())
+    }
+}
+
+/// The standard's test on the fitted ball: the verdict, and the COR at the test's speed.
+fn judge(ball: &Ball, setup: &BatchSetup<'_>, o: &mut BallOutcome) -> Result<(), String> {
+    let s = setup.standard;
+    let dball = ball.drop_ball();
+    let v = s.judge(&dball, setup.air).map_err(|e| e.to_string())?;
+    if !v.measured.is_finite() {
+        return Err(format!(
+            "{} reads heights at the top of the ball: the ball needs a radius (a preset's)",
+            s.name
+        ));
+    }
+    let cor = match s.test {
+        Test::Drop { .. } => {
+            let h = s.release_height(dball.radius).unwrap_or(f64::NAN);
+            let speed = Flight::new(dball.params.mass, dball.radius, setup.air).fall_speed(h);
+            crate::drop::impact(&dball, speed)
+                .map_err(|e| e.to_string())?
+                .cor
+        }
+        Test::Cor { .. } => v.measured,
+    };
+    o.cor = Some(cor);
+    o.measured = Some(v.measured);
+    o.verdict = Some(if v.pass { "PASS" } else { "FAIL" });
+    o.margin = Some(v.margin);
+    Ok(())
+}
+
+/// The standard a batch is judged against, as the JSON names it.
+#[derive(Debug, Clone, Serialize)]
+pub struct StandardRef {
+    /// Its short name.
+    pub name: &'static str,
+    /// Its title.
+    pub title: &'static str,
+    /// What it measures: `rebound_height` or `cor`.
+    pub quantity: &'static str,
+    /// Its unit (`m`, or empty for the COR).
+    pub unit: &'static str,
+    /// [lo, hi]; `null` where unbounded.
+    pub window: [Option<f64>; 2],
+}
+
+/// The batch's summary: the statistics of the measured values, and how the fits went.
+#[derive(Debug, Clone, Serialize)]
+pub struct BatchSummary {
+    /// n, mean, sd, min, max, failures, cpk of the balls with a verdict.
+    #[serde(flatten)]
+    pub stats: BatchStats,
+    /// Balls in the batch.
+    pub balls: usize,
+    /// Balls whose fit answered (converged, every free parameter pinned).
+    pub identified: usize,
+    /// Balls without a verdict (their `error` says why).
+    pub no_answer: usize,
+    /// Every parameter fitted in some ball, in the output's order.
+    pub free: Vec<&'static str>,
+}
+
+/// `bouncelab batch --format json`: the ball it started from, the standard, the summary and
+/// every ball.
+#[derive(Debug, Serialize)]
+pub struct BatchReport<'a> {
+    /// Preset name (`None` for a ball given by its parameters).
+    pub preset: Option<&'a str>,
+    /// Contact law.
+    pub law: &'static str,
+    /// The standard.
+    pub standard: StandardRef,
+    /// The summary.
+    pub summary: BatchSummary,
+    /// Every ball, in the batch's order.
+    pub balls: &'a [BallOutcome],
+}
+
+impl<'a> BatchReport<'a> {
+    /// The report of `balls`, started from `ball`, against `standard`.
+    pub fn new(ball: &'a Ball, standard: &'static Standard, balls: &'a [BallOutcome]) -> Self {
+        let (quantity, unit) = quantity(standard);
+        let values: Vec<f64> = balls.iter().filter_map(|b| b.measured).collect();
+        let mut free: Vec<&'static str> = Param::ALL
+            .iter()
+            .map(|p| p.name())
+            .filter(|n| balls.iter().any(|b| b.free.contains(n)))
+            .collect();
+        free.dedup();
+        BatchReport {
+            preset: ball.name.as_deref(),
+            law: ball.law.name(),
+            standard: StandardRef {
+                name: standard.name,
+                title: standard.title,
+                quantity,
+                unit,
+                window: standard.window,
+            },
+            summary: BatchSummary {
+                stats: stats(&values, standard.window),
+                balls: balls.len(),
+                identified: balls.iter().filter(|b| b.identified).count(),
+                no_answer: balls.iter().filter(|b| b.verdict.is_none()).count(),
+                free,
+            },
+            balls,
+        }
+    }
+}
+
+/// Some balls of a batch have no verdict: the command line's exit 1, after its report.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[error("{no_answer} of {balls} balls have no verdict: their rows say why")]
+pub struct BatchUnanswered {
+    /// Balls without a verdict.
+    pub no_answer: usize,
+    /// Balls in the batch.
+    pub balls: usize,
+}

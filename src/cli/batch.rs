@@ -1,0 +1,370 @@
+//! `bouncelab batch`: a batch of balls in one CSV (an `id` column and the columns the fit
+//! reads), one fit and one verdict per ball against a standard, the summary with Cpk
+//! (docs/batch.md). The library splits the batch ([`crate::analysis::batch`]) and judges each
+//! ball ([`Ball::judge_in_batch`]); this file reads the file and the trace files it names,
+//! runs the balls in parallel in steps with a progress bar and Ctrl-C, and writes.
+
+use super::ball::BallArgs;
+use super::budget::Progress;
+use super::figure::{check_writable, commit};
+use super::measured_file as files;
+use super::output::{self, csv_row, given, human};
+use crate::analysis::batch::{BallData, split};
+use crate::analysis::fit::parse_free;
+use crate::api::{Ball, batch_quantity};
+use crate::api::{BallOutcome, BatchReport, BatchSetup, BatchUnanswered};
+use crate::atomic::Outputs;
+use crate::drop::standards::{self, Standard};
+use crate::figure::{Axis, histogram, svg};
+use crate::measured::{Air, Data};
+use clap::{Args, ValueEnum};
+use rayon::prelude::*;
+use std::io::Write;
+use std::path::{Path, PathBuf};
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum BatchFormat {
+    Text,
+    Json,
+    Csv,
+}
+
+#[derive(Debug, Clone, Args)]
+pub struct BatchArgs {
+    #[command(flatten)]
+    pub ball: BallArgs,
+    /// The batch: CSV with an id column (consecutive rows of one id are one ball) and the
+    /// columns of `fit`'s files: drop_height_m,rebound_height_m; v0,cor (…); time,force; or a
+    /// trace column naming each ball's trace file (relative to the batch's folder)
+    #[arg(value_name = "FILE")]
+    pub file: PathBuf,
+    /// The standard every ball is judged against (`bouncelab standards` lists them) [default:
+    /// the preset's own]
+    #[arg(long, value_name = "NAME")]
+    pub standard: Option<String>,
+    /// Parameters fitted per ball, comma-separated, from k_p, c, k_r, z_p, k_h [default: as
+    /// `fit`, by each ball's data]
+    #[arg(long, value_name = "P,P,...", value_delimiter = ',')]
+    pub free: Option<Vec<String>>,
+    /// Drop tests: fit and judge with quadratic air drag of this drag coefficient [default:
+    /// vacuum]
+    #[arg(long, value_name = "CD", value_parser = super::number::number, allow_hyphen_values = true)]
+    pub drag_coefficient: Option<f64>,
+    /// Drop tests: air density for the drag, kg/m³
+    #[arg(long, value_name = "RHO", default_value_t = 1.204, requires = "drag_coefficient",
+          value_parser = super::number::number, allow_hyphen_values = true)]
+    pub air_density: f64,
+    /// Impact speed of force–time traces (m/s) [default: the preset's measured v0]
+    #[arg(long, value_name = "V", value_parser = super::number::number, allow_hyphen_values = true)]
+    pub v0: Option<f64>,
+    /// Output format: a text report, one JSON document, or the per-ball CSV
+    #[arg(long, value_enum, default_value = "text")]
+    pub format: BatchFormat,
+    /// Write the per-ball CSV (id, …, cor, verdict, margin, warnings)
+    #[arg(long, value_name = "FILE")]
+    pub csv_out: Option<PathBuf>,
+    /// Write a histogram of the measured values with the standard's window as SVG
+    #[arg(long, value_name = "FILE")]
+    pub svg_out: Option<PathBuf>,
+    /// Overwrite existing --csv-out and --svg-out files
+    #[arg(long)]
+    pub force: bool,
+}
+
+/// Balls fitted between two looks at the bar and the Ctrl-C flag.
+const STEP: usize = 16;
+/// Linear-law impacts a fit takes, roughly: for the bar only (its starts × iterations × data).
+const FIT_COST: f64 = 2000.0;
+
+pub fn run(a: &BatchArgs, out: &mut dyn Write) -> anyhow::Result<()> {
+    let ball = a.ball.resolve(a.v0)?;
+    let standard = standard(a, &ball)?;
+    let free = a.free.as_deref().map(parse_free).transpose()?;
+    let air = a.drag_coefficient.map(|cd| Air {
+        density: a.air_density,
+        drag_coefficient: cd,
+    });
+    // the library checks the air once, whatever the data
+    ball.drops_to_cor(&[], air)?;
+    let paths: Vec<&Path> = [&a.csv_out, &a.svg_out]
+        .into_iter()
+        .flatten()
+        .map(PathBuf::as_path)
+        .collect();
+    check_writable(&paths, a.force)?;
+    let balls = load(&a.file)?;
+    let setup = BatchSetup {
+        standard,
+        free: free.as_deref(),
+        air,
+    };
+    let outcomes = judge_all(&ball, &balls, &setup)?;
+    let report = BatchReport::new(&ball, standard, &outcomes);
+    // both files or neither (crate::atomic), before the report
+    let mut written = Outputs::new(a.force);
+    if let Some(p) = &a.csv_out {
+        written.text(p, &balls_csv(&outcomes))?;
+    }
+    if let Some(p) = &a.svg_out {
+        written.text(p, &svg::render(&histogram_figure(&a.file, &report))?)?;
+    }
+    commit(written)?;
+    match a.format {
+        BatchFormat::Json => output::json(out, &report)?,
+        BatchFormat::Csv => out.write_all(balls_csv(&outcomes).as_bytes())?,
+        BatchFormat::Text => text(out, &ball, &a.file, air, &report)?,
+    }
+    let s = &report.summary;
+    if s.no_answer > 0 {
+        return Err(BatchUnanswered {
+            no_answer: s.no_answer,
+            balls: s.balls,
+        }
+        .into());
+    }
+    Ok(())
+}
+
+/// `--standard`, or the preset's own.
+fn standard(a: &BatchArgs, ball: &Ball) -> anyhow::Result<&'static Standard> {
+    match &a.standard {
+        Some(name) => standards::find(name).map_err(|e| anyhow::anyhow!(e)),
+        None => ball
+            .name
+            .as_deref()
+            .and_then(standards::for_ball)
+            .ok_or_else(|| {
+                anyhow::anyhow!(
+                    "--standard is needed: {} has no standard of its own (bouncelab standards \
+                     lists them)",
+                    ball.label()
+                )
+            }),
+    }
+}
+
+/// The batch's balls with their data, trace files read (relative to the batch's folder).
+fn load(file: &Path) -> anyhow::Result<Vec<(String, usize, Data)>> {
+    let text = files::read_text(file)?;
+    let rows = split(&text).map_err(|e| files::at(file, e))?;
+    let dir = file.parent().unwrap_or(Path::new(""));
+    rows.into_iter()
+        .map(|b| {
+            let data = match b.data {
+                BallData::Measured(d) => d,
+                BallData::TraceFile { path, line, column } => {
+                    let t = files::trace(&dir.join(&path)).map_err(|e| {
+                        anyhow::anyhow!(
+                            "{}:{line}:{column}: trace of '{}': {e:#}",
+                            file.display(),
+                            b.id
+                        )
+                    })?;
+                    Data::Trace(t)
+                }
+            };
+            Ok((b.id, b.line, data))
+        })
+        .collect()
+}
+
+/// Every ball, in parallel in steps of [`STEP`], with the bar and the Ctrl-C check between
+/// steps (a ball's outcome depends on its data alone, so the steps change no answer).
+fn judge_all(
+    ball: &Ball,
+    balls: &[(String, usize, Data)],
+    setup: &BatchSetup<'_>,
+) -> anyhow::Result<Vec<BallOutcome>> {
+    let progress = Progress::new(balls.len() as u64, FIT_COST, "balls");
+    let mut all = Vec::with_capacity(balls.len());
+    for step in balls.chunks(STEP) {
+        progress.check()?;
+        all.par_extend(
+            step.par_iter()
+                .map(|(id, line, data)| ball.judge_in_batch(id, *line, data, setup)),
+        );
+        progress.advance(step.len() as u64);
+    }
+    progress.finish();
+    Ok(all)
+}
+
+/// `id, line, data, points, free, k_p, c, k_r, z_p, identified, cor, measured, verdict,
+/// margin, error, warnings` (SI; empty where a ball has no value; lists joined by `; `).
+fn balls_csv(balls: &[BallOutcome]) -> String {
+    let header = [
+        "id",
+        "line",
+        "data",
+        "points",
+        "free",
+        "k_p",
+        "c",
+        "k_r",
+        "z_p",
+        "identified",
+        "cor",
+        "measured",
+        "verdict",
+        "margin",
+        "error",
+        "warnings",
+    ];
+    let mut buf = Vec::new();
+    let mut rows = || -> std::io::Result<()> {
+        csv_row(&mut buf, &header)?;
+        for b in balls {
+            let row = [
+                b.id.clone(),
+                b.line.to_string(),
+                b.data.to_string(),
+                b.points.to_string(),
+                b.free.join(" "),
+                output::opt_num(b.k_p),
+                output::opt_num(b.c),
+                output::opt_num(b.k_r),
+                output::opt_num(b.z_p),
+                b.identified.to_string(),
+                output::opt_num(b.cor),
+                output::opt_num(b.measured),
+                b.verdict.unwrap_or_default().to_string(),
+                output::opt_num(b.margin),
+                b.error.clone().unwrap_or_default(),
+                b.warnings.join("; "),
+            ];
+            csv_row(&mut buf, &row)?;
+        }
+        Ok(())
+    };
+    rows().expect("writing to memory");
+    String::from_utf8(buf).expect("CSV of UTF-8 text")
+}
+
+/// The histogram of the measured values with the window's bounds marked.
+fn histogram_figure(file: &Path, r: &BatchReport<'_>) -> crate::figure::Figure {
+    let values: Vec<f64> = r.balls.iter().filter_map(|b| b.measured).collect();
+    let (quantity, unit) = (r.standard.quantity, r.standard.unit);
+    let [lo, hi] = r.standard.window;
+    let marks: Vec<(&str, &str, f64)> = [("window low", "lo", lo), ("window high", "hi", hi)]
+        .into_iter()
+        .filter_map(|(l, id, x)| x.map(|x| (l, id, x)))
+        .collect();
+    let label = match unit {
+        "" => quantity.replace('_', " "),
+        u => format!("{} ({u})", quantity.replace('_', " ")),
+    };
+    // about √n bins, as a quality chart draws a batch
+    let bins = ((values.len() as f64).sqrt().ceil() as usize).clamp(5, 40);
+    histogram::figure(
+        &format!(
+            "{} of the batch {}",
+            quantity.replace('_', " "),
+            files::label(file)
+        ),
+        &format!(
+            "{} balls, standard {}: {}",
+            values.len(),
+            r.standard.name,
+            r.standard.title
+        ),
+        Axis::linear(&label, quantity, 1.0),
+        &values,
+        bins,
+        &marks,
+    )
+}
+
+/// A number or a dash.
+fn cell(x: Option<f64>, digits: usize) -> String {
+    x.filter(|v| v.is_finite())
+        .map_or_else(|| "–".to_string(), |v| human(v, digits))
+}
+
+fn text(
+    out: &mut dyn Write,
+    ball: &Ball,
+    file: &Path,
+    air: Option<Air>,
+    r: &BatchReport<'_>,
+) -> std::io::Result<()> {
+    let s = &r.summary;
+    let std = r.standard.name;
+    let standard = standards::find(std).map_err(std::io::Error::other)?;
+    writeln!(out, "{}, {} law", ball.label(), r.law)?;
+    writeln!(
+        out,
+        "{} balls from {}, fitted one by one ({}){}; judged against {}: {}, window {}",
+        s.balls,
+        files::label(file),
+        s.free.join(", "),
+        if air.is_some() {
+            ", with air drag"
+        } else {
+            ", in vacuum"
+        },
+        std,
+        r.standard.title,
+        super::standards::window_cell(standard)
+    )?;
+    writeln!(out)?;
+    let (quantity, _) = batch_quantity(standard);
+    let drop = quantity == "rebound_height";
+    let mut head = vec!["id", "points", "COR"];
+    if drop {
+        head.push("rebound m");
+    }
+    head.extend(["verdict", "margin", ""]);
+    let mut rows = vec![head.into_iter().map(String::from).collect::<Vec<_>>()];
+    for b in r.balls {
+        let mut row = vec![b.id.clone(), b.points.to_string(), cell(b.cor, 5)];
+        if drop {
+            row.push(cell(b.measured, 5));
+        }
+        row.push(b.verdict.unwrap_or("no verdict").to_string());
+        row.push(b.margin.map_or("–".into(), |m| format!("{m:+.4}")));
+        row.push(b.error.clone().unwrap_or_default());
+        rows.push(row);
+    }
+    output::table(out, "  ", &rows)?;
+    let st = &s.stats;
+    let unit = if drop { " m" } else { "" };
+    let v = |x: f64| {
+        if x.is_finite() {
+            format!("{}{unit}", human(x, 5))
+        } else {
+            "–".to_string()
+        }
+    };
+    writeln!(out)?;
+    writeln!(
+        out,
+        "{}: n {}, mean {}, sd {}, min {}, max {}",
+        quantity.replace('_', " "),
+        st.n,
+        v(st.mean),
+        v(st.sd),
+        v(st.min),
+        v(st.max)
+    )?;
+    writeln!(
+        out,
+        "failures {} of {}, Cpk {}; {} of {} fits answered",
+        st.failures,
+        st.n,
+        if st.cpk.is_finite() {
+            given(st.cpk, 3)
+        } else {
+            "–".into()
+        },
+        s.identified,
+        s.balls
+    )?;
+    let warned = r.balls.iter().filter(|b| !b.warnings.is_empty()).count();
+    if warned > 0 {
+        writeln!(
+            out,
+            "balls whose fit warns: {warned} (--format json or --csv-out gives the warnings)"
+        )?;
+    }
+    Ok(())
+}
