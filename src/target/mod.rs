@@ -25,10 +25,13 @@
 //! ```
 
 pub mod bat;
+mod history;
 mod linear;
 mod numeric;
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod tests_history;
 #[cfg(test)]
 mod tests_stiff;
 
@@ -36,6 +39,8 @@ use crate::model::contact::ContactLaw;
 use crate::model::params::{Field, ImpactParams, ParamError, check_range};
 use crate::solver::{Method, SolveError, SolveOptions, Unresolved, simulate};
 use serde::Serialize;
+
+pub use history::{TargetHistory, history};
 
 /// What the ball hits. `Target::wall()` is today's rigid, immovable wall.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
@@ -176,6 +181,8 @@ pub(crate) struct Relative {
     pub permanent_indentation: f64,
     pub max_deflection: f64,
     pub method: Method,
+    /// Time followed (s): t_f, or the horizon after which "no rebound" was concluded.
+    pub duration: f64,
 }
 
 impl From<&crate::solver::ImpactResponse> for Relative {
@@ -189,6 +196,7 @@ impl From<&crate::solver::ImpactResponse> for Relative {
             permanent_indentation: r.permanent_indentation,
             max_deflection: 0.0,
             method: r.method,
+            duration: r.duration,
         }
     }
 }
@@ -235,11 +243,29 @@ fn compliant(
     target: &Target,
     method: Option<Method>,
 ) -> Result<Relative, SolveError> {
+    compliant_sampled(reduced, law, target, method, &mut history::Samples::none())
+}
+
+impl Surface {
+    /// The target's surface against the reduced ball `reduced` (docs/targets.md §2).
+    pub(crate) fn of(reduced: &ImpactParams, target: &Target) -> Surface {
+        Surface {
+            lambda_s: target.stiffness / reduced.k_p,
+            zeta_s: (reduced.mass * reduced.k_p).sqrt() / (2.0 * target.damping),
+        }
+    }
+}
+
+/// [`compliant`], with the integrated run's history at `samples`' times.
+fn compliant_sampled(
+    reduced: &ImpactParams,
+    law: ContactLaw,
+    target: &Target,
+    method: Option<Method>,
+    samples: &mut history::Samples,
+) -> Result<Relative, SolveError> {
     let n = reduced.normalized();
-    let surface = Surface {
-        lambda_s: target.stiffness / reduced.k_p,
-        zeta_s: (reduced.mass * reduced.k_p).sqrt() / (2.0 * target.damping),
-    };
+    let surface = Surface::of(reduced, target);
     let unresolved = |reason: Unresolved, steps| SolveError::Unresolved {
         reason,
         steps,
@@ -264,8 +290,11 @@ fn compliant(
             )
             .into());
         }
-        _ => integrated(&n, law, &surface).map_err(|(r, s)| unresolved(r, s))?,
+        _ => integrated(&n, law, &surface, samples).map_err(|(r, s)| unresolved(r, s))?,
     };
+    if out.method == Method::Exact {
+        samples.fill(|times| linear::sample(&n, &surface, times));
+    }
     Ok(out.to_si(reduced))
 }
 
@@ -291,6 +320,7 @@ fn integrated(
     n: &crate::model::params::Normalized,
     law: ContactLaw,
     s: &Surface,
+    samples: &mut history::Samples,
 ) -> Result<Outcome, (Unresolved, usize)> {
     let rate = 2.0 * s.zeta_s * s.lambda_s;
     if s.zeta_s.is_finite() && rate > STIFF_RATE {
@@ -298,15 +328,16 @@ fn integrated(
             zeta_s: f64::INFINITY,
             ..*s
         };
-        let o = numeric::solve(n, law, &spring)?;
+        let o = numeric::solve_sampled(n, law, &spring, samples)?;
         let pulse = std::f64::consts::PI.powi(2) * o.f_max * o.f_max / (2.0 * o.tau_end);
         let work = PULSE_MARGIN * pulse / (rate * s.lambda_s);
         let e = (-o.velocity_end).max(1e-3);
         if o.rebound && work / e <= NEGLIGIBLE {
             return Ok(o);
         }
+        samples.restart();
     }
-    numeric::solve(n, law, s)
+    numeric::solve_sampled(n, law, s, samples)
 }
 
 /// A compliant run's answer in the reduced ball's normalized units (docs/model.md §5 with m*
@@ -341,6 +372,7 @@ impl Outcome {
             permanent_indentation: self.z_f * length,
             max_deflection: self.s_max * length,
             method: self.method,
+            duration: self.tau_end / w0,
         }
     }
 }
