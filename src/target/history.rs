@@ -109,13 +109,23 @@ pub fn history(
     } else {
         compliant_history(&reduced, law, target, collision, samples)?
     };
-    let ratio = reduced.mass / target.mass;
-    h.target_displacement =
-        h.t.iter()
-            .zip(&h.displacement)
-            .map(|(&t, &a)| ratio * (reduced.v0 * t - a))
-            .collect();
+    h.target_displacement = displacement_off_path(
+        reduced.mass / target.mass,
+        reduced.v0,
+        &h.t,
+        &h.displacement,
+    );
     Ok(h)
+}
+
+/// The target's displacement from its free path, u_t = (m*/M)(v_c t − α), at times `t` (s)
+/// where the chain's compression is `alpha` (m); `ratio` = m*/M, `closing` = v_c (m/s). From
+/// M u_t'' = F and m* α'' = −F, both starting at rest in the same place: u_t = −(m*/M)(α − v_c t).
+pub fn displacement_off_path(ratio: f64, closing: f64, t: &[f64], alpha: &[f64]) -> Vec<f64> {
+    t.iter()
+        .zip(alpha)
+        .map(|(&t, &a)| ratio * (closing * t - a))
+        .collect()
 }
 
 /// The compliant run again, sampled on a grid over the first run's duration.

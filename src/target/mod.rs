@@ -40,7 +40,7 @@ use crate::model::params::{Field, ImpactParams, ParamError, check_range};
 use crate::solver::{Method, SolveError, SolveOptions, Unresolved, simulate};
 use serde::Serialize;
 
-pub use history::{TargetHistory, history};
+pub use history::{TargetHistory, displacement_off_path, history};
 
 /// What the ball hits. `Target::wall()` is today's rigid, immovable wall.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]

@@ -52,7 +52,9 @@ pub struct App {
     pub(in crate::tui) quit: bool,
     /// The impact for `run_for`.
     pub(in crate::tui) run: Option<ImpactResponse>,
-    pub(in crate::tui) run_for: Option<(ImpactParams, ContactLaw)>,
+    pub(in crate::tui) run_for: Option<(ImpactParams, ContactLaw, crate::target::Target)>,
+    /// The target's motion in `run`, when it meets a moving or compliant target.
+    pub(in crate::tui) target_motion: Option<crate::figure::explorer::TargetMotion>,
     /// COR and F̄_m vs ζ at the current λ.
     pub(in crate::tui) zeta: Option<ZetaCurve>,
     /// COR vs speed, and the sweeps asked; computed only while the sweeps view shows it.
@@ -107,6 +109,7 @@ impl App {
             quit: false,
             run: None,
             run_for: None,
+            target_motion: None,
             zeta: None,
             sweeps: Default::default(),
             background: false,
@@ -336,13 +339,17 @@ impl App {
     /// actions before one refresh: `p` after `2` in one batch must pin golf's run).
     pub(super) fn refresh_run(&mut self) {
         let s = &self.setting;
-        // the pair's run: the reduced ball at the closing speed (the ball's own at the wall)
-        let key = (s.run_params(), s.law);
+        // the pair's run: the reduced ball at the closing speed, or on the target's surface
+        let key = (s.params, s.law, s.target());
         if self.run_for != Some(key) {
             self.run_for = Some(key);
-            self.run = compute::impact(&key.0, s.law)
-                .map_err(|e| self.error(e))
-                .ok();
+            (self.run, self.target_motion) = match compute::pair(s) {
+                Ok((run, motion)) => (Some(run), motion),
+                Err(e) => {
+                    self.error(e);
+                    (None, None)
+                }
+            };
         }
         let lambda = self.setting.get(Param::Lambda);
         if self.zeta.as_ref().is_none_or(|c| c.lambda != lambda) {
