@@ -13,6 +13,7 @@ mod form;
 mod getters;
 mod picker;
 mod pins;
+mod quit;
 mod scene;
 mod screen;
 
@@ -168,7 +169,9 @@ impl App {
             self.message = None;
         }
         match action {
-            Action::Quit => self.quit = true,
+            Action::Quit => self.ask_to_quit(),
+            Action::QuitNow => self.quit = true,
+            Action::Dismiss => self.info("Esc closes dialogs and never quits: q quits".into()),
             Action::Resize(w, h) => self.resize(w, h),
             Action::HelpScroll(how) => self.scroll_help(how),
             Action::NextView => {

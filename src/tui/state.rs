@@ -187,6 +187,8 @@ pub enum Overlay {
     Picker(super::picker::Picker),
     /// The physical-inputs form (`m`).
     Form(super::physical::Form),
+    /// "Quit?" with what would be lost (`q` with pins, measured data or a fit).
+    Quit(String),
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

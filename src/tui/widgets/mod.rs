@@ -10,6 +10,7 @@ pub mod input;
 pub mod picker;
 pub mod pins;
 pub mod plot;
+pub mod quit;
 pub mod readout;
 pub mod status;
 pub mod strokes;
