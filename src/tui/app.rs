@@ -229,6 +229,7 @@ impl App {
             | Action::MapQuantity
             | Action::MapTargets
             | Action::MapPass { .. } => self.map_action(action),
+            Action::ShowCommand => return self.show_command(),
             _ => self.edit(action),
         }
         Vec::new()
@@ -268,12 +269,6 @@ impl App {
                 self.info(format!("reset to the {} preset", self.presets[i].name));
             }
             Action::Pin => self.pin(),
-            Action::ShowCommand => {
-                self.overlay = Overlay::Command(self.command_line());
-                if let Some(w) = super::command::not_carried(self.preset(), &self.setting) {
-                    self.warn(w);
-                }
-            }
             Action::Unpin => self.unpin(),
             Action::Undo => match self.undo.pop() {
                 Some(previous) => {

@@ -31,4 +31,7 @@ pub enum Effect {
     Map(MapJob),
     /// Read the presets for the picker (`g`); the loop answers `Action::PresetsListed`.
     ListPresets,
+    /// Copy this text to the terminal's clipboard with OSC 52 (`y`,
+    /// [`crate::tui::command::osc52`]); a terminal without it ignores the sequence. No answer.
+    Copy(String),
 }

@@ -155,6 +155,10 @@ fn carry_out(mut effects: Vec<Effect>, app: &mut App, worker: &mut Workers) {
                     worker.fits.want(request);
                     continue;
                 }
+                Effect::Copy(text) => {
+                    super::command::copy(&text);
+                    continue;
+                }
                 Effect::LoadMeasured(path) => match crate::tui::views::fit::state::load(&path) {
                     Ok(data) => Action::MeasuredLoaded { path, data },
                     Err(msg) => Action::MeasuredFailed { msg },
