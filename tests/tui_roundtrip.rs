@@ -14,7 +14,7 @@ use ratatui::crossterm::event::KeyCode;
 
 fn app_of(words: &[String]) -> App {
     let cli = Cli::try_parse_from(words).unwrap_or_else(|e| panic!("{words:?}: {e}"));
-    cli.explore.app(&cli.choice, false).unwrap()
+    cli.explore.app(&cli.choice, false).unwrap().0
 }
 
 fn words(line: &str) -> Vec<String> {

@@ -7,6 +7,8 @@
 
 use super::ball::{self, BallArgs, LawArg, Overrides, PresetChoice, SourceArg};
 use crate::tui::app::App;
+use crate::tui::session::Session;
+use anyhow::Context;
 use clap::Args;
 
 /// The state options of the explorer, as `run` takes them.
@@ -29,6 +31,9 @@ pub struct ExplorerArgs {
     /// ζ = √(m K_p)/(2c) the explorer opens on (c moves; Eq. 24)
     #[arg(long, value_name = "Z", value_parser = super::number::number, allow_hyphen_values = true)]
     pub zeta: Option<f64>,
+    /// A session the explorer's `S` saved: the explorer opens in it again (docs/explorer.md)
+    #[arg(long, value_name = "FILE", conflicts_with_all = ["preset", "config"])]
+    pub session: Option<std::path::PathBuf>,
 }
 
 impl ExplorerArgs {
@@ -47,14 +52,37 @@ impl ExplorerArgs {
             ("--v0", self.v0.is_some()),
             ("--lambda", self.lambda.is_some()),
             ("--zeta", self.zeta.is_some()),
+            ("--session", self.session.is_some()),
         ]
         .into_iter()
         .find_map(|(name, on)| on.then_some(name))
     }
 
     /// The explorer in the state these options give the ball of `choice`, as `run` builds it
-    /// (bad input: `run`'s one-line errors, exit 2).
-    pub fn app(&self, choice: &PresetChoice, color: bool) -> anyhow::Result<App> {
+    /// (bad input: `run`'s one-line errors, exit 2), or in the session `--session` names, with
+    /// the session's measured file.
+    pub fn app(
+        &self,
+        choice: &PresetChoice,
+        color: bool,
+    ) -> anyhow::Result<(App, Option<std::path::PathBuf>)> {
+        let Some(path) = &self.session else {
+            return Ok((self.state_app(choice, color)?, None));
+        };
+        if let Some(option) = self.given().filter(|&o| o != "--session") {
+            anyhow::bail!("{option}: --session restores the whole state; give one of them");
+        }
+        let text = std::fs::read_to_string(path)
+            .with_context(|| format!("cannot read {}", path.display()))?;
+        let session = Session::parse(path, &text).map_err(|e| anyhow::anyhow!(e))?;
+        let entry = ball::select(Some(&session.ball.preset), None)?;
+        let app = App::new(entry.preset, color)
+            .with_session(&session)
+            .map_err(|e| anyhow::anyhow!("{}: {e}", path.display()))?;
+        Ok((app, session.measured))
+    }
+
+    fn state_app(&self, choice: &PresetChoice, color: bool) -> anyhow::Result<App> {
         let entry = ball::select(choice.preset.as_deref(), choice.config.as_deref())?;
         let args = BallArgs {
             choice: choice.clone(),

@@ -370,23 +370,29 @@ fn explorer(
     state: &explore::ExplorerArgs,
     measured: Option<PathBuf>,
 ) -> anyhow::Result<()> {
-    // a measured file is read and checked first, before anything else is asked of the user
+    // the state's options (or session) are checked before the terminal, as `run` checks them
+    let (app, from_session) = state.app(&choice, crate::tui::color_wanted())?;
+    if let (Some(_), Some(m)) = (&from_session, &measured) {
+        anyhow::bail!(
+            "--measured {}: the session names its measured file",
+            m.display()
+        );
+    }
+    let measured = measured.or(from_session);
+    // a measured file is read and checked before anything else is asked of the user
     let data = match &measured {
         Some(path) => Some((measured_file::any(path)?, path)),
         None => None,
     };
-    // the state's options are checked before the terminal, as `run` checks them
-    let app = state.app(&choice, crate::tui::color_wanted())?;
     if !io::stdout().is_terminal() {
         anyhow::bail!(
             "the explorer needs a terminal and stdout is not one; for headless output use \
              `bouncelab run` (e.g. `bouncelab run --preset superball --format json`)"
         );
     }
-    let entry = ball::select(choice.preset.as_deref(), choice.config.as_deref())?;
     let (overlays, loaded) = match data {
         Some((data, path)) => {
-            let p = entry.preset.params();
+            let p = app.setting().params;
             let label = measured_file::label(path);
             let overlays =
                 crate::figure::explorer::MeasuredOverlay::from_data(&data, &label, p.mass, p.v0)

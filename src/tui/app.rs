@@ -171,6 +171,16 @@ impl App {
         match action {
             Action::Quit => self.ask_to_quit(),
             Action::QuitNow => self.quit = true,
+            Action::SaveSession => self.open_input(
+                crate::tui::state::Purpose::SessionPath,
+                "bouncelab-session.toml".into(),
+            ),
+            Action::SessionSaved(path) => self.info(format!(
+                "session saved to {} (bouncelab --session {} restores it)",
+                path.display(),
+                path.display()
+            )),
+            Action::SessionFailed(why) => self.error(format!("session not saved: {why}")),
             Action::Dismiss => self.info("Esc closes dialogs and never quits: q quits".into()),
             Action::Resize(w, h) => self.resize(w, h),
             Action::HelpScroll(how) => self.scroll_help(how),

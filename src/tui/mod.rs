@@ -34,6 +34,7 @@ pub mod param;
 pub mod physical;
 pub mod picker;
 pub mod save;
+pub mod session;
 pub mod setting;
 pub mod state;
 pub mod theme;

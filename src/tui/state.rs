@@ -92,6 +92,8 @@ pub enum Purpose {
     Targets,
     /// A field of the physical-inputs form (`m`): Enter returns to the form.
     Physical(super::physical::Field),
+    /// The file to save the session to (`S`).
+    SessionPath,
 }
 
 /// The text-entry dialog.

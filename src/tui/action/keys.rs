@@ -153,6 +153,7 @@ fn normal(key: KeyEvent) -> Option<Action> {
         KeyCode::Char('u') => Some(Action::Undo),
         KeyCode::Char('e') => Some(Action::Export),
         KeyCode::Char('s') => Some(Action::SavePreset),
+        KeyCode::Char('S') => Some(Action::SaveSession),
         KeyCode::Char('y') => Some(Action::ShowCommand),
         KeyCode::Char('g') => Some(Action::OpenPicker),
         KeyCode::Char('m') => Some(Action::OpenForm),

@@ -13,6 +13,12 @@ pub enum Action {
     Quit,
     /// Ctrl-C: quit at once, asking nothing (an interrupt).
     QuitNow,
+    /// `S`: ask for the file to save the session to (src/tui/session.rs).
+    SaveSession,
+    /// The loop wrote the session file.
+    SessionSaved(PathBuf),
+    /// The session file could not be written: why, one line.
+    SessionFailed(String),
     /// Esc with nothing open to close: never quits (issue 29); says how to.
     Dismiss,
     /// Step `param` (and select it); `coarse` forces the coarse step, otherwise the current
