@@ -204,3 +204,46 @@ fn peers_pair_calibrates_for_the_pair() {
         &["unknown preset 'cricket'"],
     );
 }
+
+/// `peers --target PRESET` (issue 33's name) is `--pair PRESET`, output for output; the COR
+/// sources keep their names under `--target`, and two different partners are refused.
+#[test]
+fn peers_target_preset_is_the_pair() {
+    for format in ["json", "text", "csv"] {
+        let by_pair = ok(&[
+            "peers", "--preset", "golf", "--pair", "tennis", "--format", format,
+        ]);
+        let by_target = ok(&[
+            "peers", "--preset", "golf", "--target", "tennis", "--format", format,
+        ]);
+        assert_eq!(by_pair, by_target, "{format}");
+    }
+    let lammps = ok(&[
+        "peers", "--preset", "golf", "--pair", "tennis", "--export", "lammps",
+    ]);
+    let by_target = ok(&[
+        "peers", "--preset", "golf", "--target", "tennis", "--export", "lammps",
+    ]);
+    assert_eq!(lammps, by_target);
+    let cy = json(&[
+        "peers",
+        "--preset",
+        "golf",
+        "--target",
+        "christoforou-yigit",
+        "--format",
+        "json",
+    ]);
+    assert!(cy.get("pair").is_none());
+    assert_eq!(cy["target_source"], "christoforou-yigit");
+    bad(
+        &[
+            "peers", "--preset", "golf", "--target", "tennis", "--pair", "golf",
+        ],
+        &["target", "two partners"],
+    );
+    bad(
+        &["peers", "--preset", "golf", "--target", "cricket"],
+        &["unknown preset 'cricket'"],
+    );
+}

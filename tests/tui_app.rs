@@ -333,7 +333,9 @@ fn help_overlay_and_quitting() {
     assert_eq!(app.mode(), Mode::Normal);
     assert!(!app.should_quit(), "Esc closes the dialog first");
     press(&mut app, &[KeyCode::Esc]);
-    assert!(app.should_quit());
+    assert!(!app.should_quit(), "Esc never quits (issue 29)");
+    press(&mut app, &chars("q"));
+    assert!(app.should_quit(), "nothing to lose: q quits at once");
 
     let mut app = superball();
     press(&mut app, &[KeyCode::Char('=')]);

@@ -52,6 +52,9 @@ fn o_names_a_bad_file_then_f_fits_and_shift_f_applies() {
     x.wait_for("anyway");
     x.send(b"F");
     x.wait_for("applied");
+    // measured data and a fit would be lost: q asks, a second q quits (issue 29)
+    x.send(b"q");
+    x.wait_for("Quit");
     x.send(b"q");
     let (status, after, out) = x.finish();
     assert!(status.success(), "{status:?}\n{}", out.escape_debug());

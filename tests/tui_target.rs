@@ -94,3 +94,84 @@ fn a_target_that_is_never_met_is_refused() {
     set(&mut a, Field::V0, "1");
     assert_eq!(*a.setting(), before);
 }
+
+/// The racket of docs/targets.md §5: a tennis ball at 20 m/s on a 0.3 kg frame with a string
+/// bed of K_s = 4·10⁴ N/m, c_s = 5 kg/s, typed in the form and the form closed.
+fn racket() -> App {
+    let tennis = bouncelab::catalog::Catalog::embedded()
+        .get("tennis")
+        .unwrap()
+        .preset
+        .clone();
+    let mut a = App::new(tennis, true);
+    set(&mut a, Field::V0, "20");
+    set(&mut a, Field::TargetMass, "0.3");
+    set(&mut a, Field::TargetStiffness, "4e4");
+    set(&mut a, Field::TargetDamping, "5");
+    press(&mut a, &[KeyCode::Esc]);
+    a
+}
+
+/// K_s and c_s typed in the form give `collide`'s answer on that surface to 1e-12 (e 0.738
+/// against the rigid frame's 0.638, docs/targets.md §5); the force–displacement chart then
+/// draws the ball relative to the target, the target pushed off its path and the string bed's
+/// give, on the history's own force; `inf` makes the surface rigid again.
+#[test]
+fn a_compliant_target_typed_in_the_form_is_the_pairs_run() {
+    let mut a = racket();
+    let ball = Ball::from_preset("tennis").unwrap().with_v0(20.0).unwrap();
+    let racket = Target {
+        mass: 0.3,
+        speed: 0.0,
+        stiffness: 4e4,
+        damping: 5.0,
+    };
+    let pair = ball.collide(&racket).unwrap().collision;
+    let run = a.run().unwrap().clone();
+    assert!(
+        (run.cor - pair.cor).abs() <= 1e-12 * pair.cor,
+        "{}",
+        run.cor
+    );
+    assert!((run.max_force - pair.max_force).abs() <= 1e-12 * pair.max_force);
+    assert!((pair.cor - 0.738).abs() < 5e-4, "{}", pair.cor);
+    let fig = bouncelab::figure::explorer::figure(
+        bouncelab::figure::explorer::Chart::Hysteresis,
+        &a.scene(),
+    );
+    let keys: Vec<String> = fig.legend().into_iter().map(|e| e.key).collect();
+    for key in ["α ball−target", "target u_t", "surface s"] {
+        assert!(keys.iter().any(|k| k == key), "{key} not in {keys:?}");
+    }
+    let surface = fig
+        .series
+        .iter()
+        .find(|s| s.id == "target deflection")
+        .unwrap();
+    let s_m = surface.points.iter().map(|p| p.0).fold(0.0, f64::max);
+    let rel = (s_m - pair.max_target_deflection).abs() / pair.max_target_deflection;
+    assert!(rel <= 1e-3, "s_m {s_m} {}", pair.max_target_deflection);
+    // c_s needs K_s: a rigid surface refuses it, and K_s cannot go rigid under a dashpot
+    set(&mut a, Field::TargetStiffness, "inf");
+    assert_eq!(a.setting().target_stiffness, 4e4);
+    press(&mut a, &[KeyCode::Esc, KeyCode::Esc]);
+    set(&mut a, Field::TargetDamping, "0");
+    set(&mut a, Field::TargetStiffness, "inf");
+    let rigid = Target {
+        stiffness: f64::INFINITY,
+        damping: 0.0,
+        ..racket
+    };
+    let rigid = ball.collide(&rigid).unwrap().collision;
+    assert!((a.run().unwrap().cor - rigid.cor).abs() <= 1e-12);
+    assert!((rigid.cor - 0.638).abs() < 5e-4, "{}", rigid.cor);
+}
+
+/// The impact view with the racket at the five sizes of issue 29.
+#[test]
+fn the_racket_at_every_size() {
+    let a = racket();
+    for (w, h) in [(60, 20), (80, 24), (100, 30), (120, 40), (200, 60)] {
+        insta::assert_snapshot!(format!("racket_{w}x{h}"), draw(&a, w, h).backend());
+    }
+}

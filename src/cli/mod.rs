@@ -13,6 +13,7 @@ pub mod batch;
 pub mod budget;
 pub mod collide;
 pub mod drop;
+pub mod explore;
 pub mod figure;
 pub mod fit;
 mod intervals_text;
@@ -58,6 +59,9 @@ pub struct Cli {
     /// test; CSV, labelled by its file name)
     #[arg(long, value_name = "FILE")]
     pub measured: Option<PathBuf>,
+    /// The state the explorer opens in: `run`'s options (src/cli/explore.rs)
+    #[command(flatten)]
+    pub explore: explore::ExplorerArgs,
     #[command(subcommand)]
     pub command: Option<Command>,
 }
@@ -123,7 +127,8 @@ pub fn main() -> ExitCode {
     if cli.command.is_none() {
         // the explorer must not hold the stdout lock: on a signal, crate::signals takes it to
         // restore the terminal
-        return explorer(cli.choice, cli.measured).map_or_else(fail, |()| ExitCode::SUCCESS);
+        return explorer(cli.choice, &cli.explore, cli.measured)
+            .map_or_else(fail, |()| ExitCode::SUCCESS);
     }
     let stdout = io::stdout();
     // no control character reaches the terminal, whatever a preset or path holds
@@ -244,8 +249,13 @@ fn clap_error(e: clap::Error) -> ExitCode {
 fn dispatch(cli: Cli, out: &mut dyn Write) -> anyhow::Result<()> {
     let top = cli.choice;
     let Some(command) = cli.command else {
-        return explorer(top, cli.measured);
+        return explorer(top, &cli.explore, cli.measured);
     };
+    if let Some(option) = cli.explore.given() {
+        anyhow::bail!(
+            "{option} before a subcommand is for the explorer; give it after the subcommand"
+        );
+    }
     if let Some(m) = &cli.measured {
         anyhow::bail!(
             "--measured before a subcommand is for the explorer; to draw {} on a figure use \
@@ -368,8 +378,21 @@ fn merge(top: ball::PresetChoice, ball: &mut ball::BallArgs) -> anyhow::Result<(
 }
 
 /// No subcommand: the explorer, which needs a terminal.
-fn explorer(choice: ball::PresetChoice, measured: Option<PathBuf>) -> anyhow::Result<()> {
-    // a measured file is read and checked first, before anything else is asked of the user
+fn explorer(
+    choice: ball::PresetChoice,
+    state: &explore::ExplorerArgs,
+    measured: Option<PathBuf>,
+) -> anyhow::Result<()> {
+    // the state's options (or session) are checked before the terminal, as `run` checks them
+    let (app, from_session) = state.app(&choice, crate::tui::color_wanted())?;
+    if let (Some(_), Some(m)) = (&from_session, &measured) {
+        anyhow::bail!(
+            "--measured {}: the session names its measured file",
+            m.display()
+        );
+    }
+    let measured = measured.or(from_session);
+    // a measured file is read and checked before anything else is asked of the user
     let data = match &measured {
         Some(path) => Some((measured_file::any(path)?, path)),
         None => None,
@@ -380,10 +403,9 @@ fn explorer(choice: ball::PresetChoice, measured: Option<PathBuf>) -> anyhow::Re
              `bouncelab run` (e.g. `bouncelab run --preset superball --format json`)"
         );
     }
-    let entry = ball::select(choice.preset.as_deref(), choice.config.as_deref())?;
     let (overlays, loaded) = match data {
         Some((data, path)) => {
-            let p = entry.preset.params();
+            let p = app.setting().params;
             let label = measured_file::label(path);
             let overlays =
                 crate::figure::explorer::MeasuredOverlay::from_data(&data, &label, p.mass, p.v0)
@@ -395,8 +417,7 @@ fn explorer(choice: ball::PresetChoice, measured: Option<PathBuf>) -> anyhow::Re
         None => (Vec::new(), None),
     };
     let config = choice.config.clone();
-    crate::tui::run_from(entry.preset, overlays, loaded, config)
-        .map_err(|e| ExplorerFailed(e).into())
+    crate::tui::run_app(app, overlays, loaded, config).map_err(|e| ExplorerFailed(e).into())
 }
 
 #[cfg(test)]

@@ -43,6 +43,24 @@ pub enum TargetArg {
     ChristoforouYigitCurve,
 }
 
+/// What `--target` names: where the target COR comes from, or — any other word — the preset
+/// of a pair's partner, as `--pair` does (issue 33 calls it `peers --target PRESET`). The three
+/// sources' names come first: a preset named like one of them is reached with `--pair`.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum TargetChoice {
+    Source(TargetArg),
+    Pair(String),
+}
+
+/// `--target`'s parser: a source's name (as clap's value enum reads it), else a preset's.
+fn target_or_pair(s: &str) -> Result<TargetChoice, String> {
+    match TargetArg::from_str(s, true) {
+        Ok(t) => Ok(TargetChoice::Source(t)),
+        Err(_) if s.trim().is_empty() => Err("a source or a preset's name is needed".into()),
+        Err(_) => Ok(TargetChoice::Pair(s.to_string())),
+    }
+}
+
 #[derive(Debug, Clone, Args)]
 pub struct PeersArgs {
     #[command(flatten)]
@@ -54,9 +72,10 @@ pub struct PeersArgs {
     /// Impact speed v0 (m/s) [default: the preset's measured v0]
     #[arg(long, value_name = "V", value_parser = super::number::number, allow_hyphen_values = true)]
     pub v0: Option<f64>,
-    /// Target when --cor is not given
-    #[arg(long, value_enum, default_value = "measured")]
-    pub target: TargetArg,
+    /// Target when --cor is not given: measured, christoforou-yigit, christoforou-yigit-curve;
+    /// or another preset's name, the partner of a pair (as --pair PRESET, issue 33's name)
+    #[arg(long, value_name = "TARGET", default_value = "measured", value_parser = target_or_pair)]
+    pub target: TargetChoice,
     /// Calibrate for the pair with another preset ball (docs/targets.md): m_eff = m1 m2/(m1 +
     /// m2), R_eff = R1 R2/(R1 + R2), v0 the closing speed; the target COR is the model's for
     /// the pair unless --cor or another --target is given
@@ -110,9 +129,30 @@ struct Pair {
     effective_radius: f64,
 }
 
+impl PeersArgs {
+    /// The partner of the pair, by `--pair` or `--target PRESET`; both at once is refused.
+    fn pair_name(&self) -> anyhow::Result<Option<&str>> {
+        match (&self.pair, &self.target) {
+            (Some(p), TargetChoice::Pair(t)) if p != t => {
+                anyhow::bail!("target: --target {t} and --pair {p} name two partners; give one")
+            }
+            (Some(p), _) | (None, TargetChoice::Pair(p)) => Ok(Some(p)),
+            (None, TargetChoice::Source(_)) => Ok(None),
+        }
+    }
+
+    /// Where the target COR comes from: a pair named by `--target` takes the default.
+    fn source(&self) -> TargetArg {
+        match self.target {
+            TargetChoice::Source(t) => t,
+            TargetChoice::Pair(_) => TargetArg::Measured,
+        }
+    }
+}
+
 pub fn run(a: &PeersArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     let b = a.ball.resolve(a.v0)?;
-    let (b, pair) = match &a.pair {
+    let (b, pair) = match a.pair_name()? {
         Some(name) => pair_ball(a, b, name)?,
         None => (b, None),
     };
@@ -166,7 +206,7 @@ fn target(a: &PeersArgs, b: &Ball) -> anyhow::Result<(f64, &'static str)> {
     }
     let (p, law) = (&b.params, b.law);
     // a measured COR is the ball's against a wall, not the pair's: a pair takes the model's
-    let which = match (&a.pair, a.target) {
+    let which = match (a.pair_name()?, a.source()) {
         (Some(_), TargetArg::Measured) => TargetArg::ChristoforouYigit,
         (_, which) => which,
     };

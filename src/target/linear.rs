@@ -144,6 +144,20 @@ pub(super) fn solve(n: &Normalized, s: &Surface) -> Result<Outcome, (Unresolved,
     })
 }
 
+/// The history at `times` (normalized): (F̄, z̄, ᾱ, s̄) on the exact flow; z̄ = F̄ on the linear
+/// law without flattening.
+pub(super) fn sample(n: &Normalized, s: &Surface, times: &[f64]) -> Vec<[f64; 4]> {
+    let sys = System::new(n, s);
+    times
+        .iter()
+        .map(|&tau| {
+            let u = sys.at(tau);
+            let f = (sys.force * u)[0];
+            [f, f, u[0], sys.deflection(&u)]
+        })
+        .collect()
+}
+
 /// The grid walk of `solve`: where F̄ first fell to 0 (refined), or `None` at the horizon or at
 /// rest; the state and step there; the grid's peaks of F̄ and s̄ and their steps.
 struct Walk {

@@ -16,6 +16,7 @@
 //! dense output (Brent) and the state there by integrating to them. Explicit only: a surface
 //! dashpot so weak that the phase is stiff runs out of the step budget and says so (no answer).
 
+use super::history::Samples;
 use super::{Outcome, Surface, horizon};
 use crate::model::contact::{Contact, ContactLaw, Unloading};
 use crate::model::params::Normalized;
@@ -128,6 +129,8 @@ struct Watcher<'a> {
     s_max: f64,
     /// Where s̄ peaks within a step (τ), and the step's start (τ, x) to integrate to it from.
     peaks: Vec<(f64, f64, X)>,
+    /// The history asked for, read off the dense output up to the phase's end.
+    samples: &'a mut Samples,
 }
 
 impl Solout<f64, X> for Watcher<'_> {
@@ -164,6 +167,19 @@ impl Solout<f64, X> for Watcher<'_> {
                 }
             }
         }
+        // the history's points in this step, up to the event that ends the phase
+        let upto = best.map_or(t, |(tc, _)| tc);
+        let chain = self.chain;
+        self.samples.take(upto, |tt| {
+            // the step's ends as they are: the first call's step has no length to interpolate
+            let x = match tt {
+                _ if tt <= t_prev => *x_prev,
+                _ if tt >= t => *x,
+                _ => at(tt),
+            };
+            let (f, _, _, _) = chain.rates(&x);
+            [f, x[0], x[0] + x[2] + x[3], x[3]]
+        });
         match best {
             Some((tc, i)) => {
                 self.hit = Some((tc, i, t_prev, *x_prev));
@@ -204,10 +220,21 @@ fn integrate<O: Solout<f64, X>>(chain: &Chain, t0: f64, x0: X, tf: f64, out: &mu
 }
 
 /// The impact, any law; an error is the budget that ran out, with the phases taken.
+#[cfg(test)]
 pub(super) fn solve(
     n: &Normalized,
     law: ContactLaw,
     s: &Surface,
+) -> Result<Outcome, (Unresolved, usize)> {
+    solve_sampled(n, law, s, &mut Samples::none())
+}
+
+/// [`solve`], with the history at `samples`' times read off the dense output.
+pub(super) fn solve_sampled(
+    n: &Normalized,
+    law: ContactLaw,
+    s: &Surface,
+    samples: &mut Samples,
 ) -> Result<Outcome, (Unresolved, usize)> {
     let contact = Contact {
         law,
@@ -225,6 +252,7 @@ pub(super) fn solve(
         t: 0.0,
         x: [0.0, 1.0, 0.0, 0.0],
         peaks: (0.0, 0.0, 0.0),
+        samples,
     };
     for phases in 0..MAX_PHASES {
         if let Some(end) = run.phase().map_err(|r| (r, phases))? {
@@ -236,15 +264,16 @@ pub(super) fn solve(
 
 /// A run between phases: the branch in force, where the next phase starts, and the peaks so
 /// far (F̄_m, z̄_m, s̄_m).
-struct Run {
+struct Run<'s> {
     chain: Chain,
     t_max: f64,
     t: f64,
     x: X,
     peaks: (f64, f64, f64),
+    samples: &'s mut Samples,
 }
 
-impl Run {
+impl Run<'_> {
     /// One phase, to its event: the outcome when the run is over, `None` when another phase
     /// follows, or the budget that ran out.
     fn phase(&mut self) -> Result<Option<Outcome>, Unresolved> {
@@ -256,6 +285,7 @@ impl Run {
             last: (self.t, self.x),
             s_max,
             peaks: Vec::new(),
+            samples: &mut *self.samples,
         };
         let done = integrate(chain, self.t, self.x, self.t_max, &mut w);
         s_max = w.s_max;

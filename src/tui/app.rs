@@ -13,6 +13,7 @@ mod form;
 mod getters;
 mod picker;
 mod pins;
+mod quit;
 mod scene;
 mod screen;
 
@@ -54,7 +55,9 @@ pub struct App {
     pub(in crate::tui) quit: bool,
     /// The impact for `run_for`.
     pub(in crate::tui) run: Option<ImpactResponse>,
-    pub(in crate::tui) run_for: Option<(ImpactParams, ContactLaw)>,
+    pub(in crate::tui) run_for: Option<(ImpactParams, ContactLaw, crate::target::Target)>,
+    /// The target's motion in `run`, when it meets a moving or compliant target.
+    pub(in crate::tui) target_motion: Option<crate::figure::explorer::TargetMotion>,
     /// COR and F̄_m vs ζ at the current λ.
     pub(in crate::tui) zeta: Option<ZetaCurve>,
     /// COR vs speed, and the sweeps asked; computed only while the sweeps view shows it.
@@ -110,6 +113,7 @@ impl App {
             quit: false,
             run: None,
             run_for: None,
+            target_motion: None,
             zeta: None,
             sweeps: Default::default(),
             background: false,
@@ -168,7 +172,19 @@ impl App {
             self.message = None;
         }
         match action {
-            Action::Quit => self.quit = true,
+            Action::Quit => self.ask_to_quit(),
+            Action::QuitNow => self.quit = true,
+            Action::SaveSession => self.open_input(
+                crate::tui::state::Purpose::SessionPath,
+                "bouncelab-session.toml".into(),
+            ),
+            Action::SessionSaved(path) => self.info(format!(
+                "session saved to {} (bouncelab --session {} restores it)",
+                path.display(),
+                path.display()
+            )),
+            Action::SessionFailed(why) => self.error(format!("session not saved: {why}")),
+            Action::Dismiss => self.info("Esc closes dialogs and never quits: q quits".into()),
             Action::Resize(w, h) => self.resize(w, h),
             Action::HelpScroll(how) => self.scroll_help(how),
             Action::NextView => {
@@ -226,6 +242,7 @@ impl App {
             | Action::MapQuantity
             | Action::MapTargets
             | Action::MapPass { .. } => self.map_action(action),
+            Action::ShowCommand => return self.show_command(),
             _ => self.edit(action),
         }
         Vec::new()
@@ -265,12 +282,6 @@ impl App {
                 self.info(format!("reset to the {} preset", self.presets[i].name));
             }
             Action::Pin => self.pin(),
-            Action::ShowCommand => {
-                self.overlay = Overlay::Command(self.command_line());
-                if let Some(w) = super::command::not_carried(self.preset(), &self.setting) {
-                    self.warn(w);
-                }
-            }
             Action::Unpin => self.unpin(),
             Action::Undo => match self.undo.pop() {
                 Some(previous) => {
@@ -339,13 +350,17 @@ impl App {
     /// actions before one refresh: `p` after `2` in one batch must pin golf's run).
     pub(super) fn refresh_run(&mut self) {
         let s = &self.setting;
-        // the pair's run: the reduced ball at the closing speed (the ball's own at the wall)
-        let key = (s.run_params(), s.law);
+        // the pair's run: the reduced ball at the closing speed, or on the target's surface
+        let key = (s.params, s.law, s.target());
         if self.run_for != Some(key) {
             self.run_for = Some(key);
-            self.run = compute::impact(&key.0, s.law)
-                .map_err(|e| self.error(e))
-                .ok();
+            (self.run, self.target_motion) = match compute::pair(s) {
+                Ok((run, motion)) => (Some(run), motion),
+                Err(e) => {
+                    self.error(e);
+                    (None, None)
+                }
+            };
         }
         let lambda = self.setting.get(Param::Lambda);
         if self.zeta.as_ref().is_none_or(|c| c.lambda != lambda) {

@@ -163,6 +163,24 @@ pub fn not_carried(preset: &Preset, setting: &Setting) -> Option<String> {
     })
 }
 
+/// OSC 52, "set the clipboard to `text`": `ESC ] 52 ; c ; base64(text) BEL`, which xterm,
+/// kitty, WezTerm, iTerm2, foot, Windows Terminal and tmux (with `set-clipboard on`) honour and
+/// other terminals ignore (docs/explorer.md, `y`). Base64 by the `base64` crate.
+pub fn osc52(text: &str) -> String {
+    use base64::Engine;
+    let b64 = base64::engine::general_purpose::STANDARD.encode(text.as_bytes());
+    format!("\x1b]52;c;{b64}\x07")
+}
+
+/// Write [`osc52`] of `text` to the terminal (the event loop's part of `y`); a failure to
+/// write only means no copy: the box shows the line to select by hand.
+pub fn copy(text: &str) {
+    use std::io::Write;
+    let mut out = std::io::stdout();
+    let _ = out.write_all(osc52(text).as_bytes());
+    let _ = out.flush();
+}
+
 /// The `#` lines an export's CSV files start with: the command, the ball and law, every
 /// parameter in SI, then one command per pin.
 pub fn csv_header(line: &str, preset: &Preset, setting: &Setting, pins: &[String]) -> Vec<String> {

@@ -3,9 +3,11 @@
 //! against speed is [`crate::tui::views::sweeps::speed`].
 
 use crate::analysis::sweep::{ZetaPoint, cor_vs_zeta, log_space};
+use crate::figure::explorer::TargetMotion;
 use crate::model::contact::ContactLaw;
 use crate::model::params::ImpactParams;
-use crate::solver::{ImpactResponse, SolveOptions, simulate};
+use crate::solver::{History, ImpactResponse, SolveOptions, simulate};
+use crate::tui::setting::Setting;
 use std::sync::OnceLock;
 
 /// History samples of one impact (force–time, force–displacement).
@@ -33,6 +35,70 @@ pub fn impact(params: &ImpactParams, law: ContactLaw) -> Result<ImpactResponse, 
             .with_energy(),
     )
     .map_err(|e| e.to_string())
+}
+
+/// The run of `setting`: the ball's at the wall; against a rigid target the reduced ball's at
+/// the closing speed (docs/targets.md §2), with the target's displacement u_t; on a compliant
+/// target the library's sampled two-body history ([`crate::target::history`]) as an impact of
+/// the reduced ball, with the surface's deflection too. An impact on a compliant target
+/// carries no energy budget (the readout then shows none).
+pub fn pair(setting: &Setting) -> Result<(ImpactResponse, Option<TargetMotion>), String> {
+    let target = setting.target();
+    let p = setting.run_params();
+    if target.is_rigid() {
+        let run = impact(&p, setting.law)?;
+        let motion = (target.mass < f64::INFINITY).then(|| TargetMotion {
+            displacement: crate::target::displacement_off_path(
+                p.mass / target.mass,
+                p.v0,
+                &run.history.t,
+                &run.history.displacement,
+            ),
+            deflection: Vec::new(),
+        });
+        return Ok((run, motion));
+    }
+    let ball = &setting.params;
+    let h = crate::target::history(ball, setting.law, &target, ball.v0, HISTORY_SAMPLES)
+        .map_err(|e| e.to_string())?;
+    let c = &h.collision;
+    let (n, w0) = (p.normalized(), p.omega0());
+    let run = ImpactResponse {
+        law: setting.law,
+        method: c.method,
+        cor: c.cor,
+        rebound: c.rebound,
+        max_force: c.max_force,
+        contact_time: c.contact_time,
+        duration: h.t.last().copied().unwrap_or(0.0),
+        max_indentation: c.max_indentation,
+        permanent_indentation: c.permanent_indentation,
+        // not followed by the two-body history: nothing in the explorer reads it
+        element_displacement: 0.0,
+        max_force_normalized: c.max_force / (p.mass * p.v0 * w0),
+        element_displacement_normalized: 0.0,
+        contact_time_normalized: c.contact_time.map(|t| t * w0),
+        normalized: n,
+        events: Vec::new(),
+        energy: None,
+        history: History {
+            t: h.t,
+            force: h.force,
+            indentation: h.indentation,
+            displacement: h.displacement,
+        },
+        steps: 0,
+        stiff: false,
+    };
+    let motion = TargetMotion {
+        displacement: if target.mass < f64::INFINITY {
+            h.target_displacement
+        } else {
+            Vec::new()
+        },
+        deflection: h.deflection,
+    };
+    Ok((run, Some(motion)))
 }
 
 /// The λ = 0, 0.4, 1 curves, computed once per process.

@@ -31,4 +31,13 @@ pub enum Effect {
     Map(MapJob),
     /// Read the presets for the picker (`g`); the loop answers `Action::PresetsListed`.
     ListPresets,
+    /// Write this session file (`S`) atomically, never over an existing file; the loop answers
+    /// `Action::SessionSaved` or `Action::SessionFailed`.
+    SaveSession {
+        path: std::path::PathBuf,
+        text: String,
+    },
+    /// Copy this text to the terminal's clipboard with OSC 52 (`y`,
+    /// [`crate::tui::command::osc52`]); a terminal without it ignores the sequence. No answer.
+    Copy(String),
 }

@@ -177,6 +177,17 @@ fn carry_out(mut effects: Vec<Effect>, app: &mut App, worker: &mut Workers) {
                     worker.fits.want(request);
                     continue;
                 }
+                Effect::SaveSession { path, text } => {
+                    let mut out = crate::atomic::Outputs::new(false);
+                    match out.text(&path, &text).and_then(|()| out.commit()) {
+                        Ok(_) => Action::SessionSaved(path),
+                        Err(e) => Action::SessionFailed(e.to_string()),
+                    }
+                }
+                Effect::Copy(text) => {
+                    super::command::copy(&text);
+                    continue;
+                }
                 Effect::LoadMeasured(path) => match crate::tui::views::fit::state::load(&path) {
                     Ok(data) => Action::MeasuredLoaded { path, data },
                     Err(msg) => Action::MeasuredFailed { msg },

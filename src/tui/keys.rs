@@ -2,7 +2,7 @@
 //! `update` needs to stop the help's scrolling at its end.
 
 /// (keys, what they do); a row without text is a section heading.
-pub const KEYS: [(&str, &str); 55] = [
+pub const KEYS: [(&str, &str); 57] = [
     ("l / L", "λ up / down (±0.01, coarse ±0.1)"),
     ("z / Z", "ζ up / down (×1.1, coarse ×2)"),
     ("v / V", "v0 up / down (±0.1, coarse ±1 m/s)"),
@@ -22,6 +22,7 @@ pub const KEYS: [(&str, &str); 55] = [
     ("u", "undo the last change"),
     ("e", "export this view (SVG + CSV files)"),
     ("s", "save as a user preset (asks a name)"),
+    ("S", "save the session (asks a file)"),
     ("y", "show the bouncelab run command line"),
     (
         "Tab / Shift+Tab",
@@ -31,7 +32,8 @@ pub const KEYS: [(&str, &str); 55] = [
     ("o / O", "load measured data / put it away"),
     ("f / F", "fit the ball to it / apply the fit"),
     ("?", "this help (Esc, ? or q closes)"),
-    ("q  Esc  Ctrl-C", "quit"),
+    ("q", "quit (asks if work would be lost)"),
+    ("Ctrl-C", "quit at once (Esc never quits)"),
     ("", ""),
     ("In the map view", ""),
     ("← → / ↑ ↓", "move the cursor (the ball): ζ / λ"),

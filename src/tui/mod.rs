@@ -35,6 +35,7 @@ pub mod param;
 pub mod physical;
 pub mod picker;
 pub mod save;
+pub mod session;
 pub mod setting;
 pub mod state;
 pub mod theme;
@@ -83,11 +84,27 @@ pub fn run_from(
     loaded: Option<views::fit::state::Loaded>,
     config: Option<std::path::PathBuf>,
 ) -> anyhow::Result<()> {
+    run_app(
+        app::App::new(preset, color_wanted()),
+        measured,
+        loaded,
+        config,
+    )
+}
+
+/// [`run_from`] on an explorer already set up: opened in the state the command line gave
+/// (`bouncelab --preset golf --law hertz --v0 3 …`, src/cli/explore.rs).
+pub fn run_app(
+    app: app::App,
+    measured: Vec<crate::figure::explorer::MeasuredOverlay>,
+    loaded: Option<views::fit::state::Loaded>,
+    config: Option<std::path::PathBuf>,
+) -> anyhow::Result<()> {
     if !std::io::stdout().is_terminal() {
         anyhow::bail!("the explorer needs a terminal (stdout is not one); see `bouncelab --help`");
     }
     remove_stale_temporaries();
-    let mut app = app::App::new(preset, color_wanted())
+    let mut app = app
         .with_background_sweeps()
         .with_motion(motion_wanted())
         .with_color_depth(palette::detect(

@@ -38,10 +38,14 @@ pub enum Field {
     TargetMass,
     /// The target's speed toward the ball v_t.
     TargetSpeed,
+    /// The target surface's stiffness K_s (∞: rigid).
+    TargetStiffness,
+    /// The damping c_s in parallel with K_s.
+    TargetDamping,
 }
 
 impl Field {
-    pub const ALL: [Field; 12] = [
+    pub const ALL: [Field; 14] = [
         Field::Mass,
         Field::Radius,
         Field::KP,
@@ -54,6 +58,8 @@ impl Field {
         Field::V0,
         Field::TargetMass,
         Field::TargetSpeed,
+        Field::TargetStiffness,
+        Field::TargetDamping,
     ];
 
     pub fn symbol(self) -> &'static str {
@@ -70,6 +76,8 @@ impl Field {
             Field::V0 => "v0",
             Field::TargetMass => "M",
             Field::TargetSpeed => "v_t",
+            Field::TargetStiffness => "K_s",
+            Field::TargetDamping => "c_s",
         }
     }
 
@@ -78,8 +86,8 @@ impl Field {
         match self {
             Field::Mass | Field::TargetMass => "kg",
             Field::Radius | Field::ZP => "m",
-            Field::KP | Field::KR => "N/m",
-            Field::C => "kg/s",
+            Field::KP | Field::KR | Field::TargetStiffness => "N/m",
+            Field::C | Field::TargetDamping => "kg/s",
             Field::E => "Pa",
             Field::V0 | Field::TargetSpeed => "m/s",
             Field::Lambda | Field::Zeta => "",
@@ -110,6 +118,8 @@ impl Field {
             Field::E => f64::NAN,
             Field::TargetMass => s.target_mass,
             Field::TargetSpeed => s.target_speed,
+            Field::TargetStiffness => s.target_stiffness,
+            Field::TargetDamping => s.target_damping,
             Field::Lambda | Field::Zeta | Field::V0 => self.live().map_or(f64::NAN, |q| s.get(q)),
         }
     }
@@ -124,6 +134,14 @@ impl Field {
                 short(MEANINGFUL_MAX, 4)
             ),
             None if self == Field::TargetSpeed => "v0 + v_t > 0 m/s".into(),
+            None if self == Field::TargetStiffness => format!(
+                "{} … {} N/m, or inf (rigid)",
+                short(MEANINGFUL_MIN, 4),
+                short(MEANINGFUL_MAX, 4)
+            ),
+            None if self == Field::TargetDamping => {
+                format!("0 … {} kg/s, with K_s", short(MEANINGFUL_MAX, 4))
+            }
             None => format!(
                 "{} … {} {}",
                 short(MEANINGFUL_MIN, 4),
@@ -161,23 +179,10 @@ impl Field {
                 }
                 next.radius = value;
             }
-            Field::TargetMass | Field::TargetSpeed => {
-                let t = crate::target::Target {
-                    mass: if self == Field::TargetMass {
-                        value
-                    } else {
-                        s.target_mass
-                    },
-                    speed: if self == Field::TargetSpeed {
-                        value
-                    } else {
-                        s.target_speed
-                    },
-                    ..crate::target::Target::wall()
-                };
-                t.validate().map_err(|e| refuse(e.to_string()))?;
-                (next.target_mass, next.target_speed) = (t.mass, t.speed);
-            }
+            Field::TargetMass
+            | Field::TargetSpeed
+            | Field::TargetStiffness
+            | Field::TargetDamping => next = target_set(self, value, s).map_err(refuse)?,
             Field::E => {
                 if !s.elastomer {
                     return Err(
@@ -231,6 +236,28 @@ impl Field {
     }
 }
 
+/// `s` with the target's field `field` set to `value`, checked as `collide` checks it
+/// (`Target::validate`); c_s needs K_s, as `--target-damping` needs `--target-stiffness`: a
+/// dashpot beside a rigid spring has no effect (docs/targets.md §7).
+fn target_set(field: Field, value: f64, s: &Setting) -> Result<Setting, String> {
+    let mut next = s.clone();
+    match field {
+        Field::TargetMass => next.target_mass = value,
+        Field::TargetSpeed => next.target_speed = value,
+        Field::TargetStiffness => next.target_stiffness = value,
+        _ => next.target_damping = value,
+    }
+    next.target().validate().map_err(|e| e.to_string())?;
+    if next.target_damping != 0.0 && next.target_stiffness == f64::INFINITY {
+        return Err(if field == Field::TargetStiffness {
+            "a rigid surface takes no damping: set c_s to 0 first".into()
+        } else {
+            "c_s has no effect on a rigid surface: type K_s first".into()
+        });
+    }
+    Ok(next)
+}
+
 /// The ball and the target must meet (v0 + v_t > 0), and the pair's reduced ball be one the
 /// model takes (docs/targets.md §2).
 fn closing(s: &Setting) -> Result<(), String> {
@@ -282,14 +309,18 @@ pub fn derived(p: &ImpactParams) -> [(&'static str, f64); 4] {
 
 /// Where a run leaves the model's validity: the contact model is a small-deformation model,
 /// so a peak indentation z_m or a peak ball displacement α_max beyond the radius R is outside
-/// it. From the run's own numbers (z_m from the solver, α_max the largest sampled α).
-pub fn validity(run: &ImpactResponse, radius: f64) -> Option<String> {
+/// it. From the run's own numbers (z_m from the solver, α_max the largest sampled α). On a
+/// compliant target α also holds the surface's give s (`deflection`, sampled with α): the
+/// ball's own displacement is α − s (docs/targets.md §2: α = z + y + s).
+pub fn validity(run: &ImpactResponse, deflection: Option<&[f64]>, radius: f64) -> Option<String> {
     let z_m = run.max_indentation;
+    let give = |i: usize| deflection.and_then(|d| d.get(i)).copied().unwrap_or(0.0);
     let alpha = run
         .history
         .displacement
         .iter()
-        .copied()
+        .enumerate()
+        .map(|(i, a)| a - give(i))
         .fold(f64::NAN, f64::max);
     let mm = |x: f64| sig_trim(x * 1e3, 3);
     let mut over = Vec::new();

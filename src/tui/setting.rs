@@ -4,6 +4,7 @@ use super::param::Param;
 use crate::model::contact::ContactLaw;
 use crate::model::params::ImpactParams;
 use crate::preset::Preset;
+use crate::target::Target;
 
 /// What the model runs on: the ball, its parameters (SI) and the contact law. The undo stack
 /// holds these.
@@ -24,6 +25,10 @@ pub struct Setting {
     /// (docs/targets.md §2).
     pub target_mass: f64,
     pub target_speed: f64,
+    /// The target surface's stiffness K_s (N/m; ∞: rigid) and the damping in parallel with it
+    /// c_s (kg/s), typed in the form: the pair's run on a compliant target (docs/targets.md).
+    pub target_stiffness: f64,
+    pub target_damping: f64,
 }
 
 impl Setting {
@@ -36,6 +41,8 @@ impl Setting {
             elastomer: preset.material.kind == crate::preset::MaterialKind::Elastomer,
             target_mass: f64::INFINITY,
             target_speed: 0.0,
+            target_stiffness: f64::INFINITY,
+            target_damping: 0.0,
         }
     }
 
@@ -50,6 +57,16 @@ impl Setting {
             mass: p.mass / (1.0 + p.mass / self.target_mass),
             v0: p.v0 + self.target_speed,
             ..*p
+        }
+    }
+
+    /// The target the ball meets: the wall until M, v_t, K_s or c_s is typed.
+    pub fn target(&self) -> Target {
+        Target {
+            mass: self.target_mass,
+            speed: self.target_speed,
+            stiffness: self.target_stiffness,
+            damping: self.target_damping,
         }
     }
 

@@ -92,6 +92,8 @@ pub enum Purpose {
     Targets,
     /// A field of the physical-inputs form (`m`): Enter returns to the form.
     Physical(super::physical::Field),
+    /// The file to save the session to (`S`).
+    SessionPath,
 }
 
 /// The text-entry dialog.
@@ -187,6 +189,8 @@ pub enum Overlay {
     Picker(super::picker::Picker),
     /// The physical-inputs form (`m`).
     Form(super::physical::Form),
+    /// "Quit?" with what would be lost (`q` with pins, measured data or a fit).
+    Quit(String),
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

@@ -92,6 +92,9 @@ pub struct Scene<'a> {
     /// Whether the calibrations for this ball are still out (`models` may be a stale ball's,
     /// and is then not drawn).
     pub models_pending: bool,
+    /// The target's motion in the current run, when the ball meets a moving or compliant
+    /// target (the force–displacement chart draws it).
+    pub target: Option<&'a TargetMotion>,
 }
 
 /// What a chart lacks to be exported (its computation failed, or a sweep is still out), as
@@ -177,6 +180,9 @@ fn history_figure(chart: Chart, scene: &Scene) -> Figure {
             s.look.key = Some(format!("{} α", p.key()));
         }
         fig.insert_before_measured(s);
+    }
+    if chart == Chart::Hysteresis {
+        target::add(&mut fig, scene);
     }
     if chart == Chart::ForceTime {
         for s in labels::result_labels(run) {
@@ -368,6 +374,8 @@ pub mod models;
 pub use labels::result_labels;
 
 mod pins;
+mod target;
+pub use target::TargetMotion;
 
 #[cfg(test)]
 mod tests;

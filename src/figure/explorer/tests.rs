@@ -30,6 +30,7 @@ fn a_scene_without_results_draws_frames_and_says_what_is_missing() {
         measured: &[],
         models: None,
         models_pending: false,
+        target: None,
     };
     let ft = figure(Chart::ForceTime, &scene);
     assert!(ft.series.is_empty());
@@ -68,6 +69,7 @@ fn zeta_charts_show_the_decades_and_mark_the_current_lambda() {
         measured: &[],
         models: None,
         models_pending: false,
+        target: None,
     };
     let fig = figure(Chart::CorZeta, &scene);
     assert_eq!(fig.x.range, Some((0.01, 100.0)));

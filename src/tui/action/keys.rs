@@ -17,7 +17,7 @@ pub fn from_event(event: &Event, mode: Mode) -> Option<Action> {
 pub fn from_key(key: KeyEvent, mode: Mode) -> Option<Action> {
     let ctrl = key.modifiers.contains(KeyModifiers::CONTROL);
     if ctrl && matches!(key.code, KeyCode::Char('c' | 'C')) {
-        return Some(Action::Quit);
+        return Some(Action::QuitNow);
     }
     if ctrl && mode == Mode::Input && matches!(key.code, KeyCode::Char('u' | 'U')) {
         return Some(Action::InputClear);
@@ -43,8 +43,14 @@ pub fn from_key(key: KeyEvent, mode: Mode) -> Option<Action> {
         Mode::Help => help(key.code),
         Mode::Picker => picker(key.code),
         Mode::Form => form(key.code),
+        // Esc never quits (issue 29): only q, which may ask first
         Mode::TooSmall => match key.code {
-            KeyCode::Char('q') | KeyCode::Esc => Some(Action::Quit),
+            KeyCode::Char('q') => Some(Action::Quit),
+            _ => None,
+        },
+        Mode::QuitConfirm => match key.code {
+            KeyCode::Char('q' | 'y' | 'Y') => Some(Action::Quit),
+            KeyCode::Char('n' | 'N') | KeyCode::Esc => Some(Action::CloseHelp),
             _ => None,
         },
         Mode::Normal | Mode::Map | Mode::Crosshair if ctrl => None,
@@ -122,7 +128,8 @@ fn normal(key: KeyEvent) -> Option<Action> {
     };
     let selected = |dir, coarse| Some(Action::StepSelected { dir, coarse });
     match key.code {
-        KeyCode::Char('q') | KeyCode::Esc => Some(Action::Quit),
+        KeyCode::Char('q') => Some(Action::Quit),
+        KeyCode::Esc => Some(Action::Dismiss),
         KeyCode::Char('l') => step(Param::Lambda, Dir::Up),
         KeyCode::Char('L') => step(Param::Lambda, Dir::Down),
         KeyCode::Char('z') => step(Param::Zeta, Dir::Up),
@@ -146,6 +153,7 @@ fn normal(key: KeyEvent) -> Option<Action> {
         KeyCode::Char('u') => Some(Action::Undo),
         KeyCode::Char('e') => Some(Action::Export),
         KeyCode::Char('s') => Some(Action::SavePreset),
+        KeyCode::Char('S') => Some(Action::SaveSession),
         KeyCode::Char('y') => Some(Action::ShowCommand),
         KeyCode::Char('g') => Some(Action::OpenPicker),
         KeyCode::Char('m') => Some(Action::OpenForm),

@@ -8,7 +8,19 @@ use std::path::PathBuf;
 /// Everything the user can ask for. [`super::app::App::update`] is the only place they act.
 #[derive(Debug, Clone, PartialEq)]
 pub enum Action {
+    /// `q`: quit, after asking when pins, measured data or a fit would be lost (a second `q`
+    /// or `y` in the question quits).
     Quit,
+    /// Ctrl-C: quit at once, asking nothing (an interrupt).
+    QuitNow,
+    /// `S`: ask for the file to save the session to (src/tui/session.rs).
+    SaveSession,
+    /// The loop wrote the session file.
+    SessionSaved(PathBuf),
+    /// The session file could not be written: why, one line.
+    SessionFailed(String),
+    /// Esc with nothing open to close: never quits (issue 29); says how to.
+    Dismiss,
     /// Step `param` (and select it); `coarse` forces the coarse step, otherwise the current
     /// step size applies.
     Step {
@@ -201,6 +213,8 @@ pub enum Mode {
     /// The physical-inputs form: arrows select a field, Enter or `=` types its value, Esc
     /// closes.
     Form,
+    /// "Quit and lose …?": `q` or `y` quits, `n` or Esc stays.
+    QuitConfirm,
 }
 
 mod keys;
@@ -275,12 +289,30 @@ mod tests {
             Mode::Confirm,
             Mode::TooSmall,
         ] {
-            assert_eq!(from_key(ctrl_c, mode), Some(Action::Quit));
+            assert_eq!(from_key(ctrl_c, mode), Some(Action::QuitNow));
+        }
+        // Esc never quits from a main view (issue 29)
+        for mode in [Mode::Normal, Mode::Map, Mode::Crosshair, Mode::TooSmall] {
+            assert_ne!(
+                from_key(key(KeyCode::Esc), mode),
+                Some(Action::Quit),
+                "{mode:?}"
+            );
         }
         assert_eq!(
             from_key(key(KeyCode::Esc), Mode::Normal),
+            Some(Action::Dismiss)
+        );
+        assert_eq!(
+            from_key(key(KeyCode::Char('q')), Mode::Normal),
             Some(Action::Quit)
         );
+        let quit = |c| from_key(key(c), Mode::QuitConfirm);
+        assert_eq!(quit(KeyCode::Char('q')), Some(Action::Quit));
+        assert_eq!(quit(KeyCode::Char('y')), Some(Action::Quit));
+        assert_eq!(quit(KeyCode::Char('n')), Some(Action::CloseHelp));
+        assert_eq!(quit(KeyCode::Esc), Some(Action::CloseHelp));
+        assert_eq!(quit(KeyCode::Char('l')), None);
         assert_eq!(
             from_key(key(KeyCode::Esc), Mode::Help),
             Some(Action::CloseHelp)

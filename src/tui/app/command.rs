@@ -12,6 +12,33 @@ impl App {
         self
     }
 
+    /// The explorer opened in the state the command line gave (`bouncelab --preset golf --law
+    /// hertz --v0 3 …`, src/cli/explore.rs): the ball's parameters, law and radius (None: the
+    /// preset's), the start of the undo history.
+    pub fn with_start(
+        mut self,
+        params: crate::model::params::ImpactParams,
+        law: crate::model::contact::ContactLaw,
+        radius: Option<f64>,
+    ) -> App {
+        self.setting.params = params;
+        self.setting.law = law;
+        self.setting.radius = radius.unwrap_or(self.setting.radius);
+        self.refresh();
+        self
+    }
+
+    /// `y`: the line in its box, and copied to the terminal's clipboard (OSC 52) where the
+    /// terminal allows; a setting the line cannot carry is named.
+    pub(super) fn show_command(&mut self) -> Vec<crate::tui::effect::Effect> {
+        let line = self.command_line();
+        self.overlay = crate::tui::state::Overlay::Command(line.clone());
+        if let Some(w) = crate::tui::command::not_carried(self.preset(), &self.setting) {
+            self.warn(w);
+        }
+        vec![crate::tui::effect::Effect::Copy(line)]
+    }
+
     /// The `bouncelab run` line that runs what the screen shows.
     pub fn command_line(&self) -> String {
         self.command_for(&self.setting)

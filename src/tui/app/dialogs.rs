@@ -76,6 +76,17 @@ impl App {
             Purpose::Value(p) => p,
             Purpose::PresetName => return self.submit_name(text),
             Purpose::MeasuredPath => return self.submit_path(text),
+            Purpose::SessionPath => {
+                self.overlay = Overlay::None;
+                if text.is_empty() {
+                    return None;
+                }
+                let text_out = self.session().to_toml();
+                return Some(Effect::SaveSession {
+                    path: std::path::PathBuf::from(text),
+                    text: text_out,
+                });
+            }
             Purpose::Targets => {
                 self.submit_targets(&text);
                 return None;

@@ -81,6 +81,7 @@ impl App {
     /// Whether the current run leaves the model's validity (z_m or α_max beyond R), and by
     /// how much: [`physical::validity`] on the run's own numbers.
     pub fn validity(&self) -> Option<String> {
-        physical::validity(self.run.as_ref()?, self.setting.radius)
+        let deflection = self.target_motion.as_ref().map(|m| m.deflection.as_slice());
+        physical::validity(self.run.as_ref()?, deflection, self.setting.radius)
     }
 }

@@ -91,6 +91,7 @@ impl App {
             Overlay::Confirm(_) => Mode::Confirm,
             Overlay::Picker(_) => Mode::Picker,
             Overlay::Form(_) => Mode::Form,
+            Overlay::Quit(_) => Mode::QuitConfirm,
         }
     }
 }

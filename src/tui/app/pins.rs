@@ -5,7 +5,7 @@ use super::{App, Ghost, MAX_PINS};
 impl App {
     /// Pin the current run: its curves stay, dimmed and tagged, while the setting moves on.
     /// A run already pinned is not pinned twice; past [`MAX_PINS`] nothing is pinned.
-    pub(super) fn pin(&mut self) {
+    pub(in crate::tui) fn pin(&mut self) {
         if let Some(i) = self.pins.iter().position(|g| g.setting == self.setting) {
             return self.info(format!("already pinned as p{}", i + 1));
         }

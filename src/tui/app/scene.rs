@@ -81,6 +81,7 @@ impl App {
             measured: &self.fit.overlays,
             models: self.models(),
             models_pending: self.models.wanted.is_some(),
+            target: self.target_motion.as_ref(),
         }
     }
 }

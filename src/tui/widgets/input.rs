@@ -74,6 +74,13 @@ fn render(input: &Input, s: &Setting, theme: &Theme, area: Rect, buf: &mut Buffe
             " Enter accepts · Esc back to the form",
             50,
         ),
+        Purpose::SessionPath => (
+            " Save the session ".to_string(),
+            " ball, law, v0, target, pins, measured file, view".to_string(),
+            " file: ".to_string(),
+            " Enter saves · Esc cancels",
+            62,
+        ),
         Purpose::Targets => (
             " Map targets ".to_string(),
             " e.g. cor>=0.8,max_force<=2000 (N, s); empty clears".to_string(),

@@ -11,6 +11,7 @@ pub mod marks;
 pub mod picker;
 pub mod pins;
 pub mod plot;
+pub mod quit;
 pub mod readout;
 pub mod status;
 pub mod strokes;

@@ -302,6 +302,7 @@ impl Readout<'_> {
             };
             lines.push(Line::styled(note, theme.dim()));
         }
+        lines.extend(self.target_note());
         // a preset saved at another speed keeps no measurements, and its `[measured] v0` is
         // only the speed it runs at: claim no measurement then
         let m = &self.preset.measured;
@@ -317,5 +318,30 @@ impl Readout<'_> {
             ));
         }
         lines
+    }
+
+    /// What the ball meets when it is not the wall: the run is then the pair's
+    /// (docs/targets.md; docs/explorer.md).
+    fn target_note(&self) -> Vec<Line<'static>> {
+        let t = self.setting.target();
+        if t == crate::target::Target::wall() {
+            return Vec::new();
+        }
+        let v = |x: f64| {
+            if x.is_finite() {
+                sig_trim(x, 4)
+            } else {
+                "∞".into()
+            }
+        };
+        let mut text = format!(" pair: target M {} kg, v_t {} m/s", v(t.mass), v(t.speed));
+        if !t.is_rigid() {
+            text.push_str(&format!(
+                ", K_s {} N/m, c_s {} kg/s",
+                v(t.stiffness),
+                v(t.damping)
+            ));
+        }
+        vec![Line::styled(text, self.theme.dim())]
     }
 }

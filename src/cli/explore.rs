@@ -1,0 +1,99 @@
+//! The explorer's own options (issue 29 item 2): every option `run` takes for a preset ball —
+//! `--params`, `--law`, `--mass`, `--radius`, `--k-p`, `--damping`, `--k-r`, `--z-p`, `--v0`,
+//! `--lambda`, `--zeta` — so that `bouncelab --preset golf --law hertz --v0 3 --lambda 0.5`
+//! opens the explorer in the state `bouncelab run` with the same options runs, and the line
+//! `y` shows (the `run` line) gives that state back without `run`. The ball is built by
+//! `run`'s own steps ([`BallArgs::resolve`], [`ball::set_lambda_zeta`]).
+
+use super::ball::{self, BallArgs, LawArg, Overrides, PresetChoice, SourceArg};
+use crate::tui::app::App;
+use crate::tui::session::Session;
+use anyhow::Context;
+use clap::Args;
+
+/// The state options of the explorer, as `run` takes them.
+#[derive(Debug, Clone, Default, Args)]
+pub struct ExplorerArgs {
+    /// Parameter set of the preset the explorer opens on [default: the preset's]
+    #[arg(long, value_enum, value_name = "SET")]
+    pub params: Option<SourceArg>,
+    /// Contact law the explorer opens on [default: the preset's]
+    #[arg(long, value_enum)]
+    pub law: Option<LawArg>,
+    #[command(flatten)]
+    pub set: Overrides,
+    /// Impact speed v0 (m/s) the explorer opens on [default: the preset's]
+    #[arg(long, value_name = "V", value_parser = super::number::number, allow_hyphen_values = true)]
+    pub v0: Option<f64>,
+    /// λ = K_r/K_p the explorer opens on (K_r moves; Eq. 24)
+    #[arg(long, value_name = "L", value_parser = super::number::number, allow_hyphen_values = true)]
+    pub lambda: Option<f64>,
+    /// ζ = √(m K_p)/(2c) the explorer opens on (c moves; Eq. 24)
+    #[arg(long, value_name = "Z", value_parser = super::number::number, allow_hyphen_values = true)]
+    pub zeta: Option<f64>,
+    /// A session the explorer's `S` saved: the explorer opens in it again (docs/explorer.md)
+    #[arg(long, value_name = "FILE", conflicts_with_all = ["preset", "config"])]
+    pub session: Option<std::path::PathBuf>,
+}
+
+impl ExplorerArgs {
+    /// The first option given, as the error before a subcommand names it.
+    pub fn given(&self) -> Option<&'static str> {
+        let s = &self.set;
+        [
+            ("--params", self.params.is_some()),
+            ("--law", self.law.is_some()),
+            ("--mass", s.size.mass.is_some()),
+            ("--radius", s.size.radius.is_some()),
+            ("--k-p", s.k_p.is_some()),
+            ("--damping", s.damping.is_some()),
+            ("--k-r", s.k_r.is_some()),
+            ("--z-p", s.z_p.is_some()),
+            ("--v0", self.v0.is_some()),
+            ("--lambda", self.lambda.is_some()),
+            ("--zeta", self.zeta.is_some()),
+            ("--session", self.session.is_some()),
+        ]
+        .into_iter()
+        .find_map(|(name, on)| on.then_some(name))
+    }
+
+    /// The explorer in the state these options give the ball of `choice`, as `run` builds it
+    /// (bad input: `run`'s one-line errors, exit 2), or in the session `--session` names, with
+    /// the session's measured file.
+    pub fn app(
+        &self,
+        choice: &PresetChoice,
+        color: bool,
+    ) -> anyhow::Result<(App, Option<std::path::PathBuf>)> {
+        let Some(path) = &self.session else {
+            return Ok((self.state_app(choice, color)?, None));
+        };
+        if let Some(option) = self.given().filter(|&o| o != "--session") {
+            anyhow::bail!("{option}: --session restores the whole state; give one of them");
+        }
+        let text = std::fs::read_to_string(path)
+            .with_context(|| format!("cannot read {}", path.display()))?;
+        let session = Session::parse(path, &text).map_err(|e| anyhow::anyhow!(e))?;
+        let entry = ball::select(Some(&session.ball.preset), None)?;
+        let app = App::new(entry.preset, color)
+            .with_session(&session)
+            .map_err(|e| anyhow::anyhow!("{}: {e}", path.display()))?;
+        Ok((app, session.measured))
+    }
+
+    fn state_app(&self, choice: &PresetChoice, color: bool) -> anyhow::Result<App> {
+        let entry = ball::select(choice.preset.as_deref(), choice.config.as_deref())?;
+        let args = BallArgs {
+            choice: choice.clone(),
+            params: self.params,
+            law: self.law,
+            set: self.set.clone(),
+        };
+        ball::check_overrides(&self.set, self.lambda, self.zeta)?;
+        let mut b = args.resolve(self.v0)?;
+        ball::set_lambda_zeta(&mut b.params, self.lambda, self.zeta)?;
+        let radius = b.measured.as_ref().map(|m| m.radius);
+        Ok(App::new(entry.preset, color).with_start(b.params, b.law, radius))
+    }
+}

@@ -1,0 +1,194 @@
+//! Sessions (issue 29 item 3): `S` writes the explorer's state to a TOML file, `bouncelab
+//! --session FILE` opens the explorer in it again — the ball (its preset and every parameter,
+//! SI), the law, v0, the target, the pins, the measured file (by path), the view and the
+//! selected parameter (docs/explorer.md, "Sessions"). Written atomically (src/atomic.rs); a
+//! file that does not read is one line `FILE:LINE:COLUMN: why`, exit 2.
+
+use super::app::App;
+use super::param::Param;
+use super::setting::Setting;
+use super::state::View;
+use crate::model::contact::ContactLaw;
+use crate::model::params::ImpactParams;
+use serde::{Deserialize, Serialize};
+use std::path::{Path, PathBuf};
+
+/// The session file's version: what this explorer writes and reads.
+pub const VERSION: u32 = 1;
+
+/// The explorer's state as the file holds it.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Session {
+    pub version: u32,
+    /// The view shown: impact, sweeps, models, map or drop.
+    pub view: String,
+    /// The parameter the arrows move (the cursor): lambda, zeta or v0.
+    pub selected: String,
+    /// The measured file drawn and fitted to, by path (read again on restore).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub measured: Option<PathBuf>,
+    /// The current setting.
+    pub ball: Ball,
+    /// The pinned settings, oldest first.
+    #[serde(default)]
+    pub pins: Vec<Ball>,
+}
+
+/// One setting: the ball by its preset's name, the law, its parameters and the target (SI;
+/// `inf` for an infinite mass or stiffness).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Ball {
+    pub preset: String,
+    pub law: String,
+    pub radius: f64,
+    pub elastomer: bool,
+    pub target_mass: f64,
+    pub target_speed: f64,
+    pub target_stiffness: f64,
+    pub target_damping: f64,
+    pub params: ImpactParams,
+}
+
+fn view_name(v: View) -> &'static str {
+    match v {
+        View::Impact => "impact",
+        View::Sweeps => "sweeps",
+        View::Models => "models",
+        View::Map => "map",
+        View::Drop => "drop",
+    }
+}
+
+fn param_name(p: Param) -> &'static str {
+    match p {
+        Param::Lambda => "lambda",
+        Param::Zeta => "zeta",
+        Param::V0 => "v0",
+    }
+}
+
+impl App {
+    /// The session of the current state (`S`).
+    pub fn session(&self) -> Session {
+        let ball = |s: &Setting| Ball {
+            preset: self.presets[s.preset].name.clone(),
+            law: s.law.name().into(),
+            radius: s.radius,
+            elastomer: s.elastomer,
+            target_mass: s.target_mass,
+            target_speed: s.target_speed,
+            target_stiffness: s.target_stiffness,
+            target_damping: s.target_damping,
+            params: s.params,
+        };
+        Session {
+            version: VERSION,
+            view: view_name(self.view).into(),
+            selected: param_name(self.selected).into(),
+            measured: self.fit.loaded.as_ref().map(|l| l.path.clone()),
+            ball: ball(&self.setting),
+            pins: self.pins.iter().map(|g| ball(&g.setting)).collect(),
+        }
+    }
+
+    /// This explorer in `session`'s state: the pins pinned again (their runs recomputed), the
+    /// setting, view and cursor; or why not (a preset the explorer does not hold, a name it
+    /// does not know). The measured file is the caller's to read.
+    pub fn with_session(mut self, session: &Session) -> Result<App, String> {
+        for pin in &session.pins {
+            self.setting = self.setting_of(pin)?;
+            self.refresh();
+            self.pin();
+        }
+        self.setting = self.setting_of(&session.ball)?;
+        self.view = [
+            View::Impact,
+            View::Sweeps,
+            View::Models,
+            View::Map,
+            View::Drop,
+        ]
+        .into_iter()
+        .find(|&v| view_name(v) == session.view)
+        .ok_or_else(|| format!("view: unknown view '{}'", session.view))?;
+        self.selected = [Param::Lambda, Param::Zeta, Param::V0]
+            .into_iter()
+            .find(|&p| param_name(p) == session.selected)
+            .ok_or_else(|| format!("selected: unknown parameter '{}'", session.selected))?;
+        self.undo.clear();
+        self.message = None;
+        self.refresh();
+        Ok(self)
+    }
+
+    fn setting_of(&self, b: &Ball) -> Result<Setting, String> {
+        let preset = self
+            .presets
+            .iter()
+            .position(|p| p.name == b.preset)
+            .ok_or_else(|| format!("preset: '{}' is not among the explorer's balls", b.preset))?;
+        let law: ContactLaw = b
+            .law
+            .parse()
+            .map_err(|_| format!("law: unknown law '{}'", b.law))?;
+        let s = Setting {
+            preset,
+            params: b.params,
+            law,
+            radius: b.radius,
+            elastomer: b.elastomer,
+            target_mass: b.target_mass,
+            target_speed: b.target_speed,
+            target_stiffness: b.target_stiffness,
+            target_damping: b.target_damping,
+        };
+        s.params.validate().map_err(|e| e.to_string())?;
+        s.target().validate().map_err(|e| e.to_string())?;
+        Ok(s)
+    }
+}
+
+impl Session {
+    /// The file's text.
+    pub fn to_toml(&self) -> String {
+        let body = toml::to_string(self).expect("a session is plain numbers and names");
+        format!("# bouncelab explorer session (docs/explorer.md, Sessions)\n{body}")
+    }
+
+    /// Read a session from `text` (the file `path`); an error is one line
+    /// `PATH:LINE:COLUMN: why`.
+    pub fn parse(path: &Path, text: &str) -> Result<Session, String> {
+        let s: Session = toml::from_str(text).map_err(|e| {
+            let at = e.span().map_or((1, 1), |r| line_column(text, r.start));
+            let why = e
+                .message()
+                .lines()
+                .next()
+                .unwrap_or("not a session")
+                .to_string();
+            format!("{}:{}:{}: {why}", path.display(), at.0, at.1)
+        })?;
+        if s.version != VERSION {
+            let line = text
+                .lines()
+                .position(|l| l.trim_start().starts_with("version"))
+                .map_or(1, |i| i + 1);
+            return Err(format!(
+                "{}:{line}:1: version {} is not one this explorer reads ({VERSION})",
+                path.display(),
+                s.version
+            ));
+        }
+        Ok(s)
+    }
+}
+
+/// The 1-based line and column (in characters) of byte `at` of `text`.
+fn line_column(text: &str, at: usize) -> (usize, usize) {
+    let before = &text[..at.min(text.len())];
+    let line = before.matches('\n').count() + 1;
+    let column = before.rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1;
+    (line, column)
+}

@@ -1,0 +1,127 @@
+//! The explorer and the command line (issue 29 item 2): `bouncelab --preset golf --law hertz
+//! --v0 3 --lambda 0.5 --mass 0.05 …` — every option `run` takes for a preset ball — opens the
+//! explorer in the state `bouncelab run` with those options runs (its COR, F_m and t_f to
+//! 1e-12), and the line `y` then shows, fed back to the parser, gives the same state.
+
+mod common;
+mod tui_common;
+
+use bouncelab::cli::Cli;
+use bouncelab::tui::app::{App, Overlay};
+use clap::Parser;
+use common::{bad, f, json};
+use ratatui::crossterm::event::KeyCode;
+
+fn app_of(words: &[String]) -> App {
+    let cli = Cli::try_parse_from(words).unwrap_or_else(|e| panic!("{words:?}: {e}"));
+    cli.explore.app(&cli.choice, false).unwrap().0
+}
+
+fn words(line: &str) -> Vec<String> {
+    line.split_whitespace().map(String::from).collect()
+}
+
+fn same(a: f64, b: f64) -> bool {
+    (a - b).abs() <= 1e-12 * a.abs().max(b.abs())
+}
+
+const LINES: [&str; 5] = [
+    "--preset golf --law hertz --v0 3 --lambda 0.5 --mass 0.05",
+    "--preset superball --v0 2.5 --zeta 0.3 --radius 0.03",
+    "--preset baseball --law elastic-plastic --k-p 2e5 --z-p 0.004 --damping 30 --k-r 1e5 --v0 5",
+    "--preset golf --params materials --mass 0.046 --v0 10",
+    "--preset tennis --law linear --lambda 2 --zeta 0.05",
+];
+
+#[test]
+fn the_command_line_opens_the_explorer_in_runs_state() {
+    for line in LINES {
+        let app = app_of(&words(&format!("bouncelab {line}")));
+        let mut run_args = words(&format!("run {line} --format json"));
+        run_args.retain(|w| !w.is_empty());
+        let args: Vec<&str> = run_args.iter().map(String::as_str).collect();
+        let r = json(&args);
+        let run = app.run().expect("a run");
+        for (key, got) in [
+            ("cor", run.cor),
+            ("max_force", run.max_force),
+            ("contact_time", run.contact_time.unwrap()),
+        ] {
+            assert!(same(f(&r, key), got), "{line}: {key} {} {got}", f(&r, key));
+        }
+    }
+}
+
+#[test]
+fn the_line_y_shows_gives_the_same_state_back() {
+    for line in LINES {
+        let mut app = app_of(&words(&format!("bouncelab {line}")));
+        tui_common::press(&mut app, &[KeyCode::Char('y')]);
+        let Overlay::Command(shown) = app.overlay().clone() else {
+            panic!("no command box")
+        };
+        assert!(!shown.contains('\n'), "{shown}");
+        // the `run` line; without `run`, the explorer's
+        let mut back = words(&shown);
+        assert_eq!(back.remove(1), "run", "{shown}");
+        let again = app_of(&back);
+        let (a, b) = (app.setting(), again.setting());
+        assert_eq!(
+            (a.preset, a.law, a.radius),
+            (b.preset, b.law, b.radius),
+            "{shown}"
+        );
+        let (p, q) = (&a.params, &b.params);
+        for (name, x, y) in [
+            ("m", p.mass, q.mass),
+            ("K_p", p.k_p, q.k_p),
+            ("K_r", p.k_r, q.k_r),
+            ("c", p.damping, q.damping),
+            ("z_p", p.z_p, q.z_p),
+            ("K_h", p.k_h, q.k_h),
+            ("v0", p.v0, q.v0),
+        ] {
+            assert!(same(x, y), "{line} → {shown}: {name} {x} {y}");
+        }
+    }
+}
+
+/// Bad state options are `run`'s one-line errors, exit 2, before any terminal is needed; before
+/// a subcommand they are refused by name.
+#[test]
+fn bad_state_options_are_one_line_and_exit_2() {
+    bad(&["--preset", "golf", "--v0", "-3"], &["v0"]);
+    bad(
+        &["--preset", "golf", "--lambda", "0.5", "--k-r", "5"],
+        &["--k-r", "--lambda"],
+    );
+    bad(
+        &["--law", "hertz", "run", "--preset", "golf"],
+        &["--law", "before a subcommand"],
+    );
+}
+
+/// `y` shows the line on one row wherever the terminal is wider than it (a mouse selects it
+/// whole) and asks the loop to copy it with OSC 52: ESC ] 52 ; c ; base64(line) BEL.
+#[test]
+fn y_shows_one_unwrapped_row_and_copies_it_with_osc_52() {
+    let line = LINES[2];
+    let mut app = app_of(&words(&format!("bouncelab {line}")));
+    let effects = app.update(bouncelab::tui::action::Action::ShowCommand);
+    let Overlay::Command(shown) = app.overlay().clone() else {
+        panic!("no command box")
+    };
+    assert_eq!(
+        effects,
+        vec![bouncelab::tui::app::Effect::Copy(shown.clone())]
+    );
+    assert!(shown.len() > 76, "longer than the old box: {shown}");
+    // just wide enough, and wide
+    let fit = shown.chars().count() as u16 + 2;
+    for (w, h) in [(fit, 40), (200, 60)] {
+        let screen = tui_common::screen_text(&tui_common::draw(&app, w, h)).join("\n");
+        assert!(screen.contains(&shown), "{w}×{h}: {screen}");
+    }
+    let osc = bouncelab::tui::command::osc52("bouncelab run --v0 3");
+    assert_eq!(osc, "\x1b]52;c;Ym91bmNlbGFiIHJ1biAtLXYwIDM=\x07");
+}

@@ -1,0 +1,121 @@
+//! Sessions (issue 29 item 3): `S` asks for a file and hands the loop the session's TOML; the
+//! TOML read back opens an explorer in the same state — ball and every parameter, law, v0,
+//! the target, the pins, the view, the selected parameter; `bouncelab --session FILE` reads
+//! it, and a file that does not read is one line FILE:LINE:COLUMN, exit 2.
+
+mod common;
+mod tui_common;
+
+use bouncelab::preset::Preset;
+use bouncelab::tui::action::Action;
+use bouncelab::tui::app::{App, Effect};
+use bouncelab::tui::session::Session;
+use ratatui::crossterm::event::KeyCode;
+use std::path::Path;
+use tui_common::*;
+
+fn golf() -> App {
+    App::new(Preset::embedded().remove(1), false)
+}
+
+/// A state with something of everything: λ and ζ moved, another law, two pins (one of
+/// another ball), a moving target, the sweeps view, v0 selected.
+fn worked() -> App {
+    let mut a = golf();
+    press(&mut a, &chars("llp3zzcp"));
+    a.update(Action::LoadPreset(1));
+    press(&mut a, &chars("vvc"));
+    press(&mut a, &[KeyCode::Char('m')]);
+    press(&mut a, &[KeyCode::Esc]);
+    press(&mut a, &[KeyCode::Right, KeyCode::Right, KeyCode::Tab]);
+    a
+}
+
+#[test]
+fn s_saves_and_the_file_restores_the_same_state() {
+    let mut a = worked();
+    assert_eq!(a.pins().len(), 2);
+    // S, Enter on the suggested name: the loop is handed the session's text
+    press(&mut a, &[KeyCode::Char('S')]);
+    let effects = a.update(Action::InputSubmit);
+    let [Effect::SaveSession { path, text }] = effects.as_slice() else {
+        panic!("{effects:?}")
+    };
+    assert_eq!(path, Path::new("bouncelab-session.toml"));
+    assert_eq!(*text, a.session().to_toml());
+    let read = Session::parse(path, text).unwrap();
+    assert_eq!(read, a.session());
+    let b = golf().with_session(&read).unwrap();
+    assert_eq!(b.setting(), a.setting());
+    assert_eq!((b.view(), b.selected()), (a.view(), a.selected()));
+    let pins = |x: &App| {
+        x.pins()
+            .iter()
+            .map(|g| g.setting.clone())
+            .collect::<Vec<_>>()
+    };
+    assert_eq!(pins(&b), pins(&a));
+    assert_eq!(b.run().unwrap().cor, a.run().unwrap().cor);
+    assert_eq!(
+        b.undo_depth(),
+        0,
+        "a restored session starts the undo history"
+    );
+}
+
+#[test]
+fn a_target_and_infinities_read_back() {
+    let mut a = golf();
+    let mut s = a.session();
+    s.ball.target_mass = 0.8;
+    s.ball.target_stiffness = 4e4;
+    s.ball.target_damping = 5.0;
+    a = a.with_session(&s).unwrap();
+    let text = a.session().to_toml();
+    assert!(text.contains("target_stiffness = 40000"), "{text}");
+    let wall = golf().session().to_toml();
+    assert!(wall.contains("target_mass = inf"), "{wall}");
+    let back = Session::parse(Path::new("x.toml"), &wall).unwrap();
+    assert_eq!(back.ball.target_mass, f64::INFINITY);
+}
+
+#[test]
+fn a_bad_session_is_one_line_with_file_line_and_column_exit_2() {
+    let text = golf().session().to_toml();
+    let dir = tempfile::tempdir().unwrap();
+    let cases = [
+        (
+            text.replace("view = \"impact\"", "view = 3"),
+            "invalid type",
+        ),
+        (
+            text.replace("law = \"linear\"", "law = \"plastic\""),
+            "unknown law",
+        ),
+        (format!("colour = 1\n{text}"), "unknown field"),
+        (text.replace("version = 1", "version = 7"), "version 7"),
+    ];
+    for (i, (bad, why)) in cases.iter().enumerate() {
+        let file = dir.path().join(format!("s{i}.toml"));
+        std::fs::write(&file, bad).unwrap();
+        let o = common::bl(&["--session", file.to_str().unwrap()]);
+        assert_eq!(o.code, 2, "{why}: {}", o.stderr);
+        let err = o.stderr.trim();
+        assert_eq!(err.lines().count(), 1, "{err}");
+        assert!(err.contains(why), "{why}: {err}");
+        if *why != "unknown law" {
+            // the field's place in the file: FILE:LINE:COLUMN
+            let at = format!("{}:", file.display());
+            let rest = &err[err.find(&at).expect(err) + at.len()..];
+            let mut nums = rest.split(':').take(2).map(|n| n.parse::<usize>());
+            assert!(nums.all(|n| n.is_ok_and(|n| n > 0)), "{err}");
+        }
+    }
+    // a good one reads and gets as far as the terminal
+    let good = dir.path().join("good.toml");
+    std::fs::write(&good, &text).unwrap();
+    let o = common::bl(&["--session", good.to_str().unwrap()]);
+    assert!(o.stderr.contains("needs a terminal"), "{}", o.stderr);
+    let o = common::bl(&["--session", good.to_str().unwrap(), "--law", "hertz"]);
+    assert_eq!(o.code, 2, "{}", o.stderr);
+}
