@@ -40,7 +40,11 @@ fn a_stiff_spring_sliding_throughout_loses_mu_times_the_normal_impulse() {
     assert!(r.slid_throughout);
     let impulse = (1.0 + r.cor_normal) * r.vy_in;
     let dvx = r.vx_out - r.vx_in;
-    assert!(rel(dvx, -mu * impulse) < 1e-6, "Δv_x {dvx} vs {}", -mu * impulse);
+    assert!(
+        rel(dvx, -mu * impulse) < 1e-6,
+        "Δv_x {dvx} vs {}",
+        -mu * impulse
+    );
     let dw = r.spin_out - r.spin_in;
     let expected = mu * impulse / (kappa * R); // m R/I = 1/(κ R)
     assert!(rel(dw, expected) < 1e-6, "Δω {dw} vs {expected}");
@@ -100,7 +104,10 @@ fn the_independent_integration_agrees_over_a_grid() {
             }
         }
     }
-    assert!(switches > 50, "the grid must switch between stick and slip: {switches}");
+    assert!(
+        switches > 50,
+        "the grid must switch between stick and slip: {switches}"
+    );
     eprintln!("worst disagreement {worst:e} over 120 impacts, {switches} switches");
 }
 
@@ -114,7 +121,11 @@ fn the_energy_balance_closes() {
                 let o = setup(angle, spin, mu, kt, 0.55);
                 let r = oblique::solve(&p, 25.0, &o, 0).unwrap();
                 let e = r.energy;
-                assert!(e.residual < 1e-12, "{angle}° {spin} {mu}: residual {:e}", e.residual);
+                assert!(
+                    e.residual < 1e-12,
+                    "{angle}° {spin} {mu}: residual {:e}",
+                    e.residual
+                );
                 assert!(e.friction_dissipation >= 0.0);
             }
         }
@@ -125,12 +136,48 @@ fn the_energy_balance_closes() {
 fn bad_input_names_the_field() {
     let p = tennis();
     let cases: [(Oblique, &str); 6] = [
-        (Oblique { angle_deg: 0.0, ..ok() }, "invalid angle: 0"),
-        (Oblique { angle_deg: 90.5, ..ok() }, "invalid angle: 90.5"),
-        (Oblique { friction: -0.1, ..ok() }, "invalid friction: -0.1"),
-        (Oblique { tangential_stiffness: 0.0, ..ok() }, "invalid tangential_stiffness: 0"),
-        (Oblique { inertia_factor: 0.0, ..ok() }, "invalid inertia_factor: 0"),
-        (Oblique { inertia_factor: 1.5, ..ok() }, "invalid inertia_factor: 1.5"),
+        (
+            Oblique {
+                angle_deg: 0.0,
+                ..ok()
+            },
+            "invalid angle: 0",
+        ),
+        (
+            Oblique {
+                angle_deg: 90.5,
+                ..ok()
+            },
+            "invalid angle: 90.5",
+        ),
+        (
+            Oblique {
+                friction: -0.1,
+                ..ok()
+            },
+            "invalid friction: -0.1",
+        ),
+        (
+            Oblique {
+                tangential_stiffness: 0.0,
+                ..ok()
+            },
+            "invalid tangential_stiffness: 0",
+        ),
+        (
+            Oblique {
+                inertia_factor: 0.0,
+                ..ok()
+            },
+            "invalid inertia_factor: 0",
+        ),
+        (
+            Oblique {
+                inertia_factor: 1.5,
+                ..ok()
+            },
+            "invalid inertia_factor: 1.5",
+        ),
     ];
     for (o, message) in cases {
         let err = oblique::solve(&p, 25.0, &o, 0).unwrap_err();

@@ -11,6 +11,7 @@ pub mod ball;
 pub mod bat;
 pub mod budget;
 pub mod collide;
+pub mod court;
 pub mod drop;
 pub mod figure;
 pub mod fit;
@@ -19,6 +20,7 @@ pub mod map;
 pub use crate::measured::file as measured_file;
 pub use crate::text::parse as number;
 pub mod mc;
+pub mod oblique;
 pub mod output;
 pub mod peers;
 pub mod presets;
@@ -102,6 +104,12 @@ pub enum Command {
     /// force and contact time (docs/scale.md)
     #[command(allow_negative_numbers = true)]
     Mc(mc::McArgs),
+    /// An oblique impact with friction and spin: outgoing speed, angle and spin, the
+    /// tangential COR and the grip (docs/oblique.md)
+    #[command(allow_negative_numbers = true)]
+    Oblique(oblique::ObliqueArgs),
+    /// The ITF Court Pace Rating of a surface of friction μ (ITF CS 01/02, docs/oblique.md)
+    Court(court::CourtArgs),
 }
 
 /// The explorer failed (its terminal, its event loop): not the input's fault.
@@ -317,6 +325,14 @@ fn dispatch(cli: Cli, out: &mut dyn Write) -> anyhow::Result<()> {
         Command::Mc(mut a) => {
             merge(top, &mut a.ball)?;
             mc::run(&a, out)
+        }
+        Command::Oblique(mut a) => {
+            merge(top, &mut a.ball)?;
+            oblique::run(&a, out)
+        }
+        Command::Court(mut a) => {
+            merge(top, &mut a.ball)?;
+            court::run(&a, out)
         }
         Command::Standards(a) => {
             if top.is_given() {

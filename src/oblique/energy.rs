@@ -80,8 +80,7 @@ impl Answer<'_> {
         let e = &energy;
         let input = e.translational_in + e.rotational_in;
         let losses = e.normal_dissipation + e.friction_dissipation + e.tangential_spring;
-        energy.residual =
-            (input - e.translational_out - e.rotational_out - losses).abs() / input;
+        energy.residual = (input - e.translational_out - e.rotational_out - losses).abs() / input;
         let vc_in_si = run.vc_in * vy;
         let history = (samples > 0).then(|| self.history(path, &run, samples));
         ObliqueResponse {
@@ -118,14 +117,19 @@ impl Answer<'_> {
         let tf = path.end();
         let mut h = ObliqueHistory::default();
         for j in 0..n {
-            let tau = if n > 1 { tf * j as f64 / (n - 1) as f64 } else { 0.0 };
+            let tau = if n > 1 {
+                tf * j as f64 / (n - 1) as f64
+            } else {
+                0.0
+            };
             let i = run
                 .phases
                 .partition_point(|ph| ph.end < tau)
                 .min(run.phases.len() - 1);
             let pt = path.at(tau);
             let (u, vc) = run.phases[i].state(s, &pt, tau);
-            let spin = self.oblique.spin - vy * (vc - run.vc_in) / ((1.0 + s.kappa) * self.oblique.radius);
+            let spin =
+                self.oblique.spin - vy * (vc - run.vc_in) / ((1.0 + s.kappa) * self.oblique.radius);
             h.t.push(tau / w0);
             h.normal_force.push(pt.force * force);
             h.friction_force.push(-s.kt * u * force);

@@ -10,6 +10,7 @@
 //! it slides, the switches root-found. [`reference`] integrates the same model independently
 //! (DOP853 with events at every switch); tests/oblique.rs holds the two together.
 
+pub mod court;
 mod energy;
 pub mod reference;
 mod tangential;
@@ -74,6 +75,14 @@ pub enum ObliqueError {
     /// The normal impact does not rebound (λ = 0 and ζ ≥ 1): there is no outgoing motion.
     #[error("the ball does not rebound (λ = 0, ζ ≥ 1): no outgoing motion to report")]
     NoRebound,
+    /// The normal motion asked for is not the linear law's (exit 2).
+    #[error(
+        "invalid law: oblique impacts run the linear law only (its exact normal flow): use --law linear"
+    )]
+    Law,
+    /// A quantity the ball does not carry (a ball that is no preset) and was not given (exit 2).
+    #[error("invalid {0}: the ball is no preset and carries none: give it")]
+    Missing(&'static str),
     /// The stick/slip switches did not come to an end within [`MAX_PHASES`].
     #[error("no answer: more than 100000 stick/slip phases in one contact")]
     Phases,
@@ -128,7 +137,11 @@ impl Oblique {
             return Err(invalid("angle", a, "must lie in (0, 90] degrees"));
         }
         if !self.spin.is_finite() || self.spin.abs() > 1e9 {
-            return Err(invalid("spin", self.spin, "must be finite, |ω| ≤ 1e9 rad/s"));
+            return Err(invalid(
+                "spin",
+                self.spin,
+                "must be finite, |ω| ≤ 1e9 rad/s",
+            ));
         }
         let mu = self.friction;
         if !(mu.is_finite() && (0.0..=1e6).contains(&mu)) {
@@ -233,7 +246,9 @@ pub struct ObliqueResponse {
     /// The normal impact as `run` gives it at v_y.
     #[serde(skip)]
     pub normal: ImpactResponse,
-    /// The sampled histories, when asked for (empty otherwise).
+    /// The sampled histories, when asked for: `t`, `normal_force`, `friction_force`,
+    /// `slip_velocity`, `spin` beside the other keys.
+    #[serde(flatten, skip_serializing_if = "Option::is_none")]
     pub history: Option<ObliqueHistory>,
 }
 

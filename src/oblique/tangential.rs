@@ -85,11 +85,7 @@ fn step(s: &Scaled, tf: f64) -> f64 {
 }
 
 /// The tangential motion over the whole contact, from ṽ_c = `vc_in` at first touch.
-pub(crate) fn run(
-    path: &impl NormalMotion,
-    s: &Scaled,
-    vc_in: f64,
-) -> Result<Run, ObliqueError> {
+pub(crate) fn run(path: &impl NormalMotion, s: &Scaled, vc_in: f64) -> Result<Run, ObliqueError> {
     let tf = path.end();
     let h = step(s, tf);
     let p0 = path.at(0.0);
@@ -151,8 +147,8 @@ pub(crate) fn run(
 }
 
 /// Where `phase` ends before τ_f, if it does: the first τ > start where its switch function
-/// turns positive. At its start the function is 0 (a switch just happened) or below; the
-/// crossing is bracketed from the last point where it was negative.
+/// turns positive after being negative. At its start the function is 0 (a switch just
+/// happened) or below; the crossing is bracketed from the last point where it was negative.
 fn find_switch(
     path: &impl NormalMotion,
     s: &Scaled,
@@ -180,14 +176,16 @@ fn find_switch(
         let (gb, db, fb) = g(b);
         *max_friction = max_friction.max(fb);
         if gb > 0.0 {
-            let (a, ga) = match below {
-                Some((a, ga, _)) => (a, ga),
-                None => match probe_below(&|t| g(t).0, start, b) {
-                    Some(below) => below,
-                    None => return Some(start),
-                },
+            let bracket = match below {
+                Some((a, ga, _)) => Some((a, ga)),
+                None => probe_below(&|t| g(t).0, start, b),
             };
-            return Some(brent(|t| g(t).0, a, b, ga, gb, tol));
+            // a function that has not been negative since the start marks no switch: the
+            // two modes agree there to second order (k̃u on the cap, ṽ_c = μF̄'/k̃), and the
+            // phase goes on until its function has turned negative and back
+            if let Some((a, ga)) = bracket {
+                return Some(brent(|t| g(t).0, a, b, ga, gb, tol));
+            }
         }
         if let Some((a, ga, da)) = below
             && da > 0.0
@@ -212,7 +210,7 @@ fn find_switch(
 }
 
 /// A point in (start, b) where the switch function is negative, when the first step already
-/// ends above zero (a switch tangent at the phase's start); `None`: the phase ends at once.
+/// ends above zero (a switch tangent at the phase's start).
 fn probe_below(g: &impl Fn(f64) -> f64, start: f64, b: f64) -> Option<(f64, f64)> {
     (1..48).find_map(|j| {
         let c = start + (b - start) * 0.5f64.powi(j);

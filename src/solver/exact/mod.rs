@@ -271,9 +271,7 @@ impl ExactRunner<'_> {
         self.out.velocity_end = self.x[1];
         self.out.y_end = self.x[2] / y_scale(lambda);
         if opts.energy {
-            let dashpot = segments
-                .iter()
-                .map(|seg| dashpot_energy(seg, lambda, zeta));
+            let dashpot = segments.iter().map(|seg| dashpot_energy(seg, lambda, zeta));
             self.out.dashpot = Some(dashpot.sum());
         }
         self.out.samples = sample(segments, self.tau, opts.samples, y_scale(lambda));
