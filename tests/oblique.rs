@@ -199,3 +199,25 @@ fn ok() -> Oblique {
         radius: R,
     }
 }
+
+#[test]
+fn the_peak_friction_force_is_the_historys_largest() {
+    // exact per phase (docs/oblique.md §3): a dense history never exceeds it, and comes close
+    let p = tennis();
+    let kt = mindlin_ratio(0.5) * p.k_p;
+    for (angle, spin, mu) in [(16.0, 300.0, 0.6), (45.0, -200.0, 2.0), (70.0, 0.0, 0.3)] {
+        let o = setup(angle, spin, mu, kt, 0.55);
+        let r = oblique::solve(&p, 25.0, &o, 20_001).unwrap();
+        let h = r.history.as_ref().unwrap();
+        let sampled = h.friction_force.iter().fold(0.0f64, |m, f| m.max(f.abs()));
+        let peak = r.max_friction_force;
+        assert!(
+            sampled <= peak * (1.0 + 1e-12),
+            "{angle}°: {sampled} > {peak}"
+        );
+        assert!(
+            sampled >= peak * (1.0 - 1e-6),
+            "{angle}°: {sampled} ≪ {peak}"
+        );
+    }
+}

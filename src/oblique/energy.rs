@@ -82,6 +82,12 @@ impl Answer<'_> {
         let losses = e.normal_dissipation + e.friction_dissipation + e.tangential_spring;
         energy.residual = (input - e.translational_out - e.rotational_out - losses).abs() / input;
         let vc_in_si = run.vc_in * vy;
+        let kinks = path.kinks();
+        let max_friction = run
+            .phases
+            .iter()
+            .map(|ph| ph.max_friction(s, path, &kinks))
+            .fold(0.0, f64::max);
         let history = (samples > 0).then(|| self.history(path, &run, samples));
         ObliqueResponse {
             v_in: self.v,
@@ -101,7 +107,7 @@ impl Answer<'_> {
             grip_time: grip / w0,
             contact_time: tf / w0,
             max_normal_force: normal.max_force,
-            max_friction_force: run.max_friction * m * vy * w0,
+            max_friction_force: max_friction * m * vy * w0,
             energy,
             phases: run.phases,
             normal,

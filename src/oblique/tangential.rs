@@ -58,22 +58,51 @@ impl Phase {
 
     /// The switch function: the phase goes on while G ≤ 0 and ends where it turns positive.
     /// Stick: G = k̃|u| − μF̄; slip: G = μF̄'/k̃ − sṽ_c. With its rate in a stick (else 0).
-    fn switch(&self, s: &Scaled, p: &PathPoint, tau: f64) -> (f64, f64, f64) {
+    fn switch(&self, s: &Scaled, p: &PathPoint, tau: f64) -> (f64, f64) {
         let (u, vc) = self.state(s, p, tau);
         match self.mode {
             Mode::Stick => {
                 let rate = s.kt * u.signum() * vc - s.mu * p.rate;
-                (s.kt * u.abs() - s.mu * p.force, rate, s.kt * u.abs())
+                (s.kt * u.abs() - s.mu * p.force, rate)
             }
-            Mode::Slip(sg) => (s.mu * p.rate / s.kt - sg * vc, 0.0, s.mu * p.force),
+            Mode::Slip(sg) => (s.mu * p.rate / s.kt - sg * vc, 0.0),
+        }
+    }
+
+    /// The largest |F̃_t| over the phase, exactly: while sticking k̃|ũ| with ũ harmonic (its
+    /// amplitude where a crest falls inside, else an end); while sliding μF̄, and F̄ is
+    /// monotone between the normal phase ends `kinks` (its peaks are unloads), so its largest
+    /// value is at an end of this phase or at a kink inside it.
+    pub(crate) fn max_friction(&self, s: &Scaled, path: &impl NormalMotion, kinks: &[f64]) -> f64 {
+        match self.mode {
+            Mode::Stick => {
+                let w = s.omega_t;
+                let (a, b) = (self.u0, self.vc0 / w);
+                let len = self.end - self.start;
+                let first = b.atan2(a).rem_euclid(std::f64::consts::PI) / w;
+                let ends = [self.start, self.end].map(|t| {
+                    let (sn, cs) = (w * (t - self.start)).sin_cos();
+                    (a * cs + b * sn).abs()
+                });
+                let crest = if first <= len { a.hypot(b) } else { 0.0 };
+                s.kt * ends[0].max(ends[1]).max(crest)
+            }
+            Mode::Slip(_) => {
+                let inside = kinks.iter().filter(|&&k| k > self.start && k < self.end);
+                let force = [self.start, self.end]
+                    .iter()
+                    .chain(inside)
+                    .map(|&t| path.at(t).force)
+                    .fold(0.0, f64::max);
+                s.mu * force
+            }
         }
     }
 }
 
-/// The phases of one contact and the largest |F̃_t| met.
+/// The phases of one contact.
 pub(crate) struct Run {
     pub phases: Vec<Phase>,
-    pub max_friction: f64,
     pub vc_in: f64,
 }
 
@@ -105,14 +134,13 @@ pub(crate) fn run(path: &impl NormalMotion, s: &Scaled, vc_in: f64) -> Result<Ru
     };
     let mut run = Run {
         phases: Vec::new(),
-        max_friction: 0.0,
         vc_in,
     };
     loop {
         if run.phases.len() >= MAX_PHASES {
             return Err(ObliqueError::Phases);
         }
-        let switch = find_switch(path, s, &phase, h, tf, &mut run.max_friction);
+        let switch = find_switch(path, s, &phase, h, tf);
         let Some(t) = switch.filter(|&t| t < tf) else {
             phase.end = tf;
             run.phases.push(phase);
@@ -155,14 +183,12 @@ fn find_switch(
     phase: &Phase,
     h: f64,
     tf: f64,
-    max_friction: &mut f64,
 ) -> Option<f64> {
     let g = |t: f64| phase.switch(s, &path.at(t), t);
     let tol = 1e-15 * tf.max(1.0);
     let mut below: Option<(f64, f64, f64)> = None;
     let start = phase.start;
-    let (g0, d0, f0) = g(start);
-    *max_friction = max_friction.max(f0);
+    let (g0, d0) = g(start);
     if g0 < 0.0 {
         below = Some((start, g0, d0));
     }
@@ -173,8 +199,7 @@ fn find_switch(
         if b <= start {
             return None;
         }
-        let (gb, db, fb) = g(b);
-        *max_friction = max_friction.max(fb);
+        let (gb, db) = g(b);
         if gb > 0.0 {
             let bracket = match below {
                 Some((a, ga, _)) => Some((a, ga)),
@@ -194,8 +219,7 @@ fn find_switch(
         {
             // a peak of k̃|u| − μF̄ between two points below the cap
             let tm = brent(|t| g(t).1, a, b, da, db, tol);
-            let (gm, _, fm) = g(tm);
-            *max_friction = max_friction.max(fm);
+            let (gm, _) = g(tm);
             if gm > 0.0 {
                 return Some(brent(|t| g(t).0, a, tm, ga, gm, tol));
             }
