@@ -59,6 +59,9 @@ pub struct Ball {
     /// A fitted preset's `[fit]` table, on its adopted set and law: the source of
     /// [`Ball::intervals`] (`None` for every other ball).
     pub fit: Option<crate::preset::FitTable>,
+    /// The preset material's Poisson ratio ν (`None` for other balls): the default tangential
+    /// stiffness of an oblique impact, Mindlin's K_t = 2(1 − ν)/(2 − ν) K_p.
+    pub poisson_ratio: Option<f64>,
 }
 
 mod batch;
@@ -68,6 +71,7 @@ mod error;
 mod fit;
 mod intervals;
 mod mc;
+mod oblique;
 mod report;
 mod rows;
 mod sweep;
@@ -81,6 +85,7 @@ pub use entry::Overrides;
 pub use error::BallError;
 pub use intervals::{Intervals, bands, holds, intervals};
 pub use mc::{McReport, MonteCarlo};
+pub use oblique::{CourtPace, ObliqueSpec, SOLID_INERTIA_FACTOR};
 pub use report::{BallHeader, Energy, FitReport, ImpactReport, MeasuredAt};
 pub use rows::{ImpactRow, impact_row, impact_rows};
 pub use sweep::{sweep_zeta, sweep_zeta_watched};
@@ -152,6 +157,7 @@ impl Ball {
             measured: None,
             description: String::new(),
             fit: None,
+            poisson_ratio: None,
         })
     }
 
@@ -180,6 +186,7 @@ impl Ball {
             measured: None,
             description: String::new(),
             fit: None,
+            poisson_ratio: None,
         })
     }
 

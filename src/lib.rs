@@ -90,6 +90,7 @@ pub mod figure;
 pub mod map;
 pub mod measured;
 pub mod model;
+pub mod oblique;
 pub mod peers;
 pub mod preset;
 #[doc(hidden)]

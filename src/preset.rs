@@ -87,6 +87,10 @@ pub struct Measured {
     pub max_force: Option<f64>,
     /// Measured contact time, s, when reported.
     pub contact_time: Option<f64>,
+    /// κ = I/(m R²), the moment of inertia about a diameter (oblique impacts,
+    /// docs/oblique.md §1); a solid ball's 0.4 when absent.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub inertia_factor: Option<f64>,
 }
 
 /// Material data. SI units.

@@ -234,9 +234,10 @@ fn standards_lists_every_standard() {
     assert!(out.contains("not confirmed"));
     let v = json(&["standards", "--format", "json"]);
     let list = v.as_array().unwrap();
-    // the ball standards, then the bat standards (tests/cli_targets.rs)
+    // the ball standards, then the bat standards (tests/cli_targets.rs), then the court's
+    // (tests/cli_oblique.rs)
     let bats = bouncelab::target::bat::BAT_STANDARDS.len();
-    assert_eq!(list.len(), STANDARDS.len() + bats);
+    assert_eq!(list.len(), STANDARDS.len() + bats + 1);
     assert_eq!(list[3]["name"], "fiba");
     assert_eq!(list[3]["test"]["rebound_ref"], "top");
     assert_eq!(list[3]["window"], serde_json::json!([1.2, 1.4]));

@@ -7,7 +7,7 @@ import numpy.typing as npt
 
 Law = Literal["linear", "elastic-plastic", "hertz"]
 ParamSet = Literal["adopted", "materials"]
-Floats = Union[float, Sequence[float], npt.NDArray[np.float64]]
+Floats = Union[float, Sequence[float], npt.Array]
 Array = npt.NDArray[np.float64]
 
 class NoAnswerError(ValueError):
@@ -291,6 +291,51 @@ def collide(
     """The ball against a target of mass M (inf: the wall) moving at v_t toward it, rigid or
     with a surface K_s ∥ c_s, as ``bouncelab collide``; or against another preset ball
     (``target_preset``)."""
+
+class ObliqueImpact:
+    """An oblique impact, SI units; attributes are ``bouncelab oblique --format json``'s keys."""
+
+    v_in: float
+    angle_in_deg: float
+    spin_in: float
+    vx_in: float
+    vy_in: float
+    v_out: float
+    angle_out_deg: float
+    spin_out: float
+    vx_out: float
+    vy_out: float
+    cor_normal: float
+    cor_tangential: Optional[float]
+    apparent_friction: float
+    slid_throughout: bool
+    grip_time: float
+    contact_time: float
+    max_normal_force: float
+    max_friction_force: float
+    energy: dict[str, float]
+    t: Optional[Array]
+    normal_force: Optional[Array]
+    friction_force: Optional[Array]
+    slip_velocity: Optional[Array]
+    spin: Optional[Array]
+
+def oblique(
+    preset: str = "superball",
+    *,
+    angle: float,
+    friction: float,
+    v0: Optional[float] = None,
+    spin: float = 0.0,
+    tangential_stiffness: Optional[float] = None,
+    inertia_factor: Optional[float] = None,
+    law: Optional[Law] = None,
+    params: Optional[ParamSet] = None,
+    history: bool = False,
+    samples: int = 400,
+) -> ObliqueImpact:
+    """One oblique impact with friction and spin (docs/oblique.md), as ``bouncelab oblique``:
+    angle to the surface in degrees (0 < angle ≤ 90), spin in rad/s (> 0 topspin)."""
 
 Dist = Literal["normal", "uniform", "lognormal"]
 

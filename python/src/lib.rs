@@ -24,6 +24,7 @@ mod fits;
 mod impact;
 mod interrupt;
 mod mc;
+mod oblique;
 
 use impact::{Impact, impact, interval_columns};
 
@@ -414,6 +415,8 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<Impact>()?;
     m.add_class::<collide::Collision>()?;
     m.add_function(wrap_pyfunction!(collide::collide, m)?)?;
+    m.add_class::<oblique::ObliqueImpact>()?;
+    m.add_function(wrap_pyfunction!(oblique::oblique, m)?)?;
     m.add("NoAnswerError", m.py().get_type::<NoAnswerError>())?;
     m.add_function(wrap_pyfunction!(presets, m)?)?;
     m.add_function(wrap_pyfunction!(run, m)?)?;

@@ -140,6 +140,7 @@ impl Ball {
                 .fit
                 .clone()
                 .filter(|_| source == ParamSource::Adopted && law.is_none_or(|l| l == p.law)),
+            poisson_ratio: Some(p.material.poisson),
         })
     }
 

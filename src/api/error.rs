@@ -7,6 +7,7 @@ use crate::analysis::work::TooMuchWork;
 use crate::catalog::CatalogError;
 use crate::drop::DropError;
 use crate::model::params::{Field, ParamError};
+use crate::oblique::ObliqueError;
 use crate::solver::SolveError;
 use crate::text::number as display_number;
 use std::fmt;
@@ -71,6 +72,8 @@ pub enum BallError {
     MonteCarlo(McError),
     /// Long work stopped by its watch ([`crate::analysis::work::Watch`]: Ctrl-C in Python).
     Interrupted,
+    /// An oblique impact with no answer (see [`ObliqueError`]: no rebound, endless switching).
+    Oblique(ObliqueError),
 }
 
 impl fmt::Display for BallError {
@@ -112,6 +115,7 @@ impl fmt::Display for BallError {
             BallError::MultiFit(e) => write!(f, "{e}"),
             BallError::MonteCarlo(e) => write!(f, "{e}"),
             BallError::Interrupted => write!(f, "interrupted"),
+            BallError::Oblique(e) => write!(f, "{e}"),
         }
     }
 }
@@ -130,7 +134,7 @@ impl BallError {
                 | BallError::Drop(DropError::Solve(SolveError::Unresolved { .. }))
                 | BallError::MultiFit(MultiFitError::NoAnswer)
                 | BallError::MonteCarlo(McError::Solve(SolveError::Unresolved { .. }))
-        )
+        ) || matches!(self, BallError::Oblique(e) if e.is_no_answer())
     }
 }
 
@@ -179,5 +183,19 @@ impl From<DropError> for BallError {
 impl From<McError> for BallError {
     fn from(e: McError) -> Self {
         BallError::MonteCarlo(e)
+    }
+}
+
+impl From<ObliqueError> for BallError {
+    fn from(e: ObliqueError) -> Self {
+        match e {
+            ObliqueError::Invalid(i) => BallError::Invalid {
+                field: i.field,
+                value: i.value,
+                reason: i.reason.into(),
+            },
+            ObliqueError::Solve(e) => BallError::Solve(e),
+            e => BallError::Oblique(e),
+        }
     }
 }

@@ -81,6 +81,10 @@ pub struct ImpactReport<'a> {
     pub k_h: f64,
     /// v0, m/s.
     pub v0: f64,
+    /// R, m: the preset's radius (`None` for a ball that is no preset).
+    pub radius: Option<f64>,
+    /// ν, the preset material's Poisson ratio (`None` for a ball that is no preset).
+    pub poisson_ratio: Option<f64>,
     /// λ = K_r/K_p.
     pub lambda: f64,
     /// ζ = √(m K_p)/(2c).
@@ -144,6 +148,8 @@ impl<'a> ImpactReport<'a> {
             z_p: p.z_p,
             k_h: p.k_h,
             v0: p.v0,
+            radius: Some(ball.radius()).filter(|r| r.is_finite()),
+            poisson_ratio: ball.poisson_ratio,
             lambda: n.lambda,
             zeta: n.zeta,
             zp_bar: n.zp_bar,

@@ -12,6 +12,7 @@ pub mod bat;
 pub mod batch;
 pub mod budget;
 pub mod collide;
+pub mod court;
 pub mod drop;
 pub mod explore;
 pub mod figure;
@@ -21,6 +22,7 @@ pub mod map;
 pub use crate::measured::file as measured_file;
 pub use crate::text::parse as number;
 pub mod mc;
+pub mod oblique;
 pub mod output;
 pub mod outputs;
 pub mod peers;
@@ -112,6 +114,12 @@ pub enum Command {
     /// standard, the summary with Cpk (docs/batch.md)
     #[command(allow_negative_numbers = true)]
     Batch(batch::BatchArgs),
+    /// An oblique impact with friction and spin: outgoing speed, angle and spin, the
+    /// tangential COR and the grip (docs/oblique.md)
+    #[command(allow_negative_numbers = true)]
+    Oblique(oblique::ObliqueArgs),
+    /// The ITF Court Pace Rating of a surface of friction μ (ITF CS 01/02, docs/oblique.md)
+    Court(court::CourtArgs),
 }
 
 /// The explorer failed (its terminal, its event loop): not the input's fault.
@@ -340,6 +348,14 @@ fn dispatch(cli: Cli, out: &mut dyn Write) -> anyhow::Result<()> {
         Command::Batch(mut a) => {
             merge(top, &mut a.ball)?;
             batch::run(&a, out)
+        }
+        Command::Oblique(mut a) => {
+            merge(top, &mut a.ball)?;
+            oblique::run(&a, out)
+        }
+        Command::Court(mut a) => {
+            merge(top, &mut a.ball)?;
+            court::run(&a, out)
         }
         Command::Standards(a) => {
             if top.is_given() {

@@ -36,6 +36,9 @@ struct Row {
     lambda: f64,
     zeta: f64,
     v0: f64,
+    radius: f64,
+    poisson_ratio: f64,
+    inertia_factor: f64,
 }
 
 pub fn run(a: &PresetsArgs, out: &mut dyn Write) -> anyhow::Result<()> {
@@ -58,6 +61,12 @@ pub fn run(a: &PresetsArgs, out: &mut dyn Write) -> anyhow::Result<()> {
                 lambda: n.lambda,
                 zeta: n.zeta,
                 v0: p.measured.v0,
+                radius: p.measured.radius,
+                poisson_ratio: p.material.poisson,
+                inertia_factor: p
+                    .measured
+                    .inertia_factor
+                    .unwrap_or(crate::api::SOLID_INERTIA_FACTOR),
             }
         })
         .collect();

@@ -3,6 +3,7 @@
 
 use super::output::{self, given, table};
 use crate::drop::standards::{STANDARDS, Standard, Test};
+use crate::oblique::court::{CourtTest, ITF_COURT_PACE};
 use crate::target::bat::{BAT_STANDARDS, BatTest};
 use clap::{Args, ValueEnum};
 use std::io::Write;
@@ -29,6 +30,7 @@ pub fn run(a: &StandardsArgs, out: &mut dyn Write) -> anyhow::Result<()> {
                 for s in &BAT_STANDARDS {
                     list.push(serde_json::to_value(s)?);
                 }
+                list.push(serde_json::to_value(ITF_COURT_PACE)?);
             }
             output::json(out, &all)?
         }
@@ -94,6 +96,19 @@ fn text(out: &mut dyn Write) -> std::io::Result<()> {
             s.title.into(),
         ]);
     }
+    let court = &ITF_COURT_PACE;
+    let CourtTest::CourtPace { speed, angle_deg } = court.test;
+    rows.push(vec![
+        court.name.into(),
+        format!(
+            "court pace at {} m/s, {}°",
+            given(speed, 4),
+            given(angle_deg, 4)
+        ),
+        "categories 1–5".into(),
+        court.balls.join(", "),
+        court.title.into(),
+    ]);
     table(out, "", &rows)?;
     writeln!(out)?;
     writeln!(out, "sources, and what could not be confirmed:")?;
@@ -101,7 +116,8 @@ fn text(out: &mut dyn Write) -> std::io::Result<()> {
     let bats = BAT_STANDARDS
         .iter()
         .map(|s| (s.name, s.source, s.unconfirmed));
-    for (name, source, unconfirmed) in sources.chain(bats) {
+    let courts = std::iter::once((court.name, court.source, court.unconfirmed));
+    for (name, source, unconfirmed) in sources.chain(bats).chain(courts) {
         writeln!(out, "  {name}: {source}")?;
         if let Some(u) = unconfirmed {
             writeln!(out, "    not confirmed: {u}")?;
@@ -111,6 +127,7 @@ fn text(out: &mut dyn Write) -> std::io::Result<()> {
     writeln!(
         out,
         "heights are of the bottom or the top of the ball as each body reads them; \
-         `bouncelab drop --standard NAME` judges a ball, `bouncelab bat` a bat"
+         `bouncelab drop --standard NAME` judges a ball, `bouncelab bat` a bat, \
+         `bouncelab court` a surface"
     )
 }

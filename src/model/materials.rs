@@ -19,6 +19,18 @@ pub fn hertz_stiffness(e_star: f64, radius: f64) -> f64 {
     4.0 / 3.0 * e_star * radius.sqrt()
 }
 
+/// κ = I/(m R²) of a spherical shell of uniform density between radii `inner` and `outer`:
+/// (2/5)(1 − q⁵)/(1 − q³), q = inner/outer (docs/oblique.md §1). 0.4 for a solid ball
+/// (q = 0), 2/3 in the thin-shell limit (q → 1, taken by its series there).
+pub fn shell_inertia_factor(outer: f64, inner: f64) -> f64 {
+    let q = inner / outer;
+    if 1.0 - q < 1e-6 {
+        // (1 − q⁵)/(1 − q³) = (5/3) q + O((1 − q)²) near q = 1
+        return 0.4 * 5.0 / 3.0 * q;
+    }
+    0.4 * (1.0 - q.powi(5)) / (1.0 - q.powi(3))
+}
+
 /// Density of a solid sphere from its mass and radius, ρ = m / (4/3 π R³).
 pub fn density(mass: f64, radius: f64) -> f64 {
     mass / (4.0 / 3.0 * PI * radius.powi(3))
@@ -181,6 +193,20 @@ mod tests {
         assert!(close(f.z_p, 5.06e-3, 3e-3));
         let c = rayleigh_damping(r, density(m, r), 2e6, 0.4);
         assert!(close(c, 347.0, 3e-3), "c = {c}");
+    }
+
+    #[test]
+    fn shells_run_from_solid_to_thin() {
+        assert_eq!(shell_inertia_factor(1.0, 0.0), 0.4);
+        assert!(close(
+            shell_inertia_factor(1.0, 1.0 - 1e-9),
+            2.0 / 3.0,
+            1e-8
+        ));
+        assert!(close(shell_inertia_factor(1.0, 0.999), 2.0 / 3.0, 1.1e-3));
+        // the presets' hollow balls (their comments): tennis and table tennis
+        assert!(close(shell_inertia_factor(33.5, 30.5), 0.6105, 1e-3));
+        assert!(close(shell_inertia_factor(20.0, 19.6), 0.6535, 1e-3));
     }
 
     #[test]

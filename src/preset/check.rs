@@ -95,7 +95,17 @@ fn measured(m: &Measured) -> Result<(), Bad> {
         ));
     }
     opt("measured", "max_force", m.max_force)?;
-    opt("measured", "contact_time", m.contact_time)
+    opt("measured", "contact_time", m.contact_time)?;
+    if let Some(k) = m.inertia_factor
+        && !(k > 0.0 && k <= 1.0)
+    {
+        return Err(bad(
+            "measured",
+            "inertia_factor",
+            format!("must lie in (0, 1], got {}", number(k)),
+        ));
+    }
+    Ok(())
 }
 
 fn material(mat: &Material) -> Result<(), Bad> {

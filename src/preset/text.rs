@@ -63,6 +63,7 @@ impl Preset {
         );
         opt(&mut out, "max_force", m.max_force, "N");
         opt(&mut out, "contact_time", m.contact_time, "s");
+        opt(&mut out, "inertia_factor", m.inertia_factor, "κ = I/(m R²)");
 
         let mat = &self.material;
         out.push_str("\n[material]\n");

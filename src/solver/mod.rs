@@ -296,6 +296,32 @@ pub fn simulate(
     Ok(to_si(params, n, law, method, out))
 }
 
+/// Run one impact of the linear law with the exact solver, and keep its flow, which
+/// [`exact::NormalPath`] reads at any τ (the oblique impact's normal motion, src/oblique/).
+pub fn simulate_path(
+    params: &ImpactParams,
+    opts: &SolveOptions,
+) -> Result<(ImpactResponse, exact::NormalPath), SolveError> {
+    params.validate()?;
+    let n = params.normalized();
+    let contact = Contact {
+        law: ContactLaw::Linear,
+        zp_bar: n.zp_bar,
+        kappa: n.kappa,
+    };
+    let (out, path) = exact::solve_path(&n, &contact, opts);
+    if let Some(reason) = out.unresolved {
+        return Err(SolveError::Unresolved {
+            reason,
+            steps: out.steps,
+            lambda: n.lambda,
+            zeta: n.zeta,
+        });
+    }
+    let response = to_si(params, n, ContactLaw::Linear, Method::Exact, out);
+    Ok((response, path))
+}
+
 /// Run one impact from λ, ζ alone (m = K_p = v0 = 1, no flattening).
 pub fn simulate_normalized(
     lambda: f64,

@@ -126,6 +126,7 @@ pub fn preset_for(source: &Preset, setting: &Setting, name: &str) -> (Preset, Ve
             cor: keep(source.measured.cor),
             max_force: keep(source.measured.max_force),
             contact_time: keep(source.measured.contact_time),
+            inertia_factor: source.measured.inertia_factor,
         },
         material: source.material.clone(),
         adopted: Adopted {

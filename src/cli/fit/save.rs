@@ -160,6 +160,7 @@ fn preset(
             cor: single,
             max_force: None,
             contact_time: None,
+            inertia_factor: base.measured.inertia_factor,
         },
         material: base.material.clone(),
         adopted: Adopted {

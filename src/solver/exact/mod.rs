@@ -20,7 +20,9 @@ use search::{Anchors, Watch, eval_anchored, search};
 
 mod energy;
 mod modes;
+mod path;
 mod search;
+pub use path::{NormalPath, PathPoint};
 
 /// More phase switches than this would mean a reload cycle that never settles.
 pub(super) const MAX_PHASES: usize = 64;
@@ -110,11 +112,27 @@ struct ExactRunner<'a> {
 }
 
 pub(crate) fn solve(n: &Normalized, contact: &Contact, opts: &SolveOptions) -> Outcome {
+    run(n, contact, opts.samples > 0 || opts.energy).finish(opts)
+}
+
+/// The run and its flow, which the oblique impact reads at any τ (src/oblique/).
+pub(crate) fn solve_path(
+    n: &Normalized,
+    contact: &Contact,
+    opts: &SolveOptions,
+) -> (Outcome, NormalPath) {
+    let mut run = run(n, contact, true);
+    let segments = std::mem::take(&mut run.segments);
+    let out = run.finish_with(opts, &segments);
+    (out, NormalPath::new(segments))
+}
+
+fn run<'a>(n: &Normalized, contact: &'a Contact, keep: bool) -> ExactRunner<'a> {
     let mut run = ExactRunner {
         lambda: n.lambda,
         zeta: n.zeta,
         contact,
-        keep: opts.samples > 0 || opts.energy,
+        keep,
         x: Vector3::new(0.0, 1.0, 0.0),
         tau: 0.0,
         phase: Phase::Loading,
@@ -124,7 +142,7 @@ pub(crate) fn solve(n: &Normalized, contact: &Contact, opts: &SolveOptions) -> O
         phases_left: MAX_PHASES,
     };
     while run.run_phase() {}
-    run.finish(opts)
+    run
 }
 
 impl ExactRunner<'_> {
@@ -242,18 +260,21 @@ impl ExactRunner<'_> {
 
     /// The outcome at the end of the run: the energy audit and the samples when asked for.
     fn finish(mut self, opts: &SolveOptions) -> Outcome {
+        let segments = std::mem::take(&mut self.segments);
+        self.finish_with(opts, &segments)
+    }
+
+    /// As `finish`, with the phases' flow held by the caller.
+    fn finish_with(mut self, opts: &SolveOptions, segments: &[Segment]) -> Outcome {
         let (lambda, zeta) = (self.lambda, self.zeta);
         self.out.tau_end = self.tau;
         self.out.velocity_end = self.x[1];
         self.out.y_end = self.x[2] / y_scale(lambda);
         if opts.energy {
-            let dashpot = self
-                .segments
-                .iter()
-                .map(|seg| dashpot_energy(seg, lambda, zeta));
+            let dashpot = segments.iter().map(|seg| dashpot_energy(seg, lambda, zeta));
             self.out.dashpot = Some(dashpot.sum());
         }
-        self.out.samples = sample(&self.segments, self.tau, opts.samples, y_scale(lambda));
+        self.out.samples = sample(segments, self.tau, opts.samples, y_scale(lambda));
         self.out
     }
 }

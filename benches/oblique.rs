@@ -1,0 +1,36 @@
+//! Speed of one oblique impact (median recorded in BENCHMARKS.md), beside the linear normal
+//! impact timed in the same run. Run: `cargo bench --bench oblique`.
+
+use bouncelab::oblique::{Oblique, mindlin_ratio, solve};
+use bouncelab::solver::{SolveOptions, simulate};
+use bouncelab::{Ball, ContactLaw};
+use divan::black_box;
+
+fn main() {
+    divan::main();
+}
+
+/// One oblique impact, linear law: the tennis example, 25 m/s at 16° with 300 rad/s of
+/// topspin, μ = 0.6, Mindlin's K_t (target: median ≤ 5 µs).
+#[divan::bench]
+fn oblique_impact(b: divan::Bencher) {
+    let ball = Ball::from_preset("tennis").unwrap();
+    let p = ball.params;
+    let k_t = mindlin_ratio(0.5) * p.k_p;
+    let o = Oblique::new(16.0, 300.0, 0.6, k_t, ball.inertia_factor(), ball.radius()).unwrap();
+    b.bench(|| solve(black_box(&p), 25.0, black_box(&o), 0).unwrap().v_out);
+}
+
+/// The normal impact alone at the same normal speed, summary only (as `run`, no energy audit).
+#[divan::bench]
+fn normal_impact(b: divan::Bencher) {
+    let ball = Ball::from_preset("tennis").unwrap();
+    let mut p = ball.params;
+    p.v0 = 25.0 * 16f64.to_radians().sin();
+    let opts = SolveOptions::default();
+    b.bench(|| {
+        simulate(black_box(&p), ContactLaw::Linear, &opts)
+            .unwrap()
+            .cor
+    });
+}

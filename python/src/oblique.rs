@@ -1,0 +1,136 @@
+//! `oblique`: one oblique impact with friction and spin (docs/oblique.md), as `bouncelab
+//! oblique --format json`: the same fields, by the same names.
+
+use crate::{array, error, preset_ball};
+use bouncelab::api::ObliqueSpec;
+use bouncelab::oblique::ObliqueResponse;
+use numpy::PyArray1;
+use pyo3::prelude::*;
+use pyo3::types::PyDict;
+
+/// An oblique impact, SI units; attribute names are the keys of `bouncelab oblique --format
+/// json` (`energy` a dict of its terms; the history arrays `None` unless asked for).
+#[pyclass(frozen, get_all, module = "bouncelab")]
+pub(crate) struct ObliqueImpact {
+    v_in: f64,
+    angle_in_deg: f64,
+    spin_in: f64,
+    vx_in: f64,
+    vy_in: f64,
+    v_out: f64,
+    angle_out_deg: f64,
+    spin_out: f64,
+    vx_out: f64,
+    vy_out: f64,
+    cor_normal: f64,
+    cor_tangential: Option<f64>,
+    apparent_friction: f64,
+    slid_throughout: bool,
+    grip_time: f64,
+    contact_time: f64,
+    max_normal_force: f64,
+    max_friction_force: f64,
+    energy: Py<PyDict>,
+    t: Option<Py<PyArray1<f64>>>,
+    normal_force: Option<Py<PyArray1<f64>>>,
+    friction_force: Option<Py<PyArray1<f64>>>,
+    slip_velocity: Option<Py<PyArray1<f64>>>,
+    spin: Option<Py<PyArray1<f64>>>,
+}
+
+#[pymethods]
+impl ObliqueImpact {
+    fn __repr__(&self) -> String {
+        format!(
+            "ObliqueImpact(v_out={}, angle_out_deg={}, spin_out={}, cor_normal={}, \
+             apparent_friction={})",
+            self.v_out, self.angle_out_deg, self.spin_out, self.cor_normal, self.apparent_friction
+        )
+    }
+}
+
+fn build(py: Python<'_>, r: ObliqueResponse) -> PyResult<ObliqueImpact> {
+    let e = &r.energy;
+    let energy = PyDict::new(py);
+    for (k, v) in [
+        ("translational_in", e.translational_in),
+        ("rotational_in", e.rotational_in),
+        ("translational_out", e.translational_out),
+        ("rotational_out", e.rotational_out),
+        ("normal_dissipation", e.normal_dissipation),
+        ("friction_dissipation", e.friction_dissipation),
+        ("tangential_spring", e.tangential_spring),
+        ("residual", e.residual),
+    ] {
+        energy.set_item(k, v)?;
+    }
+    let (mut t, mut fn_, mut ft, mut vc, mut w) = (None, None, None, None, None);
+    if let Some(h) = r.history {
+        t = Some(array(py, h.t));
+        fn_ = Some(array(py, h.normal_force));
+        ft = Some(array(py, h.friction_force));
+        vc = Some(array(py, h.slip_velocity));
+        w = Some(array(py, h.spin));
+    }
+    Ok(ObliqueImpact {
+        v_in: r.v_in,
+        angle_in_deg: r.angle_in_deg,
+        spin_in: r.spin_in,
+        vx_in: r.vx_in,
+        vy_in: r.vy_in,
+        v_out: r.v_out,
+        angle_out_deg: r.angle_out_deg,
+        spin_out: r.spin_out,
+        vx_out: r.vx_out,
+        vy_out: r.vy_out,
+        cor_normal: r.cor_normal,
+        cor_tangential: r.cor_tangential,
+        apparent_friction: r.apparent_friction,
+        slid_throughout: r.slid_throughout,
+        grip_time: r.grip_time,
+        contact_time: r.contact_time,
+        max_normal_force: r.max_normal_force,
+        max_friction_force: r.max_friction_force,
+        energy: energy.unbind(),
+        t,
+        normal_force: fn_,
+        friction_force: ft,
+        slip_velocity: vc,
+        spin: w,
+    })
+}
+
+/// One oblique impact of a preset, as `bouncelab oblique --preset NAME [--v0 V] --angle DEG
+/// [--spin W] --friction MU [--tangential-stiffness K_T] [--inertia-factor KAPPA] [--law L]
+/// [--history --samples N]`.
+#[pyfunction]
+#[pyo3(signature = (preset="superball", *, angle, friction, v0=None, spin=0.0, tangential_stiffness=None, inertia_factor=None, law=None, params=None, history=false, samples=400))]
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn oblique(
+    py: Python<'_>,
+    preset: &str,
+    angle: f64,
+    friction: f64,
+    v0: Option<f64>,
+    spin: f64,
+    tangential_stiffness: Option<f64>,
+    inertia_factor: Option<f64>,
+    law: Option<&str>,
+    params: Option<&str>,
+    history: bool,
+    samples: usize,
+) -> PyResult<ObliqueImpact> {
+    let ball = preset_ball(preset, params, law, v0)?;
+    let spec = ObliqueSpec {
+        v: v0,
+        angle_deg: angle,
+        spin,
+        friction,
+        tangential_stiffness,
+        inertia_factor,
+    };
+    let r = ball
+        .oblique(&spec, if history { samples } else { 0 })
+        .map_err(error)?;
+    build(py, r)
+}

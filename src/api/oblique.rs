@@ -1,0 +1,153 @@
+//! Oblique impacts of a [`Ball`] and the ITF court pace (docs/oblique.md), as `bouncelab
+//! oblique` and `bouncelab court` run them.
+
+use super::{Ball, BallError};
+use crate::model::contact::ContactLaw;
+use crate::oblique::court::pace_category;
+use crate::oblique::{self, Oblique, ObliqueError, ObliqueResponse, mindlin_ratio};
+use serde::Serialize;
+
+/// A solid ball's κ = I/(m R²), for a ball whose preset names none.
+pub const SOLID_INERTIA_FACTOR: f64 = 0.4;
+
+/// What an oblique impact asks beyond the ball; `None` takes the ball's own (its preset's
+/// speed, Mindlin's K_t from its Poisson ratio, its preset's κ).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ObliqueSpec {
+    /// Incoming speed |v|, m/s.
+    pub v: Option<f64>,
+    /// Angle between the incoming path and the surface, degrees, 0 < θ ≤ 90.
+    pub angle_deg: f64,
+    /// Incoming spin, rad/s (> 0 topspin).
+    pub spin: f64,
+    /// μ.
+    pub friction: f64,
+    /// K_t, N/m.
+    pub tangential_stiffness: Option<f64>,
+    /// κ.
+    pub inertia_factor: Option<f64>,
+}
+
+/// The ITF Court Pace Rating (ITF CS 01/02) of a surface of friction μ for this ball: 30 m/s
+/// at 16°, no spin; CPR = 100(1 − μ_app) + 150(0.81 − e_y).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct CourtPace {
+    /// The rating.
+    pub cpr: f64,
+    /// 1 slow … 5 fast, from the rating rounded to the nearest integer.
+    pub category: u8,
+    /// "slow", "medium-slow", "medium", "medium-fast" or "fast".
+    pub category_name: &'static str,
+    /// μ_app = |Δv_x|/(v_y,in + v_y,out).
+    pub apparent_friction: f64,
+    /// e_y = v_y,out/v_y,in.
+    pub cor_normal: f64,
+    /// Outgoing speed, m/s.
+    pub v_out: f64,
+    /// Outgoing angle to the surface, degrees.
+    pub angle_out_deg: f64,
+    /// Outgoing spin, rad/s.
+    pub spin_out: f64,
+}
+
+impl Ball {
+    /// κ = I/(m R²): the preset's, else a solid ball's 0.4.
+    pub fn inertia_factor(&self) -> f64 {
+        self.measured
+            .as_ref()
+            .and_then(|m| m.inertia_factor)
+            .unwrap_or(SOLID_INERTIA_FACTOR)
+    }
+
+    /// Mindlin's K_t = 2(1 − ν)/(2 − ν) K_p from the preset's Poisson ratio (`None` for a
+    /// ball that is no preset).
+    pub fn tangential_stiffness(&self) -> Option<f64> {
+        self.poisson_ratio
+            .map(|nu| mindlin_ratio(nu) * self.params.k_p)
+    }
+
+    /// One oblique impact (docs/oblique.md), with `samples` history samples (0: none), as
+    /// `bouncelab oblique`. The normal motion runs the linear law's exact flow.
+    ///
+    /// ```
+    /// use bouncelab::{Ball, api::ObliqueSpec};
+    /// let ball = Ball::from_preset("tennis")?;
+    /// let spec = ObliqueSpec { v: Some(25.0), angle_deg: 16.0, spin: 300.0, friction: 0.6,
+    ///                          tangential_stiffness: None, inertia_factor: None };
+    /// let r = ball.oblique(&spec, 0)?;
+    /// assert!(r.vy_out < r.vy_in && r.vx_out < r.vx_in);
+    /// assert!(r.energy.residual < 1e-12);
+    /// # Ok::<(), bouncelab::BallError>(())
+    /// ```
+    pub fn oblique(
+        &self,
+        spec: &ObliqueSpec,
+        samples: usize,
+    ) -> Result<ObliqueResponse, BallError> {
+        if self.law != ContactLaw::Linear {
+            return Err(ObliqueError::Law.into());
+        }
+        if samples == 1 || samples > super::MAX_SAMPLES {
+            return Err(BallError::Samples(samples));
+        }
+        let no = |field| BallError::from(ObliqueError::Missing(field));
+        let radius = Some(self.radius())
+            .filter(|r| r.is_finite())
+            .ok_or_else(|| no("radius"))?;
+        let k_t = match spec.tangential_stiffness {
+            Some(k) => k,
+            None => self
+                .tangential_stiffness()
+                .ok_or_else(|| no("tangential_stiffness"))?,
+        };
+        let kappa = spec.inertia_factor.unwrap_or_else(|| self.inertia_factor());
+        let o = Oblique::new(spec.angle_deg, spec.spin, spec.friction, k_t, kappa, radius)?;
+        let v = spec.v.unwrap_or(self.params.v0);
+        if !(v.is_finite() && v > 0.0) {
+            return Err(BallError::Invalid {
+                field: "v0",
+                value: v,
+                reason: "must be positive".into(),
+            });
+        }
+        Ok(oblique::solve(&self.params, v, &o, samples)?)
+    }
+
+    /// The ITF Court Pace Rating of a surface of friction `friction` (ITF CS 01/02: 30 m/s at
+    /// 16°, no spin), as `bouncelab court`.
+    ///
+    /// ```
+    /// let ball = bouncelab::Ball::from_preset("tennis")?;
+    /// let pace = ball.court_pace(0.6, None, None)?;
+    /// assert!((1..=5).contains(&pace.category));
+    /// # Ok::<(), bouncelab::BallError>(())
+    /// ```
+    pub fn court_pace(
+        &self,
+        friction: f64,
+        tangential_stiffness: Option<f64>,
+        inertia_factor: Option<f64>,
+    ) -> Result<CourtPace, BallError> {
+        let spec = ObliqueSpec {
+            v: Some(30.0),
+            angle_deg: 16.0,
+            spin: 0.0,
+            friction,
+            tangential_stiffness,
+            inertia_factor,
+        };
+        let r = self.oblique(&spec, 0)?;
+        let cpr = 100.0 * (1.0 - r.apparent_friction) + 150.0 * (0.81 - r.cor_normal);
+        let (category, category_name) = pace_category(cpr);
+        Ok(CourtPace {
+            cpr,
+            category,
+            category_name,
+            apparent_friction: r.apparent_friction,
+            cor_normal: r.cor_normal,
+            v_out: r.v_out,
+            angle_out_deg: r.angle_out_deg,
+            spin_out: r.spin_out,
+        })
+    }
+}

@@ -1,0 +1,283 @@
+//! `bouncelab oblique`: one oblique impact with friction and spin (docs/oblique.md), as a text
+//! table, one JSON object or CSV.
+
+use super::ball::BallArgs;
+use super::output::{self, csv_row, given, human, num, opt_num, table};
+use crate::api::{BallHeader, ObliqueSpec};
+use crate::oblique::ObliqueResponse;
+use clap::{Args, ValueEnum};
+use serde::Serialize;
+use std::io::Write;
+
+/// History samples by default.
+const SAMPLES: usize = 400;
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum ObliqueFormat {
+    Text,
+    Json,
+    Csv,
+}
+
+/// What `oblique` and `court` share: the tangential model's options.
+#[derive(Debug, Clone, Args)]
+pub struct TangentialArgs {
+    /// Tangential stiffness K_t, N/m [default: Mindlin's 2(1 − ν)/(2 − ν) K_p, ν the preset's]
+    #[arg(long, value_name = "N/m", value_parser = super::number::number, allow_hyphen_values = true)]
+    pub tangential_stiffness: Option<f64>,
+    /// κ = I/(m R²), in (0, 1] [default: the preset's, else 0.4 (solid)]
+    #[arg(long, value_name = "KAPPA", value_parser = super::number::number, allow_hyphen_values = true)]
+    pub inertia_factor: Option<f64>,
+}
+
+#[derive(Debug, Clone, Args)]
+pub struct ObliqueArgs {
+    #[command(flatten)]
+    pub ball: BallArgs,
+    /// Incoming speed |v|, m/s [default: the preset's measured v0]
+    #[arg(long, value_name = "V", value_parser = super::number::number, allow_hyphen_values = true)]
+    pub v0: Option<f64>,
+    /// Angle between the incoming path and the surface, degrees (0 < angle ≤ 90)
+    #[arg(long, value_name = "DEG", value_parser = super::number::number, allow_hyphen_values = true)]
+    pub angle: f64,
+    /// Incoming spin ω, rad/s (> 0 topspin for a ball moving in +x)
+    #[arg(long, value_name = "RAD_PER_S", default_value_t = 0.0, value_parser = super::number::number, allow_hyphen_values = true)]
+    pub spin: f64,
+    /// Coulomb friction coefficient μ ≥ 0
+    #[arg(long, value_name = "MU", value_parser = super::number::number, allow_hyphen_values = true)]
+    pub friction: f64,
+    #[command(flatten)]
+    pub tangential: TangentialArgs,
+    /// Output format
+    #[arg(long, value_enum, default_value = "text")]
+    pub format: ObliqueFormat,
+    /// Also print t, F_n, F_t, v_c and ω, evenly sampled over the contact
+    #[arg(long)]
+    pub history: bool,
+    /// Number of history samples
+    #[arg(long, value_name = "N", default_value_t = SAMPLES, requires = "history")]
+    pub samples: usize,
+}
+
+/// `oblique --format json`: the ball, the tangential model it ran and the answer.
+#[derive(Serialize)]
+struct Report<'a> {
+    #[serde(flatten)]
+    ball: BallHeader<'a>,
+    friction: f64,
+    tangential_stiffness: f64,
+    inertia_factor: f64,
+    radius: f64,
+    #[serde(flatten)]
+    answer: &'a ObliqueResponse,
+}
+
+pub fn run(a: &ObliqueArgs, out: &mut dyn Write) -> anyhow::Result<()> {
+    super::ball::check_overrides(&a.ball.set, None, None)?;
+    let ball = a.ball.resolve(a.v0)?;
+    let spec = ObliqueSpec {
+        v: a.v0,
+        angle_deg: a.angle,
+        spin: a.spin,
+        friction: a.friction,
+        tangential_stiffness: a.tangential.tangential_stiffness,
+        inertia_factor: a.tangential.inertia_factor,
+    };
+    let r = ball.oblique(&spec, if a.history { a.samples } else { 0 })?;
+    let k_t = a
+        .tangential
+        .tangential_stiffness
+        .or(ball.tangential_stiffness())
+        .unwrap_or(f64::NAN);
+    let kappa = a
+        .tangential
+        .inertia_factor
+        .unwrap_or_else(|| ball.inertia_factor());
+    let radius = ball.radius();
+    match a.format {
+        ObliqueFormat::Json => {
+            let report = Report {
+                ball: ball.header(),
+                friction: a.friction,
+                tangential_stiffness: k_t,
+                inertia_factor: kappa,
+                radius,
+                answer: &r,
+            };
+            output::json(out, &report)?
+        }
+        ObliqueFormat::Csv if a.history => history_csv(out, &r)?,
+        ObliqueFormat::Csv => summary_csv(out, &r)?,
+        ObliqueFormat::Text => {
+            writeln!(
+                out,
+                "{}: μ = {}, K_t = {} N/m, κ = {}, R = {} mm",
+                ball.label(),
+                given(a.friction, 6),
+                human(k_t, 4),
+                given(kappa, 4),
+                given(radius * 1e3, 4)
+            )?;
+            text(out, &r)?
+        }
+    }
+    Ok(())
+}
+
+/// Columns of `oblique --format csv` (one row).
+pub const SUMMARY_COLUMNS: [&str; 18] = [
+    "v_in",
+    "angle_in_deg",
+    "spin_in",
+    "vx_in",
+    "vy_in",
+    "v_out",
+    "angle_out_deg",
+    "spin_out",
+    "vx_out",
+    "vy_out",
+    "cor_normal",
+    "cor_tangential",
+    "apparent_friction",
+    "slid_throughout",
+    "grip_time",
+    "contact_time",
+    "max_normal_force",
+    "max_friction_force",
+];
+
+fn summary_csv(out: &mut dyn Write, r: &ObliqueResponse) -> std::io::Result<()> {
+    csv_row(out, &SUMMARY_COLUMNS)?;
+    let mut row: Vec<String> = [
+        r.v_in,
+        r.angle_in_deg,
+        r.spin_in,
+        r.vx_in,
+        r.vy_in,
+        r.v_out,
+        r.angle_out_deg,
+        r.spin_out,
+        r.vx_out,
+        r.vy_out,
+        r.cor_normal,
+    ]
+    .map(num)
+    .to_vec();
+    row.push(opt_num(r.cor_tangential));
+    row.push(num(r.apparent_friction));
+    row.push(r.slid_throughout.to_string());
+    for x in [
+        r.grip_time,
+        r.contact_time,
+        r.max_normal_force,
+        r.max_friction_force,
+    ] {
+        row.push(num(x));
+    }
+    csv_row(out, &row)
+}
+
+fn history_csv(out: &mut dyn Write, r: &ObliqueResponse) -> std::io::Result<()> {
+    csv_row(
+        out,
+        &[
+            "t",
+            "normal_force",
+            "friction_force",
+            "slip_velocity",
+            "spin",
+        ],
+    )?;
+    if let Some(h) = &r.history {
+        for i in 0..h.t.len() {
+            let row = [
+                h.t[i],
+                h.normal_force[i],
+                h.friction_force[i],
+                h.slip_velocity[i],
+                h.spin[i],
+            ]
+            .map(num);
+            csv_row(out, &row)?;
+        }
+    }
+    Ok(())
+}
+
+fn text(out: &mut dyn Write, r: &ObliqueResponse) -> std::io::Result<()> {
+    let row = |name: &str, a: String, b: String| vec![name.to_string(), a, b];
+    let rows = vec![
+        row("", "in".into(), "out".into()),
+        row("speed (m/s)", human(r.v_in, 5), human(r.v_out, 5)),
+        row(
+            "angle to the surface (°)",
+            human(r.angle_in_deg, 5),
+            human(r.angle_out_deg, 5),
+        ),
+        row("spin (rad/s)", human(r.spin_in, 5), human(r.spin_out, 5)),
+        row("v_x (m/s)", human(r.vx_in, 5), human(r.vx_out, 5)),
+        row("v_y (m/s)", human(r.vy_in, 5), human(r.vy_out, 5)),
+    ];
+    table(out, "", &rows)?;
+    writeln!(out)?;
+    let cor_t = r
+        .cor_tangential
+        .map_or("– (arrives rolling)".into(), |e| human(e, 5));
+    let grip = if r.slid_throughout {
+        "slid throughout".to_string()
+    } else {
+        format!("gripped {} ms", human(r.grip_time * 1e3, 4))
+    };
+    let e = &r.energy;
+    let lines = vec![
+        row("normal COR e_y", human(r.cor_normal, 6), String::new()),
+        row("tangential COR e_x", cor_t, String::new()),
+        row(
+            "apparent friction",
+            human(r.apparent_friction, 5),
+            String::new(),
+        ),
+        row(
+            "contact",
+            format!("{} ms", human(r.contact_time * 1e3, 5)),
+            grip,
+        ),
+        row(
+            "peak forces",
+            format!("F_n {} N", human(r.max_normal_force, 5)),
+            format!("|F_t| {} N", human(r.max_friction_force, 5)),
+        ),
+        row(
+            "energy lost (J)",
+            format!("normal {}", human(e.normal_dissipation, 4)),
+            format!("friction {}", human(e.friction_dissipation, 4)),
+        ),
+        row(
+            "energy balance",
+            format!("residual {:.1e}", e.residual),
+            String::new(),
+        ),
+    ];
+    table(out, "", &lines)?;
+    if let Some(h) = &r.history {
+        writeln!(out)?;
+        let mut rows = vec![
+            ["t (ms)", "F_n (N)", "F_t (N)", "v_c (m/s)", "ω (rad/s)"]
+                .map(String::from)
+                .to_vec(),
+        ];
+        let n = h.t.len();
+        let step = n.div_ceil(40).max(1);
+        for i in (0..n).step_by(step) {
+            rows.push(vec![
+                human(h.t[i] * 1e3, 4),
+                human(h.normal_force[i], 4),
+                human(h.friction_force[i], 4),
+                human(h.slip_velocity[i], 4),
+                human(h.spin[i], 5),
+            ]);
+        }
+        table(out, "", &rows)?;
+    }
+    Ok(())
+}

@@ -1,0 +1,147 @@
+//! The answer in SI units, with its energy balance (docs/oblique.md §3–§4).
+
+use super::tangential::{Mode, Run};
+use super::{NormalMotion, Oblique, ObliqueEnergy, ObliqueHistory, ObliqueResponse, Scaled};
+use crate::model::params::ImpactParams;
+use crate::solver::ImpactResponse;
+
+/// What turns a normalized run into the SI answer.
+pub(super) struct Answer<'a> {
+    /// The normal impact's parameters (v0 = v_y).
+    pub params: &'a ImpactParams,
+    pub oblique: &'a Oblique,
+    pub scaled: &'a Scaled,
+    /// v_x, v_y and |v| at arrival (m/s).
+    pub vx: f64,
+    pub vy: f64,
+    pub v: f64,
+}
+
+/// The friction's work over the slides, normalized by m v_y². On a slide with sign s from τ0
+/// to τ1 the surface takes −∫F̃_t (ṽ_c − ũ') dτ, with F̃_t = −sμF̄, ũ = sμF̄/k̃ and
+/// ṽ_c = ṽ_c0 − sμg ΔJ (ΔJ the normal impulse since τ0): in closed form
+/// sμ ṽ_c0 ΔJ − μ²g ΔJ²/2 − μ²(F̄1² − F̄0²)/(2k̃).
+pub(super) fn friction_work(path: &impl NormalMotion, s: &Scaled, run: &Run) -> f64 {
+    let mu = s.mu;
+    run.phases
+        .iter()
+        .filter_map(|ph| match ph.mode {
+            Mode::Slip(sg) => {
+                let (p0, p1) = (path.at(ph.start), path.at(ph.end));
+                let dj = ph.vel0 - p1.velocity;
+                let spring = mu * mu * (p1.force.powi(2) - p0.force.powi(2)) / (2.0 * s.kt);
+                Some(sg * mu * ph.vc0 * dj - mu * mu * s.g * dj * dj / 2.0 - spring)
+            }
+            Mode::Stick => None,
+        })
+        .sum()
+}
+
+impl Answer<'_> {
+    /// The response: outgoing motion from ṽ_c at separation (Δṽ_x = κ/(1+κ) Δṽ_c and
+    /// Δ(Rω)/v_y = −Δṽ_c/(1+κ), since both move with the one force F_t), the energy and the
+    /// sampled histories.
+    pub(super) fn response(
+        &self,
+        path: &impl NormalMotion,
+        run: Run,
+        normal: ImpactResponse,
+        samples: usize,
+    ) -> ObliqueResponse {
+        let (s, o, p) = (self.scaled, self.oblique, self.params);
+        let (m, r, vy) = (p.mass, o.radius, self.vy);
+        let tf = path.end();
+        let last = run.phases.last().expect("a run has a phase");
+        let (u_end, vc_end) = last.state(s, &path.at(tf), tf);
+        let dvc = vc_end - run.vc_in;
+        let vx_out = self.vx + vy * s.kappa / (1.0 + s.kappa) * dvc;
+        let spin_out = o.spin - vy * dvc / ((1.0 + s.kappa) * r);
+        let vy_out = normal.cor * vy;
+        let w0 = p.omega0();
+        let grip: f64 = run
+            .phases
+            .iter()
+            .filter(|ph| ph.mode == Mode::Stick)
+            .map(|ph| ph.end - ph.start)
+            .sum();
+        let inertia = s.kappa * m * r * r;
+        let unit = m * vy * vy;
+        let budget = normal.energy.expect("the normal impact is audited");
+        let mut energy = ObliqueEnergy {
+            translational_in: 0.5 * m * self.v * self.v,
+            rotational_in: 0.5 * inertia * o.spin * o.spin,
+            translational_out: 0.5 * m * (vx_out * vx_out + vy_out * vy_out),
+            rotational_out: 0.5 * inertia * spin_out * spin_out,
+            normal_dissipation: budget.dashpot + budget.contact + budget.spring,
+            friction_dissipation: friction_work(path, s, &run) * unit,
+            tangential_spring: 0.5 * s.kt * u_end * u_end * unit,
+            residual: 0.0,
+        };
+        let e = &energy;
+        let input = e.translational_in + e.rotational_in;
+        let losses = e.normal_dissipation + e.friction_dissipation + e.tangential_spring;
+        energy.residual = (input - e.translational_out - e.rotational_out - losses).abs() / input;
+        let vc_in_si = run.vc_in * vy;
+        let kinks = path.kinks();
+        let max_friction = run
+            .phases
+            .iter()
+            .map(|ph| ph.max_friction(s, path, &kinks))
+            .fold(0.0, f64::max);
+        let history = (samples > 0).then(|| self.history(path, &run, samples));
+        ObliqueResponse {
+            v_in: self.v,
+            angle_in_deg: o.angle_deg,
+            spin_in: o.spin,
+            vx_in: self.vx,
+            vy_in: vy,
+            v_out: vx_out.hypot(vy_out),
+            angle_out_deg: vy_out.atan2(vx_out).to_degrees(),
+            spin_out,
+            vx_out,
+            vy_out,
+            cor_normal: normal.cor,
+            cor_tangential: (vc_in_si != 0.0).then(|| -vc_end / run.vc_in),
+            apparent_friction: (self.vx - vx_out).abs() / (vy + vy_out),
+            slid_throughout: run.phases.len() == 1 && matches!(last.mode, Mode::Slip(_)),
+            grip_time: grip / w0,
+            contact_time: tf / w0,
+            max_normal_force: normal.max_force,
+            max_friction_force: max_friction * m * vy * w0,
+            energy,
+            phases: run.phases,
+            normal,
+            history,
+        }
+    }
+
+    /// `n` samples evenly spaced over [0, t_f].
+    fn history(&self, path: &impl NormalMotion, run: &Run, n: usize) -> ObliqueHistory {
+        let (s, p) = (self.scaled, self.params);
+        let (vy, w0) = (self.vy, p.omega0());
+        let force = p.mass * vy * w0;
+        let tf = path.end();
+        let mut h = ObliqueHistory::default();
+        for j in 0..n {
+            let tau = if n > 1 {
+                tf * j as f64 / (n - 1) as f64
+            } else {
+                0.0
+            };
+            let i = run
+                .phases
+                .partition_point(|ph| ph.end < tau)
+                .min(run.phases.len() - 1);
+            let pt = path.at(tau);
+            let (u, vc) = run.phases[i].state(s, &pt, tau);
+            let spin =
+                self.oblique.spin - vy * (vc - run.vc_in) / ((1.0 + s.kappa) * self.oblique.radius);
+            h.t.push(tau / w0);
+            h.normal_force.push(pt.force * force);
+            h.friction_force.push(-s.kt * u * force);
+            h.slip_velocity.push(vc * vy);
+            h.spin.push(spin);
+        }
+        h
+    }
+}

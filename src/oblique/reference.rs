@@ -1,0 +1,249 @@
+//! An independent integration of the oblique impact's tangential motion (docs/oblique.md §5),
+//! for the tests: the equations of motion themselves — ṽ_x' = F̃_t, (Rω/v_y)' = −F̃_t/κ,
+//! F̃_t = −k̃ũ, ũ' = ṽ_c while sticking and sμF̄'/k̃ on the cap while sliding — integrated
+//! by the `differential-equations` crate's DOP853 at a tolerance of 1e-13, with an event at
+//! every stick/slip switch located by integrating to it, and a restart at each end of a
+//! normal phase (where F̄' may jump). It shares with [`super::solve`] the model's rules and the
+//! normal motion, and nothing of the closed forms: the sticking oscillation, the sliding
+//! impulse and the switches' search are all the integrator's.
+
+use super::tangential::Mode;
+use super::{NormalMotion, Oblique, ObliqueError, Scaled, prepare};
+use crate::model::params::ImpactParams;
+use crate::solver::roots::brent;
+use differential_equations::interpolate::Interpolation;
+use differential_equations::methods::ExplicitRungeKutta;
+use differential_equations::ode::{ODE, solve_ode};
+use differential_equations::prelude::{ControlFlag, Solout};
+use differential_equations::solution::Solution;
+
+type X = [f64; 3];
+
+/// The integrator's relative tolerance (absolute: 1e-2 of it; the state is of order 1).
+const RTOL: f64 = 1e-13;
+
+/// The outgoing tangential motion, normalized by v_y: ṽ_x and Rω/v_y at separation, and the
+/// number of switches met.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Outgoing {
+    /// v_x,out / v_y.
+    pub vx: f64,
+    /// R ω_out / v_y.
+    pub spin: f64,
+    /// Stick/slip switches.
+    pub switches: usize,
+}
+
+struct Sys<'a, P: NormalMotion> {
+    path: &'a P,
+    s: Scaled,
+    mode: Mode,
+}
+
+impl<P: NormalMotion> Sys<'_, P> {
+    /// The switch function of the mode: positive where the phase must end.
+    fn switch(&self, t: f64, x: &X) -> f64 {
+        let p = self.path.at(t);
+        let vc = x[0] - x[1];
+        match self.mode {
+            Mode::Stick => self.s.kt * x[2].abs() - self.s.mu * p.force,
+            Mode::Slip(sg) => self.s.mu * p.rate / self.s.kt - sg * vc,
+        }
+    }
+}
+
+impl<P: NormalMotion> ODE<f64, X> for Sys<'_, P> {
+    fn diff(&self, t: f64, x: &X, dx: &mut X) {
+        let ft = -self.s.kt * x[2];
+        dx[0] = ft;
+        dx[1] = -ft / self.s.kappa;
+        dx[2] = match self.mode {
+            Mode::Stick => x[0] - x[1],
+            Mode::Slip(sg) => sg * self.s.mu * self.path.at(t).rate / self.s.kt,
+        };
+    }
+}
+
+/// Watches the switch function over each step (its end and four points inside, on the dense
+/// output) and stops at the first step where it turns positive after a negative value; the
+/// crossing is then located by integrating from the step's start (`locate`), not on the dense
+/// output, whose error at this tolerance is far above the integration's.
+struct Watcher<'a, 'b, P: NormalMotion> {
+    sys: &'b Sys<'a, P>,
+    armed: bool,
+    /// The step's start (τ, x) and the bracket [τa, τb] of the crossing.
+    hit: Option<((f64, X), f64, f64)>,
+    last: (f64, X),
+}
+
+impl<P: NormalMotion> Solout<f64, X> for Watcher<'_, '_, P> {
+    fn solout<I>(
+        &mut self,
+        t_curr: f64,
+        t_prev: f64,
+        y_curr: &X,
+        y_prev: &X,
+        interp: &mut I,
+        _s: &mut Solution<f64, X>,
+    ) -> ControlFlag<f64, X>
+    where
+        I: Interpolation<f64, X> + ?Sized,
+    {
+        self.last = (t_curr, *y_curr);
+        let mut ta = t_prev;
+        for j in 1..=5 {
+            let t = t_prev + (t_curr - t_prev) * j as f64 / 5.0;
+            let x = if j == 5 {
+                *y_curr
+            } else {
+                interp.interpolate(t).unwrap_or(*y_curr)
+            };
+            let g = self.sys.switch(t, &x);
+            // a function not yet negative since the phase began marks no switch (as in
+            // `tangential`: the modes agree there to second order)
+            if g > 0.0 && self.armed {
+                self.hit = Some(((t_prev, *y_prev), ta, t));
+                return ControlFlag::Terminate;
+            }
+            if g < 0.0 {
+                self.armed = true;
+                ta = t;
+            }
+        }
+        ControlFlag::Continue
+    }
+}
+
+/// One DOP853 run from (τ0, x0) to τ1 into `out`.
+fn dop853<P: NormalMotion, O: Solout<f64, X>>(
+    sys: &Sys<'_, P>,
+    (t0, x0): (f64, X),
+    t1: f64,
+    out: &mut O,
+) {
+    let mut m = ExplicitRungeKutta::dop853()
+        .rtol(RTOL)
+        .atol(RTOL * 1e-2)
+        .max_steps(1_000_000);
+    solve_ode(&mut m, sys, t0, t1, &x0, out).expect("DOP853 runs");
+}
+
+/// The state at τ, integrated from (τ0, x0) in the current mode.
+fn integrate_to<P: NormalMotion>(sys: &Sys<'_, P>, (t0, x0): (f64, X), t: f64) -> X {
+    if t <= t0 {
+        return x0;
+    }
+    let mut end = End((t0, x0));
+    dop853(sys, (t0, x0), t, &mut end);
+    end.0.1
+}
+
+/// The first τ in [τa, τb] where the switch function turns positive, every value integrated
+/// from the step's start; the state there. When it is not negative at τa (a phase that has
+/// just begun), a negative value is looked for closer to τa first, as `tangential` does.
+fn locate<P: NormalMotion>(sys: &Sys<'_, P>, from: (f64, X), ta: f64, tb: f64) -> (f64, X) {
+    let g = |t: f64| sys.switch(t, &integrate_to(sys, from, t));
+    let gb = g(tb);
+    let below = std::iter::once(ta)
+        .chain((1..48).map(|j| ta + (tb - ta) * 0.5f64.powi(j)))
+        .map(|t| (t, g(t)))
+        .find(|&(_, gt)| gt < 0.0);
+    let t = match below {
+        Some((a, ga)) if gb > 0.0 => brent(g, a, tb, ga, gb, 1e-15 * tb.max(1.0)),
+        _ => ta,
+    };
+    (t, integrate_to(sys, from, t))
+}
+
+/// Keeps the last state reached.
+struct End((f64, X));
+
+impl Solout<f64, X> for End {
+    fn solout<I>(
+        &mut self,
+        t_curr: f64,
+        _t_prev: f64,
+        y_curr: &X,
+        _y_prev: &X,
+        _interp: &mut I,
+        _s: &mut Solution<f64, X>,
+    ) -> ControlFlag<f64, X>
+    where
+        I: Interpolation<f64, X> + ?Sized,
+    {
+        self.0 = (t_curr, *y_curr);
+        ControlFlag::Continue
+    }
+}
+
+/// Integrate the tangential motion from ṽ_x = `vx`, Rω/v_y = `spin` at first touch over the
+/// normal motion `path`.
+pub fn integrate(path: &impl NormalMotion, s: &Scaled, vx: f64, spin: f64) -> Outgoing {
+    let tf = path.end();
+    let mut stops: Vec<f64> = path.kinks().into_iter().filter(|&k| k < tf).collect();
+    stops.push(tf);
+    let p0 = path.at(0.0);
+    let vc = vx - spin;
+    let mode = if s.kt * vc.abs() <= s.mu * p0.rate {
+        Mode::Stick
+    } else {
+        Mode::Slip(vc.signum())
+    };
+    let mut sys = Sys { path, s: *s, mode };
+    let (mut t, mut x) = (0.0, [vx, spin, 0.0]);
+    let mut switches = 0;
+    let mut armed = false;
+    for &stop in &stops {
+        while t < stop {
+            let mut w = Watcher {
+                sys: &sys,
+                armed,
+                hit: None,
+                last: (t, x),
+            };
+            dop853(&sys, (t, x), stop, &mut w);
+            match w.hit {
+                Some((from, ta, tb)) => {
+                    (t, x) = locate(&sys, from, ta, tb);
+                    switches += 1;
+                    assert!(
+                        switches < 100_000,
+                        "switching without end at τ = {t}, mode {:?}, x {x:?}",
+                        sys.mode
+                    );
+                    armed = false;
+                    sys.mode = match sys.mode {
+                        Mode::Stick => {
+                            let sg = x[2].signum();
+                            x[2] = sg * s.mu * path.at(t).force / s.kt;
+                            Mode::Slip(sg)
+                        }
+                        Mode::Slip(_) => Mode::Stick,
+                    };
+                }
+                None => {
+                    armed = w.armed;
+                    (t, x) = (stop, w.last.1);
+                }
+            }
+        }
+    }
+    Outgoing {
+        vx: x[0],
+        spin: x[1],
+        switches,
+    }
+}
+
+/// The oblique impact of [`super::solve`] integrated this way: v_x and ω at separation (m/s,
+/// rad/s) and the number of switches.
+pub fn solve(
+    params: &ImpactParams,
+    v: f64,
+    oblique: &Oblique,
+) -> Result<(f64, f64, usize), ObliqueError> {
+    let p = prepare(params, v, oblique)?;
+    let r = oblique.radius;
+    let out = integrate(&p.path, &p.scaled, p.vx / p.vy, r * oblique.spin / p.vy);
+    Ok((out.vx * p.vy, out.spin * p.vy / r, out.switches))
+}

@@ -1,0 +1,244 @@
+//! The tangential motion in closed form, phase by phase (docs/oblique.md §2), in the normal
+//! impact's units (`Scaled`). While the contact point sticks, u'' = −ω̃_t² u with
+//! ω̃_t² = k̃(1 + 1/κ): a harmonic oscillator, whatever F̄ does. While it slides with
+//! s = ±1, F̃_t = −sμF̄ and ṽ_c' = g F̃_t integrate to the normal impulse:
+//! ṽ_c(τ) = ṽ_c(τ0) − sμg (ᾱ'(τ0) − ᾱ'(τ)). Only the switches need a root find:
+//! stick → slip when k̃|u| reaches μF̄, slip → stick when sṽ_c < μF̄'/k̃.
+
+use super::{MAX_PHASES, NormalMotion, ObliqueError, Scaled};
+use crate::solver::exact::PathPoint;
+use crate::solver::roots::brent;
+use serde::Serialize;
+
+/// How the contact point moves in a phase.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub enum Mode {
+    /// It sticks: u' = v_c, F_t = −K_t u, |K_t u| ≤ μ F_n.
+    Stick,
+    /// It slides with u on the cap s μ F_n/K_t, s = ±1 (the spring's sign when it got there).
+    Slip(f64),
+}
+
+/// One phase of the contact, normalized: τ from `start` to `end`, and the state it starts
+/// from (u ω0/v_y, v_c/v_y, and ᾱ' = α'/v_y for the impulse of a slide).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Phase {
+    /// τ at its start.
+    pub start: f64,
+    /// τ at its end.
+    pub end: f64,
+    /// Stick or slip.
+    pub mode: Mode,
+    /// ũ at the start.
+    pub u0: f64,
+    /// ṽ_c at the start.
+    pub vc0: f64,
+    /// ᾱ' at the start.
+    pub vel0: f64,
+}
+
+impl Phase {
+    /// (ũ, ṽ_c) at τ in this phase, `p` the normal motion at τ.
+    pub(crate) fn state(&self, s: &Scaled, p: &PathPoint, tau: f64) -> (f64, f64) {
+        match self.mode {
+            Mode::Stick => {
+                let w = s.omega_t;
+                let (sn, cs) = (w * (tau - self.start)).sin_cos();
+                (
+                    self.u0 * cs + self.vc0 * sn / w,
+                    -self.u0 * w * sn + self.vc0 * cs,
+                )
+            }
+            Mode::Slip(sg) => (
+                sg * s.mu * p.force / s.kt,
+                self.vc0 - sg * s.mu * s.g * (self.vel0 - p.velocity),
+            ),
+        }
+    }
+
+    /// The switch function: the phase goes on while G ≤ 0 and ends where it turns positive.
+    /// Stick: G = k̃|u| − μF̄; slip: G = μF̄'/k̃ − sṽ_c. With its rate in a stick (else 0).
+    fn switch(&self, s: &Scaled, p: &PathPoint, tau: f64) -> (f64, f64) {
+        let (u, vc) = self.state(s, p, tau);
+        match self.mode {
+            Mode::Stick => {
+                let rate = s.kt * u.signum() * vc - s.mu * p.rate;
+                (s.kt * u.abs() - s.mu * p.force, rate)
+            }
+            Mode::Slip(sg) => (s.mu * p.rate / s.kt - sg * vc, 0.0),
+        }
+    }
+
+    /// The largest |F̃_t| over the phase, exactly: while sticking k̃|ũ| with ũ harmonic (its
+    /// amplitude where a crest falls inside, else an end); while sliding μF̄, and F̄ is
+    /// monotone between the normal phase ends `kinks` (its peaks are unloads), so its largest
+    /// value is at an end of this phase or at a kink inside it.
+    pub(crate) fn max_friction(&self, s: &Scaled, path: &impl NormalMotion, kinks: &[f64]) -> f64 {
+        match self.mode {
+            Mode::Stick => {
+                let w = s.omega_t;
+                let (a, b) = (self.u0, self.vc0 / w);
+                let len = self.end - self.start;
+                let first = b.atan2(a).rem_euclid(std::f64::consts::PI) / w;
+                let ends = [self.start, self.end].map(|t| {
+                    let (sn, cs) = (w * (t - self.start)).sin_cos();
+                    (a * cs + b * sn).abs()
+                });
+                let crest = if first <= len { a.hypot(b) } else { 0.0 };
+                s.kt * ends[0].max(ends[1]).max(crest)
+            }
+            Mode::Slip(_) => {
+                let inside = kinks.iter().filter(|&&k| k > self.start && k < self.end);
+                let force = [self.start, self.end]
+                    .iter()
+                    .chain(inside)
+                    .map(|&t| path.at(t).force)
+                    .fold(0.0, f64::max);
+                s.mu * force
+            }
+        }
+    }
+}
+
+/// The phases of one contact.
+pub(crate) struct Run {
+    pub phases: Vec<Phase>,
+    pub vc_in: f64,
+}
+
+/// The search step: a fifth of the sticking oscillation's radian, and at least 32 steps over
+/// the contact (the normal force's own scale; the crossings between steps are found by sign
+/// changes and, while sticking, by the rate turning from rising to falling).
+fn step(s: &Scaled, tf: f64) -> f64 {
+    (0.2 / s.omega_t).min(tf / 32.0)
+}
+
+/// The tangential motion over the whole contact, from ṽ_c = `vc_in` at first touch.
+pub(crate) fn run(path: &impl NormalMotion, s: &Scaled, vc_in: f64) -> Result<Run, ObliqueError> {
+    let tf = path.end();
+    let h = step(s, tf);
+    let p0 = path.at(0.0);
+    // at first contact F̄ = 0: the point sticks if the cap grows at least as fast as the spring
+    let mode = if s.kt * vc_in.abs() <= s.mu * p0.rate {
+        Mode::Stick
+    } else {
+        Mode::Slip(vc_in.signum())
+    };
+    let mut phase = Phase {
+        start: 0.0,
+        end: tf,
+        mode,
+        u0: 0.0,
+        vc0: vc_in,
+        vel0: p0.velocity,
+    };
+    let mut run = Run {
+        phases: Vec::new(),
+        vc_in,
+    };
+    loop {
+        if run.phases.len() >= MAX_PHASES {
+            return Err(ObliqueError::Phases);
+        }
+        let switch = find_switch(path, s, &phase, h, tf);
+        let Some(t) = switch.filter(|&t| t < tf) else {
+            phase.end = tf;
+            run.phases.push(phase);
+            return Ok(run);
+        };
+        phase.end = t;
+        run.phases.push(phase);
+        let p = path.at(t);
+        let (u, vc) = phase.state(s, &p, t);
+        phase = match phase.mode {
+            Mode::Stick => {
+                let sg = if u == 0.0 { vc.signum() } else { u.signum() };
+                Phase {
+                    start: t,
+                    end: tf,
+                    mode: Mode::Slip(sg),
+                    u0: sg * s.mu * p.force / s.kt,
+                    vc0: vc,
+                    vel0: p.velocity,
+                }
+            }
+            Mode::Slip(_) => Phase {
+                start: t,
+                end: tf,
+                mode: Mode::Stick,
+                u0: u,
+                vc0: vc,
+                vel0: p.velocity,
+            },
+        };
+    }
+}
+
+/// Where `phase` ends before τ_f, if it does: the first τ > start where its switch function
+/// turns positive after being negative. At its start the function is 0 (a switch just
+/// happened) or below; the crossing is bracketed from the last point where it was negative.
+fn find_switch(
+    path: &impl NormalMotion,
+    s: &Scaled,
+    phase: &Phase,
+    h: f64,
+    tf: f64,
+) -> Option<f64> {
+    let g = |t: f64| phase.switch(s, &path.at(t), t);
+    let tol = 1e-15 * tf.max(1.0);
+    let mut below: Option<(f64, f64, f64)> = None;
+    let start = phase.start;
+    let (g0, d0) = g(start);
+    if g0 < 0.0 {
+        below = Some((start, g0, d0));
+    }
+    let mut k = 1.0;
+    loop {
+        let b = (start + k * h).min(tf);
+        k += 1.0;
+        if b <= start {
+            return None;
+        }
+        let (gb, db) = g(b);
+        if gb > 0.0 {
+            let bracket = match below {
+                Some((a, ga, _)) => Some((a, ga)),
+                None => probe_below(&|t| g(t).0, start, b),
+            };
+            // a function that has not been negative since the start marks no switch: the
+            // two modes agree there to second order (k̃u on the cap, ṽ_c = μF̄'/k̃), and the
+            // phase goes on until its function has turned negative and back
+            if let Some((a, ga)) = bracket {
+                return Some(brent(|t| g(t).0, a, b, ga, gb, tol));
+            }
+        }
+        if let Some((a, ga, da)) = below
+            && da > 0.0
+            && db < 0.0
+            && matches!(phase.mode, Mode::Stick)
+        {
+            // a peak of k̃|u| − μF̄ between two points below the cap
+            let tm = brent(|t| g(t).1, a, b, da, db, tol);
+            let (gm, _) = g(tm);
+            if gm > 0.0 {
+                return Some(brent(|t| g(t).0, a, tm, ga, gm, tol));
+            }
+        }
+        if gb < 0.0 {
+            below = Some((b, gb, db));
+        }
+        if b >= tf {
+            return None;
+        }
+    }
+}
+
+/// A point in (start, b) where the switch function is negative, when the first step already
+/// ends above zero (a switch tangent at the phase's start).
+fn probe_below(g: &impl Fn(f64) -> f64, start: f64, b: f64) -> Option<(f64, f64)> {
+    (1..48).find_map(|j| {
+        let c = start + (b - start) * 0.5f64.powi(j);
+        let gc = g(c);
+        (gc < 0.0).then_some((c, gc))
+    })
+}
