@@ -370,6 +370,7 @@ def monte_carlo(
     law: Optional[Law] = None,
     params: Optional[ParamSet] = None,
     return_samples: bool = False,
+    correlate: Optional[Union[str, dict[str, float]]] = None,
 ) -> MonteCarlo:
     """COR, max_force and contact_time over ``samples`` samples of the preset's parameters
     spread by ``vary`` (fractions: {"k_p": 0.05}, or "k_p=5%,…"), as ``bouncelab mc --format

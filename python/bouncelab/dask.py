@@ -50,6 +50,7 @@ def monte_carlo(
     v0: Optional[float] = None,
     law: Optional[str] = None,
     params: Optional[str] = None,
+    correlate: Optional[Any] = None,
 ) -> Dict[str, Any]:
     """``bouncelab.monte_carlo`` with its samples computed on the workers of ``client`` (a
     ``distributed.Client``), ``chunk`` samples a task; the same dict, the same numbers.
@@ -68,6 +69,7 @@ def monte_carlo(
         v0=v0,
         law=law,
         params=params,
+        correlate=dict(correlate) if isinstance(correlate, Mapping) else correlate,
     )
     if not isinstance(chunk, int) or chunk < 1:
         raise ValueError(f"invalid chunk: {chunk!r} (must be a whole number ≥ 1)")

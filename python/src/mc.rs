@@ -7,7 +7,8 @@
 
 use crate::{array, error, preset_ball};
 use bouncelab::analysis::mc::{
-    Dist, McError, McSpec, McSummary, Samples, Spread, Stats, Varied, parse_vary, summary,
+    Dist, McError, McSpec, McSummary, Samples, Spread, Stats, Varied, parse_correlate, parse_vary,
+    summary,
 };
 use bouncelab::api::MonteCarlo;
 use numpy::{PyArray1, PyReadonlyArray1};
@@ -51,6 +52,7 @@ fn request(
     v0: Option<f64>,
     law: Option<&str>,
     params: Option<&str>,
+    correlate: Option<&Bound<'_, PyAny>>,
 ) -> PyResult<Request> {
     let ball = preset_ball(preset, params, law, v0)?;
     let dist = Dist::parse(dist).ok_or_else(|| {
@@ -58,8 +60,55 @@ fn request(
             "invalid dist: '{dist}' (choose from normal, uniform, lognormal)"
         ))
     })?;
+    // vary="fit": the preset's own fit (as `mc --vary fit`), which gives its distribution
+    // and correlations
+    if vary.extract::<String>().is_ok_and(|v| v.trim() == "fit") {
+        let refuse = |what: &str| {
+            error(
+                McError::Fit(format!(
+                    "{what} does not go with it: the fit's own covariance gives the normal \
+                     distribution and the correlations"
+                ))
+                .into(),
+            )
+        };
+        if dist != Dist::Normal {
+            return Err(refuse("dist"));
+        }
+        if correlate.is_some() {
+            return Err(refuse("correlate"));
+        }
+        let spec = ball.fit_spec(samples, seed).map_err(error)?;
+        return Ok(Request { ball, spec });
+    }
     let spec = McSpec::new(spreads(vary)?, dist, samples, seed).map_err(|e| error(e.into()))?;
+    let spec = match correlate {
+        Some(c) => spec
+            .with_correlation(pairs(c)?)
+            .map_err(|e| error(e.into()))?,
+        None => spec,
+    };
     Ok(Request { ball, spec })
+}
+
+/// `correlate` as a dict {"k_p:c": 0.5, …} or the command line's text "k_p:c=0.5,…".
+fn pairs(c: &Bound<'_, PyAny>) -> PyResult<Vec<(Varied, Varied, f64)>> {
+    let text = match c.extract::<String>() {
+        Ok(t) => t,
+        Err(_) => {
+            let dict = c.cast::<PyDict>().map_err(|_| {
+                PyValueError::new_err(
+                    "invalid correlate: give a dict {\"k_p:c\": 0.5, …} or \"k_p:c=0.5,…\"",
+                )
+            })?;
+            let mut items = Vec::new();
+            for (k, v) in dict.iter() {
+                items.push(format!("{}={}", k.extract::<String>()?, v.extract::<f64>()?));
+            }
+            items.join(",")
+        }
+    };
+    parse_correlate(&text).map_err(|e| error(e.into()))
 }
 
 fn stats_dict<'py>(py: Python<'py>, s: &Stats) -> PyResult<Bound<'py, PyDict>> {
@@ -98,6 +147,13 @@ fn report<'py>(py: Python<'py>, r: &Request, s: &McSummary) -> PyResult<Bound<'p
     d.set_item("v0", r.ball.params.v0)?;
     d.set_item("dist", r.spec.dist.name())?;
     d.set_item("vary", vary)?;
+    if let Some(c) = &r.spec.correlation {
+        let pairs = PyDict::new(py);
+        for (a, b, rho) in &c.pairs {
+            pairs.set_item(format!("{}:{}", a.name(), b.name()), rho)?;
+        }
+        d.set_item("correlate", pairs)?;
+    }
     d.set_item("no_rebound", s.no_rebound)?;
     d.set_item("stats", stats)?;
     Ok(d)
@@ -109,7 +165,7 @@ fn report<'py>(py: Python<'py>, r: &Request, s: &McSummary) -> PyResult<Bound<'p
 /// holds each sample's cor, max_force, contact_time (NaN: no rebound) and varied parameters
 /// as numpy arrays. The GIL is released while the samples run (in parallel).
 #[pyfunction]
-#[pyo3(signature = (*, preset="superball", vary, samples=10_000, seed=0, dist="normal", v0=None, law=None, params=None, return_samples=false))]
+#[pyo3(signature = (*, preset="superball", vary, samples=10_000, seed=0, dist="normal", v0=None, law=None, params=None, return_samples=false, correlate=None))]
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn monte_carlo<'py>(
     py: Python<'py>,
@@ -122,8 +178,9 @@ pub(crate) fn monte_carlo<'py>(
     law: Option<&str>,
     params: Option<&str>,
     return_samples: bool,
+    correlate: Option<Bound<'py, PyAny>>,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let r = request(preset, vary, samples, seed, dist, v0, law, params)?;
+    let r = request(preset, vary, samples, seed, dist, v0, law, params, correlate.as_ref())?;
     let mc: MonteCarlo = py
         .detach(|| r.ball.monte_carlo(&r.spec))
         .map_err(error)?;
@@ -158,7 +215,7 @@ type Columns = (Py<PyArray1<f64>>, Py<PyArray1<f64>>, Py<PyArray1<f64>>);
 /// `check_only`, every argument and the work limit for `count` samples are checked and empty
 /// arrays returned (the Dask client's check before it sends a task).
 #[pyfunction]
-#[pyo3(signature = (*, preset="superball", vary, samples, seed=0, dist="normal", v0=None, law=None, params=None, start, count, check_only=false))]
+#[pyo3(signature = (*, preset="superball", vary, samples, seed=0, dist="normal", v0=None, law=None, params=None, start, count, check_only=false, correlate=None))]
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn monte_carlo_chunk(
     py: Python<'_>,
@@ -173,8 +230,9 @@ pub(crate) fn monte_carlo_chunk(
     start: u64,
     count: usize,
     check_only: bool,
+    correlate: Option<Bound<'_, PyAny>>,
 ) -> PyResult<Columns> {
-    let r = request(preset, vary, samples, seed, dist, v0, law, params)?;
+    let r = request(preset, vary, samples, seed, dist, v0, law, params, correlate.as_ref())?;
     if start.saturating_add(count as u64) > samples as u64 {
         return Err(PyValueError::new_err(format!(
             "invalid chunk: samples {start} … {} lie beyond the run's {samples}",
@@ -199,7 +257,7 @@ pub(crate) fn monte_carlo_chunk(
 /// The dict `monte_carlo` returns, from all the samples of the run (cor, max_force,
 /// contact_time, in index order: the chunks of `monte_carlo_chunk` concatenated).
 #[pyfunction]
-#[pyo3(signature = (*, preset="superball", vary, samples, seed=0, dist="normal", v0=None, law=None, params=None, cor, max_force, contact_time))]
+#[pyo3(signature = (*, preset="superball", vary, samples, seed=0, dist="normal", v0=None, law=None, params=None, cor, max_force, contact_time, correlate=None))]
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn monte_carlo_merge<'py>(
     py: Python<'py>,
@@ -214,8 +272,9 @@ pub(crate) fn monte_carlo_merge<'py>(
     cor: PyReadonlyArray1<'py, f64>,
     max_force: PyReadonlyArray1<'py, f64>,
     contact_time: PyReadonlyArray1<'py, f64>,
+    correlate: Option<Bound<'py, PyAny>>,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let r = request(preset, vary, samples, seed, dist, v0, law, params)?;
+    let r = request(preset, vary, samples, seed, dist, v0, law, params, correlate.as_ref())?;
     let all = Samples {
         start: 0,
         cor: cor.as_array().to_vec(),

@@ -143,3 +143,41 @@ def test_dask_refuses_bad_input_on_the_client(client):
         bouncelab.dask.monte_carlo(client, preset="golf", vary=VARY, samples=10, chunk=0)
     with pytest.raises(ValueError, match="too much work: 20000000 samples"):
         bouncelab.dask.monte_carlo(client, preset="golf", vary=VARY, samples=10**8, chunk=2 * 10**7)
+
+
+def test_correlated_samples_as_the_command_line():
+    """`correlate` (a dict or the command line's text) gives `mc --correlate`'s numbers, and the
+    varied parameters the correlation asked for."""
+    corr = {"k_p:c": 0.5}
+    r = bouncelab.monte_carlo(
+        preset="golf", vary=VARY, samples=4000, seed=2, correlate=corr, return_samples=True
+    )
+    assert r["correlate"] == corr
+    text = bouncelab.monte_carlo(preset="golf", vary=VARY, samples=4000, seed=2, correlate="k_p:c=0.5")
+    assert text["stats"] == {k: r["stats"][k] for k in r["stats"]}
+    rho = np.corrcoef(r["values"]["k_p"], r["values"]["c"])[0, 1]
+    assert abs(rho - 0.5) < 4 * 0.75 / np.sqrt(4000)
+    code, out, err = cli(
+        "mc", "--preset", "golf", "--vary", "k_p=5%,c=5%,k_r=5%", "--correlate", "k_p:c=0.5",
+        "--samples", "4000", "--seed", "2", "--format", "json",
+    )
+    assert code == 0, err
+    assert json.loads(out)["stats"]["cor"]["q"]["50"] == r["stats"]["cor"]["q"]["50"]
+    with pytest.raises(ValueError, match="not positive definite"):
+        bouncelab.monte_carlo(
+            preset="golf", vary=VARY, samples=10,
+            correlate={"k_p:c": 0.9, "k_p:k_r": 0.9, "c:k_r": -0.9},
+        )
+    with pytest.raises(ValueError, match="invalid vary fit: golf"):
+        bouncelab.monte_carlo(preset="golf", vary="fit", samples=10)
+
+
+def test_correlated_chunks_merge_to_the_single_call():
+    """Dask's path carries `correlate` to every task and to the merge: the same numbers."""
+    pytest.importorskip("dask")
+    corr = {"k_p:c": 0.5, "c:k_r": -0.3}
+    one = bouncelab.monte_carlo(preset="golf", vary=VARY, samples=3000, seed=4, correlate=corr)
+    split = bouncelab.dask.monte_carlo(
+        None, preset="golf", vary=VARY, samples=3000, seed=4, chunk=700, correlate=corr
+    )
+    assert split == one
