@@ -3,7 +3,7 @@
 use super::*;
 use crate::analysis::sweep::{cor_vs_zeta, log_space};
 use crate::preset::Preset;
-use crate::solver::{SolveOptions, simulate};
+use crate::solver::{ImpactResponse, SolveOptions, simulate};
 
 fn ball(p: &Preset) -> Ball {
     Ball {
@@ -12,6 +12,29 @@ fn ball(p: &Preset) -> Ball {
         params: p.params(),
         law: p.law,
         measured: Some(p.measured.clone()),
+    }
+}
+
+/// A scene of `b` with this run, the current λ's curve and reference curves, nothing else.
+fn scene_with<'a>(
+    b: Ball,
+    run: Option<&'a ImpactResponse>,
+    zeta: Option<ZetaSweep<'a>>,
+    references: Vec<ZetaSweep<'a>>,
+) -> Scene<'a> {
+    Scene {
+        ball: b.clone(),
+        balls: vec![b],
+        run,
+        references,
+        zeta,
+        speed: None,
+        speed_pending: None,
+        pinned: Vec::new(),
+        measured: &[],
+        models: None,
+        models_pending: false,
+        target: None,
     }
 }
 
@@ -54,23 +77,11 @@ fn zeta_charts_show_the_decades_and_mark_the_current_lambda() {
     let lambda = p.params().normalized().lambda;
     let zetas = log_space(1e-3, 1e3, 121);
     let points = cor_vs_zeta(&[lambda], &zetas, ContactLaw::Linear).unwrap();
-    let scene = Scene {
-        ball: ball(p),
-        balls: vec![ball(p)],
-        run: Some(&run),
-        references: Vec::new(),
-        zeta: Some(ZetaSweep {
-            lambda,
-            points: &points,
-        }),
-        speed: None,
-        speed_pending: None,
-        pinned: Vec::new(),
-        measured: &[],
-        models: None,
-        models_pending: false,
-        target: None,
+    let zeta = ZetaSweep {
+        lambda,
+        points: &points,
     };
+    let scene = scene_with(ball(p), Some(&run), Some(zeta), Vec::new());
     let fig = figure(Chart::CorZeta, &scene);
     assert_eq!(fig.x.range, Some((0.01, 100.0)));
     let model = &fig.series[0];
@@ -100,22 +111,11 @@ fn no_color_cor_zeta_lines_each_have_their_own_glyph() {
             points: points.as_slice(),
         })
         .collect();
-    let scene = Scene {
-        ball: ball(p),
-        balls: vec![ball(p)],
-        run: Some(&run),
-        references,
-        zeta: Some(ZetaSweep {
-            lambda,
-            points: &now,
-        }),
-        speed: None,
-        speed_pending: None,
-        pinned: Vec::new(),
-        measured: &[],
-        models: None,
-        models_pending: false,
+    let now = ZetaSweep {
+        lambda,
+        points: &now,
     };
+    let scene = scene_with(ball(p), Some(&run), Some(now), references);
     let fig = figure(Chart::CorZeta, &scene);
     let lines: Vec<(String, crate::figure::Sample)> = fig
         .legend()
@@ -142,22 +142,11 @@ fn a_run_off_the_linear_curves_is_drawn_hollow_and_says_so() {
         let points = cor_vs_zeta(&[lambda], &log_space(1e-2, 1e2, 21), ContactLaw::Linear).unwrap();
         let mut b = ball(p);
         b.law = law;
-        let scene = Scene {
-            ball: b.clone(),
-            balls: vec![b],
-            run: Some(&run),
-            references: Vec::new(),
-            zeta: Some(ZetaSweep {
-                lambda,
-                points: &points,
-            }),
-            speed: None,
-            speed_pending: None,
-            pinned: Vec::new(),
-            measured: &[],
-            models: None,
-            models_pending: false,
+        let zeta = ZetaSweep {
+            lambda,
+            points: &points,
         };
+        let scene = scene_with(b, Some(&run), Some(zeta), Vec::new());
         let fig = figure(Chart::CorZeta, &scene);
         let marker = fig.series.iter().find(|s| s.id == "this run").unwrap();
         assert_eq!(marker.look.text.as_deref(), Some(glyph), "{law}");
@@ -176,19 +165,7 @@ fn the_open_hysteresis_loop_says_what_the_spring_keeps() {
         ..SolveOptions::default().with_samples(200)
     };
     let run = simulate(&p.params(), p.law, &options).unwrap();
-    let scene = Scene {
-        ball: ball(p),
-        balls: vec![ball(p)],
-        run: Some(&run),
-        references: Vec::new(),
-        zeta: None,
-        speed: None,
-        speed_pending: None,
-        pinned: Vec::new(),
-        measured: &[],
-        models: None,
-        models_pending: false,
-    };
+    let scene = scene_with(ball(p), Some(&run), None, Vec::new());
     let fig = figure(Chart::Hysteresis, &scene);
     let label = fig
         .series
