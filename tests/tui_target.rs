@@ -135,6 +135,11 @@ fn a_compliant_target_typed_in_the_form_is_the_pairs_run() {
     );
     assert!((run.max_force - pair.max_force).abs() <= 1e-12 * pair.max_force);
     assert!((pair.cor - 0.738).abs() < 5e-4, "{}", pair.cor);
+    // `y`'s line is `run`'s, which has no target: it says so
+    a.update(bouncelab::tui::action::Action::ShowCommand);
+    let screen = screen_text(&draw(&a, 200, 60)).join("\n");
+    assert!(screen.contains("collide --target-mass"), "{screen}");
+    a.update(Action::CloseHelp);
     let fig = bouncelab::figure::explorer::figure(
         bouncelab::figure::explorer::Chart::Hysteresis,
         &a.scene(),

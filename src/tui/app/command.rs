@@ -35,6 +35,13 @@ impl App {
         self.overlay = crate::tui::state::Overlay::Command(line.clone());
         if let Some(w) = crate::tui::command::not_carried(self.preset(), &self.setting) {
             self.warn(w);
+        } else if self.setting.target() != crate::target::Target::wall() {
+            // `run` has no target: the pair is `collide`'s (docs/targets.md)
+            self.warn(
+                "the line runs the ball at the wall: the target (M, v_t, K_s, c_s) is \
+                 `bouncelab collide --target-mass …`'s"
+                    .into(),
+            );
         }
         vec![crate::tui::effect::Effect::Copy(line)]
     }
