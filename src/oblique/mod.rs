@@ -7,7 +7,7 @@
 //! The answer comes from [`solve`]: the exact normal flow of the linear law
 //! (`solver::exact::NormalPath`) with the tangential motion in closed form phase by phase
 //! (`tangential`): a harmonic oscillator in u while the point sticks, the normal impulse while
-//! it slides, the switches root-found. [`reference`] integrates the same model independently
+//! it slides, the switches root-found. [`mod@reference`] integrates the same model independently
 //! (DOP853 with events at every switch); tests/oblique.rs holds the two together.
 
 pub mod court;
