@@ -57,11 +57,20 @@ impl fmt::Display for FitError {
                 zeta,
                 low,
                 high,
-            } => write!(
-                f,
-                "cor {} is out of reach at ζ = {zeta:.4}: the model spans {low:.4} (λ = 0) to {high:.4} (λ → ∞)",
-                number(*target)
-            ),
+            } => {
+                // a typed COR as typed; one derived from heights (0.44367825470805683) to six
+                // digits
+                let given = number(*target);
+                let shown = if given.len() > 10 {
+                    crate::text::sig_trim(*target, 6)
+                } else {
+                    given
+                };
+                write!(
+                    f,
+                    "cor {shown} is out of reach at ζ = {zeta:.4}: the model spans {low:.4} (λ = 0) to {high:.4} (λ → ∞)"
+                )
+            }
         }
     }
 }
