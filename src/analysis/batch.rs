@@ -7,7 +7,7 @@
 //! Each ball's rows are handed to the readers of [`crate::measured`] as a table of their own
 //! (the header and the ball's rows, the id cell taken out), so a batch reads each ball's
 //! data exactly as `bouncelab fit` reads a file of one ball; the errors point at the batch's
-//! own line and column. The summary over the balls' verdicts is [`super::batch_stats`].
+//! own line and column. The summary over the balls' verdicts is `super::batch_stats`.
 
 use crate::measured::{self, Data, MeasuredError};
 use std::collections::HashMap;

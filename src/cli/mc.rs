@@ -52,7 +52,7 @@ pub struct McArgs {
     pub v0: Option<f64>,
     /// Parameters and relative spreads, comma-separated: NAME=SPREAD with NAME one of k_p, c,
     /// k_r, z_p, k_h, m, v0 and SPREAD a percentage (5%) or a fraction (0.05); or `fit`: the
-    /// multivariate normal of a fitted preset's own covariance (its [fit] table)
+    /// multivariate normal of a fitted preset's own covariance (its `[fit]` table)
     #[arg(long, value_name = "NAME=SPREAD,…", allow_hyphen_values = true)]
     pub vary: String,
     /// Distribution of each varied parameter: normal (sd = spread), uniform (± spread) or

@@ -256,7 +256,7 @@ fn note(a: &FitArgs, out: &mut dyn Write, line: &str) -> anyhow::Result<()> {
     Ok(())
 }
 
-/// The single-COR fit's report, `--plot` and `--save`, as one transaction (see [`publish`]).
+/// The single-COR fit's report, `--plot` and `--save`, as one transaction (see `publish`).
 pub fn single_extras(
     a: &FitArgs,
     ball: &Ball,

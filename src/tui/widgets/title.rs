@@ -1,11 +1,11 @@
 //! A chart's title fitted to its frame: the axes and their units stay, everything else goes
-//! first (issue 29, item 5: "F [N] vs t [ms" at 60×20 lost the unit it most needed).
+//! first (issue 29, item 5: `F [N] vs t [ms` at 60×20 lost the unit it most needed).
 //!
 //! Titles are parts joined by " · ": a name ("Force–time"), the axes with their units
-//! ("F [N] vs t [ms]"), qualifiers ("linear law, no flattening"), the crosshair's reading
-//! ("+(1.2, 60.9)"). When the whole title does not fit, the parts other than the axes and a
+//! (`F [N] vs t [ms]`), qualifiers ("linear law, no flattening"), the crosshair's reading
+//! (`+(1.2, 60.9)`). When the whole title does not fit, the parts other than the axes and a
 //! reading are dropped, those right of the axes first; then the axes are written tighter
-//! ("F[N]–t[ms]"); last, whole words are cut from the right with "…", never inside a
+//! (`F[N]–t[ms]`); last, whole words are cut from the right with "…", never inside a
 //! bracketed unit.
 
 /// `title` in at most `width` characters (a terminal cell each).
