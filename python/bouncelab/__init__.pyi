@@ -45,6 +45,8 @@ class Impact:
     lambda_: float
     zeta: float
     zp_bar: float
+    radius: Optional[float]
+    poisson_ratio: Optional[float]
     cor: float
     rebound: bool
     max_force: float

@@ -48,6 +48,12 @@ pub(crate) struct Impact {
     zeta: f64,
     #[pyo3(get)]
     zp_bar: f64,
+    /// R, m (`None` for a ball that is no preset), as `run`'s JSON `radius`.
+    #[pyo3(get)]
+    radius: Option<f64>,
+    /// ν of the preset's material (`None` for a ball that is no preset).
+    #[pyo3(get)]
+    poisson_ratio: Option<f64>,
     #[pyo3(get)]
     cor: f64,
     #[pyo3(get)]
@@ -116,6 +122,8 @@ impl Impact {
             lambda_: rep.lambda,
             zeta: rep.zeta,
             zp_bar: rep.zp_bar,
+            radius: rep.radius,
+            poisson_ratio: rep.poisson_ratio,
             cor: rep.cor,
             rebound: rep.rebound,
             max_force: rep.max_force,
@@ -246,11 +254,13 @@ impl Impact {
             ("lambda", self.lambda_),
             ("zeta", self.zeta),
             ("zp_bar", self.zp_bar),
-            ("cor", self.cor),
         ];
         for (k, v) in numbers {
             d.set_item(k, v)?;
         }
+        d.set_item("radius", self.radius)?;
+        d.set_item("poisson_ratio", self.poisson_ratio)?;
+        d.set_item("cor", self.cor)?;
         d.set_item("rebound", self.rebound)?;
         d.set_item("max_force", self.max_force)?;
         d.set_item("contact_time", self.contact_time)?;

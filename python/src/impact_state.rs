@@ -70,6 +70,8 @@ pub(super) fn from_state(d: &Bound<'_, PyDict>) -> PyResult<Impact> {
         lambda_: get(d, "lambda")?,
         zeta: get(d, "zeta")?,
         zp_bar: get(d, "zp_bar")?,
+        radius: get(d, "radius")?,
+        poisson_ratio: get(d, "poisson_ratio")?,
         cor: get(d, "cor")?,
         rebound: get(d, "rebound")?,
         max_force: get(d, "max_force")?,

@@ -222,6 +222,13 @@ fn presets(py: Python<'_>) -> PyResult<Vec<Bound<'_, PyDict>>> {
             d.set_item("lambda", n.lambda)?;
             d.set_item("zeta", n.zeta)?;
             d.set_item("v0", p.measured.v0)?;
+            d.set_item("radius", p.measured.radius)?;
+            d.set_item("poisson_ratio", p.material.poisson)?;
+            let kappa = p.measured.inertia_factor;
+            d.set_item(
+                "inertia_factor",
+                kappa.unwrap_or(bouncelab::api::SOLID_INERTIA_FACTOR),
+            )?;
             Ok(d)
         })
         .collect()
