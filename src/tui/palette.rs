@@ -1,7 +1,7 @@
 //! How many colours the terminal shows, and 24-bit colours brought down to them. The map's
 //! viridis cells are the explorer's only 24-bit colours; a terminal that does not say it takes
 //! them (`COLORTERM=truecolor` or `24bit`) gets the nearest of the xterm 256-colour palette
-//! (`TERM=…256color`) or of the 16 ANSI colours, as htop and btop do (issue 29, item 11).
+//! (`TERM=…256color`) or of the 16 ANSI colours, as htop and btop do.
 
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;

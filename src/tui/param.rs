@@ -174,9 +174,7 @@ mod tests {
 
     #[test]
     fn every_refusal_is_the_command_line_s_message_with_the_range() {
-        // three messages for one range before: "out of the physically meaningful range
-        // 1e-15 … 1e15; λ kept (range 0 … 1e6)", "is out of range 0 … 1e6", "that is out
-        // of range" (issue 29, item 8)
+        // one range and the command line's own message for every refusal
         let p = ImpactParams::from_normalized(1.0, 0.2, 3.0);
         let said = |param: Param, v: f64| param.check(v, &p).unwrap_err();
         assert_eq!(

@@ -42,8 +42,8 @@ pub fn result_labels(run: &ImpactResponse) -> Vec<Series> {
 }
 
 /// Where the ball's α path ends open on the hysteresis chart, the energy still in the recoil
-/// spring when the ball leaves (the loop does not close: "spring left 19.42 mJ", issue 29
-/// item 11); nothing when it holds less than 0.1 % of the impact's energy.
+/// spring when the ball leaves (the loop does not close: "spring left 19.42 mJ" for the
+/// superball); nothing when it holds less than 0.1 % of the impact's energy.
 pub fn open_loop_label(run: &ImpactResponse) -> Option<Series> {
     let e = run.energy.as_ref()?;
     (e.spring > 1e-3 * e.initial_kinetic).then_some(())?;

@@ -288,7 +288,8 @@ fn zeta_figure(chart: Chart, scene: &Scene) -> Figure {
         );
         let mut marker = run_marker(label, (scene.ball.params.normalized().zeta, y));
         // the curves are the linear law's without flattening: a run under another law, or
-        // one that flattened, lies off them and says so, hollow (issue 29, item 11)
+        // one that flattened, lies off them and says so, hollow
+        // (`a_run_off_the_linear_curves_is_drawn_hollow_and_says_so`)
         let flattened = r.permanent_indentation > 0.0;
         if scene.ball.law != ContactLaw::Linear || flattened {
             let why = if flattened {

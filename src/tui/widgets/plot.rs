@@ -302,7 +302,8 @@ impl<'a> Plot<'a> {
             tagged.push((y, x, x + w));
         }
         // every cell a tag or a marker's text took: nothing later writes over them, and the
-        // legend keeps off them (issue 29, item 4: "p2p▲t_f", the legend over "F_m 117.3 N")
+        // legend keeps off them (tests/tui_render.rs:
+        // `value_labels_show_whole_beside_legends_and_pins`)
         let mut taken: Vec<(u16, u16)> = tagged
             .iter()
             .flat_map(|&(y, a, b)| (a..b).map(move |x| (x, y)))

@@ -1,5 +1,5 @@
 //! A chart's title fitted to its frame: the axes and their units stay, everything else goes
-//! first (issue 29, item 5: `F [N] vs t [ms` at 60×20 lost the unit it most needed).
+//! first (tests/tui_render.rs: `chart_titles_keep_their_units_at_every_size`).
 //!
 //! Titles are parts joined by " · ": a name ("Force–time"), the axes with their units
 //! (`F [N] vs t [ms]`), qualifiers ("linear law, no flattening"), the crosshair's reading
