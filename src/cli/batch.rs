@@ -6,9 +6,9 @@
 
 use super::ball::BallArgs;
 use super::budget::Progress;
-use super::figure::{check_writable, commit};
 use super::measured_file as files;
 use super::output::{self, csv_row, given, human};
+use super::outputs::{check as check_writable, report_then_commit};
 use crate::analysis::batch::{BallData, split};
 use crate::analysis::fit::parse_free;
 use crate::api::{Ball, batch_quantity};
@@ -100,7 +100,8 @@ pub fn run(a: &BatchArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     };
     let outcomes = judge_all(&ball, &balls, &setup)?;
     let report = BatchReport::new(&ball, standard, &outcomes);
-    // both files or neither (crate::atomic), before the report
+    // both files staged, then the report, then the files published: all or none
+    // (cli::outputs, as every command)
     let mut written = Outputs::new(a.force);
     if let Some(p) = &a.csv_out {
         written.text(p, &balls_csv(&outcomes))?;
@@ -108,12 +109,13 @@ pub fn run(a: &BatchArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     if let Some(p) = &a.svg_out {
         written.text(p, &svg::render(&histogram_figure(&a.file, &report))?)?;
     }
-    commit(written)?;
+    let mut text_out = Vec::new();
     match a.format {
-        BatchFormat::Json => output::json(out, &report)?,
-        BatchFormat::Csv => out.write_all(balls_csv(&outcomes).as_bytes())?,
-        BatchFormat::Text => text(out, &ball, &a.file, air, &report)?,
+        BatchFormat::Json => output::json(&mut text_out, &report)?,
+        BatchFormat::Csv => text_out.extend_from_slice(balls_csv(&outcomes).as_bytes()),
+        BatchFormat::Text => text(&mut text_out, &ball, &a.file, air, &report)?,
     }
+    report_then_commit(out, &text_out, written)?;
     let s = &report.summary;
     if s.no_answer > 0 {
         return Err(BatchUnanswered {
