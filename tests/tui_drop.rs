@@ -148,3 +148,38 @@ fn the_drop_view_shows_its_verdict_and_rebounds_at_small_sizes() {
         }
     }
 }
+
+/// Issue 29 item 9: under reduced motion the ball at rest was an arc merged into the plate
+/// (one row of dots over it at 60×20). It is a whole circle standing on the plate: at least
+/// two rows of it above the plate's row, at every size.
+#[test]
+fn the_ball_at_rest_is_round_on_its_plate() {
+    for (w, h) in [(60, 20), (80, 24), (100, 30), (120, 40), (200, 60)] {
+        let mut app = App::new(preset("superball"), false).with_motion(false);
+        app.update(Action::Resize(w, h));
+        press(&mut app, &[KeyCode::Char('d')]);
+        let rows = screen_text(&draw(&app, w, h));
+        let top = rows.iter().position(|r| r.contains("┌ball")).unwrap();
+        let x = rows[top].chars().collect::<Vec<_>>();
+        let left = (0..x.len())
+            .find(|&i| x[i] == '┌' && x[i + 1..].starts_with(&['b', 'a', 'l', 'l']))
+            .unwrap();
+        let right = (left + 1..x.len()).find(|&i| x[i] == '┐').unwrap();
+        let inner: Vec<String> = rows[top + 1..]
+            .iter()
+            .take_while(|r| r.chars().nth(left) == Some('│'))
+            .map(|r| r.chars().skip(left + 1).take(right - left - 1).collect())
+            .collect();
+        let (plate, above) = inner.split_last().unwrap();
+        assert!(
+            plate.chars().all(|c| c != ' '),
+            "{w}×{h}: the plate {plate:?}"
+        );
+        let drawn = above.iter().filter(|r| r.trim() != "").count();
+        assert!(
+            drawn >= 2,
+            "{w}×{h}: the ball over its plate\n{}",
+            inner.join("\n")
+        );
+    }
+}

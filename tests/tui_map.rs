@@ -401,3 +401,31 @@ fn the_map_uses_only_colours_the_terminal_shows() {
         }
     }
 }
+
+/// Issue 29 item 4: the cursor's ▲ under the ζ axis never writes into a tick label
+/// ("0.▲01"): at every cursor column each token of the label row is a whole number, the ▲
+/// or the axis name.
+#[test]
+fn the_map_cursor_never_cuts_a_tick_label() {
+    let mut app = map_app(false, 80, 24);
+    press(&mut app, &[KeyCode::Left; 120]);
+    for _ in 0..80 {
+        let t = draw(&app, 80, 24);
+        let buf = t.backend().buffer();
+        let rows: Vec<String> = (0..24)
+            .map(|y| (0..80).map(|x| buf[(x, y)].symbol()).collect())
+            .collect();
+        let labels = rows
+            .iter()
+            .rfind(|r| r.contains('▲'))
+            .expect("the cursor's ▲ under the map");
+        let inner = labels.trim_matches(|c| c == '│' || c == ' ');
+        for token in inner.split_whitespace() {
+            assert!(
+                token == "▲" || token == "ζ" || token.parse::<f64>().is_ok(),
+                "{token:?} in the label row {labels:?}"
+            );
+        }
+        press(&mut app, &[KeyCode::Right]);
+    }
+}

@@ -463,3 +463,74 @@ fn value_labels_show_whole_beside_legends_and_pins() {
         }
     }
 }
+
+/// Issue 29 item 7: the readout never wraps a value — at v0 = 1e-15 m/s its energy line put
+/// "1.053e-29" alone at the start of the next row, at 60×20 "law" and "N/m" stood alone. Every
+/// row of the readout starts with a space inside its border: a long line breaks between its
+/// fields and indents what follows, never at the border.
+#[test]
+fn readout_values_never_wrap() {
+    for v0 in ["1e-15", "3.12", "1e15"] {
+        for (w, h) in [(60, 20), (80, 24), (100, 30), (120, 40), (200, 60)] {
+            let mut a = app(0);
+            press(
+                &mut a,
+                &[KeyCode::Right, KeyCode::Right, KeyCode::Char('=')],
+            );
+            press(&mut a, &chars(v0));
+            press(&mut a, &[KeyCode::Enter]);
+            let rows = screen_text(&draw(&a, w, h));
+            let top = rows
+                .iter()
+                .position(|r| r.contains("superball · adopted"))
+                .expect("the readout's title");
+            // the readout's frame: the last corner before its title
+            let row: Vec<char> = rows[top].chars().collect();
+            let title = rows[top].find("superball · adopted").unwrap();
+            let title = rows[top][..title].chars().count();
+            let x = (0..title).rev().find(|&i| row[i] == '┌').unwrap();
+            for r in &rows[top + 1..] {
+                let cells: Vec<char> = r.chars().skip(x).collect();
+                if cells.first() != Some(&'│') {
+                    break;
+                }
+                let first = cells.get(1).copied().unwrap_or(' ');
+                assert!(
+                    first == ' ' || first == '▶',
+                    "{w}×{h} v0 {v0}: a wrapped readout row {r:?}\n{}",
+                    rows.join("\n")
+                );
+            }
+        }
+    }
+}
+
+/// Issue 29 item 4: with 8 pins the force–time chart's legend vanished (its entries, one per
+/// pin, fit neither stacked nor in one line). The pins then share one entry ("p1–p8
+/// pinned") and the legend stays, with the model's line.
+#[test]
+fn legends_stay_with_eight_pins() {
+    for (w, h) in [(100, 30), (120, 40), (200, 60)] {
+        let mut a = app(0);
+        a.update(Action::Resize(w, h));
+        for _ in 0..8 {
+            press(&mut a, &[KeyCode::Char('p'), KeyCode::Char('v')]);
+        }
+        let rows = screen_text(&draw(&a, w, h));
+        // the force–time chart: the rows under its title, up to its right border
+        let top = rows.iter().position(|r| r.contains("F [N] vs t")).unwrap();
+        let right = rows[top].chars().position(|c| c == '┐').unwrap();
+        let chart: Vec<String> = rows[top..]
+            .iter()
+            .take_while(|r| !r.starts_with('└'))
+            .map(|r| r.chars().take(right).collect())
+            .collect();
+        let s = chart.join("\n");
+        assert!(s.contains("━ model"), "{w}×{h}: no legend\n{s}");
+        let each = (1..=8).all(|i| s.contains(&format!("p{i} superb")));
+        assert!(
+            each || s.contains("p1–p8 pinned"),
+            "{w}×{h}: the pins are not in the legend\n{s}"
+        );
+    }
+}

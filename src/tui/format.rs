@@ -1,4 +1,9 @@
-//! Number formatting for the screen: never prints NaN or inf.
+//! Number formatting for the screen (never prints NaN or inf), and text fitted to a width:
+//! names cut with an ellipsis, readout lines broken between their fields, never inside a
+//! value.
+
+use ratatui::style::Style;
+use ratatui::text::{Line, Span};
 
 /// How far `model` is from `measured`, in percent of `measured`: "+0.1%", "-3.7%", "+209%".
 pub fn percent_diff(model: f64, measured: f64) -> String {
@@ -41,6 +46,82 @@ pub fn wrap(text: &str, width: usize) -> Vec<String> {
     lines
 }
 
+/// `text` in at most `width` characters: whole, or cut with an ellipsis ("superba…").
+pub fn clip(text: &str, width: usize) -> String {
+    if text.chars().count() <= width {
+        return text.to_string();
+    }
+    let mut out: String = text.chars().take(width.saturating_sub(1)).collect();
+    if width > 0 {
+        out.push('…');
+    }
+    out
+}
+
+/// `lines` fitted to `width` columns without breaking a value: a line too long breaks
+/// between its fields (two spaces apart), else at its last space that fits; the rest goes
+/// on the next line, indented two columns past the line's own indent. A single word wider
+/// than `width` is left to the paragraph's wrap.
+pub fn fit_lines(lines: Vec<Line<'static>>, width: usize) -> Vec<Line<'static>> {
+    let mut out = Vec::new();
+    for line in lines {
+        let mut cells: Vec<(char, Style)> = line
+            .spans
+            .iter()
+            .flat_map(|s| {
+                s.content
+                    .chars()
+                    .map(move |c| (c, line.style.patch(s.style)))
+            })
+            .collect();
+        let indent = cells.iter().take_while(|c| c.0 == ' ').count();
+        while cells.len() > width {
+            let Some(cut) = break_at(&cells, width, indent) else {
+                break;
+            };
+            let rest: Vec<(char, Style)> = cells[cut..]
+                .iter()
+                .skip_while(|c| c.0 == ' ')
+                .copied()
+                .collect();
+            cells.truncate(cut);
+            while cells.last().is_some_and(|c| c.0 == ' ') {
+                cells.pop();
+            }
+            out.push(spans_of(&cells));
+            let pad = (' ', Style::default());
+            cells = std::iter::repeat_n(pad, indent + 2).chain(rest).collect();
+        }
+        out.push(spans_of(&cells));
+    }
+    out
+}
+
+/// Where to break `cells` to fit `width`: the last field gap ("  ") that fits, else the last
+/// space after a comma (between list items: "c_s 5 kg/s" stays whole), else the last space;
+/// never inside the indent.
+fn break_at(cells: &[(char, Style)], width: usize, indent: usize) -> Option<usize> {
+    let is = |i: usize, ch: char| cells.get(i).is_some_and(|c| c.0 == ch);
+    let fits = (indent + 1..=width.min(cells.len())).rev();
+    let word_end = |i: usize| is(i, ' ') && !is(i - 1, ' ');
+    fits.clone()
+        .find(|&i| word_end(i) && is(i + 1, ' '))
+        .or_else(|| fits.clone().find(|&i| word_end(i) && is(i - 1, ',')))
+        .or_else(|| fits.clone().find(|&i| word_end(i)))
+}
+
+/// A line from styled characters, one span per run of one style.
+fn spans_of(cells: &[(char, Style)]) -> Line<'static> {
+    let mut spans: Vec<Span<'static>> = Vec::new();
+    for &(c, style) in cells {
+        match spans.last_mut() {
+            Some(s) if s.style == style => s.content.to_mut().push(c),
+            _ => spans.push(Span::styled(c.to_string(), style)),
+        }
+    }
+    Line::from(spans)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -53,6 +134,49 @@ mod tests {
             ["a", "/very/", "long/p", "ath b"]
         );
         assert_eq!(wrap("", 4), [""]);
+    }
+
+    #[test]
+    fn names_are_cut_with_an_ellipsis() {
+        assert_eq!(clip("superball", 9), "superball");
+        assert_eq!(clip("superball", 8), "superba…");
+        assert_eq!(clip("golf", 0), "");
+    }
+
+    fn texts(lines: &[Line]) -> Vec<String> {
+        lines.iter().map(|l| l.to_string()).collect()
+    }
+
+    #[test]
+    fn lines_break_between_fields_never_inside_a_value() {
+        let lines = vec![Line::raw(" energy mJ in 1.870e-29  out 1.053e-29")];
+        assert_eq!(
+            texts(&fit_lines(lines, 32)),
+            [" energy mJ in 1.870e-29", "   out 1.053e-29"]
+        );
+        // no field gap that fits: the last space that does
+        let lines = vec![Line::raw(" measured at v0 = 3.12 m/s: not compared")];
+        assert_eq!(
+            texts(&fit_lines(lines, 34)),
+            [" measured at v0 = 3.12 m/s: not", "   compared"]
+        );
+        // a list breaks after a comma, keeping each item whole
+        let lines = vec![Line::raw(" pair: M 0.3 kg, K_s 40000 N/m, c_s 5 kg/s")];
+        assert_eq!(
+            texts(&fit_lines(lines, 38)),
+            [" pair: M 0.3 kg, K_s 40000 N/m,", "   c_s 5 kg/s"]
+        );
+        // a line that fits is kept as it is, styles and all
+        let styled = Line::from(vec![
+            Span::raw(" a"),
+            Span::styled(" b", Style::new().bold()),
+        ]);
+        assert_eq!(fit_lines(vec![styled.clone()], 10), [styled]);
+        // a word wider than the width is left whole for the paragraph to wrap
+        assert_eq!(
+            texts(&fit_lines(vec![Line::raw(" 1.053e-29")], 4)),
+            [" 1.053e-29"]
+        );
     }
 
     #[test]

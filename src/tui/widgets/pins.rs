@@ -99,7 +99,7 @@ pub fn table(
     const LABEL: usize = 11;
     let col = (inner_w.saturating_sub(LABEL) / 3).max(7);
     let row = |label: String, cells: [&str; 3], style: Style| {
-        let label: String = label.chars().take(LABEL - 1).collect();
+        let label = crate::tui::format::clip(&label, LABEL - 1);
         let mut text = format!(" {label:<w$}", w = LABEL - 1);
         for c in cells {
             // a space before every cell, so full cells never run together
@@ -215,7 +215,10 @@ mod tests {
         assert_eq!(text(9).len(), 9, "heading, two header rows, two rows a pin");
         assert!(text(9)[4].starts_with("  superball "));
         assert_eq!(text(8).len(), 5, "heading, one header row, a row a pin");
-        assert!(text(8)[2].starts_with(" p1 superba "));
+        assert!(
+            text(8)[2].starts_with(" p1 superb… "),
+            "a cut name ends in …"
+        );
         assert_eq!(text(4), [" pin Δe: p1 — p2 — p3 —"]);
         assert!(table(&[], &now, (34, 40), &theme).is_empty());
     }

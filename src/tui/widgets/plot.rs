@@ -7,7 +7,7 @@ use super::marks::{marker_place, stacked_or_in_one};
 use super::strokes::{Pattern, patterned};
 use crate::figure::look::{dashed, dotted, long_dashed};
 use crate::figure::ticks::{Room, factor_label, ticks};
-use crate::figure::{Corner, Figure, Role, Sample, Series, Style as Stroke};
+use crate::figure::{Corner, Figure, Role, Sample, Series, Style as Stroke, Tone};
 use crate::tui::theme::Theme;
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
@@ -342,10 +342,25 @@ impl<'a> Plot<'a> {
         (taken, dropped)
     }
 
-    /// The figure's legend, a line an entry.
-    fn legend_lines(&self) -> Vec<Line<'static>> {
-        self.figure
-            .legend()
+    /// The figure's legend, a line an entry; with `pins_in_one`, the pins' entries ("p1
+    /// golf", "p2 golf", …) as one ("┄ p1–p8 pinned") — their tags on the curves and the
+    /// readout's pin table name each (tests/tui_render.rs: `legends_stay_with_eight_pins`).
+    fn legend_lines(&self, pins_in_one: bool) -> Vec<Line<'static>> {
+        let mut entries = self.figure.legend();
+        let pins: Vec<usize> = (0..entries.len())
+            .filter(|&i| {
+                entries[i].tone == Tone::Ghost && !matches!(entries[i].sample, Sample::Marks(_))
+            })
+            .collect();
+        if pins_in_one && pins.len() > 1 {
+            let tag = |i: usize| entries[i].key.split(' ').next().unwrap_or("").to_string();
+            let key = format!("{}–{} pinned", tag(pins[0]), tag(pins[pins.len() - 1]));
+            entries[pins[0]].key = key;
+            for &i in pins[1..].iter().rev() {
+                entries.remove(i);
+            }
+        }
+        entries
             .into_iter()
             .map(|e| {
                 let style = self.theme.tone(e.tone);
@@ -381,10 +396,14 @@ impl<'a> Plot<'a> {
         // no place beside their points (alone, when the whole legend has no room) its width
         let half = |rows: u16, w: u16| rows <= room && 2 * rows <= p.height && 2 * w <= p.width;
         let whole = |rows: u16, w: u16| rows <= room && w + 2 <= p.width;
-        let mut legend = self.legend_lines();
-        legend.extend(dropped.iter().cloned());
-        let Some(lines) =
-            stacked_or_in_one(legend, &half).or_else(|| stacked_or_in_one(dropped, &whole))
+        let legend = |pins_in_one: bool| {
+            let mut lines = self.legend_lines(pins_in_one);
+            lines.extend(dropped.iter().cloned());
+            lines
+        };
+        let Some(lines) = stacked_or_in_one(legend(false), &half)
+            .or_else(|| stacked_or_in_one(legend(true), &half))
+            .or_else(|| stacked_or_in_one(dropped, &whole))
         else {
             return;
         };

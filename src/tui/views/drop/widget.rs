@@ -185,7 +185,11 @@ fn render_ball(d: &DropView, theme: Theme, area: Rect, buf: &mut Buffer) {
     let inner = Block::bordered().inner(area);
     let rows = f64::from(inner.height.max(1));
     let cell = top / rows;
-    let r = d.radius.max(0.8 * cell);
+    let r = d.radius.max(1.2 * cell);
+    // the plate one braille dot row (a quarter cell) below the ball's lowest point, so a
+    // ball at rest (the reduced-motion picture) is a whole circle on the plate, not an arc
+    // merged into it (tests/tui_drop.rs: `the_ball_at_rest_is_round_on_its_plate`)
+    let plate_y = -cell / 4.0;
     // braille dots are about square (a cell is 2 dots wide, 4 tall, and twice as tall as
     // wide): equal metres per dot across and up keeps the ball round
     let half_width = top * f64::from(inner.width.max(1)) / (4.0 * rows);
@@ -195,13 +199,13 @@ fn render_ball(d: &DropView, theme: Theme, area: Rect, buf: &mut Buffer) {
         .block(Block::bordered().title(Span::styled("ball", theme.title())))
         .marker(Marker::Braille)
         .x_bounds([-half_width, half_width])
-        .y_bounds([0.0, top])
+        .y_bounds([plate_y, top])
         .paint(move |ctx| {
             ctx.draw(&CanvasLine {
                 x1: -half_width,
-                y1: 0.0,
+                y1: plate_y,
                 x2: half_width,
-                y2: 0.0,
+                y2: plate_y,
                 color: plate,
             });
             ctx.draw(&Circle {
