@@ -405,3 +405,25 @@ fn background_sweeps_are_requested_then_received_and_stale_ones_dropped() {
     press(&mut app, &[KeyCode::Tab]);
     assert!(app.speed_requests().is_empty());
 }
+
+/// Issue 29 item 11: the help offers `4` ("the start preset, if another"); started on one of
+/// the three balls it loaded nothing with a message that did not say why. It says so now,
+/// and loads the start preset when that is a fourth ball.
+#[test]
+fn four_says_why_it_loads_nothing() {
+    let mut app = superball();
+    press(&mut app, &[KeyCode::Char('4')]);
+    assert!(warned(&app));
+    let text = &app.message().unwrap().text;
+    assert!(
+        text.contains("start preset") && text.contains("1–3"),
+        "{text}"
+    );
+    let tennis = Preset::embedded_all()
+        .into_iter()
+        .find(|p| p.name == "tennis")
+        .unwrap();
+    let mut app = App::new(tennis, false);
+    press(&mut app, &[KeyCode::Char('1'), KeyCode::Char('4')]);
+    assert!(app.message().unwrap().text.contains("loaded tennis"));
+}

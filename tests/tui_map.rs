@@ -429,3 +429,22 @@ fn the_map_cursor_never_cuts_a_tick_label() {
         press(&mut app, &[KeyCode::Right]);
     }
 }
+
+/// Issue 29 item 11: the map and its readout show contact times in ms, but its targets entry
+/// read seconds. It reads ms now (held in SI, as the library's targets and the export), and
+/// shows them back in ms.
+#[test]
+fn map_targets_are_typed_in_the_units_the_map_shows() {
+    let mut app = map_app(false, 120, 40);
+    press(&mut app, &[KeyCode::Char('t')]);
+    typed(&mut app, "contact_time>=2");
+    press(&mut app, &[KeyCode::Enter]);
+    let t = app.map_view().targets.clone().unwrap();
+    assert_eq!(t.0[0].value, 0.002, "2 ms held as 0.002 s");
+    let s = screen_text(&draw(&app, 120, 40)).join("\n");
+    assert!(s.contains("where contact_time>=2"), "{s}");
+    // t reopens the entry with the targets as typed
+    press(&mut app, &[KeyCode::Char('t')]);
+    press(&mut app, &[KeyCode::Enter]);
+    assert_eq!(app.map_view().targets.as_ref(), Some(&t));
+}

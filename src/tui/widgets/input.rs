@@ -83,7 +83,7 @@ fn render(input: &Input, s: &Setting, theme: &Theme, area: Rect, buf: &mut Buffe
         ),
         Purpose::Targets => (
             " Map targets ".to_string(),
-            " e.g. cor>=0.8,max_force<=2000 (N, s); empty clears".to_string(),
+            " e.g. cor>=0.8,contact_time>=2 (N, ms); empty clears".to_string(),
             " where ".to_string(),
             " Enter accepts · Esc cancels",
             60,

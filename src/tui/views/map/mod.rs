@@ -6,6 +6,7 @@
 pub mod cells;
 pub mod export;
 pub mod state;
+pub mod targets;
 mod update;
 pub mod widget;
 pub mod worker;

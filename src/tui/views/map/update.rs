@@ -2,7 +2,7 @@
 //! targets, the passes coming back from the worker, and the map kept up to date with the
 //! ball and the screen (src/tui/views/map/state.rs says what the map is).
 
-use crate::map::{Map, MapSpec, Targets, sensitivity};
+use crate::map::{Map, MapSpec, sensitivity};
 use crate::model::contact::ContactLaw;
 use crate::text::sig_trim;
 use crate::tui::action::Action;
@@ -14,6 +14,7 @@ use crate::tui::views::map::export::MapExport;
 use crate::tui::views::map::state::{
     self as map_view, MapJob, MapView, Window, cell_of, next_quantity,
 };
+use crate::tui::views::map::targets;
 use std::sync::Arc;
 use std::sync::atomic::AtomicBool;
 
@@ -43,7 +44,7 @@ impl App {
                     .map
                     .targets
                     .as_ref()
-                    .map_or(String::new(), Targets::to_string);
+                    .map_or(String::new(), targets::text);
                 self.open_input(Purpose::Targets, text);
             }
             Action::MapPass { generation, map } => self.receive_pass(generation, *map),
@@ -135,10 +136,13 @@ impl App {
             }
             return;
         }
-        match Targets::parse(text) {
+        match targets::parse(text) {
             Ok(t) => {
                 self.overlay = Overlay::None;
-                self.info(format!("targets: {t}"));
+                self.info(format!(
+                    "targets: {} (contact_time in ms)",
+                    targets::text(&t)
+                ));
                 self.map.targets = Some(t);
             }
             Err(e) => {

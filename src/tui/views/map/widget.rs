@@ -321,7 +321,7 @@ impl MapPanel<'_> {
             None => String::new(),
         };
         let targets = match &self.view.targets {
-            Some(t) => format!(" · where {t}"),
+            Some(t) => format!(" · where {}", super::targets::text(t)),
             None => " · t: targets".to_string(),
         };
         let progress = if map.is_complete() {
