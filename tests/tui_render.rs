@@ -534,3 +534,25 @@ fn legends_stay_with_eight_pins() {
         );
     }
 }
+
+/// Issue 29 item 6: a fine step near 1000 was invisible ("1000.0 → 1000.0"), and one value
+/// read "140" or "140.0" by the terminal's size. A stepped value shows the digits its step
+/// needs, and every size writes a value alike.
+#[test]
+fn one_number_format_at_every_size() {
+    let mut a = app(0);
+    press(&mut a, &[KeyCode::Char('=')]);
+    press(&mut a, &chars("1000"));
+    press(&mut a, &[KeyCode::Enter, KeyCode::Up]);
+    for (w, h) in [(60, 20), (80, 24), (100, 30), (120, 40), (200, 60)] {
+        let s = screen_text(&draw(&a, w, h)).join("\n");
+        assert!(
+            s.contains("λ 1000.01") || s.contains("λ   1000.01"),
+            "{w}×{h}\n{s}"
+        );
+        assert!(
+            s.contains("c 140.0 kg/s") || s.contains("c   140.0 kg/s"),
+            "{w}×{h}\n{s}"
+        );
+    }
+}

@@ -1,9 +1,84 @@
 //! Number formatting for the screen (never prints NaN or inf), and text fitted to a width:
 //! names cut with an ellipsis, readout lines broken between their fields, never inside a
 //! value.
+//!
+//! One number format for the whole explorer (docs/explorer.md, "Numbers"): [`value`] writes
+//! [`DIGITS`] significant digits, plain from 0.0001 up to 99 999 and in exponent form
+//! outside (`5.450e4` is never `54500` beside `1.17e5`); a parameter being stepped gets the
+//! digits its step needs ([`stepped`]); an uncertainty [`UNCERTAIN`] digits, an interval's
+//! two ends in one form ([`interval`]); every quantity in one unit ([`screen_unit`]: mm, g,
+//! ms).
 
 use ratatui::style::Style;
 use ratatui::text::{Line, Span};
+
+/// Significant digits of a value on screen.
+pub const DIGITS: usize = 4;
+/// Significant digits of an uncertainty (a standard error, an interval's ends).
+pub const UNCERTAIN: usize = 3;
+
+/// `x` to `digits` significant digits, the integer part of a plain number rounded too
+/// (78094 to 3 digits is 78100, not 78094).
+fn rounded(x: f64, digits: usize) -> String {
+    let mag = if x.is_finite() && x != 0.0 {
+        x.abs().log10().floor() as i32
+    } else {
+        0
+    };
+    let spare = mag + 1 - digits as i32;
+    let x = if spare > 0 && mag < 5 {
+        let unit = 10f64.powi(spare);
+        (x / unit).round() * unit
+    } else {
+        x
+    };
+    crate::text::sig(x, digits)
+}
+
+/// A value on screen: [`DIGITS`] significant digits, "—" when not finite.
+pub fn value(x: f64) -> String {
+    rounded(x, DIGITS)
+}
+
+/// An uncertainty on screen (a standard error): [`UNCERTAIN`] significant digits.
+pub fn uncertainty(x: f64) -> String {
+    rounded(x, UNCERTAIN)
+}
+
+/// A value being stepped by `step`: the digits needed to see one step (λ 1000.01 after a
+/// fine step from 1000, not 1000 → 1000), at least [`DIGITS`].
+pub fn stepped(x: f64, step: f64) -> String {
+    let mag = |v: f64| v.abs().log10().floor() as i32;
+    let digits = if x.is_finite() && x != 0.0 && step.is_finite() && step > 0.0 {
+        (mag(x) - mag(step) + 1).clamp(DIGITS as i32, 15) as usize
+    } else {
+        DIGITS
+    };
+    rounded(x, digits)
+}
+
+/// An interval "[7.81e4, 1.17e5]": both ends to [`UNCERTAIN`] digits in one form, exponent
+/// form for both when either needs it.
+pub fn interval(lo: f64, hi: f64) -> String {
+    let (a, b) = (rounded(lo, UNCERTAIN), rounded(hi, UNCERTAIN));
+    if a.contains('e') == b.contains('e') || !lo.is_finite() || !hi.is_finite() {
+        return format!("[{a}, {b}]");
+    }
+    let e = |x: f64| format!("{:.*e}", UNCERTAIN - 1, x);
+    format!("[{}, {}]", e(lo), e(hi))
+}
+
+/// The unit a quantity in `si` units is shown in, and the factor to it: lengths in mm,
+/// masses in g, times in ms (as the readout and the charts show them); others as they are.
+pub fn screen_unit(si: &str) -> (&str, f64) {
+    match si {
+        "m" => ("mm", 1e3),
+        "kg" => ("g", 1e3),
+        "s" => ("ms", 1e3),
+        "J" => ("mJ", 1e3),
+        other => (other, 1.0),
+    }
+}
 
 /// How far `model` is from `measured`, in percent of `measured`: "+0.1%", "-3.7%", "+209%".
 pub fn percent_diff(model: f64, measured: f64) -> String {
@@ -134,6 +209,23 @@ mod tests {
             ["a", "/very/", "long/p", "ath b"]
         );
         assert_eq!(wrap("", 4), [""]);
+    }
+
+    #[test]
+    fn one_number_format() {
+        assert_eq!(value(140.0), "140.0");
+        assert_eq!(value(54500.0), "54500");
+        assert_eq!(value(78094.0), "78090");
+        assert_eq!(value(1.17e5), "1.170e5");
+        assert_eq!(value(5e6), "5.000e6");
+        assert_eq!(value(f64::NAN), "—");
+        assert_eq!(interval(78094.0, 1.17e5), "[7.81e4, 1.17e5]");
+        assert_eq!(interval(0.25, 0.5), "[0.250, 0.500]");
+        assert_eq!(stepped(1000.01, 0.01), "1000.01");
+        assert_eq!(stepped(1000.0, 0.01), "1000.00");
+        assert_eq!(stepped(3.12, 0.1), "3.120");
+        assert_eq!(screen_unit("m"), ("mm", 1e3));
+        assert_eq!(screen_unit("N/m"), ("N/m", 1.0));
     }
 
     #[test]

@@ -5,9 +5,9 @@
 
 use crate::preset::Preset;
 use crate::solver::ImpactResponse;
-use crate::text::{sig, sig_trim};
-use crate::tui::format::percent_diff;
-use crate::tui::param::Param;
+use crate::text::sig_trim;
+use crate::tui::format::{percent_diff, stepped, value};
+use crate::tui::param::{Dir, Param};
 use crate::tui::setting::Setting;
 use crate::tui::theme::Theme;
 use crate::tui::widgets::pins::{self, Now, PinView};
@@ -104,31 +104,31 @@ fn results(preset: &Preset, r: Option<&ImpactResponse>, v0: f64) -> Vec<Row> {
     vec![
         Row {
             name: "e",
-            model: sig(r.cor, 4),
+            model: value(r.cor),
             measured: m.cor,
             model_value: r.cor,
         },
         Row {
             name: "F_m N",
-            model: sig(r.max_force, 4),
+            model: value(r.max_force),
             measured: m.max_force,
             model_value: r.max_force,
         },
         Row {
             name: "t_f ms",
-            model: t_f.map_or("none".into(), |t| sig(t, 4)),
+            model: t_f.map_or("none".into(), value),
             measured: m.contact_time.map(|t| t * 1e3),
             model_value: t_f.unwrap_or(f64::NAN),
         },
         Row {
             name: "z_m mm",
-            model: sig(r.max_indentation * 1e3, 4),
+            model: value(r.max_indentation * 1e3),
             measured: None,
             model_value: f64::NAN,
         },
         Row {
             name: "z_f mm",
-            model: sig(r.permanent_indentation * 1e3, 3),
+            model: value(r.permanent_indentation * 1e3),
             measured: None,
             model_value: f64::NAN,
         },
@@ -136,6 +136,19 @@ fn results(preset: &Preset, r: Option<&ImpactResponse>, v0: f64) -> Vec<Row> {
 }
 
 impl Readout<'_> {
+    /// λ, ζ or v0 as the readouts show it: with the digits its step needs when it is
+    /// stepped by a fixed amount (λ, v0), else [`value`]'s.
+    pub(super) fn knob(&self, p: Param) -> String {
+        let x = self.setting.get(p);
+        match p {
+            Param::Lambda | Param::V0 => {
+                let step = (p.step(x, Dir::Up, self.coarse) - x).abs();
+                stepped(x, step)
+            }
+            _ => value(x),
+        }
+    }
+
     fn param_line(&self, p: Param, text: String) -> Line<'static> {
         let marker = if self.selected == p { "▶" } else { " " };
         Line::from(vec![
@@ -192,7 +205,7 @@ impl Readout<'_> {
         let Some(e) = self.run.and_then(|r| r.energy) else {
             return Vec::new();
         };
-        let mj = |x: f64| sig_trim(e.shown(x) * 1e3, 4);
+        let mj = |x: f64| value(e.shown(x) * 1e3);
         vec![
             Line::from(vec![
                 Span::styled(" energy mJ", self.theme.title()),
@@ -227,7 +240,7 @@ impl Readout<'_> {
 
     fn parameter_lines(&self) -> Vec<Line<'static>> {
         let (theme, s) = (&self.theme, self.setting);
-        let (params, n) = (&s.params, s.params.normalized());
+        let params = &s.params;
         let step = if self.coarse {
             "  [coarse]"
         } else {
@@ -238,17 +251,20 @@ impl Readout<'_> {
                 Span::styled(" parameters", theme.title()),
                 Span::styled(step, theme.dim()),
             ]),
-            self.param_line(Param::Lambda, format!("λ   {:<9}", sig(n.lambda, 4))),
-            self.param_line(Param::Zeta, format!("ζ   {:<9}", sig(n.zeta, 4))),
-            self.param_line(Param::V0, format!("v0  {} m/s", sig_trim(params.v0, 4))),
+            self.param_line(
+                Param::Lambda,
+                format!("λ   {:<9}", self.knob(Param::Lambda)),
+            ),
+            self.param_line(Param::Zeta, format!("ζ   {:<9}", self.knob(Param::Zeta))),
+            self.param_line(Param::V0, format!("v0  {} m/s", self.knob(Param::V0))),
             Line::raw(format!(" law {}", s.law)),
-            Line::raw(format!(" K_p {} N/m", sig(params.k_p, 3))),
-            Line::raw(format!(" K_r {} N/m", sig(params.k_r, 3))),
-            Line::raw(format!(" c   {} kg/s", sig(params.damping, 4))),
+            Line::raw(format!(" K_p {} N/m", value(params.k_p))),
+            Line::raw(format!(" K_r {} N/m", value(params.k_r))),
+            Line::raw(format!(" c   {} kg/s", value(params.damping))),
             Line::raw(format!(
                 " z_p {} mm   m {} g",
-                sig_trim(params.z_p * 1e3, 3),
-                sig_trim(params.mass * 1e3, 4)
+                value(params.z_p * 1e3),
+                value(params.mass * 1e3)
             )),
         ]
     }

@@ -2,8 +2,8 @@
 //! below the charts on narrow terminals (`compact`).
 
 use super::{Readout, Row, results};
-use crate::text::{sig, sig_trim};
-use crate::tui::format::percent_diff;
+use crate::text::sig_trim;
+use crate::tui::format::{percent_diff, value};
 use crate::tui::param::Param;
 use crate::tui::widgets::pins;
 use ratatui::text::{Line, Span};
@@ -11,13 +11,11 @@ use ratatui::text::{Line, Span};
 impl Readout<'_> {
     /// λ, ζ and v0, each styled as selected or not.
     fn knobs(&self) -> [Span<'static>; 3] {
-        let s = self.setting;
-        let n = s.params.normalized();
         let p = |param: Param, text: String| Span::styled(text, self.param_style(param));
         [
-            p(Param::Lambda, format!("λ {}", sig(n.lambda, 4))),
-            p(Param::Zeta, format!("ζ {}", sig(n.zeta, 4))),
-            p(Param::V0, format!("v0 {} m/s", sig_trim(s.params.v0, 4))),
+            p(Param::Lambda, format!("λ {}", self.knob(Param::Lambda))),
+            p(Param::Zeta, format!("ζ {}", self.knob(Param::Zeta))),
+            p(Param::V0, format!("v0 {} m/s", self.knob(Param::V0))),
         ]
     }
 
@@ -34,10 +32,10 @@ impl Readout<'_> {
             ]),
             Line::raw(format!(
                 " K_p {} N/m  K_r {} N/m",
-                sig(s.params.k_p, 3),
-                sig(s.params.k_r, 3)
+                value(s.params.k_p),
+                value(s.params.k_r)
             )),
-            Line::raw(format!(" c {} kg/s", sig(s.params.damping, 3))),
+            Line::raw(format!(" c {} kg/s", value(s.params.damping))),
         ];
         let rows = results(self.preset, self.run, s.params.v0);
         if rows.len() < 5 {
@@ -78,9 +76,9 @@ impl Readout<'_> {
             ]),
             Line::raw(format!(
                 " K_p {} N/m  K_r {} N/m  c {} kg/s",
-                sig(s.params.k_p, 3),
-                sig(s.params.k_r, 3),
-                sig(s.params.damping, 3)
+                value(s.params.k_p),
+                value(s.params.k_r),
+                value(s.params.damping)
             )),
         ];
         let rows = results(self.preset, self.run, self.setting.params.v0);

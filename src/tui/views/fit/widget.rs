@@ -3,7 +3,7 @@
 //! `F` applies it — or that it is stale, the ball having changed since `f`.
 
 use crate::analysis::fit::Estimate;
-use crate::text::sig;
+use crate::tui::format::{self, screen_unit, uncertainty, value};
 use crate::tui::theme::Theme;
 use crate::tui::views::fit::state::{FitOutcome, FitPane, FitStatus, Standing};
 use ratatui::buffer::Buffer;
@@ -84,18 +84,19 @@ fn free_names(p: &FitPane) -> String {
 /// "k_r = 1.234e5 ± 2.10e3 N/m  [1.19e5, 1.27e5]": value ± standard error, 95 % interval
 /// (the title says so); an interval without finite ends is "not pinned by the data", as
 /// `bouncelab fit` says.
+/// In the units the readout shows (z_p in mm, m in g, t0 in ms: `format::screen_unit`).
 fn estimate(e: &Estimate) -> Line<'static> {
+    let (unit, k) = screen_unit(e.unit);
     let interval = if e.ci95.iter().all(|v| v.is_finite()) {
-        format!("[{}, {}]", sig(e.ci95[0], 3), sig(e.ci95[1], 3))
+        format::interval(k * e.ci95[0], k * e.ci95[1])
     } else {
         "not pinned by the data".into()
     };
     Line::raw(format!(
-        " {:<4}= {} ± {} {}  {interval}",
+        " {:<4}= {} ± {} {unit}  {interval}",
         e.name,
-        sig(e.value, 4),
-        sig(e.std_error, 3),
-        e.unit,
+        value(k * e.value),
+        uncertainty(k * e.std_error),
     ))
 }
 
@@ -107,10 +108,10 @@ fn outcome(o: &FitOutcome, standing: Standing, t: &Theme) -> Vec<Line<'static>> 
             ..e.clone()
         }));
     }
+    let (unit, k) = screen_unit(o.rms_unit);
     let mut rms = format!(
-        " residual RMS {} {} · {} points",
-        sig(o.rms_residual, 3),
-        o.rms_unit,
+        " residual RMS {} {unit} · {} points",
+        uncertainty(k * o.rms_residual),
         o.points
     );
     if !o.converged {
@@ -133,4 +134,37 @@ fn outcome(o: &FitOutcome, standing: Standing, t: &Theme) -> Vec<Line<'static>> 
     };
     lines.push(Line::styled(keys, style));
     lines
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Issue 29 item 6: the fit pane wrote "z_p = 0.001572 ± 0.000122 m" where the readout
+    /// reads mm, and "[78094, 1.17e5]" (two forms in one interval). One format, one unit.
+    #[test]
+    fn estimates_read_in_the_readouts_units_and_one_form() {
+        let z_p = Estimate {
+            name: "z_p",
+            unit: "m",
+            value: 0.001572,
+            std_error: 0.000122,
+            ci95: [0.00133, 0.00181],
+        };
+        assert_eq!(
+            estimate(&z_p).to_string(),
+            " z_p = 1.572 ± 0.122 mm  [1.33, 1.81]"
+        );
+        let k_r = Estimate {
+            name: "k_r",
+            unit: "N/m",
+            value: 96000.0,
+            std_error: 9700.0,
+            ci95: [78094.0, 1.17e5],
+        };
+        assert_eq!(
+            estimate(&k_r).to_string(),
+            " k_r = 96000 ± 9700 N/m  [7.81e4, 1.17e5]"
+        );
+    }
 }
