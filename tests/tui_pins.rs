@@ -213,3 +213,24 @@ fn pin_is_an_action_of_its_own() {
     a.update(Action::Unpin);
     assert!(a.pins().is_empty());
 }
+
+/// Issue 29 item 11: at 80 × 24 with two pins the readout beside the charts had no room for
+/// the pins' Δe line the docs promise. It comes before the indentations, at 80 × 24 and up
+/// (60 × 20 keeps its four lines of results).
+#[test]
+fn pins_at_80x24_show_their_delta_e() {
+    let mut a = app(0);
+    for action in [
+        Action::Pin,
+        Action::LoadPreset(1),
+        Action::Pin,
+        Action::LoadPreset(2),
+    ] {
+        a.update(action);
+    }
+    for (w, h) in [(80, 24), (100, 30), (120, 40), (200, 60)] {
+        let s = screen_text(&draw(&a, w, h)).join("\n");
+        let shown = s.contains("pin Δe: p1") || s.contains("pin − now");
+        assert!(shown, "{w}×{h}: no pin differences\n{s}");
+    }
+}

@@ -556,3 +556,18 @@ fn one_number_format_at_every_size() {
         );
     }
 }
+
+/// Issue 29 item 4: a marker's glyph wrote over a pin's tag ("⢀●1⠒" for "p1" beside the
+/// open loop's ●). Tags keep off the markers' cells, at every size.
+#[test]
+fn tags_keep_off_the_markers() {
+    for (w, h) in [(60, 20), (80, 24), (100, 30), (120, 40), (200, 60)] {
+        let mut a = app(0);
+        a.update(Action::Resize(w, h));
+        press(&mut a, &chars("pvpv"));
+        let s = screen_text(&draw(&a, w, h)).join("\n");
+        for cut in ["●1", "●2", "▲1", "▲2", "1●", "2●"] {
+            assert!(!s.contains(cut), "{w}×{h}: {cut:?}\n{s}");
+        }
+    }
+}

@@ -265,6 +265,16 @@ impl<'a> Plot<'a> {
         buf: &mut Buffer,
     ) -> (Vec<(u16, u16)>, Vec<Line<'static>>) {
         let cell = |p: Option<(f64, f64)>| Some((l.col(p?.0)?, l.row(p?.1)?));
+        // the markers' own cells: a tag keeps off them, as a marker's glyph stays on its
+        // point (tests/tui_render.rs: `tags_keep_off_the_markers`: "●1" for "p1")
+        let points: Vec<(u16, u16)> = self
+            .figure
+            .series
+            .iter()
+            .filter(|s| matches!(s.style, Stroke::Markers(_)))
+            .flat_map(|s| self.drawn(s))
+            .filter_map(cell)
+            .collect();
         let mut tagged: Vec<(u16, u16, u16)> = Vec::new();
         for s in &self.figure.series {
             let (Stroke::Solid | Stroke::Dashed | Stroke::Dotted | Stroke::LongDashed, Some(tag)) =
@@ -286,6 +296,9 @@ impl<'a> Plot<'a> {
                 !tagged
                     .iter()
                     .any(|&(ty, a, b)| ty == y && x < b && a < x + w)
+                    && !points
+                        .iter()
+                        .any(|&(px, py)| py == y && (x..x + w).contains(&px))
             };
             let Some(y) = [0i32, -1, 1, -2, 2]
                 .into_iter()

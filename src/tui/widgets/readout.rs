@@ -231,7 +231,7 @@ impl Readout<'_> {
         ]
     }
 
-    fn now(&self) -> Now<'_> {
+    pub(super) fn now(&self) -> Now<'_> {
         Now {
             setting: self.setting,
             run: self.run,
