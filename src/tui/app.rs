@@ -83,6 +83,9 @@ pub struct App {
     pub(in crate::tui) map: crate::tui::views::map::state::MapView,
     /// The crosshair (`x`), when it is on.
     pub(in crate::tui) crosshair: Option<super::crosshair::Crosshair>,
+    /// `y`'s copy: whether the terminal takes OSC 52, and the last line shown (printed on the
+    /// main screen when the explorer ends: src/tui/app/command.rs).
+    pub(in crate::tui) copy: command::CopyState,
 }
 
 impl App {
@@ -127,6 +130,7 @@ impl App {
             size: None,
             map: Default::default(),
             crosshair: None,
+            copy: Default::default(),
         };
         app.refresh();
         app

@@ -23,7 +23,7 @@ pub const KEYS: [(&str, &str); 57] = [
     ("e", "export this view (SVG + CSV files)"),
     ("s", "save as a user preset (asks a name)"),
     ("S", "save the session (asks a file)"),
-    ("y", "show the bouncelab run command line"),
+    ("y", "show the command line that reopens this"),
     (
         "Tab / Shift+Tab",
         "switch view (impact, sweeps, models, map)",

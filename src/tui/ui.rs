@@ -249,7 +249,12 @@ fn render_overlay(app: &App, theme: Theme, area: Rect, buf: &mut Buffer) {
         }
         .render(area, buf),
         Overlay::Confirm(confirm) => ConfirmDialog { confirm, theme }.render(area, buf),
-        Overlay::Command(line) => CommandBox { line, theme }.render(area, buf),
+        Overlay::Command(line) => CommandBox {
+            line,
+            copied: app.osc52(),
+            theme,
+        }
+        .render(area, buf),
         Overlay::Quit(lost) => {
             crate::tui::widgets::quit::QuitDialog { lost, theme }.render(area, buf)
         }
