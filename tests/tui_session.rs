@@ -139,7 +139,7 @@ fn the_fit_and_the_map_read_back() {
     };
     a.update(Action::FitReady(
         r.id,
-        bouncelab::tui::views::fit::state::run(&r).into(),
+        bouncelab::tui::views::fit::state::run(r),
     ));
     // the map: contact time, a target, the cursor two cells right of the window's centre
     press(&mut a, &[KeyCode::Tab, KeyCode::Tab, KeyCode::Tab]);
@@ -177,7 +177,8 @@ fn the_fit_and_the_map_read_back() {
     };
     assert_eq!(cell(&b), cell(&a));
     // the same screen: map, cursor, targets
-    for (w, h) in [(120, 40)] {
-        assert_eq!(screen_text(&draw(&b, w, h)), screen_text(&draw(&a, w, h)));
-    }
+    assert_eq!(
+        screen_text(&draw(&b, 120, 40)),
+        screen_text(&draw(&a, 120, 40))
+    );
 }
