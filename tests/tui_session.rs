@@ -139,7 +139,7 @@ fn the_fit_and_the_map_read_back() {
     };
     a.update(Action::FitReady(
         r.id,
-        bouncelab::tui::views::fit::state::run(r),
+        bouncelab::tui::views::fit::state::run(r).into(),
     ));
     // the map: contact time, a target, the cursor two cells right of the window's centre
     press(&mut a, &[KeyCode::Tab, KeyCode::Tab, KeyCode::Tab]);

@@ -140,11 +140,9 @@ pub enum Action {
     ClearMeasured,
     /// `f`: fit the current ball to the measured data on the fit worker.
     Fit,
-    /// A fit finished (from the fit worker): the id of its request and the outcome.
-    FitReady(
-        u64,
-        Result<crate::tui::views::fit::state::FitOutcome, String>,
-    ),
+    /// News of a fit from the fit worker: the id of its request and its progress (model runs
+    /// so far) or its outcome.
+    FitReady(u64, crate::tui::views::fit::state::FitNews),
     /// `F`: apply the finished fit to the ball, as one undoable change.
     ApplyFit,
     /// `x`: put the crosshair on the view's first chart; with it on, on the next chart.

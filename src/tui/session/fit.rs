@@ -130,6 +130,7 @@ impl Fit {
             free,
             status,
             armed: false,
+            progress: None,
         })
     }
 }
