@@ -5,6 +5,7 @@
 //! overwrite question) are handled in `dialogs`, the COR-vs-speed sweeps' bookkeeping in
 //! `sweeps`, and what the charts are drawn from in `scene`.
 
+mod charts;
 mod command;
 mod crosshair;
 mod dialogs;
@@ -86,6 +87,8 @@ pub struct App {
     /// `y`'s copy: whether the terminal takes OSC 52, and the last line shown (printed on the
     /// main screen when the explorer ends: src/tui/app/command.rs).
     pub(in crate::tui) copy: command::CopyState,
+    /// Each chart's normalize toggle and zoom (`N`, `+`, `-`, `0`: src/tui/chartview.rs).
+    pub(in crate::tui) charts: super::chartview::ChartViews,
 }
 
 impl App {
@@ -131,6 +134,7 @@ impl App {
             map: Default::default(),
             crosshair: None,
             copy: Default::default(),
+            charts: Default::default(),
         };
         app.refresh();
         app
@@ -247,6 +251,7 @@ impl App {
             | Action::MapTargets
             | Action::MapPass { .. } => self.map_action(action),
             Action::ShowCommand => return self.show_command(),
+            Action::Normalize | Action::Zoom(_) => self.chart_view(action),
             _ => self.edit(action),
         }
         Vec::new()

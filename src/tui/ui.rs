@@ -325,6 +325,7 @@ impl Widget for &App {
         let cross = self.crosshair();
         for (chart, rect) in &s.charts {
             let mut fig = explorer::figure(*chart, &scene);
+            super::chartview::apply(self.chart_views().get(*chart), *chart, &mut fig);
             if let Some(c) = cross.filter(|c| self.view().charts().get(c.chart) == Some(chart)) {
                 super::crosshair::draw_on(c, &mut fig);
             }

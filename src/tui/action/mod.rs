@@ -145,6 +145,10 @@ pub enum Action {
     FitReady(u64, crate::tui::views::fit::state::FitNews),
     /// `F`: apply the finished fit to the ball, as one undoable change.
     ApplyFit,
+    /// `N`: normalize the chart in focus (the crosshair's, else the view's first), or back.
+    Normalize,
+    /// `+` (1), `-` (-1), `0` (0: back to the whole data): zoom the chart in focus.
+    Zoom(i8),
     /// `x`: put the crosshair on the view's first chart; with it on, on the next chart.
     Crosshair,
     /// Tab with the crosshair on: the next chart (past the last: off).
