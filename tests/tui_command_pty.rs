@@ -23,7 +23,10 @@ fn the_last_y_line_is_printed_on_the_main_screen_at_exit() {
     let (status, after, out) = x.finish();
     assert!(status.success(), "{status:?}\n{}", out.escape_debug());
     assert_restored(&before, &after, &out);
-    assert!(!out.contains("\x1b]52;"), "no OSC 52 on an unknown terminal");
+    assert!(
+        !out.contains("\x1b]52;"),
+        "no OSC 52 on an unknown terminal"
+    );
     let left = out.rfind("\x1b[?1049l").expect("the alternate screen left");
     let tail = &out[left..];
     assert!(
