@@ -100,3 +100,37 @@ fn draw(b: Bencher) {
     b.with_inputs(|| Buffer::empty(AREA))
         .bench_local_refs(|buf| app.render(AREA, buf));
 }
+
+/// Issue 29 item 13's worst case: the Hertz law at λ 1000, ζ 0.001, v0 80 m/s on the
+/// superball, a 200 × 60 screen's grid. `first_pass_hertz_worst`: the first pass the worker
+/// runs (held to `FIRST_PASS_WORK`: the coarse full picture); `old_first_pass_hertz_worst`:
+/// the first pass of `Map::new` alone (before issue 29, about 80 cells) — the baseline in the
+/// same run.
+fn hertz_worst() -> bouncelab::map::Map {
+    use bouncelab::tui::views::map::state::{Window, grid};
+    let p = Preset::embedded()[0]
+        .params()
+        .with_lambda_zeta(1000.0, 0.001);
+    let p = bouncelab::ImpactParams { v0: 80.0, ..p };
+    let (rows, cols) = grid(Some((AREA.width, AREA.height)), true, 0).unwrap();
+    let (l, z) = Window::around(1000.0, 0.001).axes(rows, cols).unwrap();
+    let spec = bouncelab::map::MapSpec::dimensional(p, bouncelab::ContactLaw::Hertz, l, z)
+        .unwrap()
+        .with_fast(true);
+    bouncelab::map::Map::new(spec)
+}
+
+#[divan::bench(sample_count = 20)]
+fn first_pass_hertz_worst(b: Bencher) {
+    use bouncelab::tui::views::map::state::first_pass_cells;
+    let map = hertz_worst().first_cells_at_most(first_pass_cells(bouncelab::ContactLaw::Hertz));
+    b.with_inputs(|| map.clone())
+        .bench_local_refs(|m| m.refine());
+}
+
+#[divan::bench(sample_count = 20)]
+fn old_first_pass_hertz_worst(b: Bencher) {
+    let map = hertz_worst();
+    b.with_inputs(|| map.clone())
+        .bench_local_refs(|m| m.refine());
+}

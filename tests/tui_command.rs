@@ -1,5 +1,5 @@
-//! "Copy as command" (`y`) and the energy budget: the `bouncelab run …` line the explorer
-//! shows runs, through the real command line, to the COR and energy budget on screen; the same
+//! "Copy as command" (`y`) and the energy budget: the explorer's line `y` shows, as `run`'s
+//! options, runs, through the real command line, to the COR and energy budget on screen; the same
 //! line and the parameters head every CSV an export writes.
 
 mod common;
@@ -35,8 +35,11 @@ fn shown(app: &mut App) -> String {
 /// Run `line` (plain words, no quoting needed) through the binary, as JSON.
 fn run_json(line: &str, config_home: &Path) -> Value {
     let words: Vec<&str> = line.split(' ').collect();
-    assert_eq!(&words[..2], ["bouncelab", "run"]);
-    let mut args = words[1..].to_vec();
+    // `y` shows the explorer's line: `run` with the same options runs the same ball
+    assert_eq!(words[0], "bouncelab");
+    assert!(words[1].starts_with("--"), "the explorer's line: {line}");
+    let mut args = vec!["run"];
+    args.extend(&words[1..]);
     args.extend(["--format", "json"]);
     let o = common::bl_in(config_home, &args);
     assert_eq!(o.code, 0, "{line}: {}", o.stderr);
@@ -88,7 +91,7 @@ fn the_preset_line_runs_to_the_screen() {
     let home = tempfile::tempdir().unwrap();
     let mut a = app(1);
     let line = shown(&mut a);
-    assert_eq!(line, "bouncelab run --preset golf --v0 1.47");
+    assert_eq!(line, "bouncelab --preset golf --v0 1.47");
     assert_same_run(&a, &run_json(&line, home.path()));
 }
 
@@ -150,13 +153,16 @@ fn a_start_preset_from_a_file_is_named_by_its_file() {
     let quoted = format!("--config '{}'", file.display());
     assert!(line.contains(&quoted), "{line}");
     // the shell's reading of the quoted path
-    let args: Vec<String> = line
-        .replace(&quoted, "--config FILE")
-        .split(' ')
-        .skip(1)
-        .map(|w| match w {
+    let args: Vec<String> = std::iter::once("run".to_string())
+        .chain(
+            line.replace(&quoted, "--config FILE")
+                .split(' ')
+                .skip(1)
+                .map(String::from),
+        )
+        .map(|w| match w.as_str() {
             "FILE" => file.display().to_string(),
-            w => w.into(),
+            _ => w,
         })
         .chain(["--format".into(), "json".into()])
         .collect();
@@ -166,7 +172,7 @@ fn a_start_preset_from_a_file_is_named_by_its_file() {
     assert_same_run(&a, &serde_json::from_str(&o.stdout).unwrap());
     // another ball loaded is named by its name
     type_keys(&mut a, "2");
-    assert!(shown(&mut a).starts_with("bouncelab run --preset golf "));
+    assert!(shown(&mut a).starts_with("bouncelab --preset golf "));
 }
 
 #[test]
@@ -192,7 +198,11 @@ fn every_export_csv_starts_with_the_line_and_the_parameters() {
     for f in csvs {
         let text = fs::read_to_string(f).unwrap();
         let head: Vec<&str> = text.lines().take_while(|l| l.starts_with('#')).collect();
-        assert_eq!(head[0], format!("# {line}"));
+        // the `run` line with `y`'s options: it reproduces the data
+        assert_eq!(
+            head[0],
+            format!("# {}", line.replacen("bouncelab ", "bouncelab run ", 1))
+        );
         assert_eq!(head[1], "# ball superball (adopted parameters), linear law");
         assert!(head[2].starts_with("# lambda ") && head[2].contains(", k_r "));
         assert_eq!(head[3], "# pinned 1: bouncelab run --preset golf --v0 1.57");
@@ -252,10 +262,7 @@ fn a_typed_mass_runs_to_the_screen() {
     let on_screen = a.run().expect("a run").cor;
     assert!((on_screen - 0.7395).abs() < 5e-5, "{on_screen}");
     let line = shown(&mut a);
-    assert_eq!(
-        line,
-        "bouncelab run --preset superball --mass 0.05 --v0 3.12"
-    );
+    assert_eq!(line, "bouncelab --preset superball --mass 0.05 --v0 3.12");
     assert_same_run(&a, &run_json(&line, home.path()));
 }
 

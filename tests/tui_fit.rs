@@ -64,7 +64,7 @@ fn ask_fit(app: &mut App) -> FitRequest {
 
 /// The worker's part: run the fit, hand its answer back.
 fn answer(app: &mut App, r: &FitRequest) {
-    app.update(Action::FitReady(r.id, measured::run(r)));
+    app.update(Action::FitReady(r.id, measured::run(r).into()));
 }
 
 fn screen(app: &App, w: u16, h: u16) -> Terminal<TestBackend> {

@@ -1,7 +1,8 @@
 //! The explorer and the command line (issue 29 item 2): `bouncelab --preset golf --law hertz
 //! --v0 3 --lambda 0.5 --mass 0.05 …` — every option `run` takes for a preset ball — opens the
 //! explorer in the state `bouncelab run` with those options runs (its COR, F_m and t_f to
-//! 1e-12), and the line `y` then shows, fed back to the parser, gives the same state.
+//! 1e-12), and the explorer's line `y` then shows (no `run`), fed back to the parser as it is,
+//! gives the same state.
 
 mod common;
 mod tui_common;
@@ -61,9 +62,10 @@ fn the_line_y_shows_gives_the_same_state_back() {
             panic!("no command box")
         };
         assert!(!shown.contains('\n'), "{shown}");
-        // the `run` line; without `run`, the explorer's
-        let mut back = words(&shown);
-        assert_eq!(back.remove(1), "run", "{shown}");
+        // the explorer's line, not `run`'s: its words are the explorer's arguments as they are
+        let back = words(&shown);
+        assert_eq!(back[0], "bouncelab", "{shown}");
+        assert!(back[1].starts_with("--"), "no subcommand: {shown}");
         let again = app_of(&back);
         let (a, b) = (app.setting(), again.setting());
         assert_eq!(
@@ -102,11 +104,23 @@ fn bad_state_options_are_one_line_and_exit_2() {
 }
 
 /// `y` shows the line on one row wherever the terminal is wider than it (a mouse selects it
-/// whole) and asks the loop to copy it with OSC 52: ESC ] 52 ; c ; base64(line) BEL.
+/// whole) and, where the terminal takes OSC 52, asks the loop to copy it: ESC ] 52 ; c ;
+/// base64(line) BEL; where it does not, nothing is sent and the box says to select it. The
+/// line is kept to be printed on the main screen when the explorer ends.
 #[test]
-fn y_shows_one_unwrapped_row_and_copies_it_with_osc_52() {
+fn y_shows_one_unwrapped_row_and_copies_it_with_osc_52_where_allowed() {
     let line = LINES[2];
-    let mut app = app_of(&words(&format!("bouncelab {line}")));
+    let mut plain = app_of(&words(&format!("bouncelab {line}")));
+    assert_eq!(plain.last_command(), None);
+    let effects = plain.update(bouncelab::tui::action::Action::ShowCommand);
+    assert_eq!(
+        effects,
+        vec![],
+        "no OSC 52 where the terminal is not known to take it"
+    );
+    let screen = tui_common::screen_text(&tui_common::draw(&plain, 200, 60)).join("\n");
+    assert!(screen.contains("select it with the mouse"), "{screen}");
+    let mut app = app_of(&words(&format!("bouncelab {line}"))).with_osc52(true);
     let effects = app.update(bouncelab::tui::action::Action::ShowCommand);
     let Overlay::Command(shown) = app.overlay().clone() else {
         panic!("no command box")
@@ -115,6 +129,7 @@ fn y_shows_one_unwrapped_row_and_copies_it_with_osc_52() {
         effects,
         vec![bouncelab::tui::app::Effect::Copy(shown.clone())]
     );
+    assert_eq!(app.last_command(), Some(shown.as_str()));
     assert!(shown.len() > 76, "longer than the old box: {shown}");
     // just wide enough, and wide
     let fit = shown.chars().count() as u16 + 2;
@@ -124,4 +139,30 @@ fn y_shows_one_unwrapped_row_and_copies_it_with_osc_52() {
     }
     let osc = bouncelab::tui::command::osc52("bouncelab run --v0 3");
     assert_eq!(osc, "\x1b]52;c;Ym91bmNlbGFiIHJ1biAtLXYwIDM=\x07");
+}
+
+/// The `y` box at the five sizes, in colour (OSC 52 on: "copied") and without (off: "select
+/// it"): the line on one row where the screen is wider than it, wrapped with "printed whole
+/// when you quit" where it is not (60×20, 80×24).
+#[test]
+fn the_command_box_at_every_size() {
+    let line = LINES[2];
+    for (color, osc52) in [(true, true), (false, false)] {
+        let cli = Cli::try_parse_from(words(&format!("bouncelab {line}"))).unwrap();
+        let mut app = cli
+            .explore
+            .app(&cli.choice, color)
+            .unwrap()
+            .0
+            .with_osc52(osc52);
+        app.update(bouncelab::tui::action::Action::ShowCommand);
+        let tag = if color { "color" } else { "no_color" };
+        for (w, h) in [(60, 20), (80, 24), (100, 30), (120, 40), (200, 60)] {
+            let t = tui_common::draw(&app, w, h);
+            let text = tui_common::screen_text(&t).join("\n");
+            let wide = w as usize > app.last_command().unwrap().chars().count() + 2;
+            assert_eq!(text.contains("wider than the"), !wide, "{w}×{h}: {text}");
+            insta::assert_snapshot!(format!("y_box_{tag}_{w}x{h}"), t.backend());
+        }
+    }
 }

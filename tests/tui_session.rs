@@ -119,3 +119,66 @@ fn a_bad_session_is_one_line_with_file_line_and_column_exit_2() {
     let o = common::bl(&["--session", good.to_str().unwrap(), "--law", "hertz"]);
     assert_eq!(o.code, 2, "{}", o.stderr);
 }
+
+/// Issue 29 item 3: the session also keeps the fit pane's fit (the fitted ball, estimates,
+/// residual, verdict: the pane reads the same, `F` applies it) and the map view's quantity,
+/// targets and window, so the map's cursor comes back on the same cell of the same map.
+#[test]
+fn the_fit_and_the_map_read_back() {
+    let dir = tempfile::tempdir().unwrap();
+    let data = dir.path().join("cannon.csv");
+    std::fs::write(&data, "v0,cor\n10,0.72\n20,0.66\n30,0.62\n40,0.6\n").unwrap();
+    let mut a = golf();
+    a.update(Action::MeasuredLoaded {
+        path: data.clone(),
+        data: bouncelab::tui::views::fit::state::load(&data).unwrap(),
+    });
+    let asked = a.update(Action::Fit);
+    let [Effect::Fit(r)] = asked.as_slice() else {
+        panic!("no fit asked")
+    };
+    a.update(Action::FitReady(
+        r.id,
+        bouncelab::tui::views::fit::state::run(r).into(),
+    ));
+    // the map: contact time, a target, the cursor two cells right of the window's centre
+    press(&mut a, &[KeyCode::Tab, KeyCode::Tab, KeyCode::Tab]);
+    press(&mut a, &chars("nnt"));
+    type_keys(&mut a, "cor>=0.5");
+    press(&mut a, &[KeyCode::Enter]);
+    assert!(a.map_view().targets.is_some());
+    press(&mut a, &[KeyCode::Right, KeyCode::Right, KeyCode::Up]);
+    let window = a.map_view().window;
+    assert!(window.is_some());
+    let text = a.session().to_toml();
+    assert!(text.contains("[fit]") && text.contains("[map]"), "{text}");
+    let read = Session::parse(Path::new("s.toml"), &text).unwrap();
+    assert_eq!(read.to_toml(), text);
+    let b = golf().with_session(&read).unwrap();
+    let pane = |x: &App| format!("{:?}", x.fit_pane().map(|p| (&p.label, &p.status, p.law)));
+    assert_eq!(pane(&b), pane(&a));
+    assert!(matches!(
+        b.fit_pane().unwrap().status,
+        bouncelab::tui::views::fit::state::FitStatus::Done(Ok(_))
+    ));
+    assert_eq!(b.fit_standing(), a.fit_standing());
+    let (ma, mb) = (a.map_view(), b.map_view());
+    assert_eq!(
+        (mb.quantity, &mb.targets, mb.window),
+        (ma.quantity, &ma.targets, window)
+    );
+    let cell = |x: &App| {
+        let s = x.setting();
+        let (l, z) = (
+            s.get(bouncelab::tui::param::Param::Lambda),
+            s.get(bouncelab::tui::param::Param::Zeta),
+        );
+        bouncelab::tui::views::map::state::cell_of(x.map_view().map().unwrap(), l, z)
+    };
+    assert_eq!(cell(&b), cell(&a));
+    // the same screen: map, cursor, targets
+    assert_eq!(
+        screen_text(&draw(&b, 120, 40)),
+        screen_text(&draw(&a, 120, 40))
+    );
+}

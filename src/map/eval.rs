@@ -103,6 +103,35 @@ impl Map {
         }
     }
 
+    /// This map (none of it evaluated yet) with a first pass of at most `cells` cells — never
+    /// less than one, never finer than [`Map::new`]'s: a coarse full picture for a costly
+    /// law, fast, before the finer passes (the explorer's map view under the Hertz law,
+    /// src/tui/views/map/update.rs).
+    pub fn first_cells_at_most(mut self, cells: usize) -> Map {
+        let (nl, nz) = (self.lambdas.len(), self.zetas.len());
+        let lattice = |s: usize| nl.div_ceil(s) * nz.div_ceil(s);
+        if self.done_stride == 0 && self.cells.iter().all(Option::is_none) {
+            while lattice(self.stride) > cells.max(1) && self.stride < nl.max(nz) {
+                self.stride *= 2;
+            }
+        }
+        self
+    }
+
+    /// The cells the next pass evaluates (its lattice's cells not yet evaluated); 0 once
+    /// every cell is.
+    pub fn next_pass_cells(&self) -> usize {
+        let Some(s) = self.next_stride() else {
+            return 0;
+        };
+        let nz = self.zetas.len();
+        (0..self.cells.len())
+            .filter(|&k| {
+                (k / nz).is_multiple_of(s) && (k % nz).is_multiple_of(s) && self.cells[k].is_none()
+            })
+            .count()
+    }
+
     /// The stride of the next pass; `None` once every cell is evaluated.
     pub fn next_stride(&self) -> Option<usize> {
         (self.stride > 0).then_some(self.stride)
@@ -184,6 +213,27 @@ mod tests {
         assert!(m.is_complete() && m.cells().iter().all(Option::is_some));
         let whole = compute(spec(33));
         assert_eq!(m.cells(), whole.cells());
+    }
+
+    /// A first pass held to a number of cells is coarser, still covers the whole map, and
+    /// the passes after it refine to the same map.
+    #[test]
+    fn a_first_pass_held_to_few_cells_still_covers_the_map() {
+        let m = Map::new(spec(33)).first_cells_at_most(10);
+        assert!(m.next_pass_cells() <= 10, "{}", m.next_pass_cells());
+        assert!(Map::new(spec(33)).next_pass_cells() > 10);
+        let mut m = m;
+        m.refine();
+        assert!((0..33).all(|i| (0..33).all(|j| m.nearest(i, j).is_some())));
+        while m.refine().is_some() {}
+        assert_eq!(m.cells(), compute(spec(33)).cells());
+        // never finer than Map::new's
+        assert_eq!(
+            Map::new(spec(33))
+                .first_cells_at_most(1_000_000)
+                .next_stride(),
+            Map::new(spec(33)).next_stride()
+        );
     }
 
     /// A set flag stops a pass; the next call finishes it.

@@ -5,6 +5,7 @@
 //! overwrite question) are handled in `dialogs`, the COR-vs-speed sweeps' bookkeeping in
 //! `sweeps`, and what the charts are drawn from in `scene`.
 
+mod charts;
 mod command;
 mod crosshair;
 mod dialogs;
@@ -83,6 +84,11 @@ pub struct App {
     pub(in crate::tui) map: crate::tui::views::map::state::MapView,
     /// The crosshair (`x`), when it is on.
     pub(in crate::tui) crosshair: Option<super::crosshair::Crosshair>,
+    /// `y`'s copy: whether the terminal takes OSC 52, and the last line shown (printed on the
+    /// main screen when the explorer ends: src/tui/app/command.rs).
+    pub(in crate::tui) copy: command::CopyState,
+    /// Each chart's normalize toggle and zoom (`N`, `+`, `-`, `0`: src/tui/chartview.rs).
+    pub(in crate::tui) charts: super::chartview::ChartViews,
 }
 
 impl App {
@@ -127,6 +133,8 @@ impl App {
             size: None,
             map: Default::default(),
             crosshair: None,
+            copy: Default::default(),
+            charts: Default::default(),
         };
         app.refresh();
         app
@@ -243,6 +251,7 @@ impl App {
             | Action::MapTargets
             | Action::MapPass { .. } => self.map_action(action),
             Action::ShowCommand => return self.show_command(),
+            Action::Normalize | Action::Zoom(_) => self.chart_view(action),
             _ => self.edit(action),
         }
         Vec::new()

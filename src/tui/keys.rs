@@ -2,7 +2,7 @@
 //! `update` needs to stop the help's scrolling at its end.
 
 /// (keys, what they do); a row without text is a section heading.
-pub const KEYS: [(&str, &str); 57] = [
+pub const KEYS: [(&str, &str); 59] = [
     ("l / L", "λ up / down (±0.01, coarse ±0.1)"),
     ("z / Z", "ζ up / down (×1.1, coarse ×2)"),
     ("v / V", "v0 up / down (±0.1, coarse ±1 m/s)"),
@@ -16,6 +16,8 @@ pub const KEYS: [(&str, &str); 57] = [
     ("g", "pick a preset (embedded and user)"),
     ("m", "edit m, R, K_p, K_r, c, z_p, E, λ, ζ, v0"),
     ("x", "crosshair: read values off a chart"),
+    ("N", "normalize a chart: F/F_m vs t/t_f"),
+    ("+ / - / 0", "zoom a chart in / out / whole data"),
     ("c", "cycle the contact law"),
     ("r", "reset to the preset"),
     ("p / P", "pin this run (≤ 8) / clear pins"),
@@ -23,7 +25,7 @@ pub const KEYS: [(&str, &str); 57] = [
     ("e", "export this view (SVG + CSV files)"),
     ("s", "save as a user preset (asks a name)"),
     ("S", "save the session (asks a file)"),
-    ("y", "show the bouncelab run command line"),
+    ("y", "show the command line that reopens this"),
     (
         "Tab / Shift+Tab",
         "switch view (impact, sweeps, models, map)",

@@ -21,6 +21,7 @@
 
 pub mod action;
 pub mod app;
+pub mod chartview;
 pub mod command;
 pub mod compute;
 pub mod crosshair;
@@ -106,6 +107,7 @@ pub fn run_app(
     remove_stale_temporaries();
     let mut app = app
         .with_background_sweeps()
+        .with_osc52(command::osc52_here())
         .with_motion(motion_wanted())
         .with_color_depth(palette::detect(
             std::env::var("COLORTERM").ok().as_deref(),
@@ -131,7 +133,18 @@ pub fn run_app(
         .map_err(anyhow::Error::from)
         .and_then(|_guard| event::run(&mut terminal, &mut app));
     ratatui::restore();
+    print_last_command(&app);
     result
+}
+
+/// The last line `y` showed, on the main screen once the explorer has left it: one line the
+/// scrollback keeps whole, however narrow the explorer's box was (docs/explorer.md, `y`).
+fn print_last_command(app: &app::App) {
+    if let Some(line) = app.last_command() {
+        use std::io::Write;
+        // a failure to print loses only this reminder: the line was on screen
+        let _ = writeln!(std::io::stdout(), "{line}");
+    }
 }
 
 /// Raw mode off, the main screen back, the cursor shown.

@@ -1,8 +1,12 @@
 //! Sessions (issue 29 item 3): `S` writes the explorer's state to a TOML file, `bouncelab
 //! --session FILE` opens the explorer in it again — the ball (its preset and every parameter,
-//! SI), the law, v0, the target, the pins, the measured file (by path), the view and the
-//! selected parameter (docs/explorer.md, "Sessions"). Written atomically (src/atomic.rs); a
+//! SI), the law, v0, the target, the pins, the measured file (by path), the view, the
+//! selected parameter, the map's quantity, targets and window (`map`) and the fit pane's fit
+//! (`fit`) (docs/explorer.md, "Sessions"). Written atomically (src/atomic.rs); a
 //! file that does not read is one line `FILE:LINE:COLUMN: why`, exit 2.
+
+pub mod fit;
+pub mod map;
 
 use super::app::App;
 use super::param::Param;
@@ -30,6 +34,12 @@ pub struct Session {
     pub measured: Option<PathBuf>,
     /// The current setting.
     pub ball: Ball,
+    /// The map view's quantity, targets and window (absent: the defaults).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub map: Option<map::MapState>,
+    /// The fit pane's finished fit (absent: none, or one still running).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub fit: Option<fit::Fit>,
     /// The pinned settings, oldest first.
     #[serde(default)]
     pub pins: Vec<Ball>,
@@ -89,6 +99,8 @@ impl App {
             selected: param_name(self.selected).into(),
             measured: self.fit.loaded.as_ref().map(|l| l.path.clone()),
             ball: ball(&self.setting),
+            map: Some(map::MapState::of(&self.map)),
+            fit: self.fit.pane.as_ref().and_then(fit::Fit::of),
             pins: self.pins.iter().map(|g| ball(&g.setting)).collect(),
         }
     }
@@ -117,6 +129,13 @@ impl App {
             .into_iter()
             .find(|&p| param_name(p) == session.selected)
             .ok_or_else(|| format!("selected: unknown parameter '{}'", session.selected))?;
+        if let Some(m) = &session.map {
+            m.restore(&mut self.map)?;
+        }
+        if let Some(f) = &session.fit {
+            self.fit.id += 1;
+            self.fit.pane = Some(f.pane(self.fit.id)?);
+        }
         self.undo.clear();
         self.message = None;
         self.refresh();

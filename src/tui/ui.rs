@@ -249,7 +249,12 @@ fn render_overlay(app: &App, theme: Theme, area: Rect, buf: &mut Buffer) {
         }
         .render(area, buf),
         Overlay::Confirm(confirm) => ConfirmDialog { confirm, theme }.render(area, buf),
-        Overlay::Command(line) => CommandBox { line, theme }.render(area, buf),
+        Overlay::Command(line) => CommandBox {
+            line,
+            copied: app.osc52(),
+            theme,
+        }
+        .render(area, buf),
         Overlay::Quit(lost) => {
             crate::tui::widgets::quit::QuitDialog { lost, theme }.render(area, buf)
         }
@@ -320,6 +325,7 @@ impl Widget for &App {
         let cross = self.crosshair();
         for (chart, rect) in &s.charts {
             let mut fig = explorer::figure(*chart, &scene);
+            super::chartview::apply(self.chart_views().get(*chart), *chart, &mut fig);
             if let Some(c) = cross.filter(|c| self.view().charts().get(c.chart) == Some(chart)) {
                 super::crosshair::draw_on(c, &mut fig);
             }

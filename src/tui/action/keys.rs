@@ -168,6 +168,10 @@ fn normal(key: KeyEvent) -> Option<Action> {
         KeyCode::Char('O') => Some(Action::ClearMeasured),
         KeyCode::Char('f') => Some(Action::Fit),
         KeyCode::Char('F') => Some(Action::ApplyFit),
+        KeyCode::Char('N') => Some(Action::Normalize),
+        KeyCode::Char('+') => Some(Action::Zoom(1)),
+        KeyCode::Char('-') => Some(Action::Zoom(-1)),
+        KeyCode::Char('0') => Some(Action::Zoom(0)),
         _ => None,
     }
 }

@@ -140,13 +140,15 @@ pub enum Action {
     ClearMeasured,
     /// `f`: fit the current ball to the measured data on the fit worker.
     Fit,
-    /// A fit finished (from the fit worker): the id of its request and the outcome.
-    FitReady(
-        u64,
-        Result<crate::tui::views::fit::state::FitOutcome, String>,
-    ),
+    /// News of a fit from the fit worker: the id of its request and its progress (model runs
+    /// so far) or its outcome.
+    FitReady(u64, crate::tui::views::fit::state::FitNews),
     /// `F`: apply the finished fit to the ball, as one undoable change.
     ApplyFit,
+    /// `N`: normalize the chart in focus (the crosshair's, else the view's first), or back.
+    Normalize,
+    /// `+` (1), `-` (-1), `0` (0: back to the whole data): zoom the chart in focus.
+    Zoom(i8),
     /// `x`: put the crosshair on the view's first chart; with it on, on the next chart.
     Crosshair,
     /// Tab with the crosshair on: the next chart (past the last: off).

@@ -1,4 +1,5 @@
-//! The `bouncelab run …` line of the screen (`y`, and the export's CSV header).
+//! The explorer's line of the screen (`y`: `bouncelab --preset … --v0 …`) and the
+//! `bouncelab run …` line of the export's CSV header.
 
 use super::{App, Setting};
 use crate::tui::command::{self, Source};
@@ -28,11 +29,30 @@ impl App {
         self
     }
 
-    /// `y`: the line in its box, and copied to the terminal's clipboard (OSC 52) where the
-    /// terminal allows; a setting the line cannot carry is named.
+    /// Copy `y`'s line with OSC 52 or not (`command::osc52_here` decides for the terminal;
+    /// without this call, not).
+    pub fn with_osc52(mut self, on: bool) -> App {
+        self.copy.osc52 = on;
+        self
+    }
+
+    /// Whether `y` copies with OSC 52.
+    pub fn osc52(&self) -> bool {
+        self.copy.osc52
+    }
+
+    /// The last line `y` showed: the explorer prints it on the main screen as it ends, one
+    /// line the terminal's scrollback keeps whole however narrow the explorer was.
+    pub fn last_command(&self) -> Option<&str> {
+        self.copy.last.as_deref()
+    }
+
+    /// `y`: the explorer's line in its box, and copied to the terminal's clipboard (OSC 52)
+    /// where the terminal takes it; a setting the line cannot carry is named.
     pub(super) fn show_command(&mut self) -> Vec<crate::tui::effect::Effect> {
         let line = self.command_line();
         self.overlay = crate::tui::state::Overlay::Command(line.clone());
+        self.copy.last = Some(line.clone());
         if let Some(w) = crate::tui::command::not_carried(self.preset(), &self.setting) {
             self.warn(w);
         } else if self.setting.target() != crate::target::Target::wall() {
@@ -43,20 +63,35 @@ impl App {
                     .into(),
             );
         }
-        vec![crate::tui::effect::Effect::Copy(line)]
+        if self.copy.osc52 {
+            vec![crate::tui::effect::Effect::Copy(line)]
+        } else {
+            Vec::new()
+        }
     }
 
-    /// The `bouncelab run` line that runs what the screen shows.
+    /// The explorer's line that opens it again in what the screen shows (`y`).
     pub fn command_line(&self) -> String {
+        let (source, preset) = self.source_of(&self.setting);
+        command::explorer_line(source, preset, &self.setting)
+    }
+
+    /// The `bouncelab run` line that runs what the screen shows (the export's CSV header).
+    pub fn run_line(&self) -> String {
         self.command_for(&self.setting)
     }
 
-    fn command_for(&self, s: &Setting) -> String {
+    fn source_of(&self, s: &Setting) -> (Source<'_>, &crate::preset::Preset) {
         let preset = &self.presets[s.preset];
         let source = match &self.config {
             Some((i, path)) if *i == s.preset => Source::Config(path),
             _ => Source::Name(&preset.name),
         };
+        (source, preset)
+    }
+
+    fn command_for(&self, s: &Setting) -> String {
+        let (source, preset) = self.source_of(s);
         command::run_line(source, preset, s)
     }
 
@@ -67,6 +102,13 @@ impl App {
             .iter()
             .map(|g| self.command_for(&g.setting))
             .collect();
-        command::csv_header(&self.command_line(), self.preset(), &self.setting, &pins)
+        command::csv_header(&self.run_line(), self.preset(), &self.setting, &pins)
     }
+}
+
+/// `y`'s copy: OSC 52 on or off for this terminal, and the last line shown.
+#[derive(Debug, Clone, Default)]
+pub struct CopyState {
+    pub osc52: bool,
+    pub last: Option<String>,
 }

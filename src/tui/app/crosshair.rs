@@ -66,10 +66,12 @@ impl App {
     }
 
     /// The figure of chart `k` of the current view, as drawn.
-    fn crosshair_figure(&mut self, k: usize) -> Option<crate::figure::Figure> {
+    pub(super) fn crosshair_figure(&mut self, k: usize) -> Option<crate::figure::Figure> {
         self.refresh_run();
         let chart = *self.view.charts().get(k)?;
-        Some(explorer::figure(chart, &self.scene()))
+        let mut fig = explorer::figure(chart, &self.scene());
+        crate::tui::chartview::apply(self.charts.get(chart), chart, &mut fig);
+        Some(fig)
     }
 
     /// The crosshair, when it is on a chart of the view shown.

@@ -77,6 +77,28 @@ pub struct FitOutcome {
     pub not_pinned: Vec<&'static str>,
 }
 
+/// What the fit worker says of a fit: how far it is (the model runs done, the seconds since
+/// it started: the work budget's progress, `analysis::work::Watch`), or how it ended.
+#[allow(clippy::large_enum_variant)]
+#[derive(Debug, Clone, PartialEq)]
+pub enum FitNews {
+    Progress(FitProgress),
+    Done(Result<FitOutcome, String>),
+}
+
+impl From<Result<FitOutcome, String>> for FitNews {
+    fn from(r: Result<FitOutcome, String>) -> FitNews {
+        FitNews::Done(r)
+    }
+}
+
+/// A running fit's progress: model runs done, seconds since it started.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FitProgress {
+    pub runs: u64,
+    pub seconds: f64,
+}
+
 /// Where a fit is: out on the worker, or back. (The explorer holds one: the size of the
 /// variants does not matter.)
 #[allow(clippy::large_enum_variant)]
@@ -97,6 +119,8 @@ pub struct FitPane {
     pub status: FitStatus,
     /// `F` was pressed once on a fit that did not answer: the next `F` applies it anyway.
     pub armed: bool,
+    /// While it runs: the worker's last word on its progress.
+    pub progress: Option<FitProgress>,
 }
 
 /// How a finished fit stands to the ball on screen.
@@ -161,11 +185,20 @@ pub fn request(
 
 /// Run `r` with the library's fit: the worker's job.
 pub fn run(r: &FitRequest) -> Result<FitOutcome, String> {
+    run_watched(r, &crate::analysis::work::Unwatched)
+}
+
+/// [`run`], each model run reported to `watch`, which may stop it (a later fit asked for).
+pub fn run_watched(
+    r: &FitRequest,
+    watch: &dyn crate::analysis::work::Watch,
+) -> Result<FitOutcome, String> {
     let (data, unit) = match &r.input {
         FitInput::Trace(t) => (FitData::Trace(t), "N"),
         FitInput::Cor(p) => (FitData::Cor(p), "(COR)"),
     };
-    let f = fit::fit(&r.base, r.law, data, &r.free).map_err(|e| format!("{}: {e}", r.label))?;
+    let f = fit::fit_watched(&r.base, r.law, data, &r.free, watch)
+        .map_err(|e| format!("{}: {e}", r.label))?;
     Ok(FitOutcome {
         params: f.params,
         fitted: f.fitted,

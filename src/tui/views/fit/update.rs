@@ -11,7 +11,7 @@ use crate::measured::Data;
 use crate::tui::app::{App, Effect, Overlay, Purpose, Setting};
 use crate::tui::param::Param;
 use crate::tui::views::fit::state::{
-    self as measured, FitOutcome, FitPane, FitStatus, Loaded, Standing,
+    self as measured, FitNews, FitPane, FitStatus, Loaded, Standing,
 };
 use std::path::PathBuf;
 
@@ -106,6 +106,7 @@ impl App {
                     free: r.free.clone(),
                     status: FitStatus::Running,
                     armed: false,
+                    progress: None,
                 });
                 self.info(format!("fitting {} to {}…", names(&r.free), r.label));
                 Some(Effect::Fit(r))
@@ -117,10 +118,20 @@ impl App {
         }
     }
 
-    /// A fit came back: shown if it is the latest asked for, dropped if superseded.
-    pub(in crate::tui) fn fit_ready(&mut self, id: u64, result: Result<FitOutcome, String>) {
+    /// News of a fit: its progress shown while it runs, its outcome once back; news of a fit
+    /// superseded is dropped.
+    pub(in crate::tui) fn fit_ready(&mut self, id: u64, news: FitNews) {
         let Some(pane) = self.fit.pane.as_mut().filter(|p| p.id == id) else {
             return;
+        };
+        let result = match news {
+            FitNews::Progress(p) => {
+                if pane.status == FitStatus::Running {
+                    pane.progress = Some(p);
+                }
+                return;
+            }
+            FitNews::Done(result) => result,
         };
         pane.status = FitStatus::Done(result);
         match self.fit_standing() {

@@ -49,8 +49,9 @@ impl Widget for &FitView<'_> {
         let lines = match &self.pane.status {
             FitStatus::Running => vec![
                 Line::raw(format!(
-                    " fitting {}… (the keys keep working)",
-                    free_names(self.pane)
+                    " fitting {}…{} (the keys keep working)",
+                    free_names(self.pane),
+                    progress(self.pane.progress)
                 )),
                 Line::styled(" f fits again · O puts the data away", t.dim()),
             ],
@@ -71,6 +72,14 @@ impl Widget for &FitView<'_> {
             .block(Block::bordered().title(Line::from(title)))
             .render(area, buf);
     }
+}
+
+/// ` 1234 model runs, 3.2 s`: the work budget's progress, as `bouncelab fit` shows it on a
+/// terminal (src/cli/budget.rs); nothing before the worker's first word.
+fn progress(p: Option<crate::tui::views::fit::state::FitProgress>) -> String {
+    p.map_or(String::new(), |p| {
+        format!(" {} model runs, {:.1} s", p.runs, p.seconds)
+    })
 }
 
 fn free_names(p: &FitPane) -> String {

@@ -1,32 +1,52 @@
 //! A background thread for the explorer's fits (`f`): a fit solves the model hundreds of
 //! times, which in a debug build takes seconds, so it runs here while the keys go on acting.
-//! Only the latest fit asked for is run: one asked before it and not yet started is dropped
-//! (its answer would be superseded anyway, `App` keeps the id of the latest). Each finished
-//! fit comes back as `Action::FitReady`.
+//! Only the latest fit asked for is run: one asked before it and not yet started is dropped,
+//! and one running stops at its next model run once a later one is asked for (its answer
+//! would be superseded anyway, `App` keeps the id of the latest). While a fit runs its
+//! progress comes back every [`PROGRESS_EVERY`] (model runs done and seconds: the work
+//! budget's `Watch`, issue 29 item 13), then its outcome, each as `Action::FitReady`.
 
-use crate::tui::views::fit::state::{self as measured, FitOutcome, FitRequest};
+use crate::analysis::work::Watch;
+use crate::tui::views::fit::state::{self as measured, FitNews, FitProgress, FitRequest};
+use std::cell::Cell;
+use std::sync::Arc;
+use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::mpsc::{self, Receiver, Sender};
 use std::thread;
+use std::time::{Duration, Instant};
 
-/// A finished fit: the id of its request and the outcome.
-pub type FitReply = (u64, Result<FitOutcome, String>);
+/// How often a running fit reports its progress: often enough for a counter that moves, far
+/// less often than the loop's 40 ms wake while a fit is out (src/tui/event.rs).
+pub const PROGRESS_EVERY: Duration = Duration::from_millis(100);
+
+/// News of a fit: the id of its request and its progress or outcome.
+pub type FitReply = (u64, FitNews);
 
 pub struct FitWorker {
     jobs: Sender<FitRequest>,
     replies: Receiver<FitReply>,
+    /// The id of the latest fit asked for: a running fit of another id stops.
+    latest: Arc<AtomicU64>,
 }
 
 impl FitWorker {
     pub fn spawn() -> std::io::Result<FitWorker> {
         let (jobs, inbox) = mpsc::channel();
         let (outbox, replies) = mpsc::channel();
+        let latest = Arc::new(AtomicU64::new(0));
+        let seen = Arc::clone(&latest);
         thread::Builder::new()
             .name("bouncelab-fit".into())
-            .spawn(move || serve(&inbox, &outbox))?;
-        Ok(FitWorker { jobs, replies })
+            .spawn(move || serve(&inbox, &outbox, &seen))?;
+        Ok(FitWorker {
+            jobs,
+            replies,
+            latest,
+        })
     }
 
     pub fn want(&self, request: FitRequest) {
+        self.latest.store(request.id, Ordering::Relaxed);
         // a send fails only when the thread is gone; the pane then keeps saying "fitting…"
         let _ = self.jobs.send(request);
     }
@@ -36,13 +56,48 @@ impl FitWorker {
     }
 }
 
-fn serve(inbox: &Receiver<FitRequest>, outbox: &Sender<FitReply>) {
+/// The watch of one fit on the worker: its progress to the loop every [`PROGRESS_EVERY`], and
+/// a stop once a later fit is asked for.
+struct Reporter<'a> {
+    id: u64,
+    outbox: &'a Sender<FitReply>,
+    latest: &'a AtomicU64,
+    start: Instant,
+    last: Cell<Instant>,
+}
+
+impl Watch for Reporter<'_> {
+    fn step(&self, done: u64) -> bool {
+        let now = Instant::now();
+        if now.duration_since(self.last.get()) >= PROGRESS_EVERY {
+            self.last.set(now);
+            let p = FitProgress {
+                runs: done,
+                seconds: now.duration_since(self.start).as_secs_f64(),
+            };
+            // a closed channel: the explorer is gone, the answer is nobody's
+            let _ = self.outbox.send((self.id, FitNews::Progress(p)));
+        }
+        self.latest.load(Ordering::Relaxed) == self.id
+    }
+}
+
+fn serve(inbox: &Receiver<FitRequest>, outbox: &Sender<FitReply>, latest: &AtomicU64) {
     while let Ok(mut request) = inbox.recv() {
         // the latest of those waiting
         while let Ok(later) = inbox.try_recv() {
             request = later;
         }
-        if outbox.send((request.id, measured::run(&request))).is_err() {
+        let start = Instant::now();
+        let watch = Reporter {
+            id: request.id,
+            outbox,
+            latest,
+            start,
+            last: Cell::new(start),
+        };
+        let outcome = measured::run_watched(&request, &watch);
+        if outbox.send((request.id, FitNews::Done(outcome))).is_err() {
             return;
         }
     }
@@ -55,6 +110,32 @@ mod tests {
     use crate::preset::Preset;
     use crate::tui::views::fit::state::{Loaded, request};
     use std::time::{Duration, Instant};
+
+    /// A running fit goes on while it is the latest asked for and stops at its next model
+    /// run once another is; its progress goes out at most every PROGRESS_EVERY.
+    #[test]
+    fn the_reporter_stops_a_superseded_fit_and_reports_progress() {
+        let (outbox, replies) = mpsc::channel();
+        let latest = AtomicU64::new(3);
+        let long_ago = Instant::now() - 2 * PROGRESS_EVERY;
+        let r = Reporter {
+            id: 3,
+            outbox: &outbox,
+            latest: &latest,
+            start: long_ago,
+            last: Cell::new(long_ago),
+        };
+        assert!(r.step(10));
+        assert!(r.step(11), "no report so soon after the last");
+        let Ok((3, FitNews::Progress(p))) = replies.try_recv() else {
+            panic!("no progress report")
+        };
+        assert_eq!(p.runs, 10);
+        assert!(p.seconds >= PROGRESS_EVERY.as_secs_f64() * 2.0);
+        assert!(replies.try_recv().is_err());
+        latest.store(4, Ordering::Relaxed);
+        assert!(!r.step(12), "a later fit asked for stops this one");
+    }
 
     #[test]
     fn a_fit_comes_back_with_its_id() {
@@ -70,8 +151,8 @@ mod tests {
         w.want(r.clone());
         let start = Instant::now();
         let (id, outcome) = loop {
-            if let Some(reply) = w.try_recv() {
-                break reply;
+            if let Some((id, FitNews::Done(o))) = w.try_recv() {
+                break (id, o);
             }
             assert!(start.elapsed() < Duration::from_secs(120), "no reply");
             thread::sleep(Duration::from_millis(5));

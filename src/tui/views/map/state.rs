@@ -140,6 +140,19 @@ pub fn grid(size: Option<(u16, u16)>, color: bool, pins: usize) -> Option<(usize
     ))
 }
 
+/// The work of a map's first, coarse pass, in linear-law impacts (`analysis::work::cost`):
+/// about 1 000, some 2–7 ms on one core at the exact solver's 2–7 µs an impact
+/// (BENCHMARKS.md), so that the whole map shows coarse within 50 ms of a key under any law
+/// (issue 29 item 13), then refines pass by pass on the worker.
+pub const FIRST_PASS_WORK: u64 = 1_000;
+
+/// The most cells of a map's first pass under `law`: [`FIRST_PASS_WORK`] at the law's cost
+/// (the Hertz law's impacts cost 40 linear ones: 25 cells, a lattice of 32 at 200 × 60). The
+/// linear law keeps `Map::new`'s (about 80 cells, of the closed form's 0.3 µs).
+pub fn first_pass_cells(law: ContactLaw) -> usize {
+    (FIRST_PASS_WORK / crate::analysis::work::cost(law)) as usize
+}
+
 /// A map handed to the background worker to refine, pass by pass. Its `cancel` flag is set by
 /// `update` once the map is stale (the ball or the view changed): the worker then stops inside
 /// the pass ([`Map::refine_until`]).

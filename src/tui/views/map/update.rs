@@ -189,7 +189,8 @@ impl App {
         if !self.map.holds(&spec) {
             self.map.cancel();
             self.map.generation += 1;
-            let mut map = Map::new(spec.clone());
+            let mut map =
+                Map::new(spec.clone()).first_cells_at_most(map_view::first_pass_cells(law));
             if !self.background {
                 while map.refine().is_some() {}
             } else if law == ContactLaw::Linear {

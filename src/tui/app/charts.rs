@@ -1,0 +1,61 @@
+//! `N`, `+`, `-`, `0`: the chart in focus — the crosshair's when it is on (`x`, Tab moves it
+//! to the next chart), else the view's first — normalized or zoomed (src/tui/chartview.rs,
+//! issue 29 item 10). A view, not a change of the ball: `u` does not undo it.
+
+use super::App;
+use crate::tui::action::Action;
+use crate::tui::chartview::{ChartView, ChartViews, MAX_ZOOM, normalizable};
+
+impl App {
+    /// Every chart's view.
+    pub fn chart_views(&self) -> &ChartViews {
+        &self.charts
+    }
+
+    pub(super) fn chart_view(&mut self, action: Action) {
+        let k = self.crosshair().map_or(0, |c| c.chart);
+        let Some(&chart) = self.view.charts().get(k) else {
+            return self.warn("no chart here to normalize or zoom".into());
+        };
+        let now = self.charts.get(chart);
+        let name = chart.file_name();
+        let next = match action {
+            Action::Normalize if !normalizable(chart) => {
+                return self.warn(format!(
+                    "{name}: only force charts normalize (F/F_m against t/t_f or α/α_max); \
+                     x then Tab picks another chart"
+                ));
+            }
+            Action::Normalize => ChartView {
+                normalized: !now.normalized,
+                ..now
+            },
+            Action::Zoom(0) => ChartView { zoom: 0, ..now },
+            Action::Zoom(d) if d > 0 && now.zoom >= MAX_ZOOM => {
+                return self.warn(format!("{name}: zoomed in as far as it goes (×1024)"));
+            }
+            Action::Zoom(d) => ChartView {
+                zoom: now.zoom.saturating_add_signed(d.signum()),
+                ..now
+            },
+            _ => return,
+        };
+        self.charts.set(chart, next);
+        // the crosshair stays on this chart, at the centre of what it now shows
+        if self.crosshair.is_some() {
+            self.crosshair = self
+                .crosshair_figure(k)
+                .and_then(|fig| crate::tui::crosshair::start(k, &fig));
+        }
+        let what = match (next.normalized, next.zoom) {
+            (true, 0) => "normalized: each run by its own F_m and t_f (N: absolute)".to_string(),
+            (n, 0) => format!("whole data{}", if n { ", normalized" } else { "" }),
+            (n, z) => format!(
+                "zoom ×{} from the lower-left corner{} (0: whole data)",
+                1u32 << z,
+                if n { ", normalized" } else { "" }
+            ),
+        };
+        self.info(format!("{name}: {what}"));
+    }
+}
