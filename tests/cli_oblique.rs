@@ -208,11 +208,64 @@ fn bad_input_is_one_line_exit_2() {
         &["inertia_factor"],
     );
     bad(
-        &with(&["--angle", "30", "--friction", "0.5", "--law", "hertz"]),
-        &["law"],
-    );
-    bad(
         &["court", "--preset", "tennis", "--friction", "-1"],
         &["friction"],
+    );
+}
+
+#[test]
+fn every_law_answers_and_angle_90_is_runs_cor() {
+    for law in ["linear", "hertz", "elastic-plastic"] {
+        let o = json(&[
+            "oblique",
+            "--preset",
+            "tennis",
+            "--angle",
+            "90",
+            "--friction",
+            "0.5",
+            "--law",
+            law,
+            "--format",
+            "json",
+        ]);
+        let r = json(&[
+            "run", "--preset", "tennis", "--law", law, "--format", "json",
+        ]);
+        assert_eq!(o["law"], law);
+        assert!((f(&o, "cor_normal") - f(&r, "cor")).abs() <= 1e-12, "{law}");
+        assert!(f(&o, "vx_out").abs() <= 1e-12 && f(&o, "spin_out").abs() <= 1e-12);
+        let oblique = json(&[
+            "oblique",
+            "--preset",
+            "tennis",
+            "--angle",
+            "30",
+            "--spin",
+            "-200",
+            "--friction",
+            "0.5",
+            "--law",
+            law,
+            "--format",
+            "json",
+        ]);
+        // backspin: the contact point slides forward and friction slows the ball
+        assert!(f(&oblique, "vx_out") < f(&oblique, "vx_in"), "{law}");
+    }
+    let text = ok(&[
+        "oblique",
+        "--preset",
+        "tennis",
+        "--angle",
+        "30",
+        "--friction",
+        "0.5",
+        "--law",
+        "hertz",
+    ]);
+    assert!(
+        text.starts_with("tennis (embedded, adopted parameters), hertz law: μ = 0.5"),
+        "{text}"
     );
 }
