@@ -12,6 +12,7 @@
 
 pub mod court;
 mod energy;
+mod normal;
 pub mod reference;
 mod tangential;
 #[cfg(test)]
@@ -21,6 +22,7 @@ use crate::model::contact::ContactLaw;
 use crate::model::params::ImpactParams;
 use crate::solver::exact::{NormalPath, PathPoint};
 use crate::solver::{Flow, ImpactResponse, SolveError, SolveOptions, simulate_flow};
+pub use normal::NormalAt;
 use serde::Serialize;
 use std::fmt;
 pub use tangential::{Mode, Phase};
@@ -367,35 +369,15 @@ pub(crate) fn solve_with(
     samples: usize,
     opts: &SolveOptions,
 ) -> Result<ObliqueResponse, ObliqueError> {
-    let Prepared {
-        vx,
-        vy,
-        normal_params,
-        normal,
-        path,
-        scaled: s,
-    } = prepare_with(params, law, v, oblique, opts)?;
-    let r = oblique.radius;
-    let (vx_n, w_n) = (vx / vy, r * oblique.spin / vy);
-    let run = tangential::run(&path, &s, vx_n - w_n)?;
-    let answer = energy::Answer {
-        params: &normal_params,
-        oblique,
-        scaled: &s,
-        vx,
-        vy,
-        v,
-    };
-    Ok(answer.response(&path, run, normal, samples))
+    oblique.validate()?;
+    NormalAt::with_options(params, law, v, oblique.angle_deg, opts)?.solve(oblique, samples)
 }
 
-/// What both integrations start from: the components of the arrival, the normal impact and
-/// its flow, and the scaled tangential problem.
+/// What the reference integration starts from: the components of the arrival, the normal
+/// flow and the scaled tangential problem.
 pub(crate) struct Prepared {
     pub vx: f64,
     pub vy: f64,
-    pub normal_params: ImpactParams,
-    pub normal: ImpactResponse,
     pub path: Flow,
     pub scaled: Scaled,
 }
@@ -406,17 +388,6 @@ pub(crate) fn prepare(
     v: f64,
     oblique: &Oblique,
 ) -> Result<Prepared, ObliqueError> {
-    let opts = SolveOptions::default().with_energy();
-    prepare_with(params, law, v, oblique, &opts)
-}
-
-fn prepare_with(
-    params: &ImpactParams,
-    law: ContactLaw,
-    v: f64,
-    oblique: &Oblique,
-    opts: &SolveOptions,
-) -> Result<Prepared, ObliqueError> {
     oblique.validate()?;
     let theta = oblique.angle_deg.to_radians();
     // at 90° the normal impact is the very one `run` solves: v_y = v, not v sin(π/2)
@@ -426,7 +397,8 @@ fn prepare_with(
         (v * theta.sin(), v * theta.cos())
     };
     let normal_params = ImpactParams { v0: vy, ..*params };
-    let (normal, path) = simulate_flow(&normal_params, law, opts)?;
+    let opts = SolveOptions::default().with_energy();
+    let (normal, path) = simulate_flow(&normal_params, law, &opts)?;
     if !normal.rebound {
         return Err(ObliqueError::NoRebound);
     }
@@ -439,8 +411,6 @@ fn prepare_with(
     Ok(Prepared {
         vx,
         vy,
-        normal_params,
-        normal,
         path,
         scaled,
     })
