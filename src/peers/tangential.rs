@@ -68,7 +68,8 @@ pub fn mujoco(s: &NormalContact, t: &TangentialExport) -> String {
          a soft constraint on the tangential velocity within the friction cone, regularized by\n\
          the same solref as the normal direction: it slides at mu F_n as bouncelab does, but has\n\
          no tangential spring (K_t = {} N/m is not representable) and so no stored\n\
-         displacement and no friction reversal while gripping. -->\n\
+         displacement and no friction reversal while gripping. Its rebound is not the\n\
+         calibrated COR (condim 1's): the tangential rows move the normal response too. -->\n\
          <geom type=\"sphere\" size=\"{}\" mass=\"{}\" priority=\"1\" condim=\"3\" \
          friction=\"{} 0 0\" solref=\"-{} -{}\" solimp=\"0.9999 0.9999 0.001 0.5 2\"/>\n",
         num(t.friction),
