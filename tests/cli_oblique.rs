@@ -208,11 +208,170 @@ fn bad_input_is_one_line_exit_2() {
         &["inertia_factor"],
     );
     bad(
-        &with(&["--angle", "30", "--friction", "0.5", "--law", "hertz"]),
-        &["law"],
-    );
-    bad(
         &["court", "--preset", "tennis", "--friction", "-1"],
         &["friction"],
+    );
+}
+
+#[test]
+fn every_law_answers_and_angle_90_is_runs_cor() {
+    for law in ["linear", "hertz", "elastic-plastic"] {
+        let o = json(&[
+            "oblique",
+            "--preset",
+            "tennis",
+            "--angle",
+            "90",
+            "--friction",
+            "0.5",
+            "--law",
+            law,
+            "--format",
+            "json",
+        ]);
+        let r = json(&[
+            "run", "--preset", "tennis", "--law", law, "--format", "json",
+        ]);
+        assert_eq!(o["law"], law);
+        assert!((f(&o, "cor_normal") - f(&r, "cor")).abs() <= 1e-12, "{law}");
+        assert!(f(&o, "vx_out").abs() <= 1e-12 && f(&o, "spin_out").abs() <= 1e-12);
+        let oblique = json(&[
+            "oblique",
+            "--preset",
+            "tennis",
+            "--angle",
+            "30",
+            "--spin",
+            "-200",
+            "--friction",
+            "0.5",
+            "--law",
+            law,
+            "--format",
+            "json",
+        ]);
+        // backspin: the contact point slides forward and friction slows the ball
+        assert!(f(&oblique, "vx_out") < f(&oblique, "vx_in"), "{law}");
+    }
+    let text = ok(&[
+        "oblique",
+        "--preset",
+        "tennis",
+        "--angle",
+        "30",
+        "--friction",
+        "0.5",
+        "--law",
+        "hertz",
+    ]);
+    assert!(
+        text.starts_with("tennis (embedded, adopted parameters), hertz law: μ = 0.5"),
+        "{text}"
+    );
+}
+
+#[test]
+fn peers_exports_add_the_tangential_model_with_friction() {
+    let plain = ok(&["peers", "--preset", "tennis", "--export", "lammps"]);
+    let with = ok(&[
+        "peers",
+        "--preset",
+        "tennis",
+        "--export",
+        "lammps",
+        "--friction",
+        "0.6",
+        "--tangential-stiffness",
+        "15000",
+    ]);
+    // the normal lines unchanged, the tangential fix after them
+    assert!(with.starts_with(&plain), "{with}");
+    let fix = with
+        .lines()
+        .find(|l| l.starts_with("fix kvclipt"))
+        .expect("the tangential fix");
+    assert!(
+        fix.contains("tangential linear_history 15000 0.0 0.6 damping velocity limit_damping"),
+        "{fix}"
+    );
+    // its normal model is the clipped Kelvin-Voigt line's
+    let clip = plain
+        .lines()
+        .find(|l| l.starts_with("fix kvclip "))
+        .unwrap();
+    let normal = |l: &str| {
+        l.split_whitespace()
+            .skip(5)
+            .take(3)
+            .collect::<Vec<_>>()
+            .join(" ")
+    };
+    assert_eq!(normal(fix), normal(clip));
+    let mujoco = ok(&[
+        "peers",
+        "--preset",
+        "tennis",
+        "--export",
+        "mujoco",
+        "--friction",
+        "0.6",
+    ]);
+    assert!(
+        mujoco.contains("condim=\"3\" friction=\"0.6 0 0\""),
+        "{mujoco}"
+    );
+    assert!(mujoco.contains("no tangential spring"), "{mujoco}");
+    let v = json(&[
+        "peers",
+        "--preset",
+        "tennis",
+        "--export",
+        "json",
+        "--friction",
+        "0.6",
+    ]);
+    assert!((v["tangential"]["friction"].as_f64().unwrap() - 0.6).abs() < 1e-15);
+    let k_t = json(&[
+        "oblique",
+        "--preset",
+        "tennis",
+        "--angle",
+        "30",
+        "--friction",
+        "0.6",
+        "--format",
+        "json",
+    ]);
+    assert_eq!(
+        v["tangential"]["tangential_stiffness"],
+        k_t["tangential_stiffness"]
+    );
+    bad(
+        &[
+            "peers",
+            "--preset",
+            "tennis",
+            "--export",
+            "lammps",
+            "--friction",
+            "-1",
+        ],
+        &["friction"],
+    );
+    bad(
+        &[
+            "peers",
+            "--preset",
+            "tennis",
+            "--export",
+            "yade",
+            "--friction",
+            "0.5",
+        ],
+        &["--friction"],
+    );
+    bad(
+        &["peers", "--preset", "tennis", "--friction", "0.5"],
+        &["--export"],
     );
 }

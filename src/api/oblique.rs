@@ -2,7 +2,6 @@
 //! oblique` and `bouncelab court` run them.
 
 use super::{Ball, BallError};
-use crate::model::contact::ContactLaw;
 use crate::oblique::court::pace_category;
 use crate::oblique::{self, Oblique, ObliqueError, ObliqueResponse, mindlin_ratio};
 use serde::Serialize;
@@ -67,7 +66,7 @@ impl Ball {
     }
 
     /// One oblique impact (docs/oblique.md), with `samples` history samples (0: none), as
-    /// `bouncelab oblique`. The normal motion runs the linear law's exact flow.
+    /// `bouncelab oblique`. The normal motion is `run`'s, on the ball's law.
     ///
     /// ```
     /// use bouncelab::{Ball, api::ObliqueSpec};
@@ -84,9 +83,6 @@ impl Ball {
         spec: &ObliqueSpec,
         samples: usize,
     ) -> Result<ObliqueResponse, BallError> {
-        if self.law != ContactLaw::Linear {
-            return Err(ObliqueError::Law.into());
-        }
         if samples == 1 || samples > super::MAX_SAMPLES {
             return Err(BallError::Samples(samples));
         }
@@ -110,7 +106,7 @@ impl Ball {
                 reason: "must be positive".into(),
             });
         }
-        Ok(oblique::solve(&self.params, v, &o, samples)?)
+        Ok(oblique::solve_law(&self.params, self.law, v, &o, samples)?)
     }
 
     /// The ITF Court Pace Rating of a surface of friction `friction` (ITF CS 01/02: 30 m/s at

@@ -109,9 +109,14 @@ pub fn run(a: &ObliqueArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         ObliqueFormat::Csv if a.history => history_csv(out, &r)?,
         ObliqueFormat::Csv => summary_csv(out, &r)?,
         ObliqueFormat::Text => {
+            // the law is named when it is not the linear one (the header `run` prints too)
+            let law = match ball.law {
+                crate::model::contact::ContactLaw::Linear => String::new(),
+                law => format!(", {law} law"),
+            };
             writeln!(
                 out,
-                "{}: μ = {}, K_t = {} N/m, κ = {}, R = {} mm",
+                "{}{law}: μ = {}, K_t = {} N/m, κ = {}, R = {} mm",
                 ball.label(),
                 given(a.friction, 6),
                 human(k_t, 4),

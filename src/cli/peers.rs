@@ -88,6 +88,13 @@ pub struct PeersArgs {
     /// Write the exactly calibrated parameters for a code instead of the comparison
     #[arg(long, value_enum, value_name = "CODE")]
     pub export: Option<ExportArg>,
+    /// With --export lammps|mujoco|json: add the oblique impacts' tangential model with this
+    /// Coulomb friction μ (docs/oblique.md §10)
+    #[arg(long, value_name = "MU", requires = "export", value_parser = super::number::number, allow_hyphen_values = true)]
+    pub friction: Option<f64>,
+    /// The tangential spring K_t with --friction [default: Mindlin's 2(1 − ν)/(2 − ν) K_p]
+    #[arg(long, value_name = "N/m", requires = "friction", value_parser = super::number::number, allow_hyphen_values = true)]
+    pub tangential_stiffness: Option<f64>,
 }
 
 /// One row of the comparison (the JSON keys of issue 19, then `k_r` for the
@@ -160,7 +167,8 @@ pub fn run(a: &PeersArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     let ball = PeerBall::from_params(&b.params, radius);
     let (target, source) = target(a, &b)?;
     if let Some(code) = a.export {
-        let set = ExportSet::new(&ball, target, b.name.as_deref().unwrap_or("ball"))?;
+        let mut set = ExportSet::new(&ball, target, b.name.as_deref().unwrap_or("ball"))?;
+        set.tangential = tangential(a, &b, code)?;
         let code = match code {
             ExportArg::Json => return Ok(output::json(out, &set)?),
             ExportArg::Lammps => Code::Lammps,
@@ -387,4 +395,36 @@ fn text(out: &mut dyn Write, b: &Ball, ball: &PeerBall, r: &Report) -> std::io::
         "The peers' COR does not depend on v0 at this damping (η for Kelvin–Voigt and Tsuji, χ for \
          Hunt–Crossley, whose force is normalized by v0); docs/peers.md."
     )
+}
+
+/// The tangential model `--friction` asks the export to add, checked as `oblique` checks it
+/// (one line naming the field, exit 2).
+fn tangential(
+    a: &PeersArgs,
+    b: &crate::Ball,
+    code: ExportArg,
+) -> anyhow::Result<Option<crate::peers::tangential::TangentialExport>> {
+    let Some(mu) = a.friction else {
+        return Ok(None);
+    };
+    if !matches!(
+        code,
+        ExportArg::Lammps | ExportArg::Mujoco | ExportArg::Json
+    ) {
+        anyhow::bail!("--friction exports the tangential model to lammps, mujoco or json only");
+    }
+    let k_t = a
+        .tangential_stiffness
+        .or(b.tangential_stiffness())
+        .ok_or_else(|| {
+            anyhow::anyhow!(
+                "invalid tangential_stiffness: the ball is no preset and carries none: give it"
+            )
+        })?;
+    // the same checks as an oblique impact's (angle and κ are not the export's)
+    crate::oblique::Oblique::new(45.0, 0.0, mu, k_t, 0.5, 1.0)?;
+    Ok(Some(crate::peers::tangential::TangentialExport {
+        friction: mu,
+        tangential_stiffness: k_t,
+    }))
 }

@@ -79,6 +79,11 @@ pub fn drop_test(path: &Path) -> anyhow::Result<DropTest> {
     DropTest::parse(&read_text(path)?).map_err(|e| at(path, e))
 }
 
+/// The oblique bounces in `path` (docs/oblique.md §9).
+pub fn oblique(path: &Path) -> anyhow::Result<Vec<measured::ObliqueRow>> {
+    measured::parse_oblique(&read_text(path)?).map_err(|e| at(path, e))
+}
+
 /// Any kind, told by the header.
 pub fn any(path: &Path) -> anyhow::Result<Data> {
     measured::parse_any(&read_text(path)?).map_err(|e| at(path, e))

@@ -4,6 +4,7 @@
 //! the 1-based line and column it is about.
 
 mod drop;
+mod oblique;
 // reading a data file from disk: anyhow, which the `tui` and `cli` features bring
 #[cfg(feature = "tui")]
 pub mod file;
@@ -13,6 +14,7 @@ mod table;
 mod trace;
 
 pub use drop::{Air, DropTest, Flight, G, drop_to_cor};
+pub use oblique::{ObliqueRow, parse_oblique};
 pub use table::MAX_ROWS;
 pub use trace::{Trace, TraceSummary};
 

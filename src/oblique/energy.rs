@@ -105,7 +105,7 @@ impl Answer<'_> {
             apparent_friction: (self.vx - vx_out).abs() / (vy + vy_out),
             slid_throughout: run.phases.len() == 1 && matches!(last.mode, Mode::Slip(_)),
             grip_time: grip / w0,
-            contact_time: tf / w0,
+            contact_time: normal.contact_time.unwrap_or(tf / w0),
             max_normal_force: normal.max_force,
             max_friction_force: max_friction * m * vy * w0,
             energy,

@@ -12,14 +12,17 @@
 
 pub mod court;
 mod energy;
+mod normal;
 pub mod reference;
 mod tangential;
 #[cfg(test)]
 mod tests;
 
+use crate::model::contact::ContactLaw;
 use crate::model::params::ImpactParams;
 use crate::solver::exact::{NormalPath, PathPoint};
-use crate::solver::{ImpactResponse, SolveError, SolveOptions, simulate_path};
+use crate::solver::{Flow, ImpactResponse, SolveError, SolveOptions, simulate_flow};
+pub use normal::NormalAt;
 use serde::Serialize;
 use std::fmt;
 pub use tangential::{Mode, Phase};
@@ -75,11 +78,18 @@ pub enum ObliqueError {
     /// The normal impact does not rebound (λ = 0 and ζ ≥ 1): there is no outgoing motion.
     #[error("the ball does not rebound (λ = 0, ζ ≥ 1): no outgoing motion to report")]
     NoRebound,
-    /// The normal motion asked for is not the linear law's (exit 2).
+    /// The normal motion asked for is not the linear law's (exit 2). No law is refused since
+    /// every law's flow is kept (`solver::Flow`); kept so that callers' matches still hold.
     #[error(
         "invalid law: oblique impacts run the linear law only (its exact normal flow): use --law linear"
     )]
     Law,
+    /// The adaptive normal run ended in a creep finished in closed form, which keeps no flow
+    /// for the tangential motion to be driven by (exit 1).
+    #[error(
+        "no answer: the normal impact ends in a slow creep finished in closed form, which keeps no flow to drive the friction by"
+    )]
+    NoFlow,
     /// A quantity the ball does not carry (a ball that is no preset) and was not given (exit 2).
     #[error("invalid {0}: the ball is no preset and carries none: give it")]
     Missing(&'static str),
@@ -95,6 +105,7 @@ impl ObliqueError {
             self,
             ObliqueError::NoRebound
                 | ObliqueError::Phases
+                | ObliqueError::NoFlow
                 | ObliqueError::Solve(SolveError::Unresolved { .. })
         )
     }
@@ -290,7 +301,8 @@ pub struct ObliqueHistory {
     pub spin: Vec<f64>,
 }
 
-/// The normal motion an oblique impact is driven by: the linear law's exact flow.
+/// The normal motion an oblique impact is driven by: the linear law's exact flow, or any
+/// law's adaptive run read between its steps (`solver::Flow`).
 pub trait NormalMotion {
     /// F̄, F̄' and ᾱ' at τ.
     fn at(&self, tau: f64) -> PathPoint;
@@ -312,6 +324,18 @@ impl NormalMotion for NormalPath {
     }
 }
 
+impl NormalMotion for Flow {
+    fn at(&self, tau: f64) -> PathPoint {
+        Flow::at(self, tau)
+    }
+    fn end(&self) -> f64 {
+        Flow::end(self)
+    }
+    fn kinks(&self) -> Vec<f64> {
+        self.boundaries()
+    }
+}
+
 /// One oblique impact of a ball with parameters `params` (their `v0` is ignored: the speed is
 /// `v`), on the linear law, with `samples` history samples (0: none).
 pub fn solve(
@@ -320,41 +344,47 @@ pub fn solve(
     oblique: &Oblique,
     samples: usize,
 ) -> Result<ObliqueResponse, ObliqueError> {
-    let Prepared {
-        vx,
-        vy,
-        normal_params,
-        normal,
-        path,
-        scaled: s,
-    } = prepare(params, v, oblique)?;
-    let r = oblique.radius;
-    let (vx_n, w_n) = (vx / vy, r * oblique.spin / vy);
-    let run = tangential::run(&path, &s, vx_n - w_n)?;
-    let answer = energy::Answer {
-        params: &normal_params,
-        oblique,
-        scaled: &s,
-        vx,
-        vy,
-        v,
-    };
-    Ok(answer.response(&path, run, normal, samples))
+    solve_law(params, ContactLaw::Linear, v, oblique, samples)
 }
 
-/// What both integrations start from: the components of the arrival, the normal impact and
-/// its flow, and the scaled tangential problem.
+/// One oblique impact as [`solve`], on any contact law: the normal motion is `run`'s (the
+/// exact flow for the linear law, the adaptive solver for the others, docs/oblique.md §2).
+pub fn solve_law(
+    params: &ImpactParams,
+    law: ContactLaw,
+    v: f64,
+    oblique: &Oblique,
+    samples: usize,
+) -> Result<ObliqueResponse, ObliqueError> {
+    let opts = SolveOptions::default().with_energy();
+    solve_with(params, law, v, oblique, samples, &opts)
+}
+
+/// [`solve_law`] with the normal solver's options (tests run the linear law adaptively).
+pub(crate) fn solve_with(
+    params: &ImpactParams,
+    law: ContactLaw,
+    v: f64,
+    oblique: &Oblique,
+    samples: usize,
+    opts: &SolveOptions,
+) -> Result<ObliqueResponse, ObliqueError> {
+    oblique.validate()?;
+    NormalAt::with_options(params, law, v, oblique.angle_deg, opts)?.solve(oblique, samples)
+}
+
+/// What the reference integration starts from: the components of the arrival, the normal
+/// flow and the scaled tangential problem.
 pub(crate) struct Prepared {
     pub vx: f64,
     pub vy: f64,
-    pub normal_params: ImpactParams,
-    pub normal: ImpactResponse,
-    pub path: NormalPath,
+    pub path: Flow,
     pub scaled: Scaled,
 }
 
 pub(crate) fn prepare(
     params: &ImpactParams,
+    law: ContactLaw,
     v: f64,
     oblique: &Oblique,
 ) -> Result<Prepared, ObliqueError> {
@@ -368,10 +398,11 @@ pub(crate) fn prepare(
     };
     let normal_params = ImpactParams { v0: vy, ..*params };
     let opts = SolveOptions::default().with_energy();
-    let (normal, path) = simulate_path(&normal_params, &opts)?;
+    let (normal, path) = simulate_flow(&normal_params, law, &opts)?;
     if !normal.rebound {
         return Err(ObliqueError::NoRebound);
     }
+    let path = path.ok_or(ObliqueError::NoFlow)?;
     let scaled = Scaled::new(
         oblique.friction,
         oblique.tangential_stiffness / params.k_p,
@@ -380,8 +411,6 @@ pub(crate) fn prepare(
     Ok(Prepared {
         vx,
         vy,
-        normal_params,
-        normal,
         path,
         scaled,
     })

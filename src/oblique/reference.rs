@@ -9,6 +9,7 @@
 
 use super::tangential::Mode;
 use super::{NormalMotion, Oblique, ObliqueError, Scaled, prepare};
+use crate::model::contact::ContactLaw;
 use crate::model::params::ImpactParams;
 use crate::solver::roots::brent;
 use differential_equations::interpolate::Interpolation;
@@ -242,7 +243,17 @@ pub fn solve(
     v: f64,
     oblique: &Oblique,
 ) -> Result<(f64, f64, usize), ObliqueError> {
-    let p = prepare(params, v, oblique)?;
+    solve_law(params, ContactLaw::Linear, v, oblique)
+}
+
+/// The oblique impact of [`super::solve_law`] integrated this way, on any law's normal flow.
+pub fn solve_law(
+    params: &ImpactParams,
+    law: ContactLaw,
+    v: f64,
+    oblique: &Oblique,
+) -> Result<(f64, f64, usize), ObliqueError> {
+    let p = prepare(params, law, v, oblique)?;
     let r = oblique.radius;
     let out = integrate(&p.path, &p.scaled, p.vx / p.vy, r * oblique.spin / p.vy);
     Ok((out.vx * p.vy, out.spin * p.vy / r, out.switches))

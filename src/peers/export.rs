@@ -73,6 +73,9 @@ pub struct ExportSet {
     pub mujoco_timestep: Option<f64>,
     /// LAMMPS `timestep` (velocity Verlet) doing the same for every `fix` line, s.
     pub lammps_timestep: Option<f64>,
+    /// The tangential model of oblique impacts, when asked for (`peers --friction`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub tangential: Option<super::tangential::TangentialExport>,
 }
 
 /// How far from the target an advised time step may leave the COR at any contact phase
@@ -111,6 +114,7 @@ impl ExportSet {
             kv_no_tension_contact_time: None,
             mujoco_timestep: None,
             lammps_timestep: None,
+            tangential: None,
         };
         set.kv_no_tension_contact_time = impact(
             PeerModel::KelvinVoigtNoTension,
@@ -160,6 +164,18 @@ impl ExportSet {
 
 /// The snippet for `code`.
 pub fn snippet(code: Code, s: &ExportSet) -> String {
+    use super::tangential::{self, NormalContact};
+    let normal = NormalContact {
+        k: s.k,
+        eta: s.kv_no_tension_eta,
+        mass: s.mass,
+        radius: s.radius,
+    };
+    match (code, &s.tangential) {
+        (Code::Lammps, Some(t)) => return lammps(s) + &tangential::lammps(&normal, t),
+        (Code::Mujoco, Some(t)) => return mujoco(s) + &tangential::mujoco(&normal, t),
+        _ => {}
+    }
     match code {
         Code::Lammps => lammps(s),
         Code::Liggghts => liggghts(s),

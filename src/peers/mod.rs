@@ -12,6 +12,7 @@ mod integrate;
 mod laws;
 pub mod rules;
 pub mod steps;
+pub mod tangential;
 
 use crate::model::contact::ContactLaw;
 use crate::model::params::{ImpactParams, Normalized, ParamError};

@@ -322,6 +322,80 @@ pub fn simulate_path(
     Ok((response, path))
 }
 
+/// The flow of a solved impact, read at any τ: the exact solver's for the linear law, the
+/// adaptive solver's steps for any other (docs/oblique.md §2).
+pub enum Flow {
+    /// The linear law's exact flow.
+    Exact(exact::NormalPath),
+    /// The adaptive run's steps, interpolated.
+    Numeric(numeric::NumericPath),
+}
+
+impl Flow {
+    /// F̄, F̄' and ᾱ' at τ (clamped to [0, τ_f]).
+    pub fn at(&self, tau: f64) -> exact::PathPoint {
+        match self {
+            Flow::Exact(p) => p.at(tau),
+            Flow::Numeric(p) => p.at(tau),
+        }
+    }
+
+    /// τ_f.
+    pub fn end(&self) -> f64 {
+        match self {
+            Flow::Exact(p) => p.end(),
+            Flow::Numeric(p) => p.end(),
+        }
+    }
+
+    /// Where F̄' may jump (the exact flow's phase ends) or F̄'' may (the adaptive run's steps).
+    pub fn boundaries(&self) -> Vec<f64> {
+        match self {
+            Flow::Exact(p) => p.boundaries().collect(),
+            Flow::Numeric(p) => p.boundaries().collect(),
+        }
+    }
+}
+
+/// Run one impact of any law as [`simulate`] does (the same solver, the same integration: the
+/// same answer to the last bit) and keep its flow. `Ok((response, None))` when the adaptive
+/// run finished a creep in closed form, which keeps no flow to read.
+pub fn simulate_flow(
+    params: &ImpactParams,
+    law: ContactLaw,
+    opts: &SolveOptions,
+) -> Result<(ImpactResponse, Option<Flow>), SolveError> {
+    if law == ContactLaw::Linear && opts.method != Some(Method::Numeric) {
+        let (r, path) = simulate_path(params, opts)?;
+        return Ok((r, Some(Flow::Exact(path))));
+    }
+    params.validate()?;
+    let n = params.normalized();
+    let contact = Contact {
+        law,
+        zp_bar: n.zp_bar,
+        kappa: n.kappa,
+    };
+    let (out, path) = numeric::solve_path(
+        &n,
+        &contact,
+        &SolveOptions {
+            samples: 0,
+            ..*opts
+        },
+    );
+    if let Some(reason) = out.unresolved {
+        return Err(SolveError::Unresolved {
+            reason,
+            steps: out.steps,
+            lambda: n.lambda,
+            zeta: n.zeta,
+        });
+    }
+    let response = to_si(params, n, law, Method::Numeric, out);
+    Ok((response, path.map(Flow::Numeric)))
+}
+
 /// Run one impact from λ, ζ alone (m = K_p = v0 = 1, no flattening).
 pub fn simulate_normalized(
     lambda: f64,

@@ -12,6 +12,7 @@ mod checks;
 mod cor;
 pub mod lm;
 mod multi;
+pub mod oblique;
 mod result;
 mod single;
 pub mod stats;

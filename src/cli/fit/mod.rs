@@ -15,6 +15,7 @@ use std::io::Write;
 use std::path::PathBuf;
 
 pub mod multi;
+mod oblique;
 mod plot;
 mod report;
 mod save;
@@ -49,6 +50,10 @@ pub struct FitArgs {
     /// Drop tests from a CSV with columns drop_height_m, rebound_height_m
     #[arg(long, value_name = "FILE")]
     pub drop_test: Option<PathBuf>,
+    /// Oblique bounces: CSV with columns v0, angle_deg, spin_in, vx_out, vy_out (optional
+    /// spin_out); fits friction and tangential_stiffness (and inertia_factor with spin_out)
+    #[arg(long, value_name = "FILE")]
+    pub oblique: Option<PathBuf>,
     /// Drop tests: correct for quadratic air drag with this drag coefficient (≈ 0.47 for a
     /// smooth sphere) [default: no drag]
     #[arg(long, value_name = "CD", value_parser = super::number::number, allow_hyphen_values = true)]
@@ -95,6 +100,8 @@ pub enum Source {
     /// (drop, rebound) heights from the command line
     Drops(Vec<(f64, f64)>),
     DropFile(PathBuf),
+    /// Oblique bounces (`--oblique`, docs/oblique.md §9).
+    Oblique(PathBuf),
 }
 
 /// The data of a fit, loaded and labelled.
@@ -144,6 +151,9 @@ impl FitArgs {
         if let Some(p) = &self.drop_test {
             given.push(Source::DropFile(p.clone()));
         }
+        if let Some(p) = &self.oblique {
+            given.push(Source::Oblique(p.clone()));
+        }
         // air drag corrects drop heights only: with other data it is refused, not ignored
         // (tests/fit_answers.rs, drag_is_refused_where_there_is_no_flight)
         let drops = matches!(given.as_slice(), [Source::Drops(_) | Source::DropFile(_)]);
@@ -157,11 +167,11 @@ impl FitArgs {
             1 => Ok(given.pop().unwrap_or(Source::Cor(f64::NAN))),
             0 => anyhow::bail!(
                 "nothing to fit: give --cor E, --cor-table FILE, --force-time FILE, \
-                 --drop-height H --rebound-height R, or --drop-test FILE"
+                 --drop-height H --rebound-height R, --drop-test FILE, or --oblique FILE"
             ),
             _ => anyhow::bail!(
                 "give one kind of data to fit: --cor, --cor-table, --force-time, \
-                 --drop-height/--rebound-height and --drop-test exclude each other"
+                 --drop-height/--rebound-height, --drop-test and --oblique exclude each other"
             ),
         }
     }
@@ -179,6 +189,7 @@ pub fn run(a: &FitArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     let source = a.source()?;
     let free = a.free_params()?;
     match (&source, free.as_deref()) {
+        (Source::Oblique(p), _) => oblique::run(a, p, out),
         (Source::Cor(e), None) | (Source::Cor(e), Some([Param::KR])) => single(a, *e, out),
         _ => multi::run(a, &source, free, out),
     }

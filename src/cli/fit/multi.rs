@@ -53,6 +53,11 @@ fn load(a: &FitArgs, source: &Source, ball: &Ball) -> anyhow::Result<Loaded> {
     };
     let name = |p: &std::path::Path| Some(p.display().to_string());
     Ok(match source {
+        // `fit::run` hands oblique bounces to `oblique`
+        Source::Oblique(p) => anyhow::bail!(
+            "{}: oblique bounces fit the tangential model (fit --oblique)",
+            p.display()
+        ),
         Source::Trace(p) => {
             let t = files::trace(p)?;
             let end_line = t.end_line;

@@ -159,7 +159,7 @@ impl Impact {
     }
 
     /// dF̄/dz̄ on the branch in force.
-    fn stiffness(&self, z: f64) -> f64 {
+    pub(super) fn stiffness(&self, z: f64) -> f64 {
         match self.phase {
             Phase::Loading => self.contact.loading_stiffness(z),
             Phase::Unloading(u) => self.contact.unloading_stiffness(z, &u),

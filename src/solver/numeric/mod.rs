@@ -15,7 +15,10 @@ use crate::model::params::Normalized;
 use impact::Impact;
 use runner::PhaseRunner;
 
+pub use flow::NumericPath;
+
 mod creep;
+mod flow;
 mod impact;
 mod integrator;
 mod phase;
@@ -108,4 +111,23 @@ pub(crate) fn solve(n: &Normalized, contact: &Contact, opts: &SolveOptions) -> O
     out.steps += again.outcome.steps;
     out.samples = again.samples;
     out
+}
+
+/// The run of `solve` (without samples: the very same integration) and its flow, which the
+/// oblique impact reads at any τ (src/oblique/); `None` when a creep was finished in closed
+/// form and left no steps to read.
+pub(crate) fn solve_path(
+    n: &Normalized,
+    contact: &Contact,
+    opts: &SolveOptions,
+) -> (Outcome, Option<NumericPath>) {
+    let run = PhaseRunner::new(n, contact, opts.rtol, &[]).keeping().run();
+    let imp = Impact {
+        lambda: n.lambda,
+        zeta: n.zeta,
+        contact: *contact,
+        phase: impact::Phase::Loading,
+    };
+    let path = run.kept.map(|k| NumericPath::new(&imp, &k));
+    (run.outcome, path)
 }

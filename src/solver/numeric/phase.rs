@@ -75,6 +75,9 @@ pub(super) struct Integrated {
     pub(super) stage: usize,
     /// The phase stopped at an event the integration to it did not confirm; it goes on.
     pub(super) spurious: bool,
+    /// The accepted steps' ends (τ, x) up to `last` included, when the flow is kept
+    /// (`flow`): where the oblique impact reads the normal motion of any law.
+    pub(super) knots: Vec<(f64, X)>,
 }
 
 /// The custom solout: finds the first watched crossing (terminal), and records evenly spaced
@@ -93,10 +96,18 @@ struct Watcher<'a> {
     stiff: bool,
     stage: usize,
     spurious: bool,
+    /// Keep the steps' ends (see `Integrated::knots`).
+    keep: bool,
+    knots: Vec<(f64, X)>,
 }
 
 impl Watcher<'_> {
-    fn into_integrated(self) -> Integrated {
+    fn into_integrated(mut self) -> Integrated {
+        // the phase's end is a knot whichever way it came (an event integrated to, `t_stop`,
+        // rest, or where the cascade gave up)
+        if self.keep && self.knots.last().is_none_or(|k| k.0 < self.last.0) {
+            self.knots.push(self.last);
+        }
         Integrated {
             hit: self.hit.map(|h| h.watch),
             last: self.last,
@@ -106,6 +117,7 @@ impl Watcher<'_> {
             stiff: self.stiff,
             stage: self.stage,
             spurious: self.spurious,
+            knots: self.knots,
         }
     }
 }
@@ -155,6 +167,10 @@ impl Solout<f64, X> for Watcher<'_> {
         {
             self.samples.push((ts, at(ts.max(t_prev))));
         }
+        // a step that crosses an event ends at the event, integrated to (`confirm`)
+        if self.keep && best.is_none() {
+            self.knots.push((t_curr, *y_curr));
+        }
         match best {
             Some((t, watch)) => {
                 self.hit = Some(Hit {
@@ -175,15 +191,15 @@ impl Solout<f64, X> for Watcher<'_> {
 
 /// Integrate one phase from (t0, x0) until a watched event or `t_stop`, down the integrator
 /// cascade from its entry (the stiff one when the dashpot is stiff there), or from `floor` if
-/// that is later.
+/// that is later; with `keep`, every accepted step's end is kept (`Integrated::knots`).
 pub(super) fn integrate(
     imp: &Impact,
     (t0, x0): (f64, X),
     t_stop: f64,
     watches: Vec<Watch>,
     grid: &[f64],
-    rtol: f64,
-    floor: usize,
+    (rtol, floor): (f64, usize),
+    keep: bool,
 ) -> Integrated {
     let mut w = Watcher {
         imp,
@@ -198,6 +214,8 @@ pub(super) fn integrate(
         stiff: false,
         stage: floor,
         spurious: false,
+        keep,
+        knots: Vec::new(),
     };
     // The crate reports giving up (out of steps, step size underflow) as an error; the watcher
     // then holds what was reached, and the phase goes on from there with the next integrator

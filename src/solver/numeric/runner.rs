@@ -4,6 +4,7 @@
 //! state from one phase to the next; each transition is one of its methods.
 
 use super::creep::Closed;
+use super::flow::Kept;
 use super::impact::{Impact, Phase};
 use super::integrator::{self, CASCADE};
 use super::phase::{Integrated, Watch, integrate};
@@ -18,6 +19,9 @@ use crate::solver::{EventKind, Outcome, Sample, Unresolved};
 pub(super) struct PhaseRun {
     pub(super) outcome: Outcome,
     pub(super) samples: Vec<Sample>,
+    /// Every phase's steps, when kept (`PhaseRunner::keep`); `None` when a creep was finished
+    /// in closed form, which leaves no steps to read the flow on.
+    pub(super) kept: Option<Vec<Kept>>,
 }
 
 /// What follows a phase.
@@ -54,6 +58,11 @@ pub(super) struct PhaseRunner<'a> {
     flips_left: usize,
     /// The first stage of the integrator cascade the next phase may use (see `integrate`).
     floor: usize,
+    /// Keep every phase's steps (the flow the oblique impact reads, `flow`).
+    keep: bool,
+    kept: Vec<Kept>,
+    /// A creep was finished in closed form.
+    closed: bool,
 }
 
 impl<'a> PhaseRunner<'a> {
@@ -79,7 +88,16 @@ impl<'a> PhaseRunner<'a> {
             phases_left: MAX_PHASES,
             flips_left: MAX_FLIPS,
             floor: 0,
+            keep: false,
+            kept: Vec::new(),
+            closed: false,
         }
+    }
+
+    /// The same runner keeping every phase's steps (see `flow`).
+    pub(super) fn keeping(mut self) -> Self {
+        self.keep = true;
+        self
     }
 
     /// Run every phase to the end of the impact, or until a budget is spent.
@@ -102,8 +120,23 @@ impl<'a> PhaseRunner<'a> {
         let watches = self.watches(z0);
         let (start, rtol) = ((self.t, self.x), self.rtol);
         let phase = integrate(
-            &self.imp, start, self.t_max, watches, self.rest, rtol, self.floor,
+            &self.imp,
+            start,
+            self.t_max,
+            watches,
+            self.rest,
+            (rtol, self.floor),
+            self.keep,
         );
+        if self.keep {
+            let mut knots = Vec::with_capacity(phase.knots.len() + 1);
+            knots.push(start);
+            knots.extend(&phase.knots);
+            self.kept.push(Kept {
+                imp_phase: self.imp.phase,
+                knots,
+            });
+        }
         let closing = self.check_end(&phase);
         self.record(&phase, z0);
         (self.t, self.x) = phase.last;
@@ -319,6 +352,7 @@ impl<'a> PhaseRunner<'a> {
 
     /// Finish the run along a creep in closed form.
     fn close(&mut self, c: &Closed) {
+        self.closed = true;
         let start = (self.t, self.x);
         let end = c.finish(
             &self.imp,
@@ -365,9 +399,11 @@ impl<'a> PhaseRunner<'a> {
             });
             self.samples.push(Sample { tau, ..last });
         }
+        let kept = (self.keep && !self.closed).then_some(self.kept);
         PhaseRun {
             outcome: self.out,
             samples: self.samples,
+            kept,
         }
     }
 }

@@ -1,0 +1,416 @@
+//! μ, K_t (and κ when the outgoing spin is measured) fitted to measured oblique bounces
+//! (docs/oblique.md §9): the rows' outgoing v_x (and R ω_out) against the oblique model's, by
+//! the fits' own bounded Levenberg–Marquardt ([`super::lm`]) in the logarithms of the
+//! parameters, with the same intervals ([`super::stats`]) and the same verdict
+//! ([`super::verdict`]: converged, every parameter pinned, none on its bound) as the other
+//! fits. The normal impact of each row does not depend on μ, K_t or κ: it is solved once
+//! (`oblique::NormalAt`) and only the tangential motion is run at each evaluation.
+
+use super::lm::{self, Residuals};
+use super::stats::{CONDITION_MAX, uncertainty};
+use super::{Estimate, MultiFitError, verdict};
+use crate::analysis::work::{self, Watch};
+use crate::measured::ObliqueRow;
+use crate::model::contact::ContactLaw;
+use crate::model::params::ImpactParams;
+use crate::oblique::{NormalAt, Oblique};
+use std::cell::Cell;
+
+/// The ball and where the fit starts: μ, K_t and κ are the starting values (κ is held when
+/// the rows carry no outgoing spin).
+#[derive(Debug, Clone, Copy)]
+pub struct ObliqueStart {
+    /// The ball (its normal model is held).
+    pub params: ImpactParams,
+    /// The contact law of the normal impact.
+    pub law: ContactLaw,
+    /// R (m).
+    pub radius: f64,
+    /// μ to start from; `None`: the largest apparent friction of the rows.
+    pub friction: Option<f64>,
+    /// K_t (N/m) to start from.
+    pub tangential_stiffness: f64,
+    /// κ to start from, or to hold.
+    pub inertia_factor: f64,
+}
+
+/// The fitted tangential model and how well the data pin it.
+#[derive(Debug, Clone)]
+pub struct ObliqueFit {
+    /// `friction`, `tangential_stiffness` and, with spins, `inertia_factor`.
+    pub fitted: Vec<Estimate>,
+    /// κ as used: fitted, or held at the start's.
+    pub inertia_factor: f64,
+    /// The correlations between the fitted quantities, in the order of `fitted`.
+    pub correlation: Vec<Vec<f64>>,
+    /// RMS of the model's v_x,out − the data's (m/s).
+    pub rms_vx: f64,
+    /// RMS of the model's ω_out − the data's (rad/s), when measured.
+    pub rms_spin: Option<f64>,
+    /// RMS of the normal model's v_y,out − the data's (m/s): not fitted here (μ, K_t and κ do
+    /// not move it); large, it says the normal ball is not this one.
+    pub rms_vy: f64,
+    /// The model's (v_x,out, ω_out) at each row.
+    pub model: Vec<(f64, f64)>,
+    /// Residuals fitted (a row's v_x, and its spin when measured).
+    pub points: usize,
+    /// Levenberg–Marquardt iterations over every start.
+    pub iterations: usize,
+    /// The best start met a convergence test.
+    pub converged: bool,
+    /// Condition number of the column-scaled Jacobian.
+    pub condition: f64,
+    /// What the caller should know, one line each.
+    pub warnings: Vec<String>,
+    /// Converged, every fitted quantity pinned, none on its bound.
+    pub identified: bool,
+    /// The fitted quantities the data do not pin (`verdict::pinned`).
+    pub not_pinned: Vec<&'static str>,
+    /// The fitted quantities that ran to the bound of their search.
+    pub on_bound: Vec<&'static str>,
+}
+
+/// The model runs one evaluation costs, in linear-law impacts: an oblique impact is priced
+/// as ten (benches/oblique.rs: 14.6 µs against the normal impact's 2.4 µs, BENCHMARKS.md).
+const OBLIQUE_COST: u64 = 10;
+
+struct Problem<'a> {
+    rows: &'a [ObliqueRow],
+    normals: Vec<NormalAt>,
+    radius: f64,
+    /// κ when held (no spins measured).
+    kappa: Option<f64>,
+    /// The weight of the spin residuals: R, then the ratio of the two kinds' scatter.
+    spin_weight: Cell<f64>,
+    watch: &'a dyn Watch,
+    /// Evaluations run, and whether the watch stopped the fit.
+    runs: Cell<u64>,
+    halted: Cell<bool>,
+}
+
+impl Problem<'_> {
+    fn spins(&self) -> bool {
+        self.kappa.is_none()
+    }
+
+    /// (v_x,out, ω_out) of every row at x = (ln μ, ln K_t[, ln κ]).
+    fn predict(&self, x: &[f64]) -> Option<Vec<(f64, f64)>> {
+        let runs = self.runs.get() + 1;
+        self.runs.set(runs);
+        if self.halted.get() || !self.watch.step(runs) {
+            self.halted.set(true);
+            return None;
+        }
+        let kappa = self.kappa.unwrap_or_else(|| x[2].exp());
+        self.rows
+            .iter()
+            .zip(&self.normals)
+            .map(|(row, n)| {
+                let o = Oblique::new(
+                    row.angle_deg,
+                    row.spin_in,
+                    x[0].exp(),
+                    x[1].exp(),
+                    kappa,
+                    self.radius,
+                )
+                .ok()?;
+                let r = n.solve(&o, 0).ok()?;
+                Some((r.vx_out, r.spin_out))
+            })
+            .collect()
+    }
+}
+
+impl Residuals for Problem<'_> {
+    fn residuals(&self, x: &[f64]) -> Option<Vec<f64>> {
+        let pred = self.predict(x)?;
+        let w = self.spin_weight.get();
+        let mut r: Vec<f64> = pred
+            .iter()
+            .zip(self.rows)
+            .map(|(p, q)| p.0 - q.vx_out)
+            .collect();
+        if self.spins() {
+            let spins = pred.iter().zip(self.rows);
+            r.extend(spins.map(|(p, q)| w * (p.1 - q.spin_out.unwrap_or(f64::NAN))));
+        }
+        Some(r)
+    }
+    fn step(&self, _j: usize) -> f64 {
+        1e-6
+    }
+    fn max_step(&self, _j: usize) -> f64 {
+        2.0
+    }
+    fn stopped(&self) -> bool {
+        self.halted.get()
+    }
+}
+
+const NAMES: [&str; 3] = ["friction", "tangential_stiffness", "inertia_factor"];
+
+/// Fit μ and K_t (and κ when every row gives `spin_out`) to `rows`; each evaluation is
+/// reported to `watch`, which may stop the fit ([`MultiFitError::Interrupted`]); the work is
+/// checked against the work limit before it starts.
+pub fn fit_oblique(
+    start: &ObliqueStart,
+    rows: &[ObliqueRow],
+    watch: &dyn Watch,
+) -> Result<ObliqueFit, MultiFitError> {
+    let spins = rows.iter().all(|r| r.spin_out.is_some());
+    let vars = if spins { 3 } else { 2 };
+    let count = rows.len() * if spins { 2 } else { 1 };
+    if count < vars {
+        return Err(MultiFitError::TooFew {
+            points: count,
+            parameters: vars,
+        });
+    }
+    let normals = rows
+        .iter()
+        .map(|r| NormalAt::new(&start.params, start.law, r.v0, r.angle_deg))
+        .collect::<Result<Vec<_>, _>>()
+        .map_err(|_| MultiFitError::NoAnswer)?;
+    let p = Problem {
+        rows,
+        normals,
+        radius: start.radius,
+        kappa: (!spins).then_some(start.inertia_factor),
+        spin_weight: Cell::new(start.radius),
+        watch,
+        runs: Cell::new(0),
+        halted: Cell::new(false),
+    };
+    let mu0 = start
+        .friction
+        .unwrap_or_else(|| apparent_friction(rows, &p));
+    let x0 = [
+        mu0.max(1e-3).ln(),
+        start.tangential_stiffness.ln(),
+        start.inertia_factor.ln(),
+    ];
+    let starts = starting_points(&x0[..vars]);
+    let run = (rows.len() as u64) * OBLIQUE_COST * work::cost(start.law).min(4);
+    let iterations = work::fit_iterations(run, vars, starts.len() + 1, start.law, || {
+        format!("an oblique fit of {vars} parameters to {} rows", rows.len())
+    })?;
+    let (lo, hi) = bounds(&x0[..vars]);
+    let opts = lm::Options {
+        max_iterations: iterations,
+        ..lm::Options::default()
+    };
+    let stopped = |p: &Problem| {
+        if p.stopped() {
+            MultiFitError::Interrupted
+        } else {
+            MultiFitError::NoAnswer
+        }
+    };
+    let mut best = minimize_from(&p, starts, &lo, &hi, opts).ok_or_else(|| stopped(&p))?;
+    if spins {
+        // weigh the spins by the scatter of the two kinds, then fit again from there (as a
+        // COR table of mixed kinds is, `multi::fit_cor`)
+        let pred = p.predict(&best.x).ok_or(MultiFitError::NoAnswer)?;
+        let (vx, spin) = rms_pair(&pred, rows);
+        if vx > 0.0 && spin > 0.0 {
+            p.spin_weight.set(vx / spin);
+            let its = best.iterations;
+            best = minimize_from(&p, vec![best.x.clone()], &lo, &hi, opts)
+                .ok_or_else(|| stopped(&p))?;
+            best.iterations += its;
+        }
+    }
+    finish(&p, best, &lo, &hi)
+}
+
+/// The largest apparent friction |Δv_x|/(v_y,in + v_y,out) of the rows: a row that slid
+/// throughout shows μ itself, one that gripped less.
+fn apparent_friction(rows: &[ObliqueRow], p: &Problem) -> f64 {
+    rows.iter()
+        .zip(&p.normals)
+        .map(|(r, _)| {
+            let theta = r.angle_deg.to_radians();
+            let (vx, vy) = (r.v0 * theta.cos(), r.v0 * theta.sin());
+            (vx - r.vx_out).abs() / (vy + r.vy_out)
+        })
+        .fold(0.0, f64::max)
+}
+
+/// The start and a few others (μ halved and doubled, K_t a decade either way): the outgoing
+/// motion is piecewise smooth in them (a row turns from sliding to gripping), and a start on
+/// the wrong side of a turn can stall.
+fn starting_points(x0: &[f64]) -> Vec<Vec<f64>> {
+    let mut starts = vec![x0.to_vec()];
+    for (dm, dk) in [
+        (0.0, 10f64.ln()),
+        (0.0, -(10f64.ln())),
+        (2f64.ln(), 0.0),
+        (-(2f64.ln()), 0.0),
+    ] {
+        let mut x = x0.to_vec();
+        x[0] += dm;
+        x[1] += dk;
+        starts.push(x);
+    }
+    starts
+}
+
+/// The box: μ in [1e-4, 100], K_t four decades either side of its start, κ in [0.05, 1].
+fn bounds(x0: &[f64]) -> (Vec<f64>, Vec<f64>) {
+    let mut lo = vec![1e-4f64.ln(), x0[1] - 4.0 * 10f64.ln()];
+    let mut hi = vec![100f64.ln(), x0[1] + 4.0 * 10f64.ln()];
+    if x0.len() == 3 {
+        lo.push(0.05f64.ln());
+        hi.push(0.0);
+    }
+    (lo, hi)
+}
+
+fn minimize_from(
+    p: &Problem,
+    starts: Vec<Vec<f64>>,
+    lo: &[f64],
+    hi: &[f64],
+    opts: lm::Options,
+) -> Option<lm::Solution> {
+    let mut best: Option<lm::Solution> = None;
+    let mut iterations = 0;
+    for x0 in starts {
+        if p.stopped() {
+            return None;
+        }
+        let Some(s) = lm::minimize(p, &x0, lo, hi, opts) else {
+            continue;
+        };
+        iterations += s.iterations;
+        if best.as_ref().is_none_or(|b| s.cost < b.cost) {
+            best = Some(s);
+        }
+    }
+    best.map(|mut b| {
+        b.iterations = iterations;
+        b
+    })
+}
+
+fn rms(r: impl Iterator<Item = f64>) -> f64 {
+    let (sum, n) = r.fold((0.0, 0usize), |(s, n), v| (s + v * v, n + 1));
+    (sum / n.max(1) as f64).sqrt()
+}
+
+/// RMS of the v_x misses (m/s) and of the spin misses (rad/s).
+fn rms_pair(pred: &[(f64, f64)], rows: &[ObliqueRow]) -> (f64, f64) {
+    let vx = rms(pred.iter().zip(rows).map(|(p, q)| p.0 - q.vx_out));
+    let spin = rms(pred
+        .iter()
+        .zip(rows)
+        .filter_map(|(p, q)| q.spin_out.map(|s| p.1 - s)));
+    (vx, spin)
+}
+
+/// Estimates, intervals and the verdict at the minimum.
+fn finish(
+    p: &Problem,
+    sol: lm::Solution,
+    lo: &[f64],
+    hi: &[f64],
+) -> Result<ObliqueFit, MultiFitError> {
+    let finite = sol
+        .residuals
+        .iter()
+        .chain(sol.jacobian.iter())
+        .all(|v| v.is_finite());
+    if !finite {
+        return Err(MultiFitError::NonFinite);
+    }
+    let u = uncertainty(&sol.jacobian, &sol.residuals);
+    let vars = sol.x.len();
+    let dof = sol.residuals.len().saturating_sub(vars);
+    let fitted: Vec<Estimate> = (0..vars)
+        .map(|j| {
+            // symmetric in ln p, as every fitted parameter (`multi::finish`)
+            let (theta, s) = (sol.x[j], u.covariance[(j, j)].sqrt());
+            let ci95 = if s.is_finite() && dof > 0 {
+                [(theta - u.t975 * s).exp(), (theta + u.t975 * s).exp()]
+            } else {
+                [f64::NAN, f64::NAN]
+            };
+            Estimate {
+                name: NAMES[j],
+                unit: ["", "N/m", ""][j],
+                value: theta.exp(),
+                std_error: theta.exp() * s,
+                ci95,
+            }
+        })
+        .collect();
+    let on_bound: Vec<&'static str> = (0..vars)
+        .filter(|&j| verdict::on_bound(sol.x[j], lo[j], hi[j]))
+        .map(|j| NAMES[j])
+        .collect();
+    let not_pinned: Vec<&'static str> = fitted
+        .iter()
+        .filter(|e| !verdict::pinned(e, dof, on_bound.contains(&e.name)))
+        .map(|e| e.name)
+        .collect();
+    let pred = p.predict(&sol.x).ok_or(MultiFitError::NoAnswer)?;
+    let (rms_vx, rms_spin) = rms_pair(&pred, p.rows);
+    let rms_vy = rms(p.rows.iter().zip(&p.normals).map(|(q, n)| {
+        let theta = q.angle_deg.to_radians();
+        let vy = if q.angle_deg == 90.0 {
+            q.v0
+        } else {
+            q.v0 * theta.sin()
+        };
+        n.normal().cor * vy - q.vy_out
+    }));
+    let mut warnings = Vec::new();
+    if dof == 0 {
+        warnings.push(
+            "as many data as parameters: no residual is left to estimate the uncertainty".into(),
+        );
+    }
+    if u.condition > CONDITION_MAX {
+        warnings.push(format!(
+            "{} is not identifiable from these data: the fit cannot tell it from the other \
+             parameters (condition number {:.1e}); add rows that slide and rows that grip",
+            NAMES[u.weakest], u.condition
+        ));
+    }
+    if !sol.converged {
+        warnings.push(format!(
+            "the fit stopped after {} iterations without converging",
+            sol.iterations
+        ));
+    }
+    let vy_scale = rms(p.rows.iter().map(|q| q.vy_out));
+    if rms_vy > 0.05 * vy_scale {
+        warnings.push(format!(
+            "the normal model misses vy_out by {:.1} % RMS: μ and K_t cannot correct that; fit \
+             the normal ball first (fit --cor-table)",
+            100.0 * rms_vy / vy_scale
+        ));
+    }
+    let identified = sol.converged && not_pinned.is_empty();
+    let correlation = (0..vars)
+        .map(|i| (0..vars).map(|j| u.correlation[(i, j)]).collect())
+        .collect();
+    Ok(ObliqueFit {
+        inertia_factor: p.kappa.unwrap_or_else(|| sol.x[2].exp()),
+        fitted,
+        correlation,
+        rms_vx,
+        rms_spin: p.spins().then_some(rms_spin),
+        rms_vy,
+        model: pred,
+        points: sol.residuals.len(),
+        iterations: sol.iterations,
+        converged: sol.converged,
+        condition: u.condition,
+        warnings,
+        identified,
+        not_pinned,
+        on_bound,
+    })
+}
