@@ -11,6 +11,7 @@
 //! (DOP853 with events at every switch); tests/oblique.rs holds the two together.
 
 pub mod court;
+mod frictions;
 mod energy;
 pub mod reference;
 mod tangential;
@@ -22,6 +23,7 @@ use crate::solver::exact::{NormalPath, PathPoint};
 use crate::solver::{ImpactResponse, SolveError, SolveOptions, simulate_path};
 use serde::Serialize;
 use std::fmt;
+pub use frictions::solve_frictions;
 pub use tangential::{Mode, Phase};
 
 /// Most phases (stick or slip) one impact may switch through before it is called unresolved.

@@ -83,6 +83,8 @@ pub struct App {
     pub(in crate::tui) map: crate::tui::views::map::state::MapView,
     /// The crosshair (`x`), when it is on.
     pub(in crate::tui) crosshair: Option<super::crosshair::Crosshair>,
+    /// The oblique view's angle, spin, friction, impact and map.
+    pub(in crate::tui) oblique: crate::tui::views::oblique::state::ObliqueView,
 }
 
 impl App {
@@ -127,6 +129,7 @@ impl App {
             size: None,
             map: Default::default(),
             crosshair: None,
+            oblique: Default::default(),
         };
         app.refresh();
         app
@@ -168,6 +171,7 @@ impl App {
                 | Action::Resize(..)
                 | Action::FitReady(..)
                 | Action::MapPass { .. }
+                | Action::ObliqueMapReady { .. }
         ) {
             self.message = None;
         }
@@ -204,6 +208,11 @@ impl App {
             }
             Action::Export if self.view == View::Drop => self.warn(
                 "the drop view has no export: `bouncelab drop --format csv` writes its data".into(),
+            ),
+            Action::Export if self.view == View::Oblique => self.warn(
+                "the oblique view has no export: `bouncelab oblique --history --format csv` \
+                 writes its data (`y` is not its line)"
+                    .into(),
             ),
             Action::Export => self.export_wanted = true,
             Action::OpenPicker => return vec![Effect::ListPresets],
@@ -243,6 +252,10 @@ impl App {
             | Action::MapTargets
             | Action::MapPass { .. } => self.map_action(action),
             Action::ShowCommand => return self.show_command(),
+            Action::Oblique(key) => self.oblique_action(key),
+            Action::ObliqueMapReady { generation, map } => {
+                self.receive_oblique_map(generation, *map)
+            }
             _ => self.edit(action),
         }
         Vec::new()
@@ -340,6 +353,7 @@ impl App {
         let mut effects: Vec<Effect> = self.refresh_sweeps().into_iter().collect();
         effects.extend(self.refresh_models());
         effects.extend(self.refresh_map());
+        effects.extend(self.refresh_oblique());
         if self.export_wanted {
             effects.extend(self.prepare_export());
         }
