@@ -141,6 +141,7 @@ impl Widget for &KeyHints {
         } else if let Some(page) = self.oblique {
             let mut v = OBLIQUE_HINTS.to_vec();
             if page == crate::tui::views::oblique::state::Page::Map {
+                v[3] = ("t", "charts", 1);
                 v.insert(3, ("←→↑↓", "θ μ", 0));
             }
             let arrows = page == crate::tui::views::oblique::state::Page::Map;

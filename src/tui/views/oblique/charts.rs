@@ -48,18 +48,27 @@ fn bounds(values: impl Iterator<Item = f64>) -> [f64; 2] {
     [lo - pad, hi + pad]
 }
 
-/// Three labels over `[lo, hi]`: the ends and the middle, to four digits.
-fn labels(b: [f64; 2]) -> Vec<String> {
+/// Labels over `[lo, hi]` to three digits: the ends and the middle, or the ends alone on a
+/// chart narrower than `MIDDLE_FROM` columns (at 60 × 20 three labels read "0 0").
+fn labels(b: [f64; 2], width: u16) -> Vec<String> {
     let mid = 0.5 * (b[0] + b[1]);
-    [b[0], mid, b[1]].iter().map(|&v| sig(v, 3)).collect()
+    let at: &[f64] = if width >= MIDDLE_FROM {
+        &[b[0], mid, b[1]]
+    } else {
+        &[b[0], b[1]]
+    };
+    at.iter().map(|&v| sig(v, 3)).collect()
 }
+
+/// Narrowest chart with a middle label on its axes.
+const MIDDLE_FROM: u16 = 30;
 
 /// One chart against time in ms: `sets` are (legend, points, style, dotted).
 fn time_chart<'a>(
     title: &str,
     sets: Vec<Dataset<'a>>,
-    t_ms: f64,
-    y: [f64; 2],
+    (t_ms, y): (f64, [f64; 2]),
+    width: u16,
     theme: Theme,
 ) -> Chart<'a> {
     Chart::new(sets)
@@ -69,9 +78,14 @@ fn time_chart<'a>(
             Axis::default()
                 .style(theme.axis())
                 .bounds([0.0, t_ms])
-                .labels(labels([0.0, t_ms])),
+                .labels(labels([0.0, t_ms], width)),
         )
-        .y_axis(Axis::default().style(theme.axis()).bounds(y).labels(labels(y)))
+        .y_axis(
+            Axis::default()
+                .style(theme.axis())
+                .bounds(y)
+                .labels(labels(y, width)),
+        )
 }
 
 fn set<'a>(name: Option<String>, data: &'a [(f64, f64)], style: Style, line: bool) -> Dataset<'a> {
@@ -118,7 +132,9 @@ pub fn render_forces(r: &ObliqueResponse, theme: Theme, area: Rect, buf: &mut Bu
         let name = (i == 0).then(|| format!("┊ reversal {} ms", sig(t * 1e3, 3)));
         sets.push(set(name, pts, theme.measured(), false));
     }
-    time_chart("Forces · F [N] vs t [ms]", sets, t_ms, y, theme).render(area, buf);
+    // the names in the title too: a small chart hides its legend
+    let title = "Forces · ━ F_n ┄ F_t [N] vs t [ms]";
+    time_chart(title, sets, (t_ms, y), area.width, theme).render(area, buf);
 }
 
 /// v_c = v_x − Rω in m/s against t in ms, the zero line dotted (the point sticks on it).
@@ -132,7 +148,8 @@ pub fn render_slip(r: &ObliqueResponse, theme: Theme, area: Rect, buf: &mut Buff
         set(Some("━ v_c".into()), &vc, Style::default().fg(theme.current()), true),
         set(None, &zero, theme.dim(), false),
     ];
-    time_chart("Slip · v_c [m/s] vs t [ms]", sets, t_ms, y, theme).render(area, buf);
+    let title = "Slip · v_c [m/s] vs t [ms]";
+    time_chart(title, sets, (t_ms, y), area.width, theme).render(area, buf);
 }
 
 /// ω in rad/s against t in ms.
@@ -147,7 +164,8 @@ pub fn render_spin(r: &ObliqueResponse, theme: Theme, area: Rect, buf: &mut Buff
         Style::default().fg(theme.current()),
         true,
     )];
-    time_chart("Spin · ω [rad/s] vs t [ms]", sets, t_ms, y, theme).render(area, buf);
+    let title = "Spin · ω [rad/s] vs t [ms]";
+    time_chart(title, sets, (t_ms, y), area.width, theme).render(area, buf);
 }
 
 /// The surface, the incoming path (ending at the contact, length 1) and the outgoing one
@@ -185,8 +203,11 @@ pub fn render_paths(r: &ObliqueResponse, theme: Theme, area: Rect, buf: &mut Buf
             ctx.draw(&CanvasLine::new(-x_half, 0.0, x_half, 0.0, ground));
             ctx.draw(&CanvasLine::new(x_in, y_in, 0.0, 0.0, live));
             ctx.draw(&CanvasLine::new(0.0, 0.0, x_out, y_out, second));
-            ctx.print(-x_half, -0.08, Span::styled(lab_in.clone(), t_in));
-            ctx.print(0.05 * x_half, -0.08, Span::styled(lab_out.clone(), t_out));
+            // "in" at the top left, "out" under it at the right (a narrow canvas keeps both)
+            let cell = 2.0 * x_half / w;
+            let right = x_half - cell * (lab_out.chars().count() as f64 + 0.5);
+            ctx.print(-x_half, y_span - 0.15, Span::styled(lab_in.clone(), t_in));
+            ctx.print(right, y_span - 0.15 - 1.25 / h, Span::styled(lab_out.clone(), t_out));
         })
         .render(area, buf);
 }

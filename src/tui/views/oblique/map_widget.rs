@@ -4,7 +4,7 @@
 //! character — the cursor ╋ at (θ, μ), the range of the quantity and the cell's values under
 //! the map.
 
-use crate::text::sig;
+use crate::text::{sig, sig_trim};
 use crate::tui::theme::Theme;
 use crate::tui::views::map::cells::{self, CURSOR, NAN_COLOR, NAN_SHADE};
 use crate::tui::views::oblique::map::{
@@ -108,8 +108,8 @@ impl MapRaster<'_> {
     /// μ at the top and bottom of the gutter, θ under the plot.
     fn labels(&self, plot: Rect, inner: Rect, buf: &mut Buffer) {
         let dim = self.theme.dim();
-        let top = sig(friction_at(FRICTIONS - 1), 2);
-        let bottom = sig(friction_at(0), 2);
+        let top = sig_trim(friction_at(FRICTIONS - 1), 2);
+        let bottom = sig_trim(friction_at(0), 2);
         buf.set_stringn(inner.x, plot.y, format!("μ {top}"), usize::from(GUTTER), dim);
         buf.set_stringn(inner.x, plot.bottom() - 1, bottom, usize::from(GUTTER), dim);
         let y = plot.bottom();
@@ -142,7 +142,7 @@ impl MapRaster<'_> {
             Line::raw(format!(
                 " ╋ θ {}°, μ {}: {here}",
                 angle_at(ci),
-                sig(friction_at(cj), 2)
+                sig_trim(friction_at(cj), 2)
             )),
         ];
         Paragraph::new(lines).render(area, buf);

@@ -5,7 +5,7 @@
 
 use crate::api::CourtPace;
 use crate::oblique::ObliqueResponse;
-use crate::text::sig;
+use crate::text::{sig, sig_trim};
 use crate::tui::theme::Theme;
 use crate::tui::views::oblique::charts;
 use crate::tui::views::oblique::map_widget::MapRaster;
@@ -18,6 +18,8 @@ use ratatui::widgets::{Block, Paragraph, Widget, Wrap};
 
 /// Width of the readout column.
 const READOUT_WIDTH: u16 = 36;
+/// Narrowest chart column with three charts in its bottom row (v_c, ω and the paths).
+const NARROW: u16 = 60;
 
 /// The oblique view in its area (between the header and the message line).
 #[derive(Debug, Clone, Copy)]
@@ -70,12 +72,18 @@ impl ObliquePanel<'_> {
             let [slip, spin] = Layout::horizontal([Constraint::Fill(1); 2]).areas(bottom);
             charts::render_slip(r, theme, slip, buf);
             charts::render_spin(r, theme, spin, buf);
-        } else {
+        } else if main.width >= NARROW {
             self.render_readout(side, buf);
             let [slip, spin, paths] = Layout::horizontal([Constraint::Fill(1); 3]).areas(bottom);
             charts::render_slip(r, theme, slip, buf);
             charts::render_spin(r, theme, spin, buf);
             charts::render_paths(r, theme, paths, buf);
+        } else {
+            // two charts a row at most: the paths give way (the readout has both angles)
+            self.render_readout(side, buf);
+            let [slip, spin] = Layout::horizontal([Constraint::Fill(1); 2]).areas(bottom);
+            charts::render_slip(r, theme, slip, buf);
+            charts::render_spin(r, theme, spin, buf);
         }
     }
 
@@ -114,10 +122,10 @@ impl ObliquePanel<'_> {
             Line::styled(format!("{mark}{} {text}", p.symbol()), style)
         };
         vec![
-            row(ObliqueParam::Angle, format!("{}°", sig(v.angle, 4))),
-            row(ObliqueParam::Spin, format!("{} rad/s", sig(v.spin, 4))),
-            row(ObliqueParam::Friction, sig(v.friction, 4)),
-            Line::raw(format!(" v0 {} m/s", sig(self.v0, 4))),
+            row(ObliqueParam::Angle, format!("{}°", sig_trim(v.angle, 6))),
+            row(ObliqueParam::Spin, format!("{} rad/s", sig_trim(v.spin, 6))),
+            row(ObliqueParam::Friction, sig_trim(v.friction, 6)),
+            Line::raw(format!(" v0 {} m/s", sig_trim(self.v0, 6))),
         ]
     }
 }
@@ -128,7 +136,7 @@ fn result_lines(r: &ObliqueResponse, theme: Theme) -> Vec<Line<'static>> {
     let grip = if r.slid_throughout {
         "slid throughout".to_string()
     } else {
-        format!("grip {} ms", sig(r.grip_time * 1e3, 4))
+        format!("gripped {} ms", sig(r.grip_time * 1e3, 4))
     };
     vec![
         Line::styled("out", theme.dim()),
@@ -137,10 +145,8 @@ fn result_lines(r: &ObliqueResponse, theme: Theme) -> Vec<Line<'static>> {
         Line::raw(format!(" spin  {} rad/s", sig(r.spin_out, 4))),
         Line::raw(format!(" e_y {}  e_x {ex}", sig(r.cor_normal, 4))),
         Line::raw(format!(" μ_app {}", sig(r.apparent_friction, 4))),
-        Line::raw(format!(
-            " {grip} of {} ms",
-            sig(r.contact_time * 1e3, 4)
-        )),
+        Line::raw(format!(" contact {} ms", sig(r.contact_time * 1e3, 4))),
+        Line::raw(format!(" {grip}")),
     ]
 }
 
@@ -148,7 +154,7 @@ fn result_lines(r: &ObliqueResponse, theme: Theme) -> Vec<Line<'static>> {
 fn pace_lines(p: &CourtPace, mu: f64, theme: Theme) -> Vec<Line<'static>> {
     vec![
         Line::styled(
-            format!("ITF pace (30 m/s, 16°, μ {})", sig(mu, 3)),
+            format!("ITF court pace at μ {}", sig_trim(mu, 4)),
             theme.dim(),
         ),
         Line::from(vec![
