@@ -43,7 +43,7 @@ pub const KEYS: [(&str, &str); 67] = [
     ("t", "targets, e.g. cor>=0.8,max_force<=2000"),
     ("", ""),
     ("In the oblique view (i)", ""),
-    ("a/A w/W k/K", "θ ±1° (5°), ω ±10 (100) rad/s, μ ±0.01 (0.1)"),
+    ("a/A w/W k/K", "step θ ±1°, ω ±10 rad/s, μ ±0.01"),
     ("↑ ↓ / ← →", "change / select θ, ω or μ"),
     ("= or Enter", "type the selected one's value"),
     ("t", "the charts or the (θ, μ) map"),
