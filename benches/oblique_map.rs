@@ -9,13 +9,13 @@
 //! - `one_by_one`: the same 4500 impacts each through `Ball::oblique`, one core — the
 //!   baseline the shared normal impact and the cores improve on.
 
+use bouncelab::Ball;
 use bouncelab::api::ObliqueSpec;
 use bouncelab::preset::Preset;
 use bouncelab::tui::action::{Action, ObliqueKey};
 use bouncelab::tui::app::App;
 use bouncelab::tui::views::oblique::map::{self, MapSpec};
 use bouncelab::tui::views::oblique::param::ObliqueParam;
-use bouncelab::Ball;
 use divan::{Bencher, black_box};
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;

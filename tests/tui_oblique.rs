@@ -69,7 +69,10 @@ fn charts_at_every_size_in_colour_and_without() {
             if !color {
                 assert_colourless(&t);
             }
-            let name = format!("charts_{w}x{h}_{}", if color { "colour" } else { "no_color" });
+            let name = format!(
+                "charts_{w}x{h}_{}",
+                if color { "colour" } else { "no_color" }
+            );
             insta::assert_snapshot!(name, t.backend());
         }
     }
@@ -102,8 +105,19 @@ fn the_view_s_numbers_are_the_command_line_s() {
     let app = tennis_example(false);
     let r = app.oblique_view().response().expect("an answer");
     let out = common::bl(&[
-        "oblique", "--preset", "tennis", "--v0", "25", "--angle", "16", "--spin", "300",
-        "--friction", "0.6", "--format", "json",
+        "oblique",
+        "--preset",
+        "tennis",
+        "--v0",
+        "25",
+        "--angle",
+        "16",
+        "--spin",
+        "300",
+        "--friction",
+        "0.6",
+        "--format",
+        "json",
     ]);
     assert_eq!(out.code, 0, "{}", out.stderr);
     let j: Value = serde_json::from_str(&out.stdout).unwrap();
@@ -128,7 +142,13 @@ fn the_view_s_numbers_are_the_command_line_s() {
     assert_eq!(j["slid_throughout"].as_bool(), Some(r.slid_throughout));
     // the court pace of the readout is `bouncelab court`'s
     let out = common::bl(&[
-        "court", "--preset", "tennis", "--friction", "0.6", "--format", "json",
+        "court",
+        "--preset",
+        "tennis",
+        "--friction",
+        "0.6",
+        "--format",
+        "json",
     ]);
     assert_eq!(out.code, 0, "{}", out.stderr);
     let j: Value = serde_json::from_str(&out.stdout).unwrap();
@@ -137,7 +157,13 @@ fn the_view_s_numbers_are_the_command_line_s() {
     assert_eq!(j["category"].as_u64(), Some(u64::from(pace.category)));
     // and the screen shows them
     let text = screen_text(&draw(&app, 120, 40)).join("\n");
-    for shown in ["v_out 17.54 m/s", "angle 17.63°", "spin  657.7 rad/s", "CPR 49.2", "5 fast"] {
+    for shown in [
+        "v_out 17.54 m/s",
+        "angle 17.63°",
+        "spin  657.7 rad/s",
+        "CPR 49.2",
+        "5 fast",
+    ] {
         assert!(text.contains(shown), "{shown}\n{text}");
     }
 }
@@ -146,13 +172,28 @@ fn the_view_s_numbers_are_the_command_line_s() {
 fn a_map_cell_is_the_command_line_s_impact() {
     let mut app = tennis_example(false);
     press(&mut app, &[KeyCode::Char('t')]);
-    let map = app.oblique_view().held_map().expect("computed without a worker").clone();
+    let map = app
+        .oblique_view()
+        .held_map()
+        .expect("computed without a worker")
+        .clone();
     let (i, j) = (29, 19); // θ 30°, μ 0.4
     assert_eq!((angle_at(i), friction_at(j)), (30.0, 0.4));
     let c = map.at(i, j).unwrap();
     let out = common::bl(&[
-        "oblique", "--preset", "tennis", "--v0", "25", "--angle", "30", "--spin", "300",
-        "--friction", "0.4", "--format", "json",
+        "oblique",
+        "--preset",
+        "tennis",
+        "--v0",
+        "25",
+        "--angle",
+        "30",
+        "--spin",
+        "300",
+        "--friction",
+        "0.4",
+        "--format",
+        "json",
     ]);
     let jv: Value = serde_json::from_str(&out.stdout).unwrap();
     assert!(close(jv["angle_out_deg"].as_f64().unwrap(), c.angle_out));
@@ -163,8 +204,18 @@ fn a_map_cell_is_the_command_line_s_impact() {
     let v = app.oblique_view();
     let (di, dj) = (29 - v.cursor().0 as i32, 19 - v.cursor().1 as i32);
     let mut keys = Vec::new();
-    keys.extend(std::iter::repeat_n(if di > 0 { KeyCode::Right } else { KeyCode::Left }, di.unsigned_abs() as usize));
-    keys.extend(std::iter::repeat_n(if dj > 0 { KeyCode::Up } else { KeyCode::Down }, dj.unsigned_abs() as usize));
+    keys.extend(std::iter::repeat_n(
+        if di > 0 {
+            KeyCode::Right
+        } else {
+            KeyCode::Left
+        },
+        di.unsigned_abs() as usize,
+    ));
+    keys.extend(std::iter::repeat_n(
+        if dj > 0 { KeyCode::Up } else { KeyCode::Down },
+        dj.unsigned_abs() as usize,
+    ));
     press(&mut app, &keys);
     let v = app.oblique_view();
     assert_eq!((v.angle, v.friction), (30.0, 0.4));
@@ -224,7 +275,12 @@ fn keys_step_select_and_type_in_the_library_s_ranges() {
     assert!(app.oblique_view().response().unwrap().cor_normal < before);
     // `e` exports nothing here and says what does
     press(&mut app, &[KeyCode::Char('e')]);
-    assert!(app.message().unwrap().text.contains("bouncelab oblique --history"));
+    assert!(
+        app.message()
+            .unwrap()
+            .text
+            .contains("bouncelab oblique --history")
+    );
     // `t` the map: arrows move the cursor cell by cell, held in the grid; `n` the quantity
     press(&mut app, &[KeyCode::Char('t')]);
     assert_eq!(app.mode(), Mode::ObliqueMap);
@@ -250,7 +306,10 @@ fn other_laws_say_why_there_is_no_oblique_impact() {
     type_keys(&mut app, "c");
     press(&mut app, &[KeyCode::Char('i')]);
     let e = app.oblique_view().impact.clone().unwrap().unwrap_err();
-    assert!(e.starts_with("invalid law: oblique impacts run the linear law only"), "{e}");
+    assert!(
+        e.starts_with("invalid law: oblique impacts run the linear law only"),
+        "{e}"
+    );
     let text = screen_text(&draw(&app, 100, 30)).join("\n");
     assert!(text.contains("invalid law"), "{text}");
     // golf is no tennis ball: no court pace

@@ -11,8 +11,8 @@
 //! (DOP853 with events at every switch); tests/oblique.rs holds the two together.
 
 pub mod court;
-mod frictions;
 mod energy;
+mod frictions;
 pub mod reference;
 mod tangential;
 #[cfg(test)]
@@ -21,9 +21,9 @@ mod tests;
 use crate::model::params::ImpactParams;
 use crate::solver::exact::{NormalPath, PathPoint};
 use crate::solver::{ImpactResponse, SolveError, SolveOptions, simulate_path};
+pub use frictions::solve_frictions;
 use serde::Serialize;
 use std::fmt;
-pub use frictions::solve_frictions;
 pub use tangential::{Mode, Phase};
 
 /// Most phases (stick or slip) one impact may switch through before it is called unresolved.

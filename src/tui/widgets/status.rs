@@ -146,7 +146,8 @@ impl Widget for &KeyHints {
             }
             let arrows = page == crate::tui::views::oblique::state::Page::Map;
             v.extend(HINTS.iter().filter(|h| {
-                !matches!(h.0, "e" | "[ ]" | "1-3") && !(arrows && matches!(h.0, "↑↓" | "←→"))
+                let moved = arrows && matches!(h.0, "↑↓" | "←→");
+                !(moved || matches!(h.0, "e" | "[ ]" | "1-3"))
             }));
             v
         } else if self.drop {

@@ -44,7 +44,9 @@ fn bounds(values: impl Iterator<Item = f64>) -> [f64; 2] {
     if !lo.is_finite() || !hi.is_finite() {
         return [0.0, 1.0];
     }
-    let pad = ((hi - lo) * 0.05).max(hi.abs().max(lo.abs()) * 1e-3).max(1e-12);
+    let pad = ((hi - lo) * 0.05)
+        .max(hi.abs().max(lo.abs()) * 1e-3)
+        .max(1e-12);
     [lo - pad, hi + pad]
 }
 
@@ -91,7 +93,11 @@ fn time_chart<'a>(
 fn set<'a>(name: Option<String>, data: &'a [(f64, f64)], style: Style, line: bool) -> Dataset<'a> {
     let d = Dataset::default()
         .marker(Marker::Braille)
-        .graph_type(if line { GraphType::Line } else { GraphType::Scatter })
+        .graph_type(if line {
+            GraphType::Line
+        } else {
+            GraphType::Scatter
+        })
         .style(style)
         .data(data);
     match name {
@@ -142,10 +148,17 @@ pub fn render_slip(r: &ObliqueResponse, theme: Theme, area: Rect, buf: &mut Buff
     let Some(h) = &r.history else { return };
     let t_ms = r.contact_time * 1e3;
     let vc = points(h, &h.slip_velocity);
-    let zero: Vec<(f64, f64)> = (0..=40).map(|k| (t_ms * f64::from(k) / 40.0, 0.0)).collect();
+    let zero: Vec<(f64, f64)> = (0..=40)
+        .map(|k| (t_ms * f64::from(k) / 40.0, 0.0))
+        .collect();
     let y = bounds(h.slip_velocity.iter().copied().chain([0.0]));
     let sets = vec![
-        set(Some("━ v_c".into()), &vc, Style::default().fg(theme.current()), true),
+        set(
+            Some("━ v_c".into()),
+            &vc,
+            Style::default().fg(theme.current()),
+            true,
+        ),
         set(None, &zero, theme.dim(), false),
     ];
     let title = "Slip · v_c [m/s] vs t [ms]";
@@ -173,9 +186,13 @@ pub fn render_spin(r: &ObliqueResponse, theme: Theme, area: Rect, buf: &mut Buff
 /// square (a cell is 2 dots wide, 4 tall, twice as tall as wide), so equal units across and
 /// up keep the angles true.
 pub fn render_paths(r: &ObliqueResponse, theme: Theme, area: Rect, buf: &mut Buffer) {
-    let block = Block::bordered().title(Span::styled("Paths · angles to the surface", theme.title()));
+    let block =
+        Block::bordered().title(Span::styled("Paths · angles to the surface", theme.title()));
     let inner = block.inner(area);
-    let (w, h) = (f64::from(inner.width.max(1)), f64::from(inner.height.max(1)));
+    let (w, h) = (
+        f64::from(inner.width.max(1)),
+        f64::from(inner.height.max(1)),
+    );
     let y_span = 1.25;
     let x_half = y_span * (2.0 * w) / (4.0 * h) / 2.0;
     let (a_in, a_out) = (r.angle_in_deg.to_radians(), r.angle_out_deg.to_radians());
@@ -183,10 +200,7 @@ pub fn render_paths(r: &ObliqueResponse, theme: Theme, area: Rect, buf: &mut Buf
     // the longer path fits: scaled down when the window is narrow
     let reach = x_half.min(1.0) * 0.95;
     let (x_in, y_in) = (-reach * a_in.cos(), reach * a_in.sin());
-    let (x_out, y_out) = (
-        reach * out_len * a_out.cos(),
-        reach * out_len * a_out.sin(),
-    );
+    let (x_out, y_out) = (reach * out_len * a_out.cos(), reach * out_len * a_out.sin());
     let (live, second) = (theme.current(), theme.secondary());
     let ground = theme.c(Color::Gray);
     let (lab_in, lab_out) = (
@@ -207,7 +221,11 @@ pub fn render_paths(r: &ObliqueResponse, theme: Theme, area: Rect, buf: &mut Buf
             let cell = 2.0 * x_half / w;
             let right = x_half - cell * (lab_out.chars().count() as f64 + 0.5);
             ctx.print(-x_half, y_span - 0.15, Span::styled(lab_in.clone(), t_in));
-            ctx.print(right, y_span - 0.15 - 1.25 / h, Span::styled(lab_out.clone(), t_out));
+            ctx.print(
+                right,
+                y_span - 0.15 - 1.25 / h,
+                Span::styled(lab_out.clone(), t_out),
+            );
         })
         .render(area, buf);
 }

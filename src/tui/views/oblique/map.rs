@@ -29,7 +29,9 @@ pub fn friction_at(j: usize) -> f64 {
 /// The cell nearest to (θ, μ), clamped to the grid.
 pub fn cell_of(angle: f64, friction: f64) -> (usize, usize) {
     let i = (angle.round() - 1.0).clamp(0.0, (ANGLES - 1) as f64) as usize;
-    let j = (friction / 0.02 - 1.0).round().clamp(0.0, (FRICTIONS - 1) as f64) as usize;
+    let j = (friction / 0.02 - 1.0)
+        .round()
+        .clamp(0.0, (FRICTIONS - 1) as f64) as usize;
     (i, j)
 }
 

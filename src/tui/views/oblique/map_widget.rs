@@ -60,7 +60,12 @@ impl Widget for MapRaster<'_> {
         );
         self.raster(map, q, plot, buf);
         self.labels(plot, inner, buf);
-        self.info(map, q, Rect::new(inner.x, plot.bottom() + 1, inner.width, 2), buf);
+        self.info(
+            map,
+            q,
+            Rect::new(inner.x, plot.bottom() + 1, inner.width, 2),
+            buf,
+        );
     }
 }
 
@@ -100,7 +105,8 @@ impl MapRaster<'_> {
             cell.set_symbol(CURSOR);
             if color {
                 let under = rgb(map.at(ci, cj).and_then(|c| q.of(c)));
-                cell.set_fg(cells::contrast(under)).set_bg(cells::rgb(under));
+                cell.set_fg(cells::contrast(under))
+                    .set_bg(cells::rgb(under));
             }
         }
     }
@@ -110,7 +116,13 @@ impl MapRaster<'_> {
         let dim = self.theme.dim();
         let top = sig_trim(friction_at(FRICTIONS - 1), 2);
         let bottom = sig_trim(friction_at(0), 2);
-        buf.set_stringn(inner.x, plot.y, format!("μ {top}"), usize::from(GUTTER), dim);
+        buf.set_stringn(
+            inner.x,
+            plot.y,
+            format!("μ {top}"),
+            usize::from(GUTTER),
+            dim,
+        );
         buf.set_stringn(inner.x, plot.bottom() - 1, bottom, usize::from(GUTTER), dim);
         let y = plot.bottom();
         buf.set_string(plot.x, y, format!("{}°", angle_at(0)), dim);
@@ -122,9 +134,9 @@ impl MapRaster<'_> {
     /// The quantity's range and the cursor's cell.
     fn info(&self, map: &ObliqueMap, q: Quantity, area: Rect, buf: &mut Buffer) {
         let (ci, cj) = self.view.cursor();
-        let range = map
-            .range(q)
-            .map_or("no value".into(), |(lo, hi)| format!("{} … {}", sig(lo, 3), sig(hi, 3)));
+        let range = map.range(q).map_or("no value".into(), |(lo, hi)| {
+            format!("{} … {}", sig(lo, 3), sig(hi, 3))
+        });
         let here = match map.at(ci, cj) {
             Some(c) => format!(
                 "angle out {}°, spin out {} rad/s, e_x {}",

@@ -116,12 +116,18 @@ impl ObliqueParam {
     }
 
     pub fn next(self) -> ObliqueParam {
-        let i = ObliqueParam::ALL.iter().position(|&p| p == self).unwrap_or(0);
+        let i = ObliqueParam::ALL
+            .iter()
+            .position(|&p| p == self)
+            .unwrap_or(0);
         ObliqueParam::ALL[(i + 1) % 3]
     }
 
     pub fn prev(self) -> ObliqueParam {
-        let i = ObliqueParam::ALL.iter().position(|&p| p == self).unwrap_or(0);
+        let i = ObliqueParam::ALL
+            .iter()
+            .position(|&p| p == self)
+            .unwrap_or(0);
         ObliqueParam::ALL[(i + 2) % 3]
     }
 }

@@ -132,7 +132,9 @@ impl ObliquePanel<'_> {
 
 /// The outgoing motion and the contact's figures.
 fn result_lines(r: &ObliqueResponse, theme: Theme) -> Vec<Line<'static>> {
-    let ex = r.cor_tangential.map_or("— (rolls in)".into(), |e| sig(e, 4));
+    let ex = r
+        .cor_tangential
+        .map_or("— (rolls in)".into(), |e| sig(e, 4));
     let grip = if r.slid_throughout {
         "slid throughout".to_string()
     } else {
@@ -159,10 +161,7 @@ fn pace_lines(p: &CourtPace, mu: f64, theme: Theme) -> Vec<Line<'static>> {
         ),
         Line::from(vec![
             Span::raw(format!(" CPR {} · ", sig(p.cpr, 3))),
-            Span::styled(
-                format!("{} {}", p.category, p.category_name),
-                theme.title(),
-            ),
+            Span::styled(format!("{} {}", p.category, p.category_name), theme.title()),
         ]),
     ]
 }
