@@ -331,3 +331,40 @@ fn a_grip_shows_the_friction_reversal() {
     let text = screen_text(&draw(&app, 120, 40)).join("\n");
     assert!(text.contains("┊ reversal"), "{text}");
 }
+
+#[test]
+fn the_map_goes_to_the_worker_and_is_asked_again_after_a_cancel() {
+    use bouncelab::tui::app::Effect;
+    let mut app = App::new(preset("tennis"), false).with_background_sweeps();
+    let asked = |effects: &[Effect]| {
+        effects
+            .iter()
+            .filter(|e| matches!(e, Effect::ObliqueMap(_)))
+            .count()
+    };
+    assert_eq!(asked(&press(&mut app, &[KeyCode::Char('i')])), 1);
+    assert!(app.oblique_pending());
+    // θ and μ do not change the map; ω does
+    assert_eq!(asked(&type_keys(&mut app, "ak")), 0);
+    assert_eq!(asked(&type_keys(&mut app, "w")), 1);
+    // leaving stops the job; coming back asks for the map again
+    press(&mut app, &[KeyCode::Char('i')]);
+    assert!(!app.oblique_pending());
+    assert_eq!(asked(&press(&mut app, &[KeyCode::Char('i')])), 1);
+    // the map of an older generation is dropped, the current one kept
+    let Some(Effect::ObliqueMap(job)) = press(&mut app, &[KeyCode::Char('W')]).pop() else {
+        panic!("a new map for the new spin");
+    };
+    let map = bouncelab::tui::views::oblique::map::compute(&job.spec, &Default::default());
+    let stale = bouncelab::tui::action::Action::ObliqueMapReady {
+        generation: job.generation - 1,
+        map: Box::new(map.clone().unwrap()),
+    };
+    app.update(stale);
+    assert!(app.oblique_view().map.is_none());
+    app.update(bouncelab::tui::action::Action::ObliqueMapReady {
+        generation: job.generation,
+        map: Box::new(map.unwrap()),
+    });
+    assert!(app.oblique_view().held_map().is_some() && !app.oblique_pending());
+}

@@ -174,6 +174,10 @@ impl App {
     /// worker, or here without one) when the ball or ω changed.
     pub(in crate::tui) fn refresh_oblique(&mut self) -> Option<Effect> {
         if self.view != View::Oblique {
+            // a map stopped before it came back is asked again on the way back in
+            if self.oblique.out.is_some() {
+                self.oblique.map_for = None;
+            }
             self.oblique.cancel();
             return None;
         }
