@@ -18,6 +18,8 @@ use ratatui::widgets::{Block, Paragraph, Widget};
 
 /// Columns left of the raster for the μ labels.
 const GUTTER: u16 = 5;
+/// Rows under the θ labels: the quantity's range, the cursor's cell and its values.
+const INFO_ROWS: u16 = 3;
 
 #[derive(Debug, Clone, Copy)]
 pub struct MapRaster<'a> {
@@ -37,7 +39,7 @@ impl Widget for MapRaster<'_> {
         let block = Block::bordered().title(Span::styled(title, self.theme.title()));
         let inner = block.inner(area);
         block.render(area, buf);
-        if inner.width <= GUTTER + 4 || inner.height < 4 {
+        if inner.width <= GUTTER + 4 || inner.height < INFO_ROWS + 3 {
             return;
         }
         let map = match &self.view.map {
@@ -56,14 +58,14 @@ impl Widget for MapRaster<'_> {
             inner.x + GUTTER,
             inner.y,
             inner.width - GUTTER,
-            inner.height - 3,
+            inner.height - 1 - INFO_ROWS,
         );
         self.raster(map, q, plot, buf);
         self.labels(plot, inner, buf);
         self.info(
             map,
             q,
-            Rect::new(inner.x, plot.bottom() + 1, inner.width, 2),
+            Rect::new(inner.x, plot.bottom() + 1, inner.width, INFO_ROWS),
             buf,
         );
     }
@@ -137,25 +139,34 @@ impl MapRaster<'_> {
         let range = map.range(q).map_or("no value".into(), |(lo, hi)| {
             format!("{} … {}", sig(lo, 3), sig(hi, 3))
         });
-        let here = match map.at(ci, cj) {
-            Some(c) => format!(
-                "angle out {}°, spin out {} rad/s, e_x {}",
-                sig(c.angle_out, 4),
-                sig(c.spin_out, 4),
-                c.ex.map_or("—".into(), |e| sig(e, 3))
+        let (first, second) = match map.at(ci, cj) {
+            Some(c) => (
+                format!("angle out {}°", sig(c.angle_out, 4)),
+                format!(
+                    "spin out {} rad/s, e_x {}",
+                    sig(c.spin_out, 4),
+                    c.ex.map_or("—".into(), |e| sig(e, 3))
+                ),
             ),
-            None => "no answer".into(),
+            None => ("no answer".into(), String::new()),
+        };
+        let scale = if self.theme.color {
+            "viridis, dark to light"
+        } else {
+            "shades ░▒▓█, low to high"
         };
         let lines = vec![
             Line::styled(
-                format!(" {} from {range} (dark to light)", q.label()),
+                format!(" {} {range} ({scale})", q.label()),
                 self.theme.dim(),
             ),
+            // the cell nearest to (θ, μ): a μ typed between the grid's shows its neighbour
             Line::raw(format!(
-                " ╋ θ {}°, μ {}: {here}",
+                " ╋ cell θ {}°, μ {}: {first}",
                 angle_at(ci),
                 sig_trim(friction_at(cj), 2)
             )),
+            Line::raw(format!("   {second}")),
         ];
         Paragraph::new(lines).render(area, buf);
     }
