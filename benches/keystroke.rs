@@ -67,6 +67,7 @@ impl fmt::Display for Case {
             View::Models => "models",
             View::Map => "map",
             View::Drop => "drop",
+            View::Oblique => "oblique",
         };
         let key = match self.param {
             Param::Lambda => "l",
@@ -74,7 +75,7 @@ impl fmt::Display for Case {
             Param::V0 => "v",
         };
         let how = match (self.view, self.worker) {
-            (View::Impact | View::Map | View::Drop, _) => "",
+            (View::Impact | View::Map | View::Drop | View::Oblique, _) => "",
             (View::Sweeps | View::Models, false) => " sync",
             (View::Sweeps | View::Models, true) => " worker",
         };

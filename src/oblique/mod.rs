@@ -12,6 +12,7 @@
 
 pub mod court;
 mod energy;
+mod frictions;
 mod normal;
 pub mod reference;
 mod tangential;
@@ -22,6 +23,7 @@ use crate::model::contact::ContactLaw;
 use crate::model::params::ImpactParams;
 use crate::solver::exact::{NormalPath, PathPoint};
 use crate::solver::{Flow, ImpactResponse, SolveError, SolveOptions, simulate_flow};
+pub use frictions::solve_frictions;
 pub use normal::NormalAt;
 use serde::Serialize;
 use std::fmt;

@@ -89,6 +89,8 @@ pub struct App {
     pub(in crate::tui) copy: command::CopyState,
     /// Each chart's normalize toggle and zoom (`N`, `+`, `-`, `0`: src/tui/chartview.rs).
     pub(in crate::tui) charts: super::chartview::ChartViews,
+    /// The oblique view's angle, spin, friction, impact and map.
+    pub(in crate::tui) oblique: crate::tui::views::oblique::state::ObliqueView,
 }
 
 impl App {
@@ -135,6 +137,7 @@ impl App {
             crosshair: None,
             copy: Default::default(),
             charts: Default::default(),
+            oblique: Default::default(),
         };
         app.refresh();
         app
@@ -176,6 +179,7 @@ impl App {
                 | Action::Resize(..)
                 | Action::FitReady(..)
                 | Action::MapPass { .. }
+                | Action::ObliqueMapReady { .. }
         ) {
             self.message = None;
         }
@@ -212,6 +216,11 @@ impl App {
             }
             Action::Export if self.view == View::Drop => self.warn(
                 "the drop view has no export: `bouncelab drop --format csv` writes its data".into(),
+            ),
+            Action::Export if self.view == View::Oblique => self.warn(
+                "the oblique view has no export: `bouncelab oblique --history --format csv` \
+                 writes its data (`y` is not its line)"
+                    .into(),
             ),
             Action::Export => self.export_wanted = true,
             Action::OpenPicker => return vec![Effect::ListPresets],
@@ -252,6 +261,10 @@ impl App {
             | Action::MapPass { .. } => self.map_action(action),
             Action::ShowCommand => return self.show_command(),
             Action::Normalize | Action::Zoom(_) => self.chart_view(action),
+            Action::Oblique(key) => self.oblique_action(key),
+            Action::ObliqueMapReady { generation, map } => {
+                self.receive_oblique_map(generation, *map)
+            }
             _ => self.edit(action),
         }
         Vec::new()
@@ -355,6 +368,7 @@ impl App {
         let mut effects: Vec<Effect> = self.refresh_sweeps().into_iter().collect();
         effects.extend(self.refresh_models());
         effects.extend(self.refresh_map());
+        effects.extend(self.refresh_oblique());
         if self.export_wanted {
             effects.extend(self.prepare_export());
         }

@@ -29,6 +29,9 @@ pub enum Effect {
     /// Refine this map in the background, pass by pass (a job before it stops on its own:
     /// `update` set its cancel flag); each pass comes back as `Action::MapPass`.
     Map(MapJob),
+    /// Compute the oblique view's (angle, μ) map in the background (a job before it stops on
+    /// its own: `update` set its cancel flag); it comes back as `Action::ObliqueMapReady`.
+    ObliqueMap(crate::tui::views::oblique::map::MapJob),
     /// Read the presets for the picker (`g`); the loop answers `Action::PresetsListed`.
     ListPresets,
     /// Write this session file (`S`) atomically, never over an existing file; the loop answers

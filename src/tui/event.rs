@@ -15,6 +15,7 @@ use crate::fault::Fault;
 use crate::tui::views::fit::worker::FitWorker;
 use crate::tui::views::map::worker::MapWorker;
 use crate::tui::views::models::state::ModelsRequest;
+use crate::tui::views::oblique::worker::ObliqueMapWorker;
 use ratatui::DefaultTerminal;
 use ratatui::crossterm::event;
 use std::time::{Duration, Instant};
@@ -36,6 +37,7 @@ pub fn run(terminal: &mut DefaultTerminal, app: &mut App) -> anyhow::Result<()> 
         models: Worker::spawn()?,
         fits: FitWorker::spawn()?,
         maps: MapWorker::spawn()?,
+        oblique: ObliqueMapWorker::spawn()?,
     };
     // test-only (see `crate::fault`): tests/tui_pty.rs checks that the terminal is restored
     // after a panic in here
@@ -53,7 +55,7 @@ pub fn run(terminal: &mut DefaultTerminal, app: &mut App) -> anyhow::Result<()> 
         let waiting =
             !app.speed_requests().is_empty() || app.models_request().is_some() || app.fitting();
         let animating = app.animating();
-        let refining = app.map_pending();
+        let refining = app.map_pending() || app.oblique_pending();
         let wait = if refining {
             MAP_POLL
         } else if animating {
@@ -122,6 +124,11 @@ pub fn run(terminal: &mut DefaultTerminal, app: &mut App) -> anyhow::Result<()> 
             effects.extend(app.apply(Action::MapPass { generation, map }));
             dirty = true;
         }
+        while let Some((generation, map)) = worker.oblique.try_recv() {
+            let map = Box::new(map);
+            effects.extend(app.apply(Action::ObliqueMapReady { generation, map }));
+            dirty = true;
+        }
         if dirty {
             effects.extend(app.refresh());
         }
@@ -143,6 +150,7 @@ struct Workers {
     models: Worker<ModelsRequest>,
     fits: FitWorker,
     maps: MapWorker,
+    oblique: ObliqueMapWorker,
 }
 
 /// Carry out `effects`, and those the answers to them bring, until none is left.
@@ -160,6 +168,10 @@ fn carry_out(mut effects: Vec<Effect>, app: &mut App, worker: &mut Workers) {
                 }
                 Effect::Map(job) => {
                     worker.maps.want(job);
+                    continue;
+                }
+                Effect::ObliqueMap(job) => {
+                    worker.oblique.want(job);
                     continue;
                 }
                 Effect::Export(request) => match export::write(&request, &export::dir_from_env()) {

@@ -2,7 +2,7 @@
 //! `update` needs to stop the help's scrolling at its end.
 
 /// (keys, what they do); a row without text is a section heading.
-pub const KEYS: [(&str, &str); 59] = [
+pub const KEYS: [(&str, &str); 69] = [
     ("l / L", "λ up / down (±0.01, coarse ±0.1)"),
     ("z / Z", "ζ up / down (×1.1, coarse ×2)"),
     ("v / V", "v0 up / down (±0.1, coarse ±1 m/s)"),
@@ -31,6 +31,7 @@ pub const KEYS: [(&str, &str); 59] = [
         "switch view (impact, sweeps, models, map)",
     ),
     ("d", "drop test (space pauses, b replays)"),
+    ("i", "oblique impact: angle, spin, friction"),
     ("o / O", "load measured data / put it away"),
     ("f / F", "fit the ball to it / apply the fit"),
     ("?", "this help (Esc, ? or q closes)"),
@@ -42,6 +43,15 @@ pub const KEYS: [(&str, &str); 59] = [
     ("Shift+arrows", "move it 8 cells"),
     ("n", "show COR, peak force or contact time"),
     ("t", "targets, e.g. cor>=0.8,max_force<=2000"),
+    ("", ""),
+    ("In the oblique view (i)", ""),
+    ("a/A w/W k/K", "step θ ±1°, ω ±10 rad/s, μ ±0.01"),
+    ("↑ ↓ / ← →", "change / select θ, ω or μ"),
+    ("= or Enter", "type the selected one's value"),
+    ("t", "the charts or the (θ, μ) map"),
+    ("← → / ↑ ↓", "on the map: move the cursor, θ / μ"),
+    ("n", "map of angle out, spin out or e_x"),
+    ("i", "back to the impact view"),
     ("", ""),
     ("In this help", ""),
     ("↑↓ j k PgUp/Dn", "scroll (Home / End: top / end)"),

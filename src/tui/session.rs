@@ -68,6 +68,7 @@ fn view_name(v: View) -> &'static str {
         View::Models => "models",
         View::Map => "map",
         View::Drop => "drop",
+        View::Oblique => "oblique",
     }
 }
 
@@ -121,6 +122,7 @@ impl App {
             View::Models,
             View::Map,
             View::Drop,
+            View::Oblique,
         ]
         .into_iter()
         .find(|&v| view_name(v) == session.view)

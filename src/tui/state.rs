@@ -28,6 +28,8 @@ pub enum View {
     Map,
     /// The drop test (`d`, outside the Tab cycle): src/tui/views/drop/state.rs.
     Drop,
+    /// Oblique impacts (`i`, outside the Tab cycle): src/tui/views/oblique/state.rs.
+    Oblique,
 }
 
 impl View {
@@ -41,6 +43,7 @@ impl View {
             View::Models => "models",
             View::Map => "map",
             View::Drop => return "drop test".into(),
+            View::Oblique => return "oblique".into(),
         };
         let n = View::CYCLE.len();
         let k = View::CYCLE.iter().position(|&v| v == self).unwrap_or(0) + 1;
@@ -74,7 +77,7 @@ impl View {
                 Chart::ModelsForceTime,
                 Chart::ModelsForceDisplacement,
             ],
-            View::Map | View::Drop => &[],
+            View::Map | View::Drop | View::Oblique => &[],
         }
     }
 }
@@ -94,6 +97,8 @@ pub enum Purpose {
     Physical(super::physical::Field),
     /// The file to save the session to (`S`).
     SessionPath,
+    /// θ, ω or μ of the oblique view (`=`); the readout beside shows its value.
+    Oblique(crate::tui::views::oblique::param::ObliqueParam),
 }
 
 /// The text-entry dialog.

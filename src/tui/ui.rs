@@ -66,7 +66,7 @@ pub fn screen(app: &App, area: Rect) -> Option<Screen> {
             View::Impact => impact_grid(charts),
             View::Sweeps => sweeps_grid(charts),
             View::Models => models_grid(charts),
-            View::Drop | View::Map => Vec::new(),
+            View::Drop | View::Map | View::Oblique => Vec::new(),
         };
         (charts, b.readout, fit)
     };
@@ -85,7 +85,7 @@ pub fn screen(app: &App, area: Rect) -> Option<Screen> {
 /// The fit pane's view, while there is a fit and the view has charts (not the map's raster).
 fn fit_view(app: &App, theme: Theme) -> Option<FitView<'_>> {
     // the map view's grid is sized by `update` from the whole chart area (layout::body)
-    if matches!(app.view(), View::Drop | View::Map) {
+    if matches!(app.view(), View::Drop | View::Map | View::Oblique) {
         return None;
     }
     Some(FitView {
@@ -296,6 +296,7 @@ impl Widget for &App {
             theme,
             map: self.view() == View::Map,
             drop: self.view() == View::Drop,
+            oblique: (self.view() == View::Oblique).then(|| self.oblique_view().page),
         }
         .render(s.status, buf);
         if self.view() == View::Drop {
@@ -309,6 +310,21 @@ impl Widget for &App {
             crate::tui::views::drop::widget::DropPanel {
                 drop: self.drop_view(),
                 ball: &self.preset().name,
+                theme,
+            }
+            .render(body, buf);
+        } else if self.view() == View::Oblique {
+            // the oblique view takes the whole body (src/tui/views/oblique/widget.rs)
+            let body = Rect::new(
+                area.x,
+                s.header.bottom(),
+                area.width,
+                s.message.y - s.header.bottom(),
+            );
+            crate::tui::views::oblique::widget::ObliquePanel {
+                view: self.oblique_view(),
+                ball: &self.preset().name,
+                v0: self.setting().params.v0,
                 theme,
             }
             .render(body, buf);

@@ -53,7 +53,11 @@ pub fn from_key(key: KeyEvent, mode: Mode) -> Option<Action> {
             KeyCode::Char('n' | 'N') | KeyCode::Esc => Some(Action::CloseHelp),
             _ => None,
         },
-        Mode::Normal | Mode::Map | Mode::Crosshair if ctrl => None,
+        Mode::Normal | Mode::Map | Mode::Crosshair | Mode::Oblique | Mode::ObliqueMap if ctrl => {
+            None
+        }
+        Mode::Oblique => oblique::charts(key).or_else(|| normal(key)),
+        Mode::ObliqueMap => oblique::map(key).or_else(|| normal(key)),
         Mode::Normal => normal(key),
         Mode::Map => map(key).or_else(|| normal(key)),
         Mode::Crosshair => crosshair(key).or_else(|| normal(key)),
@@ -112,6 +116,7 @@ fn picker(code: KeyCode) -> Option<Action> {
 }
 
 mod modal;
+mod oblique;
 use modal::{crosshair, form};
 
 /// Cells a Shift+arrow moves the map's cursor.
@@ -162,6 +167,7 @@ fn normal(key: KeyEvent) -> Option<Action> {
         KeyCode::BackTab => Some(Action::PrevView),
         KeyCode::Char('?') => Some(Action::ToggleHelp),
         KeyCode::Char('d') => Some(Action::ToggleDrop),
+        KeyCode::Char('i') => Some(Action::Oblique(super::ObliqueKey::Toggle)),
         KeyCode::Char(' ') => Some(Action::DropPause),
         KeyCode::Char('b') => Some(Action::DropReplay),
         KeyCode::Char('o') => Some(Action::OpenMeasured),

@@ -181,6 +181,38 @@ pub enum Action {
         generation: u64,
         map: Box<crate::map::Map>,
     },
+    /// The oblique view's keys (`i` to open it; src/tui/views/oblique/).
+    Oblique(ObliqueKey),
+    /// The oblique view's (angle, μ) map number `generation`, from its worker.
+    ObliqueMapReady {
+        generation: u64,
+        map: Box<Result<crate::tui::views::oblique::map::ObliqueMap, String>>,
+    },
+}
+
+/// What a key asks of the oblique view.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum ObliqueKey {
+    /// `i`: open the oblique view, or leave it for the impact view.
+    Toggle,
+    /// `a`/`A`, `w`/`W`, `k`/`K`: step θ, ω or μ (and select it).
+    Step {
+        param: crate::tui::views::oblique::param::ObliqueParam,
+        up: bool,
+        coarse: bool,
+    },
+    /// ↑ ↓ on the charts: step the selected one (Shift, PgUp/PgDn: coarse).
+    StepSelected { up: bool, coarse: bool },
+    /// ← → on the charts: select the next or previous of θ, ω, μ.
+    Select { next: bool },
+    /// `=` or Enter: type the selected one's value.
+    Type,
+    /// `t`: the charts or the (angle, μ) map.
+    Page,
+    /// `n`: the map's next quantity (outgoing angle, spin, e_x).
+    Quantity,
+    /// Arrows on the map: θ by `angle` cells, μ by `friction` cells.
+    Cursor { angle: i32, friction: i32 },
 }
 
 /// How the help scrolls.
@@ -217,6 +249,11 @@ pub enum Mode {
     Form,
     /// "Quit and lose …?": `q` or `y` quits, `n` or Esc stays.
     QuitConfirm,
+    /// The oblique view's charts: `a w k` step θ, ω, μ, the arrows select and step them;
+    /// other keys as in `Normal`.
+    Oblique,
+    /// The oblique view's map: the arrows move the cursor (θ, μ); other keys as in `Oblique`.
+    ObliqueMap,
 }
 
 mod keys;

@@ -95,6 +95,10 @@ impl App {
                 self.submit_physical(field, &text);
                 return None;
             }
+            Purpose::Oblique(p) => {
+                self.submit_oblique(p, &text);
+                return None;
+            }
         };
         if text.is_empty() {
             self.overlay = Overlay::None;

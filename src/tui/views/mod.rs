@@ -7,4 +7,5 @@ pub mod drop;
 pub mod fit;
 pub mod map;
 pub mod models;
+pub mod oblique;
 pub mod sweeps;

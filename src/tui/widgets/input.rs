@@ -81,6 +81,13 @@ fn render(input: &Input, s: &Setting, theme: &Theme, area: Rect, buf: &mut Buffe
             " Enter saves · Esc cancels",
             62,
         ),
+        Purpose::Oblique(p) => (
+            format!(" Set {} ", p.symbol()),
+            format!(" {}: range {}", p.name(), p.range_text()),
+            format!(" {} = ", p.symbol()),
+            " Enter accepts · Esc cancels",
+            50,
+        ),
         Purpose::Targets => (
             " Map targets ".to_string(),
             " e.g. cor>=0.8,contact_time>=2 (N, ms); empty clears".to_string(),

@@ -115,7 +115,19 @@ pub struct KeyHints {
     pub map: bool,
     /// In the drop view: its own keys in place of `e`, which exports nothing there.
     pub drop: bool,
+    /// In the oblique view (its page): its own keys in place of `e` and of the arrows' hints
+    /// on the map.
+    pub oblique: Option<crate::tui::views::oblique::state::Page>,
 }
+
+/// The oblique view's own keys (src/tui/views/oblique/).
+const OBLIQUE_HINTS: [(&str, &str, u8); 5] = [
+    ("a/A", "θ", 0),
+    ("w/W", "ω", 0),
+    ("k/K", "μ", 0),
+    ("t", "map", 1),
+    ("i", "back", 1),
+];
 
 /// The drop view's own keys (src/tui/views/drop/state.rs).
 const DROP_HINTS: [(&str, &str, u8); 2] = [("space", "pause", 0), ("b", "replay", 1)];
@@ -125,6 +137,18 @@ impl Widget for &KeyHints {
         let hints_shown: Vec<(&str, &str, u8)> = if self.map {
             let mut v = MAP_HINTS.to_vec();
             v.extend(HINTS.iter().filter(|h| !matches!(h.0, "↑↓" | "←→")));
+            v
+        } else if let Some(page) = self.oblique {
+            let mut v = OBLIQUE_HINTS.to_vec();
+            if page == crate::tui::views::oblique::state::Page::Map {
+                v[3] = ("t", "charts", 1);
+                v.insert(3, ("←→↑↓", "θ μ", 0));
+            }
+            let arrows = page == crate::tui::views::oblique::state::Page::Map;
+            v.extend(HINTS.iter().filter(|h| {
+                let moved = arrows && matches!(h.0, "↑↓" | "←→");
+                !(moved || matches!(h.0, "e" | "[ ]" | "1-3"))
+            }));
             v
         } else if self.drop {
             let mut v = DROP_HINTS.to_vec();

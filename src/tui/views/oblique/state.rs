@@ -1,0 +1,115 @@
+//! The oblique view's state: θ, ω and μ, which of them the arrows move, the page shown
+//! (charts or the (angle, μ) map), the impact and the court pace for the current ball, and the
+//! map with its job at the worker. `App::update` changes it (update.rs); the widgets only read
+//! it.
+
+use crate::api::CourtPace;
+use crate::oblique::ObliqueResponse;
+use crate::tui::views::oblique::map::{self, MapSpec, ObliqueMap, Quantity};
+use crate::tui::views::oblique::param::ObliqueParam;
+use std::sync::Arc;
+use std::sync::atomic::{AtomicBool, Ordering};
+
+/// History samples of the charts (as `bouncelab oblique --history`'s default).
+pub const SAMPLES: usize = 400;
+
+/// What the view shows.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Page {
+    /// F_n and F_t, v_c and ω against time, the paths and the readout.
+    Charts,
+    /// The (angle, μ) map and the readout.
+    Map,
+}
+
+/// The key the impact was computed for: the ball (as the library takes it) and θ, ω, μ.
+pub type ImpactKey = (crate::Ball, f64, f64, f64);
+
+/// The oblique view's state.
+#[derive(Debug, Clone)]
+pub struct ObliqueView {
+    /// θ, degrees to the surface.
+    pub angle: f64,
+    /// ω, rad/s (> 0 topspin).
+    pub spin: f64,
+    /// μ.
+    pub friction: f64,
+    /// The parameter ↑ ↓ and `=` act on.
+    pub selected: ObliqueParam,
+    pub page: Page,
+    pub quantity: Quantity,
+    /// The impact, with its history, or why there is none (the command line's message).
+    pub impact: Option<Result<ObliqueResponse, String>>,
+    /// The ITF court pace at μ, for the tennis ball (`None` for other balls).
+    pub pace: Option<Result<CourtPace, String>>,
+    pub impact_for: Option<ImpactKey>,
+    /// The map, or why there is none.
+    pub map: Option<Result<ObliqueMap, String>>,
+    /// What the map held or asked is of.
+    pub map_for: Option<MapSpec>,
+    /// Counts the maps asked: an answer of an older one is stale.
+    pub generation: u64,
+    /// The flag of the job out at the worker, if one is.
+    pub out: Option<Arc<AtomicBool>>,
+}
+
+impl Default for ObliqueView {
+    /// The ITF court pace test's arrival (16°, no spin) on a μ = 0.6 court.
+    fn default() -> ObliqueView {
+        ObliqueView {
+            angle: 16.0,
+            spin: 0.0,
+            friction: 0.6,
+            selected: ObliqueParam::Angle,
+            page: Page::Charts,
+            quantity: Quantity::AngleOut,
+            impact: None,
+            pace: None,
+            impact_for: None,
+            map: None,
+            map_for: None,
+            generation: 0,
+            out: None,
+        }
+    }
+}
+
+impl ObliqueView {
+    pub fn get(&self, p: ObliqueParam) -> f64 {
+        match p {
+            ObliqueParam::Angle => self.angle,
+            ObliqueParam::Spin => self.spin,
+            ObliqueParam::Friction => self.friction,
+        }
+    }
+
+    pub fn set(&mut self, p: ObliqueParam, v: f64) {
+        match p {
+            ObliqueParam::Angle => self.angle = v,
+            ObliqueParam::Spin => self.spin = v,
+            ObliqueParam::Friction => self.friction = v,
+        }
+    }
+
+    /// The impact, when there is one.
+    pub fn response(&self) -> Option<&ObliqueResponse> {
+        self.impact.as_ref()?.as_ref().ok()
+    }
+
+    /// The map, when there is one for the current ball and spin.
+    pub fn held_map(&self) -> Option<&ObliqueMap> {
+        self.map.as_ref()?.as_ref().ok()
+    }
+
+    /// The map's cell under (θ, μ).
+    pub fn cursor(&self) -> (usize, usize) {
+        map::cell_of(self.angle, self.friction)
+    }
+
+    /// Stop the job out at the worker, if any.
+    pub fn cancel(&mut self) {
+        if let Some(flag) = self.out.take() {
+            flag.store(true, Ordering::Relaxed);
+        }
+    }
+}

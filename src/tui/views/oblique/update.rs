@@ -1,0 +1,245 @@
+//! The oblique view's part of `update`: `i` in and out, θ, ω and μ stepped or typed (each
+//! checked by the library's one range), the page and the map's quantity, the map's cursor
+//! (which moves θ and μ), and the impact, the court pace and the map kept up to date with the
+//! ball (src/tui/views/oblique/state.rs says what they are).
+
+use crate::api::ObliqueSpec;
+use crate::oblique::court::ITF_COURT_PACE;
+use crate::text::{parse::number, sig_trim};
+use crate::tui::action::ObliqueKey;
+use crate::tui::app::{App, Effect, View};
+use crate::tui::state::{Overlay, Purpose};
+use crate::tui::views::oblique::map::{self, ANGLES, FRICTIONS, MapJob, MapSpec};
+use crate::tui::views::oblique::param::ObliqueParam;
+use crate::tui::views::oblique::state::{ImpactKey, ObliqueView, Page, SAMPLES};
+use crate::{Ball, BallError};
+use std::sync::Arc;
+use std::sync::atomic::AtomicBool;
+
+impl App {
+    /// The oblique view's state.
+    pub fn oblique_view(&self) -> &ObliqueView {
+        &self.oblique
+    }
+
+    /// Whether the (angle, μ) map is out at the worker (the loop then wakes often for it).
+    pub fn oblique_pending(&self) -> bool {
+        self.oblique.out.is_some()
+    }
+
+    /// The ball as the library takes it: the preset's with the explorer's parameters, law and
+    /// radius (R may be typed in the form), its material's ν and its κ — what `bouncelab
+    /// oblique --preset NAME` runs with the same numbers (tests/tui_oblique.rs compares).
+    pub fn oblique_ball(&self) -> Ball {
+        let preset = self.preset();
+        let s = &self.setting;
+        let mut measured = preset.measured.clone();
+        measured.radius = s.radius;
+        Ball {
+            name: Some(preset.name.clone()),
+            origin: "explorer".into(),
+            source: "adopted",
+            params: s.params,
+            law: s.law,
+            measured: Some(measured),
+            description: String::new(),
+            fit: None,
+            poisson_ratio: Some(preset.material.poisson),
+        }
+    }
+
+    /// The keyboard's mode in the oblique view, by its page.
+    pub(in crate::tui) fn oblique_mode(&self) -> crate::tui::action::Mode {
+        match self.oblique.page {
+            Page::Charts => crate::tui::action::Mode::Oblique,
+            Page::Map => crate::tui::action::Mode::ObliqueMap,
+        }
+    }
+
+    /// The oblique view's keys.
+    pub(in crate::tui) fn oblique_action(&mut self, key: ObliqueKey) {
+        if key == ObliqueKey::Toggle {
+            self.view = if self.view == View::Oblique {
+                View::Impact
+            } else {
+                View::Oblique
+            };
+            self.crosshair = None;
+            return;
+        }
+        if self.view != View::Oblique {
+            return;
+        }
+        let o = &mut self.oblique;
+        match key {
+            ObliqueKey::Step { param, up, coarse } => {
+                o.selected = param;
+                let value = param.step(o.get(param), up, coarse || self.coarse);
+                self.oblique_step(param, value);
+            }
+            ObliqueKey::StepSelected { up, coarse } => {
+                let param = o.selected;
+                let value = param.step(o.get(param), up, coarse || self.coarse);
+                self.oblique_step(param, value);
+            }
+            ObliqueKey::Select { next } => {
+                o.selected = if next {
+                    o.selected.next()
+                } else {
+                    o.selected.prev()
+                }
+            }
+            ObliqueKey::Type => {
+                let p = o.selected;
+                self.open_input(Purpose::Oblique(p), String::new());
+            }
+            ObliqueKey::Page => {
+                o.page = match o.page {
+                    Page::Charts => Page::Map,
+                    Page::Map => Page::Charts,
+                };
+            }
+            ObliqueKey::Quantity => {
+                o.quantity = o.quantity.next();
+                let label = o.quantity.label();
+                if o.page == Page::Charts {
+                    o.page = Page::Map;
+                }
+                self.info(format!("map of {label}"));
+            }
+            ObliqueKey::Cursor { angle, friction } => self.oblique_cursor(angle, friction),
+            ObliqueKey::Toggle => {}
+        }
+    }
+
+    /// A step moved `param` to `value`: taken when the library takes it; past a closed bound
+    /// it stops there, past θ's open bound 0 it stays, and says so.
+    fn oblique_step(&mut self, param: ObliqueParam, value: f64) {
+        let now = self.oblique.get(param);
+        let held = match param.clamp(value) {
+            Some(v) if v == value => None,
+            Some(v) => Some(v),
+            None => Some(now),
+        };
+        if let Some(at) = held {
+            self.warn(format!(
+                "{} held at {}{}: the range is {}",
+                param.symbol(),
+                sig_trim(at, 6),
+                param.unit(),
+                param.range_text()
+            ));
+        }
+        self.oblique.set(param, held.unwrap_or(value));
+    }
+
+    /// The arrows on the map: θ and μ move to the next cell's (Shift: 8 cells), held inside
+    /// the grid.
+    fn oblique_cursor(&mut self, angle: i32, friction: i32) {
+        let (i, j) = self.oblique.cursor();
+        let step = |k: usize, d: i32, n: usize| (k as i64 + i64::from(d)).clamp(0, n as i64 - 1);
+        let (i, j) = (step(i, angle, ANGLES), step(j, friction, FRICTIONS));
+        self.oblique.angle = map::angle_at(i as usize);
+        self.oblique.friction = map::friction_at(j as usize);
+    }
+
+    /// Enter in θ's, ω's or μ's entry: the number read as the command line reads it and
+    /// checked by the library; refused, the entry stays open with the reason.
+    pub(in crate::tui) fn submit_oblique(&mut self, param: ObliqueParam, text: &str) {
+        if text.is_empty() {
+            self.overlay = Overlay::None;
+            return;
+        }
+        let kept = format!("; {} kept", param.symbol());
+        let read = number(text)
+            .map_err(|e| format!("{e}{kept}"))
+            .and_then(|v| param.check(v));
+        match read {
+            Ok(v) => {
+                self.overlay = Overlay::None;
+                self.oblique.set(param, v);
+                self.oblique.selected = param;
+            }
+            Err(why) => {
+                if let Overlay::Input(input) = &mut self.overlay {
+                    input.error = Some(why.clone());
+                }
+                self.warn(why);
+            }
+        }
+    }
+
+    /// Bring the impact, the court pace and the map up to the ball: outside the view, stop
+    /// the map's job; in it, the impact when the ball or θ, ω, μ changed, the map (on the
+    /// worker, or here without one) when the ball or ω changed.
+    pub(in crate::tui) fn refresh_oblique(&mut self) -> Option<Effect> {
+        if self.view != View::Oblique {
+            // a map stopped before it came back is asked again on the way back in
+            if self.oblique.out.is_some() {
+                self.oblique.map_for = None;
+            }
+            self.oblique.cancel();
+            return None;
+        }
+        let ball = self.oblique_ball();
+        let o = &self.oblique;
+        let key: ImpactKey = (ball.clone(), o.angle, o.spin, o.friction);
+        if o.impact_for.as_ref() != Some(&key) {
+            let spec = ObliqueSpec {
+                v: None,
+                angle_deg: o.angle,
+                spin: o.spin,
+                friction: o.friction,
+                tangential_stiffness: None,
+                inertia_factor: None,
+            };
+            let impact = ball.oblique(&spec, SAMPLES).map_err(|e| e.to_string());
+            let tennis = ITF_COURT_PACE.balls.contains(&self.preset().name.as_str());
+            let pace = tennis.then(|| {
+                ball.court_pace(o.friction, None, None)
+                    .map_err(|e: BallError| e.to_string())
+            });
+            let o = &mut self.oblique;
+            (o.impact, o.pace, o.impact_for) = (Some(impact), pace, Some(key));
+        }
+        self.refresh_oblique_map(ball)
+    }
+
+    fn refresh_oblique_map(&mut self, ball: Ball) -> Option<Effect> {
+        let spec = MapSpec {
+            ball,
+            spin: self.oblique.spin,
+        };
+        if self.oblique.map_for.as_ref() == Some(&spec) {
+            return None;
+        }
+        let o = &mut self.oblique;
+        o.cancel();
+        o.generation += 1;
+        o.map = None;
+        o.map_for = Some(spec.clone());
+        if !self.background {
+            o.map = map::compute(&spec, &AtomicBool::new(false));
+            return None;
+        }
+        let cancel = Arc::new(AtomicBool::new(false));
+        o.out = Some(Arc::clone(&cancel));
+        Some(Effect::ObliqueMap(MapJob {
+            generation: o.generation,
+            spec,
+            cancel,
+        }))
+    }
+
+    /// The worker's map: kept when it is of the map asked last.
+    pub(in crate::tui) fn receive_oblique_map(
+        &mut self,
+        generation: u64,
+        map: Result<map::ObliqueMap, String>,
+    ) {
+        if generation == self.oblique.generation {
+            self.oblique.out = None;
+            self.oblique.map = Some(map);
+        }
+    }
+}

@@ -1,0 +1,167 @@
+//! The oblique view's panel (`i`): on the charts page F_n and F_t, v_c and ω against time and
+//! the paths; on the map page the (angle, μ) map; on both a readout of θ, ω, μ (the selected
+//! one marked) and the outgoing motion, and the ITF court pace for the tennis ball. Reads the
+//! view's state only.
+
+use crate::api::CourtPace;
+use crate::oblique::ObliqueResponse;
+use crate::text::{sig, sig_trim};
+use crate::tui::theme::Theme;
+use crate::tui::views::oblique::charts;
+use crate::tui::views::oblique::map_widget::MapRaster;
+use crate::tui::views::oblique::param::ObliqueParam;
+use crate::tui::views::oblique::state::{ObliqueView, Page};
+use ratatui::buffer::Buffer;
+use ratatui::layout::{Constraint, Layout, Rect};
+use ratatui::text::{Line, Span};
+use ratatui::widgets::{Block, Paragraph, Widget, Wrap};
+
+/// Width of the readout column.
+const READOUT_WIDTH: u16 = 36;
+/// Narrowest chart column with three charts in its bottom row (v_c, ω and the paths).
+const NARROW: u16 = 60;
+
+/// The oblique view in its area (between the header and the message line).
+#[derive(Debug, Clone, Copy)]
+pub struct ObliquePanel<'a> {
+    pub view: &'a ObliqueView,
+    /// The ball's name, for the readout's title.
+    pub ball: &'a str,
+    /// The incoming speed (m/s), the explorer's v0.
+    pub v0: f64,
+    pub theme: Theme,
+}
+
+impl Widget for ObliquePanel<'_> {
+    fn render(self, area: Rect, buf: &mut Buffer) {
+        let w = READOUT_WIDTH.min(area.width / 2);
+        let [main, side] =
+            Layout::horizontal([Constraint::Fill(1), Constraint::Length(w)]).areas(area);
+        match self.view.page {
+            Page::Charts => self.render_charts(main, side, buf),
+            Page::Map => {
+                MapRaster {
+                    view: self.view,
+                    theme: self.theme,
+                }
+                .render(main, buf);
+                self.render_readout(side, buf);
+            }
+        }
+    }
+}
+
+impl ObliquePanel<'_> {
+    /// The forces above v_c and ω; the paths above the readout beside them (on a short
+    /// screen the paths go in the bottom row, beside v_c and ω).
+    fn render_charts(self, main: Rect, side: Rect, buf: &mut Buffer) {
+        let theme = self.theme;
+        let Some(r) = self.view.response() else {
+            self.render_readout(main.union(side), buf);
+            return;
+        };
+        let [top, bottom] = Layout::vertical([Constraint::Fill(1); 2]).areas(main);
+        charts::render_forces(r, theme, top, buf);
+        let tall = side.height >= 30;
+        if tall {
+            let [paths, readout] =
+                Layout::vertical([Constraint::Length(side.height / 3), Constraint::Fill(1)])
+                    .areas(side);
+            charts::render_paths(r, theme, paths, buf);
+            self.render_readout(readout, buf);
+            let [slip, spin] = Layout::horizontal([Constraint::Fill(1); 2]).areas(bottom);
+            charts::render_slip(r, theme, slip, buf);
+            charts::render_spin(r, theme, spin, buf);
+        } else if main.width >= NARROW {
+            self.render_readout(side, buf);
+            let [slip, spin, paths] = Layout::horizontal([Constraint::Fill(1); 3]).areas(bottom);
+            charts::render_slip(r, theme, slip, buf);
+            charts::render_spin(r, theme, spin, buf);
+            charts::render_paths(r, theme, paths, buf);
+        } else {
+            // two charts a row at most: the paths give way (the readout has both angles)
+            self.render_readout(side, buf);
+            let [slip, spin] = Layout::horizontal([Constraint::Fill(1); 2]).areas(bottom);
+            charts::render_slip(r, theme, slip, buf);
+            charts::render_spin(r, theme, spin, buf);
+        }
+    }
+
+    fn render_readout(self, area: Rect, buf: &mut Buffer) {
+        let theme = self.theme;
+        let mut lines = vec![Line::styled(
+            format!("{} · oblique", self.ball),
+            theme.title(),
+        )];
+        lines.extend(self.parameter_lines());
+        match &self.view.impact {
+            Some(Ok(r)) => lines.extend(result_lines(r, theme)),
+            Some(Err(e)) => lines.push(Line::styled(e.clone(), theme.error())),
+            None => {}
+        }
+        match &self.view.pace {
+            Some(Ok(p)) => lines.extend(pace_lines(p, self.view.friction, theme)),
+            Some(Err(e)) => lines.push(Line::styled(format!("ITF pace: {e}"), theme.error())),
+            None => {}
+        }
+        Paragraph::new(lines)
+            .wrap(Wrap { trim: true })
+            .block(Block::bordered())
+            .render(area, buf);
+    }
+
+    /// θ, ω and μ, the selected one marked ▶, and the speed.
+    fn parameter_lines(self) -> Vec<Line<'static>> {
+        let v = self.view;
+        let row = |p: ObliqueParam, text: String| {
+            let (mark, style) = if p == v.selected {
+                ("▶", self.theme.selected())
+            } else {
+                (" ", ratatui::style::Style::default())
+            };
+            Line::styled(format!("{mark}{} {text}", p.symbol()), style)
+        };
+        vec![
+            row(ObliqueParam::Angle, format!("{}°", sig_trim(v.angle, 6))),
+            row(ObliqueParam::Spin, format!("{} rad/s", sig_trim(v.spin, 6))),
+            row(ObliqueParam::Friction, sig_trim(v.friction, 6)),
+            Line::raw(format!(" v0 {} m/s", sig_trim(self.v0, 6))),
+        ]
+    }
+}
+
+/// The outgoing motion and the contact's figures.
+fn result_lines(r: &ObliqueResponse, theme: Theme) -> Vec<Line<'static>> {
+    let ex = r
+        .cor_tangential
+        .map_or("— (rolls in)".into(), |e| sig(e, 4));
+    let grip = if r.slid_throughout {
+        "slid throughout".to_string()
+    } else {
+        format!("gripped {} ms", sig(r.grip_time * 1e3, 4))
+    };
+    vec![
+        Line::styled("out", theme.dim()),
+        Line::raw(format!(" v_out {} m/s", sig(r.v_out, 4))),
+        Line::raw(format!(" angle {}°", sig(r.angle_out_deg, 4))),
+        Line::raw(format!(" spin  {} rad/s", sig(r.spin_out, 4))),
+        Line::raw(format!(" e_y {}  e_x {ex}", sig(r.cor_normal, 4))),
+        Line::raw(format!(" μ_app {}", sig(r.apparent_friction, 4))),
+        Line::raw(format!(" contact {} ms", sig(r.contact_time * 1e3, 4))),
+        Line::raw(format!(" {grip}")),
+    ]
+}
+
+/// The ITF court pace at μ: its rating and category.
+fn pace_lines(p: &CourtPace, mu: f64, theme: Theme) -> Vec<Line<'static>> {
+    vec![
+        Line::styled(
+            format!("ITF court pace at μ {}", sig_trim(mu, 4)),
+            theme.dim(),
+        ),
+        Line::from(vec![
+            Span::raw(format!(" CPR {} · ", sig(p.cpr, 3))),
+            Span::styled(format!("{} {}", p.category, p.category_name), theme.title()),
+        ]),
+    ]
+}
