@@ -294,6 +294,10 @@ fn refine_both(flow: &Flow4, guesses: [Point4; 2], live: V) -> ([Root4; 2], V) {
             };
             found[i] |= now;
             active[i] &= inside & !settled;
+            if !active[i].any() {
+                // every lane of this event settled or left: no next point to turn to
+                continue;
+            }
             let (shifted, fits) = flow.shift(&point, -h);
             let far = active[i] & !fits;
             points[i] = if far.any() {
