@@ -24,7 +24,9 @@ const MAX_DATA_BYTES: u64 = 64 << 20;
 
 /// A file that cannot be read: `OSError` with the command line's message (its exit 1).
 fn os_error(path: &Path, msg: impl std::fmt::Display) -> PyErr {
-    PyOSError::new_err(bouncelab::sanitize::line(&format!("{}: {msg}", path.display())).into_owned())
+    PyOSError::new_err(
+        bouncelab::sanitize::line(&format!("{}: {msg}", path.display())).into_owned(),
+    )
 }
 
 /// A data file's text: a regular file of at most [`MAX_DATA_BYTES`], UTF-8 (an error names
@@ -35,7 +37,10 @@ fn read_text(path: &Path) -> PyResult<String> {
         return Err(os_error(path, "is not a regular file"));
     }
     if meta.len() > MAX_DATA_BYTES {
-        let msg = format!("is {} bytes; a data file is at most {MAX_DATA_BYTES} bytes", meta.len());
+        let msg = format!(
+            "is {} bytes; a data file is at most {MAX_DATA_BYTES} bytes",
+            meta.len()
+        );
         return Err(value_error(format!("{}: {msg}", path.display())));
     }
     let mut bytes = Vec::new();
@@ -73,13 +78,17 @@ fn load(file: &Path) -> PyResult<Vec<(String, usize, Data)>> {
                 BallData::Measured(d) => d,
                 BallData::TraceFile { path, line, column } => {
                     let at = |e: String| {
-                        format!("{}:{line}:{column}: trace of '{}': {e}", file.display(), b.id)
+                        format!(
+                            "{}:{line}:{column}: trace of '{}': {e}",
+                            file.display(),
+                            b.id
+                        )
                     };
                     let trace_path = dir.join(&path);
-                    let text = read_text(&trace_path).map_err(|e| value_error(at(e.to_string())))?;
-                    let t = Trace::parse(&text).map_err(|e| {
-                        value_error(at(format!("{}:{e}", trace_path.display())))
-                    })?;
+                    let text =
+                        read_text(&trace_path).map_err(|e| value_error(at(e.to_string())))?;
+                    let t = Trace::parse(&text)
+                        .map_err(|e| value_error(at(format!("{}:{e}", trace_path.display()))))?;
                     Data::Trace(t)
                 }
             };
@@ -92,13 +101,17 @@ fn load(file: &Path) -> PyResult<Vec<(String, usize, Data)>> {
 fn standard(name: Option<&str>, ball: &Ball) -> PyResult<&'static Standard> {
     match name {
         Some(name) => standards::find(name).map_err(|e| value_error(e.to_string())),
-        None => ball.name.as_deref().and_then(standards::for_ball).ok_or_else(|| {
-            value_error(format!(
-                "standard= is needed: {} has no standard of its own (bouncelab.standards() \
+        None => ball
+            .name
+            .as_deref()
+            .and_then(standards::for_ball)
+            .ok_or_else(|| {
+                value_error(format!(
+                    "standard= is needed: {} has no standard of its own (bouncelab.standards() \
                  lists them)",
-                ball.label()
-            ))
-        }),
+                    ball.label()
+                ))
+            }),
     }
 }
 
