@@ -18,11 +18,11 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
 mod arrays;
+mod batch;
 mod catalog_cache;
 mod collide;
 mod fits;
 mod impact;
-mod batch;
 mod interrupt;
 mod mc;
 mod oblique;
