@@ -4,10 +4,12 @@ BENCHMARKS.md). Run after `pip install ./python`:
     RAYON_NUM_THREADS=1 python benches/impacts_python.py    # per core
     python benches/impacts_python.py                        # all cores
 
-Prints the median of 5 runs of `bouncelab.impacts` over 10⁶ linear-law balls (the superball
+Prints the median of 5 runs (wall clock, then CPU time) of `bouncelab.impacts` over 10⁶ linear-law balls (the superball
 with K_p, c, K_r spread 5 %, no flattening: the closed form), per impact; and the median cost
-of one `run(preset="golf")` and one `run_params(…)` call. Speed is measured here, never
-asserted in tests.
+of one `run(preset="golf")` and one `run_params(…)` call; then, if SciPy is installed, the
+same impacts with `scipy.integrate.solve_ivp` (RK45, rtol 1e-10, atol 1e-13, terminal event
+at F = 0 falling, as benches/scipy_sweep.py) on the first 300 balls, the ratio of the two per
+impact and their largest COR difference. Speed is measured here, never asserted in tests.
 """
 
 import os
@@ -17,6 +19,45 @@ import time
 import numpy as np
 
 import bouncelab
+
+SCIPY_BALLS = 300
+
+
+def scipy_cor(lam, zeta):
+    """The normalized linear impact by solve_ivp (docs/model.md §5): x = (a, a', y)."""
+    from scipy.integrate import solve_ivp
+
+    def rhs(t, x):
+        f = x[0] - x[2]
+        return [x[1], -f, 2.0 * zeta * (f - lam * x[2])]
+
+    def force(t, x):
+        return x[0] - x[2]
+
+    force.terminal = True
+    force.direction = -1
+    sol = solve_ivp(rhs, (0.0, 100.0), [0.0, 1.0, 0.0], method="RK45", rtol=1e-10, atol=1e-13,
+                    events=force)
+    return max(0.0, -sol.y_events[0][0][1]) if sol.t_events[0].size else 0.0
+
+
+def scipy_side_by_side(m, k_p, c, k_r, v0, per_impact_ns):
+    try:
+        import scipy  # noqa: F401
+    except ImportError:
+        print("SciPy is not installed: no side by side (pip install scipy)")
+        return
+    k_p, c, k_r = k_p[:SCIPY_BALLS], c[:SCIPY_BALLS], k_r[:SCIPY_BALLS]
+    lam, zeta = k_r / k_p, np.sqrt(m * k_p) / (2.0 * c)
+    t = median_of(lambda: [scipy_cor(a, b) for a, b in zip(lam, zeta)], runs=3)
+    ours = bouncelab.impacts(m=m, k_p=k_p, c=c, k_r=k_r, v0=v0)["cor"]
+    theirs = np.array([scipy_cor(a, b) for a, b in zip(lam, zeta)])
+    per = t / SCIPY_BALLS * 1e9
+    print(
+        f"scipy solve_ivp, {SCIPY_BALLS} of the balls: {per / 1e3:.0f} µs per impact; "
+        f"bouncelab.impacts {per / per_impact_ns:.0f} x faster; "
+        f"max |COR difference| {np.max(np.abs(ours - theirs)):.1e}"
+    )
 
 
 def median_of(f, runs=5):
@@ -28,6 +69,15 @@ def median_of(f, runs=5):
     return statistics.median(ts)
 
 
+def median_of_cpu(f, runs=5):
+    ts = []
+    for _ in range(runs):
+        t = time.process_time()
+        f()
+        ts.append(time.process_time() - t)
+    return statistics.median(ts)
+
+
 def main():
     n = 10**6
     rng = np.random.default_rng(1)
@@ -35,8 +85,10 @@ def main():
     c = 10.0 * (1 + 0.05 * rng.standard_normal(n))
     k_r = 7.08e4 * (1 + 0.05 * rng.standard_normal(n))
     threads = os.environ.get("RAYON_NUM_THREADS", "all")
-    t = median_of(lambda: bouncelab.impacts(m=0.0495, k_p=k_p, c=c, k_r=k_r, v0=3.12))
+    t = wall = median_of(lambda: bouncelab.impacts(m=0.0495, k_p=k_p, c=c, k_r=k_r, v0=3.12))
     print(f"impacts, 1e6 linear, {threads} threads: {t * 1e3:.1f} ms, {t / n * 1e9:.0f} ns per impact")
+    cpu = median_of_cpu(lambda: bouncelab.impacts(m=0.0495, k_p=k_p, c=c, k_r=k_r, v0=3.12))
+    print(f"  the same in CPU time (all threads): {cpu / n * 1e9:.0f} ns per impact")
     calls = 2000
     t = median_of(lambda: [bouncelab.run(preset="golf") for _ in range(calls)])
     print(f"run(preset='golf'): {t / calls * 1e6:.2f} µs per call")
@@ -47,6 +99,8 @@ def main():
         ]
     )
     print(f"run_params(...): {t / calls * 1e6:.2f} µs per call")
+    # wall clock on both sides: the ratio of two times taken in the same run
+    scipy_side_by_side(0.0495, k_p, c, k_r, 3.12, wall / n * 1e9)
 
 
 if __name__ == "__main__":

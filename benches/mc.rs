@@ -78,3 +78,39 @@ fn block_1e5_one_thread(b: divan::Bencher) {
         .unwrap();
     b.bench_local(|| pool.install(|| s.samples(0, 100_000).unwrap().len()));
 }
+
+/// The (λ, ζ) of the golf samples 0 … 10⁵.
+fn golf_points() -> (Vec<f64>, Vec<f64>) {
+    let s = sampler(false);
+    (0..100_000u64)
+        .map(|i| {
+            let n = s.params(i).unwrap().normalized();
+            (n.lambda, n.zeta)
+        })
+        .unzip()
+}
+
+/// The closed form alone over the 10⁵ golf samples, one at a time (`map::fast::summary`, the
+/// scalar path): the baseline of `closed_form_1e5_lanes` in the same run. Per sample: the
+/// median / 1e5.
+#[divan::bench(sample_count = 20)]
+fn closed_form_1e5_scalar(b: divan::Bencher) {
+    let (l, z) = golf_points();
+    b.bench_local(|| {
+        l.iter()
+            .zip(&z)
+            .map(|(&l, &z)| bouncelab::map::fast::summary(black_box(l), z).map_or(0.0, |s| s.cor))
+            .sum::<f64>()
+    });
+}
+
+/// The same four at a time through the lanes (`map::fast::lanes::summaries`, what `mc` runs).
+#[divan::bench(sample_count = 20)]
+fn closed_form_1e5_lanes(b: divan::Bencher) {
+    let (l, z) = golf_points();
+    let mut out = vec![None; l.len()];
+    b.bench_local(|| {
+        bouncelab::map::fast::lanes::summaries(black_box(&l), &z, &mut out);
+        out.iter().map(|s| s.map_or(0.0, |s| s.cor)).sum::<f64>()
+    });
+}

@@ -23,6 +23,7 @@ from ._native import (
     Impact,
     NoAnswerError,
     ObliqueImpact,
+    batch,
     collide,
     drop,
     fit,
@@ -44,6 +45,7 @@ from ._boundary import guard as _guard
 
 # every function of the native module through the boundary: panics raise RuntimeError, and
 # numbers too large for it name their argument (bouncelab/_boundary.py)
+batch = _guard(batch)
 collide = _guard(collide)
 drop = _guard(drop)
 fit = _guard(fit)
@@ -63,6 +65,7 @@ __all__ = [
     "Impact",
     "NoAnswerError",
     "ObliqueImpact",
+    "batch",
     "collide",
     "drop",
     "fit",

@@ -1,6 +1,8 @@
 """Type stubs of bouncelab (the functions live in the native module bouncelab._native)."""
 
-from typing import Literal, Optional, Sequence, TypedDict, Union
+from typing import Any, Literal, Optional, Sequence, TypedDict, Union
+
+import os
 
 import numpy as np
 import numpy.typing as npt
@@ -360,6 +362,23 @@ class MonteCarlo(TypedDict, total=False):
     no_rebound: int
     stats: dict[str, McStats]
     values: dict[str, Array]
+
+def batch(
+    file: Union[str, "os.PathLike[str]"],
+    *,
+    standard: Optional[str] = None,
+    preset: str = "superball",
+    params: Optional[ParamSet] = None,
+    law: Optional[Law] = None,
+    v0: Optional[float] = None,
+    free: Optional[Union[str, list[str]]] = None,
+    drag_coefficient: Optional[float] = None,
+    air_density: float = 1.204,
+) -> dict[str, Any]:
+    """A batch of balls in one CSV (an ``id`` column and ``fit``'s columns), each fitted and
+    judged against ``standard``, as ``bouncelab batch FILE --format json``: ``summary`` (n,
+    mean, sd, min, max, failures, cpk, …) and ``balls`` (id, cor, verdict, margin, warnings,
+    error, …); ``None`` where the JSON has null."""
 
 def monte_carlo(
     *,

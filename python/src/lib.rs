@@ -18,6 +18,7 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
 mod arrays;
+mod batch;
 mod catalog_cache;
 mod collide;
 mod fits;
@@ -438,6 +439,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(fits::fit_drops, m)?)?;
     m.add_function(wrap_pyfunction!(mc::monte_carlo, m)?)?;
     m.add_function(wrap_pyfunction!(arrays::impacts, m)?)?;
+    m.add_function(wrap_pyfunction!(batch::batch, m)?)?;
     m.add_function(wrap_pyfunction!(mc::monte_carlo_chunk, m)?)?;
     m.add_function(wrap_pyfunction!(mc::monte_carlo_merge, m)?)?;
     Ok(())

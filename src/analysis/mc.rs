@@ -15,12 +15,15 @@
 //! - **K_h follows K_p and z_p** (Eq. 16) when either is varied, as the fit and the command
 //!   line's overrides tie them (as [`super::fit::apply`]).
 //! - **Each impact is `run`'s**: the closed form of [`crate::map::fast`] where it answers and
-//!   the ball does not flatten (to 1e-12 of the exact solver), else [`crate::simulate`].
+//!   the ball does not flatten (to 1e-12 of the exact solver), else [`crate::simulate`]. The
+//!   closed form runs four samples at once in lanes ([`crate::map::fast::lanes`]); each lane
+//!   is a function of its own ball alone, so a sample's answer does not depend on its group.
 
 use super::fit::Param;
 use super::mc_stats::stats;
+use crate::map::fast::lanes::{self, LANES};
 use crate::model::contact::ContactLaw;
-use crate::model::params::ImpactParams;
+use crate::model::params::{ImpactParams, Normalized};
 use crate::solver::{SolveError, SolveOptions, simulate};
 use chacha20::ChaCha8Rng;
 use chacha20::rand_core::SeedableRng;
@@ -234,13 +237,30 @@ impl Sampler {
         Ok(p)
     }
 
-    /// Sample `index`: its ball, and the impact `bouncelab run` would solve for it.
+    /// Sample `index`: its ball, and the impact `bouncelab run` would solve for it (as in
+    /// [`Sampler::samples`]: [`impact`]'s lanes give a sample the same answer alone as in any
+    /// group).
     pub fn outcome(&self, index: u64) -> Result<Outcome, McError> {
         let p = self.params(index)?;
         impact(&p, self.law).map_err(McError::Solve)
     }
 
-    /// The samples `start … start + count`, on all cores; the first error by index, if any.
+    /// The samples `index[k]`, their impacts four at once ([`impacts`]).
+    fn outcomes(&self, index: [u64; LANES]) -> [Result<Outcome, McError>; LANES] {
+        let params = index.map(|i| self.params(i));
+        let balls = params.each_ref().map(|p| p.as_ref().ok().copied());
+        let mut solved = impacts(&balls, self.law).into_iter();
+        params.map(|p| {
+            let s = solved.next().flatten();
+            p.and_then(|_| {
+                s.expect("a checked ball has its impact")
+                    .map_err(McError::Solve)
+            })
+        })
+    }
+
+    /// The samples `start … start + count`, on all cores, four at a time; the first error by
+    /// index, if any.
     pub fn samples(&self, start: u64, count: usize) -> Result<Samples, McError> {
         let mut out = Samples {
             start,
@@ -252,11 +272,16 @@ impl Sampler {
         while done < count {
             let n = BLOCK.min(count - done);
             let first = start + done as u64;
-            let block: Vec<Result<Outcome, McError>> = (0..n as u64)
+            let last = first + n as u64 - 1;
+            // the last group padded with its own last sample, whose copies are dropped
+            let block: Vec<[Result<Outcome, McError>; LANES]> = (0..n.div_ceil(LANES) as u64)
                 .into_par_iter()
-                .map(|k| self.outcome(first + k))
+                .map(|g| {
+                    let at = |k: usize| (first + g * LANES as u64 + k as u64).min(last);
+                    self.outcomes(std::array::from_fn(at))
+                })
                 .collect();
-            for r in block {
+            for r in block.into_iter().flatten().take(n) {
                 let o = r?;
                 out.cor.push(o.cor);
                 out.max_force.push(o.max_force);
@@ -274,28 +299,51 @@ fn lognormal(v: f64, spread: f64, n: f64) -> f64 {
     v * (var.sqrt() * n - 0.5 * var).exp()
 }
 
-/// One impact as `bouncelab run` solves it (COR, F_m, t_f): the closed form where it answers
-/// and the ball does not flatten (z̄_m ≤ z̄_p), SI by F = F̄ m v0 ω0 and t = τ/ω0; else the
-/// solver with its default options.
+/// One impact as `bouncelab run` solves it (COR, F_m, t_f): [`impacts`]' lane 0 with `p` in
+/// every lane, so that a ball's answer is the same alone as in any group of four.
 pub fn impact(p: &ImpactParams, law: ContactLaw) -> Result<Outcome, SolveError> {
-    if law == ContactLaw::Linear {
-        let n = p.normalized();
-        if let Some(s) = crate::map::fast::summary(n.lambda, n.zeta)
+    let [one, ..] = impacts(&[Some(*p); LANES], law);
+    one.expect("a ball has its impact")
+}
+
+/// The impacts of up to four checked balls (`None`: no ball, no answer) as `bouncelab run`
+/// solves them: on the linear law the closed form in lanes ([`lanes::summary4`], to 1e-12 of
+/// the exact solver) where it answers and the ball does not flatten (z̄_m ≤ z̄_p), SI by F =
+/// F̄ m v0 ω0 and t = τ/ω0; else the solver with its default options.
+pub fn impacts(
+    balls: &[Option<ImpactParams>; LANES],
+    law: ContactLaw,
+) -> [Option<Result<Outcome, SolveError>>; LANES] {
+    let normalized = balls
+        .each_ref()
+        .map(|p| p.as_ref().map(ImpactParams::normalized));
+    let fast = if law == ContactLaw::Linear {
+        let pick = |f: fn(&Normalized) -> f64| {
+            normalized
+                .each_ref()
+                .map(|n| n.as_ref().map_or(f64::NAN, f))
+        };
+        lanes::summary4(pick(|n| n.lambda), pick(|n| n.zeta))
+    } else {
+        [None; LANES]
+    };
+    std::array::from_fn(|k| {
+        let (p, n) = (balls[k].as_ref()?, normalized[k].as_ref()?);
+        if let Some(s) = fast[k]
             && s.max_force <= n.zp_bar
         {
             let w0 = p.omega0();
-            return Ok(Outcome {
+            return Some(Ok(Outcome {
                 cor: s.cor,
                 max_force: s.max_force * p.mass * p.v0 * w0,
                 contact_time: s.contact_time / w0,
-            });
+            }));
         }
-    }
-    let r = simulate(p, law, &SolveOptions::default())?;
-    Ok(Outcome {
-        cor: r.cor,
-        max_force: r.max_force,
-        contact_time: r.contact_time.unwrap_or(f64::NAN),
+        Some(simulate(p, law, &SolveOptions::default()).map(|r| Outcome {
+            cor: r.cor,
+            max_force: r.max_force,
+            contact_time: r.contact_time.unwrap_or(f64::NAN),
+        }))
     })
 }
 

@@ -3,8 +3,10 @@
 //! budget, warnings), so that a linear-law row costs the closed form of [`crate::map::fast`].
 
 use super::BallError;
+use crate::map::fast::Summary;
+use crate::map::fast::lanes::{self, LANES};
 use crate::model::contact::ContactLaw;
-use crate::model::params::ImpactParams;
+use crate::model::params::{ImpactParams, Normalized};
 use crate::solver::{SolveError, SolveOptions, simulate};
 use rayon::prelude::*;
 
@@ -30,9 +32,25 @@ pub struct ImpactRow {
 /// K_p, docs/model.md §3, and no permanent indentation), else the solver with its default
 /// options. tests/rows.rs holds the two paths to each other.
 pub fn impact_row(p: &ImpactParams, law: ContactLaw) -> Result<ImpactRow, SolveError> {
+    let fast = if law == ContactLaw::Linear {
+        let n = p.normalized();
+        crate::map::fast::summary(n.lambda, n.zeta)
+    } else {
+        None
+    };
+    row_from(p, law, fast)
+}
+
+/// [`impact_row`] with the closed form's answer for `p` given (`None`: none, or not the
+/// linear law).
+fn row_from(
+    p: &ImpactParams,
+    law: ContactLaw,
+    fast: Option<Summary>,
+) -> Result<ImpactRow, SolveError> {
     if law == ContactLaw::Linear {
         let n = p.normalized();
-        if let Some(s) = crate::map::fast::summary(n.lambda, n.zeta)
+        if let Some(s) = fast
             && s.max_force <= n.zp_bar
             && s.cor > 0.0
         {
@@ -59,10 +77,41 @@ pub fn impact_row(p: &ImpactParams, law: ContactLaw) -> Result<ImpactRow, SolveE
     })
 }
 
-/// The rows of the balls `params(0) … params(n − 1)` on all cores, each ball checked first
-/// (a [`BallError::Param`] naming the field) and solved by [`impact_row`]; on failure the
-/// first failing index and its error, whatever the threads did (the rows are scanned again
-/// in order to find it). The caller applies the work limit
+/// The rows of balls `first … first + 3` (past `last`: `last` again, a copy the caller
+/// drops), each checked, the linear law's closed forms four at once
+/// ([`lanes::summary4`], to 1e-12 of [`crate::map::fast::summary`]).
+fn four_rows<F>(
+    first: usize,
+    last: usize,
+    law: ContactLaw,
+    params: &F,
+) -> [Result<ImpactRow, BallError>; LANES]
+where
+    F: Fn(usize) -> ImpactParams + Sync,
+{
+    let balls: [ImpactParams; LANES] = std::array::from_fn(|k| params((first + k).min(last)));
+    let checked = balls.map(|p| p.validate().map(|()| p));
+    let fast = if law == ContactLaw::Linear {
+        let n = checked
+            .each_ref()
+            .map(|p| p.as_ref().ok().map(ImpactParams::normalized));
+        let pick = |f: fn(&Normalized) -> f64| n.map(|n| n.as_ref().map_or(f64::NAN, f));
+        lanes::summary4(pick(|n| n.lambda), pick(|n| n.zeta))
+    } else {
+        [None; LANES]
+    };
+    let mut fast = fast.into_iter();
+    checked.map(|p| {
+        let s = fast.next().flatten();
+        let p = p.map_err(BallError::Param)?;
+        row_from(&p, law, s).map_err(BallError::Solve)
+    })
+}
+
+/// The rows of the balls `params(0) … params(n − 1)` on all cores, four at a time, each ball
+/// checked first (a [`BallError::Param`] naming the field) and solved as [`impact_row`]
+/// solves it, the closed forms in lanes (to 1e-12 of it); on failure the first failing index
+/// and its error, whatever the threads did (the rows are kept in order). The caller applies the work limit
 /// ([`crate::analysis::work::check_samples`]).
 pub fn impact_rows<F>(
     n: usize,
@@ -72,18 +121,16 @@ pub fn impact_rows<F>(
 where
     F: Fn(usize) -> ImpactParams + Sync,
 {
-    let one = |i: usize| -> Result<ImpactRow, BallError> {
-        let p = params(i);
-        p.validate().map_err(BallError::Param)?;
-        impact_row(&p, law).map_err(BallError::Solve)
-    };
-    let rows: Result<Vec<ImpactRow>, ()> = (0..n)
+    if n == 0 {
+        return Ok(Vec::new());
+    }
+    let groups: Vec<[Result<ImpactRow, BallError>; LANES]> = (0..n.div_ceil(LANES))
         .into_par_iter()
-        .map(|i| one(i).map_err(|_| ()))
+        .map(|g| four_rows(g * LANES, n - 1, law, &params))
         .collect();
-    rows.map_err(|()| {
-        (0..n)
-            .find_map(|i| one(i).err().map(|e| (i, e)))
-            .unwrap_or((0, BallError::NoValue("a failing row")))
-    })
+    let mut rows = Vec::with_capacity(n);
+    for (i, r) in groups.into_iter().flatten().take(n).enumerate() {
+        rows.push(r.map_err(|e| (i, e))?);
+    }
+    Ok(rows)
 }

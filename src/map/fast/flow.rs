@@ -245,7 +245,7 @@ impl Flow {
 
 /// Largest |rate × h| for [`Flow::shift`]'s series: eleven terms of e^x leave x¹¹/11! ≈
 /// 1e-21 at x = 1/16.
-const SMALL: f64 = 1.0 / 16.0;
+pub(super) const SMALL: f64 = 1.0 / 16.0;
 
 /// 1/k!, k ≤ 13.
 const INV_FACTORIAL: [f64; 14] = {

@@ -29,6 +29,7 @@
 //! other two are a complex pair.
 
 mod flow;
+pub mod lanes;
 mod search;
 
 use flow::Flow;

@@ -14,14 +14,14 @@ use std::f64::consts::{FRAC_PI_2, PI};
 
 /// Longest contact the fast path follows (τ); past it the exact solver's creep handling is
 /// the one to trust.
-const TAU_MAX: f64 = 1e3;
+pub(super) const TAU_MAX: f64 = 1e3;
 /// Most bracket steps per event.
 const MAX_STEPS: usize = 400;
 /// Most Householder steps per event before [`first_fall`] takes over.
-const MAX_REFINE: usize = 6;
+pub(super) const MAX_REFINE: usize = 6;
 /// A Householder step this small against the flow's time scale (ρ|h|, ρ from the derivatives'
 /// ratios) leaves the root good to ~(ρh)⁴/ρ ≈ 1e-16/ρ: the last one is taken, not evaluated.
-const SETTLED: f64 = 1e-4;
+pub(super) const SETTLED: f64 = 1e-4;
 
 /// A root of z̄^{(k)}: τ, and the flow's jet at a point near it (the last point evaluated),
 /// from which values at τ follow by Taylor's series.

@@ -1,0 +1,178 @@
+//! `bouncelab.batch`: a batch of balls from one CSV, one fit and one verdict each against a
+//! standard, as `bouncelab batch FILE --format json` (docs/batch.md). The library splits the
+//! batch ([`bouncelab::analysis::batch::split`]) and judges each ball
+//! ([`Ball::judge_in_batch`]); this file reads the batch and the trace files it names, as the
+//! command line's `src/cli/batch.rs` reads them (the same checks, the same messages), and
+//! returns the JSON document's structure as a dict (serde_json's, so the keys, the order and
+//! the `None`s are the command line's: python/tests/test_batch.py compares them).
+
+use crate::{error, preset_ball, value_error};
+use bouncelab::Ball;
+use bouncelab::analysis::batch::{BallData, split};
+use bouncelab::analysis::fit::parse_free;
+use bouncelab::api::{BatchReport, BatchSetup};
+use bouncelab::drop::standards::{self, Standard};
+use bouncelab::measured::{Air, Data, Trace};
+use pyo3::exceptions::PyOSError;
+use pyo3::prelude::*;
+use rayon::prelude::*;
+use std::io::Read;
+use std::path::{Path, PathBuf};
+
+/// Largest data file read, as the command line's (`measured::file::MAX_DATA_BYTES`).
+const MAX_DATA_BYTES: u64 = 64 << 20;
+
+/// A file that cannot be read: `OSError` with the command line's message (its exit 1).
+fn os_error(path: &Path, msg: impl std::fmt::Display) -> PyErr {
+    PyOSError::new_err(
+        bouncelab::sanitize::line(&format!("{}: {msg}", path.display())).into_owned(),
+    )
+}
+
+/// A data file's text: a regular file of at most [`MAX_DATA_BYTES`], UTF-8 (an error names
+/// the line and column of the first byte that is not), as `measured::file::read_text`.
+fn read_text(path: &Path) -> PyResult<String> {
+    let meta = std::fs::metadata(path).map_err(|e| os_error(path, describe(&e)))?;
+    if !meta.is_file() {
+        return Err(os_error(path, "is not a regular file"));
+    }
+    if meta.len() > MAX_DATA_BYTES {
+        let msg = format!(
+            "is {} bytes; a data file is at most {MAX_DATA_BYTES} bytes",
+            meta.len()
+        );
+        return Err(value_error(format!("{}: {msg}", path.display())));
+    }
+    let mut bytes = Vec::new();
+    std::fs::File::open(path)
+        .and_then(|f| f.take(MAX_DATA_BYTES + 1).read_to_end(&mut bytes))
+        .map_err(|e| os_error(path, describe(&e)))?;
+    String::from_utf8(bytes).map_err(|e| {
+        let valid = &e.as_bytes()[..e.utf8_error().valid_up_to()];
+        let line = valid.iter().filter(|&&b| b == b'\n').count() + 1;
+        let last = valid.rsplit(|&b| b == b'\n').next().unwrap_or(&[]);
+        let col = String::from_utf8_lossy(last).chars().count() + 1;
+        value_error(format!("{}:{line}:{col}: not UTF-8 text", path.display()))
+    })
+}
+
+fn describe(e: &std::io::Error) -> String {
+    match e.kind() {
+        std::io::ErrorKind::NotFound => "no such file".into(),
+        std::io::ErrorKind::PermissionDenied => "permission denied".into(),
+        _ => {
+            let s = e.to_string();
+            s.split(" (os error").next().unwrap_or(&s).to_string()
+        }
+    }
+}
+
+/// The batch's balls with their data, trace files read (relative to the batch's folder).
+fn load(file: &Path) -> PyResult<Vec<(String, usize, Data)>> {
+    let text = read_text(file)?;
+    let rows = split(&text).map_err(|e| value_error(format!("{}:{e}", file.display())))?;
+    let dir = file.parent().unwrap_or(Path::new(""));
+    rows.into_iter()
+        .map(|b| {
+            let data = match b.data {
+                BallData::Measured(d) => d,
+                BallData::TraceFile { path, line, column } => {
+                    let at = |e: String| {
+                        format!(
+                            "{}:{line}:{column}: trace of '{}': {e}",
+                            file.display(),
+                            b.id
+                        )
+                    };
+                    let trace_path = dir.join(&path);
+                    let text =
+                        read_text(&trace_path).map_err(|e| value_error(at(e.to_string())))?;
+                    let t = Trace::parse(&text)
+                        .map_err(|e| value_error(at(format!("{}:{e}", trace_path.display()))))?;
+                    Data::Trace(t)
+                }
+            };
+            Ok((b.id, b.line, data))
+        })
+        .collect()
+}
+
+/// `standard`, or the preset's own (as the command line's `--standard`).
+fn standard(name: Option<&str>, ball: &Ball) -> PyResult<&'static Standard> {
+    match name {
+        Some(name) => standards::find(name).map_err(|e| value_error(e.to_string())),
+        None => ball
+            .name
+            .as_deref()
+            .and_then(standards::for_ball)
+            .ok_or_else(|| {
+                value_error(format!(
+                    "standard= is needed: {} has no standard of its own (bouncelab.standards() \
+                 lists them)",
+                    ball.label()
+                ))
+            }),
+    }
+}
+
+/// A batch of balls in one CSV file — an `id` column and the columns `fit` reads (drop tests,
+/// a COR table, a trace, or a `trace` column naming each ball's trace file) — each ball fitted
+/// from the preset and judged against `standard` (default: the preset's own), as `bouncelab
+/// batch FILE --format json`: a dict with `preset`, `law`, `standard`, `summary` (`n`,
+/// `mean`, `sd`, `min`, `max`, `failures`, `cpk`, `balls`, `identified`, `no_answer`,
+/// `free`) and `balls` (one dict a ball: `id`, `cor`, `measured`, `verdict`, `margin`,
+/// `warnings`, `error`, …), `None` where the JSON has null. A ball that cannot be fitted says
+/// why in its `error` and the batch goes on (`summary["no_answer"]` counts them: the command
+/// line's exit 1). Bad input raises `ValueError` naming the file, line and column; a file that
+/// cannot be read, `OSError`. `free` is a list of names or the command line's "k_p,c". The balls are fitted in parallel without the GIL.
+#[pyfunction]
+#[pyo3(signature = (file, *, standard=None, preset="superball", params=None, law=None, v0=None, free=None, drag_coefficient=None, air_density=1.204))]
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn batch<'py>(
+    py: Python<'py>,
+    file: PathBuf,
+    standard: Option<&str>,
+    preset: &str,
+    params: Option<&str>,
+    law: Option<&str>,
+    v0: Option<f64>,
+    free: Option<&Bound<'py, PyAny>>,
+    drag_coefficient: Option<f64>,
+    air_density: f64,
+) -> PyResult<Bound<'py, PyAny>> {
+    let ball = preset_ball(preset, params, law, v0)?;
+    let standard = self::standard(standard, &ball)?;
+    // a list of names, or the command line's comma-separated text
+    let free: Option<Vec<String>> = free
+        .map(|f| match f.extract::<String>() {
+            Ok(text) => Ok(text.split(',').map(str::to_string).collect()),
+            Err(_) => f.extract::<Vec<String>>(),
+        })
+        .transpose()?;
+    let free = free
+        .as_deref()
+        .map(parse_free)
+        .transpose()
+        .map_err(|e| value_error(e.to_string()))?;
+    let air = drag_coefficient.map(|cd| Air {
+        density: air_density,
+        drag_coefficient: cd,
+    });
+    // the library checks the air once, whatever the data (as the command line)
+    ball.drops_to_cor(&[], air).map_err(error)?;
+    let balls = load(&file)?;
+    let setup = BatchSetup {
+        standard,
+        free: free.as_deref(),
+        air,
+    };
+    let text = py.detach(|| {
+        let outcomes: Vec<_> = balls
+            .par_iter()
+            .map(|(id, line, data)| ball.judge_in_batch(id, *line, data, &setup))
+            .collect();
+        serde_json::to_string(&BatchReport::new(&ball, standard, &outcomes))
+    });
+    let text = text.map_err(|e| value_error(e.to_string()))?;
+    py.import("json")?.call_method1("loads", (text,))
+}

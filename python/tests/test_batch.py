@@ -1,0 +1,97 @@
+"""bouncelab.batch against the command line's `bouncelab batch --format json` (BOUNCELAB_BIN):
+the same dict key by key, the same refusals (as ValueError / OSError), picklable."""
+
+import json
+import os
+import pickle
+import subprocess
+from pathlib import Path
+
+import pytest
+
+import bouncelab
+
+ROOT = Path(__file__).resolve().parents[2]
+LOT7 = ROOT / "tests" / "golden" / "batch-lot7.csv"
+
+
+@pytest.fixture(autouse=True)
+def no_user_presets(tmp_path, monkeypatch):
+    monkeypatch.setenv("XDG_CONFIG_HOME", str(tmp_path / "config"))
+
+
+def binary():
+    path = os.environ.get("BOUNCELAB_BIN") or str(ROOT / "target" / "debug" / "bouncelab")
+    if not Path(path).is_file():
+        if os.environ.get("BOUNCELAB_BIN"):
+            pytest.fail(f"BOUNCELAB_BIN={path} is not a file")
+        pytest.skip(f"no bouncelab binary at {path}")
+    return path
+
+
+def cli(*args):
+    p = subprocess.run([binary(), *args], capture_output=True, text=True, env=os.environ)
+    return p.returncode, p.stdout, p.stderr
+
+
+def test_lot7_is_the_command_line_s_json():
+    code, out, err = cli("batch", str(LOT7), "--preset", "tennis", "--format", "json")
+    # T06 cannot be fitted: the command line reports, then exits 1; Python returns the report
+    assert code == 1, err
+    r = bouncelab.batch(LOT7, preset="tennis")
+    assert r == json.loads(out)
+    assert r["summary"]["no_answer"] == 1 and r["summary"]["failures"] == 1
+    t06 = [b for b in r["balls"] if b["id"] == "T06"][0]
+    assert t06["verdict"] is None and "out of reach" in t06["error"]
+    assert pickle.loads(pickle.dumps(r)) == r
+
+
+def test_options_as_the_command_line_s(tmp_path):
+    code, out, err = cli(
+        "batch", str(LOT7), "--preset", "tennis", "--standard", "itf", "--free", "k_r,c",
+        "--drag-coefficient", "0.55", "--format", "json",
+    )
+    assert code in (0, 1), err
+    r = bouncelab.batch(
+        str(LOT7), preset="tennis", standard="itf", free="k_r,c", drag_coefficient=0.55
+    )
+    assert r == json.loads(out)
+    assert bouncelab.batch(LOT7, preset="tennis", free=["k_r", "c"], drag_coefficient=0.55) == r
+
+
+def test_a_cor_table_batch(tmp_path):
+    f = tmp_path / "golf.csv"
+    f.write_text("id,v0,cor\nG1,40,0.80\nG1,30,0.82\nG2,40,0.78\nG2,30,0.81\n")
+    code, out, err = cli(
+        "batch", str(f), "--preset", "golf", "--standard", "mlb", "--format", "json"
+    )
+    assert code in (0, 1), err
+    assert bouncelab.batch(f, preset="golf", standard="mlb") == json.loads(out)
+
+
+@pytest.mark.parametrize(
+    "text, standard, where",
+    [
+        ("id,v0,cor\nA,1,0.5\nB,1,0.6\nA,2,0.4\n", "itf", ":4:1:"),
+        ("v0,cor\n1,0.5\n", "itf", ":1:1:"),
+        ("id,v0,cor\nA,1,x\n", "itf", ":2:5:"),
+        ("id,drop_height_m,rebound_height_m\nA,2.54,1.4\n", "no-such-standard", None),
+    ],
+)
+def test_refusals_are_the_command_line_s(tmp_path, text, standard, where):
+    f = tmp_path / "bad.csv"
+    f.write_text(text)
+    code, _, err = cli("batch", str(f), "--preset", "tennis", "--standard", standard)
+    assert code == 2
+    with pytest.raises(ValueError) as e:
+        bouncelab.batch(f, preset="tennis", standard=standard)
+    assert str(e.value) in err
+    if where:
+        assert f"{f}{where}" in str(e.value)
+
+
+def test_a_missing_file_is_an_os_error(tmp_path):
+    with pytest.raises(OSError, match="no such file"):
+        bouncelab.batch(tmp_path / "none.csv", preset="tennis")
+    with pytest.raises(ValueError, match="free|k_x"):
+        bouncelab.batch(LOT7, preset="tennis", free="k_x")

@@ -1,0 +1,115 @@
+//! The linear fast path in lanes (`map::fast::lanes`, issue 30 item 3) against the scalar
+//! path (`map::fast::summary`): the same answers to 1e-12 over the 200 × 120 map's grid and
+//! 40,000 seeded random points of the plane, the same `None`s, and the lanes settle most of
+//! the plane themselves (else this test could not fail: every lane would be the scalar's).
+
+use bouncelab::map::fast::lanes::{LANES, lanes_only, summaries, summary4};
+use bouncelab::map::fast::{Summary, summary};
+
+/// splitmix64: a seeded stream of points, the same on every run.
+struct Stream(u64);
+
+impl Stream {
+    fn unit(&mut self) -> f64 {
+        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        ((z ^ (z >> 31)) >> 11) as f64 / (1u64 << 53) as f64
+    }
+}
+
+fn close(a: &Summary, b: &Summary) -> bool {
+    let rel = |x: f64, y: f64| (x - y).abs() <= 1e-12 * y.abs().max(1e-300);
+    // the COR to 1e-12 absolute too where it is tiny (a ball that barely rebounds)
+    let cor = (a.cor - b.cor).abs() <= 1e-12 * b.cor.abs().max(1.0);
+    cor && rel(a.max_force, b.max_force) && rel(a.contact_time, b.contact_time)
+}
+
+/// Checks every point in groups of four; returns (points, answered by the lanes themselves).
+fn check(points: &[(f64, f64)]) -> (usize, usize) {
+    let mut own = 0;
+    for group in points.chunks(LANES) {
+        let pad =
+            |f: fn(&(f64, f64)) -> f64| std::array::from_fn(|i| f(&group[i.min(group.len() - 1)]));
+        let (l, z): ([f64; LANES], [f64; LANES]) = (pad(|p| p.0), pad(|p| p.1));
+        let (all, lanes) = (summary4(l, z), lanes_only(l, z));
+        for i in 0..group.len() {
+            let scalar = summary(l[i], z[i]);
+            let case = format!("λ = {}, ζ = {}", l[i], z[i]);
+            match (&all[i], &scalar) {
+                (Some(a), Some(b)) => assert!(close(a, b), "{case}: {a:?} vs {b:?}"),
+                (None, None) => {}
+                _ => panic!("{case}: {:?} vs {scalar:?}", all[i]),
+            }
+            if let Some(a) = &lanes[i] {
+                own += 1;
+                let b = scalar.unwrap_or_else(|| panic!("{case}: the lanes answer alone"));
+                assert!(close(a, &b), "{case}: lanes {a:?} vs {b:?}");
+            }
+        }
+    }
+    eprintln!("the lanes answered {own} of {} points", points.len());
+    (points.len(), own)
+}
+
+/// The 200 × 120 map's grid (λ, ζ = 0.01 … 100, log-spaced), as benches/map.rs runs it.
+#[test]
+fn lanes_agree_with_the_scalar_path_over_the_map() {
+    let log = |i: usize, n: usize| 10f64.powf(-2.0 + 4.0 * i as f64 / (n - 1) as f64);
+    let points: Vec<(f64, f64)> = (0..120)
+        .flat_map(|i| (0..200).map(move |j| (log(i, 120), log(j, 200))))
+        .collect();
+    let (n, own) = check(&points);
+    assert!(own * 10 >= n * 8, "the lanes answered {own} of {n}");
+}
+
+/// 40,000 seeded points, λ = 1e-4 … 1e4 and ζ = 1e-3 … 1e3 (log-uniform), with zeros, a
+/// negative, NaN and infinities among them (the scalar path's `None`s and its ζ = 0).
+#[test]
+fn lanes_agree_with_the_scalar_path_at_random_points() {
+    let mut s = Stream(2026);
+    let mut points: Vec<(f64, f64)> = (0..40_000)
+        .map(|_| {
+            (
+                10f64.powf(-4.0 + 8.0 * s.unit()),
+                10f64.powf(-3.0 + 6.0 * s.unit()),
+            )
+        })
+        .collect();
+    points.extend([
+        (0.0, 0.5),
+        (1.0, 0.0),
+        (0.0, 2.0),
+        (-1.0, 0.3),
+        (f64::NAN, 0.3),
+        (1.0, f64::INFINITY),
+        (0.02, 1.7861026411617908),
+    ]);
+    let (n, own) = check(&points);
+    assert!(own * 10 >= n * 7, "the lanes answered {own} of {n}");
+}
+
+/// `summaries` over a slice whose length is no multiple of four is `summary4` lane by lane:
+/// a point's answer does not depend on its neighbours or on where the groups fall.
+#[test]
+fn a_point_s_answer_does_not_depend_on_its_group() {
+    let mut s = Stream(7);
+    let points: Vec<(f64, f64)> = (0..23)
+        .map(|_| {
+            (
+                10f64.powf(-2.0 + 4.0 * s.unit()),
+                10f64.powf(-2.0 + 4.0 * s.unit()),
+            )
+        })
+        .collect();
+    let (l, z): (Vec<f64>, Vec<f64>) = points.iter().copied().unzip();
+    let mut whole = vec![None; points.len()];
+    summaries(&l, &z, &mut whole);
+    let mut shifted = vec![None; points.len() - 1];
+    summaries(&l[1..], &z[1..], &mut shifted);
+    assert_eq!(&whole[1..], &shifted[..]);
+    for (i, &(l, z)) in points.iter().enumerate() {
+        assert_eq!(whole[i], summary4([l; LANES], [z; LANES])[0], "point {i}");
+    }
+}
