@@ -13,6 +13,7 @@ mod cor;
 pub mod lm;
 mod multi;
 mod result;
+mod sensitivity;
 mod single;
 pub mod stats;
 mod trace;
