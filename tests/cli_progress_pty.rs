@@ -169,14 +169,17 @@ fn cor_table_and_drop_test_fits_stop_on_a_signal_writing_nothing() {
         "--rebound-height",
         "1.8",
     ];
-    let cases: [Vec<&str>; 2] = [
-        vec!["--cor-table", table.to_str().unwrap()],
-        drops.to_vec(),
-    ];
+    let cases: [Vec<&str>; 2] = [vec!["--cor-table", table.to_str().unwrap()], drops.to_vec()];
     for (case, sig) in cases.iter().zip([Signal::INT, Signal::TERM]) {
         let home = tempfile::tempdir().unwrap();
         let plot = home.path().join("fit.svg");
-        let mut args = vec!["fit", "--preset", "tennis", "--plot", plot.to_str().unwrap()];
+        let mut args = vec![
+            "fit",
+            "--preset",
+            "tennis",
+            "--plot",
+            plot.to_str().unwrap(),
+        ];
         args.extend(case.iter().copied());
         // each look of the watch slowed to 20 ms: the fit is still running at the signal
         let mut x = Explorer::spawn(home.path(), Some("slow-work"), &args);
