@@ -117,7 +117,7 @@ pub(super) fn force_sensitivities(
     // S_b(0): only v0 moves the start
     let mut s = [Vector3::zeros(); BASIS];
     s[3] = Vector3::new(0.0, p.v0, 0.0);
-    let mut basis = vec![Vec::with_capacity(n); BASIS];
+    let mut basis: [Vec<f64>; BASIS] = std::array::from_fn(|_| Vec::with_capacity(n));
     for _ in 0..n {
         let z = x[0] - x[2];
         for b in 0..BASIS {
