@@ -1,5 +1,5 @@
-//! The Monte Carlo watched from outside (Python's Ctrl-C, issue 28): in chunks, with the same
-//! samples and statistics as one call, and stopped when the watch says so.
+//! The Monte Carlo and the drop test watched from outside (Python's Ctrl-C, issue 28): the
+//! same answer as unwatched, and stopped when the watch says so.
 
 use bouncelab::analysis::mc::{Dist, McSpec, parse_vary};
 use bouncelab::analysis::work::{Unwatched, Watch};
@@ -43,4 +43,22 @@ fn a_watch_that_says_stop_stops_the_run() {
     let e = golf.monte_carlo_watched(&spec(40_000), &watch).unwrap_err();
     assert_eq!(e, BallError::Interrupted);
     assert_eq!(watch.1.get(), 2, "it stopped at the second look");
+}
+
+#[test]
+fn a_watched_drop_is_the_same_drop_and_stops_when_told() {
+    use bouncelab::drop::DropSetup;
+    let tennis = Ball::from_preset("tennis").unwrap();
+    let setup = DropSetup {
+        height: 2.54,
+        air: None,
+        bounces: 5,
+        min_rebound: 0.001,
+    };
+    let one = tennis.drop_test(&setup).unwrap();
+    assert_eq!(tennis.drop_test_watched(&setup, &Unwatched).unwrap(), one);
+    let watch = StopAt(3, Cell::new(0));
+    let e = tennis.drop_test_watched(&setup, &watch).unwrap_err();
+    assert_eq!(e, BallError::Interrupted);
+    assert_eq!(watch.1.get(), 3, "it stopped before the third bounce");
 }
