@@ -313,6 +313,16 @@ impl Ball {
     pub fn drop_test(&self, setup: &DropSetup) -> Result<DropRun, BallError> {
         Ok(crate::drop::drop(&self.drop_ball(), setup)?)
     }
+
+    /// [`Ball::drop_test`], each bounce reported to `watch`, which may stop it
+    /// ([`BallError::Interrupted`]): Python's Ctrl-C.
+    pub fn drop_test_watched(
+        &self,
+        setup: &DropSetup,
+        watch: &dyn crate::analysis::work::Watch,
+    ) -> Result<DropRun, BallError> {
+        crate::drop::drop_watched(&self.drop_ball(), setup, watch)?.ok_or(BallError::Interrupted)
+    }
 }
 
 /// Change λ and/or ζ of a ball's parameters (`None` keeps it): K_r and c move, m and K_p stay

@@ -142,3 +142,57 @@ fn a_signal_mid_write_leaves_no_temporary_file() {
         assert!(left(home.path()).is_empty(), "{:?}", left(home.path()));
     }
 }
+
+#[test]
+fn cor_table_and_drop_test_fits_stop_on_a_signal_writing_nothing() {
+    // issue 28: the COR-table and drop-test fits look at the watch before every model run and
+    // every 64 impacts within one (src/analysis/fit/cor.rs), as the trace fit does
+    let data = tempfile::tempdir().unwrap();
+    let table = data.path().join("cor.csv");
+    let mut text = String::from("v0,cor\n");
+    for i in 0..200 {
+        let v0 = 1.0 + 0.1 * i as f64;
+        text.push_str(&format!("{v0},{}\n", 0.85 - 0.005 * v0));
+    }
+    std::fs::write(&table, text).unwrap();
+    let drops = [
+        "--drop-height",
+        "1",
+        "--rebound-height",
+        "0.7",
+        "--drop-height",
+        "2",
+        "--rebound-height",
+        "1.3",
+        "--drop-height",
+        "3",
+        "--rebound-height",
+        "1.8",
+    ];
+    let cases: [Vec<&str>; 2] = [vec!["--cor-table", table.to_str().unwrap()], drops.to_vec()];
+    for (case, sig) in cases.iter().zip([Signal::INT, Signal::TERM]) {
+        let home = tempfile::tempdir().unwrap();
+        let plot = home.path().join("fit.svg");
+        let mut args = vec![
+            "fit",
+            "--preset",
+            "tennis",
+            "--plot",
+            plot.to_str().unwrap(),
+        ];
+        args.extend(case.iter().copied());
+        // each look of the watch slowed to 20 ms: the fit is still running at the signal
+        let mut x = Explorer::spawn(home.path(), Some("slow-work"), &args);
+        x.wait_for("model runs,"); // the counter
+        x.signal(sig);
+        let (status, _, text) = x.finish();
+        assert_eq!(
+            status.code(),
+            Some(130),
+            "{case:?}: {status:?}\n{}",
+            text.escape_debug()
+        );
+        assert!(text.contains("interrupted"), "{}", text.escape_debug());
+        assert!(left(home.path()).is_empty(), "{:?}", left(home.path()));
+    }
+}

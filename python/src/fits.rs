@@ -247,9 +247,9 @@ pub fn fit_cor_table<'py>(
     let table = CorTable::parse(&text).map_err(|e| data_error("COR table", e))?;
     let free = free_list(free)?;
     let ball = preset_ball(preset, params, law, None)?;
-    let fit = py
-        .detach(|| ball.fit(FitData::Cor(&table.points), free.as_deref()))
-        .map_err(error)?;
+    let fit = crate::interrupt::detach_watched(py, |w| {
+        ball.fit_watched(FitData::Cor(&table.points), free.as_deref(), w)
+    })?;
     report(py, &ball, "COR table", &fit, (v[0], None))
 }
 
@@ -281,9 +281,9 @@ pub fn fit_drops<'py>(
     });
     let pairs: Vec<(f64, f64)> = h.iter().copied().zip(r.iter().copied()).collect();
     let points: Vec<CorPoint> = ball.drops_to_cor(&pairs, air).map_err(error)?;
-    let fit = py
-        .detach(|| ball.fit(FitData::Cor(&points), free.as_deref()))
-        .map_err(error)?;
+    let fit = crate::interrupt::detach_watched(py, |w| {
+        ball.fit_watched(FitData::Cor(&points), free.as_deref(), w)
+    })?;
     let d = report(
         py,
         &ball,

@@ -393,7 +393,7 @@ fn drop_test<'py>(
         bounces,
         min_rebound,
     };
-    let run = py.detach(|| ball.drop_test(&setup)).map_err(error)?;
+    let run = interrupt::detach_watched(py, |w| ball.drop_test_watched(&setup, w))?;
     let col = |f: fn(&Bounce) -> f64| array(py, run.bounces.iter().map(f).collect());
     let b = PyDict::new(py);
     b.set_item("v_in", col(|r| r.v_in))?;

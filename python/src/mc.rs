@@ -181,9 +181,8 @@ pub(crate) fn monte_carlo<'py>(
     correlate: Option<Bound<'py, PyAny>>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let r = request(preset, vary, samples, seed, dist, v0, law, params, correlate.as_ref())?;
-    let mc: MonteCarlo = py
-        .detach(|| r.ball.monte_carlo(&r.spec))
-        .map_err(error)?;
+    let mc: MonteCarlo =
+        crate::interrupt::detach_watched(py, |w| r.ball.monte_carlo_watched(&r.spec, w))?;
     let d = report(py, &r, &mc.summary)?;
     if return_samples {
         let values = PyDict::new(py);

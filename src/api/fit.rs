@@ -40,7 +40,7 @@ impl Ball {
         self.fit_watched(data, free, &crate::analysis::work::Unwatched)
     }
 
-    /// [`Ball::fit`], each model run of a trace fit reported to `watch`, which may stop it
+    /// [`Ball::fit`], each model run reported to `watch`, which may stop it
     /// (`MultiFitError::Interrupted`): the Python package's Ctrl-C.
     pub fn fit_watched(
         &self,

@@ -45,6 +45,43 @@ impl Ball {
         })
     }
 
+    /// [`Ball::monte_carlo`] in chunks, the samples done reported to `watch` before each,
+    /// which may stop the run ([`BallError::Interrupted`]): Python's Ctrl-C. The same samples
+    /// as one call: each is made from its index alone (analysis::mc_tests,
+    /// `same_answer_on_one_thread_and_many_and_in_any_chunks`; tests/mc_watched.rs).
+    pub fn monte_carlo_watched(
+        &self,
+        spec: &McSpec,
+        watch: &dyn work::Watch,
+    ) -> Result<MonteCarlo, BallError> {
+        work::check_samples(spec.samples, self.law)?;
+        let sampler = self.sampler(spec);
+        // some 5 ms of work on all cores: 16 384 closed-form samples, 409 of another law
+        let chunk = ((1u64 << 14) / work::cost(self.law)).max(1) as usize;
+        let mut samples = Samples {
+            start: 0,
+            cor: Vec::with_capacity(spec.samples),
+            max_force: Vec::with_capacity(spec.samples),
+            contact_time: Vec::with_capacity(spec.samples),
+        };
+        let mut done = 0;
+        while done < spec.samples {
+            if !watch.step(done as u64) {
+                return Err(BallError::Interrupted);
+            }
+            let n = chunk.min(spec.samples - done);
+            let part = sampler.samples(done as u64, n)?;
+            samples.cor.extend(part.cor);
+            samples.max_force.extend(part.max_force);
+            samples.contact_time.extend(part.contact_time);
+            done += n;
+        }
+        Ok(MonteCarlo {
+            summary: summary(spec, &samples),
+            samples,
+        })
+    }
+
     /// The samples `start … start + count` of `spec` (a chunk of a larger run: a Dask task's),
     /// within the work limit for `count` samples.
     pub fn monte_carlo_samples(

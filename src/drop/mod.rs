@@ -221,6 +221,17 @@ pub fn impact(ball: &DropBall, v: f64) -> Result<crate::ImpactResponse, SolveErr
 /// assumed). Ends after `setup.bounces` bounces, after a rebound below `setup.min_rebound`,
 /// or when the ball stays on the plate: never more than [`MAX_BOUNCES`] impacts.
 pub fn drop(ball: &DropBall, setup: &DropSetup) -> Result<DropRun, DropError> {
+    let run = drop_watched(ball, setup, &crate::analysis::work::Unwatched)?;
+    Ok(run.expect("an unwatched drop is never stopped"))
+}
+
+/// [`drop`], the bounces done reported to `watch` before each impact; `None` when the watch
+/// stops it (Python's Ctrl-C, issue 28; tests/mc_watched.rs).
+pub fn drop_watched(
+    ball: &DropBall,
+    setup: &DropSetup,
+    watch: &dyn crate::analysis::work::Watch,
+) -> Result<Option<DropRun>, DropError> {
     setup.validate()?;
     check_range("radius", ball.radius, false, 1e3)?;
     ball.params.validate().map_err(SolveError::from)?;
@@ -229,6 +240,9 @@ pub fn drop(ball: &DropBall, setup: &DropSetup) -> Result<DropRun, DropError> {
     let mut bounces = Vec::with_capacity(setup.bounces);
     let mut end = End::Count;
     while bounces.len() < setup.bounces {
+        if !watch.step(bounces.len() as u64) {
+            return Ok(None);
+        }
         let v_in = flight.fall_speed(h);
         t += flight.fall_time(h);
         let r = impact(ball, v_in)?;
@@ -259,12 +273,12 @@ pub fn drop(ball: &DropBall, setup: &DropSetup) -> Result<DropRun, DropError> {
             break;
         }
     }
-    Ok(DropRun {
+    Ok(Some(DropRun {
         setup: *setup,
         flight,
         bounces,
         end,
-    })
+    }))
 }
 
 impl DropRun {

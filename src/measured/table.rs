@@ -43,8 +43,42 @@ pub fn header_names(text: &str) -> Option<Vec<String>> {
     Some(header.cells.iter().map(|c| c.text.to_lowercase()).collect())
 }
 
-/// Read `text` against `specs`.
+/// Read `text` against `specs`, every row kept ([`read_each`] for the COR tables and drop
+/// tests, which are small).
 pub fn read(text: &str, specs: &[ColumnSpec]) -> Result<Parsed, MeasuredError> {
+    let mut parsed = Parsed {
+        columns: vec![Vec::new(); specs.len()],
+        lines: Vec::new(),
+        cell_columns: vec![Vec::new(); specs.len()],
+        end_line: 0,
+    };
+    parsed.end_line = read_each(text, specs, |line, values| {
+        for (k, &(v, col)) in values.iter().enumerate() {
+            parsed.columns[k].push(v);
+            parsed.cell_columns[k].push(col);
+        }
+        parsed.lines.push(line);
+        Ok(())
+    })?;
+    Ok(parsed)
+}
+
+/// A bound on the data rows of `text` (its line ends, at most [`MAX_ROWS`]), to reserve room
+/// for them once.
+pub fn rows_at_most(text: &str) -> usize {
+    (text.bytes().filter(|&b| b == b'\n').count() + 1).min(MAX_ROWS)
+}
+
+/// Read `text` against `specs`, handing each data row to `each` as it is read — its line,
+/// and per spec its value in SI (`None`: column absent or cell empty) and the column of its
+/// cell — and keeping none: a million-row trace is held once, in its reader's own vectors
+/// (issue 30 item 4: ≤ 100 MB; tests/fit_memory.rs counts the bytes). Returns the line
+/// after the last one read (for errors about the whole file).
+pub fn read_each(
+    text: &str,
+    specs: &[ColumnSpec],
+    mut each: impl FnMut(usize, &[(Option<f64>, usize)]) -> Result<(), MeasuredError>,
+) -> Result<usize, MeasuredError> {
     let text = rows::normalized(text);
     let sep = rows::separator(&text);
     let mut lines = Rows::new(&text, sep);
@@ -52,15 +86,11 @@ pub fn read(text: &str, specs: &[ColumnSpec]) -> Result<Parsed, MeasuredError> {
         return Err(MeasuredError::at(1, 1, "no data: the file is empty"));
     };
     let map = header_map(&header, specs)?;
-    let mut parsed = Parsed {
-        columns: vec![Vec::new(); specs.len()],
-        lines: Vec::new(),
-        cell_columns: vec![Vec::new(); specs.len()],
-        end_line: rows::line_count(&text) + 1,
-    };
+    let mut values = vec![(None, 0); specs.len()];
+    let mut count = 0;
     for row in lines {
         let row = row?;
-        if parsed.lines.len() == MAX_ROWS {
+        if count == MAX_ROWS {
             return Err(MeasuredError::at(
                 row.line,
                 1,
@@ -80,7 +110,7 @@ pub fn read(text: &str, specs: &[ColumnSpec]) -> Result<Parsed, MeasuredError> {
                 ),
             ));
         }
-        let mut values = vec![(None, 0); specs.len()];
+        values.fill((None, 0));
         for (cell, slot) in row.cells.iter().zip(&map) {
             let (k, factor) = *slot;
             values[k] = (
@@ -88,20 +118,17 @@ pub fn read(text: &str, specs: &[ColumnSpec]) -> Result<Parsed, MeasuredError> {
                 cell.column,
             );
         }
-        for (k, (v, col)) in values.into_iter().enumerate() {
-            parsed.columns[k].push(v);
-            parsed.cell_columns[k].push(col);
-        }
-        parsed.lines.push(row.line);
+        each(row.line, &values)?;
+        count += 1;
     }
-    if parsed.lines.is_empty() {
+    if count == 0 {
         return Err(MeasuredError::at(
             header.line + 1,
             1,
             "no data rows after the header",
         ));
     }
-    Ok(parsed)
+    Ok(rows::line_count(&text) + 1)
 }
 
 /// Which spec (and factor) each header cell is; every required spec present once.

@@ -67,30 +67,36 @@ pub struct TraceSummary {
 
 impl Trace {
     /// Columns `time`/`t`/`time_s`/`time_ms`/`time_us` and `force`/`F`/`force_N`/`force_kN`.
+    /// Rows go straight into the trace's vectors, reserved once ([`table::read_each`]).
     pub fn parse(text: &str) -> Result<Trace, MeasuredError> {
-        let p = table::read(text, &SPECS)?;
-        let time: Vec<f64> = p.columns[0].iter().map(|v| v.unwrap_or(f64::NAN)).collect();
-        for i in 1..time.len() {
-            if time[i] <= time[i - 1] {
+        let room = table::rows_at_most(text);
+        let mut tr = Trace {
+            time: Vec::with_capacity(room),
+            force: Vec::with_capacity(room),
+            lines: Vec::with_capacity(room),
+            force_columns: Vec::with_capacity(room),
+            end_line: 0,
+        };
+        let end_line = table::read_each(text, &SPECS, |line, v| {
+            let ((t, t_column), (f, f_column)) = (v[0], v[1]);
+            let t = t.unwrap_or(f64::NAN);
+            if let (Some(&before), Some(&before_line)) = (tr.time.last(), tr.lines.last())
+                && t <= before
+            {
                 return Err(MeasuredError::at(
-                    p.lines[i],
-                    p.cell_columns[0][i],
-                    format!(
-                        "time not increasing: {} s after {} s on line {}",
-                        time[i],
-                        time[i - 1],
-                        p.lines[i - 1]
-                    ),
+                    line,
+                    t_column,
+                    format!("time not increasing: {t} s after {before} s on line {before_line}"),
                 ));
             }
-        }
-        Ok(Trace {
-            time,
-            force: p.columns[1].iter().map(|v| v.unwrap_or(f64::NAN)).collect(),
-            lines: p.lines,
-            force_columns: p.cell_columns[1].clone(),
-            end_line: p.end_line,
-        })
+            tr.time.push(t);
+            tr.force.push(f.unwrap_or(f64::NAN));
+            tr.lines.push(line);
+            tr.force_columns.push(f_column);
+            Ok(())
+        })?;
+        tr.end_line = end_line;
+        Ok(tr)
     }
 
     /// Baseline, noise and pulse; an error when there is no pulse above the noise.

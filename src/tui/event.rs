@@ -1,5 +1,7 @@
 //! The event loop: wait for an event, drain whatever else is queued (zero-timeout poll), apply
-//! it all, recompute once, draw once — a held key never builds a backlog. The loop also
+//! it all, recompute once, draw once — a held key never builds a backlog. After a resize the
+//! terminal is asked to announce its pending input again ([`rearm_input`]): crossterm's reader
+//! can drop a key that arrives with a resize. The loop also
 //! carries out the effects `update` returns: COR-vs-speed sweeps go to a worker thread (while
 //! one is out, the loop also wakes to collect it), fits (`f`) to the fit worker likewise, an
 //! export (`e`) and a saved preset (`s`) are written here and a measured file (`o`) read, and
@@ -76,7 +78,9 @@ pub fn run(terminal: &mut DefaultTerminal, app: &mut App) -> anyhow::Result<()> 
             terminal.draw(|f| f.render_widget(ratatui::widgets::Clear, f.area()))?;
             dirty = true;
         }
+        let mut resized = false;
         while let Some(ev) = next {
+            resized |= matches!(ev, event::Event::Resize(..));
             if panic_on_key && matches!(ev, event::Event::Key(_)) {
                 panic!(
                     "{}: test fault injected at a key press",
@@ -95,6 +99,9 @@ pub fn run(terminal: &mut DefaultTerminal, app: &mut App) -> anyhow::Result<()> 
             }
             next = if event::poll(Duration::ZERO)? {
                 Some(event::read()?)
+            } else if std::mem::take(&mut resized) {
+                rearm_input();
+                event::poll(Duration::ZERO)?.then(event::read).transpose()?
             } else {
                 None
             };
@@ -134,6 +141,35 @@ pub fn run(terminal: &mut DefaultTerminal, app: &mut App) -> anyhow::Result<()> 
         }
     }
     Ok(())
+}
+
+/// Have the terminal announce the input it holds again. crossterm's Unix reader waits on the
+/// terminal and on its SIGWINCH pipe together, edge-triggered (mio), and when both are ready
+/// at once it returns the resize and drops the terminal's readiness: a key typed with a resize
+/// stays unread until the next key comes (issue 28: after a burst of resizes, `q` was lost;
+/// tests/tui_exit_pty.rs, `a_key_typed_while_the_explorer_draws_a_resize_is_not_lost`).
+/// Setting the terminal's attributes, even unchanged, wakes its readers (Linux's line
+/// discipline does so on every change of settings), which gives crossterm a new edge for the
+/// pending key; with nothing pending nothing is announced.
+fn rearm_input() {
+    #[cfg(unix)]
+    {
+        use rustix::termios::{OptionalActions, tcgetattr, tcsetattr};
+        use std::io::IsTerminal;
+        // the terminal crossterm reads: stdin when it is one, else the controlling terminal
+        let tty = if std::io::stdin().is_terminal() {
+            None
+        } else {
+            std::fs::File::open("/dev/tty").ok()
+        };
+        let fd = match &tty {
+            Some(file) => std::os::fd::AsFd::as_fd(file),
+            None => rustix::stdio::stdin(),
+        };
+        if let Ok(settings) = tcgetattr(fd) {
+            let _ = tcsetattr(fd, OptionalActions::Now, &settings);
+        }
+    }
 }
 
 /// Ctrl-Z, pressed.

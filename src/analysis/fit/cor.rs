@@ -2,10 +2,13 @@
 //! (e_model − e)/σ_e for each COR (σ_e from `cor_sd`, else `scale[0]`), and, where a row has
 //! them, the relative misses of peak force and contact time, (F_model/F − 1)/scale[1] and
 //! (t_model/t − 1)/scale[2]. The scales start at 1; when kinds are mixed the fit sets them to
-//! each kind's RMS and fits again, so that each kind weighs by its own scatter.
+//! each kind's RMS and fits again, so that each kind weighs by its own scatter. Every model
+//! run (the table's impacts) is reported to the fit's [`Watch`], also every [`WATCH_EVERY`]
+//! impacts within a run, and the watch may stop the fit.
 
 use super::lm::Residuals;
 use super::{Param, apply, fit_k_r};
+use crate::analysis::work::Watch;
 use crate::measured::CorPoint;
 use crate::model::contact::ContactLaw;
 use crate::model::params::ImpactParams;
@@ -20,7 +23,16 @@ pub(super) struct CorProblem<'a> {
     /// Divisors of the COR (rows without `cor_sd`), force and contact-time residuals.
     pub scale: [Cell<f64>; 3],
     log_step: f64,
+    watch: &'a dyn Watch,
+    /// Model runs so far.
+    runs: Cell<u64>,
+    /// The watch said stop: every later run gives no answer, and the fit ends.
+    stopped: Cell<bool>,
 }
+
+/// Impacts of a model run between two looks of the watch: a table of 10 000 rows under the
+/// Hertz law is some 0.3 s a run (BENCHMARKS.md), 64 impacts some 2 ms.
+const WATCH_EVERY: usize = 64;
 
 /// What one impact gives for one row: (COR, peak force, contact time).
 type Predicted = (f64, f64, Option<f64>);
@@ -31,6 +43,7 @@ impl<'a> CorProblem<'a> {
         law: ContactLaw,
         free: Vec<Param>,
         points: &'a [CorPoint],
+        watch: &'a dyn Watch,
     ) -> Self {
         let log_step = if law == ContactLaw::Linear {
             1e-5
@@ -44,6 +57,9 @@ impl<'a> CorProblem<'a> {
             points,
             scale: [Cell::new(1.0), Cell::new(1.0), Cell::new(1.0)],
             log_step,
+            watch,
+            runs: Cell::new(0),
+            stopped: Cell::new(false),
         }
     }
 
@@ -52,11 +68,31 @@ impl<'a> CorProblem<'a> {
         apply(&self.base, &self.free, &values)
     }
 
+    /// Whether the watch stopped the fit.
+    pub fn stopped(&self) -> bool {
+        self.stopped.get()
+    }
+
+    /// Whether to go on: the watch asked (a stop is kept).
+    fn go_on(&self) -> bool {
+        if !self.stopped.get() && !self.watch.step(self.runs.get()) {
+            self.stopped.set(true);
+        }
+        !self.stopped.get()
+    }
+
+    /// The model at every row at `x`, or `None` when the solver has no answer or the watch
+    /// stops the fit (asked before the run and every [`WATCH_EVERY`] impacts).
     pub fn predict(&self, x: &[f64]) -> Option<Vec<Predicted>> {
+        self.runs.set(self.runs.get() + 1);
         let b = self.ball(x);
         self.points
             .iter()
-            .map(|pt| {
+            .enumerate()
+            .map(|(i, pt)| {
+                if i % WATCH_EVERY == 0 && !self.go_on() {
+                    return None;
+                }
                 let p = ImpactParams { v0: pt.v0, ..b };
                 p.validate().ok()?;
                 let r = simulate(&p, self.law, &SolveOptions::default()).ok()?;
@@ -186,5 +222,9 @@ impl Residuals for CorProblem<'_> {
 
     fn step(&self, _: usize) -> f64 {
         self.log_step
+    }
+
+    fn stopped(&self) -> bool {
+        self.stopped.get()
     }
 }

@@ -14,6 +14,7 @@ pub mod lm;
 mod multi;
 pub mod oblique;
 mod result;
+mod sensitivity;
 mod single;
 pub mod stats;
 mod trace;

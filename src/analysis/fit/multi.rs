@@ -24,9 +24,9 @@ pub fn fit(
     fit_watched(base, law, data, free, &Unwatched)
 }
 
-/// [`fit`], each model run of a trace fit reported to `watch`, which may stop it
-/// ([`MultiFitError::Interrupted`]); a trace fit's work is checked against the work limit
-/// before it starts ([`crate::analysis::work::fit_iterations`]).
+/// [`fit`], each model run reported to `watch`, which may stop it
+/// ([`MultiFitError::Interrupted`]); the fit's work is checked against the work limit before
+/// it starts ([`crate::analysis::work::fit_iterations`]).
 pub fn fit_watched(
     base: &ImpactParams,
     law: ContactLaw,
@@ -42,7 +42,7 @@ pub fn fit_watched(
             if free.contains(&Param::V0) {
                 return Err(MultiFitError::SpeedNotFree);
             }
-            fit_cor(base, law, points, free)
+            fit_cor(base, law, points, free, watch)
         }
     }
 }
@@ -96,14 +96,16 @@ pub(super) fn fit_trace(
     Ok(f)
 }
 
-/// A COR table (with peak forces and contact times where given).
+/// A COR table (with peak forces and contact times where given), each model run reported to
+/// `watch`.
 fn fit_cor(
     base: &ImpactParams,
     law: ContactLaw,
     points: &[CorPoint],
     free: &[Param],
+    watch: &dyn Watch,
 ) -> Result<MultiFit, MultiFitError> {
-    let p = CorProblem::new(*base, law, free.to_vec(), points);
+    let p = CorProblem::new(*base, law, free.to_vec(), points, watch);
     too_few(p.count(), free.len())?;
     check_scale(&p)?;
     let starts = p.starts();
@@ -117,12 +119,19 @@ fn fit_cor(
     };
     // (one start more: a table of mixed kinds is fitted again from the first minimum)
     let iterations = fit_iterations(run, free.len(), starts.len() + 1, law, what)?;
-    let mut sol =
-        best(&p, starts, |x| p.bounds(x), 0.0, iterations).ok_or(MultiFitError::NoAnswer)?;
+    // no answer, or stopped by the watch
+    let none = || {
+        if p.stopped() {
+            MultiFitError::Interrupted
+        } else {
+            MultiFitError::NoAnswer
+        }
+    };
+    let mut sol = best(&p, starts, |x| p.bounds(x), 0.0, iterations).ok_or_else(none)?;
     let mut t_dof = None;
     if p.count() > points.len() {
         // mixed kinds: weigh each by its own scatter, then fit again from there
-        let kinds = p.rms_by_kind(&sol.sol.x).ok_or(MultiFitError::NoAnswer)?;
+        let kinds = p.rms_by_kind(&sol.sol.x).ok_or_else(none)?;
         let counts = p.count_by_kind();
         for k in 0..3 {
             if kinds[k].is_finite() && (k > 0 || points.iter().all(|q| q.cor_sd.is_none())) {
@@ -145,10 +154,10 @@ fn fit_cor(
             iterations,
         );
         let its = sol.sol.iterations;
-        sol = again.ok_or(MultiFitError::NoAnswer)?;
+        sol = again.ok_or_else(none)?;
         sol.sol.iterations += its;
     }
-    let pred = p.predict(&sol.sol.x).ok_or(MultiFitError::NoAnswer)?;
+    let pred = p.predict(&sol.sol.x).ok_or_else(none)?;
     let model: Vec<f64> = pred.iter().map(|q| q.0).collect();
     let misses: Vec<f64> = model.iter().zip(points).map(|(m, q)| m - q.cor).collect();
     if p.count() == free.len() {

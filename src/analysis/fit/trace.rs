@@ -7,12 +7,13 @@
 
 use super::bins::Samples;
 use super::lm::{Residuals, forward_jacobian};
+use super::sensitivity::{exact_applies, force_sensitivities};
 use super::{Param, apply};
 use crate::analysis::work::Watch;
 use crate::measured::{Trace, TraceSummary};
 use crate::model::contact::ContactLaw;
 use crate::model::params::ImpactParams;
-use crate::solver::{SolveOptions, simulate};
+use crate::solver::{ImpactResponse, SolveOptions, simulate};
 use nalgebra::DMatrix;
 use std::cell::Cell;
 
@@ -102,6 +103,13 @@ impl<'a> TraceProblem<'a> {
         }
     }
 
+    /// The same problem with `samples` in each model run's history (a test's finer model).
+    #[cfg(test)]
+    pub fn with_history(mut self, samples: usize) -> Self {
+        self.history = samples;
+        self
+    }
+
     /// Samples of each model run's history.
     pub fn history(&self) -> usize {
         self.history
@@ -112,9 +120,9 @@ impl<'a> TraceProblem<'a> {
         self.stopped.get()
     }
 
-    /// The solver's history at `x`, or `None` when it has no answer or the watch stops the
-    /// fit (asked before every run).
-    fn run(&self, x: &[f64]) -> Option<crate::solver::History> {
+    /// The solver's run (with its history) at `x`, or `None` when it has no answer or the
+    /// watch stops the fit (asked before every run).
+    fn run(&self, x: &[f64]) -> Option<ImpactResponse> {
         let runs = self.runs.get() + 1;
         self.runs.set(runs);
         if self.stopped.get() || !self.watch.step(runs) {
@@ -124,12 +132,12 @@ impl<'a> TraceProblem<'a> {
         let p = self.ball(x);
         p.validate().ok()?;
         let opts = SolveOptions::default().with_samples(self.history);
-        Some(simulate(&p, self.law, &opts).ok()?.history)
+        simulate(&p, self.law, &opts).ok()
     }
 
     /// The model force at every row of the trace (not its bins), for the report and plots.
     pub fn model_at_rows(&self, x: &[f64]) -> Option<Vec<f64>> {
-        let h = self.run(x)?;
+        let h = self.run(x)?.history;
         let (t0, b) = (x[self.k()], x[self.k() + 1]);
         let f = |t: f64| interpolate(&h.t, &h.force, t - t0).0 + b;
         Some(self.trace.time.iter().map(|&t| f(t)).collect())
@@ -147,7 +155,7 @@ impl<'a> TraceProblem<'a> {
     /// (model force at each sample (row or bin), its slope in t) or `None` when the solver has
     /// no answer.
     pub fn model(&self, x: &[f64]) -> Option<(Vec<f64>, Vec<f64>)> {
-        let h = self.run(x)?;
+        let h = self.run(x)?.history;
         let (t0, b) = (x[self.k()], x[self.k() + 1]);
         Some(
             self.data
@@ -271,17 +279,30 @@ impl Residuals for TraceProblem<'_> {
         }
     }
 
-    /// Forward differences in the log-parameters; t0 and b in closed form: ∂r/∂t0 = −F'(t −
-    /// t0) (the slope of the interpolant) and ∂r/∂b = 1, which saves two solver runs.
+    /// One model run for the whole Jacobian where the law is linear and the ball does not
+    /// flatten: ∂r/∂(ln p) from the solution's exact sensitivities ([`super::sensitivity`]);
+    /// else forward differences in the log-parameters, one run more each. t0 and b in closed
+    /// form either way: ∂r/∂t0 = −F'(t − t0) (the slope of the interpolant) and ∂r/∂b = 1.
     fn jacobian(&self, x: &[f64], r: &[f64]) -> Option<DMatrix<f64>> {
         let k = self.k();
-        let sub = Sub { p: self, x };
-        let part = forward_jacobian(&sub, &x[..k], r)?;
-        let (_, slope) = self.model(x)?;
+        let run = self.run(x)?;
+        let ball = self.ball(x);
+        let (h, t0, d) = (&run.history, x[k], &self.data);
         let mut jac = DMatrix::zeros(r.len(), k + 2);
-        jac.columns_mut(0, k).copy_from(&part);
-        for (i, (s, w)) in slope.iter().zip(&self.data.weight).enumerate() {
-            jac[(i, k)] = -w * s;
+        if exact_applies(self.law, &ball, &run) {
+            let columns = force_sensitivities(&ball, &self.free, &run);
+            for (j, col) in columns.iter().enumerate() {
+                for (i, (t, w)) in d.time.iter().zip(&d.weight).enumerate() {
+                    jac[(i, j)] = w * interpolate(&h.t, col, t - t0).0;
+                }
+            }
+        } else {
+            let sub = Sub { p: self, x };
+            let part = forward_jacobian(&sub, &x[..k], r)?;
+            jac.columns_mut(0, k).copy_from(&part);
+        }
+        for (i, (t, w)) in d.time.iter().zip(&d.weight).enumerate() {
+            jac[(i, k)] = -w * interpolate(&h.t, &h.force, t - t0).1;
             jac[(i, k + 1)] = *w;
         }
         Some(jac)
