@@ -276,6 +276,7 @@ fn lognormal(v: f64, spread: f64, n: f64) -> f64 {
 
 /// One impact as `bouncelab run` solves it (COR, F_m, t_f): the closed form where it answers
 /// and the ball does not flatten (z̄_m ≤ z̄_p), SI by F = F̄ m v0 ω0 and t = τ/ω0; else the
+/// Taylor steps of [`crate::solver::taylor`] within their domain (tests/taylor.rs); else the
 /// solver with its default options.
 pub fn impact(p: &ImpactParams, law: ContactLaw) -> Result<Outcome, SolveError> {
     if law == ContactLaw::Linear {
@@ -290,6 +291,15 @@ pub fn impact(p: &ImpactParams, law: ContactLaw) -> Result<Outcome, SolveError> 
                 contact_time: s.contact_time / w0,
             });
         }
+    }
+    // a flattening ball and the other laws: the Taylor steps within their domain
+    if let Some(s) = crate::solver::taylor::summary(&p.normalized(), law) {
+        let w0 = p.omega0();
+        return Ok(Outcome {
+            cor: s.cor,
+            max_force: s.max_force * p.mass * p.v0 * w0,
+            contact_time: s.contact_time / w0,
+        });
     }
     let r = simulate(p, law, &SolveOptions::default())?;
     Ok(Outcome {

@@ -160,11 +160,14 @@ pub struct MapSpec {
     pub lambda: Axis,
     /// The ζ values (columns).
     pub zeta: Axis,
-    /// Linear law only: take [`fast::summary`] (closed form, six to eight times faster) wherever
-    /// it answers and the ball does not flatten; the exact solver elsewhere. It answers only
-    /// where its rounding bound keeps 1e-13, and agrees with the exact solver (`run`) to 1e-12
-    /// there (tests/map_precision.rs, a dense grid and the turning points): `bouncelab map`
-    /// and the explorer turn it on. Off by default: each cell then is `run`'s own answer.
+    /// Take the fast paths wherever they answer: for the linear law [`fast::summary`] (closed
+    /// form, six to eight times faster) where the ball does not flatten, the exact solver
+    /// elsewhere. It answers only where its rounding bound keeps 1e-13, and agrees with the
+    /// exact solver (`run`) to 1e-12 there (tests/map_precision.rs, a dense grid and the
+    /// turning points). A flattening ball and the Hertz and elastic–plastic laws take the
+    /// Taylor steps of [`crate::solver::taylor`] within their domain (tests/taylor.rs holds
+    /// them to the exact and adaptive solvers), the solvers elsewhere. `bouncelab map` and
+    /// the explorer turn it on. Off by default: each cell then is `run`'s own answer.
     pub fast: bool,
 }
 
