@@ -13,9 +13,11 @@ use std::sync::atomic::{AtomicBool, Ordering};
 /// the exact solver, the others the adaptive one.
 pub fn cell_at(spec: &MapSpec, lambda: f64, zeta: f64) -> Result<Cell, SolveError> {
     let params = spec.params_at(lambda, zeta);
-    if spec.fast
-        && let Some(c) = fast_cell(spec, &params)
-    {
+    let fast = match spec.law {
+        ContactLaw::Linear => spec.fast,
+        _ => spec.fast_laws,
+    };
+    if fast && let Some(c) = fast_cell(spec, &params) {
         return Ok(c);
     }
     let r = simulate(&params, spec.law, &SolveOptions::default())?;
