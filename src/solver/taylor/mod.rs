@@ -173,7 +173,7 @@ fn power_law(n: &Normalized, law: ContactLaw) -> Option<Summary> {
                 b: z_m - z_f,
                 a: f_m,
             };
-            if !(unload.b > 0.0) {
+            if unload.b.is_nan() || unload.b <= 0.0 {
                 return None;
             }
             let last = power::run(&sys, &unload, top, f64::INFINITY, true, &mut budget)?;
@@ -221,7 +221,7 @@ fn linear_flattening(n: &Normalized) -> Option<Summary> {
         kappa: n.kappa,
     };
     let z_f = contact.permanent_indentation(z_m);
-    if !(z_m > z_f) {
+    if z_m.is_nan() || z_m <= z_f {
         return None;
     }
     let unload = linear::Branch {

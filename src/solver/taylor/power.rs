@@ -68,7 +68,11 @@ fn series(sys: &Sys, br: &Branch, x: [f64; 4]) -> [Series; 4] {
 /// The k-th coefficient of c², by the product's symmetry (half the terms).
 fn square(c: &Series, k: usize) -> f64 {
     let half: f64 = (0..k.div_ceil(2)).map(|i| c[i] * c[k - i]).sum();
-    let middle = if k % 2 == 0 { c[k / 2] * c[k / 2] } else { 0.0 };
+    let middle = if k.is_multiple_of(2) {
+        c[k / 2] * c[k / 2]
+    } else {
+        0.0
+    };
     2.0 * half + middle
 }
 
