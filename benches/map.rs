@@ -93,3 +93,14 @@ fn fast_summary_grid_lanes(b: divan::Bencher) {
         out.iter().map(|s| s.map_or(0.0, |s| s.cor)).sum::<f64>()
     });
 }
+
+/// A normalized 200 × 60 map (ζ × λ) under the Hertz law (κ = 2/3: the normalized ball's K_h
+/// at z̄_p = 1), every pass on all cores: the Taylor steps of `solver::taylor` where they
+/// answer (`with_fast_laws`), the adaptive solver elsewhere. Issue 30: ≤ 50 ms.
+#[divan::bench(sample_count = 10)]
+fn map_200x60_hertz_fast() -> usize {
+    let l = Axis::new(Param::Lambda, 0.01, 100.0, 60, Scale::Log).unwrap();
+    let z = Axis::new(Param::Zeta, 0.01, 100.0, 200, Scale::Log).unwrap();
+    let spec = MapSpec::normalized(None, ContactLaw::Hertz, l, z).unwrap();
+    compute(black_box(spec.with_fast_laws(true))).cells().len()
+}

@@ -14,6 +14,8 @@
 //! - `cursor`: `→` moves the cursor a cell: one impact and the sensitivities, no new map.
 //! - `full_detail_tennis`: `full_detail` for the tennis ball, which flattens over much of its
 //!   map (those cells take the exact solver, the others the closed form).
+//! - `full_detail_hertz`, `full_detail_elastic_plastic`: `full_detail` for the superball
+//!   under the Hertz and elastic–plastic laws (the Taylor steps, issue 30).
 //! - `draw`: the render alone of the complete map.
 
 use bouncelab::preset::Preset;
@@ -83,10 +85,30 @@ fn full_detail(b: Bencher) {
     key_and_draw(b, start(false), V_UP);
 }
 
-/// The tennis ball flattens over much of its map: those cells take the exact solver.
+/// The tennis ball flattens over much of its map: those cells take the Taylor steps of
+/// `solver::taylor` (the exact solver before issue 30), the others the closed form.
 #[divan::bench]
 fn full_detail_tennis(b: Bencher) {
     key_and_draw(b, start_with("tennis", false), V_UP);
+}
+
+/// The superball under the Hertz law (two presses of `c`: linear → elastic–plastic → Hertz),
+/// its map complete, then `v`: every cell takes the Taylor steps of `solver::taylor` within
+/// their domain, the adaptive solver elsewhere (issue 30: ≤ 50 ms).
+#[divan::bench]
+fn full_detail_hertz(b: Bencher) {
+    let mut app = start(false);
+    app.update(Action::CycleLaw);
+    app.update(Action::CycleLaw);
+    key_and_draw(b, app, V_UP);
+}
+
+/// The same under the elastic–plastic law (one press of `c`).
+#[divan::bench]
+fn full_detail_elastic_plastic(b: Bencher) {
+    let mut app = start(false);
+    app.update(Action::CycleLaw);
+    key_and_draw(b, app, V_UP);
 }
 
 #[divan::bench]

@@ -79,3 +79,56 @@ fn elastic_plastic_with_history(b: divan::Bencher) {
             .len()
     });
 }
+
+/// The issue 30 points: the superball's adopted set at 1×, 3× its measured speed (elastic–
+/// plastic: past yield), and a stiff-ish (λ, ζ) = (1, 2) normalized ball.
+fn fast_law_cases() -> [(ContactLaw, ImpactParams); 4] {
+    let p = Preset::embedded()[0].params();
+    let fast = ImpactParams {
+        v0: 3.0 * p.v0,
+        ..p
+    };
+    [
+        (ContactLaw::Hertz, p),
+        (ContactLaw::ElasticPlastic, fast),
+        (
+            ContactLaw::Hertz,
+            ImpactParams::from_normalized(1.0, 2.0, f64::INFINITY),
+        ),
+        (
+            ContactLaw::Linear,
+            ImpactParams::from_normalized(1.3, 0.16, 0.3),
+        ),
+    ]
+}
+
+/// The cases, built once (parsing the embedded presets costs some 37 µs: not what is timed).
+static CASES: std::sync::LazyLock<[(ContactLaw, ImpactParams); 4]> =
+    std::sync::LazyLock::new(fast_law_cases);
+
+/// One impact's summary by the Taylor steps (`solver::taylor::summary`, issue 30 items 1 and
+/// 2: target ≤ 1 µs for Hertz and elastic–plastic, ≤ 0.5 µs for the flattening linear ball).
+#[divan::bench(args = [0, 1, 2, 3])]
+fn taylor_summary(case: usize) -> f64 {
+    let (law, p) = CASES[case];
+    let n = black_box(p).normalized();
+    bouncelab::solver::taylor::summary(&n, law).unwrap().cor
+}
+
+/// The same impacts through `simulate` (the adaptive solver for Hertz and elastic–plastic at
+/// rtol 1e-10, the exact one for the linear law), in the same run.
+#[divan::bench(args = [0, 1, 2, 3])]
+fn solver_summary(case: usize) -> f64 {
+    let (law, p) = CASES[case];
+    simulate(black_box(&p), law, &SolveOptions::default())
+        .unwrap()
+        .cor
+}
+
+/// The linear law's closed form (`map::fast::summary`) at the superball's (λ, ζ), the fast
+/// path the others are measured against.
+#[divan::bench]
+fn linear_fast_summary() -> f64 {
+    let n = black_box(CASES[0].1).normalized();
+    bouncelab::map::fast::summary(n.lambda, n.zeta).unwrap().cor
+}

@@ -87,7 +87,9 @@ pub fn spec(a: &MapArgs) -> anyhow::Result<MapBall> {
             anyhow::bail!("--normalized runs m = K_p = v0 = 1: --mass and --radius do not apply");
         }
         let law = a.law.map_or(ContactLaw::Linear, ContactLaw::from);
-        let spec = MapSpec::normalized(a.zp_bar, law, lambda, zeta)?.with_fast(true);
+        let spec = MapSpec::normalized(a.zp_bar, law, lambda, zeta)?
+            .with_fast(true)
+            .with_fast_laws(true);
         return Ok(MapBall {
             spec,
             preset: None,
@@ -105,7 +107,9 @@ pub fn spec(a: &MapArgs) -> anyhow::Result<MapBall> {
         ..BallArgs::default()
     };
     let b = args.resolve(a.v0)?;
-    let spec = MapSpec::dimensional(b.params, b.law, lambda, zeta)?.with_fast(true);
+    let spec = MapSpec::dimensional(b.params, b.law, lambda, zeta)?
+        .with_fast(true)
+        .with_fast_laws(true);
     let n = b.params.normalized();
     Ok(MapBall {
         spec,

@@ -13,10 +13,11 @@ use std::sync::atomic::{AtomicBool, Ordering};
 /// the exact solver, the others the adaptive one.
 pub fn cell_at(spec: &MapSpec, lambda: f64, zeta: f64) -> Result<Cell, SolveError> {
     let params = spec.params_at(lambda, zeta);
-    if spec.fast
-        && spec.law == ContactLaw::Linear
-        && let Some(c) = fast_cell(spec, &params)
-    {
+    let fast = match spec.law {
+        ContactLaw::Linear => spec.fast,
+        _ => spec.fast_laws,
+    };
+    if fast && let Some(c) = fast_cell(spec, &params) {
         return Ok(c);
     }
     let r = simulate(&params, spec.law, &SolveOptions::default())?;
@@ -35,14 +36,27 @@ pub fn cell_at(spec: &MapSpec, lambda: f64, zeta: f64) -> Result<Cell, SolveErro
     })
 }
 
-/// The cell from the closed form ([`super::fast::summary`]) when it answers and the ball
-/// does not flatten (z̄_m ≤ z̄_p); SI as `to_si` converts: F = F̄ m v0 ω0, t = τ/ω0.
+/// The cell from a fast path when one answers: on the linear law the closed form
+/// ([`super::fast::summary`]) while the ball does not flatten (z̄_m ≤ z̄_p); the Taylor steps
+/// ([`crate::solver::taylor::summary`]) for a flattening ball and for the Hertz and
+/// elastic–plastic laws. SI as `to_si` converts: F = F̄ m v0 ω0, t = τ/ω0.
 fn fast_cell(spec: &MapSpec, p: &ImpactParams) -> Option<Cell> {
     let n = p.normalized();
-    let s = super::fast::summary(n.lambda, n.zeta)?;
-    if s.max_force > n.zp_bar {
-        return None;
-    }
+    let closed = match spec.law {
+        ContactLaw::Linear => super::fast::summary(n.lambda, n.zeta),
+        _ => None,
+    };
+    let s = match closed {
+        Some(s) if s.max_force <= n.zp_bar => s,
+        _ => {
+            let t = crate::solver::taylor::summary(&n, spec.law)?;
+            super::fast::Summary {
+                cor: t.cor,
+                max_force: t.max_force,
+                contact_time: t.contact_time,
+            }
+        }
+    };
     if spec.normalized {
         return Some(Cell {
             cor: s.cor,

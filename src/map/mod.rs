@@ -163,15 +163,30 @@ pub struct MapSpec {
     /// Linear law only: take [`fast::summary`] (closed form, six to eight times faster) wherever
     /// it answers and the ball does not flatten; the exact solver elsewhere. It answers only
     /// where its rounding bound keeps 1e-13, and agrees with the exact solver (`run`) to 1e-12
-    /// there (tests/map_precision.rs, a dense grid and the turning points): `bouncelab map`
-    /// and the explorer turn it on. Off by default: each cell then is `run`'s own answer.
+    /// there (tests/map_precision.rs, a dense grid and the turning points). A flattening ball
+    /// takes the Taylor steps of [`crate::solver::taylor`] within their domain, which keep
+    /// 1e-12 against the exact solver too (tests/taylor.rs). `bouncelab map` and the explorer
+    /// turn it on. Off by default: each cell then is `run`'s own answer.
     pub fast: bool,
+    /// The Hertz and elastic–plastic laws: take the Taylor steps of [`crate::solver::taylor`]
+    /// within their domain, the adaptive solver elsewhere. They agree with the adaptive
+    /// solver to 1e-9 (its own precision at rtol 1e-10, `run`'s) and with it at rtol 1e-14 to
+    /// 1e-12 (tests/taylor.rs): a cell is then not `run`'s to the last digits but closer to
+    /// the exact answer. `bouncelab map` and the explorer turn it on.
+    pub fast_laws: bool,
 }
 
 impl MapSpec {
     /// The same map with the fast linear-law path on or off (see [`MapSpec::fast`]).
     pub fn with_fast(mut self, fast: bool) -> MapSpec {
         self.fast = fast;
+        self
+    }
+
+    /// The same map with the Taylor steps for the Hertz and elastic–plastic laws on or off
+    /// (see [`MapSpec::fast_laws`]).
+    pub fn with_fast_laws(mut self, fast: bool) -> MapSpec {
+        self.fast_laws = fast;
         self
     }
 
@@ -229,6 +244,7 @@ impl MapSpec {
             lambda,
             zeta,
             fast: false,
+            fast_laws: false,
         })
     }
 

@@ -175,9 +175,11 @@ impl App {
         };
         self.map.window = Some(window);
         let (params, law) = (self.setting.params, self.setting.law);
-        let spec = window
-            .axes(rows, cols)
-            .and_then(|(la, za)| Ok(MapSpec::dimensional(params, law, la, za)?.with_fast(true)));
+        let spec = window.axes(rows, cols).and_then(|(la, za)| {
+            Ok(MapSpec::dimensional(params, law, la, za)?
+                .with_fast(true)
+                .with_fast_laws(true))
+        });
         let spec = match spec {
             Ok(s) => s,
             Err(e) => {

@@ -1,0 +1,106 @@
+//! A phase on a linear branch, F̄ = k (z̄ − z̄₀) + F̄₀ (the linear law's loading and unloading,
+//! Eqs. 21–22; the elastic–plastic law's straight stretch, Eq. 11), integrated by Taylor
+//! series in τ. The system is linear, so each coefficient costs a few operations:
+//!
+//! ```text
+//! z̄' = ᾱ' − ȳ',   ᾱ'' = −F̄,   ȳ' = 2ζ(F̄ − λȳ).
+//! ```
+
+use super::poly::{self, LEN, ORDER, Series};
+use super::{Budget, Point, Sys};
+
+/// The branch F̄ = k (z̄ − z̄₀) + F̄₀.
+#[derive(Debug, Clone, Copy)]
+pub(super) struct Branch {
+    pub k: f64,
+    pub z0: f64,
+    pub f0: f64,
+}
+
+/// How a phase on a linear branch ended.
+#[derive(Debug, Clone, Copy)]
+pub(super) enum End {
+    /// z̄' = 0: the peak z̄_m, unloading starts here.
+    Turned(Point),
+    /// F̄ = 0: the ball left at this point.
+    Separated(Point),
+}
+
+/// The Taylor coefficients of (z̄, ᾱ', ȳ) at x.
+fn series(sys: &Sys, br: &Branch, x: [f64; 3]) -> [Series; 3] {
+    let (mut z, mut v, mut y) = ([0.0; LEN], [0.0; LEN], [0.0; LEN]);
+    (z[0], v[0], y[0]) = (x[0], x[1], x[2]);
+    let two_zeta = 2.0 * sys.zeta;
+    for k in 0..ORDER {
+        let f = if k == 0 {
+            br.k * (z[0] - br.z0) + br.f0
+        } else {
+            br.k * z[k]
+        };
+        let yd = two_zeta * (f - sys.lambda * y[k]);
+        let inv = 1.0 / (k + 1) as f64;
+        z[k + 1] = (v[k] - yd) * inv;
+        v[k + 1] = -f * inv;
+        y[k + 1] = yd * inv;
+    }
+    [z, v, y]
+}
+
+fn at(c: &[Series; 3], h: f64, tau: f64) -> Point {
+    Point {
+        tau: tau + h,
+        z: poly::eval(&c[0], h),
+        v: poly::eval(&c[1], h),
+        y: poly::eval(&c[2], h),
+    }
+}
+
+/// Run the phase from `start` until z̄' falls through 0 (loading: `peak` is `None`) or, with
+/// the peak z̄_m given (unloading), until F̄ falls to 0; a rise past z̄_m (a reload), or the
+/// budget running out, gives `None`.
+pub(super) fn run(
+    sys: &Sys,
+    br: &Branch,
+    start: Point,
+    peak: Option<f64>,
+    budget: &mut Budget,
+) -> Option<End> {
+    let mut x = [start.z, start.v, start.y];
+    let mut tau = start.tau;
+    // F̄ = 0 where z̄ = z̄₀ − F̄₀/k
+    let z_free = br.z0 - br.f0 / br.k;
+    loop {
+        budget.take()?;
+        let c = series(sys, br, x);
+        let h = poly::step(&c, &x.map(|xi| xi.abs().max(1.0)));
+        if !(h.is_finite() && h > 0.0) {
+            return None;
+        }
+        match peak {
+            None => {
+                let dz = poly::derivative(&c[0]);
+                if poly::eval(&dz, h) <= 0.0 {
+                    let turn = poly::root(&dz, 0.0, h);
+                    return Some(End::Turned(at(&c, turn, tau)));
+                }
+            }
+            Some(z_m) => {
+                let z_end = poly::eval(&c[0], h);
+                if z_end > z_m {
+                    return None;
+                }
+                if z_end <= z_free {
+                    let leave = poly::root(&c[0], z_free, h);
+                    let mut p = at(&c, leave, tau);
+                    p.z = z_free;
+                    return Some(End::Separated(p));
+                }
+            }
+        }
+        let p = at(&c, h, tau);
+        (x, tau) = ([p.z, p.v, p.y], p.tau);
+        if tau > budget.tau_max {
+            return None;
+        }
+    }
+}

@@ -1,0 +1,260 @@
+//! A fast summary of one impact under any law by Taylor-series integration (issue 30 items 1
+//! and 2): COR, F̄_m, τ_f, z̄_m, z̄_f and ȳ at separation, no history, no energy audit.
+//!
+//! Each phase of docs/model.md §3 is a smooth system with a polynomial right-hand side once
+//! the 3/2 power is written with s = √((z̄ − z̄₀)/b) and time with dτ = s dσ (`power`): the
+//! Hertz loading, the elastic–plastic unloading. The linear branches (`linear`) are linear
+//! systems in τ. Series of order 20 (`poly`) step from phase event to phase event; the events
+//! (the turn z̄' = 0, yield z̄ = z̄_p, separation F̄ = 0) are the roots of the step's series, so
+//! no step is repeated and no event is passed.
+//!
+//! **Hertz scale.** Under the Hertz law F̄ = κ z̄^{3/2} scales out exactly: with
+//! L = κ^{−2/5}, z̄ = L ẑ and τ = L t̂ the force is ẑ^{3/2}/L, the speeds are unchanged, and
+//! the system is the same with λ̂ = λL², ζ̂ = ζ/L and κ̂ = 1 (docs/model.md §5), so the states
+//! are of order 1 whatever the speed. The elastic–plastic law keeps ẑ_p = z̄_p/L and its
+//! straight stretch has slope L².
+//!
+//! **Domain.** A stiff phase (a weak dashpot, ζ̂ large, or a stiff recoil spring against it)
+//! needs steps of the order of its fastest rate, which a Taylor method (explicit) cannot
+//! stretch: where the rate times the contact time exceeds [`STIFF`], and wherever the run
+//! needs more than [`MAX_STEPS`] steps (creeps, no rebound) or reloads after unloading began,
+//! `summary` returns `None` and the caller runs the adaptive solver (or the exact one).
+//! tests/taylor.rs holds the answers to the adaptive solver's over the property tests' domain.
+
+mod linear;
+mod poly;
+mod power;
+
+use crate::model::contact::{Contact, ContactLaw};
+use crate::model::params::Normalized;
+
+/// One impact's summary in normalized units (docs/model.md §5).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Summary {
+    /// The COR e (Eq. 6).
+    pub cor: f64,
+    /// F̄_m.
+    pub max_force: f64,
+    /// τ_f.
+    pub contact_time: f64,
+    /// z̄_m.
+    pub max_indentation: f64,
+    /// z̄_f (Eq. 18).
+    pub permanent_indentation: f64,
+    /// ȳ at separation.
+    pub element_displacement: f64,
+    /// Taylor steps taken.
+    pub steps: usize,
+}
+
+/// Most steps of one impact; past them the adaptive solver answers.
+const MAX_STEPS: usize = 160;
+/// Largest stiffness 2ζ̂(k + λ̂) · τ̂ the Taylor steps take on (k the contact's stiffness, τ̂
+/// the contact time's scale): an explicit step cannot much exceed the inverse of the fastest
+/// rate, so past it the steps would run out anyway, and the adaptive solver's stiff cascade
+/// is the one to use.
+const STIFF: f64 = 60.0;
+/// Longest contact followed, in the phase's time unit.
+const TAU_MAX: f64 = 1e3;
+
+/// ȳ' = 2ζ(F̄ − λȳ) in the units of the run.
+#[derive(Debug, Clone, Copy)]
+struct Sys {
+    lambda: f64,
+    zeta: f64,
+}
+
+/// The state where a phase starts or ends.
+#[derive(Debug, Clone, Copy)]
+struct Point {
+    tau: f64,
+    z: f64,
+    /// ᾱ'
+    v: f64,
+    y: f64,
+}
+
+/// The steps left to an impact, and its longest contact.
+struct Budget {
+    steps: usize,
+    taken: usize,
+    tau_max: f64,
+}
+
+impl Budget {
+    fn new() -> Budget {
+        Budget {
+            steps: MAX_STEPS,
+            taken: 0,
+            tau_max: TAU_MAX,
+        }
+    }
+    /// One step, or `None` when none is left.
+    fn take(&mut self) -> Option<()> {
+        if self.taken >= self.steps {
+            return None;
+        }
+        self.taken += 1;
+        Some(())
+    }
+}
+
+/// The impact of the normalized ball `n` under `law`, or `None` outside the Taylor steps'
+/// domain (see the module's introduction), where the caller runs the adaptive solver. The
+/// linear law is taken only where the ball flattens (F̄_m > z̄_p: `map::fast` answers the
+/// rest in closed form).
+pub fn summary(n: &Normalized, law: ContactLaw) -> Option<Summary> {
+    let ok = |x: f64| x.is_finite() && x >= 0.0;
+    if !(ok(n.lambda) && ok(n.zeta) && n.kappa.is_finite() && n.kappa > 0.0 && n.zp_bar > 0.0) {
+        return None;
+    }
+    match law {
+        ContactLaw::Linear => linear_flattening(n),
+        ContactLaw::Hertz | ContactLaw::ElasticPlastic => power_law(n, law),
+    }
+}
+
+/// The Hertz and elastic–plastic laws in the Hertz scale.
+fn power_law(n: &Normalized, law: ContactLaw) -> Option<Summary> {
+    let l = n.kappa.powf(-0.4);
+    let sys = Sys {
+        lambda: n.lambda * l * l,
+        zeta: n.zeta / l,
+    };
+    let zp = if law == ContactLaw::Hertz {
+        f64::INFINITY
+    } else {
+        n.zp_bar / l
+    };
+    // the contact's stiffness in the Hertz scale: 1.5 √ẑ ≈ 1.6 at the Hertz peak, L² past
+    // yield; the Hertz contact time is 2.94 (5/4)^{2/5} ≈ 3.2
+    let k = if zp < 1.1 { 1.6f64.max(l * l) } else { 1.6 };
+    if 2.0 * sys.zeta * (k + sys.lambda) * 3.2 > STIFF {
+        return None;
+    }
+    let mut budget = Budget::new();
+    let hertz = power::Branch {
+        z0: 0.0,
+        b: 1.0,
+        a: 1.0,
+    };
+    let start = Point {
+        tau: 0.0,
+        z: 0.0,
+        v: 1.0,
+        y: 0.0,
+    };
+    let first = power::run(&sys, &hertz, start, zp.sqrt(), false, &mut budget)?;
+    let (end, z_m, f_m, z_f) = match first.end {
+        power::End::Separated(p) => {
+            let s = first.s_max;
+            (p, s * s, s * s * s, 0.0)
+        }
+        power::End::Yield(p) => {
+            let f_p = zp * zp.sqrt();
+            let line = linear::Branch {
+                k: l * l,
+                z0: zp,
+                f0: f_p,
+            };
+            let linear::End::Turned(top) = linear::run(&sys, &line, p, None, &mut budget)? else {
+                return None;
+            };
+            let z_m = top.z;
+            let f_m = line.k * (z_m - zp) + f_p;
+            let contact = Contact {
+                law,
+                zp_bar: zp,
+                kappa: 1.0,
+            };
+            let z_f = contact.permanent_indentation(z_m);
+            let unload = power::Branch {
+                z0: z_f,
+                b: z_m - z_f,
+                a: f_m,
+            };
+            if unload.b.is_nan() || unload.b <= 0.0 {
+                return None;
+            }
+            let last = power::run(&sys, &unload, top, f64::INFINITY, true, &mut budget)?;
+            let power::End::Separated(p) = last.end else {
+                return None;
+            };
+            (p, z_m, f_m, z_f)
+        }
+    };
+    finish(end, z_m, f_m, z_f, l, &budget)
+}
+
+/// The linear law where the ball flattens: loading F̄ = z̄ to the turn, then the straight
+/// unloading of Eq. 22 to z̄_f.
+fn linear_flattening(n: &Normalized) -> Option<Summary> {
+    let sys = Sys {
+        lambda: n.lambda,
+        zeta: n.zeta,
+    };
+    if 2.0 * sys.zeta * (1.0 + sys.lambda) * std::f64::consts::PI > STIFF {
+        return None;
+    }
+    let mut budget = Budget::new();
+    let load = linear::Branch {
+        k: 1.0,
+        z0: 0.0,
+        f0: 0.0,
+    };
+    let start = Point {
+        tau: 0.0,
+        z: 0.0,
+        v: 1.0,
+        y: 0.0,
+    };
+    let linear::End::Turned(top) = linear::run(&sys, &load, start, None, &mut budget)? else {
+        return None;
+    };
+    let z_m = top.z;
+    if z_m <= n.zp_bar {
+        return None;
+    }
+    let contact = Contact {
+        law: ContactLaw::Linear,
+        zp_bar: n.zp_bar,
+        kappa: n.kappa,
+    };
+    let z_f = contact.permanent_indentation(z_m);
+    if z_m.is_nan() || z_m <= z_f {
+        return None;
+    }
+    let unload = linear::Branch {
+        k: z_m / (z_m - z_f),
+        z0: z_f,
+        f0: 0.0,
+    };
+    // the stiffer unloading spring: its rate too must stay within the steps' reach
+    if 2.0 * sys.zeta * (unload.k + sys.lambda) * std::f64::consts::PI / unload.k.sqrt() > STIFF {
+        return None;
+    }
+    let linear::End::Separated(end) = linear::run(&sys, &unload, top, Some(z_m), &mut budget)?
+    else {
+        return None;
+    };
+    finish(end, z_m, z_m, z_f, 1.0, &budget)
+}
+
+/// The summary from the separation point, in the units of the run (scale `l`: z̄ = l ẑ,
+/// τ = l t̂, F̄ = F̂/l).
+fn finish(end: Point, z_m: f64, f_m: f64, z_f: f64, l: f64, budget: &Budget) -> Option<Summary> {
+    let cor = (-end.v).clamp(0.0, 1.0);
+    let s = Summary {
+        cor,
+        max_force: f_m / l,
+        contact_time: end.tau * l,
+        max_indentation: z_m * l,
+        permanent_indentation: z_f * l,
+        element_displacement: end.y * l,
+        steps: budget.taken,
+    };
+    let finite = [s.cor, s.max_force, s.contact_time, s.max_indentation]
+        .iter()
+        .all(|x| x.is_finite());
+    (finite && s.contact_time > 0.0).then_some(s)
+}

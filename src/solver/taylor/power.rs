@@ -1,0 +1,169 @@
+//! A phase on a 3/2-power branch, z̄ = z̄₀ + b s², F̄ = a s³ (Hertz loading, Eq. 7; the
+//! elastic–plastic unloading, Eq. 12), integrated by Taylor series in the variable σ with
+//! dτ = s dσ. In σ the system is polynomial,
+//!
+//! ```text
+//! ds/dσ = (ᾱ' − ȳ')/(2b),   dᾱ'/dσ = −a s⁴,   dȳ/dσ = s ȳ',   dτ/dσ = s,
+//! ȳ' = 2ζ(a s³ − λȳ),
+//! ```
+//!
+//! so its Taylor coefficients follow from Cauchy products alone, and the square root of z̄
+//! that makes the system singular in τ at first touch and at separation (s = 0) is gone:
+//! separation is a simple zero of s in σ, at which ᾱ' and τ are stationary (dᾱ'/dσ = −a s⁴,
+//! dτ/dσ = s), so the COR and the contact time carry none of the root's error.
+
+use super::poly::{self, LEN, ORDER, Series};
+use super::{Budget, Point, Sys};
+
+/// The branch z̄ = z̄₀ + b s², F̄ = a s³.
+#[derive(Debug, Clone, Copy)]
+pub(super) struct Branch {
+    /// z̄₀: where the branch carries no force (0 loading, z̄_f unloading).
+    pub z0: f64,
+    /// b: z̄ − z̄₀ = b s² (1 loading, z̄_m − z̄_f unloading).
+    pub b: f64,
+    /// a: F̄ = a s³ (κ loading, F̄_m unloading).
+    pub a: f64,
+}
+
+/// How a phase on a power branch ended.
+#[derive(Debug, Clone, Copy)]
+pub(super) enum End {
+    /// F̄ = 0: the ball left at this point.
+    Separated(Point),
+    /// s reached the yield value: the linear stretch of the elastic–plastic law starts here.
+    Yield(Point),
+}
+
+/// A phase's end and the largest s it reached (at a turn, z̄' = 0).
+#[derive(Debug, Clone, Copy)]
+pub(super) struct Run {
+    pub end: End,
+    pub s_max: f64,
+}
+
+/// The Taylor coefficients of (s, ᾱ', ȳ, τ) at x (Cauchy products, each O(k) at order k).
+fn series(sys: &Sys, br: &Branch, x: [f64; 4]) -> [Series; 4] {
+    let (mut s, mut v, mut y, mut t) = ([0.0; LEN], [0.0; LEN], [0.0; LEN], [0.0; LEN]);
+    let (mut p, mut q, mut yd) = ([0.0; LEN], [0.0; LEN], [0.0; LEN]);
+    (s[0], v[0], y[0], t[0]) = (x[0], x[1], x[2], x[3]);
+    let two_zeta = 2.0 * sys.zeta;
+    let half_b = 0.5 / br.b;
+    for k in 0..ORDER {
+        // p = s², q = s³, r = s⁴ = p², sy = s ȳ'
+        p[k] = square(&s, k);
+        q[k] = (0..=k).map(|i| p[i] * s[k - i]).sum();
+        let r = square(&p, k);
+        yd[k] = two_zeta * (br.a * q[k] - sys.lambda * y[k]);
+        let sy: f64 = (0..=k).map(|i| s[i] * yd[k - i]).sum();
+        let inv = 1.0 / (k + 1) as f64;
+        s[k + 1] = (v[k] - yd[k]) * half_b * inv;
+        v[k + 1] = -br.a * r * inv;
+        y[k + 1] = sy * inv;
+        t[k + 1] = s[k] * inv;
+    }
+    [s, v, y, t]
+}
+
+/// The k-th coefficient of c², by the product's symmetry (half the terms).
+fn square(c: &Series, k: usize) -> f64 {
+    let half: f64 = (0..k.div_ceil(2)).map(|i| c[i] * c[k - i]).sum();
+    let middle = if k.is_multiple_of(2) {
+        c[k / 2] * c[k / 2]
+    } else {
+        0.0
+    };
+    2.0 * half + middle
+}
+
+/// The step the four series allow (each relative to its component's size, at least 1).
+fn step(c: &[Series; 4], x: &[f64; 4]) -> f64 {
+    poly::step(c, &x.map(|xi| xi.abs().max(1.0)))
+}
+
+fn at(c: &[Series; 4], h: f64) -> [f64; 4] {
+    [
+        poly::eval(&c[0], h),
+        poly::eval(&c[1], h),
+        poly::eval(&c[2], h),
+        poly::eval(&c[3], h),
+    ]
+}
+
+/// Run the phase from `start` on branch `br` until the ball leaves (s = 0) or, loading, s
+/// reaches `s_yield` (∞: never). `unloading`: the phase starts at the peak (s = 1) and a
+/// rise past it (a reload) is left to the adaptive solver (`None`); loading, every turn's s
+/// is kept in `s_max`. `None` also when the budget runs out.
+pub(super) fn run(
+    sys: &Sys,
+    br: &Branch,
+    start: Point,
+    s_yield: f64,
+    unloading: bool,
+    budget: &mut Budget,
+) -> Option<Run> {
+    let s0 = ((start.z - br.z0) / br.b).max(0.0).sqrt();
+    let mut x = [s0, start.v, start.y, start.tau];
+    let mut s_max = s0;
+    let point = |x: [f64; 4]| Point {
+        tau: x[3],
+        z: br.z0 + br.b * x[0] * x[0],
+        v: x[1],
+        y: x[2],
+    };
+    loop {
+        budget.take()?;
+        let c = series(sys, br, x);
+        let h = step(&c, &x);
+        if !(h.is_finite() && h > 0.0) {
+            return None;
+        }
+        let s_end = poly::eval(&c[0], h);
+        if unloading && s_end > 1.0 {
+            return None;
+        }
+        // loading: a turn (s' falls through 0) in (0, h], whose s may pass the yield value
+        // even where s(h) is back below it
+        let ds = poly::derivative(&c[0]);
+        let turn = (!unloading && poly::eval(&ds, 0.0) > 0.0 && poly::eval(&ds, h) <= 0.0)
+            .then(|| poly::root(&ds, 0.0, h));
+        let top = turn.map_or(s_end, |t| poly::eval(&c[0], t).max(s_end));
+        // the first of separation and yield in (0, h]
+        let mut event: Option<(f64, bool)> = None;
+        if top >= s_yield {
+            let upto = if s_end >= s_yield {
+                h
+            } else {
+                turn.unwrap_or(h)
+            };
+            event = Some((poly::root(&c[0], s_yield, upto), true));
+        } else if s_end <= 0.0 && x[0] > 0.0 {
+            event = Some((poly::root(&c[0], 0.0, h), false));
+        }
+        if let Some(t) = turn
+            && t <= event.map_or(h, |e| e.0)
+        {
+            s_max = s_max.max(poly::eval(&c[0], t));
+        }
+        if let Some((h_event, yielded)) = event {
+            let mut end = at(&c, h_event);
+            if yielded {
+                end[0] = s_yield;
+                s_max = s_max.max(s_yield);
+                return Some(Run {
+                    end: End::Yield(point(end)),
+                    s_max,
+                });
+            }
+            end[0] = 0.0;
+            return Some(Run {
+                end: End::Separated(point(end)),
+                s_max,
+            });
+        }
+        x = at(&c, h);
+        if x[3] > budget.tau_max {
+            return None;
+        }
+    }
+}
