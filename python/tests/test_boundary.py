@@ -154,3 +154,14 @@ def test_ctrl_c_stops_a_trace_fit_promptly():
     late = interrupted_after(1.5, call)
     print(f"KeyboardInterrupt {late * 1e3:.0f} ms after SIGINT")
     assert late < 0.5
+
+
+def test_ctrl_c_stops_a_monte_carlo_promptly():
+    # 1e7 linear samples (the work limit): seconds of work, in chunks of ~5 ms that each ask
+    # the watch
+    call = lambda: bouncelab.monte_carlo(  # noqa: E731
+        preset="golf", vary={"k_p": 0.05}, samples=10**7, seed=1
+    )
+    late = interrupted_after(0.3, call)
+    print(f"KeyboardInterrupt {late * 1e3:.0f} ms after SIGINT")
+    assert late < 0.5
