@@ -4,7 +4,7 @@
 //! their angles. Each legend names its line's look, so it reads without colour (NO_COLOR).
 
 use crate::oblique::{ObliqueHistory, ObliqueResponse};
-use crate::text::sig;
+use crate::text::{short, sig};
 use crate::tui::theme::Theme;
 use ratatui::buffer::Buffer;
 use ratatui::layout::{Constraint, Rect};
@@ -62,6 +62,32 @@ fn labels(b: [f64; 2], width: u16) -> Vec<String> {
     at.iter().map(|&v| sig(v, 3)).collect()
 }
 
+/// Round ticks over `b`, as the other charts' (never "249 46.1 −157"): a step of 1, 1.5, 2,
+/// 2.5, 3, 4, 5, 6 or 8 × 10^k giving about three intervals, the axis widened to the ticks
+/// around the data; every tick labelled (ratatui spreads labels evenly), or the ends alone on a
+/// chart narrower than `MIDDLE_FROM` (`round_ticks_hold_the_data`).
+fn round_axis(b: [f64; 2], width: u16) -> ([f64; 2], Vec<String>) {
+    let span = b[1] - b[0];
+    if !(span.is_finite() && span > 0.0) {
+        return (b, labels(b, width));
+    }
+    let raw = span / 3.0;
+    let k = 10f64.powf(raw.log10().floor());
+    let step = [1.0, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0, 6.0, 8.0, 10.0]
+        .iter()
+        .map(|m| m * k)
+        .find(|&s| s >= raw * (1.0 - 1e-9))
+        .unwrap_or(10.0 * k);
+    let (k0, k1) = ((b[0] / step).floor(), (b[1] / step).ceil());
+    let at: Vec<f64> = if width >= MIDDLE_FROM {
+        (k0 as i64..=k1 as i64).map(|i| i as f64 * step).collect()
+    } else {
+        vec![k0 * step, k1 * step]
+    };
+    let text = at.iter().map(|&v| short(v, 3)).collect();
+    ([k0 * step, k1 * step], text)
+}
+
 /// Narrowest chart with a middle label on its axes.
 const MIDDLE_FROM: u16 = 30;
 
@@ -76,18 +102,20 @@ fn time_chart<'a>(
     Chart::new(sets)
         .hidden_legend_constraints((Constraint::Ratio(1, 2), Constraint::Ratio(1, 2)))
         .block(Block::bordered().title(Span::styled(title.to_string(), theme.title())))
-        .x_axis(
+        .x_axis({
+            let (bounds, text) = round_axis([0.0, t_ms], width);
             Axis::default()
                 .style(theme.axis())
-                .bounds([0.0, t_ms])
-                .labels(labels([0.0, t_ms], width)),
-        )
-        .y_axis(
+                .bounds(bounds)
+                .labels(text)
+        })
+        .y_axis({
+            let (bounds, text) = round_axis(y, width);
             Axis::default()
                 .style(theme.axis())
-                .bounds(y)
-                .labels(labels(y, width)),
-        )
+                .bounds(bounds)
+                .labels(text)
+        })
 }
 
 fn set<'a>(name: Option<String>, data: &'a [(f64, f64)], style: Style, line: bool) -> Dataset<'a> {
@@ -232,6 +260,26 @@ pub fn render_paths(r: &ObliqueResponse, theme: Theme, area: Rect, buf: &mut Buf
 
 #[cfg(test)]
 mod tests {
+    #[test]
+    fn round_ticks_hold_the_data() {
+        let (b, t) = super::round_axis([-157.0, 249.0], 40);
+        assert_eq!(b, [-300.0, 300.0]);
+        assert_eq!(t, ["-300", "-150", "0", "150", "300"]);
+        let (b, t) = super::round_axis([0.0, 4.8], 40);
+        assert_eq!(
+            (b, t),
+            (
+                [0.0, 6.0],
+                vec!["0".to_string(), "2".into(), "4".into(), "6".into()]
+            )
+        );
+        let (b, t) = super::round_axis([-1.2, 25.2], 10);
+        assert_eq!(
+            (b, t),
+            ([-10.0, 30.0], vec!["-10".to_string(), "30".into()])
+        );
+    }
+
     use super::reversals;
     use crate::oblique::ObliqueHistory;
 
