@@ -67,7 +67,7 @@ pub struct TraceSummary {
 
 impl Trace {
     /// Columns `time`/`t`/`time_s`/`time_ms`/`time_us` and `force`/`F`/`force_N`/`force_kN`.
-    /// Rows go straight into the trace's vectors, reserved once ([`table::read_each`]).
+    /// Rows go straight into the trace's vectors, reserved once (`table::read_each`).
     pub fn parse(text: &str) -> Result<Trace, MeasuredError> {
         let room = table::rows_at_most(text);
         let mut tr = Trace {

@@ -1,6 +1,6 @@
 //! The event loop: wait for an event, drain whatever else is queued (zero-timeout poll), apply
 //! it all, recompute once, draw once — a held key never builds a backlog. After a resize the
-//! terminal is asked to announce its pending input again ([`rearm_input`]): crossterm's reader
+//! terminal is asked to announce its pending input again (`rearm_input`): crossterm's reader
 //! can drop a key that arrives with a resize. The loop also
 //! carries out the effects `update` returns: COR-vs-speed sweeps go to a worker thread (while
 //! one is out, the loop also wakes to collect it), fits (`f`) to the fit worker likewise, an

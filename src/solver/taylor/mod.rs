@@ -16,8 +16,8 @@
 //!
 //! **Domain.** A stiff phase (a weak dashpot, ζ̂ large, or a stiff recoil spring against it)
 //! needs steps of the order of its fastest rate, which a Taylor method (explicit) cannot
-//! stretch: where the rate times the contact time exceeds [`STIFF`], and wherever the run
-//! needs more than [`MAX_STEPS`] steps (creeps, no rebound) or reloads after unloading began,
+//! stretch: where the rate times the contact time exceeds `STIFF`, and wherever the run
+//! needs more than `MAX_STEPS` steps (creeps, no rebound) or reloads after unloading began,
 //! `summary` returns `None` and the caller runs the adaptive solver (or the exact one).
 //! tests/taylor.rs holds the answers to the adaptive solver's over the property tests' domain.
 
