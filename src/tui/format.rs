@@ -3,9 +3,9 @@
 //! value.
 //!
 //! One number format for the whole explorer (docs/explorer.md, "Numbers"): [`value`] writes
-//! [`DIGITS`] significant digits, plain from 0.0001 up to 99 999 and in exponent form
-//! outside (`5.450e4` is never `54500` beside `1.17e5`); a parameter being stepped gets the
-//! digits its step needs ([`stepped`]); an uncertainty [`UNCERTAIN`] digits, an interval's
+//! [`DIGITS`] significant digits, plain from 0.0001 up to 99 999 (the integer part rounded
+//! too) and in exponent form outside; a parameter being stepped gets the digits its step
+//! needs ([`stepped`]); an uncertainty [`UNCERTAIN`] digits, an interval's
 //! two ends in one form ([`interval`]); every quantity in one unit ([`screen_unit`]: mm, g,
 //! ms).
 
@@ -18,7 +18,7 @@ pub const DIGITS: usize = 4;
 pub const UNCERTAIN: usize = 3;
 
 /// `x` to `digits` significant digits, the integer part of a plain number rounded too
-/// (78094 to 3 digits is 78100, not 78094).
+/// (78094 to 3 digits is 78100).
 fn rounded(x: f64, digits: usize) -> String {
     let mag = if x.is_finite() && x != 0.0 {
         x.abs().log10().floor() as i32
@@ -45,8 +45,8 @@ pub fn uncertainty(x: f64) -> String {
     rounded(x, UNCERTAIN)
 }
 
-/// A value being stepped by `step`: the digits needed to see one step (λ 1000.01 after a
-/// fine step from 1000, not 1000 → 1000), at least [`DIGITS`].
+/// A value being stepped by `step`: the digits needed to see one step (λ 1000.01 one fine
+/// step above 1000), at least [`DIGITS`].
 pub fn stepped(x: f64, step: f64) -> String {
     let mag = |v: f64| v.abs().log10().floor() as i32;
     let digits = if x.is_finite() && x != 0.0 && step.is_finite() && step > 0.0 {

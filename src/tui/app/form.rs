@@ -61,8 +61,7 @@ impl App {
                 self.refresh_run();
                 self.open_form(field);
                 if self.message.is_none() {
-                    // the one screen format (K_r = 5.000e6 N/m beside K_p 1.257e5, not
-                    // 5.00000e6): tui::format::value
+                    // the one screen format: tui::format::value
                     self.info(format!(
                         "{} = {} {}",
                         field.symbol(),

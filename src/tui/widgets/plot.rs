@@ -266,7 +266,7 @@ impl<'a> Plot<'a> {
     ) -> (Vec<(u16, u16)>, Vec<Line<'static>>) {
         let cell = |p: Option<(f64, f64)>| Some((l.col(p?.0)?, l.row(p?.1)?));
         // the markers' own cells: a tag keeps off them, as a marker's glyph stays on its
-        // point (tests/tui_render.rs: `tags_keep_off_the_markers`: "●1" for "p1")
+        // point (tests/tui_render.rs: `tags_keep_off_the_markers`)
         let points: Vec<(u16, u16)> = self
             .figure
             .series

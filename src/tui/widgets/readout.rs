@@ -60,8 +60,8 @@ impl Widget for &Readout<'_> {
         } else {
             self.compact()
         };
-        // a long line breaks between its fields, never inside a value (1.053e-29 split over
-        // two rows; tests/tui_render.rs: `readout_values_never_wrap`)
+        // a long line breaks between its fields, never inside a value (tests/tui_render.rs:
+        // `readout_values_never_wrap`)
         let lines = crate::tui::format::fit_lines(lines, inner_w);
         Paragraph::new(lines)
             .block(self.block())

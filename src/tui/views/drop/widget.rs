@@ -187,8 +187,8 @@ fn render_ball(d: &DropView, theme: Theme, area: Rect, buf: &mut Buffer) {
     let cell = top / rows;
     let r = d.radius.max(1.2 * cell);
     // the plate one braille dot row (a quarter cell) below the ball's lowest point, so a
-    // ball at rest (the reduced-motion picture) is a whole circle on the plate, not an arc
-    // merged into it (tests/tui_drop.rs: `the_ball_at_rest_is_round_on_its_plate`)
+    // ball at rest (the reduced-motion picture) is a whole circle standing on the plate
+    // (tests/tui_drop.rs: `the_ball_at_rest_is_round_on_its_plate`)
     let plate_y = -cell / 4.0;
     // braille dots are about square (a cell is 2 dots wide, 4 tall, and twice as tall as
     // wide): equal metres per dot across and up keeps the ball round

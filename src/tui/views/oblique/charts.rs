@@ -62,7 +62,7 @@ fn labels(b: [f64; 2], width: u16) -> Vec<String> {
     at.iter().map(|&v| sig(v, 3)).collect()
 }
 
-/// Round ticks over `b`, as the other charts' (never "249 46.1 −157"): a step of 1, 1.5, 2,
+/// Round ticks over `b`, as the other charts': a step of 1, 1.5, 2,
 /// 2.5, 3, 4, 5, 6 or 8 × 10^k giving about three intervals, the axis widened to the ticks
 /// around the data; every tick labelled (ratatui spreads labels evenly), or the ends alone on a
 /// chart narrower than `MIDDLE_FROM` (`round_ticks_hold_the_data`).
