@@ -571,3 +571,17 @@ fn tags_keep_off_the_markers() {
         }
     }
 }
+
+/// Issue 29 item 11: at 60 × 20 the sweeps view's readout (the full-width pane under the
+/// charts) showed the parameters only, its four rows taken before e, F_m and t_f. It takes
+/// the compact lines there, results included.
+#[test]
+fn the_sweeps_readout_keeps_its_results_at_60x20() {
+    let mut a = app(0);
+    a.update(Action::Resize(60, 20));
+    press(&mut a, &[KeyCode::Tab]);
+    let s = screen_text(&draw(&a, 60, 20)).join("\n");
+    for needle in ["e 0.7506", "F_m 117.3", "t_f 2.743"] {
+        assert!(s.contains(needle), "no {needle:?}\n{s}");
+    }
+}

@@ -49,13 +49,18 @@ pub struct Readout<'a> {
     pub theme: Theme,
 }
 
+/// The narrowest pane (inner columns) that takes the four compact lines, whose results line
+/// holds e and F_m with their measured values (about 52 columns): the full-width pane at
+/// 60 × 20 shows the results (tests/tui_render.rs: `the_sweeps_readout_keeps_its_results_at_60x20`).
+const COMPACT_FROM: usize = 52;
+
 impl Widget for &Readout<'_> {
     fn render(self, area: Rect, buf: &mut Buffer) {
         let inner_w = usize::from(area.width.saturating_sub(2));
         let lines = if self.tall {
             let inner = Block::bordered().inner(area);
             self.panel(usize::from(inner.width), usize::from(inner.height))
-        } else if inner_w < 60 {
+        } else if inner_w < COMPACT_FROM {
             self.narrow()
         } else {
             self.compact()
