@@ -91,7 +91,9 @@ fn a_dense_trace_fit_shows_progress_and_a_signal_stops_it_writing_nothing() {
         ];
         // each model run slowed to 20 ms: the fit is still running when the signal comes
         let mut x = Explorer::spawn(home.path(), Some("slow-work"), &args);
-        x.wait_for("model runs,"); // the counter
+        // the counter, after the 999 999 rows are read: about 25 s in a debug build at a load
+        // average of 9 (the two runs took 51 s), beyond the usual 30 s wait at a load of 20
+        x.wait_for_within("model runs,", std::time::Duration::from_secs(120));
         x.signal(sig);
         let (status, _, text) = x.finish();
         assert_eq!(
@@ -195,4 +197,36 @@ fn cor_table_and_drop_test_fits_stop_on_a_signal_writing_nothing() {
         assert!(text.contains("interrupted"), "{}", text.escape_debug());
         assert!(left(home.path()).is_empty(), "{:?}", left(home.path()));
     }
+}
+
+#[test]
+fn a_drop_stops_on_a_signal_printing_nothing() {
+    // issue 28: `drop` looks at the watch before every bounce (and so do the drops of a fitted
+    // preset's intervals); it ran unwatched before and printed its whole table after a signal
+    let home = tempfile::tempdir().unwrap();
+    let args = [
+        "drop",
+        "--preset",
+        "superball",
+        "--law",
+        "hertz",
+        "--bounces",
+        "1000",
+        "--min-rebound",
+        "1e-9",
+    ];
+    // 593 bounces, each slowed to 20 ms: the drop is still running at the signal
+    let mut x = Explorer::spawn(home.path(), Some("slow-work"), &args);
+    x.wait_for("bounces,"); // the counter
+    x.signal(Signal::INT);
+    let (status, _, text) = x.finish();
+    assert_eq!(
+        status.code(),
+        Some(130),
+        "{status:?}\n{}",
+        text.escape_debug()
+    );
+    assert!(text.contains("interrupted"), "{}", text.escape_debug());
+    assert!(!text.contains("rebound"), "{}", text.escape_debug());
+    assert!(left(home.path()).is_empty(), "{:?}", left(home.path()));
 }

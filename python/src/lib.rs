@@ -403,9 +403,8 @@ fn drop_test<'py>(
     b.set_item("contact_time", col(|r| r.contact_time))?;
     b.set_item("max_force", col(|r| r.max_force))?;
     b.set_item("t_start", col(|r| r.t_start))?;
-    if let Some(bands) = py
-        .detach(|| ball.drop_intervals(&setup).transpose())
-        .map_err(error)?
+    if let Some(bands) =
+        interrupt::detach_watched(py, |w| ball.drop_intervals_watched(&setup, w).transpose())?
     {
         let names = ["cor", "max_force", "contact_time", "rebound_height"];
         interval_columns(py, &b, names, &bands)?;

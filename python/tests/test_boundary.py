@@ -4,6 +4,7 @@ line refuses is refused, and Ctrl-C stops long work within a fraction of a secon
 
 import os
 import signal
+import subprocess
 import threading
 import time
 
@@ -165,3 +166,55 @@ def test_ctrl_c_stops_a_monte_carlo_promptly():
     late = interrupted_after(0.3, call)
     print(f"KeyboardInterrupt {late * 1e3:.0f} ms after SIGINT")
     assert late < 0.5
+
+
+def test_ctrl_c_stops_a_cor_table_fit_promptly():
+    # 80 speeds under Hertz with three parameters free: seconds of fitting
+    v0 = np.linspace(1.0, 30.0, 80)
+    call = lambda: bouncelab.fit_cor_table(  # noqa: E731
+        v0, 0.85 - 0.005 * v0, preset="tennis", law="hertz", free=["k_h", "c", "k_r"]
+    )
+    late = interrupted_after(0.3, call)
+    print(f"KeyboardInterrupt {late * 1e3:.0f} ms after SIGINT")
+    assert late < 0.5
+
+
+def test_ctrl_c_stops_a_drop_test_fit_promptly():
+    # 40 drops under Hertz with three parameters free: seconds of fitting
+    h = np.linspace(1.0, 3.0, 40)
+    call = lambda: bouncelab.fit_drops(  # noqa: E731
+        h, 0.6 * h - 0.01 * h * h, preset="tennis", law="hertz", free=["k_h", "c", "k_r"]
+    )
+    late = interrupted_after(0.3, call)
+    print(f"KeyboardInterrupt {late * 1e3:.0f} ms after SIGINT")
+    assert late < 0.5
+
+
+def test_ctrl_c_stops_a_drop_in_its_intervals(tmp_path, monkeypatch):
+    # a Hertz superball fitted and saved: its drop of 593 bounces runs again twice for each
+    # free parameter (the delta method's intervals), which ran unwatched before
+    from test_intervals import binary
+
+    home = tmp_path / "config"
+    monkeypatch.setenv("XDG_CONFIG_HOME", str(home))
+    monkeypatch.setenv("HOME", str(home))
+    table = tmp_path / "cors.csv"
+    noise = [0.004, -0.006, 0.002, 0.005, -0.003, -0.001]
+    rows = ["v0,cor"]
+    for v0, n in zip([1, 2, 4, 7, 11, 16], noise):
+        rows.append(f"{v0},{bouncelab.run(preset='superball', law='hertz', v0=v0).cor + n}")
+    table.write_text("\n".join(rows) + "\n")
+    fit = [binary(), "fit", "--preset", "superball", "--law", "hertz"]
+    fit += ["--cor-table", str(table), "--save", "sbfit"]
+    subprocess.run(fit, check=True, capture_output=True, env=dict(os.environ))
+    call = lambda: bouncelab.drop(  # noqa: E731
+        preset="sbfit", law="hertz", bounces=1000, min_rebound=1e-9
+    )
+    start = time.perf_counter()
+    whole = call()
+    full = time.perf_counter() - start
+    assert len(whole["bounces"]["cor"]) > 500 and "cor_ci95_lo" in whole["bounces"]
+    # the first drop is a small part of the whole; the signal comes in the intervals' drops
+    late = interrupted_after(0.4 * full, call)
+    print(f"KeyboardInterrupt {late * 1e3:.0f} ms after SIGINT, of a {full:.2f} s drop")
+    assert late < 0.1 * full

@@ -8,6 +8,7 @@
 use super::{Ball, BallError};
 use crate::analysis::fit::stats::t975;
 use crate::analysis::fit::{Param, apply};
+use crate::analysis::work::Watch;
 use crate::model::contact::ContactLaw;
 use crate::model::params::ImpactParams;
 use crate::preset::FitTable;
@@ -56,6 +57,18 @@ pub fn intervals(
         max_force_ci95: b[1],
         contact_time_ci95: y[2].is_finite().then_some(b[2]),
     })
+}
+
+/// A watch that counts on from `before` steps (the bounces of the drops already run).
+struct Counted<'a> {
+    watch: &'a dyn Watch,
+    before: u64,
+}
+
+impl Watch for Counted<'_> {
+    fn step(&self, done: u64) -> bool {
+        self.watch.step(self.before + done)
+    }
 }
 
 /// The delta method on any outputs `f(p)` (module docs): one 95 % interval per output, for
@@ -112,17 +125,35 @@ impl Ball {
         &self,
         setup: &crate::drop::DropSetup,
     ) -> Option<Result<Vec<[[f64; 2]; 4]>, BallError>> {
+        self.drop_intervals_watched(setup, &crate::analysis::work::Unwatched)
+    }
+
+    /// [`Ball::drop_intervals`], each bounce of each of its drops reported to `watch` (the
+    /// count runs on over the drops), which may stop it ([`BallError::Interrupted`]): the
+    /// command line's and Python's Ctrl-C.
+    pub fn drop_intervals_watched(
+        &self,
+        setup: &crate::drop::DropSetup,
+        watch: &dyn Watch,
+    ) -> Option<Result<Vec<[[f64; 2]; 4]>, BallError>> {
         let fit = self.fit.as_ref()?;
         if !holds(&self.params, fit) {
             return None;
         }
         let dball = self.drop_ball();
+        let before = std::cell::Cell::new(0u64);
         let outputs = |p: &ImpactParams| -> Result<Vec<f64>, BallError> {
             let ball = crate::drop::DropBall {
                 params: *p,
                 ..dball
             };
-            let run = crate::drop::drop(&ball, setup)?;
+            let counted = Counted {
+                watch,
+                before: before.get(),
+            };
+            let run =
+                crate::drop::drop_watched(&ball, setup, &counted)?.ok_or(BallError::Interrupted)?;
+            before.set(before.get() + run.bounces.len() as u64);
             let per =
                 |x: &crate::drop::Bounce| [x.cor, x.max_force, x.contact_time, x.rebound_height];
             Ok(run.bounces.iter().flat_map(per).collect())

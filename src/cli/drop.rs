@@ -106,8 +106,14 @@ pub fn run(a: &DropArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         bounces: a.bounces,
         min_rebound: a.min_rebound,
     };
-    let run = crate::drop::drop(&dball, &setup).map_err(drop_error)?;
-    let bands = bounce_intervals(&b, &setup)?;
+    // the drop and its intervals' drops watched: a bar on a terminal, Ctrl-C or SIGTERM ends
+    // the command with exit 130 before anything is printed (cli_progress_pty.rs)
+    let watch = super::budget::Watcher::new("bounces");
+    let run = crate::drop::drop_watched(&dball, &setup, &watch)
+        .map_err(drop_error)?
+        .ok_or(super::budget::Interrupted)?;
+    let bands = bounce_intervals(&b, &setup, &watch)?;
+    drop(watch);
     let verdict = standard
         .map(|s| s.judge(&dball, air))
         .transpose()
@@ -185,8 +191,16 @@ struct BounceRow<'a> {
 
 /// A fitted preset's bounce intervals ([`Ball::drop_intervals`]); empty without a fit or when
 /// an override moved it.
-fn bounce_intervals(b: &Ball, setup: &DropSetup) -> anyhow::Result<Vec<BounceIntervals>> {
-    let Some(bands) = b.drop_intervals(setup).transpose()? else {
+fn bounce_intervals(
+    b: &Ball,
+    setup: &DropSetup,
+    watch: &super::budget::Watcher,
+) -> anyhow::Result<Vec<BounceIntervals>> {
+    let bands = b.drop_intervals_watched(setup, watch).transpose();
+    if matches!(bands, Err(crate::api::BallError::Interrupted)) {
+        return Err(super::budget::Interrupted.into());
+    }
+    let Some(bands) = bands? else {
         return Ok(Vec::new());
     };
     Ok(bands

@@ -172,7 +172,13 @@ impl Explorer {
     /// hold no spaces: ratatui skips cells that did not change, so a space can be a cursor
     /// move in the byte stream.
     pub fn wait_for(&mut self, needle: &str) {
-        let deadline = Instant::now() + TIMEOUT;
+        self.wait_for_within(needle, TIMEOUT);
+    }
+
+    /// [`Explorer::wait_for`] with its own time limit, for work whose first output takes long
+    /// in a debug build on a loaded machine.
+    pub fn wait_for_within(&mut self, needle: &str, limit: Duration) {
+        let deadline = Instant::now() + limit;
         loop {
             if let Some(i) = find(&self.output[self.seen..], needle.as_bytes()) {
                 self.seen += i + needle.len();
@@ -185,7 +191,7 @@ impl Explorer {
                 ));
             }
             if Instant::now() > deadline {
-                self.fail(&format!("{needle:?} did not come within {TIMEOUT:?}"));
+                self.fail(&format!("{needle:?} did not come within {limit:?}"));
             }
         }
     }
