@@ -338,19 +338,44 @@ fn taylor(c: &[V], h: V) -> V {
 /// The lanes' own answers: lane i is [`super::summary`]`(lambda[i], zeta[i])` to 1e-12 where
 /// the common path settles it, `None` where it hands the lane to the scalar path (which may
 /// still answer: [`summary4`] asks it).
+///
+/// The kernel runs compiled twice: for the build's target (SSE2 on the default x86-64 one)
+/// and with AVX2, picked where the CPU has it (`is_x86_feature_detected!` caches the answer).
+/// A `#[target_feature]` compilation of the same code rather than another lane type, because
+/// `wide` picks its representation when it is compiled, so a second, AVX `wide` cannot sit
+/// beside the first in one build; inside an `avx2` function the same operations take the VEX
+/// encodings (9 % fewer instructions: BENCHMARKS.md, "The map through the lanes"). FMA is not
+/// enabled on purpose: Rust never fuses a multiply and an add by itself, so both compilations
+/// round alike and give the same bits (`avx2_and_portable_kernels_agree_bit_for_bit`): a map's
+/// CSV does not depend on the CPU.
 pub fn lanes_only(lambda: [f64; LANES], zeta: [f64; LANES]) -> [Option<Summary>; LANES] {
-    super::dispatch::lanes_only(lambda, zeta)
+    #[cfg(target_arch = "x86_64")]
+    if std::arch::is_x86_feature_detected!("avx2") {
+        // SAFETY: the CPU has AVX2, just checked
+        return unsafe { lanes_only_avx2(lambda, zeta) };
+    }
+    kernel(lambda, zeta)
+}
+
+/// The kernel compiled with AVX2 enabled.
+///
+/// # Safety
+/// The CPU must have AVX2.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+unsafe fn lanes_only_avx2(lambda: [f64; LANES], zeta: [f64; LANES]) -> [Option<Summary>; LANES] {
+    kernel(lambda, zeta)
 }
 
 /// [`lanes_only`] compiled for the build's own target (SSE2 on the default x86-64 one): what
-/// every CPU runs, and what [`super::dispatch`] runs where AVX2 is missing.
+/// [`lanes_only`] runs where AVX2 is missing.
 pub fn lanes_only_portable(lambda: [f64; LANES], zeta: [f64; LANES]) -> [Option<Summary>; LANES] {
     kernel(lambda, zeta)
 }
 
 /// The body of [`lanes_only`], inlined into each of its compilations (portable, AVX2).
 #[inline(always)]
-pub(super) fn kernel(lambda: [f64; LANES], zeta: [f64; LANES]) -> [Option<Summary>; LANES] {
+fn kernel(lambda: [f64; LANES], zeta: [f64; LANES]) -> [Option<Summary>; LANES] {
     let (l, z) = (V::new(lambda), V::new(zeta));
     let valid = l.simd_gt(v(0.0)) & z.simd_gt(v(0.0)) & l.is_finite() & z.is_finite();
     // a lane left out computes a harmless ball (λ = 1, ζ = 0.1), its answer then dropped

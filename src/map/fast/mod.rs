@@ -28,7 +28,6 @@
 //! solver. The real root comes from Cardano's formula, polished (`lone_real_root`), where the
 //! other two are a complex pair.
 
-mod dispatch;
 mod flow;
 pub mod lanes;
 mod search;
