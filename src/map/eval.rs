@@ -10,17 +10,53 @@ use std::sync::atomic::{AtomicBool, Ordering};
 
 /// One cell at (λ, ζ): [`crate::simulate`] with the default options, as `bouncelab run`
 /// solves (its energy audit changes neither solver's COR, F_m or t_f). The linear law runs
-/// the exact solver, the others the adaptive one.
+/// the exact solver, the others the adaptive one. On the fast path the linear law's closed
+/// form runs in lanes ([`cells_at`]'s, the lane padded with copies of itself), so a cell
+/// alone is the map's cell bit for bit (`one_cell_is_the_maps_cell`).
 pub fn cell_at(spec: &MapSpec, lambda: f64, zeta: f64) -> Result<Cell, SolveError> {
-    let params = spec.params_at(lambda, zeta);
+    let mut out = [Ok(Cell::UNRESOLVED)];
+    cells_at(spec, &[(lambda, zeta)], &mut out);
+    let [c] = out;
+    c
+}
+
+/// [`cell_at`] of each (λ, ζ), into `out` (of the same length): on the linear law's fast
+/// path four cells per instruction stream ([`super::fast::lanes::summaries`], issue 30 item
+/// 3), each lane's answer a function of its own (λ, ζ) only — the same in any grouping, so
+/// the coarse-to-fine passes and a lone [`cell_at`] agree bit for bit.
+pub fn cells_at(spec: &MapSpec, points: &[(f64, f64)], out: &mut [Result<Cell, SolveError>]) {
+    assert_eq!(points.len(), out.len());
+    let params: Vec<ImpactParams> = points.iter().map(|&(l, z)| spec.params_at(l, z)).collect();
+    let closed = if spec.law == ContactLaw::Linear && spec.fast {
+        let norm: Vec<_> = params.iter().map(ImpactParams::normalized).collect();
+        let lambda: Vec<f64> = norm.iter().map(|n| n.lambda).collect();
+        let zeta: Vec<f64> = norm.iter().map(|n| n.zeta).collect();
+        let mut closed = vec![None; points.len()];
+        super::fast::lanes::summaries(&lambda, &zeta, &mut closed);
+        closed
+    } else {
+        vec![None; points.len()]
+    };
+    for ((p, s), o) in params.iter().zip(closed).zip(out.iter_mut()) {
+        *o = solve_cell(spec, p, s);
+    }
+}
+
+/// One cell from the linear law's closed form `closed` where it answers without flattening,
+/// else the fast paths of [`fast_cell`] where they are on, else the solvers.
+fn solve_cell(
+    spec: &MapSpec,
+    params: &ImpactParams,
+    closed: Option<super::fast::Summary>,
+) -> Result<Cell, SolveError> {
     let fast = match spec.law {
         ContactLaw::Linear => spec.fast,
         _ => spec.fast_laws,
     };
-    if fast && let Some(c) = fast_cell(spec, &params) {
+    if fast && let Some(c) = fast_cell(spec, params, closed) {
         return Ok(c);
     }
-    let r = simulate(&params, spec.law, &SolveOptions::default())?;
+    let r = simulate(params, spec.law, &SolveOptions::default())?;
     Ok(if spec.normalized {
         Cell {
             cor: r.cor,
@@ -36,16 +72,16 @@ pub fn cell_at(spec: &MapSpec, lambda: f64, zeta: f64) -> Result<Cell, SolveErro
     })
 }
 
-/// The cell from a fast path when one answers: on the linear law the closed form
-/// ([`super::fast::summary`]) while the ball does not flatten (z̄_m ≤ z̄_p); the Taylor steps
-/// ([`crate::solver::taylor::summary`]) for a flattening ball and for the Hertz and
-/// elastic–plastic laws. SI as `to_si` converts: F = F̄ m v0 ω0, t = τ/ω0.
-fn fast_cell(spec: &MapSpec, p: &ImpactParams) -> Option<Cell> {
+/// The cell from a fast path when one answers: on the linear law the closed form `closed`
+/// ([`super::fast::summary`]'s, in lanes) while the ball does not flatten (z̄_m ≤ z̄_p); the
+/// Taylor steps ([`crate::solver::taylor::summary`]) for a flattening ball and for the Hertz
+/// and elastic–plastic laws. SI as `to_si` converts: F = F̄ m v0 ω0, t = τ/ω0.
+fn fast_cell(
+    spec: &MapSpec,
+    p: &ImpactParams,
+    closed: Option<super::fast::Summary>,
+) -> Option<Cell> {
     let n = p.normalized();
-    let closed = match spec.law {
-        ContactLaw::Linear => super::fast::summary(n.lambda, n.zeta),
-        _ => None,
-    };
     let s = match closed {
         Some(s) if s.max_force <= n.zp_bar => s,
         _ => {
@@ -71,6 +107,11 @@ fn fast_cell(spec: &MapSpec, p: &ImpactParams) -> Option<Cell> {
         contact_time: Some(s.contact_time / w0),
     })
 }
+
+/// Cells a pass hands to one core at a time: a multiple of the lanes' four, small enough that
+/// a stop flag is seen within some microseconds on the closed form (a Hertz cell costs more:
+/// a few hundred µs a group) and that both cores share a 200 × 60 screen's first pass.
+const CHUNK: usize = 16;
 
 /// What one pass did.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -168,15 +209,23 @@ impl Map {
             .collect();
         let spec = &self.spec;
         let (lambdas, zetas) = (&self.lambdas, &self.zetas);
+        // groups of CHUNK cells over the cores, each through the lanes four at a time
         let found: Vec<(usize, Option<Cell>)> = pending
-            .par_iter()
-            .map(|&k| {
-                if cancel.load(Ordering::Relaxed) {
-                    return (k, None);
+            .par_chunks(CHUNK)
+            .flat_map_iter(|ks| {
+                let stop = cancel.load(Ordering::Relaxed);
+                let points: Vec<(f64, f64)> = ks
+                    .iter()
+                    .map(|&k| (lambdas[k / nz], zetas[k % nz]))
+                    .collect();
+                let mut out = vec![Ok(Cell::UNRESOLVED); ks.len()];
+                if !stop {
+                    cells_at(spec, &points, &mut out);
                 }
-                let c = cell_at(spec, lambdas[k / nz], zetas[k % nz]);
                 // the spec checked every parameter: only `Unresolved` is left
-                (k, Some(c.unwrap_or(Cell::UNRESOLVED)))
+                ks.iter()
+                    .zip(out)
+                    .map(move |(&k, c)| (k, (!stop).then(|| c.unwrap_or(Cell::UNRESOLVED))))
             })
             .collect();
         let mut evaluated = 0;
@@ -260,6 +309,36 @@ mod tests {
         assert_eq!(m.next_stride(), Some(p.stride));
         let p2 = m.refine().unwrap();
         assert!(p2.complete && p2.evaluated > 0 && p2.stride == p.stride);
+    }
+
+    /// A lone cell is the map's cell bit for bit (the lanes' answers depend on their own
+    /// (λ, ζ) only), on the closed form and where a dimensional ball flattens (the Taylor
+    /// steps), and a pass's groups do not change a cell.
+    #[test]
+    fn one_cell_is_the_maps_cell() {
+        let l = Axis::new(Param::Lambda, 0.1, 10.0, 7, Scale::Log).unwrap();
+        let z = Axis::new(Param::Zeta, 0.02, 2.0, 5, Scale::Log).unwrap();
+        let ball = crate::Ball::from_preset("tennis").unwrap();
+        let specs = [
+            spec(9).with_fast(true),
+            MapSpec::dimensional(ball.params, ContactLaw::Linear, l, z)
+                .unwrap()
+                .with_fast(true),
+        ];
+        for s in specs {
+            let m = compute(s.clone());
+            let (ls, zs) = (s.lambda.values(), s.zeta.values());
+            for (i, &lambda) in ls.iter().enumerate() {
+                for (j, &zeta) in zs.iter().enumerate() {
+                    let alone = cell_at(&s, lambda, zeta).unwrap();
+                    assert_eq!(
+                        m.cells()[i * zs.len() + j],
+                        Some(alone),
+                        "λ {lambda}, ζ {zeta}"
+                    );
+                }
+            }
+        }
     }
 
     /// The fast path's map equals the exact one to 1e-9 (away from where the pair turns

@@ -160,8 +160,9 @@ pub struct MapSpec {
     pub lambda: Axis,
     /// The ζ values (columns).
     pub zeta: Axis,
-    /// Linear law only: take [`fast::summary`] (closed form, six to eight times faster) wherever
-    /// it answers and the ball does not flatten; the exact solver elsewhere. It answers only
+    /// Linear law only: take [`fast::summary`] (closed form, six to eight times faster; in
+    /// lanes, four cells at a time: [`fast::lanes`], docs/map.md) wherever it answers and the
+    /// ball does not flatten; the exact solver elsewhere. It answers only
     /// where its rounding bound keeps 1e-13, and agrees with the exact solver (`run`) to 1e-12
     /// there (tests/map_precision.rs, a dense grid and the turning points). A flattening ball
     /// takes the Taylor steps of [`crate::solver::taylor`] within their domain, which keep

@@ -28,6 +28,7 @@ pub const LANES: usize = 4;
 
 type V = f64x4;
 
+#[inline(always)]
 fn v(x: f64) -> V {
     V::splat(x)
 }
@@ -57,6 +58,7 @@ struct Point4 {
 }
 
 impl Point4 {
+    #[inline(always)]
     fn select(mask: V, yes: Point4, no: Point4) -> Point4 {
         Point4 {
             t: mask.select(yes.t, no.t),
@@ -79,6 +81,7 @@ struct Root4 {
 /// The lone real root of s³ + a2 s² + s + a0 and the deflated quadratic (p1, p0), as
 /// `propagator::lone_real_root` gives them (Cardano, then at most four Newton steps that must
 /// settle), and the lanes where it answers.
+#[inline(always)]
 fn lone_real_root(a2: V, a0: V) -> (V, V, V, V) {
     let (one, zero) = (v(1.0), v(0.0));
     let shift = a2 / v(3.0);
@@ -116,6 +119,7 @@ fn lone_real_root(a2: V, a0: V) -> (V, V, V, V) {
 impl Flow4 {
     /// The flows, and the lanes whose pair oscillates and decays (`Flow::new`'s coefficients,
     /// each of two equal forms the one of smaller terms).
+    #[inline(always)]
     fn new(lambda: V, zeta: V) -> (Flow4, V) {
         let (one, zero) = (v(1.0), v(0.0));
         let two_zeta = v(2.0) * zeta;
@@ -165,6 +169,7 @@ impl Flow4 {
     }
 
     /// `Flow::at_phase`: the point at τ from (cos ωτ, sin ωτ).
+    #[inline(always)]
     fn at_phase(&self, t: V, cos: V, sin: V) -> Point4 {
         let decay = (-self.sigma * t).exp();
         Point4 {
@@ -177,6 +182,7 @@ impl Flow4 {
     }
 
     /// `Flow::at` where the pair oscillates.
+    #[inline(always)]
     fn at(&self, t: V) -> Point4 {
         let (sin, cos) = (self.omega * t).sin_cos();
         self.at_phase(t, cos, sin)
@@ -184,6 +190,7 @@ impl Flow4 {
 
     /// `Flow::shift`: the point `h` after `pt` by series, and the lanes where every rate × |h|
     /// is within [`SMALL`] (elsewhere the caller takes [`Flow4::at`]).
+    #[inline(always)]
     fn shift(&self, pt: &Point4, h: V) -> (Point4, V) {
         let rate = self.r.abs().max(self.sigma.abs()).max(self.omega);
         let fits = (rate * h.abs()).simd_le(v(SMALL));
@@ -202,6 +209,7 @@ impl Flow4 {
     }
 
     /// (z̄, …, z̄^{(5)}) at a point (`Flow::jet`).
+    #[inline(always)]
     fn jet(&self, pt: &Point4) -> [V; 6] {
         std::array::from_fn(|k| {
             let [ar, c, s] = self.jet[k];
@@ -210,6 +218,7 @@ impl Flow4 {
     }
 
     /// `Flow::rounding` where the pair oscillates: (for z̄, for ∫ z̄).
+    #[inline(always)]
     fn rounding(&self, pt: &Point4) -> (V, V) {
         let one = v(1.0);
         let t = pt.t;
@@ -226,6 +235,7 @@ impl Flow4 {
     }
 
     /// `Flow::integral` where |rτ| ≥ 1e-3 (the caller checks).
+    #[inline(always)]
     fn integral(&self, pt: &Point4) -> V {
         let real = self.a * (pt.real - v(1.0)) / self.r;
         real + self.p * pt.ec + self.q * pt.es - self.p
@@ -233,6 +243,7 @@ impl Flow4 {
 
     /// `search::phase_guesses` where P > 0: the points at the pair's zeros of z̄' and z̄, and
     /// the lanes where P > 0.
+    #[inline(always)]
     fn guesses(&self) -> ([Point4; 2], V) {
         let w = self.omega;
         let p = self.d + self.sigma * self.a;
@@ -253,6 +264,7 @@ impl Flow4 {
 
 /// `search::householder`: the step and the lanes where it is the last one on a falling
 /// crossing.
+#[inline(always)]
 fn householder(f: &[V]) -> (V, V) {
     let one = v(1.0);
     let inv = one / f[1];
@@ -267,6 +279,7 @@ fn householder(f: &[V]) -> (V, V) {
 /// `search::refine_both`: τ_m (i = 0, the root of z̄') and τ_f (i = 1, of z̄) from their
 /// guesses, side by side; the lanes where each settled within [`MAX_REFINE`] steps inside
 /// (0, [`TAU_MAX`]) and within a quarter of the pair's period of its guess.
+#[inline(always)]
 fn refine_both(flow: &Flow4, guesses: [Point4; 2], live: V) -> ([Root4; 2], V) {
     let mut points = guesses;
     let mut active = [live, live];
@@ -317,6 +330,7 @@ fn refine_both(flow: &Flow4, guesses: [Point4; 2], live: V) -> ([Root4; 2], V) {
 }
 
 /// `search::taylor`.
+#[inline(always)]
 fn taylor(c: &[V], h: V) -> V {
     c[0] + h * (c[1] + h / v(2.0) * (c[2] + h / v(3.0) * (c[3] + h / v(4.0) * c[4])))
 }
@@ -324,7 +338,44 @@ fn taylor(c: &[V], h: V) -> V {
 /// The lanes' own answers: lane i is [`super::summary`]`(lambda[i], zeta[i])` to 1e-12 where
 /// the common path settles it, `None` where it hands the lane to the scalar path (which may
 /// still answer: [`summary4`] asks it).
+///
+/// The kernel runs compiled twice: for the build's target (SSE2 on the default x86-64 one)
+/// and with AVX2, picked where the CPU has it (`is_x86_feature_detected!` caches the answer).
+/// A `#[target_feature]` compilation of the same code rather than another lane type, because
+/// `wide` picks its representation when it is compiled, so a second, AVX `wide` cannot sit
+/// beside the first in one build; inside an `avx2` function the same operations take the VEX
+/// encodings (9 % fewer instructions: BENCHMARKS.md, "The map through the lanes"). FMA is not
+/// enabled on purpose: Rust never fuses a multiply and an add by itself, so both compilations
+/// round alike and give the same bits (`avx2_and_portable_kernels_agree_bit_for_bit`): a map's
+/// CSV does not depend on the CPU.
 pub fn lanes_only(lambda: [f64; LANES], zeta: [f64; LANES]) -> [Option<Summary>; LANES] {
+    #[cfg(target_arch = "x86_64")]
+    if std::arch::is_x86_feature_detected!("avx2") {
+        // SAFETY: the CPU has AVX2, just checked
+        return unsafe { lanes_only_avx2(lambda, zeta) };
+    }
+    kernel(lambda, zeta)
+}
+
+/// The kernel compiled with AVX2 enabled.
+///
+/// # Safety
+/// The CPU must have AVX2.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+unsafe fn lanes_only_avx2(lambda: [f64; LANES], zeta: [f64; LANES]) -> [Option<Summary>; LANES] {
+    kernel(lambda, zeta)
+}
+
+/// [`lanes_only`] compiled for the build's own target (SSE2 on the default x86-64 one): what
+/// [`lanes_only`] runs where AVX2 is missing.
+pub fn lanes_only_portable(lambda: [f64; LANES], zeta: [f64; LANES]) -> [Option<Summary>; LANES] {
+    kernel(lambda, zeta)
+}
+
+/// The body of [`lanes_only`], inlined into each of its compilations (portable, AVX2).
+#[inline(always)]
+fn kernel(lambda: [f64; LANES], zeta: [f64; LANES]) -> [Option<Summary>; LANES] {
     let (l, z) = (V::new(lambda), V::new(zeta));
     let valid = l.simd_gt(v(0.0)) & z.simd_gt(v(0.0)) & l.is_finite() & z.is_finite();
     // a lane left out computes a harmless ball (λ = 1, ζ = 0.1), its answer then dropped
@@ -394,6 +445,7 @@ const INV_FACTORIAL: [f64; 14] = {
 };
 
 /// `flow::exp_small`: Σ xᵏ/k!, k ≤ 10, good where |x| ≤ [`SMALL`].
+#[inline(always)]
 fn exp_small(x: V) -> V {
     (0..=10)
         .rev()
@@ -401,6 +453,7 @@ fn exp_small(x: V) -> V {
 }
 
 /// `flow::cos_sinc`: (cos x, sin(x)/x) to x¹⁰, good where |x| ≤ [`SMALL`].
+#[inline(always)]
 fn cos_sinc(x: V) -> (V, V) {
     let x2 = x * x;
     let sign = |k: usize| if k.is_multiple_of(2) { 1.0 } else { -1.0 };
