@@ -22,10 +22,9 @@
 use super::fit::Param;
 use super::mc_rng::{Words, first_blocks, key_words};
 use super::mc_stats::stats;
-use crate::map::fast::lanes::{self, LANES};
+use crate::map::fast::lanes::LANES;
 use crate::model::contact::ContactLaw;
-use crate::model::params::{ImpactParams, Normalized};
-use crate::solver::{SolveError, SolveOptions, simulate};
+use crate::model::params::ImpactParams;
 use chacha20::rand_core::{Rng, SeedableRng};
 use rand_distr::{Distribution, StandardNormal, StandardUniform};
 use rayon::prelude::*;
@@ -33,6 +32,7 @@ use serde::Serialize;
 use statrs::distribution::{ContinuousCDF, Normal};
 
 pub use super::mc_corr::parse_correlate;
+pub use super::mc_impact::{impact, impacts};
 pub use super::mc_spec::{Correlation, Dist, McError, McSpec, Spread, Varied, parse_vary};
 pub use super::mc_stats::{PROBS, Quantiles, Stats};
 
@@ -192,7 +192,7 @@ impl Sampler {
     /// The values of [`Sampler::inputs`] without an allocation: the first `n` of the array.
     fn draw(&self, index: u64) -> ([f64; Varied::ALL.len()], usize) {
         let [block, ..] = first_blocks(&self.words, [index; LANES]);
-        self.draw_from(&mut Words::new(&self.key, index, block))
+        self.draw_from(&mut Words::new(&self.key, index, &block))
     }
 
     /// The varied parameters' values drawn from `rng`, a sample's own stream: ChaCha8 keyed
@@ -345,7 +345,7 @@ impl Sampler {
             let index: [u64; LANES] = std::array::from_fn(|k| start + (g + k).min(n - 1) as u64);
             let blocks = first_blocks(&self.words, index);
             let balls: [Option<ImpactParams>; LANES] = std::array::from_fn(|k| {
-                let words = &mut Words::new(&self.key, index[k], blocks[k]);
+                let words = &mut Words::new(&self.key, index[k], &blocks[k]);
                 let (values, m) = self.draw_from(words);
                 let p = self.ball(&values[..m]);
                 p.validate().is_ok().then_some(p)
@@ -371,68 +371,6 @@ impl Sampler {
 fn lognormal(v: f64, spread: f64, n: f64) -> f64 {
     let var = spread.mul_add(spread, 1.0).ln();
     v * (var.sqrt() * n - 0.5 * var).exp()
-}
-
-/// One impact as `bouncelab run` solves it (COR, F_m, t_f): [`impacts`]' lane 0 with `p` in
-/// every lane, so that a ball's answer is the same alone as in any group of four.
-pub fn impact(p: &ImpactParams, law: ContactLaw) -> Result<Outcome, SolveError> {
-    let [one, ..] = impacts(&[Some(*p); LANES], law);
-    one.expect("a ball has its impact")
-}
-
-/// The impacts of up to four checked balls (`None`: no ball, no answer) as `bouncelab run`
-/// solves them: on the linear law the closed form in lanes ([`lanes::summary4`], to 1e-12 of
-/// the exact solver) where it answers and the ball does not flatten (z̄_m ≤ z̄_p), SI by F =
-/// F̄ m v0 ω0 and t = τ/ω0; else the solver with its default options.
-pub fn impacts(
-    balls: &[Option<ImpactParams>; LANES],
-    law: ContactLaw,
-) -> [Option<Result<Outcome, SolveError>>; LANES] {
-    let normalized = balls
-        .each_ref()
-        .map(|p| p.as_ref().map(ImpactParams::normalized));
-    let fast = if law == ContactLaw::Linear {
-        let pick = |f: fn(&Normalized) -> f64| {
-            normalized
-                .each_ref()
-                .map(|n| n.as_ref().map_or(f64::NAN, f))
-        };
-        lanes::summary4(pick(|n| n.lambda), pick(|n| n.zeta))
-    } else {
-        [None; LANES]
-    };
-    std::array::from_fn(|k| {
-        let (p, n) = (balls[k].as_ref()?, normalized[k].as_ref()?);
-        if let Some(s) = fast[k]
-            && s.max_force <= n.zp_bar
-        {
-            let w0 = p.omega0();
-            return Some(Ok(Outcome {
-                cor: s.cor,
-                max_force: s.max_force * p.mass * p.v0 * w0,
-                contact_time: s.contact_time / w0,
-            }));
-        }
-        // a flattening ball on the linear law: the Taylor steps within their domain (to 1e-12
-        // of the exact solver, tests/taylor.rs); the other laws keep `run`'s solver, whose
-        // answers they must equal to 1e-12 (`other_laws_run_the_solver`), which the Taylor
-        // steps hold only to 1e-9
-        if law == ContactLaw::Linear
-            && let Some(s) = crate::solver::taylor::summary(n, law)
-        {
-            let w0 = p.omega0();
-            return Some(Ok(Outcome {
-                cor: s.cor,
-                max_force: s.max_force * p.mass * p.v0 * w0,
-                contact_time: s.contact_time / w0,
-            }));
-        }
-        Some(simulate(p, law, &SolveOptions::default()).map(|r| Outcome {
-            cor: r.cor,
-            max_force: r.max_force,
-            contact_time: r.contact_time.unwrap_or(f64::NAN),
-        }))
-    })
 }
 
 /// A whole run's statistics, with what it ran.

@@ -91,7 +91,7 @@ pub fn first_blocks(key: &[u32; 8], streams: [u64; LANES]) -> [[u32; BLOCK]; LAN
 /// reads past it) from `ChaCha8Rng` set to the same stream at word 16. A `u64` is two words,
 /// the first the low half, as `ChaCha8Rng` makes it.
 pub struct Words<'a> {
-    block: [u32; BLOCK],
+    block: &'a [u32; BLOCK],
     next: usize,
     seed: &'a [u8; 32],
     stream: u64,
@@ -101,7 +101,7 @@ pub struct Words<'a> {
 impl<'a> Words<'a> {
     /// The generator of `stream` under `seed` (ChaCha8Rng's seed), whose first block is
     /// `block` ([`first_blocks`] under [`key_words`]`(seed)`).
-    pub fn new(seed: &'a [u8; 32], stream: u64, block: [u32; BLOCK]) -> Words<'a> {
+    pub fn new(seed: &'a [u8; 32], stream: u64, block: &'a [u32; BLOCK]) -> Words<'a> {
         Words {
             block,
             next: 0,
@@ -111,11 +111,19 @@ impl<'a> Words<'a> {
         }
     }
 
+    #[inline]
     fn word(&mut self) -> u32 {
-        if let Some(&w) = self.block.get(self.next) {
-            self.next += 1;
-            return w;
+        match self.block.get(self.next) {
+            Some(&w) => {
+                self.next += 1;
+                w
+            }
+            None => self.word_past_the_block(),
         }
+    }
+
+    #[cold]
+    fn word_past_the_block(&mut self) -> u32 {
         self.rest
             .get_or_insert_with(|| {
                 let mut r = ChaCha8Rng::from_seed(*self.seed);
@@ -131,11 +139,17 @@ impl<'a> Words<'a> {
 impl TryRng for Words<'_> {
     type Error = Infallible;
 
+    #[inline]
     fn try_next_u32(&mut self) -> Result<u32, Infallible> {
         Ok(self.word())
     }
 
+    #[inline]
     fn try_next_u64(&mut self) -> Result<u64, Infallible> {
+        if let Some(&[lo, hi]) = self.block.get(self.next..self.next + 2) {
+            self.next += 2;
+            return Ok(u64::from(hi) << 32 | u64::from(lo));
+        }
         let lo = self.word();
         let hi = self.word();
         Ok(u64::from(hi) << 32 | u64::from(lo))
@@ -173,12 +187,12 @@ mod tests {
             let blocks = first_blocks(&key_words(&seed), streams);
             for (s, block) in streams.into_iter().zip(blocks) {
                 let mut want = reference(&seed, s);
-                let mut got = Words::new(&seed, s, block);
+                let mut got = Words::new(&seed, s, &block);
                 for _ in 0..40 {
                     assert_eq!(got.next_u32(), want.next_u32(), "stream {s}");
                 }
                 // a u64 across the first block's end, then bytes with a ragged tail
-                let (mut want, mut got) = (reference(&seed, s), Words::new(&seed, s, block));
+                let (mut want, mut got) = (reference(&seed, s), Words::new(&seed, s, &block));
                 want.set_word_pos(15);
                 got.next = 15;
                 assert_eq!(got.next_u64(), want.next_u64());

@@ -119,8 +119,10 @@ pub fn stats(values: &[f64]) -> Stats {
     for &x in values.iter().filter(|x| x.is_finite()) {
         n += 1;
         total.add(x);
-        min = min.min(x);
-        max = max.max(x);
+        // (x finite: f64::min and max, as the instructions they compile to, without their NaN
+        // checks; of −0 and +0 the first seen, as before)
+        min = if x < min { x } else { min };
+        max = if x > max { x } else { max };
     }
     if n == 0 {
         let nan = f64::NAN;
