@@ -20,19 +20,19 @@
 //!   is a function of its own ball alone, so a sample's answer does not depend on its group.
 
 use super::fit::Param;
+use super::mc_rng::{Words, first_blocks, key_words};
 use super::mc_stats::stats;
-use crate::map::fast::lanes::{self, LANES};
+use crate::map::fast::lanes::LANES;
 use crate::model::contact::ContactLaw;
-use crate::model::params::{ImpactParams, Normalized};
-use crate::solver::{SolveError, SolveOptions, simulate};
-use chacha20::ChaCha8Rng;
-use chacha20::rand_core::SeedableRng;
+use crate::model::params::ImpactParams;
+use chacha20::rand_core::{Rng, SeedableRng};
 use rand_distr::{Distribution, StandardNormal, StandardUniform};
 use rayon::prelude::*;
 use serde::Serialize;
 use statrs::distribution::{ContinuousCDF, Normal};
 
 pub use super::mc_corr::parse_correlate;
+pub use super::mc_impact::{impact, impacts};
 pub use super::mc_spec::{Correlation, Dist, McError, McSpec, Spread, Varied, parse_vary};
 pub use super::mc_stats::{PROBS, Quantiles, Stats};
 
@@ -71,6 +71,25 @@ impl Samples {
         self.cor.is_empty()
     }
 
+    /// `count` samples from `start`, every value 0 until solved ([`Sampler::samples_into`]).
+    pub fn zeroed(start: u64, count: usize) -> Samples {
+        Samples {
+            start,
+            cor: vec![0.0; count],
+            max_force: vec![0.0; count],
+            contact_time: vec![0.0; count],
+        }
+    }
+
+    /// The columns of the samples `range` (positions, not indices) to be written.
+    pub fn columns_mut(&mut self, range: std::ops::Range<usize>) -> Columns<'_> {
+        Columns {
+            cor: &mut self.cor[range.clone()],
+            max_force: &mut self.max_force[range.clone()],
+            contact_time: &mut self.contact_time[range],
+        }
+    }
+
     /// `other`, the samples that follow these, appended.
     pub fn extend(&mut self, other: Samples) {
         debug_assert_eq!(other.start, self.start + self.len() as u64);
@@ -78,6 +97,17 @@ impl Samples {
         self.max_force.extend(other.max_force);
         self.contact_time.extend(other.contact_time);
     }
+}
+
+/// Where [`Sampler::samples_into`] writes: one entry a sample, the three of equal length.
+#[derive(Debug)]
+pub struct Columns<'a> {
+    /// COR of each sample.
+    pub cor: &'a mut [f64],
+    /// Peak force of each sample, N.
+    pub max_force: &'a mut [f64],
+    /// Contact time of each sample, s (NaN: no rebound).
+    pub contact_time: &'a mut [f64],
 }
 
 /// The statistics of the three quantities.
@@ -101,9 +131,13 @@ pub fn summarize(s: &Samples) -> McStats {
     }
 }
 
-/// Samples solved in parallel between two scans in index order (which keep the first error
-/// by index, whatever the threads did).
+/// Samples handed to the threads at once: the blocks run one after the other, so that an
+/// error stops the run within a block (some 5 ms of closed forms on all cores).
 const BLOCK: usize = 1 << 14;
+
+/// Samples of one parallel task, solved in index order: its first error by index, and the
+/// first of the tasks' by index ([`Sampler::samples_into`]), whatever the threads did.
+const TASK: usize = 64 * LANES;
 
 /// Draws and solves the samples of one spec on one ball.
 #[derive(Debug, Clone)]
@@ -113,6 +147,8 @@ pub struct Sampler {
     spec: McSpec,
     /// ChaCha8's key: the seed expanded as `ChaCha8Rng::seed_from_u64` expands it.
     key: [u8; 32],
+    /// The same as ChaCha's key words ([`key_words`]).
+    words: [u32; 8],
 }
 
 /// The key `SeedableRng::seed_from_u64` makes of a seed (rand_core's own expansion), kept so
@@ -132,10 +168,12 @@ fn key(seed: u64) -> [u8; 32] {
 impl Sampler {
     /// The sampler of `spec` around the nominal ball `base` under `law`.
     pub fn new(base: ImpactParams, law: ContactLaw, spec: McSpec) -> Sampler {
+        let key = key(spec.seed);
         Sampler {
             base,
             law,
-            key: key(spec.seed),
+            key,
+            words: key_words(&key),
             spec,
         }
     }
@@ -153,25 +191,30 @@ impl Sampler {
 
     /// The values of [`Sampler::inputs`] without an allocation: the first `n` of the array.
     fn draw(&self, index: u64) -> ([f64; Varied::ALL.len()], usize) {
-        let mut rng = ChaCha8Rng::from_seed(self.key);
-        rng.set_stream(index);
+        let [block, ..] = first_blocks(&self.words, [index; LANES]);
+        self.draw_from(&mut Words::new(&self.key, index, &block))
+    }
+
+    /// The varied parameters' values drawn from `rng`, a sample's own stream: ChaCha8 keyed
+    /// by the seed on stream `index` (`mc_rng::Words`, the words of `ChaCha8Rng`).
+    fn draw_from<R: Rng>(&self, rng: &mut R) -> ([f64; Varied::ALL.len()], usize) {
         if let Some(c) = &self.spec.correlation {
-            return self.draw_correlated(&mut rng, c);
+            return self.draw_correlated(rng, c);
         }
         let mut out = [0.0; Varied::ALL.len()];
         for (slot, s) in out.iter_mut().zip(&self.spec.vary) {
             let v = s.what.get(&self.base);
             *slot = match self.spec.dist {
                 Dist::Normal => {
-                    let n: f64 = StandardNormal.sample(&mut rng);
+                    let n: f64 = StandardNormal.sample(rng);
                     v * (1.0 + s.spread * n)
                 }
                 Dist::Uniform => {
-                    let u: f64 = StandardUniform.sample(&mut rng);
+                    let u: f64 = StandardUniform.sample(rng);
                     v * (1.0 + s.spread * (2.0 * u - 1.0))
                 }
                 Dist::Lognormal => {
-                    let n: f64 = StandardNormal.sample(&mut rng);
+                    let n: f64 = StandardNormal.sample(rng);
                     lognormal(v, s.spread, n)
                 }
             };
@@ -181,9 +224,9 @@ impl Sampler {
 
     /// Correlated draws (`super::mc_corr`): one standard normal per parameter, y = L z, each
     /// y the normal variate of its parameter (a Gaussian copula for `uniform`).
-    fn draw_correlated(
+    fn draw_correlated<R: Rng>(
         &self,
-        rng: &mut ChaCha8Rng,
+        rng: &mut R,
         c: &Correlation,
     ) -> ([f64; Varied::ALL.len()], usize) {
         let n = self.spec.vary.len();
@@ -212,9 +255,19 @@ impl Sampler {
     /// [`super::fit::apply`] does (`k_h_follows_k_p_…` holds the two to the same ball).
     pub fn params(&self, index: u64) -> Result<ImpactParams, McError> {
         let (values, n) = self.draw(index);
+        let p = self.ball(&values[..n]);
+        p.validate().map_err(|e| McError::Domain {
+            index,
+            reason: e.to_string(),
+        })?;
+        Ok(p)
+    }
+
+    /// The ball of the varied parameters' `values` (in the spec's order), unchecked.
+    fn ball(&self, values: &[f64]) -> ImpactParams {
         let mut p = self.base;
         let mut tied = false;
-        for (s, &v) in self.spec.vary.iter().zip(&values[..n]) {
+        for (s, &v) in self.spec.vary.iter().zip(values) {
             match s.what {
                 Varied::Param(Param::KP) => p.k_p = v,
                 Varied::Param(Param::C) => p.damping = v,
@@ -230,11 +283,7 @@ impl Sampler {
         if tied && p.z_p.is_finite() {
             p.k_h = ImpactParams::k_h_matching(p.k_p, p.z_p);
         }
-        p.validate().map_err(|e| McError::Domain {
-            index,
-            reason: e.to_string(),
-        })?;
-        Ok(p)
+        p
     }
 
     /// Sample `index`: its ball, and the impact `bouncelab run` would solve for it (as in
@@ -245,51 +294,76 @@ impl Sampler {
         impact(&p, self.law).map_err(McError::Solve)
     }
 
-    /// The samples `index[k]`, their impacts four at once ([`impacts`]).
-    fn outcomes(&self, index: [u64; LANES]) -> [Result<Outcome, McError>; LANES] {
-        let params = index.map(|i| self.params(i));
-        let balls = params.each_ref().map(|p| p.as_ref().ok().copied());
-        let mut solved = impacts(&balls, self.law).into_iter();
-        params.map(|p| {
-            let s = solved.next().flatten();
-            p.and_then(|_| {
-                s.expect("a checked ball has its impact")
-                    .map_err(McError::Solve)
-            })
-        })
-    }
-
     /// The samples `start … start + count`, on all cores, four at a time; the first error by
     /// index, if any.
     pub fn samples(&self, start: u64, count: usize) -> Result<Samples, McError> {
-        let mut out = Samples {
-            start,
-            cor: Vec::with_capacity(count),
-            max_force: Vec::with_capacity(count),
-            contact_time: Vec::with_capacity(count),
-        };
-        let mut done = 0usize;
-        while done < count {
-            let n = BLOCK.min(count - done);
-            let first = start + done as u64;
-            let last = first + n as u64 - 1;
-            // the last group padded with its own last sample, whose copies are dropped
-            let block: Vec<[Result<Outcome, McError>; LANES]> = (0..n.div_ceil(LANES) as u64)
-                .into_par_iter()
-                .map(|g| {
-                    let at = |k: usize| (first + g * LANES as u64 + k as u64).min(last);
-                    self.outcomes(std::array::from_fn(at))
-                })
-                .collect();
-            for r in block.into_iter().flatten().take(n) {
-                let o = r?;
-                out.cor.push(o.cor);
-                out.max_force.push(o.max_force);
-                out.contact_time.push(o.contact_time);
-            }
-            done += n;
-        }
+        let mut out = Samples::zeroed(start, count);
+        self.samples_into(start, out.columns_mut(0..count))?;
         Ok(out)
+    }
+
+    /// The samples `start …` into `out` (as many as it holds), on all cores in tasks of
+    /// [`TASK`] samples, four at a time: the same values as [`Sampler::samples`], written
+    /// where they belong (no copy, no per-sample `Result`); the first error by index, if any.
+    pub fn samples_into(&self, start: u64, out: Columns<'_>) -> Result<(), McError> {
+        let n = out.cor.len();
+        assert!(out.max_force.len() == n && out.contact_time.len() == n);
+        let blocks = out
+            .cor
+            .chunks_mut(BLOCK)
+            .zip(out.max_force.chunks_mut(BLOCK))
+            .zip(out.contact_time.chunks_mut(BLOCK));
+        for (b, ((cor, max_force), contact_time)) in blocks.enumerate() {
+            let first = start + (b * BLOCK) as u64;
+            let first_error = cor
+                .par_chunks_mut(TASK)
+                .zip(max_force.par_chunks_mut(TASK))
+                .zip(contact_time.par_chunks_mut(TASK))
+                .enumerate()
+                .find_map_first(|(k, ((cor, max_force), contact_time))| {
+                    let out = Columns {
+                        cor,
+                        max_force,
+                        contact_time,
+                    };
+                    self.fill(first + (k * TASK) as u64, out).err()
+                });
+            if let Some(e) = first_error {
+                return Err(e);
+            }
+        }
+        Ok(())
+    }
+
+    /// The samples `start …` into `out`, in index order, four at a time (the last group
+    /// padded with its own last sample, whose copies are dropped); stops at the first error.
+    /// Each sample's draws and ball are [`Sampler::params`]' and its impact [`impacts`]' lane:
+    /// a function of its index alone, whatever its group.
+    fn fill(&self, start: u64, out: Columns<'_>) -> Result<(), McError> {
+        let n = out.cor.len();
+        for g in (0..n).step_by(LANES) {
+            let index: [u64; LANES] = std::array::from_fn(|k| start + (g + k).min(n - 1) as u64);
+            let blocks = first_blocks(&self.words, index);
+            let balls: [Option<ImpactParams>; LANES] = std::array::from_fn(|k| {
+                let words = &mut Words::new(&self.key, index[k], &blocks[k]);
+                let (values, m) = self.draw_from(words);
+                let p = self.ball(&values[..m]);
+                p.validate().is_ok().then_some(p)
+            });
+            let solved = impacts(&balls, self.law);
+            for (k, s) in solved.into_iter().enumerate().take(n - g) {
+                let o = match s {
+                    Some(Ok(o)) => o,
+                    Some(Err(e)) => return Err(McError::Solve(e)),
+                    // the ball refused: its error, as `params` words it
+                    None => return Err(self.params(index[k]).expect_err("a refused ball")),
+                };
+                out.cor[g + k] = o.cor;
+                out.max_force[g + k] = o.max_force;
+                out.contact_time[g + k] = o.contact_time;
+            }
+        }
+        Ok(())
     }
 }
 
@@ -297,68 +371,6 @@ impl Sampler {
 fn lognormal(v: f64, spread: f64, n: f64) -> f64 {
     let var = spread.mul_add(spread, 1.0).ln();
     v * (var.sqrt() * n - 0.5 * var).exp()
-}
-
-/// One impact as `bouncelab run` solves it (COR, F_m, t_f): [`impacts`]' lane 0 with `p` in
-/// every lane, so that a ball's answer is the same alone as in any group of four.
-pub fn impact(p: &ImpactParams, law: ContactLaw) -> Result<Outcome, SolveError> {
-    let [one, ..] = impacts(&[Some(*p); LANES], law);
-    one.expect("a ball has its impact")
-}
-
-/// The impacts of up to four checked balls (`None`: no ball, no answer) as `bouncelab run`
-/// solves them: on the linear law the closed form in lanes ([`lanes::summary4`], to 1e-12 of
-/// the exact solver) where it answers and the ball does not flatten (z̄_m ≤ z̄_p), SI by F =
-/// F̄ m v0 ω0 and t = τ/ω0; else the solver with its default options.
-pub fn impacts(
-    balls: &[Option<ImpactParams>; LANES],
-    law: ContactLaw,
-) -> [Option<Result<Outcome, SolveError>>; LANES] {
-    let normalized = balls
-        .each_ref()
-        .map(|p| p.as_ref().map(ImpactParams::normalized));
-    let fast = if law == ContactLaw::Linear {
-        let pick = |f: fn(&Normalized) -> f64| {
-            normalized
-                .each_ref()
-                .map(|n| n.as_ref().map_or(f64::NAN, f))
-        };
-        lanes::summary4(pick(|n| n.lambda), pick(|n| n.zeta))
-    } else {
-        [None; LANES]
-    };
-    std::array::from_fn(|k| {
-        let (p, n) = (balls[k].as_ref()?, normalized[k].as_ref()?);
-        if let Some(s) = fast[k]
-            && s.max_force <= n.zp_bar
-        {
-            let w0 = p.omega0();
-            return Some(Ok(Outcome {
-                cor: s.cor,
-                max_force: s.max_force * p.mass * p.v0 * w0,
-                contact_time: s.contact_time / w0,
-            }));
-        }
-        // a flattening ball on the linear law: the Taylor steps within their domain (to 1e-12
-        // of the exact solver, tests/taylor.rs); the other laws keep `run`'s solver, whose
-        // answers they must equal to 1e-12 (`other_laws_run_the_solver`), which the Taylor
-        // steps hold only to 1e-9
-        if law == ContactLaw::Linear
-            && let Some(s) = crate::solver::taylor::summary(n, law)
-        {
-            let w0 = p.omega0();
-            return Some(Ok(Outcome {
-                cor: s.cor,
-                max_force: s.max_force * p.mass * p.v0 * w0,
-                contact_time: s.contact_time / w0,
-            }));
-        }
-        Some(simulate(p, law, &SolveOptions::default()).map(|r| Outcome {
-            cor: r.cor,
-            max_force: r.max_force,
-            contact_time: r.contact_time.unwrap_or(f64::NAN),
-        }))
-    })
 }
 
 /// A whole run's statistics, with what it ran.

@@ -4,7 +4,10 @@
 //!
 //! Quantiles are of type 7 (Hyndman & Fan; numpy's default `linear`): with the values sorted,
 //! x₀ ≤ … ≤ x_{n−1}, h = (n − 1) p, q(p) = x_⌊h⌋ + (h − ⌊h⌋)(x_⌈h⌉ − x_⌊h⌋). The order
-//! statistics are found by selection (`select_nth_unstable`), not a full sort: O(n) each.
+//! statistics are found without a sort and without a copy of the values ([`order_statistics`]):
+//! one pass counts the values in equal bins between the extremes, a second gathers the few
+//! bins that hold a rank asked for, and selection (`select_nth_unstable`) within them names
+//! each rank's value — the value a full sort puts there (`binned_ranks_are_a_full_sorts`).
 
 use serde::Serialize;
 
@@ -79,24 +82,48 @@ pub struct Stats {
 
 /// Neumaier's compensated sum, in the order given: the same values in the same order give the
 /// same bits, and the error does not grow with n.
-fn sum(values: impl Iterator<Item = f64>) -> f64 {
-    let (mut s, mut c) = (0.0f64, 0.0f64);
-    for x in values {
-        let t = s + x;
-        c += if s.abs() >= x.abs() {
-            (s - t) + x
-        } else {
-            (x - t) + s
-        };
-        s = t;
-    }
-    s + c
+#[derive(Default)]
+struct Sum {
+    s: f64,
+    c: f64,
 }
 
-/// The statistics of the finite values of `values` (NaN marks a sample without the quantity).
+impl Sum {
+    fn add(&mut self, x: f64) {
+        let t = self.s + x;
+        self.c += if self.s.abs() >= x.abs() {
+            (self.s - t) + x
+        } else {
+            (x - t) + self.s
+        };
+        self.s = t;
+    }
+
+    fn total(&self) -> f64 {
+        self.s + self.c
+    }
+}
+
+#[cfg(test)]
+fn sum(values: impl Iterator<Item = f64>) -> f64 {
+    let mut s = Sum::default();
+    values.for_each(|x| s.add(x));
+    s.total()
+}
+
+/// The statistics of the finite values of `values` (NaN marks a sample without the quantity),
+/// in two passes over them and one or two over the bins ([`order_statistics`]).
 pub fn stats(values: &[f64]) -> Stats {
-    let mut kept: Vec<f64> = values.iter().copied().filter(|x| x.is_finite()).collect();
-    let n = kept.len();
+    let (mut n, mut total) = (0usize, Sum::default());
+    let (mut min, mut max) = (f64::INFINITY, f64::NEG_INFINITY);
+    for &x in values.iter().filter(|x| x.is_finite()) {
+        n += 1;
+        total.add(x);
+        // (x finite: f64::min and max, as the instructions they compile to, without their NaN
+        // checks; of −0 and +0 the first seen, as before)
+        min = if x < min { x } else { min };
+        max = if x > max { x } else { max };
+    }
     if n == 0 {
         let nan = f64::NAN;
         return Stats {
@@ -108,30 +135,164 @@ pub fn stats(values: &[f64]) -> Stats {
             q: Quantiles::from_values([nan; 9]),
         };
     }
-    let mean = sum(kept.iter().copied()) / n as f64;
+    let mean = total.total() / n as f64;
+    // the squares' sum and the bins' counts in one more pass
+    let mut squares = Sum::default();
+    let mut bins = Bins::new(n, (min, max));
+    for &x in values.iter().filter(|x| x.is_finite()) {
+        squares.add((x - mean) * (x - mean));
+        if let Some(b) = &mut bins {
+            b.count(x);
+        }
+    }
     let sd = if n > 1 {
-        (sum(kept.iter().map(|x| (x - mean) * (x - mean))) / (n - 1) as f64).sqrt()
+        (squares.total() / (n - 1) as f64).sqrt()
     } else {
         0.0
     };
-    let min = kept.iter().copied().fold(f64::INFINITY, f64::min);
-    let max = kept.iter().copied().fold(f64::NEG_INFINITY, f64::max);
-    let q = Quantiles::from_values(quantiles(&mut kept, &PROBS));
+    let hs = PROBS.map(|p| (n - 1) as f64 * p / 100.0);
+    let pair = |h: f64| {
+        let lo = h.floor() as usize;
+        [lo, (lo + 1).min(n - 1)]
+    };
+    let mut ranks: Vec<usize> = hs.iter().flat_map(|&h| pair(h)).collect();
+    ranks.sort_unstable();
+    ranks.dedup();
+    let x = match &bins {
+        Some(b) => b.order_statistics(values, &ranks),
+        None => unbinned(values, (min, max), &ranks),
+    };
+    let value = |r: usize| x[ranks.binary_search(&r).expect("a rank asked for")];
+    let q = hs.map(|h| {
+        let [lo, hi] = pair(h);
+        let (x_lo, x_hi) = (value(lo), value(hi));
+        x_lo + (h - lo as f64) * (x_hi - x_lo)
+    });
     Stats {
         n,
         mean,
         sd,
         min,
         max,
-        q,
+        q: Quantiles::from_values(q),
     }
 }
 
+/// Equal bins between the extremes of the finite values, and how many fall in each.
+///
+/// The bin of x is ⌊(x − min)·scale⌋ (the last bin closed), which never decreases as x grows (a
+/// subtraction, a product by a positive number and a truncation each keep the order under
+/// rounding), so the values of bin b are the order statistics cum_b … cum_{b+1} − 1 of the
+/// whole (cum_b: the count below bin b). A rank's value is therefore the value of its rank
+/// less cum_b within its bin, found by selection among that bin's values alone.
+struct Bins {
+    min: f64,
+    scale: f64,
+    top: f64,
+    counts: Vec<usize>,
+}
+
+impl Bins {
+    /// Bins for `n` values within `range`, some 32 a bin and at most 2¹⁵ (their counts stay
+    /// in L2); `None` where the range cannot be divided (all values equal, max − min
+    /// subnormal or above f64::MAX).
+    fn new(n: usize, range: (f64, f64)) -> Option<Bins> {
+        let (min, max) = range;
+        let bins = (n / 32).clamp(1, 1 << 15);
+        let scale = bins as f64 / (max - min);
+        (scale.is_finite() && scale > 0.0).then(|| Bins {
+            min,
+            scale,
+            top: (bins - 1) as f64,
+            counts: vec![0; bins],
+        })
+    }
+
+    fn of(&self, x: f64) -> usize {
+        // within [0, top] before the cast: a u32 in range, converted exactly
+        ((x - self.min) * self.scale).min(self.top) as u32 as usize
+    }
+
+    fn count(&mut self, x: f64) {
+        let b = self.of(x);
+        self.counts[b] += 1;
+    }
+
+    /// The values of the `ranks` (ascending, distinct; 0 the smallest) among the finite
+    /// entries of `values`, which were counted; the values themselves are not moved.
+    fn order_statistics(&self, values: &[f64], ranks: &[usize]) -> Vec<f64> {
+        // each rank's bin and its rank within it, by the running count
+        let mut wanted: Vec<(usize, usize)> = Vec::with_capacity(ranks.len());
+        let (mut b, mut below) = (0usize, 0usize);
+        for &r in ranks {
+            while below + self.counts[b] <= r {
+                below += self.counts[b];
+                b += 1;
+            }
+            wanted.push((b, r - below));
+        }
+        // the wanted bins' values, gathered in one pass: slot[b] is 1 + its place in `held`
+        let mut slot = vec![0u8; self.counts.len()];
+        let mut held: Vec<Vec<f64>> = Vec::new();
+        for &(b, _) in &wanted {
+            if slot[b] == 0 {
+                held.push(Vec::with_capacity(self.counts[b]));
+                slot[b] = held.len() as u8;
+            }
+        }
+        for &x in values.iter().filter(|x| x.is_finite()) {
+            let s = slot[self.of(x)];
+            if s != 0 {
+                held[s as usize - 1].push(x);
+            }
+        }
+        wanted
+            .iter()
+            .map(|&(b, r)| {
+                let bin_values = &mut held[slot[b] as usize - 1];
+                *bin_values.select_nth_unstable_by(r, f64::total_cmp).1
+            })
+            .collect()
+    }
+}
+
+/// The values of `ranks` (ascending, distinct) among the finite entries of `values` within
+/// `range`, which [`Bins`] cannot divide: min where the values are all equal, else by
+/// selection on a copy.
+fn unbinned(values: &[f64], range: (f64, f64), ranks: &[usize]) -> Vec<f64> {
+    if range.0 == range.1 {
+        return vec![range.0; ranks.len()];
+    }
+    let mut kept: Vec<f64> = values.iter().copied().filter(|x| x.is_finite()).collect();
+    select_ranks_copy(&mut kept, ranks)
+}
+
+/// [`Bins::order_statistics`] of the `n` finite `values` within `range`, or [`unbinned`]'s.
+#[cfg(test)]
+fn order_statistics(values: &[f64], n: usize, range: (f64, f64), ranks: &[usize]) -> Vec<f64> {
+    let Some(mut bins) = Bins::new(n, range) else {
+        return unbinned(values, range, ranks);
+    };
+    values
+        .iter()
+        .filter(|x| x.is_finite())
+        .for_each(|&x| bins.count(x));
+    bins.order_statistics(values, ranks)
+}
+
+/// The values of `ranks` (ascending, distinct) in `values`, reordered: [`quantiles`]'
+/// selection.
+fn select_ranks_copy(values: &mut [f64], ranks: &[usize]) -> Vec<f64> {
+    select_ranks(values, ranks, 0);
+    ranks.iter().map(|&r| values[r]).collect()
+}
+
 /// Type-7 quantiles at `percents` (ascending) of `values` (finite, not empty), which are
-/// reordered. The order statistics needed are selected by divide and conquer: the middle
+/// reordered: the tests' reference for [`stats`]' (selection on a copy, as before the bins). The order statistics needed are selected by divide and conquer: the middle
 /// rank first, then the ranks below it in the part left of it and those above in the part
 /// right of it, so the work is O(n log k) for k ranks, not O(n k).
-pub fn quantiles<const K: usize>(values: &mut [f64], percents: &[f64; K]) -> [f64; K] {
+#[cfg(test)]
+fn quantiles<const K: usize>(values: &mut [f64], percents: &[f64; K]) -> [f64; K] {
     debug_assert!(
         percents.windows(2).all(|w| w[0] <= w[1]),
         "ascending percents"
@@ -238,6 +399,63 @@ mod tests {
         assert!(none.mean.is_nan() && none.q.q99.is_nan());
         let one = stats(&[7.0]);
         assert_eq!((one.sd, one.q.q1, one.q.q99), (0.0, 7.0, 7.0));
+    }
+
+    /// The order statistics by bins are a full sort's, bit for bit, with ties, signed zeros,
+    /// NaN and infinities left out, a heavy tail that crowds most values into one bin, and
+    /// the statistics are those of the values kept (a copy, sorted).
+    #[test]
+    fn binned_ranks_are_a_full_sorts() {
+        let lcg = |i: u64| {
+            (i.wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407)
+                >> 11) as f64
+                / (1u64 << 53) as f64
+        };
+        let sets: Vec<Vec<f64>> = vec![
+            (0..100_003u64)
+                .map(|i| (lcg(i) * 50.0).floor() * 0.25 - 3.0)
+                .collect(),
+            (0..70_001u64).map(|i| 1.0 / (lcg(i) + 1e-9)).collect(),
+            (0..5_000u64)
+                .map(|i| match i % 7 {
+                    0 => f64::NAN,
+                    1 => -0.0,
+                    2 => 0.0,
+                    3 => f64::INFINITY,
+                    _ => lcg(i) - 0.5,
+                })
+                .collect(),
+            vec![2.5; 1000],
+            vec![1.0, 1.0 + f64::EPSILON],
+            vec![
+                f64::MIN_POSITIVE,
+                2.0 * f64::MIN_POSITIVE,
+                3.0 * f64::MIN_POSITIVE,
+            ],
+            // a range too narrow to divide (subnormal), and one too wide (max − min = ∞)
+            vec![1e-323, 0.0, 5e-324, 0.0],
+            vec![f64::MAX, -f64::MAX, 0.0, 1.0],
+        ];
+        for v in sets {
+            let mut kept: Vec<f64> = v.iter().copied().filter(|x| x.is_finite()).collect();
+            kept.sort_by(f64::total_cmp);
+            let s = stats(&v);
+            assert_eq!(
+                (s.n, s.min, s.max),
+                (kept.len(), kept[0], kept[kept.len() - 1])
+            );
+            assert_eq!(s.mean, sum(kept.iter().copied()) / kept.len() as f64);
+            let want = quantiles(&mut kept.clone(), &PROBS);
+            for (q, w) in s.q.values().iter().zip(want) {
+                assert_eq!(q.to_bits(), w.to_bits(), "{} values", v.len());
+            }
+            let ranks: Vec<usize> = (0..kept.len()).step_by(kept.len() / 97 + 1).collect();
+            let got = order_statistics(&v, kept.len(), (kept[0], kept[kept.len() - 1]), &ranks);
+            for (r, x) in ranks.iter().zip(got) {
+                assert_eq!(x.to_bits(), kept[*r].to_bits(), "rank {r}");
+            }
+        }
     }
 
     /// The compensated sum keeps what a plain one loses: 1 + 1e-16 × 10⁴ − 1.

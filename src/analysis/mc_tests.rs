@@ -220,10 +220,44 @@ fn other_laws_run_the_solver() {
 /// on stream i.
 #[test]
 fn each_sample_is_chacha8_of_the_seed_on_its_own_stream() {
+    use chacha20::ChaCha8Rng;
     use chacha20::rand_core::Rng;
     let mut a = ChaCha8Rng::seed_from_u64(42);
     a.set_stream(7);
     let mut b = ChaCha8Rng::from_seed(key(42));
     b.set_stream(7);
     assert_eq!(a.next_u64(), b.next_u64());
+}
+
+/// The draws of a group of four (`fill`, from `mc_rng::first_blocks`) are those of the crate's
+/// own `ChaCha8Rng::seed_from_u64(seed)` on each sample's stream, for every distribution and
+/// with a correlation (seven normals a sample: some read past the first block), and the
+/// samples `samples` gives are those of the balls so drawn, one at a time.
+#[test]
+fn group_draws_are_the_crates_generator_sample_by_sample() {
+    use chacha20::ChaCha8Rng;
+    let ball = golf();
+    let all = "k_p=5%,c=5%,k_r=5%,z_p=3%,k_h=2%,m=1%,v0=2%";
+    let specs = [
+        spec("k_p=5%,c=5%,k_r=5%", Dist::Normal, 1001, 1),
+        spec("k_p=5%,c=5%,k_r=5%", Dist::Uniform, 1001, 2),
+        spec("k_p=5%,m=1%,v0=2%", Dist::Lognormal, 1001, 3),
+        spec(all, Dist::Normal, 1001, u64::MAX)
+            .with_correlation(parse_correlate("k_p:c=0.5,k_r:m=-0.3").unwrap())
+            .unwrap(),
+    ];
+    for s in specs {
+        let sampler = Sampler::new(ball.params, ball.law, s.clone());
+        let got = sampler.samples(0, s.samples).unwrap();
+        for i in 0..s.samples as u64 {
+            let mut rng = ChaCha8Rng::seed_from_u64(s.seed);
+            rng.set_stream(i);
+            let (values, n) = sampler.draw_from(&mut rng);
+            assert_eq!(sampler.inputs(i), values[..n], "sample {i}");
+            let o = impact(&sampler.ball(&values[..n]), ball.law).unwrap();
+            let k = i as usize;
+            let row = (got.cor[k], got.max_force[k], got.contact_time[k]);
+            assert_eq!(row, (o.cor, o.max_force, o.contact_time), "sample {i}");
+        }
+    }
 }

@@ -6,6 +6,8 @@ mod batch_stats;
 pub mod fit;
 pub mod mc;
 mod mc_corr;
+mod mc_impact;
+mod mc_rng;
 mod mc_spec;
 mod mc_stats;
 pub mod sweep;

@@ -58,22 +58,14 @@ impl Ball {
         let sampler = self.sampler(spec);
         // some 5 ms of work on all cores: 16 384 closed-form samples, 409 of another law
         let chunk = ((1u64 << 14) / work::cost(self.law)).max(1) as usize;
-        let mut samples = Samples {
-            start: 0,
-            cor: Vec::with_capacity(spec.samples),
-            max_force: Vec::with_capacity(spec.samples),
-            contact_time: Vec::with_capacity(spec.samples),
-        };
+        let mut samples = Samples::zeroed(0, spec.samples);
         let mut done = 0;
         while done < spec.samples {
             if !watch.step(done as u64) {
                 return Err(BallError::Interrupted);
             }
             let n = chunk.min(spec.samples - done);
-            let part = sampler.samples(done as u64, n)?;
-            samples.cor.extend(part.cor);
-            samples.max_force.extend(part.max_force);
-            samples.contact_time.extend(part.contact_time);
+            sampler.samples_into(done as u64, samples.columns_mut(done..done + n))?;
             done += n;
         }
         Ok(MonteCarlo {

@@ -157,15 +157,14 @@ fn run_samples(sampler: &Sampler, law: ContactLaw) -> anyhow::Result<Samples> {
         _ => work::cost(law) as f64,
     };
     let progress = Progress::new(n as u64, unit_cost, "samples");
-    let mut all = Samples::default();
+    let mut all = Samples::zeroed(0, n);
     let mut done = 0usize;
     while done < n {
         progress.check()?;
         let count = STEP.min(n - done);
-        let block = sampler
-            .samples(done as u64, count)
+        sampler
+            .samples_into(done as u64, all.columns_mut(done..done + count))
             .map_err(crate::BallError::from)?;
-        all.extend(block);
         done += count;
         progress.advance(count as u64);
     }

@@ -1,0 +1,89 @@
+//! A Monte Carlo sample's impact ([`super::mc`]): `bouncelab run`'s answer, four balls at once.
+//!
+//! On the linear law the closed form runs in lanes ([`lanes::summary4`], to 1e-12 of the exact
+//! solver) where it answers and the ball does not flatten (z̄_m ≤ z̄_p); the rest, rare, takes
+//! `run`'s other paths one ball at a time. The normalized groups and the SI scales of the four
+//! balls are computed side by side in `f64x4`: the operations of
+//! [`ImpactParams::normalized`] and [`ImpactParams::omega0`] in the same order, each a single
+//! IEEE operation (×, /, √) correctly rounded in a SIMD lane as in a scalar register, so the
+//! same bits as one ball at a time (`group_draws_are_the_crates_generator_sample_by_sample`
+//! compares a group's samples with [`impact`]'s, which pads a ball to four copies).
+
+use super::mc::Outcome;
+use crate::map::fast::Summary;
+use crate::map::fast::lanes::{self, LANES};
+use crate::model::contact::ContactLaw;
+use crate::model::params::ImpactParams;
+use crate::solver::{SolveError, SolveOptions, simulate};
+use wide::f64x4;
+
+/// One impact as `bouncelab run` solves it (COR, F_m, t_f): [`impacts`]' lane 0 with `p` in
+/// every lane, so that a ball's answer is the same alone as in any group of four.
+pub fn impact(p: &ImpactParams, law: ContactLaw) -> Result<Outcome, SolveError> {
+    let [one, ..] = impacts(&[Some(*p); LANES], law);
+    one.expect("a ball has its impact")
+}
+
+/// The impacts of up to four checked balls (`None`: no ball, no answer) as `bouncelab run`
+/// solves them: on the linear law the closed form in lanes ([`lanes::summary4`], to 1e-12 of
+/// the exact solver) where it answers and the ball does not flatten (z̄_m ≤ z̄_p), SI by F =
+/// F̄ m v0 ω0 and t = τ/ω0; else [`one_by_one`].
+pub fn impacts(
+    balls: &[Option<ImpactParams>; LANES],
+    law: ContactLaw,
+) -> [Option<Result<Outcome, SolveError>>; LANES] {
+    if law != ContactLaw::Linear {
+        return balls
+            .each_ref()
+            .map(|p| p.as_ref().map(|p| one_by_one(p, law)));
+    }
+    // a missing ball is NaN in every field: the lanes give it no answer
+    let field = |f: fn(&ImpactParams) -> f64| {
+        f64x4::new(balls.each_ref().map(|p| p.as_ref().map_or(f64::NAN, f)))
+    };
+    let (m, k_p, c) = (field(|p| p.mass), field(|p| p.k_p), field(|p| p.damping));
+    let (k_r, z_p, v0) = (field(|p| p.k_r), field(|p| p.z_p), field(|p| p.v0));
+    // ImpactParams::omega0 and ::normalized's λ, ζ and z̄_p, operation for operation
+    let w0 = (k_p / m).sqrt();
+    let lambda = k_r / k_p;
+    let zeta = (m * k_p).sqrt() / (f64x4::splat(2.0) * c);
+    let zp_bar = z_p * w0 / v0;
+    let fast = lanes::summary4(lambda.to_array(), zeta.to_array());
+    let pick = |f: fn(&Summary) -> f64| f64x4::new(fast.map(|s| s.as_ref().map_or(f64::NAN, f)));
+    let max_force = (pick(|s| s.max_force) * m * v0 * w0).to_array();
+    let contact_time = (pick(|s| s.contact_time) / w0).to_array();
+    let zp_bar = zp_bar.to_array();
+    std::array::from_fn(|k| {
+        let p = balls[k].as_ref()?;
+        Some(match fast[k] {
+            Some(s) if s.max_force <= zp_bar[k] => Ok(Outcome {
+                cor: s.cor,
+                max_force: max_force[k],
+                contact_time: contact_time[k],
+            }),
+            _ => one_by_one(p, law),
+        })
+    })
+}
+
+/// An impact the lanes do not answer: on the linear law (a flattening ball) the Taylor steps
+/// within their domain (to 1e-12 of the exact solver, tests/taylor.rs); the other laws keep
+/// `run`'s solver, whose answers they must equal to 1e-12 (`other_laws_run_the_solver`), which
+/// the Taylor steps hold only to 1e-9.
+fn one_by_one(p: &ImpactParams, law: ContactLaw) -> Result<Outcome, SolveError> {
+    if law == ContactLaw::Linear
+        && let Some(s) = crate::solver::taylor::summary(&p.normalized(), law)
+    {
+        let w0 = p.omega0();
+        return Ok(Outcome {
+            cor: s.cor,
+            max_force: s.max_force * p.mass * p.v0 * w0,
+            contact_time: s.contact_time / w0,
+        });
+    }
+    simulate(p, law, &SolveOptions::default()).map(|r| Outcome {
+        cor: r.cor,
+        max_force: r.max_force,
+        contact_time: r.contact_time.unwrap_or(f64::NAN),
+    })
+}
