@@ -24,8 +24,6 @@
 mod linear;
 mod poly;
 mod power;
-mod radau;
-mod stiff;
 
 use crate::model::contact::{Contact, ContactLaw};
 use crate::model::params::Normalized;
@@ -51,8 +49,6 @@ pub struct Summary {
 
 /// Most steps of one impact; past them the adaptive solver answers.
 const MAX_STEPS: usize = 160;
-/// Most implicit steps (`stiff`, each a Newton solve, event searches included) of one impact.
-const MAX_STIFF_STEPS: usize = 400;
 /// Largest stiffness 2ζ̂(k + λ̂) · τ̂ the Taylor steps take on (k the contact's stiffness, τ̂
 /// the contact time's scale): an explicit step cannot much exceed the inverse of the fastest
 /// rate, so past it the steps would run out anyway, and the adaptive solver's stiff cascade
@@ -87,11 +83,8 @@ struct Budget {
 
 impl Budget {
     fn new() -> Budget {
-        Budget::with_steps(MAX_STEPS)
-    }
-    fn with_steps(steps: usize) -> Budget {
         Budget {
-            steps,
+            steps: MAX_STEPS,
             taken: 0,
             tau_max: TAU_MAX,
         }
@@ -136,20 +129,10 @@ fn power_law(n: &Normalized, law: ContactLaw) -> Option<Summary> {
     // the contact's stiffness in the Hertz scale: 1.5 √ẑ ≈ 1.6 at the Hertz peak, L² past
     // yield; the Hertz contact time is 2.94 (5/4)^{2/5} ≈ 3.2
     let k = if zp < 1.1 { 1.6f64.max(l * l) } else { 1.6 };
-    // past `STIFF` the implicit steps of `stiff` take every phase
-    let stiff = 2.0 * sys.zeta * (k + sys.lambda) * 3.2 > STIFF;
-    let mut budget = if stiff {
-        Budget::with_steps(MAX_STIFF_STEPS)
-    } else {
-        Budget::new()
-    };
-    let power_run = |br: &power::Branch, p: Point, s_yield: f64, unloading, b: &mut Budget| {
-        if stiff {
-            stiff::power_run(&sys, br, p, s_yield, unloading, b)
-        } else {
-            power::run(&sys, br, p, s_yield, unloading, b)
-        }
-    };
+    if 2.0 * sys.zeta * (k + sys.lambda) * 3.2 > STIFF {
+        return None;
+    }
+    let mut budget = Budget::new();
     let hertz = power::Branch {
         z0: 0.0,
         b: 1.0,
@@ -161,7 +144,7 @@ fn power_law(n: &Normalized, law: ContactLaw) -> Option<Summary> {
         v: 1.0,
         y: 0.0,
     };
-    let first = power_run(&hertz, start, zp.sqrt(), false, &mut budget)?;
+    let first = power::run(&sys, &hertz, start, zp.sqrt(), false, &mut budget)?;
     let (end, z_m, f_m, z_f) = match first.end {
         power::End::Separated(p) => {
             let s = first.s_max;
@@ -174,12 +157,7 @@ fn power_law(n: &Normalized, law: ContactLaw) -> Option<Summary> {
                 z0: zp,
                 f0: f_p,
             };
-            let turned = if stiff {
-                stiff::linear_turn(&sys, &line, p, &mut budget)?
-            } else {
-                linear::run(&sys, &line, p, None, &mut budget)?
-            };
-            let linear::End::Turned(top) = turned else {
+            let linear::End::Turned(top) = linear::run(&sys, &line, p, None, &mut budget)? else {
                 return None;
             };
             let z_m = top.z;
@@ -198,7 +176,7 @@ fn power_law(n: &Normalized, law: ContactLaw) -> Option<Summary> {
             if unload.b.is_nan() || unload.b <= 0.0 {
                 return None;
             }
-            let last = power_run(&unload, top, f64::INFINITY, true, &mut budget)?;
+            let last = power::run(&sys, &unload, top, f64::INFINITY, true, &mut budget)?;
             let power::End::Separated(p) = last.end else {
                 return None;
             };
