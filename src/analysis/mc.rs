@@ -32,20 +32,9 @@ use serde::Serialize;
 use statrs::distribution::{ContinuousCDF, Normal};
 
 pub use super::mc_corr::parse_correlate;
-pub use super::mc_impact::{impact, impacts};
+pub use super::mc_impact::{Outcome, impact, impacts};
 pub use super::mc_spec::{Correlation, Dist, McError, McSpec, Spread, Varied, parse_vary};
 pub use super::mc_stats::{PROBS, Quantiles, Stats};
-
-/// One sample's answer; `contact_time` NaN where the ball stays at the wall.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Outcome {
-    /// The COR e.
-    pub cor: f64,
-    /// Peak force F_m, N.
-    pub max_force: f64,
-    /// Contact time t_f, s (NaN: no rebound).
-    pub contact_time: f64,
-}
 
 /// The samples `start … start + len` of a run, one column a quantity, in index order.
 #[derive(Debug, Clone, PartialEq, Default)]

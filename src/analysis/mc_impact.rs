@@ -9,13 +9,23 @@
 //! same bits as one ball at a time (`group_draws_are_the_crates_generator_sample_by_sample`
 //! compares a group's samples with [`impact`]'s, which pads a ball to four copies).
 
-use super::mc::Outcome;
 use crate::map::fast::Summary;
 use crate::map::fast::lanes::{self, LANES};
 use crate::model::contact::ContactLaw;
 use crate::model::params::ImpactParams;
 use crate::solver::{SolveError, SolveOptions, simulate};
 use wide::f64x4;
+
+/// One sample's answer; `contact_time` NaN where the ball stays at the wall.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Outcome {
+    /// The COR e.
+    pub cor: f64,
+    /// Peak force F_m, N.
+    pub max_force: f64,
+    /// Contact time t_f, s (NaN: no rebound).
+    pub contact_time: f64,
+}
 
 /// One impact as `bouncelab run` solves it (COR, F_m, t_f): [`impacts`]' lane 0 with `p` in
 /// every lane, so that a ball's answer is the same alone as in any group of four.
