@@ -7,7 +7,7 @@
 
 use super::{MAX_PHASES, NormalMotion, ObliqueError, Scaled};
 use crate::solver::exact::PathPoint;
-use crate::solver::roots::brent;
+use crate::solver::roots::{brent, newton_bracketed_from};
 use serde::Serialize;
 
 /// How the contact point moves in a phase.
@@ -41,18 +41,36 @@ impl Phase {
     /// (ũ, ṽ_c) at τ in this phase, `p` the normal motion at τ.
     pub(crate) fn state(&self, s: &Scaled, p: &PathPoint, tau: f64) -> (f64, f64) {
         match self.mode {
-            Mode::Stick => {
-                let w = s.omega_t;
-                let (sn, cs) = (w * (tau - self.start)).sin_cos();
-                (
-                    self.u0 * cs + self.vc0 * sn / w,
-                    -self.u0 * w * sn + self.vc0 * cs,
-                )
-            }
+            Mode::Stick => self.stick_state(s, (s.omega_t * (tau - self.start)).sin_cos()),
             Mode::Slip(sg) => (
                 sg * s.mu * p.force / s.kt,
                 self.vc0 - sg * s.mu * s.g * (self.vel0 - p.velocity),
             ),
+        }
+    }
+
+    /// (ũ, ṽ_c) of a stick from sin and cos of ω̃_t (τ − start).
+    fn stick_state(&self, s: &Scaled, (sn, cs): (f64, f64)) -> (f64, f64) {
+        let w = s.omega_t;
+        (
+            self.u0 * cs + self.vc0 * sn / w,
+            -self.u0 * w * sn + self.vc0 * cs,
+        )
+    }
+
+    /// A stick's switch function and its rate from its state (ũ, ṽ_c).
+    fn stick_switch(s: &Scaled, p: &PathPoint, (u, vc): (f64, f64)) -> (f64, f64) {
+        let rate = s.kt * u.signum() * vc - s.mu * p.rate;
+        (s.kt * u.abs() - s.mu * p.force, rate)
+    }
+
+    /// The switch function and its rate in either mode, F̄'' = `curvature`: a slide's
+    /// G' = μF̄''/k̃ + μgF̄, since sṽ_c' = −μgF̄ (ṽ_c' = g F̃_t, F̃_t = −sμF̄).
+    fn switch_rate(&self, s: &Scaled, p: &PathPoint, curvature: f64, tau: f64) -> (f64, f64) {
+        let (g, rate) = self.switch(s, p, tau);
+        match self.mode {
+            Mode::Stick => (g, rate),
+            Mode::Slip(_) => (g, s.mu * curvature / s.kt + s.mu * s.g * p.force),
         }
     }
 
@@ -61,10 +79,7 @@ impl Phase {
     fn switch(&self, s: &Scaled, p: &PathPoint, tau: f64) -> (f64, f64) {
         let (u, vc) = self.state(s, p, tau);
         match self.mode {
-            Mode::Stick => {
-                let rate = s.kt * u.signum() * vc - s.mu * p.rate;
-                (s.kt * u.abs() - s.mu * p.force, rate)
-            }
+            Mode::Stick => Phase::stick_switch(s, p, (u, vc)),
             Mode::Slip(sg) => (s.mu * p.rate / s.kt - sg * vc, 0.0),
         }
     }
@@ -264,6 +279,23 @@ fn find_switch(
         }
     };
     let tol = 1e-15 * tf.max(1.0);
+    // the crossing in [a, b]: by safeguarded Newton on the series, G' exact (a slide's from
+    // F̄''), else by Brent on the flow
+    let root = |a: f64, ga: f64, b: f64, gb: f64| match path.local(a, b) {
+        Some(l) => newton_bracketed_from(
+            |t| {
+                let (p, curvature) = l.at_with_curvature(t);
+                phase.switch_rate(s, &p, curvature, t)
+            },
+            (a, ga),
+            (b, gb),
+        ),
+        None => brent(|t| g(t).0, a, b, ga, gb, tol),
+    };
+    // while sticking, sin and cos of ω̃_t (τ_j − start) turn by one rotation a grid step
+    let turn = (s.omega_t * grid.h).sin_cos();
+    let mut angle: Option<(f64, f64)> = None;
+    let last = grid.points.len() - 1;
     let mut below: Option<(f64, f64, f64)> = None;
     let start = phase.start;
     let (g0, d0) = phase.switch(s, first, start);
@@ -275,7 +307,21 @@ fn find_switch(
         if b <= start {
             continue;
         }
-        let (gb, db) = phase.switch(s, &grid.points[j], b);
+        let point = &grid.points[j];
+        let (gb, db) = match (phase.mode, angle) {
+            (Mode::Stick, Some((sn, cs))) if j < last => {
+                let (ts, tc) = turn;
+                let next = (sn * tc + cs * ts, cs * tc - sn * ts);
+                angle = Some(next);
+                Phase::stick_switch(s, point, phase.stick_state(s, next))
+            }
+            (Mode::Stick, _) => {
+                let now = (s.omega_t * (b - start)).sin_cos();
+                angle = Some(now);
+                Phase::stick_switch(s, point, phase.stick_state(s, now))
+            }
+            (Mode::Slip(_), _) => phase.switch(s, point, b),
+        };
         if gb > 0.0 {
             let bracket = match below {
                 Some((a, ga, _)) => Some((a, ga)),
@@ -285,8 +331,7 @@ fn find_switch(
             // two modes agree there to second order (k̃u on the cap, ṽ_c = μF̄'/k̃), and the
             // phase goes on until its function has turned negative and back
             if let Some((a, ga)) = bracket {
-                let g = on(a, b);
-                return Some(brent(|t| g(t).0, a, b, ga, gb, tol));
+                return Some(root(a, ga, b, gb));
             }
         }
         if let Some((a, ga, da)) = below
@@ -299,7 +344,7 @@ fn find_switch(
             let tm = brent(|t| g(t).1, a, b, da, db, tol);
             let (gm, _) = g(tm);
             if gm > 0.0 {
-                return Some(brent(|t| g(t).0, a, tm, ga, gm, tol));
+                return Some(root(a, ga, tm, gm));
             }
         }
         if gb < 0.0 {

@@ -17,7 +17,8 @@ const MAX_TERMS: usize = 40;
 /// one grid step: `None` beyond, and the propagator reads it instead).
 fn series_exp(m: &Matrix3<f64>, h: f64) -> Option<Matrix3<f64>> {
     let mh = m * h;
-    if !(norm_inf(&mh) <= 1.0) {
+    // NaN-aware: a NaN norm takes the propagator too
+    if norm_inf(&mh).is_nan() || norm_inf(&mh) > 1.0 {
         return None;
     }
     let mut term = Matrix3::identity();
@@ -57,20 +58,30 @@ pub struct LocalFlow {
 impl LocalFlow {
     /// The normal motion at τ (in [τ_a, τ_a + δ_max]).
     pub fn at(&self, tau: f64) -> PathPoint {
+        self.at_with_curvature(tau).0
+    }
+
+    /// The normal motion at τ and F̄'' there (the series differentiated twice).
+    pub fn at_with_curvature(&self, tau: f64) -> (PathPoint, f64) {
         let d = tau - self.tau0;
-        let (mut z, mut dz, mut v) = (0.0, 0.0, 0.0);
+        let (mut z, mut dz, mut d2z, mut v) = (0.0, 0.0, 0.0, 0.0);
         for n in (0..self.terms).rev() {
-            z = z * d + self.z[n];
+            let (c, nf) = (self.z[n], n as f64);
+            z = z * d + c;
             v = v * d + self.v[n];
             if n > 0 {
-                dz = dz * d + n as f64 * self.z[n];
+                dz = dz * d + nf * c;
+            }
+            if n > 1 {
+                d2z = d2z * d + nf * (nf - 1.0) * c;
             }
         }
-        PathPoint {
+        let p = PathPoint {
             force: (self.k * z).max(0.0),
             rate: self.k * dz,
             velocity: v,
-        }
+        };
+        (p, self.k * d2z)
     }
 }
 
@@ -191,7 +202,8 @@ impl NormalPath {
         };
         let m = p.matrix();
         let len = b - a;
-        if !(norm_inf(m) * len <= 1.0) {
+        let reach = norm_inf(m) * len;
+        if reach.is_nan() || reach > 1.0 {
             return None;
         }
         let (w, _) = p.eval(a - seg.start - t0);
