@@ -1,7 +1,7 @@
 //! Speed of one oblique impact (median recorded in BENCHMARKS.md), beside the linear normal
 //! impact timed in the same run. Run: `cargo bench --bench oblique`.
 
-use bouncelab::oblique::{Oblique, mindlin_ratio, solve};
+use bouncelab::oblique::{Oblique, mindlin_ratio, solve, solve_law};
 use bouncelab::solver::{SolveOptions, simulate};
 use bouncelab::{Ball, ContactLaw};
 use divan::black_box;
@@ -30,6 +30,35 @@ fn normal_impact(b: divan::Bencher) {
     let opts = SolveOptions::default();
     b.bench(|| {
         simulate(black_box(&p), ContactLaw::Linear, &opts)
+            .unwrap()
+            .cor
+    });
+}
+
+/// The same oblique impact on the Hertz law: the normal motion is the adaptive solver's run
+/// with its flow kept (docs/oblique.md §2), read point by point (no power series there).
+#[divan::bench]
+fn oblique_impact_hertz(b: divan::Bencher) {
+    let ball = Ball::from_preset("tennis").unwrap();
+    let p = ball.params;
+    let k_t = mindlin_ratio(0.5) * p.k_p;
+    let o = Oblique::new(16.0, 300.0, 0.6, k_t, ball.inertia_factor(), ball.radius()).unwrap();
+    b.bench(|| {
+        solve_law(black_box(&p), ContactLaw::Hertz, 25.0, black_box(&o), 0)
+            .unwrap()
+            .v_out
+    });
+}
+
+/// The normal Hertz impact alone at the same normal speed, summary only.
+#[divan::bench]
+fn normal_impact_hertz(b: divan::Bencher) {
+    let ball = Ball::from_preset("tennis").unwrap();
+    let mut p = ball.params;
+    p.v0 = 25.0 * 16f64.to_radians().sin();
+    let opts = SolveOptions::default();
+    b.bench(|| {
+        simulate(black_box(&p), ContactLaw::Hertz, &opts)
             .unwrap()
             .cor
     });

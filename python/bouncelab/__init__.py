@@ -29,6 +29,7 @@ from ._native import (
     fit,
     fit_cor_table,
     fit_drops,
+    fit_oblique,
     fit_trace,
     impacts,
     monte_carlo,
@@ -51,6 +52,7 @@ drop = _guard(drop)
 fit = _guard(fit)
 fit_cor_table = _guard(fit_cor_table)
 fit_drops = _guard(fit_drops)
+fit_oblique = _guard(fit_oblique)
 fit_trace = _guard(fit_trace)
 monte_carlo = _guard(monte_carlo)
 presets = _guard(presets)
@@ -71,6 +73,7 @@ __all__ = [
     "fit",
     "fit_cor_table",
     "fit_drops",
+    "fit_oblique",
     "fit_trace",
     "impacts",
     "monte_carlo",

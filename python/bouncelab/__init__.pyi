@@ -235,6 +235,58 @@ def fit_drops(
     """k_r, z_p fitted to drop tests (m), in vacuum or with quadratic drag, as ``bouncelab fit
     --drop-height H --rebound-height R …``; ``drops`` adds each drop's v0 and COR."""
 
+class ObliqueEstimate(TypedDict):
+    value: float
+    std_error: float
+    ci95: list[float]
+
+class ObliqueFit(TypedDict):
+    """The keys of ``bouncelab fit --oblique FILE --format json`` (SI; ``file`` None for
+    arrays): μ, K_t (and κ with spins) fitted, their intervals and the verdict."""
+    preset: Optional[str]
+    origin: str
+    parameters: str
+    law: str
+    data: str
+    file: Optional[str]
+    free: list[str]
+    friction: float
+    tangential_stiffness: float
+    inertia_factor: float
+    radius: float
+    rms_vx: float
+    rms_spin: Optional[float]
+    rms_vy: float
+    points: int
+    converged: bool
+    iterations: int
+    condition_number: float
+    fitted: dict[str, ObliqueEstimate]
+    correlation: dict[str, dict[str, float]]
+    warnings: list[str]
+    identified: bool
+    not_pinned: list[str]
+    on_bound: list[str]
+
+def fit_oblique(
+    file: Optional[Union[str, os.PathLike[str]]] = None,
+    *,
+    v0: Optional[Floats] = None,
+    angle_deg: Optional[Floats] = None,
+    spin_in: Optional[Floats] = None,
+    vx_out: Optional[Floats] = None,
+    vy_out: Optional[Floats] = None,
+    spin_out: Optional[Floats] = None,
+    preset: str = "superball",
+    law: Optional[Law] = None,
+    params: Optional[ParamSet] = None,
+) -> ObliqueFit:
+    """μ and K_t (and κ when ``spin_out`` is given) fitted to oblique bounces, as ``bouncelab
+    fit --oblique FILE``: a CSV file ``v0,angle_deg,spin_in,vx_out,vy_out[,spin_out]`` or the
+    same columns as arrays (m/s, degrees, rad/s). Bad rows raise ``ValueError`` naming
+    FILE:LINE:COLUMN (arrays: the row and column); check ``identified`` as the command line's
+    exit code does."""
+
 class Drop(TypedDict):
     height: float
     drag: bool

@@ -31,7 +31,7 @@ fn os_error(path: &Path, msg: impl std::fmt::Display) -> PyErr {
 
 /// A data file's text: a regular file of at most [`MAX_DATA_BYTES`], UTF-8 (an error names
 /// the line and column of the first byte that is not), as `measured::file::read_text`.
-fn read_text(path: &Path) -> PyResult<String> {
+pub(crate) fn read_text(path: &Path) -> PyResult<String> {
     let meta = std::fs::metadata(path).map_err(|e| os_error(path, describe(&e)))?;
     if !meta.is_file() {
         return Err(os_error(path, "is not a regular file"));

@@ -26,6 +26,7 @@ mod impact;
 mod interrupt;
 mod mc;
 mod oblique;
+mod oblique_fit;
 
 use impact::{Impact, impact, interval_columns};
 
@@ -436,6 +437,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(fits::fit_trace, m)?)?;
     m.add_function(wrap_pyfunction!(fits::fit_cor_table, m)?)?;
     m.add_function(wrap_pyfunction!(fits::fit_drops, m)?)?;
+    m.add_function(wrap_pyfunction!(oblique_fit::fit_oblique, m)?)?;
     m.add_function(wrap_pyfunction!(mc::monte_carlo, m)?)?;
     m.add_function(wrap_pyfunction!(arrays::impacts, m)?)?;
     m.add_function(wrap_pyfunction!(batch::batch, m)?)?;

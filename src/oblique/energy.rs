@@ -21,13 +21,14 @@ pub(super) struct Answer<'a> {
 /// to τ1 the surface takes −∫F̃_t (ṽ_c − ũ') dτ, with F̃_t = −sμF̄, ũ = sμF̄/k̃ and
 /// ṽ_c = ṽ_c0 − sμg ΔJ (ΔJ the normal impulse since τ0): in closed form
 /// sμ ṽ_c0 ΔJ − μ²g ΔJ²/2 − μ²(F̄1² − F̄0²)/(2k̃).
-pub(super) fn friction_work(path: &impl NormalMotion, s: &Scaled, run: &Run) -> f64 {
+pub(super) fn friction_work(s: &Scaled, run: &Run) -> f64 {
     let mu = s.mu;
     run.phases
         .iter()
-        .filter_map(|ph| match ph.mode {
+        .enumerate()
+        .filter_map(|(i, ph)| match ph.mode {
             Mode::Slip(sg) => {
-                let (p0, p1) = (path.at(ph.start), path.at(ph.end));
+                let (p0, p1) = run.ends(i);
                 let dj = ph.vel0 - p1.velocity;
                 let spring = mu * mu * (p1.force.powi(2) - p0.force.powi(2)) / (2.0 * s.kt);
                 Some(sg * mu * ph.vc0 * dj - mu * mu * s.g * dj * dj / 2.0 - spring)
@@ -35,6 +36,18 @@ pub(super) fn friction_work(path: &impl NormalMotion, s: &Scaled, run: &Run) -> 
             Mode::Stick => None,
         })
         .sum()
+}
+
+/// What the normal motion lost (J): the audited dashpot, contact and recoil-spring terms when
+/// the normal run was audited (the adaptive solver's, any law but the linear one), else — the
+/// linear law's exact flow — the normal kinetic energy lost, ½ m (v_y² − v_y,out²), which those
+/// three terms sum to (docs/model.md §8; `the_normal_losses_are_the_audited_ones` checks them
+/// against `run`'s audit to 1e-12).
+pub(super) fn normal_losses(normal: &ImpactResponse, m: f64, vy: f64) -> f64 {
+    match &normal.energy {
+        Some(b) => b.dashpot + b.contact + b.spring,
+        None => 0.5 * m * vy * vy * (1.0 - normal.cor * normal.cor),
+    }
 }
 
 impl Answer<'_> {
@@ -52,7 +65,7 @@ impl Answer<'_> {
         let (m, r, vy) = (p.mass, o.radius, self.vy);
         let tf = path.end();
         let last = run.phases.last().expect("a run has a phase");
-        let (u_end, vc_end) = last.state(s, &path.at(tf), tf);
+        let (u_end, vc_end) = last.state(s, &run.end, tf);
         let dvc = vc_end - run.vc_in;
         let vx_out = self.vx + vy * s.kappa / (1.0 + s.kappa) * dvc;
         let spin_out = o.spin - vy * dvc / ((1.0 + s.kappa) * r);
@@ -66,14 +79,14 @@ impl Answer<'_> {
             .sum();
         let inertia = s.kappa * m * r * r;
         let unit = m * vy * vy;
-        let budget = normal.energy.expect("the normal impact is audited");
+        let normal_dissipation = normal_losses(&normal, m, vy);
         let mut energy = ObliqueEnergy {
             translational_in: 0.5 * m * self.v * self.v,
             rotational_in: 0.5 * inertia * o.spin * o.spin,
             translational_out: 0.5 * m * (vx_out * vx_out + vy_out * vy_out),
             rotational_out: 0.5 * inertia * spin_out * spin_out,
-            normal_dissipation: budget.dashpot + budget.contact + budget.spring,
-            friction_dissipation: friction_work(path, s, &run) * unit,
+            normal_dissipation,
+            friction_dissipation: friction_work(s, &run) * unit,
             tangential_spring: 0.5 * s.kt * u_end * u_end * unit,
             residual: 0.0,
         };
@@ -86,7 +99,8 @@ impl Answer<'_> {
         let max_friction = run
             .phases
             .iter()
-            .map(|ph| ph.max_friction(s, path, &kinks))
+            .enumerate()
+            .map(|(i, ph)| ph.max_friction(s, path, &kinks, run.ends(i)))
             .fold(0.0, f64::max);
         let history = (samples > 0).then(|| self.history(path, &run, samples));
         ObliqueResponse {

@@ -21,7 +21,7 @@ mod tests;
 
 use crate::model::contact::ContactLaw;
 use crate::model::params::ImpactParams;
-use crate::solver::exact::{NormalPath, PathPoint};
+use crate::solver::exact::{LocalFlow, NormalPath, PathPoint};
 use crate::solver::{Flow, ImpactResponse, SolveError, SolveOptions, simulate_flow};
 pub use frictions::solve_frictions;
 pub use normal::NormalAt;
@@ -312,6 +312,24 @@ pub trait NormalMotion {
     fn end(&self) -> f64;
     /// Where F̄' may jump (phase ends), in order.
     fn kinks(&self) -> Vec<f64>;
+    /// The motion at τ_j = j h for j = 0, 1, … while j h < τ_f, then at τ_f: the tangential
+    /// search's grid (`tangential::Grid`). Read point by point unless the flow knows better.
+    fn grid(&self, h: f64) -> Vec<PathPoint> {
+        grid_by_points(self, h)
+    }
+    /// The motion on [a, b] as a cheaper series, when the flow has one (`None`: read `at`).
+    fn local(&self, _a: f64, _b: f64) -> Option<LocalFlow> {
+        None
+    }
+}
+
+/// [`NormalMotion::grid`] read point by point.
+fn grid_by_points<M: NormalMotion + ?Sized>(m: &M, h: f64) -> Vec<PathPoint> {
+    let tf = m.end();
+    let n = (tf / h).ceil().max(1.0) as usize;
+    (0..=n)
+        .map(|j| m.at(if j == n { tf } else { j as f64 * h }))
+        .collect()
 }
 
 impl NormalMotion for NormalPath {
@@ -324,6 +342,12 @@ impl NormalMotion for NormalPath {
     fn kinks(&self) -> Vec<f64> {
         self.boundaries().collect()
     }
+    fn grid(&self, h: f64) -> Vec<PathPoint> {
+        NormalPath::grid(self, h)
+    }
+    fn local(&self, a: f64, b: f64) -> Option<LocalFlow> {
+        NormalPath::local(self, a, b)
+    }
 }
 
 impl NormalMotion for Flow {
@@ -335,6 +359,18 @@ impl NormalMotion for Flow {
     }
     fn kinks(&self) -> Vec<f64> {
         self.boundaries()
+    }
+    fn grid(&self, h: f64) -> Vec<PathPoint> {
+        match self {
+            Flow::Exact(p) => p.grid(h),
+            Flow::Numeric(_) => grid_by_points(self, h),
+        }
+    }
+    fn local(&self, a: f64, b: f64) -> Option<LocalFlow> {
+        match self {
+            Flow::Exact(p) => p.local(a, b),
+            Flow::Numeric(_) => None,
+        }
     }
 }
 

@@ -7,7 +7,7 @@
 
 use super::{MAX_PHASES, NormalMotion, ObliqueError, Scaled};
 use crate::solver::exact::PathPoint;
-use crate::solver::roots::brent;
+use crate::solver::roots::{brent, newton_bracketed_from};
 use serde::Serialize;
 
 /// How the contact point moves in a phase.
@@ -41,18 +41,36 @@ impl Phase {
     /// (ũ, ṽ_c) at τ in this phase, `p` the normal motion at τ.
     pub(crate) fn state(&self, s: &Scaled, p: &PathPoint, tau: f64) -> (f64, f64) {
         match self.mode {
-            Mode::Stick => {
-                let w = s.omega_t;
-                let (sn, cs) = (w * (tau - self.start)).sin_cos();
-                (
-                    self.u0 * cs + self.vc0 * sn / w,
-                    -self.u0 * w * sn + self.vc0 * cs,
-                )
-            }
+            Mode::Stick => self.stick_state(s, (s.omega_t * (tau - self.start)).sin_cos()),
             Mode::Slip(sg) => (
                 sg * s.mu * p.force / s.kt,
                 self.vc0 - sg * s.mu * s.g * (self.vel0 - p.velocity),
             ),
+        }
+    }
+
+    /// (ũ, ṽ_c) of a stick from sin and cos of ω̃_t (τ − start).
+    fn stick_state(&self, s: &Scaled, (sn, cs): (f64, f64)) -> (f64, f64) {
+        let w = s.omega_t;
+        (
+            self.u0 * cs + self.vc0 * sn / w,
+            -self.u0 * w * sn + self.vc0 * cs,
+        )
+    }
+
+    /// A stick's switch function and its rate from its state (ũ, ṽ_c).
+    fn stick_switch(s: &Scaled, p: &PathPoint, (u, vc): (f64, f64)) -> (f64, f64) {
+        let rate = s.kt * u.signum() * vc - s.mu * p.rate;
+        (s.kt * u.abs() - s.mu * p.force, rate)
+    }
+
+    /// The switch function and its rate in either mode, F̄'' = `curvature`: a slide's
+    /// G' = μF̄''/k̃ + μgF̄, since sṽ_c' = −μgF̄ (ṽ_c' = g F̃_t, F̃_t = −sμF̄).
+    fn switch_rate(&self, s: &Scaled, p: &PathPoint, curvature: f64, tau: f64) -> (f64, f64) {
+        let (g, rate) = self.switch(s, p, tau);
+        match self.mode {
+            Mode::Stick => (g, rate),
+            Mode::Slip(_) => (g, s.mu * curvature / s.kt + s.mu * s.g * p.force),
         }
     }
 
@@ -61,10 +79,7 @@ impl Phase {
     fn switch(&self, s: &Scaled, p: &PathPoint, tau: f64) -> (f64, f64) {
         let (u, vc) = self.state(s, p, tau);
         match self.mode {
-            Mode::Stick => {
-                let rate = s.kt * u.signum() * vc - s.mu * p.rate;
-                (s.kt * u.abs() - s.mu * p.force, rate)
-            }
+            Mode::Stick => Phase::stick_switch(s, p, (u, vc)),
             Mode::Slip(sg) => (s.mu * p.rate / s.kt - sg * vc, 0.0),
         }
     }
@@ -73,7 +88,14 @@ impl Phase {
     /// amplitude where a crest falls inside, else an end); while sliding μF̄, and F̄ is
     /// monotone between the normal phase ends `kinks` (its peaks are unloads), so its largest
     /// value is at an end of this phase or at a kink inside it.
-    pub(crate) fn max_friction(&self, s: &Scaled, path: &impl NormalMotion, kinks: &[f64]) -> f64 {
+    /// `ends` is the normal motion at the phase's start and end.
+    pub(crate) fn max_friction(
+        &self,
+        s: &Scaled,
+        path: &impl NormalMotion,
+        kinks: &[f64],
+        ends: (PathPoint, PathPoint),
+    ) -> f64 {
         match self.mode {
             Mode::Stick => {
                 let w = s.omega_t;
@@ -89,21 +111,29 @@ impl Phase {
             }
             Mode::Slip(_) => {
                 let inside = kinks.iter().filter(|&&k| k > self.start && k < self.end);
-                let force = [self.start, self.end]
-                    .iter()
-                    .chain(inside)
+                let force = inside
                     .map(|&t| path.at(t).force)
-                    .fold(0.0, f64::max);
+                    .fold(ends.0.force.max(ends.1.force), f64::max);
                 s.mu * force
             }
         }
     }
 }
 
-/// The phases of one contact.
+/// The phases of one contact, with the normal motion where each starts and at τ_f (the
+/// energy and the peak friction read them again).
 pub(crate) struct Run {
     pub phases: Vec<Phase>,
+    pub starts: Vec<PathPoint>,
+    pub end: PathPoint,
     pub vc_in: f64,
+}
+
+impl Run {
+    /// The normal motion at the start and at the end of phase `i`.
+    pub(crate) fn ends(&self, i: usize) -> (PathPoint, PathPoint) {
+        (self.starts[i], *self.starts.get(i + 1).unwrap_or(&self.end))
+    }
 }
 
 /// The search step: a fifth of the sticking oscillation's radian, and at least 32 steps over
@@ -113,11 +143,58 @@ fn step(s: &Scaled, tf: f64) -> f64 {
     (0.2 / s.omega_t).min(tf / 32.0)
 }
 
-/// The tangential motion over the whole contact, from ṽ_c = `vc_in` at first touch.
-pub(crate) fn run(path: &impl NormalMotion, s: &Scaled, vc_in: f64) -> Result<Run, ObliqueError> {
+/// The search grid: τ_j = j h up to τ_f (the last point τ_f itself) and the normal motion there,
+/// read once for the whole contact (`NormalMotion::grid`): every phase searches on the same
+/// points, where it used to read the flow afresh from its own start.
+pub(crate) struct Grid {
+    h: f64,
+    points: Vec<PathPoint>,
+}
+
+impl Grid {
+    pub(crate) fn new(path: &impl NormalMotion, s: &Scaled) -> Grid {
+        let h = Grid::step_of(s, path.end());
+        Grid {
+            h,
+            points: path.grid(h),
+        }
+    }
+
+    /// The step for the scaled problem `s` over a contact of τ_f.
+    pub(crate) fn step_of(s: &Scaled, tf: f64) -> f64 {
+        step(s, tf)
+    }
+
+    /// The step.
+    pub(crate) fn h(&self) -> f64 {
+        self.h
+    }
+
+    /// τ of point j.
+    fn tau(&self, j: usize, tf: f64) -> f64 {
+        if j + 1 == self.points.len() {
+            tf
+        } else {
+            j as f64 * self.h
+        }
+    }
+
+    /// The first point after τ.
+    fn after(&self, tau: f64) -> usize {
+        ((tau / self.h).floor() as usize + 1).min(self.points.len() - 1)
+    }
+}
+
+/// The tangential motion over the whole contact, from ṽ_c = `vc_in` at first touch, searched
+/// on `grid` (the normal motion read once, `Grid::new`).
+pub(crate) fn run(
+    path: &impl NormalMotion,
+    grid: &Grid,
+    s: &Scaled,
+    vc_in: f64,
+) -> Result<Run, ObliqueError> {
     let tf = path.end();
-    let h = step(s, tf);
-    let p0 = path.at(0.0);
+    let p0 = grid.points[0];
     // at first contact F̄ = 0: the point sticks if the cap grows at least as fast as the spring
     let mode = if s.kt * vc_in.abs() <= s.mu * p0.rate {
         Mode::Stick
@@ -132,23 +209,29 @@ pub(crate) fn run(path: &impl NormalMotion, s: &Scaled, vc_in: f64) -> Result<Ru
         vc0: vc_in,
         vel0: p0.velocity,
     };
+    let mut start_point = p0;
     let mut run = Run {
         phases: Vec::new(),
+        starts: Vec::new(),
+        end: *grid.points.last().expect("a grid has τ_f"),
         vc_in,
     };
     loop {
         if run.phases.len() >= MAX_PHASES {
             return Err(ObliqueError::Phases);
         }
-        let switch = find_switch(path, s, &phase, h, tf);
+        let switch = find_switch(path, grid, s, &phase, &start_point, tf);
         let Some(t) = switch.filter(|&t| t < tf) else {
             phase.end = tf;
             run.phases.push(phase);
+            run.starts.push(start_point);
             return Ok(run);
         };
         phase.end = t;
         run.phases.push(phase);
+        run.starts.push(start_point);
         let p = path.at(t);
+        start_point = p;
         let (u, vc) = phase.state(s, &p, t);
         phase = match phase.mode {
             Mode::Stick => {
@@ -175,31 +258,70 @@ pub(crate) fn run(path: &impl NormalMotion, s: &Scaled, vc_in: f64) -> Result<Ru
 }
 
 /// Where `phase` ends before τ_f, if it does: the first τ > start where its switch function
-/// turns positive after being negative. At its start the function is 0 (a switch just
-/// happened) or below; the crossing is bracketed from the last point where it was negative.
+/// turns positive after being negative. At its start (normal motion `first` there) the
+/// function is 0 (a switch just happened) or below; the crossing is bracketed from the last
+/// grid point where it was negative, and found on the exact flow.
 fn find_switch(
     path: &impl NormalMotion,
+    grid: &Grid,
     s: &Scaled,
     phase: &Phase,
-    h: f64,
+    first: &PathPoint,
     tf: f64,
 ) -> Option<f64> {
     let g = |t: f64| phase.switch(s, &path.at(t), t);
+    // on [a, b] the flow's series when it has one (a few dozen multiply-adds a reading)
+    let on = |a: f64, b: f64| {
+        let local = path.local(a, b);
+        move |t: f64| match &local {
+            Some(l) => phase.switch(s, &l.at(t), t),
+            None => phase.switch(s, &path.at(t), t),
+        }
+    };
     let tol = 1e-15 * tf.max(1.0);
+    // the crossing in [a, b]: by safeguarded Newton on the series, G' exact (a slide's from
+    // F̄''), else by Brent on the flow
+    let root = |a: f64, ga: f64, b: f64, gb: f64| match path.local(a, b) {
+        Some(l) => newton_bracketed_from(
+            |t| {
+                let (p, curvature) = l.at_with_curvature(t);
+                phase.switch_rate(s, &p, curvature, t)
+            },
+            (a, ga),
+            (b, gb),
+        ),
+        None => brent(|t| g(t).0, a, b, ga, gb, tol),
+    };
+    // while sticking, sin and cos of ω̃_t (τ_j − start) turn by one rotation a grid step
+    let turn = (s.omega_t * grid.h).sin_cos();
+    let mut angle: Option<(f64, f64)> = None;
+    let last = grid.points.len() - 1;
     let mut below: Option<(f64, f64, f64)> = None;
     let start = phase.start;
-    let (g0, d0) = g(start);
+    let (g0, d0) = phase.switch(s, first, start);
     if g0 < 0.0 {
         below = Some((start, g0, d0));
     }
-    let mut k = 1.0;
-    loop {
-        let b = (start + k * h).min(tf);
-        k += 1.0;
+    for j in grid.after(start)..grid.points.len() {
+        let b = grid.tau(j, tf);
         if b <= start {
-            return None;
+            continue;
         }
-        let (gb, db) = g(b);
+        let point = &grid.points[j];
+        let (gb, db) = match (phase.mode, angle) {
+            (Mode::Stick, Some((sn, cs))) if j < last => {
+                let (ts, tc) = turn;
+                let next = (sn * tc + cs * ts, cs * tc - sn * ts);
+                angle = Some(next);
+                Phase::stick_switch(s, point, phase.stick_state(s, next))
+            }
+            (Mode::Stick, _) => {
+                let now = (s.omega_t * (b - start)).sin_cos();
+                angle = Some(now);
+                Phase::stick_switch(s, point, phase.stick_state(s, now))
+            }
+            (Mode::Slip(_), _) => phase.switch(s, point, b),
+        };
         if gb > 0.0 {
             let bracket = match below {
                 Some((a, ga, _)) => Some((a, ga)),
@@ -209,7 +331,7 @@ fn find_switch(
             // two modes agree there to second order (k̃u on the cap, ṽ_c = μF̄'/k̃), and the
             // phase goes on until its function has turned negative and back
             if let Some((a, ga)) = bracket {
-                return Some(brent(|t| g(t).0, a, b, ga, gb, tol));
+                return Some(root(a, ga, b, gb));
             }
         }
         if let Some((a, ga, da)) = below
@@ -218,19 +340,18 @@ fn find_switch(
             && matches!(phase.mode, Mode::Stick)
         {
             // a peak of k̃|u| − μF̄ between two points below the cap
+            let g = on(a, b);
             let tm = brent(|t| g(t).1, a, b, da, db, tol);
             let (gm, _) = g(tm);
             if gm > 0.0 {
-                return Some(brent(|t| g(t).0, a, tm, ga, gm, tol));
+                return Some(root(a, ga, tm, gm));
             }
         }
         if gb < 0.0 {
             below = Some((b, gb, db));
         }
-        if b >= tf {
-            return None;
-        }
     }
+    None
 }
 
 /// A point in (start, b) where the switch function is negative, when the first step already

@@ -85,3 +85,29 @@ fn the_adaptive_flow_drives_the_linear_law_as_the_exact_one_does() {
     }
     eprintln!("adaptive against exact flow: worst {worst:e}");
 }
+
+/// On the exact flow the normal losses are the normal kinetic energy lost (`energy::
+/// normal_losses`), not the dashpot's quadrature: they must be what `run`'s audit books — the
+/// dashpot, the contact and the recoil spring — to 1e-12 of the oblique impact's input.
+#[test]
+fn the_normal_losses_are_the_audited_ones() {
+    use super::{Oblique, solve};
+    use crate::model::contact::ContactLaw;
+    use crate::model::params::ImpactParams;
+    use crate::solver::{SolveOptions, simulate};
+    let ball = crate::Ball::from_preset("tennis").unwrap();
+    let p = ball.params;
+    let kt = mindlin_ratio(0.5) * p.k_p;
+    for (angle, spin, mu) in [(5.0, 0.0, 0.3), (16.0, 300.0, 0.6), (45.0, -400.0, 2.0)] {
+        let o = Oblique::new(angle, spin, mu, kt, 0.61, 0.0335).unwrap();
+        let r = solve(&p, 25.0, &o, 0).unwrap();
+        let normal = ImpactParams { v0: r.vy_in, ..p };
+        let opts = SolveOptions::default().with_energy();
+        let audit = simulate(&normal, ContactLaw::Linear, &opts).unwrap();
+        let b = audit.energy.unwrap();
+        let input = r.energy.translational_in + r.energy.rotational_in;
+        let booked = b.dashpot + b.contact + b.spring;
+        let miss = (r.energy.normal_dissipation - booked).abs() / input;
+        assert!(miss < 1e-12, "{angle}° {spin} {mu}: {miss:e}");
+    }
+}

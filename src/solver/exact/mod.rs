@@ -22,7 +22,7 @@ mod energy;
 mod modes;
 mod path;
 mod search;
-pub use path::{NormalPath, PathPoint};
+pub use path::{LocalFlow, NormalPath, PathPoint};
 
 /// More phase switches than this would mean a reload cycle that never settles.
 pub(super) const MAX_PHASES: usize = 64;
