@@ -2,6 +2,7 @@
 //! Drawing reads the state and never changes it: each panel gets the few things it shows,
 //! each chart its figure, built from the state's [`crate::figure::explorer::Scene`].
 
+use crate::tui::views::oblique::param::ObliqueParam;
 use super::app::{App, Overlay, View};
 use super::param::Param;
 use super::theme::Theme;
@@ -325,6 +326,10 @@ impl Widget for &App {
                 view: self.oblique_view(),
                 ball: &self.preset().name,
                 v0: self.setting().params.v0,
+                tangential: [
+                    self.oblique_value(ObliqueParam::TangentialStiffness),
+                    self.oblique_value(ObliqueParam::InertiaFactor),
+                ],
                 theme,
             }
             .render(body, buf);

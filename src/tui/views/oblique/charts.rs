@@ -4,7 +4,8 @@
 //! their angles. Each legend names its line's look, so it reads without colour (NO_COLOR).
 
 use crate::oblique::{ObliqueHistory, ObliqueResponse};
-use crate::text::{short, sig};
+use crate::text::short;
+use crate::tui::format::value;
 use crate::tui::theme::Theme;
 use ratatui::buffer::Buffer;
 use ratatui::layout::{Constraint, Rect};
@@ -59,7 +60,7 @@ fn labels(b: [f64; 2], width: u16) -> Vec<String> {
     } else {
         &[b[0], b[1]]
     };
-    at.iter().map(|&v| sig(v, 3)).collect()
+    at.iter().map(|&v| value(v)).collect()
 }
 
 /// Round ticks over `b`, as the other charts': a step of 1, 1.5, 2,
@@ -163,7 +164,7 @@ pub fn render_forces(r: &ObliqueResponse, theme: Theme, area: Rect, buf: &mut Bu
         set(Some("┄ F_t".into()), &ftp, second, false),
     ];
     for (i, (t, pts)) in rev.iter().zip(&ticks).enumerate() {
-        let name = (i == 0).then(|| format!("┊ reversal {} ms", sig(t * 1e3, 3)));
+        let name = (i == 0).then(|| format!("┊ reversal {} ms", value(t * 1e3)));
         sets.push(set(name, pts, theme.measured(), false));
     }
     // the names in the title too: a small chart hides its legend
@@ -232,8 +233,8 @@ pub fn render_paths(r: &ObliqueResponse, theme: Theme, area: Rect, buf: &mut Buf
     let (live, second) = (theme.current(), theme.secondary());
     let ground = theme.c(Color::Gray);
     let (lab_in, lab_out) = (
-        format!("in {}°", sig(r.angle_in_deg, 3)),
-        format!("out {}°", sig(r.angle_out_deg, 3)),
+        format!("in {}°", value(r.angle_in_deg)),
+        format!("out {}°", value(r.angle_out_deg)),
     );
     let (t_in, t_out) = (theme.fg(live), theme.fg(second));
     Canvas::default()
