@@ -2,7 +2,6 @@
 //! Drawing reads the state and never changes it: each panel gets the few things it shows,
 //! each chart its figure, built from the state's [`crate::figure::explorer::Scene`].
 
-use crate::tui::views::oblique::param::ObliqueParam;
 use super::app::{App, Overlay, View};
 use super::param::Param;
 use super::theme::Theme;
@@ -20,6 +19,7 @@ use crate::figure::{Figure, explorer};
 use crate::tui::views::fit::widget::FitView;
 use crate::tui::views::map::widget::MapPanel;
 use crate::tui::views::models::widget::ModelsTable;
+use crate::tui::views::oblique::param::ObliqueParam;
 use ratatui::buffer::Buffer;
 use ratatui::layout::{Constraint, Layout, Rect};
 use ratatui::text::Line;

@@ -62,7 +62,8 @@ impl ObliqueState {
     /// Set `view` from the file, each value checked by the library's range (the one
     /// `bouncelab oblique` applies); or why not (`oblique: …`).
     pub fn restore(&self, view: &mut ObliqueView) -> Result<(), String> {
-        let checked = |p: ObliqueParam, v: f64| p.library_check(v).map_err(|e| format!("oblique: {e}"));
+        let checked =
+            |p: ObliqueParam, v: f64| p.library_check(v).map_err(|e| format!("oblique: {e}"));
         let optional = |p: ObliqueParam, v: Option<f64>| v.map(|v| checked(p, v)).transpose();
         let values = ObliqueValues {
             angle: checked(ObliqueParam::Angle, self.angle)?,

@@ -146,9 +146,7 @@ impl ObliquePanel<'_> {
 
 /// The outgoing motion and the contact's figures.
 fn result_lines(r: &ObliqueResponse, theme: Theme) -> Vec<Line<'static>> {
-    let ex = r
-        .cor_tangential
-        .map_or("— (rolls in)".into(), value);
+    let ex = r.cor_tangential.map_or("— (rolls in)".into(), value);
     let grip = if r.slid_throughout {
         "slid throughout".to_string()
     } else {
