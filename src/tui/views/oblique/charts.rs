@@ -135,6 +135,15 @@ fn set<'a>(name: Option<String>, data: &'a [(f64, f64)], style: Style, line: boo
     }
 }
 
+/// Every k-th of `pts`, about one a third of the braille dots across a chart `width` cells
+/// wide: drawn as points they read dotted (`┄`), apart from a solid line also without colour
+/// (NO_COLOR; issue 29 item 12: every series its own look; `f_t_is_dotted_beside_solid_f_n`).
+fn dotted(pts: Vec<(f64, f64)>, width: u16) -> Vec<(f64, f64)> {
+    let dots = 2 * usize::from(width.max(1));
+    let k = (3 * pts.len()).div_ceil(dots).max(1);
+    pts.into_iter().step_by(k).collect()
+}
+
 /// The points of `ys` against the history's t in ms.
 fn points(h: &ObliqueHistory, ys: &[f64]) -> Vec<(f64, f64)> {
     h.t.iter().zip(ys).map(|(&t, &y)| (t * 1e3, y)).collect()
@@ -146,7 +155,7 @@ pub fn render_forces(r: &ObliqueResponse, theme: Theme, area: Rect, buf: &mut Bu
     let Some(h) = &r.history else { return };
     let t_ms = r.contact_time * 1e3;
     let fnp = points(h, &h.normal_force);
-    let ftp = points(h, &h.friction_force);
+    let ftp = dotted(points(h, &h.friction_force), area.width);
     let y = bounds(h.normal_force.iter().chain(&h.friction_force).copied());
     let rev = reversals(h);
     let ticks: Vec<Vec<(f64, f64)>> = rev
@@ -283,6 +292,17 @@ mod tests {
 
     use super::reversals;
     use crate::oblique::ObliqueHistory;
+
+    #[test]
+    fn f_t_is_dotted_beside_solid_f_n() {
+        // 400 samples on a chart 60 cells (120 dots) wide: a point every 10 samples, 40
+        // points, three dots apart — a dotted line, where all 400 read as a solid one
+        let pts: Vec<(f64, f64)> = (0..400).map(|i| (f64::from(i), 0.0)).collect();
+        let d = super::dotted(pts.clone(), 60);
+        assert_eq!(d.len(), 40);
+        assert_eq!(d[1].0 - d[0].0, 10.0);
+        assert!(super::dotted(pts[..20].to_vec(), 60).len() == 20);
+    }
 
     #[test]
     fn a_reversal_is_where_the_friction_changes_sign() {
