@@ -155,6 +155,8 @@ fn y_in_the_oblique_view_gives_the_oblique_line_that_computes_its_impact() {
     enter(&mut app, "1.5e5");
     press(&mut app, &[KeyCode::Char('y')]);
     let line = app.last_command().unwrap().to_string();
+    let boxed = screen_text(&draw(&app, 120, 40)).join("\n");
+    assert!(boxed.contains("computes this impact"), "{boxed}");
     assert!(
         line.starts_with("bouncelab oblique --preset tennis "),
         "{line}"
