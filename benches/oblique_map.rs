@@ -42,6 +42,8 @@ fn compute(b: Bencher) {
     let spec = MapSpec {
         ball: tennis(),
         spin: 300.0,
+        tangential_stiffness: None,
+        inertia_factor: None,
     };
     b.bench(|| map::compute(black_box(&spec), &AtomicBool::new(false)));
 }

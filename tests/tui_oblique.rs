@@ -158,8 +158,7 @@ fn the_view_s_numbers_are_the_command_line_s() {
     // and the screen shows them
     let text = screen_text(&draw(&app, 120, 40)).join("\n");
     for shown in [
-        "v_out 17.54 m/s",
-        "angle 17.63°",
+        "out 17.54 m/s at 17.63°",
         "spin  657.7 rad/s",
         "CPR 49.2",
         "5 fast",

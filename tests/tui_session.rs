@@ -93,7 +93,7 @@ fn a_bad_session_is_one_line_with_file_line_and_column_exit_2() {
             "unknown law",
         ),
         (format!("colour = 1\n{text}"), "unknown field"),
-        (text.replace("version = 1", "version = 7"), "version 7"),
+        (text.replace("version = 2", "version = 7"), "version 7"),
     ];
     for (i, (bad, why)) in cases.iter().enumerate() {
         let file = dir.path().join(format!("s{i}.toml"));

@@ -37,6 +37,13 @@ use crate::tui::views::sweeps::speed::{SpeedCurve, SpeedRequest};
 /// How many changes `u` can undo.
 const UNDO_DEPTH: usize = 500;
 
+/// What `u` restores: the setting and the oblique view's θ, ω, μ, K_t, κ before a change.
+#[derive(Debug, Clone, PartialEq)]
+pub(in crate::tui) struct Undoable {
+    pub setting: Setting,
+    pub oblique: crate::tui::views::oblique::state::ObliqueValues,
+}
+
 /// The explorer.
 #[derive(Debug, Clone)]
 pub struct App {
@@ -52,7 +59,7 @@ pub struct App {
     pub(in crate::tui) depth: super::palette::Depth,
     /// The pinned runs, oldest first (at most [`MAX_PINS`]).
     pub(in crate::tui) pins: Vec<Ghost>,
-    pub(in crate::tui) undo: Vec<Setting>,
+    pub(in crate::tui) undo: Vec<Undoable>,
     pub(in crate::tui) quit: bool,
     /// The impact for `run_for`.
     pub(in crate::tui) run: Option<ImpactResponse>,
@@ -307,7 +314,8 @@ impl App {
             Action::Unpin => self.unpin(),
             Action::Undo => match self.undo.pop() {
                 Some(previous) => {
-                    self.setting = previous;
+                    self.setting = previous.setting;
+                    self.oblique.set_values(previous.oblique);
                     self.info("undone".into());
                 }
                 None => self.warn("nothing to undo".into()),

@@ -120,6 +120,46 @@ pub fn explorer_line(source: Source, preset: &Preset, setting: &Setting) -> Stri
     words.join(" ")
 }
 
+/// The oblique view's line, `bouncelab oblique --preset tennis --v0 25 --angle 16 --spin 300
+/// --friction 0.6 …` (`y` there, issue 31): the ball's options as [`explorer_line`]'s but
+/// K_r and c as `--k-r` and `--damping` (`oblique` takes no `--lambda`, `--zeta`: the same
+/// numbers, exactly), then θ, ω, μ and the K_t, κ set in the view (tests/tui_oblique.rs runs
+/// it and compares its JSON with the screen's impact).
+pub fn oblique_line(
+    source: Source,
+    preset: &Preset,
+    setting: &Setting,
+    o: &crate::tui::views::oblique::state::ObliqueValues,
+) -> String {
+    let mut words = vec!["bouncelab".to_string(), "oblique".into()];
+    let mut ball = options(source, preset, setting);
+    if let Some(at) = ball.iter().position(|w| w == "--lambda") {
+        let p = &setting.params;
+        ball.splice(
+            at..at + 4,
+            [
+                "--k-r".into(),
+                number(p.k_r),
+                "--damping".into(),
+                number(p.damping),
+            ],
+        );
+    }
+    words.extend(ball);
+    for (option, value) in [
+        ("--angle", Some(o.angle)),
+        ("--spin", Some(o.spin)),
+        ("--friction", Some(o.friction)),
+        ("--tangential-stiffness", o.tangential_stiffness),
+        ("--inertia-factor", o.inertia_factor),
+    ] {
+        if let Some(v) = value {
+            words.extend([option.into(), number(v)]);
+        }
+    }
+    words.join(" ")
+}
+
 /// The words after `bouncelab run` that run `setting` (module docs).
 fn options(source: Source, preset: &Preset, setting: &Setting) -> Vec<String> {
     let mut words = Vec::new();

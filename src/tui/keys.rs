@@ -46,7 +46,7 @@ pub const KEYS: [(&str, &str); 69] = [
     ("", ""),
     ("In the oblique view (i)", ""),
     ("a/A w/W k/K", "step θ ±1°, ω ±10 rad/s, μ ±0.01"),
-    ("↑ ↓ / ← →", "change / select θ, ω or μ"),
+    ("↑ ↓ / ← →", "change / select θ, ω, μ, K_t, κ"),
     ("= or Enter", "type the selected one's value"),
     ("t", "the charts or the (θ, μ) map"),
     ("← → / ↑ ↓", "on the map: move the cursor, θ / μ"),

@@ -1,12 +1,14 @@
 //! Sessions (issue 29 item 3): `S` writes the explorer's state to a TOML file, `bouncelab
 //! --session FILE` opens the explorer in it again — the ball (its preset and every parameter,
 //! SI), the law, v0, the target, the pins, the measured file (by path), the view, the
-//! selected parameter, the map's quantity, targets and window (`map`) and the fit pane's fit
-//! (`fit`) (docs/explorer.md, "Sessions"). Written atomically (src/atomic.rs); a
+//! selected parameter, the map's quantity, targets and window (`map`), the fit pane's fit
+//! (`fit`) and the oblique view's θ, ω, μ, K_t, κ (`oblique`, version 2) (docs/explorer.md,
+//! "Sessions"). Written atomically (src/atomic.rs); a
 //! file that does not read is one line `FILE:LINE:COLUMN: why`, exit 2.
 
 pub mod fit;
 pub mod map;
+pub mod oblique;
 
 use super::app::App;
 use super::param::Param;
@@ -17,8 +19,11 @@ use crate::model::params::ImpactParams;
 use serde::{Deserialize, Serialize};
 use std::path::{Path, PathBuf};
 
-/// The session file's version: what this explorer writes and reads.
-pub const VERSION: u32 = 1;
+/// The session file's version: what this explorer writes. Version 2 added the `[oblique]`
+/// table; a version-1 file (without it) still reads ([`READS`]).
+pub const VERSION: u32 = 2;
+/// The versions this explorer reads.
+pub const READS: [u32; 2] = [1, VERSION];
 
 /// The explorer's state as the file holds it.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -40,6 +45,9 @@ pub struct Session {
     /// The fit pane's finished fit (absent: none, or one still running).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub fit: Option<fit::Fit>,
+    /// The oblique view's values, page and map quantity (absent: its defaults).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub oblique: Option<oblique::ObliqueState>,
     /// The pinned settings, oldest first.
     #[serde(default)]
     pub pins: Vec<Ball>,
@@ -102,6 +110,7 @@ impl App {
             ball: ball(&self.setting),
             map: Some(map::MapState::of(&self.map)),
             fit: self.fit.pane.as_ref().and_then(fit::Fit::of),
+            oblique: Some(oblique::ObliqueState::of(&self.oblique)),
             pins: self.pins.iter().map(|g| ball(&g.setting)).collect(),
         }
     }
@@ -137,6 +146,9 @@ impl App {
         if let Some(f) = &session.fit {
             self.fit.id += 1;
             self.fit.pane = Some(f.pane(self.fit.id)?);
+        }
+        if let Some(o) = &session.oblique {
+            o.restore(&mut self.oblique)?;
         }
         self.undo.clear();
         self.message = None;
@@ -191,13 +203,13 @@ impl Session {
                 .to_string();
             format!("{}:{}:{}: {why}", path.display(), at.0, at.1)
         })?;
-        if s.version != VERSION {
+        if !READS.contains(&s.version) {
             let line = text
                 .lines()
                 .position(|l| l.trim_start().starts_with("version"))
                 .map_or(1, |i| i + 1);
             return Err(format!(
-                "{}:{line}:1: version {} is not one this explorer reads ({VERSION})",
+                "{}:{line}:1: version {} is not one this explorer reads (1 or {VERSION})",
                 path.display(),
                 s.version
             ));

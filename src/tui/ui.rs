@@ -19,6 +19,7 @@ use crate::figure::{Figure, explorer};
 use crate::tui::views::fit::widget::FitView;
 use crate::tui::views::map::widget::MapPanel;
 use crate::tui::views::models::widget::ModelsTable;
+use crate::tui::views::oblique::param::ObliqueParam;
 use ratatui::buffer::Buffer;
 use ratatui::layout::{Constraint, Layout, Rect};
 use ratatui::text::Line;
@@ -325,6 +326,10 @@ impl Widget for &App {
                 view: self.oblique_view(),
                 ball: &self.preset().name,
                 v0: self.setting().params.v0,
+                tangential: [
+                    self.oblique_value(ObliqueParam::TangentialStiffness),
+                    self.oblique_value(ObliqueParam::InertiaFactor),
+                ],
                 theme,
             }
             .render(body, buf);

@@ -70,9 +70,13 @@ impl App {
         }
     }
 
-    /// The explorer's line that opens it again in what the screen shows (`y`).
+    /// The explorer's line that opens it again in what the screen shows (`y`); in the
+    /// oblique view, the `bouncelab oblique …` line that computes the impact it shows.
     pub fn command_line(&self) -> String {
         let (source, preset) = self.source_of(&self.setting);
+        if self.view == crate::tui::state::View::Oblique {
+            return command::oblique_line(source, preset, &self.setting, &self.oblique.values());
+        }
         command::explorer_line(source, preset, &self.setting)
     }
 

@@ -1,6 +1,6 @@
 //! How `update` changes the setting (with undo) and says what it did.
 
-use super::{App, Message, Setting, Severity, UNDO_DEPTH};
+use super::{App, Message, Setting, Severity, UNDO_DEPTH, Undoable};
 use crate::model::params::ImpactParams;
 use crate::text::short;
 use crate::tui::param::Param;
@@ -42,12 +42,21 @@ impl App {
     /// Move to `next`, remembering the current setting for undo.
     pub(in crate::tui) fn change(&mut self, next: Setting) {
         if next != self.setting {
-            let previous = std::mem::replace(&mut self.setting, next);
-            if self.undo.len() == UNDO_DEPTH {
-                self.undo.remove(0);
-            }
-            self.undo.push(previous);
+            self.remember();
+            self.setting = next;
         }
+    }
+
+    /// Put the current setting and the oblique view's values on the undo history (the
+    /// oldest dropped past [`UNDO_DEPTH`]).
+    pub(in crate::tui) fn remember(&mut self) {
+        if self.undo.len() == UNDO_DEPTH {
+            self.undo.remove(0);
+        }
+        self.undo.push(Undoable {
+            setting: self.setting.clone(),
+            oblique: self.oblique.values(),
+        });
     }
 
     pub(in crate::tui) fn info(&mut self, text: String) {

@@ -26,7 +26,11 @@ impl Widget for &CommandBox<'_> {
         // one row for the line where the terminal is wide enough: no wrap to break a selection
         let w = (len.max(40) as u16).saturating_add(2).min(area.width);
         let inner_w = usize::from(w.saturating_sub(2)).max(1);
-        let hint = hint(self.copied, len > inner_w);
+        let hint = hint(
+            self.copied,
+            len > inner_w,
+            self.line.starts_with("bouncelab oblique "),
+        );
         let hint = hint.as_str();
         // the line's rows once wrapped (at most), a blank row, the hint's rows
         let rows = (len.div_ceil(inner_w) + 1 + hint.chars().count().div_ceil(inner_w)) as u16;
@@ -51,9 +55,10 @@ impl Widget for &CommandBox<'_> {
     }
 }
 
-/// What the box says under the line: whether it was copied, and where a line too wide for the
-/// terminal is to be found whole.
-fn hint(copied: bool, wrapped: bool) -> String {
+/// What the box says under the line: what it does (the oblique view's `bouncelab oblique`
+/// line computes the impact shown, the explorer's line reopens the state), whether it was
+/// copied, and where a line too wide for the terminal is to be found whole.
+fn hint(copied: bool, wrapped: bool, oblique: bool) -> String {
     let copy = if copied {
         "copied (OSC 52)"
     } else {
@@ -64,5 +69,10 @@ fn hint(copied: bool, wrapped: bool) -> String {
     } else {
         ""
     };
-    format!("reopens this state · {copy}{whole} · Esc closes")
+    let does = if oblique {
+        "computes this impact"
+    } else {
+        "reopens this state"
+    };
+    format!("{does} · {copy}{whole} · Esc closes")
 }

@@ -15,4 +15,5 @@ pub mod quit;
 pub mod readout;
 pub mod status;
 pub mod strokes;
+pub mod tags;
 pub mod title;

@@ -9,6 +9,7 @@ use crate::figure::look::{dashed, dotted, long_dashed};
 use crate::figure::ticks::{Room, factor_label, ticks};
 use crate::figure::{Corner, Figure, Role, Sample, Series, Style as Stroke, Tone};
 use crate::tui::theme::Theme;
+use crate::tui::widgets::tags;
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
 use ratatui::style::{Color, Style};
@@ -275,38 +276,56 @@ impl<'a> Plot<'a> {
             .flat_map(|s| self.drawn(s))
             .filter_map(cell)
             .collect();
+        // every line's cells, and how many lines pass each cell: a tag goes where its own
+        // curve runs apart from the others (one pass over the lines a frame)
+        // (none on a chart without tagged lines: the force charts with a dense measured trace)
+        let any_tag = self
+            .figure
+            .series
+            .iter()
+            .any(|s| s.look.text.is_some() && !matches!(s.style, Stroke::Markers(_)));
+        let lines: Vec<Vec<(u16, u16)>> = self
+            .figure
+            .series
+            .iter()
+            .map(|s| match s.style {
+                Stroke::Markers(_) => Vec::new(),
+                _ if !any_tag => Vec::new(),
+                _ => tags::along(
+                    &self
+                        .drawn(s)
+                        .into_iter()
+                        .filter_map(cell)
+                        .collect::<Vec<_>>(),
+                ),
+            })
+            .collect();
+        let sets: Vec<std::collections::HashSet<(u16, u16)>> =
+            lines.iter().map(|c| c.iter().copied().collect()).collect();
+        let mut passing: std::collections::HashMap<(u16, u16), u16> =
+            std::collections::HashMap::new();
+        for &c in sets.iter().flatten() {
+            *passing.entry(c).or_default() += 1;
+        }
         let mut tagged: Vec<(u16, u16, u16)> = Vec::new();
-        for s in &self.figure.series {
+        for (i, s) in self.figure.series.iter().enumerate() {
             let (Stroke::Solid | Stroke::Dashed | Stroke::Dotted | Stroke::LongDashed, Some(tag)) =
                 (s.style, &s.look.text)
             else {
                 continue;
             };
-            let last = self.drawn(s).into_iter().flatten().next_back();
-            let Some((col, row)) = cell(last) else {
-                continue;
-            };
             let w = tag.chars().count() as u16;
-            let x = if col + 1 + w <= l.plot.right() {
-                col + 1
-            } else {
-                col.saturating_sub(w).max(l.plot.x)
+            let taken = tags::Taken {
+                tags: &tagged,
+                points: &points,
+                passing: &passing,
             };
-            let free = |y: u16| {
-                !tagged
-                    .iter()
-                    .any(|&(ty, a, b)| ty == y && x < b && a < x + w)
-                    && !points
-                        .iter()
-                        .any(|&(px, py)| py == y && (x..x + w).contains(&px))
+            let own = tags::Curve {
+                cells: &lines[i],
+                set: &sets[i],
             };
-            let Some(y) = [0i32, -1, 1, -2, 2]
-                .into_iter()
-                .map(|d| i32::from(row) + d)
-                .filter(|&y| y >= i32::from(l.plot.y) && y < i32::from(l.plot.bottom()))
-                .map(|y| y as u16)
-                .find(|&y| free(y))
-            else {
+            let Some((x, y)) = tags::place(l.plot, &own, w, buf, &taken) else {
+                // no room on the curve: the legend names it (its key and glyph)
                 continue;
             };
             let room = usize::from(l.plot.right() - x);

@@ -4,7 +4,8 @@
 //! their angles. Each legend names its line's look, so it reads without colour (NO_COLOR).
 
 use crate::oblique::{ObliqueHistory, ObliqueResponse};
-use crate::text::{short, sig};
+use crate::text::short;
+use crate::tui::format::value;
 use crate::tui::theme::Theme;
 use ratatui::buffer::Buffer;
 use ratatui::layout::{Constraint, Rect};
@@ -59,7 +60,7 @@ fn labels(b: [f64; 2], width: u16) -> Vec<String> {
     } else {
         &[b[0], b[1]]
     };
-    at.iter().map(|&v| sig(v, 3)).collect()
+    at.iter().map(|&v| value(v)).collect()
 }
 
 /// Round ticks over `b`, as the other charts': a step of 1, 1.5, 2,
@@ -134,6 +135,15 @@ fn set<'a>(name: Option<String>, data: &'a [(f64, f64)], style: Style, line: boo
     }
 }
 
+/// Every k-th of `pts`, about one a third of the braille dots across a chart `width` cells
+/// wide: drawn as points they read dotted (`┄`), apart from a solid line also without colour
+/// (NO_COLOR; issue 29 item 12: every series its own look; `f_t_is_dotted_beside_solid_f_n`).
+fn dotted(pts: Vec<(f64, f64)>, width: u16) -> Vec<(f64, f64)> {
+    let dots = 2 * usize::from(width.max(1));
+    let k = (3 * pts.len()).div_ceil(dots).max(1);
+    pts.into_iter().step_by(k).collect()
+}
+
 /// The points of `ys` against the history's t in ms.
 fn points(h: &ObliqueHistory, ys: &[f64]) -> Vec<(f64, f64)> {
     h.t.iter().zip(ys).map(|(&t, &y)| (t * 1e3, y)).collect()
@@ -145,7 +155,7 @@ pub fn render_forces(r: &ObliqueResponse, theme: Theme, area: Rect, buf: &mut Bu
     let Some(h) = &r.history else { return };
     let t_ms = r.contact_time * 1e3;
     let fnp = points(h, &h.normal_force);
-    let ftp = points(h, &h.friction_force);
+    let ftp = dotted(points(h, &h.friction_force), area.width);
     let y = bounds(h.normal_force.iter().chain(&h.friction_force).copied());
     let rev = reversals(h);
     let ticks: Vec<Vec<(f64, f64)>> = rev
@@ -163,7 +173,7 @@ pub fn render_forces(r: &ObliqueResponse, theme: Theme, area: Rect, buf: &mut Bu
         set(Some("┄ F_t".into()), &ftp, second, false),
     ];
     for (i, (t, pts)) in rev.iter().zip(&ticks).enumerate() {
-        let name = (i == 0).then(|| format!("┊ reversal {} ms", sig(t * 1e3, 3)));
+        let name = (i == 0).then(|| format!("┊ reversal {} ms", value(t * 1e3)));
         sets.push(set(name, pts, theme.measured(), false));
     }
     // the names in the title too: a small chart hides its legend
@@ -232,8 +242,8 @@ pub fn render_paths(r: &ObliqueResponse, theme: Theme, area: Rect, buf: &mut Buf
     let (live, second) = (theme.current(), theme.secondary());
     let ground = theme.c(Color::Gray);
     let (lab_in, lab_out) = (
-        format!("in {}°", sig(r.angle_in_deg, 3)),
-        format!("out {}°", sig(r.angle_out_deg, 3)),
+        format!("in {}°", value(r.angle_in_deg)),
+        format!("out {}°", value(r.angle_out_deg)),
     );
     let (t_in, t_out) = (theme.fg(live), theme.fg(second));
     Canvas::default()
@@ -282,6 +292,17 @@ mod tests {
 
     use super::reversals;
     use crate::oblique::ObliqueHistory;
+
+    #[test]
+    fn f_t_is_dotted_beside_solid_f_n() {
+        // 400 samples on a chart 60 cells (120 dots) wide: a point every 10 samples, 40
+        // points, three dots apart — a dotted line, where all 400 read as a solid one
+        let pts: Vec<(f64, f64)> = (0..400).map(|i| (f64::from(i), 0.0)).collect();
+        let d = super::dotted(pts.clone(), 60);
+        assert_eq!(d.len(), 40);
+        assert_eq!(d[1].0 - d[0].0, 10.0);
+        assert!(super::dotted(pts[..20].to_vec(), 60).len() == 20);
+    }
 
     #[test]
     fn a_reversal_is_where_the_friction_changes_sign() {

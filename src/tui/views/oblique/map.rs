@@ -92,11 +92,14 @@ impl Cell {
     }
 }
 
-/// What a map is of: the ball (its parameters, law, radius, ν, κ) and the spin.
+/// What a map is of: the ball (its parameters, law, radius, ν, κ), the spin and the K_t and
+/// κ set in the view (`None`: the ball's).
 #[derive(Debug, Clone, PartialEq)]
 pub struct MapSpec {
     pub ball: Ball,
     pub spin: f64,
+    pub tangential_stiffness: Option<f64>,
+    pub inertia_factor: Option<f64>,
 }
 
 /// A computed map: `cells[i * FRICTIONS + j]` at angle i, friction j (`None`: that impact
@@ -156,8 +159,8 @@ fn column(spec: &MapSpec, angle: f64, frictions: &[f64]) -> Result<Vec<Option<Ce
         angle_deg: angle,
         spin: spec.spin,
         friction: frictions[0],
-        tangential_stiffness: None,
-        inertia_factor: None,
+        tangential_stiffness: spec.tangential_stiffness,
+        inertia_factor: spec.inertia_factor,
     };
     let o = oblique_of(ball, &s).map_err(|e| e.to_string())?;
     let all = solve_frictions(&ball.params, ball.law, ball.params.v0, &o, frictions)

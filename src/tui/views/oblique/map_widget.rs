@@ -4,7 +4,8 @@
 //! character — the cursor ╋ at (θ, μ), the range of the quantity and the cell's values under
 //! the map.
 
-use crate::text::{sig, sig_trim};
+use crate::text::sig_trim;
+use crate::tui::format::value;
 use crate::tui::theme::Theme;
 use crate::tui::views::map::cells::{self, CURSOR, NAN_COLOR, NAN_SHADE};
 use crate::tui::views::oblique::map::{
@@ -137,15 +138,15 @@ impl MapRaster<'_> {
     fn info(&self, map: &ObliqueMap, q: Quantity, area: Rect, buf: &mut Buffer) {
         let (ci, cj) = self.view.cursor();
         let range = map.range(q).map_or("no value".into(), |(lo, hi)| {
-            format!("{} … {}", sig(lo, 3), sig(hi, 3))
+            format!("{} … {}", value(lo), value(hi))
         });
         let (first, second) = match map.at(ci, cj) {
             Some(c) => (
-                format!("angle out {}°", sig(c.angle_out, 4)),
+                format!("angle out {}°", value(c.angle_out)),
                 format!(
                     "spin out {} rad/s, e_x {}",
-                    sig(c.spin_out, 4),
-                    c.ex.map_or("—".into(), |e| sig(e, 3))
+                    value(c.spin_out),
+                    c.ex.map_or("—".into(), value)
                 ),
             ),
             None => ("no answer".into(), String::new()),
@@ -164,7 +165,7 @@ impl MapRaster<'_> {
             Line::raw(format!(
                 " ╋ cell θ {}°, μ {}: {first}",
                 angle_at(ci),
-                sig_trim(friction_at(cj), 2)
+                value(friction_at(cj))
             )),
             Line::raw(format!("   {second}")),
         ];

@@ -22,8 +22,34 @@ pub enum Page {
     Map,
 }
 
-/// The key the impact was computed for: the ball (as the library takes it) and θ, ω, μ.
-pub type ImpactKey = (crate::Ball, f64, f64, f64);
+/// The key the impact was computed for: the ball (as the library takes it) and the view's
+/// values.
+pub type ImpactKey = (crate::Ball, ObliqueValues);
+
+/// What the user sets in the view: θ, ω, μ and the tangential model's K_t and κ (`None`: the
+/// ball's own, Mindlin's K_t and the preset's κ). The undo history and a session keep these
+/// (src/tui/app/edit.rs, src/tui/session.rs).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ObliqueValues {
+    pub angle: f64,
+    pub spin: f64,
+    pub friction: f64,
+    pub tangential_stiffness: Option<f64>,
+    pub inertia_factor: Option<f64>,
+}
+
+impl Default for ObliqueValues {
+    /// The ITF court pace test's arrival (16°, no spin) on a μ = 0.6 court, the ball's K_t, κ.
+    fn default() -> ObliqueValues {
+        ObliqueValues {
+            angle: 16.0,
+            spin: 0.0,
+            friction: 0.6,
+            tangential_stiffness: None,
+            inertia_factor: None,
+        }
+    }
+}
 
 /// The oblique view's state.
 #[derive(Debug, Clone)]
@@ -34,6 +60,9 @@ pub struct ObliqueView {
     pub spin: f64,
     /// μ.
     pub friction: f64,
+    /// K_t (N/m) and κ when set in the view; `None`: the ball's.
+    pub tangential_stiffness: Option<f64>,
+    pub inertia_factor: Option<f64>,
     /// The parameter ↑ ↓ and `=` act on.
     pub selected: ObliqueParam,
     pub page: Page,
@@ -56,10 +85,13 @@ pub struct ObliqueView {
 impl Default for ObliqueView {
     /// The ITF court pace test's arrival (16°, no spin) on a μ = 0.6 court.
     fn default() -> ObliqueView {
+        let v = ObliqueValues::default();
         ObliqueView {
-            angle: 16.0,
-            spin: 0.0,
-            friction: 0.6,
+            angle: v.angle,
+            spin: v.spin,
+            friction: v.friction,
+            tangential_stiffness: v.tangential_stiffness,
+            inertia_factor: v.inertia_factor,
             selected: ObliqueParam::Angle,
             page: Page::Charts,
             quantity: Quantity::AngleOut,
@@ -75,11 +107,14 @@ impl Default for ObliqueView {
 }
 
 impl ObliqueView {
-    pub fn get(&self, p: ObliqueParam) -> f64 {
+    /// The value of `p` set in the view; `None` for K_t or κ left to the ball.
+    pub fn get(&self, p: ObliqueParam) -> Option<f64> {
         match p {
-            ObliqueParam::Angle => self.angle,
-            ObliqueParam::Spin => self.spin,
-            ObliqueParam::Friction => self.friction,
+            ObliqueParam::Angle => Some(self.angle),
+            ObliqueParam::Spin => Some(self.spin),
+            ObliqueParam::Friction => Some(self.friction),
+            ObliqueParam::TangentialStiffness => self.tangential_stiffness,
+            ObliqueParam::InertiaFactor => self.inertia_factor,
         }
     }
 
@@ -88,7 +123,28 @@ impl ObliqueView {
             ObliqueParam::Angle => self.angle = v,
             ObliqueParam::Spin => self.spin = v,
             ObliqueParam::Friction => self.friction = v,
+            ObliqueParam::TangentialStiffness => self.tangential_stiffness = Some(v),
+            ObliqueParam::InertiaFactor => self.inertia_factor = Some(v),
         }
+    }
+
+    /// The values set in the view (what undo and a session keep).
+    pub fn values(&self) -> ObliqueValues {
+        ObliqueValues {
+            angle: self.angle,
+            spin: self.spin,
+            friction: self.friction,
+            tangential_stiffness: self.tangential_stiffness,
+            inertia_factor: self.inertia_factor,
+        }
+    }
+
+    pub fn set_values(&mut self, v: ObliqueValues) {
+        self.angle = v.angle;
+        self.spin = v.spin;
+        self.friction = v.friction;
+        self.tangential_stiffness = v.tangential_stiffness;
+        self.inertia_factor = v.inertia_factor;
     }
 
     /// The impact, when there is one.

@@ -5,13 +5,13 @@
 
 use crate::api::ObliqueSpec;
 use crate::oblique::court::ITF_COURT_PACE;
-use crate::text::{parse::number, sig_trim};
+use crate::text::parse::number;
 use crate::tui::action::ObliqueKey;
 use crate::tui::app::{App, Effect, View};
 use crate::tui::state::{Overlay, Purpose};
 use crate::tui::views::oblique::map::{self, ANGLES, FRICTIONS, MapJob, MapSpec};
 use crate::tui::views::oblique::param::ObliqueParam;
-use crate::tui::views::oblique::state::{ImpactKey, ObliqueView, Page, SAMPLES};
+use crate::tui::views::oblique::state::{ImpactKey, ObliqueValues, ObliqueView, Page, SAMPLES};
 use crate::{Ball, BallError};
 use std::sync::Arc;
 use std::sync::atomic::AtomicBool;
@@ -74,12 +74,12 @@ impl App {
         match key {
             ObliqueKey::Step { param, up, coarse } => {
                 o.selected = param;
-                let value = param.step(o.get(param), up, coarse || self.coarse);
+                let value = param.step(self.oblique_value(param), up, coarse || self.coarse);
                 self.oblique_step(param, value);
             }
             ObliqueKey::StepSelected { up, coarse } => {
                 let param = o.selected;
-                let value = param.step(o.get(param), up, coarse || self.coarse);
+                let value = param.step(self.oblique_value(param), up, coarse || self.coarse);
                 self.oblique_step(param, value);
             }
             ObliqueKey::Select { next } => {
@@ -112,10 +112,39 @@ impl App {
         }
     }
 
+    /// The value of `param` the impact runs on: the view's, or the ball's K_t (Mindlin's) and
+    /// κ (the preset's) where the view sets none — as `Ball::oblique` takes them.
+    pub fn oblique_value(&self, param: ObliqueParam) -> f64 {
+        if let Some(v) = self.oblique.get(param) {
+            return v;
+        }
+        let ball = self.oblique_ball();
+        match param {
+            ObliqueParam::TangentialStiffness => ball.tangential_stiffness().unwrap_or(f64::NAN),
+            _ => ball.inertia_factor(),
+        }
+    }
+
+    /// Change the view's values to `next`, remembering the state for undo (as a change of
+    /// the ball is: `u` undoes θ, ω, μ, K_t and κ too).
+    fn change_oblique(&mut self, next: ObliqueValues) {
+        if next != self.oblique.values() {
+            self.remember();
+            self.oblique.set_values(next);
+        }
+    }
+
+    /// The view's values with `param` at `value`.
+    fn oblique_with(&self, param: ObliqueParam, value: f64) -> ObliqueValues {
+        let mut o = self.oblique.clone();
+        o.set(param, value);
+        o.values()
+    }
+
     /// A step moved `param` to `value`: taken when the library takes it; past a closed bound
-    /// it stops there, past θ's open bound 0 it stays, and says so.
+    /// it stops there, past an open bound (θ's, κ's, K_t's 0) it stays, and says so.
     fn oblique_step(&mut self, param: ObliqueParam, value: f64) {
-        let now = self.oblique.get(param);
+        let now = self.oblique_value(param);
         let held = match param.clamp(value) {
             Some(v) if v == value => None,
             Some(v) => Some(v),
@@ -125,12 +154,14 @@ impl App {
             self.warn(format!(
                 "{} held at {}{}: the range is {}",
                 param.symbol(),
-                sig_trim(at, 6),
+                // as λ, ζ and v0 are held (src/tui/app/edit.rs)
+                crate::text::short(at, 4),
                 param.unit(),
                 param.range_text()
             ));
         }
-        self.oblique.set(param, held.unwrap_or(value));
+        let next = self.oblique_with(param, held.unwrap_or(value));
+        self.change_oblique(next);
     }
 
     /// The arrows on the map: θ and μ move to the next cell's (Shift: 8 cells), held inside
@@ -139,8 +170,12 @@ impl App {
         let (i, j) = self.oblique.cursor();
         let step = |k: usize, d: i32, n: usize| (k as i64 + i64::from(d)).clamp(0, n as i64 - 1);
         let (i, j) = (step(i, angle, ANGLES), step(j, friction, FRICTIONS));
-        self.oblique.angle = map::angle_at(i as usize);
-        self.oblique.friction = map::friction_at(j as usize);
+        let next = ObliqueValues {
+            angle: map::angle_at(i as usize),
+            friction: map::friction_at(j as usize),
+            ..self.oblique.values()
+        };
+        self.change_oblique(next);
     }
 
     /// Enter in θ's, ω's or μ's entry: the number read as the command line reads it and
@@ -157,7 +192,8 @@ impl App {
         match read {
             Ok(v) => {
                 self.overlay = Overlay::None;
-                self.oblique.set(param, v);
+                let next = self.oblique_with(param, v);
+                self.change_oblique(next);
                 self.oblique.selected = param;
             }
             Err(why) => {
@@ -183,20 +219,21 @@ impl App {
         }
         let ball = self.oblique_ball();
         let o = &self.oblique;
-        let key: ImpactKey = (ball.clone(), o.angle, o.spin, o.friction);
+        let key: ImpactKey = (ball.clone(), o.values());
         if o.impact_for.as_ref() != Some(&key) {
             let spec = ObliqueSpec {
                 v: None,
                 angle_deg: o.angle,
                 spin: o.spin,
                 friction: o.friction,
-                tangential_stiffness: None,
-                inertia_factor: None,
+                tangential_stiffness: o.tangential_stiffness,
+                inertia_factor: o.inertia_factor,
             };
             let impact = ball.oblique(&spec, SAMPLES).map_err(|e| e.to_string());
             let tennis = ITF_COURT_PACE.balls.contains(&self.preset().name.as_str());
+            // `bouncelab court --friction μ` with the view's K_t and κ, as `court` takes them
             let pace = tennis.then(|| {
-                ball.court_pace(o.friction, None, None)
+                ball.court_pace(o.friction, o.tangential_stiffness, o.inertia_factor)
                     .map_err(|e: BallError| e.to_string())
             });
             let o = &mut self.oblique;
@@ -209,6 +246,8 @@ impl App {
         let spec = MapSpec {
             ball,
             spin: self.oblique.spin,
+            tangential_stiffness: self.oblique.tangential_stiffness,
+            inertia_factor: self.oblique.inertia_factor,
         };
         if self.oblique.map_for.as_ref() == Some(&spec) {
             return None;

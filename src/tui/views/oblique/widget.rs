@@ -5,7 +5,7 @@
 
 use crate::api::CourtPace;
 use crate::oblique::ObliqueResponse;
-use crate::text::{sig, sig_trim};
+use crate::tui::format::{stepped, value};
 use crate::tui::theme::Theme;
 use crate::tui::views::oblique::charts;
 use crate::tui::views::oblique::map_widget::MapRaster;
@@ -29,6 +29,8 @@ pub struct ObliquePanel<'a> {
     pub ball: &'a str,
     /// The incoming speed (m/s), the explorer's v0.
     pub v0: f64,
+    /// K_t (N/m) and κ the impact runs on (the view's, or the ball's where it sets none).
+    pub tangential: [f64; 2],
     pub theme: Theme,
 }
 
@@ -110,44 +112,59 @@ impl ObliquePanel<'_> {
             .render(area, buf);
     }
 
-    /// θ, ω and μ, the selected one marked ▶, and the speed.
+    /// θ, ω and μ a line each, K_t and κ on one (the ball's Mindlin K_t and preset κ until
+    /// set in the view), the selected one marked ▶, and the speed — in the explorer's one
+    /// number format, with the digits a step needs (docs/explorer.md, "Numbers").
     fn parameter_lines(self) -> Vec<Line<'static>> {
         let v = self.view;
-        let row = |p: ObliqueParam, text: String| {
-            let (mark, style) = if p == v.selected {
-                ("▶", self.theme.selected())
+        let style = |p: ObliqueParam| {
+            if p == v.selected {
+                self.theme.selected()
             } else {
-                (" ", ratatui::style::Style::default())
-            };
-            Line::styled(format!("{mark}{} {text}", p.symbol()), style)
+                ratatui::style::Style::default()
+            }
         };
+        let span = |p: ObliqueParam, x: f64| {
+            let mark = if p == v.selected { "▶" } else { " " };
+            let x = stepped(x, p.fine_step(x));
+            Span::styled(format!("{mark}{} {x}{}", p.symbol(), p.unit()), style(p))
+        };
+        let [k_t, kappa] = self.tangential;
         vec![
-            row(ObliqueParam::Angle, format!("{}°", sig_trim(v.angle, 6))),
-            row(ObliqueParam::Spin, format!("{} rad/s", sig_trim(v.spin, 6))),
-            row(ObliqueParam::Friction, sig_trim(v.friction, 6)),
-            Line::raw(format!(" v0 {} m/s", sig_trim(self.v0, 6))),
+            Line::from(span(ObliqueParam::Angle, v.angle)),
+            Line::from(span(ObliqueParam::Spin, v.spin)),
+            Line::from(span(ObliqueParam::Friction, v.friction)),
+            Line::from(vec![
+                span(ObliqueParam::TangentialStiffness, k_t),
+                Span::raw(" "),
+                span(ObliqueParam::InertiaFactor, kappa),
+            ]),
+            Line::raw(format!(" v0 {} m/s", value(self.v0))),
         ]
     }
 }
 
 /// The outgoing motion and the contact's figures.
 fn result_lines(r: &ObliqueResponse, theme: Theme) -> Vec<Line<'static>> {
-    let ex = r
-        .cor_tangential
-        .map_or("— (rolls in)".into(), |e| sig(e, 4));
+    let ex = r.cor_tangential.map_or("— (rolls in)".into(), value);
     let grip = if r.slid_throughout {
         "slid throughout".to_string()
     } else {
-        format!("gripped {} ms", sig(r.grip_time * 1e3, 4))
+        format!("gripped {} ms", value(r.grip_time * 1e3))
     };
     vec![
-        Line::styled("out", theme.dim()),
-        Line::raw(format!(" v_out {} m/s", sig(r.v_out, 4))),
-        Line::raw(format!(" angle {}°", sig(r.angle_out_deg, 4))),
-        Line::raw(format!(" spin  {} rad/s", sig(r.spin_out, 4))),
-        Line::raw(format!(" e_y {}  e_x {ex}", sig(r.cor_normal, 4))),
-        Line::raw(format!(" μ_app {}", sig(r.apparent_friction, 4))),
-        Line::raw(format!(" contact {} ms", sig(r.contact_time * 1e3, 4))),
+        Line::from(vec![
+            Span::styled(" out", theme.dim()),
+            Span::raw(format!(
+                " {} m/s at {}°",
+                value(r.v_out),
+                value(r.angle_out_deg)
+            )),
+        ]),
+        Line::raw(format!(" spin  {} rad/s", value(r.spin_out))),
+        Line::raw(format!(" e_y {}  e_x {ex}", value(r.cor_normal))),
+        Line::raw(format!(" μ_app {}", value(r.apparent_friction))),
+        Line::raw(format!(" contact {} ms", value(r.contact_time * 1e3))),
         Line::raw(format!(" {grip}")),
     ]
 }
@@ -156,11 +173,14 @@ fn result_lines(r: &ObliqueResponse, theme: Theme) -> Vec<Line<'static>> {
 fn pace_lines(p: &CourtPace, mu: f64, theme: Theme) -> Vec<Line<'static>> {
     vec![
         Line::styled(
-            format!("ITF court pace at μ {}", sig_trim(mu, 4)),
+            format!(
+                "ITF court pace at μ {}",
+                stepped(mu, ObliqueParam::Friction.fine_step(mu))
+            ),
             theme.dim(),
         ),
         Line::from(vec![
-            Span::raw(format!(" CPR {} · ", sig(p.cpr, 3))),
+            Span::raw(format!(" CPR {} · ", value(p.cpr))),
             Span::styled(format!("{} {}", p.category, p.category_name), theme.title()),
         ]),
     ]

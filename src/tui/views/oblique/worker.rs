@@ -66,6 +66,8 @@ mod tests {
         let spec = MapSpec {
             ball: crate::Ball::from_preset("tennis").unwrap(),
             spin: 0.0,
+            tangential_stiffness: None,
+            inertia_factor: None,
         };
         let job = |generation, cancel| MapJob {
             generation,
