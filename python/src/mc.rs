@@ -103,7 +103,11 @@ fn pairs(c: &Bound<'_, PyAny>) -> PyResult<Vec<(Varied, Varied, f64)>> {
             })?;
             let mut items = Vec::new();
             for (k, v) in dict.iter() {
-                items.push(format!("{}={}", k.extract::<String>()?, v.extract::<f64>()?));
+                items.push(format!(
+                    "{}={}",
+                    k.extract::<String>()?,
+                    v.extract::<f64>()?
+                ));
             }
             items.join(",")
         }
@@ -180,7 +184,17 @@ pub(crate) fn monte_carlo<'py>(
     return_samples: bool,
     correlate: Option<Bound<'py, PyAny>>,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let r = request(preset, vary, samples, seed, dist, v0, law, params, correlate.as_ref())?;
+    let r = request(
+        preset,
+        vary,
+        samples,
+        seed,
+        dist,
+        v0,
+        law,
+        params,
+        correlate.as_ref(),
+    )?;
     let mc: MonteCarlo =
         crate::interrupt::detach_watched(py, |w| r.ball.monte_carlo_watched(&r.spec, w))?;
     let d = report(py, &r, &mc.summary)?;
@@ -191,7 +205,10 @@ pub(crate) fn monte_carlo<'py>(
             .map(|i| sampler.inputs(i))
             .collect();
         for (k, v) in r.spec.vary.iter().enumerate() {
-            values.set_item(v.what.name(), array(py, inputs.iter().map(|x| x[k]).collect()))?;
+            values.set_item(
+                v.what.name(),
+                array(py, inputs.iter().map(|x| x[k]).collect()),
+            )?;
         }
         let Samples {
             cor,
@@ -231,7 +248,17 @@ pub(crate) fn monte_carlo_chunk(
     check_only: bool,
     correlate: Option<Bound<'_, PyAny>>,
 ) -> PyResult<Columns> {
-    let r = request(preset, vary, samples, seed, dist, v0, law, params, correlate.as_ref())?;
+    let r = request(
+        preset,
+        vary,
+        samples,
+        seed,
+        dist,
+        v0,
+        law,
+        params,
+        correlate.as_ref(),
+    )?;
     if start.saturating_add(count as u64) > samples as u64 {
         return Err(PyValueError::new_err(format!(
             "invalid chunk: samples {start} … {} lie beyond the run's {samples}",
@@ -239,8 +266,7 @@ pub(crate) fn monte_carlo_chunk(
         )));
     }
     if check_only {
-        bouncelab::analysis::work::check_samples(count, r.ball.law)
-            .map_err(|e| error(e.into()))?;
+        bouncelab::analysis::work::check_samples(count, r.ball.law).map_err(|e| error(e.into()))?;
         return Ok((array(py, vec![]), array(py, vec![]), array(py, vec![])));
     }
     let s = py
@@ -273,7 +299,17 @@ pub(crate) fn monte_carlo_merge<'py>(
     contact_time: PyReadonlyArray1<'py, f64>,
     correlate: Option<Bound<'py, PyAny>>,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let r = request(preset, vary, samples, seed, dist, v0, law, params, correlate.as_ref())?;
+    let r = request(
+        preset,
+        vary,
+        samples,
+        seed,
+        dist,
+        v0,
+        law,
+        params,
+        correlate.as_ref(),
+    )?;
     let all = Samples {
         start: 0,
         cor: cor.as_array().to_vec(),

@@ -38,7 +38,10 @@ fn array_error(e: MeasuredError, text: &str) -> PyErr {
     let row = e.line.saturating_sub(2);
     // the column named by where its cell starts on the line
     let line = text.lines().nth(e.line.saturating_sub(1)).unwrap_or("");
-    let before = line.chars().take(e.column.saturating_sub(1)).collect::<String>();
+    let before = line
+        .chars()
+        .take(e.column.saturating_sub(1))
+        .collect::<String>();
     let name = COLUMNS.get(before.matches(',').count()).unwrap_or(&"row");
     value_error(format!("oblique row {row}, {name}: {}", e.message))
 }
@@ -58,9 +61,8 @@ fn rows(
         }
         let text = read_text(&path)?;
         let shown = path.display().to_string();
-        let rows = parse_oblique(&text).map_err(|e| {
-            value_error(format!("{shown}:{}:{}: {}", e.line, e.column, e.message))
-        })?;
+        let rows = parse_oblique(&text)
+            .map_err(|e| value_error(format!("{shown}:{}:{}: {}", e.line, e.column, e.message)))?;
         return Ok((rows, Some(shown)));
     }
     let mut cols = Vec::new();
