@@ -292,7 +292,7 @@ impl Sampler {
     }
 
     /// The samples `start …` into `out` (as many as it holds), on all cores in tasks of
-    /// [`TASK`] samples, four at a time: the same values as [`Sampler::samples`], written
+    /// `TASK` samples, four at a time: the same values as [`Sampler::samples`], written
     /// where they belong (no copy, no per-sample `Result`); the first error by index, if any.
     pub fn samples_into(&self, start: u64, out: Columns<'_>) -> Result<(), McError> {
         let n = out.cor.len();

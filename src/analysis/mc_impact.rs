@@ -37,7 +37,7 @@ pub fn impact(p: &ImpactParams, law: ContactLaw) -> Result<Outcome, SolveError> 
 /// The impacts of up to four checked balls (`None`: no ball, no answer) as `bouncelab run`
 /// solves them: on the linear law the closed form in lanes ([`lanes::summary4`], to 1e-12 of
 /// the exact solver) where it answers and the ball does not flatten (z̄_m ≤ z̄_p), SI by F =
-/// F̄ m v0 ω0 and t = τ/ω0; else [`one_by_one`].
+/// F̄ m v0 ω0 and t = τ/ω0; else `one_by_one`.
 pub fn impacts(
     balls: &[Option<ImpactParams>; LANES],
     law: ContactLaw,

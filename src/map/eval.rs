@@ -11,7 +11,7 @@ use std::sync::atomic::{AtomicBool, Ordering};
 /// One cell at (λ, ζ): [`crate::simulate`] with the default options, as `bouncelab run`
 /// solves (its energy audit changes neither solver's COR, F_m or t_f). The linear law runs
 /// the exact solver, the others the adaptive one. On the fast path the linear law's closed
-/// form runs in lanes ([`cells_at`]'s, the lane padded with copies of itself), so a cell
+/// form runs in lanes (`cells_at`'s, the lane padded with copies of itself), so a cell
 /// alone is the map's cell bit for bit (`one_cell_is_the_maps_cell`).
 pub fn cell_at(spec: &MapSpec, lambda: f64, zeta: f64) -> Result<Cell, SolveError> {
     let mut out = [Ok(Cell::UNRESOLVED)];

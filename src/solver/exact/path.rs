@@ -140,7 +140,7 @@ impl NormalPath {
     /// The motion at τ_j = j h for j = 0, 1, … while j h < τ_f, then at τ_f, as [`Self::at`]
     /// reads it but stepped: w(τ + h) = e^{A h} w(τ) with e^{A h} read once per phase from its
     /// propagator, the flow read exactly at each phase's first point, every
-    /// [`EXACT_EVERY`] steps and at τ_f. The oblique impact's search grid (src/oblique/): a
+    /// `EXACT_EVERY` steps and at τ_f. The oblique impact's search grid (src/oblique/): a
     /// point costs a 3×3 product instead of a propagator's exponentials.
     pub fn grid(&self, h: f64) -> Vec<PathPoint> {
         let tf = self.end();
