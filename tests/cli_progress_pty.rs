@@ -25,19 +25,7 @@ fn long_work_shows_progress_and_a_signal_stops_it_writing_nothing() {
         let mut x = Explorer::spawn(home.path(), None, &args);
         x.wait_for("/6000 impacts"); // the bar
         x.signal(sig);
-        let (status, _, text) = x.finish();
-        assert_eq!(
-            status.code(),
-            Some(130),
-            "{status:?}\n{}",
-            text.escape_debug()
-        );
-        assert!(text.contains("interrupted"), "{}", text.escape_debug());
-        let left: Vec<_> = std::fs::read_dir(home.path())
-            .unwrap()
-            .map(|e| e.unwrap().file_name())
-            .collect();
-        assert!(left.is_empty(), "{left:?}");
+        stopped_writing_nothing(x, home.path(), &format!("{sig:?}"));
     }
 }
 
@@ -47,6 +35,21 @@ fn left(dir: &std::path::Path) -> Vec<std::ffi::OsString> {
         .unwrap()
         .map(|e| e.unwrap().file_name())
         .collect()
+}
+
+/// The command `x` ran in `home` ended on its signal: exit 130, "interrupted", no file left
+/// in `home`; its output. `what` names the case in a failure.
+fn stopped_writing_nothing(x: Explorer, home: &std::path::Path, what: &str) -> String {
+    let (status, _, text) = x.finish();
+    assert_eq!(
+        status.code(),
+        Some(130),
+        "{what}: {status:?}\n{}",
+        text.escape_debug()
+    );
+    assert!(text.contains("interrupted"), "{}", text.escape_debug());
+    assert!(left(home).is_empty(), "{:?}", left(home));
+    text
 }
 
 /// A 999 999-row force trace (the most a file may hold): a half-sine pulse of 60 N over
@@ -95,15 +98,7 @@ fn a_dense_trace_fit_shows_progress_and_a_signal_stops_it_writing_nothing() {
         // average of 9 (the two runs took 51 s), beyond the usual 30 s wait at a load of 20
         x.wait_for_within("model runs,", std::time::Duration::from_secs(120));
         x.signal(sig);
-        let (status, _, text) = x.finish();
-        assert_eq!(
-            status.code(),
-            Some(130),
-            "{status:?}\n{}",
-            text.escape_debug()
-        );
-        assert!(text.contains("interrupted"), "{}", text.escape_debug());
-        assert!(left(home.path()).is_empty(), "{:?}", left(home.path()));
+        stopped_writing_nothing(x, home.path(), &format!("{sig:?}"));
     }
 }
 
@@ -133,15 +128,7 @@ fn a_signal_mid_write_leaves_no_temporary_file() {
                 .any(|n| n.to_string_lossy().starts_with(".m.svg."))
         });
         x.signal(sig);
-        let (status, _, text) = x.finish();
-        assert_eq!(
-            status.code(),
-            Some(130),
-            "{status:?}\n{}",
-            text.escape_debug()
-        );
-        assert!(text.contains("interrupted"), "{}", text.escape_debug());
-        assert!(left(home.path()).is_empty(), "{:?}", left(home.path()));
+        stopped_writing_nothing(x, home.path(), &format!("{sig:?}"));
     }
 }
 
@@ -187,22 +174,14 @@ fn cor_table_and_drop_test_fits_stop_on_a_signal_writing_nothing() {
         let mut x = Explorer::spawn(home.path(), Some("slow-work"), &args);
         x.wait_for("model runs,"); // the counter
         x.signal(sig);
-        let (status, _, text) = x.finish();
-        assert_eq!(
-            status.code(),
-            Some(130),
-            "{case:?}: {status:?}\n{}",
-            text.escape_debug()
-        );
-        assert!(text.contains("interrupted"), "{}", text.escape_debug());
-        assert!(left(home.path()).is_empty(), "{:?}", left(home.path()));
+        stopped_writing_nothing(x, home.path(), &format!("{case:?}"));
     }
 }
 
 #[test]
 fn a_drop_stops_on_a_signal_printing_nothing() {
-    // issue 28: `drop` looks at the watch before every bounce (and so do the drops of a fitted
-    // preset's intervals); it ran unwatched before and printed its whole table after a signal
+    // `drop` looks at the watch before every bounce, as do the drops of a fitted preset's
+    // intervals (issue 28): a signal stops it before its table is printed
     let home = tempfile::tempdir().unwrap();
     let args = [
         "drop",
@@ -219,14 +198,6 @@ fn a_drop_stops_on_a_signal_printing_nothing() {
     let mut x = Explorer::spawn(home.path(), Some("slow-work"), &args);
     x.wait_for("bounces,"); // the counter
     x.signal(Signal::INT);
-    let (status, _, text) = x.finish();
-    assert_eq!(
-        status.code(),
-        Some(130),
-        "{status:?}\n{}",
-        text.escape_debug()
-    );
-    assert!(text.contains("interrupted"), "{}", text.escape_debug());
+    let text = stopped_writing_nothing(x, home.path(), "drop");
     assert!(!text.contains("rebound"), "{}", text.escape_debug());
-    assert!(left(home.path()).is_empty(), "{:?}", left(home.path()));
 }

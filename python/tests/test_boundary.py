@@ -192,7 +192,7 @@ def test_ctrl_c_stops_a_drop_test_fit_promptly():
 
 def test_ctrl_c_stops_a_drop_in_its_intervals(tmp_path, monkeypatch):
     # a Hertz superball fitted and saved: its drop of 593 bounces runs again twice for each
-    # free parameter (the delta method's intervals), which ran unwatched before
+    # free parameter (the delta method's intervals), each bounce a look at Python's signals
     from test_intervals import binary
 
     home = tmp_path / "config"

@@ -196,11 +196,9 @@ fn bounce_intervals(
     setup: &DropSetup,
     watch: &super::budget::Watcher,
 ) -> anyhow::Result<Vec<BounceIntervals>> {
-    let bands = b.drop_intervals_watched(setup, watch).transpose();
-    if matches!(bands, Err(crate::api::BallError::Interrupted)) {
-        return Err(super::budget::Interrupted.into());
-    }
-    let Some(bands) = bands? else {
+    // a watch that said stop leaves the signal flag set: any error then exits 130
+    // (`cli::exit_code`)
+    let Some(bands) = b.drop_intervals_watched(setup, watch).transpose()? else {
         return Ok(Vec::new());
     };
     Ok(bands
