@@ -145,7 +145,7 @@ fn step(s: &Scaled, tf: f64) -> f64 {
 
 /// The search grid: τ_j = j h up to τ_f (the last point τ_f itself) and the normal motion there,
 /// read once for the whole contact (`NormalMotion::grid`): every phase searches on the same
-/// points, where it used to read the flow afresh from its own start.
+/// points, so the flow is read once a point whatever the number of phases.
 pub(crate) struct Grid {
     h: f64,
     points: Vec<PathPoint>,

@@ -130,7 +130,7 @@ mod tests {
         assert!(set.contains(&(x, y)), "({x}, {y})");
         assert!(x + 3 <= 40);
         // another tag where it would go: further along the curve, on the curve's own row
-        // there, a cell apart — not stacked a row above at the edge (the old placement)
+        // there, a cell apart, never a row off the curve
         let taken = [(y, x, x + 3)];
         let (x2, y2) = place(plot, &own, 3, &buf, &free(&taken, &[])).unwrap();
         assert!(set.contains(&(x2, y2)), "({x2}, {y2})");
