@@ -6,6 +6,7 @@
 mod pty;
 
 use pty::{Explorer, assert_restored, modes};
+use std::time::Duration;
 
 /// A half-sine pulse of 100 N over 3 ms, on a 60 µs clock that starts 1 ms before it.
 fn pulse() -> String {
@@ -45,7 +46,8 @@ fn o_names_a_bad_file_then_f_fits_and_shift_f_applies() {
     x.send(b"\r");
     x.wait_for("loaded");
     x.send(b"f");
-    x.wait_for("k_p");
+    // the fit runs in a debug build: near the default wait on a loaded machine (27–31 s seen)
+    x.wait_for_within("k_p", Duration::from_secs(120));
     x.wait_for("residual");
     // this trace's fit pins no k_r (λ → 0): F asks first, the second F applies (issue 27)
     x.send(b"F");
