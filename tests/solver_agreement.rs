@@ -470,3 +470,49 @@ fn answers_to_1e7_of_itself(p: &ImpactParams, law: ContactLaw) {
         tight.cor
     );
 }
+
+/// The stiff integrators' error estimates can pass steps far less accurate than rtol; a run
+/// they carried checks itself by its energy balance and, where that is looser than 100 rtol,
+/// runs again with DOPRI5 first (src/solver/numeric/mod.rs, `checked_run`). The reference at
+/// (λ, ζ) = (30, 40) under Hertz comes from two independent methods that agree on it to
+/// 4e-15: explicit Taylor steps of order 20 with no step limit (1 095 steps) and a Radau IIA
+/// of order 9 (BENCHMARKS.md, "Second session (hertzfast)"). The stiff cascade alone gave
+/// 0.99998462568 at rtol 1e-10 and 0.99998465660 at 1e-12: 6e-8 and 9e-8 off.
+#[test]
+fn stiff_runs_are_checked_by_their_energy_balance() {
+    const REFERENCE: f64 = 0.99998456324582;
+    let p = ImpactParams::from_normalized(30.0, 40.0, f64::INFINITY);
+    for rtol in [1e-10, 1e-12] {
+        let o = SolveOptions {
+            rtol,
+            ..SolveOptions::default()
+        }
+        .with_energy();
+        let r = simulate(&p, ContactLaw::Hertz, &o).unwrap();
+        assert!(
+            (r.cor - REFERENCE).abs() < 1e-11,
+            "rtol {rtol}: e = {} against {REFERENCE}",
+            r.cor
+        );
+    }
+    // stiff cells (2ζ(k + λ) > 2000 somewhere in the contact) that DOPRI5 can cross within its
+    // step budget at the default rtol: each balance closes to 100 rtol (the stiff cascade alone
+    // left 7.8e-8 … 4.2e-7)
+    let o = SolveOptions::default().with_energy();
+    let cells = [
+        (0.1, 1000.0),
+        (1.0, 1000.0),
+        (10.0, 100.0),
+        (30.0, 100.0),
+        (100.0, 40.0),
+    ];
+    for (lambda, zeta) in cells {
+        let p = ImpactParams::from_normalized(lambda, zeta, f64::INFINITY);
+        let r = simulate(&p, ContactLaw::Hertz, &o).unwrap();
+        let residual = r.energy.unwrap().relative_residual();
+        assert!(
+            residual < 100.0 * o.rtol,
+            "λ={lambda} ζ={zeta}: balance off by {residual:e}"
+        );
+    }
+}

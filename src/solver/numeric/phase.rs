@@ -190,15 +190,16 @@ impl Solout<f64, X> for Watcher<'_> {
 }
 
 /// Integrate one phase from (t0, x0) until a watched event or `t_stop`, down the integrator
-/// cascade from its entry (the stiff one when the dashpot is stiff there), or from `floor` if
-/// that is later; with `keep`, every accepted step's end is kept (`Integrated::knots`).
+/// cascade from its entry (the stiff one when the dashpot is stiff there, unless `explicit`
+/// asks DOPRI5 to try first), or from `floor` if that is later; with `keep`, every accepted
+/// step's end is kept (`Integrated::knots`).
 pub(super) fn integrate(
     imp: &Impact,
     (t0, x0): (f64, X),
     t_stop: f64,
     watches: Vec<Watch>,
     grid: &[f64],
-    (rtol, floor): (f64, usize),
+    (rtol, floor, explicit): (f64, usize, bool),
     keep: bool,
 ) -> Integrated {
     let mut w = Watcher {
@@ -221,7 +222,7 @@ pub(super) fn integrate(
     // then holds what was reached, and the phase goes on from there with the next integrator
     // of the cascade (see `integrator`). Only when the last one gives up is the phase failed:
     // never read as the horizon.
-    let entry = if imp.dashpot_rate(x0[0]) > STIFF {
+    let entry = if !explicit && imp.dashpot_rate(x0[0]) > STIFF {
         STIFF_ENTRY
     } else {
         0

@@ -60,6 +60,8 @@ pub(super) struct PhaseRunner<'a> {
     floor: usize,
     /// Keep every phase's steps (the flow the oblique impact reads, `flow`).
     keep: bool,
+    /// Every phase starts on DOPRI5, stiff or not (see `integrate` and `solve`'s recheck).
+    explicit: bool,
     kept: Vec<Kept>,
     /// A creep was finished in closed form.
     closed: bool,
@@ -89,6 +91,7 @@ impl<'a> PhaseRunner<'a> {
             flips_left: MAX_FLIPS,
             floor: 0,
             keep: false,
+            explicit: false,
             kept: Vec::new(),
             closed: false,
         }
@@ -97,6 +100,13 @@ impl<'a> PhaseRunner<'a> {
     /// The same runner keeping every phase's steps (see `flow`).
     pub(super) fn keeping(mut self) -> Self {
         self.keep = true;
+        self
+    }
+
+    /// The same runner starting every phase on DOPRI5, the stiff ones too: their integrators
+    /// take over only where DOPRI5 runs out of steps.
+    pub(super) fn explicit(mut self) -> Self {
+        self.explicit = true;
         self
     }
 
@@ -125,7 +135,7 @@ impl<'a> PhaseRunner<'a> {
             self.t_max,
             watches,
             self.rest,
-            (rtol, self.floor),
+            (rtol, self.floor, self.explicit),
             self.keep,
         );
         if self.keep {
