@@ -331,8 +331,8 @@ pub trait NormalMotion {
 pub enum Local<'a> {
     /// [`NormalPath::local`]'s series.
     Series(LocalFlow),
-    /// The closed form (`closed`), read anywhere.
-    Closed(&'a ClosedPath),
+    /// The closed form (`closed`), turned from the bracket's start.
+    Closed(closed::Near<'a>),
 }
 
 impl Local<'_> {
