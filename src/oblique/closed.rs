@@ -387,7 +387,16 @@ impl ClosedPath {
     /// The normal motion at τ (clamped to [0, τ_f]) and F̄'' there.
     pub fn with_curvature(&self, tau: f64) -> (PathPoint, f64) {
         let part = self.part(tau);
-        part.point(&part.basis(tau))
+        self.separated(tau, part.point(&part.basis(tau)))
+    }
+
+    /// F̄ = 0 from τ_f on: separation is where it returns to 0 (the root's z̄ − z̄_f is 0 but
+    /// for rounding, which would read as a force of a few ε).
+    fn separated(&self, tau: f64, (mut p, curvature): (PathPoint, f64)) -> (PathPoint, f64) {
+        if tau >= self.parts[1].end {
+            p.force = 0.0;
+        }
+        (p, curvature)
     }
 
     /// The motion on [a, b], read from the basis at a turned by [`Modes::basis_short`] where
@@ -416,7 +425,8 @@ impl Near<'_> {
             Some((i, a, b, basis)) if tau >= a && tau <= b => {
                 let part = &self.path.parts[i];
                 let turn = part.modes.basis_short(tau - a);
-                part.point(&part.modes.step(&basis, &turn))
+                let p = part.point(&part.modes.step(&basis, &turn));
+                self.path.separated(tau, p)
             }
             _ => self.path.with_curvature(tau),
         }
@@ -457,7 +467,12 @@ impl super::NormalMotion for ClosedPath {
                     since += 1;
                     part.modes.step(&b, &turn)
                 };
-                points.push(part.motion(&b));
+                let p = part.motion(&b);
+                points.push(if j == n {
+                    PathPoint { force: 0.0, ..p }
+                } else {
+                    p
+                });
                 j += 1;
             }
         }

@@ -66,8 +66,11 @@ impl NormalAt {
         };
         let params = ImpactParams { v0: vy, ..*params };
         // The linear law's normal motion in closed form where it answers (`closed`: a fifth of
-        // the exact solver's instructions), else the solver's flow.
-        if law == ContactLaw::Linear && opts.method.is_none() && opts.samples == 0 {
+        // the exact solver's instructions), else the solver's flow; at 90° always the solver's,
+        // so that the answer is `run`'s to the last bit (tests/oblique_laws.rs,
+        // `angle_90_is_run_on_every_law`).
+        let closed = law == ContactLaw::Linear && opts.method.is_none() && angle_deg != 90.0;
+        if closed && opts.samples == 0 {
             params.validate().map_err(SolveError::from)?;
             if let Some((normal, path)) = ClosedPath::solve(&params) {
                 return Ok(NormalAt {

@@ -114,9 +114,9 @@ fn the_normal_losses_are_the_audited_ones() {
 
 /// The closed-form normal motion (`closed`) against the exact solver's flow: the normal
 /// responses agree (COR, F_m, τ_m, τ_f), the motion F̄, F̄', ᾱ' agrees at every τ, and so do
-/// the oblique answers. Over every preset whose normal motion it answers at 25 m/s, 5–90°
-/// (flattening and not; the tennis ball's at every angle), it must answer for the tennis
-/// ball: the case the speed target is set on.
+/// the oblique answers. Over every preset at 25 m/s, 5–85° (flattening and not), it must
+/// answer for the tennis ball: the case the speed target is set on (at 90° `NormalAt` runs
+/// the exact solver, so that the answer is `run`'s to the last bit).
 #[test]
 fn the_closed_form_is_the_exact_flow() {
     use super::{ClosedPath, NormalMotion, Oblique, solve_with};
@@ -126,12 +126,8 @@ fn the_closed_form_is_the_exact_flow() {
     let mut answered = 0;
     for preset in crate::preset::Preset::embedded_all() {
         let ball = crate::Ball::from_preset(&preset.name).unwrap();
-        for angle in [5.0, 16.0, 30.0, 60.0, 90.0] {
-            let vy = if angle == 90.0 {
-                25.0
-            } else {
-                25.0 * f64::to_radians(angle).sin()
-            };
+        for angle in [5.0, 16.0, 30.0, 60.0, 85.0] {
+            let vy = 25.0 * f64::to_radians(angle).sin();
             let p = ImpactParams {
                 v0: vy,
                 ..ball.params
