@@ -22,18 +22,16 @@
 //!
 //! Where this does not hold — a pair that does not oscillate, a reload, an extremum inside a
 //! step that might hide a crossing, a rounding bound above 1e-13 of the COR or F̄_m —
-//! [`ClosedPath::solve`] returns `None` and the exact solver runs (`NormalAt`).
+//! `ClosedPath::solve` returns `None` and the exact solver runs (`NormalAt`).
 //! `the_closed_form_is_the_exact_flow` (src/oblique/tests.rs) holds the two together.
 
+use super::modes::{Modes, Rows, SHORT, START};
 use crate::model::contact::{Contact, ContactLaw};
 use crate::model::params::ImpactParams;
 use crate::solver::exact::PathPoint;
-use crate::solver::propagator::{isolated_root, lone_real_root};
 use crate::solver::roots::halley_bracketed_from;
 use crate::solver::{EventKind, History, ImpactResponse, Method, PhaseEvent};
 
-/// Rows kept of each component: f … f''' (τ_m's Halley steps on z̄' read z̄''').
-const ROWS: usize = 4;
 /// Most bracketing steps of one event.
 const MAX_STEPS: usize = 64;
 /// The relative precision the closed form must keep by its rounding bound, as the map's fast
@@ -42,163 +40,6 @@ const KEEP: f64 = 1e-13;
 /// Grid steps taken by the step's rotation before the basis is read exactly again (each step's
 /// rounding is relative to the basis: sixteen keep it near 1e-15, as `NormalPath::grid`).
 const EXACT_EVERY: usize = 16;
-
-/// The basis at δ = 0.
-const START: [f64; 3] = [1.0, 1.0, 0.0];
-
-/// A phase's modes: the real root r and the oscillating pair −σ ± iω of its cubic.
-#[derive(Debug, Clone, Copy, PartialEq)]
-struct Modes {
-    r: f64,
-    sigma: f64,
-    omega2: f64,
-    omega: f64,
-    /// (r + σ)² + ω², the real root's distance from the pair (squared).
-    gap: f64,
-}
-
-impl Modes {
-    /// The modes at slope k, or `None` unless the pair oscillates apart from the real root.
-    fn new(lambda: f64, zeta: f64, k: f64) -> Option<Modes> {
-        let cubic = [2.0 * zeta * (k + lambda), k, 2.0 * zeta * k * lambda];
-        // λ = 0 has the root 0 exactly, which Cardano would leave at a rounding's distance
-        let lone = if cubic[2] > 0.0 {
-            lone_real_root(cubic)
-        } else {
-            None
-        };
-        let (r, p1, p0) = lone.unwrap_or_else(|| isolated_root(cubic));
-        let sigma = 0.5 * p1;
-        let omega2 = p0 - sigma * sigma;
-        let gap = (r + sigma) * (r + sigma) + omega2;
-        let ok = omega2 > 0.0 && gap > 0.0 && sigma >= 0.0 && r.is_finite() && gap.is_finite();
-        ok.then(|| Modes {
-            r,
-            sigma,
-            omega2,
-            omega: omega2.sqrt(),
-            gap,
-        })
-    }
-
-    /// The basis at δ: e^{rδ}, e^{−σδ} cos ωδ, e^{−σδ} sin(ωδ)/ω.
-    fn basis(&self, d: f64) -> [f64; 3] {
-        let (sn, cs) = (self.omega * d).sin_cos();
-        let decay = (-self.sigma * d).exp();
-        [(self.r * d).exp(), decay * cs, decay * sn / self.omega]
-    }
-
-    /// The basis h after `b`: e^{rh} times the first, the pair turned by the angle sum
-    /// (C(δ+h) = C cos ωh − ω² S S(h), S(δ+h) = S cos ωh + C S(h)) and decayed; `turn` is
-    /// [`Modes::basis`] at h.
-    fn step(&self, b: &[f64; 3], turn: &[f64; 3]) -> [f64; 3] {
-        [
-            b[0] * turn[0],
-            b[1] * turn[1] - self.omega2 * b[2] * turn[2],
-            b[2] * turn[1] + b[1] * turn[2],
-        ]
-    }
-
-    /// [`Modes::basis`] at a short δ (every rate times |δ| ≤ [`SHORT`]) by the exponential's,
-    /// cosine's and sin x/x's series: a few dozen multiplications in place of `exp`, `exp`
-    /// and `sin_cos`.
-    fn basis_short(&self, d: f64) -> [f64; 3] {
-        let (cos, sinc) = cos_sinc(self.omega * d);
-        let decay = exp_short(-self.sigma * d);
-        [exp_short(self.r * d), decay * cos, decay * sinc * d]
-    }
-
-    /// Fastest |s| of the three modes.
-    fn fastest(&self) -> f64 {
-        self.r
-            .abs()
-            .max((self.sigma * self.sigma + self.omega2).sqrt())
-    }
-
-    /// A component's rows from f, f', f'' at δ = 0: row n = (c_r rⁿ, c_n, s_n), so that
-    /// f⁽ⁿ⁾(δ) = row n · basis(δ), since (e^{−σδ}(c C + s S))' = e^{−σδ}((s − σc) C +
-    /// (−ω²c − σs) S).
-    fn rows(&self, [f, d1, d2]: [f64; 3]) -> Rows {
-        let (r, sg, w2) = (self.r, self.sigma, self.omega2);
-        let p0 = sg * sg + w2;
-        let cr = (d2 + 2.0 * sg * d1 + p0 * f) / self.gap;
-        let cc = f - cr;
-        let cs = d1 - r * cr + sg * cc;
-        let mut rows = [[0.0; 3]; ROWS];
-        let (mut a, mut c, mut s) = (cr, cc, cs);
-        for row in &mut rows {
-            *row = [a, c, s];
-            (a, c, s) = (a * r, s - sg * c, -w2 * c - sg * s);
-        }
-        let size = (d2.abs() + 2.0 * (sg * d1).abs() + p0 * f.abs()) / self.gap;
-        Rows { rows, size }
-    }
-}
-
-/// Largest |rate × δ| for [`Modes::basis_short`]: the series' first terms left out,
-/// x¹⁷/17! and x¹⁸/18!, are below 1e-25 at x = 1/4.
-const SHORT: f64 = 0.25;
-
-/// 1/k!, k ≤ 17.
-const INV_FACTORIAL: [f64; 18] = {
-    let mut c = [1.0; 18];
-    let mut k = 1;
-    while k < 18 {
-        c[k] = c[k - 1] / k as f64;
-        k += 1;
-    }
-    c
-};
-
-/// eˣ for |x| ≤ [`SHORT`]: Σ xᵏ/k!, k ≤ 16.
-fn exp_short(x: f64) -> f64 {
-    (0..=16)
-        .rev()
-        .fold(0.0, |sum, k| sum * x + INV_FACTORIAL[k])
-}
-
-/// (cos x, sin(x)/x) for |x| ≤ [`SHORT`], each to x¹⁶.
-fn cos_sinc(x: f64) -> (f64, f64) {
-    let x2 = x * x;
-    let sign = |k: usize| if k % 2 == 0 { 1.0 } else { -1.0 };
-    let cos = (0..=8)
-        .rev()
-        .fold(0.0, |sum, k| sum * x2 + sign(k) * INV_FACTORIAL[2 * k]);
-    let sinc = (0..=8)
-        .rev()
-        .fold(0.0, |sum, k| sum * x2 + sign(k) * INV_FACTORIAL[2 * k + 1]);
-    (cos, sinc)
-}
-
-/// One component's derivatives as rows over the basis, and the scale of its coefficients'
-/// rounding (Σ|terms|/gap of c_r as it was formed).
-#[derive(Debug, Clone, Copy)]
-struct Rows {
-    rows: [[f64; 3]; ROWS],
-    size: f64,
-}
-
-impl Rows {
-    /// f⁽ⁿ⁾ at a basis.
-    fn at(&self, n: usize, b: &[f64; 3]) -> f64 {
-        let [a, c, s] = self.rows[n];
-        a * b[0] + c * b[1] + s * b[2]
-    }
-
-    /// A bound on the rounding of f at δ (basis `b`): ε times the terms summed and the
-    /// coefficients' own rounding carried by the modes, each exponential's argument good to
-    /// ε·rate·δ. Only its order of magnitude matters: it tells the cases that keep [`KEEP`]
-    /// from those (a small COR, a near-triple root) that do not.
-    fn rounding(&self, m: &Modes, d: f64, b: &[f64; 3]) -> f64 {
-        let [a, c, s] = self.rows[0];
-        let decay = (b[1] * b[1] + m.omega2 * b[2] * b[2]).sqrt();
-        let sm = decay * d.min(1.0 / m.omega);
-        let terms = a.abs() * b[0] + c.abs() * decay + s.abs() * sm;
-        let carried = self.size * (b[0] + decay * (1.0 + (m.r.abs() + m.sigma) / m.omega));
-        let grow = 1.0 + (m.r.abs() + m.sigma + m.omega) * d;
-        8.0 * f64::EPSILON * grow * (terms + carried)
-    }
-}
 
 /// One phase: where it starts and ends (τ), its slope, modes, and z̄ − s and ᾱ' as rows.
 #[derive(Debug, Clone)]
@@ -243,7 +84,7 @@ pub struct ClosedPath {
 /// from `g`: bracketed by steps of `step`, found by Halley's method. `None` where a step ends
 /// with g rising after falling (a minimum inside may hide a crossing), where `no_rise` and a
 /// step ends with g' > 0 or g'' turning from positive to negative (a reload may come), or
-/// where none comes within [`MAX_STEPS`]. Counts the evaluations in `evals`.
+/// where none comes within `MAX_STEPS`. Counts the evaluations in `evals`.
 fn first_fall(
     g: impl Fn(f64) -> (f64, f64, f64),
     (g0, d0, dd0): (f64, f64, f64),
@@ -399,7 +240,7 @@ impl ClosedPath {
         (p, curvature)
     }
 
-    /// The motion on [a, b], read from the basis at a turned by [`Modes::basis_short`] where
+    /// The motion on [a, b], read from the basis at a turned by `Modes::basis_short` where
     /// [a, b] lies inside one phase and is short against its modes; else read anywhere.
     pub fn near(&self, a: f64, b: f64) -> Near<'_> {
         let i = usize::from(a > self.parts[0].end);
@@ -411,7 +252,7 @@ impl ClosedPath {
     }
 }
 
-/// [`ClosedPath::near`]: the path, and the phase, the bracket and the basis at its start.
+/// `ClosedPath::near`: the path, and the phase, the bracket and the basis at its start.
 #[derive(Debug, Clone, Copy)]
 pub struct Near<'a> {
     path: &'a ClosedPath,
@@ -444,7 +285,7 @@ impl super::NormalMotion for ClosedPath {
         self.parts.iter().map(|p| p.end).collect()
     }
     /// The grid stepped: each phase's basis read exactly at its first point, every
-    /// [`EXACT_EVERY`] steps and at τ_f, turned by [`Modes::step`] in between (a few
+    /// `EXACT_EVERY` steps and at τ_f, turned by `Modes::step` in between (a few
     /// multiplications a point).
     fn grid(&self, h: f64) -> Vec<PathPoint> {
         let tf = self.end();
@@ -452,7 +293,12 @@ impl super::NormalMotion for ClosedPath {
         let mut points = Vec::with_capacity(n + 1);
         let mut j = 0;
         for (i, part) in self.parts.iter().enumerate() {
-            let turn = part.modes.basis(h);
+            // the step's basis by its series where the step is short against the modes
+            let turn = if part.modes.fastest() * h <= SHORT {
+                part.modes.basis_short(h)
+            } else {
+                part.modes.basis(h)
+            };
             let (mut b, mut since) = ([0.0; 3], EXACT_EVERY);
             // this phase's points: τ_j up to its end (the first), up to τ_f (the last)
             while j <= n {
@@ -529,43 +375,6 @@ impl Ends {
             history: History::default(),
             steps: self.steps,
             stiff: false,
-        }
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// The short basis (series) is the basis (exp, exp, sin_cos) to a few ε of its terms'
-    /// size, over steps up to [`SHORT`] of the fastest rate, on the tennis ball's loading and
-    /// a flattened unloading's modes and a stiffer pair's; the grid's turned basis is too.
-    #[test]
-    fn the_short_basis_is_the_basis() {
-        for (lambda, zeta, k) in [(1.0, 0.09, 1.0), (1.0, 0.09, 2.7), (0.4, 0.6, 1.0)] {
-            let m = Modes::new(lambda, zeta, k).unwrap();
-            for f in [-1.0, -0.3, 0.01, 0.5, 1.0] {
-                let d = f * SHORT / m.fastest();
-                let (a, b) = (m.basis_short(d), m.basis(d));
-                let size = b[0].abs() + b[1].abs() + m.omega * b[2].abs();
-                for i in 0..3 {
-                    let scale = if i == 2 { m.omega } else { 1.0 };
-                    let miss = (a[i] - b[i]).abs() * scale;
-                    assert!(
-                        miss <= 4.0 * f64::EPSILON * size,
-                        "{lambda} {zeta} {k} δ {d}"
-                    );
-                }
-            }
-            let (h, tau) = (0.1, 0.7);
-            let turned = m.step(&m.basis(tau), &m.basis(h));
-            let there = m.basis(tau + h);
-            for i in 0..3 {
-                assert!(
-                    (turned[i] - there[i]).abs() < 8.0 * f64::EPSILON,
-                    "{lambda} {zeta}"
-                );
-            }
         }
     }
 }

@@ -14,6 +14,7 @@ mod closed;
 pub mod court;
 mod energy;
 mod frictions;
+mod modes;
 mod normal;
 pub mod reference;
 mod tangential;
