@@ -329,6 +329,8 @@ pub trait NormalMotion {
 
 /// The normal motion on a bracket of the switches' search, read with F̄'': the exact flow's
 /// power series from the bracket's start, or the closed form itself.
+// a temporary on the stack, one a bracket: boxing the series would allocate for each
+#[allow(clippy::large_enum_variant)]
 pub enum Local<'a> {
     /// [`NormalPath::local`]'s series.
     Series(LocalFlow),

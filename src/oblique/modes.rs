@@ -124,7 +124,7 @@ fn exp_short(x: f64) -> f64 {
 /// (cos x, sin(x)/x) for |x| ≤ `SHORT`, each to x¹⁶.
 fn cos_sinc(x: f64) -> (f64, f64) {
     let x2 = x * x;
-    let sign = |k: usize| if k % 2 == 0 { 1.0 } else { -1.0 };
+    let sign = |k: usize| if k.is_multiple_of(2) { 1.0 } else { -1.0 };
     let cos = (0..=8)
         .rev()
         .fold(0.0, |sum, k| sum * x2 + sign(k) * INV_FACTORIAL[2 * k]);

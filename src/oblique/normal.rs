@@ -166,6 +166,8 @@ impl NormalAt {
 }
 
 /// The normal motion a [`NormalAt`] holds: the closed form, or a solver's flow.
+// one a `NormalAt`, read at every point of its impacts: kept inline, not boxed
+#[allow(clippy::large_enum_variant)]
 enum Motion {
     Closed(ClosedPath),
     Flow(Flow),
