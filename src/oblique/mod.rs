@@ -10,9 +10,11 @@
 //! it slides, the switches root-found. [`mod@reference`] integrates the same model independently
 //! (DOP853 with events at every switch); tests/oblique.rs holds the two together.
 
+mod closed;
 pub mod court;
 mod energy;
 mod frictions;
+mod modes;
 mod normal;
 pub mod reference;
 mod tangential;
@@ -23,6 +25,7 @@ use crate::model::contact::ContactLaw;
 use crate::model::params::ImpactParams;
 use crate::solver::exact::{LocalFlow, NormalPath, PathPoint};
 use crate::solver::{Flow, ImpactResponse, SolveError, SolveOptions, simulate_flow};
+pub use closed::ClosedPath;
 pub use frictions::solve_frictions;
 pub use normal::NormalAt;
 use serde::Serialize;
@@ -317,9 +320,36 @@ pub trait NormalMotion {
     fn grid(&self, h: f64) -> Vec<PathPoint> {
         grid_by_points(self, h)
     }
-    /// The motion on [a, b] as a cheaper series, when the flow has one (`None`: read `at`).
-    fn local(&self, _a: f64, _b: f64) -> Option<LocalFlow> {
+    /// The motion on [a, b] read with F̄'' for Newton's steps, when the flow has a cheaper
+    /// reading there or a closed form (`None`: read `at`).
+    fn local(&self, _a: f64, _b: f64) -> Option<Local<'_>> {
         None
+    }
+}
+
+/// The normal motion on a bracket of the switches' search, read with F̄'': the exact flow's
+/// power series from the bracket's start, or the closed form itself.
+// a temporary on the stack, one a bracket: boxing the series would allocate for each
+#[allow(clippy::large_enum_variant)]
+pub enum Local<'a> {
+    /// [`NormalPath::local`]'s series.
+    Series(LocalFlow),
+    /// The closed form (`closed`), turned from the bracket's start.
+    Closed(closed::Near<'a>),
+}
+
+impl Local<'_> {
+    /// The normal motion at τ.
+    pub fn at(&self, tau: f64) -> PathPoint {
+        self.at_with_curvature(tau).0
+    }
+
+    /// The normal motion at τ and F̄'' there.
+    pub fn at_with_curvature(&self, tau: f64) -> (PathPoint, f64) {
+        match self {
+            Local::Series(l) => l.at_with_curvature(tau),
+            Local::Closed(c) => c.with_curvature(tau),
+        }
     }
 }
 
@@ -345,8 +375,8 @@ impl NormalMotion for NormalPath {
     fn grid(&self, h: f64) -> Vec<PathPoint> {
         NormalPath::grid(self, h)
     }
-    fn local(&self, a: f64, b: f64) -> Option<LocalFlow> {
-        NormalPath::local(self, a, b)
+    fn local(&self, a: f64, b: f64) -> Option<Local<'_>> {
+        NormalPath::local(self, a, b).map(Local::Series)
     }
 }
 
@@ -366,9 +396,9 @@ impl NormalMotion for Flow {
             Flow::Numeric(_) => grid_by_points(self, h),
         }
     }
-    fn local(&self, a: f64, b: f64) -> Option<LocalFlow> {
+    fn local(&self, a: f64, b: f64) -> Option<Local<'_>> {
         match self {
-            Flow::Exact(p) => p.local(a, b),
+            Flow::Exact(p) => p.local(a, b).map(Local::Series),
             Flow::Numeric(_) => None,
         }
     }

@@ -1,0 +1,202 @@
+//! A phase of the linear law's normal motion in closed form (`closed`): its modes — the
+//! cubic's real root r and oscillating pair −σ ± iω — the basis e^{rδ}, e^{−σδ} cos ωδ,
+//! e^{−σδ} sin(ωδ)/ω they span, read exactly, turned by a step, or by short series, and a
+//! component of the state as rows over that basis (docs/oblique.md §2).
+
+use crate::solver::propagator::{isolated_root, lone_real_root};
+/// Rows kept of each component: f … f''' (τ_m's Halley steps on z̄' read z̄''').
+pub(super) const ROWS: usize = 4;
+
+/// The basis at δ = 0.
+pub(super) const START: [f64; 3] = [1.0, 1.0, 0.0];
+
+/// A phase's modes: the real root r and the oscillating pair −σ ± iω of its cubic.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(super) struct Modes {
+    pub(super) r: f64,
+    pub(super) sigma: f64,
+    pub(super) omega2: f64,
+    pub(super) omega: f64,
+    /// (r + σ)² + ω², the real root's distance from the pair (squared).
+    pub(super) gap: f64,
+}
+
+impl Modes {
+    /// The modes at slope k, or `None` unless the pair oscillates apart from the real root.
+    pub(super) fn new(lambda: f64, zeta: f64, k: f64) -> Option<Modes> {
+        let cubic = [2.0 * zeta * (k + lambda), k, 2.0 * zeta * k * lambda];
+        // λ = 0 has the root 0 exactly, which Cardano would leave at a rounding's distance
+        let lone = if cubic[2] > 0.0 {
+            lone_real_root(cubic)
+        } else {
+            None
+        };
+        let (r, p1, p0) = lone.unwrap_or_else(|| isolated_root(cubic));
+        let sigma = 0.5 * p1;
+        let omega2 = p0 - sigma * sigma;
+        let gap = (r + sigma) * (r + sigma) + omega2;
+        let ok = omega2 > 0.0 && gap > 0.0 && sigma >= 0.0 && r.is_finite() && gap.is_finite();
+        ok.then(|| Modes {
+            r,
+            sigma,
+            omega2,
+            omega: omega2.sqrt(),
+            gap,
+        })
+    }
+
+    /// The basis at δ: e^{rδ}, e^{−σδ} cos ωδ, e^{−σδ} sin(ωδ)/ω.
+    pub(super) fn basis(&self, d: f64) -> [f64; 3] {
+        let (sn, cs) = (self.omega * d).sin_cos();
+        let decay = (-self.sigma * d).exp();
+        [(self.r * d).exp(), decay * cs, decay * sn / self.omega]
+    }
+
+    /// The basis h after `b`: e^{rh} times the first, the pair turned by the angle sum
+    /// (C(δ+h) = C cos ωh − ω² S S(h), S(δ+h) = S cos ωh + C S(h)) and decayed; `turn` is
+    /// `Modes::basis` at h.
+    pub(super) fn step(&self, b: &[f64; 3], turn: &[f64; 3]) -> [f64; 3] {
+        [
+            b[0] * turn[0],
+            b[1] * turn[1] - self.omega2 * b[2] * turn[2],
+            b[2] * turn[1] + b[1] * turn[2],
+        ]
+    }
+
+    /// `Modes::basis` at a short δ (every rate times |δ| ≤ `SHORT`) by the exponential's,
+    /// cosine's and sin x/x's series: a few dozen multiplications in place of `exp`, `exp`
+    /// and `sin_cos`.
+    pub(super) fn basis_short(&self, d: f64) -> [f64; 3] {
+        let (cos, sinc) = cos_sinc(self.omega * d);
+        let decay = exp_short(-self.sigma * d);
+        [exp_short(self.r * d), decay * cos, decay * sinc * d]
+    }
+
+    /// Fastest |s| of the three modes.
+    pub(super) fn fastest(&self) -> f64 {
+        self.r
+            .abs()
+            .max((self.sigma * self.sigma + self.omega2).sqrt())
+    }
+
+    /// A component's rows from f, f', f'' at δ = 0: row n = (c_r rⁿ, c_n, s_n), so that
+    /// f⁽ⁿ⁾(δ) = row n · basis(δ), since (e^{−σδ}(c C + s S))' = e^{−σδ}((s − σc) C +
+    /// (−ω²c − σs) S).
+    pub(super) fn rows(&self, [f, d1, d2]: [f64; 3]) -> Rows {
+        let (r, sg, w2) = (self.r, self.sigma, self.omega2);
+        let p0 = sg * sg + w2;
+        let cr = (d2 + 2.0 * sg * d1 + p0 * f) / self.gap;
+        let cc = f - cr;
+        let cs = d1 - r * cr + sg * cc;
+        let mut rows = [[0.0; 3]; ROWS];
+        let (mut a, mut c, mut s) = (cr, cc, cs);
+        for row in &mut rows {
+            *row = [a, c, s];
+            (a, c, s) = (a * r, s - sg * c, -w2 * c - sg * s);
+        }
+        let size = (d2.abs() + 2.0 * (sg * d1).abs() + p0 * f.abs()) / self.gap;
+        Rows { rows, size }
+    }
+}
+
+/// Largest |rate × δ| for `Modes::basis_short`: the series' first terms left out,
+/// x¹⁷/17! and x¹⁸/18!, are below 1e-25 at x = 1/4.
+pub(super) const SHORT: f64 = 0.25;
+
+/// 1/k!, k ≤ 17.
+const INV_FACTORIAL: [f64; 18] = {
+    let mut c = [1.0; 18];
+    let mut k = 1;
+    while k < 18 {
+        c[k] = c[k - 1] / k as f64;
+        k += 1;
+    }
+    c
+};
+
+/// eˣ for |x| ≤ `SHORT`: Σ xᵏ/k!, k ≤ 16.
+fn exp_short(x: f64) -> f64 {
+    (0..=16)
+        .rev()
+        .fold(0.0, |sum, k| sum * x + INV_FACTORIAL[k])
+}
+
+/// (cos x, sin(x)/x) for |x| ≤ `SHORT`, each to x¹⁶.
+fn cos_sinc(x: f64) -> (f64, f64) {
+    let x2 = x * x;
+    let sign = |k: usize| if k.is_multiple_of(2) { 1.0 } else { -1.0 };
+    let cos = (0..=8)
+        .rev()
+        .fold(0.0, |sum, k| sum * x2 + sign(k) * INV_FACTORIAL[2 * k]);
+    let sinc = (0..=8)
+        .rev()
+        .fold(0.0, |sum, k| sum * x2 + sign(k) * INV_FACTORIAL[2 * k + 1]);
+    (cos, sinc)
+}
+
+/// One component's derivatives as rows over the basis, and the scale of its coefficients'
+/// rounding (Σ|terms|/gap of c_r as it was formed).
+#[derive(Debug, Clone, Copy)]
+pub(super) struct Rows {
+    rows: [[f64; 3]; ROWS],
+    size: f64,
+}
+
+impl Rows {
+    /// f⁽ⁿ⁾ at a basis.
+    pub(super) fn at(&self, n: usize, b: &[f64; 3]) -> f64 {
+        let [a, c, s] = self.rows[n];
+        a * b[0] + c * b[1] + s * b[2]
+    }
+
+    /// A bound on the rounding of f at δ (basis `b`): ε times the terms summed and the
+    /// coefficients' own rounding carried by the modes, each exponential's argument good to
+    /// ε·rate·δ. Only its order of magnitude matters: it tells the cases that keep 1e-13
+    /// from those (a small COR, a near-triple root) that do not (`closed`'s `KEEP`).
+    pub(super) fn rounding(&self, m: &Modes, d: f64, b: &[f64; 3]) -> f64 {
+        let [a, c, s] = self.rows[0];
+        let decay = (b[1] * b[1] + m.omega2 * b[2] * b[2]).sqrt();
+        let sm = decay * d.min(1.0 / m.omega);
+        let terms = a.abs() * b[0] + c.abs() * decay + s.abs() * sm;
+        let carried = self.size * (b[0] + decay * (1.0 + (m.r.abs() + m.sigma) / m.omega));
+        let grow = 1.0 + (m.r.abs() + m.sigma + m.omega) * d;
+        8.0 * f64::EPSILON * grow * (terms + carried)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The short basis (series) is the basis (exp, exp, sin_cos) to a few ε of its terms'
+    /// size, over steps up to `SHORT` of the fastest rate, on the tennis ball's loading and
+    /// a flattened unloading's modes and a stiffer pair's; the grid's turned basis is too.
+    #[test]
+    fn the_short_basis_is_the_basis() {
+        for (lambda, zeta, k) in [(1.0, 0.09, 1.0), (1.0, 0.09, 2.7), (0.4, 0.6, 1.0)] {
+            let m = Modes::new(lambda, zeta, k).unwrap();
+            for f in [-1.0, -0.3, 0.01, 0.5, 1.0] {
+                let d = f * SHORT / m.fastest();
+                let (a, b) = (m.basis_short(d), m.basis(d));
+                let size = b[0].abs() + b[1].abs() + m.omega * b[2].abs();
+                for i in 0..3 {
+                    let scale = if i == 2 { m.omega } else { 1.0 };
+                    let miss = (a[i] - b[i]).abs() * scale;
+                    assert!(
+                        miss <= 4.0 * f64::EPSILON * size,
+                        "{lambda} {zeta} {k} δ {d}"
+                    );
+                }
+            }
+            let (h, tau) = (0.1, 0.7);
+            let turned = m.step(&m.basis(tau), &m.basis(h));
+            let there = m.basis(tau + h);
+            for i in 0..3 {
+                assert!(
+                    (turned[i] - there[i]).abs() < 8.0 * f64::EPSILON,
+                    "{lambda} {zeta}"
+                );
+            }
+        }
+    }
+}
