@@ -70,9 +70,12 @@ pub struct ObliqueFit {
     pub on_bound: Vec<&'static str>,
 }
 
-/// The model runs one evaluation costs, in linear-law impacts: an oblique impact is priced
-/// as ten (benches/oblique.rs: 14.6 µs against the normal impact's 2.4 µs, BENCHMARKS.md).
-const OBLIQUE_COST: u64 = 10;
+/// What one row of one evaluation costs, in linear-law impacts: a row's normal impact is
+/// solved once (`NormalAt`), and an evaluation runs only its tangential motion — 9.25 k
+/// instructions a row against 12.56 k for the row's normal impact alone (callgrind, 27 rows
+/// of 8–75°, `evaluation_cost` in tests/fit_oblique_coverage.rs; BENCHMARKS.md "The oblique
+/// fit's evaluations"): 0.74 of an impact, priced as one.
+const OBLIQUE_COST: u64 = 1;
 
 struct Problem<'a> {
     rows: &'a [ObliqueRow],
