@@ -285,6 +285,29 @@ impl App {
         }
     }
 
+    /// The explorer opened on the oblique view at θ, ω, μ (`bouncelab --angle DEG --spin W
+    /// --friction MU`; `None`: the view's default), each checked by the library's rule: an
+    /// error is `oblique`'s message ("invalid angle: 95 (must lie in (0, 90] degrees)").
+    pub fn with_oblique(
+        mut self,
+        [angle, spin, friction]: [Option<f64>; 3],
+    ) -> Result<App, String> {
+        let given = [
+            (ObliqueParam::Angle, angle),
+            (ObliqueParam::Spin, spin),
+            (ObliqueParam::Friction, friction),
+        ];
+        for (param, value) in given {
+            if let Some(v) = value {
+                let v = param.library_check(v)?;
+                self.oblique.set(param, v);
+            }
+        }
+        self.view = View::Oblique;
+        self.refresh();
+        Ok(self)
+    }
+
     /// `e` in the oblique view: the impact's charts and numbers
     /// (src/tui/views/oblique/export.rs), headed by `y`'s `bouncelab oblique` line; the
     /// impact is computed in `update` itself, so there is nothing to wait for.
