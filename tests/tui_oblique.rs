@@ -272,13 +272,13 @@ fn keys_step_select_and_type_in_the_library_s_ranges() {
     let before = app.oblique_view().response().unwrap().cor_normal;
     press(&mut app, &[KeyCode::Char('L')]);
     assert!(app.oblique_view().response().unwrap().cor_normal < before);
-    // `e` exports nothing here and says what does
-    press(&mut app, &[KeyCode::Char('e')]);
+    // `e` exports the impact's charts (tests/tui_oblique_export.rs writes them)
+    let effects = app.update(bouncelab::tui::action::Action::Export);
     assert!(
-        app.message()
-            .unwrap()
-            .text
-            .contains("bouncelab oblique --history")
+        effects
+            .iter()
+            .any(|e| matches!(e, bouncelab::tui::app::Effect::Export(_))),
+        "{effects:?}"
     );
     // `t` the map: arrows move the cursor cell by cell, held in the grid; `n` the quantity
     press(&mut app, &[KeyCode::Char('t')]);

@@ -1,6 +1,6 @@
 //! The explorer's own options (issue 29 item 2): every option `run` takes for a preset ball —
 //! `--params`, `--law`, `--mass`, `--radius`, `--k-p`, `--damping`, `--k-r`, `--z-p`, `--v0`,
-//! `--lambda`, `--zeta` — so that `bouncelab --preset golf --law hertz --v0 3 --lambda 0.5`
+//! `--lambda`, `--zeta` — and the oblique view's `--angle`, `--spin`, `--friction` — so that `bouncelab --preset golf --law hertz --v0 3 --lambda 0.5`
 //! opens the explorer in the state `bouncelab run` with the same options runs, and the line
 //! `y` shows (the `run` line) gives that state back without `run`. The ball is built by
 //! `run`'s own steps ([`BallArgs::resolve`], [`ball::set_lambda_zeta`]).
@@ -31,6 +31,15 @@ pub struct ExplorerArgs {
     /// ζ = √(m K_p)/(2c) the explorer opens on (c moves; Eq. 24)
     #[arg(long, value_name = "Z", value_parser = super::number::number, allow_hyphen_values = true)]
     pub zeta: Option<f64>,
+    /// θ (degrees to the surface, (0, 90]): the explorer opens on its oblique view (`i`)
+    #[arg(long, value_name = "DEG", value_parser = super::number::number, allow_hyphen_values = true)]
+    pub angle: Option<f64>,
+    /// ω (rad/s, > 0 topspin): the explorer opens on its oblique view
+    #[arg(long, value_name = "RAD_PER_S", value_parser = super::number::number, allow_hyphen_values = true)]
+    pub spin: Option<f64>,
+    /// μ: the explorer opens on its oblique view
+    #[arg(long, value_name = "MU", value_parser = super::number::number, allow_hyphen_values = true)]
+    pub friction: Option<f64>,
     /// A session the explorer's `S` saved: the explorer opens in it again (docs/explorer.md)
     #[arg(long, value_name = "FILE", conflicts_with_all = ["preset", "config"])]
     pub session: Option<std::path::PathBuf>,
@@ -52,6 +61,9 @@ impl ExplorerArgs {
             ("--v0", self.v0.is_some()),
             ("--lambda", self.lambda.is_some()),
             ("--zeta", self.zeta.is_some()),
+            ("--angle", self.angle.is_some()),
+            ("--spin", self.spin.is_some()),
+            ("--friction", self.friction.is_some()),
             ("--session", self.session.is_some()),
         ]
         .into_iter()
@@ -94,6 +106,12 @@ impl ExplorerArgs {
         let mut b = args.resolve(self.v0)?;
         ball::set_lambda_zeta(&mut b.params, self.lambda, self.zeta)?;
         let radius = b.measured.as_ref().map(|m| m.radius);
-        Ok(App::new(entry.preset, color).with_start(b.params, b.law, radius))
+        let app = App::new(entry.preset, color).with_start(b.params, b.law, radius);
+        let oblique = [self.angle, self.spin, self.friction];
+        if oblique.iter().all(Option::is_none) {
+            return Ok(app);
+        }
+        // `oblique`'s own checks and messages (tests/cli_explorer_oblique.rs)
+        app.with_oblique(oblique).map_err(|e| anyhow::anyhow!(e))
     }
 }

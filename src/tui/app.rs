@@ -224,11 +224,6 @@ impl App {
             Action::Export if self.view == View::Drop => self.warn(
                 "the drop view has no export: `bouncelab drop --format csv` writes its data".into(),
             ),
-            Action::Export if self.view == View::Oblique => self.warn(
-                "the oblique view has no export: `bouncelab oblique --history --format csv` \
-                 writes its data (`y` is not its line)"
-                    .into(),
-            ),
             Action::Export => self.export_wanted = true,
             Action::OpenPicker => return vec![Effect::ListPresets],
             Action::PresetsListed(..) | Action::PickerMove(_) | Action::PickerChoose => {
@@ -410,6 +405,9 @@ impl App {
     fn prepare_export(&mut self) -> Option<Effect> {
         if self.view == View::Map {
             return self.prepare_map_export();
+        }
+        if self.view == View::Oblique {
+            return self.prepare_oblique_export();
         }
         if !self.sweeps.wanted.is_empty() {
             self.info("export waits for the COR-vs-speed sweep…".into());

@@ -70,9 +70,12 @@ pub struct ObliqueFit {
     pub on_bound: Vec<&'static str>,
 }
 
-/// The model runs one evaluation costs, in linear-law impacts: an oblique impact is priced
-/// as ten (benches/oblique.rs: 14.6 µs against the normal impact's 2.4 µs, BENCHMARKS.md).
-const OBLIQUE_COST: u64 = 10;
+/// What one row of one evaluation costs, in linear-law impacts: a row's normal impact is
+/// solved once (`NormalAt`), and an evaluation runs only its tangential motion — 9.25 k
+/// instructions a row against 12.56 k for the row's normal impact alone (callgrind, 27 rows
+/// of 8–75°, `evaluation_cost` in tests/fit_oblique_coverage.rs; BENCHMARKS.md "The oblique
+/// fit's evaluations"): 0.74 of an impact, priced as one.
+const OBLIQUE_COST: u64 = 1;
 
 struct Problem<'a> {
     rows: &'a [ObliqueRow],
@@ -192,7 +195,8 @@ pub fn fit_oblique(
     ];
     let starts = starting_points(&x0[..vars]);
     let run = (rows.len() as u64) * OBLIQUE_COST * work::cost(start.law).min(4);
-    let iterations = work::fit_iterations(run, vars, starts.len() + 1, start.law, || {
+    let refits = if spins { REFINED } else { 0 };
+    let iterations = work::fit_iterations(run, vars, starts.len() + refits, start.law, || {
         format!("an oblique fit of {vars} parameters to {} rows", rows.len())
     })?;
     let (lo, hi) = bounds(&x0[..vars]);
@@ -207,20 +211,26 @@ pub fn fit_oblique(
             MultiFitError::NoAnswer
         }
     };
-    let mut best = minimize_from(&p, starts, &lo, &hi, opts).ok_or_else(|| stopped(&p))?;
+    let found = minimize_each(&p, starts, &lo, &hi, opts).ok_or_else(|| stopped(&p))?;
+    let mut iterations: usize = found.iter().map(|s| s.iterations).sum();
+    let mut best = found[0].clone();
     if spins {
         // weigh the spins by the scatter of the two kinds, then fit again from there (as a
-        // COR table of mixed kinds is, `multi::fit_cor`)
+        // COR table of mixed kinds is, `multi::fit_cor`) — from each of the best distinct
+        // minima, not only the best: the weights move the minima, and the one that was best
+        // under the first weights need not be under the second
+        // (`spins_do_not_stop_in_a_local_minimum`, tests/fit_oblique_coverage.rs)
         let pred = p.predict(&best.x).ok_or(MultiFitError::NoAnswer)?;
         let (vx, spin) = rms_pair(&pred, rows);
         if vx > 0.0 && spin > 0.0 {
             p.spin_weight.set(vx / spin);
-            let its = best.iterations;
-            best = minimize_from(&p, vec![best.x.clone()], &lo, &hi, opts)
-                .ok_or_else(|| stopped(&p))?;
-            best.iterations += its;
+            let again = distinct(&found, REFINED);
+            let refined = minimize_each(&p, again, &lo, &hi, opts).ok_or_else(|| stopped(&p))?;
+            iterations += refined.iter().map(|s| s.iterations).sum::<usize>();
+            best = refined[0].clone();
         }
     }
+    best.iterations = iterations;
     finish(&p, best, &lo, &hi)
 }
 
@@ -237,23 +247,37 @@ fn apparent_friction(rows: &[ObliqueRow], p: &Problem) -> f64 {
         .fold(0.0, f64::max)
 }
 
-/// The start and a few others (μ halved and doubled, K_t a decade either way): the outgoing
-/// motion is piecewise smooth in them (a row turns from sliding to gripping), and a start on
-/// the wrong side of a turn can stall.
+/// The start and others around it: K_t a factor 3 and 10 either way, μ halved and doubled,
+/// and with spins κ a factor 1.4 either way at each K_t. The outgoing motion is piecewise
+/// smooth in them (a row turns from sliding to gripping) and oscillates with the grip's phase
+/// at separation (√(K_t (1 + 1/κ)), docs/oblique.md §2): the cost has local minima, and a
+/// start in the wrong valley stays there (`spins_do_not_stop_in_a_local_minimum`,
+/// tests/fit_oblique_coverage.rs).
 fn starting_points(x0: &[f64]) -> Vec<Vec<f64>> {
-    let mut starts = vec![x0.to_vec()];
-    for (dm, dk) in [
-        (0.0, 10f64.ln()),
-        (0.0, -(10f64.ln())),
-        (2f64.ln(), 0.0),
-        (-(2f64.ln()), 0.0),
-    ] {
-        let mut x = x0.to_vec();
-        x[0] += dm;
-        x[1] += dk;
-        starts.push(x);
+    let (ln2, ln3, ln10) = (2f64.ln(), 3f64.ln(), 10f64.ln());
+    let kappas: &[f64] = if x0.len() == 3 {
+        &[0.0, 1.4f64.ln(), -(1.4f64.ln())]
+    } else {
+        &[0.0]
+    };
+    let mut moves = vec![(ln2, 0.0, 0.0), (-ln2, 0.0, 0.0)];
+    for dk in [0.0, ln3, -ln3, ln10, -ln10] {
+        moves.extend(kappas.iter().map(|&dq| (0.0, dk, dq)));
     }
-    starts
+    moves.sort_by_key(|m| m != &(0.0, 0.0, 0.0));
+    moves
+        .into_iter()
+        .map(|(dm, dk, dq)| {
+            let mut x = x0.to_vec();
+            x[0] += dm;
+            x[1] += dk;
+            if let Some(q) = x.get_mut(2) {
+                // κ ≤ 1
+                *q = (*q + dq).min(0.0);
+            }
+            x
+        })
+        .collect()
 }
 
 /// The box: μ in [1e-4, 100], K_t four decades either side of its start, κ in [0.05, 1].
@@ -267,31 +291,40 @@ fn bounds(x0: &[f64]) -> (Vec<f64>, Vec<f64>) {
     (lo, hi)
 }
 
-fn minimize_from(
+/// The minimum from each start, best (lowest cost) first; `None` when stopped or when no
+/// start gave an answer.
+fn minimize_each(
     p: &Problem,
     starts: Vec<Vec<f64>>,
     lo: &[f64],
     hi: &[f64],
     opts: lm::Options,
-) -> Option<lm::Solution> {
-    let mut best: Option<lm::Solution> = None;
-    let mut iterations = 0;
+) -> Option<Vec<lm::Solution>> {
+    let mut found = Vec::new();
     for x0 in starts {
         if p.stopped() {
             return None;
         }
-        let Some(s) = lm::minimize(p, &x0, lo, hi, opts) else {
-            continue;
-        };
-        iterations += s.iterations;
-        if best.as_ref().is_none_or(|b| s.cost < b.cost) {
-            best = Some(s);
+        found.extend(lm::minimize(p, &x0, lo, hi, opts));
+    }
+    found.sort_by(|a, b| a.cost.total_cmp(&b.cost));
+    (!found.is_empty()).then_some(found)
+}
+
+/// How many of the first fit's distinct minima the spin-weighted fit starts from.
+const REFINED: usize = 3;
+
+/// The first `most` minima of `found` (best first) that lie apart — by more than 1e-4 in
+/// some logarithm — from every one kept before.
+fn distinct(found: &[lm::Solution], most: usize) -> Vec<Vec<f64>> {
+    let mut kept: Vec<Vec<f64>> = Vec::new();
+    for s in found {
+        let apart = |k: &Vec<f64>| k.iter().zip(&s.x).any(|(a, b)| (a - b).abs() > 1e-4);
+        if kept.len() < most && kept.iter().all(apart) {
+            kept.push(s.x.clone());
         }
     }
-    best.map(|mut b| {
-        b.iterations = iterations;
-        b
-    })
+    kept
 }
 
 fn rms(r: impl Iterator<Item = f64>) -> f64 {

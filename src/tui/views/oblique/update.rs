@@ -5,10 +5,13 @@
 
 use crate::api::ObliqueSpec;
 use crate::oblique::court::ITF_COURT_PACE;
+use crate::text::number as number_text;
 use crate::text::parse::number;
 use crate::tui::action::ObliqueKey;
 use crate::tui::app::{App, Effect, View};
+use crate::tui::export::{ExportRequest, file_stem_part};
 use crate::tui::state::{Overlay, Purpose};
+use crate::tui::views::oblique::export;
 use crate::tui::views::oblique::map::{self, ANGLES, FRICTIONS, MapJob, MapSpec};
 use crate::tui::views::oblique::param::ObliqueParam;
 use crate::tui::views::oblique::state::{ImpactKey, ObliqueValues, ObliqueView, Page, SAMPLES};
@@ -280,5 +283,67 @@ impl App {
             self.oblique.out = None;
             self.oblique.map = Some(map);
         }
+    }
+
+    /// The explorer opened on the oblique view at θ, ω, μ (`bouncelab --angle DEG --spin W
+    /// --friction MU`; `None`: the view's default), each checked by the library's rule: an
+    /// error is `oblique`'s message ("invalid angle: 95 (must lie in (0, 90] degrees)").
+    pub fn with_oblique(
+        mut self,
+        [angle, spin, friction]: [Option<f64>; 3],
+    ) -> Result<App, String> {
+        let given = [
+            (ObliqueParam::Angle, angle),
+            (ObliqueParam::Spin, spin),
+            (ObliqueParam::Friction, friction),
+        ];
+        for (param, value) in given {
+            if let Some(v) = value {
+                let v = param.library_check(v)?;
+                self.oblique.set(param, v);
+            }
+        }
+        self.view = View::Oblique;
+        self.refresh();
+        Ok(self)
+    }
+
+    /// `e` in the oblique view: the impact's charts and numbers
+    /// (src/tui/views/oblique/export.rs), headed by `y`'s `bouncelab oblique` line; the
+    /// impact is computed in `update` itself, so there is nothing to wait for.
+    pub(in crate::tui) fn prepare_oblique_export(&mut self) -> Option<Effect> {
+        self.export_wanted = false;
+        let r = match &self.oblique.impact {
+            Some(Ok(r)) => r,
+            Some(Err(e)) => {
+                let e = format!("export failed: no impact ({e})");
+                self.error(e);
+                return None;
+            }
+            None => {
+                self.error("export failed: no impact yet".into());
+                return None;
+            }
+        };
+        let o = &self.oblique;
+        let subtitle = format!(
+            "{}, {} m/s at {}°, spin {} rad/s, μ = {}",
+            self.preset().name,
+            number_text(r.v_in),
+            number_text(o.angle),
+            number_text(o.spin),
+            number_text(o.friction)
+        );
+        let Some(charts) = export::figures(r, &subtitle) else {
+            self.error("export failed: the impact has no history".into());
+            return None;
+        };
+        let header = export::header(&self.command_line(), r);
+        Some(Effect::Export(ExportRequest {
+            ball: file_stem_part(&self.preset().name),
+            charts,
+            map: None,
+            header,
+        }))
     }
 }
