@@ -32,10 +32,14 @@ fn against_exact(l: f64, z: f64, zp: f64) -> Option<(Summary, f64)> {
 
 /// Over a log grid of the flattening domain — λ = 1e-6 … 1e4, ζ = 1e-3 … 1e3, z̄_p from 1e-4
 /// of the peak to just below it — the closed form agrees with the exact solver to 1e-12
-/// wherever it answers, and answers at most points where the ball flattens (1 881 of 2 844:
+/// wherever it answers, and answers at most points where the ball flattens (2 420 of 2 844:
 /// its rounding bound leaves the rest, a small e after a deep flattening, to the steps).
 #[test]
 fn flattening_agrees_with_the_exact_solver_over_the_domain() {
+    // the benchmark's ball (benches/solver.rs, case 3) and a peak just above z̄_p
+    for (l, z, zp) in [(1.3, 0.16, 0.3), (1.0, 0.1, 0.8766346203766)] {
+        assert!(against_exact(l, z, zp).is_some(), "λ = {l}, ζ = {z}, z̄_p = {zp}");
+    }
     let (mut answered, mut flattening_cells, mut worst) = (0, 0, 0.0f64);
     for i in 0..=20 {
         for j in 0..=24 {
@@ -57,7 +61,7 @@ fn flattening_agrees_with_the_exact_solver_over_the_domain() {
     }
     eprintln!("flattening vs exact: worst {worst:e}, {answered} of {flattening_cells} answered");
     assert!(
-        answered * 100 >= flattening_cells * 60,
+        answered * 100 >= flattening_cells * 80,
         "{answered} of {flattening_cells}"
     );
 }
@@ -71,7 +75,10 @@ fn the_tennis_ball_flattens_in_closed_form() {
     let (mut answered, mut flattening_cells) = (0, 0);
     for i in 0..=30 {
         for j in 0..=30 {
-            let (l, z) = (10f64.powf(-3.0 + 0.2 * i as f64), 10f64.powf(-3.0 + 0.2 * j as f64));
+            let (l, z) = (
+                10f64.powf(-3.0 + 0.2 * i as f64),
+                10f64.powf(-3.0 + 0.2 * j as f64),
+            );
             let n = ball.params.with_lambda_zeta(l, z).normalized();
             match summary(n.lambda, n.zeta) {
                 Some(s) if s.max_force <= n.zp_bar => continue,
@@ -82,5 +89,8 @@ fn the_tennis_ball_flattens_in_closed_form() {
         }
     }
     eprintln!("tennis: {answered} of {flattening_cells} flattening cells answered");
-    assert!(answered * 100 >= flattening_cells * 90, "{answered} of {flattening_cells}");
+    assert!(
+        answered * 100 >= flattening_cells * 90,
+        "{answered} of {flattening_cells}"
+    );
 }

@@ -62,7 +62,7 @@ pub fn flattening(lambda: f64, zeta: f64, zp_bar: f64) -> Option<Summary> {
     );
     let u2 = z2 / k;
     let err = [2.0 * dz_m, 0.0, dz2 / k];
-    let unload = Flow::from_state(lambda / k, zeta * root_k, [u0, 0.0, u2], err)?;
+    let unload = Flow::from_state(lambda / k, zeta * root_k, [u0, 0.0, u2])?;
     if !(u2 < 0.0) {
         return None;
     }
@@ -82,7 +82,12 @@ pub fn flattening(lambda: f64, zeta: f64, zp_bar: f64) -> Option<Summary> {
     );
     let cor = int_m + root_k * int_u - 1.0;
     let tau_f = peak.t + end.t / root_k;
+    // this evaluation's rounding, and the start's errors carried to s_f (the flow is linear
+    // in its start: each error's own response)
     let (du_f, dint_u) = unload.rounding(&end.point);
+    let carried = [[err[0], 0.0, 0.0], [0.0, 0.0, err[2]]].map(|x| unload.response(x, &end.point));
+    let du_f = du_f + carried[0].0.abs() + carried[1].0.abs();
+    let dint_u = dint_u + carried[0].1.abs() + carried[1].1.abs();
     let slope = end.derivative(1).abs();
     let dtau = du_f / slope / root_k + dz1 / z2.abs();
     let precise =

@@ -21,6 +21,9 @@ pub(super) struct Flow {
     /// to |rτ| < 1e-3 and the bound size(A)(1 + e^{rτ})/|r| (its A's scale vanishes with r,
     /// and the cells the summary answers, hence the map's values, stay as they were).
     tight: bool,
+    /// (r + σ)² + ω² and σ² + ω², kept for [`Flow::response`].
+    gap: f64,
+    p0: f64,
     /// The real root standing apart.
     pub r: f64,
     /// The pair's decay rate: s² + 2σs + (σ² + ω²).
@@ -88,24 +91,13 @@ impl Flow {
         Some(m.flow([a, -a, d], [sa, sa, sd]))
     }
 
-    /// The flow at (λ, ζ) from any state (z̄, z̄', z̄'') at τ = 0, each known to within
-    /// `err` (absolute): the unloading after flattening starts so (`super::flatten`). A is
-    /// the residue at r of the Laplace transform, N(r)/gap with N(s) = z̄ s² + (z̄' + a₂z̄) s +
-    /// (z̄'' + a₂z̄' + a₁z̄); as a₂ = 2σ − r and a₁ = σ² + ω² − 2σr (the roots' sums),
-    /// N(r) = (σ² + ω²) z̄ + 2σ z̄' + z̄'', free of the r² terms that cancel where the real
-    /// mode is fast (they cost ε|r| of D: 2e-11 at r = −2e5). B = z̄ − A and D = z̄' − A r +
-    /// σB match z̄ and z̄' at 0. The sizes take each input as |x| + err/ε, so that
-    /// [`Flow::rounding`] bounds the inputs' errors carried through as well as its own.
-    pub fn from_state(lambda: f64, zeta: f64, x: [f64; 3], err: [f64; 3]) -> Option<Flow> {
+    /// The flow at (λ, ζ) from any state (z̄, z̄', z̄'') at τ = 0: the unloading after
+    /// flattening starts so (`super::flatten`). [`Flow::response`] gives what an error in
+    /// that state carries to τ (the flow is linear in it); [`Flow::rounding`] bounds this
+    /// evaluation's own.
+    pub fn from_state(lambda: f64, zeta: f64, x: [f64; 3]) -> Option<Flow> {
         let m = Modes::new(lambda, zeta)?;
-        let (r, sigma, gap, p0) = (m.r, m.sigma, m.gap, m.p0);
-        let mag = std::array::from_fn::<f64, 3, _>(|i| x[i].abs() + err[i] / f64::EPSILON);
-        let a = (p0 * x[0] + 2.0 * sigma * x[1] + x[2]) / gap;
-        let sa = (p0 * mag[0] + 2.0 * sigma.abs() * mag[1] + mag[2]) / gap;
-        let b = x[0] - a;
-        let sb = mag[0] + sa;
-        let d = x[1] - a * r + sigma * b;
-        let sd = mag[1] + sa * r.abs() + sigma.abs() * sb;
+        let ([a, b, d], [sa, sb, sd]) = state_coefficients(&m, x);
         let mut flow = m.flow([a, b, d], [sa, sb, sd]);
         flow.tight = true;
         Some(flow)
@@ -240,10 +232,33 @@ impl Flow {
         ROUNDING_FACTOR * f64::EPSILON * (terms + carried)
     }
 
+    /// z̄(τ) and ∫₀^τ z̄ dτ at a point of the flow with the same modes from the state `x` at
+    /// τ = 0 (not this flow's own): x's share in them, by linearity.
+    pub fn response(&self, x: [f64; 3], pt: &Point) -> (f64, f64) {
+        let m = Modes {
+            r: self.r,
+            sigma: self.sigma,
+            omega2: self.omega2,
+            gap: self.gap,
+            p0: self.p0,
+            a0: 0.0,
+        };
+        let ([a, b, d], _) = state_coefficients(&m, x);
+        let (p, q) = antiderivative(&m, b, d);
+        let z = a * pt.real + b * pt.ec + d * pt.es;
+        (z, self.integral_of(pt, a, (p, q)))
+    }
+
     /// ∫₀^τ z̄ dτ.
     pub fn integral(&self, pt: &Point) -> f64 {
+        self.integral_of(pt, self.a, (self.p, self.q))
+    }
+
+    /// ∫₀^τ of A e^{rτ} + e^{−στ}(B C + D S), whose pair part has the antiderivative
+    /// e^{−στ}(P C + Q S).
+    fn integral_of(&self, pt: &Point, a: f64, (p, q): (f64, f64)) -> f64 {
         let real = if self.r == 0.0 {
-            self.a * pt.t
+            a * pt.t
         } else {
             // e^{rτ} − 1: the subtraction's absolute error, ε, is what `rounding` budgets
             // (ε|A|(1 + e^{rτ})/|r|); exp_m1 only where rτ is so small that it would leave
@@ -254,9 +269,9 @@ impl Flow {
             } else {
                 pt.real - 1.0
             };
-            self.a * em1 / self.r
+            a * em1 / self.r
         };
-        real + self.p * pt.ec + self.q * pt.es - self.p
+        real + p * pt.ec + q * pt.es - p
     }
 }
 
@@ -302,10 +317,8 @@ impl Modes {
     /// scales `[sa, sb, sd]`: the antiderivative's P, Q and the jet's rows.
     fn flow(&self, [a, b, d]: [f64; 3], [sa, sb, sd]: [f64; 3]) -> Flow {
         let (r, sigma, omega2, p0) = (self.r, self.sigma, self.omega2, self.p0);
-        // (e^{−στ}(P C + Q S))' = e^{−στ}((Q − σP) C − (ω²P + σQ) S) = e^{−στ}(B C + D S)
-        let p = -(d + sigma * b) / p0;
+        let (p, q) = antiderivative(self, b, d);
         let sp = (sd + sigma.abs() * sb) / p0;
-        let q = b + sigma * p;
         let size = [sa, sb, sd, sp, sb + sigma.abs() * sp];
         let omega = if omega2 > 0.0 { omega2.sqrt() } else { 0.0 };
         // (e^{−στ}(c C + s S))' = e^{−στ}((s − σc) C + (−ω² c − σs) S), as u = (C, S) has
@@ -319,6 +332,8 @@ impl Modes {
         Flow {
             size,
             tight: false,
+            gap: self.gap,
+            p0,
             r,
             sigma,
             omega2,
@@ -330,6 +345,32 @@ impl Modes {
             jet,
         }
     }
+}
+
+/// A, B, D of the flow from the state x = (z̄, z̄', z̄'') at τ = 0, and their rounding scales.
+/// A is the residue at r of the Laplace transform, N(r)/gap with N(s) = z̄ s² + (z̄' + a₂z̄) s
+/// + (z̄'' + a₂z̄' + a₁z̄); as a₂ = 2σ − r and a₁ = σ² + ω² − 2σr (the roots' sums),
+/// N(r) = (σ² + ω²) z̄ + 2σ z̄' + z̄'', free of the r² terms that cancel where the real mode is
+/// fast (they cost ε|r| of D: 2e-11 at r = −2e5). B = z̄ − A and D = z̄' − A r + σB match z̄
+/// and z̄' at 0.
+fn state_coefficients(m: &Modes, x: [f64; 3]) -> ([f64; 3], [f64; 3]) {
+    let (r, sigma) = (m.r, m.sigma);
+    let a = (m.p0 * x[0] + 2.0 * sigma * x[1] + x[2]) / m.gap;
+    let sa = (m.p0 * x[0].abs() + 2.0 * (sigma * x[1]).abs() + x[2].abs()) / m.gap;
+    let b = x[0] - a;
+    let d = x[1] - a * r + sigma * b;
+    let sb = x[0].abs() + sa;
+    (
+        [a, b, d],
+        [sa, sb, x[1].abs() + sa * r.abs() + sigma.abs() * sb],
+    )
+}
+
+/// P and Q of the pair part's antiderivative: (e^{−στ}(P C + Q S))' = e^{−στ}((Q − σP) C −
+/// (ω²P + σQ) S) = e^{−στ}(B C + D S).
+fn antiderivative(m: &Modes, b: f64, d: f64) -> (f64, f64) {
+    let p = -(d + m.sigma * b) / m.p0;
+    (p, b + m.sigma * p)
 }
 
 /// Largest |rate × h| for [`Flow::shift`]'s series: eleven terms of e^x leave x¹¹/11! ≈
