@@ -27,6 +27,40 @@ use super::{KEEP, Summary};
 use crate::model::contact::{Contact, ContactLaw};
 use std::f64::consts::FRAC_PI_2;
 
+/// The loading's turn, and the bounds on its values' rounding.
+struct Turn {
+    /// τ_m.
+    t: f64,
+    /// z̄_m, z̄''(τ_m) and ∫₀^τ_m z̄.
+    z_m: f64,
+    z2: f64,
+    integral: f64,
+    /// Bounds on the rounding of z̄_m, z̄'(τ_m), z̄''(τ_m) and the integral.
+    dz: [f64; 3],
+    dint: f64,
+}
+
+/// The turn of the loading F̄ = z̄ at (λ, ζ): τ_m from the flow's events, the values at it
+/// from the jet at the last point evaluated (h⁴ terms ≈ 1e-16: the step settled).
+fn turn(lambda: f64, zeta: f64) -> Option<Turn> {
+    let load = Flow::new(lambda, zeta)?;
+    let peak = search::peak(&load, zeta)?;
+    let (h, j) = (peak.t - peak.point.t, &peak.jet);
+    let (dz_m, dint) = load.rounding(&peak.point);
+    Some(Turn {
+        t: peak.t,
+        z_m: peak.derivative(0),
+        z2: taylor(&[j[2], j[3], j[4], j[5], 0.0], h),
+        integral: taylor(&[load.integral(&peak.point), j[0], j[1], j[2], j[3]], h),
+        dz: [
+            dz_m,
+            load.derivative_rounding(&peak.point, 1),
+            load.derivative_rounding(&peak.point, 2),
+        ],
+        dint,
+    })
+}
+
 /// COR, F̄_m and τ_f of the normalized linear-law impact at (λ, ζ) that flattens at z̄_p;
 /// `None` where it does not flatten (F̄_m ≤ z̄_p: [`super::summary`] answers) or the closed
 /// form cannot keep its precision.
@@ -35,16 +69,11 @@ pub fn flattening(lambda: f64, zeta: f64, zp_bar: f64) -> Option<Summary> {
     if !(ok(zeta) && ok(zp_bar) && lambda.is_finite() && lambda >= 0.0) {
         return None;
     }
-    let load = Flow::new(lambda, zeta)?;
-    let peak = search::peak(&load, zeta)?;
-    let (h, j) = (peak.t - peak.point.t, &peak.jet);
-    let z_m = peak.derivative(0);
-    if !(z_m > zp_bar) {
+    let top = turn(lambda, zeta)?;
+    let z_m = top.z_m;
+    if !(z_m > zp_bar && top.z2 < 0.0) {
         return None;
     }
-    // z̄'' and ∫₀^τ_m z̄ at the root from the jet at the last point (h⁴ terms ≈ 1e-16: settled)
-    let z2 = taylor(&[j[2], j[3], j[4], j[5], 0.0], h);
-    let int_m = taylor(&[load.integral(&peak.point), j[0], j[1], j[2], j[3]], h);
     let contact = Contact {
         law: ContactLaw::Linear,
         zp_bar,
@@ -52,20 +81,8 @@ pub fn flattening(lambda: f64, zeta: f64, zp_bar: f64) -> Option<Summary> {
     };
     let u0 = z_m - contact.permanent_indentation(z_m);
     let k = z_m / u0;
-    let root_k = k.sqrt();
-    // the loading's rounding, carried into the unloading's start: z̄_m's (and through
-    // Eqs. 18–19 z̄_f's, whose slope in z̄_m is below 1) and z̄''s; the turn's, z̄' over z̄''
-    let (dz_m, dint_m) = load.rounding(&peak.point);
-    let (dz1, dz2) = (
-        load.derivative_rounding(&peak.point, 1),
-        load.derivative_rounding(&peak.point, 2),
-    );
-    let u2 = z2 / k;
-    let err = [2.0 * dz_m, 0.0, dz2 / k];
+    let (root_k, u2) = (k.sqrt(), top.z2 / k);
     let unload = Flow::from_state(lambda / k, zeta * root_k, [u0, 0.0, u2])?;
-    if !(u2 < 0.0) {
-        return None;
-    }
     let cap = if unload.omega > 0.0 {
         (FRAC_PI_2 / unload.omega).min(2.0)
     } else {
@@ -80,18 +97,22 @@ pub fn flattening(lambda: f64, zeta: f64, zp_bar: f64) -> Option<Summary> {
         &[unload.integral(&end.point), je[0], je[1], je[2], je[3]],
         he,
     );
-    let cor = int_m + root_k * int_u - 1.0;
-    let tau_f = peak.t + end.t / root_k;
+    let cor = top.integral + root_k * int_u - 1.0;
+    let tau_f = top.t + end.t / root_k;
     // this evaluation's rounding, and the start's errors carried to s_f (the flow is linear
-    // in its start: each error's own response)
+    // in its start: each error's own response): u0's, z̄_m's and through Eqs. 18–19 z̄_f's
+    // (whose slope in z̄_m is below 1), and u2's
+    let [dz_m, dz1, dz2] = top.dz;
     let (du_f, dint_u) = unload.rounding(&end.point);
-    let carried = [[err[0], 0.0, 0.0], [0.0, 0.0, err[2]]].map(|x| unload.response(x, &end.point));
+    let carried = [[2.0 * dz_m, 0.0, 0.0], [0.0, 0.0, dz2 / k]];
+    let carried = carried.map(|x| unload.response(x, &end.point));
     let du_f = du_f + carried[0].0.abs() + carried[1].0.abs();
     let dint_u = dint_u + carried[0].1.abs() + carried[1].1.abs();
-    let slope = end.derivative(1).abs();
-    let dtau = du_f / slope / root_k + dz1 / z2.abs();
-    let precise =
-        dz_m <= KEEP * z_m && dint_m + root_k * dint_u <= KEEP * cor.abs() && dtau <= KEEP * tau_f;
+    // τ_f carries the turn's error too: z̄' over z̄''
+    let dtau = du_f / end.derivative(1).abs() / root_k + dz1 / top.z2.abs();
+    let precise = dz_m <= KEEP * z_m
+        && top.dint + root_k * dint_u <= KEEP * cor.abs()
+        && dtau <= KEEP * tau_f;
     (precise && cor.is_finite() && tau_f.is_finite()).then_some(Summary {
         cor,
         max_force: z_m,
