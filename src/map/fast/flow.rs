@@ -348,11 +348,12 @@ impl Modes {
 }
 
 /// A, B, D of the flow from the state x = (z̄, z̄', z̄'') at τ = 0, and their rounding scales.
-/// A is the residue at r of the Laplace transform, N(r)/gap with N(s) = z̄ s² + (z̄' + a₂z̄) s
-/// + (z̄'' + a₂z̄' + a₁z̄); as a₂ = 2σ − r and a₁ = σ² + ω² − 2σr (the roots' sums),
-/// N(r) = (σ² + ω²) z̄ + 2σ z̄' + z̄'', free of the r² terms that cancel where the real mode is
-/// fast (they cost ε|r| of D: 2e-11 at r = −2e5). B = z̄ − A and D = z̄' − A r + σB match z̄
-/// and z̄' at 0.
+/// A is the residue at r of the Laplace transform, N(r)/gap, with the numerator
+/// N(s) = z̄ s² + (z̄' + a₂z̄) s + (z̄'' + a₂z̄' + a₁z̄). As a₂ = 2σ − r and a₁ = σ² + ω² − 2σr
+/// (the roots' sums), N(r) = (σ² + ω²) z̄ + 2σ z̄' + z̄'': free of the r² terms that cancel
+/// where the real mode is fast (their rounding, ε z̄ r², would cost D ε|r| z̄ and the
+/// unloading's integral as much: it put the bound 2e4 times over 1e-13 at r = −2e5). B = z̄ − A
+/// and D = z̄' − A r + σB match z̄ and z̄' at 0.
 fn state_coefficients(m: &Modes, x: [f64; 3]) -> ([f64; 3], [f64; 3]) {
     let (r, sigma) = (m.r, m.sigma);
     let a = (m.p0 * x[0] + 2.0 * sigma * x[1] + x[2]) / m.gap;
