@@ -38,7 +38,10 @@ fn against_exact(l: f64, z: f64, zp: f64) -> Option<(Summary, f64)> {
 fn flattening_agrees_with_the_exact_solver_over_the_domain() {
     // the benchmark's ball (benches/solver.rs, case 3) and a peak just above z̄_p
     for (l, z, zp) in [(1.3, 0.16, 0.3), (1.0, 0.1, 0.8766346203766)] {
-        assert!(against_exact(l, z, zp).is_some(), "λ = {l}, ζ = {z}, z̄_p = {zp}");
+        assert!(
+            against_exact(l, z, zp).is_some(),
+            "λ = {l}, ζ = {z}, z̄_p = {zp}"
+        );
     }
     let (mut answered, mut flattening_cells, mut worst) = (0, 0, 0.0f64);
     for i in 0..=20 {
