@@ -132,3 +132,14 @@ fn linear_fast_summary() -> f64 {
     let n = black_box(CASES[0].1).normalized();
     bouncelab::map::fast::summary(n.lambda, n.zeta).unwrap().cor
 }
+
+/// A flattening cell in closed form (`map::fast::flattening`, issue 30 item 2: target
+/// ≤ 0.5 µs), case 3's ball (λ = 1.3, ζ = 0.16, z̄_p = 0.3): against `taylor_summary` 3 and
+/// `linear_fast_summary` in the same run.
+#[divan::bench]
+fn flattening_summary() -> f64 {
+    let n = black_box(CASES[3].1).normalized();
+    bouncelab::map::fast::flattening(n.lambda, n.zeta, n.zp_bar)
+        .unwrap()
+        .cor
+}

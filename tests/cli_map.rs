@@ -68,7 +68,10 @@ fn csv_cells_are_what_run_prints() {
         "--format",
         "json",
     ]);
-    assert_eq!(r[2].parse::<f64>().unwrap(), v["cor"].as_f64().unwrap());
+    // the map promises run's values to 1e-12 (docs/map.md), as the golf rows above: this
+    // ball flattens (F̄_m = 0.70 > z̄_p), and its cell comes from the flattening closed form
+    let (got, want) = (r[2].parse::<f64>().unwrap(), v["cor"].as_f64().unwrap());
+    assert!((got - want).abs() <= 1e-12 * want, "{got} vs {want}");
     assert_eq!(
         r[5],
         if v["cor"].as_f64().unwrap() >= 0.5 {

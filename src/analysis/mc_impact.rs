@@ -76,13 +76,21 @@ pub fn impacts(
     })
 }
 
-/// An impact the lanes do not answer: on the linear law (a flattening ball) the Taylor steps
-/// within their domain (to 1e-12 of the exact solver, tests/taylor.rs); the other laws keep
-/// `run`'s solver, whose answers they must equal to 1e-12 (`other_laws_run_the_solver`), which
+/// An impact the lanes do not answer: on the linear law (a flattening ball) the flattening
+/// closed form where it answers (`map::fast::flattening`, tests/map_flatten.rs), else the
+/// Taylor steps within their domain (both to 1e-12 of the exact solver, tests/taylor.rs);
+/// the other laws keep `run`'s solver, whose answers they must equal to 1e-12 (`other_laws_run_the_solver`), which
 /// the Taylor steps hold only to 1e-9.
 fn one_by_one(p: &ImpactParams, law: ContactLaw) -> Result<Outcome, SolveError> {
+    let n = p.normalized();
     if law == ContactLaw::Linear
-        && let Some(s) = crate::solver::taylor::summary(&p.normalized(), law)
+        && let Some(s) = crate::map::fast::flattening(n.lambda, n.zeta, n.zp_bar).or_else(|| {
+            crate::solver::taylor::summary(&n, law).map(|t| Summary {
+                cor: t.cor,
+                max_force: t.max_force,
+                contact_time: t.contact_time,
+            })
+        })
     {
         let w0 = p.omega0();
         return Ok(Outcome {

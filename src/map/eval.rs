@@ -73,7 +73,8 @@ fn solve_cell(
 }
 
 /// The cell from a fast path when one answers: on the linear law the closed form `closed`
-/// ([`super::fast::summary`]'s, in lanes) while the ball does not flatten (z̄_m ≤ z̄_p); the
+/// ([`super::fast::summary`]'s, in lanes) while the ball does not flatten (z̄_m ≤ z̄_p), the
+/// flattening closed form ([`super::fast::flattening`]) where it does and answers; the
 /// Taylor steps ([`crate::solver::taylor::summary`]) for a flattening ball and for the Hertz
 /// and elastic–plastic laws. SI as `to_si` converts: F = F̄ m v0 ω0, t = τ/ω0.
 fn fast_cell(
@@ -84,6 +85,11 @@ fn fast_cell(
     let n = p.normalized();
     let s = match closed {
         Some(s) if s.max_force <= n.zp_bar => s,
+        _ if spec.law == ContactLaw::Linear
+            && let Some(s) = super::fast::flattening(n.lambda, n.zeta, n.zp_bar) =>
+        {
+            s
+        }
         _ => {
             let t = crate::solver::taylor::summary(&n, spec.law)?;
             super::fast::Summary {

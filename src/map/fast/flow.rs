@@ -12,8 +12,18 @@ const ROUNDING_FACTOR: f64 = 1.0;
 
 /// The flow of one (λ, ζ).
 pub(super) struct Flow {
-    /// The scales of A, D, P, Q's rounding: Σ|terms|/|denominator| as each was formed.
-    size: [f64; 4],
+    /// The scales of A, B, D, P, Q's rounding: Σ|terms|/|denominator| as each was formed.
+    size: [f64; 5],
+    /// Whether the integral's real term A(e^{rτ} − 1)/r takes `exp_m1` while |rτ| < 1/2
+    /// (beyond, e^{rτ} − 1 keeps all but 3ε), so that its rounding is bounded by
+    /// 3 size(A) τ (1 + e^{rτ}) (|e^{rτ} − 1|/|r| ≤ τ max(1, e^{rτ})): a flow from a state
+    /// (`from_state`), whose A's scale does not vanish with r. [`Flow::new`] keeps `exp_m1`
+    /// to |rτ| < 1e-3 and the bound size(A)(1 + e^{rτ})/|r| (its A's scale vanishes with r,
+    /// and the cells the summary answers, hence the map's values, stay as they were).
+    tight: bool,
+    /// (r + σ)² + ω² and σ² + ω², kept for [`Flow::response`].
+    gap: f64,
+    p0: f64,
     /// The real root standing apart.
     pub r: f64,
     /// The pair's decay rate: s² + 2σs + (σ² + ω²).
@@ -56,21 +66,8 @@ impl Flow {
     /// The flow at (λ, ζ), or `None` where its modes do not separate (the gap (r + σ)² + ω²
     /// vanishes) or the pair does not decay.
     pub fn new(lambda: f64, zeta: f64) -> Option<Flow> {
-        let (a2, a1, a0) = (2.0 * zeta * (1.0 + lambda), 1.0, 2.0 * zeta * lambda);
-        // λ = 0 has the root 0 exactly, which Cardano would leave at a rounding's distance
-        let cubic = [a2, a1, a0];
-        let lone = if a0 > 0.0 {
-            lone_real_root(cubic)
-        } else {
-            None
-        };
-        let (r, p1, p0) = lone.unwrap_or_else(|| isolated_root(cubic));
-        let sigma = 0.5 * p1;
-        let omega2 = p0 - sigma * sigma;
-        let gap = (r + sigma) * (r + sigma) + omega2;
-        if !(gap > 0.0 && p0 > 0.0) {
-            return None;
-        }
+        let m = Modes::new(lambda, zeta)?;
+        let (r, sigma, omega2, gap, a0) = (m.r, m.sigma, m.omega2, m.gap, m.a0);
         // Z(s) = (s + a0)/cubic (Laplace, z̄(0) = 0, z̄'(0) = 1, z̄''(0) = −2ζ): A is the
         // residue at r, (r + a0)/p'(r) = 2(σ − ζ)/gap; D from matching at s = −σ,
         // (σ − a0 + A ω²)/(σ + r) = 1 − (r + σ) A. Of each two equal forms the one whose
@@ -91,32 +88,19 @@ impl Flow {
             ),
         ];
         let (d, sd) = if d[0].1 <= d[1].1 { d[0] } else { d[1] };
-        let b = -a;
-        let p = -(d + sigma * b) / p0;
-        let sp = (sd + sigma.abs() * sa) / p0;
-        let q = b + sigma * p;
-        let size = [sa, sd, sp, sa + sigma.abs() * sp];
-        let omega = if omega2 > 0.0 { omega2.sqrt() } else { 0.0 };
-        // (e^{−στ}(c C + s S))' = e^{−στ}((s − σc) C + (−ω² c − σs) S), as u = (C, S) has
-        // u' = (−ω² S, C)
-        let mut jet = [[0.0; 3]; JET];
-        let (mut ar, mut c, mut s) = (a, -a, d);
-        for row in &mut jet {
-            *row = [ar, c, s];
-            (ar, c, s) = (ar * r, s - sigma * c, -omega2 * c - sigma * s);
-        }
-        Some(Flow {
-            size,
-            r,
-            sigma,
-            omega2,
-            omega,
-            a,
-            d,
-            p,
-            q,
-            jet,
-        })
+        Some(m.flow([a, -a, d], [sa, sa, sd]))
+    }
+
+    /// The flow at (λ, ζ) from any state (z̄, z̄', z̄'') at τ = 0: the unloading after
+    /// flattening starts so (`super::flatten`). [`Flow::response`] gives what an error in
+    /// that state carries to τ (the flow is linear in it); [`Flow::rounding`] bounds this
+    /// evaluation's own.
+    pub fn from_state(lambda: f64, zeta: f64, x: [f64; 3]) -> Option<Flow> {
+        let m = Modes::new(lambda, zeta)?;
+        let ([a, b, d], [sa, sb, sd]) = state_coefficients(&m, x);
+        let mut flow = m.flow([a, b, d], [sa, sb, sd]);
+        flow.tight = true;
+        Some(flow)
     }
 
     /// The transcendental values at τ: (e^{−στ} C, e^{−στ} S) without overflow — the product
@@ -213,10 +197,12 @@ impl Flow {
         let grow = 1.0 + (self.sigma.abs() + self.omega2.abs().sqrt()) * t;
         let (cm, sm) = (cm * grow, sm * grow);
         let k = ROUNDING_FACTOR * f64::EPSILON;
-        let [sa, sd, sp, sq] = self.size;
-        let z = sa * (real + cm) + sd * sm;
+        let [sa, sb, sd, sp, sq] = self.size;
+        let z = sa * real + sb * cm + sd * sm;
         let int = if self.r == 0.0 {
             sa * t
+        } else if self.tight {
+            3.0 * sa * t * (1.0 + real)
         } else {
             sa * (1.0 + real) / self.r.abs()
         };
@@ -224,23 +210,168 @@ impl Flow {
         (k * z, k * int)
     }
 
+    /// A bound on the rounding of z̄^{(k)}(τ) as [`Flow::jet`] evaluates it, in the manner of
+    /// [`Flow::rounding`]: the row's terms summed, and A, B, D's rounding carried through k
+    /// derivatives (each at most a factor |r| on the real mode, 1 + |σ| + |ω| on the pair).
+    pub fn derivative_rounding(&self, pt: &Point, k: usize) -> f64 {
+        let t = pt.t;
+        let (cm, sm) = if self.omega2 > 0.0 {
+            (pt.decay, pt.decay * t.min(1.0 / self.omega))
+        } else {
+            (pt.ec.abs(), pt.es.abs())
+        };
+        let real = pt.real * (1.0 + self.r.abs() * t);
+        let rho = self.sigma.abs() + self.omega2.abs().sqrt();
+        let grow = 1.0 + rho * t;
+        let (cm, sm) = (cm * grow, sm * grow);
+        let [ar, c, s] = self.jet[k];
+        let [sa, sb, sd, _, _] = self.size;
+        let power = |x: f64| (0..k).fold(1.0, |p, _| p * x);
+        let terms = ar.abs() * real + c.abs() * cm + s.abs() * sm;
+        let carried = sa * power(self.r.abs()) * real + (sb * cm + sd * sm) * power(1.0 + rho);
+        ROUNDING_FACTOR * f64::EPSILON * (terms + carried)
+    }
+
+    /// z̄(τ) and ∫₀^τ z̄ dτ at a point of the flow with the same modes from the state `x` at
+    /// τ = 0 (not this flow's own): x's share in them, by linearity.
+    pub fn response(&self, x: [f64; 3], pt: &Point) -> (f64, f64) {
+        let m = Modes {
+            r: self.r,
+            sigma: self.sigma,
+            omega2: self.omega2,
+            gap: self.gap,
+            p0: self.p0,
+            a0: 0.0,
+        };
+        let ([a, b, d], _) = state_coefficients(&m, x);
+        let (p, q) = antiderivative(&m, b, d);
+        let z = a * pt.real + b * pt.ec + d * pt.es;
+        (z, self.integral_of(pt, a, (p, q)))
+    }
+
     /// ∫₀^τ z̄ dτ.
     pub fn integral(&self, pt: &Point) -> f64 {
+        self.integral_of(pt, self.a, (self.p, self.q))
+    }
+
+    /// ∫₀^τ of A e^{rτ} + e^{−στ}(B C + D S), whose pair part has the antiderivative
+    /// e^{−στ}(P C + Q S).
+    fn integral_of(&self, pt: &Point, a: f64, (p, q): (f64, f64)) -> f64 {
         let real = if self.r == 0.0 {
-            self.a * pt.t
+            a * pt.t
         } else {
             // e^{rτ} − 1: the subtraction's absolute error, ε, is what `rounding` budgets
             // (ε|A|(1 + e^{rτ})/|r|); exp_m1 only where rτ is so small that it would leave
             // nothing of the difference (λ → 0)
-            let em1 = if (self.r * pt.t).abs() < 1e-3 {
+            let near = if self.tight { 0.5 } else { 1e-3 };
+            let em1 = if (self.r * pt.t).abs() < near {
                 (self.r * pt.t).exp_m1()
             } else {
                 pt.real - 1.0
             };
-            self.a * em1 / self.r
+            a * em1 / self.r
         };
-        real + self.p * pt.ec + self.q * pt.es - self.p
+        real + p * pt.ec + q * pt.es - p
     }
+}
+
+/// The cubic's modes at (λ, ζ): the real root r and the pair s² + 2σs + (σ² + ω²).
+struct Modes {
+    r: f64,
+    sigma: f64,
+    omega2: f64,
+    /// (r + σ)² + ω² = p'(r).
+    gap: f64,
+    /// σ² + ω².
+    p0: f64,
+    /// 2ζλ, the cubic's constant term.
+    a0: f64,
+}
+
+impl Modes {
+    /// `None` where the modes do not separate (the gap vanishes) or the pair does not decay.
+    fn new(lambda: f64, zeta: f64) -> Option<Modes> {
+        let (a2, a1, a0) = (2.0 * zeta * (1.0 + lambda), 1.0, 2.0 * zeta * lambda);
+        // λ = 0 has the root 0 exactly, which Cardano would leave at a rounding's distance
+        let cubic = [a2, a1, a0];
+        let lone = if a0 > 0.0 {
+            lone_real_root(cubic)
+        } else {
+            None
+        };
+        let (r, p1, p0) = lone.unwrap_or_else(|| isolated_root(cubic));
+        let sigma = 0.5 * p1;
+        let omega2 = p0 - sigma * sigma;
+        let gap = (r + sigma) * (r + sigma) + omega2;
+        (gap > 0.0 && p0 > 0.0).then_some(Modes {
+            r,
+            sigma,
+            omega2,
+            gap,
+            p0,
+            a0,
+        })
+    }
+
+    /// The flow z̄ = A e^{rτ} + e^{−στ}(B C + D S) from `[A, B, D]` and their rounding
+    /// scales `[sa, sb, sd]`: the antiderivative's P, Q and the jet's rows.
+    fn flow(&self, [a, b, d]: [f64; 3], [sa, sb, sd]: [f64; 3]) -> Flow {
+        let (r, sigma, omega2, p0) = (self.r, self.sigma, self.omega2, self.p0);
+        let (p, q) = antiderivative(self, b, d);
+        let sp = (sd + sigma.abs() * sb) / p0;
+        let size = [sa, sb, sd, sp, sb + sigma.abs() * sp];
+        let omega = if omega2 > 0.0 { omega2.sqrt() } else { 0.0 };
+        // (e^{−στ}(c C + s S))' = e^{−στ}((s − σc) C + (−ω² c − σs) S), as u = (C, S) has
+        // u' = (−ω² S, C)
+        let mut jet = [[0.0; 3]; JET];
+        let (mut ar, mut c, mut s) = (a, b, d);
+        for row in &mut jet {
+            *row = [ar, c, s];
+            (ar, c, s) = (ar * r, s - sigma * c, -omega2 * c - sigma * s);
+        }
+        Flow {
+            size,
+            tight: false,
+            gap: self.gap,
+            p0,
+            r,
+            sigma,
+            omega2,
+            omega,
+            a,
+            d,
+            p,
+            q,
+            jet,
+        }
+    }
+}
+
+/// A, B, D of the flow from the state x = (z̄, z̄', z̄'') at τ = 0, and their rounding scales.
+/// A is the residue at r of the Laplace transform, N(r)/gap, with the numerator
+/// N(s) = z̄ s² + (z̄' + a₂z̄) s + (z̄'' + a₂z̄' + a₁z̄). As a₂ = 2σ − r and a₁ = σ² + ω² − 2σr
+/// (the roots' sums), N(r) = (σ² + ω²) z̄ + 2σ z̄' + z̄'': free of the r² terms that cancel
+/// where the real mode is fast (their rounding, ε z̄ r², would cost D ε|r| z̄ and the
+/// unloading's integral as much: it put the bound 2e4 times over 1e-13 at r = −2e5). B = z̄ − A
+/// and D = z̄' − A r + σB match z̄ and z̄' at 0.
+fn state_coefficients(m: &Modes, x: [f64; 3]) -> ([f64; 3], [f64; 3]) {
+    let (r, sigma) = (m.r, m.sigma);
+    let a = (m.p0 * x[0] + 2.0 * sigma * x[1] + x[2]) / m.gap;
+    let sa = (m.p0 * x[0].abs() + 2.0 * (sigma * x[1]).abs() + x[2].abs()) / m.gap;
+    let b = x[0] - a;
+    let d = x[1] - a * r + sigma * b;
+    let sb = x[0].abs() + sa;
+    (
+        [a, b, d],
+        [sa, sb, x[1].abs() + sa * r.abs() + sigma.abs() * sb],
+    )
+}
+
+/// P and Q of the pair part's antiderivative: (e^{−στ}(P C + Q S))' = e^{−στ}((Q − σP) C −
+/// (ω²P + σQ) S) = e^{−στ}(B C + D S).
+fn antiderivative(m: &Modes, b: f64, d: f64) -> (f64, f64) {
+    let p = -(d + m.sigma * b) / m.p0;
+    (p, b + m.sigma * p)
 }
 
 /// Largest |rate × h| for [`Flow::shift`]'s series: eleven terms of e^x leave x¹¹/11! ≈

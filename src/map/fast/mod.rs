@@ -28,10 +28,12 @@
 //! solver. The real root comes from Cardano's formula, polished (`lone_real_root`), where the
 //! other two are a complex pair.
 
+mod flatten;
 mod flow;
 pub mod lanes;
 mod search;
 
+pub use flatten::flattening;
 use flow::Flow;
 use search::events;
 

@@ -58,7 +58,7 @@ pub(super) fn events(flow: &Flow, zeta: f64) -> Option<(Root, Root)> {
     };
     let peak = match peak {
         Some(peak) => peak,
-        None => first_fall(flow, 1, (0.0, 1.0), step0, cap)?,
+        None => first_fall(flow, 1, (0.0, 1.0), (step0, cap), false)?,
     };
     if let Some(end) = end
         && end.t > peak.t
@@ -68,8 +68,18 @@ pub(super) fn events(flow: &Flow, zeta: f64) -> Option<(Root, Root)> {
     // unloading takes about as long as loading: a first step just short of τ_m brackets τ_f
     // within one or two steps
     let (step, z_m) = ((0.9 * peak.t).min(cap), peak.derivative(0));
-    let end = first_fall(flow, 0, (peak.t, z_m), step, cap)?;
+    let end = first_fall(flow, 0, (peak.t, z_m), (step, cap), false)?;
     Some((peak, end))
+}
+
+/// τ_m alone (the loading's turn, where z̄' first falls through 0): from the pair's phase
+/// where it oscillates, by the bracket search otherwise (as [`events`] finds it).
+pub(super) fn peak(flow: &Flow, zeta: f64) -> Option<Root> {
+    let phased = phase_guesses(flow).and_then(|[guess, _]| {
+        let [peak, _] = refine_both(flow, [guess, None]);
+        peak
+    });
+    phased.or_else(|| first_fall(flow, 1, (0.0, 1.0), steps(flow, zeta), false))
 }
 
 /// The bracket search's first step and longest one: a quarter of the pair's period where it
@@ -169,8 +179,15 @@ fn householder(f: &[f64]) -> (f64, bool) {
 
 /// The first τ after `t0` (where the `k`-th derivative of z̄ is `g0`, known) where that
 /// derivative falls through 0 (k = 1: the peak; k = 0: separation), or `None` within
-/// [`TAU_MAX`] and [`MAX_STEPS`].
-fn first_fall(flow: &Flow, k: usize, (t0, g0): (f64, f64), step0: f64, cap: f64) -> Option<Root> {
+/// [`TAU_MAX`] and [`MAX_STEPS`] — or, with `falling`, wherever the next derivative is seen
+/// rising before the crossing (after flattening, z̄ rising again reloads: another branch).
+pub(super) fn first_fall(
+    flow: &Flow,
+    k: usize,
+    (t0, g0): (f64, f64),
+    (step0, cap): (f64, f64),
+    falling: bool,
+) -> Option<Root> {
     let (mut a, mut ga) = (t0, g0);
     let mut step = step0;
     for _ in 0..MAX_STEPS {
@@ -181,7 +198,7 @@ fn first_fall(flow: &Flow, k: usize, (t0, g0): (f64, f64), step0: f64, cap: f64)
         if ga > 0.0 && gb <= 0.0 {
             return Some(bracketed(flow, k, (a, ga), (point, jet)));
         }
-        if b > TAU_MAX {
+        if b > TAU_MAX || (falling && jet[k + 1] > 0.0) {
             return None;
         }
         // the next step doubles, or ends just past the root Householder's step predicts if
@@ -240,9 +257,15 @@ mod tests {
     /// The bracket search alone, as `events` falls back on it.
     fn by_brackets(flow: &Flow, zeta: f64) -> Option<(f64, f64)> {
         let (step0, cap) = steps(flow, zeta);
-        let peak = first_fall(flow, 1, (0.0, 1.0), step0, cap)?;
+        let peak = first_fall(flow, 1, (0.0, 1.0), (step0, cap), false)?;
         let z_m = peak.derivative(0);
-        let end = first_fall(flow, 0, (peak.t, z_m), (0.9 * peak.t).min(cap), cap)?;
+        let end = first_fall(
+            flow,
+            0,
+            (peak.t, z_m),
+            ((0.9 * peak.t).min(cap), cap),
+            false,
+        )?;
         Some((peak.t, end.t))
     }
 
