@@ -6,8 +6,8 @@
 //! correctly rounded (+, −, ×, ÷, √, floor, comparisons, bit selection), so both lane types
 //! give the same bits for the same operations; everything else (`max`, `min`, `is_finite`,
 //! the exponential and `atan2` of `math.rs`) is built from the primitives in [`Lane`]'s
-//! provided methods, once for both. `cbrt` and `sin_cos` (one a kernel call, and the rare long
-//! step) are `wide`'s in both: the same function, the same bits.
+//! provided methods, once for both. `cbrt` and `sin_cos` (once a kernel call, and the rare
+//! long step) are `wide`'s in both: the same function, the same bits.
 
 use std::ops::{Add, BitAnd, BitAndAssign, BitOr, BitOrAssign, Div, Mul, Neg, Not, Sub};
 use wide::f64x4;
@@ -85,7 +85,8 @@ pub trait Lane:
     fn is_finite(self) -> Self {
         (self - self).eq(Self::splat(0.0))
     }
-    /// ∛x, `wide`'s (the same function in every lane type).
+    /// ∛x, `wide`'s (the same function in every lane type): some 330 instructions for four
+    /// by callgrind, where libm's lane by lane took 550 and more.
     #[inline(always)]
     fn cbrt(self) -> Self {
         Self::from_array(f64x4::new(self.to_array()).cbrt().to_array())
