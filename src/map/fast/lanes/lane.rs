@@ -82,6 +82,7 @@ pub trait Lane:
     }
     /// The finite lanes: x − x is 0 exactly there, NaN at ±∞ and NaN.
     #[inline(always)]
+    #[allow(clippy::eq_op)] // x − x on purpose: 0 or NaN says finite or not
     fn is_finite(self) -> Self {
         (self - self).eq(Self::splat(0.0))
     }

@@ -89,6 +89,7 @@ pub fn exp<L: Lane>(x: L) -> L {
 
 /// Cephes' `atan` rational P(z²)/Q(z²) for |z| ≤ 0.66 (Moshier, Cephes Math Library, atan.c):
 /// atan z = z + z·z²·P/Q, P of degree 4 and Q monic of degree 5.
+#[allow(clippy::excessive_precision)] // Cephes' digits as published: the same f64s
 const ATAN_P: [f64; 5] = [
     -8.750_608_600_031_904_122_785E-1,
     -1.615_753_718_733_365_076_637E1,
@@ -96,6 +97,7 @@ const ATAN_P: [f64; 5] = [
     -1.228_866_684_490_136_173_410E2,
     -6.485_021_904_942_025_371_773E1,
 ];
+#[allow(clippy::excessive_precision)] // as ATAN_P
 const ATAN_Q: [f64; 6] = [
     1.0,
     2.485_846_490_142_306_297_962E1,
