@@ -12,7 +12,7 @@
 use std::ops::{Add, BitAnd, BitAndAssign, BitOr, BitOrAssign, Div, Mul, Neg, Not, Sub};
 use wide::f64x4;
 
-/// Impacts per call of the kernel: the lanes of a [`Lane`].
+/// Impacts per call of the kernel: the lanes of a `Lane`.
 pub const LANES: usize = 4;
 
 /// Four f64 side by side and what the kernel does with them. A mask is a value whose lanes
