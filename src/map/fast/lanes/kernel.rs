@@ -1,0 +1,360 @@
+//! The lanes' kernel: [`super::super::summary`]'s closed form, four impacts side by side over
+//! any [`Lane`] (the module's introduction, `lanes.rs`, says what it computes and where it
+//! hands a lane back). Generic so that one text compiles to the portable `f64x4` and to the
+//! AVX register (`avx.rs`); every operation is a [`Lane`] primitive or `math.rs`'s, so both
+//! give the same bits (`avx2_and_portable_kernels_agree_bit_for_bit`, tests/map_lanes.rs).
+
+use super::lane::{LANES, Lane};
+use super::math::{atan2, cos_sinc, exp, exp_small};
+use crate::map::fast::Summary;
+use crate::map::fast::flow::SMALL;
+use crate::map::fast::search::{MAX_REFINE, SETTLED, TAU_MAX};
+use std::f64::consts::{FRAC_PI_2, PI};
+
+/// The flow of four (λ, ζ): `flow::Flow`'s fields, lane by lane.
+struct Flow4<L: Lane> {
+    size: [L; 4],
+    r: L,
+    sigma: L,
+    omega2: L,
+    omega: L,
+    a: L,
+    d: L,
+    p: L,
+    q: L,
+    jet: [[L; 3]; 6],
+}
+
+/// `flow::Point`, lane by lane.
+#[derive(Clone, Copy)]
+struct Point4<L: Lane> {
+    t: L,
+    real: L,
+    decay: L,
+    ec: L,
+    es: L,
+}
+
+impl<L: Lane> Point4<L> {
+    #[inline(always)]
+    fn select(mask: L, yes: Point4<L>, no: Point4<L>) -> Point4<L> {
+        Point4 {
+            t: mask.select(yes.t, no.t),
+            real: mask.select(yes.real, no.real),
+            decay: mask.select(yes.decay, no.decay),
+            ec: mask.select(yes.ec, no.ec),
+            es: mask.select(yes.es, no.es),
+        }
+    }
+}
+
+/// A root lane by lane: τ, the point last evaluated and its jet (as `search::Root`).
+#[derive(Clone, Copy)]
+struct Root4<L: Lane> {
+    t: L,
+    point: Point4<L>,
+    jet: [L; 6],
+}
+
+/// The lone real root of s³ + a2 s² + s + a0 and the deflated quadratic (p1, p0), as
+/// `propagator::lone_real_root` gives them (Cardano, then at most four Newton steps that must
+/// settle), and the lanes where it answers.
+#[inline(always)]
+fn lone_real_root<L: Lane>(a2: L, a0: L) -> (L, L, L, L) {
+    let v = L::splat;
+    let (one, zero) = (v(1.0), v(0.0));
+    let shift = a2 / v(3.0);
+    let p = one - a2 * shift;
+    let q = (v(2.0) * shift * shift - one) * shift + a0;
+    let disc = v(0.25) * q * q + p * p * p / v(27.0);
+    let sign = q.sign_negative().select(v(-1.0), one);
+    let u = (v(-0.5) * q - sign * disc.sqrt()).cbrt();
+    let mut ok = disc.gt(zero) & u.ne(zero);
+    let mut r = u - p / (v(3.0) * u) - shift;
+    let mut done = zero.ne(zero);
+    for _ in 0..4 {
+        let value = ((r + a2) * r + one) * r + a0;
+        let slope = (v(3.0) * r + v(2.0) * a2) * r + one;
+        let step = value / slope;
+        let next = r - step;
+        r = done.select(r, next);
+        done |= step.abs().le(v(4.0 * f64::EPSILON) * next.abs());
+    }
+    ok &= done & r.ne(zero);
+    // deflate: the division form where r³ dominates a0, else the multiplication form
+    let first = (r.abs() * r.abs() * r.abs()).ge(a0);
+    let p0_div = -a0 / r;
+    let p1_div = (p0_div - one) / r;
+    let p1_mul = a2 + r;
+    let p0_mul = one + r * p1_mul;
+    (
+        r,
+        first.select(p1_div, p1_mul),
+        first.select(p0_div, p0_mul),
+        ok,
+    )
+}
+
+impl<L: Lane> Flow4<L> {
+    /// The flows, and the lanes whose pair oscillates and decays (`Flow::new`'s coefficients,
+    /// each of two equal forms the one of smaller terms).
+    #[inline(always)]
+    fn new(lambda: L, zeta: L) -> (Flow4<L>, L) {
+        let v = L::splat;
+        let (one, zero) = (v(1.0), v(0.0));
+        let two_zeta = v(2.0) * zeta;
+        let (a2, a0) = (two_zeta * (one + lambda), two_zeta * lambda);
+        let (r, p1, p0, mut ok) = lone_real_root(a2, a0);
+        let sigma = v(0.5) * p1;
+        let omega2 = p0 - sigma * sigma;
+        let gap = (r + sigma) * (r + sigma) + omega2;
+        ok &= gap.gt(zero) & p0.gt(zero) & omega2.gt(zero);
+        let (a_sum, sa_sum) = ((r + a0) / gap, (r.abs() + a0.abs()) / gap.abs());
+        let two_sigma = v(2.0) * sigma;
+        let a_diff = (two_sigma - two_zeta) / gap;
+        let sa_diff = (two_sigma.abs() + two_zeta.abs()) / gap.abs();
+        let pick = sa_sum.le(sa_diff);
+        let (a, sa) = (pick.select(a_sum, a_diff), pick.select(sa_sum, sa_diff));
+        let d_mul = one - (r + sigma) * a;
+        let sd_mul = one + (r + sigma).abs() * sa;
+        let d_div = (sigma - a0 + a * omega2) / (sigma + r);
+        let sd_div = (sigma.abs() + a0 + sa * omega2.abs()) / (sigma + r).abs();
+        let pick = sd_mul.le(sd_div);
+        let (d, sd) = (pick.select(d_mul, d_div), pick.select(sd_mul, sd_div));
+        let b = -a;
+        let p = -(d + sigma * b) / p0;
+        let sp = (sd + sigma.abs() * sa) / p0;
+        let q = b + sigma * p;
+        let size = [sa, sd, sp, sa + sigma.abs() * sp];
+        let mut jet = [[zero; 3]; 6];
+        let (mut ar, mut c, mut s) = (a, -a, d);
+        for row in &mut jet {
+            *row = [ar, c, s];
+            (ar, c, s) = (ar * r, s - sigma * c, -omega2 * c - sigma * s);
+        }
+        let omega = omega2.sqrt();
+        let flow = Flow4 {
+            size,
+            r,
+            sigma,
+            omega2,
+            omega,
+            a,
+            d,
+            p,
+            q,
+            jet,
+        };
+        (flow, ok)
+    }
+
+    /// `Flow::at_phase`: the point at τ from (cos ωτ, sin ωτ).
+    #[inline(always)]
+    fn at_phase(&self, t: L, cos: L, sin: L) -> Point4<L> {
+        let decay = exp(-self.sigma * t);
+        Point4 {
+            t,
+            real: exp(self.r * t),
+            decay,
+            ec: decay * cos,
+            es: decay * sin / self.omega,
+        }
+    }
+
+    /// `Flow::at` where the pair oscillates.
+    #[inline(always)]
+    fn at(&self, t: L) -> Point4<L> {
+        let (sin, cos) = (self.omega * t).sin_cos();
+        self.at_phase(t, cos, sin)
+    }
+
+    /// `Flow::shift`: the point `h` after `pt` by series, and the lanes where every rate × |h|
+    /// is within [`SMALL`] (elsewhere the caller takes [`Flow4::at`]).
+    #[inline(always)]
+    fn shift(&self, pt: &Point4<L>, h: L) -> (Point4<L>, L) {
+        let v = L::splat;
+        let rate = self.r.abs().max(self.sigma.abs()).max(self.omega);
+        let fits = (rate * h.abs()).le(v(SMALL));
+        let (cos, sinc) = cos_sinc(self.omega * h);
+        let (s_h, decay) = (h * sinc, exp_small(-self.sigma * h));
+        let ec = pt.ec * cos - self.omega2 * pt.es * s_h;
+        let es = pt.es * cos + pt.ec * s_h;
+        let point = Point4 {
+            t: pt.t + h,
+            real: pt.real * exp_small(self.r * h),
+            decay: pt.decay * decay,
+            ec: ec * decay,
+            es: es * decay,
+        };
+        (point, fits)
+    }
+
+    /// (z̄, …, z̄^{(5)}) at a point (`Flow::jet`).
+    #[inline(always)]
+    fn jet(&self, pt: &Point4<L>) -> [L; 6] {
+        std::array::from_fn(|k| {
+            let [ar, c, s] = self.jet[k];
+            ar * pt.real + c * pt.ec + s * pt.es
+        })
+    }
+
+    /// `Flow::rounding` where the pair oscillates: (for z̄, for ∫ z̄).
+    #[inline(always)]
+    fn rounding(&self, pt: &Point4<L>) -> (L, L) {
+        let v = L::splat;
+        let one = v(1.0);
+        let t = pt.t;
+        let (cm, sm) = (pt.decay, pt.decay * t.min(one / self.omega));
+        let real = pt.real * (one + self.r.abs() * t);
+        let grow = one + (self.sigma.abs() + self.omega2.abs().sqrt()) * t;
+        let (cm, sm) = (cm * grow, sm * grow);
+        let k = v(f64::EPSILON);
+        let [sa, sd, sp, sq] = self.size;
+        let z = sa * (real + cm) + sd * sm;
+        let int = sa * (one + real) / self.r.abs();
+        let int = int + sp * (one + cm) + sq * sm;
+        (k * z, k * int)
+    }
+
+    /// `Flow::integral` where |rτ| ≥ 1e-3 (the caller checks).
+    #[inline(always)]
+    fn integral(&self, pt: &Point4<L>) -> L {
+        let v = L::splat;
+        let real = self.a * (pt.real - v(1.0)) / self.r;
+        real + self.p * pt.ec + self.q * pt.es - self.p
+    }
+
+    /// `search::phase_guesses` where P > 0: the points at the pair's zeros of z̄' and z̄, and
+    /// the lanes where P > 0.
+    #[inline(always)]
+    fn guesses(&self) -> ([Point4<L>; 2], L) {
+        let v = L::splat;
+        let w = self.omega;
+        let p = self.d + self.sigma * self.a;
+        let q = (self.a * self.omega2 - self.sigma * self.d) / w;
+        let theta_m = atan2(p, -q);
+        let flip = self.d.lt(v(0.0)).select(v(-1.0), v(1.0));
+        let (a, dw) = (flip * self.a, flip * self.d / w);
+        let theta = atan2(a, dw);
+        let k = ((theta_m - theta) / v(PI)).floor() + v(1.0);
+        let odd = (k - v(2.0) * (v(0.5) * k).floor()).ne(v(0.0));
+        let norm_m = (p * p + q * q).sqrt();
+        let norm_f = odd.select(v(-1.0), v(1.0)) / (a * a + dw * dw).sqrt();
+        let peak = self.at_phase(theta_m / w, -q / norm_m, p / norm_m);
+        let end = self.at_phase((theta + k * v(PI)) / w, dw * norm_f, a * norm_f);
+        ([peak, end], p.gt(v(0.0)))
+    }
+}
+
+/// `search::householder`: the step and the lanes where it is the last one on a falling
+/// crossing.
+#[inline(always)]
+fn householder<L: Lane>(f: &[L]) -> (L, L) {
+    let v = L::splat;
+    let one = v(1.0);
+    let inv = one / f[1];
+    let (u, c2, c3) = (f[0] * inv, f[2] * inv, f[3] * inv);
+    let h = u * (one - v(0.5) * u * c2) / (one - u * c2 + u * u * c3 / v(6.0));
+    let settled = (c2 * h).abs().le(v(SETTLED))
+        & (c3.abs() * h * h).le(v(SETTLED * SETTLED))
+        & f[1].lt(v(0.0));
+    (h, settled)
+}
+
+/// `search::refine_both`: τ_m (i = 0, the root of z̄') and τ_f (i = 1, of z̄) from their
+/// guesses, side by side; the lanes where each settled within [`MAX_REFINE`] steps inside
+/// (0, [`TAU_MAX`]) and within a quarter of the pair's period of its guess.
+#[inline(always)]
+fn refine_both<L: Lane>(flow: &Flow4<L>, guesses: [Point4<L>; 2], live: L) -> ([Root4<L>; 2], L) {
+    let v = L::splat;
+    let mut points = guesses;
+    let mut active = [live, live];
+    let mut found = [v(0.0), v(0.0)];
+    let mut roots = guesses.map(|point| Root4 {
+        t: point.t,
+        point,
+        jet: [v(0.0); 6],
+    });
+    for _ in 0..MAX_REFINE {
+        for i in 0..2 {
+            if !active[i].any() {
+                continue;
+            }
+            let point = points[i];
+            let jet = flow.jet(&point);
+            let (h, settled) = householder(&jet[1 - i..5 - i]);
+            let t = point.t - h;
+            let inside = t.gt(v(0.0)) & t.lt(v(TAU_MAX));
+            let now = active[i] & inside & settled;
+            roots[i] = Root4 {
+                t: now.select(t, roots[i].t),
+                point: Point4::select(now, point, roots[i].point),
+                jet: std::array::from_fn(|k| now.select(jet[k], roots[i].jet[k])),
+            };
+            found[i] |= now;
+            active[i] &= inside & !settled;
+            if !active[i].any() {
+                // every lane of this event settled or left: no next point to turn to
+                continue;
+            }
+            let (shifted, fits) = flow.shift(&point, -h);
+            let far = active[i] & !fits;
+            points[i] = if far.any() {
+                Point4::select(fits, shifted, flow.at(t))
+            } else {
+                shifted
+            };
+        }
+        if !(active[0] | active[1]).any() {
+            break;
+        }
+    }
+    let quarter = v(FRAC_PI_2) / flow.omega;
+    let near = |i: usize| (roots[i].t - guesses[i].t).le(quarter);
+    let ok = found[0] & found[1] & near(0) & near(1) & roots[1].t.gt(roots[0].t);
+    (roots, ok)
+}
+
+/// `search::taylor`.
+#[inline(always)]
+fn taylor<L: Lane>(c: &[L], h: L) -> L {
+    let v = L::splat;
+    c[0] + h * (c[1] + h / v(2.0) * (c[2] + h / v(3.0) * (c[3] + h / v(4.0) * c[4])))
+}
+
+/// The body of `lanes_only`, inlined into each of its compilations (portable, AVX2).
+#[inline(always)]
+pub fn kernel<L: Lane>(lambda: [f64; LANES], zeta: [f64; LANES]) -> [Option<Summary>; LANES] {
+    let v = L::splat;
+    let (l, z) = (L::from_array(lambda), L::from_array(zeta));
+    let valid = l.gt(v(0.0)) & z.gt(v(0.0)) & l.is_finite() & z.is_finite();
+    // a lane left out computes a harmless ball (λ = 1, ζ = 0.1), its answer then dropped
+    let (l, z) = (valid.select(l, v(1.0)), valid.select(z, v(0.1)));
+    let (flow, ok) = Flow4::new(l, z);
+    let (guesses, pair) = flow.guesses();
+    let live = valid & ok & pair;
+    let (roots, settled) = refine_both(&flow, guesses, live);
+    let [peak, end] = roots;
+    let z_m = taylor(&peak.jet[0..5], peak.t - peak.point.t);
+    let h = end.t - end.point.t;
+    let integral = flow.integral(&end.point);
+    let j = &end.jet;
+    let cor = taylor(&[integral, j[0], j[1], j[2], j[3]], h) - v(1.0);
+    let (dz_m, _) = flow.rounding(&peak.point);
+    let (dz_f, dint) = flow.rounding(&end.point);
+    let slope = taylor(&j[1..6], h).abs();
+    let keep = v(crate::map::fast::KEEP);
+    let precise = dz_m.le(keep * z_m)
+        & dint.le(keep * cor.abs())
+        & dz_f.le(keep * slope * end.t)
+        & (flow.r * end.point.t).abs().ge(v(1e-3));
+    let answered = (live & settled & precise).bitmask();
+    let (cor, z_m, t_f) = (cor.to_array(), z_m.to_array(), end.t.to_array());
+    std::array::from_fn(|i| {
+        (answered & (1 << i) != 0).then_some(Summary {
+            cor: cor[i],
+            max_force: z_m[i],
+            contact_time: t_f[i],
+        })
+    })
+}

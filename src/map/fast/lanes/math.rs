@@ -1,0 +1,154 @@
+//! The kernel's transcendental functions over any [`Lane`], inline, from the lane primitives
+//! alone: the same bits in every lane type, and in the AVX2 kernel one ymm register through
+//! them (no call out to `wide`'s SSE2 `exp` and `atan2`: `avx.rs` says why by hand). Both
+//! stay within 2 ulp of libm's over the kernel's arguments (`exp_is_libms_to_two_ulp`,
+//! `atan2_is_libms_to_two_ulp`); the series of the short steps (`exp_small`, `cos_sinc`) are
+//! flow.rs's, term for term.
+
+use super::lane::Lane;
+use std::f64::consts::{FRAC_PI_2, FRAC_PI_4, LOG2_E, PI};
+
+/// 1/k!, k ≤ 13 (as flow.rs's).
+const INV_FACTORIAL: [f64; 14] = {
+    let mut c = [1.0; 14];
+    let mut k = 1;
+    while k < 14 {
+        c[k] = c[k - 1] / k as f64;
+        k += 1;
+    }
+    c
+};
+
+/// The coefficients (−1)^{k·alt}/(step·k + first)! for k = N − 1 down to 0: a series in
+/// [`horner`]'s order (highest degree first).
+const fn series<const N: usize>(step: usize, first: usize, alt: bool) -> [f64; N] {
+    let mut c = [0.0; N];
+    let mut i = 0;
+    while i < N {
+        let k = N - 1 - i;
+        let sign = if alt && k % 2 == 1 { -1.0 } else { 1.0 };
+        c[i] = sign * INV_FACTORIAL[step * k + first];
+        i += 1;
+    }
+    c
+}
+
+/// eʳ to r¹³, [`exp`]'s series.
+const EXP_SERIES: [f64; 14] = series(1, 0, false);
+/// eˣ to x¹⁰, [`exp_small`]'s.
+const EXP_SMALL_SERIES: [f64; 11] = series(1, 0, false);
+/// cos x and sin(x)/x to x¹⁰, in x², [`cos_sinc`]'s.
+const COS_SERIES: [f64; 6] = series(2, 0, true);
+const SINC_SERIES: [f64; 6] = series(2, 1, true);
+
+/// Σ c[i] x^{n−1−i} by Horner's rule, `c` highest degree first: c[0] x + c[1], times x plus
+/// c[2], … A `while` loop over a constant array rather than an iterator's `fold`, which the
+/// compiler did not inline into the AVX2 kernel (a call, and the lane operations inside it
+/// calls too: 22 % of a Monte Carlo sample's instructions by callgrind); this one unrolls.
+#[inline(always)]
+fn horner<L: Lane>(x: L, c: &[f64]) -> L {
+    let mut sum = L::splat(c[0]);
+    let mut i = 1;
+    while i < c.len() {
+        sum = sum * x + L::splat(c[i]);
+        i += 1;
+    }
+    sum
+}
+
+/// 1.5·2⁵²: (x + ROUND) − ROUND is x rounded to the nearest integer (ties to even) for
+/// |x| < 2⁵¹, the addition's own rounding doing it.
+const ROUND: f64 = 6_755_399_441_055_744.0;
+
+/// ln 2 in two parts (fdlibm's `e_exp.c`): the high part's last 21 bits are zero, so k·LN2_HI
+/// is exact for |k| < 2²¹ and x − k·LN2_HI loses nothing.
+const LN2_HI: f64 = f64::from_bits(0x3FE6_2E42_FEE0_0000);
+const LN2_LO: f64 = f64::from_bits(0x3DEA_39EF_3579_3C76);
+
+/// 2ⁿ for an integer n ∈ [−1022, 1023], exactly: n + 2⁵² + 1023 holds n's biased exponent
+/// in its last bits, which [`Lane::shl52`] moves into the exponent field.
+#[inline(always)]
+fn pow2<L: Lane>(n: L) -> L {
+    (n + L::splat(4_503_599_627_370_496.0 + 1023.0)).shl52()
+}
+
+/// eˣ: x = k ln 2 + r with |r| ≤ ln 2 / 2, e^r by its Taylor series to r¹³ (the first term
+/// left out, r¹⁴/14! < 4.3e-18, is under a twentieth of an ulp), times 2ᵏ in two exact halves
+/// so that k reaches ±2 000. Beyond ±1 400 the answer is 0 or ∞ already: x is clamped there
+/// to keep k in range. NaN stays NaN.
+#[inline(always)]
+pub fn exp<L: Lane>(x: L) -> L {
+    let v = L::splat;
+    let x = x.max(v(-1400.0)).min(v(1400.0));
+    let k = (x * v(LOG2_E) + v(ROUND)) - v(ROUND);
+    let r = (x - k * v(LN2_HI)) - k * v(LN2_LO);
+    let series = horner(r, &EXP_SERIES);
+    let half = (k * v(0.5) + v(ROUND)) - v(ROUND);
+    series * pow2(half) * pow2(k - half)
+}
+
+/// Cephes' `atan` rational P(z²)/Q(z²) for |z| ≤ 0.66 (Moshier, Cephes Math Library, atan.c):
+/// atan z = z + z·z²·P/Q, P of degree 4 and Q monic of degree 5.
+#[allow(clippy::excessive_precision)] // Cephes' digits as published: the same f64s
+const ATAN_P: [f64; 5] = [
+    -8.750_608_600_031_904_122_785E-1,
+    -1.615_753_718_733_365_076_637E1,
+    -7.500_855_792_314_704_667_340E1,
+    -1.228_866_684_490_136_173_410E2,
+    -6.485_021_904_942_025_371_773E1,
+];
+#[allow(clippy::excessive_precision)] // as ATAN_P
+const ATAN_Q: [f64; 6] = [
+    1.0,
+    2.485_846_490_142_306_297_962E1,
+    1.650_270_098_316_988_542_046E2,
+    4.328_810_604_912_902_668_951E2,
+    4.853_903_996_359_136_964_868E2,
+    1.945_506_571_482_613_964_425E2,
+];
+
+/// π/2 − `FRAC_PI_2`: the bits of π/2 past an f64's.
+const PI_2_TAIL: f64 = 6.123_233_995_736_766e-17;
+
+/// atan2(y, x) for finite y, x, in (−π, π] as libm's: folded to t = min/max of |y|, |x| in
+/// [0, 1], t > 0.66 turned to π/4 + atan((t − 1)/(t + 1)), then unfolded by the octant
+/// (π/2 − ·, π − ·, the sign of y). atan2(±0, ±0) is ±0 or ±π as libm's.
+#[inline(always)]
+pub fn atan2<L: Lane>(y: L, x: L) -> L {
+    let v = L::splat;
+    let (ax, ay) = (x.abs(), y.abs());
+    let swap = ay.gt(ax);
+    let (num, den) = (swap.select(ax, ay), swap.select(ay, ax));
+    let zero = den.eq(v(0.0));
+    let t = num / zero.select(v(1.0), den);
+    let mid = t.gt(v(0.66));
+    let z = mid.select(t - v(1.0), t) / mid.select(t + v(1.0), v(1.0));
+    let zz = z * z;
+    let p = horner(zz, &ATAN_P);
+    let q = horner(zz, &ATAN_Q);
+    let atan_z = z * (zz * p / q) + z;
+    let angle =
+        mid.select(v(FRAC_PI_4), v(0.0)) + (atan_z + mid.select(v(0.5 * PI_2_TAIL), v(0.0)));
+    let angle = swap.select((v(FRAC_PI_2) - angle) + v(PI_2_TAIL), angle);
+    let angle = x
+        .sign_negative()
+        .select((v(PI) - angle) + v(2.0 * PI_2_TAIL), angle);
+    y.sign_negative().select(-angle, angle)
+}
+
+/// `flow::exp_small`: Σ xᵏ/k!, k ≤ 10, good where |x| ≤ `SMALL` (flow.rs).
+#[inline(always)]
+pub fn exp_small<L: Lane>(x: L) -> L {
+    horner(x, &EXP_SMALL_SERIES)
+}
+
+/// `flow::cos_sinc`: (cos x, sin(x)/x) to x¹⁰, good where |x| ≤ `SMALL` (flow.rs).
+#[inline(always)]
+pub fn cos_sinc<L: Lane>(x: L) -> (L, L) {
+    let x2 = x * x;
+    (horner(x2, &COS_SERIES), horner(x2, &SINC_SERIES))
+}
+
+#[cfg(test)]
+#[path = "math_tests.rs"]
+mod tests;

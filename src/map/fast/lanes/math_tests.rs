@@ -1,0 +1,172 @@
+//! The lanes' `exp` and `atan2` against libm's, and the same bits in both lane types.
+
+use super::super::lane::{LANES, Lane};
+use super::{atan2, exp};
+use wide::f64x4;
+
+/// splitmix64 as a unit stream: the same points on every run.
+fn units(seed: u64, n: usize) -> Vec<f64> {
+    let mut s = seed;
+    (0..n)
+        .map(|_| {
+            s = s.wrapping_add(0x9E37_79B9_7F4A_7C15);
+            let mut z = s;
+            z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+            z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+            ((z ^ (z >> 31)) >> 11) as f64 / (1u64 << 53) as f64
+        })
+        .collect()
+}
+
+/// The distance from `got` to `want` in units of `want`'s last place.
+fn ulps(got: f64, want: f64) -> f64 {
+    if got == want {
+        return 0.0;
+    }
+    let ulp = want.abs().next_up() - want.abs();
+    (got - want).abs() / ulp.max(f64::from_bits(1))
+}
+
+/// The function applied four at a time through the portable lane type.
+fn in_lanes(xs: &[f64], f: impl Fn(f64x4) -> f64x4) -> Vec<f64> {
+    xs.chunks(LANES)
+        .flat_map(|c| {
+            let a = std::array::from_fn(|i| c[i.min(c.len() - 1)]);
+            f(f64x4::from_array(a)).to_array()[..c.len()].to_vec()
+        })
+        .collect()
+}
+
+fn exp_arguments() -> Vec<f64> {
+    let mut xs: Vec<f64> = units(7, 200_000)
+        .iter()
+        .map(|u| -745.0 + 1454.0 * u)
+        .collect();
+    xs.extend(units(8, 50_000).iter().map(|u| (u - 0.5) * 4.0));
+    xs.extend(units(9, 50_000).iter().map(|u| (u - 0.5) * 1e-6));
+    xs.extend([
+        0.0,
+        -0.0,
+        1.0,
+        -1.0,
+        0.5 * std::f64::consts::LN_2,
+        709.7,
+        -708.3,
+    ]);
+    xs
+}
+
+#[test]
+fn exp_is_libms_to_two_ulp() {
+    let xs = exp_arguments();
+    let got = in_lanes(&xs, exp);
+    let worst = xs
+        .iter()
+        .zip(&got)
+        .filter(|(x, _)| x.exp() >= f64::MIN_POSITIVE)
+        .map(|(x, g)| (ulps(*g, x.exp()), *x))
+        .fold((0.0, 0.0), |a, b| if b.0 > a.0 { b } else { a });
+    assert!(worst.0 <= 2.0, "exp({}) off by {} ulp", worst.1, worst.0);
+    // past the range: 0, ∞ and NaN as libm's
+    let edges = in_lanes(&[-800.0, -1e300, 800.0, f64::NAN], exp);
+    assert_eq!(edges[..3], [0.0, 0.0, f64::INFINITY]);
+    assert!(edges[3].is_nan());
+}
+
+fn atan2_arguments() -> Vec<(f64, f64)> {
+    let (a, b) = (units(11, 200_000), units(12, 200_000));
+    let mut p: Vec<(f64, f64)> = a
+        .iter()
+        .zip(&b)
+        .map(|(u, w)| {
+            let angle = (u - 0.5) * 2.0 * std::f64::consts::PI;
+            let r = 10f64.powf(-6.0 + 12.0 * w);
+            (r * angle.sin(), r * angle.cos())
+        })
+        .collect();
+    // far from the diagonal too: |y/x| up to 1e12 either way
+    p.extend(a.iter().zip(&b).take(50_000).map(|(u, w)| {
+        let ratio = 10f64.powf(-12.0 + 24.0 * u);
+        (
+            if *w < 0.5 { ratio } else { -ratio },
+            if *u < 0.3 { -1.0 } else { 1.0 },
+        )
+    }));
+    p.extend([
+        (0.0, 1.0),
+        (1.0, 0.0),
+        (0.0, -1.0),
+        (-1.0, 0.0),
+        (1.0, 1.0),
+        (-1.0, -1.0),
+    ]);
+    p.extend([
+        (0.0, 0.0),
+        (-0.0, 0.0),
+        (0.0, -0.0),
+        (-0.0, -0.0),
+        (0.66, 1.0),
+        (1.0, 0.66),
+    ]);
+    p
+}
+
+#[test]
+fn atan2_is_libms_to_two_ulp() {
+    let p = atan2_arguments();
+    let ys: Vec<f64> = p.iter().map(|q| q.0).collect();
+    let xs: Vec<f64> = p.iter().map(|q| q.1).collect();
+    let packed: Vec<f64> = ys.iter().chain(&xs).copied().collect();
+    let n = ys.len();
+    let got: Vec<f64> = (0..n)
+        .step_by(LANES)
+        .flat_map(|i| {
+            let pick = |off: usize| std::array::from_fn(|k| packed[off + (i + k).min(n - 1)]);
+            let out = atan2(f64x4::from_array(pick(0)), f64x4::from_array(pick(n)));
+            out.to_array()[..LANES.min(n - i)].to_vec()
+        })
+        .collect();
+    for ((y, x), g) in p.iter().zip(&got) {
+        let want = y.atan2(*x);
+        assert!(
+            ulps(*g, want) <= 2.0 && g.is_sign_negative() == want.is_sign_negative(),
+            "atan2({y}, {x}) = {g}, libm {want}: {} ulp",
+            ulps(*g, want)
+        );
+    }
+}
+
+/// The AVX lane type gives the portable one's bits, function by function (the whole kernel:
+/// tests/map_lanes.rs `avx2_and_portable_kernels_agree_bit_for_bit`).
+#[cfg(target_arch = "x86_64")]
+#[test]
+fn avx_and_portable_math_agree_bit_for_bit() {
+    use super::super::avx::Avx;
+    if !std::arch::is_x86_feature_detected!("avx2") {
+        eprintln!("no AVX2 on this CPU: nothing to compare");
+        return;
+    }
+    #[target_feature(enable = "avx2")]
+    fn both(a: [f64; LANES], b: [f64; LANES]) -> [[f64; LANES]; 4] {
+        let (x, y) = (Avx::from_array(a), Avx::from_array(b));
+        let (s, c) = x.sin_cos();
+        [
+            exp(x).to_array(),
+            atan2(x, y).to_array(),
+            s.to_array(),
+            c.to_array(),
+        ]
+    }
+    let xs = exp_arguments();
+    let ys: Vec<f64> = atan2_arguments().iter().map(|q| q.1).collect();
+    for (a, b) in xs.chunks_exact(LANES).zip(ys.chunks_exact(LANES)) {
+        let (a, b): ([f64; LANES], [f64; LANES]) = (a.try_into().unwrap(), b.try_into().unwrap());
+        // SAFETY: the CPU has AVX2, just checked
+        let avx = unsafe { both(a, b) };
+        let (x, y) = (f64x4::from_array(a), f64x4::from_array(b));
+        let (s, c) = x.sin_cos();
+        let portable = [exp(x), atan2(x, y), s, c].map(|r| r.to_array());
+        let bits = |r: [[f64; LANES]; 4]| r.map(|a| a.map(f64::to_bits));
+        assert_eq!(bits(avx), bits(portable), "at {a:?}, {b:?}");
+    }
+}
