@@ -75,7 +75,8 @@ fn solve_cell(
 /// The cell from a fast path when one answers: on the linear law the closed form `closed`
 /// ([`super::fast::summary`]'s, in lanes) while the ball does not flatten (z̄_m ≤ z̄_p); the
 /// Taylor steps ([`crate::solver::taylor::summary`]) for a flattening ball and for the Hertz
-/// and elastic–plastic laws. SI as `to_si` converts: F = F̄ m v0 ω0, t = τ/ω0.
+/// and elastic–plastic laws, the Hertz table first ([`crate::solver::table::summary`]).
+/// SI as `to_si` converts: F = F̄ m v0 ω0, t = τ/ω0.
 fn fast_cell(
     spec: &MapSpec,
     p: &ImpactParams,
@@ -85,7 +86,7 @@ fn fast_cell(
     let s = match closed {
         Some(s) if s.max_force <= n.zp_bar => s,
         _ => {
-            let t = crate::solver::taylor::summary(&n, spec.law)?;
+            let t = crate::solver::table::summary(&n, spec.law)?;
             super::fast::Summary {
                 cor: t.cor,
                 max_force: t.max_force,
