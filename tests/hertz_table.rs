@@ -39,7 +39,9 @@ fn the_committed_table_reads_on_its_grid() {
     assert_eq!(patches.len(), GRID.nu * GRID.nw);
     let kept = patches.iter().filter(|p| p.values.is_some()).count();
     eprintln!("{kept} of {} patches kept", patches.len());
-    assert!(kept * 4 >= patches.len() * 3, "{kept}");
+    // 187 when generated: the rest are past the reference's steps or across a kink of F̂_m
+    // (docs/numerics.md); fewer means the generator lost ground
+    assert!(kept >= 187, "{kept}");
     for p in &patches {
         // a kept patch was measured within the tolerance, a patch left out above it
         assert_eq!(
@@ -158,7 +160,7 @@ fn the_table_answers_inside_its_kept_patches_only() {
     // κ = 3: L = 3^{−0.4}; the normalized λ = λ̂/L², ζ = ζ̂ L
     let kappa: f64 = 3.0;
     let big_l = kappa.powf(-0.4);
-    let (lh, zh) = (0.7, 1.3);
+    let (lh, zh) = (3.0, 0.05);
     let n = ball(lh / (big_l * big_l), zh * big_l, kappa);
     let [e, f, t, zm, y] = table::hertz_hat(lh, zh).unwrap();
     let s = table::summary(&n, ContactLaw::Hertz).unwrap();

@@ -11,6 +11,7 @@
 //!   1e-12: the adaptive solver at rtol 1e-14 (DOPRI5 at its tightest; an independent
 //!   integration, of another method in another variable), the exact solver for the linear law.
 
+use bouncelab::solver::table;
 use bouncelab::solver::taylor::{Summary, summary};
 use bouncelab::{ContactLaw, ImpactParams, ImpactResponse, SolveOptions, simulate};
 use proptest::prelude::*;
@@ -149,6 +150,32 @@ fn agrees(s: &Summary, p: &ImpactParams, law: ContactLaw) -> Result<(), TestCase
     Ok(())
 }
 
+/// The Hertz table's answer `s` (`solver::table::hertz`) against the adaptive solver, as
+/// `agrees` — except where the adaptive run was stiff: its stiff cascade holds e only to
+/// 6e-8 … 9e-8 there whatever rtol (BENCHMARKS.md, "a stiff solver tried and withdrawn";
+/// here at λ̂ = 230, ζ̂ = 6.2 it is 9e-8 off), so the table must then meet the reference
+/// it was built from, the Taylor steps without step limit, to 1e-9 (`table::error`), and the
+/// adaptive solver to the 1e-6 its stiff runs promise (`integrator::LOOSEN`).
+fn table_agrees(s: &Summary, p: &ImpactParams) -> Result<(), TestCaseError> {
+    let r = solve(p, ContactLaw::Hertz, 1e-10);
+    if !r.stiff {
+        return agrees(s, p, ContactLaw::Hertz);
+    }
+    let n = p.normalized();
+    let l = n.kappa.powf(-0.4);
+    let (lambda_hat, zeta_hat) = (n.lambda * l * l, n.zeta / l);
+    let tabulated = table::hertz_hat(lambda_hat, zeta_hat).unwrap();
+    let reference = table::reference(lambda_hat, zeta_hat).unwrap();
+    let d = table::error(&tabulated, &reference);
+    prop_assert!(
+        d <= 1e-9,
+        "{p:?}: {d:e} against the reference {reference:?}"
+    );
+    let d = difference(s, p, &r);
+    prop_assert!(d <= 1e-6, "{p:?}: {d:e} ({s:?} against the stiff {r:?})");
+    Ok(())
+}
+
 proptest! {
     #![proptest_config(config(600))]
 
@@ -166,7 +193,7 @@ proptest! {
             agrees(&s, &p, law)?;
         }
         if law == ContactLaw::Hertz && let Some(s) = bouncelab::solver::table::hertz(&n) {
-            agrees(&s, &p, law)?;
+            table_agrees(&s, &p)?;
         }
     }
 }
