@@ -8,6 +8,8 @@
 //! cargo run --release --example gen_hertz_table [-- OUT]            the table (default path)
 //! cargo run --release --example gen_hertz_table -- --probe U W D N  one patch, side D decades,
 //!                                                                   degree N, from (U, W)
+//! cargo run --release --example gen_hertz_table -- --line U0 W0 U1 W1 N  the reference
+//!                                                   at N + 1 points of a segment
 //! ```
 
 use bouncelab::solver::table::{self, GRID, Grid, OUTPUTS, Patch, cheb};
@@ -160,7 +162,6 @@ fn main() {
 
 /// `--line U0 W0 U1 W1 N`: the reference's outputs along a segment of the (log λ̂, log ζ̂)
 /// plane, to see where a patch is not smooth.
-#[allow(dead_code)]
 fn line(args: &[String]) {
     let num = |i: usize| args[i].parse::<f64>().expect("a number");
     let n = num(4) as usize;
