@@ -143,3 +143,18 @@ fn flattening_summary() -> f64 {
         .unwrap()
         .cor
 }
+
+/// The Hertz cases (0: the superball's adopted set, 2: the normalized (λ, ζ) = (1, 2) ball)
+/// through the Hertz table (`solver::table::hertz`, issue 30 item 1: target ≤ 1 µs), in the
+/// same run as `taylor_summary` and `linear_fast_summary`. The table is read before timing.
+#[divan::bench(args = [0, 2])]
+fn table_hertz_summary(b: divan::Bencher, case: usize) {
+    let (_, p) = CASES[case];
+    let n = p.normalized();
+    assert!(bouncelab::solver::table::hertz(&n).is_some(), "case {case}");
+    b.bench(|| {
+        bouncelab::solver::table::hertz(&black_box(p).normalized())
+            .unwrap()
+            .cor
+    });
+}

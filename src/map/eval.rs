@@ -76,7 +76,8 @@ fn solve_cell(
 /// ([`super::fast::summary`]'s, in lanes) while the ball does not flatten (z̄_m ≤ z̄_p), the
 /// flattening closed form ([`super::fast::flattening`]) where it does and answers; the
 /// Taylor steps ([`crate::solver::taylor::summary`]) for a flattening ball and for the Hertz
-/// and elastic–plastic laws. SI as `to_si` converts: F = F̄ m v0 ω0, t = τ/ω0.
+/// and elastic–plastic laws, the Hertz table first ([`crate::solver::table::summary`]).
+/// SI as `to_si` converts: F = F̄ m v0 ω0, t = τ/ω0.
 fn fast_cell(
     spec: &MapSpec,
     p: &ImpactParams,
@@ -91,7 +92,7 @@ fn fast_cell(
             s
         }
         _ => {
-            let t = crate::solver::taylor::summary(&n, spec.law)?;
+            let t = crate::solver::table::summary(&n, spec.law)?;
             super::fast::Summary {
                 cor: t.cor,
                 max_force: t.max_force,

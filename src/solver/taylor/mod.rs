@@ -83,8 +83,11 @@ struct Budget {
 
 impl Budget {
     fn new() -> Budget {
+        Budget::with_steps(MAX_STEPS)
+    }
+    fn with_steps(steps: usize) -> Budget {
         Budget {
-            steps: MAX_STEPS,
+            steps,
             taken: 0,
             tau_max: TAU_MAX,
         }
@@ -133,18 +136,7 @@ fn power_law(n: &Normalized, law: ContactLaw) -> Option<Summary> {
         return None;
     }
     let mut budget = Budget::new();
-    let hertz = power::Branch {
-        z0: 0.0,
-        b: 1.0,
-        a: 1.0,
-    };
-    let start = Point {
-        tau: 0.0,
-        z: 0.0,
-        v: 1.0,
-        y: 0.0,
-    };
-    let first = power::run(&sys, &hertz, start, zp.sqrt(), false, &mut budget)?;
+    let first = hertz_loading(&sys, zp, &mut budget)?;
     let (end, z_m, f_m, z_f) = match first.end {
         power::End::Separated(p) => {
             let s = first.s_max;
@@ -184,6 +176,45 @@ fn power_law(n: &Normalized, law: ContactLaw) -> Option<Summary> {
         }
     };
     finish(end, z_m, f_m, z_f, l, &budget)
+}
+
+/// The Hertz loading (ẑ from 0 at unit speed, κ̂ = 1) until separation or yield at ẑ_p.
+fn hertz_loading(sys: &Sys, zp: f64, budget: &mut Budget) -> Option<power::Run> {
+    let hertz = power::Branch {
+        z0: 0.0,
+        b: 1.0,
+        a: 1.0,
+    };
+    let start = Point {
+        tau: 0.0,
+        z: 0.0,
+        v: 1.0,
+        y: 0.0,
+    };
+    power::run(sys, &hertz, start, zp.sqrt(), false, budget)
+}
+
+/// The Hertz impact in the Hertz scale (κ̂ = 1, unit speed) at (λ̂, ζ̂), by the Taylor steps
+/// with no stiffness cut and at most `max_steps` steps: the reference of the Hertz table
+/// (`solver::table`). BENCHMARKS.md ("a stiff solver tried and withdrawn"): at a stiff cell,
+/// (λ̂, ζ̂) = (30, 40), its e agrees with an independent Radau IIA to 4e-15. `None` when the
+/// steps run out, the contact outlasts τ̂ = 10³, or λ̂, ζ̂ are not finite and ≥ 0.
+pub fn hertz_reference(lambda_hat: f64, zeta_hat: f64, max_steps: usize) -> Option<Summary> {
+    let ok = |x: f64| x.is_finite() && x >= 0.0;
+    if !(ok(lambda_hat) && ok(zeta_hat)) {
+        return None;
+    }
+    let sys = Sys {
+        lambda: lambda_hat,
+        zeta: zeta_hat,
+    };
+    let mut budget = Budget::with_steps(max_steps);
+    let first = hertz_loading(&sys, f64::INFINITY, &mut budget)?;
+    let power::End::Separated(end) = first.end else {
+        return None;
+    };
+    let s = first.s_max;
+    finish(end, s * s, s * s * s, 0.0, 1.0, &budget)
 }
 
 /// The linear law where the ball flattens: loading F̄ = z̄ to the turn, then the straight

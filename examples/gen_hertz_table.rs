@@ -1,0 +1,201 @@
+//! Writes the Hertz table `src/solver/table/hertz.bin` (issue 30 item 1; docs/numerics.md):
+//! for each patch of `table::GRID`, the reference (the Taylor steps without step limit or
+//! stiffness cut) at its Chebyshev–Lobatto nodes, then at the points between them, where the
+//! interpolant's error is measured; a patch whose error exceeds `table::TOLERANCE`, or where
+//! the reference does not answer, is stored as not kept (the Taylor steps answer there).
+//!
+//! ```text
+//! cargo run --release --example gen_hertz_table [-- OUT]            the table (default path)
+//! cargo run --release --example gen_hertz_table -- --probe U W D N  one patch, side D decades,
+//!                                                                   degree N, from (U, W)
+//! cargo run --release --example gen_hertz_table -- --line U0 W0 U1 W1 N  the reference
+//!                                                   at N + 1 points of a segment
+//! ```
+
+use bouncelab::solver::table::{self, GRID, Grid, OUTPUTS, Patch, cheb};
+use rayon::prelude::*;
+use std::time::Instant;
+
+/// The reference at the nodes of patch (iu, iw), ln of each output, output by output.
+fn node_values(grid: &Grid, iu: usize, iw: usize) -> Option<Vec<f64>> {
+    let xs = cheb::lobatto(grid.degree);
+    let m = xs.len();
+    let nodes: Vec<(usize, usize)> = (0..m).flat_map(|i| (0..m).map(move |j| (i, j))).collect();
+    let at: Vec<[f64; OUTPUTS]> = nodes
+        .par_iter()
+        .map(|&(i, j)| {
+            let (l, z) = grid.point(iu, iw, xs[i], xs[j]);
+            table::reference(l, z)
+        })
+        .collect::<Option<_>>()?;
+    Some(
+        (0..OUTPUTS)
+            .flat_map(|k| at.iter().map(move |o| o[k].ln()))
+            .collect(),
+    )
+}
+
+/// The largest error of the patch's interpolant at the points between its nodes (∞ where the
+/// reference does not answer).
+fn patch_error(grid: &Grid, iu: usize, iw: usize, values: &[f64]) -> f64 {
+    let c = table::coefficients(values, grid.degree);
+    let xs = cheb::between(grid.degree);
+    let points: Vec<(f64, f64)> = xs
+        .iter()
+        .flat_map(|&x| xs.iter().map(move |&y| (x, y)))
+        .collect();
+    points
+        .par_iter()
+        .map(|&(x, y)| {
+            let (l, z) = grid.point(iu, iw, x, y);
+            table::reference(l, z).map_or(f64::INFINITY, |r| {
+                table::error(&table::interpolate(&c, grid.degree, x, y), &r)
+            })
+        })
+        .reduce(|| 0.0, f64::max)
+}
+
+/// The stiffness 2ζ̂(1.6 + λ̂)·3.2 at the patch's stiffest corner (`taylor::summary`'s
+/// measure); past the reference's steps at ≈ 7 of it a step, the patch is not tried.
+fn too_stiff(grid: &Grid, iu: usize, iw: usize) -> bool {
+    let (l, z) = grid.point(iu, iw, 1.0, 1.0);
+    2.0 * z * (1.6 + l) * 3.2 / 7.0 > table::REFERENCE_STEPS as f64
+}
+
+/// Whether the reference answers at the patch's four corners (where it fails, it mostly fails
+/// there first: the creep is longest, the stiffness largest at a corner).
+fn corners_answer(grid: &Grid, iu: usize, iw: usize) -> bool {
+    [(1.0, 1.0), (-1.0, 1.0), (1.0, -1.0), (-1.0, -1.0)]
+        .par_iter()
+        .all(|&(x, y)| {
+            let (l, z) = grid.point(iu, iw, x, y);
+            table::reference(l, z).is_some()
+        })
+}
+
+fn build(grid: &Grid, iu: usize, iw: usize) -> Patch {
+    let values = if too_stiff(grid, iu, iw) || !corners_answer(grid, iu, iw) {
+        None
+    } else {
+        node_values(grid, iu, iw)
+    };
+    let Some(values) = values else {
+        return Patch {
+            error: f64::INFINITY,
+            values: None,
+        };
+    };
+    let error = patch_error(grid, iu, iw, &values);
+    Patch {
+        error,
+        values: (error <= table::TOLERANCE).then_some(values),
+    }
+}
+
+fn probe(args: &[String]) {
+    let num = |i: usize| args[i].parse::<f64>().expect("a number");
+    let grid = Grid {
+        degree: num(3) as usize,
+        nu: 1,
+        nw: 1,
+        u0: num(0),
+        du: num(2),
+        w0: num(1),
+        dw: num(2),
+    };
+    let t = Instant::now();
+    let p = build(&grid, 0, 0);
+    if let Some(v) = &p.values {
+        worst(&grid, v);
+    } else if let Some(v) = node_values(&grid, 0, 0) {
+        worst(&grid, &v);
+    }
+    println!(
+        "patch λ̂ 1e{} ζ̂ 1e{} side {} degree {}: error {:.3e}, {:.2} s",
+        grid.u0,
+        grid.w0,
+        grid.du,
+        grid.degree,
+        p.error,
+        t.elapsed().as_secs_f64()
+    );
+}
+
+fn main() {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    if args.first().map(String::as_str) == Some("--probe") {
+        return probe(&args[1..]);
+    }
+    if args.first().map(String::as_str) == Some("--line") {
+        return line(&args[1..]);
+    }
+    let out = args
+        .first()
+        .cloned()
+        .unwrap_or_else(|| "src/solver/table/hertz.bin".into());
+    let start = Instant::now();
+    let mut patches = Vec::new();
+    for iu in 0..GRID.nu {
+        for iw in 0..GRID.nw {
+            let t = Instant::now();
+            let p = build(&GRID, iu, iw);
+            let (l, z) = GRID.point(iu, iw, -1.0, -1.0);
+            println!(
+                "λ̂ {l:9.3e} ζ̂ {z:9.3e}: {} error {:.2e} ({:.2} s)",
+                if p.values.is_some() { "kept" } else { "OUT " },
+                p.error,
+                t.elapsed().as_secs_f64()
+            );
+            patches.push(p);
+        }
+    }
+    let bytes = table::encode(&GRID, &patches);
+    std::fs::write(&out, &bytes).expect("writing the table");
+    let kept = patches.iter().filter(|p| p.values.is_some()).count();
+    println!(
+        "{out}: {} bytes, {kept} of {} patches kept, {:.1} s",
+        bytes.len(),
+        patches.len(),
+        start.elapsed().as_secs_f64()
+    );
+}
+
+/// `--line U0 W0 U1 W1 N`: the reference's outputs along a segment of the (log λ̂, log ζ̂)
+/// plane, to see where a patch is not smooth.
+fn line(args: &[String]) {
+    let num = |i: usize| args[i].parse::<f64>().expect("a number");
+    let n = num(4) as usize;
+    for k in 0..=n {
+        let t = k as f64 / n as f64;
+        let u = num(0) + t * (num(2) - num(0));
+        let w = num(1) + t * (num(3) - num(1));
+        let s = bouncelab::solver::taylor::hertz_reference(10f64.powf(u), 10f64.powf(w), 400_000);
+        println!("{u:.4} {w:.4} {s:?}");
+    }
+}
+
+/// The probe's worst point and output.
+fn worst(grid: &Grid, values: &[f64]) {
+    let c = table::coefficients(values, grid.degree);
+    let xs = cheb::between(grid.degree);
+    let mut w = (0.0, 0, 0.0, 0.0);
+    for &x in &xs {
+        for &y in &xs {
+            let (l, z) = grid.point(0, 0, x, y);
+            let Some(r) = table::reference(l, z) else {
+                continue;
+            };
+            let t = table::interpolate(&c, grid.degree, x, y);
+            for k in 0..OUTPUTS {
+                let e = (t[k] - r[k]).abs() / r[k];
+                if e > w.0 {
+                    w = (e, k, l.log10(), z.log10());
+                }
+            }
+        }
+    }
+    println!(
+        "worst {:.3e} output {} at log λ̂ {:.4} log ζ̂ {:.4}",
+        w.0, w.1, w.2, w.3
+    );
+}

@@ -1,0 +1,129 @@
+//! The Hertz table's file: a header naming its grid, one record a patch, an FNV-1a checksum.
+//!
+//! ```text
+//! "BLHERTZ1"                                   8 bytes
+//! degree, patches along log λ̂, along log ζ̂   u32 × 3 (little-endian)
+//! log₁₀ λ̂₀, Δ, log₁₀ ζ̂₀, Δ                     f64 × 4
+//! per patch (log λ̂ outer): flag u8 (1: kept), the error measured off the nodes f64,
+//!   if kept: ln of the 5 outputs at the (degree + 1)² nodes, output by output, f64 each
+//! FNV-1a 64 of everything before                u64
+//! ```
+//!
+//! FNV-1a written by hand: eight lines, against a dependency for a checksum that guards a
+//! file the crate itself wrote (a truncated or hand-edited file, not an adversary).
+
+use super::{Grid, OUTPUTS};
+
+const MAGIC: &[u8; 8] = b"BLHERTZ1";
+
+/// One patch as stored.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Patch {
+    /// The largest error measured between the nodes (`super::error`), ∞ where the reference
+    /// did not answer at some node or check point.
+    pub error: f64,
+    /// ln of the outputs at the nodes, `values[k·(n+1)² + i·(n+1) + j]` for output k at node
+    /// (i, j); `None` for a patch the table does not answer (error above the tolerance).
+    pub values: Option<Vec<f64>>,
+}
+
+/// FNV-1a, 64 bits.
+fn fnv1a(bytes: &[u8]) -> u64 {
+    bytes.iter().fold(0xcbf2_9ce4_8422_2325, |h, &b| {
+        (h ^ u64::from(b)).wrapping_mul(0x0000_0100_0000_01b3)
+    })
+}
+
+/// The file's bytes for `patches` on `grid`.
+pub fn encode(grid: &Grid, patches: &[Patch]) -> Vec<u8> {
+    let mut out = MAGIC.to_vec();
+    for n in [grid.degree, grid.nu, grid.nw] {
+        out.extend_from_slice(&(n as u32).to_le_bytes());
+    }
+    for x in [grid.u0, grid.du, grid.w0, grid.dw] {
+        out.extend_from_slice(&x.to_le_bytes());
+    }
+    for p in patches {
+        out.push(u8::from(p.values.is_some()));
+        out.extend_from_slice(&p.error.to_le_bytes());
+        for v in p.values.iter().flatten() {
+            out.extend_from_slice(&v.to_le_bytes());
+        }
+    }
+    let sum = fnv1a(&out);
+    out.extend_from_slice(&sum.to_le_bytes());
+    out
+}
+
+/// Reads what `encode` wrote, checking the checksum, the counts and that every kept value is
+/// finite.
+pub fn decode(bytes: &[u8]) -> Result<(Grid, Vec<Patch>), String> {
+    let body_len = bytes
+        .len()
+        .checked_sub(8)
+        .ok_or("shorter than its checksum")?;
+    let (body, sum) = bytes.split_at(body_len);
+    if fnv1a(body) != u64::from_le_bytes(sum.try_into().map_err(|_| "checksum")?) {
+        return Err("checksum does not match".into());
+    }
+    let mut r = Reader { bytes: body, at: 0 };
+    if r.take(8)? != MAGIC {
+        return Err("not a Hertz table".into());
+    }
+    let mut count = || -> Result<usize, String> {
+        Ok(u32::from_le_bytes(r.take(4)?.try_into().map_err(|_| "u32")?) as usize)
+    };
+    let (degree, nu, nw) = (count()?, count()?, count()?);
+    let grid = Grid {
+        degree,
+        nu,
+        nw,
+        u0: r.f64()?,
+        du: r.f64()?,
+        w0: r.f64()?,
+        dw: r.f64()?,
+    };
+    let per_patch = OUTPUTS * (degree + 1) * (degree + 1);
+    let mut patches = Vec::with_capacity(nu * nw);
+    for _ in 0..nu * nw {
+        let kept = r.take(1)?[0] == 1;
+        let error = r.f64()?;
+        let values = if kept {
+            let v = (0..per_patch)
+                .map(|_| r.f64())
+                .collect::<Result<Vec<_>, _>>()?;
+            if !v.iter().all(|x| x.is_finite()) {
+                return Err("a kept value is not finite".into());
+            }
+            Some(v)
+        } else {
+            None
+        };
+        patches.push(Patch { error, values });
+    }
+    if r.at != body.len() {
+        return Err(format!("{} bytes after the last patch", body.len() - r.at));
+    }
+    Ok((grid, patches))
+}
+
+struct Reader<'a> {
+    bytes: &'a [u8],
+    at: usize,
+}
+
+impl Reader<'_> {
+    fn take(&mut self, n: usize) -> Result<&[u8], String> {
+        let s = self
+            .bytes
+            .get(self.at..self.at + n)
+            .ok_or_else(|| format!("ends at byte {} inside a record", self.bytes.len()))?;
+        self.at += n;
+        Ok(s)
+    }
+    fn f64(&mut self) -> Result<f64, String> {
+        Ok(f64::from_le_bytes(
+            self.take(8)?.try_into().map_err(|_| "f64")?,
+        ))
+    }
+}

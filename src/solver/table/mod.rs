@@ -1,0 +1,220 @@
+//! The Hertz impact tabulated (issue 30 item 1): under the Hertz law without yield the
+//! normalized impact depends on (λ̂, ζ̂) = (λL², ζ/L) alone, L = κ^{−2/5} (docs/model.md §5,
+//! the Hertz scale of `solver::taylor`), so each output of its summary — e, F̂_m, t̂_f, ẑ_m,
+//! ȳ at separation — is a smooth function of (log λ̂, log ζ̂). The table holds each one's
+//! logarithm as a Chebyshev interpolant of degree `GRID.degree` on square patches of the
+//! (log₁₀ λ̂, log₁₀ ζ̂) plane; an impact is then two logarithms, two bases and five sums.
+//!
+//! **Generated, verified.** `cargo run --release --example gen_hertz_table` (docs/numerics.md)
+//! computes the node values with the Taylor steps without step limit or stiffness cut
+//! ([`crate::solver::taylor::hertz_reference`]), measures each patch's error at the points
+//! between its nodes against the same reference, and keeps a patch only where that error is
+//! within [`TOLERANCE`] (`error` says how it is measured). The file is `hertz.bin`
+//! (`format`). tests/hertz_table.rs re-computes seeded nodes (they must equal the file's),
+//! and meets the reference to 1e-9 at 1 000 seeded points off the nodes.
+//!
+//! **Where it answers.** Inside the grid, in a kept patch; elsewhere (λ̂ = 0, far out, a
+//! patch where e → 0 or the reference runs out of steps) [`summary`] hands the impact to the
+//! Taylor steps and `None` from them to the adaptive solver, as before.
+
+pub mod cheb;
+mod format;
+
+pub use format::{Patch, decode, encode};
+
+use crate::model::contact::ContactLaw;
+use crate::model::params::Normalized;
+use crate::solver::taylor::{self, Summary};
+use std::sync::OnceLock;
+
+/// The outputs a node holds: e, F̂_m, t̂_f, ẑ_m and ȳ at separation (Hertz scale).
+pub const OUTPUTS: usize = 5;
+/// The largest error a kept patch showed between its nodes (`error`).
+pub const TOLERANCE: f64 = 1e-10;
+/// The reference's step limit. The steps number about the stiffness 2ζ̂(1.6 + λ̂)·3.2 over 7
+/// (BENCHMARKS.md: 1 095 steps at (30, 40)), and a creep's length times 2ζ̂·1.6 over 7: this
+/// reaches a stiffness of 2·10⁵ (ζ̂λ̂ ≈ 3·10⁴, past the explorer's Hertz maps) at some 60 ms
+/// a node, and keeps the tests' reference runs short.
+pub const REFERENCE_STEPS: usize = 30_000;
+
+/// The patches: `nu` × `nw` squares of side `du` × `dw` from (`u0`, `w0`) in
+/// (u, w) = (log₁₀ λ̂, log₁₀ ζ̂), each with (degree + 1)² Chebyshev–Lobatto nodes.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Grid {
+    /// The interpolants' degree along each axis.
+    pub degree: usize,
+    /// Patches along u = log₁₀ λ̂.
+    pub nu: usize,
+    /// Patches along w = log₁₀ ζ̂.
+    pub nw: usize,
+    /// The grid's first u.
+    pub u0: f64,
+    /// A patch's side along u, decades.
+    pub du: f64,
+    /// The grid's first w.
+    pub w0: f64,
+    /// A patch's side along w, decades.
+    pub dw: f64,
+}
+
+/// The grid the committed table is built on (the generator writes this one).
+pub const GRID: Grid = Grid {
+    degree: 14,
+    nu: 16,
+    nw: 16,
+    u0: -4.0,
+    du: 0.5,
+    w0: -4.0,
+    dw: 0.5,
+};
+
+impl Grid {
+    /// (λ̂, ζ̂) at the local coordinates (x, y) ∈ [−1, 1]² of patch (iu, iw).
+    pub fn point(&self, iu: usize, iw: usize, x: f64, y: f64) -> (f64, f64) {
+        let u = self.u0 + self.du * (iu as f64 + 0.5 * (x + 1.0));
+        let w = self.w0 + self.dw * (iw as f64 + 0.5 * (y + 1.0));
+        (10f64.powf(u), 10f64.powf(w))
+    }
+
+    /// The patch holding (λ̂, ζ̂), its index and the local coordinates there; `None` outside.
+    fn locate(&self, lambda_hat: f64, zeta_hat: f64) -> Option<(usize, f64, f64)> {
+        let fu = (lambda_hat.log10() - self.u0) / self.du;
+        let fw = (zeta_hat.log10() - self.w0) / self.dw;
+        let inside = |f: f64, n: usize| (0.0..=n as f64).contains(&f);
+        if !(inside(fu, self.nu) && inside(fw, self.nw)) {
+            return None;
+        }
+        let (iu, iw) = (
+            (fu as usize).min(self.nu - 1),
+            (fw as usize).min(self.nw - 1),
+        );
+        let x = 2.0 * (fu - iu as f64) - 1.0;
+        let y = 2.0 * (fw - iw as f64) - 1.0;
+        Some((iu * self.nw + iw, x, y))
+    }
+}
+
+/// The outputs of a summary, in the table's order.
+pub fn outputs(s: &Summary) -> [f64; OUTPUTS] {
+    [
+        s.cor,
+        s.max_force,
+        s.contact_time,
+        s.max_indentation,
+        s.element_displacement,
+    ]
+}
+
+/// The reference at (λ̂, ζ̂): the unlimited Taylor steps' outputs, `None` where they do not
+/// answer within [`REFERENCE_STEPS`] or an output is not positive (no logarithm).
+pub fn reference(lambda_hat: f64, zeta_hat: f64) -> Option<[f64; OUTPUTS]> {
+    let s = taylor::hertz_reference(lambda_hat, zeta_hat, REFERENCE_STEPS)?;
+    let o = outputs(&s);
+    o.iter().all(|&x| x > 0.0 && x.is_finite()).then_some(o)
+}
+
+/// The table's error against the reference at one point: each output relative to its size,
+/// but ȳ (which vanishes as ζ̂ → 0 or λ̂ → ∞, where its reference is good only to the
+/// rounding of the state, of size ẑ) relative to ẑ_m, as tests/taylor.rs measures z̄_f.
+pub fn error(table: &[f64; OUTPUTS], reference: &[f64; OUTPUTS]) -> f64 {
+    let rel = |k: usize, scale: f64| (table[k] - reference[k]).abs() / scale;
+    if table.iter().chain(reference).any(|x| !x.is_finite()) {
+        return f64::INFINITY;
+    }
+    (0..4).fold(rel(4, reference[3]), |w, k| w.max(rel(k, reference[k])))
+}
+
+/// One patch's interpolants: the Chebyshev coefficients of each output's logarithm from its
+/// node values (`Patch::values`'s layout).
+pub fn coefficients(values: &[f64], degree: usize) -> Vec<f64> {
+    let m = (degree + 1) * (degree + 1);
+    values
+        .chunks_exact(m)
+        .flat_map(|v| cheb::coefficients(v, degree))
+        .collect()
+}
+
+/// The outputs from one patch's `coefficients` at local (x, y).
+pub fn interpolate(coefficients: &[f64], degree: usize, x: f64, y: f64) -> [f64; OUTPUTS] {
+    const MAX: usize = 32;
+    assert!(degree < MAX, "degree {degree}");
+    let (mut tx, mut ty) = ([0.0; MAX], [0.0; MAX]);
+    let (tx, ty) = (&mut tx[..=degree], &mut ty[..=degree]);
+    cheb::basis(x, tx);
+    cheb::basis(y, ty);
+    let m = (degree + 1) * (degree + 1);
+    let mut out = [0.0; OUTPUTS];
+    for (o, c) in out.iter_mut().zip(coefficients.chunks_exact(m)) {
+        *o = cheb::eval(c, tx, ty).exp();
+    }
+    out
+}
+
+/// The committed table.
+static DATA: &[u8] = include_bytes!("hertz.bin");
+
+/// The committed table as stored (its grid and patches), or why it does not read.
+pub fn stored() -> Result<(Grid, Vec<Patch>), String> {
+    decode(DATA)
+}
+
+/// The table ready to evaluate: each kept patch's coefficients.
+struct Table {
+    grid: Grid,
+    patches: Vec<Option<Vec<f64>>>,
+}
+
+/// The table, read once; `None` when the file does not read or is not on [`GRID`] (then
+/// every impact goes to the Taylor steps; tests/hertz_table.rs fails on it).
+fn table() -> Option<&'static Table> {
+    static TABLE: OnceLock<Option<Table>> = OnceLock::new();
+    TABLE
+        .get_or_init(|| {
+            let (grid, patches) = stored().ok().filter(|(g, _)| *g == GRID)?;
+            let patches = patches
+                .iter()
+                .map(|p| p.values.as_ref().map(|v| coefficients(v, grid.degree)))
+                .collect();
+            Some(Table { grid, patches })
+        })
+        .as_ref()
+}
+
+/// The outputs at (λ̂, ζ̂) from the table, `None` outside its grid or in a patch it does not
+/// keep.
+pub fn hertz_hat(lambda_hat: f64, zeta_hat: f64) -> Option<[f64; OUTPUTS]> {
+    let t = table()?;
+    let (patch, x, y) = t.grid.locate(lambda_hat, zeta_hat)?;
+    let c = t.patches[patch].as_ref()?;
+    Some(interpolate(c, t.grid.degree, x, y))
+}
+
+/// The Hertz impact of the normalized ball `n` from the table, in the units of the run
+/// (`taylor::summary`'s: z̄ = L ẑ, τ = L t̂, F̄ = F̂/L), `steps` 0; `None` where the table does
+/// not answer.
+pub fn hertz(n: &Normalized) -> Option<Summary> {
+    if !(n.kappa.is_finite() && n.kappa > 0.0) {
+        return None;
+    }
+    let l = n.kappa.powf(-0.4);
+    let [cor, f, t, z, y] = hertz_hat(n.lambda * l * l, n.zeta / l)?;
+    Some(Summary {
+        // e < 1 by dissipation; the interpolant's 1e-10 must not carry it past 1
+        cor: cor.min(1.0),
+        max_force: f / l,
+        contact_time: t * l,
+        max_indentation: z * l,
+        permanent_indentation: 0.0,
+        element_displacement: y * l,
+        steps: 0,
+    })
+}
+
+/// The fast summary of one impact: the table under the Hertz law where it answers, else the
+/// Taylor steps ([`taylor::summary`]: `None` where the adaptive solver must run).
+pub fn summary(n: &Normalized, law: ContactLaw) -> Option<Summary> {
+    let tabulated = (law == ContactLaw::Hertz && n.zp_bar > 0.0)
+        .then(|| hertz(n))
+        .flatten();
+    tabulated.or_else(|| taylor::summary(n, law))
+}
