@@ -4,6 +4,7 @@
 //! component of the state as rows over that basis (docs/oblique.md §2).
 
 use crate::solver::propagator::{isolated_root, lone_real_root};
+use crate::solver::series;
 /// Rows kept of each component: f … f''' (τ_m's Halley steps on z̄' read z̄''').
 pub(super) const ROWS: usize = 4;
 
@@ -103,35 +104,14 @@ impl Modes {
 /// x¹⁷/17! and x¹⁸/18!, are below 1e-25 at x = 1/4.
 pub(super) const SHORT: f64 = 0.25;
 
-/// 1/k!, k ≤ 17.
-const INV_FACTORIAL: [f64; 18] = {
-    let mut c = [1.0; 18];
-    let mut k = 1;
-    while k < 18 {
-        c[k] = c[k - 1] / k as f64;
-        k += 1;
-    }
-    c
-};
-
 /// eˣ for |x| ≤ `SHORT`: Σ xᵏ/k!, k ≤ 16.
 fn exp_short(x: f64) -> f64 {
-    (0..=16)
-        .rev()
-        .fold(0.0, |sum, k| sum * x + INV_FACTORIAL[k])
+    series::exp_to::<16>(x)
 }
 
 /// (cos x, sin(x)/x) for |x| ≤ `SHORT`, each to x¹⁶.
 fn cos_sinc(x: f64) -> (f64, f64) {
-    let x2 = x * x;
-    let sign = |k: usize| if k.is_multiple_of(2) { 1.0 } else { -1.0 };
-    let cos = (0..=8)
-        .rev()
-        .fold(0.0, |sum, k| sum * x2 + sign(k) * INV_FACTORIAL[2 * k]);
-    let sinc = (0..=8)
-        .rev()
-        .fold(0.0, |sum, k| sum * x2 + sign(k) * INV_FACTORIAL[2 * k + 1]);
-    (cos, sinc)
+    series::cos_sinc_to::<8>(x)
 }
 
 /// One component's derivatives as rows over the basis, and the scale of its coefficients'

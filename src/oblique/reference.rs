@@ -194,10 +194,10 @@ pub fn integrate(path: &impl NormalMotion, s: &Scaled, vx: f64, spin: f64) -> Ou
     let (mut t, mut x) = (0.0, [vx, spin, 0.0]);
     let mut switches = 0;
     // At first contact the switch function starts at 0 with the slope K̃|ṽ_c| − μF̄'(0) (stick)
-    // or its negative over K̃ (slip): where that is not 0 the function is negative at once, and
-    // a return through 0 is a switch even inside the integrator's first step. A short stick
-    // before the cap's curvature catches up (K̃|ṽ_c| just under μF̄'(0)) was otherwise missed:
-    // its dip stays below the five points a step watches (tests/oblique_scan.rs).
+    // or its negative over K̃ (slip): where that is not 0 the function is negative at once, so
+    // a return through 0 is a switch even inside the integrator's first step, where a short
+    // stick (K̃|ṽ_c| just under μF̄'(0)) dips between the five points a step watches
+    // (tests/oblique_scan.rs).
     let mut armed = s.kt * vc.abs() != s.mu * p0.rate;
     for &stop in &stops {
         while t < stop {

@@ -7,6 +7,7 @@ pub mod numeric;
 mod outcome;
 pub mod propagator;
 pub mod roots;
+pub(crate) mod series;
 pub mod table;
 pub mod taylor;
 

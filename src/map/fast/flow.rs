@@ -4,6 +4,7 @@
 //! computed once.
 
 use crate::solver::propagator::{isolated_root, lone_real_root};
+use crate::solver::series;
 
 /// What multiplies ε times the terms' sizes in [`Flow::rounding`]: the roots, A, D, P, Q
 /// carry a few roundings each (measured over tests/map_precision.rs's grid: the differences to
@@ -378,36 +379,15 @@ fn antiderivative(m: &Modes, b: f64, d: f64) -> (f64, f64) {
 /// 1e-21 at x = 1/16.
 pub(super) const SMALL: f64 = 1.0 / 16.0;
 
-/// 1/k!, k ≤ 13.
-const INV_FACTORIAL: [f64; 14] = {
-    let mut c = [1.0; 14];
-    let mut k = 1;
-    while k < 14 {
-        c[k] = c[k - 1] / k as f64;
-        k += 1;
-    }
-    c
-};
-
 /// eˣ for |x| ≤ [`SMALL`]: Σ xᵏ/k!, k ≤ 10.
 fn exp_small(x: f64) -> f64 {
-    (0..=10)
-        .rev()
-        .fold(0.0, |sum, k| sum * x + INV_FACTORIAL[k])
+    series::exp_to::<10>(x)
 }
 
 /// (cos x, sin(x)/x) for |x| ≤ [`SMALL`], each to x¹⁰ (the next terms, x¹²/12! and x¹²/13!,
 /// are below 1e-23).
 fn cos_sinc(x: f64) -> (f64, f64) {
-    let x2 = x * x;
-    let sign = |k: usize| if k.is_multiple_of(2) { 1.0 } else { -1.0 };
-    let cos = (0..=5)
-        .rev()
-        .fold(0.0, |sum, k| sum * x2 + sign(k) * INV_FACTORIAL[2 * k]);
-    let sinc = (0..=5)
-        .rev()
-        .fold(0.0, |sum, k| sum * x2 + sign(k) * INV_FACTORIAL[2 * k + 1]);
-    (cos, sinc)
+    series::cos_sinc_to::<5>(x)
 }
 
 /// Σ|terms|.

@@ -6,18 +6,8 @@
 //! flow.rs's, term for term.
 
 use super::lane::Lane;
+use crate::solver::series::INV_FACTORIAL;
 use std::f64::consts::{FRAC_PI_2, FRAC_PI_4, LOG2_E, PI};
-
-/// 1/k!, k ≤ 13 (as flow.rs's).
-const INV_FACTORIAL: [f64; 14] = {
-    let mut c = [1.0; 14];
-    let mut k = 1;
-    while k < 14 {
-        c[k] = c[k - 1] / k as f64;
-        k += 1;
-    }
-    c
-};
 
 /// The coefficients (−1)^{k·alt}/(step·k + first)! for k = N − 1 down to 0: a series in
 /// [`horner`]'s order (highest degree first).
