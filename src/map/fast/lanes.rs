@@ -1,5 +1,6 @@
-//! Four linear-law impacts per instruction stream: [`super::summary`] in `f64x4` lanes (issue
-//! 30 item 3), for the Monte Carlo, `bouncelab.impacts` and anything else that asks for many.
+//! Four or eight linear-law impacts per instruction stream: [`super::summary`] in `f64x4`
+//! lanes (issue 30 item 3), for the map ([`summaries`], eight a call), the Monte Carlo and
+//! `bouncelab.impacts` ([`summary4`], four) and anything else that asks for many.
 //!
 //! The same closed form, the same steps and the same checks as the scalar path, lane by lane
 //! (the module's introduction): the cubic's lone real root by Cardano polished by Newton, the
@@ -14,19 +15,21 @@
 //! lobe (the bracket search's cases), λ or ζ zero, rτ so small that e^{rτ} − 1 needs
 //! `exp_m1` — is handed to the scalar [`super::summary`], whole. The exponential and `atan2`
 //! are the lanes' own (`lanes/math.rs`: within 2 ulp of libm's, the same bits on every machine),
-//! `cbrt` and `sin_cos` `wide`'s, where the scalar path calls libm's: the answers agree with
-//! the scalar path's to 1e-12 (tests/map_lanes.rs), not bit for bit.
+//! `cbrt` `wide`'s written over the lanes (its bits), `sin_cos` `wide`'s, where the scalar path
+//! calls libm's: the answers agree with the scalar path's to 1e-12 (tests/map_lanes.rs), not
+//! bit for bit.
 //!
 //! The files: `lane.rs` (what the kernel asks of four f64, and `wide`'s `f64x4` answering it),
-//! `avx.rs` (the same in one AVX register), `pair.rs` (two of either as one lane type of
-//! eight: [`lanes_only8`]), `math.rs` (`exp`, `atan2` and the short steps' series over any),
-//! `kernel.rs` (the closed form over any).
+//! `avx.rs` (the same in one AVX register), `pair.rs` (two AVX registers as one lane type of
+//! eight: [`lanes_only8`]), `math.rs` (`exp`, `atan2`, `cbrt` and the short steps' series over
+//! any), `kernel.rs` (the closed form over any).
 
 #[cfg(target_arch = "x86_64")]
 mod avx;
 mod kernel;
 mod lane;
 mod math;
+#[cfg(target_arch = "x86_64")]
 mod pair;
 
 pub use lane::LANES;
@@ -120,8 +123,11 @@ pub fn summaries(lambda: &[f64], zeta: &[f64], out: &mut [Option<Summary>]) {
         .zip(zeta.chunks(WIDE))
         .zip(out.chunks_mut(WIDE))
     {
-        let pad = |s: &[f64]| std::array::from_fn(|i| s[i.min(s.len() - 1)]);
-        let (l, z): ([f64; WIDE], [f64; WIDE]) = (pad(l), pad(z));
+        let pad = |s: &[f64]| -> [f64; WIDE] {
+            let last = |_| std::array::from_fn(|i| s[i.min(s.len() - 1)]);
+            s.try_into().unwrap_or_else(last)
+        };
+        let (l, z) = (pad(l), pad(z));
         let lanes = lanes_only8(l, z);
         for (i, o) in o.iter_mut().enumerate() {
             *o = lanes[i].or_else(|| super::summary(l[i], z[i]));

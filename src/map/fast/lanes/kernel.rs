@@ -273,11 +273,13 @@ fn refine_both<L: Lane>(flow: &Flow4<L>, guesses: [Point4<L>; 2], live: L) -> ([
     let mut points = guesses;
     let mut active = [live, live];
     let mut found = [v(0.0), v(0.0)];
-    let mut roots = guesses.map(|point| Root4 {
+    // each by hand: `guesses.map(…)` stayed a call out of the AVX2 kernel (callgrind)
+    let root = |point: Point4<L>| Root4 {
         t: point.t,
         point,
         jet: [v(0.0); 6],
-    });
+    };
+    let mut roots = [root(guesses[0]), root(guesses[1])];
     for _ in 0..MAX_REFINE {
         for i in 0..2 {
             if !active[i].any() {
@@ -366,11 +368,13 @@ pub fn kernel<L: Lane<Array = [f64; N]>, const N: usize>(
         & (flow.r * end.point.t).abs().ge(v(1e-3));
     let answered = (live & settled & precise).bitmask();
     let (cor, z_m, t_f) = (cor.to_array(), z_m.to_array(), end.t.to_array());
-    std::array::from_fn(|i| {
-        (answered & (1 << i) != 0).then_some(Summary {
+    let mut out = [None; N];
+    for (i, o) in out.iter_mut().enumerate() {
+        *o = (answered & (1 << i) != 0).then_some(Summary {
             cor: cor[i],
             max_force: z_m[i],
             contact_time: t_f[i],
-        })
-    })
+        });
+    }
+    out
 }
