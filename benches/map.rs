@@ -79,8 +79,9 @@ fn map_200x120_fast() -> usize {
         .len()
 }
 
-/// The same grid four cells at a time through the lanes (`map::fast::lanes::summaries`, issue
-/// 30 item 3: target ≤ 0.1 µs an impact on one core). Per impact: the median / 24 000.
+/// The same grid through the lanes (`map::fast::lanes::summaries`: eight cells a call, the
+/// scalar path for the cells they leave; issue 30 item 3: target ≤ 0.1 µs an impact on one
+/// core). Per impact: the median / 24 000.
 #[divan::bench(sample_count = 20)]
 fn fast_summary_grid_lanes(b: divan::Bencher) {
     let l = Axis::new(Param::Lambda, 0.01, 100.0, 120, Scale::Log).unwrap();
@@ -93,6 +94,30 @@ fn fast_summary_grid_lanes(b: divan::Bencher) {
     b.bench_local(|| {
         bouncelab::map::fast::lanes::summaries(black_box(&lambda), black_box(&zeta), &mut out);
         out.iter().map(|s| s.map_or(0.0, |s| s.cor)).sum::<f64>()
+    });
+}
+
+/// The lanes' own share of [`fast_summary_grid_lanes`]: the same grid through
+/// `lanes::lanes_only8` (eight cells a call, two AVX registers), without the scalar path that
+/// `summaries` hands the cells the lanes leave (no oscillating pair, |rτ| < 1e-3: some 870 of
+/// the 24 000). Per impact: the median / 24 000.
+#[divan::bench(sample_count = 20)]
+fn fast_summary_grid_lanes_only(b: divan::Bencher) {
+    use bouncelab::map::fast::lanes::{WIDE, lanes_only8};
+    let l = Axis::new(Param::Lambda, 0.01, 100.0, 120, Scale::Log).unwrap();
+    let z = Axis::new(Param::Zeta, 0.01, 100.0, 200, Scale::Log).unwrap();
+    let (lambda, zeta): (Vec<f64>, Vec<f64>) = (0..l.n)
+        .flat_map(|i| (0..z.n).map(move |j| (i, j)))
+        .map(|(i, j)| (l.value(i), z.value(j)))
+        .unzip();
+    b.bench_local(|| {
+        let mut sum = 0.0;
+        for (l, z) in lambda.chunks_exact(WIDE).zip(zeta.chunks_exact(WIDE)) {
+            let (l, z) = (l.try_into().unwrap(), z.try_into().unwrap());
+            let out = lanes_only8(black_box(l), black_box(z));
+            sum += out.iter().map(|s| s.map_or(0.0, |s| s.cor)).sum::<f64>();
+        }
+        sum
     });
 }
 

@@ -3,7 +3,9 @@
 //! 40,000 seeded random points of the plane, the same `None`s, and the lanes settle most of
 //! the plane themselves (else this test could not fail: every lane would be the scalar's).
 
-use bouncelab::map::fast::lanes::{LANES, lanes_only, lanes_only_portable, summaries, summary4};
+use bouncelab::map::fast::lanes::{
+    LANES, WIDE, lanes_only, lanes_only_portable, lanes_only8, summaries, summary4,
+};
 use bouncelab::map::fast::{Summary, summary};
 
 /// splitmix64: a seeded stream of points, the same on every run.
@@ -136,4 +138,56 @@ fn avx2_and_portable_kernels_agree_bit_for_bit() {
     }
     // most lanes answer themselves: the comparison is of numbers, not of Nones
     assert!(answered >= 20_000, "{answered}");
+}
+
+/// Eight lanes in one call (two AVX registers interleaved where the CPU has AVX2) give each
+/// lane the bits of its group of four: over the 200 × 120 map's grid, seeded random points
+/// and groups that mix valid balls with zeros, NaN and infinities (lanes the kernel leaves
+/// out, whose neighbours must not notice).
+#[test]
+fn eight_lanes_are_two_fours_bit_for_bit() {
+    let log = |i: usize, n: usize| 10f64.powf(-2.0 + 4.0 * i as f64 / (n - 1) as f64);
+    let mut points: Vec<(f64, f64)> = (0..120)
+        .flat_map(|i| (0..200).map(move |j| (log(i, 120), log(j, 200))))
+        .collect();
+    let mut s = Stream(88);
+    points.extend((0..8_000).map(|_| {
+        (
+            10f64.powf(-4.0 + 8.0 * s.unit()),
+            10f64.powf(-3.0 + 6.0 * s.unit()),
+        )
+    }));
+    let odd = [
+        (0.0, 0.5),
+        (1.0, 0.0),
+        (f64::NAN, 0.3),
+        (1.0, f64::INFINITY),
+    ];
+    for (k, p) in odd.iter().enumerate() {
+        points.insert(3 + 11 * k, *p);
+    }
+    let bits =
+        |s: &Option<Summary>| s.map(|s| [s.cor, s.max_force, s.contact_time].map(f64::to_bits));
+    let mut answered = 0;
+    for group in points.chunks_exact(WIDE) {
+        let l: [f64; WIDE] = std::array::from_fn(|i| group[i].0);
+        let z: [f64; WIDE] = std::array::from_fn(|i| group[i].1);
+        let eight = lanes_only8(l, z);
+        for half in 0..2 {
+            let four = |a: &[f64; WIDE]| std::array::from_fn(|i| a[half * LANES + i]);
+            let (four_l, four_z) = (four(&l), four(&z));
+            let (fours, portable) = (
+                lanes_only(four_l, four_z),
+                lanes_only_portable(four_l, four_z),
+            );
+            for i in 0..LANES {
+                let k = half * LANES + i;
+                let case = format!("λ {}, ζ {}", l[k], z[k]);
+                assert_eq!(bits(&eight[k]), bits(&fours[i]), "{case}");
+                assert_eq!(bits(&eight[k]), bits(&portable[i]), "{case}");
+                answered += usize::from(eight[k].is_some());
+            }
+        }
+    }
+    assert!(answered >= 25_000, "{answered}");
 }

@@ -1,5 +1,6 @@
-//! Four linear-law impacts per instruction stream: [`super::summary`] in `f64x4` lanes (issue
-//! 30 item 3), for the Monte Carlo, `bouncelab.impacts` and anything else that asks for many.
+//! Four or eight linear-law impacts per instruction stream: [`super::summary`] in `f64x4`
+//! lanes (issue 30 item 3), for the map ([`summaries`], eight a call), the Monte Carlo and
+//! `bouncelab.impacts` ([`summary4`], four) and anything else that asks for many.
 //!
 //! The same closed form, the same steps and the same checks as the scalar path, lane by lane
 //! (the module's introduction): the cubic's lone real root by Cardano polished by Newton, the
@@ -14,18 +15,22 @@
 //! lobe (the bracket search's cases), λ or ζ zero, rτ so small that e^{rτ} − 1 needs
 //! `exp_m1` — is handed to the scalar [`super::summary`], whole. The exponential and `atan2`
 //! are the lanes' own (`lanes/math.rs`: within 2 ulp of libm's, the same bits on every machine),
-//! `cbrt` and `sin_cos` `wide`'s, where the scalar path calls libm's: the answers agree with
-//! the scalar path's to 1e-12 (tests/map_lanes.rs), not bit for bit.
+//! `cbrt` `wide`'s written over the lanes (its bits), `sin_cos` `wide`'s, where the scalar path
+//! calls libm's: the answers agree with the scalar path's to 1e-12 (tests/map_lanes.rs), not
+//! bit for bit.
 //!
 //! The files: `lane.rs` (what the kernel asks of four f64, and `wide`'s `f64x4` answering it),
-//! `avx.rs` (the same in one AVX register), `math.rs` (`exp`, `atan2` and the short steps'
-//! series over either), `kernel.rs` (the closed form over either).
+//! `avx.rs` (the same in one AVX register), `pair.rs` (two AVX registers as one lane type of
+//! eight: [`lanes_only8`]), `math.rs` (`exp`, `atan2`, `cbrt` and the short steps' series over
+//! any), `kernel.rs` (the closed form over any).
 
 #[cfg(target_arch = "x86_64")]
 mod avx;
 mod kernel;
 mod lane;
 mod math;
+#[cfg(target_arch = "x86_64")]
+mod pair;
 
 pub use lane::LANES;
 
@@ -50,7 +55,7 @@ pub fn lanes_only(lambda: [f64; LANES], zeta: [f64; LANES]) -> [Option<Summary>;
         // SAFETY: the CPU has AVX2, just checked
         return unsafe { lanes_only_avx2(lambda, zeta) };
     }
-    kernel::kernel::<f64x4>(lambda, zeta)
+    kernel::kernel::<f64x4, LANES>(lambda, zeta)
 }
 
 /// The kernel on the AVX lane type, compiled with AVX2 enabled.
@@ -60,13 +65,13 @@ pub fn lanes_only(lambda: [f64; LANES], zeta: [f64; LANES]) -> [Option<Summary>;
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2")]
 unsafe fn lanes_only_avx2(lambda: [f64; LANES], zeta: [f64; LANES]) -> [Option<Summary>; LANES] {
-    kernel::kernel::<avx::Avx>(lambda, zeta)
+    kernel::kernel::<avx::Avx, LANES>(lambda, zeta)
 }
 
 /// [`lanes_only`] compiled for the build's own target (SSE2 on the default x86-64 one): what
 /// [`lanes_only`] runs where AVX2 is missing.
 pub fn lanes_only_portable(lambda: [f64; LANES], zeta: [f64; LANES]) -> [Option<Summary>; LANES] {
-    kernel::kernel::<f64x4>(lambda, zeta)
+    kernel::kernel::<f64x4, LANES>(lambda, zeta)
 }
 
 /// COR, F̄_m and τ_f of four normalized linear-law impacts without flattening: lane i is
@@ -77,18 +82,55 @@ pub fn summary4(lambda: [f64; LANES], zeta: [f64; LANES]) -> [Option<Summary>; L
     std::array::from_fn(|i| lanes[i].or_else(|| super::summary(lambda[i], zeta[i])))
 }
 
-/// [`summary4`] over slices of equal length, four at a time (the last group padded with its
-/// own last point, whose answers are dropped): `out[i]` is `summary(lambda[i], zeta[i])` to
-/// 1e-12, whatever the slices' length.
+/// Impacts per call of [`lanes_only8`]: two registers of [`LANES`] in one instruction stream.
+pub const WIDE: usize = 2 * LANES;
+
+/// [`lanes_only`] of eight impacts at once: lane i is `lanes_only` of its group of four's,
+/// bit for bit (`eight_lanes_are_two_fours_bit_for_bit`). With AVX2 the kernel runs on two
+/// AVX registers interleaved in one instruction stream (`pair.rs` says why: the kernel is
+/// latency-bound, and a second independent chain fills the waits), elsewhere as two calls of
+/// the portable kernel (SSE2 has too few registers for eight lanes at once).
+pub fn lanes_only8(lambda: [f64; WIDE], zeta: [f64; WIDE]) -> [Option<Summary>; WIDE] {
+    #[cfg(target_arch = "x86_64")]
+    if std::arch::is_x86_feature_detected!("avx2") {
+        // SAFETY: the CPU has AVX2, just checked
+        return unsafe { lanes_only8_avx2(lambda, zeta) };
+    }
+    let half = |a: &[f64; WIDE], k: usize| std::array::from_fn(|i| a[k * LANES + i]);
+    let lo = lanes_only_portable(half(&lambda, 0), half(&zeta, 0));
+    let hi = lanes_only_portable(half(&lambda, 1), half(&zeta, 1));
+    std::array::from_fn(|i| if i < LANES { lo[i] } else { hi[i - LANES] })
+}
+
+/// The kernel on a pair of AVX registers, compiled with AVX2 enabled.
+///
+/// # Safety
+/// The CPU must have AVX2.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+unsafe fn lanes_only8_avx2(lambda: [f64; WIDE], zeta: [f64; WIDE]) -> [Option<Summary>; WIDE] {
+    kernel::kernel::<pair::Pair<avx::Avx>, WIDE>(lambda, zeta)
+}
+
+/// [`summary4`] over slices of equal length, eight at a time through [`lanes_only8`] (the
+/// last group padded with its own last point, whose answers are dropped), each lane the lanes
+/// leave to the scalar path its answer: `out[i]` is `summary(lambda[i], zeta[i])` to 1e-12,
+/// and [`summary4`]'s bits, whatever the slices' length.
 pub fn summaries(lambda: &[f64], zeta: &[f64], out: &mut [Option<Summary>]) {
     assert!(lambda.len() == zeta.len() && zeta.len() == out.len());
     for ((l, z), o) in lambda
-        .chunks(LANES)
-        .zip(zeta.chunks(LANES))
-        .zip(out.chunks_mut(LANES))
+        .chunks(WIDE)
+        .zip(zeta.chunks(WIDE))
+        .zip(out.chunks_mut(WIDE))
     {
-        let pad = |s: &[f64]| std::array::from_fn(|i| s[i.min(s.len() - 1)]);
-        let answers = summary4(pad(l), pad(z));
-        o.copy_from_slice(&answers[..o.len()]);
+        let pad = |s: &[f64]| -> [f64; WIDE] {
+            let last = |_| std::array::from_fn(|i| s[i.min(s.len() - 1)]);
+            s.try_into().unwrap_or_else(last)
+        };
+        let (l, z) = (pad(l), pad(z));
+        let lanes = lanes_only8(l, z);
+        for (i, o) in o.iter_mut().enumerate() {
+            *o = lanes[i].or_else(|| super::summary(l[i], z[i]));
+        }
     }
 }

@@ -9,12 +9,12 @@
 //! the `#[target_feature(enable = "avx2")]` kernel the intrinsics inline and the values stay in
 //! ymm registers (BENCHMARKS.md, "The lanes in one AVX register").
 //!
-//! Safety: every intrinsic here needs AVX (`shl52` and `sign_negative` AVX2). An [`Avx`] is
+//! Safety: every intrinsic here needs AVX (`shl52`, `shr52` and `sign_negative` AVX2). An [`Avx`] is
 //! only made inside the kernel's AVX2 compilation, which [`super::lanes_only`] calls after
 //! `is_x86_feature_detected!("avx2")`: the module is private to the lanes, and no value of the
 //! type leaves the kernel.
 
-use super::lane::{LANES, Lane};
+use super::lane::{LANES, Lane, wide_sin_cos};
 use std::arch::x86_64::*;
 use std::ops::{Add, BitAnd, BitAndAssign, BitOr, BitOrAssign, Div, Mul, Neg, Not, Sub};
 
@@ -96,6 +96,7 @@ macro_rules! compare {
 }
 
 impl Lane for Avx {
+    type Array = [f64; LANES];
     #[inline(always)]
     fn splat(x: f64) -> Avx {
         op!(_mm256_set1_pd(x))
@@ -151,5 +152,15 @@ impl Lane for Avx {
         op!(_mm256_castsi256_pd(_mm256_slli_epi64::<52>(
             _mm256_castpd_si256(self.0)
         )))
+    }
+    #[inline(always)]
+    fn shr52(self) -> Avx {
+        op!(_mm256_castsi256_pd(_mm256_srli_epi64::<52>(
+            _mm256_castpd_si256(self.0)
+        )))
+    }
+    #[inline(always)]
+    fn sin_cos(self) -> (Avx, Avx) {
+        wide_sin_cos(self)
     }
 }

@@ -4,8 +4,8 @@
 //! AVX register (`avx.rs`); every operation is a [`Lane`] primitive or `math.rs`'s, so both
 //! give the same bits (`avx2_and_portable_kernels_agree_bit_for_bit`, tests/map_lanes.rs).
 
-use super::lane::{LANES, Lane};
-use super::math::{atan2, cos_sinc, exp, exp_small};
+use super::lane::Lane;
+use super::math::{atan2, cbrt, cos_sinc, exp, exp_small};
 use crate::map::fast::Summary;
 use crate::map::fast::flow::SMALL;
 use crate::map::fast::search::{MAX_REFINE, SETTLED, TAU_MAX};
@@ -68,7 +68,7 @@ fn lone_real_root<L: Lane>(a2: L, a0: L) -> (L, L, L, L) {
     let q = (v(2.0) * shift * shift - one) * shift + a0;
     let disc = v(0.25) * q * q + p * p * p / v(27.0);
     let sign = q.sign_negative().select(v(-1.0), one);
-    let u = (v(-0.5) * q - sign * disc.sqrt()).cbrt();
+    let u = cbrt(v(-0.5) * q - sign * disc.sqrt());
     let mut ok = disc.gt(zero) & u.ne(zero);
     let mut r = u - p / (v(3.0) * u) - shift;
     let mut done = zero.ne(zero);
@@ -192,10 +192,13 @@ impl<L: Lane> Flow4<L> {
     /// (z̄, …, z̄^{(5)}) at a point (`Flow::jet`).
     #[inline(always)]
     fn jet(&self, pt: &Point4<L>) -> [L; 6] {
-        std::array::from_fn(|k| {
-            let [ar, c, s] = self.jet[k];
-            ar * pt.real + c * pt.ec + s * pt.es
-        })
+        // loops over arrays rather than `std::array::from_fn`, whose closure the compiler
+        // left out of line in the eight-lane kernel (a call per use, by callgrind)
+        let mut out = [pt.real; 6];
+        for (o, [ar, c, s]) in out.iter_mut().zip(self.jet) {
+            *o = ar * pt.real + c * pt.ec + s * pt.es;
+        }
+        out
     }
 
     /// `Flow::rounding` where the pair oscillates: (for z̄, for ∫ z̄).
@@ -270,11 +273,13 @@ fn refine_both<L: Lane>(flow: &Flow4<L>, guesses: [Point4<L>; 2], live: L) -> ([
     let mut points = guesses;
     let mut active = [live, live];
     let mut found = [v(0.0), v(0.0)];
-    let mut roots = guesses.map(|point| Root4 {
+    // each by hand: `guesses.map(…)` stayed a call out of the AVX2 kernel (callgrind)
+    let root = |point: Point4<L>| Root4 {
         t: point.t,
         point,
         jet: [v(0.0); 6],
-    });
+    };
+    let mut roots = [root(guesses[0]), root(guesses[1])];
     for _ in 0..MAX_REFINE {
         for i in 0..2 {
             if !active[i].any() {
@@ -289,7 +294,7 @@ fn refine_both<L: Lane>(flow: &Flow4<L>, guesses: [Point4<L>; 2], live: L) -> ([
             roots[i] = Root4 {
                 t: now.select(t, roots[i].t),
                 point: Point4::select(now, point, roots[i].point),
-                jet: std::array::from_fn(|k| now.select(jet[k], roots[i].jet[k])),
+                jet: select6(now, jet, roots[i].jet),
             };
             found[i] |= now;
             active[i] &= inside & !settled;
@@ -315,6 +320,15 @@ fn refine_both<L: Lane>(flow: &Flow4<L>, guesses: [Point4<L>; 2], live: L) -> ([
     (roots, ok)
 }
 
+/// Six values lane by lane: `yes` where the mask is true, else `no`.
+#[inline(always)]
+fn select6<L: Lane>(mask: L, yes: [L; 6], mut no: [L; 6]) -> [L; 6] {
+    for (n, y) in no.iter_mut().zip(yes) {
+        *n = mask.select(y, *n);
+    }
+    no
+}
+
 /// `search::taylor`.
 #[inline(always)]
 fn taylor<L: Lane>(c: &[L], h: L) -> L {
@@ -322,9 +336,13 @@ fn taylor<L: Lane>(c: &[L], h: L) -> L {
     c[0] + h * (c[1] + h / v(2.0) * (c[2] + h / v(3.0) * (c[3] + h / v(4.0) * c[4])))
 }
 
-/// The body of `lanes_only`, inlined into each of its compilations (portable, AVX2).
+/// The body of `lanes_only` and `lanes_only8`, inlined into each of their compilations
+/// (portable, AVX2; four lanes, or eight in two registers): N impacts in one `L` of N lanes.
 #[inline(always)]
-pub fn kernel<L: Lane>(lambda: [f64; LANES], zeta: [f64; LANES]) -> [Option<Summary>; LANES] {
+pub fn kernel<L: Lane<Array = [f64; N]>, const N: usize>(
+    lambda: [f64; N],
+    zeta: [f64; N],
+) -> [Option<Summary>; N] {
     let v = L::splat;
     let (l, z) = (L::from_array(lambda), L::from_array(zeta));
     let valid = l.gt(v(0.0)) & z.gt(v(0.0)) & l.is_finite() & z.is_finite();
@@ -350,11 +368,13 @@ pub fn kernel<L: Lane>(lambda: [f64; LANES], zeta: [f64; LANES]) -> [Option<Summ
         & (flow.r * end.point.t).abs().ge(v(1e-3));
     let answered = (live & settled & precise).bitmask();
     let (cor, z_m, t_f) = (cor.to_array(), z_m.to_array(), end.t.to_array());
-    std::array::from_fn(|i| {
-        (answered & (1 << i) != 0).then_some(Summary {
+    let mut out = [None; N];
+    for (i, o) in out.iter_mut().enumerate() {
+        *o = (answered & (1 << i) != 0).then_some(Summary {
             cor: cor[i],
             max_force: z_m[i],
             contact_time: t_f[i],
-        })
-    })
+        });
+    }
+    out
 }

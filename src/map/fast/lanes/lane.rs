@@ -1,13 +1,14 @@
 //! What the lanes' kernel asks of four f64 side by side ([`Lane`]), and its portable answer:
 //! `wide`'s `f64x4` (two SSE2 registers on the default x86-64 target).
 //!
-//! The kernel is written once over [`Lane`] and compiled for two lane types: `f64x4` here and
-//! `Avx` (one 256-bit register, `avx.rs`). Every primitive is exact or a single IEEE operation
-//! correctly rounded (+, −, ×, ÷, √, floor, comparisons, bit selection), so both lane types
-//! give the same bits for the same operations; everything else (`max`, `min`, `is_finite`,
-//! the exponential and `atan2` of `math.rs`) is built from the primitives in [`Lane`]'s
-//! provided methods, once for both. `cbrt` and `sin_cos` (once a kernel call, and the rare
-//! long step) are `wide`'s in both: the same function, the same bits.
+//! The kernel is written once over [`Lane`] and compiled for three lane types: `f64x4` here,
+//! `Avx` (one 256-bit register, `avx.rs`) and `Pair` of two `Avx` (`pair.rs`). Every primitive
+//! is exact or a single IEEE operation correctly rounded (+, −, ×, ÷, √, floor, comparisons,
+//! bit selection and shifts), so every lane type gives the same bits for the same operations;
+//! everything else (`max`, `min`, `is_finite`, the exponential, `atan2` and `cbrt` of
+//! `math.rs`) is built from the primitives, in [`Lane`]'s provided methods or `math.rs`, once
+//! for all. `sin_cos` (the rare long step) is `wide`'s in all: the same function, the same
+//! bits.
 
 use std::ops::{Add, BitAnd, BitAndAssign, BitOr, BitOrAssign, Div, Mul, Neg, Not, Sub};
 use wide::f64x4;
@@ -30,12 +31,14 @@ pub trait Lane:
     + BitOrAssign
     + Not<Output = Self>
 {
+    /// The lanes' values in memory: `[f64; n]` for n lanes.
+    type Array: Copy + AsRef<[f64]>;
     /// x in every lane.
     fn splat(x: f64) -> Self;
     /// The lanes from an array, lane i from `a[i]`.
-    fn from_array(a: [f64; LANES]) -> Self;
+    fn from_array(a: Self::Array) -> Self;
     /// The lanes as an array.
-    fn to_array(self) -> [f64; LANES];
+    fn to_array(self) -> Self::Array;
     /// √x, correctly rounded.
     fn sqrt(self) -> Self;
     /// ⌊x⌋, exact.
@@ -63,6 +66,9 @@ pub trait Lane:
     /// The bits of x shifted left by 52: 2ⁿ where x = 2⁵² + 1023 + n for an integer
     /// n ∈ [−1022, 1023] (its last 11 bits are n's biased exponent: `math::exp`).
     fn shl52(self) -> Self;
+    /// The bits of x shifted right by 52: a non-negative x's biased exponent in the last 11
+    /// bits (`math::cbrt`).
+    fn shr52(self) -> Self;
 
     /// Any lane of the mask true.
     #[inline(always)]
@@ -86,24 +92,19 @@ pub trait Lane:
     fn is_finite(self) -> Self {
         (self - self).eq(Self::splat(0.0))
     }
-    /// ∛x, `wide`'s (the same function in every lane type): some 330 instructions for four
-    /// by callgrind, where libm's lane by lane took 550 and more.
-    #[inline(always)]
-    fn cbrt(self) -> Self {
-        Self::from_array(f64x4::new(self.to_array()).cbrt().to_array())
-    }
-    /// (sin x, cos x), `wide`'s (the same function in every lane type).
-    #[inline(always)]
-    fn sin_cos(self) -> (Self, Self) {
-        let (s, c) = f64x4::new(self.to_array()).sin_cos();
-        (
-            Self::from_array(s.to_array()),
-            Self::from_array(c.to_array()),
-        )
-    }
+    /// (sin x, cos x), `wide`'s (the same function in every lane type: `wide_sin_cos`).
+    fn sin_cos(self) -> (Self, Self);
+}
+
+/// (sin x, cos x) of four lanes by `wide`'s `f64x4::sin_cos`, whatever register they are in.
+#[inline(always)]
+pub fn wide_sin_cos<L: Lane<Array = [f64; LANES]>>(x: L) -> (L, L) {
+    let (s, c) = f64x4::new(x.to_array()).sin_cos();
+    (L::from_array(s.to_array()), L::from_array(c.to_array()))
 }
 
 impl Lane for f64x4 {
+    type Array = [f64; LANES];
     #[inline(always)]
     fn splat(x: f64) -> Self {
         f64x4::splat(x)
@@ -168,5 +169,14 @@ impl Lane for f64x4 {
     fn shl52(self) -> Self {
         let bits: wide::u64x4 = wide::bytemuck::cast(self);
         wide::bytemuck::cast(bits << 52_u32)
+    }
+    #[inline(always)]
+    fn shr52(self) -> Self {
+        let bits: wide::u64x4 = wide::bytemuck::cast(self);
+        wide::bytemuck::cast(bits >> 52_u32)
+    }
+    #[inline(always)]
+    fn sin_cos(self) -> (Self, Self) {
+        f64x4::sin_cos(self)
     }
 }

@@ -126,6 +126,60 @@ pub fn atan2<L: Lane>(y: L, x: L) -> L {
     y.sign_negative().select(-angle, angle)
 }
 
+/// SLEEF's minimax polynomial for 1/∛d on [0.5, 1), C0 … C5 (Shibata et al., SLEEF, Boost
+/// licence), as `wide` 1.7's `f64x4::cbrt` takes them.
+#[allow(clippy::excessive_precision)] // the digits as `wide` gives them: the same f64s
+const CBRT_C: [f64; 6] = [
+    2.2307275302496609725722,
+    -3.85841935510444988821632,
+    6.03990368989458747961407,
+    -5.73353060922947843636166,
+    2.96155103020039511818595,
+    -0.640245898480692909870982,
+];
+
+/// ∛x: `wide` 1.7's `f64x4::cbrt` operation for operation (its multiply-adds as a product
+/// then a sum, as `wide` runs them without FMA), so the same bits
+/// (`cbrt_is_wides_bit_for_bit`), inline over the lane primitives where `wide`'s was a call
+/// of some 330 instructions for four on SSE2 (BENCHMARKS.md, "Two registers in one stream").
+/// a = |x| = 2^(e−1)·d with d ∈ [0.5, 1) (subnormals scaled by 2⁵⁴ first), 1/∛d by the
+/// polynomial and one Newton step, ∛d = d·(1/∛d)² and one more step, times 2^{e/3} as
+/// 2ᵏ·∛2^(e − 3k); ±0, ±∞ and NaN are x itself.
+#[inline(always)]
+pub fn cbrt<L: Lane>(x: L) -> L {
+    let v = L::splat;
+    let one = v(1.0);
+    let a = x.abs();
+    let (zero, inf, nan) = (a.eq(v(0.0)), a.eq(v(f64::INFINITY)), x.ne(x));
+    let tiny = a.lt(v(f64::MIN_POSITIVE));
+    let a = tiny.select(a * v(1.8014398509481984e16), a);
+    // the exponent of a, and its fraction d (exponent bits set to 2⁻¹'s)
+    let two52 = v(4_503_599_627_370_496.0);
+    let e = ((a.shr52() | two52) - v(4_503_599_627_370_496.0 + 1023.0)) + one;
+    let d = (a & v(f64::from_bits(0x000F_FFFF_FFFF_FFFF))) | v(0.5);
+    // each by hand: `CBRT_C.map(v)` stayed a call out of the AVX2 kernel (callgrind)
+    let (c0, c1, c2) = (v(CBRT_C[0]), v(CBRT_C[1]), v(CBRT_C[2]));
+    let (c3, c4, c5) = (v(CBRT_C[3]), v(CBRT_C[4]), v(CBRT_C[5]));
+    let (d2, d4) = (d * d, (d * d) * (d * d));
+    let mut r = (c3 * d + c2) * d2 + ((c5 * d + c4) * d4 + (c1 * d + c0));
+    let r4 = (r * r) * (r * r);
+    r = r - (d * r4 - r) * v(1.0 / 3.0);
+    let mut y = (d * r) * r;
+    y = y - v(2.0 / 3.0) * y * (y * r - one);
+    // 2^{e/3}: k = e/3 toward zero (e − 2 below zero), the rest ∛2 or ∛4
+    let three = v(3.0);
+    let e_adj = e.lt(v(0.0)).select(e - v(2.0), e);
+    let q = e_adj / three;
+    let k = q.sign_negative().select(-(-q).floor(), q.floor());
+    let rest = e - three * k;
+    y = rest.eq(one).select(y * v(1.2599210498948732), y);
+    y = rest.eq(v(2.0)).select(y * v(1.5874010519681994), y);
+    y = y * pow2(k);
+    y = tiny.select(y / v(262_144.0), y);
+    let y = x.sign_negative().select(-y, y);
+    (nan | zero | inf).select(x, y)
+}
+
 /// `flow::exp_small`: Σ xᵏ/k!, k ≤ 10, good where |x| ≤ `SMALL` (flow.rs).
 #[inline(always)]
 pub fn exp_small<L: Lane>(x: L) -> L {

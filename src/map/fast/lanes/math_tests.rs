@@ -1,7 +1,8 @@
-//! The lanes' `exp` and `atan2` against libm's, and the same bits in both lane types.
+//! The lanes' `exp` and `atan2` against libm's, `cbrt` against `wide`'s, and the same bits in
+//! every lane type.
 
 use super::super::lane::{LANES, Lane};
-use super::{atan2, exp};
+use super::{atan2, cbrt, exp};
 use wide::f64x4;
 
 /// splitmix64 as a unit stream: the same points on every run.
@@ -136,6 +137,57 @@ fn atan2_is_libms_to_two_ulp() {
     }
 }
 
+/// Arguments for ∛: every binade from subnormals to 1e300 either sign, the kernel's range
+/// (Cardano's u from ±1e-12 to ±1e30), and the edges (±0, ±∞, NaN, the smallest normal).
+fn cbrt_arguments() -> Vec<f64> {
+    let mut xs: Vec<f64> = units(13, 200_000)
+        .iter()
+        .zip(units(14, 200_000))
+        .map(|(u, w)| {
+            let x = 10f64.powf(-320.0 + 620.0 * u);
+            if w < 0.5 { -x } else { x }
+        })
+        .collect();
+    xs.extend(units(15, 50_000).iter().map(|u| (u - 0.5) * 1e3));
+    xs.extend([
+        0.0,
+        -0.0,
+        f64::INFINITY,
+        f64::NEG_INFINITY,
+        f64::NAN,
+        f64::MIN_POSITIVE,
+        -f64::MIN_POSITIVE,
+        f64::from_bits(1),
+        f64::MAX,
+        1.0,
+        -8.0,
+        27.0,
+    ]);
+    xs
+}
+
+/// The lanes' ∛ is `wide`'s, bit for bit (the kernel's answers, and the Monte Carlo's, kept
+/// when the lanes took it over from `wide`'s call).
+#[test]
+fn cbrt_is_wides_bit_for_bit() {
+    let xs = cbrt_arguments();
+    let got = in_lanes(&xs, cbrt);
+    let want = in_lanes(&xs, f64x4::cbrt);
+    for ((x, g), w) in xs.iter().zip(&got).zip(&want) {
+        assert_eq!(g.to_bits(), w.to_bits(), "cbrt({x:e}) = {g:e}, wide {w:e}");
+    }
+    // and ∛ itself to 2 ulp of libm's where normal
+    for (x, g) in xs.iter().zip(&got) {
+        if x.is_finite() && x.abs() >= f64::MIN_POSITIVE {
+            assert!(
+                ulps(*g, x.cbrt()) <= 2.0,
+                "cbrt({x:e}) = {g:e}, libm {}",
+                x.cbrt()
+            );
+        }
+    }
+}
+
 /// The AVX lane type gives the portable one's bits, function by function (the whole kernel:
 /// tests/map_lanes.rs `avx2_and_portable_kernels_agree_bit_for_bit`).
 #[cfg(target_arch = "x86_64")]
@@ -147,7 +199,7 @@ fn avx_and_portable_math_agree_bit_for_bit() {
         return;
     }
     #[target_feature(enable = "avx2")]
-    fn both(a: [f64; LANES], b: [f64; LANES]) -> [[f64; LANES]; 4] {
+    fn both(a: [f64; LANES], b: [f64; LANES]) -> [[f64; LANES]; 5] {
         let (x, y) = (Avx::from_array(a), Avx::from_array(b));
         let (s, c) = x.sin_cos();
         [
@@ -155,18 +207,25 @@ fn avx_and_portable_math_agree_bit_for_bit() {
             atan2(x, y).to_array(),
             s.to_array(),
             c.to_array(),
+            cbrt(x).to_array(),
         ]
     }
-    let xs = exp_arguments();
-    let ys: Vec<f64> = atan2_arguments().iter().map(|q| q.1).collect();
+    let mut xs = exp_arguments();
+    xs.extend(cbrt_arguments());
+    let ys: Vec<f64> = atan2_arguments()
+        .iter()
+        .map(|q| q.1)
+        .cycle()
+        .take(xs.len())
+        .collect();
     for (a, b) in xs.chunks_exact(LANES).zip(ys.chunks_exact(LANES)) {
         let (a, b): ([f64; LANES], [f64; LANES]) = (a.try_into().unwrap(), b.try_into().unwrap());
         // SAFETY: the CPU has AVX2, just checked
         let avx = unsafe { both(a, b) };
         let (x, y) = (f64x4::from_array(a), f64x4::from_array(b));
         let (s, c) = x.sin_cos();
-        let portable = [exp(x), atan2(x, y), s, c].map(|r| r.to_array());
-        let bits = |r: [[f64; LANES]; 4]| r.map(|a| a.map(f64::to_bits));
+        let portable = [exp(x), atan2(x, y), s, c, cbrt(x)].map(|r| r.to_array());
+        let bits = |r: [[f64; LANES]; 5]| r.map(|a| a.map(f64::to_bits));
         assert_eq!(bits(avx), bits(portable), "at {a:?}, {b:?}");
     }
 }
