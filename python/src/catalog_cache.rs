@@ -1,25 +1,79 @@
 //! The catalog `run(preset=…)` and every preset call read, kept between calls (issue 30 item 5:
 //! re-reading and re-parsing every preset on each call cost tens of µs). The user's folder is
-//! still read at each call, as the command line reads it (docs/library.md): the cache holds
+//! still seen at each call as the command line sees it (docs/library.md): the cache holds
 //! while the folder's path and the name, size and modification time of each of its entries
-//! are those it was loaded with, so a preset added, edited or removed is seen at the next call.
+//! (the stamp) are those it was loaded with, so a preset added, edited or removed is seen at
+//! the next call.
+//!
+//! Looking at the stamp is a walk of the folder's path (an `open`, or a `stat` of each entry)
+//! at each call: some 2–3 µs of system time, as much as the closed-form impact it serves
+//! (BENCHMARKS.md). On Linux an inotify watch stands in for it where it can tell every change
+//! (`watch.rs`): the kernel queues an event on any change to the folder or its path before the
+//! change's own system call returns, so one non-blocking `read` of the watch — no event —
+//! says the stamp has not moved, and on any event the stamp is taken again.
 
 use bouncelab::catalog::{Catalog, CatalogError};
 use std::path::{Path, PathBuf};
 use std::sync::{Arc, Mutex};
 use std::time::SystemTime;
 
-/// What the catalog was loaded from: the folder and its entries (name, size, modified).
+#[cfg(target_os = "linux")]
+#[path = "catalog_watch.rs"]
+mod watch;
+#[cfg(not(target_os = "linux"))]
+mod watch {
+    //! Elsewhere no watch: the stamp is taken at each call.
+    use std::path::Path;
+
+    pub(super) struct Watch;
+
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub(super) enum News {
+        None,
+        Path,
+        Folder,
+    }
+
+    impl Watch {
+        pub(super) fn arm(_dir: Option<&Path>) -> Option<Watch> {
+            None
+        }
+
+        pub(super) fn news(&self) -> News {
+            News::Path
+        }
+    }
+}
+use watch::{News, Watch};
+
+/// What the catalog was loaded from: the folder, which folder it was (device and inode, where
+/// the system has them: a folder put in its place is another), and its entries (name, size,
+/// modified).
 type Stamp = (
     Option<PathBuf>,
+    Option<(u64, u64)>,
     Vec<(std::ffi::OsString, u64, Option<SystemTime>)>,
 );
 
-static CACHE: Mutex<Option<(Stamp, Arc<Catalog>)>> = Mutex::new(None);
+/// The catalog, the stamp it was loaded at, and the watch armed before that stamp was taken.
+struct Cached {
+    stamp: Stamp,
+    catalog: Arc<Catalog>,
+    watch: Option<Watch>,
+}
+
+static CACHE: Mutex<Option<Cached>> = Mutex::new(None);
 
 /// The folder's entries as they stand (none when it does not exist or cannot be read: the
 /// load then says why, if anything is wrong).
 fn stamp(dir: Option<&Path>) -> Stamp {
+    #[cfg(unix)]
+    let which = dir.and_then(|d| std::fs::metadata(d).ok()).map(|m| {
+        use std::os::unix::fs::MetadataExt;
+        (m.dev(), m.ino())
+    });
+    #[cfg(not(unix))]
+    let which = None;
     let mut files = Vec::new();
     if let Some(rd) = dir.and_then(|d| std::fs::read_dir(d).ok()) {
         for e in rd.flatten() {
@@ -31,20 +85,40 @@ fn stamp(dir: Option<&Path>) -> Stamp {
         }
     }
     files.sort();
-    (dir.map(Path::to_path_buf), files)
+    (dir.map(Path::to_path_buf), which, files)
 }
 
 /// The catalog of `dir` (the user's presets folder), from the cache while the folder is
-/// unchanged; errors are not kept (the next call reads again).
+/// unchanged: no news from the watch, or a stamp that has not moved after news on the path
+/// alone; news from the folder itself, and it is read again. Errors are not kept (the next
+/// call reads again).
 pub(crate) fn catalog(dir: Option<&Path>) -> Result<Arc<Catalog>, CatalogError> {
-    let now = stamp(dir);
     let mut cache = CACHE.lock().unwrap_or_else(|e| e.into_inner());
-    if let Some((s, cat)) = cache.as_ref()
-        && *s == now
+    let news = match cache.as_ref() {
+        Some(c) if c.stamp.0.as_deref() == dir => c.watch.as_ref().map_or(News::Path, Watch::news),
+        _ => News::Folder,
+    };
+    if news == News::None
+        && let Some(c) = cache.as_ref()
     {
-        return Ok(cat.clone());
+        return Ok(c.catalog.clone());
     }
-    let cat = Arc::new(Catalog::load(dir, None)?);
-    *cache = Some((now, cat.clone()));
-    Ok(cat)
+    // armed before the stamp is taken: a change after the stamp is news at the next call
+    let watch = Watch::arm(dir);
+    let now = stamp(dir);
+    if news == News::Path
+        && let Some(c) = cache.as_mut()
+        && c.stamp == now
+    {
+        c.watch = watch;
+        return Ok(c.catalog.clone());
+    }
+    *cache = None;
+    let catalog = Arc::new(Catalog::load(dir, None)?);
+    *cache = Some(Cached {
+        stamp: now,
+        catalog: catalog.clone(),
+        watch,
+    });
+    Ok(catalog)
 }

@@ -89,10 +89,8 @@ fn load_catalog() -> PyResult<std::sync::Arc<Catalog>> {
         .map_err(|e| error(BallError::Catalog(e)))
 }
 
-fn entry(cat: &Catalog, name: &str) -> PyResult<Entry> {
-    cat.get(name)
-        .cloned()
-        .map_err(|e| error(BallError::Catalog(e)))
+fn entry<'c>(cat: &'c Catalog, name: &str) -> PyResult<&'c Entry> {
+    cat.get(name).map_err(|e| error(BallError::Catalog(e)))
 }
 
 /// A preset ball with the command line's `--params`, `--law`, `--v0` applied.
@@ -106,7 +104,7 @@ fn preset_ball(
     let entry = entry(&cat, preset)?;
     let params = params.map(source).transpose()?;
     let law_ = law_name.map(law).transpose()?;
-    Ball::from_entry(&entry, params, law_, v0).map_err(error)
+    Ball::from_entry(entry, params, law_, v0).map_err(error)
 }
 
 /// A list of floats from a numpy array, a sequence, or one number.
