@@ -15,6 +15,7 @@ use bouncelab::api::{ImpactReport, Intervals};
 use numpy::PyArray1;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
+use std::borrow::Cow;
 use std::sync::OnceLock;
 
 /// The answer to one impact, SI units; attribute names are the keys of `bouncelab run
@@ -23,14 +24,15 @@ use std::sync::OnceLock;
 pub(crate) struct Impact {
     #[pyo3(get)]
     preset: Option<String>,
+    // the words borrowed where they are the library's own (no allocation a call)
     #[pyo3(get)]
-    origin: String,
+    origin: Cow<'static, str>,
     #[pyo3(get)]
-    parameters: String,
+    parameters: Cow<'static, str>,
     #[pyo3(get)]
-    law: String,
+    law: Cow<'static, str>,
     #[pyo3(get)]
-    method: String,
+    method: Cow<'static, str>,
     #[pyo3(get)]
     mass: f64,
     #[pyo3(get)]
@@ -132,6 +134,7 @@ impl Impact {
     /// without its audit, the caller keeps the ball in it for [`Impact::audit`].
     fn new(
         py: Python<'_>,
+        ball: &Ball,
         rep: &ImpactReport<'_>,
         intervals: Option<Intervals>,
         audit: Option<Audit>,
@@ -140,10 +143,13 @@ impl Impact {
         let h = [rep.t, rep.force, rep.indentation, rep.displacement].map(series);
         Impact {
             preset: rep.ball.preset.map(String::from),
-            origin: rep.ball.origin.to_string(),
-            parameters: rep.ball.parameters.into(),
-            law: rep.ball.law.into(),
-            method: rep.method.name().into(),
+            origin: match rep.ball.origin {
+                "embedded" => Cow::Borrowed("embedded"),
+                other => Cow::Owned(other.to_string()),
+            },
+            parameters: Cow::Borrowed(ball.source),
+            law: Cow::Borrowed(rep.ball.law),
+            method: Cow::Borrowed(rep.method.name()),
             mass: rep.mass,
             k_p: rep.k_p,
             k_r: rep.k_r,
@@ -387,7 +393,8 @@ pub(crate) fn impact(
 ) -> PyResult<Impact> {
     if !history && let Some(s) = ball.closed_form_summary() {
         let intervals = fitted_intervals(py, &ball)?;
-        let mut impact = Impact::new(py, &ImpactReport::of_summary(&ball, &s), intervals, None);
+        let rep = ImpactReport::of_summary(&ball, &s);
+        let mut impact = Impact::new(py, &ball, &rep, intervals, None);
         impact.ball = Some(ball);
         return Ok(impact);
     }
@@ -402,7 +409,13 @@ pub(crate) fn impact(
         })
         .map_err(error)?;
     let rep = ImpactReport::new(&ball, &r, history);
-    Ok(Impact::new(py, &rep, intervals, Some(Audit::of(&rep))))
+    Ok(Impact::new(
+        py,
+        &ball,
+        &rep,
+        intervals,
+        Some(Audit::of(&rep)),
+    ))
 }
 
 /// The 95 % intervals of a fitted preset's impact (several solver runs: the GIL released),

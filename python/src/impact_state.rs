@@ -9,6 +9,7 @@ use numpy::{PyArray1, PyArrayMethods, PyReadonlyArray1};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
+use std::borrow::Cow;
 
 /// `d[key]`, extracted; a missing key is an error naming it.
 fn get<'py, T: FromPyObjectOwned<'py>>(d: &Bound<'py, PyDict>, key: &str) -> PyResult<T> {
@@ -56,10 +57,10 @@ pub(super) fn from_state(d: &Bound<'_, PyDict>) -> PyResult<Impact> {
     }
     Ok(Impact {
         preset: get(d, "preset")?,
-        origin: get(d, "origin")?,
-        parameters: get(d, "parameters")?,
-        law: get(d, "law")?,
-        method: get(d, "method")?,
+        origin: Cow::Owned(get(d, "origin")?),
+        parameters: Cow::Owned(get(d, "parameters")?),
+        law: Cow::Owned(get(d, "law")?),
+        method: Cow::Owned(get(d, "method")?),
         mass: get(d, "mass")?,
         k_p: get(d, "k_p")?,
         k_r: get(d, "k_r")?,
