@@ -90,30 +90,33 @@ fn stamp(dir: Option<&Path>) -> Stamp {
 
 /// The catalog of `dir` (the user's presets folder), from the cache while the folder is
 /// unchanged: no news from the watch, or a stamp that has not moved after news on the path
-/// alone; news from the folder itself, and it is read again. Errors are not kept (the next
-/// call reads again).
+/// alone (or at each call where no watch could be armed); news from the folder itself, and it
+/// is read again. Errors are not kept (the next call reads again).
 pub(crate) fn catalog(dir: Option<&Path>) -> Result<Arc<Catalog>, CatalogError> {
     let mut cache = CACHE.lock().unwrap_or_else(|e| e.into_inner());
-    let news = match cache.as_ref() {
-        Some(c) if c.stamp.0.as_deref() == dir => c.watch.as_ref().map_or(News::Path, Watch::news),
-        _ => News::Folder,
-    };
-    if news == News::None
-        && let Some(c) = cache.as_ref()
+    if let Some(c) = cache.as_mut()
+        && c.stamp.0.as_deref() == dir
     {
-        return Ok(c.catalog.clone());
-    }
-    // armed before the stamp is taken: a change after the stamp is news at the next call
-    let watch = Watch::arm(dir);
-    let now = stamp(dir);
-    if news == News::Path
-        && let Some(c) = cache.as_mut()
-        && c.stamp == now
-    {
-        c.watch = watch;
-        return Ok(c.catalog.clone());
+        match c.watch.as_ref().map(Watch::news) {
+            Some(News::None) => return Ok(c.catalog.clone()),
+            Some(News::Path) => {
+                // armed before the stamp is taken: a change after it is news at the next call
+                let watch = Watch::arm(dir);
+                if stamp(dir) == c.stamp {
+                    c.watch = watch;
+                    return Ok(c.catalog.clone());
+                }
+            }
+            Some(News::Folder) => {}
+            // no watch could be armed (a link, a remote file system…): the stamp at each call,
+            // a watch tried again once it moves
+            None if stamp(dir) == c.stamp => return Ok(c.catalog.clone()),
+            None => {}
+        }
     }
     *cache = None;
+    let watch = Watch::arm(dir);
+    let now = stamp(dir);
     let catalog = Arc::new(Catalog::load(dir, None)?);
     *cache = Some(Cached {
         stamp: now,
