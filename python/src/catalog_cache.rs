@@ -13,6 +13,7 @@
 //! says the stamp has not moved, and on any event the stamp is taken again.
 
 use bouncelab::catalog::{Catalog, CatalogError};
+use std::ffi::OsString;
 use std::path::{Path, PathBuf};
 use std::sync::{Arc, Mutex};
 use std::time::SystemTime;
@@ -64,6 +65,35 @@ struct Cached {
 
 static CACHE: Mutex<Option<Cached>> = Mutex::new(None);
 
+/// The variables `catalog::user_presets_dir` reads, and the folder it named from them.
+type Named = ((Option<OsString>, Option<OsString>), Option<PathBuf>);
+
+static FOLDER: Mutex<Option<Named>> = Mutex::new(None);
+
+/// The user's presets folder, `catalog::user_presets_dir()`: its variables (XDG_CONFIG_HOME,
+/// HOME) read at each call — Python may change them between two — and the path joined again
+/// only when they change (its three joins were a fifth of a `run(preset=…)`, BENCHMARKS.md).
+fn user_presets_dir() -> Option<PathBuf> {
+    let vars = (
+        std::env::var_os("XDG_CONFIG_HOME"),
+        std::env::var_os("HOME"),
+    );
+    let mut named = FOLDER.lock().unwrap_or_else(|e| e.into_inner());
+    match named.as_ref() {
+        Some((v, dir)) if *v == vars => dir.clone(),
+        _ => {
+            let dir = bouncelab::catalog::user_presets_dir();
+            *named = Some((vars, dir.clone()));
+            dir
+        }
+    }
+}
+
+/// The catalog of the user's presets folder, as the command line sees it (`catalog`).
+pub(crate) fn user_catalog() -> Result<Arc<Catalog>, CatalogError> {
+    catalog(user_presets_dir().as_deref())
+}
+
 /// The folder's entries as they stand (none when it does not exist or cannot be read: the
 /// load then says why, if anything is wrong).
 fn stamp(dir: Option<&Path>) -> Stamp {
@@ -92,7 +122,7 @@ fn stamp(dir: Option<&Path>) -> Stamp {
 /// unchanged: no news from the watch, or a stamp that has not moved after news on the path
 /// alone (or at each call where no watch could be armed); news from the folder itself, and it
 /// is read again. Errors are not kept (the next call reads again).
-pub(crate) fn catalog(dir: Option<&Path>) -> Result<Arc<Catalog>, CatalogError> {
+fn catalog(dir: Option<&Path>) -> Result<Arc<Catalog>, CatalogError> {
     let mut cache = CACHE.lock().unwrap_or_else(|e| e.into_inner());
     if let Some(c) = cache.as_mut()
         && c.stamp.0.as_deref() == dir

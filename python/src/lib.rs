@@ -7,7 +7,7 @@
 
 use bouncelab::analysis::fit::Fit;
 use bouncelab::api::{self, FitReport};
-use bouncelab::catalog::{self, Catalog, Entry, Origin};
+use bouncelab::catalog::{Catalog, Entry, Origin};
 use bouncelab::model::params::ImpactParams;
 use bouncelab::preset::ParamSource;
 use bouncelab::{Ball, BallError, ContactLaw};
@@ -85,8 +85,7 @@ fn source(name: &str) -> PyResult<ParamSource> {
 /// (`$XDG_CONFIG_HOME/bouncelab/presets`).
 fn load_catalog() -> PyResult<std::sync::Arc<Catalog>> {
     // kept between calls while the folder is unchanged (catalog_cache.rs)
-    catalog_cache::catalog(catalog::user_presets_dir().as_deref())
-        .map_err(|e| error(BallError::Catalog(e)))
+    catalog_cache::user_catalog().map_err(|e| error(BallError::Catalog(e)))
 }
 
 fn entry<'c>(cat: &'c Catalog, name: &str) -> PyResult<&'c Entry> {
