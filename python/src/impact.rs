@@ -10,11 +10,15 @@ use crate::{array, error};
 // fields without widening them
 #[path = "impact_state.rs"]
 mod state;
+// one impact's run: the closed form or the solver (a child module: it fills the fields in)
+#[path = "impact_run.rs"]
+mod run;
 use bouncelab::Ball;
 use bouncelab::api::{ImpactReport, Intervals};
 use numpy::PyArray1;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
+pub(crate) use run::impact;
 use std::borrow::Cow;
 use std::sync::OnceLock;
 
@@ -379,52 +383,6 @@ impl Impact {
             if self.rebound { "True" } else { "False" }
         )
     }
-}
-
-/// One impact of `ball`, its history sampled `samples` times when asked for. On the linear
-/// law without a history, the closed forms where they answer (under a µs: the GIL kept) and
-/// the audit left to the first read; else the solver with its audit, the GIL released while
-/// it runs.
-pub(crate) fn impact(
-    py: Python<'_>,
-    ball: Ball,
-    history: bool,
-    samples: usize,
-) -> PyResult<Impact> {
-    if !history && let Some(s) = ball.closed_form_summary() {
-        let intervals = fitted_intervals(py, &ball)?;
-        let rep = ImpactReport::of_summary(&ball, &s);
-        let mut impact = Impact::new(py, &ball, &rep, intervals, None);
-        impact.ball = Some(ball);
-        return Ok(impact);
-    }
-    let (r, intervals) = py
-        .detach(|| {
-            let r = if history {
-                ball.impact_history(samples)
-            } else {
-                ball.impact()
-            }?;
-            Ok::<_, bouncelab::BallError>((r, ball.intervals().transpose()?))
-        })
-        .map_err(error)?;
-    let rep = ImpactReport::new(&ball, &r, history);
-    Ok(Impact::new(
-        py,
-        &ball,
-        &rep,
-        intervals,
-        Some(Audit::of(&rep)),
-    ))
-}
-
-/// The 95 % intervals of a fitted preset's impact (several solver runs: the GIL released),
-/// `None` for any other ball.
-fn fitted_intervals(py: Python<'_>, ball: &Ball) -> PyResult<Option<Intervals>> {
-    if ball.fit.is_none() {
-        return Ok(None);
-    }
-    py.detach(|| ball.intervals().transpose()).map_err(error)
 }
 
 /// `NAME_ci95_lo` and `NAME_ci95_hi` arrays in `d`, one entry per row of `bands`.
