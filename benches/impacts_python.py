@@ -3,17 +3,20 @@ BENCHMARKS.md). Run after `pip install ./python`:
 
     RAYON_NUM_THREADS=1 python benches/impacts_python.py    # per core
     python benches/impacts_python.py                        # all cores
+    python benches/impacts_python.py calls                  # the calls alone (CALLS)
 
-Prints the median of 5 runs (wall clock, then CPU time) of `bouncelab.impacts` over 10⁶ linear-law balls (the superball
-with K_p, c, K_r spread 5 %, no flattening: the closed form), per impact; and the median cost
-of one `run(preset="golf")` and one `run_params(…)` call; then, if SciPy is installed, the
-same impacts with `scipy.integrate.solve_ivp` (RK45, rtol 1e-10, atol 1e-13, terminal event
+Prints the median of 5 runs (wall clock, then CPU time) of `bouncelab.impacts` over 10⁶
+linear-law balls (the superball with K_p, c, K_r spread 5 %, no flattening: the closed form),
+per impact; and the median cost of one call of each of CALLS (`run(preset=…)` of golf and
+tennis, `run_params`, `run_normalized`, and a `run` whose energy audit is read,
+docs/python.md); then, if SciPy is installed, the same impacts with `scipy.integrate.solve_ivp` (RK45, rtol 1e-10, atol 1e-13, terminal event
 at F = 0 falling, as benches/scipy_sweep.py) on the first 300 balls, the ratio of the two per
 impact and their largest COR difference. Speed is measured here, never asserted in tests.
 """
 
 import os
 import statistics
+import sys
 import time
 
 import numpy as np
@@ -78,7 +81,30 @@ def median_of_cpu(f, runs=5):
     return statistics.median(ts)
 
 
+CALLS = [
+    ("run(preset='golf')", lambda: bouncelab.run(preset="golf")),
+    ("run(preset='tennis')", lambda: bouncelab.run(preset="tennis")),
+    (
+        "run_params(m=0.0495, k_p=5.45e4, c=10, k_r=7.08e4, v0=3.12)",
+        lambda: bouncelab.run_params(m=0.0495, k_p=5.45e4, c=10.0, k_r=7.08e4, v0=3.12),
+    ),
+    ("run_normalized(1.0, 0.1)", lambda: bouncelab.run_normalized(1.0, 0.1)),
+    ("run(preset='golf').energy (the audit read)", lambda: bouncelab.run(preset="golf").energy),
+]
+
+
+def time_calls(calls=20000):
+    """Median wall and CPU time of one call of each of CALLS (medians of 5 runs)."""
+    for name, f in CALLS:
+        loop = lambda: [f() for _ in range(calls)]  # noqa: E731
+        wall, cpu = median_of(loop), median_of_cpu(loop)
+        print(f"{name}: {wall / calls * 1e6:.2f} µs per call ({cpu / calls * 1e6:.2f} µs CPU)")
+
+
 def main():
+    if sys.argv[1:] == ["calls"]:  # the per-call overheads only
+        time_calls()
+        return
     n = 10**6
     rng = np.random.default_rng(1)
     k_p = 5.45e4 * (1 + 0.05 * rng.standard_normal(n))
@@ -89,16 +115,7 @@ def main():
     print(f"impacts, 1e6 linear, {threads} threads: {t * 1e3:.1f} ms, {t / n * 1e9:.0f} ns per impact")
     cpu = median_of_cpu(lambda: bouncelab.impacts(m=0.0495, k_p=k_p, c=c, k_r=k_r, v0=3.12))
     print(f"  the same in CPU time (all threads): {cpu / n * 1e9:.0f} ns per impact")
-    calls = 2000
-    t = median_of(lambda: [bouncelab.run(preset="golf") for _ in range(calls)])
-    print(f"run(preset='golf'): {t / calls * 1e6:.2f} µs per call")
-    t = median_of(
-        lambda: [
-            bouncelab.run_params(m=0.0495, k_p=5.45e4, c=10.0, k_r=7.08e4, v0=3.12)
-            for _ in range(calls)
-        ]
-    )
-    print(f"run_params(...): {t / calls * 1e6:.2f} µs per call")
+    time_calls()
     # wall clock on both sides: the ratio of two times taken in the same run
     scipy_side_by_side(0.0495, k_p, c, k_r, 3.12, wall / n * 1e9)
 

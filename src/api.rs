@@ -75,6 +75,7 @@ mod oblique;
 mod oblique_fit;
 mod report;
 mod rows;
+mod summary;
 mod sweep;
 mod warnings;
 pub use batch::{
@@ -90,6 +91,7 @@ pub use oblique::{CourtPace, ObliqueSpec, SOLID_INERTIA_FACTOR};
 pub use oblique_fit::{ObliqueFitReport, is_data_error as is_oblique_data_error};
 pub use report::{BallHeader, Energy, FitReport, ImpactReport, MeasuredAt};
 pub use rows::{ImpactRow, impact_row, impact_rows};
+pub use summary::ImpactSummary;
 pub use sweep::{sweep_zeta, sweep_zeta_watched};
 pub use warnings::{ENERGY_RESIDUAL_MAX, indentation_warning};
 

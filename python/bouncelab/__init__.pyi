@@ -57,13 +57,17 @@ class Impact:
     permanent_indentation: float
     max_force_normalized: float
     contact_time_normalized: Optional[float]
-    #: what the caller should know about this answer (an indentation beyond the ball's
-    #: radius, an energy balance that does not close); ``[]`` when nothing
-    warnings: list[str]
+    @property
+    def warnings(self) -> list[str]:
+        """What the caller should know about this answer (an indentation beyond the ball's
+        radius, an energy balance that does not close); ``[]`` when nothing. With ``energy``,
+        the exact solver's audit, run on first read after a closed-form answer
+        (docs/python.md)."""
     @property
     def measured(self) -> Optional[Measured]: ...
     @property
-    def energy(self) -> Optional[Energy]: ...
+    def energy(self) -> Optional[Energy]:
+        """The energy budget (J), the exact solver's audit (docs/python.md)."""
     @property
     def t(self) -> Optional[Array]:
         """Times (s), with ``history=True``."""

@@ -122,5 +122,5 @@ pub(crate) fn collide(
 
 fn other_ball(cat: &Catalog, name: &str) -> PyResult<Ball> {
     let entry = crate::entry(cat, name)?;
-    Ball::from_entry(&entry, None, None, None).map_err(error)
+    Ball::from_entry(entry, None, None, None).map_err(error)
 }

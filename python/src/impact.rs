@@ -1,5 +1,8 @@
 //! `Impact`: the answer to one impact as a Python object, built from the library's report of
-//! the run ([`ImpactReport`], what `bouncelab run --format json` writes).
+//! the run ([`ImpactReport`], what `bouncelab run --format json` writes). On the linear law
+//! the numbers come from the closed forms where they answer (`Ball::closed_form_summary`, to
+//! 1e-12 of the exact solver) and the energy audit with the warnings that read it from the
+//! exact solver's run on their first read (docs/python.md, "What a call costs").
 
 use crate::{array, error};
 
@@ -7,12 +10,17 @@ use crate::{array, error};
 // fields without widening them
 #[path = "impact_state.rs"]
 mod state;
+// one impact's run: the closed form or the solver (a child module: it fills the fields in)
+#[path = "impact_run.rs"]
+mod run;
 use bouncelab::Ball;
 use bouncelab::api::{ImpactReport, Intervals};
-use bouncelab::solver::ImpactResponse;
 use numpy::PyArray1;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
+pub(crate) use run::impact;
+use std::borrow::Cow;
+use std::sync::OnceLock;
 
 /// The answer to one impact, SI units; attribute names are the keys of `bouncelab run
 /// --format json` (`lambda_` for `lambda`, a Python keyword).
@@ -20,14 +28,15 @@ use pyo3::types::PyDict;
 pub(crate) struct Impact {
     #[pyo3(get)]
     preset: Option<String>,
+    // the words borrowed where they are the library's own (no allocation a call)
     #[pyo3(get)]
-    origin: String,
+    origin: Cow<'static, str>,
     #[pyo3(get)]
-    parameters: String,
+    parameters: Cow<'static, str>,
     #[pyo3(get)]
-    law: String,
+    law: Cow<'static, str>,
     #[pyo3(get)]
-    method: String,
+    method: Cow<'static, str>,
     #[pyo3(get)]
     mass: f64,
     #[pyo3(get)]
@@ -72,15 +81,45 @@ pub(crate) struct Impact {
     contact_time_normalized: Option<f64>,
     /// (v0, cor, max_force, contact_time) measured, presets only
     measured: Option<[Option<f64>; 4]>,
-    /// (initial_kinetic, final_kinetic, dashpot, contact, spring, relative_residual)
-    energy: Option<[f64; 6]>,
     /// t, force, indentation, displacement, when the history was asked for
     history: Option<[Py<PyArray1<f64>>; 4]>,
-    /// What the caller should know about this answer (the JSON's `warnings`).
-    #[pyo3(get)]
-    warnings: Vec<String>,
     /// 95 % intervals on a fitted preset (docs/fitting.md, "Prediction intervals")
     intervals: Option<Intervals>,
+    /// The energy budget and the warnings, once computed ([`Audit`]).
+    audit: OnceLock<Audit>,
+    /// The ball, kept until [`Impact::audit`] has run its audit (`None` once the audit was
+    /// there from the start: the solver's own run, or a state that carried it).
+    ball: Option<Ball>,
+}
+
+/// What `bouncelab run` reports from the exact solver's run with its energy audit: the
+/// budget, and the warnings (an indentation beyond the radius, a budget that does not close).
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct Audit {
+    /// (initial_kinetic, final_kinetic, dashpot, contact, spring, relative_residual)
+    energy: Option<[f64; 6]>,
+    /// What the caller should know about this answer (the JSON's `warnings`).
+    warnings: Vec<String>,
+}
+
+impl Audit {
+    /// The audit of the report of a run with its energy budget.
+    fn of(rep: &ImpactReport<'_>) -> Audit {
+        Audit {
+            energy: rep.energy.map(|e| {
+                let b = e.budget;
+                [
+                    b.initial_kinetic,
+                    b.final_kinetic,
+                    b.dashpot,
+                    b.contact,
+                    b.spring,
+                    e.relative_residual,
+                ]
+            }),
+            warnings: rep.warnings.clone(),
+        }
+    }
 }
 
 const MEASURED_KEYS: [&str; 4] = ["v0", "cor", "max_force", "contact_time"];
@@ -95,23 +134,26 @@ const ENERGY_KEYS: [&str; 6] = [
 const HISTORY_KEYS: [&str; 4] = ["t", "force", "indentation", "displacement"];
 
 impl Impact {
-    /// The library's report of the run (`bouncelab run --format json`), as Python values.
+    /// The library's report of the run (`bouncelab run --format json`), as Python values;
+    /// without its audit, the caller keeps the ball in it for [`Impact::audit`].
     fn new(
         py: Python<'_>,
-        b: &Ball,
-        r: &ImpactResponse,
-        history: bool,
+        ball: &Ball,
+        rep: &ImpactReport<'_>,
         intervals: Option<Intervals>,
+        audit: Option<Audit>,
     ) -> Impact {
-        let rep = ImpactReport::new(b, r, history);
         let series = |s: Option<&[f64]>| s.map(|v| array(py, v.to_vec()));
         let h = [rep.t, rep.force, rep.indentation, rep.displacement].map(series);
         Impact {
             preset: rep.ball.preset.map(String::from),
-            origin: rep.ball.origin.to_string(),
-            parameters: b.source.into(),
-            law: rep.ball.law.into(),
-            method: rep.method.name().into(),
+            origin: match rep.ball.origin {
+                "embedded" => Cow::Borrowed("embedded"),
+                other => Cow::Owned(other.to_string()),
+            },
+            parameters: Cow::Borrowed(ball.source),
+            law: Cow::Borrowed(rep.ball.law),
+            method: Cow::Borrowed(rep.method.name()),
             mass: rep.mass,
             k_p: rep.k_p,
             k_r: rep.k_r,
@@ -135,24 +177,32 @@ impl Impact {
             measured: rep
                 .measured
                 .map(|m| [Some(m.v0), m.cor, m.max_force, m.contact_time]),
-            energy: rep.energy.map(|e| {
-                let b = e.budget;
-                [
-                    b.initial_kinetic,
-                    b.final_kinetic,
-                    b.dashpot,
-                    b.contact,
-                    b.spring,
-                    e.relative_residual,
-                ]
-            }),
             history: match h {
                 [Some(t), Some(f), Some(z), Some(a)] => Some([t, f, z, a]),
                 _ => None,
             },
-            warnings: rep.warnings,
             intervals,
+            audit: audit.map_or_else(OnceLock::new, OnceLock::from),
+            ball: None,
         }
+    }
+
+    /// The energy budget and the warnings: `bouncelab run`'s, from the exact solver's run of
+    /// the kept ball with its audit the first time they are read (the GIL released while it
+    /// runs, and not held by a lock meanwhile: two threads may both run it, and the first to
+    /// finish keeps its answer, the same numbers).
+    pub(crate) fn audit(&self, py: Python<'_>) -> PyResult<&Audit> {
+        if let Some(a) = self.audit.get() {
+            return Ok(a);
+        }
+        let Some(ball) = self.ball.as_ref() else {
+            unreachable!("an impact without its audit keeps its ball")
+        };
+        let r = py.detach(|| ball.impact()).map_err(error)?;
+        let _ = self
+            .audit
+            .set(Audit::of(&ImpactReport::new(ball, &r, false)));
+        Ok(self.audit.get().expect("set above, or by another thread"))
     }
 
     fn series(&self, py: Python<'_>, i: usize) -> Option<Py<PyArray1<f64>>> {
@@ -223,7 +273,7 @@ impl Impact {
     /// relative_residual.
     #[getter]
     fn energy<'py>(&self, py: Python<'py>) -> PyResult<Option<Bound<'py, PyDict>>> {
-        let Some(e) = self.energy else {
+        let Some(e) = self.audit(py)?.energy else {
             return Ok(None);
         };
         let d = PyDict::new(py);
@@ -231,6 +281,13 @@ impl Impact {
             d.set_item(k, v)?;
         }
         Ok(Some(d))
+    }
+
+    /// What the caller should know about this answer (the JSON's `warnings`): an
+    /// indentation beyond the ball's radius, an energy balance that does not close.
+    #[getter]
+    fn warnings(&self, py: Python<'_>) -> PyResult<Vec<String>> {
+        Ok(self.audit(py)?.warnings.clone())
     }
 
     /// Everything as a dict with the keys of `bouncelab run --format json` (`lambda`, not
@@ -270,7 +327,7 @@ impl Impact {
         d.set_item("contact_time_normalized", self.contact_time_normalized)?;
         d.set_item("measured", self.measured(py)?)?;
         d.set_item("energy", self.energy(py)?)?;
-        d.set_item("warnings", self.warnings.clone())?;
+        d.set_item("warnings", self.warnings(py)?)?;
         if self.intervals.is_some() {
             d.set_item("cor_ci95", self.cor_ci95())?;
             d.set_item("max_force_ci95", self.max_force_ci95())?;
@@ -304,8 +361,8 @@ impl Impact {
 
     /// Equal values: every attribute, the history arrays element by element (a NaN equals a
     /// NaN, so that a copy equals its original).
-    fn __eq__(&self, other: PyRef<'_, Impact>) -> bool {
-        state::same(self, &other)
+    fn __eq__(&self, py: Python<'_>, other: PyRef<'_, Impact>) -> PyResult<bool> {
+        Ok(state::same(self, self.audit(py)?, &other, other.audit(py)?))
     }
 
     fn __repr__(&self) -> String {
@@ -326,27 +383,6 @@ impl Impact {
             if self.rebound { "True" } else { "False" }
         )
     }
-}
-
-/// One impact of `ball`, its history sampled `samples` times when asked for; the GIL released
-/// while it runs.
-pub(crate) fn impact(
-    py: Python<'_>,
-    ball: Ball,
-    history: bool,
-    samples: usize,
-) -> PyResult<Impact> {
-    let (r, intervals) = py
-        .detach(|| {
-            let r = if history {
-                ball.impact_history(samples)
-            } else {
-                ball.impact()
-            }?;
-            Ok::<_, bouncelab::BallError>((r, ball.intervals().transpose()?))
-        })
-        .map_err(error)?;
-    Ok(Impact::new(py, &ball, &r, history, intervals))
 }
 
 /// `NAME_ci95_lo` and `NAME_ci95_hi` arrays in `d`, one entry per row of `bands`.

@@ -2,13 +2,14 @@
 //! [`Impact::to_dict`] (the keys of `bouncelab run --format json`, the history arrays when
 //! there are any), so a pickle holds plain Python values and numpy arrays only.
 
-use super::{ENERGY_KEYS, HISTORY_KEYS, Impact, MEASURED_KEYS};
+use super::{Audit, ENERGY_KEYS, HISTORY_KEYS, Impact, MEASURED_KEYS};
 use crate::array;
 use bouncelab::api::Intervals;
 use numpy::{PyArray1, PyArrayMethods, PyReadonlyArray1};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
+use std::borrow::Cow;
 
 /// `d[key]`, extracted; a missing key is an error naming it.
 fn get<'py, T: FromPyObjectOwned<'py>>(d: &Bound<'py, PyDict>, key: &str) -> PyResult<T> {
@@ -56,10 +57,10 @@ pub(super) fn from_state(d: &Bound<'_, PyDict>) -> PyResult<Impact> {
     }
     Ok(Impact {
         preset: get(d, "preset")?,
-        origin: get(d, "origin")?,
-        parameters: get(d, "parameters")?,
-        law: get(d, "law")?,
-        method: get(d, "method")?,
+        origin: Cow::Owned(get(d, "origin")?),
+        parameters: Cow::Owned(get(d, "parameters")?),
+        law: Cow::Owned(get(d, "law")?),
+        method: Cow::Owned(get(d, "method")?),
         mass: get(d, "mass")?,
         k_p: get(d, "k_p")?,
         k_r: get(d, "k_r")?,
@@ -81,10 +82,14 @@ pub(super) fn from_state(d: &Bound<'_, PyDict>) -> PyResult<Impact> {
         max_force_normalized: get(d, "max_force_normalized")?,
         contact_time_normalized: get(d, "contact_time_normalized")?,
         measured,
-        energy,
         history: history.try_into().ok(),
-        warnings: get(d, "warnings")?,
         intervals,
+        audit: Audit {
+            energy,
+            warnings: get(d, "warnings")?,
+        }
+        .into(),
+        ball: None,
     })
 }
 
@@ -112,8 +117,8 @@ fn series(py: Python<'_>, h: &Option<[Py<PyArray1<f64>>; 4]>) -> Vec<Vec<f64>> {
         .collect()
 }
 
-/// Whether two impacts hold the same values.
-pub(super) fn same(a: &Impact, b: &Impact) -> bool {
+/// Whether two impacts, with their audits, hold the same values.
+pub(super) fn same(a: &Impact, a_audit: &Audit, b: &Impact, b_audit: &Audit) -> bool {
     let numbers = |i: &Impact| {
         [
             i.mass,
@@ -152,7 +157,6 @@ pub(super) fn same(a: &Impact, b: &Impact) -> bool {
             i.law.clone(),
             i.method.clone(),
             i.rebound,
-            i.warnings.clone(),
             i.measured.is_some(),
         )
     };
@@ -167,16 +171,17 @@ pub(super) fn same(a: &Impact, b: &Impact) -> bool {
         x.len() == y.len() && x.iter().zip(&y).all(|(p, q)| eq_all(p, q))
     });
     words(a) == words(b)
+        && a_audit.warnings == b_audit.warnings
         && eq_all(&numbers(a), &numbers(b))
         && optional(a)
             .iter()
             .zip(optional(b))
             .all(|(x, y)| eq_opt(*x, y))
         && eq_all(
-            &a.energy.unwrap_or([f64::NAN; 6]),
-            &b.energy.unwrap_or([f64::NAN; 6]),
+            &a_audit.energy.unwrap_or([f64::NAN; 6]),
+            &b_audit.energy.unwrap_or([f64::NAN; 6]),
         )
-        && a.energy.is_some() == b.energy.is_some()
+        && a_audit.energy.is_some() == b_audit.energy.is_some()
         && match (bands(a), bands(b)) {
             (Some(x), Some(y)) => eq_all(&x, &y),
             (x, y) => x.is_none() && y.is_none(),

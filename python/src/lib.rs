@@ -7,7 +7,7 @@
 
 use bouncelab::analysis::fit::Fit;
 use bouncelab::api::{self, FitReport};
-use bouncelab::catalog::{self, Catalog, Entry, Origin};
+use bouncelab::catalog::{Catalog, Entry, Origin};
 use bouncelab::model::params::ImpactParams;
 use bouncelab::preset::ParamSource;
 use bouncelab::{Ball, BallError, ContactLaw};
@@ -85,14 +85,11 @@ fn source(name: &str) -> PyResult<ParamSource> {
 /// (`$XDG_CONFIG_HOME/bouncelab/presets`).
 fn load_catalog() -> PyResult<std::sync::Arc<Catalog>> {
     // kept between calls while the folder is unchanged (catalog_cache.rs)
-    catalog_cache::catalog(catalog::user_presets_dir().as_deref())
-        .map_err(|e| error(BallError::Catalog(e)))
+    catalog_cache::user_catalog().map_err(|e| error(BallError::Catalog(e)))
 }
 
-fn entry(cat: &Catalog, name: &str) -> PyResult<Entry> {
-    cat.get(name)
-        .cloned()
-        .map_err(|e| error(BallError::Catalog(e)))
+fn entry<'c>(cat: &'c Catalog, name: &str) -> PyResult<&'c Entry> {
+    cat.get(name).map_err(|e| error(BallError::Catalog(e)))
 }
 
 /// A preset ball with the command line's `--params`, `--law`, `--v0` applied.
@@ -106,7 +103,7 @@ fn preset_ball(
     let entry = entry(&cat, preset)?;
     let params = params.map(source).transpose()?;
     let law_ = law_name.map(law).transpose()?;
-    Ball::from_entry(&entry, params, law_, v0).map_err(error)
+    Ball::from_entry(entry, params, law_, v0).map_err(error)
 }
 
 /// A list of floats from a numpy array, a sequence, or one number.

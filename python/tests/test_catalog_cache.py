@@ -2,6 +2,8 @@
 every preset), yet a user preset added, edited or removed is seen at the next call, as the
 command line sees it."""
 
+import os
+import sys
 from pathlib import Path
 
 import pytest
@@ -30,3 +32,75 @@ def test_a_preset_added_edited_and_removed_is_seen(tmp_path, monkeypatch):
     path.unlink()
     with pytest.raises(ValueError, match="unknown preset 'mine'"):
         bouncelab.run(preset="mine")
+
+
+def mine(k_r="7.08e4"):
+    return SUPERBALL.replace('name = "superball"', 'name = "mine"').replace("k_r = 7.08e4", f"k_r = {k_r}")
+
+
+def test_a_folder_made_after_the_first_call_is_seen(tmp_path, monkeypatch):
+    monkeypatch.setenv("XDG_CONFIG_HOME", str(tmp_path / "config"))
+    with pytest.raises(ValueError, match="unknown preset 'mine'"):
+        bouncelab.run(preset="mine")
+    bouncelab.run(preset="golf")  # from the cache, the folder still missing
+    folder = tmp_path / "config" / "bouncelab" / "presets"
+    folder.mkdir(parents=True)
+    (folder / "mine.toml").write_text(mine())
+    assert bouncelab.run(preset="mine").k_r == 7.08e4
+
+
+linux_only = pytest.mark.skipif(
+    not sys.platform.startswith("linux"), reason="the inotify watch is Linux's"
+)
+
+
+@linux_only
+def test_an_edit_that_keeps_size_and_time_is_seen(tmp_path, monkeypatch):
+    # the stamp (name, size, modification time) cannot tell this edit; the watch does
+    monkeypatch.setenv("XDG_CONFIG_HOME", str(tmp_path))
+    folder = tmp_path / "bouncelab" / "presets"
+    folder.mkdir(parents=True)
+    path = folder / "mine.toml"
+    path.write_text(mine("7.08e4"))
+    assert bouncelab.run(preset="mine").k_r == 7.08e4
+    before = path.stat()
+    path.write_text(mine("9.08e4"))
+    os.utime(path, ns=(before.st_atime_ns, before.st_mtime_ns))
+    assert path.stat().st_size == before.st_size
+    assert bouncelab.run(preset="mine").k_r == 9.08e4
+
+
+def test_a_linked_preset_edited_at_its_target_is_seen(tmp_path, monkeypatch):
+    # a link's target lies in a folder nobody watches: the stamp is taken at each call
+    monkeypatch.setenv("XDG_CONFIG_HOME", str(tmp_path / "config"))
+    folder = tmp_path / "config" / "bouncelab" / "presets"
+    folder.mkdir(parents=True)
+    target = tmp_path / "elsewhere.toml"
+    target.write_text(mine("7.08e4"))
+    (folder / "mine.toml").symlink_to(target)
+    assert bouncelab.run(preset="mine").k_r == 7.08e4
+    target.write_text(mine("1.5e5"))
+    assert bouncelab.run(preset="mine").k_r == 1.5e5
+
+
+@linux_only
+def test_a_forked_child_does_not_take_its_parents_news(tmp_path, monkeypatch):
+    # parent and child share an inotify instance after a fork: a child reading it would take
+    # the event the parent needs
+    monkeypatch.setenv("XDG_CONFIG_HOME", str(tmp_path))
+    folder = tmp_path / "bouncelab" / "presets"
+    folder.mkdir(parents=True)
+    path = folder / "mine.toml"
+    path.write_text(mine("7.08e4"))
+    assert bouncelab.run(preset="mine").k_r == 7.08e4
+    pid = os.fork()
+    if pid == 0:  # the child: edit, then read
+        code = 1
+        try:
+            path.write_text(mine("9e4"))
+            code = 0 if bouncelab.run(preset="mine").k_r == 9e4 else 2
+        finally:
+            os._exit(code)
+    _, status = os.waitpid(pid, 0)
+    assert os.waitstatus_to_exitcode(status) == 0
+    assert bouncelab.run(preset="mine").k_r == 9e4

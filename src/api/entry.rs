@@ -104,7 +104,15 @@ impl Ball {
         v0: Option<f64>,
         overrides: &Overrides,
     ) -> Result<Ball, BallError> {
-        let p = &overrides.sized(&entry.preset)?;
+        // the preset itself unless a mass or radius replaces its measured one: a clone of its
+        // strings and tables costs Python's `run` more than its closed form (BENCHMARKS.md)
+        let resized;
+        let p = if overrides.mass.is_some() || overrides.radius.is_some() {
+            resized = overrides.sized(&entry.preset)?;
+            &resized
+        } else {
+            &entry.preset
+        };
         let source = source.unwrap_or(p.parameters);
         let mut params = p.params_from(source);
         if let Some(v0) = v0 {

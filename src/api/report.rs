@@ -3,7 +3,7 @@
 //! `bouncelab fit --cor E --format json` a [`FitReport`]. The command line writes them; the
 //! Python package turns the same structs into its objects and dicts, so the two cannot drift.
 
-use super::Ball;
+use super::{Ball, ImpactSummary};
 use crate::analysis::fit::Fit;
 use crate::solver::{EnergyBudget, ImpactResponse, Method};
 use serde::Serialize;
@@ -135,12 +135,31 @@ pub struct ImpactReport<'a> {
 impl<'a> ImpactReport<'a> {
     /// The report of `r`, the impact of `ball`; the history arrays only when `history`.
     pub fn new(ball: &'a Ball, r: &'a ImpactResponse, history: bool) -> ImpactReport<'a> {
-        let p = &ball.params;
-        let n = &r.normalized;
         let h = |v: &'a Vec<f64>| history.then_some(v.as_slice());
         ImpactReport {
+            energy: r.energy.map(|budget| Energy {
+                budget,
+                relative_residual: budget.relative_residual(),
+            }),
+            warnings: ball.warnings(r),
+            t: h(&r.history.t),
+            force: h(&r.history.force),
+            indentation: h(&r.history.indentation),
+            displacement: h(&r.history.displacement),
+            ..ImpactReport::of_summary(ball, &ImpactSummary::from(r))
+        }
+    }
+
+    /// The report of an impact of `ball` known by its summary `s`, without what the summary
+    /// does not hold: no energy budget, no warnings (one of them reads the budget), no
+    /// history. Python's `run` fills the budget and the warnings in from [`ImpactReport::new`]
+    /// on their first read (docs/python.md).
+    pub fn of_summary(ball: &'a Ball, s: &ImpactSummary) -> ImpactReport<'a> {
+        let p = &ball.params;
+        let n = &s.normalized;
+        ImpactReport {
             ball: ball.header(),
-            method: r.method,
+            method: s.method,
             mass: p.mass,
             k_p: p.k_p,
             k_r: p.k_r,
@@ -153,30 +172,27 @@ impl<'a> ImpactReport<'a> {
             lambda: n.lambda,
             zeta: n.zeta,
             zp_bar: n.zp_bar,
-            cor: r.cor,
-            rebound: r.rebound,
-            max_force: r.max_force,
-            contact_time: r.contact_time,
-            max_indentation: r.max_indentation,
-            permanent_indentation: r.permanent_indentation,
-            max_force_normalized: r.max_force_normalized,
-            contact_time_normalized: r.contact_time_normalized,
+            cor: s.cor,
+            rebound: s.rebound,
+            max_force: s.max_force,
+            contact_time: s.contact_time,
+            max_indentation: s.max_indentation,
+            permanent_indentation: s.permanent_indentation,
+            max_force_normalized: s.max_force_normalized,
+            contact_time_normalized: s.contact_time_normalized,
             measured: ball.measured.as_ref().map(|m| MeasuredAt {
                 v0: m.v0,
                 cor: m.cor,
                 max_force: m.max_force,
                 contact_time: m.contact_time,
             }),
-            energy: r.energy.map(|budget| Energy {
-                budget,
-                relative_residual: budget.relative_residual(),
-            }),
-            warnings: ball.warnings(r),
+            energy: None,
+            warnings: Vec::new(),
             intervals: None,
-            t: h(&r.history.t),
-            force: h(&r.history.force),
-            indentation: h(&r.history.indentation),
-            displacement: h(&r.history.displacement),
+            t: None,
+            force: None,
+            indentation: None,
+            displacement: None,
         }
     }
 }

@@ -1,0 +1,55 @@
+//! One impact's run for `run`, `run_params` and `run_normalized`: the closed forms where they
+//! answer, the audit left to its first read ([`Impact::audit`]); else the solver with its
+//! audit (docs/python.md).
+
+use super::{Audit, Impact};
+use crate::error;
+use bouncelab::Ball;
+use bouncelab::api::{ImpactReport, Intervals};
+use pyo3::prelude::*;
+
+/// One impact of `ball`, its history sampled `samples` times when asked for. On the linear
+/// law without a history, the closed forms where they answer (under a µs: the GIL kept) and
+/// the audit left to the first read; else the solver with its audit, the GIL released while
+/// it runs.
+pub(crate) fn impact(
+    py: Python<'_>,
+    ball: Ball,
+    history: bool,
+    samples: usize,
+) -> PyResult<Impact> {
+    if !history && let Some(s) = ball.closed_form_summary() {
+        let intervals = fitted_intervals(py, &ball)?;
+        let rep = ImpactReport::of_summary(&ball, &s);
+        let mut impact = Impact::new(py, &ball, &rep, intervals, None);
+        impact.ball = Some(ball);
+        return Ok(impact);
+    }
+    let (r, intervals) = py
+        .detach(|| {
+            let r = if history {
+                ball.impact_history(samples)
+            } else {
+                ball.impact()
+            }?;
+            Ok::<_, bouncelab::BallError>((r, ball.intervals().transpose()?))
+        })
+        .map_err(error)?;
+    let rep = ImpactReport::new(&ball, &r, history);
+    Ok(Impact::new(
+        py,
+        &ball,
+        &rep,
+        intervals,
+        Some(Audit::of(&rep)),
+    ))
+}
+
+/// The 95 % intervals of a fitted preset's impact (several solver runs: the GIL released),
+/// `None` for any other ball.
+fn fitted_intervals(py: Python<'_>, ball: &Ball) -> PyResult<Option<Intervals>> {
+    if ball.fit.is_none() {
+        return Ok(None);
+    }
+    py.detach(|| ball.intervals().transpose()).map_err(error)
+}
