@@ -158,3 +158,36 @@ fn table_hertz_summary(b: divan::Bencher, case: usize) {
             .cor
     });
 }
+
+/// The elastic–plastic balls of `CASES` 0 and 1: the superball at its measured speed (its
+/// Hertz impact turns below yield: the Hertz table answers, `taylor::plastic`) and at 3× it
+/// (past yield: the Taylor steps).
+fn elastic_plastic_ball(case: usize) -> ImpactParams {
+    CASES[case].1
+}
+
+/// An elastic–plastic summary through `solver::table::summary`, as the map's cells take it
+/// (issue 30 item 1: target ≤ 1 µs), against `elastic_plastic_taylor` (the path before) in the
+/// same run. The table is read before timing.
+#[divan::bench(args = [0, 1])]
+fn elastic_plastic_summary(b: divan::Bencher, case: usize) {
+    let p = elastic_plastic_ball(case);
+    let law = ContactLaw::ElasticPlastic;
+    assert!(bouncelab::solver::table::summary(&p.normalized(), law).is_some());
+    b.bench(|| {
+        bouncelab::solver::table::summary(&black_box(p).normalized(), law)
+            .unwrap()
+            .cor
+    });
+}
+
+/// The same balls on the Taylor steps alone (`solver::taylor::summary`: every elastic–plastic
+/// cell before `taylor::plastic`).
+#[divan::bench(args = [0, 1])]
+fn elastic_plastic_taylor(case: usize) -> f64 {
+    let p = elastic_plastic_ball(case);
+    let n = black_box(p).normalized();
+    bouncelab::solver::taylor::summary(&n, ContactLaw::ElasticPlastic)
+        .unwrap()
+        .cor
+}

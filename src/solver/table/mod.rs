@@ -210,11 +210,17 @@ pub fn hertz(n: &Normalized) -> Option<Summary> {
     })
 }
 
-/// The fast summary of one impact: the table under the Hertz law where it answers, else the
-/// Taylor steps ([`taylor::summary`]: `None` where the adaptive solver must run).
+/// The fast summary of one impact: the table under the Hertz law where it answers, and
+/// under the elastic–plastic law where its Hertz impact stays below yield
+/// ([`taylor::plastic::below_yield`]); else the Taylor steps ([`taylor::summary`]: `None`
+/// where the adaptive solver must run).
 pub fn summary(n: &Normalized, law: ContactLaw) -> Option<Summary> {
-    let tabulated = (law == ContactLaw::Hertz && n.zp_bar > 0.0)
-        .then(|| hertz(n))
-        .flatten();
+    let tabulated = match law {
+        ContactLaw::Hertz if n.zp_bar > 0.0 => hertz(n),
+        ContactLaw::ElasticPlastic if n.zp_bar > 0.0 => {
+            hertz(n).and_then(|h| taylor::plastic::below_yield(n, h))
+        }
+        _ => None,
+    };
     tabulated.or_else(|| taylor::summary(n, law))
 }

@@ -22,6 +22,7 @@
 //! tests/taylor.rs holds the answers to the adaptive solver's over the property tests' domain.
 
 mod linear;
+pub mod plastic;
 mod poly;
 mod power;
 
