@@ -10,6 +10,8 @@
 //!                                                                   degree N, from (U, W)
 //! cargo run --release --example gen_hertz_table -- --line U0 W0 U1 W1 N  the reference
 //!                                                   at N + 1 points of a segment
+//! cargo run --release --example gen_hertz_table -- --calls N   N table impacts of the
+//!                     superball (Hertz), for callgrind: (cost of N + 200 − cost of N) / 200
 //! ```
 
 use bouncelab::solver::table::{self, GRID, Grid, OUTPUTS, Patch, cheb};
@@ -129,6 +131,9 @@ fn main() {
     if args.first().map(String::as_str) == Some("--line") {
         return line(&args[1..]);
     }
+    if args.first().map(String::as_str) == Some("--calls") {
+        return calls(&args[1..]);
+    }
     let out = args
         .first()
         .cloned()
@@ -198,4 +203,21 @@ fn worst(grid: &Grid, values: &[f64]) {
         "worst {:.3e} output {} at log λ̂ {:.4} log ζ̂ {:.4}",
         w.0, w.1, w.2, w.3
     );
+}
+
+/// `--calls N`: N impacts of the superball's adopted set through `table::hertz` (each from its
+/// SI parameters, as the bench `table_hertz_summary` times them), the table read first: under
+/// `valgrind --tool=callgrind` the difference of two counts over the difference of the calls
+/// is one impact's instructions (BENCHMARKS.md).
+fn calls(args: &[String]) {
+    let n: usize = args[0].parse().expect("a count");
+    let p = bouncelab::preset::Preset::embedded()[0].params();
+    assert!(table::hertz(&p.normalized()).is_some());
+    let mut sum = 0.0;
+    for _ in 0..n {
+        sum += table::hertz(&std::hint::black_box(p).normalized())
+            .expect("the superball is in a kept patch")
+            .cor;
+    }
+    println!("{n} calls, Σe = {sum}");
 }
