@@ -293,6 +293,13 @@ fn errors(args: &[String]) {
             table::reference(l, z).map_or(f64::INFINITY, |r| table::error(&t, &r))
         })
         .collect();
+    let measured = |x: f64| patches.iter().filter(|p| p.error <= x).count();
+    println!(
+        "patches measured within 1e-12: {}, 1e-11: {}, 1e-10 (kept): {}",
+        measured(1e-12),
+        measured(1e-11),
+        measured(1e-10)
+    );
     e.sort_by(f64::total_cmp);
     let q = |f: f64| e[((n - 1) as f64 * f) as usize];
     let under = |x: f64| e.iter().filter(|&&d| d <= x).count();
