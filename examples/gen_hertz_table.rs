@@ -256,7 +256,7 @@ fn coverage() {
         "normalized Hertz map 60 × 200: table {}, Taylor steps {}, adaptive {}",
         count[0], count[1], count[2]
     );
-    for preset in bouncelab::preset::Preset::embedded() {
+    for preset in bouncelab::preset::Preset::embedded_all() {
         let n = preset.params().normalized();
         let l = n.kappa.powf(-0.4);
         println!(

@@ -181,7 +181,7 @@ mod tests {
     #[test]
     fn the_transform_keeps_its_bits() {
         let n = 14;
-        let mut state = 0x0d0c_7_u64;
+        let mut state = 0x000d_0c07_u64;
         let f: Vec<f64> = (0..(n + 1) * (n + 1))
             .map(|_| {
                 state ^= state << 13;
