@@ -10,6 +10,12 @@
 //!                                                                   degree N, from (U, W)
 //! cargo run --release --example gen_hertz_table -- --line U0 W0 U1 W1 N  the reference
 //!                                                   at N + 1 points of a segment
+//! cargo run --release --example gen_hertz_table -- --calls N   N table impacts of the
+//!                     superball (Hertz), for callgrind: (cost of N + 200 − cost of N) / 200
+//! cargo run --release --example gen_hertz_table -- --coverage   which path answers the cells
+//!                     of the normalized Hertz map (λ, ζ = 0.01 … 100) and the presets
+//! cargo run --release --example gen_hertz_table -- --errors N   the table against the
+//!                     reference at N seeded points of the kept patches: the distribution
 //! ```
 
 use bouncelab::solver::table::{self, GRID, Grid, OUTPUTS, Patch, cheb};
@@ -129,6 +135,12 @@ fn main() {
     if args.first().map(String::as_str) == Some("--line") {
         return line(&args[1..]);
     }
+    match args.first().map(String::as_str) {
+        Some("--calls") => return calls(&args[1..]),
+        Some("--coverage") => return coverage(),
+        Some("--errors") => return errors(&args[1..]),
+        _ => {}
+    }
     let out = args
         .first()
         .cloned()
@@ -197,5 +209,107 @@ fn worst(grid: &Grid, values: &[f64]) {
     println!(
         "worst {:.3e} output {} at log λ̂ {:.4} log ζ̂ {:.4}",
         w.0, w.1, w.2, w.3
+    );
+}
+
+/// `--calls N`: N impacts of the superball's adopted set through `table::hertz` (each from its
+/// SI parameters, as the bench `table_hertz_summary` times them), the table read first: under
+/// `valgrind --tool=callgrind` the difference of two counts over the difference of the calls
+/// is one impact's instructions (BENCHMARKS.md).
+fn calls(args: &[String]) {
+    let n: usize = args[0].parse().expect("a count");
+    let p = bouncelab::preset::Preset::embedded()[0].params();
+    assert!(table::hertz(&p.normalized()).is_some());
+    let mut sum = 0.0;
+    for _ in 0..n {
+        sum += table::hertz(&std::hint::black_box(p).normalized())
+            .expect("the superball is in a kept patch")
+            .cor;
+    }
+    println!("{n} calls, Σe = {sum}");
+}
+
+/// Which path answers a Hertz impact: 0 the table, 1 the Taylor steps, 2 the adaptive solver.
+fn path(n: &bouncelab::Normalized) -> usize {
+    if table::hertz(n).is_some() {
+        0
+    } else if bouncelab::solver::taylor::summary(n, bouncelab::ContactLaw::Hertz).is_some() {
+        1
+    } else {
+        2
+    }
+}
+
+/// `--coverage`: the cells of `benches/map.rs`'s normalized Hertz map (60 λ × 200 ζ, log-spaced
+/// over 0.01 … 100, κ = 2/3) and each preset's Hertz impact, by the path that answers them.
+fn coverage() {
+    let log = |i: usize, n: usize| 10f64.powf(-2.0 + 4.0 * i as f64 / (n - 1) as f64);
+    let mut count = [0usize; 3];
+    for i in 0..60 {
+        for j in 0..200 {
+            let p =
+                bouncelab::ImpactParams::from_normalized(log(i, 60), log(j, 200), f64::INFINITY);
+            count[path(&p.normalized())] += 1;
+        }
+    }
+    println!(
+        "normalized Hertz map 60 × 200: table {}, Taylor steps {}, adaptive {}",
+        count[0], count[1], count[2]
+    );
+    for preset in bouncelab::preset::Preset::embedded_all() {
+        let n = preset.params().normalized();
+        let l = n.kappa.powf(-0.4);
+        println!(
+            "{:>12}: λ̂ {:.3e} ζ̂ {:.3e}: {}",
+            preset.name,
+            n.lambda * l * l,
+            n.zeta / l,
+            ["table", "Taylor steps", "adaptive"][path(&n)]
+        );
+    }
+}
+
+/// `--errors N`: `table::error` at N seeded points, log-uniform inside kept patches chosen
+/// at random (tests/hertz_table.rs's draw), as quantiles.
+fn errors(args: &[String]) {
+    let n: usize = args[0].parse().expect("a count");
+    let (_, patches) = table::stored().expect("the table reads");
+    let kept: Vec<usize> = (0..patches.len())
+        .filter(|&i| patches[i].values.is_some())
+        .collect();
+    let mut state = 0x7ab1_e001_u64;
+    let mut u = move || {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        (state >> 11) as f64 / (1u64 << 53) as f64
+    };
+    let mut e: Vec<f64> = (0..n)
+        .map(|_| {
+            let patch = kept[(u() * kept.len() as f64) as usize];
+            let (iu, iw) = (patch / GRID.nw, patch % GRID.nw);
+            let (l, z) = GRID.point(iu, iw, 2.0 * u() - 1.0, 2.0 * u() - 1.0);
+            let t = table::hertz_hat(l, z).expect("a kept patch answers");
+            table::reference(l, z).map_or(f64::INFINITY, |r| table::error(&t, &r))
+        })
+        .collect();
+    let measured = |x: f64| patches.iter().filter(|p| p.error <= x).count();
+    println!(
+        "patches measured within 1e-12: {}, 1e-11: {}, 1e-10 (kept): {}",
+        measured(1e-12),
+        measured(1e-11),
+        measured(1e-10)
+    );
+    e.sort_by(f64::total_cmp);
+    let q = |f: f64| e[((n - 1) as f64 * f) as usize];
+    let under = |x: f64| e.iter().filter(|&&d| d <= x).count();
+    println!(
+        "{n} points: median {:.2e}, 90 % {:.2e}, 99 % {:.2e}, max {:.2e}; ≤ 1e-12: {}, ≤ 1e-11: {}",
+        q(0.5),
+        q(0.9),
+        q(0.99),
+        q(1.0),
+        under(1e-12),
+        under(1e-11)
     );
 }

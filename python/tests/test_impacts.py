@@ -9,7 +9,7 @@ import bouncelab
 KEYS = ["cor", "max_force", "contact_time", "max_indentation", "permanent_indentation"]
 
 
-def same_as_run_params(out, index, **kw):
+def same_as_run_params(out, index, rel=1e-12, **kw):
     r = bouncelab.run_params(**kw)
     for k in KEYS:
         want = getattr(r, k)
@@ -17,7 +17,7 @@ def same_as_run_params(out, index, **kw):
         if want is None:  # no rebound: no contact time
             assert np.isnan(got), (k, index)
         else:
-            assert got == pytest.approx(want, rel=1e-12, abs=1e-300), (k, index, kw)
+            assert got == pytest.approx(want, rel=rel, abs=1e-300), (k, index, kw)
     assert bool(out["rebound"][index]) == r.rebound
 
 
@@ -43,12 +43,16 @@ def test_scalars_give_zero_dimensional_arrays():
 
 
 def test_every_law_and_flattening_agree_with_run_params():
+    """Hertz rows come from the Hertz table (docs/numerics.md): within 1e-10 of its reference
+    and 1e-9 of `run`'s adaptive solver (not stiff here), not `run`'s bits; the other laws'
+    rows are `run`'s answers to 1e-12."""
     v0 = np.linspace(0.5, 30.0, 7)
     for law in ["linear", "hertz", "elastic-plastic"]:
         out = bouncelab.impacts(m=0.0456, k_p=5.6e5, c=1200.0, k_r=5.6e5, v0=v0, z_p=3e-3, law=law)
+        rel = 1e-9 if law == "hertz" else 1e-12
         for i, v in enumerate(v0):
             same_as_run_params(
-                out, i, m=0.0456, k_p=5.6e5, c=1200.0, k_r=5.6e5, v0=v, z_p=3e-3, law=law
+                out, i, rel, m=0.0456, k_p=5.6e5, c=1200.0, k_r=5.6e5, v0=v, z_p=3e-3, law=law
             )
     # the fast speeds flatten the golf ball: some permanent indentation
     assert (out["permanent_indentation"] > 0).any()

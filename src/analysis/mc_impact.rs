@@ -76,22 +76,10 @@ pub fn impacts(
     })
 }
 
-/// An impact the lanes do not answer: on the linear law (a flattening ball) the flattening
-/// closed form where it answers (`map::fast::flattening`, tests/map_flatten.rs), else the
-/// Taylor steps within their domain (both to 1e-12 of the exact solver, tests/taylor.rs);
-/// the other laws keep `run`'s solver, whose answers they must equal to 1e-12 (`other_laws_run_the_solver`), which
-/// the Taylor steps hold only to 1e-9.
+/// An impact the lanes do not answer: its fast path where one answers (`fast_one`), SI by
+/// F = F̄ m v0 ω0 and t = τ/ω0, else `run`'s solver.
 fn one_by_one(p: &ImpactParams, law: ContactLaw) -> Result<Outcome, SolveError> {
-    let n = p.normalized();
-    if law == ContactLaw::Linear
-        && let Some(s) = crate::map::fast::flattening(n.lambda, n.zeta, n.zp_bar).or_else(|| {
-            crate::solver::taylor::summary(&n, law).map(|t| Summary {
-                cor: t.cor,
-                max_force: t.max_force,
-                contact_time: t.contact_time,
-            })
-        })
-    {
+    if let Some(s) = fast_one(p, law) {
         let w0 = p.omega0();
         return Ok(Outcome {
             cor: s.cor,
@@ -104,4 +92,30 @@ fn one_by_one(p: &ImpactParams, law: ContactLaw) -> Result<Outcome, SolveError> 
         max_force: r.max_force,
         contact_time: r.contact_time.unwrap_or(f64::NAN),
     })
+}
+
+/// The normalized summary of an impact the lanes do not answer, `None` where `run`'s solver
+/// must: on the linear law (a flattening ball) the flattening closed form where it answers
+/// (`map::fast::flattening`, tests/map_flatten.rs), else the Taylor steps within their
+/// domain (both to 1e-12 of the exact solver, tests/taylor.rs); under the Hertz law the Hertz
+/// table, else the Taylor steps (`solver::table::summary`: within 1e-9 of their reference,
+/// the Taylor steps without step limit, and of the adaptive solver at its stated precision,
+/// docs/numerics.md; `hertz_samples_take_the_table`); the elastic–plastic law keeps `run`'s
+/// solver.
+fn fast_one(p: &ImpactParams, law: ContactLaw) -> Option<Summary> {
+    let n = p.normalized();
+    let short = |t: crate::solver::taylor::Summary| Summary {
+        cor: t.cor,
+        max_force: t.max_force,
+        contact_time: t.contact_time,
+    };
+    match law {
+        ContactLaw::Linear => crate::map::fast::flattening(n.lambda, n.zeta, n.zp_bar)
+            .or_else(|| crate::solver::taylor::summary(&n, law).map(short)),
+        // e > 0: a ball that leaves (the table and the steps answer only where it does)
+        ContactLaw::Hertz => crate::solver::table::summary(&n, law)
+            .filter(|t| t.cor > 0.0)
+            .map(short),
+        ContactLaw::ElasticPlastic => None,
+    }
 }

@@ -206,14 +206,43 @@ fn a_normal_draw_out_of_the_domain_is_named() {
     assert_eq!(run(&ball, &log).len(), 200);
 }
 
-/// Another law runs the solver for each sample: its zero-spread answer is `run`'s.
+/// The elastic–plastic law runs the solver for each sample: its zero-spread answer is
+/// `run`'s.
 #[test]
 fn other_laws_run_the_solver() {
-    let ball = golf().with_law(ContactLaw::Hertz);
+    let ball = golf().with_law(ContactLaw::ElasticPlastic);
     let s = spec("c=0", Dist::Normal, 3, 1);
     let st = summarize(&run(&ball, &s));
     let r = ball.impact().unwrap();
     assert!((st.cor.mean - r.cor).abs() < 1e-12);
+}
+
+/// A Hertz sample takes the Hertz table (`solver::table::summary`): its zero-spread answer is
+/// the table's, within 1e-9 of `run`'s adaptive solver (the golf ball's run is not stiff:
+/// docs/numerics.md). It held `run` to 1e-12 when it was `run`'s own solver.
+#[test]
+fn hertz_samples_take_the_table() {
+    let ball = golf().with_law(ContactLaw::Hertz);
+    let s = spec("c=0", Dist::Normal, 3, 1);
+    let samples = run(&ball, &s);
+    let n = ball.params.normalized();
+    let t = crate::solver::table::hertz(&n).expect("the golf ball is in a kept patch");
+    let w0 = ball.params.omega0();
+    for i in 0..3 {
+        assert_eq!(samples.cor[i], t.cor);
+        let f = t.max_force * ball.params.mass * ball.params.v0 * w0;
+        assert_eq!(samples.max_force[i], f);
+        assert_eq!(samples.contact_time[i], t.contact_time / w0);
+    }
+    let r = ball.impact().unwrap();
+    assert!(!r.stiff);
+    assert!(
+        (samples.cor[0] - r.cor).abs() < 1e-9,
+        "{} {}",
+        samples.cor[0],
+        r.cor
+    );
+    assert!((samples.max_force[0] / r.max_force - 1.0).abs() < 1e-9);
 }
 
 /// The key kept is the one `seed_from_u64` derives: sample i is ChaCha8Rng::seed_from_u64(seed)

@@ -66,6 +66,11 @@ fn row_from(
             });
         }
     }
+    if law == ContactLaw::Hertz
+        && let Some(row) = hertz_row(p)
+    {
+        return Ok(row);
+    }
     let r = simulate(p, law, &SolveOptions::default())?;
     Ok(ImpactRow {
         cor: r.cor,
@@ -74,6 +79,28 @@ fn row_from(
         max_indentation: r.max_indentation,
         permanent_indentation: r.permanent_indentation,
         rebound: r.rebound,
+    })
+}
+
+/// A Hertz row from the Hertz table, else the Taylor steps (`solver::table::summary`), SI as
+/// `run` converts (F = F̄ m v0 ω0, t = τ/ω0, z = z̄ v0/ω0); `None` where neither answers or
+/// the ball does not leave (then `simulate`). Not `run`'s bits: the table is within 1e-9 of
+/// its reference, the Taylor steps without step limit, and of the adaptive solver `run`
+/// takes at that solver's stated precision (docs/numerics.md; tests/rows.rs
+/// `a_hertz_row_is_the_tables_answer`).
+fn hertz_row(p: &ImpactParams) -> Option<ImpactRow> {
+    let s = crate::solver::table::summary(&p.normalized(), ContactLaw::Hertz)?;
+    if s.cor <= 0.0 {
+        return None;
+    }
+    let w0 = p.omega0();
+    Some(ImpactRow {
+        cor: s.cor,
+        max_force: s.max_force * p.mass * p.v0 * w0,
+        contact_time: s.contact_time / w0,
+        max_indentation: s.max_indentation * p.v0 / w0,
+        permanent_indentation: 0.0,
+        rebound: true,
     })
 }
 

@@ -89,9 +89,12 @@ pub fn decode(bytes: &[u8]) -> Result<(Grid, Vec<Patch>), String> {
         let kept = r.take(1)?[0] == 1;
         let error = r.f64()?;
         let values = if kept {
-            let v = (0..per_patch)
-                .map(|_| r.f64())
-                .collect::<Result<Vec<_>, _>>()?;
+            // the patch's values in one take (one f64 at a time cost 60 instructions each)
+            let v: Vec<f64> = r
+                .take(8 * per_patch)?
+                .chunks_exact(8)
+                .map(|b| f64::from_le_bytes(b.try_into().expect("a chunk of 8")))
+                .collect();
             if !v.iter().all(|x| x.is_finite()) {
                 return Err("a kept value is not finite".into());
             }

@@ -19,6 +19,7 @@
 
 pub mod cheb;
 mod format;
+mod kernel;
 
 pub use format::{Patch, decode, encode};
 
@@ -128,9 +129,10 @@ pub fn error(table: &[f64; OUTPUTS], reference: &[f64; OUTPUTS]) -> f64 {
 /// node values (`Patch::values`'s layout).
 pub fn coefficients(values: &[f64], degree: usize) -> Vec<f64> {
     let m = (degree + 1) * (degree + 1);
+    let dct = cheb::Dct::new(degree);
     values
         .chunks_exact(m)
-        .flat_map(|v| cheb::coefficients(v, degree))
+        .flat_map(|v| dct.coefficients(v))
         .collect()
 }
 
@@ -158,10 +160,10 @@ pub fn stored() -> Result<(Grid, Vec<Patch>), String> {
     decode(DATA)
 }
 
-/// The table ready to evaluate: each kept patch's coefficients.
+/// The table ready to evaluate: each kept patch's coefficients, laid out for `kernel`.
 struct Table {
     grid: Grid,
-    patches: Vec<Option<Vec<f64>>>,
+    patches: Vec<Option<Box<kernel::Block>>>,
 }
 
 /// The table, read once; `None` when the file does not read or is not on [`GRID`] (then
@@ -173,7 +175,10 @@ fn table() -> Option<&'static Table> {
             let (grid, patches) = stored().ok().filter(|(g, _)| *g == GRID)?;
             let patches = patches
                 .iter()
-                .map(|p| p.values.as_ref().map(|v| coefficients(v, grid.degree)))
+                .map(|p| {
+                    let v = p.values.as_ref()?;
+                    Some(kernel::block(&coefficients(v, grid.degree)))
+                })
                 .collect();
             Some(Table { grid, patches })
         })
@@ -181,12 +186,12 @@ fn table() -> Option<&'static Table> {
 }
 
 /// The outputs at (λ̂, ζ̂) from the table, `None` outside its grid or in a patch it does not
-/// keep.
+/// keep: [`interpolate`]'s bits, by the five interpolants at once (`kernel`).
 pub fn hertz_hat(lambda_hat: f64, zeta_hat: f64) -> Option<[f64; OUTPUTS]> {
     let t = table()?;
     let (patch, x, y) = t.grid.locate(lambda_hat, zeta_hat)?;
-    let c = t.patches[patch].as_ref()?;
-    Some(interpolate(c, t.grid.degree, x, y))
+    let b = t.patches[patch].as_ref()?;
+    Some(kernel::eval(b, x, y).map(f64::exp))
 }
 
 /// The Hertz impact of the normalized ball `n` from the table, in the units of the run
