@@ -43,7 +43,7 @@ struct Turn {
 /// The turn of the loading F̄ = z̄ at (λ, ζ): τ_m from the flow's events, the values at it
 /// from the jet at the last point evaluated (h⁴ terms ≈ 1e-16: the step settled).
 fn turn(lambda: f64, zeta: f64) -> Option<Turn> {
-    let load = Flow::new(lambda, zeta)?;
+    let load = Flow::new_quick(lambda, zeta)?;
     let peak = search::peak(&load, zeta)?;
     let (h, j) = (peak.t - peak.point.t, &peak.jet);
     let (dz_m, dint) = load.rounding(&peak.point);
@@ -59,6 +59,24 @@ fn turn(lambda: f64, zeta: f64) -> Option<Turn> {
         ],
         dint,
     })
+}
+
+/// The unloading's separation, u's first zero from the turn's state (u0, 0, u2): from the
+/// pair's phase by Householder's steps where it oscillates (`search::fall_from_turn`), by the
+/// bracket search otherwise, which also turns down a rise seen before the crossing (a reload).
+fn separation(unload: &Flow, u0: f64, u2: f64) -> Option<search::Root> {
+    if let Some(end) = search::fall_from_turn(unload) {
+        return Some(end);
+    }
+    let cap = if unload.omega > 0.0 {
+        (FRAC_PI_2 / unload.omega).min(2.0)
+    } else {
+        2.0
+    };
+    // the first step to where the parabola u0 + u2 s²/2 reaches 0, near the root: from there
+    // Householder's step lands just past it, or the step itself brackets it
+    let step0 = (-2.0 * u0 / u2).sqrt().min(cap);
+    search::first_fall(unload, 0, (0.0, u0), (step0, cap), true)
 }
 
 /// COR, F̄_m and τ_f of the normalized linear-law impact at (λ, ζ) that flattens at z̄_p;
@@ -83,15 +101,7 @@ pub fn flattening(lambda: f64, zeta: f64, zp_bar: f64) -> Option<Summary> {
     let k = z_m / u0;
     let (root_k, u2) = (k.sqrt(), top.z2 / k);
     let unload = Flow::from_state(lambda / k, zeta * root_k, [u0, 0.0, u2])?;
-    let cap = if unload.omega > 0.0 {
-        (FRAC_PI_2 / unload.omega).min(2.0)
-    } else {
-        2.0
-    };
-    // the first step to where the parabola u0 + u2 s²/2 reaches 0, near the root: from there
-    // Householder's step lands just past it, or the step itself brackets it
-    let step0 = (-2.0 * u0 / u2).sqrt().min(cap);
-    let end = search::first_fall(&unload, 0, (0.0, u0), (step0, cap), true)?;
+    let end = separation(&unload, u0, u2)?;
     let (he, je) = (end.t - end.point.t, &end.jet);
     let int_u = taylor(
         &[unload.integral(&end.point), je[0], je[1], je[2], je[3]],
@@ -105,7 +115,7 @@ pub fn flattening(lambda: f64, zeta: f64, zp_bar: f64) -> Option<Summary> {
     let [dz_m, dz1, dz2] = top.dz;
     let (du_f, dint_u) = unload.rounding(&end.point);
     let carried = [[2.0 * dz_m, 0.0, 0.0], [0.0, 0.0, dz2 / k]];
-    let carried = carried.map(|x| unload.response(x, &end.point));
+    let carried = unload.responses(carried, &end.point);
     let du_f = du_f + carried[0].0.abs() + carried[1].0.abs();
     let dint_u = dint_u + carried[0].1.abs() + carried[1].1.abs();
     // τ_f carries the turn's error too: z̄' over z̄''
