@@ -119,7 +119,10 @@ fn tennis_rows_over_speeds_are_runs_answers() {
         closed += usize::from(row_is_runs(&p, row));
         flattened += usize::from(row.permanent_indentation > 0.0);
     }
-    eprintln!("tennis: {closed} closed forms, {flattened} of {} flatten", speeds.len());
+    eprintln!(
+        "tennis: {closed} closed forms, {flattened} of {} flatten",
+        speeds.len()
+    );
     assert!(flattened >= 55, "{flattened} of {} flatten", speeds.len());
     assert!(
         closed >= flattened - 2,

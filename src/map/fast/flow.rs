@@ -73,11 +73,13 @@ impl Flow {
     /// [`Flow::new`], Cardano's cube root taken by `quick_cbrt` (within an ulp of the
     /// correctly rounded one; Newton's steps polish the root on the cubic either way): the flattening's loading
     /// (`super::flatten`; the summary keeps `f64::cbrt`, whose maps are pinned by goldens).
+    #[inline]
     pub fn new_quick(lambda: f64, zeta: f64) -> Option<Flow> {
         Flow::with_modes(Modes::new(lambda, zeta, quick_cbrt)?, zeta)
     }
 
     /// The flow of the modes `m` from the loading's start (z̄, z̄', z̄'') = (0, 1, −2ζ).
+    #[inline]
     fn with_modes(m: Modes, zeta: f64) -> Option<Flow> {
         let (r, sigma, omega2, gap, a0) = (m.r, m.sigma, m.omega2, m.gap, m.a0);
         // Z(s) = (s + a0)/cubic (Laplace, z̄(0) = 0, z̄'(0) = 1, z̄''(0) = −2ζ): A is the
@@ -107,6 +109,7 @@ impl Flow {
     /// flattening starts so (`super::flatten`). [`Flow::responses`] gives what an error in
     /// that state carries to τ (the flow is linear in it); [`Flow::rounding`] bounds this
     /// evaluation's own.
+    #[inline]
     pub fn from_state(lambda: f64, zeta: f64, x: [f64; 3]) -> Option<Flow> {
         let m = Modes::new(lambda, zeta, quick_cbrt)?;
         let ([a, b, d], [sa, sb, sd]) = state_coefficients(&m, x);
