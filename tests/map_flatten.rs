@@ -32,7 +32,7 @@ fn against_exact(l: f64, z: f64, zp: f64) -> Option<(Summary, f64)> {
 
 /// Over a log grid of the flattening domain — λ = 1e-6 … 1e4, ζ = 1e-3 … 1e3, z̄_p from 1e-4
 /// of the peak to just below it — the closed form agrees with the exact solver to 1e-12
-/// wherever it answers, and answers at most points where the ball flattens (2 420 of 2 844:
+/// wherever it answers, and answers at most points where the ball flattens (2 424 of 2 844:
 /// its rounding bound leaves the rest, a small e after a deep flattening, to the steps).
 #[test]
 fn flattening_agrees_with_the_exact_solver_over_the_domain() {
