@@ -191,3 +191,36 @@ fn elastic_plastic_taylor(case: usize) -> f64 {
         .unwrap()
         .cor
 }
+
+/// 1 000 tennis balls at 2 … 60 m/s (56 of 59 such speeds flatten: tests/rows.rs), the rows
+/// `bouncelab.impacts` returns.
+static TENNIS_ROWS: std::sync::LazyLock<Vec<ImpactParams>> = std::sync::LazyLock::new(|| {
+    let ball = bouncelab::Ball::from_preset("tennis").unwrap().params;
+    (0..1000)
+        .map(|i| ImpactParams {
+            v0: 2.0 + 58.0 * f64::from(i) / 999.0,
+            ..ball
+        })
+        .collect()
+});
+
+/// The tennis rows through `api::impact_rows` (issue 30 items 2 and 5: a flattening row from
+/// `map::fast::flattening`); run with `RAYON_NUM_THREADS=1` for one core's cost.
+#[divan::bench]
+fn impact_rows_tennis() -> usize {
+    let balls = black_box(&*TENNIS_ROWS);
+    bouncelab::api::impact_rows(balls.len(), ContactLaw::Linear, |i| balls[i])
+        .unwrap()
+        .len()
+}
+
+/// The same rows through `simulate`, one by one: the path a flattening row took before, in
+/// the same run.
+#[divan::bench]
+fn simulate_rows_tennis() -> f64 {
+    let o = SolveOptions::default();
+    black_box(&*TENNIS_ROWS)
+        .iter()
+        .map(|p| simulate(p, ContactLaw::Linear, &o).unwrap().cor)
+        .sum()
+}

@@ -5,7 +5,7 @@
 use super::BallError;
 use crate::map::fast::Summary;
 use crate::map::fast::lanes::{self, LANES};
-use crate::model::contact::ContactLaw;
+use crate::model::contact::{Contact, ContactLaw};
 use crate::model::params::{ImpactParams, Normalized};
 use crate::solver::{SolveError, SolveOptions, simulate};
 use rayon::prelude::*;
@@ -65,6 +65,10 @@ fn row_from(
                 rebound: true,
             });
         }
+        let flattens = fast.is_none_or(|s| s.max_force > n.zp_bar);
+        if let Some(row) = flattens.then(|| flattening_row(p, n.zp_bar)).flatten() {
+            return Ok(row);
+        }
     }
     if law == ContactLaw::Hertz
         && let Some(row) = hertz_row(p)
@@ -100,6 +104,32 @@ fn hertz_row(p: &ImpactParams) -> Option<ImpactRow> {
         contact_time: s.contact_time / w0,
         max_indentation: s.max_indentation * p.v0 / w0,
         permanent_indentation: 0.0,
+        rebound: true,
+    })
+}
+
+/// The row of a linear-law ball that flattens (F̄_m > z̄_p), from the closed form
+/// [`crate::map::fast::flattening`] (to 1e-12 of the exact solver, tests/map_flatten.rs), in
+/// SI as `run` scales its answer (docs/model.md §5: force m v0 ω0, length v0/ω0, time 1/ω0):
+/// F_m = F̄_m m v0 ω0, z_m = z̄_m v0/ω0 (F̄ = z̄ on loading), z_f from z̄_f by Eqs. 18–19 (the
+/// contact's `permanent_indentation`, as the exact solver takes it). `None` where the closed
+/// form does not answer or the ball does not leave: the solver answers.
+fn flattening_row(p: &ImpactParams, zp_bar: f64) -> Option<ImpactRow> {
+    let n = p.normalized();
+    let s = crate::map::fast::flattening(n.lambda, n.zeta, zp_bar).filter(|s| s.cor > 0.0)?;
+    let contact = Contact {
+        law: ContactLaw::Linear,
+        zp_bar,
+        kappa: 1.0,
+    };
+    let w0 = p.omega0();
+    let length = p.v0 / w0;
+    Some(ImpactRow {
+        cor: s.cor,
+        max_force: s.max_force * (p.mass * p.v0 * w0),
+        contact_time: s.contact_time / w0,
+        max_indentation: s.max_force * length,
+        permanent_indentation: contact.permanent_indentation(s.max_force) * length,
         rebound: true,
     })
 }

@@ -3,7 +3,7 @@
 //! bound on their rounding, all from one [`Point`]: the three transcendental values at τ,
 //! computed once.
 
-use crate::solver::propagator::{isolated_root, lone_real_root};
+use crate::solver::propagator::{isolated_root, lone_real_root_with};
 use crate::solver::series;
 
 /// What multiplies ε times the terms' sizes in [`Flow::rounding`]: the roots, A, D, P, Q
@@ -22,7 +22,7 @@ pub(super) struct Flow {
     /// to |rτ| < 1e-3 and the bound size(A)(1 + e^{rτ})/|r| (its A's scale vanishes with r,
     /// and the cells the summary answers, hence the map's values, stay as they were).
     tight: bool,
-    /// (r + σ)² + ω² and σ² + ω², kept for [`Flow::response`].
+    /// (r + σ)² + ω² and σ² + ω², kept for [`Flow::responses`].
     gap: f64,
     p0: f64,
     /// The real root standing apart.
@@ -67,7 +67,20 @@ impl Flow {
     /// The flow at (λ, ζ), or `None` where its modes do not separate (the gap (r + σ)² + ω²
     /// vanishes) or the pair does not decay.
     pub fn new(lambda: f64, zeta: f64) -> Option<Flow> {
-        let m = Modes::new(lambda, zeta)?;
+        Flow::with_modes(Modes::new(lambda, zeta, f64::cbrt)?, zeta)
+    }
+
+    /// [`Flow::new`], Cardano's cube root taken by `quick_cbrt` (within an ulp of the
+    /// correctly rounded one; Newton's steps polish the root on the cubic either way): the flattening's loading
+    /// (`super::flatten`; the summary keeps `f64::cbrt`, whose maps are pinned by goldens).
+    #[inline]
+    pub fn new_quick(lambda: f64, zeta: f64) -> Option<Flow> {
+        Flow::with_modes(Modes::new(lambda, zeta, quick_cbrt)?, zeta)
+    }
+
+    /// The flow of the modes `m` from the loading's start (z̄, z̄', z̄'') = (0, 1, −2ζ).
+    #[inline]
+    fn with_modes(m: Modes, zeta: f64) -> Option<Flow> {
         let (r, sigma, omega2, gap, a0) = (m.r, m.sigma, m.omega2, m.gap, m.a0);
         // Z(s) = (s + a0)/cubic (Laplace, z̄(0) = 0, z̄'(0) = 1, z̄''(0) = −2ζ): A is the
         // residue at r, (r + a0)/p'(r) = 2(σ − ζ)/gap; D from matching at s = −σ,
@@ -93,11 +106,12 @@ impl Flow {
     }
 
     /// The flow at (λ, ζ) from any state (z̄, z̄', z̄'') at τ = 0: the unloading after
-    /// flattening starts so (`super::flatten`). [`Flow::response`] gives what an error in
+    /// flattening starts so (`super::flatten`). [`Flow::responses`] gives what an error in
     /// that state carries to τ (the flow is linear in it); [`Flow::rounding`] bounds this
     /// evaluation's own.
+    #[inline]
     pub fn from_state(lambda: f64, zeta: f64, x: [f64; 3]) -> Option<Flow> {
-        let m = Modes::new(lambda, zeta)?;
+        let m = Modes::new(lambda, zeta, quick_cbrt)?;
         let ([a, b, d], [sa, sb, sd]) = state_coefficients(&m, x);
         let mut flow = m.flow([a, b, d], [sa, sb, sd]);
         flow.tight = true;
@@ -180,6 +194,11 @@ impl Flow {
         })
     }
 
+    /// The jet's row k: (A r^k, c_k, s_k), z̄^{(k)} = A r^k e^{rτ} + e^{−στ}(c_k C + s_k S).
+    pub fn jet_row(&self, k: usize) -> [f64; 3] {
+        self.jet[k]
+    }
+
     /// A bound on the rounding of z̄(τ) and ∫₀^τ z̄ as evaluated here: ε times the sizes of
     /// the terms summed (z̄ is their small difference where the ball nearly sticks), each
     /// exponential's argument good to ε·rate·τ, times [`ROUNDING_FACTOR`] for the roots'
@@ -233,9 +252,10 @@ impl Flow {
         ROUNDING_FACTOR * f64::EPSILON * (terms + carried)
     }
 
-    /// z̄(τ) and ∫₀^τ z̄ dτ at a point of the flow with the same modes from the state `x` at
-    /// τ = 0 (not this flow's own): x's share in them, by linearity.
-    pub fn response(&self, x: [f64; 3], pt: &Point) -> (f64, f64) {
+    /// z̄(τ) and ∫₀^τ z̄ dτ at a point of the flow with the same modes from each state `x` at
+    /// τ = 0 (not this flow's own): x's share in them, by linearity. The real mode's share
+    /// of the integral, (e^{rτ} − 1)/r, is formed once for all.
+    pub fn responses<const N: usize>(&self, xs: [[f64; 3]; N], pt: &Point) -> [(f64, f64); N] {
         let m = Modes {
             r: self.r,
             sigma: self.sigma,
@@ -244,35 +264,38 @@ impl Flow {
             p0: self.p0,
             a0: 0.0,
         };
-        let ([a, b, d], _) = state_coefficients(&m, x);
-        let (p, q) = antiderivative(&m, b, d);
-        let z = a * pt.real + b * pt.ec + d * pt.es;
-        (z, self.integral_of(pt, a, (p, q)))
+        let (grown, rate) = self.real_growth(pt);
+        xs.map(|x| {
+            let ([a, b, d], _) = state_coefficients(&m, x);
+            let (p, q) = antiderivative(&m, b, d);
+            let z = a * pt.real + b * pt.ec + d * pt.es;
+            (z, a * grown / rate + p * pt.ec + q * pt.es - p)
+        })
     }
 
     /// ∫₀^τ z̄ dτ.
     pub fn integral(&self, pt: &Point) -> f64 {
-        self.integral_of(pt, self.a, (self.p, self.q))
+        let (grown, rate) = self.real_growth(pt);
+        self.a * grown / rate + self.p * pt.ec + self.q * pt.es - self.p
     }
 
-    /// ∫₀^τ of A e^{rτ} + e^{−στ}(B C + D S), whose pair part has the antiderivative
-    /// e^{−στ}(P C + Q S).
-    fn integral_of(&self, pt: &Point, a: f64, (p, q): (f64, f64)) -> f64 {
-        let real = if self.r == 0.0 {
-            a * pt.t
+    /// ∫₀^τ e^{rτ} dτ = (e^{rτ} − 1)/r as the pair (e^{rτ} − 1, r), and (τ, 1) where r = 0:
+    /// the real mode's share of the integral of A e^{rτ} + e^{−στ}(B C + D S) is A times
+    /// their quotient (the pair part's antiderivative is e^{−στ}(P C + Q S)).
+    fn real_growth(&self, pt: &Point) -> (f64, f64) {
+        if self.r == 0.0 {
+            return (pt.t, 1.0);
+        }
+        // e^{rτ} − 1: the subtraction's absolute error, ε, is what `rounding` budgets
+        // (ε|A|(1 + e^{rτ})/|r|); exp_m1 only where rτ is so small that it would leave
+        // nothing of the difference (λ → 0)
+        let near = if self.tight { 0.5 } else { 1e-3 };
+        let em1 = if (self.r * pt.t).abs() < near {
+            (self.r * pt.t).exp_m1()
         } else {
-            // e^{rτ} − 1: the subtraction's absolute error, ε, is what `rounding` budgets
-            // (ε|A|(1 + e^{rτ})/|r|); exp_m1 only where rτ is so small that it would leave
-            // nothing of the difference (λ → 0)
-            let near = if self.tight { 0.5 } else { 1e-3 };
-            let em1 = if (self.r * pt.t).abs() < near {
-                (self.r * pt.t).exp_m1()
-            } else {
-                pt.real - 1.0
-            };
-            a * em1 / self.r
+            pt.real - 1.0
         };
-        real + p * pt.ec + q * pt.es - p
+        (em1, self.r)
     }
 }
 
@@ -291,12 +314,13 @@ struct Modes {
 
 impl Modes {
     /// `None` where the modes do not separate (the gap vanishes) or the pair does not decay.
-    fn new(lambda: f64, zeta: f64) -> Option<Modes> {
+    /// `cbrt` takes Cardano's cube root (`propagator::lone_real_root_with`).
+    fn new(lambda: f64, zeta: f64, cbrt: fn(f64) -> f64) -> Option<Modes> {
         let (a2, a1, a0) = (2.0 * zeta * (1.0 + lambda), 1.0, 2.0 * zeta * lambda);
         // λ = 0 has the root 0 exactly, which Cardano would leave at a rounding's distance
         let cubic = [a2, a1, a0];
         let lone = if a0 > 0.0 {
-            lone_real_root(cubic)
+            lone_real_root_with(cubic, cbrt)
         } else {
             None
         };
@@ -390,6 +414,27 @@ fn cos_sinc(x: f64) -> (f64, f64) {
     series::cos_sinc_to::<5>(x)
 }
 
+/// ∛x within an ulp (0.74 ε over 20 000 log-spread x, `quick_cbrt_is_cbrt`) where x is normal,
+/// else `f64::cbrt`: the exponent divided by 3 in the bits (a guess within 3.2 %), two Halley
+/// steps (2e-5, then 6e-15) and one Newton step. Hand-written because `f64::cbrt` (the
+/// correctly rounded one of compiler_builtins) costs some 137 instructions a call where this
+/// takes about 30, and Cardano's root is polished by Newton's steps on the cubic anyway.
+fn quick_cbrt(x: f64) -> f64 {
+    /// (1023 − 1023/3)·2⁵² plus the mantissa's correction (Kahan's constant for doubles).
+    const THIRD_BIAS: u64 = 0x2a9f_7893_782d_a1ce;
+    if !x.is_normal() {
+        return x.cbrt();
+    }
+    let a = x.abs();
+    let mut y = f64::from_bits(a.to_bits() / 3 + THIRD_BIAS);
+    for _ in 0..2 {
+        let y3 = y * y * y;
+        y *= (y3 + 2.0 * a) / (2.0 * y3 + a);
+    }
+    y -= (y * y * y - a) / (3.0 * y * y);
+    y.copysign(x)
+}
+
 /// Σ|terms|.
 fn abs_sum(terms: [f64; 3]) -> f64 {
     terms.iter().map(|t| t.abs()).sum()
@@ -401,6 +446,19 @@ mod tests {
 
     fn close(a: f64, b: f64, ulps: f64) -> bool {
         (a - b).abs() <= ulps * f64::EPSILON * b.abs().max(f64::MIN_POSITIVE)
+    }
+
+    /// `quick_cbrt` is `f64::cbrt` within an ulp over 2 000 log-spread x, either sign, and at
+    /// 0, subnormals and infinities (where it is `f64::cbrt`).
+    #[test]
+    fn quick_cbrt_is_cbrt() {
+        for i in -1000..=1000 {
+            let x = 1.37f64.powi(i) * if i % 2 == 0 { 1.0 } else { -1.0 };
+            assert!(close(quick_cbrt(x), x.cbrt(), 1.0), "∛{x}");
+        }
+        for x in [0.0, -0.0, 1e-310, f64::INFINITY, f64::NEG_INFINITY] {
+            assert_eq!(quick_cbrt(x).to_bits(), x.cbrt().to_bits(), "∛{x}");
+        }
     }
 
     /// The series agree with libm's exp, cos and sin to an ulp or two over |x| ≤ 1/16.

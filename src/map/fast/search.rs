@@ -73,13 +73,27 @@ pub(super) fn events(flow: &Flow, zeta: f64) -> Option<(Root, Root)> {
 }
 
 /// τ_m alone (the loading's turn, where z̄' first falls through 0): from the pair's phase
-/// where it oscillates, by the bracket search otherwise (as [`events`] finds it).
+/// where it oscillates, by the bracket search otherwise (as [`events`] finds it). Only the
+/// peak's guess is formed (not τ_f's: the unloading after flattening is another flow).
 pub(super) fn peak(flow: &Flow, zeta: f64) -> Option<Root> {
-    let phased = phase_guesses(flow).and_then(|[guess, _]| {
-        let [peak, _] = refine_both(flow, [guess, None]);
-        peak
+    let phased = peak_phase(flow).and_then(|(theta_m, p, q)| {
+        let guess = (p > 0.0).then(|| peak_point(flow, theta_m, p, q))?;
+        refine(flow, guess, 1)
     });
     phased.or_else(|| first_fall(flow, 1, (0.0, 1.0), steps(flow, zeta), false))
+}
+
+/// The first zero of z̄ (τ_f) of a flow that starts at a turn (z̄'(0) = 0, z̄(0) > 0 and
+/// z̄''(0) < 0: the unloading after flattening, `super::flatten`), from the pair's phase by
+/// Householder's steps where it oscillates ([`separation_guess`] after the phase 0, then
+/// [`refine`]); `None` where the pair does not oscillate or the steps do not settle on a
+/// falling crossing within a quarter of the pair's period past the guess (the caller's bracket
+/// search answers there).
+pub(super) fn fall_from_turn(flow: &Flow) -> Option<Root> {
+    if flow.omega <= 0.0 {
+        return None;
+    }
+    refine(flow, separation_guess(flow, 0.0), 0)
 }
 
 /// The bracket search's first step and longest one: a quarter of the pair's period where it
@@ -98,11 +112,20 @@ fn steps(flow: &Flow, zeta: f64) -> (f64, f64) {
 /// P = D + σA ≤ 0).
 ///
 /// z̄' has the pair part e^{−στ}(P cos ωτ + Q sin ωτ), Q = (Aω² − σD)/ω, whose first zero is
-/// ωτ = atan2(P, −Q) ∈ (0, π), with (cos, sin) = (−Q, P) over their norm. z̄ has
-/// e^{−στ}(−A cos ωτ + (D/ω) sin ωτ), zero at ωτ = θ + kπ, θ = atan(Aω/D) ∈ [−π/2, π/2]
-/// (θ + kπ ≥ 0 then never cancels: as ω → 0 the root ωτ → 0 keeps its digits), with (cos,
-/// sin) = ±(D/ω, A) over their norm; the first after the peak's is taken (after 0 where P ≤ 0).
+/// ωτ = atan2(P, −Q) ∈ (0, π), with (cos, sin) = (−Q, P) over their norm ([`peak_phase`]);
+/// z̄'s zero the first after it ([`separation_guess`]; after 0 where P ≤ 0).
 fn phase_guesses(flow: &Flow) -> Option<[Option<Point>; 2]> {
+    let (theta_m, p, q) = peak_phase(flow)?;
+    Some([
+        (p > 0.0).then(|| peak_point(flow, theta_m, p, q)),
+        Some(separation_guess(flow, theta_m)),
+    ])
+}
+
+/// The pair's part of z̄' at the loading's start (z̄ = A e^{rτ} + e^{−στ}(−A C + D S)):
+/// P = D + σA and Q = (Aω² − σD)/ω, and the phase of its first zero, atan2(P, −Q) ∈ (0, π)
+/// (0 where P ≤ 0); `None` where the pair does not oscillate.
+fn peak_phase(flow: &Flow) -> Option<(f64, f64, f64)> {
     let w = flow.omega;
     if w <= 0.0 {
         return None;
@@ -110,17 +133,29 @@ fn phase_guesses(flow: &Flow) -> Option<[Option<Point>; 2]> {
     let p = flow.d + flow.sigma * flow.a;
     let q = (flow.a * flow.omega2 - flow.sigma * flow.d) / w;
     let theta_m = if p > 0.0 { p.atan2(-q) } else { 0.0 };
-    let flip = if flow.d < 0.0 { -1.0 } else { 1.0 };
-    let (a, dw) = (flip * flow.a, flip * flow.d / w);
-    let theta = a.atan2(dw);
-    let k = ((theta_m - theta) / PI).floor() + 1.0;
-    let odd = (k as i64) % 2 != 0;
+    Some((theta_m, p, q))
+}
+
+/// The point at the phase θ_m = atan2(P, −Q), its (cos, sin) = (−Q, P) over their norm.
+fn peak_point(flow: &Flow, theta_m: f64, p: f64, q: f64) -> Point {
     let norm_m = (p * p + q * q).sqrt();
+    flow.at_phase(theta_m / flow.omega, (-q / norm_m, p / norm_m))
+}
+
+/// The first zero of the pair part of z̄, e^{−στ}(B cos ωτ + (D/ω) sin ωτ) (B = −A on the
+/// loading: the jet's first row), at a phase past `after`: ωτ = θ + kπ, θ = atan(−Bω/D) ∈
+/// [−π/2, π/2] (θ + kπ ≥ 0 then never cancels: as ω → 0 the root ωτ → 0 keeps its digits),
+/// with (cos, sin) = ±(D/ω, −B) over their norm.
+fn separation_guess(flow: &Flow, after: f64) -> Point {
+    let w = flow.omega;
+    let [_, b, d] = flow.jet_row(0);
+    let flip = if d < 0.0 { -1.0 } else { 1.0 };
+    let (a, dw) = (-flip * b, flip * d / w);
+    let theta = a.atan2(dw);
+    let k = ((after - theta) / PI).floor() + 1.0;
+    let odd = (k as i64) % 2 != 0;
     let norm_f = if odd { -1.0 } else { 1.0 } / (a * a + dw * dw).sqrt();
-    Some([
-        (p > 0.0).then(|| flow.at_phase(theta_m / w, (-q / norm_m, p / norm_m))),
-        Some(flow.at_phase((theta + k * PI) / w, (dw * norm_f, a * norm_f))),
-    ])
+    flow.at_phase((theta + k * PI) / w, (dw * norm_f, a * norm_f))
 }
 
 /// τ_m and τ_f from their guesses by Householder's fourth-order steps, side by side; each
@@ -163,6 +198,27 @@ fn refine_both(flow: &Flow, guesses: [Option<Point>; 2]) -> [Option<Root>; 2] {
         }
     }
     roots
+}
+
+/// One root of z̄^{(k)} (k = 1: τ_m, k = 0: τ_f) from its guess, as [`refine_both`] refines
+/// each of its two (the same steps in the same order, so the same root to the last bit),
+/// without the bookkeeping of two: the flattening's turn and separation each need one.
+fn refine(flow: &Flow, guess: Point, k: usize) -> Option<Root> {
+    let mut point = guess;
+    for _ in 0..MAX_REFINE {
+        let jet: [f64; 6] = flow.jet(&point);
+        let (h, settled) = householder(&jet[k..k + 4]);
+        let t = point.t - h;
+        if !(t > 0.0 && t < TAU_MAX) {
+            return None;
+        }
+        if settled {
+            let lobe = t - guess.t <= FRAC_PI_2 / flow.omega;
+            return lobe.then_some(Root { t, point, jet });
+        }
+        point = flow.shift(&point, -h).unwrap_or_else(|| flow.at(t));
+    }
+    None
 }
 
 /// One Householder step (d = 3) on f from (f, f', f'', f'''): the step h to subtract, and

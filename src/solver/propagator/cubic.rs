@@ -121,6 +121,15 @@ pub(crate) fn isolated_root(a: [f64; 3]) -> (f64, f64, f64) {
 /// Newton on the full cubic, where the root is simple. `None` where the discriminant leaves
 /// three real roots, or the polish does not settle: [`isolated_root`] answers there.
 pub(crate) fn lone_real_root(a: [f64; 3]) -> Option<(f64, f64, f64)> {
+    lone_real_root_with(a, f64::cbrt)
+}
+
+/// [`lone_real_root`] with Cardano's cube root taken by `cbrt`: one good to a few digits is
+/// enough, as Newton's steps polish the root on the full cubic (to 4ε, or `None`).
+pub(crate) fn lone_real_root_with(
+    a: [f64; 3],
+    cbrt: impl Fn(f64) -> f64,
+) -> Option<(f64, f64, f64)> {
     let [a2, a1, a0] = a;
     let shift = a2 / 3.0;
     // s = t − a2/3: t³ + p t + q = 0
@@ -130,7 +139,7 @@ pub(crate) fn lone_real_root(a: [f64; 3]) -> Option<(f64, f64, f64)> {
     if disc.is_nan() || disc <= 0.0 {
         return None;
     }
-    let u = (-0.5 * q - q.signum() * disc.sqrt()).cbrt();
+    let u = cbrt(-0.5 * q - q.signum() * disc.sqrt());
     if u == 0.0 {
         return None;
     }
