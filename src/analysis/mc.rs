@@ -14,8 +14,10 @@
 //!   its sd s·v as the normal's, and it never crosses 0.
 //! - **K_h follows K_p and z_p** (Eq. 16) when either is varied, as the fit and the command
 //!   line's overrides tie them (as [`super::fit::apply`]).
-//! - **Each impact is `run`'s**: the closed form of [`crate::map::fast`] where it answers and
-//!   the ball does not flatten (to 1e-12 of the exact solver), else [`crate::simulate`]. The
+//! - **Each impact is `run`'s**: on the linear law the closed forms of [`crate::map::fast`]
+//!   (flattening or not, to 1e-12 of the exact solver); under Hertz the Hertz table, then the
+//!   Taylor steps ([`crate::solver::table::summary`], within 1e-9 of their reference and of
+//!   `run` at its solver's stated precision, docs/numerics.md); else [`crate::simulate`]. The
 //!   closed form runs four samples at once in lanes ([`crate::map::fast::lanes`]); each lane
 //!   is a function of its own ball alone, so a sample's answer does not depend on its group.
 

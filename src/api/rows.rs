@@ -29,8 +29,11 @@ pub struct ImpactRow {
 
 /// The impact of `p` under `law`, as `run` solves it: on the linear law the closed form while
 /// the ball does not flatten (F̄_m ≤ z̄_p; then z_m = F_m / K_p, the contact being the spring
-/// K_p, docs/model.md §3, and no permanent indentation), else the solver with its default
-/// options. tests/rows.rs holds the two paths to each other.
+/// K_p, docs/model.md §3, and no permanent indentation) and the flattening's closed form when
+/// it does (both to 1e-12 of `run`); under Hertz the Hertz table, then the Taylor steps
+/// (within 1e-9 of their reference and of `run` at its solver's stated precision,
+/// docs/numerics.md); else the solver with its default options. tests/rows.rs holds each path
+/// to `run`.
 pub fn impact_row(p: &ImpactParams, law: ContactLaw) -> Result<ImpactRow, SolveError> {
     let fast = if law == ContactLaw::Linear {
         let n = p.normalized();
