@@ -13,6 +13,11 @@
 //!
 //! A forked child shares its parent's inotify instance, and whichever reads an event takes
 //! it from the other: a watch armed before a fork is not trusted after it (`FORKS`).
+//!
+//! Written on rustix's inotify rather than the `notify` crate: `notify` delivers events from
+//! an event thread of its own (a thread in every process that imports bouncelab, and none in
+//! a forked child), where here one non-blocking read of a descriptor this module owns
+//! answers at the call, in the caller's thread.
 
 use rustix::fd::OwnedFd;
 use rustix::fs::inotify::{self, CreateFlags, WatchFlags};
