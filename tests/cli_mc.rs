@@ -202,3 +202,29 @@ fn bad_input_is_one_line_naming_the_field() {
     ]);
     assert_bad(&o, &["invalid vary: sample ", "k_r", "--dist lognormal"]);
 }
+
+/// Under Hertz the work limit counts a sample of a ball the Hertz table answers as 1/40 of an
+/// impact (`work::check_samples_of`): golf's 30 000 samples run (25 000 was the most before,
+/// when every Hertz sample counted as an adaptive-solver impact); baseball, whose Hertz cell
+/// the table leaves to the Taylor steps, keeps the old count and is refused.
+#[test]
+fn hertz_samples_of_a_tabulated_ball_count_as_cheap_ones() {
+    let base = ["mc", "--law", "hertz", "--vary", "k_p=5%,c=5%"];
+    let run = |preset: &str, samples: &str| {
+        let mut args = base.to_vec();
+        args.extend(["--preset", preset, "--samples", samples, "--format", "json"]);
+        bl(&args)
+    };
+    let o = run("golf", "30000");
+    assert_eq!(o.code, 0, "{}", o.stderr);
+    let v: Value = serde_json::from_str(&o.stdout).unwrap();
+    assert_eq!(v["samples"], 30000, "{}", o.stdout);
+    assert_bad(
+        &run("golf", "1000001"),
+        &["too much work: 1000001 samples (40 Hertz-law samples of a ball the Hertz table"],
+    );
+    assert_bad(
+        &run("baseball", "30000"),
+        &["too much work: 30000 samples is 30000 hertz-law impacts"],
+    );
+}

@@ -34,12 +34,33 @@ pub const SAMPLES_PER_IMPACT: u64 = 10;
 /// Refuse a Monte Carlo of `samples` samples under `law` beyond the limit: a linear-law
 /// sample counts 1/[`SAMPLES_PER_IMPACT`] of an impact, any other a whole impact.
 pub fn check_samples(samples: usize, law: ContactLaw) -> Result<(), TooMuchWork> {
+    check_samples_of(samples, law, false)
+}
+
+/// [`check_samples`] for a Monte Carlo whose nominal ball the Hertz table answers
+/// (`tabulated`, under the Hertz law): its samples count 1/[`cost`] of an impact each, some
+/// 7 µs of work — a sample the table answers takes some 0.35 µs, one near the table's edge
+/// that it leaves to the Taylor steps some 15 µs (BENCHMARKS.md), so 10⁶ of them are the
+/// limit, against 25 000 for samples the adaptive solver may take.
+pub fn check_samples_of(
+    samples: usize,
+    law: ContactLaw,
+    tabulated: bool,
+) -> Result<(), TooMuchWork> {
     let n = samples as u64;
     let (impacts, what) = match law {
         ContactLaw::Linear => (
             n.div_ceil(SAMPLES_PER_IMPACT),
             format!(
                 "{samples} samples ({SAMPLES_PER_IMPACT} linear-law samples count as one impact)"
+            ),
+        ),
+        ContactLaw::Hertz if tabulated => (
+            n.div_ceil(cost(law)),
+            format!(
+                "{samples} samples ({} Hertz-law samples of a ball the Hertz table answers \
+                 count as one impact)",
+                cost(law)
             ),
         ),
         _ => (n, format!("{samples} samples")),
@@ -212,6 +233,20 @@ mod tests {
         ));
         assert!(check_samples(25_000, ContactLaw::Hertz).is_ok());
         assert!(check_samples(25_001, ContactLaw::Hertz).is_err());
+    }
+
+    #[test]
+    fn hertz_samples_the_table_answers_count_a_fortieth() {
+        assert!(check_samples_of(1_000_000, ContactLaw::Hertz, true).is_ok());
+        let e = check_samples_of(1_000_001, ContactLaw::Hertz, true).unwrap_err();
+        assert_eq!(e.work, 1_000_040);
+        assert!(e.to_string().starts_with(
+            "too much work: 1000001 samples (40 Hertz-law samples of a ball the Hertz table \
+             answers count as one impact) is 25001 hertz-law impacts"
+        ));
+        // the elastic–plastic law and an untabulated ball keep a whole impact a sample
+        assert!(check_samples_of(25_001, ContactLaw::ElasticPlastic, true).is_err());
+        assert!(check_samples_of(25_001, ContactLaw::Hertz, false).is_err());
     }
 
     #[test]

@@ -95,7 +95,7 @@ const BINS: usize = 60;
 pub fn run(a: &McArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     let ball = a.ball.resolve(a.v0)?;
     let spec = spec(a, &ball)?;
-    work::check_samples(spec.samples, ball.law)?;
+    ball.check_samples(spec.samples)?;
     let paths: Vec<&std::path::Path> = [&a.csv_out, &a.svg_out]
         .into_iter()
         .flatten()
