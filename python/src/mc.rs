@@ -266,7 +266,7 @@ pub(crate) fn monte_carlo_chunk(
         )));
     }
     if check_only {
-        bouncelab::analysis::work::check_samples(count, r.ball.law).map_err(|e| error(e.into()))?;
+        r.ball.check_samples(count).map_err(|e| error(e.into()))?;
         return Ok((array(py, vec![]), array(py, vec![]), array(py, vec![])));
     }
     let s = py

@@ -122,6 +122,20 @@ def test_dask_gives_the_single_process_answer(client):
     assert bouncelab.dask.monte_carlo(client, **{**kw, "seed": 24}, chunk=5_000) != one
 
 
+def test_hertz_samples_of_a_tabulated_ball_count_as_cheap_ones(client):
+    """Under Hertz the work limit counts a sample of a ball the Hertz table answers as 1/40 of
+    an impact (docs/scale.md): golf asks 30 000 (25 000 was the most), in one call and through
+    Dask, whose client checks a chunk as its worker does; baseball's cell is outside the
+    table and keeps a whole impact a sample."""
+    import bouncelab.dask
+
+    kw = dict(preset="golf", vary=VARY, samples=30_000, seed=5, law="hertz")
+    one = bouncelab.monte_carlo(**kw)
+    assert bouncelab.dask.monte_carlo(client, **kw, chunk=30_000) == one
+    with pytest.raises(ValueError, match="too much work: 30000 samples is 30000 hertz-law"):
+        bouncelab.monte_carlo(**{**kw, "preset": "baseball"})
+
+
 def test_dask_without_a_client_uses_dasks_own_scheduler():
     pytest.importorskip("dask")
     import dask
