@@ -1,19 +1,20 @@
 //! The elastic–plastic impact's fast paths (issue 30 item 1), phase by phase.
 //!
 //! The law is Hertz up to z̄_p, a straight line past it, and a 3/2-power unloading from the
-//! peak (docs/model.md §3, Eqs. 10–12, 18–19). Measured by callgrind (BENCHMARKS.md, "An
-//! elastic–plastic impact by phases"): on the Taylor steps an impact past yield costs some
-//! 100 000 instructions, of which the 3/2-power steps (the Hertz loading to z̄_p, then the
-//! unloading: 11–19 steps of ≈ 6 300 instructions) are 97 %, the straight stretch (1–6
-//! linear steps of ≈ 1 600) 3 %.
+//! peak (docs/model.md §3, Eqs. 10–12, 18–19). Measured by callgrind (BENCHMARKS.md, "Fourth
+//! session (ep5): the elastic–plastic impact by phases"): on the Taylor steps an impact past
+//! yield costs some 100 000 instructions, of which the 3/2-power steps (the Hertz loading to
+//! z̄_p, then the unloading: 11–19 steps of ≈ 6 300 instructions) are 97 %, the straight
+//! stretch (1–6 linear steps of ≈ 1 600) 3 %.
 //!
 //! **No yield.** Where the Hertz impact at the same (λ, ζ, κ) turns below z̄_p the
 //! elastic–plastic impact *is* the Hertz impact: the loading is Eq. 10 throughout, and with
 //! z̄_m ≤ z̄_p Eqs. 18–19 give z̄_r = z̄_m, z̄_f = 0, so the unloading of Eq. 12 is
 //! F̄_m (z̄/z̄_m)^{3/2} = κ z̄^{3/2}, the loading curve again. [`below_yield`] takes the Hertz
 //! table's answer (`solver::table`, good to its `TOLERANCE`, 1e-10 of each output) there,
-//! with the margin [`YIELD_MARGIN`] between its z̄_m and z̄_p; tests/plastic_fast.rs holds it
-//! to the Taylor steps and the adaptive solver.
+//! with the margin [`YIELD_MARGIN`] between its z̄_m and z̄_p; tests/taylor.rs holds it to
+//! the Taylor steps and the adaptive solver (`elastic_plastic_below_yield_is_the_hertz_impact`,
+//! `elastic_plastic_near_yield`).
 //!
 //! Past yield the Taylor steps answer (`super::summary`).
 
