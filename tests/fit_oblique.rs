@@ -6,14 +6,13 @@ mod fit_common;
 
 use bouncelab::Ball;
 use bouncelab::analysis::fit::Estimate;
-use bouncelab::analysis::fit::oblique::{ObliqueStart, fit_oblique};
+use bouncelab::analysis::fit::oblique::fit_oblique;
 use bouncelab::analysis::work::Unwatched;
 use bouncelab::measured::ObliqueRow;
 use bouncelab::model::contact::ContactLaw;
 use bouncelab::oblique::{self, Oblique, mindlin_ratio};
 use fit_common::Rng;
-
-const R: f64 = 0.0335;
+use fit_common::oblique::{R, mixed, start};
 
 fn covers(e: &Estimate, truth: f64) -> bool {
     e.ci95[0] <= truth && truth <= e.ci95[1]
@@ -46,32 +45,6 @@ fn bounces(
             }
         })
         .collect()
-}
-
-/// Low angles that slide throughout (they show μ) and steep ones that grip (they show K_t).
-fn mixed() -> Vec<(f64, f64, f64)> {
-    let mut c = Vec::new();
-    for (k, angle) in [8.0, 12.0, 16.0, 25.0, 35.0, 45.0, 55.0, 65.0, 75.0]
-        .into_iter()
-        .enumerate()
-    {
-        for spin in [-200.0, 0.0, 250.0] {
-            c.push((15.0 + 2.0 * k as f64, angle, spin));
-        }
-    }
-    c
-}
-
-fn start(kt: f64, kappa: f64) -> ObliqueStart {
-    let ball = Ball::from_preset("tennis").unwrap();
-    ObliqueStart {
-        params: ball.params,
-        law: ContactLaw::Linear,
-        radius: R,
-        friction: None,
-        tangential_stiffness: kt,
-        inertia_factor: kappa,
-    }
 }
 
 #[test]

@@ -2,6 +2,8 @@
 //! fit is not told: what the recovery tests fit back.
 #![allow(dead_code)]
 
+pub mod oblique;
+
 use bouncelab::measured::{CorPoint, Trace};
 use bouncelab::{ContactLaw, ImpactParams, SolveOptions, simulate};
 
