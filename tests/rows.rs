@@ -5,36 +5,15 @@
 //! table's reference to 1e-9 and `run` to the adaptive solver's stated precision
 //! (docs/numerics.md).
 
+mod spread;
+
 use bouncelab::api::{ImpactRow, impact_row, impact_rows};
 use bouncelab::solver::table;
 use bouncelab::{ContactLaw, ImpactParams, SolveOptions, simulate};
 
-/// A reproducible spread of balls: each parameter a decade either side of the superball's.
+/// The balls every row test runs: 400 of tests/spread's.
 fn balls() -> Vec<ImpactParams> {
-    let mut x = 0x9e37_79b9_7f4a_7c15_u64;
-    let mut next = || {
-        // xorshift64*: plain, seeded, enough to spread test points
-        x ^= x >> 12;
-        x ^= x << 25;
-        x ^= x >> 27;
-        (x.wrapping_mul(0x2545_f491_4f6c_dd1d) >> 11) as f64 / (1u64 << 53) as f64
-    };
-    let mut spread = |v: f64| v * 10f64.powf(2.0 * next() - 1.0);
-    (0..400)
-        .map(|_| {
-            let (k_p, z_p) = (spread(5.45e4), spread(2e-3));
-            ImpactParams {
-                mass: spread(0.0495),
-                k_p,
-                k_r: spread(7.08e4),
-                damping: spread(10.0),
-                z_p,
-                k_h: ImpactParams::k_h_matching(k_p, z_p),
-                v0: spread(3.12),
-            }
-        })
-        .filter(|p| p.validate().is_ok())
-        .collect()
+    spread::balls(0x9e37_79b9_7f4a_7c15, 400)
 }
 
 fn close(a: f64, b: f64) -> bool {

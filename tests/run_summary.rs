@@ -5,7 +5,10 @@
 
 use bouncelab::api::ImpactSummary;
 use bouncelab::catalog::Catalog;
-use bouncelab::{Ball, ContactLaw, ImpactParams};
+mod spread;
+
+use bouncelab::{Ball, ContactLaw};
+use spread::balls;
 
 fn close(a: f64, b: f64) -> bool {
     (a - b).abs() <= 1e-12 * b.abs().max(1e-300)
@@ -56,34 +59,6 @@ fn check(ball: &Ball) -> Option<bool> {
         assert_eq!(s.permanent_indentation, 0.0, "{what}");
     }
     Some(flattened)
-}
-
-/// A reproducible spread of balls: each parameter a decade either side of the superball's.
-fn balls(seed: u64, count: usize) -> Vec<ImpactParams> {
-    let mut x = seed;
-    let mut next = || {
-        // xorshift64*: plain, seeded, enough to spread test points
-        x ^= x >> 12;
-        x ^= x << 25;
-        x ^= x >> 27;
-        (x.wrapping_mul(0x2545_f491_4f6c_dd1d) >> 11) as f64 / (1u64 << 53) as f64
-    };
-    let mut spread = |v: f64| v * 10f64.powf(2.0 * next() - 1.0);
-    (0..count)
-        .map(|_| {
-            let (k_p, z_p) = (spread(5.45e4), spread(2e-3));
-            ImpactParams {
-                mass: spread(0.0495),
-                k_p,
-                k_r: spread(7.08e4),
-                damping: spread(10.0),
-                z_p,
-                k_h: ImpactParams::k_h_matching(k_p, z_p),
-                v0: spread(3.12),
-            }
-        })
-        .filter(|p| p.validate().is_ok())
-        .collect()
 }
 
 #[test]
