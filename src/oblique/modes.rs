@@ -3,7 +3,7 @@
 //! e^{−σδ} sin(ωδ)/ω they span, read exactly, turned by a step, or by short series, and a
 //! component of the state as rows over that basis (docs/oblique.md §2).
 
-use crate::solver::propagator::{isolated_root, lone_real_root};
+use crate::solver::propagator::modes_of;
 use crate::solver::series;
 /// Rows kept of each component: f … f''' (τ_m's Halley steps on z̄' read z̄''').
 pub(super) const ROWS: usize = 4;
@@ -26,16 +26,7 @@ impl Modes {
     /// The modes at slope k, or `None` unless the pair oscillates apart from the real root.
     pub(super) fn new(lambda: f64, zeta: f64, k: f64) -> Option<Modes> {
         let cubic = [2.0 * zeta * (k + lambda), k, 2.0 * zeta * k * lambda];
-        // λ = 0 has the root 0 exactly, which Cardano would leave at a rounding's distance
-        let lone = if cubic[2] > 0.0 {
-            lone_real_root(cubic)
-        } else {
-            None
-        };
-        let (r, p1, p0) = lone.unwrap_or_else(|| isolated_root(cubic));
-        let sigma = 0.5 * p1;
-        let omega2 = p0 - sigma * sigma;
-        let gap = (r + sigma) * (r + sigma) + omega2;
+        let (r, sigma, omega2, gap, _) = modes_of(cubic, f64::cbrt);
         let ok = omega2 > 0.0 && gap > 0.0 && sigma >= 0.0 && r.is_finite() && gap.is_finite();
         ok.then(|| Modes {
             r,

@@ -21,8 +21,8 @@ pub(in crate::solver) use fast_slow::pair_flow;
 
 mod cubic;
 mod fast_slow;
+pub(crate) use cubic::modes_of;
 pub use cubic::{Roots, cubic_roots};
-pub(crate) use cubic::{isolated_root, lone_real_root, lone_real_root_with};
 use fast_slow::SplitState;
 use nalgebra::{Complex, Matrix3, Vector3};
 

@@ -3,7 +3,7 @@
 //! bound on their rounding, all from one [`Point`]: the three transcendental values at τ,
 //! computed once.
 
-use crate::solver::propagator::{isolated_root, lone_real_root_with};
+use crate::solver::propagator::modes_of;
 use crate::solver::series;
 
 /// What multiplies ε times the terms' sizes in [`Flow::rounding`]: the roots, A, D, P, Q
@@ -314,20 +314,10 @@ struct Modes {
 
 impl Modes {
     /// `None` where the modes do not separate (the gap vanishes) or the pair does not decay.
-    /// `cbrt` takes Cardano's cube root (`propagator::lone_real_root_with`).
+    /// `cbrt` takes Cardano's cube root (`propagator::modes_of`).
     fn new(lambda: f64, zeta: f64, cbrt: fn(f64) -> f64) -> Option<Modes> {
-        let (a2, a1, a0) = (2.0 * zeta * (1.0 + lambda), 1.0, 2.0 * zeta * lambda);
-        // λ = 0 has the root 0 exactly, which Cardano would leave at a rounding's distance
-        let cubic = [a2, a1, a0];
-        let lone = if a0 > 0.0 {
-            lone_real_root_with(cubic, cbrt)
-        } else {
-            None
-        };
-        let (r, p1, p0) = lone.unwrap_or_else(|| isolated_root(cubic));
-        let sigma = 0.5 * p1;
-        let omega2 = p0 - sigma * sigma;
-        let gap = (r + sigma) * (r + sigma) + omega2;
+        let a0 = 2.0 * zeta * lambda;
+        let (r, sigma, omega2, gap, p0) = modes_of([2.0 * zeta * (1.0 + lambda), 1.0, a0], cbrt);
         (gap > 0.0 && p0 > 0.0).then_some(Modes {
             r,
             sigma,

@@ -25,7 +25,7 @@
 //! e = ∫₀^τ_f z̄ dτ − 1 (ᾱ'' = −F̄, ᾱ'(0) = 1), in closed form too. Cases it does not settle
 //! quickly — no rebound (λ = 0, ζ ≥ 1), slow creeps, flattening — and those whose rounding
 //! bound (`Flow::rounding`) cannot keep 1e-13 return `None`: the caller runs the exact
-//! solver. The real root comes from Cardano's formula, polished (`lone_real_root`), where the
+//! solver. The real root comes from Cardano's formula, polished (`propagator::modes_of`), where the
 //! other two are a complex pair.
 
 mod flatten;

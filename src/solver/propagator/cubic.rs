@@ -115,17 +115,30 @@ pub(crate) fn isolated_root(a: [f64; 3]) -> (f64, f64, f64) {
     (x, p1, p0)
 }
 
-/// The one real root of the cubic (a_i ≥ 0) where the other two are a complex pair, and the
-/// deflated quadratic (p1, p0), as [`isolated_root`] gives them, without its bracketed
-/// search: Cardano's root (u − p/3u with u the cube root free of cancellation) polished by
-/// Newton on the full cubic, where the root is simple. `None` where the discriminant leaves
-/// three real roots, or the polish does not settle: [`isolated_root`] answers there.
-pub(crate) fn lone_real_root(a: [f64; 3]) -> Option<(f64, f64, f64)> {
-    lone_real_root_with(a, f64::cbrt)
+/// The cubic's modes (a_i ≥ 0): its real root r and its deflated pair s² + 2σs + (σ² + ω²),
+/// as `(r, σ, ω², (r + σ)² + ω², σ² + ω²)` — the lone root by Cardano ([`lone_real_root_with`],
+/// its cube root by `cbrt`) where a0 > 0, else (and where Cardano does not settle) by
+/// [`isolated_root`]: λ = 0 has the root 0 exactly, which Cardano would leave at a rounding's
+/// distance. The third is the real root's distance from the pair, squared (p'(r)).
+pub(crate) fn modes_of(a: [f64; 3], cbrt: fn(f64) -> f64) -> (f64, f64, f64, f64, f64) {
+    let lone = if a[2] > 0.0 {
+        lone_real_root_with(a, cbrt)
+    } else {
+        None
+    };
+    let (r, p1, p0) = lone.unwrap_or_else(|| isolated_root(a));
+    let sigma = 0.5 * p1;
+    let omega2 = p0 - sigma * sigma;
+    let gap = (r + sigma) * (r + sigma) + omega2;
+    (r, sigma, omega2, gap, p0)
 }
 
-/// [`lone_real_root`] with Cardano's cube root taken by `cbrt`: one good to a few digits is
-/// enough, as Newton's steps polish the root on the full cubic (to 4ε, or `None`).
+/// The one real root of the cubic (a_i ≥ 0) where the other two are a complex pair, and the
+/// deflated quadratic (p1, p0), as [`isolated_root`] gives them, without its bracketed
+/// search: Cardano's root (u − p/3u with u the cube root free of cancellation, taken by
+/// `cbrt`: one good to a few digits is enough) polished by Newton on the full cubic, where the
+/// root is simple (to 4ε). `None` where the discriminant leaves three real roots, or the
+/// polish does not settle: [`isolated_root`] answers there.
 pub(crate) fn lone_real_root_with(
     a: [f64; 3],
     cbrt: impl Fn(f64) -> f64,
@@ -229,7 +242,7 @@ mod tests {
                 let (r, p1, p0) = isolated_root(a);
                 let pair_complex = p1 * p1 < 4.0 * p0;
                 complex += pair_complex as usize;
-                let Some((s, q1, q0)) = lone_real_root(a) else {
+                let Some((s, q1, q0)) = lone_real_root_with(a, f64::cbrt) else {
                     continue;
                 };
                 answered += 1;

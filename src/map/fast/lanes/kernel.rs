@@ -57,7 +57,7 @@ struct Root4<L: Lane> {
 }
 
 /// The lone real root of s³ + a2 s² + s + a0 and the deflated quadratic (p1, p0), as
-/// `propagator::lone_real_root` gives them (Cardano, then at most four Newton steps that must
+/// `propagator::modes_of` gives them (Cardano, then at most four Newton steps that must
 /// settle), and the lanes where it answers.
 #[inline(always)]
 fn lone_real_root<L: Lane>(a2: L, a0: L) -> (L, L, L, L) {
