@@ -204,9 +204,9 @@ fn bad_input_is_one_line_naming_the_field() {
 }
 
 /// Under Hertz the work limit counts a sample of a ball the Hertz table answers as 1/40 of an
-/// impact (`work::check_samples_of`): golf's 30 000 samples run (25 000 was the most before,
-/// when every Hertz sample counted as an adaptive-solver impact); baseball, whose Hertz cell
-/// the table leaves to the Taylor steps, keeps the old count and is refused.
+/// impact (`work::check_samples_of`): golf's 30 000 samples run, its 1 000 001 are refused;
+/// baseball, whose Hertz cell the table leaves to the Taylor steps, counts a whole impact a
+/// sample, so its 30 000 (more than 25 000) are refused.
 #[test]
 fn hertz_samples_of_a_tabulated_ball_count_as_cheap_ones() {
     let base = ["mc", "--law", "hertz", "--vary", "k_p=5%,c=5%"];

@@ -124,9 +124,9 @@ def test_dask_gives_the_single_process_answer(client):
 
 def test_hertz_samples_of_a_tabulated_ball_count_as_cheap_ones(client):
     """Under Hertz the work limit counts a sample of a ball the Hertz table answers as 1/40 of
-    an impact (docs/scale.md): golf asks 30 000 (25 000 was the most), in one call and through
-    Dask, whose client checks a chunk as its worker does; baseball's cell is outside the
-    table and keeps a whole impact a sample."""
+    an impact (docs/scale.md): golf's 30 000 run, in one call and through Dask, whose client
+    checks a chunk as its worker does; baseball's cell is outside the table, a sample counts a
+    whole impact, and 30 000 (more than 25 000) are refused."""
     import bouncelab.dask
 
     kw = dict(preset="golf", vary=VARY, samples=30_000, seed=5, law="hertz")
