@@ -15,9 +15,9 @@ use super::worker::Worker;
 use crate::catalog;
 use crate::fault::Fault;
 use crate::tui::views::fit::worker::FitWorker;
-use crate::tui::views::map::worker::MapWorker;
+use crate::tui::views::map::worker::{self as map_worker, MapWorker};
 use crate::tui::views::models::state::ModelsRequest;
-use crate::tui::views::oblique::worker::ObliqueMapWorker;
+use crate::tui::views::oblique::worker::{self as oblique_worker, ObliqueMapWorker};
 use ratatui::DefaultTerminal;
 use ratatui::crossterm::event;
 use std::time::{Duration, Instant};
@@ -38,8 +38,8 @@ pub fn run(terminal: &mut DefaultTerminal, app: &mut App) -> anyhow::Result<()> 
         sweeps: Worker::spawn()?,
         models: Worker::spawn()?,
         fits: FitWorker::spawn()?,
-        maps: MapWorker::spawn()?,
-        oblique: ObliqueMapWorker::spawn()?,
+        maps: map_worker::spawn()?,
+        oblique: oblique_worker::spawn()?,
     };
     // test-only (see `crate::fault`): tests/tui_pty.rs checks that the terminal is restored
     // after a panic in here
@@ -203,11 +203,11 @@ fn carry_out(mut effects: Vec<Effect>, app: &mut App, worker: &mut Workers) {
                     continue;
                 }
                 Effect::Map(job) => {
-                    worker.maps.want(job);
+                    worker.maps.send(job);
                     continue;
                 }
                 Effect::ObliqueMap(job) => {
-                    worker.oblique.want(job);
+                    worker.oblique.send(job);
                     continue;
                 }
                 Effect::Export(request) => match export::write(&request, &export::dir_from_env()) {

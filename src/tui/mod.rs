@@ -21,6 +21,7 @@
 
 pub mod action;
 pub mod app;
+pub mod background;
 pub mod chartview;
 pub mod command;
 pub mod compute;

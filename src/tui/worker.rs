@@ -5,9 +5,9 @@
 //! view's calibrations ([`crate::tui::views::models::state::ModelsRequest`]) run on a second
 //! worker of the same kind and come back as `Action::ModelsReady`.
 
+use crate::tui::background::Background;
 use crate::tui::views::sweeps::speed::{SpeedCurve, SpeedRequest};
-use std::sync::mpsc::{self, Receiver, Sender, TryRecvError};
-use std::thread;
+use std::sync::mpsc::{Receiver, Sender, TryRecvError};
 
 /// Work a [`Worker`] does: equal jobs give equal results, so the job is its result's key.
 pub trait Job: Clone + PartialEq + Send + 'static {
@@ -45,21 +45,14 @@ impl Job for SpeedRequest {
 pub type Reply<J = SpeedRequest> = (J, Result<<J as Job>::Output, String>);
 
 pub struct Worker<J: Job = SpeedRequest> {
-    jobs: Sender<Vec<J>>,
-    replies: Receiver<Reply<J>>,
+    thread: Background<Vec<J>, Reply<J>>,
     sent: Vec<J>,
 }
 
 impl<J: Job> Worker<J> {
     pub fn spawn() -> std::io::Result<Worker<J>> {
-        let (jobs, inbox) = mpsc::channel();
-        let (outbox, replies) = mpsc::channel();
-        thread::Builder::new()
-            .name("bouncelab-sweeps".into())
-            .spawn(move || serve(&inbox, &outbox))?;
         Ok(Worker {
-            jobs,
-            replies,
+            thread: Background::spawn("bouncelab-sweeps", serve)?,
             sent: Vec::new(),
         })
     }
@@ -68,14 +61,14 @@ impl<J: Job> Worker<J> {
     pub fn want(&mut self, requests: &[J]) {
         if requests != self.sent.as_slice() {
             self.sent = requests.to_vec();
-            // a send fails only when the thread is gone; the explorer then waits in vain for a
-            // sweep, which its title says
-            let _ = self.jobs.send(self.sent.clone());
+            // should the thread be gone, the explorer waits in vain for a sweep, which its
+            // title says
+            self.thread.send(self.sent.clone());
         }
     }
 
     pub fn try_recv(&self) -> Option<Reply<J>> {
-        self.replies.try_recv().ok()
+        self.thread.try_recv()
     }
 }
 
@@ -168,6 +161,8 @@ mod tests {
     use super::*;
     use crate::model::contact::ContactLaw;
     use crate::preset::Preset;
+    use std::sync::mpsc;
+    use std::thread;
     use std::time::{Duration, Instant};
 
     fn wait(w: &Worker) -> Reply {

@@ -7,12 +7,12 @@
 //! budget's `Watch`, issue 29 item 13), then its outcome, each as `Action::FitReady`.
 
 use crate::analysis::work::Watch;
+use crate::tui::background::Background;
 use crate::tui::views::fit::state::{self as measured, FitNews, FitProgress, FitRequest};
 use std::cell::Cell;
 use std::sync::Arc;
 use std::sync::atomic::{AtomicU64, Ordering};
-use std::sync::mpsc::{self, Receiver, Sender};
-use std::thread;
+use std::sync::mpsc::{Receiver, Sender};
 use std::time::{Duration, Instant};
 
 /// How often a running fit reports its progress: often enough for a counter that moves, far
@@ -23,36 +23,29 @@ pub const PROGRESS_EVERY: Duration = Duration::from_millis(100);
 pub type FitReply = (u64, FitNews);
 
 pub struct FitWorker {
-    jobs: Sender<FitRequest>,
-    replies: Receiver<FitReply>,
+    thread: Background<FitRequest, FitReply>,
     /// The id of the latest fit asked for: a running fit of another id stops.
     latest: Arc<AtomicU64>,
 }
 
 impl FitWorker {
     pub fn spawn() -> std::io::Result<FitWorker> {
-        let (jobs, inbox) = mpsc::channel();
-        let (outbox, replies) = mpsc::channel();
         let latest = Arc::new(AtomicU64::new(0));
         let seen = Arc::clone(&latest);
-        thread::Builder::new()
-            .name("bouncelab-fit".into())
-            .spawn(move || serve(&inbox, &outbox, &seen))?;
-        Ok(FitWorker {
-            jobs,
-            replies,
-            latest,
-        })
+        let thread = Background::spawn("bouncelab-fit", move |inbox, outbox| {
+            serve(inbox, outbox, &seen)
+        })?;
+        Ok(FitWorker { thread, latest })
     }
 
+    /// Run `request`'s fit; should the thread be gone, the pane keeps saying "fitting…".
     pub fn want(&self, request: FitRequest) {
         self.latest.store(request.id, Ordering::Relaxed);
-        // a send fails only when the thread is gone; the pane then keeps saying "fitting…"
-        let _ = self.jobs.send(request);
+        self.thread.send(request);
     }
 
     pub fn try_recv(&self) -> Option<FitReply> {
-        self.replies.try_recv().ok()
+        self.thread.try_recv()
     }
 }
 
@@ -109,6 +102,8 @@ mod tests {
     use crate::measured::{CorTable, Data};
     use crate::preset::Preset;
     use crate::tui::views::fit::state::{Loaded, request};
+    use std::sync::mpsc;
+    use std::thread;
     use std::time::{Duration, Instant};
 
     /// A running fit goes on while it is the latest asked for and stops at its next model

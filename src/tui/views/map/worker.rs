@@ -4,38 +4,21 @@
 //! sets its cancel flag (the ball or the view changed); the thread then waits for the next.
 
 use crate::map::Map;
+use crate::tui::background::Background;
 use crate::tui::views::map::state::MapJob;
 use std::sync::atomic::Ordering;
-use std::sync::mpsc::{self, Receiver, Sender};
-use std::thread;
+use std::sync::mpsc::{Receiver, Sender};
 
 /// A finished pass: the map's generation and the map with that pass in.
 pub type Reply = (u64, Map);
 
-pub struct MapWorker {
-    jobs: Sender<MapJob>,
-    replies: Receiver<Reply>,
-}
+/// The map's thread: hand it a job (one `update` has not cancelled already) with `send`; a job
+/// it cannot take because the thread is gone leaves the map coarse.
+pub type MapWorker = Background<MapJob, Reply>;
 
-impl MapWorker {
-    pub fn spawn() -> std::io::Result<MapWorker> {
-        let (jobs, inbox) = mpsc::channel();
-        let (outbox, replies) = mpsc::channel();
-        thread::Builder::new()
-            .name("bouncelab-map".into())
-            .spawn(move || serve(&inbox, &outbox))?;
-        Ok(MapWorker { jobs, replies })
-    }
-
-    /// Refine `job`'s map (a job before it was cancelled by `update` already).
-    pub fn want(&self, job: MapJob) {
-        // a send fails only when the thread is gone; the map then stays coarse
-        let _ = self.jobs.send(job);
-    }
-
-    pub fn try_recv(&self) -> Option<Reply> {
-        self.replies.try_recv().ok()
-    }
+/// Start the map's thread.
+pub fn spawn() -> std::io::Result<MapWorker> {
+    Background::spawn("bouncelab-map", serve)
 }
 
 fn serve(inbox: &Receiver<MapJob>, outbox: &Sender<Reply>) {
@@ -60,6 +43,7 @@ mod tests {
     use crate::model::contact::ContactLaw;
     use std::sync::Arc;
     use std::sync::atomic::AtomicBool;
+    use std::thread;
     use std::time::{Duration, Instant};
 
     fn job(generation: u64, cancel: bool) -> MapJob {
@@ -77,9 +61,9 @@ mod tests {
     /// Every pass comes back, the last one complete; a cancelled job sends nothing.
     #[test]
     fn passes_come_back_until_complete_and_a_cancelled_job_is_silent() {
-        let w = MapWorker::spawn().unwrap();
-        w.want(job(1, true));
-        w.want(job(2, false));
+        let w = spawn().unwrap();
+        w.send(job(1, true));
+        w.send(job(2, false));
         let start = Instant::now();
         loop {
             if let Some((generation, map)) = w.try_recv() {
