@@ -63,10 +63,18 @@ fn labels(b: [f64; 2], width: u16) -> Vec<String> {
     at.iter().map(|&v| value(v)).collect()
 }
 
-/// Round ticks over `b`, as the other charts': a step of 1, 1.5, 2,
+/// Round ticks over `b`: a step of 1, 1.5, 2,
 /// 2.5, 3, 4, 5, 6 or 8 × 10^k giving about three intervals, the axis widened to the ticks
 /// around the data; every tick labelled (ratatui spreads labels evenly), or the ends alone on a
 /// chart narrower than `MIDDLE_FROM` (`round_ticks_hold_the_data`).
+///
+/// Not `figure::ticks::fitted`, the explorer's other charts' rule, because of how the labels
+/// are placed: `widgets::plot` writes each label at its own tick, while these are ratatui
+/// `Chart`s, which spread their labels evenly from end to end. Evenly spread labels read true
+/// only when both ends are ticks and every tick is labelled, which this rule holds by widening
+/// the axis to whole steps; `fitted` ends a range on a finer grain when whole ticks would
+/// waste room (`fitted(0.0, 4.8, 5)` spans 0…5 with ticks 0, 2, 4), and its 1, 2, 2.5, 5 steps
+/// would leave a 0…4.8 axis one coarse interval or a wasted one where 1.5, 3, 6 fit.
 fn round_axis(b: [f64; 2], width: u16) -> ([f64; 2], Vec<String>) {
     let span = b[1] - b[0];
     if !(span.is_finite() && span > 0.0) {
