@@ -163,165 +163,150 @@ fn report<'py>(py: Python<'py>, r: &Request, s: &McSummary) -> PyResult<Bound<'p
     Ok(d)
 }
 
-/// A Monte Carlo over a preset's parameter tolerances, as `bouncelab mc --format json`: a dict
-/// with its keys (`samples`, `seed`, `stats` → `cor`, `max_force`, `contact_time` → `n`,
-/// `mean`, `sd`, `min`, `max`, `q` → `"1"` … `"99"`, …). With `return_samples`, `values`
-/// holds each sample's cor, max_force, contact_time (NaN: no rebound) and varied parameters
-/// as numpy arrays. The GIL is released while the samples run (in parallel).
-#[pyfunction]
-#[pyo3(signature = (*, preset="superball", vary, samples=10_000, seed=0, dist="normal", v0=None, law=None, params=None, return_samples=false, correlate=None))]
-#[allow(clippy::too_many_arguments)]
-pub(crate) fn monte_carlo<'py>(
-    py: Python<'py>,
-    preset: &str,
-    vary: &Bound<'py, PyAny>,
-    samples: usize,
-    seed: u64,
-    dist: &str,
-    v0: Option<f64>,
-    law: Option<&str>,
-    params: Option<&str>,
-    return_samples: bool,
-    correlate: Option<Bound<'py, PyAny>>,
-) -> PyResult<Bound<'py, PyDict>> {
-    let r = request(
-        preset,
-        vary,
-        samples,
-        seed,
-        dist,
-        v0,
-        law,
-        params,
-        correlate.as_ref(),
-    )?;
-    let mc: MonteCarlo =
-        crate::interrupt::detach_watched(py, |w| r.ball.monte_carlo_watched(&r.spec, w))?;
-    let d = report(py, &r, &mc.summary)?;
-    if return_samples {
-        let values = PyDict::new(py);
-        let sampler = r.ball.sampler(&r.spec);
-        let inputs: Vec<Vec<f64>> = (0..mc.samples.len() as u64)
-            .map(|i| sampler.inputs(i))
-            .collect();
-        for (k, v) in r.spec.vary.iter().enumerate() {
-            values.set_item(
-                v.what.name(),
-                array(py, inputs.iter().map(|x| x[k]).collect()),
+/// A Monte Carlo function of Python's: the arguments all three share (`preset`, `vary`,
+/// `samples`, `seed`, `dist`, `v0`, `law`, `params`, then the function's own, then
+/// `correlate`), keyword-only, read once into the [`Request`] `$r` its body starts from.
+/// `samples` has a default where one is given (`monte_carlo`'s 10 000); the Dask halves take
+/// it as the run's, always given. Written once here so that the single call and the Dask path
+/// cannot drift apart in a name or a default (`test_dask*.py` hold their answers equal).
+macro_rules! mc_pyfunction {
+    (
+        $(#[$attr:meta])*
+        fn $name:ident<$lt:lifetime>($py:ident, $r:ident; samples $(= $samples:literal)?;
+            $($arg:ident: $ty:ty $(= $default:tt)?),* $(,)?) -> $ret:ty $body:block
+    ) => {
+        $(#[$attr])*
+        #[pyfunction]
+        #[pyo3(signature = (*, preset="superball", vary, samples $(= $samples)?, seed=0, dist="normal", v0=None, law=None, params=None, $($arg $(= $default)?,)* correlate=None))]
+        #[allow(clippy::too_many_arguments)]
+        pub(crate) fn $name<$lt>(
+            $py: Python<$lt>,
+            preset: &str,
+            vary: &Bound<$lt, PyAny>,
+            samples: usize,
+            seed: u64,
+            dist: &str,
+            v0: Option<f64>,
+            law: Option<&str>,
+            params: Option<&str>,
+            $($arg: $ty,)*
+            correlate: Option<Bound<$lt, PyAny>>,
+        ) -> $ret {
+            let $r = request(
+                preset,
+                vary,
+                samples,
+                seed,
+                dist,
+                v0,
+                law,
+                params,
+                correlate.as_ref(),
             )?;
+            $body
         }
-        let Samples {
-            cor,
-            max_force,
-            contact_time,
-            ..
-        } = mc.samples;
-        values.set_item("cor", array(py, cor))?;
-        values.set_item("max_force", array(py, max_force))?;
-        values.set_item("contact_time", array(py, contact_time))?;
-        d.set_item("values", values)?;
+    };
+}
+
+mc_pyfunction! {
+    /// A Monte Carlo over a preset's parameter tolerances, as `bouncelab mc --format json`: a dict
+    /// with its keys (`samples`, `seed`, `stats` → `cor`, `max_force`, `contact_time` → `n`,
+    /// `mean`, `sd`, `min`, `max`, `q` → `"1"` … `"99"`, …). With `return_samples`, `values`
+    /// holds each sample's cor, max_force, contact_time (NaN: no rebound) and varied parameters
+    /// as numpy arrays. The GIL is released while the samples run (in parallel).
+    fn monte_carlo<'py>(py, r; samples = 10_000; return_samples: bool = false)
+        -> PyResult<Bound<'py, PyDict>>
+    {
+        let mc: MonteCarlo =
+            crate::interrupt::detach_watched(py, |w| r.ball.monte_carlo_watched(&r.spec, w))?;
+        let d = report(py, &r, &mc.summary)?;
+        if return_samples {
+            d.set_item("values", values(py, &r, mc.samples)?)?;
+        }
+        Ok(d)
     }
-    Ok(d)
+}
+
+/// `monte_carlo`'s `values`: each sample's varied parameters, cor, max_force, contact_time.
+fn values<'py>(py: Python<'py>, r: &Request, samples: Samples) -> PyResult<Bound<'py, PyDict>> {
+    let values = PyDict::new(py);
+    let sampler = r.ball.sampler(&r.spec);
+    let inputs: Vec<Vec<f64>> = (0..samples.len() as u64)
+        .map(|i| sampler.inputs(i))
+        .collect();
+    for (k, v) in r.spec.vary.iter().enumerate() {
+        values.set_item(
+            v.what.name(),
+            array(py, inputs.iter().map(|x| x[k]).collect()),
+        )?;
+    }
+    let Samples {
+        cor,
+        max_force,
+        contact_time,
+        ..
+    } = samples;
+    values.set_item("cor", array(py, cor))?;
+    values.set_item("max_force", array(py, max_force))?;
+    values.set_item("contact_time", array(py, contact_time))?;
+    Ok(values)
 }
 
 type Columns = (Py<PyArray1<f64>>, Py<PyArray1<f64>>, Py<PyArray1<f64>>);
 
-/// The samples `start … start + count` of the run `monte_carlo` would make with the same
-/// arguments: (cor, max_force, contact_time) as numpy arrays — one Dask task's work. With
-/// `check_only`, every argument and the work limit for `count` samples are checked and empty
-/// arrays returned (the Dask client's check before it sends a task).
-#[pyfunction]
-#[pyo3(signature = (*, preset="superball", vary, samples, seed=0, dist="normal", v0=None, law=None, params=None, start, count, check_only=false, correlate=None))]
-#[allow(clippy::too_many_arguments)]
-pub(crate) fn monte_carlo_chunk(
-    py: Python<'_>,
-    preset: &str,
-    vary: &Bound<'_, PyAny>,
-    samples: usize,
-    seed: u64,
-    dist: &str,
-    v0: Option<f64>,
-    law: Option<&str>,
-    params: Option<&str>,
-    start: u64,
-    count: usize,
-    check_only: bool,
-    correlate: Option<Bound<'_, PyAny>>,
-) -> PyResult<Columns> {
-    let r = request(
-        preset,
-        vary,
-        samples,
-        seed,
-        dist,
-        v0,
-        law,
-        params,
-        correlate.as_ref(),
-    )?;
-    if start.saturating_add(count as u64) > samples as u64 {
-        return Err(PyValueError::new_err(format!(
-            "invalid chunk: samples {start} … {} lie beyond the run's {samples}",
-            start.saturating_add(count as u64)
-        )));
+mc_pyfunction! {
+    /// The samples `start … start + count` of the run `monte_carlo` would make with the same
+    /// arguments: (cor, max_force, contact_time) as numpy arrays — one Dask task's work. With
+    /// `check_only`, every argument and the work limit for `count` samples are checked and empty
+    /// arrays returned (the Dask client's check before it sends a task).
+    fn monte_carlo_chunk<'py>(py, r; samples; start: u64, count: usize, check_only: bool = false)
+        -> PyResult<Columns>
+    {
+        let samples = r.spec.samples;
+        if start.saturating_add(count as u64) > samples as u64 {
+            return Err(PyValueError::new_err(format!(
+                "invalid chunk: samples {start} … {} lie beyond the run's {samples}",
+                start.saturating_add(count as u64)
+            )));
+        }
+        if check_only {
+            r.ball.check_samples(count).map_err(|e| error(e.into()))?;
+            return Ok((array(py, vec![]), array(py, vec![]), array(py, vec![])));
+        }
+        let s = py
+            .detach(|| r.ball.monte_carlo_samples(&r.spec, start, count))
+            .map_err(error)?;
+        Ok((
+            array(py, s.cor),
+            array(py, s.max_force),
+            array(py, s.contact_time),
+        ))
     }
-    if check_only {
-        r.ball.check_samples(count).map_err(|e| error(e.into()))?;
-        return Ok((array(py, vec![]), array(py, vec![]), array(py, vec![])));
-    }
-    let s = py
-        .detach(|| r.ball.monte_carlo_samples(&r.spec, start, count))
-        .map_err(error)?;
-    Ok((
-        array(py, s.cor),
-        array(py, s.max_force),
-        array(py, s.contact_time),
-    ))
 }
 
-/// The dict `monte_carlo` returns, from all the samples of the run (cor, max_force,
-/// contact_time, in index order: the chunks of `monte_carlo_chunk` concatenated).
-#[pyfunction]
-#[pyo3(signature = (*, preset="superball", vary, samples, seed=0, dist="normal", v0=None, law=None, params=None, cor, max_force, contact_time, correlate=None))]
-#[allow(clippy::too_many_arguments)]
-pub(crate) fn monte_carlo_merge<'py>(
-    py: Python<'py>,
-    preset: &str,
-    vary: &Bound<'py, PyAny>,
-    samples: usize,
-    seed: u64,
-    dist: &str,
-    v0: Option<f64>,
-    law: Option<&str>,
-    params: Option<&str>,
-    cor: PyReadonlyArray1<'py, f64>,
-    max_force: PyReadonlyArray1<'py, f64>,
-    contact_time: PyReadonlyArray1<'py, f64>,
-    correlate: Option<Bound<'py, PyAny>>,
-) -> PyResult<Bound<'py, PyDict>> {
-    let r = request(
-        preset,
-        vary,
-        samples,
-        seed,
-        dist,
-        v0,
-        law,
-        params,
-        correlate.as_ref(),
-    )?;
-    let all = Samples {
-        start: 0,
-        cor: cor.as_array().to_vec(),
-        max_force: max_force.as_array().to_vec(),
-        contact_time: contact_time.as_array().to_vec(),
-    };
-    let lens = [all.cor.len(), all.max_force.len(), all.contact_time.len()];
-    if lens.iter().any(|&n| n != samples) {
-        return Err(PyValueError::new_err(format!(
-            "invalid merge: {lens:?} values for a run of {samples} samples"
-        )));
+mc_pyfunction! {
+    /// The dict `monte_carlo` returns, from all the samples of the run (cor, max_force,
+    /// contact_time, in index order: the chunks of `monte_carlo_chunk` concatenated).
+    fn monte_carlo_merge<'py>(py, r; samples;
+        cor: PyReadonlyArray1<'py, f64>,
+        max_force: PyReadonlyArray1<'py, f64>,
+        contact_time: PyReadonlyArray1<'py, f64>,
+    ) -> PyResult<Bound<'py, PyDict>>
+    {
+        let samples = r.spec.samples;
+        let all = Samples {
+            start: 0,
+            cor: cor.as_array().to_vec(),
+            max_force: max_force.as_array().to_vec(),
+            contact_time: contact_time.as_array().to_vec(),
+        };
+        let lens = [all.cor.len(), all.max_force.len(), all.contact_time.len()];
+        if lens.iter().any(|&n| n != samples) {
+            return Err(PyValueError::new_err(format!(
+                "invalid merge: {lens:?} values for a run of {samples} samples"
+            )));
+        }
+        let s = py.detach(|| summary(&r.spec, &all));
+        report(py, &r, &s)
     }
-    let s = py.detach(|| summary(&r.spec, &all));
-    report(py, &r, &s)
 }
