@@ -1,5 +1,6 @@
 //! The physical model: parameters, contact laws, and parameters from materials.
 
+mod checks;
 pub mod contact;
 pub mod materials;
 pub mod params;
