@@ -197,8 +197,8 @@ fn eight_lanes_are_two_fours_bit_for_bit() {
 /// refine τ_m from the loading's start and keep it where z̄' falls only once before it
 /// (`Flow4::falls_once`, kernel.rs): 4 000 seeded points of that corner, each the scalar
 /// path's answer (its bracket search) to 1e-12, and most answered by the lanes themselves —
-/// before, the lanes handed every P ≤ 0 lane to the scalar path (this corner's count was
-/// the three-real-root band's share alone).
+/// before, the lanes handed every P ≤ 0 lane to the scalar path and answered 2 211 of these
+/// points (now 3 254; the rest mostly the band of three real roots).
 #[test]
 fn lanes_settle_the_peak_where_the_pair_part_starts_negative() {
     let mut s = Stream(30);
@@ -211,5 +211,5 @@ fn lanes_settle_the_peak_where_the_pair_part_starts_negative() {
         })
         .collect();
     let (n, own) = check(&points);
-    assert!(own * 10 >= n * 5, "the lanes answered {own} of {n}");
+    assert!(own * 4 >= n * 3, "the lanes answered {own} of {n}");
 }
