@@ -213,3 +213,22 @@ fn lanes_settle_the_peak_where_the_pair_part_starts_negative() {
     let (n, own) = check(&points);
     assert!(own * 4 >= n * 3, "the lanes answered {own} of {n}");
 }
+
+/// Short contacts of a slow real mode (λ, ζ ≤ 0.016: |rτ_f| < 1e-3, where e^{rτ} − 1 takes
+/// its series as the scalar path takes `exp_m1`): 2 000 seeded points, each the scalar
+/// path's answer to 1e-12, and nine in ten answered by the lanes — before, the lanes handed
+/// every lane with |rτ| < 1e-3 to the scalar path.
+#[test]
+fn lanes_settle_short_contacts_of_a_slow_real_mode() {
+    let mut s = Stream(31);
+    let points: Vec<(f64, f64)> = (0..2_000)
+        .map(|_| {
+            (
+                10f64.powf(-4.0 + 2.2 * s.unit()),
+                10f64.powf(-4.0 + 2.2 * s.unit()),
+            )
+        })
+        .collect();
+    let (n, own) = check(&points);
+    assert!(own * 10 >= n * 9, "the lanes answered {own} of {n}");
+}

@@ -5,7 +5,7 @@
 //! give the same bits (`avx2_and_portable_kernels_agree_bit_for_bit`, tests/map_lanes.rs).
 
 use super::lane::Lane;
-use super::math::{atan2, cbrt, cos_sinc, exp, exp_small};
+use super::math::{atan2, cbrt, cos_sinc, exp, exp_m1_small, exp_small};
 use crate::map::fast::Summary;
 use crate::map::fast::flow::SMALL;
 use crate::map::fast::search::{MAX_REFINE, SETTLED, TAU_MAX};
@@ -219,11 +219,18 @@ impl<L: Lane> Flow4<L> {
         (k * z, k * int)
     }
 
-    /// `Flow::integral` where |rτ| ≥ 1e-3 (the caller checks).
+    /// `Flow::integral`: e^{rτ} − 1 by subtraction where |rτ| ≥ 1e-3, by its series below
+    /// (as `flow::real_growth`'s `exp_m1`; λ, ζ ≲ 0.016: a short contact of a slow real
+    /// mode). The rounding bound is the same either way (`Flow4::rounding`'s, the scalar's).
     #[inline(always)]
     fn integral(&self, pt: &Point4<L>) -> L {
         let v = L::splat;
-        let real = self.a * (pt.real - v(1.0)) / self.r;
+        let rt = self.r * pt.t;
+        let grown = rt
+            .abs()
+            .lt(v(1e-3))
+            .select(exp_m1_small(rt), pt.real - v(1.0));
+        let real = self.a * grown / self.r;
         real + self.p * pt.ec + self.q * pt.es - self.p
     }
 
@@ -402,10 +409,7 @@ pub fn kernel<L: Lane<Array = [f64; N]>, const N: usize>(
     let (dz_f, dint) = flow.rounding(&end.point);
     let slope = taylor(&j[1..6], h).abs();
     let keep = v(crate::map::fast::KEEP);
-    let precise = dz_m.le(keep * z_m)
-        & dint.le(keep * cor.abs())
-        & dz_f.le(keep * slope * end.t)
-        & (flow.r * end.point.t).abs().ge(v(1e-3));
+    let precise = dz_m.le(keep * z_m) & dint.le(keep * cor.abs()) & dz_f.le(keep * slope * end.t);
     let answered = (live & settled & precise).bitmask();
     let (cor, z_m, t_f) = (cor.to_array(), z_m.to_array(), end.t.to_array());
     let mut out = [None; N];
