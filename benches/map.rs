@@ -99,8 +99,8 @@ fn fast_summary_grid_lanes(b: divan::Bencher) {
 
 /// The lanes' own share of [`fast_summary_grid_lanes`]: the same grid through
 /// `lanes::lanes_only8` (eight cells a call, two AVX registers), without the scalar path that
-/// `summaries` hands the cells the lanes leave (no oscillating pair, |rτ| < 1e-3: some 870 of
-/// the 24 000). Per impact: the median / 24 000.
+/// `summaries` hands the cells the lanes leave (mostly no oscillating pair: some 350 of the
+/// 24 000). Per impact: the median / 24 000.
 #[divan::bench(sample_count = 20)]
 fn fast_summary_grid_lanes_only(b: divan::Bencher) {
     use bouncelab::map::fast::lanes::{WIDE, lanes_only8};

@@ -191,3 +191,44 @@ fn eight_lanes_are_two_fours_bit_for_bit() {
     }
     assert!(answered >= 25_000, "{answered}");
 }
+
+/// Where the pair part of z̄' starts negative (P = D + σA ≤ 0: a fast real mode carries
+/// z̄'(0) = 1, λ ≲ 0.24 and ζ ≈ 0.64–5, left of the band of three real roots), the lanes
+/// refine τ_m from the loading's start and keep it where z̄' falls only once before it
+/// (`Flow4::falls_once`, kernel.rs): 4 000 seeded points of that corner, each the scalar
+/// path's answer (its bracket search) to 1e-12, and most answered by the lanes themselves —
+/// before, the lanes handed every P ≤ 0 lane to the scalar path and answered 2 211 of these
+/// points (now 3 254; the rest mostly the band of three real roots).
+#[test]
+fn lanes_settle_the_peak_where_the_pair_part_starts_negative() {
+    let mut s = Stream(30);
+    let points: Vec<(f64, f64)> = (0..4_000)
+        .map(|_| {
+            (
+                0.01 * 24f64.powf(s.unit()),
+                0.64 * (5.0f64 / 0.64).powf(s.unit()),
+            )
+        })
+        .collect();
+    let (n, own) = check(&points);
+    assert!(own * 4 >= n * 3, "the lanes answered {own} of {n}");
+}
+
+/// Short contacts of a slow real mode (λ, ζ ≤ 0.016: |rτ_f| < 1e-3, where e^{rτ} − 1 takes
+/// its series as the scalar path takes `exp_m1`): 2 000 seeded points, each the scalar
+/// path's answer to 1e-12, and nine in ten answered by the lanes — before, the lanes handed
+/// every lane with |rτ| < 1e-3 to the scalar path.
+#[test]
+fn lanes_settle_short_contacts_of_a_slow_real_mode() {
+    let mut s = Stream(31);
+    let points: Vec<(f64, f64)> = (0..2_000)
+        .map(|_| {
+            (
+                10f64.powf(-4.0 + 2.2 * s.unit()),
+                10f64.powf(-4.0 + 2.2 * s.unit()),
+            )
+        })
+        .collect();
+    let (n, own) = check(&points);
+    assert!(own * 10 >= n * 9, "the lanes answered {own} of {n}");
+}

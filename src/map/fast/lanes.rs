@@ -10,10 +10,12 @@
 //! answer is a function of its own (λ, ζ) only, never of its neighbours: a Monte Carlo sample
 //! is the same in any grouping (`same_answer_on_one_thread_and_many`).
 //!
-//! A lane the common path does not settle — the pair does not oscillate, the pair part of z̄'
-//! starts negative, a step too long for the series and the `sin_cos` turn, a root past its
-//! lobe (the bracket search's cases), λ or ζ zero, rτ so small that e^{rτ} − 1 needs
-//! `exp_m1` — is handed to the scalar [`super::summary`], whole. The exponential and `atan2`
+//! Where the pair part of z̄' starts negative (P ≤ 0) τ_m is refined from the loading's start
+//! and kept where z̄' provably falls once before it (`Flow4::falls_once`, kernel.rs); where
+//! |rτ| < 1e-3, e^{rτ} − 1 is its series (`math::exp_m1_small`, as the scalar path's
+//! `exp_m1`). A lane the common path does not settle — the pair does not oscillate (three real
+//! roots), a step too long for the series and the `sin_cos` turn, a root past its lobe (the
+//! bracket search's cases), λ or ζ zero — is handed to the scalar [`super::summary`], whole. The exponential and `atan2`
 //! are the lanes' own (`lanes/math.rs`: within 2 ulp of libm's, the same bits on every machine),
 //! `cbrt` `wide`'s written over the lanes (its bits), `sin_cos` `wide`'s, where the scalar path
 //! calls libm's: the answers agree with the scalar path's to 1e-12 (tests/map_lanes.rs), not

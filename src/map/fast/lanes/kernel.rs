@@ -5,7 +5,7 @@
 //! give the same bits (`avx2_and_portable_kernels_agree_bit_for_bit`, tests/map_lanes.rs).
 
 use super::lane::Lane;
-use super::math::{atan2, cbrt, cos_sinc, exp, exp_small};
+use super::math::{atan2, cbrt, cos_sinc, exp, exp_m1_small, exp_small};
 use crate::map::fast::Summary;
 use crate::map::fast::flow::SMALL;
 use crate::map::fast::search::{MAX_REFINE, SETTLED, TAU_MAX};
@@ -219,33 +219,72 @@ impl<L: Lane> Flow4<L> {
         (k * z, k * int)
     }
 
-    /// `Flow::integral` where |rτ| ≥ 1e-3 (the caller checks).
+    /// `Flow::integral`: e^{rτ} − 1 by subtraction where |rτ| ≥ 1e-3, by its series below
+    /// (as `flow::real_growth`'s `exp_m1`; λ, ζ ≲ 0.016: a short contact of a slow real
+    /// mode). The rounding bound is the same either way (`Flow4::rounding`'s, the scalar's).
     #[inline(always)]
     fn integral(&self, pt: &Point4<L>) -> L {
         let v = L::splat;
-        let real = self.a * (pt.real - v(1.0)) / self.r;
+        let rt = self.r * pt.t;
+        let grown = rt
+            .abs()
+            .lt(v(1e-3))
+            .select(exp_m1_small(rt), pt.real - v(1.0));
+        let real = self.a * grown / self.r;
         real + self.p * pt.ec + self.q * pt.es - self.p
     }
 
-    /// `search::phase_guesses` where P > 0: the points at the pair's zeros of z̄' and z̄, and
-    /// the lanes where P > 0.
+    /// `search::phase_guesses`: the points at the pair's zeros of z̄' and z̄ where P > 0, and
+    /// the lanes where P > 0. Where P ≤ 0 (a fast real mode carries z̄'(0) = 1: the band
+    /// λ ≲ 0.24, ζ ≈ 0.64–5 on the map) τ_m's guess is the loading's start, τ = 0 — the
+    /// real mode's decay takes Householder's steps to the root in two to four (the scalar
+    /// path brackets it) — and τ_f's the pair's first zero of z̄ after the phase 0, as the
+    /// scalar path's `separation_guess(flow, 0)`; the third value is ω√(P² + Q²), the bound
+    /// on the pair part's slope that [`Flow4::falls_once`] takes.
     #[inline(always)]
-    fn guesses(&self) -> ([Point4<L>; 2], L) {
+    fn guesses(&self) -> ([Point4<L>; 2], L, L) {
         let v = L::splat;
+        let (one, zero) = (v(1.0), v(0.0));
         let w = self.omega;
         let p = self.d + self.sigma * self.a;
         let q = (self.a * self.omega2 - self.sigma * self.d) / w;
+        let pos = p.gt(zero);
         let theta_m = atan2(p, -q);
-        let flip = self.d.lt(v(0.0)).select(v(-1.0), v(1.0));
+        let flip = self.d.lt(zero).select(v(-1.0), one);
         let (a, dw) = (flip * self.a, flip * self.d / w);
         let theta = atan2(a, dw);
-        let k = ((theta_m - theta) / v(PI)).floor() + v(1.0);
-        let odd = (k - v(2.0) * (v(0.5) * k).floor()).ne(v(0.0));
+        let after = pos.select(theta_m, zero);
+        let k = ((after - theta) / v(PI)).floor() + one;
+        let odd = (k - v(2.0) * (v(0.5) * k).floor()).ne(zero);
         let norm_m = (p * p + q * q).sqrt();
-        let norm_f = odd.select(v(-1.0), v(1.0)) / (a * a + dw * dw).sqrt();
+        let norm_f = odd.select(v(-1.0), one) / (a * a + dw * dw).sqrt();
         let peak = self.at_phase(theta_m / w, -q / norm_m, p / norm_m);
+        let start = Point4 {
+            t: zero,
+            real: one,
+            decay: one,
+            ec: one,
+            es: zero,
+        };
         let end = self.at_phase((theta + k * v(PI)) / w, dw * norm_f, a * norm_f);
-        ([peak, end], p.gt(v(0.0)))
+        let peak = Point4::select(pos, peak, start);
+        ([peak, end], pos, w * norm_m)
+    }
+
+    /// Where P ≤ 0, the lanes whose root τ* of z̄' (refined from 0, last evaluated at `pt`)
+    /// is its first: z̄' = e^{−στ}(L(τ) − M(τ)), L = A r e^{(r+σ)τ} (A r = 1 − P ≥ 1) and
+    /// M = −(P cos ωτ + Q sin ωτ), |M'| ≤ ω√(P² + Q²) = `slope`. Where r + σ < 0 and
+    /// |r + σ| L(τ*) > `slope`, L − M falls strictly on [0, τ*] (L falls, so |L'| is least at
+    /// τ*), and τ* is its only zero there. L(τ*) ≥ L(τ_pt) e^{−1/2} where |(r + σ)(τ* − τ_pt)|
+    /// ≤ 1/2: asked as |r + σ| A r e^{rτ_pt} ≥ 2 `slope` e^{−στ_pt}, without a division.
+    #[inline(always)]
+    fn falls_once(&self, t: L, pt: &Point4<L>, slope: L) -> L {
+        let v = L::splat;
+        let rate = self.r + self.sigma;
+        let real_slope = -rate * self.a * self.r * pt.real;
+        rate.lt(v(0.0))
+            & (rate * (t - pt.t)).abs().le(v(0.5))
+            & real_slope.ge(v(2.0) * slope * pt.decay)
     }
 }
 
@@ -266,9 +305,16 @@ fn householder<L: Lane>(f: &[L]) -> (L, L) {
 
 /// `search::refine_both`: τ_m (i = 0, the root of z̄') and τ_f (i = 1, of z̄) from their
 /// guesses, side by side; the lanes where each settled within [`MAX_REFINE`] steps inside
-/// (0, [`TAU_MAX`]) and within a quarter of the pair's period of its guess.
+/// (0, [`TAU_MAX`]) and within a quarter of the pair's period of its guess — τ_m where
+/// P > 0 (`pos`); where P ≤ 0 its guess is τ = 0 and it must be z̄''s first zero
+/// ([`Flow4::falls_once`], `slope` from [`Flow4::guesses`]).
 #[inline(always)]
-fn refine_both<L: Lane>(flow: &Flow4<L>, guesses: [Point4<L>; 2], live: L) -> ([Root4<L>; 2], L) {
+fn refine_both<L: Lane>(
+    flow: &Flow4<L>,
+    guesses: [Point4<L>; 2],
+    live: L,
+    (pos, slope): (L, L),
+) -> ([Root4<L>; 2], L) {
     let v = L::splat;
     let mut points = guesses;
     let mut active = [live, live];
@@ -316,7 +362,8 @@ fn refine_both<L: Lane>(flow: &Flow4<L>, guesses: [Point4<L>; 2], live: L) -> ([
     }
     let quarter = v(FRAC_PI_2) / flow.omega;
     let near = |i: usize| (roots[i].t - guesses[i].t).le(quarter);
-    let ok = found[0] & found[1] & near(0) & near(1) & roots[1].t.gt(roots[0].t);
+    let first = pos.select(near(0), flow.falls_once(roots[0].t, &roots[0].point, slope));
+    let ok = found[0] & found[1] & first & near(1) & roots[1].t.gt(roots[0].t);
     (roots, ok)
 }
 
@@ -349,9 +396,9 @@ pub fn kernel<L: Lane<Array = [f64; N]>, const N: usize>(
     // a lane left out computes a harmless ball (λ = 1, ζ = 0.1), its answer then dropped
     let (l, z) = (valid.select(l, v(1.0)), valid.select(z, v(0.1)));
     let (flow, ok) = Flow4::new(l, z);
-    let (guesses, pair) = flow.guesses();
-    let live = valid & ok & pair;
-    let (roots, settled) = refine_both(&flow, guesses, live);
+    let (guesses, pos, slope) = flow.guesses();
+    let live = valid & ok;
+    let (roots, settled) = refine_both(&flow, guesses, live, (pos, slope));
     let [peak, end] = roots;
     let z_m = taylor(&peak.jet[0..5], peak.t - peak.point.t);
     let h = end.t - end.point.t;
@@ -362,10 +409,7 @@ pub fn kernel<L: Lane<Array = [f64; N]>, const N: usize>(
     let (dz_f, dint) = flow.rounding(&end.point);
     let slope = taylor(&j[1..6], h).abs();
     let keep = v(crate::map::fast::KEEP);
-    let precise = dz_m.le(keep * z_m)
-        & dint.le(keep * cor.abs())
-        & dz_f.le(keep * slope * end.t)
-        & (flow.r * end.point.t).abs().ge(v(1e-3));
+    let precise = dz_m.le(keep * z_m) & dint.le(keep * cor.abs()) & dz_f.le(keep * slope * end.t);
     let answered = (live & settled & precise).bitmask();
     let (cor, z_m, t_f) = (cor.to_array(), z_m.to_array(), end.t.to_array());
     let mut out = [None; N];

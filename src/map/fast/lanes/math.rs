@@ -27,6 +27,8 @@ const fn series<const N: usize>(step: usize, first: usize, alt: bool) -> [f64; N
 const EXP_SERIES: [f64; 14] = series(1, 0, false);
 /// eˣ to x¹⁰, [`exp_small`]'s.
 const EXP_SMALL_SERIES: [f64; 11] = series(1, 0, false);
+/// (eˣ − 1)/x to x⁵, [`exp_m1_small`]'s.
+const EXP_M1_SMALL_SERIES: [f64; 6] = series(1, 1, false);
 /// cos x and sin(x)/x to x¹⁰, in x², [`cos_sinc`]'s.
 const COS_SERIES: [f64; 6] = series(2, 0, true);
 const SINC_SERIES: [f64; 6] = series(2, 1, true);
@@ -184,6 +186,14 @@ pub fn cbrt<L: Lane>(x: L) -> L {
 #[inline(always)]
 pub fn exp_small<L: Lane>(x: L) -> L {
     horner(x, &EXP_SMALL_SERIES)
+}
+
+/// eˣ − 1 = x Σ xᵏ/(k + 1)!, k ≤ 5, where |x| < 1e-3 (`flow::real_growth` takes `exp_m1`
+/// there): the first term dropped is x⁷/7! < 2e-22 |x|, the sum's rounding a few ε |x|,
+/// where e^x − 1 by subtraction would keep only |x|/ε of its digits.
+#[inline(always)]
+pub fn exp_m1_small<L: Lane>(x: L) -> L {
+    x * horner(x, &EXP_M1_SMALL_SERIES)
 }
 
 /// `flow::cos_sinc`: (cos x, sin(x)/x) to x¹⁰, good where |x| ≤ `SMALL` (flow.rs).

@@ -2,7 +2,7 @@
 //! every lane type.
 
 use super::super::lane::{LANES, Lane};
-use super::{atan2, cbrt, exp};
+use super::{atan2, cbrt, exp, exp_m1_small};
 use wide::f64x4;
 
 /// splitmix64 as a unit stream: the same points on every run.
@@ -228,4 +228,28 @@ fn avx_and_portable_math_agree_bit_for_bit() {
         let bits = |r: [[f64; LANES]; 5]| r.map(|a| a.map(f64::to_bits));
         assert_eq!(bits(avx), bits(portable), "at {a:?}, {b:?}");
     }
+}
+
+/// `exp_m1_small` is libm's `exp_m1` to 2 ulp over |x| < 1e-3 (where the kernel takes it:
+/// the short contacts' e^{rτ} − 1), sub-normal arguments and ±0 included; e^x − 1 by
+/// subtraction would be off by up to ε/|x| relative there.
+#[test]
+fn exp_m1_small_is_libms_to_two_ulp() {
+    let mut xs: Vec<f64> = units(31, 100_000)
+        .iter()
+        .map(|u| (u - 0.5) * 2e-3)
+        .collect();
+    xs.extend(
+        units(32, 20_000)
+            .iter()
+            .map(|u| 10f64.powf(-300.0 + 297.0 * u)),
+    );
+    xs.extend([0.0, -0.0, 1e-310, -1e-310, 9.99e-4, -9.99e-4]);
+    let got = in_lanes(&xs, exp_m1_small);
+    let worst = xs
+        .iter()
+        .zip(&got)
+        .map(|(&x, &g)| ulps(g, x.exp_m1()))
+        .fold(0.0, f64::max);
+    assert!(worst <= 2.0, "{worst} ulp");
 }
