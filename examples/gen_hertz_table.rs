@@ -1,11 +1,15 @@
 //! Writes the Hertz table `src/solver/table/hertz.bin` (issue 30 item 1; docs/numerics.md):
 //! for each patch of `table::GRID`, the reference (the Taylor steps without step limit or
 //! stiffness cut) at its Chebyshev–Lobatto nodes, then at the points between them, where the
-//! interpolant's error is measured; a patch whose error exceeds `table::TOLERANCE`, or where
-//! the reference does not answer, is stored as not kept (the Taylor steps answer there).
+//! interpolant's error is measured; a patch whose error exceeds `table::TOLERANCE` is split in
+//! four, down to ⅛ decade (`MAX_LEVEL`), and each part kept where it is within it; where the
+//! reference does not answer, or a square at the last level is not within it, the square is
+//! stored as not kept (the Taylor steps answer there).
 //!
 //! ```text
 //! cargo run --release --example gen_hertz_table [-- OUT]            the table (default path)
+//! cargo run --release --example gen_hertz_table -- --reuse OLD [OUT]   the same, the squares
+//!                     OLD keeps within the tolerance taken from it, not computed again
 //! cargo run --release --example gen_hertz_table -- --probe U W D N  one patch, side D decades,
 //!                                                                   degree N, from (U, W)
 //! cargo run --release --example gen_hertz_table -- --line U0 W0 U1 W1 N  the reference
@@ -15,22 +19,26 @@
 //! cargo run --release --example gen_hertz_table -- --coverage   which path answers the cells
 //!                     of the normalized Hertz map (λ, ζ = 0.01 … 100) and the presets
 //! cargo run --release --example gen_hertz_table -- --errors N   the table against the
-//!                     reference at N seeded points of the kept patches: the distribution
+//!                     reference at N seeded points of the kept squares: the distribution
 //! ```
 
-use bouncelab::solver::table::{self, GRID, Grid, OUTPUTS, Patch, cheb};
+use bouncelab::solver::table::{self, Cell, GRID, Grid, OUTPUTS, Patch, cheb};
 use rayon::prelude::*;
 use std::time::Instant;
 
-/// The reference at the nodes of patch (iu, iw), ln of each output, output by output.
-fn node_values(grid: &Grid, iu: usize, iw: usize) -> Option<Vec<f64>> {
+/// How many times a patch is halved at most: ½ decade → ¼ → ⅛. A third halving (1/16
+/// decade) kept 2.8 patches' area more for 1.6 MB more (5.9 MB in all; BENCHMARKS.md).
+const MAX_LEVEL: u32 = 2;
+
+/// The reference at the nodes of square `c`, ln of each output, output by output.
+fn node_values(grid: &Grid, c: &Cell) -> Option<Vec<f64>> {
     let xs = cheb::lobatto(grid.degree);
     let m = xs.len();
     let nodes: Vec<(usize, usize)> = (0..m).flat_map(|i| (0..m).map(move |j| (i, j))).collect();
     let at: Vec<[f64; OUTPUTS]> = nodes
         .par_iter()
         .map(|&(i, j)| {
-            let (l, z) = grid.point(iu, iw, xs[i], xs[j]);
+            let (l, z) = grid.cell_point(c, xs[i], xs[j]);
             table::reference(l, z)
         })
         .collect::<Option<_>>()?;
@@ -41,10 +49,10 @@ fn node_values(grid: &Grid, iu: usize, iw: usize) -> Option<Vec<f64>> {
     )
 }
 
-/// The largest error of the patch's interpolant at the points between its nodes (∞ where the
-/// reference does not answer).
-fn patch_error(grid: &Grid, iu: usize, iw: usize, values: &[f64]) -> f64 {
-    let c = table::coefficients(values, grid.degree);
+/// The largest error of the square's interpolant at the points between its nodes (∞ where
+/// the reference does not answer).
+fn patch_error(grid: &Grid, c: &Cell, values: &[f64]) -> f64 {
+    let coef = table::coefficients(values, grid.degree);
     let xs = cheb::between(grid.degree);
     let points: Vec<(f64, f64)> = xs
         .iter()
@@ -53,49 +61,88 @@ fn patch_error(grid: &Grid, iu: usize, iw: usize, values: &[f64]) -> f64 {
     points
         .par_iter()
         .map(|&(x, y)| {
-            let (l, z) = grid.point(iu, iw, x, y);
+            let (l, z) = grid.cell_point(c, x, y);
             table::reference(l, z).map_or(f64::INFINITY, |r| {
-                table::error(&table::interpolate(&c, grid.degree, x, y), &r)
+                table::error(&table::interpolate(&coef, grid.degree, x, y), &r)
             })
         })
         .reduce(|| 0.0, f64::max)
 }
 
-/// The stiffness 2ζ̂(1.6 + λ̂)·3.2 at the patch's stiffest corner (`taylor::summary`'s
-/// measure); past the reference's steps at ≈ 7 of it a step, the patch is not tried.
-fn too_stiff(grid: &Grid, iu: usize, iw: usize) -> bool {
-    let (l, z) = grid.point(iu, iw, 1.0, 1.0);
+/// The stiffness 2ζ̂(1.6 + λ̂)·3.2 at the square's stiffest corner (`taylor::summary`'s
+/// measure); past the reference's steps at ≈ 7 of it a step, the square is not tried.
+fn too_stiff(grid: &Grid, c: &Cell) -> bool {
+    let (l, z) = grid.cell_point(c, 1.0, 1.0);
     2.0 * z * (1.6 + l) * 3.2 / 7.0 > table::REFERENCE_STEPS as f64
 }
 
-/// Whether the reference answers at the patch's four corners (where it fails, it mostly fails
-/// there first: the creep is longest, the stiffness largest at a corner).
-fn corners_answer(grid: &Grid, iu: usize, iw: usize) -> bool {
+/// Whether the reference answers at the square's four corners (where it fails, it mostly
+/// fails there first: the creep is longest, the stiffness largest at a corner).
+fn corners_answer(grid: &Grid, c: &Cell) -> bool {
     [(1.0, 1.0), (-1.0, 1.0), (1.0, -1.0), (-1.0, -1.0)]
         .par_iter()
         .all(|&(x, y)| {
-            let (l, z) = grid.point(iu, iw, x, y);
+            let (l, z) = grid.cell_point(c, x, y);
             table::reference(l, z).is_some()
         })
 }
 
-fn build(grid: &Grid, iu: usize, iw: usize) -> Patch {
-    let values = if too_stiff(grid, iu, iw) || !corners_answer(grid, iu, iw) {
+/// The square `c` as a whole: kept where its error is within the tolerance.
+fn build(grid: &Grid, c: &Cell) -> Patch {
+    let values = if too_stiff(grid, c) || !corners_answer(grid, c) {
         None
     } else {
-        node_values(grid, iu, iw)
+        node_values(grid, c)
     };
     let Some(values) = values else {
         return Patch {
             error: f64::INFINITY,
             values: None,
+            parts: Vec::new(),
         };
     };
-    let error = patch_error(grid, iu, iw, &values);
+    let error = patch_error(grid, c, &values);
     Patch {
         error,
         values: (error <= table::TOLERANCE).then_some(values),
+        parts: Vec::new(),
     }
+}
+
+/// The square `c`, split in four where it is not within the tolerance as a whole but its
+/// error was measured (a finite error: the reference answers throughout; where it does not,
+/// the stiff corner and the long creeps, the parts would not either), to `MAX_LEVEL`; a
+/// split none of whose parts is kept is not stored. `old` is the same square in an earlier
+/// file (`--reuse`): a square kept there within the tolerance is taken as it is (the same
+/// reference at the same nodes: tests/hertz_table.rs), a split one's error is not measured
+/// again.
+fn build_tree(grid: &Grid, c: Cell, old: Option<&Patch>) -> Patch {
+    let reused =
+        old.filter(|o| o.values.is_some() && o.parts.is_empty() && o.error <= table::TOLERANCE);
+    if let Some(o) = reused {
+        return o.clone();
+    }
+    let whole = match old {
+        Some(o) if !o.parts.is_empty() => Patch {
+            error: o.error,
+            values: None,
+            parts: Vec::new(),
+        },
+        _ => build(grid, &c),
+    };
+    if whole.values.is_some() || c.level >= MAX_LEVEL || !whole.error.is_finite() {
+        return whole;
+    }
+    let parts: Vec<Patch> = (0..4)
+        .map(|k| build_tree(grid, c.part(k), old.and_then(|o| o.parts.get(k))))
+        .collect();
+    if parts
+        .iter()
+        .all(|p| p.values.is_none() && p.parts.is_empty())
+    {
+        return whole;
+    }
+    Patch { parts, ..whole }
 }
 
 fn probe(args: &[String]) {
@@ -110,10 +157,10 @@ fn probe(args: &[String]) {
         dw: num(2),
     };
     let t = Instant::now();
-    let p = build(&grid, 0, 0);
+    let p = build(&grid, &Cell::patch(0, 0));
     if let Some(v) = &p.values {
         worst(&grid, v);
-    } else if let Some(v) = node_values(&grid, 0, 0) {
+    } else if let Some(v) = node_values(&grid, &Cell::patch(0, 0)) {
         worst(&grid, &v);
     }
     println!(
@@ -141,6 +188,16 @@ fn main() {
         Some("--errors") => return errors(&args[1..]),
         _ => {}
     }
+    // `--reuse OLD [OUT]`: the squares kept in OLD within the tolerance taken as they are
+    let (old, args) = match args.first().map(String::as_str) {
+        Some("--reuse") => {
+            let bytes = std::fs::read(&args[1]).expect("reading the old table");
+            let (grid, patches) = table::decode(&bytes).expect("the old table reads");
+            assert_eq!(grid, GRID, "the old table is on another grid");
+            (Some(patches), &args[2..])
+        }
+        _ => (None, &args[..]),
+    };
     let out = args
         .first()
         .cloned()
@@ -150,12 +207,17 @@ fn main() {
     for iu in 0..GRID.nu {
         for iw in 0..GRID.nw {
             let t = Instant::now();
-            let p = build(&GRID, iu, iw);
+            let o = old.as_ref().map(|o| &o[iu * GRID.nw + iw]);
+            let p = build_tree(&GRID, Cell::patch(iu, iw), o);
             let (l, z) = GRID.point(iu, iw, -1.0, -1.0);
+            let leaves = table::leaves(std::slice::from_ref(&p), 1);
+            let kept = leaves.iter().filter(|(_, q)| q.values.is_some());
+            let area: f64 = kept.map(|(c, _)| 0.25f64.powi(c.level as i32)).sum::<f64>() + 0.0;
             println!(
-                "λ̂ {l:9.3e} ζ̂ {z:9.3e}: {} error {:.2e} ({:.2} s)",
-                if p.values.is_some() { "kept" } else { "OUT " },
+                "λ̂ {l:9.3e} ζ̂ {z:9.3e}: error {:.2e}, {} squares, {:.4} of it kept ({:.2} s)",
                 p.error,
+                leaves.len(),
+                area,
                 t.elapsed().as_secs_f64()
             );
             patches.push(p);
@@ -163,10 +225,16 @@ fn main() {
     }
     let bytes = table::encode(&GRID, &patches);
     std::fs::write(&out, &bytes).expect("writing the table");
-    let kept = patches.iter().filter(|p| p.values.is_some()).count();
+    let leaves = table::leaves(&patches, GRID.nw);
+    let kept: Vec<_> = leaves.iter().filter(|(_, p)| p.values.is_some()).collect();
+    let area: f64 = kept.iter().map(|(c, _)| 0.25f64.powi(c.level as i32)).sum();
+    let by_level: Vec<usize> = (0..=MAX_LEVEL)
+        .map(|l| kept.iter().filter(|(c, _)| c.level == l).count())
+        .collect();
     println!(
-        "{out}: {} bytes, {kept} of {} patches kept, {:.1} s",
+        "{out}: {} bytes, {} squares kept (by level {by_level:?}), {area:.4} of {} patches' area, {:.1} s",
         bytes.len(),
+        kept.len(),
         patches.len(),
         start.elapsed().as_secs_f64()
     );
@@ -269,14 +337,12 @@ fn coverage() {
     }
 }
 
-/// `--errors N`: `table::error` at N seeded points, log-uniform inside kept patches chosen
-/// at random (tests/hertz_table.rs's draw), as quantiles.
+/// `--errors N`: `table::error` at N seeded points, log-uniform over the area the table
+/// answers, as quantiles; and how many stored squares were measured within 1e-12 … 1e-10.
 fn errors(args: &[String]) {
     let n: usize = args[0].parse().expect("a count");
     let (_, patches) = table::stored().expect("the table reads");
-    let kept: Vec<usize> = (0..patches.len())
-        .filter(|&i| patches[i].values.is_some())
-        .collect();
+    let leaves = table::leaves(&patches, GRID.nw);
     let mut state = 0x7ab1_e001_u64;
     let mut u = move || {
         state ^= state << 13;
@@ -284,18 +350,21 @@ fn errors(args: &[String]) {
         state ^= state << 17;
         (state >> 11) as f64 / (1u64 << 53) as f64
     };
-    let mut e: Vec<f64> = (0..n)
-        .map(|_| {
-            let patch = kept[(u() * kept.len() as f64) as usize];
-            let (iu, iw) = (patch / GRID.nw, patch % GRID.nw);
-            let (l, z) = GRID.point(iu, iw, 2.0 * u() - 1.0, 2.0 * u() - 1.0);
-            let t = table::hertz_hat(l, z).expect("a kept patch answers");
-            table::reference(l, z).map_or(f64::INFINITY, |r| table::error(&t, &r))
-        })
-        .collect();
-    let measured = |x: f64| patches.iter().filter(|p| p.error <= x).count();
+    // uniform over the area the table answers: a uniform point of the grid, drawn again
+    // until the table answers there (the first table's draw, a kept patch then a point in
+    // it, was the same distribution: its squares were all of one size)
+    let span = |x0: f64, d: f64, n: usize, t: f64| 10f64.powf(x0 + d * n as f64 * t);
+    let mut e: Vec<f64> = Vec::with_capacity(n);
+    while e.len() < n {
+        let l = span(GRID.u0, GRID.du, GRID.nu, u());
+        let z = span(GRID.w0, GRID.dw, GRID.nw, u());
+        if let Some(t) = table::hertz_hat(l, z) {
+            e.push(table::reference(l, z).map_or(f64::INFINITY, |r| table::error(&t, &r)));
+        }
+    }
+    let measured = |x: f64| leaves.iter().filter(|(_, p)| p.error <= x).count();
     println!(
-        "patches measured within 1e-12: {}, 1e-11: {}, 1e-10 (kept): {}",
+        "squares measured within 1e-12: {}, 1e-11: {}, 1e-10: {}",
         measured(1e-12),
         measured(1e-11),
         measured(1e-10)

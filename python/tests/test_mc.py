@@ -122,18 +122,26 @@ def test_dask_gives_the_single_process_answer(client):
     assert bouncelab.dask.monte_carlo(client, **{**kw, "seed": 24}, chunk=5_000) != one
 
 
-def test_hertz_samples_of_a_tabulated_ball_count_as_cheap_ones(client):
+def test_hertz_samples_of_a_tabulated_ball_count_as_cheap_ones(client, tmp_path):
     """Under Hertz the work limit counts a sample of a ball the Hertz table answers as 1/40 of
     an impact (docs/scale.md): golf's 30 000 run, in one call and through Dask, whose client
-    checks a chunk as its worker does; baseball's cell is outside the table, a sample counts a
-    whole impact, and 30 000 (more than 25 000) are refused."""
+    checks a chunk as its worker does; a ball whose cell is outside the table (baseball's K_r
+    × 10⁶, a user preset: λ̂ past the grid; baseball itself is in the table since its kink
+    band was split) counts a whole impact a sample, and 30 000 (more than 25 000) are
+    refused."""
     import bouncelab.dask
 
     kw = dict(preset="golf", vary=VARY, samples=30_000, seed=5, law="hertz")
     one = bouncelab.monte_carlo(**kw)
     assert bouncelab.dask.monte_carlo(client, **kw, chunk=30_000) == one
+    presets = tmp_path / "config" / "bouncelab" / "presets"
+    presets.mkdir(parents=True)
+    baseball = (ROOT / "presets" / "baseball.toml").read_text()
+    off_table = baseball.replace('name = "baseball"', 'name = "off-table"')
+    off_table = off_table.replace("k_r = 4.2e5", "k_r = 4.2e11")
+    (presets / "off-table.toml").write_text(off_table)
     with pytest.raises(ValueError, match="too much work: 30000 samples is 30000 hertz-law"):
-        bouncelab.monte_carlo(**{**kw, "preset": "baseball"})
+        bouncelab.monte_carlo(**{**kw, "preset": "off-table"})
 
 
 def test_dask_without_a_client_uses_dasks_own_scheduler():

@@ -4,17 +4,21 @@
 //! ȳ at separation — is a smooth function of (log λ̂, log ζ̂). The table holds each one's
 //! logarithm as a Chebyshev interpolant of degree `GRID.degree` on square patches of the
 //! (log₁₀ λ̂, log₁₀ ζ̂) plane; an impact is then two logarithms, two bases and five sums.
+//! A patch not within [`TOLERANCE`] as a whole is split in four (a quadtree, [`Cell`]), and
+//! each part kept where it is within it: the parts reach the kink of F̂_m and ẑ_m from both
+//! sides (docs/numerics.md).
 //!
 //! **Generated, verified.** `cargo run --release --example gen_hertz_table` (docs/numerics.md)
 //! computes the node values with the Taylor steps without step limit or stiffness cut
 //! ([`crate::solver::taylor::hertz_reference`]), measures each patch's error at the points
-//! between its nodes against the same reference, and keeps a patch only where that error is
-//! within [`TOLERANCE`] (`error` says how it is measured). The file is `hertz.bin`
-//! (`format`). tests/hertz_table.rs re-computes seeded nodes (they must equal the file's),
-//! and meets the reference to 1e-9 at 1 000 seeded points off the nodes.
+//! between its nodes against the same reference, and keeps a patch (or part) only where that
+//! error is within [`TOLERANCE`] (`error` says how it is measured). The file is `hertz.bin`
+//! (`format`, version 2). tests/hertz_table.rs re-computes seeded nodes of patches and parts
+//! (they must equal the file's), and meets the reference to 1e-11 at 1 000 seeded points off
+//! the nodes of the kept squares.
 //!
-//! **Where it answers.** Inside the grid, in a kept patch; elsewhere (λ̂ = 0, far out, a
-//! patch where e → 0 or the reference runs out of steps) [`summary`] hands the impact to the
+//! **Where it answers.** Inside the grid, in a kept patch or part; elsewhere (λ̂ = 0, far
+//! out, a square across the kink, where e → 0 or the reference runs out of steps) [`summary`] hands the impact to the
 //! Taylor steps and `None` from them to the adaptive solver, as before.
 
 pub mod cheb;
@@ -30,8 +34,9 @@ use std::sync::OnceLock;
 
 /// The outputs a node holds: e, F̂_m, t̂_f, ẑ_m and ȳ at separation (Hertz scale).
 pub const OUTPUTS: usize = 5;
-/// The largest error a kept patch showed between its nodes (`error`).
-pub const TOLERANCE: f64 = 1e-10;
+/// The largest error a kept patch (or part) showed between its nodes (`error`): 1e-12,
+/// issue 30's precision (the first table kept patches to 1e-10).
+pub const TOLERANCE: f64 = 1e-12;
 /// The reference's step limit. The steps number about the stiffness 2ζ̂(1.6 + λ̂)·3.2 over 7
 /// (BENCHMARKS.md: 1 095 steps at (30, 40)), and a creep's length times 2ζ̂·1.6 over 7: this
 /// reaches a stiffness of 2·10⁵ (ζ̂λ̂ ≈ 3·10⁴, past the explorer's Hertz maps) at some 60 ms
@@ -69,15 +74,64 @@ pub const GRID: Grid = Grid {
     dw: 0.5,
 };
 
+/// A square of the grid: patch (`iu`, `iw`), or at `level` ℓ > 0 the part (`a`, `b`) of it,
+/// a, b < 2^ℓ, of side 2^−ℓ of the patch's (the quadtree of `Patch::parts`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Cell {
+    /// The patch along u = log₁₀ λ̂.
+    pub iu: usize,
+    /// The patch along w = log₁₀ ζ̂.
+    pub iw: usize,
+    /// How many times the patch was halved to reach this square.
+    pub level: u32,
+    /// The part along u, from the patch's lower edge, in sides of this square.
+    pub a: usize,
+    /// The part along w.
+    pub b: usize,
+}
+
+impl Cell {
+    /// The whole patch (iu, iw).
+    pub fn patch(iu: usize, iw: usize) -> Cell {
+        Cell {
+            iu,
+            iw,
+            level: 0,
+            a: 0,
+            b: 0,
+        }
+    }
+
+    /// Part `k` of this square halved both ways, `Patch::parts`' order: k = 2·(upper half in
+    /// u) + (upper half in w).
+    pub fn part(&self, k: usize) -> Cell {
+        Cell {
+            level: self.level + 1,
+            a: 2 * self.a + k / 2,
+            b: 2 * self.b + k % 2,
+            ..*self
+        }
+    }
+}
+
 impl Grid {
     /// (λ̂, ζ̂) at the local coordinates (x, y) ∈ [−1, 1]² of patch (iu, iw).
     pub fn point(&self, iu: usize, iw: usize, x: f64, y: f64) -> (f64, f64) {
-        let u = self.u0 + self.du * (iu as f64 + 0.5 * (x + 1.0));
-        let w = self.w0 + self.dw * (iw as f64 + 0.5 * (y + 1.0));
+        self.cell_point(&Cell::patch(iu, iw), x, y)
+    }
+
+    /// (λ̂, ζ̂) at the local coordinates (x, y) ∈ [−1, 1]² of the square `c`. At level 0 the
+    /// same operations as before the parts (s = 1, a = 0 leave every bit), so the whole
+    /// patches' nodes are the first table's.
+    pub fn cell_point(&self, c: &Cell, x: f64, y: f64) -> (f64, f64) {
+        let s = 0.5f64.powi(c.level as i32);
+        let u = self.u0 + self.du * (c.iu as f64 + s * (c.a as f64 + 0.5 * (x + 1.0)));
+        let w = self.w0 + self.dw * (c.iw as f64 + s * (c.b as f64 + 0.5 * (y + 1.0)));
         (10f64.powf(u), 10f64.powf(w))
     }
 
-    /// The patch holding (λ̂, ζ̂), its index and the local coordinates there; `None` outside.
+    /// The patch holding (λ̂, ζ̂), its index and the point's place in it, (fu, fw) ∈ [0, 1]²
+    /// from its lower corner; `None` outside.
     fn locate(&self, lambda_hat: f64, zeta_hat: f64) -> Option<(usize, f64, f64)> {
         let fu = (lambda_hat.log10() - self.u0) / self.du;
         let fw = (zeta_hat.log10() - self.w0) / self.dw;
@@ -89,10 +143,26 @@ impl Grid {
             (fu as usize).min(self.nu - 1),
             (fw as usize).min(self.nw - 1),
         );
-        let x = 2.0 * (fu - iu as f64) - 1.0;
-        let y = 2.0 * (fw - iw as f64) - 1.0;
-        Some((iu * self.nw + iw, x, y))
+        Some((iu * self.nw + iw, fu - iu as f64, fw - iw as f64))
     }
+}
+
+/// Every square the table stores as a whole (a patch not split, or a part not split
+/// further), with its cell, patch by patch (log λ̂ outer), each patch's parts in order.
+pub fn leaves(patches: &[Patch], nw: usize) -> Vec<(Cell, &Patch)> {
+    fn walk<'a>(c: Cell, p: &'a Patch, out: &mut Vec<(Cell, &'a Patch)>) {
+        if p.parts.is_empty() {
+            out.push((c, p));
+        }
+        for (k, q) in p.parts.iter().enumerate() {
+            walk(c.part(k), q, out);
+        }
+    }
+    let mut out = Vec::new();
+    for (i, p) in patches.iter().enumerate() {
+        walk(Cell::patch(i / nw, i % nw), p, &mut out);
+    }
+    out
 }
 
 /// The outputs of a summary, in the table's order.
@@ -160,10 +230,54 @@ pub fn stored() -> Result<(Grid, Vec<Patch>), String> {
     decode(DATA)
 }
 
-/// The table ready to evaluate: each kept patch's coefficients, laid out for `kernel`.
+/// A patch (or part) ready to evaluate.
+enum Node {
+    /// The table does not answer here.
+    Out,
+    /// A kept square's coefficients, laid out for `kernel`.
+    Kept(Box<kernel::Block>),
+    /// A square split in four, `Patch::parts`' order.
+    Split(Box<[Node; 4]>),
+}
+
+impl Node {
+    fn of(p: &Patch, degree: usize) -> Node {
+        if let [a, b, c, d] = &p.parts[..] {
+            let part = |q| Node::of(q, degree);
+            return Node::Split(Box::new([part(a), part(b), part(c), part(d)]));
+        }
+        p.values.as_ref().map_or(Node::Out, |v| {
+            Node::Kept(kernel::block(&coefficients(v, degree)))
+        })
+    }
+
+    /// The kept square holding the point at (fu, fw) ∈ [0, 1]² of this one, and the local
+    /// coordinates there. Halving is exact in binary: (fu, fw) → 2f or 2f − 1 loses no bit,
+    /// so an unsplit patch gets the first table's (x, y) = (2fu − 1, 2fw − 1).
+    fn find(&self, mut fu: f64, mut fw: f64) -> Option<(&kernel::Block, f64, f64)> {
+        let mut node = self;
+        loop {
+            match node {
+                Node::Out => return None,
+                Node::Kept(b) => return Some((b, 2.0 * fu - 1.0, 2.0 * fw - 1.0)),
+                Node::Split(parts) => {
+                    let (hu, hw) = (fu >= 0.5, fw >= 0.5);
+                    fu = 2.0 * fu - f64::from(u8::from(hu));
+                    fw = 2.0 * fw - f64::from(u8::from(hw));
+                    node = &parts[2 * usize::from(hu) + usize::from(hw)];
+                }
+            }
+        }
+    }
+}
+
+/// The table ready to evaluate: the file as read, and each patch's tree of kept squares made
+/// from it at the patch's first use (the transforms were 4.9·10⁷ of the 7.5·10⁷ instructions
+/// of reading the first table at once, and a process mostly meets a few patches).
 struct Table {
     grid: Grid,
-    patches: Vec<Option<Box<kernel::Block>>>,
+    stored: Vec<Patch>,
+    patches: Vec<OnceLock<Node>>,
 }
 
 /// The table, read once; `None` when the file does not read or is not on [`GRID`] (then
@@ -172,25 +286,24 @@ fn table() -> Option<&'static Table> {
     static TABLE: OnceLock<Option<Table>> = OnceLock::new();
     TABLE
         .get_or_init(|| {
-            let (grid, patches) = stored().ok().filter(|(g, _)| *g == GRID)?;
-            let patches = patches
-                .iter()
-                .map(|p| {
-                    let v = p.values.as_ref()?;
-                    Some(kernel::block(&coefficients(v, grid.degree)))
-                })
-                .collect();
-            Some(Table { grid, patches })
+            let (grid, stored) = stored().ok().filter(|(g, _)| *g == GRID)?;
+            let patches = stored.iter().map(|_| OnceLock::new()).collect();
+            Some(Table {
+                grid,
+                stored,
+                patches,
+            })
         })
         .as_ref()
 }
 
-/// The outputs at (λ̂, ζ̂) from the table, `None` outside its grid or in a patch it does not
-/// keep: [`interpolate`]'s bits, by the five interpolants at once (`kernel`).
+/// The outputs at (λ̂, ζ̂) from the table, `None` outside its grid or in a square it does
+/// not keep: [`interpolate`]'s bits, by the five interpolants at once (`kernel`).
 pub fn hertz_hat(lambda_hat: f64, zeta_hat: f64) -> Option<[f64; OUTPUTS]> {
     let t = table()?;
-    let (patch, x, y) = t.grid.locate(lambda_hat, zeta_hat)?;
-    let b = t.patches[patch].as_ref()?;
+    let (patch, fu, fw) = t.grid.locate(lambda_hat, zeta_hat)?;
+    let node = t.patches[patch].get_or_init(|| Node::of(&t.stored[patch], t.grid.degree));
+    let (b, x, y) = node.find(fu, fw)?;
     Some(kernel::eval(b, x, y).map(f64::exp))
 }
 
@@ -204,7 +317,7 @@ pub fn hertz(n: &Normalized) -> Option<Summary> {
     let l = n.kappa.powf(-0.4);
     let [cor, f, t, z, y] = hertz_hat(n.lambda * l * l, n.zeta / l)?;
     Some(Summary {
-        // e < 1 by dissipation; the interpolant's 1e-10 must not carry it past 1
+        // e < 1 by dissipation; the interpolant's 1e-12 must not carry it past 1
         cor: cor.min(1.0),
         max_force: f / l,
         contact_time: t * l,
