@@ -3,6 +3,7 @@
 //! bound on their rounding, all from one [`Point`]: the three transcendental values at τ,
 //! computed once.
 
+use super::estrin;
 use crate::solver::propagator::modes_of;
 use crate::solver::series;
 
@@ -167,19 +168,39 @@ impl Flow {
     /// C S(h)): a few dozen multiplications where [`Flow::at`] takes `sin_cos` and two `exp`.
     /// `None` otherwise.
     pub fn shift(&self, pt: &Point, h: f64) -> Option<Point> {
+        self.shift_by(pt, h, exp_small, cos_sinc)
+    }
+
+    /// [`Flow::shift`] with the same series summed by Estrin's scheme (`super::estrin`): some
+    /// four products deep where Horner's rule chains ten, the same terms, other roundings
+    /// (within 2 ulp). The flattening's refinements take it (`search::refine`, one shift on
+    /// each root's chain); the summary keeps [`Flow::shift`], whose maps goldens pin.
+    pub fn shift_short(&self, pt: &Point, h: f64) -> Option<Point> {
+        self.shift_by(pt, h, estrin::exp_small, estrin::cos_sinc)
+    }
+
+    /// [`Flow::shift`] with eˣ and (cos x, sin(x)/x) for |x| ≤ [`SMALL`] by `exp` and `cos_sinc`.
+    #[inline(always)]
+    fn shift_by(
+        &self,
+        pt: &Point,
+        h: f64,
+        exp: fn(f64) -> f64,
+        cos_sinc: fn(f64) -> (f64, f64),
+    ) -> Option<Point> {
         let rate = self.r.abs().max(self.sigma.abs()).max(self.omega);
         if !(self.omega > 0.0 && rate * h.abs() <= SMALL) {
             return None;
         }
         let (cos, sinc) = cos_sinc(self.omega * h);
-        let (s_h, decay) = (h * sinc, exp_small(-self.sigma * h));
+        let (s_h, decay) = (h * sinc, exp(-self.sigma * h));
         let (ec, es) = (
             pt.ec * cos - self.omega2 * pt.es * s_h,
             pt.es * cos + pt.ec * s_h,
         );
         Some(Point {
             t: pt.t + h,
-            real: pt.real * exp_small(self.r * h),
+            real: pt.real * exp(self.r * h),
             decay: pt.decay * decay,
             ec: ec * decay,
             es: es * decay,
@@ -464,10 +485,10 @@ mod tests {
         }
     }
 
-    /// A point turned by `shift` is the point `at` evaluates there, over an oscillating flow
-    /// (λ = 1, ζ = 0.1; 0.4, 0.3) and a stiff one (5, 20), to a few ε times each exponential's
-    /// argument (`at` takes e^{rτ} from rτ, itself good to ε·|rτ|: what `rounding` counts); a
-    /// step too long for the series is refused.
+    /// A point turned by `shift` or by `shift_short` is the point `at` evaluates there, over
+    /// an oscillating flow (λ = 1, ζ = 0.1; 0.4, 0.3) and a stiff one (5, 20), to a few ε
+    /// times each exponential's argument (`at` takes e^{rτ} from rτ, itself good to ε·|rτ|:
+    /// what `rounding` counts); a step too long for the series is refused.
     #[test]
     fn a_shifted_point_is_the_point_there() {
         for (lambda, zeta) in [(1.0, 0.1), (0.4, 0.3), (5.0, 20.0)] {
@@ -475,20 +496,26 @@ mod tests {
             let rate = flow.r.abs().max(flow.sigma.abs()).max(flow.omega);
             for (t, f) in [(1.5, 0.1), (3.2, -0.02), (0.7, 0.5), (2.0, -1.0)] {
                 let h = f * SMALL / rate;
-                let (moved, there) = (flow.shift(&flow.at(t), h).unwrap(), flow.at(t + h));
-                let real = 4.0 * (1.0 + flow.r.abs() * t);
-                let pair = 4.0 * (1.0 + (flow.sigma + flow.omega) * t);
-                let size = there.ec.hypot(flow.omega * there.es);
-                let case = format!("λ = {lambda}, ζ = {zeta}, τ = {t}, h = {h}");
-                assert!(close(moved.real, there.real, real), "{case}");
-                assert!(
-                    (moved.ec - there.ec).abs() <= pair * f64::EPSILON * size,
-                    "{case}"
-                );
-                let es = (moved.es - there.es).abs() * flow.omega;
-                assert!(es <= pair * f64::EPSILON * size, "{case}");
+                let there = flow.at(t + h);
+                let shifts = [flow.shift(&flow.at(t), h), flow.shift_short(&flow.at(t), h)];
+                for (moved, how) in shifts.into_iter().zip(["shift", "shift_short"]) {
+                    let moved = moved.unwrap();
+                    let real = 4.0 * (1.0 + flow.r.abs() * t);
+                    let pair = 4.0 * (1.0 + (flow.sigma + flow.omega) * t);
+                    let size = there.ec.hypot(flow.omega * there.es);
+                    let case = format!("{how}: λ = {lambda}, ζ = {zeta}, τ = {t}, h = {h}");
+                    assert!(close(moved.real, there.real, real), "{case}");
+                    let ec = (moved.ec - there.ec).abs();
+                    assert!(ec <= pair * f64::EPSILON * size, "{case}");
+                    let es = (moved.es - there.es).abs() * flow.omega;
+                    assert!(es <= pair * f64::EPSILON * size, "{case}");
+                }
             }
             assert!(flow.shift(&flow.at(1.0), 1.01 * SMALL / rate).is_none());
+            assert!(
+                flow.shift_short(&flow.at(1.0), 1.01 * SMALL / rate)
+                    .is_none()
+            );
         }
     }
 }

@@ -28,6 +28,7 @@
 //! solver. The real root comes from Cardano's formula, polished (`propagator::modes_of`), where the
 //! other two are a complex pair.
 
+mod estrin;
 mod flatten;
 mod flow;
 pub mod lanes;
