@@ -4,7 +4,8 @@
 //! Each phase of docs/model.md §3 is a smooth system with a polynomial right-hand side once
 //! the 3/2 power is written with s = √((z̄ − z̄₀)/b) and time with dτ = s dσ (`power`): the
 //! Hertz loading, the elastic–plastic unloading. The linear branches (`linear`) are linear
-//! systems in τ. Series of order 20 (`poly`) step from phase event to phase event; the events
+//! systems in τ. Series of order 20 (`poly`; order 28 in [`summary`]'s 3/2-power phases,
+//! `POWER_LEN`) step from phase event to phase event; the events
 //! (the turn z̄' = 0, yield z̄ = z̄_p, separation F̄ = 0) are the roots of the step's series, so
 //! no step is repeated and no event is passed.
 //!
