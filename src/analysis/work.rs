@@ -68,7 +68,8 @@ pub enum Nominal {
 
 /// Elastic–plastic samples past yield, each on the Taylor steps, that count as one impact
 /// (of [`cost`] 40): a sample costs 2 of the work's units (a unit some 7 µs, [`LIMIT`] some
-/// 7 s), as the Taylor steps' ≈ 104 000 instructions, 15 µs idle, do (BENCHMARKS.md, "ep6").
+/// 7 s), about what the Taylor steps cost past yield: ≈ 73 000 instructions, 10–11 µs (15 µs
+/// and 105 000 before the order-28 series; BENCHMARKS.md, "Fifth session (ep6)").
 pub const TAYLOR_SAMPLES_PER_IMPACT: u64 = 20;
 
 /// Refuse a Monte Carlo of `samples` samples under `law` whose nominal ball `nominal`
