@@ -239,3 +239,34 @@ fn hertz_samples_of_a_tabulated_ball_count_as_cheap_ones() {
     );
     assert_eq!(run("baseball", "30000").code, 0);
 }
+
+/// Under the elastic–plastic law the work limit counts a sample by its nominal ball's path
+/// (`Ball::check_samples`, `work::check_samples_by`): the superball at its own speed stays
+/// below yield, where the Hertz table answers (1/40 of an impact a sample: 30 000 run,
+/// 1 000 001 refused); at 9.4 m/s it yields and the Taylor steps answer (1/20 a sample:
+/// 30 000 run, 500 001 refused). On the old code every elastic–plastic sample counted a whole
+/// impact and 30 000 were refused.
+#[test]
+fn elastic_plastic_samples_count_by_their_path() {
+    let base = ["mc", "--preset", "superball", "--law", "elastic-plastic"];
+    let run = |v0: &str, samples: &str| {
+        let mut args = base.to_vec();
+        args.extend(["--vary", VARY, "--v0", v0, "--samples", samples]);
+        args.extend(["--format", "json"]);
+        bl(&args)
+    };
+    for v0 in ["3.12", "9.4"] {
+        let o = run(v0, "30000");
+        assert_eq!(o.code, 0, "{v0}: {}", o.stderr);
+        let v: Value = serde_json::from_str(&o.stdout).unwrap();
+        assert_eq!(v["samples"], 30000, "{}", o.stdout);
+    }
+    assert_bad(
+        &run("3.12", "1000001"),
+        &["too much work: 1000001 samples (40 elastic-plastic-law samples of a ball the Hertz"],
+    );
+    assert_bad(
+        &run("9.4", "500001"),
+        &["too much work: 500001 samples (20 elastic-plastic-law samples past yield"],
+    );
+}

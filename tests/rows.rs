@@ -142,6 +142,52 @@ fn a_hertz_row_is_the_tables_answer() {
     assert!(tabulated > 200, "{tabulated}");
 }
 
+/// An elastic–plastic row is `table::summary`'s answer (the Hertz table below yield, the
+/// Taylor steps past it), in SI bit for bit, z_f too — on the old code it was `simulate`'s —
+/// and meets `run`'s adaptive solver at rtol 1e-12 to 1e-9 in e, F_m, t_f and z_m, z_f to
+/// 1e-9 of z_m (as tests/taylor.rs `elastic_plastic_agrees`); where that run is stiff (its
+/// cascade holds e to 1e-7 only, docs/numerics.md) to 1e-6.
+#[test]
+fn an_elastic_plastic_row_is_the_fast_paths_answer() {
+    let law = ContactLaw::ElasticPlastic;
+    let (mut below, mut past, mut worst) = (0, 0, 0.0f64);
+    for p in balls() {
+        let row = impact_row(&p, law).unwrap();
+        let Some(s) = table::summary(&p.normalized(), law).filter(|s| s.cor > 0.0) else {
+            continue;
+        };
+        let w0 = p.omega0();
+        assert!(row.rebound, "{p:?}");
+        assert_eq!(row.cor, s.cor, "{p:?}");
+        assert_eq!(row.max_force, s.max_force * p.mass * p.v0 * w0, "{p:?}");
+        assert_eq!(row.contact_time, s.contact_time / w0, "{p:?}");
+        assert_eq!(row.max_indentation, s.max_indentation * p.v0 / w0, "{p:?}");
+        let z_f = s.permanent_indentation * p.v0 / w0;
+        assert_eq!(row.permanent_indentation, z_f, "{p:?}");
+        below += usize::from(s.steps == 0);
+        past += usize::from(s.permanent_indentation > 0.0);
+        let options = SolveOptions {
+            rtol: 1e-12,
+            ..SolveOptions::default()
+        };
+        let r = simulate(&p, law, &options).unwrap();
+        let t = r.contact_time.unwrap_or(f64::NAN);
+        let got = [
+            row.cor,
+            row.max_force,
+            row.contact_time,
+            row.max_indentation,
+        ];
+        let d = apart(got, [r.cor, r.max_force, t, r.max_indentation])
+            .max((row.permanent_indentation - r.permanent_indentation).abs() / r.max_indentation);
+        let tol = if r.stiff { 1e-6 } else { 1e-9 };
+        assert!(d <= tol, "{p:?}: {d:e} ({row:?} against {r:?})");
+        worst = worst.max(if r.stiff { 0.0 } else { d });
+    }
+    eprintln!("{below} elastic-plastic rows from the table, {past} past yield, worst {worst:e}");
+    assert!(below > 50 && past > 50, "{below} below yield, {past} past");
+}
+
 /// A row against `run`'s answer (`simulate`) to 1e-12 in every field (z_f to 1e-12 of z_m, the
 /// scale of its rounding: Eqs. 18–19 take z_f from z_m with a slope below 1); whether it
 /// came from the flattening's closed form (`map::fast::flattening` answers: e, F̄_m and τ_f

@@ -139,7 +139,9 @@ def impacts(
 ) -> dict[str, Array]:
     """Many impacts (SI), the arguments broadcast as a ufunc's: arrays of the broadcast shape
     ``cor``, ``max_force``, ``contact_time`` (NaN without rebound), ``max_indentation``,
-    ``permanent_indentation`` and ``rebound`` (bool); element i is ``run_params``'s answer."""
+    ``permanent_indentation`` and ``rebound`` (bool); element i is ``run_params``'s answer (to
+    1e-9 under the Hertz and elastic-plastic laws: the Hertz table and the Taylor steps,
+    docs/numerics.md)."""
 
 def sweep_zeta(lambdas: Floats, zetas: Floats, law: Law = "linear") -> dict[str, Array]:
     """COR, F̄_m, τ_f against ζ per λ (columns of ``bouncelab sweep zeta``)."""

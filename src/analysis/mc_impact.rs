@@ -100,8 +100,9 @@ fn one_by_one(p: &ImpactParams, law: ContactLaw) -> Result<Outcome, SolveError> 
 /// domain (both to 1e-12 of the exact solver, tests/taylor.rs); under the Hertz law the Hertz
 /// table, else the Taylor steps (`solver::table::summary`: within 1e-9 of their reference,
 /// the Taylor steps without step limit, and of the adaptive solver at its stated precision,
-/// docs/numerics.md; `hertz_samples_take_the_table`); the elastic–plastic law keeps `run`'s
-/// solver.
+/// docs/numerics.md; `hertz_samples_take_the_table`); under the elastic–plastic law the same
+/// dispatch (the Hertz table below yield, the Taylor steps past it, to 1e-9 of the adaptive
+/// solver: tests/taylor.rs; tests/cli_mc.rs `elastic_plastic_samples_take_the_fast_path`).
 fn fast_one(p: &ImpactParams, law: ContactLaw) -> Option<Summary> {
     let n = p.normalized();
     let short = |t: crate::solver::taylor::Summary| Summary {
@@ -113,9 +114,8 @@ fn fast_one(p: &ImpactParams, law: ContactLaw) -> Option<Summary> {
         ContactLaw::Linear => crate::map::fast::flattening(n.lambda, n.zeta, n.zp_bar)
             .or_else(|| crate::solver::taylor::summary(&n, law).map(short)),
         // e > 0: a ball that leaves (the table and the steps answer only where it does)
-        ContactLaw::Hertz => crate::solver::table::summary(&n, law)
+        ContactLaw::Hertz | ContactLaw::ElasticPlastic => crate::solver::table::summary(&n, law)
             .filter(|t| t.cor > 0.0)
             .map(short),
-        ContactLaw::ElasticPlastic => None,
     }
 }

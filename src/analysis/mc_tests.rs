@@ -206,15 +206,42 @@ fn a_normal_draw_out_of_the_domain_is_named() {
     assert_eq!(run(&ball, &log).len(), 200);
 }
 
-/// The elastic–plastic law runs the solver for each sample: its zero-spread answer is
-/// `run`'s.
+/// An elastic–plastic sample takes `solver::table::summary` (the Hertz table below yield, the
+/// Taylor steps past it): its zero-spread answer is that summary's, bit for bit, and within
+/// 1e-9 of `run`'s adaptive solver (tests/taylor.rs holds both paths to it over the property
+/// domain). The golf ball at its own speed stays below yield, at 10 v0 it yields. On the old
+/// code the samples were `run`'s own (`simulate`), not the summary's bits.
 #[test]
-fn other_laws_run_the_solver() {
-    let ball = golf().with_law(ContactLaw::ElasticPlastic);
-    let s = spec("c=0", Dist::Normal, 3, 1);
-    let st = summarize(&run(&ball, &s));
-    let r = ball.impact().unwrap();
-    assert!((st.cor.mean - r.cor).abs() < 1e-12);
+fn elastic_plastic_samples_take_the_fast_path() {
+    let mut paths = [0usize; 2];
+    for speed in [1.0, 10.0] {
+        let mut ball = golf().with_law(ContactLaw::ElasticPlastic);
+        ball.params.v0 *= speed;
+        let s = spec("c=0", Dist::Normal, 3, 1);
+        let samples = run(&ball, &s);
+        let n = ball.params.normalized();
+        let t = crate::solver::table::summary(&n, ContactLaw::ElasticPlastic)
+            .expect("the golf ball is within the fast path's domain");
+        paths[usize::from(t.steps > 0)] += 1;
+        let w0 = ball.params.omega0();
+        let r = ball.impact().unwrap();
+        for i in 0..3 {
+            assert_eq!(samples.cor[i], t.cor, "{speed} v0");
+            let f = t.max_force * ball.params.mass * ball.params.v0 * w0;
+            assert_eq!(samples.max_force[i], f, "{speed} v0");
+            assert_eq!(samples.contact_time[i], t.contact_time / w0, "{speed} v0");
+        }
+        assert!(!r.stiff);
+        assert!(
+            (samples.cor[0] - r.cor).abs() < 1e-9,
+            "{speed} v0: {t:?} {r:?}"
+        );
+        assert!((samples.max_force[0] / r.max_force - 1.0).abs() < 1e-9);
+        let t_f = r.contact_time.unwrap();
+        assert!((samples.contact_time[0] / t_f - 1.0).abs() < 1e-9);
+    }
+    // one below yield (the table, no steps), one past it (the Taylor steps)
+    assert_eq!(paths, [1, 1]);
 }
 
 /// A Hertz sample takes the Hertz table (`solver::table::summary`): its zero-spread answer is

@@ -38,29 +38,81 @@ pub fn check_samples(samples: usize, law: ContactLaw) -> Result<(), TooMuchWork>
 }
 
 /// [`check_samples`] for a Monte Carlo whose nominal ball the Hertz table answers
-/// (`tabulated`, under the Hertz law): its samples count 1/[`cost`] of an impact each, some
-/// 7 µs of work — a sample the table answers takes some 0.35 µs, one near the table's edge
-/// that it leaves to the Taylor steps some 15 µs (BENCHMARKS.md), so 10⁶ of them are the
-/// limit, against 25 000 for samples the adaptive solver may take.
+/// (`tabulated`: under the Hertz law, or under the elastic–plastic law below yield), as
+/// [`check_samples_by`] counts [`Nominal::Table`]; else as [`Nominal::Solver`].
 pub fn check_samples_of(
     samples: usize,
     law: ContactLaw,
     tabulated: bool,
 ) -> Result<(), TooMuchWork> {
+    let nominal = if tabulated {
+        Nominal::Table
+    } else {
+        Nominal::Solver
+    };
+    check_samples_by(samples, law, nominal)
+}
+
+/// Which path answers a Monte Carlo's nominal ball (`Ball::check_samples` decides): its
+/// samples are counted by what that path costs.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Nominal {
+    /// The adaptive solver may answer: a whole impact a sample.
+    Solver,
+    /// The Hertz table (under the elastic–plastic law: the impact stays below yield, where it
+    /// is the Hertz impact, `solver::taylor::plastic`).
+    Table,
+    /// The Taylor steps, under the elastic–plastic law past yield.
+    TaylorSteps,
+}
+
+/// Elastic–plastic samples past yield, each on the Taylor steps, that count as one impact
+/// (of [`cost`] 40): a sample costs 2 of the work's units (a unit some 7 µs, [`LIMIT`] some
+/// 7 s), about what the Taylor steps cost past yield: ≈ 73 000 instructions, 10–11 µs (15 µs
+/// and 105 000 before the order-28 series; BENCHMARKS.md, "Fifth session (ep6)").
+pub const TAYLOR_SAMPLES_PER_IMPACT: u64 = 20;
+
+/// Refuse a Monte Carlo of `samples` samples under `law` whose nominal ball `nominal`
+/// answers, beyond the limit. A linear-law sample counts 1/[`SAMPLES_PER_IMPACT`] of an
+/// impact. Under Hertz and the elastic–plastic law a sample of a ball the Hertz table answers
+/// counts 1/[`cost`] of an impact, some 7 µs of work — a sample the table answers takes some
+/// 0.35 µs, one the spreads carry onto the Taylor steps some 15 µs (BENCHMARKS.md), so 10⁶
+/// of them are the limit; an elastic–plastic sample past yield counts
+/// 1/[`TAYLOR_SAMPLES_PER_IMPACT`] (500 000 the limit); any other a whole impact (25 000).
+pub fn check_samples_by(
+    samples: usize,
+    law: ContactLaw,
+    nominal: Nominal,
+) -> Result<(), TooMuchWork> {
     let n = samples as u64;
-    let (impacts, what) = match law {
-        ContactLaw::Linear => (
+    let (impacts, what) = match (law, nominal) {
+        (ContactLaw::Linear, _) => (
             n.div_ceil(SAMPLES_PER_IMPACT),
             format!(
                 "{samples} samples ({SAMPLES_PER_IMPACT} linear-law samples count as one impact)"
             ),
         ),
-        ContactLaw::Hertz if tabulated => (
+        (ContactLaw::Hertz, Nominal::Table) => (
             n.div_ceil(cost(law)),
             format!(
                 "{samples} samples ({} Hertz-law samples of a ball the Hertz table answers \
                  count as one impact)",
                 cost(law)
+            ),
+        ),
+        (ContactLaw::ElasticPlastic, Nominal::Table) => (
+            n.div_ceil(cost(law)),
+            format!(
+                "{samples} samples ({} elastic-plastic-law samples of a ball the Hertz table \
+                 answers below yield count as one impact)",
+                cost(law)
+            ),
+        ),
+        (ContactLaw::ElasticPlastic, Nominal::TaylorSteps) => (
+            n.div_ceil(TAYLOR_SAMPLES_PER_IMPACT),
+            format!(
+                "{samples} samples ({TAYLOR_SAMPLES_PER_IMPACT} elastic-plastic-law samples \
+                 past yield count as one impact)"
             ),
         ),
         _ => (n, format!("{samples} samples")),
@@ -244,9 +296,33 @@ mod tests {
             "too much work: 1000001 samples (40 Hertz-law samples of a ball the Hertz table \
              answers count as one impact) is 25001 hertz-law impacts"
         ));
-        // the elastic–plastic law and an untabulated ball keep a whole impact a sample
-        assert!(check_samples_of(25_001, ContactLaw::ElasticPlastic, true).is_err());
+        // an untabulated ball keeps a whole impact a sample
         assert!(check_samples_of(25_001, ContactLaw::Hertz, false).is_err());
+        assert!(check_samples_of(25_001, ContactLaw::ElasticPlastic, false).is_err());
+    }
+
+    #[test]
+    fn elastic_plastic_samples_count_by_their_path() {
+        let ep = ContactLaw::ElasticPlastic;
+        // below yield: the Hertz table's cost, 1/40 of an impact
+        assert!(check_samples_by(1_000_000, ep, Nominal::Table).is_ok());
+        let e = check_samples_by(1_000_001, ep, Nominal::Table).unwrap_err();
+        assert_eq!(e.work, 1_000_040);
+        assert!(e.to_string().starts_with(
+            "too much work: 1000001 samples (40 elastic-plastic-law samples of a ball the \
+             Hertz table answers below yield count as one impact) is 25001"
+        ));
+        // past yield: the Taylor steps', 1/20
+        assert!(check_samples_by(500_000, ep, Nominal::TaylorSteps).is_ok());
+        let e = check_samples_by(500_001, ep, Nominal::TaylorSteps).unwrap_err();
+        assert_eq!(e.work, 1_000_040);
+        assert!(e.to_string().starts_with(
+            "too much work: 500001 samples (20 elastic-plastic-law samples past yield count \
+             as one impact) is 25001 elastic-plastic-law impacts"
+        ));
+        // the solver: a whole impact; the Taylor steps' count is the elastic–plastic law's
+        assert!(check_samples_by(25_001, ep, Nominal::Solver).is_err());
+        assert!(check_samples_by(25_001, ContactLaw::Hertz, Nominal::TaylorSteps).is_err());
     }
 
     #[test]

@@ -91,12 +91,23 @@ impl Ball {
 impl Ball {
     /// Refuse `samples` Monte Carlo samples of this ball beyond the work limit: under Hertz,
     /// samples of a ball the Hertz table answers count as cheap ones
-    /// ([`work::check_samples_of`]; the spreads move a sample off the nominal ball's patch
-    /// rarely, and then onto the Taylor steps, some 15 µs).
+    /// ([`work::check_samples_by`]; the spreads move a sample off the nominal ball's patch
+    /// rarely, and then onto the Taylor steps, some 15 µs); under the elastic–plastic law the
+    /// nominal ball's path decides (`solver::table::summary`: the table below yield, `steps`
+    /// 0; the Taylor steps past it), a sample near yield that the spreads carry past it
+    /// costing the Taylor steps' 15 µs.
     pub fn check_samples(&self, samples: usize) -> Result<(), work::TooMuchWork> {
-        let tabulated = self.law == ContactLaw::Hertz
-            && crate::solver::table::hertz(&self.params.normalized()).is_some();
-        work::check_samples_of(samples, self.law, tabulated)
+        let n = self.params.normalized();
+        let nominal = match self.law {
+            ContactLaw::Hertz if crate::solver::table::hertz(&n).is_some() => work::Nominal::Table,
+            ContactLaw::ElasticPlastic => match crate::solver::table::summary(&n, self.law) {
+                Some(s) if s.steps == 0 => work::Nominal::Table,
+                Some(_) => work::Nominal::TaylorSteps,
+                None => work::Nominal::Solver,
+            },
+            _ => work::Nominal::Solver,
+        };
+        work::check_samples_by(samples, self.law, nominal)
     }
 
     /// The spec that samples this ball's own fit (`bouncelab mc --vary fit`): the multivariate

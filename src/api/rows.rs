@@ -32,8 +32,9 @@ pub struct ImpactRow {
 /// K_p, docs/model.md §3, and no permanent indentation) and the flattening's closed form when
 /// it does (both to 1e-12 of `run`); under Hertz the Hertz table, then the Taylor steps
 /// (within 1e-9 of their reference and of `run` at its solver's stated precision,
-/// docs/numerics.md); else the solver with its default options. tests/rows.rs holds each path
-/// to `run`.
+/// docs/numerics.md); under the elastic–plastic law the same (`solver::table::summary`: the
+/// Hertz table below yield, the Taylor steps past it); else the solver with its default
+/// options. tests/rows.rs holds each path to `run`.
 pub fn impact_row(p: &ImpactParams, law: ContactLaw) -> Result<ImpactRow, SolveError> {
     let fast = if law == ContactLaw::Linear {
         let n = p.normalized();
@@ -73,8 +74,8 @@ fn row_from(
             return Ok(row);
         }
     }
-    if law == ContactLaw::Hertz
-        && let Some(row) = hertz_row(p)
+    if matches!(law, ContactLaw::Hertz | ContactLaw::ElasticPlastic)
+        && let Some(row) = power_law_row(p, law)
     {
         return Ok(row);
     }
@@ -89,14 +90,16 @@ fn row_from(
     })
 }
 
-/// A Hertz row from the Hertz table, else the Taylor steps (`solver::table::summary`), SI as
-/// `run` converts (F = F̄ m v0 ω0, t = τ/ω0, z = z̄ v0/ω0); `None` where neither answers or
-/// the ball does not leave (then `simulate`). Not `run`'s bits: the table is within 1e-9 of
-/// its reference, the Taylor steps without step limit, and of the adaptive solver `run`
-/// takes at that solver's stated precision (docs/numerics.md; tests/rows.rs
-/// `a_hertz_row_is_the_tables_answer`).
-fn hertz_row(p: &ImpactParams) -> Option<ImpactRow> {
-    let s = crate::solver::table::summary(&p.normalized(), ContactLaw::Hertz)?;
+/// A Hertz or elastic–plastic row from `solver::table::summary` (the Hertz table — under the
+/// elastic–plastic law where the impact stays below yield — else the Taylor steps), SI as
+/// `run` converts (F = F̄ m v0 ω0, t = τ/ω0, z = z̄ v0/ω0, z_f too); `None` where neither
+/// answers or the ball does not leave (then `simulate`). Not `run`'s bits: the table is
+/// within 1e-9 of its reference, the Taylor steps without step limit, and both of the
+/// adaptive solver `run` takes at that solver's stated precision (docs/numerics.md;
+/// tests/rows.rs `a_hertz_row_is_the_tables_answer`,
+/// `an_elastic_plastic_row_is_the_fast_paths_answer`).
+fn power_law_row(p: &ImpactParams, law: ContactLaw) -> Option<ImpactRow> {
+    let s = crate::solver::table::summary(&p.normalized(), law)?;
     if s.cor <= 0.0 {
         return None;
     }
@@ -106,7 +109,7 @@ fn hertz_row(p: &ImpactParams) -> Option<ImpactRow> {
         max_force: s.max_force * p.mass * p.v0 * w0,
         contact_time: s.contact_time / w0,
         max_indentation: s.max_indentation * p.v0 / w0,
-        permanent_indentation: 0.0,
+        permanent_indentation: s.permanent_indentation * p.v0 / w0,
         rebound: true,
     })
 }

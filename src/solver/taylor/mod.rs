@@ -4,7 +4,8 @@
 //! Each phase of docs/model.md §3 is a smooth system with a polynomial right-hand side once
 //! the 3/2 power is written with s = √((z̄ − z̄₀)/b) and time with dτ = s dσ (`power`): the
 //! Hertz loading, the elastic–plastic unloading. The linear branches (`linear`) are linear
-//! systems in τ. Series of order 20 (`poly`) step from phase event to phase event; the events
+//! systems in τ. Series of order 20 (`poly`; order 28 in [`summary`]'s 3/2-power phases,
+//! `POWER_LEN`) step from phase event to phase event; the events
 //! (the turn z̄' = 0, yield z̄ = z̄_p, separation F̄ = 0) are the roots of the step's series, so
 //! no step is repeated and no event is passed.
 //!
@@ -57,6 +58,20 @@ const MAX_STEPS: usize = 160;
 const STIFF: f64 = 60.0;
 /// Longest contact followed, in the phase's time unit.
 const TAU_MAX: f64 = 1e3;
+
+/// The 3/2-power phases' series length in [`summary`]: order 28, not the reference's 20
+/// (`poly::ORDER`). A step's cost grows about linearly with the order (the Cauchy products'
+/// O(n²) is not yet the larger part at 20: the evaluations, the step rule and the loop's
+/// overhead are) while the steps fall as ε^{−1/n}: by callgrind over five Hertz impacts
+/// (BENCHMARKS.md, "ep6"), an impact costs 126 000 instructions at order 20 (ε 1e-17),
+/// 109 000 at 28, 101 000 at 28 with ε 1e-16, 92 000 at 28 with [`POWER_EPS`] 1e-15, and more
+/// again at 32. The reference ([`hertz_reference`], from which the Hertz table is built)
+/// keeps order 20 and ε 1e-17, so the table's nodes are unchanged.
+const POWER_LEN: usize = 29;
+/// The 3/2-power phases' truncation per step in [`summary`], relative to the state's scale:
+/// 1e-15, some ten steps of it 1e-14 at most, far inside the 1e-12 at which tests/taylor.rs
+/// holds the steps to the adaptive solver at rtol 1e-14 (`taylor_meets_the_reference_at_a_thousand_points`).
+const POWER_EPS: f64 = 1e-15;
 
 /// ȳ' = 2ζ(F̄ − λȳ) in the units of the run.
 #[derive(Debug, Clone, Copy)]
@@ -137,7 +152,7 @@ fn power_law(n: &Normalized, law: ContactLaw) -> Option<Summary> {
         return None;
     }
     let mut budget = Budget::new();
-    let first = hertz_loading(&sys, zp, &mut budget)?;
+    let first = hertz_loading::<POWER_LEN>(&sys, zp, POWER_EPS, &mut budget)?;
     let (end, z_m, f_m, z_f) = match first.end {
         power::End::Separated(p) => {
             let s = first.s_max;
@@ -169,7 +184,15 @@ fn power_law(n: &Normalized, law: ContactLaw) -> Option<Summary> {
             if unload.b.is_nan() || unload.b <= 0.0 {
                 return None;
             }
-            let last = power::run(&sys, &unload, top, f64::INFINITY, true, &mut budget)?;
+            let last = power::run::<POWER_LEN>(
+                &sys,
+                &unload,
+                top,
+                f64::INFINITY,
+                true,
+                POWER_EPS,
+                &mut budget,
+            )?;
             let power::End::Separated(p) = last.end else {
                 return None;
             };
@@ -179,8 +202,14 @@ fn power_law(n: &Normalized, law: ContactLaw) -> Option<Summary> {
     finish(end, z_m, f_m, z_f, l, &budget)
 }
 
-/// The Hertz loading (ẑ from 0 at unit speed, κ̂ = 1) until separation or yield at ẑ_p.
-fn hertz_loading(sys: &Sys, zp: f64, budget: &mut Budget) -> Option<power::Run> {
+/// The Hertz loading (ẑ from 0 at unit speed, κ̂ = 1) until separation or yield at ẑ_p, by
+/// series of order L − 1 within `eps` a step.
+fn hertz_loading<const L: usize>(
+    sys: &Sys,
+    zp: f64,
+    eps: f64,
+    budget: &mut Budget,
+) -> Option<power::Run> {
     let hertz = power::Branch {
         z0: 0.0,
         b: 1.0,
@@ -192,7 +221,7 @@ fn hertz_loading(sys: &Sys, zp: f64, budget: &mut Budget) -> Option<power::Run> 
         v: 1.0,
         y: 0.0,
     };
-    power::run(sys, &hertz, start, zp.sqrt(), false, budget)
+    power::run::<L>(sys, &hertz, start, zp.sqrt(), false, eps, budget)
 }
 
 /// The Hertz impact in the Hertz scale (κ̂ = 1, unit speed) at (λ̂, ζ̂), by the Taylor steps
@@ -210,7 +239,7 @@ pub fn hertz_reference(lambda_hat: f64, zeta_hat: f64, max_steps: usize) -> Opti
         zeta: zeta_hat,
     };
     let mut budget = Budget::with_steps(max_steps);
-    let first = hertz_loading(&sys, f64::INFINITY, &mut budget)?;
+    let first = hertz_loading::<{ poly::LEN }>(&sys, f64::INFINITY, poly::EPS, &mut budget)?;
     let power::End::Separated(end) = first.end else {
         return None;
     };

@@ -1,6 +1,6 @@
 //! Truncated power series: their values, their first roots on a step, and the step a series
-//! of order [`ORDER`] can take within [`EPS`] (Jorba & Zou's rule, from its last two
-//! coefficients).
+//! of order [`ORDER`] (or any other, by its length) can take within [`EPS`] (or a given
+//! error: Jorba & Zou's rule, from its last two coefficients).
 
 /// The series' order: about −ln ε / 2, where Taylor's method does the least work per unit
 /// of time at a step's error ε (Jorba & Zou, "A software package for the numerical
@@ -16,23 +16,23 @@ pub(super) const EPS: f64 = 1e-17;
 pub(super) type Series = [f64; LEN];
 
 /// Σ c_k h^k (Horner).
-pub(super) fn eval(c: &Series, h: f64) -> f64 {
+pub(super) fn eval<const L: usize>(c: &[f64; L], h: f64) -> f64 {
     c.iter().rev().fold(0.0, |acc, &ck| acc * h + ck)
 }
 
 /// d/dh Σ c_k h^k.
-pub(super) fn eval_d(c: &Series, h: f64) -> f64 {
+pub(super) fn eval_d<const L: usize>(c: &[f64; L], h: f64) -> f64 {
     let mut acc = 0.0f64;
-    for k in (1..LEN).rev() {
+    for k in (1..L).rev() {
         acc = acc * h + k as f64 * c[k];
     }
     acc
 }
 
 /// The series of the derivative (order one less; its last coefficient 0).
-pub(super) fn derivative(c: &Series) -> Series {
-    let mut d = [0.0; LEN];
-    for k in 1..LEN {
+pub(super) fn derivative<const L: usize>(c: &[f64; L]) -> [f64; L] {
+    let mut d = [0.0; L];
+    for k in 1..L {
         d[k - 1] = k as f64 * c[k];
     }
     d
@@ -42,6 +42,12 @@ pub(super) fn derivative(c: &Series) -> Series {
 /// stay below [`EPS`]: h = min over j ∈ {N − 1, N} of (ε / max_i |c_ij|/scale_i)^{1/j}. The
 /// norms are taken first, so that the step costs two `powf` whatever the number of series.
 pub(super) fn step(c: &[Series], scales: &[f64]) -> f64 {
+    step_within(c, scales, EPS)
+}
+
+/// [`step`] for series of any order (their length less one) within the error `eps`.
+pub(super) fn step_within<const L: usize>(c: &[[f64; L]], scales: &[f64], eps: f64) -> f64 {
+    let order = L - 1;
     let norm = |j: usize| {
         c.iter()
             .zip(scales)
@@ -53,16 +59,16 @@ pub(super) fn step(c: &[Series], scales: &[f64]) -> f64 {
         if a == 0.0 {
             f64::INFINITY
         } else {
-            (EPS / a).powf(1.0 / j as f64)
+            (eps / a).powf(1.0 / j as f64)
         }
     };
-    rule(ORDER - 1).min(rule(ORDER))
+    rule(order - 1).min(rule(order))
 }
 
 /// The first h in (0, `end`] where `c(h) = target`, given that `c(0) − target` and
 /// `c(end) − target` differ in sign (or the latter is 0): Newton's steps inside a bracket that
 /// bisection keeps, to the rounding of h.
-pub(super) fn root(c: &Series, target: f64, end: f64) -> f64 {
+pub(super) fn root<const L: usize>(c: &[f64; L], target: f64, end: f64) -> f64 {
     let g = |h: f64| eval(c, h) - target;
     let (mut lo, mut hi) = (0.0, end);
     let (g_lo, g_hi) = (g(lo), g(hi));

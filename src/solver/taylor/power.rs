@@ -12,7 +12,7 @@
 //! separation is a simple zero of s in σ, at which ᾱ' and τ are stationary (dᾱ'/dσ = −a s⁴,
 //! dτ/dσ = s), so the COR and the contact time carry none of the root's error.
 
-use super::poly::{self, LEN, ORDER, Series};
+use super::poly;
 use super::{Budget, Point, Sys};
 
 /// The branch z̄ = z̄₀ + b s², F̄ = a s³.
@@ -42,14 +42,15 @@ pub(super) struct Run {
     pub s_max: f64,
 }
 
-/// The Taylor coefficients of (s, ᾱ', ȳ, τ) at x (Cauchy products, each O(k) at order k).
-fn series(sys: &Sys, br: &Branch, x: [f64; 4]) -> [Series; 4] {
-    let (mut s, mut v, mut y, mut t) = ([0.0; LEN], [0.0; LEN], [0.0; LEN], [0.0; LEN]);
-    let (mut p, mut q, mut yd) = ([0.0; LEN], [0.0; LEN], [0.0; LEN]);
+/// The Taylor coefficients of (s, ᾱ', ȳ, τ) at x to order L − 1 (Cauchy products, each O(k)
+/// at order k).
+fn series<const L: usize>(sys: &Sys, br: &Branch, x: [f64; 4]) -> [[f64; L]; 4] {
+    let (mut s, mut v, mut y, mut t) = ([0.0; L], [0.0; L], [0.0; L], [0.0; L]);
+    let (mut p, mut q, mut yd) = ([0.0; L], [0.0; L], [0.0; L]);
     (s[0], v[0], y[0], t[0]) = (x[0], x[1], x[2], x[3]);
     let two_zeta = 2.0 * sys.zeta;
     let half_b = 0.5 / br.b;
-    for k in 0..ORDER {
+    for k in 0..L - 1 {
         // p = s², q = s³, r = s⁴ = p², sy = s ȳ'
         p[k] = square(&s, k);
         q[k] = (0..=k).map(|i| p[i] * s[k - i]).sum();
@@ -66,7 +67,7 @@ fn series(sys: &Sys, br: &Branch, x: [f64; 4]) -> [Series; 4] {
 }
 
 /// The k-th coefficient of c², by the product's symmetry (half the terms).
-fn square(c: &Series, k: usize) -> f64 {
+fn square<const L: usize>(c: &[f64; L], k: usize) -> f64 {
     let half: f64 = (0..k.div_ceil(2)).map(|i| c[i] * c[k - i]).sum();
     let middle = if k.is_multiple_of(2) {
         c[k / 2] * c[k / 2]
@@ -76,12 +77,13 @@ fn square(c: &Series, k: usize) -> f64 {
     2.0 * half + middle
 }
 
-/// The step the four series allow (each relative to its component's size, at least 1).
-fn step(c: &[Series; 4], x: &[f64; 4]) -> f64 {
-    poly::step(c, &x.map(|xi| xi.abs().max(1.0)))
+/// The step the four series allow within `eps` (each relative to its component's size, at
+/// least 1).
+fn step<const L: usize>(c: &[[f64; L]; 4], x: &[f64; 4], eps: f64) -> f64 {
+    poly::step_within(c, &x.map(|xi| xi.abs().max(1.0)), eps)
 }
 
-fn at(c: &[Series; 4], h: f64) -> [f64; 4] {
+fn at<const L: usize>(c: &[[f64; L]; 4], h: f64) -> [f64; 4] {
     [
         poly::eval(&c[0], h),
         poly::eval(&c[1], h),
@@ -93,13 +95,15 @@ fn at(c: &[Series; 4], h: f64) -> [f64; 4] {
 /// Run the phase from `start` on branch `br` until the ball leaves (s = 0) or, loading, s
 /// reaches `s_yield` (∞: never). `unloading`: the phase starts at the peak (s = 1) and a
 /// rise past it (a reload) is left to the adaptive solver (`None`); loading, every turn's s
-/// is kept in `s_max`. `None` also when the budget runs out.
-pub(super) fn run(
+/// is kept in `s_max`. `None` also when the budget runs out. Series of order L − 1, each
+/// step's truncation within `eps` (`poly::step_within`).
+pub(super) fn run<const L: usize>(
     sys: &Sys,
     br: &Branch,
     start: Point,
     s_yield: f64,
     unloading: bool,
+    eps: f64,
     budget: &mut Budget,
 ) -> Option<Run> {
     let s0 = ((start.z - br.z0) / br.b).max(0.0).sqrt();
@@ -113,8 +117,8 @@ pub(super) fn run(
     };
     loop {
         budget.take()?;
-        let c = series(sys, br, x);
-        let h = step(&c, &x);
+        let c = series::<L>(sys, br, x);
+        let h = step(&c, &x, eps);
         if !(h.is_finite() && h > 0.0) {
             return None;
         }
