@@ -5,8 +5,8 @@
 //! sort puts there (`mc_stats`' `binned_ranks_are_a_full_sorts`). `unbinned` answers where
 //! the range cannot be divided; `quantiles`, selection on a copy, is the tests' reference.
 
-/// The bin of x is ⌊(x − min)·scale⌋ (the last bin closed), which never decreases as x grows (a
-/// subtraction, a product by a positive number and a truncation each keep the order under
+/// The bin of x is ⌊(x − min)·scale⌋ (the last bin closed), which never decreases as x grows
+/// (a subtraction, a product by a positive number and a truncation each keep the order under
 /// rounding), so the values of bin b are the order statistics cum_b … cum_{b+1} − 1 of the
 /// whole (cum_b: the count below bin b). A rank's value is therefore the value of its rank
 /// less cum_b within its bin, found by selection among that bin's values alone.
@@ -118,9 +118,10 @@ fn select_ranks_copy(values: &mut [f64], ranks: &[usize]) -> Vec<f64> {
 }
 
 /// Type-7 quantiles at `percents` (ascending) of `values` (finite, not empty), which are
-/// reordered: the tests' reference for `stats`' (selection on a copy, as before the bins). The order statistics needed are selected by divide and conquer: the middle
-/// rank first, then the ranks below it in the part left of it and those above in the part
-/// right of it, so the work is O(n log k) for k ranks, not O(n k).
+/// reordered: the tests' reference for `stats`' (selection on a copy). The order statistics
+/// needed are selected by divide and conquer: the middle rank first, then the ranks below it
+/// in the part left of it and those above in the part right of it, so the work is
+/// O(n log k) for k ranks, not O(n k).
 #[cfg(test)]
 pub(super) fn quantiles<const K: usize>(values: &mut [f64], percents: &[f64; K]) -> [f64; K] {
     debug_assert!(
