@@ -174,8 +174,8 @@ where
 /// The rows of the balls `params(0) … params(n − 1)` on all cores, four at a time, each ball
 /// checked first (a [`BallError::Param`] naming the field) and solved as [`impact_row`]
 /// solves it, the closed forms in lanes (to 1e-12 of it); on failure the first failing index
-/// and its error, whatever the threads did (the rows are kept in order). The caller applies the work limit
-/// ([`crate::analysis::work::check_samples`]).
+/// and its error, whatever the threads did (the rows are kept in order). The caller applies
+/// the work limit ([`crate::analysis::work::check_samples`]).
 pub fn impact_rows<F>(
     n: usize,
     law: ContactLaw,

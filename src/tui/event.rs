@@ -180,7 +180,8 @@ fn is_suspend(ev: &event::Event) -> bool {
         && k.kind == KeyEventKind::Press)
 }
 
-/// The background threads: COR-vs-speed sweeps, the models view's calibrations, the fits, the map's passes.
+/// The background threads: COR-vs-speed sweeps, the models view's calibrations, the fits, the
+/// map's passes.
 struct Workers {
     sweeps: Worker,
     models: Worker<ModelsRequest>,

@@ -72,8 +72,8 @@ impl Flow {
     }
 
     /// [`Flow::new`], Cardano's cube root taken by `quick_cbrt` (within an ulp of the
-    /// correctly rounded one; Newton's steps polish the root on the cubic either way): the flattening's loading
-    /// (`super::flatten`; the summary keeps `f64::cbrt`, whose maps are pinned by goldens).
+    /// correctly rounded one; Newton's steps polish the root on the cubic either way): the
+    /// flattening's loading (`super::flatten`; the summary keeps `f64::cbrt`, whose maps are pinned by goldens).
     #[inline]
     pub fn new_quick(lambda: f64, zeta: f64) -> Option<Flow> {
         Flow::with_modes(Modes::new(lambda, zeta, quick_cbrt)?, zeta)

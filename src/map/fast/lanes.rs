@@ -15,10 +15,10 @@
 //! |rτ| < 1e-3, e^{rτ} − 1 is its series (`math::exp_m1_small`, as the scalar path's
 //! `exp_m1`). A lane the common path does not settle — the pair does not oscillate (three real
 //! roots), a step too long for the series and the `sin_cos` turn, a root past its lobe (the
-//! bracket search's cases), λ or ζ zero — is handed to the scalar [`super::summary`], whole. The exponential and `atan2`
-//! are the lanes' own (`lanes/math.rs`: within 2 ulp of libm's, the same bits on every machine),
-//! `cbrt` `wide`'s written over the lanes (its bits), `sin_cos` `wide`'s, where the scalar path
-//! calls libm's: the answers agree with the scalar path's to 1e-12 (tests/map_lanes.rs), not
+//! bracket search's cases), λ or ζ zero — is handed to the scalar [`super::summary`], whole.
+//! The exponential and `atan2` are the lanes' own (`lanes/math.rs`: within 2 ulp of libm's,
+//! the same bits on every machine), `cbrt` `wide`'s written over the lanes (its bits),
+//! `sin_cos` `wide`'s, where the scalar path calls libm's: the answers agree with the scalar path's to 1e-12 (tests/map_lanes.rs), not
 //! bit for bit.
 //!
 //! The files: `lane.rs` (what the kernel asks of four f64, and `wide`'s `f64x4` answering it),

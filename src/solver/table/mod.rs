@@ -18,8 +18,9 @@
 //! the nodes of the kept squares.
 //!
 //! **Where it answers.** Inside the grid, in a kept patch or part; elsewhere (λ̂ = 0, far
-//! out, a square across the kink, where e → 0 or the reference runs out of steps) [`summary`] hands the impact to the
-//! Taylor steps and `None` from them to the adaptive solver, as before.
+//! out, a square across the kink, where e → 0 or the reference runs out of steps)
+//! [`summary`] hands the impact to the Taylor steps, and `None` from them to the adaptive
+//! solver.
 
 pub mod cheb;
 mod format;
@@ -35,7 +36,7 @@ use std::sync::OnceLock;
 /// The outputs a node holds: e, F̂_m, t̂_f, ẑ_m and ȳ at separation (Hertz scale).
 pub const OUTPUTS: usize = 5;
 /// The largest error a kept patch (or part) showed between its nodes (`error`): 1e-12,
-/// issue 30's precision (the first table kept patches to 1e-10).
+/// issue 30's precision.
 pub const TOLERANCE: f64 = 1e-12;
 /// The reference's step limit. The steps number about the stiffness 2ζ̂(1.6 + λ̂)·3.2 over 7
 /// (BENCHMARKS.md: 1 095 steps at (30, 40)), and a creep's length times 2ζ̂·1.6 over 7: this
@@ -120,9 +121,10 @@ impl Grid {
         self.cell_point(&Cell::patch(iu, iw), x, y)
     }
 
-    /// (λ̂, ζ̂) at the local coordinates (x, y) ∈ [−1, 1]² of the square `c`. At level 0 the
-    /// same operations as before the parts (s = 1, a = 0 leave every bit), so the whole
-    /// patches' nodes are the first table's.
+    /// (λ̂, ζ̂) at the local coordinates (x, y) ∈ [−1, 1]² of the square `c`. At level 0
+    /// s = 1 and a = b = 0 leave every bit of `point`'s arithmetic for a whole patch, so a
+    /// whole patch's nodes are those of the version-1 file
+    /// (tests/hertz_table.rs, `seeded_nodes_computed_again_equal_the_file`).
     pub fn cell_point(&self, c: &Cell, x: f64, y: f64) -> (f64, f64) {
         let s = 0.5f64.powi(c.level as i32);
         let u = self.u0 + self.du * (c.iu as f64 + s * (c.a as f64 + 0.5 * (x + 1.0)));
@@ -272,8 +274,8 @@ impl Node {
 }
 
 /// The table ready to evaluate: the file as read, and each patch's tree of kept squares made
-/// from it at the patch's first use (the transforms were 4.9·10⁷ of the 7.5·10⁷ instructions
-/// of reading the first table at once, and a process mostly meets a few patches).
+/// from it at the patch's first use (made all at once, the transforms cost some 1.9·10⁸
+/// instructions, BENCHMARKS.md "Fifth session (hertz6)"; a process mostly meets few patches).
 struct Table {
     grid: Grid,
     stored: Vec<Patch>,

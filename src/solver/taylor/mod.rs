@@ -70,7 +70,8 @@ const TAU_MAX: f64 = 1e3;
 const POWER_LEN: usize = 29;
 /// The 3/2-power phases' truncation per step in [`summary`], relative to the state's scale:
 /// 1e-15, some ten steps of it 1e-14 at most, far inside the 1e-12 at which tests/taylor.rs
-/// holds the steps to the adaptive solver at rtol 1e-14 (`taylor_meets_the_reference_at_a_thousand_points`).
+/// holds the steps to the adaptive solver at rtol 1e-14
+/// (`taylor_meets_the_reference_at_a_thousand_points`).
 const POWER_EPS: f64 = 1e-15;
 
 /// ȳ' = 2ζ(F̄ − λȳ) in the units of the run.
