@@ -90,7 +90,7 @@ pub use mc::{McReport, MonteCarlo};
 pub use oblique::{CourtPace, ObliqueSpec, SOLID_INERTIA_FACTOR};
 pub use oblique_fit::{ObliqueFitReport, is_data_error as is_oblique_data_error};
 pub use report::{BallHeader, Energy, FitReport, ImpactReport, MeasuredAt};
-pub use rows::{ImpactRow, impact_row, impact_rows};
+pub use rows::{ImpactRow, impact_row, impact_rows, off_table};
 pub use summary::ImpactSummary;
 pub use sweep::{sweep_zeta, sweep_zeta_watched};
 pub use warnings::{ENERGY_RESIDUAL_MAX, indentation_warning};

@@ -340,3 +340,34 @@ fn the_table_answers_inside_its_kept_patches_only() {
         assert_eq!(table::summary(&n, law), taylor::summary(&n, law));
     }
 }
+
+/// `table::holds` (the lookup alone, by which the work limit counts `bouncelab.impacts`'
+/// elements) is true exactly where `table::hertz` answers: at 20 000 seeded balls
+/// log-uniform over λ, ζ ∈ [1e-5, 1e5] and κ ∈ [0.1, 10] (across the grid's edges and its
+/// gaps), and at the edge cases above.
+#[test]
+fn the_table_holds_a_ball_where_it_answers() {
+    let mut u = uniform(0x5eed_0f_4011);
+    let mut log = |lo: f64, hi: f64| 10f64.powf(lo + (hi - lo) * u());
+    let (mut held, mut out) = (0, 0);
+    for _ in 0..20_000 {
+        let n = ball(log(-5.0, 5.0), log(-5.0, 5.0), log(-1.0, 1.0));
+        let answers = table::hertz(&n).is_some();
+        assert_eq!(table::holds(&n), answers, "{n:?}");
+        if answers { held += 1 } else { out += 1 }
+    }
+    assert!(held > 5_000 && out > 5_000, "held {held}, out {out}");
+    for (l, z, k) in [
+        (0.0, 1.0, 1.0),
+        (1.0, 1.0, 0.0),
+        (1.0, f64::NAN, 1.0),
+        (1.0, 1.0, -1.0),
+    ] {
+        assert!(!table::holds(&ball(l, z, k)) && table::hertz(&ball(l, z, k)).is_none());
+    }
+    let no_flattening_room = Normalized {
+        zp_bar: 0.0,
+        ..ball(1.0, 1.0, 1.0)
+    };
+    assert!(!table::holds(&no_flattening_room));
+}

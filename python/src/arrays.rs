@@ -6,7 +6,7 @@
 
 use crate::{error, law};
 use bouncelab::analysis::work;
-use bouncelab::api::impact_rows;
+use bouncelab::api::{impact_rows, off_table};
 use bouncelab::model::params::ImpactParams;
 use numpy::{PyArray1, PyReadonlyArray1, PyUntypedArrayMethods};
 use pyo3::exceptions::PyValueError;
@@ -100,8 +100,9 @@ pub(crate) fn impacts<'py>(
         .iter()
         .map(|d| d.extract::<usize>())
         .product::<PyResult<usize>>()?;
-    // the work limit before any copy (linear-law impacts count as Monte Carlo samples)
-    work::check_samples(n, law).map_err(|e| error(e.into()))?;
+    // the work limit before any copy, at the least the elements can cost (all in the Hertz
+    // table; linear-law impacts count as Monte Carlo samples), then by what they are below
+    work::check_elements(n, law, 0).map_err(|e| error(e.into()))?;
     let flat = flatten(&arrays, &shape)?;
     let cols: Vec<Column<'_>> = flat
         .iter()
@@ -131,6 +132,8 @@ pub(crate) fn impacts<'py>(
             k_h,
         }
     };
+    let off = py.detach(|| off_table(n, law, params));
+    work::check_elements(n, law, off).map_err(|e| error(e.into()))?;
     let rows = py
         .detach(|| impact_rows(n, law, params))
         .map_err(|(i, e)| {

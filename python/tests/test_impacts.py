@@ -94,3 +94,26 @@ def test_elastic_plastic_rows_yield_and_meet_run_params():
         assert abs(z_f - r.permanent_indentation) <= 1e-9 * r.max_indentation, v
         yielded += z_f > 0
     assert yielded >= 2
+
+
+def test_the_work_limit_counts_elements_the_hertz_table_holds_as_cheap_ones():
+    """Under Hertz an element the Hertz table holds counts 1/40 of an impact, under the
+    elastic-plastic law 1/20, one outside the table a whole impact (docs/guarantees.md):
+    100 000 golf-like elements run under both laws (beyond the 25 000 whole impacts the limit
+    allows), 30 000 balls outside the table (K_r 10⁶ times larger) are refused by count."""
+    ball = dict(m=0.0456, k_p=5.6e5, c=1200.0, k_r=5.6e5, z_p=3e-3)
+    v0 = np.linspace(1.0, 30.0, 100_000)
+    for law in ["hertz", "elastic-plastic"]:
+        out = bouncelab.impacts(v0=v0, law=law, **ball)
+        assert out["cor"].shape == (100_000,)
+        for i in [0, 54_321, 99_999]:
+            same_as_run_params(out, i, 1e-9, v0=v0[i], law=law, **ball)
+    outside = dict(ball, k_r=5.6e11)
+    with pytest.raises(
+        ValueError,
+        match=r"^too much work: 30000 elements \(30000 of them outside the Hertz table, a whole "
+        r"impact each; 40 of the others count as one impact\) is 30000 hertz-law impacts",
+    ):
+        bouncelab.impacts(v0=np.linspace(1.0, 30.0, 30_000), law="hertz", **outside)
+    with pytest.raises(ValueError, match=r"^too much work: 1000001 elements \(40 elements the"):
+        bouncelab.impacts(v0=np.linspace(1.0, 30.0, 1_000_001), law="hertz", **ball)

@@ -120,6 +120,33 @@ pub fn check_samples_by(
     check(impacts as usize, law, &what)
 }
 
+/// Refuse `n` impacts of `bouncelab.impacts` (`api::impact_rows`) under `law` beyond the
+/// limit, `off_table` of them outside the Hertz table (`api::rows::off_table`). A linear-law
+/// impact counts as a Monte Carlo sample ([`check_samples`]). Under Hertz an element the
+/// table holds counts 1/[`cost`] of an impact (the table's 0.3 µs; [`check_samples_by`]'s
+/// `Table`); under the elastic–plastic law 1/[`TAYLOR_SAMPLES_PER_IMPACT`] (below yield it
+/// is the table's, past yield the Taylor steps': counted as the dearer); an element
+/// outside the table a whole impact (the Taylor steps or the adaptive solver).
+pub fn check_elements(n: usize, law: ContactLaw, off_table: usize) -> Result<(), TooMuchWork> {
+    let per_impact = match law {
+        ContactLaw::Linear => return check_samples(n, law),
+        ContactLaw::Hertz => cost(law),
+        ContactLaw::ElasticPlastic => TAYLOR_SAMPLES_PER_IMPACT,
+    };
+    let off = off_table.min(n);
+    let impacts = off as u64 + ((n - off) as u64).div_ceil(per_impact);
+    let what = if off == 0 {
+        // before the lookup (`bouncelab.impacts` asks first at the least they can cost)
+        format!("{n} elements ({per_impact} elements the Hertz table holds count as one impact)")
+    } else {
+        format!(
+            "{n} elements ({off} of them outside the Hertz table, a whole impact each; \
+             {per_impact} of the others count as one impact)"
+        )
+    };
+    check(usize::try_from(impacts).unwrap_or(usize::MAX), law, &what)
+}
+
 /// A request beyond [`LIMIT`]; its message says how much and how to ask for less.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct TooMuchWork {
@@ -299,6 +326,39 @@ mod tests {
         // an untabulated ball keeps a whole impact a sample
         assert!(check_samples_of(25_001, ContactLaw::Hertz, false).is_err());
         assert!(check_samples_of(25_001, ContactLaw::ElasticPlastic, false).is_err());
+    }
+
+    #[test]
+    fn elements_count_by_whether_the_hertz_table_holds_them() {
+        // the linear law: as Monte Carlo samples, ten to an impact
+        assert!(check_elements(10_000_000, ContactLaw::Linear, 0).is_ok());
+        assert!(check_elements(10_000_001, ContactLaw::Linear, 0).is_err());
+        // Hertz: 40 held elements to an impact, one outside the table a whole impact
+        assert!(check_elements(1_000_000, ContactLaw::Hertz, 0).is_ok());
+        assert!(check_elements(1_000_001, ContactLaw::Hertz, 0).unwrap_err().to_string().starts_with(
+            "too much work: 1000001 elements (40 elements the Hertz table holds count as one \
+             impact) is 25001 hertz-law impacts"
+        ));
+        assert!(check_elements(25_000, ContactLaw::Hertz, 25_000).is_ok());
+        let e = check_elements(30_000, ContactLaw::Hertz, 30_000).unwrap_err();
+        assert_eq!(e.work, 1_200_000);
+        assert!(e.to_string().starts_with(
+            "too much work: 30000 elements (30000 of them outside the Hertz table, a whole \
+             impact each; 40 of the others count as one impact) is 30000 hertz-law impacts"
+        ));
+        // 12 000 outside and 520 000 held: 12 000 + 13 000 impacts, at the limit
+        assert!(check_elements(532_000, ContactLaw::Hertz, 12_000).is_ok());
+        assert!(check_elements(532_001, ContactLaw::Hertz, 12_001).is_err());
+        // the elastic–plastic law: 20 held elements to an impact (past yield, the dearer)
+        assert!(check_elements(500_000, ContactLaw::ElasticPlastic, 0).is_ok());
+        assert!(check_elements(500_001, ContactLaw::ElasticPlastic, 0).is_err());
+        // a count of more outside than there are elements is all of them
+        assert_eq!(
+            check_elements(30_000, ContactLaw::Hertz, usize::MAX)
+                .unwrap_err()
+                .work,
+            1_200_000
+        );
     }
 
     #[test]

@@ -114,6 +114,23 @@ fn power_law_row(p: &ImpactParams, law: ContactLaw) -> Option<ImpactRow> {
     })
 }
 
+/// How many of the `n` impacts `params` gives the Hertz table does not hold (0 under the
+/// linear law, which does not use it): the work limit counts those as whole impacts and the
+/// others as the table's ([`crate::analysis::work::check_elements`]). An element whose
+/// values are not a ball counts as outside (its error comes from [`impact_rows`]).
+pub fn off_table<F>(n: usize, law: ContactLaw, params: F) -> usize
+where
+    F: Fn(usize) -> ImpactParams + Sync,
+{
+    if law == ContactLaw::Linear {
+        return 0;
+    }
+    (0..n)
+        .into_par_iter()
+        .filter(|&i| !crate::solver::table::holds(&params(i).normalized()))
+        .count()
+}
+
 /// The row of a linear-law ball that flattens (F̄_m > z̄_p), from the closed form
 /// [`crate::map::fast::flattening`] (to 1e-12 of the exact solver, tests/map_flatten.rs), in
 /// SI as `run` scales its answer (docs/model.md §5: force m v0 ω0, length v0/ω0, time 1/ω0):

@@ -302,22 +302,44 @@ fn table() -> Option<&'static Table> {
 /// The outputs at (λ̂, ζ̂) from the table, `None` outside its grid or in a square it does
 /// not keep: [`interpolate`]'s bits, by the five interpolants at once (`kernel`).
 pub fn hertz_hat(lambda_hat: f64, zeta_hat: f64) -> Option<[f64; OUTPUTS]> {
+    let (b, x, y) = kept_square(lambda_hat, zeta_hat)?;
+    Some(kernel::eval(b, x, y).map(f64::exp))
+}
+
+/// The kept square holding (λ̂, ζ̂) and the local coordinates there; `None` outside the grid
+/// or in a square the table does not keep.
+fn kept_square(lambda_hat: f64, zeta_hat: f64) -> Option<(&'static kernel::Block, f64, f64)> {
     let t = table()?;
     let (patch, fu, fw) = t.grid.locate(lambda_hat, zeta_hat)?;
     let node = t.patches[patch].get_or_init(|| Node::of(&t.stored[patch], t.grid.degree));
-    let (b, x, y) = node.find(fu, fw)?;
-    Some(kernel::eval(b, x, y).map(f64::exp))
+    node.find(fu, fw)
+}
+
+/// (λ̂, ζ̂) and the length scale L = κ^{−2/5} of the normalized ball `n` (the Hertz scale of
+/// docs/model.md §3); `None` for a κ that is not positive and finite.
+fn hertz_point(n: &Normalized) -> Option<(f64, f64, f64)> {
+    if !(n.kappa.is_finite() && n.kappa > 0.0) {
+        return None;
+    }
+    let l = n.kappa.powf(-0.4);
+    Some((n.lambda * l * l, n.zeta / l, l))
+}
+
+/// Whether the table holds the Hertz impact of `n` — where [`summary`] looks it up — without
+/// evaluating it (a lookup, some tens of ns): the work limit counts `bouncelab.impacts`'
+/// elements by it (`api::rows::off_table`).
+pub fn holds(n: &Normalized) -> bool {
+    n.zp_bar > 0.0
+        && hertz_point(n)
+            .is_some_and(|(lambda_hat, zeta_hat, _)| kept_square(lambda_hat, zeta_hat).is_some())
 }
 
 /// The Hertz impact of the normalized ball `n` from the table, in the units of the run
 /// (`taylor::summary`'s: z̄ = L ẑ, τ = L t̂, F̄ = F̂/L), `steps` 0; `None` where the table does
 /// not answer.
 pub fn hertz(n: &Normalized) -> Option<Summary> {
-    if !(n.kappa.is_finite() && n.kappa > 0.0) {
-        return None;
-    }
-    let l = n.kappa.powf(-0.4);
-    let [cor, f, t, z, y] = hertz_hat(n.lambda * l * l, n.zeta / l)?;
+    let (lambda_hat, zeta_hat, l) = hertz_point(n)?;
+    let [cor, f, t, z, y] = hertz_hat(lambda_hat, zeta_hat)?;
     Some(Summary {
         // e < 1 by dissipation; the interpolant's 1e-12 must not carry it past 1
         cor: cor.min(1.0),
