@@ -347,7 +347,7 @@ fn the_table_answers_inside_its_kept_patches_only() {
 /// gaps), and at the edge cases above.
 #[test]
 fn the_table_holds_a_ball_where_it_answers() {
-    let mut u = uniform(0x5eed_0f_4011);
+    let mut u = uniform(0x5eed_4011);
     let mut log = |lo: f64, hi: f64| 10f64.powf(lo + (hi - lo) * u());
     let (mut held, mut out) = (0, 0);
     for _ in 0..20_000 {
