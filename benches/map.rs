@@ -70,7 +70,7 @@ fn fast_summary_grid() -> f64 {
 }
 
 /// The 200 × 120 map on the fast path (`MapSpec::with_fast`): its cells through the lanes,
-/// four at a time (`map::eval::cells_at`). Issue 30 item 3: ≤ 0.1 µs an impact on one core
+/// eight at a time (`map::eval::cells_at`). Issue 30 item 3: ≤ 0.1 µs an impact on one core
 /// (`RAYON_NUM_THREADS=1`: ≤ 2.4 ms).
 #[divan::bench(sample_count = 20)]
 fn map_200x120_fast() -> usize {
@@ -79,17 +79,22 @@ fn map_200x120_fast() -> usize {
         .len()
 }
 
+/// The (λ, ζ) of the 200 × 120 map's cells, λ outer: the lanes benches' input.
+fn grid_200x120() -> (Vec<f64>, Vec<f64>) {
+    let l = Axis::new(Param::Lambda, 0.01, 100.0, 120, Scale::Log).unwrap();
+    let z = Axis::new(Param::Zeta, 0.01, 100.0, 200, Scale::Log).unwrap();
+    (0..l.n)
+        .flat_map(|i| (0..z.n).map(move |j| (i, j)))
+        .map(|(i, j)| (l.value(i), z.value(j)))
+        .unzip()
+}
+
 /// The same grid through the lanes (`map::fast::lanes::summaries`: eight cells a call, the
 /// scalar path for the cells they leave; issue 30 item 3: target ≤ 0.1 µs an impact on one
 /// core). Per impact: the median / 24 000.
 #[divan::bench(sample_count = 20)]
 fn fast_summary_grid_lanes(b: divan::Bencher) {
-    let l = Axis::new(Param::Lambda, 0.01, 100.0, 120, Scale::Log).unwrap();
-    let z = Axis::new(Param::Zeta, 0.01, 100.0, 200, Scale::Log).unwrap();
-    let (lambda, zeta): (Vec<f64>, Vec<f64>) = (0..l.n)
-        .flat_map(|i| (0..z.n).map(move |j| (i, j)))
-        .map(|(i, j)| (l.value(i), z.value(j)))
-        .unzip();
+    let (lambda, zeta) = grid_200x120();
     let mut out = vec![None; lambda.len()];
     b.bench_local(|| {
         bouncelab::map::fast::lanes::summaries(black_box(&lambda), black_box(&zeta), &mut out);
@@ -104,12 +109,7 @@ fn fast_summary_grid_lanes(b: divan::Bencher) {
 #[divan::bench(sample_count = 20)]
 fn fast_summary_grid_lanes_only(b: divan::Bencher) {
     use bouncelab::map::fast::lanes::{WIDE, lanes_only8};
-    let l = Axis::new(Param::Lambda, 0.01, 100.0, 120, Scale::Log).unwrap();
-    let z = Axis::new(Param::Zeta, 0.01, 100.0, 200, Scale::Log).unwrap();
-    let (lambda, zeta): (Vec<f64>, Vec<f64>) = (0..l.n)
-        .flat_map(|i| (0..z.n).map(move |j| (i, j)))
-        .map(|(i, j)| (l.value(i), z.value(j)))
-        .unzip();
+    let (lambda, zeta) = grid_200x120();
     b.bench_local(|| {
         let mut sum = 0.0;
         for (l, z) in lambda.chunks_exact(WIDE).zip(zeta.chunks_exact(WIDE)) {

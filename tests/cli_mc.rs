@@ -204,10 +204,9 @@ fn bad_input_is_one_line_naming_the_field() {
 }
 
 /// Under Hertz the work limit counts a sample of a ball the Hertz table answers as 1/40 of an
-/// impact (`work::check_samples_of`): golf's 30 000 samples run, its 1 000 001 are refused;
-/// a ball whose Hertz cell the table leaves to the Taylor steps (baseball's K_r × 10⁶: λ̂ past
-/// the grid; baseball itself is in the table since its kink band was split) counts a whole
-/// impact a sample, so its 30 000 (more than 25 000) are refused.
+/// impact (`work::check_samples_by`, `Nominal::Table`): golf's 30 000 samples run, its
+/// 1 000 001 are refused; a ball whose Hertz cell the table leaves to the Taylor steps
+/// (baseball's K_r × 10⁶: λ̂ past the grid) counts a whole impact a sample, so its 30 000 (more than 25 000) are refused.
 #[test]
 fn hertz_samples_of_a_tabulated_ball_count_as_cheap_ones() {
     let base = ["mc", "--law", "hertz", "--vary", "k_p=5%,c=5%"];
@@ -244,8 +243,7 @@ fn hertz_samples_of_a_tabulated_ball_count_as_cheap_ones() {
 /// (`Ball::check_samples`, `work::check_samples_by`): the superball at its own speed stays
 /// below yield, where the Hertz table answers (1/40 of an impact a sample: 30 000 run,
 /// 1 000 001 refused); at 9.4 m/s it yields and the Taylor steps answer (1/20 a sample:
-/// 30 000 run, 500 001 refused). On the old code every elastic–plastic sample counted a whole
-/// impact and 30 000 were refused.
+/// 30 000 run, 500 001 refused).
 #[test]
 fn elastic_plastic_samples_count_by_their_path() {
     let base = ["mc", "--preset", "superball", "--law", "elastic-plastic"];

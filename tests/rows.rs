@@ -81,8 +81,7 @@ fn apart(a: [f64; 4], b: [f64; 4]) -> f64 {
 /// without step limit (`table::reference`), to 1e-9 in e, F_m, t_f and z_m, and `run` to the
 /// adaptive solver's stated precision: 1e-9 where its run is not stiff (at rtol 1e-13 where
 /// 1e-10 is not tight enough, as tests/taylor.rs `agrees`), 1e-6 where it is (its stiff
-/// cascade is 6e-8 … 9e-8 off the reference, docs/numerics.md). Before the table, a Hertz row
-/// was `simulate`'s and met `run` to 1e-12 as two calls of one solver do.
+/// cascade is 6e-8 … 9e-8 off the reference, docs/numerics.md).
 #[test]
 fn a_hertz_row_is_the_tables_answer() {
     let (mut tabulated, mut stiff, mut from_run) = (0, 0, 0.0f64);
@@ -143,8 +142,7 @@ fn a_hertz_row_is_the_tables_answer() {
 }
 
 /// An elastic–plastic row is `table::summary`'s answer (the Hertz table below yield, the
-/// Taylor steps past it), in SI bit for bit, z_f too — on the old code it was `simulate`'s —
-/// and meets `run`'s adaptive solver at rtol 1e-12 to 1e-9 in e, F_m, t_f and z_m, z_f to
+/// Taylor steps past it), in SI bit for bit, z_f too, and meets `run`'s adaptive solver at rtol 1e-12 to 1e-9 in e, F_m, t_f and z_m, z_f to
 /// 1e-9 of z_m (as tests/taylor.rs `elastic_plastic_agrees`); where that run is stiff (its
 /// cascade holds e to 1e-7 only, docs/numerics.md) to 1e-6.
 #[test]

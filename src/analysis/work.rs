@@ -34,23 +34,7 @@ pub const SAMPLES_PER_IMPACT: u64 = 10;
 /// Refuse a Monte Carlo of `samples` samples under `law` beyond the limit: a linear-law
 /// sample counts 1/[`SAMPLES_PER_IMPACT`] of an impact, any other a whole impact.
 pub fn check_samples(samples: usize, law: ContactLaw) -> Result<(), TooMuchWork> {
-    check_samples_of(samples, law, false)
-}
-
-/// [`check_samples`] for a Monte Carlo whose nominal ball the Hertz table answers
-/// (`tabulated`: under the Hertz law, or under the elastic–plastic law below yield), as
-/// [`check_samples_by`] counts [`Nominal::Table`]; else as [`Nominal::Solver`].
-pub fn check_samples_of(
-    samples: usize,
-    law: ContactLaw,
-    tabulated: bool,
-) -> Result<(), TooMuchWork> {
-    let nominal = if tabulated {
-        Nominal::Table
-    } else {
-        Nominal::Solver
-    };
-    check_samples_by(samples, law, nominal)
+    check_samples_by(samples, law, Nominal::Solver)
 }
 
 /// Which path answers a Monte Carlo's nominal ball (`Ball::check_samples` decides): its
@@ -68,8 +52,8 @@ pub enum Nominal {
 
 /// Elastic–plastic samples past yield, each on the Taylor steps, that count as one impact
 /// (of [`cost`] 40): a sample costs 2 of the work's units (a unit some 7 µs, [`LIMIT`] some
-/// 7 s), about what the Taylor steps cost past yield: ≈ 73 000 instructions, 10–11 µs (15 µs
-/// and 105 000 before the order-28 series; BENCHMARKS.md, "Fifth session (ep6)").
+/// 7 s), about what the Taylor steps cost past yield: ≈ 73 000 instructions, 10–11 µs
+/// (BENCHMARKS.md, "Fifth session (ep6)").
 pub const TAYLOR_SAMPLES_PER_IMPACT: u64 = 20;
 
 /// Refuse a Monte Carlo of `samples` samples under `law` whose nominal ball `nominal`
@@ -316,16 +300,16 @@ mod tests {
 
     #[test]
     fn hertz_samples_the_table_answers_count_a_fortieth() {
-        assert!(check_samples_of(1_000_000, ContactLaw::Hertz, true).is_ok());
-        let e = check_samples_of(1_000_001, ContactLaw::Hertz, true).unwrap_err();
+        assert!(check_samples_by(1_000_000, ContactLaw::Hertz, Nominal::Table).is_ok());
+        let e = check_samples_by(1_000_001, ContactLaw::Hertz, Nominal::Table).unwrap_err();
         assert_eq!(e.work, 1_000_040);
         assert!(e.to_string().starts_with(
             "too much work: 1000001 samples (40 Hertz-law samples of a ball the Hertz table \
              answers count as one impact) is 25001 hertz-law impacts"
         ));
         // an untabulated ball keeps a whole impact a sample
-        assert!(check_samples_of(25_001, ContactLaw::Hertz, false).is_err());
-        assert!(check_samples_of(25_001, ContactLaw::ElasticPlastic, false).is_err());
+        assert!(check_samples_by(25_001, ContactLaw::Hertz, Nominal::Solver).is_err());
+        assert!(check_samples_by(25_001, ContactLaw::ElasticPlastic, Nominal::Solver).is_err());
     }
 
     #[test]

@@ -21,8 +21,8 @@ pub fn cell_at(spec: &MapSpec, lambda: f64, zeta: f64) -> Result<Cell, SolveErro
 }
 
 /// [`cell_at`] of each (λ, ζ), into `out` (of the same length): on the linear law's fast
-/// path four cells per instruction stream ([`super::fast::lanes::summaries`], issue 30 item
-/// 3), each lane's answer a function of its own (λ, ζ) only — the same in any grouping, so
+/// path eight cells a call in two registers of four ([`super::fast::lanes::summaries`],
+/// issue 30 item 3), each lane's answer a function of its own (λ, ζ) only — the same in any grouping, so
 /// the coarse-to-fine passes and a lone [`cell_at`] agree bit for bit.
 pub fn cells_at(spec: &MapSpec, points: &[(f64, f64)], out: &mut [Result<Cell, SolveError>]) {
     assert_eq!(points.len(), out.len());
