@@ -23,6 +23,8 @@
 //! ```
 
 use bouncelab::solver::table::{self, Cell, GRID, Grid, OUTPUTS, Patch, cheb};
+use chacha20::ChaCha8Rng;
+use chacha20::rand_core::{Rng, SeedableRng};
 use rayon::prelude::*;
 use std::time::Instant;
 
@@ -343,16 +345,11 @@ fn errors(args: &[String]) {
     let n: usize = args[0].parse().expect("a count");
     let (_, patches) = table::stored().expect("the table reads");
     let leaves = table::leaves(&patches, GRID.nw);
-    let mut state = 0x7ab1_e001_u64;
-    let mut u = move || {
-        state ^= state << 13;
-        state ^= state >> 7;
-        state ^= state << 17;
-        (state >> 11) as f64 / (1u64 << 53) as f64
-    };
+    // the Monte Carlo's generator (ChaCha8, `analysis::mc`), 53 bits to a uniform in [0, 1)
+    let mut rng = ChaCha8Rng::seed_from_u64(0x7ab1_e001);
+    let mut u = move || (rng.next_u64() >> 11) as f64 / (1u64 << 53) as f64;
     // uniform over the area the table answers: a uniform point of the grid, drawn again
-    // until the table answers there (the first table's draw, a kept patch then a point in
-    // it, was the same distribution: its squares were all of one size)
+    // until the table answers there
     let span = |x0: f64, d: f64, n: usize, t: f64| 10f64.powf(x0 + d * n as f64 * t);
     let mut e: Vec<f64> = Vec::with_capacity(n);
     while e.len() < n {
