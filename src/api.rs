@@ -66,6 +66,7 @@ pub struct Ball {
 
 mod batch;
 mod collide;
+mod columns;
 mod entry;
 mod error;
 mod fit;
@@ -83,6 +84,7 @@ pub use batch::{
     quantity as batch_quantity,
 };
 pub use collide::CollisionReport;
+pub use columns::{Columns, Unanswered, first_pass};
 pub use entry::Overrides;
 pub use error::BallError;
 pub use intervals::{Intervals, bands, holds, intervals};
@@ -90,7 +92,7 @@ pub use mc::{McReport, MonteCarlo};
 pub use oblique::{CourtPace, ObliqueSpec, SOLID_INERTIA_FACTOR};
 pub use oblique_fit::{ObliqueFitReport, is_data_error as is_oblique_data_error};
 pub use report::{BallHeader, Energy, FitReport, ImpactReport, MeasuredAt};
-pub use rows::{ImpactRow, impact_row, impact_rows, off_table};
+pub use rows::{ImpactRow, Rest, impact_row, impact_rows};
 pub use summary::ImpactSummary;
 pub use sweep::{sweep_zeta, sweep_zeta_watched};
 pub use warnings::{ENERGY_RESIDUAL_MAX, indentation_warning};

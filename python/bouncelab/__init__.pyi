@@ -141,9 +141,12 @@ def impacts(
     ``cor``, ``max_force``, ``contact_time`` (NaN without rebound), ``max_indentation``,
     ``permanent_indentation`` and ``rebound`` (bool); element i is ``run_params``'s answer (to
     1e-9 under the Hertz and elastic-plastic laws: the Hertz table and the Taylor steps,
-    docs/numerics.md). The work limit (docs/guarantees.md) counts ten linear-law elements as
-    one impact, forty Hertz elements the Hertz table holds (twenty elastic-plastic ones), and
-    an element outside the table as a whole impact: a ``ValueError`` beyond it."""
+    docs/numerics.md). The work limit (docs/guarantees.md) counts each element by the path
+    that answers it: ten linear-law elements as one impact; forty the Hertz table answers
+    (under Hertz where it holds the ball, elastic-plastic where the impact also stays below
+    yield); twenty elastic-plastic ones past yield (the Taylor steps); an element outside the
+    table as a whole impact. A ``ValueError`` beyond it, raised after the table's own
+    answers and before anything else runs."""
 
 def sweep_zeta(lambdas: Floats, zetas: Floats, law: Law = "linear") -> dict[str, Array]:
     """COR, F̄_m, τ_f against ζ per λ (columns of ``bouncelab sweep zeta``)."""

@@ -1,14 +1,15 @@
 //! `bouncelab.impacts`: many impacts from numpy arrays (issue 30 item 5). The arguments are
 //! broadcast as numpy's ufuncs broadcast them (numpy's own `broadcast_shapes`, so the rules
 //! and the errors are numpy's); the impacts run on all cores without the GIL
-//! ([`bouncelab::api::impact_rows`], each row the answer `run_params` gives); the answer is a
-//! dict of arrays of the broadcast shape.
+//! ([`bouncelab::api::first_pass`], then what it leaves, each row the answer `run_params`
+//! gives, written into the answer's arrays); the answer is a dict of arrays of the broadcast
+//! shape.
 
 use crate::{error, law};
 use bouncelab::analysis::work;
-use bouncelab::api::{impact_rows, off_table};
+use bouncelab::api::{Columns, first_pass};
 use bouncelab::model::params::ImpactParams;
-use numpy::{PyArray1, PyReadonlyArray1, PyUntypedArrayMethods};
+use numpy::{PyArray1, PyArrayMethods, PyReadonlyArray1, PyUntypedArrayMethods};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyTuple};
@@ -101,8 +102,9 @@ pub(crate) fn impacts<'py>(
         .map(|d| d.extract::<usize>())
         .product::<PyResult<usize>>()?;
     // the work limit before any copy, at the least the elements can cost (all in the Hertz
-    // table; linear-law impacts count as Monte Carlo samples), then by what they are below
-    work::check_elements(n, law, 0).map_err(|e| error(e.into()))?;
+    // table; linear-law impacts count as Monte Carlo samples), then by what the first pass
+    // found each element's path to be
+    work::check_elements(law, work::Elements::at_least(n)).map_err(|e| error(e.into()))?;
     let flat = flatten(&arrays, &shape)?;
     let cols: Vec<Column<'_>> = flat
         .iter()
@@ -132,33 +134,52 @@ pub(crate) fn impacts<'py>(
             k_h,
         }
     };
-    let off = py.detach(|| off_table(n, law, params));
-    work::check_elements(n, law, off).map_err(|e| error(e.into()))?;
-    let rows = py
-        .detach(|| impact_rows(n, law, params))
-        .map_err(|(i, e)| {
-            let msg = format!("element {i}: {e}");
-            if e.is_no_answer() {
-                crate::NoAnswerError::new_err(msg)
-            } else {
-                PyValueError::new_err(msg)
-            }
-        })?;
+    // the answer's arrays, zeroed (numpy's calloc: pages the rows then write) and filled in
+    // place without the GIL
+    let numbers: [Bound<'py, PyArray1<f64>>; 5] =
+        std::array::from_fn(|_| PyArray1::zeros(py, n, false));
+    let rebound = PyArray1::<bool>::zeros(py, n, false);
+    {
+        let mut f = numbers.each_ref().map(|a| a.readwrite());
+        let mut b = rebound.readwrite();
+        let [
+            cor,
+            max_force,
+            contact_time,
+            max_indentation,
+            permanent_indentation,
+        ] = f.each_mut().map(|a| a.as_slice_mut());
+        let mut out = Columns {
+            cor: cor?,
+            max_force: max_force?,
+            contact_time: contact_time?,
+            max_indentation: max_indentation?,
+            permanent_indentation: permanent_indentation?,
+            rebound: b.as_slice_mut()?,
+        };
+        let rest = py.detach(|| first_pass(law, &params, &mut out));
+        work::check_elements(law, rest.elements()).map_err(|e| error(e.into()))?;
+        py.detach(|| rest.answer(&params, &mut out))
+            .map_err(|(i, e)| {
+                let msg = format!("element {i}: {e}");
+                if e.is_no_answer() {
+                    crate::NoAnswerError::new_err(msg)
+                } else {
+                    PyValueError::new_err(msg)
+                }
+            })?;
+    }
     let d = PyDict::new(py);
-    let column = |f: fn(&bouncelab::api::ImpactRow) -> f64| -> PyResult<Bound<'py, PyAny>> {
-        let v: Vec<f64> = rows.iter().map(f).collect();
-        PyArray1::from_vec(py, v).call_method1("reshape", (&shape,))
-    };
-    d.set_item("cor", column(|r| r.cor)?)?;
-    d.set_item("max_force", column(|r| r.max_force)?)?;
-    d.set_item("contact_time", column(|r| r.contact_time)?)?;
-    d.set_item("max_indentation", column(|r| r.max_indentation)?)?;
-    d.set_item(
+    let names = [
+        "cor",
+        "max_force",
+        "contact_time",
+        "max_indentation",
         "permanent_indentation",
-        column(|r| r.permanent_indentation)?,
-    )?;
-    let rebound: Vec<bool> = rows.iter().map(|r| r.rebound).collect();
-    let rebound = PyArray1::from_vec(py, rebound).call_method1("reshape", (&shape,))?;
-    d.set_item("rebound", rebound)?;
+    ];
+    for (name, a) in names.into_iter().zip(numbers) {
+        d.set_item(name, a.call_method1("reshape", (&shape,))?)?;
+    }
+    d.set_item("rebound", rebound.call_method1("reshape", (&shape,))?)?;
     Ok(d)
 }

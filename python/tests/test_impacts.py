@@ -98,7 +98,8 @@ def test_elastic_plastic_rows_yield_and_meet_run_params():
 
 def test_the_work_limit_counts_elements_the_hertz_table_holds_as_cheap_ones():
     """Under Hertz an element the Hertz table holds counts 1/40 of an impact, under the
-    elastic-plastic law 1/20, one outside the table a whole impact (docs/guarantees.md):
+    elastic-plastic law 1/40 below yield and 1/20 past it, one outside the table a whole impact
+    (docs/guarantees.md):
     100 000 golf-like elements run under both laws (beyond the 25 000 whole impacts the limit
     allows), 30 000 balls outside the table (K_r 10⁶ times larger) are refused by count."""
     ball = dict(m=0.0456, k_p=5.6e5, c=1200.0, k_r=5.6e5, z_p=3e-3)
@@ -117,3 +118,47 @@ def test_the_work_limit_counts_elements_the_hertz_table_holds_as_cheap_ones():
         bouncelab.impacts(v0=np.linspace(1.0, 30.0, 30_000), law="hertz", **outside)
     with pytest.raises(ValueError, match=r"^too much work: 1000001 elements \(40 elements the"):
         bouncelab.impacts(v0=np.linspace(1.0, 30.0, 1_000_001), law="hertz", **ball)
+
+
+GOLF = dict(m=0.0456, k_p=5.6e5, c=1200.0, k_r=5.6e5, z_p=3e-3)
+
+
+def test_a_million_elastic_plastic_elements_below_yield_run_in_one_call():
+    """Below yield an elastic-plastic element is the Hertz table's answer and counts as one
+    (1/40 of an impact): 10⁶ of them run in one call (refused on ce671d8's wheel, which counted
+    each 1/20: 'too much work: 1000000 elements (20 elements the Hertz table holds count as one
+    impact) is 50000 elastic-plastic-law impacts'); one more is refused before any copy."""
+    v0 = np.linspace(0.5, 3.0, 1_000_000)
+    out = bouncelab.impacts(v0=v0, law="elastic-plastic", **GOLF)
+    assert out["cor"].shape == (1_000_000,)
+    # all below yield: no permanent indentation, z_m below z_p
+    assert (out["permanent_indentation"] == 0.0).all()
+    assert (out["max_indentation"] < GOLF["z_p"]).all()
+    for i in [0, 123_456, 999_999]:
+        same_as_run_params(out, i, 1e-9, v0=v0[i], law="elastic-plastic", **GOLF)
+    with pytest.raises(
+        ValueError,
+        match=r"^too much work: 1000001 elements \(40 elements the Hertz table holds below "
+        r"yield count as one impact\) is 25001 elastic-plastic-law impacts",
+    ):
+        bouncelab.impacts(v0=np.linspace(0.5, 3.0, 1_000_001), law="elastic-plastic", **GOLF)
+
+
+def test_elastic_plastic_elements_past_yield_count_a_twentieth():
+    """Past yield an element takes the Taylor steps and counts 1/20 of an impact: 500 001 of
+    them are refused after the table's pass, by their count, before any step runs; with
+    500 000 below yield beside 30 000 past it the call is within the limit (12 500 + 1 500
+    impacts' worth of the 25 000), and runs."""
+    fast = np.full(500_001, 30.0)
+    with pytest.raises(
+        ValueError,
+        match=r"^too much work: 500001 elements \(500001 past yield, 20 to an impact; 40 of "
+        r"the others count as one impact\) is 25001 elastic-plastic-law impacts",
+    ):
+        bouncelab.impacts(v0=fast, law="elastic-plastic", **GOLF)
+    v0 = np.concatenate([np.linspace(0.5, 3.0, 500_000), np.linspace(25.0, 30.0, 30_000)])
+    out = bouncelab.impacts(v0=v0, law="elastic-plastic", **GOLF)
+    assert (out["permanent_indentation"][:500_000] == 0.0).all()
+    assert (out["permanent_indentation"][500_000:] > 0.0).all()
+    for i in [499_999, 500_000, 529_999]:
+        same_as_run_params(out, i, 1e-9, v0=v0[i], law="elastic-plastic", **GOLF)

@@ -104,30 +104,81 @@ pub fn check_samples_by(
     check(impacts as usize, law, &what)
 }
 
-/// Refuse `n` impacts of `bouncelab.impacts` (`api::impact_rows`) under `law` beyond the
-/// limit, `off_table` of them outside the Hertz table (`api::rows::off_table`). A linear-law
-/// impact counts as a Monte Carlo sample ([`check_samples`]). Under Hertz an element the
-/// table holds counts 1/[`cost`] of an impact (the table's 0.3 µs; [`check_samples_by`]'s
-/// `Table`); under the elastic–plastic law 1/[`TAYLOR_SAMPLES_PER_IMPACT`] (below yield it
-/// is the table's, past yield the Taylor steps': counted as the dearer); an element
-/// outside the table a whole impact (the Taylor steps or the adaptive solver).
-pub fn check_elements(n: usize, law: ContactLaw, off_table: usize) -> Result<(), TooMuchWork> {
-    let per_impact = match law {
-        ContactLaw::Linear => return check_samples(n, law),
-        ContactLaw::Hertz => cost(law),
-        ContactLaw::ElasticPlastic => TAYLOR_SAMPLES_PER_IMPACT,
+/// `bouncelab.impacts`' elements by the path that answers each (`api::first_pass` finds it
+/// before any runs): the Hertz table's, the Taylor steps' past yield, or a whole impact's.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Elements {
+    /// All of them.
+    pub n: usize,
+    /// Those the Hertz table does not answer (outside it, or no rebound there): the Taylor
+    /// steps or the adaptive solver, a whole impact each.
+    pub off_table: usize,
+    /// Elastic–plastic ones whose Hertz impact the table holds but which reach yield: the
+    /// Taylor steps, 1/[`TAYLOR_SAMPLES_PER_IMPACT`] of an impact each.
+    pub past_yield: usize,
+}
+
+impl Elements {
+    /// `n` elements at the least they can cost: all answered by the table (or, on the linear
+    /// law, by the closed forms).
+    pub fn at_least(n: usize) -> Elements {
+        Elements {
+            n,
+            off_table: 0,
+            past_yield: 0,
+        }
+    }
+}
+
+/// Refuse the elements `e` of `bouncelab.impacts` (`api::first_pass`) under `law` beyond the
+/// limit, each counted by the path that answers it. A linear-law element counts as a Monte
+/// Carlo sample ([`check_samples`]). Under Hertz and the elastic–plastic law an element the
+/// Hertz table answers (under the elastic–plastic law: below yield, where the impact is the
+/// Hertz one) counts 1/[`cost`] of an impact (the table's 0.3 µs; [`check_samples_by`]'s
+/// `Table`); an elastic–plastic element past yield 1/[`TAYLOR_SAMPLES_PER_IMPACT`] (the Taylor
+/// steps' 10–11 µs); any other a whole impact (the Taylor steps or the adaptive solver). The
+/// count is each element's own: the first pass found its path before anything ran.
+pub fn check_elements(law: ContactLaw, e: Elements) -> Result<(), TooMuchWork> {
+    if law == ContactLaw::Linear {
+        return check_samples(e.n, law);
+    }
+    let per_impact = cost(law);
+    let off = e.off_table.min(e.n);
+    let past = e.past_yield.min(e.n - off);
+    let table = (e.n - off - past) as u64;
+    // in 1/40 of an impact: the table's 1 each, the Taylor steps' past yield 2, a whole 40
+    let per_taylor = per_impact / TAYLOR_SAMPLES_PER_IMPACT;
+    let units = (off as u64 * per_impact)
+        .saturating_add(past as u64 * per_taylor)
+        .saturating_add(table);
+    let held = match law {
+        ContactLaw::Hertz => "the Hertz table holds",
+        _ => "the Hertz table holds below yield",
     };
-    let off = off_table.min(n);
-    let impacts = off as u64 + ((n - off) as u64).div_ceil(per_impact);
-    let what = if off == 0 {
-        // before the lookup (`bouncelab.impacts` asks first at the least they can cost)
-        format!("{n} elements ({per_impact} elements the Hertz table holds count as one impact)")
+    let mut parts = Vec::new();
+    if off > 0 {
+        parts.push(format!(
+            "{off} of them outside the Hertz table, a whole impact each"
+        ));
+    }
+    if past > 0 {
+        parts.push(format!(
+            "{past} past yield, {TAYLOR_SAMPLES_PER_IMPACT} to an impact"
+        ));
+    }
+    let what = if parts.is_empty() {
+        format!(
+            "{} elements ({per_impact} elements {held} count as one impact)",
+            e.n
+        )
     } else {
         format!(
-            "{n} elements ({off} of them outside the Hertz table, a whole impact each; \
-             {per_impact} of the others count as one impact)"
+            "{} elements ({}; {per_impact} of the others count as one impact)",
+            e.n,
+            parts.join("; ")
         )
     };
+    let impacts = units.div_ceil(per_impact);
     check(usize::try_from(impacts).unwrap_or(usize::MAX), law, &what)
 }
 
@@ -312,37 +363,71 @@ mod tests {
         assert!(check_samples_by(25_001, ContactLaw::ElasticPlastic, Nominal::Solver).is_err());
     }
 
+    /// `n` elements, `off` of them outside the Hertz table, `past` past yield.
+    fn elements(n: usize, off: usize, past: usize) -> Elements {
+        Elements {
+            n,
+            off_table: off,
+            past_yield: past,
+        }
+    }
+
     #[test]
     fn elements_count_by_whether_the_hertz_table_holds_them() {
+        let (linear, hertz) = (ContactLaw::Linear, ContactLaw::Hertz);
         // the linear law: as Monte Carlo samples, ten to an impact
-        assert!(check_elements(10_000_000, ContactLaw::Linear, 0).is_ok());
-        assert!(check_elements(10_000_001, ContactLaw::Linear, 0).is_err());
+        assert!(check_elements(linear, Elements::at_least(10_000_000)).is_ok());
+        assert!(check_elements(linear, Elements::at_least(10_000_001)).is_err());
         // Hertz: 40 held elements to an impact, one outside the table a whole impact
-        assert!(check_elements(1_000_000, ContactLaw::Hertz, 0).is_ok());
-        assert!(check_elements(1_000_001, ContactLaw::Hertz, 0).unwrap_err().to_string().starts_with(
+        assert!(check_elements(hertz, Elements::at_least(1_000_000)).is_ok());
+        let e = check_elements(hertz, Elements::at_least(1_000_001)).unwrap_err();
+        assert!(e.to_string().starts_with(
             "too much work: 1000001 elements (40 elements the Hertz table holds count as one \
              impact) is 25001 hertz-law impacts"
         ));
-        assert!(check_elements(25_000, ContactLaw::Hertz, 25_000).is_ok());
-        let e = check_elements(30_000, ContactLaw::Hertz, 30_000).unwrap_err();
+        assert!(check_elements(hertz, elements(25_000, 25_000, 0)).is_ok());
+        let e = check_elements(hertz, elements(30_000, 30_000, 0)).unwrap_err();
         assert_eq!(e.work, 1_200_000);
         assert!(e.to_string().starts_with(
             "too much work: 30000 elements (30000 of them outside the Hertz table, a whole \
              impact each; 40 of the others count as one impact) is 30000 hertz-law impacts"
         ));
         // 12 000 outside and 520 000 held: 12 000 + 13 000 impacts, at the limit
-        assert!(check_elements(532_000, ContactLaw::Hertz, 12_000).is_ok());
-        assert!(check_elements(532_001, ContactLaw::Hertz, 12_001).is_err());
-        // the elastic–plastic law: 20 held elements to an impact (past yield, the dearer)
-        assert!(check_elements(500_000, ContactLaw::ElasticPlastic, 0).is_ok());
-        assert!(check_elements(500_001, ContactLaw::ElasticPlastic, 0).is_err());
+        assert!(check_elements(hertz, elements(532_000, 12_000, 0)).is_ok());
+        assert!(check_elements(hertz, elements(532_001, 12_001, 0)).is_err());
         // a count of more outside than there are elements is all of them
-        assert_eq!(
-            check_elements(30_000, ContactLaw::Hertz, usize::MAX)
-                .unwrap_err()
-                .work,
-            1_200_000
-        );
+        let e = check_elements(hertz, elements(30_000, usize::MAX, 0)).unwrap_err();
+        assert_eq!(e.work, 1_200_000);
+    }
+
+    #[test]
+    fn elastic_plastic_elements_count_by_yield() {
+        let ep = ContactLaw::ElasticPlastic;
+        // below yield, the Hertz table's: 40 to an impact (main's count took 20, and refused
+        // 10⁶ of them)
+        assert!(check_elements(ep, Elements::at_least(1_000_000)).is_ok());
+        let e = check_elements(ep, Elements::at_least(1_000_001)).unwrap_err();
+        assert_eq!(e.work, 1_000_040);
+        assert!(e.to_string().starts_with(
+            "too much work: 1000001 elements (40 elements the Hertz table holds below yield \
+             count as one impact) is 25001 elastic-plastic-law impacts"
+        ));
+        // past yield, the Taylor steps': 20 to an impact
+        assert!(check_elements(ep, elements(500_000, 0, 500_000)).is_ok());
+        let e = check_elements(ep, elements(500_001, 0, 500_001)).unwrap_err();
+        assert_eq!(e.work, 1_000_040);
+        assert!(e.to_string().starts_with(
+            "too much work: 500001 elements (500001 past yield, 20 to an impact; 40 of the \
+             others count as one impact) is 25001 elastic-plastic-law impacts"
+        ));
+        // all three: 10 000 whole + 200 000 past yield (10 000) + 200 000 held (5 000)
+        assert!(check_elements(ep, elements(410_000, 10_000, 200_000)).is_ok());
+        let e = check_elements(ep, elements(410_001, 10_001, 200_000)).unwrap_err();
+        assert!(e.to_string().starts_with(
+            "too much work: 410001 elements (10001 of them outside the Hertz table, a whole \
+             impact each; 200000 past yield, 20 to an impact; 40 of the others count as one \
+             impact) is 25001 elastic-plastic-law impacts"
+        ));
     }
 
     #[test]

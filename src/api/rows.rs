@@ -36,24 +36,24 @@ pub struct ImpactRow {
 /// Hertz table below yield, the Taylor steps past it); else the solver with its default
 /// options. tests/rows.rs holds each path to `run`.
 pub fn impact_row(p: &ImpactParams, law: ContactLaw) -> Result<ImpactRow, SolveError> {
+    let n = p.normalized();
     let fast = if law == ContactLaw::Linear {
-        let n = p.normalized();
         crate::map::fast::summary(n.lambda, n.zeta)
     } else {
         None
     };
-    row_from(p, law, fast)
+    row_from(p, &n, law, fast)
 }
 
-/// [`impact_row`] with the closed form's answer for `p` given (`None`: none, or not the
-/// linear law).
-fn row_from(
+/// [`impact_row`] of `p`, whose normalized groups are `n`, with the closed form's answer for
+/// it given (`None`: none, or not the linear law).
+pub(super) fn row_from(
     p: &ImpactParams,
+    n: &Normalized,
     law: ContactLaw,
     fast: Option<Summary>,
 ) -> Result<ImpactRow, SolveError> {
     if law == ContactLaw::Linear {
-        let n = p.normalized();
         if let Some(s) = fast
             && s.max_force <= n.zp_bar
             && s.cor > 0.0
@@ -70,12 +70,12 @@ fn row_from(
             });
         }
         let flattens = fast.is_none_or(|s| s.max_force > n.zp_bar);
-        if let Some(row) = flattens.then(|| flattening_row(p, n.zp_bar)).flatten() {
+        if let Some(row) = flattens.then(|| flattening_row(p, n)).flatten() {
             return Ok(row);
         }
     }
     if matches!(law, ContactLaw::Hertz | ContactLaw::ElasticPlastic)
-        && let Some(row) = power_law_row(p, law)
+        && let Some(row) = power_law_row(p, n, law)
     {
         return Ok(row);
     }
@@ -98,8 +98,14 @@ fn row_from(
 /// adaptive solver `run` takes at that solver's stated precision (docs/numerics.md;
 /// tests/rows.rs `a_hertz_row_is_the_tables_answer`,
 /// `an_elastic_plastic_row_is_the_fast_paths_answer`).
-fn power_law_row(p: &ImpactParams, law: ContactLaw) -> Option<ImpactRow> {
-    let s = crate::solver::table::summary(&p.normalized(), law)?;
+fn power_law_row(p: &ImpactParams, n: &Normalized, law: ContactLaw) -> Option<ImpactRow> {
+    si_row(p, crate::solver::table::summary(n, law)?)
+}
+
+/// The row of `p` from the normalized summary `s` of its Hertz or elastic–plastic impact,
+/// SI as `run` converts (F = F̄ m v0 ω0, t = τ/ω0, z = z̄ v0/ω0, z_f too); `None` where the
+/// ball does not leave (then `simulate`).
+fn si_row(p: &ImpactParams, s: crate::solver::taylor::Summary) -> Option<ImpactRow> {
     if s.cor <= 0.0 {
         return None;
     }
@@ -114,21 +120,38 @@ fn power_law_row(p: &ImpactParams, law: ContactLaw) -> Option<ImpactRow> {
     })
 }
 
-/// How many of the `n` impacts `params` gives the Hertz table does not hold (0 under the
-/// linear law, which does not use it): the work limit counts those as whole impacts and the
-/// others as the table's ([`crate::analysis::work::check_elements`]). An element whose
-/// values are not a ball counts as outside (its error comes from [`impact_rows`]).
-pub fn off_table<F>(n: usize, law: ContactLaw, params: F) -> usize
-where
-    F: Fn(usize) -> ImpactParams + Sync,
-{
-    if law == ContactLaw::Linear {
-        return 0;
-    }
-    (0..n)
-        .into_par_iter()
-        .filter(|&i| !crate::solver::table::holds(&params(i).normalized()))
-        .count()
+/// What answers a Hertz or elastic–plastic element the Hertz table does not
+/// ([`table_row`]): the work limit counts it by that path (`work::Elements`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Rest {
+    /// An elastic–plastic impact whose Hertz impact the table holds but which reaches yield
+    /// (within `taylor::plastic::YIELD_MARGIN`): the Taylor steps answer.
+    PastYield,
+    /// Outside the table, or a table answer without a rebound: the Taylor steps or the
+    /// adaptive solver answer.
+    Whole,
+}
+
+/// The row of `p` (normalized groups `n`) under Hertz or the elastic–plastic law where the
+/// Hertz table answers it — `solver::table::summary`'s first branch, the table under Hertz
+/// and below yield under the elastic–plastic law (`taylor::plastic::below_yield`) — so
+/// [`impact_row`]'s row bit for bit; else which path will ([`Rest`]).
+pub(super) fn table_row(
+    p: &ImpactParams,
+    n: &Normalized,
+    law: ContactLaw,
+) -> Result<ImpactRow, Rest> {
+    let hertz = (n.zp_bar > 0.0)
+        .then(|| crate::solver::table::hertz(n))
+        .flatten()
+        .ok_or(Rest::Whole)?;
+    let s = match law {
+        ContactLaw::ElasticPlastic => {
+            crate::solver::taylor::plastic::below_yield(n, hertz).ok_or(Rest::PastYield)?
+        }
+        _ => hertz,
+    };
+    si_row(p, s).ok_or(Rest::Whole)
 }
 
 /// The row of a linear-law ball that flattens (F̄_m > z̄_p), from the closed form
@@ -137,8 +160,8 @@ where
 /// F_m = F̄_m m v0 ω0, z_m = z̄_m v0/ω0 (F̄ = z̄ on loading), z_f from z̄_f by Eqs. 18–19 (the
 /// contact's `permanent_indentation`, as the exact solver takes it). `None` where the closed
 /// form does not answer or the ball does not leave: the solver answers.
-fn flattening_row(p: &ImpactParams, zp_bar: f64) -> Option<ImpactRow> {
-    let n = p.normalized();
+fn flattening_row(p: &ImpactParams, n: &Normalized) -> Option<ImpactRow> {
+    let zp_bar = n.zp_bar;
     let s = crate::map::fast::flattening(n.lambda, n.zeta, zp_bar).filter(|s| s.cor > 0.0)?;
     let contact = Contact {
         law: ContactLaw::Linear,
@@ -184,7 +207,7 @@ where
     checked.map(|p| {
         let s = fast.next().flatten();
         let p = p.map_err(BallError::Param)?;
-        row_from(&p, law, s).map_err(BallError::Solve)
+        row_from(&p, &p.normalized(), law, s).map_err(BallError::Solve)
     })
 }
 

@@ -1,0 +1,254 @@
+//! `bouncelab.impacts`' rows written straight into its answer's columns, in two passes (issue
+//! 30 item 5). The first pass ([`first_pass`]) answers every element the cheap paths answer —
+//! the linear law's closed forms, eight at a time in lanes ([`lanes::summaries`]), and under
+//! Hertz and the elastic–plastic law the Hertz table (below yield) — and says which elements
+//! are left and by which path ([`Unanswered::elements`], for `work::check_elements`); the
+//! second ([`Unanswered::answer`]) runs those, once the work limit allows them. Each row is the
+//! one [`super::impact_rows`] gives, bit for bit (tests/rows_columns.rs).
+
+use super::BallError;
+use super::rows::{ImpactRow, Rest, row_from, table_row};
+use crate::analysis::work::Elements;
+use crate::map::fast::lanes;
+use crate::model::contact::ContactLaw;
+use crate::model::params::{ImpactParams, ParamError};
+use rayon::prelude::*;
+
+/// Elements a task of the first pass takes: a multiple of the lanes' eight, small enough that
+/// both cores share 10⁴ elements, large enough that rayon's split costs nothing per element.
+const CHUNK: usize = 512;
+
+/// The answer's columns, one entry an element (the arrays of `bouncelab.impacts`' dict).
+pub struct Columns<'a> {
+    /// The COR e.
+    pub cor: &'a mut [f64],
+    /// Peak force F_m, N.
+    pub max_force: &'a mut [f64],
+    /// Contact time t_f, s (NaN: the ball stays at the wall).
+    pub contact_time: &'a mut [f64],
+    /// Peak indentation z_m, m.
+    pub max_indentation: &'a mut [f64],
+    /// Permanent indentation z_f, m.
+    pub permanent_indentation: &'a mut [f64],
+    /// Whether the ball leaves the wall.
+    pub rebound: &'a mut [bool],
+}
+
+impl Columns<'_> {
+    /// Elements: the columns' common length (the shortest, should they differ).
+    pub fn len(&self) -> usize {
+        [
+            self.cor.len(),
+            self.max_force.len(),
+            self.contact_time.len(),
+            self.max_indentation.len(),
+            self.permanent_indentation.len(),
+            self.rebound.len(),
+        ]
+        .into_iter()
+        .min()
+        .unwrap_or(0)
+    }
+
+    /// Whether there are no elements.
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+
+    fn put(&mut self, k: usize, row: &ImpactRow) {
+        self.cor[k] = row.cor;
+        self.max_force[k] = row.max_force;
+        self.contact_time[k] = row.contact_time;
+        self.max_indentation[k] = row.max_indentation;
+        self.permanent_indentation[k] = row.permanent_indentation;
+        self.rebound[k] = row.rebound;
+    }
+
+    /// The columns in pieces of [`CHUNK`] elements, to fill in parallel (rayon's zip of the
+    /// six columns' chunks).
+    fn chunks(&mut self) -> impl IndexedParallelIterator<Item = Columns<'_>> {
+        let n = self.len();
+        (
+            self.cor[..n].par_chunks_mut(CHUNK),
+            self.max_force[..n].par_chunks_mut(CHUNK),
+            self.contact_time[..n].par_chunks_mut(CHUNK),
+            self.max_indentation[..n].par_chunks_mut(CHUNK),
+            self.permanent_indentation[..n].par_chunks_mut(CHUNK),
+            self.rebound[..n].par_chunks_mut(CHUNK),
+        )
+            .into_par_iter()
+            .map(|(cor, f, t, z, z_f, rebound)| Columns {
+                cor,
+                max_force: f,
+                contact_time: t,
+                max_indentation: z,
+                permanent_indentation: z_f,
+                rebound,
+            })
+    }
+}
+
+/// What the first pass left: the elements it did not answer, in order, with the path that
+/// will, and the first element that failed there (a ball that is not one, or a linear-law
+/// impact no path answers) with its error: no element after it is left to run.
+pub struct Unanswered {
+    law: ContactLaw,
+    n: usize,
+    left: Vec<(usize, Rest)>,
+    failed: Option<(usize, BallError)>,
+}
+
+/// What one task of the first pass left.
+struct Part {
+    left: Vec<(usize, Rest)>,
+    failed: Option<(usize, BallError)>,
+}
+
+/// The first pass over the balls `params(0) … params(n − 1)`, `n` the columns' length, on
+/// all cores: each ball checked (a [`BallError::Param`] naming the field), each row the cheap
+/// paths answer written into `out` — on the linear law every row, as [`super::impact_row`]
+/// gives it with the closed forms in lanes (a flattening ball's closed form, the exact
+/// solver where neither answers), under Hertz and the elastic–plastic law the Hertz table's
+/// (`rows::table_row`) — and the others left to [`Unanswered::answer`].
+pub fn first_pass<F>(law: ContactLaw, params: &F, out: &mut Columns<'_>) -> Unanswered
+where
+    F: Fn(usize) -> ImpactParams + Sync,
+{
+    let n = out.len();
+    let parts: Vec<Part> = out
+        .chunks()
+        .enumerate()
+        .map(|(c, mut cols)| match law {
+            ContactLaw::Linear => linear_part(c * CHUNK, params, &mut cols),
+            _ => table_part(c * CHUNK, law, params, &mut cols),
+        })
+        .collect();
+    // the chunks in order, each one's first failure its lowest index: the first found is the
+    // first of all, and no element after it is left to run
+    let mut unanswered = Unanswered {
+        law,
+        n,
+        left: Vec::new(),
+        failed: None,
+    };
+    for part in parts {
+        if unanswered.failed.is_some() {
+            break;
+        }
+        let stop = part.failed.as_ref().map_or(usize::MAX, |(i, _)| *i);
+        let before = part.left.into_iter().take_while(|(i, _)| *i < stop);
+        unanswered.left.extend(before);
+        unanswered.failed = part.failed;
+    }
+    unanswered
+}
+
+impl Unanswered {
+    /// The elements by the path that answers them: the work limit's count
+    /// (`work::check_elements`).
+    pub fn elements(&self) -> Elements {
+        let past_yield = self
+            .left
+            .iter()
+            .filter(|(_, r)| *r == Rest::PastYield)
+            .count();
+        Elements {
+            n: self.n,
+            off_table: self.left.len() - past_yield,
+            past_yield,
+        }
+    }
+
+    /// The rows the first pass left, on all cores, written into `out` (the same columns):
+    /// `Ok` with every row there, else the first failing element and its error.
+    pub fn answer<F>(self, params: &F, out: &mut Columns<'_>) -> Result<(), (usize, BallError)>
+    where
+        F: Fn(usize) -> ImpactParams + Sync,
+    {
+        let law = self.law;
+        let rows: Vec<_> = self
+            .left
+            .par_iter()
+            .map(|&(i, _)| {
+                let p = params(i);
+                row_from(&p, &p.normalized(), law, None)
+            })
+            .collect();
+        for (&(i, _), row) in self.left.iter().zip(rows) {
+            out.put(i, &row.map_err(|e| (i, BallError::Solve(e)))?);
+        }
+        self.failed.map_or(Ok(()), Err)
+    }
+}
+
+/// The ball `p` checked, with its normalized groups.
+fn checked(p: &ImpactParams) -> Result<crate::model::params::Normalized, ParamError> {
+    p.validate().map(|()| p.normalized())
+}
+
+/// The linear-law rows of the elements `first …` of `out`: every ball's λ and ζ into the
+/// lanes at once ([`lanes::summaries`], [`lanes::summary4`]'s bits; a ball that is not one
+/// enters as NaN, a lane whose answer is dropped), then each row from its lane's answer.
+fn linear_part<F>(first: usize, params: &F, out: &mut Columns<'_>) -> Part
+where
+    F: Fn(usize) -> ImpactParams + Sync,
+{
+    let len = out.len();
+    let balls: Vec<_> = (first..first + len)
+        .map(|i| {
+            let p = params(i);
+            checked(&p).map(|n| (p, n))
+        })
+        .collect();
+    let (lambda, zeta): (Vec<f64>, Vec<f64>) = balls
+        .iter()
+        .map(|b| {
+            b.as_ref()
+                .map_or((f64::NAN, f64::NAN), |(_, n)| (n.lambda, n.zeta))
+        })
+        .unzip();
+    let mut fast = vec![None; len];
+    lanes::summaries(&lambda, &zeta, &mut fast);
+    let mut failed = None;
+    for (k, (ball, s)) in balls.into_iter().zip(fast).enumerate() {
+        let row = ball
+            .map_err(BallError::Param)
+            .and_then(|(p, n)| row_from(&p, &n, ContactLaw::Linear, s).map_err(BallError::Solve));
+        match row {
+            Ok(row) => out.put(k, &row),
+            Err(e) => {
+                failed.get_or_insert((first + k, e));
+            }
+        }
+    }
+    Part {
+        left: Vec::new(),
+        failed,
+    }
+}
+
+/// The Hertz or elastic–plastic rows of the elements `first …` of `out` the Hertz table
+/// answers (`rows::table_row`); the others left, with their path.
+fn table_part<F>(first: usize, law: ContactLaw, params: &F, out: &mut Columns<'_>) -> Part
+where
+    F: Fn(usize) -> ImpactParams + Sync,
+{
+    let mut part = Part {
+        left: Vec::new(),
+        failed: None,
+    };
+    for k in 0..out.len() {
+        let i = first + k;
+        let p = params(i);
+        match checked(&p) {
+            Err(e) => {
+                part.failed.get_or_insert((i, BallError::Param(e)));
+            }
+            Ok(n) => match table_row(&p, &n, law) {
+                Ok(row) => out.put(k, &row),
+                Err(rest) => part.left.push((i, rest)),
+            },
+        }
+    }
+    part
+}
