@@ -4,6 +4,7 @@ BENCHMARKS.md). Run after `pip install ./python`:
     RAYON_NUM_THREADS=1 python benches/impacts_python.py    # per core
     python benches/impacts_python.py                        # all cores
     python benches/impacts_python.py calls                  # the calls alone (CALLS)
+    python benches/impacts_python.py laws                   # Hertz, elastic-plastic (LAWS)
 
 Prints the median of 5 runs (wall clock, then CPU time) of `bouncelab.impacts` over 10⁶
 linear-law balls (the superball with K_p, c, K_r spread 5 %, no flattening: the closed form),
@@ -101,9 +102,40 @@ def time_calls(calls=20000):
         print(f"{name}: {wall / calls * 1e6:.2f} µs per call ({cpu / calls * 1e6:.2f} µs CPU)")
 
 
+GOLF = dict(m=0.0456, k_p=5.6e5, c=1200.0, k_r=5.6e5, z_p=3e-3)
+
+# 10⁶ golf-like balls under Hertz (v0 1 … 30 m/s: all in the Hertz table) and under the
+# elastic-plastic law below yield (v0 0.5 … 3 m/s: the table's answers too)
+LAWS = [
+    ("hertz, v0 1-30 m/s", "hertz", (1.0, 30.0)),
+    ("elastic-plastic below yield, v0 0.5-3 m/s", "elastic-plastic", (0.5, 3.0)),
+]
+
+
+def time_laws(n=10**6):
+    """Median wall and CPU time of `impacts` over `n` elements of each of LAWS, per element."""
+    threads = os.environ.get("RAYON_NUM_THREADS", "all")
+    for name, law, (lo, hi) in LAWS:
+        v0 = np.linspace(lo, hi, n)
+        f = lambda: bouncelab.impacts(v0=v0, law=law, **GOLF)  # noqa: E731
+        try:
+            f()
+        except ValueError as e:
+            print(f"impacts, 1e6 {name}: refused ({str(e)[:90]}…)")
+            continue
+        wall, cpu = median_of(f), median_of_cpu(f)
+        print(
+            f"impacts, 1e6 {name}, {threads} threads: {wall * 1e3:.1f} ms, "
+            f"{wall / n * 1e9:.0f} ns per element ({cpu / n * 1e9:.0f} ns CPU)"
+        )
+
+
 def main():
     if sys.argv[1:] == ["calls"]:  # the per-call overheads only
         time_calls()
+        return
+    if sys.argv[1:] == ["laws"]:  # Hertz and elastic-plastic arrays only
+        time_laws()
         return
     n = 10**6
     rng = np.random.default_rng(1)
