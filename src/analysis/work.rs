@@ -63,6 +63,10 @@ pub const TAYLOR_SAMPLES_PER_IMPACT: u64 = 20;
 /// 0.35 µs, one the spreads carry onto the Taylor steps some 15 µs (BENCHMARKS.md), so 10⁶
 /// of them are the limit; an elastic–plastic sample past yield counts
 /// 1/[`TAYLOR_SAMPLES_PER_IMPACT`] (500 000 the limit); any other a whole impact (25 000).
+/// The nominal ball decides for every sample (the rule [`check_elements`] applies element by
+/// element): of a ball below yield, the spreads may carry samples past it, each then costing
+/// the Taylor steps' 10–15 µs against the 7 µs it counts — at worst, every sample past
+/// yield, about twice the time [`LIMIT`] stands for (docs/guarantees.md).
 pub fn check_samples_by(
     samples: usize,
     law: ContactLaw,

@@ -121,7 +121,7 @@ fn si_row(p: &ImpactParams, s: crate::solver::taylor::Summary) -> Option<ImpactR
 }
 
 /// What answers a Hertz or elastic–plastic element the Hertz table does not
-/// ([`table_row`]): the work limit counts it by that path (`work::Elements`).
+/// (`table_row`): the work limit counts it by that path (`work::Elements`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Rest {
     /// An elastic–plastic impact whose Hertz impact the table holds but which reaches yield
