@@ -11,13 +11,9 @@ use super::action::{self, Action};
 use super::app::{App, Effect};
 use super::export;
 use super::save;
-use super::worker::Worker;
+use super::workers::Workers;
 use crate::catalog;
 use crate::fault::Fault;
-use crate::tui::views::fit::worker::FitWorker;
-use crate::tui::views::map::worker::{self as map_worker, MapWorker};
-use crate::tui::views::models::state::ModelsRequest;
-use crate::tui::views::oblique::worker::{self as oblique_worker, ObliqueMapWorker};
 use ratatui::DefaultTerminal;
 use ratatui::crossterm::event;
 use std::time::{Duration, Instant};
@@ -34,13 +30,7 @@ const FRAME: Duration = Duration::from_millis(33);
 const IDLE: Duration = Duration::from_millis(100);
 
 pub fn run(terminal: &mut DefaultTerminal, app: &mut App) -> anyhow::Result<()> {
-    let mut worker = Workers {
-        sweeps: Worker::spawn()?,
-        models: Worker::spawn()?,
-        fits: FitWorker::spawn()?,
-        maps: map_worker::spawn()?,
-        oblique: oblique_worker::spawn()?,
-    };
+    let mut worker = Workers::default();
     // test-only (see `crate::fault`): tests/tui_pty.rs checks that the terminal is restored
     // after a panic in here
     let panic_on_key = Fault::PanicInLoop.active();
@@ -114,26 +104,18 @@ pub fn run(terminal: &mut DefaultTerminal, app: &mut App) -> anyhow::Result<()> 
             dirty = true;
         }
         clock = now;
-        while let Some((request, result)) = worker.sweeps.try_recv() {
-            effects.extend(app.apply(Action::SpeedReady(request, result)));
-            dirty = true;
+        let news = worker.news();
+        if news
+            .iter()
+            .any(|a| matches!(a, Action::WorkerStopped { .. }))
+        {
+            // a panic on one of rayon's threads under a worker restored the terminal (ratatui's
+            // hook: crate::tui::background::quiet_worker_panics): take it back, redraw whole
+            super::resume_all();
+            terminal.draw(|f| f.render_widget(ratatui::widgets::Clear, f.area()))?;
         }
-        while let Some((request, result)) = worker.models.try_recv() {
-            effects.extend(app.apply(Action::ModelsReady(request, result)));
-            dirty = true;
-        }
-        while let Some((id, result)) = worker.fits.try_recv() {
-            effects.extend(app.apply(Action::FitReady(id, result)));
-            dirty = true;
-        }
-        while let Some((generation, map)) = worker.maps.try_recv() {
-            let map = Box::new(map);
-            effects.extend(app.apply(Action::MapPass { generation, map }));
-            dirty = true;
-        }
-        while let Some((generation, map)) = worker.oblique.try_recv() {
-            let map = Box::new(map);
-            effects.extend(app.apply(Action::ObliqueMapReady { generation, map }));
+        for action in news {
+            effects.extend(app.apply(action));
             dirty = true;
         }
         if dirty {
@@ -180,37 +162,19 @@ fn is_suspend(ev: &event::Event) -> bool {
         && k.kind == KeyEventKind::Press)
 }
 
-/// The background threads: COR-vs-speed sweeps, the models view's calibrations, the fits, the
-/// map's passes.
-struct Workers {
-    sweeps: Worker,
-    models: Worker<ModelsRequest>,
-    fits: FitWorker,
-    maps: MapWorker,
-    oblique: ObliqueMapWorker,
-}
-
 /// Carry out `effects`, and those the answers to them bring, until none is left.
 fn carry_out(mut effects: Vec<Effect>, app: &mut App, worker: &mut Workers) {
     while !effects.is_empty() {
         for effect in std::mem::take(&mut effects) {
             let answer = match effect {
-                Effect::Compute(requests) => {
-                    worker.sweeps.want(&requests);
-                    continue;
-                }
-                Effect::ComputeModels(requests) => {
-                    worker.models.want(&requests);
-                    continue;
-                }
-                Effect::Map(job) => {
-                    worker.maps.send(job);
-                    continue;
-                }
-                Effect::ObliqueMap(job) => {
-                    worker.oblique.send(job);
-                    continue;
-                }
+                Effect::Compute(_)
+                | Effect::ComputeModels(_)
+                | Effect::Fit(_)
+                | Effect::Map(_)
+                | Effect::ObliqueMap(_) => match worker.hand(effect) {
+                    Some(stopped) => stopped,
+                    None => continue,
+                },
                 Effect::Export(request) => match export::write(&request, &export::dir_from_env()) {
                     Ok(files) => Action::Exported { files },
                     Err(msg) => Action::ExportFailed { msg },
@@ -221,10 +185,6 @@ fn carry_out(mut effects: Vec<Effect>, app: &mut App, worker: &mut Workers) {
                 }
                 Effect::Save(request) => {
                     save::write(&request, catalog::user_presets_dir().as_deref())
-                }
-                Effect::Fit(request) => {
-                    worker.fits.want(request);
-                    continue;
                 }
                 Effect::SaveSession { path, text } => {
                     let mut out = crate::atomic::Outputs::new(false);

@@ -45,6 +45,7 @@ pub mod ui;
 pub mod views;
 pub mod widgets;
 pub mod worker;
+pub mod workers;
 
 use crate::preset::Preset;
 use anyhow::Context;
@@ -121,7 +122,11 @@ pub fn run_app(
     if let Some(path) = config {
         app = app.with_config(std::path::absolute(&path).unwrap_or(path));
     }
-    let mut terminal = ratatui::try_init()
+    let terminal = ratatui::try_init();
+    // over ratatui's hook (which restores the terminal on a panic): a worker's panic is the
+    // view's to report, the explorer goes on (src/tui/background.rs)
+    background::quiet_worker_panics();
+    let mut terminal = terminal
         .inspect_err(|_| {
             if terminal::is_raw_mode_enabled().unwrap_or(false) {
                 ratatui::restore();

@@ -324,10 +324,12 @@ impl MapPanel<'_> {
             Some(t) => format!(" · where {}", super::targets::text(t)),
             None => " · t: targets".to_string(),
         };
-        let progress = if map.is_complete() {
-            format!(" · {}×{} cells", map.zetas.len(), map.lambdas.len())
-        } else {
-            " · refining…".to_string()
+        let progress = match &self.view.stopped {
+            _ if map.is_complete() => {
+                format!(" · {}×{} cells", map.zetas.len(), map.lambdas.len())
+            }
+            Some(why) => format!(" · refining stopped: {why} (R retries)"),
+            None => " · refining…".to_string(),
         };
         let second = format!("{sens}{targets}{progress}");
         let lines = if area.height >= 2 {
