@@ -194,7 +194,7 @@ fn carry_out(mut effects: Vec<Effect>, app: &mut App, worker: &mut Workers) {
                     }
                 }
                 Effect::Copy(text) => {
-                    super::command::copy(&text);
+                    super::clipboard::copy(&text);
                     continue;
                 }
                 Effect::LoadMeasured(path) => match crate::tui::views::fit::state::load(&path) {

@@ -23,6 +23,7 @@ pub mod action;
 pub mod app;
 pub mod background;
 pub mod chartview;
+pub mod clipboard;
 pub mod command;
 pub mod compute;
 pub mod crosshair;
@@ -109,7 +110,7 @@ pub fn run_app(
     remove_stale_temporaries();
     let mut app = app
         .with_background_sweeps()
-        .with_osc52(command::osc52_here())
+        .with_osc52(clipboard::osc52_here())
         .with_motion(motion_wanted())
         .with_color_depth(palette::detect(
             std::env::var("COLORTERM").ok().as_deref(),
