@@ -113,8 +113,11 @@ fn a_new_request_after_a_stop_is_asked() {
         other => panic!("expected the new ball's sweep asked, got {other:?}"),
     }
     assert!(!app.speed_requests().is_empty());
-    let (text, _) = message(&app);
-    assert!(!text.contains("stopped"), "{text}");
+    let text = screen_text(&draw(&app, 120, 40)).join("\n");
+    assert!(
+        text.contains("updating…") && !text.contains("stopped"),
+        "{text}"
+    );
 }
 
 /// The sweeps view with its worker stopped, at the five sizes the explorer promises.

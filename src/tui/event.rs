@@ -44,20 +44,8 @@ pub fn run(terminal: &mut DefaultTerminal, app: &mut App) -> anyhow::Result<()> 
             terminal.draw(|frame| frame.render_widget(&*app, frame.area()))?;
             dirty = false;
         }
-        let waiting =
-            !app.speed_requests().is_empty() || app.models_request().is_some() || app.fitting();
         let animating = app.animating();
-        let refining = app.map_pending() || app.oblique_pending();
-        let wait = if refining {
-            MAP_POLL
-        } else if animating {
-            FRAME
-        } else if waiting {
-            SWEEP_POLL
-        } else {
-            IDLE
-        };
-        let mut next = if event::poll(wait)? {
+        let next = if event::poll(wait(app))? {
             Some(event::read()?)
         } else {
             None
@@ -68,33 +56,10 @@ pub fn run(terminal: &mut DefaultTerminal, app: &mut App) -> anyhow::Result<()> 
             terminal.draw(|f| f.render_widget(ratatui::widgets::Clear, f.area()))?;
             dirty = true;
         }
-        let mut resized = false;
-        while let Some(ev) = next {
-            resized |= matches!(ev, event::Event::Resize(..));
-            if panic_on_key && matches!(ev, event::Event::Key(_)) {
-                panic!(
-                    "{}: test fault injected at a key press",
-                    Fault::PanicInLoop.name()
-                );
-            }
-            dirty = true; // a resize, too, needs a new frame
-            if is_suspend(&ev) {
-                // raw mode delivers Ctrl-Z as a key: suspend as the shell's SIGTSTP would
-                crate::signals::suspend();
-            } else if let Some(a) = action::from_event(&ev, app.mode()) {
-                effects.extend(app.apply(a));
-            }
-            if app.should_quit() {
-                return Ok(());
-            }
-            next = if event::poll(Duration::ZERO)? {
-                Some(event::read()?)
-            } else if std::mem::take(&mut resized) {
-                rearm_input();
-                event::poll(Duration::ZERO)?.then(event::read).transpose()?
-            } else {
-                None
-            };
+        // a resize, too, needs a new frame
+        dirty |= apply_queued(next, app, &mut effects, panic_on_key)?;
+        if app.should_quit() {
+            return Ok(());
         }
         // the animation's clock: real time since the last frame, counted only while the
         // animation was already playing (not the idle wait before `d` or a replay)
@@ -123,6 +88,62 @@ pub fn run(terminal: &mut DefaultTerminal, app: &mut App) -> anyhow::Result<()> 
         }
     }
     Ok(())
+}
+
+/// How long to wait for an event: briefly while a map's passes come in, a frame while the drop
+/// animates, longer while a sweep, calibration or fit is out, else [`IDLE`].
+fn wait(app: &App) -> Duration {
+    let waiting =
+        !app.speed_requests().is_empty() || app.models_request().is_some() || app.fitting();
+    if app.map_pending() || app.oblique_pending() {
+        MAP_POLL
+    } else if app.animating() {
+        FRAME
+    } else if waiting {
+        SWEEP_POLL
+    } else {
+        IDLE
+    }
+}
+
+/// Apply `next` and every event queued behind it (zero-timeout polls; after a resize the
+/// terminal is asked to announce pending input again, [`rearm_input`]), until none is left or
+/// the explorer quits; whether any came.
+fn apply_queued(
+    mut next: Option<event::Event>,
+    app: &mut App,
+    effects: &mut Vec<Effect>,
+    panic_on_key: bool,
+) -> std::io::Result<bool> {
+    let (mut any, mut resized) = (false, false);
+    while let Some(ev) = next {
+        any = true;
+        resized |= matches!(ev, event::Event::Resize(..));
+        if panic_on_key && matches!(ev, event::Event::Key(_)) {
+            panic!(
+                "{}: test fault injected at a key press",
+                Fault::PanicInLoop.name()
+            );
+        }
+        if is_suspend(&ev) {
+            // raw mode delivers Ctrl-Z as a key: suspend as the shell's SIGTSTP would
+            crate::signals::suspend();
+        } else if let Some(a) = action::from_event(&ev, app.mode()) {
+            effects.extend(app.apply(a));
+        }
+        if app.should_quit() {
+            break;
+        }
+        next = if event::poll(Duration::ZERO)? {
+            Some(event::read()?)
+        } else if std::mem::take(&mut resized) {
+            rearm_input();
+            event::poll(Duration::ZERO)?.then(event::read).transpose()?
+        } else {
+            None
+        };
+    }
+    Ok(any)
 }
 
 /// Have the terminal announce the input it holds again. crossterm's Unix reader waits on the
