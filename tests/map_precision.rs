@@ -183,11 +183,15 @@ fn fast_and_exact_agree_at_the_edges() {
 fn fast_summary_agrees_with_the_exact_solver_at_random_points() {
     // the tests' seeded generator: the same points every run
     let mut rng = Seeded::new(0x9E37_79B9_7F4A_7C15);
-    let (mut answered, total) = (0, 20_000);
+    let (mut answered, total, mut worst) = (0, 20_000, 0.0f64);
     for _ in 0..total {
         let l = rng.log_uniform(1e-6, 1e6);
         let z = rng.log_uniform(1e-4, 1e4);
-        answered += fast_vs_exact(l, z).is_some() as usize;
+        if let Some(d) = fast_vs_exact(l, z) {
+            answered += 1;
+            worst = worst.max(d);
+        }
     }
     assert!(answered * 100 >= total * 90, "{answered} of {total}");
+    eprintln!("fast vs exact at random points: worst {worst:e}, {answered} of {total} answered");
 }
