@@ -398,5 +398,8 @@ fn the_map_that_comes_back_while_the_terminal_is_too_small_is_taken() {
     app.update(Action::Resize(120, 40));
     assert!(!app.oblique_pending(), "still waited for");
     let held = &app.oblique_view().map;
-    assert!(matches!(held, Some(Err(e)) if e == "no map here"), "{held:?}");
+    assert!(
+        matches!(held, Some(Err(e)) if e == "no map here"),
+        "{held:?}"
+    );
 }
