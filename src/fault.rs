@@ -4,7 +4,8 @@
 //!
 //! These switches exist so that the tests under a pseudo-terminal (`tests/tui_pty.rs`,
 //! `tests/tui_save_pty.rs`) can make the real binary fail at a chosen point: a panic inside
-//! the explorer's event loop (is the terminal restored?) and a pause in the middle of writing
+//! the explorer's event loop (is the terminal restored?), a panic in one of its worker threads
+//! (does the view say so, and does the explorer go on?) and a pause in the middle of writing
 //! a preset file (does a SIGKILL there leave a truncated preset?).
 
 /// The environment variable that switches a fault on.
@@ -22,6 +23,10 @@ pub enum Fault {
     /// `slow-work`: each step of watched long work (a fit's model run) takes 20 ms more, so
     /// that a test can signal the command mid-work (tests/cli_progress_pty.rs).
     SlowWork,
+    /// `panic-in-worker`: the explorer's first worker thread panics at its first job (the
+    /// sweeps' thread: `Tab` to the sweeps view), once a process, so that a test can see the
+    /// view say its computation stopped and `R` retry it (tests/tui_worker_pty.rs).
+    PanicInWorker,
 }
 
 /// How long `pause-mid-save` sleeps: far longer than a test needs to send SIGKILL.
@@ -33,6 +38,7 @@ impl Fault {
             Fault::PanicInLoop => "panic-in-loop",
             Fault::PauseMidSave => "pause-mid-save",
             Fault::SlowWork => "slow-work",
+            Fault::PanicInWorker => "panic-in-worker",
         }
     }
 

@@ -76,7 +76,13 @@ fn cor_table_with_flattening() {
     assert_eq!(f.model.len(), SPEEDS.len());
 }
 
-/// Drops from 0.2 … 1.8 m (v0 ≈ 2 … 6 m/s), rebound heights read to ±3 mm.
+/// Drops from 0.2 … 1.8 m (v0 ≈ 2 … 6 m/s), rebound heights read to ±3 mm, each COR given
+/// the standard deviation that reading makes of it (e = √(R/H): σ_e = σ_R / (2√(R H)), nine
+/// times larger at 0.2 m than at 1.8 m). Over 300 seeds of tests/seeded/mod.rs the 95 %
+/// intervals so fitted covered the truth 291 (K_r) and 292 (z_p) times; fitted without the
+/// standard deviations (equal weights, as `bouncelab fit --drop-height` fits today) only 184
+/// and 204 times: this test's seed covered then by chance (a defect of the unweighted drop
+/// fit's intervals, reported, not of this test's threshold).
 #[test]
 fn drop_test() {
     use bouncelab::measured::{CorPoint, drop_to_cor};
@@ -98,7 +104,7 @@ fn drop_test() {
             CorPoint {
                 v0,
                 cor,
-                cor_sd: None,
+                cor_sd: Some(0.003 / (2.0 * (rebound * h).sqrt())),
                 max_force: None,
                 contact_time: None,
                 line: 0,

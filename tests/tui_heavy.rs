@@ -106,12 +106,12 @@ fn a_dense_trace_fit_reports_progress_then_its_answer() {
     use bouncelab::tui::views::fit::state::FitNews;
     use bouncelab::tui::views::fit::worker::FitWorker;
     use std::time::{Duration, Instant};
-    let w = FitWorker::spawn().unwrap();
+    let mut w = FitWorker::spawn().unwrap();
     w.want(dense_trace_request(1));
     let start = Instant::now();
     let mut runs = Vec::new();
     let outcome = loop {
-        match w.try_recv() {
+        match w.try_recv().unwrap() {
             Some((1, FitNews::Progress(p))) => runs.push(p.runs),
             Some((1, FitNews::Done(o))) => break o,
             Some(other) => panic!("{other:?}"),

@@ -373,3 +373,33 @@ fn the_map_goes_to_the_worker_and_is_asked_again_after_a_cancel() {
     });
     assert!(app.oblique_view().held_map().is_some() && !app.oblique_pending());
 }
+
+/// The map that comes back while the terminal is below the minimum size is taken, as the
+/// other workers' answers are (it was dropped: the view said "computing the map…" and the
+/// loop woke every 5 ms until the spin changed).
+#[test]
+fn the_map_that_comes_back_while_the_terminal_is_too_small_is_taken() {
+    use bouncelab::tui::action::Action;
+    use bouncelab::tui::app::Effect;
+    let mut app = App::new(preset("tennis"), false).with_background_sweeps();
+    let job = press(&mut app, &[KeyCode::Char('i')])
+        .into_iter()
+        .find_map(|e| match e {
+            Effect::ObliqueMap(job) => Some(job),
+            _ => None,
+        })
+        .expect("the map asked of the worker");
+    app.update(Action::Resize(40, 10));
+    assert!(app.too_small());
+    app.update(Action::ObliqueMapReady {
+        generation: job.generation,
+        map: Box::new(Err("no map here".into())),
+    });
+    app.update(Action::Resize(120, 40));
+    assert!(!app.oblique_pending(), "still waited for");
+    let held = &app.oblique_view().map;
+    assert!(
+        matches!(held, Some(Err(e)) if e == "no map here"),
+        "{held:?}"
+    );
+}

@@ -137,7 +137,7 @@ fn y_shows_one_unwrapped_row_and_copies_it_with_osc_52_where_allowed() {
         let screen = tui_common::screen_text(&tui_common::draw(&app, w, h)).join("\n");
         assert!(screen.contains(&shown), "{w}×{h}: {screen}");
     }
-    let osc = bouncelab::tui::command::osc52("bouncelab run --v0 3");
+    let osc = bouncelab::tui::clipboard::osc52("bouncelab run --v0 3");
     assert_eq!(osc, "\x1b]52;c;Ym91bmNlbGFiIHJ1biAtLXYwIDM=\x07");
 }
 

@@ -1,10 +1,13 @@
 //! The explorer's state and [`App::update`], the only place it changes. Curves are computed
 //! here, when the state changes, and stored; drawing only reads them. `update` returns the
 //! side effects it wants ([`Effect`]: write an export, write a preset, run sweeps in the
-//! background) for the event loop to carry out. The dialogs (value entry, preset name,
-//! overwrite question) are handled in `dialogs`, the COR-vs-speed sweeps' bookkeeping in
-//! `sweeps`, and what the charts are drawn from in `scene`.
+//! background) for the event loop to carry out. Its parts, one file a concern in `app/`:
+//! `edit` (the keys that change the setting), `answers` (the loop's answers and the workers'
+//! news), `stopped` (a worker gone, and `R`), `refresh` (bringing the curves up to date),
+//! `dialogs`, `form`, `picker`, `pins`, `scene` (what the charts are drawn from) and the rest;
+//! each view's part is in its folder's `update.rs` (src/tui/views/).
 
+mod answers;
 mod charts;
 mod command;
 mod crosshair;
@@ -15,8 +18,10 @@ mod getters;
 mod picker;
 mod pins;
 mod quit;
+mod refresh;
 mod scene;
 mod screen;
+mod stopped;
 
 use super::action::{Action, Mode};
 use super::compute::{self, ZetaCurve};
@@ -178,17 +183,12 @@ impl App {
         if self.too_small() && !App::acts_when_too_small(&action) {
             return Vec::new();
         }
-        if !matches!(
-            action,
-            Action::SpeedReady(..)
-                | Action::ModelsReady(..)
-                | Action::Tick(_)
-                | Action::Resize(..)
-                | Action::FitReady(..)
-                | Action::MapPass { .. }
-                | Action::ObliqueMapReady { .. }
-        ) {
+        if !answers::keeps_message(&action) {
             self.message = None;
+        }
+        if answers::is_answer(&action) {
+            self.answer(action);
+            return Vec::new();
         }
         match action {
             Action::Quit => self.ask_to_quit(),
@@ -197,21 +197,16 @@ impl App {
                 crate::tui::state::Purpose::SessionPath,
                 "bouncelab-session.toml".into(),
             ),
-            Action::SessionSaved(path) => self.info(format!(
-                "session saved to {} (bouncelab --session {} restores it)",
-                path.display(),
-                path.display()
-            )),
-            Action::SessionFailed(why) => self.error(format!("session not saved: {why}")),
             Action::Dismiss => self.info("Esc closes dialogs and never quits: q quits".into()),
             Action::Resize(w, h) => self.resize(w, h),
             Action::HelpScroll(how) => self.scroll_help(how),
-            Action::NextView => {
-                self.view = self.view.next();
-                self.crosshair = None;
-            }
-            Action::PrevView => {
-                self.view = self.view.prev();
+            Action::NextView | Action::PrevView => {
+                let next = action == Action::NextView;
+                self.view = if next {
+                    self.view.next()
+                } else {
+                    self.view.prev()
+                };
                 self.crosshair = None;
             }
             Action::Crosshair
@@ -226,204 +221,21 @@ impl App {
             ),
             Action::Export => self.export_wanted = true,
             Action::OpenPicker => return vec![Effect::ListPresets],
-            Action::PresetsListed(..) | Action::PickerMove(_) | Action::PickerChoose => {
-                self.picker(action)
-            }
-            Action::SpeedReady(..)
-            | Action::ModelsReady(..)
-            | Action::Exported { .. }
-            | Action::ExportFailed { .. }
-            | Action::Saved { .. }
-            | Action::SaveExists { .. }
-            | Action::SaveFailed { .. } => self.answer(action),
-            Action::MeasuredLoaded { path, data } => self.measured_loaded(path, data),
-            Action::MeasuredFailed { msg } => self.error(msg),
-            Action::FitReady(id, result) => self.fit_ready(id, result),
+            Action::PickerMove(_) | Action::PickerChoose => self.picker(action),
             Action::ClearMeasured => self.clear_measured(),
             Action::Fit => return self.start_fit().into_iter().collect(),
             Action::ApplyFit => self.apply_fit(),
-            Action::OpenInput
-            | Action::InputChar(_)
-            | Action::InputBackspace
-            | Action::InputClear
-            | Action::InputDelete
-            | Action::InputCursor(_)
-            | Action::InputSubmit
-            | Action::InputCancel
-            | Action::SavePreset
-            | Action::ConfirmYes
-            | Action::ConfirmNo
-            | Action::OpenMeasured
-            | Action::ToggleHelp
-            | Action::CloseHelp => return self.dialog(action).into_iter().collect(),
+            a if App::is_dialog(&a) => return self.dialog(a).into_iter().collect(),
             Action::OpenForm | Action::FormMove(_) | Action::FormEdit => self.form(action),
-            Action::MapCursor { .. }
-            | Action::MapQuantity
-            | Action::MapTargets
-            | Action::MapPass { .. } => self.map_action(action),
+            Action::MapCursor { .. } | Action::MapQuantity | Action::MapTargets => {
+                self.map_action(action)
+            }
             Action::ShowCommand => return self.show_command(),
             Action::Normalize | Action::Zoom(_) => self.chart_view(action),
             Action::Oblique(key) => self.oblique_action(key),
-            Action::ObliqueMapReady { generation, map } => {
-                self.receive_oblique_map(generation, *map)
-            }
+            Action::Retry => self.retry(),
             _ => self.edit(action),
         }
         Vec::new()
-    }
-
-    /// The actions that change the setting, the selection or the ghost.
-    fn edit(&mut self, action: Action) {
-        match action {
-            Action::Step { param, dir, coarse } => {
-                self.selected = param;
-                let value = param.step(self.setting.get(param), dir, coarse || self.coarse);
-                self.step_param(param, value);
-            }
-            Action::StepSelected { dir, coarse } => {
-                let param = self.selected;
-                let value = param.step(self.setting.get(param), dir, coarse || self.coarse);
-                self.step_param(param, value);
-            }
-            Action::SelectNext => self.selected = self.selected.next(),
-            Action::SelectPrev => self.selected = self.selected.prev(),
-            Action::SetCoarse(coarse) => {
-                self.coarse = coarse;
-                self.info(if coarse { "coarse steps" } else { "fine steps" }.into());
-            }
-            Action::LoadPreset(i) => self.load_preset(i),
-            Action::CycleLaw => {
-                let law = self.setting.law.next();
-                self.change(Setting {
-                    law,
-                    ..self.setting.clone()
-                });
-                self.info(format!("contact law: {law}"));
-            }
-            Action::Reset => {
-                let i = self.setting.preset;
-                self.change(Setting::from_preset(i, &self.presets[i]));
-                self.info(format!("reset to the {} preset", self.presets[i].name));
-            }
-            Action::Pin => self.pin(),
-            Action::Unpin => self.unpin(),
-            Action::Undo => match self.undo.pop() {
-                Some(previous) => {
-                    self.setting = previous.setting;
-                    self.oblique.set_values(previous.oblique);
-                    self.info("undone".into());
-                }
-                None => self.warn("nothing to undo".into()),
-            },
-            _ => {}
-        }
-    }
-
-    /// The event loop's answers: a finished sweep, a written (or failed) export or save.
-    fn answer(&mut self, action: Action) {
-        match action {
-            Action::SpeedReady(request, result) => self.receive_speed(&request, result),
-            Action::ModelsReady(request, result) => self.receive_models(request, result),
-            Action::Exported { files } => self.info(export::message(&files)),
-            Action::ExportFailed { msg } => self.error(format!("export failed: {msg}")),
-            Action::Saved { path, replaced } => self.saved(&path, replaced),
-            Action::SaveExists { path, holds } => self.ask_overwrite(path, holds),
-            Action::SaveFailed { msg } => {
-                self.save_out = None;
-                self.error(format!("save failed: {msg}"));
-            }
-            _ => {}
-        }
-    }
-
-    fn load_preset(&mut self, i: usize) {
-        match self.presets.get(i) {
-            Some(p) => {
-                let name = p.name.clone();
-                self.change(Setting::from_preset(i, p));
-                self.info(format!("loaded {name}"));
-            }
-            // 4 loads a start preset that is none of the three; the help offers it, so
-            // say why it does nothing here (tests/tui_app.rs: `four_says_why_it_loads_nothing`)
-            None if i == 3 => self.warn(format!(
-                "4 loads the start preset when it is not one of 1–3: 1–{} load one",
-                self.presets.len()
-            )),
-            None => self.warn(format!(
-                "no preset {}: 1–{} load one",
-                i + 1,
-                self.presets.len()
-            )),
-        }
-    }
-
-    /// Recompute what the current state needs and is not up to date: the impact when the
-    /// parameters or law changed, the ζ curve when λ changed, the speed sweep when the sweeps
-    /// view shows it. Returns the sweeps to ask of the background worker when they changed,
-    /// and an export once one is wanted and the view is up to date.
-    pub fn refresh(&mut self) -> Vec<Effect> {
-        self.refresh_run();
-        if self.view == View::Drop {
-            let preset = &self.presets[self.setting.preset];
-            self.drop
-                .refresh(&self.setting.params, self.setting.law, preset);
-        }
-        let mut effects: Vec<Effect> = self.refresh_sweeps().into_iter().collect();
-        effects.extend(self.refresh_models());
-        effects.extend(self.refresh_map());
-        effects.extend(self.refresh_oblique());
-        if self.export_wanted {
-            effects.extend(self.prepare_export());
-        }
-        effects
-    }
-
-    /// Bring the impact and the ζ curve up to the setting (a batch of keys applies several
-    /// actions before one refresh: `p` after `2` in one batch must pin golf's run).
-    pub(super) fn refresh_run(&mut self) {
-        let s = &self.setting;
-        // the pair's run: the reduced ball at the closing speed, or on the target's surface
-        let key = (s.params, s.law, s.target());
-        if self.run_for != Some(key) {
-            self.run_for = Some(key);
-            (self.run, self.target_motion) = match compute::pair(s) {
-                Ok((run, motion)) => (Some(run), motion),
-                Err(e) => {
-                    self.error(e);
-                    (None, None)
-                }
-            };
-        }
-        let lambda = self.setting.get(Param::Lambda);
-        if self.zeta.as_ref().is_none_or(|c| c.lambda != lambda) {
-            self.zeta = compute::zeta_curve(lambda).map_err(|e| self.error(e)).ok();
-        }
-    }
-
-    /// The export of what is on screen, once it is up to date: while a COR-vs-speed sweep is
-    /// still out the export waits for it (and says so).
-    fn prepare_export(&mut self) -> Option<Effect> {
-        if self.view == View::Map {
-            return self.prepare_map_export();
-        }
-        if self.view == View::Oblique {
-            return self.prepare_oblique_export();
-        }
-        if !self.sweeps.wanted.is_empty() {
-            self.info("export waits for the COR-vs-speed sweep…".into());
-            return None;
-        }
-        if self.models.wanted.is_some() {
-            self.info("export waits for the models' calibration…".into());
-            return None;
-        }
-        self.export_wanted = false;
-        match export::request(&self.scene(), self.view.charts()) {
-            Ok(r) => Some(Effect::Export(r.with_header(self.csv_header()))),
-            Err(e) => {
-                self.error(format!("export failed: {e}"));
-                None
-            }
-        }
     }
 }

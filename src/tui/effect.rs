@@ -41,6 +41,6 @@ pub enum Effect {
         text: String,
     },
     /// Copy this text to the terminal's clipboard with OSC 52 (`y`,
-    /// [`crate::tui::command::osc52`]); a terminal without it ignores the sequence. No answer.
+    /// [`crate::tui::clipboard::osc52`]); a terminal without it ignores the sequence. No answer.
     Copy(String),
 }

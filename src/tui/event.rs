@@ -11,13 +11,9 @@ use super::action::{self, Action};
 use super::app::{App, Effect};
 use super::export;
 use super::save;
-use super::worker::Worker;
+use super::workers::Workers;
 use crate::catalog;
 use crate::fault::Fault;
-use crate::tui::views::fit::worker::FitWorker;
-use crate::tui::views::map::worker::{self as map_worker, MapWorker};
-use crate::tui::views::models::state::ModelsRequest;
-use crate::tui::views::oblique::worker::{self as oblique_worker, ObliqueMapWorker};
 use ratatui::DefaultTerminal;
 use ratatui::crossterm::event;
 use std::time::{Duration, Instant};
@@ -34,13 +30,7 @@ const FRAME: Duration = Duration::from_millis(33);
 const IDLE: Duration = Duration::from_millis(100);
 
 pub fn run(terminal: &mut DefaultTerminal, app: &mut App) -> anyhow::Result<()> {
-    let mut worker = Workers {
-        sweeps: Worker::spawn()?,
-        models: Worker::spawn()?,
-        fits: FitWorker::spawn()?,
-        maps: map_worker::spawn()?,
-        oblique: oblique_worker::spawn()?,
-    };
+    let mut worker = Workers::default();
     // test-only (see `crate::fault`): tests/tui_pty.rs checks that the terminal is restored
     // after a panic in here
     let panic_on_key = Fault::PanicInLoop.active();
@@ -54,20 +44,8 @@ pub fn run(terminal: &mut DefaultTerminal, app: &mut App) -> anyhow::Result<()> 
             terminal.draw(|frame| frame.render_widget(&*app, frame.area()))?;
             dirty = false;
         }
-        let waiting =
-            !app.speed_requests().is_empty() || app.models_request().is_some() || app.fitting();
         let animating = app.animating();
-        let refining = app.map_pending() || app.oblique_pending();
-        let wait = if refining {
-            MAP_POLL
-        } else if animating {
-            FRAME
-        } else if waiting {
-            SWEEP_POLL
-        } else {
-            IDLE
-        };
-        let mut next = if event::poll(wait)? {
+        let next = if event::poll(wait(app))? {
             Some(event::read()?)
         } else {
             None
@@ -78,33 +56,10 @@ pub fn run(terminal: &mut DefaultTerminal, app: &mut App) -> anyhow::Result<()> 
             terminal.draw(|f| f.render_widget(ratatui::widgets::Clear, f.area()))?;
             dirty = true;
         }
-        let mut resized = false;
-        while let Some(ev) = next {
-            resized |= matches!(ev, event::Event::Resize(..));
-            if panic_on_key && matches!(ev, event::Event::Key(_)) {
-                panic!(
-                    "{}: test fault injected at a key press",
-                    Fault::PanicInLoop.name()
-                );
-            }
-            dirty = true; // a resize, too, needs a new frame
-            if is_suspend(&ev) {
-                // raw mode delivers Ctrl-Z as a key: suspend as the shell's SIGTSTP would
-                crate::signals::suspend();
-            } else if let Some(a) = action::from_event(&ev, app.mode()) {
-                effects.extend(app.apply(a));
-            }
-            if app.should_quit() {
-                return Ok(());
-            }
-            next = if event::poll(Duration::ZERO)? {
-                Some(event::read()?)
-            } else if std::mem::take(&mut resized) {
-                rearm_input();
-                event::poll(Duration::ZERO)?.then(event::read).transpose()?
-            } else {
-                None
-            };
+        // a resize, too, needs a new frame
+        dirty |= apply_queued(next, app, &mut effects, panic_on_key)?;
+        if app.should_quit() {
+            return Ok(());
         }
         // the animation's clock: real time since the last frame, counted only while the
         // animation was already playing (not the idle wait before `d` or a replay)
@@ -114,26 +69,18 @@ pub fn run(terminal: &mut DefaultTerminal, app: &mut App) -> anyhow::Result<()> 
             dirty = true;
         }
         clock = now;
-        while let Some((request, result)) = worker.sweeps.try_recv() {
-            effects.extend(app.apply(Action::SpeedReady(request, result)));
-            dirty = true;
+        let news = worker.news();
+        if news
+            .iter()
+            .any(|a| matches!(a, Action::WorkerStopped { .. }))
+        {
+            // a panic on one of rayon's threads under a worker restored the terminal (ratatui's
+            // hook: crate::tui::background::quiet_worker_panics): take it back, redraw whole
+            super::resume_all();
+            terminal.draw(|f| f.render_widget(ratatui::widgets::Clear, f.area()))?;
         }
-        while let Some((request, result)) = worker.models.try_recv() {
-            effects.extend(app.apply(Action::ModelsReady(request, result)));
-            dirty = true;
-        }
-        while let Some((id, result)) = worker.fits.try_recv() {
-            effects.extend(app.apply(Action::FitReady(id, result)));
-            dirty = true;
-        }
-        while let Some((generation, map)) = worker.maps.try_recv() {
-            let map = Box::new(map);
-            effects.extend(app.apply(Action::MapPass { generation, map }));
-            dirty = true;
-        }
-        while let Some((generation, map)) = worker.oblique.try_recv() {
-            let map = Box::new(map);
-            effects.extend(app.apply(Action::ObliqueMapReady { generation, map }));
+        for action in news {
+            effects.extend(app.apply(action));
             dirty = true;
         }
         if dirty {
@@ -141,6 +88,62 @@ pub fn run(terminal: &mut DefaultTerminal, app: &mut App) -> anyhow::Result<()> 
         }
     }
     Ok(())
+}
+
+/// How long to wait for an event: briefly while a map's passes come in, a frame while the drop
+/// animates, longer while a sweep, calibration or fit is out, else [`IDLE`].
+fn wait(app: &App) -> Duration {
+    let waiting =
+        !app.speed_requests().is_empty() || app.models_request().is_some() || app.fitting();
+    if app.map_pending() || app.oblique_pending() {
+        MAP_POLL
+    } else if app.animating() {
+        FRAME
+    } else if waiting {
+        SWEEP_POLL
+    } else {
+        IDLE
+    }
+}
+
+/// Apply `next` and every event queued behind it (zero-timeout polls; after a resize the
+/// terminal is asked to announce pending input again, [`rearm_input`]), until none is left or
+/// the explorer quits; whether any came.
+fn apply_queued(
+    mut next: Option<event::Event>,
+    app: &mut App,
+    effects: &mut Vec<Effect>,
+    panic_on_key: bool,
+) -> std::io::Result<bool> {
+    let (mut any, mut resized) = (false, false);
+    while let Some(ev) = next {
+        any = true;
+        resized |= matches!(ev, event::Event::Resize(..));
+        if panic_on_key && matches!(ev, event::Event::Key(_)) {
+            panic!(
+                "{}: test fault injected at a key press",
+                Fault::PanicInLoop.name()
+            );
+        }
+        if is_suspend(&ev) {
+            // raw mode delivers Ctrl-Z as a key: suspend as the shell's SIGTSTP would
+            crate::signals::suspend();
+        } else if let Some(a) = action::from_event(&ev, app.mode()) {
+            effects.extend(app.apply(a));
+        }
+        if app.should_quit() {
+            break;
+        }
+        next = if event::poll(Duration::ZERO)? {
+            Some(event::read()?)
+        } else if std::mem::take(&mut resized) {
+            rearm_input();
+            event::poll(Duration::ZERO)?.then(event::read).transpose()?
+        } else {
+            None
+        };
+    }
+    Ok(any)
 }
 
 /// Have the terminal announce the input it holds again. crossterm's Unix reader waits on the
@@ -180,37 +183,19 @@ fn is_suspend(ev: &event::Event) -> bool {
         && k.kind == KeyEventKind::Press)
 }
 
-/// The background threads: COR-vs-speed sweeps, the models view's calibrations, the fits, the
-/// map's passes.
-struct Workers {
-    sweeps: Worker,
-    models: Worker<ModelsRequest>,
-    fits: FitWorker,
-    maps: MapWorker,
-    oblique: ObliqueMapWorker,
-}
-
 /// Carry out `effects`, and those the answers to them bring, until none is left.
 fn carry_out(mut effects: Vec<Effect>, app: &mut App, worker: &mut Workers) {
     while !effects.is_empty() {
         for effect in std::mem::take(&mut effects) {
             let answer = match effect {
-                Effect::Compute(requests) => {
-                    worker.sweeps.want(&requests);
-                    continue;
-                }
-                Effect::ComputeModels(requests) => {
-                    worker.models.want(&requests);
-                    continue;
-                }
-                Effect::Map(job) => {
-                    worker.maps.send(job);
-                    continue;
-                }
-                Effect::ObliqueMap(job) => {
-                    worker.oblique.send(job);
-                    continue;
-                }
+                Effect::Compute(_)
+                | Effect::ComputeModels(_)
+                | Effect::Fit(_)
+                | Effect::Map(_)
+                | Effect::ObliqueMap(_) => match worker.hand(effect) {
+                    Some(stopped) => stopped,
+                    None => continue,
+                },
                 Effect::Export(request) => match export::write(&request, &export::dir_from_env()) {
                     Ok(files) => Action::Exported { files },
                     Err(msg) => Action::ExportFailed { msg },
@@ -222,10 +207,6 @@ fn carry_out(mut effects: Vec<Effect>, app: &mut App, worker: &mut Workers) {
                 Effect::Save(request) => {
                     save::write(&request, catalog::user_presets_dir().as_deref())
                 }
-                Effect::Fit(request) => {
-                    worker.fits.want(request);
-                    continue;
-                }
                 Effect::SaveSession { path, text } => {
                     let mut out = crate::atomic::Outputs::new(false);
                     match out.text(&path, &text).and_then(|()| out.commit()) {
@@ -234,7 +215,7 @@ fn carry_out(mut effects: Vec<Effect>, app: &mut App, worker: &mut Workers) {
                     }
                 }
                 Effect::Copy(text) => {
-                    super::command::copy(&text);
+                    super::clipboard::copy(&text);
                     continue;
                 }
                 Effect::LoadMeasured(path) => match crate::tui::views::fit::state::load(&path) {

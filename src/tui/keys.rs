@@ -2,7 +2,7 @@
 //! `update` needs to stop the help's scrolling at its end.
 
 /// (keys, what they do); a row without text is a section heading.
-pub const KEYS: [(&str, &str); 69] = [
+pub const KEYS: [(&str, &str); 70] = [
     ("l / L", "λ up / down (±0.01, coarse ±0.1)"),
     ("z / Z", "ζ up / down (×1.1, coarse ×2)"),
     ("v / V", "v0 up / down (±0.1, coarse ±1 m/s)"),
@@ -20,6 +20,7 @@ pub const KEYS: [(&str, &str); 69] = [
     ("+ / - / 0", "zoom a chart in / out / whole data"),
     ("c", "cycle the contact law"),
     ("r", "reset to the preset"),
+    ("R", "retry a computation that stopped"),
     ("p / P", "pin this run (≤ 8) / clear pins"),
     ("u", "undo the last change"),
     ("e", "export this view (SVG + CSV files)"),

@@ -23,6 +23,7 @@ pub mod action;
 pub mod app;
 pub mod background;
 pub mod chartview;
+pub mod clipboard;
 pub mod command;
 pub mod compute;
 pub mod crosshair;
@@ -45,6 +46,7 @@ pub mod ui;
 pub mod views;
 pub mod widgets;
 pub mod worker;
+pub mod workers;
 
 use crate::preset::Preset;
 use anyhow::Context;
@@ -108,7 +110,7 @@ pub fn run_app(
     remove_stale_temporaries();
     let mut app = app
         .with_background_sweeps()
-        .with_osc52(command::osc52_here())
+        .with_osc52(clipboard::osc52_here())
         .with_motion(motion_wanted())
         .with_color_depth(palette::detect(
             std::env::var("COLORTERM").ok().as_deref(),
@@ -121,7 +123,11 @@ pub fn run_app(
     if let Some(path) = config {
         app = app.with_config(std::path::absolute(&path).unwrap_or(path));
     }
-    let mut terminal = ratatui::try_init()
+    let terminal = ratatui::try_init();
+    // over ratatui's hook (which restores the terminal on a panic): a worker's panic is the
+    // view's to report, the explorer goes on (src/tui/background.rs)
+    background::quiet_worker_panics();
+    let mut terminal = terminal
         .inspect_err(|_| {
             if terminal::is_raw_mode_enabled().unwrap_or(false) {
                 ratatui::restore();

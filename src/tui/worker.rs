@@ -5,7 +5,7 @@
 //! view's calibrations ([`crate::tui::views::models::state::ModelsRequest`]) run on a second
 //! worker of the same kind and come back as `Action::ModelsReady`.
 
-use crate::tui::background::Background;
+use crate::tui::background::{Background, Stopped};
 use crate::tui::views::sweeps::speed::{SpeedCurve, SpeedRequest};
 use std::sync::mpsc::{Receiver, Sender, TryRecvError};
 
@@ -52,7 +52,7 @@ pub struct Worker<J: Job = SpeedRequest> {
 impl<J: Job> Worker<J> {
     pub fn spawn() -> std::io::Result<Worker<J>> {
         Ok(Worker {
-            thread: Background::spawn("bouncelab-sweeps", serve)?,
+            thread: Background::spawn("sweeps", serve)?,
             sent: Vec::new(),
         })
     }
@@ -61,13 +61,13 @@ impl<J: Job> Worker<J> {
     pub fn want(&mut self, requests: &[J]) {
         if requests != self.sent.as_slice() {
             self.sent = requests.to_vec();
-            // should the thread be gone, the explorer waits in vain for a sweep, which its
-            // title says
+            // should the thread be gone, `try_recv` says so
             self.thread.send(self.sent.clone());
         }
     }
 
-    pub fn try_recv(&self) -> Option<Reply<J>> {
+    /// A reply if one is waiting, or why the thread is gone ([`Background::try_recv`]).
+    pub fn try_recv(&mut self) -> Result<Option<Reply<J>>, Stopped> {
         self.thread.try_recv()
     }
 }
@@ -165,10 +165,10 @@ mod tests {
     use std::thread;
     use std::time::{Duration, Instant};
 
-    fn wait(w: &Worker) -> Reply {
+    fn wait(w: &mut Worker) -> Reply {
         let start = Instant::now();
         loop {
-            if let Some(r) = w.try_recv() {
+            if let Some(r) = w.try_recv().unwrap() {
                 return r;
             }
             assert!(start.elapsed() < Duration::from_secs(60), "no reply");
@@ -235,7 +235,7 @@ mod tests {
         // `a` may have finished (or sent coarse curves) before `b` was asked for; `b`'s
         // finished curve always comes, after its coarse ones
         let (req, curve) = loop {
-            let (req, curve) = wait(&w);
+            let (req, curve) = wait(&mut w);
             if req == b && !curve.as_ref().is_ok_and(|c| c.refining) {
                 break (req, curve);
             }

@@ -7,27 +7,11 @@ pub mod oblique;
 use bouncelab::measured::{CorPoint, Trace};
 use bouncelab::{ContactLaw, ImpactParams, SolveOptions, simulate};
 
-/// splitmix64: a small, seedable generator, so every test run draws the same noise.
-pub struct Rng(u64);
+#[path = "../seeded/mod.rs"]
+mod seeded;
 
-impl Rng {
-    pub fn new(seed: u64) -> Rng {
-        Rng(seed.wrapping_mul(0x9E37_79B9_7F4A_7C15) ^ 0xD1B5_4A32_D192_ED03)
-    }
-    pub fn uniform(&mut self) -> f64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        ((z ^ (z >> 31)) >> 11) as f64 / (1u64 << 53) as f64
-    }
-    /// Standard normal (Box–Muller).
-    pub fn normal(&mut self) -> f64 {
-        let u = self.uniform().max(1e-300);
-        let v = self.uniform();
-        (-2.0 * u.ln()).sqrt() * (std::f64::consts::TAU * v).cos()
-    }
-}
+/// The tests' seeded generator (tests/seeded/mod.rs): every test run draws the same noise.
+pub type Rng = seeded::Seeded;
 
 /// A ball no preset has: m = 50 g, v0 = 2 m/s, K_p = 8e4 N/m, K_r = 1.2e5 N/m (λ = 1.5),
 /// c = 60 kg/s (ζ ≈ 0.53), z_p = 1 mm (the contact flattens from about 1.6 m/s, where

@@ -83,6 +83,8 @@ pub struct Scene<'a> {
     pub speed: Option<SpeedSweep<'a>>,
     /// While COR-vs-speed sweeps are out: the highest speed they reach (the axis spans it).
     pub speed_pending: Option<f64>,
+    /// Why the sweeps' worker stopped, when it did (the chart's title says so).
+    pub speed_stopped: Option<&'a str>,
     /// The pins, oldest first.
     pub pinned: Vec<Pinned<'a>>,
     /// The user's measured data, drawn on the charts they belong to.
@@ -104,7 +106,8 @@ pub fn missing(chart: Chart, scene: &Scene) -> Option<&'static str> {
         Chart::ForceTime | Chart::Hysteresis => scene.run.is_none().then_some("impact"),
         Chart::CorZeta | Chart::ForceZeta => scene.zeta.is_none().then_some("COR-vs-ζ curve"),
         Chart::CorSpeed => {
-            (scene.speed.is_none() || scene.speed_pending.is_some()).then_some("COR-vs-speed sweep")
+            let out = scene.speed_pending.is_some() || scene.speed_stopped.is_some();
+            (scene.speed.is_none() || out).then_some("COR-vs-speed sweep")
         }
         Chart::ModelsCorSpeed | Chart::ModelsForceTime | Chart::ModelsForceDisplacement => {
             (scene.models.is_none() || scene.models_pending).then_some("calibration of the models")
@@ -348,7 +351,10 @@ fn speed_figure(scene: &Scene) -> Figure {
     .fold(0.0, f64::max);
     let left = fig.x.range.map_or(0.0, |r| r.0);
     fig.x.range = Some((left, v_hi));
-    if scene.speed.is_some_and(|s| s.refining) {
+    if let Some(why) = scene.speed_stopped {
+        fig.screen_title
+            .push_str(&format!(" · stopped: {why} (R retries)"));
+    } else if scene.speed.is_some_and(|s| s.refining) {
         fig.screen_title.push_str(" · refining…");
     } else if scene.speed_pending.is_some() {
         fig.screen_title.push_str(" · updating…");

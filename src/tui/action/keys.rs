@@ -153,6 +153,7 @@ fn normal(key: KeyEvent) -> Option<Action> {
         KeyCode::Char(c @ '1'..='9') => Some(Action::LoadPreset(c as usize - '1' as usize)),
         KeyCode::Char('c') => Some(Action::CycleLaw),
         KeyCode::Char('r') => Some(Action::Reset),
+        KeyCode::Char('R') => Some(Action::Retry),
         KeyCode::Char('p') => Some(Action::Pin),
         KeyCode::Char('P') => Some(Action::Unpin),
         KeyCode::Char('u') => Some(Action::Undo),

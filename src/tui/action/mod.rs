@@ -183,6 +183,14 @@ pub enum Action {
     },
     /// The oblique view's keys (`i` to open it; src/tui/views/oblique/).
     Oblique(ObliqueKey),
+    /// A worker's thread is gone (a panic in its job): `why`, with the panic's message. The
+    /// view whose computation it was says so; `R` or the next request starts a new thread.
+    WorkerStopped {
+        work: crate::tui::background::Work,
+        why: String,
+    },
+    /// `R`: ask again for the computations whose worker stopped.
+    Retry,
     /// The oblique view's (angle, μ) map number `generation`, from its worker.
     ObliqueMapReady {
         generation: u64,

@@ -29,7 +29,7 @@ impl App {
         self
     }
 
-    /// Copy `y`'s line with OSC 52 or not (`command::osc52_here` decides for the terminal;
+    /// Copy `y`'s line with OSC 52 or not (`clipboard::osc52_here` decides for the terminal;
     /// without this call, not).
     pub fn with_osc52(mut self, on: bool) -> App {
         self.copy.osc52 = on;

@@ -15,6 +15,27 @@ use std::path::{Path, PathBuf};
 const ENTRY_MAX: usize = 100;
 
 impl App {
+    /// Whether `action` is one of [`App::dialog`]'s.
+    pub(super) fn is_dialog(action: &Action) -> bool {
+        matches!(
+            action,
+            Action::OpenInput
+                | Action::InputChar(_)
+                | Action::InputBackspace
+                | Action::InputClear
+                | Action::InputDelete
+                | Action::InputCursor(_)
+                | Action::InputSubmit
+                | Action::InputCancel
+                | Action::SavePreset
+                | Action::ConfirmYes
+                | Action::ConfirmNo
+                | Action::OpenMeasured
+                | Action::ToggleHelp
+                | Action::CloseHelp
+        )
+    }
+
     /// The actions of the dialogs and the help overlay; a save to write when one is accepted.
     pub(super) fn dialog(&mut self, action: Action) -> Option<Effect> {
         match action {

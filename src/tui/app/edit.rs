@@ -1,11 +1,81 @@
-//! How `update` changes the setting (with undo) and says what it did.
+//! How `update` changes the setting (with undo) and says what it did: the keys that step,
+//! select, load, reset, pin and undo.
 
 use super::{App, Message, Setting, Severity, UNDO_DEPTH, Undoable};
 use crate::model::params::ImpactParams;
 use crate::text::short;
+use crate::tui::action::Action;
 use crate::tui::param::Param;
 
 impl App {
+    /// The actions that change the setting, the selection or the ghost.
+    pub(super) fn edit(&mut self, action: Action) {
+        match action {
+            Action::Step { param, dir, coarse } => {
+                self.selected = param;
+                let value = param.step(self.setting.get(param), dir, coarse || self.coarse);
+                self.step_param(param, value);
+            }
+            Action::StepSelected { dir, coarse } => {
+                let param = self.selected;
+                let value = param.step(self.setting.get(param), dir, coarse || self.coarse);
+                self.step_param(param, value);
+            }
+            Action::SelectNext => self.selected = self.selected.next(),
+            Action::SelectPrev => self.selected = self.selected.prev(),
+            Action::SetCoarse(coarse) => {
+                self.coarse = coarse;
+                self.info(if coarse { "coarse steps" } else { "fine steps" }.into());
+            }
+            Action::LoadPreset(i) => self.load_preset(i),
+            Action::CycleLaw => {
+                let law = self.setting.law.next();
+                self.change(Setting {
+                    law,
+                    ..self.setting.clone()
+                });
+                self.info(format!("contact law: {law}"));
+            }
+            Action::Reset => {
+                let i = self.setting.preset;
+                self.change(Setting::from_preset(i, &self.presets[i]));
+                self.info(format!("reset to the {} preset", self.presets[i].name));
+            }
+            Action::Pin => self.pin(),
+            Action::Unpin => self.unpin(),
+            Action::Undo => match self.undo.pop() {
+                Some(previous) => {
+                    self.setting = previous.setting;
+                    self.oblique.set_values(previous.oblique);
+                    self.info("undone".into());
+                }
+                None => self.warn("nothing to undo".into()),
+            },
+            _ => {}
+        }
+    }
+
+    fn load_preset(&mut self, i: usize) {
+        match self.presets.get(i) {
+            Some(p) => {
+                let name = p.name.clone();
+                self.change(Setting::from_preset(i, p));
+                self.info(format!("loaded {name}"));
+            }
+            // 4 loads a start preset that is none of the three; the help offers it, so
+            // say why it does nothing here (tests/tui_app.rs: `four_says_why_it_loads_nothing`)
+            None if i == 3 => self.warn(format!(
+                "4 loads the start preset when it is not one of 1–3: 1–{} load one",
+                self.presets.len()
+            )),
+            None => self.warn(format!(
+                "no preset {}: 1–{} load one",
+                i + 1,
+                self.presets.len()
+            )),
+        }
+    }
+
     /// A stepping key moved `param` to `value`: taken when `run` takes it; past a bound it
     /// stops at the bound (or, when `run` refuses even that, where it is) and says so.
     pub(super) fn step_param(&mut self, param: Param, value: f64) {

@@ -7,8 +7,12 @@ use crate::tui::param::Param;
 use crate::tui::setting::Setting;
 
 impl App {
-    /// Sweeps still to come from the background worker.
+    /// Sweeps still to come from the background worker (none once it stopped: they wait for
+    /// `R`).
     pub fn speed_requests(&self) -> &[SpeedRequest] {
+        if self.sweeps.stopped.is_some() {
+            return &[];
+        }
         &self.sweeps.wanted
     }
 

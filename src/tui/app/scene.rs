@@ -55,7 +55,7 @@ impl App {
         if !preset_lambda_zeta(preset, &self.setting) {
             current.source = MODIFIED.into();
         }
-        let pending = self.sweeps.wanted.iter().map(|r| r.v_max);
+        let pending = self.speed_requests().iter().map(|r| r.v_max);
         Scene {
             ball: current,
             balls: self.presets.iter().map(ball).collect(),
@@ -64,6 +64,7 @@ impl App {
             zeta: self.zeta.as_ref().map(zeta),
             speed: self.sweeps.curve.as_ref().map(speed),
             speed_pending: pending.reduce(f64::max),
+            speed_stopped: self.sweeps.stopped.as_deref(),
             pinned: self
                 .pins
                 .iter()

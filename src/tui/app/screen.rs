@@ -33,6 +33,8 @@ impl App {
                 | Action::MeasuredLoaded { .. }
                 | Action::MeasuredFailed { .. }
                 | Action::FitReady(..)
+                | Action::ObliqueMapReady { .. }
+                | Action::WorkerStopped { .. }
         )
     }
 

@@ -3,8 +3,10 @@
 //!
 //! Titles are parts joined by " · ": a name ("Force–time"), the axes with their units
 //! (`F [N] vs t [ms]`), qualifiers ("linear law, no flattening"), the crosshair's reading
-//! (`+(1.2, 60.9)`). When the whole title does not fit, the parts other than the axes and a
-//! reading are dropped, those right of the axes first; then the axes are written tighter
+//! (`+(1.2, 60.9)`), a computation's stop (`stopped: it panicked: … (R retries)`,
+//! src/tui/app/stopped.rs). When the whole title does not fit, the parts other than the axes,
+//! a reading and a stop are dropped, those right of the axes first; then the axes are written
+//! tighter
 //! (`F[N]–t[ms]`); last, whole words are cut from the right with "…", never inside a
 //! bracketed unit.
 
@@ -19,8 +21,8 @@ pub fn fit(title: &str, width: usize) -> String {
         .iter()
         .position(|p| p.contains(" vs ") || p.contains('['))
         .unwrap_or(0);
-    // the parts that stay: the axes, and a reading (the crosshair's "+(x, y)")
-    let kept = |i: usize, p: &str| i == axes || p.starts_with("+(");
+    // the parts that stay: the axes, a reading (the crosshair's "+(x, y)") and a stop
+    let kept = |i: usize, p: &str| i == axes || p.starts_with("+(") || p.starts_with("stopped:");
     // the others go, those after the axes from the right first, then those before them
     let order: Vec<usize> = (axes + 1..parts.len())
         .rev()
@@ -112,6 +114,13 @@ mod tests {
         let x = "+(1.2, 60.9) · Force–time · F [N] vs t [ms]";
         assert_eq!(fit(x, 36), "+(1.2, 60.9) · F [N] vs t [ms]");
         assert_eq!(fit(x, 26), "+(1.2, 60.9) · F[N]–t[ms]");
+        // a stop stays too: the ball's name goes first
+        let s = "COR e vs v0 [m/s] · superball · stopped: it panicked: boom (R retries)";
+        assert_eq!(
+            fit(s, 60),
+            "COR e vs v0 [m/s] · stopped: it panicked: boom (R retries)"
+        );
+        assert_eq!(fit(s, 40), "COR e–v0[m/s] · stopped: it panicked:…");
     }
 
     #[test]

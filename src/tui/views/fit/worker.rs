@@ -7,7 +7,7 @@
 //! budget's `Watch`, issue 29 item 13), then its outcome, each as `Action::FitReady`.
 
 use crate::analysis::work::Watch;
-use crate::tui::background::Background;
+use crate::tui::background::{Background, Stopped};
 use crate::tui::views::fit::state::{self as measured, FitNews, FitProgress, FitRequest};
 use std::cell::Cell;
 use std::sync::Arc;
@@ -32,19 +32,18 @@ impl FitWorker {
     pub fn spawn() -> std::io::Result<FitWorker> {
         let latest = Arc::new(AtomicU64::new(0));
         let seen = Arc::clone(&latest);
-        let thread = Background::spawn("bouncelab-fit", move |inbox, outbox| {
-            serve(inbox, outbox, &seen)
-        })?;
+        let thread = Background::spawn("fit", move |inbox, outbox| serve(inbox, outbox, &seen))?;
         Ok(FitWorker { thread, latest })
     }
 
-    /// Run `request`'s fit; should the thread be gone, the pane keeps saying "fitting…".
+    /// Run `request`'s fit; should the thread be gone, `try_recv` says so.
     pub fn want(&self, request: FitRequest) {
         self.latest.store(request.id, Ordering::Relaxed);
         self.thread.send(request);
     }
 
-    pub fn try_recv(&self) -> Option<FitReply> {
+    /// News of a fit if some is waiting, or why the thread is gone.
+    pub fn try_recv(&mut self) -> Result<Option<FitReply>, Stopped> {
         self.thread.try_recv()
     }
 }
@@ -142,11 +141,11 @@ mod tests {
             data: Data::Cor(table),
         };
         let r = request(7, &loaded, &ball.params(), ball.law).unwrap();
-        let w = FitWorker::spawn().unwrap();
+        let mut w = FitWorker::spawn().unwrap();
         w.want(r.clone());
         let start = Instant::now();
         let (id, outcome) = loop {
-            if let Some((id, FitNews::Done(o))) = w.try_recv() {
+            if let Ok(Some((id, FitNews::Done(o)))) = w.try_recv() {
                 break (id, o);
             }
             assert!(start.elapsed() < Duration::from_secs(120), "no reply");

@@ -182,6 +182,9 @@ pub struct MapView {
     pub generation: u64,
     /// The flag of the job out at the worker, if one is.
     pub out: Option<Arc<AtomicBool>>,
+    /// Why the worker's thread stopped while refining this map: it is not handed out again
+    /// until `R` or a new map (src/tui/app/stopped.rs).
+    pub stopped: Option<String>,
     /// ∂e/∂ln λ and ∂e/∂ln ζ at the current point (for `sens_for`).
     pub sensitivity: Option<Result<Sensitivity, String>>,
     pub sens_for: Option<(ImpactParams, ContactLaw)>,
@@ -196,6 +199,7 @@ impl Default for MapView {
             map: None,
             generation: 0,
             out: None,
+            stopped: None,
             sensitivity: None,
             sens_for: None,
         }

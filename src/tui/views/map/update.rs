@@ -190,6 +190,7 @@ impl App {
         };
         if !self.map.holds(&spec) {
             self.map.cancel();
+            self.map.stopped = None;
             self.map.generation += 1;
             let mut map =
                 Map::new(spec.clone()).first_cells_at_most(map_view::first_pass_cells(law));
@@ -202,7 +203,9 @@ impl App {
         }
         self.refresh_sensitivity(&spec);
         let map = self.map.map()?;
-        if !self.background || map.is_complete() || self.map.out.is_some() {
+        // a map whose worker stopped waits for `R` (src/tui/app/stopped.rs)
+        let stopped = self.map.stopped.is_some();
+        if !self.background || map.is_complete() || self.map.out.is_some() || stopped {
             return None;
         }
         let map = map.clone();
@@ -249,6 +252,12 @@ impl App {
             }
         };
         if !map.is_complete() {
+            if let Some(why) = &self.map.stopped {
+                let why = format!("export failed: the map's refinement stopped: {why} (R retries)");
+                self.export_wanted = false;
+                self.error(why);
+                return None;
+            }
             self.info("export waits for the map's full detail…".into());
             return None;
         }

@@ -324,12 +324,15 @@ impl MapPanel<'_> {
             Some(t) => format!(" · where {}", super::targets::text(t)),
             None => " · t: targets".to_string(),
         };
-        let progress = if map.is_complete() {
-            format!(" · {}×{} cells", map.zetas.len(), map.lambdas.len())
-        } else {
-            " · refining…".to_string()
+        let second = match &self.view.stopped {
+            _ if map.is_complete() => {
+                let (cols, rows) = (map.zetas.len(), map.lambdas.len());
+                format!("{sens}{targets} · {cols}×{rows} cells")
+            }
+            // first on its line: the stop and why are not cut off
+            Some(why) => format!(" refining stopped: {why} (R retries) ·{sens}{targets}"),
+            None => format!("{sens}{targets} · refining…"),
         };
-        let second = format!("{sens}{targets}{progress}");
         let lines = if area.height >= 2 {
             vec![Line::raw(first), Line::styled(second, self.theme.dim())]
         } else {

@@ -12,13 +12,13 @@ use std::sync::mpsc::{Receiver, Sender};
 /// A finished pass: the map's generation and the map with that pass in.
 pub type Reply = (u64, Map);
 
-/// The map's thread: hand it a job (one `update` has not cancelled already) with `send`; a job
-/// it cannot take because the thread is gone leaves the map coarse.
+/// The map's thread: hand it a job (one `update` has not cancelled already) with `send`; should
+/// the thread be gone, `try_recv` says why.
 pub type MapWorker = Background<MapJob, Reply>;
 
 /// Start the map's thread.
 pub fn spawn() -> std::io::Result<MapWorker> {
-    Background::spawn("bouncelab-map", serve)
+    Background::spawn("map", serve)
 }
 
 fn serve(inbox: &Receiver<MapJob>, outbox: &Sender<Reply>) {
@@ -61,12 +61,12 @@ mod tests {
     /// Every pass comes back, the last one complete; a cancelled job sends nothing.
     #[test]
     fn passes_come_back_until_complete_and_a_cancelled_job_is_silent() {
-        let w = spawn().unwrap();
+        let mut w = spawn().unwrap();
         w.send(job(1, true));
         w.send(job(2, false));
         let start = Instant::now();
         loop {
-            if let Some((generation, map)) = w.try_recv() {
+            if let Some((generation, map)) = w.try_recv().unwrap() {
                 assert_eq!(generation, 2, "the cancelled job sent a pass");
                 if map.is_complete() {
                     break;

@@ -106,6 +106,8 @@ pub struct Models {
     pub wanted: Option<ModelsRequest>,
     /// The request last handed to the worker.
     pub asked: Option<ModelsRequest>,
+    /// Why the worker's thread stopped, while `held`'s error is that stop (`R` asks again).
+    pub stopped: Option<String>,
 }
 
 impl Models {

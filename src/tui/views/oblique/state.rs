@@ -80,6 +80,9 @@ pub struct ObliqueView {
     pub generation: u64,
     /// The flag of the job out at the worker, if one is.
     pub out: Option<Arc<AtomicBool>>,
+    /// Why the worker's thread stopped while computing the map of `map_for` (`map` then says
+    /// so): not asked again until `R` or another map (src/tui/app/stopped.rs).
+    pub stopped: Option<String>,
 }
 
 impl Default for ObliqueView {
@@ -102,6 +105,7 @@ impl Default for ObliqueView {
             map_for: None,
             generation: 0,
             out: None,
+            stopped: None,
         }
     }
 }

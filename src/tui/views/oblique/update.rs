@@ -257,6 +257,7 @@ impl App {
         }
         let o = &mut self.oblique;
         o.cancel();
+        o.stopped = None;
         o.generation += 1;
         o.map = None;
         o.map_for = Some(spec.clone());

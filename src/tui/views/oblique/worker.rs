@@ -15,7 +15,7 @@ pub type ObliqueMapWorker = Background<MapJob, Reply>;
 
 /// Start the oblique map's thread.
 pub fn spawn() -> std::io::Result<ObliqueMapWorker> {
-    Background::spawn("bouncelab-oblique-map", serve)
+    Background::spawn("oblique-map", serve)
 }
 
 fn serve(inbox: &Receiver<MapJob>, outbox: &Sender<Reply>) {

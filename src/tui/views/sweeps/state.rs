@@ -12,4 +12,7 @@ pub struct Sweeps {
     pub wanted: Vec<SpeedRequest>,
     /// The sweeps last asked of the background worker (`Effect::Compute`).
     pub asked: Vec<SpeedRequest>,
+    /// Why the worker's thread stopped while `asked` was out: they are not asked again until
+    /// `R` or a new list of sweeps (src/tui/app/stopped.rs).
+    pub stopped: Option<String>,
 }

@@ -5,7 +5,8 @@ use crate::tui::views::sweeps::speed::{SpeedCurve, SpeedRequest};
 
 impl App {
     /// List the sweeps the sweeps view needs and does not have; run them here, or, with a
-    /// background worker, ask for them when the list changed.
+    /// background worker, ask for them when the list changed (not again after its worker
+    /// stopped: src/tui/app/stopped.rs).
     pub(in crate::tui) fn refresh_sweeps(&mut self) -> Option<Effect> {
         self.sweeps.wanted.clear();
         if self.view == View::Sweeps {
@@ -30,7 +31,9 @@ impl App {
             }
             return None;
         }
+        // after a stop the same list waits for `R`; a new one goes to a new thread
         (self.sweeps.wanted != self.sweeps.asked).then(|| {
+            self.sweeps.stopped = None;
             self.sweeps.asked = self.sweeps.wanted.clone();
             Effect::Compute(self.sweeps.wanted.clone())
         })
