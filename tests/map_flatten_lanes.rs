@@ -158,18 +158,16 @@ fn avx2_and_portable_flattening_agree_bit_for_bit() {
         |s: &Option<Summary>| s.map(|s| [s.cor, s.max_force, s.contact_time].map(f64::to_bits));
     let mut answered = 0;
     for _ in 0..1000 {
-        let mut group = [[0.0; FLAT_WIDE]; 3];
-        for i in 0..FLAT_WIDE {
+        let cells: [(f64, f64, f64); FLAT_WIDE] = std::array::from_fn(|_| {
             let (l, z) = (
                 10f64.powf(-3.0 + 6.0 * s.unit()),
                 10f64.powf(-3.0 + 4.0 * s.unit()),
             );
             let peak = summary(l, z).map_or(1.0, |s| s.max_force);
-            group[0][i] = l;
-            group[1][i] = z;
-            group[2][i] = peak * 10f64.powf(-3.0 * s.unit());
-        }
-        let [l, z, zp] = group;
+            (l, z, peak * 10f64.powf(-3.0 * s.unit()))
+        });
+        let l = cells.map(|c| c.0);
+        let (z, zp) = (cells.map(|c| c.1), cells.map(|c| c.2));
         let (a, b) = (
             flattening_lanes8(l, z, zp),
             flattening_lanes8_portable(l, z, zp),
