@@ -13,7 +13,8 @@
 //!   event loop's poll (≤ 5 ms while a map is refined) and the coarser frames in between.
 //! - `cursor`: `→` moves the cursor a cell: one impact and the sensitivities, no new map.
 //! - `full_detail_tennis`: `full_detail` for the tennis ball, which flattens over much of its
-//!   map (those cells take the exact solver, the others the closed form).
+//!   map (those cells take the flattening closed form, eight at a time in lanes, the
+//!   others the no-flattening one).
 //! - `full_detail_hertz`, `full_detail_elastic_plastic`: `full_detail` for the superball
 //!   under the Hertz and elastic–plastic laws (the Taylor steps, issue 30).
 //! - `draw`: the render alone of the complete map.
@@ -85,8 +86,9 @@ fn full_detail(b: Bencher) {
     key_and_draw(b, start(false), V_UP);
 }
 
-/// The tennis ball flattens over much of its map: those cells take the Taylor steps of
-/// `solver::taylor` (the exact solver before issue 30), the others the closed form.
+/// The tennis ball flattens over much of its map: those cells take the flattening closed
+/// form in lanes (`map::fast::lanes::flattenings`; the exact solver before issue 30), the
+/// others the no-flattening closed form.
 #[divan::bench]
 fn full_detail_tennis(b: Bencher) {
     key_and_draw(b, start_with("tennis", false), V_UP);

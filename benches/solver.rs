@@ -224,3 +224,51 @@ fn simulate_rows_tennis() -> f64 {
         .map(|p| simulate(p, ContactLaw::Linear, &o).unwrap().cor)
         .sum()
 }
+
+/// 1 024 flattening cells of the tennis ball's map (normalized (λ, ζ, z̄_p) over λ, ζ =
+/// 1e-3 … 1e3 where the ball flattens and the scalar closed form answers), columns λ, ζ, z̄_p.
+static TENNIS_FLAT_CELLS: std::sync::LazyLock<[Vec<f64>; 3]> = std::sync::LazyLock::new(|| {
+    let ball = bouncelab::Ball::from_preset("tennis").unwrap().params;
+    let mut cols = [Vec::new(), Vec::new(), Vec::new()];
+    'grid: for i in 0..64 {
+        for j in 0..64 {
+            let (l, z) = (
+                10f64.powf(-3.0 + 6.0 * f64::from(i) / 63.0),
+                10f64.powf(-3.0 + 6.0 * f64::from(j) / 63.0),
+            );
+            let n = ball.with_lambda_zeta(l, z).normalized();
+            if bouncelab::map::fast::flattening(n.lambda, n.zeta, n.zp_bar).is_none() {
+                continue;
+            }
+            for (c, x) in cols.iter_mut().zip([n.lambda, n.zeta, n.zp_bar]) {
+                c.push(x);
+            }
+            if cols[0].len() == 1024 {
+                break 'grid;
+            }
+        }
+    }
+    cols
+});
+
+/// The 1 024 tennis flattening cells one by one through the scalar `map::fast::flattening`
+/// (issue 30 item 2: ≤ 0.5 µs a cell), the baseline of `flattening_cells_lanes` in the same
+/// run: divide by 1 024 for a cell.
+#[divan::bench]
+fn flattening_cells_scalar() -> f64 {
+    let [l, z, zp] = black_box(&*TENNIS_FLAT_CELLS);
+    (0..l.len())
+        .filter_map(|i| bouncelab::map::fast::flattening(l[i], z[i], zp[i]))
+        .map(|s| s.cor)
+        .sum()
+}
+
+/// The same cells eight at a time through the lanes (`map::fast::lanes::flattenings`, the
+/// map's path), on one core.
+#[divan::bench]
+fn flattening_cells_lanes() -> f64 {
+    let [l, z, zp] = black_box(&*TENNIS_FLAT_CELLS);
+    let mut out = vec![None; l.len()];
+    bouncelab::map::fast::lanes::flattenings(l, z, zp, &mut out);
+    out.iter().flatten().map(|s| s.cor).sum()
+}

@@ -1,7 +1,8 @@
 //! A Monte Carlo sample's impact ([`super::mc`]): `bouncelab run`'s answer, four balls at once.
 //!
 //! On the linear law the closed form runs in lanes ([`lanes::summary4`], to 1e-12 of the exact
-//! solver) where it answers and the ball does not flatten (z̄_m ≤ z̄_p); the rest, rare, takes
+//! solver) where it answers and the ball does not flatten (z̄_m ≤ z̄_p), the flattening closed
+//! form in lanes where it flattens ([`lanes::flattening_lanes4`]); the rest, rare, takes
 //! `run`'s other paths one ball at a time. The normalized groups and the SI scales of the four
 //! balls are computed side by side in `f64x4`: the operations of
 //! [`ImpactParams::normalized`] and [`ImpactParams::omega0`] in the same order, each a single
@@ -36,8 +37,10 @@ pub fn impact(p: &ImpactParams, law: ContactLaw) -> Result<Outcome, SolveError> 
 
 /// The impacts of up to four checked balls (`None`: no ball, no answer) as `bouncelab run`
 /// solves them: on the linear law the closed form in lanes ([`lanes::summary4`], to 1e-12 of
-/// the exact solver) where it answers and the ball does not flatten (z̄_m ≤ z̄_p), SI by F =
-/// F̄ m v0 ω0 and t = τ/ω0; else `one_by_one`.
+/// the exact solver) where it answers and the ball does not flatten (z̄_m ≤ z̄_p), the
+/// flattening closed form in lanes ([`lanes::flattening_lanes4`], to 1e-12 of the scalar
+/// `map::fast::flattening`) where it flattens and the lanes answer, SI by F = F̄ m v0 ω0 and
+/// t = τ/ω0; else `one_by_one`.
 pub fn impacts(
     balls: &[Option<ImpactParams>; LANES],
     law: ContactLaw,
@@ -59,33 +62,46 @@ pub fn impacts(
     let zeta = (m * k_p).sqrt() / (f64x4::splat(2.0) * c);
     let zp_bar = z_p * w0 / v0;
     let fast = lanes::summary4(lambda.to_array(), zeta.to_array());
+    let zp_bar = zp_bar.to_array();
+    // the balls that flatten (or that the summary leaves), four at a time in lanes too
+    let flattens = |k: usize| !matches!(fast[k], Some(s) if s.max_force <= zp_bar[k]);
+    let flat = if (0..LANES).any(|k| balls[k].is_some() && flattens(k)) {
+        lanes::flattening_lanes4(lambda.to_array(), zeta.to_array(), zp_bar)
+    } else {
+        [None; LANES]
+    };
     let pick = |f: fn(&Summary) -> f64| f64x4::new(fast.map(|s| s.as_ref().map_or(f64::NAN, f)));
     let max_force = (pick(|s| s.max_force) * m * v0 * w0).to_array();
     let contact_time = (pick(|s| s.contact_time) / w0).to_array();
-    let zp_bar = zp_bar.to_array();
     std::array::from_fn(|k| {
         let p = balls[k].as_ref()?;
-        Some(match fast[k] {
-            Some(s) if s.max_force <= zp_bar[k] => Ok(Outcome {
+        Some(match (fast[k], flat[k]) {
+            (Some(s), _) if s.max_force <= zp_bar[k] => Ok(Outcome {
                 cor: s.cor,
                 max_force: max_force[k],
                 contact_time: contact_time[k],
             }),
+            (_, Some(s)) => Ok(in_si(p, &s)),
             _ => one_by_one(p, law),
         })
     })
+}
+
+/// A normalized summary in SI: F = F̄ m v0 ω0, t = τ/ω0.
+fn in_si(p: &ImpactParams, s: &Summary) -> Outcome {
+    let w0 = p.omega0();
+    Outcome {
+        cor: s.cor,
+        max_force: s.max_force * p.mass * p.v0 * w0,
+        contact_time: s.contact_time / w0,
+    }
 }
 
 /// An impact the lanes do not answer: its fast path where one answers (`fast_one`), SI by
 /// F = F̄ m v0 ω0 and t = τ/ω0, else `run`'s solver.
 fn one_by_one(p: &ImpactParams, law: ContactLaw) -> Result<Outcome, SolveError> {
     if let Some(s) = fast_one(p, law) {
-        let w0 = p.omega0();
-        return Ok(Outcome {
-            cor: s.cor,
-            max_force: s.max_force * p.mass * p.v0 * w0,
-            contact_time: s.contact_time / w0,
-        });
+        return Ok(in_si(p, &s));
     }
     simulate(p, law, &SolveOptions::default()).map(|r| Outcome {
         cor: r.cor,

@@ -33,6 +33,8 @@ pub fn cells_at(spec: &MapSpec, points: &[(f64, f64)], out: &mut [Result<Cell, S
         let zeta: Vec<f64> = norm.iter().map(|n| n.zeta).collect();
         let mut closed = vec![None; points.len()];
         super::fast::lanes::summaries(&lambda, &zeta, &mut closed);
+        let zp: Vec<f64> = norm.iter().map(|n| n.zp_bar).collect();
+        flattening_in_lanes(&lambda, &zeta, &zp, &mut closed);
         closed
     } else {
         vec![None; points.len()]
@@ -42,7 +44,32 @@ pub fn cells_at(spec: &MapSpec, points: &[(f64, f64)], out: &mut [Result<Cell, S
     }
 }
 
-/// One cell from the linear law's closed form `closed` where it answers without flattening,
+/// Where the ball flattens (the no-flattening summary's peak passes z̄_p, or it does not
+/// answer), `closed[i]` becomes the flattening closed form's answer, eight cells at a time
+/// in lanes ([`super::fast::lanes::flattenings`], issue 30 item 2; `None` where neither the
+/// lanes nor the scalar `flattening` answer): afterwards each `Some` is the cell's answer.
+fn flattening_in_lanes(
+    lambda: &[f64],
+    zeta: &[f64],
+    zp: &[f64],
+    closed: &mut [Option<super::fast::Summary>],
+) {
+    let flat: Vec<usize> = (0..closed.len())
+        .filter(|&i| !matches!(closed[i], Some(s) if s.max_force <= zp[i]))
+        .collect();
+    if flat.is_empty() {
+        return;
+    }
+    let pick = |a: &[f64]| -> Vec<f64> { flat.iter().map(|&i| a[i]).collect() };
+    let mut out = vec![None; flat.len()];
+    super::fast::lanes::flattenings(&pick(lambda), &pick(zeta), &pick(zp), &mut out);
+    for (&i, s) in flat.iter().zip(out) {
+        closed[i] = s;
+    }
+}
+
+/// One cell from the linear law's closed form `closed` where it answers (with flattening or
+/// without: `flattening_in_lanes`),
 /// else the fast paths of [`fast_cell`] where they are on, else the solvers.
 fn solve_cell(
     spec: &MapSpec,
@@ -74,7 +101,8 @@ fn solve_cell(
 
 /// The cell from a fast path when one answers: on the linear law the closed form `closed`
 /// ([`super::fast::summary`]'s, in lanes) while the ball does not flatten (z̄_m ≤ z̄_p), the
-/// flattening closed form ([`super::fast::flattening`]) where it does and answers; the
+/// flattening closed form ([`super::fast::flattening`], in lanes: `flattening_in_lanes`)
+/// where it does and answers (`closed` holds either, resolved by `cells_at`); the
 /// Taylor steps ([`crate::solver::taylor::summary`]) for a flattening ball and for the Hertz
 /// and elastic–plastic laws, the Hertz table first ([`crate::solver::table::summary`]).
 /// SI as `to_si` converts: F = F̄ m v0 ω0, t = τ/ω0.
@@ -85,13 +113,8 @@ fn fast_cell(
 ) -> Option<Cell> {
     let n = p.normalized();
     let s = match closed {
-        Some(s) if s.max_force <= n.zp_bar => s,
-        _ if spec.law == ContactLaw::Linear
-            && let Some(s) = super::fast::flattening(n.lambda, n.zeta, n.zp_bar) =>
-        {
-            s
-        }
-        _ => {
+        Some(s) => s,
+        None => {
             let t = crate::solver::table::summary(&n, spec.law)?;
             super::fast::Summary {
                 cor: t.cor,

@@ -34,6 +34,9 @@ mod math;
 #[cfg(target_arch = "x86_64")]
 mod pair;
 
+pub use kernel::flatten::{
+    FLAT_WIDE, flattening_lanes4, flattening_lanes8, flattening_lanes8_portable, flattenings,
+};
 pub use lane::LANES;
 
 use super::Summary;

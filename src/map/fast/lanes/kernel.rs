@@ -422,3 +422,8 @@ pub fn kernel<L: Lane<Array = [f64; N]>, const N: usize>(
     }
     out
 }
+
+/// Flattening cells over the same lanes (issue 30 item 2): a child of this module, for its
+/// flow, points, roots and steps.
+#[path = "flatten.rs"]
+pub(super) mod flatten;
