@@ -19,6 +19,8 @@
 //!                     superball (Hertz), for callgrind: (cost of N + 200 − cost of N) / 200
 //! cargo run --release --example gen_hertz_table -- --coverage   which path answers the cells
 //!                     of the normalized Hertz map (λ, ζ = 0.01 … 100) and the presets
+//! cargo run --release --example gen_hertz_table -- --gaps   the stored squares holding the
+//!                     map's cells the table does not answer, their errors and cell counts
 //! cargo run --release --example gen_hertz_table -- --errors N   the table against the
 //!                     reference at N seeded points of the kept squares: the distribution
 //! ```
