@@ -2,7 +2,8 @@
 //! for each patch of `table::GRID`, the reference (the Taylor steps without step limit or
 //! stiffness cut) at its Chebyshev–Lobatto nodes, then at the points between them, where the
 //! interpolant's error is measured; a patch whose error exceeds `table::TOLERANCE` is split in
-//! four, down to ⅛ decade (`MAX_LEVEL`), and each part kept where it is within it; where the
+//! four, down to 1/16 decade (`MAX_LEVEL`, the last halving where the reference is quick),
+//! and each part kept where it is within it; where the
 //! reference does not answer, or a square at the last level is not within it, the square is
 //! stored as not kept (the Taylor steps answer there).
 //!
@@ -18,6 +19,8 @@
 //!                     superball (Hertz), for callgrind: (cost of N + 200 − cost of N) / 200
 //! cargo run --release --example gen_hertz_table -- --coverage   which path answers the cells
 //!                     of the normalized Hertz map (λ, ζ = 0.01 … 100) and the presets
+//! cargo run --release --example gen_hertz_table -- --gaps   the stored squares holding the
+//!                     map's cells the table does not answer, their errors and cell counts
 //! cargo run --release --example gen_hertz_table -- --errors N   the table against the
 //!                     reference at N seeded points of the kept squares: the distribution
 //! ```
@@ -28,9 +31,32 @@ use chacha20::rand_core::{Rng, SeedableRng};
 use rayon::prelude::*;
 use std::time::Instant;
 
-/// How many times a patch is halved at most: ½ decade → ¼ → ⅛. A third halving (1/16
-/// decade) kept 2.8 patches' area more for 1.6 MB more (5.9 MB in all; BENCHMARKS.md).
-const MAX_LEVEL: u32 = 2;
+/// How many times a patch is halved at most: ½ decade → ¼ → ⅛ → 1/16. Every square of the
+/// explorer's normalized Hertz map the table left out at ⅛ decade was measured above the
+/// tolerance, none out of the reference's steps (`--gaps`, BENCHMARKS.md "hertz7"); the
+/// third halving keeps the parts of them away from the kink. It is tried only where the
+/// reference is quick (`slow`).
+const MAX_LEVEL: u32 = 3;
+/// The level from which a square is split again only where the reference at its corners
+/// takes at most `QUICK_STEPS` steps: a halving costs 4 × 481 reference runs, minutes a square
+/// in the long creeps at λ̂ ≈ 1e-4, ζ̂ ≥ 10 (thousands of steps a run).
+const SLOW_FROM: u32 = 2;
+/// See `SLOW_FROM`: the kink band's squares take tens of steps.
+const QUICK_STEPS: usize = 1_000;
+
+/// `println!`, but a closed pipe (`--coverage | head`) ends the program quietly, where
+/// `println!` panics.
+macro_rules! say {
+    ($($arg:tt)*) => {{
+        use std::io::Write;
+        if let Err(e) = writeln!(std::io::stdout(), $($arg)*) {
+            if e.kind() == std::io::ErrorKind::BrokenPipe {
+                std::process::exit(0);
+            }
+            panic!("writing to stdout: {e}");
+        }
+    }};
+}
 
 /// The reference at the nodes of square `c`, ln of each output, output by output.
 fn node_values(grid: &Grid, c: &Cell) -> Option<Vec<f64>> {
@@ -89,6 +115,17 @@ fn corners_answer(grid: &Grid, c: &Cell) -> bool {
         })
 }
 
+/// Whether the reference takes more than `QUICK_STEPS` steps (or does not answer) at a
+/// corner of the square `c`.
+fn slow(grid: &Grid, c: &Cell) -> bool {
+    [(1.0, 1.0), (-1.0, 1.0), (1.0, -1.0), (-1.0, -1.0)]
+        .par_iter()
+        .any(|&(x, y)| {
+            let (l, z) = grid.cell_point(c, x, y);
+            bouncelab::solver::taylor::hertz_reference(l, z, QUICK_STEPS).is_none()
+        })
+}
+
 /// The square `c` as a whole: kept where its error is within the tolerance.
 fn build(grid: &Grid, c: &Cell) -> Patch {
     let values = if too_stiff(grid, c) || !corners_answer(grid, c) {
@@ -116,8 +153,8 @@ fn build(grid: &Grid, c: &Cell) -> Patch {
 /// the stiff corner and the long creeps, the parts would not either), to `MAX_LEVEL`; a
 /// split none of whose parts is kept is not stored. `old` is the same square in an earlier
 /// file (`--reuse`): a square kept there within the tolerance is taken as it is (the same
-/// reference at the same nodes: tests/hertz_table.rs), a split one's error is not measured
-/// again.
+/// reference at the same nodes: tests/hertz_table.rs), a split one's error, or a finite one
+/// above the tolerance, is not measured again.
 fn build_tree(grid: &Grid, c: Cell, old: Option<&Patch>) -> Patch {
     let reused =
         old.filter(|o| o.values.is_some() && o.parts.is_empty() && o.error <= table::TOLERANCE);
@@ -125,14 +162,18 @@ fn build_tree(grid: &Grid, c: Cell, old: Option<&Patch>) -> Patch {
         return o.clone();
     }
     let whole = match old {
-        Some(o) if !o.parts.is_empty() => Patch {
+        Some(o) if !o.parts.is_empty() || o.error.is_finite() => Patch {
             error: o.error,
             values: None,
             parts: Vec::new(),
         },
         _ => build(grid, &c),
     };
-    if whole.values.is_some() || c.level >= MAX_LEVEL || !whole.error.is_finite() {
+    if whole.values.is_some()
+        || c.level >= MAX_LEVEL
+        || !whole.error.is_finite()
+        || (c.level >= SLOW_FROM && slow(grid, &c))
+    {
         return whole;
     }
     let parts: Vec<Patch> = (0..4)
@@ -165,7 +206,7 @@ fn probe(args: &[String]) {
     } else if let Some(v) = node_values(&grid, &Cell::patch(0, 0)) {
         worst(&grid, &v);
     }
-    println!(
+    say!(
         "patch λ̂ 1e{} ζ̂ 1e{} side {} degree {}: error {:.3e}, {:.2} s",
         grid.u0,
         grid.w0,
@@ -187,6 +228,7 @@ fn main() {
     match args.first().map(String::as_str) {
         Some("--calls") => return calls(&args[1..]),
         Some("--coverage") => return coverage(),
+        Some("--gaps") => return gaps(),
         Some("--errors") => return errors(&args[1..]),
         _ => {}
     }
@@ -215,7 +257,7 @@ fn main() {
             let leaves = table::leaves(std::slice::from_ref(&p), 1);
             let kept = leaves.iter().filter(|(_, q)| q.values.is_some());
             let area: f64 = kept.map(|(c, _)| 0.25f64.powi(c.level as i32)).sum::<f64>() + 0.0;
-            println!(
+            say!(
                 "λ̂ {l:9.3e} ζ̂ {z:9.3e}: error {:.2e}, {} squares, {:.4} of it kept ({:.2} s)",
                 p.error,
                 leaves.len(),
@@ -233,7 +275,7 @@ fn main() {
     let by_level: Vec<usize> = (0..=MAX_LEVEL)
         .map(|l| kept.iter().filter(|(c, _)| c.level == l).count())
         .collect();
-    println!(
+    say!(
         "{out}: {} bytes, {} squares kept (by level {by_level:?}), {area:.4} of {} patches' area, {:.1} s",
         bytes.len(),
         kept.len(),
@@ -252,7 +294,7 @@ fn line(args: &[String]) {
         let u = num(0) + t * (num(2) - num(0));
         let w = num(1) + t * (num(3) - num(1));
         let s = bouncelab::solver::taylor::hertz_reference(10f64.powf(u), 10f64.powf(w), 400_000);
-        println!("{u:.4} {w:.4} {s:?}");
+        say!("{u:.4} {w:.4} {s:?}");
     }
 }
 
@@ -276,9 +318,12 @@ fn worst(grid: &Grid, values: &[f64]) {
             }
         }
     }
-    println!(
+    say!(
         "worst {:.3e} output {} at log λ̂ {:.4} log ζ̂ {:.4}",
-        w.0, w.1, w.2, w.3
+        w.0,
+        w.1,
+        w.2,
+        w.3
     );
 }
 
@@ -296,7 +341,7 @@ fn calls(args: &[String]) {
             .expect("the superball is in a kept patch")
             .cor;
     }
-    println!("{n} calls, Σe = {sum}");
+    say!("{n} calls, Σe = {sum}");
 }
 
 /// Which path answers a Hertz impact: 0 the table, 1 the Taylor steps, 2 the adaptive solver.
@@ -322,19 +367,68 @@ fn coverage() {
             count[path(&p.normalized())] += 1;
         }
     }
-    println!(
+    say!(
         "normalized Hertz map 60 × 200: table {}, Taylor steps {}, adaptive {}",
-        count[0], count[1], count[2]
+        count[0],
+        count[1],
+        count[2]
     );
     for preset in bouncelab::preset::Preset::embedded_all() {
         let n = preset.params().normalized();
         let l = n.kappa.powf(-0.4);
-        println!(
+        say!(
             "{:>12}: λ̂ {:.3e} ζ̂ {:.3e}: {}",
             preset.name,
             n.lambda * l * l,
             n.zeta / l,
             ["table", "Taylor steps", "adaptive"][path(&n)]
+        );
+    }
+}
+
+/// The map's cells of `coverage` as (λ̂, ζ̂).
+fn map_cells() -> Vec<(f64, f64)> {
+    let log = |i: usize, n: usize| 10f64.powf(-2.0 + 4.0 * i as f64 / (n - 1) as f64);
+    let mut out = Vec::new();
+    for i in 0..60 {
+        for j in 0..200 {
+            let p =
+                bouncelab::ImpactParams::from_normalized(log(i, 60), log(j, 200), f64::INFINITY);
+            let n = p.normalized();
+            let l = n.kappa.powf(-0.4);
+            out.push((n.lambda * l * l, n.zeta / l));
+        }
+    }
+    out
+}
+
+/// `--gaps`: each stored square that holds cells of the normalized Hertz map the table does
+/// not answer, with its measured error and how many such cells it holds.
+fn gaps() {
+    let (_, patches) = table::stored().expect("the table reads");
+    let leaves = table::leaves(&patches, GRID.nw);
+    let mut count = vec![0usize; leaves.len()];
+    for (l, z) in map_cells() {
+        if table::hertz_hat(l, z).is_some() {
+            continue;
+        }
+        let (u, w) = (l.log10(), z.log10());
+        let holds = |c: &Cell| {
+            let (l0, z0) = GRID.cell_point(c, -1.0, -1.0);
+            let (l1, z1) = GRID.cell_point(c, 1.0, 1.0);
+            (l0.log10()..=l1.log10()).contains(&u) && (z0.log10()..=z1.log10()).contains(&w)
+        };
+        match leaves.iter().position(|(c, _)| holds(c)) {
+            Some(k) => count[k] += 1,
+            None => say!("no square holds λ̂ {l:.3e} ζ̂ {z:.3e}"),
+        }
+    }
+    for ((c, p), n) in leaves.iter().zip(&count).filter(|(_, n)| **n > 0) {
+        let (l0, z0) = GRID.cell_point(c, -1.0, -1.0);
+        let (l1, z1) = GRID.cell_point(c, 1.0, 1.0);
+        say!(
+            "{c:?} λ̂ {l0:.3e}…{l1:.3e} ζ̂ {z0:.3e}…{z1:.3e}: error {:.2e}, {n} cells",
+            p.error
         );
     }
 }
@@ -360,7 +454,7 @@ fn errors(args: &[String]) {
         }
     }
     let measured = |x: f64| leaves.iter().filter(|(_, p)| p.error <= x).count();
-    println!(
+    say!(
         "squares measured within 1e-12: {}, 1e-11: {}, 1e-10: {}",
         measured(1e-12),
         measured(1e-11),
@@ -369,7 +463,7 @@ fn errors(args: &[String]) {
     e.sort_by(f64::total_cmp);
     let q = |f: f64| e[((n - 1) as f64 * f) as usize];
     let under = |x: f64| e.iter().filter(|&&d| d <= x).count();
-    println!(
+    say!(
         "{n} points: median {:.2e}, 90 % {:.2e}, 99 % {:.2e}, max {:.2e}; ≤ 1e-12: {}, ≤ 1e-11: {}",
         q(0.5),
         q(0.9),

@@ -13,8 +13,9 @@
 //! ([`crate::solver::taylor::hertz_reference`]), measures each patch's error at the points
 //! between its nodes against the same reference, and keeps a patch (or part) only where that
 //! error is within [`TOLERANCE`] (`error` says how it is measured). The file is `hertz.bin`
-//! (`format`, version 2). tests/hertz_table.rs re-computes seeded nodes of patches and parts
-//! (they must equal the file's), and meets the reference to 1e-11 at 1 000 seeded points off
+//! (`format`, version 3: an index of the patches' records, each read at its patch's first
+//! use). tests/hertz_table.rs re-computes seeded nodes of patches and parts
+//! (they must equal the file's), and meets the reference to 1e-12 at 1 000 seeded points off
 //! the nodes of the kept squares.
 //!
 //! **Where it answers.** Inside the grid, in a kept patch or part; elsewhere (λ̂ = 0, far
@@ -26,7 +27,7 @@ pub mod cheb;
 mod format;
 mod kernel;
 
-pub use format::{Patch, decode, encode};
+pub use format::{Patch, decode, encode, encode_v2};
 
 use crate::model::contact::ContactLaw;
 use crate::model::params::Normalized;
@@ -273,28 +274,27 @@ impl Node {
     }
 }
 
-/// The table ready to evaluate: the file as read, and each patch's tree of kept squares made
-/// from it at the patch's first use (made all at once, the transforms cost some 1.9·10⁸
-/// instructions, BENCHMARKS.md "Fifth session (hertz6)"; a process mostly meets few patches).
+/// The table ready to evaluate: the file's header and index as read, and each patch's tree
+/// of kept squares made from its record at the patch's first use (the record's checksum, its
+/// values and the transforms, some 3·10⁵ instructions a kept square; the whole file read and
+/// made at once would cost 2·10⁸, BENCHMARKS.md "Fifth session (hertz6)" and hertz7's; a
+/// process mostly meets few patches).
 struct Table {
-    grid: Grid,
-    stored: Vec<Patch>,
+    index: format::Index<'static>,
     patches: Vec<OnceLock<Node>>,
 }
 
-/// The table, read once; `None` when the file does not read or is not on [`GRID`] (then
-/// every impact goes to the Taylor steps; tests/hertz_table.rs fails on it).
+/// The table, opened once; `None` when the file's header or index does not read or is not
+/// on [`GRID`] (then every impact goes to the Taylor steps; tests/hertz_table.rs fails on
+/// it). A patch whose record does not read answers nowhere (tests/hertz_table.rs reads every
+/// record of the committed file).
 fn table() -> Option<&'static Table> {
     static TABLE: OnceLock<Option<Table>> = OnceLock::new();
     TABLE
         .get_or_init(|| {
-            let (grid, stored) = stored().ok().filter(|(g, _)| *g == GRID)?;
-            let patches = stored.iter().map(|_| OnceLock::new()).collect();
-            Some(Table {
-                grid,
-                stored,
-                patches,
-            })
+            let index = format::open(DATA).ok().filter(|i| i.grid == GRID)?;
+            let patches = (0..GRID.nu * GRID.nw).map(|_| OnceLock::new()).collect();
+            Some(Table { index, patches })
         })
         .as_ref()
 }
@@ -310,8 +310,12 @@ pub fn hertz_hat(lambda_hat: f64, zeta_hat: f64) -> Option<[f64; OUTPUTS]> {
 /// or in a square the table does not keep.
 fn kept_square(lambda_hat: f64, zeta_hat: f64) -> Option<(&'static kernel::Block, f64, f64)> {
     let t = table()?;
-    let (patch, fu, fw) = t.grid.locate(lambda_hat, zeta_hat)?;
-    let node = t.patches[patch].get_or_init(|| Node::of(&t.stored[patch], t.grid.degree));
+    let (patch, fu, fw) = GRID.locate(lambda_hat, zeta_hat)?;
+    let node = t.patches[patch].get_or_init(|| {
+        t.index
+            .patch(patch)
+            .map_or(Node::Out, |p| Node::of(&p, GRID.degree))
+    });
     node.find(fu, fw)
 }
 
