@@ -13,9 +13,13 @@
 //! Where the pair part of z̄' starts negative (P ≤ 0) τ_m is refined from the loading's start
 //! and kept where z̄' provably falls once before it (`Flow4::falls_once`, kernel.rs); where
 //! |rτ| < 1e-3, e^{rτ} − 1 is its series (`math::exp_m1_small`, as the scalar path's
-//! `exp_m1`). A lane the common path does not settle — the pair does not oscillate (three real
-//! roots), a step too long for the series and the `sin_cos` turn, a root past its lobe (the
-//! bracket search's cases), λ or ζ zero — is handed to the scalar [`super::summary`], whole.
+//! `exp_m1`). Where the cubic's three roots are real (no oscillating pair: λ ≲ 0.24, ζ ≈
+//! 0.64–5) the flow is the slowest root's mode and a real pair's cosh and sinh (`lanes/hyper.rs`):
+//! the scalar path's answer to 1e-12, or where its rounding bound refuses and the lanes' does
+//! not (a few points in a thousand of that band), the exact solver's to 1e-12
+//! (tests/map_lanes.rs). A lane the common path does not settle — a step too long for the
+//! series and the `sin_cos` turn, a root past its lobe (the bracket search's cases), a pair
+//! nearly double, λ or ζ zero — is handed to the scalar [`super::summary`], whole.
 //! The exponential and `atan2` are the lanes' own (`lanes/math.rs`: within 2 ulp of libm's,
 //! the same bits on every machine), `cbrt` `wide`'s written over the lanes (its bits),
 //! `sin_cos` `wide`'s, where the scalar path calls libm's: the answers agree with the scalar path's to 1e-12 (tests/map_lanes.rs), not
@@ -23,8 +27,9 @@
 //!
 //! The files: `lane.rs` (what the kernel asks of four f64, and `wide`'s `f64x4` answering it),
 //! `avx.rs` (the same in one AVX register), `pair.rs` (two AVX registers as one lane type of
-//! eight: [`lanes_only8`]), `math.rs` (`exp`, `atan2`, `cbrt` and the short steps' series over
-//! any), `kernel.rs` (the closed form over any).
+//! eight: [`lanes_only8`]), `math.rs` (`exp`, `atan2`, `cbrt`, a logarithm for guesses and the
+//! short steps' series over any), `kernel.rs` (the closed form over any), `hyper.rs` (its real
+//! pair: three real roots).
 
 #[cfg(target_arch = "x86_64")]
 mod avx;
@@ -40,8 +45,9 @@ use super::Summary;
 use wide::f64x4;
 
 /// The lanes' own answers: lane i is [`super::summary`]`(lambda[i], zeta[i])` to 1e-12 where
-/// the common path settles it, `None` where it hands the lane to the scalar path (which may
-/// still answer: [`summary4`] asks it).
+/// the common path settles it (where that is `None`, three real roots, the exact solver's to
+/// 1e-12), `None` where it hands the lane to the scalar path (which may still answer:
+/// [`summary4`] asks it).
 ///
 /// The kernel (`kernel.rs`, generic over the lane type) runs compiled twice: on `wide`'s
 /// `f64x4` for the build's target (two SSE2 registers on the default x86-64 one), and on the
@@ -77,8 +83,9 @@ pub fn lanes_only_portable(lambda: [f64; LANES], zeta: [f64; LANES]) -> [Option<
 }
 
 /// COR, F̄_m and τ_f of four normalized linear-law impacts without flattening: lane i is
-/// [`super::summary`]`(lambda[i], zeta[i])` to 1e-12 (the same `None`s: a lane the lanes do
-/// not settle is the scalar path's answer).
+/// [`super::summary`]`(lambda[i], zeta[i])` to 1e-12 (a lane the lanes do not settle is the
+/// scalar path's answer; the same `None`s but where three real roots let the lanes answer
+/// what the scalar path's bound refuses: the exact solver's answer to 1e-12 then).
 pub fn summary4(lambda: [f64; LANES], zeta: [f64; LANES]) -> [Option<Summary>; LANES] {
     let lanes = lanes_only(lambda, zeta);
     std::array::from_fn(|i| lanes[i].or_else(|| super::summary(lambda[i], zeta[i])))
