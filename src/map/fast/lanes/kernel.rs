@@ -85,22 +85,15 @@ fn lone_real_root<L: Lane>(a2: L, a0: L) -> (L, L, L, L, L) {
     let ok = disc.gt(zero) & u.ne(zero);
     let mut r = three.select(zero, u - p / (v(3.0) * u) - shift);
     let mut done = zero.ne(zero);
-    let newton = |r: L| {
-        let value = ((r + a2) * r + one) * r + a0;
-        let slope = (v(3.0) * r + v(2.0) * a2) * r + one;
-        let step = value / slope;
-        let next = r - step;
-        (next, step.abs().le(v(4.0 * f64::EPSILON) * next.abs()))
-    };
     for _ in 0..4 {
-        let (next, small) = newton(r);
+        let (next, small) = newton(r, a2, a0);
         r = done.select(r, next);
         done |= small;
     }
     // the lanes of three real roots go on alone; every other lane keeps its four steps
     let mut k = 4;
     while k < MAX_NEWTON_THREE && (three & !done).any() {
-        let (next, small) = newton(r);
+        let (next, small) = newton(r, a2, a0);
         r = (done | !three).select(r, next);
         done |= three & small;
         k += 1;
@@ -119,6 +112,20 @@ fn lone_real_root<L: Lane>(a2: L, a0: L) -> (L, L, L, L, L) {
         ok,
         three,
     )
+}
+
+/// One Newton step on s³ + a2 s² + s + a0 from r: the next r, and the lanes where the step
+/// was within 4ε of it. A function, not a closure: a closure stayed a call out of the AVX2
+/// kernel, and every lane operation inside it a call too (callgrind).
+#[inline(always)]
+fn newton<L: Lane>(r: L, a2: L, a0: L) -> (L, L) {
+    let v = L::splat;
+    let one = v(1.0);
+    let value = ((r + a2) * r + one) * r + a0;
+    let slope = (v(3.0) * r + v(2.0) * a2) * r + one;
+    let step = value / slope;
+    let next = r - step;
+    (next, step.abs().le(v(4.0 * f64::EPSILON) * next.abs()))
 }
 
 impl<L: Lane> Flow4<L> {
