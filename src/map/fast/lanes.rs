@@ -51,33 +51,34 @@ use wide::f64x4;
 ///
 /// The kernel (`kernel.rs`, generic over the lane type) runs compiled twice: on `wide`'s
 /// `f64x4` for the build's target (two SSE2 registers on the default x86-64 one), and on the
-/// `Avx` lane type (one ymm register, `avx.rs`) inside a `#[target_feature(enable = "avx2")]`
-/// function, picked where the CPU has AVX2 (`is_x86_feature_detected!` caches the answer).
-/// Both run the same IEEE operations in the same order — the exponential and `atan2` written
-/// once over the lane primitives (`math.rs`), no FMA (Rust never fuses a multiply and an add
-/// by itself, and FMA is not enabled) — so they give the same bits
+/// `Avx` lane type (one ymm register, `avx.rs`) inside a `#[target_feature(enable =
+/// "avx2,fma")]` function, picked where the CPU has AVX2 and FMA (`is_x86_feature_detected!`
+/// caches the answer). Both run the same IEEE operations in the same order — the exponential
+/// and `atan2` written once over the lane primitives (`math.rs`), the series' fused
+/// multiply-adds `vfmadd` in one and `f64::mul_add` in the other (both correctly rounded;
+/// Rust fuses nothing by itself) — so they give the same bits
 /// (`avx2_and_portable_kernels_agree_bit_for_bit`): a map's CSV does not depend on the CPU.
 pub fn lanes_only(lambda: [f64; LANES], zeta: [f64; LANES]) -> [Option<Summary>; LANES] {
     #[cfg(target_arch = "x86_64")]
-    if std::arch::is_x86_feature_detected!("avx2") {
-        // SAFETY: the CPU has AVX2, just checked
+    if std::arch::is_x86_feature_detected!("avx2") && std::arch::is_x86_feature_detected!("fma") {
+        // SAFETY: the CPU has AVX2 and FMA, just checked
         return unsafe { lanes_only_avx2(lambda, zeta) };
     }
     kernel::kernel::<f64x4, LANES>(lambda, zeta)
 }
 
-/// The kernel on the AVX lane type, compiled with AVX2 enabled.
+/// The kernel on the AVX lane type, compiled with AVX2 and FMA enabled.
 ///
 /// # Safety
-/// The CPU must have AVX2.
+/// The CPU must have AVX2 and FMA.
 #[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2")]
+#[target_feature(enable = "avx2,fma")]
 unsafe fn lanes_only_avx2(lambda: [f64; LANES], zeta: [f64; LANES]) -> [Option<Summary>; LANES] {
     kernel::kernel::<avx::Avx, LANES>(lambda, zeta)
 }
 
 /// [`lanes_only`] compiled for the build's own target (SSE2 on the default x86-64 one): what
-/// [`lanes_only`] runs where AVX2 is missing.
+/// [`lanes_only`] runs where AVX2 or FMA is missing.
 pub fn lanes_only_portable(lambda: [f64; LANES], zeta: [f64; LANES]) -> [Option<Summary>; LANES] {
     kernel::kernel::<f64x4, LANES>(lambda, zeta)
 }
@@ -101,8 +102,8 @@ pub const WIDE: usize = 2 * LANES;
 /// the portable kernel (SSE2 has too few registers for eight lanes at once).
 pub fn lanes_only8(lambda: [f64; WIDE], zeta: [f64; WIDE]) -> [Option<Summary>; WIDE] {
     #[cfg(target_arch = "x86_64")]
-    if std::arch::is_x86_feature_detected!("avx2") {
-        // SAFETY: the CPU has AVX2, just checked
+    if std::arch::is_x86_feature_detected!("avx2") && std::arch::is_x86_feature_detected!("fma") {
+        // SAFETY: the CPU has AVX2 and FMA, just checked
         return unsafe { lanes_only8_avx2(lambda, zeta) };
     }
     let half = |a: &[f64; WIDE], k: usize| std::array::from_fn(|i| a[k * LANES + i]);
@@ -111,12 +112,12 @@ pub fn lanes_only8(lambda: [f64; WIDE], zeta: [f64; WIDE]) -> [Option<Summary>; 
     std::array::from_fn(|i| if i < LANES { lo[i] } else { hi[i - LANES] })
 }
 
-/// The kernel on a pair of AVX registers, compiled with AVX2 enabled.
+/// The kernel on a pair of AVX registers, compiled with AVX2 and FMA enabled.
 ///
 /// # Safety
-/// The CPU must have AVX2.
+/// The CPU must have AVX2 and FMA.
 #[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2")]
+#[target_feature(enable = "avx2,fma")]
 unsafe fn lanes_only8_avx2(lambda: [f64; WIDE], zeta: [f64; WIDE]) -> [Option<Summary>; WIDE] {
     kernel::kernel::<pair::Pair<avx::Avx>, WIDE>(lambda, zeta)
 }
