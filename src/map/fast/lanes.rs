@@ -13,9 +13,13 @@
 //! Where the pair part of z̄' starts negative (P ≤ 0) τ_m is refined from the loading's start
 //! and kept where z̄' provably falls once before it (`Flow4::falls_once`, kernel.rs); where
 //! |rτ| < 1e-3, e^{rτ} − 1 is its series (`math::exp_m1_small`, as the scalar path's
-//! `exp_m1`). A lane the common path does not settle — the pair does not oscillate (three real
-//! roots), a step too long for the series and the `sin_cos` turn, a root past its lobe (the
-//! bracket search's cases), λ or ζ zero — is handed to the scalar [`super::summary`], whole.
+//! `exp_m1`). Where the cubic's three roots are real (no oscillating pair: λ ≲ 0.24, ζ ≈
+//! 0.64–5) the flow is the slowest root's mode and a real pair's cosh and sinh (`lanes/hyper.rs`):
+//! the scalar path's answer to 1e-12, or where its rounding bound refuses and the lanes' does
+//! not (a few points in a thousand of that band), the exact solver's to 1e-12
+//! (tests/map_lanes.rs). A lane the common path does not settle — a step too long for the
+//! series and the `sin_cos` turn, a root past its lobe (the bracket search's cases), a pair
+//! nearly double, λ or ζ zero — is handed to the scalar [`super::summary`], whole.
 //! The exponential and `atan2` are the lanes' own (`lanes/math.rs`: within 2 ulp of libm's,
 //! the same bits on every machine), `cbrt` `wide`'s written over the lanes (its bits),
 //! `sin_cos` `wide`'s, where the scalar path calls libm's: the answers agree with the scalar path's to 1e-12 (tests/map_lanes.rs), not
@@ -23,8 +27,9 @@
 //!
 //! The files: `lane.rs` (what the kernel asks of four f64, and `wide`'s `f64x4` answering it),
 //! `avx.rs` (the same in one AVX register), `pair.rs` (two AVX registers as one lane type of
-//! eight: [`lanes_only8`]), `math.rs` (`exp`, `atan2`, `cbrt` and the short steps' series over
-//! any), `kernel.rs` (the closed form over any).
+//! eight: [`lanes_only8`]), `math.rs` (`exp`, `atan2`, `cbrt`, a logarithm for guesses and the
+//! short steps' series over any), `kernel.rs` (the closed form over any), `hyper.rs` (its real
+//! pair: three real roots).
 
 #[cfg(target_arch = "x86_64")]
 mod avx;
@@ -43,45 +48,48 @@ use super::Summary;
 use wide::f64x4;
 
 /// The lanes' own answers: lane i is [`super::summary`]`(lambda[i], zeta[i])` to 1e-12 where
-/// the common path settles it, `None` where it hands the lane to the scalar path (which may
-/// still answer: [`summary4`] asks it).
+/// the common path settles it (where that is `None`, three real roots, the exact solver's to
+/// 1e-12), `None` where it hands the lane to the scalar path (which may still answer:
+/// [`summary4`] asks it).
 ///
 /// The kernel (`kernel.rs`, generic over the lane type) runs compiled twice: on `wide`'s
 /// `f64x4` for the build's target (two SSE2 registers on the default x86-64 one), and on the
-/// `Avx` lane type (one ymm register, `avx.rs`) inside a `#[target_feature(enable = "avx2")]`
-/// function, picked where the CPU has AVX2 (`is_x86_feature_detected!` caches the answer).
-/// Both run the same IEEE operations in the same order — the exponential and `atan2` written
-/// once over the lane primitives (`math.rs`), no FMA (Rust never fuses a multiply and an add
-/// by itself, and FMA is not enabled) — so they give the same bits
+/// `Avx` lane type (one ymm register, `avx.rs`) inside a `#[target_feature(enable =
+/// "avx2,fma")]` function, picked where the CPU has AVX2 and FMA (`is_x86_feature_detected!`
+/// caches the answer). Both run the same IEEE operations in the same order — the exponential
+/// and `atan2` written once over the lane primitives (`math.rs`), the series' fused
+/// multiply-adds `vfmadd` in one and `f64::mul_add` in the other (both correctly rounded;
+/// Rust fuses nothing by itself) — so they give the same bits
 /// (`avx2_and_portable_kernels_agree_bit_for_bit`): a map's CSV does not depend on the CPU.
 pub fn lanes_only(lambda: [f64; LANES], zeta: [f64; LANES]) -> [Option<Summary>; LANES] {
     #[cfg(target_arch = "x86_64")]
-    if std::arch::is_x86_feature_detected!("avx2") {
-        // SAFETY: the CPU has AVX2, just checked
+    if std::arch::is_x86_feature_detected!("avx2") && std::arch::is_x86_feature_detected!("fma") {
+        // SAFETY: the CPU has AVX2 and FMA, just checked
         return unsafe { lanes_only_avx2(lambda, zeta) };
     }
     kernel::kernel::<f64x4, LANES>(lambda, zeta)
 }
 
-/// The kernel on the AVX lane type, compiled with AVX2 enabled.
+/// The kernel on the AVX lane type, compiled with AVX2 and FMA enabled.
 ///
 /// # Safety
-/// The CPU must have AVX2.
+/// The CPU must have AVX2 and FMA.
 #[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2")]
+#[target_feature(enable = "avx2,fma")]
 unsafe fn lanes_only_avx2(lambda: [f64; LANES], zeta: [f64; LANES]) -> [Option<Summary>; LANES] {
     kernel::kernel::<avx::Avx, LANES>(lambda, zeta)
 }
 
 /// [`lanes_only`] compiled for the build's own target (SSE2 on the default x86-64 one): what
-/// [`lanes_only`] runs where AVX2 is missing.
+/// [`lanes_only`] runs where AVX2 or FMA is missing.
 pub fn lanes_only_portable(lambda: [f64; LANES], zeta: [f64; LANES]) -> [Option<Summary>; LANES] {
     kernel::kernel::<f64x4, LANES>(lambda, zeta)
 }
 
 /// COR, F̄_m and τ_f of four normalized linear-law impacts without flattening: lane i is
-/// [`super::summary`]`(lambda[i], zeta[i])` to 1e-12 (the same `None`s: a lane the lanes do
-/// not settle is the scalar path's answer).
+/// [`super::summary`]`(lambda[i], zeta[i])` to 1e-12 (a lane the lanes do not settle is the
+/// scalar path's answer; the same `None`s but where three real roots let the lanes answer
+/// what the scalar path's bound refuses: the exact solver's answer to 1e-12 then).
 pub fn summary4(lambda: [f64; LANES], zeta: [f64; LANES]) -> [Option<Summary>; LANES] {
     let lanes = lanes_only(lambda, zeta);
     std::array::from_fn(|i| lanes[i].or_else(|| super::summary(lambda[i], zeta[i])))
@@ -97,8 +105,8 @@ pub const WIDE: usize = 2 * LANES;
 /// the portable kernel (SSE2 has too few registers for eight lanes at once).
 pub fn lanes_only8(lambda: [f64; WIDE], zeta: [f64; WIDE]) -> [Option<Summary>; WIDE] {
     #[cfg(target_arch = "x86_64")]
-    if std::arch::is_x86_feature_detected!("avx2") {
-        // SAFETY: the CPU has AVX2, just checked
+    if std::arch::is_x86_feature_detected!("avx2") && std::arch::is_x86_feature_detected!("fma") {
+        // SAFETY: the CPU has AVX2 and FMA, just checked
         return unsafe { lanes_only8_avx2(lambda, zeta) };
     }
     let half = |a: &[f64; WIDE], k: usize| std::array::from_fn(|i| a[k * LANES + i]);
@@ -107,12 +115,12 @@ pub fn lanes_only8(lambda: [f64; WIDE], zeta: [f64; WIDE]) -> [Option<Summary>; 
     std::array::from_fn(|i| if i < LANES { lo[i] } else { hi[i - LANES] })
 }
 
-/// The kernel on a pair of AVX registers, compiled with AVX2 enabled.
+/// The kernel on a pair of AVX registers, compiled with AVX2 and FMA enabled.
 ///
 /// # Safety
-/// The CPU must have AVX2.
+/// The CPU must have AVX2 and FMA.
 #[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2")]
+#[target_feature(enable = "avx2,fma")]
 unsafe fn lanes_only8_avx2(lambda: [f64; WIDE], zeta: [f64; WIDE]) -> [Option<Summary>; WIDE] {
     kernel::kernel::<pair::Pair<avx::Avx>, WIDE>(lambda, zeta)
 }

@@ -9,9 +9,9 @@
 //! the `#[target_feature(enable = "avx2")]` kernel the intrinsics inline and the values stay in
 //! ymm registers (BENCHMARKS.md, "The lanes in one AVX register").
 //!
-//! Safety: every intrinsic here needs AVX (`shl52`, `shr52` and `sign_negative` AVX2). An [`Avx`] is
-//! only made inside the kernel's AVX2 compilation, which [`super::lanes_only`] calls after
-//! `is_x86_feature_detected!("avx2")`: the module is private to the lanes, and no value of the
+//! Safety: every intrinsic here needs AVX (`shl52`, `shr52` and `sign_negative` AVX2, `mul_add`
+//! FMA). An [`Avx`] is only made inside the kernel's AVX2 compilation (AVX2 and FMA enabled),
+//! which [`super::lanes_only`] calls after `is_x86_feature_detected!` of both: the module is private to the lanes, and no value of the
 //! type leaves the kernel.
 
 use super::lane::{LANES, Lane, wide_sin_cos};
@@ -138,6 +138,12 @@ impl Lane for Avx {
     compare!(le, _CMP_LE_OQ);
     compare!(gt, _CMP_GT_OQ);
     compare!(ge, _CMP_GE_OQ);
+    /// `vfmadd` (FMA3): the kernel's AVX2 compilation enables FMA too, and runs only where
+    /// the CPU has both (`lanes.rs`).
+    #[inline(always)]
+    fn mul_add(self, m: Avx, a: Avx) -> Avx {
+        op!(_mm256_fmadd_pd(self.0, m.0, a.0))
+    }
     #[inline(always)]
     fn select(self, yes: Avx, no: Avx) -> Avx {
         op!(_mm256_blendv_pd(no.0, yes.0, self.0))

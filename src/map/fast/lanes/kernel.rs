@@ -5,11 +5,14 @@
 //! give the same bits (`avx2_and_portable_kernels_agree_bit_for_bit`, tests/map_lanes.rs).
 
 use super::lane::Lane;
-use super::math::{atan2, cbrt, cos_sinc, exp, exp_m1_small, exp_small};
+use super::math::{atan2, cbrt, cos_sinc_sq, exp, exp_m1_small, exp_small};
 use crate::map::fast::Summary;
 use crate::map::fast::flow::SMALL;
 use crate::map::fast::search::{MAX_REFINE, SETTLED, TAU_MAX};
 use std::f64::consts::{FRAC_PI_2, PI};
+
+#[path = "hyper.rs"]
+mod hyper;
 
 /// The flow of four (λ, ζ): `flow::Flow`'s fields, lane by lane.
 struct Flow4<L: Lane> {
@@ -23,6 +26,9 @@ struct Flow4<L: Lane> {
     p: L,
     q: L,
     jet: [[L; 3]; 6],
+    /// The lanes whose pair is real (ω² = −ν² < 0, three real roots): `omega` holds ν there
+    /// and the flow's C, S are cosh ντ, sinh(ντ)/ν (`hyper.rs`).
+    hyper: L,
 }
 
 /// `flow::Point`, lane by lane.
@@ -56,31 +62,43 @@ struct Root4<L: Lane> {
     jet: [L; 6],
 }
 
-/// The lone real root of s³ + a2 s² + s + a0 and the deflated quadratic (p1, p0), as
-/// `propagator::modes_of` gives them (Cardano, then at most four Newton steps that must
-/// settle), and the lanes where it answers.
+/// Most Newton steps for the slowest of three real roots (from 0, `hyper.rs`).
+const MAX_NEWTON_THREE: usize = 16;
+
+/// The real root r of s³ + a2 s² + s + a0 that the flow stands apart and the deflated
+/// quadratic (p1, p0), the lanes where it answers, and the lanes of three real roots. Where
+/// the other two are a complex pair: the lone root as `propagator::modes_of` gives it
+/// (Cardano, then at most four Newton steps that must settle). Where all three are real
+/// (Cardano's discriminant ≤ 0): the slowest, by Newton from 0, which falls to it
+/// monotonically (`hyper.rs` says why), in at most [`MAX_NEWTON_THREE`] steps that must settle.
 #[inline(always)]
-fn lone_real_root<L: Lane>(a2: L, a0: L) -> (L, L, L, L) {
+fn lone_real_root<L: Lane>(a2: L, a0: L) -> (L, L, L, L, L) {
     let v = L::splat;
     let (one, zero) = (v(1.0), v(0.0));
     let shift = a2 / v(3.0);
     let p = one - a2 * shift;
     let q = (v(2.0) * shift * shift - one) * shift + a0;
     let disc = v(0.25) * q * q + p * p * p / v(27.0);
+    let three = disc.le(zero);
     let sign = q.sign_negative().select(v(-1.0), one);
     let u = cbrt(v(-0.5) * q - sign * disc.sqrt());
-    let mut ok = disc.gt(zero) & u.ne(zero);
-    let mut r = u - p / (v(3.0) * u) - shift;
+    let ok = disc.gt(zero) & u.ne(zero);
+    let mut r = three.select(zero, u - p / (v(3.0) * u) - shift);
     let mut done = zero.ne(zero);
     for _ in 0..4 {
-        let value = ((r + a2) * r + one) * r + a0;
-        let slope = (v(3.0) * r + v(2.0) * a2) * r + one;
-        let step = value / slope;
-        let next = r - step;
+        let (next, small) = newton(r, a2, a0);
         r = done.select(r, next);
-        done |= step.abs().le(v(4.0 * f64::EPSILON) * next.abs());
+        done |= small;
     }
-    ok &= done & r.ne(zero);
+    // the lanes of three real roots go on alone; every other lane keeps its four steps
+    let mut k = 4;
+    while k < MAX_NEWTON_THREE && (three & !done).any() {
+        let (next, small) = newton(r, a2, a0);
+        r = (done | !three).select(r, next);
+        done |= three & small;
+        k += 1;
+    }
+    let ok = (ok | three) & done & r.ne(zero);
     // deflate: the division form where r³ dominates a0, else the multiplication form
     let first = (r.abs() * r.abs() * r.abs()).ge(a0);
     let p0_div = -a0 / r;
@@ -92,23 +110,40 @@ fn lone_real_root<L: Lane>(a2: L, a0: L) -> (L, L, L, L) {
         first.select(p1_div, p1_mul),
         first.select(p0_div, p0_mul),
         ok,
+        three,
     )
 }
 
+/// One Newton step on s³ + a2 s² + s + a0 from r: the next r, and the lanes where the step
+/// was within 4ε of it. A function, not a closure: a closure stayed a call out of the AVX2
+/// kernel, and every lane operation inside it a call too (callgrind).
+#[inline(always)]
+fn newton<L: Lane>(r: L, a2: L, a0: L) -> (L, L) {
+    let v = L::splat;
+    let one = v(1.0);
+    let value = ((r + a2) * r + one) * r + a0;
+    let slope = (v(3.0) * r + v(2.0) * a2) * r + one;
+    let step = value / slope;
+    let next = r - step;
+    (next, step.abs().le(v(4.0 * f64::EPSILON) * next.abs()))
+}
+
 impl<L: Lane> Flow4<L> {
-    /// The flows, and the lanes whose pair oscillates and decays (`Flow::new`'s coefficients,
-    /// each of two equal forms the one of smaller terms).
+    /// The flows, and the lanes whose pair oscillates and decays or, with three real roots,
+    /// is real and apart from r (`Flow::new`'s coefficients, each of two equal forms the one
+    /// of smaller terms).
     #[inline(always)]
     fn new(lambda: L, zeta: L) -> (Flow4<L>, L) {
         let v = L::splat;
         let (one, zero) = (v(1.0), v(0.0));
         let two_zeta = v(2.0) * zeta;
         let (a2, a0) = (two_zeta * (one + lambda), two_zeta * lambda);
-        let (r, p1, p0, mut ok) = lone_real_root(a2, a0);
+        let (r, p1, p0, mut ok, three) = lone_real_root(a2, a0);
         let sigma = v(0.5) * p1;
         let omega2 = p0 - sigma * sigma;
         let gap = (r + sigma) * (r + sigma) + omega2;
-        ok &= gap.gt(zero) & p0.gt(zero) & omega2.gt(zero);
+        let hyper = three & omega2.lt(zero);
+        ok &= gap.gt(zero) & p0.gt(zero) & (omega2.gt(zero) | hyper);
         let (a_sum, sa_sum) = ((r + a0) / gap, (r.abs() + a0.abs()) / gap.abs());
         let two_sigma = v(2.0) * sigma;
         let a_diff = (two_sigma - two_zeta) / gap;
@@ -132,7 +167,7 @@ impl<L: Lane> Flow4<L> {
             *row = [ar, c, s];
             (ar, c, s) = (ar * r, s - sigma * c, -omega2 * c - sigma * s);
         }
-        let omega = omega2.sqrt();
+        let omega = hyper.select((-omega2).sqrt(), omega2.sqrt());
         let flow = Flow4 {
             size,
             r,
@@ -144,6 +179,7 @@ impl<L: Lane> Flow4<L> {
             p,
             q,
             jet,
+            hyper,
         };
         (flow, ok)
     }
@@ -161,11 +197,17 @@ impl<L: Lane> Flow4<L> {
         }
     }
 
-    /// `Flow::at` where the pair oscillates.
+    /// `Flow::at`: by the phase where the pair oscillates, by `Flow4::at_hyper` where it is
+    /// real.
     #[inline(always)]
     fn at(&self, t: L) -> Point4<L> {
         let (sin, cos) = (self.omega * t).sin_cos();
-        self.at_phase(t, cos, sin)
+        let point = self.at_phase(t, cos, sin);
+        if self.hyper.any() {
+            Point4::select(self.hyper, self.at_hyper(t), point)
+        } else {
+            point
+        }
     }
 
     /// `Flow::shift`: the point `h` after `pt` by series, and the lanes where every rate × |h|
@@ -175,7 +217,9 @@ impl<L: Lane> Flow4<L> {
         let v = L::splat;
         let rate = self.r.abs().max(self.sigma.abs()).max(self.omega);
         let fits = (rate * h.abs()).le(v(SMALL));
-        let (cos, sinc) = cos_sinc(self.omega * h);
+        // (ωh)², or −(νh)² where the pair is real: cos and sinc become cosh and sinhc
+        let wh = self.omega * h;
+        let (cos, sinc) = cos_sinc_sq(self.hyper.select(-(wh * wh), wh * wh));
         let (s_h, decay) = (h * sinc, exp_small(-self.sigma * h));
         let ec = pt.ec * cos - self.omega2 * pt.es * s_h;
         let es = pt.es * cos + pt.ec * s_h;
@@ -208,6 +252,11 @@ impl<L: Lane> Flow4<L> {
         let one = v(1.0);
         let t = pt.t;
         let (cm, sm) = (pt.decay, pt.decay * t.min(one / self.omega));
+        // a real pair: e^{−στ} cosh ντ, and the terms of sinh's difference over ν (`hyper.rs`)
+        let (cm, sm) = (
+            self.hyper.select(pt.ec.abs(), cm),
+            self.hyper.select(pt.ec.abs() / self.omega, sm),
+        );
         let real = pt.real * (one + self.r.abs() * t);
         let grow = one + (self.sigma.abs() + self.omega2.abs().sqrt()) * t;
         let (cm, sm) = (cm * grow, sm * grow);
@@ -240,9 +289,11 @@ impl<L: Lane> Flow4<L> {
     /// real mode's decay takes Householder's steps to the root in two to four (the scalar
     /// path brackets it) — and τ_f's the pair's first zero of z̄ after the phase 0, as the
     /// scalar path's `separation_guess(flow, 0)`; the third value is ω√(P² + Q²), the bound
-    /// on the pair part's slope that [`Flow4::falls_once`] takes.
+    /// on the pair part's slope that [`Flow4::falls_once`] takes. Where the pair is real τ_m's
+    /// guess is τ = 0 too and τ_f's `Flow4::hyper_guess`'s; the fourth value is the lanes
+    /// whose guesses stand (all but real pairs without a zero of z̄'s pair part).
     #[inline(always)]
-    fn guesses(&self) -> ([Point4<L>; 2], L, L) {
+    fn guesses(&self) -> ([Point4<L>; 2], L, L, L) {
         let v = L::splat;
         let (one, zero) = (v(1.0), v(0.0));
         let w = self.omega;
@@ -268,7 +319,14 @@ impl<L: Lane> Flow4<L> {
         };
         let end = self.at_phase((theta + k * v(PI)) / w, dw * norm_f, a * norm_f);
         let peak = Point4::select(pos, peak, start);
-        ([peak, end], pos, w * norm_m)
+        let (peak, end, fine) = if self.hyper.any() {
+            let (end_h, fine) = self.hyper_guess();
+            let peak = Point4::select(self.hyper, start, peak);
+            (peak, Point4::select(self.hyper, end_h, end), fine)
+        } else {
+            (peak, end, v(0.0).eq(zero))
+        };
+        ([peak, end], pos, w * norm_m, fine)
     }
 
     /// Where P ≤ 0, the lanes whose root τ* of z̄' (refined from 0, last evaluated at `pt`)
@@ -363,7 +421,9 @@ fn refine_both<L: Lane>(
     let quarter = v(FRAC_PI_2) / flow.omega;
     let near = |i: usize| (roots[i].t - guesses[i].t).le(quarter);
     let first = pos.select(near(0), flow.falls_once(roots[0].t, &roots[0].point, slope));
-    let ok = found[0] & found[1] & first & near(1) & roots[1].t.gt(roots[0].t);
+    // a real pair: z̄ has one zero after 0 and z̄' one before it (`hyper.rs`), no lobe to keep
+    let (first, near_f) = (flow.hyper | first, flow.hyper | near(1));
+    let ok = found[0] & found[1] & first & near_f & roots[1].t.gt(roots[0].t);
     (roots, ok)
 }
 
@@ -396,8 +456,8 @@ pub fn kernel<L: Lane<Array = [f64; N]>, const N: usize>(
     // a lane left out computes a harmless ball (λ = 1, ζ = 0.1), its answer then dropped
     let (l, z) = (valid.select(l, v(1.0)), valid.select(z, v(0.1)));
     let (flow, ok) = Flow4::new(l, z);
-    let (guesses, pos, slope) = flow.guesses();
-    let live = valid & ok;
+    let (guesses, pos, slope, fine) = flow.guesses();
+    let live = valid & ok & fine;
     let (roots, settled) = refine_both(&flow, guesses, live, (pos, slope));
     let [peak, end] = roots;
     let z_m = taylor(&peak.jet[0..5], peak.t - peak.point.t);

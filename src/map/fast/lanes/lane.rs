@@ -94,6 +94,9 @@ pub trait Lane:
     }
     /// (sin x, cos x), `wide`'s (the same function in every lane type: `wide_sin_cos`).
     fn sin_cos(self) -> (Self, Self);
+    /// self·m + a rounded once (a fused multiply-add, IEEE 754's fusedMultiplyAdd): the same
+    /// bits in every lane type.
+    fn mul_add(self, m: Self, a: Self) -> Self;
 }
 
 /// (sin x, cos x) of four lanes by `wide`'s `f64x4::sin_cos`, whatever register they are in.
@@ -105,6 +108,19 @@ pub fn wide_sin_cos<L: Lane<Array = [f64; LANES]>>(x: L) -> (L, L) {
 
 impl Lane for f64x4 {
     type Array = [f64; LANES];
+    /// `f64::mul_add` lane by lane: correctly rounded everywhere (libm's `fma` where the
+    /// target has no FMA instruction), where `wide`'s `f64x4::mul_add` multiplies and adds
+    /// apart without FMA at compile time (two roundings: not the AVX kernel's bits).
+    #[inline(always)]
+    fn mul_add(self, m: Self, a: Self) -> Self {
+        let (x, y, z) = (self.to_array(), m.to_array(), a.to_array());
+        f64x4::new([
+            x[0].mul_add(y[0], z[0]),
+            x[1].mul_add(y[1], z[1]),
+            x[2].mul_add(y[2], z[2]),
+            x[3].mul_add(y[3], z[3]),
+        ])
+    }
     #[inline(always)]
     fn splat(x: f64) -> Self {
         f64x4::splat(x)

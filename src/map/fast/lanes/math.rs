@@ -2,7 +2,7 @@
 //! alone: the same bits in every lane type, and in the AVX2 kernel one ymm register through
 //! them (no call out to `wide`'s SSE2 `exp` and `atan2`: `avx.rs` says why by hand). Both
 //! stay within 2 ulp of libm's over the kernel's arguments (`exp_is_libms_to_two_ulp`,
-//! `atan2_is_libms_to_two_ulp`); the series of the short steps (`exp_small`, `cos_sinc`) are
+//! `atan2_is_libms_to_two_ulp`); the series of the short steps (`exp_small`, `cos_sinc_sq`) are
 //! flow.rs's, term for term.
 
 use super::lane::Lane;
@@ -29,12 +29,13 @@ const EXP_SERIES: [f64; 14] = series(1, 0, false);
 const EXP_SMALL_SERIES: [f64; 11] = series(1, 0, false);
 /// (eˣ − 1)/x to x⁵, [`exp_m1_small`]'s.
 const EXP_M1_SMALL_SERIES: [f64; 6] = series(1, 1, false);
-/// cos x and sin(x)/x to x¹⁰, in x², [`cos_sinc`]'s.
+/// cos x and sin(x)/x to x¹⁰, in x², [`cos_sinc_sq`]'s.
 const COS_SERIES: [f64; 6] = series(2, 0, true);
 const SINC_SERIES: [f64; 6] = series(2, 1, true);
 
 /// Σ c[i] x^{n−1−i} by Horner's rule, `c` highest degree first: c[0] x + c[1], times x plus
-/// c[2], … A `while` loop over a constant array rather than an iterator's `fold`, which the
+/// c[2], …, each step one fused multiply-add ([`Lane::mul_add`]: half the instructions of a
+/// product and a sum, one rounding, and the chain's latency a step shorter). A `while` loop over a constant array rather than an iterator's `fold`, which the
 /// compiler did not inline into the AVX2 kernel (a call, and the lane operations inside it
 /// calls too: 22 % of a Monte Carlo sample's instructions by callgrind); this one unrolls.
 #[inline(always)]
@@ -42,7 +43,7 @@ fn horner<L: Lane>(x: L, c: &[f64]) -> L {
     let mut sum = L::splat(c[0]);
     let mut i = 1;
     while i < c.len() {
-        sum = sum * x + L::splat(c[i]);
+        sum = sum.mul_add(x, L::splat(c[i]));
         i += 1;
     }
     sum
@@ -196,11 +197,40 @@ pub fn exp_m1_small<L: Lane>(x: L) -> L {
     x * horner(x, &EXP_M1_SMALL_SERIES)
 }
 
-/// `flow::cos_sinc`: (cos x, sin(x)/x) to x¹⁰, good where |x| ≤ `SMALL` (flow.rs).
+/// `flow::cos_sinc` from x²: (cos x, sin(x)/x) to x¹⁰, good where |x| ≤ `SMALL` (flow.rs),
+/// the same bits as the series of x·x. x² may be negative: x² = −y² gives (cosh y,
+/// sinh(y)/y), the same series with every term positive (a real pair's short step,
+/// `kernel.rs`), good where |y| ≤ `SMALL` as well (`cos_sinc_sq_is_cosh_and_sinhc_too`).
 #[inline(always)]
-pub fn cos_sinc<L: Lane>(x: L) -> (L, L) {
-    let x2 = x * x;
+pub fn cos_sinc_sq<L: Lane>(x2: L) -> (L, L) {
     (horner(x2, &COS_SERIES), horner(x2, &SINC_SERIES))
+}
+
+/// ln x for positive normal x, to 1.1e-8 absolute — a start for Householder's steps
+/// (`hyper.rs`), not a value kept: x = 2ᵉ·d with d ∈ [0.5, 1) (as [`cbrt`] splits it), ln d =
+/// 2 artanh s, s = (d − 1)/(d + 1) ∈ [−1/3, 0), to s¹³ (the terms left out, at most
+/// 2|s|¹⁵/15 over 1 − s², < 1.1e-8).
+#[inline(always)]
+pub fn ln_guess<L: Lane>(x: L) -> L {
+    let v = L::splat;
+    let one = v(1.0);
+    let two52 = v(4_503_599_627_370_496.0);
+    let e = ((x.shr52() | two52) - v(4_503_599_627_370_496.0 + 1023.0)) + one;
+    let d = (x & v(f64::from_bits(0x000F_FFFF_FFFF_FFFF))) | v(0.5);
+    let s = (d - one) / (d + one);
+    let atanh = horner(
+        s * s,
+        &[
+            1.0 / 13.0,
+            1.0 / 11.0,
+            1.0 / 9.0,
+            1.0 / 7.0,
+            1.0 / 5.0,
+            1.0 / 3.0,
+            1.0,
+        ],
+    );
+    e * v(std::f64::consts::LN_2) + v(2.0) * s * atanh
 }
 
 #[cfg(test)]

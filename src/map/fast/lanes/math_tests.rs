@@ -2,7 +2,7 @@
 //! every lane type.
 
 use super::super::lane::{LANES, Lane};
-use super::{atan2, cbrt, exp, exp_m1_small};
+use super::{atan2, cbrt, cos_sinc_sq, exp, exp_m1_small, ln_guess};
 use wide::f64x4;
 
 /// splitmix64 as a unit stream: the same points on every run.
@@ -252,4 +252,51 @@ fn exp_m1_small_is_libms_to_two_ulp() {
         .map(|(&x, &g)| ulps(g, x.exp_m1()))
         .fold(0.0, f64::max);
     assert!(worst <= 2.0, "{worst} ulp");
+}
+
+/// `ln_guess` is ln x to 2e-8 (absolute; its series leaves 1.1e-8, and ln x is at most 710)
+/// over x from 1e-300 to 1e300 and around 1 (where its fraction d is near 0.5 or 1): a start
+/// for Householder's steps, held to the error its series leaves.
+#[test]
+fn ln_guess_is_ln_to_2e_8() {
+    let mut xs: Vec<f64> = units(33, 50_000)
+        .iter()
+        .map(|u| 10f64.powf(-300.0 + 600.0 * u))
+        .collect();
+    xs.extend(units(34, 10_000).iter().map(|u| 0.5 + 1.5 * u));
+    xs.extend([1.0, 2.0, 0.5, 1.0 + f64::EPSILON, 1.0 - f64::EPSILON / 2.0]);
+    let got = in_lanes(&xs, ln_guess);
+    for (&x, &g) in xs.iter().zip(&got) {
+        assert!((g - x.ln()).abs() <= 2e-8, "ln {x}: {g} vs {}", x.ln());
+    }
+}
+
+/// `cos_sinc_sq` of x² ≥ 0 is (cos x, sin(x)/x) and of −y² (cosh y, sinh(y)/y), each within
+/// 2 ulp of libm's over |x|, |y| ≤ 1/16 (`flow::SMALL`, the short steps' reach).
+#[test]
+fn cos_sinc_sq_is_cosh_and_sinhc_too() {
+    let xs: Vec<f64> = units(35, 20_000).iter().map(|u| u / 16.0).collect();
+    let sq: Vec<f64> = xs.iter().map(|x| x * x).collect();
+    let neg: Vec<f64> = sq.iter().map(|s| -s).collect();
+    let first = |x2: f64x4| cos_sinc_sq(x2).0;
+    let second = |x2: f64x4| cos_sinc_sq(x2).1;
+    let sinc = |x: f64| if x == 0.0 { 1.0 } else { x.sin() / x };
+    let sinhc = |x: f64| if x == 0.0 { 1.0 } else { x.sinh() / x };
+    let want: [(Vec<f64>, Vec<f64>); 4] = [
+        (in_lanes(&sq, first), xs.iter().map(|x| x.cos()).collect()),
+        (in_lanes(&sq, second), xs.iter().map(|&x| sinc(x)).collect()),
+        (in_lanes(&neg, first), xs.iter().map(|x| x.cosh()).collect()),
+        (
+            in_lanes(&neg, second),
+            xs.iter().map(|&x| sinhc(x)).collect(),
+        ),
+    ];
+    for (k, (got, want)) in want.iter().enumerate() {
+        let worst = got
+            .iter()
+            .zip(want)
+            .map(|(&g, &w)| ulps(g, w))
+            .fold(0.0, f64::max);
+        assert!(worst <= 2.0, "function {k}: {worst} ulp");
+    }
 }

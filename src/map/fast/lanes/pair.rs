@@ -124,6 +124,10 @@ impl<L: Lane<Array = [f64; WIDTH / 2]>> Lane for Pair<L> {
         self.0.bitmask() | self.1.bitmask() << (WIDTH / 2)
     }
     #[inline(always)]
+    fn mul_add(self, m: Pair<L>, a: Pair<L>) -> Pair<L> {
+        Pair(self.0.mul_add(m.0, a.0), self.1.mul_add(m.1, a.1))
+    }
+    #[inline(always)]
     fn sin_cos(self) -> (Pair<L>, Pair<L>) {
         let ((s0, c0), (s1, c1)) = (self.0.sin_cos(), self.1.sin_cos());
         (Pair(s0, s1), Pair(c0, c1))
