@@ -71,7 +71,9 @@ impl<L: Lane> Unload<L> {
         let v = L::splat;
         let two_zeta = v(2.0) * zeta;
         let (a2, a0) = (two_zeta * (v(1.0) + lambda), two_zeta * lambda);
-        let (r, p1, p0, mut ok) = lone_real_root(a2, a0);
+        // three real roots: the pair does not oscillate, the lane goes back to the scalar path
+        let (r, p1, p0, mut ok, three) = lone_real_root(a2, a0);
+        ok &= !three;
         let sigma = v(0.5) * p1;
         let omega2 = p0 - sigma * sigma;
         let gap = (r + sigma) * (r + sigma) + omega2;
@@ -102,6 +104,7 @@ impl<L: Lane> Unload<L> {
             p,
             q,
             jet,
+            hyper: three & !three,
         };
         (Unload { flow, sb, gap, p0 }, ok)
     }
