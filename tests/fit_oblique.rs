@@ -180,3 +180,48 @@ fn k_ts_interval_ends_where_the_profiled_cost_rises_by_t_squared() {
         );
     }
 }
+
+/// Where the profile's refits would pass the work limit (216 Hertz-law rows without spins:
+/// the 7 starts fit within it, with the profile's 32 refits counted as starts they do not)
+/// the intervals are the Jacobian's, exp(θ ± t s_θ), and a warning
+/// says so.
+#[test]
+fn intervals_past_the_work_limit_are_the_jacobians_and_say_so() {
+    let p = Ball::from_preset("tennis").unwrap().params;
+    let truth = (0.45, 13_000.0, 0.6105);
+    let mut rng = Rng::new(5);
+    let cases: Vec<_> = (0..8).flat_map(|_| mixed()).collect();
+    let rows: Vec<ObliqueRow> = cases
+        .iter()
+        .enumerate()
+        .map(|(i, &(v0, angle, spin))| {
+            let o = Oblique::new(angle, spin, truth.0, truth.1, truth.2, R).unwrap();
+            let r = oblique::solve_law(&p, ContactLaw::Hertz, v0, &o, 0).unwrap();
+            ObliqueRow {
+                v0,
+                angle_deg: angle,
+                spin_in: spin,
+                vx_out: r.vx_out + 0.03 * rng.normal(),
+                vy_out: r.vy_out,
+                spin_out: None,
+                line: i + 2,
+            }
+        })
+        .collect();
+    let mut s = start(0.5 * truth.1, truth.2);
+    s.law = ContactLaw::Hertz;
+    let f = fit_oblique(&s, &rows, &Unwatched).unwrap();
+    assert!(
+        f.warnings
+            .iter()
+            .any(|w| w.contains("intervals are the Jacobian's")),
+        "{f:?}"
+    );
+    let t = bouncelab::analysis::fit::stats::t975(rows.len() - 2);
+    for e in &f.fitted {
+        let half = t * e.std_error / e.value;
+        let wald = [(e.value.ln() - half).exp(), (e.value.ln() + half).exp()];
+        assert!((e.ci95[0] / wald[0] - 1.0).abs() < 1e-12, "{e:?}");
+        assert!((e.ci95[1] / wald[1] - 1.0).abs() < 1e-12, "{e:?}");
+    }
+}
