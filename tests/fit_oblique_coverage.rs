@@ -56,6 +56,8 @@ fn bounces(
 struct Tally {
     sets: usize,
     covered: [usize; 3],
+    /// Covered by the Jacobian's interval exp(θ ± t s_θ) (the fit's before the profile's).
+    covered_by_jacobian: [usize; 3],
     z2: [f64; 3],
     worst: [f64; 3],
     failed: usize,
@@ -69,6 +71,8 @@ impl Tally {
             self.z2[j] += z * z;
             self.worst[j] = self.worst[j].max(z.abs());
             self.covered[j] += usize::from(e.ci95[0] <= truth[j] && truth[j] <= e.ci95[1]);
+            let t = bouncelab::analysis::fit::stats::t975(f.points - f.fitted.len());
+            self.covered_by_jacobian[j] += usize::from(z.abs() <= t);
         }
     }
     fn mean_z2(&self) -> [f64; 3] {
@@ -109,10 +113,12 @@ const SPINS: Noise = Noise {
 
 fn report(t: &Tally, what: &str) {
     eprintln!(
-        "{what}: {} sets ({} without an answer), covered {:?}, mean z² {:.2?}, worst |z| {:.1?}",
+        "{what}: {} sets ({} without an answer), covered {:?} (by the Jacobian's intervals {:?}), \
+         mean z² {:.2?}, worst |z| {:.1?}",
         t.sets,
         t.failed,
         t.covered,
+        t.covered_by_jacobian,
         t.mean_z2(),
         t.worst
     );

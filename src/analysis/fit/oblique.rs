@@ -7,7 +7,8 @@
 //! (`oblique::NormalAt`) and only the tangential motion is run at each evaluation.
 
 use super::lm::{self, Residuals};
-use super::stats::{CONDITION_MAX, uncertainty};
+use super::profile;
+use super::stats::{CONDITION_MAX, Uncertainty, uncertainty};
 use super::{Estimate, MultiFitError, verdict};
 use crate::analysis::work::{self, Watch};
 use crate::measured::ObliqueRow;
@@ -196,9 +197,18 @@ pub fn fit_oblique(
     let starts = starting_points(&x0[..vars]);
     let run = (rows.len() as u64) * OBLIQUE_COST * work::cost(start.law).min(4);
     let refits = if spins { REFINED } else { 0 };
-    let iterations = work::fit_iterations(run, vars, starts.len() + refits, start.law, || {
-        format!("an oblique fit of {vars} parameters to {} rows", rows.len())
-    })?;
+    let what = || format!("an oblique fit of {vars} parameters to {} rows", rows.len());
+    // the intervals' profile fits count as starts; where they would pass the limit, the
+    // intervals are the Jacobian's, and a warning says so
+    let fits = starts.len() + refits;
+    let profiles = fits + 2 * vars * profile::FITS_PER_SIDE;
+    let (iterations, profiled) = match work::fit_iterations(run, vars, profiles, start.law, what) {
+        Ok(iterations) => (iterations, true),
+        Err(_) => (
+            work::fit_iterations(run, vars, fits, start.law, what)?,
+            false,
+        ),
+    };
     let (lo, hi) = bounds(&x0[..vars]);
     let opts = lm::Options {
         max_iterations: iterations,
@@ -231,7 +241,13 @@ pub fn fit_oblique(
         }
     }
     best.iterations = iterations;
-    finish(&p, best, &lo, &hi)
+    let search = Search {
+        lo: &lo,
+        hi: &hi,
+        opts,
+        profiled,
+    };
+    finish(&p, best, &search)
 }
 
 /// The largest apparent friction |Δv_x|/(v_y,in + v_y,out) of the rows: a row that slid
@@ -342,13 +358,60 @@ fn rms_pair(pred: &[(f64, f64)], rows: &[ObliqueRow]) -> (f64, f64) {
     (vx, spin)
 }
 
-/// Estimates, intervals and the verdict at the minimum.
-fn finish(
+/// Where a fit searched and how its intervals are made.
+struct Search<'a> {
+    lo: &'a [f64],
+    hi: &'a [f64],
+    opts: lm::Options,
+    /// The intervals from the profile ([`profile::interval`]); else the Jacobian's.
+    profiled: bool,
+}
+
+/// The 95 % intervals of ln μ, ln K_t (and ln κ) at `sol`: the profile's where the work allows
+/// and it answers, the Jacobian's θ ± t s_θ elsewhere (a warning in `warnings`); NaN where no
+/// degree of freedom is left or the data do not pin it.
+fn intervals(
     p: &Problem,
-    sol: lm::Solution,
-    lo: &[f64],
-    hi: &[f64],
-) -> Result<ObliqueFit, MultiFitError> {
+    sol: &lm::Solution,
+    u: &Uncertainty,
+    b: &Search,
+    warnings: &mut Vec<String>,
+) -> Result<Vec<[f64; 2]>, MultiFitError> {
+    let dof = sol.residuals.len().saturating_sub(sol.x.len());
+    if !b.profiled {
+        warnings.push(
+            "the 95 % intervals are the Jacobian's (exp(θ ± t s_θ)): profiling them would pass \
+             the work limit, and where the model bends in K_t they are too narrow"
+                .into(),
+        );
+    }
+    let mut ends = Vec::new();
+    for (j, (&theta, name)) in sol.x.iter().zip(NAMES).enumerate() {
+        let s = u.covariance[(j, j)].sqrt();
+        if !(s.is_finite() && dof > 0) {
+            ends.push([f64::NAN; 2]);
+            continue;
+        }
+        let wald = [theta - u.t975 * s, theta + u.t975 * s];
+        let profiled = b
+            .profiled
+            .then(|| profile::interval(p, sol, j, &u.covariance, u.t975, [b.lo, b.hi], b.opts))
+            .flatten();
+        if p.stopped() {
+            return Err(MultiFitError::Interrupted);
+        }
+        if b.profiled && profiled.is_none() {
+            warnings.push(format!(
+                "{name}'s profile had no answer: its 95 % interval is the Jacobian's"
+            ));
+        }
+        ends.push(profiled.unwrap_or(wald).map(f64::exp));
+    }
+    Ok(ends)
+}
+
+/// Estimates, intervals and the verdict at the minimum.
+fn finish(p: &Problem, sol: lm::Solution, b: &Search) -> Result<ObliqueFit, MultiFitError> {
     let finite = sol
         .residuals
         .iter()
@@ -360,26 +423,19 @@ fn finish(
     let u = uncertainty(&sol.jacobian, &sol.residuals);
     let vars = sol.x.len();
     let dof = sol.residuals.len().saturating_sub(vars);
+    let mut warnings = Vec::new();
+    let ci95 = intervals(p, &sol, &u, b, &mut warnings)?;
     let fitted: Vec<Estimate> = (0..vars)
-        .map(|j| {
-            // symmetric in ln p, as every fitted parameter (`multi::finish`)
-            let (theta, s) = (sol.x[j], u.covariance[(j, j)].sqrt());
-            let ci95 = if s.is_finite() && dof > 0 {
-                [(theta - u.t975 * s).exp(), (theta + u.t975 * s).exp()]
-            } else {
-                [f64::NAN, f64::NAN]
-            };
-            Estimate {
-                name: NAMES[j],
-                unit: ["", "N/m", ""][j],
-                value: theta.exp(),
-                std_error: theta.exp() * s,
-                ci95,
-            }
+        .map(|j| Estimate {
+            name: NAMES[j],
+            unit: ["", "N/m", ""][j],
+            value: sol.x[j].exp(),
+            std_error: sol.x[j].exp() * u.covariance[(j, j)].sqrt(),
+            ci95: ci95[j],
         })
         .collect();
     let on_bound: Vec<&'static str> = (0..vars)
-        .filter(|&j| verdict::on_bound(sol.x[j], lo[j], hi[j]))
+        .filter(|&j| verdict::on_bound(sol.x[j], b.lo[j], b.hi[j]))
         .map(|j| NAMES[j])
         .collect();
     let not_pinned: Vec<&'static str> = fitted
@@ -398,7 +454,6 @@ fn finish(
         };
         n.normal().cor * vy - q.vy_out
     }));
-    let mut warnings = Vec::new();
     if dof == 0 {
         warnings.push(
             "as many data as parameters: no residual is left to estimate the uncertainty".into(),

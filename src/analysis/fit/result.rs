@@ -34,8 +34,10 @@ pub struct Estimate {
     /// fitted as θ = ln p, by the delta method, p s_θ.
     pub std_error: f64,
     /// The 95 % interval: exp(θ ± t₀.₉₇₅ s_θ) for a model parameter (so it stays positive),
-    /// value ± t₀.₉₇₅ std_error for the offset and baseline; Student t at n − p degrees of
-    /// freedom; NaN when the data leave no degree of freedom or do not pin the value.
+    /// value ± t₀.₉₇₅ std_error for the offset and baseline; the oblique fit's the profile's
+    /// (`analysis::fit::profile`: exp of where τ(θ) = ±t₀.₉₇₅, ∞ where the data do not bound
+    /// it); Student t at n − p degrees of freedom; NaN when the data leave no degree of
+    /// freedom or do not pin the value.
     pub ci95: [f64; 2],
 }
 
