@@ -5,24 +5,14 @@
 //! 1e-12), and the lanes settle most of the plane themselves (else this test could not fail:
 //! every lane would be the scalar's).
 
+mod seeded;
+
 use bouncelab::map::fast::lanes::{
     LANES, WIDE, lanes_only, lanes_only_portable, lanes_only8, summaries, summary4,
 };
 use bouncelab::map::fast::{Summary, summary};
 use bouncelab::{ContactLaw, SolveOptions, simulate_normalized};
-
-/// splitmix64: a seeded stream of points, the same on every run.
-struct Stream(u64);
-
-impl Stream {
-    fn unit(&mut self) -> f64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        ((z ^ (z >> 31)) >> 11) as f64 / (1u64 << 53) as f64
-    }
-}
+use seeded::Seeded;
 
 fn close(a: &Summary, b: &Summary) -> bool {
     let rel = |x: f64, y: f64| (x - y).abs() <= 1e-12 * y.abs().max(1e-300);
@@ -100,12 +90,12 @@ fn lanes_agree_with_the_scalar_path_over_the_map() {
 /// negative, NaN and infinities among them (the scalar path's `None`s and its ζ = 0).
 #[test]
 fn lanes_agree_with_the_scalar_path_at_random_points() {
-    let mut s = Stream(2026);
+    let mut s = Seeded::new(2026);
     let mut points: Vec<(f64, f64)> = (0..40_000)
         .map(|_| {
             (
-                10f64.powf(-4.0 + 8.0 * s.unit()),
-                10f64.powf(-3.0 + 6.0 * s.unit()),
+                10f64.powf(-4.0 + 8.0 * s.uniform()),
+                10f64.powf(-3.0 + 6.0 * s.uniform()),
             )
         })
         .collect();
@@ -126,12 +116,12 @@ fn lanes_agree_with_the_scalar_path_at_random_points() {
 /// a point's answer does not depend on its neighbours or on where the groups fall.
 #[test]
 fn a_point_s_answer_does_not_depend_on_its_group() {
-    let mut s = Stream(7);
+    let mut s = Seeded::new(7);
     let points: Vec<(f64, f64)> = (0..23)
         .map(|_| {
             (
-                10f64.powf(-2.0 + 4.0 * s.unit()),
-                10f64.powf(-2.0 + 4.0 * s.unit()),
+                10f64.powf(-2.0 + 4.0 * s.uniform()),
+                10f64.powf(-2.0 + 4.0 * s.uniform()),
             )
         })
         .collect();
@@ -181,11 +171,11 @@ fn eight_lanes_are_two_fours_bit_for_bit() {
     let mut points: Vec<(f64, f64)> = (0..120)
         .flat_map(|i| (0..200).map(move |j| (log(i, 120), log(j, 200))))
         .collect();
-    let mut s = Stream(88);
+    let mut s = Seeded::new(88);
     points.extend((0..8_000).map(|_| {
         (
-            10f64.powf(-4.0 + 8.0 * s.unit()),
-            10f64.powf(-3.0 + 6.0 * s.unit()),
+            10f64.powf(-4.0 + 8.0 * s.uniform()),
+            10f64.powf(-3.0 + 6.0 * s.uniform()),
         )
     }));
     let odd = [
@@ -227,17 +217,17 @@ fn eight_lanes_are_two_fours_bit_for_bit() {
 /// z̄'(0) = 1, λ ≲ 0.24 and ζ ≈ 0.64–5, left of the band of three real roots), the lanes
 /// refine τ_m from the loading's start and keep it where z̄' falls only once before it
 /// (`Flow4::falls_once`, kernel.rs): 4 000 seeded points of that corner, each the scalar
-/// path's answer (its bracket search) to 1e-12, and most answered by the lanes themselves —
-/// before, the lanes handed every P ≤ 0 lane to the scalar path and answered 2 211 of these
-/// points (now 3 254; the rest mostly the band of three real roots).
+/// path's answer (its bracket search) to 1e-12, and most answered by the lanes themselves
+/// (3 860 of the `seeded` points; a kernel that hands every P ≤ 0 lane back answers about
+/// 55 %).
 #[test]
 fn lanes_settle_the_peak_where_the_pair_part_starts_negative() {
-    let mut s = Stream(30);
+    let mut s = Seeded::new(30);
     let points: Vec<(f64, f64)> = (0..4_000)
         .map(|_| {
             (
-                0.01 * 24f64.powf(s.unit()),
-                0.64 * (5.0f64 / 0.64).powf(s.unit()),
+                0.01 * 24f64.powf(s.uniform()),
+                0.64 * (5.0f64 / 0.64).powf(s.uniform()),
             )
         })
         .collect();
@@ -251,12 +241,12 @@ fn lanes_settle_the_peak_where_the_pair_part_starts_negative() {
 /// every lane with |rτ| < 1e-3 to the scalar path.
 #[test]
 fn lanes_settle_short_contacts_of_a_slow_real_mode() {
-    let mut s = Stream(31);
+    let mut s = Seeded::new(31);
     let points: Vec<(f64, f64)> = (0..2_000)
         .map(|_| {
             (
-                10f64.powf(-4.0 + 2.2 * s.unit()),
-                10f64.powf(-4.0 + 2.2 * s.unit()),
+                10f64.powf(-4.0 + 2.2 * s.uniform()),
+                10f64.powf(-4.0 + 2.2 * s.uniform()),
             )
         })
         .collect();
@@ -268,16 +258,17 @@ fn lanes_settle_short_contacts_of_a_slow_real_mode() {
 /// no oscillating pair), the lanes take the slowest root by Newton from 0, cosh and sinh for
 /// the pair of the other two, τ_m from 0 and τ_f from the slow modes' zero (`lanes/hyper.rs`):
 /// 3 000 seeded points of that band, each the scalar path's answer (its bracket search) to
-/// 1e-12 or, where the scalar path's bound refuses, the exact solver's (3 points), and 95 % of
-/// them answered by the lanes themselves (2 929) — main's kernel answered none of them.
+/// 1e-12 or, where the scalar path's bound refuses, the exact solver's (5 points), and 95 % of
+/// them answered by the lanes themselves (2 931 of the `seeded` points) — a kernel without
+/// the hyperbolic flow answers none of them.
 #[test]
 fn lanes_settle_the_band_of_three_real_roots() {
-    let mut s = Stream(32);
+    let mut s = Seeded::new(32);
     let mut points = Vec::new();
     while points.len() < 3_000 {
         let (lambda, zeta) = (
-            0.01 * 24f64.powf(s.unit()),
-            0.64 * (5.0f64 / 0.64).powf(s.unit()),
+            0.01 * 24f64.powf(s.uniform()),
+            0.64 * (5.0f64 / 0.64).powf(s.uniform()),
         );
         if three_real_roots(lambda, zeta) {
             points.push((lambda, zeta));
