@@ -218,8 +218,7 @@ fn eight_lanes_are_two_fours_bit_for_bit() {
 /// refine τ_m from the loading's start and keep it where z̄' falls only once before it
 /// (`Flow4::falls_once`, kernel.rs): 4 000 seeded points of that corner, each the scalar
 /// path's answer (its bracket search) to 1e-12, and most answered by the lanes themselves
-/// (3 860 of the `seeded` points; a kernel that hands every P ≤ 0 lane back answers about
-/// 55 %).
+/// (3 860 of the `seeded` points).
 #[test]
 fn lanes_settle_the_peak_where_the_pair_part_starts_negative() {
     let mut s = Seeded::new(30);
