@@ -407,8 +407,7 @@ mod tests {
     #[test]
     fn elastic_plastic_elements_count_by_yield() {
         let ep = ContactLaw::ElasticPlastic;
-        // below yield, the Hertz table's: 40 to an impact (main's count took 20, and refused
-        // 10⁶ of them)
+        // below yield, the Hertz table's: 40 to an impact, so 10⁶ of them within the limit
         assert!(check_elements(ep, Elements::at_least(1_000_000)).is_ok());
         let e = check_elements(ep, Elements::at_least(1_000_001)).unwrap_err();
         assert_eq!(e.work, 1_000_040);
