@@ -1,21 +1,24 @@
 //! μ, K_t (and κ when the outgoing spin is measured) fitted to measured oblique bounces
 //! (docs/oblique.md §9): the rows' outgoing v_x (and R ω_out) against the oblique model's, by
 //! the fits' own bounded Levenberg–Marquardt ([`super::lm`]) in the logarithms of the
-//! parameters, with the same intervals ([`super::stats`]) and the same verdict
-//! ([`super::verdict`]: converged, every parameter pinned, none on its bound) as the other
-//! fits. The normal impact of each row does not depend on μ, K_t or κ: it is solved once
+//! parameters, with intervals from the profile ([`super::profile`]; the Jacobian's,
+//! [`super::stats`], where the profile's refits would pass the work limit) and the same
+//! verdict ([`super::verdict`]: converged, every parameter pinned, none on its bound) as the
+//! other fits. The normal impact of each row does not depend on μ, K_t or κ: it is solved once
 //! (`oblique::NormalAt`) and only the tangential motion is run at each evaluation.
 
 use super::lm::{self, Residuals};
 use super::profile;
-use super::stats::{CONDITION_MAX, Uncertainty, uncertainty};
-use super::{Estimate, MultiFitError, verdict};
+use super::{Estimate, MultiFitError};
 use crate::analysis::work::{self, Watch};
 use crate::measured::ObliqueRow;
 use crate::model::contact::ContactLaw;
 use crate::model::params::ImpactParams;
 use crate::oblique::{NormalAt, Oblique};
 use std::cell::Cell;
+
+mod finish;
+use finish::{Search, finish, rms_pair};
 
 /// The ball and where the fit starts: μ, K_t and κ are the starting values (κ is held when
 /// the rows carry no outgoing spin).
@@ -341,164 +344,4 @@ fn distinct(found: &[lm::Solution], most: usize) -> Vec<Vec<f64>> {
         }
     }
     kept
-}
-
-fn rms(r: impl Iterator<Item = f64>) -> f64 {
-    let (sum, n) = r.fold((0.0, 0usize), |(s, n), v| (s + v * v, n + 1));
-    (sum / n.max(1) as f64).sqrt()
-}
-
-/// RMS of the v_x misses (m/s) and of the spin misses (rad/s).
-fn rms_pair(pred: &[(f64, f64)], rows: &[ObliqueRow]) -> (f64, f64) {
-    let vx = rms(pred.iter().zip(rows).map(|(p, q)| p.0 - q.vx_out));
-    let spin = rms(pred
-        .iter()
-        .zip(rows)
-        .filter_map(|(p, q)| q.spin_out.map(|s| p.1 - s)));
-    (vx, spin)
-}
-
-/// Where a fit searched and how its intervals are made.
-struct Search<'a> {
-    lo: &'a [f64],
-    hi: &'a [f64],
-    opts: lm::Options,
-    /// The intervals from the profile ([`profile::interval`]); else the Jacobian's.
-    profiled: bool,
-}
-
-/// The 95 % intervals of ln μ, ln K_t (and ln κ) at `sol`: the profile's where the work allows
-/// and it answers, the Jacobian's θ ± t s_θ elsewhere (a warning in `warnings`); NaN where no
-/// degree of freedom is left or the data do not pin it.
-fn intervals(
-    p: &Problem,
-    sol: &lm::Solution,
-    u: &Uncertainty,
-    b: &Search,
-    warnings: &mut Vec<String>,
-) -> Result<Vec<[f64; 2]>, MultiFitError> {
-    let dof = sol.residuals.len().saturating_sub(sol.x.len());
-    if !b.profiled {
-        warnings.push(
-            "the 95 % intervals are the Jacobian's (exp(θ ± t s_θ)): profiling them would pass \
-             the work limit, and where the model bends in K_t they are too narrow"
-                .into(),
-        );
-    }
-    let mut ends = Vec::new();
-    for (j, (&theta, name)) in sol.x.iter().zip(NAMES).enumerate() {
-        let s = u.covariance[(j, j)].sqrt();
-        if !(s.is_finite() && dof > 0) {
-            ends.push([f64::NAN; 2]);
-            continue;
-        }
-        let wald = [theta - u.t975 * s, theta + u.t975 * s];
-        let profiled = b
-            .profiled
-            .then(|| profile::interval(p, sol, j, &u.covariance, u.t975, [b.lo, b.hi], b.opts))
-            .flatten();
-        if p.stopped() {
-            return Err(MultiFitError::Interrupted);
-        }
-        if b.profiled && profiled.is_none() {
-            warnings.push(format!(
-                "{name}'s profile had no answer: its 95 % interval is the Jacobian's"
-            ));
-        }
-        ends.push(profiled.unwrap_or(wald).map(f64::exp));
-    }
-    Ok(ends)
-}
-
-/// Estimates, intervals and the verdict at the minimum.
-fn finish(p: &Problem, sol: lm::Solution, b: &Search) -> Result<ObliqueFit, MultiFitError> {
-    let finite = sol
-        .residuals
-        .iter()
-        .chain(sol.jacobian.iter())
-        .all(|v| v.is_finite());
-    if !finite {
-        return Err(MultiFitError::NonFinite);
-    }
-    let u = uncertainty(&sol.jacobian, &sol.residuals);
-    let vars = sol.x.len();
-    let dof = sol.residuals.len().saturating_sub(vars);
-    let mut warnings = Vec::new();
-    let ci95 = intervals(p, &sol, &u, b, &mut warnings)?;
-    let fitted: Vec<Estimate> = (0..vars)
-        .map(|j| Estimate {
-            name: NAMES[j],
-            unit: ["", "N/m", ""][j],
-            value: sol.x[j].exp(),
-            std_error: sol.x[j].exp() * u.covariance[(j, j)].sqrt(),
-            ci95: ci95[j],
-        })
-        .collect();
-    let on_bound: Vec<&'static str> = (0..vars)
-        .filter(|&j| verdict::on_bound(sol.x[j], b.lo[j], b.hi[j]))
-        .map(|j| NAMES[j])
-        .collect();
-    let not_pinned: Vec<&'static str> = fitted
-        .iter()
-        .filter(|e| !verdict::pinned(e, dof, on_bound.contains(&e.name)))
-        .map(|e| e.name)
-        .collect();
-    let pred = p.predict(&sol.x).ok_or(MultiFitError::NoAnswer)?;
-    let (rms_vx, rms_spin) = rms_pair(&pred, p.rows);
-    let rms_vy = rms(p.rows.iter().zip(&p.normals).map(|(q, n)| {
-        let theta = q.angle_deg.to_radians();
-        let vy = if q.angle_deg == 90.0 {
-            q.v0
-        } else {
-            q.v0 * theta.sin()
-        };
-        n.normal().cor * vy - q.vy_out
-    }));
-    if dof == 0 {
-        warnings.push(
-            "as many data as parameters: no residual is left to estimate the uncertainty".into(),
-        );
-    }
-    if u.condition > CONDITION_MAX {
-        warnings.push(format!(
-            "{} is not identifiable from these data: the fit cannot tell it from the other \
-             parameters (condition number {:.1e}); add rows that slide and rows that grip",
-            NAMES[u.weakest], u.condition
-        ));
-    }
-    if !sol.converged {
-        warnings.push(format!(
-            "the fit stopped after {} iterations without converging",
-            sol.iterations
-        ));
-    }
-    let vy_scale = rms(p.rows.iter().map(|q| q.vy_out));
-    if rms_vy > 0.05 * vy_scale {
-        warnings.push(format!(
-            "the normal model misses vy_out by {:.1} % RMS: μ and K_t cannot correct that; fit \
-             the normal ball first (fit --cor-table)",
-            100.0 * rms_vy / vy_scale
-        ));
-    }
-    let identified = sol.converged && not_pinned.is_empty();
-    let correlation = (0..vars)
-        .map(|i| (0..vars).map(|j| u.correlation[(i, j)]).collect())
-        .collect();
-    Ok(ObliqueFit {
-        inertia_factor: p.kappa.unwrap_or_else(|| sol.x[2].exp()),
-        fitted,
-        correlation,
-        rms_vx,
-        rms_spin: p.spins().then_some(rms_spin),
-        rms_vy,
-        model: pred,
-        points: sol.residuals.len(),
-        iterations: sol.iterations,
-        converged: sol.converged,
-        condition: u.condition,
-        warnings,
-        identified,
-        not_pinned,
-        on_bound,
-    })
 }
