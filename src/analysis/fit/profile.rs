@@ -53,7 +53,7 @@ impl<P: Residuals> Residuals for Held<'_, P> {
 }
 
 /// Most profile fits on each side of an interval: the first guess, a widening or two, and
-/// the regula falsi's steps to |τ| within [`TAU_TOL`] of t.
+/// the regula falsi's steps to |τ| within `TAU_TOL` of t.
 pub const FITS_PER_SIDE: usize = 8;
 
 /// How close |τ| must come to t at an end: 1 % of t, a hundredth of a standard error.
