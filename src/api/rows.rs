@@ -182,7 +182,8 @@ fn flattening_row(p: &ImpactParams, n: &Normalized) -> Option<ImpactRow> {
 
 /// The rows of balls `first … first + 3` (past `last`: `last` again, a copy the caller
 /// drops), each checked, the linear law's closed forms four at once
-/// ([`lanes::summary4`], to 1e-12 of [`crate::map::fast::summary`]).
+/// ([`lanes::summary4`], to 1e-12 of [`crate::map::fast::summary`], or of the exact solver
+/// where the scalar path's rounding bound refuses: tests/map_lanes.rs).
 fn four_rows<F>(
     first: usize,
     last: usize,

@@ -330,8 +330,8 @@ fn hertz_point(n: &Normalized) -> Option<(f64, f64, f64)> {
 }
 
 /// Whether the table holds the Hertz impact of `n` — where [`summary`] looks it up — without
-/// evaluating it (a lookup, some tens of ns): the work limit counts `bouncelab.impacts`'
-/// elements by it (`api::rows::off_table`).
+/// evaluating it (a lookup, some tens of ns): `api::first_pass` finds the same by evaluating,
+/// and tests/rows_columns.rs checks its counts against this.
 pub fn holds(n: &Normalized) -> bool {
     n.zp_bar > 0.0
         && hertz_point(n)
