@@ -59,12 +59,18 @@ pub const FITS_PER_SIDE: usize = 8;
 /// How close |τ| must come to t at an end: 1 % of t, a hundredth of a standard error.
 const TAU_TOL: f64 = 0.01;
 
+/// The smallest half-width, relative to |θ̂| (or 1), a profile resolves: below it the
+/// interval is the Jacobian's (`exactly_fitted_data_keep_the_jacobians_interval`).
+const RESOLVED: f64 = 1e-9;
+
 /// Where the profile of variable `j` crosses ±t, from the minimum `best` in the box
 /// `[lo, hi]`: `[low end, high end]` in the variable's own units (±∞ where the profile stays
-/// below t up to the box's side: the data do not bound it there). `cov` is the Jacobian's
+/// below t up to the box's side: the data do not bound it there; the Jacobian's θ̂ ± t s_θ
+/// where that half-width is below the rounding a profile can see, [`RESOLVED`]). `cov` is the
+/// Jacobian's
 /// covariance at `best` (its column j gives the first guesses: the Wald ends, the others
-/// moved along their regression on θ_j). `None` where a profile fit has no answer or the work
-/// was stopped.
+/// moved along their regression on θ_j). `None` where a profile fit has no answer, no end is
+/// found within 4⁷ half-widths, or the work was stopped.
 pub fn interval<P: Residuals>(
     problem: &P,
     best: &Solution,
@@ -81,6 +87,12 @@ pub fn interval<P: Residuals>(
     let sd = cov[(j, j)].sqrt();
     if !(s2 > 0.0 && sd.is_finite() && sd > 0.0 && t.is_finite()) {
         return None;
+    }
+    let theta = best.x[j];
+    if t * sd <= RESOLVED * theta.abs().max(1.0) {
+        // a half-width at the rounding of θ (data the model fits exactly): no profile can be
+        // told from the cost's rounding there, and the model is straight at that scale
+        return Some([theta - t * sd, theta + t * sd]);
     }
     let slope: Vec<f64> = (0..p).map(|k| cov[(k, j)] / cov[(j, j)]).collect();
     let mut ends = [0.0; 2];
@@ -138,12 +150,16 @@ fn crossing(
         if tb >= t {
             break tb;
         }
-        if b == bound || fits >= FITS_PER_SIDE {
-            // no end within the box, or none within 2⁷ of the Jacobian's half-width
+        if b == bound {
+            // the profile stays below t to the box's side: the data do not bound it there
             return Some(toward * f64::INFINITY);
         }
+        if fits >= FITS_PER_SIDE {
+            // no end within 4⁷ of the Jacobian's half-width, nor the box: no answer
+            return None;
+        }
         (a, ta) = (b, tb);
-        b = theta_hat + 2.0 * (b - theta_hat);
+        b = theta_hat + 4.0 * (b - theta_hat);
     };
     // Illinois' regula falsi on τ − t
     let (mut fa, mut fb) = (ta - t, tb - t);
@@ -276,6 +292,24 @@ mod tests {
             assert!((tau - t).abs() <= TAU_TOL * t, "{end}: τ {tau} vs t {t}");
         }
         assert!(ends[0] < best.x[0] && best.x[0] < ends[1]);
+    }
+
+    /// Data the model fits to rounding: the half-width is some ulps of θ̂, which no refit
+    /// can resolve; the Jacobian's interval, not "unbounded" (the profile's steps would all
+    /// round to θ̂ itself).
+    #[test]
+    fn exactly_fitted_data_keep_the_jacobians_interval() {
+        let x: Vec<f64> = (0..8).map(|i| 0.5 * f64::from(i)).collect();
+        let y = x.iter().map(|x| (-0.7 * x).exp()).collect();
+        let decay = Decay { x, y };
+        let (lo, hi) = ([-10.0], [10.0]);
+        let opts = Options::default();
+        let best = lm::minimize(&decay, &[-1.0], &lo, &hi, opts).unwrap();
+        let u = uncertainty(&best.jacobian, &best.residuals);
+        let (t, sd) = (t975(7), u.covariance[(0, 0)].sqrt());
+        assert!(t * sd < RESOLVED, "{sd}");
+        let ends = interval(&decay, &best, 0, &u.covariance, t, [&lo, &hi], opts).unwrap();
+        assert_eq!(ends, [best.x[0] - t * sd, best.x[0] + t * sd]);
     }
 
     #[test]
