@@ -66,7 +66,7 @@ const RESOLVED: f64 = 1e-9;
 /// Where the profile of variable `j` crosses ±t, from the minimum `best` in the box
 /// `[lo, hi]`: `[low end, high end]` in the variable's own units (±∞ where the profile stays
 /// below t up to the box's side: the data do not bound it there; the Jacobian's θ̂ ± t s_θ
-/// where that half-width is below the rounding a profile can see, [`RESOLVED`]). `cov` is the
+/// where that half-width is below the rounding a profile can see, `RESOLVED`). `cov` is the
 /// Jacobian's
 /// covariance at `best` (its column j gives the first guesses: the Wald ends, the others
 /// moved along their regression on θ_j). `None` where a profile fit has no answer, no end is
