@@ -142,21 +142,8 @@ pub(crate) fn impacts<'py>(
     {
         let mut f = numbers.each_ref().map(|a| a.readwrite());
         let mut b = rebound.readwrite();
-        let [
-            cor,
-            max_force,
-            contact_time,
-            max_indentation,
-            permanent_indentation,
-        ] = f.each_mut().map(|a| a.as_slice_mut());
-        let mut out = Columns {
-            cor: cor?,
-            max_force: max_force?,
-            contact_time: contact_time?,
-            max_indentation: max_indentation?,
-            permanent_indentation: permanent_indentation?,
-            rebound: b.as_slice_mut()?,
-        };
+        let [cor, force, time, z_m, z_f] = f.each_mut().map(|a| a.as_slice_mut());
+        let mut out = Columns::from_slices([cor?, force?, time?, z_m?, z_f?], b.as_slice_mut()?);
         let rest = py.detach(|| first_pass(law, &params, &mut out));
         work::check_elements(law, rest.elements()).map_err(|e| error(e.into()))?;
         py.detach(|| rest.answer(&params, &mut out))
@@ -170,14 +157,7 @@ pub(crate) fn impacts<'py>(
             })?;
     }
     let d = PyDict::new(py);
-    let names = [
-        "cor",
-        "max_force",
-        "contact_time",
-        "max_indentation",
-        "permanent_indentation",
-    ];
-    for (name, a) in names.into_iter().zip(numbers) {
+    for (name, a) in Columns::NUMBERS.into_iter().zip(numbers) {
         d.set_item(name, a.call_method1("reshape", (&shape,))?)?;
     }
     d.set_item("rebound", rebound.call_method1("reshape", (&shape,))?)?;

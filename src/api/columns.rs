@@ -252,3 +252,36 @@ where
     }
     part
 }
+
+impl<'a> Columns<'a> {
+    /// The answer's names of the five number columns, in the order [`Columns::from_slices`]
+    /// takes them (the keys of `bouncelab.impacts`' dict, with `rebound`).
+    pub const NUMBERS: [&'static str; 5] = [
+        "cor",
+        "max_force",
+        "contact_time",
+        "max_indentation",
+        "permanent_indentation",
+    ];
+
+    /// The columns over the five number slices in the order of [`Columns::NUMBERS`] and the
+    /// rebound slice: the one place the six are put together (Python's `impacts` and
+    /// tests/rows_columns.rs each built them by hand).
+    pub fn from_slices(numbers: [&'a mut [f64]; 5], rebound: &'a mut [bool]) -> Columns<'a> {
+        let [
+            cor,
+            max_force,
+            contact_time,
+            max_indentation,
+            permanent_indentation,
+        ] = numbers;
+        Columns {
+            cor,
+            max_force,
+            contact_time,
+            max_indentation,
+            permanent_indentation,
+            rebound,
+        }
+    }
+}
