@@ -11,8 +11,15 @@
 //! (`watch.rs`): the kernel queues an event on any change to the folder or its path before the
 //! change's own system call returns, so one non-blocking `read` of the watch — no event —
 //! says the stamp has not moved, and on any event the stamp is taken again.
+//!
+//! Beside the catalog it keeps the balls built from it (`PresetBalls`): a preset's ball under
+//! a parameter set and a law is built and checked once per catalog, and dropped with it when
+//! the folder changes (python/tests/test_catalog_cache.py) — building it anew at each call,
+//! its strings and tables cloned, cost `run(preset=…)` a sixth of its time (BENCHMARKS.md).
 
 use bouncelab::catalog::{Catalog, CatalogError};
+use bouncelab::preset::ParamSource;
+use bouncelab::{Ball, BallError, ContactLaw};
 use std::ffi::OsString;
 use std::path::{Path, PathBuf};
 use std::sync::{Arc, Mutex};
@@ -56,12 +63,24 @@ type Stamp = (
     Vec<(std::ffi::OsString, u64, Option<SystemTime>)>,
 );
 
-/// The catalog, the stamp it was loaded at, and the watch armed before that stamp was taken.
+/// The catalog, the stamp it was loaded at, the watch armed before that stamp was taken, and
+/// the balls built from the catalog.
 struct Cached {
     stamp: Stamp,
     catalog: Arc<Catalog>,
     watch: Option<Watch>,
+    balls: PresetBalls,
 }
+
+/// A preset's name, parameter set and law (`None`: the preset's own), at the preset's speed.
+type BallKey = (String, Option<ParamSource>, Option<ContactLaw>);
+
+/// The balls built from one catalog, by what they were built with. At most one for each of
+/// its presets, parameter sets (the preset's, adopted, materials) and laws (the preset's and
+/// three): a few hundred at the most, so a scan (a name compared first) rather than a hash
+/// of the name at each call.
+#[derive(Default)]
+struct PresetBalls(Vec<(BallKey, Arc<Ball>)>);
 
 static CACHE: Mutex<Option<Cached>> = Mutex::new(None);
 
@@ -91,7 +110,38 @@ fn user_presets_dir() -> Option<PathBuf> {
 
 /// The catalog of the user's presets folder, as the command line sees it (`catalog`).
 pub(crate) fn user_catalog() -> Result<Arc<Catalog>, CatalogError> {
-    catalog(user_presets_dir().as_deref())
+    let mut cache = CACHE.lock().unwrap_or_else(|e| e.into_inner());
+    Ok(fresh(&mut cache, user_presets_dir().as_deref())?
+        .catalog
+        .clone())
+}
+
+/// The ball of the user's catalog's preset `name` with the parameter set and law given
+/// (`None` keeps the preset's), at the preset's speed: `Ball::from_entry(entry, source, law,
+/// None)`, built and checked once while the catalog holds. An unknown name is the catalog's
+/// error, and `choose` (the caller's parse of its set and law) runs after the name is found,
+/// as the command line checks them; the library's errors are the caller's by `error`, and
+/// none is kept.
+pub(crate) fn preset_ball<E>(
+    name: &str,
+    choose: impl FnOnce() -> Result<(Option<ParamSource>, Option<ContactLaw>), E>,
+    error: fn(BallError) -> E,
+) -> Result<Arc<Ball>, E> {
+    let catalog_error = |e| error(BallError::Catalog(e));
+    let mut cache = CACHE.lock().unwrap_or_else(|e| e.into_inner());
+    let cached = fresh(&mut cache, user_presets_dir().as_deref()).map_err(catalog_error)?;
+    let entry = cached.catalog.get(name).map_err(catalog_error)?;
+    let (source, law) = choose()?;
+    let balls = &mut cached.balls.0;
+    let kept = balls
+        .iter()
+        .find(|((n, s, l), _)| n == name && *s == source && *l == law);
+    if let Some((_, ball)) = kept {
+        return Ok(ball.clone());
+    }
+    let ball = Arc::new(Ball::from_entry(entry, source, law, None).map_err(error)?);
+    balls.push(((name.to_string(), source, law), ball.clone()));
+    Ok(ball)
 }
 
 /// The folder's entries as they stand (none when it does not exist or cannot be read: the
@@ -118,40 +168,45 @@ fn stamp(dir: Option<&Path>) -> Stamp {
     (dir.map(Path::to_path_buf), which, files)
 }
 
-/// The catalog of `dir` (the user's presets folder), from the cache while the folder is
+/// The cache of `dir` (the user's presets folder), its catalog kept while the folder is
 /// unchanged: no news from the watch, or a stamp that has not moved after news on the path
 /// alone (or at each call where no watch could be armed); news from the folder itself, and it
 /// is read again. Errors are not kept (the next call reads again).
-fn catalog(dir: Option<&Path>) -> Result<Arc<Catalog>, CatalogError> {
-    let mut cache = CACHE.lock().unwrap_or_else(|e| e.into_inner());
+fn fresh<'c>(
+    cache: &'c mut Option<Cached>,
+    dir: Option<&Path>,
+) -> Result<&'c mut Cached, CatalogError> {
     if let Some(c) = cache.as_mut()
         && c.stamp.0.as_deref() == dir
     {
-        match c.watch.as_ref().map(Watch::news) {
-            Some(News::None) => return Ok(c.catalog.clone()),
+        let holds = match c.watch.as_ref().map(Watch::news) {
+            Some(News::None) => true,
             Some(News::Path) => {
                 // armed before the stamp is taken: a change after it is news at the next call
                 let watch = Watch::arm(dir);
-                if stamp(dir) == c.stamp {
+                let same = stamp(dir) == c.stamp;
+                if same {
                     c.watch = watch;
-                    return Ok(c.catalog.clone());
                 }
+                same
             }
-            Some(News::Folder) => {}
+            Some(News::Folder) => false,
             // no watch could be armed (a link, a remote file system…): the stamp at each call,
             // a watch tried again once it moves
-            None if stamp(dir) == c.stamp => return Ok(c.catalog.clone()),
-            None => {}
+            None => stamp(dir) == c.stamp,
+        };
+        if holds {
+            return Ok(cache.as_mut().expect("looked at above"));
         }
     }
     *cache = None;
     let watch = Watch::arm(dir);
     let now = stamp(dir);
     let catalog = Arc::new(Catalog::load(dir, None)?);
-    *cache = Some(Cached {
+    Ok(cache.insert(Cached {
         stamp: now,
-        catalog: catalog.clone(),
+        catalog,
         watch,
-    });
-    Ok(catalog)
+        balls: PresetBalls::default(),
+    }))
 }

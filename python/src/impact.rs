@@ -20,7 +20,7 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 pub(crate) use run::impact;
 use std::borrow::Cow;
-use std::sync::OnceLock;
+use std::sync::{Arc, OnceLock};
 
 /// The answer to one impact, SI units; attribute names are the keys of `bouncelab run
 /// --format json` (`lambda_` for `lambda`, a Python keyword).
@@ -88,8 +88,9 @@ pub(crate) struct Impact {
     /// The energy budget and the warnings, once computed ([`Audit`]).
     audit: OnceLock<Audit>,
     /// The ball, kept until [`Impact::audit`] has run its audit (`None` once the audit was
-    /// there from the start: the solver's own run, or a state that carried it).
-    ball: Option<Ball>,
+    /// there from the start: the solver's own run, or a state that carried it); shared, so
+    /// that the answer stays small to move and a preset's ball is not copied (catalog_cache.rs).
+    ball: Option<Arc<Ball>>,
 }
 
 /// What `bouncelab run` reports from the exact solver's run with its energy audit: the
@@ -149,6 +150,8 @@ impl Impact {
             preset: rep.ball.preset.map(String::from),
             origin: match rep.ball.origin {
                 "embedded" => Cow::Borrowed("embedded"),
+                "normalized" => Cow::Borrowed("normalized"),
+                "parameters" => Cow::Borrowed("parameters"),
                 other => Cow::Owned(other.to_string()),
             },
             parameters: Cow::Borrowed(ball.source),

@@ -7,23 +7,26 @@ use crate::error;
 use bouncelab::Ball;
 use bouncelab::api::{ImpactReport, Intervals};
 use pyo3::prelude::*;
+use std::sync::Arc;
 
 /// One impact of `ball`, its history sampled `samples` times when asked for. On the linear
 /// law without a history, the closed forms where they answer (under a µs: the GIL kept) and
 /// the audit left to the first read; else the solver with its audit, the GIL released while
-/// it runs.
+/// it runs. The ball is shared (a preset's, built once: catalog_cache.rs) and kept by the
+/// answer for its audit.
 pub(crate) fn impact(
     py: Python<'_>,
-    ball: Ball,
+    ball: Arc<Ball>,
     history: bool,
     samples: usize,
-) -> PyResult<Impact> {
+) -> PyResult<Py<Impact>> {
     if !history && let Some(s) = ball.closed_form_summary() {
         let intervals = fitted_intervals(py, &ball)?;
         let rep = ImpactReport::of_summary(&ball, &s);
         let mut impact = Impact::new(py, &ball, &rep, intervals, None);
         impact.ball = Some(ball);
-        return Ok(impact);
+        // into its Python object here: the answer moved once, not through each caller
+        return Py::new(py, impact);
     }
     let (r, intervals) = py
         .detach(|| {
@@ -36,13 +39,8 @@ pub(crate) fn impact(
         })
         .map_err(error)?;
     let rep = ImpactReport::new(&ball, &r, history);
-    Ok(Impact::new(
-        py,
-        &ball,
-        &rep,
-        intervals,
-        Some(Audit::of(&rep)),
-    ))
+    let audit = Some(Audit::of(&rep));
+    Py::new(py, Impact::new(py, &ball, &rep, intervals, audit))
 }
 
 /// The 95 % intervals of a fitted preset's impact (several solver runs: the GIL released),

@@ -16,6 +16,7 @@ use pyo3::create_exception;
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
+use std::sync::Arc;
 
 mod arrays;
 mod batch;
@@ -83,7 +84,7 @@ fn source(name: &str) -> PyResult<ParamSource> {
 
 /// The presets the command line knows: the embedded ones and the user's folder
 /// (`$XDG_CONFIG_HOME/bouncelab/presets`).
-fn load_catalog() -> PyResult<std::sync::Arc<Catalog>> {
+fn load_catalog() -> PyResult<Arc<Catalog>> {
     // kept between calls while the folder is unchanged (catalog_cache.rs)
     catalog_cache::user_catalog().map_err(|e| error(BallError::Catalog(e)))
 }
@@ -99,11 +100,29 @@ fn preset_ball(
     law_name: Option<&str>,
     v0: Option<f64>,
 ) -> PyResult<Ball> {
+    if v0.is_none() {
+        return shared_preset_ball(preset, params, law_name).map(Arc::unwrap_or_clone);
+    }
     let cat = load_catalog()?;
     let entry = entry(&cat, preset)?;
     let params = params.map(source).transpose()?;
     let law_ = law_name.map(law).transpose()?;
     Ball::from_entry(entry, params, law_, v0).map_err(error)
+}
+
+/// A preset ball with the command line's `--params` and `--law` applied, at the preset's
+/// speed: built once while the catalog holds (catalog_cache.rs), the same ball, checked the
+/// same way, as [`preset_ball`] builds.
+fn shared_preset_ball(
+    preset: &str,
+    params: Option<&str>,
+    law_name: Option<&str>,
+) -> PyResult<Arc<Ball>> {
+    let choose = || {
+        let params = params.map(source).transpose()?;
+        Ok((params, law_name.map(law).transpose()?))
+    };
+    catalog_cache::preset_ball(preset, choose, error)
 }
 
 /// A list of floats from a numpy array, a sequence, or one number.
@@ -136,11 +155,18 @@ fn run(
     history: bool,
     samples: Option<usize>,
     params: Option<&str>,
-) -> PyResult<Impact> {
+) -> PyResult<Py<Impact>> {
     let samples = history_samples(history, samples)?;
-    let ball = preset_ball(preset, params, law, v0)?
-        .with_lambda_zeta(lambda_, zeta)
-        .map_err(error)?;
+    let mut ball = match v0 {
+        None => shared_preset_ball(preset, params, law)?,
+        Some(_) => Arc::new(preset_ball(preset, params, law, v0)?),
+    };
+    // λ or ζ given: a ball of its own (with neither, the ball is as `with_lambda_zeta(None,
+    // None)` leaves it: checked when built)
+    if lambda_.is_some() || zeta.is_some() {
+        let moved = Arc::unwrap_or_clone(ball).with_lambda_zeta(lambda_, zeta);
+        ball = Arc::new(moved.map_err(error)?);
+    }
     impact(py, ball, history, samples)
 }
 
@@ -155,10 +181,10 @@ fn run_normalized(
     law: &str,
     history: bool,
     samples: Option<usize>,
-) -> PyResult<Impact> {
+) -> PyResult<Py<Impact>> {
     let samples = history_samples(history, samples)?;
     let ball = Ball::normalized(lambda_, zeta, zp_bar, self::law(law)?).map_err(error)?;
-    impact(py, ball, history, samples)
+    impact(py, Arc::new(ball), history, samples)
 }
 
 /// One impact of a ball given by its parameters, SI units. `z_p = inf` (the default) is no
@@ -178,7 +204,7 @@ fn run_params(
     law: &str,
     history: bool,
     samples: Option<usize>,
-) -> PyResult<Impact> {
+) -> PyResult<Py<Impact>> {
     let samples = history_samples(history, samples)?;
     let k_h = k_h.unwrap_or_else(|| {
         ImpactParams::k_h_matching(k_p, if z_p.is_finite() { z_p } else { 1.0 })
@@ -193,7 +219,7 @@ fn run_params(
         v0,
     };
     let ball = Ball::from_params(params, self::law(law)?).map_err(error)?;
-    impact(py, ball, history, samples)
+    impact(py, Arc::new(ball), history, samples)
 }
 
 /// The presets, as `bouncelab presets --format json`: a list of dicts with name, origin,
