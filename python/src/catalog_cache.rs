@@ -89,31 +89,30 @@ type Named = ((Option<OsString>, Option<OsString>), Option<PathBuf>);
 
 static FOLDER: Mutex<Option<Named>> = Mutex::new(None);
 
-/// The user's presets folder, `catalog::user_presets_dir()`: its variables (XDG_CONFIG_HOME,
-/// HOME) read at each call — Python may change them between two — and the path joined again
-/// only when they change (its three joins were a fifth of a `run(preset=…)`, BENCHMARKS.md).
-fn user_presets_dir() -> Option<PathBuf> {
+/// `f` of the user's presets folder, `catalog::user_presets_dir()`: its variables
+/// (XDG_CONFIG_HOME, HOME) read at each call — Python may change them between two — and the
+/// path joined again only when they change (its three joins were a fifth of a
+/// `run(preset=…)`, BENCHMARKS.md); lent to `f` under the lock, not cloned (a clone and its
+/// free were a tenth of what is left of a `run(preset=…)` around its closed form). The lock
+/// is taken before the cache's, always in that order.
+fn in_user_presets_dir<T>(f: impl FnOnce(Option<&Path>) -> T) -> T {
     let vars = (
         std::env::var_os("XDG_CONFIG_HOME"),
         std::env::var_os("HOME"),
     );
     let mut named = FOLDER.lock().unwrap_or_else(|e| e.into_inner());
-    match named.as_ref() {
-        Some((v, dir)) if *v == vars => dir.clone(),
-        _ => {
-            let dir = bouncelab::catalog::user_presets_dir();
-            *named = Some((vars, dir.clone()));
-            dir
-        }
+    if !matches!(named.as_ref(), Some((v, _)) if *v == vars) {
+        *named = Some((vars, bouncelab::catalog::user_presets_dir()));
     }
+    f(named.as_ref().and_then(|(_, dir)| dir.as_deref()))
 }
 
 /// The catalog of the user's presets folder, as the command line sees it (`catalog`).
 pub(crate) fn user_catalog() -> Result<Arc<Catalog>, CatalogError> {
-    let mut cache = CACHE.lock().unwrap_or_else(|e| e.into_inner());
-    Ok(fresh(&mut cache, user_presets_dir().as_deref())?
-        .catalog
-        .clone())
+    in_user_presets_dir(|dir| {
+        let mut cache = CACHE.lock().unwrap_or_else(|e| e.into_inner());
+        Ok(fresh(&mut cache, dir)?.catalog.clone())
+    })
 }
 
 /// The ball of the user's catalog's preset `name` with the parameter set and law given
@@ -127,21 +126,23 @@ pub(crate) fn preset_ball<E>(
     choose: impl FnOnce() -> Result<(Option<ParamSource>, Option<ContactLaw>), E>,
     error: fn(BallError) -> E,
 ) -> Result<Arc<Ball>, E> {
-    let catalog_error = |e| error(BallError::Catalog(e));
-    let mut cache = CACHE.lock().unwrap_or_else(|e| e.into_inner());
-    let cached = fresh(&mut cache, user_presets_dir().as_deref()).map_err(catalog_error)?;
-    let entry = cached.catalog.get(name).map_err(catalog_error)?;
-    let (source, law) = choose()?;
-    let balls = &mut cached.balls.0;
-    let kept = balls
-        .iter()
-        .find(|((n, s, l), _)| n == name && *s == source && *l == law);
-    if let Some((_, ball)) = kept {
-        return Ok(ball.clone());
-    }
-    let ball = Arc::new(Ball::from_entry(entry, source, law, None).map_err(error)?);
-    balls.push(((name.to_string(), source, law), ball.clone()));
-    Ok(ball)
+    in_user_presets_dir(|dir| {
+        let catalog_error = |e| error(BallError::Catalog(e));
+        let mut cache = CACHE.lock().unwrap_or_else(|e| e.into_inner());
+        let cached = fresh(&mut cache, dir).map_err(catalog_error)?;
+        let entry = cached.catalog.get(name).map_err(catalog_error)?;
+        let (source, law) = choose()?;
+        let balls = &mut cached.balls.0;
+        let kept = balls
+            .iter()
+            .find(|((n, s, l), _)| n == name && *s == source && *l == law);
+        if let Some((_, ball)) = kept {
+            return Ok(ball.clone());
+        }
+        let ball = Arc::new(Ball::from_entry(entry, source, law, None).map_err(error)?);
+        balls.push(((name.to_string(), source, law), ball.clone()));
+        Ok(ball)
+    })
 }
 
 /// The folder's entries as they stand (none when it does not exist or cannot be read: the
