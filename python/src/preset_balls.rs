@@ -1,0 +1,89 @@
+//! The presets the Python calls take their balls from: the user's catalog (kept between calls,
+//! catalog_cache.rs), a preset's ball with the caller's choices, and `presets()`.
+
+use crate::{catalog_cache, error, law, source};
+use bouncelab::catalog::{Catalog, Entry, Origin};
+use bouncelab::{Ball, BallError};
+use pyo3::prelude::*;
+use pyo3::types::PyDict;
+use std::sync::Arc;
+
+/// The presets the command line knows: the embedded ones and the user's folder
+/// (`$XDG_CONFIG_HOME/bouncelab/presets`).
+pub(crate) fn load_catalog() -> PyResult<Arc<Catalog>> {
+    // kept between calls while the folder is unchanged (catalog_cache.rs)
+    catalog_cache::user_catalog().map_err(|e| error(BallError::Catalog(e)))
+}
+
+pub(crate) fn entry<'c>(cat: &'c Catalog, name: &str) -> PyResult<&'c Entry> {
+    cat.get(name).map_err(|e| error(BallError::Catalog(e)))
+}
+
+/// A preset ball with the command line's `--params`, `--law`, `--v0` applied.
+pub(crate) fn preset_ball(
+    preset: &str,
+    params: Option<&str>,
+    law_name: Option<&str>,
+    v0: Option<f64>,
+) -> PyResult<Ball> {
+    if v0.is_none() {
+        return shared_preset_ball(preset, params, law_name).map(Arc::unwrap_or_clone);
+    }
+    let cat = load_catalog()?;
+    let entry = entry(&cat, preset)?;
+    let params = params.map(source).transpose()?;
+    let law_ = law_name.map(law).transpose()?;
+    Ball::from_entry(entry, params, law_, v0).map_err(error)
+}
+
+/// A preset ball with the command line's `--params` and `--law` applied, at the preset's
+/// speed: built once while the catalog holds (catalog_cache.rs), the same ball, checked the
+/// same way, as [`preset_ball`] builds.
+pub(crate) fn shared_preset_ball(
+    preset: &str,
+    params: Option<&str>,
+    law_name: Option<&str>,
+) -> PyResult<Arc<Ball>> {
+    let choose = || {
+        let params = params.map(source).transpose()?;
+        Ok((params, law_name.map(law).transpose()?))
+    };
+    catalog_cache::preset_ball(preset, choose, error)
+}
+
+/// The presets, as `bouncelab presets --format json`: a list of dicts with name, origin,
+/// description, law, parameters, lambda, zeta, v0.
+#[pyfunction]
+pub(crate) fn presets(py: Python<'_>) -> PyResult<Vec<Bound<'_, PyDict>>> {
+    let cat = load_catalog()?;
+    cat.entries()
+        .iter()
+        .map(|e| {
+            let p = &e.preset;
+            let n = p.params().normalized();
+            let d = PyDict::new(py);
+            d.set_item("name", &p.name)?;
+            d.set_item(
+                "origin",
+                match &e.origin {
+                    Origin::Embedded => "embedded".to_string(),
+                    Origin::File(f) => f.display().to_string(),
+                },
+            )?;
+            d.set_item("description", &p.description)?;
+            d.set_item("law", p.law.name())?;
+            d.set_item("parameters", p.parameters.name())?;
+            d.set_item("lambda", n.lambda)?;
+            d.set_item("zeta", n.zeta)?;
+            d.set_item("v0", p.measured.v0)?;
+            d.set_item("radius", p.measured.radius)?;
+            d.set_item("poisson_ratio", p.material.poisson)?;
+            let kappa = p.measured.inertia_factor;
+            d.set_item(
+                "inertia_factor",
+                kappa.unwrap_or(bouncelab::api::SOLID_INERTIA_FACTOR),
+            )?;
+            Ok(d)
+        })
+        .collect()
+}
