@@ -9,8 +9,8 @@ BENCHMARKS.md). Run after `pip install ./python`:
 Prints the median of 5 runs (wall clock, then CPU time) of `bouncelab.impacts` over 10⁶
 linear-law balls (the superball with K_p, c, K_r spread 5 %, no flattening: the closed form),
 per impact; and the median cost of one call of each of CALLS (`run(preset=…)` of golf and
-tennis, `run_params`, `run_normalized`, and a `run` whose energy audit is read,
-docs/python.md); then, if SciPy is installed, the same impacts with `scipy.integrate.solve_ivp` (RK45, rtol 1e-10, atol 1e-13, terminal event
+tennis, `run_params`, `run_normalized`, a `run` whose energy audit is read, and the
+native `run` without bouncelab/_boundary.py's guard, docs/python.md); then, if SciPy is installed, the same impacts with `scipy.integrate.solve_ivp` (RK45, rtol 1e-10, atol 1e-13, terminal event
 at F = 0 falling, as benches/scipy_sweep.py) on the first 300 balls, the ratio of the two per
 impact and their largest COR difference. Speed is measured here, never asserted in tests.
 """
@@ -23,6 +23,7 @@ import time
 import numpy as np
 
 import bouncelab
+import bouncelab._native as _native
 
 SCIPY_BALLS = 300
 
@@ -91,6 +92,8 @@ CALLS = [
     ),
     ("run_normalized(1.0, 0.1)", lambda: bouncelab.run_normalized(1.0, 0.1)),
     ("run(preset='golf').energy (the audit read)", lambda: bouncelab.run(preset="golf").energy),
+    # the native function alone, without bouncelab/_boundary.py's guard: the guard's share
+    ("_native.run(preset='golf') (no _boundary guard)", lambda: _native.run(preset="golf")),
 ]
 
 
