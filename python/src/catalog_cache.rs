@@ -14,8 +14,9 @@
 //!
 //! Beside the catalog it keeps the balls built from it (`PresetBalls`): a preset's ball under
 //! a parameter set and a law is built and checked once per catalog, and dropped with it when
-//! the folder changes (python/tests/test_catalog_cache.py) — building it anew at each call,
-//! its strings and tables cloned, cost `run(preset=…)` a sixth of its time (BENCHMARKS.md).
+//! the folder changes (python/tests/test_preset_balls.py) — building and dropping it at each
+//! call, its strings and tables cloned, was about a sixth of a `run(preset=…)`'s instructions
+//! (BENCHMARKS.md).
 
 use bouncelab::catalog::{Catalog, CatalogError};
 use bouncelab::preset::ParamSource;
