@@ -226,7 +226,7 @@ pub fn flatten_kernel<L: Lane<Array = [f64; N]>, const N: usize>(
 }
 
 /// Four flattening cells at once, the lanes' own answers (`None` where a lane is handed
-/// back): with AVX2 one AVX register, elsewhere `wide`'s `f64x4`; each lane the bits of
+/// back): with AVX2 and FMA one AVX register, elsewhere `wide`'s `f64x4`; each lane the bits of
 /// [`flattening_lanes8`]'s (a `Pair`'s half runs the operations it would alone). The Monte
 /// Carlo's groups of four take it (`analysis::mc_impact`).
 pub fn flattening_lanes4(
@@ -235,19 +235,20 @@ pub fn flattening_lanes4(
     zp: [f64; LANES],
 ) -> [Option<Summary>; LANES] {
     #[cfg(target_arch = "x86_64")]
-    if std::arch::is_x86_feature_detected!("avx2") {
-        // SAFETY: the CPU has AVX2, just checked
+    if std::arch::is_x86_feature_detected!("avx2") && std::arch::is_x86_feature_detected!("fma") {
+        // SAFETY: the CPU has AVX2 and FMA, just checked
         return unsafe { flattening_lanes4_avx2(lambda, zeta, zp) };
     }
     flatten_kernel::<f64x4, LANES>(lambda, zeta, zp)
 }
 
-/// The kernel on one AVX register, compiled with AVX2 enabled.
+/// The kernel on one AVX register, compiled with AVX2 and FMA enabled (the lanes' `mul_add`
+/// one `vfmadd`, inlined: without FMA enabled the intrinsic is a call).
 ///
 /// # Safety
-/// The CPU must have AVX2.
+/// The CPU must have AVX2 and FMA.
 #[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2")]
+#[target_feature(enable = "avx2,fma")]
 unsafe fn flattening_lanes4_avx2(
     lambda: [f64; LANES],
     zeta: [f64; LANES],
@@ -260,7 +261,7 @@ unsafe fn flattening_lanes4_avx2(
 pub const FLAT_WIDE: usize = 2 * LANES;
 
 /// Eight flattening cells at once, the lanes' own answers (`None` where a lane is handed
-/// back): with AVX2 two AVX registers in one instruction stream (`pair.rs`), elsewhere two
+/// back): with AVX2 and FMA two AVX registers in one instruction stream (`pair.rs`), elsewhere two
 /// calls of the portable kernel; the same bits either way (tests/map_flatten_lanes.rs).
 pub fn flattening_lanes8(
     lambda: [f64; FLAT_WIDE],
@@ -268,8 +269,8 @@ pub fn flattening_lanes8(
     zp: [f64; FLAT_WIDE],
 ) -> [Option<Summary>; FLAT_WIDE] {
     #[cfg(target_arch = "x86_64")]
-    if std::arch::is_x86_feature_detected!("avx2") {
-        // SAFETY: the CPU has AVX2, just checked
+    if std::arch::is_x86_feature_detected!("avx2") && std::arch::is_x86_feature_detected!("fma") {
+        // SAFETY: the CPU has AVX2 and FMA, just checked
         return unsafe { flattening_lanes8_avx2(lambda, zeta, zp) };
     }
     flattening_lanes8_portable(lambda, zeta, zp)
@@ -287,12 +288,12 @@ pub fn flattening_lanes8_portable(
     std::array::from_fn(|i| if i < LANES { lo[i] } else { hi[i - LANES] })
 }
 
-/// The kernel on a pair of AVX registers, compiled with AVX2 enabled.
+/// The kernel on a pair of AVX registers, compiled with AVX2 and FMA enabled.
 ///
 /// # Safety
-/// The CPU must have AVX2.
+/// The CPU must have AVX2 and FMA.
 #[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2")]
+#[target_feature(enable = "avx2,fma")]
 unsafe fn flattening_lanes8_avx2(
     lambda: [f64; FLAT_WIDE],
     zeta: [f64; FLAT_WIDE],
@@ -302,8 +303,13 @@ unsafe fn flattening_lanes8_avx2(
     flatten_kernel::<Pair<Avx>, FLAT_WIDE>(lambda, zeta, zp)
 }
 
+/// Cells a last group at most holds for [`flattenings`] to run them one by one
+/// ([`flattening_one`], ≈ 2 900 instructions each) rather than padded to eight (≈ 6 200).
+const ALONE: usize = 2;
+
 /// `out[i]` = `flattening(lambda[i], zeta[i], zp[i])` to 1e-12, eight at a time through
-/// [`flattening_lanes8`] (the last group padded with its own last cell), each lane the lanes
+/// [`flattening_lanes8`] (a last group of more than [`ALONE`] padded with its own last cell,
+/// a smaller one cell by cell through [`flattening_one`]: the same bits), each lane the lanes
 /// hand back the scalar `flattening`'s answer. Slices of equal length.
 pub fn flattenings(lambda: &[f64], zeta: &[f64], zp: &[f64], out: &mut [Option<Summary>]) {
     assert!(lambda.len() == zeta.len() && zeta.len() == zp.len() && zp.len() == out.len());
@@ -316,10 +322,57 @@ pub fn flattenings(lambda: &[f64], zeta: &[f64], zp: &[f64], out: &mut [Option<S
         .zip(zeta.chunks(FLAT_WIDE))
         .zip(zp.chunks(FLAT_WIDE));
     for (((l, z), p), o) in groups.zip(out.chunks_mut(FLAT_WIDE)) {
+        if o.len() <= ALONE {
+            for (i, o) in o.iter_mut().enumerate() {
+                *o = flattening_one(l[i], z[i], p[i]);
+            }
+            continue;
+        }
         let (l, z, p) = (pad(l), pad(z), pad(p));
         let lanes = flattening_lanes8(l, z, p);
         for (i, o) in o.iter_mut().enumerate() {
             *o = lanes[i].or_else(|| flattening(l[i], z[i], p[i]));
         }
     }
+}
+
+#[path = "one.rs"]
+mod one;
+
+/// One flattening cell, the lanes' own answer on a lane of width one (`one.rs`; `None` where
+/// the lanes hand it back): any lane of [`flattening_lanes8`] or [`flattening_lanes4`] at the
+/// same (λ, ζ, z̄_p), bit for bit, at a cell's cost. With AVX2 and FMA compiled with FMA
+/// enabled (`f64::mul_add` one instruction, not libm's `fma`), elsewhere
+/// [`flattening_lane1_portable`]: the same bits.
+pub fn flattening_lane1(lambda: f64, zeta: f64, zp: f64) -> Option<Summary> {
+    #[cfg(target_arch = "x86_64")]
+    if std::arch::is_x86_feature_detected!("avx2") && std::arch::is_x86_feature_detected!("fma") {
+        // SAFETY: the CPU has AVX2 and FMA, just checked
+        return unsafe { flattening_lane1_fma(lambda, zeta, zp) };
+    }
+    flattening_lane1_portable(lambda, zeta, zp)
+}
+
+/// [`flattening_lane1`] compiled for the build's own target.
+pub fn flattening_lane1_portable(lambda: f64, zeta: f64, zp: f64) -> Option<Summary> {
+    let [s] = flatten_kernel::<one::One, 1>([lambda], [zeta], [zp]);
+    s
+}
+
+/// The kernel on one lane, compiled with AVX2 and FMA enabled.
+///
+/// # Safety
+/// The CPU must have AVX2 and FMA.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2,fma")]
+unsafe fn flattening_lane1_fma(lambda: f64, zeta: f64, zp: f64) -> Option<Summary> {
+    let [s] = flatten_kernel::<one::One, 1>([lambda], [zeta], [zp]);
+    s
+}
+
+/// A flattening cell alone as [`flattenings`] answers it in any group, bit for bit: the
+/// lanes' answer on one lane ([`flattening_lane1`]), else the scalar `flattening`'s. What a
+/// lone cell (`map::eval::cell_at`), `run` and a row of `bouncelab.impacts` take.
+pub fn flattening_one(lambda: f64, zeta: f64, zp: f64) -> Option<Summary> {
+    flattening_lane1(lambda, zeta, zp).or_else(|| flattening(lambda, zeta, zp))
 }
