@@ -308,7 +308,7 @@ unsafe fn flattening_lanes8_avx2(
 const ALONE: usize = 2;
 
 /// `out[i]` = `flattening(lambda[i], zeta[i], zp[i])` to 1e-12, eight at a time through
-/// [`flattening_lanes8`] (a last group of more than [`ALONE`] padded with its own last cell,
+/// [`flattening_lanes8`] (a last group of more than `ALONE` padded with its own last cell,
 /// a smaller one cell by cell through [`flattening_one`]: the same bits), each lane the lanes
 /// hand back the scalar `flattening`'s answer. Slices of equal length.
 pub fn flattenings(lambda: &[f64], zeta: &[f64], zp: &[f64], out: &mut [Option<Summary>]) {
