@@ -5,6 +5,7 @@ BENCHMARKS.md). Run after `pip install ./python`:
     python benches/impacts_python.py                        # all cores
     python benches/impacts_python.py calls                  # the calls alone (CALLS)
     python benches/impacts_python.py laws                   # Hertz, elastic-plastic (LAWS)
+    python benches/impacts_python.py flat                   # tennis balls that flatten (FLAT)
 
 Prints the median of 5 runs (wall clock, then CPU time) of `bouncelab.impacts` over 10⁶
 linear-law balls (the superball with K_p, c, K_r spread 5 %, no flattening: the closed form),
@@ -133,7 +134,33 @@ def time_laws(n=10**6):
         )
 
 
+# 10⁶ tennis-like balls (the tennis preset, K_p, c, K_r spread 5 %) at 8 … 40 m/s: every one
+# flattens (z_m > z_p), the linear law's flattening rows (issue 30 item 2)
+FLAT = dict(m=0.0577, z_p=0.0060342)
+
+
+def time_flat(n=10**6):
+    """Median wall and CPU time of `impacts` over `n` tennis balls that flatten, per element."""
+    threads = os.environ.get("RAYON_NUM_THREADS", "all")
+    rng = np.random.default_rng(2)
+    k_p = 24713.0 * (1 + 0.05 * rng.standard_normal(n))
+    c = 210.1329 * (1 + 0.05 * rng.standard_normal(n))
+    k_r = 24713.0 * (1 + 0.05 * rng.standard_normal(n))
+    v0 = np.linspace(8.0, 40.0, n)
+    f = lambda: bouncelab.impacts(k_p=k_p, c=c, k_r=k_r, v0=v0, **FLAT)  # noqa: E731
+    r = f()
+    flat = int(np.count_nonzero(r["permanent_indentation"] > 0))
+    wall, cpu = median_of(f), median_of_cpu(f)
+    print(
+        f"impacts, 1e6 tennis flattening ({flat} flatten), {threads} threads: {wall * 1e3:.1f} "
+        f"ms, {wall / n * 1e9:.0f} ns per element ({cpu / n * 1e9:.0f} ns CPU)"
+    )
+
+
 def main():
+    if sys.argv[1:] == ["flat"]:  # tennis balls that flatten only
+        time_flat()
+        return
     if sys.argv[1:] == ["calls"]:  # the per-call overheads only
         time_calls()
         return

@@ -272,3 +272,25 @@ fn flattening_cells_lanes() -> f64 {
     bouncelab::map::fast::lanes::flattenings(l, z, zp, &mut out);
     out.iter().flatten().map(|s| s.cor).sum()
 }
+
+/// `flattening_summary`'s cell alone on one lane (`map::fast::lanes::flattening_one`: the
+/// lanes' code on a lane of width one, issue 30 item 2, ≤ 0.5 µs), what `run`, a lone map
+/// cell and a row take: against `flattening_summary` (the scalar closed form) in the same run.
+#[divan::bench]
+fn flattening_one_summary() -> f64 {
+    let n = black_box(CASES[3].1).normalized();
+    bouncelab::map::fast::lanes::flattening_one(n.lambda, n.zeta, n.zp_bar)
+        .unwrap()
+        .cor
+}
+
+/// The 1 024 tennis flattening cells one by one through `flattening_one` (a lane of width
+/// one each), beside `flattening_cells_scalar` and `flattening_cells_lanes`.
+#[divan::bench]
+fn flattening_cells_one() -> f64 {
+    let [l, z, zp] = black_box(&*TENNIS_FLAT_CELLS);
+    (0..l.len())
+        .filter_map(|i| bouncelab::map::fast::lanes::flattening_one(l[i], z[i], zp[i]))
+        .map(|s| s.cor)
+        .sum()
+}

@@ -8,11 +8,17 @@
 mod seeded;
 
 use bouncelab::map::fast::lanes::{
-    FLAT_WIDE, LANES, flattening_lanes4, flattening_lanes8, flattening_lanes8_portable, flattenings,
+    FLAT_WIDE, LANES, flattening_lane1, flattening_lane1_portable, flattening_lanes4,
+    flattening_lanes8, flattening_lanes8_portable, flattening_one, flattenings,
 };
 use bouncelab::map::fast::{Summary, flattening, summary};
 use bouncelab::{ContactLaw, ImpactParams, SolveOptions, simulate};
 use seeded::Seeded;
+
+/// The bits of an answer.
+fn bits(s: &Option<Summary>) -> Option<[u64; 3]> {
+    s.map(|s| [s.cor, s.max_force, s.contact_time].map(f64::to_bits))
+}
 
 /// The worst relative difference over e, F̄_m and τ_f (e's absolute where it is below 1).
 fn difference(a: &Summary, b: &Summary) -> f64 {
@@ -61,6 +67,11 @@ fn check(cells: &[(f64, f64, f64)]) -> Counts {
         let own = flattening_lanes8(pad(0), pad(1), pad(2));
         for (i, &(l, z, zp)) in group.iter().enumerate() {
             let case = format!("λ = {l:e}, ζ = {z:e}, z̄_p = {zp:e}");
+            assert_eq!(
+                bits(&flattening_lane1(l, z, zp)),
+                bits(&own[i]),
+                "{case}: one"
+            );
             let scalar = flattening(l, z, zp);
             c.cells += 1;
             c.scalar += usize::from(scalar.is_some());
@@ -144,8 +155,6 @@ fn random_flattening_balls_in_lanes() {
 #[test]
 fn avx2_and_portable_flattening_agree_bit_for_bit() {
     let mut s = Seeded::new(7);
-    let bits =
-        |s: &Option<Summary>| s.map(|s| [s.cor, s.max_force, s.contact_time].map(f64::to_bits));
     let mut answered = 0;
     for _ in 0..1000 {
         let cells: [(f64, f64, f64); FLAT_WIDE] = std::array::from_fn(|_| {
@@ -173,4 +182,65 @@ fn avx2_and_portable_flattening_agree_bit_for_bit() {
         }
     }
     assert!(answered >= 4000, "{answered}");
+}
+
+/// A cell alone on one lane (`flattening_lane1`, FMA enabled where the CPU has it, and its
+/// portable compilation) is its lane in a group of eight bit for bit, handed back where that
+/// lane is; `flattening_one` (the lone cell's call: the explorer's cursor, `run`, a row) is
+/// `flattenings`' answer in any grouping, here the cells shuffled into other groups, with
+/// lanes the kernel leaves out (zeros, NaN, ∞, balls that do not flatten) among them.
+#[test]
+fn one_lane_is_the_maps_lane_bit_for_bit() {
+    let mut s = Seeded::new(0x0e1a_0000_0000_0008);
+    let mut cells = Vec::new();
+    while cells.len() < 3000 {
+        let (l, z) = (
+            10f64.powf(-6.0 + 10.0 * s.uniform()),
+            10f64.powf(-3.0 + 6.0 * s.uniform()),
+        );
+        let peak = summary(l, z).map_or(1.0, |s| s.max_force);
+        cells.push((l, z, peak * 10f64.powf(-4.0 * s.uniform())));
+        if cells.len() % 89 == 0 {
+            let odd = [0.0, f64::NAN, f64::INFINITY, -1.0][cells.len() % 4];
+            cells.extend([
+                (odd, z, 0.5),
+                (l, odd, 0.5),
+                (l, z, odd),
+                (l, z, 2.0 * peak),
+            ]);
+        }
+    }
+    let col = |k: usize| -> Vec<f64> { cells.iter().map(|p| [p.0, p.1, p.2][k]).collect() };
+    let (l, z, zp) = (col(0), col(1), col(2));
+    let mut all = vec![None; cells.len()];
+    flattenings(&l, &z, &zp, &mut all);
+    // the same cells three places on: other neighbours in every group of eight
+    let turn = |v: &[f64]| -> Vec<f64> { v[3..].iter().chain(&v[..3]).copied().collect() };
+    let mut turned = vec![None; cells.len()];
+    flattenings(&turn(&l), &turn(&z), &turn(&zp), &mut turned);
+    let (mut lanes, mut handed) = (0, 0);
+    for (g, group) in cells.chunks(FLAT_WIDE).enumerate() {
+        let pad = |k: usize| {
+            std::array::from_fn(|i| [&l, &z, &zp][k][g * FLAT_WIDE + i.min(group.len() - 1)])
+        };
+        let eight = flattening_lanes8(pad(0), pad(1), pad(2));
+        for (i, &(l, z, zp)) in group.iter().enumerate() {
+            let (k, case) = (g * FLAT_WIDE + i, format!("λ {l:e}, ζ {z:e}, z̄_p {zp:e}"));
+            let one = flattening_lane1(l, z, zp);
+            assert_eq!(bits(&one), bits(&eight[i]), "{case}: one lane");
+            assert_eq!(
+                bits(&flattening_lane1_portable(l, z, zp)),
+                bits(&one),
+                "{case}"
+            );
+            let alone = flattening_one(l, z, zp);
+            assert_eq!(bits(&alone), bits(&all[k]), "{case}: flattening_one");
+            let back = (k + cells.len() - 3) % cells.len();
+            assert_eq!(bits(&alone), bits(&turned[back]), "{case}: regrouped");
+            lanes += usize::from(one.is_some());
+            handed += usize::from(one.is_none() && alone.is_some());
+        }
+    }
+    eprintln!("{lanes} cells on the lane, {handed} handed back and answered by the scalar path");
+    assert!(lanes >= 2000 && handed > 0, "{lanes}, {handed}");
 }

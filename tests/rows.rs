@@ -188,8 +188,8 @@ fn an_elastic_plastic_row_is_the_fast_paths_answer() {
 
 /// A row against `run`'s answer (`simulate`) to 1e-12 in every field (z_f to 1e-12 of z_m, the
 /// scale of its rounding: Eqs. 18–19 take z_f from z_m with a slope below 1); whether it
-/// came from the flattening's closed form (`map::fast::flattening` answers: e, F̄_m and τ_f
-/// are its own, not the solver's, to the last bit).
+/// came from the flattening's closed form (`map::fast::lanes::flattening_one` answers, the
+/// lanes' code on one lane: e, F̄_m and τ_f are its own, not the solver's, to the last bit).
 fn row_is_runs(p: &ImpactParams, row: &ImpactRow) -> bool {
     let r = simulate(p, ContactLaw::Linear, &SolveOptions::default()).unwrap();
     let t = r.contact_time.unwrap_or(f64::NAN);
@@ -202,7 +202,8 @@ fn row_is_runs(p: &ImpactParams, row: &ImpactRow) -> bool {
     assert!(dz_f <= 1e-12 * r.max_indentation, "{case}");
     assert_eq!(row.rebound, r.rebound, "{case}");
     let n = p.normalized();
-    bouncelab::map::fast::flattening(n.lambda, n.zeta, n.zp_bar).is_some_and(|s| s.cor == row.cor)
+    bouncelab::map::fast::lanes::flattening_one(n.lambda, n.zeta, n.zp_bar)
+        .is_some_and(|s| s.cor == row.cor)
 }
 
 /// The tennis ball (which flattens at its own speed) over speeds 2 … 60 m/s, row by row and

@@ -168,3 +168,34 @@ fn a_ball_that_is_not_one_is_the_first_error_and_nothing_after_it_runs() {
         );
     }
 }
+
+/// The linear law's flattening rows (z_f > 0) are the flattening closed form's answers in
+/// lanes (`map::fast::lanes::flattening_one`, which `first_pass` runs eight at a time), to the
+/// last bit of e and t_f — not the scalar `map::fast::flattening`'s, which differs in its last
+/// bits at some of these balls (the test tells the two paths apart: it fails if the rows go
+/// the scalar way).
+#[test]
+fn flattening_rows_are_the_lanes_answers() {
+    use bouncelab::map::fast::{flattening, lanes::flattening_one};
+    let balls = mix();
+    let (rows, _) = two_passes(ContactLaw::Linear, &balls);
+    let rows = rows.unwrap();
+    let (mut lanes, mut apart) = (0, 0);
+    for (p, row) in balls.iter().zip(&rows) {
+        let n = p.normalized();
+        if row.permanent_indentation <= 0.0 {
+            continue;
+        }
+        let Some(s) = flattening_one(n.lambda, n.zeta, n.zp_bar).filter(|s| s.cor > 0.0) else {
+            continue;
+        };
+        lanes += 1;
+        let w0 = p.omega0();
+        assert_eq!(row.cor.to_bits(), s.cor.to_bits(), "{p:?}");
+        assert_eq!(row.contact_time.to_bits(), (s.contact_time / w0).to_bits());
+        let scalar = flattening(n.lambda, n.zeta, n.zp_bar);
+        apart += usize::from(scalar.is_none_or(|c| c.cor.to_bits() != s.cor.to_bits()));
+    }
+    eprintln!("{lanes} flattening rows, {apart} of them not the scalar path's bits");
+    assert!(lanes >= 50 && apart > 0, "{lanes}, {apart}");
+}

@@ -7,11 +7,15 @@
 //! one [`super::impact_rows`] gives, bit for bit (tests/rows_columns.rs).
 
 use super::BallError;
-use super::rows::{ImpactRow, Rest, row_from, table_row};
+use super::rows::{ImpactRow, Rest, flattening_si_row, row_from, table_row};
 use crate::analysis::work::Elements;
+use crate::map::fast::Summary;
 use crate::map::fast::lanes;
 use crate::model::contact::ContactLaw;
-use crate::model::params::{ImpactParams, ParamError};
+use crate::model::params::{ImpactParams, Normalized, ParamError};
+
+/// A ball and its normalized groups.
+type Ball = (ImpactParams, Normalized);
 use rayon::prelude::*;
 
 /// Elements a task of the first pass takes: a multiple of the lanes' eight, small enough that
@@ -209,11 +213,16 @@ where
         .unzip();
     let mut fast = vec![None; len];
     lanes::summaries(&lambda, &zeta, &mut fast);
+    let flat = flattening_lanes(&balls, &fast);
     let mut failed = None;
-    for (k, (ball, s)) in balls.into_iter().zip(fast).enumerate() {
-        let row = ball
-            .map_err(BallError::Param)
-            .and_then(|(p, n)| row_from(&p, &n, ContactLaw::Linear, s).map_err(BallError::Solve));
+    for (k, ((ball, s), f)) in balls.into_iter().zip(fast).zip(flat).enumerate() {
+        let row = ball.map_err(BallError::Param).and_then(|(p, n)| {
+            // a flattening ball's row from its lane's answer (`row_from` would ask
+            // `flattening_one`, the same bits); where none or no rebound, `row_from` again
+            f.and_then(|s| flattening_si_row(&p, &n, s))
+                .map_or_else(|| row_from(&p, &n, ContactLaw::Linear, s), Ok)
+                .map_err(BallError::Solve)
+        });
         match row {
             Ok(row) => out.put(k, &row),
             Err(e) => {
@@ -225,6 +234,42 @@ where
         left: Vec::new(),
         failed,
     }
+}
+
+/// The flattening closed form's answers for the balls that flatten (as `row_from` decides:
+/// no summary without flattening, or its peak past z̄_p), eight at a time in lanes
+/// ([`lanes::flattenings`], issue 30 item 2: each lane bit for bit the lone cell's
+/// [`lanes::flattening_one`] that `row_from` takes, tests/rows_columns.rs); `None` for the
+/// others and where the closed form does not answer.
+fn flattening_lanes(
+    balls: &[Result<Ball, ParamError>],
+    fast: &[Option<Summary>],
+) -> Vec<Option<Summary>> {
+    let flattens = |k: usize| match &balls[k] {
+        Ok((_, n)) => fast[k].is_none_or(|s| s.max_force > n.zp_bar),
+        Err(_) => false,
+    };
+    let which: Vec<usize> = (0..balls.len()).filter(|&k| flattens(k)).collect();
+    let mut out = vec![None; balls.len()];
+    if which.is_empty() {
+        return out;
+    }
+    let norm: Vec<&Normalized> = which
+        .iter()
+        .filter_map(|&k| balls[k].as_ref().ok().map(|(_, n)| n))
+        .collect();
+    let col = |f: fn(&Normalized) -> f64| -> Vec<f64> { norm.iter().map(|n| f(n)).collect() };
+    let mut found = vec![None; which.len()];
+    lanes::flattenings(
+        &col(|n| n.lambda),
+        &col(|n| n.zeta),
+        &col(|n| n.zp_bar),
+        &mut found,
+    );
+    for (&k, s) in which.iter().zip(found) {
+        out[k] = s;
+    }
+    out
 }
 
 /// The Hertz or elastic–plastic rows of the elements `first …` of `out` the Hertz table

@@ -154,15 +154,24 @@ pub(super) fn table_row(
     si_row(p, s).ok_or(Rest::Whole)
 }
 
-/// The row of a linear-law ball that flattens (F̄_m > z̄_p), from the closed form
-/// [`crate::map::fast::flattening`] (to 1e-12 of the exact solver, tests/map_flatten.rs), in
-/// SI as `run` scales its answer (docs/model.md §5: force m v0 ω0, length v0/ω0, time 1/ω0):
-/// F_m = F̄_m m v0 ω0, z_m = z̄_m v0/ω0 (F̄ = z̄ on loading), z_f from z̄_f by Eqs. 18–19 (the
-/// contact's `permanent_indentation`, as the exact solver takes it). `None` where the closed
-/// form does not answer or the ball does not leave: the solver answers.
+/// The row of a linear-law ball that flattens (F̄_m > z̄_p), from the closed form on one lane
+/// ([`crate::map::fast::lanes::flattening_one`]: the lanes' answer, as `first_pass` takes it
+/// eight at a time, else the scalar closed form's; to 1e-12 of the exact solver,
+/// tests/map_flatten.rs, tests/map_flatten_lanes.rs) by [`flattening_si_row`]. `None` where
+/// the closed form does not answer or the ball does not leave: the solver answers.
 fn flattening_row(p: &ImpactParams, n: &Normalized) -> Option<ImpactRow> {
+    let s = crate::map::fast::lanes::flattening_one(n.lambda, n.zeta, n.zp_bar)?;
+    flattening_si_row(p, n, s)
+}
+
+/// The flattening closed form's answer `s` for the ball `p` as a row, in SI as `run` scales
+/// its answer (docs/model.md §5: force m v0 ω0, length v0/ω0, time 1/ω0): F_m = F̄_m m v0 ω0,
+/// z_m = z̄_m v0/ω0 (F̄ = z̄ on loading), z_f from z̄_f by Eqs. 18–19 (the contact's
+/// `permanent_indentation`, as the exact solver takes it). `None` where the ball does not
+/// leave (e ≤ 0).
+pub(super) fn flattening_si_row(p: &ImpactParams, n: &Normalized, s: Summary) -> Option<ImpactRow> {
     let zp_bar = n.zp_bar;
-    let s = crate::map::fast::flattening(n.lambda, n.zeta, zp_bar).filter(|s| s.cor > 0.0)?;
+    let s = Some(s).filter(|s| s.cor > 0.0)?;
     let contact = Contact {
         law: ContactLaw::Linear,
         zp_bar,

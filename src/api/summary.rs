@@ -80,8 +80,10 @@ impl Ball {
         let s = match crate::map::fast::summary(n.lambda, n.zeta) {
             Some(s) if s.max_force <= n.zp_bar => s,
             // it flattens (or the closed form without flattening did not answer, when the
-            // flattening one does not either)
-            _ => crate::map::fast::flattening(n.lambda, n.zeta, n.zp_bar)?,
+            // flattening one does not either): the lanes' code on one lane, else the scalar
+            // closed form — a map's cell and a row of `impacts` bit for bit
+            // (tests/map_flatten_lanes.rs `one_lane_is_the_maps_lane_bit_for_bit`)
+            _ => crate::map::fast::lanes::flattening_one(n.lambda, n.zeta, n.zp_bar)?,
         };
         if !(s.cor > 0.0 && s.cor <= 1.0) {
             return None;

@@ -11,8 +11,9 @@ use std::sync::atomic::{AtomicBool, Ordering};
 /// One cell at (λ, ζ): [`crate::simulate`] with the default options, as `bouncelab run`
 /// solves (its energy audit changes neither solver's COR, F_m or t_f). The linear law runs
 /// the exact solver, the others the adaptive one. On the fast path the linear law's closed
-/// form runs in lanes (`cells_at`'s, the lane padded with copies of itself), so a cell
-/// alone is the map's cell bit for bit (`one_cell_is_the_maps_cell`).
+/// form runs in lanes (`cells_at`'s, the lane padded with copies of itself; a flattening
+/// cell on a lane of width one, [`super::fast::lanes::flattening_one`]), so a cell alone is
+/// the map's cell bit for bit (`one_cell_is_the_maps_cell`).
 pub fn cell_at(spec: &MapSpec, lambda: f64, zeta: f64) -> Result<Cell, SolveError> {
     let mut out = [Ok(Cell::UNRESOLVED)];
     cells_at(spec, &[(lambda, zeta)], &mut out);
@@ -46,8 +47,9 @@ pub fn cells_at(spec: &MapSpec, points: &[(f64, f64)], out: &mut [Result<Cell, S
 
 /// Where the ball flattens (the no-flattening summary's peak passes z̄_p, or it does not
 /// answer), `closed[i]` becomes the flattening closed form's answer, eight cells at a time
-/// in lanes ([`super::fast::lanes::flattenings`], issue 30 item 2; `None` where neither the
-/// lanes nor the scalar `flattening` answer): afterwards each `Some` is the cell's answer.
+/// in lanes ([`super::fast::lanes::flattenings`], issue 30 item 2: one or two cells one by
+/// one on a lane of width one, the same bits; `None` where neither the lanes nor the scalar
+/// `flattening` answer): afterwards each `Some` is the cell's answer.
 fn flattening_in_lanes(
     lambda: &[f64],
     zeta: &[f64],

@@ -42,6 +42,7 @@ mod pair;
 pub use kernel::flatten::{
     FLAT_WIDE, flattening_lanes4, flattening_lanes8, flattening_lanes8_portable, flattenings,
 };
+pub use kernel::flatten::{flattening_lane1, flattening_lane1_portable, flattening_one};
 pub use lane::LANES;
 
 use super::Summary;

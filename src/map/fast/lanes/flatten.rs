@@ -6,8 +6,9 @@
 //! Newton), its turn τ_m from the pair's phase atan2(P, −Q) by Householder's steps; the turn's
 //! values (z̄_m, z̄''(τ_m), ∫₀^τ_m z̄) from the last jet by Taylor's series, as the scalar path
 //! takes them. The unloading is the same cubic at (λ/k, ζ√k) from the state (u0, 0, u2)
-//! (`Unload::from_state`: `flow::state_coefficients`' A, B, D), its separation from the
-//! pair's first zero of u past the phase 0 (`search::separation_guess`), refined the same way.
+//! (`Unload::from_state` in `lanes/unload.rs`: `flow::state_coefficients`' A, B, D), its
+//! separation from the pair's first zero of u past the phase 0 (`search::separation_guess`),
+//! refined the same way.
 //! The rounding bounds — the turn's, the unloading's own (the scalar `tight` bound), and the
 //! turn's errors carried to s_f by the flow's responses — decide `KEEP` as masks.
 //!
@@ -21,149 +22,15 @@
 
 use super::super::lane::{LANES, Lane};
 use super::super::math::atan2;
-use super::{Flow4, Point4, Root4, householder, lone_real_root, select6, taylor};
+use super::{Flow4, Point4, Root4, householder, select6, taylor};
 use crate::map::fast::search::{MAX_REFINE, TAU_MAX};
 use crate::map::fast::{KEEP, Summary, flattening};
-use crate::solver::series::INV_FACTORIAL;
 use std::f64::consts::{FRAC_PI_2, PI};
 use wide::f64x4;
 
-/// The unloading's flow: a `Flow4` from a state, and what its bounds need beyond it.
-struct Unload<L: Lane> {
-    flow: Flow4<L>,
-    /// B's rounding scale (the loading's B = −A shares A's; a state's does not).
-    sb: L,
-    /// (r + σ)² + ω² and σ² + ω², for the responses.
-    gap: L,
-    p0: L,
-}
-
-/// (e^x − 1)/x = Σ x^k/(k + 1)!, k ≤ 16, highest degree first: where |x| < 1/2 (the scalar
-/// `tight` flow's `exp_m1` range) the first term left out is below 2e-21 of the sum.
-const EXP_M1_SERIES: [f64; 17] = {
-    let mut c = [0.0; 17];
-    let mut i = 0;
-    while i < 17 {
-        c[i] = INV_FACTORIAL[17 - i];
-        i += 1;
-    }
-    c
-};
-
-/// e^x − 1 for |x| < 1/2 by [`EXP_M1_SERIES`] (Horner's rule): what libm's `exp_m1` gives the
-/// scalar unloading there, to a few ulp.
-#[inline(always)]
-fn exp_m1_half<L: Lane>(x: L) -> L {
-    let mut sum = L::splat(EXP_M1_SERIES[0]);
-    let mut i = 1;
-    while i < EXP_M1_SERIES.len() {
-        sum = sum * x + L::splat(EXP_M1_SERIES[i]);
-        i += 1;
-    }
-    x * sum
-}
-
-impl<L: Lane> Unload<L> {
-    /// The flow at (λ, ζ) from the state (u0, 0, u2) at s = 0 (`Flow::from_state`), and the
-    /// lanes whose modes separate and whose pair oscillates and decays.
-    #[inline(always)]
-    fn from_state(lambda: L, zeta: L, u0: L, u2: L) -> (Unload<L>, L) {
-        let v = L::splat;
-        let two_zeta = v(2.0) * zeta;
-        let (a2, a0) = (two_zeta * (v(1.0) + lambda), two_zeta * lambda);
-        // three real roots: the pair does not oscillate, the lane goes back to the scalar path
-        let (r, p1, p0, mut ok, three) = lone_real_root(a2, a0);
-        ok &= !three;
-        let sigma = v(0.5) * p1;
-        let omega2 = p0 - sigma * sigma;
-        let gap = (r + sigma) * (r + sigma) + omega2;
-        ok &= gap.gt(v(0.0)) & p0.gt(v(0.0)) & omega2.gt(v(0.0));
-        // `flow::state_coefficients` with z̄' = 0: A = N(r)/gap, B = z̄ − A, D = −A r + σB
-        let a = (p0 * u0 + u2) / gap;
-        let sa = (p0 * u0.abs() + u2.abs()) / gap;
-        let b = u0 - a;
-        let d = -a * r + sigma * b;
-        let sb = u0.abs() + sa;
-        let sd = sa * r.abs() + sigma.abs() * sb;
-        let (p, q) = antiderivative(sigma, p0, b, d);
-        let sp = (sd + sigma.abs() * sb) / p0;
-        let mut jet = [[v(0.0); 3]; 6];
-        let (mut ar, mut c, mut s) = (a, b, d);
-        for row in &mut jet {
-            *row = [ar, c, s];
-            (ar, c, s) = (ar * r, s - sigma * c, -omega2 * c - sigma * s);
-        }
-        let flow = Flow4 {
-            size: [sa, sd, sp, sb + sigma.abs() * sp],
-            r,
-            sigma,
-            omega2,
-            omega: omega2.sqrt(),
-            a,
-            d,
-            p,
-            q,
-            jet,
-            hyper: three & !three,
-        };
-        (Unload { flow, sb, gap, p0 }, ok)
-    }
-
-    /// (e^{rs} − 1)/r's numerator, `exp_m1` below |rs| = 1/2 (`Flow::real_growth`, tight).
-    #[inline(always)]
-    fn grown(&self, pt: &Point4<L>) -> L {
-        let rt = self.flow.r * pt.t;
-        rt.abs()
-            .lt(L::splat(0.5))
-            .select(exp_m1_half(rt), pt.real - L::splat(1.0))
-    }
-
-    /// ∫₀^s u (`Flow::integral`).
-    #[inline(always)]
-    fn integral(&self, pt: &Point4<L>) -> L {
-        let f = &self.flow;
-        f.a * self.grown(pt) / f.r + f.p * pt.ec + f.q * pt.es - f.p
-    }
-
-    /// `Flow::rounding` of a flow from a state (`tight`): (for u, for ∫ u).
-    #[inline(always)]
-    fn rounding(&self, pt: &Point4<L>) -> (L, L) {
-        let v = L::splat;
-        let (f, one, t) = (&self.flow, v(1.0), pt.t);
-        let (cm, sm) = (pt.decay, pt.decay * t.min(one / f.omega));
-        let real = pt.real * (one + f.r.abs() * t);
-        let grow = one + (f.sigma.abs() + f.omega2.abs().sqrt()) * t;
-        let (cm, sm) = (cm * grow, sm * grow);
-        let [sa, sd, sp, sq] = f.size;
-        let z = sa * real + self.sb * cm + sd * sm;
-        let int = v(3.0) * sa * t * (one + real) + sp * (one + cm) + sq * sm;
-        (v(f64::EPSILON) * z, v(f64::EPSILON) * int)
-    }
-
-    /// `Flow::responses` of the states (x0, 0, 0) and (0, 0, x2): each one's (u, ∫ u) at
-    /// `pt`, the flow being linear in its start.
-    #[inline(always)]
-    fn responses(&self, x0: L, x2: L, pt: &Point4<L>) -> [(L, L); 2] {
-        let f = &self.flow;
-        let grown = self.grown(pt);
-        let response = |a: L, b: L| {
-            let d = -a * f.r + f.sigma * b;
-            let (p, q) = antiderivative(f.sigma, self.p0, b, d);
-            let z = a * pt.real + b * pt.ec + d * pt.es;
-            (z, a * grown / f.r + p * pt.ec + q * pt.es - p)
-        };
-        let a0 = self.p0 * x0 / self.gap;
-        let a2 = x2 / self.gap;
-        [response(a0, x0 - a0), response(a2, -a2)]
-    }
-}
-
-/// `flow::antiderivative`: P and Q of the pair part's antiderivative.
-#[inline(always)]
-fn antiderivative<L: Lane>(sigma: L, p0: L, b: L, d: L) -> (L, L) {
-    let p = -(d + sigma * b) / p0;
-    (p, b + sigma * p)
-}
+#[path = "unload.rs"]
+mod unload;
+use unload::Unload;
 
 /// `Flow::derivative_rounding` of the loading (B = −A: B's scale is A's).
 #[inline(always)]
@@ -359,7 +226,7 @@ pub fn flatten_kernel<L: Lane<Array = [f64; N]>, const N: usize>(
 }
 
 /// Four flattening cells at once, the lanes' own answers (`None` where a lane is handed
-/// back): with AVX2 one AVX register, elsewhere `wide`'s `f64x4`; each lane the bits of
+/// back): with AVX2 and FMA one AVX register, elsewhere `wide`'s `f64x4`; each lane the bits of
 /// [`flattening_lanes8`]'s (a `Pair`'s half runs the operations it would alone). The Monte
 /// Carlo's groups of four take it (`analysis::mc_impact`).
 pub fn flattening_lanes4(
@@ -368,19 +235,20 @@ pub fn flattening_lanes4(
     zp: [f64; LANES],
 ) -> [Option<Summary>; LANES] {
     #[cfg(target_arch = "x86_64")]
-    if std::arch::is_x86_feature_detected!("avx2") {
-        // SAFETY: the CPU has AVX2, just checked
+    if std::arch::is_x86_feature_detected!("avx2") && std::arch::is_x86_feature_detected!("fma") {
+        // SAFETY: the CPU has AVX2 and FMA, just checked
         return unsafe { flattening_lanes4_avx2(lambda, zeta, zp) };
     }
     flatten_kernel::<f64x4, LANES>(lambda, zeta, zp)
 }
 
-/// The kernel on one AVX register, compiled with AVX2 enabled.
+/// The kernel on one AVX register, compiled with AVX2 and FMA enabled (the lanes' `mul_add`
+/// one `vfmadd`, inlined: without FMA enabled the intrinsic is a call).
 ///
 /// # Safety
-/// The CPU must have AVX2.
+/// The CPU must have AVX2 and FMA.
 #[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2")]
+#[target_feature(enable = "avx2,fma")]
 unsafe fn flattening_lanes4_avx2(
     lambda: [f64; LANES],
     zeta: [f64; LANES],
@@ -393,7 +261,7 @@ unsafe fn flattening_lanes4_avx2(
 pub const FLAT_WIDE: usize = 2 * LANES;
 
 /// Eight flattening cells at once, the lanes' own answers (`None` where a lane is handed
-/// back): with AVX2 two AVX registers in one instruction stream (`pair.rs`), elsewhere two
+/// back): with AVX2 and FMA two AVX registers in one instruction stream (`pair.rs`), elsewhere two
 /// calls of the portable kernel; the same bits either way (tests/map_flatten_lanes.rs).
 pub fn flattening_lanes8(
     lambda: [f64; FLAT_WIDE],
@@ -401,8 +269,8 @@ pub fn flattening_lanes8(
     zp: [f64; FLAT_WIDE],
 ) -> [Option<Summary>; FLAT_WIDE] {
     #[cfg(target_arch = "x86_64")]
-    if std::arch::is_x86_feature_detected!("avx2") {
-        // SAFETY: the CPU has AVX2, just checked
+    if std::arch::is_x86_feature_detected!("avx2") && std::arch::is_x86_feature_detected!("fma") {
+        // SAFETY: the CPU has AVX2 and FMA, just checked
         return unsafe { flattening_lanes8_avx2(lambda, zeta, zp) };
     }
     flattening_lanes8_portable(lambda, zeta, zp)
@@ -420,12 +288,12 @@ pub fn flattening_lanes8_portable(
     std::array::from_fn(|i| if i < LANES { lo[i] } else { hi[i - LANES] })
 }
 
-/// The kernel on a pair of AVX registers, compiled with AVX2 enabled.
+/// The kernel on a pair of AVX registers, compiled with AVX2 and FMA enabled.
 ///
 /// # Safety
-/// The CPU must have AVX2.
+/// The CPU must have AVX2 and FMA.
 #[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2")]
+#[target_feature(enable = "avx2,fma")]
 unsafe fn flattening_lanes8_avx2(
     lambda: [f64; FLAT_WIDE],
     zeta: [f64; FLAT_WIDE],
@@ -435,8 +303,13 @@ unsafe fn flattening_lanes8_avx2(
     flatten_kernel::<Pair<Avx>, FLAT_WIDE>(lambda, zeta, zp)
 }
 
+/// Cells a last group at most holds for [`flattenings`] to run them one by one
+/// ([`flattening_one`], ≈ 2 900 instructions each) rather than padded to eight (≈ 6 200).
+const ALONE: usize = 2;
+
 /// `out[i]` = `flattening(lambda[i], zeta[i], zp[i])` to 1e-12, eight at a time through
-/// [`flattening_lanes8`] (the last group padded with its own last cell), each lane the lanes
+/// [`flattening_lanes8`] (a last group of more than `ALONE` padded with its own last cell,
+/// a smaller one cell by cell through [`flattening_one`]: the same bits), each lane the lanes
 /// hand back the scalar `flattening`'s answer. Slices of equal length.
 pub fn flattenings(lambda: &[f64], zeta: &[f64], zp: &[f64], out: &mut [Option<Summary>]) {
     assert!(lambda.len() == zeta.len() && zeta.len() == zp.len() && zp.len() == out.len());
@@ -449,10 +322,57 @@ pub fn flattenings(lambda: &[f64], zeta: &[f64], zp: &[f64], out: &mut [Option<S
         .zip(zeta.chunks(FLAT_WIDE))
         .zip(zp.chunks(FLAT_WIDE));
     for (((l, z), p), o) in groups.zip(out.chunks_mut(FLAT_WIDE)) {
+        if o.len() <= ALONE {
+            for (i, o) in o.iter_mut().enumerate() {
+                *o = flattening_one(l[i], z[i], p[i]);
+            }
+            continue;
+        }
         let (l, z, p) = (pad(l), pad(z), pad(p));
         let lanes = flattening_lanes8(l, z, p);
         for (i, o) in o.iter_mut().enumerate() {
             *o = lanes[i].or_else(|| flattening(l[i], z[i], p[i]));
         }
     }
+}
+
+#[path = "one.rs"]
+mod one;
+
+/// One flattening cell, the lanes' own answer on a lane of width one (`one.rs`; `None` where
+/// the lanes hand it back): any lane of [`flattening_lanes8`] or [`flattening_lanes4`] at the
+/// same (λ, ζ, z̄_p), bit for bit, at a cell's cost. With AVX2 and FMA compiled with FMA
+/// enabled (`f64::mul_add` one instruction, not libm's `fma`), elsewhere
+/// [`flattening_lane1_portable`]: the same bits.
+pub fn flattening_lane1(lambda: f64, zeta: f64, zp: f64) -> Option<Summary> {
+    #[cfg(target_arch = "x86_64")]
+    if std::arch::is_x86_feature_detected!("avx2") && std::arch::is_x86_feature_detected!("fma") {
+        // SAFETY: the CPU has AVX2 and FMA, just checked
+        return unsafe { flattening_lane1_fma(lambda, zeta, zp) };
+    }
+    flattening_lane1_portable(lambda, zeta, zp)
+}
+
+/// [`flattening_lane1`] compiled for the build's own target.
+pub fn flattening_lane1_portable(lambda: f64, zeta: f64, zp: f64) -> Option<Summary> {
+    let [s] = flatten_kernel::<one::One, 1>([lambda], [zeta], [zp]);
+    s
+}
+
+/// The kernel on one lane, compiled with AVX2 and FMA enabled.
+///
+/// # Safety
+/// The CPU must have AVX2 and FMA.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2,fma")]
+unsafe fn flattening_lane1_fma(lambda: f64, zeta: f64, zp: f64) -> Option<Summary> {
+    let [s] = flatten_kernel::<one::One, 1>([lambda], [zeta], [zp]);
+    s
+}
+
+/// A flattening cell alone as [`flattenings`] answers it in any group, bit for bit: the
+/// lanes' answer on one lane ([`flattening_lane1`]), else the scalar `flattening`'s. What a
+/// lone cell (`map::eval::cell_at`), `run` and a row of `bouncelab.impacts` take.
+pub fn flattening_one(lambda: f64, zeta: f64, zp: f64) -> Option<Summary> {
+    flattening_lane1(lambda, zeta, zp).or_else(|| flattening(lambda, zeta, zp))
 }

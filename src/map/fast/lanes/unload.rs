@@ -1,0 +1,145 @@
+//! The flattening's unloading over any [`Lane`] (issue 30 item 2; `lanes/flatten.rs` is its
+//! caller): the loading's cubic at (λ/k, ζ√k) as a `Flow4` from the turn's state (u0, 0, u2)
+//! (`flow::state_coefficients`' A, B, D with z̄' = 0), ∫₀^s u, and the rounding bounds of a
+//! flow from a state (the scalar `tight` flow's: `Flow::rounding`, `Flow::responses`), lane by
+//! lane, as `flatten::flattening` forms them.
+
+use super::super::super::lane::Lane;
+use super::super::{Flow4, Point4, lone_real_root};
+use crate::solver::series::INV_FACTORIAL;
+/// The unloading's flow: a `Flow4` from a state, and what its bounds need beyond it.
+pub(super) struct Unload<L: Lane> {
+    pub(super) flow: Flow4<L>,
+    /// B's rounding scale (the loading's B = −A shares A's; a state's does not).
+    sb: L,
+    /// (r + σ)² + ω² and σ² + ω², for the responses.
+    gap: L,
+    p0: L,
+}
+
+/// (e^x − 1)/x = Σ x^k/(k + 1)!, k ≤ 16, highest degree first: where |x| < 1/2 (the scalar
+/// `tight` flow's `exp_m1` range) the first term left out is below 2e-21 of the sum.
+const EXP_M1_SERIES: [f64; 17] = {
+    let mut c = [0.0; 17];
+    let mut i = 0;
+    while i < 17 {
+        c[i] = INV_FACTORIAL[17 - i];
+        i += 1;
+    }
+    c
+};
+
+/// e^x − 1 for |x| < 1/2 by [`EXP_M1_SERIES`] (Horner's rule): what libm's `exp_m1` gives the
+/// scalar unloading there, to a few ulp.
+#[inline(always)]
+fn exp_m1_half<L: Lane>(x: L) -> L {
+    let mut sum = L::splat(EXP_M1_SERIES[0]);
+    let mut i = 1;
+    while i < EXP_M1_SERIES.len() {
+        sum = sum * x + L::splat(EXP_M1_SERIES[i]);
+        i += 1;
+    }
+    x * sum
+}
+
+impl<L: Lane> Unload<L> {
+    /// The flow at (λ, ζ) from the state (u0, 0, u2) at s = 0 (`Flow::from_state`), and the
+    /// lanes whose modes separate and whose pair oscillates and decays.
+    #[inline(always)]
+    pub(super) fn from_state(lambda: L, zeta: L, u0: L, u2: L) -> (Unload<L>, L) {
+        let v = L::splat;
+        let two_zeta = v(2.0) * zeta;
+        let (a2, a0) = (two_zeta * (v(1.0) + lambda), two_zeta * lambda);
+        // three real roots: the pair does not oscillate, the lane goes back to the scalar path
+        let (r, p1, p0, mut ok, three) = lone_real_root(a2, a0);
+        ok &= !three;
+        let sigma = v(0.5) * p1;
+        let omega2 = p0 - sigma * sigma;
+        let gap = (r + sigma) * (r + sigma) + omega2;
+        ok &= gap.gt(v(0.0)) & p0.gt(v(0.0)) & omega2.gt(v(0.0));
+        // `flow::state_coefficients` with z̄' = 0: A = N(r)/gap, B = z̄ − A, D = −A r + σB
+        let a = (p0 * u0 + u2) / gap;
+        let sa = (p0 * u0.abs() + u2.abs()) / gap;
+        let b = u0 - a;
+        let d = -a * r + sigma * b;
+        let sb = u0.abs() + sa;
+        let sd = sa * r.abs() + sigma.abs() * sb;
+        let (p, q) = antiderivative(sigma, p0, b, d);
+        let sp = (sd + sigma.abs() * sb) / p0;
+        let mut jet = [[v(0.0); 3]; 6];
+        let (mut ar, mut c, mut s) = (a, b, d);
+        for row in &mut jet {
+            *row = [ar, c, s];
+            (ar, c, s) = (ar * r, s - sigma * c, -omega2 * c - sigma * s);
+        }
+        let flow = Flow4 {
+            size: [sa, sd, sp, sb + sigma.abs() * sp],
+            r,
+            sigma,
+            omega2,
+            omega: omega2.sqrt(),
+            a,
+            d,
+            p,
+            q,
+            jet,
+            hyper: three & !three,
+        };
+        (Unload { flow, sb, gap, p0 }, ok)
+    }
+
+    /// (e^{rs} − 1)/r's numerator, `exp_m1` below |rs| = 1/2 (`Flow::real_growth`, tight).
+    #[inline(always)]
+    fn grown(&self, pt: &Point4<L>) -> L {
+        let rt = self.flow.r * pt.t;
+        rt.abs()
+            .lt(L::splat(0.5))
+            .select(exp_m1_half(rt), pt.real - L::splat(1.0))
+    }
+
+    /// ∫₀^s u (`Flow::integral`).
+    #[inline(always)]
+    pub(super) fn integral(&self, pt: &Point4<L>) -> L {
+        let f = &self.flow;
+        f.a * self.grown(pt) / f.r + f.p * pt.ec + f.q * pt.es - f.p
+    }
+
+    /// `Flow::rounding` of a flow from a state (`tight`): (for u, for ∫ u).
+    #[inline(always)]
+    pub(super) fn rounding(&self, pt: &Point4<L>) -> (L, L) {
+        let v = L::splat;
+        let (f, one, t) = (&self.flow, v(1.0), pt.t);
+        let (cm, sm) = (pt.decay, pt.decay * t.min(one / f.omega));
+        let real = pt.real * (one + f.r.abs() * t);
+        let grow = one + (f.sigma.abs() + f.omega2.abs().sqrt()) * t;
+        let (cm, sm) = (cm * grow, sm * grow);
+        let [sa, sd, sp, sq] = f.size;
+        let z = sa * real + self.sb * cm + sd * sm;
+        let int = v(3.0) * sa * t * (one + real) + sp * (one + cm) + sq * sm;
+        (v(f64::EPSILON) * z, v(f64::EPSILON) * int)
+    }
+
+    /// `Flow::responses` of the states (x0, 0, 0) and (0, 0, x2): each one's (u, ∫ u) at
+    /// `pt`, the flow being linear in its start.
+    #[inline(always)]
+    pub(super) fn responses(&self, x0: L, x2: L, pt: &Point4<L>) -> [(L, L); 2] {
+        let f = &self.flow;
+        let grown = self.grown(pt);
+        let response = |a: L, b: L| {
+            let d = -a * f.r + f.sigma * b;
+            let (p, q) = antiderivative(f.sigma, self.p0, b, d);
+            let z = a * pt.real + b * pt.ec + d * pt.es;
+            (z, a * grown / f.r + p * pt.ec + q * pt.es - p)
+        };
+        let a0 = self.p0 * x0 / self.gap;
+        let a2 = x2 / self.gap;
+        [response(a0, x0 - a0), response(a2, -a2)]
+    }
+}
+
+/// `flow::antiderivative`: P and Q of the pair part's antiderivative.
+#[inline(always)]
+fn antiderivative<L: Lane>(sigma: L, p0: L, b: L, d: L) -> (L, L) {
+    let p = -(d + sigma * b) / p0;
+    (p, b + sigma * p)
+}
