@@ -44,26 +44,9 @@ fn two_passes(
     bouncelab::analysis::work::Elements,
 ) {
     let n = balls.len();
-    let mut f = vec![vec![-1.0; n]; 5];
+    let mut f = [(); 5].map(|()| vec![-1.0; n]);
     let mut rebound = vec![false; n];
-    let [
-        cor,
-        max_force,
-        contact_time,
-        max_indentation,
-        permanent_indentation,
-    ] = &mut f[..]
-    else {
-        unreachable!()
-    };
-    let mut out = Columns {
-        cor,
-        max_force,
-        contact_time,
-        max_indentation,
-        permanent_indentation,
-        rebound: &mut rebound,
-    };
+    let mut out = Columns::from_slices(f.each_mut().map(|v| v.as_mut_slice()), &mut rebound);
     let params = |i: usize| balls[i];
     let rest = first_pass(law, &params, &mut out);
     let count = rest.elements();
