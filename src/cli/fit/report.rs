@@ -68,6 +68,9 @@ struct DropRow {
     rebound_height: f64,
     v0: f64,
     cor: f64,
+    /// The COR's standard deviation from `--rebound-height-sd` (σ_R ∂e/∂R), when given.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    cor_sd: Option<f64>,
 }
 
 pub fn report<'a>(
@@ -134,6 +137,7 @@ pub fn report<'a>(
                 rebound_height: r,
                 v0: q.v0,
                 cor: q.cor,
+                cor_sd: q.cor_sd,
             })
             .collect(),
         cor: r.cor,
