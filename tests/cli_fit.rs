@@ -410,7 +410,7 @@ fn drops_weigh_by_their_reading() {
     let read = run(&sd_args);
     assert_eq!(read["lack_of_fit"]["test"], "chi2", "{read}");
     for (row, (h, r)) in read["drops"].as_array().unwrap().iter().zip(drops) {
-        let sd = 0.003 / (2.0 * (h * r as f64).sqrt());
+        let sd = 0.003 / (2.0 * (h * r).sqrt());
         assert!((f(row, "cor_sd") / sd - 1.0).abs() < 1e-12, "{row}");
     }
     // the precision scales out of the estimate and its interval

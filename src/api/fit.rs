@@ -4,7 +4,7 @@
 
 use super::{Ball, BallError};
 use crate::analysis::fit::{FitData, MultiFit, Param, fit_watched};
-use crate::measured::{Air, CorPoint, Flight, cor_per_rebound_height, drop_to_cor};
+use crate::measured::{Air, CorPoint, Flight, drop_to_cor, drops_to_points};
 use crate::text::number;
 
 /// A finite positive number, or an error naming `field` (quantities the model's parameters do
@@ -82,13 +82,12 @@ impl Ball {
 
     /// [`Ball::drops_to_cor`] with what is known of how the rebound heights were read. A
     /// height read to ±σ_R gives e = u(R)/v0 an error σ_e = σ_R ∂e/∂R
-    /// ([`cor_per_rebound_height`]; in vacuum 1/(2√(RH)), nine times larger from 0.2 m than
+    /// (`measured::cor_per_rebound_height`; in vacuum 1/(2√(RH)), nine times larger from 0.2 m than
     /// from 1.8 m): fitted with equal weights, such drops gave 95 % intervals that covered
     /// K_r and z_p 61 % and 68 % of the time (docs/fitting.md). With `rebound_sd` = σ_R (m)
     /// each row's `cor_sd` is σ_e, and the fit judges the scatter by χ²; without it each row's
-    /// `cor_sd_relative` is ∂e/∂R (scaled to an RMS of 1 over the drops) and the scale comes
-    /// from the misses. Either way the slope is taken at a rebound of at least σ_R, or
-    /// unknown, a hundredth of the drop (near R = 0 the first order fails).
+    /// `cor_sd_relative` is ∂e/∂R and the scale comes from the misses
+    /// ([`drops_to_points`]).
     ///
     /// ```
     /// let ball = bouncelab::Ball::from_preset("tennis")?;
@@ -123,33 +122,11 @@ impl Ball {
         }
         let radius = self.measured.as_ref().map_or(f64::NAN, |m| m.radius);
         let flight = Flight::new(self.params.mass, radius, air);
-        let mut points = Vec::with_capacity(drops.len());
         for (i, &(h, r)) in drops.iter().enumerate() {
             let (v0, cor) = drop_to_cor(h, r, &flight);
             check_corrected(i, drops.len(), (h, r), v0, cor)?;
-            let floor = rebound_sd.unwrap_or(0.01 * h);
-            let slope = cor_per_rebound_height(h, r, floor, &flight);
-            let mut p = CorPoint::new(v0, cor);
-            match rebound_sd {
-                Some(sd) => p.cor_sd = Some(sd * slope),
-                None => p.cor_sd_relative = slope,
-            }
-            points.push(p);
         }
-        if rebound_sd.is_none() {
-            // scaled to an RMS of 1, so the misses the fit sees keep their size
-            let n = points.len().max(1) as f64;
-            let rms = (points
-                .iter()
-                .map(|p| p.cor_sd_relative.powi(2))
-                .sum::<f64>()
-                / n)
-                .sqrt();
-            for p in &mut points {
-                p.cor_sd_relative /= rms;
-            }
-        }
-        Ok(points)
+        Ok(drops_to_points(drops, &flight, rebound_sd))
     }
 }
 

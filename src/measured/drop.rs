@@ -47,6 +47,46 @@ pub fn cor_per_rebound_height(drop: f64, rebound: f64, floor: f64, flight: &Flig
     flight.launch_speed_slope(rebound.max(floor)) / flight.fall_speed(drop)
 }
 
+/// Drops (drop height, rebound height, m) as COR points through `flight`, each weighed by its
+/// rebound height's reading: with `rebound_sd` = σ_R (m) each COR's `cor_sd` is
+/// σ_R ∂e/∂R; unknown, each `cor_sd_relative` is ∂e/∂R, scaled to an RMS of 1 over the drops
+/// (the fit takes the scale from its misses). The slope is taken at a rebound of at least σ_R,
+/// or unknown, a hundredth of the drop ([`cor_per_rebound_height`]). No checks: callers check
+/// the heights and the drag's correction first (`Ball::drops_to_cor_read`).
+pub fn drops_to_points(
+    drops: &[(f64, f64)],
+    flight: &Flight,
+    rebound_sd: Option<f64>,
+) -> Vec<super::CorPoint> {
+    let mut points: Vec<super::CorPoint> = drops
+        .iter()
+        .map(|&(h, r)| {
+            let (v0, cor) = drop_to_cor(h, r, flight);
+            let slope = cor_per_rebound_height(h, r, rebound_sd.unwrap_or(0.01 * h), flight);
+            let mut p = super::CorPoint::new(v0, cor);
+            match rebound_sd {
+                Some(sd) => p.cor_sd = Some(sd * slope),
+                None => p.cor_sd_relative = slope,
+            }
+            p
+        })
+        .collect();
+    if rebound_sd.is_none() {
+        // scaled to an RMS of 1, so the misses the fit sees keep their size
+        let n = points.len().max(1) as f64;
+        let rms = (points
+            .iter()
+            .map(|p| p.cor_sd_relative.powi(2))
+            .sum::<f64>()
+            / n)
+            .sqrt();
+        for p in &mut points {
+            p.cor_sd_relative /= rms;
+        }
+    }
+    points
+}
+
 impl DropTest {
     /// Columns `drop_height_m`, `rebound_height_m`.
     pub fn parse(text: &str) -> Result<DropTest, MeasuredError> {

@@ -13,7 +13,7 @@ mod rows;
 mod table;
 mod trace;
 
-pub use drop::{Air, DropTest, Flight, G, cor_per_rebound_height, drop_to_cor};
+pub use drop::{Air, DropTest, Flight, G, cor_per_rebound_height, drop_to_cor, drops_to_points};
 pub use oblique::{ObliqueRow, parse_oblique};
 pub use table::MAX_ROWS;
 pub use trace::{Trace, TraceSummary};
