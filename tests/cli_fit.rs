@@ -380,7 +380,7 @@ fn one_drop_is_an_exact_solve_not_a_nan_error() {
 #[test]
 fn drops_weigh_by_their_reading() {
     let dir = tempfile::tempdir().unwrap();
-    let drops = [
+    let drops: [(f64, f64); 5] = [
         (0.2, 0.118),
         (0.5, 0.292),
         (0.8, 0.461),
