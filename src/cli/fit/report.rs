@@ -196,6 +196,17 @@ pub fn text(
         free.join(", "),
         points(f.points)
     )?;
+    if data.drops.len() > 1 {
+        // how the drops were weighed (docs/fitting.md, "Each drop weighs by its reading")
+        let how = match data.points[0].cor_sd {
+            Some(_) => "each drop's COR carries its rebound height's reading error, σ_R ∂e/∂R",
+            None => {
+                "each drop weighed by its rebound height's reading (σ_e ∝ ∂e/∂R; \
+                     --rebound-height-sd gives σ_R)"
+            }
+        };
+        writeln!(out, "{how}")?;
+    }
     if data.trace.is_some() {
         // the trace's speed is not in the data: say which one the fit assumed
         writeln!(
