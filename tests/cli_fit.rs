@@ -371,3 +371,68 @@ fn one_drop_is_an_exact_solve_not_a_nan_error() {
     assert!(f(&v["fitted"]["k_r"], "std_error").is_finite(), "{v}");
     assert_eq!(v["not_pinned"], serde_json::json!(["k_r"]));
 }
+
+/// Drops from 0.2 … 1.8 m: each COR weighs by its rebound height's reading (docs/fitting.md,
+/// "Each drop weighs by its reading"). The same drops from a file and from the flags give
+/// the same fit — a file's rows are checked one by one (for their line numbers) but weighed
+/// together; `--rebound-height-sd` gives each drop its σ_e = σ_R/(2√(RH)) and a χ² test;
+/// and it is refused where there is no rebound height, or not positive.
+#[test]
+fn drops_weigh_by_their_reading() {
+    let dir = tempfile::tempdir().unwrap();
+    let drops: [(f64, f64); 5] = [
+        (0.2, 0.118),
+        (0.5, 0.292),
+        (0.8, 0.461),
+        (1.2, 0.69),
+        (1.8, 1.02),
+    ];
+    let mut text = String::from("drop_height_m,rebound_height_m\n");
+    let mut flags: Vec<String> = Vec::new();
+    for (h, r) in drops {
+        text.push_str(&format!("{h},{r}\n"));
+        flags.extend(["--drop-height".into(), h.to_string()]);
+        flags.extend(["--rebound-height".into(), r.to_string()]);
+    }
+    std::fs::write(dir.path().join("drops.csv"), text).unwrap();
+    let run = |extra: &[&str]| {
+        let mut args = vec![
+            "fit", "--preset", "tennis", "--free", "k_r", "--format", "json",
+        ];
+        args.extend_from_slice(extra);
+        json_at(dir.path(), &args)
+    };
+    let flag_args: Vec<&str> = flags.iter().map(String::as_str).collect();
+    let (from_file, from_flags) = (run(&["--drop-test", "drops.csv"]), run(&flag_args));
+    assert_eq!(from_file["fitted"], from_flags["fitted"]);
+    let mut sd_args = flag_args.clone();
+    sd_args.extend(["--rebound-height-sd", "0.003"]);
+    let read = run(&sd_args);
+    assert_eq!(read["lack_of_fit"]["test"], "chi2", "{read}");
+    for (row, (h, r)) in read["drops"].as_array().unwrap().iter().zip(drops) {
+        let sd = 0.003 / (2.0 * (h * r).sqrt());
+        assert!((f(row, "cor_sd") / sd - 1.0).abs() < 1e-12, "{row}");
+    }
+    // the precision scales out of the estimate and its interval
+    let (a, b) = (&from_flags["fitted"]["k_r"], &read["fitted"]["k_r"]);
+    assert!(
+        (f(a, "value") / f(b, "value") - 1.0).abs() < 1e-6,
+        "{a} {b}"
+    );
+    bad(
+        &["fit", "--cor", "0.7", "--rebound-height-sd", "0.003"],
+        &["--rebound-height-sd", "drop tests"],
+    );
+    bad(
+        &[
+            "fit",
+            "--drop-height",
+            "1",
+            "--rebound-height",
+            "0.5",
+            "--rebound-height-sd",
+            "-1",
+        ],
+        &["rebound_height_sd", "positive"],
+    );
+}

@@ -77,12 +77,10 @@ fn cor_table_with_flattening() {
 }
 
 /// Drops from 0.2 … 1.8 m (v0 ≈ 2 … 6 m/s), rebound heights read to ±3 mm, each COR given
-/// the standard deviation that reading makes of it (e = √(R/H): σ_e = σ_R / (2√(R H)), nine
-/// times larger at 0.2 m than at 1.8 m). Over 300 seeds of tests/seeded/mod.rs the 95 %
-/// intervals so fitted covered the truth 291 (K_r) and 292 (z_p) times; fitted without the
-/// standard deviations (equal weights, as `bouncelab fit --drop-height` fits today) only 184
-/// and 204 times: this test's seed covered then by chance (a defect of the unweighted drop
-/// fit's intervals, reported, not of this test's threshold).
+/// by hand the standard deviation that reading makes of it (e = √(R/H): σ_e = σ_R / (2√(R H)),
+/// nine times larger at 0.2 m than at 1.8 m) — the table's own path to what
+/// `Ball::drops_to_cor_read` computes for `fit --drop-height` (tests/fit_drop_coverage.rs
+/// counts its coverage).
 #[test]
 fn drop_test() {
     use bouncelab::measured::{CorPoint, drop_to_cor};
@@ -105,6 +103,7 @@ fn drop_test() {
                 v0,
                 cor,
                 cor_sd: Some(0.003 / (2.0 * (rebound * h).sqrt())),
+                cor_sd_relative: 1.0,
                 max_force: None,
                 contact_time: None,
                 line: 0,
@@ -215,6 +214,7 @@ fn cor_force_and_contact_time_jointly() {
                     v0,
                     cor: r.cor + 0.005 * rng.normal(),
                     cor_sd: None,
+                    cor_sd_relative: 1.0,
                     max_force: Some(r.max_force * (1.0 + 0.02 * rng.normal())),
                     contact_time: Some(r.contact_time.unwrap() * (1.0 + 0.01 * rng.normal())),
                     line: 0,

@@ -360,3 +360,29 @@ fn an_unpinned_parameter_is_said_so() {
     assert_ne!(app.setting().params, before);
     assert_eq!(app.fit_standing(), Some(Standing::Applied));
 }
+
+/// A drop-test file fitted in the explorer weighs each drop by its rebound height's reading,
+/// as `bouncelab fit --drop-test` does (it weighed them equally: intervals too narrow, the
+/// low drops' CORs as precise as the high ones'): the fit's points are the library's.
+#[test]
+fn drops_weigh_by_their_reading_as_the_command_line_weighs_them() {
+    use bouncelab::tui::views::fit::state::FitInput;
+    let mut app = App::new(Preset::embedded().remove(1), false);
+    let text = "drop_height_m,rebound_height_m\n0.2,0.11\n1.0,0.55\n2,1.05\n";
+    app.update(Action::MeasuredLoaded {
+        path: "drops.csv".into(),
+        data: bouncelab::measured::parse_any(text).unwrap(),
+    });
+    let r = ask_fit(&mut app);
+    let FitInput::Cor(points) = &r.input else {
+        panic!("{:?}", r.input)
+    };
+    let pairs = [(0.2, 0.11), (1.0, 0.55), (2.0, 1.05)];
+    let flight = bouncelab::measured::Flight::vacuum();
+    assert_eq!(
+        points,
+        &bouncelab::measured::drops_to_points(&pairs, &flight, None)
+    );
+    // the lowest drop's COR the least precise: ∂e/∂R = 1/(2√(RH)) largest there
+    assert!(points[0].cor_sd_relative > 3.0 * points[2].cor_sd_relative);
+}

@@ -149,3 +149,20 @@ fn the_picker_scrolls_at_a_small_size() {
     press(&mut app, &[KeyCode::Home, KeyCode::Down], dir.path());
     assert_eq!(picker_of(&app).selected, 1);
 }
+
+/// The list that comes back while the terminal is below the minimum size is taken, as every
+/// other answer of the loop is (it was dropped: `g` then opened nothing, and the saved
+/// session's message was lost the same way).
+#[test]
+fn the_list_that_comes_back_while_the_terminal_is_too_small_is_taken() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut app = superball();
+    assert_eq!(app.update(Action::OpenPicker), [Effect::ListPresets]);
+    app.update(Action::Resize(40, 10));
+    assert!(app.too_small());
+    let (entries, error) = picker::list_in(Some(dir.path()));
+    app.update(Action::PresetsListed(entries, error));
+    app.update(Action::Resize(120, 40));
+    assert_eq!(app.mode(), Mode::Picker);
+    assert!(!picker_of(&app).entries.is_empty());
+}

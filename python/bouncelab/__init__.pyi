@@ -242,9 +242,12 @@ def fit_drops(
     air_density: float = 1.204,
     law: Optional[Law] = None,
     params: Optional[ParamSet] = None,
+    rebound_height_sd: Optional[float] = None,
 ) -> MultiFit:
     """k_r, z_p fitted to drop tests (m), in vacuum or with quadratic drag, as ``bouncelab fit
-    --drop-height H --rebound-height R …``; ``drops`` adds each drop's v0 and COR."""
+    --drop-height H --rebound-height R …``, each drop weighed by its rebound height's reading
+    (``rebound_height_sd``, m, when known: each COR's ``cor_sd`` and a χ² lack-of-fit test);
+    ``drops`` adds each drop's v0 and COR (and ``cor_sd``)."""
 
 class ObliqueEstimate(TypedDict):
     value: float

@@ -256,9 +256,12 @@ pub fn fit_cor_table<'py>(
 /// Several parameters fitted to drop tests, as `bouncelab fit --drop-height H --rebound-height
 /// R …`: drop and rebound heights (m) of the bottom of the ball, turned into impact speeds and
 /// CORs in vacuum, or with quadratic drag when `drag_coefficient` is given (air density
-/// `air_density`, kg/m³). The dict adds `drops`: the heights with the speed and COR of each.
+/// `air_density`, kg/m³). Each drop weighs by its rebound height's reading (σ_e = σ_R ∂e/∂R,
+/// docs/fitting.md): with `rebound_height_sd` = σ_R (m) each COR carries σ_e (`drops["cor_sd"]`)
+/// and the lack of fit is χ²; without it the scale comes from the misses. The dict adds
+/// `drops`: the heights with the speed and COR of each.
 #[pyfunction]
-#[pyo3(signature = (drop_heights, rebound_heights, *, preset="superball", free=None, drag_coefficient=None, air_density=1.204, law=None, params=None))]
+#[pyo3(signature = (drop_heights, rebound_heights, *, preset="superball", free=None, drag_coefficient=None, air_density=1.204, law=None, params=None, rebound_height_sd=None))]
 #[allow(clippy::too_many_arguments)]
 pub fn fit_drops<'py>(
     py: Python<'py>,
@@ -270,6 +273,7 @@ pub fn fit_drops<'py>(
     air_density: f64,
     law: Option<&str>,
     params: Option<&str>,
+    rebound_height_sd: Option<f64>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let (h, r) = (floats(drop_heights)?, floats(rebound_heights)?);
     same_length(["drop_heights", "rebound_heights"], h.len(), r.len())?;
@@ -280,7 +284,9 @@ pub fn fit_drops<'py>(
         drag_coefficient: cd,
     });
     let pairs: Vec<(f64, f64)> = h.iter().copied().zip(r.iter().copied()).collect();
-    let points: Vec<CorPoint> = ball.drops_to_cor(&pairs, air).map_err(error)?;
+    let points: Vec<CorPoint> = ball
+        .drops_to_cor_read(&pairs, air, rebound_height_sd)
+        .map_err(error)?;
     let fit = crate::interrupt::detach_watched(py, |w| {
         ball.fit_watched(FitData::Cor(&points), free.as_deref(), w)
     })?;
@@ -296,6 +302,10 @@ pub fn fit_drops<'py>(
     drops.set_item("rebound_height", array(py, r))?;
     drops.set_item("v0", array(py, points.iter().map(|p| p.v0).collect()))?;
     drops.set_item("cor", array(py, points.iter().map(|p| p.cor).collect()))?;
+    if rebound_height_sd.is_some() {
+        let sd = points.iter().map(|p| p.cor_sd.unwrap_or(f64::NAN)).collect();
+        drops.set_item("cor_sd", array(py, sd))?;
+    }
     d.set_item("drops", drops)?;
     Ok(d)
 }

@@ -128,6 +128,28 @@ def test_fit_drops_recovers_k_r_and_z_p():
     same_as_cli(fit, cli_json(*args))
 
 
+def test_fit_drops_with_the_reading_precision_equals_the_cli():
+    """Rebound heights read to ±3 mm: each COR carries σ_R ∂e/∂R = σ_R/(2√(RH)) in vacuum, the
+    lack of fit is χ², and the estimates are those without the precision (it scales out)."""
+    drop = np.array([0.2, 0.5, 0.8, 1.2, 1.8])
+    base = superball(k_r=1.15, z_p=0.8)
+    e = cor_at(np.sqrt(2 * G * drop), base)
+    rebound = e**2 * drop + 0.003 * np.random.default_rng(5).normal(size=drop.size)
+    fit = bouncelab.fit_drops(drop, rebound, preset="superball", rebound_height_sd=0.003)
+    np.testing.assert_allclose(fit["drops"]["cor_sd"], 0.003 / (2 * np.sqrt(rebound * drop)),
+                               rtol=1e-12)
+    assert fit["lack_of_fit"]["test"] == "chi2"
+    unknown = bouncelab.fit_drops(drop, rebound, preset="superball")
+    assert "cor_sd" not in unknown["drops"]
+    for name in ("k_r", "z_p"):
+        np.testing.assert_allclose(fit["fitted"][name]["ci95"], unknown["fitted"][name]["ci95"],
+                                   rtol=1e-6)
+    args = ["fit", "--format", "json", "--rebound-height-sd", "0.003"]
+    for h, r in zip(drop, rebound):
+        args += ["--drop-height", repr(float(h)), "--rebound-height", repr(float(r))]
+    same_as_cli(fit, cli_report(*args))
+
+
 def cli_report(*args):
     """The command line's JSON report whether or not the fit answered: exit 0 with
     `identified` true, or exit 1 with it false (issue 27: the report is still printed)."""

@@ -4,7 +4,7 @@
 
 use super::{Ball, BallError};
 use crate::analysis::fit::{FitData, MultiFit, Param, fit_watched};
-use crate::measured::{Air, CorPoint, Flight, drop_to_cor};
+use crate::measured::{Air, CorPoint, Flight, drop_to_cor, drops_to_points};
 use crate::text::number;
 
 /// A finite positive number, or an error naming `field` (quantities the model's parameters do
@@ -60,7 +60,9 @@ impl Ball {
 
     /// Drop tests as a COR table: each (drop height, rebound height) pair (m) checked and
     /// turned into an impact speed and a COR by this ball's flight ([`drop_to_cor`]), in
-    /// vacuum or through `air` (drag on the preset's measured radius).
+    /// vacuum or through `air` (drag on the preset's measured radius); each row weighed by
+    /// its rebound height's reading, with the reading's precision unknown
+    /// ([`Ball::drops_to_cor_read`] with `None`).
     ///
     /// ```
     /// let ball = bouncelab::Ball::from_preset("tennis")?;
@@ -75,9 +77,38 @@ impl Ball {
         drops: &[(f64, f64)],
         air: Option<Air>,
     ) -> Result<Vec<CorPoint>, BallError> {
+        self.drops_to_cor_read(drops, air, None)
+    }
+
+    /// [`Ball::drops_to_cor`] with what is known of how the rebound heights were read. A
+    /// height read to ±σ_R gives e = u(R)/v0 an error σ_e = σ_R ∂e/∂R
+    /// (`measured::cor_per_rebound_height`; in vacuum 1/(2√(RH)), nine times larger from 0.2 m than
+    /// from 1.8 m): fitted with equal weights, such drops gave 95 % intervals that covered
+    /// K_r and z_p 61 % and 68 % of the time (docs/fitting.md). With `rebound_sd` = σ_R (m)
+    /// each row's `cor_sd` is σ_e, and the fit judges the scatter by χ²; without it each row's
+    /// `cor_sd_relative` is ∂e/∂R and the scale comes from the misses
+    /// ([`drops_to_points`]).
+    ///
+    /// ```
+    /// let ball = bouncelab::Ball::from_preset("tennis")?;
+    /// let pts = ball.drops_to_cor_read(&[(0.2, 0.1), (1.8, 0.9)], None, Some(0.003))?;
+    /// // the same COR, its error nine times larger from the lower drop
+    /// let (low, high) = (pts[0].cor_sd.unwrap(), pts[1].cor_sd.unwrap());
+    /// assert!((low / high - 9.0).abs() < 1e-9);
+    /// # Ok::<(), bouncelab::BallError>(())
+    /// ```
+    pub fn drops_to_cor_read(
+        &self,
+        drops: &[(f64, f64)],
+        air: Option<Air>,
+        rebound_sd: Option<f64>,
+    ) -> Result<Vec<CorPoint>, BallError> {
         if let Some(a) = air {
             positive("drag_coefficient", a.drag_coefficient)?;
             positive("air_density", a.density)?;
+        }
+        if let Some(sd) = rebound_sd {
+            positive("rebound_height_sd", sd)?;
         }
         for &(h, r) in drops {
             positive("drop_height", h)?;
@@ -91,15 +122,11 @@ impl Ball {
         }
         let radius = self.measured.as_ref().map_or(f64::NAN, |m| m.radius);
         let flight = Flight::new(self.params.mass, radius, air);
-        drops
-            .iter()
-            .enumerate()
-            .map(|(i, &(h, r))| {
-                let (v0, cor) = drop_to_cor(h, r, &flight);
-                check_corrected(i, drops.len(), (h, r), v0, cor)?;
-                Ok(CorPoint::new(v0, cor))
-            })
-            .collect()
+        for (i, &(h, r)) in drops.iter().enumerate() {
+            let (v0, cor) = drop_to_cor(h, r, &flight);
+            check_corrected(i, drops.len(), (h, r), v0, cor)?;
+        }
+        Ok(drops_to_points(drops, &flight, rebound_sd))
     }
 }
 

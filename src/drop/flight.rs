@@ -150,6 +150,13 @@ impl Flight {
         (G * (2.0 * x * h).exp_m1() / x).sqrt()
     }
 
+    /// How fast [`Flight::launch_speed_for`] grows with the height, du/dh: from
+    /// u² = (g/x)(e^{2xh} − 1), 2u du = 2g e^{2xh} dh, so du/dh = g e^{2xh}/u (g/u in vacuum,
+    /// where u = √(2gh)); infinite at h = 0.
+    pub fn launch_speed_slope(&self, h: f64) -> f64 {
+        G * (2.0 * self.drag_per_mass * h).exp() / self.launch_speed_for(h)
+    }
+
     /// The fall from rest that ends at speed `v`: the inverse of [`Flight::fall_speed`],
     /// s = −ln(1 − x v²/g)/(2x); `None` at or above the terminal speed, which no fall reaches.
     pub fn fall_height_for(&self, v: f64) -> Option<f64> {

@@ -13,7 +13,7 @@ mod rows;
 mod table;
 mod trace;
 
-pub use drop::{Air, DropTest, Flight, G, drop_to_cor};
+pub use drop::{Air, DropTest, Flight, G, cor_per_rebound_height, drop_to_cor, drops_to_points};
 pub use oblique::{ObliqueRow, parse_oblique};
 pub use table::MAX_ROWS;
 pub use trace::{Trace, TraceSummary};
@@ -61,6 +61,13 @@ pub struct CorPoint {
     pub cor: f64,
     /// Standard deviation of `cor` (weights the fit), if given.
     pub cor_sd: Option<f64>,
+    /// Where `cor_sd` is not given, this row's COR error relative to the other rows' (1: all
+    /// alike, as in a COR table): the fit divides the row's miss by it times the scale it
+    /// finds from the misses, so the row weighs by its own precision while the intervals
+    /// still take their size from the data. A drop test sets it from the reading of the
+    /// rebound height, σ_e ∝ ∂e/∂R ([`cor_per_rebound_height`], docs/fitting.md):
+    /// a COR read from a low rebound weighs less.
+    pub cor_sd_relative: f64,
     /// Peak force measured at this speed, N, if given.
     pub max_force: Option<f64>,
     /// Contact time measured at this speed, s, if given.
@@ -76,6 +83,7 @@ impl CorPoint {
             v0,
             cor,
             cor_sd: None,
+            cor_sd_relative: 1.0,
             max_force: None,
             contact_time: None,
             line: 0,
@@ -214,6 +222,7 @@ impl CorTable {
                 v0: in_domain(&p, 0, i, "impact speed", f64::MAX)?.unwrap_or(f64::NAN),
                 cor,
                 cor_sd: in_domain(&p, 2, i, "COR standard deviation", 1.0)?,
+                cor_sd_relative: 1.0,
                 max_force: in_domain(&p, 3, i, "peak force", f64::MAX)?,
                 contact_time: in_domain(&p, 4, i, "contact time", f64::MAX)?,
                 line: p.lines[i],

@@ -91,6 +91,7 @@ pub fn cor_table(
                 v0,
                 cor: (e + sd * rng.normal()).clamp(0.0, 1.0),
                 cor_sd: None,
+                cor_sd_relative: 1.0,
                 max_force: None,
                 contact_time: None,
                 line: 0,

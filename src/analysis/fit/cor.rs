@@ -1,5 +1,6 @@
 //! The COR-table problem: x = (ln p₁ … ln p_k); one impact per measured speed, residuals
-//! (e_model − e)/σ_e for each COR (σ_e from `cor_sd`, else `scale[0]`), and, where a row has
+//! (e_model − e)/σ_e for each COR (σ_e from `cor_sd`, else `scale[0]` times the row's
+//! `cor_sd_relative`: a drop test's rows weigh by their rebound heights' reading), and, where a row has
 //! them, the relative misses of peak force and contact time, (F_model/F − 1)/scale[1] and
 //! (t_model/t − 1)/scale[2]. The scales start at 1; when kinds are mixed the fit sets them to
 //! each kind's RMS and fits again, so that each kind weighs by its own scatter. Every model
@@ -119,12 +120,13 @@ impl<'a> CorProblem<'a> {
         n
     }
 
-    /// The RMS of each kind of residual at `x`, unscaled: (COR, force, time).
+    /// The RMS of each kind of residual at `x`, unscaled (the COR's relative to each row's
+    /// `cor_sd_relative`): (COR, force, time).
     pub fn rms_by_kind(&self, x: &[f64]) -> Option<[f64; 3]> {
         let pred = self.predict(x)?;
         let mut acc = [(0.0, 0usize); 3];
         for (pt, (e, f, t)) in self.points.iter().zip(pred) {
-            acc[0].0 += (e - pt.cor).powi(2);
+            acc[0].0 += ((e - pt.cor) / pt.cor_sd_relative).powi(2);
             acc[0].1 += 1;
             if let Some(m) = pt.max_force {
                 acc[1].0 += (f / m - 1.0).powi(2);
@@ -209,7 +211,7 @@ impl Residuals for CorProblem<'_> {
         let [se, sf, st] = [0, 1, 2].map(|k| self.scale[k].get());
         let mut r = Vec::with_capacity(self.count());
         for (pt, (e, f, t)) in self.points.iter().zip(pred) {
-            r.push((e - pt.cor) / pt.cor_sd.unwrap_or(se));
+            r.push((e - pt.cor) / pt.cor_sd.unwrap_or(se * pt.cor_sd_relative));
             if let Some(m) = pt.max_force {
                 r.push((f / m - 1.0) / sf);
             }

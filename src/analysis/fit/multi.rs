@@ -348,20 +348,9 @@ fn warnings(
     u: &super::stats::Uncertainty,
     sol: &Solution,
 ) -> Vec<String> {
-    let mut w = Vec::new();
     let dof = sol.residuals.len().saturating_sub(names.len());
-    if dof == 0 {
-        w.push(
-            "as many data as parameters: no residual is left to estimate the uncertainty".into(),
-        );
-    }
-    if u.condition > CONDITION_MAX {
-        w.push(format!(
-            "{} is not identifiable from these data: the fit cannot tell it from the other \
-             parameters (condition number {:.1e}); fix it (leave it out of --free) or add data",
-            names[u.weakest], u.condition
-        ));
-    }
+    let hint = "fix it (leave it out of --free) or add data";
+    let mut w = verdict::pinning_warnings(dof, u, names[u.weakest], hint);
     for e in fitted {
         if dof > 0 && e.std_error.is_finite() && e.ci95[1] - e.ci95[0] > e.value {
             w.push(format!(
@@ -371,10 +360,7 @@ fn warnings(
         }
     }
     if !sol.converged {
-        w.push(format!(
-            "the fit stopped after {} iterations without converging",
-            sol.iterations
-        ));
+        w.push(verdict::not_converged(sol.iterations));
     }
     w
 }

@@ -104,6 +104,37 @@ pub fn no_answer_reasons(converged: bool, not_pinned: &[&str]) -> Vec<String> {
     why
 }
 
+/// The warnings every fit gives on how well its data pin it: no residual left to estimate
+/// the uncertainty from (`dof` 0), and the parameter `weakest` not identifiable where the
+/// column-scaled Jacobian's condition number passes `stats::CONDITION_MAX`, with `hint` —
+/// what this kind of fit's user can do about it.
+pub(super) fn pinning_warnings(
+    dof: usize,
+    u: &super::stats::Uncertainty,
+    weakest: &str,
+    hint: &str,
+) -> Vec<String> {
+    let mut w = Vec::new();
+    if dof == 0 {
+        w.push(
+            "as many data as parameters: no residual is left to estimate the uncertainty".into(),
+        );
+    }
+    if u.condition > super::stats::CONDITION_MAX {
+        w.push(format!(
+            "{weakest} is not identifiable from these data: the fit cannot tell it from the \
+             other parameters (condition number {:.1e}); {hint}",
+            u.condition
+        ));
+    }
+    w
+}
+
+/// The warning of a fit that stopped after `iterations` without converging.
+pub(super) fn not_converged(iterations: usize) -> String {
+    format!("the fit stopped after {iterations} iterations without converging")
+}
+
 /// The free parameters (the first `fitted.len()` variables of `best`) the data do not pin,
 /// with `quantities` fitted in all (a trace's start and baseline included).
 pub(super) fn not_pinned(

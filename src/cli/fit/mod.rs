@@ -68,6 +68,12 @@ pub struct FitArgs {
         allow_hyphen_values = true
     )]
     pub air_density: f64,
+    /// Drop tests: how precisely the rebound heights were read (standard deviation, m): each
+    /// COR then carries its error, σ_R ∂e/∂R, and the fit judges the scatter by χ²
+    /// [default: unknown — each drop still weighed by its reading (a low rebound's COR less),
+    /// the scale taken from the misses]
+    #[arg(long, value_name = "S", value_parser = super::number::number, allow_hyphen_values = true)]
+    pub rebound_height_sd: Option<f64>,
     /// Impact speed v0 (m/s) the COR or the trace was measured at [default: the preset's
     /// measured v0]
     #[arg(long, value_name = "V", value_parser = super::number::number, allow_hyphen_values = true)]
@@ -161,6 +167,12 @@ impl FitArgs {
             anyhow::bail!(
                 "--drag-coefficient corrects drop tests (--drop-height, --drop-test) only: a \
                  COR, a COR table or a force-time trace has no flight to correct"
+            );
+        }
+        if self.rebound_height_sd.is_some() && given.len() == 1 && !drops {
+            anyhow::bail!(
+                "--rebound-height-sd is the reading of drop tests' rebound heights \
+                 (--drop-height, --drop-test) only: these data have no rebound height"
             );
         }
         match given.len() {

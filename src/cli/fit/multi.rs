@@ -29,25 +29,24 @@ fn load(a: &FitArgs, source: &Source, ball: &Ball) -> anyhow::Result<Loaded> {
         density: a.air_density,
         drag_coefficient: cd,
     });
-    // the library checks the air (whatever the data) and the drop heights
-    ball.drops_to_cor(&[], air)?;
-    // a file's rows one at a time, so that a refused drop is named by its line
+    // the library checks the air and the reading's precision (whatever the data) and the drop
+    // heights
+    ball.drops_to_cor_read(&[], air, a.rebound_height_sd)?;
+    // a file's rows checked one at a time, so that a refused drop is named by its line; then
+    // converted together, each weighed against the others (`Ball::drops_to_cor_read`)
     let from_drops = |drops: &[(f64, f64, usize)]| -> anyhow::Result<Vec<CorPoint>> {
-        if drops.iter().all(|d| d.2 == 0) {
-            let pairs: Vec<(f64, f64)> = drops.iter().map(|d| (d.0, d.1)).collect();
-            return Ok(ball.drops_to_cor(&pairs, air)?);
-        }
         let file = match source {
             Source::DropFile(p) => p.display().to_string(),
             _ => String::new(),
         };
-        let mut points = Vec::with_capacity(drops.len());
-        for d in drops {
-            let mut p = ball
-                .drops_to_cor(&[(d.0, d.1)], air)
+        for d in drops.iter().filter(|d| d.2 != 0) {
+            ball.drops_to_cor(&[(d.0, d.1)], air)
                 .map_err(|e| anyhow::anyhow!("{file}:{}:1: {e}", d.2))?;
-            p[0].line = d.2;
-            points.append(&mut p);
+        }
+        let pairs: Vec<(f64, f64)> = drops.iter().map(|d| (d.0, d.1)).collect();
+        let mut points = ball.drops_to_cor_read(&pairs, air, a.rebound_height_sd)?;
+        for (p, d) in points.iter_mut().zip(drops) {
+            p.line = d.2;
         }
         Ok(points)
     };

@@ -68,6 +68,9 @@ struct DropRow {
     rebound_height: f64,
     v0: f64,
     cor: f64,
+    /// The COR's standard deviation from `--rebound-height-sd` (σ_R ∂e/∂R), when given.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    cor_sd: Option<f64>,
 }
 
 pub fn report<'a>(
@@ -134,6 +137,7 @@ pub fn report<'a>(
                 rebound_height: r,
                 v0: q.v0,
                 cor: q.cor,
+                cor_sd: q.cor_sd,
             })
             .collect(),
         cor: r.cor,
@@ -192,6 +196,17 @@ pub fn text(
         free.join(", "),
         points(f.points)
     )?;
+    if data.drops.len() > 1 {
+        // how the drops were weighed (docs/fitting.md, "Each drop weighs by its reading")
+        let how = match data.points[0].cor_sd {
+            Some(_) => "each drop's COR carries its rebound height's reading error, σ_R ∂e/∂R",
+            None => {
+                "each drop weighed by its rebound height's reading (σ_e ∝ ∂e/∂R; \
+                     --rebound-height-sd gives σ_R)"
+            }
+        };
+        writeln!(out, "{how}")?;
+    }
     if data.trace.is_some() {
         // the trace's speed is not in the data: say which one the fit assumed
         writeln!(

@@ -14,28 +14,12 @@ impl App {
             .is_some_and(|(w, h)| w < MIN_WIDTH || h < MIN_HEIGHT)
     }
 
-    /// Whether `action` may act below the minimum size: quitting, the new size, and the
-    /// answers of the loop and the worker (they change nothing the user would miss).
+    /// Whether `action` may act below the minimum size: quitting, the new size, the clock,
+    /// and every answer of the loop and the workers (`answers::is_answer`: dropped, a
+    /// result would be lost — tests/tui_oblique.rs, tests/tui_picker.rs).
     pub(super) fn acts_when_too_small(action: &Action) -> bool {
-        matches!(
-            action,
-            Action::Quit
-                | Action::Resize(..)
-                | Action::SpeedReady(..)
-                | Action::ModelsReady(..)
-                | Action::MapPass { .. }
-                | Action::Tick(_)
-                | Action::Exported { .. }
-                | Action::ExportFailed { .. }
-                | Action::Saved { .. }
-                | Action::SaveExists { .. }
-                | Action::SaveFailed { .. }
-                | Action::MeasuredLoaded { .. }
-                | Action::MeasuredFailed { .. }
-                | Action::FitReady(..)
-                | Action::ObliqueMapReady { .. }
-                | Action::WorkerStopped { .. }
-        )
+        matches!(action, Action::Quit | Action::Resize(..) | Action::Tick(_))
+            || super::answers::is_answer(action)
     }
 
     pub(super) fn resize(&mut self, width: u16, height: u16) {

@@ -4,7 +4,7 @@
 use super::{NAMES, ObliqueFit, Problem};
 use crate::analysis::fit::lm::{self, Residuals};
 use crate::analysis::fit::profile;
-use crate::analysis::fit::stats::{CONDITION_MAX, Uncertainty, uncertainty};
+use crate::analysis::fit::stats::{Uncertainty, uncertainty};
 use crate::analysis::fit::{Estimate, MultiFitError, verdict};
 use crate::measured::ObliqueRow;
 
@@ -123,23 +123,10 @@ pub(super) fn finish(
         };
         n.normal().cor * vy - q.vy_out
     }));
-    if dof == 0 {
-        warnings.push(
-            "as many data as parameters: no residual is left to estimate the uncertainty".into(),
-        );
-    }
-    if u.condition > CONDITION_MAX {
-        warnings.push(format!(
-            "{} is not identifiable from these data: the fit cannot tell it from the other \
-             parameters (condition number {:.1e}); add rows that slide and rows that grip",
-            NAMES[u.weakest], u.condition
-        ));
-    }
+    let hint = "add rows that slide and rows that grip";
+    warnings.extend(verdict::pinning_warnings(dof, &u, NAMES[u.weakest], hint));
     if !sol.converged {
-        warnings.push(format!(
-            "the fit stopped after {} iterations without converging",
-            sol.iterations
-        ));
+        warnings.push(verdict::not_converged(sol.iterations));
     }
     let vy_scale = rms(p.rows.iter().map(|q| q.vy_out));
     if rms_vy > 0.05 * vy_scale {

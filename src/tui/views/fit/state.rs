@@ -4,7 +4,7 @@
 //! command line's `fit` takes by default for the kind of data ([`Param::defaults`]).
 
 use crate::analysis::fit::{self, Estimate, FitData, Param};
-use crate::measured::{CorPoint, Data, Trace, overlay};
+use crate::measured::{CorPoint, Data, Flight, Trace, drops_to_points};
 use crate::model::contact::ContactLaw;
 use crate::model::params::ImpactParams;
 use std::path::PathBuf;
@@ -157,13 +157,10 @@ pub fn request(
     let input = match &loaded.data {
         Data::Trace(t) => FitInput::Trace(t.clone()),
         Data::Cor(t) => FitInput::Cor(t.points.clone()),
-        data => {
-            let pts = overlay::cor_points(data).unwrap_or_default();
-            FitInput::Cor(
-                pts.into_iter()
-                    .map(|(v0, cor)| CorPoint::new(v0, cor))
-                    .collect(),
-            )
+        // each drop weighed by its rebound height's reading, as `fit --drop-test` weighs it
+        Data::Drop(d) => {
+            let pairs: Vec<(f64, f64)> = d.drops.iter().map(|&(h, r, _)| (h, r)).collect();
+            FitInput::Cor(drops_to_points(&pairs, &Flight::vacuum(), None))
         }
     };
     let (trace, n) = match &input {
