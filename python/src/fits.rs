@@ -303,7 +303,10 @@ pub fn fit_drops<'py>(
     drops.set_item("v0", array(py, points.iter().map(|p| p.v0).collect()))?;
     drops.set_item("cor", array(py, points.iter().map(|p| p.cor).collect()))?;
     if rebound_height_sd.is_some() {
-        let sd = points.iter().map(|p| p.cor_sd.unwrap_or(f64::NAN)).collect();
+        let sd = points
+            .iter()
+            .map(|p| p.cor_sd.unwrap_or(f64::NAN))
+            .collect();
         drops.set_item("cor_sd", array(py, sd))?;
     }
     d.set_item("drops", drops)?;
