@@ -17,7 +17,10 @@
 //! 0.64–5) the flow is the slowest root's mode and a real pair's cosh and sinh (`lanes/hyper.rs`):
 //! the scalar path's answer to 1e-12, or where its rounding bound refuses and the lanes' does
 //! not (a few points in a thousand of that band), the exact solver's to 1e-12
-//! (tests/map_lanes.rs). A lane the common path does not settle — a step too long for the
+//! (tests/map_lanes.rs). Beside that band, where the pair oscillates slowly, τ_m where P ≤ 0
+//! is proven first also where the pair part of z̄' rises (`Flow4::pair_rises`), and τ_f where
+//! the real mode overtakes the pair long before the pair's own zero comes from its own start
+//! (`lanes/overtake.rs`). A lane the common path does not settle — a step too long for the
 //! series and the `sin_cos` turn, a root past its lobe (the bracket search's cases), a pair
 //! nearly double, λ or ζ zero — is handed to the scalar [`super::summary`], whole.
 //! The exponential and `atan2` are the lanes' own (`lanes/math.rs`: within 2 ulp of libm's,
@@ -29,7 +32,7 @@
 //! `avx.rs` (the same in one AVX register), `pair.rs` (two AVX registers as one lane type of
 //! eight: [`lanes_only8`]), `math.rs` (`exp`, `atan2`, `cbrt`, a logarithm for guesses and the
 //! short steps' series over any), `kernel.rs` (the closed form over any), `hyper.rs` (its real
-//! pair: three real roots).
+//! pair: three real roots), `overtake.rs` (τ_f where the real mode overtakes a slow pair).
 
 #[cfg(target_arch = "x86_64")]
 mod avx;

@@ -13,6 +13,8 @@ use std::f64::consts::{FRAC_PI_2, PI};
 
 #[path = "hyper.rs"]
 mod hyper;
+#[path = "overtake.rs"]
+mod overtake;
 
 /// The flow of four (λ, ζ): `flow::Flow`'s fields, lane by lane.
 struct Flow4<L: Lane> {
@@ -60,6 +62,17 @@ struct Root4<L: Lane> {
     t: L,
     point: Point4<L>,
     jet: [L; 6],
+}
+
+impl<L: Lane> Root4<L> {
+    #[inline(always)]
+    fn select(mask: L, yes: Root4<L>, no: Root4<L>) -> Root4<L> {
+        Root4 {
+            t: mask.select(yes.t, no.t),
+            point: Point4::select(mask, yes.point, no.point),
+            jet: select6(mask, yes.jet, no.jet),
+        }
+    }
 }
 
 /// Most Newton steps for the slowest of three real roots (from 0, `hyper.rs`).
@@ -331,18 +344,41 @@ impl<L: Lane> Flow4<L> {
 
     /// Where P ≤ 0, the lanes whose root τ* of z̄' (refined from 0, last evaluated at `pt`)
     /// is its first: z̄' = e^{−στ}(L(τ) − M(τ)), L = A r e^{(r+σ)τ} (A r = 1 − P ≥ 1) and
-    /// M = −(P cos ωτ + Q sin ωτ), |M'| ≤ ω√(P² + Q²) = `slope`. Where r + σ < 0 and
-    /// |r + σ| L(τ*) > `slope`, L − M falls strictly on [0, τ*] (L falls, so |L'| is least at
-    /// τ*), and τ* is its only zero there. L(τ*) ≥ L(τ_pt) e^{−1/2} where |(r + σ)(τ* − τ_pt)|
-    /// ≤ 1/2: asked as |r + σ| A r e^{rτ_pt} ≥ 2 `slope` e^{−στ_pt}, without a division.
+    /// M = −(P cos ωτ + Q sin ωτ), |M'| ≤ ω√(P² + Q²) = `slope`. Where r + σ < 0, L falls,
+    /// and L − M falls strictly on [0, τ*] — so that τ* is its only zero there — wherever
+    /// either holds:
+    ///
+    /// - |r + σ| L(τ*) > `slope` (|L'| is least at τ*). L(τ*) ≥ L(τ_pt) e^{−1/2} where
+    ///   |(r + σ)(τ* − τ_pt)| ≤ 1/2: asked as |r + σ| A r e^{rτ_pt} ≥ 2 `slope` e^{−στ_pt},
+    ///   without a division.
+    /// - M rises on [0, τ*] (`Flow4::pair_rises`): near the band of three real roots, where
+    ///   the real mode alone does not outrun the pair's slope.
     #[inline(always)]
     fn falls_once(&self, t: L, pt: &Point4<L>, slope: L) -> L {
         let v = L::splat;
         let rate = self.r + self.sigma;
         let real_slope = -rate * self.a * self.r * pt.real;
-        rate.lt(v(0.0))
-            & (rate * (t - pt.t)).abs().le(v(0.5))
-            & real_slope.ge(v(2.0) * slope * pt.decay)
+        let outruns =
+            (rate * (t - pt.t)).abs().le(v(0.5)) & real_slope.ge(v(2.0) * slope * pt.decay);
+        rate.lt(v(0.0)) & (outruns | self.pair_rises(t, pt, slope))
+    }
+
+    /// The lanes where M = −(P cos ωτ + Q sin ωτ) provably rises on [0, τ*]: M' = ω g,
+    /// g = P sin ωτ − Q cos ωτ = √(P² + Q²) sin(ωτ − ψ), a sinusoid, is ≥ 0 at both ends of
+    /// [0, ωτ*] and that span is shorter than π (a sinusoid's negative half lasts π, so it
+    /// cannot fit between two non-negative ends closer than π). g(0) = −Q; g(τ*) from the
+    /// last point, e^{−στ}g(τ_pt) = P ω e^{−στ}S − Q e^{−στ}C, less its largest change to τ*
+    /// (|g'| ≤ ω√(P² + Q²) = `slope`, so |Δg| ≤ `slope` |τ* − τ_pt|).
+    #[inline(always)]
+    fn pair_rises(&self, t: L, pt: &Point4<L>, slope: L) -> L {
+        let v = L::splat;
+        let zero = v(0.0);
+        let w = self.omega;
+        let p = self.d + self.sigma * self.a;
+        let q = (self.a * self.omega2 - self.sigma * self.d) / w;
+        let g_pt = p * w * pt.es - q * pt.ec;
+        let drift = slope * (t - pt.t).abs() * pt.decay;
+        (-q).ge(zero) & (w * t).lt(v(PI)) & g_pt.ge(drift)
     }
 }
 
@@ -372,7 +408,7 @@ fn refine_both<L: Lane>(
     guesses: [Point4<L>; 2],
     live: L,
     (pos, slope): (L, L),
-) -> ([Root4<L>; 2], L) {
+) -> ([Root4<L>; 2], [L; 2]) {
     let v = L::splat;
     let mut points = guesses;
     let mut active = [live, live];
@@ -423,8 +459,8 @@ fn refine_both<L: Lane>(
     let first = pos.select(near(0), flow.falls_once(roots[0].t, &roots[0].point, slope));
     // a real pair: z̄ has one zero after 0 and z̄' one before it (`hyper.rs`), no lobe to keep
     let (first, near_f) = (flow.hyper | first, flow.hyper | near(1));
-    let ok = found[0] & found[1] & first & near_f & roots[1].t.gt(roots[0].t);
-    (roots, ok)
+    let ok_f = found[1] & near_f & roots[1].t.gt(roots[0].t);
+    (roots, [found[0] & first, ok_f])
 }
 
 /// Six values lane by lane: `yes` where the mask is true, else `no`.
@@ -458,8 +494,16 @@ pub fn kernel<L: Lane<Array = [f64; N]>, const N: usize>(
     let (flow, ok) = Flow4::new(l, z);
     let (guesses, pos, slope, fine) = flow.guesses();
     let live = valid & ok & fine;
-    let (roots, settled) = refine_both(&flow, guesses, live, (pos, slope));
-    let [peak, end] = roots;
+    let ([peak, end], [ok_m, ok_f]) = refine_both(&flow, guesses, live, (pos, slope));
+    // a slow pair overtaken by the real mode: τ_f again, from its own start (`overtake.rs`)
+    let late = live & ok_m & !ok_f & !flow.hyper;
+    let (end, ok_f) = if late.any() {
+        let (late_end, found) = overtake::refine_overtaken(&flow, peak.t, guesses[1].t, late);
+        (Root4::select(found, late_end, end), ok_f | found)
+    } else {
+        (end, ok_f)
+    };
+    let settled = ok_m & ok_f;
     let z_m = taylor(&peak.jet[0..5], peak.t - peak.point.t);
     let h = end.t - end.point.t;
     let integral = flow.integral(&end.point);
