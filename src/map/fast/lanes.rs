@@ -31,7 +31,8 @@
 //! The files: `lane.rs` (what the kernel asks of four f64, and `wide`'s `f64x4` answering it),
 //! `avx.rs` (the same in one AVX register), `pair.rs` (two AVX registers as one lane type of
 //! eight: [`lanes_only8`]), `math.rs` (`exp`, `atan2`, `cbrt`, a logarithm for guesses and the
-//! short steps' series over any), `kernel.rs` (the closed form over any), `hyper.rs` (its real
+//! short steps' series over any), `kernel.rs` (the closed form over any: its flow and guesses;
+//! `cubic.rs` the cubic's root, `refine.rs` the steps to τ_m and τ_f), `hyper.rs` (its real
 //! pair: three real roots), `overtake.rs` (τ_f where the real mode overtakes a slow pair).
 
 #[cfg(target_arch = "x86_64")]

@@ -1,6 +1,6 @@
 //! τ_f where the real mode overtakes a slow pair: the pair oscillates, but so slowly (ω small,
 //! near the band of three real roots: λ ≲ 0.15, ζ ≈ 0.7–1 on the map) that its own first zero
-//! of z̄ lies far past τ_f, and Householder's steps from there (`kernel::refine_both`) do not
+//! of z̄ lies far past τ_f, and Householder's steps from there (`refine::refine_both`) do not
 //! settle within the pair's lobe. There A < 0 (the real mode pulls z̄ down) and z̄ crosses 0
 //! where the decaying pair part meets the real mode:
 //!
@@ -45,7 +45,7 @@ impl<L: Lane> Flow4<L> {
     }
 }
 
-/// τ_f in the lanes of `late` (their τ_m settled, their τ_f not: `kernel::refine_both`),
+/// τ_f in the lanes of `late` (their τ_m settled, their τ_f not: `refine::refine_both`),
 /// where A < 0 and σ + r > 0: from [`Flow4::overtaken_guess`] by Householder's steps, as
 /// `refine_both` takes them; the root and the lanes where it settled on a falling crossing
 /// after τ_m and before `upper` (the pair's first zero of z̄ after τ_m).
