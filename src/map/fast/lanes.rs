@@ -132,22 +132,37 @@ unsafe fn lanes_only8_avx2(lambda: [f64; WIDE], zeta: [f64; WIDE]) -> [Option<Su
 /// [`summary4`] over slices of equal length, eight at a time through [`lanes_only8`] (the
 /// last group padded with its own last point, whose answers are dropped), each lane the lanes
 /// leave to the scalar path its answer: `out[i]` is `summary(lambda[i], zeta[i])` to 1e-12,
-/// and [`summary4`]'s bits, whatever the slices' length.
+/// and [`summary4`]'s bits, whatever the slices' length. The whole groups go straight from
+/// the slices to the lanes and back (no padding, one copy of the eight answers), the scalar
+/// path asked only where a lane came back `None`.
 pub fn summaries(lambda: &[f64], zeta: &[f64], out: &mut [Option<Summary>]) {
     assert!(lambda.len() == zeta.len() && zeta.len() == out.len());
-    for ((l, z), o) in lambda
-        .chunks(WIDE)
-        .zip(zeta.chunks(WIDE))
-        .zip(out.chunks_mut(WIDE))
+    let whole = lambda.len() - lambda.len() % WIDE;
+    for ((l, z), o) in lambda[..whole]
+        .chunks_exact(WIDE)
+        .zip(zeta[..whole].chunks_exact(WIDE))
+        .zip(out[..whole].chunks_exact_mut(WIDE))
     {
-        let pad = |s: &[f64]| -> [f64; WIDE] {
-            let last = |_| std::array::from_fn(|i| s[i.min(s.len() - 1)]);
-            s.try_into().unwrap_or_else(last)
-        };
-        let (l, z) = (pad(l), pad(z));
+        let (l, z): ([f64; WIDE], [f64; WIDE]) = (l.try_into().unwrap(), z.try_into().unwrap());
+        o.copy_from_slice(&lanes_only8(l, z));
+        hand_back(&l, &z, o);
+    }
+    if whole < lambda.len() {
+        let pad = |s: &[f64]| -> [f64; WIDE] { std::array::from_fn(|i| s[i.min(s.len() - 1)]) };
+        let (l, z) = (pad(&lambda[whole..]), pad(&zeta[whole..]));
         let lanes = lanes_only8(l, z);
-        for (i, o) in o.iter_mut().enumerate() {
-            *o = lanes[i].or_else(|| super::summary(l[i], z[i]));
+        let o = &mut out[whole..];
+        o.copy_from_slice(&lanes[..o.len()]);
+        hand_back(&l, &z, o);
+    }
+}
+
+/// The scalar path's answer in every lane of `o` the lanes left `None`.
+#[inline(always)]
+fn hand_back(l: &[f64; WIDE], z: &[f64; WIDE], o: &mut [Option<Summary>]) {
+    for (i, o) in o.iter_mut().enumerate() {
+        if o.is_none() {
+            *o = super::summary(l[i], z[i]);
         }
     }
 }

@@ -80,7 +80,12 @@ pub(super) fn refine_both<L: Lane>(
     }
     let quarter = v(FRAC_PI_2) / flow.omega;
     let near = |i: usize| (roots[i].t - guesses[i].t).le(quarter);
-    let first = pos.select(near(0), flow.falls_once(roots[0].t, &roots[0].point, slope));
+    // the proof that τ_m comes first only where some lane needs it (P ≤ 0: rare on the map)
+    let first = if (live & !pos).any() {
+        pos.select(near(0), flow.falls_once(roots[0].t, &roots[0].point, slope))
+    } else {
+        near(0)
+    };
     // a real pair: z̄ has one zero after 0 and z̄' one before it (`hyper.rs`), no lobe to keep
     let (first, near_f) = (flow.hyper | first, flow.hyper | near(1));
     let ok_f = found[1] & near_f & roots[1].t.gt(roots[0].t);
