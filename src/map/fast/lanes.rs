@@ -17,7 +17,10 @@
 //! 0.64–5) the flow is the slowest root's mode and a real pair's cosh and sinh (`lanes/hyper.rs`):
 //! the scalar path's answer to 1e-12, or where its rounding bound refuses and the lanes' does
 //! not (a few points in a thousand of that band), the exact solver's to 1e-12
-//! (tests/map_lanes.rs). A lane the common path does not settle — a step too long for the
+//! (tests/map_lanes.rs). Beside that band, where the pair oscillates slowly, τ_m where P ≤ 0
+//! is proven first also where the pair part of z̄' rises (`Flow4::pair_rises`), and τ_f where
+//! the real mode overtakes the pair long before the pair's own zero comes from its own start
+//! (`lanes/overtake.rs`). A lane the common path does not settle — a step too long for the
 //! series and the `sin_cos` turn, a root past its lobe (the bracket search's cases), a pair
 //! nearly double, λ or ζ zero — is handed to the scalar [`super::summary`], whole.
 //! The exponential and `atan2` are the lanes' own (`lanes/math.rs`: within 2 ulp of libm's,
@@ -28,8 +31,9 @@
 //! The files: `lane.rs` (what the kernel asks of four f64, and `wide`'s `f64x4` answering it),
 //! `avx.rs` (the same in one AVX register), `pair.rs` (two AVX registers as one lane type of
 //! eight: [`lanes_only8`]), `math.rs` (`exp`, `atan2`, `cbrt`, a logarithm for guesses and the
-//! short steps' series over any), `kernel.rs` (the closed form over any), `hyper.rs` (its real
-//! pair: three real roots).
+//! short steps' series over any), `kernel.rs` (the closed form over any: its flow and guesses;
+//! `cubic.rs` the cubic's root, `refine.rs` the steps to τ_m and τ_f), `hyper.rs` (its real
+//! pair: three real roots), `overtake.rs` (τ_f where the real mode overtakes a slow pair).
 
 #[cfg(target_arch = "x86_64")]
 mod avx;
@@ -129,22 +133,37 @@ unsafe fn lanes_only8_avx2(lambda: [f64; WIDE], zeta: [f64; WIDE]) -> [Option<Su
 /// [`summary4`] over slices of equal length, eight at a time through [`lanes_only8`] (the
 /// last group padded with its own last point, whose answers are dropped), each lane the lanes
 /// leave to the scalar path its answer: `out[i]` is `summary(lambda[i], zeta[i])` to 1e-12,
-/// and [`summary4`]'s bits, whatever the slices' length.
+/// and [`summary4`]'s bits, whatever the slices' length. The whole groups go straight from
+/// the slices to the lanes and back (no padding, one copy of the eight answers), the scalar
+/// path asked only where a lane came back `None`.
 pub fn summaries(lambda: &[f64], zeta: &[f64], out: &mut [Option<Summary>]) {
     assert!(lambda.len() == zeta.len() && zeta.len() == out.len());
-    for ((l, z), o) in lambda
-        .chunks(WIDE)
-        .zip(zeta.chunks(WIDE))
-        .zip(out.chunks_mut(WIDE))
+    let whole = lambda.len() - lambda.len() % WIDE;
+    for ((l, z), o) in lambda[..whole]
+        .chunks_exact(WIDE)
+        .zip(zeta[..whole].chunks_exact(WIDE))
+        .zip(out[..whole].chunks_exact_mut(WIDE))
     {
-        let pad = |s: &[f64]| -> [f64; WIDE] {
-            let last = |_| std::array::from_fn(|i| s[i.min(s.len() - 1)]);
-            s.try_into().unwrap_or_else(last)
-        };
-        let (l, z) = (pad(l), pad(z));
+        let (l, z): ([f64; WIDE], [f64; WIDE]) = (l.try_into().unwrap(), z.try_into().unwrap());
+        o.copy_from_slice(&lanes_only8(l, z));
+        hand_back(&l, &z, o);
+    }
+    if whole < lambda.len() {
+        let pad = |s: &[f64]| -> [f64; WIDE] { std::array::from_fn(|i| s[i.min(s.len() - 1)]) };
+        let (l, z) = (pad(&lambda[whole..]), pad(&zeta[whole..]));
         let lanes = lanes_only8(l, z);
-        for (i, o) in o.iter_mut().enumerate() {
-            *o = lanes[i].or_else(|| super::summary(l[i], z[i]));
+        let o = &mut out[whole..];
+        o.copy_from_slice(&lanes[..o.len()]);
+        hand_back(&l, &z, o);
+    }
+}
+
+/// The scalar path's answer in every lane of `o` the lanes left `None`.
+#[inline(always)]
+fn hand_back(l: &[f64; WIDE], z: &[f64; WIDE], o: &mut [Option<Summary>]) {
+    for (i, o) in o.iter_mut().enumerate() {
+        if o.is_none() {
+            *o = super::summary(l[i], z[i]);
         }
     }
 }

@@ -6,7 +6,7 @@
 //! - The root: p(s) = s³ + a2 s² + s + a0 has p(0) = a0 > 0 and p'(0) = 1, its roots are
 //!   negative, and p is convex right of −a2/3, where the slowest root lies (it is at least
 //!   their mean, −a2/3): Newton's steps from 0 fall to it and never pass it
-//!   (`kernel::lone_real_root`). The slowest, as the scalar path's `isolated_root` mostly
+//!   (`cubic::lone_real_root`). The slowest, as the scalar path's `isolated_root` mostly
 //!   finds it: with the fastest as r the rounding bound (the pair's antiderivative over
 //!   σ² − ν², the two slow roots' product) refused half the band where the scalar path answers.
 //! - The events: z̄ and z̄' are sums of three exponentials, and such a sum has at most as many
@@ -14,7 +14,7 @@
 //!   for exponential sums). z̄(0) = 0 is one: z̄ has at most one zero after 0, and where
 //!   Householder's steps settle on a falling crossing of z̄ at τ > 0 it is τ_f. z̄' goes from
 //!   z̄'(0) = 1 to z̄'(τ_f) < 0 with at most two zeros: exactly one in (0, τ_f), τ_m. No lobe or
-//!   first-fall test is needed (`kernel::refine_both` drops them for these lanes).
+//!   first-fall test is needed (`refine::refine_both` drops them for these lanes).
 //! - The guesses: τ_m from τ = 0 (as where P ≤ 0); τ_f from the zero of the slow two modes
 //!   alone ([`Flow4::hyper_guess`]): the fast one has died away by then.
 //! - The rounding: e^{−στ} sinh ντ as a difference of two exponentials loses up to

@@ -5,14 +5,22 @@
 //! give the same bits (`avx2_and_portable_kernels_agree_bit_for_bit`, tests/map_lanes.rs).
 
 use super::lane::Lane;
-use super::math::{atan2, cbrt, cos_sinc_sq, exp, exp_m1_small, exp_small};
+use super::math::{atan2, cos_sinc_sq, exp, exp_m1_small, exp_small};
 use crate::map::fast::Summary;
 use crate::map::fast::flow::SMALL;
-use crate::map::fast::search::{MAX_REFINE, SETTLED, TAU_MAX};
-use std::f64::consts::{FRAC_PI_2, PI};
+use std::f64::consts::PI;
 
+#[path = "cubic.rs"]
+mod cubic;
 #[path = "hyper.rs"]
 mod hyper;
+#[path = "overtake.rs"]
+mod overtake;
+#[path = "refine.rs"]
+mod refine;
+
+use cubic::lone_real_root;
+use refine::{householder, refine_both, select6, taylor};
 
 /// The flow of four (λ, ζ): `flow::Flow`'s fields, lane by lane.
 struct Flow4<L: Lane> {
@@ -62,70 +70,15 @@ struct Root4<L: Lane> {
     jet: [L; 6],
 }
 
-/// Most Newton steps for the slowest of three real roots (from 0, `hyper.rs`).
-const MAX_NEWTON_THREE: usize = 16;
-
-/// The real root r of s³ + a2 s² + s + a0 that the flow stands apart and the deflated
-/// quadratic (p1, p0), the lanes where it answers, and the lanes of three real roots. Where
-/// the other two are a complex pair: the lone root as `propagator::modes_of` gives it
-/// (Cardano, then at most four Newton steps that must settle). Where all three are real
-/// (Cardano's discriminant ≤ 0): the slowest, by Newton from 0, which falls to it
-/// monotonically (`hyper.rs` says why), in at most [`MAX_NEWTON_THREE`] steps that must settle.
-#[inline(always)]
-fn lone_real_root<L: Lane>(a2: L, a0: L) -> (L, L, L, L, L) {
-    let v = L::splat;
-    let (one, zero) = (v(1.0), v(0.0));
-    let shift = a2 / v(3.0);
-    let p = one - a2 * shift;
-    let q = (v(2.0) * shift * shift - one) * shift + a0;
-    let disc = v(0.25) * q * q + p * p * p / v(27.0);
-    let three = disc.le(zero);
-    let sign = q.sign_negative().select(v(-1.0), one);
-    let u = cbrt(v(-0.5) * q - sign * disc.sqrt());
-    let ok = disc.gt(zero) & u.ne(zero);
-    let mut r = three.select(zero, u - p / (v(3.0) * u) - shift);
-    let mut done = zero.ne(zero);
-    for _ in 0..4 {
-        let (next, small) = newton(r, a2, a0);
-        r = done.select(r, next);
-        done |= small;
+impl<L: Lane> Root4<L> {
+    #[inline(always)]
+    fn select(mask: L, yes: Root4<L>, no: Root4<L>) -> Root4<L> {
+        Root4 {
+            t: mask.select(yes.t, no.t),
+            point: Point4::select(mask, yes.point, no.point),
+            jet: select6(mask, yes.jet, no.jet),
+        }
     }
-    // the lanes of three real roots go on alone; every other lane keeps its four steps
-    let mut k = 4;
-    while k < MAX_NEWTON_THREE && (three & !done).any() {
-        let (next, small) = newton(r, a2, a0);
-        r = (done | !three).select(r, next);
-        done |= three & small;
-        k += 1;
-    }
-    let ok = (ok | three) & done & r.ne(zero);
-    // deflate: the division form where r³ dominates a0, else the multiplication form
-    let first = (r.abs() * r.abs() * r.abs()).ge(a0);
-    let p0_div = -a0 / r;
-    let p1_div = (p0_div - one) / r;
-    let p1_mul = a2 + r;
-    let p0_mul = one + r * p1_mul;
-    (
-        r,
-        first.select(p1_div, p1_mul),
-        first.select(p0_div, p0_mul),
-        ok,
-        three,
-    )
-}
-
-/// One Newton step on s³ + a2 s² + s + a0 from r: the next r, and the lanes where the step
-/// was within 4ε of it. A function, not a closure: a closure stayed a call out of the AVX2
-/// kernel, and every lane operation inside it a call too (callgrind).
-#[inline(always)]
-fn newton<L: Lane>(r: L, a2: L, a0: L) -> (L, L) {
-    let v = L::splat;
-    let one = v(1.0);
-    let value = ((r + a2) * r + one) * r + a0;
-    let slope = (v(3.0) * r + v(2.0) * a2) * r + one;
-    let step = value / slope;
-    let next = r - step;
-    (next, step.abs().le(v(4.0 * f64::EPSILON) * next.abs()))
 }
 
 impl<L: Lane> Flow4<L> {
@@ -331,116 +284,42 @@ impl<L: Lane> Flow4<L> {
 
     /// Where P ≤ 0, the lanes whose root τ* of z̄' (refined from 0, last evaluated at `pt`)
     /// is its first: z̄' = e^{−στ}(L(τ) − M(τ)), L = A r e^{(r+σ)τ} (A r = 1 − P ≥ 1) and
-    /// M = −(P cos ωτ + Q sin ωτ), |M'| ≤ ω√(P² + Q²) = `slope`. Where r + σ < 0 and
-    /// |r + σ| L(τ*) > `slope`, L − M falls strictly on [0, τ*] (L falls, so |L'| is least at
-    /// τ*), and τ* is its only zero there. L(τ*) ≥ L(τ_pt) e^{−1/2} where |(r + σ)(τ* − τ_pt)|
-    /// ≤ 1/2: asked as |r + σ| A r e^{rτ_pt} ≥ 2 `slope` e^{−στ_pt}, without a division.
+    /// M = −(P cos ωτ + Q sin ωτ), |M'| ≤ ω√(P² + Q²) = `slope`. Where r + σ < 0, L falls,
+    /// and L − M falls strictly on [0, τ*] — so that τ* is its only zero there — wherever
+    /// either holds:
+    ///
+    /// - |r + σ| L(τ*) > `slope` (|L'| is least at τ*). L(τ*) ≥ L(τ_pt) e^{−1/2} where
+    ///   |(r + σ)(τ* − τ_pt)| ≤ 1/2: asked as |r + σ| A r e^{rτ_pt} ≥ 2 `slope` e^{−στ_pt},
+    ///   without a division.
+    /// - M rises on [0, τ*] (`Flow4::pair_rises`): near the band of three real roots, where
+    ///   the real mode alone does not outrun the pair's slope.
     #[inline(always)]
     fn falls_once(&self, t: L, pt: &Point4<L>, slope: L) -> L {
         let v = L::splat;
         let rate = self.r + self.sigma;
         let real_slope = -rate * self.a * self.r * pt.real;
-        rate.lt(v(0.0))
-            & (rate * (t - pt.t)).abs().le(v(0.5))
-            & real_slope.ge(v(2.0) * slope * pt.decay)
+        let outruns =
+            (rate * (t - pt.t)).abs().le(v(0.5)) & real_slope.ge(v(2.0) * slope * pt.decay);
+        rate.lt(v(0.0)) & (outruns | self.pair_rises(t, pt, slope))
     }
-}
 
-/// `search::householder`: the step and the lanes where it is the last one on a falling
-/// crossing.
-#[inline(always)]
-fn householder<L: Lane>(f: &[L]) -> (L, L) {
-    let v = L::splat;
-    let one = v(1.0);
-    let inv = one / f[1];
-    let (u, c2, c3) = (f[0] * inv, f[2] * inv, f[3] * inv);
-    let h = u * (one - v(0.5) * u * c2) / (one - u * c2 + u * u * c3 / v(6.0));
-    let settled = (c2 * h).abs().le(v(SETTLED))
-        & (c3.abs() * h * h).le(v(SETTLED * SETTLED))
-        & f[1].lt(v(0.0));
-    (h, settled)
-}
-
-/// `search::refine_both`: τ_m (i = 0, the root of z̄') and τ_f (i = 1, of z̄) from their
-/// guesses, side by side; the lanes where each settled within [`MAX_REFINE`] steps inside
-/// (0, [`TAU_MAX`]) and within a quarter of the pair's period of its guess — τ_m where
-/// P > 0 (`pos`); where P ≤ 0 its guess is τ = 0 and it must be z̄''s first zero
-/// ([`Flow4::falls_once`], `slope` from [`Flow4::guesses`]).
-#[inline(always)]
-fn refine_both<L: Lane>(
-    flow: &Flow4<L>,
-    guesses: [Point4<L>; 2],
-    live: L,
-    (pos, slope): (L, L),
-) -> ([Root4<L>; 2], L) {
-    let v = L::splat;
-    let mut points = guesses;
-    let mut active = [live, live];
-    let mut found = [v(0.0), v(0.0)];
-    // each by hand: `guesses.map(…)` stayed a call out of the AVX2 kernel (callgrind)
-    let root = |point: Point4<L>| Root4 {
-        t: point.t,
-        point,
-        jet: [v(0.0); 6],
-    };
-    let mut roots = [root(guesses[0]), root(guesses[1])];
-    for _ in 0..MAX_REFINE {
-        for i in 0..2 {
-            if !active[i].any() {
-                continue;
-            }
-            let point = points[i];
-            let jet = flow.jet(&point);
-            let (h, settled) = householder(&jet[1 - i..5 - i]);
-            let t = point.t - h;
-            let inside = t.gt(v(0.0)) & t.lt(v(TAU_MAX));
-            let now = active[i] & inside & settled;
-            roots[i] = Root4 {
-                t: now.select(t, roots[i].t),
-                point: Point4::select(now, point, roots[i].point),
-                jet: select6(now, jet, roots[i].jet),
-            };
-            found[i] |= now;
-            active[i] &= inside & !settled;
-            if !active[i].any() {
-                // every lane of this event settled or left: no next point to turn to
-                continue;
-            }
-            let (shifted, fits) = flow.shift(&point, -h);
-            let far = active[i] & !fits;
-            points[i] = if far.any() {
-                Point4::select(fits, shifted, flow.at(t))
-            } else {
-                shifted
-            };
-        }
-        if !(active[0] | active[1]).any() {
-            break;
-        }
+    /// The lanes where M = −(P cos ωτ + Q sin ωτ) provably rises on [0, τ*]: M' = ω g,
+    /// g = P sin ωτ − Q cos ωτ = √(P² + Q²) sin(ωτ − ψ), a sinusoid, is ≥ 0 at both ends of
+    /// [0, ωτ*] and that span is shorter than π (a sinusoid's negative half lasts π, so it
+    /// cannot fit between two non-negative ends closer than π). g(0) = −Q; g(τ*) from the
+    /// last point, e^{−στ}g(τ_pt) = P ω e^{−στ}S − Q e^{−στ}C, less its largest change to τ*
+    /// (|g'| ≤ ω√(P² + Q²) = `slope`, so |Δg| ≤ `slope` |τ* − τ_pt|).
+    #[inline(always)]
+    fn pair_rises(&self, t: L, pt: &Point4<L>, slope: L) -> L {
+        let v = L::splat;
+        let zero = v(0.0);
+        let w = self.omega;
+        let p = self.d + self.sigma * self.a;
+        let q = (self.a * self.omega2 - self.sigma * self.d) / w;
+        let g_pt = p * w * pt.es - q * pt.ec;
+        let drift = slope * (t - pt.t).abs() * pt.decay;
+        (-q).ge(zero) & (w * t).lt(v(PI)) & g_pt.ge(drift)
     }
-    let quarter = v(FRAC_PI_2) / flow.omega;
-    let near = |i: usize| (roots[i].t - guesses[i].t).le(quarter);
-    let first = pos.select(near(0), flow.falls_once(roots[0].t, &roots[0].point, slope));
-    // a real pair: z̄ has one zero after 0 and z̄' one before it (`hyper.rs`), no lobe to keep
-    let (first, near_f) = (flow.hyper | first, flow.hyper | near(1));
-    let ok = found[0] & found[1] & first & near_f & roots[1].t.gt(roots[0].t);
-    (roots, ok)
-}
-
-/// Six values lane by lane: `yes` where the mask is true, else `no`.
-#[inline(always)]
-fn select6<L: Lane>(mask: L, yes: [L; 6], mut no: [L; 6]) -> [L; 6] {
-    for (n, y) in no.iter_mut().zip(yes) {
-        *n = mask.select(y, *n);
-    }
-    no
-}
-
-/// `search::taylor`.
-#[inline(always)]
-fn taylor<L: Lane>(c: &[L], h: L) -> L {
-    let v = L::splat;
-    c[0] + h * (c[1] + h / v(2.0) * (c[2] + h / v(3.0) * (c[3] + h / v(4.0) * c[4])))
 }
 
 /// The body of `lanes_only` and `lanes_only8`, inlined into each of their compilations
@@ -458,8 +337,16 @@ pub fn kernel<L: Lane<Array = [f64; N]>, const N: usize>(
     let (flow, ok) = Flow4::new(l, z);
     let (guesses, pos, slope, fine) = flow.guesses();
     let live = valid & ok & fine;
-    let (roots, settled) = refine_both(&flow, guesses, live, (pos, slope));
-    let [peak, end] = roots;
+    let ([peak, end], [ok_m, ok_f]) = refine_both(&flow, guesses, live, (pos, slope));
+    // a slow pair overtaken by the real mode: τ_f again, from its own start (`overtake.rs`)
+    let late = live & ok_m & !ok_f & !flow.hyper;
+    let (end, ok_f) = if late.any() {
+        let (late_end, found) = overtake::refine_overtaken(&flow, peak.t, guesses[1].t, late);
+        (Root4::select(found, late_end, end), ok_f | found)
+    } else {
+        (end, ok_f)
+    };
+    let settled = ok_m & ok_f;
     let z_m = taylor(&peak.jet[0..5], peak.t - peak.point.t);
     let h = end.t - end.point.t;
     let integral = flow.integral(&end.point);
