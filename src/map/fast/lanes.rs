@@ -33,7 +33,10 @@
 //! eight: [`lanes_only8`]), `math.rs` (`exp`, `atan2`, `cbrt`, a logarithm for guesses and the
 //! short steps' series over any), `kernel.rs` (the closed form over any: its flow and guesses;
 //! `cubic.rs` the cubic's root, `refine.rs` the steps to τ_m and τ_f), `hyper.rs` (its real
-//! pair: three real roots), `overtake.rs` (τ_f where the real mode overtakes a slow pair).
+//! pair: three real roots), `overtake.rs` (τ_f where the real mode overtakes a slow pair),
+//! `flatten.rs` (the flattening's closed form over any, eight or four cells a call; its
+//! unloading in `unload.rs`) and `one.rs` (a lane of one f64: a lone cell, bit for bit its
+//! lane in a group).
 
 #[cfg(target_arch = "x86_64")]
 mod avx;
