@@ -22,8 +22,7 @@
 
 use super::super::lane::{LANES, Lane};
 use super::super::math::atan2;
-use super::{Flow4, Point4, Root4, householder, select6, taylor};
-use crate::map::fast::search::{MAX_REFINE, TAU_MAX};
+use super::{Flow4, Point4, Root4, householder_root, taylor};
 use crate::map::fast::{KEEP, Summary, flattening};
 use std::f64::consts::{FRAC_PI_2, PI};
 use wide::f64x4;
@@ -85,40 +84,12 @@ fn separation_guess<L: Lane>(f: &Flow4<L>) -> Point4<L> {
 }
 
 /// `search::refine`: the root of z̄^{(k)} (k = 1: τ_m, k = 0: separation) from its guess by
-/// Householder's steps, and the lanes where it settled on a falling crossing inside
-/// (0, [`TAU_MAX`]) within [`MAX_REFINE`] steps and a quarter of the pair's period of its guess.
+/// Householder's steps ([`householder_root`]), and the lanes where it settled within a
+/// quarter of the pair's period of its guess.
 #[inline(always)]
 fn refine<L: Lane>(f: &Flow4<L>, guess: Point4<L>, live: L, k: usize) -> (Root4<L>, L) {
     let v = L::splat;
-    let (mut point, mut active, mut found) = (guess, live, v(0.0).ne(v(0.0)));
-    let mut root = Root4 {
-        t: guess.t,
-        point: guess,
-        jet: [v(0.0); 6],
-    };
-    for _ in 0..MAX_REFINE {
-        let jet = f.jet(&point);
-        let (h, settled) = householder(&jet[k..k + 4]);
-        let t = point.t - h;
-        let inside = t.gt(v(0.0)) & t.lt(v(TAU_MAX));
-        let now = active & inside & settled;
-        root = Root4 {
-            t: now.select(t, root.t),
-            point: Point4::select(now, point, root.point),
-            jet: select6(now, jet, root.jet),
-        };
-        found |= now;
-        active &= inside & !settled;
-        if !active.any() {
-            break;
-        }
-        let (shifted, fits) = f.shift(&point, -h);
-        point = if (active & !fits).any() {
-            Point4::select(fits, shifted, f.at(t))
-        } else {
-            shifted
-        };
-    }
+    let (root, found) = householder_root(f, guess, live, k);
     let lobe = (root.t - guess.t).le(v(FRAC_PI_2) / f.omega);
     (root, found & lobe)
 }

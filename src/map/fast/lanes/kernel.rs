@@ -20,7 +20,7 @@ mod overtake;
 mod refine;
 
 use cubic::lone_real_root;
-use refine::{householder, refine_both, select6, taylor};
+use refine::{householder_root, refine_both, select6, taylor};
 
 /// The flow of four (λ, ζ): `flow::Flow`'s fields, lane by lane.
 struct Flow4<L: Lane> {

@@ -19,8 +19,7 @@
 
 use super::super::lane::Lane;
 use super::super::math::ln_guess;
-use super::{Flow4, Point4, Root4, householder, select6};
-use crate::map::fast::search::{MAX_REFINE, TAU_MAX};
+use super::{Flow4, Root4, householder_root};
 
 /// Fixed-point steps τ ← F(τ) for the start (see the module's introduction).
 const CLIMBS: usize = 4;
@@ -60,36 +59,7 @@ pub(super) fn refine_overtaken<L: Lane>(
     let zero = v(0.0);
     let late = late & flow.a.lt(zero) & (flow.r + flow.sigma).gt(zero);
     let guess = flow.overtaken_guess(t_m, late);
-    let mut point: Point4<L> = flow.at(guess);
-    let mut root = Root4 {
-        t: guess,
-        point,
-        jet: [zero; 6],
-    };
-    let (mut active, mut found) = (late, zero.ne(zero));
-    for _ in 0..MAX_REFINE {
-        let jet = flow.jet(&point);
-        let (h, settled) = householder(&jet[0..4]);
-        let t = point.t - h;
-        let inside = t.gt(v(0.0)) & t.lt(v(TAU_MAX));
-        let now = active & inside & settled;
-        root = Root4 {
-            t: now.select(t, root.t),
-            point: Point4::select(now, point, root.point),
-            jet: select6(now, jet, root.jet),
-        };
-        found |= now;
-        active &= inside & !settled;
-        if !active.any() {
-            break;
-        }
-        let (shifted, fits) = flow.shift(&point, -h);
-        point = if (active & !fits).any() {
-            Point4::select(fits, shifted, flow.at(t))
-        } else {
-            shifted
-        };
-    }
+    let (root, found) = householder_root(flow, flow.at(guess), late, 0);
     let between = root.t.gt(t_m) & root.t.lt(upper);
     (root, found & between)
 }

@@ -92,6 +92,52 @@ pub(super) fn refine_both<L: Lane>(
     (roots, [found[0] & first, ok_f])
 }
 
+/// `search::refine`'s steps for one root: Householder's on z̄^{(k)} (k = 0: z̄ itself, 1: z̄')
+/// from `start` in the lanes of `live`, each step from the flow shifted (or, past its reach,
+/// re-evaluated); the root, and the lanes where it settled on a falling crossing inside
+/// (0, [`TAU_MAX`]) within [`MAX_REFINE`] steps. Each caller adds where its root must lie (the
+/// flattening: within a quarter period of its guess; an overtaken pair: between τ_m and the
+/// pair's zero).
+#[inline(always)]
+pub(super) fn householder_root<L: Lane>(
+    f: &Flow4<L>,
+    start: Point4<L>,
+    live: L,
+    k: usize,
+) -> (Root4<L>, L) {
+    let v = L::splat;
+    let (mut point, mut active, mut found) = (start, live, v(0.0).ne(v(0.0)));
+    let mut root = Root4 {
+        t: start.t,
+        point: start,
+        jet: [v(0.0); 6],
+    };
+    for _ in 0..MAX_REFINE {
+        let jet = f.jet(&point);
+        let (h, settled) = householder(&jet[k..k + 4]);
+        let t = point.t - h;
+        let inside = t.gt(v(0.0)) & t.lt(v(TAU_MAX));
+        let now = active & inside & settled;
+        root = Root4 {
+            t: now.select(t, root.t),
+            point: Point4::select(now, point, root.point),
+            jet: select6(now, jet, root.jet),
+        };
+        found |= now;
+        active &= inside & !settled;
+        if !active.any() {
+            break;
+        }
+        let (shifted, fits) = f.shift(&point, -h);
+        point = if (active & !fits).any() {
+            Point4::select(fits, shifted, f.at(t))
+        } else {
+            shifted
+        };
+    }
+    (root, found)
+}
+
 /// Six values lane by lane: `yes` where the mask is true, else `no`.
 #[inline(always)]
 pub(super) fn select6<L: Lane>(mask: L, yes: [L; 6], mut no: [L; 6]) -> [L; 6] {
