@@ -4,9 +4,8 @@
 //! where a row has them, the relative misses of peak force and contact time,
 //! (F_model/F − 1)/scale[1] and (t_model/t − 1)/scale[2]. The scales start at 1; when kinds
 //! are mixed the fit sets them to each kind's RMS and fits again, so that each kind weighs by
-//! its own scatter. Every model
-//! run (the table's impacts) is reported to the fit's [`Watch`], also every [`WATCH_EVERY`]
-//! impacts within a run, and the watch may stop the fit.
+//! its own scatter. Every model run (the table's impacts) is reported to the fit's [`Watch`],
+//! also every [`WATCH_EVERY`] impacts within a run, and the watch may stop the fit.
 
 use super::lm::Residuals;
 use super::{Param, apply, fit_k_r};
