@@ -362,8 +362,8 @@ fn an_unpinned_parameter_is_said_so() {
 }
 
 /// A drop-test file fitted in the explorer weighs each drop by its rebound height's reading,
-/// as `bouncelab fit --drop-test` does (it weighed them equally: intervals too narrow, the
-/// low drops' CORs as precise as the high ones'): the fit's points are the library's.
+/// as `bouncelab fit --drop-test` does (a low drop's COR the least precise): the fit's points
+/// are the library's.
 #[test]
 fn drops_weigh_by_their_reading_as_the_command_line_weighs_them() {
     use bouncelab::tui::views::fit::state::FitInput;

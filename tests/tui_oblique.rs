@@ -375,8 +375,7 @@ fn the_map_goes_to_the_worker_and_is_asked_again_after_a_cancel() {
 }
 
 /// The map that comes back while the terminal is below the minimum size is taken, as the
-/// other workers' answers are (it was dropped: the view said "computing the map…" and the
-/// loop woke every 5 ms until the spin changed).
+/// other workers' answers are: the view holds it, nothing waits for it any more.
 #[test]
 fn the_map_that_comes_back_while_the_terminal_is_too_small_is_taken() {
     use bouncelab::tui::action::Action;

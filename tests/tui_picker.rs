@@ -151,8 +151,7 @@ fn the_picker_scrolls_at_a_small_size() {
 }
 
 /// The list that comes back while the terminal is below the minimum size is taken, as every
-/// other answer of the loop is (it was dropped: `g` then opened nothing, and the saved
-/// session's message was lost the same way).
+/// other answer of the loop is: the picker opens once the terminal is large enough again.
 #[test]
 fn the_list_that_comes_back_while_the_terminal_is_too_small_is_taken() {
     let dir = tempfile::tempdir().unwrap();

@@ -55,6 +55,14 @@ pub use lane::LANES;
 use super::Summary;
 use wide::f64x4;
 
+/// Whether the CPU has AVX2 and FMA, which the `#[target_feature(enable = "avx2,fma")]`
+/// kernels need (`is_x86_feature_detected!` caches the answer): every entry point of the
+/// lanes picks its kernel by it.
+#[cfg(target_arch = "x86_64")]
+fn avx2_fma() -> bool {
+    std::arch::is_x86_feature_detected!("avx2") && std::arch::is_x86_feature_detected!("fma")
+}
+
 /// The lanes' own answers: lane i is [`super::summary`]`(lambda[i], zeta[i])` to 1e-12 where
 /// the common path settles it (where that is `None`, three real roots, the exact solver's to
 /// 1e-12), `None` where it hands the lane to the scalar path (which may still answer:
@@ -71,7 +79,7 @@ use wide::f64x4;
 /// (`avx2_and_portable_kernels_agree_bit_for_bit`): a map's CSV does not depend on the CPU.
 pub fn lanes_only(lambda: [f64; LANES], zeta: [f64; LANES]) -> [Option<Summary>; LANES] {
     #[cfg(target_arch = "x86_64")]
-    if std::arch::is_x86_feature_detected!("avx2") && std::arch::is_x86_feature_detected!("fma") {
+    if avx2_fma() {
         // SAFETY: the CPU has AVX2 and FMA, just checked
         return unsafe { lanes_only_avx2(lambda, zeta) };
     }
@@ -113,7 +121,7 @@ pub const WIDE: usize = 2 * LANES;
 /// the portable kernel (SSE2 has too few registers for eight lanes at once).
 pub fn lanes_only8(lambda: [f64; WIDE], zeta: [f64; WIDE]) -> [Option<Summary>; WIDE] {
     #[cfg(target_arch = "x86_64")]
-    if std::arch::is_x86_feature_detected!("avx2") && std::arch::is_x86_feature_detected!("fma") {
+    if avx2_fma() {
         // SAFETY: the CPU has AVX2 and FMA, just checked
         return unsafe { lanes_only8_avx2(lambda, zeta) };
     }

@@ -206,7 +206,7 @@ pub fn flattening_lanes4(
     zp: [f64; LANES],
 ) -> [Option<Summary>; LANES] {
     #[cfg(target_arch = "x86_64")]
-    if std::arch::is_x86_feature_detected!("avx2") && std::arch::is_x86_feature_detected!("fma") {
+    if super::super::avx2_fma() {
         // SAFETY: the CPU has AVX2 and FMA, just checked
         return unsafe { flattening_lanes4_avx2(lambda, zeta, zp) };
     }
@@ -240,7 +240,7 @@ pub fn flattening_lanes8(
     zp: [f64; FLAT_WIDE],
 ) -> [Option<Summary>; FLAT_WIDE] {
     #[cfg(target_arch = "x86_64")]
-    if std::arch::is_x86_feature_detected!("avx2") && std::arch::is_x86_feature_detected!("fma") {
+    if super::super::avx2_fma() {
         // SAFETY: the CPU has AVX2 and FMA, just checked
         return unsafe { flattening_lanes8_avx2(lambda, zeta, zp) };
     }
@@ -317,7 +317,7 @@ mod one;
 /// [`flattening_lane1_portable`]: the same bits.
 pub fn flattening_lane1(lambda: f64, zeta: f64, zp: f64) -> Option<Summary> {
     #[cfg(target_arch = "x86_64")]
-    if std::arch::is_x86_feature_detected!("avx2") && std::arch::is_x86_feature_detected!("fma") {
+    if super::super::avx2_fma() {
         // SAFETY: the CPU has AVX2 and FMA, just checked
         return unsafe { flattening_lane1_fma(lambda, zeta, zp) };
     }
