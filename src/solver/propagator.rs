@@ -74,8 +74,9 @@ struct Nodes {
 
 #[derive(Debug, Clone)]
 enum Form {
-    /// w(τ) = f[s1] u0 + Re(f[s1,s2] − s2 f[s1,s2,s3]) u1 + Re(f[s1,s2,s3]) A u1, with the
-    /// node differences' reciprocals kept: eval is the solver's inner loop.
+    /// `w(τ) = f[s1] u0 + Re(f[s1,s2] − s2 f[s1,s2,s3]) u1 + Re(f[s1,s2,s3]) A u1` (f's
+    /// divided differences at the nodes), with the node differences' reciprocals kept: eval is
+    /// the solver's inner loop.
     Newton {
         u0: Vector3<f64>,
         u1: Vector3<f64>,

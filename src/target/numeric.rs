@@ -229,7 +229,7 @@ pub(super) fn solve(
     solve_sampled(n, law, s, &mut Samples::none())
 }
 
-/// [`solve`], with the history at `samples`' times read off the dense output.
+/// `solve` (a test build's), with the history at `samples`' times read off the dense output.
 pub(super) fn solve_sampled(
     n: &Normalized,
     law: ContactLaw,

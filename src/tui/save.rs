@@ -142,7 +142,7 @@ pub fn preset_for(source: &Preset, setting: &Setting, name: &str) -> (Preset, Ve
 }
 
 /// The comment lines at the top of a saved preset's file: where it came from, what
-/// [adopted] holds, and which measurements were `left_out` (taken at another speed).
+/// `[adopted]` holds, and which measurements were `left_out` (taken at another speed).
 fn header_lines(
     source: &Preset,
     law: ContactLaw,

@@ -2,7 +2,7 @@
 //! (e_model − e)/σ_e for each COR (σ_e from `cor_sd`, else `scale[0]` times the row's
 //! `cor_sd_relative`: a drop test's rows weigh by their rebound heights' reading), and,
 //! where a row has them, the relative misses of peak force and contact time,
-//! (F_model/F − 1)/scale[1] and (t_model/t − 1)/scale[2]. The scales start at 1; when kinds
+//! `(F_model/F − 1)/scale[1]` and `(t_model/t − 1)/scale[2]`. The scales start at 1; when kinds
 //! are mixed the fit sets them to each kind's RMS and fits again, so that each kind weighs by
 //! its own scatter. Every model run (the table's impacts) is reported to the fit's [`Watch`],
 //! also every [`WATCH_EVERY`] impacts within a run, and the watch may stop the fit.

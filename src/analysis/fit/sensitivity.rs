@@ -29,7 +29,8 @@ use crate::model::params::ImpactParams;
 use crate::solver::ImpactResponse;
 use nalgebra::{Matrix3, Matrix6, Vector3};
 
-/// The parameters the linear phase depends on, in the order of [`Basis::of`]'s rows.
+/// The parameters the linear phase depends on (ln K_p, ln c, ln K_r, ln v0), in the order of
+/// [`chain`]'s entries and [`matrices`]' derivatives.
 const BASIS: usize = 4;
 
 /// ∂(ln K_p, ln c, ln K_r, ln v0)/∂(ln p) for the free parameter `p`, as [`super::apply`]

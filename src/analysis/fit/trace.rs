@@ -35,7 +35,7 @@ pub(super) struct TraceProblem<'a> {
     stopped: Cell<bool>,
 }
 
-/// Model force on a uniform history grid `t` (t[0] = 0), at time `s`, and its slope:
+/// Model force on a uniform history grid `t` (`t[0] = 0`), at time `s`, and its slope:
 /// Catmull–Rom (cubic Hermite with central-difference slopes), error O(h³) against linear
 /// interpolation's O(h²). The difference matters to the Jacobian: as the parameters move, the
 /// grid slides under the data, and linear interpolation's error, 1e-6 of the peak at 1 000

@@ -1,4 +1,4 @@
-//! The legend strip under the design map's SVG ([`super::svg_map`]): what each kind of line
+//! The legend strip under the design map's SVG ([`crate::figure::svg_map`]): what each kind of line
 //! means.
 
 use super::{LEGEND_H, View};

@@ -57,8 +57,8 @@ fn join(parts: &[&str], gone: &[bool]) -> String {
     left.join(" · ")
 }
 
-/// The axes written without spaces a reader can spare: "F [N] vs t [ms] (log)" →
-/// "F[N]–t[ms] log".
+/// The axes written without spaces a reader can spare: `"F [N] vs t [ms] (log)"` →
+/// `"F[N]–t[ms] log"`.
 fn tighten(axes: &str) -> String {
     axes.replace(" [", "[")
         .replace(" vs ", "–")

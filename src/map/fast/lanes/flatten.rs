@@ -12,7 +12,7 @@
 //! The rounding bounds — the turn's, the unloading's own (the scalar `tight` bound), and the
 //! turn's errors carried to s_f by the flow's responses — decide `KEEP` as masks.
 //!
-//! A lane is handed back (`None`; [`flattenings`] asks the scalar `flattening`) where the
+//! A lane is handed back (`None`; [`crate::map::fast::lanes::flattenings`] asks the scalar `flattening`) where the
 //! loading's pair part of z̄' starts negative (P ≤ 0) or either pair does not oscillate (three
 //! real roots), where a refinement does not settle on a falling crossing within its lobe
 //! (the scalar path's bracket search: reloads, long steps), and where the bound cannot keep

@@ -33,8 +33,8 @@ const EXP_M1_SMALL_SERIES: [f64; 6] = series(1, 1, false);
 const COS_SERIES: [f64; 6] = series(2, 0, true);
 const SINC_SERIES: [f64; 6] = series(2, 1, true);
 
-/// Σ c[i] x^{n−1−i} by Horner's rule, `c` highest degree first: c[0] x + c[1], times x plus
-/// c[2], …, each step one fused multiply-add ([`Lane::mul_add`]: half the instructions of a
+/// `Σ c[i] x^{n−1−i}` by Horner's rule, `c` highest degree first: `c[0] x + c[1]`, times x
+/// plus `c[2]`, …, each step one fused multiply-add ([`Lane::mul_add`]: half the instructions of a
 /// product and a sum, one rounding, and the chain's latency a step shorter). A `while` loop over a constant array rather than an iterator's `fold`, which the
 /// compiler did not inline into the AVX2 kernel (a call, and the lane operations inside it
 /// calls too: 22 % of a Monte Carlo sample's instructions by callgrind); this one unrolls.
