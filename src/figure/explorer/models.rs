@@ -152,7 +152,9 @@ fn curves(
     out
 }
 
-/// The subtitle: ball, speed and COR of the calibration.
+/// The subtitle (the SVG's): ball, speed and COR of the calibration. Without one (still out,
+/// failed, or its worker stopped) it says that the peers are not calibrated, not that a result
+/// is coming (the export refuses such a figure, `super::missing`: tests/tui_models_export.rs).
 fn subtitle(scene: &Scene, data: Option<&ModelsData>) -> String {
     let ball = &scene.ball;
     match data {
@@ -163,7 +165,7 @@ fn subtitle(scene: &Scene, data: Option<&ModelsData>) -> String {
             short(d.target, 4),
             short(d.v0, 3)
         ),
-        None => format!("{}, {} law; calibrating…", ball.name, ball.law),
+        None => format!("{}, {} law; peers not calibrated", ball.name, ball.law),
     }
 }
 
