@@ -24,6 +24,9 @@ pub struct Fit {
     pub base: ImpactParams,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub result: Option<FitResult>,
+    /// The data were drop tests, taken in vacuum (`FitPane::drops`; absent: other data).
+    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+    pub drops: bool,
 }
 
 /// A finished fit's answer.
@@ -103,6 +106,7 @@ impl Fit {
             error,
             base: pane.base,
             result,
+            drops: pane.drops,
         })
     }
 
@@ -131,6 +135,7 @@ impl Fit {
             status,
             armed: false,
             progress: None,
+            drops: self.drops,
         })
     }
 }

@@ -121,6 +121,9 @@ pub struct FitPane {
     pub armed: bool,
     /// While it runs: the worker's last word on its progress.
     pub progress: Option<FitProgress>,
+    /// The data were drop tests: their COR taken in vacuum ([`request`]: `Flight::vacuum()`,
+    /// as `bouncelab fit --drop-test` without `--drag-coefficient`), which the pane says.
+    pub drops: bool,
 }
 
 /// How a finished fit stands to the ball on screen.
@@ -157,7 +160,9 @@ pub fn request(
     let input = match &loaded.data {
         Data::Trace(t) => FitInput::Trace(t.clone()),
         Data::Cor(t) => FitInput::Cor(t.points.clone()),
-        // each drop weighed by its rebound height's reading, as `fit --drop-test` weighs it
+        // each drop weighed by its rebound height's reading, as `fit --drop-test` weighs it,
+        // and in vacuum, as it takes them without `--drag-coefficient` (the pane says so:
+        // `FitPane::drops`)
         Data::Drop(d) => {
             let pairs: Vec<(f64, f64)> = d.drops.iter().map(|&(h, r, _)| (h, r)).collect();
             FitInput::Cor(drops_to_points(&pairs, &Flight::vacuum(), None))

@@ -95,6 +95,7 @@ impl App {
             return None;
         };
         self.fit.id += 1;
+        let drops = matches!(loaded.data, crate::measured::Data::Drop(_));
         let s = &self.setting;
         match measured::request(self.fit.id, loaded, &s.params, s.law) {
             Ok(r) => {
@@ -107,6 +108,7 @@ impl App {
                     status: FitStatus::Running,
                     armed: false,
                     progress: None,
+                    drops,
                 });
                 self.info(format!("fitting {} to {}…", names(&r.free), r.label));
                 Some(Effect::Fit(r))

@@ -1,6 +1,7 @@
 //! The fit pane under the charts (`f`): "fitting…" while the fit worker runs, then each
-//! fitted parameter with its standard error and 95 % interval, the residual RMS, and whether
-//! `F` applies it — or that it is stale, the ball having changed since `f`.
+//! fitted parameter with its standard error and 95 % interval, the residual RMS, for a drop
+//! test that its drops were taken in vacuum, and whether `F` applies it — or that it is
+//! stale, the ball having changed since `f`.
 
 use crate::analysis::fit::Estimate;
 use crate::tui::format::{self, screen_unit, uncertainty, value};
@@ -24,7 +25,11 @@ impl FitView<'_> {
     pub fn height(&self) -> u16 {
         let rows = match &self.pane.status {
             FitStatus::Done(Ok(o)) => {
-                o.fitted.len() + usize::from(o.time_offset.is_some()) + o.warnings.len().min(1) + 2
+                o.fitted.len()
+                    + usize::from(o.time_offset.is_some())
+                    + usize::from(self.pane.drops)
+                    + o.warnings.len().min(1)
+                    + 2
             }
             _ => 2,
         };
@@ -59,7 +64,7 @@ impl Widget for &FitView<'_> {
                 Line::styled(format!(" failed: {e}"), t.error()),
                 Line::styled(" f fits again · O puts the data away", t.dim()),
             ],
-            FitStatus::Done(Ok(o)) => outcome(o, self.standing, &t),
+            FitStatus::Done(Ok(o)) => outcome(o, self.pane.drops, self.standing, &t),
         };
         if stale {
             title.push(Span::styled(
@@ -109,7 +114,12 @@ fn estimate(e: &Estimate) -> Line<'static> {
     ))
 }
 
-fn outcome(o: &FitOutcome, standing: Standing, t: &Theme) -> Vec<Line<'static>> {
+/// The drops' assumption, as the command line's report says how it weighed them: no air drag
+/// (`state::request` takes `Flight::vacuum()`; the explorer has no drag option).
+const DROPS: &str =
+    " drops taken in vacuum (no drag correction) · weighed by their rebound readings";
+
+fn outcome(o: &FitOutcome, drops: bool, standing: Standing, t: &Theme) -> Vec<Line<'static>> {
     let mut lines: Vec<Line> = o.fitted.iter().map(estimate).collect();
     if let Some(e) = &o.time_offset {
         lines.push(estimate(&Estimate {
@@ -130,6 +140,9 @@ fn outcome(o: &FitOutcome, standing: Standing, t: &Theme) -> Vec<Line<'static>> 
         rms.push_str(&format!(" · {} not pinned", o.not_pinned.join(", ")));
     }
     lines.push(Line::raw(rms));
+    if drops {
+        lines.push(Line::raw(DROPS));
+    }
     if let Some(w) = o.warnings.first() {
         lines.push(Line::styled(format!(" {w}"), t.warning()));
     }
