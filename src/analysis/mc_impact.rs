@@ -130,7 +130,8 @@ fn fast_one(p: &ImpactParams, law: ContactLaw) -> Option<Summary> {
         // the scalar closed form, not `lanes::flattening_one`: a flattening ball comes here
         // only where the four lanes handed it back, and a lane of width one hands it back too
         // (the same bits, `None` included: tests/map_flatten_lanes.rs), then asks this very
-        // call — the same answer for a kernel's run more (tests/mc_flattening.rs)
+        // call — the same answer for a kernel's run more (tests/mc_flattening.rs; 3 797 against
+        // 5 581 instructions on such a cell, BENCHMARKS.md "Ninth session")
         ContactLaw::Linear => crate::map::fast::flattening(n.lambda, n.zeta, n.zp_bar)
             .or_else(|| crate::solver::taylor::summary(&n, law).map(short)),
         // e > 0: a ball that leaves (the table and the steps answer only where it does)
