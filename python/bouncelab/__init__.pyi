@@ -416,6 +416,9 @@ class McStats(TypedDict):
     min: float
     max: float
     q: dict[str, float]
+    mean_se: float
+    mean_ci: list[float]
+    q_ci: dict[str, list[Optional[float]]]
 
 class MonteCarlo(TypedDict, total=False):
     samples: int
@@ -427,6 +430,7 @@ class MonteCarlo(TypedDict, total=False):
     vary: dict[str, float]
     no_rebound: int
     stats: dict[str, McStats]
+    warnings: list[str]
     values: dict[str, Array]
 
 def batch(
