@@ -416,6 +416,9 @@ class McStats(TypedDict):
     min: float
     max: float
     q: dict[str, float]
+    mean_se: float
+    mean_ci: list[float]
+    q_ci: dict[str, list[Optional[float]]]
 
 class MonteCarlo(TypedDict, total=False):
     samples: int
@@ -427,6 +430,7 @@ class MonteCarlo(TypedDict, total=False):
     vary: dict[str, float]
     no_rebound: int
     stats: dict[str, McStats]
+    warnings: list[str]
     values: dict[str, Array]
 
 def batch(
@@ -443,7 +447,7 @@ def batch(
 ) -> dict[str, Any]:
     """A batch of balls in one CSV (an ``id`` column and ``fit``'s columns), each fitted and
     judged against ``standard``, as ``bouncelab batch FILE --format json``: ``summary`` (n,
-    mean, sd, min, max, failures, cpk, …) and ``balls`` (id, cor, verdict, margin, warnings,
+    mean, sd, min, max, failures, cpk, their 95 % intervals mean_ci and cpk_ci, …) and ``balls`` (id, cor, verdict, margin, warnings,
     error, …); ``None`` where the JSON has null."""
 
 def monte_carlo(

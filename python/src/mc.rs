@@ -7,8 +7,8 @@
 
 use crate::{array, error, preset_ball};
 use bouncelab::analysis::mc::{
-    Dist, McError, McSpec, McSummary, Samples, Spread, Stats, Varied, parse_correlate, parse_vary,
-    summary,
+    Dist, McError, McSpec, McSummary, Samples, Spread, Stats, Varied, interval_warnings,
+    parse_correlate, parse_vary, summary,
 };
 use bouncelab::api::MonteCarlo;
 use numpy::{PyArray1, PyReadonlyArray1};
@@ -115,12 +115,12 @@ fn pairs(c: &Bound<'_, PyAny>) -> PyResult<Vec<(Varied, Varied, f64)>> {
     parse_correlate(&text).map_err(|e| error(e.into()))
 }
 
+/// The quantiles' keys, in the order of `bouncelab::analysis::mc::PROBS`.
+const QUANTILE_KEYS: [&str; 9] = ["1", "2.5", "5", "25", "50", "75", "95", "97.5", "99"];
+
 fn stats_dict<'py>(py: Python<'py>, s: &Stats) -> PyResult<Bound<'py, PyDict>> {
     let q = PyDict::new(py);
-    for (name, v) in ["1", "2.5", "5", "25", "50", "75", "95", "97.5", "99"]
-        .iter()
-        .zip(s.q.values())
-    {
+    for (name, v) in QUANTILE_KEYS.iter().zip(s.q.values()) {
         q.set_item(name, v)?;
     }
     let d = PyDict::new(py);
@@ -130,6 +130,16 @@ fn stats_dict<'py>(py: Python<'py>, s: &Stats) -> PyResult<Bound<'py, PyDict>> {
     d.set_item("min", s.min)?;
     d.set_item("max", s.max)?;
     d.set_item("q", q)?;
+    // the 95 % intervals (bouncelab::analysis::mc_interval): an open end is None, as the
+    // JSON's null — not NaN, which no dict equals, and runs under 368 samples have them
+    let q_ci = PyDict::new(py);
+    for (name, ci) in QUANTILE_KEYS.iter().zip(s.q_ci.values()) {
+        let end = |x: f64| (!x.is_nan()).then_some(x);
+        q_ci.set_item(name, vec![end(ci[0]), end(ci[1])])?;
+    }
+    d.set_item("mean_se", s.mean_se)?;
+    d.set_item("mean_ci", s.mean_ci.to_vec())?;
+    d.set_item("q_ci", q_ci)?;
     Ok(d)
 }
 
@@ -160,6 +170,11 @@ fn report<'py>(py: Python<'py>, r: &Request, s: &McSummary) -> PyResult<Bound<'p
     }
     d.set_item("no_rebound", s.no_rebound)?;
     d.set_item("stats", stats)?;
+    let st = &s.stats;
+    d.set_item(
+        "warnings",
+        interval_warnings(&[&st.cor, &st.max_force, &st.contact_time]),
+    )?;
     Ok(d)
 }
 
@@ -211,7 +226,8 @@ macro_rules! mc_pyfunction {
 mc_pyfunction! {
     /// A Monte Carlo over a preset's parameter tolerances, as `bouncelab mc --format json`: a dict
     /// with its keys (`samples`, `seed`, `stats` → `cor`, `max_force`, `contact_time` → `n`,
-    /// `mean`, `sd`, `min`, `max`, `q` → `"1"` … `"99"`, …). With `return_samples`, `values`
+    /// `mean`, `sd`, `min`, `max`, `q` → `"1"` … `"99"`, the 95 % intervals `mean_se`,
+    /// `mean_ci`, `q_ci` → `"1"` … `"99"` → [lo, hi], …, `warnings`). With `return_samples`, `values`
     /// holds each sample's cor, max_force, contact_time (NaN: no rebound) and varied parameters
     /// as numpy arrays. The GIL is released while the samples run (in parallel).
     fn monte_carlo<'py>(py, r; samples = 10_000; return_samples: bool = false)

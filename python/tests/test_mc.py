@@ -72,6 +72,37 @@ def test_samples_give_the_quantiles_numpy_computes():
     assert np.std(v["k_p"], ddof=1) / k_p == pytest.approx(0.05, rel=5 / np.sqrt(2 * 2001))
 
 
+def test_each_estimate_carries_its_95_percent_interval():
+    # the quantiles' ends are samples (order statistics), around the estimate; the mean's is
+    # Student's t over s/√n; 200 samples leave the 1 % and 99 % quantiles an open end (None,
+    # the JSON's null), which the warnings name (src/analysis/mc_interval.rs)
+    r = bouncelab.monte_carlo(preset="golf", vary=VARY, samples=200, seed=7, return_samples=True)
+    v = r["values"]["cor"]
+    st = r["stats"]["cor"]
+    assert st["mean_se"] == pytest.approx(np.std(v, ddof=1) / np.sqrt(200), rel=1e-12)
+    lo, hi = st["mean_ci"]
+    assert lo < st["mean"] < hi and hi - st["mean"] == pytest.approx(1.971957 * st["mean_se"])
+    for p, (a, b) in st["q_ci"].items():
+        assert all(x in v for x in (a, b) if x is not None), p
+        below, above = (-np.inf if a is None else a), (np.inf if b is None else b)
+        assert below <= st["q"][p] <= above, p
+    assert st["q_ci"]["1"][0] is None and st["q_ci"]["99"][1] is None
+    assert None not in st["q_ci"]["2.5"]
+    assert len(r["warnings"]) == 1 and "1 %, 99 %" in r["warnings"][0]
+    assert bouncelab.monte_carlo(preset="golf", vary=VARY, samples=400, seed=7)["warnings"] == []
+
+
+def test_open_ends_are_the_json_nulls():
+    # 200 samples: the 1 % and 99 % quantiles' intervals have an open end — None here, null in
+    # the command line's JSON, so the two dicts are equal
+    code, out, err = cli(
+        "mc", "--preset", "golf", "--vary", "k_p=5%,c=5%,k_r=5%", "--samples", "200",
+        "--seed", "7", "--format", "json",
+    )
+    assert code == 0, err
+    assert bouncelab.monte_carlo(preset="golf", vary=VARY, samples=200, seed=7) == json.loads(out)
+
+
 def test_zero_spread_is_the_impact_of_run():
     r = bouncelab.monte_carlo(preset="golf", vary={"k_r": 0.0}, samples=5, seed=1)
     assert r["stats"]["cor"]["mean"] == pytest.approx(bouncelab.run(preset="golf").cor, abs=1e-12)

@@ -5,8 +5,17 @@
 //!   Cpk = min(USL − μ, μ − LSL) / (3 s)
 //!
 //! over the bounds the window has (one-sided windows, like a COR maximum, use the one bound).
+//!
+//! Both the mean and Cpk are estimates from the balls measured, and carry their 95 %
+//! intervals: the mean's Student's t over s/√n, Cpk's Bissell's (1990) normal approximation
+//!
+//!   Ĉ ± z₀.₉₇₅ √(1/(9n) + Ĉ²/(2(n − 1)))
+//!
+//! (the lot's values normal; tests/batch_cpk_interval.rs measures its coverage).
 
+use super::mc_interval::mean_interval;
 use serde::Serialize;
+use statrs::distribution::{ContinuousCDF, Normal};
 
 /// The statistics of the balls' measured values (SI; `NaN`, written `null` in JSON, where
 /// there are too few balls).
@@ -27,6 +36,22 @@ pub struct BatchStats {
     /// Process capability index against the window (NaN below two balls, or with s = 0, or a
     /// window without bounds).
     pub cpk: f64,
+    /// The mean's 95 % interval, x̄ ± t₀.₉₇₅(n − 1) s/√n (NaN below two balls).
+    pub mean_ci: [f64; 2],
+    /// Cpk's 95 % interval (Bissell; NaN where Cpk is): how far the lot's capability may be
+    /// from what these balls show.
+    pub cpk_ci: [f64; 2],
+}
+
+/// Cpk's approximate 95 % interval from n values (Bissell 1990, the module's formula).
+pub fn cpk_interval(cpk: f64, n: usize) -> [f64; 2] {
+    if !cpk.is_finite() || n < 2 {
+        return [f64::NAN; 2];
+    }
+    let z = Normal::standard().inverse_cdf(0.975);
+    let nf = n as f64;
+    let half = z * (1.0 / (9.0 * nf) + cpk * cpk / (2.0 * (nf - 1.0))).sqrt();
+    [cpk - half, cpk + half]
 }
 
 /// The statistics of `values` (the measured value of each judged ball; NaN and infinite
@@ -66,6 +91,8 @@ pub fn stats(values: &[f64], window: [Option<f64>; 2]) -> BatchStats {
         max: if n == 0 { f64::NAN } else { max },
         failures,
         cpk,
+        mean_ci: mean_interval(n, mean, sd).1,
+        cpk_ci: cpk_interval(cpk, n),
     }
 }
 
@@ -90,6 +117,15 @@ mod tests {
         // the mean outside the window: Cpk negative
         let s = stats(&[5.0, 6.0, 7.0], [Some(0.5), Some(4.0)]);
         assert!(s.cpk < 0.0 && s.failures == 3, "{s:?}");
+    }
+
+    /// Bissell's half-width by hand: Ĉ = 1, n = 50: 1.959964 √(1/450 + 1/98) = 0.21846.
+    #[test]
+    fn cpk_interval_by_hand() {
+        let [lo, hi] = cpk_interval(1.0, 50);
+        let half = 1.959964 * (1.0 / 450.0 + 1.0 / 98.0f64).sqrt();
+        assert!((hi - 1.0 - half).abs() < 1e-6 && (1.0 - lo - half).abs() < 1e-6);
+        assert!(cpk_interval(f64::NAN, 50)[0].is_nan() && cpk_interval(1.0, 1)[1].is_nan());
     }
 
     #[test]

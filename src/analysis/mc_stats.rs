@@ -9,6 +9,7 @@
 //! bins that hold a rank asked for, and selection (`select_nth_unstable`) within them names
 //! each rank's value — the value a full sort puts there (`binned_ranks_are_a_full_sorts`).
 
+use super::mc_interval::{fewest_samples, mean_interval, quantile_ranks};
 use super::mc_order::{Bins, unbinned};
 #[cfg(test)]
 use super::mc_order::{order_statistics, quantiles};
@@ -17,40 +18,41 @@ use serde::Serialize;
 /// The probabilities of the quantiles reported, in percent.
 pub const PROBS: [f64; 9] = [1.0, 2.5, 5.0, 25.0, 50.0, 75.0, 95.0, 97.5, 99.0];
 
-/// The quantiles of [`PROBS`], named as the JSON writes them (`"2.5"`, `"97.5"`, …).
+/// The quantiles of [`PROBS`], named as the JSON writes them (`"2.5"`, `"97.5"`, …): their
+/// values (`Quantiles`), or their intervals (`Quantiles<[f64; 2]>`, [`Stats::q_ci`]).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, serde::Deserialize)]
 #[allow(missing_docs)] // each field is the quantile its name says
-pub struct Quantiles {
+pub struct Quantiles<T = f64> {
     #[serde(rename = "1")]
-    pub q1: f64,
+    pub q1: T,
     #[serde(rename = "2.5")]
-    pub q2_5: f64,
+    pub q2_5: T,
     #[serde(rename = "5")]
-    pub q5: f64,
+    pub q5: T,
     #[serde(rename = "25")]
-    pub q25: f64,
+    pub q25: T,
     #[serde(rename = "50")]
-    pub q50: f64,
+    pub q50: T,
     #[serde(rename = "75")]
-    pub q75: f64,
+    pub q75: T,
     #[serde(rename = "95")]
-    pub q95: f64,
+    pub q95: T,
     #[serde(rename = "97.5")]
-    pub q97_5: f64,
+    pub q97_5: T,
     #[serde(rename = "99")]
-    pub q99: f64,
+    pub q99: T,
 }
 
-impl Quantiles {
+impl<T: Copy> Quantiles<T> {
     /// The values in the order of [`PROBS`].
-    pub fn values(&self) -> [f64; 9] {
+    pub fn values(&self) -> [T; 9] {
         [
             self.q1, self.q2_5, self.q5, self.q25, self.q50, self.q75, self.q95, self.q97_5,
             self.q99,
         ]
     }
 
-    fn from_values(v: [f64; 9]) -> Quantiles {
+    fn from_values(v: [T; 9]) -> Quantiles<T> {
         Quantiles {
             q1: v[0],
             q2_5: v[1],
@@ -81,6 +83,30 @@ pub struct Stats {
     pub max: f64,
     /// Quantiles of type 7 at [`PROBS`].
     pub q: Quantiles,
+    /// The mean's standard error s/√n (NaN below two samples): how far the mean of these
+    /// samples may be from the run's infinite-sample mean (`mc_interval`).
+    #[serde(default = "nan")]
+    pub mean_se: f64,
+    /// The mean's 95 % interval, x̄ ± t₀.₉₇₅(n − 1) s/√n.
+    #[serde(default = "nan_pair")]
+    pub mean_ci: [f64; 2],
+    /// Each quantile's 95 % interval, [lo, hi], distribution-free from the order statistics
+    /// (`mc_interval`); NaN on a side the samples are too few for (below 368 for the 1 %
+    /// quantile's lower end).
+    #[serde(default = "nan_pairs")]
+    pub q_ci: Quantiles<[f64; 2]>,
+}
+
+fn nan() -> f64 {
+    f64::NAN
+}
+
+fn nan_pair() -> [f64; 2] {
+    [f64::NAN; 2]
+}
+
+fn nan_pairs() -> Quantiles<[f64; 2]> {
+    Quantiles::from_values([[f64::NAN; 2]; 9])
 }
 
 /// Neumaier's compensated sum, in the order given: the same values in the same order give the
@@ -136,6 +162,9 @@ pub fn stats(values: &[f64]) -> Stats {
             min: nan,
             max: nan,
             q: Quantiles::from_values([nan; 9]),
+            mean_se: nan,
+            mean_ci: nan_pair(),
+            q_ci: nan_pairs(),
         };
     }
     let mean = total.total() / n as f64;
@@ -158,7 +187,14 @@ pub fn stats(values: &[f64]) -> Stats {
         let lo = h.floor() as usize;
         [lo, (lo + 1).min(n - 1)]
     };
+    // each quantile's interval: two more order statistics (`mc_interval`)
+    let ci_ranks = PROBS.map(|p| quantile_ranks(n, p / 100.0));
     let mut ranks: Vec<usize> = hs.iter().flat_map(|&h| pair(h)).collect();
+    ranks.extend(
+        ci_ranks
+            .iter()
+            .flat_map(|&(lo, hi)| lo.into_iter().chain(hi)),
+    );
     ranks.sort_unstable();
     ranks.dedup();
     let x = match &bins {
@@ -171,6 +207,9 @@ pub fn stats(values: &[f64]) -> Stats {
         let (x_lo, x_hi) = (value(lo), value(hi));
         x_lo + (h - lo as f64) * (x_hi - x_lo)
     });
+    let side = |r: Option<usize>| r.map_or(f64::NAN, value);
+    let q_ci = ci_ranks.map(|(lo, hi)| [side(lo), side(hi)]);
+    let (mean_se, mean_ci) = mean_interval(n, mean, sd);
     Stats {
         n,
         mean,
@@ -178,7 +217,39 @@ pub fn stats(values: &[f64]) -> Stats {
         min,
         max,
         q: Quantiles::from_values(q),
+        mean_se,
+        mean_ci,
+        q_ci: Quantiles::from_values(q_ci),
     }
+}
+
+/// What the reader of `stats` should know about its intervals: the quantiles whose 95 %
+/// interval lacks an end (NaN: too few samples for that tail), and how many samples they
+/// need; nothing when every interval is whole. Only quantities with samples count (a contact
+/// time without rebounds has no statistics at all).
+pub fn interval_warnings(stats: &[&Stats]) -> Vec<String> {
+    let mut open = Vec::new();
+    let mut need = 0;
+    for (k, p) in PROBS.iter().enumerate() {
+        let lacks = |s: &&&Stats| s.n > 0 && s.q_ci.values()[k].iter().any(|x| x.is_nan());
+        if stats.iter().any(|s| lacks(&s)) {
+            open.push(format!("{p} %"));
+            need = need.max(fewest_samples(p / 100.0));
+        }
+    }
+    if open.is_empty() {
+        return Vec::new();
+    }
+    let n = stats
+        .iter()
+        .map(|s| s.n)
+        .filter(|&n| n > 0)
+        .min()
+        .unwrap_or(0);
+    vec![format!(
+        "{n} samples are too few for a 95 % interval of the {} quantiles (an open end; {need} needed)",
+        open.join(", ")
+    )]
 }
 
 #[cfg(test)]

@@ -7,6 +7,7 @@ pub mod fit;
 pub mod mc;
 mod mc_corr;
 mod mc_impact;
+mod mc_interval;
 mod mc_order;
 mod mc_rng;
 mod mc_spec;

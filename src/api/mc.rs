@@ -154,6 +154,11 @@ impl Ball {
     }
 }
 
+/// The warnings of a run's statistics (the three quantities').
+fn stats_warnings(st: &McStats) -> Vec<String> {
+    crate::analysis::mc::interval_warnings(&[&st.cor, &st.max_force, &st.contact_time])
+}
+
 /// The correlations given, as a JSON object `{"k_p:c": 0.5, …}`.
 struct CorrMap<'a>(&'a [(Varied, Varied, f64)]);
 
@@ -181,7 +186,8 @@ impl Serialize for VaryMap<'_> {
 }
 
 /// `bouncelab mc --format json`, SI: `samples`, `seed`, `stats` (each quantity's `n`, `mean`,
-/// `sd`, `min`, `max` and quantiles `q`), with the ball and the spec that made them.
+/// `sd`, `min`, `max`, quantiles `q`, and the 95 % intervals `mean_se`, `mean_ci`, `q_ci`),
+/// with the ball and the spec that made them, and `warnings`.
 #[derive(Serialize)]
 pub struct McReport<'a> {
     /// Number of samples.
@@ -202,8 +208,11 @@ pub struct McReport<'a> {
     correlate: Option<CorrMap<'a>>,
     /// Samples in which the ball stayed at the wall (left out of `contact_time`).
     pub no_rebound: usize,
-    /// The statistics.
+    /// The statistics, each with its 95 % intervals (`mean_se`, `mean_ci`, `q_ci`).
     pub stats: &'a McStats,
+    /// What the reader should know: quantiles too far in the tail for the samples to give
+    /// their interval an end (`analysis::mc::interval_warnings`); `[]` when nothing.
+    pub warnings: Vec<String>,
 }
 
 impl<'a> McReport<'a> {
@@ -221,6 +230,7 @@ impl<'a> McReport<'a> {
             correlate: spec.correlation.as_ref().map(|c| CorrMap(&c.pairs)),
             no_rebound: summary.no_rebound,
             stats: &summary.stats,
+            warnings: stats_warnings(&summary.stats),
         }
     }
 }

@@ -337,27 +337,38 @@ fn text(
             "–".to_string()
         }
     };
+    // an estimate's 95 % interval beside it, where there is one (analysis::batch_stats)
+    let within = |ci: [f64; 2], f: &dyn Fn(f64) -> String| {
+        if ci.iter().all(|x| x.is_finite()) {
+            format!(" (95 % {} … {})", f(ci[0]), f(ci[1]))
+        } else {
+            String::new()
+        }
+    };
+    let c = |x: f64| given(x, 3);
     writeln!(out)?;
     writeln!(
         out,
-        "{}: n {}, mean {}, sd {}, min {}, max {}",
+        "{}: n {}, mean {}{}, sd {}, min {}, max {}",
         quantity.replace('_', " "),
         st.n,
         v(st.mean),
+        within(st.mean_ci, &v),
         v(st.sd),
         v(st.min),
         v(st.max)
     )?;
     writeln!(
         out,
-        "failures {} of {}, Cpk {}; {} of {} fits answered",
+        "failures {} of {}, Cpk {}{}; {} of {} fits answered",
         st.failures,
         st.n,
         if st.cpk.is_finite() {
-            given(st.cpk, 3)
+            c(st.cpk)
         } else {
             "–".into()
         },
+        within(st.cpk_ci, &c),
         s.identified,
         s.balls
     )?;

@@ -8,8 +8,8 @@ use super::budget::Progress;
 use super::output::{self, csv_row, given, human, num, table};
 use super::outputs::{check as check_writable, report_then_commit};
 use crate::analysis::mc::{
-    Dist, McError, McSpec, McStats, PROBS, Sampler, Samples, Stats, parse_correlate, parse_vary,
-    summary,
+    Dist, McError, McSpec, McStats, PROBS, Sampler, Samples, Stats, interval_warnings,
+    parse_correlate, parse_vary, summary,
 };
 use crate::analysis::work;
 use crate::api::{Ball, McReport};
@@ -296,11 +296,49 @@ fn text(
         rows.push(r);
     }
     table(out, "  ", &rows)?;
+    intervals(out, st)?;
     if no_rebound > 0 {
         writeln!(
             out,
             "\n{no_rebound} samples did not rebound (e = 0): left out of t_f"
         )?;
+    }
+    Ok(())
+}
+
+/// The 95 % intervals of the mean and the quantiles (analysis::mc_interval): how far each
+/// estimate above may be from the run's infinite-sample value; "–" on a side the samples are
+/// too few for, and a warning naming those quantiles.
+fn intervals(out: &mut dyn Write, st: &McStats) -> std::io::Result<()> {
+    let cols = [
+        (&st.cor, 1.0),
+        (&st.max_force, 1.0),
+        (&st.contact_time, 1e3),
+    ];
+    let side = |x: f64, scale: f64| {
+        if x.is_nan() {
+            "–".to_string()
+        } else {
+            human(x * scale, 5)
+        }
+    };
+    let span = |ci: [f64; 2], k: f64| format!("{} … {}", side(ci[0], k), side(ci[1], k));
+    writeln!(
+        out,
+        "\n95 % intervals of these estimates (sampling error; docs/scale.md):"
+    )?;
+    let mut rows = vec![["", "COR", "F_m N", "t_f ms"].map(String::from).to_vec()];
+    let mut r = vec!["mean".to_string()];
+    r.extend(cols.iter().map(|(s, k)| span(s.mean_ci, *k)));
+    rows.push(r);
+    for (i, p) in PROBS.iter().enumerate() {
+        let mut r = vec![format!("{} %", given(*p, 3))];
+        r.extend(cols.iter().map(|(s, k)| span(s.q_ci.values()[i], *k)));
+        rows.push(r);
+    }
+    table(out, "  ", &rows)?;
+    for w in interval_warnings(&[&st.cor, &st.max_force, &st.contact_time]) {
+        writeln!(out, "warning: {w}")?;
     }
     Ok(())
 }

@@ -354,7 +354,15 @@ impl<'a> Plot<'a> {
                     continue;
                 };
                 let bounds = (l.plot.x, l.plot.right(), l.plot.y, l.plot.bottom());
-                let pieces = marker_place(text, (col, row), bounds, &taken);
+                // a text keeps off every other marker's glyph too, drawn or still to come,
+                // so a glyph never lands inside another marker's label ("z_f 3●.9 mm":
+                // tests/tui_marks.rs)
+                let blocked: Vec<(u16, u16)> = taken
+                    .iter()
+                    .copied()
+                    .chain(points.iter().copied().filter(|&c| c != (col, row)))
+                    .collect();
+                let pieces = marker_place(text, (col, row), bounds, &blocked);
                 if pieces.len() == 1 && pieces[0].2.chars().count() < text.chars().count() {
                     // the glyph alone: its label goes to the legend
                     let mut chars = text.chars();
