@@ -87,7 +87,7 @@ pub use collide::CollisionReport;
 pub use columns::{Columns, Unanswered, first_pass};
 pub use entry::Overrides;
 pub use error::BallError;
-pub use intervals::{Intervals, bands, holds, intervals};
+pub use intervals::{Intervals, bands, fit_table, holds, intervals};
 pub use mc::{McReport, MonteCarlo};
 pub use oblique::{CourtPace, ObliqueSpec, SOLID_INERTIA_FACTOR};
 pub use oblique_fit::{ObliqueFitReport, is_data_error as is_oblique_data_error};

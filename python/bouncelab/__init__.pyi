@@ -447,8 +447,9 @@ def batch(
 ) -> dict[str, Any]:
     """A batch of balls in one CSV (an ``id`` column and ``fit``'s columns), each fitted and
     judged against ``standard``, as ``bouncelab batch FILE --format json``: ``summary`` (n,
-    mean, sd, min, max, failures, cpk, their 95 % intervals mean_ci and cpk_ci, …) and ``balls`` (id, cor, verdict, margin, warnings,
-    error, …); ``None`` where the JSON has null."""
+    mean, sd, min, max, failures, cpk, the 95 % intervals mean_ci and cpk_ci, unsure, …) and
+    ``balls`` (id, cor, verdict, margin, measured_ci95, warnings, error, …); ``None`` where
+    the JSON has null."""
 
 def monte_carlo(
     *,

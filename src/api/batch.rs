@@ -54,6 +54,10 @@ pub struct BallOutcome {
     pub verdict: Option<&'static str>,
     /// Distance to the nearer bound of the window, positive inside.
     pub margin: Option<f64>,
+    /// `measured`'s 95 % interval from the fit's covariance, carried through the standard's
+    /// test by the delta method (docs/batch.md); `None` where the fit leaves no degree of
+    /// freedom (one drop, or a value per free parameter: the data themselves).
+    pub measured_ci95: Option<[f64; 2]>,
     /// What the fit warns of.
     pub warnings: Vec<String>,
     /// Why the ball has no verdict: its data could not be fitted.
@@ -77,6 +81,7 @@ impl BallOutcome {
             measured: None,
             verdict: None,
             margin: None,
+            measured_ci95: None,
             warnings: Vec::new(),
             error: None,
         }
@@ -145,6 +150,14 @@ impl Ball {
         };
         if let Err(e) = judge(&fitted, setup, &mut o) {
             o.error = Some(e);
+            return o;
+        }
+        if let Some(table) = super::fit_table(&f) {
+            // a test a perturbed ball cannot run leaves the value without its interval
+            if let Ok(ci) = measured_band(&fitted, setup, &table) {
+                o.measured_ci95 = Some(ci);
+                o.warnings.extend(unsure(setup.standard, &o, ci));
+            }
         }
         o
     }
@@ -197,6 +210,52 @@ fn judge(ball: &Ball, setup: &BatchSetup<'_>, o: &mut BallOutcome) -> Result<(),
     Ok(())
 }
 
+/// The 95 % interval of what the standard measures on `ball`, from the fit's covariance
+/// `table` (`super::bands`: each fitted parameter moved, the standard's test run again).
+fn measured_band(
+    ball: &Ball,
+    setup: &BatchSetup<'_>,
+    table: &crate::preset::FitTable,
+) -> Result<[f64; 2], crate::api::BallError> {
+    let band = super::bands(&ball.params, table, |p| {
+        let moved = Ball {
+            params: *p,
+            ..ball.clone()
+        };
+        Ok(vec![
+            setup
+                .standard
+                .judge(&moved.drop_ball(), setup.air)?
+                .measured,
+        ])
+    })?;
+    Ok(band[0])
+}
+
+/// The warning of a verdict the ball's interval leaves open: a bound of the window inside
+/// `ci` (the verdict would change within the fit's uncertainty).
+fn unsure(s: &Standard, o: &BallOutcome, ci: [f64; 2]) -> Option<String> {
+    let bound = s
+        .window
+        .into_iter()
+        .flatten()
+        .find(|&b| within_one(b, ci))?;
+    let (_, unit) = quantity(s);
+    let unit = if unit.is_empty() {
+        String::new()
+    } else {
+        format!(" {unit}")
+    };
+    Some(format!(
+        "the window's bound {}{unit} lies within this ball's 95 % interval ({} … {}{unit}): \
+         its {} is not sure at 95 %",
+        crate::text::short(bound, 4),
+        crate::text::short(ci[0], 4),
+        crate::text::short(ci[1], 4),
+        o.verdict.unwrap_or("verdict")
+    ))
+}
+
 /// The standard a batch is judged against, as the JSON names it.
 #[derive(Debug, Clone, Serialize)]
 pub struct StandardRef {
@@ -224,6 +283,9 @@ pub struct BatchSummary {
     pub identified: usize,
     /// Balls without a verdict (their `error` says why).
     pub no_answer: usize,
+    /// Balls whose verdict their own 95 % interval leaves open (a bound of the window inside
+    /// `measured_ci95`; each says so in its `warnings`).
+    pub unsure: usize,
     /// Every parameter fitted in some ball, in the output's order.
     pub free: Vec<&'static str>,
 }
@@ -270,11 +332,24 @@ impl<'a> BatchReport<'a> {
                 balls: balls.len(),
                 identified: balls.iter().filter(|b| b.identified).count(),
                 no_answer: balls.iter().filter(|b| b.verdict.is_none()).count(),
+                unsure: balls
+                    .iter()
+                    .filter(|b| b.measured_ci95.is_some_and(|ci| within(standard, ci)))
+                    .count(),
                 free,
             },
             balls,
         }
     }
+}
+
+/// Whether a bound of `s`'s window lies strictly inside `ci`.
+fn within(s: &Standard, ci: [f64; 2]) -> bool {
+    s.window.into_iter().flatten().any(|b| within_one(b, ci))
+}
+
+fn within_one(bound: f64, ci: [f64; 2]) -> bool {
+    ci[0] < bound && bound < ci[1]
 }
 
 /// Some balls of a batch have no verdict: the command line's exit 1, after its report.

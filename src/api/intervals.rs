@@ -7,7 +7,7 @@
 
 use super::{Ball, BallError};
 use crate::analysis::fit::stats::t975;
-use crate::analysis::fit::{Param, apply};
+use crate::analysis::fit::{MultiFit, Param, apply};
 use crate::analysis::work::Watch;
 use crate::model::contact::ContactLaw;
 use crate::model::params::ImpactParams;
@@ -106,6 +106,39 @@ pub fn bands(
             [y[k] - half, y[k] + half]
         })
         .collect())
+}
+
+/// A fit's uncertainty as a `[fit]` table (docs/fitting.md, "Prediction intervals"): what
+/// `fit --save` writes into the preset, and what a batch's ball propagates to its test: cov_ij = r_ij s_i s_j of the free parameters' correlations and standard errors,
+/// dof = n − p; `None` when no degree of freedom is left, a standard error is not finite, or
+/// v0 was fitted.
+pub fn fit_table(f: &MultiFit) -> Option<FitTable> {
+    let dof = f.points.checked_sub(f.names.len()).filter(|&d| d > 0)?;
+    // a fitted v0 is the trace's speed, not the ball's: its covariance is no preset's
+    if f.fitted
+        .iter()
+        .any(|e| e.name == crate::analysis::fit::Param::V0.name())
+    {
+        return None;
+    }
+    let se: Vec<f64> = f.fitted.iter().map(|e| e.std_error).collect();
+    if se.iter().any(|s| !s.is_finite()) {
+        return None;
+    }
+    let k = se.len();
+    // r_ij s_i s_j, symmetric to the last bit
+    let cov =
+        |i: usize, j: usize| 0.5 * (f.correlation[i][j] + f.correlation[j][i]) * (se[i] * se[j]);
+    let covariance = (0..k)
+        .map(|i| (0..k).map(|j| cov(i, j)).collect())
+        .collect();
+    Some(FitTable {
+        free: f.fitted.iter().map(|e| e.name.to_string()).collect(),
+        values: f.fitted.iter().map(|e| e.value).collect(),
+        covariance,
+        dof: u32::try_from(dof).ok()?,
+        residual_sd: f.rms_residual * (f.points as f64 / dof as f64).sqrt(),
+    })
 }
 
 impl Ball {

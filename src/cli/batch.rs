@@ -192,7 +192,8 @@ fn judge_all(
 }
 
 /// `id, line, data, points, free, k_p, c, k_r, z_p, identified, cor, measured, verdict,
-/// margin, error, warnings` (SI; empty where a ball has no value; lists joined by `; `).
+/// margin, error, warnings, measured_ci95_lo, measured_ci95_hi` (SI; empty where a ball has
+/// no value; lists joined by `; `; the interval's columns last, added after the others).
 fn balls_csv(balls: &[BallOutcome]) -> String {
     let header = [
         "id",
@@ -211,6 +212,8 @@ fn balls_csv(balls: &[BallOutcome]) -> String {
         "margin",
         "error",
         "warnings",
+        "measured_ci95_lo",
+        "measured_ci95_hi",
     ];
     let mut buf = Vec::new();
     let mut rows = || -> std::io::Result<()> {
@@ -233,6 +236,8 @@ fn balls_csv(balls: &[BallOutcome]) -> String {
                 output::opt_num(b.margin),
                 b.error.clone().unwrap_or_default(),
                 b.warnings.join("; "),
+                output::opt_num(b.measured_ci95.map(|ci| ci[0])),
+                output::opt_num(b.measured_ci95.map(|ci| ci[1])),
             ];
             csv_row(&mut buf, &row)?;
         }
@@ -372,6 +377,13 @@ fn text(
         s.identified,
         s.balls
     )?;
+    if s.unsure > 0 {
+        writeln!(
+            out,
+            "verdicts not sure at 95 %: {} (a bound of the window within the ball's own interval)",
+            s.unsure
+        )?;
+    }
     let warned = r.balls.iter().filter(|b| !b.warnings.is_empty()).count();
     if warned > 0 {
         writeln!(

@@ -9,7 +9,7 @@ use crate::api::Ball;
 use crate::atomic::Outputs;
 use crate::catalog::{self, Catalog, Origin};
 use crate::model::params::ImpactParams;
-use crate::preset::{Adopted, FitTable, Measured, ParamSource, Preset};
+use crate::preset::{Adopted, Measured, ParamSource, Preset};
 use std::path::{Path, PathBuf};
 
 fn dir() -> anyhow::Result<PathBuf> {
@@ -169,41 +169,8 @@ fn preset(
             k_p: Some(p.k_p),
             k_r: p.k_r,
         },
-        fit: fit_table(f),
+        fit: crate::api::fit_table(f),
     }
-}
-
-/// The fit's uncertainty as the preset's `[fit]` table (docs/fitting.md, "Prediction
-/// intervals"): cov_ij = r_ij s_i s_j of the free parameters' correlations and standard errors,
-/// dof = n − p; `None` when no degree of freedom is left, a standard error is not finite, or
-/// v0 was fitted.
-fn fit_table(f: &MultiFit) -> Option<FitTable> {
-    let dof = f.points.checked_sub(f.names.len()).filter(|&d| d > 0)?;
-    // a fitted v0 is the trace's speed, not the ball's: its covariance is no preset's
-    if f.fitted
-        .iter()
-        .any(|e| e.name == crate::analysis::fit::Param::V0.name())
-    {
-        return None;
-    }
-    let se: Vec<f64> = f.fitted.iter().map(|e| e.std_error).collect();
-    if se.iter().any(|s| !s.is_finite()) {
-        return None;
-    }
-    let k = se.len();
-    // r_ij s_i s_j, symmetric to the last bit
-    let cov =
-        |i: usize, j: usize| 0.5 * (f.correlation[i][j] + f.correlation[j][i]) * (se[i] * se[j]);
-    let covariance = (0..k)
-        .map(|i| (0..k).map(|j| cov(i, j)).collect())
-        .collect();
-    Some(FitTable {
-        free: f.fitted.iter().map(|e| e.name.to_string()).collect(),
-        values: f.fitted.iter().map(|e| e.value).collect(),
-        covariance,
-        dof: u32::try_from(dof).ok()?,
-        residual_sd: f.rms_residual * (f.points as f64 / dof as f64).sqrt(),
-    })
 }
 
 /// The preset staged in `files`, to be published with the fit's other outputs
