@@ -32,6 +32,11 @@ pub(super) fn lone_real_root<L: Lane>(a2: L, a0: L) -> (L, L, L, L, L) {
         let (next, small) = newton(r, a2, a0);
         r = done.select(r, next);
         done |= small;
+        // every lane settled: the steps left would keep r as it is (`done` selects it), so
+        // stopping gives the same bits and takes their divisions off a lone cell's chain
+        if !(!done).any() {
+            break;
+        }
     }
     // the lanes of three real roots go on alone; every other lane keeps its four steps
     let mut k = 4;
