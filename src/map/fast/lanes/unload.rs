@@ -5,11 +5,12 @@
 //! lane, as `flatten::flattening` forms them.
 
 use super::super::super::lane::Lane;
+use super::super::super::math::Estrin;
 use super::super::{Flow4, Point4, lone_real_root};
 use crate::solver::series::INV_FACTORIAL;
 /// The unloading's flow: a `Flow4` from a state, and what its bounds need beyond it.
 pub(super) struct Unload<L: Lane> {
-    pub(super) flow: Flow4<L>,
+    pub(super) flow: Flow4<L, Estrin>,
     /// B's rounding scale (the loading's B = −A shares A's; a state's does not).
     sb: L,
     /// (r + σ)² + ω² and σ² + ω², for the responses.
@@ -48,7 +49,7 @@ impl<L: Lane> Unload<L> {
         let two_zeta = v(2.0) * zeta;
         let (a2, a0) = (two_zeta * (v(1.0) + lambda), two_zeta * lambda);
         // three real roots: the pair does not oscillate, the lane goes back to the scalar path
-        let (r, p1, p0, mut ok, three) = lone_real_root(a2, a0);
+        let (r, p1, p0, mut ok, three) = lone_real_root::<L, Estrin>(a2, a0);
         ok &= !three;
         let sigma = v(0.5) * p1;
         let omega2 = p0 - sigma * sigma;
@@ -75,12 +76,14 @@ impl<L: Lane> Unload<L> {
             sigma,
             omega2,
             omega: omega2.sqrt(),
+            inv_omega: v(1.0) / omega2.sqrt(),
             a,
             d,
             p,
             q,
             jet,
             hyper: three & !three,
+            sums: std::marker::PhantomData,
         };
         (Unload { flow, sb, gap, p0 }, ok)
     }
@@ -147,7 +150,10 @@ mod tests {
     /// |x| < 1/2, and exactly 0 at 0.
     #[test]
     fn exp_m1_half_is_libms_to_four_ulp() {
-        assert_eq!(super::exp_m1_half(wide::f64x4::splat(0.0)).to_array()[0], 0.0);
+        assert_eq!(
+            super::exp_m1_half(wide::f64x4::splat(0.0)).to_array()[0],
+            0.0
+        );
         for i in -5000..5000 {
             let x = f64::from(i) / 10_000.0 + 1.234_567e-5;
             let got = super::exp_m1_half(wide::f64x4::splat(x)).to_array()[0];
