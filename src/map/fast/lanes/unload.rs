@@ -5,7 +5,7 @@
 //! lane, as `flatten::flattening` forms them.
 
 use super::super::super::lane::Lane;
-use super::super::super::math::Estrin;
+use super::super::super::math::{Estrin, pair};
 use super::super::{Flow4, Point4, lone_real_root};
 use crate::solver::series::INV_FACTORIAL;
 /// The unloading's flow: a `Flow4` from a state, and what its bounds need beyond it.
@@ -28,15 +28,16 @@ pub(super) struct Unload<L: Lane> {
 /// series over a [`Lane`], which no crate sums.
 #[inline(always)]
 fn exp_m1_half<L: Lane>(x: L) -> L {
-    let c = |k: usize| L::splat(INV_FACTORIAL[k + 1]);
-    let pair = |k: usize| x.mul_add(c(k + 1), c(k));
-    let x2 = x * x;
+    // 1/(k + 1)! is INV_FACTORIAL[k + 1]; `pair` a function, not a closure (math.rs says why)
+    let (x2, f) = (x * x, &INV_FACTORIAL[1..]);
     let x4 = x2 * x2;
+    let quad0 = x2.mul_add(pair(x, f, 2), pair(x, f, 0));
+    let quad4 = x2.mul_add(pair(x, f, 6), pair(x, f, 4));
+    let quad8 = x2.mul_add(pair(x, f, 10), pair(x, f, 8));
+    let quad12 = x2.mul_add(pair(x, f, 14), pair(x, f, 12));
+    let (low, high) = (x4.mul_add(quad4, quad0), x4.mul_add(quad12, quad8));
     let x8 = x4 * x4;
-    let quad = |k: usize| x2.mul_add(pair(k + 2), pair(k));
-    let low = x4.mul_add(quad(4), quad(0));
-    let high = x4.mul_add(quad(12), quad(8));
-    let sum = (x8 * x8).mul_add(c(16), x8.mul_add(high, low));
+    let sum = (x8 * x8).mul_add(L::splat(f[16]), x8.mul_add(high, low));
     x * sum
 }
 
