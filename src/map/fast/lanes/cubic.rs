@@ -3,7 +3,7 @@
 //! them), as `propagator::modes_of` finds them in the scalar path.
 
 use super::super::lane::Lane;
-use super::super::math::cbrt;
+use super::super::math::{Sums, cbrt};
 
 /// Most Newton steps for the slowest of three real roots (from 0, `hyper.rs`).
 const MAX_NEWTON_THREE: usize = 16;
@@ -15,13 +15,15 @@ const MAX_NEWTON_THREE: usize = 16;
 /// (Cardano's discriminant ≤ 0): the slowest, by Newton from 0, which falls to it
 /// monotonically (`hyper.rs` says why), in at most [`MAX_NEWTON_THREE`] steps that must settle.
 #[inline(always)]
-pub(super) fn lone_real_root<L: Lane>(a2: L, a0: L) -> (L, L, L, L, L) {
+pub(super) fn lone_real_root<L: Lane, S: Sums>(a2: L, a0: L) -> (L, L, L, L, L) {
     let v = L::splat;
     let (one, zero) = (v(1.0), v(0.0));
-    let shift = a2 / v(3.0);
+    // the quotients as `S` forms them (`Sums::over`): Newton's steps below settle the root to
+    // 4ε whatever Cardano's start's last bits
+    let shift = S::over(a2, 3.0);
     let p = one - a2 * shift;
     let q = (v(2.0) * shift * shift - one) * shift + a0;
-    let disc = v(0.25) * q * q + p * p * p / v(27.0);
+    let disc = v(0.25) * q * q + S::over(p * p * p, 27.0);
     let three = disc.le(zero);
     let sign = q.sign_negative().select(v(-1.0), one);
     let u = cbrt(v(-0.5) * q - sign * disc.sqrt());
@@ -32,6 +34,11 @@ pub(super) fn lone_real_root<L: Lane>(a2: L, a0: L) -> (L, L, L, L, L) {
         let (next, small) = newton(r, a2, a0);
         r = done.select(r, next);
         done |= small;
+        // every lane settled: the steps left would keep r as it is (`done` selects it), so
+        // stopping gives the same bits and takes their divisions off a lone cell's chain
+        if !(!done).any() {
+            break;
+        }
     }
     // the lanes of three real roots go on alone; every other lane keeps its four steps
     let mut k = 4;

@@ -17,14 +17,15 @@
 //! real roots), where a refinement does not settle on a falling crossing within its lobe
 //! (the scalar path's bracket search: reloads, long steps), and where the bound cannot keep
 //! `KEEP`. A lane's answer agrees with the scalar `flattening` to 1e-12, not bit for bit: the
-//! exponential, `atan2` and `cbrt` are the lanes' (`math.rs`), the short steps Horner's where
-//! the scalar refinements sum Estrin's (tests/map_flatten_lanes.rs).
+//! exponential, `atan2` and `cbrt` are the lanes' (`math.rs`), and the flows' sums and steps
+//! are `math::Estrin`'s (tests/map_flatten_lanes.rs) — a lone cell (`flattening_one`) is one
+//! dependent chain, shortened where a series, a quotient by a constant or by ω stood on it.
 
 use super::super::lane::{LANES, Lane};
-use super::super::math::atan2;
+use super::super::math::{Estrin, atan2};
 use super::{Flow4, Point4, Root4, householder_root, taylor};
 use crate::map::fast::{KEEP, Summary, flattening};
-use std::f64::consts::{FRAC_PI_2, PI};
+use std::f64::consts::{FRAC_1_PI, FRAC_PI_2, PI};
 use wide::f64x4;
 
 #[path = "unload.rs"]
@@ -33,7 +34,7 @@ use unload::Unload;
 
 /// `Flow::derivative_rounding` of the loading (B = −A: B's scale is A's).
 #[inline(always)]
-fn derivative_rounding<L: Lane>(f: &Flow4<L>, pt: &Point4<L>, k: usize) -> L {
+fn derivative_rounding<L: Lane>(f: &Flow4<L, Estrin>, pt: &Point4<L>, k: usize) -> L {
     let v = L::splat;
     let (one, t) = (v(1.0), pt.t);
     let (cm, sm) = (pt.decay, pt.decay * t.min(one / f.omega));
@@ -55,14 +56,15 @@ fn derivative_rounding<L: Lane>(f: &Flow4<L>, pt: &Point4<L>, k: usize) -> L {
 /// The loading's τ_m guess: the pair's first zero of z̄' at the phase atan2(P, −Q)
 /// (`search::peak_point`), and the lanes where P > 0.
 #[inline(always)]
-fn peak_guess<L: Lane>(f: &Flow4<L>) -> (Point4<L>, L) {
-    let w = f.omega;
+fn peak_guess<L: Lane>(f: &Flow4<L, Estrin>) -> (Point4<L>, L) {
+    // x/ω as x·(1/ω) (`Flow4::inv_omega`, formed off the chain), and one 1/√(P² + Q²)
+    let inv_w = f.inv_omega;
     let p = f.d + f.sigma * f.a;
-    let q = (f.a * f.omega2 - f.sigma * f.d) / w;
+    let q = (f.a * f.omega2 - f.sigma * f.d) * inv_w;
     let theta_m = atan2(p, -q);
-    let norm_m = (p * p + q * q).sqrt();
+    let inv_norm = L::splat(1.0) / (p * p + q * q).sqrt();
     (
-        f.at_phase(theta_m / w, -q / norm_m, p / norm_m),
+        f.at_phase(theta_m * inv_w, -q * inv_norm, p * inv_norm),
         p.gt(L::splat(0.0)),
     )
 }
@@ -70,24 +72,24 @@ fn peak_guess<L: Lane>(f: &Flow4<L>) -> (Point4<L>, L) {
 /// The unloading's separation guess: the pair part of u, e^{−σs}(B cos ωs + (D/ω) sin ωs),
 /// at its first zero past the phase 0 (`search::separation_guess(flow, 0)`).
 #[inline(always)]
-fn separation_guess<L: Lane>(f: &Flow4<L>) -> Point4<L> {
+fn separation_guess<L: Lane>(f: &Flow4<L, Estrin>) -> Point4<L> {
     let v = L::splat;
-    let (one, w) = (v(1.0), f.omega);
+    let (one, inv_w) = (v(1.0), f.inv_omega);
     let [_, b, d] = f.jet[0];
     let flip = d.lt(v(0.0)).select(v(-1.0), one);
-    let (a, dw) = (-flip * b, flip * d / w);
+    let (a, dw) = (-flip * b, flip * d * inv_w);
     let theta = atan2(a, dw);
-    let k = (-theta / v(PI)).floor() + one;
+    let k = (-theta * v(FRAC_1_PI)).floor() + one;
     let odd = (k - v(2.0) * (v(0.5) * k).floor()).ne(v(0.0));
     let norm_f = odd.select(v(-1.0), one) / (a * a + dw * dw).sqrt();
-    f.at_phase((theta + k * v(PI)) / w, dw * norm_f, a * norm_f)
+    f.at_phase((theta + k * v(PI)) * inv_w, dw * norm_f, a * norm_f)
 }
 
 /// `search::refine`: the root of z̄^{(k)} (k = 1: τ_m, k = 0: separation) from its guess by
 /// Householder's steps ([`householder_root`]), and the lanes where it settled within a
 /// quarter of the pair's period of its guess.
 #[inline(always)]
-fn refine<L: Lane>(f: &Flow4<L>, guess: Point4<L>, live: L, k: usize) -> (Root4<L>, L) {
+fn refine<L: Lane>(f: &Flow4<L, Estrin>, guess: Point4<L>, live: L, k: usize) -> (Root4<L>, L) {
     let v = L::splat;
     let (root, found) = householder_root(f, guess, live, k);
     let lobe = (root.t - guess.t).le(v(FRAC_PI_2) / f.omega);
@@ -108,16 +110,16 @@ struct Turn<L: Lane> {
 #[inline(always)]
 fn turn<L: Lane>(lambda: L, zeta: L, live: L) -> (Turn<L>, L) {
     let v = L::splat;
-    let (load, ok) = Flow4::new(lambda, zeta);
+    let (load, ok) = Flow4::<L, Estrin>::new(lambda, zeta);
     let (guess, pos) = peak_guess(&load);
     let (peak, found) = refine(&load, guess, live & ok & pos, 1);
     let (h, j) = (peak.t - peak.point.t, &peak.jet);
     let (dz_m, dint) = load.rounding(&peak.point);
     let top = Turn {
         t: peak.t,
-        z_m: taylor(&j[0..5], h),
-        z2: taylor(&[j[2], j[3], j[4], j[5], v(0.0)], h),
-        integral: taylor(&[load.integral(&peak.point), j[0], j[1], j[2], j[3]], h),
+        z_m: taylor::<L, Estrin>(&j[0..5], h),
+        z2: taylor::<L, Estrin>(&[j[2], j[3], j[4], j[5], v(0.0)], h),
+        integral: taylor::<L, Estrin>(&[load.integral(&peak.point), j[0], j[1], j[2], j[3]], h),
         dz: [
             dz_m,
             derivative_rounding(&load, &peak.point, 1),
@@ -164,7 +166,7 @@ pub fn flatten_kernel<L: Lane<Array = [f64; N]>, const N: usize>(
     let live = live & ok;
     let (end, found) = refine(&unload.flow, separation_guess(&unload.flow), live, 0);
     let (he, je) = (end.t - end.point.t, &end.jet);
-    let int_u = taylor(
+    let int_u = taylor::<L, Estrin>(
         &[unload.integral(&end.point), je[0], je[1], je[2], je[3]],
         he,
     );
@@ -177,7 +179,7 @@ pub fn flatten_kernel<L: Lane<Array = [f64; N]>, const N: usize>(
     let [c0, c2] = unload.responses(v(2.0) * dz_m, dz2 / k, &end.point);
     let du_f = du_f + c0.0.abs() + c2.0.abs();
     let dint_u = dint_u + c0.1.abs() + c2.1.abs();
-    let slope = taylor(&je[1..6], he).abs();
+    let slope = taylor::<L, Estrin>(&je[1..6], he).abs();
     let dtau = du_f / slope / root_k + dz1 / top.z2.abs();
     let keep = v(KEEP);
     let precise = dz_m.le(keep * top.z_m)

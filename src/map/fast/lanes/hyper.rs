@@ -22,10 +22,10 @@
 //!   that cancellation costs 1e-13 (ν → 0, the pair nearly double) go to the scalar path.
 
 use super::super::lane::Lane;
-use super::super::math::{exp, ln_guess};
+use super::super::math::{Sums, ln_guess};
 use super::{Flow4, Point4};
 
-impl<L: Lane> Flow4<L> {
+impl<L: Lane, S: Sums> Flow4<L, S> {
     /// The point at τ where the pair is real: e^{−στ} cosh ντ and e^{−στ} sinh(ντ)/ν as half
     /// the sum and half the difference of e^{(ν−σ)τ} and e^{−(σ+ν)τ} (ν < σ: both decay, no
     /// overflow). `decay` carries e^{−στ} cosh ντ: the rounding bound reads `ec` for these
@@ -34,12 +34,12 @@ impl<L: Lane> Flow4<L> {
     pub(super) fn at_hyper(&self, t: L) -> Point4<L> {
         let v = L::splat;
         let nu = self.omega;
-        let up = exp((nu - self.sigma) * t);
-        let down = exp(-(self.sigma + nu) * t);
+        let up = S::exp((nu - self.sigma) * t);
+        let down = S::exp(-(self.sigma + nu) * t);
         let ec = v(0.5) * (up + down);
         Point4 {
             t,
-            real: exp(self.r * t),
+            real: S::exp(self.r * t),
             decay: ec,
             ec,
             es: v(0.5) * (up - down) / nu,

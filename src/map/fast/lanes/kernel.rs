@@ -5,10 +5,11 @@
 //! give the same bits (`avx2_and_portable_kernels_agree_bit_for_bit`, tests/map_lanes.rs).
 
 use super::lane::Lane;
-use super::math::{atan2, cos_sinc_sq, exp, exp_m1_small, exp_small};
+use super::math::{Horner, Sums, atan2, exp_m1_small};
 use crate::map::fast::Summary;
 use crate::map::fast::flow::SMALL;
 use std::f64::consts::PI;
+use std::marker::PhantomData;
 
 #[path = "cubic.rs"]
 mod cubic;
@@ -22,13 +23,17 @@ mod refine;
 use cubic::lone_real_root;
 use refine::{householder_root, refine_both, select6, taylor};
 
-/// The flow of four (λ, ζ): `flow::Flow`'s fields, lane by lane.
-struct Flow4<L: Lane> {
+/// The flow of four (λ, ζ): `flow::Flow`'s fields, lane by lane; `S` how it sums its series
+/// (`math::Sums`: [`Horner`] for the linear law's kernel, `Estrin` for the flattening's).
+struct Flow4<L: Lane, S: Sums = Horner> {
     size: [L; 4],
     r: L,
     sigma: L,
     omega2: L,
     omega: L,
+    /// 1/ω, for the products that stand for x/ω where `S::SHORT` (unused, so not formed,
+    /// in the linear law's kernel).
+    inv_omega: L,
     a: L,
     d: L,
     p: L,
@@ -37,6 +42,7 @@ struct Flow4<L: Lane> {
     /// The lanes whose pair is real (ω² = −ν² < 0, three real roots): `omega` holds ν there
     /// and the flow's C, S are cosh ντ, sinh(ντ)/ν (`hyper.rs`).
     hyper: L,
+    sums: PhantomData<S>,
 }
 
 /// `flow::Point`, lane by lane.
@@ -81,17 +87,17 @@ impl<L: Lane> Root4<L> {
     }
 }
 
-impl<L: Lane> Flow4<L> {
+impl<L: Lane, S: Sums> Flow4<L, S> {
     /// The flows, and the lanes whose pair oscillates and decays or, with three real roots,
     /// is real and apart from r (`Flow::new`'s coefficients, each of two equal forms the one
     /// of smaller terms).
     #[inline(always)]
-    fn new(lambda: L, zeta: L) -> (Flow4<L>, L) {
+    fn new(lambda: L, zeta: L) -> (Flow4<L, S>, L) {
         let v = L::splat;
         let (one, zero) = (v(1.0), v(0.0));
         let two_zeta = v(2.0) * zeta;
         let (a2, a0) = (two_zeta * (one + lambda), two_zeta * lambda);
-        let (r, p1, p0, mut ok, three) = lone_real_root(a2, a0);
+        let (r, p1, p0, mut ok, three) = lone_real_root::<L, S>(a2, a0);
         let sigma = v(0.5) * p1;
         let omega2 = p0 - sigma * sigma;
         let gap = (r + sigma) * (r + sigma) + omega2;
@@ -127,12 +133,14 @@ impl<L: Lane> Flow4<L> {
             sigma,
             omega2,
             omega,
+            inv_omega: one / omega,
             a,
             d,
             p,
             q,
             jet,
             hyper,
+            sums: PhantomData,
         };
         (flow, ok)
     }
@@ -140,13 +148,18 @@ impl<L: Lane> Flow4<L> {
     /// `Flow::at_phase`: the point at τ from (cos ωτ, sin ωτ).
     #[inline(always)]
     fn at_phase(&self, t: L, cos: L, sin: L) -> Point4<L> {
-        let decay = exp(-self.sigma * t);
+        let decay = S::exp(-self.sigma * t);
         Point4 {
             t,
-            real: exp(self.r * t),
+            real: S::exp(self.r * t),
             decay,
             ec: decay * cos,
-            es: decay * sin / self.omega,
+            // sin ωτ/ω from the guess's phase before e^{−στ} is ready (`Sums::SHORT`)
+            es: if S::SHORT {
+                decay * (sin * self.inv_omega)
+            } else {
+                decay * sin / self.omega
+            },
         }
     }
 
@@ -172,13 +185,13 @@ impl<L: Lane> Flow4<L> {
         let fits = (rate * h.abs()).le(v(SMALL));
         // (ωh)², or −(νh)² where the pair is real: cos and sinc become cosh and sinhc
         let wh = self.omega * h;
-        let (cos, sinc) = cos_sinc_sq(self.hyper.select(-(wh * wh), wh * wh));
-        let (s_h, decay) = (h * sinc, exp_small(-self.sigma * h));
+        let (cos, sinc) = S::cos_sinc_sq(self.hyper.select(-(wh * wh), wh * wh));
+        let (s_h, decay) = (h * sinc, S::exp_small(-self.sigma * h));
         let ec = pt.ec * cos - self.omega2 * pt.es * s_h;
         let es = pt.es * cos + pt.ec * s_h;
         let point = Point4 {
             t: pt.t + h,
-            real: pt.real * exp_small(self.r * h),
+            real: pt.real * S::exp_small(self.r * h),
             decay: pt.decay * decay,
             ec: ec * decay,
             es: es * decay,
@@ -334,7 +347,7 @@ pub fn kernel<L: Lane<Array = [f64; N]>, const N: usize>(
     let valid = l.gt(v(0.0)) & z.gt(v(0.0)) & l.is_finite() & z.is_finite();
     // a lane left out computes a harmless ball (λ = 1, ζ = 0.1), its answer then dropped
     let (l, z) = (valid.select(l, v(1.0)), valid.select(z, v(0.1)));
-    let (flow, ok) = Flow4::new(l, z);
+    let (flow, ok) = Flow4::<L, Horner>::new(l, z);
     let (guesses, pos, slope, fine) = flow.guesses();
     let live = valid & ok & fine;
     let ([peak, end], [ok_m, ok_f]) = refine_both(&flow, guesses, live, (pos, slope));
@@ -347,6 +360,7 @@ pub fn kernel<L: Lane<Array = [f64; N]>, const N: usize>(
         (end, ok_f)
     };
     let settled = ok_m & ok_f;
+    let taylor = taylor::<L, Horner>;
     let z_m = taylor(&peak.jet[0..5], peak.t - peak.point.t);
     let h = end.t - end.point.t;
     let integral = flow.integral(&end.point);

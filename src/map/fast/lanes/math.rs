@@ -3,7 +3,8 @@
 //! them (no call out to `wide`'s SSE2 `exp` and `atan2`: `avx.rs` says why by hand). Both
 //! stay within 2 ulp of libm's over the kernel's arguments (`exp_is_libms_to_two_ulp`,
 //! `atan2_is_libms_to_two_ulp`); the series of the short steps (`exp_small`, `cos_sinc_sq`) are
-//! flow.rs's, term for term.
+//! flow.rs's, term for term. [`Sums`] says how a flow sums them: by Horner's rule for the
+//! linear law's kernel, by Estrin's scheme for the flattening's.
 
 use super::lane::Lane;
 use crate::solver::series::INV_FACTORIAL;
@@ -49,6 +50,28 @@ fn horner<L: Lane>(x: L, c: &[f64]) -> L {
     sum
 }
 
+/// Σ rᵏ/k!, k ≤ 13 ([`exp`]'s series), by Estrin's scheme: seven pairs (1/k! + r/(k + 1)!)
+/// by one multiply-add each, then pairs of pairs with r², r⁴ and r⁸ — four multiply-adds deep
+/// after r⁸ where Horner's rule chains thirteen. By hand, as `estrin.rs` (the scalar path's
+/// short steps): a fixed series over a [`Lane`], which no crate sums.
+#[inline(always)]
+fn estrin14<L: Lane>(r: L) -> L {
+    let (r2, f) = (r * r, &INV_FACTORIAL);
+    let r4 = r2 * r2;
+    let low = r2.mul_add(pair(r, f, 2), pair(r, f, 0));
+    let low = r4.mul_add(r2.mul_add(pair(r, f, 6), pair(r, f, 4)), low);
+    let high = r4.mul_add(pair(r, f, 12), r2.mul_add(pair(r, f, 10), pair(r, f, 8)));
+    (r4 * r4).mul_add(high, low)
+}
+
+/// c[k] + x·c[k + 1] by one multiply-add, `c` lowest degree first: a pair of Estrin's
+/// scheme. A function, not a closure: a closure stayed a call out of the eight-lane AVX2
+/// kernel (callgrind: `flattening_lanes8_avx2` 5 980 -> 8 110 instructions a call with them).
+#[inline(always)]
+pub fn pair<L: Lane>(x: L, c: &[f64], k: usize) -> L {
+    x.mul_add(L::splat(c[k + 1]), L::splat(c[k]))
+}
+
 /// 1.5·2⁵²: (x + ROUND) − ROUND is x rounded to the nearest integer (ties to even) for
 /// |x| < 2⁵¹, the addition's own rounding doing it.
 const ROUND: f64 = 6_755_399_441_055_744.0;
@@ -71,11 +94,28 @@ fn pow2<L: Lane>(n: L) -> L {
 /// to keep k in range. NaN stays NaN.
 #[inline(always)]
 pub fn exp<L: Lane>(x: L) -> L {
+    exp_by(x, false)
+}
+
+/// [`exp`] with its series by Estrin's scheme ([`estrin14`]): within 2 ulp of libm's as well
+/// (`estrin_sums_are_horners_to_two_ulp`), some 35 cycles shorter on a dependent chain.
+#[inline(always)]
+pub fn exp_estrin<L: Lane>(x: L) -> L {
+    exp_by(x, true)
+}
+
+/// [`exp`]'s body; `estrin` a constant at each call, so one of the two sums is compiled.
+#[inline(always)]
+fn exp_by<L: Lane>(x: L, estrin: bool) -> L {
     let v = L::splat;
     let x = x.max(v(-1400.0)).min(v(1400.0));
     let k = (x * v(LOG2_E) + v(ROUND)) - v(ROUND);
     let r = (x - k * v(LN2_HI)) - k * v(LN2_LO);
-    let series = horner(r, &EXP_SERIES);
+    let series = if estrin {
+        estrin14(r)
+    } else {
+        horner(r, &EXP_SERIES)
+    };
     let half = (k * v(0.5) + v(ROUND)) - v(ROUND);
     series * pow2(half) * pow2(k - half)
 }
@@ -189,6 +229,19 @@ pub fn exp_small<L: Lane>(x: L) -> L {
     horner(x, &EXP_SMALL_SERIES)
 }
 
+/// [`exp_small`] by Estrin's scheme, as `estrin::exp_small` sums the scalar path's: the
+/// pairs by one multiply-add, then x² and x⁴, four multiply-adds deep after x⁴ where Horner's
+/// rule chains ten (`estrin_sums_are_horners_to_two_ulp`).
+#[inline(always)]
+pub fn exp_small_estrin<L: Lane>(x: L) -> L {
+    let (x2, f) = (x * x, &INV_FACTORIAL);
+    let x4 = x2 * x2;
+    let low = x2.mul_add(pair(x, f, 2), pair(x, f, 0));
+    let mid = x2.mul_add(pair(x, f, 6), pair(x, f, 4));
+    let high = x2.mul_add(L::splat(f[10]), pair(x, f, 8));
+    x4.mul_add(x4.mul_add(high, mid), low)
+}
+
 /// eˣ − 1 = x Σ xᵏ/(k + 1)!, k ≤ 5, where |x| < 1e-3 (`flow::real_growth` takes `exp_m1`
 /// there): the first term dropped is x⁷/7! < 2e-22 |x|, the sum's rounding a few ε |x|,
 /// where e^x − 1 by subtraction would keep only |x|/ε of its digits.
@@ -204,6 +257,89 @@ pub fn exp_m1_small<L: Lane>(x: L) -> L {
 #[inline(always)]
 pub fn cos_sinc_sq<L: Lane>(x2: L) -> (L, L) {
     (horner(x2, &COS_SERIES), horner(x2, &SINC_SERIES))
+}
+
+/// [`cos_sinc_sq`] by Estrin's scheme in y = x² (`estrin::cos_sinc`'s): the pairs by one
+/// multiply-add, then y² and y⁴, three deep where Horner's rule chains five
+/// (`estrin_sums_are_horners_to_two_ulp`).
+#[inline(always)]
+pub fn cos_sinc_sq_estrin<L: Lane>(x2: L) -> (L, L) {
+    (estrin6(x2, &COS_SERIES), estrin6(x2, &SINC_SERIES))
+}
+
+/// Σ c[5 − k] yᵏ, k ≤ 5 (`c` highest degree first, as [`horner`] takes it) by Estrin's
+/// scheme: (c₅ + c₄y) + y²(c₃ + c₂y) + y⁴(c₁ + c₀y).
+#[inline(always)]
+fn estrin6<L: Lane>(y: L, c: &[f64; 6]) -> L {
+    let (v, y2) = (L::splat, y * y);
+    let (low, mid) = (y.mul_add(v(c[4]), v(c[5])), y.mul_add(v(c[2]), v(c[3])));
+    (y2 * y2).mul_add(y.mul_add(v(c[0]), v(c[1])), y2.mul_add(mid, low))
+}
+
+/// How a flow of the lanes (`kernel::Flow4`) sums its series and divides by a constant: the
+/// linear law's kernel by [`Horner`] (its bits are the map's, the Monte Carlo's and the
+/// golden outputs'), the flattening's by [`Estrin`] — a lone flattening cell
+/// (`flattening_one`) is one dependent chain, which waits on every series and quotient on it.
+pub trait Sums {
+    /// Whether the flow shortens its chain beyond the sums: x/ω as x·(1/ω), the reciprocal
+    /// formed once off the chain (`Flow4::at_phase`, the flattening's guesses), and
+    /// Householder's step with one quotient where it took two (`refine::householder`).
+    const SHORT: bool;
+    /// eˣ ([`exp`], [`exp_estrin`]).
+    fn exp<L: Lane>(x: L) -> L;
+    /// eˣ for |x| ≤ `SMALL` ([`exp_small`], [`exp_small_estrin`]).
+    fn exp_small<L: Lane>(x: L) -> L;
+    /// (cos x, sin(x)/x) from x² ([`cos_sinc_sq`], [`cos_sinc_sq_estrin`]).
+    fn cos_sinc_sq<L: Lane>(x2: L) -> (L, L);
+    /// x/d for a constant d: a division, or a product by 1/d (4 cycles on the chain, not 14;
+    /// within an ulp of the quotient).
+    fn over<L: Lane>(x: L, d: f64) -> L;
+}
+
+/// Horner's rule and true quotients: the linear law's kernel.
+pub struct Horner;
+
+/// Estrin's scheme and products by reciprocals: the flattening's kernel.
+pub struct Estrin;
+
+impl Sums for Horner {
+    const SHORT: bool = false;
+    #[inline(always)]
+    fn exp<L: Lane>(x: L) -> L {
+        exp(x)
+    }
+    #[inline(always)]
+    fn exp_small<L: Lane>(x: L) -> L {
+        exp_small(x)
+    }
+    #[inline(always)]
+    fn cos_sinc_sq<L: Lane>(x2: L) -> (L, L) {
+        cos_sinc_sq(x2)
+    }
+    #[inline(always)]
+    fn over<L: Lane>(x: L, d: f64) -> L {
+        x / L::splat(d)
+    }
+}
+
+impl Sums for Estrin {
+    const SHORT: bool = true;
+    #[inline(always)]
+    fn exp<L: Lane>(x: L) -> L {
+        exp_estrin(x)
+    }
+    #[inline(always)]
+    fn exp_small<L: Lane>(x: L) -> L {
+        exp_small_estrin(x)
+    }
+    #[inline(always)]
+    fn cos_sinc_sq<L: Lane>(x2: L) -> (L, L) {
+        cos_sinc_sq_estrin(x2)
+    }
+    #[inline(always)]
+    fn over<L: Lane>(x: L, d: f64) -> L {
+        x * L::splat(1.0 / d)
+    }
 }
 
 /// ln x for positive normal x, to 1.1e-8 absolute — a start for Householder's steps

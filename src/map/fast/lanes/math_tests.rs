@@ -2,7 +2,10 @@
 //! every lane type.
 
 use super::super::lane::{LANES, Lane};
-use super::{atan2, cbrt, cos_sinc_sq, exp, exp_m1_small, ln_guess};
+use super::{
+    atan2, cbrt, cos_sinc_sq, cos_sinc_sq_estrin, exp, exp_estrin, exp_m1_small, exp_small,
+    exp_small_estrin, ln_guess,
+};
 use wide::f64x4;
 
 /// splitmix64 as a unit stream: the same points on every run.
@@ -298,5 +301,48 @@ fn cos_sinc_sq_is_cosh_and_sinhc_too() {
             .map(|(&g, &w)| ulps(g, w))
             .fold(0.0, f64::max);
         assert!(worst <= 2.0, "function {k}: {worst} ulp");
+    }
+}
+
+/// The flattening's sums by Estrin's scheme (`Sums` for `Estrin`): `exp_estrin` is libm's to
+/// 2 ulp over `exp`'s arguments, as `exp` is; `exp_small_estrin` and `cos_sinc_sq_estrin` are
+/// the Horner sums to 2 ulp over the short steps' reach (|x| ≤ 1/16, x² of either sign).
+#[test]
+fn estrin_sums_are_horners_to_two_ulp() {
+    let xs = exp_arguments();
+    let got = in_lanes(&xs, exp_estrin);
+    let worst = xs
+        .iter()
+        .zip(&got)
+        .filter(|(x, _)| x.exp() >= f64::MIN_POSITIVE)
+        .map(|(x, g)| ulps(*g, x.exp()))
+        .fold(0.0, f64::max);
+    assert!(worst <= 2.0, "exp_estrin: {worst} ulp");
+    let edges = in_lanes(&[-800.0, -1e300, 800.0, f64::NAN], exp_estrin);
+    assert_eq!(edges[..3], [0.0, 0.0, f64::INFINITY]);
+    assert!(edges[3].is_nan());
+    let small: Vec<f64> = units(36, 20_000).iter().map(|u| (u - 0.5) / 8.0).collect();
+    let sq: Vec<f64> = small.iter().map(|x| x * x.abs()).collect();
+    let pairs: [(Vec<f64>, Vec<f64>); 3] = [
+        (
+            in_lanes(&small, exp_small_estrin),
+            in_lanes(&small, exp_small),
+        ),
+        (
+            in_lanes(&sq, |x2| cos_sinc_sq_estrin(x2).0),
+            in_lanes(&sq, |x2| cos_sinc_sq(x2).0),
+        ),
+        (
+            in_lanes(&sq, |x2| cos_sinc_sq_estrin(x2).1),
+            in_lanes(&sq, |x2| cos_sinc_sq(x2).1),
+        ),
+    ];
+    for (k, (got, want)) in pairs.iter().enumerate() {
+        let worst = got
+            .iter()
+            .zip(want)
+            .map(|(&g, &w)| ulps(g, w))
+            .fold(0.0, f64::max);
+        assert!(worst <= 2.0, "sum {k}: {worst} ulp");
     }
 }

@@ -2,6 +2,7 @@
 //! in the scalar path), and the Taylor series that gives values at a root from the last jet.
 
 use super::super::lane::Lane;
+use super::super::math::{Horner, Sums};
 use super::{Flow4, Point4, Root4};
 use crate::map::fast::search::{MAX_REFINE, SETTLED, TAU_MAX};
 use std::f64::consts::FRAC_PI_2;
@@ -9,12 +10,21 @@ use std::f64::consts::FRAC_PI_2;
 /// `search::householder`: the step and the lanes where it is the last one on a falling
 /// crossing.
 #[inline(always)]
-pub(super) fn householder<L: Lane>(f: &[L]) -> (L, L) {
+pub(super) fn householder<L: Lane, S: Sums>(f: &[L]) -> (L, L) {
     let v = L::splat;
     let one = v(1.0);
     let inv = one / f[1];
     let (u, c2, c3) = (f[0] * inv, f[2] * inv, f[3] * inv);
-    let h = u * (one - v(0.5) * u * c2) / (one - u * c2 + u * u * c3 / v(6.0));
+    let h = if S::SHORT {
+        // the same step times f1³/f1³ (u = f0/f1, c2 = f2/f1, c3 = f3/f1): one quotient on
+        // the chain where the form below waits on two (1/f1, then the step's)
+        let (f0, f1, f2) = (f[0], f[1], f[2]);
+        let f1f1 = f1 * f1;
+        let den = f1f1 * f1 - f0 * f1 * f2 + S::over(f0 * f0 * f[3], 6.0);
+        f0 * (f1f1 - v(0.5) * f0 * f2) / den
+    } else {
+        u * (one - v(0.5) * u * c2) / (one - u * c2 + S::over(u * u * c3, 6.0))
+    };
     let settled = (c2 * h).abs().le(v(SETTLED))
         & (c3.abs() * h * h).le(v(SETTLED * SETTLED))
         & f[1].lt(v(0.0));
@@ -51,7 +61,7 @@ pub(super) fn refine_both<L: Lane>(
             }
             let point = points[i];
             let jet = flow.jet(&point);
-            let (h, settled) = householder(&jet[1 - i..5 - i]);
+            let (h, settled) = householder::<L, Horner>(&jet[1 - i..5 - i]);
             let t = point.t - h;
             let inside = t.gt(v(0.0)) & t.lt(v(TAU_MAX));
             let now = active[i] & inside & settled;
@@ -99,8 +109,8 @@ pub(super) fn refine_both<L: Lane>(
 /// flattening: within a quarter period of its guess; an overtaken pair: between τ_m and the
 /// pair's zero).
 #[inline(always)]
-pub(super) fn householder_root<L: Lane>(
-    f: &Flow4<L>,
+pub(super) fn householder_root<L: Lane, S: Sums>(
+    f: &Flow4<L, S>,
     start: Point4<L>,
     live: L,
     k: usize,
@@ -114,7 +124,7 @@ pub(super) fn householder_root<L: Lane>(
     };
     for _ in 0..MAX_REFINE {
         let jet = f.jet(&point);
-        let (h, settled) = householder(&jet[k..k + 4]);
+        let (h, settled) = householder::<L, S>(&jet[k..k + 4]);
         let t = point.t - h;
         let inside = t.gt(v(0.0)) & t.lt(v(TAU_MAX));
         let now = active & inside & settled;
@@ -147,9 +157,9 @@ pub(super) fn select6<L: Lane>(mask: L, yes: [L; 6], mut no: [L; 6]) -> [L; 6] {
     no
 }
 
-/// `search::taylor`.
+/// `search::taylor`, its quotients h/2, h/3, h/4 as `S` forms them (`Sums::over`).
 #[inline(always)]
-pub(super) fn taylor<L: Lane>(c: &[L], h: L) -> L {
-    let v = L::splat;
-    c[0] + h * (c[1] + h / v(2.0) * (c[2] + h / v(3.0) * (c[3] + h / v(4.0) * c[4])))
+pub(super) fn taylor<L: Lane, S: Sums>(c: &[L], h: L) -> L {
+    let over = S::over::<L>;
+    c[0] + h * (c[1] + over(h, 2.0) * (c[2] + over(h, 3.0) * (c[3] + over(h, 4.0) * c[4])))
 }

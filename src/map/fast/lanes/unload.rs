@@ -5,11 +5,12 @@
 //! lane, as `flatten::flattening` forms them.
 
 use super::super::super::lane::Lane;
+use super::super::super::math::{Estrin, pair};
 use super::super::{Flow4, Point4, lone_real_root};
 use crate::solver::series::INV_FACTORIAL;
 /// The unloading's flow: a `Flow4` from a state, and what its bounds need beyond it.
 pub(super) struct Unload<L: Lane> {
-    pub(super) flow: Flow4<L>,
+    pub(super) flow: Flow4<L, Estrin>,
     /// B's rounding scale (the loading's B = −A shares A's; a state's does not).
     sb: L,
     /// (r + σ)² + ω² and σ² + ω², for the responses.
@@ -17,28 +18,26 @@ pub(super) struct Unload<L: Lane> {
     p0: L,
 }
 
-/// (e^x − 1)/x = Σ x^k/(k + 1)!, k ≤ 16, highest degree first: where |x| < 1/2 (the scalar
-/// `tight` flow's `exp_m1` range) the first term left out is below 2e-21 of the sum.
-const EXP_M1_SERIES: [f64; 17] = {
-    let mut c = [0.0; 17];
-    let mut i = 0;
-    while i < 17 {
-        c[i] = INV_FACTORIAL[17 - i];
-        i += 1;
-    }
-    c
-};
-
-/// e^x − 1 for |x| < 1/2 by [`EXP_M1_SERIES`] (Horner's rule): what libm's `exp_m1` gives the
-/// scalar unloading there, to a few ulp.
+/// e^x − 1 for |x| < 1/2 (the scalar `tight` flow's `exp_m1` range): x Σ xᵏ/(k + 1)!, k ≤ 16
+/// (the first term left out is below 2e-21 of the sum), summed by Estrin's scheme — pairs of
+/// terms by one multiply-add each, then pairs of pairs with x², x⁴, x⁸ and x¹⁶ — six
+/// operations deep where Horner's rule chained sixteen products and sums: this sum waits on
+/// the unloading's last point and the COR waits on it (a lone cell's chain, `flattening_one`).
+/// What libm's `exp_m1` gives the scalar unloading there, to a few ulp
+/// (`exp_m1_half_is_libms_to_four_ulp`). By hand, as `estrin.rs`: seventeen terms of a fixed
+/// series over a [`Lane`], which no crate sums.
 #[inline(always)]
 fn exp_m1_half<L: Lane>(x: L) -> L {
-    let mut sum = L::splat(EXP_M1_SERIES[0]);
-    let mut i = 1;
-    while i < EXP_M1_SERIES.len() {
-        sum = sum * x + L::splat(EXP_M1_SERIES[i]);
-        i += 1;
-    }
+    // 1/(k + 1)! is INV_FACTORIAL[k + 1]; `pair` a function, not a closure (math.rs says why)
+    let (x2, f) = (x * x, &INV_FACTORIAL[1..]);
+    let x4 = x2 * x2;
+    let quad0 = x2.mul_add(pair(x, f, 2), pair(x, f, 0));
+    let quad4 = x2.mul_add(pair(x, f, 6), pair(x, f, 4));
+    let quad8 = x2.mul_add(pair(x, f, 10), pair(x, f, 8));
+    let quad12 = x2.mul_add(pair(x, f, 14), pair(x, f, 12));
+    let (low, high) = (x4.mul_add(quad4, quad0), x4.mul_add(quad12, quad8));
+    let x8 = x4 * x4;
+    let sum = (x8 * x8).mul_add(L::splat(f[16]), x8.mul_add(high, low));
     x * sum
 }
 
@@ -51,7 +50,7 @@ impl<L: Lane> Unload<L> {
         let two_zeta = v(2.0) * zeta;
         let (a2, a0) = (two_zeta * (v(1.0) + lambda), two_zeta * lambda);
         // three real roots: the pair does not oscillate, the lane goes back to the scalar path
-        let (r, p1, p0, mut ok, three) = lone_real_root(a2, a0);
+        let (r, p1, p0, mut ok, three) = lone_real_root::<L, Estrin>(a2, a0);
         ok &= !three;
         let sigma = v(0.5) * p1;
         let omega2 = p0 - sigma * sigma;
@@ -78,12 +77,14 @@ impl<L: Lane> Unload<L> {
             sigma,
             omega2,
             omega: omega2.sqrt(),
+            inv_omega: v(1.0) / omega2.sqrt(),
             a,
             d,
             p,
             q,
             jet,
             hyper: three & !three,
+            sums: std::marker::PhantomData,
         };
         (Unload { flow, sb, gap, p0 }, ok)
     }
@@ -142,4 +143,24 @@ impl<L: Lane> Unload<L> {
 fn antiderivative<L: Lane>(sigma: L, p0: L, b: L, d: L) -> (L, L) {
     let p = -(d + sigma * b) / p0;
     (p, b + sigma * p)
+}
+
+#[cfg(test)]
+mod tests {
+    /// Estrin's sum is libm's `exp_m1` (what the scalar unloading takes) within 4 ulp over
+    /// |x| < 1/2, and exactly 0 at 0.
+    #[test]
+    fn exp_m1_half_is_libms_to_four_ulp() {
+        assert_eq!(
+            super::exp_m1_half(wide::f64x4::splat(0.0)).to_array()[0],
+            0.0
+        );
+        for i in -5000..5000 {
+            let x = f64::from(i) / 10_000.0 + 1.234_567e-5;
+            let got = super::exp_m1_half(wide::f64x4::splat(x)).to_array()[0];
+            let want = x.exp_m1();
+            let ulps = (got - want).abs() / (f64::EPSILON * want.abs());
+            assert!(ulps <= 4.0, "{x}: {got} vs {want}, {ulps} ulp");
+        }
+    }
 }
