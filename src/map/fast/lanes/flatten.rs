@@ -277,7 +277,8 @@ unsafe fn flattening_lanes8_avx2(
 }
 
 /// Cells a last group at most holds for [`flattenings`] to run them one by one
-/// ([`flattening_one`], ≈ 2 900 instructions each) rather than padded to eight (≈ 6 200).
+/// ([`flattening_one`], ≈ 2 030 instructions each) rather than padded to eight (≈ 5 920: three
+/// alone would cost more, BENCHMARKS.md "Ninth session (flat9)").
 const ALONE: usize = 2;
 
 /// `out[i]` = `flattening(lambda[i], zeta[i], zp[i])` to 1e-12, eight at a time through
