@@ -266,19 +266,8 @@ fn text(
         writeln!(out, "correlated: {}", pairs.join(", "))?;
     }
     writeln!(out)?;
-    let cell = |x: f64, scale: f64| {
-        if x.is_nan() {
-            "–".to_string()
-        } else {
-            human(x * scale, 5)
-        }
-    };
-    let cols = [
-        (&st.cor, 1.0),
-        (&st.max_force, 1.0),
-        (&st.contact_time, 1e3),
-    ];
-    let mut rows = vec![["", "COR", "F_m N", "t_f ms"].map(String::from).to_vec()];
+    let cols = columns(st);
+    let mut rows = vec![header()];
     let stat_rows: [(&str, StatOf); 4] = [
         ("mean", |s| s.mean),
         ("sd", |s| s.sd),
@@ -306,28 +295,41 @@ fn text(
     Ok(())
 }
 
+/// The text tables' columns: the three quantities' statistics, each with the scale it is
+/// printed in (t_f in ms).
+fn columns(st: &McStats) -> [(&Stats, f64); 3] {
+    [
+        (&st.cor, 1.0),
+        (&st.max_force, 1.0),
+        (&st.contact_time, 1e3),
+    ]
+}
+
+/// The text tables' first row.
+fn header() -> Vec<String> {
+    ["", "COR", "F_m N", "t_f ms"].map(String::from).to_vec()
+}
+
+/// A value of the text tables, scaled, to five digits; "–" where there is none.
+fn cell(x: f64, scale: f64) -> String {
+    if x.is_nan() {
+        "–".to_string()
+    } else {
+        human(x * scale, 5)
+    }
+}
+
 /// The 95 % intervals of the mean and the quantiles (analysis::mc_interval): how far each
 /// estimate above may be from the run's infinite-sample value; "–" on a side the samples are
 /// too few for, and a warning naming those quantiles.
 fn intervals(out: &mut dyn Write, st: &McStats) -> std::io::Result<()> {
-    let cols = [
-        (&st.cor, 1.0),
-        (&st.max_force, 1.0),
-        (&st.contact_time, 1e3),
-    ];
-    let side = |x: f64, scale: f64| {
-        if x.is_nan() {
-            "–".to_string()
-        } else {
-            human(x * scale, 5)
-        }
-    };
-    let span = |ci: [f64; 2], k: f64| format!("{} … {}", side(ci[0], k), side(ci[1], k));
+    let cols = columns(st);
+    let span = |ci: [f64; 2], k: f64| format!("{} … {}", cell(ci[0], k), cell(ci[1], k));
     writeln!(
         out,
         "\n95 % intervals of these estimates (sampling error; docs/scale.md):"
     )?;
-    let mut rows = vec![["", "COR", "F_m N", "t_f ms"].map(String::from).to_vec()];
+    let mut rows = vec![header()];
     let mut r = vec!["mean".to_string()];
     r.extend(cols.iter().map(|(s, k)| span(s.mean_ci, *k)));
     rows.push(r);
