@@ -153,10 +153,16 @@ impl Ball {
             return o;
         }
         if let Some(table) = super::fit_table(&f) {
-            // a test a perturbed ball cannot run leaves the value without its interval
-            if let Ok(ci) = measured_band(&fitted, setup, &table) {
-                o.measured_ci95 = Some(ci);
-                o.warnings.extend(unsure(setup.standard, &o, ci));
+            match measured_band(&fitted, setup, &table) {
+                Ok(ci) => {
+                    o.measured_ci95 = Some(ci);
+                    o.warnings.extend(unsure(setup.standard, &o, ci));
+                }
+                // the verdict stands; its interval is missing, and the ball says why
+                Err(e) => o.warnings.push(format!(
+                    "no 95 % interval for the measured value: the standard's test failed on \
+                     the ball moved within its fit's uncertainty ({e})"
+                )),
             }
         }
         o
@@ -348,6 +354,7 @@ fn within(s: &Standard, ci: [f64; 2]) -> bool {
     s.window.into_iter().flatten().any(|b| within_one(b, ci))
 }
 
+/// Whether `bound` lies strictly inside `ci`.
 fn within_one(bound: f64, ci: [f64; 2]) -> bool {
     ci[0] < bound && bound < ci[1]
 }
