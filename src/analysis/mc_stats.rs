@@ -231,8 +231,8 @@ pub fn interval_warnings(stats: &[&Stats]) -> Vec<String> {
     let mut open = Vec::new();
     let mut need = 0;
     for (k, p) in PROBS.iter().enumerate() {
-        let lacks = |s: &&&Stats| s.n > 0 && s.q_ci.values()[k].iter().any(|x| x.is_nan());
-        if stats.iter().any(|s| lacks(&s)) {
+        let open_end = |s: &Stats| s.n > 0 && s.q_ci.values()[k].iter().any(|x| x.is_nan());
+        if stats.iter().any(|s| open_end(s)) {
             open.push(format!("{p} %"));
             need = need.max(fewest_samples(p / 100.0));
         }
