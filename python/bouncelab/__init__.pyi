@@ -247,7 +247,8 @@ def fit_drops(
     """k_r, z_p fitted to drop tests (m), in vacuum or with quadratic drag, as ``bouncelab fit
     --drop-height H --rebound-height R …``, each drop weighed by its rebound height's reading
     (``rebound_height_sd``, m, when known: each COR's ``cor_sd`` and a χ² lack-of-fit test);
-    ``drops`` adds each drop's v0 and COR (and ``cor_sd``)."""
+    ``drops`` adds each drop's v0 and COR (and ``cor_sd``); ``air`` the air they were taken
+    in (None: vacuum, which ``bouncelab drop`` is not unless ``--no-drag``)."""
 
 class ObliqueEstimate(TypedDict):
     value: float

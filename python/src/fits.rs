@@ -310,5 +310,15 @@ pub fn fit_drops<'py>(
         drops.set_item("cor_sd", array(py, sd))?;
     }
     d.set_item("drops", drops)?;
+    // the air the drops were taken in, as the command line's `air` (None: vacuum)
+    let air_dict = air
+        .map(|a| -> PyResult<Bound<'_, PyDict>> {
+            let a_d = PyDict::new(py);
+            a_d.set_item("drag_coefficient", a.drag_coefficient)?;
+            a_d.set_item("air_density", a.density)?;
+            Ok(a_d)
+        })
+        .transpose()?;
+    d.set_item("air", air_dict)?;
     Ok(d)
 }

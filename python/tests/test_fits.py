@@ -167,6 +167,9 @@ def test_fit_drops_with_drag_equals_the_cli():
     same_as_cli(fit, expected)
     # drag: the ball fell slower than in vacuum and rose from faster than it looks
     assert fit["drops"]["v0"][1] < np.sqrt(2 * G * 2.0)
+    # the air is stated, as the command line's `air` (None in vacuum)
+    assert fit["air"] == expected["air"] == {"drag_coefficient": 0.55, "air_density": 1.204}
+    assert bouncelab.fit_drops([1.0, 2.0], [0.6, 1.1], preset="tennis")["air"] is None
 
 
 @pytest.mark.parametrize("call, args", [

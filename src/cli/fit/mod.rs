@@ -122,6 +122,9 @@ pub struct Loaded {
     pub points: Vec<CorPoint>,
     /// (drop, rebound) heights of drop tests.
     pub drops: Vec<(f64, f64)>,
+    /// The air the drops were converted in (`None`: vacuum, the default), which the report
+    /// states: `bouncelab drop` runs through air unless `--no-drag`.
+    pub air: Option<crate::measured::Air>,
     /// Line after the file's last, for errors about the whole file.
     pub end_line: usize,
 }

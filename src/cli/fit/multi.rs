@@ -68,6 +68,7 @@ fn load(a: &FitArgs, source: &Source, ball: &Ball) -> anyhow::Result<Loaded> {
                 points: vec![],
                 drops: vec![],
                 end_line,
+                air,
             }
         }
         Source::CorTable(p) => {
@@ -80,6 +81,7 @@ fn load(a: &FitArgs, source: &Source, ball: &Ball) -> anyhow::Result<Loaded> {
                 points: t.points,
                 drops: vec![],
                 end_line: t.end_line,
+                air,
             }
         }
         Source::DropFile(p) => {
@@ -93,6 +95,7 @@ fn load(a: &FitArgs, source: &Source, ball: &Ball) -> anyhow::Result<Loaded> {
                 points: from_drops(&t.drops)?,
                 drops,
                 end_line: t.drops.last().map_or(1, |d| d.2 + 1),
+                air,
             }
         }
         Source::Drops(pairs) => {
@@ -105,6 +108,7 @@ fn load(a: &FitArgs, source: &Source, ball: &Ball) -> anyhow::Result<Loaded> {
                 points: from_drops(&drops)?,
                 drops: pairs.clone(),
                 end_line: 0,
+                air,
             }
         }
         Source::Cor(e) => {
@@ -123,6 +127,7 @@ fn load(a: &FitArgs, source: &Source, ball: &Ball) -> anyhow::Result<Loaded> {
                 points: vec![pt],
                 drops: vec![],
                 end_line: 0,
+                air,
             }
         }
     })
