@@ -64,7 +64,7 @@ fn estrin14<L: Lane>(r: L) -> L {
     (r4 * r4).mul_add(high, low)
 }
 
-/// c[k] + x·c[k + 1] by one multiply-add, `c` lowest degree first: a pair of Estrin's
+/// `c[k] + x·c[k + 1]` by one multiply-add, `c` lowest degree first: a pair of Estrin's
 /// scheme. A function, not a closure: a closure stayed a call out of the eight-lane AVX2
 /// kernel (callgrind: `flattening_lanes8_avx2` 5 980 -> 8 110 instructions a call with them).
 #[inline(always)]
