@@ -10,7 +10,7 @@ mod fit_table;
 mod text;
 mod usable;
 
-pub use fit_table::FitTable;
+pub use fit_table::{FitAir, FitTable};
 
 /// The three balls of the paper, embedded in the binary, first; then the balls of the drop
 /// tests (docs/drop.md, "The new balls").

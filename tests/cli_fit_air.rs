@@ -99,3 +99,104 @@ fn a_drop_fit_states_its_air_and_the_same_air_gives_back_the_readings() {
         assert!((back - mean).abs() < 1e-3, "{name} {extra:?}: {back}");
     }
 }
+
+/// A fitted preset keeps its drops' air (`[fit.drops]`), and `drop` warns when it falls
+/// through another — naming the flags that drop it as the fit did — in text and JSON, and
+/// says nothing when the airs agree.
+#[test]
+fn drop_warns_when_it_falls_through_another_air_than_the_fits() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("drops.csv");
+    std::fs::write(&file, DROPS).unwrap();
+    let fit = [
+        "fit",
+        "--preset",
+        "tennis",
+        "--drop-test",
+        file.to_str().unwrap(),
+        "--free",
+        "k_r",
+    ];
+    run(dir.path(), &[&fit[..], &["--save", "in-vacuum"]].concat());
+    run(
+        dir.path(),
+        &[
+            &fit[..],
+            &["--drag-coefficient", "0.47", "--save", "in-air"],
+        ]
+        .concat(),
+    );
+    let saved =
+        std::fs::read_to_string(dir.path().join("bouncelab/presets/in-vacuum.toml")).unwrap();
+    assert!(
+        saved.contains("[fit.drops]\ndrag_coefficient = 0.0\n"),
+        "{saved}"
+    );
+
+    let warned = |name: &str, extra: &[&str]| -> Vec<String> {
+        let mut args = vec!["drop", "--preset", name, "--format", "json"];
+        args.extend(extra);
+        let v: Value = serde_json::from_str(&run(dir.path(), &args)).unwrap();
+        let w = v["warnings"].as_array().unwrap();
+        w.iter()
+            .map(|x| x.as_str().unwrap().to_string())
+            .filter(|x| x.contains("fitted to drops"))
+            .collect()
+    };
+    let w = warned("in-vacuum", &[]);
+    assert!(
+        w.len() == 1 && w[0].contains("taken in vacuum") && w[0].contains("--no-drag drops it"),
+        "{w:?}"
+    );
+    let w = warned("in-air", &["--no-drag"]);
+    assert!(
+        w.len() == 1 && w[0].contains("--drag-coefficient 0.47 --air-density 1.204"),
+        "{w:?}"
+    );
+    assert!(warned("in-vacuum", &["--no-drag"]).is_empty());
+    assert!(warned("in-air", &[]).is_empty());
+    let text = run(dir.path(), &["drop", "--preset", "in-vacuum"]);
+    assert!(
+        text.contains("warning: this ball was fitted to drops taken in vacuum"),
+        "{text}"
+    );
+}
+
+/// `[fit.drops]` reads back as written, and a density that is no density is refused naming
+/// the table (a preset file is checked where it is read).
+#[test]
+fn the_fit_drops_table_round_trips_and_is_checked() {
+    use bouncelab::preset::Preset;
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("drops.csv");
+    std::fs::write(&file, DROPS).unwrap();
+    let fit = [
+        "fit",
+        "--preset",
+        "tennis",
+        "--drop-test",
+        file.to_str().unwrap(),
+        "--free",
+        "k_r",
+    ];
+    run(
+        dir.path(),
+        &[
+            &fit[..],
+            &["--drag-coefficient", "0.47", "--save", "in-air"],
+        ]
+        .concat(),
+    );
+    let path = dir.path().join("bouncelab/presets/in-air.toml");
+    let text = std::fs::read_to_string(&path).unwrap();
+    let p = Preset::parse(&text, "in-air.toml").unwrap();
+    let air = p.fit.as_ref().unwrap().drops.unwrap();
+    assert_eq!((air.drag_coefficient, air.air_density), (0.47, 1.204));
+    assert_eq!(Preset::parse(&p.to_toml(&[]), "x.toml").unwrap(), p);
+    let bad = text.replace("air_density = 1.204", "air_density = -1.0");
+    let e = Preset::parse(&bad, "x.toml").unwrap_err().to_string();
+    assert!(
+        e.contains("fit.drops") && e.contains("density positive"),
+        "{e}"
+    );
+}

@@ -98,6 +98,9 @@ pub(crate) fn drop_test<'py>(
     d.set_item("height", run.setup.height)?;
     d.set_item("drag", run.drag())?;
     d.set_item("bounces", b)?;
-    d.set_item("warnings", ball.drop_warnings(&run).map_err(error)?)?;
+    let mut warnings = ball.drop_warnings(&run).map_err(error)?;
+    // a ball fitted to drops in another air than this drop's says so, as the command line's
+    warnings.extend(ball.drop_air_warning(run.setup.air));
+    d.set_item("warnings", warnings)?;
     Ok(d)
 }

@@ -76,3 +76,20 @@ def test_sweep_and_drop_carry_them_too(tmp_path, monkeypatch):
                 assert lo <= row[key] <= hi
     assert "cor_ci95_lo" not in bouncelab.sweep_velocity(preset="baseball", speeds=[1.0])
     assert "cor_ci95_lo" not in bouncelab.drop(preset="baseball", bounces=1)["bounces"]
+
+
+def test_drop_warns_when_its_air_is_not_the_fits(tmp_path, monkeypatch):
+    # a ball fitted to drops in vacuum (fit's default) and dropped through air (drop's
+    # default) misses its own readings: Python's drop says so, as the command line's
+    env = fitted(tmp_path, monkeypatch)
+    drops = tmp_path / "drops.csv"
+    drops.write_text("drop_height_m,rebound_height_m\n2.54,1.44\n2.54,1.46\n2.54,1.48\n2.54,1.47\n")
+    fit = [binary(), "fit", "--preset", "tennis", "--drop-test", str(drops), "--free", "k_r",
+           "--save", "tvac"]
+    subprocess.run(fit, check=True, capture_output=True, env=env)
+    cli = cli_json(env, "drop", "--preset", "tvac")
+    py = bouncelab.drop(preset="tvac")
+    air = [w for w in py["warnings"] if "fitted to drops taken in vacuum" in w]
+    assert len(air) == 1 and "--no-drag drops it as the fit did" in air[0]
+    assert py["warnings"] == cli["warnings"]
+    assert not [w for w in bouncelab.drop(preset="tvac", drag=False)["warnings"] if "fitted to drops" in w]

@@ -4,7 +4,7 @@
 
 use super::{Ball, BallError};
 use crate::solver::ImpactResponse;
-use crate::text::sig;
+use crate::text::{number, short, sig};
 
 /// The energy audit (docs/model.md §8) must close to this fraction of the impact energy; a
 /// larger residual means the numbers were not computed to their promised accuracy.
@@ -65,5 +65,50 @@ impl Ball {
         };
         let ball = self.clone().with_v0(first.v_in)?;
         Ok(ball.warnings(&ball.impact()?))
+    }
+
+    /// The warning of a drop through `air` (`None`: vacuum) of a ball fitted to drop tests
+    /// taken in another air (its `[fit.drops]`, while no override moved a fitted parameter):
+    /// its rebounds are not those the fit matched — a tennis ball fitted in vacuum to readings
+    /// of 1.4625 m from 2.54 m rebounds 1.376 m through air (docs/fitting.md, "The air is
+    /// stated"; tests/cli_fit_air.rs). `None` when the airs agree or the ball has no drop fit.
+    pub fn drop_air_warning(&self, air: Option<crate::measured::Air>) -> Option<String> {
+        let fit = self.fit.as_ref()?;
+        let fitted = fit.drops?;
+        if !super::holds(&self.params, fit) {
+            return None;
+        }
+        let (cd, rho) = air.map_or((0.0, 0.0), |a| (a.drag_coefficient, a.density));
+        let same = |x: f64, y: f64| (x - y).abs() <= 1e-12 * x.abs().max(y.abs());
+        let agree = if fitted.drag_coefficient == 0.0 {
+            cd == 0.0
+        } else {
+            same(cd, fitted.drag_coefficient) && same(rho, fitted.air_density)
+        };
+        if agree {
+            return None;
+        }
+        let how = |c: f64, rho: f64| {
+            if c == 0.0 {
+                "in vacuum".to_string()
+            } else {
+                format!("through air (C_d {}, {} kg/m³)", short(c, 4), short(rho, 4))
+            }
+        };
+        let fix = if fitted.drag_coefficient == 0.0 {
+            "--no-drag".to_string()
+        } else {
+            format!(
+                "--drag-coefficient {} --air-density {}",
+                number(fitted.drag_coefficient),
+                number(fitted.air_density)
+            )
+        };
+        Some(format!(
+            "this ball was fitted to drops taken {}, and this drop falls {}: its rebounds are \
+             not those the fit matched ({fix} drops it as the fit did)",
+            how(fitted.drag_coefficient, fitted.air_density),
+            how(cd, rho)
+        ))
     }
 }

@@ -122,12 +122,17 @@ pub fn run(a: &DropArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         DropFormat::Json => {
             let mut r = report(&run, &bands, verdict.as_ref());
             r.warnings = b.drop_warnings(&run)?;
+            r.warnings.extend(b.drop_air_warning(air));
             output::json(out, &r)?
         }
         DropFormat::Csv => trajectory_csv(out, &run)?,
         DropFormat::Text => {
             text(out, &b.label(), &run, standard.zip(verdict), radius)?;
-            for w in b.drop_warnings(&run)? {
+            for w in b
+                .drop_warnings(&run)?
+                .into_iter()
+                .chain(b.drop_air_warning(air))
+            {
                 writeln!(out, "warning: {w}")?;
             }
             if let (Some(i), Some(first), Some(fit)) = (bands.first(), run.bounces.first(), &b.fit)

@@ -9,7 +9,7 @@ use crate::api::Ball;
 use crate::atomic::Outputs;
 use crate::catalog::{self, Catalog, Origin};
 use crate::model::params::ImpactParams;
-use crate::preset::{Adopted, Measured, ParamSource, Preset};
+use crate::preset::{Adopted, FitAir, FitTable, Measured, ParamSource, Preset};
 use std::path::{Path, PathBuf};
 
 fn dir() -> anyhow::Result<PathBuf> {
@@ -169,7 +169,11 @@ fn preset(
             k_p: Some(p.k_p),
             k_r: p.k_r,
         },
-        fit: crate::api::fit_table(f),
+        fit: crate::api::fit_table(f).map(|t| FitTable {
+            // the drops' air, so that `bouncelab drop` can say when it falls through another
+            drops: (!data.drops.is_empty()).then(|| fit_air(data.air)),
+            ..t
+        }),
     }
 }
 
@@ -232,6 +236,18 @@ pub fn remove_created(created: Option<&Path>, inner: &Path) {
         if std::fs::remove_dir(d).is_err() || d == top {
             break;
         }
+    }
+}
+
+/// The air of a drop fit as the preset keeps it (C_d 0 for vacuum).
+fn fit_air(air: Option<crate::measured::Air>) -> FitAir {
+    let a = air.unwrap_or(crate::measured::Air {
+        drag_coefficient: 0.0,
+        ..crate::measured::Air::default()
+    });
+    FitAir {
+        drag_coefficient: a.drag_coefficient,
+        air_density: a.density,
     }
 }
 
