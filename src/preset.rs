@@ -91,6 +91,10 @@ pub struct Measured {
     /// docs/oblique.md §1); a solid ball's 0.4 when absent.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub inertia_factor: Option<f64>,
+    /// The air of the drop tests these values were fitted from (`fit --drop-test … --save`);
+    /// absent for other data, and in presets saved before it was kept.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub drops: Option<FitAir>,
 }
 
 /// Material data. SI units.

@@ -100,9 +100,10 @@ fn a_drop_fit_states_its_air_and_the_same_air_gives_back_the_readings() {
     }
 }
 
-/// A fitted preset keeps its drops' air (`[fit.drops]`), and `drop` warns when it falls
+/// A fitted preset keeps its drops' air (`[measured.drops]`), and `drop` warns when it falls
 /// through another — naming the flags that drop it as the fit did — in text and JSON, and
-/// says nothing when the airs agree.
+/// says nothing when the airs agree; a ball fitted exactly to one drop (no `[fit]` table)
+/// too.
 #[test]
 fn drop_warns_when_it_falls_through_another_air_than_the_fits() {
     let dir = tempfile::tempdir().unwrap();
@@ -118,18 +119,16 @@ fn drop_warns_when_it_falls_through_another_air_than_the_fits() {
         "k_r",
     ];
     run(dir.path(), &[&fit[..], &["--save", "in-vacuum"]].concat());
-    run(
-        dir.path(),
-        &[
-            &fit[..],
-            &["--drag-coefficient", "0.47", "--save", "in-air"],
-        ]
-        .concat(),
-    );
-    let saved =
-        std::fs::read_to_string(dir.path().join("bouncelab/presets/in-vacuum.toml")).unwrap();
+    let in_air = [
+        &fit[..],
+        &["--drag-coefficient", "0.47", "--save", "in-air"],
+    ]
+    .concat();
+    run(dir.path(), &in_air);
+    let saved = std::fs::read_to_string(dir.path().join("bouncelab/presets/in-vacuum.toml"));
+    let saved = saved.unwrap();
     assert!(
-        saved.contains("[fit.drops]\ndrag_coefficient = 0.0\n"),
+        saved.contains("[measured.drops]\ndrag_coefficient = 0.0 "),
         "{saved}"
     );
 
@@ -144,28 +143,40 @@ fn drop_warns_when_it_falls_through_another_air_than_the_fits() {
             .collect()
     };
     let w = warned("in-vacuum", &[]);
+    let says = |w: &[String], what: &str| w.len() == 1 && w[0].contains(what);
     assert!(
-        w.len() == 1 && w[0].contains("taken in vacuum") && w[0].contains("--no-drag drops it"),
+        says(&w, "taken in vacuum") && w[0].contains("--no-drag drops it"),
         "{w:?}"
     );
     let w = warned("in-air", &["--no-drag"]);
     assert!(
-        w.len() == 1 && w[0].contains("--drag-coefficient 0.47 --air-density 1.204"),
+        says(&w, "--drag-coefficient 0.47 --air-density 1.204"),
         "{w:?}"
     );
     assert!(warned("in-vacuum", &["--no-drag"]).is_empty());
     assert!(warned("in-air", &[]).is_empty());
     let text = run(dir.path(), &["drop", "--preset", "in-vacuum"]);
-    assert!(
-        text.contains("warning: this ball was fitted to drops taken in vacuum"),
-        "{text}"
-    );
+    let line = "warning: this ball was fitted to drops taken in vacuum";
+    assert!(text.contains(line), "{text}");
+    // one drop: an exact solve, no [fit] table, the air kept all the same
+    let one = [
+        "fit",
+        "--preset",
+        "tennis",
+        "--drop-height",
+        "2.54",
+        "--rebound-height",
+        "1.46",
+    ];
+    run(dir.path(), &[&one[..], &["--save", "one-drop"]].concat());
+    assert!(says(&warned("one-drop", &[]), "taken in vacuum"));
+    assert!(warned("one-drop", &["--no-drag"]).is_empty());
 }
 
-/// `[fit.drops]` reads back as written, and a density that is no density is refused naming
-/// the table (a preset file is checked where it is read).
+/// `[measured.drops]` reads back as written, and a density that is no density is refused
+/// naming the table and key (a preset file is checked where it is read).
 #[test]
-fn the_fit_drops_table_round_trips_and_is_checked() {
+fn the_measured_drops_table_round_trips_and_is_checked() {
     use bouncelab::preset::Preset;
     let dir = tempfile::tempdir().unwrap();
     let file = dir.path().join("drops.csv");
@@ -190,13 +201,13 @@ fn the_fit_drops_table_round_trips_and_is_checked() {
     let path = dir.path().join("bouncelab/presets/in-air.toml");
     let text = std::fs::read_to_string(&path).unwrap();
     let p = Preset::parse(&text, "in-air.toml").unwrap();
-    let air = p.fit.as_ref().unwrap().drops.unwrap();
+    let air = p.measured.drops.unwrap();
     assert_eq!((air.drag_coefficient, air.air_density), (0.47, 1.204));
     assert_eq!(Preset::parse(&p.to_toml(&[]), "x.toml").unwrap(), p);
-    let bad = text.replace("air_density = 1.204", "air_density = -1.0");
+    let bad = text.replacen("air_density = 1.204", "air_density = -1", 1);
     let e = Preset::parse(&bad, "x.toml").unwrap_err().to_string();
     assert!(
-        e.contains("fit.drops") && e.contains("density positive"),
+        e.contains("measured.drops.air_density") && e.contains("positive"),
         "{e}"
     );
 }

@@ -109,7 +109,8 @@ pub fn bands(
 }
 
 /// A fit's uncertainty as a `[fit]` table (docs/fitting.md, "Prediction intervals"): what
-/// `fit --save` writes into the preset, and what a batch's ball propagates to its test: cov_ij = r_ij s_i s_j of the free parameters' correlations and standard errors,
+/// `fit --save` writes into the preset, and what a batch's ball carries to its test.
+/// cov_ij = r_ij s_i s_j of the free parameters' correlations and standard errors,
 /// dof = n − p; `None` when no degree of freedom is left, a standard error is not finite, or
 /// v0 was fitted.
 pub fn fit_table(f: &MultiFit) -> Option<FitTable> {
@@ -138,8 +139,6 @@ pub fn fit_table(f: &MultiFit) -> Option<FitTable> {
         covariance,
         dof: u32::try_from(dof).ok()?,
         residual_sd: f.rms_residual * (f.points as f64 / dof as f64).sqrt(),
-        // drop tests' air: the caller's, who read the drops (`fit --save`)
-        drops: None,
     })
 }
 

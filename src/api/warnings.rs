@@ -68,14 +68,18 @@ impl Ball {
     }
 
     /// The warning of a drop through `air` (`None`: vacuum) of a ball fitted to drop tests
-    /// taken in another air (its `[fit.drops]`, while no override moved a fitted parameter):
+    /// taken in another air (its `[measured.drops]`; with a `[fit]` table, while no override
+    /// moved a fitted parameter):
     /// its rebounds are not those the fit matched — a tennis ball fitted in vacuum to readings
     /// of 1.4625 m from 2.54 m rebounds 1.376 m through air (docs/fitting.md, "The air is
     /// stated"; tests/cli_fit_air.rs). `None` when the airs agree or the ball has no drop fit.
     pub fn drop_air_warning(&self, air: Option<crate::measured::Air>) -> Option<String> {
-        let fit = self.fit.as_ref()?;
-        let fitted = fit.drops?;
-        if !super::holds(&self.params, fit) {
+        let fitted = self.measured.as_ref()?.drops?;
+        if self
+            .fit
+            .as_ref()
+            .is_some_and(|f| !super::holds(&self.params, f))
+        {
             return None;
         }
         let (cd, rho) = air.map_or((0.0, 0.0), |a| (a.drag_coefficient, a.density));

@@ -105,6 +105,17 @@ fn measured(m: &Measured) -> Result<(), Bad> {
             format!("must lie in (0, 1], got {}", number(k)),
         ));
     }
+    if let Some(a) = &m.drops {
+        let fine = |x: f64| x.is_finite() && x >= 0.0;
+        if !fine(a.drag_coefficient) {
+            let msg = format!("must be finite and ≥ 0, got {}", number(a.drag_coefficient));
+            return Err(bad("measured.drops", "drag_coefficient", msg));
+        }
+        if !(fine(a.air_density) && a.air_density > 0.0) {
+            let msg = format!("must be finite and positive, got {}", number(a.air_density));
+            return Err(bad("measured.drops", "air_density", msg));
+        }
+    }
     Ok(())
 }
 

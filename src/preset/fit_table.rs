@@ -25,14 +25,11 @@ pub struct FitTable {
     pub dof: u32,
     /// The residual standard deviation s of the fit (N for a trace, COR for a table).
     pub residual_sd: f64,
-    /// Drop tests only: the air the fit took them in (`[fit.drops]`); absent for other data,
-    /// and in presets saved before it was kept.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub drops: Option<FitAir>,
 }
 
-/// The air a fit took its drop tests in: what `bouncelab drop` must fall through for the
-/// fitted ball to give back the readings (docs/fitting.md, "The air is stated").
+/// The air the drop tests a ball was fitted to were taken in (`[measured.drops]`): what
+/// `bouncelab drop` must fall through for the fitted ball to give back the readings
+/// (docs/fitting.md, "The air is stated").
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct FitAir {
@@ -65,11 +62,6 @@ impl FitTable {
         out.push_str("]\n");
         let _ = writeln!(out, "dof = {}", self.dof);
         let _ = writeln!(out, "residual_sd = {:?}", self.residual_sd);
-        if let Some(a) = &self.drops {
-            out.push_str("\n[fit.drops]\n");
-            let _ = writeln!(out, "drag_coefficient = {:?}", a.drag_coefficient);
-            let _ = writeln!(out, "air_density = {:?}", a.air_density);
-        }
     }
 }
 
@@ -138,17 +130,6 @@ pub(super) fn check(p: &Preset) -> Result<(), Bad> {
             number(f.residual_sd)
         );
         return Err(bad("residual_sd", msg));
-    }
-    if let Some(a) = &f.drops {
-        let ok = |x: f64| x.is_finite() && x >= 0.0;
-        if !(ok(a.drag_coefficient) && ok(a.air_density) && a.air_density > 0.0) {
-            let msg = format!(
-                "drag_coefficient {} and air_density {} must be finite, the density positive",
-                number(a.drag_coefficient),
-                number(a.air_density)
-            );
-            return Err(bad("drops", msg));
-        }
     }
     Ok(())
 }

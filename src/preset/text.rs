@@ -64,6 +64,16 @@ impl Preset {
         opt(&mut out, "max_force", m.max_force, "N");
         opt(&mut out, "contact_time", m.contact_time, "s");
         opt(&mut out, "inertia_factor", m.inertia_factor, "κ = I/(m R²)");
+        if let Some(a) = &m.drops {
+            out.push_str("\n[measured.drops]\n");
+            line(
+                &mut out,
+                "drag_coefficient",
+                number(a.drag_coefficient),
+                "0: vacuum",
+            );
+            line(&mut out, "air_density", number(a.air_density), "kg/m³");
+        }
 
         let mat = &self.material;
         out.push_str("\n[material]\n");

@@ -127,6 +127,8 @@ pub fn preset_for(source: &Preset, setting: &Setting, name: &str) -> (Preset, Ve
             max_force: keep(source.measured.max_force),
             contact_time: keep(source.measured.contact_time),
             inertia_factor: source.measured.inertia_factor,
+            // the air of the drops the values came from goes with them
+            drops: source.measured.drops.filter(|_| same_speed),
         },
         material: source.material.clone(),
         adopted: Adopted {

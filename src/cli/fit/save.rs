@@ -9,7 +9,7 @@ use crate::api::Ball;
 use crate::atomic::Outputs;
 use crate::catalog::{self, Catalog, Origin};
 use crate::model::params::ImpactParams;
-use crate::preset::{Adopted, FitAir, FitTable, Measured, ParamSource, Preset};
+use crate::preset::{Adopted, FitAir, Measured, ParamSource, Preset};
 use std::path::{Path, PathBuf};
 
 fn dir() -> anyhow::Result<PathBuf> {
@@ -161,6 +161,8 @@ fn preset(
             max_force: None,
             contact_time: None,
             inertia_factor: base.measured.inertia_factor,
+            // the drops' air, so that `bouncelab drop` can say when it falls through another
+            drops: (!data.drops.is_empty()).then(|| fit_air(data.air)),
         },
         material: base.material.clone(),
         adopted: Adopted {
@@ -169,11 +171,7 @@ fn preset(
             k_p: Some(p.k_p),
             k_r: p.k_r,
         },
-        fit: crate::api::fit_table(f).map(|t| FitTable {
-            // the drops' air, so that `bouncelab drop` can say when it falls through another
-            drops: (!data.drops.is_empty()).then(|| fit_air(data.air)),
-            ..t
-        }),
+        fit: crate::api::fit_table(f),
     }
 }
 
