@@ -10,7 +10,7 @@ mod fit_table;
 mod text;
 mod usable;
 
-pub use fit_table::{FitAir, FitTable};
+pub use fit_table::FitTable;
 
 /// The three balls of the paper, embedded in the binary, first; then the balls of the drop
 /// tests (docs/drop.md, "The new balls").
@@ -95,6 +95,18 @@ pub struct Measured {
     /// absent for other data, and in presets saved before it was kept.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub drops: Option<FitAir>,
+}
+
+/// The air the drop tests a ball was fitted to were taken in (`[measured.drops]`): what
+/// `bouncelab drop` must fall through for the fitted ball to give back the readings
+/// (docs/fitting.md, "The air is stated").
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct FitAir {
+    /// The drag coefficient C_d of quadratic drag; 0 in vacuum (no drag correction).
+    pub drag_coefficient: f64,
+    /// The air density, kg/m³ (no part in vacuum).
+    pub air_density: f64,
 }
 
 /// Material data. SI units.

@@ -33,13 +33,18 @@ fn itf_rebound(dir: &std::path::Path, name: &str, extra: &[&str]) -> f64 {
     f(&v["standard"], "measured")
 }
 
-#[test]
-fn a_drop_fit_states_its_air_and_the_same_air_gives_back_the_readings() {
+/// A temporary config folder holding [`DROPS`] as `drops.csv`, and that file's path.
+fn with_drops() -> (tempfile::TempDir, String) {
     let dir = tempfile::tempdir().unwrap();
     let file = dir.path().join("drops.csv");
     std::fs::write(&file, DROPS).unwrap();
-    let file = file.to_str().unwrap();
-    let fit = [
+    let file = file.to_str().unwrap().to_string();
+    (dir, file)
+}
+
+/// `fit` of the tennis ball's K_r to the drops of `file`.
+fn fit_of(file: &str) -> [&str; 7] {
+    [
         "fit",
         "--preset",
         "tennis",
@@ -47,7 +52,13 @@ fn a_drop_fit_states_its_air_and_the_same_air_gives_back_the_readings() {
         file,
         "--free",
         "k_r",
-    ];
+    ]
+}
+
+#[test]
+fn a_drop_fit_states_its_air_and_the_same_air_gives_back_the_readings() {
+    let (dir, file) = with_drops();
+    let fit = fit_of(&file);
 
     // vacuum, the default: said in the text, `air: null` in the JSON
     let text = run(dir.path(), &fit);
@@ -106,18 +117,8 @@ fn a_drop_fit_states_its_air_and_the_same_air_gives_back_the_readings() {
 /// too.
 #[test]
 fn drop_warns_when_it_falls_through_another_air_than_the_fits() {
-    let dir = tempfile::tempdir().unwrap();
-    let file = dir.path().join("drops.csv");
-    std::fs::write(&file, DROPS).unwrap();
-    let fit = [
-        "fit",
-        "--preset",
-        "tennis",
-        "--drop-test",
-        file.to_str().unwrap(),
-        "--free",
-        "k_r",
-    ];
+    let (dir, file) = with_drops();
+    let fit = fit_of(&file);
     run(dir.path(), &[&fit[..], &["--save", "in-vacuum"]].concat());
     let in_air = [
         &fit[..],
@@ -178,18 +179,8 @@ fn drop_warns_when_it_falls_through_another_air_than_the_fits() {
 #[test]
 fn the_measured_drops_table_round_trips_and_is_checked() {
     use bouncelab::preset::Preset;
-    let dir = tempfile::tempdir().unwrap();
-    let file = dir.path().join("drops.csv");
-    std::fs::write(&file, DROPS).unwrap();
-    let fit = [
-        "fit",
-        "--preset",
-        "tennis",
-        "--drop-test",
-        file.to_str().unwrap(),
-        "--free",
-        "k_r",
-    ];
+    let (dir, file) = with_drops();
+    let fit = fit_of(&file);
     run(
         dir.path(),
         &[

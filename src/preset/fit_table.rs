@@ -27,18 +27,6 @@ pub struct FitTable {
     pub residual_sd: f64,
 }
 
-/// The air the drop tests a ball was fitted to were taken in (`[measured.drops]`): what
-/// `bouncelab drop` must fall through for the fitted ball to give back the readings
-/// (docs/fitting.md, "The air is stated").
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct FitAir {
-    /// The drag coefficient C_d of quadratic drag; 0 in vacuum (no drag correction).
-    pub drag_coefficient: f64,
-    /// The air density, kg/m³ (no part in vacuum).
-    pub air_density: f64,
-}
-
 impl FitTable {
     /// The free parameters, parsed (the check has made sure they parse).
     pub fn params(&self) -> Vec<Param> {

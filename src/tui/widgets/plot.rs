@@ -354,9 +354,9 @@ impl<'a> Plot<'a> {
                     continue;
                 };
                 let bounds = (l.plot.x, l.plot.right(), l.plot.y, l.plot.bottom());
-                // a text keeps off every other marker's glyph too, drawn or still to come,
-                // so a glyph never lands inside another marker's label ("z_f 3●.9 mm":
-                // tests/tui_marks.rs)
+                // a text keeps off every other marker's glyph too, drawn or still to come:
+                // each glyph stays on its point and each label reads whole
+                // (tests/tui_marks.rs)
                 let blocked: Vec<(u16, u16)> = taken
                     .iter()
                     .copied()
