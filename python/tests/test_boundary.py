@@ -214,7 +214,12 @@ def test_ctrl_c_stops_a_drop_in_its_intervals(tmp_path, monkeypatch):
     whole = call()
     full = time.perf_counter() - start
     assert len(whole["bounces"]["cor"]) > 500 and "cor_ci95_lo" in whole["bounces"]
-    # the first drop is a small part of the whole; the signal comes in the intervals' drops
+    # the first drop is a small part of the whole; the signal comes in the intervals' drops.
+    # A drop that looked only at its end would raise 0.6 of the whole after the signal; one
+    # that looks every 20 ms (interrupt.rs' EVERY) raises within a period and a bounce. The
+    # bound is half of that rest, and never more than the other tests' promptness: it holds
+    # the distinction on a machine where the whole drop takes 0.16 s (a tenth of it, the
+    # earlier bound, was less than the watch's period there).
     late = interrupted_after(0.4 * full, call)
     print(f"KeyboardInterrupt {late * 1e3:.0f} ms after SIGINT, of a {full:.2f} s drop")
-    assert late < 0.1 * full
+    assert late < min(0.3 * full, 0.1)
