@@ -94,6 +94,84 @@ fn collide_json_holds_the_kinematics() {
     assert!((f(&g, "ball_speed_out") + f(&g, "target_speed_out")).abs() < 1e-12);
 }
 
+/// The text's speeds out say the way each body goes, as the JSON's signs do: a target
+/// knocked back, a receding target the ball catches, a light target the ball follows. The
+/// text once printed `-1.292 m/s (in its original direction)` for a golf ball knocked back
+/// by another, and `-2.479 m/s (away from the target)` for a ball that follows the target.
+#[test]
+fn collide_text_says_the_way_each_speed_goes() {
+    let cases: [&[&str]; 3] = [
+        &[
+            "--preset",
+            "golf",
+            "--target-preset",
+            "golf",
+            "--target-speed",
+            "1.47",
+        ],
+        &[
+            "--preset",
+            "baseball",
+            "--v0",
+            "40",
+            "--target-mass",
+            "0.8",
+            "--target-speed",
+            "-10",
+        ],
+        &[
+            "--preset",
+            "baseball",
+            "--v0",
+            "10",
+            "--target-mass",
+            "0.05",
+        ],
+    ];
+    for args in cases {
+        let c = json(&[&["collide"][..], args, &["--format", "json"]].concat());
+        let text = ok(&[&["collide"][..], args].concat());
+        let line = |label: &str| {
+            let l = text.lines().find(|l| l.trim_start().starts_with(label));
+            l.unwrap_or_else(|| panic!("{args:?}: no {label} line in\n{text}"))
+                .to_string()
+        };
+        let said = [
+            (
+                "ball speed out",
+                "ball_speed_out",
+                "away from the target",
+                "toward the target",
+            ),
+            (
+                "target speed out",
+                "target_speed_out",
+                "toward the ball",
+                "away from the ball",
+            ),
+        ];
+        for (label, key, positive, negative) in said {
+            let (l, v) = (line(label), f(&c, key));
+            let way = if v < 0.0 { negative } else { positive };
+            assert!(l.contains(way), "{args:?}: {key} = {v}, text {l:?}");
+            let size = l.trim_start()[label.len()..].split_whitespace().next();
+            let size: f64 = size.unwrap().parse().unwrap();
+            assert!(
+                (size - v.abs()).abs() <= 5e-4 * v.abs(),
+                "{args:?}: {l:?} against {v}"
+            );
+        }
+        let target = line("target  ");
+        let toward = c["target"]["speed"].as_f64().unwrap() >= 0.0;
+        let way = if toward {
+            "toward the ball"
+        } else {
+            "away from the ball"
+        };
+        assert!(target.contains(way), "{args:?}: {target:?}");
+    }
+}
+
 #[test]
 fn bat_reports_bbs_and_the_bbcor_verdict() {
     let b = json(&["bat", "--bat-mass", "0.8", "--format", "json"]);

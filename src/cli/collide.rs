@@ -114,6 +114,14 @@ fn ms(v: f64) -> String {
     format!("{} m/s", human(v, 4))
 }
 
+/// A speed along the line of centres as its size and the way it goes: `positive` names the
+/// way of a positive value (the JSON's sign, docs/targets.md §3), `negative` the other, so
+/// that no signed speed sits beside words that say the opposite.
+fn directed(v: f64, positive: &str, negative: &str) -> String {
+    let way = if v < 0.0 { negative } else { positive };
+    format!("{} {way}", ms(v.abs()))
+}
+
 fn mm(x: f64) -> String {
     format!("{} mm", human(x * 1e3, 4))
 }
@@ -127,9 +135,9 @@ fn setup_rows(r: &CollisionReport) -> Vec<Vec<String>> {
         ms(r.ball_speed)
     );
     let target = format!(
-        "M {}, {} toward the ball, {}",
+        "M {}, {}, {}",
         mass(t.mass),
-        ms(t.speed),
+        directed(t.speed, "toward the ball", "away from the ball"),
         surface(t)
     );
     let pair = format!(
@@ -161,11 +169,15 @@ fn result_rows(r: &CollisionReport) -> Vec<Vec<String>> {
         row("apparent COR e_A", human(c.apparent_cor, 4)),
         row(
             "ball speed out",
-            format!("{} (away from the target)", ms(c.ball_speed_out)),
+            directed(
+                c.ball_speed_out,
+                "away from the target",
+                "toward the target",
+            ),
         ),
         row(
             "target speed out",
-            format!("{} (in its original direction)", ms(c.target_speed_out)),
+            directed(c.target_speed_out, "toward the ball", "away from the ball"),
         ),
         row("peak force F_m", format!("{} N", human(c.max_force, 4))),
         row("contact time t_f", contact),

@@ -97,7 +97,8 @@ pub struct Collision {
     pub apparent_cor: f64,
     /// The ball's speed after the impact, positive away from the target (m/s).
     pub ball_speed_out: f64,
-    /// The target's speed after the impact, positive in its original direction (m/s).
+    /// The target's speed after the impact, positive toward the ball as [`Target::speed`]
+    /// counts (m/s): negative when it is knocked back.
     pub target_speed_out: f64,
     /// Peak force F_m (N).
     pub max_force: f64,
