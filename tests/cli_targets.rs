@@ -241,10 +241,38 @@ fn bad_targets_are_one_line_and_exit_2() {
         &["target_speed"],
     );
     bad(&c(&[]), &["--target-mass"]);
-    bad(&["bat", "--bat-mass", "0"], &["invalid target_mass: 0"]);
+}
+
+/// `bat`'s errors name its own flags: they once named the library's target (`invalid
+/// target_mass: 0` for `--bat-mass 0`), and a pitch away from the bat blamed the bat's speed
+/// and `v0` (`invalid target_speed: 30 (… v0 + target_speed must be positive)`).
+#[test]
+fn bat_errors_name_its_flags() {
+    fn b<'a>(more: &[&'a str]) -> Vec<&'a str> {
+        [&["bat", "--bat-mass", "0.8"][..], more].concat()
+    }
+    bad(&["bat", "--bat-mass", "0"], &["invalid bat_mass: 0"]);
+    bad(&["bat", "--bat-mass", "-1"], &["invalid bat_mass: -1"]);
+    let never = "never meet: ball_speed + bat_speed must be positive";
     bad(
-        &["bat", "--bat-mass", "0.8", "--bat-speed", "-50"],
-        &["target_speed"],
+        &b(&["--bat-speed", "-50"]),
+        &["invalid bat_speed: -50", never],
+    );
+    bad(
+        &b(&["--ball-speed", "-50"]),
+        &["invalid ball_speed: -50", never],
+    );
+    bad(&b(&["--bat-speed", "nan"]), &["invalid bat_speed: NaN"]);
+    bad(&b(&["--ball-speed", "inf"]), &["invalid ball_speed: inf"]);
+    bad(&b(&["--bat-stiffness", "0"]), &["invalid bat_stiffness: 0"]);
+    let damped = ["--bat-stiffness", "1e6", "--bat-damping", "-2"];
+    bad(&b(&damped), &["invalid bat_damping: -2"]);
+    // a bat swung away from the pitch: the game line says so, not "toward each other"
+    let away = ok(&b(&["--bat-speed", "-5"]));
+    let game = away.lines().find(|l| l.starts_with("game:")).unwrap();
+    assert_eq!(
+        game,
+        "game: ball at 40.00 m/s toward the bat, bat at 5.000 m/s away from the ball"
     );
 }
 

@@ -3,7 +3,9 @@
 //! against ≤ 0.50 (docs/targets.md §5).
 
 use super::ball::BallArgs;
-use super::output::{self, human, table};
+use super::output::{self, directed, human, num, table};
+use crate::model::params::Field;
+use crate::target::Target;
 use crate::target::bat::{BAT_STANDARDS, BatRun, MPH_136};
 use clap::{Args, ValueEnum};
 use serde::Serialize;
@@ -61,6 +63,7 @@ pub fn run(a: &BatArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         args.choice.preset = Some(BAT_BALL.into());
     }
     let ball = args.resolve(None)?;
+    check(a)?;
     let surface = (
         a.bat_stiffness.unwrap_or(f64::INFINITY),
         a.bat_damping.unwrap_or(0.0),
@@ -90,16 +93,54 @@ pub fn run(a: &BatArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     Ok(())
 }
 
+/// The bat's values checked as `Target::validate` and `collide` check them, the error naming
+/// the flag the user gave (`bat_mass`, not the library's `target_mass`): the library's bat is
+/// a target, the command line's is a bat (tests/cli_targets.rs, `bat_errors_name_its_flags`).
+fn check(a: &BatArgs) -> anyhow::Result<()> {
+    let bat = Target {
+        mass: a.bat_mass,
+        speed: a.bat_speed,
+        stiffness: a.bat_stiffness.unwrap_or(f64::INFINITY),
+        damping: a.bat_damping.unwrap_or(0.0),
+    };
+    if let Err(e) = bat.validate() {
+        let name = match e.field {
+            Field::TargetMass => "bat_mass",
+            Field::TargetSpeed => "bat_speed",
+            Field::TargetStiffness => "bat_stiffness",
+            _ => "bat_damping",
+        };
+        anyhow::bail!("invalid {name}: {} ({})", num(e.value), e.reason);
+    }
+    if !a.ball_speed.is_finite() || a.ball_speed.abs() > 1e15 {
+        let reason = "must be finite, within ±1e15 m/s";
+        anyhow::bail!("invalid ball_speed: {} ({reason})", num(a.ball_speed));
+    }
+    if a.ball_speed + a.bat_speed <= 0.0 {
+        // the one that moves away from the other is at fault (both: the ball)
+        let (name, v) = if a.ball_speed < 0.0 || a.bat_speed >= 0.0 {
+            ("ball_speed", a.ball_speed)
+        } else {
+            ("bat_speed", a.bat_speed)
+        };
+        let reason = "the ball and the bat never meet: ball_speed + bat_speed must be positive";
+        anyhow::bail!("invalid {name}: {} ({reason})", num(v));
+    }
+    Ok(())
+}
+
 fn text(out: &mut dyn Write, head: &str, a: &BatArgs, r: &BatRun) -> std::io::Result<()> {
     writeln!(out, "{head}")?;
     writeln!(out)?;
     let ms = |v: f64| format!("{} m/s", human(v, 4));
-    writeln!(
-        out,
-        "game: ball at {}, bat at {}, toward each other",
-        ms(a.ball_speed),
-        ms(a.bat_speed)
-    )?;
+    if a.ball_speed >= 0.0 && a.bat_speed >= 0.0 {
+        let (ball, bat) = (ms(a.ball_speed), ms(a.bat_speed));
+        writeln!(out, "game: ball at {ball}, bat at {bat}, toward each other")?;
+    } else {
+        let ball = directed(a.ball_speed, "toward the bat", "away from the bat");
+        let bat = directed(a.bat_speed, "toward the ball", "away from the ball");
+        writeln!(out, "game: ball at {ball}, bat at {bat}")?;
+    }
     let g = &r.game;
     let rows = vec![
         vec!["batted-ball speed BBS".into(), ms(r.bbs)],

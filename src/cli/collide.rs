@@ -2,7 +2,7 @@
 //! surface of its own (docs/targets.md), as a text table or one JSON object.
 
 use super::ball::{self, BallArgs};
-use super::output::{self, human, table};
+use super::output::{self, directed, human, table};
 use crate::api::{Ball, CollisionReport};
 use crate::target::Target;
 use clap::{Args, ValueEnum};
@@ -112,14 +112,6 @@ fn text(
 
 fn ms(v: f64) -> String {
     format!("{} m/s", human(v, 4))
-}
-
-/// A speed along the line of centres as its size and the way it goes: `positive` names the
-/// way of a positive value (the JSON's sign, docs/targets.md §3), `negative` the other, so
-/// that no signed speed sits beside words that say the opposite.
-fn directed(v: f64, positive: &str, negative: &str) -> String {
-    let way = if v < 0.0 { negative } else { positive };
-    format!("{} {way}", ms(v.abs()))
 }
 
 fn mm(x: f64) -> String {

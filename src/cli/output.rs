@@ -96,6 +96,15 @@ fn signed(x: f64) -> String {
     if x >= 0.0 { format!("+{s}") } else { s }
 }
 
+/// A speed along the line of centres as its size and the way it goes: `positive` names the
+/// way of a positive value (the JSON's sign, docs/targets.md §3), `negative` the other, so
+/// that no signed speed sits beside words that say the opposite
+/// (tests/cli_targets.rs, `collide_text_says_the_way_each_speed_goes`).
+pub fn directed(v: f64, positive: &str, negative: &str) -> String {
+    let way = if v < 0.0 { negative } else { positive };
+    format!("{} m/s {way}", human(v.abs(), 4))
+}
+
 /// Rows of cells as a left-aligned table with two spaces between columns.
 pub fn table(out: &mut dyn Write, indent: &str, rows: &[Vec<String>]) -> io::Result<()> {
     let cols = rows.iter().map(Vec::len).max().unwrap_or(0);
