@@ -140,6 +140,7 @@ fn reproduce_writes_every_figure_and_the_report_once() {
     }
     // the baseball's contact time is the model's clearest miss, and is marked
     assert!(report.contains("**-28.3 %**"), "{report}");
+    cor_sentence_holds_the_table(&report);
     // a second run refuses, and touches nothing; --force replaces and leaves other files alone
     fs::write(d.join("new/paper/notes.txt"), "mine").unwrap();
     fs::write(d.join("new/paper/report.md"), "edited").unwrap();
@@ -168,5 +169,34 @@ fn reproduce_writes_every_figure_and_the_report_once() {
     assert_bad(
         &bl_at(d, &["--preset", "golf", "reproduce"]),
         &["do not apply"],
+    );
+}
+
+/// The summary's sentence on the COR bounds the misses its own table shows (it once said the
+/// COR "agrees by construction" above a baseball row at −0.9 %).
+fn cor_sentence_holds_the_table(report: &str) {
+    let said = report
+        .split("leave e within ")
+        .nth(1)
+        .expect("the COR sentence's bound");
+    let bound: f64 = said.split(" %").next().unwrap().parse().unwrap();
+    let rows = report.lines().filter(|l| {
+        ["| superball |", "| golf |", "| baseball |"]
+            .iter()
+            .any(|b| l.starts_with(b))
+    });
+    let mut largest: f64 = 0.0;
+    for row in rows.take(3) {
+        // | ball | v0 | λ | ζ | e measured | e model | Δ | …
+        let delta = row.split('|').nth(7).unwrap().trim().trim_end_matches(" %");
+        largest = largest.max(delta.parse::<f64>().unwrap().abs());
+    }
+    assert!(
+        largest > 0.0 && largest <= bound,
+        "{largest} % against {bound} %"
+    );
+    assert!(
+        bound - largest < 0.05 + 1e-9,
+        "the bound {bound} % is the largest miss"
     );
 }
