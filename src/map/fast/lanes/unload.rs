@@ -124,17 +124,25 @@ impl<L: Lane> Unload<L> {
     /// `pt`, the flow being linear in its start.
     #[inline(always)]
     pub(super) fn responses(&self, x0: L, x2: L, pt: &Point4<L>) -> [(L, L); 2] {
-        let f = &self.flow;
         let grown = self.grown(pt);
-        let response = |a: L, b: L| {
-            let d = -a * f.r + f.sigma * b;
-            let (p, q) = antiderivative(f.sigma, self.p0, b, d);
-            let z = a * pt.real + b * pt.ec + d * pt.es;
-            (z, a * grown / f.r + p * pt.ec + q * pt.es - p)
-        };
         let a0 = self.p0 * x0 / self.gap;
         let a2 = x2 / self.gap;
-        [response(a0, x0 - a0), response(a2, -a2)]
+        [
+            self.response(a0, x0 - a0, grown, pt),
+            self.response(a2, -a2, grown, pt),
+        ]
+    }
+
+    /// One response of `responses`: the pair part (a, b) of a start, (u, ∫ u) at `pt`. A
+    /// method, not a closure: the compiler left the closure out of line in the eight-lane
+    /// kernel, its lanes passed through memory (callgrind, BENCHMARKS.md's tenth session).
+    #[inline(always)]
+    fn response(&self, a: L, b: L, grown: L, pt: &Point4<L>) -> (L, L) {
+        let f = &self.flow;
+        let d = -a * f.r + f.sigma * b;
+        let (p, q) = antiderivative(f.sigma, self.p0, b, d);
+        let z = a * pt.real + b * pt.ec + d * pt.es;
+        (z, a * grown / f.r + p * pt.ec + q * pt.es - p)
     }
 }
 
