@@ -1,6 +1,7 @@
 //! Warnings travel with the answer (issue 27, item 6): an indentation beyond the ball's radius
-//! is said in run, sweep velocity, drop and peers (JSON `warnings`, a `warning:` line in text),
-//! and the explorer's readout no longer says "no flattening (z_m < z_p)" under the Hertz law,
+//! is said in run, sweep velocity, drop, peers, collide, bat, oblique and court (JSON
+//! `warnings`, a `warning:` line in text, a `warnings` column in CSV rows, stderr beside a CSV
+//! time series), and the explorer's readout no longer says "no flattening (z_m < z_p)" under the Hertz law,
 //! which never flattens.
 
 mod common;
@@ -121,4 +122,136 @@ fn the_readout_does_not_claim_z_m_below_z_p_under_hertz() {
         screen.contains("Hertz: elastic, never flattens"),
         "{screen}"
     );
+}
+
+/// The commands that said nothing of an indentation past the radius: `collide`, `bat`,
+/// `oblique` and `court` (no `warnings` key, no line), and every CSV (`run`, `sweep velocity`
+/// and `oblique` rows had no column for it; the time series of `run --history`, `oblique
+/// --history` and `drop` say it on stderr). A table-tennis ball at 100 m/s flattens 23 mm on
+/// a radius of 20 mm; softened to K_p = 200 N/m, 30 m/s at 16° (the court test) too.
+#[test]
+fn every_answer_and_every_format_carries_the_radius_warning() {
+    let tt = ["--preset", "table-tennis", "--v0", "100"];
+    let with = |cmd: &[&str], more: &[&str]| -> Vec<String> {
+        let mut a: Vec<String> = cmd.iter().map(|s| s.to_string()).collect();
+        a.extend(more.iter().map(|s| s.to_string()));
+        a
+    };
+    // each command past the radius, then within it (the same command at the ball's own pace)
+    let answers: [(&[&str], &[&str], &[&str]); 4] = [
+        (&["collide", "--target-mass", "1"], &tt, &tt[..2]),
+        (
+            &["bat", "--bat-mass", "0.8"],
+            &["--preset", "table-tennis", "--ball-speed", "100"],
+            &[
+                "--preset",
+                "table-tennis",
+                "--ball-speed",
+                "10",
+                "--bat-speed",
+                "5",
+            ],
+        ),
+        (
+            &["oblique", "--angle", "80", "--friction", "0.5"],
+            &tt,
+            &tt[..2],
+        ),
+        (
+            &["court", "--friction", "0.5"],
+            &["--preset", "table-tennis", "--k-p", "200"],
+            &tt[..2],
+        ),
+    ];
+    for (cmd, past, within) in answers {
+        let args = with(cmd, past);
+        let args: Vec<&str> = args.iter().map(String::as_str).collect();
+        let v = json(&[&args[..], &["--format", "json"]].concat());
+        let w = v["warnings"]
+            .as_array()
+            .unwrap_or_else(|| panic!("{cmd:?}: {v}"));
+        assert!(
+            w.iter().any(|w| w.as_str().unwrap().contains(BEYOND)),
+            "{cmd:?}: {w:?}"
+        );
+        let text = ok(&args);
+        assert!(
+            text.contains("\nwarning: ") && text.contains(BEYOND),
+            "{cmd:?}"
+        );
+        let args = with(cmd, within);
+        let args: Vec<&str> = args.iter().map(String::as_str).collect();
+        let v = json(&[&args[..], &["--format", "json"]].concat());
+        assert_eq!(
+            v["warnings"],
+            serde_json::json!([]),
+            "{cmd:?} within the radius"
+        );
+        assert!(!ok(&args).contains("warning:"), "{cmd:?} within the radius");
+    }
+    // the CSV rows: a `warnings` column, last
+    let rows: [&[&str]; 3] = [
+        &["run", "--format", "csv"],
+        &[
+            "sweep", "velocity", "--from", "90", "--to", "100", "--points", "2",
+        ],
+        &[
+            "oblique",
+            "--angle",
+            "80",
+            "--friction",
+            "0.5",
+            "--format",
+            "csv",
+        ],
+    ];
+    for cmd in rows {
+        let args = with(cmd, &tt);
+        let args: Vec<&str> = args.iter().map(String::as_str).collect();
+        let csv = ok(&args);
+        let mut lines = csv.lines();
+        assert!(lines.next().unwrap().ends_with(",warnings"), "{cmd:?}");
+        let last = lines.last().unwrap();
+        assert!(last.contains(BEYOND), "{cmd:?}: {last}");
+    }
+    // the time series: stderr, the series itself unchanged
+    let series: [&[&str]; 3] = [
+        &["run", "--format", "csv", "--history"],
+        &[
+            "oblique",
+            "--angle",
+            "80",
+            "--friction",
+            "0.5",
+            "--format",
+            "csv",
+            "--history",
+        ],
+        &[
+            "drop",
+            "--preset",
+            "superball",
+            "--height",
+            "100",
+            "--no-drag",
+            "--format",
+            "csv",
+        ],
+    ];
+    for cmd in series {
+        let args = if cmd[0] == "drop" {
+            with(cmd, &[])
+        } else {
+            with(cmd, &tt)
+        };
+        let args: Vec<&str> = args.iter().map(String::as_str).collect();
+        let o = bl(&args);
+        assert_eq!(o.code, 0, "{cmd:?}: {}", o.stderr);
+        assert!(
+            o.stderr.starts_with("bouncelab: warning: peak indentation"),
+            "{cmd:?}"
+        );
+        assert!(o.stderr.contains(BEYOND), "{cmd:?}: {}", o.stderr);
+        assert!(o.stdout.starts_with("t,"), "{cmd:?}");
+    }
 }

@@ -30,6 +30,9 @@ pub struct CollisionReport {
     pub effective_mass: Option<f64>,
     /// Ball on ball: the pair's effective radius R_eff = R1 R2/(R1 + R2) (m).
     pub effective_radius: Option<f64>,
+    /// What the caller should know about this answer: the ball's peak indentation beyond its
+    /// radius ([`super::indentation_warning`]); `[]` when nothing.
+    pub warnings: Vec<String>,
 }
 
 impl Ball {
@@ -59,6 +62,7 @@ impl Ball {
         method: Option<Method>,
     ) -> Result<CollisionReport, BallError> {
         let collision = collide(&self.params, self.law, target, self.params.v0, method)?;
+        let warnings = super::indentation_warning(collision.max_indentation, self.radius());
         Ok(CollisionReport {
             ball: self.name.clone(),
             law: self.law,
@@ -68,6 +72,7 @@ impl Ball {
             collision,
             effective_mass: None,
             effective_radius: None,
+            warnings: warnings.into_iter().collect(),
         })
     }
 
@@ -94,6 +99,19 @@ impl Ball {
             _ => None,
         };
         Ok(r)
+    }
+
+    /// The warnings of a bat's run `r` for this ball: its peak indentation beyond its radius
+    /// in the game impact or in the BBCOR test, each named.
+    pub fn bat_warnings(&self, r: &BatRun) -> Vec<String> {
+        let radius = self.radius();
+        [("game", &r.game), ("BBCOR test", &r.test)]
+            .into_iter()
+            .filter_map(|(what, c)| {
+                super::indentation_warning(c.max_indentation, radius)
+                    .map(|w| format!("{what}: {w}"))
+            })
+            .collect()
     }
 
     /// A bat of effective mass `bat_mass` at the impact point (rigid, or with `surface` =

@@ -47,6 +47,9 @@ pub struct CourtPace {
     pub angle_out_deg: f64,
     /// Outgoing spin, rad/s.
     pub spin_out: f64,
+    /// What the caller should know about this answer ([`Ball::oblique_warnings`] of the
+    /// test's impact); `[]` when nothing.
+    pub warnings: Vec<String>,
 }
 
 impl Ball {
@@ -63,6 +66,13 @@ impl Ball {
     pub fn tangential_stiffness(&self) -> Option<f64> {
         self.poisson_ratio
             .map(|nu| mindlin_ratio(nu) * self.params.k_p)
+    }
+
+    /// The warnings of an oblique impact `r` of this ball: those of its normal impact at
+    /// v sin θ ([`Ball::warnings`]: a peak indentation beyond the radius, an energy balance
+    /// that does not close).
+    pub fn oblique_warnings(&self, r: &ObliqueResponse) -> Vec<String> {
+        self.warnings(&r.normal)
     }
 
     /// One oblique impact (docs/oblique.md), with `samples` history samples (0: none), as
@@ -144,6 +154,7 @@ impl Ball {
             v_out: r.v_out,
             angle_out_deg: r.angle_out_deg,
             spin_out: r.spin_out,
+            warnings: self.oblique_warnings(&r),
         })
     }
 }

@@ -55,6 +55,8 @@ struct BatJson<'a> {
     standard: &'static str,
     #[serde(flatten)]
     run: &'a BatRun,
+    /// [`crate::Ball::bat_warnings`]; `[]` when nothing.
+    warnings: Vec<String>,
 }
 
 pub fn run(a: &BatArgs, out: &mut dyn Write) -> anyhow::Result<()> {
@@ -79,6 +81,7 @@ pub fn run(a: &BatArgs, out: &mut dyn Write) -> anyhow::Result<()> {
                 bat_speed: a.bat_speed,
                 standard: BAT_STANDARDS[0].name,
                 run: &r,
+                warnings: ball.bat_warnings(&r),
             },
         )?,
         BatFormat::Text => {
@@ -88,6 +91,7 @@ pub fn run(a: &BatArgs, out: &mut dyn Write) -> anyhow::Result<()> {
                 human(a.bat_mass, 4)
             );
             text(out, &head, a, &r)?;
+            output::warning_lines(out, &ball.bat_warnings(&r))?;
         }
     }
     Ok(())

@@ -107,7 +107,8 @@ fn text(
     writeln!(out)?;
     table(out, "  ", &setup_rows(r))?;
     writeln!(out)?;
-    table(out, "  ", &result_rows(r))
+    table(out, "  ", &result_rows(r))?;
+    output::warning_lines(out, &r.warnings)
 }
 
 fn ms(v: f64) -> String {

@@ -84,6 +84,7 @@ pub fn run(a: &CourtArgs, out: &mut dyn Write) -> anyhow::Result<()> {
                 "CPR = 100(1 − μ_app) + 150(0.81 − e_y); categories 1 slow ≤ 29, 2 medium-slow \
                  30–34, 3 medium 35–39, 4 medium-fast 40–44, 5 fast ≥ 45"
             )?;
+            output::warning_lines(out, &pace.warnings)?;
         }
     }
     Ok(())

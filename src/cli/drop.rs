@@ -125,16 +125,17 @@ pub fn run(a: &DropArgs, out: &mut dyn Write) -> anyhow::Result<()> {
             r.warnings.extend(b.drop_air_warning(air));
             output::json(out, &r)?
         }
-        DropFormat::Csv => trajectory_csv(out, &run)?,
+        DropFormat::Csv => {
+            trajectory_csv(out, &run)?;
+            let mut warnings = b.drop_warnings(&run)?;
+            warnings.extend(b.drop_air_warning(air));
+            output::warnings_to_stderr(&warnings);
+        }
         DropFormat::Text => {
             text(out, &b.label(), &run, standard.zip(verdict), radius)?;
-            for w in b
-                .drop_warnings(&run)?
-                .into_iter()
-                .chain(b.drop_air_warning(air))
-            {
-                writeln!(out, "warning: {w}")?;
-            }
+            let mut warnings = b.drop_warnings(&run)?;
+            warnings.extend(b.drop_air_warning(air));
+            output::warning_lines(out, &warnings)?;
             if let (Some(i), Some(first), Some(fit)) = (bands.first(), run.bounces.first(), &b.fit)
             {
                 writeln!(

@@ -70,6 +70,8 @@ struct Report<'a> {
     radius: f64,
     #[serde(flatten)]
     answer: &'a ObliqueResponse,
+    /// [`crate::Ball::oblique_warnings`]; `[]` when nothing.
+    warnings: Vec<String>,
 }
 
 pub fn run(a: &ObliqueArgs, out: &mut dyn Write) -> anyhow::Result<()> {
@@ -94,6 +96,7 @@ pub fn run(a: &ObliqueArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         .inertia_factor
         .unwrap_or_else(|| ball.inertia_factor());
     let radius = ball.radius();
+    let warnings = ball.oblique_warnings(&r);
     match a.format {
         ObliqueFormat::Json => {
             let report = Report {
@@ -103,11 +106,15 @@ pub fn run(a: &ObliqueArgs, out: &mut dyn Write) -> anyhow::Result<()> {
                 inertia_factor: kappa,
                 radius,
                 answer: &r,
+                warnings,
             };
             output::json(out, &report)?
         }
-        ObliqueFormat::Csv if a.history => history_csv(out, &r)?,
-        ObliqueFormat::Csv => summary_csv(out, &r)?,
+        ObliqueFormat::Csv if a.history => {
+            history_csv(out, &r)?;
+            output::warnings_to_stderr(&warnings);
+        }
+        ObliqueFormat::Csv => summary_csv(out, &r, &warnings)?,
         ObliqueFormat::Text => {
             // the law is named when it is not the linear one (the header `run` prints too)
             let law = match ball.law {
@@ -123,14 +130,15 @@ pub fn run(a: &ObliqueArgs, out: &mut dyn Write) -> anyhow::Result<()> {
                 given(kappa, 4),
                 given(radius * 1e3, 4)
             )?;
-            text(out, &r)?
+            text(out, &r)?;
+            output::warning_lines(out, &warnings)?
         }
     }
     Ok(())
 }
 
 /// Columns of `oblique --format csv` (one row).
-pub const SUMMARY_COLUMNS: [&str; 18] = [
+pub const SUMMARY_COLUMNS: [&str; 19] = [
     "v_in",
     "angle_in_deg",
     "spin_in",
@@ -149,9 +157,14 @@ pub const SUMMARY_COLUMNS: [&str; 18] = [
     "contact_time",
     "max_normal_force",
     "max_friction_force",
+    "warnings",
 ];
 
-fn summary_csv(out: &mut dyn Write, r: &ObliqueResponse) -> std::io::Result<()> {
+fn summary_csv(
+    out: &mut dyn Write,
+    r: &ObliqueResponse,
+    warnings: &[String],
+) -> std::io::Result<()> {
     csv_row(out, &SUMMARY_COLUMNS)?;
     let mut row: Vec<String> = [
         r.v_in,
@@ -179,6 +192,7 @@ fn summary_csv(out: &mut dyn Write, r: &ObliqueResponse) -> std::io::Result<()> 
     ] {
         row.push(num(x));
     }
+    row.push(output::warnings_cell(warnings));
     csv_row(out, &row)
 }
 

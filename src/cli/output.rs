@@ -105,6 +105,29 @@ pub fn directed(v: f64, positive: &str, negative: &str) -> String {
     format!("{} m/s {way}", human(v.abs(), 4))
 }
 
+/// An answer's warnings after its text, a `warning:` line each (docs/guarantees.md,
+/// "Warnings travel with the answer").
+pub fn warning_lines(out: &mut dyn Write, warnings: &[String]) -> io::Result<()> {
+    for w in warnings {
+        writeln!(out, "warning: {w}")?;
+    }
+    Ok(())
+}
+
+/// An answer's warnings where its output has no place for them (a time series as CSV): on
+/// stderr, a `bouncelab: warning:` line each, its control characters shown as text.
+pub fn warnings_to_stderr(warnings: &[String]) {
+    for w in warnings {
+        let line = format!("bouncelab: warning: {w}");
+        let _ = writeln!(io::stderr(), "{}", crate::sanitize::line(&line));
+    }
+}
+
+/// An answer's warnings as one CSV cell, `; ` between them (empty when none).
+pub fn warnings_cell(warnings: &[String]) -> String {
+    warnings.join("; ")
+}
+
 /// Rows of cells as a left-aligned table with two spaces between columns.
 pub fn table(out: &mut dyn Write, indent: &str, rows: &[Vec<String>]) -> io::Result<()> {
     let cols = rows.iter().map(Vec::len).max().unwrap_or(0);

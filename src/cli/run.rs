@@ -89,7 +89,10 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> anyhow::Result<()> {
             report.intervals = intervals;
             output::json(out, &report)?
         }
-        RunFormat::Csv if args.history => history_csv(out, &r)?,
+        RunFormat::Csv if args.history => {
+            history_csv(out, &r)?;
+            output::warnings_to_stderr(&ball.warnings(&r));
+        }
         RunFormat::Csv => summary_csv(out, &ball, &r)?,
         RunFormat::Text => {
             super::run_text::write(out, &ball, &r, intervals.as_ref(), args.history)?
@@ -99,7 +102,7 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> anyhow::Result<()> {
 }
 
 /// Columns of `run --format csv` (one row).
-pub const SUMMARY_COLUMNS: [&str; 28] = [
+pub const SUMMARY_COLUMNS: [&str; 29] = [
     "preset",
     "origin",
     "parameters",
@@ -128,6 +131,7 @@ pub const SUMMARY_COLUMNS: [&str; 28] = [
     "energy_dashpot",
     "energy_contact",
     "energy_spring",
+    "warnings",
 ];
 
 fn summary_csv(out: &mut dyn Write, b: &Ball, r: &ImpactResponse) -> std::io::Result<()> {
@@ -167,6 +171,7 @@ fn summary_csv(out: &mut dyn Write, b: &Ball, r: &ImpactResponse) -> std::io::Re
             en(|e| e.dashpot),
             en(|e| e.contact),
             en(|e| e.spring),
+            output::warnings_cell(&b.warnings(r)),
         ],
     )
 }

@@ -277,9 +277,12 @@ fn velocity_csv(out: &mut dyn Write, rows: &[VelocityRow], bands: bool) -> anyho
             "contact_time_ci95_hi",
         ]);
     }
+    head.push("warnings");
     csv_row(out, &head)?;
     for VelocityRow {
-        row: r, intervals, ..
+        row: r,
+        intervals,
+        warnings,
     } in rows
     {
         let mut cells = vec![
@@ -300,6 +303,7 @@ fn velocity_csv(out: &mut dyn Write, rows: &[VelocityRow], bands: bool) -> anyho
                 opt_num(ct.map(|c| c[1])),
             ]);
         }
+        cells.push(output::warnings_cell(warnings));
         csv_row(out, &cells)?;
     }
     Ok(())
