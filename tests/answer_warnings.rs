@@ -255,3 +255,67 @@ fn every_answer_and_every_format_carries_the_radius_warning() {
         assert!(o.stdout.starts_with("t,"), "{cmd:?}");
     }
 }
+
+/// `map` said nothing of cells past the radius. Its warning counts the cells whose peak
+/// indentation (from each cell's peak force through the shared loading branch) passes R,
+/// and `run` at each cell, another path, must agree on the count and the deepest.
+#[test]
+fn map_counts_the_cells_past_the_radius_as_run_finds_them() {
+    for law in ["linear", "hertz", "elastic-plastic"] {
+        let base = ["--preset", "superball", "--law", law, "--v0", "45"];
+        let axes = ["--lambda", "0.1:10:3", "--zeta", "0.01:1:3"];
+        let v = json(&[&["map"][..], &base, &axes, &["--format", "json"]].concat());
+        let (mut past, mut deepest) = (0, 0.0f64);
+        for row in v["rows"].as_array().unwrap() {
+            let (l, z) = (
+                row[0].as_f64().unwrap().to_string(),
+                row[1].as_f64().unwrap().to_string(),
+            );
+            let r = json(
+                &[
+                    &["run"][..],
+                    &base,
+                    &["--lambda", &l, "--zeta", &z, "--format", "json"],
+                ]
+                .concat(),
+            );
+            let z_m = f(&r, "max_indentation");
+            if z_m > 0.02155 {
+                past += 1;
+                deepest = deepest.max(z_m);
+            }
+        }
+        let w = v["warnings"].as_array().unwrap();
+        assert!(
+            past > 0 && past < 9,
+            "{law}: the grid should straddle R ({past} of 9)"
+        );
+        assert_eq!(w.len(), 1, "{law}: {w:?}");
+        let said = w[0].as_str().unwrap();
+        assert!(
+            said.contains(&format!("in {past} of 9 cells")),
+            "{law}: {said}"
+        );
+        let up_to = format!("up to {} mm", bouncelab::text::sig(deepest * 1e3, 4));
+        assert!(said.contains(&up_to), "{law}: {said} against {up_to}");
+        // the CSV says it on stderr
+        let o = bl(&[&["map"][..], &base, &axes].concat());
+        assert!(
+            o.stderr.contains(&format!("in {past} of 9 cells")),
+            "{law}: {}",
+            o.stderr
+        );
+    }
+    let calm = json(&[
+        "map",
+        "--preset",
+        "superball",
+        "--format",
+        "json",
+        "--lambda",
+        "0.1:10:3",
+        "--zeta",
+        "0.01:1:3",
+    ]);
+    assert_eq!(calm["warnings"], serde_json::json!([]));
+}

@@ -24,6 +24,47 @@ pub fn indentation_warning(z_m: f64, radius: f64) -> Option<String> {
     })
 }
 
+/// The cells of a dimensional `map` whose peak indentation passes `radius` (m): each cell's
+/// z_m from its peak force through the loading branch, which the map's cells share (λ and ζ
+/// move K_r and c, never m, K_p, K_h, z_p or v0; `Contact::loading_indentation`). One
+/// warning naming how many cells and the largest z_m; `None` when none passes, for a
+/// normalized map, or with no radius known (NaN). tests/answer_warnings.rs.
+pub fn map_indentation_warning(map: &crate::map::Map, radius: f64) -> Option<String> {
+    let spec = &map.spec;
+    if spec.normalized || !radius.is_finite() {
+        return None;
+    }
+    let p = &spec.base;
+    let n = p.normalized();
+    let contact = crate::model::contact::Contact {
+        law: spec.law,
+        zp_bar: n.zp_bar,
+        kappa: n.kappa,
+    };
+    // the normalized scales: F̄ = F/(K_p v0/ω0), z = z̄ v0/ω0 (docs/model.md §5)
+    let length = p.v0 / p.omega0();
+    let z_m = |f: f64| contact.loading_indentation(f / (p.k_p * length)) * length;
+    let past: Vec<f64> = map
+        .cells()
+        .iter()
+        .flatten()
+        .map(|c| z_m(c.max_force))
+        .filter(|&z| z > radius)
+        .collect();
+    let deepest = past.iter().copied().fold(f64::NAN, f64::max);
+    (!past.is_empty()).then(|| {
+        format!(
+            "peak indentation exceeds the ball's radius {} mm in {} of {} cells (up to {} mm): \
+             outside the model's range there (the contact laws assume a deformation small \
+             against the ball)",
+            sig(radius * 1e3, 4),
+            past.len(),
+            map.cells().len(),
+            sig(deepest * 1e3, 4)
+        )
+    })
+}
+
 impl Ball {
     /// The ball's radius, m (its preset's measured radius; NaN for a ball that is no preset).
     pub fn radius(&self) -> f64 {

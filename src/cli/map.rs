@@ -71,6 +71,8 @@ pub struct MapBall {
     /// The preset's own (λ, ζ), marked on the picture.
     pub own: Option<(f64, f64)>,
     pub v0: f64,
+    /// The preset's radius, m (NaN for the normalized ball): the map's warnings.
+    pub radius: f64,
 }
 
 /// The map's ball and axes from the options, each checked (exit 2 naming the flag).
@@ -95,6 +97,7 @@ pub fn spec(a: &MapArgs) -> anyhow::Result<MapBall> {
             preset: None,
             own: None,
             v0: 1.0,
+            radius: f64::NAN,
         });
     }
     let args = BallArgs {
@@ -116,6 +119,7 @@ pub fn spec(a: &MapArgs) -> anyhow::Result<MapBall> {
         preset: b.name.clone(),
         own: Some((n.lambda, n.zeta)),
         v0: b.params.v0,
+        radius: b.radius(),
     })
 }
 
@@ -133,9 +137,12 @@ pub fn run(a: &MapArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         super::outputs::check(&[path.as_path()], a.force)?;
     }
     let map = super::budget::map(ball.spec.clone())?;
+    let warnings: Vec<String> = crate::api::map_indentation_warning(&map, ball.radius)
+        .into_iter()
+        .collect();
     let text = match a.format {
         MapFormat::Csv => csv(&map, targets.as_ref()),
-        MapFormat::Json => json(&map, &ball, targets.as_ref())?,
+        MapFormat::Json => json(&map, &ball, targets.as_ref(), &warnings)?,
         MapFormat::Svg => {
             let view = crate::figure::svg_map::View {
                 quantity: Quantity::Cor,
@@ -149,6 +156,10 @@ pub fn run(a: &MapArgs, out: &mut dyn Write) -> anyhow::Result<()> {
             crate::figure::svg_map::render(&map, &view)?
         }
     };
+    // JSON carries them; CSV rows and the picture have no place for them: stderr
+    if a.format != MapFormat::Json {
+        super::output::warnings_to_stderr(&warnings);
+    }
     match &a.out {
         Some(path) => super::figure::write_file(path, &text, a.force),
         None => Ok(out.write_all(text.as_bytes())?),
@@ -173,6 +184,9 @@ struct Doc<'a> {
     iso_cor: Vec<IsoLine>,
     /// The boundary of the feasible region, as [λ, ζ] polylines.
     feasible_outline: Vec<Vec<(f64, f64)>>,
+    /// What the caller should know ([`crate::api::map_indentation_warning`]); `[]` when
+    /// nothing.
+    warnings: &'a [String],
 }
 
 #[derive(Serialize)]
@@ -181,7 +195,12 @@ struct IsoLine {
     lines: Vec<Vec<(f64, f64)>>,
 }
 
-fn json(map: &Map, ball: &MapBall, targets: Option<&Targets>) -> anyhow::Result<String> {
+fn json(
+    map: &Map,
+    ball: &MapBall,
+    targets: Option<&Targets>,
+    warnings: &[String],
+) -> anyhow::Result<String> {
     let head = header(map.spec.normalized, targets.is_some());
     let v = |x: f64| {
         if x.is_finite() {
@@ -241,6 +260,7 @@ fn json(map: &Map, ball: &MapBall, targets: Option<&Targets>) -> anyhow::Result<
         rows,
         iso_cor,
         feasible_outline,
+        warnings,
     };
     let mut s = super::output::json_string(&doc)?;
     s.push('\n');
