@@ -319,3 +319,46 @@ fn map_counts_the_cells_past_the_radius_as_run_finds_them() {
     ]);
     assert_eq!(calm["warnings"], serde_json::json!([]));
 }
+
+/// `mc` warned only of its quantiles' intervals; a Monte Carlo around a ball pressed past
+/// its radius now says so, at the nominal parameters (the samples' indentations are not
+/// kept), in JSON and text, first.
+#[test]
+fn mc_says_when_its_nominal_ball_passes_the_radius() {
+    let args = [
+        "mc",
+        "--preset",
+        "table-tennis",
+        "--v0",
+        "100",
+        "--vary",
+        "k_p=5%",
+        "--samples",
+        "400",
+        "--seed",
+        "1",
+    ];
+    let v = json(&[&args[..], &["--format", "json"]].concat());
+    let w = v["warnings"].as_array().unwrap();
+    assert_eq!(w.len(), 1, "{w:?}");
+    let said = w[0].as_str().unwrap();
+    assert!(
+        said.starts_with("at the nominal parameters: peak indentation 23.13 mm"),
+        "{said}"
+    );
+    assert!(ok(&args).contains(&format!("warning: {said}")));
+    let calm = json(&[
+        "mc",
+        "--preset",
+        "table-tennis",
+        "--vary",
+        "k_p=5%",
+        "--samples",
+        "400",
+        "--seed",
+        "1",
+        "--format",
+        "json",
+    ]);
+    assert_eq!(calm["warnings"], serde_json::json!([]));
+}

@@ -154,9 +154,24 @@ impl Ball {
     }
 }
 
-/// The warnings of a run's statistics (the three quantities').
-fn stats_warnings(st: &McStats) -> Vec<String> {
-    crate::analysis::mc::interval_warnings(&[&st.cor, &st.max_force, &st.contact_time])
+impl Ball {
+    /// The warnings of a Monte Carlo run of this ball with statistics `st`: those of its
+    /// impact at the nominal parameters ([`Ball::warnings`]: a peak indentation beyond the
+    /// radius, said "at the nominal parameters"; the samples' own indentations are not
+    /// kept), then the quantiles too far in the tail for the samples to give their interval
+    /// an end (`analysis::mc::interval_warnings`). The JSON, the text and Python say these.
+    pub fn mc_warnings(&self, st: &McStats) -> Vec<String> {
+        let nominal = self.impact().map(|r| self.warnings(&r)).unwrap_or_default();
+        nominal
+            .into_iter()
+            .map(|w| format!("at the nominal parameters: {w}"))
+            .chain(crate::analysis::mc::interval_warnings(&[
+                &st.cor,
+                &st.max_force,
+                &st.contact_time,
+            ]))
+            .collect()
+    }
 }
 
 /// The correlations given, as a JSON object `{"k_p:c": 0.5, …}`.
@@ -230,7 +245,7 @@ impl<'a> McReport<'a> {
             correlate: spec.correlation.as_ref().map(|c| CorrMap(&c.pairs)),
             no_rebound: summary.no_rebound,
             stats: &summary.stats,
-            warnings: stats_warnings(&summary.stats),
+            warnings: ball.mc_warnings(&summary.stats),
         }
     }
 }

@@ -8,8 +8,8 @@ use super::budget::Progress;
 use super::output::{self, csv_row, given, human, num, table};
 use super::outputs::{check as check_writable, report_then_commit};
 use crate::analysis::mc::{
-    Dist, McError, McSpec, McStats, PROBS, Sampler, Samples, Stats, interval_warnings,
-    parse_correlate, parse_vary, summary,
+    Dist, McError, McSpec, McStats, PROBS, Sampler, Samples, Stats, parse_correlate, parse_vary,
+    summary,
 };
 use crate::analysis::work;
 use crate::api::{Ball, McReport};
@@ -286,6 +286,7 @@ fn text(
     }
     table(out, "  ", &rows)?;
     intervals(out, st)?;
+    output::warning_lines(out, &ball.mc_warnings(st))?;
     if no_rebound > 0 {
         writeln!(
             out,
@@ -339,8 +340,5 @@ fn intervals(out: &mut dyn Write, st: &McStats) -> std::io::Result<()> {
         rows.push(r);
     }
     table(out, "  ", &rows)?;
-    for w in interval_warnings(&[&st.cor, &st.max_force, &st.contact_time]) {
-        writeln!(out, "warning: {w}")?;
-    }
     Ok(())
 }
