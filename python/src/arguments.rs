@@ -6,6 +6,7 @@ use crate::value_error;
 use bouncelab::ContactLaw;
 use bouncelab::preset::ParamSource;
 use numpy::{PyArray1, PyReadonlyArray1};
+use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
 
 /// History samples when `history` is asked for; `samples` without it is refused, as the
@@ -21,11 +22,16 @@ pub(crate) fn history_samples(history: bool, samples: Option<usize>) -> PyResult
 }
 
 /// The `free` parameters' names: a list of them, or the command line's `--free` text
-/// ("k_r,z_p"); `None` when not given.
+/// ("k_r,z_p"); `None` when not given. Anything else is a `TypeError` naming `free`.
 pub(crate) fn free_names(free: Option<&Bound<'_, PyAny>>) -> PyResult<Option<Vec<String>>> {
     free.map(|f| match f.extract::<String>() {
         Ok(text) => Ok(text.split(',').map(str::to_string).collect()),
-        Err(_) => f.extract::<Vec<String>>(),
+        Err(_) => f.extract::<Vec<String>>().map_err(|e| {
+            PyTypeError::new_err(format!(
+                "invalid free: {} (expected a list of names or the text \"k_r,z_p\")",
+                e.value(f.py())
+            ))
+        }),
     })
     .transpose()
 }

@@ -100,6 +100,11 @@ def test_free_takes_the_command_lines_text_as_batch_does():
     b = bouncelab.fit_cor_table(v, e, free=["k_r", "z_p"])
     assert a["free"] == b["free"] == ["k_r", "z_p"]
     assert a["fitted"]["z_p"]["value"] == b["fitted"]["z_p"]["value"]
+    for bad in (1, [1]):
+        with pytest.raises(TypeError, match="^invalid free: .*expected a list of names"):
+            bouncelab.fit_cor_table(v, e, free=bad)
+        with pytest.raises(TypeError, match="^invalid free: "):
+            bouncelab.batch("lot.csv", preset="tennis", free=bad)
 
 
 # ---- the rows of the arrays, counted as the arrays count them
