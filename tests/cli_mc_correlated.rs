@@ -199,4 +199,20 @@ fn a_fitted_preset_is_sampled_from_its_covariance() {
     assert_bad(&o, &["invalid vary fit: --dist does not go with it"]);
     let o = bl_at(dir.path(), &["mc", "--preset", "golf", "--vary", "fit"]);
     assert_bad(&o, &["invalid vary fit: golf", "carries no fit"]);
+    // a preset saved from an exact fit (one drop, K_r) has no covariance: the message said
+    // a preset saved by fit --save carries one, of a preset saved by fit --save
+    let one = [
+        "fit",
+        "--preset",
+        "tennis",
+        "--drop-height",
+        "2.54",
+        "--rebound-height",
+        "1.4625",
+        "--save",
+        "onedrop",
+    ];
+    ok_at(dir.path(), &one);
+    let o = bl_at(dir.path(), &["mc", "--preset", "onedrop", "--vary", "fit"]);
+    assert_bad(&o, &["carries no fit", "an exact fit has no covariance"]);
 }

@@ -188,6 +188,34 @@ fn a_parameter_the_data_cannot_pin_is_no_answer_exit_1() {
     assert_eq!(v["not_pinned"], serde_json::json!([]));
 }
 
+/// An exact fit (as many data as parameters) of k_r and z_p to two CORs at speeds the
+/// superball does not flatten at: any z_p past the peak indentation solves them. It was
+/// `identified: true`, exit 0, beside its own warning "z_p is not identifiable".
+#[test]
+fn an_exact_fit_does_not_pin_a_parameter_its_data_do_not_see() {
+    let (_dir, path) = file_with(b"v0,cor\n1,0.75\n2,0.75\n");
+    let args = [
+        "fit",
+        "--cor-table",
+        &path,
+        "--free",
+        "k_r,z_p",
+        "--format",
+        "json",
+    ];
+    let o = bl(&args);
+    assert_eq!(o.code, 1, "{}", o.stderr);
+    let v: Value = serde_json::from_str(&o.stdout).unwrap();
+    assert_eq!(v["exact"], true, "{v}");
+    assert_eq!(v["identified"], false, "{v}");
+    assert_eq!(v["not_pinned"], serde_json::json!(["z_p"]), "{v}");
+    assert!(
+        o.stderr.contains("z_p not pinned by the data"),
+        "{}",
+        o.stderr
+    );
+}
+
 /// One drop of a golf ball, 1 m to 0.5 m: e = 0.707, below the 0.813 the model reaches at
 /// λ = 0. It was "exact", converged, exit 0, with K_r on its bound.
 #[test]

@@ -149,6 +149,24 @@ fn the_drop_view_shows_its_verdict_and_rebounds_at_small_sizes() {
     }
 }
 
+/// The football's verdict, `fifa-quality-pro PASS margin +0.225 m`, is one column wider
+/// than the readout at 120 × 40: the readout's wrap put the `m` alone on the next line. It
+/// breaks between fields, the value and its unit kept together, at every size.
+#[test]
+fn the_verdict_keeps_its_margin_with_its_unit() {
+    for (w, h) in [(60, 20), (80, 24), (100, 30), (120, 40), (200, 60)] {
+        let mut app = App::new(preset("football"), false);
+        app.update(Action::Resize(w, h));
+        press(&mut app, &[KeyCode::Char('d')]);
+        let s = screen_text(&draw(&app, w, h)).join("\n");
+        assert!(
+            s.contains("fifa-quality-pro PASS"),
+            "{w}×{h}: no verdict\n{s}"
+        );
+        assert!(s.contains("margin +0.225 m"), "{w}×{h}: margin\n{s}");
+    }
+}
+
 /// Issue 29 item 9: under reduced motion the ball at rest was an arc merged into the plate
 /// (one row of dots over it at 60×20). It is a whole circle standing on the plate: at least
 /// two rows of it above the plate's row, at every size.

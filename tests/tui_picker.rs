@@ -145,6 +145,16 @@ fn the_picker_scrolls_at_a_small_size() {
         screen.contains(&format!("▶{last}")),
         "the last preset is in view"
     );
+    // a description too long for the box is cut with "…", not by its border
+    let row = (0..16)
+        .map(|y| {
+            (1..49)
+                .map(|x| t.backend().buffer()[(x, y)].symbol())
+                .collect::<String>()
+        })
+        .find(|r| r.starts_with("   Tennis"))
+        .expect("tennis' description in view");
+    assert!(row.ends_with('…'), "{row}");
     insta::assert_snapshot!(t.backend());
     press(&mut app, &[KeyCode::Home, KeyCode::Down], dir.path());
     assert_eq!(picker_of(&app).selected, 1);

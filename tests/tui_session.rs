@@ -94,6 +94,20 @@ fn a_bad_session_is_one_line_with_file_line_and_column_exit_2() {
         ),
         (format!("colour = 1\n{text}"), "unknown field"),
         (text.replace("version = 2", "version = 7"), "version 7"),
+        // it was taken, and the readout said "α_max 0.853 mm > R -1000 mm (×-0.000853)"
+        (
+            text.lines()
+                .map(|l| {
+                    if l.starts_with("radius = ") {
+                        "radius = -1"
+                    } else {
+                        l
+                    }
+                })
+                .collect::<Vec<_>>()
+                .join("\n"),
+            "invalid radius: -1 (must not be negative)",
+        ),
     ];
     for (i, (bad, why)) in cases.iter().enumerate() {
         let file = dir.path().join(format!("s{i}.toml"));
@@ -103,7 +117,10 @@ fn a_bad_session_is_one_line_with_file_line_and_column_exit_2() {
         let err = o.stderr.trim();
         assert_eq!(err.lines().count(), 1, "{err}");
         assert!(err.contains(why), "{why}: {err}");
-        if *why != "unknown law" {
+        if !["unknown law", "invalid radius"]
+            .iter()
+            .any(|w| why.starts_with(w))
+        {
             // the field's place in the file: FILE:LINE:COLUMN
             let at = format!("{}:", file.display());
             let rest = &err[err.find(&at).expect(err) + at.len()..];

@@ -156,8 +156,10 @@ def sweep_velocity(
     speeds: Optional[Floats] = None,
     law: Optional[Law] = None,
     params: Optional[ParamSet] = None,
-) -> dict[str, Array]:
-    """COR, F_m, t_f, z_f against v0 (columns of ``bouncelab sweep velocity``)."""
+) -> dict[str, Any]:
+    """COR, F_m, t_f, z_f against v0 (columns of ``bouncelab sweep velocity``), and the JSON's
+    ``max_indentation`` (an array) and ``warnings`` (a list of lists of str, one a speed: a
+    peak indentation past the ball's radius)."""
 
 def fit(
     cor: float,
@@ -209,7 +211,7 @@ def fit_trace(
     force: Floats,
     *,
     preset: str = "superball",
-    free: Optional[Sequence[FreeParam]] = None,
+    free: Optional[Union[str, Sequence[FreeParam]]] = None,
     v0: Optional[float] = None,
     law: Optional[Law] = None,
     params: Optional[ParamSet] = None,
@@ -225,7 +227,7 @@ def fit_cor_table(
     max_force: Optional[Floats] = None,
     contact_time: Optional[Floats] = None,
     preset: str = "superball",
-    free: Optional[Sequence[FreeParam]] = None,
+    free: Optional[Union[str, Sequence[FreeParam]]] = None,
     law: Optional[Law] = None,
     params: Optional[ParamSet] = None,
 ) -> MultiFit:
@@ -237,7 +239,7 @@ def fit_drops(
     rebound_heights: Floats,
     *,
     preset: str = "superball",
-    free: Optional[Sequence[FreeParam]] = None,
+    free: Optional[Union[str, Sequence[FreeParam]]] = None,
     drag_coefficient: Optional[float] = None,
     air_density: float = 1.204,
     law: Optional[Law] = None,
@@ -403,10 +405,12 @@ def oblique(
     law: Optional[Law] = None,
     params: Optional[ParamSet] = None,
     history: bool = False,
-    samples: int = 400,
+    samples: Optional[int] = None,
 ) -> ObliqueImpact:
     """One oblique impact with friction and spin (docs/oblique.md), as ``bouncelab oblique``:
-    angle to the surface in degrees (0 < angle ≤ 90), spin in rad/s (> 0 topspin)."""
+    angle to the surface in degrees (0 < angle ≤ 90), spin in rad/s (> 0 topspin); with
+    ``history``, ``samples`` of it (2 … 100000, default 400; refused without ``history``, as
+    ``run`` refuses it)."""
 
 Dist = Literal["normal", "uniform", "lognormal"]
 

@@ -6,6 +6,7 @@ use crate::value_error;
 use bouncelab::ContactLaw;
 use bouncelab::preset::ParamSource;
 use numpy::{PyArray1, PyReadonlyArray1};
+use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
 
 /// History samples when `history` is asked for; `samples` without it is refused, as the
@@ -18,6 +19,21 @@ pub(crate) fn history_samples(history: bool, samples: Option<usize>) -> PyResult
         ))),
         (_, n) => Ok(n.unwrap_or(400)),
     }
+}
+
+/// The `free` parameters' names: a list of them, or the command line's `--free` text
+/// ("k_r,z_p"); `None` when not given. Anything else is a `TypeError` naming `free`.
+pub(crate) fn free_names(free: Option<&Bound<'_, PyAny>>) -> PyResult<Option<Vec<String>>> {
+    free.map(|f| match f.extract::<String>() {
+        Ok(text) => Ok(text.split(',').map(str::to_string).collect()),
+        Err(_) => f.extract::<Vec<String>>().map_err(|e| {
+            PyTypeError::new_err(format!(
+                "invalid free: {} (expected a list of names or the text \"k_r,z_p\")",
+                e.value(f.py())
+            ))
+        }),
+    })
+    .transpose()
 }
 
 /// A contact law by its command-line name: linear, elastic-plastic, hertz.
@@ -36,15 +52,26 @@ pub(crate) fn source(name: &str) -> PyResult<ParamSource> {
     }
 }
 
-/// A list of floats from a numpy array, a sequence, or one number.
-pub(crate) fn floats(obj: &Bound<'_, PyAny>) -> PyResult<Vec<f64>> {
+/// A list of floats from a numpy array, a sequence, or one number: the argument `name`, which
+/// an error names (a 2-D array or a string is neither, and PyO3's own message would not say
+/// which argument it was about).
+pub(crate) fn floats(obj: &Bound<'_, PyAny>, name: &str) -> PyResult<Vec<f64>> {
     if let Ok(a) = obj.extract::<PyReadonlyArray1<'_, f64>>() {
         return Ok(a.as_array().to_vec());
     }
     if let Ok(x) = obj.extract::<f64>() {
         return Ok(vec![x]);
     }
-    obj.extract::<Vec<f64>>()
+    obj.extract::<Vec<f64>>().map_err(|e| {
+        let py = obj.py();
+        PyErr::from_type(
+            e.get_type(py),
+            format!(
+                "invalid {name}: {} (expected one number, a sequence of numbers or a 1-D array)",
+                e.value(py)
+            ),
+        )
+    })
 }
 
 pub(crate) fn array<'py>(py: Python<'py>, v: Vec<f64>) -> Py<PyArray1<f64>> {

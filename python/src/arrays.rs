@@ -10,7 +10,7 @@ use bouncelab::analysis::work;
 use bouncelab::api::{Columns, first_pass};
 use bouncelab::model::params::ImpactParams;
 use numpy::{PyArray1, PyArrayMethods, PyReadonlyArray1, PyUntypedArrayMethods};
-use pyo3::exceptions::PyValueError;
+use pyo3::exceptions::{PyOverflowError, PyTypeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyTuple};
 
@@ -30,16 +30,48 @@ impl Column<'_> {
     }
 }
 
-/// Each argument as a float64 array, and the shape they broadcast to (numpy's rules and
-/// errors).
+/// The argument `name` as a float64 array. Only numbers are taken (numpy's kinds b, i, u, f,
+/// and objects that convert): a complex array would lose its imaginary part with no more than
+/// numpy's `ComplexWarning`, a string array would be read as numbers; both raise `TypeError`
+/// naming the argument, and a conversion that fails raises numpy's error naming it.
+fn real_array<'py>(
+    np: &Bound<'py, PyModule>,
+    name: &str,
+    a: &Bound<'py, PyAny>,
+) -> PyResult<Bound<'py, PyAny>> {
+    // numpy's error, of its own type, naming the argument (an OverflowError is left to the
+    // package's boundary, which names it with its value: bouncelab/_boundary.py)
+    let named = |e: PyErr| {
+        let py = a.py();
+        if e.is_instance_of::<PyOverflowError>(py) {
+            return e;
+        }
+        PyErr::from_type(e.get_type(py), format!("invalid {name}: {}", e.value(py)))
+    };
+    let any = np.call_method1("asarray", (a,)).map_err(named)?;
+    let dtype = any.getattr("dtype")?;
+    let kind: String = dtype.getattr("kind")?.extract()?;
+    if !"biufO".contains(kind.as_str()) {
+        return Err(PyTypeError::new_err(format!(
+            "invalid {name}: an array of {} (expected real numbers)",
+            dtype.str()?
+        )));
+    }
+    np.call_method1("asarray", (any, "float64")).map_err(named)
+}
+
+/// Each argument (named by `names`) as a float64 array, and the shape they broadcast to
+/// (numpy's rules and errors).
 fn shapes<'py>(
     py: Python<'py>,
+    names: &[&str],
     args: &[Bound<'py, PyAny>],
 ) -> PyResult<(Vec<Bound<'py, PyAny>>, Bound<'py, PyTuple>)> {
     let np = py.import("numpy")?;
-    let arrays: Vec<Bound<'py, PyAny>> = args
+    let arrays: Vec<Bound<'py, PyAny>> = names
         .iter()
-        .map(|a| np.call_method1("asarray", (a, "float64")))
+        .zip(args)
+        .map(|(name, a)| real_array(&np, name, a))
         .collect::<PyResult<_>>()?;
     let each: Vec<Bound<'py, PyAny>> = arrays
         .iter()
@@ -96,7 +128,8 @@ pub(crate) fn impacts<'py>(
     let inf = f64::INFINITY.into_pyobject(py)?.into_any();
     let nan = f64::NAN.into_pyobject(py)?.into_any();
     let args = [m, k_p, c, k_r, v0, z_p.unwrap_or(inf), k_h.unwrap_or(nan)];
-    let (arrays, shape) = shapes(py, &args)?;
+    let names = ["m", "k_p", "c", "k_r", "v0", "z_p", "k_h"];
+    let (arrays, shape) = shapes(py, &names, &args)?;
     let n: usize = shape
         .iter()
         .map(|d| d.extract::<usize>())

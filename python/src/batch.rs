@@ -143,13 +143,7 @@ pub(crate) fn batch<'py>(
 ) -> PyResult<Bound<'py, PyAny>> {
     let ball = preset_ball(preset, params, law, v0)?;
     let standard = self::standard(standard, &ball)?;
-    // a list of names, or the command line's comma-separated text
-    let free: Option<Vec<String>> = free
-        .map(|f| match f.extract::<String>() {
-            Ok(text) => Ok(text.split(',').map(str::to_string).collect()),
-            Err(_) => f.extract::<Vec<String>>(),
-        })
-        .transpose()?;
+    let free = crate::free_names(free)?;
     let free = free
         .as_deref()
         .map(parse_free)

@@ -97,6 +97,15 @@ pub(crate) fn collide(
     law: Option<&str>,
     params: Option<&str>,
 ) -> PyResult<Collision> {
+    if target_damping != 0.0 && !target_damping.is_nan() && target_stiffness == f64::INFINITY {
+        // refused as the command line refuses --target-damping without --target-stiffness:
+        // a dashpot beside a rigid surface has no effect (docs/targets.md)
+        return Err(crate::value_error(format!(
+            "invalid target_damping: {} (it needs target_stiffness: a dashpot beside a rigid \
+             surface has no effect)",
+            bouncelab::text::number(target_damping)
+        )));
+    }
     let ball = preset_ball(preset, params, law, v0)?;
     let surface = (target_stiffness, target_damping);
     let report = match (target_mass, target_preset) {

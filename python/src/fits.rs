@@ -37,16 +37,23 @@ fn csv(header: &[&str], rows: usize, columns: &[&dyn Fn(usize) -> Option<f64>]) 
     text
 }
 
-/// A reader's error about row `line − 1` of the arrays: "`what` row N: message".
+/// A reader's error about the arrays: "`what` row N: message", N the index into the arrays
+/// (row 0 the first, as `impacts`' "element N" and `fit_oblique`'s "oblique row N" count; the
+/// text's line `line` holds row `line − 2`, under its header).
 fn data_error(what: &str, e: MeasuredError) -> PyErr {
     value_error(format!(
         "{what} row {}: {}",
-        e.line.saturating_sub(1),
+        e.line.saturating_sub(2),
         e.message
     ))
 }
 
+/// Arrays `names` of lengths `a` and `b`: the same, and not empty (the readers would say "no
+/// data rows after the header" of the text they were turned into).
 fn same_length(names: [&str; 2], a: usize, b: usize) -> PyResult<()> {
+    if a == 0 {
+        return Err(value_error(format!("invalid {}: no value given", names[0])));
+    }
     if a != b {
         return Err(value_error(format!(
             "{} and {} differ in length ({a} and {b})",
@@ -160,9 +167,13 @@ fn report<'py>(
     Ok(d)
 }
 
-/// The `free` names, or the library's default for the data.
-fn free_list(free: Option<Vec<String>>) -> PyResult<Option<Vec<bouncelab::analysis::fit::Param>>> {
-    free.map(|names| parse_free(&names).map_err(|e| value_error(e.to_string())))
+/// The `free` names (a list, or the command line's "k_r,z_p" as `batch` takes it), or the
+/// library's default for the data.
+fn free_list(
+    free: Option<&Bound<'_, PyAny>>,
+) -> PyResult<Option<Vec<bouncelab::analysis::fit::Param>>> {
+    crate::free_names(free)?
+        .map(|names| parse_free(&names).map_err(|e| value_error(e.to_string())))
         .transpose()
 }
 
@@ -177,12 +188,12 @@ pub fn fit_trace<'py>(
     time: &Bound<'py, PyAny>,
     force: &Bound<'py, PyAny>,
     preset: &str,
-    free: Option<Vec<String>>,
+    free: Option<&Bound<'py, PyAny>>,
     v0: Option<f64>,
     law: Option<&str>,
     params: Option<&str>,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let (t, f) = (floats(time)?, floats(force)?);
+    let (t, f) = (floats(time, "time")?, floats(force, "force")?);
     same_length(["time", "force"], t.len(), f.len())?;
     let text = csv(
         &["time_s", "force_N"],
@@ -190,6 +201,9 @@ pub fn fit_trace<'py>(
         &[&|i| Some(t[i]), &|i| Some(f[i])],
     );
     let trace = Trace::parse(&text).map_err(|e| data_error("trace", e))?;
+    // a trace with no pulse, named by the row of its largest force, before the fit would
+    // name it by the line and column of the text above (`2:5: empty pulse …`)
+    trace.summary().map_err(|e| data_error("trace", e))?;
     let free = free_list(free)?;
     let ball = preset_ball(preset, params, law, v0)?;
     let fit = crate::interrupt::detach_watched(py, |w| {
@@ -212,16 +226,16 @@ pub fn fit_cor_table<'py>(
     max_force: Option<&Bound<'py, PyAny>>,
     contact_time: Option<&Bound<'py, PyAny>>,
     preset: &str,
-    free: Option<Vec<String>>,
+    free: Option<&Bound<'py, PyAny>>,
     law: Option<&str>,
     params: Option<&str>,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let (v, e) = (floats(v0)?, floats(cor)?);
+    let (v, e) = (floats(v0, "v0")?, floats(cor, "cor")?);
     same_length(["v0", "cor"], v.len(), e.len())?;
     let optional = |name: &str, a: Option<&Bound<'py, PyAny>>| -> PyResult<Vec<f64>> {
         match a {
             Some(a) => {
-                let x = floats(a)?;
+                let x = floats(a, name)?;
                 same_length(["v0", name], v.len(), x.len())?;
                 Ok(x)
             }
@@ -268,14 +282,17 @@ pub fn fit_drops<'py>(
     drop_heights: &Bound<'py, PyAny>,
     rebound_heights: &Bound<'py, PyAny>,
     preset: &str,
-    free: Option<Vec<String>>,
+    free: Option<&Bound<'py, PyAny>>,
     drag_coefficient: Option<f64>,
     air_density: f64,
     law: Option<&str>,
     params: Option<&str>,
     rebound_height_sd: Option<f64>,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let (h, r) = (floats(drop_heights)?, floats(rebound_heights)?);
+    let (h, r) = (
+        floats(drop_heights, "drop_heights")?,
+        floats(rebound_heights, "rebound_heights")?,
+    );
     same_length(["drop_heights", "rebound_heights"], h.len(), r.len())?;
     let free = free_list(free)?;
     let ball = preset_ball(preset, params, law, None)?;

@@ -1,7 +1,8 @@
 //! `oblique`: one oblique impact with friction and spin (docs/oblique.md), as `bouncelab
 //! oblique --format json`: the same fields, by the same names.
 
-use crate::{array, error, preset_ball};
+use crate::{array, error, history_samples, preset_ball};
+use bouncelab::BallError;
 use bouncelab::api::ObliqueSpec;
 use bouncelab::oblique::ObliqueResponse;
 use numpy::PyArray1;
@@ -104,7 +105,7 @@ fn build(py: Python<'_>, r: ObliqueResponse) -> PyResult<ObliqueImpact> {
 /// [--spin W] --friction MU [--tangential-stiffness K_T] [--inertia-factor KAPPA] [--law L]
 /// [--history --samples N]`.
 #[pyfunction]
-#[pyo3(signature = (preset="superball", *, angle, friction, v0=None, spin=0.0, tangential_stiffness=None, inertia_factor=None, law=None, params=None, history=false, samples=400))]
+#[pyo3(signature = (preset="superball", *, angle, friction, v0=None, spin=0.0, tangential_stiffness=None, inertia_factor=None, law=None, params=None, history=false, samples=None))]
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn oblique(
     py: Python<'_>,
@@ -118,8 +119,14 @@ pub(crate) fn oblique(
     law: Option<&str>,
     params: Option<&str>,
     history: bool,
-    samples: usize,
+    samples: Option<usize>,
 ) -> PyResult<ObliqueImpact> {
+    // `run`'s rule: samples only with a history, and at least two of them (the library's
+    // `oblique` reads 0 as "no history", which history=True, samples=0 must not ask for)
+    let samples = history_samples(history, samples)?;
+    if history && samples < 2 {
+        return Err(error(BallError::Samples(samples)));
+    }
     let ball = preset_ball(preset, params, law, v0)?;
     let spec = ObliqueSpec {
         v: v0,

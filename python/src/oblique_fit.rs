@@ -68,7 +68,7 @@ fn rows(
     let mut cols = Vec::new();
     for (k, a) in arrays.iter().enumerate() {
         match a {
-            Some(a) => cols.push(floats(a)?),
+            Some(a) => cols.push(floats(a, COLUMNS[k])?),
             None if k == 5 => break,
             None => {
                 return Err(value_error(format!(
@@ -78,6 +78,10 @@ fn rows(
                 )));
             }
         }
+    }
+    if cols[0].is_empty() {
+        // not the reader's "no data rows after the header" of the text made of them
+        return Err(value_error("invalid v0: no value given".into()));
     }
     if let Some(k) = cols.iter().position(|c| c.len() != cols[0].len()) {
         return Err(value_error(format!(

@@ -25,7 +25,11 @@ pub(crate) fn sweep_zeta<'py>(
     zetas: &Bound<'py, PyAny>,
     law: &str,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let (lambdas, zetas, law) = (floats(lambdas)?, floats(zetas)?, self::law(law)?);
+    let (lambdas, zetas, law) = (
+        floats(lambdas, "lambdas")?,
+        floats(zetas, "zetas")?,
+        self::law(law)?,
+    );
     let rows = interrupt::detach_watched(py, |w| {
         bouncelab::api::sweep_zeta_watched(&lambdas, &zetas, law, w)
     })?;
@@ -47,7 +51,8 @@ pub(crate) fn sweep_zeta<'py>(
 /// COR, peak force, contact time and permanent indentation against impact speed for a preset,
 /// as `bouncelab sweep velocity`: a dict of numpy arrays with the CSV's columns (v0, cor,
 /// max_force, contact_time, permanent_indentation; NaN contact_time where the ball does not
-/// rebound). The GIL is released while the speeds run (in parallel).
+/// rebound), and the JSON's `max_indentation` and `warnings` (a list of lists, one a row).
+/// The GIL is released while the speeds run (in parallel).
 #[pyfunction]
 #[pyo3(signature = (preset="superball", speeds=None, law=None, params=None))]
 pub(crate) fn sweep_velocity<'py>(
@@ -59,7 +64,7 @@ pub(crate) fn sweep_velocity<'py>(
 ) -> PyResult<Bound<'py, PyDict>> {
     let ball = preset_ball(preset, params, law, None)?;
     let speeds = match speeds {
-        Some(s) => floats(s)?,
+        Some(s) => floats(s, "speeds")?,
         // the command line's default: 60 speeds from 0.1 to 3 times the preset's
         None => {
             bouncelab::analysis::sweep::lin_space(0.1 * ball.params.v0, 3.0 * ball.params.v0, 60)
@@ -75,6 +80,18 @@ pub(crate) fn sweep_velocity<'py>(
     d.set_item("max_force", col(|r| r.max_force))?;
     d.set_item("contact_time", col(|r| none_as_nan(r.contact_time)))?;
     d.set_item("permanent_indentation", col(|r| r.permanent_indentation))?;
+    // what `sweep velocity --format json` adds to the CSV's columns: each row's peak
+    // indentation and its warnings (one list a row: an indentation past the ball's radius)
+    d.set_item("max_indentation", col(|r| r.max_indentation))?;
+    let warnings: Vec<Vec<String>> = rows
+        .iter()
+        .map(|r| {
+            api::indentation_warning(r.max_indentation, ball.radius())
+                .into_iter()
+                .collect()
+        })
+        .collect();
+    d.set_item("warnings", warnings)?;
     // a fitted preset's 95 % intervals at each speed (docs/fitting.md), as the CSV's columns
     if let Some(fit) = ball.fit.as_ref().filter(|f| api::holds(&ball.params, f)) {
         let bands = py

@@ -143,7 +143,15 @@ def test_sweep_velocity_matches_the_stored_json():
     rows = json.loads(out)["rows"]
     speeds = [r["v0"] for r in rows]
     d = bouncelab.sweep_velocity("golf", speeds)
-    assert list(d) == ["v0", "cor", "max_force", "contact_time", "permanent_indentation"]
+    assert list(d) == [
+        "v0",
+        "cor",
+        "max_force",
+        "contact_time",
+        "permanent_indentation",
+        "max_indentation",
+        "warnings",
+    ]
     same({k: list(v) for k, v in d.items()}, {k: [r[k] for r in rows] for k in d})
 
 
@@ -223,8 +231,11 @@ def test_sweep_velocity_defaults_are_the_clis():
     lines = out.splitlines()
     expected = np.array([[float(x) if x else math.nan for x in l.split(",")] for l in lines[1:]])
     d = bouncelab.sweep_velocity("baseball")
-    assert list(d) == lines[0].split(",")
-    np.testing.assert_allclose(np.column_stack(list(d.values())), expected, rtol=1e-12, atol=0)
+    columns = lines[0].split(",")
+    # the CSV's columns, then the JSON's max_indentation and warnings
+    assert list(d) == columns + ["max_indentation", "warnings"]
+    got = np.column_stack([d[c] for c in columns])
+    np.testing.assert_allclose(got, expected, rtol=1e-12, atol=0)
 
 
 def test_a_user_preset_is_seen_as_the_cli_sees_it(no_user_presets):

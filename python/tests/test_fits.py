@@ -197,13 +197,13 @@ def test_too_few_points_is_the_clis_message_without_its_option():
 
 
 def test_errors_of_the_arrays():
-    with pytest.raises(ValueError, match=r"^COR table row 2: COR 1.5 must lie in \[0, 1\]$"):
+    with pytest.raises(ValueError, match=r"^COR table row 1: COR 1.5 must lie in \[0, 1\]$"):
         bouncelab.fit_cor_table([1.0, 2.0], [0.5, 1.5])
-    with pytest.raises(ValueError, match=r"^trace row 2: time not increasing"):
+    with pytest.raises(ValueError, match=r"^trace row 1: time not increasing"):
         bouncelab.fit_trace([0.0, 0.0, 1.0], [0.0, 1.0, 0.0])
     with pytest.raises(ValueError, match=r"^time and force differ in length \(3 and 2\)$"):
         bouncelab.fit_trace([0.0, 1.0, 2.0], [0.0, 1.0])
-    with pytest.raises(ValueError, match=r"^COR table row 1: impact speed -1 must be positive"):
+    with pytest.raises(ValueError, match=r"^COR table row 0: impact speed -1 must be positive"):
         bouncelab.fit_cor_table([-1.0], [0.5])
 
 

@@ -118,7 +118,8 @@ impl Ball {
         let Some(fit) = &self.fit else {
             return Err(McError::Fit(format!(
                 "{} carries no fit to sample (a preset saved by `bouncelab fit … --save NAME` \
-                 does, under its own law and adopted parameters)",
+                 does, under its own law and adopted parameters, when its data outnumber the \
+                 parameters: an exact fit has no covariance)",
                 self.label()
             ))
             .into());

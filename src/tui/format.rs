@@ -57,15 +57,31 @@ pub fn stepped(x: f64, step: f64) -> String {
     rounded(x, digits)
 }
 
-/// An interval "[7.81e4, 1.17e5]": both ends to [`UNCERTAIN`] digits in one form, exponent
-/// form for both when either needs it.
+/// An interval "[7.81e4, 1.17e5]": both ends in one form (exponent form for both when
+/// either needs it), to [`UNCERTAIN`] digits, or more where the interval is narrow: as many
+/// as show its width to two digits, and a value's [`DIGITS`] for a zero width. Three digits
+/// made [70447.5, 70447.5] read "[70400, 70400]" beside its value "70450".
 pub fn interval(lo: f64, hi: f64) -> String {
-    let (a, b) = (rounded(lo, UNCERTAIN), rounded(hi, UNCERTAIN));
+    let digits = interval_digits(lo, hi);
+    let (a, b) = (rounded(lo, digits), rounded(hi, digits));
     if a.contains('e') == b.contains('e') || !lo.is_finite() || !hi.is_finite() {
         return format!("[{a}, {b}]");
     }
-    let e = |x: f64| format!("{:.*e}", UNCERTAIN - 1, x);
+    let e = |x: f64| format!("{:.*e}", digits - 1, x);
     format!("[{}, {}]", e(lo), e(hi))
+}
+
+/// The significant digits of [`interval`]'s ends.
+fn interval_digits(lo: f64, hi: f64) -> usize {
+    let mag = |v: f64| v.abs().log10().floor() as i32;
+    let (top, width) = (lo.abs().max(hi.abs()), hi - lo);
+    if !top.is_finite() || !width.is_finite() || top == 0.0 {
+        return UNCERTAIN;
+    }
+    if width <= 0.0 {
+        return DIGITS;
+    }
+    (mag(top) - mag(width) + 2).clamp(UNCERTAIN as i32, 15) as usize
 }
 
 /// The unit a quantity in `si` units is shown in, and the factor to it: lengths in mm,
@@ -221,6 +237,12 @@ mod tests {
         assert_eq!(value(f64::NAN), "—");
         assert_eq!(interval(78094.0, 1.17e5), "[7.81e4, 1.17e5]");
         assert_eq!(interval(0.25, 0.5), "[0.250, 0.500]");
+        // a narrow interval keeps the digits that tell its ends apart, and a zero-width one
+        // (an exact fit with no residual) reads as its value does
+        assert_eq!(interval(70350.2, 70546.1), "[70350, 70550]");
+        assert_eq!(interval(70447.53, 70447.53), "[70450, 70450]");
+        assert_eq!(value(70447.53), "70450");
+        assert_eq!(interval(1.23456e6, 1.23466e6), "[1.23456e6, 1.23466e6]");
         assert_eq!(stepped(1000.01, 0.01), "1000.01");
         assert_eq!(stepped(1000.0, 0.01), "1000.00");
         assert_eq!(stepped(3.12, 0.1), "3.120");

@@ -177,6 +177,9 @@ impl App {
             target_stiffness: b.target_stiffness,
             target_damping: b.target_damping,
         };
+        // the radius as `run --radius` checks it (it sets the validity check, z_m < R)
+        crate::model::params::check_positive(crate::model::params::Field::Radius, s.radius)
+            .map_err(|e| e.to_string())?;
         s.params.validate().map_err(|e| e.to_string())?;
         s.target().validate().map_err(|e| e.to_string())?;
         Ok(s)

@@ -107,7 +107,6 @@ fn fit_cor(
 ) -> Result<MultiFit, MultiFitError> {
     let p = CorProblem::new(*base, law, free.to_vec(), points, watch);
     too_few(p.count(), free.len())?;
-    check_scale(&p)?;
     let starts = p.starts();
     let run = fit_run_cost(points.len(), 0, law);
     let what = || {
@@ -119,6 +118,9 @@ fn fit_cor(
     };
     // (one start more: a table of mixed kinds is fitted again from the first minimum)
     let iterations = fit_iterations(run, free.len(), starts.len() + 1, law, what)?;
+    // after the work limit: the scale check is a model run over every row
+    // (tests/fit_work_limit.rs)
+    check_scale(&p)?;
     // no answer, or stopped by the watch
     let none = || {
         if p.stopped() {

@@ -62,14 +62,16 @@ pub fn chi2_test(r: &[f64], dof: usize) -> Option<LackOfFit> {
 }
 
 /// Whether the data pin an estimate: with residuals left, a finite interval spanning at most
-/// [`PIN_RATIO`]; an exact solve (no residual) pins what it verified. Never a value on the
-/// search's bound.
+/// [`PIN_RATIO`]; an exact solve (no residual) pins what it verified, but not a parameter the
+/// data do not see (its variance infinite: `stats::uncertainty` dropped its direction, the
+/// fit's "not identifiable" warning) — any value of it solves the data as well. Never a
+/// value on the search's bound.
 pub fn pinned(e: &Estimate, dof: usize, on_bound: bool) -> bool {
     if on_bound || !e.value.is_finite() {
         return false;
     }
     if dof == 0 {
-        return true;
+        return e.std_error != f64::INFINITY;
     }
     let [lo, hi] = e.ci95;
     lo.is_finite() && hi.is_finite() && lo > 0.0 && hi / lo <= PIN_RATIO
@@ -257,5 +259,11 @@ mod tests {
         assert!(!pinned(&e(f64::NAN, f64::NAN), 3, false));
         assert!(pinned(&e(f64::NAN, f64::NAN), 0, false));
         assert!(!pinned(&e(1.0, 2.0), 3, true));
+        // an exact solve does not pin a parameter its data do not see (infinite variance)
+        let unseen = Estimate {
+            std_error: f64::INFINITY,
+            ..e(f64::NAN, f64::NAN)
+        };
+        assert!(!pinned(&unseen, 0, false));
     }
 }

@@ -1,6 +1,7 @@
 //! The preset picker (`g`): every preset with its description and where it comes from, the
 //! highlighted one marked ▶, scrolled so it stays in view at any size.
 
+use crate::tui::format::clip;
 use crate::tui::picker::Picker;
 use crate::tui::theme::Theme;
 use ratatui::buffer::Buffer;
@@ -37,6 +38,9 @@ impl Widget for &PickerBox<'_> {
         Clear.render(popup, buf);
         let rows = usize::from(h.saturating_sub(2 + extra) / 2).max(1);
         let first = first_shown(p.selected, rows);
+        // inside the borders; a text too long for it is cut with "…" (docs/explorer.md,
+        // Numbers), not by the border
+        let inner = usize::from(w.saturating_sub(2));
         let mut lines = Vec::new();
         if let Some(e) = &p.error {
             lines.push(Line::styled(e.clone(), self.theme.error()));
@@ -48,17 +52,25 @@ impl Widget for &PickerBox<'_> {
             } else {
                 self.theme.title()
             };
+            let name = clip(&e.preset.name, inner.saturating_sub(1));
+            let origin = clip(
+                &format!("  {}", e.origin),
+                inner.saturating_sub(1 + name.chars().count()),
+            );
             lines.push(Line::from(vec![
                 Span::raw(if here { "▶" } else { " " }),
-                Span::styled(e.preset.name.clone(), style),
-                Span::styled(format!("  {}", e.origin), self.theme.dim()),
+                Span::styled(name, style),
+                Span::styled(origin, self.theme.dim()),
             ]));
             let text = if e.preset.description.is_empty() {
                 "(no description)"
             } else {
                 e.preset.description.as_str()
             };
-            lines.push(Line::raw(format!("   {text}")));
+            lines.push(Line::raw(format!(
+                "   {}",
+                clip(text, inner.saturating_sub(3))
+            )));
         }
         let more = if p.entries.len() > rows {
             format!(" · {}/{}", p.selected + 1, p.entries.len())

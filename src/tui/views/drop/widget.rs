@@ -5,6 +5,7 @@
 
 use crate::drop::standards::Test;
 use crate::text::sig;
+use crate::tui::format::fit_lines;
 use crate::tui::theme::Theme;
 use crate::tui::views::drop::state::DropView;
 use ratatui::buffer::Buffer;
@@ -227,6 +228,8 @@ fn render_readout(ball: &str, d: &DropView, theme: Theme, area: Rect, buf: &mut 
     lines.extend(verdict_lines(d, theme));
     lines.push(Line::raw(""));
     lines.push(keys_line(d, theme));
+    // broken between fields, never inside a value (`+0.225` and its `m` on two lines)
+    let lines = fit_lines(lines, usize::from(area.width.saturating_sub(2)));
     Paragraph::new(lines)
         .wrap(Wrap { trim: true })
         .block(Block::bordered())
@@ -246,7 +249,7 @@ fn render_readout_beside(ball: &str, d: &DropView, theme: Theme, area: Rect, buf
     if !d.motion {
         lines.push(keys_line(d, theme));
     }
-    Paragraph::new(lines)
+    Paragraph::new(fit_lines(lines, usize::from(left.width)))
         .wrap(Wrap { trim: true })
         .render(left, buf);
     Paragraph::new(bounce_lines(d, theme)).render(right, buf);
@@ -305,7 +308,8 @@ fn verdict_lines(d: &DropView, theme: Theme) -> Vec<Line<'static>> {
         Line::from(vec![
             Span::raw(format!("{} ", s.name)),
             Span::styled(word, style),
-            Span::raw(format!(" margin {:+.3}{unit}", v.margin)),
+            // a field of its own (two spaces): the line breaks before it, not inside it
+            Span::raw(format!("  margin {:+.3}{unit}", v.margin)),
         ]),
         // the model's value where the standard measures one
         Line::raw(format!("predicted {}{unit}", sig(v.measured, 4))),
