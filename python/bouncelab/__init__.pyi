@@ -349,6 +349,7 @@ class Collision:
     method: Literal["exact", "numeric"]
     effective_mass: Optional[float]
     effective_radius: Optional[float]
+    warnings: list[str]
 
 def collide(
     preset: str = "superball",
@@ -392,6 +393,7 @@ class ObliqueImpact:
     friction_force: Optional[Array]
     slip_velocity: Optional[Array]
     spin: Optional[Array]
+    warnings: list[str]
 
 def oblique(
     preset: str = "superball",

@@ -37,6 +37,7 @@ pub(crate) struct Collision {
     method: &'static str,
     effective_mass: Option<f64>,
     effective_radius: Option<f64>,
+    warnings: Vec<String>,
 }
 
 #[pymethods]
@@ -76,6 +77,7 @@ impl From<CollisionReport> for Collision {
             method: c.method.name(),
             effective_mass: r.effective_mass,
             effective_radius: r.effective_radius,
+            warnings: r.warnings,
         }
     }
 }

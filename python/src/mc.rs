@@ -7,8 +7,8 @@
 
 use crate::{array, error, preset_ball};
 use bouncelab::analysis::mc::{
-    Dist, McError, McSpec, McSummary, Samples, Spread, Stats, Varied, interval_warnings,
-    parse_correlate, parse_vary, summary,
+    Dist, McError, McSpec, McSummary, Samples, Spread, Stats, Varied, parse_correlate, parse_vary,
+    summary,
 };
 use bouncelab::api::MonteCarlo;
 use numpy::{PyArray1, PyReadonlyArray1};
@@ -170,11 +170,7 @@ fn report<'py>(py: Python<'py>, r: &Request, s: &McSummary) -> PyResult<Bound<'p
     }
     d.set_item("no_rebound", s.no_rebound)?;
     d.set_item("stats", stats)?;
-    let st = &s.stats;
-    d.set_item(
-        "warnings",
-        interval_warnings(&[&st.cor, &st.max_force, &st.contact_time]),
-    )?;
+    d.set_item("warnings", r.ball.mc_warnings(&s.stats))?;
     Ok(d)
 }
 

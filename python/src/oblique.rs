@@ -37,6 +37,8 @@ pub(crate) struct ObliqueImpact {
     friction_force: Option<Py<PyArray1<f64>>>,
     slip_velocity: Option<Py<PyArray1<f64>>>,
     spin: Option<Py<PyArray1<f64>>>,
+    /// `Ball::oblique_warnings`, as the JSON's `warnings`.
+    warnings: Vec<String>,
 }
 
 #[pymethods]
@@ -50,7 +52,7 @@ impl ObliqueImpact {
     }
 }
 
-fn build(py: Python<'_>, r: ObliqueResponse) -> PyResult<ObliqueImpact> {
+fn build(py: Python<'_>, r: ObliqueResponse, warnings: Vec<String>) -> PyResult<ObliqueImpact> {
     let e = &r.energy;
     let energy = PyDict::new(py);
     for (k, v) in [
@@ -98,6 +100,7 @@ fn build(py: Python<'_>, r: ObliqueResponse) -> PyResult<ObliqueImpact> {
         friction_force: ft,
         slip_velocity: vc,
         spin: w,
+        warnings,
     })
 }
 
@@ -139,5 +142,6 @@ pub(crate) fn oblique(
     let r = ball
         .oblique(&spec, if history { samples } else { 0 })
         .map_err(error)?;
-    build(py, r)
+    let warnings = ball.oblique_warnings(&r);
+    build(py, r, warnings)
 }

@@ -177,3 +177,24 @@ def test_sweep_velocity_carries_each_rows_warnings():
     )["rows"]
     assert d["warnings"] == [r["warnings"] for r in rows]
     assert list(d["max_indentation"]) == pytest.approx([r["max_indentation"] for r in rows])
+
+
+def test_collide_oblique_and_monte_carlo_carry_the_command_lines_warnings():
+    # a table-tennis ball at 100 m/s: 23 mm into a 20 mm ball; the objects had no warnings
+    beyond = "exceeds the ball's radius 20.00 mm"
+    c = bouncelab.collide(preset="table-tennis", v0=100.0, target_mass=1.0)
+    want = cli_json("collide", "--preset", "table-tennis", "--v0", "100", "--target-mass", "1",
+                    "--format", "json")["warnings"]
+    assert c.warnings == want and beyond in c.warnings[0]
+    o = bouncelab.oblique("table-tennis", v0=100.0, angle=80.0, friction=0.5)
+    want = cli_json("oblique", "--preset", "table-tennis", "--v0", "100", "--angle", "80",
+                    "--friction", "0.5", "--format", "json")["warnings"]
+    assert o.warnings == want and beyond in o.warnings[0]
+    m = bouncelab.monte_carlo(preset="table-tennis", v0=100.0, vary={"k_p": 0.05},
+                              samples=400, seed=1)
+    want = cli_json("mc", "--preset", "table-tennis", "--v0", "100", "--vary", "k_p=5%",
+                    "--samples", "400", "--seed", "1", "--format", "json")["warnings"]
+    assert m["warnings"] == want and m["warnings"][0].startswith("at the nominal parameters: ")
+    # within the radius: none
+    assert bouncelab.collide(preset="table-tennis", target_mass=1.0).warnings == []
+    assert bouncelab.oblique("table-tennis", angle=80.0, friction=0.5).warnings == []

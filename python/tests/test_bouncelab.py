@@ -229,11 +229,15 @@ def test_sweep_velocity_defaults_are_the_clis():
     code, out, err = cli("sweep", "velocity", "--preset", "baseball")
     assert code == 0, err
     lines = out.splitlines()
-    expected = np.array([[float(x) if x else math.nan for x in l.split(",")] for l in lines[1:]])
+    # the CSV's numbers, then its warnings column (empty: the baseball stays within its radius)
+    assert lines[0].endswith(",warnings") and all(l.endswith(",") for l in lines[1:])
+    columns = lines[0].split(",")[:-1]
+    rows = [l.split(",")[:-1] for l in lines[1:]]
+    expected = np.array([[float(x) if x else math.nan for x in r] for r in rows])
     d = bouncelab.sweep_velocity("baseball")
-    columns = lines[0].split(",")
-    # the CSV's columns, then the JSON's max_indentation and warnings
+    # the CSV's numeric columns, then the JSON's max_indentation and warnings
     assert list(d) == columns + ["max_indentation", "warnings"]
+    assert d["warnings"] == [[] for _ in rows]
     got = np.column_stack([d[c] for c in columns])
     np.testing.assert_allclose(got, expected, rtol=1e-12, atol=0)
 
