@@ -99,8 +99,9 @@ fn candidates((cx, cy): (i32, i32), (w, h): (i32, i32), s: Spacing) -> Vec<(i32,
     out
 }
 
-/// The top-left corner of each label's text: the first of its [`candidates`] inside `plot`
-/// and clear of every marker in `marks` (centres) and of the texts placed before it; else
+/// The top-left corner of each label's text: the first of its places (the usual one, its
+/// mirrors, beside, above, below, then further out) inside `plot` and clear of every marker
+/// in `marks` (centres) and of the texts placed before it; else
 /// the first clear one reaching out of the plot (over its frame, never over a text); the
 /// usual place when none is.
 pub fn place(labels: &[Label], marks: &[(i32, i32)], plot: Rect, s: Spacing) -> Vec<(i32, i32)> {
