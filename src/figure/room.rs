@@ -114,6 +114,11 @@ pub fn place(labels: &[Label], marks: &[(i32, i32)], plot: Rect, s: Spacing) -> 
     let mut out = Vec::new();
     for l in labels {
         let all = candidates(l.at, l.size, s);
+        if l.size.0 <= 0 {
+            // a marker without a text: nothing to place
+            out.push(all[0]);
+            continue;
+        }
         let clear = |corner: (i32, i32), inside: bool| {
             let b = Rect::at(corner, l.size);
             (!inside || plot.holds(&b))
@@ -223,6 +228,21 @@ mod tests {
             "beside, to the left"
         );
         assert_eq!(leader((-100, 100), (200, 52), 60), Some((0, 100)));
+    }
+
+    #[test]
+    fn a_marker_without_a_text_keeps_the_usual_place_and_takes_no_room() {
+        // at the top edge, where a text would move; the next marker's text is not pushed off
+        let none = Label {
+            at: (1000, 10),
+            size: (0, 52),
+        };
+        let text = Label {
+            at: (1000, 200),
+            size: (200, 52),
+        };
+        let at = place(&[none, text], &[none.at, text.at], PLOT, S);
+        assert_eq!(at, [(1036, -58), (1036, 132)]);
     }
 
     #[test]

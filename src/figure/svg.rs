@@ -87,8 +87,9 @@ pub(super) fn color(i: usize) -> RGBColor {
     RGBColor(r, g, b)
 }
 
-/// Width of `text` in CSS pixels, estimated: sans-serif glyphs average about 0.5 em. Only the
-/// legend layout uses it, with room to spare.
+/// Width of `text` in CSS pixels, estimated: sans-serif glyphs average about 0.5 em. The
+/// legend's layout and the markers' texts' places use it, with room to spare (and
+/// tests/common/room.rs checks the drawn figures with it).
 fn text_width(text: &str, size: i32) -> i32 {
     (text.chars().count() as f64 * f64::from(size) * 0.52).ceil() as i32
 }
