@@ -79,3 +79,73 @@ fn the_flattening_note_holds_for_its_numbers_and_agrees_with_run() {
         assert_eq!(z_p, p);
     }
 }
+
+/// The `<text>` contents of a figure.
+fn texts(svg: &str) -> Vec<String> {
+    parse_svg(svg).texts
+}
+
+/// The number in `text` between `before` and `after`, as printed.
+fn between<'a>(text: &'a str, before: &str, after: &str) -> Option<&'a str> {
+    let rest = text.split_once(before)?.1;
+    Some(rest.split_once(after)?.0)
+}
+
+/// Every preset, two laws, its speed and 3× it: the permanent indentation z_f in the
+/// force–displacement legend, the threshold z_p, and the measured e on cor-velocity are
+/// `bouncelab run`'s numbers, rounded as the figure rounds them (`text::short`, three digits).
+#[test]
+fn legend_numbers_are_runs_rounded_as_the_figure_rounds() {
+    use bouncelab::text::short;
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let mut checked = 0;
+    for p in bouncelab::preset::Preset::embedded_all() {
+        for law in ["linear", "elastic-plastic"] {
+            for k in [1.0, 3.0] {
+                let v0 = (k * p.measured.v0).to_string();
+                let base = ["--preset", &p.name, "--law", law, "--v0", &v0];
+                let mut args = vec!["figure", "force-displacement"];
+                args.extend(base);
+                args.extend(["--out", "fd.svg", "--force"]);
+                ok_at(d, &args);
+                let svg = std::fs::read_to_string(d.join("fd.svg")).unwrap();
+                let mut run = vec!["run"];
+                run.extend(base);
+                run.extend(["--format", "json"]);
+                let r = json(&run);
+                let mm = |key: &str| short(f(&r, key) * 1e3, 3);
+                for t in texts(&svg) {
+                    if let Some(z_f) = between(&t, "permanent indentation z_f (", " mm)") {
+                        assert_eq!(z_f, mm("permanent_indentation"), "{} {law} {v0}", p.name);
+                        checked += 1;
+                    }
+                    if let Some(z_p) = between(&t, "flattening threshold z_p (", " mm)") {
+                        assert_eq!(z_p, mm("z_p"), "{} {law} {v0}", p.name);
+                        checked += 1;
+                    }
+                }
+            }
+        }
+        let args = [
+            "figure",
+            "cor-velocity",
+            "--preset",
+            &p.name,
+            "--out",
+            "cv.svg",
+            "--force",
+        ];
+        ok_at(d, &args);
+        let svg = std::fs::read_to_string(d.join("cv.svg")).unwrap();
+        let r = json(&["run", "--preset", &p.name, "--format", "json"]);
+        let e = short(f(&r["measured"], "cor"), 3);
+        assert!(
+            texts(&svg).contains(&format!("e = {e}")),
+            "{}: e = {e}",
+            p.name
+        );
+        checked += 1;
+    }
+    assert!(checked > 20, "{checked} numbers checked");
+}

@@ -143,7 +143,7 @@ fn every_preset_law_and_speed_has_room() {
     let dir = tempfile::tempdir().unwrap();
     let d = dir.path();
     let mut found = Vec::new();
-    for p in Preset::embedded() {
+    for p in Preset::embedded_all() {
         let name = p.name.clone();
         for fig in ["cor-zeta", "force-zeta"] {
             let svg = figure(d, &["figure", fig, "--preset", &name], "z.svg");
@@ -242,7 +242,7 @@ fn reproduce_several_balls_maps_and_fit_plots_have_room() {
 /// A superball trace (the solver's, sampled) and a COR table of a softer superball at five
 /// speeds, written in `dir`: (file, the fit's flag).
 fn fit_data(dir: &Path) -> Vec<(String, &'static str)> {
-    let p = Preset::embedded()
+    let p = Preset::embedded_all()
         .into_iter()
         .find(|p| p.name == "superball")
         .unwrap();
@@ -314,7 +314,7 @@ fn oblique_exports(app: &mut App, found: &mut Vec<String>, what: &str) -> Vec<&'
 #[test]
 fn the_explorers_exports_have_room() {
     let (mut found, mut charts) = (Vec::new(), Vec::new());
-    for p in Preset::embedded() {
+    for p in Preset::embedded_all() {
         let (name, v0) = (p.name.clone(), p.measured.v0);
         let mut app = App::new(p, false);
         tui_common::press(&mut app, &[KeyCode::Char('p'), KeyCode::Char(']')]);
