@@ -267,15 +267,17 @@ fn fit_data(dir: &Path) -> Vec<(String, &'static str)> {
     ]
 }
 
-/// What `e` exports in each view of the explorer (Tab to the next), rendered; the charts'
-/// names.
+/// What `e` exports in each view of the explorer (Tab to the next, round to the first),
+/// rendered; the charts' names.
 fn exports(app: &mut App, found: &mut Vec<String>, what: &str) -> Vec<&'static str> {
-    let mut charts = Vec::new();
-    for _view in 0..8 {
+    let (mut charts, first) = (Vec::new(), app.view());
+    loop {
         charts.extend(exports_here(app, found, what));
         tui_common::press(app, &[KeyCode::Tab]);
+        if app.view() == first {
+            return charts;
+        }
     }
-    charts
 }
 
 /// What `e` exports in the current view, rendered; the charts' names.
