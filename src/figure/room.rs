@@ -8,6 +8,8 @@
 //! The boxes are estimates (the renderer's own, [`super::svg`]'s `text_width`), so the tests
 //! check the drawn SVG with the same estimate (tests/figure_room.rs).
 
+use super::{Series, Style};
+
 /// A box in drawing units, [x0, x1) × [y0, y1).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Rect {
@@ -136,18 +138,33 @@ pub fn place(labels: &[Label], marks: &[(i32, i32)], plot: Rect, s: Spacing) -> 
     out
 }
 
-/// [`place`] for the markers of several series (centres and text sizes by series and
-/// point), each text's top-left corner as an offset from its marker's centre.
+/// [`place`] for the markers of `series` (drawn at `at`, a point to its drawn centre, `None`
+/// for one not drawn; each text of `size(series, point)`), each text's top-left corner as an
+/// offset from its marker's centre, by series and point.
 pub fn offsets(
-    centres: &[Vec<(i32, i32)>],
-    sizes: &[Vec<(i32, i32)>],
+    series: &[Series],
+    at: impl Fn((f64, f64)) -> Option<(i32, i32)>,
+    size: impl Fn(&Series, usize) -> (i32, i32),
     plot: Rect,
     s: Spacing,
 ) -> Vec<Vec<(i32, i32)>> {
-    let labels: Vec<Label> = centres
+    let centres: Vec<Vec<(i32, i32)>> = series
         .iter()
-        .zip(sizes)
-        .flat_map(|(cs, ws)| cs.iter().zip(ws).map(|(&at, &size)| Label { at, size }))
+        .map(|ser| match ser.style {
+            Style::Markers(_) => ser.points.iter().filter_map(|&p| at(p)).collect(),
+            _ => Vec::new(),
+        })
+        .collect();
+    let labels: Vec<Label> = series
+        .iter()
+        .zip(&centres)
+        .flat_map(|(ser, cs)| {
+            let size = &size;
+            cs.iter().enumerate().map(move |(i, &at)| Label {
+                at,
+                size: size(ser, i),
+            })
+        })
         .collect();
     let marks: Vec<(i32, i32)> = centres.iter().flatten().copied().collect();
     let mut corners = place(&labels, &marks, plot, s).into_iter();

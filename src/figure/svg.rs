@@ -207,20 +207,7 @@ fn annotation_size(s: &Series, i: usize) -> (i32, i32) {
 /// ([`room::offsets`]: the usual place when it has room, else one clear of every marker and
 /// of the texts before it).
 fn annotation_offsets(chart: &Chart, fig: &Figure) -> Vec<Vec<(i32, i32)>> {
-    let (mut centres, mut sizes) = (Vec::new(), Vec::new());
-    for s in &fig.series {
-        let at: Vec<(i32, i32)> = match s.style {
-            Style::Markers(_) => s
-                .points
-                .iter()
-                .filter_map(|&p| to_draw(fig, p))
-                .map(|p| chart.backend_coord(&p))
-                .collect(),
-            _ => Vec::new(),
-        };
-        sizes.push((0..at.len()).map(|i| annotation_size(s, i)).collect());
-        centres.push(at);
-    }
+    let at = |p| to_draw(fig, p).map(|p| chart.backend_coord(&p));
     let (xs, ys) = chart.plotting_area().get_pixel_range();
     let plot = room::Rect {
         x0: xs.start,
@@ -228,7 +215,7 @@ fn annotation_offsets(chart: &Chart, fig: &Figure) -> Vec<Vec<(i32, i32)>> {
         x1: xs.end,
         y1: ys.end,
     };
-    room::offsets(&centres, &sizes, plot, SPACING)
+    room::offsets(&fig.series, at, annotation_size, plot, SPACING)
 }
 
 /// Legend entries laid out in rows that fit the width: (row, x offset) per labelled series,
