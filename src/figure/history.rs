@@ -157,19 +157,33 @@ pub fn force_displacement(ball: &Ball, r: &ImpactResponse) -> Figure {
     let mut fig = frame(true, ball);
     let (z_m, z_p) = (r.max_indentation, ball.params.z_p);
     if ball.law != ContactLaw::Hertz {
-        let (word, cmp) = if z_m > z_p {
-            ("flattened", ">")
-        } else {
-            ("no flattening", "<")
-        };
-        fig.subtitle.push_str(&format!(
-            "; {word}: z_m = {} mm {cmp} z_p = {} mm",
-            short(z_m * 1e3, 3),
-            short(z_p * 1e3, 3)
-        ));
+        fig.subtitle
+            .push_str(&format!("; {}", flattening_note(z_m, z_p)));
     }
     fig.series = series;
     fig
+}
+
+/// Whether the ball flattened, with z_m and z_p (m) in mm: "no flattening: z_m = 0.383 mm <
+/// z_p = 3 mm". Three significant digits, more where three would print the two equal, so
+/// that the sign between them holds for the numbers shown ("z_m = 3.996 mm < z_p = 4 mm",
+/// not "4 mm < 4 mm"; `bouncelab run` prints 3.996); "≈" for a z_m equal to z_p to nine.
+fn flattening_note(z_m: f64, z_p: f64) -> String {
+    let (a, b) = (3..=9)
+        .map(|d| (short(z_m * 1e3, d), short(z_p * 1e3, d)))
+        .find(|(a, b)| a != b)
+        .unwrap_or_else(|| (short(z_m * 1e3, 9), short(z_p * 1e3, 9)));
+    let word = if z_m > z_p {
+        "flattened"
+    } else {
+        "no flattening"
+    };
+    let cmp = match (z_m > z_p, a == b) {
+        (_, true) => "≈",
+        (true, false) => ">",
+        (false, false) => "<",
+    };
+    format!("{word}: z_m = {a} mm {cmp} z_p = {b} mm")
 }
 
 /// The flattening threshold z_p up to where it meets the loading curve, when it falls inside

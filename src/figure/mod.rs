@@ -26,6 +26,7 @@ pub mod overlay;
 pub mod paper;
 pub mod peers;
 pub mod report;
+pub mod room;
 pub mod svg;
 pub mod svg_map;
 pub mod ticks;

@@ -9,6 +9,7 @@
 //! lines. The picture is therefore drawn `SCALE` times larger and the `<svg>` element's size
 //! set back to `WIDTH` × `HEIGHT`: the viewBox keeps the fine coordinates.
 
+use super::room;
 use super::ticks::{Room, Ticks, ticks};
 use super::{Figure, Marker, PALETTE, Series, Style};
 use plotters::element::DashedPathElement;
@@ -33,6 +34,16 @@ pub(super) const LEGEND_PX: i32 = 15;
 pub(super) const ANNOTATION_PX: i32 = 13;
 const LINE_PX: i32 = 2;
 const MARKER_PX: i32 = 5;
+/// Around a marker: half its height at its tallest (a triangle's or diamond's apex,
+/// `marker`); its text's usual place, up and to the right; the gap beside it.
+const SPACING: room::Spacing = room::Spacing {
+    half: px(MARKER_PX) * 4 / 3,
+    first: (px(MARKER_PX + 4), -px(MARKER_PX + 12)),
+    gap: px(3),
+};
+/// A text farther than this from its marker's centre gets a line to it: the usual place is
+/// 39 units away, a place one line (52) further out 77.
+const LEADER_FROM: i32 = px(15);
 const LEGEND_ROW_PX: i32 = 24;
 const LEGEND_GLYPH_PX: i32 = 30;
 const LEGEND_GAP_PX: i32 = 26;
@@ -76,8 +87,9 @@ pub(super) fn color(i: usize) -> RGBColor {
     RGBColor(r, g, b)
 }
 
-/// Width of `text` in CSS pixels, estimated: sans-serif glyphs average about 0.5 em. Only the
-/// legend layout uses it, with room to spare.
+/// Width of `text` in CSS pixels, estimated: sans-serif glyphs average about 0.5 em. The
+/// legend's layout and the markers' texts' places use it, with room to spare (and
+/// tests/common/room.rs checks the drawn figures with it).
 fn text_width(text: &str, size: i32) -> i32 {
     (text.chars().count() as f64 * f64::from(size) * 0.52).ceil() as i32
 }
@@ -130,8 +142,14 @@ fn stroke<DB: DrawingBackend>(
 
 type Chart<'a> = ChartContext<'a, SVGBackend<'a>, Cartesian2d<Ticks, Ticks>>;
 
-/// Draw one series into the plot.
-fn draw_series<'a>(chart: &mut Chart<'a>, fig: &Figure, s: &Series) -> Result<(), RenderError> {
+/// Draw one series into the plot; a marker's text at its offset in `offsets`, by point
+/// ([`annotation_offsets`]).
+fn draw_series<'a>(
+    chart: &mut Chart<'a>,
+    fig: &Figure,
+    s: &Series,
+    offsets: &[(i32, i32)],
+) -> Result<(), RenderError> {
     let c = color(s.color);
     let line = c.stroke_width(px(LINE_PX) as u32);
     let pts: Vec<(f64, f64)> = s.points.iter().filter_map(|&p| to_draw(fig, p)).collect();
@@ -156,11 +174,19 @@ fn draw_series<'a>(chart: &mut Chart<'a>, fig: &Figure, s: &Series) -> Result<()
         }
         Style::Markers(shape) => {
             let fill = c.filled();
-            let offset = (px(MARKER_PX + 4), -px(MARKER_PX + 12));
             let labels = s.annotations.clone();
+            // a text moved away from its marker gets a thin grey line to it
+            let grey = color(super::GREY).stroke_width(px(1) as u32);
+            let leaders = pts.iter().enumerate().filter_map(|(i, &p)| {
+                let offset = offsets.get(i).copied().unwrap_or(SPACING.first);
+                let end = room::leader(offset, annotation_size(s, i), LEADER_FROM)?;
+                Some(EmptyElement::at(p) + PathElement::new(vec![(0, 0), end], grey))
+            });
+            chart.draw_series(leaders).map_err(err)?;
             chart
                 .draw_series(pts.into_iter().enumerate().map(move |(i, p)| {
                     let text = labels.get(i).cloned().unwrap_or_default();
+                    let offset = offsets.get(i).copied().unwrap_or(SPACING.first);
                     EmptyElement::at(p)
                         + marker(shape, fill)
                         + Text::new(text, offset, font(ANNOTATION_PX))
@@ -169,6 +195,27 @@ fn draw_series<'a>(chart: &mut Chart<'a>, fig: &Figure, s: &Series) -> Result<()
         }
     }
     Ok(())
+}
+
+/// The box of point `i`'s text in `s`, drawn (empty without one).
+fn annotation_size(s: &Series, i: usize) -> (i32, i32) {
+    let text = s.annotations.get(i).map_or("", String::as_str);
+    (px(text_width(text, ANNOTATION_PX)), px(ANNOTATION_PX))
+}
+
+/// Where each marker's text goes, as an offset from its marker, per series and point
+/// ([`room::offsets`]: the usual place when it has room, else one clear of every marker and
+/// of the texts before it).
+fn annotation_offsets(chart: &Chart, fig: &Figure) -> Vec<Vec<(i32, i32)>> {
+    let at = |p| to_draw(fig, p).map(|p| chart.backend_coord(&p));
+    let (xs, ys) = chart.plotting_area().get_pixel_range();
+    let plot = room::Rect {
+        x0: xs.start,
+        y0: ys.start,
+        x1: xs.end,
+        y1: ys.end,
+    };
+    room::offsets(&fig.series, at, annotation_size, plot, SPACING)
 }
 
 /// Legend entries laid out in rows that fit the width: (row, x offset) per labelled series,
@@ -333,8 +380,9 @@ pub fn render(fig: &Figure) -> Result<String, RenderError> {
             .set_all_tick_mark_size(px(5))
             .draw()
             .map_err(err)?;
-        for s in &fig.series {
-            draw_series(&mut chart, fig, s)?;
+        let offsets = annotation_offsets(&chart, fig);
+        for (s, offsets) in fig.series.iter().zip(&offsets) {
+            draw_series(&mut chart, fig, s, offsets)?;
         }
         // a full frame, as journals print it (plotters draws the left and bottom axes only)
         let frame = Rectangle::new(

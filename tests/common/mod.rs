@@ -2,6 +2,7 @@
 #![allow(dead_code)]
 
 pub mod golden;
+pub mod room;
 
 use serde_json::Value;
 use std::path::Path;
