@@ -22,6 +22,21 @@ pub struct Ball {
 }
 
 impl Ball {
+    /// Where the ball's reference values (its `measured` COR, F_m, t_f) come from, as the
+    /// figures label them: Cross's measurements for the paper's three balls, the middle of
+    /// its standard's window for the drop-test balls (their preset files say "Not measured"),
+    /// plain "measured" for a user's preset. Known by content, not by name alone: a preset
+    /// carries the embedded data only if its name and `[measured]` table are an embedded
+    /// preset's (tests/figure_numbers.rs).
+    pub fn measured_label(&self) -> &'static str {
+        let same = |p: &Preset| p.name == self.name && Some(&p.measured) == self.measured.as_ref();
+        match Preset::embedded_all().iter().position(same) {
+            Some(i) if i < crate::preset::PAPER_BALLS => "measured (Cross 1999)",
+            Some(_) => "the standard's mid-window (not measured)",
+            None => "measured",
+        }
+    }
+
     /// Preset `p` on its parameter set `source`, with contact law `law`.
     pub fn from_preset(p: &Preset, source: ParamSource, law: ContactLaw) -> Ball {
         Ball {

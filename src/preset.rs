@@ -71,7 +71,8 @@ pub enum MaterialKind {
     Metal,
 }
 
-/// What was measured (Cross 1999 for the embedded balls). SI units.
+/// What was measured (Cross 1999 for the paper's three balls; for the drop-test balls the
+/// reference values their standards put mid-window). SI units.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Measured {

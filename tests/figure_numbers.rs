@@ -149,3 +149,47 @@ fn legend_numbers_are_runs_rounded_as_the_figure_rounds() {
     }
     assert!(checked > 20, "{checked} numbers checked");
 }
+
+/// The figures named every reference COR "measured (Cross 1999)", the drop-test balls' too,
+/// whose preset files say "Not measured" (the COR that puts each mid-window); a user's own
+/// ball made from a paper ball's file is not Cross's.
+#[test]
+fn a_reference_cor_is_labelled_by_where_it_comes_from() {
+    let dir = tempfile::tempdir().unwrap();
+    let label = |args: &[&str]| {
+        let mut all = vec!["figure", "cor-velocity", "--out", "cv.svg", "--force"];
+        all.extend_from_slice(args);
+        ok_at(dir.path(), &all);
+        let svg = std::fs::read_to_string(dir.path().join("cv.svg")).unwrap();
+        texts(&svg).join("|")
+    };
+    let golf = label(&["--preset", "golf"]);
+    assert!(golf.contains("measured (Cross 1999)"), "{golf}");
+    for ball in [
+        "tennis",
+        "football",
+        "basketball",
+        "table-tennis",
+        "softball",
+    ] {
+        let t = label(&["--preset", ball]);
+        assert!(!t.contains("Cross 1999"), "{ball}: {t}");
+        assert!(
+            t.contains("the standard's mid-window (not measured)"),
+            "{ball}: {t}"
+        );
+    }
+    // a user's ball made from the golf ball's file, with its own COR
+    let golf_toml = std::fs::read_to_string("presets/golf.toml").unwrap();
+    let mine = golf_toml
+        .replace("name = \"golf\"", "name = \"my-golf\"")
+        .replace("cor = 0.84", "cor = 0.81");
+    assert_eq!(
+        mine.matches("my-golf").count() + mine.matches("0.81").count(),
+        2
+    );
+    let path = dir.path().join("mine.toml");
+    std::fs::write(&path, mine).unwrap();
+    let t = label(&["--config", path.to_str().unwrap()]);
+    assert!(!t.contains("Cross 1999") && t.contains("measured"), "{t}");
+}

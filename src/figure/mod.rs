@@ -102,7 +102,7 @@ pub enum Role {
     Pinned,
     /// The current run's point on a sweep's curve.
     ThisRun,
-    /// Measured (Cross 1999 for the embedded balls).
+    /// Measured, or a reference value ([`crate::ball::Ball::measured_label`] says which).
     Measured,
     /// A reference line: a threshold or a measured value drawn across the plot.
     Reference,

@@ -62,10 +62,13 @@ fn zeta_figure(
     let at = if balls.is_empty() {
         String::new()
     } else {
-        format!(
-            "; markers: measured (Cross 1999), at the {} ζ",
-            balls[0].source
-        )
+        let first = balls[0].measured_label();
+        let what = if balls.iter().all(|b| b.measured_label() == first) {
+            first
+        } else {
+            "each ball's reference (Cross 1999 measured, or its standard's mid-window)"
+        };
+        format!("; markers: {what}, at the {} ζ", balls[0].source)
     };
     Figure::new(
         title.into(),
@@ -294,7 +297,7 @@ pub fn cor_velocity(ball: &Ball, rows: &[VelocityPoint], onset: Option<f64>) -> 
     }
     if let Some((v, e)) = ball.measured.as_ref().and_then(|m| Some((m.v0, m.cor?))) {
         let mut s = Series::new(
-            "measured (Cross 1999)",
+            ball.measured_label(),
             "measured cor",
             Kind::Measured,
             Style::Markers(Marker::Circle),

@@ -81,7 +81,7 @@ pub fn cor_velocity(b: &Ball, target: f64, speeds: &[f64]) -> Result<Figure, Str
     if let Some((v, e)) = b.measured.as_ref().and_then(|m| Some((m.v0, m.cor?))) {
         series.push(
             Series::new(
-                "measured (Cross 1999)",
+                b.measured_label(),
                 "measured cor",
                 Kind::Measured,
                 Style::Markers(Marker::Circle),
