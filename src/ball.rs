@@ -32,7 +32,7 @@ impl Ball {
         let same = |p: &Preset| p.name == self.name && Some(&p.measured) == self.measured.as_ref();
         match Preset::embedded_all().iter().position(same) {
             Some(i) if i < crate::preset::PAPER_BALLS => "measured (Cross 1999)",
-            Some(_) => "the standard's mid-window (not measured)",
+            Some(_) => "standard's mid-window",
             None => "measured",
         }
     }

@@ -66,7 +66,7 @@ fn zeta_figure(
         let what = if balls.iter().all(|b| b.measured_label() == first) {
             first
         } else {
-            "each ball's reference (Cross 1999 measured, or its standard's mid-window)"
+            "Cross 1999 or standard's mid-window"
         };
         format!("; markers: {what}, at the {} ζ", balls[0].source)
     };

@@ -82,8 +82,9 @@ pub fn relabel_user(fig: &mut Figure, origin: &str) {
     }
     let name = files::label(Path::new(origin));
     for s in &mut fig.series {
-        if s.label.contains("Cross 1999") {
-            s.label = s.label.replace("Cross 1999", &name);
+        // `Ball::measured_label` of a user's ball: plain "measured", here named by its file
+        if s.label.ends_with("measured") {
+            s.label = format!("{} ({name})", s.label);
         }
     }
 }
