@@ -190,20 +190,21 @@ fn every_answer_and_every_format_carries_the_radius_warning() {
         assert!(!ok(&args).contains("warning:"), "{cmd:?} within the radius");
     }
     // the CSV rows: a `warnings` column, last
+    let oblique = [
+        "oblique",
+        "--angle",
+        "80",
+        "--friction",
+        "0.5",
+        "--format",
+        "csv",
+    ];
     let rows: [&[&str]; 3] = [
         &["run", "--format", "csv"],
         &[
             "sweep", "velocity", "--from", "90", "--to", "100", "--points", "2",
         ],
-        &[
-            "oblique",
-            "--angle",
-            "80",
-            "--friction",
-            "0.5",
-            "--format",
-            "csv",
-        ],
+        &oblique,
     ];
     for cmd in rows {
         let args = with(cmd, &tt);
@@ -215,28 +216,20 @@ fn every_answer_and_every_format_carries_the_radius_warning() {
         assert!(last.contains(BEYOND), "{cmd:?}: {last}");
     }
     // the time series: stderr, the series itself unchanged
+    let oblique_series = [&oblique[..], &["--history"]].concat();
+    let drop = [
+        "drop",
+        "--preset",
+        "superball",
+        "--height",
+        "100",
+        "--no-drag",
+    ];
+    let drop = [&drop[..], &["--format", "csv"]].concat();
     let series: [&[&str]; 3] = [
         &["run", "--format", "csv", "--history"],
-        &[
-            "oblique",
-            "--angle",
-            "80",
-            "--friction",
-            "0.5",
-            "--format",
-            "csv",
-            "--history",
-        ],
-        &[
-            "drop",
-            "--preset",
-            "superball",
-            "--height",
-            "100",
-            "--no-drag",
-            "--format",
-            "csv",
-        ],
+        &oblique_series,
+        &drop,
     ];
     for cmd in series {
         let args = if cmd[0] == "drop" {
