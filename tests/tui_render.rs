@@ -585,3 +585,37 @@ fn the_sweeps_readout_keeps_its_results_at_60x20() {
         assert!(s.contains(needle), "no {needle:?}\n{s}");
     }
 }
+
+/// The validity note keeps each number with its unit: at 120 × 40 a ball pressed past its
+/// radius read `α_max 24.1 mm > R 20 mm (by 4.1` over `mm, ×1.2)` (the line broke at its last
+/// space). Its parenthesis is now a field of its own (two spaces before it).
+#[test]
+fn the_validity_note_keeps_its_numbers_with_their_units() {
+    for v0 in ["45", "60", "100"] {
+        for (w, h) in [(60, 20), (80, 24), (100, 30), (120, 40), (200, 60)] {
+            let mut a = app(0);
+            press(
+                &mut a,
+                &[KeyCode::Right, KeyCode::Right, KeyCode::Char('=')],
+            );
+            press(&mut a, &chars(v0));
+            press(&mut a, &[KeyCode::Enter]);
+            let rows = screen_text(&draw(&a, w, h));
+            let screen = rows.join("\n");
+            // the small screens' readouts have no room for the note
+            if !screen.contains("outside the model") {
+                assert!(w < 100, "{w}×{h} v0 {v0}: no note\n{screen}");
+                continue;
+            }
+            for r in &rows {
+                for part in r.split('│') {
+                    let t = part.trim_start();
+                    assert!(
+                        !(t.starts_with("mm") || t.starts_with("mm,")),
+                        "{w}×{h} v0 {v0}: a unit apart from its number {r:?}\n{screen}"
+                    );
+                }
+            }
+        }
+    }
+}

@@ -322,18 +322,21 @@ pub fn validity(run: &ImpactResponse, deflection: Option<&[f64]>, radius: f64) -
         .enumerate()
         .map(|(i, a)| a - give(i))
         .fold(f64::NAN, f64::max);
-    let mm = |x: f64| sig_trim(x * 1e3, 3);
+    // a number and its unit joined by a no-break space: the readout's line breaking
+    // (`format::fit_lines`) never parts them, and the parenthesis is a field of its own (two
+    // spaces before it) (tests/tui_render.rs, `the_validity_note_keeps_its_numbers_with_their_units`)
+    let mm = |x: f64| format!("{}\u{a0}mm", sig_trim(x * 1e3, 3));
     let mut over = Vec::new();
     if z_m > radius {
-        over.push(format!("z_m {} mm", mm(z_m)));
+        over.push(format!("z_m {}", mm(z_m)));
     }
     if alpha > radius {
-        over.push(format!("α_max {} mm", mm(alpha)));
+        over.push(format!("α_max {}", mm(alpha)));
     }
     let worst = z_m.max(alpha);
     (!over.is_empty()).then(|| {
         format!(
-            "outside the model: {} > R {} mm (by {} mm, ×{})",
+            "outside the model: {} > R {}  (by {}, ×{})",
             over.join(", "),
             mm(radius),
             mm(worst - radius),
