@@ -29,8 +29,14 @@ impl Ball {
     /// carries the embedded data only if its name and `[measured]` table are an embedded
     /// preset's (tests/figure_numbers.rs).
     pub fn measured_label(&self) -> &'static str {
+        // parsed once: the explorer draws Fig. 4 (and asks this) at every frame
+        static EMBEDDED: std::sync::OnceLock<Vec<Preset>> = std::sync::OnceLock::new();
         let same = |p: &Preset| p.name == self.name && Some(&p.measured) == self.measured.as_ref();
-        match Preset::embedded_all().iter().position(same) {
+        match EMBEDDED
+            .get_or_init(Preset::embedded_all)
+            .iter()
+            .position(same)
+        {
             Some(i) if i < crate::preset::PAPER_BALLS => "measured (Cross 1999)",
             Some(_) => "standard's mid-window",
             None => "measured",

@@ -132,11 +132,6 @@ fn the_readout_does_not_claim_z_m_below_z_p_under_hertz() {
 #[test]
 fn every_answer_and_every_format_carries_the_radius_warning() {
     let tt = ["--preset", "table-tennis", "--v0", "100"];
-    let with = |cmd: &[&str], more: &[&str]| -> Vec<String> {
-        let mut a: Vec<String> = cmd.iter().map(|s| s.to_string()).collect();
-        a.extend(more.iter().map(|s| s.to_string()));
-        a
-    };
     // each command past the radius, then within it (the same command at the ball's own pace)
     let answers: [(&[&str], &[&str], &[&str]); 4] = [
         (&["collide", "--target-mass", "1"], &tt, &tt[..2]),
@@ -164,8 +159,7 @@ fn every_answer_and_every_format_carries_the_radius_warning() {
         ),
     ];
     for (cmd, past, within) in answers {
-        let args = with(cmd, past);
-        let args: Vec<&str> = args.iter().map(String::as_str).collect();
+        let args = [cmd, past].concat();
         let v = json(&[&args[..], &["--format", "json"]].concat());
         let w = v["warnings"]
             .as_array()
@@ -179,8 +173,7 @@ fn every_answer_and_every_format_carries_the_radius_warning() {
             text.contains("\nwarning: ") && text.contains(BEYOND),
             "{cmd:?}"
         );
-        let args = with(cmd, within);
-        let args: Vec<&str> = args.iter().map(String::as_str).collect();
+        let args = [cmd, within].concat();
         let v = json(&[&args[..], &["--format", "json"]].concat());
         assert_eq!(
             v["warnings"],
@@ -207,8 +200,7 @@ fn every_answer_and_every_format_carries_the_radius_warning() {
         &oblique,
     ];
     for cmd in rows {
-        let args = with(cmd, &tt);
-        let args: Vec<&str> = args.iter().map(String::as_str).collect();
+        let args = [cmd, &tt].concat();
         let csv = ok(&args);
         let mut lines = csv.lines();
         assert!(lines.next().unwrap().ends_with(",warnings"), "{cmd:?}");
@@ -232,12 +224,8 @@ fn every_answer_and_every_format_carries_the_radius_warning() {
         &drop,
     ];
     for cmd in series {
-        let args = if cmd[0] == "drop" {
-            with(cmd, &[])
-        } else {
-            with(cmd, &tt)
-        };
-        let args: Vec<&str> = args.iter().map(String::as_str).collect();
+        let ball: &[&str] = if cmd[0] == "drop" { &[] } else { &tt };
+        let args = [cmd, ball].concat();
         let o = bl(&args);
         assert_eq!(o.code, 0, "{cmd:?}: {}", o.stderr);
         assert!(

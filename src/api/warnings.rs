@@ -44,21 +44,22 @@ pub fn map_indentation_warning(map: &crate::map::Map, radius: f64) -> Option<Str
     // the normalized scales: F̄ = F/(K_p v0/ω0), z = z̄ v0/ω0 (docs/model.md §5)
     let length = p.v0 / p.omega0();
     let z_m = |f: f64| contact.loading_indentation(f / (p.k_p * length)) * length;
-    let past: Vec<f64> = map
+    let (past, deepest) = map
         .cells()
         .iter()
         .flatten()
         .map(|c| z_m(c.max_force))
         .filter(|&z| z > radius)
-        .collect();
-    let deepest = past.iter().copied().fold(f64::NAN, f64::max);
-    (!past.is_empty()).then(|| {
+        .fold((0usize, f64::NAN), |(n, deepest), z| {
+            (n + 1, deepest.max(z))
+        });
+    (past > 0).then(|| {
         format!(
             "peak indentation exceeds the ball's radius {} mm in {} of {} cells (up to {} mm): \
              outside the model's range there (the contact laws assume a deformation small \
              against the ball)",
             sig(radius * 1e3, 4),
-            past.len(),
+            past,
             map.cells().len(),
             sig(deepest * 1e3, 4)
         )

@@ -168,14 +168,11 @@ fn warn_skipped(skipped: &[catalog::Skipped]) {
         return;
     }
     WARNED.call_once(|| {
-        for s in skipped {
-            let line = format!(
-                "bouncelab: warning: {} skipped: {}",
-                s.path.display(),
-                s.why
-            );
-            eprintln!("{}", crate::sanitize::line(&line));
-        }
+        let lines: Vec<String> = skipped
+            .iter()
+            .map(|s| format!("{} skipped: {}", s.path.display(), s.why))
+            .collect();
+        super::output::warnings_to_stderr(&lines);
     });
 }
 

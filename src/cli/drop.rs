@@ -118,23 +118,20 @@ pub fn run(a: &DropArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         .map(|s| s.judge(&dball, air))
         .transpose()
         .map_err(drop_error)?;
+    let mut warnings = b.drop_warnings(&run)?;
+    warnings.extend(b.drop_air_warning(air));
     match a.format {
         DropFormat::Json => {
             let mut r = report(&run, &bands, verdict.as_ref());
-            r.warnings = b.drop_warnings(&run)?;
-            r.warnings.extend(b.drop_air_warning(air));
+            r.warnings = warnings;
             output::json(out, &r)?
         }
         DropFormat::Csv => {
             trajectory_csv(out, &run)?;
-            let mut warnings = b.drop_warnings(&run)?;
-            warnings.extend(b.drop_air_warning(air));
             output::warnings_to_stderr(&warnings);
         }
         DropFormat::Text => {
             text(out, &b.label(), &run, standard.zip(verdict), radius)?;
-            let mut warnings = b.drop_warnings(&run)?;
-            warnings.extend(b.drop_air_warning(air));
             output::warning_lines(out, &warnings)?;
             if let (Some(i), Some(first), Some(fit)) = (bands.first(), run.bounces.first(), &b.fit)
             {

@@ -109,10 +109,7 @@ pub fn write(
     if history {
         write_history(out, r, &units.force, &units.time, &units.length)?;
     }
-    for w in b.warnings(r) {
-        writeln!(out, "warning: {w}")?;
-    }
-    Ok(())
+    super::output::warning_lines(out, &b.warnings(r))
 }
 
 /// The parameters the run used (SI ones for a preset), and λ, ζ, z̄_p.

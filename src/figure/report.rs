@@ -210,8 +210,8 @@ fn summary(out: &mut String, balls: &[Comparison]) {
             delta(t, x.contact_time),
         );
     }
-    // the paper's K_r are rounded fits: e misses its measurement by as much as the table
-    // says (baseball −0.9 %), so the sentence gives that largest miss, not "by construction"
+    // the paper's K_r are rounded fits, so e meets its measurement only to the largest miss
+    // of the table above, which the sentence states (tests/cli_reproduce.rs)
     let miss = balls
         .iter()
         .filter_map(|c| {

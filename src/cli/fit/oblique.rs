@@ -113,8 +113,5 @@ fn write_text(
     };
     rest.push(vec!["answered".into(), answered]);
     table(out, "  ", &rest)?;
-    for w in &f.warnings {
-        writeln!(out, "warning: {w}")?;
-    }
-    Ok(())
+    crate::cli::output::warning_lines(out, &f.warnings)
 }

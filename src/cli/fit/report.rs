@@ -315,10 +315,7 @@ pub fn text(
         ],
     ];
     table(out, "  ", &rows)?;
-    for w in &f.warnings {
-        writeln!(out, "warning: {w}")?;
-    }
-    Ok(())
+    Ok(crate::cli::output::warning_lines(out, &f.warnings)?)
 }
 
 /// The air a drop fit assumed, stated with its answer: in vacuum (the default) the fit reads
