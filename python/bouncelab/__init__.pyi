@@ -304,14 +304,29 @@ def fit_oblique(
     FILE:LINE:COLUMN (arrays: the row and column); check ``identified`` as the command line's
     exit code does."""
 
-class Drop(TypedDict):
+class DropStandard(TypedDict):
+    """The verdict of ``bouncelab drop --standard NAME``: ``window`` [lo, hi] (m of rebound in
+    the standard's convention, or a COR; None where the standard sets no bound), ``measured``
+    in the same units, ``margin`` the distance to the nearer bound (positive inside)."""
+    name: str
+    window: list[Optional[float]]
+    measured: float
+    verdict: Literal["pass", "fail"]
+    margin: float
+
+class _DropKeys(TypedDict):
     height: float
     drag: bool
     bounces: dict[str, Array]
+    warnings: list[str]
+
+class Drop(_DropKeys, total=False):
+    """The keys of ``bouncelab drop --format json``; ``standard`` only when one is named."""
+    standard: DropStandard
 
 def drop(
     preset: str = "superball",
-    height: float = 1.0,
+    height: Optional[float] = None,
     bounces: int = 10,
     min_rebound: float = 0.001,
     drag: bool = True,
@@ -319,9 +334,16 @@ def drop(
     air_density: Optional[float] = None,
     law: Optional[Law] = None,
     params: Optional[ParamSet] = None,
+    standard: Optional[str] = None,
 ) -> Drop:
-    """A drop test, bounce by bounce, as ``bouncelab drop``: ``bounces`` holds arrays v_in,
-    v_out, cor, rebound_height, contact_time, max_force, t_start (one entry a bounce)."""
+    """A drop test, bounce by bounce, as ``bouncelab drop --format json``: released from rest at
+    ``height`` (m, the bottom of the ball; default the standard's drop height, else 1 m);
+    ``bounces`` holds arrays v_in, v_out, cor, rebound_height, contact_time, max_force, t_start
+    (one entry a bounce; on a fitted preset also ``cor_ci95_lo``, ``cor_ci95_hi``, … for cor,
+    max_force, contact_time, rebound_height); ``warnings`` what the caller should know. With
+    ``standard`` (a name ``bouncelab standards`` lists, e.g. ``"itf"``), ``standard`` holds the
+    verdict of that standard's own test (its drop height, or its COR speed) in this drop's air,
+    whatever ``height`` says."""
 
 class Collision:
     """A two-body impact, SI units: the keys of ``bouncelab collide --format json``."""

@@ -15,6 +15,7 @@ mod arrays;
 mod batch;
 mod catalog_cache;
 mod collide;
+mod drops;
 mod fits;
 mod impact;
 mod interrupt;
@@ -69,7 +70,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(sweeps::sweep_zeta, m)?)?;
     m.add_function(wrap_pyfunction!(sweeps::sweep_velocity, m)?)?;
     m.add_function(wrap_pyfunction!(preset_fits::fit, m)?)?;
-    m.add_function(wrap_pyfunction!(preset_fits::drop_test, m)?)?;
+    m.add_function(wrap_pyfunction!(drops::drop_test, m)?)?;
     m.add_function(wrap_pyfunction!(fits::fit_trace, m)?)?;
     m.add_function(wrap_pyfunction!(fits::fit_cor_table, m)?)?;
     m.add_function(wrap_pyfunction!(fits::fit_drops, m)?)?;

@@ -261,6 +261,16 @@ def test_a_user_preset_is_seen_as_the_cli_sees_it(no_user_presets):
         ({"drag": False, "min_rebound": 0.05}, ["--no-drag", "--min-rebound", "0.05"]),
         ({"preset": "golf", "drag_coefficient": 0.25, "air_density": 1.0, "law": "hertz"},
          ["--preset", "golf", "--drag-coefficient", "0.25", "--air-density", "1", "--law", "hertz"]),
+        # a standard: its verdict under "standard", the drop from its own height when none is
+        # given, judged on its own drop when one is (docs/drop.md, "Standards")
+        ({"preset": "tennis", "standard": "itf", "bounces": 2}, ["--preset", "tennis", "--standard", "itf", "--bounces", "2"]),
+        ({"preset": "tennis", "standard": "itf", "height": 1.0, "bounces": 1},
+         ["--preset", "tennis", "--standard", "itf", "--height", "1", "--bounces", "1"]),
+        ({"preset": "basketball", "standard": "fiba", "bounces": 1}, ["--preset", "basketball", "--standard", "fiba", "--bounces", "1"]),
+        ({"preset": "softball", "standard": "softball-47", "bounces": 1},
+         ["--preset", "softball", "--standard", "softball-47", "--bounces", "1"]),
+        ({"preset": "table-tennis", "standard": "ittf", "drag": False, "bounces": 1},
+         ["--preset", "table-tennis", "--standard", "ittf", "--no-drag", "--bounces", "1"]),
     ],
 )
 def test_drop_equals_the_cli_json(kwargs, args):
@@ -286,6 +296,7 @@ ERRORS = [
     (lambda: bouncelab.drop(bounces=0), ["drop", "--bounces", "0"]),
     (lambda: bouncelab.drop(height=-1.0), ["drop", "--height", "-1"]),
     (lambda: bouncelab.drop(drag_coefficient=-1.0), ["drop", "--drag-coefficient", "-1"]),
+    (lambda: bouncelab.drop(standard="nope"), ["drop", "--standard", "nope"]),
 ]
 
 
