@@ -1,7 +1,7 @@
 //! `oblique`: one oblique impact with friction and spin (docs/oblique.md), as `bouncelab
 //! oblique --format json`: the same fields, by the same names.
 
-use crate::{array, error, history_samples, preset_ball};
+use crate::{error, frozen_array, history_samples, preset_ball};
 use bouncelab::BallError;
 use bouncelab::api::ObliqueSpec;
 use bouncelab::oblique::ObliqueResponse;
@@ -31,7 +31,7 @@ pub(crate) struct ObliqueImpact {
     contact_time: f64,
     max_normal_force: f64,
     max_friction_force: f64,
-    energy: Py<PyDict>,
+    energy: EnergyTerms,
     t: Option<Py<PyArray1<f64>>>,
     normal_force: Option<Py<PyArray1<f64>>>,
     friction_force: Option<Py<PyArray1<f64>>>,
@@ -39,6 +39,25 @@ pub(crate) struct ObliqueImpact {
     spin: Option<Py<PyArray1<f64>>>,
     /// `Ball::oblique_warnings`, as the JSON's `warnings`.
     warnings: Vec<String>,
+}
+
+/// The energy terms (J; `residual` relative), handed to Python as a new dict at each read: a
+/// dict kept in the result and handed out would let `o.energy[k] = …` change every later read
+/// (python/tests/test_frozen_results.py).
+struct EnergyTerms([(&'static str, f64); 8]);
+
+impl<'py> IntoPyObject<'py> for &EnergyTerms {
+    type Target = PyDict;
+    type Output = Bound<'py, PyDict>;
+    type Error = PyErr;
+
+    fn into_pyobject(self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        let d = PyDict::new(py);
+        for (k, v) in self.0 {
+            d.set_item(k, v)?;
+        }
+        Ok(d)
+    }
 }
 
 #[pymethods]
@@ -54,8 +73,7 @@ impl ObliqueImpact {
 
 fn build(py: Python<'_>, r: ObliqueResponse, warnings: Vec<String>) -> PyResult<ObliqueImpact> {
     let e = &r.energy;
-    let energy = PyDict::new(py);
-    for (k, v) in [
+    let energy = EnergyTerms([
         ("translational_in", e.translational_in),
         ("rotational_in", e.rotational_in),
         ("translational_out", e.translational_out),
@@ -64,16 +82,14 @@ fn build(py: Python<'_>, r: ObliqueResponse, warnings: Vec<String>) -> PyResult<
         ("friction_dissipation", e.friction_dissipation),
         ("tangential_spring", e.tangential_spring),
         ("residual", e.residual),
-    ] {
-        energy.set_item(k, v)?;
-    }
+    ]);
     let (mut t, mut fn_, mut ft, mut vc, mut w) = (None, None, None, None, None);
     if let Some(h) = r.history {
-        t = Some(array(py, h.t));
-        fn_ = Some(array(py, h.normal_force));
-        ft = Some(array(py, h.friction_force));
-        vc = Some(array(py, h.slip_velocity));
-        w = Some(array(py, h.spin));
+        t = Some(frozen_array(py, h.t));
+        fn_ = Some(frozen_array(py, h.normal_force));
+        ft = Some(frozen_array(py, h.friction_force));
+        vc = Some(frozen_array(py, h.slip_velocity));
+        w = Some(frozen_array(py, h.spin));
     }
     Ok(ObliqueImpact {
         v_in: r.v_in,
@@ -94,7 +110,7 @@ fn build(py: Python<'_>, r: ObliqueResponse, warnings: Vec<String>) -> PyResult<
         contact_time: r.contact_time,
         max_normal_force: r.max_normal_force,
         max_friction_force: r.max_friction_force,
-        energy: energy.unbind(),
+        energy,
         t,
         normal_force: fn_,
         friction_force: ft,
