@@ -2,8 +2,7 @@
 
 Two references: the transcripts stored by the Rust test tests/cli_golden.rs (tests/golden/*.txt,
 what `bouncelab ARGS` printed, byte for byte), and the `bouncelab` binary itself, run on the
-same arguments (BOUNCELAB_BIN, default $CARGO_TARGET_DIR/debug/bouncelab, CARGO_TARGET_DIR
-defaulting to target/ at the repository's root; .ci/run builds it before pytest runs). Values
+same arguments (cli_binary.py: BOUNCELAB_BIN, default $CARGO_TARGET_DIR/debug/bouncelab). Values
 must agree to 1e-12, messages word for word.
 """
 
@@ -18,6 +17,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from cli_binary import binary
 
 import bouncelab
 
@@ -31,16 +31,6 @@ def no_user_presets(tmp_path, monkeypatch):
     """Both the binary and the bindings read $XDG_CONFIG_HOME/bouncelab/presets: an empty one."""
     monkeypatch.setenv("XDG_CONFIG_HOME", str(tmp_path / "config"))
     return tmp_path / "config" / "bouncelab" / "presets"
-
-
-def binary():
-    target = ROOT / os.environ.get("CARGO_TARGET_DIR", "target")  # an absolute one replaces ROOT
-    path = os.environ.get("BOUNCELAB_BIN") or str(target / "debug" / "bouncelab")
-    if not Path(path).is_file():
-        if os.environ.get("BOUNCELAB_BIN"):
-            pytest.fail(f"BOUNCELAB_BIN={path} is not a file")
-        pytest.skip(f"no bouncelab binary at {path} (cargo build, or set BOUNCELAB_BIN)")
-    return path
 
 
 def cli(*args):

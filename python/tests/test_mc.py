@@ -9,6 +9,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from cli_binary import binary
 
 import bouncelab
 
@@ -19,15 +20,6 @@ VARY = {"k_p": 0.05, "c": 0.05, "k_r": 0.05}
 @pytest.fixture(autouse=True)
 def no_user_presets(tmp_path, monkeypatch):
     monkeypatch.setenv("XDG_CONFIG_HOME", str(tmp_path / "config"))
-
-
-def binary():
-    path = os.environ.get("BOUNCELAB_BIN") or str(ROOT / "target" / "debug" / "bouncelab")
-    if not Path(path).is_file():
-        if os.environ.get("BOUNCELAB_BIN"):
-            pytest.fail(f"BOUNCELAB_BIN={path} is not a file")
-        pytest.skip(f"no bouncelab binary at {path}")
-    return path
 
 
 def cli(*args):

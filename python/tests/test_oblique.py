@@ -2,17 +2,23 @@
 
 import json
 import math
-import os
 import subprocess
 
 import pytest
+from cli_binary import binary
 
 import bouncelab
 
 
+@pytest.fixture(autouse=True)
+def no_user_presets(tmp_path, monkeypatch):
+    """Both the binary and the package read $XDG_CONFIG_HOME/bouncelab/presets: an empty one."""
+    monkeypatch.setenv("XDG_CONFIG_HOME", str(tmp_path / "config"))
+
+
 def cli_json(*args):
-    exe = os.environ.get("BOUNCELAB_BIN", "bouncelab")
-    out = subprocess.run([exe, *args, "--format", "json"], check=True, capture_output=True, text=True)
+    out = subprocess.run([binary(), *args, "--format", "json"], check=True, capture_output=True,
+                         text=True)
     return json.loads(out.stdout)
 
 

@@ -6,14 +6,12 @@ import copy
 import os
 import pickle
 import subprocess
-from pathlib import Path
 
 import numpy as np
 import pytest
+from cli_binary import binary
 
 import bouncelab
-
-ROOT = Path(__file__).resolve().parents[2]
 
 
 @pytest.fixture(autouse=True)
@@ -70,9 +68,7 @@ def run_golf(v0):
 
 
 def test_a_fitted_presets_intervals_travel_too(tmp_path, monkeypatch):
-    path = os.environ.get("BOUNCELAB_BIN") or str(ROOT / "target" / "debug" / "bouncelab")
-    if not Path(path).is_file():
-        pytest.skip(f"no bouncelab binary at {path}")
+    path = binary()
     home = tmp_path / "config"
     monkeypatch.setenv("HOME", str(home))
     table = tmp_path / "cors.csv"

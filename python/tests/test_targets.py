@@ -5,13 +5,12 @@ import json
 import math
 import os
 import subprocess
-from pathlib import Path
 
 import pytest
+from cli_binary import binary
 
 import bouncelab
 
-ROOT = Path(__file__).resolve().parents[2]
 KEYS = [
     "cor",
     "apparent_cor",
@@ -33,10 +32,7 @@ def no_user_presets(tmp_path, monkeypatch):
 
 
 def cli(*args):
-    path = os.environ.get("BOUNCELAB_BIN") or str(ROOT / "target" / "debug" / "bouncelab")
-    if not Path(path).is_file():
-        pytest.skip(f"no bouncelab binary at {path} (cargo build, or set BOUNCELAB_BIN)")
-    p = subprocess.run([path, *args], capture_output=True, text=True, env=os.environ)
+    p = subprocess.run([binary(), *args], capture_output=True, text=True, env=os.environ)
     return p.returncode, p.stdout, p.stderr
 
 
