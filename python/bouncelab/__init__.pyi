@@ -304,6 +304,35 @@ def fit_oblique(
     FILE:LINE:COLUMN (arrays: the row and column); check ``identified`` as the command line's
     exit code does."""
 
+class StandardTest(TypedDict, total=False):
+    """What a standard measures: ``kind`` "drop" (``height`` m to ``drop_ref``, the rebound
+    read at ``rebound_ref``: "bottom" or "top"), "cor" and "bbcor" (``speed`` m/s),
+    "court-pace" (``speed`` m/s at ``angle_deg``)."""
+    kind: Literal["drop", "cor", "bbcor", "court-pace"]
+    height: float
+    drop_ref: Literal["bottom", "top"]
+    rebound_ref: Literal["bottom", "top"]
+    speed: float
+    angle_deg: float
+
+class Standard(TypedDict, total=False):
+    """One governing body's test, as ``bouncelab standards --format json`` lists it."""
+    name: str
+    title: str
+    test: StandardTest
+    surface: str
+    window: list[Optional[float]]
+    categories: list[float]
+    balls: list[str]
+    source: str
+    unconfirmed: Optional[str]
+
+def standards() -> list[Standard]:
+    """The standards, as ``bouncelab standards --format json``: the ball standards, the bat
+    standards and the court pace, in one list. The names of kind "drop" and "cor" are what
+    ``drop(standard=…)`` and ``batch(standard=…)`` take (docs/drop.md, "Standards", cites
+    each source; ``unconfirmed`` says what a public source did not confirm)."""
+
 class DropStandard(TypedDict):
     """The verdict of ``bouncelab drop --standard NAME``: ``window`` [lo, hi] (m of rebound in
     the standard's convention, or a COR; None where the standard sets no bound), ``measured``

@@ -25,6 +25,7 @@ mod oblique_fit;
 mod preset_balls;
 mod preset_fits;
 mod runs;
+mod standards;
 mod sweeps;
 
 // the helpers every call uses, by the names the modules import them by
@@ -71,6 +72,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(sweeps::sweep_velocity, m)?)?;
     m.add_function(wrap_pyfunction!(preset_fits::fit, m)?)?;
     m.add_function(wrap_pyfunction!(drops::drop_test, m)?)?;
+    m.add_function(wrap_pyfunction!(standards::standards, m)?)?;
     m.add_function(wrap_pyfunction!(fits::fit_trace, m)?)?;
     m.add_function(wrap_pyfunction!(fits::fit_cor_table, m)?)?;
     m.add_function(wrap_pyfunction!(fits::fit_drops, m)?)?;
