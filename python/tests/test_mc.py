@@ -190,6 +190,20 @@ def test_dask_refuses_bad_input_on_the_client(client):
         bouncelab.dask.monte_carlo(client, preset="golf", vary=VARY, samples=10**8, chunk=2 * 10**7)
 
 
+def test_dask_names_a_number_out_of_range_as_monte_carlo_does():
+    # checked on the client, before any task: no cluster needed. Before, the check called the
+    # native module past the boundary's guard, and a samples=-1 raised OverflowError "can't
+    # convert negative int to unsigned", naming nothing
+    import bouncelab.dask
+
+    for kw in [dict(samples=-1), dict(samples=10, seed=-1), dict(samples=10**30)]:
+        with pytest.raises(OverflowError) as want:
+            bouncelab.monte_carlo(preset="golf", vary=VARY, **kw)
+        with pytest.raises(OverflowError) as got:
+            bouncelab.dask.monte_carlo(None, preset="golf", vary=VARY, **kw)
+        assert str(got.value) == str(want.value) and str(want.value).startswith("invalid ")
+
+
 def test_correlated_samples_as_the_command_line():
     """`correlate` (a dict or the command line's text) gives `mc --correlate`'s numbers, and the
     varied parameters the correlation asked for."""
