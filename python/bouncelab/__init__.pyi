@@ -80,6 +80,15 @@ class Impact:
     @property
     def displacement(self) -> Optional[Array]:
         """α(t) (m), with ``history=True``."""
+    @property
+    def cor_ci95(self) -> Optional[tuple[float, float]]:
+        """The COR's 95 % interval on a preset saved by ``fit --save``, else None."""
+    @property
+    def max_force_ci95(self) -> Optional[tuple[float, float]]:
+        """The peak force's 95 % interval (N) on a fitted preset, else None."""
+    @property
+    def contact_time_ci95(self) -> Optional[tuple[float, float]]:
+        """The contact time's 95 % interval (s) on a fitted preset, else None."""
     def __eq__(self, other: object) -> bool:
         """Equal values (every attribute; the history arrays element by element)."""
     def __reduce__(self) -> tuple: ...
@@ -177,6 +186,17 @@ class Estimate(TypedDict):
     std_error: float
     ci95: tuple[float, float]
 
+class LackOfFit(TypedDict):
+    """The residuals' test (docs/fitting.md, "Lack of fit"): the runs test's z or χ², and the
+    one-sided p-value."""
+    test: Literal["runs", "chi2"]
+    statistic: float
+    p_value: float
+
+class DropAir(TypedDict):
+    drag_coefficient: float
+    air_density: float
+
 class MultiFit(TypedDict, total=False):
     """A multi-parameter fit: the keys of ``bouncelab fit --format json`` (SI), and
     ``model``, the model at each data point (N for a trace, COR for a table). The keys
@@ -203,8 +223,19 @@ class MultiFit(TypedDict, total=False):
     time_offset: float
     nuisance: dict[str, Estimate]
     warnings: list[str]
+    identified: bool
+    not_pinned: list[str]
+    on_bound: list[str]
+    lack_of_fit: Optional[LackOfFit]
+    exact: bool
+    v0: float
+    target_cor: float
+    cor: float
+    max_force: float
+    contact_time: Optional[float]
     model: Array
     drops: dict[str, Array]
+    air: Optional[DropAir]
 
 def fit_trace(
     time: Floats,
