@@ -9,7 +9,8 @@ import numpy.typing as npt
 
 Law = Literal["linear", "elastic-plastic", "hertz"]
 ParamSet = Literal["adopted", "materials"]
-Floats = Union[float, Sequence[float], npt.Array]
+# one number, a sequence of numbers or a 1-D numpy array of any real dtype
+Floats = Union[float, Sequence[float], npt.NDArray[Union[np.floating[Any], np.integer[Any]]]]
 Array = npt.NDArray[np.float64]
 
 class NoAnswerError(ValueError):

@@ -40,6 +40,23 @@ def declared(name, classes=None):
     return {**out, **names}
 
 
+def test_every_name_the_stub_takes_from_a_module_exists():
+    # `npt.Array`, which numpy.typing never had, made `Floats` an error for a type checker
+    import numpy
+    import numpy.typing
+    import os
+    import typing
+
+    modules = {"np": numpy, "npt": numpy.typing, "os": os, "typing": typing}
+    tree = ast.parse(STUB.read_text())
+    used = {(n.value.id, n.attr) for n in ast.walk(tree)
+            if isinstance(n, ast.Attribute) and isinstance(n.value, ast.Name)
+            and n.value.id in modules}
+    assert used, "the stub takes nothing from a module?"
+    missing = [f"{m}.{a}" for m, a in sorted(used) if not hasattr(modules[m], a)]
+    assert not missing, missing
+
+
 def history():
     return bouncelab.run(preset="golf", v0=3.0, history=True, samples=200)
 
