@@ -128,7 +128,7 @@ def run_params(
     c: float,
     k_r: float,
     v0: float,
-    z_p: float = ...,
+    z_p: float = float("inf"),
     k_h: Optional[float] = None,
     law: Law = "linear",
     history: bool = False,

@@ -87,6 +87,11 @@ impl From<CollisionReport> for Collision {
 /// preset ball with `target_preset` (instead of `target_mass`). `target_mass = inf` is the wall.
 #[pyfunction]
 #[pyo3(signature = (preset="superball", v0=None, target_mass=None, target_speed=0.0, target_stiffness=f64::INFINITY, target_damping=0.0, target_preset=None, law=None, params=None))]
+// help()'s signature, which pyo3 writes "..." for f64::INFINITY in (shown "Ellipsis"): 1e999
+// is the literal Python reads as inf, shown "inf" (test_the_stub_and_help_give_each_…)
+#[pyo3(
+    text_signature = "(preset='superball', v0=None, target_mass=None, target_speed=0.0, target_stiffness=1e999, target_damping=0.0, target_preset=None, law=None, params=None)"
+)]
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn collide(
     preset: &str,

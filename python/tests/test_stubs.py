@@ -3,6 +3,8 @@ out, and a key it promises always (a TypedDict's required key) is always there: 
 completes what exists and a type checker accepts what the package returns."""
 
 import ast
+import inspect
+import pydoc
 from pathlib import Path
 
 import pytest
@@ -55,6 +57,35 @@ def test_every_name_the_stub_takes_from_a_module_exists():
     assert used, "the stub takes nothing from a module?"
     missing = [f"{m}.{a}" for m, a in sorted(used) if not hasattr(modules[m], a)]
     assert not missing, missing
+
+
+FUNCTIONS = [n for n in bouncelab.__all__ if not isinstance(getattr(bouncelab, n), type)]
+
+
+def stub_functions():
+    return {n.name: n for n in ast.parse(STUB.read_text()).body if isinstance(n, ast.FunctionDef)}
+
+
+@pytest.mark.parametrize("name", FUNCTIONS)
+def test_the_stub_and_help_give_each_function_as_it_is(name):
+    # help() shows the runtime signature: a default pyo3 cannot spell was "Ellipsis" there
+    # (collide's target_stiffness, run_params' z_p, monte_carlo's samples)
+    f = getattr(bouncelab, name)
+    real = inspect.signature(f).parameters
+    assert "Ellipsis" not in pydoc.render_doc(f, renderer=pydoc.plaintext)
+    a = stub_functions()[name].args
+    positional = a.posonlyargs + a.args
+    stub = [(p, d, inspect.Parameter.POSITIONAL_OR_KEYWORD)
+            for p, d in zip(positional, [None] * (len(positional) - len(a.defaults)) + a.defaults)]
+    stub += [(p, d, inspect.Parameter.KEYWORD_ONLY) for p, d in zip(a.kwonlyargs, a.kw_defaults)]
+    assert [p.arg for p, _, _ in stub] == list(real)
+    for p, default, kind in stub:
+        r = real[p.arg]
+        assert r.kind == kind, (p.arg, r.kind)
+        if default is None:
+            assert r.default is inspect.Parameter.empty, p.arg
+        else:
+            assert eval(ast.unparse(default), {"float": float}) == r.default, p.arg
 
 
 def history():
