@@ -450,8 +450,18 @@ def collide(
     (``target_preset``)."""
 
 class ObliqueImpact:
-    """An oblique impact, SI units; attributes are ``bouncelab oblique --format json``'s keys."""
+    """An oblique impact, SI units; attributes are ``bouncelab oblique --format json``'s keys:
+    the ball, the tangential model that ran (K_t as given, else Mindlin's from the preset's
+    Poisson ratio; κ as given, else the preset's) and the answer."""
 
+    preset: Optional[str]
+    origin: str
+    parameters: str
+    law: Law
+    friction: float
+    tangential_stiffness: Optional[float]
+    inertia_factor: float
+    radius: Optional[float]
     v_in: float
     angle_in_deg: float
     spin_in: float

@@ -2,17 +2,29 @@
 //! oblique --format json`: the same fields, by the same names.
 
 use crate::{error, frozen_array, history_samples, preset_ball};
-use bouncelab::BallError;
 use bouncelab::api::ObliqueSpec;
 use bouncelab::oblique::ObliqueResponse;
+use bouncelab::{Ball, BallError};
 use numpy::PyArray1;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
 /// An oblique impact, SI units; attribute names are the keys of `bouncelab oblique --format
-/// json` (`energy` a dict of its terms; the history arrays `None` unless asked for).
+/// json`: the ball (`preset`, `origin`, `parameters`, `law`), the tangential model it ran
+/// (`friction`, `tangential_stiffness`, `inertia_factor`, `radius`) and the answer (`energy` a
+/// dict of its terms; the history arrays `None` unless asked for).
 #[pyclass(frozen, get_all, module = "bouncelab")]
 pub(crate) struct ObliqueImpact {
+    preset: Option<String>,
+    origin: String,
+    parameters: &'static str,
+    law: &'static str,
+    friction: f64,
+    /// K_t as given, else Mindlin's from the preset's Poisson ratio (None without one).
+    tangential_stiffness: Option<f64>,
+    inertia_factor: f64,
+    /// R (m), None for a ball without a measured radius.
+    radius: Option<f64>,
     v_in: f64,
     angle_in_deg: f64,
     spin_in: f64,
@@ -71,7 +83,16 @@ impl ObliqueImpact {
     }
 }
 
-fn build(py: Python<'_>, r: ObliqueResponse, warnings: Vec<String>) -> PyResult<ObliqueImpact> {
+/// The result of `r`, an oblique impact of `ball` as `spec` asked: the answer with the ball and
+/// the tangential model that ran, each as the command line's JSON gives it (src/cli/oblique.rs).
+fn build(
+    py: Python<'_>,
+    ball: &Ball,
+    spec: &ObliqueSpec,
+    r: ObliqueResponse,
+) -> PyResult<ObliqueImpact> {
+    let warnings = ball.oblique_warnings(&r);
+    let header = ball.header();
     let e = &r.energy;
     let energy = EnergyTerms([
         ("translational_in", e.translational_in),
@@ -92,6 +113,14 @@ fn build(py: Python<'_>, r: ObliqueResponse, warnings: Vec<String>) -> PyResult<
         w = Some(frozen_array(py, h.spin));
     }
     Ok(ObliqueImpact {
+        preset: header.preset.map(String::from),
+        origin: header.origin.to_string(),
+        parameters: ball.source,
+        law: header.law,
+        friction: spec.friction,
+        tangential_stiffness: spec.tangential_stiffness.or(ball.tangential_stiffness()),
+        inertia_factor: spec.inertia_factor.unwrap_or_else(|| ball.inertia_factor()),
+        radius: Some(ball.radius()).filter(|r| !r.is_nan()),
         v_in: r.v_in,
         angle_in_deg: r.angle_in_deg,
         spin_in: r.spin_in,
@@ -158,6 +187,5 @@ pub(crate) fn oblique(
     let r = ball
         .oblique(&spec, if history { samples } else { 0 })
         .map_err(error)?;
-    let warnings = ball.oblique_warnings(&r);
-    build(py, r, warnings)
+    build(py, &ball, &spec, r)
 }
