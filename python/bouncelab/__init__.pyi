@@ -433,6 +433,12 @@ class Collision:
     effective_mass: Optional[float]
     effective_radius: Optional[float]
     warnings: list[str]
+    def to_dict(self) -> dict:
+        """The keys of ``bouncelab collide --format json``, the target's under ``target``
+        (``mass``, ``speed``, ``stiffness``, ``damping``; inf for the JSON's null)."""
+    def __eq__(self, other: object) -> bool:
+        """Equal values (every attribute)."""
+    def __reduce__(self) -> tuple: ...
 
 def collide(
     preset: str = "superball",
@@ -487,6 +493,11 @@ class ObliqueImpact:
     slip_velocity: Optional[Array]
     spin: Optional[Array]
     warnings: list[str]
+    def to_dict(self) -> dict:
+        """The keys of ``bouncelab oblique --format json``, the history arrays with a history."""
+    def __eq__(self, other: object) -> bool:
+        """Equal values (every attribute; the history arrays element by element)."""
+    def __reduce__(self) -> tuple: ...
 
 def oblique(
     preset: str = "superball",

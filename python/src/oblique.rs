@@ -17,8 +17,8 @@ use pyo3::types::PyDict;
 pub(crate) struct ObliqueImpact {
     preset: Option<String>,
     origin: String,
-    parameters: &'static str,
-    law: &'static str,
+    parameters: String,
+    law: String,
     friction: f64,
     /// K_t as given, else Mindlin's from the preset's Poisson ratio (None without one).
     tangential_stiffness: Option<f64>,
@@ -53,10 +53,23 @@ pub(crate) struct ObliqueImpact {
     warnings: Vec<String>,
 }
 
-/// The energy terms (J; `residual` relative), handed to Python as a new dict at each read: a
-/// dict kept in the result and handed out would let `o.energy[k] = …` change every later read
-/// (python/tests/test_frozen_results.py).
-struct EnergyTerms([(&'static str, f64); 8]);
+/// The energy terms' keys, in the JSON's order.
+const ENERGY_KEYS: [&str; 8] = [
+    "translational_in",
+    "rotational_in",
+    "translational_out",
+    "rotational_out",
+    "normal_dissipation",
+    "friction_dissipation",
+    "tangential_spring",
+    "residual",
+];
+
+/// The energy terms (J; `residual` relative) under [`ENERGY_KEYS`], handed to Python as a new
+/// dict at each read: a dict kept in the result and handed out would let `o.energy[k] = …`
+/// change every later read (python/tests/test_frozen_results.py).
+#[derive(PartialEq)]
+struct EnergyTerms([f64; 8]);
 
 impl<'py> IntoPyObject<'py> for &EnergyTerms {
     type Target = PyDict;
@@ -65,12 +78,52 @@ impl<'py> IntoPyObject<'py> for &EnergyTerms {
 
     fn into_pyobject(self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
         let d = PyDict::new(py);
-        for (k, v) in self.0 {
+        for (k, v) in ENERGY_KEYS.iter().zip(self.0) {
             d.set_item(k, v)?;
         }
         Ok(d)
     }
 }
+
+/// The fields that are plain values, in the JSON's order (before `energy`, the history and
+/// `warnings`): one list for `to_dict`, `_from_state` and `==` (oblique_state.rs).
+macro_rules! plain_fields {
+    ($m:ident) => {
+        $m!(
+            preset,
+            origin,
+            parameters,
+            law,
+            friction,
+            tangential_stiffness,
+            inertia_factor,
+            radius,
+            v_in,
+            angle_in_deg,
+            spin_in,
+            vx_in,
+            vy_in,
+            v_out,
+            angle_out_deg,
+            spin_out,
+            vx_out,
+            vy_out,
+            cor_normal,
+            cor_tangential,
+            apparent_friction,
+            slid_throughout,
+            grip_time,
+            contact_time,
+            max_normal_force,
+            max_friction_force
+        )
+    };
+}
+
+// pickling, copies and value equality: a child module, so that it reads the fields without
+// widening them
+#[path = "oblique_state.rs"]
+mod state;
 
 #[pymethods]
 impl ObliqueImpact {
@@ -80,6 +133,43 @@ impl ObliqueImpact {
              apparent_friction={})",
             self.v_out, self.angle_out_deg, self.spin_out, self.cor_normal, self.apparent_friction
         )
+    }
+
+    /// The keys of `bouncelab oblique --format json` in its order, the history arrays (the
+    /// same read-only arrays as the attributes) only when there is a history.
+    fn to_dict<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        state::to_dict(self, py)
+    }
+
+    /// Pickling: the class's `_from_state` and `to_dict()` (every protocol).
+    fn __reduce__<'py>(
+        slf: &Bound<'py, Self>,
+    ) -> PyResult<(Bound<'py, PyAny>, (Bound<'py, PyDict>,))> {
+        let rebuild = slf.get_type().getattr("_from_state")?;
+        Ok((rebuild, (state::to_dict(slf.get(), slf.py())?,)))
+    }
+
+    /// The impact of a state [`ObliqueImpact::__reduce__`] wrote.
+    #[classmethod]
+    fn _from_state(
+        _cls: &Bound<'_, pyo3::types::PyType>,
+        state: &Bound<'_, PyDict>,
+    ) -> PyResult<ObliqueImpact> {
+        state::from_state(state)
+    }
+
+    /// Equal values: every attribute, the history arrays element by element.
+    fn __eq__(&self, py: Python<'_>, other: PyRef<'_, ObliqueImpact>) -> PyResult<bool> {
+        state::same(py, self, &other)
+    }
+
+    /// A frozen value (its arrays read-only) is its own copy.
+    fn __copy__(slf: Py<Self>) -> Py<Self> {
+        slf
+    }
+
+    fn __deepcopy__(slf: Py<Self>, _memo: &Bound<'_, PyAny>) -> Py<Self> {
+        slf
     }
 }
 
@@ -95,14 +185,14 @@ fn build(
     let header = ball.header();
     let e = &r.energy;
     let energy = EnergyTerms([
-        ("translational_in", e.translational_in),
-        ("rotational_in", e.rotational_in),
-        ("translational_out", e.translational_out),
-        ("rotational_out", e.rotational_out),
-        ("normal_dissipation", e.normal_dissipation),
-        ("friction_dissipation", e.friction_dissipation),
-        ("tangential_spring", e.tangential_spring),
-        ("residual", e.residual),
+        e.translational_in,
+        e.rotational_in,
+        e.translational_out,
+        e.rotational_out,
+        e.normal_dissipation,
+        e.friction_dissipation,
+        e.tangential_spring,
+        e.residual,
     ]);
     let (mut t, mut fn_, mut ft, mut vc, mut w) = (None, None, None, None, None);
     if let Some(h) = r.history {
@@ -115,8 +205,8 @@ fn build(
     Ok(ObliqueImpact {
         preset: header.preset.map(String::from),
         origin: header.origin.to_string(),
-        parameters: ball.source,
-        law: header.law,
+        parameters: ball.source.to_string(),
+        law: header.law.to_string(),
         friction: spec.friction,
         tangential_stiffness: spec.tangential_stiffness.or(ball.tangential_stiffness()),
         inertia_factor: spec.inertia_factor.unwrap_or_else(|| ball.inertia_factor()),

@@ -58,6 +58,7 @@ def test_an_oblique_impacts_history_and_energy_cannot_be_changed():
     o = bouncelab.oblique("tennis", angle=20.0, friction=0.5, spin=100.0, history=True, samples=20)
     for k in OBLIQUE_HISTORY:
         assert_frozen(getattr(o, k))
+        assert_frozen(pickle.loads(pickle.dumps(o)).__getattribute__(k))
     residual = o.energy["residual"]
     o.energy["residual"] = 99.0
     o.warnings.append("mine")

@@ -37,11 +37,25 @@ def test_every_field_of_the_command_line(kwargs, args):
     # from Mindlin's ratio was not to be seen)
     r = bouncelab.oblique("tennis", **kwargs)
     cli = cli_json("oblique", "--preset", "tennis", *args)
-    assert set(cli) == {k for k in dir(r) if not k.startswith("_")} - {
+    assert set(cli) == {k for k in dir(r) if not k.startswith("_") and k != "to_dict"} - {
         "t", "normal_force", "friction_force", "slip_velocity", "spin"}
     for key, want in cli.items():
         assert getattr(r, key) == want, key
     assert r.t is None
+    assert r.to_dict() == cli
+
+
+def test_to_dict_with_a_history_is_the_json_with_its_arrays():
+    r = bouncelab.oblique("tennis", angle=20.0, friction=0.5, history=True, samples=30)
+    cli = cli_json("oblique", "--preset", "tennis", "--angle", "20", "--friction", "0.5",
+                   "--history", "--samples", "30")
+    d = r.to_dict()
+    assert list(d) == list(cli)
+    for key, want in cli.items():
+        if isinstance(want, list) and key != "warnings":
+            assert d[key] is getattr(r, key) and list(d[key]) == want, key
+        else:
+            assert d[key] == want, key
 
 
 def test_history_and_limits():

@@ -10,6 +10,7 @@ import pytest
 from cli_binary import binary
 
 import bouncelab
+from test_bouncelab import same
 
 KEYS = [
     "cor",
@@ -64,6 +65,8 @@ def test_collide_is_the_command_lines(kwargs, args):
     for key in ["method", "rebound", "ball", "law", "effective_mass", "effective_radius"]:
         assert getattr(got, key) == want[key], key
     assert got.target_mass == want["target"]["mass"]
+    # the whole document, warnings and the target's object included (inf for its nulls)
+    same(got.to_dict(), want)
 
 
 def test_the_wall_is_run():
