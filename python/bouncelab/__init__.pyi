@@ -404,7 +404,8 @@ def drop(
     max_force, contact_time, rebound_height); ``warnings`` what the caller should know. With
     ``standard`` (a name ``bouncelab standards`` lists, e.g. ``"itf"``), ``standard`` holds the
     verdict of that standard's own test (its drop height, or its COR speed) in this drop's air,
-    whatever ``height`` says."""
+    whatever ``height`` says. No standard is judged unless named, as on the command line; a
+    preset's own is the one whose ``balls`` list it in ``standards()``."""
 
 class Collision:
     """A two-body impact, SI units: the keys of ``bouncelab collide --format json``."""

@@ -18,7 +18,9 @@ const DEFAULT_HEIGHT: f64 = 1.0;
 /// height, else 1 m). A dict with `height`, `drag`, `bounces` (a dict of numpy arrays with the
 /// JSON's per-bounce keys, one entry a bounce), `warnings`, and with `standard` named (as
 /// `bouncelab standards` lists them), `standard`: the verdict (name, window, measured, verdict,
-/// margin) of that standard's own test in this drop's air, whatever `height` says.
+/// margin) of that standard's own test in this drop's air, whatever `height` says. No standard
+/// is judged unless named, as on the command line; a preset's own is the one whose `balls`
+/// list it in `standards()`.
 #[pyfunction(name = "drop")]
 #[pyo3(signature = (preset="superball", height=None, bounces=10, min_rebound=0.001, drag=true, drag_coefficient=None, air_density=None, law=None, params=None, standard=None))]
 #[allow(clippy::too_many_arguments)]
