@@ -2,6 +2,7 @@
 //! own (docs/targets.md), as `bouncelab collide --format json`: the same fields, by the same
 //! names.
 
+use crate::same::Same;
 use crate::{error, preset_ball};
 use bouncelab::Ball;
 use bouncelab::api::CollisionReport;
@@ -13,8 +14,7 @@ use pyo3::types::PyDict;
 /// A two-body impact, SI units; attribute names are the keys of `bouncelab collide --format
 /// json` (the target's fields as `target_mass`, `target_speed`, `target_stiffness`,
 /// `target_damping`).
-#[pyclass(frozen, get_all, eq, module = "bouncelab")]
-#[derive(Clone, PartialEq)]
+#[pyclass(frozen, get_all, module = "bouncelab")]
 pub(crate) struct Collision {
     ball: Option<String>,
     law: String,
@@ -140,6 +140,25 @@ impl Collision {
             };
         }
         Ok(answer_keys!(take))
+    }
+
+    /// Equal values: every attribute, a NaN equal to a NaN (as `Impact`'s).
+    fn __eq__(&self, other: PyRef<'_, Collision>) -> bool {
+        macro_rules! all_same {
+            ($($k:ident),*) => {
+                true $(&& self.$k.same(&other.$k))*
+            };
+        }
+        all_same!(
+            ball,
+            law,
+            ball_mass,
+            ball_speed,
+            target_mass,
+            target_speed,
+            target_stiffness,
+            target_damping
+        ) && answer_keys!(all_same)
     }
 
     /// A frozen value is its own copy.

@@ -25,6 +25,7 @@ mod oblique_fit;
 mod preset_balls;
 mod preset_fits;
 mod runs;
+mod same;
 mod standards;
 mod sweeps;
 

@@ -68,7 +68,6 @@ const ENERGY_KEYS: [&str; 8] = [
 /// The energy terms (J; `residual` relative) under [`ENERGY_KEYS`], handed to Python as a new
 /// dict at each read: a dict kept in the result and handed out would let `o.energy[k] = …`
 /// change every later read (python/tests/test_frozen_results.py).
-#[derive(PartialEq)]
 struct EnergyTerms([f64; 8]);
 
 impl<'py> IntoPyObject<'py> for &EnergyTerms {

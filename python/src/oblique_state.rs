@@ -3,6 +3,7 @@
 
 use super::{ENERGY_KEYS, EnergyTerms, ObliqueImpact};
 use crate::frozen_array;
+use crate::same::Same;
 use numpy::{PyArray1, PyArrayMethods, PyReadonlyArray1};
 use pyo3::conversion::FromPyObjectOwned;
 use pyo3::exceptions::PyValueError;
@@ -84,19 +85,24 @@ pub(super) fn from_state(d: &Bound<'_, PyDict>) -> PyResult<ObliqueImpact> {
     Ok(plain_fields!(take))
 }
 
-/// Every field equal (NaN unequal, as for floats), the arrays element by element.
+/// Every field equal, a NaN equal to a NaN (as `Impact`'s), the arrays element by element.
 pub(super) fn same(py: Python<'_>, a: &ObliqueImpact, b: &ObliqueImpact) -> PyResult<bool> {
-    macro_rules! eq {
-        ($($k:ident),*) => { true $(&& a.$k == b.$k)* };
+    macro_rules! all_same {
+        ($($k:ident),*) => { true $(&& a.$k.same(&b.$k))* };
     }
-    if !(plain_fields!(eq) && a.energy == b.energy && a.warnings == b.warnings) {
+    if !(plain_fields!(all_same) && a.energy.0.same(&b.energy.0) && a.warnings == b.warnings) {
         return Ok(false);
     }
     for (x, y) in history(a).into_iter().zip(history(b)) {
         match (x, y) {
             (None, None) => {}
             (Some(x), Some(y)) => {
-                if x.bind(py).readonly().as_slice()? != y.bind(py).readonly().as_slice()? {
+                if !x
+                    .bind(py)
+                    .readonly()
+                    .as_slice()?
+                    .same(y.bind(py).readonly().as_slice()?)
+                {
                     return Ok(false);
                 }
             }
