@@ -38,6 +38,7 @@ from ._native import (
     run,
     run_normalized,
     run_params,
+    standards,
     sweep_velocity,
     sweep_zeta,
 )
@@ -61,6 +62,7 @@ presets = _guard(presets)
 run = _guard(run)
 run_normalized = _guard(run_normalized)
 run_params = _guard(run_params)
+standards = _guard(standards)
 sweep_velocity = _guard(sweep_velocity)
 sweep_zeta = _guard(sweep_zeta)
 
@@ -84,6 +86,7 @@ __all__ = [
     "run",
     "run_normalized",
     "run_params",
+    "standards",
     "sweep_velocity",
     "sweep_zeta",
 ]

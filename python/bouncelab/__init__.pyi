@@ -9,7 +9,8 @@ import numpy.typing as npt
 
 Law = Literal["linear", "elastic-plastic", "hertz"]
 ParamSet = Literal["adopted", "materials"]
-Floats = Union[float, Sequence[float], npt.Array]
+# one number, a sequence of numbers or a 1-D numpy array of any real dtype
+Floats = Union[float, Sequence[float], npt.NDArray[Union[np.floating[Any], np.integer[Any]]]]
 Array = npt.NDArray[np.float64]
 
 class NoAnswerError(ValueError):
@@ -80,6 +81,15 @@ class Impact:
     @property
     def displacement(self) -> Optional[Array]:
         """α(t) (m), with ``history=True``."""
+    @property
+    def cor_ci95(self) -> Optional[tuple[float, float]]:
+        """The COR's 95 % interval on a preset saved by ``fit --save``, else None."""
+    @property
+    def max_force_ci95(self) -> Optional[tuple[float, float]]:
+        """The peak force's 95 % interval (N) on a fitted preset, else None."""
+    @property
+    def contact_time_ci95(self) -> Optional[tuple[float, float]]:
+        """The contact time's 95 % interval (s) on a fitted preset, else None."""
     def __eq__(self, other: object) -> bool:
         """Equal values (every attribute; the history arrays element by element)."""
     def __reduce__(self) -> tuple: ...
@@ -118,7 +128,7 @@ def run_params(
     c: float,
     k_r: float,
     v0: float,
-    z_p: float = ...,
+    z_p: float = float("inf"),
     k_h: Optional[float] = None,
     law: Law = "linear",
     history: bool = False,
@@ -177,6 +187,17 @@ class Estimate(TypedDict):
     std_error: float
     ci95: tuple[float, float]
 
+class LackOfFit(TypedDict):
+    """The residuals' test (docs/fitting.md, "Lack of fit"): the runs test's z or χ², and the
+    one-sided p-value."""
+    test: Literal["runs", "chi2"]
+    statistic: float
+    p_value: float
+
+class DropAir(TypedDict):
+    drag_coefficient: float
+    air_density: float
+
 class MultiFit(TypedDict, total=False):
     """A multi-parameter fit: the keys of ``bouncelab fit --format json`` (SI), and
     ``model``, the model at each data point (N for a trace, COR for a table). The keys
@@ -203,8 +224,19 @@ class MultiFit(TypedDict, total=False):
     time_offset: float
     nuisance: dict[str, Estimate]
     warnings: list[str]
+    identified: bool
+    not_pinned: list[str]
+    on_bound: list[str]
+    lack_of_fit: Optional[LackOfFit]
+    exact: bool
+    v0: float
+    target_cor: float
+    cor: float
+    max_force: float
+    contact_time: Optional[float]
     model: Array
     drops: dict[str, Array]
+    air: Optional[DropAir]
 
 def fit_trace(
     time: Floats,
@@ -304,14 +336,58 @@ def fit_oblique(
     FILE:LINE:COLUMN (arrays: the row and column); check ``identified`` as the command line's
     exit code does."""
 
-class Drop(TypedDict):
+class StandardTest(TypedDict, total=False):
+    """What a standard measures: ``kind`` "drop" (``height`` m to ``drop_ref``, the rebound
+    read at ``rebound_ref``: "bottom" or "top"), "cor" and "bbcor" (``speed`` m/s),
+    "court-pace" (``speed`` m/s at ``angle_deg``)."""
+    kind: Literal["drop", "cor", "bbcor", "court-pace"]
+    height: float
+    drop_ref: Literal["bottom", "top"]
+    rebound_ref: Literal["bottom", "top"]
+    speed: float
+    angle_deg: float
+
+class Standard(TypedDict, total=False):
+    """One governing body's test, as ``bouncelab standards --format json`` lists it."""
+    name: str
+    title: str
+    test: StandardTest
+    surface: str
+    window: list[Optional[float]]
+    categories: list[float]
+    balls: list[str]
+    source: str
+    unconfirmed: Optional[str]
+
+def standards() -> list[Standard]:
+    """The standards, as ``bouncelab standards --format json``: the ball standards, the bat
+    standards and the court pace, in one list. The names of kind "drop" and "cor" are what
+    ``drop(standard=…)`` and ``batch(standard=…)`` take (docs/drop.md, "Standards", cites
+    each source; ``unconfirmed`` says what a public source did not confirm)."""
+
+class DropStandard(TypedDict):
+    """The verdict of ``bouncelab drop --standard NAME``: ``window`` [lo, hi] (m of rebound in
+    the standard's convention, or a COR; None where the standard sets no bound), ``measured``
+    in the same units, ``margin`` the distance to the nearer bound (positive inside)."""
+    name: str
+    window: list[Optional[float]]
+    measured: float
+    verdict: Literal["pass", "fail"]
+    margin: float
+
+class _DropKeys(TypedDict):
     height: float
     drag: bool
     bounces: dict[str, Array]
+    warnings: list[str]
+
+class Drop(_DropKeys, total=False):
+    """The keys of ``bouncelab drop --format json``; ``standard`` only when one is named."""
+    standard: DropStandard
 
 def drop(
     preset: str = "superball",
-    height: float = 1.0,
+    height: Optional[float] = None,
     bounces: int = 10,
     min_rebound: float = 0.001,
     drag: bool = True,
@@ -319,9 +395,17 @@ def drop(
     air_density: Optional[float] = None,
     law: Optional[Law] = None,
     params: Optional[ParamSet] = None,
+    standard: Optional[str] = None,
 ) -> Drop:
-    """A drop test, bounce by bounce, as ``bouncelab drop``: ``bounces`` holds arrays v_in,
-    v_out, cor, rebound_height, contact_time, max_force, t_start (one entry a bounce)."""
+    """A drop test, bounce by bounce, as ``bouncelab drop --format json``: released from rest at
+    ``height`` (m, the bottom of the ball; default the standard's drop height, else 1 m);
+    ``bounces`` holds arrays v_in, v_out, cor, rebound_height, contact_time, max_force, t_start
+    (one entry a bounce; on a fitted preset also ``cor_ci95_lo``, ``cor_ci95_hi``, … for cor,
+    max_force, contact_time, rebound_height); ``warnings`` what the caller should know. With
+    ``standard`` (a name ``bouncelab standards`` lists, e.g. ``"itf"``), ``standard`` holds the
+    verdict of that standard's own test (its drop height, or its COR speed) in this drop's air,
+    whatever ``height`` says. No standard is judged unless named, as on the command line; a
+    preset's own is the one whose ``balls`` list it in ``standards()``."""
 
 class Collision:
     """A two-body impact, SI units: the keys of ``bouncelab collide --format json``."""
@@ -350,6 +434,12 @@ class Collision:
     effective_mass: Optional[float]
     effective_radius: Optional[float]
     warnings: list[str]
+    def to_dict(self) -> dict:
+        """The keys of ``bouncelab collide --format json``, the target's under ``target``
+        (``mass``, ``speed``, ``stiffness``, ``damping``; inf for the JSON's null)."""
+    def __eq__(self, other: object) -> bool:
+        """Equal values (every attribute)."""
+    def __reduce__(self) -> tuple: ...
 
 def collide(
     preset: str = "superball",
@@ -367,8 +457,18 @@ def collide(
     (``target_preset``)."""
 
 class ObliqueImpact:
-    """An oblique impact, SI units; attributes are ``bouncelab oblique --format json``'s keys."""
+    """An oblique impact, SI units; attributes are ``bouncelab oblique --format json``'s keys:
+    the ball, the tangential model that ran (K_t as given, else Mindlin's from the preset's
+    Poisson ratio; κ as given, else the preset's) and the answer."""
 
+    preset: Optional[str]
+    origin: str
+    parameters: str
+    law: Law
+    friction: float
+    tangential_stiffness: Optional[float]
+    inertia_factor: float
+    radius: Optional[float]
     v_in: float
     angle_in_deg: float
     spin_in: float
@@ -394,6 +494,11 @@ class ObliqueImpact:
     slip_velocity: Optional[Array]
     spin: Optional[Array]
     warnings: list[str]
+    def to_dict(self) -> dict:
+        """The keys of ``bouncelab oblique --format json``, the history arrays with a history."""
+    def __eq__(self, other: object) -> bool:
+        """Equal values (every attribute; the history arrays element by element)."""
+    def __reduce__(self) -> tuple: ...
 
 def oblique(
     preset: str = "superball",

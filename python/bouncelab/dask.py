@@ -27,6 +27,11 @@ from typing import Any, Dict, Mapping, Optional, Union
 import numpy as np
 
 from . import _native
+from ._boundary import guard
+
+# the client's check through the boundary, as bouncelab.monte_carlo is called: a number out of
+# range names its argument ("invalid samples: -1 …"), a panic is a RuntimeError
+_check = guard(_native.monte_carlo_chunk)
 
 __all__ = ["monte_carlo"]
 
@@ -75,7 +80,7 @@ def monte_carlo(
         raise ValueError(f"invalid chunk: {chunk!r} (must be a whole number ≥ 1)")
     # every argument, and a chunk's size against the work limit, checked here on the client
     # before a task leaves
-    _native.monte_carlo_chunk(**options, start=0, count=min(chunk, samples), check_only=True)
+    _check(**options, start=0, count=min(chunk, samples), check_only=True)
     starts = list(range(0, samples, chunk))
     counts = [min(chunk, samples - s) for s in starts]
     if client is None:

@@ -5,7 +5,7 @@
 use crate::value_error;
 use bouncelab::ContactLaw;
 use bouncelab::preset::ParamSource;
-use numpy::{PyArray1, PyReadonlyArray1};
+use numpy::{PyArray1, PyArrayMethods, PyReadonlyArray1};
 use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
 
@@ -76,4 +76,15 @@ pub(crate) fn floats(obj: &Bound<'_, PyAny>, name: &str) -> PyResult<Vec<f64>> {
 
 pub(crate) fn array<'py>(py: Python<'py>, v: Vec<f64>) -> Py<PyArray1<f64>> {
     PyArray1::from_vec(py, v).unbind()
+}
+
+/// `v` as a numpy array Python cannot write, for an array a result keeps and hands out at
+/// every read (`Impact.t`, `ObliqueImpact.spin`, …): a write would change what the result
+/// shows, compares and pickles (python/tests/test_frozen_results.py). The flag stays off:
+/// numpy sets it back only on an array that owns its memory, and this one's is Rust's.
+pub(crate) fn frozen_array<'py>(py: Python<'py>, v: Vec<f64>) -> Py<PyArray1<f64>> {
+    let a = PyArray1::from_vec(py, v);
+    // a new array has no other borrow, so `readwrite` cannot fail here
+    let _ = a.readwrite().make_nonwriteable();
+    a.unbind()
 }

@@ -125,6 +125,9 @@ pub(crate) fn impacts<'py>(
     law: &str,
 ) -> PyResult<Bound<'py, PyDict>> {
     let law = self::law(law)?;
+    // k_h left out is Eq. 16's at each element's K_p and z_p; one given is checked as given,
+    // a NaN too (refused as `run_params` refuses it: test_a_k_h_given_as_nan_is_refused…)
+    let k_h_default = k_h.is_none();
     let inf = f64::INFINITY.into_pyobject(py)?.into_any();
     let nan = f64::NAN.into_pyobject(py)?.into_any();
     let args = [m, k_p, c, k_r, v0, z_p.unwrap_or(inf), k_h.unwrap_or(nan)];
@@ -152,7 +155,7 @@ pub(crate) fn impacts<'py>(
         .collect::<PyResult<_>>()?;
     let params = |i: usize| {
         let (k_p, z_p, k_h) = (cols[1].at(i), cols[5].at(i), cols[6].at(i));
-        let k_h = if k_h.is_nan() {
+        let k_h = if k_h_default {
             ImpactParams::k_h_matching(k_p, if z_p.is_finite() { z_p } else { 1.0 })
         } else {
             k_h

@@ -2,12 +2,14 @@
 //! own (docs/targets.md), as `bouncelab collide --format json`: the same fields, by the same
 //! names.
 
+use crate::same::Same;
 use crate::{error, preset_ball};
 use bouncelab::Ball;
 use bouncelab::api::CollisionReport;
 use bouncelab::catalog::Catalog;
 use bouncelab::target::Target;
 use pyo3::prelude::*;
+use pyo3::types::PyDict;
 
 /// A two-body impact, SI units; attribute names are the keys of `bouncelab collide --format
 /// json` (the target's fields as `target_mass`, `target_speed`, `target_stiffness`,
@@ -15,7 +17,7 @@ use pyo3::prelude::*;
 #[pyclass(frozen, get_all, module = "bouncelab")]
 pub(crate) struct Collision {
     ball: Option<String>,
-    law: &'static str,
+    law: String,
     ball_mass: f64,
     ball_speed: f64,
     target_mass: f64,
@@ -34,10 +36,46 @@ pub(crate) struct Collision {
     max_indentation: f64,
     permanent_indentation: f64,
     max_target_deflection: f64,
-    method: &'static str,
+    method: String,
     effective_mass: Option<f64>,
     effective_radius: Option<f64>,
     warnings: Vec<String>,
+}
+
+/// The JSON's keys in its order, after `target` (one macro for both directions, so that
+/// `to_dict` and `_from_state` cannot drift apart).
+macro_rules! answer_keys {
+    ($m:ident) => {
+        $m!(
+            cor,
+            apparent_cor,
+            ball_speed_out,
+            target_speed_out,
+            max_force,
+            contact_time,
+            reduced_mass,
+            closing_speed,
+            rebound,
+            max_indentation,
+            permanent_indentation,
+            max_target_deflection,
+            method,
+            effective_mass,
+            effective_radius,
+            warnings
+        )
+    };
+}
+
+/// `key`'s value in a state dict, named when absent.
+fn get<'py, T: pyo3::conversion::FromPyObjectOwned<'py>>(
+    d: &Bound<'py, PyDict>,
+    key: &str,
+) -> PyResult<T> {
+    d.get_item(key)?
+        .ok_or_else(|| pyo3::exceptions::PyKeyError::new_err(key.to_string()))?
+        .extract()
+        .map_err(Into::into)
 }
 
 #[pymethods]
@@ -48,6 +86,89 @@ impl Collision {
             self.cor, self.apparent_cor, self.ball_speed_out, self.target_speed_out
         )
     }
+
+    /// The keys of `bouncelab collide --format json`, the target's under `target` (`mass`,
+    /// `speed`, `stiffness`, `damping`); inf where the JSON writes null for an immovable or
+    /// rigid target, as the attributes keep it.
+    fn to_dict<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        let d = PyDict::new(py);
+        d.set_item("ball", &self.ball)?;
+        d.set_item("law", &self.law)?;
+        d.set_item("ball_mass", self.ball_mass)?;
+        d.set_item("ball_speed", self.ball_speed)?;
+        let target = PyDict::new(py);
+        target.set_item("mass", self.target_mass)?;
+        target.set_item("speed", self.target_speed)?;
+        target.set_item("stiffness", self.target_stiffness)?;
+        target.set_item("damping", self.target_damping)?;
+        d.set_item("target", target)?;
+        macro_rules! put {
+            ($($k:ident),*) => { $(d.set_item(stringify!($k), &self.$k)?;)* };
+        }
+        answer_keys!(put);
+        Ok(d)
+    }
+
+    /// Pickling: the class's `_from_state` and `to_dict()` (a frozen value: every protocol).
+    fn __reduce__<'py>(
+        slf: &Bound<'py, Self>,
+    ) -> PyResult<(Bound<'py, PyAny>, (Bound<'py, PyDict>,))> {
+        let rebuild = slf.get_type().getattr("_from_state")?;
+        Ok((rebuild, (slf.get().to_dict(slf.py())?,)))
+    }
+
+    /// The collision of a state [`Collision::__reduce__`] wrote.
+    #[classmethod]
+    fn _from_state(
+        _cls: &Bound<'_, pyo3::types::PyType>,
+        state: &Bound<'_, PyDict>,
+    ) -> PyResult<Collision> {
+        let target: Bound<'_, PyDict> = get(state, "target")?;
+        macro_rules! take {
+            ($($k:ident),*) => {
+                Collision {
+                    ball: get(state, "ball")?,
+                    law: get(state, "law")?,
+                    ball_mass: get(state, "ball_mass")?,
+                    ball_speed: get(state, "ball_speed")?,
+                    target_mass: get(&target, "mass")?,
+                    target_speed: get(&target, "speed")?,
+                    target_stiffness: get(&target, "stiffness")?,
+                    target_damping: get(&target, "damping")?,
+                    $($k: get(state, stringify!($k))?,)*
+                }
+            };
+        }
+        Ok(answer_keys!(take))
+    }
+
+    /// Equal values: every attribute, a NaN equal to a NaN (as `Impact`'s).
+    fn __eq__(&self, other: PyRef<'_, Collision>) -> bool {
+        macro_rules! all_same {
+            ($($k:ident),*) => {
+                true $(&& self.$k.same(&other.$k))*
+            };
+        }
+        all_same!(
+            ball,
+            law,
+            ball_mass,
+            ball_speed,
+            target_mass,
+            target_speed,
+            target_stiffness,
+            target_damping
+        ) && answer_keys!(all_same)
+    }
+
+    /// A frozen value is its own copy.
+    fn __copy__(slf: Py<Self>) -> Py<Self> {
+        slf
+    }
+
+    fn __deepcopy__(slf: Py<Self>, _memo: &Bound<'_, PyAny>) -> Py<Self> {
+        slf
+    }
 }
 
 impl From<CollisionReport> for Collision {
@@ -55,7 +176,7 @@ impl From<CollisionReport> for Collision {
         let (t, c) = (r.target, r.collision);
         Collision {
             ball: r.ball,
-            law: r.law.name(),
+            law: r.law.name().into(),
             ball_mass: r.ball_mass,
             ball_speed: r.ball_speed,
             target_mass: t.mass,
@@ -74,7 +195,7 @@ impl From<CollisionReport> for Collision {
             max_indentation: c.max_indentation,
             permanent_indentation: c.permanent_indentation,
             max_target_deflection: c.max_target_deflection,
-            method: c.method.name(),
+            method: c.method.name().into(),
             effective_mass: r.effective_mass,
             effective_radius: r.effective_radius,
             warnings: r.warnings,
@@ -87,6 +208,11 @@ impl From<CollisionReport> for Collision {
 /// preset ball with `target_preset` (instead of `target_mass`). `target_mass = inf` is the wall.
 #[pyfunction]
 #[pyo3(signature = (preset="superball", v0=None, target_mass=None, target_speed=0.0, target_stiffness=f64::INFINITY, target_damping=0.0, target_preset=None, law=None, params=None))]
+// help()'s signature, which pyo3 writes "..." for f64::INFINITY in (shown "Ellipsis"): 1e999
+// is the literal Python reads as inf, shown "inf" (test_the_stub_and_help_give_each_…)
+#[pyo3(
+    text_signature = "(preset='superball', v0=None, target_mass=None, target_speed=0.0, target_stiffness=1e999, target_damping=0.0, target_preset=None, law=None, params=None)"
+)]
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn collide(
     preset: &str,

@@ -4,7 +4,7 @@
 //! 1e-12 of the exact solver) and the energy audit with the warnings that read it from the
 //! exact solver's run on their first read (docs/python.md, "What a call costs").
 
-use crate::{array, error};
+use crate::{array, error, frozen_array};
 
 // pickling and value equality (`__reduce__`, `__eq__`): a child module, so that it reads the
 // fields without widening them
@@ -144,7 +144,7 @@ impl Impact {
         intervals: Option<Intervals>,
         audit: Option<Audit>,
     ) -> Impact {
-        let series = |s: Option<&[f64]>| s.map(|v| array(py, v.to_vec()));
+        let series = |s: Option<&[f64]>| s.map(|v| frozen_array(py, v.to_vec()));
         let h = [rep.t, rep.force, rep.indentation, rep.displacement].map(series);
         Impact {
             preset: rep.ball.preset.map(String::from),

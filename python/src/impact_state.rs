@@ -3,7 +3,7 @@
 //! there are any), so a pickle holds plain Python values and numpy arrays only.
 
 use super::{Audit, ENERGY_KEYS, HISTORY_KEYS, Impact, MEASURED_KEYS};
-use crate::array;
+use crate::frozen_array;
 use bouncelab::api::Intervals;
 use numpy::{PyArray1, PyArrayMethods, PyReadonlyArray1};
 use pyo3::exceptions::PyValueError;
@@ -52,7 +52,7 @@ pub(super) fn from_state(d: &Bound<'_, PyDict>) -> PyResult<Impact> {
     for k in HISTORY_KEYS {
         if let Some(a) = d.get_item(k)? {
             let a: PyReadonlyArray1<'_, f64> = a.extract()?;
-            history.push(array(py, a.as_slice()?.to_vec()));
+            history.push(frozen_array(py, a.as_slice()?.to_vec()));
         }
     }
     Ok(Impact {

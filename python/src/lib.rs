@@ -15,6 +15,7 @@ mod arrays;
 mod batch;
 mod catalog_cache;
 mod collide;
+mod drops;
 mod fits;
 mod impact;
 mod interrupt;
@@ -24,10 +25,12 @@ mod oblique_fit;
 mod preset_balls;
 mod preset_fits;
 mod runs;
+mod same;
+mod standards;
 mod sweeps;
 
 // the helpers every call uses, by the names the modules import them by
-pub(crate) use arguments::{array, floats, free_names, history_samples, law, source};
+pub(crate) use arguments::{array, floats, free_names, frozen_array, history_samples, law, source};
 use impact::Impact;
 pub(crate) use preset_balls::{entry, load_catalog, preset_ball, shared_preset_ball};
 
@@ -69,7 +72,8 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(sweeps::sweep_zeta, m)?)?;
     m.add_function(wrap_pyfunction!(sweeps::sweep_velocity, m)?)?;
     m.add_function(wrap_pyfunction!(preset_fits::fit, m)?)?;
-    m.add_function(wrap_pyfunction!(preset_fits::drop_test, m)?)?;
+    m.add_function(wrap_pyfunction!(drops::drop_test, m)?)?;
+    m.add_function(wrap_pyfunction!(standards::standards, m)?)?;
     m.add_function(wrap_pyfunction!(fits::fit_trace, m)?)?;
     m.add_function(wrap_pyfunction!(fits::fit_cor_table, m)?)?;
     m.add_function(wrap_pyfunction!(fits::fit_drops, m)?)?;

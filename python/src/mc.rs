@@ -180,10 +180,12 @@ fn report<'py>(py: Python<'py>, r: &Request, s: &McSummary) -> PyResult<Bound<'p
 /// `samples` has a default where one is given (`monte_carlo`'s 10 000); the Dask halves take
 /// it as the run's, always given. Written once here so that the single call and the Dask path
 /// cannot drift apart in a name or a default (`test_dask*.py` hold their answers equal).
+/// `samples`' default is a token tree, not a `literal` fragment: pyo3 writes help()'s
+/// signature from the tokens it sees, and a fragment's are hidden ("samples=Ellipsis").
 macro_rules! mc_pyfunction {
     (
         $(#[$attr:meta])*
-        fn $name:ident<$lt:lifetime>($py:ident, $r:ident; samples $(= $samples:literal)?;
+        fn $name:ident<$lt:lifetime>($py:ident, $r:ident; samples $(= $samples:tt)?;
             $($arg:ident: $ty:ty $(= $default:tt)?),* $(,)?) -> $ret:ty $body:block
     ) => {
         $(#[$attr])*

@@ -1,18 +1,30 @@
 //! `oblique`: one oblique impact with friction and spin (docs/oblique.md), as `bouncelab
 //! oblique --format json`: the same fields, by the same names.
 
-use crate::{array, error, history_samples, preset_ball};
-use bouncelab::BallError;
+use crate::{error, frozen_array, history_samples, preset_ball};
 use bouncelab::api::ObliqueSpec;
 use bouncelab::oblique::ObliqueResponse;
+use bouncelab::{Ball, BallError};
 use numpy::PyArray1;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
 /// An oblique impact, SI units; attribute names are the keys of `bouncelab oblique --format
-/// json` (`energy` a dict of its terms; the history arrays `None` unless asked for).
+/// json`: the ball (`preset`, `origin`, `parameters`, `law`), the tangential model it ran
+/// (`friction`, `tangential_stiffness`, `inertia_factor`, `radius`) and the answer (`energy` a
+/// dict of its terms; the history arrays `None` unless asked for).
 #[pyclass(frozen, get_all, module = "bouncelab")]
 pub(crate) struct ObliqueImpact {
+    preset: Option<String>,
+    origin: String,
+    parameters: String,
+    law: String,
+    friction: f64,
+    /// K_t as given, else Mindlin's from the preset's Poisson ratio (None without one).
+    tangential_stiffness: Option<f64>,
+    inertia_factor: f64,
+    /// R (m), None for a ball without a measured radius.
+    radius: Option<f64>,
     v_in: f64,
     angle_in_deg: f64,
     spin_in: f64,
@@ -31,7 +43,7 @@ pub(crate) struct ObliqueImpact {
     contact_time: f64,
     max_normal_force: f64,
     max_friction_force: f64,
-    energy: Py<PyDict>,
+    energy: EnergyTerms,
     t: Option<Py<PyArray1<f64>>>,
     normal_force: Option<Py<PyArray1<f64>>>,
     friction_force: Option<Py<PyArray1<f64>>>,
@@ -40,6 +52,77 @@ pub(crate) struct ObliqueImpact {
     /// `Ball::oblique_warnings`, as the JSON's `warnings`.
     warnings: Vec<String>,
 }
+
+/// The energy terms' keys, in the JSON's order.
+const ENERGY_KEYS: [&str; 8] = [
+    "translational_in",
+    "rotational_in",
+    "translational_out",
+    "rotational_out",
+    "normal_dissipation",
+    "friction_dissipation",
+    "tangential_spring",
+    "residual",
+];
+
+/// The energy terms (J; `residual` relative) under [`ENERGY_KEYS`], handed to Python as a new
+/// dict at each read: a dict kept in the result and handed out would let `o.energy[k] = …`
+/// change every later read (python/tests/test_frozen_results.py).
+struct EnergyTerms([f64; 8]);
+
+impl<'py> IntoPyObject<'py> for &EnergyTerms {
+    type Target = PyDict;
+    type Output = Bound<'py, PyDict>;
+    type Error = PyErr;
+
+    fn into_pyobject(self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        let d = PyDict::new(py);
+        for (k, v) in ENERGY_KEYS.iter().zip(self.0) {
+            d.set_item(k, v)?;
+        }
+        Ok(d)
+    }
+}
+
+/// The fields that are plain values, in the JSON's order (before `energy`, the history and
+/// `warnings`): one list for `to_dict`, `_from_state` and `==` (oblique_state.rs).
+macro_rules! plain_fields {
+    ($m:ident) => {
+        $m!(
+            preset,
+            origin,
+            parameters,
+            law,
+            friction,
+            tangential_stiffness,
+            inertia_factor,
+            radius,
+            v_in,
+            angle_in_deg,
+            spin_in,
+            vx_in,
+            vy_in,
+            v_out,
+            angle_out_deg,
+            spin_out,
+            vx_out,
+            vy_out,
+            cor_normal,
+            cor_tangential,
+            apparent_friction,
+            slid_throughout,
+            grip_time,
+            contact_time,
+            max_normal_force,
+            max_friction_force
+        )
+    };
+}
+
+// pickling, copies and value equality: a child module, so that it reads the fields without
+// widening them
+#[path = "oblique_state.rs"]
+mod state;
 
 #[pymethods]
 impl ObliqueImpact {
@@ -50,32 +133,83 @@ impl ObliqueImpact {
             self.v_out, self.angle_out_deg, self.spin_out, self.cor_normal, self.apparent_friction
         )
     }
+
+    /// The keys of `bouncelab oblique --format json` in its order, the history arrays (the
+    /// same read-only arrays as the attributes) only when there is a history.
+    fn to_dict<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        state::to_dict(self, py)
+    }
+
+    /// Pickling: the class's `_from_state` and `to_dict()` (every protocol).
+    fn __reduce__<'py>(
+        slf: &Bound<'py, Self>,
+    ) -> PyResult<(Bound<'py, PyAny>, (Bound<'py, PyDict>,))> {
+        let rebuild = slf.get_type().getattr("_from_state")?;
+        Ok((rebuild, (state::to_dict(slf.get(), slf.py())?,)))
+    }
+
+    /// The impact of a state [`ObliqueImpact::__reduce__`] wrote.
+    #[classmethod]
+    fn _from_state(
+        _cls: &Bound<'_, pyo3::types::PyType>,
+        state: &Bound<'_, PyDict>,
+    ) -> PyResult<ObliqueImpact> {
+        state::from_state(state)
+    }
+
+    /// Equal values: every attribute, the history arrays element by element.
+    fn __eq__(&self, py: Python<'_>, other: PyRef<'_, ObliqueImpact>) -> PyResult<bool> {
+        state::same(py, self, &other)
+    }
+
+    /// A frozen value (its arrays read-only) is its own copy.
+    fn __copy__(slf: Py<Self>) -> Py<Self> {
+        slf
+    }
+
+    fn __deepcopy__(slf: Py<Self>, _memo: &Bound<'_, PyAny>) -> Py<Self> {
+        slf
+    }
 }
 
-fn build(py: Python<'_>, r: ObliqueResponse, warnings: Vec<String>) -> PyResult<ObliqueImpact> {
+/// The result of `r`, an oblique impact of `ball` as `spec` asked: the answer with the ball and
+/// the tangential model that ran, each as the command line's JSON gives it (src/cli/oblique.rs).
+fn build(
+    py: Python<'_>,
+    ball: &Ball,
+    spec: &ObliqueSpec,
+    r: ObliqueResponse,
+) -> PyResult<ObliqueImpact> {
+    let warnings = ball.oblique_warnings(&r);
+    let header = ball.header();
     let e = &r.energy;
-    let energy = PyDict::new(py);
-    for (k, v) in [
-        ("translational_in", e.translational_in),
-        ("rotational_in", e.rotational_in),
-        ("translational_out", e.translational_out),
-        ("rotational_out", e.rotational_out),
-        ("normal_dissipation", e.normal_dissipation),
-        ("friction_dissipation", e.friction_dissipation),
-        ("tangential_spring", e.tangential_spring),
-        ("residual", e.residual),
-    ] {
-        energy.set_item(k, v)?;
-    }
+    let energy = EnergyTerms([
+        e.translational_in,
+        e.rotational_in,
+        e.translational_out,
+        e.rotational_out,
+        e.normal_dissipation,
+        e.friction_dissipation,
+        e.tangential_spring,
+        e.residual,
+    ]);
     let (mut t, mut fn_, mut ft, mut vc, mut w) = (None, None, None, None, None);
     if let Some(h) = r.history {
-        t = Some(array(py, h.t));
-        fn_ = Some(array(py, h.normal_force));
-        ft = Some(array(py, h.friction_force));
-        vc = Some(array(py, h.slip_velocity));
-        w = Some(array(py, h.spin));
+        t = Some(frozen_array(py, h.t));
+        fn_ = Some(frozen_array(py, h.normal_force));
+        ft = Some(frozen_array(py, h.friction_force));
+        vc = Some(frozen_array(py, h.slip_velocity));
+        w = Some(frozen_array(py, h.spin));
     }
     Ok(ObliqueImpact {
+        preset: header.preset.map(String::from),
+        origin: header.origin.to_string(),
+        parameters: ball.source.to_string(),
+        law: header.law.to_string(),
+        friction: spec.friction,
+        tangential_stiffness: spec.tangential_stiffness.or(ball.tangential_stiffness()),
+        inertia_factor: spec.inertia_factor.unwrap_or_else(|| ball.inertia_factor()),
+        radius: Some(ball.radius()).filter(|r| !r.is_nan()),
         v_in: r.v_in,
         angle_in_deg: r.angle_in_deg,
         spin_in: r.spin_in,
@@ -94,7 +228,7 @@ fn build(py: Python<'_>, r: ObliqueResponse, warnings: Vec<String>) -> PyResult<
         contact_time: r.contact_time,
         max_normal_force: r.max_normal_force,
         max_friction_force: r.max_friction_force,
-        energy: energy.unbind(),
+        energy,
         t,
         normal_force: fn_,
         friction_force: ft,
@@ -142,6 +276,5 @@ pub(crate) fn oblique(
     let r = ball
         .oblique(&spec, if history { samples } else { 0 })
         .map_err(error)?;
-    let warnings = ball.oblique_warnings(&r);
-    build(py, r, warnings)
+    build(py, &ball, &spec, r)
 }

@@ -59,6 +59,11 @@ pub(crate) fn run_normalized(
 /// flattening; `k_h` defaults to the Hertz stiffness that meets K_p at z_p (Eq. 16).
 #[pyfunction]
 #[pyo3(signature = (*, m, k_p, c, k_r, v0, z_p=f64::INFINITY, k_h=None, law="linear", history=false, samples=None))]
+// help()'s signature with z_p's default as Python reads 1e999: inf (pyo3 writes "..." for
+// f64::INFINITY; test_the_stub_and_help_give_each_function_as_it_is)
+#[pyo3(
+    text_signature = "(*, m, k_p, c, k_r, v0, z_p=1e999, k_h=None, law='linear', history=False, samples=None)"
+)]
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn run_params(
     py: Python<'_>,

@@ -2,7 +2,7 @@
 //! dicts of numpy arrays with the CSV's columns.
 
 use crate::impact::interval_columns;
-use crate::{array, error, floats, interrupt, law, preset_ball};
+use crate::{array, error, floats, interrupt, law, preset_ball, value_error};
 use bouncelab::BallError;
 use bouncelab::api;
 use bouncelab::model::params::ImpactParams;
@@ -70,6 +70,14 @@ pub(crate) fn sweep_velocity<'py>(
             bouncelab::analysis::sweep::lin_space(0.1 * ball.params.v0, 3.0 * ball.params.v0, 60)
         }
     };
+    // each speed checked in order first and named by its index, as `impacts` names an
+    // element: the parallel sweep's own check reports whichever bad speed a thread met first,
+    // as "invalid v0", which names neither the argument nor the element
+    for (i, &v0) in speeds.iter().enumerate() {
+        ImpactParams { v0, ..ball.params }
+            .validate()
+            .map_err(|e| value_error(format!("speeds[{i}]: {e}")))?;
+    }
     let rows = interrupt::detach_watched(py, |w| ball.sweep_velocity_watched(&speeds, w))?;
     let col = |f: fn(&bouncelab::analysis::sweep::VelocityPoint) -> f64| {
         array(py, rows.iter().map(f).collect())

@@ -8,6 +8,7 @@ import subprocess
 from pathlib import Path
 
 import pytest
+from cli_binary import binary
 
 import bouncelab
 
@@ -18,15 +19,6 @@ LOT7 = ROOT / "tests" / "golden" / "batch-lot7.csv"
 @pytest.fixture(autouse=True)
 def no_user_presets(tmp_path, monkeypatch):
     monkeypatch.setenv("XDG_CONFIG_HOME", str(tmp_path / "config"))
-
-
-def binary():
-    path = os.environ.get("BOUNCELAB_BIN") or str(ROOT / "target" / "debug" / "bouncelab")
-    if not Path(path).is_file():
-        if os.environ.get("BOUNCELAB_BIN"):
-            pytest.fail(f"BOUNCELAB_BIN={path} is not a file")
-        pytest.skip(f"no bouncelab binary at {path}")
-    return path
 
 
 def cli(*args):

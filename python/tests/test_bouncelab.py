@@ -2,8 +2,7 @@
 
 Two references: the transcripts stored by the Rust test tests/cli_golden.rs (tests/golden/*.txt,
 what `bouncelab ARGS` printed, byte for byte), and the `bouncelab` binary itself, run on the
-same arguments (BOUNCELAB_BIN, default $CARGO_TARGET_DIR/debug/bouncelab, CARGO_TARGET_DIR
-defaulting to target/ at the repository's root; .ci/run builds it before pytest runs). Values
+same arguments (cli_binary.py: BOUNCELAB_BIN, default $CARGO_TARGET_DIR/debug/bouncelab). Values
 must agree to 1e-12, messages word for word.
 """
 
@@ -18,6 +17,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from cli_binary import binary
 
 import bouncelab
 
@@ -31,16 +31,6 @@ def no_user_presets(tmp_path, monkeypatch):
     """Both the binary and the bindings read $XDG_CONFIG_HOME/bouncelab/presets: an empty one."""
     monkeypatch.setenv("XDG_CONFIG_HOME", str(tmp_path / "config"))
     return tmp_path / "config" / "bouncelab" / "presets"
-
-
-def binary():
-    target = ROOT / os.environ.get("CARGO_TARGET_DIR", "target")  # an absolute one replaces ROOT
-    path = os.environ.get("BOUNCELAB_BIN") or str(target / "debug" / "bouncelab")
-    if not Path(path).is_file():
-        if os.environ.get("BOUNCELAB_BIN"):
-            pytest.fail(f"BOUNCELAB_BIN={path} is not a file")
-        pytest.skip(f"no bouncelab binary at {path} (cargo build, or set BOUNCELAB_BIN)")
-    return path
 
 
 def cli(*args):
@@ -261,6 +251,16 @@ def test_a_user_preset_is_seen_as_the_cli_sees_it(no_user_presets):
         ({"drag": False, "min_rebound": 0.05}, ["--no-drag", "--min-rebound", "0.05"]),
         ({"preset": "golf", "drag_coefficient": 0.25, "air_density": 1.0, "law": "hertz"},
          ["--preset", "golf", "--drag-coefficient", "0.25", "--air-density", "1", "--law", "hertz"]),
+        # a standard: its verdict under "standard", the drop from its own height when none is
+        # given, judged on its own drop when one is (docs/drop.md, "Standards")
+        ({"preset": "tennis", "standard": "itf", "bounces": 2}, ["--preset", "tennis", "--standard", "itf", "--bounces", "2"]),
+        ({"preset": "tennis", "standard": "itf", "height": 1.0, "bounces": 1},
+         ["--preset", "tennis", "--standard", "itf", "--height", "1", "--bounces", "1"]),
+        ({"preset": "basketball", "standard": "fiba", "bounces": 1}, ["--preset", "basketball", "--standard", "fiba", "--bounces", "1"]),
+        ({"preset": "softball", "standard": "softball-47", "bounces": 1},
+         ["--preset", "softball", "--standard", "softball-47", "--bounces", "1"]),
+        ({"preset": "table-tennis", "standard": "ittf", "drag": False, "bounces": 1},
+         ["--preset", "table-tennis", "--standard", "ittf", "--no-drag", "--bounces", "1"]),
     ],
 )
 def test_drop_equals_the_cli_json(kwargs, args):
@@ -286,6 +286,7 @@ ERRORS = [
     (lambda: bouncelab.drop(bounces=0), ["drop", "--bounces", "0"]),
     (lambda: bouncelab.drop(height=-1.0), ["drop", "--height", "-1"]),
     (lambda: bouncelab.drop(drag_coefficient=-1.0), ["drop", "--drag-coefficient", "-1"]),
+    (lambda: bouncelab.drop(standard="nope"), ["drop", "--standard", "nope"]),
 ]
 
 

@@ -96,6 +96,18 @@ def test_drag_coefficient_without_drag_is_refused():
         bouncelab.drop(drag=False, air_density=1.0)
 
 
+def test_a_bad_speed_is_named_by_its_index():
+    # the first bad one in order, as impacts names an element; before, some bad speed of the
+    # parallel sweep was "invalid v0: …", which named no argument and no element
+    for speeds, message in [
+        ([1.0, -1.0, float("nan")], r"^speeds\[1\]: invalid v0: -1 \(must not be negative\)$"),
+        ([2.0, 3.0, 0.0], r"^speeds\[2\]: invalid v0: 0 \(must be positive\)$"),
+        (float("nan"), r"^speeds\[0\]: invalid v0: NaN \(not a number\)$"),
+    ]:
+        with pytest.raises(ValueError, match=message):
+            bouncelab.sweep_velocity("golf", speeds)
+
+
 def test_an_empty_sweep_is_refused():
     with pytest.raises(ValueError, match="^invalid zeta: no value given"):
         bouncelab.sweep_zeta([0.4], [])

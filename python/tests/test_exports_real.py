@@ -21,8 +21,8 @@ import sys
 from pathlib import Path
 
 import pytest
+from cli_binary import binary
 
-ROOT = Path(__file__).resolve().parents[2]
 TOL = 0.002
 PHASES = [(j + 0.3) / 8 for j in range(8)]
 # (preset, target COR): four balls, from a sticky impact to a lively one
@@ -44,10 +44,7 @@ def need(module):
 
 
 def export(code, preset, cor):
-    path = os.environ.get("BOUNCELAB_BIN") or str(ROOT / "target" / "debug" / "bouncelab")
-    if not Path(path).is_file():
-        pytest.skip(f"no bouncelab binary at {path}")
-    args = [path, "peers", "--preset", preset, "--cor", str(cor), "--export", code]
+    args = [binary(), "peers", "--preset", preset, "--cor", str(cor), "--export", code]
     return subprocess.run(args, check=True, capture_output=True, text=True).stdout
 
 

@@ -3,13 +3,19 @@ as ``bouncelab fit --oblique FILE --format json``, and bad input refused naming 
 
 import json
 import math
-import os
 import subprocess
 
 import numpy as np
 import pytest
+from cli_binary import binary
 
 import bouncelab
+
+
+@pytest.fixture(autouse=True)
+def no_user_presets(tmp_path, monkeypatch):
+    """Both the binary and the package read $XDG_CONFIG_HOME/bouncelab/presets: an empty one."""
+    monkeypatch.setenv("XDG_CONFIG_HOME", str(tmp_path / "config"))
 
 # the fit starts from the tennis preset's Mindlin K_t (K_p = 24713 N/m, ν = 0.5: 2/3 K_p =
 # 16475 N/m) and the rows' largest apparent friction; the truth is away from both
@@ -78,8 +84,7 @@ def test_the_same_document_as_the_command_line(tmp_path):
     path = tmp_path / "bounces.csv"
     write_csv(path, bounces())
     f = bouncelab.fit_oblique(path, preset="tennis")
-    exe = os.environ.get("BOUNCELAB_BIN", "bouncelab")
-    out = subprocess.run([exe, "fit", "--preset", "tennis", "--oblique", str(path), "--format", "json"],
+    out = subprocess.run([binary(), "fit", "--preset", "tennis", "--oblique", str(path), "--format", "json"],
                          check=True, capture_output=True, text=True)
     assert f == json.loads(out.stdout)
     # the arrays give the same fit: only `file` differs

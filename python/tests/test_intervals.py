@@ -5,20 +5,11 @@ and none on a plain preset."""
 import json
 import os
 import subprocess
-from pathlib import Path
 
 import pytest
+from cli_binary import binary
 
 import bouncelab
-
-ROOT = Path(__file__).resolve().parents[2]
-
-
-def binary():
-    path = os.environ.get("BOUNCELAB_BIN") or str(ROOT / "target" / "debug" / "bouncelab")
-    if not Path(path).is_file():
-        pytest.skip(f"no bouncelab binary at {path}")
-    return path
 
 
 def fitted(tmp_path, monkeypatch):

@@ -9,6 +9,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from cli_binary import binary
 
 import bouncelab
 
@@ -19,15 +20,6 @@ VARY = {"k_p": 0.05, "c": 0.05, "k_r": 0.05}
 @pytest.fixture(autouse=True)
 def no_user_presets(tmp_path, monkeypatch):
     monkeypatch.setenv("XDG_CONFIG_HOME", str(tmp_path / "config"))
-
-
-def binary():
-    path = os.environ.get("BOUNCELAB_BIN") or str(ROOT / "target" / "debug" / "bouncelab")
-    if not Path(path).is_file():
-        if os.environ.get("BOUNCELAB_BIN"):
-            pytest.fail(f"BOUNCELAB_BIN={path} is not a file")
-        pytest.skip(f"no bouncelab binary at {path}")
-    return path
 
 
 def cli(*args):
@@ -196,6 +188,20 @@ def test_dask_refuses_bad_input_on_the_client(client):
         bouncelab.dask.monte_carlo(client, preset="golf", vary=VARY, samples=10, chunk=0)
     with pytest.raises(ValueError, match="too much work: 20000000 samples"):
         bouncelab.dask.monte_carlo(client, preset="golf", vary=VARY, samples=10**8, chunk=2 * 10**7)
+
+
+def test_dask_names_a_number_out_of_range_as_monte_carlo_does():
+    # checked on the client, before any task: no cluster needed. Before, the check called the
+    # native module past the boundary's guard, and a samples=-1 raised OverflowError "can't
+    # convert negative int to unsigned", naming nothing
+    import bouncelab.dask
+
+    for kw in [dict(samples=-1), dict(samples=10, seed=-1), dict(samples=10**30)]:
+        with pytest.raises(OverflowError) as want:
+            bouncelab.monte_carlo(preset="golf", vary=VARY, **kw)
+        with pytest.raises(OverflowError) as got:
+            bouncelab.dask.monte_carlo(None, preset="golf", vary=VARY, **kw)
+        assert str(got.value) == str(want.value) and str(want.value).startswith("invalid ")
 
 
 def test_correlated_samples_as_the_command_line():

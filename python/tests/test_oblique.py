@@ -2,29 +2,60 @@
 
 import json
 import math
-import os
 import subprocess
 
 import pytest
+from cli_binary import binary
 
 import bouncelab
 
 
+@pytest.fixture(autouse=True)
+def no_user_presets(tmp_path, monkeypatch):
+    """Both the binary and the package read $XDG_CONFIG_HOME/bouncelab/presets: an empty one."""
+    monkeypatch.setenv("XDG_CONFIG_HOME", str(tmp_path / "config"))
+
+
 def cli_json(*args):
-    exe = os.environ.get("BOUNCELAB_BIN", "bouncelab")
-    out = subprocess.run([exe, *args, "--format", "json"], check=True, capture_output=True, text=True)
+    out = subprocess.run([binary(), *args, "--format", "json"], check=True, capture_output=True,
+                         text=True)
     return json.loads(out.stdout)
 
 
-def test_same_fields_as_the_command_line():
-    r = bouncelab.oblique("tennis", v0=25.0, angle=16.0, spin=300.0, friction=0.6)
-    cli = cli_json("oblique", "--preset", "tennis", "--v0", "25", "--angle", "16", "--spin", "300", "--friction", "0.6")
-    for key in ["v_in", "angle_in_deg", "spin_in", "vx_in", "vy_in", "v_out", "angle_out_deg", "spin_out",
-                "vx_out", "vy_out", "cor_normal", "cor_tangential", "apparent_friction", "slid_throughout",
-                "grip_time", "contact_time", "max_normal_force", "max_friction_force"]:
-        assert getattr(r, key) == cli[key], key
-    assert r.energy == cli["energy"]
+@pytest.mark.parametrize("kwargs,args", [
+    ({"v0": 25.0, "angle": 16.0, "spin": 300.0, "friction": 0.6},
+     ["--v0", "25", "--angle", "16", "--spin", "300", "--friction", "0.6"]),
+    # the tangential model given, and another law: the JSON says which ran
+    ({"angle": 40.0, "friction": 0.3, "tangential_stiffness": 2e4, "inertia_factor": 0.5,
+      "law": "hertz"},
+     ["--angle", "40", "--friction", "0.3", "--tangential-stiffness", "2e4",
+      "--inertia-factor", "0.5", "--law", "hertz"]),
+])
+def test_every_field_of_the_command_line(kwargs, args):
+    # every key of the JSON, the ball and the tangential model it ran included (before, the
+    # preset, origin, parameters, law, friction, K_t, κ and radius were missing: a K_t taken
+    # from Mindlin's ratio was not to be seen)
+    r = bouncelab.oblique("tennis", **kwargs)
+    cli = cli_json("oblique", "--preset", "tennis", *args)
+    assert set(cli) == {k for k in dir(r) if not k.startswith("_") and k != "to_dict"} - {
+        "t", "normal_force", "friction_force", "slip_velocity", "spin"}
+    for key, want in cli.items():
+        assert getattr(r, key) == want, key
     assert r.t is None
+    assert r.to_dict() == cli
+
+
+def test_to_dict_with_a_history_is_the_json_with_its_arrays():
+    r = bouncelab.oblique("tennis", angle=20.0, friction=0.5, history=True, samples=30)
+    cli = cli_json("oblique", "--preset", "tennis", "--angle", "20", "--friction", "0.5",
+                   "--history", "--samples", "30")
+    d = r.to_dict()
+    assert list(d) == list(cli)
+    for key, want in cli.items():
+        if isinstance(want, list) and key != "warnings":
+            assert d[key] is getattr(r, key) and list(d[key]) == want, key
+        else:
+            assert d[key] == want, key
 
 
 def test_history_and_limits():

@@ -16,22 +16,11 @@ them unless BOUNCELAB_REQUIRE_CODES=1.
 
 import json
 import math
-import os
 import subprocess
-from pathlib import Path
 
-import pytest
+from cli_binary import binary
 
 from test_exports_real import header, need
-
-ROOT = Path(__file__).resolve().parents[2]
-
-
-def binary():
-    path = os.environ.get("BOUNCELAB_BIN") or str(ROOT / "target" / "debug" / "bouncelab")
-    if not Path(path).is_file():
-        pytest.skip(f"no bouncelab binary at {path}")
-    return path
 
 
 def bouncelab(*args):

@@ -5,13 +5,13 @@ import json
 import math
 import os
 import subprocess
-from pathlib import Path
 
 import pytest
+from cli_binary import binary
 
 import bouncelab
+from test_bouncelab import same
 
-ROOT = Path(__file__).resolve().parents[2]
 KEYS = [
     "cor",
     "apparent_cor",
@@ -33,10 +33,7 @@ def no_user_presets(tmp_path, monkeypatch):
 
 
 def cli(*args):
-    path = os.environ.get("BOUNCELAB_BIN") or str(ROOT / "target" / "debug" / "bouncelab")
-    if not Path(path).is_file():
-        pytest.skip(f"no bouncelab binary at {path} (cargo build, or set BOUNCELAB_BIN)")
-    p = subprocess.run([path, *args], capture_output=True, text=True, env=os.environ)
+    p = subprocess.run([binary(), *args], capture_output=True, text=True, env=os.environ)
     return p.returncode, p.stdout, p.stderr
 
 
@@ -68,6 +65,8 @@ def test_collide_is_the_command_lines(kwargs, args):
     for key in ["method", "rebound", "ball", "law", "effective_mass", "effective_radius"]:
         assert getattr(got, key) == want[key], key
     assert got.target_mass == want["target"]["mass"]
+    # the whole document, warnings and the target's object included (inf for its nulls)
+    same(got.to_dict(), want)
 
 
 def test_the_wall_is_run():

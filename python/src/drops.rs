@@ -1,0 +1,123 @@
+//! `drop`: a preset dropped bounce by bounce, and judged against a standard, as `bouncelab drop
+//! --format json` (src/cli/drop.rs), under its keys.
+
+use crate::impact::interval_columns;
+use crate::{array, error, interrupt, preset_ball, value_error};
+use bouncelab::api::Ball;
+use bouncelab::drop::standards::{self, Verdict};
+use bouncelab::drop::{Air, Bounce, DropRun, DropSetup};
+use pyo3::prelude::*;
+use pyo3::types::PyDict;
+
+/// Release height without a standard (m): the command line's `--height` default
+/// (`cli::drop::DEFAULT_HEIGHT`, a feature the package does not build).
+const DEFAULT_HEIGHT: f64 = 1.0;
+
+/// A preset ball dropped onto a rigid plate, bounce by bounce, as `bouncelab drop --format
+/// json`: released from rest at `height` (m, the bottom of the ball; None: the standard's drop
+/// height, else 1 m). A dict with `height`, `drag`, `bounces` (a dict of numpy arrays with the
+/// JSON's per-bounce keys, one entry a bounce), `warnings`, and with `standard` named (as
+/// `bouncelab standards` lists them), `standard`: the verdict (name, window, measured, verdict,
+/// margin) of that standard's own test in this drop's air, whatever `height` says. No standard
+/// is judged unless named, as on the command line; a preset's own is the one whose `balls`
+/// list it in `standards()`.
+#[pyfunction(name = "drop")]
+#[pyo3(signature = (preset="superball", height=None, bounces=10, min_rebound=0.001, drag=true, drag_coefficient=None, air_density=None, law=None, params=None, standard=None))]
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn drop_test<'py>(
+    py: Python<'py>,
+    preset: &str,
+    height: Option<f64>,
+    bounces: usize,
+    min_rebound: f64,
+    drag: bool,
+    drag_coefficient: Option<f64>,
+    air_density: Option<f64>,
+    law: Option<&str>,
+    params: Option<&str>,
+    standard: Option<&str>,
+) -> PyResult<Bound<'py, PyDict>> {
+    if !drag && (drag_coefficient.is_some() || air_density.is_some()) {
+        // as the command line refuses --no-drag with --drag-coefficient or --air-density
+        return Err(value_error(
+            "drag=False cannot be used with drag_coefficient or air_density".into(),
+        ));
+    }
+    // the standard first, as the command line looks it up before the ball
+    let standard = standard
+        .map(standards::find)
+        .transpose()
+        .map_err(value_error)?;
+    let ball = preset_ball(preset, params, law, None)?;
+    let radius = ball.drop_ball().radius;
+    let air = drag.then(|| Air {
+        density: air_density.unwrap_or(Air::default().density),
+        drag_coefficient: drag_coefficient.unwrap_or(Air::default().drag_coefficient),
+    });
+    let setup = DropSetup {
+        // no height: the standard's drop (its bottom-of-ball height), as `--height`'s default
+        height: height
+            .or_else(|| standard.and_then(|s| s.release_height(radius)))
+            .unwrap_or(DEFAULT_HEIGHT),
+        air,
+        bounces,
+        min_rebound,
+    };
+    let run = interrupt::detach_watched(py, |w| ball.drop_test_watched(&setup, w))?;
+    let d = PyDict::new(py);
+    d.set_item("height", run.setup.height)?;
+    d.set_item("drag", run.drag())?;
+    d.set_item("bounces", bounce_columns(py, &ball, &run)?)?;
+    if let Some(s) = standard {
+        // judged on the standard's own drop (or COR test) in this drop's air, whatever
+        // `height` says: the command line's verdict (docs/drop.md, "Standards")
+        let dball = ball.drop_ball();
+        let v = py
+            .detach(|| s.judge(&dball, air))
+            .map_err(|e| error(e.into()))?;
+        d.set_item("standard", verdict_dict(py, &v)?)?;
+    }
+    let mut warnings = ball.drop_warnings(&run).map_err(error)?;
+    // a ball fitted to drops in another air than this drop's says so, as the command line's
+    warnings.extend(ball.drop_air_warning(run.setup.air));
+    d.set_item("warnings", warnings)?;
+    Ok(d)
+}
+
+/// The bounces as columns under the JSON's per-bounce keys, with a fitted preset's 95 %
+/// intervals (`cor_ci95_lo`, … as `bouncelab drop`'s `cor_ci95`).
+fn bounce_columns<'py>(
+    py: Python<'py>,
+    ball: &Ball,
+    run: &DropRun,
+) -> PyResult<Bound<'py, PyDict>> {
+    let col = |f: fn(&Bounce) -> f64| array(py, run.bounces.iter().map(f).collect());
+    let b = PyDict::new(py);
+    b.set_item("v_in", col(|r| r.v_in))?;
+    b.set_item("v_out", col(|r| r.v_out))?;
+    b.set_item("cor", col(|r| r.cor))?;
+    b.set_item("rebound_height", col(|r| r.rebound_height))?;
+    b.set_item("contact_time", col(|r| r.contact_time))?;
+    b.set_item("max_force", col(|r| r.max_force))?;
+    b.set_item("t_start", col(|r| r.t_start))?;
+    let setup = run.setup;
+    if let Some(bands) =
+        interrupt::detach_watched(py, |w| ball.drop_intervals_watched(&setup, w).transpose())?
+    {
+        let names = ["cor", "max_force", "contact_time", "rebound_height"];
+        interval_columns(py, &b, names, &bands)?;
+    }
+    Ok(b)
+}
+
+/// The verdict under the JSON's `standard` keys: `window` [lo, hi] with `None` for a bound the
+/// standard does not set, `verdict` "pass" or "fail".
+fn verdict_dict<'py>(py: Python<'py>, v: &Verdict) -> PyResult<Bound<'py, PyDict>> {
+    let d = PyDict::new(py);
+    d.set_item("name", v.name)?;
+    d.set_item("window", v.window.to_vec())?;
+    d.set_item("measured", v.measured)?;
+    d.set_item("verdict", if v.pass { "pass" } else { "fail" })?;
+    d.set_item("margin", v.margin)?;
+    Ok(d)
+}

@@ -1,0 +1,113 @@
+//! `ObliqueImpact`'s state and value: [`to_dict`] (the keys of `bouncelab oblique --format
+//! json`, the history arrays with a history), the impact rebuilt from it (pickling), and `==`.
+
+use super::{ENERGY_KEYS, EnergyTerms, ObliqueImpact};
+use crate::frozen_array;
+use crate::same::Same;
+use numpy::{PyArray1, PyArrayMethods, PyReadonlyArray1};
+use pyo3::conversion::FromPyObjectOwned;
+use pyo3::exceptions::PyValueError;
+use pyo3::prelude::*;
+use pyo3::types::PyDict;
+
+/// The history's keys, in the JSON's order.
+const HISTORY_KEYS: [&str; 5] = [
+    "t",
+    "normal_force",
+    "friction_force",
+    "slip_velocity",
+    "spin",
+];
+
+fn history(o: &ObliqueImpact) -> [&Option<Py<PyArray1<f64>>>; 5] {
+    [
+        &o.t,
+        &o.normal_force,
+        &o.friction_force,
+        &o.slip_velocity,
+        &o.spin,
+    ]
+}
+
+pub(super) fn to_dict<'py>(o: &ObliqueImpact, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+    let d = PyDict::new(py);
+    macro_rules! put {
+        ($($k:ident),*) => { $(d.set_item(stringify!($k), &o.$k)?;)* };
+    }
+    plain_fields!(put);
+    d.set_item("energy", &o.energy)?;
+    for (k, a) in HISTORY_KEYS.iter().zip(history(o)) {
+        if let Some(a) = a {
+            d.set_item(k, a.clone_ref(py))?;
+        }
+    }
+    d.set_item("warnings", &o.warnings)?;
+    Ok(d)
+}
+
+fn get<'py, T: FromPyObjectOwned<'py>>(d: &Bound<'py, PyDict>, key: &str) -> PyResult<T> {
+    d.get_item(key)?
+        .ok_or_else(|| PyValueError::new_err(format!("ObliqueImpact state without '{key}'")))?
+        .extract()
+        .map_err(Into::into)
+}
+
+pub(super) fn from_state(d: &Bound<'_, PyDict>) -> PyResult<ObliqueImpact> {
+    let py = d.py();
+    let e: Bound<'_, PyDict> = get(d, "energy")?;
+    let mut energy = [0.0; 8];
+    for (v, k) in energy.iter_mut().zip(ENERGY_KEYS) {
+        *v = get(&e, k)?;
+    }
+    // the arrays read-only again (a pickle's arrays are the unpickler's, writeable)
+    let array = |k: &str| -> PyResult<Option<Py<PyArray1<f64>>>> {
+        d.get_item(k)?
+            .map(|a| {
+                let a: PyReadonlyArray1<'_, f64> = a.extract()?;
+                Ok(frozen_array(py, a.as_slice()?.to_vec()))
+            })
+            .transpose()
+    };
+    macro_rules! take {
+        ($($k:ident),*) => {
+            ObliqueImpact {
+                $($k: get(d, stringify!($k))?,)*
+                energy: EnergyTerms(energy),
+                t: array("t")?,
+                normal_force: array("normal_force")?,
+                friction_force: array("friction_force")?,
+                slip_velocity: array("slip_velocity")?,
+                spin: array("spin")?,
+                warnings: get(d, "warnings")?,
+            }
+        };
+    }
+    Ok(plain_fields!(take))
+}
+
+/// Every field equal, a NaN equal to a NaN (as `Impact`'s), the arrays element by element.
+pub(super) fn same(py: Python<'_>, a: &ObliqueImpact, b: &ObliqueImpact) -> PyResult<bool> {
+    macro_rules! all_same {
+        ($($k:ident),*) => { true $(&& a.$k.same(&b.$k))* };
+    }
+    if !(plain_fields!(all_same) && a.energy.0.same(&b.energy.0) && a.warnings == b.warnings) {
+        return Ok(false);
+    }
+    for (x, y) in history(a).into_iter().zip(history(b)) {
+        match (x, y) {
+            (None, None) => {}
+            (Some(x), Some(y)) => {
+                if !x
+                    .bind(py)
+                    .readonly()
+                    .as_slice()?
+                    .same(y.bind(py).readonly().as_slice()?)
+                {
+                    return Ok(false);
+                }
+            }
+            _ => return Ok(false),
+        }
+    }
+    Ok(true)
+}

@@ -1,0 +1,23 @@
+"""The `bouncelab` binary the tests compare the package with (not a test file: the tests import
+it). BOUNCELAB_BIN names it; without it, $CARGO_TARGET_DIR/debug/bouncelab (CARGO_TARGET_DIR
+defaulting to target/ at the repository's root; .ci/run builds it before pytest runs). No
+binary there skips the comparison, saying why; a BOUNCELAB_BIN that is not a file fails, since
+whoever set it meant the comparison to run (python/tests/test_cli_binary.py)."""
+
+import os
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parents[2]
+
+
+def binary():
+    """The binary's path, or the calling test skipped (failed if BOUNCELAB_BIN is wrong)."""
+    target = ROOT / os.environ.get("CARGO_TARGET_DIR", "target")  # an absolute one replaces ROOT
+    path = os.environ.get("BOUNCELAB_BIN") or str(target / "debug" / "bouncelab")
+    if not Path(path).is_file():
+        if os.environ.get("BOUNCELAB_BIN"):
+            pytest.fail(f"BOUNCELAB_BIN={path} is not a file")
+        pytest.skip(f"no bouncelab binary at {path} (cargo build, or set BOUNCELAB_BIN)")
+    return path
