@@ -14,7 +14,7 @@
 
 use super::power::{self, Coef, Coefs};
 use super::stages::{PowerImpact, Progress};
-use super::{POWER_LEN, Summary};
+use super::{POWER_EPS, POWER_LEN, Summary, poly};
 use crate::model::contact::ContactLaw;
 use crate::model::params::Normalized;
 use std::ops::{Add, Mul, Sub};
@@ -97,19 +97,112 @@ pub fn summaries(ns: &[Normalized], law: ContactLaw) -> Vec<Option<Summary>> {
             return out;
         }
         series(coefs(&slots), states(&slots), &mut c);
+        let h = steps(&c, &slots);
+        let ahead = evaluations(&c, h);
         for (j, slot) in slots.iter_mut().enumerate() {
             let Some((i, impact)) = slot else { continue };
-            for (lane_v, c_v) in lane.iter_mut().zip(&c) {
-                for (lane_vn, c_vn) in lane_v.iter_mut().zip(c_v) {
-                    *lane_vn = c_vn.0[j];
+            let (s_end, ds0, dsh) = (ahead.s_end.0[j], ahead.ds0.0[j], ahead.dsh.0[j]);
+            let progress = if impact.phase.is_quiet(h.0[j], s_end, ds0, dsh) {
+                impact.take(ahead.x.map(|x| x.0[j]))
+            } else {
+                for (lane_v, c_v) in lane.iter_mut().zip(&c) {
+                    for (lane_vn, c_vn) in lane_v.iter_mut().zip(c_v) {
+                        *lane_vn = c_vn.0[j];
+                    }
                 }
-            }
-            if let Progress::Done(summary) = impact.feed::<POWER_LEN>(&lane) {
+                impact.feed::<POWER_LEN>(&lane)
+            };
+            if let Progress::Done(summary) = progress {
                 out[*i] = summary;
                 *slot = None;
             }
         }
     }
+}
+
+/// Each lane's step (`power::step`'s rule, lane by lane: the same bits); 0 in an empty lane.
+fn steps(c: &LaneSeries, slots: &[Option<(usize, PowerImpact)>; W]) -> Lanes {
+    let order = POWER_LEN - 1;
+    Lanes(std::array::from_fn(|j| {
+        let Some((_, impact)) = &slots[j] else {
+            return 0.0;
+        };
+        let scales = impact.phase.scales();
+        let norm = |n: usize| {
+            c.iter()
+                .zip(scales)
+                .map(|(c_v, s)| c_v[n].0[j].abs() / s)
+                .fold(0.0, f64::max)
+        };
+        poly::step_of_norms(norm(order - 1), norm(order), order, POWER_EPS)
+    }))
+}
+
+/// What `power::Phase::advance` evaluates on a step, in lanes: s(h), s'(0), s'(h) and the
+/// state at h, each by `poly::eval`'s Horner sum (the same bits).
+struct Ahead {
+    s_end: Lanes,
+    ds0: Lanes,
+    dsh: Lanes,
+    x: [Lanes; 4],
+}
+
+/// [`Ahead`] of the series `c` at the steps `h`: the AVX-512 or AVX2 compilation where the
+/// CPU has it, as [`series`].
+fn evaluations(c: &LaneSeries, h: Lanes) -> Ahead {
+    #[cfg(target_arch = "x86_64")]
+    {
+        if std::arch::is_x86_feature_detected!("avx512f") {
+            // SAFETY: the CPU has AVX-512F, the only feature the function enables
+            return unsafe { evaluations_avx512(c, h) };
+        }
+        if std::arch::is_x86_feature_detected!("avx2") {
+            // SAFETY: the CPU has AVX2, the only feature the function enables
+            return unsafe { evaluations_avx2(c, h) };
+        }
+    }
+    evaluations_in(c, h)
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+fn evaluations_avx2(c: &LaneSeries, h: Lanes) -> Ahead {
+    evaluations_in(c, h)
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx512f")]
+fn evaluations_avx512(c: &LaneSeries, h: Lanes) -> Ahead {
+    evaluations_in(c, h)
+}
+
+#[inline(always)]
+fn evaluations_in(c: &LaneSeries, h: Lanes) -> Ahead {
+    // poly::derivative's series, lane by lane
+    let mut ds = [Lanes::splat(0.0); POWER_LEN];
+    for k in 1..POWER_LEN {
+        ds[k - 1] = Lanes::splat(k as f64) * c[0][k];
+    }
+    let x = [
+        eval(&c[0], h),
+        eval(&c[1], h),
+        eval(&c[2], h),
+        eval(&c[3], h),
+    ];
+    Ahead {
+        s_end: x[0],
+        ds0: eval(&ds, Lanes::splat(0.0)),
+        dsh: eval(&ds, h),
+        x,
+    }
+}
+
+/// `poly::eval` in lanes.
+#[inline(always)]
+fn eval(c: &[Lanes; POWER_LEN], h: Lanes) -> Lanes {
+    c.iter()
+        .rev()
+        .fold(Lanes::splat(0.0), |acc, &ck| acc * h + ck)
 }
 
 /// Every slot's impact charged the step it is about to take, and every empty slot given the

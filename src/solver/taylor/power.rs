@@ -245,6 +245,34 @@ impl Phase {
         }
     }
 
+    /// Whether [`Phase::advance`] would take the whole step `h` with no event — no failure,
+    /// no turn, no yield, no separation — given the series' values there: s(h) (`s_end`) and
+    /// s'(0), s'(h) (`ds0`, `dsh`). Such a step's end is the state at h, which
+    /// `super::batch` evaluates in lanes ([`Phase::take`]); any other step is `advance`'s.
+    pub(super) fn is_quiet(&self, h: f64, s_end: f64, ds0: f64, dsh: f64) -> bool {
+        let turn = !self.unloading && ds0 > 0.0 && dsh <= 0.0;
+        h.is_finite()
+            && h > 0.0
+            && !(self.unloading && s_end > 1.0)
+            && !turn
+            && s_end < self.s_yield
+            && !(s_end <= 0.0 && self.x[0] > 0.0)
+    }
+
+    /// A quiet step's end `x` ([`Phase::is_quiet`]): as [`Phase::advance`] ends such a step.
+    pub(super) fn take(&mut self, x: [f64; 4], budget: &Budget) -> Next {
+        self.x = x;
+        if self.x[3] > budget.tau_max {
+            return Next::Fail;
+        }
+        Next::Go
+    }
+
+    /// The phase's scales: each component's size, at least 1 (`step`'s).
+    pub(super) fn scales(&self) -> [f64; 4] {
+        self.x.map(|xi| xi.abs().max(1.0))
+    }
+
     /// One step from `self.x` given the series `c` there: the step the series allow within
     /// `eps`, the first event in it (a turn, yield, separation), and the state at its end.
     pub(super) fn advance<const L: usize>(
@@ -300,10 +328,6 @@ impl Phase {
                 s_max: self.s_max,
             });
         }
-        self.x = at(c, h);
-        if self.x[3] > budget.tau_max {
-            return Next::Fail;
-        }
-        Next::Go
+        self.take(at(c, h), budget)
     }
 }

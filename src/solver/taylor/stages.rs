@@ -103,6 +103,14 @@ impl PowerImpact {
         }
     }
 
+    /// A quiet step's end `x` (`Phase::is_quiet`), as [`PowerImpact::feed`] would take it.
+    pub(super) fn take(&mut self, x: [f64; 4]) -> Progress {
+        match self.phase.take(x, &self.budget) {
+            Next::Go => Progress::Go,
+            _ => Progress::Done(None),
+        }
+    }
+
     /// The impact after a phase's end.
     fn next_stage(&mut self, run: power::Run) -> Progress {
         let l = self.l;
