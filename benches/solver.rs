@@ -192,6 +192,47 @@ fn elastic_plastic_taylor(case: usize) -> f64 {
         .cor
 }
 
+/// 256 elastic–plastic impacts past yield: case 1's ball (the superball at 3 v0) with K_p, c
+/// and K_r each moved by up to ±5 % (a Monte Carlo's spread, in a fixed pattern).
+static PAST_YIELD: std::sync::LazyLock<Vec<bouncelab::Normalized>> =
+    std::sync::LazyLock::new(|| {
+        let p = elastic_plastic_ball(1);
+        let spread = |i: usize, m: usize| 1.0 + 0.05 * (2.0 * ((i * m) % 97) as f64 / 96.0 - 1.0);
+        (0..256)
+            .map(|i| {
+                ImpactParams {
+                    k_p: p.k_p * spread(i, 31),
+                    damping: p.damping * spread(i, 59),
+                    k_r: p.k_r * spread(i, 83),
+                    ..p
+                }
+                .normalized()
+            })
+            .collect()
+    });
+
+/// The 256 impacts of `PAST_YIELD` (issue 30 item 1: ≤ 1 µs an impact), one by one on the
+/// Taylor steps (`single`, `solver::taylor::summary`) and several to a SIMD register
+/// (`batch`, `solver::taylor::batch::summaries`: the same bits): divide by 256.
+#[divan::bench(args = ["single", "batch"])]
+fn elastic_plastic_past_yield_256(b: divan::Bencher, path: &str) {
+    let law = ContactLaw::ElasticPlastic;
+    let ns = &*PAST_YIELD;
+    assert!(ns.iter().all(|n| {
+        bouncelab::solver::taylor::summary(n, law).is_some_and(|s| s.permanent_indentation > 0.0)
+    }));
+    b.bench(|| match path {
+        "single" => black_box(ns)
+            .iter()
+            .map(|n| bouncelab::solver::taylor::summary(n, law).unwrap().cor)
+            .sum::<f64>(),
+        _ => bouncelab::solver::taylor::batch::summaries(black_box(ns), law)
+            .iter()
+            .map(|s| s.unwrap().cor)
+            .sum::<f64>(),
+    });
+}
+
 /// 1 000 tennis balls at 2 … 60 m/s (56 of 59 such speeds flatten: tests/rows.rs), the rows
 /// `bouncelab.impacts` returns.
 static TENNIS_ROWS: std::sync::LazyLock<Vec<ImpactParams>> = std::sync::LazyLock::new(|| {

@@ -34,7 +34,7 @@ use serde::Serialize;
 use statrs::distribution::{ContinuousCDF, Normal};
 
 pub use super::mc_corr::parse_correlate;
-pub use super::mc_impact::{Outcome, impact, impacts};
+pub use super::mc_impact::{Outcome, impact, impacts, impacts_of_groups};
 pub use super::mc_spec::{Correlation, Dist, McError, McSpec, Spread, Varied, parse_vary};
 pub use super::mc_stats::{PROBS, Quantiles, Stats, interval_warnings};
 
@@ -326,22 +326,31 @@ impl Sampler {
         Ok(())
     }
 
+    /// The balls of samples `index`, each checked (`None`: refused).
+    fn balls(&self, index: [u64; LANES]) -> [Option<ImpactParams>; LANES] {
+        let blocks = first_blocks(&self.words, index);
+        std::array::from_fn(|k| {
+            let words = &mut Words::new(&self.key, index[k], &blocks[k]);
+            let (values, m) = self.draw_from(words);
+            let p = self.ball(&values[..m]);
+            p.validate().is_ok().then_some(p)
+        })
+    }
+
     /// The samples `start …` into `out`, in index order, four at a time (the last group
     /// padded with its own last sample, whose copies are dropped); stops at the first error.
     /// Each sample's draws and ball are [`Sampler::params`]' and its impact [`impacts`]' lane:
     /// a function of its index alone, whatever its group.
     fn fill(&self, start: u64, out: Columns<'_>) -> Result<(), McError> {
         let n = out.cor.len();
-        for g in (0..n).step_by(LANES) {
-            let index: [u64; LANES] = std::array::from_fn(|k| start + (g + k).min(n - 1) as u64);
-            let blocks = first_blocks(&self.words, index);
-            let balls: [Option<ImpactParams>; LANES] = std::array::from_fn(|k| {
-                let words = &mut Words::new(&self.key, index[k], &blocks[k]);
-                let (values, m) = self.draw_from(words);
-                let p = self.ball(&values[..m]);
-                p.validate().is_ok().then_some(p)
-            });
-            let solved = impacts(&balls, self.law);
+        let index: Vec<[u64; LANES]> = (0..n)
+            .step_by(LANES)
+            .map(|g| std::array::from_fn(|k| start + (g + k).min(n - 1) as u64))
+            .collect();
+        let balls: Vec<[Option<ImpactParams>; LANES]> =
+            index.iter().map(|&index| self.balls(index)).collect();
+        let solved = impacts_of_groups(&balls, self.law);
+        for ((g, index), solved) in (0..n).step_by(LANES).zip(index).zip(solved) {
             for (k, s) in solved.into_iter().enumerate().take(n - g) {
                 let o = match s {
                     Some(Ok(o)) => o,

@@ -97,12 +97,51 @@ fn in_si(p: &ImpactParams, s: &Summary) -> Outcome {
     }
 }
 
+/// [`impacts`] of each group of balls, the same answers: under the Hertz and elastic–plastic
+/// laws every group's fast paths at once ([`crate::solver::table::summaries`]: the Hertz
+/// table, else the Taylor steps several to a SIMD register, `one_by_one`'s bits), then
+/// `run`'s solver where they do not answer; the linear law group by group.
+pub fn impacts_of_groups(
+    groups: &[[Option<ImpactParams>; LANES]],
+    law: ContactLaw,
+) -> Vec<[Option<Result<Outcome, SolveError>>; LANES]> {
+    if law == ContactLaw::Linear {
+        return groups.iter().map(|balls| impacts(balls, law)).collect();
+    }
+    let norm: Vec<_> = groups
+        .iter()
+        .flatten()
+        .flatten()
+        .map(ImpactParams::normalized)
+        .collect();
+    let mut fast = crate::solver::table::summaries(&norm, law).into_iter();
+    let solve = |p: &ImpactParams, s: Option<crate::solver::taylor::Summary>| match s
+        .filter(|t| t.cor > 0.0)
+    {
+        Some(t) => Ok(in_si(p, &short(t))),
+        None => solver_outcome(p, law),
+    };
+    groups
+        .iter()
+        .map(|balls| {
+            balls
+                .each_ref()
+                .map(|p| Some(solve(p.as_ref()?, fast.next().flatten())))
+        })
+        .collect()
+}
+
 /// An impact the lanes do not answer: its fast path where one answers (`fast_one`), SI by
 /// F = F̄ m v0 ω0 and t = τ/ω0, else `run`'s solver.
 fn one_by_one(p: &ImpactParams, law: ContactLaw) -> Result<Outcome, SolveError> {
     if let Some(s) = fast_one(p, law) {
         return Ok(in_si(p, &s));
     }
+    solver_outcome(p, law)
+}
+
+/// The impact of `p` by `run`'s solver with its default options.
+fn solver_outcome(p: &ImpactParams, law: ContactLaw) -> Result<Outcome, SolveError> {
     simulate(p, law, &SolveOptions::default()).map(|r| Outcome {
         cor: r.cor,
         max_force: r.max_force,
@@ -121,11 +160,6 @@ fn one_by_one(p: &ImpactParams, law: ContactLaw) -> Result<Outcome, SolveError> 
 /// solver: tests/taylor.rs; tests/cli_mc.rs `elastic_plastic_samples_take_the_fast_path`).
 fn fast_one(p: &ImpactParams, law: ContactLaw) -> Option<Summary> {
     let n = p.normalized();
-    let short = |t: crate::solver::taylor::Summary| Summary {
-        cor: t.cor,
-        max_force: t.max_force,
-        contact_time: t.contact_time,
-    };
     match law {
         // the scalar closed form, not `lanes::flattening_one`: a flattening ball comes here
         // only where the four lanes handed it back, and a lane of width one hands it back too
@@ -138,5 +172,14 @@ fn fast_one(p: &ImpactParams, law: ContactLaw) -> Option<Summary> {
         ContactLaw::Hertz | ContactLaw::ElasticPlastic => crate::solver::table::summary(&n, law)
             .filter(|t| t.cor > 0.0)
             .map(short),
+    }
+}
+
+/// A Taylor summary's COR, F̄_m and τ_f.
+fn short(t: crate::solver::taylor::Summary) -> Summary {
+    Summary {
+        cor: t.cor,
+        max_force: t.max_force,
+        contact_time: t.contact_time,
     }
 }

@@ -7,12 +7,13 @@
 //! one [`super::impact_rows`] gives, bit for bit (tests/rows_columns.rs).
 
 use super::BallError;
-use super::rows::{ImpactRow, Rest, flattening_si_row, row_from, table_row};
+use super::rows::{ImpactRow, Rest, flattening_si_row, row_from, si_row, solver_row, table_row};
 use crate::analysis::work::Elements;
 use crate::map::fast::Summary;
 use crate::map::fast::lanes;
 use crate::model::contact::ContactLaw;
 use crate::model::params::{ImpactParams, Normalized, ParamError};
+use crate::solver::SolveError;
 
 /// A ball and its normalized groups.
 type Ball = (ImpactParams, Normalized);
@@ -172,17 +173,46 @@ impl Unanswered {
         let law = self.law;
         let rows: Vec<_> = self
             .left
-            .par_iter()
-            .map(|&(i, _)| {
-                let p = params(i);
-                row_from(&p, &p.normalized(), law, None)
-            })
+            .par_chunks(LEFT_CHUNK)
+            .flat_map_iter(|chunk| left_rows(chunk, law, params))
             .collect();
         for (&(i, _), row) in self.left.iter().zip(rows) {
             out.put(i, &row.map_err(|e| (i, BallError::Solve(e)))?);
         }
         self.failed.map_or(Ok(()), Err)
     }
+}
+
+/// Elements the second pass hands to one core at a time: enough to keep the Taylor steps'
+/// lanes full (`solver::taylor::batch`), few enough to share the work between the cores.
+const LEFT_CHUNK: usize = 64;
+
+/// The rows of the elements `left` (indices), each as [`row_from`] gives it: under the Hertz
+/// and elastic–plastic laws [`crate::solver::table::summaries`] (the table, else the Taylor
+/// steps in lanes: `row_from`'s bits) then `run`'s solver where they do not answer.
+fn left_rows<F>(
+    left: &[(usize, Rest)],
+    law: ContactLaw,
+    params: &F,
+) -> Vec<Result<ImpactRow, SolveError>>
+where
+    F: Fn(usize) -> ImpactParams + Sync,
+{
+    let balls: Vec<ImpactParams> = left.iter().map(|&(i, _)| params(i)).collect();
+    let norm: Vec<_> = balls.iter().map(ImpactParams::normalized).collect();
+    if law == ContactLaw::Linear {
+        let rows = balls.iter().zip(&norm);
+        return rows.map(|(p, n)| row_from(p, n, law, None)).collect();
+    }
+    let fast = crate::solver::table::summaries(&norm, law);
+    balls
+        .iter()
+        .zip(fast)
+        .map(|(p, s)| match s.and_then(|s| si_row(p, s)) {
+            Some(row) => Ok(row),
+            None => solver_row(p, law),
+        })
+        .collect()
 }
 
 /// The ball `p` checked, with its normalized groups.

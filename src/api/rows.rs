@@ -79,6 +79,11 @@ pub(super) fn row_from(
     {
         return Ok(row);
     }
+    solver_row(p, law)
+}
+
+/// The row of `p` from `run`'s solver with its default options (no fast path).
+pub(super) fn solver_row(p: &ImpactParams, law: ContactLaw) -> Result<ImpactRow, SolveError> {
     let r = simulate(p, law, &SolveOptions::default())?;
     Ok(ImpactRow {
         cor: r.cor,
@@ -105,7 +110,7 @@ fn power_law_row(p: &ImpactParams, n: &Normalized, law: ContactLaw) -> Option<Im
 /// The row of `p` from the normalized summary `s` of its Hertz or elastic–plastic impact,
 /// SI as `run` converts (F = F̄ m v0 ω0, t = τ/ω0, z = z̄ v0/ω0, z_f too); `None` where the
 /// ball does not leave (then `simulate`).
-fn si_row(p: &ImpactParams, s: crate::solver::taylor::Summary) -> Option<ImpactRow> {
+pub(super) fn si_row(p: &ImpactParams, s: crate::solver::taylor::Summary) -> Option<ImpactRow> {
     if s.cor <= 0.0 {
         return None;
     }

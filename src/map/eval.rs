@@ -37,6 +37,16 @@ pub fn cells_at(spec: &MapSpec, points: &[(f64, f64)], out: &mut [Result<Cell, S
         let zp: Vec<f64> = norm.iter().map(|n| n.zp_bar).collect();
         flattening_in_lanes(&lambda, &zeta, &zp, &mut closed);
         closed
+    } else if spec.law != ContactLaw::Linear && spec.fast_laws {
+        // the table, and the rest's Taylor steps in lanes: `fast_cell`'s answer, the same bits
+        let norm: Vec<_> = params.iter().map(ImpactParams::normalized).collect();
+        let short = |t: crate::solver::taylor::Summary| super::fast::Summary {
+            cor: t.cor,
+            max_force: t.max_force,
+            contact_time: t.contact_time,
+        };
+        let summaries = crate::solver::table::summaries(&norm, spec.law);
+        summaries.into_iter().map(|s| s.map(short)).collect()
     } else {
         vec![None; points.len()]
     };
@@ -104,9 +114,10 @@ fn solve_cell(
 /// The cell from a fast path when one answers: on the linear law the closed form `closed`
 /// ([`super::fast::summary`]'s, in lanes) while the ball does not flatten (z̄_m ≤ z̄_p), the
 /// flattening closed form ([`super::fast::flattening`], in lanes: `flattening_in_lanes`)
-/// where it does and answers (`closed` holds either, resolved by `cells_at`); the
-/// Taylor steps ([`crate::solver::taylor::summary`]) for a flattening ball and for the Hertz
-/// and elastic–plastic laws, the Hertz table first ([`crate::solver::table::summary`]).
+/// where it does and answers (`closed` holds either, resolved by `cells_at`), else the
+/// Taylor steps ([`crate::solver::taylor::summary`]); under the Hertz and elastic–plastic
+/// laws `closed` holds [`crate::solver::table::summaries`]' answer (the Hertz table, else the
+/// Taylor steps in lanes), resolved by `cells_at` too.
 /// SI as `to_si` converts: F = F̄ m v0 ω0, t = τ/ω0.
 fn fast_cell(
     spec: &MapSpec,
@@ -116,7 +127,7 @@ fn fast_cell(
     let n = p.normalized();
     let s = match closed {
         Some(s) => s,
-        None => {
+        None if spec.law == ContactLaw::Linear => {
             let t = crate::solver::table::summary(&n, spec.law)?;
             super::fast::Summary {
                 cor: t.cor,
@@ -124,6 +135,7 @@ fn fast_cell(
                 contact_time: t.contact_time,
             }
         }
+        None => return None,
     };
     if spec.normalized {
         return Some(Cell {

@@ -361,12 +361,28 @@ pub fn hertz(n: &Normalized) -> Option<Summary> {
 /// ([`taylor::plastic::below_yield`]); else the Taylor steps ([`taylor::summary`]: `None`
 /// where the adaptive solver must run).
 pub fn summary(n: &Normalized, law: ContactLaw) -> Option<Summary> {
-    let tabulated = match law {
+    tabulated(n, law).or_else(|| taylor::summary(n, law))
+}
+
+/// [`summary`]'s table branch alone.
+fn tabulated(n: &Normalized, law: ContactLaw) -> Option<Summary> {
+    match law {
         ContactLaw::Hertz if n.zp_bar > 0.0 => hertz(n),
         ContactLaw::ElasticPlastic if n.zp_bar > 0.0 => {
             hertz(n).and_then(|h| taylor::plastic::below_yield(n, h))
         }
         _ => None,
-    };
-    tabulated.or_else(|| taylor::summary(n, law))
+    }
+}
+
+/// [`summary`] of each of `ns`, the same bits: the table where it answers, the rest's Taylor
+/// steps several at a time in lanes ([`taylor::batch::summaries`]).
+pub fn summaries(ns: &[Normalized], law: ContactLaw) -> Vec<Option<Summary>> {
+    let mut out: Vec<Option<Summary>> = ns.iter().map(|n| tabulated(n, law)).collect();
+    let rest: Vec<usize> = (0..ns.len()).filter(|&i| out[i].is_none()).collect();
+    let picked: Vec<Normalized> = rest.iter().map(|&i| ns[i]).collect();
+    for (i, s) in rest.into_iter().zip(taylor::batch::summaries(&picked, law)) {
+        out[i] = s;
+    }
+    out
 }

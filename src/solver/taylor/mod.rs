@@ -22,10 +22,12 @@
 //! `summary` returns `None` and the caller runs the adaptive solver (or the exact one).
 //! tests/taylor.rs holds the answers to the adaptive solver's over the property tests' domain.
 
+pub mod batch;
 mod linear;
 pub mod plastic;
 mod poly;
 mod power;
+mod stages;
 
 use crate::model::contact::{Contact, ContactLaw};
 use crate::model::params::Normalized;
@@ -92,6 +94,7 @@ struct Point {
 }
 
 /// The steps left to an impact, and its longest contact.
+#[derive(Debug, Clone, Copy)]
 struct Budget {
     steps: usize,
     taken: usize,
@@ -134,73 +137,19 @@ pub fn summary(n: &Normalized, law: ContactLaw) -> Option<Summary> {
     }
 }
 
-/// The Hertz and elastic–plastic laws in the Hertz scale.
+/// The Hertz and elastic–plastic laws in the Hertz scale, one step after another
+/// (`stages::PowerImpact`).
 fn power_law(n: &Normalized, law: ContactLaw) -> Option<Summary> {
-    let l = n.kappa.powf(-0.4);
-    let sys = Sys {
-        lambda: n.lambda * l * l,
-        zeta: n.zeta / l,
-    };
-    let zp = if law == ContactLaw::Hertz {
-        f64::INFINITY
-    } else {
-        n.zp_bar / l
-    };
-    // the contact's stiffness in the Hertz scale: 1.5 √ẑ ≈ 1.6 at the Hertz peak, L² past
-    // yield; the Hertz contact time is 2.94 (5/4)^{2/5} ≈ 3.2
-    let k = if zp < 1.1 { 1.6f64.max(l * l) } else { 1.6 };
-    if 2.0 * sys.zeta * (k + sys.lambda) * 3.2 > STIFF {
-        return None;
+    let mut impact = stages::PowerImpact::new(n, law)?;
+    loop {
+        if !impact.take_step() {
+            return None;
+        }
+        let c = power::series::<POWER_LEN>(&impact.sys, &impact.phase.br, impact.phase.x);
+        if let stages::Progress::Done(summary) = impact.feed(&c) {
+            return summary;
+        }
     }
-    let mut budget = Budget::new();
-    let first = hertz_loading::<POWER_LEN>(&sys, zp, POWER_EPS, &mut budget)?;
-    let (end, z_m, f_m, z_f) = match first.end {
-        power::End::Separated(p) => {
-            let s = first.s_max;
-            (p, s * s, s * s * s, 0.0)
-        }
-        power::End::Yield(p) => {
-            let f_p = zp * zp.sqrt();
-            let line = linear::Branch {
-                k: l * l,
-                z0: zp,
-                f0: f_p,
-            };
-            let linear::End::Turned(top) = linear::run(&sys, &line, p, None, &mut budget)? else {
-                return None;
-            };
-            let z_m = top.z;
-            let f_m = line.k * (z_m - zp) + f_p;
-            let contact = Contact {
-                law,
-                zp_bar: zp,
-                kappa: 1.0,
-            };
-            let z_f = contact.permanent_indentation(z_m);
-            let unload = power::Branch {
-                z0: z_f,
-                b: z_m - z_f,
-                a: f_m,
-            };
-            if unload.b.is_nan() || unload.b <= 0.0 {
-                return None;
-            }
-            let last = power::run::<POWER_LEN>(
-                &sys,
-                &unload,
-                top,
-                f64::INFINITY,
-                true,
-                POWER_EPS,
-                &mut budget,
-            )?;
-            let power::End::Separated(p) = last.end else {
-                return None;
-            };
-            (p, z_m, f_m, z_f)
-        }
-    };
-    finish(end, z_m, f_m, z_f, l, &budget)
 }
 
 /// The Hertz loading (ẑ from 0 at unit speed, κ̂ = 1) until separation or yield at ẑ_p, by

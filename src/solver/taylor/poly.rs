@@ -54,15 +54,19 @@ pub(super) fn step_within<const L: usize>(c: &[[f64; L]], scales: &[f64], eps: f
             .map(|(ci, s)| ci[j].abs() / s)
             .fold(0.0, f64::max)
     };
-    let rule = |j: usize| {
-        let a = norm(j);
+    step_of_norms(norm(order - 1), norm(order), order, eps)
+}
+
+/// [`step_within`] from the norms of the last two terms of series of order `order`.
+pub(super) fn step_of_norms(next_to_last: f64, last: f64, order: usize, eps: f64) -> f64 {
+    let rule = |a: f64, j: usize| {
         if a == 0.0 {
             f64::INFINITY
         } else {
             (eps / a).powf(1.0 / j as f64)
         }
     };
-    rule(order - 1).min(rule(order))
+    rule(next_to_last, order - 1).min(rule(last, order))
 }
 
 /// The first h in (0, `end`] where `c(h) = target`, given that `c(0) − target` and

@@ -44,7 +44,7 @@ pub(super) struct Run {
 
 /// The Taylor coefficients of (s, ᾱ', ȳ, τ) at x to order L − 1 (Cauchy products, each O(k)
 /// at order k).
-fn series<const L: usize>(sys: &Sys, br: &Branch, x: [f64; 4]) -> [[f64; L]; 4] {
+pub(super) fn series<const L: usize>(sys: &Sys, br: &Branch, x: [f64; 4]) -> [[f64; L]; 4] {
     let (mut s, mut v, mut y, mut t) = ([0.0; L], [0.0; L], [0.0; L], [0.0; L]);
     let (mut p, mut q, mut yd) = ([0.0; L], [0.0; L], [0.0; L]);
     (s[0], v[0], y[0], t[0]) = (x[0], x[1], x[2], x[3]);
@@ -64,6 +64,89 @@ fn series<const L: usize>(sys: &Sys, br: &Branch, x: [f64; 4]) -> [[f64; L]; 4] 
         t[k + 1] = s[k] * inv;
     }
     [s, v, y, t]
+}
+
+/// The system's coefficients as [`series_of`] takes them, in lanes of type `T`.
+#[derive(Clone, Copy)]
+pub(super) struct Coefs<T> {
+    /// 2ζ
+    pub two_zeta: T,
+    /// λ
+    pub lambda: T,
+    /// a
+    pub a: T,
+    /// −a
+    pub minus_a: T,
+    /// 1/(2b)
+    pub half_b: T,
+}
+
+impl Coefs<f64> {
+    /// [`series`]'s coefficients of `sys` on `br`.
+    pub(super) fn of(sys: &Sys, br: &Branch) -> Coefs<f64> {
+        Coefs {
+            two_zeta: 2.0 * sys.zeta,
+            lambda: sys.lambda,
+            a: br.a,
+            minus_a: -br.a,
+            half_b: 0.5 / br.b,
+        }
+    }
+}
+
+/// The arithmetic [`series_of`] needs: IEEE f64 operations, lane by lane.
+pub(super) trait Coef:
+    Copy + std::ops::Add<Output = Self> + std::ops::Sub<Output = Self> + std::ops::Mul<Output = Self>
+{
+    fn splat(x: f64) -> Self;
+}
+
+/// [`series`] in lanes (`super::batch`): each lane runs [`series`]'s IEEE operations in its
+/// order — its sums folded from −0.0 as `Iterator::sum` folds them, products and sums
+/// unfused — so a lane's coefficients are [`series`]'s bits
+/// (tests/taylor.rs `batched_summaries_are_the_single_ones_bit_for_bit`). Written apart
+/// from [`series`], whose f64 form the compiler lays out best as it is (a generic copy for
+/// f64 took 8 % more instructions, callgrind).
+#[inline(always)]
+pub(super) fn series_of<T: Coef, const L: usize>(k: Coefs<T>, x: [T; 4], c: &mut [[T; L]; 4]) {
+    let zero = T::splat(0.0);
+    let [s, v, y, t] = c;
+    let (mut p, mut q, mut yd) = ([zero; L], [zero; L], [zero; L]);
+    (s[0], v[0], y[0], t[0]) = (x[0], x[1], x[2], x[3]);
+    for n in 0..L - 1 {
+        p[n] = square_of(s, n);
+        q[n] = dot(&p, s, n);
+        let r = square_of(&p, n);
+        yd[n] = k.two_zeta * (k.a * q[n] - k.lambda * y[n]);
+        let sy = dot(s, &yd, n);
+        let inv = T::splat(1.0 / (n + 1) as f64);
+        s[n + 1] = (v[n] - yd[n]) * k.half_b * inv;
+        v[n + 1] = k.minus_a * r * inv;
+        y[n + 1] = sy * inv;
+        t[n + 1] = s[n] * inv;
+    }
+}
+
+/// Σ_{i ≤ n} a_i b_{n−i}, in the order of i.
+#[inline(always)]
+fn dot<T: Coef, const L: usize>(a: &[T; L], b: &[T; L], n: usize) -> T {
+    (0..n + 1)
+        .map(|i| a[i] * b[n - i])
+        .fold(T::splat(-0.0), |acc, x| acc + x)
+}
+
+/// [`square`] in lanes.
+#[inline(always)]
+fn square_of<T: Coef, const L: usize>(c: &[T; L], n: usize) -> T {
+    let half = (0..n.div_ceil(2))
+        .map(|i| c[i] * c[n - i])
+        .fold(T::splat(-0.0), |acc, x| acc + x);
+    let middle = if n.is_multiple_of(2) {
+        c[n / 2] * c[n / 2]
+    } else {
+        T::splat(0.0)
+    };
+    T::splat(2.0) * half + middle
 }
 
 /// The k-th coefficient of c², by the product's symmetry (half the terms).
@@ -106,68 +189,145 @@ pub(super) fn run<const L: usize>(
     eps: f64,
     budget: &mut Budget,
 ) -> Option<Run> {
-    let s0 = ((start.z - br.z0) / br.b).max(0.0).sqrt();
-    let mut x = [s0, start.v, start.y, start.tau];
-    let mut s_max = s0;
-    let point = |x: [f64; 4]| Point {
-        tau: x[3],
-        z: br.z0 + br.b * x[0] * x[0],
-        v: x[1],
-        y: x[2],
-    };
+    let mut phase = Phase::new(*br, start, s_yield, unloading);
     loop {
         budget.take()?;
-        let c = series::<L>(sys, br, x);
-        let h = step(&c, &x, eps);
+        let c = series::<L>(sys, br, phase.x);
+        match phase.advance(&c, eps, budget) {
+            Next::Go => {}
+            Next::Done(run) => return Some(run),
+            Next::Fail => return None,
+        }
+    }
+}
+
+/// A phase under way: its branch, the state (s, ᾱ', ȳ, τ) where the next step starts, and
+/// what [`run`] keeps between steps. [`run`] drives it one impact at a time; `super::batch`
+/// drives several in step, their series computed in lanes.
+#[derive(Debug, Clone, Copy)]
+pub(super) struct Phase {
+    pub br: Branch,
+    pub x: [f64; 4],
+    s_max: f64,
+    s_yield: f64,
+    unloading: bool,
+}
+
+/// What a step left of a phase.
+pub(super) enum Next {
+    /// The phase goes on from the step's end.
+    Go,
+    /// The phase ended in the step.
+    Done(Run),
+    /// The steps cannot follow it (see [`run`]).
+    Fail,
+}
+
+impl Phase {
+    /// The phase from `start` on `br` (see [`run`]).
+    pub(super) fn new(br: Branch, start: Point, s_yield: f64, unloading: bool) -> Phase {
+        let s0 = ((start.z - br.z0) / br.b).max(0.0).sqrt();
+        Phase {
+            br,
+            x: [s0, start.v, start.y, start.tau],
+            s_max: s0,
+            s_yield,
+            unloading,
+        }
+    }
+
+    fn point(&self, x: [f64; 4]) -> Point {
+        Point {
+            tau: x[3],
+            z: self.br.z0 + self.br.b * x[0] * x[0],
+            v: x[1],
+            y: x[2],
+        }
+    }
+
+    /// Whether [`Phase::advance`] would take the whole step `h` with no event — no failure,
+    /// no turn, no yield, no separation — given the series' values there: s(h) (`s_end`) and
+    /// s'(0), s'(h) (`ds0`, `dsh`). Such a step's end is the state at h, which
+    /// `super::batch` evaluates in lanes ([`Phase::take`]); any other step is `advance`'s.
+    pub(super) fn is_quiet(&self, h: f64, s_end: f64, ds0: f64, dsh: f64) -> bool {
+        let turn = !self.unloading && ds0 > 0.0 && dsh <= 0.0;
+        h.is_finite()
+            && h > 0.0
+            && !(self.unloading && s_end > 1.0)
+            && !turn
+            && s_end < self.s_yield
+            && !(s_end <= 0.0 && self.x[0] > 0.0)
+    }
+
+    /// A quiet step's end `x` ([`Phase::is_quiet`]): as [`Phase::advance`] ends such a step.
+    pub(super) fn take(&mut self, x: [f64; 4], budget: &Budget) -> Next {
+        self.x = x;
+        if self.x[3] > budget.tau_max {
+            return Next::Fail;
+        }
+        Next::Go
+    }
+
+    /// The phase's scales: each component's size, at least 1 (`step`'s).
+    pub(super) fn scales(&self) -> [f64; 4] {
+        self.x.map(|xi| xi.abs().max(1.0))
+    }
+
+    /// One step from `self.x` given the series `c` there: the step the series allow within
+    /// `eps`, the first event in it (a turn, yield, separation), and the state at its end.
+    pub(super) fn advance<const L: usize>(
+        &mut self,
+        c: &[[f64; L]; 4],
+        eps: f64,
+        budget: &Budget,
+    ) -> Next {
+        let h = step(c, &self.x, eps);
         if !(h.is_finite() && h > 0.0) {
-            return None;
+            return Next::Fail;
         }
         let s_end = poly::eval(&c[0], h);
-        if unloading && s_end > 1.0 {
-            return None;
+        if self.unloading && s_end > 1.0 {
+            return Next::Fail;
         }
         // loading: a turn (s' falls through 0) in (0, h], whose s may pass the yield value
         // even where s(h) is back below it
         let ds = poly::derivative(&c[0]);
-        let turn = (!unloading && poly::eval(&ds, 0.0) > 0.0 && poly::eval(&ds, h) <= 0.0)
+        let turn = (!self.unloading && poly::eval(&ds, 0.0) > 0.0 && poly::eval(&ds, h) <= 0.0)
             .then(|| poly::root(&ds, 0.0, h));
         let top = turn.map_or(s_end, |t| poly::eval(&c[0], t).max(s_end));
         // the first of separation and yield in (0, h]
         let mut event: Option<(f64, bool)> = None;
-        if top >= s_yield {
-            let upto = if s_end >= s_yield {
+        if top >= self.s_yield {
+            let upto = if s_end >= self.s_yield {
                 h
             } else {
                 turn.unwrap_or(h)
             };
-            event = Some((poly::root(&c[0], s_yield, upto), true));
-        } else if s_end <= 0.0 && x[0] > 0.0 {
+            event = Some((poly::root(&c[0], self.s_yield, upto), true));
+        } else if s_end <= 0.0 && self.x[0] > 0.0 {
             event = Some((poly::root(&c[0], 0.0, h), false));
         }
         if let Some(t) = turn
             && t <= event.map_or(h, |e| e.0)
         {
-            s_max = s_max.max(poly::eval(&c[0], t));
+            self.s_max = self.s_max.max(poly::eval(&c[0], t));
         }
         if let Some((h_event, yielded)) = event {
-            let mut end = at(&c, h_event);
+            let mut end = at(c, h_event);
             if yielded {
-                end[0] = s_yield;
-                s_max = s_max.max(s_yield);
-                return Some(Run {
-                    end: End::Yield(point(end)),
-                    s_max,
+                end[0] = self.s_yield;
+                self.s_max = self.s_max.max(self.s_yield);
+                return Next::Done(Run {
+                    end: End::Yield(self.point(end)),
+                    s_max: self.s_max,
                 });
             }
             end[0] = 0.0;
-            return Some(Run {
-                end: End::Separated(point(end)),
-                s_max,
+            return Next::Done(Run {
+                end: End::Separated(self.point(end)),
+                s_max: self.s_max,
             });
         }
-        x = at(&c, h);
-        if x[3] > budget.tau_max {
-            return None;
-        }
+        self.take(at(c, h), budget)
     }
 }

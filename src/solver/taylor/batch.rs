@@ -1,0 +1,264 @@
+//! Several impacts' Taylor steps at once (issue 30 item 1): the Hertz and elastic–plastic
+//! impacts [`summary`](super::summary) answers, their series computed in SIMD lanes — one
+//! impact a lane, as heyoka's batch mode does — and each lane's step, events and stages
+//! taken by the same code as one impact's (`stages::PowerImpact`). The series are some 85 %
+//! of a step (callgrind, BENCHMARKS.md, eleventh session); a lane runs the same IEEE
+//! operations in the same order as [`power::series`], so every answer is the single path's
+//! bits (tests/taylor.rs `batched_summaries_are_the_single_ones_bit_for_bit`).
+//!
+//! The lanes are plain `[f64; W]` with element-wise operators, compiled inside a
+//! `#[target_feature]` function so that LLVM packs them into one AVX register (or AVX-512's
+//! eight): the `wide` crate fixes its registers when it is compiled (two SSE2 registers on
+//! the default target, `map::fast::lanes::avx`'s note), and no fused multiply–add may enter,
+//! or the bits would differ from the single path's.
+
+use super::power::{self, Coef, Coefs};
+use super::stages::{PowerImpact, Progress};
+use super::{POWER_EPS, POWER_LEN, Summary, poly};
+use crate::model::contact::ContactLaw;
+use crate::model::params::Normalized;
+use std::ops::{Add, Mul, Sub};
+
+/// Impacts in step: one AVX register of f64.
+const W: usize = 8;
+
+/// W f64 lanes, each operation IEEE lane by lane.
+#[derive(Clone, Copy)]
+#[repr(align(64))]
+pub(super) struct Lanes([f64; W]);
+
+macro_rules! lanewise {
+    ($tr:ident, $f:ident, $op:tt) => {
+        impl $tr for Lanes {
+            type Output = Lanes;
+            #[inline(always)]
+            fn $f(self, o: Lanes) -> Lanes {
+                Lanes(std::array::from_fn(|i| self.0[i] $op o.0[i]))
+            }
+        }
+    };
+}
+lanewise!(Add, add, +);
+lanewise!(Sub, sub, -);
+lanewise!(Mul, mul, *);
+
+impl power::Coef for Lanes {
+    #[inline(always)]
+    fn splat(x: f64) -> Lanes {
+        Lanes([x; W])
+    }
+}
+
+type LaneSeries = [[Lanes; POWER_LEN]; 4];
+
+/// The series of W impacts' phases into `c`, in lanes: the AVX-512 compilation where the
+/// CPU has it, else AVX2's.
+fn series(k: Coefs<Lanes>, x: [Lanes; 4], c: &mut LaneSeries) {
+    #[cfg(target_arch = "x86_64")]
+    {
+        if std::arch::is_x86_feature_detected!("avx512f") {
+            // SAFETY: the CPU has AVX-512F, the only feature the function enables
+            return unsafe { series_avx512(k, x, c) };
+        }
+        if std::arch::is_x86_feature_detected!("avx2") {
+            // SAFETY: the CPU has AVX2, the only feature the function enables
+            return unsafe { series_avx2(k, x, c) };
+        }
+    }
+    power::series_of::<Lanes, POWER_LEN>(k, x, c)
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+fn series_avx2(k: Coefs<Lanes>, x: [Lanes; 4], c: &mut LaneSeries) {
+    power::series_of::<Lanes, POWER_LEN>(k, x, c)
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx512f")]
+fn series_avx512(k: Coefs<Lanes>, x: [Lanes; 4], c: &mut LaneSeries) {
+    power::series_of::<Lanes, POWER_LEN>(k, x, c)
+}
+
+/// The summaries of `ns` under `law`, each as [`super::summary`] gives it (the same bits):
+/// the Hertz and elastic–plastic laws W at a time in lanes, the linear law one by one.
+pub fn summaries(ns: &[Normalized], law: ContactLaw) -> Vec<Option<Summary>> {
+    if law == ContactLaw::Linear {
+        return ns.iter().map(|n| super::summary(n, law)).collect();
+    }
+    let mut out = vec![None; ns.len()];
+    let mut queue = ns.iter().enumerate();
+    let mut slots: [Option<(usize, PowerImpact)>; W] = [None; W];
+    let mut c = [[Lanes::splat(0.0); POWER_LEN]; 4];
+    let mut lane = [[0.0; POWER_LEN]; 4];
+    loop {
+        refill(&mut slots, &mut queue, law);
+        if slots.iter().all(Option::is_none) {
+            return out;
+        }
+        series(coefs(&slots), states(&slots), &mut c);
+        let h = steps(&c, &slots);
+        let ahead = evaluations(&c, h);
+        for (j, slot) in slots.iter_mut().enumerate() {
+            let Some((i, impact)) = slot else { continue };
+            let (s_end, ds0, dsh) = (ahead.s_end.0[j], ahead.ds0.0[j], ahead.dsh.0[j]);
+            let progress = if impact.phase.is_quiet(h.0[j], s_end, ds0, dsh) {
+                impact.take(ahead.x.map(|x| x.0[j]))
+            } else {
+                for (lane_v, c_v) in lane.iter_mut().zip(&c) {
+                    for (lane_vn, c_vn) in lane_v.iter_mut().zip(c_v) {
+                        *lane_vn = c_vn.0[j];
+                    }
+                }
+                impact.feed::<POWER_LEN>(&lane)
+            };
+            if let Progress::Done(summary) = progress {
+                out[*i] = summary;
+                *slot = None;
+            }
+        }
+    }
+}
+
+/// Each lane's step (`power::step`'s rule, lane by lane: the same bits); 0 in an empty lane.
+fn steps(c: &LaneSeries, slots: &[Option<(usize, PowerImpact)>; W]) -> Lanes {
+    let order = POWER_LEN - 1;
+    Lanes(std::array::from_fn(|j| {
+        let Some((_, impact)) = &slots[j] else {
+            return 0.0;
+        };
+        let scales = impact.phase.scales();
+        let norm = |n: usize| {
+            c.iter()
+                .zip(scales)
+                .map(|(c_v, s)| c_v[n].0[j].abs() / s)
+                .fold(0.0, f64::max)
+        };
+        poly::step_of_norms(norm(order - 1), norm(order), order, POWER_EPS)
+    }))
+}
+
+/// What `power::Phase::advance` evaluates on a step, in lanes: s(h), s'(0), s'(h) and the
+/// state at h, each by `poly::eval`'s Horner sum (the same bits).
+struct Ahead {
+    s_end: Lanes,
+    ds0: Lanes,
+    dsh: Lanes,
+    x: [Lanes; 4],
+}
+
+/// [`Ahead`] of the series `c` at the steps `h`: the AVX-512 or AVX2 compilation where the
+/// CPU has it, as [`series`].
+fn evaluations(c: &LaneSeries, h: Lanes) -> Ahead {
+    #[cfg(target_arch = "x86_64")]
+    {
+        if std::arch::is_x86_feature_detected!("avx512f") {
+            // SAFETY: the CPU has AVX-512F, the only feature the function enables
+            return unsafe { evaluations_avx512(c, h) };
+        }
+        if std::arch::is_x86_feature_detected!("avx2") {
+            // SAFETY: the CPU has AVX2, the only feature the function enables
+            return unsafe { evaluations_avx2(c, h) };
+        }
+    }
+    evaluations_in(c, h)
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+fn evaluations_avx2(c: &LaneSeries, h: Lanes) -> Ahead {
+    evaluations_in(c, h)
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx512f")]
+fn evaluations_avx512(c: &LaneSeries, h: Lanes) -> Ahead {
+    evaluations_in(c, h)
+}
+
+#[inline(always)]
+fn evaluations_in(c: &LaneSeries, h: Lanes) -> Ahead {
+    // poly::derivative's series, lane by lane
+    let mut ds = [Lanes::splat(0.0); POWER_LEN];
+    for k in 1..POWER_LEN {
+        ds[k - 1] = Lanes::splat(k as f64) * c[0][k];
+    }
+    let x = [
+        eval(&c[0], h),
+        eval(&c[1], h),
+        eval(&c[2], h),
+        eval(&c[3], h),
+    ];
+    Ahead {
+        s_end: x[0],
+        ds0: eval(&ds, Lanes::splat(0.0)),
+        dsh: eval(&ds, h),
+        x,
+    }
+}
+
+/// `poly::eval` in lanes.
+#[inline(always)]
+fn eval(c: &[Lanes; POWER_LEN], h: Lanes) -> Lanes {
+    c.iter()
+        .rev()
+        .fold(Lanes::splat(0.0), |acc, &ck| acc * h + ck)
+}
+
+/// Every slot's impact charged the step it is about to take, and every empty slot given the
+/// next impact the steps take on (an impact refused, or out of steps, leaves its `None` in
+/// the answer).
+fn refill<'a>(
+    slots: &mut [Option<(usize, PowerImpact)>; W],
+    queue: &mut impl Iterator<Item = (usize, &'a Normalized)>,
+    law: ContactLaw,
+) {
+    for slot in slots.iter_mut() {
+        if let Some((_, impact)) = slot
+            && !impact.take_step()
+        {
+            *slot = None;
+        }
+        while slot.is_none() {
+            let Some((i, n)) = queue.next() else { break };
+            if let Some(mut impact) = PowerImpact::new(n, law)
+                && impact.take_step()
+            {
+                *slot = Some((i, impact));
+            }
+        }
+    }
+}
+
+/// The slots' systems in lanes (an empty lane: a force-free branch at rest).
+fn coefs(slots: &[Option<(usize, PowerImpact)>; W]) -> Coefs<Lanes> {
+    let each: [Coefs<f64>; W] = std::array::from_fn(|j| match &slots[j] {
+        Some((_, impact)) => Coefs::of(&impact.sys, &impact.phase.br),
+        None => Coefs {
+            two_zeta: 0.0,
+            lambda: 0.0,
+            a: 0.0,
+            minus_a: 0.0,
+            half_b: 0.5,
+        },
+    });
+    let lanes = |f: fn(&Coefs<f64>) -> f64| Lanes(std::array::from_fn(|j| f(&each[j])));
+    Coefs {
+        two_zeta: lanes(|c| c.two_zeta),
+        lambda: lanes(|c| c.lambda),
+        a: lanes(|c| c.a),
+        minus_a: lanes(|c| c.minus_a),
+        half_b: lanes(|c| c.half_b),
+    }
+}
+
+/// The slots' states (s, ᾱ', ȳ, τ) in lanes (an empty lane: zeros).
+fn states(slots: &[Option<(usize, PowerImpact)>; W]) -> [Lanes; 4] {
+    std::array::from_fn(|v| {
+        Lanes(std::array::from_fn(|j| {
+            slots[j]
+                .as_ref()
+                .map_or(0.0, |(_, impact)| impact.phase.x[v])
+        }))
+    })
+}

@@ -1,0 +1,167 @@
+//! An impact under the Hertz or elastic–plastic law as a machine fed one step's series at a
+//! time: the Hertz loading to separation or to yield, the straight stretch (Eq. 11, run
+//! whole: its linear steps are cheap), the 3/2-power unloading (Eq. 12). [`super::summary`]
+//! feeds it series of its own; `super::batch` feeds several in step with series computed in
+//! lanes. Both take the same steps, so they give the same bits.
+
+use super::power::{self, Next, Phase};
+use super::{Budget, POWER_EPS, Point, STIFF, Summary, Sys, finish, linear};
+use crate::model::contact::{Contact, ContactLaw};
+use crate::model::params::Normalized;
+
+/// Where the impact is.
+#[derive(Debug, Clone, Copy)]
+enum Stage {
+    /// On the Hertz branch from first touch.
+    Loading,
+    /// On the 3/2-power unloading from the peak (z̄_m, F̄_m) to z̄_f, in the Hertz scale.
+    Unloading { z_m: f64, f_m: f64, z_f: f64 },
+}
+
+/// What a fed step left of the impact.
+pub(super) enum Progress {
+    /// It goes on: feed the series at [`PowerImpact::phase`]'s state.
+    Go,
+    /// It ended: its summary, or `None` where the steps do not answer (`super::summary`).
+    Done(Option<Summary>),
+}
+
+/// One impact under way, in the Hertz scale (`super::power_law`'s: L = κ^{−2/5}).
+#[derive(Debug, Clone, Copy)]
+pub(super) struct PowerImpact {
+    pub sys: Sys,
+    pub phase: Phase,
+    law: ContactLaw,
+    /// L
+    l: f64,
+    /// ẑ_p (∞ under Hertz)
+    zp: f64,
+    budget: Budget,
+    stage: Stage,
+}
+
+impl PowerImpact {
+    /// The impact of `n` under `law` (Hertz or elastic–plastic) at first touch, or `None`
+    /// where the steps do not take it on: parameters not finite, or a phase too stiff
+    /// (`STIFF`).
+    pub(super) fn new(n: &Normalized, law: ContactLaw) -> Option<PowerImpact> {
+        let ok = |x: f64| x.is_finite() && x >= 0.0;
+        if !(ok(n.lambda) && ok(n.zeta) && n.kappa.is_finite() && n.kappa > 0.0 && n.zp_bar > 0.0) {
+            return None;
+        }
+        let l = n.kappa.powf(-0.4);
+        let sys = Sys {
+            lambda: n.lambda * l * l,
+            zeta: n.zeta / l,
+        };
+        let zp = if law == ContactLaw::Hertz {
+            f64::INFINITY
+        } else {
+            n.zp_bar / l
+        };
+        // the contact's stiffness in the Hertz scale: 1.5 √ẑ ≈ 1.6 at the Hertz peak, L² past
+        // yield; the Hertz contact time is 2.94 (5/4)^{2/5} ≈ 3.2
+        let k = if zp < 1.1 { 1.6f64.max(l * l) } else { 1.6 };
+        if 2.0 * sys.zeta * (k + sys.lambda) * 3.2 > STIFF {
+            return None;
+        }
+        // the Hertz loading: ẑ from 0 at unit speed, κ̂ = 1
+        let hertz = power::Branch {
+            z0: 0.0,
+            b: 1.0,
+            a: 1.0,
+        };
+        let start = Point {
+            tau: 0.0,
+            z: 0.0,
+            v: 1.0,
+            y: 0.0,
+        };
+        Some(PowerImpact {
+            sys,
+            phase: Phase::new(hertz, start, zp.sqrt(), false),
+            law,
+            l,
+            zp,
+            budget: Budget::new(),
+            stage: Stage::Loading,
+        })
+    }
+
+    /// Takes one step of the budget before a step's series is fed; `false` when none is left
+    /// (the impact then has no answer).
+    pub(super) fn take_step(&mut self) -> bool {
+        self.budget.take().is_some()
+    }
+
+    /// One step, given the series of order L − 1 at the phase's state.
+    pub(super) fn feed<const L: usize>(&mut self, c: &[[f64; L]; 4]) -> Progress {
+        match self.phase.advance(c, POWER_EPS, &self.budget) {
+            Next::Go => Progress::Go,
+            Next::Fail => Progress::Done(None),
+            Next::Done(run) => self.next_stage(run),
+        }
+    }
+
+    /// A quiet step's end `x` (`Phase::is_quiet`), as [`PowerImpact::feed`] would take it.
+    pub(super) fn take(&mut self, x: [f64; 4]) -> Progress {
+        match self.phase.take(x, &self.budget) {
+            Next::Go => Progress::Go,
+            _ => Progress::Done(None),
+        }
+    }
+
+    /// The impact after a phase's end.
+    fn next_stage(&mut self, run: power::Run) -> Progress {
+        let l = self.l;
+        match (self.stage, run.end) {
+            (Stage::Loading, power::End::Separated(p)) => {
+                let s = run.s_max;
+                Progress::Done(finish(p, s * s, s * s * s, 0.0, l, &self.budget))
+            }
+            (Stage::Loading, power::End::Yield(p)) => match self.unloading_from_yield(p) {
+                Some(()) => Progress::Go,
+                None => Progress::Done(None),
+            },
+            (Stage::Unloading { z_m, f_m, z_f }, power::End::Separated(p)) => {
+                Progress::Done(finish(p, z_m, f_m, z_f, l, &self.budget))
+            }
+            (Stage::Unloading { .. }, power::End::Yield(_)) => Progress::Done(None),
+        }
+    }
+
+    /// From yield at `p`: the straight stretch (Eq. 11) to the peak, then the unloading
+    /// phase set up from it (Eqs. 12, 18–19); `None` where the stretch does not turn.
+    fn unloading_from_yield(&mut self, p: Point) -> Option<()> {
+        let zp = self.zp;
+        let f_p = zp * zp.sqrt();
+        let line = linear::Branch {
+            k: self.l * self.l,
+            z0: zp,
+            f0: f_p,
+        };
+        let linear::End::Turned(top) = linear::run(&self.sys, &line, p, None, &mut self.budget)?
+        else {
+            return None;
+        };
+        let z_m = top.z;
+        let f_m = line.k * (z_m - zp) + f_p;
+        let contact = Contact {
+            law: self.law,
+            zp_bar: zp,
+            kappa: 1.0,
+        };
+        let z_f = contact.permanent_indentation(z_m);
+        let unload = power::Branch {
+            z0: z_f,
+            b: z_m - z_f,
+            a: f_m,
+        };
+        if unload.b.is_nan() || unload.b <= 0.0 {
+            return None;
+        }
+        self.phase = Phase::new(unload, top, f64::INFINITY, true);
+        self.stage = Stage::Unloading { z_m, f_m, z_f };
+        Some(())
+    }
+}
