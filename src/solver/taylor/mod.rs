@@ -160,6 +160,12 @@ fn hertz_loading<const L: usize>(
     eps: f64,
     budget: &mut Budget,
 ) -> Option<power::Run> {
+    let (hertz, start) = hertz_start();
+    power::run::<L>(sys, &hertz, start, zp.sqrt(), false, eps, budget)
+}
+
+/// The Hertz branch in the Hertz scale (ẑ = s², F̂ = s³) and first touch on it at unit speed.
+fn hertz_start() -> (power::Branch, Point) {
     let hertz = power::Branch {
         z0: 0.0,
         b: 1.0,
@@ -171,7 +177,7 @@ fn hertz_loading<const L: usize>(
         v: 1.0,
         y: 0.0,
     };
-    power::run::<L>(sys, &hertz, start, zp.sqrt(), false, eps, budget)
+    (hertz, start)
 }
 
 /// The Hertz impact in the Hertz scale (κ̂ = 1, unit speed) at (λ̂, ζ̂), by the Taylor steps

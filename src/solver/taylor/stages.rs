@@ -5,7 +5,7 @@
 //! lanes. Both take the same steps, so they give the same bits.
 
 use super::power::{self, Next, Phase};
-use super::{Budget, POWER_EPS, Point, STIFF, Summary, Sys, finish, linear};
+use super::{Budget, POWER_EPS, Point, STIFF, Summary, Sys, finish, hertz_start, linear};
 use crate::model::contact::{Contact, ContactLaw};
 use crate::model::params::Normalized;
 
@@ -65,18 +65,7 @@ impl PowerImpact {
         if 2.0 * sys.zeta * (k + sys.lambda) * 3.2 > STIFF {
             return None;
         }
-        // the Hertz loading: ẑ from 0 at unit speed, κ̂ = 1
-        let hertz = power::Branch {
-            z0: 0.0,
-            b: 1.0,
-            a: 1.0,
-        };
-        let start = Point {
-            tau: 0.0,
-            z: 0.0,
-            v: 1.0,
-            y: 0.0,
-        };
+        let (hertz, start) = hertz_start();
         Some(PowerImpact {
             sys,
             phase: Phase::new(hertz, start, zp.sqrt(), false),
