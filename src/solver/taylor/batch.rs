@@ -1,14 +1,16 @@
 //! Several impacts' Taylor steps at once (issue 30 item 1): the Hertz and elastic–plastic
-//! impacts [`summary`](super::summary) answers, their series computed in SIMD lanes — one
-//! impact a lane, as heyoka's batch mode does — and each lane's step, events and stages
-//! taken by the same code as one impact's (`stages::PowerImpact`). The series are some 85 %
-//! of a step (callgrind, BENCHMARKS.md, eleventh session); a lane runs the same IEEE
-//! operations in the same order as [`power::series`], so every answer is the single path's
-//! bits (tests/taylor.rs `batched_summaries_are_the_single_ones_bit_for_bit`).
+//! impacts [`summary`](super::summary) answers, one impact a SIMD lane, as heyoka's batch
+//! mode does. Each step's series (85 % of an impact's instructions one by one: callgrind,
+//! BENCHMARKS.md, eleventh session) are computed in lanes, and so is a quiet step's end (no
+//! event: the step rule lane by lane, Horner sums in lanes); a step with an event goes to the
+//! single impact's code (`stages::PowerImpact`) with that lane's series. A lane runs the same
+//! IEEE operations in the same order as the single path (`power::series`, `poly::eval`), so
+//! every answer is its bits (tests/taylor_batch.rs
+//! `batched_summaries_are_the_single_ones_bit_for_bit`).
 //!
-//! The lanes are plain `[f64; W]` with element-wise operators, compiled inside a
-//! `#[target_feature]` function so that LLVM packs them into one AVX register (or AVX-512's
-//! eight): the `wide` crate fixes its registers when it is compiled (two SSE2 registers on
+//! The lanes are plain `[f64; W]` with element-wise operators, compiled inside
+//! `#[target_feature]` functions so that LLVM packs them into one AVX-512 register (two AVX2
+//! ones): the `wide` crate fixes its registers when it is compiled (two SSE2 registers on
 //! the default target, `map::fast::lanes::avx`'s note), and no fused multiply–add may enter,
 //! or the bits would differ from the single path's.
 
@@ -19,7 +21,7 @@ use crate::model::contact::ContactLaw;
 use crate::model::params::Normalized;
 use std::ops::{Add, Mul, Sub};
 
-/// Impacts in step: one AVX register of f64.
+/// Impacts in step: one AVX-512 register of f64, two of AVX2.
 const W: usize = 8;
 
 /// W f64 lanes, each operation IEEE lane by lane.

@@ -104,7 +104,7 @@ pub(super) trait Coef:
 /// [`series`] in lanes (`super::batch`): each lane runs [`series`]'s IEEE operations in its
 /// order — its sums folded from −0.0 as `Iterator::sum` folds them, products and sums
 /// unfused — so a lane's coefficients are [`series`]'s bits
-/// (tests/taylor.rs `batched_summaries_are_the_single_ones_bit_for_bit`). Written apart
+/// (tests/taylor_batch.rs `batched_summaries_are_the_single_ones_bit_for_bit`). Written apart
 /// from [`series`], whose f64 form the compiler lays out best as it is (a generic copy for
 /// f64 took 8 % more instructions, callgrind).
 #[inline(always)]
