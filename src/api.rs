@@ -95,7 +95,10 @@ pub use report::{BallHeader, Energy, FitReport, ImpactReport, MeasuredAt};
 pub use rows::{ImpactRow, Rest, impact_row, impact_rows};
 pub use summary::ImpactSummary;
 pub use sweep::{sweep_zeta, sweep_zeta_watched};
-pub use warnings::{ENERGY_RESIDUAL_MAX, indentation_warning, map_indentation_warning};
+pub use warnings::{
+    ENERGY_RESIDUAL_MAX, displacement_warning, indentation_warning, map_indentation_warning,
+    peak_displacement, reach_warning,
+};
 
 impl Ball {
     /// An embedded preset (`superball`, `golf`, `baseball`, …) on the parameter set and contact

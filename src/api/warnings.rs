@@ -3,7 +3,9 @@
 //! a `warning:` line in text, and the explorer's readout.
 
 use super::{Ball, BallError};
-use crate::solver::ImpactResponse;
+use crate::model::contact::ContactLaw;
+use crate::model::params::ImpactParams;
+use crate::solver::{ImpactResponse, Method, SolveOptions, simulate, simulate_flow};
 use crate::text::{number, short, sig};
 
 /// The energy audit (docs/model.md §8) must close to this fraction of the impact energy; a
@@ -22,6 +24,73 @@ pub fn indentation_warning(z_m: f64, radius: f64) -> Option<String> {
             sig(radius * 1e3, 4)
         )
     })
+}
+
+/// A peak displacement `alpha_max` of the ball's centre toward the wall beyond the ball's
+/// `radius` (both m): the centre would pass where the undeformed surface met the wall, far
+/// outside the small deformation the model describes (the explorer's validity note checks the
+/// same, `tui::physical::validity`). `None` within, or with no radius known (NaN).
+pub fn displacement_warning(alpha_max: f64, radius: f64) -> Option<String> {
+    (radius.is_finite() && alpha_max > radius).then(|| {
+        format!(
+            "peak displacement of the ball's centre α_max {} mm exceeds the ball's radius {} mm: \
+             outside the model's range (the model assumes a deformation small against the ball)",
+            sig(alpha_max * 1e3, 4),
+            sig(radius * 1e3, 4)
+        )
+    })
+}
+
+/// The peak displacement α_max = max (z + y) (m) of the ball's centre toward the wall in the
+/// impact of `params` under `law` by `method`: the same run again with its flow kept, read
+/// where α' = 0 (`solver::Flow::peak_displacement`). A run the adaptive solver finished in a
+/// closed-form creep keeps no flow: then the largest of 4 001 samples of α, a value from below.
+pub fn peak_displacement(
+    params: &ImpactParams,
+    law: ContactLaw,
+    method: Method,
+) -> Result<f64, BallError> {
+    let opts = SolveOptions::default().with_method(method);
+    let length = params.v0 / params.omega0();
+    Ok(match simulate_flow(params, law, &opts)? {
+        (_, Some(flow)) => flow.peak_displacement() * length,
+        (_, None) => {
+            let r = simulate(params, law, &opts.with_samples(4001))?;
+            r.history.displacement.iter().fold(0.0, |a, &b| a.max(b))
+        }
+    })
+}
+
+/// The warning of an impact of `params` reaching past the ball's `radius` (m): its peak
+/// indentation `z_m` ([`indentation_warning`]), else the peak displacement of its centre
+/// ([`displacement_warning`]); `duration` the time it was followed (s). α = z + y ≥ z (the
+/// recoil element only compresses: c y' + K_r y = F ≥ 0 from y = 0), so a z_m past R is
+/// an α_max past R too, and one warning says it; and α' ≤ v0 (α'' = −F/m ≤ 0), so α_max ≤
+/// v0 · duration, which spares the second run whenever that is within R.
+/// tests/answer_warnings.rs.
+pub fn reach_warning(
+    params: &ImpactParams,
+    law: ContactLaw,
+    method: Method,
+    z_m: f64,
+    duration: f64,
+    radius: f64,
+) -> Option<String> {
+    if !radius.is_finite() {
+        return None;
+    }
+    if let Some(w) = indentation_warning(z_m, radius) {
+        return Some(w);
+    }
+    if params.v0 * duration <= radius {
+        return None;
+    }
+    match peak_displacement(params, law, method) {
+        Ok(alpha) => displacement_warning(alpha, radius),
+        Err(e) => Some(format!(
+            "the ball's peak displacement could not be checked against its radius: {e}"
+        )),
+    }
 }
 
 /// The cells of a dimensional `map` whose peak indentation passes `radius` (m): each cell's
@@ -72,8 +141,8 @@ impl Ball {
         self.measured.as_ref().map_or(f64::NAN, |m| m.radius)
     }
 
-    /// The warnings of an impact `r` of this ball: an indentation beyond its radius, an energy
-    /// balance that does not close.
+    /// The warnings of an impact `r` of this ball: an indentation or its centre's displacement
+    /// beyond its radius ([`reach_warning`]), an energy balance that does not close.
     ///
     /// ```
     /// let b = bouncelab::Ball::from_preset("superball")?;
@@ -81,12 +150,18 @@ impl Ball {
     /// let fast = b.with_v0(45.0)?;
     /// let w = fast.warnings(&fast.impact()?);
     /// assert!(w[0].starts_with("peak indentation 31.05 mm exceeds the ball's radius 21.55 mm"));
+    /// // a soft spring: the centre sinks 35 mm while the contact takes 0.13 mm
+    /// let soft = bouncelab::Ball::from_preset("superball")?.with_lambda_zeta(Some(0.001), Some(10.0))?;
+    /// let w = soft.warnings(&soft.impact()?);
+    /// assert!(w[0].starts_with("peak displacement of the ball's centre α_max 34.97 mm"));
     /// # Ok::<(), bouncelab::BallError>(())
     /// ```
     pub fn warnings(&self, r: &ImpactResponse) -> Vec<String> {
-        let mut w: Vec<String> = indentation_warning(r.max_indentation, self.radius())
-            .into_iter()
-            .collect();
+        let (z_m, radius) = (r.max_indentation, self.radius());
+        let mut w: Vec<String> =
+            reach_warning(&self.params, r.law, r.method, z_m, r.duration, radius)
+                .into_iter()
+                .collect();
         if let Some(e) = &r.energy {
             let residual = e.relative_residual();
             if residual.abs() > ENERGY_RESIDUAL_MAX {

@@ -1,0 +1,134 @@
+//! The ball's centre past its radius is warned of at the command line as in the explorer
+//! (`tui::physical::validity`): the superball at λ 0.001, ζ 10 keeps its contact at 0.13 mm
+//! while its centre sinks 35 mm against a radius of 21.55 mm, and only the explorer said so.
+//! The warning reads α_max where α' = 0 (`api::peak_displacement`), exact, not sampled.
+
+mod common;
+
+use bouncelab::model::contact::ContactLaw;
+use bouncelab::solver::{Method, SolveOptions, simulate};
+use bouncelab::{Ball, api};
+use common::*;
+
+const SOFT: [&str; 6] = ["--preset", "superball", "--lambda", "0.001", "--zeta", "10"];
+const ALPHA: &str = "peak displacement of the ball's centre α_max 34.97 mm exceeds the ball's \
+                     radius 21.55 mm";
+
+fn args<'a>(head: &[&'a str], tail: &[&'a str]) -> Vec<&'a str> {
+    head.iter()
+        .chain(SOFT.iter())
+        .chain(tail)
+        .copied()
+        .collect()
+}
+
+fn soft() -> Ball {
+    Ball::from_preset("superball")
+        .unwrap()
+        .with_lambda_zeta(Some(0.001), Some(10.0))
+        .unwrap()
+}
+
+#[test]
+fn run_warns_when_the_centre_passes_the_radius_in_every_format() {
+    let v = json(&args(&["run"], &["--format", "json"]));
+    let w = v["warnings"].as_array().expect("a warnings array");
+    assert_eq!(w.len(), 1, "{w:?}");
+    assert!(w[0].as_str().unwrap().starts_with(ALPHA), "{w:?}");
+    assert!(
+        f(&v, "max_indentation") < 0.001,
+        "the contact alone stays small"
+    );
+    let text = ok(&args(&["run"], &[]));
+    assert!(text.contains(&format!("warning: {ALPHA}")), "{text}");
+    let csv = ok(&args(&["run"], &["--format", "csv"]));
+    assert!(csv.lines().nth(1).unwrap().contains(ALPHA), "{csv}");
+    // beside a history, on stderr (exit 0)
+    let o = bl(&args(&["run"], &["--history", "--format", "csv"]));
+    assert_eq!(o.code, 0);
+    assert!(o.stderr.contains(&format!("bouncelab: warning: {ALPHA}")));
+}
+
+/// The threshold is α_max itself: a radius a hair above it is silent, a hair below warns.
+#[test]
+fn the_warning_turns_at_the_exact_peak() {
+    let b = soft();
+    let r = b.impact().unwrap();
+    let alpha = api::peak_displacement(&b.params, r.law, r.method).unwrap();
+    assert!((alpha * 1e3 - 34.97).abs() < 0.005, "{alpha}");
+    let w = |radius: f64| api::reach_warning(&b.params, r.law, r.method, 1e-4, 1.0, radius);
+    assert!(w(alpha * (1.0 + 1e-9)).is_none());
+    assert!(w(alpha * (1.0 - 1e-9)).is_some());
+    for (radius, warned) in [("0.0349", true), ("0.0351", false)] {
+        let v = json(&args(&["run"], &["--radius", radius, "--format", "json"]));
+        assert_eq!(
+            v["warnings"].as_array().unwrap().len(),
+            warned as usize,
+            "{v}"
+        );
+    }
+}
+
+/// α_max off the exact flow against the adaptive solver's, and both against a dense history
+/// (which can only fall short of the peak, by at most F_m h²/(8 m) between samples).
+#[test]
+fn the_peak_displacement_is_the_histories_peak() {
+    let b = soft();
+    let p = &b.params;
+    let exact = api::peak_displacement(p, ContactLaw::Linear, Method::Exact).unwrap();
+    let numeric = api::peak_displacement(p, ContactLaw::Linear, Method::Numeric).unwrap();
+    assert!(
+        ((exact - numeric) / exact).abs() < 1e-8,
+        "{exact} {numeric}"
+    );
+    for (law, peak) in [
+        (ContactLaw::Linear, exact),
+        (
+            ContactLaw::Hertz,
+            api::peak_displacement(p, ContactLaw::Hertz, Method::Numeric).unwrap(),
+        ),
+    ] {
+        let r = simulate(p, law, &SolveOptions::default().with_samples(20_001)).unwrap();
+        let sampled = r.history.displacement.iter().fold(0.0f64, |a, &x| a.max(x));
+        let h = r.duration / 20_000.0;
+        let gap = r.max_force * h * h / (8.0 * p.mass);
+        assert!(
+            sampled <= peak * (1.0 + 1e-12),
+            "{law:?}: {sampled} > {peak}"
+        );
+        assert!(
+            peak - sampled <= gap + 1e-12 * peak,
+            "{law:?}: {peak} {sampled}"
+        );
+    }
+}
+
+#[test]
+fn sweep_rows_and_oblique_warn_of_the_centre_at_their_own_speed() {
+    let csv = ok(&args(
+        &["sweep", "velocity"],
+        &["--from", "0.312", "--to", "3.12", "--points", "2"],
+    ));
+    let rows: Vec<&str> = csv.lines().skip(1).collect();
+    assert!(rows[0].ends_with(','), "3.5 mm at 0.312 m/s: {csv}");
+    assert!(rows[1].contains(ALPHA), "{csv}");
+    // the normal impact at v sin θ = 3.12 sin 45° m/s: α_max 34.97 sin 45° = 24.73 mm
+    let v = json(&[
+        "oblique",
+        "--preset",
+        "superball",
+        "--k-r",
+        "54.5",
+        "--damping",
+        "2.2573767961950884",
+        "--angle",
+        "45",
+        "--friction",
+        "0.5",
+        "--format",
+        "json",
+    ]);
+    let w = v["warnings"].as_array().unwrap();
+    assert_eq!(w.len(), 1, "{w:?}");
+    assert!(w[0].as_str().unwrap().contains("α_max 24.73 mm"), "{w:?}");
+}
