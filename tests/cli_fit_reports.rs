@@ -56,3 +56,84 @@ fn equal_cors_leave_no_scatter_to_estimate_from() {
     assert!(v.get("exact").is_none(), "{v}");
     assert!(f(&v["fitted"]["k_r"], "std_error") > 0.0, "{v}");
 }
+
+/// The subtitle lines of the first figure of `fit --plot`'s SVG (font size 60 in drawing
+/// units: the subtitle's 15 px).
+fn subtitle(svg: &str) -> Vec<String> {
+    let doc = roxmltree::Document::parse(svg).unwrap();
+    doc.descendants()
+        .filter(|n| n.has_tag_name("text") && n.attribute("font-size") == Some("60.00000000000001"))
+        .filter_map(|n| n.text())
+        .map(|t| t.trim().to_string())
+        .take_while(|t| !t.starts_with("rms "))
+        .filter(|t| t.contains("superball") || t.contains(" = "))
+        .collect()
+}
+
+/// The subtitle printed `fitted k_r = 7.048e4` where the report gives `70479 … ± (95 %:
+/// 70086 … 70874)`; three values with their intervals take three lines, each within the
+/// picture's 800 px (15 px text, about 0.52 em a character: 98 characters).
+#[test]
+fn the_plot_subtitle_gives_each_value_with_its_interval() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    std::fs::write(d.join("ne.csv"), "v0,cor\n2,0.75\n4,0.7501\n").unwrap();
+    ok_at(d, &["fit", "--cor-table", "ne.csv", "--plot", "c.svg"]);
+    let lines = subtitle(&std::fs::read_to_string(d.join("c.svg")).unwrap());
+    assert_eq!(
+        lines,
+        ["superball, linear law; fitted k_r = 70479 N/m (95 %: 70086 … 70874)"]
+    );
+    // a trace fitted with three parameters
+    let csv = ok(&[
+        "run",
+        "--preset",
+        "superball",
+        "--history",
+        "--samples",
+        "300",
+        "--format",
+        "csv",
+    ]);
+    let mut trace = String::from("time_ms,force_N\n");
+    for (i, row) in csv.lines().skip(1).enumerate() {
+        let (t, force) = row.split_once(',').unwrap();
+        let force: f64 = force.split(',').next().unwrap().parse().unwrap();
+        let t: f64 = t.parse().unwrap();
+        let wobble = 1.0 + 0.01 * (1.7 * (i + 2) as f64).sin();
+        trace.push_str(&format!("{},{}\n", t * 1e3, force * wobble));
+    }
+    std::fs::write(d.join("trace.csv"), trace).unwrap();
+    let args = [
+        "fit",
+        "--v0",
+        "3.12",
+        "--force-time",
+        "trace.csv",
+        "--free",
+        "k_p,c,k_r",
+        "--plot",
+        "t.svg",
+    ];
+    let text = ok_at(d, &args);
+    let lines = subtitle(&std::fs::read_to_string(d.join("t.svg")).unwrap());
+    assert_eq!(lines.len(), 3, "{lines:?}");
+    for line in &lines {
+        assert!(line.chars().count() <= 98, "{line}");
+    }
+    let all = lines.join("; ");
+    for (name, row) in ["k_p", "c", "k_r"].iter().map(|n| {
+        let row = text
+            .lines()
+            .find(|l| l.trim_start().starts_with(&format!("{n} ")))
+            .unwrap();
+        (n, row.split_whitespace().collect::<Vec<_>>())
+    }) {
+        // `k_p  54500  291  53930 … 55076  N/m`: value, error, lo, …, hi, unit
+        let shown = format!(
+            "{name} = {} {} (95 %: {} … {})",
+            row[1], row[6], row[3], row[5]
+        );
+        assert!(all.contains(&shown), "{shown} not in {all}");
+    }
+}
