@@ -132,3 +132,55 @@ fn sweep_rows_and_oblique_warn_of_the_centre_at_their_own_speed() {
     assert_eq!(w.len(), 1, "{w:?}");
     assert!(w[0].as_str().unwrap().contains("α_max 24.73 mm"), "{w:?}");
 }
+
+/// `collide` and `bat` warned of the indentation only. On a rigid target the ball's
+/// compression is the reduced-mass impact's α_max, exactly; on a stiff compliant surface it
+/// tends to it (read off the sampled run, from below).
+#[test]
+fn collide_and_bat_warn_of_the_ball_s_own_compression() {
+    let soft = [
+        "--preset",
+        "superball",
+        "--k-r",
+        "54.5",
+        "--damping",
+        "2.2573767961950884",
+    ];
+    let collide = |extra: &[&str]| {
+        let mut a = vec!["collide"];
+        a.extend(soft);
+        a.extend(["--target-mass", "1", "--format", "json"]);
+        a.extend(extra);
+        json(&a)
+    };
+    let b = soft_ball();
+    let m = b.params.mass;
+    let reduced = bouncelab::ImpactParams {
+        mass: m / (1.0 + m / 1.0),
+        ..b.params
+    };
+    let alpha = api::peak_displacement(&reduced, ContactLaw::Linear, Method::Exact).unwrap();
+    let shown = format!("α_max {} mm exceeds", bouncelab::text::sig(alpha * 1e3, 4));
+    for extra in [&[][..], &["--target-stiffness", "1e9"]] {
+        let v = collide(extra);
+        let w = v["warnings"].as_array().unwrap();
+        assert_eq!(w.len(), 1, "{extra:?}: {w:?}");
+        assert!(w[0].as_str().unwrap().contains(&shown), "{shown}: {w:?}");
+    }
+    let mut a = vec!["bat"];
+    a.extend(soft);
+    a.extend(["--bat-mass", "0.8", "--format", "json"]);
+    let v = json(&a);
+    let w = v["warnings"].as_array().unwrap();
+    assert_eq!(w.len(), 2, "{w:?}");
+    assert!(w[0].as_str().unwrap().starts_with("game: peak displacement"));
+    assert!(w[1].as_str().unwrap().starts_with("BBCOR test: peak displacement"));
+}
+
+/// The superball with K_r 54.5 N/m and c as ζ = 10 (λ 0.001): `soft()` by its parameters.
+fn soft_ball() -> Ball {
+    let b = soft();
+    assert!((b.params.k_r - 54.5).abs() < 1e-9);
+    assert!((b.params.damping - 2.2573767961950884).abs() < 1e-12);
+    b
+}
