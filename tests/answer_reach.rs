@@ -173,8 +173,16 @@ fn collide_and_bat_warn_of_the_ball_s_own_compression() {
     let v = json(&a);
     let w = v["warnings"].as_array().unwrap();
     assert_eq!(w.len(), 2, "{w:?}");
-    assert!(w[0].as_str().unwrap().starts_with("game: peak displacement"));
-    assert!(w[1].as_str().unwrap().starts_with("BBCOR test: peak displacement"));
+    assert!(
+        w[0].as_str()
+            .unwrap()
+            .starts_with("game: peak displacement")
+    );
+    assert!(
+        w[1].as_str()
+            .unwrap()
+            .starts_with("BBCOR test: peak displacement")
+    );
 }
 
 /// The superball with K_r 54.5 N/m and c as ζ = 10 (λ 0.001): `soft()` by its parameters.
@@ -183,4 +191,66 @@ fn soft_ball() -> Ball {
     assert!((b.params.k_r - 54.5).abs() < 1e-9);
     assert!((b.params.damping - 2.2573767961950884).abs() < 1e-12);
     b
+}
+
+/// `map` warned of cells whose indentation passes the radius only. Its count of cells whose
+/// centre passes it, decided by exact bounds where they decide and by the cell's flow where
+/// they do not, against every cell solved and read exactly, at radii that leave both kinds.
+#[test]
+fn the_map_counts_the_cells_whose_centre_passes_the_radius() {
+    use bouncelab::map::{Axis, MapSpec, Param, Scale, compute};
+    for law in [ContactLaw::Linear, ContactLaw::Hertz] {
+        let base = Ball::from_preset("superball").unwrap().params;
+        let spec = MapSpec::dimensional(
+            base,
+            law,
+            Axis::new(Param::Lambda, 1e-4, 10.0, 9, Scale::Log).unwrap(),
+            Axis::new(Param::Zeta, 0.01, 100.0, 9, Scale::Log).unwrap(),
+        )
+        .unwrap();
+        let map = compute(spec.clone());
+        let method = if law == ContactLaw::Linear {
+            Method::Exact
+        } else {
+            Method::Numeric
+        };
+        let exact: Vec<(f64, f64)> = map
+            .lambdas
+            .iter()
+            .flat_map(|&l| map.zetas.iter().map(move |&z| (l, z)))
+            .map(|(l, z)| {
+                let p = spec.params_at(l, z);
+                let r = simulate(&p, law, &SolveOptions::default()).unwrap();
+                let alpha = api::peak_displacement(&p, law, method).unwrap();
+                (r.max_indentation, alpha)
+            })
+            .collect();
+        let mut alphas: Vec<f64> = exact.iter().map(|e| e.1).collect();
+        alphas.sort_by(f64::total_cmp);
+        let mut mixed = false;
+        for radius in [
+            0.02155,
+            2e-4,
+            alphas[20],
+            alphas[40] * 1.000_001,
+            alphas[60],
+        ] {
+            // α ≥ z: a cell whose indentation passes counts as its centre's
+            let past = exact.iter().filter(|(_, a)| *a > radius).count();
+            let alone = exact
+                .iter()
+                .filter(|(z, a)| *z <= radius && *a > radius)
+                .count();
+            mixed |= past > alone && alone > 0;
+            let w = api::map_displacement_warning(&map, radius);
+            assert_eq!(w.is_some(), alone > 0, "{law:?} R {radius}: {w:?}");
+            if let Some(w) = w {
+                let counts = format!("in {past} of 81 cells, {alone} of them with");
+                assert!(
+                    w.contains(&counts),
+                    "{law:?} R {radius}: {w} against {counts}"
+                );
+            }
+        }
+    }
 }

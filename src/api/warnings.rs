@@ -2,10 +2,9 @@
 //! travel with the answer"): the JSON `warnings` array of run, sweep velocity, drop and peers,
 //! a `warning:` line in text, and the explorer's readout.
 
+use super::reach::reach_warning;
 use super::{Ball, BallError};
-use crate::model::contact::ContactLaw;
-use crate::model::params::ImpactParams;
-use crate::solver::{ImpactResponse, Method, SolveOptions, simulate, simulate_flow};
+use crate::solver::ImpactResponse;
 use crate::text::{number, short, sig};
 
 /// The energy audit (docs/model.md §8) must close to this fraction of the impact energy; a
@@ -24,73 +23,6 @@ pub fn indentation_warning(z_m: f64, radius: f64) -> Option<String> {
             sig(radius * 1e3, 4)
         )
     })
-}
-
-/// A peak displacement `alpha_max` of the ball's centre toward the wall beyond the ball's
-/// `radius` (both m): the centre would pass where the undeformed surface met the wall, far
-/// outside the small deformation the model describes (the explorer's validity note checks the
-/// same, `tui::physical::validity`). `None` within, or with no radius known (NaN).
-pub fn displacement_warning(alpha_max: f64, radius: f64) -> Option<String> {
-    (radius.is_finite() && alpha_max > radius).then(|| {
-        format!(
-            "peak displacement of the ball's centre α_max {} mm exceeds the ball's radius {} mm: \
-             outside the model's range (the model assumes a deformation small against the ball)",
-            sig(alpha_max * 1e3, 4),
-            sig(radius * 1e3, 4)
-        )
-    })
-}
-
-/// The peak displacement α_max = max (z + y) (m) of the ball's centre toward the wall in the
-/// impact of `params` under `law` by `method`: the same run again with its flow kept, read
-/// where α' = 0 (`solver::Flow::peak_displacement`). A run the adaptive solver finished in a
-/// closed-form creep keeps no flow: then the largest of 4 001 samples of α, a value from below.
-pub fn peak_displacement(
-    params: &ImpactParams,
-    law: ContactLaw,
-    method: Method,
-) -> Result<f64, BallError> {
-    let opts = SolveOptions::default().with_method(method);
-    let length = params.v0 / params.omega0();
-    Ok(match simulate_flow(params, law, &opts)? {
-        (_, Some(flow)) => flow.peak_displacement() * length,
-        (_, None) => {
-            let r = simulate(params, law, &opts.with_samples(4001))?;
-            r.history.displacement.iter().fold(0.0, |a, &b| a.max(b))
-        }
-    })
-}
-
-/// The warning of an impact of `params` reaching past the ball's `radius` (m): its peak
-/// indentation `z_m` ([`indentation_warning`]), else the peak displacement of its centre
-/// ([`displacement_warning`]); `duration` the time it was followed (s). α = z + y ≥ z (the
-/// recoil element only compresses: c y' + K_r y = F ≥ 0 from y = 0), so a z_m past R is
-/// an α_max past R too, and one warning says it; and α' ≤ v0 (α'' = −F/m ≤ 0), so α_max ≤
-/// v0 · duration, which spares the second run whenever that is within R.
-/// tests/answer_warnings.rs.
-pub fn reach_warning(
-    params: &ImpactParams,
-    law: ContactLaw,
-    method: Method,
-    z_m: f64,
-    duration: f64,
-    radius: f64,
-) -> Option<String> {
-    if !radius.is_finite() {
-        return None;
-    }
-    if let Some(w) = indentation_warning(z_m, radius) {
-        return Some(w);
-    }
-    if params.v0 * duration <= radius {
-        return None;
-    }
-    match peak_displacement(params, law, method) {
-        Ok(alpha) => displacement_warning(alpha, radius),
-        Err(e) => Some(format!(
-            "the ball's peak displacement could not be checked against its radius: {e}"
-        )),
-    }
 }
 
 /// The cells of a dimensional `map` whose peak indentation passes `radius` (m): each cell's
