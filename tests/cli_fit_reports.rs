@@ -137,3 +137,59 @@ fn the_plot_subtitle_gives_each_value_with_its_interval() {
         assert!(all.contains(&shown), "{shown} not in {all}");
     }
 }
+
+/// A fit answered with a ball that, at the data's speed, presses past its radius, and said
+/// nothing: `fit --cor 0.6 --v0 45` (K_r 187687 N/m, z_m 32.8 mm, R 21.55 mm), and a COR
+/// table up to 45 m/s. The single fit's JSON had no `warnings` key at all.
+#[test]
+fn a_fitted_ball_past_its_radius_is_warned_of() {
+    let args = ["fit", "--preset", "superball", "--cor", "0.6", "--v0", "45"];
+    let v = json(&[&args[..], &["--format", "json"]].concat());
+    let w = v["warnings"].as_array().expect("a warnings array");
+    assert_eq!(w.len(), 1, "{w:?}");
+    let said = w[0].as_str().unwrap();
+    assert!(
+        said.starts_with("the fitted ball at v0 = 45 m/s: peak indentation 32.81 mm exceeds"),
+        "{said}"
+    );
+    assert!(ok(&args).contains(&format!("warning: {said}")));
+    let calm = json(&[
+        "fit",
+        "--preset",
+        "superball",
+        "--cor",
+        "0.75",
+        "--format",
+        "json",
+    ]);
+    assert_eq!(calm["warnings"], serde_json::json!([]));
+    // a table: at its fastest row, named
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(
+        dir.path().join("fast.csv"),
+        "v0,cor\n30,0.62\n45,0.58\n40,0.6\n",
+    )
+    .unwrap();
+    let o = bl_at(
+        dir.path(),
+        &[
+            "fit",
+            "--cor-table",
+            "fast.csv",
+            "--free",
+            "k_r",
+            "--format",
+            "json",
+        ],
+    );
+    let v: Value = serde_json::from_str(&o.stdout).unwrap();
+    let fastest = "the fitted ball at v0 = 45 m/s (the fastest of the data): peak indentation";
+    assert!(
+        v["warnings"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .any(|w| w.as_str().unwrap().starts_with(fastest)),
+        "{v}"
+    );
+}

@@ -217,11 +217,19 @@ fn single(a: &FitArgs, cor: f64, stdout: &mut dyn Write) -> anyhow::Result<()> {
     let f = b.fit_cor(cor)?;
     let p = &b.params;
     let r = FitReport::new(&b, cor, &f);
+    let fitted = crate::model::params::ImpactParams { k_r: f.k_r, ..*p };
+    let warnings = b.fitted_warnings(&fitted, &[p.v0]);
     // the report first in memory: it goes out with the files, or not at all (cli::outputs)
     let mut report = Vec::new();
     let out = &mut report;
     match a.format {
-        FitFormat::Json => output::json(out, &r)?,
+        FitFormat::Json => output::json(
+            out,
+            &SingleJson {
+                r,
+                warnings: &warnings,
+            },
+        )?,
         FitFormat::Text => {
             writeln!(out, "{}, {} law", b.label(), r.ball.law)?;
             writeln!(
@@ -246,8 +254,17 @@ fn single(a: &FitArgs, cor: f64, stdout: &mut dyn Write) -> anyhow::Result<()> {
                 ],
             ];
             table(out, "  ", &rows)?;
+            output::warning_lines(out, &warnings)?;
         }
     }
-    let fitted = crate::model::params::ImpactParams { k_r: f.k_r, ..*p };
     multi::single_extras(a, &b, &fitted, cor, stdout, &report)
+}
+
+/// `fit --cor E --format json`: the library's report and what the caller should know of the
+/// fitted ball ([`crate::Ball::fitted_warnings`]; `[]` when nothing).
+#[derive(serde::Serialize)]
+struct SingleJson<'a> {
+    #[serde(flatten)]
+    r: FitReport<'a>,
+    warnings: &'a [String],
 }
