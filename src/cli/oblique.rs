@@ -278,7 +278,7 @@ fn text(out: &mut dyn Write, r: &ObliqueResponse) -> std::io::Result<()> {
         ),
         row(
             "energy balance",
-            format!("residual {:.1e}", e.residual),
+            format!("residual {}", output::residual(e.residual)),
             String::new(),
         ),
     ];
