@@ -26,3 +26,30 @@ fn an_exact_zero_residual_reads_0() {
         "{text}"
     );
 }
+
+/// `peers --preset superball --v0 45` put its warning (a peak indentation of 31 mm on a ball
+/// of 21.55 mm) in the JSON only: the text said nothing, nor the CSV or an export.
+#[test]
+fn peers_say_their_warning_in_every_format() {
+    let base = ["peers", "--preset", "superball", "--v0", "45"];
+    let said = "peak indentation 31.05 mm exceeds the ball's radius 21.55 mm";
+    let text = ok(&base);
+    assert!(text.contains(&format!("\nwarning: {said}")), "{text}");
+    for extra in [
+        &["--format", "csv"][..],
+        &["--export", "lammps"],
+        &["--export", "json"],
+    ] {
+        let o = bl(&[&base[..], extra].concat());
+        assert_eq!(o.code, 0, "{extra:?}: {}", o.stderr);
+        assert!(
+            o.stderr.starts_with(&format!("bouncelab: warning: {said}")),
+            "{extra:?}: {}",
+            o.stderr
+        );
+    }
+    // at the measured speed, nothing
+    let o = bl(&["peers", "--preset", "superball", "--export", "lammps"]);
+    assert!(o.stderr.is_empty(), "{}", o.stderr);
+    assert!(!ok(&["peers", "--preset", "superball"]).contains("warning:"));
+}
