@@ -252,5 +252,9 @@ fn the_map_counts_the_cells_whose_centre_passes_the_radius() {
                 );
             }
         }
+        assert!(
+            mixed,
+            "{law:?}: no radius left cells past by indentation and by centre alone"
+        );
     }
 }
