@@ -50,7 +50,7 @@ pub fn peak_displacement(
 /// ([`displacement_warning`]); `duration` the time it was followed (s). α = z + y ≥ z (the
 /// recoil element only compresses: c y' + K_r y = F ≥ 0 from y = 0), so a z_m past R is
 /// an α_max past R too, and one warning says it; and α_max ≤ min(v0 · duration, z_m + m v0/c)
-/// ([`bounds`]), which spares the second run whenever that is within R.
+/// (`bounds`), which spares the second run whenever that is within R.
 /// tests/answer_warnings.rs.
 pub fn reach_warning(
     params: &ImpactParams,
@@ -66,7 +66,7 @@ pub fn reach_warning(
     if let Some(w) = indentation_warning(z_m, radius) {
         return Some(w);
     }
-    // α_max ≤ min(v0 t_f, z_m + m v0/c) ([`bounds`]): within R, no second run
+    // α_max ≤ min(v0 t_f, z_m + m v0/c) (`bounds`): within R, no second run
     let momentum = params.mass * params.v0;
     if (params.v0 * duration).min(z_m + momentum / params.damping) <= radius {
         return None;
@@ -103,7 +103,7 @@ fn bounds(p: &ImpactParams, z_m: f64, f_m: f64, t_f: f64) -> (f64, f64) {
 
 /// The cells of a dimensional `map` whose ball's centre passes `radius` (m) while their peak
 /// indentation does not ([`super::map_indentation_warning`] names those): a cell past by its
-/// lower bound is counted, one within by its upper bound left ([`bounds`]), and every other
+/// lower bound is counted, one within by its upper bound left (`bounds`), and every other
 /// read exactly ([`peak_displacement`], the cell's impact again with its flow, on all cores).
 /// One warning, when some cell passes by its centre alone, naming how many cells the centre
 /// passes in (those whose indentation passes too: α ≥ z) and how many of them by it alone;
