@@ -53,3 +53,48 @@ fn peers_say_their_warning_in_every_format() {
     assert!(o.stderr.is_empty(), "{}", o.stderr);
     assert!(!ok(&["peers", "--preset", "superball"]).contains("warning:"));
 }
+
+/// `fit --cor 1` said "cor 1 is out of reach …: the model spans 0.5985 (λ = 0) to 1.0000
+/// (λ → ∞)", a span that holds 1 as printed. Its end is printed with the digits that keep it
+/// below the COR asked for, and the COR as typed (it read "cor 1" for 0.999999999999); ends
+/// far from it keep four.
+#[test]
+fn an_unreachable_cor_is_not_inside_the_span_shown() {
+    for cor in ["1", "0.999999999999"] {
+        let o = bl(&["fit", "--cor", cor]);
+        assert_bad(
+            &o,
+            &[&format!("cor {cor} is out of reach"), "0.5985 (λ = 0)"],
+        );
+        let high: f64 = o
+            .stderr
+            .split(" to ")
+            .nth(1)
+            .unwrap()
+            .split(' ')
+            .next()
+            .unwrap()
+            .parse()
+            .unwrap();
+        assert!(high < cor.parse::<f64>().unwrap(), "{}", o.stderr);
+    }
+    bad(
+        &["fit", "--cor", "0.01"],
+        &["the model spans 0.5985 (λ = 0) to 1.0000 (λ → ∞)"],
+    );
+}
+
+/// `fit --cor 0.99999999999` answered with "target COR 1": the COR typed, rounded to six
+/// digits, read as another. It is shown as typed (as `peers` shows a typed target).
+#[test]
+fn a_typed_cor_is_shown_as_typed() {
+    let text = ok(&["fit", "--cor", "0.99999999999"]);
+    let line = text.lines().find(|l| l.contains("target COR")).unwrap();
+    assert_eq!(
+        line.split_whitespace().last(),
+        Some("0.99999999999"),
+        "{text}"
+    );
+    let text = ok(&["fit", "--cor", "0.75"]);
+    assert!(text.contains("  target COR            0.75\n"), "{text}");
+}

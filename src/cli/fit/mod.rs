@@ -240,7 +240,8 @@ fn single(a: &FitArgs, cor: f64, stdout: &mut dyn Write) -> anyhow::Result<()> {
             )?;
             writeln!(out)?;
             let rows = vec![
-                vec!["target COR".into(), given(r.target_cor, 6)],
+                // typed, shown as typed: 0.99999999999, never a rounded 1 (as `peers`)
+                vec!["target COR".into(), crate::text::number(r.target_cor)],
                 vec!["fitted K_r".into(), format!("{} N/m", human(r.k_r, 5))],
                 vec!["fitted λ = K_r/K_p".into(), human(r.lambda, 5)],
                 vec!["model COR at the fit".into(), human(r.cor, 6)],
