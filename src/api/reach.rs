@@ -3,12 +3,25 @@
 //! note, `tui::physical::validity`, checks the same two). tests/answer_reach.rs.
 
 use super::BallError;
-use super::warnings::indentation_warning;
 use crate::map::{Cell, Map};
 use crate::model::contact::ContactLaw;
 use crate::model::params::ImpactParams;
 use crate::solver::{Method, SolveOptions, simulate, simulate_flow};
 use crate::text::sig;
+
+/// A peak indentation `z_m` beyond the ball's `radius` (both m): the contact would reach past
+/// the ball's centre, far outside the small-deformation contact the laws describe
+/// (docs/model.md §3). `None` within, or with no radius known (NaN).
+pub fn indentation_warning(z_m: f64, radius: f64) -> Option<String> {
+    (radius.is_finite() && z_m > radius).then(|| {
+        format!(
+            "peak indentation {} mm exceeds the ball's radius {} mm: outside the model's range \
+             (the contact laws assume a deformation small against the ball)",
+            sig(z_m * 1e3, 4),
+            sig(radius * 1e3, 4)
+        )
+    })
+}
 
 /// A peak displacement `alpha_max` of the ball's centre toward the wall beyond the ball's
 /// `radius` (both m): the centre would pass where the undeformed surface met the wall, far

@@ -11,20 +11,6 @@ use crate::text::{number, short, sig};
 /// larger residual means the numbers were not computed to their promised accuracy.
 pub const ENERGY_RESIDUAL_MAX: f64 = 1e-6;
 
-/// A peak indentation `z_m` beyond the ball's `radius` (both m): the contact would reach past
-/// the ball's centre, far outside the small-deformation contact the laws describe
-/// (docs/model.md §3). `None` within, or with no radius known (NaN).
-pub fn indentation_warning(z_m: f64, radius: f64) -> Option<String> {
-    (radius.is_finite() && z_m > radius).then(|| {
-        format!(
-            "peak indentation {} mm exceeds the ball's radius {} mm: outside the model's range \
-             (the contact laws assume a deformation small against the ball)",
-            sig(z_m * 1e3, 4),
-            sig(radius * 1e3, 4)
-        )
-    })
-}
-
 /// The cells of a dimensional `map` whose peak indentation passes `radius` (m): each cell's
 /// z_m from its peak force through the loading branch, which the map's cells share (λ and ζ
 /// move K_r and c, never m, K_p, K_h, z_p or v0; `Contact::loading_indentation`). One
