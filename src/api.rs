@@ -74,6 +74,7 @@ mod intervals;
 mod mc;
 mod oblique;
 mod oblique_fit;
+mod reach;
 mod report;
 mod rows;
 mod summary;
@@ -91,11 +92,15 @@ pub use intervals::{Intervals, bands, fit_table, holds, intervals};
 pub use mc::{McReport, MonteCarlo};
 pub use oblique::{CourtPace, ObliqueSpec, SOLID_INERTIA_FACTOR};
 pub use oblique_fit::{ObliqueFitReport, is_data_error as is_oblique_data_error};
+pub use reach::{
+    displacement_warning, indentation_warning, map_displacement_warning, peak_displacement,
+    reach_warning,
+};
 pub use report::{BallHeader, Energy, FitReport, ImpactReport, MeasuredAt};
 pub use rows::{ImpactRow, Rest, impact_row, impact_rows};
 pub use summary::ImpactSummary;
 pub use sweep::{sweep_zeta, sweep_zeta_watched};
-pub use warnings::{ENERGY_RESIDUAL_MAX, indentation_warning, map_indentation_warning};
+pub use warnings::{ENERGY_RESIDUAL_MAX, map_indentation_warning};
 
 impl Ball {
     /// An embedded preset (`superball`, `golf`, `baseball`, …) on the parameter set and contact

@@ -246,7 +246,7 @@ fn map_counts_the_cells_past_the_radius_as_run_finds_them() {
         let base = ["--preset", "superball", "--law", law, "--v0", "45"];
         let axes = ["--lambda", "0.1:10:3", "--zeta", "0.01:1:3"];
         let v = json(&[&["map"][..], &base, &axes, &["--format", "json"]].concat());
-        let (mut past, mut deepest) = (0, 0.0f64);
+        let (mut past, mut deepest, mut centre) = (0, 0.0f64, 0);
         for row in v["rows"].as_array().unwrap() {
             let (l, z) = (
                 row[0].as_f64().unwrap().to_string(),
@@ -265,14 +265,30 @@ fn map_counts_the_cells_past_the_radius_as_run_finds_them() {
                 past += 1;
                 deepest = deepest.max(z_m);
             }
+            // the ball's centre past R by itself (tests/answer_reach.rs): run says it too
+            let warned = r["warnings"].as_array().unwrap().iter();
+            centre += warned
+                .filter(|w| w.as_str().unwrap().starts_with("peak displacement"))
+                .count();
         }
         let w = v["warnings"].as_array().unwrap();
         assert!(
             past > 0 && past < 9,
             "{law}: the grid should straddle R ({past} of 9)"
         );
-        assert_eq!(w.len(), 1, "{law}: {w:?}");
-        let said = w[0].as_str().unwrap();
+        let indentation =
+            |w: &&serde_json::Value| w.as_str().unwrap().starts_with("peak indentation");
+        let (z, alpha): (Vec<_>, Vec<_>) = w.iter().partition(indentation);
+        assert_eq!(z.len(), 1, "{law}: {w:?}");
+        assert_eq!(alpha.len(), usize::from(centre > 0), "{law}: {w:?}");
+        if let Some(a) = alpha.first() {
+            let counts = format!("in {} of 9 cells, {centre} of them", past + centre);
+            assert!(
+                a.as_str().unwrap().contains(&counts),
+                "{law}: {a} against {counts}"
+            );
+        }
+        let said = z[0].as_str().unwrap();
         assert!(
             said.contains(&format!("in {past} of 9 cells")),
             "{law}: {said}"

@@ -56,6 +56,16 @@ fn bad_numbers_name_the_field() {
         &["run", "--history", "--samples", "1"],
         &["invalid samples: 1"],
     );
+    // `--history --samples 0` wrote no history and exit 0 from `oblique`, where 1 was refused
+    bad(
+        &["run", "--history", "--samples", "0"],
+        &["invalid samples: 0", "2 … 100000"],
+    );
+    let oblique = ["oblique", "--angle", "30", "--friction", "0.5", "--history"];
+    for n in ["0", "1", "100001"] {
+        let args: Vec<&str> = oblique.iter().copied().chain(["--samples", n]).collect();
+        bad(&args, &[&format!("invalid samples: {n}"), "2 … 100000"]);
+    }
     bad(
         &["fit", "--cor", "0.5", "--v0", "inf"],
         &["invalid v0: inf"],

@@ -3,7 +3,7 @@
 
 mod common;
 
-use common::{assert_bad, bl, bl_at, f, json, ok_at, parse_svg};
+use common::{assert_bad, bl, bl_at, f, json, ok, ok_at, parse_svg};
 use serde_json::Value;
 use std::process::Command;
 
@@ -267,4 +267,39 @@ fn elastic_plastic_samples_count_by_their_path() {
         &run("9.4", "500001"),
         &["too much work: 500001 samples (20 elastic-plastic-law samples past yield"],
     );
+}
+
+/// `mc --samples 1` printed `sd 0`, a spread of nothing where one draw says nothing of the
+/// spread, and "1 samples". Its sd is now unknown (text `–`, JSON null), as its mean's
+/// interval was.
+#[test]
+fn one_sample_has_no_spread_to_estimate() {
+    let args = ["mc", "--vary", "k_p=5%", "--samples", "1"];
+    let text = ok(&args);
+    assert!(text.contains("\n1 sample, seed 0"), "{text}");
+    let sd = text
+        .lines()
+        .find(|l| l.trim_start().starts_with("sd "))
+        .unwrap();
+    assert_eq!(
+        sd.split_whitespace().collect::<Vec<_>>(),
+        ["sd", "–", "–", "–"]
+    );
+    assert!(text.contains("warning: 1 sample is too few"), "{text}");
+    let v = json(&[&args[..], &["--format", "json"]].concat());
+    for q in ["cor", "max_force", "contact_time"] {
+        assert!(v["stats"][q]["sd"].is_null(), "{q}: {}", v["stats"][q]);
+        assert!(v["stats"][q]["mean"].is_number());
+    }
+    // two samples: a spread
+    let v = json(&[
+        "mc",
+        "--vary",
+        "k_p=5%",
+        "--samples",
+        "2",
+        "--format",
+        "json",
+    ]);
+    assert!(f(&v["stats"]["cor"], "sd") > 0.0);
 }

@@ -150,3 +150,32 @@ fn vanishing_drag_tends_to_vacuum() {
     assert!(close(vac.fall_speed(h), (2.0 * G * h).sqrt(), 1e-15));
     assert!(close(vac.rise_height(u), u * u / (2.0 * G), 1e-15));
 }
+
+/// `drop --height 3000` printed t_start `inf` for every bounce (JSON `null`): artanh(v/v_t)
+/// with v/v_t rounded to 1. The fall time from high up is the terminal-speed time plus a
+/// constant, t = (v_t/g)(xs + ln 2) to e^{−2xs}, and it follows the integrated fall at the
+/// heights that were right before.
+#[test]
+fn a_fall_from_high_up_takes_a_finite_time() {
+    let air = Some(Air::default());
+    let f = Flight::new(0.0374, 0.02155, air);
+    let (vt, x) = (f.terminal_speed(), f.drag_per_mass);
+    for h in [3000.0, 1e4, 1e5] {
+        let t = f.fall_time(h);
+        let far = (vt / 9.80665) * (x * h + std::f64::consts::LN_2);
+        assert!(t.is_finite() && close(t, far, 1e-12), "h {h}: {t} vs {far}");
+        // the fall reaches the ground then: fall_at, the closed form of the motion, agrees
+        assert!(close(f.fall_at(t).0, h, 1e-12), "h {h}: {:?}", f.fall_at(t));
+    }
+    for (f, h) in flights() {
+        let (s, _) = f.fall_at(f.fall_time(h));
+        assert!(close(s, h, 1e-12), "x={}: {s} vs {h}", f.drag_per_mass);
+    }
+    // both forms at the switch, xs = 1
+    let h = 1.0 / x;
+    let (below, above) = (
+        f.fall_time(h * (1.0 - 1e-15)),
+        f.fall_time(h * (1.0 + 1e-15)),
+    );
+    assert!(close(below, above, 1e-14), "{below} {above}");
+}

@@ -105,4 +105,20 @@ fn the_paths_are_the_arrival_and_the_departure() {
         vec![(0.0, 0.0), (r.vx_out, r.vy_out)]
     );
     assert!(paths.series[1].label.starts_with("out, "));
+    // the legend printed the angles to the last bit ("out, 17.634123456789012°"): now as
+    // `bouncelab oblique`'s text gives them
+    let deg = |x: f64| format!("{}°", bouncelab::text::human(x, 5));
+    assert_eq!(
+        paths.series[0].label,
+        format!("in, {}", deg(r.angle_in_deg))
+    );
+    assert_eq!(
+        paths.series[1].label,
+        format!("out, {}", deg(r.angle_out_deg))
+    );
+    assert!(
+        paths.series[1].label.chars().count() <= "out, 123.45°".chars().count(),
+        "{}",
+        paths.series[1].label
+    );
 }

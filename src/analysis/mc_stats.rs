@@ -75,7 +75,7 @@ pub struct Stats {
     pub n: usize,
     /// Arithmetic mean (compensated sum, in sample order).
     pub mean: f64,
-    /// Sample standard deviation (divisor n − 1; 0 for one sample).
+    /// Sample standard deviation (divisor n − 1; NaN for one sample: no spread to estimate).
     pub sd: f64,
     /// Smallest value.
     pub min: f64,
@@ -177,10 +177,12 @@ pub fn stats(values: &[f64]) -> Stats {
             b.count(x);
         }
     }
+    // one sample says nothing of the spread: its sd (over n − 1 = 0) is undefined, not 0 —
+    // NaN, null in JSON, as the mean's interval is then (`mc_interval::mean_interval`)
     let sd = if n > 1 {
         (squares.total() / (n - 1) as f64).sqrt()
     } else {
-        0.0
+        f64::NAN
     };
     let hs = PROBS.map(|p| (n - 1) as f64 * p / 100.0);
     let pair = |h: f64| {
@@ -246,8 +248,13 @@ pub fn interval_warnings(stats: &[&Stats]) -> Vec<String> {
         .filter(|&n| n > 0)
         .min()
         .unwrap_or(0);
+    let few = if n == 1 {
+        "1 sample is".to_string()
+    } else {
+        format!("{n} samples are")
+    };
     vec![format!(
-        "{n} samples are too few for a 95 % interval of the {} quantiles (an open end; {need} needed)",
+        "{few} too few for a 95 % interval of the {} quantiles (an open end; {need} needed)",
         open.join(", ")
     )]
 }
@@ -314,8 +321,10 @@ mod tests {
         let none = stats(&[f64::NAN]);
         assert_eq!(none.n, 0);
         assert!(none.mean.is_nan() && none.q.q99.is_nan());
+        // one sample: no spread to estimate (it read 0, "no spread", before)
         let one = stats(&[7.0]);
-        assert_eq!((one.sd, one.q.q1, one.q.q99), (0.0, 7.0, 7.0));
+        assert_eq!((one.q.q1, one.q.q99), (7.0, 7.0));
+        assert!(one.sd.is_nan());
     }
 
     /// The order statistics by bins are a full sort's, bit for bit, with ties, signed zeros,

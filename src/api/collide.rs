@@ -30,8 +30,8 @@ pub struct CollisionReport {
     pub effective_mass: Option<f64>,
     /// Ball on ball: the pair's effective radius R_eff = R1 R2/(R1 + R2) (m).
     pub effective_radius: Option<f64>,
-    /// What the caller should know about this answer: the ball's peak indentation beyond its
-    /// radius ([`super::indentation_warning`]); `[]` when nothing.
+    /// What the caller should know about this answer: the ball's peak indentation, or its own
+    /// compression α = z + y, beyond its radius ([`super::reach_warning`]); `[]` when nothing.
     pub warnings: Vec<String>,
 }
 
@@ -62,7 +62,7 @@ impl Ball {
         method: Option<Method>,
     ) -> Result<CollisionReport, BallError> {
         let collision = collide(&self.params, self.law, target, self.params.v0, method)?;
-        let warnings = super::indentation_warning(collision.max_indentation, self.radius());
+        let warnings = self.collision_warning(target, self.params.v0, &collision);
         Ok(CollisionReport {
             ball: self.name.clone(),
             law: self.law,
@@ -101,17 +101,55 @@ impl Ball {
         Ok(r)
     }
 
-    /// The warnings of a bat's run `r` for this ball: its peak indentation beyond its radius
-    /// in the game impact or in the BBCOR test, each named.
+    /// The warnings of a bat's run `r` for this ball: its peak indentation, or its own
+    /// compression, beyond its radius in the game impact or in the BBCOR test, each named.
     pub fn bat_warnings(&self, r: &BatRun) -> Vec<String> {
+        let at_rest = Target {
+            speed: 0.0,
+            ..r.bat
+        };
+        let game_speed = r.game.closing_speed - r.bat.speed;
+        [
+            ("game", &r.game, r.bat, game_speed),
+            ("BBCOR test", &r.test, at_rest, r.test.closing_speed),
+        ]
+        .into_iter()
+        .filter_map(|(what, c, target, speed)| {
+            self.collision_warning(&target, speed, c)
+                .map(|w| format!("{what}: {w}"))
+        })
+        .collect()
+    }
+
+    /// The warning of `c`, this ball's collision at `ball_speed` with `target`: its peak
+    /// indentation, else the ball's own compression α = z + y, beyond its radius. On a rigid
+    /// target the relative motion is the ball's impact at the reduced mass and the closing
+    /// speed (`target::collide`), whose α_max [`super::reach_warning`] reads exactly; on a
+    /// compliant one the ball's compression is the chain's minus the surface's deflection
+    /// (docs/targets.md §2), read off 4 001 samples of the run (`target::history`: a value from
+    /// below, as the explorer's), unless α ≤ v_c t_f (α'' ≤ 0) keeps it within the radius.
+    fn collision_warning(&self, target: &Target, ball_speed: f64, c: &Collision) -> Option<String> {
         let radius = self.radius();
-        [("game", &r.game), ("BBCOR test", &r.test)]
-            .into_iter()
-            .filter_map(|(what, c)| {
-                super::indentation_warning(c.max_indentation, radius)
-                    .map(|w| format!("{what}: {w}"))
-            })
-            .collect()
+        let duration = c.contact_time.unwrap_or(f64::INFINITY);
+        let reduced = crate::model::params::ImpactParams {
+            mass: c.reduced_mass,
+            v0: c.closing_speed,
+            ..self.params
+        };
+        if target.is_rigid() || c.max_indentation > radius || c.closing_speed * duration <= radius {
+            let z_m = c.max_indentation;
+            return super::reach_warning(&reduced, self.law, c.method, z_m, duration, radius);
+        }
+        let h = crate::target::history(&self.params, self.law, target, ball_speed, 4001);
+        match h {
+            Ok(h) => {
+                let own = h.displacement.iter().zip(&h.deflection).map(|(a, s)| a - s);
+                super::displacement_warning(own.fold(0.0, f64::max), radius)
+            }
+            Err(e) => Some(format!(
+                "the ball's peak displacement could not be checked against its radius: {e}"
+            )),
+        }
     }
 
     /// A bat of effective mass `bat_mass` at the impact point (rigid, or with `surface` =

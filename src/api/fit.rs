@@ -58,6 +58,51 @@ impl Ball {
         Ok(fit_watched(&self.params, self.law, data, &free, watch)?)
     }
 
+    /// The warnings of the ball fitted to data taken at `speeds` (m/s), `fitted` this ball's
+    /// parameters after the fit ([`Ball::warnings`]: its indentation or centre past the
+    /// radius, an energy balance that does not close), at the fastest speed, where it presses
+    /// deepest (z_m and α_max grow with v0: the impact energy does), each line naming it.
+    /// `[]` when nothing; a run that has no answer says so.
+    ///
+    /// ```
+    /// let ball = bouncelab::Ball::from_preset("superball")?;
+    /// let fast = bouncelab::ImpactParams { k_r: 187687.0, ..ball.params };
+    /// let w = ball.fitted_warnings(&fast, &[30.0, 45.0]);
+    /// assert!(w[0].starts_with("the fitted ball at v0 = 45 m/s (the fastest of the data): peak indentation"));
+    /// assert!(ball.fitted_warnings(&ball.params, &[3.12]).is_empty());
+    /// # Ok::<(), bouncelab::BallError>(())
+    /// ```
+    pub fn fitted_warnings(&self, fitted: &crate::ImpactParams, speeds: &[f64]) -> Vec<String> {
+        let v0 = speeds.iter().copied().fold(f64::NAN, f64::max);
+        if !v0.is_finite() {
+            return Vec::new();
+        }
+        let ball = Ball {
+            params: crate::ImpactParams { v0, ..*fitted },
+            ..self.clone()
+        };
+        let several = speeds.iter().any(|&v| v != v0);
+        let at = format!(
+            "the fitted ball at v0 = {} m/s{}",
+            number(v0),
+            if several {
+                " (the fastest of the data)"
+            } else {
+                ""
+            }
+        );
+        match ball.impact() {
+            Ok(r) => ball
+                .warnings(&r)
+                .into_iter()
+                .map(|w| format!("{at}: {w}"))
+                .collect(),
+            Err(e) => vec![format!(
+                "{at} has no answer to check against its radius: {e}"
+            )],
+        }
+    }
+
     /// Drop tests as a COR table: each (drop height, rebound height) pair (m) checked and
     /// turned into an impact speed and a COR by this ball's flight ([`drop_to_cor`]), in
     /// vacuum or through `air` (drag on the preset's measured radius); each row weighed by

@@ -72,7 +72,15 @@ impl Ball {
     /// v sin θ ([`Ball::warnings`]: a peak indentation beyond the radius, an energy balance
     /// that does not close).
     pub fn oblique_warnings(&self, r: &ObliqueResponse) -> Vec<String> {
-        self.warnings(&r.normal)
+        // the normal impact is this ball's at v_y, not at its v0 (the reach's second run)
+        let normal = Ball {
+            params: crate::model::params::ImpactParams {
+                v0: r.vy_in,
+                ..self.params
+            },
+            ..self.clone()
+        };
+        normal.warnings(&r.normal)
     }
 
     /// One oblique impact (docs/oblique.md), with `samples` history samples (0: none), as

@@ -2,6 +2,7 @@
 //! travel with the answer"): the JSON `warnings` array of run, sweep velocity, drop and peers,
 //! a `warning:` line in text, and the explorer's readout.
 
+use super::reach::reach_warning;
 use super::{Ball, BallError};
 use crate::solver::ImpactResponse;
 use crate::text::{number, short, sig};
@@ -9,20 +10,6 @@ use crate::text::{number, short, sig};
 /// The energy audit (docs/model.md §8) must close to this fraction of the impact energy; a
 /// larger residual means the numbers were not computed to their promised accuracy.
 pub const ENERGY_RESIDUAL_MAX: f64 = 1e-6;
-
-/// A peak indentation `z_m` beyond the ball's `radius` (both m): the contact would reach past
-/// the ball's centre, far outside the small-deformation contact the laws describe
-/// (docs/model.md §3). `None` within, or with no radius known (NaN).
-pub fn indentation_warning(z_m: f64, radius: f64) -> Option<String> {
-    (radius.is_finite() && z_m > radius).then(|| {
-        format!(
-            "peak indentation {} mm exceeds the ball's radius {} mm: outside the model's range \
-             (the contact laws assume a deformation small against the ball)",
-            sig(z_m * 1e3, 4),
-            sig(radius * 1e3, 4)
-        )
-    })
-}
 
 /// The cells of a dimensional `map` whose peak indentation passes `radius` (m): each cell's
 /// z_m from its peak force through the loading branch, which the map's cells share (λ and ζ
@@ -72,8 +59,8 @@ impl Ball {
         self.measured.as_ref().map_or(f64::NAN, |m| m.radius)
     }
 
-    /// The warnings of an impact `r` of this ball: an indentation beyond its radius, an energy
-    /// balance that does not close.
+    /// The warnings of an impact `r` of this ball: an indentation or its centre's displacement
+    /// beyond its radius ([`reach_warning`]), an energy balance that does not close.
     ///
     /// ```
     /// let b = bouncelab::Ball::from_preset("superball")?;
@@ -81,12 +68,18 @@ impl Ball {
     /// let fast = b.with_v0(45.0)?;
     /// let w = fast.warnings(&fast.impact()?);
     /// assert!(w[0].starts_with("peak indentation 31.05 mm exceeds the ball's radius 21.55 mm"));
+    /// // a soft spring: the centre sinks 35 mm while the contact takes 0.13 mm
+    /// let soft = bouncelab::Ball::from_preset("superball")?.with_lambda_zeta(Some(0.001), Some(10.0))?;
+    /// let w = soft.warnings(&soft.impact()?);
+    /// assert!(w[0].starts_with("peak displacement of the ball's centre α_max 34.97 mm"));
     /// # Ok::<(), bouncelab::BallError>(())
     /// ```
     pub fn warnings(&self, r: &ImpactResponse) -> Vec<String> {
-        let mut w: Vec<String> = indentation_warning(r.max_indentation, self.radius())
-            .into_iter()
-            .collect();
+        let (z_m, radius) = (r.max_indentation, self.radius());
+        let mut w: Vec<String> =
+            reach_warning(&self.params, r.law, r.method, z_m, r.duration, radius)
+                .into_iter()
+                .collect();
         if let Some(e) = &r.energy {
             let residual = e.relative_residual();
             if residual.abs() > ENERGY_RESIDUAL_MAX {

@@ -139,6 +139,7 @@ pub fn run(a: &MapArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     let map = super::budget::map(ball.spec.clone())?;
     let warnings: Vec<String> = crate::api::map_indentation_warning(&map, ball.radius)
         .into_iter()
+        .chain(crate::api::map_displacement_warning(&map, ball.radius))
         .collect();
     let text = match a.format {
         MapFormat::Csv => csv(&map, targets.as_ref()),

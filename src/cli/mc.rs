@@ -249,8 +249,9 @@ fn text(
         .collect();
     writeln!(
         out,
-        "{} samples, seed {}, {} spreads (%): {}; {} law, v0 = {} m/s",
+        "{} sample{}, seed {}, {} spreads (%): {}; {} law, v0 = {} m/s",
         spec.samples,
+        if spec.samples == 1 { "" } else { "s" },
         spec.seed,
         spec.dist.name(),
         vary.join(", "),

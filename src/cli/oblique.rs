@@ -85,6 +85,11 @@ pub fn run(a: &ObliqueArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         tangential_stiffness: a.tangential.tangential_stiffness,
         inertia_factor: a.tangential.inertia_factor,
     };
+    // the library reads 0 samples as "no history"; `--history` asks for one, so 0 is refused
+    // as 1 is (2 … MAX_SAMPLES, `run --history`'s range)
+    if a.history && a.samples == 0 {
+        return Err(crate::api::BallError::Samples(0).into());
+    }
     let r = ball.oblique(&spec, if a.history { a.samples } else { 0 })?;
     let k_t = a
         .tangential
@@ -273,7 +278,7 @@ fn text(out: &mut dyn Write, r: &ObliqueResponse) -> std::io::Result<()> {
         ),
         row(
             "energy balance",
-            format!("residual {:.1e}", e.residual),
+            format!("residual {}", output::residual(e.residual)),
             String::new(),
         ),
     ];

@@ -107,6 +107,16 @@ pub fn directed(v: f64, positive: &str, negative: &str) -> String {
 
 /// An answer's warnings after its text, a `warning:` line each (docs/guarantees.md,
 /// "Warnings travel with the answer").
+/// A residual (a fraction of an energy) to two digits, `1.5e-16`; an exact zero as `0`, not
+/// Rust's `0.0e0` (`run --lambda 0 --zeta 1`, tests/cli_odd_inputs.rs).
+pub fn residual(x: f64) -> String {
+    if x == 0.0 {
+        "0".into()
+    } else {
+        format!("{x:.1e}")
+    }
+}
+
 pub fn warning_lines(out: &mut dyn Write, warnings: &[String]) -> io::Result<()> {
     for w in warnings {
         writeln!(out, "warning: {w}")?;

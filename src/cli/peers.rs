@@ -171,6 +171,8 @@ pub fn run(a: &PeersArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     if let Some(code) = a.export {
         let mut set = ExportSet::new(&ball, target, b.name.as_deref().unwrap_or("ball"))?;
         set.tangential = tangential(a, &b, code)?;
+        // the exported file is another code's input: the ball's warnings on stderr
+        output::warnings_to_stderr(&b.warnings(&b.impact()?));
         let code = match code {
             ExportArg::Json => return Ok(output::json(out, &set)?),
             ExportArg::Lammps => Code::Lammps,
@@ -200,8 +202,16 @@ pub fn run(a: &PeersArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     };
     match a.format {
         PeersFormat::Json => output::json(out, &report)?,
-        PeersFormat::Csv => write::csv(out, &rows)?,
-        PeersFormat::Text => write::text(out, &b, &ball, &report)?,
+        // the rows are the peers' calibrations, not the ball's answer: its warnings on stderr,
+        // as beside `run --history`'s CSV
+        PeersFormat::Csv => {
+            write::csv(out, &rows)?;
+            output::warnings_to_stderr(&report.warnings);
+        }
+        PeersFormat::Text => {
+            write::text(out, &b, &ball, &report)?;
+            output::warning_lines(out, &report.warnings)?;
+        }
     }
     Ok(())
 }

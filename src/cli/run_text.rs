@@ -1,7 +1,7 @@
 //! `bouncelab run --format text`: a readable table, units converted at the edge (N, ms, mm),
 //! the measured values beside the model's for a preset.
 
-use super::output::{difference, given, human, table};
+use super::output::{self, difference, given, human, table};
 use crate::api::{Ball, Intervals};
 use crate::preset::Measured;
 use crate::solver::{EnergyBudget, ImpactResponse, Method};
@@ -247,7 +247,7 @@ fn write_energy(out: &mut dyn Write, e: &EnergyBudget, units: &Units) -> io::Res
     .collect();
     rows.push(vec![
         "balance residual".into(),
-        format!("{:.1e} of the initial", e.relative_residual()),
+        format!("{} of the initial", output::residual(e.relative_residual())),
     ]);
     table(out, "  ", &rows)
 }

@@ -274,18 +274,33 @@ fn draw_legend<DB: DrawingBackend>(
     Ok(())
 }
 
-/// The subtitle on one line, or on two, broken after its first "; ", when it would not fit.
+/// The subtitle on one line when it fits; else broken after its first "; ", and the rest,
+/// where it still would not fit, at each further "; " that ends a full line (`fit --plot`'s
+/// values with their intervals, tests/cli_fit_reports.rs).
 fn subtitle_lines(text: &str) -> Vec<&str> {
+    let fits = |s: &str| text_width(s, SUBTITLE_PX) <= WIDTH as i32 - 2 * SIDE_PX;
     if text.is_empty() {
         return vec![];
     }
-    if text_width(text, SUBTITLE_PX) <= WIDTH as i32 - 2 * SIDE_PX {
+    if fits(text) {
         return vec![text];
     }
-    match text.split_once("; ") {
-        Some((a, b)) => vec![a, b],
-        None => vec![text],
+    let Some((first, mut rest)) = text.split_once("; ") else {
+        return vec![text];
+    };
+    let mut lines = vec![first];
+    while !fits(rest) {
+        let cut = rest
+            .match_indices("; ")
+            .map(|(i, _)| i)
+            .take_while(|&i| fits(&rest[..i]))
+            .last();
+        let Some(i) = cut else { break };
+        lines.push(&rest[..i]);
+        rest = &rest[i + 2..];
     }
+    lines.push(rest);
+    lines
 }
 
 /// Text for XML character data.

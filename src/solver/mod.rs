@@ -351,6 +351,15 @@ impl Flow {
         }
     }
 
+    /// ᾱ_max = α_max ω0/v0, the peak of the ball's displacement toward the wall (the zero of
+    /// ᾱ': [`exact::NormalPath::peak_displacement`]).
+    pub fn peak_displacement(&self) -> f64 {
+        match self {
+            Flow::Exact(p) => p.peak_displacement(),
+            Flow::Numeric(p) => p.peak_displacement(),
+        }
+    }
+
     /// Where F̄' may jump (the exact flow's phase ends) or F̄'' may (the adaptive run's steps).
     pub fn boundaries(&self) -> Vec<f64> {
         match self {

@@ -81,6 +81,10 @@ pub struct BatRun {
     pub game: Collision,
     /// The BBCOR impact in full.
     pub test: Collision,
+    /// The bat as the game's target (the test's is the same at rest): what the warnings read
+    /// the ball's compression against (`Ball::bat_warnings`).
+    #[serde(skip)]
+    pub bat: Target,
 }
 
 /// The game impact (`speeds` = (ball, bat) in m/s, toward each other) and the BBCOR test of a
@@ -113,5 +117,6 @@ pub fn run(
         limit,
         game,
         test,
+        bat,
     })
 }

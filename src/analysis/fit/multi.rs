@@ -297,7 +297,7 @@ fn finish(
         std_error: se(j),
         ci95: [sol.x[j] - u.t975 * se(j), sol.x[j] + u.t975 * se(j)],
     };
-    let (time_offset, baseline) = if trace {
+    let (mut time_offset, mut baseline) = if trace {
         (
             Some(linear(k, "time_offset", "s")),
             Some(linear(k + 1, "baseline", "N")),
@@ -311,8 +311,34 @@ fn finish(
     let correlation = (0..n)
         .map(|i| (0..n).map(|j| u.correlation[(i, j)]).collect())
         .collect();
-    let warnings = warnings(&fitted, &names, &u, sol);
-    for e in &mut fitted {
+    let mut warnings = warnings(&fitted, &names, &u, sol);
+    // Residuals all zero with degrees of freedom left: s² = 0 makes every standard error 0,
+    // an interval that says "certain" where the data show no scatter to estimate it from.
+    // SciPy's curve_fit returns that zero covariance silently; it returns inf where it cannot
+    // estimate (n ≤ p), and so do we here: no standard error, no interval (null), as for an
+    // exact solve (`MultiFit::exact`), with a warning. A variable the data do not see keeps
+    // its infinite variance (not pinned). tests/cli_fit.rs,
+    // `equal_cors_leave_no_scatter_to_estimate_from`.
+    let dof = sol.residuals.len().saturating_sub(names.len());
+    let no_scatter = dof > 0 && sol.residuals.iter().all(|r| *r == 0.0);
+    if no_scatter {
+        warnings.insert(0, verdict::NO_SCATTER.into());
+        let unknown = |e: &mut Estimate| {
+            if e.std_error.is_finite() {
+                e.std_error = f64::NAN;
+            }
+        };
+        fitted.iter_mut().for_each(unknown);
+        time_offset
+            .iter_mut()
+            .chain(baseline.iter_mut())
+            .for_each(unknown);
+    }
+    for e in fitted
+        .iter_mut()
+        .chain(time_offset.iter_mut())
+        .chain(baseline.iter_mut())
+    {
         if !e.std_error.is_finite() {
             e.ci95 = [f64::NAN, f64::NAN];
         }
@@ -340,6 +366,7 @@ fn finish(
         identified: false,
         not_pinned,
         on_bound,
+        no_scatter,
         lack_of_fit: None,
     })
 }

@@ -85,16 +85,20 @@ pub struct MultiFit {
     /// for a COR table, ±4 for a trace): the data ask for more than the model gives with the
     /// others held.
     pub on_bound: Vec<&'static str>,
+    /// Degrees of freedom were left but every residual is zero: the data show no scatter to
+    /// estimate the uncertainty from (`verdict::NO_SCATTER`; no standard error or interval).
+    pub no_scatter: bool,
     /// A test of whether the model can follow the data at all (systematic residuals); `None`
     /// where no test applies (too few points, no degree of freedom).
     pub lack_of_fit: Option<LackOfFit>,
 }
 
 impl MultiFit {
-    /// Whether the fit had as many data as quantities fitted (no degree of freedom left): the
-    /// values solve the data exactly and no standard error or interval can be estimated.
+    /// Whether the fit had as many data as quantities fitted (no degree of freedom left), or
+    /// residuals all zero ([`MultiFit::no_scatter`]): the values solve the data exactly and
+    /// no standard error or interval can be estimated.
     pub fn exact(&self) -> bool {
-        self.points <= self.names.len()
+        self.points <= self.names.len() || self.no_scatter
     }
 }
 

@@ -58,17 +58,18 @@ impl fmt::Display for FitError {
                 low,
                 high,
             } => {
-                // a typed COR as typed; one derived from heights (0.44367825470805683) to six
-                // digits
+                // a typed COR as typed (0.999999999999, never a rounded 1); one derived from
+                // heights (0.44367825470805683: 16 digits and more) to six
                 let given = number(*target);
-                let shown = if given.len() > 10 {
+                let shown = if given.len() > 15 {
                     crate::text::sig_trim(*target, 6)
                 } else {
                     given
                 };
+                let (low, high) = (apart(*low, *target), apart(*high, *target));
                 write!(
                     f,
-                    "cor {shown} is out of reach at ζ = {zeta:.4}: the model spans {low:.4} (λ = 0) to {high:.4} (λ → ∞)"
+                    "cor {shown} is out of reach at ζ = {zeta:.4}: the model spans {low} (λ = 0) to {high} (λ → ∞)"
                 )
             }
         }
@@ -76,6 +77,19 @@ impl fmt::Display for FitError {
 }
 
 impl std::error::Error for FitError {}
+
+/// `bound` to 4 decimals, or to as many more as keep it on its side of `target`: the span's
+/// end at λ = 1e6 (0.99999997) printed `1.0000` beside "cor 1 is out of reach"
+/// (tests/cli_odd_inputs.rs, `an_unreachable_cor_is_not_inside_the_span_shown`).
+fn apart(bound: f64, target: f64) -> String {
+    (4..=17)
+        .map(|d| format!("{bound:.d$}"))
+        .find(|s| {
+            let shown: f64 = s.parse().unwrap_or(bound);
+            (shown < target) == (bound < target)
+        })
+        .unwrap_or_else(|| number(bound))
+}
 
 /// Largest λ tried: beyond it K_r is rigid for any practical purpose.
 const LAMBDA_MAX: f64 = 1e6;

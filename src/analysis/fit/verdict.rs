@@ -106,6 +106,11 @@ pub fn no_answer_reasons(converged: bool, not_pinned: &[&str]) -> Vec<String> {
     why
 }
 
+/// The warning of a fit whose residuals are all zero with degrees of freedom left
+/// (`MultiFit::no_scatter`): no standard error or interval is given.
+pub const NO_SCATTER: &str = "the residuals are all zero: the data show no scatter to estimate \
+                              the uncertainty from (no standard error or interval is given)";
+
 /// The warnings every fit gives on how well its data pin it: no residual left to estimate
 /// the uncertainty from (`dof` 0), and the parameter `weakest` not identifiable where the
 /// column-scaled Jacobian's condition number passes `stats::CONDITION_MAX`, with `hint` —
@@ -145,6 +150,12 @@ pub(super) fn not_pinned(
     quantities: usize,
 ) -> Vec<&'static str> {
     let dof = best.sol.residuals.len().saturating_sub(quantities);
+    // residuals all zero: judged as an exact solve (`MultiFit::exact`), on what the data see
+    let dof = if best.sol.residuals.iter().all(|r| *r == 0.0) {
+        0
+    } else {
+        dof
+    };
     fitted
         .iter()
         .enumerate()

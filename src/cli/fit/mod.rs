@@ -217,11 +217,19 @@ fn single(a: &FitArgs, cor: f64, stdout: &mut dyn Write) -> anyhow::Result<()> {
     let f = b.fit_cor(cor)?;
     let p = &b.params;
     let r = FitReport::new(&b, cor, &f);
+    let fitted = crate::model::params::ImpactParams { k_r: f.k_r, ..*p };
+    let warnings = b.fitted_warnings(&fitted, &[p.v0]);
     // the report first in memory: it goes out with the files, or not at all (cli::outputs)
     let mut report = Vec::new();
     let out = &mut report;
     match a.format {
-        FitFormat::Json => output::json(out, &r)?,
+        FitFormat::Json => output::json(
+            out,
+            &SingleJson {
+                r,
+                warnings: &warnings,
+            },
+        )?,
         FitFormat::Text => {
             writeln!(out, "{}, {} law", b.label(), r.ball.law)?;
             writeln!(
@@ -232,7 +240,8 @@ fn single(a: &FitArgs, cor: f64, stdout: &mut dyn Write) -> anyhow::Result<()> {
             )?;
             writeln!(out)?;
             let rows = vec![
-                vec!["target COR".into(), given(r.target_cor, 6)],
+                // typed, shown as typed: 0.99999999999, never a rounded 1 (as `peers`)
+                vec!["target COR".into(), crate::text::number(r.target_cor)],
                 vec!["fitted K_r".into(), format!("{} N/m", human(r.k_r, 5))],
                 vec!["fitted λ = K_r/K_p".into(), human(r.lambda, 5)],
                 vec!["model COR at the fit".into(), human(r.cor, 6)],
@@ -246,8 +255,17 @@ fn single(a: &FitArgs, cor: f64, stdout: &mut dyn Write) -> anyhow::Result<()> {
                 ],
             ];
             table(out, "  ", &rows)?;
+            output::warning_lines(out, &warnings)?;
         }
     }
-    let fitted = crate::model::params::ImpactParams { k_r: f.k_r, ..*p };
     multi::single_extras(a, &b, &fitted, cor, stdout, &report)
+}
+
+/// `fit --cor E --format json`: the library's report and what the caller should know of the
+/// fitted ball ([`crate::Ball::fitted_warnings`]; `[]` when nothing).
+#[derive(serde::Serialize)]
+struct SingleJson<'a> {
+    #[serde(flatten)]
+    r: FitReport<'a>,
+    warnings: &'a [String],
 }

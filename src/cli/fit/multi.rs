@@ -184,9 +184,15 @@ pub fn run(
         None => FitData::Cor(&data.points),
     };
     let watch = crate::cli::budget::Watcher::new("model runs");
-    let f = fit_watched(&ball.params, ball.law, input, &free, &watch)
+    let mut f = fit_watched(&ball.params, ball.law, input, &free, &watch)
         .map_err(|e| fit_error(e, &data, &free))?;
     drop(watch);
+    // the fitted ball where it presses deepest: the data's fastest speed (a trace's: v0)
+    let speeds: Vec<f64> = match &data.trace {
+        Some(_) => vec![ball.params.v0],
+        None => data.points.iter().map(|p| p.v0).collect(),
+    };
+    f.warnings.extend(ball.fitted_warnings(&f.params, &speeds));
     // the data's speed: the trace's (the ball's v0), else the first row's
     let v0 = data.points.first().map_or(ball.params.v0, |p| p.v0);
     let fitted = ImpactParams { v0, ..f.params };
@@ -279,7 +285,11 @@ pub fn single_extras(
         return Ok(());
     }
     let data = load(a, &Source::Cor(cor), ball)?;
-    let f = crate::analysis::fit::fit(fitted, ball.law, FitData::Cor(&data.points), &[Param::KR])
-        .map_err(|e| fit_error(e, &data, &[Param::KR]))?;
+    let mut f =
+        crate::analysis::fit::fit(fitted, ball.law, FitData::Cor(&data.points), &[Param::KR])
+            .map_err(|e| fit_error(e, &data, &[Param::KR]))?;
+    // the saved header's warnings: the report's (`single`)
+    f.warnings
+        .extend(ball.fitted_warnings(fitted, &[fitted.v0]));
     publish(a, out, report, (ball, &data, &f, fitted))
 }

@@ -6,6 +6,7 @@ use super::Loaded;
 use crate::analysis::fit::MultiFit;
 use crate::analysis::sweep::lin_space;
 use crate::api::Ball;
+use crate::cli::output::human;
 use crate::figure::{Axis, BLACK, Figure, Kind, Marker, Series, Style, svg};
 use crate::model::params::ImpactParams;
 use crate::solver::{SolveOptions, simulate};
@@ -13,17 +14,27 @@ use crate::solver::{SolveOptions, simulate};
 /// Points along the model's COR-against-speed curve.
 const CURVE_POINTS: usize = 120;
 
+/// The ball and law, then each fitted value with its 95 % interval as the text report gives
+/// them (value to 5 digits, its unit, the interval to 4; an exact solve's words in its place),
+/// "; " between them, where the SVG may break the subtitle (`figure::svg`).
 fn subtitle(ball: &Ball, f: &MultiFit) -> String {
     let fitted: Vec<String> = f
         .fitted
         .iter()
-        .map(|e| format!("{} = {}", e.name, crate::text::short(e.value, 4)))
+        .map(|e| {
+            let interval = if f.exact() {
+                super::report::exact_text(f).to_string()
+            } else {
+                format!("95 %: {}", super::report::interval(e))
+            };
+            format!("{} = {} {} ({interval})", e.name, human(e.value, 5), e.unit)
+        })
         .collect();
     format!(
-        "{}, {} law, fitted {}",
+        "{}, {} law; fitted {}",
         ball.name.as_deref().unwrap_or("ball"),
         ball.law,
-        fitted.join(", ")
+        fitted.join("; ")
     )
 }
 

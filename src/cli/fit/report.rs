@@ -59,8 +59,9 @@ pub struct Report<'a> {
     /// The test of systematic residuals, where one applies.
     #[serde(skip_serializing_if = "Option::is_none")]
     lack_of_fit: Option<crate::analysis::fit::verdict::LackOfFit>,
-    /// As many data as fitted quantities: an exact solve, with no residual to estimate the
-    /// uncertainty from (`std_error` and `ci95` are null then). Present only when true.
+    /// As many data as fitted quantities, or residuals all zero: an exact solve, with no
+    /// residual (or no scatter) to estimate the uncertainty from (`std_error` and `ci95` are
+    /// null then). Present only when true.
     #[serde(skip_serializing_if = "std::ops::Not::not")]
     exact: bool,
 }
@@ -185,7 +186,18 @@ pub fn points(n: usize) -> String {
 /// The text in place of an interval for an exact solve.
 pub const EXACT: &str = "exact: no residual to estimate it from";
 
-fn interval(e: &Estimate) -> String {
+/// The text in place of an interval of `f`, an exact solve: [`EXACT`], or, with degrees of
+/// freedom left but every residual zero, that the data show no scatter.
+pub fn exact_text(f: &MultiFit) -> &'static str {
+    if f.no_scatter {
+        "exact: no scatter to estimate it from"
+    } else {
+        EXACT
+    }
+}
+
+/// An estimate's 95 % interval as the report's table gives it.
+pub(super) fn interval(e: &Estimate) -> String {
     if e.ci95.iter().all(|v| v.is_finite()) {
         format!("{} … {}", human(e.ci95[0], 4), human(e.ci95[1], 4))
     } else {
@@ -246,7 +258,7 @@ pub fn text(
     let exact = f.exact();
     for e in f.fitted.iter().chain(&f.time_offset).chain(&f.baseline) {
         let (error, interval) = if exact {
-            ("–".into(), EXACT.into())
+            ("–".into(), exact_text(f).into())
         } else {
             (human(e.std_error, 3), interval(e))
         };

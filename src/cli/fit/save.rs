@@ -101,7 +101,7 @@ fn header(ball: &Ball, data: &Loaded, f: &MultiFit, when: &str) -> Vec<String> {
         let value = short(e.value);
         h.push(format!(
             "{name} = {value} {unit} ({})",
-            super::report::EXACT
+            super::report::exact_text(f)
         ));
     }
     for e in f.fitted.iter().filter(|_| !exact) {

@@ -124,7 +124,7 @@ pub(crate) fn solve_path(
     let mut run = run(n, contact, true);
     let segments = std::mem::take(&mut run.segments);
     let out = run.finish_with(opts, &segments);
-    (out, NormalPath::new(segments))
+    (out, NormalPath::new(segments, y_scale(n.lambda)))
 }
 
 fn run<'a>(n: &Normalized, contact: &'a Contact, keep: bool) -> ExactRunner<'a> {

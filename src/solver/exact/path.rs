@@ -99,11 +99,47 @@ pub struct PathPoint {
 /// The flow of a solved linear-law impact over [0, τ_f], phase by phase.
 pub struct NormalPath {
     segments: Vec<Segment>,
+    /// The third state's scale σ (`y_scale`): w = (z̄ − s, ᾱ', σȳ).
+    sigma: f64,
 }
 
 impl NormalPath {
-    pub(super) fn new(segments: Vec<Segment>) -> NormalPath {
-        NormalPath { segments }
+    pub(super) fn new(segments: Vec<Segment>, sigma: f64) -> NormalPath {
+        NormalPath { segments, sigma }
+    }
+
+    /// The ball's largest displacement toward the wall, ᾱ_max = max (z̄ + ȳ), read exactly
+    /// off the flow. Why at ᾱ' = 0: ᾱ'' = −F̄ ≤ 0 through the contact, so ᾱ' falls from 1 and
+    /// ᾱ rises while ᾱ' > 0 and falls after — its one peak is the zero of ᾱ', located by
+    /// safeguarded Newton on (ᾱ', −F̄) inside the first phase that ends with ᾱ' ≤ 0. A ball
+    /// that never turns (it sinks into the dashpot, no rebound) peaks at τ_f.
+    pub fn peak_displacement(&self) -> f64 {
+        let turn = self.segments.iter().enumerate().find_map(|(i, seg)| {
+            let end = seg.start + seg.len;
+            (self.at_in(i, end).velocity <= 0.0).then_some((i, seg.start, end))
+        });
+        let Some((i, a, b)) = turn else {
+            let last = self.segments.len().saturating_sub(1);
+            return self.displacement_in(last, self.end());
+        };
+        let tau = crate::solver::roots::newton_bracketed(
+            |t| {
+                let p = self.at_in(i, t);
+                (p.velocity, -p.force)
+            },
+            a,
+            b,
+        );
+        self.displacement_in(i, tau)
+    }
+
+    /// ᾱ = z̄ + ȳ at τ read on phase `i` (τ clamped to the phase); 0 with no phase.
+    fn displacement_in(&self, i: usize, tau: f64) -> f64 {
+        let Some(seg) = self.segments.get(i) else {
+            return 0.0;
+        };
+        let (w, _) = eval_anchored(&seg.anchors, (tau - seg.start).clamp(0.0, seg.len));
+        l(&w) + seg.s + w[2] / self.sigma
     }
 
     /// τ where each phase ends (unload, reload, separation), in order: F̄' may jump there.

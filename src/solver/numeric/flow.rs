@@ -21,7 +21,8 @@ pub(super) struct Kept {
     pub knots: Vec<(f64, X)>,
 }
 
-/// One step of the flow: [τa, τb], the cubic Hermite data of F̄ at its ends, and ᾱ' at τa.
+/// One step of the flow: [τa, τb], the cubic Hermite data of F̄ at its ends, and ᾱ' and
+/// ᾱ = z̄ + ȳ at τa (the integrator's state at the knot).
 #[derive(Debug, Clone, Copy)]
 struct Piece {
     ta: f64,
@@ -32,6 +33,7 @@ struct Piece {
     da: f64,
     db: f64,
     va: f64,
+    aa: f64,
 }
 
 impl Piece {
@@ -60,6 +62,26 @@ impl Piece {
                 + (-s4 / 2.0 + s3) * self.fb
                 + (s4 / 4.0 - s3 / 3.0) * mb);
         (f, df, int)
+    }
+
+    /// ᾱ at τ in the piece: ᾱ(τa) + ᾱ'(τa)(τ − τa) − ∫_τa^τ ∫_τa^σ F̄, the Hermite cubic
+    /// integrated twice (the antiderivative of `eval`'s integral).
+    fn displacement(&self, tau: f64) -> f64 {
+        let h = self.tb - self.ta;
+        if h <= 0.0 {
+            return self.aa;
+        }
+        let s = ((tau - self.ta) / h).clamp(0.0, 1.0);
+        let (s2, s3) = (s * s, s * s * s);
+        let (s4, s5) = (s2 * s2, s2 * s3);
+        let (ma, mb) = (self.da * h, self.db * h);
+        let int2 = h
+            * h
+            * ((s5 / 10.0 - s4 / 4.0 + s2 / 2.0) * self.fa
+                + (s5 / 20.0 - s4 / 6.0 + s3 / 6.0) * ma
+                + (-s5 / 10.0 + s4 / 4.0) * self.fb
+                + (s5 / 20.0 - s4 / 12.0) * mb);
+        self.aa + self.va * s * h - int2
     }
 }
 
@@ -117,6 +139,7 @@ impl NumericPath {
                     da,
                     db,
                     va: v,
+                    aa: xa[0] + xa[2],
                 };
                 v -= piece.eval(tb).2;
                 pieces.push(piece);
@@ -146,6 +169,31 @@ impl NumericPath {
     /// The number of steps.
     pub fn steps(&self) -> usize {
         self.pieces.len()
+    }
+
+    /// The ball's largest displacement toward the wall, ᾱ_max: at the zero of ᾱ', where ᾱ
+    /// peaks (ᾱ'' = −F̄ ≤ 0: ᾱ' only falls, `exact::NormalPath::peak_displacement`), located by
+    /// safeguarded Newton inside the first step that ends with ᾱ' ≤ 0, ᾱ there read on the
+    /// step's cubic integrated twice from the integrator's state at its start; at τ_f when
+    /// the ball never turns. Good to the integrator's tolerance.
+    pub fn peak_displacement(&self) -> f64 {
+        let turn = self.pieces.iter().find(|p| p.va - p.eval(p.tb).2 <= 0.0);
+        let Some(p) = turn.or(self.pieces.last()) else {
+            return 0.0;
+        };
+        let end = p.va - p.eval(p.tb).2;
+        if end > 0.0 {
+            return p.displacement(p.tb);
+        }
+        let tau = crate::solver::roots::newton_bracketed(
+            |t| {
+                let (f, _, int) = p.eval(t);
+                (p.va - int, -f)
+            },
+            p.ta,
+            p.tb,
+        );
+        p.displacement(tau)
     }
 
     /// The normal motion at τ (clamped to [0, τ_f]); at a step's end, the step that ends there.
@@ -188,6 +236,7 @@ mod tests {
             da: df(ta),
             db: df(tb),
             va: 0.0,
+            aa: 0.0,
         };
         for t in [0.4, 0.55, 0.9, 1.21, 1.3] {
             let (pf, pd, pi) = p.eval(t);

@@ -7,7 +7,7 @@
 
 use crate::figure::{Axis, Figure, Kind, Series, Style};
 use crate::oblique::{ObliqueHistory, ObliqueResponse};
-use crate::text::number;
+use crate::text::{human, number};
 
 /// A series of `(x, y)` from two history columns.
 fn series(label: &str, id: &str, style: Style, color: usize, pts: Vec<(f64, f64)>) -> Series {
@@ -73,7 +73,8 @@ fn slip(h: &ObliqueHistory, subtitle: &str) -> [Figure; 2] {
 
 /// The incoming and outgoing paths over the surface (x along it, y up, m/s as velocity
 /// components): the ball comes in along (v_x, −v_y) and leaves along (v_x,out, v_y,out), both
-/// drawn through the contact at the origin over one unit of time.
+/// drawn through the contact at the origin over one unit of time. The legend gives the angles
+/// as `bouncelab oblique`'s text does (five digits, `text::human`), not to the last bit.
 fn paths(r: &ObliqueResponse, subtitle: &str) -> Figure {
     Figure::new(
         "Incoming and outgoing paths".into(),
@@ -82,14 +83,14 @@ fn paths(r: &ObliqueResponse, subtitle: &str) -> Figure {
         Axis::linear("v_y (m/s)", "vy", 1.0),
         vec![
             series(
-                &format!("in, {}°", number(r.angle_in_deg)),
+                &format!("in, {}°", human(r.angle_in_deg, 5)),
                 "in",
                 Style::Dashed,
                 0,
                 vec![(-r.vx_in, r.vy_in), (0.0, 0.0)],
             ),
             series(
-                &format!("out, {}°", number(r.angle_out_deg)),
+                &format!("out, {}°", human(r.angle_out_deg, 5)),
                 "out",
                 Style::Solid,
                 1,

@@ -1,0 +1,183 @@
+//! The ball past its radius: its peak indentation z_m, or its centre's peak displacement
+//! α_max = max (z + y) toward the wall, read exactly where α' = 0 (the explorer's validity
+//! note, `tui::physical::validity`, checks the same two). tests/answer_reach.rs.
+
+use super::BallError;
+use crate::map::{Cell, Map};
+use crate::model::contact::ContactLaw;
+use crate::model::params::ImpactParams;
+use crate::solver::{Method, SolveOptions, simulate, simulate_flow};
+use crate::text::sig;
+
+/// A peak indentation `z_m` beyond the ball's `radius` (both m): the contact would reach past
+/// the ball's centre, far outside the small-deformation contact the laws describe
+/// (docs/model.md §3). `None` within, or with no radius known (NaN).
+pub fn indentation_warning(z_m: f64, radius: f64) -> Option<String> {
+    (radius.is_finite() && z_m > radius).then(|| {
+        format!(
+            "peak indentation {} mm exceeds the ball's radius {} mm: outside the model's range \
+             (the contact laws assume a deformation small against the ball)",
+            sig(z_m * 1e3, 4),
+            sig(radius * 1e3, 4)
+        )
+    })
+}
+
+/// A peak displacement `alpha_max` of the ball's centre toward the wall beyond the ball's
+/// `radius` (both m): the centre would pass where the undeformed surface met the wall, far
+/// outside the small deformation the model describes (the explorer's validity note checks the
+/// same, `tui::physical::validity`). `None` within, or with no radius known (NaN).
+pub fn displacement_warning(alpha_max: f64, radius: f64) -> Option<String> {
+    (radius.is_finite() && alpha_max > radius).then(|| {
+        format!(
+            "peak displacement of the ball's centre α_max {} mm exceeds the ball's radius {} mm: \
+             outside the model's range (the model assumes a deformation small against the ball)",
+            sig(alpha_max * 1e3, 4),
+            sig(radius * 1e3, 4)
+        )
+    })
+}
+
+/// The peak displacement α_max = max (z + y) (m) of the ball's centre toward the wall in the
+/// impact of `params` under `law` by `method`: the same run again with its flow kept, read
+/// where α' = 0 (`solver::Flow::peak_displacement`). A run the adaptive solver finished in a
+/// closed-form creep keeps no flow: then the largest of 4 001 samples of α, a value from below.
+pub fn peak_displacement(
+    params: &ImpactParams,
+    law: ContactLaw,
+    method: Method,
+) -> Result<f64, BallError> {
+    let opts = SolveOptions::default().with_method(method);
+    let length = params.v0 / params.omega0();
+    Ok(match simulate_flow(params, law, &opts)? {
+        (_, Some(flow)) => flow.peak_displacement() * length,
+        (_, None) => {
+            let r = simulate(params, law, &opts.with_samples(4001))?;
+            r.history.displacement.iter().fold(0.0, |a, &b| a.max(b))
+        }
+    })
+}
+
+/// The warning of an impact of `params` reaching past the ball's `radius` (m): its peak
+/// indentation `z_m` ([`indentation_warning`]), else the peak displacement of its centre
+/// ([`displacement_warning`]); `duration` the time it was followed (s). α = z + y ≥ z (the
+/// recoil element only compresses: c y' + K_r y = F ≥ 0 from y = 0), so a z_m past R is
+/// an α_max past R too, and one warning says it; and α_max ≤ min(v0 · duration, z_m + m v0/c)
+/// (`bounds`), which spares the second run whenever that is within R.
+/// tests/answer_warnings.rs.
+pub fn reach_warning(
+    params: &ImpactParams,
+    law: ContactLaw,
+    method: Method,
+    z_m: f64,
+    duration: f64,
+    radius: f64,
+) -> Option<String> {
+    if !radius.is_finite() {
+        return None;
+    }
+    if let Some(w) = indentation_warning(z_m, radius) {
+        return Some(w);
+    }
+    // α_max ≤ min(v0 t_f, z_m + m v0/c) (`bounds`): within R, no second run
+    let momentum = params.mass * params.v0;
+    if (params.v0 * duration).min(z_m + momentum / params.damping) <= radius {
+        return None;
+    }
+    match peak_displacement(params, law, method) {
+        Ok(alpha) => displacement_warning(alpha, radius),
+        Err(e) => Some(format!(
+            "the ball's peak displacement could not be checked against its radius: {e}"
+        )),
+    }
+}
+
+/// Bounds on α_max (m) of an impact of `p` that peaked at `z_m` with peak force `f_m` (N)
+/// and lasted `t_f` (s; ∞ without rebound), every one exact for any law: at the peak t*,
+/// α' = 0, so the force's impulse so far is m v0, and the recoil element (c y' + K_r y = F,
+/// y(0) = 0) holds y(t*) ≤ m v0/c (c y' ≤ F) and y ≤ F_m/K_r (y' ≤ 0 there), while z(t*) ≤
+/// z_m and α ≤ v0 t* (α'' ≤ 0): α_max ≤ min(v0 t_f, z_m + min(m v0/c, F_m/K_r)). From below,
+/// y(t*) = ∫ e^{−K_r (t* − s)/c} F(s) ds / c ≥ e^{−K_r t_f/c} m v0/c, and α ≥ y.
+fn bounds(p: &ImpactParams, z_m: f64, f_m: f64, t_f: f64) -> (f64, f64) {
+    let momentum = p.mass * p.v0;
+    let spring = if p.k_r > 0.0 {
+        f_m / p.k_r
+    } else {
+        f64::INFINITY
+    };
+    let hi = (p.v0 * t_f).min(z_m + (momentum / p.damping).min(spring));
+    let decay = if p.k_r > 0.0 {
+        (-p.k_r * t_f / p.damping).exp()
+    } else {
+        1.0
+    };
+    (decay * momentum / p.damping, hi)
+}
+
+/// The cells of a dimensional `map` whose ball's centre passes `radius` (m) while their peak
+/// indentation does not ([`super::map_indentation_warning`] names those): a cell past by its
+/// lower bound is counted, one within by its upper bound left (`bounds`), and every other
+/// read exactly ([`peak_displacement`], the cell's impact again with its flow, on all cores).
+/// One warning, when some cell passes by its centre alone, naming how many cells the centre
+/// passes in (those whose indentation passes too: α ≥ z) and how many of them by it alone;
+/// `None` otherwise, for a normalized map, or with no radius known (NaN). tests/answer_reach.rs.
+pub fn map_displacement_warning(map: &Map, radius: f64) -> Option<String> {
+    use rayon::prelude::*;
+    let spec = &map.spec;
+    if spec.normalized || !radius.is_finite() {
+        return None;
+    }
+    let p = &spec.base;
+    let n = p.normalized();
+    let contact = crate::model::contact::Contact {
+        law: spec.law,
+        zp_bar: n.zp_bar,
+        kappa: n.kappa,
+    };
+    // the normalized scales: F̄ = F/(K_p v0/ω0), z = z̄ v0/ω0 (docs/model.md §5)
+    let length = p.v0 / p.omega0();
+    let z_m = |f: f64| contact.loading_indentation(f / (p.k_p * length)) * length;
+    let method = match spec.law {
+        ContactLaw::Linear => Method::Exact,
+        _ => Method::Numeric,
+    };
+    let zetas = map.zetas.len();
+    let at = |k: usize| spec.params_at(map.lambdas[k / zetas], map.zetas[k % zetas]);
+    // (whether the centre passes R, whether by α alone: z_m within R); α ≥ z, so a z_m past
+    // R passes too
+    let past = |(k, c): (usize, Cell)| -> (bool, bool) {
+        let z = z_m(c.max_force);
+        if !z.is_finite() || z > radius {
+            return (z.is_finite(), false);
+        }
+        let cell = at(k);
+        let t_f = c.contact_time.unwrap_or(f64::INFINITY);
+        let (lo, hi) = bounds(&cell, z, c.max_force, t_f);
+        let alone = lo > radius
+            || (hi > radius
+                && peak_displacement(&cell, spec.law, method).is_ok_and(|a| a > radius));
+        (alone, alone)
+    };
+    let cells: Vec<(usize, Cell)> = map
+        .cells()
+        .iter()
+        .enumerate()
+        .filter_map(|(k, c)| c.map(|c| (k, c)))
+        .collect();
+    let (count, alone) = cells
+        .into_par_iter()
+        .map(past)
+        .map(|(p, a)| (usize::from(p), usize::from(a)))
+        .reduce(|| (0, 0), |x, y| (x.0 + y.0, x.1 + y.1));
+    (alone > 0).then(|| {
+        format!(
+            "peak displacement of the ball's centre exceeds the ball's radius {} mm in {} of {} \
+             cells, {} of them with the peak indentation within it: outside the model's range \
+             there (the model assumes a deformation small against the ball)",
+            sig(radius * 1e3, 4),
+            count,
+            map.cells().len(),
+            alone
+        )
+    })
+}
