@@ -178,7 +178,8 @@ def fit(
     law: Optional[Law] = None,
     params: Optional[ParamSet] = None,
 ) -> dict:
-    """K_r and λ that give a measured COR (keys of ``bouncelab fit --format json``)."""
+    """K_r and λ that give a measured COR (keys of ``bouncelab fit --format json``, with its
+    ``warnings``: the fitted ball pressed past its radius at the data's speed)."""
 
 FreeParam = Literal["k_p", "c", "k_r", "z_p", "k_h"]
 

@@ -23,6 +23,12 @@ pub(crate) fn fit<'py>(
     let ball = preset_ball(preset, params, law, v0)?;
     let f: Fit = py.detach(|| ball.fit_cor(cor)).map_err(error)?;
     let r = FitReport::new(&ball, cor, &f);
+    // the fitted ball's warnings at the data's speed, as `bouncelab fit --format json`
+    let fitted = bouncelab::ImpactParams {
+        k_r: f.k_r,
+        ..ball.params
+    };
+    let warnings = py.detach(|| ball.fitted_warnings(&fitted, &[ball.params.v0]));
     let d = PyDict::new(py);
     d.set_item("preset", r.ball.preset)?;
     d.set_item("origin", r.ball.origin)?;
@@ -37,5 +43,6 @@ pub(crate) fn fit<'py>(
     d.set_item("k_p", r.k_p)?;
     d.set_item("preset_k_r", r.preset_k_r)?;
     d.set_item("preset_lambda", r.preset_lambda)?;
+    d.set_item("warnings", warnings)?;
     Ok(d)
 }

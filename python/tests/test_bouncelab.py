@@ -215,6 +215,16 @@ def test_fit_equals_the_cli_json():
     same(bouncelab.fit(0.9, preset="golf", law="hertz"), expected)
 
 
+def test_fit_warns_of_a_fitted_ball_past_its_radius_as_the_cli():
+    # the superball fitted to e = 0.6 at 45 m/s presses 33 mm into a 21.55 mm ball: the CLI
+    # warns (qa11); the package's dict once lacked the key
+    expected = cli_json("fit", "--preset", "superball", "--cor", "0.6", "--v0", "45",
+                        "--format", "json")
+    got = bouncelab.fit(0.6, preset="superball", v0=45)
+    assert got["warnings"] and got["warnings"] == expected["warnings"]
+    same(got, expected)
+
+
 def test_sweep_velocity_defaults_are_the_clis():
     code, out, err = cli("sweep", "velocity", "--preset", "baseball")
     assert code == 0, err
