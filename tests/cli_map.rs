@@ -4,7 +4,7 @@
 
 mod common;
 
-use common::{bad, bl_at, json, ok, parse_svg};
+use common::{bad, bl, bl_at, json, ok, parse_svg};
 
 /// (λ, ζ, cor, force, time) of each CSV row.
 fn rows(csv: &str) -> Vec<Vec<String>> {
@@ -308,4 +308,77 @@ fn bad_input_is_exit_2_naming_the_flag() {
         &["nope"],
     );
     bad(&["map", "--lambda", "1:2:2"], &["--zeta"]);
+}
+
+/// A target no impact can meet (e ≤ 1, F_m > 0, t_f > 0) is bad input naming it: the map
+/// once ran and marked every cell infeasible in silence.
+#[test]
+fn a_target_no_impact_meets_is_refused() {
+    let grid = [
+        "map",
+        "--normalized",
+        "--lambda",
+        "0.1:1:3",
+        "--zeta",
+        "0.1:1:3",
+    ];
+    for (target, why) in [
+        ("cor>=1.5", "the COR is at most 1"),
+        ("cor<=-0.1", "the COR is at least 0"),
+        ("max_force<=0", "the peak force is above 0"),
+        ("cor>=0.5,contact_time<=-1", "the contact time is above 0"),
+    ] {
+        let args = [&grid[..], &["--where", target]].concat();
+        bad(&args, &["invalid where", "no impact meets it", why]);
+    }
+    // the ends of the range are accepted (e = 1 where the dashpot is rigid, e = 0 where the
+    // ball does not leave): a map may hold them, so this one is only warned of
+    let o = bl(&[&grid[..], &["--where", "cor>=1,max_force>=0"]].concat());
+    assert_eq!(o.code, 0, "{}", o.stderr);
+    assert!(o.stderr.contains("warning: no cell meets"), "{}", o.stderr);
+}
+
+/// Targets no cell of the map meets are warned of — each constraint with the cells that meet
+/// it alone and its quantity's span — in the JSON's `warnings` and beside the CSV on stderr;
+/// a map with a feasible cell says nothing.
+#[test]
+fn targets_no_cell_meets_are_warned_of() {
+    let grid = [
+        "map", "--preset", "tennis", "--lambda", "0.1:10:6", "--zeta", "0.01:1:5",
+    ];
+    let unmet = [&grid[..], &["--where", "cor>=0.96,max_force<=250"]].concat();
+    let o = bl(&unmet);
+    assert_eq!(o.code, 0, "{}", o.stderr);
+    let line = "bouncelab: warning: no cell meets the targets 'cor>=0.96,max_force<=250': \
+                cor>=0.96 in 0 of 30 cells (cor spans 0.2479 … 0.9549); max_force<=250 in 22 \
+                of 30 cells (max_force spans 103.0 … 257.2)";
+    assert_eq!(o.stderr.trim_end(), line);
+    let doc = json(&[&unmet[..], &["--format", "json"]].concat());
+    let warnings = doc["warnings"].as_array().unwrap();
+    assert_eq!(warnings.len(), 1);
+    assert_eq!(warnings[0], line.trim_start_matches("bouncelab: warning: "));
+    assert!(
+        doc["rows"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .all(|r| r[5] == false)
+    );
+    // the numbers the warning gives are the map's own: its largest COR is the span's end
+    let cor = |r: &serde_json::Value| r[2].as_f64().unwrap();
+    let top = doc["rows"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(cor)
+        .fold(0.0, f64::max);
+    assert_eq!(format!("{top:.4}"), "0.9549");
+    // met somewhere: nothing to say
+    let met = [&grid[..], &["--where", "cor>=0.9,max_force<=240"]].concat();
+    assert!(
+        json(&[&met[..], &["--format", "json"]].concat())["warnings"]
+            .as_array()
+            .unwrap()
+            .is_empty()
+    );
 }

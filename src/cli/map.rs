@@ -137,9 +137,13 @@ pub fn run(a: &MapArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         super::outputs::check(&[path.as_path()], a.force)?;
     }
     let map = super::budget::map(ball.spec.clone())?;
+    let unmet = targets
+        .as_ref()
+        .and_then(|t| crate::map::unmet_warning(&map, t));
     let warnings: Vec<String> = crate::api::map_indentation_warning(&map, ball.radius)
         .into_iter()
         .chain(crate::api::map_displacement_warning(&map, ball.radius))
+        .chain(unmet)
         .collect();
     let text = match a.format {
         MapFormat::Csv => csv(&map, targets.as_ref()),
@@ -185,7 +189,8 @@ struct Doc<'a> {
     iso_cor: Vec<IsoLine>,
     /// The boundary of the feasible region, as [λ, ζ] polylines.
     feasible_outline: Vec<Vec<(f64, f64)>>,
-    /// What the caller should know ([`crate::api::map_indentation_warning`]); `[]` when
+    /// What the caller should know ([`crate::api::map_indentation_warning`],
+    /// [`crate::api::map_displacement_warning`], [`crate::map::unmet_warning`]); `[]` when
     /// nothing.
     warnings: &'a [String],
 }

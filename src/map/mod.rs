@@ -47,7 +47,7 @@ pub use axis::{Axis, MAX_AXIS_POINTS, MAX_CELLS, Param, Scale};
 pub use contour::{Contour, contour_lines};
 pub use eval::{Pass, cell_at, compute};
 pub use sensitivity::{Sensitivity, sensitivity};
-pub use target::{Bound, Constraint, Targets};
+pub use target::{Bound, Constraint, Targets, unmet_warning};
 
 use crate::api::BallError;
 use crate::model::contact::ContactLaw;

@@ -131,11 +131,71 @@ fn parse_one(part: &str) -> Result<Constraint, MapError> {
     if !value.is_finite() {
         return Err(bad("the value must be a finite number".into()));
     }
-    Ok(Constraint {
+    let k = Constraint {
         quantity,
         bound,
         value,
-    })
+    };
+    match k.beyond_every_impact() {
+        Some(range) => Err(bad(format!("no impact meets it: {range}"))),
+        None => Ok(k),
+    }
+}
+
+impl Constraint {
+    /// Where no impact can meet the constraint whatever the ball — 0 ≤ e ≤ 1 (the dashpot
+    /// only dissipates, docs/model.md §9), F_m > 0 and t_f > 0 — the range it falls outside.
+    fn beyond_every_impact(&self) -> Option<&'static str> {
+        let v = self.value;
+        match (self.quantity, self.bound) {
+            (Quantity::Cor, Bound::AtLeast) if v > 1.0 => Some("the COR is at most 1"),
+            (Quantity::Cor, Bound::AtMost) if v < 0.0 => Some("the COR is at least 0"),
+            (Quantity::MaxForce, Bound::AtMost) if v <= 0.0 => Some("the peak force is above 0"),
+            (Quantity::ContactTime, Bound::AtMost) if v <= 0.0 => {
+                Some("the contact time is above 0")
+            }
+            _ => None,
+        }
+    }
+}
+
+/// A warning when no cell of `map` meets `targets` (every `feasible` false, no outline): each
+/// constraint with the cells that meet it alone and its quantity's span over the map, so
+/// that the one to relax shows. `None` when some cell meets them all, or with no targets.
+pub fn unmet_warning(map: &super::Map, targets: &Targets) -> Option<String> {
+    let cells: Vec<&Cell> = map.cells().iter().flatten().collect();
+    if targets.0.is_empty() || cells.iter().any(|c| targets.holds(c)) {
+        return None;
+    }
+    let each: Vec<String> = targets
+        .0
+        .iter()
+        .map(|k| {
+            let values = cells
+                .iter()
+                .map(|c| c.get(k.quantity))
+                .filter(|v| v.is_finite());
+            let (lo, hi) = values.fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| {
+                (lo.min(v), hi.max(v))
+            });
+            let met = cells.iter().filter(|c| k.holds(c)).count();
+            let span = if lo <= hi {
+                format!("{} spans {} … {}", k.quantity.name(), sig(lo), sig(hi))
+            } else {
+                format!("no cell has a {}", k.quantity.name())
+            };
+            format!("{k} in {met} of {} cells ({span})", cells.len())
+        })
+        .collect();
+    Some(format!(
+        "no cell meets the targets '{targets}': {}",
+        each.join("; ")
+    ))
+}
+
+/// Four significant digits, as the map's other warnings print their numbers.
+fn sig(x: f64) -> String {
+    crate::text::sig(x, 4)
 }
 
 #[cfg(test)]
