@@ -144,6 +144,20 @@ pub fn sig_trim(x: f64, sig: usize) -> String {
     )
 }
 
+/// `n` and its noun, singular for one: `counted(1, "ball")` is "1 ball", else "N balls".
+///
+/// ```
+/// assert_eq!(bouncelab::text::counted(1, "ball"), "1 ball");
+/// assert_eq!(bouncelab::text::counted(3, "ball"), "3 balls");
+/// ```
+pub fn counted(n: usize, noun: &str) -> String {
+    if n == 1 {
+        format!("1 {noun}")
+    } else {
+        format!("{n} {noun}s")
+    }
+}
+
 /// One CSV field (RFC 4180): quoted when it holds a comma, quote or line break (a user
 /// preset's name could).
 pub fn csv_field(s: &str) -> String {

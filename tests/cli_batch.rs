@@ -340,3 +340,31 @@ fn the_same_answer_on_any_number_of_threads() {
     };
     assert_eq!(run("1"), run("4"));
 }
+
+/// A batch of one ball is spoken of as one: the report once said "1 balls from …" and the
+/// error "1 of 1 balls have no verdict".
+#[test]
+fn a_batch_of_one_ball_reads_as_one() {
+    let dir = tempfile::tempdir().unwrap();
+    write(
+        dir.path(),
+        "one.csv",
+        "id,drop_height_m,rebound_height_m\nB1,2.54,1.40\n",
+    );
+    let text = ok_at(dir.path(), &["batch", "one.csv", "--preset", "tennis"]);
+    assert!(
+        text.contains("\n1 ball from one.csv, fitted one by one"),
+        "{text}"
+    );
+    write(
+        dir.path(),
+        "bad.csv",
+        "id,drop_height_m,rebound_height_m\nB1,2.54,0.001\n",
+    );
+    let o = bl_at(dir.path(), &["batch", "bad.csv", "--preset", "tennis"]);
+    assert_eq!(o.code, 1, "{}", o.stderr);
+    assert_eq!(
+        o.stderr,
+        "bouncelab: error: the ball has no verdict: its row says why\n"
+    );
+}

@@ -361,7 +361,11 @@ fn within_one(bound: f64, ci: [f64; 2]) -> bool {
 
 /// Some balls of a batch have no verdict: the command line's exit 1, after its report.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
-#[error("{no_answer} of {balls} balls have no verdict: their rows say why")]
+#[error("{}", if *balls == 1 {
+    "the ball has no verdict: its row says why".to_string()
+} else {
+    format!("{no_answer} of {balls} balls have no verdict: their rows say why")
+})]
 pub struct BatchUnanswered {
     /// Balls without a verdict.
     pub no_answer: usize,

@@ -269,8 +269,8 @@ fn histogram_figure(file: &Path, r: &BatchReport<'_>) -> crate::figure::Figure {
             files::label(file)
         ),
         &format!(
-            "{} balls, standard {}: {}",
-            values.len(),
+            "{}, standard {}: {}",
+            crate::text::counted(values.len(), "ball"),
             r.standard.name,
             r.standard.title
         ),
@@ -300,8 +300,8 @@ fn text(
     writeln!(out, "{}, {} law", ball.label(), r.law)?;
     writeln!(
         out,
-        "{} balls from {}, fitted one by one ({}){}; judged against {}: {}, window {}",
-        s.balls,
+        "{} from {}, fitted one by one ({}){}; judged against {}: {}, window {}",
+        crate::text::counted(s.balls, "ball"),
         files::label(file),
         s.free.join(", "),
         if air.is_some() {
