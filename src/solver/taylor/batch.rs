@@ -112,7 +112,7 @@ pub fn summaries(ns: &[Normalized], law: ContactLaw) -> Vec<Option<Summary>> {
                         *lane_vn = c_vn.0[j];
                     }
                 }
-                impact.feed::<POWER_LEN>(&lane)
+                impact.feed_by::<POWER_LEN>(&lane, h.0[j], s_end, (ds0, dsh))
             };
             if let Progress::Done(summary) = progress {
                 out[*i] = summary;

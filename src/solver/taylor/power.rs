@@ -285,15 +285,35 @@ impl Phase {
         if !(h.is_finite() && h > 0.0) {
             return Next::Fail;
         }
-        let s_end = poly::eval(&c[0], h);
+        self.advance_by(c, h, poly::eval(&c[0], h), None, budget)
+    }
+
+    /// [`Phase::advance`] given the step `h` and s(h) (`s_end`), and s'(0), s'(h) (`ds`)
+    /// where they are known: `super::batch` has them from its lanes, the same bits.
+    pub(super) fn advance_by<const L: usize>(
+        &mut self,
+        c: &[[f64; L]; 4],
+        h: f64,
+        s_end: f64,
+        ds: Option<(f64, f64)>,
+        budget: &Budget,
+    ) -> Next {
+        if !(h.is_finite() && h > 0.0) {
+            return Next::Fail;
+        }
         if self.unloading && s_end > 1.0 {
             return Next::Fail;
         }
         // loading: a turn (s' falls through 0) in (0, h], whose s may pass the yield value
         // even where s(h) is back below it
-        let ds = poly::derivative(&c[0]);
-        let turn = (!self.unloading && poly::eval(&ds, 0.0) > 0.0 && poly::eval(&ds, h) <= 0.0)
-            .then(|| poly::root(&ds, 0.0, h));
+        let turns = !self.unloading && {
+            let (ds0, dsh) = ds.unwrap_or_else(|| {
+                let d = poly::derivative(&c[0]);
+                (poly::eval(&d, 0.0), poly::eval(&d, h))
+            });
+            ds0 > 0.0 && dsh <= 0.0
+        };
+        let turn = turns.then(|| poly::root(&poly::derivative(&c[0]), 0.0, h));
         let top = turn.map_or(s_end, |t| poly::eval(&c[0], t).max(s_end));
         // the first of separation and yield in (0, h]
         let mut event: Option<(f64, bool)> = None;

@@ -92,6 +92,22 @@ impl PowerImpact {
         }
     }
 
+    /// [`PowerImpact::feed`] given what the step's lanes evaluated (`Phase::advance_by`):
+    /// the step `h`, s(h) and (s'(0), s'(h)).
+    pub(super) fn feed_by<const L: usize>(
+        &mut self,
+        c: &[[f64; L]; 4],
+        h: f64,
+        s_end: f64,
+        ds: (f64, f64),
+    ) -> Progress {
+        match self.phase.advance_by(c, h, s_end, Some(ds), &self.budget) {
+            Next::Go => Progress::Go,
+            Next::Fail => Progress::Done(None),
+            Next::Done(run) => self.next_stage(run),
+        }
+    }
+
     /// A quiet step's end `x` (`Phase::is_quiet`), as [`PowerImpact::feed`] would take it.
     pub(super) fn take(&mut self, x: [f64; 4]) -> Progress {
         match self.phase.take(x, &self.budget) {
