@@ -127,16 +127,7 @@ pub fn map_displacement_warning(map: &Map, radius: f64) -> Option<String> {
     if spec.normalized || !radius.is_finite() {
         return None;
     }
-    let p = &spec.base;
-    let n = p.normalized();
-    let contact = crate::model::contact::Contact {
-        law: spec.law,
-        zp_bar: n.zp_bar,
-        kappa: n.kappa,
-    };
-    // the normalized scales: F̄ = F/(K_p v0/ω0), z = z̄ v0/ω0 (docs/model.md §5)
-    let length = p.v0 / p.omega0();
-    let z_m = |f: f64| contact.loading_indentation(f / (p.k_p * length)) * length;
+    let z_m = super::warnings::cell_indentation(spec);
     let method = match spec.law {
         ContactLaw::Linear => Method::Exact,
         _ => Method::Numeric,

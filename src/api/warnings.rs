@@ -11,6 +11,23 @@ use crate::text::{number, short, sig};
 /// larger residual means the numbers were not computed to their promised accuracy.
 pub const ENERGY_RESIDUAL_MAX: f64 = 1e-6;
 
+/// The peak indentation z_m (m) of a dimensional map's cell from its peak force F_m (N),
+/// through the loading branch the map's cells share (λ and ζ move K_r and c, never m, K_p,
+/// K_h, z_p or v0; `Contact::loading_indentation`), in the normalized scales F̄ = F/(K_p
+/// v0/ω0), z = z̄ v0/ω0 (docs/model.md §5).
+pub(super) fn cell_indentation(spec: &crate::map::MapSpec) -> impl Fn(f64) -> f64 + Sync {
+    let p = &spec.base;
+    let n = p.normalized();
+    let contact = crate::model::contact::Contact {
+        law: spec.law,
+        zp_bar: n.zp_bar,
+        kappa: n.kappa,
+    };
+    let length = p.v0 / p.omega0();
+    let k_p = p.k_p;
+    move |f| contact.loading_indentation(f / (k_p * length)) * length
+}
+
 /// The cells of a dimensional `map` whose peak indentation passes `radius` (m): each cell's
 /// z_m from its peak force through the loading branch, which the map's cells share (λ and ζ
 /// move K_r and c, never m, K_p, K_h, z_p or v0; `Contact::loading_indentation`). One
@@ -21,16 +38,7 @@ pub fn map_indentation_warning(map: &crate::map::Map, radius: f64) -> Option<Str
     if spec.normalized || !radius.is_finite() {
         return None;
     }
-    let p = &spec.base;
-    let n = p.normalized();
-    let contact = crate::model::contact::Contact {
-        law: spec.law,
-        zp_bar: n.zp_bar,
-        kappa: n.kappa,
-    };
-    // the normalized scales: F̄ = F/(K_p v0/ω0), z = z̄ v0/ω0 (docs/model.md §5)
-    let length = p.v0 / p.omega0();
-    let z_m = |f: f64| contact.loading_indentation(f / (p.k_p * length)) * length;
+    let z_m = cell_indentation(spec);
     let (past, deepest) = map
         .cells()
         .iter()
