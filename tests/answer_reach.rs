@@ -11,6 +11,15 @@ use bouncelab::{Ball, api};
 use common::*;
 
 const SOFT: [&str; 6] = ["--preset", "superball", "--lambda", "0.001", "--zeta", "10"];
+/// The same ball by its K_r and c, for the commands without `--lambda` and `--zeta`.
+const SOFT_SUPERBALL: [&str; 6] = [
+    "--preset",
+    "superball",
+    "--k-r",
+    "54.5",
+    "--damping",
+    "2.2573767961950884",
+];
 const ALPHA: &str = "peak displacement of the ball's centre α_max 34.97 mm exceeds the ball's \
                      radius 21.55 mm";
 
@@ -113,21 +122,8 @@ fn sweep_rows_and_oblique_warn_of_the_centre_at_their_own_speed() {
     assert!(rows[0].ends_with(','), "3.5 mm at 0.312 m/s: {csv}");
     assert!(rows[1].contains(ALPHA), "{csv}");
     // the normal impact at v sin θ = 3.12 sin 45° m/s: α_max 34.97 sin 45° = 24.73 mm
-    let v = json(&[
-        "oblique",
-        "--preset",
-        "superball",
-        "--k-r",
-        "54.5",
-        "--damping",
-        "2.2573767961950884",
-        "--angle",
-        "45",
-        "--friction",
-        "0.5",
-        "--format",
-        "json",
-    ]);
+    let oblique = ["--angle", "45", "--friction", "0.5", "--format", "json"];
+    let v = json(&[&["oblique"][..], &SOFT_SUPERBALL, &oblique].concat());
     let w = v["warnings"].as_array().unwrap();
     assert_eq!(w.len(), 1, "{w:?}");
     assert!(w[0].as_str().unwrap().contains("α_max 24.73 mm"), "{w:?}");
@@ -138,14 +134,7 @@ fn sweep_rows_and_oblique_warn_of_the_centre_at_their_own_speed() {
 /// tends to it (read off the sampled run, from below).
 #[test]
 fn collide_and_bat_warn_of_the_ball_s_own_compression() {
-    let soft = [
-        "--preset",
-        "superball",
-        "--k-r",
-        "54.5",
-        "--damping",
-        "2.2573767961950884",
-    ];
+    let soft = SOFT_SUPERBALL;
     let collide = |extra: &[&str]| {
         let mut a = vec!["collide"];
         a.extend(soft);
