@@ -114,6 +114,23 @@ fn bounds(p: &ImpactParams, z_m: f64, f_m: f64, t_f: f64) -> (f64, f64) {
     (decay * momentum / p.damping, hi)
 }
 
+/// The peak indentation z_m (m) of a dimensional map's cell from its peak force F_m (N),
+/// through the loading branch the map's cells share (λ and ζ move K_r and c, never m, K_p,
+/// K_h, z_p or v0; `Contact::loading_indentation`), in the normalized scales F̄ = F/(K_p
+/// v0/ω0), z = z̄ v0/ω0 (docs/model.md §5).
+pub(super) fn cell_indentation(spec: &crate::map::MapSpec) -> impl Fn(f64) -> f64 + Sync {
+    let p = &spec.base;
+    let n = p.normalized();
+    let contact = crate::model::contact::Contact {
+        law: spec.law,
+        zp_bar: n.zp_bar,
+        kappa: n.kappa,
+    };
+    let length = p.v0 / p.omega0();
+    let k_p = p.k_p;
+    move |f| contact.loading_indentation(f / (k_p * length)) * length
+}
+
 /// The cells of a dimensional `map` whose ball's centre passes `radius` (m) while their peak
 /// indentation does not ([`super::map_indentation_warning`] names those): a cell past by its
 /// lower bound is counted, one within by its upper bound left (`bounds`), and every other
@@ -127,7 +144,7 @@ pub fn map_displacement_warning(map: &Map, radius: f64) -> Option<String> {
     if spec.normalized || !radius.is_finite() {
         return None;
     }
-    let z_m = super::warnings::cell_indentation(spec);
+    let z_m = cell_indentation(spec);
     let method = match spec.law {
         ContactLaw::Linear => Method::Exact,
         _ => Method::Numeric,

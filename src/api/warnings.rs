@@ -2,7 +2,7 @@
 //! travel with the answer"): the JSON `warnings` array of run, sweep velocity, drop and peers,
 //! a `warning:` line in text, and the explorer's readout.
 
-use super::reach::reach_warning;
+use super::reach::{cell_indentation, reach_warning};
 use super::{Ball, BallError};
 use crate::solver::ImpactResponse;
 use crate::text::{number, short, sig};
@@ -10,23 +10,6 @@ use crate::text::{number, short, sig};
 /// The energy audit (docs/model.md §8) must close to this fraction of the impact energy; a
 /// larger residual means the numbers were not computed to their promised accuracy.
 pub const ENERGY_RESIDUAL_MAX: f64 = 1e-6;
-
-/// The peak indentation z_m (m) of a dimensional map's cell from its peak force F_m (N),
-/// through the loading branch the map's cells share (λ and ζ move K_r and c, never m, K_p,
-/// K_h, z_p or v0; `Contact::loading_indentation`), in the normalized scales F̄ = F/(K_p
-/// v0/ω0), z = z̄ v0/ω0 (docs/model.md §5).
-pub(super) fn cell_indentation(spec: &crate::map::MapSpec) -> impl Fn(f64) -> f64 + Sync {
-    let p = &spec.base;
-    let n = p.normalized();
-    let contact = crate::model::contact::Contact {
-        law: spec.law,
-        zp_bar: n.zp_bar,
-        kappa: n.kappa,
-    };
-    let length = p.v0 / p.omega0();
-    let k_p = p.k_p;
-    move |f| contact.loading_indentation(f / (k_p * length)) * length
-}
 
 /// The cells of a dimensional `map` whose peak indentation passes `radius` (m): each cell's
 /// z_m from its peak force through the loading branch, which the map's cells share (λ and ζ
