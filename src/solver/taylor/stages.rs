@@ -85,11 +85,8 @@ impl PowerImpact {
 
     /// One step, given the series of order L − 1 at the phase's state.
     pub(super) fn feed<const L: usize>(&mut self, c: &[[f64; L]; 4]) -> Progress {
-        match self.phase.advance(c, POWER_EPS, &self.budget) {
-            Next::Go => Progress::Go,
-            Next::Fail => Progress::Done(None),
-            Next::Done(run) => self.next_stage(run),
-        }
+        let next = self.phase.advance(c, POWER_EPS, &self.budget);
+        self.after(next)
     }
 
     /// [`PowerImpact::feed`] given what the step's lanes evaluated (`Phase::advance_by`):
@@ -101,18 +98,22 @@ impl PowerImpact {
         s_end: f64,
         ds: (f64, f64),
     ) -> Progress {
-        match self.phase.advance_by(c, h, s_end, Some(ds), &self.budget) {
-            Next::Go => Progress::Go,
-            Next::Fail => Progress::Done(None),
-            Next::Done(run) => self.next_stage(run),
-        }
+        let next = self.phase.advance_by(c, h, s_end, Some(ds), &self.budget);
+        self.after(next)
     }
 
     /// A quiet step's end `x` (`Phase::is_quiet`), as [`PowerImpact::feed`] would take it.
     pub(super) fn take(&mut self, x: [f64; 4]) -> Progress {
-        match self.phase.take(x, &self.budget) {
+        let next = self.phase.take(x, &self.budget);
+        self.after(next)
+    }
+
+    /// The impact after a step that left `next`.
+    fn after(&mut self, next: Next) -> Progress {
+        match next {
             Next::Go => Progress::Go,
-            _ => Progress::Done(None),
+            Next::Fail => Progress::Done(None),
+            Next::Done(run) => self.next_stage(run),
         }
     }
 
