@@ -15,6 +15,17 @@ use tui_common::*;
 
 const BEYOND: &str = "exceeds the ball's radius";
 
+/// The superball dropped 100 m without air: it meets the plate at 44 m/s, and its first
+/// impact passes its radius.
+const DROP_100_M: [&str; 6] = [
+    "drop",
+    "--preset",
+    "superball",
+    "--height",
+    "100",
+    "--no-drag",
+];
+
 /// `run --preset superball --v0 45` reported a peak indentation of 31 mm on a ball of
 /// 21.6 mm radius without a word.
 #[test]
@@ -69,16 +80,7 @@ fn sweep_rows_drop_and_peers_carry_their_warnings() {
     assert!(rows[2]["warnings"][0].as_str().unwrap().contains(BEYOND));
     // a drop from 100 m without air meets the plate at 44 m/s: the superball's first impact
     // passes R
-    let v = json(&[
-        "drop",
-        "--preset",
-        "superball",
-        "--height",
-        "100",
-        "--no-drag",
-        "--format",
-        "json",
-    ]);
+    let v = json(&[&DROP_100_M[..], &["--format", "json"]].concat());
     assert!(
         v["warnings"][0].as_str().unwrap().contains(BEYOND),
         "{}",
@@ -209,15 +211,7 @@ fn every_answer_and_every_format_carries_the_radius_warning() {
     }
     // the time series: stderr, the series itself unchanged
     let oblique_series = [&oblique[..], &["--history"]].concat();
-    let drop = [
-        "drop",
-        "--preset",
-        "superball",
-        "--height",
-        "100",
-        "--no-drag",
-    ];
-    let drop = [&drop[..], &["--format", "csv"]].concat();
+    let drop = [&DROP_100_M[..], &["--format", "csv"]].concat();
     let series: [&[&str]; 3] = [
         &["run", "--format", "csv", "--history"],
         &oblique_series,
