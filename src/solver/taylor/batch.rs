@@ -16,7 +16,7 @@
 
 use super::power::{self, Coef, Coefs};
 use super::stages::{PowerImpact, Progress};
-use super::{POWER_EPS, POWER_LEN, Summary, poly};
+use super::{POWER_LEN, Summary};
 use crate::model::contact::ContactLaw;
 use crate::model::params::Normalized;
 use std::ops::{Add, Mul, Sub};
@@ -136,7 +136,10 @@ fn steps(c: &LaneSeries, slots: &[Option<(usize, PowerImpact)>; W]) -> Lanes {
                 .map(|(c_v, s)| c_v[n].0[j].abs() / s)
                 .fold(0.0, f64::max)
         };
-        poly::step_of_norms(norm(order - 1), norm(order), order, POWER_EPS)
+        impact
+            .phase
+            .rules
+            .step_of_norms(norm(order - 1), norm(order), order)
     }))
 }
 

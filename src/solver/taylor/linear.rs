@@ -6,8 +6,15 @@
 //! z̄' = ᾱ' − ȳ',   ᾱ'' = −F̄,   ȳ' = 2ζ(F̄ − λȳ).
 //! ```
 
-use super::poly::{self, LEN, ORDER, Series};
+use super::poly::{self, EPS, LEN, ORDER, Rules, Series};
 use super::{Budget, Point, Sys};
+
+/// The linear phases' rules: within `poly::EPS`, by the quick step rule and roots (no
+/// reference is built on them).
+const RULES: Rules = Rules {
+    eps: EPS,
+    quick: true,
+};
 
 /// The branch F̄ = k (z̄ − z̄₀) + F̄₀.
 #[derive(Debug, Clone, Copy)]
@@ -72,7 +79,7 @@ pub(super) fn run(
     loop {
         budget.take()?;
         let c = series(sys, br, x);
-        let h = poly::step(&c, &x.map(|xi| xi.abs().max(1.0)));
+        let h = RULES.step(&c, &x.map(|xi| xi.abs().max(1.0)));
         if !(h.is_finite() && h > 0.0) {
             return None;
         }
@@ -80,7 +87,7 @@ pub(super) fn run(
             None => {
                 let dz = poly::derivative(&c[0]);
                 if poly::eval(&dz, h) <= 0.0 {
-                    let turn = poly::root(&dz, 0.0, h);
+                    let turn = RULES.root(&dz, 0.0, h);
                     return Some(End::Turned(at(&c, turn, tau)));
                 }
             }
@@ -90,7 +97,7 @@ pub(super) fn run(
                     return None;
                 }
                 if z_end <= z_free {
-                    let leave = poly::root(&c[0], z_free, h);
+                    let leave = RULES.root(&c[0], z_free, h);
                     let mut p = at(&c, leave, tau);
                     p.z = z_free;
                     return Some(End::Separated(p));

@@ -75,6 +75,12 @@ const POWER_LEN: usize = 29;
 /// holds the steps to the adaptive solver at rtol 1e-14
 /// (`taylor_meets_the_reference_at_a_thousand_points`).
 const POWER_EPS: f64 = 1e-15;
+/// The 3/2-power phases' rules in [`summary`]: [`POWER_EPS`], and the quick step rule and
+/// roots (`poly::Rules`); the reference keeps `poly::Rules::REFERENCE`.
+const POWER_RULES: poly::Rules = poly::Rules {
+    eps: POWER_EPS,
+    quick: true,
+};
 
 /// ȳ' = 2ζ(F̄ − λȳ) in the units of the run.
 #[derive(Debug, Clone, Copy)]
@@ -153,15 +159,15 @@ fn power_law(n: &Normalized, law: ContactLaw) -> Option<Summary> {
 }
 
 /// The Hertz loading (ẑ from 0 at unit speed, κ̂ = 1) until separation or yield at ẑ_p, by
-/// series of order L − 1 within `eps` a step.
+/// series of order L − 1 by `rules`.
 fn hertz_loading<const L: usize>(
     sys: &Sys,
     zp: f64,
-    eps: f64,
+    rules: poly::Rules,
     budget: &mut Budget,
 ) -> Option<power::Run> {
     let (hertz, start) = hertz_start();
-    power::run::<L>(sys, &hertz, start, zp.sqrt(), false, eps, budget)
+    power::run::<L>(sys, &hertz, start, zp.sqrt(), false, rules, budget)
 }
 
 /// The Hertz branch in the Hertz scale (ẑ = s², F̂ = s³) and first touch on it at unit speed.
@@ -195,7 +201,8 @@ pub fn hertz_reference(lambda_hat: f64, zeta_hat: f64, max_steps: usize) -> Opti
         zeta: zeta_hat,
     };
     let mut budget = Budget::with_steps(max_steps);
-    let first = hertz_loading::<{ poly::LEN }>(&sys, f64::INFINITY, poly::EPS, &mut budget)?;
+    let first =
+        hertz_loading::<{ poly::LEN }>(&sys, f64::INFINITY, poly::Rules::REFERENCE, &mut budget)?;
     let power::End::Separated(end) = first.end else {
         return None;
     };

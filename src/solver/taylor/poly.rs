@@ -38,26 +38,59 @@ pub(super) fn derivative<const L: usize>(c: &[f64; L]) -> [f64; L] {
     d
 }
 
-/// The step after which every series' last two terms, each relative to its `scales` entry,
-/// stay below [`EPS`]: h = min over j ∈ {N − 1, N} of (ε / max_i |c_ij|/scale_i)^{1/j}. The
-/// norms are taken first, so that the step costs two `powf` whatever the number of series.
-pub(super) fn step(c: &[Series], scales: &[f64]) -> f64 {
-    step_within(c, scales, EPS)
+/// How a phase's steps are taken: their truncation `eps`, and whether by the quick rule and
+/// roots ([`quick_step_of_norms`], [`root_quick`]: the fast paths) or by `powf` and Horner's
+/// sums ([`step_of_norms`], [`root`]: the Hertz table's reference, whose nodes
+/// tests/hertz_table.rs holds to the committed file's bits).
+#[derive(Debug, Clone, Copy)]
+pub(super) struct Rules {
+    pub eps: f64,
+    pub quick: bool,
 }
 
-/// [`step`] for series of any order (their length less one) within the error `eps`.
-pub(super) fn step_within<const L: usize>(c: &[[f64; L]], scales: &[f64], eps: f64) -> f64 {
-    let order = L - 1;
-    let norm = |j: usize| {
-        c.iter()
-            .zip(scales)
-            .map(|(ci, s)| ci[j].abs() / s)
-            .fold(0.0, f64::max)
+impl Rules {
+    /// The reference's: order 20 within [`EPS`], `powf` and Horner.
+    pub(super) const REFERENCE: Rules = Rules {
+        eps: EPS,
+        quick: false,
     };
-    step_of_norms(norm(order - 1), norm(order), order, eps)
+
+    /// The step from the norms of the last two terms of series of order `order`.
+    #[inline(always)]
+    pub(super) fn step_of_norms(&self, next_to_last: f64, last: f64, order: usize) -> f64 {
+        if self.quick {
+            quick_step_of_norms(next_to_last, last, order, self.eps)
+        } else {
+            step_of_norms(next_to_last, last, order, self.eps)
+        }
+    }
+
+    /// The first h in (0, `end`] where `c(h) = target` ([`root`]).
+    pub(super) fn root<const L: usize>(&self, c: &[f64; L], target: f64, end: f64) -> f64 {
+        if self.quick {
+            root_quick(c, target, end)
+        } else {
+            root(c, target, end)
+        }
+    }
+
+    /// The step after which every series' last two terms, each relative to its `scales`
+    /// entry, stay below `eps` ([`step_of_norms`]): the norms are taken first.
+    pub(super) fn step<const L: usize>(&self, c: &[[f64; L]], scales: &[f64]) -> f64 {
+        let order = L - 1;
+        let norm = |j: usize| {
+            c.iter()
+                .zip(scales)
+                .map(|(ci, s)| ci[j].abs() / s)
+                .fold(0.0, f64::max)
+        };
+        self.step_of_norms(norm(order - 1), norm(order), order)
+    }
 }
 
-/// [`step_within`] from the norms of the last two terms of series of order `order`.
+/// The step after which the last two terms of series of order `order`, whose norms (each
+/// term's largest size relative to its series' scale) are given, stay below `eps`:
+/// h = min over j ∈ {N − 1, N} of (ε / a_j)^{1/j}, two `powf` whatever the number of series.
 pub(super) fn step_of_norms(next_to_last: f64, last: f64, order: usize, eps: f64) -> f64 {
     let rule = |a: f64, j: usize| {
         if a == 0.0 {
@@ -69,11 +102,121 @@ pub(super) fn step_of_norms(next_to_last: f64, last: f64, order: usize, eps: f64
     rule(next_to_last, order - 1).min(rule(last, order))
 }
 
+/// [`step_of_norms`] without `powf`: the same rule, h = 2^min_j (log₂(ε/a_j) / j), with
+/// log₂ and 2^y by short series ([`log2_quick`], [`exp2_quick`]) good to 2e-6 in log₂ a, so
+/// to 1e-7 relative in h at the orders used (j ≥ 19): the truncation moves by (1 + 1e-7)^j, far
+/// inside ε. The fast paths' rule (`Rules::quick`); two `powf` were 14 % of a batched
+/// elastic–plastic impact (perf, BENCHMARKS.md, twelfth session). Written by hand: it must be
+/// the same IEEE operations in `super::batch`'s lanes as here, which no libm promises.
+#[inline(always)]
+pub(super) fn quick_step_of_norms(next_to_last: f64, last: f64, order: usize, eps: f64) -> f64 {
+    let log_eps = log2_quick(eps);
+    let rule = |a: f64, j: usize| {
+        if a == 0.0 {
+            f64::INFINITY
+        } else {
+            (log_eps - log2_quick(a)) / j as f64
+        }
+    };
+    exp2_quick(rule(next_to_last, order - 1).min(rule(last, order)))
+}
+
+/// log₂ x to 2e-6 for positive normal x: x = 2^e m, m ∈ [1, 2), log₂ m = (2/ln 2) atanh t
+/// with t = (m − 1)/(m + 1) ∈ [0, 1/3], its series to t⁹ (the next term is below 2e-6).
+/// Anything else (0, subnormal, ∞, NaN, negative) by `f64::log2`.
+#[inline(always)]
+fn log2_quick(x: f64) -> f64 {
+    if !(x.is_normal() && x > 0.0) {
+        return x.log2();
+    }
+    let bits = x.to_bits();
+    let e = ((bits >> 52) & 0x7ff) as f64 - 1023.0;
+    let m = f64::from_bits((bits & ((1u64 << 52) - 1)) | (1023u64 << 52));
+    let t = (m - 1.0) / (m + 1.0);
+    let t2 = t * t;
+    let atanh = t * (1.0 + t2 * (1.0 / 3.0 + t2 * (1.0 / 5.0 + t2 * (1.0 / 7.0 + t2 / 9.0))));
+    e + 2.0 * std::f64::consts::LOG2_E * atanh
+}
+
+/// 2^y to 1e-7 relative: y = n + f, f ∈ [0, 1), 2^f = e^{f ln 2} by its series to the 8th
+/// power (the next term is below 2e-7); 2^n by the exponent's bits. Beyond ±1000 and NaN, by
+/// `f64::exp2`.
+#[inline(always)]
+fn exp2_quick(y: f64) -> f64 {
+    if y.is_nan() || y.abs() > 1000.0 {
+        return y.exp2();
+    }
+    let n = y.floor();
+    let z = (y - n) * std::f64::consts::LN_2;
+    let mut sum = 1.0 / 40320.0;
+    for k in (0..8).rev() {
+        sum = sum * z + 1.0 / FACTORIALS[k];
+    }
+    // |n| ≤ 1000: a normal power of two
+    sum * f64::from_bits(((n + 1023.0) as u64) << 52)
+}
+
+/// k! for k < 8.
+const FACTORIALS: [f64; 8] = [1.0, 1.0, 2.0, 6.0, 24.0, 120.0, 720.0, 5040.0];
+
 /// The first h in (0, `end`] where `c(h) = target`, given that `c(0) − target` and
 /// `c(end) − target` differ in sign (or the latter is 0): Newton's steps inside a bracket that
 /// bisection keeps, to the rounding of h.
 pub(super) fn root<const L: usize>(c: &[f64; L], target: f64, end: f64) -> f64 {
-    let g = |h: f64| eval(c, h) - target;
+    root_with(c, target, end, eval, eval_d, false)
+}
+
+/// [`root`] with its sums by Estrin's scheme ([`eval_estrin`]): the fast paths' roots
+/// (`Rules::quick`). Horner's sums of order 28 are 28 dependent multiply–adds each, and
+/// Newton's steps wait on them; the roots were a quarter of a batched elastic–plastic impact
+/// (perf, BENCHMARKS.md, twelfth session).
+pub(super) fn root_quick<const L: usize>(c: &[f64; L], target: f64, end: f64) -> f64 {
+    let d = derivative(c);
+    root_with(
+        c,
+        target,
+        end,
+        eval_estrin,
+        move |_, h| eval_estrin(&d, h),
+        true,
+    )
+}
+
+/// Σ c_k h^k by Estrin's scheme: the pairs c_{2i} + c_{2i+1} h, then the pairs of those with
+/// h², and so on: ⌈log₂ L⌉ dependent steps instead of Horner's L − 1. Its rounding is
+/// bounded as Horner's (both sum the same products, each with at most ⌈log₂ L⌉ or L
+/// roundings), and tests/taylor.rs holds the answers it gives to the references.
+#[inline(always)]
+pub(super) fn eval_estrin<const L: usize>(c: &[f64; L], h: f64) -> f64 {
+    let mut b = *c;
+    let (mut n, mut x) = (L, h);
+    while n > 1 {
+        let half = n.div_ceil(2);
+        for i in 0..half {
+            b[i] = if 2 * i + 1 < n {
+                b[2 * i] + b[2 * i + 1] * x
+            } else {
+                b[2 * i]
+            };
+        }
+        n = half;
+        x = x * x;
+    }
+    b[0]
+}
+
+/// [`root`]'s search with the sums `value` and `slope` (Σ c_k h^k and its derivative);
+/// `quick`: ended by the first Newton step within h's rounding ([`root_quick`]).
+#[inline(always)]
+fn root_with<const L: usize>(
+    c: &[f64; L],
+    target: f64,
+    end: f64,
+    value: fn(&[f64; L], f64) -> f64,
+    slope: impl Fn(&[f64; L], f64) -> f64,
+    quick: bool,
+) -> f64 {
+    let g = |h: f64| value(c, h) - target;
     let (mut lo, mut hi) = (0.0, end);
     let (g_lo, g_hi) = (g(lo), g(hi));
     if g_hi == 0.0 {
@@ -96,8 +239,14 @@ pub(super) fn root<const L: usize>(c: &[f64; L], target: f64, end: f64) -> f64 {
         } else {
             hi = h;
         }
-        let d = eval_d(c, h);
+        let d = slope(c, h);
         let mut next = h - v / d;
+        if quick && (next - h).abs() <= 4.0 * f64::EPSILON * h.abs() {
+            // Newton's step is within h's rounding: h is the root. [`root`] goes on, and a
+            // step that rounding puts just outside the bracket sends it to bisect back over
+            // some thirty halvings (11 sums a root on average where 4 do: twelfth session)
+            return if next > lo && next < hi { next } else { h };
+        }
         if !(next > lo && next < hi) {
             next = 0.5 * (lo + hi);
         }
@@ -138,10 +287,54 @@ mod tests {
             }
             *ck = 1.0 / f;
         }
-        let h = step(&[c], &[1.0]);
+        let h = Rules::REFERENCE.step(&[c], &[1.0]);
         assert!(c[ORDER] * h.powi(ORDER as i32) <= EPS * 1.000_001);
         assert!(h > 1.0 && h < 3.0, "{h}");
         // and the sum at h is e^h to the rounding
         assert!((eval(&c, h) - h.exp()).abs() < 4e-16 * h.exp());
+    }
+
+    #[test]
+    fn the_quick_step_is_the_powf_rule_within_1e_7() {
+        for order in [20, 28] {
+            for &eps in &[1e-17, 1e-15] {
+                for i in 0..2_000 {
+                    // norms over 600 decades, either of the two the smaller
+                    let a = 10f64.powf(-300.0 + 0.3 * i as f64);
+                    let b = a * 10f64.powf(((i * 37) % 11) as f64 - 5.0);
+                    let exact = step_of_norms(a, b, order, eps);
+                    let quick = quick_step_of_norms(a, b, order, eps);
+                    assert!(
+                        (quick / exact - 1.0).abs() < 1e-7,
+                        "{a:e} {b:e}: {quick} {exact}"
+                    );
+                }
+                assert_eq!(quick_step_of_norms(0.0, 0.0, order, eps), f64::INFINITY);
+                assert!(quick_step_of_norms(f64::NAN, f64::NAN, order, eps).is_nan());
+                assert_eq!(quick_step_of_norms(f64::INFINITY, 1.0, order, eps), 0.0);
+            }
+        }
+    }
+
+    #[test]
+    fn quick_roots_are_the_reference_roots_to_the_rounding() {
+        // (h − 0.3)(h + 2) and the exponential's series less 1.5 (root ln 1.5)
+        let mut quadratic = [0.0; LEN];
+        (quadratic[0], quadratic[1], quadratic[2]) = (-0.6, 1.7, 1.0);
+        let mut exp = [0.0; LEN];
+        let mut f = 1.0;
+        for (k, ck) in exp.iter_mut().enumerate() {
+            f *= k.max(1) as f64;
+            *ck = 1.0 / f;
+        }
+        for (c, target, root_true) in [(quadratic, 0.0, 0.3), (exp, 1.5, 1.5f64.ln())] {
+            let quick = root_quick(&c, target, 1.0);
+            assert!(
+                (quick - root_true).abs() <= 4.0 * f64::EPSILON,
+                "{quick} {root_true}"
+            );
+            assert!((quick - root(&c, target, 1.0)).abs() <= 4.0 * f64::EPSILON);
+            assert!((eval_estrin(&c, root_true) - eval(&c, root_true)).abs() < 4e-16);
+        }
     }
 }

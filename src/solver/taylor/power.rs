@@ -12,7 +12,7 @@
 //! separation is a simple zero of s in σ, at which ᾱ' and τ are stationary (dᾱ'/dσ = −a s⁴,
 //! dτ/dσ = s), so the COR and the contact time carry none of the root's error.
 
-use super::poly;
+use super::poly::{self, Rules};
 use super::{Budget, Point, Sys};
 
 /// The branch z̄ = z̄₀ + b s², F̄ = a s³.
@@ -160,12 +160,6 @@ fn square<const L: usize>(c: &[f64; L], k: usize) -> f64 {
     2.0 * half + middle
 }
 
-/// The step the four series allow within `eps` (each relative to its component's size, at
-/// least 1).
-fn step<const L: usize>(c: &[[f64; L]; 4], x: &[f64; 4], eps: f64) -> f64 {
-    poly::step_within(c, &x.map(|xi| xi.abs().max(1.0)), eps)
-}
-
 fn at<const L: usize>(c: &[[f64; L]; 4], h: f64) -> [f64; 4] {
     [
         poly::eval(&c[0], h),
@@ -179,21 +173,21 @@ fn at<const L: usize>(c: &[[f64; L]; 4], h: f64) -> [f64; 4] {
 /// reaches `s_yield` (∞: never). `unloading`: the phase starts at the peak (s = 1) and a
 /// rise past it (a reload) is left to the adaptive solver (`None`); loading, every turn's s
 /// is kept in `s_max`. `None` also when the budget runs out. Series of order L − 1, each
-/// step's truncation within `eps` (`poly::step_within`).
+/// step by `rules`.
 pub(super) fn run<const L: usize>(
     sys: &Sys,
     br: &Branch,
     start: Point,
     s_yield: f64,
     unloading: bool,
-    eps: f64,
+    rules: Rules,
     budget: &mut Budget,
 ) -> Option<Run> {
-    let mut phase = Phase::new(*br, start, s_yield, unloading);
+    let mut phase = Phase::new(*br, start, s_yield, unloading, rules);
     loop {
         budget.take()?;
         let c = series::<L>(sys, br, phase.x);
-        match phase.advance(&c, eps, budget) {
+        match phase.advance(&c, budget) {
             Next::Go => {}
             Next::Done(run) => return Some(run),
             Next::Fail => return None,
@@ -211,6 +205,8 @@ pub(super) struct Phase {
     s_max: f64,
     s_yield: f64,
     unloading: bool,
+    /// How its steps and events are taken.
+    pub rules: Rules,
 }
 
 /// What a step left of a phase.
@@ -225,7 +221,13 @@ pub(super) enum Next {
 
 impl Phase {
     /// The phase from `start` on `br` (see [`run`]).
-    pub(super) fn new(br: Branch, start: Point, s_yield: f64, unloading: bool) -> Phase {
+    pub(super) fn new(
+        br: Branch,
+        start: Point,
+        s_yield: f64,
+        unloading: bool,
+        rules: Rules,
+    ) -> Phase {
         let s0 = ((start.z - br.z0) / br.b).max(0.0).sqrt();
         Phase {
             br,
@@ -233,6 +235,7 @@ impl Phase {
             s_max: s0,
             s_yield,
             unloading,
+            rules,
         }
     }
 
@@ -273,15 +276,11 @@ impl Phase {
         self.x.map(|xi| xi.abs().max(1.0))
     }
 
-    /// One step from `self.x` given the series `c` there: the step the series allow within
-    /// `eps`, the first event in it (a turn, yield, separation), and the state at its end.
-    pub(super) fn advance<const L: usize>(
-        &mut self,
-        c: &[[f64; L]; 4],
-        eps: f64,
-        budget: &Budget,
-    ) -> Next {
-        let h = step(c, &self.x, eps);
+    /// One step from `self.x` given the series `c` there: the step the series allow by the
+    /// phase's rules, the first event in it (a turn, yield, separation), and the state at its
+    /// end.
+    pub(super) fn advance<const L: usize>(&mut self, c: &[[f64; L]; 4], budget: &Budget) -> Next {
+        let h = self.rules.step(c, &self.scales());
         if !(h.is_finite() && h > 0.0) {
             return Next::Fail;
         }
@@ -313,7 +312,7 @@ impl Phase {
             });
             ds0 > 0.0 && dsh <= 0.0
         };
-        let turn = turns.then(|| poly::root(&poly::derivative(&c[0]), 0.0, h));
+        let turn = turns.then(|| self.rules.root(&poly::derivative(&c[0]), 0.0, h));
         let top = turn.map_or(s_end, |t| poly::eval(&c[0], t).max(s_end));
         // the first of separation and yield in (0, h]
         let mut event: Option<(f64, bool)> = None;
@@ -323,9 +322,9 @@ impl Phase {
             } else {
                 turn.unwrap_or(h)
             };
-            event = Some((poly::root(&c[0], self.s_yield, upto), true));
+            event = Some((self.rules.root(&c[0], self.s_yield, upto), true));
         } else if s_end <= 0.0 && self.x[0] > 0.0 {
-            event = Some((poly::root(&c[0], 0.0, h), false));
+            event = Some((self.rules.root(&c[0], 0.0, h), false));
         }
         if let Some(t) = turn
             && t <= event.map_or(h, |e| e.0)

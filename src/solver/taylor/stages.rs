@@ -5,7 +5,7 @@
 //! lanes. Both take the same steps, so they give the same bits.
 
 use super::power::{self, Next, Phase};
-use super::{Budget, POWER_EPS, Point, STIFF, Summary, Sys, finish, hertz_start, linear};
+use super::{Budget, POWER_RULES, Point, STIFF, Summary, Sys, finish, hertz_start, linear};
 use crate::model::contact::{Contact, ContactLaw};
 use crate::model::params::Normalized;
 
@@ -68,7 +68,7 @@ impl PowerImpact {
         let (hertz, start) = hertz_start();
         Some(PowerImpact {
             sys,
-            phase: Phase::new(hertz, start, zp.sqrt(), false),
+            phase: Phase::new(hertz, start, zp.sqrt(), false, POWER_RULES),
             law,
             l,
             zp,
@@ -85,7 +85,7 @@ impl PowerImpact {
 
     /// One step, given the series of order L − 1 at the phase's state.
     pub(super) fn feed<const L: usize>(&mut self, c: &[[f64; L]; 4]) -> Progress {
-        let next = self.phase.advance(c, POWER_EPS, &self.budget);
+        let next = self.phase.advance(c, &self.budget);
         self.after(next)
     }
 
@@ -166,7 +166,7 @@ impl PowerImpact {
         if unload.b.is_nan() || unload.b <= 0.0 {
             return None;
         }
-        self.phase = Phase::new(unload, top, f64::INFINITY, true);
+        self.phase = Phase::new(unload, top, f64::INFINITY, true, POWER_RULES);
         self.stage = Stage::Unloading { z_m, f_m, z_f };
         Some(())
     }
