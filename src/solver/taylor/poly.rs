@@ -103,34 +103,53 @@ pub(super) fn step_of_norms(next_to_last: f64, last: f64, order: usize, eps: f64
 }
 
 /// [`step_of_norms`] without `powf`: the same rule, h = 2^min_j (log₂(ε/a_j) / j), with
-/// log₂ and 2^y by short series ([`log2_quick`], [`exp2_quick`]) good to 2e-6 in log₂ a, so
+/// log₂ and 2^y by short series ([`log2_core`], [`exp2_core`]) good to 2e-6 in log₂ a, so
 /// to 1e-7 relative in h at the orders used (j ≥ 19): the truncation moves by (1 + 1e-7)^j, far
 /// inside ε. The fast paths' rule (`Rules::quick`); two `powf` were 14 % of a batched
 /// elastic–plastic impact (perf, BENCHMARKS.md, twelfth session). Written by hand: it must be
-/// the same IEEE operations in `super::batch`'s lanes as here, which no libm promises.
+/// the same IEEE operations in `super::batch`'s steps as here, which no libm promises.
 #[inline(always)]
 pub(super) fn quick_step_of_norms(next_to_last: f64, last: f64, order: usize, eps: f64) -> f64 {
-    let log_eps = log2_quick(eps);
+    let log_eps = log2_core(eps);
     let rule = |a: f64, j: usize| {
         if a == 0.0 {
             f64::INFINITY
         } else {
-            (log_eps - log2_quick(a)) / j as f64
+            let log_a = if is_plain(a) { log2_core(a) } else { a.log2() };
+            (log_eps - log_a) * (1.0 / j as f64)
         }
     };
-    exp2_quick(rule(next_to_last, order - 1).min(rule(last, order)))
+    let y = rule(next_to_last, order - 1).min(rule(last, order));
+    if is_in_reach(y) {
+        exp2_core(y)
+    } else {
+        y.exp2()
+    }
 }
 
-/// log₂ x to 2e-6 for positive normal x: x = 2^e m, m ∈ [1, 2), log₂ m = (2/ln 2) atanh t
-/// with t = (m − 1)/(m + 1) ∈ [0, 1/3], its series to t⁹ (the next term is below 2e-6).
-/// Anything else (0, subnormal, ∞, NaN, negative) by `f64::log2`.
+/// Positive and normal: where [`log2_core`] holds.
 #[inline(always)]
-fn log2_quick(x: f64) -> f64 {
-    if !(x.is_normal() && x > 0.0) {
-        return x.log2();
-    }
+fn is_plain(x: f64) -> bool {
+    x.is_normal() && x > 0.0
+}
+
+/// Within ±1000: where [`exp2_core`] holds.
+#[inline(always)]
+fn is_in_reach(y: f64) -> bool {
+    y.abs() <= 1000.0
+}
+
+/// 2⁵²: a float at least this large has no fraction, and its last bits are the integer.
+const TWO_52: f64 = 4_503_599_627_370_496.0;
+
+/// log₂ x to 2e-6 for positive normal x ([`is_plain`]): x = 2^e m, m ∈ [1, 2),
+/// log₂ m = (2/ln 2) atanh t with t = (m − 1)/(m + 1) ∈ [0, 1/3], its series to t⁹ (the next
+/// term is below 2e-6). e is read as a float by the 2⁵² trick, so that no conversion
+/// instruction AVX-512F lacks is needed.
+#[inline(always)]
+fn log2_core(x: f64) -> f64 {
     let bits = x.to_bits();
-    let e = ((bits >> 52) & 0x7ff) as f64 - 1023.0;
+    let e = f64::from_bits((bits >> 52) | TWO_52.to_bits()) - (TWO_52 + 1023.0);
     let m = f64::from_bits((bits & ((1u64 << 52) - 1)) | (1023u64 << 52));
     let t = (m - 1.0) / (m + 1.0);
     let t2 = t * t;
@@ -138,22 +157,22 @@ fn log2_quick(x: f64) -> f64 {
     e + 2.0 * std::f64::consts::LOG2_E * atanh
 }
 
-/// 2^y to 1e-7 relative: y = n + f, f ∈ [0, 1), 2^f = e^{f ln 2} by its series to the 8th
-/// power (the next term is below 2e-7); 2^n by the exponent's bits. Beyond ±1000 and NaN, by
-/// `f64::exp2`.
+/// 2^y to 1e-7 relative for |y| ≤ 1000 ([`is_in_reach`]): y = n + f, f ∈ [0, 1),
+/// 2^f = e^{f ln 2} by its series to the 8th power (the next term is below 2e-7), 2^n by the
+/// exponent's bits. n is y rounded by the 2⁵² trick, less one where that rounded up: no
+/// `floor` (a libm call on the baseline target).
 #[inline(always)]
-fn exp2_quick(y: f64) -> f64 {
-    if y.is_nan() || y.abs() > 1000.0 {
-        return y.exp2();
-    }
-    let n = y.floor();
+fn exp2_core(y: f64) -> f64 {
+    let rounded = (y + 1.5 * TWO_52) - 1.5 * TWO_52;
+    let n = if rounded > y { rounded - 1.0 } else { rounded };
     let z = (y - n) * std::f64::consts::LN_2;
     let mut sum = 1.0 / 40320.0;
     for k in (0..8).rev() {
         sum = sum * z + 1.0 / FACTORIALS[k];
     }
-    // |n| ≤ 1000: a normal power of two
-    sum * f64::from_bits(((n + 1023.0) as u64) << 52)
+    // n + 1023 ∈ [23, 2023]: its bits above 2⁵² are the biased exponent of 2^n
+    let biased = ((n + 1023.0) + TWO_52).to_bits() & 0x7ff;
+    sum * f64::from_bits(biased << 52)
 }
 
 /// k! for k < 8.
@@ -185,9 +204,13 @@ pub(super) fn root_quick<const L: usize>(c: &[f64; L], target: f64, end: f64) ->
 /// Σ c_k h^k by Estrin's scheme: the pairs c_{2i} + c_{2i+1} h, then the pairs of those with
 /// h², and so on: ⌈log₂ L⌉ dependent steps instead of Horner's L − 1. Its rounding is
 /// bounded as Horner's (both sum the same products, each with at most ⌈log₂ L⌉ or L
-/// roundings), and tests/taylor.rs holds the answers it gives to the references.
+/// roundings), and tests/taylor.rs holds the answers it gives to the references. Generic so
+/// that `super::batch`'s lanes run its operations in its order (the same bits).
 #[inline(always)]
-pub(super) fn eval_estrin<const L: usize>(c: &[f64; L], h: f64) -> f64 {
+pub(super) fn eval_estrin<T, const L: usize>(c: &[T; L], h: T) -> T
+where
+    T: Copy + std::ops::Add<Output = T> + std::ops::Mul<Output = T>,
+{
     let mut b = *c;
     let (mut n, mut x) = (L, h);
     while n > 1 {
