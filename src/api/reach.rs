@@ -131,13 +131,39 @@ pub(super) fn cell_indentation(spec: &crate::map::MapSpec) -> impl Fn(f64) -> f6
     move |f| contact.loading_indentation(f / (k_p * length)) * length
 }
 
+/// A map cell's centre against the radius: whether it passes R, whether by α alone (its
+/// z_m within R), or why it could not be read (its impact run again did not answer).
+#[derive(Default)]
+struct Tally {
+    /// Cells whose centre passes R (those whose indentation passes too: α ≥ z).
+    past: usize,
+    /// Of those, the cells whose indentation stays within R.
+    alone: usize,
+    /// Cells the bounds left open whose run again failed: neither within nor past.
+    unchecked: usize,
+    /// The first of their errors, to name a cell.
+    error: Option<String>,
+}
+
+impl Tally {
+    fn add(mut self, other: Tally) -> Tally {
+        self.past += other.past;
+        self.alone += other.alone;
+        self.unchecked += other.unchecked;
+        self.error = self.error.or(other.error);
+        self
+    }
+}
+
 /// The cells of a dimensional `map` whose ball's centre passes `radius` (m) while their peak
 /// indentation does not ([`super::map_indentation_warning`] names those): a cell past by its
 /// lower bound is counted, one within by its upper bound left (`bounds`), and every other
 /// read exactly ([`peak_displacement`], the cell's impact again with its flow, on all cores).
 /// One warning, when some cell passes by its centre alone, naming how many cells the centre
 /// passes in (those whose indentation passes too: α ≥ z) and how many of them by it alone;
-/// `None` otherwise, for a normalized map, or with no radius known (NaN). tests/answer_reach.rs.
+/// a cell whose run again fails is neither: the warning counts it as not checked (and is
+/// given for it alone), so no cell passes silently. `None` otherwise, for a normalized map,
+/// or with no radius known (NaN). tests/answer_reach.rs.
 pub fn map_displacement_warning(map: &Map, radius: f64) -> Option<String> {
     use rayon::prelude::*;
     let spec = &map.spec;
@@ -151,20 +177,31 @@ pub fn map_displacement_warning(map: &Map, radius: f64) -> Option<String> {
     };
     let zetas = map.zetas.len();
     let at = |k: usize| spec.params_at(map.lambdas[k / zetas], map.zetas[k % zetas]);
-    // (whether the centre passes R, whether by α alone: z_m within R); α ≥ z, so a z_m past
-    // R passes too
-    let past = |(k, c): (usize, Cell)| -> (bool, bool) {
+    let read = |(k, c): (usize, Cell)| -> Tally {
         let z = z_m(c.max_force);
         if !z.is_finite() || z > radius {
-            return (z.is_finite(), false);
+            // α ≥ z: a z_m past R passes too
+            let past = usize::from(z.is_finite());
+            return Tally { past, ..Tally::default() };
         }
         let cell = at(k);
         let t_f = c.contact_time.unwrap_or(f64::INFINITY);
         let (lo, hi) = bounds(&cell, z, c.max_force, t_f);
-        let alone = lo > radius
-            || (hi > radius
-                && peak_displacement(&cell, spec.law, method).is_ok_and(|a| a > radius));
-        (alone, alone)
+        let alone = if lo > radius {
+            true
+        } else if hi <= radius {
+            false
+        } else {
+            match peak_displacement(&cell, spec.law, method) {
+                Ok(a) => a > radius,
+                Err(e) => {
+                    let error = Some(e.to_string());
+                    return Tally { unchecked: 1, error, ..Tally::default() };
+                }
+            }
+        };
+        let n = usize::from(alone);
+        Tally { past: n, alone: n, ..Tally::default() }
     };
     let cells: Vec<(usize, Cell)> = map
         .cells()
@@ -172,20 +209,35 @@ pub fn map_displacement_warning(map: &Map, radius: f64) -> Option<String> {
         .enumerate()
         .filter_map(|(k, c)| c.map(|c| (k, c)))
         .collect();
-    let (count, alone) = cells
+    let tally = cells
         .into_par_iter()
-        .map(past)
-        .map(|(p, a)| (usize::from(p), usize::from(a)))
-        .reduce(|| (0, 0), |x, y| (x.0 + y.0, x.1 + y.1));
-    (alone > 0).then(|| {
+        .map(read)
+        .reduce(Tally::default, Tally::add);
+    map_reach_text(&tally, radius, map.cells().len())
+}
+
+/// The map's centre warning from its `tally` over `total` cells (`map_displacement_warning`).
+fn map_reach_text(tally: &Tally, radius: f64, total: usize) -> Option<String> {
+    let r = sig(radius * 1e3, 4);
+    let unchecked = (tally.unchecked > 0).then(|| {
         format!(
-            "peak displacement of the ball's centre exceeds the ball's radius {} mm in {} of {} \
+            "in {} of {} cells the peak displacement of the ball's centre could not be checked \
+             against the ball's radius {r} mm (the cell's impact run again gave no answer: {})",
+            tally.unchecked,
+            total,
+            tally.error.as_deref().unwrap_or("")
+        )
+    });
+    let past = (tally.alone > 0).then(|| {
+        format!(
+            "peak displacement of the ball's centre exceeds the ball's radius {r} mm in {} of {} \
              cells, {} of them with the peak indentation within it: outside the model's range \
              there (the model assumes a deformation small against the ball)",
-            sig(radius * 1e3, 4),
-            count,
-            map.cells().len(),
-            alone
+            tally.past, total, tally.alone
         )
-    })
+    });
+    match (past, unchecked) {
+        (Some(p), Some(u)) => Some(format!("{p}; {u}")),
+        (p, u) => p.or(u),
+    }
 }
