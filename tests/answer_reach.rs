@@ -275,7 +275,10 @@ fn the_map_counts_cells_it_could_not_check_not_as_within() {
         .map(|(l, z)| {
             let p = spec.params_at(l, z);
             let r = simulate(&p, law, &SolveOptions::default()).unwrap();
-            (r.max_indentation, api::peak_displacement(&p, law, Method::Exact).unwrap())
+            (
+                r.max_indentation,
+                api::peak_displacement(&p, law, Method::Exact).unwrap(),
+            )
         })
         .collect();
     map.spec.base.k_h = f64::NAN;
@@ -294,7 +297,10 @@ fn the_map_counts_cells_it_could_not_check_not_as_within() {
         let w = api::map_displacement_warning(&map, radius).expect("a warning");
         let unchecked = if w.contains("could not be checked") {
             assert!(w.contains("invalid k_h"), "R {radius}: {w}");
-            number(&w, " of 81 cells the peak displacement of the ball's centre could not")
+            number(
+                &w,
+                " of 81 cells the peak displacement of the ball's centre could not",
+            )
         } else {
             0
         };
@@ -305,7 +311,10 @@ fn the_map_counts_cells_it_could_not_check_not_as_within() {
         };
         unchecked_seen |= unchecked > 0;
         // every cell past R by its centre alone is told past or told not checked
-        assert!(told <= alone && alone <= told + unchecked, "R {radius}: {alone} in {w}");
+        assert!(
+            told <= alone && alone <= told + unchecked,
+            "R {radius}: {alone} in {w}"
+        );
     }
     assert!(unchecked_seen, "no radius left a cell to its run again");
 }

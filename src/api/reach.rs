@@ -182,7 +182,10 @@ pub fn map_displacement_warning(map: &Map, radius: f64) -> Option<String> {
         if !z.is_finite() || z > radius {
             // α ≥ z: a z_m past R passes too
             let past = usize::from(z.is_finite());
-            return Tally { past, ..Tally::default() };
+            return Tally {
+                past,
+                ..Tally::default()
+            };
         }
         let cell = at(k);
         let t_f = c.contact_time.unwrap_or(f64::INFINITY);
@@ -196,12 +199,20 @@ pub fn map_displacement_warning(map: &Map, radius: f64) -> Option<String> {
                 Ok(a) => a > radius,
                 Err(e) => {
                     let error = Some(e.to_string());
-                    return Tally { unchecked: 1, error, ..Tally::default() };
+                    return Tally {
+                        unchecked: 1,
+                        error,
+                        ..Tally::default()
+                    };
                 }
             }
         };
         let n = usize::from(alone);
-        Tally { past: n, alone: n, ..Tally::default() }
+        Tally {
+            past: n,
+            alone: n,
+            ..Tally::default()
+        }
     };
     let cells: Vec<(usize, Cell)> = map
         .cells()
