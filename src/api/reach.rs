@@ -73,11 +73,42 @@ pub fn reach_warning(
     duration: f64,
     radius: f64,
 ) -> Option<String> {
+    Some(match reach(params, law, method, z_m, duration, radius)? {
+        Reach::Indentation(z_m) => indentation_warning(z_m, radius)?,
+        Reach::Displacement(alpha) => displacement_warning(alpha, radius)?,
+        Reach::Unchecked(e) => {
+            format!("the ball's peak displacement could not be checked against its radius: {e}")
+        }
+    })
+}
+
+/// How an impact reaches past the ball's radius ([`reach`]).
+#[derive(Debug, Clone, PartialEq)]
+pub enum Reach {
+    /// Its peak indentation z_m (m) passes the radius (and so does its centre: α ≥ z).
+    Indentation(f64),
+    /// Its centre's peak displacement α_max (m) passes the radius, z_m within it.
+    Displacement(f64),
+    /// z_m is within the radius, and the run again for α_max gave no answer.
+    Unchecked(BallError),
+}
+
+/// Whether an impact reaches past the ball's `radius` (m), and how: [`reach_warning`]'s
+/// test, for a caller that words it its own way (a figure's note, `figure::history`).
+/// `None` within, or with no radius known (NaN).
+pub fn reach(
+    params: &ImpactParams,
+    law: ContactLaw,
+    method: Method,
+    z_m: f64,
+    duration: f64,
+    radius: f64,
+) -> Option<Reach> {
     if !radius.is_finite() {
         return None;
     }
-    if let Some(w) = indentation_warning(z_m, radius) {
-        return Some(w);
+    if z_m > radius {
+        return Some(Reach::Indentation(z_m));
     }
     // α_max ≤ min(v0 t_f, z_m + m v0/c) (`bounds`): within R, no second run
     let momentum = params.mass * params.v0;
@@ -85,10 +116,8 @@ pub fn reach_warning(
         return None;
     }
     match peak_displacement(params, law, method) {
-        Ok(alpha) => displacement_warning(alpha, radius),
-        Err(e) => Some(format!(
-            "the ball's peak displacement could not be checked against its radius: {e}"
-        )),
+        Ok(alpha) => (alpha > radius).then_some(Reach::Displacement(alpha)),
+        Err(e) => Some(Reach::Unchecked(e)),
     }
 }
 

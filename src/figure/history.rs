@@ -66,11 +66,55 @@ pub fn force_time(ball: &Ball, r: &ImpactResponse) -> Figure {
             );
         }
     }
-    Figure {
+    let mut fig = Figure {
         series,
         ..frame(false, ball)
+    };
+    push_radius_note(&mut fig, ball, r);
+    fig
+}
+
+/// The note of an impact `r` of `ball` past the ball's radius, as `run` warns of it
+/// (`api::reach`): "outside the model's range: z_m 31.05 mm > radius 21.55 mm" (or the
+/// centre's α_max), after a "; " the SVG may break the subtitle at. Nothing within the radius
+/// or with no radius known. tests/figure_radius.rs.
+pub fn push_radius_note(fig: &mut Figure, ball: &Ball, r: &ImpactResponse) {
+    let radius = ball.measured.as_ref().map_or(f64::NAN, |m| m.radius);
+    if let Some(note) = radius_note(&ball.params, radius, r) {
+        fig.subtitle.push_str(&format!("; {OUTSIDE}{note}"));
     }
 }
+
+/// The impact `r` of `params` past `radius` (m), in a figure's words (`api::reach`): "z_m
+/// 31.05 mm > radius 21.55 mm", "centre's α_max 34.97 mm > radius 21.55 mm"; `None` within.
+pub fn radius_note(
+    params: &crate::model::params::ImpactParams,
+    radius: f64,
+    r: &ImpactResponse,
+) -> Option<String> {
+    use crate::api::{Reach, reach};
+    let mm = |x: f64| crate::text::sig(x * 1e3, 4);
+    Some(
+        match reach(
+            params,
+            r.law,
+            r.method,
+            r.max_indentation,
+            r.duration,
+            radius,
+        )? {
+            Reach::Indentation(z) => format!("z_m {} mm > radius {} mm", mm(z), mm(radius)),
+            Reach::Displacement(a) => {
+                format!("centre's α_max {} mm > radius {} mm", mm(a), mm(radius))
+            }
+            Reach::Unchecked(_) => format!("α_max not checked against radius {} mm", mm(radius)),
+        },
+    )
+}
+
+/// How a figure's subtitle begins its note of an impact past the ball's radius
+/// ([`push_radius_note`]); a figure of several balls keeps each ball's (`cli::figure::balls`).
+pub const OUTSIDE: &str = "outside the model's range: ";
 
 /// Figs. 5–8 without data: titles and axes, for a chart whose impact could not be computed.
 /// `displacement`: force against displacement (Figs. 6, 8), else against time (5, 7).
@@ -161,6 +205,7 @@ pub fn force_displacement(ball: &Ball, r: &ImpactResponse) -> Figure {
             .push_str(&format!("; {}", flattening_note(z_m, z_p)));
     }
     fig.series = series;
+    push_radius_note(&mut fig, ball, r);
     fig
 }
 
