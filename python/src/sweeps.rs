@@ -5,7 +5,7 @@ use crate::impact::interval_columns;
 use crate::{array, error, floats, interrupt, law, preset_ball, value_error};
 use bouncelab::BallError;
 use bouncelab::api;
-use bouncelab::model::params::ImpactParams;
+use bouncelab::model::params::{ImpactParams, validate_lambda_zeta};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
@@ -30,6 +30,15 @@ pub(crate) fn sweep_zeta<'py>(
         floats(zetas, "zetas")?,
         self::law(law)?,
     );
+    // each value checked in order and named by its index, as `sweep_velocity` names a speed:
+    // the sweep's own check said "invalid zeta: -1", which names neither the argument nor
+    // the element (python/tests/test_arguments.py)
+    for (i, &l) in lambdas.iter().enumerate() {
+        validate_lambda_zeta(l, 1.0).map_err(|e| value_error(format!("lambdas[{i}]: {e}")))?;
+    }
+    for (i, &z) in zetas.iter().enumerate() {
+        validate_lambda_zeta(0.0, z).map_err(|e| value_error(format!("zetas[{i}]: {e}")))?;
+    }
     let rows = interrupt::detach_watched(py, |w| {
         bouncelab::api::sweep_zeta_watched(&lambdas, &zetas, law, w)
     })?;
