@@ -86,7 +86,8 @@ def test_every_function_has_numeric_parameters_listed():
 def test_a_bool_is_no_number(function, name):
     # run(v0=True) ran at 1.0 m/s: Python's True is the integer 1
     f = getattr(bouncelab, function)
-    with pytest.raises(TypeError, match=f"^invalid {name}: True \\(expected a number, not a bool\\)$"):
+    whole = f"^invalid {name}: True \\(expected a number, not a bool\\)$"
+    with pytest.raises(TypeError, match=whole):
         f(**{name: True})
     with pytest.raises(TypeError, match=f"^invalid {name}\\[1\\]: False \\(expected a number"):
         f(**{name: [1.0, False]})
