@@ -88,4 +88,6 @@ fn a_fit_plot_past_the_radius_says_so() {
         s.contains("outside the model's range at v0 = 45 m/s: z_m 32.84 mm &gt; radius 21.55 mm"),
         "{s}"
     );
+    // the residuals' axis description clear of their tick labels ("-0.0005")
+    assert!(collisions(&s).is_empty(), "{:?}", collisions(&s));
 }
