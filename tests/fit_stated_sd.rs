@@ -4,6 +4,7 @@
 //! interval is exp(θ ± 1.96 s_θ) (docs/fitting.md). Before, the scatter rescaled it: CORs the
 //! model met exactly gave no interval although the stated sds give one.
 
+mod common;
 mod seeded;
 
 use bouncelab::analysis::fit::{FitData, MultiFit, Param, fit};
@@ -114,4 +115,42 @@ fn stated_sd_intervals_cover_the_truth() {
         (0.90..=0.99).contains(&share),
         "covered {covered} of {sets}"
     );
+}
+
+/// The report says where its intervals' scale comes from when it is not the residuals': an
+/// `rms residual 0` beside an interval read as a contradiction. Text: an `uncertainty` line;
+/// JSON: `sd_stated: true` (present only then); a table without `cor_sd` has neither.
+#[test]
+fn the_report_says_the_sds_were_taken_as_known() {
+    let dir = tempfile::tempdir().unwrap();
+    let rows = "v0,cor,cor_sd\n1,0.75,0.01\n2,0.75,0.01\n3,0.75,0.01\n4,0.75,0.01\n";
+    std::fs::write(dir.path().join("sd.csv"), rows).unwrap();
+    std::fs::write(
+        dir.path().join("no.csv"),
+        "v0,cor\n1,0.75\n2,0.751\n3,0.749\n",
+    )
+    .unwrap();
+    let fit = |file: &str, tail: &[&str]| {
+        let args = [
+            "fit",
+            "--preset",
+            "superball",
+            "--cor-table",
+            file,
+            "--free",
+            "k_r",
+        ];
+        common::ok_at(dir.path(), &[&args[..], tail].concat())
+    };
+    let text = fit("sd.csv", &[]);
+    assert!(text.contains("  rms residual             0 (COR)\n  uncertainty              from each row's cor_sd, taken as known"), "{text}");
+    assert!(!text.contains("exact"), "{text}");
+    let json: serde_json::Value =
+        serde_json::from_str(&fit("sd.csv", &["--format", "json"])).unwrap();
+    assert_eq!(json["sd_stated"], true, "{json}");
+    assert!(json["fitted"]["k_r"]["ci95"][0].is_f64(), "{json}");
+    assert!(!fit("no.csv", &[]).contains("uncertainty"));
+    let json: serde_json::Value =
+        serde_json::from_str(&fit("no.csv", &["--format", "json"])).unwrap();
+    assert!(json.get("sd_stated").is_none(), "{json}");
 }

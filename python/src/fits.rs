@@ -160,6 +160,9 @@ fn report<'py>(
         lack.set_item("p_value", t.p_value)?;
         d.set_item("lack_of_fit", lack)?;
     }
+    if f.stated_sd {
+        d.set_item("sd_stated", true)?;
+    }
     if f.exact() {
         d.set_item("exact", true)?;
     }

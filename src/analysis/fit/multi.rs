@@ -374,6 +374,7 @@ fn finish(
         not_pinned,
         on_bound,
         no_scatter,
+        stated_sd: stated,
         lack_of_fit: None,
     })
 }
