@@ -153,4 +153,27 @@ fn the_report_says_the_sds_were_taken_as_known() {
     let json: serde_json::Value =
         serde_json::from_str(&fit("no.csv", &["--format", "json"])).unwrap();
     assert!(json.get("sd_stated").is_none(), "{json}");
+    // drop tests name the option the user gave, not a column they never wrote
+    let drops = common::ok_at(
+        dir.path(),
+        &[
+            "fit",
+            "--preset",
+            "superball",
+            "--drop-height",
+            "0.5",
+            "--rebound-height",
+            "0.4",
+            "--drop-height",
+            "1",
+            "--rebound-height",
+            "0.78",
+            "--rebound-height-sd",
+            "0.003",
+            "--free",
+            "k_r",
+        ],
+    );
+    let from = "uncertainty              from the stated reading σ_R (--rebound-height-sd)";
+    assert!(drops.contains(from), "{drops}");
 }

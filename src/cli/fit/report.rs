@@ -335,7 +335,13 @@ pub fn text(
     // the intervals' scale where it is not the residuals' scatter (an rms of 0 beside an
     // interval would read as a contradiction)
     if f.stated_sd {
-        let from = "from each row's cor_sd, taken as known (not the residuals' scatter)";
+        // drops: their sds are σ_R ∂e/∂R, from --rebound-height-sd, which the user gave
+        let from = if data.drops.is_empty() {
+            "from each row's cor_sd, taken as known (not the residuals' scatter)"
+        } else {
+            "from the stated reading σ_R (--rebound-height-sd), taken as known (not the \
+             residuals' scatter)"
+        };
         rows.insert(2, vec!["uncertainty".into(), from.into()]);
     }
     table(out, "  ", &rows)?;
