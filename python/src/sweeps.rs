@@ -98,16 +98,15 @@ pub(crate) fn sweep_velocity<'py>(
     d.set_item("contact_time", col(|r| none_as_nan(r.contact_time)))?;
     d.set_item("permanent_indentation", col(|r| r.permanent_indentation))?;
     // what `sweep velocity --format json` adds to the CSV's columns: each row's peak
-    // indentation and its warnings (one list a row: an indentation past the ball's radius)
+    // indentation and its warnings (one list a row: an indentation or the centre past the
+    // ball's radius, `Ball::velocity_row_warning`, the command line's; the centre's was
+    // missing here: python/tests/test_arguments.py)
     d.set_item("max_indentation", col(|r| r.max_indentation))?;
-    let warnings: Vec<Vec<String>> = rows
-        .iter()
-        .map(|r| {
-            api::indentation_warning(r.max_indentation, ball.radius())
-                .into_iter()
-                .collect()
-        })
-        .collect();
+    let warnings: Vec<Vec<String>> = py.detach(|| {
+        rows.iter()
+            .map(|r| ball.velocity_row_warning(r).into_iter().collect())
+            .collect()
+    });
     d.set_item("warnings", warnings)?;
     // a fitted preset's 95 % intervals at each speed (docs/fitting.md), as the CSV's columns
     if let Some(fit) = ball.fit.as_ref().filter(|f| api::holds(&ball.params, f)) {

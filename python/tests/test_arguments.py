@@ -231,6 +231,17 @@ def test_sweep_velocity_carries_each_rows_warnings():
     assert list(d["max_indentation"]) == pytest.approx([r["max_indentation"] for r in rows])
 
 
+def test_sweep_velocity_warns_of_the_centre_as_the_cli_does():
+    # the softball's default sweep (to 3 × 26.82 m/s): from 72.6 m/s its centre passes the
+    # radius while its indentation does not; the command line's rows said so, the dict's
+    # warnings checked the indentation alone and were empty
+    d = bouncelab.sweep_velocity("softball")
+    rows = cli_json("sweep", "velocity", "--preset", "softball", "--format", "json")["rows"]
+    assert d["warnings"] == [r["warnings"] for r in rows]
+    centre = "peak displacement of the ball's centre"
+    assert any(centre in w for ws in d["warnings"] for w in ws), d["warnings"]
+
+
 def test_collide_oblique_and_monte_carlo_carry_the_command_lines_warnings():
     # a table-tennis ball at 100 m/s: 23 mm into a 20 mm ball; the objects had no warnings
     beyond = "exceeds the ball's radius 20.00 mm"
