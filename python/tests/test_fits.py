@@ -231,3 +231,14 @@ def test_a_fit_without_an_answer_says_so():
     assert len(fit["not_pinned"]) == 1 and fit["not_pinned"][0] in ("k_r", "z_p")
     one = bouncelab.fit_drops(np.ones(40), rebound, preset="tennis", free=["k_r"])
     assert one["identified"] is True and one["not_pinned"] == []
+
+
+def test_the_fitted_balls_warnings_are_the_clis(tmp_path):
+    # the superball fitted to e = 0.6 at 45 m/s presses 32.8 mm into its 21.55 mm radius:
+    # `bouncelab fit` warned of it, the dict's warnings were empty
+    f = bouncelab.fit_cor_table([40.0, 45.0], [0.62, 0.6], preset="superball", free="k_r")
+    (tmp_path / "c.csv").write_text("v0,cor\n40,0.62\n45,0.6\n")
+    args = ["--preset", "superball", "--cor-table", str(tmp_path / "c.csv"), "--free", "k_r"]
+    cli = cli_json("fit", *args, "--format", "json")
+    assert f["warnings"] == cli["warnings"]
+    assert any(w.startswith("the fitted ball at v0 = 45 m/s") for w in f["warnings"]), f
