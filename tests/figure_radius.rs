@@ -91,3 +91,43 @@ fn a_fit_plot_past_the_radius_says_so() {
     // the residuals' axis description clear of their tick labels ("-0.0005")
     assert!(collisions(&s).is_empty(), "{:?}", collisions(&s));
 }
+
+/// `figure cor-velocity` up to 45 m/s: the superball's centre passes its radius from
+/// 24.56 m/s (the first of the curve's speeds past it), before its indentation does, as
+/// `sweep velocity` warns of each row; the default range (to z_m = 3 z_p) stays within. With
+/// several balls, the note is named.
+#[test]
+fn a_speed_figure_past_the_radius_says_from_where() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let past = "outside the model&apos;s range from v0 = 24.56 m/s: centre&apos;s α_max 21.66 mm \
+                &gt; radius 21.55 mm";
+    let s = svg(
+        d,
+        &[
+            "figure",
+            "cor-velocity",
+            "--preset",
+            "superball",
+            "--to",
+            "45",
+        ],
+    );
+    assert!(s.contains(past), "{s}");
+    let s = svg(d, &["figure", "cor-velocity", "--preset", "superball"]);
+    assert!(!s.contains("outside the model"), "{s}");
+    let s = svg(
+        d,
+        &[
+            "figure",
+            "cor-velocity",
+            "--preset",
+            "superball",
+            "--preset",
+            "golf",
+            "--to",
+            "45",
+        ],
+    );
+    assert!(s.contains(&format!("superball {past}")), "{s}");
+}

@@ -125,8 +125,8 @@ pub fn combine(mut figs: Vec<(String, Figure)>) -> Figure {
         .flat_map(|(name, f)| {
             f.subtitle
                 .split("; ")
-                .filter_map(|p| p.strip_prefix(OUTSIDE))
-                .map(move |n| format!("; {name} {OUTSIDE}{n}"))
+                .filter(|p| p.starts_with(OUTSIDE.trim_end_matches(": ")))
+                .map(move |n| format!("; {name} {n}"))
         })
         .collect();
     out.subtitle = common + &notes;
