@@ -247,3 +247,74 @@ fn the_map_counts_the_cells_whose_centre_passes_the_radius() {
         );
     }
 }
+
+/// A map cell whose impact, run again for its centre, gives no answer is "not checked", never
+/// "within": the warning counts such cells, so none passes silently (the old count read a
+/// failed run as within R). No real cell was found to fail (every cell of the three laws over
+/// λ, ζ 1e-4 … 1e4 at 1, 10 and 60 m/s re-solves), so the run is made to fail: the map's
+/// base K_h is spoilt after its cells were computed. The linear law never reads K_h (not in
+/// its cells, their z_m from F_m, nor the bounds), so every cell and bound stays as computed,
+/// while the run again refuses the parameters (`ImpactParams::validate`: invalid k_h).
+#[test]
+fn the_map_counts_cells_it_could_not_check_not_as_within() {
+    use bouncelab::map::{Axis, MapSpec, Param, Scale, compute};
+    let law = ContactLaw::Linear;
+    let base = Ball::from_preset("superball").unwrap().params;
+    let spec = MapSpec::dimensional(
+        base,
+        law,
+        Axis::new(Param::Lambda, 1e-4, 10.0, 9, Scale::Log).unwrap(),
+        Axis::new(Param::Zeta, 0.01, 100.0, 9, Scale::Log).unwrap(),
+    )
+    .unwrap();
+    let mut map = compute(spec.clone());
+    let exact: Vec<(f64, f64)> = map
+        .lambdas
+        .iter()
+        .flat_map(|&l| map.zetas.iter().map(move |&z| (l, z)))
+        .map(|(l, z)| {
+            let p = spec.params_at(l, z);
+            let r = simulate(&p, law, &SolveOptions::default()).unwrap();
+            (
+                r.max_indentation,
+                api::peak_displacement(&p, law, Method::Exact).unwrap(),
+            )
+        })
+        .collect();
+    map.spec.base.k_h = f64::NAN;
+    let mut alphas: Vec<f64> = exact.iter().map(|e| e.1).collect();
+    alphas.sort_by(f64::total_cmp);
+    let number = |w: &str, before: &str| -> usize {
+        let head = &w[..w.find(before).unwrap()];
+        head.rsplit(' ').next().unwrap().parse().unwrap()
+    };
+    let mut unchecked_seen = false;
+    for radius in [alphas[20], alphas[40] * 1.000_001, alphas[60]] {
+        let alone = exact
+            .iter()
+            .filter(|(z, a)| *z <= radius && *a > radius)
+            .count();
+        let w = api::map_displacement_warning(&map, radius).expect("a warning");
+        let unchecked = if w.contains("could not be checked") {
+            assert!(w.contains("invalid k_h"), "R {radius}: {w}");
+            number(
+                &w,
+                " of 81 cells the peak displacement of the ball's centre could not",
+            )
+        } else {
+            0
+        };
+        let told = if w.starts_with("peak displacement") {
+            number(&w, " of them with the peak indentation within it")
+        } else {
+            0
+        };
+        unchecked_seen |= unchecked > 0;
+        // every cell past R by its centre alone is told past or told not checked
+        assert!(
+            told <= alone && alone <= told + unchecked,
+            "R {radius}: {alone} in {w}"
+        );
+    }
+    assert!(unchecked_seen, "no radius left a cell to its run again");
+}

@@ -368,3 +368,64 @@ fn a_batch_of_one_ball_reads_as_one() {
         "bouncelab: error: the ball has no verdict: its row says why\n"
     );
 }
+
+/// A ball's fit warns in a batch as `bouncelab fit` warns of it: the fitted superball that
+/// gives e = 0.6 at 45 m/s presses 33 mm into a ball of radius 21.55 mm at that speed
+/// (`Ball::fitted_warnings`), and the batch once left that out of the ball's warnings.
+#[test]
+fn a_ball_s_warnings_hold_its_fitted_ball_past_the_radius() {
+    let dir = tempfile::tempdir().unwrap();
+    write(
+        dir.path(),
+        "lot.csv",
+        "id,v0,cor\nS1,45,0.6\nS2,3,0.73\nS2,3.12,0.7302\n",
+    );
+    write(dir.path(), "s1.csv", "v0,cor\n45,0.6\n");
+    let batch = [
+        "batch",
+        "lot.csv",
+        "--preset",
+        "superball",
+        "--standard",
+        "mlb",
+    ];
+    let free = ["--free", "k_r"];
+    let args = |tail: &[&'static str]| -> Vec<&'static str> {
+        batch.iter().chain(&free).chain(tail).copied().collect()
+    };
+    let r: Value = serde_json::from_str(&ok_at(dir.path(), &args(&["--format", "json"]))).unwrap();
+    let fit: Value = serde_json::from_str(&ok_at(
+        dir.path(),
+        &[
+            "fit",
+            "--preset",
+            "superball",
+            "--cor-table",
+            "s1.csv",
+            "--format",
+            "json",
+        ],
+    ))
+    .unwrap();
+    let past = fit["warnings"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|w| {
+            w.as_str()
+                .unwrap()
+                .starts_with("the fitted ball at v0 = 45 m/s: peak indentation")
+        })
+        .expect("fit warns of the indentation");
+    assert!(
+        r["balls"][0]["warnings"].as_array().unwrap().contains(past),
+        "{}",
+        r["balls"][0]
+    );
+    assert_eq!(r["balls"][1]["warnings"], serde_json::json!([]));
+    let text = ok_at(dir.path(), &args(&[]));
+    assert!(text.contains("\nballs whose fit warns: 1 ("), "{text}");
+    assert!(!text.contains("1 balls"), "{text}");
+    let csv = ok_at(dir.path(), &args(&["--format", "csv"]));
+    assert!(csv.contains(past.as_str().unwrap()), "{csv}");
+}

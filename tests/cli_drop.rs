@@ -75,6 +75,43 @@ fn json_holds_the_issues_keys_and_the_verdict() {
     // the verdict measures the first bounce of this very drop (same height, same air)
     assert_eq!(f(s, "measured"), f(&bounces[0], "rebound_height"));
     assert!((f(s, "margin") - 0.06).abs() < 1e-5);
+    assert_eq!(f(s, "judged_at_height_m"), 2.54, "the standard's own drop");
+}
+
+/// A drop from another height is judged on the standard's own: the text said so and the JSON
+/// did not (its `measured` read as the first bounce's of the drop above). Now
+/// `standard.judged_at_height_m` gives the height judged at, beside `height`; a COR test has
+/// none (`null`).
+#[test]
+fn json_says_the_verdict_is_judged_at_the_standard_s_height() {
+    let v = json(&[
+        "drop",
+        "--preset",
+        "tennis",
+        "--standard",
+        "itf",
+        "--height",
+        "1",
+        "--format",
+        "json",
+    ]);
+    assert_eq!(f(&v, "height"), 1.0);
+    let s = &v["standard"];
+    assert_eq!(f(s, "judged_at_height_m"), 2.54, "{v}");
+    assert!(
+        f(s, "measured") > f(&v["bounces"][0], "rebound_height"),
+        "{v}"
+    );
+    let v = json(&[
+        "drop",
+        "--preset",
+        "softball",
+        "--standard",
+        "softball-47",
+        "--format",
+        "json",
+    ]);
+    assert!(v["standard"]["judged_at_height_m"].is_null(), "{v}");
 }
 
 #[test]

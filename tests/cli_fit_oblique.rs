@@ -133,3 +133,89 @@ fn a_bad_file_is_one_line_exit_2() {
         &["--oblique", "--free"],
     );
 }
+
+fn bounces_at(mu: f64, kt: f64, cases: &[(f64, f64, f64)]) -> String {
+    let ball = Ball::from_preset("tennis").unwrap();
+    let mut csv = String::from("v0,angle_deg,spin_in,vx_out,vy_out\n");
+    for &(v0, angle, spin) in cases {
+        let o = Oblique::new(angle, spin, mu, kt, 0.6105, 0.0335).unwrap();
+        let r = oblique::solve_law(&ball.params, ContactLaw::Linear, v0, &o, 0).unwrap();
+        csv += &format!("{v0},{angle},{spin},{},{}\n", r.vx_out, r.vy_out);
+    }
+    csv
+}
+
+/// Bounces the model meets to the last bit leave no scatter to estimate an interval from: the
+/// report said `± 5e-17` and an interval `0.5500 … 0.5500`, where `fit --cor-table` says
+/// "exact: no scatter" (tests/cli_fit_reports.rs). The tennis ball's bounces at μ 0.55 and
+/// Mindlin's K_t, written as the model gives them, fit to within 1.6e-15 m/s; written again at
+/// the values that fit returns (the same model run on the fit's own bits), every residual is
+/// zero.
+#[test]
+fn bounces_the_model_meets_exactly_leave_no_scatter() {
+    let ball = Ball::from_preset("tennis").unwrap();
+    let (mut mu, mut kt) = (0.55, mindlin_ratio(0.5) * ball.params.k_p);
+    let mut csv = bounces_at(mu, kt, &mixed());
+    for _ in 0..4 {
+        let rows = bouncelab::measured::parse_oblique(&csv).unwrap();
+        let r = ball
+            .fit_oblique_watched(&rows, None, &bouncelab::analysis::work::Unwatched)
+            .unwrap();
+        if r.rms_vx == 0.0 {
+            break;
+        }
+        (mu, kt) = (r.friction, r.tangential_stiffness);
+        csv = bounces_at(mu, kt, &mixed());
+    }
+    let (_dir, path) = write(&csv);
+    let args = ["fit", "--preset", "tennis", "--oblique", &path];
+    let o = bl(&[&args[..], &["--format", "json"]].concat());
+    assert_eq!(o.code, 0, "{}", o.stderr);
+    let v: Value = serde_json::from_str(&o.stdout).unwrap();
+    assert_eq!(f(&v, "rms_vx"), 0.0, "no exact fixed point found: {v}");
+    for name in ["friction", "tangential_stiffness"] {
+        let e = &v["fitted"][name];
+        assert!(e["std_error"].is_null(), "{name}: {v}");
+        assert!(
+            e["ci95"][0].is_null() && e["ci95"][1].is_null(),
+            "{name}: {v}"
+        );
+    }
+    assert_eq!(v["exact"], true, "{v}");
+    assert_eq!(v["identified"], true, "the values are determined: {v}");
+    assert!(
+        v["warnings"][0]
+            .as_str()
+            .unwrap()
+            .contains("no scatter to estimate"),
+        "{v}"
+    );
+    let text = bl(&args);
+    assert_eq!(text.code, 0, "{}", text.stderr);
+    assert!(
+        text.stdout
+            .contains("exact: no scatter to estimate it from"),
+        "{}",
+        text.stdout
+    );
+    assert!(!text.stdout.contains("0.5500 … 0.5500"), "{}", text.stdout);
+    assert!(
+        text.stdout.contains("warning: the residuals are all zero"),
+        "{}",
+        text.stdout
+    );
+    // noisy bounces keep their intervals, and no `exact` key
+    let (_dir, path) = write(&bounces(0.55, &mixed(), 0.02));
+    let o = bl(&[
+        "fit",
+        "--preset",
+        "tennis",
+        "--oblique",
+        &path,
+        "--format",
+        "json",
+    ]);
+    let v: Value = serde_json::from_str(&o.stdout).unwrap();
+    assert!(v.get("exact").is_none(), "{v}");
+    assert!(f(&v["fitted"]["friction"], "std_error") > 0.0, "{v}");
+}

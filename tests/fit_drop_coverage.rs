@@ -83,9 +83,12 @@ fn drop_intervals_cover_the_truth() {
     }
 }
 
-/// The weights, and so the fit, do not depend on the precision's value: given or not, and
-/// whatever σ_R, the same estimates and intervals (the covariance takes its scale s² from the
-/// misses); only the lack-of-fit test differs — χ² where σ_R is given.
+/// The weights, and so the estimates, do not depend on the precision's value: given or not,
+/// and whatever σ_R, the same values. The intervals do: unknown, the covariance takes its
+/// scale s² from the misses; given, the stated σ_R is taken as known (`Spread::Stated`, as
+/// SciPy's `absolute_sigma=True`), so ten times σ_R gives an interval ten times as wide in
+/// ln p (it once gave the same interval whatever σ_R: tests/fit_stated_sd.rs). The
+/// lack-of-fit test differs too — χ² where σ_R is given.
 #[test]
 fn the_reading_precision_scales_out_of_the_estimates() {
     let t = truth();
@@ -93,14 +96,20 @@ fn the_reading_precision_scales_out_of_the_estimates() {
     let a = fit_drops(&t, &pairs, None);
     let b = fit_drops(&t, &pairs, Some(READ_SD));
     let c = fit_drops(&t, &pairs, Some(10.0 * READ_SD));
+    let half = |e: &bouncelab::analysis::fit::Estimate| (e.ci95[1] / e.ci95[0]).ln() / 2.0;
     for (x, y) in [(&a, &b), (&b, &c)] {
         for j in 0..2 {
             let (p, q) = (&x.fitted[j], &y.fitted[j]);
             assert!((p.value / q.value - 1.0).abs() < 1e-6, "{p:?} {q:?}");
-            for k in 0..2 {
-                assert!((p.ci95[k] / q.ci95[k] - 1.0).abs() < 1e-6, "{p:?} {q:?}");
-            }
         }
+    }
+    for j in 0..2 {
+        let (p, q) = (&b.fitted[j], &c.fitted[j]);
+        assert!((half(q) / half(p) / 10.0 - 1.0).abs() < 1e-6, "{p:?} {q:?}");
+        assert!(
+            (q.std_error / p.std_error / 10.0 - 1.0).abs() < 1e-6,
+            "{p:?} {q:?}"
+        );
     }
     let test = |f: &MultiFit| f.lack_of_fit.as_ref().map(|l| l.test);
     assert_eq!(test(&b), Some("chi2"));

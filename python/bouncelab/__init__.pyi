@@ -230,6 +230,7 @@ class MultiFit(TypedDict, total=False):
     on_bound: list[str]
     lack_of_fit: Optional[LackOfFit]
     exact: bool
+    sd_stated: bool
     v0: float
     target_cor: float
     cor: float
@@ -290,7 +291,10 @@ class ObliqueEstimate(TypedDict):
     std_error: float
     ci95: list[float]
 
-class ObliqueFit(TypedDict):
+class _ObliqueFitSometimes(TypedDict, total=False):
+    exact: bool  # only when true: as many rows as quantities, or every residual zero
+
+class ObliqueFit(_ObliqueFitSometimes):
     """The keys of ``bouncelab fit --oblique FILE --format json`` (SI; ``file`` None for
     arrays): μ, K_t (and κ with spins) fitted, their intervals and the verdict."""
     preset: Optional[str]
@@ -369,12 +373,15 @@ def standards() -> list[Standard]:
 class DropStandard(TypedDict):
     """The verdict of ``bouncelab drop --standard NAME``: ``window`` [lo, hi] (m of rebound in
     the standard's convention, or a COR; None where the standard sets no bound), ``measured``
-    in the same units, ``margin`` the distance to the nearer bound (positive inside)."""
+    in the same units, ``margin`` the distance to the nearer bound (positive inside),
+    ``judged_at_height_m`` the standard's own drop height it was judged at (None for a COR
+    test)."""
     name: str
     window: list[Optional[float]]
     measured: float
     verdict: Literal["pass", "fail"]
     margin: float
+    judged_at_height_m: Optional[float]
 
 class _DropKeys(TypedDict):
     height: float

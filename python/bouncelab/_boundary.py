@@ -6,12 +6,19 @@
 - A number Python cannot hand to the native code (``samples=-1``, ``bounces=10**30``,
   ``v0=10**400``) raises PyO3's ``OverflowError``, whose message does not say which argument:
   it is raised again naming it, as the command line's errors do ("invalid samples: -1 …").
+- A bool where a number is meant (``run(v0=True)``, ``speeds=[3.0, True]``, an array of
+  bools) is refused with a ``TypeError`` naming the argument (and the element): Python's
+  ``True`` is the integer 1, and the native code read it as 1.0. The flags (a parameter whose
+  default is ``True`` or ``False``) take bools, and the parameters that take names or text
+  (``_TEXT``) are left to the native code's own checks.
 
-(python/tests/test_boundary.py)
+(python/tests/test_boundary.py, python/tests/test_arguments.py)
 """
 
 import functools
 import re
+
+import numpy as np
 
 _PROCESSING = re.compile(r"while processing '([^']+)'")
 
@@ -60,12 +67,59 @@ def _parameters(f):
     return [p.split("=")[0].strip(" */") for p in sig.strip("()").split(",") if p.strip()]
 
 
+# the parameters that take names, text or mappings, not numbers: a bool there is the native
+# code's to refuse
+_TEXT = {
+    "correlate",
+    "dist",
+    "file",
+    "free",
+    "law",
+    "params",
+    "preset",
+    "standard",
+    "target_preset",
+    "vary",
+}
+
+
+def _flags(f):
+    """The names of `f`'s parameters whose default is ``True`` or ``False``: bools."""
+    sig = getattr(f, "__text_signature__", None) or ""
+    parts = [p.strip(" */").split("=") for p in sig.strip("()").split(",")]
+    return {p[0].strip() for p in parts if len(p) == 2 and p[1].strip() in ("True", "False")}
+
+
+def _is_bool(x):
+    return isinstance(x, (bool, np.bool_))
+
+
+def _refuse_bools(name, value):
+    """A ``TypeError`` naming `name` (and the element) when `value` is a bool or holds one."""
+    why = "(expected a number, not a bool)"
+    if _is_bool(value):
+        raise TypeError(f"invalid {name}: {value!r} {why}")
+    if isinstance(value, np.ndarray) and value.dtype == np.bool_:
+        raise TypeError(f"invalid {name}: an array of bool {why}")
+    if isinstance(value, (list, tuple)) or (
+        isinstance(value, np.ndarray) and value.dtype == object and value.ndim == 1
+    ):
+        for i, x in enumerate(value):
+            if _is_bool(x):
+                raise TypeError(f"invalid {name}[{i}]: {x!r} {why}")
+
+
 def guard(f):
-    """`f` with the native module's panics and overflows raised as Python errors."""
+    """`f` with the native module's panics and overflows raised as Python errors, and bools
+    refused where a number is meant."""
     names = _parameters(f)
+    numeric = set(names) - _flags(f) - _TEXT
 
     @functools.wraps(f)
     def call(*args, **kwargs):
+        for name, value in [*zip(names, args), *kwargs.items()]:
+            if name in numeric:
+                _refuse_bools(name, value)
         try:
             return f(*args, **kwargs)
         except OverflowError as e:

@@ -18,7 +18,8 @@ const DEFAULT_HEIGHT: f64 = 1.0;
 /// height, else 1 m). A dict with `height`, `drag`, `bounces` (a dict of numpy arrays with the
 /// JSON's per-bounce keys, one entry a bounce), `warnings`, and with `standard` named (as
 /// `bouncelab standards` lists them), `standard`: the verdict (name, window, measured, verdict,
-/// margin) of that standard's own test in this drop's air, whatever `height` says. No standard
+/// margin, judged_at_height_m: the standard's own drop height, None for a COR test) of that
+/// standard's own test in this drop's air, whatever `height` says. No standard
 /// is judged unless named, as on the command line; a preset's own is the one whose `balls`
 /// list it in `standards()`.
 #[pyfunction(name = "drop")]
@@ -75,7 +76,10 @@ pub(crate) fn drop_test<'py>(
         let v = py
             .detach(|| s.judge(&dball, air))
             .map_err(|e| error(e.into()))?;
-        d.set_item("standard", verdict_dict(py, &v)?)?;
+        let verdict = verdict_dict(py, &v)?;
+        // the height judged at, as the command line's `judged_at_height_m` (None: a COR test)
+        verdict.set_item("judged_at_height_m", s.release_height(dball.radius))?;
+        d.set_item("standard", verdict)?;
     }
     let mut warnings = ball.drop_warnings(&run).map_err(error)?;
     // a ball fitted to drops in another air than this drop's says so, as the command line's

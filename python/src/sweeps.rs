@@ -5,7 +5,7 @@ use crate::impact::interval_columns;
 use crate::{array, error, floats, interrupt, law, preset_ball, value_error};
 use bouncelab::BallError;
 use bouncelab::api;
-use bouncelab::model::params::ImpactParams;
+use bouncelab::model::params::{ImpactParams, validate_lambda_zeta};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
@@ -30,6 +30,15 @@ pub(crate) fn sweep_zeta<'py>(
         floats(zetas, "zetas")?,
         self::law(law)?,
     );
+    // each value checked in order and named by its index, as `sweep_velocity` names a speed:
+    // the sweep's own check said "invalid zeta: -1", which names neither the argument nor
+    // the element (python/tests/test_arguments.py)
+    for (i, &l) in lambdas.iter().enumerate() {
+        validate_lambda_zeta(l, 1.0).map_err(|e| value_error(format!("lambdas[{i}]: {e}")))?;
+    }
+    for (i, &z) in zetas.iter().enumerate() {
+        validate_lambda_zeta(0.0, z).map_err(|e| value_error(format!("zetas[{i}]: {e}")))?;
+    }
     let rows = interrupt::detach_watched(py, |w| {
         bouncelab::api::sweep_zeta_watched(&lambdas, &zetas, law, w)
     })?;
@@ -89,16 +98,15 @@ pub(crate) fn sweep_velocity<'py>(
     d.set_item("contact_time", col(|r| none_as_nan(r.contact_time)))?;
     d.set_item("permanent_indentation", col(|r| r.permanent_indentation))?;
     // what `sweep velocity --format json` adds to the CSV's columns: each row's peak
-    // indentation and its warnings (one list a row: an indentation past the ball's radius)
+    // indentation and its warnings (one list a row: an indentation or the centre past the
+    // ball's radius, `Ball::velocity_row_warning`, the command line's; the centre's was
+    // missing here: python/tests/test_arguments.py)
     d.set_item("max_indentation", col(|r| r.max_indentation))?;
-    let warnings: Vec<Vec<String>> = rows
-        .iter()
-        .map(|r| {
-            api::indentation_warning(r.max_indentation, ball.radius())
-                .into_iter()
-                .collect()
-        })
-        .collect();
+    let warnings: Vec<Vec<String>> = py.detach(|| {
+        rows.iter()
+            .map(|r| ball.velocity_row_warning(r).into_iter().collect())
+            .collect()
+    });
     d.set_item("warnings", warnings)?;
     // a fitted preset's 95 % intervals at each speed (docs/fitting.md), as the CSV's columns
     if let Some(fit) = ball.fit.as_ref().filter(|f| api::holds(&ball.params, f)) {

@@ -52,9 +52,61 @@ def test_impacts_refuses_arrays_that_are_not_numbers():
         bouncelab.impacts(**{**ok, "v0": ["3"]})
     with pytest.raises(ValueError, match=r"^invalid k_r: could not convert string"):
         bouncelab.impacts(**{**ok, "k_r": np.array([1.0, "a"], dtype=object)})
-    # what numpy takes as numbers still goes: ints, bools, objects holding floats
+    # what numpy takes as numbers still goes: ints, objects holding floats; bools do not
+    # (test_a_bool_is_no_number)
     d = bouncelab.impacts(**{**ok, "m": np.array([1, 2]), "c": np.array([1.0], dtype=object)})
     assert d["cor"].shape == (2,)
+    with pytest.raises(TypeError, match=r"^invalid m: an array of bool \(expected a number"):
+        bouncelab.impacts(**{**ok, "m": np.array([True, False])})
+
+
+def _numeric_parameters():
+    """(function name, parameter) for every parameter of the package's functions that takes
+    numbers: not a flag (default True or False), not a name or text."""
+    from bouncelab._boundary import _TEXT, _flags, _parameters
+
+    for name in bouncelab.__all__:
+        f = getattr(bouncelab, name)
+        native = getattr(f, "__wrapped__", None)
+        if native is None:
+            continue
+        for p in _parameters(native):
+            if p not in _flags(native) and p not in _TEXT:
+                yield name, p
+
+
+def test_every_function_has_numeric_parameters_listed():
+    found = set(_numeric_parameters())
+    # a sample the list must hold, and a flag and a name it must not
+    assert {("run", "v0"), ("sweep_zeta", "zetas"), ("drop", "bounces")} <= found
+    assert ("run", "history") not in found and ("run", "preset") not in found
+
+
+@pytest.mark.parametrize("function, name", sorted(_numeric_parameters()))
+def test_a_bool_is_no_number(function, name):
+    # run(v0=True) ran at 1.0 m/s: Python's True is the integer 1
+    f = getattr(bouncelab, function)
+    whole = f"^invalid {name}: True \\(expected a number, not a bool\\)$"
+    with pytest.raises(TypeError, match=whole):
+        f(**{name: True})
+    with pytest.raises(TypeError, match=f"^invalid {name}\\[1\\]: False \\(expected a number"):
+        f(**{name: [1.0, False]})
+
+
+def test_flags_still_take_bools():
+    assert bouncelab.run(preset="golf", history=True).t.size > 0
+    assert bouncelab.drop(preset="tennis", bounces=1, drag=False)["drag"] is False
+
+
+def test_sweep_zeta_names_a_bad_value_by_its_index():
+    # it said "invalid zeta: -1", naming neither the argument nor the element, where
+    # sweep_velocity says "speeds[1]: invalid v0: …"
+    with pytest.raises(ValueError, match=r"^zetas\[2\]: invalid zeta: -1 \(must not be negative"):
+        bouncelab.sweep_zeta([0.4], [0.5, 1.0, -1.0])
+    with pytest.raises(ValueError, match=r"^lambdas\[1\]: invalid lambda: 2000000 \(above 1e6"):
+        bouncelab.sweep_zeta([0.4, 2e6], [0.5])
+    with pytest.raises(ValueError, match=r"^speeds\[1\]: invalid v0: -3"):
+        bouncelab.sweep_velocity("golf", [3.0, -3.0])
 
 
 @pytest.mark.parametrize(
@@ -177,6 +229,17 @@ def test_sweep_velocity_carries_each_rows_warnings():
     )["rows"]
     assert d["warnings"] == [r["warnings"] for r in rows]
     assert list(d["max_indentation"]) == pytest.approx([r["max_indentation"] for r in rows])
+
+
+def test_sweep_velocity_warns_of_the_centre_as_the_cli_does():
+    # the softball's default sweep (to 3 × 26.82 m/s): from 72.6 m/s its centre passes the
+    # radius while its indentation does not; the command line's rows said so, the dict's
+    # warnings checked the indentation alone and were empty
+    d = bouncelab.sweep_velocity("softball")
+    rows = cli_json("sweep", "velocity", "--preset", "softball", "--format", "json")["rows"]
+    assert d["warnings"] == [r["warnings"] for r in rows]
+    centre = "peak displacement of the ball's centre"
+    assert any(centre in w for ws in d["warnings"] for w in ws), d["warnings"]
 
 
 def test_collide_oblique_and_monte_carlo_carry_the_command_lines_warnings():

@@ -327,7 +327,9 @@ def test_errors_of_the_bindings_own_arguments():
         bouncelab.sweep_zeta([], [1.0])
     with pytest.raises(ValueError, match=r"^invalid mass: -1 \(must not be negative\)$"):
         bouncelab.run_params(m=-1, k_p=1, c=1, k_r=1, v0=1)
-    with pytest.raises(ValueError, match=r"^invalid zeta: -1 \(must not be negative\)$"):
+    with pytest.raises(
+        ValueError, match=r"^zetas\[1\]: invalid zeta: -1 \(must not be negative\)$"
+    ):
         bouncelab.sweep_zeta([1.0], [0.5, -1.0])
     with pytest.raises(TypeError):
         bouncelab.run_params(1, 1, 1, 1, 1)  # keyword-only

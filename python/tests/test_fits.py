@@ -130,7 +130,9 @@ def test_fit_drops_recovers_k_r_and_z_p():
 
 def test_fit_drops_with_the_reading_precision_equals_the_cli():
     """Rebound heights read to ±3 mm: each COR carries σ_R ∂e/∂R = σ_R/(2√(RH)) in vacuum, the
-    lack of fit is χ², and the estimates are those without the precision (it scales out)."""
+    lack of fit is χ², and the estimates are those without the precision (it scales out of
+    the weights); the intervals take σ_R as known (absolute sigma, docs/fitting.md): ten
+    times σ_R, ten times the half-width in ln p."""
     drop = np.array([0.2, 0.5, 0.8, 1.2, 1.8])
     base = superball(k_r=1.15, z_p=0.8)
     e = cor_at(np.sqrt(2 * G * drop), base)
@@ -141,9 +143,12 @@ def test_fit_drops_with_the_reading_precision_equals_the_cli():
     assert fit["lack_of_fit"]["test"] == "chi2"
     unknown = bouncelab.fit_drops(drop, rebound, preset="superball")
     assert "cor_sd" not in unknown["drops"]
+    wide = bouncelab.fit_drops(drop, rebound, preset="superball", rebound_height_sd=0.03)
+    half = lambda f, name: np.log(f["fitted"][name]["ci95"][1] / f["fitted"][name]["ci95"][0]) / 2
     for name in ("k_r", "z_p"):
-        np.testing.assert_allclose(fit["fitted"][name]["ci95"], unknown["fitted"][name]["ci95"],
+        np.testing.assert_allclose(fit["fitted"][name]["value"], unknown["fitted"][name]["value"],
                                    rtol=1e-6)
+        np.testing.assert_allclose(half(wide, name), 10 * half(fit, name), rtol=1e-6)
     args = ["fit", "--format", "json", "--rebound-height-sd", "0.003"]
     for h, r in zip(drop, rebound):
         args += ["--drop-height", repr(float(h)), "--rebound-height", repr(float(r))]
@@ -226,3 +231,14 @@ def test_a_fit_without_an_answer_says_so():
     assert len(fit["not_pinned"]) == 1 and fit["not_pinned"][0] in ("k_r", "z_p")
     one = bouncelab.fit_drops(np.ones(40), rebound, preset="tennis", free=["k_r"])
     assert one["identified"] is True and one["not_pinned"] == []
+
+
+def test_the_fitted_balls_warnings_are_the_clis(tmp_path):
+    # the superball fitted to e = 0.6 at 45 m/s presses 32.8 mm into its 21.55 mm radius:
+    # `bouncelab fit` warned of it, the dict's warnings were empty
+    f = bouncelab.fit_cor_table([40.0, 45.0], [0.62, 0.6], preset="superball", free="k_r")
+    (tmp_path / "c.csv").write_text("v0,cor\n40,0.62\n45,0.6\n")
+    args = ["--preset", "superball", "--cor-table", str(tmp_path / "c.csv"), "--free", "k_r"]
+    cli = cli_json("fit", *args, "--format", "json")
+    assert f["warnings"] == cli["warnings"]
+    assert any(w.startswith("the fitted ball at v0 = 45 m/s") for w in f["warnings"]), f

@@ -126,7 +126,7 @@ impl Ball {
             Data::Cor(t) => t.points.len(),
             Data::Drop(d) => d.drops.len(),
         };
-        let f = match self.fit_batch_data(data, setup) {
+        let (f, speeds) = match self.fit_batch_data(data, setup) {
             Ok(f) => f,
             Err(e) => {
                 o.error = Some(e);
@@ -139,6 +139,8 @@ impl Ball {
         (o.k_p, o.c, o.k_r, o.z_p) = (Some(p.k_p), Some(p.damping), Some(p.k_r), Some(p.z_p));
         o.identified = f.identified;
         o.warnings.clone_from(&f.warnings);
+        // the fitted ball where it presses deepest, as `bouncelab fit` warns of it
+        o.warnings.extend(self.fitted_warnings(&f.params, &speeds));
         if !f.identified {
             let why = no_answer_reasons(f.converged, &f.not_pinned);
             o.error = Some(format!("the fit gave no answer: {}", why.join("; ")));
@@ -168,12 +170,19 @@ impl Ball {
         o
     }
 
-    /// The fit of one ball's data (drop tests through this ball's flight in `setup.air`).
-    fn fit_batch_data(&self, data: &Data, setup: &BatchSetup<'_>) -> Result<MultiFit, String> {
+    /// The fit of one ball's data (drop tests through this ball's flight in `setup.air`), and
+    /// the impact speeds of its data (a trace's: this ball's v0), as `bouncelab fit` takes
+    /// them for [`Ball::fitted_warnings`].
+    fn fit_batch_data(
+        &self,
+        data: &Data,
+        setup: &BatchSetup<'_>,
+    ) -> Result<(MultiFit, Vec<f64>), String> {
         let points = match data {
             Data::Trace(t) => {
                 return self
                     .fit(FitData::Trace(t), setup.free)
+                    .map(|f| (f, vec![self.params.v0]))
                     .map_err(|e| e.to_string());
             }
             Data::Cor(t) => t.points.clone(),
@@ -183,7 +192,9 @@ impl Ball {
                     .map_err(|e| e.to_string())?
             }
         };
+        let speeds = points.iter().map(|p| p.v0).collect();
         self.fit(FitData::Cor(&points), setup.free)
+            .map(|f| (f, speeds))
             .map_err(|e| e.to_string())
     }
 }

@@ -60,6 +60,11 @@ pub struct ObliqueFitReport<'a> {
     pub not_pinned: Vec<&'static str>,
     /// The fitted quantities on the bound of their search.
     pub on_bound: Vec<&'static str>,
+    /// As many data as fitted quantities, or residuals all zero: an exact solve, with no
+    /// residual (or no scatter) to estimate the uncertainty from (`std_error` and `ci95` are
+    /// null then), as `fit --cor-table`'s key. Present only when true.
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    pub exact: bool,
     /// The fit itself, for a caller's text (model values per row).
     #[serde(skip)]
     pub fit: ObliqueFit,
@@ -120,6 +125,7 @@ impl Ball {
             identified: f.identified,
             not_pinned: f.not_pinned.clone(),
             on_bound: f.on_bound.clone(),
+            exact: f.exact(),
             fit: f,
         })
     }

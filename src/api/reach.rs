@@ -73,11 +73,42 @@ pub fn reach_warning(
     duration: f64,
     radius: f64,
 ) -> Option<String> {
+    Some(match reach(params, law, method, z_m, duration, radius)? {
+        Reach::Indentation(z_m) => indentation_warning(z_m, radius)?,
+        Reach::Displacement(alpha) => displacement_warning(alpha, radius)?,
+        Reach::Unchecked(e) => {
+            format!("the ball's peak displacement could not be checked against its radius: {e}")
+        }
+    })
+}
+
+/// How an impact reaches past the ball's radius ([`reach`]).
+#[derive(Debug, Clone, PartialEq)]
+pub enum Reach {
+    /// Its peak indentation z_m (m) passes the radius (and so does its centre: α ≥ z).
+    Indentation(f64),
+    /// Its centre's peak displacement α_max (m) passes the radius, z_m within it.
+    Displacement(f64),
+    /// z_m is within the radius, and the run again for α_max gave no answer.
+    Unchecked(BallError),
+}
+
+/// Whether an impact reaches past the ball's `radius` (m), and how: [`reach_warning`]'s
+/// test, for a caller that words it its own way (a figure's note, `figure::history`).
+/// `None` within, or with no radius known (NaN).
+pub fn reach(
+    params: &ImpactParams,
+    law: ContactLaw,
+    method: Method,
+    z_m: f64,
+    duration: f64,
+    radius: f64,
+) -> Option<Reach> {
     if !radius.is_finite() {
         return None;
     }
-    if let Some(w) = indentation_warning(z_m, radius) {
-        return Some(w);
+    if z_m > radius {
+        return Some(Reach::Indentation(z_m));
     }
     // α_max ≤ min(v0 t_f, z_m + m v0/c) (`bounds`): within R, no second run
     let momentum = params.mass * params.v0;
@@ -85,10 +116,8 @@ pub fn reach_warning(
         return None;
     }
     match peak_displacement(params, law, method) {
-        Ok(alpha) => displacement_warning(alpha, radius),
-        Err(e) => Some(format!(
-            "the ball's peak displacement could not be checked against its radius: {e}"
-        )),
+        Ok(alpha) => (alpha > radius).then_some(Reach::Displacement(alpha)),
+        Err(e) => Some(Reach::Unchecked(e)),
     }
 }
 
@@ -131,13 +160,39 @@ pub(super) fn cell_indentation(spec: &crate::map::MapSpec) -> impl Fn(f64) -> f6
     move |f| contact.loading_indentation(f / (k_p * length)) * length
 }
 
+/// A map cell's centre against the radius: whether it passes R, whether by α alone (its
+/// z_m within R), or why it could not be read (its impact run again did not answer).
+#[derive(Default)]
+struct Tally {
+    /// Cells whose centre passes R (those whose indentation passes too: α ≥ z).
+    past: usize,
+    /// Of those, the cells whose indentation stays within R.
+    alone: usize,
+    /// Cells the bounds left open whose run again failed: neither within nor past.
+    unchecked: usize,
+    /// The first of their errors, to name a cell.
+    error: Option<String>,
+}
+
+impl Tally {
+    fn add(mut self, other: Tally) -> Tally {
+        self.past += other.past;
+        self.alone += other.alone;
+        self.unchecked += other.unchecked;
+        self.error = self.error.or(other.error);
+        self
+    }
+}
+
 /// The cells of a dimensional `map` whose ball's centre passes `radius` (m) while their peak
 /// indentation does not ([`super::map_indentation_warning`] names those): a cell past by its
 /// lower bound is counted, one within by its upper bound left (`bounds`), and every other
 /// read exactly ([`peak_displacement`], the cell's impact again with its flow, on all cores).
 /// One warning, when some cell passes by its centre alone, naming how many cells the centre
 /// passes in (those whose indentation passes too: α ≥ z) and how many of them by it alone;
-/// `None` otherwise, for a normalized map, or with no radius known (NaN). tests/answer_reach.rs.
+/// a cell whose run again fails is neither: the warning counts it as not checked (and is
+/// given for it alone), so no cell passes silently. `None` otherwise, for a normalized map,
+/// or with no radius known (NaN). tests/answer_reach.rs.
 pub fn map_displacement_warning(map: &Map, radius: f64) -> Option<String> {
     use rayon::prelude::*;
     let spec = &map.spec;
@@ -151,20 +206,42 @@ pub fn map_displacement_warning(map: &Map, radius: f64) -> Option<String> {
     };
     let zetas = map.zetas.len();
     let at = |k: usize| spec.params_at(map.lambdas[k / zetas], map.zetas[k % zetas]);
-    // (whether the centre passes R, whether by α alone: z_m within R); α ≥ z, so a z_m past
-    // R passes too
-    let past = |(k, c): (usize, Cell)| -> (bool, bool) {
+    let read = |(k, c): (usize, Cell)| -> Tally {
         let z = z_m(c.max_force);
         if !z.is_finite() || z > radius {
-            return (z.is_finite(), false);
+            // α ≥ z: a z_m past R passes too
+            let past = usize::from(z.is_finite());
+            return Tally {
+                past,
+                ..Tally::default()
+            };
         }
         let cell = at(k);
         let t_f = c.contact_time.unwrap_or(f64::INFINITY);
         let (lo, hi) = bounds(&cell, z, c.max_force, t_f);
-        let alone = lo > radius
-            || (hi > radius
-                && peak_displacement(&cell, spec.law, method).is_ok_and(|a| a > radius));
-        (alone, alone)
+        let alone = if lo > radius {
+            true
+        } else if hi <= radius {
+            false
+        } else {
+            match peak_displacement(&cell, spec.law, method) {
+                Ok(a) => a > radius,
+                Err(e) => {
+                    let error = Some(e.to_string());
+                    return Tally {
+                        unchecked: 1,
+                        error,
+                        ..Tally::default()
+                    };
+                }
+            }
+        };
+        let n = usize::from(alone);
+        Tally {
+            past: n,
+            alone: n,
+            ..Tally::default()
+        }
     };
     let cells: Vec<(usize, Cell)> = map
         .cells()
@@ -172,20 +249,35 @@ pub fn map_displacement_warning(map: &Map, radius: f64) -> Option<String> {
         .enumerate()
         .filter_map(|(k, c)| c.map(|c| (k, c)))
         .collect();
-    let (count, alone) = cells
+    let tally = cells
         .into_par_iter()
-        .map(past)
-        .map(|(p, a)| (usize::from(p), usize::from(a)))
-        .reduce(|| (0, 0), |x, y| (x.0 + y.0, x.1 + y.1));
-    (alone > 0).then(|| {
+        .map(read)
+        .reduce(Tally::default, Tally::add);
+    map_reach_text(&tally, radius, map.cells().len())
+}
+
+/// The map's centre warning from its `tally` over `total` cells (`map_displacement_warning`).
+fn map_reach_text(tally: &Tally, radius: f64, total: usize) -> Option<String> {
+    let r = sig(radius * 1e3, 4);
+    let unchecked = (tally.unchecked > 0).then(|| {
         format!(
-            "peak displacement of the ball's centre exceeds the ball's radius {} mm in {} of {} \
+            "in {} of {} cells the peak displacement of the ball's centre could not be checked \
+             against the ball's radius {r} mm (the cell's impact run again gave no answer: {})",
+            tally.unchecked,
+            total,
+            tally.error.as_deref().unwrap_or("")
+        )
+    });
+    let past = (tally.alone > 0).then(|| {
+        format!(
+            "peak displacement of the ball's centre exceeds the ball's radius {r} mm in {} of {} \
              cells, {} of them with the peak indentation within it: outside the model's range \
              there (the model assumes a deformation small against the ball)",
-            sig(radius * 1e3, 4),
-            count,
-            map.cells().len(),
-            alone
+            tally.past, total, tally.alone
         )
-    })
+    });
+    match (past, unchecked) {
+        (Some(p), Some(u)) => Some(format!("{p}; {u}")),
+        (p, u) => p.or(u),
+    }
 }

@@ -41,6 +41,23 @@ impl Ball {
             Ok(cor_vs_velocity(&self.params, self.law, c)?)
         })
     }
+
+    /// The warning of one `row` of this ball's speed sweep: its reach past the radius
+    /// ([`super::reach_warning`], the ball at the row's speed), as `run` warns of it — the
+    /// command line's `sweep velocity` rows and Python's `sweep_velocity` alike.
+    pub fn velocity_row_warning(&self, row: &VelocityPoint) -> Option<String> {
+        let params = crate::ImpactParams {
+            v0: row.v0,
+            ..self.params
+        };
+        let method = match self.law {
+            ContactLaw::Linear => crate::solver::Method::Exact,
+            _ => crate::solver::Method::Numeric,
+        };
+        let duration = row.contact_time.unwrap_or(f64::INFINITY);
+        let z_m = row.max_indentation;
+        super::reach_warning(&params, self.law, method, z_m, duration, self.radius())
+    }
 }
 
 /// COR, F̄_m and τ_f against ζ for each λ, on the normalized ball without flattening (the

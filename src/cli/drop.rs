@@ -122,7 +122,8 @@ pub fn run(a: &DropArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     warnings.extend(b.drop_air_warning(air));
     match a.format {
         DropFormat::Json => {
-            let mut r = report(&run, &bands, verdict.as_ref());
+            let judged_at = standard.and_then(|s| s.release_height(radius));
+            let mut r = report(&run, &bands, verdict.as_ref(), judged_at);
             r.warnings = warnings;
             output::json(out, &r)?
         }
@@ -172,6 +173,10 @@ struct StandardJson {
     measured: f64,
     verdict: &'static str,
     margin: f64,
+    /// The release height (m, bottom of the ball) the verdict was judged at: the standard's
+    /// own drop, whatever `--height` gave the bounces above (`height`); `null` for a COR
+    /// test. tests/cli_drop.rs.
+    judged_at_height_m: Option<f64>,
 }
 
 /// One bounce's 95 % intervals on a fitted preset (docs/fitting.md, "Prediction intervals").
@@ -227,7 +232,12 @@ struct Report<'a> {
     warnings: Vec<String>,
 }
 
-fn report<'a>(run: &'a DropRun, bands: &[BounceIntervals], v: Option<&Verdict>) -> Report<'a> {
+fn report<'a>(
+    run: &'a DropRun,
+    bands: &[BounceIntervals],
+    v: Option<&Verdict>,
+    judged_at: Option<f64>,
+) -> Report<'a> {
     let bands = bands
         .iter()
         .copied()
@@ -248,6 +258,7 @@ fn report<'a>(run: &'a DropRun, bands: &[BounceIntervals], v: Option<&Verdict>) 
             measured: v.measured,
             verdict: if v.pass { "pass" } else { "fail" },
             margin: v.margin,
+            judged_at_height_m: judged_at,
         }),
         warnings: Vec::new(),
     }

@@ -207,7 +207,7 @@ fn velocity(a: &VelocityArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         .map(|(row, i)| VelocityRow {
             row,
             intervals: i.copied(),
-            warnings: row_warning(&b, row).into_iter().collect(),
+            warnings: b.velocity_row_warning(row).into_iter().collect(),
         })
         .collect();
     match a.format {
@@ -227,28 +227,6 @@ fn velocity(a: &VelocityArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         SweepFormat::Csv => velocity_csv(out, &rows, !bands.is_empty())?,
     }
     Ok(())
-}
-
-/// The warning of one row of `sweep velocity` of ball `b`: its reach past the radius
-/// ([`crate::api::reach_warning`], the ball at the row's speed), as `run` warns of it.
-fn row_warning(b: &crate::api::Ball, row: &VelocityPoint) -> Option<String> {
-    let params = ImpactParams {
-        v0: row.v0,
-        ..b.params
-    };
-    let method = match b.law {
-        ContactLaw::Linear => crate::solver::Method::Exact,
-        _ => crate::solver::Method::Numeric,
-    };
-    let duration = row.contact_time.unwrap_or(f64::INFINITY);
-    crate::api::reach_warning(
-        &params,
-        b.law,
-        method,
-        row.max_indentation,
-        duration,
-        b.radius(),
-    )
 }
 
 /// A row of `sweep velocity`, with a fitted preset's 95 % intervals (docs/fitting.md) and

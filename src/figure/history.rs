@@ -66,11 +66,86 @@ pub fn force_time(ball: &Ball, r: &ImpactResponse) -> Figure {
             );
         }
     }
-    Figure {
+    let mut fig = Figure {
         series,
         ..frame(false, ball)
+    };
+    push_radius_note(&mut fig, ball, r);
+    fig
+}
+
+/// The note of an impact `r` of `ball` past the ball's radius, as `run` warns of it
+/// (`api::reach`): "outside the model's range: z_m 31.05 mm > radius 21.55 mm" (or the
+/// centre's α_max), after a "; " the SVG may break the subtitle at. Nothing within the radius
+/// or with no radius known. tests/figure_radius.rs.
+pub fn push_radius_note(fig: &mut Figure, ball: &Ball, r: &ImpactResponse) {
+    let radius = ball.measured.as_ref().map_or(f64::NAN, |m| m.radius);
+    if let Some(note) = radius_note(&ball.params, radius, r) {
+        fig.subtitle.push_str(&format!("; {OUTSIDE}{note}"));
     }
 }
+
+/// The impact `r` of `params` past `radius` (m), in a figure's words (`api::reach`): "z_m
+/// 31.05 mm > radius 21.55 mm", "centre's α_max 34.97 mm > radius 21.55 mm"; `None` within.
+pub fn radius_note(
+    params: &crate::model::params::ImpactParams,
+    radius: f64,
+    r: &ImpactResponse,
+) -> Option<String> {
+    let (z_m, t_f) = (r.max_indentation, r.duration);
+    let reach = crate::api::reach(params, r.law, r.method, z_m, t_f, radius)?;
+    Some(reach_words(&reach, radius))
+}
+
+/// A reach past `radius` (m) in a figure's words ([`radius_note`]).
+fn reach_words(reach: &crate::api::Reach, radius: f64) -> String {
+    use crate::api::Reach;
+    let mm = |x: f64| crate::text::sig(x * 1e3, 4);
+    match reach {
+        Reach::Indentation(z) => format!("z_m {} mm > radius {} mm", mm(*z), mm(radius)),
+        Reach::Displacement(a) => {
+            format!("centre's α_max {} mm > radius {} mm", mm(*a), mm(radius))
+        }
+        Reach::Unchecked(_) => format!("α_max not checked against radius {} mm", mm(radius)),
+    }
+}
+
+/// The note of a speed sweep of `ball` (`rows` in rising speed: Fig. 4) whose impacts pass
+/// the ball's radius from some speed on, as `sweep velocity` warns of each row: "; outside
+/// the model's range from v0 = 45.2 m/s: z_m 21.6 mm > radius 21.55 mm", at the first such
+/// row. Nothing when every row is within, or with no radius known. tests/figure_radius.rs.
+pub fn push_speed_radius_note(
+    fig: &mut Figure,
+    ball: &Ball,
+    rows: &[crate::analysis::sweep::VelocityPoint],
+) {
+    let radius = ball.measured.as_ref().map_or(f64::NAN, |m| m.radius);
+    let method = match ball.law {
+        ContactLaw::Linear => crate::solver::Method::Exact,
+        _ => crate::solver::Method::Numeric,
+    };
+    let first = rows.iter().find_map(|row| {
+        let p = crate::model::params::ImpactParams {
+            v0: row.v0,
+            ..ball.params
+        };
+        let t_f = row.contact_time.unwrap_or(f64::INFINITY);
+        let reach = crate::api::reach(&p, ball.law, method, row.max_indentation, t_f, radius)?;
+        Some((row.v0, reach))
+    });
+    if let Some((v0, reach)) = first {
+        let outside = OUTSIDE.trim_end_matches(": ");
+        let words = reach_words(&reach, radius);
+        fig.subtitle.push_str(&format!(
+            "; {outside} from v0 = {} m/s: {words}",
+            short(v0, 4)
+        ));
+    }
+}
+
+/// How a figure's subtitle begins its note of an impact past the ball's radius
+/// ([`push_radius_note`]); a figure of several balls keeps each ball's (`cli::figure::balls`).
+pub const OUTSIDE: &str = "outside the model's range: ";
 
 /// Figs. 5–8 without data: titles and axes, for a chart whose impact could not be computed.
 /// `displacement`: force against displacement (Figs. 6, 8), else against time (5, 7).
@@ -161,6 +236,7 @@ pub fn force_displacement(ball: &Ball, r: &ImpactResponse) -> Figure {
             .push_str(&format!("; {}", flattening_note(z_m, z_p)));
     }
     fig.series = series;
+    push_radius_note(&mut fig, ball, r);
     fig
 }
 

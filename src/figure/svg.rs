@@ -274,6 +274,21 @@ fn draw_legend<DB: DrawingBackend>(
     Ok(())
 }
 
+/// The width (CSS pixels) left of the plot for the y axis' tick labels and its rotated
+/// description: 70, or wider where the widest tick label needs it (`fit --plot`'s residuals,
+/// "-0.0005": the description "e − model" was drawn over "0.0000"; tests/figure_radius.rs).
+/// The description, its gap, the tick mark and the labels' gap take 31 of it (as before:
+/// labels up to 39 wide, "0.025", kept clear in every figure of tests/figure_room.rs).
+fn y_label_area(ty: &Ticks) -> i32 {
+    let widest = ty
+        .labels()
+        .iter()
+        .map(|(_, l)| text_width(l, TICK_PX))
+        .max()
+        .unwrap_or(0);
+    70.max(widest + 31)
+}
+
 /// The subtitle on one line when it fits; else broken after its first "; ", and the rest,
 /// where it still would not fit, at each further "; " that ends a full line (`fit --plot`'s
 /// values with their intervals, tests/cli_fit_reports.rs).
@@ -377,7 +392,7 @@ pub fn render(fig: &Figure) -> Result<String, RenderError> {
             .margin_right(px(30))
             .margin_top(px(6))
             .x_label_area_size(px(52))
-            .y_label_area_size(px(70))
+            .y_label_area_size(px(y_label_area(&ty)))
             .build_cartesian_2d(tx.clone(), ty.clone())
             .map_err(err)?;
         let (fx, fy) = (|v: &f64| tx.label(*v), |v: &f64| ty.label(*v));

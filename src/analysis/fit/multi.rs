@@ -6,7 +6,7 @@ use super::checks::{check_free, check_impulse, check_scale, too_few, verify_exac
 use super::cor::CorProblem;
 use super::lm::{self, Best, Residuals, Solution};
 use super::result::{Estimate, FitData, MultiFit, MultiFitError};
-use super::stats::{CONDITION_MAX, uncertainty};
+use super::stats::{CONDITION_MAX, Spread, uncertainty, uncertainty_by};
 use super::trace::TraceProblem;
 use super::verdict::{self, judge};
 use crate::analysis::work::{Unwatched, Watch, fit_iterations, fit_run_cost};
@@ -85,7 +85,7 @@ pub(super) fn fit_trace(
     let model = p.model_at_rows(&sol.sol.x).unwrap_or_default();
     let ball = p.ball(&sol.sol.x);
     let rms = rms(&sol.sol.residuals);
-    let mut f = finish(ball, law, free, &sol, None, rms, model)?;
+    let mut f = finish(ball, law, free, &sol, Spread::Residuals, rms, model)?;
     // the trace's rows, whether compared one by one or in bins
     f.points = rows;
     // the model's misses matter only above the noise's scale (a noise-free synthetic trace
@@ -131,6 +131,9 @@ fn fit_cor(
     };
     let mut sol = best(&p, starts, |x| p.bounds(x), 0.0, iterations).ok_or_else(none)?;
     let mut t_dof = None;
+    // every row's COR with its stated sd, and nothing else measured: the residuals are in
+    // units of their sd (`Spread::Stated`)
+    let stated = points.iter().all(|q| q.cor_sd.is_some()) && p.count() == points.len();
     if p.count() > points.len() {
         // mixed kinds: weigh each by its own scatter, then fit again from there
         let kinds = p.rms_by_kind(&sol.sol.x).ok_or_else(none)?;
@@ -166,11 +169,16 @@ fn fit_cor(
         verify_exact(&p, &sol, &pred)?;
     }
     let ball = p.ball(&sol.sol.x);
-    let mut f = finish(ball, law, free, &sol, t_dof, rms(&misses), model)?;
+    let spread = match t_dof {
+        Some(d) => Spread::Kinds(d),
+        None if stated => Spread::Stated,
+        None => Spread::Residuals,
+    };
+    let mut f = finish(ball, law, free, &sol, spread, rms(&misses), model)?;
     let dof = sol.sol.residuals.len().saturating_sub(free.len());
     // χ² when every row carries its standard deviation (and nothing else was measured), else
     // the runs test of the COR misses in the data's order of speed
-    let lack = if points.iter().all(|q| q.cor_sd.is_some()) && p.count() == points.len() {
+    let lack = if stated {
         verdict::chi2_test(&sol.sol.residuals, dof)
     } else {
         let mut by_speed: Vec<(f64, f64)> = points.iter().map(|q| q.v0).zip(misses).collect();
@@ -258,7 +266,7 @@ fn finish(
     law: ContactLaw,
     free: &[Param],
     best: &Best,
-    t_dof: Option<usize>,
+    spread: Spread,
     rms_residual: f64,
     model: Vec<f64>,
 ) -> Result<MultiFit, MultiFitError> {
@@ -266,10 +274,7 @@ fn finish(
     if !finite(sol) || !rms_residual.is_finite() {
         return Err(MultiFitError::NonFinite);
     }
-    let mut u = uncertainty(&sol.jacobian, &sol.residuals);
-    if let Some(d) = t_dof {
-        u.t975 = super::stats::t975(d);
-    }
+    let u = uncertainty_by(&sol.jacobian, &sol.residuals, spread);
     let k = free.len();
     // a trace has the contact start and the baseline after the parameters
     let trace = sol.x.len() > k;
@@ -320,7 +325,9 @@ fn finish(
     // its infinite variance (not pinned). tests/cli_fit.rs,
     // `equal_cors_leave_no_scatter_to_estimate_from`.
     let dof = sol.residuals.len().saturating_sub(names.len());
-    let no_scatter = dof > 0 && sol.residuals.iter().all(|r| *r == 0.0);
+    // (with stated sds the interval needs no scatter: `Spread::Stated`)
+    let stated = spread == Spread::Stated && dof > 0;
+    let no_scatter = !stated && dof > 0 && sol.residuals.iter().all(|r| *r == 0.0);
     if no_scatter {
         warnings.insert(0, verdict::NO_SCATTER.into());
         let unknown = |e: &mut Estimate| {
@@ -343,7 +350,7 @@ fn finish(
             e.ci95 = [f64::NAN, f64::NAN];
         }
     }
-    let not_pinned = verdict::not_pinned(&fitted, best, names.len());
+    let not_pinned = verdict::not_pinned(&fitted, best, names.len(), no_scatter);
     let on_bound = (0..free.len())
         .filter(|&j| verdict::on_bound(sol.x[j], best.lo[j], best.hi[j]))
         .map(|j| free[j].name())
@@ -367,6 +374,7 @@ fn finish(
         not_pinned,
         on_bound,
         no_scatter,
+        stated_sd: stated,
         lack_of_fit: None,
     })
 }

@@ -72,6 +72,19 @@ pub struct ObliqueFit {
     pub not_pinned: Vec<&'static str>,
     /// The fitted quantities that ran to the bound of their search.
     pub on_bound: Vec<&'static str>,
+    /// Degrees of freedom were left but every residual is zero: the data show no scatter to
+    /// estimate the uncertainty from (`verdict::NO_SCATTER`; no standard error or interval),
+    /// as `MultiFit::no_scatter`.
+    pub no_scatter: bool,
+}
+
+impl ObliqueFit {
+    /// Whether the fit had as many data as quantities fitted, or residuals all zero
+    /// ([`ObliqueFit::no_scatter`]): the values solve the data exactly and no standard error
+    /// or interval can be estimated (`MultiFit::exact`).
+    pub fn exact(&self) -> bool {
+        self.points <= self.fitted.len() || self.no_scatter
+    }
 }
 
 /// What one row of one evaluation costs, in linear-law impacts: a row's normal impact is

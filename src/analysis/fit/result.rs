@@ -88,6 +88,9 @@ pub struct MultiFit {
     /// Degrees of freedom were left but every residual is zero: the data show no scatter to
     /// estimate the uncertainty from (`verdict::NO_SCATTER`; no standard error or interval).
     pub no_scatter: bool,
+    /// Every row's COR gave its standard deviation (`cor_sd`), taken as known: the intervals
+    /// are scaled by those sds, not by the residuals' scatter (`stats::Spread::Stated`).
+    pub stated_sd: bool,
     /// A test of whether the model can follow the data at all (systematic residuals); `None`
     /// where no test applies (too few points, no degree of freedom).
     pub lack_of_fit: Option<LackOfFit>,

@@ -24,12 +24,39 @@ pub struct Uncertainty {
 /// changes the residuals by less than 1e-8 of what the others do: not identifiable.
 pub const CONDITION_MAX: f64 = 1e8;
 
+/// Where a fit's scale of the residuals comes from.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Spread {
+    /// Estimated from the residuals: s² = Σr²/(n − p), Student's t at n − p.
+    Residuals,
+    /// Estimated kind by kind (a COR table with forces or contact times): s² as above, the
+    /// residuals already divided by their kind's scatter, Student's t at these degrees of
+    /// freedom.
+    Kinds(usize),
+    /// Every residual divided by its stated standard deviation (`cor_sd` on every row): the
+    /// covariance (JᵀJ)⁻¹ not rescaled (s² = 1) and the normal quantile 1.96, as SciPy's
+    /// `curve_fit(..., absolute_sigma=True)`; with degrees of freedom left (else as
+    /// `Residuals`: an exact solve). docs/fitting.md, tests/fit_stated_sd.rs.
+    Stated,
+}
+
+/// The 0.975 quantile of the standard normal distribution.
+pub const Z975: f64 = 1.959_963_984_540_054;
+
 /// The uncertainty of a least-squares minimum from its Jacobian `jac` (one row a residual, one
 /// column a variable) and its `residuals`, with n − p degrees of freedom.
 pub fn uncertainty(jac: &DMatrix<f64>, residuals: &[f64]) -> Uncertainty {
+    uncertainty_by(jac, residuals, Spread::Residuals)
+}
+
+/// [`uncertainty`] with the scale of the residuals from `spread`.
+pub fn uncertainty_by(jac: &DMatrix<f64>, residuals: &[f64], spread: Spread) -> Uncertainty {
     let (n, p) = jac.shape();
     let dof = n.saturating_sub(p);
-    let s2 = if dof > 0 {
+    let stated = spread == Spread::Stated && dof > 0;
+    let s2 = if stated {
+        1.0
+    } else if dof > 0 {
         residuals.iter().map(|r| r * r).sum::<f64>() / dof as f64
     } else {
         f64::NAN
@@ -107,7 +134,11 @@ pub fn uncertainty(jac: &DMatrix<f64>, residuals: &[f64]) -> Uncertainty {
     Uncertainty {
         covariance: cov,
         correlation: corr,
-        t975: t975(dof),
+        t975: match spread {
+            Spread::Kinds(d) => t975(d),
+            _ if stated => Z975,
+            _ => t975(dof),
+        },
         condition: smax / smin,
         weakest,
     }

@@ -143,19 +143,17 @@ pub(super) fn not_converged(iterations: usize) -> String {
 }
 
 /// The free parameters (the first `fitted.len()` variables of `best`) the data do not pin,
-/// with `quantities` fitted in all (a trace's start and baseline included).
+/// with `quantities` fitted in all (a trace's start and baseline included); `no_scatter`
+/// (`MultiFit::no_scatter`): judged as an exact solve (`MultiFit::exact`), on what the data
+/// see.
 pub(super) fn not_pinned(
     fitted: &[Estimate],
     best: &super::lm::Best,
     quantities: usize,
+    no_scatter: bool,
 ) -> Vec<&'static str> {
     let dof = best.sol.residuals.len().saturating_sub(quantities);
-    // residuals all zero: judged as an exact solve (`MultiFit::exact`), on what the data see
-    let dof = if best.sol.residuals.iter().all(|r| *r == 0.0) {
-        0
-    } else {
-        dof
-    };
+    let dof = if no_scatter { 0 } else { dof };
     fitted
         .iter()
         .enumerate()

@@ -15,6 +15,7 @@ use super::{
     FigureArgs, FigureName, HISTORY_SAMPLES, VELOCITY_POINTS, history_figures, velocity_figure,
 };
 use crate::cli::ball::{self, BallArgs, LawArg, Overrides, PresetChoice, SourceArg};
+use crate::figure::history::OUTSIDE;
 use crate::figure::paper;
 use crate::figure::{Figure, Kind};
 use clap::Args;
@@ -104,8 +105,9 @@ const BALL_COLORS: usize = 6;
 
 /// One figure from the figures of several balls, each given with its ball's name. One ball's
 /// figure is returned as it is. The title names no ball (the legend does); the subtitle keeps
-/// what the balls' subtitles share, and what each says of its own ball goes into the label of
-/// its first model curve ("golf: model, v0 = 1.47 m/s (measured speed)").
+/// what the balls' subtitles share and each ball's note of its radius passed, named, and what
+/// each says of its own ball goes into the label of its first model curve ("golf: model,
+/// v0 = 1.47 m/s (measured speed)").
 pub fn combine(mut figs: Vec<(String, Figure)>) -> Figure {
     if figs.len() == 1 {
         return figs.remove(0).1;
@@ -117,7 +119,17 @@ pub fn combine(mut figs: Vec<(String, Figure)>) -> Figure {
     }
     let subtitles: Vec<&str> = figs.iter().map(|(_, f)| f.subtitle.as_str()).collect();
     let (common, own) = split_subtitles(&subtitles);
-    out.subtitle = common;
+    // each ball's note of its radius passed stays, named (`figure::history::push_radius_note`)
+    let notes: String = figs
+        .iter()
+        .flat_map(|(name, f)| {
+            f.subtitle
+                .split("; ")
+                .filter(|p| p.starts_with(OUTSIDE.trim_end_matches(": ")))
+                .map(move |n| format!("; {name} {n}"))
+        })
+        .collect();
+    out.subtitle = common + &notes;
     out.x.range = union(figs.iter().map(|(_, f)| f.x.range));
     out.y.range = union(figs.iter().map(|(_, f)| f.y.range));
     out.series.clear();

@@ -252,7 +252,9 @@ pub fn velocity_figure(
         anyhow::bail!("invalid speed range: --from {from} must be below --to {to}");
     }
     let rows = super::budget::velocity_rows(&b.params, b.law, &lin_space(from, to, points))?;
-    Ok(paper::cor_velocity(b, &rows, onset))
+    let mut fig = paper::cor_velocity(b, &rows, onset);
+    crate::figure::history::push_speed_radius_note(&mut fig, b, &rows);
+    Ok(fig)
 }
 
 /// Figs. 5–8 at the ball's v0: (force-time, force-displacement).

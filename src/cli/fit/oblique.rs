@@ -47,6 +47,15 @@ pub fn run(a: &FitArgs, path: &Path, out: &mut dyn Write) -> anyhow::Result<()> 
     Ok(())
 }
 
+/// The text in place of an interval of an exact solve (`super::report::exact_text`'s words).
+fn exact_text(f: &ObliqueFit) -> &'static str {
+    if f.no_scatter {
+        "exact: no scatter to estimate it from"
+    } else {
+        super::report::EXACT
+    }
+}
+
 fn write_text(
     out: &mut dyn Write,
     label: &str,
@@ -70,11 +79,20 @@ fn write_text(
         "unit".into(),
     ]];
     for e in &f.fitted {
+        // an exact solve has no error to give (`ObliqueFit::exact`), as `fit --cor-table`
+        let (error, interval) = if f.exact() {
+            ("–".into(), exact_text(f).into())
+        } else {
+            (
+                human(e.std_error, 3),
+                format!("{} … {}", human(e.ci95[0], 4), human(e.ci95[1], 4)),
+            )
+        };
         rows.push(vec![
             e.name.into(),
             human(e.value, 5),
-            human(e.std_error, 3),
-            format!("{} … {}", human(e.ci95[0], 4), human(e.ci95[1], 4)),
+            error,
+            interval,
             e.unit.into(),
         ]);
     }

@@ -17,7 +17,7 @@ const CURVE_POINTS: usize = 120;
 /// The ball and law, then each fitted value with its 95 % interval as the text report gives
 /// them (value to 5 digits, its unit, the interval to 4; an exact solve's words in its place),
 /// "; " between them, where the SVG may break the subtitle (`figure::svg`).
-fn subtitle(ball: &Ball, f: &MultiFit) -> String {
+fn subtitle(ball: &Ball, f: &MultiFit, speeds: &[f64]) -> String {
     let fitted: Vec<String> = f
         .fitted
         .iter()
@@ -31,11 +31,27 @@ fn subtitle(ball: &Ball, f: &MultiFit) -> String {
         })
         .collect();
     format!(
-        "{}, {} law; fitted {}",
+        "{}, {} law; fitted {}{}",
         ball.name.as_deref().unwrap_or("ball"),
         ball.law,
-        fitted.join("; ")
+        fitted.join("; "),
+        radius_note(ball, f, speeds)
     )
+}
+
+/// "; outside the model's range at v0 = 45 m/s: z_m 32.81 mm > radius 21.55 mm": the fitted
+/// ball at the fastest of the data's `speeds` past its radius, as the report's warning
+/// (`Ball::fitted_warnings`) says (`figure::history::radius_note`); empty within.
+fn radius_note(ball: &Ball, f: &MultiFit, speeds: &[f64]) -> String {
+    let v0 = speeds.iter().copied().fold(f64::NAN, f64::max);
+    let p = ImpactParams { v0, ..f.params };
+    let note = simulate(&p, ball.law, &SolveOptions::default())
+        .ok()
+        .and_then(|r| crate::figure::history::radius_note(&p, ball.radius(), &r));
+    note.map_or(String::new(), |n| {
+        let outside = crate::figure::history::OUTSIDE.trim_end_matches(": ");
+        format!("; {outside} at v0 = {} m/s: {n}", crate::text::number(v0))
+    })
 }
 
 /// The user's data as markers, labelled by `label` (the file name).
@@ -84,7 +100,7 @@ fn trace_figures(ball: &Ball, data: &Loaded, f: &MultiFit) -> Option<(Figure, Fi
         .collect();
     let top = Figure::new(
         format!("Force against time: {}", data.label),
-        subtitle(ball, f),
+        subtitle(ball, f, &[f.params.v0]),
         Axis::linear("t (ms)", "t", 1e3),
         Axis::linear("F (N)", "force", 1.0),
         vec![
@@ -133,7 +149,7 @@ fn cor_figures(
         .collect();
     let top = Figure::new(
         format!("COR against impact speed: {}", data.label),
-        subtitle(ball, f),
+        subtitle(ball, f, &speeds),
         Axis::linear("v0 (m/s)", "v0", 1.0),
         Axis::linear("COR e", "cor", 1.0),
         vec![

@@ -64,6 +64,11 @@ pub struct Report<'a> {
     /// null then). Present only when true.
     #[serde(skip_serializing_if = "std::ops::Not::not")]
     exact: bool,
+    /// Every row's `cor_sd` taken as known: the intervals scaled by them, not by the
+    /// residuals' scatter (docs/fitting.md, "Stated standard deviations"). Present only when
+    /// true.
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    sd_stated: bool,
 }
 
 #[derive(Serialize)]
@@ -166,6 +171,7 @@ pub fn report<'a>(
         on_bound: &f.on_bound,
         lack_of_fit: f.lack_of_fit,
         exact: f.exact(),
+        sd_stated: f.stated_sd,
     }
 }
 
@@ -294,7 +300,7 @@ pub fn text(
     table(out, "  ", &rows)?;
     writeln!(out)?;
     let unit = if data.trace.is_some() { " N" } else { " (COR)" };
-    let rows = vec![
+    let mut rows = vec![
         vec![
             "λ = K_r/K_p, ζ".into(),
             format!("{}, {}", human(r.lambda, 4), human(r.zeta, 4)),
@@ -326,6 +332,18 @@ pub fn text(
             ),
         ],
     ];
+    // the intervals' scale where it is not the residuals' scatter (an rms of 0 beside an
+    // interval would read as a contradiction)
+    if f.stated_sd {
+        // drops: their sds are σ_R ∂e/∂R, from --rebound-height-sd, which the user gave
+        let from = if data.drops.is_empty() {
+            "from each row's cor_sd, taken as known (not the residuals' scatter)"
+        } else {
+            "from the stated reading σ_R (--rebound-height-sd), taken as known (not the \
+             residuals' scatter)"
+        };
+        rows.insert(2, vec!["uncertainty".into(), from.into()]);
+    }
     table(out, "  ", &rows)?;
     Ok(crate::cli::output::warning_lines(out, &f.warnings)?)
 }

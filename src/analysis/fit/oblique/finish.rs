@@ -43,6 +43,9 @@ fn intervals(
     warnings: &mut Vec<String>,
 ) -> Result<Vec<[f64; 2]>, MultiFitError> {
     let dof = sol.residuals.len().saturating_sub(sol.x.len());
+    if no_scatter(sol) {
+        return Ok(vec![[f64::NAN; 2]; sol.x.len()]);
+    }
     if !b.profiled {
         warnings.push(
             "the 95 % intervals are the Jacobian's (exp(θ ± t s_θ)): profiling them would pass \
@@ -75,6 +78,15 @@ fn intervals(
     Ok(ends)
 }
 
+/// Residuals all zero with degrees of freedom left: s² = 0 would make every standard error 0,
+/// an interval that says "certain" where the data show no scatter to estimate it from; as the
+/// other fits (`analysis::fit::multi`, tests/cli_fit_reports.rs), no standard error, no
+/// interval, a warning, and the values judged as an exact solve. tests/cli_fit_oblique.rs,
+/// `bounces_the_model_meets_exactly_leave_no_scatter`.
+fn no_scatter(sol: &lm::Solution) -> bool {
+    sol.residuals.len() > sol.x.len() && sol.residuals.iter().all(|r| *r == 0.0)
+}
+
 /// Estimates, intervals and the verdict at the minimum.
 pub(super) fn finish(
     p: &Problem,
@@ -94,22 +106,33 @@ pub(super) fn finish(
     let dof = sol.residuals.len().saturating_sub(vars);
     let mut warnings = Vec::new();
     let ci95 = intervals(p, &sol, &u, b, &mut warnings)?;
+    let no_scatter = no_scatter(&sol);
     let fitted: Vec<Estimate> = (0..vars)
-        .map(|j| Estimate {
-            name: NAMES[j],
-            unit: ["", "N/m", ""][j],
-            value: sol.x[j].exp(),
-            std_error: sol.x[j].exp() * u.covariance[(j, j)].sqrt(),
-            ci95: ci95[j],
+        .map(|j| {
+            let s = sol.x[j].exp() * u.covariance[(j, j)].sqrt();
+            Estimate {
+                name: NAMES[j],
+                unit: ["", "N/m", ""][j],
+                value: sol.x[j].exp(),
+                // a quantity the data do not see keeps its infinite variance (not pinned)
+                std_error: if no_scatter && s.is_finite() {
+                    f64::NAN
+                } else {
+                    s
+                },
+                ci95: ci95[j],
+            }
         })
         .collect();
     let on_bound: Vec<&'static str> = (0..vars)
         .filter(|&j| verdict::on_bound(sol.x[j], b.lo[j], b.hi[j]))
         .map(|j| NAMES[j])
         .collect();
+    // residuals all zero: judged as an exact solve, on what the data see (`verdict::pinned`)
+    let judged_dof = if no_scatter { 0 } else { dof };
     let not_pinned: Vec<&'static str> = fitted
         .iter()
-        .filter(|e| !verdict::pinned(e, dof, on_bound.contains(&e.name)))
+        .filter(|e| !verdict::pinned(e, judged_dof, on_bound.contains(&e.name)))
         .map(|e| e.name)
         .collect();
     let pred = p.predict(&sol.x).ok_or(MultiFitError::NoAnswer)?;
@@ -124,6 +147,9 @@ pub(super) fn finish(
         n.normal().cor * vy - q.vy_out
     }));
     let hint = "add rows that slide and rows that grip";
+    if no_scatter {
+        warnings.insert(0, verdict::NO_SCATTER.into());
+    }
     warnings.extend(verdict::pinning_warnings(dof, &u, NAMES[u.weakest], hint));
     if !sol.converged {
         warnings.push(verdict::not_converged(sol.iterations));
@@ -156,5 +182,6 @@ pub(super) fn finish(
         identified,
         not_pinned,
         on_bound,
+        no_scatter,
     })
 }
