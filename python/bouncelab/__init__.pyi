@@ -108,6 +108,13 @@ def run(
     history: bool = False,
     samples: Optional[int] = None,
     params: Optional[ParamSet] = None,
+    *,
+    mass: Optional[float] = None,
+    radius: Optional[float] = None,
+    k_p: Optional[float] = None,
+    damping: Optional[float] = None,
+    k_r: Optional[float] = None,
+    z_p: Optional[float] = None,
 ) -> Impact:
     """One impact of a preset, as ``bouncelab run --preset NAME``."""
 
@@ -404,6 +411,13 @@ def drop(
     law: Optional[Law] = None,
     params: Optional[ParamSet] = None,
     standard: Optional[str] = None,
+    *,
+    mass: Optional[float] = None,
+    radius: Optional[float] = None,
+    k_p: Optional[float] = None,
+    damping: Optional[float] = None,
+    k_r: Optional[float] = None,
+    z_p: Optional[float] = None,
 ) -> Drop:
     """A drop test, bounce by bounce, as ``bouncelab drop --format json``: released from rest at
     ``height`` (m, the bottom of the ball; default the standard's drop height, else 1 m);
@@ -459,6 +473,13 @@ def collide(
     target_preset: Optional[str] = None,
     law: Optional[Law] = None,
     params: Optional[ParamSet] = None,
+    *,
+    mass: Optional[float] = None,
+    radius: Optional[float] = None,
+    k_p: Optional[float] = None,
+    damping: Optional[float] = None,
+    k_r: Optional[float] = None,
+    z_p: Optional[float] = None,
 ) -> Collision:
     """The ball against a target of mass M (inf: the wall) moving at v_t toward it, rigid or
     with a surface K_s ∥ c_s, as ``bouncelab collide``; or against another preset ball
@@ -521,6 +542,12 @@ def oblique(
     params: Optional[ParamSet] = None,
     history: bool = False,
     samples: Optional[int] = None,
+    mass: Optional[float] = None,
+    radius: Optional[float] = None,
+    k_p: Optional[float] = None,
+    damping: Optional[float] = None,
+    k_r: Optional[float] = None,
+    z_p: Optional[float] = None,
 ) -> ObliqueImpact:
     """One oblique impact with friction and spin (docs/oblique.md), as ``bouncelab oblique``:
     angle to the surface in degrees (0 < angle ≤ 90), spin in rad/s (> 0 topspin); with

@@ -3,7 +3,7 @@
 //! names.
 
 use crate::same::Same;
-use crate::{error, preset_ball};
+use crate::{error, overridden_ball, overrides};
 use bouncelab::Ball;
 use bouncelab::api::CollisionReport;
 use bouncelab::catalog::Catalog;
@@ -207,11 +207,11 @@ impl From<CollisionReport> for Collision {
 /// [--target-speed V_T] [--target-stiffness K_S] [--target-damping C_S]`, or against another
 /// preset ball with `target_preset` (instead of `target_mass`). `target_mass = inf` is the wall.
 #[pyfunction]
-#[pyo3(signature = (preset="superball", v0=None, target_mass=None, target_speed=0.0, target_stiffness=f64::INFINITY, target_damping=0.0, target_preset=None, law=None, params=None))]
+#[pyo3(signature = (preset="superball", v0=None, target_mass=None, target_speed=0.0, target_stiffness=f64::INFINITY, target_damping=0.0, target_preset=None, law=None, params=None, *, mass=None, radius=None, k_p=None, damping=None, k_r=None, z_p=None))]
 // help()'s signature, which pyo3 writes "..." for f64::INFINITY in (shown "Ellipsis"): 1e999
 // is the literal Python reads as inf, shown "inf" (test_the_stub_and_help_give_each_…)
 #[pyo3(
-    text_signature = "(preset='superball', v0=None, target_mass=None, target_speed=0.0, target_stiffness=1e999, target_damping=0.0, target_preset=None, law=None, params=None)"
+    text_signature = "(preset='superball', v0=None, target_mass=None, target_speed=0.0, target_stiffness=1e999, target_damping=0.0, target_preset=None, law=None, params=None, *, mass=None, radius=None, k_p=None, damping=None, k_r=None, z_p=None)"
 )]
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn collide(
@@ -224,6 +224,12 @@ pub(crate) fn collide(
     target_preset: Option<&str>,
     law: Option<&str>,
     params: Option<&str>,
+    mass: Option<f64>,
+    radius: Option<f64>,
+    k_p: Option<f64>,
+    damping: Option<f64>,
+    k_r: Option<f64>,
+    z_p: Option<f64>,
 ) -> PyResult<Collision> {
     if target_damping != 0.0 && !target_damping.is_nan() && target_stiffness == f64::INFINITY {
         // refused as the command line refuses --target-damping without --target-stiffness:
@@ -234,7 +240,13 @@ pub(crate) fn collide(
             bouncelab::text::number(target_damping)
         )));
     }
-    let ball = preset_ball(preset, params, law, v0)?;
+    let ball = overridden_ball(
+        preset,
+        params,
+        law,
+        v0,
+        &overrides(mass, radius, k_p, damping, k_r, z_p),
+    )?;
     let surface = (target_stiffness, target_damping);
     let report = match (target_mass, target_preset) {
         (None, Some(name)) => {

@@ -2,7 +2,7 @@
 //! --format json` (src/cli/drop.rs), under its keys.
 
 use crate::impact::interval_columns;
-use crate::{array, error, interrupt, preset_ball, value_error};
+use crate::{array, error, interrupt, overridden_ball, overrides, value_error};
 use bouncelab::api::Ball;
 use bouncelab::drop::standards::{self, Verdict};
 use bouncelab::drop::{Air, Bounce, DropRun, DropSetup};
@@ -23,7 +23,7 @@ const DEFAULT_HEIGHT: f64 = 1.0;
 /// is judged unless named, as on the command line; a preset's own is the one whose `balls`
 /// list it in `standards()`.
 #[pyfunction(name = "drop")]
-#[pyo3(signature = (preset="superball", height=None, bounces=10, min_rebound=0.001, drag=true, drag_coefficient=None, air_density=None, law=None, params=None, standard=None))]
+#[pyo3(signature = (preset="superball", height=None, bounces=10, min_rebound=0.001, drag=true, drag_coefficient=None, air_density=None, law=None, params=None, standard=None, *, mass=None, radius=None, k_p=None, damping=None, k_r=None, z_p=None))]
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn drop_test<'py>(
     py: Python<'py>,
@@ -37,6 +37,12 @@ pub(crate) fn drop_test<'py>(
     law: Option<&str>,
     params: Option<&str>,
     standard: Option<&str>,
+    mass: Option<f64>,
+    radius: Option<f64>,
+    k_p: Option<f64>,
+    damping: Option<f64>,
+    k_r: Option<f64>,
+    z_p: Option<f64>,
 ) -> PyResult<Bound<'py, PyDict>> {
     if !drag && (drag_coefficient.is_some() || air_density.is_some()) {
         // as the command line refuses --no-drag with --drag-coefficient or --air-density
@@ -49,7 +55,13 @@ pub(crate) fn drop_test<'py>(
         .map(standards::find)
         .transpose()
         .map_err(value_error)?;
-    let ball = preset_ball(preset, params, law, None)?;
+    let ball = overridden_ball(
+        preset,
+        params,
+        law,
+        None,
+        &overrides(mass, radius, k_p, damping, k_r, z_p),
+    )?;
     let radius = ball.drop_ball().radius;
     let air = drag.then(|| Air {
         density: air_density.unwrap_or(Air::default().density),

@@ -32,7 +32,9 @@ mod sweeps;
 // the helpers every call uses, by the names the modules import them by
 pub(crate) use arguments::{array, floats, free_names, frozen_array, history_samples, law, source};
 use impact::Impact;
-pub(crate) use preset_balls::{entry, load_catalog, preset_ball, shared_preset_ball};
+pub(crate) use preset_balls::{
+    entry, load_catalog, overridden_ball, overrides, preset_ball, shared_preset_ball,
+};
 
 create_exception!(
     bouncelab,

@@ -1,7 +1,7 @@
 //! `oblique`: one oblique impact with friction and spin (docs/oblique.md), as `bouncelab
 //! oblique --format json`: the same fields, by the same names.
 
-use crate::{error, frozen_array, history_samples, preset_ball};
+use crate::{error, frozen_array, history_samples, overridden_ball, overrides};
 use bouncelab::api::ObliqueSpec;
 use bouncelab::oblique::ObliqueResponse;
 use bouncelab::{Ball, BallError};
@@ -242,7 +242,7 @@ fn build(
 /// [--spin W] --friction MU [--tangential-stiffness K_T] [--inertia-factor KAPPA] [--law L]
 /// [--history --samples N]`.
 #[pyfunction]
-#[pyo3(signature = (preset="superball", *, angle, friction, v0=None, spin=0.0, tangential_stiffness=None, inertia_factor=None, law=None, params=None, history=false, samples=None))]
+#[pyo3(signature = (preset="superball", *, angle, friction, v0=None, spin=0.0, tangential_stiffness=None, inertia_factor=None, law=None, params=None, history=false, samples=None, mass=None, radius=None, k_p=None, damping=None, k_r=None, z_p=None))]
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn oblique(
     py: Python<'_>,
@@ -257,6 +257,12 @@ pub(crate) fn oblique(
     params: Option<&str>,
     history: bool,
     samples: Option<usize>,
+    mass: Option<f64>,
+    radius: Option<f64>,
+    k_p: Option<f64>,
+    damping: Option<f64>,
+    k_r: Option<f64>,
+    z_p: Option<f64>,
 ) -> PyResult<ObliqueImpact> {
     // `run`'s rule: samples only with a history, and at least two of them (the library's
     // `oblique` reads 0 as "no history", which history=True, samples=0 must not ask for)
@@ -264,7 +270,13 @@ pub(crate) fn oblique(
     if history && samples < 2 {
         return Err(error(BallError::Samples(samples)));
     }
-    let ball = preset_ball(preset, params, law, v0)?;
+    let ball = overridden_ball(
+        preset,
+        params,
+        law,
+        v0,
+        &overrides(mass, radius, k_p, damping, k_r, z_p),
+    )?;
     let spec = ObliqueSpec {
         v: v0,
         angle_deg: angle,

@@ -2,6 +2,7 @@
 //! catalog_cache.rs), a preset's ball with the caller's choices, and `presets()`.
 
 use crate::{catalog_cache, error, law, source};
+use bouncelab::api::Overrides;
 use bouncelab::catalog::{Catalog, Entry, Origin};
 use bouncelab::{Ball, BallError};
 use pyo3::prelude::*;
@@ -34,6 +35,45 @@ pub(crate) fn preset_ball(
     let params = params.map(source).transpose()?;
     let law_ = law_name.map(law).transpose()?;
     Ball::from_entry(entry, params, law_, v0).map_err(error)
+}
+
+/// The command line's `--mass`, `--radius`, `--k-p`, `--damping`, `--k-r`, `--z-p` from the
+/// keyword arguments of the same names (SI units; `None` keeps the preset's).
+pub(crate) fn overrides(
+    mass: Option<f64>,
+    radius: Option<f64>,
+    k_p: Option<f64>,
+    damping: Option<f64>,
+    k_r: Option<f64>,
+    z_p: Option<f64>,
+) -> Overrides {
+    Overrides {
+        mass,
+        radius,
+        k_p,
+        damping,
+        k_r,
+        z_p,
+    }
+}
+
+/// [`preset_ball`] with parameter overrides set over the preset's, each checked and named as
+/// the command line checks them (`Ball::from_entry_with`).
+pub(crate) fn overridden_ball(
+    preset: &str,
+    params: Option<&str>,
+    law_name: Option<&str>,
+    v0: Option<f64>,
+    set: &Overrides,
+) -> PyResult<Ball> {
+    if !set.any() {
+        return preset_ball(preset, params, law_name, v0);
+    }
+    let cat = load_catalog()?;
+    let entry = entry(&cat, preset)?;
+    let params = params.map(source).transpose()?;
+    let law_ = law_name.map(law).transpose()?;
+    Ball::from_entry_with(entry, params, law_, v0, set).map_err(error)
 }
 
 /// A preset ball with the command line's `--params` and `--law` applied, at the preset's

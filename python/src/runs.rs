@@ -2,16 +2,19 @@
 //! answer an `Impact` (impact.rs, its run impact_run.rs).
 
 use crate::impact::{Impact, impact};
-use crate::{error, history_samples, law, preset_ball, shared_preset_ball};
+use crate::{
+    error, history_samples, law, overridden_ball, overrides, shared_preset_ball, value_error,
+};
 use bouncelab::Ball;
 use bouncelab::model::params::ImpactParams;
 use pyo3::prelude::*;
 use std::sync::Arc;
 
 /// One impact of a preset, as `bouncelab run --preset NAME [--law L] [--v0 V] [--lambda L]
-/// [--zeta Z] [--params SET] [--history --samples N]`.
+/// [--zeta Z] [--params SET] [--history --samples N] [--mass M] [--radius R] [--k-p K_P]
+/// [--damping C] [--k-r K_R] [--z-p Z_P]`.
 #[pyfunction]
-#[pyo3(signature = (preset="superball", law=None, v0=None, lambda_=None, zeta=None, history=false, samples=None, params=None))]
+#[pyo3(signature = (preset="superball", law=None, v0=None, lambda_=None, zeta=None, history=false, samples=None, params=None, *, mass=None, radius=None, k_p=None, damping=None, k_r=None, z_p=None))]
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn run(
     py: Python<'_>,
@@ -23,11 +26,29 @@ pub(crate) fn run(
     history: bool,
     samples: Option<usize>,
     params: Option<&str>,
+    mass: Option<f64>,
+    radius: Option<f64>,
+    k_p: Option<f64>,
+    damping: Option<f64>,
+    k_r: Option<f64>,
+    z_p: Option<f64>,
 ) -> PyResult<Py<Impact>> {
     let samples = history_samples(history, samples)?;
-    let mut ball = match v0 {
-        None => shared_preset_ball(preset, params, law)?,
-        Some(_) => Arc::new(preset_ball(preset, params, law, v0)?),
+    let set = overrides(mass, radius, k_p, damping, k_r, z_p);
+    // one parameter set twice is refused, as the command line refuses --k-r with --lambda
+    if k_r.is_some() && lambda_.is_some() {
+        return Err(value_error(
+            "k_r and lambda_ both set K_r: give one of them".into(),
+        ));
+    }
+    if damping.is_some() && zeta.is_some() {
+        return Err(value_error(
+            "damping and zeta both set c: give one of them".into(),
+        ));
+    }
+    let mut ball = match (v0, set.any()) {
+        (None, false) => shared_preset_ball(preset, params, law)?,
+        _ => Arc::new(overridden_ball(preset, params, law, v0, &set)?),
     };
     // λ or ζ given: a ball of its own (with neither, the ball is as `with_lambda_zeta(None,
     // None)` leaves it: checked when built)
