@@ -204,13 +204,9 @@ pub(super) fn root_quick<const L: usize>(c: &[f64; L], target: f64, end: f64) ->
 /// Σ c_k h^k by Estrin's scheme: the pairs c_{2i} + c_{2i+1} h, then the pairs of those with
 /// h², and so on: ⌈log₂ L⌉ dependent steps instead of Horner's L − 1. Its rounding is
 /// bounded as Horner's (both sum the same products, each with at most ⌈log₂ L⌉ or L
-/// roundings), and tests/taylor.rs holds the answers it gives to the references. Generic so
-/// that `super::batch`'s lanes run its operations in its order (the same bits).
+/// roundings), and tests/taylor.rs holds the answers it gives to the references.
 #[inline(always)]
-pub(super) fn eval_estrin<T, const L: usize>(c: &[T; L], h: T) -> T
-where
-    T: Copy + std::ops::Add<Output = T> + std::ops::Mul<Output = T>,
-{
+fn eval_estrin<const L: usize>(c: &[f64; L], h: f64) -> f64 {
     let mut b = *c;
     let (mut n, mut x) = (L, h);
     while n > 1 {
@@ -265,9 +261,9 @@ fn root_with<const L: usize>(
         let d = slope(c, h);
         let mut next = h - v / d;
         if quick && (next - h).abs() <= 4.0 * f64::EPSILON * h.abs() {
-            // Newton's step is within h's rounding: h is the root. [`root`] goes on, and a
-            // step that rounding puts just outside the bracket sends it to bisect back over
-            // some thirty halvings (11 sums a root on average where 4 do: twelfth session)
+            // Newton's step is within h's rounding: h is the root to the rounding. Going on
+            // as [`root`] does, a step that rounding puts just outside the bracket would
+            // bisect back over some thirty halvings to the same root
             return if next > lo && next < hi { next } else { h };
         }
         if !(next > lo && next < hi) {
