@@ -610,6 +610,12 @@ def monte_carlo(
     params: Optional[ParamSet] = None,
     return_samples: bool = False,
     correlate: Optional[Union[str, dict[str, float]]] = None,
+    mass: Optional[float] = None,
+    radius: Optional[float] = None,
+    k_p: Optional[float] = None,
+    damping: Optional[float] = None,
+    k_r: Optional[float] = None,
+    z_p: Optional[float] = None,
 ) -> MonteCarlo:
     """COR, max_force and contact_time over ``samples`` samples of the preset's parameters
     spread by ``vary`` (fractions: {"k_p": 0.05}, or "k_p=5%,…"), as ``bouncelab mc --format

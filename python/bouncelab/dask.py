@@ -56,6 +56,12 @@ def monte_carlo(
     law: Optional[str] = None,
     params: Optional[str] = None,
     correlate: Optional[Any] = None,
+    mass: Optional[float] = None,
+    radius: Optional[float] = None,
+    k_p: Optional[float] = None,
+    damping: Optional[float] = None,
+    k_r: Optional[float] = None,
+    z_p: Optional[float] = None,
 ) -> Dict[str, Any]:
     """``bouncelab.monte_carlo`` with its samples computed on the workers of ``client`` (a
     ``distributed.Client``), ``chunk`` samples a task; the same dict, the same numbers.
@@ -75,6 +81,12 @@ def monte_carlo(
         law=law,
         params=params,
         correlate=dict(correlate) if isinstance(correlate, Mapping) else correlate,
+        mass=mass,
+        radius=radius,
+        k_p=k_p,
+        damping=damping,
+        k_r=k_r,
+        z_p=z_p,
     )
     if not isinstance(chunk, int) or chunk < 1:
         raise ValueError(f"invalid chunk: {chunk!r} (must be a whole number ≥ 1)")

@@ -5,12 +5,12 @@
 //! seed and its index alone (docs/scale.md), so the chunks give the single call's samples and
 //! the merge its numbers, bit for bit.
 
-use crate::{array, error, preset_ball};
+use crate::{array, error, overridden_ball, overrides};
 use bouncelab::analysis::mc::{
     Dist, McError, McSpec, McSummary, Samples, Spread, Stats, Varied, parse_correlate, parse_vary,
     summary,
 };
-use bouncelab::api::MonteCarlo;
+use bouncelab::api::{MonteCarlo, Overrides};
 use numpy::{PyArray1, PyReadonlyArray1};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
@@ -53,8 +53,9 @@ fn request(
     law: Option<&str>,
     params: Option<&str>,
     correlate: Option<&Bound<'_, PyAny>>,
+    set: &Overrides,
 ) -> PyResult<Request> {
-    let ball = preset_ball(preset, params, law, v0)?;
+    let ball = overridden_ball(preset, params, law, v0, set)?;
     let dist = Dist::parse(dist).ok_or_else(|| {
         PyValueError::new_err(format!(
             "invalid dist: '{dist}' (choose from normal, uniform, lognormal)"
@@ -176,7 +177,7 @@ fn report<'py>(py: Python<'py>, r: &Request, s: &McSummary) -> PyResult<Bound<'p
 
 /// A Monte Carlo function of Python's: the arguments all three share (`preset`, `vary`,
 /// `samples`, `seed`, `dist`, `v0`, `law`, `params`, then the function's own, then
-/// `correlate`), keyword-only, read once into the [`Request`] `$r` its body starts from.
+/// `correlate` and the command line's ball overrides `mass` … `z_p`), keyword-only, read once into the [`Request`] `$r` its body starts from.
 /// `samples` has a default where one is given (`monte_carlo`'s 10 000); the Dask halves take
 /// it as the run's, always given. Written once here so that the single call and the Dask path
 /// cannot drift apart in a name or a default (`test_dask*.py` hold their answers equal).
@@ -190,7 +191,7 @@ macro_rules! mc_pyfunction {
     ) => {
         $(#[$attr])*
         #[pyfunction]
-        #[pyo3(signature = (*, preset="superball", vary, samples $(= $samples)?, seed=0, dist="normal", v0=None, law=None, params=None, $($arg $(= $default)?,)* correlate=None))]
+        #[pyo3(signature = (*, preset="superball", vary, samples $(= $samples)?, seed=0, dist="normal", v0=None, law=None, params=None, $($arg $(= $default)?,)* correlate=None, mass=None, radius=None, k_p=None, damping=None, k_r=None, z_p=None))]
         #[allow(clippy::too_many_arguments)]
         pub(crate) fn $name<$lt>(
             $py: Python<$lt>,
@@ -204,6 +205,12 @@ macro_rules! mc_pyfunction {
             params: Option<&str>,
             $($arg: $ty,)*
             correlate: Option<Bound<$lt, PyAny>>,
+            mass: Option<f64>,
+            radius: Option<f64>,
+            k_p: Option<f64>,
+            damping: Option<f64>,
+            k_r: Option<f64>,
+            z_p: Option<f64>,
         ) -> $ret {
             let $r = request(
                 preset,
@@ -215,6 +222,7 @@ macro_rules! mc_pyfunction {
                 law,
                 params,
                 correlate.as_ref(),
+                &overrides(mass, radius, k_p, damping, k_r, z_p),
             )?;
             $body
         }

@@ -58,3 +58,24 @@ def test_one_parameter_set_twice_is_refused():
     # either alone answers
     assert bouncelab.run(preset="tennis", lambda_=0.5).cor > 0
     assert bouncelab.run(preset="tennis", zeta=0.1).cor > 0
+
+
+def test_monte_carlo_spreads_the_overridden_ball_as_the_command_line():
+    kw = dict(preset="tennis", vary={"k_p": 0.05, "c": 0.05}, samples=2000, seed=5)
+    m = bouncelab.monte_carlo(**kw, **SET)
+    want = cli_json("mc", "--preset", "tennis", "--vary", "k_p=5%,c=5%", "--samples", "2000",
+                    "--seed", "5", *FLAGS, "--format", "json")
+    same(m, want)
+    assert m["stats"]["cor"]["mean"] != bouncelab.monte_carlo(**kw)["stats"]["cor"]["mean"]
+
+
+def test_dask_spreads_the_overridden_ball_as_the_single_call():
+    distributed = pytest.importorskip("distributed")
+    import bouncelab.dask
+
+    kw = dict(preset="tennis", vary={"k_p": 0.05}, samples=5_003, seed=9, **SET)
+    one = bouncelab.monte_carlo(**kw)
+    with distributed.LocalCluster(
+        n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None
+    ) as cluster, distributed.Client(cluster) as client:
+        assert bouncelab.dask.monte_carlo(client, **kw, chunk=2_000) == one
