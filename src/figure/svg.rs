@@ -370,7 +370,7 @@ pub(super) fn draw_titles<DB: DrawingBackend>(
 }
 
 /// The width (CSS pixels) `fig`'s y tick labels and description take left of its plot
-/// ([`y_label_area`]).
+/// (`y_label_area`: 70, or wider for wide tick labels).
 pub fn label_area(fig: &Figure) -> i32 {
     y_label_area(&ticks(fig, false, Room::Picture))
 }
