@@ -12,7 +12,7 @@
 use crate::measured::{self, Data, MeasuredError};
 use std::collections::HashMap;
 
-pub use super::batch_stats::{BatchStats, stats};
+pub use super::batch_stats::{BatchStats, stats, stats_in};
 
 /// Header names of the column naming each ball (compared in lower case).
 pub const ID_COLUMN: &str = "id";

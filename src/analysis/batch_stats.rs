@@ -36,8 +36,11 @@ pub struct BatchStats {
     /// Process capability index against the window (NaN below two balls, or with s = 0, or a
     /// window without bounds).
     pub cpk: f64,
-    /// The mean's 95 % interval, x̄ ± t₀.₉₇₅(n − 1) s/√n (NaN below two balls).
+    /// The mean's 95 % interval, x̄ ± t₀.₉₇₅(n − 1) s/√n (NaN below two balls), clipped to
+    /// the range the measured value can take (a COR's [0, 1]; see [`stats_in`]).
     pub mean_ci: [f64; 2],
+    /// Whether the Student interval left that range and `mean_ci` is its clipped part.
+    pub mean_ci_clipped: bool,
     /// Cpk's 95 % interval (Bissell; NaN where Cpk is): how far the lot's capability may be
     /// from what these balls show.
     pub cpk_ci: [f64; 2],
@@ -55,8 +58,18 @@ pub fn cpk_interval(cpk: f64, n: usize) -> [f64; 2] {
 }
 
 /// The statistics of `values` (the measured value of each judged ball; NaN and infinite
-/// values are not measurements and are left out) against `window` [lo, hi].
+/// values are not measurements and are left out) against `window` [lo, hi], for a value
+/// without bounds of its own (see [`stats_in`]).
 pub fn stats(values: &[f64], window: [Option<f64>; 2]) -> BatchStats {
+    stats_in(values, window, [f64::NEG_INFINITY, f64::INFINITY])
+}
+
+/// As [`stats`], for a measured value that lies in `range` (a COR in [0, 1], a rebound
+/// height in [0, ∞)): the mean's Student interval is clipped to `range`. Clipping keeps its
+/// coverage exactly — the lot's true mean lies in `range`, so the clipped interval holds it
+/// whenever the Student interval does — where a rescaled (e.g. logit) interval would need
+/// every value inside the open range and change what the interval means.
+pub fn stats_in(values: &[f64], window: [Option<f64>; 2], range: [f64; 2]) -> BatchStats {
     let v: Vec<f64> = values.iter().copied().filter(|x| x.is_finite()).collect();
     let n = v.len();
     let mean = if n == 0 {
@@ -81,6 +94,17 @@ pub fn stats(values: &[f64], window: [Option<f64>; 2]) -> BatchStats {
     } else {
         f64::NAN
     };
+    let student = mean_interval(n, mean, sd).1;
+    // f64::max would turn a NaN end (too few balls) into the range's bound: clip numbers only
+    let clip = |x: f64| {
+        if x.is_nan() {
+            x
+        } else {
+            x.clamp(range[0], range[1])
+        }
+    };
+    let mean_ci = student.map(clip);
+    let mean_ci_clipped = student[0] < range[0] || student[1] > range[1];
     let min = v.iter().copied().fold(f64::INFINITY, f64::min);
     let max = v.iter().copied().fold(f64::NEG_INFINITY, f64::max);
     BatchStats {
@@ -91,7 +115,8 @@ pub fn stats(values: &[f64], window: [Option<f64>; 2]) -> BatchStats {
         max: if n == 0 { f64::NAN } else { max },
         failures,
         cpk,
-        mean_ci: mean_interval(n, mean, sd).1,
+        mean_ci,
+        mean_ci_clipped,
         cpk_ci: cpk_interval(cpk, n),
     }
 }
@@ -128,10 +153,33 @@ mod tests {
         assert!(cpk_interval(f64::NAN, 50)[0].is_nan() && cpk_interval(1.0, 1)[1].is_nan());
     }
 
+    /// Two CORs 0.576 and 0.683: x̄ = 0.6295, s = 0.075660, t₀.₉₇₅(1) = 12.7062, so Student
+    /// gives 0.6295 ± 0.67980 = −0.0503 … 1.3093; a COR's mean lies in [0, 1], so 0 … 1.
+    #[test]
+    fn a_cor_mean_interval_stays_in_zero_one() {
+        let open = stats(&[0.576, 0.683], [None, Some(0.7)]);
+        assert!(open.mean_ci[0] < 0.0 && open.mean_ci[1] > 1.0 && !open.mean_ci_clipped);
+        assert!((open.mean_ci[0] + 0.0503).abs() < 1e-4, "{open:?}");
+        let cor = stats_in(&[0.576, 0.683], [None, Some(0.7)], [0.0, 1.0]);
+        assert_eq!(cor.mean_ci, [0.0, 1.0]);
+        assert!(cor.mean_ci_clipped);
+        // an interval inside the range is left as it is
+        let v = [0.70, 0.71, 0.72, 0.70, 0.71];
+        let inside = stats_in(&v, [None, Some(0.8)], [0.0, 1.0]);
+        assert_eq!(inside.mean_ci, stats(&v, [None, Some(0.8)]).mean_ci);
+        assert!(!inside.mean_ci_clipped);
+        // one side only: a height's interval cut at 0, its upper end kept
+        let h = stats_in(&[0.05, 0.6], [Some(0.2), None], [0.0, f64::INFINITY]);
+        assert!(
+            h.mean_ci[0] == 0.0 && h.mean_ci[1] > 3.0 && h.mean_ci_clipped,
+            "{h:?}"
+        );
+    }
+
     #[test]
     fn too_few_balls_give_no_spread() {
-        let s = stats(&[1.2], [Some(1.0), Some(2.0)]);
-        assert!(s.sd.is_nan() && s.cpk.is_nan() && s.n == 1);
+        let s = stats_in(&[1.2], [Some(1.0), Some(2.0)], [0.0, 2.0]);
+        assert!(s.sd.is_nan() && s.cpk.is_nan() && s.n == 1 && s.mean_ci[0].is_nan());
         let s = stats(&[], [Some(1.0), Some(2.0)]);
         assert!(s.mean.is_nan() && s.min.is_nan() && s.n == 0);
         let s = stats(&[1.5, 1.5], [Some(1.0), Some(2.0)]);

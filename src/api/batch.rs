@@ -4,7 +4,7 @@
 //! What `bouncelab batch` writes and `bouncelab.batch` returns.
 
 use super::Ball;
-use crate::analysis::batch::{BatchStats, stats};
+use crate::analysis::batch::{BatchStats, stats_in};
 use crate::analysis::fit::verdict::no_answer_reasons;
 use crate::analysis::fit::{FitData, MultiFit, Param};
 use crate::drop::standards::{Standard, Test};
@@ -85,6 +85,15 @@ impl BallOutcome {
             warnings: Vec::new(),
             error: None,
         }
+    }
+}
+
+/// The range what a standard measures can take: a COR lies in [0, 1], a rebound height at
+/// or above the plate, [0, ∞) (the lot mean's interval is clipped to it: analysis::batch_stats).
+pub fn quantity_range(s: &Standard) -> [f64; 2] {
+    match s.test {
+        Test::Drop { .. } => [0.0, f64::INFINITY],
+        Test::Cor { .. } => [0.0, 1.0],
     }
 }
 
@@ -345,7 +354,7 @@ impl<'a> BatchReport<'a> {
                 window: standard.window,
             },
             summary: BatchSummary {
-                stats: stats(&values, standard.window),
+                stats: stats_in(&values, standard.window, quantity_range(standard)),
                 balls: balls.len(),
                 identified: balls.iter().filter(|b| b.identified).count(),
                 no_answer: balls.iter().filter(|b| b.verdict.is_none()).count(),

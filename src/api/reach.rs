@@ -194,6 +194,39 @@ impl Tally {
 /// given for it alone), so no cell passes silently. `None` otherwise, for a normalized map,
 /// or with no radius known (NaN). tests/answer_reach.rs.
 pub fn map_displacement_warning(map: &Map, radius: f64) -> Option<String> {
+    let tally = map_tally(map, radius)?;
+    map_reach_text(&tally, radius, map.cells().len())
+}
+
+/// The note a map's picture carries of its cells past `radius` (m), the figure's short form
+/// of [`super::map_indentation_warning`] and [`map_displacement_warning`] together (one
+/// tally, the same cells): `z_m > radius 21.55 mm in 8 of 9 cells` (or `centre's α_max`, or
+/// both, by which passes), and the cells not checked. `None` when every cell is within, for
+/// a normalized map, or with no radius known. tests/figure_map_radius.rs.
+pub fn map_radius_note(map: &Map, radius: f64) -> Option<String> {
+    let t = map_tally(map, radius)?;
+    let (r, total) = (sig(radius * 1e3, 4), map.cells().len());
+    let what = match (t.alone, t.past) {
+        (_, 0) => None,
+        (0, _) => Some("z_m"),
+        (a, p) if a == p => Some("centre's α_max"),
+        _ => Some("z_m or centre's α_max"),
+    };
+    let past = what.map(|w| format!("{w} > radius {r} mm in {} of {total} cells", t.past));
+    let unchecked = (t.unchecked > 0).then(|| {
+        format!(
+            "α_max not checked against radius {r} mm in {} of {total} cells",
+            t.unchecked
+        )
+    });
+    match (past, unchecked) {
+        (Some(p), Some(u)) => Some(format!("{p}; {u}")),
+        (p, u) => p.or(u),
+    }
+}
+
+/// Every cell of a dimensional `map` read against `radius` (`map_displacement_warning`).
+fn map_tally(map: &Map, radius: f64) -> Option<Tally> {
     use rayon::prelude::*;
     let spec = &map.spec;
     if spec.normalized || !radius.is_finite() {
@@ -253,7 +286,7 @@ pub fn map_displacement_warning(map: &Map, radius: f64) -> Option<String> {
         .into_par_iter()
         .map(read)
         .reduce(Tally::default, Tally::add);
-    map_reach_text(&tally, radius, map.cells().len())
+    Some(tally)
 }
 
 /// The map's centre warning from its `tally` over `total` cells (`map_displacement_warning`).

@@ -343,14 +343,20 @@ fn text(
         }
     };
     // an estimate's 95 % interval beside it, where there is one (analysis::batch_stats)
-    let within = |ci: [f64; 2], f: &dyn Fn(f64) -> String| {
+    let within = |ci: [f64; 2], f: &dyn Fn(f64) -> String, note: &str| {
         if ci.iter().all(|x| x.is_finite()) {
-            format!(" (95 % {} … {})", f(ci[0]), f(ci[1]))
+            format!(" (95 % {} … {}{note})", f(ci[0]), f(ci[1]))
         } else {
             String::new()
         }
     };
     let c = |x: f64| given(x, 3);
+    // the Student interval cut to [0, 1] (a COR) or [0, ∞) (a height): say so beside it
+    let clipped = match (st.mean_ci_clipped, drop) {
+        (false, _) => "",
+        (true, false) => "; Student's t clipped to 0 … 1, where a COR lies",
+        (true, true) => "; Student's t clipped at 0 m, where a rebound lies",
+    };
     writeln!(out)?;
     writeln!(
         out,
@@ -358,7 +364,7 @@ fn text(
         quantity.replace('_', " "),
         st.n,
         v(st.mean),
-        within(st.mean_ci, &v),
+        within(st.mean_ci, &v, clipped),
         v(st.sd),
         v(st.min),
         v(st.max)
@@ -373,7 +379,7 @@ fn text(
         } else {
             "–".into()
         },
-        within(st.cpk_ci, &c),
+        within(st.cpk_ci, &c, ""),
         s.identified,
         s.balls
     )?;

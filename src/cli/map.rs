@@ -157,11 +157,13 @@ pub fn run(a: &MapArgs, out: &mut dyn Write) -> anyhow::Result<()> {
                     Some(p) => format!("{p} at v0 = {} m/s", num(ball.v0)),
                     None => "normalized ball (m = K_p = v0 = 1)".into(),
                 },
+                radius_note: crate::api::map_radius_note(&map, ball.radius),
             };
             crate::figure::svg_map::render(&map, &view)?
         }
     };
-    // JSON carries them; CSV rows and the picture have no place for them: stderr
+    // JSON carries them; CSV rows have no place for them, the picture only for its short
+    // note (radius_note): stderr
     if a.format != MapFormat::Json {
         super::output::warnings_to_stderr(&warnings);
     }

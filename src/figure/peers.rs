@@ -3,6 +3,7 @@
 //! v0. Built from solver output like [`super::paper`]; nothing here touches files.
 
 use super::{Axis, BLACK, Corner, Figure, GREY, Kind, Marker, Series, Style};
+use crate::analysis::sweep::cor_vs_velocity;
 use crate::ball::Ball;
 use crate::model::params::ImpactParams;
 use crate::peers::calibrate::{self, christoforou_yigit_cor};
@@ -31,11 +32,10 @@ fn peer_ball(b: &Ball) -> PeerBall {
 /// calibration (falls with speed: the calibration holds at v0 only).
 pub fn cor_velocity(b: &Ball, target: f64, speeds: &[f64]) -> Result<Figure, String> {
     let ball = peer_ball(b);
-    let cy: Vec<(f64, f64)> = speeds
-        .iter()
-        .map(|&v| christoforou_yigit_cor(&b.params, b.law, v).map(|e| (v, e)))
-        .collect::<Result<_, _>>()
-        .map_err(error)?;
+    // the Christoforou–Yigit impacts whole (the COR is christoforou_yigit_cor's, one
+    // simulate each), so that the curve past the radius can say so (push_speed_radius_note)
+    let rows = cor_vs_velocity(&b.params, b.law, speeds).map_err(error)?;
+    let cy: Vec<(f64, f64)> = rows.iter().map(|r| (r.v0, r.cor)).collect();
     let mut series = vec![
         Series::new(
             "Christoforou–Yigit",
@@ -107,6 +107,7 @@ pub fn cor_velocity(b: &Ball, target: f64, speeds: &[f64]) -> Result<Figure, Str
     );
     fig.screen_title = format!("peers: COR e vs v0 [m/s] · {}", b.name);
     fig.legend_corner = Corner::BottomLeft;
+    super::history::push_speed_radius_note(&mut fig, b, &rows);
     Ok(fig)
 }
 
@@ -137,6 +138,7 @@ pub fn force_time(b: &Ball, target: f64, samples: usize) -> Result<Figure, Strin
         series,
     );
     fig.screen_title = format!("peers: F [N] vs t [ms] · {}", b.name);
+    super::history::push_radius_note(&mut fig, b, &r);
     Ok(fig)
 }
 

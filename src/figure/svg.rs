@@ -369,8 +369,21 @@ pub(super) fn draw_titles<DB: DrawingBackend>(
     Ok(head + 2)
 }
 
+/// The width (CSS pixels) `fig`'s y tick labels and description take left of its plot
+/// (`y_label_area`: 70, or wider for wide tick labels).
+pub fn label_area(fig: &Figure) -> i32 {
+    y_label_area(&ticks(fig, false, Room::Picture))
+}
+
 /// The figure as an SVG document of `WIDTH` × `HEIGHT` CSS pixels.
 pub fn render(fig: &Figure) -> Result<String, RenderError> {
+    render_aligned(fig, 0)
+}
+
+/// [`render`] with at least `left` CSS pixels left of the plot: figures stacked one above
+/// the other (`fit --plot`) take the widest of their [`label_area`]s, so that their plots
+/// start at one x and share the x axis (tests/figure_room.rs).
+pub fn render_aligned(fig: &Figure, left: i32) -> Result<String, RenderError> {
     let mut buf = String::new();
     {
         let size = (
@@ -392,7 +405,7 @@ pub fn render(fig: &Figure) -> Result<String, RenderError> {
             .margin_right(px(30))
             .margin_top(px(6))
             .x_label_area_size(px(52))
-            .y_label_area_size(px(y_label_area(&ty)))
+            .y_label_area_size(px(y_label_area(&ty).max(left)))
             .build_cartesian_2d(tx.clone(), ty.clone())
             .map_err(err)?;
         let (fx, fy) = (|v: &f64| tx.label(*v), |v: &f64| ty.label(*v));

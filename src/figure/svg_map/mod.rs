@@ -26,6 +26,10 @@ pub struct View<'a> {
     pub own: Option<(f64, f64)>,
     /// Which ball, for the subtitle: "superball at v0 = 3.12 m/s".
     pub title_ball: String,
+    /// The cells past the ball's radius (`api::map_radius_note`), a note line of the
+    /// subtitle as on the impact figures (`figure::history::OUTSIDE`); stderr and JSON give
+    /// the warnings in full.
+    pub radius_note: Option<String>,
 }
 
 /// Room for the colour bar at the right of the plot, CSS pixels.
@@ -56,9 +60,16 @@ fn axis_of(a: &crate::map::Axis, label: &str, key: &str) -> Axis {
 fn frame(map: &Map, v: &View) -> Figure {
     let (label, _) = unit(v.quantity, map.spec.normalized);
     let targets = v.targets.map_or(String::new(), |t| format!("; where {t}"));
+    let note = v.radius_note.as_ref().map_or(String::new(), |n| {
+        format!("; {}{n}", crate::figure::history::OUTSIDE)
+    });
     Figure::new(
         format!("Design map: {label} over (λ, ζ)"),
-        format!("{}, {} law{targets}", v.title_ball, map.spec.law.name()),
+        format!(
+            "{}, {} law{targets}{note}",
+            v.title_ball,
+            map.spec.law.name()
+        ),
         axis_of(&map.spec.zeta, "ζ = √(m K_p)/(2c)", "zeta"),
         axis_of(&map.spec.lambda, "λ = K_r/K_p", "lambda"),
         layers(v),

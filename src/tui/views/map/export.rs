@@ -15,6 +15,8 @@ pub struct MapExport {
     pub own: (f64, f64),
     /// "superball at v0 = 3.12 m/s", the SVG's subtitle.
     pub title_ball: String,
+    /// The ball's radius, m (NaN: none known), for the SVG's note of the cells past it.
+    pub radius: f64,
 }
 
 impl MapExport {
@@ -30,6 +32,7 @@ impl MapExport {
             targets: self.targets.as_ref(),
             own: Some(self.own),
             title_ball: self.title_ball.clone(),
+            radius_note: crate::api::map_radius_note(&self.map, self.radius),
         };
         let svg = svg_map::render(&self.map, &view).map_err(|e| e.to_string())?;
         let csv = crate::map::csv::csv(&self.map, self.targets.as_ref());

@@ -273,6 +273,7 @@ impl App {
                 self.preset().name,
                 sig_trim(s.params.v0, 4)
             ),
+            radius: s.radius,
         };
         Some(Effect::Export(ExportRequest {
             ball: file_stem_part(&self.preset().name),
