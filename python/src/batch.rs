@@ -120,7 +120,7 @@ fn standard(name: Option<&str>, ball: &Ball) -> PyResult<&'static Standard> {
 /// from the preset and judged against `standard` (default: the preset's own), as `bouncelab
 /// batch FILE --format json`: a dict with `preset`, `law`, `standard`, `summary` (`n`,
 /// `mean`, `sd`, `min`, `max`, `failures`, `cpk`, their 95 % intervals `mean_ci` and
-/// `cpk_ci`, `balls`, `identified`, `no_answer`, `unsure`, `free`) and `balls` (one dict a
+/// `cpk_ci`, `mean_ci_clipped` (whether `mean_ci` was cut to where the value can lie), `balls`, `identified`, `no_answer`, `unsure`, `free`) and `balls` (one dict a
 /// ball: `id`, `cor`, `measured`, its 95 % interval `measured_ci95`, `verdict`, `margin`,
 /// `warnings`, `error`, …), `None` where the JSON has null. A ball that cannot be fitted says
 /// why in its `error` and the batch goes on (`summary["no_answer"]` counts them: the command
