@@ -99,8 +99,8 @@ pub(crate) fn sweep_velocity<'py>(
     d.set_item("permanent_indentation", col(|r| r.permanent_indentation))?;
     // what `sweep velocity --format json` adds to the CSV's columns: each row's peak
     // indentation and its warnings (one list a row: an indentation or the centre past the
-    // ball's radius, `Ball::velocity_row_warning`, the command line's; the centre's was
-    // missing here: python/tests/test_arguments.py)
+    // ball's radius, `Ball::velocity_row_warning`, the command line's own function, so the two
+    // give the same: python/tests/test_arguments.py)
     d.set_item("max_indentation", col(|r| r.max_indentation))?;
     let warnings: Vec<Vec<String>> = py.detach(|| {
         rows.iter()

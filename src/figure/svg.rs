@@ -276,9 +276,9 @@ fn draw_legend<DB: DrawingBackend>(
 
 /// The width (CSS pixels) left of the plot for the y axis' tick labels and its rotated
 /// description: 70, or wider where the widest tick label needs it (`fit --plot`'s residuals,
-/// "-0.0005": the description "e − model" was drawn over "0.0000"; tests/figure_radius.rs).
-/// The description, its gap, the tick mark and the labels' gap take 31 of it (as before:
-/// labels up to 39 wide, "0.025", kept clear in every figure of tests/figure_room.rs).
+/// "-0.0005", keep clear of the description "e − model": tests/figure_radius.rs). The
+/// description, its gap, the tick mark and the labels' gap take 31 of it, which leaves room
+/// for labels up to 39 wide ("0.025"; every figure of tests/figure_room.rs).
 fn y_label_area(ty: &Ticks) -> i32 {
     let widest = ty
         .labels()
