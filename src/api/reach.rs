@@ -194,8 +194,38 @@ impl Tally {
 /// given for it alone), so no cell passes silently. `None` otherwise, for a normalized map,
 /// or with no radius known (NaN). tests/answer_reach.rs.
 pub fn map_displacement_warning(map: &Map, radius: f64) -> Option<String> {
-    let tally = map_tally(map, radius)?;
-    map_reach_text(&tally, radius, map.cells().len())
+    map_reach(map, radius)?.warning()
+}
+
+/// A dimensional map's cells read once against the ball's radius ([`map_reach`]): both the
+/// warning ([`map_displacement_warning`]) and the picture's note ([`map_radius_note`]) come
+/// from it, so a caller that gives both solves the undecided cells once.
+pub struct MapReach {
+    tally: Tally,
+    radius: f64,
+    total: usize,
+}
+
+impl MapReach {
+    /// [`map_displacement_warning`]'s text.
+    pub fn warning(&self) -> Option<String> {
+        map_reach_text(&self.tally, self.radius, self.total)
+    }
+
+    /// [`map_radius_note`]'s text.
+    pub fn note(&self) -> Option<String> {
+        map_note_text(&self.tally, self.radius, self.total)
+    }
+}
+
+/// Every cell of `map` read against `radius` (m), once; `None` for a normalized map or with
+/// no radius known (NaN).
+pub fn map_reach(map: &Map, radius: f64) -> Option<MapReach> {
+    Some(MapReach {
+        tally: map_tally(map, radius)?,
+        radius,
+        total: map.cells().len(),
+    })
 }
 
 /// The note a map's picture carries of its cells past `radius` (m), the figure's short form
@@ -204,8 +234,12 @@ pub fn map_displacement_warning(map: &Map, radius: f64) -> Option<String> {
 /// both, by which passes), and the cells not checked. `None` when every cell is within, for
 /// a normalized map, or with no radius known. tests/figure_map_radius.rs.
 pub fn map_radius_note(map: &Map, radius: f64) -> Option<String> {
-    let t = map_tally(map, radius)?;
-    let (r, total) = (sig(radius * 1e3, 4), map.cells().len());
+    map_reach(map, radius)?.note()
+}
+
+/// The map's note from its `tally` over `total` cells (`map_radius_note`).
+fn map_note_text(t: &Tally, radius: f64, total: usize) -> Option<String> {
+    let r = sig(radius * 1e3, 4);
     let what = match (t.alone, t.past) {
         (_, 0) => None,
         (0, _) => Some("z_m"),

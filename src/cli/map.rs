@@ -140,9 +140,11 @@ pub fn run(a: &MapArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     let unmet = targets
         .as_ref()
         .and_then(|t| crate::map::unmet_warning(&map, t));
+    // the cells read against the radius once, for the warning and the picture's note
+    let reach = crate::api::map_reach(&map, ball.radius);
     let warnings: Vec<String> = crate::api::map_indentation_warning(&map, ball.radius)
         .into_iter()
-        .chain(crate::api::map_displacement_warning(&map, ball.radius))
+        .chain(reach.as_ref().and_then(crate::api::MapReach::warning))
         .chain(unmet)
         .collect();
     let text = match a.format {
@@ -157,7 +159,7 @@ pub fn run(a: &MapArgs, out: &mut dyn Write) -> anyhow::Result<()> {
                     Some(p) => format!("{p} at v0 = {} m/s", num(ball.v0)),
                     None => "normalized ball (m = K_p = v0 = 1)".into(),
                 },
-                radius_note: crate::api::map_radius_note(&map, ball.radius),
+                radius_note: reach.as_ref().and_then(crate::api::MapReach::note),
             };
             crate::figure::svg_map::render(&map, &view)?
         }
