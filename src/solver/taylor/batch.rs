@@ -4,7 +4,7 @@
 //! BENCHMARKS.md, eleventh session) are computed in lanes, and so is a quiet step's end (no
 //! event: the step rule lane by lane, Horner sums in lanes); a step with an event goes to the
 //! single impact's code (`stages::PowerImpact`) with that lane's series. A lane runs the same
-//! IEEE operations in the same order as the single path (`power::series`, `poly::eval`), so
+//! IEEE operations in the same order as the single path (`power::series_of`, `poly::eval`), so
 //! every answer is its bits (tests/taylor_batch.rs
 //! `batched_summaries_are_the_single_ones_bit_for_bit`).
 //!

@@ -33,22 +33,25 @@ pub(super) enum End {
     Separated(Point),
 }
 
-/// The Taylor coefficients of (z̄, ᾱ', ȳ) at x.
+/// The Taylor coefficients of (z̄, ᾱ', ȳ) at x. With F̄_k = k z̄_k (k ≥ 1), a = 2ζk and
+/// b = 2ζλ, ȳ'_k = a z̄_k − b ȳ_k and z̄_{k+1} = (ᾱ'_k + b ȳ_k − a z̄_k)/(k + 1): the sum
+/// ᾱ'_k + b ȳ_k needs no z̄_k, so the chain from one order's z̄ to the next is a product and
+/// a difference (the series' cost is that chain's latency, not its arithmetic).
 fn series(sys: &Sys, br: &Branch, x: [f64; 3]) -> [Series; 3] {
     let (mut z, mut v, mut y) = ([0.0; LEN], [0.0; LEN], [0.0; LEN]);
     (z[0], v[0], y[0]) = (x[0], x[1], x[2]);
     let two_zeta = 2.0 * sys.zeta;
-    for k in 0..ORDER {
-        let f = if k == 0 {
-            br.k * (z[0] - br.z0) + br.f0
-        } else {
-            br.k * z[k]
-        };
-        let yd = two_zeta * (f - sys.lambda * y[k]);
+    let (a, b) = (two_zeta * br.k, two_zeta * sys.lambda);
+    // order 0: F̄_0 = k (z̄_0 − z̄₀) + F̄₀
+    let f = br.k * (z[0] - br.z0) + br.f0;
+    let yd = two_zeta * f - b * y[0];
+    (z[1], v[1], y[1]) = (v[0] - yd, -f, yd);
+    for k in 1..ORDER {
         let inv = 1.0 / (k + 1) as f64;
-        z[k + 1] = (v[k] - yd) * inv;
-        v[k + 1] = -f * inv;
-        y[k + 1] = yd * inv;
+        let free = v[k] + b * y[k];
+        z[k + 1] = (free - a * z[k]) * inv;
+        v[k + 1] = -(br.k * z[k]) * inv;
+        y[k + 1] = (a * z[k] - b * y[k]) * inv;
     }
     [z, v, y]
 }
@@ -56,9 +59,9 @@ fn series(sys: &Sys, br: &Branch, x: [f64; 3]) -> [Series; 3] {
 fn at(c: &[Series; 3], h: f64, tau: f64) -> Point {
     Point {
         tau: tau + h,
-        z: poly::eval(&c[0], h),
-        v: poly::eval(&c[1], h),
-        y: poly::eval(&c[2], h),
+        z: poly::eval_estrin(&c[0], h),
+        v: poly::eval_estrin(&c[1], h),
+        y: poly::eval_estrin(&c[2], h),
     }
 }
 
@@ -86,13 +89,13 @@ pub(super) fn run(
         match peak {
             None => {
                 let dz = poly::derivative(&c[0]);
-                if poly::eval(&dz, h) <= 0.0 {
+                if poly::eval_estrin(&dz, h) <= 0.0 {
                     let turn = RULES.root(&dz, 0.0, h);
                     return Some(End::Turned(at(&c, turn, tau)));
                 }
             }
             Some(z_m) => {
-                let z_end = poly::eval(&c[0], h);
+                let z_end = poly::eval_estrin(&c[0], h);
                 if z_end > z_m {
                     return None;
                 }

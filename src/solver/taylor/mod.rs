@@ -151,7 +151,9 @@ fn power_law(n: &Normalized, law: ContactLaw) -> Option<Summary> {
         if !impact.take_step() {
             return None;
         }
-        let c = power::series::<POWER_LEN>(&impact.sys, &impact.phase.br, impact.phase.x);
+        let mut c = [[0.0; POWER_LEN]; 4];
+        let coefs = power::Coefs::of(&impact.sys, &impact.phase.br);
+        power::series_of::<f64, POWER_LEN>(coefs, impact.phase.x, &mut c);
         if let stages::Progress::Done(summary) = impact.feed(&c) {
             return summary;
         }

@@ -206,7 +206,7 @@ pub(super) fn root_quick<const L: usize>(c: &[f64; L], target: f64, end: f64) ->
 /// bounded as Horner's (both sum the same products, each with at most ⌈log₂ L⌉ or L
 /// roundings), and tests/taylor.rs holds the answers it gives to the references.
 #[inline(always)]
-fn eval_estrin<const L: usize>(c: &[f64; L], h: f64) -> f64 {
+pub(super) fn eval_estrin<const L: usize>(c: &[f64; L], h: f64) -> f64 {
     let mut b = *c;
     let (mut n, mut x) = (L, h);
     while n > 1 {

@@ -43,7 +43,9 @@ pub(super) struct Run {
 }
 
 /// The Taylor coefficients of (s, ᾱ', ȳ, τ) at x to order L − 1 (Cauchy products, each O(k)
-/// at order k).
+/// at order k, summed in the order of i): the Hertz table's reference ([`run`], from
+/// `super::hertz_reference`), whose nodes tests/hertz_table.rs holds to the committed
+/// file's bits. The fast paths take [`series_of`].
 pub(super) fn series<const L: usize>(sys: &Sys, br: &Branch, x: [f64; 4]) -> [[f64; L]; 4] {
     let (mut s, mut v, mut y, mut t) = ([0.0; L], [0.0; L], [0.0; L], [0.0; L]);
     let (mut p, mut q, mut yd) = ([0.0; L], [0.0; L], [0.0; L]);
@@ -101,12 +103,21 @@ pub(super) trait Coef:
     fn splat(x: f64) -> Self;
 }
 
-/// [`series`] in lanes (`super::batch`): each lane runs [`series`]'s IEEE operations in its
-/// order — its sums folded from −0.0 as `Iterator::sum` folds them, products and sums
-/// unfused — so a lane's coefficients are [`series`]'s bits
-/// (tests/taylor_batch.rs `batched_summaries_are_the_single_ones_bit_for_bit`). Written apart
-/// from [`series`], whose f64 form the compiler lays out best as it is (a generic copy for
-/// f64 took 8 % more instructions, callgrind).
+impl Coef for f64 {
+    #[inline(always)]
+    fn splat(x: f64) -> f64 {
+        x
+    }
+}
+
+/// [`series`]'s coefficients with each product's sums reordered, the fast paths' series:
+/// for f64 in `super::summary`, in lanes in `super::batch`. Each sum of order n takes its
+/// terms of i ≥ 1 in two partial sums and the term of the newest coefficient last
+/// ([`dot_late`], [`square_late`]), so that an order waits on the one before for two
+/// products and two sums, not for a whole chain of sums (BENCHMARKS.md, thirteenth
+/// session). A lane runs f64's IEEE
+/// operations in the same order, unfused, so its coefficients are the f64 path's bits
+/// (tests/taylor_batch.rs `batched_summaries_are_the_single_ones_bit_for_bit`).
 #[inline(always)]
 pub(super) fn series_of<T: Coef, const L: usize>(k: Coefs<T>, x: [T; 4], c: &mut [[T; L]; 4]) {
     let zero = T::splat(0.0);
@@ -114,11 +125,11 @@ pub(super) fn series_of<T: Coef, const L: usize>(k: Coefs<T>, x: [T; 4], c: &mut
     let (mut p, mut q, mut yd) = ([zero; L], [zero; L], [zero; L]);
     (s[0], v[0], y[0], t[0]) = (x[0], x[1], x[2], x[3]);
     for n in 0..L - 1 {
-        p[n] = square_of(s, n);
-        q[n] = dot(&p, s, n);
-        let r = square_of(&p, n);
+        p[n] = square_late(s, n);
+        q[n] = dot_late(s, &p, n);
+        let r = square_late(&p, n);
         yd[n] = k.two_zeta * (k.a * q[n] - k.lambda * y[n]);
-        let sy = dot(s, &yd, n);
+        let sy = dot_late(s, &yd, n);
         let inv = T::splat(1.0 / (n + 1) as f64);
         s[n + 1] = (v[n] - yd[n]) * k.half_b * inv;
         v[n + 1] = k.minus_a * r * inv;
@@ -127,26 +138,46 @@ pub(super) fn series_of<T: Coef, const L: usize>(k: Coefs<T>, x: [T; 4], c: &mut
     }
 }
 
-/// Σ_{i ≤ n} a_i b_{n−i}, in the order of i.
+/// Σ_{i ≤ n} a_i b_{n−i}: the terms of i ≥ 1 in two sums (odd and even i), a_0 b_n last.
 #[inline(always)]
-fn dot<T: Coef, const L: usize>(a: &[T; L], b: &[T; L], n: usize) -> T {
-    (0..n + 1)
-        .map(|i| a[i] * b[n - i])
-        .fold(T::splat(-0.0), |acc, x| acc + x)
+fn dot_late<T: Coef, const L: usize>(a: &[T; L], b: &[T; L], n: usize) -> T {
+    let (mut odd, mut even) = (T::splat(-0.0), T::splat(-0.0));
+    let mut i = 1;
+    while i < n {
+        odd = odd + a[i] * b[n - i];
+        even = even + a[i + 1] * b[n - i - 1];
+        i += 2;
+    }
+    if i == n {
+        odd = odd + a[i] * b[n - i];
+    }
+    (odd + even) + a[0] * b[n]
 }
 
-/// [`square`] in lanes.
+/// The n-th coefficient of c², the terms of c_0 c_n last.
 #[inline(always)]
-fn square_of<T: Coef, const L: usize>(c: &[T; L], n: usize) -> T {
-    let half = (0..n.div_ceil(2))
-        .map(|i| c[i] * c[n - i])
-        .fold(T::splat(-0.0), |acc, x| acc + x);
+fn square_late<T: Coef, const L: usize>(c: &[T; L], n: usize) -> T {
+    if n == 0 {
+        return c[0] * c[0];
+    }
+    let (mut odd, mut even) = (T::splat(-0.0), T::splat(-0.0));
+    let half = n.div_ceil(2);
+    let mut i = 1;
+    while i + 1 < half {
+        odd = odd + c[i] * c[n - i];
+        even = even + c[i + 1] * c[n - i - 1];
+        i += 2;
+    }
+    if i < half {
+        odd = odd + c[i] * c[n - i];
+    }
     let middle = if n.is_multiple_of(2) {
         c[n / 2] * c[n / 2]
     } else {
         T::splat(0.0)
     };
-    T::splat(2.0) * half + middle
+    let two = T::splat(2.0);
+    (two * (odd + even) + middle) + two * (c[0] * c[n])
 }
 
 /// The k-th coefficient of c², by the product's symmetry (half the terms).
