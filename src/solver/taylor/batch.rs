@@ -14,6 +14,7 @@
 //! the default target, `map::fast::lanes::avx`'s note), and no fused multiply–add may enter,
 //! or the bits would differ from the single path's.
 
+use super::poly;
 use super::power::{self, Coef, Coefs};
 use super::stages::{PowerImpact, Progress};
 use super::{POWER_LEN, Summary};
@@ -98,8 +99,9 @@ pub fn summaries(ns: &[Normalized], law: ContactLaw) -> Vec<Option<Summary>> {
         if slots.iter().all(Option::is_none) {
             return out;
         }
-        series(coefs(&slots), states(&slots), &mut c);
-        let h = steps(&c, &slots);
+        let x = states(&slots);
+        series(coefs(&slots), x, &mut c);
+        let h = steps(&c, &x, &slots);
         let ahead = evaluations(&c, h);
         for (j, slot) in slots.iter_mut().enumerate() {
             let Some((i, impact)) = slot else { continue };
@@ -123,8 +125,19 @@ pub fn summaries(ns: &[Normalized], law: ContactLaw) -> Vec<Option<Summary>> {
 }
 
 /// Each lane's step (`power::step`'s rule, lane by lane: the same bits); 0 in an empty lane.
-fn steps(c: &LaneSeries, slots: &[Option<(usize, PowerImpact)>; W]) -> Lanes {
-    let order = POWER_LEN - 1;
+/// Where every impact steps by the quick rule with one truncation (`super::POWER_RULES`:
+/// all of them), the norms, logarithms and powers are taken in lanes ([`quick_steps`]).
+fn steps(c: &LaneSeries, x: &[Lanes; 4], slots: &[Option<(usize, PowerImpact)>; W]) -> Lanes {
+    let rules = |slot: &Option<(usize, PowerImpact)>| slot.as_ref().map(|(_, i)| i.phase.rules);
+    let first = slots.iter().find_map(rules);
+    let alike =
+        first.is_some_and(|r| r.quick && slots.iter().all(|s| rules(s).is_none_or(|o| o == r)));
+    if let (true, Some(r)) = (alike, first) {
+        let h = quick_steps(c, x, r.eps);
+        return Lanes(std::array::from_fn(|j| {
+            if slots[j].is_some() { h.0[j] } else { 0.0 }
+        }));
+    }
     Lanes(std::array::from_fn(|j| {
         let Some((_, impact)) = &slots[j] else {
             return 0.0;
@@ -139,8 +152,67 @@ fn steps(c: &LaneSeries, slots: &[Option<(usize, PowerImpact)>; W]) -> Lanes {
         impact
             .phase
             .rules
-            .step_of_norms(norm(order - 1), norm(order), order)
+            .step_of_norms(norm(order() - 1), norm(order()), order())
     }))
+}
+
+/// The series' order.
+const fn order() -> usize {
+    POWER_LEN - 1
+}
+
+/// [`steps`] by the quick rule within `eps` for every lane, states `x`: the AVX-512 or AVX2
+/// compilation where the CPU has it, as [`series`].
+fn quick_steps(c: &LaneSeries, x: &[Lanes; 4], eps: f64) -> Lanes {
+    #[cfg(target_arch = "x86_64")]
+    {
+        if std::arch::is_x86_feature_detected!("avx512f") {
+            // SAFETY: the CPU has AVX-512F, the only feature the function enables
+            return unsafe { quick_steps_avx512(c, x, eps) };
+        }
+        if std::arch::is_x86_feature_detected!("avx2") {
+            // SAFETY: the CPU has AVX2, the only feature the function enables
+            return unsafe { quick_steps_avx2(c, x, eps) };
+        }
+    }
+    quick_steps_in(c, x, eps)
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+fn quick_steps_avx2(c: &LaneSeries, x: &[Lanes; 4], eps: f64) -> Lanes {
+    quick_steps_in(c, x, eps)
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx512f")]
+fn quick_steps_avx512(c: &LaneSeries, x: &[Lanes; 4], eps: f64) -> Lanes {
+    quick_steps_in(c, x, eps)
+}
+
+/// `Phase::scales`, `Rules::step`'s norms and `poly::quick_step_of_norms` lane by lane, the
+/// same operations in the same order (so the same bits); a lane whose norms or exponent
+/// leave the quick rule's plain case takes `quick_step_of_norms` itself.
+#[inline(always)]
+fn quick_steps_in(c: &LaneSeries, x: &[Lanes; 4], eps: f64) -> Lanes {
+    let each = |f: &dyn Fn(usize) -> f64| Lanes(std::array::from_fn(f));
+    let scales = x.map(|xv| each(&|j| xv.0[j].abs().max(1.0)));
+    let norm = |n: usize| {
+        (0..4).fold(Lanes::splat(0.0), |acc, v| {
+            each(&|j| acc.0[j].max(c[v][n].0[j].abs() / scales[v].0[j]))
+        })
+    };
+    let (a1, a2) = (norm(order() - 1), norm(order()));
+    let y = each(&|j| poly::quick_exponent(a1.0[j], a2.0[j], order(), eps));
+    let h = each(&|j| poly::exp2_core(y.0[j]));
+    each(&|j| {
+        let plain = poly::is_plain(a1.0[j]) && poly::is_plain(a2.0[j]);
+        if plain && poly::is_in_reach(y.0[j]) {
+            h.0[j]
+        } else {
+            poly::quick_step_of_norms(a1.0[j], a2.0[j], order(), eps)
+        }
+    })
 }
 
 /// What `power::Phase::advance` evaluates on a step, in lanes: s(h), s'(0), s'(h) and the
@@ -266,4 +338,48 @@ fn states(slots: &[Option<(usize, PowerImpact)>; W]) -> [Lanes; 4] {
                 .map_or(0.0, |(_, impact)| impact.phase.x[v])
         }))
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The lanes' quick steps are `Rules::step`'s lane by lane, bit for bit, where the norms
+    /// leave the plain case too: lane 0's zero series (h = ∞), lane 1's subnormal last terms
+    /// (libm's log₂), huge and tiny coefficients, states below and above 1 (the scales).
+    #[test]
+    fn quick_steps_are_the_scalar_rule_lane_by_lane() {
+        let rules = super::super::POWER_RULES;
+        let picks = [0.0, 1e-310, 3e-17, 0.25, 1.0, 7.5, 1e200, -2e-5];
+        for shift in 0..W {
+            let value = |v: usize, n: usize, j: usize| {
+                let k = (j + shift + 3 * v + n) % picks.len();
+                match j {
+                    0 => 0.0,
+                    1 if n + 2 >= POWER_LEN => 1e-310,
+                    _ => picks[k],
+                }
+            };
+            let mut c = [[Lanes::splat(0.0); POWER_LEN]; 4];
+            for (v, series) in c.iter_mut().enumerate() {
+                for (n, cn) in series.iter_mut().enumerate() {
+                    *cn = Lanes(std::array::from_fn(|j| value(v, n, j)));
+                }
+            }
+            let x: [Lanes; 4] =
+                std::array::from_fn(|v| Lanes(std::array::from_fn(|j| picks[(j + v) % 8] * 3.0)));
+            let lanes = quick_steps_in(&c, &x, rules.eps);
+            for j in 0..W {
+                let lane: [[f64; POWER_LEN]; 4] =
+                    std::array::from_fn(|v| std::array::from_fn(|n| c[v][n].0[j]));
+                let scales = x.map(|xv| xv.0[j].abs().max(1.0));
+                let want = rules.step(&lane, &scales);
+                assert_eq!(
+                    lanes.0[j].to_bits(),
+                    want.to_bits(),
+                    "lane {j}, shift {shift}"
+                );
+            }
+        }
+    }
 }

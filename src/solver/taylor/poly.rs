@@ -42,7 +42,7 @@ pub(super) fn derivative<const L: usize>(c: &[f64; L]) -> [f64; L] {
 /// roots ([`quick_step_of_norms`], [`root_quick`]: the fast paths) or by `powf` and Horner's
 /// sums ([`step_of_norms`], [`root`]: the Hertz table's reference, whose nodes
 /// tests/hertz_table.rs holds to the committed file's bits).
-#[derive(Debug, Clone, Copy)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub(super) struct Rules {
     pub eps: f64,
     pub quick: bool,
@@ -127,15 +127,27 @@ pub(super) fn quick_step_of_norms(next_to_last: f64, last: f64, order: usize, ep
     }
 }
 
+/// The exponent y of [`quick_step_of_norms`]'s h = 2^y where both norms are positive and
+/// normal ([`is_plain`]): the same operations without a branch, for lanes (`super::batch`,
+/// which takes [`quick_step_of_norms`] itself for a lane where they are not, or where y is
+/// not [`is_in_reach`]).
+#[inline(always)]
+pub(super) fn quick_exponent(next_to_last: f64, last: f64, order: usize, eps: f64) -> f64 {
+    let log_eps = log2_core(eps);
+    let y1 = (log_eps - log2_core(next_to_last)) * (1.0 / (order - 1) as f64);
+    let y2 = (log_eps - log2_core(last)) * (1.0 / order as f64);
+    y1.min(y2)
+}
+
 /// Positive and normal: where [`log2_core`] holds.
 #[inline(always)]
-fn is_plain(x: f64) -> bool {
+pub(super) fn is_plain(x: f64) -> bool {
     x.is_normal() && x > 0.0
 }
 
 /// Within ±1000: where [`exp2_core`] holds.
 #[inline(always)]
-fn is_in_reach(y: f64) -> bool {
+pub(super) fn is_in_reach(y: f64) -> bool {
     y.abs() <= 1000.0
 }
 
@@ -162,7 +174,7 @@ fn log2_core(x: f64) -> f64 {
 /// exponent's bits. n is y rounded by the 2⁵² trick, less one where that rounded up: no
 /// `floor` (a libm call on the baseline target).
 #[inline(always)]
-fn exp2_core(y: f64) -> f64 {
+pub(super) fn exp2_core(y: f64) -> f64 {
     let rounded = (y + 1.5 * TWO_52) - 1.5 * TWO_52;
     let n = if rounded > y { rounded - 1.0 } else { rounded };
     let z = (y - n) * std::f64::consts::LN_2;
