@@ -34,9 +34,10 @@ pub(super) enum End {
 }
 
 /// The Taylor coefficients of (z̄, ᾱ', ȳ) at x. With F̄_k = k z̄_k (k ≥ 1), a = 2ζk and
-/// b = 2ζλ, ȳ'_k = a z̄_k − b ȳ_k and z̄_{k+1} = (ᾱ'_k + b ȳ_k − a z̄_k)/(k + 1): the sum
-/// ᾱ'_k + b ȳ_k needs no z̄_k, so the chain from one order's z̄ to the next is a product and
-/// a difference (the series' cost is that chain's latency, not its arithmetic).
+/// b = 2ζλ, ȳ'_k = a z̄_k − b ȳ_k, so with a_k = a/(k + 1), b_k = b/(k + 1) (no coefficient
+/// in them) z̄_{k+1} = (ᾱ'_k/(k + 1) + b_k ȳ_k) − a_k z̄_k and ȳ_{k+1} = a_k z̄_k − b_k ȳ_k:
+/// one order's z̄ and ȳ reach the next through a product and a sum or two, the series' cost
+/// being that chain's latency, not its arithmetic.
 fn series(sys: &Sys, br: &Branch, x: [f64; 3]) -> [Series; 3] {
     let (mut z, mut v, mut y) = ([0.0; LEN], [0.0; LEN], [0.0; LEN]);
     (z[0], v[0], y[0]) = (x[0], x[1], x[2]);
@@ -48,10 +49,10 @@ fn series(sys: &Sys, br: &Branch, x: [f64; 3]) -> [Series; 3] {
     (z[1], v[1], y[1]) = (v[0] - yd, -f, yd);
     for k in 1..ORDER {
         let inv = 1.0 / (k + 1) as f64;
-        let free = v[k] + b * y[k];
-        z[k + 1] = (free - a * z[k]) * inv;
+        let (a_k, b_k) = (a * inv, b * inv);
+        z[k + 1] = (v[k] * inv + b_k * y[k]) - a_k * z[k];
         v[k + 1] = -(br.k * z[k]) * inv;
-        y[k + 1] = (a * z[k] - b * y[k]) * inv;
+        y[k + 1] = a_k * z[k] - b_k * y[k];
     }
     [z, v, y]
 }
