@@ -6,6 +6,7 @@ BENCHMARKS.md). Run after `pip install ./python`:
     python benches/impacts_python.py calls                  # the calls alone (CALLS)
     python benches/impacts_python.py laws                   # Hertz, elastic-plastic (LAWS)
     python benches/impacts_python.py flat                   # tennis balls that flatten (FLAT)
+    python benches/impacts_python.py past                   # elastic-plastic past yield
 
 Prints the median of 5 runs (wall clock, then CPU time) of `bouncelab.impacts` over 10⁶
 linear-law balls (the superball with K_p, c, K_r spread 5 %, no flattening: the closed form),
@@ -157,7 +158,33 @@ def time_flat(n=10**6):
     )
 
 
+def time_past(n=20000, calls=15):
+    """Best of `calls` calls' wall and CPU time of `impacts` over `n` superball elements past
+    yield (benches/solver.rs `PAST_YIELD`'s spreads of K_p, c, K_r at 9.36 m/s), per element."""
+    threads = os.environ.get("RAYON_NUM_THREADS", "all")
+    i = np.arange(n)
+    spread = lambda m: 1.0 + 0.05 * (2.0 * ((i * m) % 97) / 96.0 - 1.0)  # noqa: E731
+    args = dict(
+        m=0.0374, k_p=5.45e4 * spread(31), c=140.0 * spread(59), k_r=7.08e4 * spread(83),
+        v0=9.36, z_p=4e-3, law="elastic-plastic",
+    )
+    past = int(np.count_nonzero(bouncelab.impacts(**args)["permanent_indentation"] > 0))
+    wall = cpu = float("inf")
+    for _ in range(calls):
+        c0, w0 = time.process_time(), time.perf_counter()
+        bouncelab.impacts(**args)
+        cpu = min(cpu, time.process_time() - c0)
+        wall = min(wall, time.perf_counter() - w0)
+    print(
+        f"impacts, {n} superball elements ({past} past yield), {threads} threads: "
+        f"{wall / n * 1e6:.3f} µs wall per element ({cpu / n * 1e6:.3f} µs CPU)"
+    )
+
+
 def main():
+    if sys.argv[1:] == ["past"]:  # elastic-plastic elements past yield only
+        time_past()
+        return
     if sys.argv[1:] == ["flat"]:  # tennis balls that flatten only
         time_flat()
         return
