@@ -33,11 +33,11 @@ pub(super) enum End {
     Separated(Point),
 }
 
-/// The Taylor coefficients of (z̄, ᾱ', ȳ) at x. With F̄_k = k z̄_k (k ≥ 1), a = 2ζk and
-/// b = 2ζλ, ȳ'_k = a z̄_k − b ȳ_k, so with a_k = a/(k + 1), b_k = b/(k + 1) (no coefficient
-/// in them) z̄_{k+1} = (ᾱ'_k/(k + 1) + b_k ȳ_k) − a_k z̄_k and ȳ_{k+1} = a_k z̄_k − b_k ȳ_k:
-/// one order's z̄ and ȳ reach the next through a product and a sum or two, the series' cost
-/// being that chain's latency, not its arithmetic.
+/// The Taylor coefficients of (z̄, ᾱ', ȳ) at x. Of order j ≥ 1, F̄_j = k z̄_j (k the branch's
+/// slope), so with a = 2ζk, b = 2ζλ, ȳ'_j = a z̄_j − b ȳ_j; with a_j = a/(j + 1) and
+/// b_j = b/(j + 1), which hold no coefficient, z̄_{j+1} = (ᾱ'_j/(j + 1) + b_j ȳ_j) − a_j z̄_j
+/// and ȳ_{j+1} = a_j z̄_j − b_j ȳ_j: one order's z̄ and ȳ reach the next through a product
+/// and a sum or two, the series' cost being that chain's latency, not its arithmetic.
 fn series(sys: &Sys, br: &Branch, x: [f64; 3]) -> [Series; 3] {
     let (mut z, mut v, mut y) = ([0.0; LEN], [0.0; LEN], [0.0; LEN]);
     (z[0], v[0], y[0]) = (x[0], x[1], x[2]);

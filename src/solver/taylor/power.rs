@@ -115,9 +115,9 @@ impl Coef for f64 {
 /// terms of i ≥ 1 in two partial sums and the term of the newest coefficient last
 /// ([`dot_late`], [`square_late`]), so that an order waits on the one before for two
 /// products and two sums, not for a whole chain of sums (BENCHMARKS.md, thirteenth
-/// session). A lane runs f64's IEEE
-/// operations in the same order, unfused, so its coefficients are the f64 path's bits
-/// (tests/taylor_batch.rs `batched_summaries_are_the_single_ones_bit_for_bit`).
+/// session). A lane runs f64's IEEE operations in the same order, unfused, so its
+/// coefficients are the f64 path's bits (tests/taylor_batch.rs
+/// `batched_summaries_are_the_single_ones_bit_for_bit`).
 #[inline(always)]
 pub(super) fn series_of<T: Coef, const L: usize>(k: Coefs<T>, x: [T; 4], c: &mut [[T; L]; 4]) {
     let zero = T::splat(0.0);
