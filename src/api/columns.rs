@@ -171,9 +171,9 @@ impl Unanswered {
         F: Fn(usize) -> ImpactParams + Sync,
     {
         let law = self.law;
-        // a chunk's rows in a Vec of their own: one of all the rows, grown as rayon's pieces
-        // arrive, paged in fresh memory and moved on each growth (perf: 6 % of a past-yield
-        // element's time in the kernel's page clearing)
+        // each chunk's rows in a Vec of its own: one Vec of all the rows would grow as
+        // rayon's pieces arrive, each growth paging fresh memory and moving the rows (perf:
+        // 6 % of a past-yield element's time in the kernel's page clearing)
         let rows: Vec<Vec<_>> = self
             .left
             .par_chunks(LEFT_CHUNK)
