@@ -12,10 +12,13 @@
 use super::room;
 use super::ticks::{Room, Ticks, ticks};
 use super::{Figure, Marker, PALETTE, Series, Style};
+use legend::{LEGEND_ROW_PX, LEGEND_TOP_PX, draw_legend, legend_layout};
 use plotters::element::DashedPathElement;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 use std::fmt;
+
+mod legend;
 
 /// Picture size in CSS pixels: the aspect of a journal figure, wide enough for the legend.
 pub const WIDTH: u32 = 800;
@@ -44,12 +47,7 @@ const SPACING: room::Spacing = room::Spacing {
 /// A text farther than this from its marker's centre gets a line to it: the usual place is
 /// 39 units away, a place one line (52) further out 77.
 const LEADER_FROM: i32 = px(15);
-const LEGEND_ROW_PX: i32 = 24;
-const LEGEND_GLYPH_PX: i32 = 30;
-const LEGEND_GAP_PX: i32 = 26;
 pub(super) const SIDE_PX: i32 = 16;
-/// Space between the x axis' label and the legend strip.
-const LEGEND_TOP_PX: i32 = 8;
 
 /// Rendering failed (plotters reported an error; with an in-memory SVG this is not expected).
 #[derive(Debug, Clone, PartialEq)]
@@ -216,62 +214,6 @@ fn annotation_offsets(chart: &Chart, fig: &Figure) -> Vec<Vec<(i32, i32)>> {
         y1: ys.end,
     };
     room::offsets(&fig.series, at, annotation_size, plot, SPACING)
-}
-
-/// Legend entries laid out in rows that fit the width: (row, x offset) per labelled series,
-/// and the width of each row, in CSS pixels.
-fn legend_layout(fig: &Figure) -> (Vec<(usize, i32)>, Vec<i32>) {
-    let avail = WIDTH as i32 - 2 * SIDE_PX;
-    let (mut places, mut rows) = (Vec::new(), vec![0]);
-    for s in fig.series.iter().filter(|s| !s.label.is_empty()) {
-        let w = LEGEND_GLYPH_PX + 8 + text_width(&s.label, LEGEND_PX);
-        let row = rows.len() - 1;
-        let x = rows[row] + if rows[row] > 0 { LEGEND_GAP_PX } else { 0 };
-        if rows[row] > 0 && x + w > avail {
-            rows.push(w);
-            places.push((row + 1, 0));
-        } else {
-            rows[row] = x + w;
-            places.push((row, x));
-        }
-    }
-    if places.is_empty() {
-        rows.clear();
-    }
-    (places, rows)
-}
-
-/// The legend strip under the plot, each row centred.
-fn draw_legend<DB: DrawingBackend>(
-    area: &DrawingArea<DB, plotters::coord::Shift>,
-    fig: &Figure,
-) -> Result<(), RenderError> {
-    let (places, rows) = legend_layout(fig);
-    let labelled = fig.series.iter().filter(|s| !s.label.is_empty());
-    for (s, &(row, x)) in labelled.zip(&places) {
-        let left = (WIDTH as i32 - rows[row]) / 2 + x;
-        let y = px(LEGEND_TOP_PX + LEGEND_ROW_PX / 2 + LEGEND_ROW_PX * row as i32);
-        let (x0, x1) = (px(left), px(left + LEGEND_GLYPH_PX));
-        let c = color(s.color);
-        let glyph = match s.style {
-            Style::Markers(shape) => {
-                EmptyElement::at(((x0 + x1) / 2, y)) + marker(shape, c.filled())
-            }
-            style => {
-                EmptyElement::at((0, 0))
-                    + stroke(
-                        style,
-                        c.stroke_width(px(LINE_PX) as u32),
-                        vec![(x0, y), (x1, y)],
-                    )
-            }
-        };
-        area.draw(&glyph).map_err(err)?;
-        let text = font(LEGEND_PX).pos(Pos::new(HPos::Left, VPos::Center));
-        area.draw(&Text::new(s.label.as_str(), (x1 + px(8), y), text))
-            .map_err(err)?;
-    }
-    Ok(())
 }
 
 /// The width (CSS pixels) left of the plot for the y axis' tick labels and its rotated
