@@ -17,7 +17,7 @@
 use super::poly;
 use super::power::{self, Coef, Coefs};
 use super::stages::{PowerImpact, Progress};
-use super::{POWER_LEN, Summary};
+use super::{POWER_LEN, POWER_RULES, Summary};
 use crate::model::contact::ContactLaw;
 use crate::model::params::Normalized;
 use std::ops::{Add, Mul, Sub};
@@ -124,42 +124,27 @@ pub fn summaries(ns: &[Normalized], law: ContactLaw) -> Vec<Option<Summary>> {
     }
 }
 
-/// Each lane's step (`power::step`'s rule, lane by lane: the same bits); 0 in an empty lane.
-/// Where every impact steps by the quick rule with one truncation (`super::POWER_RULES`:
-/// all of them), the norms, logarithms and powers are taken in lanes ([`quick_steps`]).
+/// Each lane's step by `super::POWER_RULES`, the rules `stages::PowerImpact` gives every
+/// phase it builds (so `power::Phase::advance`'s step, lane by lane: the same bits); 0 in an
+/// empty lane.
 fn steps(c: &LaneSeries, x: &[Lanes; 4], slots: &[Option<(usize, PowerImpact)>; W]) -> Lanes {
-    let rules = |slot: &Option<(usize, PowerImpact)>| slot.as_ref().map(|(_, i)| i.phase.rules);
-    let first = slots.iter().find_map(rules);
-    let alike =
-        first.is_some_and(|r| r.quick && slots.iter().all(|s| rules(s).is_none_or(|o| o == r)));
-    if let (true, Some(r)) = (alike, first) {
-        let h = quick_steps(c, x, r.eps);
-        return Lanes(std::array::from_fn(|j| {
-            if slots[j].is_some() { h.0[j] } else { 0.0 }
-        }));
-    }
+    debug_assert!(
+        slots
+            .iter()
+            .flatten()
+            .all(|(_, impact)| impact.phase.rules == POWER_RULES)
+    );
+    let h = quick_steps(c, x, POWER_RULES.eps);
     Lanes(std::array::from_fn(|j| {
-        let Some((_, impact)) = &slots[j] else {
-            return 0.0;
-        };
-        let scales = impact.phase.scales();
-        let norm = |n: usize| {
-            c.iter()
-                .zip(scales)
-                .map(|(c_v, s)| c_v[n].0[j].abs() / s)
-                .fold(0.0, f64::max)
-        };
-        impact
-            .phase
-            .rules
-            .step_of_norms(norm(order() - 1), norm(order()), order())
+        if slots[j].is_some() { h.0[j] } else { 0.0 }
     }))
 }
 
+/// [`quick_steps`] is the quick rule's: the rules it stands for must be quick.
+const _: () = assert!(POWER_RULES.quick);
+
 /// The series' order.
-const fn order() -> usize {
-    POWER_LEN - 1
-}
+const ORDER: usize = POWER_LEN - 1;
 
 /// [`steps`] by the quick rule within `eps` for every lane, states `x`: the AVX-512 or AVX2
 /// compilation where the CPU has it, as [`series`].
@@ -195,24 +180,30 @@ fn quick_steps_avx512(c: &LaneSeries, x: &[Lanes; 4], eps: f64) -> Lanes {
 /// leave the quick rule's plain case takes `quick_step_of_norms` itself.
 #[inline(always)]
 fn quick_steps_in(c: &LaneSeries, x: &[Lanes; 4], eps: f64) -> Lanes {
-    let each = |f: &dyn Fn(usize) -> f64| Lanes(std::array::from_fn(f));
-    let scales = x.map(|xv| each(&|j| xv.0[j].abs().max(1.0)));
+    let scales = x.map(|xv| each(|j| xv.0[j].abs().max(1.0)));
     let norm = |n: usize| {
         (0..4).fold(Lanes::splat(0.0), |acc, v| {
-            each(&|j| acc.0[j].max(c[v][n].0[j].abs() / scales[v].0[j]))
+            each(|j| acc.0[j].max(c[v][n].0[j].abs() / scales[v].0[j]))
         })
     };
-    let (a1, a2) = (norm(order() - 1), norm(order()));
-    let y = each(&|j| poly::quick_exponent(a1.0[j], a2.0[j], order(), eps));
-    let h = each(&|j| poly::exp2_core(y.0[j]));
-    each(&|j| {
+    let (a1, a2) = (norm(ORDER - 1), norm(ORDER));
+    let y = each(|j| poly::quick_exponent(a1.0[j], a2.0[j], ORDER, eps));
+    let h = each(|j| poly::exp2_core(y.0[j]));
+    each(|j| {
         let plain = poly::is_plain(a1.0[j]) && poly::is_plain(a2.0[j]);
         if plain && poly::is_in_reach(y.0[j]) {
             h.0[j]
         } else {
-            poly::quick_step_of_norms(a1.0[j], a2.0[j], order(), eps)
+            poly::quick_step_of_norms(a1.0[j], a2.0[j], ORDER, eps)
         }
     })
+}
+
+/// The lanes whose j-th entry is `f(j)`: generic, so that `f` is inlined and the lanes
+/// vectorised (a `&dyn Fn` was inlined or not as the optimiser's budget went).
+#[inline(always)]
+fn each(f: impl Fn(usize) -> f64) -> Lanes {
+    Lanes(std::array::from_fn(f))
 }
 
 /// What `power::Phase::advance` evaluates on a step, in lanes: s(h), s'(0), s'(h) and the
@@ -349,7 +340,7 @@ mod tests {
     /// (libm's log₂), huge and tiny coefficients, states below and above 1 (the scales).
     #[test]
     fn quick_steps_are_the_scalar_rule_lane_by_lane() {
-        let rules = super::super::POWER_RULES;
+        let rules = POWER_RULES;
         let picks = [0.0, 1e-310, 3e-17, 0.25, 1.0, 7.5, 1e200, -2e-5];
         for shift in 0..W {
             let value = |v: usize, n: usize, j: usize| {

@@ -110,16 +110,20 @@ pub(super) fn step_of_norms(next_to_last: f64, last: f64, order: usize, eps: f64
 /// the same IEEE operations in `super::batch`'s steps as here, which no libm promises.
 #[inline(always)]
 pub(super) fn quick_step_of_norms(next_to_last: f64, last: f64, order: usize, eps: f64) -> f64 {
-    let log_eps = log2_core(eps);
-    let rule = |a: f64, j: usize| {
-        if a == 0.0 {
-            f64::INFINITY
-        } else {
-            let log_a = if is_plain(a) { log2_core(a) } else { a.log2() };
-            (log_eps - log_a) * (1.0 / j as f64)
-        }
+    let y = if is_plain(next_to_last) && is_plain(last) {
+        quick_exponent(next_to_last, last, order, eps)
+    } else {
+        let log_eps = log2_core(eps);
+        let rule = |a: f64, j: usize| {
+            if a == 0.0 {
+                f64::INFINITY
+            } else {
+                let log_a = if is_plain(a) { log2_core(a) } else { a.log2() };
+                exponent(log_eps, log_a, j)
+            }
+        };
+        rule(next_to_last, order - 1).min(rule(last, order))
     };
-    let y = rule(next_to_last, order - 1).min(rule(last, order));
     if is_in_reach(y) {
         exp2_core(y)
     } else {
@@ -128,15 +132,20 @@ pub(super) fn quick_step_of_norms(next_to_last: f64, last: f64, order: usize, ep
 }
 
 /// The exponent y of [`quick_step_of_norms`]'s h = 2^y where both norms are positive and
-/// normal ([`is_plain`]): the same operations without a branch, for lanes (`super::batch`,
-/// which takes [`quick_step_of_norms`] itself for a lane where they are not, or where y is
-/// not [`is_in_reach`]).
+/// normal ([`is_plain`]), without a branch: the lanes' (`super::batch`, which takes
+/// [`quick_step_of_norms`] itself for a lane where they are not, or where y is not
+/// [`is_in_reach`]).
 #[inline(always)]
 pub(super) fn quick_exponent(next_to_last: f64, last: f64, order: usize, eps: f64) -> f64 {
     let log_eps = log2_core(eps);
-    let y1 = (log_eps - log2_core(next_to_last)) * (1.0 / (order - 1) as f64);
-    let y2 = (log_eps - log2_core(last)) * (1.0 / order as f64);
-    y1.min(y2)
+    let y1 = exponent(log_eps, log2_core(next_to_last), order - 1);
+    y1.min(exponent(log_eps, log2_core(last), order))
+}
+
+/// log₂((ε/a)^{1/j}) from log₂ ε and log₂ a: the rule's exponent for one term.
+#[inline(always)]
+fn exponent(log_eps: f64, log_a: f64, j: usize) -> f64 {
+    (log_eps - log_a) * (1.0 / j as f64)
 }
 
 /// Positive and normal: where [`log2_core`] holds.
