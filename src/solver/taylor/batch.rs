@@ -11,8 +11,11 @@
 //! The lanes are plain `[f64; W]` with element-wise operators, compiled inside
 //! `#[target_feature]` functions so that LLVM packs them into one AVX-512 register (two AVX2
 //! ones): the `wide` crate fixes its registers when it is compiled (two SSE2 registers on
-//! the default target, `map::fast::lanes::avx`'s note), and no fused multiply–add may enter,
-//! or the bits would differ from the single path's.
+//! the default target, `map::fast::lanes::avx`'s note). A fused multiply–add enters only as
+//! `mul_add` (the series' products), the same one rounding in a lane as in the single path
+//! and on every CPU: one instruction in the FMA compilations, libm's `fma` without them
+//! (`tests::series_are_the_same_bits_without_fma_instructions`). Rust fuses nothing by
+//! itself, so every other product and sum is rounded apart, as in the single path.
 
 use super::poly;
 use super::power::{self, Coef, Coefs};
@@ -50,21 +53,26 @@ impl power::Coef for Lanes {
     fn splat(x: f64) -> Lanes {
         Lanes([x; W])
     }
+    #[inline(always)]
+    fn mul_add(self, a: Lanes, b: Lanes) -> Lanes {
+        Lanes(std::array::from_fn(|i| self.0[i].mul_add(a.0[i], b.0[i])))
+    }
 }
 
 type LaneSeries = [[Lanes; POWER_LEN]; 4];
 
 /// The series of W impacts' phases into `c`, in lanes: the AVX-512 compilation where the
-/// CPU has it, else AVX2's.
+/// CPU has it, else AVX2's, each with FMA; elsewhere plain, `mul_add` then libm's `fma`.
 fn series(k: Coefs<Lanes>, x: [Lanes; 4], c: &mut LaneSeries) {
     #[cfg(target_arch = "x86_64")]
     {
-        if std::arch::is_x86_feature_detected!("avx512f") {
-            // SAFETY: the CPU has AVX-512F, the only feature the function enables
+        let fma = std::arch::is_x86_feature_detected!("fma");
+        if fma && std::arch::is_x86_feature_detected!("avx512f") {
+            // SAFETY: the CPU has AVX-512F and FMA, the features the function enables
             return unsafe { series_avx512(k, x, c) };
         }
-        if std::arch::is_x86_feature_detected!("avx2") {
-            // SAFETY: the CPU has AVX2, the only feature the function enables
+        if fma && std::arch::is_x86_feature_detected!("avx2") {
+            // SAFETY: the CPU has AVX2 and FMA, the features the function enables
             return unsafe { series_avx2(k, x, c) };
         }
     }
@@ -72,13 +80,13 @@ fn series(k: Coefs<Lanes>, x: [Lanes; 4], c: &mut LaneSeries) {
 }
 
 #[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2")]
+#[target_feature(enable = "avx2,fma")]
 fn series_avx2(k: Coefs<Lanes>, x: [Lanes; 4], c: &mut LaneSeries) {
     power::series_of::<Lanes, POWER_LEN>(k, x, c)
 }
 
 #[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx512f")]
+#[target_feature(enable = "avx512f,fma")]
 fn series_avx512(k: Coefs<Lanes>, x: [Lanes; 4], c: &mut LaneSeries) {
     power::series_of::<Lanes, POWER_LEN>(k, x, c)
 }
@@ -206,8 +214,8 @@ fn each(f: impl Fn(usize) -> f64) -> Lanes {
     Lanes(std::array::from_fn(f))
 }
 
-/// What `power::Phase::advance` evaluates on a step, in lanes: s(h), s'(0), s'(h) and the
-/// state at h, each by `poly::eval`'s Horner sum (the same bits).
+/// What `power::Phase::advance` evaluates on a step, in lanes: s(h), s'(h) and the state at
+/// h, each by `poly::eval`'s Horner sum (the same bits), and s'(0), the series' c₁.
 struct Ahead {
     s_end: Lanes,
     ds0: Lanes,
@@ -259,7 +267,7 @@ fn evaluations_in(c: &LaneSeries, h: Lanes) -> Ahead {
     ];
     Ahead {
         s_end: x[0],
-        ds0: eval(&ds, Lanes::splat(0.0)),
+        ds0: c[0][1],
         dsh: eval(&ds, h),
         x,
     }
@@ -332,45 +340,4 @@ fn states(slots: &[Option<(usize, PowerImpact)>; W]) -> [Lanes; 4] {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// The lanes' quick steps are `Rules::step`'s lane by lane, bit for bit, where the norms
-    /// leave the plain case too: lane 0's zero series (h = ∞), lane 1's subnormal last terms
-    /// (libm's log₂), huge and tiny coefficients, states below and above 1 (the scales).
-    #[test]
-    fn quick_steps_are_the_scalar_rule_lane_by_lane() {
-        let rules = POWER_RULES;
-        let picks = [0.0, 1e-310, 3e-17, 0.25, 1.0, 7.5, 1e200, -2e-5];
-        for shift in 0..W {
-            let value = |v: usize, n: usize, j: usize| {
-                let k = (j + shift + 3 * v + n) % picks.len();
-                match j {
-                    0 => 0.0,
-                    1 if n + 2 >= POWER_LEN => 1e-310,
-                    _ => picks[k],
-                }
-            };
-            let mut c = [[Lanes::splat(0.0); POWER_LEN]; 4];
-            for (v, series) in c.iter_mut().enumerate() {
-                for (n, cn) in series.iter_mut().enumerate() {
-                    *cn = Lanes(std::array::from_fn(|j| value(v, n, j)));
-                }
-            }
-            let x: [Lanes; 4] =
-                std::array::from_fn(|v| Lanes(std::array::from_fn(|j| picks[(j + v) % 8] * 3.0)));
-            let lanes = quick_steps_in(&c, &x, rules.eps);
-            for j in 0..W {
-                let lane: [[f64; POWER_LEN]; 4] =
-                    std::array::from_fn(|v| std::array::from_fn(|n| c[v][n].0[j]));
-                let scales = x.map(|xv| xv.0[j].abs().max(1.0));
-                let want = rules.step(&lane, &scales);
-                assert_eq!(
-                    lanes.0[j].to_bits(),
-                    want.to_bits(),
-                    "lane {j}, shift {shift}"
-                );
-            }
-        }
-    }
-}
+mod tests;

@@ -90,8 +90,9 @@ pub(super) fn run(
         match peak {
             None => {
                 let dz = poly::derivative(&c[0]);
-                if poly::eval_estrin(&dz, h) <= 0.0 {
-                    let turn = RULES.root(&dz, 0.0, h);
+                let dz_end = poly::eval_estrin(&dz, h);
+                if dz_end <= 0.0 {
+                    let turn = RULES.root(&dz, 0.0, h, dz_end);
                     return Some(End::Turned(at(&c, turn, tau)));
                 }
             }
@@ -101,7 +102,7 @@ pub(super) fn run(
                     return None;
                 }
                 if z_end <= z_free {
-                    let leave = RULES.root(&c[0], z_free, h);
+                    let leave = RULES.root(&c[0], z_free, h, z_end);
                     let mut p = at(&c, leave, tau);
                     p.z = z_free;
                     return Some(End::Separated(p));

@@ -65,10 +65,18 @@ impl Rules {
         }
     }
 
-    /// The first h in (0, `end`] where `c(h) = target` ([`root`]).
-    pub(super) fn root<const L: usize>(&self, c: &[f64; L], target: f64, end: f64) -> f64 {
+    /// The first h in (0, `end`] where `c(h) = target` ([`root`]), `c_end` being the
+    /// caller's c(end): the quick roots take it rather than sum it again; the reference sums
+    /// its own, so that its bits stay the committed table's.
+    pub(super) fn root<const L: usize>(
+        &self,
+        c: &[f64; L],
+        target: f64,
+        end: f64,
+        c_end: f64,
+    ) -> f64 {
         if self.quick {
-            root_quick(c, target, end)
+            root_quick(c, target, end, c_end)
         } else {
             root(c, target, end)
         }
@@ -206,19 +214,22 @@ const FACTORIALS: [f64; 8] = [1.0, 1.0, 2.0, 6.0, 24.0, 120.0, 720.0, 5040.0];
 /// `c(end) − target` differ in sign (or the latter is 0): Newton's steps inside a bracket that
 /// bisection keeps, to the rounding of h.
 pub(super) fn root<const L: usize>(c: &[f64; L], target: f64, end: f64) -> f64 {
-    root_with(c, target, end, eval, eval_d, false)
+    let ends = (eval(c, 0.0) - target, eval(c, end) - target);
+    root_with(c, target, end, ends, eval, eval_d, false)
 }
 
 /// [`root`] with its sums by Estrin's scheme ([`eval_estrin`]): the fast paths' roots
 /// (`Rules::quick`). Horner's sums of order 28 are 28 dependent multiply–adds each, and
 /// Newton's steps wait on them; the roots were a quarter of a batched elastic–plastic impact
-/// (perf, BENCHMARKS.md, twelfth session).
-pub(super) fn root_quick<const L: usize>(c: &[f64; L], target: f64, end: f64) -> f64 {
+/// (perf, BENCHMARKS.md, twelfth session). c(0) is c₀, and c(end) is `c_end`, which the
+/// caller has already summed.
+pub(super) fn root_quick<const L: usize>(c: &[f64; L], target: f64, end: f64, c_end: f64) -> f64 {
     let d = derivative(c);
     root_with(
         c,
         target,
         end,
+        (c[0] - target, c_end - target),
         eval_estrin,
         move |_, h| eval_estrin(&d, h),
         true,
@@ -248,20 +259,21 @@ pub(super) fn eval_estrin<const L: usize>(c: &[f64; L], h: f64) -> f64 {
     b[0]
 }
 
-/// [`root`]'s search with the sums `value` and `slope` (Σ c_k h^k and its derivative);
-/// `quick`: ended by the first Newton step within h's rounding ([`root_quick`]).
+/// [`root`]'s search with the sums `value` and `slope` (Σ c_k h^k and its derivative), given
+/// c − target at 0 and at `end` (`ends`); `quick`: ended by the first Newton step within h's
+/// rounding ([`root_quick`]).
 #[inline(always)]
 fn root_with<const L: usize>(
     c: &[f64; L],
     target: f64,
     end: f64,
+    (g_lo, g_hi): (f64, f64),
     value: fn(&[f64; L], f64) -> f64,
     slope: impl Fn(&[f64; L], f64) -> f64,
     quick: bool,
 ) -> f64 {
     let g = |h: f64| value(c, h) - target;
     let (mut lo, mut hi) = (0.0, end);
-    let (g_lo, g_hi) = (g(lo), g(hi));
     if g_hi == 0.0 {
         return end;
     }
@@ -371,7 +383,7 @@ mod tests {
             *ck = 1.0 / f;
         }
         for (c, target, root_true) in [(quadratic, 0.0, 0.3), (exp, 1.5, 1.5f64.ln())] {
-            let quick = root_quick(&c, target, 1.0);
+            let quick = root_quick(&c, target, 1.0, eval(&c, 1.0));
             assert!(
                 (quick - root_true).abs() <= 4.0 * f64::EPSILON,
                 "{quick} {root_true}"

@@ -101,12 +101,19 @@ pub(super) trait Coef:
     Copy + std::ops::Add<Output = Self> + std::ops::Sub<Output = Self> + std::ops::Mul<Output = Self>
 {
     fn splat(x: f64) -> Self;
+    /// self · a + b with one rounding (IEEE fusedMultiplyAdd), lane by lane: the same bits
+    /// on every CPU, one instruction where it has FMA.
+    fn mul_add(self, a: Self, b: Self) -> Self;
 }
 
 impl Coef for f64 {
     #[inline(always)]
     fn splat(x: f64) -> f64 {
         x
+    }
+    #[inline(always)]
+    fn mul_add(self, a: f64, b: f64) -> f64 {
+        f64::mul_add(self, a, b)
     }
 }
 
@@ -115,8 +122,9 @@ impl Coef for f64 {
 /// terms of i ≥ 1 in two partial sums and the term of the newest coefficient last
 /// ([`dot_late`], [`square_late`]), so that an order waits on the one before for two
 /// products and two sums, not for a whole chain of sums (BENCHMARKS.md, thirteenth
-/// session). A lane runs f64's IEEE operations in the same order, unfused, so its
-/// coefficients are the f64 path's bits (tests/taylor_batch.rs
+/// session); each of their terms is one fused multiply–add ([`Coef::mul_add`]: half the
+/// operations, BENCHMARKS.md, fourteenth session). A lane runs f64's IEEE operations in the
+/// same order, so its coefficients are the f64 path's bits (tests/taylor_batch.rs
 /// `batched_summaries_are_the_single_ones_bit_for_bit`).
 #[inline(always)]
 pub(super) fn series_of<T: Coef, const L: usize>(k: Coefs<T>, x: [T; 4], c: &mut [[T; L]; 4]) {
@@ -144,14 +152,14 @@ fn dot_late<T: Coef, const L: usize>(a: &[T; L], b: &[T; L], n: usize) -> T {
     let (mut odd, mut even) = (T::splat(-0.0), T::splat(-0.0));
     let mut i = 1;
     while i < n {
-        odd = odd + a[i] * b[n - i];
-        even = even + a[i + 1] * b[n - i - 1];
+        odd = a[i].mul_add(b[n - i], odd);
+        even = a[i + 1].mul_add(b[n - i - 1], even);
         i += 2;
     }
     if i == n {
-        odd = odd + a[i] * b[n - i];
+        odd = a[i].mul_add(b[n - i], odd);
     }
-    (odd + even) + a[0] * b[n]
+    a[0].mul_add(b[n], odd + even)
 }
 
 /// The n-th coefficient of c², the terms of c_0 c_n last.
@@ -164,20 +172,21 @@ fn square_late<T: Coef, const L: usize>(c: &[T; L], n: usize) -> T {
     let half = n.div_ceil(2);
     let mut i = 1;
     while i + 1 < half {
-        odd = odd + c[i] * c[n - i];
-        even = even + c[i + 1] * c[n - i - 1];
+        odd = c[i].mul_add(c[n - i], odd);
+        even = c[i + 1].mul_add(c[n - i - 1], even);
         i += 2;
     }
     if i < half {
-        odd = odd + c[i] * c[n - i];
+        odd = c[i].mul_add(c[n - i], odd);
     }
-    let middle = if n.is_multiple_of(2) {
-        c[n / 2] * c[n / 2]
-    } else {
-        T::splat(0.0)
-    };
     let two = T::splat(2.0);
-    (two * (odd + even) + middle) + two * (c[0] * c[n])
+    let older = if n.is_multiple_of(2) {
+        c[n / 2].mul_add(c[n / 2], two * (odd + even))
+    } else {
+        two * (odd + even)
+    };
+    // 2c₀ is exact, so (2c₀)c_n fused is 2(c₀c_n) rounded once
+    (two * c[0]).mul_add(c[n], older)
 }
 
 /// The k-th coefficient of c², by the product's symmetry (half the terms).
@@ -189,6 +198,16 @@ fn square<const L: usize>(c: &[f64; L], k: usize) -> f64 {
         0.0
     };
     2.0 * half + middle
+}
+
+/// The state at an event h where s is known (the yield value, or 0 at separation).
+fn state_at<const L: usize>(c: &[[f64; L]; 4], h: f64, s: f64) -> [f64; 4] {
+    [
+        s,
+        poly::eval(&c[1], h),
+        poly::eval(&c[2], h),
+        poly::eval(&c[3], h),
+    ]
 }
 
 fn at<const L: usize>(c: &[[f64; L]; 4], h: f64) -> [f64; 4] {
@@ -336,43 +355,41 @@ impl Phase {
         }
         // loading: a turn (s' falls through 0) in (0, h], whose s may pass the yield value
         // even where s(h) is back below it
-        let turns = !self.unloading && {
-            let (ds0, dsh) = ds.unwrap_or_else(|| {
-                let d = poly::derivative(&c[0]);
-                (poly::eval(&d, 0.0), poly::eval(&d, h))
-            });
-            ds0 > 0.0 && dsh <= 0.0
-        };
-        let turn = turns.then(|| self.rules.root(&poly::derivative(&c[0]), 0.0, h));
-        let top = turn.map_or(s_end, |t| poly::eval(&c[0], t).max(s_end));
+        // s'(0) is the derivative's first coefficient
+        let (ds0, dsh) = ds.unwrap_or_else(|| (c[0][1], poly::eval(&poly::derivative(&c[0]), h)));
+        let turns = !self.unloading && ds0 > 0.0 && dsh <= 0.0;
+        // the turn and s there
+        let turn = turns.then(|| {
+            let t = self.rules.root(&poly::derivative(&c[0]), 0.0, h, dsh);
+            (t, poly::eval(&c[0], t))
+        });
+        let top = turn.map_or(s_end, |(_, s_turn)| s_turn.max(s_end));
         // the first of separation and yield in (0, h]
         let mut event: Option<(f64, bool)> = None;
         if top >= self.s_yield {
-            let upto = if s_end >= self.s_yield {
-                h
-            } else {
-                turn.unwrap_or(h)
+            let (upto, s_upto) = match turn {
+                Some(turn) if s_end < self.s_yield => turn,
+                _ => (h, s_end),
             };
-            event = Some((self.rules.root(&c[0], self.s_yield, upto), true));
+            event = Some((self.rules.root(&c[0], self.s_yield, upto, s_upto), true));
         } else if s_end <= 0.0 && self.x[0] > 0.0 {
-            event = Some((self.rules.root(&c[0], 0.0, h), false));
+            event = Some((self.rules.root(&c[0], 0.0, h, s_end), false));
         }
-        if let Some(t) = turn
+        if let Some((t, s_turn)) = turn
             && t <= event.map_or(h, |e| e.0)
         {
-            self.s_max = self.s_max.max(poly::eval(&c[0], t));
+            self.s_max = self.s_max.max(s_turn);
         }
         if let Some((h_event, yielded)) = event {
-            let mut end = at(c, h_event);
+            let s = if yielded { self.s_yield } else { 0.0 };
+            let end = state_at(c, h_event, s);
             if yielded {
-                end[0] = self.s_yield;
                 self.s_max = self.s_max.max(self.s_yield);
                 return Next::Done(Run {
                     end: End::Yield(self.point(end)),
                     s_max: self.s_max,
                 });
             }
-            end[0] = 0.0;
             return Next::Done(Run {
                 end: End::Separated(self.point(end)),
                 s_max: self.s_max,
