@@ -6,8 +6,16 @@
 //! z̄' = ᾱ' − ȳ',   ᾱ'' = −F̄,   ȳ' = 2ζ(F̄ − λȳ).
 //! ```
 
-use super::poly::{self, EPS, LEN, ORDER, Rules, Series};
+use super::poly::{self, EPS, Rules};
 use super::{Budget, Point, Sys};
+
+/// The series' length on the elastic–plastic straight stretch: order 24, not the linear
+/// law's `poly::ORDER`, 20. A coefficient costs a few operations here, so a longer series is
+/// cheap, and it takes the stretch from yield to the peak in one step where order 20 took
+/// two: past yield 1.65 → 1.51 µs an impact batched over every preset at 0.6–60 m/s, against
+/// 1.55 at order 22 and 1.54–1.61 at 28 (BENCHMARKS.md, fourteenth session). The linear law's
+/// flattening keeps order 20, so its answers keep their bits.
+pub(super) const STRETCH_LEN: usize = 25;
 
 /// The linear phases' rules: within `poly::EPS`, by the quick step rule and roots (no
 /// reference is built on them).
@@ -38,8 +46,8 @@ pub(super) enum End {
 /// b_j = b/(j + 1), which hold no coefficient, z̄_{j+1} = (ᾱ'_j/(j + 1) + b_j ȳ_j) − a_j z̄_j
 /// and ȳ_{j+1} = a_j z̄_j − b_j ȳ_j: one order's z̄ and ȳ reach the next through a product
 /// and a sum or two, the series' cost being that chain's latency, not its arithmetic.
-fn series(sys: &Sys, br: &Branch, x: [f64; 3]) -> [Series; 3] {
-    let (mut z, mut v, mut y) = ([0.0; LEN], [0.0; LEN], [0.0; LEN]);
+fn series<const L: usize>(sys: &Sys, br: &Branch, x: [f64; 3]) -> [[f64; L]; 3] {
+    let (mut z, mut v, mut y) = ([0.0; L], [0.0; L], [0.0; L]);
     (z[0], v[0], y[0]) = (x[0], x[1], x[2]);
     let two_zeta = 2.0 * sys.zeta;
     let (a, b) = (two_zeta * br.k, two_zeta * sys.lambda);
@@ -47,7 +55,7 @@ fn series(sys: &Sys, br: &Branch, x: [f64; 3]) -> [Series; 3] {
     let f = br.k * (z[0] - br.z0) + br.f0;
     let yd = two_zeta * f - b * y[0];
     (z[1], v[1], y[1]) = (v[0] - yd, -f, yd);
-    for k in 1..ORDER {
+    for k in 1..L - 1 {
         let inv = 1.0 / (k + 1) as f64;
         let (a_k, b_k) = (a * inv, b * inv);
         z[k + 1] = (v[k] * inv + b_k * y[k]) - a_k * z[k];
@@ -57,7 +65,7 @@ fn series(sys: &Sys, br: &Branch, x: [f64; 3]) -> [Series; 3] {
     [z, v, y]
 }
 
-fn at(c: &[Series; 3], h: f64, tau: f64) -> Point {
+fn at<const L: usize>(c: &[[f64; L]; 3], h: f64, tau: f64) -> Point {
     Point {
         tau: tau + h,
         z: poly::eval_estrin(&c[0], h),
@@ -69,7 +77,7 @@ fn at(c: &[Series; 3], h: f64, tau: f64) -> Point {
 /// Run the phase from `start` until z̄' falls through 0 (loading: `peak` is `None`) or, with
 /// the peak z̄_m given (unloading), until F̄ falls to 0; a rise past z̄_m (a reload), or the
 /// budget running out, gives `None`.
-pub(super) fn run(
+pub(super) fn run<const L: usize>(
     sys: &Sys,
     br: &Branch,
     start: Point,
@@ -82,7 +90,7 @@ pub(super) fn run(
     let z_free = br.z0 - br.f0 / br.k;
     loop {
         budget.take()?;
-        let c = series(sys, br, x);
+        let c = series::<L>(sys, br, x);
         let h = RULES.step(&c, &x.map(|xi| xi.abs().max(1.0)));
         if !(h.is_finite() && h > 0.0) {
             return None;

@@ -4,8 +4,10 @@
 //! Each phase of docs/model.md §3 is a smooth system with a polynomial right-hand side once
 //! the 3/2 power is written with s = √((z̄ − z̄₀)/b) and time with dτ = s dσ (`power`): the
 //! Hertz loading, the elastic–plastic unloading. The linear branches (`linear`) are linear
-//! systems in τ. Series of order 20 (`poly`; order 28 in [`summary`]'s 3/2-power phases,
-//! `POWER_LEN`) step from phase event to phase event; the events
+//! systems in τ. Series of order 28 on the 3/2-power phases (`POWER_LEN`), 24 on the
+//! elastic–plastic straight stretch (`linear::STRETCH_LEN`) and 20 on the linear law's
+//! branches and in the Hertz table's reference (`poly::ORDER`) step from phase event to
+//! phase event; the events
 //! (the turn z̄' = 0, yield z̄ = z̄_p, separation F̄ = 0) are the roots of the step's series, so
 //! no step is repeated and no event is passed.
 //!
@@ -252,7 +254,9 @@ fn linear_flattening(n: &Normalized) -> Option<Summary> {
         v: 1.0,
         y: 0.0,
     };
-    let linear::End::Turned(top) = linear::run(&sys, &load, start, None, &mut budget)? else {
+    let linear::End::Turned(top) =
+        linear::run::<{ poly::LEN }>(&sys, &load, start, None, &mut budget)?
+    else {
         return None;
     };
     let z_m = top.z;
@@ -277,7 +281,8 @@ fn linear_flattening(n: &Normalized) -> Option<Summary> {
     if 2.0 * sys.zeta * (unload.k + sys.lambda) * std::f64::consts::PI / unload.k.sqrt() > STIFF {
         return None;
     }
-    let linear::End::Separated(end) = linear::run(&sys, &unload, top, Some(z_m), &mut budget)?
+    let linear::End::Separated(end) =
+        linear::run::<{ poly::LEN }>(&sys, &unload, top, Some(z_m), &mut budget)?
     else {
         return None;
     };

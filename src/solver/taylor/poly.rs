@@ -12,9 +12,6 @@ pub(super) const LEN: usize = ORDER + 1;
 /// of the state itself, so that the step's error is its rounding.
 pub(super) const EPS: f64 = 1e-17;
 
-/// A truncated power series Σ c_k h^k.
-pub(super) type Series = [f64; LEN];
-
 /// Σ c_k h^k (Horner).
 pub(super) fn eval<const L: usize>(c: &[f64; L], h: f64) -> f64 {
     c.iter().rev().fold(0.0, |acc, &ck| acc * h + ck)
