@@ -62,6 +62,17 @@ impl Rules {
         }
     }
 
+    /// Σ c_k h^k: by Estrin's scheme where quick ([`eval_estrin`]), by Horner's for the
+    /// reference ([`eval`]).
+    #[inline(always)]
+    pub(super) fn eval<const L: usize>(&self, c: &[f64; L], h: f64) -> f64 {
+        if self.quick {
+            eval_estrin(c, h)
+        } else {
+            eval(c, h)
+        }
+    }
+
     /// The first h in (0, `end`] where `c(h) = target` ([`root`]), `c_end` being the
     /// caller's c(end): the quick roots take it rather than sum it again; the reference sums
     /// its own, so that its bits stay the committed table's.

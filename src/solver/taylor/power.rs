@@ -200,13 +200,16 @@ fn square<const L: usize>(c: &[f64; L], k: usize) -> f64 {
     2.0 * half + middle
 }
 
-/// The state at an event h where s is known (the yield value, or 0 at separation).
-fn state_at<const L: usize>(c: &[[f64; L]; 4], h: f64, s: f64) -> [f64; 4] {
+/// The state at an event h where s is known (the yield value, or 0 at separation), by the
+/// rules' sums (`Rules::eval`: Estrin's where quick, three chains of ⌈log₂ L⌉ products
+/// where Horner's are L long; in the batch as alone, so the same bits). A quiet step's end
+/// keeps Horner's sums ([`at`]), which the batch takes in lanes, where they are faster.
+fn state_at<const L: usize>(c: &[[f64; L]; 4], h: f64, s: f64, rules: Rules) -> [f64; 4] {
     [
         s,
-        poly::eval(&c[1], h),
-        poly::eval(&c[2], h),
-        poly::eval(&c[3], h),
+        rules.eval(&c[1], h),
+        rules.eval(&c[2], h),
+        rules.eval(&c[3], h),
     ]
 }
 
@@ -382,7 +385,7 @@ impl Phase {
         }
         if let Some((h_event, yielded)) = event {
             let s = if yielded { self.s_yield } else { 0.0 };
-            let end = state_at(c, h_event, s);
+            let end = state_at(c, h_event, s, self.rules);
             if yielded {
                 self.s_max = self.s_max.max(self.s_yield);
                 return Next::Done(Run {
