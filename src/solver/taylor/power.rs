@@ -15,6 +15,9 @@
 use super::poly::{self, Rules};
 use super::{Budget, Point, Sys};
 
+mod fast;
+pub(super) use fast::{Coef, Coefs, series_of};
+
 /// The branch z̄ = z̄₀ + b s², F̄ = a s³.
 #[derive(Debug, Clone, Copy)]
 pub(super) struct Branch {
@@ -66,141 +69,6 @@ pub(super) fn series<const L: usize>(sys: &Sys, br: &Branch, x: [f64; 4]) -> [[f
         t[k + 1] = s[k] * inv;
     }
     [s, v, y, t]
-}
-
-/// The system's coefficients as [`series_of`] takes them, in lanes of type `T`.
-#[derive(Clone, Copy)]
-pub(super) struct Coefs<T> {
-    /// 2ζ
-    pub two_zeta: T,
-    /// λ
-    pub lambda: T,
-    /// a
-    pub a: T,
-    /// −a
-    pub minus_a: T,
-    /// 1/(2b)
-    pub half_b: T,
-}
-
-impl Coefs<f64> {
-    /// [`series`]'s coefficients of `sys` on `br`.
-    pub(super) fn of(sys: &Sys, br: &Branch) -> Coefs<f64> {
-        Coefs {
-            two_zeta: 2.0 * sys.zeta,
-            lambda: sys.lambda,
-            a: br.a,
-            minus_a: -br.a,
-            half_b: 0.5 / br.b,
-        }
-    }
-}
-
-/// The arithmetic [`series_of`] needs: IEEE f64 operations, lane by lane.
-pub(super) trait Coef:
-    Copy + std::ops::Add<Output = Self> + std::ops::Sub<Output = Self> + std::ops::Mul<Output = Self>
-{
-    fn splat(x: f64) -> Self;
-    /// self · a + b with one rounding (IEEE fusedMultiplyAdd), lane by lane: the same bits
-    /// on every CPU, one instruction where it has FMA.
-    fn mul_add(self, a: Self, b: Self) -> Self;
-}
-
-impl Coef for f64 {
-    #[inline(always)]
-    fn splat(x: f64) -> f64 {
-        x
-    }
-    #[inline(always)]
-    fn mul_add(self, a: f64, b: f64) -> f64 {
-        f64::mul_add(self, a, b)
-    }
-}
-
-/// [`series`]'s coefficients with each product's sums reordered, the fast paths' series:
-/// for f64 in `super::summary`, in lanes in `super::batch`. At order n the four products
-/// (s², s³ = s·s², s⁴ = (s²)², s·ȳ') take their terms of 1 ≤ i ≤ n − 1 in one loop over
-/// the pairs (i, n − i), each of its six coefficients loaded once for six fused
-/// multiply–adds ([`Coef::mul_add`]) where a product at a time loads two for one (the lanes'
-/// series were bound by their loads: BENCHMARKS.md, fourteenth session). The pairs go from
-/// the middle out, so the one holding order n − 1's coefficients comes last, and the terms
-/// of the coefficients order n computes (s₀p_n, p₀p_n, s₀ȳ'_n) after them: an order waits on
-/// the one before for a few sums, not for a whole chain. A lane runs f64's IEEE operations
-/// in the same order, so its coefficients are the f64 path's bits (tests/taylor_batch.rs
-/// `batched_summaries_are_the_single_ones_bit_for_bit`).
-#[inline(always)]
-pub(super) fn series_of<T: Coef, const L: usize>(k: Coefs<T>, x: [T; 4], c: &mut [[T; L]; 4]) {
-    let zero = T::splat(0.0);
-    let two = T::splat(2.0);
-    let [s, v, y, t] = c;
-    let (mut p, mut yd) = ([zero; L], [zero; L]);
-    (s[0], v[0], y[0], t[0]) = (x[0], x[1], x[2], x[3]);
-    for n in 0..L - 1 {
-        let (q, r, sy);
-        if n == 0 {
-            p[0] = s[0] * s[0];
-            q = s[0] * p[0];
-            r = p[0] * p[0];
-            yd[0] = k.two_zeta * (k.a * q - k.lambda * y[0]);
-            sy = s[0] * yd[0];
-        } else {
-            let older = older_terms(s, &p, &yd, n);
-            p[n] = (two * s[0]).mul_add(s[n], older.ss);
-            q = s[0].mul_add(p[n], older.sp);
-            r = (two * p[0]).mul_add(p[n], older.pp);
-            yd[n] = k.two_zeta * (k.a * q - k.lambda * y[n]);
-            sy = s[0].mul_add(yd[n], older.sy);
-        }
-        let inv = T::splat(1.0 / (n + 1) as f64);
-        s[n + 1] = (v[n] - yd[n]) * k.half_b * inv;
-        v[n + 1] = k.minus_a * r * inv;
-        y[n + 1] = sy * inv;
-        t[n + 1] = s[n] * inv;
-    }
-}
-
-/// The terms of order n ≥ 1 of s², s·s², (s²)² and s·ȳ' that hold no coefficient order n
-/// computes: all but s₀s_n, s₀p_n, p₀p_n and s₀ȳ'_n ([`series_of`]).
-struct Older<T> {
-    ss: T,
-    sp: T,
-    pp: T,
-    sy: T,
-}
-
-/// [`Older`] of order n ≥ 1: the pairs (i, n − i), 1 ≤ i < n − i, from the middle out, two
-/// partial sums for the mixed products; then the middle term (n even), then s_n p₀ and
-/// s_n ȳ'₀ (s_n is order n − 1's).
-#[inline(always)]
-fn older_terms<T: Coef, const L: usize>(s: &[T; L], p: &[T; L], yd: &[T; L], n: usize) -> Older<T> {
-    let m = T::splat(-0.0);
-    let (mut ss, mut pp, mut sp, mut ps, mut sy, mut ys) = (m, m, m, m, m, m);
-    let mut i = (n - 1) / 2;
-    while i >= 1 {
-        let j = n - i;
-        ss = s[i].mul_add(s[j], ss);
-        pp = p[i].mul_add(p[j], pp);
-        sp = s[i].mul_add(p[j], sp);
-        ps = p[i].mul_add(s[j], ps);
-        sy = s[i].mul_add(yd[j], sy);
-        ys = yd[i].mul_add(s[j], ys);
-        i -= 1;
-    }
-    let two = T::splat(2.0);
-    let (mut ss, mut pp, mut sp, mut sy) = (two * ss, two * pp, sp + ps, sy + ys);
-    if n.is_multiple_of(2) {
-        let h = n / 2;
-        ss = s[h].mul_add(s[h], ss);
-        pp = p[h].mul_add(p[h], pp);
-        sp = s[h].mul_add(p[h], sp);
-        sy = s[h].mul_add(yd[h], sy);
-    }
-    Older {
-        ss,
-        sp: s[n].mul_add(p[0], sp),
-        pp,
-        sy: s[n].mul_add(yd[0], sy),
-    }
 }
 
 /// The k-th coefficient of c², by the product's symmetry (half the terms).
