@@ -12,15 +12,18 @@
 //! `#[target_feature]` functions so that LLVM packs them into one AVX-512 register (two AVX2
 //! ones): the `wide` crate fixes its registers when it is compiled (two SSE2 registers on
 //! the default target, `map::fast::lanes::avx`'s note). A fused multiply–add enters only as
-//! `mul_add` (the series' products), the same one rounding in a lane as in the single path
-//! and on every CPU: one instruction in the FMA compilations, libm's `fma` without them
-//! (`tests::series_are_the_same_bits_without_fma_instructions`). Rust fuses nothing by
-//! itself, so every other product and sum is rounded apart, as in the single path.
+//! `mul_add` (the series' products, the step's Horner sums), the same one rounding in a lane
+//! as in the single path and on every CPU: one instruction in the FMA compilations, libm's
+//! `fma` without them (`tests::series_are_the_same_bits_without_fma_instructions`,
+//! `super::fused`'s tests). Rust fuses nothing by itself, so every other product and sum is
+//! rounded apart, as in the single path. Only code inlined into those compilations has FMA:
+//! a closure left out of line would call libm's `fma` eight times a lane operation.
 
-use super::poly;
-use super::power::{self, Coef, Coefs};
+use super::poly::Coef;
+use super::power::{self, Coefs};
 use super::stages::{PowerImpact, Progress};
 use super::{POWER_LEN, POWER_RULES, Summary};
+use super::{fused, poly};
 use crate::model::contact::ContactLaw;
 use crate::model::params::Normalized;
 use std::ops::{Add, Mul, Sub};
@@ -48,7 +51,7 @@ lanewise!(Add, add, +);
 lanewise!(Sub, sub, -);
 lanewise!(Mul, mul, *);
 
-impl power::Coef for Lanes {
+impl Coef for Lanes {
     #[inline(always)]
     fn splat(x: f64) -> Lanes {
         Lanes([x; W])
@@ -215,7 +218,8 @@ fn each(f: impl Fn(usize) -> f64) -> Lanes {
 }
 
 /// What `power::Phase::advance` evaluates on a step, in lanes: s(h), s'(h) and the state at
-/// h, each by `poly::eval`'s Horner sum (the same bits), and s'(0), the series' c₁.
+/// h, each by `fused::horner` as `Rules::horner` sums them (the same bits), and s'(0), the
+/// series' c₁.
 struct Ahead {
     s_end: Lanes,
     ds0: Lanes,
@@ -224,16 +228,17 @@ struct Ahead {
 }
 
 /// [`Ahead`] of the series `c` at the steps `h`: the AVX-512 or AVX2 compilation where the
-/// CPU has it, as [`series`].
+/// CPU has it, each with FMA, as [`series`].
 fn evaluations(c: &LaneSeries, h: Lanes) -> Ahead {
     #[cfg(target_arch = "x86_64")]
     {
-        if std::arch::is_x86_feature_detected!("avx512f") {
-            // SAFETY: the CPU has AVX-512F, the only feature the function enables
+        let fma = std::arch::is_x86_feature_detected!("fma");
+        if fma && std::arch::is_x86_feature_detected!("avx512f") {
+            // SAFETY: the CPU has AVX-512F and FMA, the features the function enables
             return unsafe { evaluations_avx512(c, h) };
         }
-        if std::arch::is_x86_feature_detected!("avx2") {
-            // SAFETY: the CPU has AVX2, the only feature the function enables
+        if fma && std::arch::is_x86_feature_detected!("avx2") {
+            // SAFETY: the CPU has AVX2 and FMA, the features the function enables
             return unsafe { evaluations_avx2(c, h) };
         }
     }
@@ -241,13 +246,13 @@ fn evaluations(c: &LaneSeries, h: Lanes) -> Ahead {
 }
 
 #[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2")]
+#[target_feature(enable = "avx2,fma")]
 fn evaluations_avx2(c: &LaneSeries, h: Lanes) -> Ahead {
     evaluations_in(c, h)
 }
 
 #[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx512f")]
+#[target_feature(enable = "avx512f,fma")]
 fn evaluations_avx512(c: &LaneSeries, h: Lanes) -> Ahead {
     evaluations_in(c, h)
 }
@@ -259,26 +264,20 @@ fn evaluations_in(c: &LaneSeries, h: Lanes) -> Ahead {
     for k in 1..POWER_LEN {
         ds[k - 1] = Lanes::splat(k as f64) * c[0][k];
     }
+    // written out: a closure (`each_ref().map`) need not be inlined, and outside this
+    // function's FMA compilation each lane's mul_add is a call to libm's fma
     let x = [
-        eval(&c[0], h),
-        eval(&c[1], h),
-        eval(&c[2], h),
-        eval(&c[3], h),
+        fused::horner(&c[0], h),
+        fused::horner(&c[1], h),
+        fused::horner(&c[2], h),
+        fused::horner(&c[3], h),
     ];
     Ahead {
         s_end: x[0],
         ds0: c[0][1],
-        dsh: eval(&ds, h),
+        dsh: fused::horner(&ds, h),
         x,
     }
-}
-
-/// `poly::eval` in lanes.
-#[inline(always)]
-fn eval(c: &[Lanes; POWER_LEN], h: Lanes) -> Lanes {
-    c.iter()
-        .rev()
-        .fold(Lanes::splat(0.0), |acc, &ck| acc * h + ck)
 }
 
 /// Every slot's impact charged the step it is about to take, and every empty slot given the

@@ -6,7 +6,8 @@
 //! z̄' = ᾱ' − ȳ',   ᾱ'' = −F̄,   ȳ' = 2ζ(F̄ − λȳ).
 //! ```
 
-use super::poly::{self, EPS, Rules};
+use super::poly::{self, EPS};
+use super::rules::Rules;
 use super::{Budget, Point, Sys};
 
 /// The series' length on the elastic–plastic straight stretch: order 24, not the linear
@@ -22,6 +23,7 @@ pub(super) const STRETCH_LEN: usize = 25;
 const RULES: Rules = Rules {
     eps: EPS,
     quick: true,
+    fused: false,
 };
 
 /// The branch F̄ = k (z̄ − z̄₀) + F̄₀.

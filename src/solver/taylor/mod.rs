@@ -25,10 +25,12 @@
 //! tests/taylor.rs holds the answers to the adaptive solver's over the property tests' domain.
 
 pub mod batch;
+mod fused;
 mod linear;
 pub mod plastic;
 mod poly;
 mod power;
+mod rules;
 mod stages;
 
 use crate::model::contact::{Contact, ContactLaw};
@@ -78,10 +80,11 @@ const POWER_LEN: usize = 29;
 /// (`taylor_meets_the_reference_at_a_thousand_points`).
 const POWER_EPS: f64 = 1e-15;
 /// The 3/2-power phases' rules in [`summary`]: [`POWER_EPS`], and the quick step rule and
-/// roots (`poly::Rules`); the reference keeps `poly::Rules::REFERENCE`.
-const POWER_RULES: poly::Rules = poly::Rules {
+/// roots (`rules::Rules`); the reference keeps `rules::Rules::REFERENCE`.
+const POWER_RULES: rules::Rules = rules::Rules {
     eps: POWER_EPS,
     quick: true,
+    fused: true,
 };
 
 /// ȳ' = 2ζ(F̄ − λȳ) in the units of the run.
@@ -185,7 +188,7 @@ fn series_fma(k: power::Coefs<f64>, x: [f64; 4], c: &mut [[f64; POWER_LEN]; 4]) 
 fn hertz_loading<const L: usize>(
     sys: &Sys,
     zp: f64,
-    rules: poly::Rules,
+    rules: rules::Rules,
     budget: &mut Budget,
 ) -> Option<power::Run> {
     let (hertz, start) = hertz_start();
@@ -224,7 +227,7 @@ pub fn hertz_reference(lambda_hat: f64, zeta_hat: f64, max_steps: usize) -> Opti
     };
     let mut budget = Budget::with_steps(max_steps);
     let first =
-        hertz_loading::<{ poly::LEN }>(&sys, f64::INFINITY, poly::Rules::REFERENCE, &mut budget)?;
+        hertz_loading::<{ poly::LEN }>(&sys, f64::INFINITY, rules::Rules::REFERENCE, &mut budget)?;
     let power::End::Separated(end) = first.end else {
         return None;
     };

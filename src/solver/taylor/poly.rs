@@ -35,72 +35,24 @@ pub(super) fn derivative<const L: usize>(c: &[f64; L]) -> [f64; L] {
     d
 }
 
-/// How a phase's steps are taken: their truncation `eps`, and whether by the quick rule and
-/// roots ([`quick_step_of_norms`], [`root_quick`]: the fast paths) or by `powf` and Horner's
-/// sums ([`step_of_norms`], [`root`]: the Hertz table's reference, whose nodes
-/// tests/hertz_table.rs holds to the committed file's bits).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub(super) struct Rules {
-    pub eps: f64,
-    pub quick: bool,
+/// The arithmetic of the fast series (`power::series_of`) and sums (`super::fused`) needs: IEEE f64 operations, lane by lane.
+pub(super) trait Coef:
+    Copy + std::ops::Add<Output = Self> + std::ops::Sub<Output = Self> + std::ops::Mul<Output = Self>
+{
+    fn splat(x: f64) -> Self;
+    /// self · a + b with one rounding (IEEE fusedMultiplyAdd), lane by lane: the same bits
+    /// on every CPU, one instruction where it has FMA.
+    fn mul_add(self, a: Self, b: Self) -> Self;
 }
 
-impl Rules {
-    /// The reference's: order 20 within [`EPS`], `powf` and Horner.
-    pub(super) const REFERENCE: Rules = Rules {
-        eps: EPS,
-        quick: false,
-    };
-
-    /// The step from the norms of the last two terms of series of order `order`.
+impl Coef for f64 {
     #[inline(always)]
-    pub(super) fn step_of_norms(&self, next_to_last: f64, last: f64, order: usize) -> f64 {
-        if self.quick {
-            quick_step_of_norms(next_to_last, last, order, self.eps)
-        } else {
-            step_of_norms(next_to_last, last, order, self.eps)
-        }
+    fn splat(x: f64) -> f64 {
+        x
     }
-
-    /// Σ c_k h^k: by Estrin's scheme where quick ([`eval_estrin`]), by Horner's for the
-    /// reference ([`eval`]).
     #[inline(always)]
-    pub(super) fn eval<const L: usize>(&self, c: &[f64; L], h: f64) -> f64 {
-        if self.quick {
-            eval_estrin(c, h)
-        } else {
-            eval(c, h)
-        }
-    }
-
-    /// The first h in (0, `end`] where `c(h) = target` ([`root`]), `c_end` being the
-    /// caller's c(end): the quick roots take it rather than sum it again; the reference sums
-    /// its own, so that its bits stay the committed table's.
-    pub(super) fn root<const L: usize>(
-        &self,
-        c: &[f64; L],
-        target: f64,
-        end: f64,
-        c_end: f64,
-    ) -> f64 {
-        if self.quick {
-            root_quick(c, target, end, c_end)
-        } else {
-            root(c, target, end)
-        }
-    }
-
-    /// The step after which every series' last two terms, each relative to its `scales`
-    /// entry, stay below `eps` ([`step_of_norms`]): the norms are taken first.
-    pub(super) fn step<const L: usize>(&self, c: &[[f64; L]], scales: &[f64]) -> f64 {
-        let order = L - 1;
-        let norm = |j: usize| {
-            c.iter()
-                .zip(scales)
-                .map(|(ci, s)| ci[j].abs() / s)
-                .fold(0.0, f64::max)
-        };
-        self.step_of_norms(norm(order - 1), norm(order), order)
+    fn mul_add(self, a: f64, b: f64) -> f64 {
+        f64::mul_add(self, a, b)
     }
 }
 
@@ -271,7 +223,7 @@ pub(super) fn eval_estrin<const L: usize>(c: &[f64; L], h: f64) -> f64 {
 /// c − target at 0 and at `end` (`ends`); `quick`: ended by the first Newton step within h's
 /// rounding ([`root_quick`]).
 #[inline(always)]
-fn root_with<const L: usize>(
+pub(super) fn root_with<const L: usize>(
     c: &[f64; L],
     target: f64,
     end: f64,
@@ -337,24 +289,6 @@ mod tests {
         assert!((eval_d(&c, 0.3) - 2.3).abs() < 1e-15);
         assert!((root(&c, 0.0, 1.0) - 0.3).abs() < 1e-16);
         assert!((derivative(&c)[0] - 1.7).abs() == 0.0);
-    }
-
-    #[test]
-    fn the_step_keeps_the_last_terms_below_eps() {
-        // the exponential's series: c_k = 1/k!
-        let mut c = [0.0; LEN];
-        let mut f = 1.0;
-        for (k, ck) in c.iter_mut().enumerate() {
-            if k > 0 {
-                f *= k as f64;
-            }
-            *ck = 1.0 / f;
-        }
-        let h = Rules::REFERENCE.step(&[c], &[1.0]);
-        assert!(c[ORDER] * h.powi(ORDER as i32) <= EPS * 1.000_001);
-        assert!(h > 1.0 && h < 3.0, "{h}");
-        // and the sum at h is e^h to the rounding
-        assert!((eval(&c, h) - h.exp()).abs() < 4e-16 * h.exp());
     }
 
     #[test]

@@ -12,11 +12,12 @@
 //! separation is a simple zero of s in σ, at which ᾱ' and τ are stationary (dᾱ'/dσ = −a s⁴,
 //! dτ/dσ = s), so the COR and the contact time carry none of the root's error.
 
-use super::poly::{self, Rules};
+use super::poly;
+use super::rules::Rules;
 use super::{Budget, Point, Sys};
 
 mod fast;
-pub(super) use fast::{Coef, Coefs, series_of};
+pub(super) use fast::{Coefs, series_of};
 
 /// The branch z̄ = z̄₀ + b s², F̄ = a s³.
 #[derive(Debug, Clone, Copy)]
@@ -95,13 +96,9 @@ fn state_at<const L: usize>(c: &[[f64; L]; 4], h: f64, s: f64, rules: Rules) -> 
     ]
 }
 
-fn at<const L: usize>(c: &[[f64; L]; 4], h: f64) -> [f64; 4] {
-    [
-        poly::eval(&c[0], h),
-        poly::eval(&c[1], h),
-        poly::eval(&c[2], h),
-        poly::eval(&c[3], h),
-    ]
+/// The state at a step's end h, by the rules' Horner sums (`super::batch`'s in lanes).
+fn at<const L: usize>(c: &[[f64; L]; 4], h: f64, rules: Rules) -> [f64; 4] {
+    c.each_ref().map(|cv| rules.horner(cv, h))
 }
 
 /// Run the phase from `start` on branch `br` until the ball leaves (s = 0) or, loading, s
@@ -219,7 +216,7 @@ impl Phase {
         if !(h.is_finite() && h > 0.0) {
             return Next::Fail;
         }
-        self.advance_by(c, h, poly::eval(&c[0], h), None, budget)
+        self.advance_by(c, h, self.rules.horner(&c[0], h), None, budget)
     }
 
     /// [`Phase::advance`] given the step `h` and s(h) (`s_end`), and s'(0), s'(h) (`ds`)
@@ -241,12 +238,13 @@ impl Phase {
         // loading: a turn (s' falls through 0) in (0, h], whose s may pass the yield value
         // even where s(h) is back below it
         // s'(0) is the derivative's first coefficient
-        let (ds0, dsh) = ds.unwrap_or_else(|| (c[0][1], poly::eval(&poly::derivative(&c[0]), h)));
+        let (ds0, dsh) =
+            ds.unwrap_or_else(|| (c[0][1], self.rules.horner(&poly::derivative(&c[0]), h)));
         let turns = !self.unloading && ds0 > 0.0 && dsh <= 0.0;
         // the turn and s there
         let turn = turns.then(|| {
             let t = self.rules.root(&poly::derivative(&c[0]), 0.0, h, dsh);
-            (t, poly::eval(&c[0], t))
+            (t, self.rules.eval(&c[0], t))
         });
         let top = turn.map_or(s_end, |(_, s_turn)| s_turn.max(s_end));
         // the first of separation and yield in (0, h]
@@ -280,6 +278,6 @@ impl Phase {
                 s_max: self.s_max,
             });
         }
-        self.take(at(c, h), budget)
+        self.take(at(c, h, self.rules), budget)
     }
 }

@@ -91,3 +91,35 @@ fn series_are_the_same_bits_without_fma_instructions() {
         }
     }
 }
+
+/// The lanes' step-end sums (their FMA compilation) are `Rules::horner`'s for the fast
+/// phases, lane by lane, bit for bit.
+#[test]
+fn step_sums_are_the_single_paths_lane_by_lane() {
+    let mut c = [[Lanes::splat(0.0); POWER_LEN]; 4];
+    for (v, series) in c.iter_mut().enumerate() {
+        for (n, cn) in series.iter_mut().enumerate() {
+            *cn = each(|j| {
+                let sign = if (n + j + v) % 3 == 0 { -1.0 } else { 1.0 };
+                sign * (1.0 + ((n * 7 + j * 3 + v) % 11) as f64 / 11.0) / 1.9f64.powi(n as i32)
+            });
+        }
+    }
+    let h = each(|j| 0.1 + 0.11 * j as f64);
+    let ahead = evaluations(&c, h);
+    for j in 0..W {
+        let lane: [[f64; POWER_LEN]; 4] =
+            std::array::from_fn(|v| std::array::from_fn(|n| c[v][n].0[j]));
+        let d = poly::derivative(&lane[0]);
+        let want = lane.map(|cv| POWER_RULES.horner(&cv, h.0[j]));
+        assert_eq!(
+            ahead.x.map(|x| x.0[j].to_bits()),
+            want.map(f64::to_bits),
+            "lane {j}"
+        );
+        assert_eq!(ahead.s_end.0[j].to_bits(), want[0].to_bits(), "lane {j}");
+        let dsh = POWER_RULES.horner(&d, h.0[j]);
+        assert_eq!(ahead.dsh.0[j].to_bits(), dsh.to_bits(), "lane {j}");
+        assert_eq!(ahead.ds0.0[j].to_bits(), lane[0][1].to_bits(), "lane {j}");
+    }
+}

@@ -1,6 +1,7 @@
 //! The fast paths' series of a 3/2-power phase ([`series_of`]): [`super::series`]'s
 //! coefficients, summed for speed, in f64 or in lanes.
 
+use super::super::poly::Coef;
 use super::{Branch, Sys};
 
 /// The system's coefficients as [`series_of`] takes them, in lanes of type `T`.
@@ -28,27 +29,6 @@ impl Coefs<f64> {
             minus_a: -br.a,
             half_b: 0.5 / br.b,
         }
-    }
-}
-
-/// The arithmetic [`series_of`] needs: IEEE f64 operations, lane by lane.
-pub(in crate::solver::taylor) trait Coef:
-    Copy + std::ops::Add<Output = Self> + std::ops::Sub<Output = Self> + std::ops::Mul<Output = Self>
-{
-    fn splat(x: f64) -> Self;
-    /// self · a + b with one rounding (IEEE fusedMultiplyAdd), lane by lane: the same bits
-    /// on every CPU, one instruction where it has FMA.
-    fn mul_add(self, a: Self, b: Self) -> Self;
-}
-
-impl Coef for f64 {
-    #[inline(always)]
-    fn splat(x: f64) -> f64 {
-        x
-    }
-    #[inline(always)]
-    fn mul_add(self, a: f64, b: f64) -> f64 {
-        f64::mul_add(self, a, b)
     }
 }
 

@@ -1,0 +1,111 @@
+//! How a phase's steps are taken: the step rule, the sums and the roots each phase's rules
+//! pick (`poly`'s, or `fused`'s for the 3/2-power phases).
+
+use super::{fused, poly};
+
+/// How a phase's steps are taken: their truncation `eps`, and whether by the quick rule and
+/// roots ([`poly::quick_step_of_norms`], [`poly::root_quick`]: the fast paths) or by `powf` and Horner's
+/// sums ([`poly::step_of_norms`], [`poly::root`]: the Hertz table's reference, whose nodes
+/// tests/hertz_table.rs holds to the committed file's bits); quick, whether the sums are
+/// fused (`super::fused`: the 3/2-power phases; the linear law's phases are not, so that
+/// its answers keep their bits).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(super) struct Rules {
+    pub eps: f64,
+    pub quick: bool,
+    pub fused: bool,
+}
+
+impl Rules {
+    /// The reference's: order 20 within [`poly::EPS`], `powf` and Horner.
+    pub(super) const REFERENCE: Rules = Rules {
+        eps: poly::EPS,
+        quick: false,
+        fused: false,
+    };
+
+    /// The step from the norms of the last two terms of series of order `order`.
+    #[inline(always)]
+    pub(super) fn step_of_norms(&self, next_to_last: f64, last: f64, order: usize) -> f64 {
+        if self.quick {
+            poly::quick_step_of_norms(next_to_last, last, order, self.eps)
+        } else {
+            poly::step_of_norms(next_to_last, last, order, self.eps)
+        }
+    }
+
+    /// Σ c_k h^k where few other sums wait on it: by Estrin's scheme where quick
+    /// ([`poly::eval_estrin`], fused: `fused::estrin_one`), by Horner's for the reference.
+    #[inline(always)]
+    pub(super) fn eval<const L: usize>(&self, c: &[f64; L], h: f64) -> f64 {
+        match (self.quick, self.fused) {
+            (true, true) => fused::estrin_one(c, h),
+            (true, false) => poly::eval_estrin(c, h),
+            _ => poly::eval(c, h),
+        }
+    }
+
+    /// Σ c_k h^k at a step's end, as `super::batch` sums it in lanes: by Horner's rule,
+    /// fused where the rules are (`fused::horner_one`).
+    #[inline(always)]
+    pub(super) fn horner<const L: usize>(&self, c: &[f64; L], h: f64) -> f64 {
+        if self.fused {
+            fused::horner_one(c, h)
+        } else {
+            poly::eval(c, h)
+        }
+    }
+
+    /// The first h in (0, `end`] where `c(h) = target` ([`poly::root`]), `c_end` being the
+    /// caller's c(end): the quick roots take it rather than sum it again; the reference sums
+    /// its own, so that its bits stay the committed table's.
+    pub(super) fn root<const L: usize>(
+        &self,
+        c: &[f64; L],
+        target: f64,
+        end: f64,
+        c_end: f64,
+    ) -> f64 {
+        match (self.quick, self.fused) {
+            (true, true) => fused::root(c, target, end, c_end),
+            (true, false) => poly::root_quick(c, target, end, c_end),
+            _ => poly::root(c, target, end),
+        }
+    }
+
+    /// The step after which every series' last two terms, each relative to its `scales`
+    /// entry, stay below `eps` ([`poly::step_of_norms`]): the norms are taken first.
+    pub(super) fn step<const L: usize>(&self, c: &[[f64; L]], scales: &[f64]) -> f64 {
+        let order = L - 1;
+        let norm = |j: usize| {
+            c.iter()
+                .zip(scales)
+                .map(|(ci, s)| ci[j].abs() / s)
+                .fold(0.0, f64::max)
+        };
+        self.step_of_norms(norm(order - 1), norm(order), order)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_step_keeps_the_last_terms_below_eps() {
+        // the exponential's series: c_k = 1/k!
+        let mut c = [0.0; poly::LEN];
+        let mut f = 1.0;
+        for (k, ck) in c.iter_mut().enumerate() {
+            if k > 0 {
+                f *= k as f64;
+            }
+            *ck = 1.0 / f;
+        }
+        let h = Rules::REFERENCE.step(&[c], &[1.0]);
+        assert!(c[poly::ORDER] * h.powi(poly::ORDER as i32) <= poly::EPS * 1.000_001);
+        assert!(h > 1.0 && h < 3.0, "{h}");
+        // and the sum at h is e^h to the rounding
+        assert!((poly::eval(&c, h) - h.exp()).abs() < 4e-16 * h.exp());
+    }
+}
