@@ -22,21 +22,7 @@ pub(super) fn horner<T: Coef, const L: usize>(c: &[T; L], h: T) -> T {
 /// one fused multiply–add.
 #[inline(always)]
 fn estrin<const L: usize>(c: &[f64; L], h: f64) -> f64 {
-    let mut b = *c;
-    let (mut n, mut x) = (L, h);
-    while n > 1 {
-        let half = n.div_ceil(2);
-        for i in 0..half {
-            b[i] = if 2 * i + 1 < n {
-                b[2 * i + 1].mul_add(x, b[2 * i])
-            } else {
-                b[2 * i]
-            };
-        }
-        n = half;
-        x = x * x;
-    }
-    b[0]
+    poly::estrin_by(c, h, |low, high, x| high.mul_add(x, low))
 }
 
 /// Whether the CPU has FMA, for the compilations below.

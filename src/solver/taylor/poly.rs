@@ -202,13 +202,24 @@ pub(super) fn root_quick<const L: usize>(c: &[f64; L], target: f64, end: f64, c_
 /// roundings), and tests/taylor.rs holds the answers it gives to the references.
 #[inline(always)]
 pub(super) fn eval_estrin<const L: usize>(c: &[f64; L], h: f64) -> f64 {
+    estrin_by(c, h, |low, high, x| low + high * x)
+}
+
+/// Estrin's scheme with each pair c_{2i} + c_{2i+1} x taken by `pair(c_{2i}, c_{2i+1}, x)`:
+/// a product and a sum ([`eval_estrin`]), or one fused multiply–add (`super::fused`).
+#[inline(always)]
+pub(super) fn estrin_by<const L: usize>(
+    c: &[f64; L],
+    h: f64,
+    pair: impl Fn(f64, f64, f64) -> f64,
+) -> f64 {
     let mut b = *c;
     let (mut n, mut x) = (L, h);
     while n > 1 {
         let half = n.div_ceil(2);
         for i in 0..half {
             b[i] = if 2 * i + 1 < n {
-                b[2 * i] + b[2 * i + 1] * x
+                pair(b[2 * i], b[2 * i + 1], x)
             } else {
                 b[2 * i]
             };
