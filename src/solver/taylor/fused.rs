@@ -1,13 +1,13 @@
-//! The 3/2-power phases' sums by fused multiply–adds (`poly::Rules::fused`): Horner's for a
-//! step's end, Estrin's for an event's state and for the roots. Each term is one
+//! The 3/2-power phases' sums by fused multiply–adds (`rules::Rules::fused`): Horner's for a
+//! step's end, Estrin's for an event's state and for the roots (their series: `power::fast`,
+//! compiled with FMA by `super::series_one` and `super::batch`). Each term is one
 //! `mul_add`, rounded once: one instruction where the CPU has FMA (these functions pick a
 //! compilation with it), libm's `fma` elsewhere, the same bits either way
 //! (`batch::tests::series_are_the_same_bits_without_fma_instructions` holds the series so).
 //! The lanes of `super::batch` run [`horner`] on their own FMA compilation, so a lane's
 //! sums are the single path's bits (tests/taylor_batch.rs).
 
-use super::poly;
-use super::poly::Coef;
+use super::poly::{self, Coef};
 
 /// Σ c_k h^k by Horner's rule, each step one fused multiply–add: half the latency of a
 /// product and a sum.

@@ -14,12 +14,12 @@ use super::{Budget, Point, Sys};
 /// law's `poly::ORDER`, 20. A coefficient costs a few operations here, so a longer series is
 /// cheap, and it takes the stretch from yield to the peak in one step where order 20 took
 /// two: past yield 1.65 → 1.51 µs an impact batched over every preset at 0.6–60 m/s, against
-/// 1.55 at order 22 and 1.54–1.61 at 28 (BENCHMARKS.md, fourteenth session). The linear law's
+/// 1.52–1.55 at order 22 and 1.54–1.61 at 28 (BENCHMARKS.md, fourteenth session). The linear law's
 /// flattening keeps order 20, so its answers keep their bits.
 pub(super) const STRETCH_LEN: usize = 25;
 
 /// The linear phases' rules: within `poly::EPS`, by the quick step rule and roots (no
-/// reference is built on them).
+/// reference is built on them), unfused (the linear law's answers keep their bits).
 const RULES: Rules = Rules {
     eps: EPS,
     quick: true,

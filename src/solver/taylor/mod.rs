@@ -79,8 +79,8 @@ const POWER_LEN: usize = 29;
 /// holds the steps to the adaptive solver at rtol 1e-14
 /// (`taylor_meets_the_reference_at_a_thousand_points`).
 const POWER_EPS: f64 = 1e-15;
-/// The 3/2-power phases' rules in [`summary`]: [`POWER_EPS`], and the quick step rule and
-/// roots (`rules::Rules`); the reference keeps `rules::Rules::REFERENCE`.
+/// The 3/2-power phases' rules in [`summary`]: [`POWER_EPS`], the quick step rule and roots,
+/// fused sums (`rules::Rules`, `fused`); the reference keeps `rules::Rules::REFERENCE`.
 const POWER_RULES: rules::Rules = rules::Rules {
     eps: POWER_EPS,
     quick: true,
