@@ -25,12 +25,11 @@ fn estrin<const L: usize>(c: &[f64; L], h: f64) -> f64 {
     poly::estrin_by(c, h, |low, high, x| high.mul_add(x, low))
 }
 
-/// Whether the CPU has FMA, for the compilations below.
+/// Whether the CPU has FMA, for the compilations below (elsewhere than x86-64 the build's
+/// own target decides: aarch64 always has it).
+#[cfg(target_arch = "x86_64")]
 fn has_fma() -> bool {
-    #[cfg(target_arch = "x86_64")]
-    return std::arch::is_x86_feature_detected!("fma");
-    #[cfg(not(target_arch = "x86_64"))]
-    false
+    std::arch::is_x86_feature_detected!("fma")
 }
 
 /// [`horner`] on f64, compiled with FMA where the CPU has it.
