@@ -3,12 +3,12 @@
 
 use super::{fused, poly};
 
-/// How a phase's steps are taken: their truncation `eps`, and whether by the quick rule and
-/// roots ([`poly::quick_step_of_norms`], [`poly::root_quick`]: the fast paths) or by `powf` and Horner's
-/// sums ([`poly::step_of_norms`], [`poly::root`]: the Hertz table's reference, whose nodes
-/// tests/hertz_table.rs holds to the committed file's bits); and, quick, whether its sums
-/// and roots are fused (`super::fused`: the 3/2-power phases; not the linear phases, so that
-/// the linear law's answers keep their bits).
+/// How a phase's steps are taken: their truncation `eps`, and whether by the quick rule
+/// and roots ([`poly::quick_step_of_norms`], [`poly::root_quick`]: the fast paths) or by
+/// `powf` and Horner's sums ([`poly::step_of_norms`], [`poly::root`]: the Hertz table's
+/// reference, whose nodes tests/hertz_table.rs holds to the committed file's bits); and,
+/// quick, whether its sums and roots are fused (`super::fused`: the 3/2-power phases; not
+/// the linear phases, so that the linear law's answers keep their bits).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(super) struct Rules {
     pub eps: f64,
