@@ -152,7 +152,7 @@ fn steps(c: &LaneSeries, x: &[Lanes; 4], slots: &[Option<(usize, PowerImpact)>; 
 }
 
 /// [`quick_steps`] is the quick rule's: the rules it stands for must be quick.
-const _: () = assert!(POWER_RULES.quick);
+const _: () = assert!(POWER_RULES.is_quick());
 
 /// The series' order.
 const ORDER: usize = POWER_LEN - 1;

@@ -1,4 +1,4 @@
-//! The 3/2-power phases' sums by fused multiply–adds (`rules::Rules::fused`): Horner's for a
+//! The 3/2-power phases' sums by fused multiply–adds (`rules::Sums::Fused`): Horner's for a
 //! step's end, Estrin's for an event's state and for the roots (their series: `power::fast`,
 //! compiled with FMA by `super::series_one` and `super::batch`). Each term is one
 //! `mul_add`, rounded once: one instruction where the CPU has FMA (these functions pick a
@@ -65,17 +65,7 @@ pub(super) fn root<const L: usize>(c: &[f64; L], target: f64, end: f64, c_end: f
 
 #[inline(always)]
 fn root_in<const L: usize>(c: &[f64; L], target: f64, end: f64, c_end: f64) -> f64 {
-    let d = poly::derivative(c);
-    let ends = (c[0] - target, c_end - target);
-    poly::root_with(
-        c,
-        target,
-        end,
-        ends,
-        estrin,
-        move |_, h| estrin(&d, h),
-        true,
-    )
+    poly::root_quick_by(c, target, end, c_end, estrin)
 }
 
 #[cfg(target_arch = "x86_64")]

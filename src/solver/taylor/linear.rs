@@ -7,7 +7,7 @@
 //! ```
 
 use super::poly::{self, EPS};
-use super::rules::Rules;
+use super::rules::{Rules, Sums};
 use super::{Budget, Point, Sys};
 
 /// The series' length on the elastic–plastic straight stretch: order 24, not the linear
@@ -22,8 +22,7 @@ pub(super) const STRETCH_LEN: usize = 25;
 /// reference is built on them), unfused (the linear law's answers keep their bits).
 const RULES: Rules = Rules {
     eps: EPS,
-    quick: true,
-    fused: false,
+    sums: Sums::Quick,
 };
 
 /// The branch F̄ = k (z̄ − z̄₀) + F̄₀.

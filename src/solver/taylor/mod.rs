@@ -83,8 +83,7 @@ const POWER_EPS: f64 = 1e-15;
 /// fused sums (`rules::Rules`, `fused`); the reference keeps `rules::Rules::REFERENCE`.
 const POWER_RULES: rules::Rules = rules::Rules {
     eps: POWER_EPS,
-    quick: true,
-    fused: true,
+    sums: rules::Sums::Fused,
 };
 
 /// ȳ' = 2ζ(F̄ − λȳ) in the units of the run.

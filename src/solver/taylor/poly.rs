@@ -184,16 +184,22 @@ pub(super) fn root<const L: usize>(c: &[f64; L], target: f64, end: f64) -> f64 {
 /// (perf, BENCHMARKS.md, twelfth session). c(0) is c₀, and c(end) is `c_end`, which the
 /// caller has already summed.
 pub(super) fn root_quick<const L: usize>(c: &[f64; L], target: f64, end: f64, c_end: f64) -> f64 {
+    root_quick_by(c, target, end, c_end, eval_estrin)
+}
+
+/// [`root_quick`] with the sums `sum` (value and slope alike): Estrin's by a product and a
+/// sum, or fused (`super::fused::root`).
+#[inline(always)]
+pub(super) fn root_quick_by<const L: usize>(
+    c: &[f64; L],
+    target: f64,
+    end: f64,
+    c_end: f64,
+    sum: fn(&[f64; L], f64) -> f64,
+) -> f64 {
     let d = derivative(c);
-    root_with(
-        c,
-        target,
-        end,
-        (c[0] - target, c_end - target),
-        eval_estrin,
-        move |_, h| eval_estrin(&d, h),
-        true,
-    )
+    let ends = (c[0] - target, c_end - target);
+    root_with(c, target, end, ends, sum, move |_, h| sum(&d, h), true)
 }
 
 /// Σ c_k h^k by Estrin's scheme: the pairs c_{2i} + c_{2i+1} h, then the pairs of those with

@@ -3,31 +3,43 @@
 
 use super::{fused, poly};
 
-/// How a phase's steps are taken: their truncation `eps`, and whether by the quick rule
-/// and roots ([`poly::quick_step_of_norms`], [`poly::root_quick`]: the fast paths) or by
-/// `powf` and Horner's sums ([`poly::step_of_norms`], [`poly::root`]: the Hertz table's
-/// reference, whose nodes tests/hertz_table.rs holds to the committed file's bits); and,
-/// quick, whether its sums and roots are fused (`super::fused`: the 3/2-power phases; not
-/// the linear phases, so that the linear law's answers keep their bits).
+/// How a phase's steps are taken: their truncation `eps` and their [`Sums`].
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(super) struct Rules {
     pub eps: f64,
-    pub quick: bool,
-    pub fused: bool,
+    pub sums: Sums,
+}
+
+/// The step rule, sums and roots a phase takes.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(super) enum Sums {
+    /// `powf` and Horner's sums ([`poly::step_of_norms`], [`poly::root`]): the Hertz table's
+    /// reference, whose nodes tests/hertz_table.rs holds to the committed file's bits.
+    Reference,
+    /// The quick rule and roots ([`poly::quick_step_of_norms`], [`poly::root_quick`]), each
+    /// product and sum rounded apart: the linear phases, so that the linear law's answers
+    /// keep their bits.
+    Quick,
+    /// The quick rule, with fused sums and roots (`super::fused`): the 3/2-power phases.
+    Fused,
 }
 
 impl Rules {
     /// The reference's: order 20 within [`poly::EPS`], `powf` and Horner.
     pub(super) const REFERENCE: Rules = Rules {
         eps: poly::EPS,
-        quick: false,
-        fused: false,
+        sums: Sums::Reference,
     };
+
+    /// Whether the steps are the quick rule's ([`poly::quick_step_of_norms`]).
+    pub(super) const fn is_quick(&self) -> bool {
+        !matches!(self.sums, Sums::Reference)
+    }
 
     /// The step from the norms of the last two terms of series of order `order`.
     #[inline(always)]
     pub(super) fn step_of_norms(&self, next_to_last: f64, last: f64, order: usize) -> f64 {
-        if self.quick {
+        if self.is_quick() {
             poly::quick_step_of_norms(next_to_last, last, order, self.eps)
         } else {
             poly::step_of_norms(next_to_last, last, order, self.eps)
@@ -38,10 +50,10 @@ impl Rules {
     /// ([`poly::eval_estrin`], fused: `fused::estrin_one`), by Horner's for the reference.
     #[inline(always)]
     pub(super) fn eval<const L: usize>(&self, c: &[f64; L], h: f64) -> f64 {
-        match (self.quick, self.fused) {
-            (true, true) => fused::estrin_one(c, h),
-            (true, false) => poly::eval_estrin(c, h),
-            _ => poly::eval(c, h),
+        match self.sums {
+            Sums::Fused => fused::estrin_one(c, h),
+            Sums::Quick => poly::eval_estrin(c, h),
+            Sums::Reference => poly::eval(c, h),
         }
     }
 
@@ -49,10 +61,9 @@ impl Rules {
     /// fused where the rules are (`fused::horner_one`).
     #[inline(always)]
     pub(super) fn horner<const L: usize>(&self, c: &[f64; L], h: f64) -> f64 {
-        if self.fused {
-            fused::horner_one(c, h)
-        } else {
-            poly::eval(c, h)
+        match self.sums {
+            Sums::Fused => fused::horner_one(c, h),
+            Sums::Quick | Sums::Reference => poly::eval(c, h),
         }
     }
 
@@ -66,10 +77,10 @@ impl Rules {
         end: f64,
         c_end: f64,
     ) -> f64 {
-        match (self.quick, self.fused) {
-            (true, true) => fused::root(c, target, end, c_end),
-            (true, false) => poly::root_quick(c, target, end, c_end),
-            _ => poly::root(c, target, end),
+        match self.sums {
+            Sums::Fused => fused::root(c, target, end, c_end),
+            Sums::Quick => poly::root_quick(c, target, end, c_end),
+            Sums::Reference => poly::root(c, target, end),
         }
     }
 
