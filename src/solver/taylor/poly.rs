@@ -73,7 +73,7 @@ pub(super) fn step_of_norms(next_to_last: f64, last: f64, order: usize, eps: f64
 /// [`step_of_norms`] without `powf`: the same rule, h = 2^min_j (log₂(ε/a_j) / j), with
 /// log₂ and 2^y by short series ([`log2_core`], [`exp2_core`]) good to 2e-6 in log₂ a, so
 /// to 1e-7 relative in h at the orders used (j ≥ 19): the truncation moves by (1 + 1e-7)^j, far
-/// inside ε. The fast paths' rule (`Rules::quick`); two `powf` were 14 % of a batched
+/// inside ε. The fast paths' rule (`rules::Sums::Quick` and `Fused`); two `powf` were 14 % of a batched
 /// elastic–plastic impact (perf, BENCHMARKS.md, twelfth session). Written by hand: it must be
 /// the same IEEE operations in `super::batch`'s steps as here, which no libm promises.
 #[inline(always)]
@@ -179,7 +179,7 @@ pub(super) fn root<const L: usize>(c: &[f64; L], target: f64, end: f64) -> f64 {
 }
 
 /// [`root`] with its sums by Estrin's scheme ([`eval_estrin`]): the fast paths' roots
-/// (`Rules::quick`). Horner's sums of order 28 are 28 dependent multiply–adds each, and
+/// (`rules::Sums::Quick`). Horner's sums of order 28 are 28 dependent multiply–adds each, and
 /// Newton's steps wait on them; the roots were a quarter of a batched elastic–plastic impact
 /// (perf, BENCHMARKS.md, twelfth session). c(0) is c₀, and c(end) is `c_end`, which the
 /// caller has already summed.
