@@ -1,6 +1,7 @@
 //! The 3/2-power phases' sums by fused multiply–adds (`rules::Sums::Fused`): Horner's for a
 //! step's end, Estrin's for an event's state and for the roots (their series: `power::fast`,
-//! compiled with FMA by `super::series_one` and `super::batch`). Each term is one
+//! compiled with FMA by `super::series_one` and `super::batch`), and the elastic–plastic
+//! straight stretch's roots (`linear::stretch`). Each term is one
 //! `mul_add`, rounded once: one instruction where the CPU has FMA (these functions pick a
 //! compilation with it), libm's `fma` elsewhere, the same bits either way
 //! (`batch::tests::series_are_the_same_bits_without_fma_instructions` holds the series so).
@@ -52,8 +53,9 @@ pub(super) fn estrin_one<const L: usize>(c: &[f64; L], h: f64) -> f64 {
     estrin(c, h)
 }
 
-/// `poly::root_quick`'s search with [`estrin`]'s sums, compiled with FMA where the CPU has
-/// it: the first h in (0, `end`] where c(h) = `target`, c(end) being `c_end`.
+/// `poly::root_quick`'s search with [`estrin`]'s sums, ended a Newton step sooner where it
+/// can (`poly::Stop::Predicted`), compiled with FMA where the CPU has it: the first h in
+/// (0, `end`] where c(h) = `target`, c(end) being `c_end`.
 pub(super) fn root<const L: usize>(c: &[f64; L], target: f64, end: f64, c_end: f64) -> f64 {
     #[cfg(target_arch = "x86_64")]
     if has_fma() {
@@ -65,7 +67,7 @@ pub(super) fn root<const L: usize>(c: &[f64; L], target: f64, end: f64, c_end: f
 
 #[inline(always)]
 fn root_in<const L: usize>(c: &[f64; L], target: f64, end: f64, c_end: f64) -> f64 {
-    poly::root_quick_by(c, target, end, c_end, estrin)
+    poly::root_quick_by(c, target, end, c_end, estrin, poly::Stop::Predicted)
 }
 
 #[cfg(target_arch = "x86_64")]

@@ -175,7 +175,7 @@ const FACTORIALS: [f64; 8] = [1.0, 1.0, 2.0, 6.0, 24.0, 120.0, 720.0, 5040.0];
 /// bisection keeps, to the rounding of h.
 pub(super) fn root<const L: usize>(c: &[f64; L], target: f64, end: f64) -> f64 {
     let ends = (eval(c, 0.0) - target, eval(c, end) - target);
-    root_with(c, target, end, ends, eval, eval_d, false)
+    root_with(c, target, end, ends, eval, eval_d, Stop::Bracket)
 }
 
 /// [`root`] with its sums by Estrin's scheme ([`eval_estrin`]): the fast paths' roots
@@ -184,11 +184,12 @@ pub(super) fn root<const L: usize>(c: &[f64; L], target: f64, end: f64) -> f64 {
 /// (perf, BENCHMARKS.md, twelfth session). c(0) is c₀, and c(end) is `c_end`, which the
 /// caller has already summed.
 pub(super) fn root_quick<const L: usize>(c: &[f64; L], target: f64, end: f64, c_end: f64) -> f64 {
-    root_quick_by(c, target, end, c_end, eval_estrin)
+    root_quick_by(c, target, end, c_end, eval_estrin, Stop::Rounding)
 }
 
-/// [`root_quick`] with the sums `sum` (value and slope alike): Estrin's by a product and a
-/// sum, or fused (`super::fused::root`).
+/// [`root_quick`] with the sums `sum` (value and slope alike), ended as `stop` says:
+/// Estrin's by a product and a sum at the first Newton step within the rounding, or fused
+/// and a step sooner where it can (`super::fused::root`).
 #[inline(always)]
 pub(super) fn root_quick_by<const L: usize>(
     c: &[f64; L],
@@ -196,10 +197,26 @@ pub(super) fn root_quick_by<const L: usize>(
     end: f64,
     c_end: f64,
     sum: fn(&[f64; L], f64) -> f64,
+    stop: Stop,
 ) -> f64 {
     let d = derivative(c);
     let ends = (c[0] - target, c_end - target);
-    root_with(c, target, end, ends, sum, move |_, h| sum(&d, h), true)
+    root_with(c, target, end, ends, sum, move |_, h| sum(&d, h), stop)
+}
+
+/// When a root's search ([`root_with`]) stops.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(super) enum Stop {
+    /// When Newton's step is within h's rounding, or the bracket has closed: [`root`], the
+    /// reference's.
+    Bracket,
+    /// At the first Newton step within h's rounding: [`root_quick`].
+    Rounding,
+    /// One Newton step sooner where it can: where the error left after a step δₙ, C δₙ² by
+    /// Newton's quadratic convergence with its rate C taken from the last two steps
+    /// (δₙ ≈ C δₙ₋₁²), is within h's rounding, that step is the last, and the step that
+    /// would only confirm it is not taken: the fused roots (`super::fused::root`).
+    Predicted,
 }
 
 /// Σ c_k h^k by Estrin's scheme: the pairs c_{2i} + c_{2i+1} h, then the pairs of those with
@@ -237,8 +254,7 @@ pub(super) fn estrin_by<const L: usize>(
 }
 
 /// [`root`]'s search with the sums `value` and `slope` (Σ c_k h^k and its derivative), given
-/// c − target at 0 and at `end` (`ends`); `quick`: ended by the first Newton step within h's
-/// rounding ([`root_quick`]).
+/// c − target at 0 and at `end` (`ends`), ended as `stop` says.
 #[inline(always)]
 pub(super) fn root_with<const L: usize>(
     c: &[f64; L],
@@ -247,8 +263,11 @@ pub(super) fn root_with<const L: usize>(
     (g_lo, g_hi): (f64, f64),
     value: fn(&[f64; L], f64) -> f64,
     slope: impl Fn(&[f64; L], f64) -> f64,
-    quick: bool,
+    stop: Stop,
 ) -> f64 {
+    let quick = stop != Stop::Bracket;
+    // the Newton step before, where there was one (NaN: none)
+    let mut last_step = f64::NAN;
     let g = |h: f64| value(c, h) - target;
     let (mut lo, mut hi) = (0.0, end);
     if g_hi == 0.0 {
@@ -279,6 +298,14 @@ pub(super) fn root_with<const L: usize>(
             // bisect back over some thirty halvings to the same root
             return if next > lo && next < hi { next } else { h };
         }
+        let step = (next - h).abs();
+        // C δₙ² with C = δₙ/δₙ₋₁², where the steps already fall fast (δₙ ≤ 1e-6 h)
+        let left = step / (last_step * last_step) * step * step;
+        let predicted = step <= 1e-6 * h.abs() && left <= 4.0 * f64::EPSILON * h.abs();
+        if stop == Stop::Predicted && predicted && next > lo && next < hi {
+            return next;
+        }
+        last_step = step;
         if !(next > lo && next < hi) {
             next = 0.5 * (lo + hi);
         }

@@ -1,5 +1,5 @@
 //! How a phase's steps are taken: the step rule, the sums and the roots each phase's rules
-//! pick (`poly`'s, or `fused`'s for the 3/2-power phases).
+//! pick (`poly`'s, or `fused`'s for the elastic–plastic and Hertz phases).
 
 use super::{fused, poly};
 
@@ -20,7 +20,9 @@ pub(super) enum Sums {
     /// product and sum rounded apart: the linear phases, so that the linear law's answers
     /// keep their bits.
     Quick,
-    /// The quick rule, with fused sums and roots (`super::fused`): the 3/2-power phases.
+    /// The quick rule, with fused sums and roots (`super::fused`), the roots a Newton step
+    /// sooner where they can (`poly::Stop::Predicted`): the 3/2-power phases and the
+    /// elastic–plastic straight stretch.
     Fused,
 }
 

@@ -146,8 +146,7 @@ impl PowerImpact {
             z0: zp,
             f0: f_p,
         };
-        let linear::End::Turned(top) =
-            linear::run::<{ linear::STRETCH_LEN }>(&self.sys, &line, p, None, &mut self.budget)?
+        let linear::End::Turned(top) = linear::stretch(&self.sys, &line, p, &mut self.budget)?
         else {
             return None;
         };
