@@ -63,35 +63,37 @@ impl Coef for Lanes {
 }
 
 type LaneSeries = [[Lanes; POWER_LEN]; 4];
+/// `power::series_of`'s scratch in lanes.
+type Scratch = [[Lanes; POWER_LEN]; 2];
 
 /// The series of W impacts' phases into `c`, in lanes: the AVX-512 compilation where the
 /// CPU has it, else AVX2's, each with FMA; elsewhere plain, `mul_add` then libm's `fma`.
-fn series(k: Coefs<Lanes>, x: [Lanes; 4], c: &mut LaneSeries) {
+fn series(k: Coefs<Lanes>, x: [Lanes; 4], c: &mut LaneSeries, scratch: &mut Scratch) {
     #[cfg(target_arch = "x86_64")]
     {
         let fma = std::arch::is_x86_feature_detected!("fma");
         if fma && std::arch::is_x86_feature_detected!("avx512f") {
             // SAFETY: the CPU has AVX-512F and FMA, the features the function enables
-            return unsafe { series_avx512(k, x, c) };
+            return unsafe { series_avx512(k, x, c, scratch) };
         }
         if fma && std::arch::is_x86_feature_detected!("avx2") {
             // SAFETY: the CPU has AVX2 and FMA, the features the function enables
-            return unsafe { series_avx2(k, x, c) };
+            return unsafe { series_avx2(k, x, c, scratch) };
         }
     }
-    power::series_of::<Lanes, POWER_LEN>(k, x, c)
+    power::series_of::<Lanes, POWER_LEN>(k, x, c, scratch)
 }
 
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2,fma")]
-fn series_avx2(k: Coefs<Lanes>, x: [Lanes; 4], c: &mut LaneSeries) {
-    power::series_of::<Lanes, POWER_LEN>(k, x, c)
+fn series_avx2(k: Coefs<Lanes>, x: [Lanes; 4], c: &mut LaneSeries, scratch: &mut Scratch) {
+    power::series_of::<Lanes, POWER_LEN>(k, x, c, scratch)
 }
 
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx512f,fma")]
-fn series_avx512(k: Coefs<Lanes>, x: [Lanes; 4], c: &mut LaneSeries) {
-    power::series_of::<Lanes, POWER_LEN>(k, x, c)
+fn series_avx512(k: Coefs<Lanes>, x: [Lanes; 4], c: &mut LaneSeries, scratch: &mut Scratch) {
+    power::series_of::<Lanes, POWER_LEN>(k, x, c, scratch)
 }
 
 /// The summaries of `ns` under `law`, each as [`super::summary`] gives it (the same bits):
@@ -104,6 +106,7 @@ pub fn summaries(ns: &[Normalized], law: ContactLaw) -> Vec<Option<Summary>> {
     let mut queue = ns.iter().enumerate();
     let mut slots: [Option<(usize, PowerImpact)>; W] = [None; W];
     let mut c = [[Lanes::splat(0.0); POWER_LEN]; 4];
+    let mut scratch = [[Lanes::splat(0.0); POWER_LEN]; 2];
     let mut lane = [[0.0; POWER_LEN]; 4];
     loop {
         refill(&mut slots, &mut queue, law);
@@ -111,7 +114,7 @@ pub fn summaries(ns: &[Normalized], law: ContactLaw) -> Vec<Option<Summary>> {
             return out;
         }
         let x = states(&slots);
-        series(coefs(&slots), x, &mut c);
+        series(coefs(&slots), x, &mut c, &mut scratch);
         let h = steps(&c, &x, &slots);
         let ahead = evaluations(&c, h);
         for (j, slot) in slots.iter_mut().enumerate() {

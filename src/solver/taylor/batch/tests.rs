@@ -65,9 +65,10 @@ fn series_are_the_same_bits_without_fma_instructions() {
             half_b: each(|j| 0.5 / pick(lane(j, 7), 0.2, 1.5)),
         };
         let mut fused = [[Lanes::splat(0.0); POWER_LEN]; 4];
-        series(k, x, &mut fused);
+        let mut scratch = [[Lanes::splat(0.0); POWER_LEN]; 2];
+        series(k, x, &mut fused, &mut scratch);
         let mut library = fused;
-        power::series_of::<Lanes, POWER_LEN>(k, x, &mut library);
+        power::series_of::<Lanes, POWER_LEN>(k, x, &mut library, &mut scratch);
         for j in 0..W {
             let one = |l: Lanes| l.0[j];
             let kj = Coefs {
@@ -78,7 +79,7 @@ fn series_are_the_same_bits_without_fma_instructions() {
                 half_b: one(k.half_b),
             };
             let mut single = [[0.0; POWER_LEN]; 4];
-            super::super::series_one(kj, x.map(one), &mut single);
+            super::super::series_one(kj, x.map(one), &mut single, &mut [[0.0; POWER_LEN]; 2]);
             for v in 0..4 {
                 for n in 0..POWER_LEN {
                     let bits = [fused[v][n].0[j], library[v][n].0[j], single[v][n]];

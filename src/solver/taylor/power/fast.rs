@@ -42,17 +42,19 @@ impl Coefs<f64> {
 /// of the coefficients order n computes (s₀p_n, p₀p_n, s₀ȳ'_n) after them: an order waits on
 /// the one before for a few sums, not for a whole chain. A lane runs f64's IEEE operations
 /// in the same order, so its coefficients are the f64 path's bits (tests/taylor_batch.rs
-/// `batched_summaries_are_the_single_ones_bit_for_bit`).
+/// `batched_summaries_are_the_single_ones_bit_for_bit`). s² and ȳ' go to `scratch`, kept by
+/// the caller from step to step: order n writes their n-th terms before any order reads
+/// them, so it need not be cleared.
 #[inline(always)]
 pub(in crate::solver::taylor) fn series_of<T: Coef, const L: usize>(
     k: Coefs<T>,
     x: [T; 4],
     c: &mut [[T; L]; 4],
+    scratch: &mut [[T; L]; 2],
 ) {
-    let zero = T::splat(0.0);
     let two = T::splat(2.0);
     let [s, v, y, t] = c;
-    let (mut p, mut yd) = ([zero; L], [zero; L]);
+    let [p, yd] = scratch;
     (s[0], v[0], y[0], t[0]) = (x[0], x[1], x[2], x[3]);
     for n in 0..L - 1 {
         let (q, r, sy);
@@ -63,7 +65,7 @@ pub(in crate::solver::taylor) fn series_of<T: Coef, const L: usize>(
             yd[0] = k.two_zeta * (k.a * q - k.lambda * y[0]);
             sy = s[0] * yd[0];
         } else {
-            let older = older_terms(s, &p, &yd, n);
+            let older = older_terms(s, p, yd, n);
             p[n] = (two * s[0]).mul_add(s[n], older.ss);
             q = s[0].mul_add(p[n], older.sp);
             r = (two * p[0]).mul_add(p[n], older.pp);
