@@ -194,13 +194,11 @@ fn quick_steps_avx512(c: &LaneSeries, x: &[Lanes; 4], eps: f64) -> Lanes {
 /// leave the quick rule's plain case takes `quick_step_of_norms` itself.
 #[inline(always)]
 fn quick_steps_in(c: &LaneSeries, x: &[Lanes; 4], eps: f64) -> Lanes {
-    let scales = x.map(|xv| each(|j| xv.0[j].abs().max(1.0)));
-    let norm = |n: usize| {
-        (0..4).fold(Lanes::splat(0.0), |acc, v| {
-            each(|j| acc.0[j].max(c[v][n].0[j].abs() / scales[v].0[j]))
-        })
-    };
-    let (a1, a2) = (norm(ORDER - 1), norm(ORDER));
+    // written out, as `evaluations_in`'s sums: a closure left out of line (`map`, `fold`)
+    // is compiled without this function's features
+    let scale = |v: usize| each(|j| x[v].0[j].abs().max(1.0));
+    let scales = [scale(0), scale(1), scale(2), scale(3)];
+    let (a1, a2) = (norm(c, &scales, ORDER - 1), norm(c, &scales, ORDER));
     let y = each(|j| poly::quick_exponent(a1.0[j], a2.0[j], ORDER, eps));
     let h = each(|j| poly::exp2_core(y.0[j]));
     each(|j| {
@@ -213,11 +211,28 @@ fn quick_steps_in(c: &LaneSeries, x: &[Lanes; 4], eps: f64) -> Lanes {
     })
 }
 
+/// `Rules::step`'s norm of the terms of order `n`: the largest |c_n| / scale over the four
+/// series, taken in their order (the same bits), lane by lane.
+#[inline(always)]
+fn norm(c: &LaneSeries, scales: &[Lanes; 4], n: usize) -> Lanes {
+    let mut acc = Lanes::splat(0.0);
+    for (cv, sv) in c.iter().zip(scales) {
+        acc = each(|j| acc.0[j].max(cv[n].0[j].abs() / sv.0[j]));
+    }
+    acc
+}
+
 /// The lanes whose j-th entry is `f(j)`: generic, so that `f` is inlined and the lanes
-/// vectorised (a `&dyn Fn` was inlined or not as the optimiser's budget went).
+/// vectorised (a `&dyn Fn` was inlined or not as the optimiser's budget went), and a loop,
+/// not `std::array::from_fn`, whose inner function the optimiser may leave out of line and
+/// so out of the caller's AVX-512 or AVX2 compilation.
 #[inline(always)]
 fn each(f: impl Fn(usize) -> f64) -> Lanes {
-    Lanes(std::array::from_fn(f))
+    let mut lanes = [0.0; W];
+    for (j, lane) in lanes.iter_mut().enumerate() {
+        *lane = f(j);
+    }
+    Lanes(lanes)
 }
 
 /// What `power::Phase::advance` evaluates on a step, in lanes: s(h), s'(h) and the state at
@@ -262,10 +277,11 @@ fn evaluations_avx512(c: &LaneSeries, h: Lanes) -> Ahead {
 
 #[inline(always)]
 fn evaluations_in(c: &LaneSeries, h: Lanes) -> Ahead {
-    // poly::derivative's series, lane by lane
-    let mut ds = [Lanes::splat(0.0); POWER_LEN];
-    for k in 1..POWER_LEN {
-        ds[k - 1] = Lanes::splat(k as f64) * c[0][k];
+    // s'(h): `fused::horner` over poly::derivative's series, lane by lane, whose top term 0
+    // leaves the sum's +0 start as it is
+    let mut dsh = Lanes::splat(0.0);
+    for k in (1..POWER_LEN).rev() {
+        dsh = dsh.mul_add(h, Lanes::splat(k as f64) * c[0][k]);
     }
     // written out: a closure (`each_ref().map`) need not be inlined, and outside this
     // function's FMA compilation each lane's mul_add is a call to libm's fma
@@ -278,7 +294,7 @@ fn evaluations_in(c: &LaneSeries, h: Lanes) -> Ahead {
     Ahead {
         s_end: x[0],
         ds0: c[0][1],
-        dsh: fused::horner(&ds, h),
+        dsh,
         x,
     }
 }
