@@ -154,8 +154,9 @@ fn steps(c: &LaneSeries, x: &[Lanes; 4], slots: &[Option<(usize, PowerImpact)>; 
     }))
 }
 
-/// [`quick_steps`] is the quick rule's: the rules it stands for must be quick.
-const _: () = assert!(POWER_RULES.is_quick());
+/// [`quick_steps`] is the fused rules' step (the quick rule, norms by the scales'
+/// reciprocals): the rules it stands for must be those.
+const _: () = assert!(matches!(POWER_RULES.sums, super::rules::Sums::Fused));
 
 /// The series' order.
 const ORDER: usize = POWER_LEN - 1;
@@ -189,16 +190,16 @@ fn quick_steps_avx512(c: &LaneSeries, x: &[Lanes; 4], eps: f64) -> Lanes {
     quick_steps_in(c, x, eps)
 }
 
-/// `Phase::scales`, `Rules::step`'s norms and `poly::quick_step_of_norms` lane by lane, the
-/// same operations in the same order (so the same bits); a lane whose norms or exponent
+/// `Phase::scales`, the fused rules' norms (`Rules::step`) and `poly::quick_step_of_norms`
+/// lane by lane, the same operations in the same order (so the same bits); a lane whose norms or exponent
 /// leave the quick rule's plain case takes `quick_step_of_norms` itself.
 #[inline(always)]
 fn quick_steps_in(c: &LaneSeries, x: &[Lanes; 4], eps: f64) -> Lanes {
     // written out, as `evaluations_in`'s sums: a closure left out of line (`map`, `fold`)
     // is compiled without this function's features
-    let scale = |v: usize| each(|j| x[v].0[j].abs().max(1.0));
-    let scales = [scale(0), scale(1), scale(2), scale(3)];
-    let (a1, a2) = (norm(c, &scales, ORDER - 1), norm(c, &scales, ORDER));
+    let reciprocal = |v: usize| each(|j| 1.0 / x[v].0[j].abs().max(1.0));
+    let r = [reciprocal(0), reciprocal(1), reciprocal(2), reciprocal(3)];
+    let (a1, a2) = (norm(c, &r, ORDER - 1), norm(c, &r, ORDER));
     let y = each(|j| poly::quick_exponent(a1.0[j], a2.0[j], ORDER, eps));
     let h = each(|j| poly::exp2_core(y.0[j]));
     each(|j| {
@@ -211,13 +212,14 @@ fn quick_steps_in(c: &LaneSeries, x: &[Lanes; 4], eps: f64) -> Lanes {
     })
 }
 
-/// `Rules::step`'s norm of the terms of order `n`: the largest |c_n| / scale over the four
-/// series, taken in their order (the same bits), lane by lane.
+/// `Rules::step`'s norm of the terms of order `n` under the fused rules: the largest
+/// |c_n| · (1/scale) over the four series, taken in their order (the same bits), lane by
+/// lane, given the scales' reciprocals `r`.
 #[inline(always)]
-fn norm(c: &LaneSeries, scales: &[Lanes; 4], n: usize) -> Lanes {
+fn norm(c: &LaneSeries, r: &[Lanes; 4], n: usize) -> Lanes {
     let mut acc = Lanes::splat(0.0);
-    for (cv, sv) in c.iter().zip(scales) {
-        acc = each(|j| acc.0[j].max(cv[n].0[j].abs() / sv.0[j]));
+    for (cv, rv) in c.iter().zip(r) {
+        acc = each(|j| acc.0[j].max(cv[n].0[j].abs() * rv.0[j]));
     }
     acc
 }

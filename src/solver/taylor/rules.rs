@@ -87,16 +87,23 @@ impl Rules {
     }
 
     /// The step after which every series' last two terms, each relative to its `scales`
-    /// entry, stay below `eps` ([`poly::step_of_norms`]): the norms are taken first.
+    /// entry, stay below `eps` ([`poly::step_of_norms`]): the norms are taken first, each
+    /// term divided by its scale; under the fused rules multiplied by the scale's reciprocal,
+    /// one division a series rather than two (`super::batch::quick_steps` takes them so in
+    /// lanes, the same bits).
     pub(super) fn step<const L: usize>(&self, c: &[[f64; L]], scales: &[f64]) -> f64 {
         let order = L - 1;
-        let norm = |j: usize| {
-            c.iter()
-                .zip(scales)
-                .map(|(ci, s)| ci[j].abs() / s)
-                .fold(0.0, f64::max)
-        };
-        self.step_of_norms(norm(order - 1), norm(order), order)
+        let (mut a1, mut a2) = (0.0f64, 0.0f64);
+        for (ci, &s) in c.iter().zip(scales) {
+            let (t1, t2) = if self.sums == Sums::Fused {
+                let r = 1.0 / s;
+                (ci[order - 1].abs() * r, ci[order].abs() * r)
+            } else {
+                (ci[order - 1].abs() / s, ci[order].abs() / s)
+            };
+            (a1, a2) = (a1.max(t1), a2.max(t2));
+        }
+        self.step_of_norms(a1, a2, order)
     }
 }
 
