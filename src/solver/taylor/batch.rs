@@ -62,6 +62,28 @@ impl Coef for Lanes {
     }
 }
 
+impl Coefs<Lanes> {
+    /// The system `k` in every lane.
+    fn splat(k: Coefs<f64>) -> Coefs<Lanes> {
+        Coefs {
+            two_zeta: Lanes::splat(k.two_zeta),
+            lambda: Lanes::splat(k.lambda),
+            a: Lanes::splat(k.a),
+            minus_a: Lanes::splat(k.minus_a),
+            half_b: Lanes::splat(k.half_b),
+        }
+    }
+
+    /// Lane j given the system `k`.
+    fn set_lane(&mut self, j: usize, k: Coefs<f64>) {
+        self.two_zeta.0[j] = k.two_zeta;
+        self.lambda.0[j] = k.lambda;
+        self.a.0[j] = k.a;
+        self.minus_a.0[j] = k.minus_a;
+        self.half_b.0[j] = k.half_b;
+    }
+}
+
 type LaneSeries = [[Lanes; POWER_LEN]; 4];
 /// `power::series_of`'s scratch in lanes.
 type Scratch = [[Lanes; POWER_LEN]; 2];
@@ -108,13 +130,17 @@ pub fn summaries(ns: &[Normalized], law: ContactLaw) -> Vec<Option<Summary>> {
     let mut c = [[Lanes::splat(0.0); POWER_LEN]; 4];
     let mut scratch = [[Lanes::splat(0.0); POWER_LEN]; 2];
     let mut lane = [[0.0; POWER_LEN]; 4];
+    // the slots' systems, and which of them may have changed since they were put in lanes
+    let mut k = Coefs::<Lanes>::splat(Coefs::IDLE);
+    let mut changed = [true; W];
     loop {
-        refill(&mut slots, &mut queue, law);
+        refill(&mut slots, &mut queue, law, &mut changed);
         if slots.iter().all(Option::is_none) {
             return out;
         }
+        update_coefs(&mut k, &slots, &mut changed);
         let x = states(&slots);
-        series(coefs(&slots), x, &mut c, &mut scratch);
+        series(k, x, &mut c, &mut scratch);
         let h = steps(&c, &x, &slots);
         let ahead = evaluations(&c, h);
         for (j, slot) in slots.iter_mut().enumerate() {
@@ -128,11 +154,14 @@ pub fn summaries(ns: &[Normalized], law: ContactLaw) -> Vec<Option<Summary>> {
                         *lane_vn = c_vn.0[j];
                     }
                 }
+                // an event may start another phase, on another branch
+                changed[j] = true;
                 impact.feed_by::<POWER_LEN>(&lane, h.0[j], s_end, (ds0, dsh))
             };
             if let Progress::Done(summary) = progress {
                 out[*i] = summary;
                 *slot = None;
+                changed[j] = true;
             }
         }
     }
@@ -308,12 +337,14 @@ fn refill<'a>(
     slots: &mut [Option<(usize, PowerImpact)>; W],
     queue: &mut impl Iterator<Item = (usize, &'a Normalized)>,
     law: ContactLaw,
+    changed: &mut [bool; W],
 ) {
-    for slot in slots.iter_mut() {
+    for (slot, changed) in slots.iter_mut().zip(changed) {
         if let Some((_, impact)) = slot
             && !impact.take_step()
         {
             *slot = None;
+            *changed = true;
         }
         while slot.is_none() {
             let Some((i, n)) = queue.next() else { break };
@@ -321,30 +352,27 @@ fn refill<'a>(
                 && impact.take_step()
             {
                 *slot = Some((i, impact));
+                *changed = true;
             }
         }
     }
 }
 
-/// The slots' systems in lanes (an empty lane: a force-free branch at rest).
-fn coefs(slots: &[Option<(usize, PowerImpact)>; W]) -> Coefs<Lanes> {
-    let each: [Coefs<f64>; W] = std::array::from_fn(|j| match &slots[j] {
-        Some((_, impact)) => Coefs::of(&impact.sys, &impact.phase.br),
-        None => Coefs {
-            two_zeta: 0.0,
-            lambda: 0.0,
-            a: 0.0,
-            minus_a: 0.0,
-            half_b: 0.5,
-        },
-    });
-    let lanes = |f: fn(&Coefs<f64>) -> f64| Lanes(std::array::from_fn(|j| f(&each[j])));
-    Coefs {
-        two_zeta: lanes(|c| c.two_zeta),
-        lambda: lanes(|c| c.lambda),
-        a: lanes(|c| c.a),
-        minus_a: lanes(|c| c.minus_a),
-        half_b: lanes(|c| c.half_b),
+/// The systems in lanes `k` of the slots marked `changed` (an empty lane:
+/// [`Coefs::IDLE`]); the marks cleared.
+fn update_coefs(
+    k: &mut Coefs<Lanes>,
+    slots: &[Option<(usize, PowerImpact)>; W],
+    changed: &mut [bool; W],
+) {
+    for (j, (slot, changed)) in slots.iter().zip(changed).enumerate() {
+        if std::mem::take(changed) {
+            let kj = match slot {
+                Some((_, impact)) => Coefs::of(&impact.sys, &impact.phase.br),
+                None => Coefs::IDLE,
+            };
+            k.set_lane(j, kj);
+        }
     }
 }
 

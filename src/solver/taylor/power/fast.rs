@@ -20,6 +20,15 @@ pub(in crate::solver::taylor) struct Coefs<T> {
 }
 
 impl Coefs<f64> {
+    /// An empty lane's: a force-free branch at rest (`super::super::batch`).
+    pub(in crate::solver::taylor) const IDLE: Coefs<f64> = Coefs {
+        two_zeta: 0.0,
+        lambda: 0.0,
+        a: 0.0,
+        minus_a: 0.0,
+        half_b: 0.5,
+    };
+
     /// [`super::series`]'s coefficients of `sys` on `br`.
     pub(in crate::solver::taylor) fn of(sys: &Sys, br: &Branch) -> Coefs<f64> {
         Coefs {
