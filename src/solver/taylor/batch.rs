@@ -177,10 +177,13 @@ fn steps(c: &LaneSeries, x: &[Lanes; 4], slots: &[Option<(usize, PowerImpact)>; 
             .flatten()
             .all(|(_, impact)| impact.phase.rules == POWER_RULES)
     );
-    let h = quick_steps(c, x, POWER_RULES.eps);
-    Lanes(std::array::from_fn(|j| {
-        if slots[j].is_some() { h.0[j] } else { 0.0 }
-    }))
+    let mut h = quick_steps(c, x, POWER_RULES.eps);
+    for (hj, slot) in h.0.iter_mut().zip(slots) {
+        if slot.is_none() {
+            *hj = 0.0;
+        }
+    }
+    h
 }
 
 /// [`quick_steps`] is the fused rules' step (the quick rule, norms by the scales'
@@ -378,13 +381,16 @@ fn update_coefs(
 
 /// The slots' states (s, ᾱ', ȳ, τ) in lanes (an empty lane: zeros).
 fn states(slots: &[Option<(usize, PowerImpact)>; W]) -> [Lanes; 4] {
-    std::array::from_fn(|v| {
-        Lanes(std::array::from_fn(|j| {
-            slots[j]
-                .as_ref()
-                .map_or(0.0, |(_, impact)| impact.phase.x[v])
-        }))
-    })
+    // loops, not `array::from_fn`, whose out-of-line calls cost more than the copies
+    let mut x = [Lanes::splat(0.0); 4];
+    for (j, slot) in slots.iter().enumerate() {
+        if let Some((_, impact)) = slot {
+            for (xv, &xj) in x.iter_mut().zip(&impact.phase.x) {
+                xv.0[j] = xj;
+            }
+        }
+    }
+    x
 }
 
 #[cfg(test)]
