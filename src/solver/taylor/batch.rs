@@ -9,8 +9,9 @@
 //! `batched_summaries_are_the_single_ones_bit_for_bit`).
 //!
 //! The lanes are plain `[f64; W]` with element-wise operators, compiled inside
-//! `#[target_feature]` functions so that LLVM packs them into one AVX-512 register (two AVX2
-//! ones): the `wide` crate fixes its registers when it is compiled (two SSE2 registers on
+//! `#[target_feature]` functions so that LLVM packs them into registers: sixteen lanes
+//! (`WIDE`) in two AVX-512 registers where the CPU has them, eight (`NARROW`) in two AVX2
+//! ones elsewhere (tests run both widths on every CPU): the `wide` crate fixes its registers when it is compiled (two SSE2 registers on
 //! the default target, `map::fast::lanes::avx`'s note). A fused multiply–add enters only as
 //! `mul_add` (the series' products, the step's Horner sums), the same one rounding in a lane
 //! as in the single path and on every CPU: one instruction in the FMA compilations, libm's
@@ -28,20 +29,24 @@ use crate::model::contact::ContactLaw;
 use crate::model::params::Normalized;
 use std::ops::{Add, Mul, Sub};
 
-/// Impacts in step: one AVX-512 register of f64, two of AVX2.
-const W: usize = 8;
+/// Impacts in step on AVX2 (two registers of f64) and without it.
+const NARROW: usize = 8;
+/// Impacts in step on AVX-512: two registers of f64, whose series and sums keep twice the
+/// operations in flight that eight lanes do (on AVX2, sixteen lanes would be four registers
+/// an operand, and the series' pair loop would spill).
+const WIDE: usize = 16;
 
 /// W f64 lanes, each operation IEEE lane by lane.
 #[derive(Clone, Copy)]
 #[repr(align(64))]
-pub(super) struct Lanes([f64; W]);
+pub(super) struct Lanes<const W: usize>([f64; W]);
 
 macro_rules! lanewise {
     ($tr:ident, $f:ident, $op:tt) => {
-        impl $tr for Lanes {
-            type Output = Lanes;
+        impl<const W: usize> $tr for Lanes<W> {
+            type Output = Lanes<W>;
             #[inline(always)]
-            fn $f(self, o: Lanes) -> Lanes {
+            fn $f(self, o: Lanes<W>) -> Lanes<W> {
                 Lanes(std::array::from_fn(|i| self.0[i] $op o.0[i]))
             }
         }
@@ -51,20 +56,20 @@ lanewise!(Add, add, +);
 lanewise!(Sub, sub, -);
 lanewise!(Mul, mul, *);
 
-impl Coef for Lanes {
+impl<const W: usize> Coef for Lanes<W> {
     #[inline(always)]
-    fn splat(x: f64) -> Lanes {
+    fn splat(x: f64) -> Lanes<W> {
         Lanes([x; W])
     }
     #[inline(always)]
-    fn mul_add(self, a: Lanes, b: Lanes) -> Lanes {
+    fn mul_add(self, a: Lanes<W>, b: Lanes<W>) -> Lanes<W> {
         Lanes(std::array::from_fn(|i| self.0[i].mul_add(a.0[i], b.0[i])))
     }
 }
 
-impl Coefs<Lanes> {
+impl<const W: usize> Coefs<Lanes<W>> {
     /// The system `k` in every lane.
-    fn splat(k: Coefs<f64>) -> Coefs<Lanes> {
+    fn splat(k: Coefs<f64>) -> Coefs<Lanes<W>> {
         Coefs {
             two_zeta: Lanes::splat(k.two_zeta),
             lambda: Lanes::splat(k.lambda),
@@ -84,13 +89,18 @@ impl Coefs<Lanes> {
     }
 }
 
-type LaneSeries = [[Lanes; POWER_LEN]; 4];
+type LaneSeries<const W: usize> = [[Lanes<W>; POWER_LEN]; 4];
 /// `power::series_of`'s scratch in lanes.
-type Scratch = [[Lanes; POWER_LEN]; 2];
+type Scratch<const W: usize> = [[Lanes<W>; POWER_LEN]; 2];
 
 /// The series of W impacts' phases into `c`, in lanes: the AVX-512 compilation where the
 /// CPU has it, else AVX2's, each with FMA; elsewhere plain, `mul_add` then libm's `fma`.
-fn series(k: Coefs<Lanes>, x: [Lanes; 4], c: &mut LaneSeries, scratch: &mut Scratch) {
+fn series<const W: usize>(
+    k: Coefs<Lanes<W>>,
+    x: [Lanes<W>; 4],
+    c: &mut LaneSeries<W>,
+    scratch: &mut Scratch<W>,
+) {
     #[cfg(target_arch = "x86_64")]
     {
         let fma = std::arch::is_x86_feature_detected!("fma");
@@ -103,19 +113,29 @@ fn series(k: Coefs<Lanes>, x: [Lanes; 4], c: &mut LaneSeries, scratch: &mut Scra
             return unsafe { series_avx2(k, x, c, scratch) };
         }
     }
-    power::series_of::<Lanes, POWER_LEN>(k, x, c, scratch)
+    power::series_of::<Lanes<W>, POWER_LEN>(k, x, c, scratch)
 }
 
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2,fma")]
-fn series_avx2(k: Coefs<Lanes>, x: [Lanes; 4], c: &mut LaneSeries, scratch: &mut Scratch) {
-    power::series_of::<Lanes, POWER_LEN>(k, x, c, scratch)
+fn series_avx2<const W: usize>(
+    k: Coefs<Lanes<W>>,
+    x: [Lanes<W>; 4],
+    c: &mut LaneSeries<W>,
+    scratch: &mut Scratch<W>,
+) {
+    power::series_of::<Lanes<W>, POWER_LEN>(k, x, c, scratch)
 }
 
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx512f,fma")]
-fn series_avx512(k: Coefs<Lanes>, x: [Lanes; 4], c: &mut LaneSeries, scratch: &mut Scratch) {
-    power::series_of::<Lanes, POWER_LEN>(k, x, c, scratch)
+fn series_avx512<const W: usize>(
+    k: Coefs<Lanes<W>>,
+    x: [Lanes<W>; 4],
+    c: &mut LaneSeries<W>,
+    scratch: &mut Scratch<W>,
+) {
+    power::series_of::<Lanes<W>, POWER_LEN>(k, x, c, scratch)
 }
 
 /// The summaries of `ns` under `law`, each as [`super::summary`] gives it (the same bits):
@@ -124,6 +144,16 @@ pub fn summaries(ns: &[Normalized], law: ContactLaw) -> Vec<Option<Summary>> {
     if law == ContactLaw::Linear {
         return ns.iter().map(|n| super::summary(n, law)).collect();
     }
+    #[cfg(target_arch = "x86_64")]
+    if std::arch::is_x86_feature_detected!("avx512f") && std::arch::is_x86_feature_detected!("fma")
+    {
+        return summaries_in::<WIDE>(ns, law);
+    }
+    summaries_in::<NARROW>(ns, law)
+}
+
+/// [`summaries`] W at a time.
+fn summaries_in<const W: usize>(ns: &[Normalized], law: ContactLaw) -> Vec<Option<Summary>> {
     let mut out = vec![None; ns.len()];
     let mut queue = ns.iter().enumerate();
     let mut slots: [Option<(usize, PowerImpact)>; W] = [None; W];
@@ -131,7 +161,7 @@ pub fn summaries(ns: &[Normalized], law: ContactLaw) -> Vec<Option<Summary>> {
     let mut scratch = [[Lanes::splat(0.0); POWER_LEN]; 2];
     let mut lane = [[0.0; POWER_LEN]; 4];
     // the slots' systems, and which of them may have changed since they were put in lanes
-    let mut k = Coefs::<Lanes>::splat(Coefs::IDLE);
+    let mut k = Coefs::<Lanes<W>>::splat(Coefs::IDLE);
     let mut changed = [true; W];
     loop {
         refill(&mut slots, &mut queue, law, &mut changed);
@@ -170,7 +200,11 @@ pub fn summaries(ns: &[Normalized], law: ContactLaw) -> Vec<Option<Summary>> {
 /// Each lane's step by `super::POWER_RULES`, the rules `stages::PowerImpact` gives every
 /// phase it builds (so `power::Phase::advance`'s step, lane by lane: the same bits); 0 in an
 /// empty lane.
-fn steps(c: &LaneSeries, x: &[Lanes; 4], slots: &[Option<(usize, PowerImpact)>; W]) -> Lanes {
+fn steps<const W: usize>(
+    c: &LaneSeries<W>,
+    x: &[Lanes<W>; 4],
+    slots: &[Option<(usize, PowerImpact)>; W],
+) -> Lanes<W> {
     debug_assert!(
         slots
             .iter()
@@ -195,7 +229,7 @@ const ORDER: usize = POWER_LEN - 1;
 
 /// [`steps`] by the quick rule within `eps` for every lane, states `x`: the AVX-512 or AVX2
 /// compilation where the CPU has it, as [`series`].
-fn quick_steps(c: &LaneSeries, x: &[Lanes; 4], eps: f64) -> Lanes {
+fn quick_steps<const W: usize>(c: &LaneSeries<W>, x: &[Lanes<W>; 4], eps: f64) -> Lanes<W> {
     #[cfg(target_arch = "x86_64")]
     {
         if std::arch::is_x86_feature_detected!("avx512f") {
@@ -212,13 +246,13 @@ fn quick_steps(c: &LaneSeries, x: &[Lanes; 4], eps: f64) -> Lanes {
 
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2")]
-fn quick_steps_avx2(c: &LaneSeries, x: &[Lanes; 4], eps: f64) -> Lanes {
+fn quick_steps_avx2<const W: usize>(c: &LaneSeries<W>, x: &[Lanes<W>; 4], eps: f64) -> Lanes<W> {
     quick_steps_in(c, x, eps)
 }
 
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx512f")]
-fn quick_steps_avx512(c: &LaneSeries, x: &[Lanes; 4], eps: f64) -> Lanes {
+fn quick_steps_avx512<const W: usize>(c: &LaneSeries<W>, x: &[Lanes<W>; 4], eps: f64) -> Lanes<W> {
     quick_steps_in(c, x, eps)
 }
 
@@ -226,14 +260,14 @@ fn quick_steps_avx512(c: &LaneSeries, x: &[Lanes; 4], eps: f64) -> Lanes {
 /// lane by lane, the same operations in the same order (so the same bits); a lane whose norms or exponent
 /// leave the quick rule's plain case takes `quick_step_of_norms` itself.
 #[inline(always)]
-fn quick_steps_in(c: &LaneSeries, x: &[Lanes; 4], eps: f64) -> Lanes {
+fn quick_steps_in<const W: usize>(c: &LaneSeries<W>, x: &[Lanes<W>; 4], eps: f64) -> Lanes<W> {
     // written out, as `evaluations_in`'s sums: a closure left out of line (`map`, `fold`)
     // is compiled without this function's features
     let reciprocal = |v: usize| each(|j| 1.0 / x[v].0[j].abs().max(1.0));
     let r = [reciprocal(0), reciprocal(1), reciprocal(2), reciprocal(3)];
     let (a1, a2) = (norm(c, &r, ORDER - 1), norm(c, &r, ORDER));
-    let y = each(|j| poly::quick_exponent(a1.0[j], a2.0[j], ORDER, eps));
-    let h = each(|j| poly::exp2_core(y.0[j]));
+    let y: Lanes<W> = each(|j| poly::quick_exponent(a1.0[j], a2.0[j], ORDER, eps));
+    let h: Lanes<W> = each(|j| poly::exp2_core(y.0[j]));
     each(|j| {
         let plain = poly::is_plain(a1.0[j]) && poly::is_plain(a2.0[j]);
         if plain && poly::is_in_reach(y.0[j]) {
@@ -248,7 +282,7 @@ fn quick_steps_in(c: &LaneSeries, x: &[Lanes; 4], eps: f64) -> Lanes {
 /// |c_n| · (1/scale) over the four series, taken in their order (the same bits), lane by
 /// lane, given the scales' reciprocals `r`.
 #[inline(always)]
-fn norm(c: &LaneSeries, r: &[Lanes; 4], n: usize) -> Lanes {
+fn norm<const W: usize>(c: &LaneSeries<W>, r: &[Lanes<W>; 4], n: usize) -> Lanes<W> {
     let mut acc = Lanes::splat(0.0);
     for (cv, rv) in c.iter().zip(r) {
         acc = each(|j| acc.0[j].max(cv[n].0[j].abs() * rv.0[j]));
@@ -261,7 +295,7 @@ fn norm(c: &LaneSeries, r: &[Lanes; 4], n: usize) -> Lanes {
 /// not `std::array::from_fn`, whose inner function the optimiser may leave out of line and
 /// so out of the caller's AVX-512 or AVX2 compilation.
 #[inline(always)]
-fn each(f: impl Fn(usize) -> f64) -> Lanes {
+fn each<const W: usize>(f: impl Fn(usize) -> f64) -> Lanes<W> {
     let mut lanes = [0.0; W];
     for (j, lane) in lanes.iter_mut().enumerate() {
         *lane = f(j);
@@ -272,16 +306,16 @@ fn each(f: impl Fn(usize) -> f64) -> Lanes {
 /// What `power::Phase::advance` evaluates on a step, in lanes: s(h), s'(h) and the state at
 /// h, each by `fused::horner` as `Rules::horner` sums them (the same bits), and s'(0), the
 /// series' c₁.
-struct Ahead {
-    s_end: Lanes,
-    ds0: Lanes,
-    dsh: Lanes,
-    x: [Lanes; 4],
+struct Ahead<const W: usize> {
+    s_end: Lanes<W>,
+    ds0: Lanes<W>,
+    dsh: Lanes<W>,
+    x: [Lanes<W>; 4],
 }
 
 /// [`Ahead`] of the series `c` at the steps `h`: the AVX-512 or AVX2 compilation where the
 /// CPU has it, each with FMA, as [`series`].
-fn evaluations(c: &LaneSeries, h: Lanes) -> Ahead {
+fn evaluations<const W: usize>(c: &LaneSeries<W>, h: Lanes<W>) -> Ahead<W> {
     #[cfg(target_arch = "x86_64")]
     {
         let fma = std::arch::is_x86_feature_detected!("fma");
@@ -299,18 +333,18 @@ fn evaluations(c: &LaneSeries, h: Lanes) -> Ahead {
 
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2,fma")]
-fn evaluations_avx2(c: &LaneSeries, h: Lanes) -> Ahead {
+fn evaluations_avx2<const W: usize>(c: &LaneSeries<W>, h: Lanes<W>) -> Ahead<W> {
     evaluations_in(c, h)
 }
 
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx512f,fma")]
-fn evaluations_avx512(c: &LaneSeries, h: Lanes) -> Ahead {
+fn evaluations_avx512<const W: usize>(c: &LaneSeries<W>, h: Lanes<W>) -> Ahead<W> {
     evaluations_in(c, h)
 }
 
 #[inline(always)]
-fn evaluations_in(c: &LaneSeries, h: Lanes) -> Ahead {
+fn evaluations_in<const W: usize>(c: &LaneSeries<W>, h: Lanes<W>) -> Ahead<W> {
     // s'(h): `fused::horner` over poly::derivative's series, lane by lane, whose top term 0
     // leaves the sum's +0 start as it is
     let mut dsh = Lanes::splat(0.0);
@@ -336,7 +370,7 @@ fn evaluations_in(c: &LaneSeries, h: Lanes) -> Ahead {
 /// Every slot's impact charged the step it is about to take, and every empty slot given the
 /// next impact the steps take on (an impact refused, or out of steps, leaves its `None` in
 /// the answer).
-fn refill<'a>(
+fn refill<'a, const W: usize>(
     slots: &mut [Option<(usize, PowerImpact)>; W],
     queue: &mut impl Iterator<Item = (usize, &'a Normalized)>,
     law: ContactLaw,
@@ -363,8 +397,8 @@ fn refill<'a>(
 
 /// The systems in lanes `k` of the slots marked `changed` (an empty lane:
 /// [`Coefs::IDLE`]); the marks cleared.
-fn update_coefs(
-    k: &mut Coefs<Lanes>,
+fn update_coefs<const W: usize>(
+    k: &mut Coefs<Lanes<W>>,
     slots: &[Option<(usize, PowerImpact)>; W],
     changed: &mut [bool; W],
 ) {
@@ -380,7 +414,7 @@ fn update_coefs(
 }
 
 /// The slots' states (s, ᾱ', ȳ, τ) in lanes (an empty lane: zeros).
-fn states(slots: &[Option<(usize, PowerImpact)>; W]) -> [Lanes; 4] {
+fn states<const W: usize>(slots: &[Option<(usize, PowerImpact)>; W]) -> [Lanes<W>; 4] {
     // loops, not `array::from_fn`, whose out-of-line calls cost more than the copies
     let mut x = [Lanes::splat(0.0); 4];
     for (j, slot) in slots.iter().enumerate() {

@@ -7,6 +7,11 @@ use super::*;
 /// (libm's log₂), huge and tiny coefficients, states below and above 1 (the scales).
 #[test]
 fn quick_steps_are_the_scalar_rule_lane_by_lane() {
+    quick_steps_are_the_scalar_rule_lane_by_lane_in::<NARROW>();
+    quick_steps_are_the_scalar_rule_lane_by_lane_in::<WIDE>();
+}
+
+fn quick_steps_are_the_scalar_rule_lane_by_lane_in<const W: usize>() {
     let rules = POWER_RULES;
     let picks = [0.0, 1e-310, 3e-17, 0.25, 1.0, 7.5, 1e200, -2e-5];
     for shift in 0..W {
@@ -24,7 +29,7 @@ fn quick_steps_are_the_scalar_rule_lane_by_lane() {
                 *cn = Lanes(std::array::from_fn(|j| value(v, n, j)));
             }
         }
-        let x: [Lanes; 4] =
+        let x: [Lanes<W>; 4] =
             std::array::from_fn(|v| Lanes(std::array::from_fn(|j| picks[(j + v) % 8] * 3.0)));
         let lanes = quick_steps_in(&c, &x, rules.eps);
         for j in 0..W {
@@ -44,13 +49,18 @@ fn quick_steps_are_the_scalar_rule_lane_by_lane() {
 /// The fast series are `mul_add`'s correctly rounded bits whether it is an FMA instruction
 /// (`series`'s and `series_one`'s compilations, on a CPU with FMA) or the library's `fma`
 /// (this function's own compilation, as on a CPU without): the answers do not depend on
-/// the CPU. States and systems of the phases' ranges, eight lanes of each.
+/// the CPU. States and systems of the phases' ranges, a batch's lanes of each.
 #[test]
 fn series_are_the_same_bits_without_fma_instructions() {
+    series_are_the_same_bits_without_fma_instructions_in::<NARROW>();
+    series_are_the_same_bits_without_fma_instructions_in::<WIDE>();
+}
+
+fn series_are_the_same_bits_without_fma_instructions_in<const W: usize>() {
     let pick = |i: usize, lo: f64, hi: f64| lo + (hi - lo) * ((i * 37 + 11) % 101) as f64 / 100.0;
     for round in 0..16 {
         let lane = |j: usize, v: usize| round * 8 + j + 13 * v;
-        let x: [Lanes; 4] = [
+        let x: [Lanes<W>; 4] = [
             each(|j| pick(lane(j, 0), 0.0, 1.2)),
             each(|j| pick(lane(j, 1), -1.0, 1.0)),
             each(|j| pick(lane(j, 2), -0.3, 0.3)),
@@ -68,9 +78,9 @@ fn series_are_the_same_bits_without_fma_instructions() {
         let mut scratch = [[Lanes::splat(0.0); POWER_LEN]; 2];
         series(k, x, &mut fused, &mut scratch);
         let mut library = fused;
-        power::series_of::<Lanes, POWER_LEN>(k, x, &mut library, &mut scratch);
+        power::series_of::<Lanes<W>, POWER_LEN>(k, x, &mut library, &mut scratch);
         for j in 0..W {
-            let one = |l: Lanes| l.0[j];
+            let one = |l: Lanes<W>| l.0[j];
             let kj = Coefs {
                 two_zeta: one(k.two_zeta),
                 lambda: one(k.lambda),
@@ -97,7 +107,12 @@ fn series_are_the_same_bits_without_fma_instructions() {
 /// phases, lane by lane, bit for bit.
 #[test]
 fn step_sums_are_the_single_paths_lane_by_lane() {
-    let mut c = [[Lanes::splat(0.0); POWER_LEN]; 4];
+    step_sums_are_the_single_paths_lane_by_lane_in::<NARROW>();
+    step_sums_are_the_single_paths_lane_by_lane_in::<WIDE>();
+}
+
+fn step_sums_are_the_single_paths_lane_by_lane_in<const W: usize>() {
+    let mut c: LaneSeries<W> = [[Lanes::splat(0.0); POWER_LEN]; 4];
     for (v, series) in c.iter_mut().enumerate() {
         for (n, cn) in series.iter_mut().enumerate() {
             *cn = each(|j| {
