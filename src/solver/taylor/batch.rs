@@ -27,7 +27,7 @@ use super::{POWER_LEN, POWER_RULES, Summary};
 use super::{fused, poly};
 use crate::model::contact::ContactLaw;
 use crate::model::params::Normalized;
-use std::ops::{Add, Mul, Sub};
+use lanes::{Lanes, each};
 
 /// Impacts in step on AVX2 (two registers of f64) and without it.
 const NARROW: usize = 8;
@@ -35,59 +35,6 @@ const NARROW: usize = 8;
 /// operations in flight that eight lanes do (on AVX2, sixteen lanes would be four registers
 /// an operand, and the series' pair loop would spill).
 const WIDE: usize = 16;
-
-/// W f64 lanes, each operation IEEE lane by lane.
-#[derive(Clone, Copy)]
-#[repr(align(64))]
-pub(super) struct Lanes<const W: usize>([f64; W]);
-
-macro_rules! lanewise {
-    ($tr:ident, $f:ident, $op:tt) => {
-        impl<const W: usize> $tr for Lanes<W> {
-            type Output = Lanes<W>;
-            #[inline(always)]
-            fn $f(self, o: Lanes<W>) -> Lanes<W> {
-                Lanes(std::array::from_fn(|i| self.0[i] $op o.0[i]))
-            }
-        }
-    };
-}
-lanewise!(Add, add, +);
-lanewise!(Sub, sub, -);
-lanewise!(Mul, mul, *);
-
-impl<const W: usize> Coef for Lanes<W> {
-    #[inline(always)]
-    fn splat(x: f64) -> Lanes<W> {
-        Lanes([x; W])
-    }
-    #[inline(always)]
-    fn mul_add(self, a: Lanes<W>, b: Lanes<W>) -> Lanes<W> {
-        Lanes(std::array::from_fn(|i| self.0[i].mul_add(a.0[i], b.0[i])))
-    }
-}
-
-impl<const W: usize> Coefs<Lanes<W>> {
-    /// The system `k` in every lane.
-    fn splat(k: Coefs<f64>) -> Coefs<Lanes<W>> {
-        Coefs {
-            two_zeta: Lanes::splat(k.two_zeta),
-            lambda: Lanes::splat(k.lambda),
-            a: Lanes::splat(k.a),
-            minus_a: Lanes::splat(k.minus_a),
-            half_b: Lanes::splat(k.half_b),
-        }
-    }
-
-    /// Lane j given the system `k`.
-    fn set_lane(&mut self, j: usize, k: Coefs<f64>) {
-        self.two_zeta.0[j] = k.two_zeta;
-        self.lambda.0[j] = k.lambda;
-        self.a.0[j] = k.a;
-        self.minus_a.0[j] = k.minus_a;
-        self.half_b.0[j] = k.half_b;
-    }
-}
 
 type LaneSeries<const W: usize> = [[Lanes<W>; POWER_LEN]; 4];
 /// `power::series_of`'s scratch in lanes.
@@ -290,19 +237,6 @@ fn norm<const W: usize>(c: &LaneSeries<W>, r: &[Lanes<W>; 4], n: usize) -> Lanes
     acc
 }
 
-/// The lanes whose j-th entry is `f(j)`: generic, so that `f` is inlined and the lanes
-/// vectorised (a `&dyn Fn` was inlined or not as the optimiser's budget went), and a loop,
-/// not `std::array::from_fn`, whose inner function the optimiser may leave out of line and
-/// so out of the caller's AVX-512 or AVX2 compilation.
-#[inline(always)]
-fn each<const W: usize>(f: impl Fn(usize) -> f64) -> Lanes<W> {
-    let mut lanes = [0.0; W];
-    for (j, lane) in lanes.iter_mut().enumerate() {
-        *lane = f(j);
-    }
-    Lanes(lanes)
-}
-
 /// What `power::Phase::advance` evaluates on a step, in lanes: s(h), s'(h) and the state at
 /// h, each by `fused::horner` as `Rules::horner` sums them (the same bits), and s'(0), the
 /// series' c₁.
@@ -427,5 +361,6 @@ fn states<const W: usize>(slots: &[Option<(usize, PowerImpact)>; W]) -> [Lanes<W
     x
 }
 
+mod lanes;
 #[cfg(test)]
 mod tests;
