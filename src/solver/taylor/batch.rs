@@ -86,7 +86,8 @@ fn series_avx512<const W: usize>(
 }
 
 /// The summaries of `ns` under `law`, each as [`super::summary`] gives it (the same bits):
-/// the Hertz and elastic–plastic laws W at a time in lanes, the linear law one by one.
+/// the Hertz and elastic–plastic laws in lanes, sixteen at a time where the CPU has AVX-512
+/// and FMA (`WIDE`), else eight (`NARROW`); the linear law one by one.
 pub fn summaries(ns: &[Normalized], law: ContactLaw) -> Vec<Option<Summary>> {
     if law == ContactLaw::Linear {
         return ns.iter().map(|n| super::summary(n, law)).collect();

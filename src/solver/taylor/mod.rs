@@ -168,7 +168,7 @@ fn power_law(n: &Normalized, law: ContactLaw) -> Option<Summary> {
 /// `power::series_of` for one impact, compiled with FMA where the CPU has it (an instruction
 /// for each `mul_add`); elsewhere `mul_add` is the library's `fma`: the same bits, slower
 /// (`batch`'s tests: `series_are_the_same_bits_without_fma_instructions`).
-fn series_one(k: power::Coefs<f64>, x: [f64; 4], c: &mut Series, scratch: &mut Series2) {
+fn series_one(k: power::Coefs<f64>, x: [f64; 4], c: &mut Series, scratch: &mut Scratch) {
     #[cfg(target_arch = "x86_64")]
     if std::arch::is_x86_feature_detected!("fma") {
         // SAFETY: the CPU has FMA, the only feature the function enables
@@ -179,14 +179,14 @@ fn series_one(k: power::Coefs<f64>, x: [f64; 4], c: &mut Series, scratch: &mut S
 
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "fma")]
-fn series_fma(k: power::Coefs<f64>, x: [f64; 4], c: &mut Series, scratch: &mut Series2) {
+fn series_fma(k: power::Coefs<f64>, x: [f64; 4], c: &mut Series, scratch: &mut Scratch) {
     power::series_of(k, x, c, scratch)
 }
 
 /// A 3/2-power phase's series (s, ᾱ', ȳ, τ) in [`summary`].
 type Series = [[f64; POWER_LEN]; 4];
 /// `power::series_of`'s scratch.
-type Series2 = [[f64; POWER_LEN]; 2];
+type Scratch = [[f64; POWER_LEN]; 2];
 
 /// The Hertz loading (ẑ from 0 at unit speed, κ̂ = 1) until separation or yield at ẑ_p, by
 /// series of order L − 1 by `rules`.

@@ -308,6 +308,8 @@ pub(super) fn root_with<const L: usize>(
         last_step = step;
         if !(next > lo && next < hi) {
             next = 0.5 * (lo + hi);
+            // a halving: the step not taken says nothing of the next step's rate
+            last_step = f64::NAN;
         }
         let settled = (next - h).abs() <= 4.0 * f64::EPSILON * next.abs().max(f64::MIN_POSITIVE);
         h = next;
