@@ -34,6 +34,7 @@ const NARROW: usize = 8;
 /// Impacts in step on AVX-512: two registers of f64, whose series and sums keep twice the
 /// operations in flight that eight lanes do (on AVX2, sixteen lanes would be four registers
 /// an operand, and the series' pair loop would spill).
+#[cfg(any(target_arch = "x86_64", test))]
 const WIDE: usize = 16;
 
 type LaneSeries<const W: usize> = [[Lanes<W>; POWER_LEN]; 4];

@@ -99,7 +99,9 @@ pub trait Lane:
     fn mul_add(self, m: Self, a: Self) -> Self;
 }
 
-/// (sin x, cos x) of four lanes by `wide`'s `f64x4::sin_cos`, whatever register they are in.
+/// (sin x, cos x) of four lanes by `wide`'s `f64x4::sin_cos`, whatever register they are in
+/// (the AVX lanes'; the portable lanes are `f64x4` and call it directly).
+#[cfg(target_arch = "x86_64")]
 #[inline(always)]
 pub fn wide_sin_cos<L: Lane<Array = [f64; LANES]>>(x: L) -> (L, L) {
     let (s, c) = f64x4::new(x.to_array()).sin_cos();
