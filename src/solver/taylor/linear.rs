@@ -26,7 +26,9 @@ const RULES: Rules = Rules {
 };
 
 /// The elastic–plastic stretch's rules: [`RULES`] with the fused roots, which end a Newton
-/// step sooner (`poly::Stop::Predicted`).
+/// step sooner (`poly::Stop::Predicted`), and the step's norms by the scales' reciprocals
+/// (`Rules::step`). [`run_by`]'s own sums (the turn's slope, the state at an event) stay
+/// `poly::eval_estrin`'s, unfused, whatever the rules.
 const STRETCH_RULES: Rules = Rules {
     eps: EPS,
     sums: Sums::Fused,
@@ -118,6 +120,7 @@ fn series_in_chains<const L: usize>(sys: &Sys, br: &Branch, x: [f64; 3]) -> [[f6
     c
 }
 
+/// The state at h after a step from τ = `tau` with the series `c` (Estrin's sums, unfused).
 fn at<const L: usize>(c: &[[f64; L]; 3], h: f64, tau: f64) -> Point {
     Point {
         tau: tau + h,

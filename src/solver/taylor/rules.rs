@@ -20,9 +20,10 @@ pub(super) enum Sums {
     /// product and sum rounded apart: the linear phases, so that the linear law's answers
     /// keep their bits.
     Quick,
-    /// The quick rule, with fused sums and roots (`super::fused`), the roots a Newton step
-    /// sooner where they can (`poly::Stop::Predicted`): the 3/2-power phases and the
-    /// elastic–plastic straight stretch.
+    /// The quick rule with its norms by the scales' reciprocals, fused sums and roots
+    /// (`super::fused`), the roots a Newton step sooner where they can
+    /// (`poly::Stop::Predicted`): the 3/2-power phases, and the elastic–plastic straight
+    /// stretch's step and roots (its sums are `linear`'s own).
     Fused,
 }
 
