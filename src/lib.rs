@@ -76,6 +76,7 @@ pub mod api;
 pub mod atomic;
 pub mod ball;
 pub mod catalog;
+pub mod conditions;
 // the command line and the explorer are the application, not the library's API: hidden from
 // the docs, and not held to documenting every public item
 #[cfg(feature = "cli")]

@@ -13,6 +13,7 @@ mod cor;
 pub mod lm;
 mod multi;
 pub mod oblique;
+pub mod pressure_loss;
 pub mod profile;
 mod result;
 mod sensitivity;
