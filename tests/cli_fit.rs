@@ -436,3 +436,56 @@ fn drops_weigh_by_their_reading() {
         &["rebound_height_sd", "positive"],
     );
 }
+
+/// Readings every 6 h over 72 h of a ball losing 15 % in 72 h (the law exactly, then a valve
+/// that let go at 36 h), stated to 0.3 kPa.
+fn pressure_file(dir: &Path, name: &str, valve: bool) -> String {
+    let k = -(0.85f64).ln() / 72.0;
+    let mut text = String::from("# 0.8 bar at 20 °C\ntime_h,pressure_bar,pressure_sd_kpa\n");
+    for i in 0..=12 {
+        let t = 6.0 * i as f64;
+        let drop = if valve && t > 36.0 { 0.25 } else { 0.0 };
+        text.push_str(&format!("{t},{},0.3\n", 0.8 * (-k * t).exp() - drop));
+    }
+    let path = dir.join(name);
+    std::fs::write(&path, text).unwrap();
+    path.display().to_string()
+}
+
+/// `fit --pressure-loss`: the leak of readings made from the law comes back (15 % in 72 h,
+/// p0 0.8 bar) with intervals that hold it; readings with a step fail the χ² and exit 1 with
+/// the report; other data beside it are refused (exit 2).
+#[test]
+fn pressure_loss_fits_the_leak_and_says_when_the_law_does_not_hold() {
+    let dir = tempfile::tempdir().unwrap();
+    let good = pressure_file(dir.path(), "ball.csv", false);
+    let v = json(&["fit", "--pressure-loss", &good, "--format", "json"]);
+    assert_eq!(v["kind"], "pressure loss");
+    assert!((f(&v["p0"], "value") / 80_000.0 - 1.0).abs() < 1e-9, "{v}");
+    let k = -(0.85f64).ln() / (72.0 * 3600.0);
+    assert!((f(&v["leak_rate"], "value") / k - 1.0).abs() < 1e-7, "{v}");
+    assert!((f(&v, "lost_in_72h") - 0.15).abs() < 1e-9, "{v}");
+    assert_eq!(v["answered"], true);
+    let text = ok(&["fit", "--pressure-loss", &good]);
+    assert!(text.contains("lost in 72 h  15.0 %"), "{text}");
+
+    let valve = pressure_file(dir.path(), "valve.csv", true);
+    let o = bl(&["fit", "--pressure-loss", &valve]);
+    assert_eq!(o.code, 1, "{}", o.stderr);
+    assert!(
+        o.stdout.contains("no answer: the readings do not follow"),
+        "{}",
+        o.stdout
+    );
+
+    bad(
+        &["fit", "--pressure-loss", &good, "--cor", "0.5"],
+        &["--pressure-loss fits a leak"],
+    );
+    let broken = dir.path().join("broken.csv");
+    std::fs::write(&broken, "time_h,pressure_kpa\n0,80\n-6,79\n").unwrap();
+    bad(
+        &["fit", "--pressure-loss", broken.to_str().unwrap()],
+        &["broken.csv:3:1: time must not be negative"],
+    );
+}

@@ -9,12 +9,14 @@ mod oblique;
 #[cfg(feature = "tui")]
 pub mod file;
 pub mod overlay;
+mod pressure;
 mod rows;
 mod table;
 mod trace;
 
 pub use drop::{Air, DropTest, Flight, G, cor_per_rebound_height, drop_to_cor, drops_to_points};
 pub use oblique::{ObliqueRow, parse_oblique};
+pub use pressure::{PressureRow, parse_pressure};
 pub use table::MAX_ROWS;
 pub use trace::{Trace, TraceSummary};
 

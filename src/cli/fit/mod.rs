@@ -14,6 +14,7 @@ use clap::{Args, ValueEnum};
 use std::io::Write;
 use std::path::PathBuf;
 
+mod leak;
 pub mod multi;
 mod oblique;
 mod plot;
@@ -54,6 +55,11 @@ pub struct FitArgs {
     /// spin_out); fits friction and tangential_stiffness (and inertia_factor with spin_out)
     #[arg(long, value_name = "FILE")]
     pub oblique: Option<PathBuf>,
+    /// Pressure readings of an inflated ball over time: CSV with a time column (time_s,
+    /// time_min, time_h, time_d) and a gauge pressure column (pressure_pa, _kpa, _bar, _psi,
+    /// …; optional pressure_sd_… in the same units); fits its leak p0·e^(−k t)
+    #[arg(long, value_name = "FILE")]
+    pub pressure_loss: Option<PathBuf>,
     /// Drop tests: correct for quadratic air drag with this drag coefficient (≈ 0.47 for a
     /// smooth sphere) [default: no drag]
     #[arg(long, value_name = "CD", value_parser = super::number::number, allow_hyphen_values = true)]
@@ -182,7 +188,8 @@ impl FitArgs {
             1 => Ok(given.pop().unwrap_or(Source::Cor(f64::NAN))),
             0 => anyhow::bail!(
                 "nothing to fit: give --cor E, --cor-table FILE, --force-time FILE, \
-                 --drop-height H --rebound-height R, --drop-test FILE, or --oblique FILE"
+                 --drop-height H --rebound-height R, --drop-test FILE, --oblique FILE, or \
+                 --pressure-loss FILE"
             ),
             _ => anyhow::bail!(
                 "give one kind of data to fit: --cor, --cor-table, --force-time, \
@@ -201,6 +208,9 @@ impl FitArgs {
 }
 
 pub fn run(a: &FitArgs, out: &mut dyn Write) -> anyhow::Result<()> {
+    if let Some(path) = &a.pressure_loss {
+        return leak::run(a, path, out);
+    }
     let source = a.source()?;
     let free = a.free_params()?;
     match (&source, free.as_deref()) {
