@@ -47,6 +47,9 @@ impl From<DistArg> for Dist {
 pub struct McArgs {
     #[command(flatten)]
     pub ball: BallArgs,
+    /// `mc --shot`: a shot's launch spread (src/cli/mc_shot.rs, docs/flight.md §7)
+    #[command(flatten)]
+    pub shot: super::mc_shot::ShotMcArgs,
     /// Nominal impact speed v0 (m/s) [default: the preset's measured v0]
     #[arg(long, value_name = "V", value_parser = super::number::number, allow_hyphen_values = true)]
     pub v0: Option<f64>,
@@ -93,6 +96,9 @@ const STEP: usize = 1 << 16;
 const BINS: usize = 60;
 
 pub fn run(a: &McArgs, out: &mut dyn Write) -> anyhow::Result<()> {
+    if a.shot.shot {
+        return super::mc_shot::run(a, out);
+    }
     let ball = a.ball.resolve(a.v0)?;
     let spec = spec(a, &ball)?;
     ball.check_samples(spec.samples)?;

@@ -23,6 +23,7 @@ pub mod map;
 pub use crate::measured::file as measured_file;
 pub use crate::text::parse as number;
 pub mod mc;
+pub mod mc_shot;
 pub mod oblique;
 pub mod output;
 pub mod outputs;

@@ -12,7 +12,7 @@ use crate::drop::G;
 pub type Y = [f64; 6];
 
 /// The relative and absolute tolerance of a step (its error norm ≤ 1).
-pub const TOL: f64 = 1e-12;
+pub const TOL: f64 = 1e-11;
 
 /// A ball in the air: its aerodynamics and what they act on.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -37,7 +37,7 @@ impl Body {
     #[inline]
     pub fn rate(&self, y: &Y) -> Y {
         let (vx, vy, w) = (y[2], y[3], y[4]);
-        let v = vx.hypot(vy);
+        let v = (vx * vx + vy * vy).sqrt();
         let cd = self
             .aero
             .drag
