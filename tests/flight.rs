@@ -416,3 +416,26 @@ fn topspin_pulls_down_and_backspin_holds_up() {
     let (top, none, back) = (land(300.0), land(0.0), land(-300.0));
     assert!(top < none && none < back, "{top} {none} {back}");
 }
+
+#[test]
+fn trajectory_samples_lie_on_the_parabola_and_end_at_the_end() {
+    let b = ball("tennis");
+    let r = b.radius();
+    let mut spec = ShotSpec::new(1.5, 20.0, 35.0, 100.0, 0.5);
+    spec.drag_coefficient = Some(0.0);
+    spec.lift_coefficient = Some(0.0);
+    spec.ends.bounces = 0;
+    spec.samples = 50;
+    let shot = b.shot(&spec).unwrap();
+    assert_eq!(shot.trajectory.len(), 50);
+    let (s, c) = 35f64.to_radians().sin_cos();
+    for p in &shot.trajectory {
+        let (x, y) = (20.0 * c * p.t, 1.5 + 20.0 * s * p.t - 0.5 * G * p.t * p.t);
+        close("sample x", p.x, x, 1e-12);
+        close("sample y", p.y, y, 1e-12);
+        close("sample vy", p.vy, 20.0 * s - G * p.t, 1e-12);
+        assert!(p.y >= r - 1e-12);
+    }
+    assert_eq!(shot.trajectory[0].t, 0.0);
+    assert_eq!(*shot.trajectory.last().unwrap(), shot.end.state);
+}
