@@ -63,9 +63,9 @@ impl ShotSpec {
     }
 }
 
-/// One bounce of a shot (the JSON's `bounces` [...]): in the flight's frame (v_x signed, ω
-/// > 0 topspin for a ball moving in +x); angles to the surface, in the direction of motion,
-/// as `oblique` gives them.
+/// One bounce of a shot (the JSON's `bounces` [...]): in the flight's frame (v_x signed,
+/// ω positive for topspin on a ball moving in +x); angles to the surface, in the direction
+/// of motion, as `oblique` gives them.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct ShotBounce {
     /// Time of the landing (s).
@@ -226,6 +226,30 @@ impl Ball {
         Ok(())
     }
 
+    /// One bounce of a shot as the report gives it.
+    fn shot_bounce(&self, b: &flight::Bounce<ObliqueResponse>) -> ShotBounce {
+        let r = &b.answer;
+        let sx = if b.mirrored { -1.0 } else { 1.0 };
+        ShotBounce {
+            t: b.arriving.t,
+            x: b.arriving.x,
+            v_in: r.v_in,
+            angle_in: r.angle_in_deg,
+            spin_in: b.arriving.spin,
+            vx_in: b.arriving.vx,
+            vy_in: b.arriving.vy,
+            v_out: r.v_out,
+            angle_out: r.angle_out_deg,
+            spin_out: sx * r.spin_out,
+            vx_out: b.leaving.vx,
+            vy_out: b.leaving.vy,
+            cor_normal: r.cor_normal,
+            contact_time: r.contact_time,
+            slid_throughout: r.slid_throughout,
+            warnings: self.oblique_warnings(r),
+        }
+    }
+
     /// A shot (docs/flight.md): the flight from the launch, each bounce `oblique` on the
     /// arriving state, until the ends.
     ///
@@ -280,32 +304,7 @@ impl Ball {
                     .into(),
             },
         })?;
-        let bounces = shot
-            .bounces
-            .iter()
-            .map(|b| {
-                let r = &b.answer;
-                let sx = if b.mirrored { -1.0 } else { 1.0 };
-                ShotBounce {
-                    t: b.arriving.t,
-                    x: b.arriving.x,
-                    v_in: r.v_in,
-                    angle_in: r.angle_in_deg,
-                    spin_in: b.arriving.spin,
-                    vx_in: b.arriving.vx,
-                    vy_in: b.arriving.vy,
-                    v_out: r.v_out,
-                    angle_out: r.angle_out_deg,
-                    spin_out: sx * r.spin_out,
-                    vx_out: b.leaving.vx,
-                    vy_out: b.leaving.vy,
-                    cor_normal: r.cor_normal,
-                    contact_time: r.contact_time,
-                    slid_throughout: r.slid_throughout,
-                    warnings: self.oblique_warnings(r),
-                }
-            })
-            .collect();
+        let bounces = shot.bounces.iter().map(|b| self.shot_bounce(b)).collect();
         for b in shot.bounces {
             responses.push((b.answer, b.mirrored));
         }

@@ -97,7 +97,23 @@ const BINS: usize = 60;
 
 pub fn run(a: &McArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     if a.shot.shot {
-        return super::mc_shot::run(a, out);
+        let refused = [
+            (a.v0.is_some(), "--v0"),
+            (a.correlate.is_some(), "--correlate"),
+            (a.csv_out.is_some(), "--csv-out"),
+            (a.svg_out.is_some(), "--svg-out"),
+            (a.dist == Some(DistArg::Lognormal), "--dist lognormal"),
+        ];
+        let mc = super::mc_shot::Mc {
+            ball: &a.ball,
+            vary: &a.vary,
+            uniform: a.dist == Some(DistArg::Uniform),
+            samples: a.samples,
+            seed: a.seed,
+            json: a.format == McFormat::Json,
+            refused: &refused,
+        };
+        return super::mc_shot::run(&a.shot, &mc, out);
     }
     let ball = a.ball.resolve(a.v0)?;
     let spec = spec(a, &ball)?;

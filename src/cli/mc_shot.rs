@@ -3,7 +3,7 @@
 //! rad/s, elevation degrees, height m, absolute), and the spread of where it lands and how
 //! it leaves.
 
-use super::mc::{DistArg, McArgs, McFormat};
+use super::ball::BallArgs;
 use super::oblique::TangentialArgs;
 use super::output::{self, given, table};
 use crate::api::{BallError, ShotMcReport, ShotMcSpec, ShotSpec, ShotSpread};
@@ -93,23 +93,29 @@ fn required(x: Option<f64>, flag: &str) -> anyhow::Result<f64> {
     x.ok_or_else(|| anyhow::anyhow!("mc --shot needs {flag}"))
 }
 
-pub fn run(a: &McArgs, out: &mut dyn Write) -> anyhow::Result<()> {
-    let s = &a.shot;
-    for (given, flag) in [
-        (a.v0.is_some(), "--v0"),
-        (a.correlate.is_some(), "--correlate"),
-        (a.csv_out.is_some(), "--csv-out"),
-        (a.svg_out.is_some(), "--svg-out"),
-    ] {
-        if given {
-            anyhow::bail!("{flag} does not go with --shot");
-        }
+/// What `mc` gives `mc --shot`: its own flags' values, and those that do not go with it.
+pub struct Mc<'a> {
+    /// The ball.
+    pub ball: &'a BallArgs,
+    /// `--vary`.
+    pub vary: &'a str,
+    /// `--dist uniform`.
+    pub uniform: bool,
+    /// `--samples`.
+    pub samples: usize,
+    /// `--seed`.
+    pub seed: u64,
+    /// `--format json`.
+    pub json: bool,
+    /// (given, flag) of the flags refused with `--shot`.
+    pub refused: &'a [(bool, &'static str)],
+}
+
+pub fn run(s: &ShotMcArgs, a: &Mc<'_>, out: &mut dyn Write) -> anyhow::Result<()> {
+    if let Some((_, flag)) = a.refused.iter().find(|(given, _)| *given) {
+        anyhow::bail!("{flag} does not go with --shot");
     }
-    let uniform = match a.dist {
-        None | Some(DistArg::Normal) => false,
-        Some(DistArg::Uniform) => true,
-        Some(DistArg::Lognormal) => anyhow::bail!("--dist lognormal does not go with --shot"),
-    };
+    let uniform = a.uniform;
     super::ball::check_overrides(&a.ball.set, None, None)?;
     let ball = a.ball.resolve(None)?;
     let shot = ShotSpec {
@@ -135,7 +141,7 @@ pub fn run(a: &McArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     };
     let spec = ShotMcSpec {
         shot,
-        spread: parse_vary(&a.vary)?,
+        spread: parse_vary(a.vary)?,
         uniform,
         samples: a.samples,
         seed: a.seed,
@@ -143,9 +149,10 @@ pub fn run(a: &McArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     let r = ball
         .shot_mc(&spec)
         .map_err(|e: BallError| anyhow::anyhow!("{e}"))?;
-    match a.format {
-        McFormat::Json => output::json(out, &json(&ball, &r))?,
-        McFormat::Text => text(out, &ball.label(), &r)?,
+    if a.json {
+        output::json(out, &json(&ball, &r))?
+    } else {
+        text(out, &ball.label(), &r)?
     }
     Ok(())
 }

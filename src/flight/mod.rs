@@ -191,6 +191,22 @@ struct Flier<'a> {
 }
 
 impl Flier<'_> {
+    /// The earliest event inside the accepted step of size `h` from `y` to `y1`, each
+    /// located from the step's start: the step size to it, the state there (on the surface
+    /// or at the distance exactly) and which.
+    fn event(&self, y: &Y, y1: &Y, h: f64) -> Option<(f64, Y, Stop)> {
+        let (body, r) = (self.body, self.body.radius);
+        let landing = (y[1] >= r && y1[1] < r).then(|| step::locate(body, y, h, 1, r));
+        let far = self.ends.distance.filter(|&d| y[0] < d && y1[0] >= d);
+        let distance = far.map(|d| (d, step::locate(body, y, h, 0, d)));
+        match (landing, distance) {
+            (Some(a), Some((d, b))) if b.0 < a.0 => Some((b.0, at(b.1, 0, d), Stop::Distance)),
+            (Some(a), _) => Some((a.0, at(a.1, 1, r), Stop::Landing)),
+            (None, Some((d, b))) => Some((b.0, at(b.1, 0, d), Stop::Distance)),
+            (None, None) => None,
+        }
+    }
+
     /// One leg from (t, y) to its stop: the state there and why.
     fn leg(&mut self, mut t: f64, mut y: Y) -> Result<(f64, Y, Stop), ()> {
         let (body, r) = (self.body, self.body.radius);
@@ -219,24 +235,10 @@ impl Flier<'_> {
                 self.h = 0.5 * h;
                 continue;
             }
-            // the events inside the step, each located from its start: the earliest
-            let landing = (y[1] >= r && y1[1] < r).then(|| step::locate(body, &y, h, 1, r));
-            let far = self.ends.distance.filter(|&d| y[0] < d && y1[0] >= d);
-            let distance = far.map(|d| step::locate(body, &y, h, 0, d));
-            let event = match (landing, distance) {
-                (Some(a), Some(b)) if b.0 < a.0 => Some((b, Stop::Distance)),
-                (Some(a), _) => Some((a, Stop::Landing)),
-                (None, Some(b)) => Some((b, Stop::Distance)),
-                (None, None) => None,
-            };
             if let Some(rec) = &mut self.record {
                 rec.push((t, y));
             }
-            if let Some(((hs, mut ys), stop)) = event {
-                match stop {
-                    Stop::Landing => ys[1] = r,
-                    _ => ys[0] = self.ends.distance.unwrap_or(ys[0]),
-                }
+            if let Some((hs, ys, stop)) = self.event(&y, &y1, h) {
                 return Ok((t + hs, ys, stop));
             }
             let last = self.ends.time.is_some_and(|end| t + h >= end);
@@ -253,6 +255,12 @@ impl Flier<'_> {
             }
         }
     }
+}
+
+/// `y` with component `i` set to `value` (an event's, met to rounding).
+fn at(mut y: Y, i: usize, value: f64) -> Y {
+    y[i] = value;
+    y
 }
 
 /// The energy ½ m |v|² + m g y of a state (J).
@@ -318,24 +326,37 @@ pub fn shot<P, E>(
                 trajectory,
             });
         }
-        let mirrored = y_end[2] < 0.0;
-        let sx = if mirrored { -1.0 } else { 1.0 };
-        let arrival = Arrival {
-            v: y_end[2].hypot(y_end[3]),
-            angle_deg: (-y_end[3]).atan2(sx * y_end[2]).to_degrees(),
-            spin: sx * y_end[4],
-        };
-        let (rb, answer) = bounce(&arrival).map_err(FlightError::Bounce)?;
-        y = [y_end[0], body.radius, sx * rb.vx, rb.vy, sx * rb.spin, 0.0];
-        t = t_end;
-        bounces.push(Bounce {
-            arriving: State::of(t, &y_end),
-            leaving: State::of(t, &y),
-            arrival,
-            mirrored,
-            answer,
-        });
+        let b = bounce_at(body.radius, t_end, &y_end, &mut bounce).map_err(FlightError::Bounce)?;
+        (t, y) = (t_end, b.1);
+        bounces.push(b.0);
     }
+}
+
+/// The bounce of a ball arriving in state `y` at `t` (on the surface, radius `r`), mirrored
+/// when it moves in −x: its record and the state it leaves in (y = R, the work reset).
+fn bounce_at<P, E>(
+    r: f64,
+    t: f64,
+    y: &Y,
+    bounce: &mut impl FnMut(&Arrival) -> Result<(Rebound, P), E>,
+) -> Result<(Bounce<P>, Y), E> {
+    let mirrored = y[2] < 0.0;
+    let sx = if mirrored { -1.0 } else { 1.0 };
+    let arrival = Arrival {
+        v: y[2].hypot(y[3]),
+        angle_deg: (-y[3]).atan2(sx * y[2]).to_degrees(),
+        spin: sx * y[4],
+    };
+    let (rb, answer) = bounce(&arrival)?;
+    let out = [y[0], r, sx * rb.vx, rb.vy, sx * rb.spin, 0.0];
+    let record = Bounce {
+        arriving: State::of(t, y),
+        leaving: State::of(t, &out),
+        arrival,
+        mirrored,
+        answer,
+    };
+    Ok((record, out))
 }
 
 /// `n` states evenly spaced in time over [0, end.t], each one step from the last accepted
