@@ -176,9 +176,61 @@ const CASES: &[(&str, &[&str])] = &[
             "k_p=5%",
         ],
     ),
+    (
+        "bad-shot-endless",
+        &[
+            "shot",
+            "--preset",
+            "tennis",
+            "--height",
+            "1",
+            "--speed",
+            "10",
+            "--friction",
+            "0.5",
+            "--lift-coefficient",
+            "5",
+            "--drag-coefficient",
+            "0",
+            "--spin",
+            "-100",
+        ],
+    ),
 ];
 
 #[test]
 fn shot_prints_what_it_printed_before() {
     common::golden::check(CASES);
+}
+
+/// `--svg-out` writes the side view (valid SVG naming the path, the surface and the bounce),
+/// refuses an existing file without `--force` and writes nothing then.
+#[test]
+fn svg_out_draws_the_side_view_once() {
+    let dir = tempfile::tempdir().unwrap();
+    let svg = dir.path().join("serve.svg");
+    let run = |extra: &[&str]| {
+        let mut args: Vec<&str> = SERVE.to_vec();
+        args.extend(["--svg-out", svg.to_str().unwrap()]);
+        args.extend(extra);
+        std::process::Command::new(env!("CARGO_BIN_EXE_bouncelab"))
+            .args(&args)
+            .output()
+            .unwrap()
+    };
+    let first = run(&[]);
+    assert!(first.status.success(), "{first:?}");
+    let text = std::fs::read_to_string(&svg).unwrap();
+    let doc = roxmltree::Document::parse(&text).unwrap();
+    assert_eq!(doc.root_element().tag_name().name(), "svg");
+    assert!(
+        text.contains("path (model); bounce (model)"),
+        "the legend names the series"
+    );
+    let again = run(&[]);
+    assert_eq!(again.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&again.stderr).contains("exists (use --force"));
+    assert!(again.stdout.is_empty());
+    assert_eq!(std::fs::read_to_string(&svg).unwrap(), text);
+    assert!(run(&["--force"]).status.success());
 }

@@ -163,7 +163,14 @@ pub fn run(a: &ShotArgs, out: &mut dyn Write) -> anyhow::Result<()> {
 /// A value refused by the library, named by its flag: `invalid --drag-coefficient: …`.
 fn flag_named(e: crate::api::BallError) -> anyhow::Error {
     match &e {
-        crate::api::BallError::Invalid { field, .. } if *field != "shot" => {
+        crate::api::BallError::Invalid { field, value, .. } if *field == "shot" => {
+            anyhow::anyhow!(
+                "the ball flies for more than {} s without landing (a lift that holds it up?): \
+                 give --time or --distance",
+                given(*value, 6)
+            )
+        }
+        crate::api::BallError::Invalid { field, .. } => {
             let flag = format!("--{}", field.replace('_', "-"));
             anyhow::anyhow!("{}", e.to_string().replacen(field, &flag, 1))
         }
