@@ -439,3 +439,31 @@ fn trajectory_samples_lie_on_the_parabola_and_end_at_the_end() {
     assert_eq!(shot.trajectory[0].t, 0.0);
     assert_eq!(*shot.trajectory.last().unwrap(), shot.end.state);
 }
+
+#[test]
+fn each_bad_value_is_refused_by_its_name() {
+    let b = ball("tennis");
+    let cases: [(&str, fn(&mut ShotSpec)); 12] = [
+        ("height", |s| s.launch.height = 0.01),
+        ("speed", |s| s.launch.speed = -1.0),
+        ("elevation", |s| s.launch.elevation_deg = 91.0),
+        ("spin", |s| s.launch.spin = f64::NAN),
+        ("friction", |s| s.friction = -0.1),
+        ("bounces", |s| s.ends.bounces = 101),
+        ("distance", |s| s.ends.distance = Some(0.0)),
+        ("time", |s| s.ends.time = Some(f64::INFINITY)),
+        ("air_density", |s| s.air_density = -1.0),
+        ("drag_coefficient", |s| s.drag_coefficient = Some(-0.1)),
+        ("lift_coefficient", |s| s.lift_coefficient = Some(f64::NAN)),
+        ("spin_decay", |s| s.spin_decay = Some(-1.0)),
+    ];
+    for (field, spoil) in cases {
+        let mut spec = serve();
+        spoil(&mut spec);
+        let e = b.shot(&spec).unwrap_err().to_string();
+        assert!(e.starts_with(&format!("invalid {field}: ")), "{field}: {e}");
+    }
+    let mut spec = serve();
+    spec.samples = 1;
+    assert!(b.shot(&spec).unwrap_err().to_string().contains("samples"));
+}
