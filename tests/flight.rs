@@ -443,7 +443,8 @@ fn trajectory_samples_lie_on_the_parabola_and_end_at_the_end() {
 #[test]
 fn each_bad_value_is_refused_by_its_name() {
     let b = ball("tennis");
-    let cases: [(&str, fn(&mut ShotSpec)); 12] = [
+    type Spoil = fn(&mut ShotSpec);
+    let cases: [(&str, Spoil); 12] = [
         ("height", |s| s.launch.height = 0.01),
         ("speed", |s| s.launch.speed = -1.0),
         ("elevation", |s| s.launch.elevation_deg = 91.0),
