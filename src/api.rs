@@ -77,6 +77,8 @@ mod oblique_fit;
 mod reach;
 mod report;
 mod rows;
+mod shot;
+mod shot_mc;
 mod summary;
 mod sweep;
 mod warnings;
@@ -98,6 +100,8 @@ pub use reach::{
 };
 pub use report::{BallHeader, Energy, FitReport, ImpactReport, MeasuredAt};
 pub use rows::{ImpactRow, Rest, impact_row, impact_rows};
+pub use shot::{ShotBounce, ShotEnd, ShotReport, ShotSpec};
+pub use shot_mc::{SHOT_MC_QUANTITIES, ShotMcReport, ShotMcSpec, ShotSpread, Spread};
 pub use summary::ImpactSummary;
 pub use sweep::{sweep_zeta, sweep_zeta_watched};
 pub use warnings::{ENERGY_RESIDUAL_MAX, map_indentation_warning};

@@ -88,6 +88,7 @@ pub mod drop;
 pub mod fault;
 #[cfg(feature = "svg")]
 pub mod figure;
+pub mod flight;
 pub mod map;
 pub mod measured;
 pub mod model;

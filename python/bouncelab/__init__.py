@@ -38,6 +38,8 @@ from ._native import (
     run,
     run_normalized,
     run_params,
+    shot,
+    shots,
     standards,
     sweep_velocity,
     sweep_zeta,
@@ -62,6 +64,8 @@ presets = _guard(presets)
 run = _guard(run)
 run_normalized = _guard(run_normalized)
 run_params = _guard(run_params)
+shot = _guard(shot)
+shots = _guard(shots)
 standards = _guard(standards)
 sweep_velocity = _guard(sweep_velocity)
 sweep_zeta = _guard(sweep_zeta)
@@ -86,6 +90,8 @@ __all__ = [
     "run",
     "run_normalized",
     "run_params",
+    "shot",
+    "shots",
     "standards",
     "sweep_velocity",
     "sweep_zeta",

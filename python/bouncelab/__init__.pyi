@@ -554,6 +554,61 @@ def oblique(
     ``history``, ``samples`` of it (2 … 100000, default 400; refused without ``history``, as
     ``run`` refuses it)."""
 
+def shot(
+    preset: str = "tennis",
+    *,
+    height: float,
+    speed: float,
+    friction: float,
+    elevation: float = 0.0,
+    spin: float = 0.0,
+    bounces: int = 1,
+    distance: Optional[float] = None,
+    time: Optional[float] = None,
+    air_density: float = 1.204,
+    drag_coefficient: Optional[float] = None,
+    lift_coefficient: Optional[float] = None,
+    spin_decay: Optional[float] = None,
+    tangential_stiffness: Optional[float] = None,
+    inertia_factor: Optional[float] = None,
+    samples: int = 200,
+    law: Optional[Law] = None,
+    params: Optional[ParamSet] = None,
+) -> dict[str, Any]:
+    """A shot (docs/flight.md), as ``bouncelab shot --format json --samples N``: launched from
+    ``height`` (the centre, m) at ``speed`` (m/s), ``elevation`` (degrees, negative down) and
+    ``spin`` (rad/s, > 0 topspin), bouncing by ``oblique`` on a surface of ``friction``; a
+    dict with ``bounces`` (a dict of arrays, one element a bounce: t, x, v_in, angle_in,
+    spin_in, vx_in, vy_in, v_out, angle_out, spin_out, vx_out, vy_out, cor_normal,
+    contact_time, slid_throughout, and warnings a list), ``end`` (reason, t, x, y, vx, vy,
+    spin, speed), ``trajectory`` (arrays t, x, y, vx, vy, spin; ``samples`` of them) and
+    ``source`` (the aerodynamic models used)."""
+
+def shots(
+    preset: str = "tennis",
+    *,
+    height: Floats,
+    speed: Floats,
+    friction: float,
+    elevation: Optional[Floats] = None,
+    spin: Optional[Floats] = None,
+    bounces: int = 1,
+    distance: Optional[float] = None,
+    time: Optional[float] = None,
+    air_density: float = 1.204,
+    drag_coefficient: Optional[float] = None,
+    lift_coefficient: Optional[float] = None,
+    spin_decay: Optional[float] = None,
+    tangential_stiffness: Optional[float] = None,
+    inertia_factor: Optional[float] = None,
+    law: Optional[Law] = None,
+    params: Optional[ParamSet] = None,
+) -> dict[str, Array]:
+    """Many shots, ``height``, ``speed``, ``elevation`` and ``spin`` (``None``: 0) broadcast
+    together as a ufunc's arguments: arrays of the broadcast shape ``landing_t``, ``landing_x``, ``v_in``,
+    ``angle_in``, ``v_out``, ``angle_out``, ``spin_out`` (the first bounce; NaN with
+    bounces=0) and ``end_t``, ``end_x``, ``end_y``, ``end_vx``, ``end_vy``."""
+
 Dist = Literal["normal", "uniform", "lognormal"]
 
 class McStats(TypedDict):

@@ -26,6 +26,7 @@ mod preset_balls;
 mod preset_fits;
 mod runs;
 mod same;
+mod shot;
 mod standards;
 mod sweeps;
 
@@ -82,6 +83,8 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(oblique_fit::fit_oblique, m)?)?;
     m.add_function(wrap_pyfunction!(mc::monte_carlo, m)?)?;
     m.add_function(wrap_pyfunction!(arrays::impacts, m)?)?;
+    m.add_function(wrap_pyfunction!(shot::shot, m)?)?;
+    m.add_function(wrap_pyfunction!(shot::shots, m)?)?;
     m.add_function(wrap_pyfunction!(batch::batch, m)?)?;
     m.add_function(wrap_pyfunction!(mc::monte_carlo_chunk, m)?)?;
     m.add_function(wrap_pyfunction!(mc::monte_carlo_merge, m)?)?;

@@ -47,6 +47,9 @@ impl From<DistArg> for Dist {
 pub struct McArgs {
     #[command(flatten)]
     pub ball: BallArgs,
+    /// `mc --shot`: a shot's launch spread (src/cli/mc_shot.rs, docs/flight.md §7)
+    #[command(flatten)]
+    pub shot: super::mc_shot::ShotMcArgs,
     /// Nominal impact speed v0 (m/s) [default: the preset's measured v0]
     #[arg(long, value_name = "V", value_parser = super::number::number, allow_hyphen_values = true)]
     pub v0: Option<f64>,
@@ -93,6 +96,25 @@ const STEP: usize = 1 << 16;
 const BINS: usize = 60;
 
 pub fn run(a: &McArgs, out: &mut dyn Write) -> anyhow::Result<()> {
+    if a.shot.shot {
+        let refused = [
+            (a.v0.is_some(), "--v0"),
+            (a.correlate.is_some(), "--correlate"),
+            (a.csv_out.is_some(), "--csv-out"),
+            (a.svg_out.is_some(), "--svg-out"),
+            (a.dist == Some(DistArg::Lognormal), "--dist lognormal"),
+        ];
+        let mc = super::mc_shot::Mc {
+            ball: &a.ball,
+            vary: &a.vary,
+            uniform: a.dist == Some(DistArg::Uniform),
+            samples: a.samples,
+            seed: a.seed,
+            json: a.format == McFormat::Json,
+            refused: &refused,
+        };
+        return super::mc_shot::run(&a.shot, &mc, out);
+    }
     let ball = a.ball.resolve(a.v0)?;
     let spec = spec(a, &ball)?;
     ball.check_samples(spec.samples)?;

@@ -23,6 +23,7 @@ pub mod map;
 pub use crate::measured::file as measured_file;
 pub use crate::text::parse as number;
 pub mod mc;
+pub mod mc_shot;
 pub mod oblique;
 pub mod output;
 pub mod outputs;
@@ -31,6 +32,7 @@ pub mod presets;
 pub mod reproduce;
 pub mod run;
 mod run_text;
+pub mod shot;
 pub mod standards;
 pub mod sweep;
 
@@ -120,6 +122,10 @@ pub enum Command {
     Oblique(oblique::ObliqueArgs),
     /// The ITF Court Pace Rating of a surface of friction μ (ITF CS 01/02, docs/oblique.md)
     Court(court::CourtArgs),
+    /// A shot: flight with drag and Magnus lift, bounces by `oblique`, where it lands and
+    /// where it is at the end (docs/flight.md)
+    #[command(allow_negative_numbers = true)]
+    Shot(shot::ShotArgs),
 }
 
 pub fn main() -> ExitCode {
@@ -245,6 +251,10 @@ fn dispatch(cli: Cli, out: &mut dyn Write) -> anyhow::Result<()> {
         Command::Court(mut a) => {
             merge(top, &mut a.ball)?;
             court::run(&a, out)
+        }
+        Command::Shot(mut a) => {
+            merge(top, &mut a.ball)?;
+            shot::run(&a, out)
         }
         Command::Standards(a) => {
             if top.is_given() {

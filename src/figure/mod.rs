@@ -27,6 +27,7 @@ pub mod paper;
 pub mod peers;
 pub mod report;
 pub mod room;
+pub mod shot;
 pub mod svg;
 pub mod svg_map;
 pub mod ticks;

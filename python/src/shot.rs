@@ -1,0 +1,287 @@
+//! `bouncelab.shot(...)`: a shot (docs/flight.md) as arrays; `bouncelab.shots(...)`: many
+//! shots over numpy arrays of launch conditions, broadcast together, in parallel.
+
+use crate::error;
+use crate::preset_balls::{overridden_ball, overrides};
+use bouncelab::api::{ShotReport, ShotSpec};
+use bouncelab::flight::{Ends, Launch};
+use numpy::PyArray1;
+use pyo3::exceptions::PyValueError;
+use pyo3::prelude::*;
+use pyo3::types::PyDict;
+use rayon::prelude::*;
+
+/// What every shot of a call shares.
+#[derive(Clone, Copy)]
+struct Common {
+    friction: f64,
+    bounces: usize,
+    distance: Option<f64>,
+    time: Option<f64>,
+    air_density: f64,
+    drag_coefficient: Option<f64>,
+    lift_coefficient: Option<f64>,
+    spin_decay: Option<f64>,
+    tangential_stiffness: Option<f64>,
+    inertia_factor: Option<f64>,
+}
+
+impl Common {
+    fn spec(&self, launch: Launch, samples: usize) -> ShotSpec {
+        ShotSpec {
+            launch,
+            ends: Ends {
+                bounces: self.bounces,
+                distance: self.distance,
+                time: self.time,
+            },
+            friction: self.friction,
+            tangential_stiffness: self.tangential_stiffness,
+            inertia_factor: self.inertia_factor,
+            air_density: self.air_density,
+            drag_coefficient: self.drag_coefficient,
+            lift_coefficient: self.lift_coefficient,
+            spin_decay: self.spin_decay,
+            samples,
+        }
+    }
+}
+
+fn array<'py>(py: Python<'py>, v: Vec<f64>) -> Bound<'py, PyArray1<f64>> {
+    PyArray1::from_vec(py, v)
+}
+
+/// The report as a dict: `bounces` and `trajectory` dicts of arrays, `end` a dict, `source`.
+fn report<'py>(py: Python<'py>, r: &ShotReport) -> PyResult<Bound<'py, PyDict>> {
+    let d = PyDict::new(py);
+    let b = PyDict::new(py);
+    type Field = fn(&bouncelab::api::ShotBounce) -> f64;
+    let fields: [(&str, Field); 14] = [
+        ("t", |b| b.t),
+        ("x", |b| b.x),
+        ("v_in", |b| b.v_in),
+        ("angle_in", |b| b.angle_in),
+        ("spin_in", |b| b.spin_in),
+        ("vx_in", |b| b.vx_in),
+        ("vy_in", |b| b.vy_in),
+        ("v_out", |b| b.v_out),
+        ("angle_out", |b| b.angle_out),
+        ("spin_out", |b| b.spin_out),
+        ("vx_out", |b| b.vx_out),
+        ("vy_out", |b| b.vy_out),
+        ("cor_normal", |b| b.cor_normal),
+        ("contact_time", |b| b.contact_time),
+    ];
+    for (name, f) in fields {
+        b.set_item(name, array(py, r.bounces.iter().map(f).collect()))?;
+    }
+    let slid: Vec<bool> = r.bounces.iter().map(|b| b.slid_throughout).collect();
+    b.set_item("slid_throughout", PyArray1::from_vec(py, slid))?;
+    let warnings: Vec<Vec<String>> = r.bounces.iter().map(|b| b.warnings.clone()).collect();
+    b.set_item("warnings", warnings)?;
+    d.set_item("bounces", b)?;
+    let t = PyDict::new(py);
+    type Of = fn(&bouncelab::flight::State) -> f64;
+    let cols: [(&str, Of); 6] = [
+        ("t", |s| s.t),
+        ("x", |s| s.x),
+        ("y", |s| s.y),
+        ("vx", |s| s.vx),
+        ("vy", |s| s.vy),
+        ("spin", |s| s.spin),
+    ];
+    for (name, f) in cols {
+        t.set_item(name, array(py, r.trajectory.iter().map(f).collect()))?;
+    }
+    d.set_item("trajectory", t)?;
+    let e = PyDict::new(py);
+    let s = r.end.state;
+    e.set_item("reason", format!("{:?}", r.end.reason).to_lowercase())?;
+    for (name, v) in [
+        ("t", s.t),
+        ("x", s.x),
+        ("y", s.y),
+        ("vx", s.vx),
+        ("vy", s.vy),
+        ("spin", s.spin),
+        ("speed", r.end.speed),
+    ] {
+        e.set_item(name, v)?;
+    }
+    d.set_item("end", e)?;
+    d.set_item("source", r.aero.source)?;
+    Ok(d)
+}
+
+/// One shot, as `bouncelab shot --format json --samples N`: a dict with `bounces` (a dict of
+/// arrays, one element per bounce), `end` (a dict), `trajectory` (a dict of arrays t, x, y,
+/// vx, vy, spin; `samples` of them, 0 for none) and `source` (the aerodynamic models).
+#[pyfunction]
+#[pyo3(signature = (preset="tennis", *, height, speed, friction, elevation=0.0, spin=0.0, bounces=1, distance=None, time=None, air_density=1.204, drag_coefficient=None, lift_coefficient=None, spin_decay=None, tangential_stiffness=None, inertia_factor=None, samples=200, law=None, params=None))]
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn shot<'py>(
+    py: Python<'py>,
+    preset: &str,
+    height: f64,
+    speed: f64,
+    friction: f64,
+    elevation: f64,
+    spin: f64,
+    bounces: usize,
+    distance: Option<f64>,
+    time: Option<f64>,
+    air_density: f64,
+    drag_coefficient: Option<f64>,
+    lift_coefficient: Option<f64>,
+    spin_decay: Option<f64>,
+    tangential_stiffness: Option<f64>,
+    inertia_factor: Option<f64>,
+    samples: usize,
+    law: Option<&str>,
+    params: Option<&str>,
+) -> PyResult<Bound<'py, PyDict>> {
+    let no = overrides(None, None, None, None, None, None);
+    let ball = overridden_ball(preset, params, law, None, &no)?;
+    let common = Common {
+        friction,
+        bounces,
+        distance,
+        time,
+        air_density,
+        drag_coefficient,
+        lift_coefficient,
+        spin_decay,
+        tangential_stiffness,
+        inertia_factor,
+    };
+    let launch = Launch {
+        height,
+        speed,
+        elevation_deg: elevation,
+        spin,
+    };
+    let r = py
+        .detach(|| ball.shot(&common.spec(launch, samples)))
+        .map_err(error)?;
+    report(py, &r)
+}
+
+/// The names of `shots`' answer, in order.
+const SHOTS: [&str; 12] = [
+    "landing_t",
+    "landing_x",
+    "v_in",
+    "angle_in",
+    "v_out",
+    "angle_out",
+    "spin_out",
+    "end_t",
+    "end_x",
+    "end_y",
+    "end_vx",
+    "end_vy",
+];
+
+/// One shot's numbers for `shots` (NaN for a bounce that did not happen).
+fn row(r: &ShotReport) -> [f64; 12] {
+    let nan = f64::NAN;
+    let b = r.bounces.first();
+    let s = r.end.state;
+    [
+        b.map_or(nan, |b| b.t),
+        b.map_or(nan, |b| b.x),
+        b.map_or(nan, |b| b.v_in),
+        b.map_or(nan, |b| b.angle_in),
+        b.map_or(nan, |b| b.v_out),
+        b.map_or(nan, |b| b.angle_out),
+        b.map_or(nan, |b| b.spin_out),
+        s.t,
+        s.x,
+        s.y,
+        s.vx,
+        s.vy,
+    ]
+}
+
+/// Many shots: `height`, `speed`, `elevation` and `spin` numbers or numpy arrays broadcast
+/// together; a dict of arrays of the broadcast shape: the first bounce's `landing_t`,
+/// `landing_x`, `v_in`, `angle_in`, `v_out`, `angle_out`, `spin_out` (NaN with
+/// bounces=0) and the end's `end_t`, `end_x`, `end_y`, `end_vx`, `end_vy`. Element i is what
+/// `shot` gives for the i-th values; the first element without an answer raises, named.
+#[pyfunction]
+#[pyo3(signature = (preset="tennis", *, height, speed, friction, elevation=None, spin=None, bounces=1, distance=None, time=None, air_density=1.204, drag_coefficient=None, lift_coefficient=None, spin_decay=None, tangential_stiffness=None, inertia_factor=None, law=None, params=None))]
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn shots<'py>(
+    py: Python<'py>,
+    preset: &str,
+    height: Bound<'py, PyAny>,
+    speed: Bound<'py, PyAny>,
+    friction: f64,
+    elevation: Option<Bound<'py, PyAny>>,
+    spin: Option<Bound<'py, PyAny>>,
+    bounces: usize,
+    distance: Option<f64>,
+    time: Option<f64>,
+    air_density: f64,
+    drag_coefficient: Option<f64>,
+    lift_coefficient: Option<f64>,
+    spin_decay: Option<f64>,
+    tangential_stiffness: Option<f64>,
+    inertia_factor: Option<f64>,
+    law: Option<&str>,
+    params: Option<&str>,
+) -> PyResult<Bound<'py, PyDict>> {
+    let no = overrides(None, None, None, None, None, None);
+    let ball = overridden_ball(preset, params, law, None, &no)?;
+    let common = Common {
+        friction,
+        bounces,
+        distance,
+        time,
+        air_density,
+        drag_coefficient,
+        lift_coefficient,
+        spin_decay,
+        tangential_stiffness,
+        inertia_factor,
+    };
+    let zero = || 0.0_f64.into_pyobject(py).map(|z| z.into_any());
+    let elevation = elevation.map_or_else(zero, Ok)?;
+    let spin = spin.map_or_else(zero, Ok)?;
+    let np = py.import("numpy")?;
+    let b = np.call_method1("broadcast_arrays", (height, speed, elevation, spin))?;
+    let shape = b.get_item(0)?.getattr("shape")?;
+    let cols: Vec<Vec<f64>> = (0..4)
+        .map(|k| {
+            let a = np.call_method1("asarray", (b.get_item(k)?, "float64"))?;
+            a.call_method0("ravel")?.call_method0("tolist")?.extract()
+        })
+        .collect::<PyResult<_>>()?;
+    let n = cols[0].len();
+    let rows: Result<Vec<[f64; 12]>, (usize, bouncelab::BallError)> = py.detach(|| {
+        (0..n)
+            .into_par_iter()
+            .map(|i| {
+                let launch = Launch {
+                    height: cols[0][i],
+                    speed: cols[1][i],
+                    elevation_deg: cols[2][i],
+                    spin: cols[3][i],
+                };
+                ball.shot(&common.spec(launch, 0))
+                    .map(|r| row(&r))
+                    .map_err(|e| (i, e))
+            })
+            .collect()
+    });
+    let rows = rows.map_err(|(i, e)| {
+        let err = error(e);
+        PyValueError::new_err(format!("element {i}: {}", err.value(py)))
+    })?;
+    let d = PyDict::new(py);
+    for (k, name) in SHOTS.iter().enumerate() {
+        let a = array(py, rows.iter().map(|r| r[k]).collect());
+        d.set_item(*name, a.call_method1("reshape", (&shape,))?)?;
+    }
+    Ok(d)
+}

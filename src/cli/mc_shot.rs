@@ -1,0 +1,223 @@
+//! `bouncelab mc --shot`: a shot's tolerances (docs/flight.md §7): the launch of `shot`'s
+//! flags spread by `--vary speed=2%,spin=30,elevation=0.5,height=0.01` (speed relative; spin
+//! rad/s, elevation degrees, height m, absolute), and the spread of where it lands and how
+//! it leaves.
+
+use super::ball::BallArgs;
+use super::oblique::TangentialArgs;
+use super::output::{self, given, table};
+use crate::api::{BallError, ShotMcReport, ShotMcSpec, ShotSpec, ShotSpread};
+use crate::flight::{Ends, Launch};
+use clap::Args;
+use std::io::Write;
+
+/// `shot`'s flags, for `mc --shot`.
+#[derive(Debug, Clone, Args)]
+pub struct ShotMcArgs {
+    /// Spread a shot's launch (`shot`'s flags below) instead of the ball: --vary takes speed
+    /// (relative: 2% or 0.02), spin (rad/s), elevation (degrees), height (m)
+    #[arg(long)]
+    pub shot: bool,
+    /// With --shot: the centre's height at launch, m
+    #[arg(long, value_name = "H", requires = "shot", value_parser = super::number::number, allow_hyphen_values = true)]
+    pub height: Option<f64>,
+    /// With --shot: launch speed, m/s
+    #[arg(long, value_name = "V", requires = "shot", value_parser = super::number::number, allow_hyphen_values = true)]
+    pub speed: Option<f64>,
+    /// With --shot: launch angle above the horizontal, degrees
+    #[arg(long, value_name = "DEG", requires = "shot", value_parser = super::number::number, allow_hyphen_values = true)]
+    pub elevation: Option<f64>,
+    /// With --shot: spin, rad/s (> 0 topspin)
+    #[arg(long, value_name = "RAD_PER_S", requires = "shot", value_parser = super::number::number, allow_hyphen_values = true)]
+    pub spin: Option<f64>,
+    /// With --shot: the surface's friction μ
+    #[arg(long, value_name = "MU", requires = "shot", value_parser = super::number::number, allow_hyphen_values = true)]
+    pub friction: Option<f64>,
+    #[command(flatten)]
+    pub tangential: TangentialArgs,
+    /// With --shot: bounces before the shot may end on the surface
+    #[arg(long, value_name = "N", requires = "shot")]
+    pub bounces: Option<usize>,
+    /// With --shot: end at this x, m
+    #[arg(long, value_name = "D", requires = "shot", value_parser = super::number::number, allow_hyphen_values = true)]
+    pub distance: Option<f64>,
+    /// With --shot: end at this time, s
+    #[arg(long, value_name = "T", requires = "shot", value_parser = super::number::number, allow_hyphen_values = true)]
+    pub time: Option<f64>,
+    /// With --shot: air density, kg/m³
+    #[arg(long, value_name = "RHO", requires = "shot", value_parser = super::number::number, allow_hyphen_values = true)]
+    pub air_density: Option<f64>,
+    /// With --shot: fixed C_D
+    #[arg(long, value_name = "CD", requires = "shot", value_parser = super::number::number, allow_hyphen_values = true)]
+    pub drag_coefficient: Option<f64>,
+    /// With --shot: fixed C_L
+    #[arg(long, value_name = "CL", requires = "shot", value_parser = super::number::number, allow_hyphen_values = true)]
+    pub lift_coefficient: Option<f64>,
+    /// With --shot: spin decay time τ, s (0: none)
+    #[arg(long, value_name = "TAU", requires = "shot", value_parser = super::number::number, allow_hyphen_values = true)]
+    pub spin_decay: Option<f64>,
+}
+
+/// `--vary` of a shot: speed relative, the others absolute.
+fn parse_vary(text: &str) -> anyhow::Result<ShotSpread> {
+    let mut s = ShotSpread::default();
+    for item in text.split(',').map(str::trim).filter(|t| !t.is_empty()) {
+        let (name, value) = item
+            .split_once('=')
+            .ok_or_else(|| anyhow::anyhow!("invalid --vary: '{item}' (NAME=SPREAD)"))?;
+        let (v, percent) = match value.trim().strip_suffix('%') {
+            Some(p) => (p, true),
+            None => (value.trim(), false),
+        };
+        let x: f64 = crate::text::parse::number(v)
+            .map_err(|_| anyhow::anyhow!("invalid --vary: '{item}' (SPREAD is a number)"))?;
+        let x = if percent { x / 100.0 } else { x };
+        match (name.trim(), percent) {
+            ("speed", _) => s.speed = x,
+            ("spin", false) => s.spin = x,
+            ("elevation", false) => s.elevation = x,
+            ("height", false) => s.height = x,
+            ("spin" | "elevation" | "height", true) => anyhow::bail!(
+                "invalid --vary: '{item}' (with --shot only speed takes a percentage; spin is \
+                 rad/s, elevation degrees, height m)"
+            ),
+            (other, _) => anyhow::bail!(
+                "invalid --vary: '{other}' (with --shot: speed, spin, elevation or height)"
+            ),
+        }
+    }
+    Ok(s)
+}
+
+fn required(x: Option<f64>, flag: &str) -> anyhow::Result<f64> {
+    x.ok_or_else(|| anyhow::anyhow!("mc --shot needs {flag}"))
+}
+
+/// What `mc` gives `mc --shot`: its own flags' values, and those that do not go with it.
+pub struct Mc<'a> {
+    /// The ball.
+    pub ball: &'a BallArgs,
+    /// `--vary`.
+    pub vary: &'a str,
+    /// `--dist uniform`.
+    pub uniform: bool,
+    /// `--samples`.
+    pub samples: usize,
+    /// `--seed`.
+    pub seed: u64,
+    /// `--format json`.
+    pub json: bool,
+    /// (given, flag) of the flags refused with `--shot`.
+    pub refused: &'a [(bool, &'static str)],
+}
+
+pub fn run(s: &ShotMcArgs, a: &Mc<'_>, out: &mut dyn Write) -> anyhow::Result<()> {
+    if let Some((_, flag)) = a.refused.iter().find(|(given, _)| *given) {
+        anyhow::bail!("{flag} does not go with --shot");
+    }
+    let uniform = a.uniform;
+    super::ball::check_overrides(&a.ball.set, None, None)?;
+    let ball = a.ball.resolve(None)?;
+    let shot = ShotSpec {
+        launch: Launch {
+            height: required(s.height, "--height")?,
+            speed: required(s.speed, "--speed")?,
+            elevation_deg: s.elevation.unwrap_or(0.0),
+            spin: s.spin.unwrap_or(0.0),
+        },
+        ends: Ends {
+            bounces: s.bounces.unwrap_or(1),
+            distance: s.distance,
+            time: s.time,
+        },
+        friction: required(s.friction, "--friction")?,
+        tangential_stiffness: s.tangential.tangential_stiffness,
+        inertia_factor: s.tangential.inertia_factor,
+        air_density: s.air_density.unwrap_or(crate::drop::flight::AIR_DENSITY),
+        drag_coefficient: s.drag_coefficient,
+        lift_coefficient: s.lift_coefficient,
+        spin_decay: s.spin_decay,
+        samples: 0,
+    };
+    let spec = ShotMcSpec {
+        shot,
+        spread: parse_vary(a.vary)?,
+        uniform,
+        samples: a.samples,
+        seed: a.seed,
+    };
+    let r = ball
+        .shot_mc(&spec)
+        .map_err(|e: BallError| anyhow::anyhow!("{e}"))?;
+    if a.json {
+        output::json(out, &json(&ball, &r))?
+    } else {
+        text(out, &ball.label(), &r)?
+    }
+    Ok(())
+}
+
+fn json(ball: &crate::api::Ball, r: &ShotMcReport) -> serde_json::Value {
+    let stats: serde_json::Map<String, serde_json::Value> = r
+        .stats
+        .iter()
+        .map(|(k, s)| (k.to_string(), serde_json::to_value(s).unwrap_or_default()))
+        .collect();
+    serde_json::json!({
+        "preset": ball.name,
+        "shot": true,
+        "samples": r.samples,
+        "seed": r.seed,
+        "dist": r.dist,
+        "vary": r.vary,
+        "failed": r.failed,
+        "stats": stats,
+    })
+}
+
+fn text(out: &mut dyn Write, label: &str, r: &ShotMcReport) -> std::io::Result<()> {
+    let v = r.vary;
+    writeln!(
+        out,
+        "{label}: {} shots, seed {}, {} spread: speed {} %, spin {} rad/s, elevation {}°, height {} m",
+        r.samples,
+        r.seed,
+        r.dist,
+        given(v.speed * 100.0, 4),
+        given(v.spin, 4),
+        given(v.elevation, 4),
+        given(v.height, 4)
+    )?;
+    let mut rows = vec![
+        ["", "mean", "sd", "2.5 %", "median", "97.5 %"]
+            .map(String::from)
+            .to_vec(),
+    ];
+    let names = [
+        "landing x (m)",
+        "landing t (s)",
+        "v out (m/s)",
+        "angle out (°)",
+        "spin out (rad/s)",
+        "end x (m)",
+    ];
+    for ((_, s), name) in r.stats.iter().zip(names) {
+        rows.push(vec![
+            name.to_string(),
+            given(s.mean, 5),
+            given(s.sd, 3),
+            given(s.q025, 5),
+            given(s.q50, 5),
+            given(s.q975, 5),
+        ]);
+    }
+    table(out, "", &rows)?;
+    if r.failed > 0 {
+        writeln!(
+            out,
+            "{} samples drawn out of the shot's domain left out",
+            r.failed
+        )?;
+    }
+    Ok(())
+}

@@ -1,0 +1,314 @@
+//! `bouncelab shot`: a ball launched, its flight with drag and Magnus lift, its bounces on a
+//! surface by `oblique`, and where it is at the end (docs/flight.md): text, one JSON object
+//! or CSV, and the side view as SVG.
+
+use super::ball::BallArgs;
+use super::oblique::TangentialArgs;
+use super::output::{self, csv_row, given, num, table};
+use super::outputs::{check as check_writable, report_then_commit};
+use crate::api::{Ball, BallHeader, ShotReport, ShotSpec};
+use crate::atomic::Outputs;
+use crate::figure::svg;
+use crate::flight::{Ends, Launch};
+use clap::{Args, ValueEnum};
+use serde::Serialize;
+use std::io::Write;
+use std::path::PathBuf;
+
+/// Samples of the path drawn by --svg-out when --samples does not say.
+const FIGURE_SAMPLES: usize = 400;
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum ShotFormat {
+    Text,
+    Json,
+    Csv,
+}
+
+#[derive(Debug, Clone, Args)]
+pub struct ShotArgs {
+    #[command(flatten)]
+    pub ball: BallArgs,
+    /// Height of the ball's centre at launch, m (at least its radius)
+    #[arg(long, value_name = "H", value_parser = super::number::number, allow_hyphen_values = true)]
+    pub height: f64,
+    /// Launch speed |v|, m/s
+    #[arg(long, value_name = "V", value_parser = super::number::number, allow_hyphen_values = true)]
+    pub speed: f64,
+    /// Launch angle above the horizontal, degrees (negative: downward), −90 … 90
+    #[arg(long, value_name = "DEG", default_value_t = 0.0, value_parser = super::number::number, allow_hyphen_values = true)]
+    pub elevation: f64,
+    /// Spin ω, rad/s (> 0 topspin, which pushes a ball moving forward down)
+    #[arg(long, value_name = "RAD_PER_S", default_value_t = 0.0, value_parser = super::number::number, allow_hyphen_values = true)]
+    pub spin: f64,
+    /// Coulomb friction coefficient μ ≥ 0 of the surface
+    #[arg(long, value_name = "MU", value_parser = super::number::number, allow_hyphen_values = true)]
+    pub friction: f64,
+    #[command(flatten)]
+    pub tangential: TangentialArgs,
+    /// Bounces before the shot may end on the surface (0 … 100)
+    #[arg(long, value_name = "N", default_value_t = 1)]
+    pub bounces: usize,
+    /// End where the ball reaches this x, m from the launch
+    #[arg(long, value_name = "D", value_parser = super::number::number, allow_hyphen_values = true)]
+    pub distance: Option<f64>,
+    /// End at this time, s after the launch
+    #[arg(long, value_name = "T", value_parser = super::number::number, allow_hyphen_values = true)]
+    pub time: Option<f64>,
+    /// Air density ρ, kg/m³ (0: vacuum)
+    #[arg(long, value_name = "RHO", default_value_t = crate::drop::flight::AIR_DENSITY, value_parser = super::number::number, allow_hyphen_values = true)]
+    pub air_density: f64,
+    /// Fixed drag coefficient C_D [default: the ball's published C_D(Re)]
+    #[arg(long, value_name = "CD", value_parser = super::number::number, allow_hyphen_values = true)]
+    pub drag_coefficient: Option<f64>,
+    /// Fixed lift coefficient C_L while spinning [default: the ball's published C_L(S)]
+    #[arg(long, value_name = "CL", value_parser = super::number::number, allow_hyphen_values = true)]
+    pub lift_coefficient: Option<f64>,
+    /// Spin decay time τ, s: dω/dt = −ω/τ; 0 for none [default: the ball's published decay]
+    #[arg(long, value_name = "TAU", value_parser = super::number::number, allow_hyphen_values = true)]
+    pub spin_decay: Option<f64>,
+    /// Trajectory samples (t, x, y, vx, vy, spin), evenly spaced in time (2 … 100000)
+    #[arg(long, value_name = "N")]
+    pub samples: Option<usize>,
+    /// Output format (csv: the trajectory with --samples, else one row per bounce)
+    #[arg(long, value_enum, default_value = "text")]
+    pub format: ShotFormat,
+    /// Write the side view (path, surface, bounces) as SVG
+    #[arg(long, value_name = "FILE")]
+    pub svg_out: Option<PathBuf>,
+    /// Overwrite an existing --svg-out file
+    #[arg(long)]
+    pub force: bool,
+}
+
+impl ShotArgs {
+    fn spec(&self) -> ShotSpec {
+        ShotSpec {
+            launch: Launch {
+                height: self.height,
+                speed: self.speed,
+                elevation_deg: self.elevation,
+                spin: self.spin,
+            },
+            ends: Ends {
+                bounces: self.bounces,
+                distance: self.distance,
+                time: self.time,
+            },
+            friction: self.friction,
+            tangential_stiffness: self.tangential.tangential_stiffness,
+            inertia_factor: self.tangential.inertia_factor,
+            air_density: self.air_density,
+            drag_coefficient: self.drag_coefficient,
+            lift_coefficient: self.lift_coefficient,
+            spin_decay: self.spin_decay,
+            samples: self.samples.unwrap_or(0),
+        }
+    }
+}
+
+/// `shot --format json`: the ball, the surface and the answer.
+#[derive(Serialize)]
+struct Report<'a> {
+    #[serde(flatten)]
+    ball: BallHeader<'a>,
+    radius: f64,
+    friction: f64,
+    #[serde(flatten)]
+    answer: &'a ShotReport,
+}
+
+pub fn run(a: &ShotArgs, out: &mut dyn Write) -> anyhow::Result<()> {
+    super::ball::check_overrides(&a.ball.set, None, None)?;
+    if a.samples == Some(0) {
+        return Err(crate::api::BallError::Samples(0).into());
+    }
+    let ball = a.ball.resolve(None)?;
+    let spec = a.spec();
+    let paths: Vec<&std::path::Path> = a.svg_out.iter().map(PathBuf::as_path).collect();
+    check_writable(&paths, a.force)?;
+    let shot = ball.shot(&spec).map_err(flag_named)?;
+    let mut files = Outputs::new(a.force);
+    if let Some(p) = &a.svg_out {
+        let drawn = if shot.trajectory.is_empty() {
+            ball.shot(&ShotSpec {
+                samples: FIGURE_SAMPLES,
+                ..spec
+            })?
+        } else {
+            shot.clone()
+        };
+        let fig = crate::figure::shot::side_view(&drawn, ball.radius(), title(&spec), ball.label());
+        files.text(p, &svg::render(&fig)?)?;
+    }
+    let mut report = Vec::new();
+    match a.format {
+        ShotFormat::Json => output::json(
+            &mut report,
+            &Report {
+                ball: ball.header(),
+                radius: ball.radius(),
+                friction: a.friction,
+                answer: &shot,
+            },
+        )?,
+        ShotFormat::Csv if !shot.trajectory.is_empty() => trajectory_csv(&mut report, &shot)?,
+        ShotFormat::Csv => bounces_csv(&mut report, &shot)?,
+        ShotFormat::Text => text(&mut report, &ball, &spec, &shot)?,
+    }
+    report_then_commit(out, &report, files)?;
+    Ok(())
+}
+
+/// A value refused by the library, named by its flag: `invalid --drag-coefficient: …`.
+fn flag_named(e: crate::api::BallError) -> anyhow::Error {
+    match &e {
+        crate::api::BallError::Invalid { field, value, .. } if *field == "shot" => {
+            anyhow::anyhow!(
+                "the ball flies for more than {} s without landing (a lift that holds it up?): \
+                 give --time or --distance",
+                given(*value, 6)
+            )
+        }
+        crate::api::BallError::Invalid { field, .. } => {
+            let flag = format!("--{}", field.replace('_', "-"));
+            anyhow::anyhow!("{}", e.to_string().replacen(field, &flag, 1))
+        }
+        _ => e.into(),
+    }
+}
+
+fn title(s: &ShotSpec) -> String {
+    let l = s.launch;
+    format!(
+        "shot from {} m at {} m/s, {}°, {} rad/s; μ = {}",
+        given(l.height, 4),
+        given(l.speed, 4),
+        given(l.elevation_deg, 4),
+        given(l.spin, 4),
+        given(s.friction, 4)
+    )
+}
+
+/// Columns of `shot --format csv` without --samples (one row per bounce).
+pub const BOUNCE_COLUMNS: [&str; 12] = [
+    "t",
+    "x",
+    "v_in",
+    "angle_in",
+    "spin_in",
+    "v_out",
+    "angle_out",
+    "spin_out",
+    "cor_normal",
+    "contact_time",
+    "slid_throughout",
+    "warnings",
+];
+
+/// Columns of `shot --format csv --samples N`.
+pub const TRAJECTORY_COLUMNS: [&str; 6] = ["t", "x", "y", "vx", "vy", "spin"];
+
+fn bounces_csv(out: &mut dyn Write, s: &ShotReport) -> std::io::Result<()> {
+    csv_row(out, &BOUNCE_COLUMNS)?;
+    for b in &s.bounces {
+        let mut row: Vec<String> = [
+            b.t,
+            b.x,
+            b.v_in,
+            b.angle_in,
+            b.spin_in,
+            b.v_out,
+            b.angle_out,
+            b.spin_out,
+            b.cor_normal,
+            b.contact_time,
+        ]
+        .map(num)
+        .to_vec();
+        row.push(b.slid_throughout.to_string());
+        row.push(output::warnings_cell(&b.warnings));
+        csv_row(out, &row)?;
+    }
+    Ok(())
+}
+
+fn trajectory_csv(out: &mut dyn Write, s: &ShotReport) -> std::io::Result<()> {
+    csv_row(out, &TRAJECTORY_COLUMNS)?;
+    for p in &s.trajectory {
+        csv_row(out, &[p.t, p.x, p.y, p.vx, p.vy, p.spin].map(num))?;
+    }
+    Ok(())
+}
+
+fn text(out: &mut dyn Write, ball: &Ball, spec: &ShotSpec, s: &ShotReport) -> std::io::Result<()> {
+    writeln!(out, "{}: {}", ball.label(), title(spec))?;
+    writeln!(
+        out,
+        "air: ρ = {} kg/m³; {}",
+        given(s.aero.air_density, 4),
+        s.aero.source
+    )?;
+    writeln!(out)?;
+    let mut rows = vec![
+        [
+            "bounce",
+            "t (s)",
+            "x (m)",
+            "v in",
+            "angle in (°)",
+            "spin in",
+            "v out",
+            "angle out (°)",
+            "spin out",
+            "slid",
+        ]
+        .map(String::from)
+        .to_vec(),
+    ];
+    for (k, b) in s.bounces.iter().enumerate() {
+        rows.push(vec![
+            (k + 1).to_string(),
+            given(b.t, 4),
+            given(b.x, 5),
+            given(b.v_in, 5),
+            given(b.angle_in, 4),
+            given(b.spin_in, 4),
+            given(b.v_out, 5),
+            given(b.angle_out, 4),
+            given(b.spin_out, 4),
+            if b.slid_throughout {
+                "throughout"
+            } else {
+                "then gripped"
+            }
+            .into(),
+        ]);
+    }
+    if !s.bounces.is_empty() {
+        table(out, "", &rows)?;
+        writeln!(out, "(speeds m/s, spins rad/s, > 0 topspin)")?;
+        writeln!(out)?;
+    }
+    let e = s.end.state;
+    let why = match s.end.reason {
+        crate::flight::EndReason::Landing => "lands",
+        crate::flight::EndReason::Distance => "reaches the distance",
+        crate::flight::EndReason::Time => "reaches the time",
+    };
+    writeln!(
+        out,
+        "end ({why}): t = {} s, x = {} m, height {} m, speed {} m/s (v_x {}, v_y {}), spin {} rad/s",
+        given(e.t, 4),
+        given(e.x, 5),
+        given(e.y, 4),
+        given(s.end.speed, 4),
+        given(e.vx, 4),
+        given(e.vy, 4),
+        given(e.spin, 4)
+    )?;
+    for b in &s.bounces {
+        output::warning_lines(out, &b.warnings)?;
+    }
+    Ok(())
+}

@@ -1,0 +1,70 @@
+//! A shot's Monte Carlo (`Ball::shot_mc`, `bouncelab mc --shot`; docs/flight.md §7).
+
+use bouncelab::Ball;
+use bouncelab::api::{ShotMcSpec, ShotSpec, ShotSpread};
+
+fn serve() -> ShotSpec {
+    ShotSpec::new(2.8, 50.0, -6.0, 200.0, 0.6)
+}
+
+fn spec(spread: ShotSpread, samples: usize, seed: u64) -> ShotMcSpec {
+    ShotMcSpec {
+        shot: serve(),
+        spread,
+        uniform: false,
+        samples,
+        seed,
+    }
+}
+
+#[test]
+fn without_spread_every_sample_is_the_nominal_shot() {
+    let ball = Ball::from_preset("tennis").unwrap();
+    let nominal = ball.shot(&serve()).unwrap();
+    let r = ball.shot_mc(&spec(ShotSpread::default(), 50, 3)).unwrap();
+    let (name, x) = r.stats[0];
+    assert_eq!(name, "landing_x");
+    assert_eq!((x.min, x.max), (nominal.bounces[0].x, nominal.bounces[0].x));
+    // the mean of 50 equal numbers, summed, is that number to rounding
+    assert!(x.sd <= 1e-13 * x.mean, "{x:?}");
+    assert_eq!(r.stats[5].1.q50, nominal.end.state.x);
+}
+
+#[test]
+fn a_seed_gives_one_answer_and_the_spread_brackets_the_nominal() {
+    let ball = Ball::from_preset("tennis").unwrap();
+    let s = ShotSpread {
+        speed: 0.02,
+        spin: 30.0,
+        ..ShotSpread::default()
+    };
+    let a = ball.shot_mc(&spec(s, 400, 7)).unwrap();
+    let b = ball.shot_mc(&spec(s, 400, 7)).unwrap();
+    let c = ball.shot_mc(&spec(s, 400, 8)).unwrap();
+    assert_eq!(a, b);
+    assert_ne!(a.stats[0].1.mean, c.stats[0].1.mean);
+    let nominal = ball.shot(&serve()).unwrap().bounces[0].x;
+    let x = a.stats[0].1;
+    assert!(x.q025 < nominal && nominal < x.q975, "{x:?} vs {nominal}");
+    assert!(x.sd > 0.0 && a.failed == 0);
+    // sample i is the nominal shot with its own draws: a shot of its own gives its numbers
+    let one = spec(s, 400, 7).sample(11);
+    assert_ne!(one.launch.speed, 50.0);
+    assert_eq!(one.launch.elevation_deg, -6.0);
+}
+
+#[test]
+fn bad_spreads_are_refused_by_name() {
+    let ball = Ball::from_preset("tennis").unwrap();
+    let bad = ShotSpread {
+        spin: -1.0,
+        ..ShotSpread::default()
+    };
+    let e = ball.shot_mc(&spec(bad, 10, 0)).unwrap_err().to_string();
+    assert!(e.contains("invalid spin"), "{e}");
+    let e = ball
+        .shot_mc(&spec(ShotSpread::default(), 0, 0))
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("invalid samples"), "{e}");
+}
