@@ -54,6 +54,10 @@ pub struct FitArgs {
     /// spin_out); fits friction and tangential_stiffness (and inertia_factor with spin_out)
     #[arg(long, value_name = "FILE")]
     pub oblique: Option<PathBuf>,
+    /// With --oblique: fit the tangential dashpot c_t too, starting from this value, kg/s
+    /// (docs/oblique.md §9) [default: no dashpot]
+    #[arg(long, value_name = "KG_PER_S", requires = "oblique", value_parser = super::number::number, allow_hyphen_values = true)]
+    pub tangential_damping: Option<f64>,
     /// Drop tests: correct for quadratic air drag with this drag coefficient (≈ 0.47 for a
     /// smooth sphere) [default: no drag]
     #[arg(long, value_name = "CD", value_parser = super::number::number, allow_hyphen_values = true)]
