@@ -205,7 +205,15 @@ fn fit_oblique_fits_c_t_from_a_start() {
     assert_eq!(f(e, "value"), c);
     assert!(e["ci95"].is_array());
     bad(
-        &["fit", "--preset", "tennis", "--cor", "0.7", "--tangential-damping", "4"],
+        &[
+            "fit",
+            "--preset",
+            "tennis",
+            "--cor",
+            "0.7",
+            "--tangential-damping",
+            "4",
+        ],
         &["--oblique"],
     );
 }

@@ -93,7 +93,10 @@ fn recovers_mu_k_t_and_c_t_from_noisy_bounces() {
     }
     // at 95 % each interval misses a data set of 6 with chance 26 %, two with 3 %
     for (j, c) in covered.into_iter().enumerate() {
-        assert!(c + 1 >= seeds as usize, "parameter {j}: {c} of {seeds} covered");
+        assert!(
+            c + 1 >= seeds as usize,
+            "parameter {j}: {c} of {seeds} covered"
+        );
     }
 }
 

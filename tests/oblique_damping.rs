@@ -115,8 +115,14 @@ fn the_peak_friction_force_is_the_historys_largest_with_a_dashpot() {
             let h = r.history.as_ref().unwrap();
             let sampled = h.friction_force.iter().fold(0.0f64, |m, f| m.max(f.abs()));
             let peak = r.max_friction_force;
-            assert!(sampled <= peak * (1.0 + 1e-12), "{angle}°: {sampled} > {peak}");
-            assert!(sampled >= peak * (1.0 - 1e-6), "{angle}°: {sampled} ≪ {peak}");
+            assert!(
+                sampled <= peak * (1.0 + 1e-12),
+                "{angle}°: {sampled} > {peak}"
+            );
+            assert!(
+                sampled >= peak * (1.0 - 1e-6),
+                "{angle}°: {sampled} ≪ {peak}"
+            );
         }
     }
 }
@@ -136,7 +142,10 @@ fn a_gripping_tennis_bounce_reaches_the_measured_tangential_cor() {
         let (ex0, ex) = (e0.cor_tangential.unwrap(), r.cor_tangential.unwrap());
         assert!(ex0 > 0.3, "{angle}°: undamped e_x {ex0}");
         assert!(r.grip_time > 0.0, "{angle}°: grips");
-        assert!((0.1..=0.2).contains(&ex), "{angle}°: e_x {ex} with c_t {ct}");
+        assert!(
+            (0.1..=0.2).contains(&ex),
+            "{angle}°: e_x {ex} with c_t {ct}"
+        );
     }
 }
 

@@ -135,7 +135,8 @@ pub fn run(a: &ObliqueArgs, out: &mut dyn Write) -> anyhow::Result<()> {
                 crate::model::contact::ContactLaw::Linear => String::new(),
                 law => format!(", {law} law"),
             };
-            let dashpot = damping.map_or(String::new(), |c| format!(", c_t = {} kg/s", given(c, 4)));
+            let dashpot =
+                damping.map_or(String::new(), |c| format!(", c_t = {} kg/s", given(c, 4)));
             writeln!(
                 out,
                 "{}{law}: μ = {}, K_t = {} N/m{dashpot}, κ = {}, R = {} mm",
@@ -294,7 +295,11 @@ fn text(out: &mut dyn Write, r: &ObliqueResponse) -> std::io::Result<()> {
     ];
     table(out, "", &lines)?;
     if let Some(d) = e.tangential_damping {
-        writeln!(out, "tangential dashpot  {} J lost while gripping", human(d, 4))?;
+        writeln!(
+            out,
+            "tangential dashpot  {} J lost while gripping",
+            human(d, 4)
+        )?;
     }
     if let Some(h) = &r.history {
         writeln!(out)?;

@@ -12,6 +12,7 @@
 
 mod closed;
 pub mod court;
+mod damped;
 mod energy;
 mod frictions;
 mod input;
