@@ -3,13 +3,19 @@
 //! force, and the spring LAMMPS's linear_history resets onto the cap while sliding.
 
 use super::Scaled;
-use super::tangential::Phase;
 
-impl Phase {
+/// A damped stick's start: ũ0 and ṽ_c0 at δ = 0.
+#[derive(Debug, Clone, Copy)]
+pub(super) struct Start {
+    pub u0: f64,
+    pub vc0: f64,
+}
+
+impl Start {
     /// (ũ, ṽ_c) of a damped stick δ after its start: with C = cos ω_d δ, S = sin(ω_d δ)/ω_d
     /// (cosh and sinh(γδ)/γ when overdamped, 1 and δ when critical, `damped_basis`),
     /// ũ = e^{−βδ}(ũ0 C + (ṽ0 + βũ0) S), ṽ_c = e^{−βδ}(ṽ0 C − (βṽ0 + ω̃_t²ũ0) S).
-    pub(crate) fn damped_state(&self, s: &Scaled, delta: f64) -> (f64, f64) {
+    pub(super) fn state(&self, s: &Scaled, delta: f64) -> (f64, f64) {
         let (e, c, sn) = damped_basis(s, delta);
         let (u0, v0, b) = (self.u0, self.vc0, s.beta);
         let w2 = s.omega_t * s.omega_t;
@@ -23,12 +29,12 @@ impl Phase {
     /// so f = e^{−βδ}(f0 C + (f0' + βf0) S) with f0' = k̃ṽ0 − c̃g f0, and its first extremum
     /// (f' = 0: f0' C = (βf0' + ω̃_t²f0) S) is its largest crest, the later ones decaying; else
     /// an end.
-    pub(super) fn damped_max_force(&self, s: &Scaled) -> f64 {
+    /// Over a stick of length `len`.
+    pub(super) fn max_force(&self, s: &Scaled, len: f64) -> f64 {
         let f_at = |d: f64| {
-            let (u, vc) = self.damped_state(s, d);
+            let (u, vc) = self.state(s, d);
             (s.kt * u + s.ct * vc).abs()
         };
-        let len = self.end - self.start;
         let f0 = s.kt * self.u0 + s.ct * self.vc0;
         let d0 = s.kt * self.vc0 - s.ct * s.g * f0;
         let q = s.beta * d0 + s.omega_t * s.omega_t * f0;

@@ -10,7 +10,7 @@
 //! f = k̃ũ + c̃ṽ_c, a slide holds ũ = (sμF̄ − c̃ṽ_c)/k̃, and the switches are |f| = μF̄ and
 //! sṽ_c < μ(F̄' + c̃gF̄)/k̃. With c̃ = 0 every expression is the undamped one, bit for bit.
 
-use super::damped::slip_spring;
+use super::damped::{self, slip_spring};
 use super::{MAX_PHASES, NormalMotion, ObliqueError, Scaled};
 use crate::solver::exact::PathPoint;
 use crate::solver::roots::{brent, newton_bracketed_from};
@@ -54,6 +54,18 @@ impl Phase {
                 let vc = self.vc0 - sg * s.mu * s.g * (self.vel0 - p.velocity);
                 (slip_spring(s, sg, p.force, vc), vc)
             }
+        }
+    }
+
+    /// (ũ, ṽ_c) of a damped stick δ after its start (`damped::Start::state`).
+    pub(crate) fn damped_state(&self, s: &Scaled, delta: f64) -> (f64, f64) {
+        self.damped_start().state(s, delta)
+    }
+
+    fn damped_start(&self) -> damped::Start {
+        damped::Start {
+            u0: self.u0,
+            vc0: self.vc0,
         }
     }
 
@@ -120,7 +132,7 @@ impl Phase {
         ends: (PathPoint, PathPoint),
     ) -> f64 {
         match self.mode {
-            Mode::Stick if s.ct > 0.0 => self.damped_max_force(s),
+            Mode::Stick if s.ct > 0.0 => self.damped_start().max_force(s, self.end - self.start),
             Mode::Stick => {
                 let w = s.omega_t;
                 let (a, b) = (self.u0, self.vc0 / w);
