@@ -1,4 +1,4 @@
-//! Two balls that both deform (docs/targets.md §6, `target::pair`): identical balls meeting
+//! Two balls that both deform (docs/targets.md §8, `target::pair`): identical balls meeting
 //! head-on at ±v bounce exactly as one of them off a rigid wall at v, for every preset and
 //! every law; unequal balls on the linear law against an independent integration of the two
 //! bodies in SI.

@@ -1,4 +1,4 @@
-//! Two balls that both deform (docs/targets.md §6): ball 1 – its contact element – its
+//! Two balls that both deform (docs/targets.md §8): ball 1 – its contact element – its
 //! (c₁ ∥ K_r1) – ball 2's (c₂ ∥ K_r2) – ball 2's contact element – ball 2, every element
 //! massless, so one force F runs through all. In ball 1's units over the reduced mass
 //! (docs/model.md §5 with m* and the closing speed v_c: τ = ω t, ω = √(K_p1/m*)), with
