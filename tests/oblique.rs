@@ -197,6 +197,7 @@ fn ok() -> Oblique {
         tangential_stiffness: 2e4,
         inertia_factor: 0.55,
         radius: R,
+        tangential_damping: 0.0,
     }
 }
 

@@ -101,6 +101,18 @@ impl Ball {
         spec: &ObliqueSpec,
         samples: usize,
     ) -> Result<ObliqueResponse, BallError> {
+        self.oblique_damped(spec, None, samples)
+    }
+
+    /// [`Ball::oblique`] with a tangential dashpot c_t (kg/s) in parallel with K_t, as LAMMPS's
+    /// linear_history applies it (docs/oblique.md §1; `None` or 0: none), as `bouncelab
+    /// oblique --tangential-damping`.
+    pub fn oblique_damped(
+        &self,
+        spec: &ObliqueSpec,
+        tangential_damping: Option<f64>,
+        samples: usize,
+    ) -> Result<ObliqueResponse, BallError> {
         if samples == 1 || samples > super::MAX_SAMPLES {
             return Err(BallError::Samples(samples));
         }
@@ -115,7 +127,8 @@ impl Ball {
                 .ok_or_else(|| no("tangential_stiffness"))?,
         };
         let kappa = spec.inertia_factor.unwrap_or_else(|| self.inertia_factor());
-        let o = Oblique::new(spec.angle_deg, spec.spin, spec.friction, k_t, kappa, radius)?;
+        let o = Oblique::new(spec.angle_deg, spec.spin, spec.friction, k_t, kappa, radius)?
+            .with_tangential_damping(tangential_damping.unwrap_or(0.0))?;
         let v = spec.v.unwrap_or(self.params.v0);
         if !(v.is_finite() && v > 0.0) {
             return Err(BallError::Invalid {
@@ -142,6 +155,17 @@ impl Ball {
         tangential_stiffness: Option<f64>,
         inertia_factor: Option<f64>,
     ) -> Result<CourtPace, BallError> {
+        self.court_pace_damped(friction, tangential_stiffness, inertia_factor, None)
+    }
+
+    /// [`Ball::court_pace`] with a tangential dashpot c_t, kg/s ([`Ball::oblique_damped`]).
+    pub fn court_pace_damped(
+        &self,
+        friction: f64,
+        tangential_stiffness: Option<f64>,
+        inertia_factor: Option<f64>,
+        tangential_damping: Option<f64>,
+    ) -> Result<CourtPace, BallError> {
         let spec = ObliqueSpec {
             v: Some(30.0),
             angle_deg: 16.0,
@@ -150,7 +174,7 @@ impl Ball {
             tangential_stiffness,
             inertia_factor,
         };
-        let r = self.oblique(&spec, 0)?;
+        let r = self.oblique_damped(&spec, tangential_damping, 0)?;
         let cpr = 100.0 * (1.0 - r.apparent_friction) + 150.0 * (0.81 - r.cor_normal);
         let (category, category_name) = pace_category(cpr);
         Ok(CourtPace {

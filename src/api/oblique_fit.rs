@@ -31,6 +31,9 @@ pub struct ObliqueFitReport<'a> {
     pub tangential_stiffness: f64,
     /// κ, fitted or held.
     pub inertia_factor: f64,
+    /// c_t fitted (kg/s), when a start for it was given; the key only then.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub tangential_damping: Option<f64>,
     /// R (m).
     pub radius: f64,
     /// RMS miss of v_x,out (m/s).
@@ -82,6 +85,28 @@ impl Ball {
         file: Option<String>,
         watch: &dyn Watch,
     ) -> Result<ObliqueFitReport<'_>, BallError> {
+        self.fit_oblique_damped_watched(rows, file, None, watch)
+    }
+
+    /// [`Ball::fit_oblique_watched`] fitting the tangential dashpot c_t too, from
+    /// `tangential_damping` (kg/s, > 0; `None`: no dashpot, as `fit_oblique_watched`), as
+    /// `bouncelab fit --oblique FILE --tangential-damping C0`.
+    pub fn fit_oblique_damped_watched(
+        &self,
+        rows: &[ObliqueRow],
+        file: Option<String>,
+        tangential_damping: Option<f64>,
+        watch: &dyn Watch,
+    ) -> Result<ObliqueFitReport<'_>, BallError> {
+        if let Some(c) = tangential_damping
+            && !(c.is_finite() && c > 0.0)
+        {
+            return Err(BallError::Invalid {
+                field: "tangential_damping",
+                value: c,
+                reason: "a fit's start must be positive and finite".into(),
+            });
+        }
         let radius = Some(self.radius()).filter(|r| r.is_finite());
         let radius = radius.ok_or(BallError::Oblique(crate::oblique::ObliqueError::Missing(
             "radius",
@@ -101,6 +126,7 @@ impl Ball {
             friction: None,
             tangential_stiffness: k_t,
             inertia_factor: kappa,
+            tangential_damping,
         };
         let f = fit_oblique(&start, rows, watch)?;
         Ok(ObliqueFitReport {
@@ -111,6 +137,7 @@ impl Ball {
             friction: f.fitted[0].value,
             tangential_stiffness: f.fitted[1].value,
             inertia_factor: f.inertia_factor,
+            tangential_damping: f.tangential_damping,
             radius,
             rms_vx: f.rms_vx,
             rms_spin: f.rms_spin,

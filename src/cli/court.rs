@@ -35,6 +35,9 @@ struct Report<'a> {
     ball: BallHeader<'a>,
     standard: &'static str,
     friction: f64,
+    /// c_t, kg/s: present only when a dashpot was given.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    tangential_damping: Option<f64>,
     #[serde(flatten)]
     pace: &'a CourtPace,
 }
@@ -42,10 +45,11 @@ struct Report<'a> {
 pub fn run(a: &CourtArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     super::ball::check_overrides(&a.ball.set, None, None)?;
     let ball = a.ball.resolve(None)?;
-    let pace = ball.court_pace(
+    let pace = ball.court_pace_damped(
         a.friction,
         a.tangential.tangential_stiffness,
         a.tangential.inertia_factor,
+        a.tangential.tangential_damping,
     )?;
     match a.format {
         CourtFormat::Json => output::json(
@@ -54,6 +58,7 @@ pub fn run(a: &CourtArgs, out: &mut dyn Write) -> anyhow::Result<()> {
                 ball: ball.header(),
                 standard: "itf-court-pace",
                 friction: a.friction,
+                tangential_damping: a.tangential.tangential_damping,
                 pace: &pace,
             },
         )?,

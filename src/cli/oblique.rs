@@ -28,6 +28,10 @@ pub struct TangentialArgs {
     /// κ = I/(m R²), in (0, 1] [default: the preset's, else 0.4 (solid)]
     #[arg(long, value_name = "KAPPA", value_parser = super::number::number, allow_hyphen_values = true)]
     pub inertia_factor: Option<f64>,
+    /// Tangential dashpot c_t ≥ 0, kg/s, in parallel with K_t (LAMMPS's linear_history rule)
+    /// [default: none]
+    #[arg(long, value_name = "KG_PER_S", value_parser = super::number::number, allow_hyphen_values = true)]
+    pub tangential_damping: Option<f64>,
 }
 
 #[derive(Debug, Clone, Args)]
@@ -66,6 +70,9 @@ struct Report<'a> {
     ball: BallHeader<'a>,
     friction: f64,
     tangential_stiffness: f64,
+    /// c_t, kg/s: present only when a dashpot was given.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    tangential_damping: Option<f64>,
     inertia_factor: f64,
     radius: f64,
     #[serde(flatten)]
@@ -90,7 +97,8 @@ pub fn run(a: &ObliqueArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     if a.history && a.samples == 0 {
         return Err(crate::api::BallError::Samples(0).into());
     }
-    let r = ball.oblique(&spec, if a.history { a.samples } else { 0 })?;
+    let damping = a.tangential.tangential_damping;
+    let r = ball.oblique_damped(&spec, damping, if a.history { a.samples } else { 0 })?;
     let k_t = a
         .tangential
         .tangential_stiffness
@@ -108,6 +116,7 @@ pub fn run(a: &ObliqueArgs, out: &mut dyn Write) -> anyhow::Result<()> {
                 ball: ball.header(),
                 friction: a.friction,
                 tangential_stiffness: k_t,
+                tangential_damping: damping,
                 inertia_factor: kappa,
                 radius,
                 answer: &r,
@@ -126,9 +135,11 @@ pub fn run(a: &ObliqueArgs, out: &mut dyn Write) -> anyhow::Result<()> {
                 crate::model::contact::ContactLaw::Linear => String::new(),
                 law => format!(", {law} law"),
             };
+            let dashpot =
+                damping.map_or(String::new(), |c| format!(", c_t = {} kg/s", given(c, 4)));
             writeln!(
                 out,
-                "{}{law}: μ = {}, K_t = {} N/m, κ = {}, R = {} mm",
+                "{}{law}: μ = {}, K_t = {} N/m{dashpot}, κ = {}, R = {} mm",
                 ball.label(),
                 given(a.friction, 6),
                 human(k_t, 4),
@@ -283,6 +294,13 @@ fn text(out: &mut dyn Write, r: &ObliqueResponse) -> std::io::Result<()> {
         ),
     ];
     table(out, "", &lines)?;
+    if let Some(d) = e.tangential_damping {
+        writeln!(
+            out,
+            "tangential dashpot  {} J lost while gripping",
+            human(d, 4)
+        )?;
+    }
     if let Some(h) = &r.history {
         writeln!(out)?;
         let mut rows = vec![

@@ -97,6 +97,10 @@ pub struct PeersArgs {
     /// The tangential spring K_t with --friction [default: Mindlin's 2(1 − ν)/(2 − ν) K_p]
     #[arg(long, value_name = "N/m", requires = "friction", value_parser = super::number::number, allow_hyphen_values = true)]
     pub tangential_stiffness: Option<f64>,
+    /// The tangential dashpot c_t (kg/s) with --friction, as LAMMPS's x_gamma_t = c_t/η
+    /// [default: none]
+    #[arg(long, value_name = "KG_PER_S", requires = "friction", value_parser = super::number::number, allow_hyphen_values = true)]
+    pub tangential_damping: Option<f64>,
 }
 
 /// One row of the comparison (the JSON keys of issue 19, then `k_r` for the
@@ -337,9 +341,11 @@ fn tangential(
             )
         })?;
     // the same checks as an oblique impact's (angle and κ are not the export's)
-    crate::oblique::Oblique::new(45.0, 0.0, mu, k_t, 0.5, 1.0)?;
+    let c_t = a.tangential_damping.unwrap_or(0.0);
+    crate::oblique::Oblique::new(45.0, 0.0, mu, k_t, 0.5, 1.0)?.with_tangential_damping(c_t)?;
     Ok(Some(crate::peers::tangential::TangentialExport {
         friction: mu,
         tangential_stiffness: k_t,
+        tangential_damping: c_t,
     }))
 }

@@ -21,6 +21,10 @@ pub(super) struct Answer<'a> {
 /// to τ1 the surface takes −∫F̃_t (ṽ_c − ũ') dτ, with F̃_t = −sμF̄, ũ = sμF̄/k̃ and
 /// ṽ_c = ṽ_c0 − sμg ΔJ (ΔJ the normal impulse since τ0): in closed form
 /// sμ ṽ_c0 ΔJ − μ²g ΔJ²/2 − μ²(F̄1² − F̄0²)/(2k̃).
+///
+/// With a dashpot the spring on the slide is LAMMPS's reset ũ = (sμF̄ − c̃ṽ_c)/k̃ and the
+/// last term is ½k̃(ũ1² − ũ0²) of those: what the cap's force does beyond the spring, the
+/// dashpot's share of it included (on the cap the two are one force).
 pub(super) fn friction_work(s: &Scaled, run: &Run) -> f64 {
     let mu = s.mu;
     run.phases
@@ -30,13 +34,58 @@ pub(super) fn friction_work(s: &Scaled, run: &Run) -> f64 {
             Mode::Slip(sg) => {
                 let (p0, p1) = run.ends(i);
                 let dj = ph.vel0 - p1.velocity;
-                let spring = mu * mu * (p1.force.powi(2) - p0.force.powi(2)) / (2.0 * s.kt);
+                let spring = if s.ct > 0.0 {
+                    let u1 = ph.state(s, &p1, ph.end).0;
+                    s.kt * (u1 * u1 - ph.u0 * ph.u0) / 2.0
+                } else {
+                    mu * mu * (p1.force.powi(2) - p0.force.powi(2)) / (2.0 * s.kt)
+                };
                 Some(sg * mu * ph.vc0 * dj - mu * mu * s.g * dj * dj / 2.0 - spring)
             }
             Mode::Stick => None,
         })
         .sum()
 }
+
+/// The tangential dashpot's loss over the sticks, normalized by m v_y²: c̃∫ṽ_c² dτ by
+/// Gauss–Legendre (8 points a panel, panels of at most a quarter of the stick's fastest
+/// radian) on the closed-form ṽ_c, independent of the closed form's own energy identity
+/// d/dτ(ṽ_c²/2g + k̃ũ²/2) = −c̃ṽ_c² that the balance then checks (docs/oblique.md §4).
+pub(super) fn damping_work(s: &Scaled, run: &Run) -> f64 {
+    if s.ct == 0.0 {
+        return 0.0;
+    }
+    let panel = 0.25 / s.stick_rate();
+    run.phases
+        .iter()
+        .filter(|ph| ph.mode == Mode::Stick)
+        .map(|ph| {
+            let len = ph.end - ph.start;
+            let n = (len / panel).ceil().max(1.0);
+            let h = len / n;
+            let mut sum = 0.0;
+            for k in 0..n as usize {
+                let mid = (k as f64 + 0.5) * h;
+                for (x, w) in GAUSS8 {
+                    for sgn in [-1.0, 1.0] {
+                        let vc = ph.damped_state(s, mid + sgn * x * h / 2.0).1;
+                        sum += w * h / 2.0 * vc * vc;
+                    }
+                }
+            }
+            s.ct * sum
+        })
+        .sum()
+}
+
+/// The 8-point Gauss–Legendre rule on [−1, 1]: the positive nodes with their weights (each
+/// node is taken with both signs).
+const GAUSS8: [(f64, f64); 4] = [
+    (0.183_434_642_495_649_8, 0.362_683_783_378_362),
+    (0.525_532_409_916_329, 0.313_706_645_877_887_3),
+    (0.796_666_477_413_626_7, 0.222_381_034_453_374_5),
+    (0.960_289_856_497_536_3, 0.101_228_536_290_376_26),
+];
 
 /// What the normal motion lost (J): the audited dashpot, contact and recoil-spring terms when
 /// the normal run was audited (the adaptive solver's, any law but the linear one), else — the
@@ -66,6 +115,8 @@ impl Answer<'_> {
         let tf = path.end();
         let last = run.phases.last().expect("a run has a phase");
         let (u_end, vc_end) = last.state(s, &run.end, tf);
+        // the spring at first contact: 0, or the dashpot's reset −c̃ṽ_c/k̃ (`tangential::run`)
+        let u_in = run.phases[0].u0;
         let dvc = vc_end - run.vc_in;
         let vx_out = self.vx + vy * s.kappa / (1.0 + s.kappa) * dvc;
         let spin_out = o.spin - vy * dvc / ((1.0 + s.kappa) * r);
@@ -87,12 +138,16 @@ impl Answer<'_> {
             rotational_out: 0.5 * inertia * spin_out * spin_out,
             normal_dissipation,
             friction_dissipation: friction_work(s, &run) * unit,
-            tangential_spring: 0.5 * s.kt * u_end * u_end * unit,
+            tangential_spring: 0.5 * s.kt * (u_end * u_end - u_in * u_in) * unit,
+            tangential_damping: (s.ct > 0.0).then(|| damping_work(s, &run) * unit),
             residual: 0.0,
         };
         let e = &energy;
         let input = e.translational_in + e.rotational_in;
-        let losses = e.normal_dissipation + e.friction_dissipation + e.tangential_spring;
+        let losses = e.normal_dissipation
+            + e.friction_dissipation
+            + e.tangential_spring
+            + e.tangential_damping.unwrap_or(0.0);
         energy.residual = (input - e.translational_out - e.rotational_out - losses).abs() / input;
         let vc_in_si = run.vc_in * vy;
         let kinks = path.kinks();
@@ -152,7 +207,7 @@ impl Answer<'_> {
                 self.oblique.spin - vy * (vc - run.vc_in) / ((1.0 + s.kappa) * self.oblique.radius);
             h.t.push(tau / w0);
             h.normal_force.push(pt.force * force);
-            h.friction_force.push(-s.kt * u * force);
+            h.friction_force.push(-(s.kt * u + s.ct * vc) * force);
             h.slip_velocity.push(vc * vy);
             h.spin.push(spin);
         }

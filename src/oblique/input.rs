@@ -20,13 +20,17 @@ pub struct Oblique {
     pub inertia_factor: f64,
     /// R (m), the undeformed radius.
     pub radius: f64,
+    /// c_t (kg/s), ≥ 0: the tangential dashpot in parallel with K_t (0: none, the default;
+    /// [`Oblique::with_tangential_damping`]).
+    pub tangential_damping: f64,
 }
 
 /// A quantity of an oblique impact that is out of its domain, named as the command line
 /// names it: "invalid angle: 0 (must lie in (0, 90] degrees)".
 #[derive(Debug, Clone, PartialEq)]
 pub struct ObliqueInvalid {
-    /// `angle`, `spin`, `friction`, `tangential_stiffness`, `inertia_factor` or `radius`.
+    /// `angle`, `spin`, `friction`, `tangential_stiffness`, `tangential_damping`,
+    /// `inertia_factor` or `radius`.
     pub field: &'static str,
     /// The value given.
     pub value: f64,
@@ -111,6 +115,17 @@ impl Oblique {
             tangential_stiffness,
             inertia_factor,
             radius,
+            tangential_damping: 0.0,
+        };
+        o.validate()?;
+        Ok(o)
+    }
+
+    /// The same with the tangential dashpot c_t (kg/s), checked.
+    pub fn with_tangential_damping(self, c_t: f64) -> Result<Oblique, ObliqueError> {
+        let o = Oblique {
+            tangential_damping: c_t,
+            ..self
         };
         o.validate()?;
         Ok(o)
@@ -136,6 +151,10 @@ impl Oblique {
         let k = self.tangential_stiffness;
         if !(k.is_finite() && k > 0.0) {
             return Err(invalid("tangential_stiffness", k, "must be positive"));
+        }
+        let c = self.tangential_damping;
+        if !(c.is_finite() && c >= 0.0) {
+            return Err(invalid("tangential_damping", c, "must be finite and ≥ 0"));
         }
         let kappa = self.inertia_factor;
         if !(kappa > 0.0 && kappa <= 1.0) {

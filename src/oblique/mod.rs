@@ -1,8 +1,8 @@
 //! Oblique impacts: a ball arriving at an angle to the surface and spinning, with friction at
 //! the contact (docs/oblique.md). The normal motion is today's impact unchanged, run at the
 //! normal speed v_y = v sin θ; the tangential motion is the Cundall–Strack linear_history
-//! model: a spring K_t on the contact point's tangential displacement u, capped by Coulomb
-//! friction μ F_n, no tangential dashpot.
+//! model: a spring K_t on the contact point's tangential displacement u in parallel with a
+//! dashpot c_t (0 unless given), their force capped by Coulomb friction μ F_n.
 //!
 //! The answer comes from [`solve`]: the exact normal flow of the linear law
 //! (`solver::exact::NormalPath`) with the tangential motion in closed form phase by phase
@@ -12,6 +12,7 @@
 
 mod closed;
 pub mod court;
+mod damped;
 mod energy;
 mod frictions;
 mod input;
@@ -51,13 +52,22 @@ pub struct Scaled {
     pub kappa: f64,
     /// g = 1 + 1/κ: dṽ_c/dτ = g F̃_t.
     pub g: f64,
-    /// ω̃_t = √(k̃ g), the sticking oscillation's rate.
+    /// ω̃_t = √(k̃ g), the sticking oscillation's undamped rate.
     pub omega_t: f64,
+    /// c̃ = c_t/(m ω0), the tangential dashpot (0: none).
+    pub ct: f64,
+    /// β = g c̃/2: while sticking ũ'' + 2β ũ' + ω̃_t² ũ = 0.
+    pub beta: f64,
 }
 
 impl Scaled {
     /// The scaled problem of μ, k̃ = K_t/K_p and κ.
     pub fn new(mu: f64, kt: f64, kappa: f64) -> Scaled {
+        Scaled::damped(mu, kt, 0.0, kappa)
+    }
+
+    /// The scaled problem with a tangential dashpot c̃ = c_t/(m ω0) (docs/oblique.md §1).
+    pub fn damped(mu: f64, kt: f64, ct: f64, kappa: f64) -> Scaled {
         let g = 1.0 + 1.0 / kappa;
         Scaled {
             mu,
@@ -65,7 +75,32 @@ impl Scaled {
             kappa,
             g,
             omega_t: (kt * g).sqrt(),
+            ct,
+            beta: g * ct / 2.0,
         }
+    }
+
+    /// The fastest rate of the sticking motion: ω̃_t while it oscillates (β ≤ ω̃_t), else the
+    /// overdamped fast root β + √(β² − ω̃_t²).
+    pub fn stick_rate(&self) -> f64 {
+        if self.beta <= self.omega_t {
+            self.omega_t
+        } else {
+            self.beta + (self.beta * self.beta - self.omega_t * self.omega_t).sqrt()
+        }
+    }
+}
+
+impl Scaled {
+    /// The scaled problem of `oblique` over the normal impact of `params`: k̃ = K_t/K_p,
+    /// c̃ = c_t/(m ω0) (F̃ = F/(m v_y ω0), so c_t v_c scales to c̃ ṽ_c).
+    pub fn of(params: &ImpactParams, oblique: &Oblique) -> Scaled {
+        Scaled::damped(
+            oblique.friction,
+            oblique.tangential_stiffness / params.k_p,
+            oblique.tangential_damping / (params.mass * params.omega0()),
+            oblique.inertia_factor,
+        )
     }
 }
 
@@ -136,11 +171,7 @@ pub(crate) fn prepare(
         return Err(ObliqueError::NoRebound);
     }
     let path = path.ok_or(ObliqueError::NoFlow)?;
-    let scaled = Scaled::new(
-        oblique.friction,
-        oblique.tangential_stiffness / params.k_p,
-        oblique.inertia_factor,
-    );
+    let scaled = Scaled::of(params, oblique);
     Ok(Prepared {
         vx,
         vy,

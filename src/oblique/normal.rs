@@ -145,11 +145,7 @@ impl NormalAt {
                 "must be the angle the normal impact was solved at",
             ));
         }
-        let s = Scaled::new(
-            oblique.friction,
-            oblique.tangential_stiffness / self.params.k_p,
-            oblique.inertia_factor,
-        );
+        let s = Scaled::of(&self.params, oblique);
         let (vx_n, w_n) = (self.vx / self.vy, oblique.radius * oblique.spin / self.vy);
         let grid = self.grid_for(&s);
         let run = tangential::run(&self.path, &grid, &s, vx_n - w_n)?;

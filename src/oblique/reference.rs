@@ -1,6 +1,7 @@
 //! An independent integration of the oblique impact's tangential motion (docs/oblique.md §5),
 //! for the tests: the equations of motion themselves — ṽ_x' = F̃_t, (Rω/v_y)' = −F̃_t/κ,
-//! F̃_t = −k̃ũ, ũ' = ṽ_c while sticking and sμF̄'/k̃ on the cap while sliding — integrated
+//! F̃_t = −k̃ũ − c̃ṽ_c, ũ' = ṽ_c while sticking and (sμF̄' − c̃ṽ_c')/k̃ on the cap while
+//! sliding (LAMMPS's reset, docs/oblique.md §1) — integrated
 //! by the `differential-equations` crate's DOP853 at a tolerance of 1e-13, with an event at
 //! every stick/slip switch located by integrating to it, and a restart at each end of a
 //! normal phase (where F̄' may jump). It shares with [`super::solve`] the model's rules and the
@@ -46,21 +47,26 @@ impl<P: NormalMotion> Sys<'_, P> {
     fn switch(&self, t: f64, x: &X) -> f64 {
         let p = self.path.at(t);
         let vc = x[0] - x[1];
+        let s = &self.s;
         match self.mode {
-            Mode::Stick => self.s.kt * x[2].abs() - self.s.mu * p.force,
-            Mode::Slip(sg) => self.s.mu * p.rate / self.s.kt - sg * vc,
+            Mode::Stick => (s.kt * x[2] + s.ct * vc).abs() - s.mu * p.force,
+            Mode::Slip(sg) => s.mu * (p.rate + s.ct * s.g * p.force) / s.kt - sg * vc,
         }
     }
 }
 
 impl<P: NormalMotion> ODE<f64, X> for Sys<'_, P> {
     fn diff(&self, t: f64, x: &X, dx: &mut X) {
-        let ft = -self.s.kt * x[2];
+        let s = &self.s;
+        let ft = -s.kt * x[2] - s.ct * (x[0] - x[1]);
         dx[0] = ft;
-        dx[1] = -ft / self.s.kappa;
+        dx[1] = -ft / s.kappa;
         dx[2] = match self.mode {
             Mode::Stick => x[0] - x[1],
-            Mode::Slip(sg) => sg * self.s.mu * self.path.at(t).rate / self.s.kt,
+            // k̃ũ = sμF̄ − c̃ṽ_c held on the cap, ṽ_c' = (1 + 1/κ)F̃_t
+            Mode::Slip(sg) => {
+                (sg * s.mu * self.path.at(t).rate - s.ct * (1.0 + 1.0 / s.kappa) * ft) / s.kt
+            }
         };
     }
 }
@@ -91,6 +97,11 @@ impl<P: NormalMotion> Solout<f64, X> for Watcher<'_, '_, P> {
         I: Interpolation<f64, X> + ?Sized,
     {
         self.last = (t_curr, *y_curr);
+        // the integrator's first call, at the start itself: nothing has moved (with a dashpot
+        // the trial force k̃ũ + c̃ṽ_c there is 0 only to rounding, which marks no switch)
+        if t_curr <= t_prev {
+            return ControlFlag::Continue;
+        }
         let mut ta = t_prev;
         for j in 1..=5 {
             let t = t_prev + (t_curr - t_prev) * j as f64 / 5.0;
@@ -191,7 +202,8 @@ pub fn integrate(path: &impl NormalMotion, s: &Scaled, vx: f64, spin: f64) -> Ou
         Mode::Slip(vc.signum())
     };
     let mut sys = Sys { path, s: *s, mode };
-    let (mut t, mut x) = (0.0, [vx, spin, 0.0]);
+    // with a dashpot the spring starts on the reset, k̃ũ + c̃ṽ_c = 0 (the cap is 0 there)
+    let (mut t, mut x) = (0.0, [vx, spin, -s.ct * vc / s.kt]);
     let mut switches = 0;
     // At first contact the switch function starts at 0 with the slope K̃|ṽ_c| − μF̄'(0) (stick)
     // or its negative over K̃ (slip): where that is not 0 the function is negative at once, so
@@ -220,8 +232,9 @@ pub fn integrate(path: &impl NormalMotion, s: &Scaled, vx: f64, spin: f64) -> Ou
                     armed = false;
                     sys.mode = match sys.mode {
                         Mode::Stick => {
-                            let sg = x[2].signum();
-                            x[2] = sg * s.mu * path.at(t).force / s.kt;
+                            let vc = x[0] - x[1];
+                            let sg = (s.kt * x[2] + s.ct * vc).signum();
+                            x[2] = (sg * s.mu * path.at(t).force - s.ct * vc) / s.kt;
                             Mode::Slip(sg)
                         }
                         Mode::Slip(_) => Mode::Stick,

@@ -75,8 +75,13 @@ pub struct ObliqueEnergy {
     pub normal_dissipation: f64,
     /// Work of friction while sliding.
     pub friction_dissipation: f64,
-    /// ½ K_t u² left in the tangential spring at separation.
+    /// ½ K_t u² left in the tangential spring at separation (less what LAMMPS's reset put in
+    /// it at first contact with a dashpot, ½ c_t² v_c,in²/K_t: docs/oblique.md §4).
     pub tangential_spring: f64,
+    /// What the tangential dashpot c_t took while the point stuck, ∫c_t v_c² dt; present only
+    /// with a dashpot (JSON key `tangential_damping` then).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub tangential_damping: Option<f64>,
     /// |in − out − losses| / in.
     pub residual: f64,
 }

@@ -4,7 +4,13 @@
 //! s = ±1, F̃_t = −sμF̄ and ṽ_c' = g F̃_t integrate to the normal impulse:
 //! ṽ_c(τ) = ṽ_c(τ0) − sμg (ᾱ'(τ0) − ᾱ'(τ)). Only the switches need a root find:
 //! stick → slip when k̃|u| reaches μF̄, slip → stick when sṽ_c < μF̄'/k̃.
+//!
+//! With a tangential dashpot c̃ (LAMMPS's linear_history rule, docs/oblique.md §1) the stick is
+//! a damped oscillator, ũ'' + 2βũ' + ω̃_t²ũ = 0 (β = gc̃/2), the trial force is
+//! f = k̃ũ + c̃ṽ_c, a slide holds ũ = (sμF̄ − c̃ṽ_c)/k̃, and the switches are |f| = μF̄ and
+//! sṽ_c < μ(F̄' + c̃gF̄)/k̃. With c̃ = 0 every expression is the undamped one, bit for bit.
 
+use super::damped::{self, slip_spring};
 use super::{MAX_PHASES, NormalMotion, ObliqueError, Scaled};
 use crate::solver::exact::PathPoint;
 use crate::solver::roots::{brent, newton_bracketed_from};
@@ -13,9 +19,10 @@ use serde::Serialize;
 /// How the contact point moves in a phase.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub enum Mode {
-    /// It sticks: u' = v_c, F_t = −K_t u, |K_t u| ≤ μ F_n.
+    /// It sticks: u' = v_c, F_t = −K_t u − c_t v_c, |F_t| ≤ μ F_n.
     Stick,
-    /// It slides with u on the cap s μ F_n/K_t, s = ±1 (the spring's sign when it got there).
+    /// It slides with F_t = −s μ F_n and u reset to (s μ F_n − c_t v_c)/K_t, s = ±1 (the
+    /// trial force's sign when it got there).
     Slip(f64),
 }
 
@@ -41,11 +48,24 @@ impl Phase {
     /// (ũ, ṽ_c) at τ in this phase, `p` the normal motion at τ.
     pub(crate) fn state(&self, s: &Scaled, p: &PathPoint, tau: f64) -> (f64, f64) {
         match self.mode {
+            Mode::Stick if s.ct > 0.0 => self.damped_state(s, tau - self.start),
             Mode::Stick => self.stick_state(s, (s.omega_t * (tau - self.start)).sin_cos()),
-            Mode::Slip(sg) => (
-                sg * s.mu * p.force / s.kt,
-                self.vc0 - sg * s.mu * s.g * (self.vel0 - p.velocity),
-            ),
+            Mode::Slip(sg) => {
+                let vc = self.vc0 - sg * s.mu * s.g * (self.vel0 - p.velocity);
+                (slip_spring(s, sg, p.force, vc), vc)
+            }
+        }
+    }
+
+    /// (ũ, ṽ_c) of a damped stick δ after its start (`damped::Start::state`).
+    pub(crate) fn damped_state(&self, s: &Scaled, delta: f64) -> (f64, f64) {
+        self.damped_start().state(s, delta)
+    }
+
+    fn damped_start(&self) -> damped::Start {
+        damped::Start {
+            u0: self.u0,
+            vc0: self.vc0,
         }
     }
 
@@ -58,28 +78,43 @@ impl Phase {
         )
     }
 
-    /// A stick's switch function and its rate from its state (ũ, ṽ_c).
+    /// A stick's switch function and its rate from its state (ũ, ṽ_c): |f| − μF̄ with the
+    /// trial force f = k̃ũ + c̃ṽ_c, f' = k̃ṽ_c − c̃g f (ṽ_c' = −g f while sticking).
     fn stick_switch(s: &Scaled, p: &PathPoint, (u, vc): (f64, f64)) -> (f64, f64) {
+        if s.ct > 0.0 {
+            let f = s.kt * u + s.ct * vc;
+            let rate = f.signum() * (s.kt * vc - s.ct * s.g * f) - s.mu * p.rate;
+            return (f.abs() - s.mu * p.force, rate);
+        }
         let rate = s.kt * u.signum() * vc - s.mu * p.rate;
         (s.kt * u.abs() - s.mu * p.force, rate)
     }
 
     /// The switch function and its rate in either mode, F̄'' = `curvature`: a slide's
-    /// G' = μF̄''/k̃ + μgF̄, since sṽ_c' = −μgF̄ (ṽ_c' = g F̃_t, F̃_t = −sμF̄).
+    /// G' = μ(F̄'' + c̃gF̄')/k̃ + μgF̄, since sṽ_c' = −μgF̄ (ṽ_c' = g F̃_t, F̃_t = −sμF̄).
     fn switch_rate(&self, s: &Scaled, p: &PathPoint, curvature: f64, tau: f64) -> (f64, f64) {
         let (g, rate) = self.switch(s, p, tau);
         match self.mode {
             Mode::Stick => (g, rate),
+            Mode::Slip(_) if s.ct > 0.0 => (
+                g,
+                s.mu * (curvature + s.ct * s.g * p.rate) / s.kt + s.mu * s.g * p.force,
+            ),
             Mode::Slip(_) => (g, s.mu * curvature / s.kt + s.mu * s.g * p.force),
         }
     }
 
     /// The switch function: the phase goes on while G ≤ 0 and ends where it turns positive.
-    /// Stick: G = k̃|u| − μF̄; slip: G = μF̄'/k̃ − sṽ_c. With its rate in a stick (else 0).
+    /// Stick: G = |k̃ũ + c̃ṽ_c| − μF̄; slip: G = μ(F̄' + c̃gF̄)/k̃ − sṽ_c (the cap then grows
+    /// faster than the trial force would, whose rate on the slide is k̃ṽ_c − c̃sμgF̄). With its
+    /// rate in a stick (else 0).
     fn switch(&self, s: &Scaled, p: &PathPoint, tau: f64) -> (f64, f64) {
         let (u, vc) = self.state(s, p, tau);
         match self.mode {
             Mode::Stick => Phase::stick_switch(s, p, (u, vc)),
+            Mode::Slip(sg) if s.ct > 0.0 => {
+                (s.mu * (p.rate + s.ct * s.g * p.force) / s.kt - sg * vc, 0.0)
+            }
             Mode::Slip(sg) => (s.mu * p.rate / s.kt - sg * vc, 0.0),
         }
     }
@@ -97,6 +132,7 @@ impl Phase {
         ends: (PathPoint, PathPoint),
     ) -> f64 {
         match self.mode {
+            Mode::Stick if s.ct > 0.0 => self.damped_start().max_force(s, self.end - self.start),
             Mode::Stick => {
                 let w = s.omega_t;
                 let (a, b) = (self.u0, self.vc0 / w);
@@ -140,7 +176,7 @@ impl Run {
 /// the contact (the normal force's own scale; the crossings between steps are found by sign
 /// changes and, while sticking, by the rate turning from rising to falling).
 fn step(s: &Scaled, tf: f64) -> f64 {
-    (0.2 / s.omega_t).min(tf / 32.0)
+    (0.2 / s.stick_rate()).min(tf / 32.0)
 }
 
 /// The search grid: τ_j = j h up to τ_f (the last point τ_f itself) and the normal motion there,
@@ -195,17 +231,24 @@ pub(crate) fn run(
 ) -> Result<Run, ObliqueError> {
     let tf = path.end();
     let p0 = grid.points[0];
-    // at first contact F̄ = 0: the point sticks if the cap grows at least as fast as the spring
+    // at first contact F̄ = 0: the point sticks if the cap grows at least as fast as the spring;
+    // with a dashpot the spring starts where the slide's reset puts it, k̃ũ + c̃ṽ_c = 0 (both
+    // modes: the trial force is 0 there)
     let mode = if s.kt * vc_in.abs() <= s.mu * p0.rate {
         Mode::Stick
     } else {
         Mode::Slip(vc_in.signum())
     };
+    let u0 = if s.ct > 0.0 {
+        -s.ct * vc_in / s.kt
+    } else {
+        0.0
+    };
     let mut phase = Phase {
         start: 0.0,
         end: tf,
         mode,
-        u0: 0.0,
+        u0,
         vc0: vc_in,
         vel0: p0.velocity,
     };
@@ -235,12 +278,14 @@ pub(crate) fn run(
         let (u, vc) = phase.state(s, &p, t);
         phase = match phase.mode {
             Mode::Stick => {
-                let sg = if u == 0.0 { vc.signum() } else { u.signum() };
+                // the trial force's sign: k̃ũ + c̃ṽ_c (k̃ũ alone without a dashpot)
+                let f = if s.ct > 0.0 { s.kt * u + s.ct * vc } else { u };
+                let sg = if f == 0.0 { vc.signum() } else { f.signum() };
                 Phase {
                     start: t,
                     end: tf,
                     mode: Mode::Slip(sg),
-                    u0: sg * s.mu * p.force / s.kt,
+                    u0: slip_spring(s, sg, p.force, vc),
                     vc0: vc,
                     vel0: p.velocity,
                 }
@@ -309,6 +354,9 @@ fn find_switch(
         }
         let point = &grid.points[j];
         let (gb, db) = match (phase.mode, angle) {
+            (Mode::Stick, _) if s.ct > 0.0 => {
+                Phase::stick_switch(s, point, phase.damped_state(s, b - start))
+            }
             (Mode::Stick, Some((sn, cs))) if j < last => {
                 let (ts, tc) = turn;
                 let next = (sn * tc + cs * ts, cs * tc - sn * ts);

@@ -20,21 +20,43 @@ pub struct NormalContact {
     pub radius: f64,
 }
 
-/// The tangential model: Coulomb's μ and the spring K_t (N/m), no tangential dashpot.
+/// The tangential model: Coulomb's μ, the spring K_t (N/m) and the dashpot c_t (kg/s, 0:
+/// none).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct TangentialExport {
     /// μ ≥ 0.
     pub friction: f64,
     /// K_t > 0, N/m.
     pub tangential_stiffness: f64,
+    /// c_t ≥ 0, kg/s; the JSON key only when a dashpot was given.
+    #[serde(skip_serializing_if = "is_zero")]
+    pub tangential_damping: f64,
+}
+
+fn is_zero(x: &f64) -> bool {
+    *x == 0.0
+}
+
+/// LAMMPS's x_gamma_t for a dashpot c_t on a contact whose normal damping is `damping
+/// velocity` with η: the tangential coefficient is x_gamma_t times the normal damping's
+/// prefactor, η itself (docs/oblique.md §10). `None` when η = 0 and c_t > 0 (no ratio gives it).
+pub fn x_gamma_t(c_t: f64, eta: f64) -> Option<f64> {
+    if c_t == 0.0 {
+        Some(0.0)
+    } else {
+        (eta > 0.0).then(|| c_t / eta)
+    }
 }
 
 /// LAMMPS: the same Kelvin–Voigt fix with `tangential linear_history k_t x_gamma_t mu_s`:
 /// the history spring k_t on the accumulated tangential displacement, rescaled onto the
-/// Coulomb cap μ_s |F_n| while sliding, no dashpot (x_gamma_t = 0) — bouncelab's model, with
-/// LAMMPS's own normal force in F_n.
+/// Coulomb cap μ_s |F_n| while sliding, and the dashpot x_gamma_t η = c_t (0 without one) —
+/// bouncelab's model, with LAMMPS's own normal force in F_n.
 pub fn lammps(s: &NormalContact, t: &TangentialExport) -> String {
     let mut o = String::new();
+    if t.tangential_damping > 0.0 {
+        return lammps_damped(s, t);
+    }
     let _ = write!(
         o,
         "# Oblique impacts (docs/oblique.md §10): the tangential linear_history spring k_t = K_t\n\
@@ -48,6 +70,38 @@ pub fn lammps(s: &NormalContact, t: &TangentialExport) -> String {
         num(s.k),
         num(s.eta),
         num(t.tangential_stiffness),
+        num(t.friction),
+    );
+    o
+}
+
+/// [`lammps`] with a tangential dashpot: x_gamma_t = c_t/η ([`x_gamma_t`]).
+fn lammps_damped(s: &NormalContact, t: &TangentialExport) -> String {
+    let mut o = String::new();
+    let Some(x) = x_gamma_t(t.tangential_damping, s.eta) else {
+        let _ = write!(
+            o,
+            "# Oblique impacts (docs/oblique.md §10): the tangential dashpot c_t = {} kg/s cannot\n\
+             # be exported: LAMMPS scales it by the normal damping, and this contact has none.\n",
+            num(t.tangential_damping)
+        );
+        return o;
+    };
+    let _ = write!(
+        o,
+        "# Oblique impacts (docs/oblique.md §10): the tangential linear_history spring k_t = K_t\n\
+         # on the contact's accumulated tangential displacement in parallel with the dashpot\n\
+         # x_gamma_t eta = c_t = {} kg/s, their force capped by mu_s |F_n| (the spring reset\n\
+         # onto the cap net of the dashpot while sliding), as bouncelab oblique\n\
+         # --tangential-damping; F_n is this fix's normal force (clipped Kelvin-Voigt), not the\n\
+         # Christoforou-Yigit one. Spin needs atom_style sphere and fix nve/sphere.\n\
+         fix kvclipt all wall/gran granular hooke {} {} tangential linear_history {} {} {} \
+         damping velocity limit_damping zplane 0.0 NULL\n",
+        num(t.tangential_damping),
+        num(s.k),
+        num(s.eta),
+        num(t.tangential_stiffness),
+        num(x),
         num(t.friction),
     );
     o
@@ -80,5 +134,12 @@ pub fn mujoco(s: &NormalContact, t: &TangentialExport) -> String {
         num(kk),
         num(bb),
     );
+    if t.tangential_damping > 0.0 {
+        let _ = writeln!(
+            o,
+            "<!-- nor the tangential dashpot c_t = {} kg/s: MuJoCo has no tangential damping of its own. -->",
+            num(t.tangential_damping)
+        );
+    }
     o
 }

@@ -28,6 +28,7 @@ pub mod bat;
 mod history;
 mod linear;
 mod numeric;
+pub mod pair;
 #[cfg(test)]
 mod tests;
 #[cfg(test)]

@@ -34,5 +34,6 @@ pub fn start(kt: f64, kappa: f64) -> ObliqueStart {
         friction: None,
         tangential_stiffness: kt,
         inertia_factor: kappa,
+        tangential_damping: None,
     }
 }

@@ -18,7 +18,9 @@ use crate::oblique::{NormalAt, Oblique};
 use std::cell::Cell;
 
 mod finish;
+mod starts;
 use finish::{Search, finish, rms_pair};
+use starts::{bounds, starting_points};
 
 /// The ball and where the fit starts: μ, K_t and κ are the starting values (κ is held when
 /// the rows carry no outgoing spin).
@@ -36,6 +38,9 @@ pub struct ObliqueStart {
     pub tangential_stiffness: f64,
     /// κ to start from, or to hold.
     pub inertia_factor: f64,
+    /// The tangential dashpot c_t (kg/s, > 0) to start a fit of it from; `None`: no dashpot,
+    /// not fitted.
+    pub tangential_damping: Option<f64>,
 }
 
 /// The fitted tangential model and how well the data pin it.
@@ -45,6 +50,8 @@ pub struct ObliqueFit {
     pub fitted: Vec<Estimate>,
     /// κ as used: fitted, or held at the start's.
     pub inertia_factor: f64,
+    /// c_t as fitted (kg/s), when it was (`ObliqueStart::tangential_damping`).
+    pub tangential_damping: Option<f64>,
     /// The correlations between the fitted quantities, in the order of `fitted`.
     pub correlation: Vec<Vec<f64>>,
     /// RMS of the model's v_x,out − the data's (m/s).
@@ -100,6 +107,10 @@ struct Problem<'a> {
     radius: f64,
     /// κ when held (no spins measured).
     kappa: Option<f64>,
+    /// Where ln c_t is in x when it is fitted (last), else none.
+    damping: Option<usize>,
+    /// The fitted quantities' names, in the order of x.
+    names: Vec<&'static str>,
     /// The weight of the spin residuals: R, then the ratio of the two kinds' scatter.
     spin_weight: Cell<f64>,
     watch: &'a dyn Watch,
@@ -122,6 +133,7 @@ impl Problem<'_> {
             return None;
         }
         let kappa = self.kappa.unwrap_or_else(|| x[2].exp());
+        let c_t = self.damping.map_or(0.0, |j| x[j].exp());
         self.rows
             .iter()
             .zip(&self.normals)
@@ -134,6 +146,7 @@ impl Problem<'_> {
                     kappa,
                     self.radius,
                 )
+                .and_then(|o| o.with_tangential_damping(c_t))
                 .ok()?;
                 let r = n.solve(&o, 0).ok()?;
                 Some((r.vx_out, r.spin_out))
@@ -168,9 +181,15 @@ impl Residuals for Problem<'_> {
     }
 }
 
-const NAMES: [&str; 3] = ["friction", "tangential_stiffness", "inertia_factor"];
+const NAMES: [&str; 4] = [
+    "friction",
+    "tangential_stiffness",
+    "inertia_factor",
+    "tangential_damping",
+];
 
-/// Fit μ and K_t (and κ when every row gives `spin_out`) to `rows`; each evaluation is
+/// Fit μ and K_t (and κ when every row gives `spin_out`, and c_t when the start names one)
+/// to `rows`; each evaluation is
 /// reported to `watch`, which may stop the fit ([`MultiFitError::Interrupted`]); the work is
 /// checked against the work limit before it starts.
 pub fn fit_oblique(
@@ -179,7 +198,8 @@ pub fn fit_oblique(
     watch: &dyn Watch,
 ) -> Result<ObliqueFit, MultiFitError> {
     let spins = rows.iter().all(|r| r.spin_out.is_some());
-    let vars = if spins { 3 } else { 2 };
+    let damped = start.tangential_damping.is_some();
+    let vars = 2 + usize::from(spins) + usize::from(damped);
     let count = rows.len() * if spins { 2 } else { 1 };
     if count < vars {
         return Err(MultiFitError::TooFew {
@@ -197,6 +217,16 @@ pub fn fit_oblique(
         normals,
         radius: start.radius,
         kappa: (!spins).then_some(start.inertia_factor),
+        damping: damped.then_some(vars - 1),
+        names: (0..vars)
+            .map(|j| {
+                if damped && j == vars - 1 {
+                    NAMES[3]
+                } else {
+                    NAMES[j]
+                }
+            })
+            .collect(),
         spin_weight: Cell::new(start.radius),
         watch,
         runs: Cell::new(0),
@@ -205,12 +235,14 @@ pub fn fit_oblique(
     let mu0 = start
         .friction
         .unwrap_or_else(|| apparent_friction(rows, &p));
-    let x0 = [
-        mu0.max(1e-3).ln(),
-        start.tangential_stiffness.ln(),
-        start.inertia_factor.ln(),
-    ];
-    let starts = starting_points(&x0[..vars]);
+    let mut x0 = vec![mu0.max(1e-3).ln(), start.tangential_stiffness.ln()];
+    if spins {
+        x0.push(start.inertia_factor.ln());
+    }
+    if let Some(c) = start.tangential_damping {
+        x0.push(c.ln());
+    }
+    let starts = starting_points(&x0, spins, damped);
     let run = (rows.len() as u64) * OBLIQUE_COST * work::cost(start.law).min(4);
     let refits = if spins { REFINED } else { 0 };
     let what = || format!("an oblique fit of {vars} parameters to {} rows", rows.len());
@@ -225,7 +257,7 @@ pub fn fit_oblique(
             false,
         ),
     };
-    let (lo, hi) = bounds(&x0[..vars]);
+    let (lo, hi) = bounds(&x0, spins, damped);
     let opts = lm::Options {
         max_iterations: iterations,
         ..lm::Options::default()
@@ -277,50 +309,6 @@ fn apparent_friction(rows: &[ObliqueRow], p: &Problem) -> f64 {
             (vx - r.vx_out).abs() / (vy + r.vy_out)
         })
         .fold(0.0, f64::max)
-}
-
-/// The start and others around it: K_t a factor 3 and 10 either way, μ halved and doubled,
-/// and with spins κ a factor 1.4 either way at each K_t. The outgoing motion is piecewise
-/// smooth in them (a row turns from sliding to gripping) and oscillates with the grip's phase
-/// at separation (√(K_t (1 + 1/κ)), docs/oblique.md §2): the cost has local minima, and a
-/// start in the wrong valley stays there (`spins_do_not_stop_in_a_local_minimum`,
-/// tests/fit_oblique_coverage.rs).
-fn starting_points(x0: &[f64]) -> Vec<Vec<f64>> {
-    let (ln2, ln3, ln10) = (2f64.ln(), 3f64.ln(), 10f64.ln());
-    let kappas: &[f64] = if x0.len() == 3 {
-        &[0.0, 1.4f64.ln(), -(1.4f64.ln())]
-    } else {
-        &[0.0]
-    };
-    let mut moves = vec![(ln2, 0.0, 0.0), (-ln2, 0.0, 0.0)];
-    for dk in [0.0, ln3, -ln3, ln10, -ln10] {
-        moves.extend(kappas.iter().map(|&dq| (0.0, dk, dq)));
-    }
-    moves.sort_by_key(|m| m != &(0.0, 0.0, 0.0));
-    moves
-        .into_iter()
-        .map(|(dm, dk, dq)| {
-            let mut x = x0.to_vec();
-            x[0] += dm;
-            x[1] += dk;
-            if let Some(q) = x.get_mut(2) {
-                // κ ≤ 1
-                *q = (*q + dq).min(0.0);
-            }
-            x
-        })
-        .collect()
-}
-
-/// The box: μ in [1e-4, 100], K_t four decades either side of its start, κ in [0.05, 1].
-fn bounds(x0: &[f64]) -> (Vec<f64>, Vec<f64>) {
-    let mut lo = vec![1e-4f64.ln(), x0[1] - 4.0 * 10f64.ln()];
-    let mut hi = vec![100f64.ln(), x0[1] + 4.0 * 10f64.ln()];
-    if x0.len() == 3 {
-        lo.push(0.05f64.ln());
-        hi.push(0.0);
-    }
-    (lo, hi)
 }
 
 /// The minimum from each start, best (lowest cost) first; `None` when stopped or when no

@@ -60,6 +60,10 @@ pub struct FitArgs {
     /// …; optional pressure_sd_… in the same units); fits its leak p0·e^(−k t)
     #[arg(long, value_name = "FILE")]
     pub pressure_loss: Option<PathBuf>,
+    /// With --oblique: fit the tangential dashpot c_t too, starting from this value, kg/s
+    /// (docs/oblique.md §9) [default: no dashpot]
+    #[arg(long, value_name = "KG_PER_S", requires = "oblique", value_parser = super::number::number, allow_hyphen_values = true)]
+    pub tangential_damping: Option<f64>,
     /// Drop tests: correct for quadratic air drag with this drag coefficient (≈ 0.47 for a
     /// smooth sphere) [default: no drag]
     #[arg(long, value_name = "CD", value_parser = super::number::number, allow_hyphen_values = true)]

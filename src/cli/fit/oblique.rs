@@ -24,7 +24,7 @@ pub fn run(a: &FitArgs, path: &Path, out: &mut dyn Write) -> anyhow::Result<()> 
     let watch = crate::cli::budget::Watcher::new("model runs");
     let file = path.display().to_string();
     let report = ball
-        .fit_oblique_watched(&rows, Some(file.clone()), &watch)
+        .fit_oblique_damped_watched(&rows, Some(file.clone()), a.tangential_damping, &watch)
         .map_err(|e| match e {
             BallError::MultiFit(MultiFitError::Interrupted) => {
                 crate::cli::budget::Interrupted.into()

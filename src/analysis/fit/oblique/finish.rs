@@ -1,7 +1,7 @@
 //! The oblique fit's answer at its minimum: estimates, 95 % intervals (the profile's, or the
 //! Jacobian's past the work limit), warnings and the verdict.
 
-use super::{NAMES, ObliqueFit, Problem};
+use super::{ObliqueFit, Problem};
 use crate::analysis::fit::lm::{self, Residuals};
 use crate::analysis::fit::profile;
 use crate::analysis::fit::stats::{Uncertainty, uncertainty};
@@ -54,7 +54,7 @@ fn intervals(
         );
     }
     let mut ends = Vec::new();
-    for (j, (&theta, name)) in sol.x.iter().zip(NAMES).enumerate() {
+    for (j, (&theta, &name)) in sol.x.iter().zip(&p.names).enumerate() {
         let s = u.covariance[(j, j)].sqrt();
         if !(s.is_finite() && dof > 0) {
             ends.push([f64::NAN; 2]);
@@ -111,8 +111,12 @@ pub(super) fn finish(
         .map(|j| {
             let s = sol.x[j].exp() * u.covariance[(j, j)].sqrt();
             Estimate {
-                name: NAMES[j],
-                unit: ["", "N/m", ""][j],
+                name: p.names[j],
+                unit: match p.names[j] {
+                    "tangential_stiffness" => "N/m",
+                    "tangential_damping" => "kg/s",
+                    _ => "",
+                },
                 value: sol.x[j].exp(),
                 // a quantity the data do not see keeps its infinite variance (not pinned)
                 std_error: if no_scatter && s.is_finite() {
@@ -126,7 +130,7 @@ pub(super) fn finish(
         .collect();
     let on_bound: Vec<&'static str> = (0..vars)
         .filter(|&j| verdict::on_bound(sol.x[j], b.lo[j], b.hi[j]))
-        .map(|j| NAMES[j])
+        .map(|j| p.names[j])
         .collect();
     // residuals all zero: judged as an exact solve, on what the data see (`verdict::pinned`)
     let judged_dof = if no_scatter { 0 } else { dof };
@@ -150,7 +154,7 @@ pub(super) fn finish(
     if no_scatter {
         warnings.insert(0, verdict::NO_SCATTER.into());
     }
-    warnings.extend(verdict::pinning_warnings(dof, &u, NAMES[u.weakest], hint));
+    warnings.extend(verdict::pinning_warnings(dof, &u, p.names[u.weakest], hint));
     if !sol.converged {
         warnings.push(verdict::not_converged(sol.iterations));
     }
@@ -168,6 +172,7 @@ pub(super) fn finish(
         .collect();
     Ok(ObliqueFit {
         inertia_factor: p.kappa.unwrap_or_else(|| sol.x[2].exp()),
+        tangential_damping: p.damping.map(|j| sol.x[j].exp()),
         fitted,
         correlation,
         rms_vx,

@@ -153,6 +153,7 @@ impl ObliqueParam {
             tangential_stiffness: 1.0,
             inertia_factor: 0.4,
             radius: 1.0,
+            tangential_damping: 0.0,
         };
         match self {
             ObliqueParam::Angle => o.angle_deg = value,

@@ -1,0 +1,279 @@
+//! Two balls that both deform (docs/targets.md §8): ball 1 – its contact element – its
+//! (c₁ ∥ K_r1) – ball 2's (c₂ ∥ K_r2) – ball 2's contact element – ball 2, every element
+//! massless, so one force F runs through all. In ball 1's units over the reduced mass
+//! (docs/model.md §5 with m* and the closing speed v_c: τ = ω t, ω = √(K_p1/m*)), with
+//! r = ω₂/ω, ω₂ = √(K_p2/m*), ball 2's own normalized law f̄₂ and constants λ₂, ζ₂:
+//!
+//! ```text
+//! ᾱ'' = −F̄,  ȳ₁' = 2ζ₁(F̄ − λ₁ȳ₁),  ȳ₂' = 2ζ₂(F̄/r − λ₂ r ȳ₂),  Z̄' = ᾱ' − ȳ₁' − ȳ₂',
+//! ```
+//!
+//! Z̄ = z̄₁ + z̄₂ the two contacts' indentations together, and F̄ the force at which they add to
+//! Z̄: g₁(F̄) + g₂(F̄) = Z̄, g₁ ball 1's indentation at F̄ and g₂(F̄) = ḡ₂(F̄/r)/r ball 2's, each
+//! on its own branch (loading, or unloading from its own peak). Both contacts carry the same
+//! force, so they turn, reload and let go together: loading until Z̄' falls through 0, then
+//! unloading until Z̄ falls to z̄_f1 + z̄_f2 (separation) or rises past Z̄_m (reload). DOP853
+//! (the `differential-equations` crate) at 1e-12 per phase, events on its dense output by
+//! Brent and the state there by integrating to them, as the compliant target's run
+//! (`numeric`). Identical balls make both halves equal at every step: the wall impact of one
+//! ball at half the closing speed (`identical_balls_head_on_are_the_wall_impact`).
+
+use crate::model::contact::{Contact, ContactLaw, Unloading};
+use crate::model::params::{ImpactParams, Normalized};
+use crate::solver::Unresolved;
+use crate::solver::roots::brent;
+use differential_equations::interpolate::Interpolation;
+use differential_equations::methods::ExplicitRungeKutta;
+use differential_equations::ode::{ODE, solve_ode};
+use differential_equations::prelude::{ControlFlag, Solout};
+use differential_equations::solution::Solution;
+
+/// State (Z̄, ᾱ', ȳ₁, ȳ₂).
+type X = [f64; 4];
+
+const RTOL: f64 = 1e-12;
+const MAX_STEPS: usize = 200_000;
+const MAX_PHASES: usize = 256;
+/// How far past Z̄_m, relative, an unloading pair must rise before it reloads.
+const RELOAD: f64 = 1e-9;
+
+/// The pair's answer in ball 1's reduced units: ᾱ' at separation (−e), the peak force and the
+/// contact time (τ).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PairOutcome {
+    /// e, the pair's COR.
+    pub cor: f64,
+    /// F̄_m.
+    pub f_max: f64,
+    /// τ_f.
+    pub tau_end: f64,
+}
+
+#[derive(Clone, Copy)]
+enum Branch {
+    Loading,
+    Unloading(Unloading, Unloading),
+}
+
+struct Pair {
+    n1: Normalized,
+    n2: Normalized,
+    c1: Contact,
+    c2: Contact,
+    /// r = ω₂/ω₁.
+    r: f64,
+    branch: Branch,
+}
+
+impl Pair {
+    /// Both contacts' indentations (ball 1's units) at force F̄.
+    fn indentations(&self, f: f64) -> (f64, f64) {
+        let r = self.r;
+        match &self.branch {
+            Branch::Loading => (
+                self.c1.loading_indentation(f),
+                self.c2.loading_indentation(f / r) / r,
+            ),
+            Branch::Unloading(u1, u2) => (
+                self.c1.unloading_indentation(f, u1),
+                self.c2.unloading_indentation(f / r, u2) / r,
+            ),
+        }
+    }
+
+    /// The force at which the two indentations add to Z̄ (0 at or below the permanent ones).
+    fn force(&self, z: f64) -> f64 {
+        let h = |f: f64| {
+            let (a, b) = self.indentations(f);
+            a + b - z
+        };
+        let h0 = h(0.0);
+        if h0 >= 0.0 {
+            return 0.0;
+        }
+        let mut hi = 1.0;
+        let mut hh = h(hi);
+        while hh < 0.0 {
+            hi *= 2.0;
+            hh = h(hi);
+        }
+        brent(h, 0.0, hi, h0, hh, 1e-16 * hi)
+    }
+
+    /// (F̄, ȳ₁', ȳ₂', Z̄') at x.
+    fn rates(&self, x: &X) -> (f64, f64, f64, f64) {
+        let f = self.force(x[0]);
+        let relax = |n: &Normalized, f: f64, y: f64| {
+            if n.zeta > 0.0 {
+                2.0 * n.zeta * (f - n.lambda * y)
+            } else {
+                0.0
+            }
+        };
+        let y1 = relax(&self.n1, f, x[2]);
+        // ball 2's pair in its own units (ȳ₂ r, F̄/r), its rate unchanged by the scaling
+        let y2 = relax(&self.n2, f / self.r, self.r * x[3]);
+        (f, y1, y2, x[1] - y1 - y2)
+    }
+
+    /// What ends the phase, as g crossing 0 upward: the turn (−Z̄'), separation, reload.
+    fn watches(&self, x: &X) -> [f64; 2] {
+        match &self.branch {
+            Branch::Loading => [-self.rates(x).3, f64::NEG_INFINITY],
+            Branch::Unloading(u1, u2) => {
+                let (zm, zf) = (u1.z_m + u2.z_m / self.r, u1.z_f + u2.z_f / self.r);
+                [zf - x[0], x[0] - zm * (1.0 + RELOAD)]
+            }
+        }
+    }
+}
+
+impl ODE<f64, X> for Pair {
+    fn diff(&self, _t: f64, x: &X, dx: &mut X) {
+        let (f, y1, y2, z) = self.rates(x);
+        *dx = [z, -f, y1, y2];
+    }
+}
+
+struct Watcher<'a> {
+    pair: &'a Pair,
+    hit: Option<(f64, usize, f64, X)>,
+}
+
+impl Solout<f64, X> for Watcher<'_> {
+    fn solout<I>(
+        &mut self,
+        t: f64,
+        t_prev: f64,
+        x: &X,
+        x_prev: &X,
+        interp: &mut I,
+        _s: &mut Solution<f64, X>,
+    ) -> ControlFlag<f64, X>
+    where
+        I: Interpolation<f64, X> + ?Sized,
+    {
+        let (ga, gb) = (self.pair.watches(x_prev), self.pair.watches(x));
+        let mut best: Option<(f64, usize)> = None;
+        for i in 0..2 {
+            if ga[i] < 0.0 && gb[i] >= 0.0 {
+                let g = |tt: f64| self.pair.watches(&interp.interpolate(tt).unwrap_or(*x))[i];
+                let tc = brent(g, t_prev, t, ga[i], gb[i], 1e-15 * t.abs().max(1e-300));
+                if best.is_none_or(|(bt, _)| tc < bt) {
+                    best = Some((tc, i));
+                }
+            }
+        }
+        match best {
+            Some((tc, i)) => {
+                self.hit = Some((tc, i, t_prev, *x_prev));
+                ControlFlag::Terminate
+            }
+            None => ControlFlag::Continue,
+        }
+    }
+}
+
+struct End(X);
+
+impl Solout<f64, X> for End {
+    fn solout<I>(
+        &mut self,
+        _t: f64,
+        _tp: f64,
+        x: &X,
+        _xp: &X,
+        _i: &mut I,
+        _s: &mut Solution<f64, X>,
+    ) -> ControlFlag<f64, X>
+    where
+        I: Interpolation<f64, X> + ?Sized,
+    {
+        self.0 = *x;
+        ControlFlag::Continue
+    }
+}
+
+fn integrate<O: Solout<f64, X>>(pair: &Pair, t0: f64, x0: X, tf: f64, out: &mut O) -> bool {
+    let mut m = ExplicitRungeKutta::dop853()
+        .rtol(RTOL)
+        .atol(RTOL * 1e-2)
+        .max_steps(MAX_STEPS);
+    t0 >= tf || solve_ode(&mut m, pair, t0, tf, &x0, out).is_ok()
+}
+
+/// The head-on impact of ball `p1` with ball `p2` (their `v0` ignored) at closing speed
+/// `closing` (m/s), both on `law`. An error says which budget ran out; a pair that does not
+/// let go within the horizon (no rebound) is one of them.
+pub fn solve(
+    p1: &ImpactParams,
+    p2: &ImpactParams,
+    law: ContactLaw,
+    closing: f64,
+) -> Result<PairOutcome, Unresolved> {
+    let m_star = p1.mass * p2.mass / (p1.mass + p2.mass);
+    let b1 = ImpactParams {
+        mass: m_star,
+        v0: closing,
+        ..*p1
+    };
+    let b2 = ImpactParams {
+        mass: m_star,
+        v0: closing,
+        ..*p2
+    };
+    let (n1, n2) = (b1.normalized(), b2.normalized());
+    let contact = |n: &Normalized| Contact {
+        law,
+        zp_bar: n.zp_bar,
+        kappa: n.kappa,
+    };
+    let mut pair = Pair {
+        n1,
+        n2,
+        c1: contact(&n1),
+        c2: contact(&n2),
+        r: b2.omega0() / b1.omega0(),
+        branch: Branch::Loading,
+    };
+    let soft = |n: &Normalized| if n.lambda > 0.0 { 1.0 / n.lambda } else { 0.0 };
+    let t_max = 100.0 * std::f64::consts::PI * (2.0 + soft(&n1) + soft(&n2) + 1.0 / pair.r);
+    let (mut t, mut x) = (0.0, [0.0, 1.0, 0.0, 0.0]);
+    let mut f_max: f64 = 0.0;
+    for _ in 0..MAX_PHASES {
+        let mut w = Watcher {
+            pair: &pair,
+            hit: None,
+        };
+        if !integrate(&pair, t, x, t_max, &mut w) {
+            return Err(Unresolved::Steps);
+        }
+        let Some((tc, which, tp, xp)) = w.hit else {
+            return Err(Unresolved::Horizon);
+        };
+        let mut end = End(xp);
+        if !integrate(&pair, tp, xp, tc, &mut end) {
+            return Err(Unresolved::Steps);
+        }
+        (t, x) = (tc, end.0);
+        match (pair.branch, which) {
+            (Branch::Loading, _) => {
+                let f = pair.force(x[0]);
+                f_max = f_max.max(f);
+                let (z1, z2) = pair.indentations(f);
+                let u1 = pair.c1.unload_from(z1);
+                let u2 = pair.c2.unload_from(z2 * pair.r);
+                pair.branch = Branch::Unloading(u1, u2);
+            }
+            (Branch::Unloading(..), 0) => {
+                return Ok(PairOutcome {
+                    cor: (-x[1]).clamp(0.0, 1.0),
+                    f_max,
+                    tau_end: t,
+                });
+            }
+            (Branch::Unloading(..), _) => pair.branch = Branch::Loading,
+        }
+    }
+    Err(Unresolved::Phases)
+}
