@@ -137,6 +137,16 @@ impl Oblique {
         if !(k.is_finite() && k > 0.0) {
             return Err(invalid("tangential_stiffness", k, "must be positive"));
         }
+        // bounded as K_p is (`model::checks::POSITIVE_RANGE`): 1e308 once overflowed the
+        // search grid's length (tests/oblique_bounded.rs)
+        use crate::model::params::{MEANINGFUL_MAX, MEANINGFUL_MIN};
+        if !(MEANINGFUL_MIN..=MEANINGFUL_MAX).contains(&k) {
+            return Err(invalid(
+                "tangential_stiffness",
+                k,
+                "out of the physically meaningful range 1e-15 … 1e15 N/m",
+            ));
+        }
         let kappa = self.inertia_factor;
         if !(kappa > 0.0 && kappa <= 1.0) {
             return Err(invalid("inertia_factor", kappa, "must lie in (0, 1]"));

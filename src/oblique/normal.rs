@@ -151,6 +151,7 @@ impl NormalAt {
             oblique.inertia_factor,
         );
         let (vx_n, w_n) = (self.vx / self.vy, oblique.radius * oblique.spin / self.vy);
+        bounded(&s, oblique, self.path.end())?;
         let grid = self.grid_for(&s);
         let run = tangential::run(&self.path, &grid, &s, vx_n - w_n)?;
         let answer = energy::Answer {
@@ -164,6 +165,26 @@ impl NormalAt {
         Ok(answer.response(&self.path, run, self.normal.clone(), samples))
     }
 }
+
+/// The refusal of a tangential motion whose search grid would pass [`MAX_GRID`] points: the
+/// grid steps a fifth of the sticking oscillation's radian, ω̃_t = √(K_t/K_p·(1 + 1/κ)), so a
+/// tiny κ or a huge K_t once asked 10⁸ points (3 GB) or more (tests/oblique_bounded.rs). The
+/// field named is the factor that drives ω̃_t most: 1/κ or K_t/K_p.
+fn bounded(s: &Scaled, oblique: &Oblique, tf: f64) -> Result<(), ObliqueError> {
+    if Grid::steps(s, tf) <= MAX_GRID as f64 {
+        return Ok(());
+    }
+    let reason = "too fast a sticking oscillation: √(K_t/K_p·(1 + 1/κ)) asks more than 200000 \
+                  search steps in one contact (docs/oblique.md §2)";
+    Err(if 1.0 / s.kappa > s.kt {
+        super::invalid("inertia_factor", oblique.inertia_factor, reason)
+    } else {
+        super::invalid("tangential_stiffness", oblique.tangential_stiffness, reason)
+    })
+}
+
+/// Most points of the tangential search's grid (24 B each: 4.8 MB, a few ms to read).
+pub const MAX_GRID: usize = 200_000;
 
 /// The normal motion a [`NormalAt`] holds: the closed form, or a solver's flow.
 // one a `NormalAt`, read at every point of its impacts: kept inline, not boxed
