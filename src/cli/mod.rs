@@ -288,14 +288,15 @@ fn explorer(
     state: &explore::ExplorerArgs,
     measured: Option<PathBuf>,
 ) -> anyhow::Result<()> {
-    // the state's options (or session) are checked before the terminal, as `run` checks them
-    let (app, from_session) = state.app(&choice, crate::tui::color_wanted())?;
-    if let (Some(_), Some(m)) = (&from_session, &measured) {
+    // a session names its own measured file, or none (docs/explorer.md, Sessions)
+    if let (Some(_), Some(m)) = (&state.session, &measured) {
         anyhow::bail!(
-            "--measured {}: the session names its measured file",
+            "--measured {}: --session restores the whole state; give one of them",
             m.display()
         );
     }
+    // the state's options (or session) are checked before the terminal, as `run` checks them
+    let (app, from_session) = state.app(&choice, crate::tui::color_wanted())?;
     let measured = measured.or(from_session);
     // a measured file is read and checked before anything else is asked of the user
     let data = match &measured {
