@@ -64,6 +64,16 @@ impl NormalAt {
         } else {
             (v * theta.sin(), v * theta.cos())
         };
+        // a normal speed below the meaningful range is the angle's doing when v is in it:
+        // `--angle 1e-15` said "invalid v0: 1.2e-16" (issue 54 item 9; tests/field_names.rs)
+        use crate::model::params::MEANINGFUL_MIN;
+        if vy < MEANINGFUL_MIN && v >= MEANINGFUL_MIN && v.is_finite() {
+            return Err(super::invalid(
+                "angle",
+                angle_deg,
+                "the normal speed v sin θ falls below 1e-15 m/s: give a larger angle",
+            ));
+        }
         let params = ImpactParams { v0: vy, ..*params };
         // The linear law's normal motion in closed form where it answers (`closed`: a fifth of
         // the exact solver's instructions), else the solver's flow; at 90° always the solver's,
