@@ -326,6 +326,9 @@ pub fn render(fig: &Figure) -> Result<String, RenderError> {
 /// the other (`fit --plot`) take the widest of their [`label_area`]s, so that their plots
 /// start at one x and share the x axis (tests/figure_room.rs).
 pub fn render_aligned(fig: &Figure, left: i32) -> Result<String, RenderError> {
+    // long measured lines drawn as what the picture can show, saying so (`reduce`)
+    let reduced = super::reduce::reduced(fig, &ticks(fig, true, Room::Picture));
+    let fig = reduced.as_ref().unwrap_or(fig);
     let mut buf = String::new();
     {
         let size = (
