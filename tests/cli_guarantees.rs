@@ -204,7 +204,10 @@ fn numbers_are_read_as_typed() {
     );
     // a tiny COR is printed in its shortest form
     bad(&["fit", "--cor", "1e-300"], &["cor 1e-300 is out of reach"]);
-    bad(&["fit", "--cor", "1e-320"], &["--cor", "1e-320", "too small"]);
+    bad(
+        &["fit", "--cor", "1e-320"],
+        &["--cor", "1e-320", "too small"],
+    );
     let o = bl(&["fit", "--cor", "1e-320"]);
     assert!(o.stderr.len() < 160, "{}", o.stderr);
 }

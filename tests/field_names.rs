@@ -8,7 +8,9 @@ use common::{assert_bad, bad, bl, bl_at, bl_in, config_home, renamed};
 fn a_preset_name_with_a_filler_or_ignorable_character_is_refused() {
     // `golf` + U+115F (a Hangul filler, a letter that prints as nothing) listed as a second
     // `golf`; so would the other default-ignorable code points and fillers
-    for c in ['\u{115F}', '\u{1160}', '\u{3164}', '\u{FFA0}', '\u{034F}', '\u{FE0F}', '\u{2800}'] {
+    for c in [
+        '\u{115F}', '\u{1160}', '\u{3164}', '\u{FFA0}', '\u{034F}', '\u{FE0F}', '\u{2800}',
+    ] {
         let text = renamed(&format!("golf{c}"), "7.08e4");
         let line = text[..text.find("name = ").unwrap()].matches('\n').count() + 1;
         let home = config_home(&[("golf2.toml", &text)]);
@@ -29,7 +31,13 @@ fn peers_friction_without_export_is_refused() {
     for format in ["json", "text", "csv"] {
         bad(
             &[
-                "peers", "--preset", "tennis", "--format", format, "--friction", "0.5",
+                "peers",
+                "--preset",
+                "tennis",
+                "--format",
+                format,
+                "--friction",
+                "0.5",
             ],
             &["--friction", "--export"],
         );
@@ -50,7 +58,13 @@ fn a_derived_group_out_of_range_names_the_option_given() {
     // `oblique --angle 1e-15` said "invalid v0: 1.2e-16"
     bad(
         &[
-            "oblique", "--preset", "tennis", "--angle", "1e-15", "--friction", "0.5",
+            "oblique",
+            "--preset",
+            "tennis",
+            "--angle",
+            "1e-15",
+            "--friction",
+            "0.5",
         ],
         &["invalid angle: 1e-15", "normal speed"],
     );
@@ -66,8 +80,15 @@ fn an_oblique_row_no_impact_runs_at_is_exit_2_at_its_cell() {
         ("1e-20,30,0,15,7", "ob.csv:3:1: v0 1e-20"),
         ("20,1e-16,0,15,7", "ob.csv:3:4: angle_deg 1e-16"),
     ] {
-        std::fs::write(d.path().join("ob.csv"), format!("{head}{row}\n25,40,0,17,10\n")).unwrap();
-        let o = bl_at(d.path(), &["fit", "--preset", "tennis", "--oblique", "ob.csv"]);
+        std::fs::write(
+            d.path().join("ob.csv"),
+            format!("{head}{row}\n25,40,0,17,10\n"),
+        )
+        .unwrap();
+        let o = bl_at(
+            d.path(),
+            &["fit", "--preset", "tennis", "--oblique", "ob.csv"],
+        );
         assert_bad(&o, &[at]);
     }
     // the rows themselves still fit
@@ -84,7 +105,9 @@ fn vary_fit_names_the_fit_not_an_option_never_given() {
         .into_iter()
         .find(|p| p.name == "baseball")
         .unwrap();
-    let text = base.to_toml(&[]).replace("name = \"baseball\"", "name = \"mine\"");
+    let text = base
+        .to_toml(&[])
+        .replace("name = \"baseball\"", "name = \"mine\"");
     let (k_r, z_p) = (base.adopted.k_r, base.adopted.z_p.unwrap());
     let fit = format!(
         "\n[fit]\nfree = [\"k_r\", \"z_p\"]\nvalues = [{k_r:?}, {z_p:?}]\n\
@@ -94,7 +117,15 @@ fn vary_fit_names_the_fit_not_an_option_never_given() {
     std::fs::write(d.path().join("mine.toml"), format!("{text}{fit}")).unwrap();
     let o = bl_at(
         d.path(),
-        &["mc", "--config", "mine.toml", "--vary", "fit", "--samples", "10"],
+        &[
+            "mc",
+            "--config",
+            "mine.toml",
+            "--vary",
+            "fit",
+            "--samples",
+            "10",
+        ],
     );
     assert_bad(&o, &["invalid vary fit", "[fit] covariance", "refit"]);
     assert!(!o.stderr.contains("correlate"), "{}", o.stderr);

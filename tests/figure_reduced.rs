@@ -70,7 +70,11 @@ fn a_trace_of_ordinary_length_is_drawn_as_it_is() {
         "f.svg",
     ];
     let fig = parse_svg(&svg_of(d.path(), &args, "f.svg"));
-    assert!(fig.texts.iter().any(|t| t == "trace.csv"), "{:?}", fig.texts);
+    assert!(
+        fig.texts.iter().any(|t| t == "trace.csv"),
+        "{:?}",
+        fig.texts
+    );
     assert!(!fig.texts.iter().any(|t| t.contains("min/max")));
 }
 

@@ -51,11 +51,20 @@ fn inside(b: [f64; 2], lo: f64, hi: f64, nominal: f64, what: &str) {
 #[test]
 fn a_runs_intervals_stay_physical() {
     let d = wide_preset();
-    let v = json_of(d.path(), &["run", "--config", "wide.toml", "--format", "json"]);
+    let v = json_of(
+        d.path(),
+        &["run", "--config", "wide.toml", "--format", "json"],
+    );
     let f = |k: &str| v[k].as_f64().unwrap();
     inside(band(&v, "cor_ci95"), 0.0, 1.0, f("cor"), "cor");
     let inf = f64::INFINITY;
-    inside(band(&v, "max_force_ci95"), 0.0, inf, f("max_force"), "max_force");
+    inside(
+        band(&v, "max_force_ci95"),
+        0.0,
+        inf,
+        f("max_force"),
+        "max_force",
+    );
     let t = f("contact_time");
     inside(band(&v, "contact_time_ci95"), 0.0, inf, t, "contact_time");
 }
@@ -82,8 +91,20 @@ fn a_drops_intervals_stay_physical() {
         let what = |k: &str| format!("bounce {}: {k}", i + 1);
         inside(band(b, "cor_ci95"), 0.0, 1.0, f("cor"), &what("cor"));
         let h = f("rebound_height");
-        inside(band(b, "rebound_height_ci95"), 0.0, 1.5, h, &what("rebound"));
+        inside(
+            band(b, "rebound_height_ci95"),
+            0.0,
+            1.5,
+            h,
+            &what("rebound"),
+        );
         let ct = f("contact_time");
-        inside(band(b, "contact_time_ci95"), 0.0, f64::INFINITY, ct, &what("time"));
+        inside(
+            band(b, "contact_time_ci95"),
+            0.0,
+            f64::INFINITY,
+            ct,
+            &what("time"),
+        );
     }
 }

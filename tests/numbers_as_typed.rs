@@ -35,12 +35,27 @@ fn a_spread_that_underflows_is_refused_naming_it() {
 fn subnormals_are_refused_by_every_flag_naming_it() {
     let cases: [(&[&str], &str); 5] = [
         (
-            &["oblique", "--preset", "tennis", "--angle", "30", "--friction", "1e-320"],
+            &[
+                "oblique",
+                "--preset",
+                "tennis",
+                "--angle",
+                "30",
+                "--friction",
+                "1e-320",
+            ],
             "--friction",
         ),
         (
             &[
-                "oblique", "--preset", "tennis", "--angle", "30", "--friction", "0.5", "--spin",
+                "oblique",
+                "--preset",
+                "tennis",
+                "--angle",
+                "30",
+                "--friction",
+                "0.5",
+                "--spin",
                 "1e-320",
             ],
             "--spin",

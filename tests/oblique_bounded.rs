@@ -118,6 +118,9 @@ fn inside_the_ranges_the_work_is_bounded_too() {
         // a stiff but resolvable spring still answers, the grid at its bound or below
         let k_p = ball.params.k_p;
         let r = ball.oblique(&spec(Some(1e3 * k_p), None), 0).unwrap();
-        assert!(r.vx_out.is_finite() && r.energy.residual.abs() < 1e-9, "{law}");
+        assert!(
+            r.vx_out.is_finite() && r.energy.residual.abs() < 1e-9,
+            "{law}"
+        );
     }
 }

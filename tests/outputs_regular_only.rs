@@ -19,12 +19,34 @@ const LOT: &str = "id,drop_height_m,rebound_height_m\nA1,2.54,1.40\nA2,2.54,1.45
 fn commands(target: &str) -> Vec<Vec<&str>> {
     vec![
         vec!["fit", "--cor-table", "cor.csv", "--plot", target],
-        vec!["mc", "--vary", "k_p=5%", "--samples", "20", "--csv-out", target],
-        vec!["batch", "lot.csv", "--preset", "tennis", "--csv-out", target],
+        vec![
+            "mc",
+            "--vary",
+            "k_p=5%",
+            "--samples",
+            "20",
+            "--csv-out",
+            target,
+        ],
+        vec![
+            "batch",
+            "lot.csv",
+            "--preset",
+            "tennis",
+            "--csv-out",
+            target,
+        ],
         vec![
             "map", "--lambda", "0.1:10:4", "--zeta", "0.1:10:4", "--out", target,
         ],
-        vec!["figure", "force-time", "--out", "f.svg", "--csv-out", target],
+        vec![
+            "figure",
+            "force-time",
+            "--out",
+            "f.svg",
+            "--csv-out",
+            target,
+        ],
     ]
 }
 
@@ -56,7 +78,10 @@ fn no_output_flag_replaces_a_device_a_fifo_or_a_socket() {
     fs::write(d.join("cor.csv"), COR).unwrap();
     fs::write(d.join("lot.csv"), LOT).unwrap();
     let specials = specials(d);
-    assert!(specials.len() >= 2, "a FIFO and a socket can always be made");
+    assert!(
+        specials.len() >= 2,
+        "a FIFO and a socket can always be made"
+    );
     for (name, says) in &specials {
         for cmd in commands(name) {
             for force in [true, false] {
@@ -94,7 +119,14 @@ fn a_link_to_a_device_is_replaced_itself_never_the_device() {
     std::os::unix::fs::symlink("fifo", d.join("plot.svg")).unwrap();
     let o = bl_at(
         d,
-        &["fit", "--cor-table", "cor.csv", "--plot", "plot.svg", "--force"],
+        &[
+            "fit",
+            "--cor-table",
+            "cor.csv",
+            "--plot",
+            "plot.svg",
+            "--force",
+        ],
     );
     assert_eq!(o.code, 0, "{}", o.stderr);
     assert!(kind_of(&d.join("plot.svg")).is_file());
@@ -117,7 +149,10 @@ fn the_atomic_writer_refuses_a_special_file_that_appears_after_the_check() {
     );
     let e = files.commit().unwrap_err();
     assert_eq!(e.error.kind(), std::io::ErrorKind::InvalidInput);
-    assert!(e.error.to_string().contains("a FIFO, not a regular file"), "{e}");
+    assert!(
+        e.error.to_string().contains("a FIFO, not a regular file"),
+        "{e}"
+    );
     assert!(kind_of(&target).is_fifo());
     // and nothing staged is left behind
     let names: Vec<_> = fs::read_dir(d.path()).unwrap().collect();

@@ -185,7 +185,12 @@ mod tests {
                 let (se, [_, hi]) = mean_interval(n, 0.0, 1.0);
                 hi / se
             };
-            let ns = [2 * 10usize.pow(7), 10usize.pow(8), 10usize.pow(12), usize::MAX];
+            let ns = [
+                2 * 10usize.pow(7),
+                10usize.pow(8),
+                10usize.pow(12),
+                usize::MAX,
+            ];
             let _ = tx.send(ns.map(t));
         });
         let ts = rx
@@ -203,7 +208,10 @@ mod tests {
         let statrs_there = StudentsT::new(0.0, 1.0, SERIES_DOF as f64)
             .unwrap()
             .inverse_cdf(1.0 - ALPHA / 2.0);
-        assert!((from - statrs_there).abs() < 1e-12, "{from} vs {statrs_there}");
+        assert!(
+            (from - statrs_there).abs() < 1e-12,
+            "{from} vs {statrs_there}"
+        );
         // at 10⁵ the series is its first order z + (z³ + z)/(4ν) to its second (3e-10);
         // statrs' answer there was 7e-6 off it
         let first = z + (z * z * z + z) / 4e5;

@@ -98,6 +98,10 @@ pub fn report_then_commit(
     report: &[u8],
     files: Outputs,
 ) -> anyhow::Result<Vec<PathBuf>> {
+    // a signal during the work: neither the report nor the files (exit 130)
+    if super::budget::interrupted() {
+        return Err(super::budget::Interrupted.into());
+    }
     match out.write_all(report).and_then(|()| out.flush()) {
         Ok(()) => commit(files),
         Err(e) if e.kind() == io::ErrorKind::BrokenPipe => {

@@ -50,7 +50,11 @@ fn m4(
     let width = (hi - lo).abs().max(f64::MIN_POSITIVE);
     let column = |x: f64| -> Option<i64> {
         let d = drawn(x)?;
-        Some((((d - lo) / width) * COLUMNS as f64).floor().clamp(-1.0, COLUMNS as f64) as i64)
+        Some(
+            (((d - lo) / width) * COLUMNS as f64)
+                .floor()
+                .clamp(-1.0, COLUMNS as f64) as i64,
+        )
     };
     let mut out = Vec::new();
     // the run so far: its column, and the indices of its first, lowest, highest, last point
