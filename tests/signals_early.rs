@@ -35,7 +35,10 @@ fn signalled(dir: &Path, args: &[&str], signal: i32) -> Option<i32> {
         if let Some(status) = child.try_wait().unwrap() {
             return status.code();
         }
-        assert!(start.elapsed() < Duration::from_secs(60), "{args:?} still runs");
+        assert!(
+            start.elapsed() < Duration::from_secs(60),
+            "{args:?} still runs"
+        );
         std::thread::sleep(Duration::from_millis(10));
     }
 }
@@ -43,12 +46,29 @@ fn signalled(dir: &Path, args: &[&str], signal: i32) -> Option<i32> {
 fn commands() -> Vec<(Vec<&'static str>, &'static str)> {
     vec![
         (
-            vec!["figure", "force-time", "--measured", "cor2.csv", "--out", "f.svg"],
+            vec![
+                "figure",
+                "force-time",
+                "--measured",
+                "cor2.csv",
+                "--out",
+                "f.svg",
+            ],
             "f.svg",
         ),
-        (vec!["fit", "--cor-table", "cor.csv", "--plot", "p.svg"], "p.svg"),
         (
-            vec!["batch", "lot.csv", "--preset", "tennis", "--csv-out", "b.csv"],
+            vec!["fit", "--cor-table", "cor.csv", "--plot", "p.svg"],
+            "p.svg",
+        ),
+        (
+            vec![
+                "batch",
+                "lot.csv",
+                "--preset",
+                "tennis",
+                "--csv-out",
+                "b.csv",
+            ],
             "b.csv",
         ),
     ]
@@ -65,14 +85,20 @@ fn an_early_signal_stops_the_command_writing_nothing() {
     let mut trace = String::from("time_s,force_N\n");
     for i in 0..=100 {
         let t = i as f64 * 1e-5;
-        trace.push_str(&format!("{t},{}\n", 500.0 * (t / 1e-3 * std::f64::consts::PI).sin()));
+        trace.push_str(&format!(
+            "{t},{}\n",
+            500.0 * (t / 1e-3 * std::f64::consts::PI).sin()
+        ));
     }
     std::fs::write(d.join("cor2.csv"), trace).unwrap();
     for signal in [Signal::INT, Signal::TERM, Signal::HUP, Signal::QUIT] {
         for (args, file) in commands() {
             let code = signalled(d, &args, signal.as_raw());
             assert_eq!(code, Some(130), "{args:?} and {signal:?}");
-            assert!(!d.join(file).exists(), "{args:?} and {signal:?} wrote {file}");
+            assert!(
+                !d.join(file).exists(),
+                "{args:?} and {signal:?} wrote {file}"
+            );
         }
     }
 }
