@@ -11,9 +11,10 @@
 use super::ticks::Ticks;
 use super::{Figure, Style};
 
-/// Columns across the x axis: the picture's CSS pixel width (the plot, narrower, spreads them
-/// over its own pixel columns: none holds less than one).
-pub const COLUMNS: usize = super::svg::WIDTH as usize;
+/// Columns across the x axis: the picture's CSS pixel width, `svg::WIDTH` (the plot,
+/// narrower, spreads them over its own pixel columns: none holds less than one; `svg.rs`
+/// holds the two equal at compile time).
+pub const COLUMNS: usize = 800;
 
 /// A measured line is reduced only above this many points: fewer are drawn as they are.
 pub const REDUCE_ABOVE: usize = 4 * COLUMNS;

@@ -22,6 +22,8 @@ mod legend;
 
 /// Picture size in CSS pixels: the aspect of a journal figure, wide enough for the legend.
 pub const WIDTH: u32 = 800;
+// the reduction's columns are this picture's pixel columns (`reduce::COLUMNS`)
+const _: () = assert!(super::reduce::COLUMNS == WIDTH as usize);
 /// Picture height in CSS pixels.
 pub const HEIGHT: u32 = 560;
 /// Drawing units per CSS pixel.
