@@ -108,3 +108,28 @@ fn a_drops_intervals_stay_physical() {
         );
     }
 }
+
+#[test]
+fn a_covariance_too_wide_to_mean_anything_is_refused_when_loaded() {
+    // the same table with a standard deviation 1000 times k_r: refused at its line, naming it
+    let d = wide_preset();
+    let path = d.path().join("wide.toml");
+    let text = std::fs::read_to_string(&path).unwrap();
+    let k_r = bouncelab::preset::Preset::parse(&text, "wide.toml")
+        .unwrap()
+        .adopted
+        .k_r;
+    let from = format!("[[{:?}, 0.0]", (10.0 * k_r).powi(2));
+    let to = format!("[[{:?}, 0.0]", (1000.0 * k_r).powi(2));
+    assert!(text.contains(&from), "{text}");
+    let bad = text.replace(&from, &to);
+    let e = bouncelab::preset::Preset::parse(&bad, "wide.toml")
+        .unwrap_err()
+        .to_string();
+    let line = bad[..bad.find("covariance").unwrap()].matches('\n').count() + 1;
+    let at = format!("wide.toml:{line}:1: fit.covariance: diagonal 1");
+    assert!(e.starts_with(&at) && e.contains("more than 100 times"), "{e}");
+    std::fs::write(&path, bad).unwrap();
+    let o = bl_at(d.path(), &["run", "--config", "wide.toml"]);
+    assert_eq!(o.code, 2, "{}", o.stderr);
+}
