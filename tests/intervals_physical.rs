@@ -128,7 +128,10 @@ fn a_covariance_too_wide_to_mean_anything_is_refused_when_loaded() {
         .to_string();
     let line = bad[..bad.find("covariance").unwrap()].matches('\n').count() + 1;
     let at = format!("wide.toml:{line}:1: fit.covariance: diagonal 1");
-    assert!(e.starts_with(&at) && e.contains("more than 100 times"), "{e}");
+    assert!(
+        e.starts_with(&at) && e.contains("more than 100 times"),
+        "{e}"
+    );
     std::fs::write(&path, bad).unwrap();
     let o = bl_at(d.path(), &["run", "--config", "wide.toml"]);
     assert_eq!(o.code, 2, "{}", o.stderr);
