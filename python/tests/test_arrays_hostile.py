@@ -1,0 +1,21 @@
+"""Issue 54 item 9: an array of more dimensions than numpy broadcasts (64) came out of
+`impacts` as a RuntimeError (the boundary's word for a native failure); it is the argument's
+fault: ValueError naming it."""
+
+import numpy as np
+import pytest
+
+import bouncelab
+
+
+@pytest.mark.parametrize("ndim", [33, 64])
+def test_an_array_of_too_many_dimensions_is_named(ndim):
+    a = np.ones((1,) * ndim)
+    with pytest.raises(ValueError, match=rf"invalid m: an array of {ndim} dimensions"):
+        bouncelab.impacts(m=a, k_p=1e4, c=1.0, k_r=1e5, v0=1.0)
+
+
+def test_thirty_two_dimensions_still_broadcast():
+    a = np.ones((1,) * 32)
+    r = bouncelab.impacts(m=a, k_p=1e4, c=1.0, k_r=1e5, v0=1.0)
+    assert r["cor"].shape == a.shape
