@@ -31,6 +31,9 @@
 //! This is the one atomic writer of the program: preset files (`catalog::write`) go through
 //! it too.
 
+mod kind;
+pub use kind::{not_regular, refused_kind};
+
 use std::ffi::OsStr;
 use std::fs;
 use std::io::{self, Write};
@@ -138,7 +141,14 @@ impl Outputs {
             .collect();
         let mut published: Vec<PathBuf> = Vec::new();
         for (path, tmp) in self.staged {
-            let result = if self.force {
+            // a device, FIFO or socket is never replaced, also one that appeared after the
+            // command's check (`refused_kind`)
+            let result = if let Some(kind) = refused_kind(&path) {
+                Err(tempfile::PersistError {
+                    error: io::Error::new(io::ErrorKind::InvalidInput, not_regular(kind)),
+                    file: tmp,
+                })
+            } else if self.force {
                 tmp.persist(&path).map(drop)
             } else {
                 persist_new(tmp, &path)

@@ -27,7 +27,14 @@ pub enum Fault {
     /// sweeps' thread: `Tab` to the sweeps view), once a process, so that a test can see the
     /// view say its computation stopped and `R` retry it (tests/tui_worker_pty.rs).
     PanicInWorker,
+    /// `slow-start`: a command pauses [`START_PAUSE`] just after its signals are watched and
+    /// before its work, so that a test can signal it in its first moments
+    /// (tests/signals_early.rs).
+    SlowStart,
 }
+
+/// How long `slow-start` pauses.
+pub const START_PAUSE: std::time::Duration = std::time::Duration::from_millis(700);
 
 /// How long `pause-mid-save` sleeps: far longer than a test needs to send SIGKILL.
 pub const PAUSE: std::time::Duration = std::time::Duration::from_secs(30);
@@ -39,6 +46,7 @@ impl Fault {
             Fault::PauseMidSave => "pause-mid-save",
             Fault::SlowWork => "slow-work",
             Fault::PanicInWorker => "panic-in-worker",
+            Fault::SlowStart => "slow-start",
         }
     }
 

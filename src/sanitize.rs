@@ -85,9 +85,41 @@ pub fn first_control(s: &str, allowed: &[char]) -> Option<(usize, char)> {
         .find(|&(_, c)| control(c) && !allowed.contains(&c))
 }
 
-/// The first [`invisible`] character of `s`, and its char index.
+/// The first [`invisible`] or default-ignorable character of `s`, and its char index.
 pub fn first_invisible(s: &str) -> Option<(usize, char)> {
-    s.chars().enumerate().find(|&(_, c)| invisible(c))
+    s.chars()
+        .enumerate()
+        .find(|&(_, c)| invisible(c) || ignorable(c))
+}
+
+/// Whether `c` prints as nothing though it is no format character: Unicode's
+/// Default_Ignorable_Code_Point (DerivedCoreProperties.txt, Unicode 15.1: the Hangul fillers
+/// U+115F, U+1160, U+3164, U+FFA0, the variation selectors, U+034F, the tags, …) and the blank
+/// Braille pattern U+2800, which fonts draw empty. `golf` + U+115F listed as a second `golf`
+/// (issue 54 item 9; tests/field_names.rs). Written out by hand: `unicode-properties`, the crate
+/// the general category comes from, has no Default_Ignorable property.
+fn ignorable(c: char) -> bool {
+    matches!(
+        c as u32,
+        0x00AD
+            | 0x034F
+            | 0x061C
+            | 0x115F..=0x1160
+            | 0x17B4..=0x17B5
+            | 0x180B..=0x180F
+            | 0x200B..=0x200F
+            | 0x202A..=0x202E
+            | 0x2060..=0x206F
+            | 0x2800
+            | 0x3164
+            | 0xFE00..=0xFE0F
+            | 0xFEFF
+            | 0xFFA0
+            | 0xFFF0..=0xFFF8
+            | 0x1BCA0..=0x1BCA3
+            | 0x1D173..=0x1D17A
+            | 0xE0000..=0xE0FFF
+    )
 }
 
 /// A writer that passes text on with [`text`] applied. Bytes that are not UTF-8 pass

@@ -141,14 +141,21 @@ fn out_of_domain_numbers_are_named_at_their_cell() {
     let drops = fit("--drop-test");
     bad(
         "d.csv",
+        b"drop_height_m,rebound_height_m\n1e-300,0\n",
+        &drops("d.csv"),
+        &["d.csv:2:1: drop height 1e-300 m is out of the range"],
+    );
+    // a subnormal is refused where it is read (issue 54 item 7), at its cell
+    bad(
+        "d.csv",
         b"drop_height_m,rebound_height_m\n1e-310,0\n",
         &drops("d.csv"),
-        &["d.csv:2:1: drop height 1e-310 m is out of the range"],
+        &["d.csv:2:1: drop height 1e-310 is too small"],
     );
     bad(
         "d.csv",
-        b"drop_height_m,rebound_height_m\n1,1e-310\n",
+        b"drop_height_m,rebound_height_m\n1,1e-300\n",
         &drops("d.csv"),
-        &["d.csv:2:3: rebound height 1e-310 m is out of the range"],
+        &["d.csv:2:3: rebound height 1e-300 m is out of the range"],
     );
 }

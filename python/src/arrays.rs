@@ -62,6 +62,9 @@ fn real_array<'py>(
 
 /// Each argument (named by `names`) as a float64 array, and the shape they broadcast to
 /// (numpy's rules and errors).
+/// The most dimensions numpy's broadcasting takes.
+const MAX_DIMS: usize = 32;
+
 fn shapes<'py>(
     py: Python<'py>,
     names: &[&str],
@@ -73,6 +76,17 @@ fn shapes<'py>(
         .zip(args)
         .map(|(name, a)| real_array(&np, name, a))
         .collect::<PyResult<_>>()?;
+    // numpy broadcasts at most 32 dimensions (NPY_MAXARGS): a 64-dimensional array once
+    // reached its broadcast and came out as a RuntimeError (issue 54 item 9,
+    // tests/test_arrays_hostile.py); it is the argument's fault, named, ValueError
+    for (name, a) in names.iter().zip(&arrays) {
+        let ndim: usize = a.getattr("ndim")?.extract()?;
+        if ndim > MAX_DIMS {
+            return Err(pyo3::exceptions::PyValueError::new_err(format!(
+                "invalid {name}: an array of {ndim} dimensions (at most {MAX_DIMS} broadcast)"
+            )));
+        }
+    }
     let each: Vec<Bound<'py, PyAny>> = arrays
         .iter()
         .map(|a| a.getattr("shape"))

@@ -18,7 +18,8 @@ pub fn parse_correlate(text: &str) -> Result<Vec<(Varied, Varied, f64)>, McError
         let (names, rho) = item.split_once('=').ok_or_else(syntax)?;
         let (a, b) = names.split_once(':').ok_or_else(syntax)?;
         let param = |s: &str| Varied::parse(s).ok_or_else(|| McError::Unknown(s.trim().into()));
-        let rho = rho.trim().parse::<f64>().map_err(|_| syntax())?;
+        // the command line's reader: a ρ of 1e-400 is refused, never read as 0
+        let rho = crate::text::parse::read(rho).map_err(|_| syntax())?;
         out.push((param(a)?, param(b)?, rho));
     }
     if out.is_empty() {

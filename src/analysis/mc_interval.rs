@@ -28,10 +28,25 @@ pub fn mean_interval(n: usize, mean: f64, sd: f64) -> (f64, [f64; 2]) {
         return (f64::NAN, [f64::NAN; 2]);
     }
     let se = sd / (n as f64).sqrt();
-    let t = StudentsT::new(0.0, 1.0, (n - 1) as f64)
+    (se, [mean - t975(n - 1) * se, mean + t975(n - 1) * se])
+}
+
+/// Degrees of freedom from which t₀.₉₇₅ is the Cornish–Fisher series in 1/ν
+/// (`fit::stats::t975`, Abramowitz & Stegun 26.7.5, four terms: its error O(ν⁻⁵) is below
+/// 1e-19 here) rather than statrs' `inverse_cdf`, whose search never ended from about
+/// ν = 1.5·10⁷ (issue 54 item 1: `dask.monte_carlo` hung) and drifts before that: 6.5e-7
+/// above the series at ν = 3·10⁴, 7e-6 at 10⁵ (the series matches the tables, 1.962339081 at
+/// ν = 1000, to 1e-12). `the_means_interval_answers_at_any_n`.
+pub const SERIES_DOF: usize = 10_000;
+
+/// t₀.₉₇₅(ν): statrs' below [`SERIES_DOF`], the series from it (the two agree to 2e-13 there).
+fn t975(dof: usize) -> f64 {
+    if dof >= SERIES_DOF {
+        return super::fit::stats::t975(dof);
+    }
+    StudentsT::new(0.0, 1.0, dof as f64)
         .map(|d| d.inverse_cdf(1.0 - ALPHA / 2.0))
-        .unwrap_or(f64::NAN);
-    (se, [mean - t * se, mean + t * se])
+        .unwrap_or(f64::NAN)
 }
 
 /// The 0-based ranks (lo, hi) of the order statistics whose span is the 95 % interval of the
@@ -157,5 +172,52 @@ mod tests {
         assert!((hi - 1.0 - 2.262157 * se).abs() < 1e-6 * se);
         assert!((1.0 - lo - 2.262157 * se).abs() < 1e-6 * se);
         assert!(mean_interval(1, 1.0, 0.0).0.is_nan());
+    }
+
+    /// Issue 54 item 1: statrs' t quantile never returned from about 1.5·10⁷ samples up
+    /// (`dask.monte_carlo` hung, Ctrl-C could not stop it). From `SERIES_DOF` the series
+    /// answers, continuous with statrs at the switch, falling toward z₀.₉₇₅ = 1.959964.
+    #[test]
+    fn the_means_interval_answers_at_any_n() {
+        let (tx, rx) = std::sync::mpsc::channel();
+        std::thread::spawn(move || {
+            let t = |n: usize| {
+                let (se, [_, hi]) = mean_interval(n, 0.0, 1.0);
+                hi / se
+            };
+            let ns = [
+                2 * 10usize.pow(7),
+                10usize.pow(8),
+                10usize.pow(12),
+                usize::MAX,
+            ];
+            let _ = tx.send(ns.map(t));
+        });
+        let ts = rx
+            .recv_timeout(std::time::Duration::from_secs(20))
+            .expect("answers within 20 s");
+        let z = 1.959_963_984_540_054;
+        let mut last = f64::INFINITY;
+        for t in ts {
+            assert!(t >= z && t <= last && t - z < 1e-6, "{t}");
+            last = t;
+        }
+        // continuous at the switch: statrs just below, the series from it
+        let below = t975(SERIES_DOF - 1);
+        let from = t975(SERIES_DOF);
+        let statrs_there = StudentsT::new(0.0, 1.0, SERIES_DOF as f64)
+            .unwrap()
+            .inverse_cdf(1.0 - ALPHA / 2.0);
+        assert!(
+            (from - statrs_there).abs() < 1e-12,
+            "{from} vs {statrs_there}"
+        );
+        // at 10⁵ the series is its first order z + (z³ + z)/(4ν) to its second (3e-10);
+        // statrs' answer there was 7e-6 off it
+        let first = z + (z * z * z + z) / 4e5;
+        assert!((t975(100_000) - first).abs() < 1e-9, "{}", t975(100_000));
+        // one degree of freedom apart: dt/dν = −(z³ + z)/(4ν²) = −2.4e-8 at 10⁴
+        let step = (z * z * z + z) / (4.0 * 1e8);
+        assert!(((below - from) - step).abs() < 1e-11, "{below} {from}");
     }
 }

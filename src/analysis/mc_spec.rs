@@ -103,6 +103,9 @@ pub enum McError {
     /// A `--vary` entry without `=` or with a spread that is not a number.
     #[error("invalid vary: '{0}' is not NAME=SPREAD (e.g. k_p=5% or k_p=0.05)")]
     Syntax(String),
+    /// A spread that rounds to 0 or to a subnormal (`k_p=1e-400` once ran with a spread of 0).
+    #[error("invalid vary {0}: {1}")]
+    Underflow(&'static str, String),
     /// A spread below 0 or not finite.
     #[error("invalid vary {0}: {1} (the spread must be a finite number ≥ 0)")]
     Spread(&'static str, f64),
@@ -143,6 +146,7 @@ pub enum McError {
 
 /// `k_p=5%,c=0.05,…`: the parameters and their relative spreads, in [`Varied::ALL`]'s order.
 pub fn parse_vary(text: &str) -> Result<Vec<Spread>, McError> {
+    use crate::text::parse::refusal;
     let mut out: Vec<Spread> = Vec::new();
     for item in text.split(',').map(str::trim).filter(|s| !s.is_empty()) {
         let (name, value) = item
@@ -154,10 +158,20 @@ pub fn parse_vary(text: &str) -> Result<Vec<Spread>, McError> {
             Some(v) => (v.trim(), 0.01),
             None => (value, 1.0),
         };
-        let spread = number
-            .parse::<f64>()
-            .map_err(|_| McError::Syntax(item.into()))?
-            * scale;
+        // the command line's reader (`text::parse`): `1e-400` is refused, never a spread of 0
+        let typed = match crate::text::parse::read(number) {
+            Ok(x) => x,
+            Err(crate::text::parse::Refused::NotANumber) => {
+                return Err(McError::Syntax(item.into()));
+            }
+            Err(why) => return Err(McError::Underflow(what.name(), refusal(number, why))),
+        };
+        let spread = typed * scale;
+        if spread.is_subnormal() || (spread == 0.0 && typed != 0.0) {
+            // 1e-307% is 1e-309: held to fewer digits than typed
+            let why = crate::text::parse::Refused::Subnormal;
+            return Err(McError::Underflow(what.name(), refusal(value, why)));
+        }
         if out.iter().any(|s| s.what == what) {
             return Err(McError::Twice(what.name()));
         }

@@ -37,6 +37,25 @@ pub struct Overrides {
 }
 
 impl Overrides {
+    /// A derived group out of range (ζ, λ, z̄_p) named by the override the user gave for it:
+    /// `--damping 1e-5` said "invalid zeta" (issue 54 item 9; tests/field_names.rs). `None`
+    /// when no override sets the group's own parameter.
+    fn blamed(&self, e: &crate::model::params::ParamError) -> Option<BallError> {
+        let (field, value) = match e.field {
+            Field::Zeta => ("damping", self.damping?),
+            Field::Lambda => ("k_r", self.k_r?),
+            Field::ZpBar => ("z_p", self.z_p?),
+            _ => return None,
+        };
+        let group = e.field.as_str();
+        let derived = crate::text::number(e.value);
+        Some(BallError::Invalid {
+            field,
+            value,
+            reason: format!("gives {group} = {derived}: {}", e.reason),
+        })
+    }
+
     /// Whether any value is set.
     pub fn any(&self) -> bool {
         self.mass.is_some() || self.radius.is_some() || self.parameters()
@@ -122,7 +141,9 @@ impl Ball {
         params.validate().map_err(|error| {
             // a bad v0 or an overridden value comes from the caller; anything else from the
             // preset's set
-            if (error.field == Field::V0 && v0.is_some()) || overrides.any() {
+            if let Some(named) = overrides.blamed(&error) {
+                named
+            } else if (error.field == Field::V0 && v0.is_some()) || overrides.any() {
                 BallError::Param(error)
             } else {
                 BallError::Preset {

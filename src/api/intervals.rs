@@ -53,10 +53,20 @@ pub fn intervals(
     let y = outputs(params, law)?;
     let b = bands(params, fit, |p| Ok(outputs(p, law)?.to_vec()))?;
     Ok(Intervals {
-        cor_ci95: b[0],
-        max_force_ci95: b[1],
-        contact_time_ci95: y[2].is_finite().then_some(b[2]),
+        cor_ci95: clip(b[0], 0.0, 1.0),
+        max_force_ci95: clip(b[1], 0.0, f64::INFINITY),
+        contact_time_ci95: y[2].is_finite().then_some(clip(b[2], 0.0, f64::INFINITY)),
     })
+}
+
+/// A band held to what physics allows, [lo, hi]: the delta method's y ± t√Var is symmetric
+/// and knows no bounds, so three drops of a table-tennis ball gave a COR up to 1.0018 and a
+/// rebound above the drop, a huge `[fit]` covariance a COR of ±7e144 and negative contact
+/// times (issue 54 item 8; tests/intervals_physical.rs). A COR lies in [0, 1] (the ball
+/// gives back no more than it got: docs/model.md), forces and times are not negative, a
+/// rebound rises no higher than the drop. The nominal value itself is always inside.
+fn clip(band: [f64; 2], lo: f64, hi: f64) -> [f64; 2] {
+    [band[0].clamp(lo, hi), band[1].clamp(lo, hi)]
 }
 
 /// A watch that counts on from `before` steps (the bounces of the drops already run).
@@ -192,9 +202,17 @@ impl Ball {
                 |x: &crate::drop::Bounce| [x.cor, x.max_force, x.contact_time, x.rebound_height];
             Ok(run.bounces.iter().flat_map(per).collect())
         };
+        let (inf, top) = (f64::INFINITY, setup.height);
         Some(bands(&self.params, fit, outputs).map(|b| {
             b.chunks_exact(4)
-                .map(|c| [c[0], c[1], c[2], c[3]])
+                .map(|c| {
+                    [
+                        clip(c[0], 0.0, 1.0),
+                        clip(c[1], 0.0, inf),
+                        clip(c[2], 0.0, inf),
+                        clip(c[3], 0.0, top),
+                    ]
+                })
                 .collect()
         }))
     }

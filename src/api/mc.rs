@@ -147,10 +147,18 @@ impl Ball {
             }
         }
         let spec = McSpec::new(vary, Dist::Normal, samples, seed)?;
+        // the user gave no --correlate: a matrix that cannot be sampled is the fit's, named
+        // so (issue 54 item 9; tests/field_names.rs)
         Ok(if pairs.is_empty() {
             spec
         } else {
-            spec.with_correlation(pairs)?
+            spec.with_correlation(pairs).map_err(|e| match e {
+                McError::Correlate(_) => McError::Fit(format!(
+                    "the [fit] covariance of {} gives correlations no normal distribution has                      (not positive definite): refit the ball (`bouncelab fit … --save NAME`)",
+                    self.label()
+                )),
+                e => e,
+            })?
         })
     }
 }

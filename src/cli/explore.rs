@@ -8,7 +8,6 @@
 use super::ball::{self, BallArgs, LawArg, Overrides, PresetChoice, SourceArg};
 use crate::tui::app::App;
 use crate::tui::session::Session;
-use anyhow::Context;
 use clap::Args;
 
 /// The state options of the explorer, as `run` takes them.
@@ -84,8 +83,7 @@ impl ExplorerArgs {
         if let Some(option) = self.given().filter(|&o| o != "--session") {
             anyhow::bail!("{option}: --session restores the whole state; give one of them");
         }
-        let text = std::fs::read_to_string(path)
-            .with_context(|| format!("cannot read {}", path.display()))?;
+        let text = read_session(path)?;
         let session = Session::parse(path, &text).map_err(|e| anyhow::anyhow!(e))?;
         let entry = ball::select(Some(&session.ball.preset), None)?;
         let app = App::new(entry.preset, color)
@@ -114,4 +112,34 @@ impl ExplorerArgs {
         // `oblique`'s own checks and messages (tests/cli_explorer_oblique.rs)
         app.with_oblique(oblique).map_err(|e| anyhow::anyhow!(e))
     }
+}
+
+/// Largest session file read: a session is a page of TOML (a few KiB); 1 MiB leaves room.
+pub const MAX_SESSION_BYTES: u64 = 1 << 20;
+
+/// The text of a session file: a regular file (a FIFO once hung, /dev/zero reached 3 GB),
+/// at most [`MAX_SESSION_BYTES`], UTF-8, read as the data readers read
+/// (`measured::file::read_text`); missing, unreadable or not UTF-8 is bad input, exit 2,
+/// naming the file (tests/session_file.rs).
+fn read_session(path: &std::path::Path) -> anyhow::Result<String> {
+    let say = |msg: String| anyhow::anyhow!("--session {}: {msg}", path.display());
+    if let Ok(meta) = std::fs::metadata(path) {
+        if meta.is_dir() {
+            return Err(say("is a directory, not a session file".into()));
+        }
+        if !meta.is_file() {
+            return Err(say(
+                "is not a regular file (a FIFO, socket or device is not read)".into(),
+            ));
+        }
+        if meta.len() > MAX_SESSION_BYTES {
+            return Err(say(format!(
+                "is {} bytes; a session file is at most {MAX_SESSION_BYTES} bytes",
+                meta.len()
+            )));
+        }
+    }
+    // missing, unreadable, not UTF-8: `read_text`'s one line naming the file (no I/O error
+    // in the chain, so exit 2)
+    crate::measured::file::read_text(path).map_err(|e| anyhow::anyhow!("--session {e:#}"))
 }

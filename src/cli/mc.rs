@@ -67,7 +67,12 @@ pub struct McArgs {
     #[arg(long, value_name = "A:B=RHO,…", allow_hyphen_values = true)]
     pub correlate: Option<String>,
     /// Number of samples
-    #[arg(long, value_name = "N", default_value_t = 10_000)]
+    #[arg(
+        long,
+        value_name = "N",
+        default_value_t = 10_000,
+        allow_hyphen_values = true
+    )]
     pub samples: usize,
     /// Seed of the generator: the same seed gives the same answer on any number of threads
     #[arg(long, value_name = "S", default_value_t = 0)]

@@ -139,11 +139,20 @@ pub fn main() -> ExitCode {
         return explorer(cli.choice, &cli.explore, cli.measured)
             .map_or_else(exit::fail, |()| ExitCode::SUCCESS);
     }
+    // every command watches SIGINT, SIGTERM, SIGHUP and SIGQUIT from its start: one that came
+    // in its first moments, before any long work asked, once went unseen, the files written
+    // (exit 0), or SIGTERM ended it as 143 (issue 54 item 6; tests/signals_early.rs)
+    budget::interrupt_flag();
+    if crate::fault::Fault::SlowStart.active() {
+        std::thread::sleep(crate::fault::START_PAUSE);
+    }
     let stdout = io::stdout();
     // no control character reaches the terminal, whatever a preset or path holds
     let mut out = crate::sanitize::Writer::new(io::BufWriter::new(stdout.lock()));
     let result = dispatch(cli, &mut out).and_then(|()| out.flush().map_err(Into::into));
     match result {
+        // a command with nothing to publish that a signal came to still says so
+        Ok(()) if budget::interrupted() => exit::fail(budget::Interrupted.into()),
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => exit::fail(e),
     }
@@ -298,14 +307,15 @@ fn explorer(
     state: &explore::ExplorerArgs,
     measured: Option<PathBuf>,
 ) -> anyhow::Result<()> {
-    // the state's options (or session) are checked before the terminal, as `run` checks them
-    let (app, from_session) = state.app(&choice, crate::tui::color_wanted())?;
-    if let (Some(_), Some(m)) = (&from_session, &measured) {
+    // a session names its own measured file, or none (docs/explorer.md, Sessions)
+    if let (Some(_), Some(m)) = (&state.session, &measured) {
         anyhow::bail!(
-            "--measured {}: the session names its measured file",
+            "--measured {}: --session restores the whole state; give one of them",
             m.display()
         );
     }
+    // the state's options (or session) are checked before the terminal, as `run` checks them
+    let (app, from_session) = state.app(&choice, crate::tui::color_wanted())?;
     let measured = measured.or(from_session);
     // a measured file is read and checked before anything else is asked of the user
     let data = match &measured {

@@ -7,6 +7,8 @@
 //!
 //! - a target given twice: "X is given twice: each output needs a file of its own", exit 2;
 //! - a directory: "X is a directory, not a file", exit 2;
+//! - a device, FIFO or socket, with `--force` too: "X is a character device, not a regular
+//!   file (outputs replace regular files only)", exit 2 (`atomic::refused_kind`);
 //! - an existing file (a symbolic link too, dangling or not) without `--force`: "X exists (use
 //!   --force to overwrite it)", exit 2;
 //! - a missing folder: "cannot write X: no such directory D", exit 2 (the user's path);
@@ -43,6 +45,10 @@ fn check_one(p: &Path, force: bool) -> anyhow::Result<()> {
     if p.is_dir() {
         anyhow::bail!("{} is a directory, not a file", p.display());
     }
+    // with --force or without: a device, FIFO or socket is named for what it is
+    if let Some(kind) = atomic::refused_kind(p) {
+        anyhow::bail!("{} is {}", p.display(), atomic::not_regular(kind));
+    }
     // a symbolic link is an existing entry, dangling or looping too: without --force it is
     // not replaced, with it the link itself is (the rename replaces the name)
     if std::fs::symlink_metadata(p).is_ok() && !force {
@@ -72,6 +78,9 @@ pub fn commit(files: Outputs) -> anyhow::Result<Vec<PathBuf>> {
     files.commit().map_err(|e| {
         if e.exists {
             anyhow::anyhow!("{e}")
+        } else if e.error.kind() == io::ErrorKind::InvalidInput {
+            // a target that became a device, FIFO or socket: bad input, as at the check
+            anyhow::anyhow!("{}: {}", e, e.error)
         } else {
             anyhow::Error::new(e)
         }
@@ -89,6 +98,10 @@ pub fn report_then_commit(
     report: &[u8],
     files: Outputs,
 ) -> anyhow::Result<Vec<PathBuf>> {
+    // a signal during the work: neither the report nor the files (exit 130)
+    if super::budget::interrupted() {
+        return Err(super::budget::Interrupted.into());
+    }
     match out.write_all(report).and_then(|()| out.flush()) {
         Ok(()) => commit(files),
         Err(e) if e.kind() == io::ErrorKind::BrokenPipe => {

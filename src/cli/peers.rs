@@ -164,6 +164,13 @@ impl PeersArgs {
 }
 
 pub fn run(a: &PeersArgs, out: &mut dyn Write) -> anyhow::Result<()> {
+    // clap's `requires = "export"` is not held once `--format` (which conflicts with --export)
+    // is given: `--format json --friction 0.5` ignored the friction (tests/peers_flags.rs)
+    if a.export.is_none() && a.friction.is_some() {
+        anyhow::bail!(
+            "--friction adds the tangential model to an export: give --export lammps|mujoco|json"
+        );
+    }
     let b = a.ball.resolve(a.v0)?;
     let (b, pair) = match a.pair_name()? {
         Some(name) => pair_ball(a, b, name)?,

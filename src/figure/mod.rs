@@ -25,6 +25,7 @@ pub mod look;
 pub mod overlay;
 pub mod paper;
 pub mod peers;
+pub mod reduce;
 pub mod report;
 pub mod room;
 pub mod shot;

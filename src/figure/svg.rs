@@ -22,6 +22,8 @@ mod legend;
 
 /// Picture size in CSS pixels: the aspect of a journal figure, wide enough for the legend.
 pub const WIDTH: u32 = 800;
+// the reduction's columns are this picture's pixel columns (`reduce::COLUMNS`)
+const _: () = assert!(super::reduce::COLUMNS == WIDTH as usize);
 /// Picture height in CSS pixels.
 pub const HEIGHT: u32 = 560;
 /// Drawing units per CSS pixel.
@@ -326,6 +328,9 @@ pub fn render(fig: &Figure) -> Result<String, RenderError> {
 /// the other (`fit --plot`) take the widest of their [`label_area`]s, so that their plots
 /// start at one x and share the x axis (tests/figure_room.rs).
 pub fn render_aligned(fig: &Figure, left: i32) -> Result<String, RenderError> {
+    // long measured lines drawn as what the picture can show, saying so (`reduce`)
+    let reduced = super::reduce::reduced(fig, &ticks(fig, true, Room::Picture));
+    let fig = reduced.as_ref().unwrap_or(fig);
     let mut buf = String::new();
     {
         let size = (

@@ -79,12 +79,35 @@ pub fn parse_oblique(text: &str) -> Result<Vec<ObliqueRow>, MeasuredError> {
         if v0 <= 0.0 {
             return Err(at(0, i, format!("v0 {v0} must be positive")));
         }
+        // a speed no impact runs at is the cell's fault (exit 2 at its place), not the fit's
+        // "no starting point" (exit 1; issue 54 item 9, tests/field_names.rs)
+        use crate::model::params::MEANINGFUL_MIN;
+        if v0 < MEANINGFUL_MIN {
+            return Err(at(
+                0,
+                i,
+                format!(
+                    "v0 {} is out of the range a measurement can have (1e-15 … 1e9)",
+                    crate::text::number(v0)
+                ),
+            ));
+        }
         let angle_deg = finite(1, i)?;
         if !(angle_deg > 0.0 && angle_deg <= 90.0) {
             return Err(at(
                 1,
                 i,
                 format!("angle_deg {angle_deg} must lie in (0, 90]"),
+            ));
+        }
+        if v0 * angle_deg.to_radians().sin() < MEANINGFUL_MIN {
+            return Err(at(
+                1,
+                i,
+                format!(
+                    "angle_deg {}: the normal speed v0 sin θ falls below 1e-15 m/s",
+                    crate::text::number(angle_deg)
+                ),
             ));
         }
         let vy_out = finite(4, i)?;

@@ -152,9 +152,23 @@ impl Oblique {
         if !(k.is_finite() && k > 0.0) {
             return Err(invalid("tangential_stiffness", k, "must be positive"));
         }
+        // bounded as K_p is (`model::checks::POSITIVE_RANGE`): 1e308 once overflowed the
+        // search grid's length (tests/oblique_bounded.rs)
+        use crate::model::params::{MEANINGFUL_MAX, MEANINGFUL_MIN};
+        if !(MEANINGFUL_MIN..=MEANINGFUL_MAX).contains(&k) {
+            return Err(invalid(
+                "tangential_stiffness",
+                k,
+                "out of the physically meaningful range 1e-15 … 1e15 N/m",
+            ));
+        }
         let c = self.tangential_damping;
-        if !(c.is_finite() && c >= 0.0) {
-            return Err(invalid("tangential_damping", c, "must be finite and ≥ 0"));
+        if !(c.is_finite() && (0.0..=MEANINGFUL_MAX).contains(&c)) {
+            return Err(invalid(
+                "tangential_damping",
+                c,
+                "must be finite, ≥ 0 and ≤ 1e15 kg/s",
+            ));
         }
         let kappa = self.inertia_factor;
         if !(kappa > 0.0 && kappa <= 1.0) {

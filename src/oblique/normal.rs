@@ -64,6 +64,16 @@ impl NormalAt {
         } else {
             (v * theta.sin(), v * theta.cos())
         };
+        // a normal speed below the meaningful range is the angle's doing when v is in it:
+        // `--angle 1e-15` said "invalid v0: 1.2e-16" (issue 54 item 9; tests/field_names.rs)
+        use crate::model::params::MEANINGFUL_MIN;
+        if vy < MEANINGFUL_MIN && v >= MEANINGFUL_MIN && v.is_finite() {
+            return Err(super::invalid(
+                "angle",
+                angle_deg,
+                "the normal speed v sin θ falls below 1e-15 m/s: give a larger angle",
+            ));
+        }
         let params = ImpactParams { v0: vy, ..*params };
         // The linear law's normal motion in closed form where it answers (`closed`: a fifth of
         // the exact solver's instructions), else the solver's flow; at 90° always the solver's,
@@ -147,6 +157,7 @@ impl NormalAt {
         }
         let s = Scaled::of(&self.params, oblique);
         let (vx_n, w_n) = (self.vx / self.vy, oblique.radius * oblique.spin / self.vy);
+        bounded(&s, oblique, self.path.end())?;
         let grid = self.grid_for(&s);
         let run = tangential::run(&self.path, &grid, &s, vx_n - w_n)?;
         let answer = energy::Answer {
@@ -160,6 +171,26 @@ impl NormalAt {
         Ok(answer.response(&self.path, run, self.normal.clone(), samples))
     }
 }
+
+/// The refusal of a tangential motion whose search grid would pass [`MAX_GRID`] points: the
+/// grid steps a fifth of the sticking oscillation's radian, ω̃_t = √(K_t/K_p·(1 + 1/κ)), so a
+/// tiny κ or a huge K_t once asked 10⁸ points (3 GB) or more (tests/oblique_bounded.rs). The
+/// field named is the factor that drives ω̃_t most: 1/κ or K_t/K_p.
+fn bounded(s: &Scaled, oblique: &Oblique, tf: f64) -> Result<(), ObliqueError> {
+    if Grid::steps(s, tf) <= MAX_GRID as f64 {
+        return Ok(());
+    }
+    let reason = "too fast a sticking oscillation: √(K_t/K_p·(1 + 1/κ)) asks more than 200000 \
+                  search steps in one contact (docs/oblique.md §2)";
+    Err(if 1.0 / s.kappa > s.kt {
+        super::invalid("inertia_factor", oblique.inertia_factor, reason)
+    } else {
+        super::invalid("tangential_stiffness", oblique.tangential_stiffness, reason)
+    })
+}
+
+/// Most points of the tangential search's grid (24 B each: 4.8 MB, a few ms to read).
+pub const MAX_GRID: usize = 200_000;
 
 /// The normal motion a [`NormalAt`] holds: the closed form, or a solver's flow.
 // one a `NormalAt`, read at every point of its impacts: kept inline, not boxed

@@ -201,6 +201,11 @@ impl Grid {
         step(s, tf)
     }
 
+    /// The grid's number of steps for `s` over a contact of τ_f (a float: it may be huge).
+    pub(crate) fn steps(s: &Scaled, tf: f64) -> f64 {
+        tf / step(s, tf)
+    }
+
     /// The step.
     pub(crate) fn h(&self) -> f64 {
         self.h

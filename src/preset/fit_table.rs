@@ -109,6 +109,7 @@ pub(super) fn check(p: &Preset) -> Result<(), Bad> {
         }
     }
     covariance(&f.covariance, n)?;
+    widths(&f.covariance, &seen, &f.values)?;
     if f.dof == 0 {
         return Err(bad("dof", "must be at least 1".into()));
     }
@@ -137,6 +138,33 @@ fn adopted(a: &Adopted, q: Param) -> f64 {
         // refused by `check` before it asks
         Param::V0 => nan,
     }
+}
+
+/// The widest a parameter's standard deviation may be in a `[fit]` table, as a multiple of its
+/// value. A fit exits 0, and `--save` writes its table, only when each 95 % interval spans at
+/// most a factor 100 (`fit::verdict::PIN_RATIO`): 2·t·se ≤ ln 100 in ln p, so se ≤ 1.17 and
+/// the saved relative standard deviation (p·se, the delta method) is at most 1.17. A table
+/// wider than 100 was not written by a fit, and its intervals mean nothing (a COR of ±7e144
+/// once: issue 54 item 8, tests/intervals_physical.rs).
+pub const MAX_RELATIVE_SD: f64 = 100.0;
+
+/// Each parameter's standard deviation within [`MAX_RELATIVE_SD`] of its value.
+fn widths(c: &[Vec<f64>], names: &[Param], values: &[f64]) -> Result<(), Bad> {
+    for (i, (q, &v)) in names.iter().zip(values).enumerate() {
+        let sd = c[i][i].sqrt();
+        if sd > MAX_RELATIVE_SD * v {
+            let msg = format!(
+                "diagonal {}: the standard deviation {} of {} = {} is more than {} times its                  value: no interval drawn from it means anything (fit --save writes none this                  wide)",
+                i + 1,
+                number(sd),
+                q.name(),
+                number(v),
+                MAX_RELATIVE_SD
+            );
+            return Err(bad("covariance", msg));
+        }
+    }
+    Ok(())
 }
 
 fn covariance(c: &[Vec<f64>], n: usize) -> Result<(), Bad> {

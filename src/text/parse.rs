@@ -3,8 +3,10 @@
 //! (tests/cli_guarantees.rs, `numbers_are_read_as_typed`):
 //!
 //! - `-0` is read as `0`: a negative zero would otherwise reach the CSV and JSON as `-0`;
-//! - a literal that is not zero but rounds to zero (`1e-400`) is refused, as one that rounds to
-//!   a subnormal (`1e-320`) is refused by the range checks: neither is silently replaced;
+//! - a literal that is not zero but rounds to zero (`1e-400`) is refused, and so is one that
+//!   rounds to a subnormal (`1e-320`, held to fewer digits than typed): neither is silently
+//!   replaced, also where no range check would catch it (`--spin`, `--friction`, a spread;
+//!   issue 54 item 7, tests/numbers_as_typed.rs);
 //! - `inf`, `-inf` and `nan` are numbers (the range checks then refuse them, naming the
 //!   field); the arguments that use this parser also set `allow_hyphen_values`, so clap does
 //!   not take `-inf` for an option.
@@ -16,6 +18,9 @@ pub enum Refused {
     NotANumber,
     /// A literal that is not zero but rounds to zero (`1e-400`).
     RoundsToZero,
+    /// A literal that rounds to a subnormal (`1e-320`): below f64::MIN_POSITIVE ≈ 2.2e-308
+    /// a number keeps fewer than 16 digits.
+    Subnormal,
 }
 
 /// The number `text` (trimmed) holds, by the rules of this module: one reader for the command
@@ -30,6 +35,9 @@ pub fn read(text: &str) -> Result<f64, Refused> {
         }
         return Ok(0.0);
     }
+    if x.is_subnormal() {
+        return Err(Refused::Subnormal);
+    }
     Ok(x)
 }
 
@@ -40,6 +48,9 @@ pub fn refusal(shown: &str, why: Refused) -> String {
         Refused::RoundsToZero => format!(
             "{shown} is too small: it rounds to 0 (numbers below about 1e-308 cannot be held)"
         ),
+        Refused::Subnormal => format!(
+            "{shown} is too small: below about 2.2e-308 a number is not held to the digits typed"
+        ),
     }
 }
 
@@ -47,7 +58,7 @@ pub fn refusal(shown: &str, why: Refused) -> String {
 pub fn number(text: &str) -> Result<f64, String> {
     read(text).map_err(|why| match why {
         Refused::NotANumber => refusal(&crate::sanitize::line(text), why),
-        Refused::RoundsToZero => refusal(text.trim(), why),
+        Refused::RoundsToZero | Refused::Subnormal => refusal(text.trim(), why),
     })
 }
 
@@ -69,7 +80,9 @@ mod tests {
         assert_eq!(number("0").unwrap(), 0.0);
         assert!(number("1e-400").unwrap_err().contains("rounds to 0"));
         assert!(number("-5e-999").unwrap_err().contains("rounds to 0"));
-        assert_eq!(number("1e-320").unwrap(), 1e-320);
+        assert!(number("1e-320").unwrap_err().contains("too small"));
+        assert!(number("-2.2e-308").unwrap_err().contains("too small"));
+        assert_eq!(number("2.3e-308").unwrap(), 2.3e-308);
         assert_eq!(number("-inf").unwrap(), f64::NEG_INFINITY);
         assert!(number("nan").unwrap().is_nan());
         assert!(number("abc").is_err());
