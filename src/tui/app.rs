@@ -22,6 +22,7 @@ mod refresh;
 mod scene;
 mod screen;
 mod stopped;
+mod undone;
 
 use super::action::{Action, Mode};
 use super::compute::{self, ZetaCurve};

@@ -45,9 +45,10 @@ impl App {
             Action::Unpin => self.unpin(),
             Action::Undo => match self.undo.pop() {
                 Some(previous) => {
+                    let said = self.undone_text(&previous);
                     self.setting = previous.setting;
                     self.oblique.set_values(previous.oblique);
-                    self.info("undone".into());
+                    self.info(said);
                 }
                 None => self.warn("nothing to undo".into()),
             },
