@@ -66,6 +66,9 @@ pub struct App {
     /// The pinned runs, oldest first (at most [`MAX_PINS`]).
     pub(in crate::tui) pins: Vec<Ghost>,
     pub(in crate::tui) undo: Vec<Undoable>,
+    /// The setting and oblique values as the explorer started or last saved them (`S`):
+    /// `q` asks before losing a change from them (src/tui/app/quit.rs).
+    pub(in crate::tui) kept: Undoable,
     pub(in crate::tui) quit: bool,
     /// The impact for `run_for`.
     pub(in crate::tui) run: Option<ImpactResponse>,
@@ -119,9 +122,14 @@ impl App {
             }
         };
         let setting = Setting::from_preset(index, &presets[index]);
+        let kept = Undoable {
+            setting: setting.clone(),
+            oblique: Default::default(),
+        };
         let mut app = App {
             presets,
             setting,
+            kept,
             selected: Param::Lambda,
             coarse: false,
             view: View::Impact,
@@ -152,6 +160,7 @@ impl App {
             charts: Default::default(),
             oblique: Default::default(),
         };
+        app.keep();
         app.refresh();
         app
     }
@@ -181,7 +190,10 @@ impl App {
     /// Apply one action without recomputing: for a batch of queued events, `apply` each, then
     /// [`App::refresh`] once.
     pub fn apply(&mut self, action: Action) -> Vec<Effect> {
-        if self.too_small() && !App::acts_when_too_small(&action) {
+        // `n` leaves `q`'s question on the small screen (and closes nothing else unseen)
+        let leaves_question =
+            action == Action::CloseHelp && matches!(self.overlay, Overlay::Quit(_));
+        if self.too_small() && !App::acts_when_too_small(&action) && !leaves_question {
             return Vec::new();
         }
         if !answers::keeps_message(&action) {

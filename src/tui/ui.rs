@@ -274,7 +274,11 @@ impl Widget for &App {
     fn render(self, area: Rect, buf: &mut Buffer) {
         let area = area.intersection(buf.area);
         let Some(s) = screen(self, area) else {
-            let text = format!("enlarge the terminal: at least {MIN_WIDTH}×{MIN_HEIGHT}");
+            let mut text = format!("enlarge the terminal: at least {MIN_WIDTH}×{MIN_HEIGHT}");
+            // `q` asked, with no room for its dialog: the question here
+            if let Overlay::Quit(lost) = self.overlay() {
+                text = format!("Quit and lose {lost}? q or y quits · n stays. {text}");
+            }
             Paragraph::new(Line::raw(text))
                 .wrap(Wrap { trim: true })
                 .render(area, buf);
