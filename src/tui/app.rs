@@ -8,6 +8,7 @@
 //! each view's part is in its folder's `update.rs` (src/tui/views/).
 
 mod answers;
+mod ask;
 mod charts;
 mod command;
 mod crosshair;
@@ -27,11 +28,12 @@ mod undone;
 use super::action::{Action, Mode};
 use super::compute::{self, ZetaCurve};
 pub use super::effect::Effect;
+pub use ask::put_away_what;
 use super::export;
 use super::param::Param;
 use super::save::SaveRequest;
 pub use super::state::{
-    Confirm, Ghost, Input, MAX_PINS, Message, Overlay, Purpose, Setting, Severity, View,
+    Ask, Confirm, Ghost, Input, MAX_PINS, Message, Overlay, Purpose, Setting, Severity, View,
 };
 use crate::model::contact::ContactLaw;
 use crate::model::params::ImpactParams;
@@ -48,6 +50,9 @@ const UNDO_DEPTH: usize = 500;
 pub(in crate::tui) struct Undoable {
     pub setting: Setting,
     pub oblique: crate::tui::views::oblique::state::ObliqueValues,
+    /// The measured data and fit `O` put away (`u` puts them back); `None` for a change of
+    /// the setting alone.
+    pub measured: Option<Box<crate::tui::views::fit::state::FitState>>,
 }
 
 /// The explorer.
@@ -125,6 +130,7 @@ impl App {
         let kept = Undoable {
             setting: setting.clone(),
             oblique: Default::default(),
+            measured: None,
         };
         let mut app = App {
             presets,

@@ -12,7 +12,8 @@ pub(super) fn is_answer(action: &Action) -> bool {
     matches!(
         action,
         Action::SessionSaved(_)
-            | Action::SessionFailed(_)
+            | Action::SessionExists { .. }
+            | Action::SessionFailed { .. }
             | Action::PresetsListed(..)
             | Action::SpeedReady(..)
             | Action::ModelsReady(..)
@@ -58,7 +59,8 @@ impl App {
                     path.display()
                 ))
             }
-            Action::SessionFailed(why) => self.error(format!("session not saved: {why}")),
+            Action::SessionExists { path, text } => self.ask_session_overwrite(path, text),
+            Action::SessionFailed { path, why } => self.session_failed(&path, why),
             Action::PresetsListed(..) => self.picker(action),
             Action::SpeedReady(request, result) => self.receive_speed(&request, result),
             Action::ModelsReady(request, result) => self.receive_models(request, result),

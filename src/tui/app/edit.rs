@@ -48,6 +48,9 @@ impl App {
                     let said = self.undone_text(&previous);
                     self.setting = previous.setting;
                     self.oblique.set_values(previous.oblique);
+                    if let Some(m) = previous.measured {
+                        self.put_back(*m);
+                    }
                     self.info(said);
                 }
                 None => self.warn("nothing to undo".into()),
@@ -127,6 +130,7 @@ impl App {
         self.undo.push(Undoable {
             setting: self.setting.clone(),
             oblique: self.oblique.values(),
+            measured: None,
         });
     }
 

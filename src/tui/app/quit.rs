@@ -20,6 +20,7 @@ impl App {
         self.kept = Undoable {
             setting: self.setting.clone(),
             oblique: self.oblique.values(),
+            measured: None,
         };
     }
 

@@ -88,6 +88,9 @@ impl App {
                 parts.push(change(p.symbol(), p.unit().trim(), a, b));
             }
         }
+        if let Some(m) = &then.measured {
+            parts.insert(0, super::ask::put_away_what(m) + " put back");
+        }
         match parts.len() {
             0 => "undone".into(),
             1..=3 => format!("undone: {}", parts.join(", ")),
