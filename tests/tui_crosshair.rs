@@ -189,3 +189,21 @@ fn the_peak_force_and_contact_time_labels_are_never_cut() {
         }
     }
 }
+
+/// `x`, `N`, `+`, `-` in the oblique and drop views say where the numbers are, not that the
+/// view has no chart — it has (issue 51 item 3: "the oblique view has no chart to read").
+#[test]
+fn chart_keys_say_what_works_where_they_do_not_read() {
+    for view_key in ['i', 'd'] {
+        let mut app = App::new(Preset::embedded().remove(1), false);
+        press(&mut app, &[KeyCode::Char(view_key)]);
+        for k in ['x', 'N', '+', '-'] {
+            press(&mut app, &[KeyCode::Char(k)]);
+            let said = app.message().map(|m| m.text.clone()).unwrap_or_default();
+            assert!(
+                !said.contains("no chart") && said.contains("readout"),
+                "{view_key} {k}: {said}"
+            );
+        }
+    }
+}
