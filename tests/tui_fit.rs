@@ -406,15 +406,30 @@ fn o_asks_before_putting_away_and_u_puts_back() {
         t.draw(|f| f.render_widget(&app, f.area())).unwrap();
         t
     };
-    let screen: String = t.backend().buffer().content().iter().map(|c| c.symbol()).collect();
-    assert!(screen.contains("Put away the measured data and the fit?"), "{screen}");
+    let screen: String = t
+        .backend()
+        .buffer()
+        .content()
+        .iter()
+        .map(|c| c.symbol())
+        .collect();
+    assert!(
+        screen.contains("Put away the measured data and the fit?"),
+        "{screen}"
+    );
     app.update(Action::ConfirmNo);
-    assert_eq!((app.loaded().cloned(), app.fit_pane().cloned()), (data.clone(), pane.clone()));
+    assert_eq!(
+        (app.loaded().cloned(), app.fit_pane().cloned()),
+        (data.clone(), pane.clone())
+    );
     app.update(Action::ClearMeasured);
     app.update(Action::ConfirmYes);
     assert!(app.loaded().is_none() && app.fit_pane().is_none());
     app.update(Action::Undo);
-    assert_eq!((app.loaded().cloned(), app.fit_pane().cloned()), (data, pane));
+    assert_eq!(
+        (app.loaded().cloned(), app.fit_pane().cloned()),
+        (data, pane)
+    );
     let said = app.message().unwrap().text.clone();
     assert_eq!(said, "undone: measured data and the fit put back");
 }

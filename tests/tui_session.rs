@@ -215,7 +215,10 @@ fn s_onto_an_existing_file_asks_and_a_failed_write_keeps_the_entry() {
     });
     assert!(matches!(a.overlay(), Overlay::Ask(Ask::Session { .. })));
     let screen = screen_text(&draw(&a, 100, 30)).join("\n");
-    assert!(screen.contains("overwrite it with this session? y/n"), "{screen}");
+    assert!(
+        screen.contains("overwrite it with this session? y/n"),
+        "{screen}"
+    );
     let effects = a.update(Action::ConfirmYes);
     assert!(
         matches!(

@@ -142,7 +142,12 @@ fn misplaced(labels: &[Label]) -> Vec<String> {
             let at = mc + slope * (v - mv);
             at < a - 1.0 || at > b + 1.0
         })
-        .map(|&(v, a, b)| format!("{v} at {a}…{b}, its value's place {:.1}", mc + slope * (v - mv)))
+        .map(|&(v, a, b)| {
+            format!(
+                "{v} at {a}…{b}, its value's place {:.1}",
+                mc + slope * (v - mv)
+            )
+        })
         .collect()
 }
 

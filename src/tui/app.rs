@@ -28,7 +28,6 @@ mod undone;
 use super::action::{Action, Mode};
 use super::compute::{self, ZetaCurve};
 pub use super::effect::Effect;
-pub use ask::put_away_what;
 use super::export;
 use super::param::Param;
 use super::save::SaveRequest;
@@ -41,6 +40,7 @@ use crate::preset::Preset;
 use crate::solver::ImpactResponse;
 use crate::tui::views::drop::state::DropView;
 use crate::tui::views::sweeps::speed::{SpeedCurve, SpeedRequest};
+pub use ask::put_away_what;
 
 /// How many changes `u` can undo.
 const UNDO_DEPTH: usize = 500;

@@ -250,9 +250,7 @@ fn render_overlay(app: &App, theme: Theme, area: Rect, buf: &mut Buffer) {
         }
         .render(area, buf),
         Overlay::Confirm(confirm) => ConfirmDialog { confirm, theme }.render(area, buf),
-        Overlay::Ask(ask) => {
-            super::widgets::confirm::AskDialog { ask, theme }.render(area, buf)
-        }
+        Overlay::Ask(ask) => super::widgets::confirm::AskDialog { ask, theme }.render(area, buf),
         Overlay::Command(line) => CommandBox {
             line,
             copied: app.osc52(),

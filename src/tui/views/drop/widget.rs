@@ -7,11 +7,11 @@ use crate::drop::standards::Test;
 use crate::figure::{
     Axis as FigAxis, Figure, GREY, Look, Marker as Glyph, Role, Series, Style as Stroke, Tone,
 };
-use crate::tui::widgets::plot::Plot;
 use crate::text::sig;
 use crate::tui::format::fit_lines;
 use crate::tui::theme::Theme;
 use crate::tui::views::drop::state::DropView;
+use crate::tui::widgets::plot::Plot;
 use ratatui::buffer::Buffer;
 use ratatui::layout::{Constraint, Layout, Rect};
 use ratatui::style::Color;
@@ -84,7 +84,8 @@ pub fn height_figure(d: &DropView) -> Figure {
         let mut flown: Vec<(f64, f64)> = all.iter().copied().filter(|p| p.0 <= d.t).collect();
         let now = (d.t, d.height_now());
         flown.push(now);
-        series.push(Series::new("", "sequence", Role::Pinned, Stroke::Solid, GREY).with_points(all));
+        series
+            .push(Series::new("", "sequence", Role::Pinned, Stroke::Solid, GREY).with_points(all));
         series.push(
             Series::new("", "flown", Role::Model, Stroke::Solid, 0)
                 .with_points(flown)
