@@ -207,3 +207,16 @@ fn chart_keys_say_what_works_where_they_do_not_read() {
         }
     }
 }
+
+/// A chart named in a message is named as its frame names it, not by its export file name
+/// (issue 51 item 4: "peers-cor-velocity: only force charts normalize").
+#[test]
+fn chart_messages_name_the_chart_as_its_frame_does() {
+    let mut app = App::new(Preset::embedded().remove(1), false);
+    press(&mut app, &[KeyCode::Tab, KeyCode::Tab, KeyCode::Char('N')]);
+    let said = app.message().map(|m| m.text.clone()).unwrap_or_default();
+    assert!(said.contains("only force charts normalize"), "{said}");
+    assert!(!said.contains("peers-") && !said.contains("velocity"), "{said}");
+    let title = bouncelab::tui::ui::figure(&app, Chart::ModelsCorSpeed).screen_title;
+    assert!(said.starts_with(title.split(" · ").next().unwrap()), "{said} / {title}");
+}

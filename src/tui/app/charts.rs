@@ -18,7 +18,7 @@ impl App {
             return self.warn(self.no_chart_keys());
         };
         let now = self.charts.get(chart);
-        let name = chart.file_name();
+        let name = self.chart_name(chart);
         let next = match action {
             Action::Normalize if !normalizable(chart) => {
                 return self.warn(format!(
@@ -78,6 +78,21 @@ impl App {
                  and models views' charts",
                 self.view.title()
             ),
+        }
+    }
+}
+
+impl App {
+    /// A chart's name as its frame shows it ("COR vs speed", "Force–time"), never the
+    /// export's file name ("peers-cor-velocity": issue 51 item 4, no internal names on screen;
+    /// tests/tui_crosshair.rs: `chart_keys_say_what_works_where_they_do_not_read`).
+    fn chart_name(&self, chart: crate::figure::explorer::Chart) -> String {
+        let title = crate::tui::ui::figure(self, chart).screen_title;
+        let first = title.split(" · ").next().unwrap_or(&title).trim();
+        if first.is_empty() {
+            "this chart".into()
+        } else {
+            first.to_string()
         }
     }
 }
