@@ -216,7 +216,13 @@ fn chart_messages_name_the_chart_as_its_frame_does() {
     press(&mut app, &[KeyCode::Tab, KeyCode::Tab, KeyCode::Char('N')]);
     let said = app.message().map(|m| m.text.clone()).unwrap_or_default();
     assert!(said.contains("only force charts normalize"), "{said}");
-    assert!(!said.contains("peers-") && !said.contains("velocity"), "{said}");
+    assert!(
+        !said.contains("peers-") && !said.contains("velocity"),
+        "{said}"
+    );
     let title = bouncelab::tui::ui::figure(&app, Chart::ModelsCorSpeed).screen_title;
-    assert!(said.starts_with(title.split(" · ").next().unwrap()), "{said} / {title}");
+    assert!(
+        said.starts_with(title.split(" · ").next().unwrap()),
+        "{said} / {title}"
+    );
 }
