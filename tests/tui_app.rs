@@ -427,3 +427,34 @@ fn four_says_why_it_loads_nothing() {
     press(&mut app, &[KeyCode::Char('1'), KeyCode::Char('4')]);
     assert!(app.message().unwrap().text.contains("loaded tennis"));
 }
+
+/// `u` says what it undid, from what it was to what it is again, in the readout's units
+/// (issue 51 item 2: it said "undone" alone).
+#[test]
+fn u_says_what_it_undid() {
+    let said = |app: &App| app.message().map(|m| m.text.clone()).unwrap_or_default();
+    let mut app = superball();
+    let m0 = app.setting().params.mass;
+    // the mass typed in the form: its value in g both ways
+    press(&mut app, &chars("m"));
+    press(&mut app, &[KeyCode::Enter]);
+    app.update(Action::InputClear);
+    press(&mut app, &chars("0.05"));
+    press(&mut app, &[KeyCode::Enter, KeyCode::Esc]);
+    assert_eq!(app.setting().params.mass, 0.05);
+    press(&mut app, &chars("u"));
+    let text = said(&app);
+    let want = format!(
+        "undone: m 50.00 → {} g",
+        bouncelab::tui::format::value(m0 * 1e3)
+    );
+    assert!(text.starts_with(&want), "{text} / {want}");
+    // the law
+    press(&mut app, &chars("c"));
+    press(&mut app, &chars("u"));
+    assert!(said(&app).starts_with("undone: law "), "{}", said(&app));
+    // an oblique input
+    press(&mut app, &chars("ia"));
+    press(&mut app, &chars("u"));
+    assert_eq!(said(&app), "undone: θ 17.00 → 16.00°");
+}

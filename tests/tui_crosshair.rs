@@ -189,3 +189,40 @@ fn the_peak_force_and_contact_time_labels_are_never_cut() {
         }
     }
 }
+
+/// `x`, `N`, `+`, `-` in the oblique and drop views say where the numbers are, not that the
+/// view has no chart — it has (issue 51 item 3: "the oblique view has no chart to read").
+#[test]
+fn chart_keys_say_what_works_where_they_do_not_read() {
+    for view_key in ['i', 'd'] {
+        let mut app = App::new(Preset::embedded().remove(1), false);
+        press(&mut app, &[KeyCode::Char(view_key)]);
+        for k in ['x', 'N', '+', '-'] {
+            press(&mut app, &[KeyCode::Char(k)]);
+            let said = app.message().map(|m| m.text.clone()).unwrap_or_default();
+            assert!(
+                !said.contains("no chart") && said.contains("readout"),
+                "{view_key} {k}: {said}"
+            );
+        }
+    }
+}
+
+/// A chart named in a message is named as its frame names it, not by its export file name
+/// (issue 51 item 4: "peers-cor-velocity: only force charts normalize").
+#[test]
+fn chart_messages_name_the_chart_as_its_frame_does() {
+    let mut app = App::new(Preset::embedded().remove(1), false);
+    press(&mut app, &[KeyCode::Tab, KeyCode::Tab, KeyCode::Char('N')]);
+    let said = app.message().map(|m| m.text.clone()).unwrap_or_default();
+    assert!(said.contains("only force charts normalize"), "{said}");
+    assert!(
+        !said.contains("peers-") && !said.contains("velocity"),
+        "{said}"
+    );
+    let title = bouncelab::tui::ui::figure(&app, Chart::ModelsCorSpeed).screen_title;
+    assert!(
+        said.starts_with(title.split(" · ").next().unwrap()),
+        "{said} / {title}"
+    );
+}

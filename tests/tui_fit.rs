@@ -257,8 +257,9 @@ fn an_answer_to_a_superseded_fit_is_dropped() {
         app.fit_pane().unwrap().status,
         FitStatus::Done(Ok(_))
     ));
-    // O puts data and fit away; a late answer then finds no pane
+    // O (and y to its question) puts data and fit away; a late answer then finds no pane
     app.update(Action::ClearMeasured);
+    app.update(Action::ConfirmYes);
     assert!(app.loaded().is_none() && app.fit_pane().is_none());
     answer(&mut app, &second);
     assert!(app.fit_pane().is_none());
@@ -385,4 +386,50 @@ fn drops_weigh_by_their_reading_as_the_command_line_weighs_them() {
     );
     // the lowest drop's COR the least precise: ∂e/∂R = 1/(2√(RH)) largest there
     assert!(points[0].cor_sd_relative > 3.0 * points[2].cor_sd_relative);
+}
+
+/// `O` asks before putting away the measured data and the fit; `n` keeps them, `y` puts them
+/// away, and `u` puts them back, saying so (issue 51 item 2: `O` dropped them at once, and
+/// nothing brought them back).
+#[test]
+fn o_asks_before_putting_away_and_u_puts_back() {
+    let dir = tempfile::tempdir().unwrap();
+    let (mut app, _) = loaded(dir.path());
+    let request = ask_fit(&mut app);
+    answer(&mut app, &request);
+    let (data, pane) = (app.loaded().cloned(), app.fit_pane().cloned());
+    assert!(data.is_some() && pane.is_some());
+    app.update(Action::ClearMeasured);
+    assert!(matches!(app.overlay(), Overlay::Ask(_)), "asks first");
+    let t = {
+        let mut t = Terminal::new(TestBackend::new(100, 30)).unwrap();
+        t.draw(|f| f.render_widget(&app, f.area())).unwrap();
+        t
+    };
+    let screen: String = t
+        .backend()
+        .buffer()
+        .content()
+        .iter()
+        .map(|c| c.symbol())
+        .collect();
+    assert!(
+        screen.contains("Put away the measured data and the fit?"),
+        "{screen}"
+    );
+    app.update(Action::ConfirmNo);
+    assert_eq!(
+        (app.loaded().cloned(), app.fit_pane().cloned()),
+        (data.clone(), pane.clone())
+    );
+    app.update(Action::ClearMeasured);
+    app.update(Action::ConfirmYes);
+    assert!(app.loaded().is_none() && app.fit_pane().is_none());
+    app.update(Action::Undo);
+    assert_eq!(
+        (app.loaded().cloned(), app.fit_pane().cloned()),
+        (data, pane)
+    );
+    let said = app.message().unwrap().text.clone();
+    assert_eq!(said, "undone: measured data and the fit put back");
 }

@@ -239,3 +239,33 @@ fn a_metal_ball_has_no_e_to_type() {
     let why = Field::E.check(3e6, &s).unwrap_err();
     assert!(why.contains("metal") && why.contains("type K_p"), "{why}");
 }
+
+/// An entry opens holding its value, or empty: the wall's M (∞) opened as "—", and "0.8"
+/// typed after it read "'—0.8' is not a number" (issue 51 item 2).
+#[test]
+fn an_entry_opens_holding_its_value_or_empty() {
+    let mut a = superball();
+    assert!(a.setting().target_mass.is_infinite());
+    key(&mut a, KeyCode::Char('m'));
+    let n = Field::ALL
+        .iter()
+        .position(|&f| f == Field::TargetMass)
+        .unwrap();
+    for _ in 0..n {
+        key(&mut a, KeyCode::Down);
+    }
+    key(&mut a, KeyCode::Enter);
+    let Overlay::Input(input) = a.overlay() else {
+        panic!("no entry")
+    };
+    assert_eq!(input.text, "");
+    typed(&mut a, "0.8");
+    key(&mut a, KeyCode::Enter);
+    assert_eq!(a.setting().target_mass, 0.8, "{:?}", a.message());
+    // a finite value opens as itself: Enter keeps it
+    key(&mut a, KeyCode::Enter);
+    let Overlay::Input(input) = a.overlay() else {
+        panic!("no entry")
+    };
+    assert_eq!(input.text, "0.8");
+}

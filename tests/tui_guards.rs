@@ -40,7 +40,14 @@ fn below_the_minimum_size_only_resize_and_quit_act() {
         "keys act again once large enough"
     );
     app.update(Action::Resize(40, 12));
+    // v0 changed: q asks first, on the small screen itself (issue 51), and q again quits
     press(&mut app, &chars("q"));
+    assert!(!app.should_quit(), "asks before losing the change");
+    let screen = screen_text(&draw(&app, 40, 12)).join(" ");
+    assert!(screen.contains("Quit and lose your changes"), "{screen}");
+    press(&mut app, &chars("n"));
+    assert_eq!(app.overlay(), &Overlay::None, "n stays");
+    press(&mut app, &chars("qq"));
     assert!(app.should_quit(), "q still quits below the minimum size");
 }
 

@@ -46,6 +46,8 @@ fn esc_never_quits_from_a_main_view() {
     press(&mut app, &[KeyCode::Esc]);
     let screen = screen_text(&draw(&app, 120, 40)).join("\n");
     assert!(screen.contains("q quits"), "{screen}");
+    // the entry's change undone: nothing to lose, q quits at once
+    press(&mut app, &chars("u"));
     press(&mut app, &chars("q"));
     assert!(app.should_quit(), "nothing to lose: q quits at once");
 }
@@ -58,9 +60,11 @@ fn q_asks_when_pins_would_be_lost_and_a_second_q_or_y_quits() {
         press(&mut app, &chars("q"));
         assert!(!app.should_quit(), "asks first");
         assert_eq!(app.mode(), Mode::QuitConfirm);
-        assert_eq!(*app.overlay(), Overlay::Quit("2 pins".into()));
-        let screen = screen_text(&draw(&app, 80, 24)).join("\n");
-        assert!(screen.contains("Quit and lose 2 pins?"), "{screen}");
+        // λ stepped between the pins: the change is named too (issue 51)
+        let lost = "2 pins, your changes (S saves them)";
+        assert_eq!(*app.overlay(), Overlay::Quit(lost.into()));
+        let screen = screen_text(&draw(&app, 80, 24)).join(" ");
+        assert!(screen.contains("Quit and lose 2 pins, your"), "{screen}");
         // stray keys do nothing; n and Esc stay, the pins kept
         press(&mut app, &chars("l"));
         assert_eq!(app.undo_depth(), 1, "no key leaks through the question");
@@ -113,4 +117,53 @@ fn ctrl_c_quits_at_once() {
     let ctrl_c = KeyEvent::new(KeyCode::Char('c'), KeyModifiers::CONTROL);
     app.update(bouncelab::tui::action::from_key(ctrl_c, app.mode()).unwrap());
     assert!(app.should_quit());
+}
+
+/// `q` asks after any edit — of the ball, the target, the oblique inputs — not only with pins
+/// (issue 51 item 2: an edited ball was lost without a question); a change undone back to
+/// the start is none.
+#[test]
+fn q_asks_after_any_edit_and_not_after_it_is_undone() {
+    let edits: [&[KeyCode]; 4] = [
+        &[KeyCode::Char('l')],
+        &[KeyCode::Char('c')],
+        &[KeyCode::Char('1')],
+        &[KeyCode::Char('i'), KeyCode::Char('a')],
+    ];
+    for keys in edits {
+        let mut app = golf();
+        press(&mut app, keys);
+        press(&mut app, &chars("q"));
+        assert!(!app.should_quit(), "{keys:?}: asks first");
+        assert_eq!(
+            *app.overlay(),
+            Overlay::Quit("your changes (S saves them)".into()),
+            "{keys:?}"
+        );
+        press(&mut app, &chars("n"));
+        press(&mut app, &chars("u"));
+        press(&mut app, &chars("q"));
+        assert!(app.should_quit(), "{keys:?} undone: q quits at once");
+    }
+    // a target typed in the form
+    let mut app = golf();
+    press(&mut app, &chars("m"));
+    let n = bouncelab::tui::physical::Field::ALL
+        .iter()
+        .position(|&f| f == bouncelab::tui::physical::Field::TargetMass)
+        .unwrap();
+    for _ in 0..n {
+        press(&mut app, &[KeyCode::Down]);
+    }
+    press(&mut app, &[KeyCode::Enter]);
+    press(&mut app, &chars("0.8"));
+    press(&mut app, &[KeyCode::Enter, KeyCode::Esc]);
+    assert_eq!(app.setting().target_mass, 0.8);
+    press(&mut app, &chars("q"));
+    assert!(!app.should_quit(), "a target edit: asks first");
+    // a saved session keeps the changes: nothing to lose
+    press(&mut app, &chars("n"));
+    app.update(Action::SessionSaved("s.toml".into()));
+    press(&mut app, &chars("q"));
+    assert!(app.should_quit(), "saved: q quits at once");
 }

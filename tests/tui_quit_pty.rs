@@ -26,3 +26,22 @@ fn esc_keeps_the_pins_and_q_asks_before_losing_them() {
     assert!(status.success(), "{status:?}\n{}", out.escape_debug());
     assert_restored(&before, &after, &out);
 }
+
+/// `q` after an edit of the ball (no pin) asks too, naming the changes (issue 51 item 2); a
+/// second `q` quits and the terminal is given back.
+#[test]
+fn q_asks_before_losing_an_edit() {
+    let home = tempfile::tempdir().unwrap();
+    let mut x = Explorer::spawn(home.path(), None, &[]);
+    let before = modes(&x.before);
+    x.wait_for_first_draw();
+    x.send(b"c");
+    x.wait_for("law:");
+    x.send(b"q");
+    x.wait_for("Quit");
+    x.wait_for("changes");
+    x.send(b"q");
+    let (status, after, out) = x.finish();
+    assert!(status.success(), "{status:?}\n{}", out.escape_debug());
+    assert_restored(&before, &after, &out);
+}

@@ -160,3 +160,44 @@ fn a_kill_while_overwriting_leaves_the_old_file_intact() {
     assert!(ok, "{err}");
     assert!(out.contains("\"preset\":\"superball-custom\""), "{out}");
 }
+
+/// `S` in the real loop: onto a file that exists it asks y/n (n keeps the file byte for
+/// byte, y replaces it with the session); into a folder that does not exist it names the
+/// system's reason and keeps the entry open (issue 51 item 2).
+#[test]
+fn s_asks_before_replacing_a_session_file_and_says_why_a_write_failed() {
+    let home = tempfile::tempdir().unwrap();
+    let file = home.path().join("s.toml");
+    fs::write(&file, "old\n").unwrap();
+    let mut x = Explorer::spawn(home.path(), None, &[]);
+    x.wait_for_first_draw();
+    let save_to = |x: &mut Explorer, path: &str| {
+        x.send(b"S");
+        x.wait_for("session");
+        x.send(b"\x15"); // Ctrl-U: the suggested name cleared
+        x.send(path.as_bytes());
+        x.send(b"\r");
+    };
+    let path = file.to_string_lossy().into_owned();
+    save_to(&mut x, &path);
+    x.wait_for("y/n");
+    x.send(b"n");
+    x.wait_for("kept");
+    assert_eq!(fs::read_to_string(&file).unwrap(), "old\n");
+    save_to(&mut x, &path);
+    x.wait_for("y/n");
+    x.send(b"y");
+    x.wait_until("the session written", || {
+        fs::read_to_string(&file).is_ok_and(|t| t.contains("view"))
+    });
+    let nowhere = home.path().join("no-such-folder").join("s.toml");
+    save_to(&mut x, &nowhere.to_string_lossy());
+    x.wait_for("No such file");
+    // the entry is still open: Esc closes it, then q quits (the session is saved)
+    x.send(b"\x1b");
+    // apart from the Esc, or the terminal reads Alt-q
+    std::thread::sleep(std::time::Duration::from_millis(300));
+    x.send(b"q");
+    let (status, _, out) = x.finish();
+    assert!(status.success(), "{status:?}\n{}", out.escape_debug());
+}

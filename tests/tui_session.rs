@@ -38,7 +38,7 @@ fn s_saves_and_the_file_restores_the_same_state() {
     // S, Enter on the suggested name: the loop is handed the session's text
     press(&mut a, &[KeyCode::Char('S')]);
     let effects = a.update(Action::InputSubmit);
-    let [Effect::SaveSession { path, text }] = effects.as_slice() else {
+    let [Effect::SaveSession { path, text, .. }] = effects.as_slice() else {
         panic!("{effects:?}")
     };
     assert_eq!(path, Path::new("bouncelab-session.toml"));
@@ -198,4 +198,49 @@ fn the_fit_and_the_map_read_back() {
         screen_text(&draw(&b, 120, 40)),
         screen_text(&draw(&a, 120, 40))
     );
+}
+
+/// `S` onto a file that exists asks y/n inside the explorer (n keeps the file, y replaces
+/// it); a write that fails keeps the entry open, holding the name, with the system's reason
+/// (issue 51 item 2: the loop refused an existing file with "use --force", which the
+/// explorer has not, and a failure closed the entry).
+#[test]
+fn s_onto_an_existing_file_asks_and_a_failed_write_keeps_the_entry() {
+    use bouncelab::tui::app::{Ask, Overlay};
+    let mut a = golf();
+    let path = std::path::PathBuf::from("/tmp/s.toml");
+    a.update(Action::SessionExists {
+        path: path.clone(),
+        text: "t".into(),
+    });
+    assert!(matches!(a.overlay(), Overlay::Ask(Ask::Session { .. })));
+    let screen = screen_text(&draw(&a, 100, 30)).join("\n");
+    assert!(
+        screen.contains("overwrite it with this session? y/n"),
+        "{screen}"
+    );
+    let effects = a.update(Action::ConfirmYes);
+    assert!(
+        matches!(
+            effects.as_slice(),
+            [Effect::SaveSession { replace: true, .. }]
+        ),
+        "{effects:?}"
+    );
+    a.update(Action::SessionExists {
+        path: path.clone(),
+        text: "t".into(),
+    });
+    assert!(a.update(Action::ConfirmNo).is_empty());
+    assert!(a.message().unwrap().text.contains("kept"));
+    let why = "cannot write /nowhere/s.toml: No such file or directory (os error 2)";
+    a.update(Action::SessionFailed {
+        path: "/nowhere/s.toml".into(),
+        why: why.into(),
+    });
+    let Overlay::Input(input) = a.overlay() else {
+        panic!("the entry closed")
+    };
+    assert_eq!(input.text, "/nowhere/s.toml");
+    assert_eq!(input.error.as_deref(), Some(why));
 }

@@ -8,6 +8,7 @@
 //! each view's part is in its folder's `update.rs` (src/tui/views/).
 
 mod answers;
+mod ask;
 mod charts;
 mod command;
 mod crosshair;
@@ -22,6 +23,7 @@ mod refresh;
 mod scene;
 mod screen;
 mod stopped;
+mod undone;
 
 use super::action::{Action, Mode};
 use super::compute::{self, ZetaCurve};
@@ -30,7 +32,7 @@ use super::export;
 use super::param::Param;
 use super::save::SaveRequest;
 pub use super::state::{
-    Confirm, Ghost, Input, MAX_PINS, Message, Overlay, Purpose, Setting, Severity, View,
+    Ask, Confirm, Ghost, Input, MAX_PINS, Message, Overlay, Purpose, Setting, Severity, View,
 };
 use crate::model::contact::ContactLaw;
 use crate::model::params::ImpactParams;
@@ -38,6 +40,7 @@ use crate::preset::Preset;
 use crate::solver::ImpactResponse;
 use crate::tui::views::drop::state::DropView;
 use crate::tui::views::sweeps::speed::{SpeedCurve, SpeedRequest};
+pub use ask::put_away_what;
 
 /// How many changes `u` can undo.
 const UNDO_DEPTH: usize = 500;
@@ -47,6 +50,9 @@ const UNDO_DEPTH: usize = 500;
 pub(in crate::tui) struct Undoable {
     pub setting: Setting,
     pub oblique: crate::tui::views::oblique::state::ObliqueValues,
+    /// The measured data and fit `O` put away (`u` puts them back); `None` for a change of
+    /// the setting alone.
+    pub measured: Option<Box<crate::tui::views::fit::state::FitState>>,
 }
 
 /// The explorer.
@@ -65,6 +71,9 @@ pub struct App {
     /// The pinned runs, oldest first (at most [`MAX_PINS`]).
     pub(in crate::tui) pins: Vec<Ghost>,
     pub(in crate::tui) undo: Vec<Undoable>,
+    /// The setting and oblique values as the explorer started or last saved them (`S`):
+    /// `q` asks before losing a change from them (src/tui/app/quit.rs).
+    pub(in crate::tui) kept: Undoable,
     pub(in crate::tui) quit: bool,
     /// The impact for `run_for`.
     pub(in crate::tui) run: Option<ImpactResponse>,
@@ -118,9 +127,15 @@ impl App {
             }
         };
         let setting = Setting::from_preset(index, &presets[index]);
+        let kept = Undoable {
+            setting: setting.clone(),
+            oblique: Default::default(),
+            measured: None,
+        };
         let mut app = App {
             presets,
             setting,
+            kept,
             selected: Param::Lambda,
             coarse: false,
             view: View::Impact,
@@ -151,6 +166,7 @@ impl App {
             charts: Default::default(),
             oblique: Default::default(),
         };
+        app.keep();
         app.refresh();
         app
     }
@@ -180,7 +196,10 @@ impl App {
     /// Apply one action without recomputing: for a batch of queued events, `apply` each, then
     /// [`App::refresh`] once.
     pub fn apply(&mut self, action: Action) -> Vec<Effect> {
-        if self.too_small() && !App::acts_when_too_small(&action) {
+        // `n` leaves `q`'s question on the small screen (and closes nothing else unseen)
+        let leaves_question =
+            action == Action::CloseHelp && matches!(self.overlay, Overlay::Quit(_));
+        if self.too_small() && !App::acts_when_too_small(&action) && !leaves_question {
             return Vec::new();
         }
         if !answers::keeps_message(&action) {

@@ -34,11 +34,13 @@ pub enum Effect {
     ObliqueMap(crate::tui::views::oblique::map::MapJob),
     /// Read the presets for the picker (`g`); the loop answers `Action::PresetsListed`.
     ListPresets,
-    /// Write this session file (`S`) atomically, never over an existing file; the loop answers
-    /// `Action::SessionSaved` or `Action::SessionFailed`.
+    /// Write this session file (`S`) atomically, over an existing file only with `replace`
+    /// (the user said y); the loop answers `Action::SessionSaved`, `Action::SessionExists` or
+    /// `Action::SessionFailed`.
     SaveSession {
         path: std::path::PathBuf,
         text: String,
+        replace: bool,
     },
     /// Copy this text to the terminal's clipboard with OSC 52 (`y`,
     /// [`crate::tui::clipboard::osc52`]); a terminal without it ignores the sequence. No answer.

@@ -207,13 +207,11 @@ fn carry_out(mut effects: Vec<Effect>, app: &mut App, worker: &mut Workers) {
                 Effect::Save(request) => {
                     save::write(&request, catalog::user_presets_dir().as_deref())
                 }
-                Effect::SaveSession { path, text } => {
-                    let mut out = crate::atomic::Outputs::new(false);
-                    match out.text(&path, &text).and_then(|()| out.commit()) {
-                        Ok(_) => Action::SessionSaved(path),
-                        Err(e) => Action::SessionFailed(e.to_string()),
-                    }
-                }
+                Effect::SaveSession {
+                    path,
+                    text,
+                    replace,
+                } => write_session(path, text, replace),
                 Effect::Copy(text) => {
                     super::clipboard::copy(&text);
                     continue;
@@ -225,5 +223,20 @@ fn carry_out(mut effects: Vec<Effect>, app: &mut App, worker: &mut Workers) {
             };
             effects.extend(app.update(answer));
         }
+    }
+}
+
+/// `S`'s file written in one piece (src/atomic.rs): saved; or it exists and was not to be
+/// replaced (the app asks); or why not, the system's reason included ("cannot write
+/// /x/s.toml: Permission denied (os error 13)").
+fn write_session(path: std::path::PathBuf, text: String, replace: bool) -> Action {
+    let mut out = crate::atomic::Outputs::new(replace);
+    match out.text(&path, &text).and_then(|()| out.commit()) {
+        Ok(_) => Action::SessionSaved(path),
+        Err(e) if e.exists => Action::SessionExists { path, text },
+        Err(e) => Action::SessionFailed {
+            why: format!("{e}: {}", e.error),
+            path,
+        },
     }
 }

@@ -151,6 +151,7 @@ impl App {
             o.restore(&mut self.oblique)?;
         }
         self.undo.clear();
+        self.keep();
         self.message = None;
         self.refresh();
         Ok(self)

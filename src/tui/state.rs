@@ -196,6 +196,20 @@ pub enum Overlay {
     Form(super::physical::Form),
     /// "Quit?" with what would be lost (`q` with pins, measured data or a fit).
     Quit(String),
+    /// A y/n question before something is lost or replaced (issue 51).
+    Ask(Ask),
+}
+
+/// A y/n question (`y` goes on, `n` or Esc keeps things as they are).
+#[derive(Debug, Clone, PartialEq)]
+pub enum Ask {
+    /// `O`: put away the measured data, and the fit with it; names what goes.
+    PutAway(String),
+    /// `S` onto a file that exists: replace it with this session's text?
+    Session {
+        path: std::path::PathBuf,
+        text: String,
+    },
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

@@ -250,6 +250,7 @@ fn render_overlay(app: &App, theme: Theme, area: Rect, buf: &mut Buffer) {
         }
         .render(area, buf),
         Overlay::Confirm(confirm) => ConfirmDialog { confirm, theme }.render(area, buf),
+        Overlay::Ask(ask) => super::widgets::confirm::AskDialog { ask, theme }.render(area, buf),
         Overlay::Command(line) => CommandBox {
             line,
             copied: app.osc52(),
@@ -274,7 +275,11 @@ impl Widget for &App {
     fn render(self, area: Rect, buf: &mut Buffer) {
         let area = area.intersection(buf.area);
         let Some(s) = screen(self, area) else {
-            let text = format!("enlarge the terminal: at least {MIN_WIDTH}×{MIN_HEIGHT}");
+            let mut text = format!("enlarge the terminal: at least {MIN_WIDTH}×{MIN_HEIGHT}");
+            // `q` asked, with no room for its dialog: the question here
+            if let Overlay::Quit(lost) = self.overlay() {
+                text = format!("Quit and lose {lost}? q or y quits · n stays. {text}");
+            }
             Paragraph::new(Line::raw(text))
                 .wrap(Wrap { trim: true })
                 .render(area, buf);

@@ -45,7 +45,9 @@ pub fn from_key(key: KeyEvent, mode: Mode) -> Option<Action> {
         Mode::Form => form(key.code),
         // Esc never quits (issue 29): only q, which may ask first
         Mode::TooSmall => match key.code {
-            KeyCode::Char('q') => Some(Action::Quit),
+            KeyCode::Char('q' | 'y') => Some(Action::Quit),
+            // leaves `q`'s question (src/tui/ui.rs writes it on the small screen)
+            KeyCode::Char('n') => Some(Action::CloseHelp),
             _ => None,
         },
         Mode::QuitConfirm => match key.code {

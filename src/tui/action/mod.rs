@@ -17,8 +17,16 @@ pub enum Action {
     SaveSession,
     /// The loop wrote the session file.
     SessionSaved(PathBuf),
-    /// The session file could not be written: why, one line.
-    SessionFailed(String),
+    /// The session file exists: the app asks before replacing it.
+    SessionExists {
+        path: PathBuf,
+        text: String,
+    },
+    /// The session file could not be written: the file and why, with the system's reason.
+    SessionFailed {
+        path: PathBuf,
+        why: String,
+    },
     /// Esc with nothing open to close: never quits (issue 29); says how to.
     Dismiss,
     /// Step `param` (and select it); `coarse` forces the coarse step, otherwise the current

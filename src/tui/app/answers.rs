@@ -12,7 +12,8 @@ pub(super) fn is_answer(action: &Action) -> bool {
     matches!(
         action,
         Action::SessionSaved(_)
-            | Action::SessionFailed(_)
+            | Action::SessionExists { .. }
+            | Action::SessionFailed { .. }
             | Action::PresetsListed(..)
             | Action::SpeedReady(..)
             | Action::ModelsReady(..)
@@ -50,18 +51,27 @@ impl App {
     /// One of the loop's answers ([`is_answer`]).
     pub(super) fn answer(&mut self, action: Action) {
         match action {
-            Action::SessionSaved(path) => self.info(format!(
-                "session saved to {} (bouncelab --session {} restores it)",
-                path.display(),
-                path.display()
-            )),
-            Action::SessionFailed(why) => self.error(format!("session not saved: {why}")),
+            Action::SessionSaved(path) => {
+                self.keep();
+                self.info(format!(
+                    "session saved to {} (bouncelab --session {} restores it)",
+                    path.display(),
+                    path.display()
+                ))
+            }
+            Action::SessionExists { path, text } => self.ask_session_overwrite(path, text),
+            Action::SessionFailed { path, why } => self.session_failed(&path, why),
             Action::PresetsListed(..) => self.picker(action),
             Action::SpeedReady(request, result) => self.receive_speed(&request, result),
             Action::ModelsReady(request, result) => self.receive_models(request, result),
             Action::Exported { files } => self.info(export::message(&files)),
             Action::ExportFailed { msg } => self.error(format!("export failed: {msg}")),
-            Action::Saved { path, replaced } => self.saved(&path, replaced),
+            Action::Saved { path, replaced } => {
+                // the ball is kept in its preset file: `q` need not ask for it (the oblique
+                // inputs, which a preset does not hold, still count)
+                self.kept.setting = self.setting.clone();
+                self.saved(&path, replaced)
+            }
             Action::SaveExists { path, holds } => self.ask_overwrite(path, holds),
             Action::SaveFailed { msg } => {
                 self.save_out = None;

@@ -25,6 +25,8 @@ impl App {
         self.setting.params = params;
         self.setting.law = law;
         self.setting.radius = radius.unwrap_or(self.setting.radius);
+        // the command line's state is the start: nothing to lose yet
+        self.keep();
         self.refresh();
         self
     }

@@ -35,11 +35,7 @@ impl App {
         let n = self.view.charts().len();
         if n == 0 {
             self.crosshair = None;
-            self.warn(format!(
-                "the {} view has no chart to read",
-                self.view.title()
-            ));
-            return;
+            return self.warn(self.no_chart_keys());
         }
         let k = match (self.crosshair, ahead) {
             (Some(c), a) if a > 0 => c.chart + a,

@@ -106,6 +106,7 @@ impl App {
                 return Some(Effect::SaveSession {
                     path: std::path::PathBuf::from(text),
                     text: text_out,
+                    replace: false,
                 });
             }
             Purpose::Targets => {
@@ -201,8 +202,10 @@ impl App {
     /// The answer to "overwrite …? y/n": `y` hands the save (now allowed to replace that one
     /// file) back to the loop; `n` drops it.
     fn confirm(&mut self, yes: bool) -> Option<Effect> {
-        let Overlay::Confirm(c) = std::mem::replace(&mut self.overlay, Overlay::None) else {
-            return None;
+        let c = match std::mem::replace(&mut self.overlay, Overlay::None) {
+            Overlay::Confirm(c) => c,
+            Overlay::Ask(ask) => return self.answer_ask(ask, yes),
+            _ => return None,
         };
         if yes {
             return Some(self.send_save(c.request));

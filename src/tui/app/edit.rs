@@ -45,9 +45,13 @@ impl App {
             Action::Unpin => self.unpin(),
             Action::Undo => match self.undo.pop() {
                 Some(previous) => {
+                    let said = self.undone_text(&previous);
                     self.setting = previous.setting;
                     self.oblique.set_values(previous.oblique);
-                    self.info("undone".into());
+                    if let Some(m) = previous.measured {
+                        self.put_back(*m);
+                    }
+                    self.info(said);
                 }
                 None => self.warn("nothing to undo".into()),
             },
@@ -126,6 +130,7 @@ impl App {
         self.undo.push(Undoable {
             setting: self.setting.clone(),
             oblique: self.oblique.values(),
+            measured: None,
         });
     }
 

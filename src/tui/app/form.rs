@@ -7,6 +7,18 @@ use crate::text::sig_trim;
 use crate::tui::action::{Action, Scroll};
 use crate::tui::physical::{self, Field, Form};
 
+/// The text a field's entry opens with: its value, or nothing when it has no finite one (the
+/// wall's M = ∞, a metal ball's E). Never the form's "—": typing appends to the entry's text,
+/// so "0.8" typed into "—" read "'—0.8' is not a number" (issue 51;
+/// tests/tui_form.rs: `an_entry_opens_holding_its_value_or_empty`).
+fn entry_text(v: f64) -> String {
+    if v.is_finite() {
+        sig_trim(v, 6)
+    } else {
+        String::new()
+    }
+}
+
 impl App {
     pub(super) fn form(&mut self, action: Action) {
         match action {
@@ -23,7 +35,7 @@ impl App {
             }
             Action::FormEdit => {
                 if let Overlay::Form(f) = self.overlay {
-                    let now = sig_trim(f.selected.get(&self.setting), 6);
+                    let now = entry_text(f.selected.get(&self.setting));
                     self.open_input(Purpose::Physical(f.selected), now);
                 }
             }

@@ -93,7 +93,7 @@ impl App {
             // the command box closes, and scrolls nothing, like the help
             Overlay::Help | Overlay::Command(_) => Mode::Help,
             Overlay::Input(_) => Mode::Input,
-            Overlay::Confirm(_) => Mode::Confirm,
+            Overlay::Confirm(_) | Overlay::Ask(_) => Mode::Confirm,
             Overlay::Picker(_) => Mode::Picker,
             Overlay::Form(_) => Mode::Form,
             Overlay::Quit(_) => Mode::QuitConfirm,

@@ -1,8 +1,9 @@
 //! Quitting (issue 29): Esc never quits; `q` quits at once when nothing would be lost, else
-//! asks first, naming what would go — the pins, the measured data, the fit — and a second `q`
-//! (or `y`) quits; Ctrl-C quits at once, as an interrupt.
+//! asks first, naming what would go — a change to the ball, the target or the oblique inputs
+//! since the start or the last `S` (issue 51), the pins, the measured data, the fit — and a
+//! second `q` (or `y`) quits; Ctrl-C quits at once, as an interrupt.
 
-use super::App;
+use super::{App, Undoable};
 use crate::tui::state::Overlay;
 
 impl App {
@@ -14,7 +15,17 @@ impl App {
         }
     }
 
-    /// What quitting would lose, as the question names it: "2 pins, measured data, the fit".
+    /// The setting and oblique values now are the ones kept: `q` loses nothing of them.
+    pub(in crate::tui) fn keep(&mut self) {
+        self.kept = Undoable {
+            setting: self.setting.clone(),
+            oblique: self.oblique.values(),
+            measured: None,
+        };
+    }
+
+    /// What quitting would lose, as the question names it: "2 pins, measured data, the fit,
+    /// your changes (S saves them)".
     pub fn at_stake(&self) -> Option<String> {
         let mut lost = Vec::new();
         match self.pins.len() {
@@ -27,6 +38,11 @@ impl App {
         }
         if self.fit.pane.is_some() {
             lost.push("the fit".into());
+        }
+        // a change undone back to the start is none (tests/tui_quit.rs:
+        // `q_asks_after_any_edit_and_not_after_it_is_undone`)
+        if self.setting != self.kept.setting || self.oblique.values() != self.kept.oblique {
+            lost.push("your changes (S saves them)".to_string());
         }
         (!lost.is_empty()).then(|| lost.join(", "))
     }

@@ -61,3 +61,51 @@ fn render(confirm: &Confirm, theme: &Theme, area: Rect, buf: &mut Buffer) {
         .block(Block::bordered().title(Line::styled(title, theme.title())))
         .render(popup, buf);
 }
+
+/// A y/n question of [`crate::tui::state::Ask`], centred on the area it is given.
+#[derive(Debug, Clone, Copy)]
+pub struct AskDialog<'a> {
+    pub ask: &'a crate::tui::state::Ask,
+    pub theme: Theme,
+}
+
+impl Widget for &AskDialog<'_> {
+    fn render(self, area: Rect, buf: &mut Buffer) {
+        use crate::tui::state::Ask;
+        let theme = self.theme;
+        let (title, lines) = match self.ask {
+            Ask::PutAway(what) => (
+                " Put away ",
+                vec![
+                    Line::styled(format!(" Put away the {what}?"), theme.warning()),
+                    Line::styled(" y puts away (u puts back) · n or Esc keeps", theme.dim()),
+                ],
+            ),
+            Ask::Session { path, .. } => (
+                " Save session ",
+                vec![
+                    Line::raw(" This file exists:"),
+                    Line::styled(format!(" {}", short_path(path)), theme.title()),
+                    Line::raw(""),
+                    Line::styled(" overwrite it with this session? y/n", theme.warning()),
+                    Line::styled(" y replaces it · n or Esc keeps it", theme.dim()),
+                ],
+            ),
+        };
+        let w = 60.min(area.width);
+        let inner = usize::from(w.saturating_sub(2)).max(1);
+        let rows: usize = lines.iter().map(|l| l.width().max(1).div_ceil(inner)).sum();
+        let h = (rows as u16 + 2).min(area.height);
+        let popup = Rect::new(
+            area.x + (area.width - w) / 2,
+            area.y + (area.height - h) / 2,
+            w,
+            h,
+        );
+        Clear.render(popup, buf);
+        Paragraph::new(lines)
+            .wrap(Wrap { trim: false })
+            .block(Block::bordered().title(Line::styled(title, theme.title())))
+            .render(popup, buf);
+    }
+}

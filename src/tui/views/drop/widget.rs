@@ -1,20 +1,24 @@
 //! The drop view (`d`, src/tui/views/drop/state.rs): height against time in braille with the
 //! standard's window as a band on the first rebound, the ball on a ratatui Canvas above the
-//! plate, and a readout with the bounces and the verdict. Reads the state only, and draws with
-//! ratatui's own `Chart` and `Canvas`, so it stands apart from the explorer's chart module.
+//! plate, and a readout with the bounces and the verdict. Reads the state only; the chart is
+//! a figure drawn by the explorer's plot widget, the ball a ratatui `Canvas`.
 
 use crate::drop::standards::Test;
+use crate::figure::{
+    Axis as FigAxis, Figure, GREY, Look, Marker as Glyph, Role, Series, Style as Stroke, Tone,
+};
 use crate::text::sig;
 use crate::tui::format::fit_lines;
 use crate::tui::theme::Theme;
 use crate::tui::views::drop::state::DropView;
+use crate::tui::widgets::plot::Plot;
 use ratatui::buffer::Buffer;
 use ratatui::layout::{Constraint, Layout, Rect};
-use ratatui::style::{Color, Style};
+use ratatui::style::Color;
 use ratatui::symbols::Marker;
 use ratatui::text::{Line, Span};
 use ratatui::widgets::canvas::{Canvas, Circle, Line as CanvasLine};
-use ratatui::widgets::{Axis, Block, Chart, Dataset, GraphType, Paragraph, Widget, Wrap};
+use ratatui::widgets::{Block, Paragraph, Widget, Wrap};
 
 /// Width of the ball's column and of the readout.
 const BALL_WIDTH: u16 = 18;
@@ -61,121 +65,61 @@ fn render(p: DropPanel, area: Rect, buf: &mut Buffer) {
     }
 }
 
-/// What the height–time chart draws, in m and s.
-struct Curves {
-    all: Vec<(f64, f64)>,
-    flown: Vec<(f64, f64)>,
-    now: Vec<(f64, f64)>,
-    band: Option<[Vec<(f64, f64)>; 2]>,
-    t_hi: f64,
-    h_hi: f64,
-}
-
-/// The curves of `d` for a chart `width` cells wide.
-fn curves(d: &DropView, width: u16) -> Curves {
-    let mut c = Curves {
-        all: Vec::new(),
-        flown: Vec::new(),
-        now: Vec::new(),
-        band: None,
-        t_hi: 1e-3,
-        h_hi: 1e-3,
-    };
+/// Height (m) against time (s) as a figure: the whole sequence dimmed (drawn as a pinned
+/// curve is, behind), the part already flown bright, the ball now as a dot, the standard's
+/// window as two dotted lines across. Drawn by the explorer's one plot widget
+/// (`widgets::plot`), so its ticks are the other charts' (`figure::ticks`), each label at its
+/// value's place (tests/tui_ticks.rs); ratatui's `Chart` spread them evenly, so "2" sat at
+/// 1.8 s on the 80 × 24 screen.
+pub fn height_figure(d: &DropView) -> Figure {
+    let mut series = Vec::new();
+    let mut t_hi = 1e-3;
     if let Some(run) = d.sequence() {
-        c.t_hi = run.duration().max(1e-3);
-        c.h_hi = run.setup.height * 1.05;
-        c.all = run
-            .trajectory(c.t_hi / 400.0)
+        t_hi = run.duration().max(1e-3);
+        let all: Vec<(f64, f64)> = run
+            .trajectory(t_hi / 400.0)
             .iter()
             .map(|s| (s.t, s.height))
             .collect();
-        c.flown = c.all.iter().copied().filter(|p| p.0 <= d.t).collect();
-        c.flown.push((d.t, d.height_now()));
-        c.now = vec![(d.t, d.height_now())];
+        let mut flown: Vec<(f64, f64)> = all.iter().copied().filter(|p| p.0 <= d.t).collect();
+        let now = (d.t, d.height_now());
+        flown.push(now);
+        series
+            .push(Series::new("", "sequence", Role::Pinned, Stroke::Solid, GREY).with_points(all));
+        series.push(
+            Series::new("", "flown", Role::Model, Stroke::Solid, 0)
+                .with_points(flown)
+                .with_look(Look::new(Tone::Current, Some("bottom of the ball"), None)),
+        );
+        series.push(
+            Series::new("", "now", Role::ThisRun, Stroke::Markers(Glyph::Circle), 0)
+                .with_points(vec![now])
+                .with_look(Look::new(Tone::Current, None, Some("●"))),
+        );
     }
-    if let Some((lo, hi)) = d.band() {
-        // dotted, as the explorer draws thresholds: told apart from the flight without colour;
-        // a dot every third braille column of the chart
-        let n = (f64::from(width) * 2.0 / 3.0).max(2.0);
-        let dots = |h: f64| -> Vec<(f64, f64)> {
-            let n = n as u32;
-            (0..=n)
-                .map(|i| (c.t_hi * f64::from(i) / f64::from(n), h))
-                .collect()
-        };
-        c.band = Some([dots(lo), dots(hi)]);
-        c.h_hi = c.h_hi.max(hi * 1.05);
-    }
-    c
-}
-
-/// The axis' top and its labels, evenly spaced from 0 as ratatui places them: 2 to 4 round
-/// steps (1, 2, 2.5, 5 × 10^k), the count that wastes the least room above `hi` ("0 0.716
-/// 1.43" became "0 0.5 1 1.5").
-fn axis_labels(hi: f64) -> (f64, Vec<String>) {
-    let (top, step) = (2..=4)
-        .map(|n| {
-            let step = crate::figure::ticks::nice_ceil(hi / f64::from(n));
-            (f64::from(n) * step, step)
-        })
-        .min_by(|a, b| a.0.total_cmp(&b.0))
-        .unwrap_or((hi, hi));
-    let n = (top / step).round() as usize;
-    let labels = (0..=n)
-        .map(|i| crate::figure::ticks::step_label(i as f64 * step, step))
-        .collect();
-    (top, labels)
-}
-
-/// Height (m) against time (s) on ratatui's braille `Chart`: the whole sequence dimmed, the
-/// part already flown bright, the ball now as a dot, the standard's window as two lines.
-fn render_chart(d: &DropView, theme: Theme, area: Rect, buf: &mut Buffer) {
-    let c = curves(d, area.width);
-    let ((t_top, t_labels), (h_top, h_labels)) = (axis_labels(c.t_hi), axis_labels(c.h_hi));
-    let live = Style::default().fg(theme.current());
-    let drawn = |name: Option<String>, data, style, graph| {
-        let set = Dataset::default()
-            .marker(Marker::Braille)
-            .graph_type(graph)
-            .style(style)
-            .data(data);
-        match name {
-            Some(n) => set.name(n),
-            None => set,
+    if let (Some((lo, hi)), Some((s, _))) = (d.band(), d.verdict) {
+        let name = format!("{} window", s.name);
+        for (h, key) in [(hi, Some(name.as_str())), (lo, None)] {
+            series.push(
+                Series::new("", "window", Role::Reference, Stroke::Dotted, GREY)
+                    .with_points(vec![(0.0, h), (t_hi, h)])
+                    .with_look(Look::new(Tone::Measured, key, None)),
+            );
         }
-    };
-    let line = |name, data, style| drawn(name, data, style, GraphType::Line);
-    // each name with its line's look, so the legend reads without colour (NO_COLOR)
-    let mut sets = vec![
-        line(None, &c.all, theme.ghost()),
-        line(Some("━ bottom of the ball".into()), &c.flown, live),
-        Dataset::default()
-            .marker(Marker::Dot)
-            .graph_type(GraphType::Scatter)
-            .style(live)
-            .data(&c.now),
-    ];
-    if let (Some([lo, hi]), Some((s, _))) = (&c.band, d.verdict) {
-        let dotted = |name, data| drawn(name, data, theme.measured(), GraphType::Scatter);
-        sets.push(dotted(Some(format!("┄ {} window", s.name)), hi));
-        sets.push(dotted(None, lo));
     }
-    Chart::new(sets)
-        .hidden_legend_constraints((Constraint::Ratio(1, 2), Constraint::Ratio(1, 2)))
-        .block(Block::bordered().title(Span::styled("Drop · height [m] vs t [s]", theme.title())))
-        .x_axis(
-            Axis::default()
-                .style(theme.axis())
-                .bounds([0.0, t_top])
-                .labels(t_labels),
-        )
-        .y_axis(
-            Axis::default()
-                .style(theme.axis())
-                .bounds([0.0, h_top])
-                .labels(h_labels),
-        )
-        .render(area, buf);
+    let mut fig = Figure::new(
+        "Drop".into(),
+        String::new(),
+        FigAxis::linear("t (s)", "t", 1.0),
+        FigAxis::linear("height (m)", "height", 1.0),
+        series,
+    );
+    fig.screen_title = "Drop · height [m] vs t [s]".into();
+    fig
+}
+
+fn render_chart(d: &DropView, theme: Theme, area: Rect, buf: &mut Buffer) {
+    (&Plot::new(&height_figure(d), theme)).render(area, buf);
 }
 
 /// The ball (to scale in height: its bottom at the current height) above the plate.

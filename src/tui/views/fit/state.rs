@@ -20,7 +20,7 @@ pub struct Loaded {
 
 /// The fit's part of the explorer's state: the measured data drawn on the charts, the data a
 /// fit is fitted to, and the fit pane.
-#[derive(Debug, Clone, Default)]
+#[derive(Debug, Clone, Default, PartialEq)]
 pub struct FitState {
     /// Measured data drawn on the charts (`bouncelab --measured FILE`).
     pub overlays: Vec<crate::figure::explorer::MeasuredOverlay>,

@@ -82,10 +82,8 @@ impl App {
         if self.fit.loaded.is_none() && self.fit.overlays.is_empty() {
             return self.warn("no measured data to put away (o loads a file)".into());
         }
-        self.fit.loaded = None;
-        self.fit.overlays.clear();
-        self.fit.pane = None;
-        self.info("measured data put away".into());
+        let what = crate::tui::app::put_away_what(&self.fit);
+        self.overlay = crate::tui::state::Overlay::Ask(crate::tui::state::Ask::PutAway(what));
     }
 
     /// `f`: the fit of the current ball to the loaded data, for the fit worker.

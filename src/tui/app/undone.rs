@@ -1,0 +1,100 @@
+//! What `u` says it undid: each value the undo changes, from what it was to what it is again,
+//! in the explorer's one number format and the readout's units ("undone: m 50 → 37.4 g";
+//! issue 51; tests/tui_app.rs: `u_says_what_it_undid`).
+
+use super::{App, Setting, Undoable};
+use crate::tui::format::{screen_unit, value};
+use crate::tui::physical::Field;
+use crate::tui::views::oblique::param::ObliqueParam;
+use crate::tui::views::oblique::state::ObliqueValues;
+
+/// A value in `unit` (SI) as the screen writes it, with its screen unit: "37.4 g", "∞".
+fn shown(v: Option<f64>, unit: &str) -> (String, String) {
+    let (u, k) = screen_unit(unit);
+    let text = match v {
+        Some(v) if v.is_infinite() => "∞".to_string(),
+        Some(v) => value(v * k),
+        // K_t and κ not set in the oblique view: the ball's
+        None => "the ball's".to_string(),
+    };
+    (text, u.to_string())
+}
+
+/// "m 50 → 37.4 g": `name` from `now` to `then`.
+fn change(name: &str, unit: &str, now: Option<f64>, then: Option<f64>) -> String {
+    let ((a, u), (b, _)) = (shown(now, unit), shown(then, unit));
+    let sep = if u.is_empty() || u.starts_with('°') {
+        ""
+    } else {
+        " "
+    };
+    format!("{name} {a} → {b}{sep}{u}")
+}
+
+/// The fields in the order `u` names them: what a user types or steps first, λ and ζ (which
+/// follow m, K_p, …) after, K_r and c (which follow λ and ζ) last.
+const CHANGED_FIRST: [Field; 14] = [
+    Field::V0,
+    Field::Mass,
+    Field::Radius,
+    Field::KP,
+    Field::ZP,
+    Field::E,
+    Field::TargetMass,
+    Field::TargetSpeed,
+    Field::TargetStiffness,
+    Field::TargetDamping,
+    Field::Lambda,
+    Field::Zeta,
+    Field::KR,
+    Field::C,
+];
+
+fn oblique_value(v: &ObliqueValues, p: ObliqueParam) -> Option<f64> {
+    match p {
+        ObliqueParam::Angle => Some(v.angle),
+        ObliqueParam::Spin => Some(v.spin),
+        ObliqueParam::Friction => Some(v.friction),
+        ObliqueParam::TangentialStiffness => v.tangential_stiffness,
+        ObliqueParam::InertiaFactor => v.inertia_factor,
+    }
+}
+
+impl App {
+    /// The changes from the current state back to `then`, one phrase each.
+    pub(super) fn undone_text(&self, then: &Undoable) -> String {
+        let (now, was): (&Setting, &Setting) = (&self.setting, &then.setting);
+        let mut parts = Vec::new();
+        if now.preset != was.preset {
+            let name = |i: usize| self.presets.get(i).map_or("?", |p| p.name.as_str());
+            parts.push(format!("ball {} → {}", name(now.preset), name(was.preset)));
+        }
+        if now.law != was.law {
+            parts.push(format!("law {} → {}", now.law, was.law));
+        }
+        if now.preset == was.preset {
+            for f in CHANGED_FIRST {
+                let (a, b) = (f.get(now), f.get(was));
+                // NaN on both sides (a metal ball's E) is no change
+                if a != b && !(a.is_nan() && b.is_nan()) {
+                    parts.push(change(f.symbol(), f.unit(), Some(a), Some(b)));
+                }
+            }
+        }
+        let obl = self.oblique.values();
+        for p in ObliqueParam::ALL {
+            let (a, b) = (oblique_value(&obl, p), oblique_value(&then.oblique, p));
+            if a != b {
+                parts.push(change(p.symbol(), p.unit().trim(), a, b));
+            }
+        }
+        if let Some(m) = &then.measured {
+            parts.insert(0, super::ask::put_away_what(m) + " put back");
+        }
+        match parts.len() {
+            0 => "undone".into(),
+            1..=3 => format!("undone: {}", parts.join(", ")),
+            n => format!("undone: {}, and {} more", parts[..2].join(", "), n - 2),
+        }
+    }
+}
