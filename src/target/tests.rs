@@ -91,7 +91,7 @@ fn a_rigid_target_is_the_reduced_ball_at_the_closing_speed() {
 /// so e, F_m, t_f and z_m are the ball's own wall impact at v (1e-9, as issue 53 asks). A
 /// rigid body of the ball's mass instead (`collide` on a `Target` of mass m) is still the wall
 /// impact of m/2 at 2v — what `collide_ball` answered before the partner deformed (tennis at
-/// its v0: 0.7047 against the wall's 0.7219 at ±10 m/s).
+/// ±10 m/s: e 0.7047 against the wall's 0.7219).
 #[test]
 fn equal_balls_head_on_are_the_wall_impact_at_v_and_a_rigid_partner_is_m_half_at_2v() {
     for name in ["superball", "golf", "tennis"] {
