@@ -125,3 +125,21 @@ fn unequal_balls_agree_with_an_independent_integration() {
     }
     eprintln!("worst |e_pair − e_two_bodies| {worst:e}");
 }
+
+/// Two balls with no recoil spring (λ = 0) and an overdamped dashpot (ζ ≥ 1) sink into each
+/// other: the pair never lets go, which is no rebound (e 0), as the wall impact of one of them
+/// says (tests/closed_forms.rs), not an error. `solve` once returned `Unresolved::Horizon`.
+#[test]
+fn balls_that_never_let_go_are_no_rebound() {
+    let ball = Ball::from_preset("tennis").unwrap();
+    let p = bouncelab::ImpactParams {
+        k_r: 0.0,
+        damping: 5.0,
+        ..ball.params
+    };
+    let wall = bouncelab::solver::simulate(&p, ContactLaw::Linear, &Default::default()).unwrap();
+    assert!(!wall.rebound);
+    let got = pair::solve(&p, &p, ContactLaw::Linear, 2.0 * p.v0).unwrap();
+    assert!(!got.rebound && got.cor == 0.0, "{got:?}");
+    assert!(got.f_max > 0.0 && got.z_max > 0.0, "{got:?}");
+}

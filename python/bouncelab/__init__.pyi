@@ -483,7 +483,7 @@ def collide(
 ) -> Collision:
     """The ball against a target of mass M (inf: the wall) moving at v_t toward it, rigid or
     with a surface K_s ∥ c_s, as ``bouncelab collide``; or against another preset ball
-    (``target_preset``)."""
+    (``target_preset``): both balls deform, their chains in series (docs/targets.md §8)."""
 
 class ObliqueImpact:
     """An oblique impact, SI units; attributes are ``bouncelab oblique --format json``'s keys:

@@ -209,7 +209,9 @@ impl From<CollisionReport> for Collision {
 
 /// A preset ball against a target, as `bouncelab collide --preset NAME [--v0 V] --target-mass M
 /// [--target-speed V_T] [--target-stiffness K_S] [--target-damping C_S]`, or against another
-/// preset ball with `target_preset` (instead of `target_mass`). `target_mass = inf` is the wall.
+/// preset ball with `target_preset` (instead of `target_mass`; both balls deform, their chains
+/// in series, through the same `Ball::collide_ball`: docs/targets.md §8). `target_mass = inf`
+/// is the wall.
 #[pyfunction]
 #[pyo3(signature = (preset="superball", v0=None, target_mass=None, target_speed=0.0, target_stiffness=f64::INFINITY, target_damping=0.0, target_preset=None, law=None, params=None, *, mass=None, radius=None, k_p=None, damping=None, k_r=None, z_p=None))]
 // help()'s signature, which pyo3 writes "..." for f64::INFINITY in (shown "Ellipsis"): 1e999

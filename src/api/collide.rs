@@ -76,10 +76,13 @@ impl Ball {
         })
     }
 
-    /// Ball on ball, head-on: this ball at its v0 against `other` (a rigid body of its mass)
-    /// coming at `other_speed`, with the pair's m_eff and R_eff (the radii of the presets'
-    /// measurements; `None` for a ball that is no preset). `surface` gives the other ball's
-    /// give as K_s, c_s (`Target::wall()`'s: none).
+    /// Ball on ball, head-on: this ball at its v0 against `other` coming at `other_speed`,
+    /// with the pair's m_eff and R_eff (the radii of the presets' measurements; `None` for a
+    /// ball that is no preset). With `surface` rigid (`(f64::INFINITY, _)`, the default) both
+    /// balls deform, their chains in series on this ball's law (`target::pair`,
+    /// docs/targets.md §8): identical balls at ±v bounce as one off the wall at v. A surface
+    /// given as K_s, c_s stands for the other ball's give instead: it is then a body of its
+    /// mass behind that surface (docs/targets.md §7).
     pub fn collide_ball(
         &self,
         other: &Ball,
@@ -92,7 +95,26 @@ impl Ball {
             stiffness: surface.0,
             damping: surface.1,
         };
-        let mut r = self.collide(&target)?;
+        let mut r = if target.is_rigid() {
+            let (p1, p2) = (&self.params, &other.params);
+            let collision = crate::target::pair::collide(p1, p2, self.law, p1.v0, other_speed)?;
+            // the reach is read on the reduced single chain (ball 1 against a rigid m*, the
+            // old model), not on the pair's run: an estimate (docs/targets.md §8)
+            let warnings = self.collision_warning(&target, p1.v0, &collision);
+            CollisionReport {
+                ball: self.name.clone(),
+                law: self.law,
+                ball_mass: p1.mass,
+                ball_speed: p1.v0,
+                target,
+                collision,
+                effective_mass: None,
+                effective_radius: None,
+                warnings: warnings.into_iter().collect(),
+            }
+        } else {
+            self.collide(&target)?
+        };
         r.effective_mass = Some(r.collision.reduced_mass);
         r.effective_radius = match (&self.measured, &other.measured) {
             (Some(a), Some(b)) => Some(a.radius * b.radius / (a.radius + b.radius)),

@@ -31,7 +31,8 @@ pub struct CollideArgs {
         conflicts_with = "target_preset"
     )]
     pub target_mass: Option<f64>,
-    /// Another ball as the target: its preset's mass (the pair's m_eff and R_eff are reported)
+    /// Another ball as the target: both balls deform, their chains in series (with
+    /// --target-stiffness: a body of its mass behind that surface); m_eff and R_eff reported
     #[arg(long, value_name = "NAME")]
     pub target_preset: Option<String>,
     /// The target's speed toward the ball (m/s; negative: receding)
@@ -101,11 +102,16 @@ fn text(
     r: &CollisionReport,
     other: Option<&str>,
 ) -> std::io::Result<()> {
-    let what = other.map_or("a target".to_string(), |o| format!("{o} (a rigid body)"));
+    let what = match other {
+        None => "a target".to_string(),
+        // both chains in series (docs/targets.md §8)
+        Some(o) if r.target.is_rigid() => format!("{o} (a ball that deforms too)"),
+        Some(o) => format!("{o} (a body of its mass behind the given surface)"),
+    };
     writeln!(out, "{} against {what}", ball.label())?;
     writeln!(out, "  law {}, method {}", r.law, r.collision.method.name())?;
     writeln!(out)?;
-    table(out, "  ", &setup_rows(r))?;
+    table(out, "  ", &setup_rows(r, other.is_some()))?;
     writeln!(out)?;
     table(out, "  ", &result_rows(r))?;
     output::warning_lines(out, &r.warnings)
@@ -119,8 +125,8 @@ fn mm(x: f64) -> String {
     format!("{} mm", human(x * 1e3, 4))
 }
 
-/// The ball, the target, the pair (and the DEM pair with a target preset).
-fn setup_rows(r: &CollisionReport) -> Vec<Vec<String>> {
+/// The ball, the target, the pair (and the DEM pair with a target preset, `ball_partner`).
+fn setup_rows(r: &CollisionReport, ball_partner: bool) -> Vec<Vec<String>> {
     let (t, c) = (&r.target, &r.collision);
     let ball = format!(
         "m {}, {} toward the target",
@@ -131,7 +137,11 @@ fn setup_rows(r: &CollisionReport) -> Vec<Vec<String>> {
         "M {}, {}, {}",
         mass(t.mass),
         directed(t.speed, "toward the ball", "away from the ball"),
-        surface(t)
+        if ball_partner && t.is_rigid() {
+            "deforms (its own chain, in series)".into()
+        } else {
+            surface(t)
+        }
     );
     let pair = format!(
         "m* {}, closing speed {}",

@@ -80,7 +80,8 @@ pub struct PeersArgs {
     pub target: TargetChoice,
     /// Calibrate for the pair with another preset ball (docs/targets.md): m_eff = m1 m2/(m1 +
     /// m2), R_eff = R1 R2/(R1 + R2), v0 the closing speed; the target COR is the model's for
-    /// the pair unless --cor or another --target is given
+    /// the pair, both balls deforming (as collide --target-preset), unless --cor or another
+    /// --target is given
     #[arg(long, value_name = "PRESET")]
     pub pair: Option<String>,
     /// Output format of the comparison (not with --export, whose CODE is the format; `--export
@@ -140,6 +141,10 @@ struct Pair {
     preset: String,
     effective_mass: f64,
     effective_radius: f64,
+    /// The pair's e at v0 onto the partner at rest, both balls deforming (`collide
+    /// --target-preset`, docs/targets.md §8): the model's COR for the pair.
+    #[serde(skip)]
+    cor: f64,
 }
 
 impl PeersArgs {
@@ -178,7 +183,7 @@ pub fn run(a: &PeersArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     };
     let radius = b.measured.as_ref().map_or(f64::NAN, |m| m.radius);
     let ball = PeerBall::from_params(&b.params, radius);
-    let (target, source) = target(a, &b)?;
+    let (target, source) = target(a, &b, pair.as_ref())?;
     if let Some(code) = a.export {
         let mut set = ExportSet::new(&ball, target, b.name.as_deref().unwrap_or("ball"))?;
         set.tangential = tangential(a, &b, code)?;
@@ -228,7 +233,7 @@ pub fn run(a: &PeersArgs, out: &mut dyn Write) -> anyhow::Result<()> {
 }
 
 /// The target COR and where it came from.
-fn target(a: &PeersArgs, b: &Ball) -> anyhow::Result<(f64, &'static str)> {
+fn target(a: &PeersArgs, b: &Ball, pair: Option<&Pair>) -> anyhow::Result<(f64, &'static str)> {
     if let Some(e) = a.cor {
         if !(e.is_finite() && (0.0..=1.0).contains(&e)) {
             anyhow::bail!("invalid cor: {} (a COR lies in [0, 1])", num(e));
@@ -236,9 +241,12 @@ fn target(a: &PeersArgs, b: &Ball) -> anyhow::Result<(f64, &'static str)> {
         return Ok((e, "given"));
     }
     let (p, law) = (&b.params, b.law);
-    // a measured COR is the ball's against a wall, not the pair's: a pair takes the model's
-    let which = match (a.pair_name()?, a.source()) {
-        (Some(_), TargetArg::Measured) => TargetArg::ChristoforouYigit,
+    // a measured COR is the ball's against a wall, not the pair's: a pair takes the model's,
+    // both balls deforming (as `collide --target-preset`)
+    let which = match (pair, a.source()) {
+        (Some(pair), TargetArg::Measured | TargetArg::ChristoforouYigit) => {
+            return Ok((pair.cor, "christoforou-yigit"));
+        }
         (_, which) => which,
     };
     match which {
@@ -268,17 +276,20 @@ fn target(a: &PeersArgs, b: &Ball) -> anyhow::Result<(f64, &'static str)> {
 
 /// The ball as the pair with preset `name` presents it to a DEM code: mass m_eff and radius
 /// R_eff (the presets' measured radii), the rest of the ball kept, v0 the closing speed (the
-/// partner at rest): the reduced ball of docs/targets.md §2, a rigid partner.
+/// partner at rest): the reduced ball of docs/targets.md §2, which the peers' single contact
+/// calibrates; the target COR is the pair's own, both balls deforming (docs/targets.md §8).
 fn pair_ball(a: &PeersArgs, mut b: Ball, name: &str) -> anyhow::Result<(Ball, Option<Pair>)> {
     let entry = super::ball::select(Some(name), a.ball.choice.config.as_deref())?;
     let other = Ball::from_entry(&entry, None, None, None)?;
     let (m1, m2) = (b.params.mass, other.params.mass);
     let radius = |x: &Ball| x.measured.as_ref().map_or(f64::NAN, |m| m.radius);
     let (r1, r2) = (radius(&b), radius(&other));
+    let rigid = (f64::INFINITY, 0.0);
     let pair = Pair {
         preset: other.name.clone().unwrap_or_default(),
         effective_mass: m1 * m2 / (m1 + m2),
         effective_radius: r1 * r2 / (r1 + r2),
+        cor: b.collide_ball(&other, 0.0, rigid)?.collision.cor,
     };
     b.params.mass = pair.effective_mass;
     b.params.validate()?;

@@ -37,16 +37,22 @@ const MAX_PHASES: usize = 256;
 /// How far past Z̄_m, relative, an unloading pair must rise before it reloads.
 const RELOAD: f64 = 1e-9;
 
-/// The pair's answer in ball 1's reduced units: ᾱ' at separation (−e), the peak force and the
-/// contact time (τ).
+/// The pair's answer in ball 1's reduced units: ᾱ' at separation (−e), the peak force, the
+/// contact time (τ) and ball 1's own contact indentations.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct PairOutcome {
-    /// e, the pair's COR.
+    /// e, the pair's COR (0 without rebound).
     pub cor: f64,
     /// F̄_m.
     pub f_max: f64,
-    /// τ_f.
+    /// τ_f, or the horizon after which "no rebound" was concluded.
     pub tau_end: f64,
+    /// Whether the pair let go within the horizon.
+    pub rebound: bool,
+    /// Ball 1's peak indentation z̄_m1 (its contact's share of Z̄ at the turn).
+    pub z_max: f64,
+    /// Ball 1's permanent indentation z̄_f1 (Eq. 18, from its own peak).
+    pub z_f: f64,
 }
 
 #[derive(Clone, Copy)]
@@ -203,8 +209,9 @@ fn integrate<O: Solout<f64, X>>(pair: &Pair, t0: f64, x0: X, tf: f64, out: &mut 
 }
 
 /// The head-on impact of ball `p1` with ball `p2` (their `v0` ignored) at closing speed
-/// `closing` (m/s), both on `law`. An error says which budget ran out; a pair that does not
-/// let go within the horizon (no rebound) is one of them.
+/// `closing` (m/s), both on `law`. A pair that does not let go within the horizon (a hundred
+/// times the slowest of its periods and relaxations) is no rebound (`rebound` false, e 0); an
+/// error says which budget (steps, phases) ran out.
 pub fn solve(
     p1: &ImpactParams,
     p2: &ImpactParams,
@@ -240,6 +247,7 @@ pub fn solve(
     let t_max = 100.0 * std::f64::consts::PI * (2.0 + soft(&n1) + soft(&n2) + 1.0 / pair.r);
     let (mut t, mut x) = (0.0, [0.0, 1.0, 0.0, 0.0]);
     let mut f_max: f64 = 0.0;
+    let (mut z_max, mut z_f): (f64, f64) = (0.0, 0.0);
     for _ in 0..MAX_PHASES {
         let mut w = Watcher {
             pair: &pair,
@@ -249,7 +257,15 @@ pub fn solve(
             return Err(Unresolved::Steps);
         }
         let Some((tc, which, tp, xp)) = w.hit else {
-            return Err(Unresolved::Horizon);
+            // followed to the horizon without letting go: no rebound
+            return Ok(PairOutcome {
+                cor: 0.0,
+                f_max,
+                tau_end: t_max,
+                rebound: false,
+                z_max,
+                z_f,
+            });
         };
         let mut end = End(xp);
         if !integrate(&pair, tp, xp, tc, &mut end) {
@@ -263,17 +279,94 @@ pub fn solve(
                 let (z1, z2) = pair.indentations(f);
                 let u1 = pair.c1.unload_from(z1);
                 let u2 = pair.c2.unload_from(z2 * pair.r);
+                (z_max, z_f) = (z_max.max(u1.z_m), u1.z_f);
                 pair.branch = Branch::Unloading(u1, u2);
             }
             (Branch::Unloading(..), 0) => {
+                // the force gone with the two still closing (ᾱ' ≥ 0: sunk into each other,
+                // λ = 0 and ζ ≥ 1) is no rebound, as the wall impact says
                 return Ok(PairOutcome {
                     cor: (-x[1]).clamp(0.0, 1.0),
                     f_max,
                     tau_end: t,
+                    rebound: x[1] < 0.0,
+                    z_max,
+                    z_f,
                 });
             }
             (Branch::Unloading(..), _) => pair.branch = Branch::Loading,
         }
     }
     Err(Unresolved::Phases)
+}
+
+/// Ball `p1` (its `v0` ignored) at `ball_speed` toward ball `p2` coming at `other_speed`,
+/// head-on, both chains in series (docs/targets.md §8), as a [`super::Collision`] in SI: the
+/// pair's e, F_m, t_f, ball 1's z_m and z_f, and both speeds out from the impulse
+/// J = m*(1 + e) v_c (docs/targets.md §3). The partner has no surface apart from its own
+/// chain: `max_target_deflection` is 0. Method: numeric (DOP853).
+pub fn collide(
+    p1: &ImpactParams,
+    p2: &ImpactParams,
+    law: ContactLaw,
+    ball_speed: f64,
+    other_speed: f64,
+) -> Result<super::Collision, crate::solver::SolveError> {
+    use crate::model::params::Field;
+    let partner = super::Target {
+        mass: p2.mass,
+        speed: other_speed,
+        ..super::Target::wall()
+    };
+    partner.validate()?;
+    if !ball_speed.is_finite() {
+        return Err(super::bad(Field::V0, ball_speed, "must be finite").into());
+    }
+    let closing = ball_speed + other_speed;
+    if closing.is_nan() || closing <= 0.0 {
+        return Err(super::bad(
+            Field::TargetSpeed,
+            other_speed,
+            "the ball and the target never meet: v0 + target_speed must be positive",
+        )
+        .into());
+    }
+    let m_star = p1.mass * p2.mass / (p1.mass + p2.mass);
+    let reduced = ImpactParams {
+        mass: m_star,
+        v0: closing,
+        ..*p1
+    };
+    reduced.validate()?;
+    ImpactParams {
+        mass: m_star,
+        v0: closing,
+        ..*p2
+    }
+    .validate()?;
+    let o = solve(p1, p2, law, closing).map_err(|reason| {
+        let n = reduced.normalized();
+        crate::solver::SolveError::Unresolved {
+            steps: if reason == Unresolved::Steps {
+                MAX_STEPS
+            } else {
+                0
+            },
+            reason,
+            lambda: n.lambda,
+            zeta: n.zeta,
+        }
+    })?;
+    let outcome = super::Outcome {
+        rebound: o.rebound,
+        tau_end: o.tau_end,
+        velocity_end: -o.cor,
+        f_max: o.f_max,
+        z_max: o.z_max,
+        z_f: o.z_f,
+        s_max: 0.0,
+        method: crate::solver::Method::Numeric,
+    };
+    let relative = outcome.to_si(&reduced);
+    Ok(relative.into_collision(p1.mass, &partner, ball_speed, m_star))
 }
