@@ -1,0 +1,136 @@
+//! Issue 52: every preset carries its calibration record, every answer outside it says so,
+//! and every JSON answer names the ball it ran (docs/presets.md, "The calibration record";
+//! docs/cli.md, "The ball object").
+
+mod common;
+
+use bouncelab::preset::Preset;
+use common::*;
+use serde_json::Value;
+
+/// The warnings of a JSON answer that begin with "outside calibration:".
+fn outside(v: &Value) -> Vec<String> {
+    v["warnings"]
+        .as_array()
+        .unwrap_or_else(|| panic!("no warnings array: {v}"))
+        .iter()
+        .filter_map(Value::as_str)
+        .filter(|w| w.starts_with("outside calibration:"))
+        .map(String::from)
+        .collect()
+}
+
+#[test]
+fn every_embedded_preset_has_a_record_that_holds_at_its_own_speed() {
+    for p in Preset::embedded_all() {
+        let c = p
+            .calibration
+            .as_ref()
+            .unwrap_or_else(|| panic!("{} has no [calibration]", p.name));
+        assert!(c.holds_at(p.measured.v0), "{}: {c:?}", p.name);
+        assert!(!c.data.is_empty() && c.data.iter().all(|d| !d.source.is_empty()));
+        // and it reads back exactly from its TOML
+        let back = Preset::parse(&p.to_toml(&[]), "x.toml").unwrap();
+        assert_eq!(back.calibration, p.calibration);
+    }
+}
+
+#[test]
+fn a_bad_record_is_named_with_file_line_and_column() {
+    let text = SUPERBALL.replace("speed_max = 3.12 ", "speed_max = 1.0  ");
+    let err = Preset::parse(&text, "b.toml").unwrap_err().to_string();
+    let line = text
+        .lines()
+        .position(|l| l.starts_with("speed_max"))
+        .unwrap()
+        + 1;
+    assert_eq!(
+        err,
+        format!("b.toml:{line}:1: calibration.speed_max: 1 is below speed_min 3.12")
+    );
+    let text = SUPERBALL.replace("speeds = [3.12]", "speeds = [-3.12]");
+    let err = Preset::parse(&text, "b.toml").unwrap_err().to_string();
+    assert!(
+        err.contains(": calibration.data.speeds: must be a positive finite number, got -3.12"),
+        "{err}"
+    );
+    let text = SUPERBALL.replace("source = \"Cross", "sauce = \"Cross");
+    let err = Preset::parse(&text, "b.toml").unwrap_err().to_string();
+    assert!(err.contains("unknown field `sauce`"), "{err}");
+}
+
+#[test]
+fn presets_shows_the_records() {
+    let v = json(&["presets", "--format", "json"]);
+    let golf = v
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|p| p["name"] == "golf")
+        .unwrap();
+    assert_eq!(f(&golf["calibration"], "speed_min"), 1.47);
+    assert_eq!(f(&golf["calibration"], "speed_max"), 1.47);
+    let text = ok(&["presets"]);
+    assert!(text.contains("  golf: 1.47 m/s only\n"), "{text}");
+    assert!(
+        text.contains("  football: 6.111 m/s only, 20 °C, 80 kPa gauge\n"),
+        "{text}"
+    );
+}
+
+/// The paper's baseball at the MLB test speed, 85 ft/s = 25.908 m/s: outside its record.
+#[test]
+fn the_papers_baseball_at_the_mlb_speed_is_outside_calibration() {
+    let v = json(&[
+        "run", "--preset", "baseball", "--v0", "25.908", "--format", "json",
+    ]);
+    let w = outside(&v);
+    assert_eq!(w.len(), 1, "{v}");
+    assert!(
+        w[0].starts_with(
+            "outside calibration: impact speed 25.91 m/s, the ball was fitted at 1.25 m/s only"
+        ),
+        "{}",
+        w[0]
+    );
+    // at its own speed: none
+    let v = json(&["run", "--preset", "baseball", "--format", "json"]);
+    assert!(outside(&v).is_empty(), "{v}");
+    // text: a warning line
+    let text = ok(&["run", "--preset", "golf", "--v0", "40"]);
+    assert!(
+        text.contains("warning: outside calibration: impact speed 40 m/s"),
+        "{text}"
+    );
+}
+
+#[test]
+fn an_override_is_listed_what_was_kept_too_and_the_comparison_is_withheld() {
+    let v = json(&[
+        "run", "--preset", "tennis", "--k-p", "30000", "--format", "json",
+    ]);
+    let ball = &v["ball"];
+    assert_eq!(ball["name"], "tennis");
+    assert_eq!(ball["overrides"], serde_json::json!(["k_p"]));
+    assert_eq!(f(ball, "k_p"), 30000.0);
+    assert_eq!(f(ball, "inertia_factor"), 0.6105);
+    assert!(
+        v["comparison_withheld"]
+            .as_str()
+            .unwrap()
+            .contains("k_p changed this ball"),
+        "{v}"
+    );
+    let w = outside(&v);
+    assert!(w[0].starts_with("outside calibration: k_p changed the ball"), "{w:?}");
+    let text = ok(&["run", "--preset", "tennis", "--k-p", "30000"]);
+    assert!(
+        text.contains("overrides: k_p; kept from the preset: mass, radius, c, k_r, z_p\n"),
+        "{text}"
+    );
+    assert!(text.contains("(measured values not compared:"), "{text}");
+    // no override: an empty list, the comparison made
+    let v = json(&["run", "--preset", "tennis", "--format", "json"]);
+    assert_eq!(v["ball"]["overrides"], serde_json::json!([]));
+    assert!(v["comparison_withheld"].is_null());
+}
