@@ -134,3 +134,59 @@ fn an_override_is_listed_what_was_kept_too_and_the_comparison_is_withheld() {
     assert_eq!(v["ball"]["overrides"], serde_json::json!([]));
     assert!(v["comparison_withheld"].is_null());
 }
+
+/// The warnings of every kind of answer, at a speed outside the ball's record: each begins
+/// with "outside calibration:" and names the value and the range.
+#[test]
+fn every_answer_outside_the_record_says_so() {
+    let golf_40: &[&[&str]] = &[
+        &["run", "--preset", "golf", "--v0", "40"],
+        &["oblique", "--preset", "golf", "--v0", "40", "--angle", "90", "--friction", "0.5"],
+        &["collide", "--preset", "golf", "--v0", "40", "--target-mass", "inf"],
+        &["mc", "--preset", "golf", "--v0", "40", "--vary", "k_p=5%", "--samples", "1000"],
+        &["peers", "--preset", "golf", "--v0", "40"],
+    ];
+    for args in golf_40 {
+        let v = json(&[args, &["--format", "json"][..]].concat());
+        let w = outside(&v);
+        assert_eq!(w.len(), 1, "{args:?}: {v}");
+        assert!(
+            w[0].starts_with("outside calibration: impact speed 40 m/s, the ball was fitted at 1.47 m/s only"),
+            "{args:?}: {}",
+            w[0]
+        );
+    }
+    // sweep rows: each row its own
+    let v = json(&[
+        "sweep", "velocity", "--preset", "golf", "--from", "1.47", "--to", "40", "--points", "2",
+        "--format", "json",
+    ]);
+    let rows = v["rows"].as_array().unwrap();
+    assert!(outside(&rows[0]).is_empty(), "{}", rows[0]);
+    assert_eq!(outside(&rows[1]).len(), 1, "{}", rows[1]);
+    // the map: once for the grid
+    let v = json(&[
+        "map", "--preset", "golf", "--v0", "40", "--lambda", "0.5:1:2", "--zeta", "0.05:0.1:2",
+        "--format", "json",
+    ]);
+    assert_eq!(outside(&v).len(), 1, "{v}");
+    assert_eq!(v["ball"]["name"], "golf");
+    // a bat: the game's and the BBCOR test's closing speeds, one warning
+    let v = json(&["bat", "--preset", "baseball", "--bat-mass", "0.9", "--format", "json"]);
+    let w = outside(&v);
+    assert_eq!(w.len(), 1, "{v}");
+    assert!(w[0].starts_with("outside calibration: impact speeds "), "{}", w[0]);
+    assert!(w[0].contains("fitted at 1.25 m/s only"), "{}", w[0]);
+    // a drop is judged by its first impact: the ITF drop is the tennis ball's record
+    let v = json(&[
+        "drop", "--preset", "tennis", "--height", "2.54", "--standard", "itf", "--format", "json",
+    ]);
+    assert!(outside(&v).is_empty(), "{v}");
+    let o = bl(&["drop", "--preset", "golf", "--height", "20", "--format", "json"]);
+    let v: Value = serde_json::from_str(&o.stdout).unwrap();
+    assert_eq!(outside(&v).len(), 1, "{v}");
+    // court: the normal speed of the ITF's 30 m/s at 16°
+    let v = json(&["court", "--preset", "tennis", "--friction", "0.6", "--format", "json"]);
+    let w = outside(&v);
+    assert!(w[0].starts_with("outside calibration: impact speed 8.269 m/s"), "{w:?}");
+}

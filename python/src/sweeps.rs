@@ -104,7 +104,7 @@ pub(crate) fn sweep_velocity<'py>(
     d.set_item("max_indentation", col(|r| r.max_indentation))?;
     let warnings: Vec<Vec<String>> = py.detach(|| {
         rows.iter()
-            .map(|r| ball.velocity_row_warning(r).into_iter().collect())
+            .map(|r| ball.velocity_row_warnings(r))
             .collect()
     });
     d.set_item("warnings", warnings)?;

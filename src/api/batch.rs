@@ -330,6 +330,27 @@ pub struct BatchReport<'a> {
     pub summary: BatchSummary,
     /// Every ball, in the batch's order.
     pub balls: &'a [BallOutcome],
+    /// The lot's: the standard's impact speed against the record of the ball the fits start
+    /// from (what they hold fixed is that ball's; [`Ball::standard_calibration_warning`]).
+    pub warnings: Vec<String>,
+    /// The ball the fits start from (docs/cli.md, "The ball object").
+    pub ball: super::BallRecord,
+}
+
+impl Ball {
+    /// "outside calibration: …" for a test of `standard` on this ball: its impact speed (a
+    /// drop's first impact, through standard air, from the release height) against the
+    /// ball's record; `None` inside it, without a record, or when the drop has no impact.
+    pub fn standard_calibration_warning(&self, standard: &Standard) -> Option<String> {
+        let v = match standard.test {
+            Test::Cor { speed } => speed,
+            Test::Drop { height, .. } => {
+                let run = self.drop_test(&crate::drop::DropSetup::new(height)).ok()?;
+                run.bounces.first()?.v_in
+            }
+        };
+        self.calibration_warning(v)
+    }
 }
 
 impl<'a> BatchReport<'a> {
@@ -365,6 +386,8 @@ impl<'a> BatchReport<'a> {
                 free,
             },
             balls,
+            warnings: ball.standard_calibration_warning(standard).into_iter().collect(),
+            ball: ball.record_json(),
         }
     }
 }

@@ -207,7 +207,7 @@ fn velocity(a: &VelocityArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         .map(|(row, i)| VelocityRow {
             row,
             intervals: i.copied(),
-            warnings: b.velocity_row_warning(row).into_iter().collect(),
+            warnings: b.velocity_row_warnings(row),
         })
         .collect();
     match a.format {
