@@ -190,3 +190,31 @@ fn every_answer_outside_the_record_says_so() {
     let w = outside(&v);
     assert!(w[0].starts_with("outside calibration: impact speed 8.269 m/s"), "{w:?}");
 }
+
+/// `drop --standard mlb` with the paper's baseball: the verdict is the model's at 85 ft/s,
+/// 20 times the speed the ball was fitted at, and says so; the JSON names the ball dropped.
+#[test]
+fn the_mlb_verdict_on_the_papers_baseball_warns_and_the_drop_names_its_ball() {
+    let o = bl(&["drop", "--preset", "baseball", "--standard", "mlb", "--format", "json"]);
+    let v: Value = serde_json::from_str(&o.stdout).expect(&o.stderr);
+    assert_eq!(v["standard"]["verdict"], "fail");
+    let w = outside(&v);
+    assert!(
+        w.iter().any(|w| w.starts_with(
+            "outside calibration: impact speed 25.91 m/s, the ball was fitted at 1.25 m/s only"
+        )),
+        "{w:?}"
+    );
+    assert_eq!(v["ball"]["name"], "baseball");
+    assert_eq!(f(&v["ball"], "k_p"), 1.05e6);
+    let v = json(&[
+        "drop", "--preset", "tennis", "--height", "2.54", "--k-r", "20000", "--format", "json",
+    ]);
+    assert_eq!(v["ball"]["overrides"], serde_json::json!(["k_r"]));
+    assert!(outside(&v)[0].starts_with("outside calibration: k_r changed the ball"));
+    let text = bl(&["drop", "--preset", "tennis", "--k-r", "20000"]).stdout;
+    assert!(
+        text.contains("\noverrides: k_r; kept from the preset: mass, radius, k_p, c, z_p\n"),
+        "{text}"
+    );
+}

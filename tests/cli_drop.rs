@@ -19,8 +19,11 @@ fn json_holds_the_issues_keys_and_the_verdict() {
     ]);
     // serde_json's map sorts its keys
     let keys: Vec<&String> = v.as_object().unwrap().keys().collect();
-    // (issue 27 added `warnings`, the first impact's)
-    assert_eq!(keys, ["bounces", "drag", "height", "standard", "warnings"]);
+    // (issue 27 added `warnings`, the first impact's; issue 52 `ball`, the ball dropped)
+    assert_eq!(
+        keys,
+        ["ball", "bounces", "drag", "height", "standard", "warnings"]
+    );
     // the standard's drop height is the default
     assert_eq!(f(&v, "height"), 2.54);
     assert_eq!(v["drag"], true);
