@@ -3,6 +3,7 @@
 //! docs/cli.md, "The ball object").
 
 mod common;
+mod fit_common;
 
 use bouncelab::preset::Preset;
 use common::*;
@@ -217,4 +218,65 @@ fn the_mlb_verdict_on_the_papers_baseball_warns_and_the_drop_names_its_ball() {
         text.contains("\noverrides: k_r; kept from the preset: mass, radius, k_p, c, z_p\n"),
         "{text}"
     );
+}
+
+/// `fit --force-time` without `--v0` held the preset's speed: a superball trace made at twice
+/// it (6.24 m/s) with K_r = 90 000 N/m gave K_r 43 k with a tight interval. Now the speed is
+/// fitted too, the report says so, and the truth lies inside every interval.
+#[test]
+fn a_trace_without_v0_fits_its_speed() {
+    use bouncelab::{Ball, SolveOptions, simulate};
+    let ball = Ball::from_preset("superball").unwrap();
+    let truth = bouncelab::ImpactParams {
+        v0: 2.0 * ball.params.v0,
+        k_r: 9e4,
+        ..ball.params
+    };
+    let r = simulate(&truth, ball.law, &SolveOptions::default().with_samples(4_001)).unwrap();
+    let (h, tf) = (&r.history, r.contact_time.unwrap());
+    let mut rng = fit_common::Rng::new(52);
+    let mut text = String::from("time_s,force_N\n");
+    let dt = 1e-5;
+    for i in 0..600 {
+        let t = -5e-4 + i as f64 * dt;
+        let force = if t <= 0.0 || t >= tf {
+            0.0
+        } else {
+            let k = ((t / h.t[1]) as usize).min(h.t.len() - 2);
+            let w = (t - h.t[k]) / (h.t[k + 1] - h.t[k]);
+            h.force[k] * (1.0 - w) + h.force[k + 1] * w
+        };
+        text.push_str(&format!("{t},{}\n", force + 0.5 * rng.normal()));
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("trace.csv");
+    std::fs::write(&path, text).unwrap();
+    let p = path.to_str().unwrap();
+    let v = json(&["fit", "--preset", "superball", "--force-time", p, "--format", "json"]);
+    let inside = |name: &str, want: f64| {
+        let ci = &v["fitted"][name]["ci95"];
+        let (lo, hi) = (ci[0].as_f64().unwrap(), ci[1].as_f64().unwrap());
+        assert!(lo < want && want < hi, "{name}: {want} not in [{lo}, {hi}]: {v}");
+    };
+    inside("v0", truth.v0);
+    inside("k_r", truth.k_r);
+    inside("k_p", truth.k_p);
+    inside("c", truth.damping);
+    let said = v["warnings"].as_array().unwrap()[0].as_str().unwrap();
+    assert!(
+        said.starts_with("no --v0 given: the trace's impact speed was fitted (as --free v0)"),
+        "{said}"
+    );
+    // with --v0 the speed is held, as before
+    let v = json(&[
+        "fit", "--preset", "superball", "--force-time", p, "--v0", "6.24", "--format", "json",
+    ]);
+    assert!(v["fitted"]["v0"].is_null(), "{v}");
+    inside_of(&v, "k_r", truth.k_r);
+}
+
+fn inside_of(v: &Value, name: &str, want: f64) {
+    let ci = &v["fitted"][name]["ci95"];
+    let (lo, hi) = (ci[0].as_f64().unwrap(), ci[1].as_f64().unwrap());
+    assert!(lo < want && want < hi, "{name}: {want} not in [{lo}, {hi}]");
 }
