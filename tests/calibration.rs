@@ -145,7 +145,6 @@ fn every_answer_outside_the_record_says_so() {
         &["oblique", "--preset", "golf", "--v0", "40", "--angle", "90", "--friction", "0.5"],
         &["collide", "--preset", "golf", "--v0", "40", "--target-mass", "inf"],
         &["mc", "--preset", "golf", "--v0", "40", "--vary", "k_p=5%", "--samples", "1000"],
-        &["peers", "--preset", "golf", "--v0", "40"],
     ];
     for args in golf_40 {
         let v = json(&[args, &["--format", "json"][..]].concat());
@@ -157,6 +156,19 @@ fn every_answer_outside_the_record_says_so() {
             w[0]
         );
     }
+    // peers at 40 m/s: the speed, and the target COR measured at another one, both named
+    let v = json(&["peers", "--preset", "golf", "--v0", "40", "--format", "json"]);
+    let w = outside(&v);
+    assert_eq!(w.len(), 2, "{v}");
+    assert!(w[0].starts_with("outside calibration: impact speed 40 m/s"), "{}", w[0]);
+    assert_eq!(
+        w[1],
+        "outside calibration: the target COR 0.84 was measured at 1.47 m/s, and this \
+         calibration is at impact speed 40 m/s (give --cor E for the COR at that speed)"
+    );
+    // a COR given is the user's, at the speed asked: no second warning
+    let v = json(&["peers", "--preset", "golf", "--v0", "40", "--cor", "0.7", "--format", "json"]);
+    assert_eq!(outside(&v).len(), 1, "{v}");
     // sweep rows: each row its own
     let v = json(&[
         "sweep", "velocity", "--preset", "golf", "--from", "1.47", "--to", "40", "--points", "2",

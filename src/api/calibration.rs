@@ -113,6 +113,26 @@ impl Ball {
         Some(line)
     }
 
+    /// "outside calibration: …" when the preset's measured COR, taken at its measured speed,
+    /// is used as the target of a calibration at this ball's v0, another speed (`peers --v0
+    /// V`): both speeds named. `None` at the measured speed (to
+    /// [`crate::preset::SPEED_SLACK`]) or without a measured COR.
+    pub fn measured_cor_warning(&self) -> Option<String> {
+        let m = self.measured.as_ref()?;
+        let e = m.cor?;
+        let v = self.params.v0;
+        let same = (v - m.v0).abs() <= crate::preset::SPEED_SLACK * m.v0;
+        (!same).then(|| {
+            format!(
+                "outside calibration: the target COR {} was measured at {} m/s, and this \
+                 calibration is at impact speed {} m/s (give --cor E for the COR at that speed)",
+                short(e, 4),
+                short(m.v0, 4),
+                short(v, 4)
+            )
+        })
+    }
+
     /// "outside calibration: …" when an impact at `v` (m/s) lies outside the speeds the ball's
     /// `[calibration]` record holds over, or when the command line changed the recorded ball;
     /// it names the range and the value. `None` inside the range, and for a ball with no
