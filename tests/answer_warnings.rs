@@ -23,7 +23,10 @@ fn json(args: &[&str]) -> serde_json::Value {
             serde_json::Value::Object(m) => {
                 for (k, x) in m.iter_mut() {
                     if let (true, Some(a)) = (k.as_str() == "warnings", x.as_array_mut()) {
-                        a.retain(|w| !w.as_str().is_some_and(|w| w.contains("outside calibration:")));
+                        a.retain(|w| {
+                            !w.as_str()
+                                .is_some_and(|w| w.contains("outside calibration:"))
+                        });
                     }
                     strip(x);
                 }

@@ -123,7 +123,10 @@ fn an_override_is_listed_what_was_kept_too_and_the_comparison_is_withheld() {
         "{v}"
     );
     let w = outside(&v);
-    assert!(w[0].starts_with("outside calibration: k_p changed the ball"), "{w:?}");
+    assert!(
+        w[0].starts_with("outside calibration: k_p changed the ball"),
+        "{w:?}"
+    );
     let text = ok(&["run", "--preset", "tennis", "--k-p", "30000"]);
     assert!(
         text.contains("overrides: k_p; kept from the preset: mass, radius, c, k_r, z_p\n"),
@@ -142,32 +145,70 @@ fn an_override_is_listed_what_was_kept_too_and_the_comparison_is_withheld() {
 fn every_answer_outside_the_record_says_so() {
     let golf_40: &[&[&str]] = &[
         &["run", "--preset", "golf", "--v0", "40"],
-        &["oblique", "--preset", "golf", "--v0", "40", "--angle", "90", "--friction", "0.5"],
-        &["collide", "--preset", "golf", "--v0", "40", "--target-mass", "inf"],
-        &["mc", "--preset", "golf", "--v0", "40", "--vary", "k_p=5%", "--samples", "1000"],
+        &[
+            "oblique",
+            "--preset",
+            "golf",
+            "--v0",
+            "40",
+            "--angle",
+            "90",
+            "--friction",
+            "0.5",
+        ],
+        &[
+            "collide",
+            "--preset",
+            "golf",
+            "--v0",
+            "40",
+            "--target-mass",
+            "inf",
+        ],
+        &[
+            "mc",
+            "--preset",
+            "golf",
+            "--v0",
+            "40",
+            "--vary",
+            "k_p=5%",
+            "--samples",
+            "1000",
+        ],
     ];
     for args in golf_40 {
         let v = json(&[args, &["--format", "json"][..]].concat());
         let w = outside(&v);
         assert_eq!(w.len(), 1, "{args:?}: {v}");
         assert!(
-            w[0].starts_with("outside calibration: impact speed 40 m/s, the ball was fitted at 1.47 m/s only"),
+            w[0].starts_with(
+                "outside calibration: impact speed 40 m/s, the ball was fitted at 1.47 m/s only"
+            ),
             "{args:?}: {}",
             w[0]
         );
     }
     // peers at 40 m/s: the speed, and the target COR measured at another one, both named
-    let v = json(&["peers", "--preset", "golf", "--v0", "40", "--format", "json"]);
+    let v = json(&[
+        "peers", "--preset", "golf", "--v0", "40", "--format", "json",
+    ]);
     let w = outside(&v);
     assert_eq!(w.len(), 2, "{v}");
-    assert!(w[0].starts_with("outside calibration: impact speed 40 m/s"), "{}", w[0]);
+    assert!(
+        w[0].starts_with("outside calibration: impact speed 40 m/s"),
+        "{}",
+        w[0]
+    );
     assert_eq!(
         w[1],
         "outside calibration: the target COR 0.84 was measured at 1.47 m/s, and this \
          calibration is at impact speed 40 m/s (give --cor E for the COR at that speed)"
     );
     // a COR given is the user's, at the speed asked: no second warning
-    let v = json(&["peers", "--preset", "golf", "--v0", "40", "--cor", "0.7", "--format", "json"]);
+    let v = json(&[
+        "peers", "--preset", "golf", "--v0", "40", "--cor", "0.7", "--format", "json",
+    ]);
     assert_eq!(outside(&v).len(), 1, "{v}");
     // sweep rows: each row its own
     let v = json(&[
@@ -179,36 +220,86 @@ fn every_answer_outside_the_record_says_so() {
     assert_eq!(outside(&rows[1]).len(), 1, "{}", rows[1]);
     // the map: once for the grid
     let v = json(&[
-        "map", "--preset", "golf", "--v0", "40", "--lambda", "0.5:1:2", "--zeta", "0.05:0.1:2",
-        "--format", "json",
+        "map",
+        "--preset",
+        "golf",
+        "--v0",
+        "40",
+        "--lambda",
+        "0.5:1:2",
+        "--zeta",
+        "0.05:0.1:2",
+        "--format",
+        "json",
     ]);
     assert_eq!(outside(&v).len(), 1, "{v}");
     assert_eq!(v["ball"]["name"], "golf");
     // a bat: the game's and the BBCOR test's closing speeds, one warning
-    let v = json(&["bat", "--preset", "baseball", "--bat-mass", "0.9", "--format", "json"]);
+    let v = json(&[
+        "bat",
+        "--preset",
+        "baseball",
+        "--bat-mass",
+        "0.9",
+        "--format",
+        "json",
+    ]);
     let w = outside(&v);
     assert_eq!(w.len(), 1, "{v}");
-    assert!(w[0].starts_with("outside calibration: impact speeds "), "{}", w[0]);
+    assert!(
+        w[0].starts_with("outside calibration: impact speeds "),
+        "{}",
+        w[0]
+    );
     assert!(w[0].contains("fitted at 1.25 m/s only"), "{}", w[0]);
     // a drop is judged by its first impact: the ITF drop is the tennis ball's record
     let v = json(&[
-        "drop", "--preset", "tennis", "--height", "2.54", "--standard", "itf", "--format", "json",
+        "drop",
+        "--preset",
+        "tennis",
+        "--height",
+        "2.54",
+        "--standard",
+        "itf",
+        "--format",
+        "json",
     ]);
     assert!(outside(&v).is_empty(), "{v}");
-    let o = bl(&["drop", "--preset", "golf", "--height", "20", "--format", "json"]);
+    let o = bl(&[
+        "drop", "--preset", "golf", "--height", "20", "--format", "json",
+    ]);
     let v: Value = serde_json::from_str(&o.stdout).unwrap();
     assert_eq!(outside(&v).len(), 1, "{v}");
     // court: the normal speed of the ITF's 30 m/s at 16°
-    let v = json(&["court", "--preset", "tennis", "--friction", "0.6", "--format", "json"]);
+    let v = json(&[
+        "court",
+        "--preset",
+        "tennis",
+        "--friction",
+        "0.6",
+        "--format",
+        "json",
+    ]);
     let w = outside(&v);
-    assert!(w[0].starts_with("outside calibration: impact speed 8.269 m/s"), "{w:?}");
+    assert!(
+        w[0].starts_with("outside calibration: impact speed 8.269 m/s"),
+        "{w:?}"
+    );
 }
 
 /// `drop --standard mlb` with the paper's baseball: the verdict is the model's at 85 ft/s,
 /// 20 times the speed the ball was fitted at, and says so; the JSON names the ball dropped.
 #[test]
 fn the_mlb_verdict_on_the_papers_baseball_warns_and_the_drop_names_its_ball() {
-    let o = bl(&["drop", "--preset", "baseball", "--standard", "mlb", "--format", "json"]);
+    let o = bl(&[
+        "drop",
+        "--preset",
+        "baseball",
+        "--standard",
+        "mlb",
+        "--format",
+        "json",
+    ]);
     let v: Value = serde_json::from_str(&o.stdout).expect(&o.stderr);
     assert_eq!(v["standard"]["verdict"], "fail");
     let w = outside(&v);
@@ -244,7 +335,12 @@ fn a_trace_without_v0_fits_its_speed() {
         k_r: 9e4,
         ..ball.params
     };
-    let r = simulate(&truth, ball.law, &SolveOptions::default().with_samples(4_001)).unwrap();
+    let r = simulate(
+        &truth,
+        ball.law,
+        &SolveOptions::default().with_samples(4_001),
+    )
+    .unwrap();
     let (h, tf) = (&r.history, r.contact_time.unwrap());
     let mut rng = fit_common::Rng::new(52);
     let mut text = String::from("time_s,force_N\n");
@@ -264,11 +360,22 @@ fn a_trace_without_v0_fits_its_speed() {
     let path = dir.path().join("trace.csv");
     std::fs::write(&path, text).unwrap();
     let p = path.to_str().unwrap();
-    let v = json(&["fit", "--preset", "superball", "--force-time", p, "--format", "json"]);
+    let v = json(&[
+        "fit",
+        "--preset",
+        "superball",
+        "--force-time",
+        p,
+        "--format",
+        "json",
+    ]);
     let inside = |name: &str, want: f64| {
         let ci = &v["fitted"][name]["ci95"];
         let (lo, hi) = (ci[0].as_f64().unwrap(), ci[1].as_f64().unwrap());
-        assert!(lo < want && want < hi, "{name}: {want} not in [{lo}, {hi}]: {v}");
+        assert!(
+            lo < want && want < hi,
+            "{name}: {want} not in [{lo}, {hi}]: {v}"
+        );
     };
     inside("v0", truth.v0);
     inside("k_r", truth.k_r);
@@ -281,7 +388,15 @@ fn a_trace_without_v0_fits_its_speed() {
     );
     // with --v0 the speed is held, as before
     let v = json(&[
-        "fit", "--preset", "superball", "--force-time", p, "--v0", "6.24", "--format", "json",
+        "fit",
+        "--preset",
+        "superball",
+        "--force-time",
+        p,
+        "--v0",
+        "6.24",
+        "--format",
+        "json",
     ]);
     assert!(v["fitted"]["v0"].is_null(), "{v}");
     inside_of(&v, "k_r", truth.k_r);

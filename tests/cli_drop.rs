@@ -378,7 +378,8 @@ fn ok_beside_calibration(args: &[&str]) -> String {
     assert!(
         o.stderr
             .lines()
-            .all(|l| l.starts_with("bouncelab: warning: outside calibration: impact speed 4.391 m/s")),
+            .all(|l| l
+                .starts_with("bouncelab: warning: outside calibration: impact speed 4.391 m/s")),
         "{args:?}: {}",
         o.stderr
     );

@@ -386,7 +386,10 @@ impl<'a> BatchReport<'a> {
                 free,
             },
             balls,
-            warnings: ball.standard_calibration_warning(standard).into_iter().collect(),
+            warnings: ball
+                .standard_calibration_warning(standard)
+                .into_iter()
+                .collect(),
             ball: ball.record_json(),
         }
     }

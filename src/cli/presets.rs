@@ -118,7 +118,10 @@ pub fn run(a: &PresetsArgs, out: &mut dyn Write) -> anyhow::Result<()> {
 /// Each preset's calibration record, after the table: the speeds it holds over, the
 /// conditions and every data set it was fitted to.
 fn calibration_lines(out: &mut dyn Write, rows: &[Row]) -> std::io::Result<()> {
-    writeln!(out, "calibration (the impact speeds each ball's parameters hold over):")?;
+    writeln!(
+        out,
+        "calibration (the impact speeds each ball's parameters hold over):"
+    )?;
     for r in rows {
         let Some(c) = &r.calibration else {
             writeln!(out, "  {}: no [calibration] record", r.name)?;
