@@ -407,3 +407,37 @@ fn inside_of(v: &Value, name: &str, want: f64) {
     let (lo, hi) = (ci[0].as_f64().unwrap(), ci[1].as_f64().unwrap());
     assert!(lo < want && want < hi, "{name}: {want} not in [{lo}, {hi}]");
 }
+
+/// The ball object, beside the keys they had, in every JSON answer that carries it.
+#[test]
+fn json_answers_name_their_ball() {
+    let cases: &[&[&str]] = &[
+        &["run", "--preset", "golf", "--k-r", "5e5"],
+        &["drop", "--preset", "golf", "--k-r", "5e5"],
+        &[
+            "sweep", "velocity", "--preset", "golf", "--k-r", "5e5", "--points", "2",
+        ],
+        &[
+            "oblique",
+            "--preset",
+            "golf",
+            "--k-r",
+            "5e5",
+            "--angle",
+            "40",
+            "--friction",
+            "0.3",
+        ],
+        &["peers", "--preset", "golf", "--k-r", "5e5"],
+    ];
+    for args in cases {
+        let v = json(&[args, &["--format", "json"][..]].concat());
+        let ball = &v["ball"];
+        assert_eq!(ball["name"], "golf", "{args:?}: {v}");
+        assert_eq!(f(ball, "k_r"), 5e5, "{args:?}");
+        assert_eq!(f(ball, "k_p"), 5.6e5, "{args:?}");
+        assert_eq!(ball["overrides"], serde_json::json!(["k_r"]), "{args:?}");
+        assert_eq!(ball["law"], "linear", "{args:?}");
+        assert!(f(ball, "inertia_factor") == 0.4, "{args:?}");
+    }
+}

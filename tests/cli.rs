@@ -275,10 +275,14 @@ fn sweep_velocity_cor_drops_at_high_speed_for_the_superball() {
     assert_eq!(lines.len(), 61, "60 speeds by default");
     let rows: Vec<Vec<f64>> = lines[1..]
         .iter()
-        .map(|l| match l.split_once(",\"outside calibration: impact speed ") {
-            Some((cells, _)) => cells,
-            None => l.strip_suffix(',').expect("no other warning at these speeds"),
-        })
+        .map(
+            |l| match l.split_once(",\"outside calibration: impact speed ") {
+                Some((cells, _)) => cells,
+                None => l
+                    .strip_suffix(',')
+                    .expect("no other warning at these speeds"),
+            },
+        )
         .map(|l| l.split(',').map(|x| x.parse().unwrap()).collect())
         .collect();
     assert!((rows[0][0] - 0.312).abs() < 1e-12 && (rows[59][0] - 9.36).abs() < 1e-12);

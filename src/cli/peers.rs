@@ -128,6 +128,8 @@ struct Report<'a> {
     /// With --pair only.
     #[serde(skip_serializing_if = "Option::is_none")]
     pair: Option<Pair>,
+    /// The ball calibrated to (docs/cli.md, "The ball object").
+    ball: crate::api::BallRecord,
 }
 
 /// The pair `--pair` calibrates for: the other preset and the effective mass and radius.
@@ -203,6 +205,7 @@ pub fn run(a: &PeersArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         target_source: source,
         warnings,
         pair,
+        ball: b.record_json(),
     };
     match a.format {
         PeersFormat::Json => output::json(out, &report)?,

@@ -186,6 +186,9 @@ struct VelocityDoc<'a, T> {
     lambda: f64,
     zeta: f64,
     rows: &'a [T],
+    /// The ball swept (docs/cli.md, "The ball object").
+    #[serde(rename = "ball")]
+    record: crate::api::BallRecord,
 }
 
 fn velocity(a: &VelocityArgs, out: &mut dyn Write) -> anyhow::Result<()> {
@@ -221,6 +224,7 @@ fn velocity(a: &VelocityArgs, out: &mut dyn Write) -> anyhow::Result<()> {
                     lambda: n.lambda,
                     zeta: n.zeta,
                     rows: &rows,
+                    record: b.record_json(),
                 },
             )?
         }
