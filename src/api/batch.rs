@@ -337,22 +337,6 @@ pub struct BatchReport<'a> {
     pub ball: super::BallRecord,
 }
 
-impl Ball {
-    /// "outside calibration: …" for a test of `standard` on this ball: its impact speed (a
-    /// drop's first impact, through standard air, from the release height) against the
-    /// ball's record; `None` inside it, without a record, or when the drop has no impact.
-    pub fn standard_calibration_warning(&self, standard: &Standard) -> Option<String> {
-        let v = match standard.test {
-            Test::Cor { speed } => speed,
-            Test::Drop { height, .. } => {
-                let run = self.drop_test(&crate::drop::DropSetup::new(height)).ok()?;
-                run.bounces.first()?.v_in
-            }
-        };
-        self.calibration_warning(v)
-    }
-}
-
 impl<'a> BatchReport<'a> {
     /// The report of `balls`, started from `ball`, against `standard`.
     pub fn new(ball: &'a Ball, standard: &'static Standard, balls: &'a [BallOutcome]) -> Self {

@@ -187,4 +187,21 @@ impl Ball {
             c.sources()
         ))
     }
+
+    /// "outside calibration: …" for a test of `standard` on this ball: its impact speed (a
+    /// drop's first impact, through standard air, from the release height) against the
+    /// ball's record; `None` inside it, without a record, or when the drop has no impact.
+    pub fn standard_calibration_warning(
+        &self,
+        standard: &crate::drop::standards::Standard,
+    ) -> Option<String> {
+        let v = match standard.test {
+            crate::drop::standards::Test::Cor { speed } => speed,
+            crate::drop::standards::Test::Drop { height, .. } => {
+                let run = self.drop_test(&crate::drop::DropSetup::new(height)).ok()?;
+                run.bounces.first()?.v_in
+            }
+        };
+        self.calibration_warning(v)
+    }
 }
