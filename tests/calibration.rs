@@ -441,3 +441,55 @@ fn json_answers_name_their_ball() {
         assert!(f(ball, "inertia_factor") == 0.4, "{args:?}");
     }
 }
+
+/// `fit --save` writes the record of the data it fitted: their speeds, heights and source,
+/// and the saved ball warns outside them.
+#[test]
+fn fit_save_writes_the_record_of_its_data() {
+    let home = tempfile::tempdir().unwrap();
+    let o = bl_in(
+        home.path(),
+        &[
+            "fit",
+            "--preset",
+            "tennis",
+            "--drop-height",
+            "2.54",
+            "--rebound-height",
+            "1.41",
+            "--save",
+            "mine",
+        ],
+    );
+    assert_eq!(o.code, 0, "{}", o.stderr);
+    let path = home.path().join("bouncelab/presets/mine.toml");
+    let p = Preset::parse(&std::fs::read_to_string(&path).unwrap(), "mine.toml").unwrap();
+    let c = p.calibration.expect("a [calibration] record");
+    assert_eq!(c.data.len(), 1);
+    assert_eq!(c.data[0].heights, [2.54]);
+    assert_eq!(c.data[0].quantities, "drop test");
+    assert!(
+        c.data[0].source.contains("given on the command line"),
+        "{:?}",
+        c.data[0]
+    );
+    // in vacuum (the fit's default) a 2.54 m drop meets the plate at √(2 g h)
+    let v = (2.0 * 9.80665 * 2.54f64).sqrt();
+    assert!(
+        (c.speed_min - v).abs() < 1e-9 && c.speed_max == c.speed_min,
+        "{c:?}"
+    );
+    assert_eq!(p.measured.v0, c.speed_min);
+    let o = bl_in(
+        home.path(),
+        &["run", "--preset", "mine", "--format", "json"],
+    );
+    let run: Value = serde_json::from_str(&o.stdout).unwrap();
+    assert!(outside(&run).is_empty(), "{run}");
+    let o = bl_in(
+        home.path(),
+        &["run", "--preset", "mine", "--v0", "20", "--format", "json"],
+    );
+    let run: Value = serde_json::from_str(&o.stdout).unwrap();
+    assert_eq!(outside(&run).len(), 1, "{run}");
+}
