@@ -62,9 +62,16 @@ pub struct Ball {
     /// The preset material's Poisson ratio ν (`None` for other balls): the default tangential
     /// stiffness of an oblique impact, Mindlin's K_t = 2(1 − ν)/(2 − ν) K_p.
     pub poisson_ratio: Option<f64>,
+    /// The preset's `[calibration]` record: the speeds its parameters hold over (`None` for
+    /// other balls and presets without one; [`Ball::calibration_warning`]).
+    pub calibration: Option<crate::preset::Calibration>,
+    /// What the caller changed from the preset (`mass`, `radius`, `k_p`, `c`, `k_r`, `z_p`,
+    /// `lambda`, `zeta`), in that order: the JSON `ball.overrides`.
+    pub overrides: Vec<String>,
 }
 
 mod batch;
+mod calibration;
 mod collide;
 mod columns;
 mod entry;
@@ -86,6 +93,7 @@ pub use batch::{
     BallOutcome, BatchReport, BatchSetup, BatchSummary, BatchUnanswered, StandardRef,
     quantity as batch_quantity,
 };
+pub use calibration::{BallRecord, changed_params};
 pub use collide::CollisionReport;
 pub use columns::{Columns, Unanswered, first_pass};
 pub use entry::Overrides;
@@ -173,6 +181,8 @@ impl Ball {
             description: String::new(),
             fit: None,
             poisson_ratio: None,
+            calibration: None,
+            overrides: Vec::new(),
         })
     }
 
@@ -202,6 +212,8 @@ impl Ball {
             description: String::new(),
             fit: None,
             poisson_ratio: None,
+            calibration: None,
+            overrides: Vec::new(),
         })
     }
 
@@ -253,6 +265,11 @@ impl Ball {
         zeta: Option<f64>,
     ) -> Result<Ball, BallError> {
         set_lambda_zeta(&mut self.params, lambda, zeta)?;
+        for (name, given) in [("lambda", lambda.is_some()), ("zeta", zeta.is_some())] {
+            if given && !self.overrides.iter().any(|o| o == name) {
+                self.overrides.push(name.to_string());
+            }
+        }
         Ok(self)
     }
 

@@ -6,10 +6,12 @@ use crate::model::materials::{self, Layer};
 use crate::model::params::ImpactParams;
 use serde::{Deserialize, Serialize};
 
+mod calibration;
 mod fit_table;
 mod text;
 mod usable;
 
+pub use calibration::{Calibration, CalibrationData, SPEED_SLACK};
 pub use fit_table::FitTable;
 
 /// The three balls of the paper, embedded in the binary, first; then the balls of the drop
@@ -174,6 +176,10 @@ pub struct Preset {
     /// A fitted preset's uncertainty (`fit … --save`): the source of its 95 % intervals.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub fit: Option<FitTable>,
+    /// What the parameters were fitted to and the impact speeds they hold over
+    /// (`[calibration]`, docs/presets.md): every answer outside says so.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub calibration: Option<Calibration>,
 }
 
 fn default_law() -> ContactLaw {

@@ -15,6 +15,40 @@ use tui_common::*;
 
 const BEYOND: &str = "exceeds the ball's radius";
 
+/// The warnings this file is about are the radius's: the "outside calibration:" warnings
+/// (issue 52; tests/calibration.rs) that the same answers now carry are taken out here.
+fn json(args: &[&str]) -> serde_json::Value {
+    fn strip(v: &mut serde_json::Value) {
+        match v {
+            serde_json::Value::Object(m) => {
+                for (k, x) in m.iter_mut() {
+                    if let (true, Some(a)) = (k.as_str() == "warnings", x.as_array_mut()) {
+                        a.retain(|w| {
+                            !w.as_str()
+                                .is_some_and(|w| w.contains("outside calibration:"))
+                        });
+                    }
+                    strip(x);
+                }
+            }
+            serde_json::Value::Array(a) => a.iter_mut().for_each(strip),
+            _ => {}
+        }
+    }
+    let mut v = common::json(args);
+    strip(&mut v);
+    v
+}
+
+/// Text without its "outside calibration:" lines (see [`json`]).
+fn ok(args: &[&str]) -> String {
+    common::ok(args)
+        .lines()
+        .filter(|l| !l.contains("warning: outside calibration:"))
+        .map(|l| format!("{l}\n"))
+        .collect()
+}
+
 /// The superball dropped 100 m without air: it meets the plate at 44 m/s, and its first
 /// impact passes its radius.
 const DROP_100_M: [&str; 6] = [

@@ -266,7 +266,8 @@ fn sweep_zeta_csv_header_and_rows() {
 fn sweep_velocity_cor_drops_at_high_speed_for_the_superball() {
     let csv = ok(&["sweep", "velocity", "--preset", "superball"]);
     let lines: Vec<&str> = csv.lines().collect();
-    // the columns in their places; `warnings` appended (empty: the superball stays within R)
+    // the columns in their places; `warnings` appended (the superball stays within R; the
+    // only warning is its record's, 3.12 m/s, which every other speed is outside: issue 52)
     assert_eq!(
         lines[0],
         "v0,cor,max_force,contact_time,permanent_indentation,warnings"
@@ -274,7 +275,14 @@ fn sweep_velocity_cor_drops_at_high_speed_for_the_superball() {
     assert_eq!(lines.len(), 61, "60 speeds by default");
     let rows: Vec<Vec<f64>> = lines[1..]
         .iter()
-        .map(|l| l.strip_suffix(',').expect("no warning at these speeds"))
+        .map(
+            |l| match l.split_once(",\"outside calibration: impact speed ") {
+                Some((cells, _)) => cells,
+                None => l
+                    .strip_suffix(',')
+                    .expect("no other warning at these speeds"),
+            },
+        )
         .map(|l| l.split(',').map(|x| x.parse().unwrap()).collect())
         .collect();
     assert!((rows[0][0] - 0.312).abs() < 1e-12 && (rows[59][0] - 9.36).abs() < 1e-12);

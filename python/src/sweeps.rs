@@ -102,11 +102,8 @@ pub(crate) fn sweep_velocity<'py>(
     // ball's radius, `Ball::velocity_row_warning`, the command line's own function, so the two
     // give the same: python/tests/test_arguments.py)
     d.set_item("max_indentation", col(|r| r.max_indentation))?;
-    let warnings: Vec<Vec<String>> = py.detach(|| {
-        rows.iter()
-            .map(|r| ball.velocity_row_warning(r).into_iter().collect())
-            .collect()
-    });
+    let warnings: Vec<Vec<String>> =
+        py.detach(|| rows.iter().map(|r| ball.velocity_row_warnings(r)).collect());
     d.set_item("warnings", warnings)?;
     // a fitted preset's 95 % intervals at each speed (docs/fitting.md), as the CSV's columns
     if let Some(fit) = ball.fit.as_ref().filter(|f| api::holds(&ball.params, f)) {

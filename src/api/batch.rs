@@ -330,6 +330,11 @@ pub struct BatchReport<'a> {
     pub summary: BatchSummary,
     /// Every ball, in the batch's order.
     pub balls: &'a [BallOutcome],
+    /// The lot's: the standard's impact speed against the record of the ball the fits start
+    /// from (what they hold fixed is that ball's; [`Ball::standard_calibration_warning`]).
+    pub warnings: Vec<String>,
+    /// The ball the fits start from (docs/cli.md, "The ball object").
+    pub ball: super::BallRecord,
 }
 
 impl<'a> BatchReport<'a> {
@@ -365,6 +370,11 @@ impl<'a> BatchReport<'a> {
                 free,
             },
             balls,
+            warnings: ball
+                .standard_calibration_warning(standard)
+                .into_iter()
+                .collect(),
+            ball: ball.record_json(),
         }
     }
 }

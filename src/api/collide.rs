@@ -62,7 +62,11 @@ impl Ball {
         method: Option<Method>,
     ) -> Result<CollisionReport, BallError> {
         let collision = collide(&self.params, self.law, target, self.params.v0, method)?;
-        let warnings = self.collision_warning(target, self.params.v0, &collision);
+        let warnings = self
+            .collision_warning(target, self.params.v0, &collision)
+            .into_iter()
+            // the record is of impacts on a rigid plate: the closing speed is the impact's
+            .chain(self.calibration_warning(collision.closing_speed));
         Ok(CollisionReport {
             ball: self.name.clone(),
             law: self.law,
@@ -140,6 +144,11 @@ impl Ball {
             self.collision_warning(&target, speed, c)
                 .map(|w| format!("{what}: {w}"))
         })
+        // the game's and the test's closing speeds against the record, in one warning
+        .chain(self.speeds_warning(
+            r.game.closing_speed.min(r.test.closing_speed),
+            r.game.closing_speed.max(r.test.closing_speed),
+        ))
         .collect()
     }
 

@@ -66,6 +66,22 @@ impl Overrides {
         self.k_p.is_some() || self.damping.is_some() || self.k_r.is_some() || self.z_p.is_some()
     }
 
+    /// The names of the values set, in the order of the JSON `ball.overrides` (docs/cli.md).
+    pub fn names(&self) -> Vec<String> {
+        [
+            ("mass", self.mass.is_some()),
+            ("radius", self.radius.is_some()),
+            ("k_p", self.k_p.is_some()),
+            ("c", self.damping.is_some()),
+            ("k_r", self.k_r.is_some()),
+            ("z_p", self.z_p.is_some()),
+        ]
+        .into_iter()
+        .filter(|(_, set)| *set)
+        .map(|(n, _)| n.to_string())
+        .collect()
+    }
+
     /// `preset` with the mass and radius given as its measured ones, each checked and named.
     pub fn sized(&self, preset: &Preset) -> Result<Preset, BallError> {
         let mut p = preset.clone();
@@ -170,6 +186,17 @@ impl Ball {
                 .clone()
                 .filter(|_| source == ParamSource::Adopted && law.is_none_or(|l| l == p.law)),
             poisson_ratio: Some(p.material.poisson),
+            calibration: p.calibration.clone().map(|mut c| {
+                let law = law.filter(|&l| l != p.law);
+                c.other_model = match (source != p.parameters, law) {
+                    (true, Some(l)) => Some(format!("the {} set on the {l} law", source.name())),
+                    (true, None) => Some(format!("the {} set", source.name())),
+                    (false, Some(l)) => Some(format!("the {l} law")),
+                    (false, None) => None,
+                };
+                c
+            }),
+            overrides: overrides.names(),
         })
     }
 

@@ -79,6 +79,9 @@ impl Ball {
         }
         let ball = Ball {
             params: crate::ImpactParams { v0, ..*fitted },
+            // the fitted ball is calibrated by the data it was fitted to, not by the record of
+            // the preset it started from (`fit --save` writes the new record)
+            calibration: None,
             ..self.clone()
         };
         let several = speeds.iter().any(|&v| v != v0);

@@ -173,7 +173,14 @@ impl Ball {
         let nominal = self.impact().map(|r| self.warnings(&r)).unwrap_or_default();
         nominal
             .into_iter()
-            .map(|w| format!("at the nominal parameters: {w}"))
+            // "outside calibration:" opens its warning wherever it is said (issue 52)
+            .map(|w| {
+                if w.starts_with("outside calibration:") {
+                    w
+                } else {
+                    format!("at the nominal parameters: {w}")
+                }
+            })
             .chain(crate::analysis::mc::interval_warnings(&[
                 &st.cor,
                 &st.max_force,

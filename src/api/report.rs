@@ -65,6 +65,12 @@ pub struct ImpactReport<'a> {
     /// Which ball.
     #[serde(flatten)]
     pub ball: BallHeader<'a>,
+    /// The ball it ran, parameters and overrides (the JSON `ball` object, docs/cli.md).
+    #[serde(rename = "ball")]
+    pub record: super::BallRecord,
+    /// Why the answer is not compared with `measured` (`None`: it may be): an override
+    /// changed the ball the measurement was taken on.
+    pub comparison_withheld: Option<String>,
     /// The solver that ran it.
     pub method: Method,
     /// m, kg.
@@ -159,6 +165,8 @@ impl<'a> ImpactReport<'a> {
         let n = &s.normalized;
         ImpactReport {
             ball: ball.header(),
+            record: ball.record_json(),
+            comparison_withheld: ball.measurement_withheld(),
             method: s.method,
             mass: p.mass,
             k_p: p.k_p,

@@ -58,6 +58,15 @@ impl Ball {
         let z_m = row.max_indentation;
         super::reach_warning(&params, self.law, method, z_m, duration, self.radius())
     }
+
+    /// Every warning of a `sweep velocity` row: [`Ball::velocity_row_warning`], then the
+    /// row's speed against the ball's calibration record ([`Ball::calibration_warning`]).
+    pub fn velocity_row_warnings(&self, row: &VelocityPoint) -> Vec<String> {
+        self.velocity_row_warning(row)
+            .into_iter()
+            .chain(self.calibration_warning(row.v0))
+            .collect()
+    }
 }
 
 /// COR, F̄_m and τ_f against ζ for each λ, on the normalized ball without flattening (the

@@ -80,6 +80,8 @@ impl Ball {
                 ));
             }
         }
+        // last: the warnings before it are read by position (tests/answer_warnings.rs)
+        w.extend(self.calibration_warning(self.params.v0));
         w
     }
 

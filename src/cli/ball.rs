@@ -4,7 +4,6 @@
 use crate::api::{self, Ball};
 use crate::catalog::{self, Catalog, Entry};
 use crate::model::contact::ContactLaw;
-use crate::model::params::ImpactParams;
 use crate::preset::ParamSource;
 use clap::{Args, ValueEnum};
 use std::path::{Path, PathBuf};
@@ -207,10 +206,15 @@ impl BallArgs {
 
 /// Change λ and/or ζ of a ball: K_r and c move, m and K_p stay (Eq. 24). The library's own
 /// check and messages ([`crate::api::set_lambda_zeta`]), so code and command line agree.
+/// Each given is an override of the preset's ball (`ball.overrides`: `lambda`, `zeta`).
 pub fn set_lambda_zeta(
-    params: &mut ImpactParams,
+    ball: &mut crate::api::Ball,
     lambda: Option<f64>,
     zeta: Option<f64>,
 ) -> anyhow::Result<()> {
-    Ok(crate::api::set_lambda_zeta(params, lambda, zeta)?)
+    if lambda.is_none() && zeta.is_none() {
+        return Ok(());
+    }
+    *ball = ball.clone().with_lambda_zeta(lambda, zeta)?;
+    Ok(())
 }

@@ -397,5 +397,6 @@ fn text(
             "balls whose fit warns: {warned} (--format json or --csv-out gives the warnings)"
         )?;
     }
+    super::output::warning_lines(out, &r.warnings)?;
     Ok(())
 }

@@ -119,12 +119,20 @@ pub fn run(a: &DropArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         .transpose()
         .map_err(drop_error)?;
     let mut warnings = b.drop_warnings(&run)?;
+    // the standard's own test (its height or speed) against the record, when it is another
+    // impact than the first bounce above
+    if let Some(w) = standard.and_then(|s| b.standard_calibration_warning(s))
+        && !warnings.contains(&w)
+    {
+        warnings.push(w);
+    }
     warnings.extend(b.drop_air_warning(air));
     match a.format {
         DropFormat::Json => {
             let judged_at = standard.and_then(|s| s.release_height(radius));
             let mut r = report(&run, &bands, verdict.as_ref(), judged_at);
             r.warnings = warnings;
+            r.ball = Some(b.record_json());
             output::json(out, &r)?
         }
         DropFormat::Csv => {
@@ -132,7 +140,11 @@ pub fn run(a: &DropArgs, out: &mut dyn Write) -> anyhow::Result<()> {
             output::warnings_to_stderr(&warnings);
         }
         DropFormat::Text => {
-            text(out, &b.label(), &run, standard.zip(verdict), radius)?;
+            let label = match b.overrides_line() {
+                Some(line) => format!("{}\n{line}", b.label()),
+                None => b.label(),
+            };
+            text(out, &label, &run, standard.zip(verdict), radius)?;
             output::warning_lines(out, &warnings)?;
             if let (Some(i), Some(first), Some(fit)) = (bands.first(), run.bounces.first(), &b.fit)
             {
@@ -230,6 +242,8 @@ struct Report<'a> {
     standard: Option<StandardJson>,
     /// What the caller should know (the first, fastest impact's [`Ball::warnings`]).
     warnings: Vec<String>,
+    /// The ball dropped (docs/cli.md, "The ball object").
+    ball: Option<crate::api::BallRecord>,
 }
 
 fn report<'a>(
@@ -261,6 +275,7 @@ fn report<'a>(
             judged_at_height_m: judged_at,
         }),
         warnings: Vec::new(),
+        ball: None,
     }
 }
 

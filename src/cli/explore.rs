@@ -102,7 +102,7 @@ impl ExplorerArgs {
         };
         ball::check_overrides(&self.set, self.lambda, self.zeta)?;
         let mut b = args.resolve(self.v0)?;
-        ball::set_lambda_zeta(&mut b.params, self.lambda, self.zeta)?;
+        ball::set_lambda_zeta(&mut b, self.lambda, self.zeta)?;
         let radius = b.measured.as_ref().map(|m| m.radius);
         let app = App::new(entry.preset, color).with_start(b.params, b.law, radius);
         let oblique = [self.angle, self.spin, self.friction];

@@ -73,6 +73,11 @@ pub struct MapBall {
     pub v0: f64,
     /// The preset's radius, m (NaN for the normalized ball): the map's warnings.
     pub radius: f64,
+    /// The grid's speed against the ball's calibration record, said once for the grid
+    /// ([`crate::Ball::calibration_warning`]; `None` inside it or without a record).
+    pub calibration: Option<String>,
+    /// The JSON `ball` object: the ball the grid starts from (the cells move its K_r and c).
+    pub record: crate::api::BallRecord,
 }
 
 /// The map's ball and axes from the options, each checked (exit 2 naming the flag).
@@ -98,6 +103,8 @@ pub fn spec(a: &MapArgs) -> anyhow::Result<MapBall> {
             own: None,
             v0: 1.0,
             radius: f64::NAN,
+            calibration: None,
+            record: crate::Ball::normalized(1.0, 1.0, a.zp_bar, law)?.record_json(),
         });
     }
     let args = BallArgs {
@@ -120,6 +127,8 @@ pub fn spec(a: &MapArgs) -> anyhow::Result<MapBall> {
         own: Some((n.lambda, n.zeta)),
         v0: b.params.v0,
         radius: b.radius(),
+        calibration: b.calibration_warning(b.params.v0),
+        record: b.record_json(),
     })
 }
 
@@ -146,6 +155,7 @@ pub fn run(a: &MapArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         .into_iter()
         .chain(reach.as_ref().and_then(crate::api::MapReach::warning))
         .chain(unmet)
+        .chain(ball.calibration.clone())
         .collect();
     let text = match a.format {
         MapFormat::Csv => csv(&map, targets.as_ref()),
@@ -197,6 +207,8 @@ struct Doc<'a> {
     /// [`crate::api::map_displacement_warning`], [`crate::map::unmet_warning`]); `[]` when
     /// nothing.
     warnings: &'a [String],
+    /// The ball the grid starts from (docs/cli.md, "The ball object").
+    ball: &'a crate::api::BallRecord,
 }
 
 #[derive(Serialize)]
@@ -271,6 +283,7 @@ fn json(
         iso_cor,
         feasible_outline,
         warnings,
+        ball: &ball.record,
     };
     let mut s = super::output::json_string(&doc)?;
     s.push('\n');

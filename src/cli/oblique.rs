@@ -79,6 +79,9 @@ struct Report<'a> {
     answer: &'a ObliqueResponse,
     /// [`crate::Ball::oblique_warnings`]; `[]` when nothing.
     warnings: Vec<String>,
+    /// The ball it ran (docs/cli.md, "The ball object").
+    #[serde(rename = "ball")]
+    record: crate::api::BallRecord,
 }
 
 pub fn run(a: &ObliqueArgs, out: &mut dyn Write) -> anyhow::Result<()> {
@@ -121,6 +124,7 @@ pub fn run(a: &ObliqueArgs, out: &mut dyn Write) -> anyhow::Result<()> {
                 radius,
                 answer: &r,
                 warnings,
+                record: ball.record_json(),
             };
             output::json(out, &report)?
         }

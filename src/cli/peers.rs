@@ -133,6 +133,8 @@ struct Report<'a> {
     /// With --pair only.
     #[serde(skip_serializing_if = "Option::is_none")]
     pair: Option<Pair>,
+    /// The ball calibrated to (docs/cli.md, "The ball object").
+    ball: crate::api::BallRecord,
 }
 
 /// The pair `--pair` calibrates for: the other preset and the effective mass and radius.
@@ -188,7 +190,9 @@ pub fn run(a: &PeersArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         let mut set = ExportSet::new(&ball, target, b.name.as_deref().unwrap_or("ball"))?;
         set.tangential = tangential(a, &b, code)?;
         // the exported file is another code's input: the ball's warnings on stderr
-        output::warnings_to_stderr(&b.warnings(&b.impact()?));
+        let mut w = b.warnings(&b.impact()?);
+        w.extend(b.measured_cor_warning().filter(|_| source == "measured"));
+        output::warnings_to_stderr(&w);
         let code = match code {
             ExportArg::Json => return Ok(output::json(out, &set)?),
             ExportArg::Lammps => Code::Lammps,
@@ -200,6 +204,8 @@ pub fn run(a: &PeersArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         out.write_all(export::snippet(code, &set).as_bytes())?;
         return Ok(());
     }
+    let mut warnings = b.warnings(&b.impact()?);
+    warnings.extend(b.measured_cor_warning().filter(|_| source == "measured"));
     let mut rows: Vec<Row> = calibrate::compare(&ball, target, 0)?
         .iter()
         .map(|c| peer_row(&ball, c))
@@ -213,8 +219,9 @@ pub fn run(a: &PeersArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         preset: b.name.as_deref(),
         radius,
         target_source: source,
-        warnings: b.warnings(&b.impact()?),
+        warnings,
         pair,
+        ball: b.record_json(),
     };
     match a.format {
         PeersFormat::Json => output::json(out, &report)?,

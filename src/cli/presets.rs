@@ -39,6 +39,8 @@ struct Row {
     radius: f64,
     poisson_ratio: f64,
     inertia_factor: f64,
+    /// The `[calibration]` record (`null` for a preset without one).
+    calibration: Option<crate::preset::Calibration>,
 }
 
 pub fn run(a: &PresetsArgs, out: &mut dyn Write) -> anyhow::Result<()> {
@@ -67,6 +69,7 @@ pub fn run(a: &PresetsArgs, out: &mut dyn Write) -> anyhow::Result<()> {
                     .measured
                     .inertia_factor
                     .unwrap_or(crate::api::SOLID_INERTIA_FACTOR),
+                calibration: p.calibration.clone(),
             }
         })
         .collect();
@@ -99,6 +102,7 @@ pub fn run(a: &PresetsArgs, out: &mut dyn Write) -> anyhow::Result<()> {
             }
             table(out, "", &t)?;
             writeln!(out)?;
+            calibration_lines(out, &rows)?;
             match catalog::user_presets_dir() {
                 Some(d) => writeln!(out, "user presets are read from {}/*.toml", d.display())?,
                 None => writeln!(
@@ -109,4 +113,31 @@ pub fn run(a: &PresetsArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         }
     }
     Ok(())
+}
+
+/// Each preset's calibration record, after the table: the speeds it holds over, the
+/// conditions and every data set it was fitted to.
+fn calibration_lines(out: &mut dyn Write, rows: &[Row]) -> std::io::Result<()> {
+    writeln!(
+        out,
+        "calibration (the impact speeds each ball's parameters hold over):"
+    )?;
+    for r in rows {
+        let Some(c) = &r.calibration else {
+            writeln!(out, "  {}: no [calibration] record", r.name)?;
+            continue;
+        };
+        let mut at = c.range_text();
+        if let Some(t) = c.temperature {
+            at.push_str(&format!(", {} °C", crate::text::short(t, 4)));
+        }
+        if let Some(p) = c.pressure {
+            at.push_str(&format!(", {} kPa gauge", crate::text::short(p / 1e3, 4)));
+        }
+        writeln!(out, "  {}: {at}", r.name)?;
+        for d in &c.data {
+            writeln!(out, "    {}: {}", d.source, d.quantities)?;
+        }
+    }
+    writeln!(out)
 }

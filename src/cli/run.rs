@@ -72,7 +72,7 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         )?
     } else {
         let mut b = args.ball.resolve(args.v0)?;
-        ball::set_lambda_zeta(&mut b.params, args.lambda, args.zeta)?;
+        ball::set_lambda_zeta(&mut b, args.lambda, args.zeta)?;
         b
     };
     // the library checks the number of samples (2 … MAX_SAMPLES)

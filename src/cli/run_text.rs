@@ -93,6 +93,9 @@ pub fn write(
         _ => writeln!(out, "{}", b.label())?,
     }
     writeln!(out, "{} law, {method}", r.law)?;
+    if let Some(line) = b.overrides_line() {
+        writeln!(out, "{line}")?;
+    }
     writeln!(out)?;
     write_parameters(out, b, r, &units)?;
     writeln!(out)?;
@@ -153,7 +156,9 @@ fn write_comparison(
     let measured = b
         .measured
         .as_ref()
-        .filter(|m| m.v0 == v0 && (m.cor.is_some() || m.max_force.is_some()));
+        .filter(|m| m.v0 == v0 && (m.cor.is_some() || m.max_force.is_some()))
+        // nor once an override changed the ball they were measured on
+        .filter(|_| b.overrides.is_empty());
     let mut rows = vec![if measured.is_some() {
         vec![
             "".into(),
@@ -172,6 +177,8 @@ fn write_comparison(
             "  (measured values are at v0 = {} m/s; not compared)",
             given(m.v0, 6)
         )?;
+    } else if let Some(why) = b.measurement_withheld().filter(|_| b.measured.is_some()) {
+        writeln!(out, "  (measured values not compared: {why})")?;
     }
     Ok(())
 }

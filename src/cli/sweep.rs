@@ -186,12 +186,15 @@ struct VelocityDoc<'a, T> {
     lambda: f64,
     zeta: f64,
     rows: &'a [T],
+    /// The ball swept (docs/cli.md, "The ball object").
+    #[serde(rename = "ball")]
+    record: crate::api::BallRecord,
 }
 
 fn velocity(a: &VelocityArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     super::ball::check_overrides(&a.ball.set, a.lambda, a.zeta)?;
     let mut b = a.ball.resolve(a.v0)?;
-    super::ball::set_lambda_zeta(&mut b.params, a.lambda, a.zeta)?;
+    super::ball::set_lambda_zeta(&mut b, a.lambda, a.zeta)?;
     let v0 = b.params.v0;
     let from = a.from.unwrap_or(0.1 * v0);
     let to = a.to.unwrap_or(3.0 * v0);
@@ -207,7 +210,7 @@ fn velocity(a: &VelocityArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         .map(|(row, i)| VelocityRow {
             row,
             intervals: i.copied(),
-            warnings: b.velocity_row_warning(row).into_iter().collect(),
+            warnings: b.velocity_row_warnings(row),
         })
         .collect();
     match a.format {
@@ -221,6 +224,7 @@ fn velocity(a: &VelocityArgs, out: &mut dyn Write) -> anyhow::Result<()> {
                     lambda: n.lambda,
                     zeta: n.zeta,
                     rows: &rows,
+                    record: b.record_json(),
                 },
             )?
         }

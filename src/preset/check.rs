@@ -13,6 +13,7 @@ pub(super) fn preset(p: &Preset) -> Result<(), Bad> {
     material(&p.material)?;
     adopted(&p.adopted, p.parameters)?;
     super::fit_table::check(p)?;
+    super::calibration::check(&p.calibration)?;
     usable::check(p)
 }
 

@@ -114,6 +114,9 @@ impl Preset {
         if let Some(f) = &self.fit {
             f.write(&mut out);
         }
+        if let Some(c) = &self.calibration {
+            c.write(&mut out);
+        }
         out
     }
 }

@@ -139,6 +139,11 @@ pub fn preset_for(source: &Preset, setting: &Setting, name: &str) -> (Preset, Ve
         },
         // the explorer's setting is not the fit's ball: no interval is claimed for it
         fit: None,
+        // the record is the source's ball's: kept only while the ball is that ball (its own
+        // parameters, on its own law, at whatever speed: the range says where it holds)
+        calibration: source.calibration.clone().filter(|_| {
+            setting.law == source.law && crate::api::changed_params(&source.params(), &p).is_empty()
+        }),
     };
     (preset, header)
 }

@@ -95,7 +95,7 @@ pub(super) fn one_ball(a: &FigureArgs, args: &BallArgs) -> anyhow::Result<(paper
     let lambda = a.lambda.as_ref().filter(|l| l.len() == 1).map(|l| l[0]);
     ball::check_overrides(&args.set, lambda, a.zeta)?;
     let mut b = args.resolve(v0)?;
-    ball::set_lambda_zeta(&mut b.params, lambda, a.zeta)?;
+    ball::set_lambda_zeta(&mut b, lambda, a.zeta)?;
     Ok((b.record(), b.origin))
 }
 

@@ -177,8 +177,16 @@ pub fn run(
     check_outputs(a)?;
     let ball = a.ball.resolve(a.v0)?;
     let data = load(a, source, &ball)?;
-    let free =
+    let mut free =
         free.unwrap_or_else(|| Param::defaults(data.trace.is_some(), data.points.len(), ball.law));
+    // a trace without --v0 was not taken at the preset's speed for sure: its speed is fitted
+    // too (as --free v0), and the report says so. Held at the preset's, a trace made at twice
+    // it gave K_r 43 k against a truth of 90 k with a tight interval (issue 52;
+    // tests/calibration.rs, `a_trace_without_v0_fits_its_speed`).
+    let speed_fitted = data.trace.is_some() && a.v0.is_none() && !free.contains(&Param::V0);
+    if speed_fitted {
+        free.push(Param::V0);
+    }
     let input = match &data.trace {
         Some(t) => FitData::Trace(t),
         None => FitData::Cor(&data.points),
@@ -193,8 +201,23 @@ pub fn run(
         None => data.points.iter().map(|p| p.v0).collect(),
     };
     f.warnings.extend(ball.fitted_warnings(&f.params, &speeds));
+    if speed_fitted {
+        f.warnings.insert(
+            0,
+            format!(
+                "no --v0 given: the trace's impact speed was fitted (as --free v0), starting \
+                 from the preset's {} m/s; give --v0 to hold a measured one",
+                crate::text::short(ball.params.v0, 4)
+            ),
+        );
+    }
     // the data's speed: the trace's (the ball's v0), else the first row's
-    let v0 = data.points.first().map_or(ball.params.v0, |p| p.v0);
+    // (a fitted speed is the fit's)
+    let v0 = if free.contains(&Param::V0) {
+        f.params.v0
+    } else {
+        data.points.first().map_or(ball.params.v0, |p| p.v0)
+    };
     let fitted = ImpactParams { v0, ..f.params };
     let r = simulate(&fitted, ball.law, &SolveOptions::default())?;
     let report = super::report::report(&ball, &data, &f, &fitted, &r);

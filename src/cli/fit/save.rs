@@ -9,7 +9,7 @@ use crate::api::Ball;
 use crate::atomic::Outputs;
 use crate::catalog::{self, Catalog, Origin};
 use crate::model::params::ImpactParams;
-use crate::preset::{Adopted, FitAir, Measured, ParamSource, Preset};
+use crate::preset::{Adopted, Calibration, CalibrationData, FitAir, Measured, ParamSource, Preset};
 use std::path::{Path, PathBuf};
 
 fn dir() -> anyhow::Result<PathBuf> {
@@ -172,7 +172,33 @@ fn preset(
             k_r: p.k_r,
         },
         fit: crate::api::fit_table(f),
+        calibration: Some(calibration(data, p, when)),
     }
+}
+
+/// The record of what the ball was fitted to: the data's file (or what was typed), their
+/// impact speeds (a trace's: the fit's v0) and drop heights; the range is their speeds'.
+fn calibration(data: &Loaded, p: &ImpactParams, when: &str) -> Calibration {
+    let speeds: Vec<f64> = if data.trace.is_some() || data.points.is_empty() {
+        vec![p.v0]
+    } else {
+        data.points.iter().map(|q| q.v0).collect()
+    };
+    let source = match &data.file {
+        Some(file) => format!("{file} (fitted by `bouncelab fit` on {when})"),
+        None => format!(
+            "{} given on the command line (fitted by `bouncelab fit` on {when})",
+            data.label
+        ),
+    };
+    let set = CalibrationData {
+        // a description, a file's name: shown escaped, never as a control character
+        source: crate::sanitize::line(&source).to_string(),
+        quantities: data.kind.to_string(),
+        speeds: speeds.clone(),
+        heights: data.drops.iter().map(|d| d.0).collect(),
+    };
+    Calibration::over(set, &speeds)
 }
 
 /// The preset staged in `files`, to be published with the fit's other outputs

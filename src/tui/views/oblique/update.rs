@@ -48,6 +48,9 @@ impl App {
             description: String::new(),
             fit: None,
             poisson_ratio: Some(preset.material.poisson),
+            calibration: preset.calibration.clone(),
+            // what the explorer's setting changed from the preset's own ball
+            overrides: crate::api::changed_params(&preset.params(), &s.params),
         }
     }
 

@@ -1,0 +1,207 @@
+//! Where a ball's parameters hold, and which ball an answer ran: the one helper every command
+//! (and the explorer, and Python) calls for the "outside calibration: …" warning
+//! ([`Ball::calibration_warning`], docs/presets.md "The calibration record") and for the JSON
+//! `ball` object ([`Ball::record_json`], docs/cli.md "The ball object").
+
+use super::Ball;
+use crate::model::params::ImpactParams;
+use crate::text::short;
+use serde::Serialize;
+
+/// The names of the parameters of `p` that differ from `own`'s (m, K_p, c, K_r, z_p, K_h; the
+/// speed is no parameter of the ball), each compared to 1e-12: what an override changed.
+pub fn changed_params(own: &ImpactParams, p: &ImpactParams) -> Vec<String> {
+    let same = |a: f64, b: f64| a == b || (a - b).abs() <= 1e-12 * a.abs().max(b.abs());
+    [
+        ("mass", own.mass, p.mass),
+        ("k_p", own.k_p, p.k_p),
+        ("c", own.damping, p.damping),
+        ("k_r", own.k_r, p.k_r),
+        ("z_p", own.z_p, p.z_p),
+        ("k_h", own.k_h, p.k_h),
+    ]
+    .into_iter()
+    .filter(|(_, a, b)| !same(*a, *b))
+    .map(|(n, ..)| n.to_string())
+    .collect()
+}
+
+/// The ball an answer ran, as every JSON answer names it (its `ball` object): the preset (or
+/// `null`), where it came from, its law and parameters (SI), its κ, and the list of what the
+/// command line changed from the preset (`overrides`, empty when nothing).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct BallRecord {
+    /// The preset's name; `null` for the normalized ball and given parameters.
+    pub name: Option<String>,
+    /// `"embedded"`, a preset file's path, `"normalized"` or `"parameters"`.
+    pub origin: String,
+    /// The contact law's name.
+    pub law: &'static str,
+    /// m, kg.
+    pub mass: f64,
+    /// R, m (`null` for a ball that is no preset).
+    pub radius: Option<f64>,
+    /// K_p, N/m.
+    pub k_p: f64,
+    /// c, kg/s (`null` when infinite).
+    pub c: f64,
+    /// K_r, N/m.
+    pub k_r: f64,
+    /// z_p, m (`null` when infinite).
+    pub z_p: f64,
+    /// K_h, N/m^{3/2}.
+    pub k_h: f64,
+    /// κ = I/(m R²): the preset's, or a solid ball's 0.4.
+    pub inertia_factor: f64,
+    /// What the command line changed from the preset: `mass`, `radius`, `k_p`, `c`, `k_r`,
+    /// `z_p`, `lambda`, `zeta` (the `parameters` and `law` keys say the set and law).
+    pub overrides: Vec<String>,
+}
+
+impl Ball {
+    /// The JSON `ball` object of this ball ([`BallRecord`]).
+    pub fn record_json(&self) -> BallRecord {
+        let p = &self.params;
+        BallRecord {
+            name: self.name.clone(),
+            origin: self.origin.clone(),
+            law: self.law.name(),
+            mass: p.mass,
+            radius: Some(self.radius()).filter(|r| r.is_finite()),
+            k_p: p.k_p,
+            c: p.damping,
+            k_r: p.k_r,
+            z_p: p.z_p,
+            k_h: p.k_h,
+            inertia_factor: self.inertia_factor(),
+            overrides: self.overrides.clone(),
+        }
+    }
+
+    /// Why a comparison with the preset's measurement is withheld: the overrides changed the
+    /// ball, so the measurement is not this ball's (`None`: nothing changed it).
+    pub fn measurement_withheld(&self) -> Option<String> {
+        (!self.overrides.is_empty()).then(|| {
+            format!(
+                "the measurement is the preset's ball's, and {} changed this ball",
+                self.overrides.join(", ")
+            )
+        })
+    }
+
+    /// The text header's line of overrides: what the command line changed and what it kept
+    /// from the preset ("overrides: k_p; kept from the preset: mass, radius, c, k_r, z_p");
+    /// `None` without an override or for a ball that is no preset.
+    pub fn overrides_line(&self) -> Option<String> {
+        if self.overrides.is_empty() || self.name.is_none() {
+            return None;
+        }
+        // λ moves K_r and ζ moves c (Eq. 24): those are changed, not kept
+        let moved = |n: &str| match n {
+            "k_r" => "lambda",
+            "c" => "zeta",
+            _ => "",
+        };
+        let kept: Vec<&str> = ["mass", "radius", "k_p", "c", "k_r", "z_p"]
+            .into_iter()
+            .filter(|n| !self.overrides.iter().any(|o| o == n || o == moved(n)))
+            .collect();
+        let mut line = format!("overrides: {}", self.overrides.join(", "));
+        if !kept.is_empty() {
+            line.push_str(&format!("; kept from the preset: {}", kept.join(", ")));
+        }
+        Some(line)
+    }
+
+    /// "outside calibration: …" when the preset's measured COR, taken at its measured speed,
+    /// is used as the target of a calibration at this ball's v0, another speed (`peers --v0
+    /// V`): both speeds named. `None` at the measured speed (to
+    /// [`crate::preset::SPEED_SLACK`]) or without a measured COR.
+    pub fn measured_cor_warning(&self) -> Option<String> {
+        let m = self.measured.as_ref()?;
+        let e = m.cor?;
+        let v = self.params.v0;
+        let same = (v - m.v0).abs() <= crate::preset::SPEED_SLACK * m.v0;
+        (!same).then(|| {
+            format!(
+                "outside calibration: the target COR {} was measured at {} m/s, and this \
+                 calibration is at impact speed {} m/s (give --cor E for the COR at that speed)",
+                short(e, 4),
+                short(m.v0, 4),
+                short(v, 4)
+            )
+        })
+    }
+
+    /// "outside calibration: …" when an impact at `v` (m/s) lies outside the speeds the ball's
+    /// `[calibration]` record holds over, or when the command line changed the recorded ball;
+    /// it names the range and the value. `None` inside the range, and for a ball with no
+    /// record (the normalized ball, given parameters, a preset without one).
+    ///
+    /// ```
+    /// let b = bouncelab::Ball::from_preset("baseball")?;
+    /// assert_eq!(b.calibration_warning(1.25), None);
+    /// let w = b.calibration_warning(25.9).unwrap();
+    /// assert!(w.starts_with("outside calibration: impact speed 25.9 m/s, the ball was fitted at 1.25 m/s"));
+    /// # Ok::<(), bouncelab::BallError>(())
+    /// ```
+    pub fn calibration_warning(&self, v: f64) -> Option<String> {
+        self.speeds_warning(v, v)
+    }
+
+    /// [`Ball::calibration_warning`] for impacts from `lo` to `hi` m/s at once (a sweep's, a
+    /// map's grid, a lot's): one warning naming the range of the answer and the record's.
+    pub fn speeds_warning(&self, lo: f64, hi: f64) -> Option<String> {
+        let c = self.calibration.as_ref()?;
+        let at = if lo == hi {
+            format!("impact speed {} m/s", short(lo, 4))
+        } else {
+            format!("impact speeds {}–{} m/s", short(lo, 4), short(hi, 4))
+        };
+        let range = c.range_text();
+        let fitted = if c.speed_min == c.speed_max {
+            format!("the ball was fitted at {range}")
+        } else {
+            format!("the ball was fitted over {range}")
+        };
+        if !self.overrides.is_empty() {
+            return Some(format!(
+                "outside calibration: {} changed the ball, whose record ({fitted}; {}) no \
+                 longer applies; {at}",
+                self.overrides.join(", "),
+                c.sources()
+            ));
+        }
+        if let Some(other) = &c.other_model {
+            return Some(format!(
+                "outside calibration: the record ({fitted}; {}) is of the preset's own \
+                 parameter set and law, and this answer runs {other}; {at}",
+                c.sources()
+            ));
+        }
+        if c.holds_at(lo) && c.holds_at(hi) {
+            return None;
+        }
+        Some(format!(
+            "outside calibration: {at}, {fitted} ({}): the answer extrapolates the model there",
+            c.sources()
+        ))
+    }
+
+    /// "outside calibration: …" for a test of `standard` on this ball: its impact speed (a
+    /// drop's first impact, through standard air, from the release height) against the
+    /// ball's record; `None` inside it, without a record, or when the drop has no impact.
+    pub fn standard_calibration_warning(
+        &self,
+        standard: &crate::drop::standards::Standard,
+    ) -> Option<String> {
+        let v = match standard.test {
+            crate::drop::standards::Test::Cor { speed } => speed,
+            crate::drop::standards::Test::Drop { height, .. } => {
+                let run = self.drop_test(&crate::drop::DropSetup::new(height)).ok()?;
+                run.bounces.first()?.v_in
+            }
+        };
+        self.calibration_warning(v)
+    }
+}
