@@ -5,7 +5,7 @@
 mod common;
 
 use bouncelab::{ContactLaw, ImpactParams, SolveOptions, simulate};
-use common::{bad, f, json, ok};
+use common::{bad, f, json, ok, ok_calibrated};
 
 /// The superball's adopted set (docs/model.md §7) at another mass, run by the library directly.
 fn superball_at(mass: f64) -> ImpactParams {
@@ -87,7 +87,7 @@ fn drop_and_peers_take_the_radius() {
     };
     // a bigger ball meets more air on the way down
     assert!(drop("0.05") < drop("0.03"));
-    let s = ok(&[
+    let s = ok_calibrated(&[
         "peers", "--preset", "golf", "--radius", "0.03", "--export", "mujoco",
     ]);
     assert!(
@@ -116,7 +116,7 @@ fn every_ball_command_takes_them() {
             "--radius",
             "0.022",
         ]);
-        ok(&a);
+        ok_calibrated(&a);
     }
     let dir = tempfile::tempdir().unwrap();
     let out = dir.path().join("f.svg");

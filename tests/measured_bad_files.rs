@@ -116,7 +116,8 @@ fn fewer_points_than_parameters() {
     );
     assert_bad(
         &o,
-        &["trace.csv:", "3 data points, fewer than the 5 parameters"],
+        // without --v0 the trace's speed is fitted too (issue 52: --free k_p,c,k_r,v0)
+        &["trace.csv:", "3 data points, fewer than the 6 parameters"],
     );
 }
 

@@ -105,6 +105,24 @@ impl Ball {
             // the reach is read on the reduced single chain (ball 1 against a rigid m*, the
             // old model), not on the pair's run: an estimate (docs/targets.md §8)
             let warnings = self.collision_warning(&target, p1.v0, &collision);
+            // each record is of impacts on a rigid plate: in the pair's centre-of-mass frame
+            // each ball meets the other at m_other·v_closing/(m1 + m2), the wall impact's
+            // speed for two identical balls (v each at ±v) and for a wall (m_other → ∞)
+            let (closing, total) = (collision.closing_speed, p1.mass + p2.mass);
+            let own = self.calibration_warning(p2.mass * closing / total);
+            let partner = other
+                .calibration_warning(p1.mass * closing / total)
+                .map(|w| {
+                    w.replacen(
+                        "outside calibration: ",
+                        &format!(
+                            "outside calibration: the partner ({}): ",
+                            other.name.as_deref().unwrap_or("a ball")
+                        ),
+                        1,
+                    )
+                });
+            let warnings: Vec<String> = warnings.into_iter().chain(own).chain(partner).collect();
             CollisionReport {
                 ball: self.name.clone(),
                 law: self.law,
@@ -114,7 +132,7 @@ impl Ball {
                 collision,
                 effective_mass: None,
                 effective_radius: None,
-                warnings: warnings.into_iter().collect(),
+                warnings,
             }
         } else {
             self.collide(&target)?

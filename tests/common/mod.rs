@@ -46,6 +46,16 @@ pub fn ok(args: &[&str]) -> String {
     o.stdout
 }
 
+/// Success, stdout; on stderr nothing but `outside calibration:` warnings (a ball the command
+/// line changed, or run away from the speed its preset was fitted at: tests/calibration.rs).
+pub fn ok_calibrated(args: &[&str]) -> String {
+    let o = bl(args);
+    assert_eq!(o.code, 0, "{args:?}: {}", o.stderr);
+    let calibration = |l: &str| l.starts_with("bouncelab: warning: outside calibration:");
+    assert!(o.stderr.lines().all(calibration), "{args:?}: {}", o.stderr);
+    o.stdout
+}
+
 pub fn json(args: &[&str]) -> Value {
     let s = ok(args);
     assert_eq!(s.lines().count(), 1, "one JSON document on one line");
