@@ -80,6 +80,37 @@ pub fn halley_bracketed_from(
     x
 }
 
+/// The first of several watched functions to rise through 0 within a step [t0, t1]: each
+/// g_i that is below 0 at t0 (`g0[i]`) and at or above it at t1 (`g1[i]`) is located by
+/// [`brent`] on `g(i, t)` (an integrator's dense output), and the earliest is returned with its
+/// index. The events of the compliant target's chain and of the two-ball pair
+/// (`target::numeric`, `target::pair`).
+pub fn first_rising<const N: usize>(
+    g0: [f64; N],
+    g1: [f64; N],
+    t0: f64,
+    t1: f64,
+    mut g: impl FnMut(usize, f64) -> f64,
+) -> Option<(f64, usize)> {
+    let mut best: Option<(f64, usize)> = None;
+    for i in 0..N {
+        if g0[i] < 0.0 && g1[i] >= 0.0 {
+            let tc = brent(
+                |t| g(i, t),
+                t0,
+                t1,
+                g0[i],
+                g1[i],
+                1e-15 * t1.abs().max(1e-300),
+            );
+            if best.is_none_or(|(bt, _)| tc < bt) {
+                best = Some((tc, i));
+            }
+        }
+    }
+    best
+}
+
 /// Brent–Dekker on [a, b] with g(a), g(b) of opposite signs (or one zero).
 pub fn brent(mut f: impl FnMut(f64) -> f64, a: f64, b: f64, fa: f64, fb: f64, tol: f64) -> f64 {
     let (mut a, mut b, mut fa, mut fb) = (a, b, fa, fb);

@@ -20,7 +20,7 @@ use super::history::Samples;
 use super::{Outcome, Surface, horizon};
 use crate::model::contact::{Contact, ContactLaw, Unloading};
 use crate::model::params::Normalized;
-use crate::solver::roots::brent;
+use crate::solver::roots::{brent, first_rising};
 use crate::solver::{Method, Unresolved};
 use differential_equations::interpolate::Interpolation;
 use differential_equations::methods::ExplicitRungeKutta;
@@ -157,16 +157,7 @@ impl Solout<f64, X> for Watcher<'_> {
         self.s_max = self.s_max.max(x[3]);
         self.last = (t, *x);
         let (ga, gb) = (self.chain.watches(x_prev), self.chain.watches(x));
-        let mut best: Option<(f64, usize)> = None;
-        for i in 0..2 {
-            if ga[i] < 0.0 && gb[i] >= 0.0 {
-                let g = |tt: f64| self.chain.watches(&at(tt))[i];
-                let tc = brent(g, t_prev, t, ga[i], gb[i], 1e-15 * t.abs().max(1e-300));
-                if best.is_none_or(|(bt, _)| tc < bt) {
-                    best = Some((tc, i));
-                }
-            }
-        }
+        let best = first_rising(ga, gb, t_prev, t, |i, tt| self.chain.watches(&at(tt))[i]);
         // the history's points in this step, up to the event that ends the phase
         let upto = best.map_or(t, |(tc, _)| tc);
         let chain = self.chain;

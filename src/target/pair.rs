@@ -21,7 +21,7 @@
 use crate::model::contact::{Contact, ContactLaw, Unloading};
 use crate::model::params::{ImpactParams, Normalized};
 use crate::solver::Unresolved;
-use crate::solver::roots::brent;
+use crate::solver::roots::{brent, first_rising};
 use differential_equations::interpolate::Interpolation;
 use differential_equations::methods::ExplicitRungeKutta;
 use differential_equations::ode::{ODE, solve_ode};
@@ -160,17 +160,8 @@ impl Solout<f64, X> for Watcher<'_> {
         I: Interpolation<f64, X> + ?Sized,
     {
         let (ga, gb) = (self.pair.watches(x_prev), self.pair.watches(x));
-        let mut best: Option<(f64, usize)> = None;
-        for i in 0..2 {
-            if ga[i] < 0.0 && gb[i] >= 0.0 {
-                let g = |tt: f64| self.pair.watches(&interp.interpolate(tt).unwrap_or(*x))[i];
-                let tc = brent(g, t_prev, t, ga[i], gb[i], 1e-15 * t.abs().max(1e-300));
-                if best.is_none_or(|(bt, _)| tc < bt) {
-                    best = Some((tc, i));
-                }
-            }
-        }
-        match best {
+        let at = |i: usize, tt: f64| self.pair.watches(&interp.interpolate(tt).unwrap_or(*x))[i];
+        match first_rising(ga, gb, t_prev, t, at) {
             Some((tc, i)) => {
                 self.hit = Some((tc, i, t_prev, *x_prev));
                 ControlFlag::Terminate
