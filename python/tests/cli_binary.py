@@ -21,3 +21,27 @@ def binary():
             pytest.fail(f"BOUNCELAB_BIN={path} is not a file")
         pytest.skip(f"no bouncelab binary at {path} (cargo build, or set BOUNCELAB_BIN)")
     return path
+
+
+# The command line's JSON keys the package does not carry yet (issue 52: the `ball` object, the
+# withheld comparison, a preset's `calibration` record). The comparisons with the command line
+# leave them out; test_bouncelab.py's strict xfail fails the day the package carries them.
+NOT_IN_PYTHON_YET = frozenset({"ball", "comparison_withheld", "calibration"})
+
+
+def without_new_keys(value):
+    """`value` (parsed JSON) without NOT_IN_PYTHON_YET's keys, in it and in the dicts it holds."""
+    if isinstance(value, dict):
+        # `ball` is new as an object; as a string (collide's, bat's ball name) it is not
+        new = {k for k, v in value.items() if k in NOT_IN_PYTHON_YET and
+               (k != "ball" or isinstance(v, dict))}
+        return {k: without_new_keys(v) for k, v in value.items() if k not in new}
+    if isinstance(value, list):
+        return [without_new_keys(v) for v in value]
+    return value
+
+
+def reach(warnings):
+    """An answer's warnings but the calibration's (`outside calibration: …`, which every speed
+    but the preset's own adds; tests/calibration.rs checks them)."""
+    return [w for w in warnings if not w.startswith("outside calibration:")]

@@ -6,6 +6,7 @@ same arguments (cli_binary.py: BOUNCELAB_BIN, default $CARGO_TARGET_DIR/debug/bo
 must agree to 1e-12, messages word for word.
 """
 
+import csv
 import json
 import math
 import os
@@ -17,7 +18,8 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from cli_binary import binary
+import cli_binary
+from cli_binary import NOT_IN_PYTHON_YET, binary, without_new_keys
 
 import bouncelab
 
@@ -40,9 +42,10 @@ def cli(*args):
 
 
 def cli_json(*args):
+    """The command line's JSON, without the keys the package does not carry yet."""
     code, out, err = cli(*args)
     assert code == 0, err
-    return json.loads(out)
+    return without_new_keys(json.loads(out))
 
 
 def cli_error(*args):
@@ -68,6 +71,7 @@ def same(a, b, path="value"):
     infinite z_p or c, and their NaN or None for an absent contact time."""
     if isinstance(b, dict):
         assert isinstance(a, dict), path
+        b = without_new_keys(b)
         assert set(a) == set(b), (path, set(a) ^ set(b))
         for k in b:
             same(a[k], b[k], f"{path}.{k}")
@@ -83,6 +87,15 @@ def same(a, b, path="value"):
     else:
         a = float(a)
         assert abs(a - b) <= 1e-12 * max(abs(b), 1e-300), (path, a, b)
+
+
+@pytest.mark.xfail(strict=True, reason="issue 52: the ball object is not in the package yet")
+def test_the_package_carries_the_command_lines_new_keys():
+    # strict: the day run() carries them, this passes and fails the run, and cli_binary.py's
+    # NOT_IN_PYTHON_YET (which the comparisons leave out) must go
+    d = bouncelab.run(preset="golf").to_dict()
+    assert NOT_IN_PYTHON_YET & {"ball", "comparison_withheld"} <= set(d)
+    assert "calibration" in bouncelab.presets()[0]
 
 
 # ---- values against the stored transcripts ----------------------------------------------
@@ -228,16 +241,18 @@ def test_fit_warns_of_a_fitted_ball_past_its_radius_as_the_cli():
 def test_sweep_velocity_defaults_are_the_clis():
     code, out, err = cli("sweep", "velocity", "--preset", "baseball")
     assert code == 0, err
-    lines = out.splitlines()
-    # the CSV's numbers, then its warnings column (empty: the baseball stays within its radius)
-    assert lines[0].endswith(",warnings") and all(l.endswith(",") for l in lines[1:])
-    columns = lines[0].split(",")[:-1]
-    rows = [l.split(",")[:-1] for l in lines[1:]]
+    table = list(csv.reader(out.splitlines()))
+    # the CSV's numbers, then its warnings column: the calibration's alone (the baseball stays
+    # within its radius; every speed but its record's 1.25 m/s is outside its calibration)
+    assert table[0][-1] == "warnings"
+    assert all(cli_binary.reach(r[-1].split("; ") if r[-1] else []) == [] for r in table[1:])
+    columns = table[0][:-1]
+    rows = [r[:-1] for r in table[1:]]
     expected = np.array([[float(x) if x else math.nan for x in r] for r in rows])
     d = bouncelab.sweep_velocity("baseball")
     # the CSV's numeric columns, then the JSON's max_indentation and warnings
     assert list(d) == columns + ["max_indentation", "warnings"]
-    assert d["warnings"] == [[] for _ in rows]
+    assert [cli_binary.reach(w) for w in d["warnings"]] == [[] for _ in rows]
     got = np.column_stack([d[c] for c in columns])
     np.testing.assert_allclose(got, expected, rtol=1e-12, atol=0)
 

@@ -5,7 +5,7 @@ import math
 import subprocess
 
 import pytest
-from cli_binary import binary
+from cli_binary import binary, reach, without_new_keys
 
 import bouncelab
 
@@ -19,7 +19,7 @@ def no_user_presets(tmp_path, monkeypatch):
 def cli_json(*args):
     out = subprocess.run([binary(), *args, "--format", "json"], check=True, capture_output=True,
                          text=True)
-    return json.loads(out.stdout)
+    return without_new_keys(json.loads(out.stdout))
 
 
 @pytest.mark.parametrize("kwargs,args", [
