@@ -76,9 +76,9 @@ fn shapes<'py>(
         .zip(args)
         .map(|(name, a)| real_array(&np, name, a))
         .collect::<PyResult<_>>()?;
-    // numpy broadcasts at most 32 dimensions (NPY_MAXARGS): a 64-dimensional array once
-    // reached its broadcast and came out as a RuntimeError (issue 54 item 9,
-    // tests/test_arrays_hostile.py); it is the argument's fault, named, ValueError
+    // numpy broadcasts at most 32 dimensions (NPY_MAXARGS): a deeper array is the
+    // argument's fault, named, a ValueError, before numpy's broadcast
+    // (tests/test_arrays_hostile.py)
     for (name, a) in names.iter().zip(&arrays) {
         let ndim: usize = a.getattr("ndim")?.extract()?;
         if ndim > MAX_DIMS {

@@ -72,8 +72,8 @@ fn get<'py, T: pyo3::conversion::FromPyObjectOwned<'py>>(
     d: &Bound<'py, PyDict>,
     key: &str,
 ) -> PyResult<T> {
-    // a bad pickle is a bad value, as `Impact`'s (impact_state.rs): a KeyError once
-    // (issue 54 item 9, tests/test_arrays_hostile.py)
+    // a bad pickle is a bad value, a ValueError, as `Impact`'s (impact_state.rs;
+    // tests/test_arrays_hostile.py)
     d.get_item(key)?
         .ok_or_else(|| {
             pyo3::exceptions::PyValueError::new_err(format!("Collision state without '{key}'"))

@@ -28,8 +28,8 @@ fn spreads(vary: &Bound<'_, PyAny>) -> PyResult<Vec<Spread>> {
     for (k, v) in dict.iter() {
         let name: String = k.extract()?;
         let what = Varied::parse(&name).ok_or_else(|| error(McError::Unknown(name).into()))?;
-        // a bool is an int to Python, so `True` was read as a spread of 1 (100 %): refused,
-        // as is anything that is not a number (issue 54 item 7; tests/test_numbers_typed.py)
+        // a bool is an int to Python (`True` would be a spread of 1, 100 %): refused, as is
+        // anything that is not a number (tests/test_numbers_typed.py)
         if v.is_instance_of::<pyo3::types::PyBool>() {
             return Err(PyValueError::new_err(format!(
                 "invalid vary {}: {v} is not a number (give a fraction, e.g. 0.05)",

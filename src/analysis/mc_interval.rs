@@ -33,8 +33,8 @@ pub fn mean_interval(n: usize, mean: f64, sd: f64) -> (f64, [f64; 2]) {
 
 /// Degrees of freedom from which t₀.₉₇₅ is the Cornish–Fisher series in 1/ν
 /// (`fit::stats::t975`, Abramowitz & Stegun 26.7.5, four terms: its error O(ν⁻⁵) is below
-/// 1e-19 here) rather than statrs' `inverse_cdf`, whose search never ended from about
-/// ν = 1.5·10⁷ (issue 54 item 1: `dask.monte_carlo` hung) and drifts before that: 6.5e-7
+/// 1e-19 here) rather than statrs' `inverse_cdf`, whose search does not end from about
+/// ν = 1.5·10⁷ and drifts before that: 6.5e-7
 /// above the series at ν = 3·10⁴, 7e-6 at 10⁵ (the series matches the tables, 1.962339081 at
 /// ν = 1000, to 1e-12). `the_means_interval_answers_at_any_n`.
 pub const SERIES_DOF: usize = 10_000;
@@ -174,9 +174,8 @@ mod tests {
         assert!(mean_interval(1, 1.0, 0.0).0.is_nan());
     }
 
-    /// Issue 54 item 1: statrs' t quantile never returned from about 1.5·10⁷ samples up
-    /// (`dask.monte_carlo` hung, Ctrl-C could not stop it). From `SERIES_DOF` the series
-    /// answers, continuous with statrs at the switch, falling toward z₀.₉₇₅ = 1.959964.
+    /// statrs' t quantile does not return from about 1.5·10⁷ samples up; from `SERIES_DOF`
+    /// the series answers, continuous with statrs at the switch, falling toward z₀.₉₇₅ = 1.959964.
     #[test]
     fn the_means_interval_answers_at_any_n() {
         let (tx, rx) = std::sync::mpsc::channel();
@@ -213,7 +212,7 @@ mod tests {
             "{from} vs {statrs_there}"
         );
         // at 10⁵ the series is its first order z + (z³ + z)/(4ν) to its second (3e-10);
-        // statrs' answer there was 7e-6 off it
+        // (statrs' answer there is 7e-6 off it)
         let first = z + (z * z * z + z) / 4e5;
         assert!((t975(100_000) - first).abs() < 1e-9, "{}", t975(100_000));
         // one degree of freedom apart: dt/dν = −(z³ + z)/(4ν²) = −2.4e-8 at 10⁴

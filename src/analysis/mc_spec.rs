@@ -103,7 +103,7 @@ pub enum McError {
     /// A `--vary` entry without `=` or with a spread that is not a number.
     #[error("invalid vary: '{0}' is not NAME=SPREAD (e.g. k_p=5% or k_p=0.05)")]
     Syntax(String),
-    /// A spread that rounds to 0 or to a subnormal (`k_p=1e-400` once ran with a spread of 0).
+    /// A spread that rounds to 0 or to a subnormal (`k_p=1e-400`): refused, not run as 0.
     #[error("invalid vary {0}: {1}")]
     Underflow(&'static str, String),
     /// A spread below 0 or not finite.

@@ -117,7 +117,8 @@ impl ExplorerArgs {
 /// Largest session file read: a session is a page of TOML (a few KiB); 1 MiB leaves room.
 pub const MAX_SESSION_BYTES: u64 = 1 << 20;
 
-/// The text of a session file: a regular file (a FIFO once hung, /dev/zero reached 3 GB),
+/// The text of a session file: a regular file (a FIFO blocks its reader, a device may never
+/// end),
 /// at most [`MAX_SESSION_BYTES`], UTF-8, read as the data readers read
 /// (`measured::file::read_text`); missing, unreadable or not UTF-8 is bad input, exit 2,
 /// naming the file (tests/session_file.rs).

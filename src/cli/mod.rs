@@ -139,9 +139,9 @@ pub fn main() -> ExitCode {
         return explorer(cli.choice, &cli.explore, cli.measured)
             .map_or_else(exit::fail, |()| ExitCode::SUCCESS);
     }
-    // every command watches SIGINT, SIGTERM, SIGHUP and SIGQUIT from its start: one that came
-    // in its first moments, before any long work asked, once went unseen, the files written
-    // (exit 0), or SIGTERM ended it as 143 (issue 54 item 6; tests/signals_early.rs)
+    // every command watches SIGINT, SIGTERM, SIGHUP and SIGQUIT from its start, so that a
+    // signal in its first moments, before any long work asked, still stops it with 130 and
+    // nothing written (tests/signals_early.rs)
     budget::interrupt_flag();
     if crate::fault::Fault::SlowStart.active() {
         std::thread::sleep(crate::fault::START_PAUSE);

@@ -152,8 +152,8 @@ impl Oblique {
         if !(k.is_finite() && k > 0.0) {
             return Err(invalid("tangential_stiffness", k, "must be positive"));
         }
-        // bounded as K_p is (`model::checks::POSITIVE_RANGE`): 1e308 once overflowed the
-        // search grid's length (tests/oblique_bounded.rs)
+        // bounded as K_p is (`model::checks::POSITIVE_RANGE`): the search grid's length grows
+        // with √K_t, and past 1e15 it would overflow (tests/oblique_bounded.rs)
         use crate::model::params::{MEANINGFUL_MAX, MEANINGFUL_MIN};
         if !(MEANINGFUL_MIN..=MEANINGFUL_MAX).contains(&k) {
             return Err(invalid(
