@@ -4,7 +4,10 @@
 //! and whether the law follows the data ([`super::verdict`]).
 //!
 //! The variables are scaled to order one: p₀ over the largest reading, k times the readings'
-//! time span. k ≥ 0 (a sealed ball gains no gas), so its interval is clipped at 0.
+//! time span. k is fitted free of sign, so that a ball that holds its pressure is a minimum
+//! inside the box, not one pressed against a bound (where the minimizer's tests are not met);
+//! it is reported clipped at 0 with its interval (a sealed ball gains no gas): a fitted k below
+//! 0 reads as no measurable loss.
 
 use super::Estimate;
 use super::lm::{self, Residuals};
@@ -186,7 +189,7 @@ pub fn fit_pressure_loss(readings: &[Reading]) -> Result<LeakFit, LeakFitError> 
     let sol = lm::minimize(
         &problem,
         &x0,
-        &[1e-12, 0.0],
+        &[1e-12, -50.0],
         &[1e3, 50.0],
         lm::Options::default(),
     )
@@ -202,8 +205,9 @@ pub fn fit_pressure_loss(readings: &[Reading]) -> Result<LeakFit, LeakFitError> 
     let se = |j: usize| unc.covariance[(j, j)].max(0.0).sqrt();
     let interval = |v: f64, s: f64, lo: f64| [(v - unc.t975 * s).max(lo), v + unc.t975 * s];
     let (p0, sp0) = (sol.x[0] * p_scale, se(0) * p_scale);
-    let (k, sk) = (sol.x[1] / t_span, se(1) / t_span);
-    let rate_ci = interval(k, sk, 0.0);
+    let (k_free, sk) = (sol.x[1] / t_span, se(1) / t_span);
+    let rate_ci = interval(k_free, sk, 0.0).map(|x| x.max(0.0));
+    let k = k_free.max(0.0);
     let ln2 = std::f64::consts::LN_2;
     let half_life = [ln2 / k, ln2 / rate_ci[1], ln2 / rate_ci[0]];
     let scale: Vec<f64> = readings.iter().map(|r| problem.sigma(r)).collect();
