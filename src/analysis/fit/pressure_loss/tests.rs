@@ -70,7 +70,11 @@ fn intervals_cover_the_truth_at_their_level() {
 #[test]
 fn a_sealed_ball_has_no_negative_leak() {
     let fit = fit_pressure_loss(&readings(80_000.0, 0.0, 200.0, 7, true)).unwrap();
-    assert!(fit.no_answer.is_empty(), "a sealed ball is an answer: {:?}", fit.no_answer);
+    assert!(
+        fit.no_answer.is_empty(),
+        "a sealed ball is an answer: {:?}",
+        fit.no_answer
+    );
     assert!(fit.rate.value >= 0.0);
     assert_eq!(fit.rate.ci95[0].max(0.0), fit.rate.ci95[0]);
     assert!(fit.half_life[2].is_infinite() || fit.rate.ci95[0] > 0.0);
