@@ -73,6 +73,7 @@ pub struct Ball {
 mod batch;
 mod calibration;
 mod collide;
+mod court;
 mod columns;
 mod entry;
 mod error;
@@ -95,6 +96,7 @@ pub use batch::{
 };
 pub use calibration::{BallRecord, changed_params};
 pub use collide::CollisionReport;
+pub use court::{CourtCalibration, ITF_ANGLE, ITF_SPEED};
 pub use columns::{Columns, Unanswered, first_pass};
 pub use entry::Overrides;
 pub use error::BallError;
