@@ -88,6 +88,7 @@ mod rows;
 mod shot;
 mod shot_mc;
 mod summary;
+mod surface;
 mod sweep;
 mod warnings;
 pub use batch::{

@@ -161,3 +161,28 @@ fn user_surfaces_are_read_beside_user_presets_and_checked() {
     let o = bl_in(dir.path(), &["court", "--preset", "tennis", "--friction", "0.5", "--surface", "nope"]);
     assert_bad(&o, &["unknown surface 'nope'"]);
 }
+
+/// `run` on a surface that gives is the ball against it at rest (`collide`'s COR, peak force
+/// and contact time); on the rigid plate it is today's run with the surface named.
+#[test]
+fn run_on_a_surface_is_collide_against_it_at_rest() {
+    let r = json(&[
+        "run", "--preset", "tennis", "--surface-stiffness", "24713", "--surface-damping", "50",
+        "--format", "json",
+    ]);
+    let c = json(&[
+        "collide", "--preset", "tennis", "--target-mass", "inf", "--target-stiffness", "24713",
+        "--target-damping", "50", "--format", "json",
+    ]);
+    for (a, b) in [("cor", "cor"), ("max_force", "max_force"), ("contact_time", "contact_time")] {
+        assert_eq!(f(&r, a), f(&c, b), "{a}");
+    }
+    assert!(r["comparison_withheld"].as_str().unwrap().contains("rigid plate"));
+    assert_eq!(r["surface"]["overrides"], serde_json::json!(["stiffness", "damping"]));
+    let plate = json(&["run", "--preset", "tennis", "--format", "json"]);
+    let concrete = json(&["run", "--preset", "tennis", "--surface", "concrete", "--format", "json"]);
+    assert_eq!(f(&plate, "cor"), f(&concrete, "cor"));
+    assert_eq!(concrete["surface"]["name"], "concrete");
+    let o = bl(&["run", "--preset", "tennis", "--surface-stiffness", "-1"]);
+    assert_bad(&o, &["surface_stiffness"]);
+}

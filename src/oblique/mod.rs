@@ -39,7 +39,7 @@ pub use input::{Oblique, ObliqueError, ObliqueInvalid, mindlin_ratio};
 pub use motion::{Local, NormalMotion};
 pub use normal::NormalAt;
 pub use response::{ObliqueEnergy, ObliqueHistory, ObliqueResponse};
-pub use surface::solve_on;
+pub use surface::{normal_response, solve_on};
 pub use tangential::{Mode, Phase};
 
 /// Most phases (stick or slip) one impact may switch through before it is called unresolved.

@@ -70,11 +70,12 @@ pub fn solve_on(
     Ok(answer.response(&motion, run, normal, samples))
 }
 
-/// The normal impact on the surface as the tangential answer reads it: its COR is the ball's
+/// The normal impact on the surface (`collide`'s `c` of the ball `p` at v_y = `p.v0`, ω0 =
+/// `w0`) as an [`ImpactResponse`], as the tangential answer and `run --surface` read it: its COR is the ball's
 /// rebound speed over its arrival (the apparent COR, docs/targets.md §3), its peak force and
 /// contact time the chain's; no energy audit (the losses are then ½ m v_y² (1 − e²), the
 /// ball's normal kinetic energy lost, which includes what a moving surface carries away).
-fn normal_response(p: &ImpactParams, law: ContactLaw, c: &Collision, w0: f64) -> ImpactResponse {
+pub fn normal_response(p: &ImpactParams, law: ContactLaw, c: &Collision, w0: f64) -> ImpactResponse {
     let force = p.mass * p.v0 * w0;
     ImpactResponse {
         law,
