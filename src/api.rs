@@ -73,8 +73,8 @@ pub struct Ball {
 mod batch;
 mod calibration;
 mod collide;
-mod court;
 mod columns;
+mod court;
 mod entry;
 mod error;
 mod fit;
@@ -97,8 +97,8 @@ pub use batch::{
 };
 pub use calibration::{BallRecord, changed_params};
 pub use collide::CollisionReport;
-pub use court::{CourtCalibration, ITF_ANGLE, ITF_SPEED};
 pub use columns::{Columns, Unanswered, first_pass};
+pub use court::{CourtCalibration, ITF_ANGLE, ITF_SPEED};
 pub use entry::Overrides;
 pub use error::BallError;
 pub use intervals::{Intervals, bands, fit_table, holds, intervals};

@@ -132,7 +132,9 @@ impl Ball {
         let scale = (self.params.mass * self.params.k_p).sqrt();
         let at = |x: f64| self.itf_cor(k, scale * 10f64.powf(x));
         let n = 43;
-        let xs: Vec<f64> = (0..n).map(|i| -3.0 + 7.0 * i as f64 / (n - 1) as f64).collect();
+        let xs: Vec<f64> = (0..n)
+            .map(|i| -3.0 + 7.0 * i as f64 / (n - 1) as f64)
+            .collect();
         let mut es = Vec::with_capacity(n);
         for &x in &xs {
             es.push(at(x)?);

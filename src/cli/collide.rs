@@ -3,9 +3,9 @@
 
 use super::ball::{self, BallArgs};
 use super::output::{self, directed, human, table};
+use super::surface::{SurfaceArgs, SurfaceUsed};
 use crate::api::{Ball, CollisionReport};
 use crate::target::Target;
-use super::surface::{SurfaceArgs, SurfaceUsed};
 use clap::{Args, ValueEnum};
 use serde::Serialize;
 use std::io::Write;
@@ -63,7 +63,9 @@ struct Report<'a> {
 
 pub fn run(a: &CollideArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     let ball = a.ball.resolve(a.v0)?;
-    if a.target_preset.is_some() && (a.surface.surface.is_some() || a.surface.surface_mass.is_some()) {
+    if a.target_preset.is_some()
+        && (a.surface.surface.is_some() || a.surface.surface_mass.is_some())
+    {
         anyhow::bail!(
             "--target-preset is the target: --surface and --surface-mass do not apply (give              --surface-stiffness, --surface-damping for its surface)"
         );

@@ -3,8 +3,8 @@
 
 use super::ball::BallArgs;
 use super::oblique::TangentialArgs;
-use super::surface::{SurfaceArgs, SurfaceUsed};
 use super::output::{self, given, human, table};
+use super::surface::{SurfaceArgs, SurfaceUsed};
 use crate::api::{BallHeader, CourtCalibration, CourtPace};
 use clap::{Args, ValueEnum};
 use serde::Serialize;
@@ -99,9 +99,11 @@ pub fn run(a: &CourtArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     super::ball::check_overrides(&a.ball.set, None, None)?;
     let ball = a.ball.resolve(None)?;
     let measured = a.fit.as_deref().map(measured).transpose()?;
-    let friction = measured.as_ref().map(|m| m.apparent_friction).or(a.friction);
-    let (mut surface, friction) =
-        super::oblique::surface_of(&a.surface, friction, &a.tangential)?;
+    let friction = measured
+        .as_ref()
+        .map(|m| m.apparent_friction)
+        .or(a.friction);
+    let (mut surface, friction) = super::oblique::surface_of(&a.surface, friction, &a.tangential)?;
     let target_cor = measured.as_ref().map(|m| m.cor_normal).or(a.surface_cor);
     let calibration = match target_cor {
         Some(e) => {

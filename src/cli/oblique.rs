@@ -2,8 +2,8 @@
 //! table, one JSON object or CSV.
 
 use super::ball::BallArgs;
-use super::surface::{SurfaceArgs, SurfaceUsed};
 use super::output::{self, csv_row, given, human, num, opt_num, table};
+use super::surface::{SurfaceArgs, SurfaceUsed};
 use crate::api::{BallHeader, ObliqueSpec};
 use crate::oblique::ObliqueResponse;
 use clap::{Args, ValueEnum};

@@ -2,10 +2,10 @@
 
 use super::ball::{self, BallArgs};
 use super::output::{self, csv_row, num, opt_num};
+use super::surface::{SurfaceArgs, SurfaceUsed};
 use crate::api::{Ball, ImpactReport};
 use crate::model::contact::ContactLaw;
 use crate::solver::{EnergyBudget, ImpactResponse};
-use super::surface::{SurfaceArgs, SurfaceUsed};
 use clap::{Args, ValueEnum};
 use serde::Serialize;
 use std::io::Write;

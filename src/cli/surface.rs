@@ -84,9 +84,23 @@ impl SurfaceUsed {
         };
         let (mut f, mut k, mut c) = (None, None, None);
         take(friction, self.friction, "friction", &mut f);
-        take(stiffness, self.tangential_stiffness, "tangential_stiffness", &mut k);
-        take(damping, self.tangential_damping, "tangential_damping", &mut c);
-        (self.friction, self.tangential_stiffness, self.tangential_damping) = (f, k, c);
+        take(
+            stiffness,
+            self.tangential_stiffness,
+            "tangential_stiffness",
+            &mut k,
+        );
+        take(
+            damping,
+            self.tangential_damping,
+            "tangential_damping",
+            &mut c,
+        );
+        (
+            self.friction,
+            self.tangential_stiffness,
+            self.tangential_damping,
+        ) = (f, k, c);
         self
     }
 
@@ -223,9 +237,18 @@ pub fn list(a: &SurfacesArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         }
     };
     let mut t = vec![
-        ["name", "K_s (N/m)", "c_s (kg/s)", "M (kg)", "μ", "K_t (N/m)", "c_t (kg/s)", "origin"]
-            .map(String::from)
-            .to_vec(),
+        [
+            "name",
+            "K_s (N/m)",
+            "c_s (kg/s)",
+            "M (kg)",
+            "μ",
+            "K_t (N/m)",
+            "c_t (kg/s)",
+            "origin",
+        ]
+        .map(String::from)
+        .to_vec(),
     ];
     for e in &all {
         let s = &e.surface;
@@ -242,7 +265,10 @@ pub fn list(a: &SurfacesArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     }
     table(out, "", &t)?;
     writeln!(out)?;
-    writeln!(out, "sources (— : not given; the command's option or default applies):")?;
+    writeln!(
+        out,
+        "sources (— : not given; the command's option or default applies):"
+    )?;
     for e in &all {
         writeln!(out, "  {}: {}", e.surface.name, e.surface.description)?;
         for s in &e.surface.sources {

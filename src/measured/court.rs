@@ -92,10 +92,16 @@ mod tests {
         );
         let rows = parse_court(&text).unwrap();
         let (mu, e) = rows[0].friction_and_cor();
-        let (vx_in, vy_in) = (30.0 * 16f64.to_radians().cos(), 30.0 * 16f64.to_radians().sin());
+        let (vx_in, vy_in) = (
+            30.0 * 16f64.to_radians().cos(),
+            30.0 * 16f64.to_radians().sin(),
+        );
         assert!((mu - (vx_in - vx) / (vy_in + vy)).abs() < 1e-12);
         assert!((e - vy / vy_in).abs() < 1e-12);
         let bad = parse_court("v_in,angle_in,v_out,angle_out\n30,95,20,20\n").unwrap_err();
-        assert!(bad.to_string().contains("angle_in 95 must lie in (0, 90)"), "{bad}");
+        assert!(
+            bad.to_string().contains("angle_in 95 must lie in (0, 90)"),
+            "{bad}"
+        );
     }
 }

@@ -75,7 +75,12 @@ pub fn solve_on(
 /// rebound speed over its arrival (the apparent COR, docs/targets.md §3), its peak force and
 /// contact time the chain's; no energy audit (the losses are then ½ m v_y² (1 − e²), the
 /// ball's normal kinetic energy lost, which includes what a moving surface carries away).
-pub fn normal_response(p: &ImpactParams, law: ContactLaw, c: &Collision, w0: f64) -> ImpactResponse {
+pub fn normal_response(
+    p: &ImpactParams,
+    law: ContactLaw,
+    c: &Collision,
+    w0: f64,
+) -> ImpactResponse {
     let force = p.mass * p.v0 * w0;
     ImpactResponse {
         law,
