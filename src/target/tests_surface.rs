@@ -68,7 +68,7 @@ fn bad_values_and_keys_name_their_place() {
             "s.toml:1:1: missing field `name`",
         ),
         (
-            format!("name = \"a b\"\ndescription = \"d\"\n"),
+            "name = \"a b\"\ndescription = \"d\"\n".to_string(),
             "s.toml:1:8: name: must be non-empty",
         ),
     ];
