@@ -141,59 +141,83 @@ pub fn run(a: &CourtArgs, out: &mut dyn Write) -> anyhow::Result<()> {
                 computed_on,
             },
         )?,
-        CourtFormat::Text => {
-            writeln!(
-                out,
-                "{}: ITF court pace (CS 01/02: 30 m/s at 16°, no spin), μ = {}",
-                ball.label(),
-                given(friction, 6)
-            )?;
-            writeln!(out, "{}", surface.label())?;
-            let row = |k: &str, v: String| vec![k.to_string(), v];
-            let rows = vec![
-                row("court pace rating", human(pace.cpr, 4)),
-                row(
-                    "category",
-                    format!("{} ({})", pace.category, pace.category_name),
-                ),
-                row("apparent friction", human(pace.apparent_friction, 5)),
-                row("normal COR e_y", human(pace.cor_normal, 5)),
-                row("outgoing speed (m/s)", human(pace.v_out, 5)),
-                row("outgoing angle (°)", human(pace.angle_out_deg, 5)),
-                row("outgoing spin (rad/s)", human(pace.spin_out, 5)),
-            ];
-            table(out, "", &rows)?;
-            writeln!(out)?;
-            writeln!(
-                out,
-                "CPR = 100(1 − μ_app) + 150(0.81 − e_y); categories 1 slow ≤ 29, 2 medium-slow \
-                 30–34, 3 medium 35–39, 4 medium-fast 40–44, 5 fast ≥ 45"
-            )?;
-            if let Some(m) = &measured {
-                writeln!(
-                    out,
-                    "measured ({}, {} bounces): μ_app {}, e {}, CPR {}",
-                    m.file,
-                    m.bounces,
-                    human(m.apparent_friction, 5),
-                    human(m.cor_normal, 5),
-                    human(m.cpr, 4)
-                )?;
-            }
-            if let Some(c) = &calibration {
-                writeln!(
-                    out,
-                    "calibrated to e = {}: K_s {} N/m, c_s {} kg/s (e reachable {}–{}); {}",
-                    given(c.surface_cor, 6),
-                    human(c.stiffness, 5),
-                    human(c.damping, 6),
-                    human(c.reachable[0], 4),
-                    human(c.reachable[1], 4),
-                    c.assumption
-                )?;
-            }
-            output::warning_lines(out, &pace.warnings)?;
-        }
+        CourtFormat::Text => text(
+            out,
+            &ball,
+            &pace,
+            (friction, &surface),
+            &report_of(&measured, &calibration),
+        )?,
     }
     Ok(())
+}
+
+/// What `court --fit` and `--surface-cor` add to the text: the measured and the calibration.
+fn report_of<'a>(
+    m: &'a Option<Measured>,
+    c: &'a Option<CourtCalibration>,
+) -> (Option<&'a Measured>, Option<&'a CourtCalibration>) {
+    (m.as_ref(), c.as_ref())
+}
+
+/// `court`'s text: the header and the surface, the rating's table, the formula, the measured
+/// bounces and the calibration, the warnings.
+fn text(
+    out: &mut dyn Write,
+    ball: &crate::api::Ball,
+    pace: &CourtPace,
+    (friction, surface): (f64, &SurfaceUsed),
+    (measured, calibration): &(Option<&Measured>, Option<&CourtCalibration>),
+) -> std::io::Result<()> {
+    writeln!(
+        out,
+        "{}: ITF court pace (CS 01/02: 30 m/s at 16°, no spin), μ = {}",
+        ball.label(),
+        given(friction, 6)
+    )?;
+    writeln!(out, "{}", surface.label())?;
+    let row = |k: &str, v: String| vec![k.to_string(), v];
+    let rows = vec![
+        row("court pace rating", human(pace.cpr, 4)),
+        row(
+            "category",
+            format!("{} ({})", pace.category, pace.category_name),
+        ),
+        row("apparent friction", human(pace.apparent_friction, 5)),
+        row("normal COR e_y", human(pace.cor_normal, 5)),
+        row("outgoing speed (m/s)", human(pace.v_out, 5)),
+        row("outgoing angle (°)", human(pace.angle_out_deg, 5)),
+        row("outgoing spin (rad/s)", human(pace.spin_out, 5)),
+    ];
+    table(out, "", &rows)?;
+    writeln!(out)?;
+    writeln!(
+        out,
+        "CPR = 100(1 − μ_app) + 150(0.81 − e_y); categories 1 slow ≤ 29, 2 medium-slow \
+         30–34, 3 medium 35–39, 4 medium-fast 40–44, 5 fast ≥ 45"
+    )?;
+    if let Some(m) = &measured {
+        writeln!(
+            out,
+            "measured ({}, {} bounces): μ_app {}, e {}, CPR {}",
+            m.file,
+            m.bounces,
+            human(m.apparent_friction, 5),
+            human(m.cor_normal, 5),
+            human(m.cpr, 4)
+        )?;
+    }
+    if let Some(c) = &calibration {
+        writeln!(
+            out,
+            "calibrated to e = {}: K_s {} N/m, c_s {} kg/s (e reachable {}–{}); {}",
+            given(c.surface_cor, 6),
+            human(c.stiffness, 5),
+            human(c.damping, 6),
+            human(c.reachable[0], 4),
+            human(c.reachable[1], 4),
+            c.assumption
+        )?;
+    }
+    output::warning_lines(out, &pace.warnings)
 }
