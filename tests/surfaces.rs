@@ -380,3 +380,51 @@ fn run_on_a_surface_is_collide_against_it_at_rest() {
     let o = bl(&["run", "--preset", "tennis", "--surface-stiffness", "-1"]);
     assert_bad(&o, &["surface_stiffness"]);
 }
+
+/// `drop` (and its standard) on a surface that gives: each bounce is the ball against it at
+/// rest; on the rigid plate nothing moves.
+#[test]
+fn drop_bounces_on_its_surface() {
+    let give = [
+        "--surface-stiffness",
+        "2e5",
+        "--surface-damping",
+        "100",
+        "--format",
+        "json",
+    ];
+    let base = ["drop", "--preset", "basketball", "--standard", "fiba"];
+    let d = json(&[&base[..], &give[..]].concat());
+    let plate = json(&[&base[..], &["--format", "json"][..]].concat());
+    let first = &d["bounces"][0];
+    let v_in = f(first, "v_in").to_string();
+    let c = json(&[
+        "collide",
+        "--preset",
+        "basketball",
+        "--v0",
+        &v_in,
+        "--target-mass",
+        "inf",
+        "--target-stiffness",
+        "2e5",
+        "--target-damping",
+        "100",
+        "--format",
+        "json",
+    ]);
+    assert_eq!(f(first, "cor"), f(&c, "apparent_cor"));
+    assert_eq!(f(first, "max_force"), f(&c, "max_force"));
+    assert!(f(first, "cor") < f(&plate["bounces"][0], "cor"));
+    // the standard judged on the same floor
+    assert!(f(&d["standard"], "measured") < f(&plate["standard"], "measured"));
+    assert_eq!(plate["surface"]["name"], "steel-plate");
+    let concrete = json(
+        &[
+            &base[..],
+            &["--surface", "concrete", "--format", "json"][..],
+        ]
+        .concat(),
+    );
+    assert_eq!(concrete["bounces"], plate["bounces"]);
+}
