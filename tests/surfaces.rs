@@ -82,6 +82,26 @@ fn a_calibrated_court_returns_its_e_at_every_reachable_value() {
         assert!((f(cal, "cor") - got).abs() < 1e-12);
         assert!((f(&c, "cpr") - cpr(f(&c, "apparent_friction"), got)).abs() < 1e-9);
     }
+    // a court that moves (0.5 kg under the ball) is calibrated as it moves
+    let c = json(&[
+        "court",
+        "--preset",
+        "tennis",
+        "--friction",
+        "0.6",
+        "--surface-mass",
+        "0.5",
+        "--surface-cor",
+        "0.7",
+        "--format",
+        "json",
+    ]);
+    assert!(
+        (f(&c, "cor_normal") - 0.7).abs() < 0.002,
+        "{}",
+        f(&c, "cor_normal")
+    );
+    assert_eq!(f(&c["surface"], "mass"), 0.5);
 }
 
 #[test]

@@ -41,24 +41,27 @@ impl Ball {
         ITF_SPEED * ITF_ANGLE.to_radians().sin()
     }
 
-    /// This ball's vertical COR at the ITF test on a fixed surface of K_s, c_s.
-    fn itf_cor(&self, stiffness: f64, damping: f64) -> Result<f64, BallError> {
+    /// This ball's vertical COR at the ITF test on a surface of K_s, c_s and mass M at rest
+    /// (its rebound over its arrival).
+    fn itf_cor(&self, stiffness: f64, damping: f64, mass: f64) -> Result<f64, BallError> {
         let t = Target {
             stiffness,
             damping,
+            mass,
             ..Target::wall()
         };
         let vy = Ball::itf_normal_speed();
         Ok(collide(&self.params, self.law, &t, vy, None)?.apparent_cor)
     }
 
-    /// The fixed surface (K_s held at `stiffness`, else this ball's K_p) whose c_s makes this
-    /// ball's vertical COR at the ITF test `cor` (to 1e-10); an error with the reachable range
-    /// when no c_s does.
+    /// The surface (K_s held at `stiffness`, else this ball's K_p; its moving mass `mass`, ∞
+    /// for a fixed one) whose c_s makes this ball's vertical COR at the ITF test `cor` (to
+    /// 1e-10); an error with the reachable range when no c_s does.
     pub fn calibrate_court(
         &self,
         cor: f64,
         stiffness: Option<f64>,
+        mass: f64,
     ) -> Result<CourtCalibration, BallError> {
         let bad = |field, value, reason: String| BallError::Invalid {
             field,
@@ -76,8 +79,8 @@ impl Ball {
                 "a calibrated surface needs a finite K_s > 0".into(),
             ));
         }
-        let e = |c: f64| self.itf_cor(k, c);
-        let (c_min, e_min) = self.least_cor(k)?;
+        let e = |c: f64| self.itf_cor(k, c, mass);
+        let (c_min, e_min) = self.least_cor(k, mass)?;
         let e_top = e(0.0)?;
         let range = [e_min, e_top];
         if !(cor >= e_min && cor <= e_top) {
@@ -128,9 +131,9 @@ impl Ball {
     /// Where e(c_s) is least at K_s = `k`: a scan over c_s on a log grid spanning the
     /// surface's relaxation times around the contact's (√(m K_p) × 10⁻³ … 10⁴), then golden
     /// section on log c_s in the scan's best bracket.
-    fn least_cor(&self, k: f64) -> Result<(f64, f64), BallError> {
+    fn least_cor(&self, k: f64, mass: f64) -> Result<(f64, f64), BallError> {
         let scale = (self.params.mass * self.params.k_p).sqrt();
-        let at = |x: f64| self.itf_cor(k, scale * 10f64.powf(x));
+        let at = |x: f64| self.itf_cor(k, scale * 10f64.powf(x), mass);
         let n = 43;
         let xs: Vec<f64> = (0..n)
             .map(|i| -3.0 + 7.0 * i as f64 / (n - 1) as f64)

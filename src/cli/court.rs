@@ -107,7 +107,7 @@ pub fn run(a: &CourtArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     let target_cor = measured.as_ref().map(|m| m.cor_normal).or(a.surface_cor);
     let calibration = match target_cor {
         Some(e) => {
-            let c = ball.calibrate_court(e, a.surface.surface_stiffness)?;
+            let c = ball.calibrate_court(e, a.surface.surface_stiffness, surface.mass)?;
             (surface.stiffness, surface.damping) = (c.stiffness, c.damping);
             surface.overrides.retain(|o| *o != "stiffness");
             surface.overrides.push("calibrated");
