@@ -82,7 +82,8 @@ fn a_calibrated_court_returns_its_e_at_every_reachable_value() {
         assert!((f(cal, "cor") - got).abs() < 1e-12);
         assert!((f(&c, "cpr") - cpr(f(&c, "apparent_friction"), got)).abs() < 1e-9);
     }
-    // a court that moves (0.5 kg under the ball) is calibrated as it moves
+    // a court that moves (0.5 kg under the ball) is calibrated as it moves: it carries energy
+    // off, so its reach is lower (0.394–0.671 at K_s = K_p)
     let c = json(&[
         "court",
         "--preset",
@@ -92,12 +93,12 @@ fn a_calibrated_court_returns_its_e_at_every_reachable_value() {
         "--surface-mass",
         "0.5",
         "--surface-cor",
-        "0.7",
+        "0.6",
         "--format",
         "json",
     ]);
     assert!(
-        (f(&c, "cor_normal") - 0.7).abs() < 0.002,
+        (f(&c, "cor_normal") - 0.6).abs() < 0.002,
         "{}",
         f(&c, "cor_normal")
     );
