@@ -4,6 +4,7 @@
 use super::{ENERGY_KEYS, EnergyTerms, ObliqueImpact};
 use crate::frozen_array;
 use crate::same::Same;
+use crate::surface::SurfaceUsed;
 use numpy::{PyArray1, PyArrayMethods, PyReadonlyArray1};
 use pyo3::conversion::FromPyObjectOwned;
 use pyo3::exceptions::PyValueError;
@@ -42,6 +43,10 @@ pub(super) fn to_dict<'py>(o: &ObliqueImpact, py: Python<'py>) -> PyResult<Bound
         }
     }
     d.set_item("warnings", &o.warnings)?;
+    if let Some(c) = o.tangential_damping {
+        d.set_item("tangential_damping", c)?;
+    }
+    d.set_item("surface", o.surface.to_dict(py)?)?;
     Ok(d)
 }
 
@@ -72,13 +77,24 @@ pub(super) fn from_state(d: &Bound<'_, PyDict>) -> PyResult<ObliqueImpact> {
         ($($k:ident),*) => {
             ObliqueImpact {
                 $($k: get(d, stringify!($k))?,)*
-                energy: EnergyTerms(energy),
+                energy: EnergyTerms(energy, match e.get_item("tangential_damping")? {
+                    Some(c) => Some(c.extract()?),
+                    None => None,
+                }),
                 t: array("t")?,
                 normal_force: array("normal_force")?,
                 friction_force: array("friction_force")?,
                 slip_velocity: array("slip_velocity")?,
                 spin: array("spin")?,
                 warnings: get(d, "warnings")?,
+                tangential_damping: match d.get_item("tangential_damping")? {
+                    Some(c) => c.extract()?,
+                    None => None,
+                },
+                surface: match d.get_item("surface")? {
+                    Some(s) => SurfaceUsed::from_dict(&s)?,
+                    None => SurfaceUsed::rigid_plate(),
+                },
             }
         };
     }
@@ -90,7 +106,13 @@ pub(super) fn same(py: Python<'_>, a: &ObliqueImpact, b: &ObliqueImpact) -> PyRe
     macro_rules! all_same {
         ($($k:ident),*) => { true $(&& a.$k.same(&b.$k))* };
     }
-    if !(plain_fields!(all_same) && a.energy.0.same(&b.energy.0) && a.warnings == b.warnings) {
+    if !(plain_fields!(all_same)
+        && a.energy.0.same(&b.energy.0)
+        && a.energy.1.same(&b.energy.1)
+        && a.warnings == b.warnings
+        && a.tangential_damping.same(&b.tangential_damping)
+        && a.surface == b.surface)
+    {
         return Ok(false);
     }
     for (x, y) in history(a).into_iter().zip(history(b)) {
