@@ -32,8 +32,16 @@ fn history(o: &ObliqueImpact) -> [&Option<Py<PyArray1<f64>>>; 5] {
 
 pub(super) fn to_dict<'py>(o: &ObliqueImpact, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
     let d = PyDict::new(py);
+    // c_t, a key only with a dashpot, after K_t as in the JSON
     macro_rules! put {
-        ($($k:ident),*) => { $(d.set_item(stringify!($k), &o.$k)?;)* };
+        ($($k:ident),*) => { $(
+            d.set_item(stringify!($k), &o.$k)?;
+            if stringify!($k) == "tangential_stiffness"
+                && let Some(c) = o.tangential_damping
+            {
+                d.set_item("tangential_damping", c)?;
+            }
+        )* };
     }
     plain_fields!(put);
     d.set_item("energy", &o.energy)?;
@@ -43,9 +51,6 @@ pub(super) fn to_dict<'py>(o: &ObliqueImpact, py: Python<'py>) -> PyResult<Bound
         }
     }
     d.set_item("warnings", &o.warnings)?;
-    if let Some(c) = o.tangential_damping {
-        d.set_item("tangential_damping", c)?;
-    }
     d.set_item("surface", o.surface.to_dict(py)?)?;
     Ok(d)
 }

@@ -90,6 +90,7 @@ def test_oblique_on_a_surface_that_gives_with_a_tangential_dashpot():
                    "--tangential-damping", "2", "--surface", "hard-court",
                    "--surface-stiffness", "2e6", "--surface-damping", "30")
     close(o.to_dict(), cli)
+    assert list(o.to_dict()) == list(cli) and list(o.energy) == list(cli["energy"])
     assert o.tangential_damping == 2.0 and o.surface["tangential_damping"] == 2.0
     # the same numbers given inside surface=: the same answer
     inside = dict(kw["surface"], friction=0.6, tangential_damping=2.0)
