@@ -74,6 +74,7 @@ mod batch;
 mod calibration;
 mod collide;
 mod columns;
+mod court;
 mod entry;
 mod error;
 mod fit;
@@ -87,6 +88,7 @@ mod rows;
 mod shot;
 mod shot_mc;
 mod summary;
+mod surface;
 mod sweep;
 mod warnings;
 pub use batch::{
@@ -96,6 +98,7 @@ pub use batch::{
 pub use calibration::{BallRecord, changed_params};
 pub use collide::CollisionReport;
 pub use columns::{Columns, Unanswered, first_pass};
+pub use court::{CourtCalibration, ITF_ANGLE, ITF_SPEED};
 pub use entry::Overrides;
 pub use error::BallError;
 pub use intervals::{Intervals, bands, fit_table, holds, intervals};

@@ -20,6 +20,8 @@
 #[cfg(feature = "tui")]
 pub mod write;
 
+pub mod surfaces;
+
 use crate::preset::{Preset, PresetError};
 use std::fmt;
 use std::io::Read;

@@ -210,7 +210,7 @@ pub struct Derived {
 }
 
 mod check;
-mod error;
+pub(crate) mod error;
 pub use error::PresetError;
 use error::{Bad, line_col, locate, one_line};
 

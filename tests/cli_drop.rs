@@ -19,10 +19,13 @@ fn json_holds_the_issues_keys_and_the_verdict() {
     ]);
     // serde_json's map sorts its keys
     let keys: Vec<&String> = v.as_object().unwrap().keys().collect();
-    // (issue 27 added `warnings`, the first impact's; issue 52 `ball`, the ball dropped)
+    // (issue 27 added `warnings`, the first impact's; issue 52 `ball`, the ball dropped;
+    // issue 53 `surface`, the floor it bounced on)
     assert_eq!(
         keys,
-        ["ball", "bounces", "drag", "height", "standard", "warnings"]
+        [
+            "ball", "bounces", "drag", "height", "standard", "surface", "warnings"
+        ]
     );
     // the standard's drop height is the default
     assert_eq!(f(&v, "height"), 2.54);

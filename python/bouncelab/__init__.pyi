@@ -12,6 +12,10 @@ ParamSet = Literal["adopted", "materials"]
 # one number, a sequence of numbers or a 1-D numpy array of any real dtype
 Floats = Union[float, Sequence[float], npt.NDArray[Union[np.floating[Any], np.integer[Any]]]]
 Array = npt.NDArray[np.float64]
+# ``surface=``: a surface's name (``bouncelab surfaces``), or a dict of its numbers over the
+# named one's (keys ``name``, ``stiffness``, ``damping``, ``mass``, ``friction``,
+# ``tangential_stiffness``, ``tangential_damping``; docs/surfaces.md, docs/python.md)
+SurfaceArg = Union[str, dict[str, Any]]
 
 class NoAnswerError(ValueError):
     """The solver ran out of its step budget: no answer (the command line's exit code 1)."""
@@ -67,6 +71,9 @@ class Impact:
     @property
     def measured(self) -> Optional[Measured]: ...
     @property
+    def surface(self) -> dict[str, Any]:
+        """The surface it ran on, as the JSON's ``surface`` object (docs/surfaces.md)."""
+    @property
     def energy(self) -> Optional[Energy]:
         """The energy budget (J), the exact solver's audit (docs/python.md)."""
     @property
@@ -115,6 +122,7 @@ def run(
     damping: Optional[float] = None,
     k_r: Optional[float] = None,
     z_p: Optional[float] = None,
+    surface: Optional[SurfaceArg] = None,
 ) -> Impact:
     """One impact of a preset, as ``bouncelab run --preset NAME``."""
 
@@ -395,6 +403,7 @@ class _DropKeys(TypedDict):
     drag: bool
     bounces: dict[str, Array]
     warnings: list[str]
+    surface: dict[str, Any]
 
 class Drop(_DropKeys, total=False):
     """The keys of ``bouncelab drop --format json``; ``standard`` only when one is named."""
@@ -418,6 +427,7 @@ def drop(
     damping: Optional[float] = None,
     k_r: Optional[float] = None,
     z_p: Optional[float] = None,
+    surface: Optional[SurfaceArg] = None,
 ) -> Drop:
     """A drop test, bounce by bounce, as ``bouncelab drop --format json``: released from rest at
     ``height`` (m, the bottom of the ball; default the standard's drop height, else 1 m);
@@ -456,6 +466,7 @@ class Collision:
     effective_mass: Optional[float]
     effective_radius: Optional[float]
     warnings: list[str]
+    surface: dict[str, Any]
     def to_dict(self) -> dict:
         """The keys of ``bouncelab collide --format json``, the target's under ``target``
         (``mass``, ``speed``, ``stiffness``, ``damping``; inf for the JSON's null)."""
@@ -480,6 +491,7 @@ def collide(
     damping: Optional[float] = None,
     k_r: Optional[float] = None,
     z_p: Optional[float] = None,
+    surface: Optional[SurfaceArg] = None,
 ) -> Collision:
     """The ball against a target of mass M (inf: the wall) moving at v_t toward it, rigid or
     with a surface K_s ∥ c_s, as ``bouncelab collide``; or against another preset ball
@@ -523,6 +535,8 @@ class ObliqueImpact:
     slip_velocity: Optional[Array]
     spin: Optional[Array]
     warnings: list[str]
+    tangential_damping: Optional[float]
+    surface: dict[str, Any]
     def to_dict(self) -> dict:
         """The keys of ``bouncelab oblique --format json``, the history arrays with a history."""
     def __eq__(self, other: object) -> bool:
@@ -533,7 +547,7 @@ def oblique(
     preset: str = "superball",
     *,
     angle: float,
-    friction: float,
+    friction: Optional[float] = None,
     v0: Optional[float] = None,
     spin: float = 0.0,
     tangential_stiffness: Optional[float] = None,
@@ -548,6 +562,8 @@ def oblique(
     damping: Optional[float] = None,
     k_r: Optional[float] = None,
     z_p: Optional[float] = None,
+    surface: Optional[SurfaceArg] = None,
+    tangential_damping: Optional[float] = None,
 ) -> ObliqueImpact:
     """One oblique impact with friction and spin (docs/oblique.md), as ``bouncelab oblique``:
     angle to the surface in degrees (0 < angle ≤ 90), spin in rad/s (> 0 topspin); with

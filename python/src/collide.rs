@@ -3,6 +3,7 @@
 //! names.
 
 use crate::same::Same;
+use crate::surface::SurfaceUsed;
 use crate::{error, overridden_ball, overrides};
 use bouncelab::Ball;
 use bouncelab::api::CollisionReport;
@@ -40,6 +41,8 @@ pub(crate) struct Collision {
     effective_mass: Option<f64>,
     effective_radius: Option<f64>,
     warnings: Vec<String>,
+    /// The surface the target had (the JSON's `surface`, docs/surfaces.md).
+    surface: SurfaceUsed,
 }
 
 /// The JSON's keys in its order, after `target` (one macro for both directions, so that
@@ -110,6 +113,7 @@ impl Collision {
             ($($k:ident),*) => { $(d.set_item(stringify!($k), &self.$k)?;)* };
         }
         answer_keys!(put);
+        d.set_item("surface", self.surface.to_dict(py)?)?;
         Ok(d)
     }
 
@@ -140,6 +144,10 @@ impl Collision {
                     target_stiffness: get(&target, "stiffness")?,
                     target_damping: get(&target, "damping")?,
                     $($k: get(state, stringify!($k))?,)*
+                    surface: match state.get_item("surface")? {
+                        Some(s) => SurfaceUsed::from_dict(&s)?,
+                        None => SurfaceUsed::rigid_plate(),
+                    },
                 }
             };
         }
@@ -163,6 +171,7 @@ impl Collision {
             target_stiffness,
             target_damping
         ) && answer_keys!(all_same)
+            && self.surface == other.surface
     }
 
     /// A frozen value is its own copy.
@@ -203,6 +212,7 @@ impl From<CollisionReport> for Collision {
             effective_mass: r.effective_mass,
             effective_radius: r.effective_radius,
             warnings: r.warnings,
+            surface: SurfaceUsed::rigid_plate(),
         }
     }
 }
@@ -211,13 +221,15 @@ impl From<CollisionReport> for Collision {
 /// [--target-speed V_T] [--target-stiffness K_S] [--target-damping C_S]`, or against another
 /// preset ball with `target_preset` (instead of `target_mass`; both balls deform, their chains
 /// in series, through the same `Ball::collide_ball`: docs/targets.md §8). `target_mass = inf`
-/// is the wall.
+/// is the wall. `surface=` (a name or a dict of its numbers, python/src/surface.rs) is the
+/// target's surface, as `--surface NAME --surface-stiffness K_S …`: its mass the target's
+/// unless `target_mass` is given, its K_s, c_s unless `target_stiffness` is.
 #[pyfunction]
-#[pyo3(signature = (preset="superball", v0=None, target_mass=None, target_speed=0.0, target_stiffness=f64::INFINITY, target_damping=0.0, target_preset=None, law=None, params=None, *, mass=None, radius=None, k_p=None, damping=None, k_r=None, z_p=None))]
+#[pyo3(signature = (preset="superball", v0=None, target_mass=None, target_speed=0.0, target_stiffness=f64::INFINITY, target_damping=0.0, target_preset=None, law=None, params=None, *, mass=None, radius=None, k_p=None, damping=None, k_r=None, z_p=None, surface=None))]
 // help()'s signature, which pyo3 writes "..." for f64::INFINITY in (shown "Ellipsis"): 1e999
 // is the literal Python reads as inf, shown "inf" (test_the_stub_and_help_give_each_…)
 #[pyo3(
-    text_signature = "(preset='superball', v0=None, target_mass=None, target_speed=0.0, target_stiffness=1e999, target_damping=0.0, target_preset=None, law=None, params=None, *, mass=None, radius=None, k_p=None, damping=None, k_r=None, z_p=None)"
+    text_signature = "(preset='superball', v0=None, target_mass=None, target_speed=0.0, target_stiffness=1e999, target_damping=0.0, target_preset=None, law=None, params=None, *, mass=None, radius=None, k_p=None, damping=None, k_r=None, z_p=None, surface=None)"
 )]
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn collide(
@@ -236,6 +248,7 @@ pub(crate) fn collide(
     damping: Option<f64>,
     k_r: Option<f64>,
     z_p: Option<f64>,
+    surface: Option<&Bound<'_, PyAny>>,
 ) -> PyResult<Collision> {
     if target_damping != 0.0 && !target_damping.is_nan() && target_stiffness == f64::INFINITY {
         // refused as the command line refuses --target-damping without --target-stiffness:
@@ -253,26 +266,51 @@ pub(crate) fn collide(
         v0,
         &overrides(mass, radius, k_p, damping, k_r, z_p),
     )?;
-    let surface = (target_stiffness, target_damping);
+    let given = surface.is_some_and(|s| !s.is_none());
+    let (mut used, _) = crate::surface::resolve(surface)?;
+    let named = used.name != bouncelab::target::surface::DEFAULT || used.mass.is_finite();
+    if target_preset.is_some() && given && named {
+        return Err(crate::value_error(
+            "target_preset is the target: a named surface and its mass do not apply (give \
+             surface={'stiffness': K_S, 'damping': C_S} for its surface)"
+                .into(),
+        ));
+    }
+    if let Some(m) = target_mass {
+        used.mass = m;
+        used.overrides.push("target_mass".into());
+    }
+    // the defaults (inf, 0) read as not given: the surface's own then
+    if target_stiffness != f64::INFINITY || target_damping != 0.0 {
+        used.stiffness = target_stiffness;
+        used.damping = target_damping;
+        used.overrides.push("target_stiffness".into());
+        if target_damping != 0.0 {
+            used.overrides.push("target_damping".into());
+        }
+    }
+    let pair = (used.stiffness, used.damping);
     let report = match (target_mass, target_preset) {
         (None, Some(name)) => {
             let cat = crate::load_catalog()?;
             let other = other_ball(&cat, name)?;
-            ball.collide_ball(&other, target_speed, surface)
+            ball.collide_ball(&other, target_speed, pair)
         }
-        (Some(mass), None) => ball.collide(&Target {
-            mass,
+        (_, None) if target_mass.is_some() || given => ball.collide(&Target {
+            mass: used.mass,
             speed: target_speed,
-            stiffness: surface.0,
-            damping: surface.1,
+            stiffness: pair.0,
+            damping: pair.1,
         }),
         _ => {
             return Err(crate::value_error(
-                "give one of target_mass and target_preset".into(),
+                "give one of target_mass, target_preset and surface".into(),
             ));
         }
     };
-    Ok(report.map_err(error)?.into())
+    let mut c: Collision = report.map_err(error)?.into();
+    c.surface = used;
+    Ok(c)
 }
 
 fn other_ball(cat: &Catalog, name: &str) -> PyResult<Ball> {

@@ -3,6 +3,7 @@
 
 use crate::impact::interval_columns;
 use crate::{array, error, interrupt, overridden_ball, overrides, value_error};
+use bouncelab::BallError;
 use bouncelab::api::Ball;
 use bouncelab::drop::standards::{self, Verdict};
 use bouncelab::drop::{Air, Bounce, DropRun, DropSetup};
@@ -23,7 +24,7 @@ const DEFAULT_HEIGHT: f64 = 1.0;
 /// is judged unless named, as on the command line; a preset's own is the one whose `balls`
 /// list it in `standards()`.
 #[pyfunction(name = "drop")]
-#[pyo3(signature = (preset="superball", height=None, bounces=10, min_rebound=0.001, drag=true, drag_coefficient=None, air_density=None, law=None, params=None, standard=None, *, mass=None, radius=None, k_p=None, damping=None, k_r=None, z_p=None))]
+#[pyo3(signature = (preset="superball", height=None, bounces=10, min_rebound=0.001, drag=true, drag_coefficient=None, air_density=None, law=None, params=None, standard=None, *, mass=None, radius=None, k_p=None, damping=None, k_r=None, z_p=None, surface=None))]
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn drop_test<'py>(
     py: Python<'py>,
@@ -43,6 +44,7 @@ pub(crate) fn drop_test<'py>(
     damping: Option<f64>,
     k_r: Option<f64>,
     z_p: Option<f64>,
+    surface: Option<&Bound<'py, PyAny>>,
 ) -> PyResult<Bound<'py, PyDict>> {
     if !drag && (drag_coefficient.is_some() || air_density.is_some()) {
         // as the command line refuses --no-drag with --drag-coefficient or --air-density
@@ -76,17 +78,27 @@ pub(crate) fn drop_test<'py>(
         bounces,
         min_rebound,
     };
-    let run = interrupt::detach_watched(py, |w| ball.drop_test_watched(&setup, w))?;
+    // each bounce on the surface at rest (`bouncelab drop --surface`): on the rigid plate
+    // today's drop, with a fitted preset's intervals; elsewhere none (they are the rigid
+    // plate's)
+    let (surface, _) = crate::surface::resolve(surface)?;
+    let target = surface.target();
+    let rigid = surface.is_rigid();
+    let run = interrupt::detach_watched(py, |w| match rigid {
+        true => ball.drop_test_watched(&setup, w),
+        false => bouncelab::drop::drop_on_watched(&ball.drop_ball(), &setup, &target, w)?
+            .ok_or(BallError::Interrupted),
+    })?;
     let d = PyDict::new(py);
     d.set_item("height", run.setup.height)?;
     d.set_item("drag", run.drag())?;
-    d.set_item("bounces", bounce_columns(py, &ball, &run)?)?;
+    d.set_item("bounces", bounce_columns(py, &ball, &run, rigid)?)?;
     if let Some(s) = standard {
         // judged on the standard's own drop (or COR test) in this drop's air, whatever
         // `height` says: the command line's verdict (docs/drop.md, "Standards")
         let dball = ball.drop_ball();
         let v = py
-            .detach(|| s.judge(&dball, air))
+            .detach(|| s.judge_on(&dball, air, &target))
             .map_err(|e| error(e.into()))?;
         let verdict = verdict_dict(py, &v)?;
         // the height judged at, as the command line's `judged_at_height_m` (None: a COR test)
@@ -97,6 +109,7 @@ pub(crate) fn drop_test<'py>(
     // a ball fitted to drops in another air than this drop's says so, as the command line's
     warnings.extend(ball.drop_air_warning(run.setup.air));
     d.set_item("warnings", warnings)?;
+    d.set_item("surface", surface.to_dict(py)?)?;
     Ok(d)
 }
 
@@ -106,6 +119,7 @@ fn bounce_columns<'py>(
     py: Python<'py>,
     ball: &Ball,
     run: &DropRun,
+    rigid: bool,
 ) -> PyResult<Bound<'py, PyDict>> {
     let col = |f: fn(&Bounce) -> f64| array(py, run.bounces.iter().map(f).collect());
     let b = PyDict::new(py);
@@ -117,6 +131,9 @@ fn bounce_columns<'py>(
     b.set_item("max_force", col(|r| r.max_force))?;
     b.set_item("t_start", col(|r| r.t_start))?;
     let setup = run.setup;
+    if !rigid {
+        return Ok(b);
+    }
     if let Some(bands) =
         interrupt::detach_watched(py, |w| ball.drop_intervals_watched(&setup, w).transpose())?
     {

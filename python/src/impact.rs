@@ -18,7 +18,7 @@ use bouncelab::api::{ImpactReport, Intervals};
 use numpy::PyArray1;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
-pub(crate) use run::impact;
+pub(crate) use run::{impact, impact_on};
 use std::borrow::Cow;
 use std::sync::{Arc, OnceLock};
 
@@ -91,6 +91,8 @@ pub(crate) struct Impact {
     /// there from the start: the solver's own run, or a state that carried it); shared, so
     /// that the answer stays small to move and a preset's ball is not copied (catalog_cache.rs).
     ball: Option<Arc<Ball>>,
+    /// The surface it ran on (the JSON's `surface`; the rigid plate unless `surface=`).
+    surface: crate::surface::SurfaceUsed,
 }
 
 /// What `bouncelab run` reports from the exact solver's run with its energy audit: the
@@ -187,6 +189,7 @@ impl Impact {
             intervals,
             audit: audit.map_or_else(OnceLock::new, OnceLock::from),
             ball: None,
+            surface: crate::surface::SurfaceUsed::rigid_plate(),
         }
     }
 
@@ -272,6 +275,14 @@ impl Impact {
         Ok(Some(d))
     }
 
+    /// The surface it ran on, as the JSON's `surface` object (docs/surfaces.md): name,
+    /// origin, stiffness, damping, mass (∞: rigid, fixed), friction, tangential_stiffness,
+    /// tangential_damping, overrides.
+    #[getter]
+    fn surface<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        self.surface.to_dict(py)
+    }
+
     /// The energy budget (J): initial_kinetic, final_kinetic, dashpot, contact, spring and
     /// relative_residual.
     #[getter]
@@ -341,6 +352,7 @@ impl Impact {
                 d.set_item(k, a)?;
             }
         }
+        d.set_item("surface", self.surface.to_dict(py)?)?;
         Ok(d)
     }
 

@@ -4,6 +4,7 @@
 
 use super::{Audit, Impact};
 use crate::error;
+use crate::surface::SurfaceUsed;
 use bouncelab::Ball;
 use bouncelab::api::{ImpactReport, Intervals};
 use pyo3::prelude::*;
@@ -20,11 +21,44 @@ pub(crate) fn impact(
     history: bool,
     samples: usize,
 ) -> PyResult<Py<Impact>> {
+    impact_on(py, ball, SurfaceUsed::rigid_plate(), history, samples)
+}
+
+/// [`impact`] on `surface` (at rest): on the rigid plate, [`impact`]'s answer; on a surface
+/// that gives or moves, the ball against it (`Ball::impact_on`, as `bouncelab run
+/// --surface`): no energy audit, and the preset's measurement (the rigid plate's) not carried.
+pub(crate) fn impact_on(
+    py: Python<'_>,
+    ball: Arc<Ball>,
+    surface: SurfaceUsed,
+    history: bool,
+    samples: usize,
+) -> PyResult<Py<Impact>> {
+    if !surface.is_rigid() {
+        let ball = Ball {
+            measured: None,
+            ..Arc::unwrap_or_clone(ball)
+        };
+        let target = surface.target();
+        let n = if history { samples } else { 0 };
+        let (r, intervals) = py
+            .detach(|| {
+                let r = ball.impact_on(&target, n)?;
+                Ok::<_, bouncelab::BallError>((r, ball.intervals().transpose()?))
+            })
+            .map_err(error)?;
+        let rep = ImpactReport::new(&ball, &r, history);
+        let audit = Some(Audit::of(&rep));
+        let mut impact = Impact::new(py, &ball, &rep, intervals, audit);
+        impact.surface = surface;
+        return Py::new(py, impact);
+    }
     if !history && let Some(s) = ball.closed_form_summary() {
         let intervals = fitted_intervals(py, &ball)?;
         let rep = ImpactReport::of_summary(&ball, &s);
         let mut impact = Impact::new(py, &ball, &rep, intervals, None);
         impact.ball = Some(ball);
+        impact.surface = surface;
         // into its Python object here: the answer moved once, not through each caller
         return Py::new(py, impact);
     }
@@ -40,7 +74,9 @@ pub(crate) fn impact(
         .map_err(error)?;
     let rep = ImpactReport::new(&ball, &r, history);
     let audit = Some(Audit::of(&rep));
-    Py::new(py, Impact::new(py, &ball, &rep, intervals, audit))
+    let mut impact = Impact::new(py, &ball, &rep, intervals, audit);
+    impact.surface = surface;
+    Py::new(py, impact)
 }
 
 /// The 95 % intervals of a fitted preset's impact (several solver runs: the GIL released),

@@ -90,6 +90,10 @@ pub(super) fn from_state(d: &Bound<'_, PyDict>) -> PyResult<Impact> {
         }
         .into(),
         ball: None,
+        surface: match d.get_item("surface")? {
+            Some(s) => crate::surface::SurfaceUsed::from_dict(&s)?,
+            None => crate::surface::SurfaceUsed::rigid_plate(),
+        },
     })
 }
 
@@ -158,6 +162,7 @@ pub(super) fn same(a: &Impact, a_audit: &Audit, b: &Impact, b_audit: &Audit) -> 
             i.method.clone(),
             i.rebound,
             i.measured.is_some(),
+            i.surface.clone(),
         )
     };
     let bands = |i: &Impact| {

@@ -28,6 +28,7 @@ mod runs;
 mod same;
 mod shot;
 mod standards;
+mod surface;
 mod sweeps;
 
 // the helpers every call uses, by the names the modules import them by

@@ -1,7 +1,8 @@
 //! `oblique`: one oblique impact with friction and spin (docs/oblique.md), as `bouncelab
 //! oblique --format json`: the same fields, by the same names.
 
-use crate::{error, frozen_array, history_samples, overridden_ball, overrides};
+use crate::surface::SurfaceUsed;
+use crate::{error, frozen_array, history_samples, overridden_ball, overrides, value_error};
 use bouncelab::api::ObliqueSpec;
 use bouncelab::oblique::ObliqueResponse;
 use bouncelab::{Ball, BallError};
@@ -51,6 +52,10 @@ pub(crate) struct ObliqueImpact {
     spin: Option<Py<PyArray1<f64>>>,
     /// `Ball::oblique_warnings`, as the JSON's `warnings`.
     warnings: Vec<String>,
+    /// c_t (kg/s) when the tangential spring had a dashpot (the JSON's key only then).
+    tangential_damping: Option<f64>,
+    /// The surface it ran on (the JSON's `surface`, docs/surfaces.md).
+    surface: SurfaceUsed,
 }
 
 /// The energy terms' keys, in the JSON's order.
@@ -68,7 +73,9 @@ const ENERGY_KEYS: [&str; 8] = [
 /// The energy terms (J; `residual` relative) under [`ENERGY_KEYS`], handed to Python as a new
 /// dict at each read: a dict kept in the result and handed out would let `o.energy[k] = …`
 /// change every later read (python/tests/test_frozen_results.py).
-struct EnergyTerms([f64; 8]);
+/// The second field: what the tangential dashpot took (J), a key only with a dashpot, before
+/// `residual` as in the JSON.
+struct EnergyTerms([f64; 8], Option<f64>);
 
 impl<'py> IntoPyObject<'py> for &EnergyTerms {
     type Target = PyDict;
@@ -78,6 +85,11 @@ impl<'py> IntoPyObject<'py> for &EnergyTerms {
     fn into_pyobject(self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
         let d = PyDict::new(py);
         for (k, v) in ENERGY_KEYS.iter().zip(self.0) {
+            if *k == "residual"
+                && let Some(c) = self.1
+            {
+                d.set_item("tangential_damping", c)?;
+            }
             d.set_item(k, v)?;
         }
         Ok(d)
@@ -179,20 +191,24 @@ fn build(
     ball: &Ball,
     spec: &ObliqueSpec,
     r: ObliqueResponse,
+    surface: SurfaceUsed,
 ) -> PyResult<ObliqueImpact> {
     let warnings = ball.oblique_warnings(&r);
     let header = ball.header();
     let e = &r.energy;
-    let energy = EnergyTerms([
-        e.translational_in,
-        e.rotational_in,
-        e.translational_out,
-        e.rotational_out,
-        e.normal_dissipation,
-        e.friction_dissipation,
-        e.tangential_spring,
-        e.residual,
-    ]);
+    let energy = EnergyTerms(
+        [
+            e.translational_in,
+            e.rotational_in,
+            e.translational_out,
+            e.rotational_out,
+            e.normal_dissipation,
+            e.friction_dissipation,
+            e.tangential_spring,
+            e.residual,
+        ],
+        e.tangential_damping,
+    );
     let (mut t, mut fn_, mut ft, mut vc, mut w) = (None, None, None, None, None);
     if let Some(h) = r.history {
         t = Some(frozen_array(py, h.t));
@@ -235,20 +251,24 @@ fn build(
         slip_velocity: vc,
         spin: w,
         warnings,
+        tangential_damping: surface.tangential_damping,
+        surface,
     })
 }
 
 /// One oblique impact of a preset, as `bouncelab oblique --preset NAME [--v0 V] --angle DEG
 /// [--spin W] --friction MU [--tangential-stiffness K_T] [--inertia-factor KAPPA] [--law L]
-/// [--history --samples N]`.
+/// [--history --samples N] [--surface NAME --surface-stiffness K_S … --tangential-damping C_T]`
+/// (`surface=`: a name or a dict of its numbers, python/src/surface.rs; `friction` the
+/// surface's when not given, required when it has none).
 #[pyfunction]
-#[pyo3(signature = (preset="superball", *, angle, friction, v0=None, spin=0.0, tangential_stiffness=None, inertia_factor=None, law=None, params=None, history=false, samples=None, mass=None, radius=None, k_p=None, damping=None, k_r=None, z_p=None))]
+#[pyo3(signature = (preset="superball", *, angle, friction=None, v0=None, spin=0.0, tangential_stiffness=None, inertia_factor=None, law=None, params=None, history=false, samples=None, mass=None, radius=None, k_p=None, damping=None, k_r=None, z_p=None, surface=None, tangential_damping=None))]
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn oblique(
     py: Python<'_>,
     preset: &str,
     angle: f64,
-    friction: f64,
+    friction: Option<f64>,
     v0: Option<f64>,
     spin: f64,
     tangential_stiffness: Option<f64>,
@@ -263,7 +283,30 @@ pub(crate) fn oblique(
     damping: Option<f64>,
     k_r: Option<f64>,
     z_p: Option<f64>,
+    surface: Option<&Bound<'_, PyAny>>,
+    tangential_damping: Option<f64>,
 ) -> PyResult<ObliqueImpact> {
+    let (surface, given) = crate::surface::resolve(surface)?;
+    // an argument over the dict's number is refused: one quantity given twice
+    let args = [friction, tangential_stiffness, tangential_damping];
+    let names = ["friction", "tangential_stiffness", "tangential_damping"];
+    let mut tangential = [None; 3];
+    for (i, (a, g)) in args.into_iter().zip(given).enumerate() {
+        if a.is_some() && g.is_some() {
+            return Err(value_error(format!(
+                "{} given twice: as an argument and in surface=",
+                names[i]
+            )));
+        }
+        tangential[i] = a.or(g);
+    }
+    let surface = surface.with_tangential(tangential);
+    let Some(friction) = surface.friction else {
+        return Err(value_error(format!(
+            "invalid friction: the surface {} gives no μ (docs/surfaces.md): give friction",
+            surface.name
+        )));
+    };
     // `run`'s rule: samples only with a history, and at least two of them (the library's
     // `oblique` reads 0 as "no history", which history=True, samples=0 must not ask for)
     let samples = history_samples(history, samples)?;
@@ -282,11 +325,12 @@ pub(crate) fn oblique(
         angle_deg: angle,
         spin,
         friction,
-        tangential_stiffness,
+        tangential_stiffness: surface.tangential_stiffness,
         inertia_factor,
     };
+    let n = if history { samples } else { 0 };
     let r = ball
-        .oblique(&spec, if history { samples } else { 0 })
+        .oblique_on(&spec, surface.tangential_damping, n, &surface.target())
         .map_err(error)?;
-    build(py, &ball, &spec, r)
+    build(py, &ball, &spec, r, surface)
 }

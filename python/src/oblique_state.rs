@@ -4,6 +4,7 @@
 use super::{ENERGY_KEYS, EnergyTerms, ObliqueImpact};
 use crate::frozen_array;
 use crate::same::Same;
+use crate::surface::SurfaceUsed;
 use numpy::{PyArray1, PyArrayMethods, PyReadonlyArray1};
 use pyo3::conversion::FromPyObjectOwned;
 use pyo3::exceptions::PyValueError;
@@ -31,8 +32,16 @@ fn history(o: &ObliqueImpact) -> [&Option<Py<PyArray1<f64>>>; 5] {
 
 pub(super) fn to_dict<'py>(o: &ObliqueImpact, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
     let d = PyDict::new(py);
+    // c_t, a key only with a dashpot, after K_t as in the JSON
     macro_rules! put {
-        ($($k:ident),*) => { $(d.set_item(stringify!($k), &o.$k)?;)* };
+        ($($k:ident),*) => { $(
+            d.set_item(stringify!($k), &o.$k)?;
+            if stringify!($k) == "tangential_stiffness"
+                && let Some(c) = o.tangential_damping
+            {
+                d.set_item("tangential_damping", c)?;
+            }
+        )* };
     }
     plain_fields!(put);
     d.set_item("energy", &o.energy)?;
@@ -42,6 +51,7 @@ pub(super) fn to_dict<'py>(o: &ObliqueImpact, py: Python<'py>) -> PyResult<Bound
         }
     }
     d.set_item("warnings", &o.warnings)?;
+    d.set_item("surface", o.surface.to_dict(py)?)?;
     Ok(d)
 }
 
@@ -72,13 +82,24 @@ pub(super) fn from_state(d: &Bound<'_, PyDict>) -> PyResult<ObliqueImpact> {
         ($($k:ident),*) => {
             ObliqueImpact {
                 $($k: get(d, stringify!($k))?,)*
-                energy: EnergyTerms(energy),
+                energy: EnergyTerms(energy, match e.get_item("tangential_damping")? {
+                    Some(c) => Some(c.extract()?),
+                    None => None,
+                }),
                 t: array("t")?,
                 normal_force: array("normal_force")?,
                 friction_force: array("friction_force")?,
                 slip_velocity: array("slip_velocity")?,
                 spin: array("spin")?,
                 warnings: get(d, "warnings")?,
+                tangential_damping: match d.get_item("tangential_damping")? {
+                    Some(c) => c.extract()?,
+                    None => None,
+                },
+                surface: match d.get_item("surface")? {
+                    Some(s) => SurfaceUsed::from_dict(&s)?,
+                    None => SurfaceUsed::rigid_plate(),
+                },
             }
         };
     }
@@ -90,7 +111,13 @@ pub(super) fn same(py: Python<'_>, a: &ObliqueImpact, b: &ObliqueImpact) -> PyRe
     macro_rules! all_same {
         ($($k:ident),*) => { true $(&& a.$k.same(&b.$k))* };
     }
-    if !(plain_fields!(all_same) && a.energy.0.same(&b.energy.0) && a.warnings == b.warnings) {
+    if !(plain_fields!(all_same)
+        && a.energy.0.same(&b.energy.0)
+        && a.energy.1.same(&b.energy.1)
+        && a.warnings == b.warnings
+        && a.tangential_damping.same(&b.tangential_damping)
+        && a.surface == b.surface)
+    {
         return Ok(false);
     }
     for (x, y) in history(a).into_iter().zip(history(b)) {

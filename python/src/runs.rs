@@ -1,7 +1,7 @@
 //! One impact: `run` (a preset), `run_normalized` and `run_params`, as `bouncelab run`; the
 //! answer an `Impact` (impact.rs, its run impact_run.rs).
 
-use crate::impact::{Impact, impact};
+use crate::impact::{Impact, impact, impact_on};
 use crate::{
     error, history_samples, law, overridden_ball, overrides, shared_preset_ball, value_error,
 };
@@ -12,9 +12,10 @@ use std::sync::Arc;
 
 /// One impact of a preset, as `bouncelab run --preset NAME [--law L] [--v0 V] [--lambda L]
 /// [--zeta Z] [--params SET] [--history --samples N] [--mass M] [--radius R] [--k-p K_P]
-/// [--damping C] [--k-r K_R] [--z-p Z_P]`.
+/// [--damping C] [--k-r K_R] [--z-p Z_P] [--surface NAME --surface-stiffness K_S …]`
+/// (`surface=`: a name or a dict of its numbers, python/src/surface.rs).
 #[pyfunction]
-#[pyo3(signature = (preset="superball", law=None, v0=None, lambda_=None, zeta=None, history=false, samples=None, params=None, *, mass=None, radius=None, k_p=None, damping=None, k_r=None, z_p=None))]
+#[pyo3(signature = (preset="superball", law=None, v0=None, lambda_=None, zeta=None, history=false, samples=None, params=None, *, mass=None, radius=None, k_p=None, damping=None, k_r=None, z_p=None, surface=None))]
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn run(
     py: Python<'_>,
@@ -32,7 +33,9 @@ pub(crate) fn run(
     damping: Option<f64>,
     k_r: Option<f64>,
     z_p: Option<f64>,
+    surface: Option<&Bound<'_, PyAny>>,
 ) -> PyResult<Py<Impact>> {
+    let (surface, _) = crate::surface::resolve(surface)?;
     let samples = history_samples(history, samples)?;
     let set = overrides(mass, radius, k_p, damping, k_r, z_p);
     // one parameter set twice is refused, as the command line refuses --k-r with --lambda
@@ -56,7 +59,7 @@ pub(crate) fn run(
         let moved = Arc::unwrap_or_clone(ball).with_lambda_zeta(lambda_, zeta);
         ball = Arc::new(moved.map_err(error)?);
     }
-    impact(py, ball, history, samples)
+    impact_on(py, ball, surface, history, samples)
 }
 
 /// One impact of the normalized ball (m = K_p = v0 = 1), as `bouncelab run --normalized`.

@@ -24,8 +24,8 @@ def binary():
 
 
 # The command line's JSON keys the package does not carry yet (issue 52: the `ball` object, the
-# withheld comparison, a preset's `calibration` record). The comparisons with the command line
-# leave them out; test_bouncelab.py's strict xfail fails the day the package carries them.
+# withheld comparison, a preset's `calibration` record). The comparisons with the command line leave them out;
+# test_bouncelab.py's strict xfail fails the day the package carries them.
 NOT_IN_PYTHON_YET = frozenset({"ball", "comparison_withheld", "calibration"})
 
 

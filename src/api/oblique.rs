@@ -4,6 +4,7 @@
 use super::{Ball, BallError};
 use crate::oblique::court::pace_category;
 use crate::oblique::{self, Oblique, ObliqueError, ObliqueResponse, mindlin_ratio};
+use crate::target::Target;
 use serde::Serialize;
 
 /// A solid ball's κ = I/(m R²), for a ball whose preset names none.
@@ -113,6 +114,18 @@ impl Ball {
         tangential_damping: Option<f64>,
         samples: usize,
     ) -> Result<ObliqueResponse, BallError> {
+        self.oblique_on(spec, tangential_damping, samples, &Target::wall())
+    }
+
+    /// [`Ball::oblique_damped`] on a surface that gives or moves, `surface` at rest
+    /// (docs/oblique.md §11; `Target::wall()`: the rigid plate, the very same answer).
+    pub fn oblique_on(
+        &self,
+        spec: &ObliqueSpec,
+        tangential_damping: Option<f64>,
+        samples: usize,
+        surface: &Target,
+    ) -> Result<ObliqueResponse, BallError> {
         if samples == 1 || samples > super::MAX_SAMPLES {
             return Err(BallError::Samples(samples));
         }
@@ -137,7 +150,14 @@ impl Ball {
                 reason: "must be positive".into(),
             });
         }
-        Ok(oblique::solve_law(&self.params, self.law, v, &o, samples)?)
+        Ok(oblique::solve_on(
+            &self.params,
+            self.law,
+            v,
+            &o,
+            surface,
+            samples,
+        )?)
     }
 
     /// The ITF Court Pace Rating of a surface of friction `friction` (ITF CS 01/02: 30 m/s at
@@ -166,6 +186,19 @@ impl Ball {
         inertia_factor: Option<f64>,
         tangential_damping: Option<f64>,
     ) -> Result<CourtPace, BallError> {
+        let tangential = (tangential_stiffness, inertia_factor, tangential_damping);
+        self.court_pace_on(friction, tangential, &Target::wall())
+    }
+
+    /// [`Ball::court_pace_damped`] on a court that gives or moves (docs/oblique.md §6, §11):
+    /// μ_app and e_y both from the test's bounce on it. `tangential` is (K_t, κ, c_t).
+    pub fn court_pace_on(
+        &self,
+        friction: f64,
+        tangential: (Option<f64>, Option<f64>, Option<f64>),
+        surface: &Target,
+    ) -> Result<CourtPace, BallError> {
+        let (tangential_stiffness, inertia_factor, tangential_damping) = tangential;
         let spec = ObliqueSpec {
             v: Some(30.0),
             angle_deg: 16.0,
@@ -174,7 +207,7 @@ impl Ball {
             tangential_stiffness,
             inertia_factor,
         };
-        let r = self.oblique_damped(&spec, tangential_damping, 0)?;
+        let r = self.oblique_on(&spec, tangential_damping, 0, surface)?;
         let cpr = 100.0 * (1.0 - r.apparent_friction) + 150.0 * (0.81 - r.cor_normal);
         let (category, category_name) = pace_category(cpr);
         Ok(CourtPace {

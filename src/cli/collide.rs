@@ -3,9 +3,11 @@
 
 use super::ball::{self, BallArgs};
 use super::output::{self, directed, human, table};
+use super::surface::{SurfaceArgs, SurfaceUsed};
 use crate::api::{Ball, CollisionReport};
 use crate::target::Target;
 use clap::{Args, ValueEnum};
+use serde::Serialize;
 use std::io::Write;
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -27,7 +29,7 @@ pub struct CollideArgs {
         value_name = "KG",
         value_parser = super::number::number,
         allow_hyphen_values = true,
-        required_unless_present = "target_preset",
+        required_unless_present_any = ["target_preset", "surface", "surface_mass"],
         conflicts_with = "target_preset"
     )]
     pub target_mass: Option<f64>,
@@ -38,23 +40,50 @@ pub struct CollideArgs {
     /// The target's speed toward the ball (m/s; negative: receding)
     #[arg(long, value_name = "V", default_value_t = 0.0, value_parser = super::number::number, allow_hyphen_values = true)]
     pub target_speed: f64,
-    /// The stiffness K_s of the target's surface (N/m) [default: rigid]
-    #[arg(long, value_name = "N/m", value_parser = super::number::number, allow_hyphen_values = true)]
+    /// The stiffness K_s of the target's surface (N/m) [default: the surface's, rigid]
+    #[arg(long, value_name = "N/m", value_parser = super::number::number, allow_hyphen_values = true, conflicts_with = "surface_stiffness")]
     pub target_stiffness: Option<f64>,
-    /// The damping c_s in parallel with K_s (kg/s) [default: 0]
-    #[arg(long, value_name = "kg/s", value_parser = super::number::number, allow_hyphen_values = true, requires = "target_stiffness")]
+    #[command(flatten)]
+    pub surface: SurfaceArgs,
+    /// The damping c_s in parallel with K_s (kg/s) [default: the surface's, 0]
+    #[arg(long, value_name = "kg/s", value_parser = super::number::number, allow_hyphen_values = true, requires = "target_stiffness", conflicts_with = "surface_damping")]
     pub target_damping: Option<f64>,
     /// Output format
     #[arg(long, value_enum, default_value = "text")]
     pub format: CollideFormat,
 }
 
+/// `collide --format json`: the answer and the surface the target had (docs/surfaces.md).
+#[derive(Serialize)]
+struct Report<'a> {
+    #[serde(flatten)]
+    report: &'a CollisionReport,
+    surface: SurfaceUsed,
+}
+
 pub fn run(a: &CollideArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     let ball = a.ball.resolve(a.v0)?;
-    let surface = (
-        a.target_stiffness.unwrap_or(f64::INFINITY),
-        a.target_damping.unwrap_or(0.0),
-    );
+    if a.target_preset.is_some()
+        && (a.surface.surface.is_some() || a.surface.surface_mass.is_some())
+    {
+        anyhow::bail!(
+            "--target-preset is the target: --surface and --surface-mass do not apply (give              --surface-stiffness, --surface-damping for its surface)"
+        );
+    }
+    let mut used = a.surface.resolve()?;
+    if let Some(m) = a.target_mass {
+        used.mass = m;
+        used.overrides.push("target_mass");
+    }
+    if let Some(k) = a.target_stiffness {
+        used.stiffness = k;
+        used.damping = a.target_damping.unwrap_or(0.0);
+        used.overrides.push("target_stiffness");
+        if a.target_damping.is_some() {
+            used.overrides.push("target_damping");
+        }
+    }
+    let surface = (used.stiffness, used.damping);
     let report = match &a.target_preset {
         Some(name) => {
             let entry = ball::select(Some(name), a.ball.choice.config.as_deref())?;
@@ -62,15 +91,26 @@ pub fn run(a: &CollideArgs, out: &mut dyn Write) -> anyhow::Result<()> {
             ball.collide_ball(&other, a.target_speed, surface)?
         }
         None => ball.collide(&Target {
-            mass: a.target_mass.unwrap_or(f64::NAN),
+            mass: used.mass,
             speed: a.target_speed,
             stiffness: surface.0,
             damping: surface.1,
         })?,
     };
     match a.format {
-        CollideFormat::Json => output::json(out, &report)?,
-        CollideFormat::Text => text(out, &ball, &report, a.target_preset.as_deref())?,
+        CollideFormat::Json => output::json(
+            out,
+            &Report {
+                report: &report,
+                surface: used,
+            },
+        )?,
+        CollideFormat::Text => {
+            text(out, &ball, &report, a.target_preset.as_deref())?;
+            if a.surface.surface.is_some() {
+                writeln!(out, "  {}", used.label())?;
+            }
+        }
     }
     Ok(())
 }

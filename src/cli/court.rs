@@ -4,7 +4,8 @@
 use super::ball::BallArgs;
 use super::oblique::TangentialArgs;
 use super::output::{self, given, human, table};
-use crate::api::{BallHeader, CourtPace};
+use super::surface::{SurfaceArgs, SurfaceUsed};
+use crate::api::{BallHeader, CourtCalibration, CourtPace};
 use clap::{Args, ValueEnum};
 use serde::Serialize;
 use std::io::Write;
@@ -19,11 +20,23 @@ pub enum CourtFormat {
 pub struct CourtArgs {
     #[command(flatten)]
     pub ball: BallArgs,
-    /// The surface's Coulomb friction coefficient μ ≥ 0
+    /// The surface's Coulomb friction coefficient μ ≥ 0 [default: the surface's; required
+    /// when it has none]
     #[arg(long, value_name = "MU", value_parser = super::number::number, allow_hyphen_values = true)]
-    pub friction: f64,
+    pub friction: Option<f64>,
     #[command(flatten)]
     pub tangential: TangentialArgs,
+    #[command(flatten)]
+    pub surface: SurfaceArgs,
+    /// Calibrate the court to this measured vertical COR e at the ITF test: c_s solved, K_s
+    /// held (--surface-stiffness, else the ball's K_p: an assumption); with --friction, the
+    /// measured (μ, e) pair
+    #[arg(long, value_name = "E", value_parser = super::number::number, allow_hyphen_values = true, conflicts_with = "surface_damping")]
+    pub surface_cor: Option<f64>,
+    /// Calibrate the court to measured ITF test bounces (CSV: v_in, angle_in, v_out,
+    /// angle_out in m/s and degrees): their mean μ_app and e, as --friction and --surface-cor
+    #[arg(long, value_name = "FILE", conflicts_with_all = ["surface_cor", "friction", "surface_damping"])]
+    pub fit: Option<std::path::PathBuf>,
     /// Output format
     #[arg(long, value_enum, default_value = "text")]
     pub format: CourtFormat,
@@ -40,57 +53,171 @@ struct Report<'a> {
     tangential_damping: Option<f64>,
     #[serde(flatten)]
     pace: &'a CourtPace,
+    /// The court it ran on (docs/surfaces.md).
+    surface: &'a SurfaceUsed,
+    /// The calibration to a measured e, when asked (`--surface-cor`, `--fit`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    calibration: Option<&'a CourtCalibration>,
+    /// The measured bounces' numbers, with `--fit`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    measured: Option<&'a Measured>,
+    /// What μ_app and e were computed on.
+    computed_on: String,
+}
+
+/// `court --fit FILE`: the measured bounces' means and the ITF's rating of them.
+#[derive(Serialize)]
+struct Measured {
+    file: String,
+    bounces: usize,
+    /// Mean μ_app of the bounces.
+    apparent_friction: f64,
+    /// Mean e of the bounces.
+    cor_normal: f64,
+    /// CPR = 100(1 − μ_app) + 150(0.81 − e) of those means.
+    cpr: f64,
+}
+
+/// The measured means of `--fit FILE`.
+fn measured(path: &std::path::Path) -> anyhow::Result<Measured> {
+    let rows = super::measured_file::court(path)?;
+    let n = rows.len() as f64;
+    let (mu, e) = rows.iter().fold((0.0, 0.0), |(m, e), r| {
+        let (mi, ei) = r.friction_and_cor();
+        (m + mi / n, e + ei / n)
+    });
+    Ok(Measured {
+        file: super::measured_file::label(path),
+        bounces: rows.len(),
+        apparent_friction: mu,
+        cor_normal: e,
+        cpr: 100.0 * (1.0 - mu) + 150.0 * (0.81 - e),
+    })
 }
 
 pub fn run(a: &CourtArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     super::ball::check_overrides(&a.ball.set, None, None)?;
     let ball = a.ball.resolve(None)?;
-    let pace = ball.court_pace_damped(
-        a.friction,
-        a.tangential.tangential_stiffness,
+    let measured = a.fit.as_deref().map(measured).transpose()?;
+    let friction = measured
+        .as_ref()
+        .map(|m| m.apparent_friction)
+        .or(a.friction);
+    let (mut surface, friction) = super::oblique::surface_of(&a.surface, friction, &a.tangential)?;
+    let target_cor = measured.as_ref().map(|m| m.cor_normal).or(a.surface_cor);
+    let calibration = match target_cor {
+        Some(e) => {
+            let c = ball.calibrate_court(e, a.surface.surface_stiffness, surface.mass)?;
+            (surface.stiffness, surface.damping) = (c.stiffness, c.damping);
+            surface.overrides.retain(|o| *o != "stiffness");
+            surface.overrides.push("calibrated");
+            Some(c)
+        }
+        None => None,
+    };
+    let computed_on = format!(
+        "the model's bounce of {} at 30 m/s and 16° without spin on {}",
+        ball.label(),
+        surface.label()
+    );
+    let tangential = (
+        surface.tangential_stiffness,
         a.tangential.inertia_factor,
-        a.tangential.tangential_damping,
-    )?;
+        surface.tangential_damping,
+    );
+    let pace = ball.court_pace_on(friction, tangential, &surface.target())?;
     match a.format {
         CourtFormat::Json => output::json(
             out,
             &Report {
                 ball: ball.header(),
                 standard: "itf-court-pace",
-                friction: a.friction,
-                tangential_damping: a.tangential.tangential_damping,
+                friction,
+                tangential_damping: surface.tangential_damping,
                 pace: &pace,
+                surface: &surface,
+                calibration: calibration.as_ref(),
+                measured: measured.as_ref(),
+                computed_on,
             },
         )?,
-        CourtFormat::Text => {
-            writeln!(
-                out,
-                "{}: ITF court pace (CS 01/02: 30 m/s at 16°, no spin), μ = {}",
-                ball.label(),
-                given(a.friction, 6)
-            )?;
-            let row = |k: &str, v: String| vec![k.to_string(), v];
-            let rows = vec![
-                row("court pace rating", human(pace.cpr, 4)),
-                row(
-                    "category",
-                    format!("{} ({})", pace.category, pace.category_name),
-                ),
-                row("apparent friction", human(pace.apparent_friction, 5)),
-                row("normal COR e_y", human(pace.cor_normal, 5)),
-                row("outgoing speed (m/s)", human(pace.v_out, 5)),
-                row("outgoing angle (°)", human(pace.angle_out_deg, 5)),
-                row("outgoing spin (rad/s)", human(pace.spin_out, 5)),
-            ];
-            table(out, "", &rows)?;
-            writeln!(out)?;
-            writeln!(
-                out,
-                "CPR = 100(1 − μ_app) + 150(0.81 − e_y); categories 1 slow ≤ 29, 2 medium-slow \
-                 30–34, 3 medium 35–39, 4 medium-fast 40–44, 5 fast ≥ 45"
-            )?;
-            output::warning_lines(out, &pace.warnings)?;
-        }
+        CourtFormat::Text => text(
+            out,
+            &ball,
+            &pace,
+            (friction, &surface),
+            &report_of(&measured, &calibration),
+        )?,
     }
     Ok(())
+}
+
+/// What `court --fit` and `--surface-cor` add to the text: the measured and the calibration.
+fn report_of<'a>(
+    m: &'a Option<Measured>,
+    c: &'a Option<CourtCalibration>,
+) -> (Option<&'a Measured>, Option<&'a CourtCalibration>) {
+    (m.as_ref(), c.as_ref())
+}
+
+/// `court`'s text: the header and the surface, the rating's table, the formula, the measured
+/// bounces and the calibration, the warnings.
+fn text(
+    out: &mut dyn Write,
+    ball: &crate::api::Ball,
+    pace: &CourtPace,
+    (friction, surface): (f64, &SurfaceUsed),
+    (measured, calibration): &(Option<&Measured>, Option<&CourtCalibration>),
+) -> std::io::Result<()> {
+    writeln!(
+        out,
+        "{}: ITF court pace (CS 01/02: 30 m/s at 16°, no spin), μ = {}",
+        ball.label(),
+        given(friction, 6)
+    )?;
+    writeln!(out, "{}", surface.label())?;
+    let row = |k: &str, v: String| vec![k.to_string(), v];
+    let rows = vec![
+        row("court pace rating", human(pace.cpr, 4)),
+        row(
+            "category",
+            format!("{} ({})", pace.category, pace.category_name),
+        ),
+        row("apparent friction", human(pace.apparent_friction, 5)),
+        row("normal COR e_y", human(pace.cor_normal, 5)),
+        row("outgoing speed (m/s)", human(pace.v_out, 5)),
+        row("outgoing angle (°)", human(pace.angle_out_deg, 5)),
+        row("outgoing spin (rad/s)", human(pace.spin_out, 5)),
+    ];
+    table(out, "", &rows)?;
+    writeln!(out)?;
+    writeln!(
+        out,
+        "CPR = 100(1 − μ_app) + 150(0.81 − e_y); categories 1 slow ≤ 29, 2 medium-slow \
+         30–34, 3 medium 35–39, 4 medium-fast 40–44, 5 fast ≥ 45"
+    )?;
+    if let Some(m) = &measured {
+        writeln!(
+            out,
+            "measured ({}, {} bounces): μ_app {}, e {}, CPR {}",
+            m.file,
+            m.bounces,
+            human(m.apparent_friction, 5),
+            human(m.cor_normal, 5),
+            human(m.cpr, 4)
+        )?;
+    }
+    if let Some(c) = &calibration {
+        writeln!(
+            out,
+            "calibrated to e = {}: K_s {} N/m, c_s {} kg/s (e reachable {}–{}); {}",
+            given(c.surface_cor, 6),
+            human(c.stiffness, 5),
+            human(c.damping, 6),
+            human(c.reachable[0], 4),
+            human(c.reachable[1], 4),
+            c.assumption
+        )?;
+    }
+    output::warning_lines(out, &pace.warnings)
 }

@@ -69,6 +69,8 @@ pub struct DropArgs {
     /// Output format (csv: the trajectory t, height, velocity)
     #[arg(long, value_enum, default_value = "text")]
     pub format: DropFormat,
+    #[command(flatten)]
+    pub surface: super::surface::SurfaceArgs,
 }
 
 /// A drop error for the user: bad conditions are bad input (exit 2); an impact without an
@@ -109,13 +111,18 @@ pub fn run(a: &DropArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     // the drop and its intervals' drops watched: a bar on a terminal, Ctrl-C or SIGTERM ends
     // the command with exit 130 before anything is printed (cli_progress_pty.rs)
     let watch = super::budget::Watcher::new("bounces");
-    let run = crate::drop::drop_watched(&dball, &setup, &watch)
+    let surface = a.surface.resolve()?;
+    let run = crate::drop::drop_on_watched(&dball, &setup, &surface.target(), &watch)
         .map_err(drop_error)?
         .ok_or(super::budget::Interrupted)?;
-    let bands = bounce_intervals(&b, &setup, &watch)?;
+    // the intervals are the fitted parameters' on the rigid plate: none on another surface
+    let bands = match surface.is_rigid() {
+        true => bounce_intervals(&b, &setup, &watch)?,
+        false => Vec::new(),
+    };
     drop(watch);
     let verdict = standard
-        .map(|s| s.judge(&dball, air))
+        .map(|s| s.judge_on(&dball, air, &surface.target()))
         .transpose()
         .map_err(drop_error)?;
     let mut warnings = b.drop_warnings(&run)?;
@@ -133,6 +140,7 @@ pub fn run(a: &DropArgs, out: &mut dyn Write) -> anyhow::Result<()> {
             let mut r = report(&run, &bands, verdict.as_ref(), judged_at);
             r.warnings = warnings;
             r.ball = Some(b.record_json());
+            r.surface = Some(surface);
             output::json(out, &r)?
         }
         DropFormat::Csv => {
@@ -140,10 +148,13 @@ pub fn run(a: &DropArgs, out: &mut dyn Write) -> anyhow::Result<()> {
             output::warnings_to_stderr(&warnings);
         }
         DropFormat::Text => {
-            let label = match b.overrides_line() {
+            let mut label = match b.overrides_line() {
                 Some(line) => format!("{}\n{line}", b.label()),
                 None => b.label(),
             };
+            if !surface.is_rigid() || a.surface.surface.is_some() {
+                label = format!("{label}\n{}", surface.label());
+            }
             text(out, &label, &run, standard.zip(verdict), radius)?;
             output::warning_lines(out, &warnings)?;
             if let (Some(i), Some(first), Some(fit)) = (bands.first(), run.bounces.first(), &b.fit)
@@ -244,6 +255,8 @@ struct Report<'a> {
     warnings: Vec<String>,
     /// The ball dropped (docs/cli.md, "The ball object").
     ball: Option<crate::api::BallRecord>,
+    /// The surface it bounced on (docs/surfaces.md).
+    surface: Option<super::surface::SurfaceUsed>,
 }
 
 fn report<'a>(
@@ -276,6 +289,7 @@ fn report<'a>(
         }),
         warnings: Vec::new(),
         ball: None,
+        surface: None,
     }
 }
 

@@ -34,6 +34,7 @@ pub mod run;
 mod run_text;
 pub mod shot;
 pub mod standards;
+pub mod surface;
 pub mod sweep;
 
 use clap::{Parser, Subcommand};
@@ -94,6 +95,8 @@ pub enum Command {
     Drop(drop::DropArgs),
     /// List the ball standards (drop and COR tests) and their windows
     Standards(standards::StandardsArgs),
+    /// List the embedded and user surfaces: their give, friction and sources
+    Surfaces(surface::SurfacesArgs),
     /// The field's contact models (Kelvin–Voigt, Tsuji, Hunt–Crossley) calibrated to a COR,
     /// beside this model; --export writes them for LAMMPS, LIGGGHTS, Chrono, YADE or MuJoCo
     #[command(allow_negative_numbers = true)]
@@ -270,6 +273,12 @@ fn dispatch(cli: Cli, out: &mut dyn Write) -> anyhow::Result<()> {
                 anyhow::bail!("standards lists the standards: --preset and --config do not apply");
             }
             standards::run(&a, out)
+        }
+        Command::Surfaces(a) => {
+            if top.is_given() {
+                anyhow::bail!("surfaces lists the surfaces: --preset and --config do not apply");
+            }
+            surface::list(&a, out)
         }
     }
 }

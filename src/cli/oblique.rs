@@ -3,6 +3,7 @@
 
 use super::ball::BallArgs;
 use super::output::{self, csv_row, given, human, num, opt_num, table};
+use super::surface::{SurfaceArgs, SurfaceUsed};
 use crate::api::{BallHeader, ObliqueSpec};
 use crate::oblique::ObliqueResponse;
 use clap::{Args, ValueEnum};
@@ -47,11 +48,13 @@ pub struct ObliqueArgs {
     /// Incoming spin ω, rad/s (> 0 topspin for a ball moving in +x)
     #[arg(long, value_name = "RAD_PER_S", default_value_t = 0.0, value_parser = super::number::number, allow_hyphen_values = true)]
     pub spin: f64,
-    /// Coulomb friction coefficient μ ≥ 0
+    /// Coulomb friction coefficient μ ≥ 0 [default: the surface's; required when it has none]
     #[arg(long, value_name = "MU", value_parser = super::number::number, allow_hyphen_values = true)]
-    pub friction: f64,
+    pub friction: Option<f64>,
     #[command(flatten)]
     pub tangential: TangentialArgs,
+    #[command(flatten)]
+    pub surface: SurfaceArgs,
     /// Output format
     #[arg(long, value_enum, default_value = "text")]
     pub format: ObliqueFormat,
@@ -82,17 +85,41 @@ struct Report<'a> {
     /// The ball it ran (docs/cli.md, "The ball object").
     #[serde(rename = "ball")]
     record: crate::api::BallRecord,
+    /// The surface it ran on (docs/surfaces.md).
+    surface: SurfaceUsed,
+}
+
+/// The surface of `oblique` and `court`: `--surface*` with the tangential flags over the
+/// surface's own; μ must come from one of them.
+pub fn surface_of(
+    surface: &SurfaceArgs,
+    friction: Option<f64>,
+    tangential: &TangentialArgs,
+) -> anyhow::Result<(SurfaceUsed, f64)> {
+    let used = surface.resolve()?.with_tangential(
+        friction,
+        tangential.tangential_stiffness,
+        tangential.tangential_damping,
+    );
+    let Some(mu) = used.friction else {
+        anyhow::bail!(
+            "invalid friction: the surface {} gives no μ (docs/surfaces.md): give --friction",
+            used.name
+        );
+    };
+    Ok((used, mu))
 }
 
 pub fn run(a: &ObliqueArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     super::ball::check_overrides(&a.ball.set, None, None)?;
     let ball = a.ball.resolve(a.v0)?;
+    let (surface, friction) = surface_of(&a.surface, a.friction, &a.tangential)?;
     let spec = ObliqueSpec {
         v: a.v0,
         angle_deg: a.angle,
         spin: a.spin,
-        friction: a.friction,
-        tangential_stiffness: a.tangential.tangential_stiffness,
+        friction,
+        tangential_stiffness: surface.tangential_stiffness,
         inertia_factor: a.tangential.inertia_factor,
     };
     // the library reads 0 samples as "no history"; `--history` asks for one, so 0 is refused
@@ -100,10 +127,10 @@ pub fn run(a: &ObliqueArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     if a.history && a.samples == 0 {
         return Err(crate::api::BallError::Samples(0).into());
     }
-    let damping = a.tangential.tangential_damping;
-    let r = ball.oblique_damped(&spec, damping, if a.history { a.samples } else { 0 })?;
-    let k_t = a
-        .tangential
+    let damping = surface.tangential_damping;
+    let samples = if a.history { a.samples } else { 0 };
+    let r = ball.oblique_on(&spec, damping, samples, &surface.target())?;
+    let k_t = surface
         .tangential_stiffness
         .or(ball.tangential_stiffness())
         .unwrap_or(f64::NAN);
@@ -117,7 +144,7 @@ pub fn run(a: &ObliqueArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         ObliqueFormat::Json => {
             let report = Report {
                 ball: ball.header(),
-                friction: a.friction,
+                friction,
                 tangential_stiffness: k_t,
                 tangential_damping: damping,
                 inertia_factor: kappa,
@@ -125,6 +152,7 @@ pub fn run(a: &ObliqueArgs, out: &mut dyn Write) -> anyhow::Result<()> {
                 answer: &r,
                 warnings,
                 record: ball.record_json(),
+                surface,
             };
             output::json(out, &report)?
         }
@@ -145,11 +173,12 @@ pub fn run(a: &ObliqueArgs, out: &mut dyn Write) -> anyhow::Result<()> {
                 out,
                 "{}{law}: μ = {}, K_t = {} N/m{dashpot}, κ = {}, R = {} mm",
                 ball.label(),
-                given(a.friction, 6),
+                given(friction, 6),
                 human(k_t, 4),
                 given(kappa, 4),
                 given(radius * 1e3, 4)
             )?;
+            writeln!(out, "{}", surface.label())?;
             text(out, &r)?;
             output::warning_lines(out, &warnings)?
         }

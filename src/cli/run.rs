@@ -2,10 +2,12 @@
 
 use super::ball::{self, BallArgs};
 use super::output::{self, csv_row, num, opt_num};
+use super::surface::{SurfaceArgs, SurfaceUsed};
 use crate::api::{Ball, ImpactReport};
 use crate::model::contact::ContactLaw;
 use crate::solver::{EnergyBudget, ImpactResponse};
 use clap::{Args, ValueEnum};
+use serde::Serialize;
 use std::io::Write;
 
 /// History samples by default (at most [`crate::api::MAX_SAMPLES`]).
@@ -52,6 +54,16 @@ pub struct RunArgs {
     /// Number of history samples
     #[arg(long, value_name = "N", default_value_t = SAMPLES, requires = "history", allow_hyphen_values = true)]
     pub samples: usize,
+    #[command(flatten)]
+    pub surface: SurfaceArgs,
+}
+
+/// `run --format json`: the impact and the surface it ran on (docs/surfaces.md).
+#[derive(Serialize)]
+struct Report<'a> {
+    #[serde(flatten)]
+    report: ImpactReport<'a>,
+    surface: &'a SurfaceUsed,
 }
 
 pub fn run(args: &RunArgs, out: &mut dyn Write) -> anyhow::Result<()> {
@@ -75,11 +87,26 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         ball::set_lambda_zeta(&mut b, args.lambda, args.zeta)?;
         b
     };
+    let surface = args.surface.resolve()?;
     // the library checks the number of samples (2 … MAX_SAMPLES)
-    let r = if args.history {
-        ball.impact_history(args.samples)?
-    } else {
-        ball.impact()?
+    let samples = if args.history { args.samples } else { 0 };
+    if args.history && samples == 0 {
+        return Err(crate::api::BallError::Samples(0).into());
+    }
+    let r = ball.impact_on(&surface.target(), samples)?;
+    // the preset's measurement is the rigid plate's: not this impact's on a surface that gives
+    let elsewhere = (!surface.is_rigid() && ball.measured.is_some()).then(|| {
+        format!(
+            "the measurement is on the rigid plate, this impact on surface {}",
+            surface.name
+        )
+    });
+    let ball = match &elsewhere {
+        Some(_) => Ball {
+            measured: None,
+            ..ball
+        },
+        None => ball,
     };
     // a fitted preset's 95 % intervals (docs/fitting.md), when no override moved the fit
     let intervals = ball.intervals().transpose()?;
@@ -87,7 +114,11 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         RunFormat::Json => {
             let mut report = ImpactReport::new(&ball, &r, args.history);
             report.intervals = intervals;
-            output::json(out, &report)?
+            if elsewhere.is_some() {
+                report.comparison_withheld = elsewhere;
+            }
+            let surface = &surface;
+            output::json(out, &Report { report, surface })?
         }
         RunFormat::Csv if args.history => {
             history_csv(out, &r)?;
@@ -95,7 +126,13 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         }
         RunFormat::Csv => summary_csv(out, &ball, &r)?,
         RunFormat::Text => {
-            super::run_text::write(out, &ball, &r, intervals.as_ref(), args.history)?
+            super::run_text::write(out, &ball, &r, intervals.as_ref(), args.history)?;
+            if !surface.is_rigid() || args.surface.surface.is_some() {
+                writeln!(out, "{}", surface.label())?;
+            }
+            if let Some(why) = &elsewhere {
+                writeln!(out, "  (measured values not compared: {why})")?;
+            }
         }
     }
     Ok(())

@@ -24,6 +24,7 @@ pub use trajectory::Sample;
 use crate::model::contact::ContactLaw;
 use crate::model::params::ImpactParams;
 use crate::solver::{SolveError, SolveOptions, simulate};
+use crate::target::Target;
 use crate::text::number;
 use serde::Serialize;
 use std::fmt;
@@ -217,6 +218,36 @@ pub fn impact(ball: &DropBall, v: f64) -> Result<crate::ImpactResponse, SolveErr
     simulate(&params, ball.law, &SolveOptions::default())
 }
 
+/// What a drop reads off one impact.
+struct Hit {
+    cor: f64,
+    rebound: bool,
+    contact_time: f64,
+    max_force: f64,
+}
+
+/// One impact of `ball` at `v` on `surface` (at rest): on the rigid plate [`impact`]'s, else
+/// the ball against the surface (docs/targets.md), its COR the ball's rebound over its arrival
+/// (the apparent COR; a surface that moves off with the ball leaves none: no rebound).
+fn hit(ball: &DropBall, v: f64, surface: &Target) -> Result<Hit, SolveError> {
+    if surface.is_rigid() && surface.mass == f64::INFINITY && surface.speed == 0.0 {
+        let r = impact(ball, v)?;
+        return Ok(Hit {
+            cor: r.cor,
+            rebound: r.rebound,
+            contact_time: r.contact_time.unwrap_or(r.duration),
+            max_force: r.max_force,
+        });
+    }
+    let c = crate::target::collide(&ball.params, ball.law, surface, v, None)?;
+    Ok(Hit {
+        cor: c.apparent_cor.max(0.0),
+        rebound: c.rebound && c.apparent_cor > 0.0,
+        contact_time: c.contact_time.unwrap_or(f64::NAN),
+        max_force: c.max_force,
+    })
+}
+
 /// Release `ball` from `setup.height` and follow its bounces (module docs for what is
 /// assumed). Ends after `setup.bounces` bounces, after a rebound below `setup.min_rebound`,
 /// or when the ball stays on the plate: never more than [`MAX_BOUNCES`] impacts.
@@ -232,6 +263,17 @@ pub fn drop_watched(
     setup: &DropSetup,
     watch: &dyn crate::analysis::work::Watch,
 ) -> Result<Option<DropRun>, DropError> {
+    drop_on_watched(ball, setup, &Target::wall(), watch)
+}
+
+/// [`drop_watched`] onto `surface` (at rest; `Target::wall()`: the rigid plate, the same
+/// answer to the last bit): each bounce is the ball against it (docs/surfaces.md).
+pub fn drop_on_watched(
+    ball: &DropBall,
+    setup: &DropSetup,
+    surface: &Target,
+    watch: &dyn crate::analysis::work::Watch,
+) -> Result<Option<DropRun>, DropError> {
     setup.validate()?;
     check_range("radius", ball.radius, false, 1e3)?;
     ball.params.validate().map_err(SolveError::from)?;
@@ -245,8 +287,8 @@ pub fn drop_watched(
         }
         let v_in = flight.fall_speed(h);
         t += flight.fall_time(h);
-        let r = impact(ball, v_in)?;
-        let contact_time = r.contact_time.unwrap_or(r.duration);
+        let r = hit(ball, v_in, surface)?;
+        let contact_time = r.contact_time;
         let v_out = r.cor * v_in;
         let rebound_height = if r.rebound {
             flight.rise_height(v_out)

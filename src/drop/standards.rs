@@ -7,7 +7,7 @@
 //! (FIBA drops from 1.80 m to the bottom and reads the rebound at the top); the verdict
 //! converts explicitly: the model's heights are of the bottom of the ball.
 
-use super::{Air, DropBall, DropError, DropSetup, drop, impact};
+use super::{Air, DropBall, DropError, DropSetup, impact};
 use serde::Serialize;
 
 /// The point of the ball a height is measured to.
@@ -290,6 +290,17 @@ impl Standard {
     /// Run this standard's test on `ball` in `air` (`None`: vacuum; a COR test reads the speeds
     /// at the wall, so air plays no part) and judge it.
     pub fn judge(&self, ball: &DropBall, air: Option<Air>) -> Result<Verdict, DropError> {
+        self.judge_on(ball, air, &crate::target::Target::wall())
+    }
+
+    /// [`Standard::judge`] with the test run on `surface` (at rest) instead of the rigid plate
+    /// the standard names (docs/surfaces.md): what the ball would do on that floor.
+    pub fn judge_on(
+        &self,
+        ball: &DropBall,
+        air: Option<Air>,
+        surface: &crate::target::Target,
+    ) -> Result<Verdict, DropError> {
         let measured = match self.test {
             Test::Drop { rebound_ref, .. } => {
                 let height = self.release_height(ball.radius).unwrap_or(f64::NAN);
@@ -298,10 +309,19 @@ impl Standard {
                     air,
                     ..DropSetup::new(height)
                 };
-                let run = drop(ball, &setup)?;
+                let watch = crate::analysis::work::Unwatched;
+                let run = super::drop_on_watched(ball, &setup, surface, &watch)?
+                    .expect("an unwatched drop is never stopped");
                 run.bounces[0].rebound_height + rebound_ref.offset(ball.radius)
             }
-            Test::Cor { speed } => impact(ball, speed)?.cor,
+            Test::Cor { speed } if surface == &crate::target::Target::wall() => {
+                impact(ball, speed)?.cor
+            }
+            Test::Cor { speed } => {
+                crate::target::collide(&ball.params, ball.law, surface, speed, None)
+                    .map_err(super::DropError::Solve)?
+                    .apparent_cor
+            }
         };
         Ok(self.judge_value(measured))
     }

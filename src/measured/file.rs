@@ -84,6 +84,11 @@ pub fn oblique(path: &Path) -> anyhow::Result<Vec<measured::ObliqueRow>> {
     measured::parse_oblique(&read_text(path)?).map_err(|e| at(path, e))
 }
 
+/// The ITF court test bounces in `path` (docs/oblique.md §6).
+pub fn court(path: &Path) -> anyhow::Result<Vec<measured::CourtRow>> {
+    measured::parse_court(&read_text(path)?).map_err(|e| at(path, e))
+}
+
 /// The pressure readings in `path` (docs/model.md §10.3).
 pub fn pressure(path: &Path) -> anyhow::Result<Vec<measured::PressureRow>> {
     measured::parse_pressure(&read_text(path)?).map_err(|e| at(path, e))

@@ -3,6 +3,7 @@
 //! limit, UTF-8) is `file`'s (with the `tui` feature). Every error carries
 //! the 1-based line and column it is about.
 
+mod court;
 mod drop;
 mod oblique;
 // reading a data file from disk: anyhow, which the `tui` and `cli` features bring
@@ -14,6 +15,7 @@ mod rows;
 mod table;
 mod trace;
 
+pub use court::{CourtRow, parse_court};
 pub use drop::{Air, DropTest, Flight, G, cor_per_rebound_height, drop_to_cor, drops_to_points};
 pub use oblique::{ObliqueRow, parse_oblique};
 pub use pressure::{PressureRow, parse_pressure};

@@ -21,9 +21,13 @@ mod motion;
 mod normal;
 pub mod reference;
 mod response;
+mod surface;
+mod tabulated;
 mod tangential;
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod tests_surface;
 
 use crate::model::contact::ContactLaw;
 use crate::model::params::ImpactParams;
@@ -35,6 +39,7 @@ pub use input::{Oblique, ObliqueError, ObliqueInvalid, mindlin_ratio};
 pub use motion::{Local, NormalMotion};
 pub use normal::NormalAt;
 pub use response::{ObliqueEnergy, ObliqueHistory, ObliqueResponse};
+pub use surface::{normal_response, solve_on};
 pub use tangential::{Mode, Phase};
 
 /// Most phases (stick or slip) one impact may switch through before it is called unresolved.

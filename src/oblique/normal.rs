@@ -50,30 +50,7 @@ impl NormalAt {
         angle_deg: f64,
         opts: &SolveOptions,
     ) -> Result<NormalAt, ObliqueError> {
-        if !(angle_deg > 0.0 && angle_deg <= 90.0) {
-            return Err(super::invalid(
-                "angle",
-                angle_deg,
-                "must lie in (0, 90] degrees",
-            ));
-        }
-        let theta = angle_deg.to_radians();
-        // at 90° the normal impact is the very one `run` solves: v_y = v, not v sin(π/2)
-        let (vy, vx) = if angle_deg == 90.0 {
-            (v, 0.0)
-        } else {
-            (v * theta.sin(), v * theta.cos())
-        };
-        // a normal speed below the meaningful range is the angle's doing when v is in it:
-        // `--angle 1e-15` said "invalid v0: 1.2e-16" (issue 54 item 9; tests/field_names.rs)
-        use crate::model::params::MEANINGFUL_MIN;
-        if vy < MEANINGFUL_MIN && v >= MEANINGFUL_MIN && v.is_finite() {
-            return Err(super::invalid(
-                "angle",
-                angle_deg,
-                "the normal speed v sin θ falls below 1e-15 m/s: give a larger angle",
-            ));
-        }
+        let (vx, vy) = arrival(v, angle_deg)?;
         let params = ImpactParams { v0: vy, ..*params };
         // The linear law's normal motion in closed form where it answers (`closed`: a fifth of
         // the exact solver's instructions), else the solver's flow; at 90° always the solver's,
@@ -172,11 +149,41 @@ impl NormalAt {
     }
 }
 
+/// The arrival's components (v_x, v_y) at speed `v` and `angle_deg` (0 < θ ≤ 90), or the
+/// angle's refusal.
+pub(super) fn arrival(v: f64, angle_deg: f64) -> Result<(f64, f64), ObliqueError> {
+    if !(angle_deg > 0.0 && angle_deg <= 90.0) {
+        return Err(super::invalid(
+            "angle",
+            angle_deg,
+            "must lie in (0, 90] degrees",
+        ));
+    }
+    let theta = angle_deg.to_radians();
+    // at 90° the normal impact is the very one `run` solves: v_y = v, not v sin(π/2)
+    let (vy, vx) = if angle_deg == 90.0 {
+        (v, 0.0)
+    } else {
+        (v * theta.sin(), v * theta.cos())
+    };
+    // a normal speed below the meaningful range is the angle's doing when v is in it:
+    // `--angle 1e-15` said "invalid v0: 1.2e-16" (issue 54 item 9; tests/field_names.rs)
+    use crate::model::params::MEANINGFUL_MIN;
+    if vy < MEANINGFUL_MIN && v >= MEANINGFUL_MIN && v.is_finite() {
+        return Err(super::invalid(
+            "angle",
+            angle_deg,
+            "the normal speed v sin θ falls below 1e-15 m/s: give a larger angle",
+        ));
+    }
+    Ok((vx, vy))
+}
+
 /// The refusal of a tangential motion whose search grid would pass [`MAX_GRID`] points: the
 /// grid steps a fifth of the sticking oscillation's radian, ω̃_t = √(K_t/K_p·(1 + 1/κ)), so a
 /// tiny κ or a huge K_t once asked 10⁸ points (3 GB) or more (tests/oblique_bounded.rs). The
 /// field named is the factor that drives ω̃_t most: 1/κ or K_t/K_p.
-fn bounded(s: &Scaled, oblique: &Oblique, tf: f64) -> Result<(), ObliqueError> {
+pub(super) fn bounded(s: &Scaled, oblique: &Oblique, tf: f64) -> Result<(), ObliqueError> {
     if Grid::steps(s, tf) <= MAX_GRID as f64 {
         return Ok(());
     }

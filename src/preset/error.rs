@@ -18,7 +18,7 @@ fn at_position(position: Option<(usize, usize)>) -> String {
 }
 
 /// 1-based (line, column) of a byte offset.
-pub(super) fn line_col(text: &str, offset: usize) -> (usize, usize) {
+pub(crate) fn line_col(text: &str, offset: usize) -> (usize, usize) {
     let before = &text[..offset.min(text.len())];
     let line = before.matches('\n').count() + 1;
     let col = before.rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1;
@@ -29,7 +29,7 @@ pub(super) fn line_col(text: &str, offset: usize) -> (usize, usize) {
 /// other control characters (which a quoted key such as `"a\rb"` or `"\u001b[2J"` carries
 /// into "unknown field" messages) are escaped, so that they neither break the line nor reach
 /// the terminal as commands.
-pub(super) fn one_line(message: &str) -> String {
+pub(crate) fn one_line(message: &str) -> String {
     message
         .trim()
         .chars()

@@ -29,12 +29,15 @@ mod history;
 mod linear;
 mod numeric;
 pub mod pair;
+pub mod surface;
 #[cfg(test)]
 mod tests;
 #[cfg(test)]
 mod tests_history;
 #[cfg(test)]
 mod tests_stiff;
+#[cfg(test)]
+mod tests_surface;
 
 use crate::model::contact::ContactLaw;
 use crate::model::params::{Field, ImpactParams, ParamError, check_range};

@@ -1,0 +1,44 @@
+//! One normal impact of a [`Ball`] on a surface (docs/surfaces.md §1), as `bouncelab run
+//! --surface` runs it: on the rigid plate today's impact, unchanged; on a surface that gives or
+//! moves, the ball against that surface at rest (docs/targets.md), reported as an impact.
+
+use super::{Ball, BallError, MAX_SAMPLES};
+use crate::oblique::normal_response;
+use crate::solver::{History, ImpactResponse};
+use crate::target::{Target, collide, history};
+
+impl Ball {
+    /// This ball's impact at its v0 on `surface` (at rest), with `samples` history samples
+    /// (0: none; else 2 … [`MAX_SAMPLES`]). On a rigid, immovable surface it is
+    /// [`Ball::impact`] (or [`Ball::impact_history`]) itself. Elsewhere its COR is the ball's
+    /// rebound over its arrival (the apparent COR, = e for a fixed surface), its history the
+    /// chain's (the displacement is the ball's relative to the surface, α = z + y + s), and it
+    /// carries no energy audit.
+    pub fn impact_on(&self, surface: &Target, samples: usize) -> Result<ImpactResponse, BallError> {
+        let rigid = surface.is_rigid() && surface.mass == f64::INFINITY && surface.speed == 0.0;
+        if rigid {
+            return match samples {
+                0 => self.impact(),
+                n => self.impact_history(n),
+            };
+        }
+        if samples != 0 && !(2..=MAX_SAMPLES).contains(&samples) {
+            return Err(BallError::Samples(samples));
+        }
+        let v = self.params.v0;
+        let w0 = self.params.omega0();
+        if samples == 0 {
+            let c = collide(&self.params, self.law, surface, v, None)?;
+            return Ok(normal_response(&self.params, self.law, &c, w0));
+        }
+        let h = history(&self.params, self.law, surface, v, samples)?;
+        let mut r = normal_response(&self.params, self.law, &h.collision, w0);
+        r.history = History {
+            t: h.t,
+            force: h.force,
+            indentation: h.indentation,
+            displacement: h.displacement,
+        };
+        Ok(r)
+    }
+}
