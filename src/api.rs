@@ -71,6 +71,7 @@ pub struct Ball {
 }
 
 mod batch;
+mod batch_reading;
 mod calibration;
 mod collide;
 mod columns;

@@ -160,6 +160,7 @@ pub(crate) fn batch<'py>(
         standard,
         free: free.as_deref(),
         air,
+        rebound_sd: None,
     };
     let text = py.detach(|| {
         let outcomes: Vec<_> = balls

@@ -13,6 +13,8 @@ use crate::measured::{self, Data, MeasuredError};
 use std::collections::HashMap;
 
 pub use super::batch_stats::{BatchStats, stats, stats_in};
+/// The mean's Student interval, as the summary takes it (a ball's readings too: api::batch_reading).
+pub use super::mc_interval::mean_interval;
 
 /// Header names of the column naming each ball (compared in lower case).
 pub const ID_COLUMN: &str = "id";
