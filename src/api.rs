@@ -71,6 +71,8 @@ pub struct Ball {
 }
 
 mod batch;
+mod batch_reading;
+mod batch_report;
 mod calibration;
 mod collide;
 mod columns;
@@ -91,10 +93,8 @@ mod summary;
 mod surface;
 mod sweep;
 mod warnings;
-pub use batch::{
-    BallOutcome, BatchReport, BatchSetup, BatchSummary, BatchUnanswered, StandardRef,
-    quantity as batch_quantity,
-};
+pub use batch::{BallOutcome, BatchSetup, quantity as batch_quantity};
+pub use batch_report::{BatchReport, BatchSummary, BatchUnanswered, StandardRef};
 pub use calibration::{BallRecord, changed_params};
 pub use collide::CollisionReport;
 pub use columns::{Columns, Unanswered, first_pass};

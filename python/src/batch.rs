@@ -122,9 +122,11 @@ fn standard(name: Option<&str>, ball: &Ball) -> PyResult<&'static Standard> {
 /// `mean`, `sd`, `min`, `max`, `failures`, `cpk`, their 95 % intervals `mean_ci` and
 /// `cpk_ci`, `mean_ci_clipped` (whether `mean_ci` was cut to where the value can lie), `balls`, `identified`, `no_answer`, `unsure`, `free`) and `balls` (one dict a
 /// ball: `id`, `cor`, `measured`, its 95 % interval `measured_ci95`, `verdict`, `margin`,
-/// `warnings`, `error`, …), `None` where the JSON has null. A ball that cannot be fitted says
-/// why in its `error` and the batch goes on (`summary["no_answer"]` counts them: the command
-/// line's exit 1). Bad input raises `ValueError` naming the file, line and column; a file that
+/// `warnings`, `error`, `verdict_from`, `readings`, `model_measured`, `fit_error`, …), `None`
+/// where the JSON has null. A ball tested at the standard's condition is judged on its own
+/// readings whether or not it can be fitted (a failed fit says why in its `fit_error`); a ball
+/// without such readings that cannot be fitted says why in its `error` and the batch goes on
+/// (`summary["no_answer"]` counts them: the command line's exit 1). Bad input raises `ValueError` naming the file, line and column; a file that
 /// cannot be read, `OSError`. `free` is a list of names or the command line's "k_p,c". The balls are fitted in parallel without the GIL.
 #[pyfunction]
 #[pyo3(signature = (file, *, standard=None, preset="superball", params=None, law=None, v0=None, free=None, drag_coefficient=None, air_density=1.204))]
@@ -160,6 +162,7 @@ pub(crate) fn batch<'py>(
         standard,
         free: free.as_deref(),
         air,
+        rebound_sd: None,
     };
     let text = py.detach(|| {
         let outcomes: Vec<_> = balls

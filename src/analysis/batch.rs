@@ -9,10 +9,13 @@
 //! data exactly as `bouncelab fit` reads a file of one ball; the errors point at the batch's
 //! own line and column. The summary over the balls' verdicts is `super::batch_stats`.
 
-use crate::measured::{self, Data, MeasuredError};
+use crate::measured::rows::{self, Row};
+use crate::measured::{self, Data, MeasuredError, RowTable, Source};
 use std::collections::HashMap;
 
 pub use super::batch_stats::{BatchStats, stats, stats_in};
+/// The mean's Student interval, as the summary takes it (a ball's readings too: api::batch_reading).
+pub use super::mc_interval::mean_interval;
 
 /// Header names of the column naming each ball (compared in lower case).
 pub const ID_COLUMN: &str = "id";
@@ -48,78 +51,28 @@ pub struct BallRows {
     pub data: BallData,
 }
 
-/// Lines that hold something (not blank, not a `#` comment), with their 1-based numbers, as
-/// the measured readers skip them (src/measured/table.rs).
-fn content_lines(text: &str) -> impl Iterator<Item = (usize, &str)> {
-    text.lines()
-        .enumerate()
-        .map(|(i, l)| (i + 1, l))
-        .filter(|(_, l)| {
-            let t = l.trim();
-            !t.is_empty() && !t.starts_with('#')
-        })
+/// The rows of one ball being gathered: its id and its rows (the batch's, id cell kept).
+struct Group {
+    id: String,
+    rows: Vec<Row>,
 }
 
-/// The separator the measured readers read off the header: tab, then `;`, then `,`.
-fn separator(header: &str) -> char {
-    if header.contains('\t') {
-        '\t'
-    } else if header.contains(';') {
-        ';'
-    } else {
-        ','
-    }
-}
-
-/// Cells of a line as written (blanks kept) with the 1-based character column each starts at.
-fn raw_cells(line: &str, sep: char) -> Vec<(usize, &str)> {
-    let mut out = Vec::new();
-    let mut col = 1;
-    for cell in line.split(sep) {
-        out.push((col, cell));
-        col += cell.chars().count() + 1;
-    }
-    out
-}
-
-/// A line with cell `k` taken out, and (from, width): a column at or past `from` in the
-/// shortened line was `width` columns further right in the batch.
-fn without_cell(line: &str, sep: char, k: usize) -> (String, (usize, usize)) {
-    let cells = raw_cells(line, sep);
-    let kept: Vec<&str> = cells
-        .iter()
-        .enumerate()
-        .filter(|(i, _)| *i != k)
-        .map(|(_, c)| c.1)
-        .collect();
-    let (start, cell) = cells[k];
-    let shift = if k + 1 < cells.len() {
-        (start, cell.chars().count() + 1)
-    } else {
-        // the last cell: what precedes it keeps its columns
-        (usize::MAX, 0)
-    };
-    (kept.join(&sep.to_string()), shift)
-}
-
-/// The rows of one ball being gathered.
-struct Group<'a> {
-    id: &'a str,
-    /// (batch line, the line's text) of each row.
-    rows: Vec<(usize, &'a str)>,
-}
-
-/// Split a batch into its balls, in the order they come, each ball's data read.
+/// Split a batch into its balls, in the order they come, each ball's data read. The batch is
+/// read by the measured readers' own rows ([`crate::measured::rows`], the `csv` crate: a BOM,
+/// quoted fields and headers, LF, CRLF and CR line ends, `#` comments), and each ball's rows
+/// are handed to [`measured::read_any`] as rows, so a ball's data are read as `bouncelab fit`
+/// reads a file of one ball and every error names the batch's own line and column (a batch
+/// once split its lines by hand: a BOM made its header `\u{feff}id` and a quoted header
+/// `"id"`, neither an id column; tests/cli_batch_csv.rs).
 pub fn split(text: &str) -> Result<Vec<BallRows>, MeasuredError> {
-    let mut lines = content_lines(text);
-    let Some((hline, header)) = lines.next() else {
+    let text = rows::normalized(text);
+    let sep = rows::separator(&text);
+    let mut lines = rows::Rows::new(&text, sep);
+    let Some(header) = lines.next().transpose()? else {
         return Err(MeasuredError::at(1, 1, "no data: the file is empty"));
     };
-    let sep = separator(header);
-    let names: Vec<String> = raw_cells(header, sep)
-        .iter()
-        .map(|c| c.1.trim().to_lowercase())
-        .collect();
+    let hline = header.line;
+    let names: Vec<String> = header.cells.iter().map(|c| c.text.to_lowercase()).collect();
     let Some(id_col) = names.iter().position(|n| n == ID_COLUMN) else {
         return Err(MeasuredError::at(
             hline,
@@ -153,40 +106,50 @@ pub fn split(text: &str) -> Result<Vec<BallRows>, MeasuredError> {
             "no data rows after the header",
         ));
     }
+    let header = without_cell(&header, id_col);
     groups
         .into_iter()
         .map(|g| match trace_col {
-            Some(k) => trace_ball(&g, sep, k),
-            None => table_ball(&g, (hline, header), sep, id_col),
+            Some(k) => trace_ball(&g, k),
+            None => table_ball(g, &header, sep, id_col),
         })
         .collect()
 }
 
+/// A row with cell `k` taken out (the others keep their places in the batch).
+fn without_cell(row: &Row, k: usize) -> Row {
+    let mut row = row.clone();
+    row.cells.remove(k);
+    row
+}
+
 /// Rows gathered by ball: consecutive rows with one id; an id seen before, after another
 /// ball's rows, is an error at its line.
-fn group_rows<'a>(
-    lines: impl Iterator<Item = (usize, &'a str)>,
-    sep: char,
+fn group_rows(
+    lines: impl Iterator<Item = Result<Row, MeasuredError>>,
+    sep: u8,
     fields: usize,
     id_col: usize,
-) -> Result<Vec<Group<'a>>, MeasuredError> {
-    let mut groups: Vec<Group<'a>> = Vec::new();
-    let mut first_line: HashMap<&'a str, usize> = HashMap::new();
-    for (ln, line) in lines {
-        let cells = raw_cells(line, sep);
-        if cells.len() != fields {
+) -> Result<Vec<Group>, MeasuredError> {
+    let mut groups: Vec<Group> = Vec::new();
+    let mut first_line: HashMap<String, usize> = HashMap::new();
+    for row in lines {
+        let row = row?;
+        if row.cells.len() != fields {
+            let last = row.cells.last();
             return Err(MeasuredError::at(
-                ln,
-                cells.last().map_or(1, |c| c.0),
+                last.map_or(row.line, |c| c.line),
+                last.map_or(1, |c| c.column),
                 format!(
                     "{} fields, but the header names {fields} (separator '{}')",
-                    cells.len(),
-                    sep.escape_default()
+                    row.cells.len(),
+                    char::from(sep).escape_default()
                 ),
             ));
         }
-        let (col, cell) = cells[id_col];
-        let id = cell.trim();
+        let cell = &row.cells[id_col];
+        let (ln, col) = (cell.line, cell.column);
+        let id = cell.text.clone();
         if id.is_empty() {
             return Err(MeasuredError::at(
                 ln,
@@ -195,97 +158,78 @@ fn group_rows<'a>(
             ));
         }
         if let Some(g) = groups.last_mut().filter(|g| g.id == id) {
-            g.rows.push((ln, line));
+            g.rows.push(row);
             continue;
         }
-        if let Some(first) = first_line.get(id) {
+        if let Some(first) = first_line.get(&id) {
             return Err(MeasuredError::at(
                 ln,
                 col,
                 format!(
                     "id '{}' again: its rows began at line {first}, and a ball's rows must be \
                      consecutive (another ball's rows came between)",
-                    id.chars().take(40).collect::<String>()
+                    crate::sanitize::line(&id.chars().take(40).collect::<String>())
                 ),
             ));
         }
-        first_line.insert(id, ln);
+        first_line.insert(id.clone(), row.line);
         groups.push(Group {
             id,
-            rows: vec![(ln, line)],
+            rows: vec![row],
         });
     }
     Ok(groups)
 }
 
 /// A ball whose data are a trace file: one row, the path its cell.
-fn trace_ball(g: &Group<'_>, sep: char, k: usize) -> Result<BallRows, MeasuredError> {
-    if let Some(&(ln, _)) = g.rows.get(1) {
+fn trace_ball(g: &Group, k: usize) -> Result<BallRows, MeasuredError> {
+    if let Some(row) = g.rows.get(1) {
         return Err(MeasuredError::at(
-            ln,
+            row.line,
             1,
             format!(
                 "ball '{}' has a second trace: one trace file per ball",
-                g.id
+                crate::sanitize::line(&g.id)
             ),
         ));
     }
-    let (line, text) = g.rows[0];
-    let (column, cell) = raw_cells(text, sep)[k];
-    let path = cell.trim();
-    if path.is_empty() {
+    let cell = &g.rows[0].cells[k];
+    if cell.text.is_empty() {
         return Err(MeasuredError::at(
-            line,
-            column,
+            cell.line,
+            cell.column,
             "empty trace cell: give the trace's file",
         ));
     }
     Ok(BallRows {
-        id: g.id.to_string(),
-        line,
+        id: g.id.clone(),
+        line: g.rows[0].line,
         rows: 1,
         data: BallData::TraceFile {
-            path: path.to_string(),
-            line,
-            column,
+            path: cell.text.clone(),
+            line: cell.line,
+            column: cell.column,
         },
     })
 }
 
-/// A ball whose rows are data: the header and its rows, without the id column, read by
-/// [`measured::parse_any`]; an error's line and column put back where the batch has them.
-fn table_ball(
-    g: &Group<'_>,
-    (hline, header): (usize, &str),
-    sep: char,
-    id_col: usize,
-) -> Result<BallRows, MeasuredError> {
-    let mut text = String::new();
-    // batch line and column shift of each line of `text`
-    let mut origin = Vec::with_capacity(g.rows.len() + 1);
-    for &(ln, line) in std::iter::once(&(hline, header)).chain(&g.rows) {
-        let (short, shift) = without_cell(line, sep, id_col);
-        text.push_str(&short);
-        text.push('\n');
-        origin.push((ln, shift));
-    }
-    let data = measured::parse_any(&text).map_err(|e| {
-        let (line, (from, width)) = origin
-            .get(e.line.saturating_sub(1))
-            .copied()
-            // past the last row: the line after the ball's rows
-            .unwrap_or((g.rows[g.rows.len() - 1].0 + 1, (usize::MAX, 0)));
-        let column = if e.column >= from {
-            e.column + width
-        } else {
-            e.column
-        };
-        MeasuredError::at(line, column, e.message)
-    })?;
+/// A ball whose rows are data: the header and its rows, without the id cells, read by
+/// [`measured::read_any`] (each cell keeps its place in the batch, so its errors do).
+fn table_ball(g: Group, header: &Row, sep: u8, id_col: usize) -> Result<BallRows, MeasuredError> {
+    let line = g.rows[0].line;
+    let count = g.rows.len();
+    let end_line = g.rows[count - 1].line + 1;
+    let rows: Vec<Row> = g.rows.iter().map(|r| without_cell(r, id_col)).collect();
+    let data = measured::read_any(Source::Rows(RowTable {
+        sep,
+        header,
+        rows: &rows,
+        end_line,
+    }))?;
     Ok(BallRows {
-        id: g.id.to_string(),
-        line: g.rows[0].0,
-        rows: g.rows.len(),
+        id: g.id,
+        line,
+        rows: count,
         data: BallData::Measured(data),
     })
 }
@@ -306,7 +250,9 @@ mod tests {
         let BallData::Measured(Data::Drop(d)) = &b[0].data else {
             panic!("{:?}", b[0].data)
         };
-        assert_eq!(d.drops, vec![(2.54, 1.40, 2), (2.54, 1.42, 3)]);
+        // each drop carries its line in the batch (the hand-split batch gave the lines of
+        // the ball's own sub-table, 2 and 3)
+        assert_eq!(d.drops, vec![(2.54, 1.40, 3), (2.54, 1.42, 4)]);
     }
 
     /// The id column anywhere: the other cells keep their columns in errors.
@@ -342,7 +288,9 @@ mod tests {
             BallData::TraceFile {
                 path: "a.csv".into(),
                 line: 2,
-                column: 3
+                // the cell's first character that is not blank, as the measured readers place
+                // every cell
+                column: 4
             }
         );
         let e = split("id,trace\nA,a.csv\nA,b.csv\n").unwrap_err();

@@ -4,7 +4,6 @@
 //! What `bouncelab batch` writes and `bouncelab.batch` returns.
 
 use super::Ball;
-use crate::analysis::batch::{BatchStats, stats_in};
 use crate::analysis::fit::verdict::no_answer_reasons;
 use crate::analysis::fit::{FitData, MultiFit, Param};
 use crate::drop::standards::{Standard, Test};
@@ -20,6 +19,9 @@ pub struct BatchSetup<'a> {
     pub free: Option<&'a [Param]>,
     /// The air of the drop tests, fitted and judged alike (`None`: vacuum).
     pub air: Option<Air>,
+    /// The standard deviation of a rebound height's reading, m (`--rebound-height-sd`, as
+    /// `fit`'s; `None`: unknown, the scale taken from the readings' scatter).
+    pub rebound_sd: Option<f64>,
 }
 
 /// One ball of a batch: its fit and its verdict, or why it has none (`error`). SI.
@@ -60,8 +62,20 @@ pub struct BallOutcome {
     pub measured_ci95: Option<[f64; 2]>,
     /// What the fit warns of.
     pub warnings: Vec<String>,
-    /// Why the ball has no verdict: its data could not be fitted.
+    /// Why the ball has no verdict: its data could not be fitted, and were not taken at the
+    /// standard's condition (so no reading of its own judges it).
     pub error: Option<String>,
+    /// What the verdict is on: `measurement` (the ball's own readings at the standard's
+    /// condition, [`batch_reading`](super::batch_reading)) or `model` (the fitted ball run
+    /// through the standard's test); `None` without a verdict.
+    pub verdict_from: Option<&'static str>,
+    /// Readings at the standard's condition (drops from its height, CORs at its speed).
+    pub readings: usize,
+    /// The fitted ball's value in the standard's test (beside a verdict from the
+    /// measurement, what the model makes of it); `None` without a fit.
+    pub model_measured: Option<f64>,
+    /// Why the fit gave no answer, where the ball's verdict stands on its measurement.
+    pub fit_error: Option<String>,
 }
 
 impl BallOutcome {
@@ -84,6 +98,10 @@ impl BallOutcome {
             measured_ci95: None,
             warnings: Vec::new(),
             error: None,
+            verdict_from: None,
+            readings: 0,
+            model_measured: None,
+            fit_error: None,
         }
     }
 }
@@ -106,19 +124,29 @@ pub fn quantity(s: &Standard) -> (&'static str, &'static str) {
 }
 
 impl Ball {
-    /// Ball `id` of a batch (its rows from `line`): `data` fitted from this ball and the
-    /// fitted ball judged by `setup.standard`. Never fails: a ball that cannot be fitted or
-    /// judged says why in its `error`.
+    /// Ball `id` of a batch (its rows from `line`): `data` fitted from this ball, and the
+    /// ball judged by `setup.standard` — on its own readings where it was tested at the
+    /// standard's condition ([`super::batch_reading`]; the fitted ball's value beside them),
+    /// else on the fitted ball run through the standard's test. Never fails: a ball without a
+    /// verdict says why in its `error`; a ball whose verdict stands on its readings but whose
+    /// fit gave no answer says why in its `fit_error`.
     ///
     /// ```
     /// use bouncelab::{Ball, api::BatchSetup, drop::standards, measured::parse_any};
     /// let tennis = Ball::from_preset("tennis")?;
-    /// let setup = BatchSetup { standard: standards::find("itf").unwrap(), free: None, air: None };
-    /// // one drop at the standard's own height, in vacuum: the fit returns that rebound
+    /// let setup = BatchSetup {
+    ///     standard: standards::find("itf").unwrap(),
+    ///     free: None,
+    ///     air: None,
+    ///     rebound_sd: None,
+    /// };
+    /// // one drop at the standard's own height: the verdict is on that rebound
     /// let data = parse_any("drop_height_m,rebound_height_m\n2.54,1.40\n").unwrap();
     /// let o = tennis.judge_in_batch("A1", 2, &data, &setup);
-    /// assert_eq!(o.verdict, Some("PASS"));
-    /// assert!((o.measured.unwrap() - 1.40).abs() < 1e-6, "{o:?}");
+    /// assert_eq!((o.verdict, o.verdict_from), (Some("PASS"), Some("measurement")));
+    /// assert_eq!(o.measured, Some(1.40));
+    /// // and the fitted ball gives it back (in vacuum, K_r alone)
+    /// assert!((o.model_measured.unwrap() - 1.40).abs() < 1e-6, "{o:?}");
     /// # Ok::<(), bouncelab::BallError>(())
     /// ```
     pub fn judge_in_batch(
@@ -135,48 +163,78 @@ impl Ball {
             Data::Cor(t) => t.points.len(),
             Data::Drop(d) => d.drops.len(),
         };
-        let (f, speeds) = match self.fit_batch_data(data, setup) {
-            Ok(f) => f,
+        let reading = super::batch_reading::reading(self, data, setup);
+        if let Some(r) = &reading {
+            o.readings = r.count;
+            o.cor = Some(r.cor);
+            verdict_on_reading(setup.standard, r, &mut o);
+        }
+        let fitted = match self.fit_and_judge(data, setup, &mut o) {
+            Ok(fitted) => fitted,
+            Err(e) if reading.is_some() => {
+                o.fit_error = Some(e);
+                return o;
+            }
             Err(e) => {
                 o.error = Some(e);
                 return o;
             }
         };
+        if reading.is_none() {
+            // the verdict from the model: its interval from the fit's covariance
+            o.measured = o.model_measured;
+            o.verdict_from = Some("model");
+            o.verdict = Some(fitted.verdict.verdict);
+            o.margin = Some(fitted.verdict.margin);
+            if let Some((fitted, table)) = fitted.band {
+                match measured_band(&fitted, setup, &table) {
+                    Ok(ci) => o.measured_ci95 = Some(ci),
+                    // the verdict stands; its interval is missing, and the ball says why
+                    Err(e) => o.warnings.push(format!(
+                        "no 95 % interval for the measured value: the standard's test failed \
+                         on the ball moved within its fit's uncertainty ({e})"
+                    )),
+                }
+            }
+        }
+        if let Some(ci) = o.measured_ci95 {
+            o.warnings.extend(unsure(setup.standard, &o, ci));
+        }
+        o
+    }
+
+    /// The ball fitted to `data` and run through the standard's test: the fit's values and
+    /// warnings, the fitted ball's COR and value (`model_measured`, its verdict kept aside)
+    /// in `o`; the fitted ball and its fit's covariance table where the fit leaves degrees of
+    /// freedom. An error says why the fit or the test gave no answer.
+    fn fit_and_judge(
+        &self,
+        data: &Data,
+        setup: &BatchSetup<'_>,
+        o: &mut BallOutcome,
+    ) -> Result<Fitted, String> {
+        let (f, speeds) = self.fit_batch_data(data, setup)?;
         o.points = f.points;
         o.free = f.fitted.iter().map(|e| e.name).collect();
         let p = &f.params;
         (o.k_p, o.c, o.k_r, o.z_p) = (Some(p.k_p), Some(p.damping), Some(p.k_r), Some(p.z_p));
         o.identified = f.identified;
-        o.warnings.clone_from(&f.warnings);
+        o.warnings.extend(f.warnings.iter().cloned());
         // the fitted ball where it presses deepest, as `bouncelab fit` warns of it
         o.warnings.extend(self.fitted_warnings(&f.params, &speeds));
         if !f.identified {
             let why = no_answer_reasons(f.converged, &f.not_pinned);
-            o.error = Some(format!("the fit gave no answer: {}", why.join("; ")));
-            return o;
+            return Err(format!("the fit gave no answer: {}", why.join("; ")));
         }
         let fitted = Ball {
             params: f.params,
             ..self.clone()
         };
-        if let Err(e) = judge(&fitted, setup, &mut o) {
-            o.error = Some(e);
-            return o;
-        }
-        if let Some(table) = super::fit_table(&f) {
-            match measured_band(&fitted, setup, &table) {
-                Ok(ci) => {
-                    o.measured_ci95 = Some(ci);
-                    o.warnings.extend(unsure(setup.standard, &o, ci));
-                }
-                // the verdict stands; its interval is missing, and the ball says why
-                Err(e) => o.warnings.push(format!(
-                    "no 95 % interval for the measured value: the standard's test failed on \
-                     the ball moved within its fit's uncertainty ({e})"
-                )),
-            }
-        }
-        o
+        let verdict = judge(&fitted, setup, o)?;
+        Ok(Fitted {
+            verdict,
+            band: super::fit_table(&f).map(|t| (fitted, t)),
+        })
     }
 
     /// The fit of one ball's data (drop tests through this ball's flight in `setup.air`), and
@@ -197,7 +255,7 @@ impl Ball {
             Data::Cor(t) => t.points.clone(),
             Data::Drop(d) => {
                 let pairs: Vec<(f64, f64)> = d.drops.iter().map(|d| (d.0, d.1)).collect();
-                self.drops_to_cor(&pairs, setup.air)
+                self.drops_to_cor_read(&pairs, setup.air, setup.rebound_sd)
                     .map_err(|e| e.to_string())?
             }
         };
@@ -209,7 +267,7 @@ impl Ball {
 }
 
 /// The standard's test on the fitted ball: the verdict, and the COR at the test's speed.
-fn judge(ball: &Ball, setup: &BatchSetup<'_>, o: &mut BallOutcome) -> Result<(), String> {
+fn judge(ball: &Ball, setup: &BatchSetup<'_>, o: &mut BallOutcome) -> Result<ModelVerdict, String> {
     let s = setup.standard;
     let dball = ball.drop_ball();
     let v = s.judge(&dball, setup.air).map_err(|e| e.to_string())?;
@@ -229,11 +287,37 @@ fn judge(ball: &Ball, setup: &BatchSetup<'_>, o: &mut BallOutcome) -> Result<(),
         }
         Test::Cor { .. } => v.measured,
     };
+    // the fitted ball's COR at the standard's speed (beside a reading too, as before the
+    // readings were judged)
     o.cor = Some(cor);
-    o.measured = Some(v.measured);
+    o.model_measured = Some(v.measured);
+    Ok(ModelVerdict {
+        verdict: if v.pass { "PASS" } else { "FAIL" },
+        margin: v.margin,
+    })
+}
+
+/// The fitted ball's verdict in the standard's test.
+struct ModelVerdict {
+    verdict: &'static str,
+    margin: f64,
+}
+
+/// A ball's fit that answered: the fitted ball's verdict, and the fitted ball with its fit's
+/// covariance table where the fit leaves degrees of freedom.
+struct Fitted {
+    verdict: ModelVerdict,
+    band: Option<(Ball, crate::preset::FitTable)>,
+}
+
+/// The verdict on the ball's own reading at the standard's condition.
+fn verdict_on_reading(s: &Standard, r: &super::batch_reading::Reading, o: &mut BallOutcome) {
+    let v = s.judge_value(r.value);
+    o.measured = Some(r.value);
+    o.measured_ci95 = r.ci95;
     o.verdict = Some(if v.pass { "PASS" } else { "FAIL" });
     o.margin = Some(v.margin);
-    Ok(())
+    o.verdict_from = Some("measurement");
 }
 
 /// The 95 % interval of what the standard measures on `ball`, from the fit's covariance
@@ -282,123 +366,12 @@ fn unsure(s: &Standard, o: &BallOutcome, ci: [f64; 2]) -> Option<String> {
     ))
 }
 
-/// The standard a batch is judged against, as the JSON names it.
-#[derive(Debug, Clone, Serialize)]
-pub struct StandardRef {
-    /// Its short name.
-    pub name: &'static str,
-    /// Its title.
-    pub title: &'static str,
-    /// What it measures: `rebound_height` or `cor`.
-    pub quantity: &'static str,
-    /// Its unit (`m`, or empty for the COR).
-    pub unit: &'static str,
-    /// [lo, hi]; `null` where unbounded.
-    pub window: [Option<f64>; 2],
-}
-
-/// The batch's summary: the statistics of the measured values, and how the fits went.
-#[derive(Debug, Clone, Serialize)]
-pub struct BatchSummary {
-    /// n, mean, sd, min, max, failures, cpk of the balls with a verdict.
-    #[serde(flatten)]
-    pub stats: BatchStats,
-    /// Balls in the batch.
-    pub balls: usize,
-    /// Balls whose fit answered (converged, every free parameter pinned).
-    pub identified: usize,
-    /// Balls without a verdict (their `error` says why).
-    pub no_answer: usize,
-    /// Balls whose verdict their own 95 % interval leaves open (a bound of the window inside
-    /// `measured_ci95`; each says so in its `warnings`).
-    pub unsure: usize,
-    /// Every parameter fitted in some ball, in the output's order.
-    pub free: Vec<&'static str>,
-}
-
-/// `bouncelab batch --format json`: the ball it started from, the standard, the summary and
-/// every ball.
-#[derive(Debug, Serialize)]
-pub struct BatchReport<'a> {
-    /// Preset name (`None` for a ball given by its parameters).
-    pub preset: Option<&'a str>,
-    /// Contact law.
-    pub law: &'static str,
-    /// The standard.
-    pub standard: StandardRef,
-    /// The summary.
-    pub summary: BatchSummary,
-    /// Every ball, in the batch's order.
-    pub balls: &'a [BallOutcome],
-    /// The lot's: the standard's impact speed against the record of the ball the fits start
-    /// from (what they hold fixed is that ball's; [`Ball::standard_calibration_warning`]).
-    pub warnings: Vec<String>,
-    /// The ball the fits start from (docs/cli.md, "The ball object").
-    pub ball: super::BallRecord,
-}
-
-impl<'a> BatchReport<'a> {
-    /// The report of `balls`, started from `ball`, against `standard`.
-    pub fn new(ball: &'a Ball, standard: &'static Standard, balls: &'a [BallOutcome]) -> Self {
-        let (quantity, unit) = quantity(standard);
-        let values: Vec<f64> = balls.iter().filter_map(|b| b.measured).collect();
-        let mut free: Vec<&'static str> = Param::ALL
-            .iter()
-            .map(|p| p.name())
-            .filter(|n| balls.iter().any(|b| b.free.contains(n)))
-            .collect();
-        free.dedup();
-        BatchReport {
-            preset: ball.name.as_deref(),
-            law: ball.law.name(),
-            standard: StandardRef {
-                name: standard.name,
-                title: standard.title,
-                quantity,
-                unit,
-                window: standard.window,
-            },
-            summary: BatchSummary {
-                stats: stats_in(&values, standard.window, quantity_range(standard)),
-                balls: balls.len(),
-                identified: balls.iter().filter(|b| b.identified).count(),
-                no_answer: balls.iter().filter(|b| b.verdict.is_none()).count(),
-                unsure: balls
-                    .iter()
-                    .filter(|b| b.measured_ci95.is_some_and(|ci| within(standard, ci)))
-                    .count(),
-                free,
-            },
-            balls,
-            warnings: ball
-                .standard_calibration_warning(standard)
-                .into_iter()
-                .collect(),
-            ball: ball.record_json(),
-        }
-    }
-}
-
 /// Whether a bound of `s`'s window lies strictly inside `ci`.
-fn within(s: &Standard, ci: [f64; 2]) -> bool {
+pub(super) fn within(s: &Standard, ci: [f64; 2]) -> bool {
     s.window.into_iter().flatten().any(|b| within_one(b, ci))
 }
 
 /// Whether `bound` lies strictly inside `ci`.
 fn within_one(bound: f64, ci: [f64; 2]) -> bool {
     ci[0] < bound && bound < ci[1]
-}
-
-/// Some balls of a batch have no verdict: the command line's exit 1, after its report.
-#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
-#[error("{}", if *balls == 1 {
-    "the ball has no verdict: its row says why".to_string()
-} else {
-    format!("{no_answer} of {balls} balls have no verdict: their rows say why")
-})]
-pub struct BatchUnanswered {
-    /// Balls without a verdict.
-    pub no_answer: usize,
-    /// Balls in the batch.
-    pub balls: usize,
 }

@@ -54,6 +54,11 @@ pub struct BatchArgs {
     #[arg(long, value_name = "RHO", default_value_t = 1.204, requires = "drag_coefficient",
           value_parser = super::number::number, allow_hyphen_values = true)]
     pub air_density: f64,
+    /// Drop tests: the standard deviation of a rebound height's reading, m (as `fit`'s): the
+    /// verdicts' intervals and the fits take it as known [default: unknown, from the
+    /// readings' scatter]
+    #[arg(long, value_name = "S", value_parser = super::number::number, allow_hyphen_values = true)]
+    pub rebound_height_sd: Option<f64>,
     /// Impact speed of force–time traces (m/s) [default: the preset's measured v0]
     #[arg(long, value_name = "V", value_parser = super::number::number, allow_hyphen_values = true)]
     pub v0: Option<f64>,
@@ -84,8 +89,8 @@ pub fn run(a: &BatchArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         density: a.air_density,
         drag_coefficient: cd,
     });
-    // the library checks the air once, whatever the data
-    ball.drops_to_cor(&[], air)?;
+    // the library checks the air and the reading once, whatever the data
+    ball.drops_to_cor_read(&[], air, a.rebound_height_sd)?;
     let paths: Vec<&Path> = [&a.csv_out, &a.svg_out]
         .into_iter()
         .flatten()
@@ -97,6 +102,7 @@ pub fn run(a: &BatchArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         standard,
         free: free.as_deref(),
         air,
+        rebound_sd: a.rebound_height_sd,
     };
     let outcomes = judge_all(&ball, &balls, &setup)?;
     let report = BatchReport::new(&ball, standard, &outcomes);
@@ -192,8 +198,9 @@ fn judge_all(
 }
 
 /// `id, line, data, points, free, k_p, c, k_r, z_p, identified, cor, measured, verdict,
-/// margin, error, warnings, measured_ci95_lo, measured_ci95_hi` (SI; empty where a ball has
-/// no value; lists joined by `; `; the interval's columns last, added after the others).
+/// margin, error, warnings, measured_ci95_lo, measured_ci95_hi, verdict_from, readings,
+/// model_measured, fit_error` (SI; empty where a ball has no value; lists joined by `; `;
+/// columns added later come last).
 fn balls_csv(balls: &[BallOutcome]) -> String {
     let header = [
         "id",
@@ -214,6 +221,10 @@ fn balls_csv(balls: &[BallOutcome]) -> String {
         "warnings",
         "measured_ci95_lo",
         "measured_ci95_hi",
+        "verdict_from",
+        "readings",
+        "model_measured",
+        "fit_error",
     ];
     let mut buf = Vec::new();
     let mut rows = || -> std::io::Result<()> {
@@ -238,6 +249,10 @@ fn balls_csv(balls: &[BallOutcome]) -> String {
                 b.warnings.join("; "),
                 output::opt_num(b.measured_ci95.map(|ci| ci[0])),
                 output::opt_num(b.measured_ci95.map(|ci| ci[1])),
+                b.verdict_from.unwrap_or_default().to_string(),
+                b.readings.to_string(),
+                output::opt_num(b.model_measured),
+                b.fit_error.clone().unwrap_or_default(),
             ];
             csv_row(&mut buf, &row)?;
         }
@@ -329,7 +344,11 @@ fn text(
         }
         row.push(b.verdict.unwrap_or("no verdict").to_string());
         row.push(b.margin.map_or("–".into(), |m| format!("{m:+.4}")));
-        row.push(b.error.clone().unwrap_or_default());
+        row.push(match (&b.error, &b.fit_error) {
+            (Some(e), _) => e.clone(),
+            (None, Some(e)) => format!("on its readings; no fit: {e}"),
+            (None, None) => String::new(),
+        });
         rows.push(row);
     }
     output::table(out, "  ", &rows)?;
@@ -383,6 +402,14 @@ fn text(
         s.identified,
         s.balls
     )?;
+    if s.unfitted > 0 {
+        writeln!(
+            out,
+            "judged on their readings without a fit: {} (the model cannot follow them; their \
+             rows say why)",
+            s.unfitted
+        )?;
+    }
     if s.unsure > 0 {
         writeln!(
             out,

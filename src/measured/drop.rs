@@ -90,7 +90,12 @@ pub fn drops_to_points(
 impl DropTest {
     /// Columns `drop_height_m`, `rebound_height_m`.
     pub fn parse(text: &str) -> Result<DropTest, MeasuredError> {
-        let p = table::read(text, &SPECS)?;
+        DropTest::read(text.into())
+    }
+
+    /// [`DropTest::parse`] of a text or of rows already read (a batch's ball).
+    pub fn read(src: table::Source<'_>) -> Result<DropTest, MeasuredError> {
+        let p = table::read(src, &SPECS)?;
         super::check_points(&p)?;
         let mut drops = Vec::with_capacity(p.lines.len());
         for i in 0..p.lines.len() {

@@ -11,7 +11,7 @@ mod oblique;
 pub mod file;
 pub mod overlay;
 mod pressure;
-mod rows;
+pub mod rows;
 mod table;
 mod trace;
 
@@ -19,7 +19,7 @@ pub use court::{CourtRow, parse_court};
 pub use drop::{Air, DropTest, Flight, G, cor_per_rebound_height, drop_to_cor, drops_to_points};
 pub use oblique::{ObliqueRow, parse_oblique};
 pub use pressure::{PressureRow, parse_pressure};
-pub use table::MAX_ROWS;
+pub use table::{MAX_ROWS, RowTable, Source};
 pub use trace::{Trace, TraceSummary};
 
 use std::fmt;
@@ -210,7 +210,12 @@ impl CorTable {
     /// Columns `v0`/`v0_m_s`/`speed`, `cor`/`e`; optional `cor_sd`, `max_force_N`,
     /// `contact_time_s` (or `_ms`, `_us`).
     pub fn parse(text: &str) -> Result<CorTable, MeasuredError> {
-        let p = table::read(text, &COR_SPECS)?;
+        CorTable::read(text.into())
+    }
+
+    /// [`CorTable::parse`] of a text or of rows already read (a batch's ball).
+    pub fn read(src: Source<'_>) -> Result<CorTable, MeasuredError> {
+        let p = table::read(src, &COR_SPECS)?;
         check_points(&p)?;
         let mut points = Vec::with_capacity(p.lines.len());
         for i in 0..p.lines.len() {
@@ -244,7 +249,12 @@ impl CorTable {
 /// `time_ms,forse_N` is so a trace whose reader blames `forse_N`, not a COR table that blames
 /// `time_ms` (tests/measured_readers.rs, `the_misspelt_column_is_blamed`).
 pub fn parse_any(text: &str) -> Result<Data, MeasuredError> {
-    let names = table::header_names(text).unwrap_or_default();
+    read_any(text.into())
+}
+
+/// [`parse_any`] of a text or of rows already read (a batch's ball: `analysis::batch`).
+pub fn read_any(src: Source<'_>) -> Result<Data, MeasuredError> {
+    let names = table::header_names(src).unwrap_or_default();
     let known = |specs: &[ColumnSpec]| {
         names
             .iter()
@@ -257,11 +267,11 @@ pub fn parse_any(text: &str) -> Result<Data, MeasuredError> {
     };
     let (drops, trace, cor) = (known(&drop::SPECS), known(&trace::SPECS), known(&COR_SPECS));
     if drops > 0 && drops >= trace && drops >= cor {
-        DropTest::parse(text).map(Data::Drop)
+        DropTest::read(src).map(Data::Drop)
     } else if trace > 0 && trace >= cor {
-        Trace::parse(text).map(Data::Trace)
+        Trace::read(src).map(Data::Trace)
     } else {
-        CorTable::parse(text).map(Data::Cor)
+        CorTable::read(src).map(Data::Cor)
     }
 }
 

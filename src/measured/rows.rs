@@ -10,15 +10,20 @@ use std::borrow::Cow;
 /// One cell: its text (trimmed, quotes removed) and where it starts in the file.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Cell {
+    /// The text, trimmed, quotes removed.
     pub text: String,
+    /// 1-based line it starts at.
     pub line: usize,
+    /// 1-based column (in characters) of its first character that is not blank.
     pub column: usize,
 }
 
 /// One row: its line (where it starts) and its cells.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Row {
+    /// 1-based line it starts at.
     pub line: usize,
+    /// Its cells.
     pub cells: Vec<Cell>,
 }
 
@@ -103,6 +108,7 @@ pub struct Rows<'a> {
 }
 
 impl<'a> Rows<'a> {
+    /// The rows of `text` (already [`normalized`]) separated by `sep` ([`separator`]).
     pub fn new(text: &'a str, sep: u8) -> Rows<'a> {
         let records = csv::ReaderBuilder::new()
             .has_headers(false)

@@ -35,24 +35,61 @@ pub struct Parsed {
     pub end_line: usize,
 }
 
+/// Where a table's rows come from: a text (a file's), or rows already read from one by
+/// [`rows::Rows`] — a batch's ball, the header and that ball's rows with their id cells taken
+/// out (`analysis::batch`), each cell keeping the line and column it has in the batch, so
+/// both are read by one reader and every error points at the file's own place.
+#[derive(Debug, Clone, Copy)]
+pub enum Source<'a> {
+    /// A whole table as text.
+    Text(&'a str),
+    /// Rows already read.
+    Rows(RowTable<'a>),
+}
+
+/// A table already cut into rows ([`Source::Rows`]).
+#[derive(Debug, Clone, Copy)]
+pub struct RowTable<'a> {
+    /// The separator the rows were read with (for the decimal comma of `;`).
+    pub sep: u8,
+    /// The header row.
+    pub header: &'a Row,
+    /// The data rows.
+    pub rows: &'a [Row],
+    /// The line after the last row, for errors about the whole table.
+    pub end_line: usize,
+}
+
+impl<'a> From<&'a str> for Source<'a> {
+    fn from(text: &'a str) -> Self {
+        Source::Text(text)
+    }
+}
+
 /// Lowered header names of a table, or `None` when it has no header line (used to tell the
 /// kinds of data apart).
-pub fn header_names(text: &str) -> Option<Vec<String>> {
-    let text = rows::normalized(text);
-    let header = Rows::new(&text, rows::separator(&text)).next()?.ok()?;
-    Some(header.cells.iter().map(|c| c.text.to_lowercase()).collect())
+pub fn header_names<'a>(src: impl Into<Source<'a>>) -> Option<Vec<String>> {
+    let lowered = |h: &Row| h.cells.iter().map(|c| c.text.to_lowercase()).collect();
+    match src.into() {
+        Source::Text(text) => {
+            let text = rows::normalized(text);
+            let header = Rows::new(&text, rows::separator(&text)).next()?.ok()?;
+            Some(lowered(&header))
+        }
+        Source::Rows(t) => Some(lowered(t.header)),
+    }
 }
 
 /// Read `text` against `specs`, every row kept ([`read_each`] for the COR tables and drop
 /// tests, which are small).
-pub fn read(text: &str, specs: &[ColumnSpec]) -> Result<Parsed, MeasuredError> {
+pub fn read<'a>(src: impl Into<Source<'a>>, specs: &[ColumnSpec]) -> Result<Parsed, MeasuredError> {
     let mut parsed = Parsed {
         columns: vec![Vec::new(); specs.len()],
         lines: Vec::new(),
         cell_columns: vec![Vec::new(); specs.len()],
         end_line: 0,
     };
-    parsed.end_line = read_each(text, specs, |line, values| {
+    parsed.end_line = read_each(src, specs, |line, values| {
         for (k, &(v, col)) in values.iter().enumerate() {
             parsed.columns[k].push(v);
             parsed.cell_columns[k].push(col);
@@ -65,8 +102,11 @@ pub fn read(text: &str, specs: &[ColumnSpec]) -> Result<Parsed, MeasuredError> {
 
 /// A bound on the data rows of `text` (its line ends, at most [`MAX_ROWS`]), to reserve room
 /// for them once.
-pub fn rows_at_most(text: &str) -> usize {
-    (text.bytes().filter(|&b| b == b'\n').count() + 1).min(MAX_ROWS)
+pub fn rows_at_most(src: Source<'_>) -> usize {
+    match src {
+        Source::Text(text) => (text.bytes().filter(|&b| b == b'\n').count() + 1).min(MAX_ROWS),
+        Source::Rows(t) => t.rows.len().min(MAX_ROWS),
+    }
 }
 
 /// Read `text` against `specs`, handing each data row to `each` as it is read — its line,
@@ -74,18 +114,38 @@ pub fn rows_at_most(text: &str) -> usize {
 /// cell — and keeping none: a million-row trace is held once, in its reader's own vectors
 /// (issue 30 item 4: ≤ 100 MB; tests/fit_memory.rs counts the bytes). Returns the line
 /// after the last one read (for errors about the whole file).
-pub fn read_each(
-    text: &str,
+pub fn read_each<'a>(
+    src: impl Into<Source<'a>>,
+    specs: &[ColumnSpec],
+    each: impl FnMut(usize, &[(Option<f64>, usize)]) -> Result<(), MeasuredError>,
+) -> Result<usize, MeasuredError> {
+    match src.into() {
+        Source::Text(text) => {
+            let text = rows::normalized(text);
+            let sep = rows::separator(&text);
+            let mut lines = Rows::new(&text, sep);
+            let Some(header) = lines.next().transpose()? else {
+                return Err(MeasuredError::at(1, 1, "no data: the file is empty"));
+            };
+            read_rows(sep, &header, lines, specs, each)?;
+            Ok(rows::line_count(&text) + 1)
+        }
+        Source::Rows(t) => {
+            read_rows(t.sep, t.header, t.rows.iter().cloned().map(Ok), specs, each)?;
+            Ok(t.end_line)
+        }
+    }
+}
+
+/// The data rows after `header`, each handed to `each` ([`read_each`]).
+fn read_rows(
+    sep: u8,
+    header: &Row,
+    lines: impl Iterator<Item = Result<Row, MeasuredError>>,
     specs: &[ColumnSpec],
     mut each: impl FnMut(usize, &[(Option<f64>, usize)]) -> Result<(), MeasuredError>,
-) -> Result<usize, MeasuredError> {
-    let text = rows::normalized(text);
-    let sep = rows::separator(&text);
-    let mut lines = Rows::new(&text, sep);
-    let Some(header) = lines.next().transpose()? else {
-        return Err(MeasuredError::at(1, 1, "no data: the file is empty"));
-    };
-    let map = header_map(&header, specs)?;
+) -> Result<(), MeasuredError> {
+    let map = header_map(header, specs)?;
     let mut values = vec![(None, 0); specs.len()];
     let mut count = 0;
     for row in lines {
@@ -128,7 +188,7 @@ pub fn read_each(
             "no data rows after the header",
         ));
     }
-    Ok(rows::line_count(&text) + 1)
+    Ok(())
 }
 
 /// Which spec (and factor) each header cell is; every required spec present once.

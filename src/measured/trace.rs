@@ -69,7 +69,12 @@ impl Trace {
     /// Columns `time`/`t`/`time_s`/`time_ms`/`time_us` and `force`/`F`/`force_N`/`force_kN`.
     /// Rows go straight into the trace's vectors, reserved once (`table::read_each`).
     pub fn parse(text: &str) -> Result<Trace, MeasuredError> {
-        let room = table::rows_at_most(text);
+        Trace::read(text.into())
+    }
+
+    /// [`Trace::parse`] of a text or of rows already read (a batch's ball).
+    pub fn read(src: table::Source<'_>) -> Result<Trace, MeasuredError> {
+        let room = table::rows_at_most(src);
         let mut tr = Trace {
             time: Vec::with_capacity(room),
             force: Vec::with_capacity(room),
@@ -77,7 +82,7 @@ impl Trace {
             force_columns: Vec::with_capacity(room),
             end_line: 0,
         };
-        let end_line = table::read_each(text, &SPECS, |line, v| {
+        let end_line = table::read_each(src, &SPECS, |line, v| {
             let ((t, t_column), (f, f_column)) = (v[0], v[1]);
             let t = t.unwrap_or(f64::NAN);
             if let (Some(&before), Some(&before_line)) = (tr.time.last(), tr.lines.last())

@@ -4,3 +4,4 @@ mod checks;
 pub mod contact;
 pub mod materials;
 pub mod params;
+pub mod static_chain;
