@@ -68,12 +68,16 @@ pub struct Ball {
     /// What the caller changed from the preset (`mass`, `radius`, `k_p`, `c`, `k_r`, `z_p`,
     /// `lambda`, `zeta`), in that order: the JSON `ball.overrides`.
     pub overrides: Vec<String>,
+    /// The conditions the ball is at (temperature, gauge pressure, atmosphere): its
+    /// calibration record's, or those [`Ball::at_conditions`] set; every answer states them.
+    pub conditions: crate::conditions::Conditions,
 }
 
 mod batch;
 mod calibration;
 mod collide;
 mod columns;
+mod conditions;
 mod entry;
 mod error;
 mod fit;
@@ -96,6 +100,7 @@ pub use batch::{
 pub use calibration::{BallRecord, changed_params};
 pub use collide::CollisionReport;
 pub use columns::{Columns, Unanswered, first_pass};
+pub use conditions::{ConditionsSpec, recorded as recorded_conditions, standard_leak};
 pub use entry::Overrides;
 pub use error::BallError;
 pub use intervals::{Intervals, bands, fit_table, holds, intervals};
@@ -183,6 +188,7 @@ impl Ball {
             poisson_ratio: None,
             calibration: None,
             overrides: Vec::new(),
+            conditions: recorded_conditions(None),
         })
     }
 
@@ -214,6 +220,7 @@ impl Ball {
             poisson_ratio: None,
             calibration: None,
             overrides: Vec::new(),
+            conditions: recorded_conditions(None),
         })
     }
 

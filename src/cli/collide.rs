@@ -69,7 +69,7 @@ pub fn run(a: &CollideArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         })?,
     };
     match a.format {
-        CollideFormat::Json => output::json(out, &report)?,
+        CollideFormat::Json => output::json_stated(out, &report, &ball.conditions)?,
         CollideFormat::Text => text(out, &ball, &report, a.target_preset.as_deref())?,
     }
     Ok(())
@@ -109,6 +109,9 @@ fn text(
         Some(o) => format!("{o} (a body of its mass behind the given surface)"),
     };
     writeln!(out, "{} against {what}", ball.label())?;
+    if let Some(line) = ball.conditions_line() {
+        writeln!(out, "{line}")?;
+    }
     writeln!(out, "  law {}, method {}", r.law, r.collision.method.name())?;
     writeln!(out)?;
     table(out, "  ", &setup_rows(r, other.is_some()))?;

@@ -52,7 +52,7 @@ pub fn run(a: &CourtArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         a.tangential.tangential_damping,
     )?;
     match a.format {
-        CourtFormat::Json => output::json(
+        CourtFormat::Json => output::json_stated(
             out,
             &Report {
                 ball: ball.header(),
@@ -61,6 +61,7 @@ pub fn run(a: &CourtArgs, out: &mut dyn Write) -> anyhow::Result<()> {
                 tangential_damping: a.tangential.tangential_damping,
                 pace: &pace,
             },
+            &ball.conditions,
         )?,
         CourtFormat::Text => {
             writeln!(
@@ -69,6 +70,9 @@ pub fn run(a: &CourtArgs, out: &mut dyn Write) -> anyhow::Result<()> {
                 ball.label(),
                 given(a.friction, 6)
             )?;
+            if let Some(line) = ball.conditions_line() {
+                writeln!(out, "{line}")?;
+            }
             let row = |k: &str, v: String| vec![k.to_string(), v];
             let rows = vec![
                 row("court pace rating", human(pace.cpr, 4)),

@@ -133,17 +133,18 @@ pub fn run(a: &DropArgs, out: &mut dyn Write) -> anyhow::Result<()> {
             let mut r = report(&run, &bands, verdict.as_ref(), judged_at);
             r.warnings = warnings;
             r.ball = Some(b.record_json());
-            output::json(out, &r)?
+            output::json_stated(out, &r, &b.conditions)?
         }
         DropFormat::Csv => {
             trajectory_csv(out, &run)?;
             output::warnings_to_stderr(&warnings);
         }
         DropFormat::Text => {
-            let label = match b.overrides_line() {
-                Some(line) => format!("{}\n{line}", b.label()),
-                None => b.label(),
-            };
+            let mut label = b.label();
+            for line in [b.overrides_line(), b.conditions_line()].into_iter().flatten() {
+                label.push('\n');
+                label.push_str(&line);
+            }
             text(out, &label, &run, standard.zip(verdict), radius)?;
             output::warning_lines(out, &warnings)?;
             if let (Some(i), Some(first), Some(fit)) = (bands.first(), run.bounces.first(), &b.fit)

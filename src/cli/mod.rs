@@ -12,6 +12,7 @@ pub mod bat;
 pub mod batch;
 pub mod budget;
 pub mod collide;
+pub mod conditions;
 pub mod court;
 pub mod drop;
 mod exit;

@@ -126,7 +126,7 @@ pub fn run(a: &ObliqueArgs, out: &mut dyn Write) -> anyhow::Result<()> {
                 warnings,
                 record: ball.record_json(),
             };
-            output::json(out, &report)?
+            output::json_stated(out, &report, &ball.conditions)?
         }
         ObliqueFormat::Csv if a.history => {
             history_csv(out, &r)?;
@@ -150,6 +150,9 @@ pub fn run(a: &ObliqueArgs, out: &mut dyn Write) -> anyhow::Result<()> {
                 given(kappa, 4),
                 given(radius * 1e3, 4)
             )?;
+            if let Some(line) = ball.conditions_line() {
+                writeln!(out, "{line}")?;
+            }
             text(out, &r)?;
             output::warning_lines(out, &warnings)?
         }

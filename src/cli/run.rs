@@ -61,6 +61,12 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> anyhow::Result<()> {
              --z-p do not apply"
         );
     }
+    if args.normalized && !args.ball.conditions.spec().is_empty() {
+        anyhow::bail!(
+            "--normalized runs m = K_p = v0 = 1: --pressure, --temperature, --inflated-at, \
+             --after and --half-life do not apply"
+        );
+    }
     ball::check_overrides(&args.ball.set, args.lambda, args.zeta)?;
     let ball = if args.normalized {
         let law = args.ball.law.map_or(ContactLaw::Linear, ContactLaw::from);
@@ -87,7 +93,7 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         RunFormat::Json => {
             let mut report = ImpactReport::new(&ball, &r, args.history);
             report.intervals = intervals;
-            output::json(out, &report)?
+            output::json_stated(out, &report, &ball.conditions)?
         }
         RunFormat::Csv if args.history => {
             history_csv(out, &r)?;

@@ -216,7 +216,7 @@ fn velocity(a: &VelocityArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     match a.format {
         SweepFormat::Json => {
             let n = b.params.normalized();
-            output::json(
+            output::json_stated(
                 out,
                 &VelocityDoc {
                     sweep: "velocity",
@@ -226,6 +226,7 @@ fn velocity(a: &VelocityArgs, out: &mut dyn Write) -> anyhow::Result<()> {
                     rows: &rows,
                     record: b.record_json(),
                 },
+                &b.conditions,
             )?
         }
         SweepFormat::Csv => velocity_csv(out, &rows, !bands.is_empty())?,
