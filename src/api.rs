@@ -91,6 +91,7 @@ mod rows;
 mod shot;
 mod shot_mc;
 mod summary;
+mod standard_conditions;
 mod sweep;
 mod warnings;
 pub use batch::{
@@ -100,6 +101,7 @@ pub use batch::{
 pub use calibration::{BallRecord, changed_params};
 pub use collide::CollisionReport;
 pub use columns::{Columns, Unanswered, first_pass};
+pub use standard_conditions::test_words;
 pub use conditions::{ConditionsSpec, recorded as recorded_conditions, standard_leak};
 pub use entry::Overrides;
 pub use error::BallError;

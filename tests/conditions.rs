@@ -198,3 +198,78 @@ fn the_text_header_states_the_conditions() {
     let s = ok_calibrated(&["drop", "--preset", "basketball"]);
     assert!(s.contains("conditions: temperature not recorded, gauge 55.16 kPa (0.552 bar, 8 psi)"), "{s}");
 }
+
+/// `bouncelab standards` states each test's temperature and pressure, or that its rule
+/// states none; the FIFA 72-hour test is listed as a standard of its own.
+#[test]
+fn standards_state_their_conditions() {
+    let v = common::json(&["standards", "--format", "json"]);
+    let list = v.as_array().unwrap();
+    let by = |n: &str| list.iter().find(|s| s["name"] == n).unwrap().clone();
+    assert_eq!(by("itf")["conditions"]["temperature_c"], serde_json::json!([20.0, 2.0]));
+    assert_eq!(by("itf")["conditions"]["pressure_gauge_pa"], Value::Null);
+    let fiba = by("fiba")["conditions"]["pressure_gauge_pa"].clone();
+    assert!((fiba[0].as_f64().unwrap() - 7.5 * PSI).abs() < 1e-6);
+    assert!((fiba[1].as_f64().unwrap() - 8.5 * PSI).abs() < 1e-6);
+    assert_eq!(by("mlb")["conditions"]["temperature_c"], Value::Null);
+    let leak = by("fifa-pressure-loss");
+    assert_eq!(leak["test"]["kind"], "pressure-loss");
+    assert_eq!(leak["window"], serde_json::json!([null, 0.2]));
+    let text = common::ok(&["standards"]);
+    assert!(text.contains("  fiba: no temperature stated, 51.71–58.61 kPa gauge"), "{text}");
+    assert!(text.contains("  mlb: no temperature or pressure stated"), "{text}");
+}
+
+/// A ball run at other conditions than its standard's says so beside the verdict; at the
+/// test's own it does not.
+#[test]
+fn a_ball_off_its_standards_conditions_is_warned() {
+    let warned = |args: &[&str]| {
+        let v = json_calibrated(args);
+        v["warnings"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .any(|w| w.as_str().unwrap().starts_with("off the test's conditions: "))
+    };
+    let base = ["drop", "--preset", "football", "--standard", "fifa-quality-pro", "--format", "json"];
+    assert!(!warned(&base));
+    let mut cold = base.to_vec();
+    cold.extend(["--temperature", "5"]);
+    assert!(warned(&cold));
+    let mut fiba = vec!["drop", "--preset", "basketball", "--standard", "fiba", "--format", "json"];
+    assert!(!warned(&fiba));
+    fiba.extend(["--pressure", "6psi"]);
+    assert!(warned(&fiba));
+}
+
+/// FIFA's 72-hour test judges the leak: 1 − 2^(−72/300) = 15.33 % lost with a 300 h
+/// half-life passes the 20 % limit, 1 − 2^(−72/150) = 28.3 % fails; the drop is of the ball
+/// after the 72 h (0.8 bar · 2^(−72/300)); without a half-life it is refused.
+#[test]
+fn the_fifa_pressure_loss_test() {
+    let run = |half: &str| {
+        json_calibrated(&[
+            "drop", "--preset", "football", "--standard", "fifa-pressure-loss", "--half-life",
+            half, "--format", "json",
+        ])
+    };
+    let v = run("300h");
+    let pl = &v["pressure_loss"];
+    assert!((f(pl, "lost") - (1.0 - 2f64.powf(-72.0 / 300.0))).abs() < 1e-12);
+    assert_eq!(pl["verdict"], "pass");
+    let p = 80_000.0 * 2f64.powf(-72.0 / 300.0);
+    assert!((f(&v["conditions"], "pressure_gauge_pa") - p).abs() < 1e-6);
+    assert_eq!(run("150h")["pressure_loss"]["verdict"], "fail");
+    assert_bad(
+        &bl(&["drop", "--preset", "football", "--standard", "fifa-pressure-loss"]),
+        &["invalid half-life", "fifa-pressure-loss"],
+    );
+    assert_bad(
+        &bl(&[
+            "drop", "--preset", "football", "--standard", "fifa-pressure-loss", "--half-life",
+            "300h", "--after", "10h",
+        ]),
+        &["give only --half-life"],
+    );
+}

@@ -256,7 +256,7 @@ impl Ball {
 }
 
 /// "20 °C, 0.8 bar": a record's or a run's conditions in words, for the warnings.
-fn words(c: &Conditions) -> String {
+pub(super) fn words(c: &Conditions) -> String {
     let short = crate::text::short;
     let t = c
         .temperature_c

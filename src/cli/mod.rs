@@ -15,6 +15,7 @@ pub mod collide;
 pub mod conditions;
 pub mod court;
 pub mod drop;
+mod drop_leak;
 mod exit;
 pub mod explore;
 pub mod figure;
