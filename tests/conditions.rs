@@ -273,3 +273,49 @@ fn the_fifa_pressure_loss_test() {
         &["give only --half-life"],
     );
 }
+
+/// CORs of the superball's springs with c(T) = 90 kg/s · exp[(40 kJ/mol / R)(1/T − 1/296.15 K)]
+/// (worked by `bouncelab run --preset superball --damping c(T)`, to six decimals).
+const SHIFTED: &str = "temperature_c,v0,cor\n0,2,0.850724\n0,4,0.850724\n10,2,0.780748\n\
+10,4,0.780748\n23,2,0.727505\n23,4,0.727505\n35,2,0.758775\n35,4,0.758775\n45,2,0.815560\n\
+45,4,0.815560\n";
+
+/// `fit --cor-temperature` gives the shift back from its CORs (the six decimals move it by
+/// less than 1e-3), with intervals that hold it; data that rise and fall twice are no
+/// Arrhenius shift: exit 1, "no answer", the report still written; a ball whose record has no
+/// temperature needs --temperature as the reference (exit 2).
+#[test]
+fn fit_cor_temperature_recovers_the_shift_and_refuses_what_it_cannot_fit() {
+    let dir = tempfile::tempdir().unwrap();
+    let good = dir.path().join("shifted.csv");
+    std::fs::write(&good, SHIFTED).unwrap();
+    let good = good.to_str().unwrap();
+    let v = common::json(&[
+        "fit", "--preset", "superball", "--cor-temperature", good, "--temperature", "23",
+        "--format", "json",
+    ]);
+    let c = f(&v["c_ref"], "value");
+    let e = f(&v["activation_energy"], "value");
+    assert!((c / 90.0 - 1.0).abs() < 1e-3, "{c}");
+    assert!((e / 40_000.0 - 1.0).abs() < 1e-3, "{e}");
+    let ci = v["c_ref"]["ci95"].as_array().unwrap();
+    assert!(ci[0].as_f64().unwrap() <= 90.0 * 1.001 && ci[1].as_f64().unwrap() >= 90.0 * 0.999);
+    assert_eq!(v["answered"], true);
+
+    let bad = dir.path().join("zigzag.csv");
+    std::fs::write(
+        &bad,
+        "temperature_c,v0,cor,cor_sd\n0,3,0.5,0.005\n5,3,0.8,0.005\n10,3,0.5,0.005\n\
+         15,3,0.8,0.005\n20,3,0.5,0.005\n25,3,0.8,0.005\n",
+    )
+    .unwrap();
+    let bad = bad.to_str().unwrap();
+    let o = bl(&[
+        "fit", "--preset", "superball", "--cor-temperature", bad, "--temperature", "23",
+    ]);
+    assert_eq!(o.code, 1, "{}", o.stderr);
+    assert!(o.stdout.contains("no answer") && o.stdout.contains("lack of fit"), "{}", o.stdout);
+
+    let o = bl(&["fit", "--preset", "superball", "--cor-temperature", good]);
+    assert_bad(&o, &["invalid temperature", "--temperature T_REF"]);
+}

@@ -9,6 +9,7 @@ mod oblique;
 #[cfg(feature = "tui")]
 pub mod file;
 pub mod overlay;
+mod cor_temperature;
 mod pressure;
 mod rows;
 mod table;
@@ -16,6 +17,7 @@ mod trace;
 
 pub use drop::{Air, DropTest, Flight, G, cor_per_rebound_height, drop_to_cor, drops_to_points};
 pub use oblique::{ObliqueRow, parse_oblique};
+pub use cor_temperature::{CorTemperatureRow, parse_cor_temperature};
 pub use pressure::{PressureRow, parse_pressure};
 pub use table::MAX_ROWS;
 pub use trace::{Trace, TraceSummary};
