@@ -90,8 +90,8 @@ mod report;
 mod rows;
 mod shot;
 mod shot_mc;
-mod summary;
 mod standard_conditions;
+mod summary;
 mod sweep;
 mod warnings;
 pub use batch::{
@@ -101,7 +101,6 @@ pub use batch::{
 pub use calibration::{BallRecord, changed_params};
 pub use collide::CollisionReport;
 pub use columns::{Columns, Unanswered, first_pass};
-pub use standard_conditions::test_words;
 pub use conditions::{ConditionsSpec, recorded as recorded_conditions, standard_leak};
 pub use entry::Overrides;
 pub use error::BallError;
@@ -117,6 +116,7 @@ pub use report::{BallHeader, Energy, FitReport, ImpactReport, MeasuredAt};
 pub use rows::{ImpactRow, Rest, impact_row, impact_rows};
 pub use shot::{ShotBounce, ShotEnd, ShotReport, ShotSpec};
 pub use shot_mc::{SHOT_MC_QUANTITIES, ShotMcReport, ShotMcSpec, ShotSpread, Spread};
+pub use standard_conditions::test_words;
 pub use summary::ImpactSummary;
 pub use sweep::{sweep_zeta, sweep_zeta_watched};
 pub use warnings::{ENERGY_RESIDUAL_MAX, map_indentation_warning};

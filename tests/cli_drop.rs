@@ -23,7 +23,15 @@ fn json_holds_the_issues_keys_and_the_verdict() {
     // issue 56 `conditions`, the ball's)
     assert_eq!(
         keys,
-        ["ball", "bounces", "conditions", "drag", "height", "standard", "warnings"]
+        [
+            "ball",
+            "bounces",
+            "conditions",
+            "drag",
+            "height",
+            "standard",
+            "warnings"
+        ]
     );
     // the standard's drop height is the default
     assert_eq!(f(&v, "height"), 2.54);

@@ -21,8 +21,14 @@ const PSI: f64 = 0.453_592_37 * 9.806_65 / (0.0254 * 0.0254);
 #[test]
 fn the_nominal_conditions_do_not_move_the_answer() {
     for (preset, extra) in [
-        ("football", vec!["--pressure", "0.8bar", "--temperature", "20"]),
-        ("football", vec!["--pressure", "80000", "--inflated-at", "20"]),
+        (
+            "football",
+            vec!["--pressure", "0.8bar", "--temperature", "20"],
+        ),
+        (
+            "football",
+            vec!["--pressure", "80000", "--inflated-at", "20"],
+        ),
         ("basketball", vec!["--pressure", "55160Pa"]),
     ] {
         for cmd in [&["run"][..], &["drop"], &["sweep", "velocity"]] {
@@ -88,13 +94,18 @@ fn fiba(psi: &str) -> (f64, bool) {
 /// below 7.5 psi (at 4 psi the model's ball rebounds below the window's 1.20 m).
 #[test]
 fn a_basketball_bounces_lower_as_its_pressure_falls() {
-    let pressures = ["9psi", "8.5psi", "8psi", "7.5psi", "7psi", "6psi", "5psi", "4psi"];
+    let pressures = [
+        "9psi", "8.5psi", "8psi", "7.5psi", "7psi", "6psi", "5psi", "4psi",
+    ];
     let heights: Vec<(f64, bool)> = pressures.iter().map(|p| fiba(p)).collect();
     for w in heights.windows(2) {
         assert!(w[1].0 < w[0].0, "{heights:?}");
     }
     assert!(fiba("8psi").1, "8 psi passes");
-    assert!(fiba("7.5psi").1 && fiba("8.5psi").1, "the printed range passes");
+    assert!(
+        fiba("7.5psi").1 && fiba("8.5psi").1,
+        "the printed range passes"
+    );
     let (h, pass) = fiba("4psi");
     assert!(!pass && h < 1.20, "{h}");
 }
@@ -108,25 +119,64 @@ fn every_command_that_runs_a_ball_takes_the_conditions_and_states_them() {
         &["oblique", "--angle", "30", "--friction", "0.5"],
         &["court", "--friction", "0.5"],
         &["collide", "--target-mass", "1"],
-        &["bat", "--bat-mass", "0.6", "--ball-speed", "35", "--bat-speed", "25"],
+        &[
+            "bat",
+            "--bat-mass",
+            "0.6",
+            "--ball-speed",
+            "35",
+            "--bat-speed",
+            "25",
+        ],
         &["peers"],
         &["mc", "--samples", "4", "--vary", "k_r=5%"],
     ];
     for run in runs {
         let mut args = run.to_vec();
-        args.extend(["--preset", "football", "--pressure", "0.6bar", "--format", "json"]);
+        args.extend([
+            "--preset",
+            "football",
+            "--pressure",
+            "0.6bar",
+            "--format",
+            "json",
+        ]);
         let v = json_calibrated(&args);
-        assert_eq!(f(&v["conditions"], "pressure_gauge_pa"), 60_000.0, "{args:?}");
+        assert_eq!(
+            f(&v["conditions"], "pressure_gauge_pa"),
+            60_000.0,
+            "{args:?}"
+        );
         assert_eq!(f(&v["conditions"], "temperature_c"), 20.0, "{args:?}");
     }
     let map = json_calibrated(&[
-        "map", "--preset", "football", "--pressure", "0.6bar", "--format", "json", "--lambda",
-        "0.5:2:3", "--zeta", "0.01:1:3",
+        "map",
+        "--preset",
+        "football",
+        "--pressure",
+        "0.6bar",
+        "--format",
+        "json",
+        "--lambda",
+        "0.5:2:3",
+        "--zeta",
+        "0.01:1:3",
     ]);
     assert_eq!(f(&map["conditions"], "pressure_gauge_pa"), 60_000.0);
     let shot = json_calibrated(&[
-        "shot", "--preset", "football", "--pressure", "0.6bar", "--format", "json", "--speed",
-        "20", "--height", "1", "--friction", "0.5",
+        "shot",
+        "--preset",
+        "football",
+        "--pressure",
+        "0.6bar",
+        "--format",
+        "json",
+        "--speed",
+        "20",
+        "--height",
+        "1",
+        "--friction",
+        "0.5",
     ]);
     assert_eq!(f(&shot["conditions"], "pressure_gauge_pa"), 60_000.0);
 }
@@ -144,20 +194,52 @@ fn a_solid_ball_states_no_pressure() {
 #[test]
 fn conditions_a_ball_cannot_take_are_refused_naming_the_field_and_the_ball() {
     let cases: [(&[&str], &[&str]); 8] = [
-        (&["run", "--preset", "superball", "--pressure", "1bar"], &["invalid pressure", "superball is not inflated"]),
-        (&["drop", "--preset", "golf", "--after", "72h"], &["invalid after", "golf is not inflated"]),
-        (&["run", "--preset", "superball", "--temperature", "5"], &["invalid temperature", "superball has no temperature model"]),
-        (&["run", "--preset", "basketball", "--temperature", "5"], &["invalid inflated-at", "basketball"]),
-        (&["drop", "--preset", "basketball", "--after", "3d"], &["invalid after", "no leak rate is known for basketball"]),
-        (&["run", "--preset", "football", "--pressure", "0"], &["invalid pressure", "flat"]),
-        (&["run", "--preset", "football", "--pressure", "0.8bars"], &["invalid pressure"]),
-        (&["run", "--preset", "football", "--after", "-1h"], &["invalid after"]),
+        (
+            &["run", "--preset", "superball", "--pressure", "1bar"],
+            &["invalid pressure", "superball is not inflated"],
+        ),
+        (
+            &["drop", "--preset", "golf", "--after", "72h"],
+            &["invalid after", "golf is not inflated"],
+        ),
+        (
+            &["run", "--preset", "superball", "--temperature", "5"],
+            &["invalid temperature", "superball has no temperature model"],
+        ),
+        (
+            &["run", "--preset", "basketball", "--temperature", "5"],
+            &["invalid inflated-at", "basketball"],
+        ),
+        (
+            &["drop", "--preset", "basketball", "--after", "3d"],
+            &["invalid after", "no leak rate is known for basketball"],
+        ),
+        (
+            &["run", "--preset", "football", "--pressure", "0"],
+            &["invalid pressure", "flat"],
+        ),
+        (
+            &["run", "--preset", "football", "--pressure", "0.8bars"],
+            &["invalid pressure"],
+        ),
+        (
+            &["run", "--preset", "football", "--after", "-1h"],
+            &["invalid after"],
+        ),
     ];
     for (args, needles) in cases {
         assert_bad(&bl(args), needles);
     }
     assert_bad(
-        &bl(&["run", "--preset", "football", "--pressure", "1bar", "--k-p", "5e4"]),
+        &bl(&[
+            "run",
+            "--preset",
+            "football",
+            "--pressure",
+            "1bar",
+            "--k-p",
+            "5e4",
+        ]),
         &["invalid pressure", "--k-p"],
     );
     assert_bad(
@@ -171,7 +253,9 @@ fn conditions_a_ball_cannot_take_are_refused_naming_the_field_and_the_ball() {
 /// measurement. A half-life given replaces it: 0.8 bar · 2^(−720/500) after 30 d.
 #[test]
 fn after_a_time_the_ball_has_leaked() {
-    let o = bl(&["drop", "--preset", "football", "--after", "72h", "--format", "json"]);
+    let o = bl(&[
+        "drop", "--preset", "football", "--after", "72h", "--format", "json",
+    ]);
     assert_eq!(o.code, 0, "{}", o.stderr);
     let v: Value = serde_json::from_str(&o.stdout).unwrap();
     assert!((f(&v["conditions"], "pressure_gauge_pa") - 64_000.0).abs() < 1e-6);
@@ -181,7 +265,14 @@ fn after_a_time_the_ball_has_leaked() {
     });
     assert!(warned, "{}", v["warnings"]);
     let v = json_calibrated(&[
-        "run", "--preset", "football", "--after", "30d", "--half-life", "500h", "--format",
+        "run",
+        "--preset",
+        "football",
+        "--after",
+        "30d",
+        "--half-life",
+        "500h",
+        "--format",
         "json",
     ]);
     let expected = 80_000.0 * 2f64.powf(-720.0 / 500.0);
@@ -194,9 +285,15 @@ fn the_text_header_states_the_conditions() {
     let s = ok_calibrated(&["run", "--preset", "football", "--temperature", "5"]);
     let line = s.lines().find(|l| l.starts_with("conditions: ")).expect(&s);
     // 181 325 Pa · 278.15/293.15 − 101 325 Pa = 70 722 Pa
-    assert!(line.starts_with("conditions: 5 °C, gauge 70.72 kPa (0.707 bar, 10.26 psi)"), "{line}");
+    assert!(
+        line.starts_with("conditions: 5 °C, gauge 70.72 kPa (0.707 bar, 10.26 psi)"),
+        "{line}"
+    );
     let s = ok_calibrated(&["drop", "--preset", "basketball"]);
-    assert!(s.contains("conditions: temperature not recorded, gauge 55.16 kPa (0.552 bar, 8 psi)"), "{s}");
+    assert!(
+        s.contains("conditions: temperature not recorded, gauge 55.16 kPa (0.552 bar, 8 psi)"),
+        "{s}"
+    );
 }
 
 /// `bouncelab standards` states each test's temperature and pressure, or that its rule
@@ -206,7 +303,10 @@ fn standards_state_their_conditions() {
     let v = common::json(&["standards", "--format", "json"]);
     let list = v.as_array().unwrap();
     let by = |n: &str| list.iter().find(|s| s["name"] == n).unwrap().clone();
-    assert_eq!(by("itf")["conditions"]["temperature_c"], serde_json::json!([20.0, 2.0]));
+    assert_eq!(
+        by("itf")["conditions"]["temperature_c"],
+        serde_json::json!([20.0, 2.0])
+    );
     assert_eq!(by("itf")["conditions"]["pressure_gauge_pa"], Value::Null);
     let fiba = by("fiba")["conditions"]["pressure_gauge_pa"].clone();
     assert!((fiba[0].as_f64().unwrap() - 7.5 * PSI).abs() < 1e-6);
@@ -216,8 +316,14 @@ fn standards_state_their_conditions() {
     assert_eq!(leak["test"]["kind"], "pressure-loss");
     assert_eq!(leak["window"], serde_json::json!([null, 0.2]));
     let text = common::ok(&["standards"]);
-    assert!(text.contains("  fiba: no temperature stated, 51.71–58.61 kPa gauge"), "{text}");
-    assert!(text.contains("  mlb: no temperature or pressure stated"), "{text}");
+    assert!(
+        text.contains("  fiba: no temperature stated, 51.71–58.61 kPa gauge"),
+        "{text}"
+    );
+    assert!(
+        text.contains("  mlb: no temperature or pressure stated"),
+        "{text}"
+    );
 }
 
 /// A ball run at other conditions than its standard's says so beside the verdict; at the
@@ -226,18 +332,34 @@ fn standards_state_their_conditions() {
 fn a_ball_off_its_standards_conditions_is_warned() {
     let warned = |args: &[&str]| {
         let v = json_calibrated(args);
-        v["warnings"]
-            .as_array()
-            .unwrap()
-            .iter()
-            .any(|w| w.as_str().unwrap().starts_with("off the test's conditions: "))
+        v["warnings"].as_array().unwrap().iter().any(|w| {
+            w.as_str()
+                .unwrap()
+                .starts_with("off the test's conditions: ")
+        })
     };
-    let base = ["drop", "--preset", "football", "--standard", "fifa-quality-pro", "--format", "json"];
+    let base = [
+        "drop",
+        "--preset",
+        "football",
+        "--standard",
+        "fifa-quality-pro",
+        "--format",
+        "json",
+    ];
     assert!(!warned(&base));
     let mut cold = base.to_vec();
     cold.extend(["--temperature", "5"]);
     assert!(warned(&cold));
-    let mut fiba = vec!["drop", "--preset", "basketball", "--standard", "fiba", "--format", "json"];
+    let mut fiba = vec![
+        "drop",
+        "--preset",
+        "basketball",
+        "--standard",
+        "fiba",
+        "--format",
+        "json",
+    ];
     assert!(!warned(&fiba));
     fiba.extend(["--pressure", "6psi"]);
     assert!(warned(&fiba));
@@ -250,8 +372,15 @@ fn a_ball_off_its_standards_conditions_is_warned() {
 fn the_fifa_pressure_loss_test() {
     let run = |half: &str| {
         json_calibrated(&[
-            "drop", "--preset", "football", "--standard", "fifa-pressure-loss", "--half-life",
-            half, "--format", "json",
+            "drop",
+            "--preset",
+            "football",
+            "--standard",
+            "fifa-pressure-loss",
+            "--half-life",
+            half,
+            "--format",
+            "json",
         ])
     };
     let v = run("300h");
@@ -262,13 +391,26 @@ fn the_fifa_pressure_loss_test() {
     assert!((f(&v["conditions"], "pressure_gauge_pa") - p).abs() < 1e-6);
     assert_eq!(run("150h")["pressure_loss"]["verdict"], "fail");
     assert_bad(
-        &bl(&["drop", "--preset", "football", "--standard", "fifa-pressure-loss"]),
+        &bl(&[
+            "drop",
+            "--preset",
+            "football",
+            "--standard",
+            "fifa-pressure-loss",
+        ]),
         &["invalid half-life", "fifa-pressure-loss"],
     );
     assert_bad(
         &bl(&[
-            "drop", "--preset", "football", "--standard", "fifa-pressure-loss", "--half-life",
-            "300h", "--after", "10h",
+            "drop",
+            "--preset",
+            "football",
+            "--standard",
+            "fifa-pressure-loss",
+            "--half-life",
+            "300h",
+            "--after",
+            "10h",
         ]),
         &["give only --half-life"],
     );
@@ -291,8 +433,15 @@ fn fit_cor_temperature_recovers_the_shift_and_refuses_what_it_cannot_fit() {
     std::fs::write(&good, SHIFTED).unwrap();
     let good = good.to_str().unwrap();
     let v = common::json(&[
-        "fit", "--preset", "superball", "--cor-temperature", good, "--temperature", "23",
-        "--format", "json",
+        "fit",
+        "--preset",
+        "superball",
+        "--cor-temperature",
+        good,
+        "--temperature",
+        "23",
+        "--format",
+        "json",
     ]);
     let c = f(&v["c_ref"], "value");
     let e = f(&v["activation_energy"], "value");
@@ -311,10 +460,20 @@ fn fit_cor_temperature_recovers_the_shift_and_refuses_what_it_cannot_fit() {
     .unwrap();
     let bad = bad.to_str().unwrap();
     let o = bl(&[
-        "fit", "--preset", "superball", "--cor-temperature", bad, "--temperature", "23",
+        "fit",
+        "--preset",
+        "superball",
+        "--cor-temperature",
+        bad,
+        "--temperature",
+        "23",
     ]);
     assert_eq!(o.code, 1, "{}", o.stderr);
-    assert!(o.stdout.contains("no answer") && o.stdout.contains("lack of fit"), "{}", o.stdout);
+    assert!(
+        o.stdout.contains("no answer") && o.stdout.contains("lack of fit"),
+        "{}",
+        o.stdout
+    );
 
     let o = bl(&["fit", "--preset", "superball", "--cor-temperature", good]);
     assert_bad(&o, &["invalid temperature", "--temperature T_REF"]);

@@ -115,8 +115,13 @@ def run(
     damping: Optional[float] = None,
     k_r: Optional[float] = None,
     z_p: Optional[float] = None,
+    pressure: Optional[Union[float, str]] = None,
+    temperature: Optional[float] = None,
+    inflated_at: Optional[float] = None,
 ) -> Impact:
-    """One impact of a preset, as ``bouncelab run --preset NAME``."""
+    """One impact of a preset, as ``bouncelab run --preset NAME``; ``pressure`` (Pa, or with
+    its unit: ``"0.8bar"``, ``"8psi"``), ``temperature`` and ``inflated_at`` (°C) as
+    ``--pressure``, ``--temperature``, ``--inflated-at`` (inflated balls only)."""
 
 def run_normalized(
     lambda_: float = 1.0,
@@ -418,6 +423,9 @@ def drop(
     damping: Optional[float] = None,
     k_r: Optional[float] = None,
     z_p: Optional[float] = None,
+    pressure: Optional[Union[float, str]] = None,
+    temperature: Optional[float] = None,
+    inflated_at: Optional[float] = None,
 ) -> Drop:
     """A drop test, bounce by bounce, as ``bouncelab drop --format json``: released from rest at
     ``height`` (m, the bottom of the ball; default the standard's drop height, else 1 m);

@@ -154,17 +154,19 @@ impl Ball {
             return Ok((Leak::from_half_life(h).map_err(from)?, None));
         }
         let name = self.name.as_deref().unwrap_or("");
-        standard_leak(name).map(|(l, s)| (l, Some(s))).ok_or_else(|| {
-            invalid(
-                "after",
-                spec.after.unwrap_or(0.0),
-                format!(
-                    "no leak rate is known for {}: give --half-life (fit one with fit \
+        standard_leak(name)
+            .map(|(l, s)| (l, Some(s)))
+            .ok_or_else(|| {
+                invalid(
+                    "after",
+                    spec.after.unwrap_or(0.0),
+                    format!(
+                        "no leak rate is known for {}: give --half-life (fit one with fit \
                      --pressure-loss)",
-                    self.called()
-                ),
-            )
-        })
+                        self.called()
+                    ),
+                )
+            })
     }
 
     /// A solid ball: no pressure, no leak; a temperature only at the record's own.
@@ -239,9 +241,11 @@ impl Ball {
             return None;
         }
         let short = crate::text::short;
-        let t = c.temperature_c.map_or("temperature not recorded".into(), |t| {
-            format!("{} °C", short(t, 4))
-        });
+        let t = c
+            .temperature_c
+            .map_or("temperature not recorded".into(), |t| {
+                format!("{} °C", short(t, 4))
+            });
         let p = c.pressure_gauge_pa.map_or("solid ball".into(), |p| {
             format!(
                 "gauge {} kPa ({} bar, {} psi)",
@@ -260,7 +264,9 @@ pub(super) fn words(c: &Conditions) -> String {
     let short = crate::text::short;
     let t = c
         .temperature_c
-        .map_or("an unrecorded temperature".into(), |t| format!("{} °C", short(t, 4)));
+        .map_or("an unrecorded temperature".into(), |t| {
+            format!("{} °C", short(t, 4))
+        });
     match c.pressure_gauge_pa {
         Some(p) => format!("{t}, {} kPa gauge", short(p / 1e3, 4)),
         None => t,
@@ -274,17 +280,20 @@ impl Ball {
     pub fn conditions_moved(&self) -> Option<String> {
         let record = recorded(Some(self.calibration.as_ref()?));
         (record != self.conditions).then(|| {
-            let leak = self.conditions.leak.map_or(String::new(), |(t, half, assumed)| {
-                let h = crate::text::short;
-                let whose = match assumed {
-                    Some(s) => format!(
-                        "no measured leak rate: the limit of {s} assumed, half-life {} h",
-                        h(half / HOUR, 4)
-                    ),
-                    None => format!("half-life {} h", h(half / HOUR, 4)),
-                };
-                format!(", {} h after inflation ({whose})", h(t / HOUR, 4))
-            });
+            let leak = self
+                .conditions
+                .leak
+                .map_or(String::new(), |(t, half, assumed)| {
+                    let h = crate::text::short;
+                    let whose = match assumed {
+                        Some(s) => format!(
+                            "no measured leak rate: the limit of {s} assumed, half-life {} h",
+                            h(half / HOUR, 4)
+                        ),
+                        None => format!("half-life {} h", h(half / HOUR, 4)),
+                    };
+                    format!(", {} h after inflation ({whose})", h(t / HOUR, 4))
+                });
             format!(
                 "the ball at {}{leak}; its record at {}",
                 words(&self.conditions),

@@ -125,12 +125,21 @@ mod tests {
             temperature: Some(5.0),
             ..ConditionsSpec::default()
         };
-        let (b, w) = cold.clone().at_standard("fifa-quality-pro", &asked).unwrap();
+        let (b, w) = cold
+            .clone()
+            .at_standard("fifa-quality-pro", &asked)
+            .unwrap();
         assert_eq!(b.conditions.temperature_c, Some(5.0));
-        assert!(w.unwrap().contains("fifa-quality-pro tests at 20 ± 2 °C, 80 kPa gauge"));
+        assert!(
+            w.unwrap()
+                .contains("fifa-quality-pro tests at 20 ± 2 °C, 80 kPa gauge")
+        );
         // at the record: unchanged, no warning
         let own = Ball::from_preset("football").unwrap();
-        let (b, w) = own.clone().at_standard("fifa-quality-pro", &ConditionsSpec::default()).unwrap();
+        let (b, w) = own
+            .clone()
+            .at_standard("fifa-quality-pro", &ConditionsSpec::default())
+            .unwrap();
         assert_eq!((b, w), (own, None));
     }
 }

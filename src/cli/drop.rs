@@ -159,7 +159,10 @@ pub fn run(a: &DropArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         }
         DropFormat::Text => {
             let mut label = b.label();
-            for line in [b.overrides_line(), b.conditions_line()].into_iter().flatten() {
+            for line in [b.overrides_line(), b.conditions_line()]
+                .into_iter()
+                .flatten()
+            {
                 label.push('\n');
                 label.push_str(&line);
             }

@@ -83,7 +83,11 @@ pub fn judge(test: &PressureLoss, half_life: f64) -> anyhow::Result<LeakVerdict>
         max_loss: test.max_loss,
         half_life_h: half_life / HOUR,
         lost,
-        verdict: if lost <= test.max_loss { "pass" } else { "fail" },
+        verdict: if lost <= test.max_loss {
+            "pass"
+        } else {
+            "fail"
+        },
         margin: test.max_loss - lost,
     })
 }

@@ -143,7 +143,9 @@ pub fn run(a: &McArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     }
     let mut report = Vec::new();
     match a.format {
-        McFormat::Json => output::json_stated(&mut report, &McReport::new(&ball, &s), &ball.conditions)?,
+        McFormat::Json => {
+            output::json_stated(&mut report, &McReport::new(&ball, &s), &ball.conditions)?
+        }
         McFormat::Text => text(&mut report, &ball, &spec, s.no_rebound, &s.stats)?,
     }
     report_then_commit(out, &report, files)?;

@@ -69,8 +69,7 @@ fn pressure_loss_json(p: &PressureLoss) -> serde_json::Result<serde_json::Value>
                  "temperature": p.temperature},
         "window": [null, p.max_loss],
         "source": p.source,
-        "unconfirmed": "FIFA's own test manual is not public: the limit is as licensed makers \
-                        publish it",
+        "unconfirmed": p.unconfirmed,
         "balls": p.balls,
         "conditions": conditions_json(p.name)?,
     }))

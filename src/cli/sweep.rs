@@ -23,6 +23,9 @@ pub enum SweepFormat {
 }
 
 #[derive(Debug, Clone, Subcommand)]
+// parsed once a process: the velocity sweep's options (the ball's, its conditions) are the
+// larger, and boxing them would buy nothing
+#[allow(clippy::large_enum_variant)]
 pub enum Sweep {
     /// COR, normalized peak force and contact time against ζ (log-spaced), one curve per λ,
     /// without flattening (Figs. 2, 3)

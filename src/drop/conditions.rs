@@ -100,6 +100,8 @@ pub struct PressureLoss {
     pub balls: &'static [&'static str],
     /// Where the numbers come from.
     pub source: &'static str,
+    /// What could not be confirmed from a public source.
+    pub unconfirmed: &'static str,
 }
 
 /// FIFA's 72-hour test: at most 20 % lost (Quality Pro; 25 % for Quality) from 0.8 bar at
@@ -115,6 +117,8 @@ pub const PRESSURE_LOSS: [PressureLoss; 1] = [PressureLoss {
     source: "FIFA Quality Programme for Footballs, loss of pressure (≤ 20 % in 72 h for \
              Quality Pro, ≤ 25 % for Quality), as published by licensed makers (derbystar.de, \
              \"FIFA Quality Pro\")",
+    unconfirmed: "FIFA's own test manual is not public: the limit is as licensed makers \
+                  publish it",
 }];
 
 #[cfg(test)]

@@ -87,8 +87,14 @@ mod tests {
         let rows = parse_cor_temperature("temperature_c,v0,cor,cor_sd\n23,3,0.5,0.01\n45,3,0.6,\n")
             .unwrap();
         assert_eq!(rows.len(), 2);
-        assert_eq!((rows[0].temperature_c, rows[0].v0, rows[0].cor), (23.0, 3.0, 0.5));
-        assert_eq!((rows[0].sd, rows[1].sd, rows[1].line), (Some(0.01), None, 3));
+        assert_eq!(
+            (rows[0].temperature_c, rows[0].v0, rows[0].cor),
+            (23.0, 3.0, 0.5)
+        );
+        assert_eq!(
+            (rows[0].sd, rows[1].sd, rows[1].line),
+            (Some(0.01), None, 3)
+        );
         let e = parse_cor_temperature("temperature_c,v0,cor\n23,3,1.5\n").unwrap_err();
         assert_eq!((e.line, e.column), (2, 6), "{e}");
         let e = parse_cor_temperature("temperature_c,v0,cor\n-300,3,0.5\n").unwrap_err();

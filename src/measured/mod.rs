@@ -6,18 +6,18 @@
 mod drop;
 mod oblique;
 // reading a data file from disk: anyhow, which the `tui` and `cli` features bring
+mod cor_temperature;
 #[cfg(feature = "tui")]
 pub mod file;
 pub mod overlay;
-mod cor_temperature;
 mod pressure;
 mod rows;
 mod table;
 mod trace;
 
+pub use cor_temperature::{CorTemperatureRow, parse_cor_temperature};
 pub use drop::{Air, DropTest, Flight, G, cor_per_rebound_height, drop_to_cor, drops_to_points};
 pub use oblique::{ObliqueRow, parse_oblique};
-pub use cor_temperature::{CorTemperatureRow, parse_cor_temperature};
 pub use pressure::{PressureRow, parse_pressure};
 pub use table::MAX_ROWS;
 pub use trace::{Trace, TraceSummary};

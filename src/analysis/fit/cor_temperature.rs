@@ -117,7 +117,11 @@ impl Residuals for Problem<'_> {
         self.points
             .iter()
             .map(|p| {
-                let s = if self.stated { p.sd.unwrap_or(1.0) } else { 1.0 };
+                let s = if self.stated {
+                    p.sd.unwrap_or(1.0)
+                } else {
+                    1.0
+                };
                 self.cor(c_ref, activation, p).map(|e| (p.cor - e) / s)
             })
             .collect()
@@ -222,9 +226,8 @@ pub fn fit_cor_temperature(
     };
     let mut no_answer = verdict::no_answer_reasons(sol.converged, &[]);
     if lack_of_fit.as_ref().is_some_and(LackOfFit::significant) {
-        no_answer.push(
-            "the CORs do not follow an Arrhenius shift of the dashpot (lack of fit)".into(),
-        );
+        no_answer
+            .push("the CORs do not follow an Arrhenius shift of the dashpot (lack of fit)".into());
     }
     Ok(TemperatureFit {
         t_ref_c,

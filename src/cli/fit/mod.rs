@@ -15,12 +15,12 @@ use std::io::Write;
 use std::path::PathBuf;
 
 mod leak;
-mod temperature;
 pub mod multi;
 mod oblique;
 mod plot;
 mod report;
 mod save;
+mod temperature;
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
 pub enum FitFormat {

@@ -63,10 +63,18 @@ fn the_arrhenius_shift() {
 
 #[test]
 fn exact_data_give_the_shift_back() {
-    let fit = fit_cor_temperature(&ball(), ContactLaw::Linear, T_REF, &data(0.0, 1, false))
-        .unwrap();
-    assert!((fit.c_ref.value / C_REF - 1.0).abs() < 1e-5, "{}", fit.c_ref.value);
-    assert!((fit.activation.value / E_A - 1.0).abs() < 1e-4, "{}", fit.activation.value);
+    let fit =
+        fit_cor_temperature(&ball(), ContactLaw::Linear, T_REF, &data(0.0, 1, false)).unwrap();
+    assert!(
+        (fit.c_ref.value / C_REF - 1.0).abs() < 1e-5,
+        "{}",
+        fit.c_ref.value
+    );
+    assert!(
+        (fit.activation.value / E_A - 1.0).abs() < 1e-4,
+        "{}",
+        fit.activation.value
+    );
     assert!(fit.no_answer.is_empty(), "{:?}", fit.no_answer);
 }
 
@@ -77,9 +85,8 @@ fn exact_data_give_the_shift_back() {
 fn noisy_data_recover_the_shift_with_honest_intervals() {
     let mut missed = [0, 0];
     for seed in 0..40 {
-        let fit =
-            fit_cor_temperature(&ball(), ContactLaw::Linear, T_REF, &data(0.004, seed, true))
-                .unwrap();
+        let fit = fit_cor_temperature(&ball(), ContactLaw::Linear, T_REF, &data(0.004, seed, true))
+            .unwrap();
         assert!(fit.no_answer.is_empty(), "seed {seed}: {:?}", fit.no_answer);
         let [lo, hi] = fit.c_ref.ci95;
         missed[0] += usize::from(!(lo..=hi).contains(&C_REF));

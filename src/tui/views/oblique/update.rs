@@ -271,11 +271,11 @@ impl App {
         }
         let cancel = Arc::new(AtomicBool::new(false));
         o.out = Some(Arc::clone(&cancel));
-        Some(Effect::ObliqueMap(MapJob {
+        Some(Effect::ObliqueMap(Box::new(MapJob {
             generation: o.generation,
             spec,
             cancel,
-        }))
+        })))
     }
 
     /// The worker's map: kept when it is of the map asked last.
