@@ -356,13 +356,24 @@ def fit_oblique(
 class StandardTest(TypedDict, total=False):
     """What a standard measures: ``kind`` "drop" (``height`` m to ``drop_ref``, the rebound
     read at ``rebound_ref``: "bottom" or "top"), "cor" and "bbcor" (``speed`` m/s),
-    "court-pace" (``speed`` m/s at ``angle_deg``)."""
-    kind: Literal["drop", "cor", "bbcor", "court-pace"]
+    "court-pace" (``speed`` m/s at ``angle_deg``), "pressure-loss" (``hours`` at
+    ``temperature`` °C from ``pressure`` Pa gauge)."""
+    kind: Literal["drop", "cor", "bbcor", "court-pace", "pressure-loss"]
     height: float
     drop_ref: Literal["bottom", "top"]
     rebound_ref: Literal["bottom", "top"]
     speed: float
     angle_deg: float
+    hours: float
+    pressure: float
+    temperature: float
+
+class StandardConditions(TypedDict):
+    """A test's conditions as its rule states them: ``temperature_c`` [nominal, ±] °C and
+    ``pressure_gauge_pa`` [lo, hi] Pa, None where the rule states none, and their ``source``."""
+    temperature_c: Optional[list[float]]
+    pressure_gauge_pa: Optional[list[float]]
+    source: str
 
 class Standard(TypedDict, total=False):
     """One governing body's test, as ``bouncelab standards --format json`` lists it."""
@@ -375,6 +386,7 @@ class Standard(TypedDict, total=False):
     balls: list[str]
     source: str
     unconfirmed: Optional[str]
+    conditions: StandardConditions
 
 def standards() -> list[Standard]:
     """The standards, as ``bouncelab standards --format json``: the ball standards, the bat
