@@ -68,6 +68,9 @@ pub struct Ball {
     /// What the caller changed from the preset (`mass`, `radius`, `k_p`, `c`, `k_r`, `z_p`,
     /// `lambda`, `zeta`), in that order: the JSON `ball.overrides`.
     pub overrides: Vec<String>,
+    /// The conditions the ball is at (temperature, gauge pressure, atmosphere): its
+    /// calibration record's, or those [`Ball::at_conditions`] set; every answer states them.
+    pub conditions: crate::conditions::Conditions,
 }
 
 mod batch;
@@ -77,6 +80,7 @@ mod calibration;
 mod collide;
 mod columns;
 mod court;
+mod conditions;
 mod entry;
 mod error;
 mod fit;
@@ -89,6 +93,7 @@ mod report;
 mod rows;
 mod shot;
 mod shot_mc;
+mod standard_conditions;
 mod summary;
 mod surface;
 mod sweep;
@@ -99,6 +104,7 @@ pub use calibration::{BallRecord, changed_params};
 pub use collide::CollisionReport;
 pub use columns::{Columns, Unanswered, first_pass};
 pub use court::{CourtCalibration, ITF_ANGLE, ITF_SPEED};
+pub use conditions::{ConditionsSpec, recorded as recorded_conditions, standard_leak};
 pub use entry::Overrides;
 pub use error::BallError;
 pub use intervals::{Intervals, bands, fit_table, holds, intervals};
@@ -113,6 +119,7 @@ pub use report::{BallHeader, Energy, FitReport, ImpactReport, MeasuredAt};
 pub use rows::{ImpactRow, Rest, impact_row, impact_rows};
 pub use shot::{ShotBounce, ShotEnd, ShotReport, ShotSpec};
 pub use shot_mc::{SHOT_MC_QUANTITIES, ShotMcReport, ShotMcSpec, ShotSpread, Spread};
+pub use standard_conditions::test_words;
 pub use summary::ImpactSummary;
 pub use sweep::{sweep_zeta, sweep_zeta_watched};
 pub use warnings::{ENERGY_RESIDUAL_MAX, map_indentation_warning};
@@ -186,6 +193,7 @@ impl Ball {
             poisson_ratio: None,
             calibration: None,
             overrides: Vec::new(),
+            conditions: recorded_conditions(None),
         })
     }
 
@@ -217,6 +225,7 @@ impl Ball {
             poisson_ratio: None,
             calibration: None,
             overrides: Vec::new(),
+            conditions: recorded_conditions(None),
         })
     }
 

@@ -20,11 +20,18 @@ fn json_holds_the_issues_keys_and_the_verdict() {
     // serde_json's map sorts its keys
     let keys: Vec<&String> = v.as_object().unwrap().keys().collect();
     // (issue 27 added `warnings`, the first impact's; issue 52 `ball`, the ball dropped;
-    // issue 53 `surface`, the floor it bounced on)
+    // issue 53 `surface`, the floor it bounced on; issue 56 `conditions`, the ball's)
     assert_eq!(
         keys,
         [
-            "ball", "bounces", "drag", "height", "standard", "surface", "warnings"
+            "ball",
+            "bounces",
+            "conditions",
+            "drag",
+            "height",
+            "standard",
+            "surface",
+            "warnings"
         ]
     );
     // the standard's drop height is the default
@@ -280,7 +287,9 @@ fn standards_lists_every_standard() {
     // the ball standards, then the bat standards (tests/cli_targets.rs), then the court's
     // (tests/cli_oblique.rs)
     let bats = bouncelab::target::bat::BAT_STANDARDS.len();
-    assert_eq!(list.len(), STANDARDS.len() + bats + 1);
+    // and the pressure-loss tests (tests/conditions.rs)
+    let leaks = bouncelab::drop::conditions::PRESSURE_LOSS.len();
+    assert_eq!(list.len(), STANDARDS.len() + bats + 1 + leaks);
     assert_eq!(list[3]["name"], "fiba");
     assert_eq!(list[3]["test"]["rebound_ref"], "top");
     assert_eq!(list[3]["window"], serde_json::json!([1.2, 1.4]));

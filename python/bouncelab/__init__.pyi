@@ -122,9 +122,14 @@ def run(
     damping: Optional[float] = None,
     k_r: Optional[float] = None,
     z_p: Optional[float] = None,
+    pressure: Optional[Union[float, str]] = None,
+    temperature: Optional[float] = None,
+    inflated_at: Optional[float] = None,
     surface: Optional[SurfaceArg] = None,
 ) -> Impact:
-    """One impact of a preset, as ``bouncelab run --preset NAME``."""
+    """One impact of a preset, as ``bouncelab run --preset NAME``; ``pressure`` (Pa, or with
+    its unit: ``"0.8bar"``, ``"8psi"``), ``temperature`` and ``inflated_at`` (°C) as
+    ``--pressure``, ``--temperature``, ``--inflated-at`` (inflated balls only)."""
 
 def run_normalized(
     lambda_: float = 1.0,
@@ -359,13 +364,24 @@ def fit_oblique(
 class StandardTest(TypedDict, total=False):
     """What a standard measures: ``kind`` "drop" (``height`` m to ``drop_ref``, the rebound
     read at ``rebound_ref``: "bottom" or "top"), "cor" and "bbcor" (``speed`` m/s),
-    "court-pace" (``speed`` m/s at ``angle_deg``)."""
-    kind: Literal["drop", "cor", "bbcor", "court-pace"]
+    "court-pace" (``speed`` m/s at ``angle_deg``), "pressure-loss" (``hours`` at
+    ``temperature`` °C from ``pressure`` Pa gauge)."""
+    kind: Literal["drop", "cor", "bbcor", "court-pace", "pressure-loss"]
     height: float
     drop_ref: Literal["bottom", "top"]
     rebound_ref: Literal["bottom", "top"]
     speed: float
     angle_deg: float
+    hours: float
+    pressure: float
+    temperature: float
+
+class StandardConditions(TypedDict):
+    """A test's conditions as its rule states them: ``temperature_c`` [nominal, ±] °C and
+    ``pressure_gauge_pa`` [lo, hi] Pa, None where the rule states none, and their ``source``."""
+    temperature_c: Optional[list[float]]
+    pressure_gauge_pa: Optional[list[float]]
+    source: str
 
 class Standard(TypedDict, total=False):
     """One governing body's test, as ``bouncelab standards --format json`` lists it."""
@@ -378,6 +394,7 @@ class Standard(TypedDict, total=False):
     balls: list[str]
     source: str
     unconfirmed: Optional[str]
+    conditions: StandardConditions
 
 def standards() -> list[Standard]:
     """The standards, as ``bouncelab standards --format json``: the ball standards, the bat
@@ -427,6 +444,9 @@ def drop(
     damping: Optional[float] = None,
     k_r: Optional[float] = None,
     z_p: Optional[float] = None,
+    pressure: Optional[Union[float, str]] = None,
+    temperature: Optional[float] = None,
+    inflated_at: Optional[float] = None,
     surface: Optional[SurfaceArg] = None,
 ) -> Drop:
     """A drop test, bounce by bounce, as ``bouncelab drop --format json``: released from rest at

@@ -24,7 +24,7 @@ const DEFAULT_HEIGHT: f64 = 1.0;
 /// is judged unless named, as on the command line; a preset's own is the one whose `balls`
 /// list it in `standards()`.
 #[pyfunction(name = "drop")]
-#[pyo3(signature = (preset="superball", height=None, bounces=10, min_rebound=0.001, drag=true, drag_coefficient=None, air_density=None, law=None, params=None, standard=None, *, mass=None, radius=None, k_p=None, damping=None, k_r=None, z_p=None, surface=None))]
+#[pyo3(signature = (preset="superball", height=None, bounces=10, min_rebound=0.001, drag=true, drag_coefficient=None, air_density=None, law=None, params=None, standard=None, *, mass=None, radius=None, k_p=None, damping=None, k_r=None, z_p=None, pressure=None, temperature=None, inflated_at=None, surface=None))]
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn drop_test<'py>(
     py: Python<'py>,
@@ -44,8 +44,12 @@ pub(crate) fn drop_test<'py>(
     damping: Option<f64>,
     k_r: Option<f64>,
     z_p: Option<f64>,
+    pressure: Option<&Bound<'_, PyAny>>,
+    temperature: Option<f64>,
+    inflated_at: Option<f64>,
     surface: Option<&Bound<'py, PyAny>>,
 ) -> PyResult<Bound<'py, PyDict>> {
+    let spec = crate::preset_balls::conditions(pressure, temperature, inflated_at)?;
     if !drag && (drag_coefficient.is_some() || air_density.is_some()) {
         // as the command line refuses --no-drag with --drag-coefficient or --air-density
         return Err(value_error(
@@ -64,6 +68,16 @@ pub(crate) fn drop_test<'py>(
         None,
         &overrides(mass, radius, k_p, damping, k_r, z_p),
     )?;
+    let ball = crate::preset_balls::at_conditions(std::sync::Arc::new(ball), &spec)?;
+    // a standard runs the ball at its test's conditions, and says when it is off them
+    let (ball, off_conditions) = match standard {
+        Some(s) => ball
+            .as_ref()
+            .clone()
+            .at_standard(s.name, &spec)
+            .map_err(error)?,
+        None => (ball.as_ref().clone(), None),
+    };
     let radius = ball.drop_ball().radius;
     let air = drag.then(|| Air {
         density: air_density.unwrap_or(Air::default().density),
@@ -108,6 +122,7 @@ pub(crate) fn drop_test<'py>(
     let mut warnings = ball.drop_warnings(&run).map_err(error)?;
     // a ball fitted to drops in another air than this drop's says so, as the command line's
     warnings.extend(ball.drop_air_warning(run.setup.air));
+    warnings.extend(off_conditions);
     d.set_item("warnings", warnings)?;
     d.set_item("surface", surface.to_dict(py)?)?;
     Ok(d)

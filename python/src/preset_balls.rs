@@ -127,3 +127,39 @@ pub(crate) fn presets(py: Python<'_>) -> PyResult<Vec<Bound<'_, PyDict>>> {
         })
         .collect()
 }
+
+/// `pressure=` (Pa, or a string with its unit: `"0.8bar"`, `"8psi"`, `"55kPa"`),
+/// `temperature=` and `inflated_at=` (°C): the command line's `--pressure`, `--temperature`,
+/// `--inflated-at`, for the library's one resolver (`Ball::at_conditions`).
+pub(crate) fn conditions(
+    pressure: Option<&Bound<'_, PyAny>>,
+    temperature: Option<f64>,
+    inflated_at: Option<f64>,
+) -> PyResult<bouncelab::api::ConditionsSpec> {
+    let pressure = match pressure {
+        None => None,
+        Some(p) => Some(match p.extract::<String>() {
+            Ok(text) => bouncelab::conditions::pressure::parse("pressure", &text)
+                .map_err(crate::value_error)?,
+            Err(_) => p.extract::<f64>()?,
+        }),
+    };
+    Ok(bouncelab::api::ConditionsSpec {
+        pressure,
+        temperature,
+        inflated_at,
+        ..Default::default()
+    })
+}
+
+/// `ball` at the conditions asked (itself when none is).
+pub(crate) fn at_conditions(
+    ball: Arc<Ball>,
+    spec: &bouncelab::api::ConditionsSpec,
+) -> PyResult<Arc<Ball>> {
+    if spec.is_empty() {
+        return Ok(ball);
+    }
+    let moved = Arc::unwrap_or_clone(ball).at_conditions(spec);
+    Ok(Arc::new(moved.map_err(error)?))
+}

@@ -12,10 +12,12 @@ use std::sync::Arc;
 
 /// One impact of a preset, as `bouncelab run --preset NAME [--law L] [--v0 V] [--lambda L]
 /// [--zeta Z] [--params SET] [--history --samples N] [--mass M] [--radius R] [--k-p K_P]
-/// [--damping C] [--k-r K_R] [--z-p Z_P] [--surface NAME --surface-stiffness K_S …]`
-/// (`surface=`: a name or a dict of its numbers, python/src/surface.rs).
+/// [--damping C] [--k-r K_R] [--z-p Z_P] [--pressure P] [--temperature T] [--inflated-at T0]
+/// [--surface NAME --surface-stiffness K_S …]`
+/// (`pressure` in Pa, or a string with its unit, "0.8bar"; `surface=`: a name or a dict of its
+/// numbers, python/src/surface.rs).
 #[pyfunction]
-#[pyo3(signature = (preset="superball", law=None, v0=None, lambda_=None, zeta=None, history=false, samples=None, params=None, *, mass=None, radius=None, k_p=None, damping=None, k_r=None, z_p=None, surface=None))]
+#[pyo3(signature = (preset="superball", law=None, v0=None, lambda_=None, zeta=None, history=false, samples=None, params=None, *, mass=None, radius=None, k_p=None, damping=None, k_r=None, z_p=None, pressure=None, temperature=None, inflated_at=None, surface=None))]
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn run(
     py: Python<'_>,
@@ -33,10 +35,14 @@ pub(crate) fn run(
     damping: Option<f64>,
     k_r: Option<f64>,
     z_p: Option<f64>,
+    pressure: Option<&Bound<'_, PyAny>>,
+    temperature: Option<f64>,
+    inflated_at: Option<f64>,
     surface: Option<&Bound<'_, PyAny>>,
 ) -> PyResult<Py<Impact>> {
     let (surface, _) = crate::surface::resolve(surface)?;
     let samples = history_samples(history, samples)?;
+    let spec = crate::preset_balls::conditions(pressure, temperature, inflated_at)?;
     let set = overrides(mass, radius, k_p, damping, k_r, z_p);
     // one parameter set twice is refused, as the command line refuses --k-r with --lambda
     if k_r.is_some() && lambda_.is_some() {
@@ -53,6 +59,8 @@ pub(crate) fn run(
         (None, false) => shared_preset_ball(preset, params, law)?,
         _ => Arc::new(overridden_ball(preset, params, law, v0, &set)?),
     };
+    // the conditions before λ and ζ, as the command line resolves its ball
+    ball = crate::preset_balls::at_conditions(ball, &spec)?;
     // λ or ζ given: a ball of its own (with neither, the ball is as `with_lambda_zeta(None,
     // None)` leaves it: checked when built)
     if lambda_.is_some() || zeta.is_some() {

@@ -81,6 +81,11 @@ impl Ball {
     /// Why a comparison with the preset's measurement is withheld: the overrides changed the
     /// ball, so the measurement is not this ball's (`None`: nothing changed it).
     pub fn measurement_withheld(&self) -> Option<String> {
+        if self.overrides.is_empty() {
+            return self
+                .conditions_moved()
+                .map(|m| format!("the measurement is at the record's conditions: {m}"));
+        }
         (!self.overrides.is_empty()).then(|| {
             format!(
                 "the measurement is the preset's ball's, and {} changed this ball",
@@ -176,6 +181,13 @@ impl Ball {
             return Some(format!(
                 "outside calibration: the record ({fitted}; {}) is of the preset's own \
                  parameter set and law, and this answer runs {other}; {at}",
+                c.sources()
+            ));
+        }
+        if let Some(moved) = self.conditions_moved() {
+            return Some(format!(
+                "outside calibration: {moved} ({}); the conditions' model (docs/model.md §10) \
+                 carries it there; {at}, {fitted}",
                 c.sources()
             ));
         }

@@ -197,6 +197,7 @@ impl Ball {
                 c
             }),
             overrides: overrides.names(),
+            conditions: super::recorded_conditions(p.calibration.as_ref()),
         })
     }
 

@@ -75,6 +75,9 @@ pub struct BallArgs {
     pub law: Option<LawArg>,
     #[command(flatten)]
     pub set: Overrides,
+    /// `--pressure`, `--temperature`, `--inflated-at`, `--after`, `--half-life`.
+    #[command(flatten)]
+    pub conditions: super::conditions::ConditionsArgs,
 }
 
 /// Parameters set on the command line over the preset's, so that a fitted ball can be tried
@@ -194,13 +197,8 @@ impl BallArgs {
         let entry = select(self.choice.preset.as_deref(), self.choice.config.as_deref())?;
         let source = self.params.map(ParamSource::from);
         let law = self.law.map(ContactLaw::from);
-        Ok(Ball::from_entry_with(
-            &entry,
-            source,
-            law,
-            v0,
-            &self.set.values(),
-        )?)
+        let ball = Ball::from_entry_with(&entry, source, law, v0, &self.set.values())?;
+        Ok(ball.at_conditions(&self.conditions.spec())?)
     }
 }
 

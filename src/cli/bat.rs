@@ -72,7 +72,7 @@ pub fn run(a: &BatArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     );
     let r = ball.bat(a.bat_mass, (a.ball_speed, a.bat_speed), surface)?;
     match a.format {
-        BatFormat::Json => output::json(
+        BatFormat::Json => output::json_stated(
             out,
             &BatJson {
                 ball: ball.name.as_deref(),
@@ -83,13 +83,18 @@ pub fn run(a: &BatArgs, out: &mut dyn Write) -> anyhow::Result<()> {
                 run: &r,
                 warnings: ball.bat_warnings(&r),
             },
+            &ball.conditions,
         )?,
         BatFormat::Text => {
-            let head = format!(
+            let mut head = format!(
                 "{} against a bat of effective mass {} kg at the impact point",
                 ball.label(),
                 human(a.bat_mass, 4)
             );
+            if let Some(line) = ball.conditions_line() {
+                head.push('\n');
+                head.push_str(&line);
+            }
             text(out, &head, a, &r)?;
             output::warning_lines(out, &ball.bat_warnings(&r))?;
         }

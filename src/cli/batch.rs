@@ -117,7 +117,7 @@ pub fn run(a: &BatchArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     }
     let mut text_out = Vec::new();
     match a.format {
-        BatchFormat::Json => output::json(&mut text_out, &report)?,
+        BatchFormat::Json => output::json_stated(&mut text_out, &report, &ball.conditions)?,
         BatchFormat::Csv => text_out.extend_from_slice(balls_csv(&outcomes).as_bytes()),
         BatchFormat::Text => text(&mut text_out, &ball, &a.file, air, &report)?,
     }
@@ -313,6 +313,9 @@ fn text(
     let std = r.standard.name;
     let standard = standards::find(std).map_err(std::io::Error::other)?;
     writeln!(out, "{}, {} law", ball.label(), r.law)?;
+    if let Some(line) = ball.conditions_line() {
+        writeln!(out, "{line}")?;
+    }
     writeln!(
         out,
         "{} from {}, fitted one by one ({}){}; judged against {}: {}, window {}",

@@ -98,12 +98,13 @@ pub fn run(a: &CollideArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         })?,
     };
     match a.format {
-        CollideFormat::Json => output::json(
+        CollideFormat::Json => output::json_stated(
             out,
             &Report {
                 report: &report,
                 surface: used,
             },
+            &ball.conditions,
         )?,
         CollideFormat::Text => {
             text(out, &ball, &report, a.target_preset.as_deref())?;
@@ -149,6 +150,9 @@ fn text(
         Some(o) => format!("{o} (a body of its mass behind the given surface)"),
     };
     writeln!(out, "{} against {what}", ball.label())?;
+    if let Some(line) = ball.conditions_line() {
+        writeln!(out, "{line}")?;
+    }
     writeln!(out, "  law {}, method {}", r.law, r.collision.method.name())?;
     writeln!(out)?;
     table(out, "  ", &setup_rows(r, other.is_some()))?;

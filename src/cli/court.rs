@@ -127,7 +127,7 @@ pub fn run(a: &CourtArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     );
     let pace = ball.court_pace_on(friction, tangential, &surface.target())?;
     match a.format {
-        CourtFormat::Json => output::json(
+        CourtFormat::Json => output::json_stated(
             out,
             &Report {
                 ball: ball.header(),
@@ -140,6 +140,7 @@ pub fn run(a: &CourtArgs, out: &mut dyn Write) -> anyhow::Result<()> {
                 measured: measured.as_ref(),
                 computed_on,
             },
+            &ball.conditions,
         )?,
         CourtFormat::Text => text(
             out,
@@ -176,6 +177,9 @@ fn text(
         given(friction, 6)
     )?;
     writeln!(out, "{}", surface.label())?;
+    if let Some(line) = ball.conditions_line() {
+        writeln!(out, "{line}")?;
+    }
     let row = |k: &str, v: String| vec![k.to_string(), v];
     let rows = vec![
         row("court pace rating", human(pace.cpr, 4)),

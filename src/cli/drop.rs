@@ -83,13 +83,29 @@ fn drop_error(e: DropError) -> anyhow::Error {
 }
 
 pub fn run(a: &DropArgs, out: &mut dyn Write) -> anyhow::Result<()> {
+    // the pressure-loss test judges the leak, and runs the ball at its conditions
+    let leak_test = a.standard.as_deref().and_then(super::drop_leak::find);
     let standard = a
         .standard
         .as_deref()
+        .filter(|_| leak_test.is_none())
         .map(standards::find)
         .transpose()
         .map_err(|e| anyhow::anyhow!(e))?;
-    let b = a.ball.resolve(None)?;
+    let mut ball_args = a.ball.clone();
+    if let Some(t) = leak_test {
+        ball_args.conditions = super::drop_leak::conditions(t, &a.ball.conditions)?;
+    }
+    let b = ball_args.resolve(None)?;
+    let leak_verdict = leak_test
+        .zip(ball_args.conditions.half_life)
+        .map(|(t, h)| super::drop_leak::judge(t, h))
+        .transpose()?;
+    // a rebound standard runs the ball at its test's conditions (docs/drop.md, "Conditions")
+    let (b, off_conditions) = match standard {
+        Some(s) => b.at_standard(s.name, &a.ball.conditions.spec())?,
+        None => (b, None),
+    };
     let dball = b.drop_ball();
     let radius = dball.radius;
     let air = (!a.no_drag).then(|| Air {
@@ -134,6 +150,7 @@ pub fn run(a: &DropArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         warnings.push(w);
     }
     warnings.extend(b.drop_air_warning(air));
+    warnings.extend(off_conditions);
     match a.format {
         DropFormat::Json => {
             let judged_at = standard.and_then(|s| s.release_height(radius));
@@ -141,21 +158,30 @@ pub fn run(a: &DropArgs, out: &mut dyn Write) -> anyhow::Result<()> {
             r.warnings = warnings;
             r.ball = Some(b.record_json());
             r.surface = Some(surface);
-            output::json(out, &r)?
+            r.pressure_loss = leak_verdict.clone();
+            output::json_stated(out, &r, &b.conditions)?
         }
         DropFormat::Csv => {
             trajectory_csv(out, &run)?;
             output::warnings_to_stderr(&warnings);
         }
         DropFormat::Text => {
-            let mut label = match b.overrides_line() {
-                Some(line) => format!("{}\n{line}", b.label()),
-                None => b.label(),
-            };
+            let mut label = b.label();
+            if let Some(line) = b.overrides_line() {
+                label.push('\n');
+                label.push_str(&line);
+            }
             if !surface.is_rigid() || a.surface.surface.is_some() {
                 label = format!("{label}\n{}", surface.label());
             }
+            if let Some(line) = b.conditions_line() {
+                label.push('\n');
+                label.push_str(&line);
+            }
             text(out, &label, &run, standard.zip(verdict), radius)?;
+            if let (Some(t), Some(v)) = (leak_test, &leak_verdict) {
+                super::drop_leak::text(out, t, v)?;
+            }
             output::warning_lines(out, &warnings)?;
             if let (Some(i), Some(first), Some(fit)) = (bands.first(), run.bounces.first(), &b.fit)
             {
@@ -174,7 +200,8 @@ pub fn run(a: &DropArgs, out: &mut dyn Write) -> anyhow::Result<()> {
                 )?;
             }
             // no standard asked for: name the ball's own, if it has one
-            if let (None, Some(own)) = (standard, b.name.as_deref().and_then(standards::for_ball)) {
+            let own = b.name.as_deref().and_then(standards::for_ball);
+            if let (None, None, Some(own)) = (standard, leak_test, own) {
                 writeln!(
                     out,
                     "\n{}'s standard is {} ({}): add --standard {}",
@@ -257,6 +284,9 @@ struct Report<'a> {
     ball: Option<crate::api::BallRecord>,
     /// The surface it bounced on (docs/surfaces.md).
     surface: Option<super::surface::SurfaceUsed>,
+    /// `--standard fifa-pressure-loss`'s verdict on the ball's leak.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pressure_loss: Option<super::drop_leak::LeakVerdict>,
 }
 
 fn report<'a>(
@@ -290,6 +320,7 @@ fn report<'a>(
         warnings: Vec::new(),
         ball: None,
         surface: None,
+        pressure_loss: None,
     }
 }
 

@@ -99,6 +99,7 @@ impl ExplorerArgs {
             params: self.params,
             law: self.law,
             set: self.set.clone(),
+            conditions: Default::default(),
         };
         ball::check_overrides(&self.set, self.lambda, self.zeta)?;
         let mut b = args.resolve(self.v0)?;

@@ -39,6 +39,9 @@ pub struct MapArgs {
     pub v0: Option<f64>,
     #[command(flatten)]
     pub size: Size,
+    /// `--pressure`, `--temperature`, `--inflated-at`, `--after`, `--half-life`.
+    #[command(flatten)]
+    pub conditions: super::conditions::ConditionsArgs,
     /// λ = K_r/K_p values: FROM:TO:N (log-spaced unless --linear-axes)
     #[arg(long, value_name = "FROM:TO:N", allow_hyphen_values = true)]
     pub lambda: String,
@@ -78,6 +81,8 @@ pub struct MapBall {
     pub calibration: Option<String>,
     /// The JSON `ball` object: the ball the grid starts from (the cells move its K_r and c).
     pub record: crate::api::BallRecord,
+    /// The conditions the ball is at (the JSON `conditions`).
+    pub conditions: crate::conditions::Conditions,
 }
 
 /// The map's ball and axes from the options, each checked (exit 2 naming the flag).
@@ -93,6 +98,12 @@ pub fn spec(a: &MapArgs) -> anyhow::Result<MapBall> {
         if a.size.mass.is_some() || a.size.radius.is_some() {
             anyhow::bail!("--normalized runs m = K_p = v0 = 1: --mass and --radius do not apply");
         }
+        if !a.conditions.spec().is_empty() {
+            anyhow::bail!(
+                "--normalized runs m = K_p = v0 = 1: --pressure, --temperature, --inflated-at, \
+                 --after and --half-life do not apply"
+            );
+        }
         let law = a.law.map_or(ContactLaw::Linear, ContactLaw::from);
         let spec = MapSpec::normalized(a.zp_bar, law, lambda, zeta)?
             .with_fast(true)
@@ -105,6 +116,7 @@ pub fn spec(a: &MapArgs) -> anyhow::Result<MapBall> {
             radius: f64::NAN,
             calibration: None,
             record: crate::Ball::normalized(1.0, 1.0, a.zp_bar, law)?.record_json(),
+            conditions: crate::api::recorded_conditions(None),
         });
     }
     let args = BallArgs {
@@ -114,6 +126,7 @@ pub fn spec(a: &MapArgs) -> anyhow::Result<MapBall> {
             size: a.size.clone(),
             ..Overrides::default()
         },
+        conditions: a.conditions,
         ..BallArgs::default()
     };
     let b = args.resolve(a.v0)?;
@@ -129,6 +142,7 @@ pub fn spec(a: &MapArgs) -> anyhow::Result<MapBall> {
         radius: b.radius(),
         calibration: b.calibration_warning(b.params.v0),
         record: b.record_json(),
+        conditions: b.conditions,
     })
 }
 
@@ -209,6 +223,8 @@ struct Doc<'a> {
     warnings: &'a [String],
     /// The ball the grid starts from (docs/cli.md, "The ball object").
     ball: &'a crate::api::BallRecord,
+    /// The conditions it is at (docs/cli.md, "Conditions").
+    conditions: &'a crate::conditions::Conditions,
 }
 
 #[derive(Serialize)]
@@ -284,6 +300,7 @@ fn json(
         feasible_outline,
         warnings,
         ball: &ball.record,
+        conditions: &ball.conditions,
     };
     let mut s = super::output::json_string(&doc)?;
     s.push('\n');

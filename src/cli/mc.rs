@@ -143,7 +143,9 @@ pub fn run(a: &McArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     }
     let mut report = Vec::new();
     match a.format {
-        McFormat::Json => output::json(&mut report, &McReport::new(&ball, &s))?,
+        McFormat::Json => {
+            output::json_stated(&mut report, &McReport::new(&ball, &s), &ball.conditions)?
+        }
         McFormat::Text => text(&mut report, &ball, &spec, s.no_rebound, &s.stats)?,
     }
     report_then_commit(out, &report, files)?;
@@ -269,6 +271,9 @@ fn text(
     st: &McStats,
 ) -> std::io::Result<()> {
     writeln!(out, "{}", ball.label())?;
+    if let Some(line) = ball.conditions_line() {
+        writeln!(out, "{line}")?;
+    }
     let vary: Vec<String> = spec
         .vary
         .iter()

@@ -150,7 +150,7 @@ pub fn run(s: &ShotMcArgs, a: &Mc<'_>, out: &mut dyn Write) -> anyhow::Result<()
         .shot_mc(&spec)
         .map_err(|e: BallError| anyhow::anyhow!("{e}"))?;
     if a.json {
-        output::json(out, &json(&ball, &r))?
+        output::json_stated(out, &json(&ball, &r), &ball.conditions)?
     } else {
         text(out, &ball.label(), &r)?
     }

@@ -154,7 +154,7 @@ pub fn run(a: &ObliqueArgs, out: &mut dyn Write) -> anyhow::Result<()> {
                 record: ball.record_json(),
                 surface,
             };
-            output::json(out, &report)?
+            output::json_stated(out, &report, &ball.conditions)?
         }
         ObliqueFormat::Csv if a.history => {
             history_csv(out, &r)?;
@@ -179,6 +179,9 @@ pub fn run(a: &ObliqueArgs, out: &mut dyn Write) -> anyhow::Result<()> {
                 given(radius * 1e3, 4)
             )?;
             writeln!(out, "{}", surface.label())?;
+            if let Some(line) = ball.conditions_line() {
+                writeln!(out, "{line}")?;
+            }
             text(out, &r)?;
             output::warning_lines(out, &warnings)?
         }

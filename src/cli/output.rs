@@ -24,6 +24,31 @@ pub fn json<T: Serialize>(out: &mut dyn Write, value: &T) -> io::Result<()> {
     writeln!(out)
 }
 
+/// An answer with the conditions its ball ran at appended as its last key, `conditions`
+/// (docs/cli.md, "Conditions"): every JSON answer that runs a ball states them.
+#[derive(Serialize)]
+struct Stated<'a, T: Serialize> {
+    #[serde(flatten)]
+    answer: &'a T,
+    conditions: &'a crate::conditions::Conditions,
+}
+
+/// [`json`] of an answer that ran a ball at `conditions`: the answer's keys, then
+/// `conditions: {temperature_c, pressure_gauge_pa, atmosphere_pa}`.
+pub fn json_stated<T: Serialize>(
+    out: &mut dyn Write,
+    value: &T,
+    conditions: &crate::conditions::Conditions,
+) -> io::Result<()> {
+    json(
+        out,
+        &Stated {
+            answer: value,
+            conditions,
+        },
+    )
+}
+
 /// `value` as one line of JSON in which every character the terminal sanitizer would rewrite
 /// (DEL, C1 controls, the bidirectional overrides, the invisible format characters:
 /// `crate::sanitize`) is a JSON escape

@@ -224,7 +224,7 @@ pub fn run(a: &PeersArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         ball: b.record_json(),
     };
     match a.format {
-        PeersFormat::Json => output::json(out, &report)?,
+        PeersFormat::Json => output::json_stated(out, &report, &b.conditions)?,
         // the rows are the peers' calibrations, not the ball's answer: its warnings on stderr,
         // as beside `run --history`'s CSV
         PeersFormat::Csv => {

@@ -73,6 +73,12 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> anyhow::Result<()> {
              --z-p do not apply"
         );
     }
+    if args.normalized && !args.ball.conditions.spec().is_empty() {
+        anyhow::bail!(
+            "--normalized runs m = K_p = v0 = 1: --pressure, --temperature, --inflated-at, \
+             --after and --half-life do not apply"
+        );
+    }
     ball::check_overrides(&args.ball.set, args.lambda, args.zeta)?;
     let ball = if args.normalized {
         let law = args.ball.law.map_or(ContactLaw::Linear, ContactLaw::from);
@@ -118,7 +124,7 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> anyhow::Result<()> {
                 report.comparison_withheld = elsewhere;
             }
             let surface = &surface;
-            output::json(out, &Report { report, surface })?
+            output::json_stated(out, &Report { report, surface }, &ball.conditions)?
         }
         RunFormat::Csv if args.history => {
             history_csv(out, &r)?;

@@ -96,6 +96,9 @@ pub fn write(
     if let Some(line) = b.overrides_line() {
         writeln!(out, "{line}")?;
     }
+    if let Some(line) = b.conditions_line() {
+        writeln!(out, "{line}")?;
+    }
     writeln!(out)?;
     write_parameters(out, b, r, &units)?;
     writeln!(out)?;

@@ -143,7 +143,7 @@ pub fn run(a: &ShotArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     }
     let mut report = Vec::new();
     match a.format {
-        ShotFormat::Json => output::json(
+        ShotFormat::Json => output::json_stated(
             &mut report,
             &Report {
                 ball: ball.header(),
@@ -151,6 +151,7 @@ pub fn run(a: &ShotArgs, out: &mut dyn Write) -> anyhow::Result<()> {
                 friction: a.friction,
                 answer: &shot,
             },
+            &ball.conditions,
         )?,
         ShotFormat::Csv if !shot.trajectory.is_empty() => trajectory_csv(&mut report, &shot)?,
         ShotFormat::Csv => bounces_csv(&mut report, &shot)?,
@@ -243,6 +244,9 @@ fn trajectory_csv(out: &mut dyn Write, s: &ShotReport) -> std::io::Result<()> {
 
 fn text(out: &mut dyn Write, ball: &Ball, spec: &ShotSpec, s: &ShotReport) -> std::io::Result<()> {
     writeln!(out, "{}: {}", ball.label(), title(spec))?;
+    if let Some(line) = ball.conditions_line() {
+        writeln!(out, "{line}")?;
+    }
     writeln!(
         out,
         "air: ρ = {} kg/m³; {}",

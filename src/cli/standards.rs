@@ -2,6 +2,7 @@
 //! "Standards", cites each source).
 
 use super::output::{self, given, table};
+use crate::drop::conditions::{self, PRESSURE_LOSS, PressureLoss};
 use crate::drop::standards::{STANDARDS, Standard, Test};
 use crate::oblique::court::{CourtTest, ITF_COURT_PACE};
 use crate::target::bat::{BAT_STANDARDS, BatTest};
@@ -27,16 +28,51 @@ pub fn run(a: &StandardsArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         StandardsFormat::Json => {
             let mut all = serde_json::to_value(STANDARDS)?;
             if let Some(list) = all.as_array_mut() {
+                // each ball standard's test conditions (docs/drop.md, "Conditions")
+                for s in list.iter_mut() {
+                    let name = s["name"].as_str().unwrap_or_default().to_string();
+                    s["conditions"] = conditions_json(&name)?;
+                }
                 for s in &BAT_STANDARDS {
                     list.push(serde_json::to_value(s)?);
                 }
                 list.push(serde_json::to_value(ITF_COURT_PACE)?);
+                for p in &PRESSURE_LOSS {
+                    list.push(pressure_loss_json(p)?);
+                }
             }
             output::json(out, &all)?
         }
         StandardsFormat::Text => text(out)?,
     }
     Ok(())
+}
+
+/// A standard's test conditions as JSON: `{temperature_c: [nominal, ±] | null,
+/// pressure_gauge_pa: [lo, hi] | null, source}`.
+fn conditions_json(name: &str) -> serde_json::Result<serde_json::Value> {
+    let c = conditions::of(name);
+    Ok(serde_json::json!({
+        "temperature_c": c.temperature_c,
+        "pressure_gauge_pa": c.pressure_gauge_pa,
+        "source": c.source,
+    }))
+}
+
+/// A pressure-loss test as an entry of the list: `test: {kind: "pressure-loss", hours,
+/// pressure, temperature}`, `window: [null, max_loss]`.
+fn pressure_loss_json(p: &PressureLoss) -> serde_json::Result<serde_json::Value> {
+    Ok(serde_json::json!({
+        "name": p.name,
+        "title": p.title,
+        "test": {"kind": "pressure-loss", "hours": p.hours, "pressure": p.pressure,
+                 "temperature": p.temperature},
+        "window": [null, p.max_loss],
+        "source": p.source,
+        "unconfirmed": p.unconfirmed,
+        "balls": p.balls,
+        "conditions": conditions_json(p.name)?,
+    }))
 }
 
 /// "drop 2.54 m (bottom) → rebound (bottom)" or "COR at 26.82 m/s".
@@ -110,6 +146,20 @@ fn text(out: &mut dyn Write) -> std::io::Result<()> {
         court.title.into(),
     ]);
     table(out, "", &rows)?;
+    // below the table, whose columns stay as they were (the names are longer)
+    for p in &PRESSURE_LOSS {
+        writeln!(
+            out,
+            "{}: inflated to {} kPa, {} h at {} °C, loss ≤ {} % ({}): {}",
+            p.name,
+            given(p.pressure / 1e3, 4),
+            given(p.hours, 4),
+            given(p.temperature, 4),
+            given(100.0 * p.max_loss, 4),
+            p.balls.join(", "),
+            p.title
+        )?;
+    }
     writeln!(out)?;
     writeln!(out, "sources, and what could not be confirmed:")?;
     let sources = STANDARDS.iter().map(|s| (s.name, s.source, s.unconfirmed));
@@ -117,11 +167,24 @@ fn text(out: &mut dyn Write) -> std::io::Result<()> {
         .iter()
         .map(|s| (s.name, s.source, s.unconfirmed));
     let courts = std::iter::once((court.name, court.source, court.unconfirmed));
-    for (name, source, unconfirmed) in sources.chain(bats).chain(courts) {
+    let leaks = PRESSURE_LOSS.iter().map(|p| (p.name, p.source, None));
+    for (name, source, unconfirmed) in sources.chain(bats).chain(courts).chain(leaks) {
         writeln!(out, "  {name}: {source}")?;
         if let Some(u) = unconfirmed {
             writeln!(out, "    not confirmed: {u}")?;
         }
+    }
+    writeln!(out)?;
+    writeln!(
+        out,
+        "test conditions (`drop --standard NAME` runs the ball at them; a ball at others is \
+         warned):"
+    )?;
+    let names = STANDARDS.iter().map(|s| s.name);
+    for name in names.chain(PRESSURE_LOSS.iter().map(|p| p.name)) {
+        let c = conditions::of(name);
+        writeln!(out, "  {name}: {}", crate::api::test_words(&c))?;
+        writeln!(out, "    {}", c.source)?;
     }
     writeln!(out)?;
     writeln!(

@@ -23,6 +23,9 @@ pub enum SweepFormat {
 }
 
 #[derive(Debug, Clone, Subcommand)]
+// parsed once a process: the velocity sweep's options (the ball's, its conditions) are the
+// larger, and boxing them would buy nothing
+#[allow(clippy::large_enum_variant)]
 pub enum Sweep {
     /// COR, normalized peak force and contact time against ζ (log-spaced), one curve per λ,
     /// without flattening (Figs. 2, 3)
@@ -216,7 +219,7 @@ fn velocity(a: &VelocityArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     match a.format {
         SweepFormat::Json => {
             let n = b.params.normalized();
-            output::json(
+            output::json_stated(
                 out,
                 &VelocityDoc {
                     sweep: "velocity",
@@ -226,6 +229,7 @@ fn velocity(a: &VelocityArgs, out: &mut dyn Write) -> anyhow::Result<()> {
                     rows: &rows,
                     record: b.record_json(),
                 },
+                &b.conditions,
             )?
         }
         SweepFormat::Csv => velocity_csv(out, &rows, !bands.is_empty())?,

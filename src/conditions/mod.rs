@@ -10,6 +10,7 @@
 //! - [`leak`]: the gauge pressure's decay by permeation through the bladder, and its rate
 //!   fitted from pressure readings.
 
+pub mod duration;
 pub mod gas;
 pub mod inflated;
 pub mod leak;
@@ -27,12 +28,18 @@ pub const ZERO_CELSIUS: f64 = 273.15;
 /// gauge reads against.
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct Conditions {
-    /// The ball's temperature, °C.
-    pub temperature_c: f64,
+    /// The ball's temperature, °C; `None` where neither the ball's calibration record nor
+    /// the caller states one (the answer is the record's, at a temperature nobody wrote down).
+    pub temperature_c: Option<f64>,
     /// Gauge pressure inside the ball at `temperature_c`, Pa; `None` for a solid ball.
     pub pressure_gauge_pa: Option<f64>,
     /// The atmosphere's pressure, Pa.
     pub atmosphere_pa: f64,
+    /// The time since inflation the pressure was decayed over, s, and the leak's half-life,
+    /// s, with the standard whose limit was assumed as the leak (`None`: the caller's own
+    /// half-life); for the answer's warnings, not its JSON.
+    #[serde(skip)]
+    pub leak: Option<(f64, f64, Option<&'static str>)>,
 }
 
 /// A condition out of its domain, naming the field as the command line's flags do.

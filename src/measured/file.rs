@@ -94,6 +94,11 @@ pub fn pressure(path: &Path) -> anyhow::Result<Vec<measured::PressureRow>> {
     measured::parse_pressure(&read_text(path)?).map_err(|e| at(path, e))
 }
 
+/// CORs at several temperatures (`fit --cor-temperature`).
+pub fn cor_temperature(path: &Path) -> anyhow::Result<Vec<measured::CorTemperatureRow>> {
+    measured::parse_cor_temperature(&read_text(path)?).map_err(|e| at(path, e))
+}
+
 /// Any kind, told by the header.
 pub fn any(path: &Path) -> anyhow::Result<Data> {
     measured::parse_any(&read_text(path)?).map_err(|e| at(path, e))

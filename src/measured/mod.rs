@@ -7,6 +7,7 @@ mod court;
 mod drop;
 mod oblique;
 // reading a data file from disk: anyhow, which the `tui` and `cli` features bring
+mod cor_temperature;
 #[cfg(feature = "tui")]
 pub mod file;
 pub mod overlay;
@@ -16,6 +17,7 @@ mod table;
 mod trace;
 
 pub use court::{CourtRow, parse_court};
+pub use cor_temperature::{CorTemperatureRow, parse_cor_temperature};
 pub use drop::{Air, DropTest, Flight, G, cor_per_rebound_height, drop_to_cor, drops_to_points};
 pub use oblique::{ObliqueRow, parse_oblique};
 pub use pressure::{PressureRow, parse_pressure};

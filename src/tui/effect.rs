@@ -31,7 +31,8 @@ pub enum Effect {
     Map(MapJob),
     /// Compute the oblique view's (angle, μ) map in the background (a job before it stops on
     /// its own: `update` set its cancel flag); it comes back as `Action::ObliqueMapReady`.
-    ObliqueMap(crate::tui::views::oblique::map::MapJob),
+    // boxed: the job holds a whole ball (`api::Ball`), the largest variant by far
+    ObliqueMap(Box<crate::tui::views::oblique::map::MapJob>),
     /// Read the presets for the picker (`g`); the loop answers `Action::PresetsListed`.
     ListPresets,
     /// Write this session file (`S`) atomically, over an existing file only with `replace`

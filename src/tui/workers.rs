@@ -82,7 +82,7 @@ impl Workers {
             ),
             Effect::ObliqueMap(job) => (
                 Work::ObliqueMap,
-                started(&mut self.oblique, oblique_worker::spawn).map(|w| w.send(job)),
+                started(&mut self.oblique, oblique_worker::spawn).map(|w| w.send(*job)),
             ),
             _ => return None,
         };

@@ -10,6 +10,7 @@
 mod bins;
 mod checks;
 mod cor;
+pub mod cor_temperature;
 pub mod lm;
 mod multi;
 pub mod oblique;

@@ -58,6 +58,7 @@ impl FigureBall {
             params: self.params,
             law: self.law,
             set: self.set.clone(),
+            conditions: Default::default(),
         };
         Ok((ball, self.presets.iter().skip(1).cloned().collect()))
     }

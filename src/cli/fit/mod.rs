@@ -20,6 +20,7 @@ mod oblique;
 mod plot;
 mod report;
 mod save;
+mod temperature;
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
 pub enum FitFormat {
@@ -60,6 +61,10 @@ pub struct FitArgs {
     /// …; optional pressure_sd_… in the same units); fits its leak p0·e^(−k t)
     #[arg(long, value_name = "FILE")]
     pub pressure_loss: Option<PathBuf>,
+    /// CORs of a solid ball at several temperatures: CSV with columns temperature_c, v0, cor
+    /// (optional cor_sd); fits an Arrhenius shift of its dashpot, c_ref and E_a
+    #[arg(long, value_name = "FILE", conflicts_with = "pressure_loss")]
+    pub cor_temperature: Option<PathBuf>,
     /// With --oblique: fit the tangential dashpot c_t too, starting from this value, kg/s
     /// (docs/oblique.md §9) [default: no dashpot]
     #[arg(long, value_name = "KG_PER_S", requires = "oblique", value_parser = super::number::number, allow_hyphen_values = true)]
@@ -214,6 +219,9 @@ impl FitArgs {
 pub fn run(a: &FitArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     if let Some(path) = &a.pressure_loss {
         return leak::run(a, path, out);
+    }
+    if let Some(path) = &a.cor_temperature {
+        return temperature::run(a, path, out);
     }
     let source = a.source()?;
     let free = a.free_params()?;

@@ -51,6 +51,7 @@ impl App {
             calibration: preset.calibration.clone(),
             // what the explorer's setting changed from the preset's own ball
             overrides: crate::api::changed_params(&preset.params(), &s.params),
+            conditions: crate::api::recorded_conditions(preset.calibration.as_ref()),
         }
     }
 
@@ -270,11 +271,11 @@ impl App {
         }
         let cancel = Arc::new(AtomicBool::new(false));
         o.out = Some(Arc::clone(&cancel));
-        Some(Effect::ObliqueMap(MapJob {
+        Some(Effect::ObliqueMap(Box::new(MapJob {
             generation: o.generation,
             spec,
             cancel,
-        }))
+        })))
     }
 
     /// The worker's map: kept when it is of the map asked last.

@@ -1,0 +1,304 @@
+//! A ball at its conditions (docs/model.md §10): the one resolver from a ball and the
+//! conditions a caller asks for — inflation pressure, temperature, the temperature it was
+//! inflated at, the time since — to the ball's parameters. The command line's `--pressure`,
+//! `--temperature`, `--inflated-at`, `--after` (every command that runs a ball), the Python
+//! package's `pressure=`/`temperature=` and `mc --vary pressure=…` all come here.
+//!
+//! An inflated ball is a preset whose calibration record states its gauge pressure p₀; its
+//! K_p follows the gauge pressure by `conditions::inflated` (K_shell + 2πR p, calibrated at
+//! p₀), K_r keeps λ = K_r/K_p, and c keeps the retardation time c/K_r of the Kelvin–Voigt
+//! pair (docs/model.md §10.1). The pressure at the run is the
+//! inflation pressure, decayed by the leak over `after` at the inflation temperature
+//! (`conditions::leak`), carried to the run's temperature by the gas law at fixed volume
+//! (`conditions::gas`). At the record's pressure and temperature the ball's parameters are
+//! not touched, so its answers there do not move (tests/conditions.rs).
+
+use super::{Ball, BallError};
+use crate::analysis::fit::{Param, apply};
+use crate::conditions::{Conditions, STANDARD_ATMOSPHERE, gas, inflated::Inflated, leak::Leak};
+
+/// Seconds in an hour.
+const HOUR: f64 = 3_600.0;
+
+/// The conditions a caller asks for; `None` keeps the ball's record's.
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct ConditionsSpec {
+    /// Gauge pressure the ball was inflated to, Pa (at `inflated_at`).
+    pub pressure: Option<f64>,
+    /// The ball's temperature at the run, °C.
+    pub temperature: Option<f64>,
+    /// The temperature the ball was inflated at, °C [default: the record's].
+    pub inflated_at: Option<f64>,
+    /// Time since inflation, s: the leak's.
+    pub after: Option<f64>,
+    /// The leak's half-life, s [default: the limit of the ball's own pressure-loss standard].
+    pub half_life: Option<f64>,
+}
+
+impl ConditionsSpec {
+    /// Whether nothing is asked.
+    pub fn is_empty(&self) -> bool {
+        *self == ConditionsSpec::default()
+    }
+}
+
+/// A ball's pressure-loss standard, as a leak: FIFA Quality Pro's limit, 20 % of the gauge
+/// pressure in 72 h (docs/model.md §10.3, docs/standards: `fifa-pressure-loss`), the largest
+/// leak a ball that passes may have. The football preset's default leak (no measured rate of
+/// a ball was found; the assumption is stated in the answer's warnings).
+pub fn standard_leak(ball_name: &str) -> Option<(Leak, &'static str)> {
+    let s = crate::drop::conditions::PRESSURE_LOSS
+        .iter()
+        .find(|s| s.balls.contains(&ball_name))?;
+    let leak = Leak::losing(s.max_loss, s.hours * HOUR).ok()?;
+    Some((leak, s.name))
+}
+
+/// The conditions of a record: its temperature and pressure as it states them, the standard
+/// atmosphere.
+pub fn recorded(calibration: Option<&crate::preset::Calibration>) -> Conditions {
+    Conditions {
+        temperature_c: calibration.and_then(|c| c.temperature),
+        pressure_gauge_pa: calibration.and_then(|c| c.pressure),
+        atmosphere_pa: STANDARD_ATMOSPHERE,
+        leak: None,
+    }
+}
+
+impl Ball {
+    /// The ball's name as an error names it.
+    fn called(&self) -> String {
+        self.name.clone().unwrap_or_else(|| "the ball".into())
+    }
+
+    /// Whether the ball is inflated: its calibration record states a gauge pressure.
+    pub fn is_inflated(&self) -> bool {
+        self.calibration.as_ref().and_then(|c| c.pressure).is_some()
+    }
+
+    /// The ball at the conditions `spec` asks for: K_p (and K_r, λ kept; K_h following) at the
+    /// gauge pressure the run has, and [`Ball::conditions`] stating them. Refused, naming the
+    /// field: a pressure or a leak for a ball that is not inflated, a temperature for a ball
+    /// with no temperature model, a temperature where the record states none to start from,
+    /// `--k-p` beside a pressure, a pressure at which the ball is flat.
+    pub fn at_conditions(mut self, spec: &ConditionsSpec) -> Result<Ball, BallError> {
+        if spec.is_empty() {
+            return Ok(self);
+        }
+        let Some(p0) = self.calibration.as_ref().and_then(|c| c.pressure) else {
+            return self.solid_at(spec);
+        };
+        if self.overrides.iter().any(|o| o == "k_p") {
+            return Err(invalid(
+                "pressure",
+                spec.pressure.unwrap_or(p0),
+                "--k-p sets K_p too, which the pressure sets: give one of them".into(),
+            ));
+        }
+        let t_record = self.calibration.as_ref().and_then(|c| c.temperature);
+        let t0 = spec.inflated_at.or(t_record);
+        let t = spec.temperature.or(t_record).or(t0);
+        let atm = self.conditions.atmosphere_pa;
+        let inflated = spec.pressure.unwrap_or(p0);
+        let (leaked, leak) = match spec.after {
+            Some(after) => {
+                let (l, assumed) = self.leak(spec)?;
+                let p = l.gauge_after(inflated, after).map_err(from)?;
+                (p, Some((after, l.half_life(), assumed)))
+            }
+            None => (inflated, None),
+        };
+        let p = match (t0, t) {
+            (Some(t0), Some(t)) => gas::gauge_at(leaked, t0, t, atm).map_err(from)?,
+            (None, Some(_)) => {
+                let why = format!(
+                    "{}'s calibration records no temperature to start from: give --inflated-at",
+                    self.called()
+                );
+                return Err(invalid("inflated-at", spec.temperature.unwrap_or(0.0), why));
+            }
+            _ => leaked,
+        };
+        self.set_pressure(p0, p)?;
+        self.conditions = Conditions {
+            temperature_c: t,
+            pressure_gauge_pa: Some(p),
+            atmosphere_pa: atm,
+            leak,
+        };
+        Ok(self)
+    }
+
+    /// K_p at gauge pressure `p` from its value at the record's `p0`, as a ratio so that at
+    /// `p0` nothing moves (the football's K_p is the membrane term rounded to the newton).
+    /// K_r keeps λ = K_r/K_p and c keeps the Kelvin–Voigt pair's retardation time c/K_r, so
+    /// both move by the same ratio (docs/model.md §10.1: ζ = √(m K_p)/(2c) ∝ 1/√K_p, and a
+    /// softer ball loses more, as inflated balls do).
+    fn set_pressure(&mut self, p0: f64, p: f64) -> Result<(), BallError> {
+        let radius = self.radius();
+        let model = Inflated::calibrated(radius, self.params.k_p, p0).map_err(from)?;
+        let ratio = model.k_p(p).map_err(from)? / model.k_p(p0).map_err(from)?;
+        if ratio != 1.0 {
+            let k = &self.params;
+            let moved = [k.k_p * ratio, k.damping * ratio, k.k_r * ratio];
+            self.params = apply(&self.params, &[Param::KP, Param::C, Param::KR], &moved);
+            self.params.validate()?;
+        }
+        Ok(())
+    }
+
+    /// The leak over `--after`: the half-life given, or the limit of the ball's own
+    /// pressure-loss standard (named, as the assumption it is).
+    fn leak(&self, spec: &ConditionsSpec) -> Result<(Leak, Option<&'static str>), BallError> {
+        if let Some(h) = spec.half_life {
+            return Ok((Leak::from_half_life(h).map_err(from)?, None));
+        }
+        let name = self.name.as_deref().unwrap_or("");
+        standard_leak(name)
+            .map(|(l, s)| (l, Some(s)))
+            .ok_or_else(|| {
+                invalid(
+                    "after",
+                    spec.after.unwrap_or(0.0),
+                    format!(
+                        "no leak rate is known for {}: give --half-life (fit one with fit \
+                     --pressure-loss)",
+                        self.called()
+                    ),
+                )
+            })
+    }
+
+    /// A solid ball: no pressure, no leak; a temperature only at the record's own.
+    fn solid_at(self, spec: &ConditionsSpec) -> Result<Ball, BallError> {
+        let solid = |field, value| {
+            let why = format!(
+                "{} is not inflated: its calibration records no inflation pressure",
+                self.called()
+            );
+            Err(invalid(field, value, why))
+        };
+        if let Some(p) = spec.pressure {
+            return solid("pressure", p);
+        }
+        if let Some(t) = spec.inflated_at {
+            return solid("inflated-at", t);
+        }
+        if let Some(a) = spec.after {
+            return solid("after", a);
+        }
+        if let Some(h) = spec.half_life {
+            return solid("half-life", h);
+        }
+        let t = spec.temperature.unwrap_or(f64::NAN);
+        crate::conditions::kelvin("temperature", t).map_err(from)?;
+        if self.conditions.temperature_c == Some(t) {
+            return Ok(self);
+        }
+        Err(invalid(
+            "temperature",
+            t,
+            format!(
+                "{} has no temperature model (docs/model.md §10.4): its parameters hold at \
+                 its record's temperature{}",
+                self.called(),
+                match self.conditions.temperature_c {
+                    Some(r) => format!(", {} °C", crate::text::short(r, 4)),
+                    None => ", which the record does not state".into(),
+                }
+            ),
+        ))
+    }
+}
+
+fn invalid(field: &'static str, value: f64, reason: String) -> BallError {
+    BallError::Invalid {
+        field,
+        value,
+        reason,
+    }
+}
+
+/// A condition out of its domain as the ball's error, its message kept.
+fn from(e: crate::conditions::ConditionsError) -> BallError {
+    use crate::conditions::ConditionsError as E;
+    match e {
+        E::Temperature { field, value } => invalid(field, value, "must be above −273.15 °C".into()),
+        E::Pressure { field, value, why } | E::Time { field, value, why } => {
+            invalid(field, value, why.into())
+        }
+    }
+}
+
+impl Ball {
+    /// The text header's line of conditions: "conditions: 20 °C, gauge 80 kPa (0.8 bar,
+    /// 11.6 psi), atmosphere 101.3 kPa"; `None` for a ball whose record states neither a
+    /// temperature nor a pressure and that was given none (the JSON's `conditions` says so
+    /// with its nulls).
+    pub fn conditions_line(&self) -> Option<String> {
+        let c = &self.conditions;
+        if c.temperature_c.is_none() && c.pressure_gauge_pa.is_none() {
+            return None;
+        }
+        let short = crate::text::short;
+        let t = c
+            .temperature_c
+            .map_or("temperature not recorded".into(), |t| {
+                format!("{} °C", short(t, 4))
+            });
+        let p = c.pressure_gauge_pa.map_or("solid ball".into(), |p| {
+            format!(
+                "gauge {} kPa ({} bar, {} psi)",
+                short(p / 1e3, 4),
+                short(p / 1e5, 3),
+                short(p / crate::conditions::pressure::PSI, 4)
+            )
+        });
+        let atm = short(c.atmosphere_pa / 1e3, 4);
+        Some(format!("conditions: {t}, {p}, atmosphere {atm} kPa"))
+    }
+}
+
+/// "20 °C, 0.8 bar": a record's or a run's conditions in words, for the warnings.
+pub(super) fn words(c: &Conditions) -> String {
+    let short = crate::text::short;
+    let t = c
+        .temperature_c
+        .map_or("an unrecorded temperature".into(), |t| {
+            format!("{} °C", short(t, 4))
+        });
+    match c.pressure_gauge_pa {
+        Some(p) => format!("{t}, {} kPa gauge", short(p / 1e3, 4)),
+        None => t,
+    }
+}
+
+impl Ball {
+    /// The ball's conditions against its record's, in words, when they differ: "the ball at
+    /// 5 °C, 75.54 kPa gauge; its record at 20 °C, 80 kPa gauge"; `None` at the record's
+    /// own (or without a record).
+    pub fn conditions_moved(&self) -> Option<String> {
+        let record = recorded(Some(self.calibration.as_ref()?));
+        (record != self.conditions).then(|| {
+            let leak = self
+                .conditions
+                .leak
+                .map_or(String::new(), |(t, half, assumed)| {
+                    let h = crate::text::short;
+                    let whose = match assumed {
+                        Some(s) => format!(
+                            "no measured leak rate: the limit of {s} assumed, half-life {} h",
+                            h(half / HOUR, 4)
+                        ),
+                        None => format!("half-life {} h", h(half / HOUR, 4)),
+                    };
+                    format!(", {} h after inflation ({whose})", h(t / HOUR, 4))
+                });
+            format!(
+                "the ball at {}{leak}; its record at {}",
+                words(&self.conditions),
+                words(&record)
+            )
+        })
+    }
+}

@@ -1,0 +1,157 @@
+//! `bouncelab fit --cor-temperature FILE`: the Arrhenius shift of a solid ball's dashpot,
+//! c(T) = c_ref exp[(E_a/R)(1/T − 1/T_ref)], fitted to CORs measured at several temperatures
+//! on the preset's ball (docs/model.md §10.4, `analysis::fit::cor_temperature`), with the
+//! other fits' intervals, verdict and exit codes: a report, then exit 1 when the data do not
+//! follow the law.
+
+use super::{FitArgs, FitFormat};
+use crate::analysis::fit::cor_temperature::{CorAt, TemperatureFit, fit_cor_temperature};
+use crate::analysis::fit::verdict::LackOfFit;
+use crate::analysis::fit::{Estimate, MultiFitError};
+use crate::cli::output::{self, human, table};
+use std::io::Write;
+use std::path::Path;
+
+/// The flags this fit takes nothing from, refused rather than ignored.
+fn others_given(a: &FitArgs) -> bool {
+    a.cor.is_some()
+        || a.cor_table.is_some()
+        || a.force_time.is_some()
+        || !a.drop_height.is_empty()
+        || a.drop_test.is_some()
+        || a.oblique.is_some()
+        || a.free.is_some()
+        || a.save.is_some()
+        || a.plot.is_some()
+        || a.v0.is_some()
+        || a.drag_coefficient.is_some()
+        || a.rebound_height_sd.is_some()
+}
+
+pub fn run(a: &FitArgs, path: &Path, out: &mut dyn Write) -> anyhow::Result<()> {
+    if others_given(a) {
+        anyhow::bail!(
+            "--cor-temperature fits the dashpot's temperature shift to CORs at temperatures \
+             alone: the other data and --free, --v0, --save, --plot, --drag-coefficient, \
+             --rebound-height-sd are not for it"
+        );
+    }
+    // --temperature names the reference temperature here; the ball is the preset's own
+    let mut ball_args = a.ball.clone();
+    let t_ref = ball_args.conditions.temperature.take();
+    let ball = ball_args.resolve(None)?;
+    let Some(t_ref) = t_ref.or(ball.conditions.temperature_c) else {
+        anyhow::bail!(
+            "invalid temperature: {}'s calibration records no temperature to refer c to: give \
+             --temperature T_REF (°C)",
+            ball.name.as_deref().unwrap_or("the ball")
+        );
+    };
+    let rows = crate::measured::file::cor_temperature(path)?;
+    let points: Vec<CorAt> = rows
+        .iter()
+        .map(|r| CorAt {
+            temperature_c: r.temperature_c,
+            v0: r.v0,
+            cor: r.cor,
+            sd: r.sd,
+        })
+        .collect();
+    let file = path.display().to_string();
+    let fit = fit_cor_temperature(&ball.params, ball.law, t_ref, &points)
+        .map_err(|e| anyhow::anyhow!("{file}: {e}"))?;
+    let report = Report {
+        kind: "cor temperature",
+        file: &file,
+        points: points.len(),
+        preset: ball.name.as_deref(),
+        t_ref_c: fit.t_ref_c,
+        c_ref: &fit.c_ref,
+        activation_energy: &fit.activation,
+        predicted: &fit.predicted,
+        dof: fit.dof,
+        lack_of_fit: fit.lack_of_fit,
+        answered: fit.no_answer.is_empty(),
+        no_answer: &fit.no_answer,
+    };
+    let mut text = Vec::new();
+    match a.format {
+        FitFormat::Json => output::json(&mut text, &report)?,
+        FitFormat::Text => write_text(&mut text, &report, &fit)?,
+    }
+    out.write_all(&text)?;
+    if !fit.no_answer.is_empty() {
+        return Err(MultiFitError::Unanswered(fit.no_answer.join("; ")).into());
+    }
+    Ok(())
+}
+
+/// The report, as JSON writes it (SI: kg/s, J/mol; °C).
+#[derive(serde::Serialize)]
+struct Report<'a> {
+    kind: &'static str,
+    file: &'a str,
+    points: usize,
+    preset: Option<&'a str>,
+    /// The reference temperature, °C.
+    t_ref_c: f64,
+    /// c at t_ref_c, kg/s.
+    c_ref: &'a Estimate,
+    /// E_a, J/mol.
+    activation_energy: &'a Estimate,
+    /// Each point's COR by the fitted law, in the file's order.
+    predicted: &'a [f64],
+    dof: usize,
+    lack_of_fit: Option<LackOfFit>,
+    answered: bool,
+    no_answer: &'a [String],
+}
+
+fn write_text(out: &mut dyn Write, r: &Report, f: &TemperatureFit) -> std::io::Result<()> {
+    writeln!(
+        out,
+        "dashpot temperature shift fitted to {} ({} points) on {}: c(T) = c_ref exp[(E_a/R)(1/T − 1/T_ref)], T_ref = {} °C",
+        crate::sanitize::line(r.file),
+        r.points,
+        r.preset.unwrap_or("the ball"),
+        human(r.t_ref_c, 4)
+    )?;
+    writeln!(out)?;
+    let ci = |e: &Estimate, scale: f64| {
+        if e.ci95.iter().any(|x| x.is_nan()) {
+            "no interval: no point left over".to_string()
+        } else {
+            format!(
+                "95 %: {} – {}",
+                human(e.ci95[0] / scale, 4),
+                human(e.ci95[1] / scale, 4)
+            )
+        }
+    };
+    let rows = vec![
+        vec![
+            "c_ref".into(),
+            format!("{} kg/s", human(f.c_ref.value, 4)),
+            ci(&f.c_ref, 1.0),
+        ],
+        vec![
+            "E_a".into(),
+            format!("{} kJ/mol", human(f.activation.value / 1e3, 4)),
+            ci(&f.activation, 1e3),
+        ],
+    ];
+    table(out, "  ", &rows)?;
+    if let Some(l) = &r.lack_of_fit {
+        writeln!(
+            out,
+            "  lack of fit: {} test, statistic {}, p = {}",
+            l.test,
+            human(l.statistic, 4),
+            human(l.p_value, 3)
+        )?;
+    }
+    if !r.answered {
+        writeln!(out, "no answer: {}", r.no_answer.join("; "))?;
+    }
+    Ok(())
+}

@@ -1,0 +1,105 @@
+//! CORs measured at several temperatures (docs/model.md §10.4, `fit --cor-temperature`): one
+//! row a measurement, columns `temperature_c`, `v0` (m/s), `cor` and optionally `cor_sd`;
+//! read by the same table reader as the COR tables (`table`: quoting, BOM, separators, line
+//! and column in every error).
+
+use super::table::{self, ColumnSpec};
+use super::{MeasuredError, check_points};
+
+/// One COR at a temperature, SI (°C for the temperature, as typed).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CorTemperatureRow {
+    /// The ball's temperature, °C.
+    pub temperature_c: f64,
+    /// Impact speed, m/s.
+    pub v0: f64,
+    /// The measured COR.
+    pub cor: f64,
+    /// Its standard deviation, where the file gives one.
+    pub sd: Option<f64>,
+    /// The row's line in the file.
+    pub line: usize,
+}
+
+const SPECS: [ColumnSpec; 4] = [
+    ColumnSpec {
+        name: "temperature",
+        aliases: &[("temperature_c", 1.0)],
+        required: true,
+    },
+    ColumnSpec {
+        name: "impact speed",
+        aliases: &[("v0", 1.0), ("v0_m_s", 1.0)],
+        required: true,
+    },
+    ColumnSpec {
+        name: "COR",
+        aliases: &[("cor", 1.0)],
+        required: true,
+    },
+    ColumnSpec {
+        name: "COR standard deviation",
+        aliases: &[("cor_sd", 1.0)],
+        required: false,
+    },
+];
+
+/// The rows of `text`: `temperature_c,v0,cor[,cor_sd]`. Temperatures above −273.15 °C, speeds
+/// positive, CORs in [0, 1], deviations positive; at most `MAX_POINTS` rows.
+pub fn parse_cor_temperature(text: &str) -> Result<Vec<CorTemperatureRow>, MeasuredError> {
+    let p = table::read(text, &SPECS)?;
+    check_points(&p)?;
+    let at =
+        |k: usize, i: usize, why: &str| MeasuredError::at(p.lines[i], p.cell_columns[k][i], why);
+    let mut rows = Vec::with_capacity(p.lines.len());
+    for i in 0..p.lines.len() {
+        let value = |k: usize| p.columns[k][i].unwrap_or(f64::NAN);
+        let (t, v0, cor, sd) = (value(0), value(1), value(2), p.columns[3][i]);
+        if t.is_nan() || t <= -crate::conditions::ZERO_CELSIUS {
+            return Err(at(0, i, "temperature must lie above −273.15 °C"));
+        }
+        if v0.is_nan() || v0 <= 0.0 {
+            return Err(at(1, i, "v0 must be positive"));
+        }
+        if !(0.0..=1.0).contains(&cor) {
+            return Err(at(2, i, "cor must lie in [0, 1]"));
+        }
+        if sd.is_some_and(|s| s <= 0.0) {
+            return Err(at(3, i, "cor_sd must be positive"));
+        }
+        rows.push(CorTemperatureRow {
+            temperature_c: t,
+            v0,
+            cor,
+            sd,
+            line: p.lines[i],
+        });
+    }
+    Ok(rows)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn rows_are_read_and_bad_cells_named() {
+        let rows = parse_cor_temperature("temperature_c,v0,cor,cor_sd\n23,3,0.5,0.01\n45,3,0.6,\n")
+            .unwrap();
+        assert_eq!(rows.len(), 2);
+        assert_eq!(
+            (rows[0].temperature_c, rows[0].v0, rows[0].cor),
+            (23.0, 3.0, 0.5)
+        );
+        assert_eq!(
+            (rows[0].sd, rows[1].sd, rows[1].line),
+            (Some(0.01), None, 3)
+        );
+        let e = parse_cor_temperature("temperature_c,v0,cor\n23,3,1.5\n").unwrap_err();
+        assert_eq!((e.line, e.column), (2, 6), "{e}");
+        let e = parse_cor_temperature("temperature_c,v0,cor\n-300,3,0.5\n").unwrap_err();
+        assert!(e.message.contains("above −273.15"), "{e}");
+        let e = parse_cor_temperature("v0,cor\n3,0.5\n").unwrap_err();
+        assert!(e.message.contains("temperature"), "{e}");
+    }
+}
