@@ -1,6 +1,7 @@
 //! `standards`: the governing bodies' tests, as `bouncelab standards --format json` writes them
 //! (src/cli/standards.rs): the ball standards, the bat standards, the court pace, in one list.
 
+use bouncelab::drop::deformation::DEFORMATION_STANDARDS;
 use bouncelab::drop::standards::STANDARDS;
 use bouncelab::oblique::court::ITF_COURT_PACE;
 use bouncelab::target::bat::BAT_STANDARDS;
@@ -8,7 +9,8 @@ use pyo3::exceptions::PyRuntimeError;
 use pyo3::prelude::*;
 
 /// The standards, as `bouncelab standards --format json`: a list of dicts with `name`,
-/// `title`, `test` (`kind` "drop", "cor", "bbcor" or "court-pace", and its conditions, SI),
+/// `title`, `test` (`kind` "drop", "cor", "bbcor", "court-pace" or "static", and its
+/// conditions, SI),
 /// `surface`, `window` ([lo, hi], None where unbounded), `balls`, `source` and `unconfirmed`.
 /// The names of kind "drop" and "cor" are what `drop(standard=…)` and `batch(standard=…)` take.
 #[pyfunction]
@@ -24,6 +26,9 @@ pub(crate) fn standards(py: Python<'_>) -> PyResult<Bound<'_, PyAny>> {
             all.push(serde_json::to_value(s)?);
         }
         all.push(serde_json::to_value(ITF_COURT_PACE)?);
+        for s in &DEFORMATION_STANDARDS {
+            all.push(serde_json::to_value(s)?);
+        }
         serde_json::to_string(&all)
     })()
     .map_err(|e| PyRuntimeError::new_err(e.to_string()))?;

@@ -34,6 +34,7 @@ pub mod run;
 mod run_text;
 pub mod shot;
 pub mod standards;
+pub mod statics;
 pub mod sweep;
 
 use clap::{Parser, Subcommand};
@@ -94,6 +95,10 @@ pub enum Command {
     Drop(drop::DropArgs),
     /// List the ball standards (drop and COR tests) and their windows
     Standards(standards::StandardsArgs),
+    /// The ball squeezed between two plates under a load: forward and return deflection
+    /// (the ITF deformation tests; docs/cli.md)
+    #[command(allow_negative_numbers = true)]
+    Static(statics::StaticArgs),
     /// The field's contact models (Kelvin–Voigt, Tsuji, Hunt–Crossley) calibrated to a COR,
     /// beside this model; --export writes them for LAMMPS, LIGGGHTS, Chrono, YADE or MuJoCo
     #[command(allow_negative_numbers = true)]
@@ -264,6 +269,10 @@ fn dispatch(cli: Cli, out: &mut dyn Write) -> anyhow::Result<()> {
         Command::Shot(mut a) => {
             merge(top, &mut a.ball)?;
             shot::run(&a, out)
+        }
+        Command::Static(mut a) => {
+            merge(top, &mut a.ball)?;
+            statics::run(&a, out)
         }
         Command::Standards(a) => {
             if top.is_given() {

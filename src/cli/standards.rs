@@ -2,6 +2,7 @@
 //! "Standards", cites each source).
 
 use super::output::{self, given, table};
+use crate::drop::deformation::DEFORMATION_STANDARDS;
 use crate::drop::standards::{STANDARDS, Standard, Test};
 use crate::oblique::court::{CourtTest, ITF_COURT_PACE};
 use crate::target::bat::{BAT_STANDARDS, BatTest};
@@ -31,6 +32,10 @@ pub fn run(a: &StandardsArgs, out: &mut dyn Write) -> anyhow::Result<()> {
                     list.push(serde_json::to_value(s)?);
                 }
                 list.push(serde_json::to_value(ITF_COURT_PACE)?);
+                // the static standards (`test.kind` "static", windows in m of the diameter)
+                for s in &DEFORMATION_STANDARDS {
+                    list.push(serde_json::to_value(s)?);
+                }
             }
             output::json(out, &all)?
         }
@@ -109,6 +114,16 @@ fn text(out: &mut dyn Write) -> std::io::Result<()> {
         court.balls.join(", "),
         court.title.into(),
     ]);
+    for s in &DEFORMATION_STANDARDS {
+        let mm = |x: Option<f64>| x.map_or("–".into(), |x| given(x * 1e3, 4));
+        rows.push(vec![
+            s.name.into(),
+            format!("static {} kg, two plates", given(s.test.load_kg, 4)),
+            format!("{} … {} mm", mm(s.window[0]), mm(s.window[1])),
+            s.balls.join(", "),
+            s.title.into(),
+        ]);
+    }
     table(out, "", &rows)?;
     writeln!(out)?;
     writeln!(out, "sources, and what could not be confirmed:")?;
@@ -117,7 +132,10 @@ fn text(out: &mut dyn Write) -> std::io::Result<()> {
         .iter()
         .map(|s| (s.name, s.source, s.unconfirmed));
     let courts = std::iter::once((court.name, court.source, court.unconfirmed));
-    for (name, source, unconfirmed) in sources.chain(bats).chain(courts) {
+    let statics = DEFORMATION_STANDARDS
+        .iter()
+        .map(|s| (s.name, s.source, s.unconfirmed));
+    for (name, source, unconfirmed) in sources.chain(bats).chain(courts).chain(statics) {
         writeln!(out, "  {name}: {source}")?;
         if let Some(u) = unconfirmed {
             writeln!(out, "    not confirmed: {u}")?;

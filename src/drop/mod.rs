@@ -13,6 +13,7 @@
 //!
 //! Pure: no I/O.
 
+pub mod deformation;
 pub mod fit;
 pub mod flight;
 pub mod standards;
