@@ -368,6 +368,8 @@ mod tests {
             "basketball",
             "table-tennis",
             "softball",
+            "baseball-mlb",
+            "softball-44",
         ];
         let users = ["first", "second"];
         assert_eq!(names, [&paper[..], &drop_balls, &users].concat());

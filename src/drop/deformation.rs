@@ -31,7 +31,7 @@ pub struct DeformationStandard {
     pub source: &'static str,
     /// What could not be confirmed from a public source, if anything.
     pub unconfirmed: Option<&'static str>,
-    /// The embedded presets this standard is the ball's own.
+    /// The embedded presets that pass this standard.
     pub balls: &'static [&'static str],
 }
 
