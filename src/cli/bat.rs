@@ -57,6 +57,9 @@ struct BatJson<'a> {
     run: &'a BatRun,
     /// [`crate::Ball::bat_warnings`]; `[]` when nothing.
     warnings: Vec<String>,
+    /// The ball as every JSON answer names it (docs/cli.md, "The ball object"): `ball` is
+    /// already the preset's name, a string, and stays one.
+    ball_record: crate::api::BallRecord,
 }
 
 pub fn run(a: &BatArgs, out: &mut dyn Write) -> anyhow::Result<()> {
@@ -82,14 +85,19 @@ pub fn run(a: &BatArgs, out: &mut dyn Write) -> anyhow::Result<()> {
                 standard: BAT_STANDARDS[0].name,
                 run: &r,
                 warnings: ball.bat_warnings(&r),
+                ball_record: ball.record_json(),
             },
         )?,
         BatFormat::Text => {
-            let head = format!(
+            let mut head = format!(
                 "{} against a bat of effective mass {} kg at the impact point",
                 ball.label(),
                 human(a.bat_mass, 4)
             );
+            if let Some(line) = ball.overrides_line() {
+                head.push('\n');
+                head.push_str(&line);
+            }
             text(out, &head, a, &r)?;
             output::warning_lines(out, &ball.bat_warnings(&r))?;
         }

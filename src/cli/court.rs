@@ -40,6 +40,9 @@ struct Report<'a> {
     tangential_damping: Option<f64>,
     #[serde(flatten)]
     pace: &'a CourtPace,
+    /// The ball fired (docs/cli.md, "The ball object").
+    #[serde(rename = "ball")]
+    ball_record: crate::api::BallRecord,
 }
 
 pub fn run(a: &CourtArgs, out: &mut dyn Write) -> anyhow::Result<()> {
@@ -60,6 +63,7 @@ pub fn run(a: &CourtArgs, out: &mut dyn Write) -> anyhow::Result<()> {
                 friction: a.friction,
                 tangential_damping: a.tangential.tangential_damping,
                 pace: &pace,
+                ball_record: ball.record_json(),
             },
         )?,
         CourtFormat::Text => {
@@ -69,6 +73,9 @@ pub fn run(a: &CourtArgs, out: &mut dyn Write) -> anyhow::Result<()> {
                 ball.label(),
                 given(a.friction, 6)
             )?;
+            if let Some(line) = ball.overrides_line() {
+                writeln!(out, "{line}")?;
+            }
             let row = |k: &str, v: String| vec![k.to_string(), v];
             let rows = vec![
                 row("court pace rating", human(pace.cpr, 4)),

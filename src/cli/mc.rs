@@ -269,6 +269,9 @@ fn text(
     st: &McStats,
 ) -> std::io::Result<()> {
     writeln!(out, "{}", ball.label())?;
+    if let Some(line) = ball.overrides_line() {
+        writeln!(out, "{line}")?;
+    }
     let vary: Vec<String> = spec
         .vary
         .iter()
