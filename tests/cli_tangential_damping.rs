@@ -33,8 +33,10 @@ fn oblique_json_names_the_dashpot_and_its_loss_only_when_given() {
     let loss = f(&v["energy"], "tangential_damping");
     assert!(loss > 0.0, "{loss}");
     assert!(f(&v["energy"], "residual") < 1e-12);
-    // the library's answer, to the last bit
-    let ball = Ball::from_preset("tennis").unwrap();
+    // the library's answer, to the last bit, on the ball the command line builds (`--v0 25`
+    // resolves the preset at 25 m/s: at its own 6.906 m/s the normalization rounds another
+    // way, one unit in the last place with the tennis ball of issue 52)
+    let ball = Ball::from_preset("tennis").unwrap().with_v0(25.0).unwrap();
     let spec = ObliqueSpec {
         v: Some(25.0),
         angle_deg: 45.0,

@@ -89,7 +89,19 @@ pub fn run(a: &DropArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         Some(name) => match (standards::find(name), deformation::find(name)) {
             (Ok(s), _) => (Some(s), None),
             (Err(_), Some(d)) => (None, Some(d)),
-            (Err(e), None) => anyhow::bail!(e),
+            // the impact standards' names, then the static ones'
+            (Err(_), None) => {
+                let statics = deformation::DEFORMATION_STANDARDS.iter().map(|s| s.name);
+                let names: Vec<&str> = standards::STANDARDS
+                    .iter()
+                    .map(|s| s.name)
+                    .chain(statics)
+                    .collect();
+                anyhow::bail!(
+                    "unknown standard '{name}' (available: {})",
+                    names.join(", ")
+                )
+            }
         },
     };
     let b = a.ball.resolve(None)?;

@@ -233,10 +233,7 @@ pub const STANDARDS: [Standard; 12] = [
 /// The standard called `name`, or an error listing the names.
 pub fn find(name: &str) -> Result<&'static Standard, String> {
     STANDARDS.iter().find(|s| s.name == name).ok_or_else(|| {
-        let statics = super::deformation::DEFORMATION_STANDARDS
-            .iter()
-            .map(|s| s.name);
-        let names: Vec<&str> = STANDARDS.iter().map(|s| s.name).chain(statics).collect();
+        let names: Vec<&str> = STANDARDS.iter().map(|s| s.name).collect();
         format!(
             "unknown standard '{name}' (available: {})",
             names.join(", ")
