@@ -403,7 +403,7 @@ mod tests {
         assert_eq!(
             err.to_string(),
             "unknown preset 'cricket' (available: superball, golf, baseball, tennis, football, \
-             basketball, table-tennis, softball)"
+             basketball, table-tennis, softball, baseball-mlb, softball-44)"
         );
     }
 }
