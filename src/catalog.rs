@@ -370,6 +370,8 @@ mod tests {
             "basketball",
             "table-tennis",
             "softball",
+            "baseball-mlb",
+            "softball-44",
         ];
         let users = ["first", "second"];
         assert_eq!(names, [&paper[..], &drop_balls, &users].concat());
@@ -403,7 +405,7 @@ mod tests {
         assert_eq!(
             err.to_string(),
             "unknown preset 'cricket' (available: superball, golf, baseball, tennis, football, \
-             basketball, table-tennis, softball)"
+             basketball, table-tennis, softball, baseball-mlb, softball-44)"
         );
     }
 }

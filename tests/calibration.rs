@@ -493,3 +493,44 @@ fn fit_save_writes_the_record_of_its_data() {
     let run: Value = serde_json::from_str(&o.stdout).unwrap();
     assert_eq!(outside(&run).len(), 1, "{run}");
 }
+
+/// Issue 52 item 3, the rest: `collide`, `bat` (as `ball_record`: their `ball` is the preset's
+/// name, a string, kept), `court`, `mc`, `fit` and `static` name their ball too, and their
+/// text headers list the overrides.
+#[test]
+fn the_other_answers_name_their_ball_too() {
+    let check = |args: &[&str], key: &str| {
+        let v = json(&[args, &["--format", "json"][..]].concat());
+        let ball = &v[key];
+        assert_eq!(ball["name"], "golf", "{args:?}: {v}");
+        assert_eq!(f(ball, "c"), 1000.0, "{args:?}");
+        assert_eq!(f(ball, "k_p"), 5.6e5, "{args:?}");
+        assert_eq!(ball["overrides"], serde_json::json!(["c"]), "{args:?}");
+        v
+    };
+    let golf = ["--preset", "golf", "--damping", "1000"];
+    let collide = [&["collide"][..], &golf, &["--target-mass", "0.2"]].concat();
+    assert_eq!(check(&collide, "ball_record")["ball"], "golf");
+    let bat = [&["bat"][..], &golf, &["--bat-mass", "0.6"]].concat();
+    assert_eq!(check(&bat, "ball_record")["ball"], "golf");
+    let court = [&["court"][..], &golf, &["--friction", "0.3"]].concat();
+    check(&court, "ball");
+    let mc = [
+        &["mc"][..],
+        &golf,
+        &["--vary", "k_p=5%", "--samples", "20", "--seed", "1"],
+    ]
+    .concat();
+    check(&mc, "ball");
+    let fit = [&["fit"][..], &golf, &["--cor", "0.8"]].concat();
+    check(&fit, "ball");
+    let stat = [&["static"][..], &golf, &["--load", "1"]].concat();
+    check(&stat, "ball");
+    for args in [&collide, &bat, &court, &mc, &fit, &stat] {
+        let text = ok_calibrated(args);
+        assert!(
+            text.contains("overrides: c; kept from the preset"),
+            "{args:?}: {text}"
+        );
+    }
+}

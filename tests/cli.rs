@@ -338,7 +338,9 @@ fn presets_lists_the_three_balls() {
             "football",
             "basketball",
             "table-tennis",
-            "softball"
+            "softball",
+            "baseball-mlb",
+            "softball-44"
         ]
     );
     assert!((f(&v[2], "zeta") - 0.6067).abs() < 1e-3);

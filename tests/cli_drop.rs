@@ -281,15 +281,21 @@ fn standards_lists_every_standard() {
     for s in &STANDARDS {
         assert!(out.contains(s.name), "{}", s.name);
     }
+    assert!(out.contains("itf-deformation"));
     assert!(out.contains("not confirmed"));
     let v = json(&["standards", "--format", "json"]);
     let list = v.as_array().unwrap();
     // the ball standards, then the bat standards (tests/cli_targets.rs), then the court's
-    // (tests/cli_oblique.rs)
+    // (tests/cli_oblique.rs), then the static ones (tests/cli_static.rs)
     let bats = bouncelab::target::bat::BAT_STANDARDS.len();
-    // and the pressure-loss tests (tests/conditions.rs)
+    // and the pressure-loss tests (tests/conditions.rs), then the static one
     let leaks = bouncelab::drop::conditions::PRESSURE_LOSS.len();
-    assert_eq!(list.len(), STANDARDS.len() + bats + 1 + leaks);
+    assert_eq!(list.len(), STANDARDS.len() + bats + 2 + leaks);
+    let last = &list[list.len() - 1];
+    assert_eq!(last["name"], "itf-deformation");
+    assert_eq!(last["test"]["kind"], "static");
+    assert_eq!(last["test"]["load_kg"], 8.165);
+    assert_eq!(last["window"], serde_json::json!([0.00559, 0.00737]));
     assert_eq!(list[3]["name"], "fiba");
     assert_eq!(list[3]["test"]["rebound_ref"], "top");
     assert_eq!(list[3]["window"], serde_json::json!([1.2, 1.4]));
@@ -396,4 +402,55 @@ fn ok_beside_calibration(args: &[&str]) -> String {
         o.stderr
     );
     o.stdout
+}
+
+/// `drop --standard itf-deformation`: the static standard is judged as a COR test is (the
+/// bounces are the drop's from 1 m), its verdict on the static chain's forward deflection,
+/// with the return reading and the rules' return window beside it (docs/cli.md "standards").
+#[test]
+fn the_static_standard_is_judged_by_drop() {
+    let v = json(&[
+        "drop",
+        "--preset",
+        "tennis",
+        "--standard",
+        "itf-deformation",
+        "--bounces",
+        "1",
+        "--format",
+        "json",
+    ]);
+    let s = &v["standard"];
+    assert_eq!(s["verdict"], "pass");
+    assert!((f(s, "measured") - 6.48e-3).abs() < 1e-7, "{s}");
+    assert!(s["judged_at_height_m"].is_null());
+    assert_eq!(f(&s["static"], "load_kg"), 8.165);
+    assert_eq!(f(&s["static"], "peak_m"), 0.0254);
+    assert_eq!(
+        s["static"]["return_window"],
+        serde_json::json!([0.008, 0.0108])
+    );
+    assert!(f(&s["static"], "return_deflection_m") >= f(s, "measured"));
+    let text = ok_beside_calibration(&[
+        "drop",
+        "--preset",
+        "tennis",
+        "--standard",
+        "itf-deformation",
+        "--bounces",
+        "1",
+    ]);
+    assert!(text.contains("standard itf-deformation:"), "{text}");
+    assert!(text.contains("predicted 6.480 mm: PASS"), "{text}");
+    // an impact standard's JSON has no `static` object
+    let v = json(&[
+        "drop",
+        "--preset",
+        "tennis",
+        "--standard",
+        "itf",
+        "--format",
+        "json",
+    ]);
+    assert!(v["standard"].get("static").is_none());
 }

@@ -5,7 +5,7 @@
 mod common;
 use bouncelab::Ball;
 use bouncelab::api::ObliqueSpec;
-use common::{bad, f, file_with, json, ok};
+use common::{bad, bl, f, file_with, json, ok};
 
 const OBLIQUE: [&str; 11] = [
     "oblique",
@@ -44,10 +44,18 @@ fn oblique_json_names_the_dashpot_and_its_loss_only_when_given() {
         inertia_factor: None,
     };
     let r = ball.oblique_damped(&spec, Some(19.0), 0).unwrap();
-    assert_eq!(f(&v, "vx_out"), r.vx_out);
-    assert_eq!(f(&v, "spin_out"), r.spin_out);
+    // read from the text: serde_json's default parser may land one unit in the last place
+    // off (9.210541943043001 read as 9.210541943043 with the tennis ball of issue 52); the
+    // shortest round-trip text of an f64 is its own, so equal text is the same bits
+    let text = bl(&args).stdout;
+    for (key, x) in [("vx_out", r.vx_out), ("spin_out", r.spin_out)] {
+        let want = format!("\"{key}\":{}", serde_json::to_string(&x).unwrap());
+        assert!(text.contains(&want), "{want} not in {text}");
+    }
     let ex = f(&v, "cor_tangential");
-    assert!((0.1..0.2).contains(&ex), "{ex}");
+    // 0.264 with the tennis ball of issue 52 (within 0.1–0.2 before its K_p was read through
+    // the static chain)
+    assert!((0.2..0.3).contains(&ex), "{ex}");
     assert!(f(&plain, "cor_tangential") > 0.5);
 }
 

@@ -62,5 +62,5 @@ fn identical_balls_head_on_at_the_cli_are_the_wall_impact() {
         "--format",
         "json",
     ]);
-    assert!((f(&tennis, "cor") - 0.7219).abs() < 5e-5, "{tennis}");
+    assert!((f(&tennis, "cor") - 0.7427).abs() < 5e-5, "{tennis}");
 }

@@ -208,8 +208,8 @@ fn row_is_runs(p: &ImpactParams, row: &ImpactRow) -> bool {
 
 /// The tennis ball (which flattens at its own speed) over speeds 2 … 60 m/s, row by row and
 /// through `impact_rows` (the lanes first, then the flattening's closed form): each row is
-/// `run`'s answer to 1e-12, it flattens (z_f > 0) at all but the slowest, and the closed form
-/// answers them.
+/// `run`'s answer to 1e-12, it flattens (z_f > 0) at all but the slowest (2 … 6 m/s), and the
+/// closed form answers them.
 #[test]
 fn tennis_rows_over_speeds_are_runs_answers() {
     let ball = bouncelab::Ball::from_preset("tennis").unwrap().params;
@@ -231,7 +231,9 @@ fn tennis_rows_over_speeds_are_runs_answers() {
         "tennis: {closed} closed forms, {flattened} of {} flatten",
         speeds.len()
     );
-    assert!(flattened >= 55, "{flattened} of {} flatten", speeds.len());
+    // 7 … 60 m/s: the tennis ball of issue 52 (K_p from the static chain) starts to flatten
+    // just above the ITF drop's 6.9 m/s
+    assert!(flattened >= 54, "{flattened} of {} flatten", speeds.len());
     assert!(
         closed >= flattened - 2,
         "{closed} closed forms, {flattened} flattened"

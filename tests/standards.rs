@@ -18,12 +18,14 @@ fn ball(name: &str) -> DropBall {
     }
 }
 
-const NEW_BALLS: [&str; 5] = [
+const NEW_BALLS: [&str; 7] = [
     "tennis",
     "football",
     "basketball",
     "table-tennis",
     "softball",
+    "baseball-mlb",
+    "softball-44",
 ];
 
 #[test]
@@ -169,4 +171,49 @@ fn the_table_is_consistent() {
     assert_eq!(itf.judge_value(1.46).margin, 1.47 - 1.46);
     let out = itf.judge_value(1.50);
     assert!(!out.pass && (out.margin + 0.03).abs() < 1e-12);
+}
+
+/// Issue 52 item 4: every standard `bouncelab standards` lists for balls (the drop and COR
+/// tests, and the static ones) names at least one embedded ball, and each named ball PASSes
+/// it at the standard's own conditions, in standard air.
+#[test]
+fn every_standard_names_a_ball_that_passes_it() {
+    use bouncelab::drop::deformation::DEFORMATION_STANDARDS;
+    for s in &STANDARDS {
+        assert!(!s.balls.is_empty(), "{} names no ball", s.name);
+        for name in s.balls {
+            let v = s.judge(&ball(name), Some(Air::default())).unwrap();
+            assert!(v.pass, "{name} against {}: {v:?}", s.name);
+        }
+    }
+    for s in &DEFORMATION_STANDARDS {
+        assert!(!s.balls.is_empty(), "{} names no ball", s.name);
+        for name in s.balls {
+            let v = s.judge(&ball(name)).unwrap();
+            assert!(v.pass, "{name} against {}: {v:?}", s.name);
+        }
+    }
+}
+
+/// The tennis ball's K_p is read through the static chain (presets/tennis.toml): its forward
+/// deflection under 8.165 kg is the ITF window's middle, 6.48 mm (it was 12.96 mm with
+/// K_p = 2F/d, the recoil spring in series forgotten).
+#[test]
+fn the_tennis_ball_deflects_mid_window_between_two_plates() {
+    let s = bouncelab::drop::deformation::find("itf-deformation").unwrap();
+    let v = s.judge(&ball("tennis")).unwrap();
+    assert!((v.measured - 6.48e-3).abs() < 1e-7, "{v:?}");
+    assert!((v.margin - 0.89e-3).abs() < 1e-7, "{v:?}");
+}
+
+/// The paper's baseball, measured at 1.25 m/s, is no MLB ball: at 85 ft/s it FAILs the MLB
+/// window (COR 0.485 under 0.514), which is why `baseball-mlb` exists.
+#[test]
+fn the_papers_baseball_fails_the_mlb_window() {
+    let v = standards::find("mlb")
+        .unwrap()
+        .judge(&ball("baseball"), None)
+        .unwrap();
+    assert!(!v.pass, "{v:?}");
+    assert!((v.measured - 0.485).abs() < 1e-3, "{v:?}");
 }

@@ -158,9 +158,9 @@ fn the_view_s_numbers_are_the_command_line_s() {
     // and the screen shows them
     let text = screen_text(&draw(&app, 120, 40)).join("\n");
     for shown in [
-        "out 17.54 m/s at 17.63°",
-        "spin  657.7 rad/s",
-        "CPR 49.2",
+        "out 17.56 m/s at 17.61°",
+        "spin  656.6 rad/s",
+        "CPR 47.35",
         "5 fast",
     ] {
         assert!(text.contains(shown), "{shown}\n{text}");

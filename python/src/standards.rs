@@ -2,6 +2,7 @@
 //! (src/cli/standards.rs): the ball standards, the bat standards, the court pace, in one list.
 
 use bouncelab::drop::conditions::{PRESSURE_LOSS, of};
+use bouncelab::drop::deformation::DEFORMATION_STANDARDS;
 use bouncelab::drop::standards::STANDARDS;
 use bouncelab::oblique::court::ITF_COURT_PACE;
 use bouncelab::target::bat::BAT_STANDARDS;
@@ -9,7 +10,8 @@ use pyo3::exceptions::PyRuntimeError;
 use pyo3::prelude::*;
 
 /// The standards, as `bouncelab standards --format json`: a list of dicts with `name`,
-/// `title`, `test` (`kind` "drop", "cor", "bbcor" or "court-pace", and its conditions, SI),
+/// `title`, `test` (`kind` "drop", "cor", "bbcor", "court-pace" or "static", and its
+/// conditions, SI),
 /// `surface`, `window` ([lo, hi], None where unbounded), `balls`, `source` and `unconfirmed`.
 /// The names of kind "drop" and "cor" are what `drop(standard=…)` and `batch(standard=…)` take.
 #[pyfunction]
@@ -40,6 +42,9 @@ pub(crate) fn standards(py: Python<'_>) -> PyResult<Bound<'_, PyAny>> {
                 "balls": p.balls,
                 "conditions": conditions_json(p.name),
             }));
+        }
+        for s in &DEFORMATION_STANDARDS {
+            all.push(serde_json::to_value(s)?);
         }
         serde_json::to_string(&all)
     })()

@@ -17,8 +17,8 @@ def no_user_presets(tmp_path, monkeypatch):
     """Both the binary and the package read $XDG_CONFIG_HOME/bouncelab/presets: an empty one."""
     monkeypatch.setenv("XDG_CONFIG_HOME", str(tmp_path / "config"))
 
-# the fit starts from the tennis preset's Mindlin K_t (K_p = 24713 N/m, ν = 0.5: 2/3 K_p =
-# 16475 N/m) and the rows' largest apparent friction; the truth is away from both
+# the fit starts from the tennis preset's Mindlin K_t (K_p = 49427 N/m, ν = 0.5: 2/3 K_p =
+# 32951 N/m) and the rows' largest apparent friction; the truth is away from both
 MU, KT = 0.45, 1.3e4
 
 

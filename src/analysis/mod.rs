@@ -12,5 +12,6 @@ mod mc_order;
 mod mc_rng;
 mod mc_spec;
 mod mc_stats;
+pub mod statics;
 pub mod sweep;
 pub mod work;

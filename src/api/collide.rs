@@ -14,6 +14,9 @@ use serde::Serialize;
 pub struct CollisionReport {
     /// The ball's preset name (`None` for a ball that is no preset).
     pub ball: Option<String>,
+    /// The ball as every JSON answer names it (docs/cli.md, "The ball object"): `ball_record`,
+    /// for `ball` was already this report's preset name, a string, and stays one.
+    pub ball_record: super::BallRecord,
     /// The ball's contact law.
     pub law: ContactLaw,
     /// The ball's mass m (kg).
@@ -69,6 +72,7 @@ impl Ball {
             .chain(self.calibration_warning(collision.closing_speed));
         Ok(CollisionReport {
             ball: self.name.clone(),
+            ball_record: self.record_json(),
             law: self.law,
             ball_mass: self.params.mass,
             ball_speed: self.params.v0,
@@ -125,6 +129,7 @@ impl Ball {
             let warnings: Vec<String> = warnings.into_iter().chain(own).chain(partner).collect();
             CollisionReport {
                 ball: self.name.clone(),
+                ball_record: self.record_json(),
                 law: self.law,
                 ball_mass: p1.mass,
                 ball_speed: p1.v0,

@@ -244,6 +244,8 @@ pub struct McReport<'a> {
     /// What the reader should know: quantiles too far in the tail for the samples to give
     /// their interval an end (`analysis::mc::interval_warnings`); `[]` when nothing.
     pub warnings: Vec<String>,
+    /// The ball sampled around (docs/cli.md, "The ball object").
+    pub ball: super::BallRecord,
 }
 
 impl<'a> McReport<'a> {
@@ -262,6 +264,7 @@ impl<'a> McReport<'a> {
             no_rebound: summary.no_rebound,
             stats: &summary.stats,
             warnings: ball.mc_warnings(&summary.stats),
+            ball: ball.record_json(),
         }
     }
 }

@@ -57,6 +57,9 @@ struct BatJson<'a> {
     run: &'a BatRun,
     /// [`crate::Ball::bat_warnings`]; `[]` when nothing.
     warnings: Vec<String>,
+    /// The ball as every JSON answer names it (docs/cli.md, "The ball object"): `ball` is
+    /// already the preset's name, a string, and stays one.
+    ball_record: crate::api::BallRecord,
 }
 
 pub fn run(a: &BatArgs, out: &mut dyn Write) -> anyhow::Result<()> {
@@ -82,6 +85,7 @@ pub fn run(a: &BatArgs, out: &mut dyn Write) -> anyhow::Result<()> {
                 standard: BAT_STANDARDS[0].name,
                 run: &r,
                 warnings: ball.bat_warnings(&r),
+                ball_record: ball.record_json(),
             },
             &ball.conditions,
         )?,
@@ -91,6 +95,10 @@ pub fn run(a: &BatArgs, out: &mut dyn Write) -> anyhow::Result<()> {
                 ball.label(),
                 human(a.bat_mass, 4)
             );
+            if let Some(line) = ball.overrides_line() {
+                head.push('\n');
+                head.push_str(&line);
+            }
             if let Some(line) = ball.conditions_line() {
                 head.push('\n');
                 head.push_str(&line);

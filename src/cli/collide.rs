@@ -150,6 +150,9 @@ fn text(
         Some(o) => format!("{o} (a body of its mass behind the given surface)"),
     };
     writeln!(out, "{} against {what}", ball.label())?;
+    if let Some(line) = ball.overrides_line() {
+        writeln!(out, "{line}")?;
+    }
     if let Some(line) = ball.conditions_line() {
         writeln!(out, "{line}")?;
     }

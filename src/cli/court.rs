@@ -63,6 +63,9 @@ struct Report<'a> {
     measured: Option<&'a Measured>,
     /// What μ_app and e were computed on.
     computed_on: String,
+    /// The ball fired (docs/cli.md, "The ball object").
+    #[serde(rename = "ball")]
+    ball_record: crate::api::BallRecord,
 }
 
 /// `court --fit FILE`: the measured bounces' means and the ITF's rating of them.
@@ -139,6 +142,7 @@ pub fn run(a: &CourtArgs, out: &mut dyn Write) -> anyhow::Result<()> {
                 calibration: calibration.as_ref(),
                 measured: measured.as_ref(),
                 computed_on,
+                ball_record: ball.record_json(),
             },
             &ball.conditions,
         )?,
@@ -176,6 +180,9 @@ fn text(
         ball.label(),
         given(friction, 6)
     )?;
+    if let Some(line) = ball.overrides_line() {
+        writeln!(out, "{line}")?;
+    }
     writeln!(out, "{}", surface.label())?;
     if let Some(line) = ball.conditions_line() {
         writeln!(out, "{line}")?;

@@ -4,7 +4,9 @@
 use super::ball::BallArgs;
 use super::intervals_text::line;
 use super::output::{self, csv_row, given, human, num, table};
+use crate::analysis::statics::StaticDeflection;
 use crate::api::Ball;
+use crate::drop::deformation::{self, DeformationStandard};
 use crate::drop::standards::{self, Reference, Standard, Test, Verdict};
 use crate::drop::{
     Air, DEFAULT_BOUNCES, DEFAULT_MIN_REBOUND, DropError, DropRun, DropSetup, End, G,
@@ -85,13 +87,28 @@ fn drop_error(e: DropError) -> anyhow::Error {
 pub fn run(a: &DropArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     // the pressure-loss test judges the leak, and runs the ball at its conditions
     let leak_test = a.standard.as_deref().and_then(super::drop_leak::find);
-    let standard = a
-        .standard
-        .as_deref()
-        .filter(|_| leak_test.is_none())
-        .map(standards::find)
-        .transpose()
-        .map_err(|e| anyhow::anyhow!(e))?;
+    // an impact standard (drop or COR test) or a static one (src/drop/deformation.rs)
+    let (standard, static_standard) = match a.standard.as_deref().filter(|_| leak_test.is_none()) {
+        None => (None, None),
+        Some(name) => match (standards::find(name), deformation::find(name)) {
+            (Ok(s), _) => (Some(s), None),
+            (Err(_), Some(d)) => (None, Some(d)),
+            // the impact standards' names, then the static ones'
+            (Err(_), None) => {
+                let statics = deformation::DEFORMATION_STANDARDS.iter().map(|s| s.name);
+                let names: Vec<&str> = standards::STANDARDS
+                    .iter()
+                    .map(|s| s.name)
+                    .chain(statics)
+                    .chain(crate::drop::conditions::PRESSURE_LOSS.iter().map(|p| p.name))
+                    .collect();
+                anyhow::bail!(
+                    "unknown standard '{name}' (available: {})",
+                    names.join(", ")
+                )
+            }
+        },
+    };
     let mut ball_args = a.ball.clone();
     if let Some(t) = leak_test {
         ball_args.conditions = super::drop_leak::conditions(t, &a.ball.conditions)?;
@@ -137,11 +154,24 @@ pub fn run(a: &DropArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         false => Vec::new(),
     };
     drop(watch);
-    let verdict = standard
+    let mut verdict = standard
         .map(|s| s.judge_on(&dball, air, &surface.target()))
         .transpose()
         .map_err(drop_error)?;
+    let statics = static_standard.map(|d| (d, d.deflection(&dball, dball.law)));
+    if let Some((d, s)) = &statics {
+        verdict = Some(d.judge(&dball).ok_or_else(|| {
+            anyhow::anyhow!(
+                "standard {}: the model gives no static deflection of this ball: {}",
+                d.name,
+                s.forward.as_ref().err().map_or("", |e| e.as_str())
+            )
+        })?);
+    }
     let mut warnings = b.drop_warnings(&run)?;
+    if let Some((_, s)) = &statics {
+        warnings.extend(b.static_warnings(s));
+    }
     // the standard's own test (its height or speed) against the record, when it is another
     // impact than the first bounce above
     if let Some(w) = standard.and_then(|s| b.standard_calibration_warning(s))
@@ -155,6 +185,9 @@ pub fn run(a: &DropArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         DropFormat::Json => {
             let judged_at = standard.and_then(|s| s.release_height(radius));
             let mut r = report(&run, &bands, verdict.as_ref(), judged_at);
+            if let (Some(sj), Some((d, s))) = (r.standard.as_mut(), &statics) {
+                sj.static_test = Some(static_json(d, s));
+            }
             r.warnings = warnings;
             r.ball = Some(b.record_json());
             r.surface = Some(surface);
@@ -182,6 +215,9 @@ pub fn run(a: &DropArgs, out: &mut dyn Write) -> anyhow::Result<()> {
             if let (Some(t), Some(v)) = (leak_test, &leak_verdict) {
                 super::drop_leak::text(out, t, v)?;
             }
+            if let (Some((d, s)), Some(v)) = (&statics, &verdict) {
+                static_verdict_text(out, d, s, v)?;
+            }
             output::warning_lines(out, &warnings)?;
             if let (Some(i), Some(first), Some(fit)) = (bands.first(), run.bounces.first(), &b.fit)
             {
@@ -200,8 +236,12 @@ pub fn run(a: &DropArgs, out: &mut dyn Write) -> anyhow::Result<()> {
                 )?;
             }
             // no standard asked for: name the ball's own, if it has one
-            let own = b.name.as_deref().and_then(standards::for_ball);
-            if let (None, None, Some(own)) = (standard, leak_test, own) {
+            if let (None, None, None, Some(own)) = (
+                standard,
+                static_standard,
+                leak_test,
+                b.name.as_deref().and_then(standards::for_ball),
+            ) {
                 writeln!(
                     out,
                     "\n{}'s standard is {} ({}): add --standard {}",
@@ -227,6 +267,85 @@ struct StandardJson {
     /// own drop, whatever `--height` gave the bounces above (`height`); `null` for a COR
     /// test. tests/cli_drop.rs.
     judged_at_height_m: Option<f64>,
+    /// A static standard's test (src/drop/deformation.rs): only for one.
+    #[serde(rename = "static", skip_serializing_if = "Option::is_none")]
+    static_test: Option<StaticJson>,
+}
+
+/// A static standard's conditions and its return reading, reported beside the verdict on the
+/// forward deflection (`measured`).
+#[derive(Serialize)]
+struct StaticJson {
+    load_kg: f64,
+    peak_m: f64,
+    return_deflection_m: Option<f64>,
+    /// Why the model gives no return deflection (`null` when it gives one).
+    return_reason: Option<String>,
+    /// The rules' return window, reported, not judged (docs/drop.md).
+    return_window: Option<[f64; 2]>,
+    return_inside: Option<bool>,
+}
+
+fn static_json(d: &DeformationStandard, s: &StaticDeflection) -> StaticJson {
+    let ret = s.return_.as_ref().ok().map(|r| r.diameter());
+    StaticJson {
+        load_kg: d.test.load_kg,
+        peak_m: d.test.peak_m,
+        return_deflection_m: ret,
+        return_reason: s.return_.as_ref().err().cloned(),
+        return_window: d.return_window,
+        return_inside: ret
+            .zip(d.return_window)
+            .map(|(r, [lo, hi])| (lo..=hi).contains(&r)),
+    }
+}
+
+/// "standard itf-deformation: …" with the forward verdict and the return reading.
+fn static_verdict_text(
+    out: &mut dyn Write,
+    d: &DeformationStandard,
+    s: &StaticDeflection,
+    v: &Verdict,
+) -> std::io::Result<()> {
+    let mm = |x: f64| human(x * 1e3, 4);
+    let window = |lo: Option<f64>, hi: Option<f64>| {
+        format!(
+            "{} … {} mm",
+            lo.map_or("–".into(), |x| human(x * 1e3, 4)),
+            hi.map_or("–".into(), |x| human(x * 1e3, 4))
+        )
+    };
+    writeln!(out)?;
+    writeln!(out, "standard {}: {}", d.name, d.title)?;
+    writeln!(
+        out,
+        "  {} kg between {}, the model's static chain (not the drop above)",
+        given(d.test.load_kg, 6),
+        d.surface
+    )?;
+    writeln!(
+        out,
+        "  forward deflection: window {}, predicted {} mm: {}, margin {}{} mm",
+        window(v.window[0], v.window[1]),
+        mm(v.measured),
+        if v.pass { "PASS" } else { "FAIL" },
+        if v.margin >= 0.0 { "+" } else { "" },
+        human(v.margin * 1e3, 3),
+    )?;
+    let ret = match &s.return_ {
+        Ok(r) => format!("{} mm", mm(r.diameter())),
+        Err(why) => format!("none ({why})"),
+    };
+    match d.return_window {
+        Some([lo, hi]) => writeln!(
+            out,
+            "  return deflection after a {} mm compression: {ret}; the rules' window {} \
+             (reported, not judged: docs/drop.md)",
+            mm(d.test.peak_m),
+            window(Some(lo), Some(hi))
+        ),
+        None => writeln!(out, "  return deflection: {ret}"),
+    }
 }
 
 /// One bounce's 95 % intervals on a fitted preset (docs/fitting.md, "Prediction intervals").
@@ -316,6 +435,7 @@ fn report<'a>(
             verdict: if v.pass { "pass" } else { "fail" },
             margin: v.margin,
             judged_at_height_m: judged_at,
+            static_test: None,
         }),
         warnings: Vec::new(),
         ball: None,

@@ -271,6 +271,9 @@ fn text(
     st: &McStats,
 ) -> std::io::Result<()> {
     writeln!(out, "{}", ball.label())?;
+    if let Some(line) = ball.overrides_line() {
+        writeln!(out, "{line}")?;
+    }
     if let Some(line) = ball.conditions_line() {
         writeln!(out, "{line}")?;
     }

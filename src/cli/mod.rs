@@ -37,6 +37,7 @@ mod run_text;
 pub mod shot;
 pub mod standards;
 pub mod surface;
+pub mod statics;
 pub mod sweep;
 
 use clap::{Parser, Subcommand};
@@ -99,6 +100,10 @@ pub enum Command {
     Standards(standards::StandardsArgs),
     /// List the embedded and user surfaces: their give, friction and sources
     Surfaces(surface::SurfacesArgs),
+    /// The ball squeezed between two plates under a load: forward and return deflection
+    /// (the ITF deformation tests; docs/cli.md)
+    #[command(allow_negative_numbers = true)]
+    Static(statics::StaticArgs),
     /// The field's contact models (Kelvin–Voigt, Tsuji, Hunt–Crossley) calibrated to a COR,
     /// beside this model; --export writes them for LAMMPS, LIGGGHTS, Chrono, YADE or MuJoCo
     #[command(allow_negative_numbers = true)]
@@ -269,6 +274,10 @@ fn dispatch(cli: Cli, out: &mut dyn Write) -> anyhow::Result<()> {
         Command::Shot(mut a) => {
             merge(top, &mut a.ball)?;
             shot::run(&a, out)
+        }
+        Command::Static(mut a) => {
+            merge(top, &mut a.ball)?;
+            statics::run(&a, out)
         }
         Command::Standards(a) => {
             if top.is_given() {

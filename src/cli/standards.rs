@@ -3,6 +3,7 @@
 
 use super::output::{self, given, table};
 use crate::drop::conditions::{self, PRESSURE_LOSS, PressureLoss};
+use crate::drop::deformation::DEFORMATION_STANDARDS;
 use crate::drop::standards::{STANDARDS, Standard, Test};
 use crate::oblique::court::{CourtTest, ITF_COURT_PACE};
 use crate::target::bat::{BAT_STANDARDS, BatTest};
@@ -39,6 +40,10 @@ pub fn run(a: &StandardsArgs, out: &mut dyn Write) -> anyhow::Result<()> {
                 list.push(serde_json::to_value(ITF_COURT_PACE)?);
                 for p in &PRESSURE_LOSS {
                     list.push(pressure_loss_json(p)?);
+                }
+                // the static standards (`test.kind` "static", windows in m of the diameter)
+                for s in &DEFORMATION_STANDARDS {
+                    list.push(serde_json::to_value(s)?);
                 }
             }
             output::json(out, &all)?
@@ -145,6 +150,16 @@ fn text(out: &mut dyn Write) -> std::io::Result<()> {
         court.balls.join(", "),
         court.title.into(),
     ]);
+    for s in &DEFORMATION_STANDARDS {
+        let mm = |x: Option<f64>| x.map_or("–".into(), |x| given(x * 1e3, 4));
+        rows.push(vec![
+            s.name.into(),
+            format!("static {} kg, two plates", given(s.test.load_kg, 4)),
+            format!("{} … {} mm", mm(s.window[0]), mm(s.window[1])),
+            s.balls.join(", "),
+            s.title.into(),
+        ]);
+    }
     table(out, "", &rows)?;
     // below the table, whose columns stay as they were (the names are longer)
     for p in &PRESSURE_LOSS {
@@ -168,7 +183,10 @@ fn text(out: &mut dyn Write) -> std::io::Result<()> {
         .map(|s| (s.name, s.source, s.unconfirmed));
     let courts = std::iter::once((court.name, court.source, court.unconfirmed));
     let leaks = PRESSURE_LOSS.iter().map(|p| (p.name, p.source, None));
-    for (name, source, unconfirmed) in sources.chain(bats).chain(courts).chain(leaks) {
+    let statics = DEFORMATION_STANDARDS
+        .iter()
+        .map(|s| (s.name, s.source, s.unconfirmed));
+    for (name, source, unconfirmed) in sources.chain(bats).chain(courts).chain(leaks).chain(statics) {
         writeln!(out, "  {name}: {source}")?;
         if let Some(u) = unconfirmed {
             writeln!(out, "    not confirmed: {u}")?;

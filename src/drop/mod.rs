@@ -14,6 +14,7 @@
 //! Pure: no I/O.
 
 pub mod conditions;
+pub mod deformation;
 pub mod fit;
 pub mod flight;
 pub mod standards;

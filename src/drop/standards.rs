@@ -77,7 +77,8 @@ pub struct Standard {
     pub source: &'static str,
     /// What could not be confirmed from a public source, if anything.
     pub unconfirmed: Option<&'static str>,
-    /// The embedded presets this standard is the ball's own.
+    /// The embedded presets that pass this standard (`bouncelab drop --preset BALL --standard
+    /// NAME`: tests/standards.rs, `every_standard_names_a_ball_that_passes_it`).
     pub balls: &'static [&'static str],
 }
 
@@ -118,7 +119,7 @@ pub const STANDARDS: [Standard; 12] = [
             "the window in FIFA's own current test manual (a retailer quotes 1.35–1.55 m for \
              its Quality Pro ball) and the bottom-of-ball reading",
         ),
-        balls: &[],
+        balls: &["football"],
     },
     Standard {
         name: "fifa-quality-pro",
@@ -161,7 +162,7 @@ pub const STANDARDS: [Standard; 12] = [
         window: [Some(0.240), Some(0.265)],
         source: "ITTF Technical Leaflet T3 (The Ball), B.7 Bounce conformity",
         unconfirmed: None,
-        balls: &[],
+        balls: &["table-tennis"],
     },
     Standard {
         name: "mlb",
@@ -172,7 +173,7 @@ pub const STANDARDS: [Standard; 12] = [
         source: "MLB Official Baseball Rules (COR 0.546 ± 0.032 at 85 ft/s), as quoted by \
                  Kagan & Atkinson, The Physics Teacher (2004)",
         unconfirmed: None,
-        balls: &[],
+        balls: &["baseball-mlb"],
     },
     Standard {
         name: "ncaa-baseball",
@@ -182,7 +183,7 @@ pub const STANDARDS: [Standard; 12] = [
         window: [None, Some(0.555)],
         source: "NCAA maximum COR 0.555 (ABCA, 2013); speed per ASTM F1887",
         unconfirmed: Some("the test speed (ASTM F1887's 60 mph assumed) and any lower limit"),
-        balls: &[],
+        balls: &["baseball-mlb"],
     },
     Standard {
         name: "softball-44",
@@ -192,7 +193,7 @@ pub const STANDARDS: [Standard; 12] = [
         window: [None, Some(0.44)],
         source: "ASA/USA Softball ball classes (COR maximum); ASTM F1887 at 60 mph",
         unconfirmed: Some("any lower limit: the classes are published as maxima"),
-        balls: &[],
+        balls: &["softball-44"],
     },
     Standard {
         name: "softball-47",
@@ -215,7 +216,7 @@ pub const STANDARDS: [Standard; 12] = [
             "the class itself (named in the issue, not found in a public rule book) and any \
              lower limit",
         ),
-        balls: &[],
+        balls: &["softball"],
     },
     Standard {
         name: "softball-52",
@@ -225,7 +226,7 @@ pub const STANDARDS: [Standard; 12] = [
         window: [None, Some(0.52)],
         source: "ASA/USA Softball ball classes (COR maximum); ASTM F1887 at 60 mph",
         unconfirmed: Some("any lower limit: the classes are published as maxima"),
-        balls: &[],
+        balls: &["softball"],
     },
 ];
 
@@ -240,9 +241,25 @@ pub fn find(name: &str) -> Result<&'static Standard, String> {
     })
 }
 
-/// The standard an embedded preset is made to pass, if any.
+/// Each embedded ball's own standard: the one its damping was fitted to (its TOML file says
+/// so). A ball may pass several (`balls` of each lists them all: the football passes both FIFA
+/// windows, the .47 softball every class above .47).
+const OWN: [(&str, &str); 7] = [
+    ("tennis", "itf"),
+    ("football", "fifa-quality-pro"),
+    ("basketball", "fiba"),
+    ("table-tennis", "ittf"),
+    ("softball", "softball-47"),
+    ("baseball-mlb", "mlb"),
+    ("softball-44", "softball-44"),
+];
+
+/// The standard an embedded preset is made to pass, if any: its own (the one it was fitted
+/// to), else the first that names it.
 pub fn for_ball(preset: &str) -> Option<&'static Standard> {
-    STANDARDS.iter().find(|s| s.balls.contains(&preset))
+    let own = OWN.iter().find(|(b, _)| *b == preset).map(|(_, s)| *s);
+    own.and_then(|name| STANDARDS.iter().find(|s| s.name == name))
+        .or_else(|| STANDARDS.iter().find(|s| s.balls.contains(&preset)))
 }
 
 /// A ball measured against a standard.

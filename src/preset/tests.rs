@@ -20,7 +20,9 @@ fn embedded_presets_parse() {
             "football",
             "basketball",
             "table-tennis",
-            "softball"
+            "softball",
+            "baseball-mlb",
+            "softball-44"
         ]
     );
     for p in &all {

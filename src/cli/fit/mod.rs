@@ -250,10 +250,14 @@ fn single(a: &FitArgs, cor: f64, stdout: &mut dyn Write) -> anyhow::Result<()> {
             &SingleJson {
                 r,
                 warnings: &warnings,
+                ball: b.record_json(),
             },
         )?,
         FitFormat::Text => {
             writeln!(out, "{}, {} law", b.label(), r.ball.law)?;
+            if let Some(line) = b.overrides_line() {
+                writeln!(out, "{line}")?;
+            }
             writeln!(
                 out,
                 "fitting K_r at v0 = {} m/s, holding m, K_p, c (ζ = {}) and z_p",
@@ -290,4 +294,6 @@ struct SingleJson<'a> {
     #[serde(flatten)]
     r: FitReport<'a>,
     warnings: &'a [String],
+    /// The ball the fit started from (docs/cli.md, "The ball object").
+    ball: crate::api::BallRecord,
 }

@@ -36,7 +36,13 @@ pub fn run(a: &FitArgs, path: &Path, out: &mut dyn Write) -> anyhow::Result<()> 
     let f = &report.fit;
     let mut text = Vec::new();
     match a.format {
-        FitFormat::Json => output::json(&mut text, &report)?,
+        FitFormat::Json => output::json(
+            &mut text,
+            &WithBall {
+                report: &report,
+                ball: ball.record_json(),
+            },
+        )?,
         FitFormat::Text => write_text(&mut text, &ball.label(), &report, f)?,
     }
     out.write_all(&text)?;
@@ -132,4 +138,12 @@ fn write_text(
     rest.push(vec!["answered".into(), answered]);
     table(out, "  ", &rest)?;
     crate::cli::output::warning_lines(out, &f.warnings)
+}
+
+/// The oblique fit's report and the ball it started from (docs/cli.md, "The ball object").
+#[derive(serde::Serialize)]
+struct WithBall<'a, T: serde::Serialize> {
+    #[serde(flatten)]
+    report: &'a T,
+    ball: crate::api::BallRecord,
 }

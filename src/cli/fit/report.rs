@@ -69,6 +69,8 @@ pub struct Report<'a> {
     /// true.
     #[serde(skip_serializing_if = "std::ops::Not::not")]
     sd_stated: bool,
+    /// The ball the fit started from (docs/cli.md, "The ball object").
+    ball: crate::api::BallRecord,
 }
 
 #[derive(Serialize)]
@@ -172,6 +174,7 @@ pub fn report<'a>(
         lack_of_fit: f.lack_of_fit,
         exact: f.exact(),
         sd_stated: f.stated_sd,
+        ball: ball.record_json(),
     }
 }
 
@@ -219,6 +222,9 @@ pub fn text(
     r: &Report,
 ) -> anyhow::Result<()> {
     writeln!(out, "{}, {} law", ball.label(), r.law)?;
+    if let Some(line) = ball.overrides_line() {
+        writeln!(out, "{line}")?;
+    }
     let what = match &data.file {
         Some(file) => format!("the {} {file}", data.kind),
         None => format!("the {} given", data.kind),

@@ -1,0 +1,94 @@
+//! The ball squeezed between two plates ([`crate::analysis::statics`], docs/model.md §11):
+//! the load in kilograms as the tests give it, and what the ball's record says of the answer.
+
+use super::Ball;
+use crate::analysis::statics::{StaticDeflection, static_deflection};
+use crate::drop::G;
+
+pub use crate::analysis::statics::ITF_RETURN_PEAK;
+
+impl Ball {
+    /// Forward and return deflection between two plates under `load_kg` (the weight
+    /// `load_kg · g` on each contact), the return read after compressing the diameter by
+    /// `peak` m. `Err` names the field at fault.
+    pub fn static_deflection(
+        &self,
+        load_kg: f64,
+        peak: f64,
+    ) -> Result<StaticDeflection, super::BallError> {
+        let bad = |field: &'static str, value: f64, reason: String| super::BallError::Invalid {
+            field,
+            value,
+            reason,
+        };
+        if !(load_kg.is_finite() && load_kg > 0.0 && load_kg <= 1e6) {
+            return Err(bad(
+                "load",
+                load_kg,
+                "must be a positive mass in kg, at most 1e6".into(),
+            ));
+        }
+        let diameter = 2.0 * self.radius();
+        if !(peak.is_finite() && peak > 0.0 && (diameter.is_nan() || peak < diameter)) {
+            return Err(bad(
+                "peak",
+                peak,
+                format!(
+                    "must be a positive shortening of the diameter, below the diameter {} m",
+                    crate::text::short(diameter, 4)
+                ),
+            ));
+        }
+        Ok(static_deflection(&self.params, self.law, load_kg * G, peak))
+    }
+
+    /// What the caller should know about a static answer: "outside calibration: …" when the
+    /// command line changed the recorded ball, when the answer runs another set or law than
+    /// the record's, or when the record holds no static test (a data set with neither speeds
+    /// nor heights): the chain's stiffness was then fitted to impacts alone; and a deflection
+    /// past the radius, where the model's small-deflection picture does not hold.
+    pub fn static_warnings(&self, s: &StaticDeflection) -> Vec<String> {
+        let mut w = Vec::new();
+        if let Some(c) = &self.calibration {
+            if !self.overrides.is_empty() {
+                w.push(format!(
+                    "outside calibration: {} changed the ball, whose record ({}) no longer \
+                     applies",
+                    self.overrides.join(", "),
+                    c.sources()
+                ));
+            } else if let Some(other) = &c.other_model {
+                w.push(format!(
+                    "outside calibration: the record ({}) is of the preset's own parameter set \
+                     and law, and this answer runs {other}",
+                    c.sources()
+                ));
+            } else if !c
+                .data
+                .iter()
+                .any(|d| d.speeds.is_empty() && d.heights.is_empty())
+            {
+                w.push(format!(
+                    "outside calibration: the ball's record holds no static test (it was fitted \
+                     to impacts, {}: {}): the static deflection extrapolates the model there",
+                    c.range_text(),
+                    c.sources()
+                ));
+            }
+        }
+        let r = self.radius();
+        for (what, d) in [("forward", &s.forward), ("return", &s.return_)] {
+            if let Ok(d) = d
+                && d.total() >= r
+            {
+                w.push(format!(
+                    "the {what} deflection at each plate, {} m, reaches the radius {} m: the \
+                     model's small-deflection picture does not hold there",
+                    crate::text::short(d.total(), 4),
+                    crate::text::short(r, 4)
+                ));
+            }
+        }
+        w
+    }
+}

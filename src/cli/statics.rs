@@ -1,0 +1,155 @@
+//! `bouncelab static`: the ball squeezed between two rigid plates under a load, the forward
+//! deflection of its diameter and, where the law has hysteresis, the return deflection after
+//! a deeper compression (docs/model.md §11; the ITF's deformation tests, docs/cli.md).
+
+use super::ball::BallArgs;
+use super::output::{self, human};
+use crate::analysis::statics::{ContactDeflection, StaticDeflection};
+use crate::api::{BallHeader, BallRecord, ITF_RETURN_PEAK};
+use crate::drop::G;
+use clap::{Args, ValueEnum};
+use serde::Serialize;
+use std::io::Write;
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum StaticFormat {
+    Text,
+    Json,
+}
+
+#[derive(Debug, Clone, Args)]
+pub struct StaticArgs {
+    #[command(flatten)]
+    pub ball: BallArgs,
+    /// The load between the plates, kg (its weight load·g bears on each contact; the ITF
+    /// tests use 8.165 kg)
+    #[arg(long, value_name = "KG", value_parser = super::number::number, allow_hyphen_values = true)]
+    pub load: f64,
+    /// The shortening of the diameter the ball is first compressed to before the return
+    /// reading, m [default: 0.0254, the ITF return test's 1 in]
+    #[arg(long, value_name = "M", default_value_t = ITF_RETURN_PEAK, value_parser = super::number::number, allow_hyphen_values = true)]
+    pub peak: f64,
+    /// Output format
+    #[arg(long, value_enum, default_value = "text")]
+    pub format: StaticFormat,
+}
+
+/// One reading, SI: the diameter's shortening and one contact's parts, or `null` and why.
+#[derive(Serialize)]
+struct Reading {
+    deflection_m: Option<f64>,
+    indentation_m: Option<f64>,
+    recoil_m: Option<f64>,
+    reason: Option<String>,
+}
+
+impl Reading {
+    fn of(r: &Result<ContactDeflection, String>) -> Reading {
+        match r {
+            Ok(d) => Reading {
+                deflection_m: Some(d.diameter()),
+                indentation_m: Some(d.indentation),
+                recoil_m: Some(d.recoil),
+                reason: None,
+            },
+            Err(why) => Reading {
+                deflection_m: None,
+                indentation_m: None,
+                recoil_m: None,
+                reason: Some(why.clone()),
+            },
+        }
+    }
+}
+
+#[derive(Serialize)]
+struct ReturnReading {
+    #[serde(flatten)]
+    reading: Reading,
+    peak_m: f64,
+    peak_force_n: Option<f64>,
+}
+
+#[derive(Serialize)]
+struct Report<'a> {
+    #[serde(flatten)]
+    header: BallHeader<'a>,
+    load_kg: f64,
+    force_n: f64,
+    g: f64,
+    forward: Reading,
+    #[serde(rename = "return")]
+    return_: ReturnReading,
+    warnings: Vec<String>,
+    ball: BallRecord,
+}
+
+pub fn run(a: &StaticArgs, out: &mut dyn Write) -> anyhow::Result<()> {
+    super::ball::check_overrides(&a.ball.set, None, None)?;
+    let ball = a.ball.resolve(None)?;
+    let s = ball.static_deflection(a.load, a.peak)?;
+    let warnings = ball.static_warnings(&s);
+    match a.format {
+        StaticFormat::Json => output::json(
+            out,
+            &Report {
+                header: ball.header(),
+                load_kg: a.load,
+                force_n: s.force,
+                g: G,
+                forward: Reading::of(&s.forward),
+                return_: ReturnReading {
+                    reading: Reading::of(&s.return_),
+                    peak_m: s.peak,
+                    peak_force_n: s.peak_force,
+                },
+                warnings,
+                ball: ball.record_json(),
+            },
+        )?,
+        StaticFormat::Text => {
+            writeln!(out, "{}", ball.label())?;
+            if let Some(line) = ball.overrides_line() {
+                writeln!(out, "{line}")?;
+            }
+            text(out, a.load, &s, ball.law.name())?;
+            output::warning_lines(out, &warnings)?;
+        }
+    }
+    Ok(())
+}
+
+fn text(out: &mut dyn Write, load: f64, s: &StaticDeflection, law: &str) -> std::io::Result<()> {
+    writeln!(
+        out,
+        "between two rigid plates, load {} kg (F = {} N on each contact, g = {G} m/s²), {law} law",
+        super::output::given(load, 6),
+        human(s.force, 4)
+    )?;
+    writeln!(
+        out,
+        "each contact: the contact element in series with the recoil spring K_r; the \
+         diameter shortens by twice one contact's deflection"
+    )?;
+    writeln!(out)?;
+    let line = |r: &Result<ContactDeflection, String>| match r {
+        Ok(d) => format!(
+            "{} mm (each contact: indentation {} mm + recoil spring {} mm)",
+            human(d.diameter() * 1e3, 4),
+            human(d.indentation * 1e3, 4),
+            human(d.recoil * 1e3, 4)
+        ),
+        Err(why) => format!("none: {why}"),
+    };
+    writeln!(out, "  forward deflection  {}", line(&s.forward))?;
+    writeln!(out, "  return deflection   {}", line(&s.return_))?;
+    if let Some(f_m) = s.peak_force {
+        writeln!(
+            out,
+            "  (return read on unloading from a {} mm compression of the diameter, {} N; --peak)",
+            human(s.peak * 1e3, 4),
+            human(f_m, 4)
+        )?;
+    }
+    Ok(())
+}
