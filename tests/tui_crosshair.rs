@@ -190,21 +190,46 @@ fn the_peak_force_and_contact_time_labels_are_never_cut() {
     }
 }
 
-/// `x`, `N`, `+`, `-` in the oblique and drop views say where the numbers are, not that the
-/// view has no chart — it has (issue 51 item 3: "the oblique view has no chart to read").
+/// `x`, `N`, `+`, `-` read the oblique view's charts and the drop view's as they do the
+/// others' (issue 51 item 3: they said "has no chart to read", then only where to look):
+/// the crosshair comes on and reads, `+` zooms (the title says ×2), `N` normalizes the forces
+/// and says why the height chart does not.
 #[test]
-fn chart_keys_say_what_works_where_they_do_not_read() {
-    for view_key in ['i', 'd'] {
+fn chart_keys_read_the_oblique_and_drop_charts() {
+    use bouncelab::tui::chartview::ChartId;
+    for (view_key, first) in [('i', ChartId::ObliqueForces), ('d', ChartId::DropHeight)] {
         let mut app = App::new(Preset::embedded().remove(1), false);
         press(&mut app, &[KeyCode::Char(view_key)]);
-        for k in ['x', 'N', '+', '-'] {
-            press(&mut app, &[KeyCode::Char(k)]);
-            let said = app.message().map(|m| m.text.clone()).unwrap_or_default();
-            assert!(
-                !said.contains("no chart") && said.contains("readout"),
-                "{view_key} {k}: {said}"
-            );
+        if view_key == 'd' {
+            press(&mut app, &[KeyCode::Char(' ')]); // paused: the chart holds still
         }
+        assert_eq!(app.chart_ids().first(), Some(&first), "{view_key}");
+        press(&mut app, &[KeyCode::Char('x')]);
+        let c = *app.crosshair().expect("the crosshair is on");
+        assert_eq!((c.chart, app.mode()), (0, Mode::Crosshair), "{view_key}");
+        let said = app.message().map(|m| m.text.clone()).unwrap_or_default();
+        assert!(said.starts_with('+'), "{view_key} x: {said}");
+        // the arrows move the crosshair, not the view's parameters
+        key(&mut app, KeyCode::Right);
+        assert!(app.crosshair().unwrap().x > c.x, "{view_key}");
+        press(&mut app, &[KeyCode::Char('+')]);
+        assert_eq!(app.chart_views().get(first).zoom, 1, "{view_key}");
+        let fig = app.screen_figure(first).unwrap();
+        assert!(fig.screen_title.contains("×2"), "{}", fig.screen_title);
+        press(&mut app, &[KeyCode::Char('-'), KeyCode::Char('N')]);
+        assert_eq!(app.chart_views().get(first).zoom, 0, "{view_key}");
+        let said = app.message().map(|m| m.text.clone()).unwrap_or_default();
+        if view_key == 'i' {
+            assert!(app.chart_views().get(first).normalized, "{said}");
+            let fig = app.screen_figure(first).unwrap();
+            let f = fig.series[0].points.iter().map(|p| p.1).fold(0.0, f64::max);
+            assert!((f - 1.0).abs() < 1e-9, "F_n peaks at {f}");
+        } else {
+            assert!(said.contains("only force charts normalize"), "{said}");
+        }
+        // and the screen draws the crosshair on that chart
+        let shown = screen_text(&draw(&app, 120, 40)).join("\n");
+        assert!(shown.contains("+("), "{shown}");
     }
 }
 

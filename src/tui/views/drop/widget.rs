@@ -30,6 +30,9 @@ pub struct DropPanel<'a> {
     pub drop: &'a DropView,
     /// The ball's name, for the readout's title.
     pub ball: &'a str,
+    /// The height chart as drawn ([`height_figure`] with its zoom and crosshair:
+    /// src/tui/app/charts.rs).
+    pub chart: &'a Figure,
     pub theme: Theme,
 }
 
@@ -56,7 +59,7 @@ fn render(p: DropPanel, area: Rect, buf: &mut Buffer) {
     };
     let [chart, ball] =
         Layout::horizontal([Constraint::Fill(1), Constraint::Length(BALL_WIDTH)]).areas(left);
-    render_chart(d, theme, chart, buf);
+    (&Plot::new(p.chart, theme)).render(chart, buf);
     render_ball(d, theme, ball, buf);
     if wide {
         render_readout(p.ball, d, theme, readout, buf);
@@ -116,10 +119,6 @@ pub fn height_figure(d: &DropView) -> Figure {
     );
     fig.screen_title = "Drop · height [m] vs t [s]".into();
     fig
-}
-
-fn render_chart(d: &DropView, theme: Theme, area: Rect, buf: &mut Buffer) {
-    (&Plot::new(&height_figure(d), theme)).render(area, buf);
 }
 
 /// The ball (to scale in height: its bottom at the current height) above the plate.
