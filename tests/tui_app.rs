@@ -439,7 +439,7 @@ fn u_says_what_it_undid() {
     press(&mut app, &chars("m"));
     press(&mut app, &[KeyCode::Enter]);
     app.update(Action::InputClear);
-    press(&mut app, &chars("0.05"));
+    press(&mut app, &chars("50"));
     press(&mut app, &[KeyCode::Enter, KeyCode::Esc]);
     assert_eq!(app.setting().params.mass, 0.05);
     press(&mut app, &chars("u"));

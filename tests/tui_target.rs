@@ -36,7 +36,7 @@ fn set(app: &mut App, field: Field, text: &str) {
 fn the_run_is_the_pairs_and_inf_is_the_wall_again() {
     let mut a = App::new(Preset::embedded().remove(0), true);
     let wall = a.run().unwrap().clone();
-    set(&mut a, Field::TargetMass, "0.2");
+    set(&mut a, Field::TargetMass, "200");
     set(&mut a, Field::TargetSpeed, "1.5");
     assert_eq!(
         (a.setting().target_mass, a.setting().target_speed),
@@ -60,12 +60,12 @@ fn the_run_is_the_pairs_and_inf_is_the_wall_again() {
     assert!(run.cor != wall.cor);
     // the form shows what was typed; ∞ for the wall
     let screen = screen_text(&draw(&a, 120, 40)).join("\n");
-    assert!(screen.contains("v_t          1.5 m/s"), "{screen}");
+    assert!(screen.contains("v_t      1.500 m/s"), "{screen}");
     set(&mut a, Field::TargetSpeed, "0");
     set(&mut a, Field::TargetMass, "inf");
     assert_eq!(*a.run().unwrap(), wall);
     let screen = screen_text(&draw(&a, 120, 40)).join("\n");
-    assert!(screen.contains("M              ∞ kg"), "{screen}");
+    assert!(screen.contains("M            ∞ g"), "{screen}");
     // two undoable changes each way
     assert_eq!(a.undo_depth(), 4);
 }
@@ -74,8 +74,8 @@ fn the_run_is_the_pairs_and_inf_is_the_wall_again() {
 fn a_target_that_is_never_met_is_refused() {
     for (field, text, why) in [
         (Field::TargetSpeed, "-5", "never meet"),
-        (Field::TargetMass, "0", "invalid target_mass: 0"),
-        (Field::TargetMass, "-1", "invalid target_mass: -1"),
+        (Field::TargetMass, "0", "invalid M: 0 g"),
+        (Field::TargetMass, "-1", "invalid M: -1.000 g"),
     ] {
         let mut a = App::new(Preset::embedded().remove(0), true);
         let before = a.setting().clone();
@@ -105,7 +105,7 @@ fn racket() -> App {
         .clone();
     let mut a = App::new(tennis, true);
     set(&mut a, Field::V0, "20");
-    set(&mut a, Field::TargetMass, "0.3");
+    set(&mut a, Field::TargetMass, "300");
     set(&mut a, Field::TargetStiffness, "4e4");
     set(&mut a, Field::TargetDamping, "5");
     press(&mut a, &[KeyCode::Esc]);

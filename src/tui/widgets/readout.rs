@@ -357,7 +357,12 @@ impl Readout<'_> {
                 "∞".into()
             }
         };
-        let mut text = format!(" pair: target M {} kg, v_t {} m/s", v(t.mass), v(t.speed));
+        // M in g, as the form (`m`) and `u` write it (issue 51 item 4)
+        let mut text = format!(
+            " pair: target M {} g, v_t {} m/s",
+            v(t.mass * 1e3),
+            v(t.speed)
+        );
         if !t.is_rigid() {
             text.push_str(&format!(
                 ", K_s {} N/m, c_s {} kg/s",
