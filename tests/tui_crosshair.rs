@@ -86,7 +86,7 @@ fn x_reads_the_force_time_curve_of_the_run() {
         .unwrap();
     let msg = a.message().unwrap().text.clone();
     let expect = format!(
-        "model at t {} ms: force {} N",
+        "model at t {} ms: F {} N",
         short(h.t[i] * 1e3, 4),
         short(h.force[i], 4)
     );
@@ -153,6 +153,8 @@ fn the_crosshair_at_120x40_and_80x24() {
     insta::assert_snapshot!("crosshair_80x24", draw(&a, 80, 24).backend());
 }
 
+/// A number without unit reads without one, and every quantity by its symbol on screen,
+/// never its CSV column (`zeta`, `max_force_normalized`: issue 51 item 4).
 #[test]
 fn a_number_without_unit_reads_without_one() {
     let mut a = App::new(Preset::embedded().remove(0), true);
@@ -160,7 +162,14 @@ fn a_number_without_unit_reads_without_one() {
         key(&mut a, KeyCode::Char('x'));
     }
     let msg = a.message().unwrap().text.clone();
-    assert!(msg.starts_with("+ zeta ") && !msg.contains('–'), "{msg}");
+    assert!(msg.starts_with("+ ζ ") && !msg.contains('–'), "{msg}");
+    assert!(!msg.contains("zeta") && !msg.contains("cor "), "{msg}");
+    // the sweeps view's peak force against ζ
+    let mut a = App::new(Preset::embedded().remove(0), true);
+    key(&mut a, KeyCode::Tab);
+    key(&mut a, KeyCode::Char('x'));
+    let msg = a.message().unwrap().text.clone();
+    assert!(!msg.contains("max_force_normalized"), "{msg}");
 }
 
 /// The labelled peak force and contact time are whole on screen at every size the explorer
