@@ -176,6 +176,7 @@ fn models_table(app: &App, theme: Theme) -> ModelsTable<'_> {
     ModelsTable {
         data: app.models(),
         error: app.models_error(),
+        no_rebound: app.run().is_some_and(|r| !r.rebound),
         setting: (s.get(Param::Lambda), s.get(Param::Zeta), s.get(Param::V0)),
         theme,
     }

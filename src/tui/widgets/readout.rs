@@ -191,8 +191,9 @@ impl Readout<'_> {
         lines.push(Line::raw(""));
         lines.extend(self.result_lines(inner_w));
         lines.extend(self.notes());
-        if inner_h >= lines.len() + ENERGY_ROWS {
-            lines.extend(self.energy_lines());
+        let energy = self.energy_lines();
+        if inner_h >= lines.len() + energy.len().max(ENERGY_ROWS) {
+            lines.extend(energy);
         }
         let left = inner_h.saturating_sub(lines.len());
         lines.extend(pins::table(
@@ -206,19 +207,23 @@ impl Readout<'_> {
 
     /// Where the run's energy went (mJ): the budget `bouncelab run` prints, from the same
     /// solver pass ([`crate::solver::EnergyBudget`]), round-off shown as 0 as there.
+    /// Without a rebound nothing goes out (e 0): what kinetic energy the ball still has when
+    /// the run ends is its sinking into the dashpot, said so (issue 51 item 5: `e 0` beside
+    /// `out 17.42`).
     fn energy_lines(&self) -> Vec<Line<'static>> {
-        let Some(e) = self.run.and_then(|r| r.energy) else {
+        let Some((e, rebound)) = self.run.and_then(|r| Some((r.energy?, r.rebound))) else {
             return Vec::new();
         };
         let mj = |x: f64| value(e.shown(x) * 1e3);
-        vec![
+        let out = if rebound {
+            mj(e.final_kinetic)
+        } else {
+            "0".into()
+        };
+        let mut lines = vec![
             Line::from(vec![
                 Span::styled(" energy mJ", self.theme.title()),
-                Span::raw(format!(
-                    " in {}  out {}",
-                    mj(e.initial_kinetic),
-                    mj(e.final_kinetic)
-                )),
+                Span::raw(format!(" in {}  out {out}", mj(e.initial_kinetic))),
             ]),
             Line::raw(format!(
                 "  dashpot {}  contact {}",
@@ -233,7 +238,14 @@ impl Readout<'_> {
                     r => format!("{r:.0e}"),
                 }
             )),
-        ]
+        ];
+        if !rebound {
+            lines.push(Line::raw(format!(
+                "  still sinking {}",
+                mj(e.final_kinetic)
+            )));
+        }
+        lines
     }
 
     pub(super) fn now(&self) -> Now<'_> {
