@@ -100,7 +100,8 @@ pub fn height_figure(d: &DropView) -> Figure {
                 .with_look(Look::new(Tone::Current, None, Some("●"))),
         );
     }
-    if let (Some((lo, hi)), Some((s, _))) = (d.band(), d.verdict) {
+    // the standard's window only over a drop: over an empty chart it was a legend of nothing
+    if let (Some((lo, hi)), Some((s, _)), true) = (d.band(), d.verdict, d.sequence().is_some()) {
         let name = format!("{} window", s.name);
         for (h, key) in [(hi, Some(name.as_str())), (lo, None)] {
             series.push(
@@ -117,7 +118,11 @@ pub fn height_figure(d: &DropView) -> Figure {
         FigAxis::linear("height (m)", "height", 1.0),
         series,
     );
-    fig.screen_title = "Drop · height [m] vs t [s]".into();
+    fig.screen_title = match (&d.run, d.paused()) {
+        (Err(_), _) => "Drop · no drop reaches this v0 (see the readout)".into(),
+        (_, true) => "Drop · height [m] vs t [s] · paused".into(),
+        _ => "Drop · height [m] vs t [s]".into(),
+    };
     fig
 }
 
@@ -235,6 +240,10 @@ fn bounce_lines(d: &DropView, theme: Theme) -> Vec<Line<'static>> {
 
 /// The standard's verdict on the model's prediction.
 fn verdict_lines(d: &DropView, theme: Theme) -> Vec<Line<'static>> {
+    // no drop at this v0: no verdict beside it (the readout's first line says why)
+    if d.run.is_err() {
+        return Vec::new();
+    }
     let Some((s, v)) = d.verdict else {
         return vec![Line::styled("no standard for this ball", theme.dim())];
     };
@@ -261,7 +270,9 @@ fn verdict_lines(d: &DropView, theme: Theme) -> Vec<Line<'static>> {
 }
 
 fn keys_line(d: &DropView, theme: Theme) -> Line<'static> {
-    let keys = if d.motion {
+    let keys = if d.paused() {
+        "paused · space play · b replay · d back"
+    } else if d.motion {
         "space pause · b replay · d back"
     } else {
         "reduced motion · d back"
