@@ -180,3 +180,23 @@ fn the_racket_at_every_size() {
         insta::assert_snapshot!(format!("racket_{w}x{h}"), draw(&a, w, h).backend());
     }
 }
+
+/// The preset's measurements were taken against a wall: a pair's run (here a 200 g target at
+/// rest, at the measured speed) is not compared with them, and the readout says why (issue
+/// 51 item 5: the pair's e stood beside the wall's measured 0.75 with a difference).
+#[test]
+fn a_pairs_run_is_not_compared_with_a_walls_measurement() {
+    let mut a = App::new(Preset::embedded().remove(0), false);
+    let wall = screen_text(&draw(&a, 120, 40)).join("\n");
+    assert!(wall.contains('%'), "the wall's run is compared:\n{wall}");
+    set(&mut a, Field::TargetMass, "200");
+    press(&mut a, &[KeyCode::Esc]);
+    for (w, h) in [(120, 40), (200, 60)] {
+        let shown = screen_text(&draw(&a, w, h)).join("\n");
+        assert!(!shown.contains('%'), "{w}x{h}\n{shown}");
+        assert!(
+            shown.contains("not compared with the pair"),
+            "{w}x{h}\n{shown}"
+        );
+    }
+}

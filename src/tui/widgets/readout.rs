@@ -84,13 +84,28 @@ struct Row {
 }
 
 /// Whether the preset's measured values were taken at `v0`: only then are they compared.
-fn measured_here(preset: &Preset, v0: f64) -> bool {
-    crate::figure::explorer::same_speed(preset.measured.v0, v0)
+fn measured_here(preset: &Preset, setting: &Setting) -> bool {
+    crate::figure::explorer::same_speed(preset.measured.v0, setting.params.v0)
+        && setting.target() == crate::target::Target::wall()
+}
+
+/// Why the preset's measured values are not compared, if they are not: taken at another
+/// speed, or against a wall while the run is a pair's (issue 51 item 5: a pair's COR was
+/// compared with a wall's measurement).
+fn not_compared(preset: &Preset, setting: &Setting) -> Option<&'static str> {
+    if setting.target() != crate::target::Target::wall() {
+        Some(": a wall's, not compared with the pair")
+    } else if !measured_here(preset, setting) {
+        Some(": not compared")
+    } else {
+        None
+    }
 }
 
 /// The results against the preset's measured values; no measured values away from the speed
-/// they were taken at (a peak force at 3.12 m/s says nothing of one at 12 m/s).
-fn results(preset: &Preset, r: Option<&ImpactResponse>, v0: f64) -> Vec<Row> {
+/// they were taken at (a peak force at 3.12 m/s says nothing of one at 12 m/s), nor on a
+/// target other than the wall they were measured on.
+fn results(preset: &Preset, r: Option<&ImpactResponse>, setting: &Setting) -> Vec<Row> {
     let Some(r) = r else {
         return Vec::new();
     };
@@ -100,7 +115,7 @@ fn results(preset: &Preset, r: Option<&ImpactResponse>, v0: f64) -> Vec<Row> {
         contact_time: None,
         ..preset.measured.clone()
     };
-    let m = if measured_here(preset, v0) {
+    let m = if measured_here(preset, setting) {
         &preset.measured
     } else {
         &none
@@ -301,7 +316,7 @@ impl Readout<'_> {
             ),
             theme.title(),
         )];
-        let rows = results(self.preset, self.run, self.setting.params.v0);
+        let rows = results(self.preset, self.run, self.setting);
         if rows.is_empty() {
             lines.push(Line::styled(" no result", theme.error()));
         }
@@ -342,11 +357,7 @@ impl Readout<'_> {
         // only the speed it runs at: claim no measurement then
         let m = &self.preset.measured;
         if m.cor.is_some() || m.max_force.is_some() || m.contact_time.is_some() {
-            let elsewhere = if measured_here(self.preset, self.setting.params.v0) {
-                ""
-            } else {
-                ": not compared"
-            };
+            let elsewhere = not_compared(self.preset, self.setting).unwrap_or("");
             lines.push(Line::styled(
                 format!(" measured at v0 = {} m/s{elsewhere}", sig_trim(m.v0, 4)),
                 theme.dim(),

@@ -37,7 +37,7 @@ impl Readout<'_> {
             )),
             Line::raw(format!(" c {} kg/s", value(s.params.damping))),
         ];
-        let rows = results(self.preset, self.run, s.params.v0);
+        let rows = results(self.preset, self.run, s);
         if rows.len() < 5 {
             lines.push(Line::styled(" no result", self.theme.error()));
             return lines;
@@ -84,7 +84,7 @@ impl Readout<'_> {
                 value(s.params.damping)
             )),
         ];
-        let rows = results(self.preset, self.run, self.setting.params.v0);
+        let rows = results(self.preset, self.run, self.setting);
         let fmt = compact_row;
         if rows.len() == 5 {
             lines.push(Line::raw(format!(
