@@ -85,7 +85,10 @@ impl ExplorerArgs {
         }
         let text = read_session(path)?;
         let session = Session::parse(path, &text).map_err(|e| anyhow::anyhow!(e))?;
-        let entry = ball::select(Some(&session.ball.preset), None)?;
+        // the session's ball by name: a preset this bouncelab lacks is the file's fault, named
+        // (issue 51 item 8; tests/tui_session.rs)
+        let entry = ball::select(Some(&session.ball.preset), None)
+            .map_err(|e| anyhow::anyhow!("{}: {e}", path.display()))?;
         let app = App::new(entry.preset, color)
             .with_session(&session)
             .map_err(|e| anyhow::anyhow!("{}: {e}", path.display()))?;
