@@ -135,10 +135,13 @@ fn a_compliant_target_typed_in_the_form_is_the_pairs_run() {
     );
     assert!((run.max_force - pair.max_force).abs() <= 1e-12 * pair.max_force);
     assert!((pair.cor - 0.738).abs() < 5e-4, "{}", pair.cor);
-    // `y`'s line is `run`'s, which has no target: it says so
+    // `y`'s line carries the target, as `collide` takes it (M in kg)
     a.update(bouncelab::tui::action::Action::ShowCommand);
     let screen = screen_text(&draw(&a, 200, 60)).join("\n");
-    assert!(screen.contains("collide --target-mass"), "{screen}");
+    assert!(
+        screen.contains("--target-mass 0.3 --target-stiffness 40000 --target-damping 5"),
+        "{screen}"
+    );
     a.update(Action::CloseHelp);
     let fig = bouncelab::figure::explorer::figure(
         bouncelab::figure::explorer::Chart::Hysteresis,
