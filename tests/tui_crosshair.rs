@@ -260,3 +260,28 @@ fn chart_messages_name_the_chart_as_its_frame_does() {
         "{said} / {title}"
     );
 }
+
+/// The chart's F_m label and the readout round alike (issue 51 item 4: `F_m 13268 N` on the
+/// chart beside `13270` in the readout): at 400 m/s the superball's F_m has five digits.
+#[test]
+fn the_peak_force_label_reads_as_the_readout() {
+    let mut a = App::new(Preset::embedded().remove(0), true);
+    a.update(bouncelab::tui::action::Action::SelectNext);
+    a.update(bouncelab::tui::action::Action::SelectNext);
+    key(&mut a, KeyCode::Char('='));
+    a.update(bouncelab::tui::action::Action::InputClear);
+    for c in "400".chars() {
+        key(&mut a, KeyCode::Char(c));
+    }
+    key(&mut a, KeyCode::Enter);
+    let r = a.run().unwrap().clone();
+    assert!(r.max_force >= 1e4, "{}", r.max_force);
+    let readout = bouncelab::tui::format::value(r.max_force);
+    let fig = explorer::figure(Chart::ForceTime, &a.scene());
+    let peak = fig
+        .series
+        .iter()
+        .find(|s| s.id == "model max_force")
+        .unwrap();
+    assert_eq!(peak.annotations, [format!("F_m {readout} N")]);
+}
