@@ -16,10 +16,14 @@
 use super::format::{screen_unit, value};
 use super::param::Param;
 use super::setting::Setting;
-use crate::api::{BallError, Overrides};
-use crate::model::params::{self, ImpactParams, MEANINGFUL_MAX, MEANINGFUL_MIN, ParamError};
+use crate::api::Overrides;
+use crate::model::params::{self, ImpactParams, MEANINGFUL_MAX, MEANINGFUL_MIN};
 use crate::solver::ImpactResponse;
 use crate::text::{short, sig_trim};
+
+mod refusal;
+use refusal::ball_refusal;
+pub use refusal::refusal;
 
 /// A field of the form, in the order shown.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -118,27 +122,6 @@ impl Field {
         } else {
             format!("{n} {unit}")
         }
-    }
-
-    /// The form's field a library check names, if the form has it.
-    fn named(f: params::Field) -> Option<Field> {
-        use params::Field as P;
-        Some(match f {
-            P::Mass => Field::Mass,
-            P::Radius => Field::Radius,
-            P::KP => Field::KP,
-            P::KR => Field::KR,
-            P::Damping => Field::C,
-            P::ZP => Field::ZP,
-            P::Lambda => Field::Lambda,
-            P::Zeta => Field::Zeta,
-            P::V0 => Field::V0,
-            P::TargetMass => Field::TargetMass,
-            P::TargetSpeed => Field::TargetSpeed,
-            P::TargetStiffness => Field::TargetStiffness,
-            P::TargetDamping => Field::TargetDamping,
-            _ => return None,
-        })
     }
 
     /// The live parameter this field is, if it is one.
@@ -316,40 +299,6 @@ fn closing(s: &Setting) -> Result<(), String> {
         ));
     }
     s.run_params().validate().map_err(|e| refusal(&e))
-}
-
-impl Field {
-    /// A typed value (SI) as a refusal shows it, in the field's screen unit.
-    fn shown(self, v: f64) -> String {
-        if v.is_finite() {
-            self.show(v)
-        } else {
-            "that".into()
-        }
-    }
-}
-
-/// A refusal of the library's checks in the form's words: the field's symbol and its value
-/// in the form's unit — "invalid M: 0 g (must be positive)", never the library's
-/// `target_mass` nor a mass in kg beside a form in g (issue 51 item 4).
-pub fn refusal(e: &ParamError) -> String {
-    match Field::named(e.field) {
-        Some(f) => format!(
-            "invalid {}: {} ({})",
-            f.symbol(),
-            f.shown(e.value),
-            e.reason
-        ),
-        None => e.to_string(),
-    }
-}
-
-/// [`refusal`] for the checks that say why as a [`BallError`].
-fn ball_refusal(e: &BallError) -> String {
-    match e {
-        BallError::Param(p) => refusal(p),
-        other => other.to_string(),
-    }
 }
 
 /// The contact modulus the values imply for an elastomer ball: E = K_p/(2π z_p) (Eq. 20 with
