@@ -122,6 +122,23 @@ pub fn given(x: f64, sig: usize) -> String {
     digits(x, sig, GIVEN)
 }
 
+/// `x` rounded to `sig` significant digits before it is written, the integer part of a plain
+/// number too (13268 to four digits is 13270): the explorer's one number format (its readout
+/// and its charts' labels agree; tui::format::value, issue 51 item 4).
+pub fn rounded(x: f64, sig: usize) -> f64 {
+    if !x.is_finite() || x == 0.0 {
+        return x;
+    }
+    let mag = x.abs().log10().floor() as i32;
+    let spare = mag + 1 - sig as i32;
+    if spare > 0 && mag < 5 {
+        let unit = 10f64.powi(spare);
+        (x / unit).round() * unit
+    } else {
+        x
+    }
+}
+
 /// [`digits`] in the [`LABEL`] style: 0.4, 121.8, 1.05e6.
 pub fn short(x: f64, sig: usize) -> String {
     digits(x, sig, LABEL)

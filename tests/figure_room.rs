@@ -370,3 +370,48 @@ fn the_explorers_exports_have_room() {
     assert_eq!(charts, every, "every view's export was checked");
     assert_room(&found);
 }
+
+/// This run's marker is drawn last in the SVG, over a measured marker at the same place, so it
+/// is never hidden under it (issue 51 item 7); the legend keeps the series' order.
+#[test]
+fn this_runs_marker_is_drawn_over_a_measured_one() {
+    use bouncelab::figure::{Axis, Figure, Kind, Marker, PALETTE, Series, Style, svg};
+    let at = vec![(0.5, 0.75)];
+    let run = Series::new(
+        "this run",
+        "this run",
+        Kind::ThisRun,
+        Style::Markers(Marker::Diamond),
+        4,
+    )
+    .with_points(at.clone());
+    let measured = Series::new(
+        "measured",
+        "measured",
+        Kind::Measured,
+        Style::Markers(Marker::Circle),
+        0,
+    )
+    .with_points(at);
+    let fig = Figure::new(
+        "t".into(),
+        String::new(),
+        Axis::linear("x", "x", 1.0),
+        Axis::linear("y", "y", 1.0),
+        vec![run, measured],
+    );
+    let picture = svg::render(&fig).unwrap();
+    // each colour is used twice: its marker in the plot, then its legend sample under it;
+    // the first use is the marker
+    let first = |(r, g, b): (u8, u8, u8)| {
+        let hex = format!("#{r:02X}{g:02X}{b:02X}");
+        picture
+            .find(&hex)
+            .unwrap_or_else(|| panic!("{hex} not drawn"))
+    };
+    let (run_at, measured_at) = (first(PALETTE[4]), first(PALETTE[0]));
+    assert!(
+        run_at > measured_at,
+        "this run at {run_at}, the measured marker at {measured_at}: drawn under it"
+    );
+}

@@ -439,7 +439,7 @@ fn u_says_what_it_undid() {
     press(&mut app, &chars("m"));
     press(&mut app, &[KeyCode::Enter]);
     app.update(Action::InputClear);
-    press(&mut app, &chars("0.05"));
+    press(&mut app, &chars("50"));
     press(&mut app, &[KeyCode::Enter, KeyCode::Esc]);
     assert_eq!(app.setting().params.mass, 0.05);
     press(&mut app, &chars("u"));
@@ -457,4 +457,28 @@ fn u_says_what_it_undid() {
     press(&mut app, &chars("ia"));
     press(&mut app, &chars("u"));
     assert_eq!(said(&app), "undone: θ 17.00 → 16.00°");
+}
+
+/// At 80 × 24 the readout beside the charts marks the selected parameter (▶, seen without
+/// colour) and says fine or coarse, and the oblique view's key row keeps `i back`
+/// (issue 51 item 6).
+#[test]
+fn the_80x24_screens_show_the_selection_the_step_and_the_way_back() {
+    let mut app = superball();
+    let shown = tui_common::screen_text(&tui_common::draw(&app, 80, 24)).join("\n");
+    assert!(shown.contains("▶λ "), "{shown}");
+    assert!(shown.contains("[fine]"), "{shown}");
+    press(&mut app, &[KeyCode::Right, KeyCode::Char(']')]);
+    let shown = tui_common::screen_text(&tui_common::draw(&app, 80, 24)).join("\n");
+    assert!(shown.contains("▶ζ ") && !shown.contains("▶λ"), "{shown}");
+    assert!(shown.contains("[coarse]"), "{shown}");
+    press(&mut app, &[KeyCode::Char('i')]);
+    for (w, h) in [(80, 24), (100, 30), (120, 40)] {
+        let shown = tui_common::screen_text(&tui_common::draw(&app, w, h));
+        let keys = shown.last().unwrap();
+        assert!(
+            keys.contains("i back") && keys.contains("t map"),
+            "{w}x{h}: {keys}"
+        );
+    }
 }

@@ -266,7 +266,7 @@ fn a_typed_mass_runs_to_the_screen() {
     assert_same_run(&a, &run_json(&line, home.path()));
 }
 
-/// Type `value` for `field` in the form (`m`), then close it.
+/// Type `value` (SI) for `field` in the form (`m`), in the form's unit (g, mm), then close it.
 fn set_setting(a: &mut App, field: bouncelab::tui::physical::Field, value: f64) {
     use bouncelab::tui::physical::Field;
     a.update(Action::OpenForm);
@@ -276,7 +276,7 @@ fn set_setting(a: &mut App, field: bouncelab::tui::physical::Field, value: f64) 
     }
     a.update(Action::FormEdit);
     a.update(Action::InputClear);
-    for c in value.to_string().chars() {
+    for c in (value * field.screen().1).to_string().chars() {
         a.update(Action::InputChar(c));
     }
     a.update(Action::InputSubmit);

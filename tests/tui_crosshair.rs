@@ -86,7 +86,7 @@ fn x_reads_the_force_time_curve_of_the_run() {
         .unwrap();
     let msg = a.message().unwrap().text.clone();
     let expect = format!(
-        "model at t {} ms: force {} N",
+        "model at t {} ms: F {} N",
         short(h.t[i] * 1e3, 4),
         short(h.force[i], 4)
     );
@@ -153,6 +153,8 @@ fn the_crosshair_at_120x40_and_80x24() {
     insta::assert_snapshot!("crosshair_80x24", draw(&a, 80, 24).backend());
 }
 
+/// A number without unit reads without one, and every quantity by its symbol on screen,
+/// never its CSV column (`zeta`, `max_force_normalized`: issue 51 item 4).
 #[test]
 fn a_number_without_unit_reads_without_one() {
     let mut a = App::new(Preset::embedded().remove(0), true);
@@ -160,7 +162,14 @@ fn a_number_without_unit_reads_without_one() {
         key(&mut a, KeyCode::Char('x'));
     }
     let msg = a.message().unwrap().text.clone();
-    assert!(msg.starts_with("+ zeta ") && !msg.contains('–'), "{msg}");
+    assert!(msg.starts_with("+ ζ ") && !msg.contains('–'), "{msg}");
+    assert!(!msg.contains("zeta") && !msg.contains("cor "), "{msg}");
+    // the sweeps view's peak force against ζ
+    let mut a = App::new(Preset::embedded().remove(0), true);
+    key(&mut a, KeyCode::Tab);
+    key(&mut a, KeyCode::Char('x'));
+    let msg = a.message().unwrap().text.clone();
+    assert!(!msg.contains("max_force_normalized"), "{msg}");
 }
 
 /// The labelled peak force and contact time are whole on screen at every size the explorer
@@ -190,21 +199,46 @@ fn the_peak_force_and_contact_time_labels_are_never_cut() {
     }
 }
 
-/// `x`, `N`, `+`, `-` in the oblique and drop views say where the numbers are, not that the
-/// view has no chart — it has (issue 51 item 3: "the oblique view has no chart to read").
+/// `x`, `N`, `+`, `-` read the oblique view's charts and the drop view's as they do the
+/// others' (issue 51 item 3: they said "has no chart to read", then only where to look):
+/// the crosshair comes on and reads, `+` zooms (the title says ×2), `N` normalizes the forces
+/// and says why the height chart does not.
 #[test]
-fn chart_keys_say_what_works_where_they_do_not_read() {
-    for view_key in ['i', 'd'] {
+fn chart_keys_read_the_oblique_and_drop_charts() {
+    use bouncelab::tui::chartview::ChartId;
+    for (view_key, first) in [('i', ChartId::ObliqueForces), ('d', ChartId::DropHeight)] {
         let mut app = App::new(Preset::embedded().remove(1), false);
         press(&mut app, &[KeyCode::Char(view_key)]);
-        for k in ['x', 'N', '+', '-'] {
-            press(&mut app, &[KeyCode::Char(k)]);
-            let said = app.message().map(|m| m.text.clone()).unwrap_or_default();
-            assert!(
-                !said.contains("no chart") && said.contains("readout"),
-                "{view_key} {k}: {said}"
-            );
+        if view_key == 'd' {
+            press(&mut app, &[KeyCode::Char(' ')]); // paused: the chart holds still
         }
+        assert_eq!(app.chart_ids().first(), Some(&first), "{view_key}");
+        press(&mut app, &[KeyCode::Char('x')]);
+        let c = *app.crosshair().expect("the crosshair is on");
+        assert_eq!((c.chart, app.mode()), (0, Mode::Crosshair), "{view_key}");
+        let said = app.message().map(|m| m.text.clone()).unwrap_or_default();
+        assert!(said.starts_with('+'), "{view_key} x: {said}");
+        // the arrows move the crosshair, not the view's parameters
+        key(&mut app, KeyCode::Right);
+        assert!(app.crosshair().unwrap().x > c.x, "{view_key}");
+        press(&mut app, &[KeyCode::Char('+')]);
+        assert_eq!(app.chart_views().get(first).zoom, 1, "{view_key}");
+        let fig = app.screen_figure(first).unwrap();
+        assert!(fig.screen_title.contains("×2"), "{}", fig.screen_title);
+        press(&mut app, &[KeyCode::Char('-'), KeyCode::Char('N')]);
+        assert_eq!(app.chart_views().get(first).zoom, 0, "{view_key}");
+        let said = app.message().map(|m| m.text.clone()).unwrap_or_default();
+        if view_key == 'i' {
+            assert!(app.chart_views().get(first).normalized, "{said}");
+            let fig = app.screen_figure(first).unwrap();
+            let f = fig.series[0].points.iter().map(|p| p.1).fold(0.0, f64::max);
+            assert!((f - 1.0).abs() < 1e-9, "F_n peaks at {f}");
+        } else {
+            assert!(said.contains("only force charts normalize"), "{said}");
+        }
+        // and the screen draws the crosshair on that chart
+        let shown = screen_text(&draw(&app, 120, 40)).join("\n");
+        assert!(shown.contains("+("), "{shown}");
     }
 }
 
@@ -225,4 +259,29 @@ fn chart_messages_name_the_chart_as_its_frame_does() {
         said.starts_with(title.split(" · ").next().unwrap()),
         "{said} / {title}"
     );
+}
+
+/// The chart's F_m label and the readout round alike (issue 51 item 4: `F_m 13268 N` on the
+/// chart beside `13270` in the readout): at 400 m/s the superball's F_m has five digits.
+#[test]
+fn the_peak_force_label_reads_as_the_readout() {
+    let mut a = App::new(Preset::embedded().remove(0), true);
+    a.update(bouncelab::tui::action::Action::SelectNext);
+    a.update(bouncelab::tui::action::Action::SelectNext);
+    key(&mut a, KeyCode::Char('='));
+    a.update(bouncelab::tui::action::Action::InputClear);
+    for c in "400".chars() {
+        key(&mut a, KeyCode::Char(c));
+    }
+    key(&mut a, KeyCode::Enter);
+    let r = a.run().unwrap().clone();
+    assert!(r.max_force >= 1e4, "{}", r.max_force);
+    let readout = bouncelab::tui::format::value(r.max_force);
+    let fig = explorer::figure(Chart::ForceTime, &a.scene());
+    let peak = fig
+        .series
+        .iter()
+        .find(|s| s.id == "model max_force")
+        .unwrap();
+    assert_eq!(peak.annotations, [format!("F_m {readout} N")]);
 }

@@ -201,3 +201,41 @@ fn the_ball_at_rest_is_round_on_its_plate() {
         );
     }
 }
+
+/// Above its terminal speed no drop reaches v0: the view says so in words and draws no
+/// window, no legend and no verdict beside an empty chart (issue 51 item 5: it showed the
+/// standard's window, its legend and "itf PASS" over nothing).
+#[test]
+fn above_the_terminal_speed_the_view_says_why_it_has_no_bounce() {
+    let mut app = App::new(preset("tennis"), false);
+    press(&mut app, &[KeyCode::Char('v'), KeyCode::Char('=')]);
+    app.update(Action::InputClear);
+    type_keys(&mut app, "60");
+    press(&mut app, &[KeyCode::Enter, KeyCode::Char('d')]);
+    assert!(app.drop_view().sequence().is_none());
+    for (w, h) in [(80, 24), (120, 40)] {
+        let shown = screen_text(&draw(&app, w, h)).join("\n");
+        assert!(shown.contains("no drop reaches"), "{w}x{h}\n{shown}");
+        assert!(shown.contains("terminal"), "{w}x{h}\n{shown}");
+        for bad in ["PASS", "FAIL", "window", "23.817"] {
+            assert!(!shown.contains(bad), "{bad} at {w}x{h}\n{shown}");
+        }
+    }
+}
+
+/// Paused, the drop view says so, at every size (issue 51 item 6).
+#[test]
+fn the_drop_view_shows_paused() {
+    let mut app = App::new(preset("tennis"), false).with_motion(true);
+    press(&mut app, &[KeyCode::Char('d')]);
+    app.update(Action::Tick(0.25));
+    for (w, h) in [(80, 24), (100, 30), (120, 40), (160, 50), (200, 60)] {
+        let shown = screen_text(&draw(&app, w, h)).join("\n");
+        assert!(!shown.contains("paused"), "{w}x{h}\n{shown}");
+    }
+    press(&mut app, &[KeyCode::Char(' ')]);
+    for (w, h) in [(80, 24), (100, 30), (120, 40), (160, 50), (200, 60)] {
+        let shown = screen_text(&draw(&app, w, h)).join("\n");
+        assert!(shown.contains("paused"), "{w}x{h}\n{shown}");
+    }
+}

@@ -62,7 +62,8 @@ fn an_accepted_value_is_one_undoable_change_and_the_form_comes_back() {
     );
     assert!(matches!(a.overlay(), Overlay::Form(f) if f.selected == Field::KP));
     assert_eq!(a.undo_depth(), 1);
-    set(&mut a, Field::Mass, "0.05");
+    // in g, as the readout shows it
+    set(&mut a, Field::Mass, "50");
     assert_eq!(a.setting().params.mass, 0.05);
     assert_eq!(a.undo_depth(), 2);
     key(&mut a, KeyCode::Esc);
@@ -79,9 +80,9 @@ fn a_value_out_of_range_is_refused_with_the_range_never_clamped() {
     for (field, text, range) in [
         (Field::KP, "-5", "1e-15 … 1e15 N/m"),
         (Field::C, "1e20", "1e-15 … 1e15 kg/s"),
-        (Field::Mass, "0", "1e-15 … 1e15 kg"),
-        (Field::Radius, "-1", "1e-15 … 1e15 m"),
-        (Field::ZP, "1e999", "1e-15 … 1e15 m"),
+        (Field::Mass, "0", "1e-12 … 1e18 g"),
+        (Field::Radius, "-1", "1e-12 … 1e18 mm"),
+        (Field::ZP, "1e999", "1e-12 … 1e18 mm"),
         (Field::E, "-5", "1e-15 … 1e15 Pa"),
         (Field::Lambda, "-1", "0 or 1e-15 … 1e6"),
         (Field::V0, "1000000000000000000", "range 1e-15 … 1e15"),
@@ -147,15 +148,15 @@ fn the_validity_warning_appears_exactly_when_z_m_or_alpha_exceeds_r() {
     // the message and the readout say it
     assert!(a.message().unwrap().text.contains("outside the model"));
     // R just below α_max: α_max named; just above: no warning; just below z_m: z_m named
-    set(&mut a, Field::Radius, &format!("{}", alpha * 0.999));
+    set(&mut a, Field::Radius, &format!("{}", alpha * 0.999 * 1e3));
     let w = a.validity().expect("a warning");
     assert!(w.contains("α_max") && !w.contains("z_m"), "{w}");
-    set(&mut a, Field::Radius, &format!("{}", alpha * 1.001));
+    set(&mut a, Field::Radius, &format!("{}", alpha * 1.001 * 1e3));
     assert_eq!(a.validity(), None);
-    set(&mut a, Field::Radius, &format!("{}", z_m * 0.999));
+    set(&mut a, Field::Radius, &format!("{}", z_m * 0.999 * 1e3));
     let w = a.validity().expect("a warning");
     assert!(w.contains("z_m") && w.contains("α_max"), "{w}");
-    set(&mut a, Field::Radius, &format!("{}", z_m * 1.001));
+    set(&mut a, Field::Radius, &format!("{}", z_m * 1.001 * 1e3));
     let w = a.validity().expect("a warning");
     assert!(!w.contains("z_m") && w.contains("α_max"), "{w}");
 }
@@ -193,9 +194,9 @@ fn the_narrow_readout_at_80x24_keeps_the_warning() {
 #[test]
 fn a_saved_preset_keeps_the_form_values() {
     let mut a = superball();
-    set(&mut a, Field::Mass, "0.05");
-    set(&mut a, Field::Radius, "0.03");
-    set(&mut a, Field::ZP, "0.003");
+    set(&mut a, Field::Mass, "50");
+    set(&mut a, Field::Radius, "30");
+    set(&mut a, Field::ZP, "3");
     let s = a.setting().clone();
     let (preset, _) = bouncelab::tui::save::preset_for(a.preset(), &s, "mine");
     let back = bouncelab::tui::setting::Setting::from_preset(s.preset, &preset);
@@ -259,13 +260,44 @@ fn an_entry_opens_holding_its_value_or_empty() {
         panic!("no entry")
     };
     assert_eq!(input.text, "");
-    typed(&mut a, "0.8");
+    typed(&mut a, "800");
     key(&mut a, KeyCode::Enter);
     assert_eq!(a.setting().target_mass, 0.8, "{:?}", a.message());
-    // a finite value opens as itself: Enter keeps it
+    // a finite value opens as itself, in g: Enter keeps it
     key(&mut a, KeyCode::Enter);
     let Overlay::Input(input) = a.overlay() else {
         panic!("no entry")
     };
-    assert_eq!(input.text, "0.8");
+    assert_eq!(input.text, "800");
+}
+
+/// One number format (issue 51 item 4): the form shows and takes m in g and R, z_p in mm as
+/// the readout does, four significant digits (it showed `m 0.0374 kg`, `λ 1.29908`,
+/// `E 2.16849e6` beside a readout's `m 37.40 g`); what it says back is in those units too,
+/// and a refusal names the field as the form does (`M`, never the library's `target_mass`).
+#[test]
+fn the_form_speaks_the_readouts_units_and_digits() {
+    let mut a = superball();
+    key(&mut a, KeyCode::Char('m'));
+    let shown = screen_text(&draw(&a, 120, 40)).join("\n");
+    assert!(shown.contains("m        37.40 g"), "{shown}");
+    assert!(shown.contains("z_p      4.000 mm"), "{shown}");
+    assert!(
+        !shown.contains(" kg ") && !shown.contains("1.29908"),
+        "{shown}"
+    );
+    key(&mut a, KeyCode::Esc);
+    set(&mut a, Field::Mass, "50");
+    let said = a.message().unwrap().text.clone();
+    assert_eq!(said, "m = 50.00 g");
+    set(&mut a, Field::TargetMass, "0");
+    let Overlay::Input(input) = a.overlay() else {
+        panic!("the entry closed")
+    };
+    let why = input.error.clone().unwrap();
+    assert!(
+        why.starts_with("invalid M: 0 g (must be positive)"),
+        "{why}"
+    );
+    assert!(!why.contains("target_mass"), "{why}");
 }

@@ -221,6 +221,16 @@ fn targets_are_set_refused_with_the_part_named_and_cleared() {
     );
     assert!(!msg.contains('\n'));
     assert_eq!(app.map_view().targets.as_ref(), Some(&t));
+    // a part without its bound lists the quantities too, with their units here (issue 51
+    // item 8: "expected QUANTITY>=VALUE or QUANTITY<=VALUE" named none)
+    press(&mut app, &back);
+    typed(&mut app, "cor=0.8");
+    press(&mut app, &[KeyCode::Enter]);
+    let msg = app.message().unwrap().text.clone();
+    assert!(
+        msg.contains("cor, max_force (N) or contact_time (ms)"),
+        "{msg}"
+    );
     // empty clears them
     press(&mut app, &back);
     press(&mut app, &[KeyCode::Enter]);

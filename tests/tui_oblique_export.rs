@@ -122,3 +122,54 @@ fn the_paths_are_the_arrival_and_the_departure() {
         paths.series[1].label
     );
 }
+
+/// The paths' SVG has one scale across and up: the outgoing path, a straight line from the
+/// contact, is drawn at its angle to the surface (issue 51 item 7: the axes were fitted each
+/// to its own data, so a 16° path was drawn at some other angle). Read off the picture: the
+/// solid polyline of the "out" path, its ends in pixels (y down).
+#[test]
+fn the_paths_svg_draws_each_angle_at_its_angle() {
+    let mut app = tennis();
+    // 16° at 25 m/s, as the issue's example
+    press(&mut app, &[KeyCode::Char('v'), KeyCode::Char('=')]);
+    app.update(Action::InputClear);
+    type_keys(&mut app, "25");
+    press(&mut app, &[KeyCode::Enter, KeyCode::Char('=')]);
+    app.update(Action::InputClear);
+    type_keys(&mut app, "16");
+    press(&mut app, &[KeyCode::Enter]);
+    let r = app.oblique_view().response().unwrap().clone();
+    assert!((r.angle_in_deg - 16.0).abs() < 1e-9, "{}", r.angle_in_deg);
+    let request = export_of(app.update(Action::Export));
+    let svg = bouncelab::figure::svg::render(&request.charts[3].1).unwrap();
+    // every two-point polyline: the out path is the one whose first end is the contact and
+    // whose second is up and to the right of it
+    let lines: Vec<[(f64, f64); 2]> = svg
+        .split("<polyline")
+        .skip(1)
+        .filter_map(|p| {
+            let pts = p.split("points=\"").nth(1)?.split('"').next()?;
+            let xy: Vec<(f64, f64)> = pts
+                .split_whitespace()
+                .filter_map(|q| {
+                    let (x, y) = q.split_once(',')?;
+                    Some((x.parse().ok()?, y.parse().ok()?))
+                })
+                .collect();
+            (xy.len() == 2).then(|| [xy[0], xy[1]])
+        })
+        .collect();
+    let angle = |[a, b]: [(f64, f64); 2]| (a.1 - b.1).atan2(b.0 - a.0).to_degrees();
+    let drawn: Vec<f64> = lines.iter().map(|&l| angle(l)).collect();
+    assert!(
+        drawn.iter().any(|a| (a - r.angle_out_deg).abs() < 0.5),
+        "out {}° not among the drawn {drawn:?}",
+        r.angle_out_deg
+    );
+    // the incoming path's dashes go down to the contact at 16°
+    assert!(
+        drawn.iter().any(|a| (a + r.angle_in_deg).abs() < 0.5),
+        "in −{}° not among the drawn {drawn:?}",
+        r.angle_in_deg
+    );
+}

@@ -166,3 +166,53 @@ fn the_command_box_at_every_size() {
         }
     }
 }
+
+/// A target typed in the form is part of `y`'s line (`--target-mass`, `--target-speed`,
+/// `--target-stiffness`, `--target-damping`, as `collide` takes them), and the line opens the
+/// explorer on it again (issue 51 item 2: the line ran the ball at the wall and said so).
+#[test]
+fn the_target_is_part_of_the_line_y_shows() {
+    let racket =
+        "--preset tennis --v0 20 --target-mass 0.3 --target-stiffness 40000 --target-damping 5";
+    let app = app_of(&words(&format!("bouncelab {racket}")));
+    let t = app.setting().target();
+    assert_eq!(
+        (t.mass, t.speed, t.stiffness, t.damping),
+        (0.3, 0.0, 4e4, 5.0)
+    );
+    // typed in the form (M in g), then `y`
+    let mut typed = app_of(&words("bouncelab --preset tennis --v0 20"));
+    tui_common::press(&mut typed, &[KeyCode::Char('m')]);
+    let to = bouncelab::tui::physical::Field::ALL
+        .iter()
+        .position(|&f| f == bouncelab::tui::physical::Field::TargetMass)
+        .unwrap();
+    tui_common::press(&mut typed, &vec![KeyCode::Down; to]);
+    tui_common::press(&mut typed, &[KeyCode::Enter]);
+    tui_common::type_keys(&mut typed, "300");
+    tui_common::press(
+        &mut typed,
+        &[KeyCode::Enter, KeyCode::Esc, KeyCode::Char('y')],
+    );
+    let Overlay::Command(shown) = typed.overlay().clone() else {
+        panic!("no command box")
+    };
+    assert!(shown.ends_with("--v0 20 --target-mass 0.3"), "{shown}");
+    assert!(
+        typed.message().is_none(),
+        "nothing left uncarried: {:?}",
+        typed.message()
+    );
+    let again = app_of(&words(&shown));
+    assert_eq!(again.setting().target(), typed.setting().target());
+    assert_eq!(again.run().unwrap().cor, typed.run().unwrap().cor);
+    // refused as the form refuses it, naming the flag
+    let cli = Cli::try_parse_from(words("bouncelab --preset tennis --target-mass 0")).unwrap();
+    let e = cli
+        .explore
+        .app(&cli.choice, false)
+        .err()
+        .unwrap()
+        .to_string();
+    assert!(e.starts_with("--target-mass: invalid M: 0 g"), "{e}");
+}

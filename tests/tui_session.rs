@@ -108,6 +108,12 @@ fn a_bad_session_is_one_line_with_file_line_and_column_exit_2() {
                 .join("\n"),
             "invalid radius: -1 (must not be negative)",
         ),
+        // a preset this bouncelab does not have: the error did not name the session file
+        // (issue 51 item 8)
+        (
+            text.replace("preset = \"golf\"", "preset = \"nosuch\""),
+            "nosuch",
+        ),
     ];
     for (i, (bad, why)) in cases.iter().enumerate() {
         let file = dir.path().join(format!("s{i}.toml"));
@@ -117,7 +123,12 @@ fn a_bad_session_is_one_line_with_file_line_and_column_exit_2() {
         let err = o.stderr.trim();
         assert_eq!(err.lines().count(), 1, "{err}");
         assert!(err.contains(why), "{why}: {err}");
-        if !["unknown law", "invalid radius"]
+        // every refusal names the session file (issue 51 item 8)
+        assert!(
+            err.contains(&file.display().to_string()),
+            "names the file: {err}"
+        );
+        if !["unknown law", "invalid radius", "nosuch"]
             .iter()
             .any(|w| why.starts_with(w))
         {

@@ -39,6 +39,19 @@ pub struct ExplorerArgs {
     /// μ: the explorer opens on its oblique view
     #[arg(long, value_name = "MU", value_parser = super::number::number, allow_hyphen_values = true)]
     pub friction: Option<f64>,
+    /// The target's mass M (kg; `inf`: the wall) the explorer opens on, as `collide`
+    /// --target-mass takes it [default: the wall]
+    #[arg(long, value_name = "KG", value_parser = super::number::number, allow_hyphen_values = true)]
+    pub target_mass: Option<f64>,
+    /// The target's speed v_t toward the ball (m/s), as `collide` --target-speed
+    #[arg(long, value_name = "V", value_parser = super::number::number, allow_hyphen_values = true)]
+    pub target_speed: Option<f64>,
+    /// The stiffness K_s of the target's surface (N/m; `inf`: rigid), as `collide`
+    #[arg(long, value_name = "N/m", value_parser = super::number::number, allow_hyphen_values = true)]
+    pub target_stiffness: Option<f64>,
+    /// The damping c_s beside K_s (kg/s), as `collide` --target-damping
+    #[arg(long, value_name = "kg/s", value_parser = super::number::number, allow_hyphen_values = true)]
+    pub target_damping: Option<f64>,
     /// A session the explorer's `S` saved: the explorer opens in it again (docs/explorer.md)
     #[arg(long, value_name = "FILE", conflicts_with_all = ["preset", "config"])]
     pub session: Option<std::path::PathBuf>,
@@ -63,6 +76,10 @@ impl ExplorerArgs {
             ("--angle", self.angle.is_some()),
             ("--spin", self.spin.is_some()),
             ("--friction", self.friction.is_some()),
+            ("--target-mass", self.target_mass.is_some()),
+            ("--target-speed", self.target_speed.is_some()),
+            ("--target-stiffness", self.target_stiffness.is_some()),
+            ("--target-damping", self.target_damping.is_some()),
             ("--session", self.session.is_some()),
         ]
         .into_iter()
@@ -85,7 +102,10 @@ impl ExplorerArgs {
         }
         let text = read_session(path)?;
         let session = Session::parse(path, &text).map_err(|e| anyhow::anyhow!(e))?;
-        let entry = ball::select(Some(&session.ball.preset), None)?;
+        // the session's ball by name: a preset this bouncelab lacks is the file's fault, named
+        // (issue 51 item 8; tests/tui_session.rs)
+        let entry = ball::select(Some(&session.ball.preset), None)
+            .map_err(|e| anyhow::anyhow!("{}: {e}", path.display()))?;
         let app = App::new(entry.preset, color)
             .with_session(&session)
             .map_err(|e| anyhow::anyhow!("{}: {e}", path.display()))?;
@@ -106,6 +126,18 @@ impl ExplorerArgs {
         ball::set_lambda_zeta(&mut b, self.lambda, self.zeta)?;
         let radius = b.measured.as_ref().map(|m| m.radius);
         let app = App::new(entry.preset, color).with_start(b.params, b.law, radius);
+        let target = [
+            self.target_mass,
+            self.target_speed,
+            self.target_stiffness,
+            self.target_damping,
+        ];
+        // `collide`'s target, checked as the form (`m`) checks it (src/tui/physical.rs)
+        let app = if target.iter().any(Option::is_some) {
+            app.with_target(target).map_err(|e| anyhow::anyhow!(e))?
+        } else {
+            app
+        };
         let oblique = [self.angle, self.spin, self.friction];
         if oblique.iter().all(Option::is_none) {
             return Ok(app);

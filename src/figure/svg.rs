@@ -18,7 +18,10 @@ use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 use std::fmt;
 
+mod aspect;
 mod legend;
+
+pub use aspect::{equal_scales, plot_size};
 
 /// Picture size in CSS pixels: the aspect of a journal figure, wide enough for the legend.
 pub const WIDTH: u32 = 800;
@@ -371,7 +374,15 @@ pub fn render_aligned(fig: &Figure, left: i32) -> Result<String, RenderError> {
             .draw()
             .map_err(err)?;
         let offsets = annotation_offsets(&chart, fig);
-        for (s, offsets) in fig.series.iter().zip(&offsets) {
+        // this run's marker last, over everything: never hidden under a measured marker at
+        // its place (the legend keeps the series' order; issue 51 item 7)
+        let this_run = |s: &Series| s.kind == super::Kind::ThisRun;
+        let (last, first): (Vec<_>, Vec<_>) = fig
+            .series
+            .iter()
+            .zip(&offsets)
+            .partition(|(s, _)| this_run(s));
+        for (s, offsets) in first.into_iter().chain(last) {
             draw_series(&mut chart, fig, s, offsets)?;
         }
         // a full frame, as journals print it (plotters draws the left and bottom axes only)

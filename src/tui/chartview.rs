@@ -21,19 +21,43 @@ pub struct ChartView {
     pub zoom: u8,
 }
 
+/// A chart on screen: one of the figure layer's (impact, sweeps and models views), or one a
+/// view draws itself — the oblique view's three time charts, the drop view's height chart —
+/// which `x`, `N`, `+`, `-` read as they do the others (issue 51 item 3).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum ChartId {
+    Explorer(Chart),
+    /// F_n and F_t against time.
+    ObliqueForces,
+    /// v_c against time.
+    ObliqueSlip,
+    /// ω against time.
+    ObliqueSpin,
+    /// Height against time.
+    DropHeight,
+}
+
+impl From<Chart> for ChartId {
+    fn from(c: Chart) -> Self {
+        ChartId::Explorer(c)
+    }
+}
+
 /// Every chart's view; a chart not listed is drawn as it is.
 #[derive(Debug, Clone, Default, PartialEq)]
-pub struct ChartViews(Vec<(Chart, ChartView)>);
+pub struct ChartViews(Vec<(ChartId, ChartView)>);
 
 impl ChartViews {
-    pub fn get(&self, chart: Chart) -> ChartView {
+    pub fn get(&self, chart: impl Into<ChartId>) -> ChartView {
+        let chart = chart.into();
         self.0
             .iter()
             .find(|(c, _)| *c == chart)
             .map_or(ChartView::default(), |(_, v)| *v)
     }
 
-    pub fn set(&mut self, chart: Chart, view: ChartView) {
+    pub fn set(&mut self, chart: impl Into<ChartId>, view: ChartView) {
+        let chart = chart.into();
         self.0.retain(|(c, _)| *c != chart);
         if view != ChartView::default() {
             self.0.push((chart, view));
@@ -42,24 +66,26 @@ impl ChartViews {
 }
 
 /// Whether `chart` can be normalized: force against time or displacement, both linear.
-pub fn normalizable(chart: Chart) -> bool {
-    x_name(chart).is_some()
+pub fn normalizable(chart: impl Into<ChartId>) -> bool {
+    x_name(chart.into()).is_some()
 }
 
 /// The normalized x axis' name.
-fn x_name(chart: Chart) -> Option<&'static str> {
+fn x_name(chart: ChartId) -> Option<&'static str> {
     match chart {
-        Chart::ForceTime | Chart::ModelsForceTime => Some("t/t_f"),
-        Chart::Hysteresis => Some("α/α_max"),
-        Chart::ModelsForceDisplacement => Some("δ/δ_max"),
+        ChartId::Explorer(Chart::ForceTime | Chart::ModelsForceTime) => Some("t/t_f"),
+        ChartId::Explorer(Chart::Hysteresis) => Some("α/α_max"),
+        ChartId::Explorer(Chart::ModelsForceDisplacement) => Some("δ/δ_max"),
+        // F_n and F_t by the contact's largest force and its duration
+        ChartId::ObliqueForces => Some("t/t_c"),
         _ => None,
     }
 }
 
 /// `fig` (of `chart`) as `view` draws it.
-pub fn apply(view: ChartView, chart: Chart, fig: &mut Figure) {
+pub fn apply(view: ChartView, chart: impl Into<ChartId>, fig: &mut Figure) {
     if view.normalized
-        && let Some(x) = x_name(chart)
+        && let Some(x) = x_name(chart.into())
     {
         normalize(fig);
         fig.x.label = x.into();

@@ -118,7 +118,29 @@ pub fn run_line(source: Source, preset: &Preset, setting: &Setting) -> String {
 pub fn explorer_line(source: Source, preset: &Preset, setting: &Setting) -> String {
     let mut words = vec!["bouncelab".to_string()];
     words.extend(options(source, preset, setting));
+    words.extend(what_the_ball_meets(setting));
     words.join(" ")
+}
+
+/// The options of what the ball meets, after the ball's: the target off the wall
+/// (`--target-mass`, `--target-speed`, `--target-stiffness`, `--target-damping`, as `collide`
+/// takes them, issue 51 item 2). Each is written only where it is not the wall's, so a line
+/// of the wall is what it was; a surface adds its options here the same way.
+fn what_the_ball_meets(setting: &Setting) -> Vec<String> {
+    let wall = crate::target::Target::wall();
+    let t = setting.target();
+    let mut words = Vec::new();
+    for (option, value, default) in [
+        ("--target-mass", t.mass, wall.mass),
+        ("--target-speed", t.speed, wall.speed),
+        ("--target-stiffness", t.stiffness, wall.stiffness),
+        ("--target-damping", t.damping, wall.damping),
+    ] {
+        if value != default {
+            words.extend([option.into(), number(value)]);
+        }
+    }
+    words
 }
 
 /// The oblique view's line, `bouncelab oblique --preset tennis --v0 25 --angle 16 --spin 300

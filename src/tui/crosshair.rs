@@ -125,9 +125,20 @@ fn unit(a: &Axis) -> String {
     }
 }
 
+/// The symbol an axis label ends with before its unit ("damping factor ζ (–)" → "ζ", "time t
+/// (ms)" → "t"): what the screen names the quantity, never the CSV column (`zeta`,
+/// `max_force_normalized`: issue 51 item 4, no internal names on screen).
+fn symbol(a: &Axis) -> &str {
+    let bare = match a.label.rfind('(') {
+        Some(i) if a.label.ends_with(')') => &a.label[..i],
+        _ => &a.label,
+    };
+    bare.split_whitespace().last().unwrap_or(&a.key)
+}
+
 /// "t 1.2 ms": a value of axis `a` in its unit.
 fn value(a: &Axis, v: f64) -> String {
-    format!("{} {}{}", a.key, short(v * a.scale, 4), unit(a))
+    format!("{} {}{}", symbol(a), short(v * a.scale, 4), unit(a))
 }
 
 /// What the crosshair reads on `fig`: "+ t 1.2 ms, force 50 N · model at t 1.21 ms: force

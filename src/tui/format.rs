@@ -20,19 +20,7 @@ pub const UNCERTAIN: usize = 3;
 /// `x` to `digits` significant digits, the integer part of a plain number rounded too
 /// (78094 to 3 digits is 78100).
 fn rounded(x: f64, digits: usize) -> String {
-    let mag = if x.is_finite() && x != 0.0 {
-        x.abs().log10().floor() as i32
-    } else {
-        0
-    };
-    let spare = mag + 1 - digits as i32;
-    let x = if spare > 0 && mag < 5 {
-        let unit = 10f64.powi(spare);
-        (x / unit).round() * unit
-    } else {
-        x
-    };
-    crate::text::sig(x, digits)
+    crate::text::sig(crate::text::rounded(x, digits), digits)
 }
 
 /// A value on screen: [`DIGITS`] significant digits, "—" when not finite.

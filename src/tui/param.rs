@@ -4,7 +4,7 @@
 //! `api::set_lambda_zeta` / `ImpactParams::validate`, so a value one takes the other takes.
 
 use crate::model::params::{
-    ImpactParams, LAMBDA_RANGE, MEANINGFUL_MIN, POSITIVE_RANGE, Range, ZETA_RANGE,
+    ImpactParams, LAMBDA_RANGE, MEANINGFUL_MAX, MEANINGFUL_MIN, POSITIVE_RANGE, Range, ZETA_RANGE,
 };
 
 /// A live parameter.
@@ -105,16 +105,71 @@ impl Param {
                 next.validate().map_err(Into::into)
             }
         };
-        valid.map(|()| next).map_err(|e| {
-            let said = e.to_string();
-            let kept = format!("{said}; {} kept", self.symbol());
-            // the range once: named here unless the reason already names it
-            if said.contains(self.range().text) {
-                kept
-            } else {
-                format!("{kept} (range {})", self.range_text())
+        valid.map(|()| next).map_err(|e| self.refusal(&e, params))
+    }
+
+    /// Why `check` refused, in the screen's words: the parameter's symbol (λ, never the
+    /// command line's `lambda`), and a range the refused value lies outside — for a λ or ζ
+    /// whose K_r or c leaves the meaningful range, this ball's (issue 51 item 8: "invalid
+    /// zeta: 1e-14 (gives c = 2.257376796195088e15 kg/s …); ζ kept (range 0 or 1e-15 … 1e6)"
+    /// showed a range holding the value it refused).
+    fn refusal(self, e: &crate::api::BallError, params: &ImpactParams) -> String {
+        let kept = format!("{} kept", self.symbol());
+        if let crate::api::BallError::Derived {
+            value: v,
+            gives,
+            derived,
+            unit,
+            reason,
+            ..
+        } = e
+        {
+            let (lo, hi) = self.ball_range(params);
+            let zero = if self.range().zero { "0 or " } else { "" };
+            return format!(
+                "invalid {}: {} (gives {gives} = {} {unit}: {reason}); {kept} (range for this \
+                 ball {zero}{} … {})",
+                self.symbol(),
+                crate::text::short(*v, 4),
+                crate::text::short(*derived, 4),
+                crate::text::short(lo, 4),
+                crate::text::short(hi, 4)
+            );
+        }
+        let cli = format!("invalid {}:", self.cli_name());
+        let said = e
+            .to_string()
+            .replacen(&cli, &format!("invalid {}:", self.symbol()), 1);
+        // the range once: named here unless the reason already names it
+        if said.contains(self.range().text) {
+            format!("{said}; {kept}")
+        } else {
+            format!("{said}; {kept} (range {})", self.range_text())
+        }
+    }
+
+    /// The command line's name of the parameter, as its messages give it.
+    fn cli_name(self) -> &'static str {
+        match self {
+            Param::Lambda => "lambda",
+            Param::Zeta => "zeta",
+            Param::V0 => "v0",
+        }
+    }
+
+    /// The λ (ζ) this ball takes: those whose K_r = λ K_p (c = √(m K_p)/(2ζ), Eq. 24) lies in
+    /// the meaningful range, within the parameter's own range.
+    fn ball_range(self, p: &ImpactParams) -> (f64, f64) {
+        let r = self.range();
+        let (lo, hi) = match self {
+            Param::Lambda => (MEANINGFUL_MIN / p.k_p, MEANINGFUL_MAX / p.k_p),
+            Param::Zeta => {
+                let c0 = (p.mass * p.k_p).sqrt() / 2.0;
+                (c0 / MEANINGFUL_MAX, c0 / MEANINGFUL_MIN)
             }
-        })
+            Param::V0 => (r.lo, r.hi),
+        };
+        (lo.max(r.lo), hi.min(r.hi))
     }
 
     /// The parameter's value in `params`.
@@ -179,12 +234,12 @@ mod tests {
         let said = |param: Param, v: f64| param.check(v, &p).unwrap_err();
         assert_eq!(
             said(Param::Lambda, 1e-16),
-            "invalid lambda: 1e-16 (outside the range 0 or 1e-15 … 1e6); λ kept"
+            "invalid λ: 1e-16 (outside the range 0 or 1e-15 … 1e6); λ kept"
         );
         assert!(said(Param::Lambda, 1000000.0000000001).contains("the range is 0 or 1e-15 … 1e6"));
         assert_eq!(
             said(Param::Zeta, f64::INFINITY),
-            "invalid zeta: inf (must be finite); ζ kept (range 0 or 1e-15 … 1e6)"
+            "invalid ζ: inf (must be finite); ζ kept (range 0 or 1e-15 … 1e6)"
         );
         assert_eq!(
             said(Param::V0, f64::NAN),
@@ -193,6 +248,26 @@ mod tests {
         assert_eq!(Param::Lambda.range_text(), "0 or 1e-15 … 1e6");
         assert_eq!(Param::V0.range_text(), "1e-15 … 1e15 m/s");
         assert!(Param::Lambda.check(0.0, &p).is_ok() && Param::Zeta.check(0.0, &p).is_ok());
+    }
+
+    /// A ζ whose c leaves the meaningful range is refused with this ball's range, which the
+    /// refused value lies outside, in four digits (it showed "range 0 or 1e-15 … 1e6" around
+    /// the refused 1e-14, and c to sixteen digits).
+    #[test]
+    fn a_derived_refusal_shows_a_range_without_the_refused_value() {
+        // a heavy, stiff ball: m 1000 kg, K_p 1e12 N/m, so c = √(m K_p)/(2ζ) passes 1e15
+        // kg/s below ζ 1.6e-8 and K_r = λ K_p passes 1e15 N/m above λ 1000
+        let mut p = ImpactParams::from_normalized(1.0, 0.2, 3.0);
+        (p.mass, p.k_p) = (1e3, 1e12);
+        for (param, v) in [(Param::Zeta, 1e-9), (Param::Lambda, 1e4)] {
+            let said = param.check(v, &p).unwrap_err();
+            let (lo, hi) = param.ball_range(&p);
+            assert!(!(lo..=hi).contains(&v), "{said}");
+            assert!(said.contains("range for this ball"), "{said}");
+            assert!(!said.contains("1e-15 … 1e6"), "{said}");
+            assert!(!said.contains("zeta") && !said.contains("lambda"), "{said}");
+            assert!(!said.contains("58113883"), "four digits: {said}");
+        }
     }
 
     #[test]

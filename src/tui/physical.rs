@@ -13,12 +13,17 @@
 //! and z_p by Eq. 16), m by `check_positive`, λ, ζ, v0 by [`Param::check`]; then the whole set
 //! by [`ImpactParams::validate`]. Refused, never clamped: the message names the range.
 
+use super::format::{screen_unit, value};
 use super::param::Param;
 use super::setting::Setting;
 use crate::api::Overrides;
 use crate::model::params::{self, ImpactParams, MEANINGFUL_MAX, MEANINGFUL_MIN};
 use crate::solver::ImpactResponse;
 use crate::text::{short, sig_trim};
+
+mod refusal;
+use refusal::ball_refusal;
+pub use refusal::refusal;
 
 /// A field of the form, in the order shown.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -94,6 +99,31 @@ impl Field {
         }
     }
 
+    /// The unit the form shows and takes the field in — the readout's (m in g, R and z_p in
+    /// mm: [`screen_unit`]) — and the factor from SI to it (issue 51 item 4: the form wrote
+    /// m in kg to six digits beside a readout in g).
+    pub fn screen(self) -> (&'static str, f64) {
+        screen_unit(self.unit())
+    }
+
+    /// `v` (SI) as the form writes it: four significant digits ([`value`]) in the field's
+    /// screen unit, "∞" (the wall's M, a rigid K_s), "—" for none (a metal ball's E).
+    pub fn show(self, v: f64) -> String {
+        let (unit, k) = self.screen();
+        let n = if v.is_nan() {
+            "—".to_string()
+        } else if v == f64::INFINITY {
+            "∞".to_string()
+        } else {
+            value(v * k)
+        };
+        if unit.is_empty() {
+            n
+        } else {
+            format!("{n} {unit}")
+        }
+    }
+
     /// The live parameter this field is, if it is one.
     fn live(self) -> Option<Param> {
         match self {
@@ -129,9 +159,10 @@ impl Field {
         match self.live() {
             Some(p) => p.range_text(),
             None if self == Field::TargetMass => format!(
-                "{} … {} kg, or inf (the wall)",
-                short(MEANINGFUL_MIN, 4),
-                short(MEANINGFUL_MAX, 4)
+                "{} … {} {}, or inf (the wall)",
+                short(MEANINGFUL_MIN * self.screen().1, 4),
+                short(MEANINGFUL_MAX * self.screen().1, 4),
+                self.screen().0
             ),
             None if self == Field::TargetSpeed => "v0 + v_t > 0 m/s".into(),
             None if self == Field::TargetStiffness => format!(
@@ -144,9 +175,9 @@ impl Field {
             }
             None => format!(
                 "{} … {} {}",
-                short(MEANINGFUL_MIN, 4),
-                short(MEANINGFUL_MAX, 4),
-                self.unit()
+                short(MEANINGFUL_MIN * self.screen().1, 4),
+                short(MEANINGFUL_MAX * self.screen().1, 4),
+                self.screen().0
             ),
         }
     }
@@ -170,12 +201,12 @@ impl Field {
         match self {
             Field::Mass => {
                 params::check_positive(params::Field::Mass, value)
-                    .map_err(|e| refuse(e.to_string()))?;
+                    .map_err(|e| refuse(refusal(&e)))?;
                 next.params.mass = value;
             }
             Field::Radius => {
                 if !(MEANINGFUL_MIN..=MEANINGFUL_MAX).contains(&value) {
-                    return Err(refuse(format!("invalid R: {}", shown(value))));
+                    return Err(refuse(format!("invalid R: {}", self.shown(value))));
                 }
                 next.radius = value;
             }
@@ -193,19 +224,19 @@ impl Field {
                     );
                 }
                 params::check_positive(params::Field::KP, value)
-                    .map_err(|_| refuse(format!("invalid E: {}", shown(value))))?;
+                    .map_err(|_| refuse(format!("invalid E: {}", self.shown(value))))?;
                 Field::KP
                     .overrides(k_p_of(value, s.params.z_p))
                     .apply(&mut next.params)
-                    .map_err(|e| refuse(e.to_string()))?;
+                    .map_err(|e| refuse(ball_refusal(&e)))?;
             }
             _ => {
                 let o = self.overrides(value);
                 o.apply(&mut next.params)
-                    .map_err(|e| refuse(e.to_string()))?;
+                    .map_err(|e| refuse(ball_refusal(&e)))?;
             }
         }
-        next.params.validate().map_err(|e| refuse(e.to_string()))?;
+        next.params.validate().map_err(|e| refuse(refusal(&e)))?;
         closing(&next).map_err(refuse)?;
         Ok(next)
     }
@@ -247,7 +278,7 @@ fn target_set(field: Field, value: f64, s: &Setting) -> Result<Setting, String> 
         Field::TargetStiffness => next.target_stiffness = value,
         _ => next.target_damping = value,
     }
-    next.target().validate().map_err(|e| e.to_string())?;
+    next.target().validate().map_err(|e| refusal(&e))?;
     if next.target_damping != 0.0 && next.target_stiffness == f64::INFINITY {
         return Err(if field == Field::TargetStiffness {
             "a rigid surface takes no damping: set c_s to 0 first".into()
@@ -264,19 +295,10 @@ fn closing(s: &Setting) -> Result<(), String> {
     if s.params.v0 + s.target_speed <= 0.0 {
         return Err(format!(
             "the ball and the target never meet: v0 + v_t = {} m/s must be positive",
-            sig_trim(s.params.v0 + s.target_speed, 6)
+            value(s.params.v0 + s.target_speed)
         ));
     }
-    s.run_params().validate().map_err(|e| e.to_string())
-}
-
-/// A typed value as a refusal shows it.
-fn shown(value: f64) -> String {
-    if value.is_finite() {
-        sig_trim(value, 6)
-    } else {
-        "that".into()
-    }
+    s.run_params().validate().map_err(|e| refusal(&e))
 }
 
 /// The contact modulus the values imply for an elastomer ball: E = K_p/(2π z_p) (Eq. 20 with

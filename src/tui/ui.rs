@@ -3,6 +3,7 @@
 //! each chart its figure, built from the state's [`crate::figure::explorer::Scene`].
 
 use super::app::{App, Overlay, View};
+use super::chartview::ChartId;
 use super::param::Param;
 use super::theme::Theme;
 use super::widgets::command::CommandBox;
@@ -175,6 +176,7 @@ fn models_table(app: &App, theme: Theme) -> ModelsTable<'_> {
     ModelsTable {
         data: app.models(),
         error: app.models_error(),
+        no_rebound: app.run().is_some_and(|r| !r.rebound),
         setting: (s.get(Param::Lambda), s.get(Param::Zeta), s.get(Param::V0)),
         theme,
     }
@@ -313,9 +315,13 @@ impl Widget for &App {
                 area.width,
                 s.message.y - s.header.bottom(),
             );
+            let chart = self.screen_figure(ChartId::DropHeight).unwrap_or_else(|| {
+                crate::tui::views::drop::widget::height_figure(self.drop_view())
+            });
             crate::tui::views::drop::widget::DropPanel {
                 drop: self.drop_view(),
                 ball: &self.preset().name,
+                chart: &chart,
                 theme,
             }
             .render(body, buf);
@@ -327,8 +333,19 @@ impl Widget for &App {
                 area.width,
                 s.message.y - s.header.bottom(),
             );
+            let time = [
+                ChartId::ObliqueForces,
+                ChartId::ObliqueSlip,
+                ChartId::ObliqueSpin,
+            ]
+            .map(|id| self.screen_figure(id));
+            let time = match time {
+                [Some(a), Some(b), Some(c)] => Some([a, b, c]),
+                _ => None,
+            };
             crate::tui::views::oblique::widget::ObliquePanel {
                 view: self.oblique_view(),
+                time: time.as_ref(),
                 ball: &self.preset().name,
                 v0: self.setting().params.v0,
                 tangential: [
@@ -347,15 +364,10 @@ impl Widget for &App {
         if self.view() == View::Map {
             map_panel(self, theme).render(s.chart_area, buf);
         }
-        let scene = self.scene();
-        let cross = self.crosshair();
         for (chart, rect) in &s.charts {
-            let mut fig = explorer::figure(*chart, &scene);
-            super::chartview::apply(self.chart_views().get(*chart), *chart, &mut fig);
-            if let Some(c) = cross.filter(|c| self.view().charts().get(c.chart) == Some(chart)) {
-                super::crosshair::draw_on(c, &mut fig);
+            if let Some(fig) = self.screen_figure(ChartId::Explorer(*chart)) {
+                Plot::new(&fig, theme).render(*rect, buf);
             }
-            Plot::new(&fig, theme).render(*rect, buf);
         }
         if let (Some(rect), Some(v)) = (s.fit, fit_view(self, theme)) {
             v.render(rect, buf);

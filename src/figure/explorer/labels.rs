@@ -19,7 +19,8 @@ pub fn result_labels(run: &ImpactResponse) -> Vec<Series> {
         .max_by(|a, b| a.1.total_cmp(b.1))
         .and_then(|(i, _)| h.t.get(i));
     if let Some(&t) = peak {
-        let text = format!("F_m {} N", short(run.max_force, 4));
+        // rounded as the readout rounds it: 13270 beside the readout's 13270, not 13268
+        let text = format!("F_m {} N", short(crate::text::rounded(run.max_force, 4), 4));
         out.push(label_series(
             &format!("peak force F_m ({text})"),
             "model max_force",

@@ -31,6 +31,31 @@ impl App {
         self
     }
 
+    /// The explorer started on a target (`--target-mass`, `--target-speed`,
+    /// `--target-stiffness`, `--target-damping`; `None`: as it is), each value checked as the
+    /// form checks it; refused with the form's reason, naming the flag.
+    pub fn with_target(mut self, target: [Option<f64>; 4]) -> Result<App, String> {
+        use crate::tui::physical::Field;
+        let fields = [
+            (Field::TargetMass, "--target-mass"),
+            (Field::TargetSpeed, "--target-speed"),
+            (Field::TargetStiffness, "--target-stiffness"),
+            (Field::TargetDamping, "--target-damping"),
+        ];
+        // K_s before c_s: a dashpot needs its spring (physical::target_set)
+        for i in [0, 1, 2, 3] {
+            let ((field, flag), Some(v)) = (fields[i], target[i]) else {
+                continue;
+            };
+            self.setting = field
+                .check(v, &self.setting)
+                .map_err(|why| format!("{flag}: {why}"))?;
+        }
+        self.keep();
+        self.refresh();
+        Ok(self)
+    }
+
     /// Copy `y`'s line with OSC 52 or not (`clipboard::osc52_here` decides for the terminal;
     /// without this call, not).
     pub fn with_osc52(mut self, on: bool) -> App {
@@ -57,13 +82,6 @@ impl App {
         self.copy.last = Some(line.clone());
         if let Some(w) = crate::tui::command::not_carried(self.preset(), &self.setting) {
             self.warn(w);
-        } else if self.setting.target() != crate::target::Target::wall() {
-            // `run` has no target: the pair is `collide`'s (docs/targets.md)
-            self.warn(
-                "the line runs the ball at the wall: the target (M, v_t, K_s, c_s) is \
-                 `bouncelab collide --target-mass …`'s"
-                    .into(),
-            );
         }
         if self.copy.osc52 {
             vec![crate::tui::effect::Effect::Copy(line)]

@@ -2,7 +2,6 @@
 //! move says what it reads (src/tui/crosshair.rs) on the message row.
 
 use super::{App, View};
-use crate::figure::explorer;
 use crate::tui::action::Action;
 use crate::tui::crosshair::{self, Crosshair};
 
@@ -32,7 +31,7 @@ impl App {
     /// Put the crosshair on the chart `ahead` charts after the current one (0: the first),
     /// at the centre of its data; past the last chart it is off.
     fn crosshair_chart(&mut self, ahead: usize) {
-        let n = self.view.charts().len();
+        let n = self.chart_ids().len();
         if n == 0 {
             self.crosshair = None;
             return self.warn(self.no_chart_keys());
@@ -64,16 +63,14 @@ impl App {
     /// The figure of chart `k` of the current view, as drawn.
     pub(super) fn crosshair_figure(&mut self, k: usize) -> Option<crate::figure::Figure> {
         self.refresh_run();
-        let chart = *self.view.charts().get(k)?;
-        let mut fig = explorer::figure(chart, &self.scene());
-        crate::tui::chartview::apply(self.charts.get(chart), chart, &mut fig);
-        Some(fig)
+        let chart = *self.chart_ids().get(k)?;
+        self.drawn_figure(chart)
     }
 
     /// The crosshair, when it is on a chart of the view shown.
     pub fn crosshair(&self) -> Option<&Crosshair> {
         self.crosshair
             .as_ref()
-            .filter(|c| c.chart < self.view.charts().len() && self.view != View::Map)
+            .filter(|c| self.view != View::Map && c.chart < self.chart_ids().len())
     }
 }

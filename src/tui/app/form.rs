@@ -11,9 +11,11 @@ use crate::tui::physical::{self, Field, Form};
 /// wall's M = ∞, a metal ball's E). Never the form's "—": typing appends to the entry's text,
 /// so "0.8" typed into "—" read "'—0.8' is not a number" (issue 51;
 /// tests/tui_form.rs: `an_entry_opens_holding_its_value_or_empty`).
-fn entry_text(v: f64) -> String {
+/// In the field's screen unit (g, mm), as the form shows it, to six digits: an entry
+/// submitted as it opened is no change (`submit_physical`).
+fn entry_text(field: Field, v: f64) -> String {
     if v.is_finite() {
-        sig_trim(v, 6)
+        sig_trim(v * field.screen().1, 6)
     } else {
         String::new()
     }
@@ -35,7 +37,7 @@ impl App {
             }
             Action::FormEdit => {
                 if let Overlay::Form(f) = self.overlay {
-                    let now = entry_text(f.selected.get(&self.setting));
+                    let now = entry_text(f.selected, f.selected.get(&self.setting));
                     self.open_input(Purpose::Physical(f.selected), now);
                 }
             }
@@ -53,11 +55,13 @@ impl App {
     /// Enter in a form field's entry: an accepted value is one undoable change and the form
     /// comes back; a refused one keeps the entry open with the reason and the range.
     pub(super) fn submit_physical(&mut self, field: Field, text: &str) {
-        if text.is_empty() {
+        // empty, or as it opened: the value stays to its last digit (six shown would round it)
+        if text.is_empty() || text == entry_text(field, field.get(&self.setting)) {
             self.open_form(field);
             return;
         }
         let checked = number(text)
+            .map(|v| v / field.screen().1)
             .map_err(|e| {
                 format!(
                     "{e}; {} kept (range {})",
@@ -75,10 +79,9 @@ impl App {
                 if self.message.is_none() {
                     // the one screen format: tui::format::value
                     self.info(format!(
-                        "{} = {} {}",
+                        "{} = {}",
                         field.symbol(),
-                        crate::tui::format::value(field.get(&self.setting)),
-                        field.unit()
+                        field.show(field.get(&self.setting))
                     ));
                 }
             }

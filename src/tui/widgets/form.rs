@@ -1,8 +1,9 @@
-//! The physical-inputs form (`m`): each field with its value and unit (E with the relation
+//! The physical-inputs form (`m`): each field with its value and unit (the readout's: m in g,
+//! R and z_p in mm, four significant digits) (E with the relation
 //! that ties it to K_p, "—" for a metal ball), the highlighted one marked ▶, the derived ω0, z̄_p, λ, ζ of the current values, and the validity warning when the
 //! run leaves the model (z_m or α_max beyond R).
 
-use crate::text::sig_trim;
+use crate::tui::format::value;
 use crate::tui::physical::{self, Field, Form};
 use crate::tui::setting::Setting;
 use crate::tui::theme::Theme;
@@ -29,7 +30,7 @@ impl Widget for &FormBox<'_> {
         let d = physical::derived(&self.setting.params);
         let derived: Vec<String> = d
             .iter()
-            .map(|(name, v)| format!("{name} {}", sig_trim(*v, 4)))
+            .map(|(name, v)| format!("{name} {}", value(*v)))
             .collect();
         lines.push(Line::styled(
             format!(" {}  {}", derived[0], derived[1]),
@@ -59,7 +60,7 @@ impl Widget for &FormBox<'_> {
             h,
         );
         Clear.render(popup, buf);
-        let title = Line::styled(" Physical inputs (SI) ", self.theme.title());
+        let title = Line::styled(" Physical inputs ", self.theme.title());
         Paragraph::new(lines)
             .block(Block::bordered().title(title))
             .wrap(Wrap { trim: false })
@@ -78,18 +79,12 @@ impl FormBox<'_> {
                 } else {
                     ratatui::style::Style::default()
                 };
-                let v = f.get(self.setting);
-                let value = if v.is_nan() {
-                    "—".into()
-                } else if v == f64::INFINITY {
-                    // the target's mass M = ∞: the wall (docs/targets.md)
-                    "∞".into()
-                } else {
-                    sig_trim(v, 6)
-                };
+                // the readout's one format and units: m 37.40 g, z_p 4.000 mm, M ∞ (the wall)
+                let shown = f.show(f.get(self.setting));
+                let (number, unit) = shown.split_once(' ').unwrap_or((&shown, ""));
                 let mut spans = vec![
                     Span::raw(if here { "▶" } else { " " }),
-                    Span::styled(format!("{:<4}{value:>12} {}", f.symbol(), f.unit()), style),
+                    Span::styled(format!("{:<4}{number:>10} {unit}", f.symbol()), style),
                 ];
                 if f == Field::E {
                     // what E is in this model: the modulus K_p and z_p imply (Eq. 20)

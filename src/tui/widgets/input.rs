@@ -64,12 +64,7 @@ fn render(input: &Input, s: &Setting, theme: &Theme, area: Rect, buf: &mut Buffe
         }
         Purpose::Physical(f) => (
             format!(" Set {} ", f.symbol()),
-            format!(
-                " range {}, now {} {}",
-                f.range_text(),
-                sig_trim(f.get(s), 6),
-                f.unit()
-            ),
+            format!(" range {}, now {}", f.range_text(), f.show(f.get(s))),
             format!(" {} = ", f.symbol()),
             " Enter accepts · Esc back to the form",
             50,

@@ -84,13 +84,28 @@ struct Row {
 }
 
 /// Whether the preset's measured values were taken at `v0`: only then are they compared.
-fn measured_here(preset: &Preset, v0: f64) -> bool {
-    crate::figure::explorer::same_speed(preset.measured.v0, v0)
+fn measured_here(preset: &Preset, setting: &Setting) -> bool {
+    crate::figure::explorer::same_speed(preset.measured.v0, setting.params.v0)
+        && setting.target() == crate::target::Target::wall()
+}
+
+/// Why the preset's measured values are not compared, if they are not: taken at another
+/// speed, or against a wall while the run is a pair's (issue 51 item 5: a pair's COR was
+/// compared with a wall's measurement).
+fn not_compared(preset: &Preset, setting: &Setting) -> Option<&'static str> {
+    if setting.target() != crate::target::Target::wall() {
+        Some(": a wall's, not compared with the pair")
+    } else if !measured_here(preset, setting) {
+        Some(": not compared")
+    } else {
+        None
+    }
 }
 
 /// The results against the preset's measured values; no measured values away from the speed
-/// they were taken at (a peak force at 3.12 m/s says nothing of one at 12 m/s).
-fn results(preset: &Preset, r: Option<&ImpactResponse>, v0: f64) -> Vec<Row> {
+/// they were taken at (a peak force at 3.12 m/s says nothing of one at 12 m/s), nor on a
+/// target other than the wall they were measured on.
+fn results(preset: &Preset, r: Option<&ImpactResponse>, setting: &Setting) -> Vec<Row> {
     let Some(r) = r else {
         return Vec::new();
     };
@@ -100,7 +115,7 @@ fn results(preset: &Preset, r: Option<&ImpactResponse>, v0: f64) -> Vec<Row> {
         contact_time: None,
         ..preset.measured.clone()
     };
-    let m = if measured_here(preset, v0) {
+    let m = if measured_here(preset, setting) {
         &preset.measured
     } else {
         &none
@@ -191,8 +206,9 @@ impl Readout<'_> {
         lines.push(Line::raw(""));
         lines.extend(self.result_lines(inner_w));
         lines.extend(self.notes());
-        if inner_h >= lines.len() + ENERGY_ROWS {
-            lines.extend(self.energy_lines());
+        let energy = self.energy_lines();
+        if inner_h >= lines.len() + energy.len().max(ENERGY_ROWS) {
+            lines.extend(energy);
         }
         let left = inner_h.saturating_sub(lines.len());
         lines.extend(pins::table(
@@ -206,19 +222,23 @@ impl Readout<'_> {
 
     /// Where the run's energy went (mJ): the budget `bouncelab run` prints, from the same
     /// solver pass ([`crate::solver::EnergyBudget`]), round-off shown as 0 as there.
+    /// Without a rebound nothing goes out (e 0): what kinetic energy the ball still has when
+    /// the run ends is its sinking into the dashpot, said so (issue 51 item 5: `e 0` beside
+    /// `out 17.42`).
     fn energy_lines(&self) -> Vec<Line<'static>> {
-        let Some(e) = self.run.and_then(|r| r.energy) else {
+        let Some((e, rebound)) = self.run.and_then(|r| Some((r.energy?, r.rebound))) else {
             return Vec::new();
         };
         let mj = |x: f64| value(e.shown(x) * 1e3);
-        vec![
+        let out = if rebound {
+            mj(e.final_kinetic)
+        } else {
+            "0".into()
+        };
+        let mut lines = vec![
             Line::from(vec![
                 Span::styled(" energy mJ", self.theme.title()),
-                Span::raw(format!(
-                    " in {}  out {}",
-                    mj(e.initial_kinetic),
-                    mj(e.final_kinetic)
-                )),
+                Span::raw(format!(" in {}  out {out}", mj(e.initial_kinetic))),
             ]),
             Line::raw(format!(
                 "  dashpot {}  contact {}",
@@ -233,7 +253,14 @@ impl Readout<'_> {
                     r => format!("{r:.0e}"),
                 }
             )),
-        ]
+        ];
+        if !rebound {
+            lines.push(Line::raw(format!(
+                "  still sinking {}",
+                mj(e.final_kinetic)
+            )));
+        }
+        lines
     }
 
     pub(super) fn now(&self) -> Now<'_> {
@@ -289,7 +316,7 @@ impl Readout<'_> {
             ),
             theme.title(),
         )];
-        let rows = results(self.preset, self.run, self.setting.params.v0);
+        let rows = results(self.preset, self.run, self.setting);
         if rows.is_empty() {
             lines.push(Line::styled(" no result", theme.error()));
         }
@@ -330,11 +357,7 @@ impl Readout<'_> {
         // only the speed it runs at: claim no measurement then
         let m = &self.preset.measured;
         if m.cor.is_some() || m.max_force.is_some() || m.contact_time.is_some() {
-            let elsewhere = if measured_here(self.preset, self.setting.params.v0) {
-                ""
-            } else {
-                ": not compared"
-            };
+            let elsewhere = not_compared(self.preset, self.setting).unwrap_or("");
             lines.push(Line::styled(
                 format!(" measured at v0 = {} m/s{elsewhere}", sig_trim(m.v0, 4)),
                 theme.dim(),
@@ -357,7 +380,12 @@ impl Readout<'_> {
                 "∞".into()
             }
         };
-        let mut text = format!(" pair: target M {} kg, v_t {} m/s", v(t.mass), v(t.speed));
+        // M in g, as the form (`m`) and `u` write it (issue 51 item 4)
+        let mut text = format!(
+            " pair: target M {} g, v_t {} m/s",
+            v(t.mass * 1e3),
+            v(t.speed)
+        );
         if !t.is_rigid() {
             text.push_str(&format!(
                 ", K_s {} N/m, c_s {} kg/s",

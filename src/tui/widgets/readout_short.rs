@@ -9,9 +9,13 @@ use crate::tui::widgets::pins;
 use ratatui::text::{Line, Span};
 
 impl Readout<'_> {
-    /// λ, ζ and v0, each styled as selected or not.
+    /// λ, ζ and v0, each styled as selected or not, the selected one marked ▶ as in the tall
+    /// panel (without colour the style alone showed none: issue 51 item 6).
     fn knobs(&self) -> [Span<'static>; 3] {
-        let p = |param: Param, text: String| Span::styled(text, self.param_style(param));
+        let p = |param: Param, text: String| {
+            let mark = if self.selected == param { "▶" } else { "" };
+            Span::styled(format!("{mark}{text}"), self.param_style(param))
+        };
         [
             p(Param::Lambda, format!("λ {}", self.knob(Param::Lambda))),
             p(Param::Zeta, format!("ζ {}", self.knob(Param::Zeta))),
@@ -35,9 +39,13 @@ impl Readout<'_> {
                 value(s.params.k_p),
                 value(s.params.k_r)
             )),
-            Line::raw(format!(" c {} kg/s", value(s.params.damping))),
+            Line::raw(format!(
+                " c {} kg/s  {}",
+                value(s.params.damping),
+                if self.coarse { "[coarse]" } else { "[fine]" }
+            )),
         ];
-        let rows = results(self.preset, self.run, s.params.v0);
+        let rows = results(self.preset, self.run, s);
         if rows.len() < 5 {
             lines.push(Line::styled(" no result", self.theme.error()));
             return lines;
@@ -84,7 +92,7 @@ impl Readout<'_> {
                 value(s.params.damping)
             )),
         ];
-        let rows = results(self.preset, self.run, self.setting.params.v0);
+        let rows = results(self.preset, self.run, self.setting);
         let fmt = compact_row;
         if rows.len() == 5 {
             lines.push(Line::raw(format!(

@@ -126,7 +126,8 @@ const OBLIQUE_HINTS: [(&str, &str, u8); 5] = [
     ("w/W", "ω", 0),
     ("k/K", "μ", 0),
     ("t", "map", 1),
-    ("i", "back", 1),
+    // the way out of the view stays at every width (issue 51 item 6: 80 × 24 dropped it)
+    ("i", "back", 0),
 ];
 
 /// The drop view's own keys (src/tui/views/drop/state.rs).
@@ -145,10 +146,19 @@ impl Widget for &KeyHints {
                 v.insert(3, ("←→↑↓", "θ μ", 0));
             }
             let arrows = page == crate::tui::views::oblique::state::Page::Map;
-            v.extend(HINTS.iter().filter(|h| {
-                let moved = arrows && matches!(h.0, "↑↓" | "←→");
-                !(moved || matches!(h.0, "e" | "[ ]" | "1-3"))
-            }));
+            // the view's own keys before λ, ζ, v0 where the row is short
+            v.extend(
+                HINTS
+                    .iter()
+                    .filter(|h| {
+                        let moved = arrows && matches!(h.0, "↑↓" | "←→");
+                        !(moved || matches!(h.0, "e" | "[ ]" | "1-3"))
+                    })
+                    .map(|&(k, d, r)| {
+                        let knob = matches!(k, "l/L" | "z/Z" | "v/V");
+                        (k, d, if knob { r.max(1) } else { r })
+                    }),
+            );
             v
         } else if self.drop {
             let mut v = DROP_HINTS.to_vec();

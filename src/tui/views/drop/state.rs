@@ -65,9 +65,12 @@ impl DropView {
         let air = Some(Air::default());
         let flight = Flight::new(params.mass, ball.radius, air);
         self.run = match flight.fall_height_for(params.v0) {
+            // said in words, and nothing drawn or judged as if it had bounced (issue 51 item 5)
             None => Err(format!(
-                "v0 is above the terminal speed {:.3} m/s: no drop reaches it",
-                flight.terminal_speed()
+                "no drop reaches v0 {} m/s: falling in air the ball tops out at its terminal \
+                 speed {} m/s (drag); V lowers v0",
+                crate::tui::format::value(params.v0),
+                crate::tui::format::value(flight.terminal_speed())
             )),
             Some(h) => drop(
                 &ball,
@@ -126,6 +129,11 @@ impl DropView {
         if self.t >= self.duration() {
             self.playing = false;
         }
+    }
+
+    /// Stopped by space before the end (the animation holds still until space again).
+    pub fn paused(&self) -> bool {
+        self.motion && !self.playing && self.sequence().is_some() && self.t < self.duration()
     }
 
     /// The ball's height now (m, bottom of the ball).

@@ -30,6 +30,9 @@ pub struct DropPanel<'a> {
     pub drop: &'a DropView,
     /// The ball's name, for the readout's title.
     pub ball: &'a str,
+    /// The height chart as drawn ([`height_figure`] with its zoom and crosshair:
+    /// src/tui/app/charts.rs).
+    pub chart: &'a Figure,
     pub theme: Theme,
 }
 
@@ -56,7 +59,7 @@ fn render(p: DropPanel, area: Rect, buf: &mut Buffer) {
     };
     let [chart, ball] =
         Layout::horizontal([Constraint::Fill(1), Constraint::Length(BALL_WIDTH)]).areas(left);
-    render_chart(d, theme, chart, buf);
+    (&Plot::new(p.chart, theme)).render(chart, buf);
     render_ball(d, theme, ball, buf);
     if wide {
         render_readout(p.ball, d, theme, readout, buf);
@@ -97,7 +100,8 @@ pub fn height_figure(d: &DropView) -> Figure {
                 .with_look(Look::new(Tone::Current, None, Some("●"))),
         );
     }
-    if let (Some((lo, hi)), Some((s, _))) = (d.band(), d.verdict) {
+    // the standard's window only over a drop: over an empty chart it was a legend of nothing
+    if let (Some((lo, hi)), Some((s, _)), true) = (d.band(), d.verdict, d.sequence().is_some()) {
         let name = format!("{} window", s.name);
         for (h, key) in [(hi, Some(name.as_str())), (lo, None)] {
             series.push(
@@ -114,12 +118,12 @@ pub fn height_figure(d: &DropView) -> Figure {
         FigAxis::linear("height (m)", "height", 1.0),
         series,
     );
-    fig.screen_title = "Drop · height [m] vs t [s]".into();
+    fig.screen_title = match (&d.run, d.paused()) {
+        (Err(_), _) => "Drop · no drop reaches this v0 (see the readout)".into(),
+        (_, true) => "Drop · height [m] vs t [s] · paused".into(),
+        _ => "Drop · height [m] vs t [s]".into(),
+    };
     fig
-}
-
-fn render_chart(d: &DropView, theme: Theme, area: Rect, buf: &mut Buffer) {
-    (&Plot::new(&height_figure(d), theme)).render(area, buf);
 }
 
 /// The ball (to scale in height: its bottom at the current height) above the plate.
@@ -236,6 +240,10 @@ fn bounce_lines(d: &DropView, theme: Theme) -> Vec<Line<'static>> {
 
 /// The standard's verdict on the model's prediction.
 fn verdict_lines(d: &DropView, theme: Theme) -> Vec<Line<'static>> {
+    // no drop at this v0: no verdict beside it (the readout's first line says why)
+    if d.run.is_err() {
+        return Vec::new();
+    }
     let Some((s, v)) = d.verdict else {
         return vec![Line::styled("no standard for this ball", theme.dim())];
     };
@@ -262,7 +270,9 @@ fn verdict_lines(d: &DropView, theme: Theme) -> Vec<Line<'static>> {
 }
 
 fn keys_line(d: &DropView, theme: Theme) -> Line<'static> {
-    let keys = if d.motion {
+    let keys = if d.paused() {
+        "paused · space play · b replay · d back"
+    } else if d.motion {
         "space pause · b replay · d back"
     } else {
         "reduced motion · d back"

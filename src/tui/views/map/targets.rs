@@ -23,6 +23,21 @@ pub fn parse(text: &str) -> Result<Targets, MapError> {
     Ok(t)
 }
 
+/// The quantities a target names, in the units the explorer takes them in.
+const QUANTITIES: &str = "cor, max_force (N) or contact_time (ms)";
+
+/// A refused target as the explorer says it: always with the quantities a target may name and
+/// their units here (issue 51 item 8: "expected QUANTITY>=VALUE" named none).
+pub fn refusal(e: &MapError) -> String {
+    let said = e.to_string();
+    let listed = "expected cor, max_force or contact_time";
+    if said.contains(listed) {
+        said.replace(listed, &format!("expected {QUANTITIES}"))
+    } else {
+        format!("{said}; a target is QUANTITY>=VALUE or QUANTITY<=VALUE, QUANTITY {QUANTITIES}")
+    }
+}
+
 /// Targets as the explorer shows and offers them for editing: "cor>=0.8,contact_time>=2";
 /// [`parse`] reads it back to the same targets.
 pub fn text(t: &Targets) -> String {
@@ -55,5 +70,16 @@ mod tests {
             assert_eq!(text(&parse(typed).unwrap()), typed);
         }
         assert!(parse("contact_time>=x").is_err());
+    }
+
+    /// Every refusal lists the quantities a target names, with the explorer's units (issue 51
+    /// item 8).
+    #[test]
+    fn every_refusal_lists_the_quantities() {
+        for bad in ["speed>=3", "cor=0.8", "contact_time>=x", "cor>=2"] {
+            let why = refusal(&parse(bad).unwrap_err());
+            assert!(why.contains(QUANTITIES), "{bad}: {why}");
+            assert_eq!(why.matches("max_force").count(), 1, "{bad}: {why}");
+        }
     }
 }

@@ -146,7 +146,7 @@ impl App {
                 self.map.targets = Some(t);
             }
             Err(e) => {
-                let why = e.to_string();
+                let why = targets::refusal(&e);
                 if let Overlay::Input(input) = &mut self.overlay {
                     input.error = Some(why.clone());
                 }

@@ -8,9 +8,10 @@ use crate::tui::views::models::state::ModelsRequest;
 impl App {
     /// The calibration the current ball needs: its Christoforou–Yigit COR at v0 as the target,
     /// the ball's radius (the preset's, or typed in the form). `None` without an impact to
-    /// calibrate to.
+    /// calibrate to, nor without a rebound (e 0: the peers take a COR in (0, 1]; the table
+    /// says so in words).
     pub fn models_target(&self) -> Option<ModelsRequest> {
-        let run = self.run.as_ref()?;
+        let run = self.run.as_ref().filter(|r| r.rebound)?;
         let s = &self.setting;
         let radius = s.radius;
         Some(ModelsRequest::new(&s.params, s.law, radius, run.cor))
@@ -61,6 +62,7 @@ impl App {
             return;
         }
         if let Err(e) = &result {
+            let e = crate::tui::views::models::widget::human_names(e);
             self.error(format!("models: {e}"));
         }
         self.models.wanted = None;

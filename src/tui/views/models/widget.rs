@@ -27,6 +27,9 @@ pub struct ModelsTable<'a> {
     pub data: Option<&'a ModelsData>,
     /// Why the calibration failed, if it did.
     pub error: Option<&'a str>,
+    /// The ball does not rebound at v0: no COR to calibrate the peers to (they take one in
+    /// (0, 1]), said in words rather than as the calibration's refusal (issue 51 item 5).
+    pub no_rebound: bool,
     /// λ, ζ and v0 of the ball, as the readout would show them.
     pub setting: (f64, f64, f64),
     pub theme: Theme,
@@ -72,11 +75,15 @@ impl ModelsTable<'_> {
             "λ {} ζ {} v0 {} m/s",
             sig(lambda, 4),
             sig(zeta, 4),
-            sig(v0, 3)
+            sig(v0, 4)
         ))];
         let Some(d) = self.data else {
             let text = match self.error {
-                Some(e) => format!("no calibration: {e}"),
+                _ if self.no_rebound => "no rebound at this v0: the ball sinks into the \
+                    dashpot (e 0), and the peer models calibrate to a COR above 0; \
+                    nothing to calibrate them to"
+                    .into(),
+                Some(e) => format!("no calibration: {}", human_names(e)),
                 None => "calibrating…".into(),
             };
             let style = if self.error.is_some() {
@@ -126,6 +133,19 @@ impl ModelsTable<'_> {
         lines.push(Line::raw("bouncelab peers --export CODE"));
         lines
     }
+}
+
+/// `text` with each peer model's command-line name (`kelvin-voigt-no-tension`) replaced by
+/// the name the table gives it (`KV F≥0`): no internal name on screen (issue 51 item 4).
+pub fn human_names(text: &str) -> String {
+    let mut out = text.to_string();
+    // the longest first: `kelvin-voigt` is part of `kelvin-voigt-no-tension`
+    let mut models = PeerModel::ALL;
+    models.sort_by_key(|m| std::cmp::Reverse(m.name().len()));
+    for m in models {
+        out = out.replace(m.name(), short_name(Some(m)));
+    }
+    out
 }
 
 impl Widget for &ModelsTable<'_> {

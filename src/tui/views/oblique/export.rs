@@ -76,7 +76,7 @@ fn slip(h: &ObliqueHistory, subtitle: &str) -> [Figure; 2] {
 /// drawn through the contact at the origin over one unit of time. The legend gives the angles
 /// as `bouncelab oblique`'s text does (five digits, `text::human`), not to the last bit.
 fn paths(r: &ObliqueResponse, subtitle: &str) -> Figure {
-    Figure::new(
+    let mut fig = Figure::new(
         "Incoming and outgoing paths".into(),
         subtitle.into(),
         Axis::linear("v_x (m/s)", "vx", 1.0),
@@ -97,7 +97,10 @@ fn paths(r: &ObliqueResponse, subtitle: &str) -> Figure {
                 vec![(0.0, 0.0), (r.vx_out, r.vy_out)],
             ),
         ],
-    )
+    );
+    // a metre per second the same length across and up: the angles drawn are the angles
+    crate::figure::svg::equal_scales(&mut fig);
+    fig
 }
 
 /// The oblique view's figures, in screen order, named as in the files

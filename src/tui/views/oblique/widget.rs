@@ -4,6 +4,7 @@
 //! view's state only.
 
 use crate::api::CourtPace;
+use crate::figure::Figure;
 use crate::oblique::ObliqueResponse;
 use crate::tui::format::{stepped, value};
 use crate::tui::theme::Theme;
@@ -31,6 +32,9 @@ pub struct ObliquePanel<'a> {
     pub v0: f64,
     /// K_t (N/m) and κ the impact runs on (the view's, or the ball's where it sets none).
     pub tangential: [f64; 2],
+    /// The time charts as drawn (`charts::time_figures` with their normalize, zoom and
+    /// crosshair: src/tui/app/charts.rs), once the impact is computed.
+    pub time: Option<&'a [Figure; 3]>,
     pub theme: Theme,
 }
 
@@ -58,16 +62,12 @@ impl ObliquePanel<'_> {
     /// screen the paths go in the bottom row, beside v_c and ω).
     fn render_charts(self, main: Rect, side: Rect, buf: &mut Buffer) {
         let theme = self.theme;
-        let Some((r, [forces, slip_fig, spin_fig])) = self
-            .view
-            .response()
-            .and_then(|r| Some((r, charts::time_figures(r)?)))
-        else {
+        let Some((r, [forces, slip_fig, spin_fig])) = self.view.response().zip(self.time) else {
             self.render_readout(main.union(side), buf);
             return;
         };
         let [top, bottom] = Layout::vertical([Constraint::Fill(1); 2]).areas(main);
-        charts::render_time(&forces, theme, top, buf);
+        charts::render_time(forces, theme, top, buf);
         let tall = side.height >= 30;
         if tall {
             let [paths, readout] =
@@ -76,20 +76,20 @@ impl ObliquePanel<'_> {
             charts::render_paths(r, theme, paths, buf);
             self.render_readout(readout, buf);
             let [slip, spin] = Layout::horizontal([Constraint::Fill(1); 2]).areas(bottom);
-            charts::render_time(&slip_fig, theme, slip, buf);
-            charts::render_time(&spin_fig, theme, spin, buf);
+            charts::render_time(slip_fig, theme, slip, buf);
+            charts::render_time(spin_fig, theme, spin, buf);
         } else if main.width >= NARROW {
             self.render_readout(side, buf);
             let [slip, spin, paths] = Layout::horizontal([Constraint::Fill(1); 3]).areas(bottom);
-            charts::render_time(&slip_fig, theme, slip, buf);
-            charts::render_time(&spin_fig, theme, spin, buf);
+            charts::render_time(slip_fig, theme, slip, buf);
+            charts::render_time(spin_fig, theme, spin, buf);
             charts::render_paths(r, theme, paths, buf);
         } else {
             // two charts a row at most: the paths give way (the readout has both angles)
             self.render_readout(side, buf);
             let [slip, spin] = Layout::horizontal([Constraint::Fill(1); 2]).areas(bottom);
-            charts::render_time(&slip_fig, theme, slip, buf);
-            charts::render_time(&spin_fig, theme, spin, buf);
+            charts::render_time(slip_fig, theme, slip, buf);
+            charts::render_time(spin_fig, theme, spin, buf);
         }
     }
 
