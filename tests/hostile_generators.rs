@@ -131,7 +131,7 @@ fn takes_file(f: &Flag) -> bool {
 }
 
 /// One run's verdict: `Err` with what was wrong.
-fn run(args: &[String], dir: &Path) -> Result<(), String> {
+fn run(args: &[String], dir: &Path) -> Result<i32, String> {
     let mut child = Command::new(bin())
         .args(args)
         .current_dir(dir)
@@ -191,27 +191,32 @@ fn run(args: &[String], dir: &Path) -> Result<(), String> {
         serde_json::from_str::<serde_json::Value>(&text)
             .map_err(|e| format!("stdout is not JSON ({e}): {text:.200}"))?;
     }
-    Ok(())
+    Ok(code)
 }
 
-/// The runs, four at a time, each in its own folder made by `prepare`; the failures.
-fn run_all(runs: Vec<Vec<String>>, prepare: &(dyn Fn(&Path) + Sync)) -> Vec<String> {
+/// The runs, four at a time, each in its own folder made by `prepare`: the failures, and how
+/// many runs ended with 0, 1 and 2.
+fn run_all(runs: Vec<Vec<String>>, prepare: &(dyn Fn(&Path) + Sync)) -> (Vec<String>, [usize; 3]) {
     let queue = Mutex::new(runs);
     let failures = Mutex::new(Vec::new());
+    let codes = Mutex::new([0; 3]);
     std::thread::scope(|s| {
         for _ in 0..4 {
             s.spawn(|| {
                 while let Some(args) = queue.lock().unwrap().pop() {
                     let dir = tempfile::tempdir().unwrap();
                     prepare(dir.path());
-                    if let Err(e) = run(&args, dir.path()) {
-                        failures.lock().unwrap().push(format!("{args:.300?}: {e}"));
+                    match run(&args, dir.path()) {
+                        Ok(code) => codes.lock().unwrap()[code as usize] += 1,
+                        Err(e) => failures.lock().unwrap().push(format!("{args:.300?}: {e}")),
                     }
                 }
             });
         }
     });
-    failures.into_inner().unwrap()
+    let codes = codes.into_inner().unwrap();
+    eprintln!("runs ended 0: {}, 1: {}, 2: {}", codes[0], codes[1], codes[2]);
+    (failures.into_inner().unwrap(), codes)
 }
 
 fn seed() -> usize {
@@ -221,18 +226,105 @@ fn seed() -> usize {
         .unwrap_or(54)
 }
 
-/// The base of a run: the preset where the command takes one (so the flag under test meets a
-/// command that could otherwise answer), and JSON where it speaks it.
-fn base(path: &[String], flags: &[Flag], flag: &Flag) -> Vec<String> {
-    let has = |name: &str| flags.iter().any(|f| f.long == name) && flag.long != name;
-    let mut args = path.to_vec();
-    if has("--preset") {
-        args.extend(["--preset".into(), "tennis".into()]);
+/// The docs' `$ bouncelab …` examples (tests/docs_examples.rs runs them: they answer), plain
+/// words only (no pipe, redirection or quote), a file they name made absolute: the first of
+/// each command path is that command's base, so the flag under test meets a command that
+/// otherwise answers.
+fn examples(surface: &[(Vec<String>, Vec<Flag>)]) -> Vec<(Vec<String>, Vec<String>)> {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let mut out: Vec<(Vec<String>, Vec<String>)> = Vec::new();
+    let mut pages: Vec<PathBuf> = std::fs::read_dir(root.join("docs"))
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|e| e == "md"))
+        .collect();
+    pages.sort();
+    for page in pages {
+        let text = std::fs::read_to_string(page).unwrap();
+        for line in text.lines().map(str::trim) {
+            let Some(rest) = line.strip_prefix("$ bouncelab ") else {
+                continue;
+            };
+            if rest.contains(['|', '>', '<', '\'', '"', '$', '&', ';', '\\']) {
+                continue;
+            }
+            // a data file the page made beforehand (not in the repository)
+            let missing = rest.split_whitespace().any(|w| {
+                !w.starts_with('-') && w.ends_with(".csv") && !root.join(w).is_file()
+            });
+            if missing && !rest.contains("-out") {
+                continue;
+            }
+            let words: Vec<String> = rest
+                .split_whitespace()
+                .map(|w| {
+                    let file = root.join(w);
+                    if !w.starts_with('-') && w.contains('.') && file.is_file() {
+                        file.to_string_lossy().into_owned()
+                    } else {
+                        w.to_string()
+                    }
+                })
+                .collect();
+            let path = surface
+                .iter()
+                .map(|(p, _)| p)
+                .filter(|p| words.starts_with(p))
+                .max_by_key(|p| p.len());
+            if let Some(path) = path
+                && !out.iter().any(|(p, _)| p == path)
+            {
+                out.push((path.clone(), words));
+            }
+        }
     }
+    out
+}
+
+/// The base of a run of `flag`: the command's docs example (else the preset where it takes
+/// one), asking for JSON where it speaks it.
+fn base(
+    path: &[String],
+    flags: &[Flag],
+    flag: &Flag,
+    examples: &[(Vec<String>, Vec<String>)],
+) -> Vec<String> {
+    let has = |name: &str| flags.iter().any(|f| f.long == name) && flag.long != name;
+    let mut args = match examples.iter().find(|(p, _)| p == path) {
+        Some((_, words)) => words.clone(),
+        None if has("--preset") => {
+            let mut a = path.to_vec();
+            a.extend(["--preset".into(), "tennis".into()]);
+            a
+        }
+        None => path.to_vec(),
+    };
     if has("--format") {
+        args = without(&args, "--format", true);
         args.extend(["--format".into(), "json".into()]);
     }
-    args
+    without(&args, &flag.long, flag.value.is_some())
+}
+
+/// `args` without `flag` (and its value, when it takes one): the run gives it its own.
+fn without(args: &[String], flag: &str, valued: bool) -> Vec<String> {
+    let mut out = Vec::new();
+    let mut skip = false;
+    for a in args {
+        if skip {
+            skip = false;
+            continue;
+        }
+        if a == flag {
+            skip = valued;
+            continue;
+        }
+        if a.starts_with(&format!("{flag}=")) {
+            continue;
+        }
+        out.push(a.clone());
+    }
+    out
 }
 
 #[test]
@@ -240,11 +332,12 @@ fn every_flag_takes_every_hostile_value_and_answers_0_1_or_2() {
     let values = values();
     let surface = surface();
     assert!(surface.len() >= 15, "{} commands read from --help", surface.len());
+    let examples = examples(&surface);
     let mut runs = Vec::new();
     let mut k = seed();
     for (path, flags) in &surface {
         for flag in flags {
-            let mut args = base(path, flags, flag);
+            let mut args = base(path, flags, flag, &examples);
             args.push(flag.long.clone());
             if flag.value.is_some() {
                 k += 1;
@@ -256,8 +349,26 @@ fn every_flag_takes_every_hostile_value_and_answers_0_1_or_2() {
         }
     }
     assert!(runs.len() >= 200, "{} flags", runs.len());
-    let failures = run_all(runs, &|_| {});
+    // the bases alone answer, so that a refusal is the hostile value's
+    let bases: Vec<Vec<String>> = examples
+        .iter()
+        .map(|(path, _)| {
+            let flags = &surface.iter().find(|(p, _)| p == path).unwrap().1;
+            let none = Flag {
+                long: "--none".into(),
+                value: None,
+            };
+            base(path, flags, &none, &examples)
+        })
+        .collect();
+    assert!(bases.len() >= 12, "{} commands with a docs example", bases.len());
+    let (failures, codes) = run_all(bases.clone(), &|_| {});
     assert!(failures.is_empty(), "{}", failures.join("\n"));
+    assert_eq!(codes[0], bases.len(), "bases that do not answer: {bases:?}");
+    let (failures, codes) = run_all(runs, &|_| {});
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+    // some hostile values are taken (a switch, a 0 that means none, …)
+    assert!(codes[0] >= 10, "only {} runs answered", codes[0]);
 }
 
 /// The hostile files: (name, how it is made in `dir`; the path given).
@@ -302,6 +413,7 @@ const FILE_KINDS: [&str; 9] = [
 #[test]
 fn every_file_flag_takes_every_hostile_file_and_answers_0_1_or_2() {
     let surface = surface();
+    let examples = examples(&surface);
     let mut runs = Vec::new();
     for (path, flags) in &surface {
         for flag in flags.iter().filter(|f| takes_file(f)) {
@@ -309,7 +421,7 @@ fn every_file_flag_takes_every_hostile_file_and_answers_0_1_or_2() {
                 if *kind == "device" && writes(flag) {
                     continue;
                 }
-                let mut args = base(path, flags, flag);
+                let mut args = base(path, flags, flag, &examples);
                 // the file's path is relative: each run's folder holds its own
                 let name = match *kind {
                     "device" => "/dev/zero".to_string(),
@@ -321,7 +433,7 @@ fn every_file_flag_takes_every_hostile_file_and_answers_0_1_or_2() {
         }
     }
     assert!(runs.len() >= 50, "{} file runs", runs.len());
-    let failures = run_all(runs, &|dir| {
+    let (failures, _) = run_all(runs, &|dir| {
         for kind in FILE_KINDS.iter().chain(&["binary"]) {
             if *kind != "device" {
                 hostile_file(kind, dir);
