@@ -28,8 +28,19 @@ fn long_text() -> String {
 /// unicode (a combining mark, a filler, an emoji), a long string.
 fn values() -> Vec<String> {
     [
-        "", "0", "-0", "NaN", "inf", "-inf", "1e308", "-1e308", "1e-308", "1e-400", "text",
-        "g\u{115F}ölf\u{301} ⚽", "-",
+        "",
+        "0",
+        "-0",
+        "NaN",
+        "inf",
+        "-inf",
+        "1e308",
+        "-1e308",
+        "1e-308",
+        "1e-400",
+        "text",
+        "g\u{115F}ölf\u{301} ⚽",
+        "-",
     ]
     .iter()
     .map(|s| s.to_string())
@@ -185,7 +196,9 @@ fn run(args: &[String], dir: &Path) -> Result<i32, String> {
             return Err(format!("exit 2 without one error line: {stderr:?}"));
         }
     }
-    let json = args.windows(2).any(|w| w[0] == "--format" && w[1] == "json");
+    let json = args
+        .windows(2)
+        .any(|w| w[0] == "--format" && w[1] == "json");
     if code == 0 && json {
         let text = String::from_utf8_lossy(&stdout);
         serde_json::from_str::<serde_json::Value>(&text)
@@ -215,7 +228,10 @@ fn run_all(runs: Vec<Vec<String>>, prepare: &(dyn Fn(&Path) + Sync)) -> (Vec<Str
         }
     });
     let codes = codes.into_inner().unwrap();
-    eprintln!("runs ended 0: {}, 1: {}, 2: {}", codes[0], codes[1], codes[2]);
+    eprintln!(
+        "runs ended 0: {}, 1: {}, 2: {}",
+        codes[0], codes[1], codes[2]
+    );
     (failures.into_inner().unwrap(), codes)
 }
 
@@ -249,9 +265,9 @@ fn examples(surface: &[(Vec<String>, Vec<Flag>)]) -> Vec<(Vec<String>, Vec<Strin
                 continue;
             }
             // a data file the page made beforehand (not in the repository)
-            let missing = rest.split_whitespace().any(|w| {
-                !w.starts_with('-') && w.ends_with(".csv") && !root.join(w).is_file()
-            });
+            let missing = rest
+                .split_whitespace()
+                .any(|w| !w.starts_with('-') && w.ends_with(".csv") && !root.join(w).is_file());
             if missing && !rest.contains("-out") {
                 continue;
             }
@@ -331,7 +347,11 @@ fn without(args: &[String], flag: &str, valued: bool) -> Vec<String> {
 fn every_flag_takes_every_hostile_value_and_answers_0_1_or_2() {
     let values = values();
     let surface = surface();
-    assert!(surface.len() >= 15, "{} commands read from --help", surface.len());
+    assert!(
+        surface.len() >= 15,
+        "{} commands read from --help",
+        surface.len()
+    );
     let examples = examples(&surface);
     let mut runs = Vec::new();
     let mut k = seed();
@@ -361,7 +381,11 @@ fn every_flag_takes_every_hostile_value_and_answers_0_1_or_2() {
             base(path, flags, &none, &examples)
         })
         .collect();
-    assert!(bases.len() >= 12, "{} commands with a docs example", bases.len());
+    assert!(
+        bases.len() >= 12,
+        "{} commands with a docs example",
+        bases.len()
+    );
     let (failures, codes) = run_all(bases.clone(), &|_| {});
     assert!(failures.is_empty(), "{}", failures.join("\n"));
     assert_eq!(codes[0], bases.len(), "bases that do not answer: {bases:?}");
