@@ -113,8 +113,8 @@ pub use mc::{McReport, MonteCarlo};
 pub use oblique::{CourtPace, ObliqueSpec, SOLID_INERTIA_FACTOR};
 pub use oblique_fit::{ObliqueFitReport, is_data_error as is_oblique_data_error};
 pub use reach::{
-    MapReach, Reach, displacement_warning, indentation_warning, map_displacement_warning,
-    map_radius_note, map_reach, peak_displacement, reach, reach_warning,
+    MapReach, Reach, centre_bounds, displacement_warning, indentation_warning,
+    map_displacement_warning, map_radius_note, map_reach, peak_displacement, reach, reach_warning,
 };
 pub use report::{BallHeader, Energy, FitReport, ImpactReport, MeasuredAt};
 pub use rows::{ImpactRow, Rest, impact_row, impact_rows};

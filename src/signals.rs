@@ -4,8 +4,8 @@
 //! hidden. While a [`TerminalGuard`] lives, a thread waits for signals:
 //!
 //! - the catchable ones whose default is to end the process ([`SIGNALS`]: SIGTERM, SIGHUP,
-//!   SIGINT, SIGQUIT, SIGUSR1, SIGUSR2, SIGALRM, SIGVTALRM) would end it without undoing that
-//!   (the shell after it then echoes nothing): the thread takes the stdout lock (so no frame
+//!   SIGINT, SIGQUIT, SIGUSR1, SIGUSR2, SIGALRM, SIGVTALRM, SIGXCPU, SIGABRT) would end it
+//!   without undoing that (the shell after it then echoes nothing): the thread takes the stdout lock (so no frame
 //!   is drawn after it), restores the terminal, and exits with the conventional 128 + the
 //!   signal's number (tests/tui_exit_pty.rs, `each_signal_restores_the_terminal_and_exits_128_plus_n`,
 //!   `other_terminating_signals_restore_the_terminal_too`). SIGPIPE is ignored by Rust's
@@ -28,12 +28,15 @@ pub struct TerminalGuard {
 
 /// The terminating signals handled, with the exit code they give (128 + n).
 #[cfg(unix)]
-pub const SIGNALS: [i32; 8] = {
+/// SIGXCPU (a CPU-time limit, `ulimit -t`) and SIGABRT sent from outside end it too (issue 54
+/// item 6: they left the terminal raw); an abort from within (`abort()` re-raises SIGABRT with
+/// its default action once the handler returns) is not held by this.
+pub const SIGNALS: [i32; 10] = {
     use signal_hook::consts::signal::{
-        SIGALRM, SIGHUP, SIGINT, SIGQUIT, SIGTERM, SIGUSR1, SIGUSR2, SIGVTALRM,
+        SIGABRT, SIGALRM, SIGHUP, SIGINT, SIGQUIT, SIGTERM, SIGUSR1, SIGUSR2, SIGVTALRM, SIGXCPU,
     };
     [
-        SIGTERM, SIGHUP, SIGINT, SIGQUIT, SIGUSR1, SIGUSR2, SIGALRM, SIGVTALRM,
+        SIGTERM, SIGHUP, SIGINT, SIGQUIT, SIGUSR1, SIGUSR2, SIGALRM, SIGVTALRM, SIGXCPU, SIGABRT,
     ]
 };
 

@@ -325,3 +325,57 @@ fn the_map_counts_cells_it_could_not_check_not_as_within() {
     }
     assert!(unchecked_seen, "no radius left a cell to its run again");
 }
+
+/// Every bound of `api::centre_bounds` holds the adaptive solver's α_max (read where α' = 0,
+/// `api::peak_displacement`) in every cell of a λ × ζ grid, 10⁻³ … 10³ × 10⁻² … 10², under
+/// each law, from the cells as the command line's map computes them (the Hertz table, the
+/// Taylor steps, the closed forms), within the solver's own error: its rtol 1e-10, loosened to
+/// 1e-6 where it ran stiff (docs/numerics.md; a stiff cell, λ 178, ζ 100, is 1.2e-7 past the
+/// upper bound, exact there to its inputs: y relaxes to F_m/K_r at the peak).
+#[test]
+fn the_centre_bounds_hold_the_solver_s_peak_on_a_grid() {
+    use bouncelab::map::{Axis, MapSpec, Param, Scale, compute};
+    let cases = [
+        ("tennis", ContactLaw::Hertz),
+        ("tennis", ContactLaw::ElasticPlastic),
+        ("superball", ContactLaw::Linear),
+        ("superball", ContactLaw::ElasticPlastic),
+        ("golf", ContactLaw::Hertz),
+    ];
+    for (preset, law) in cases {
+        let base = Ball::from_preset(preset).unwrap().params;
+        let spec = MapSpec::dimensional(
+            base,
+            law,
+            Axis::new(Param::Lambda, 1e-3, 1e3, 9, Scale::Log).unwrap(),
+            Axis::new(Param::Zeta, 1e-2, 1e2, 9, Scale::Log).unwrap(),
+        )
+        .unwrap()
+        .with_fast(true)
+        .with_fast_laws(true);
+        let map = compute(spec.clone());
+        let method = match law {
+            ContactLaw::Linear => Method::Exact,
+            _ => Method::Numeric,
+        };
+        let zetas = map.zetas.len();
+        let mut checked = 0;
+        for (k, cell) in map.cells().iter().enumerate() {
+            let Some(c) = cell else { continue };
+            let p = spec.params_at(map.lambdas[k / zetas], map.zetas[k % zetas]);
+            let z_m = simulate(&p, law, &SolveOptions::default())
+                .unwrap()
+                .max_indentation;
+            let alpha = api::peak_displacement(&p, law, method).unwrap();
+            let t_f = c.contact_time.unwrap_or(f64::INFINITY);
+            let (lo, hi) = api::centre_bounds(&p, z_m, c.max_force, t_f, c.cor);
+            let tol = 1e-6 * alpha;
+            assert!(
+                lo <= alpha + tol && alpha <= hi + tol,
+                "{preset} {law:?} cell {k}: {lo} ≤ {alpha} ≤ {hi} fails"
+            );
+            checked += 1;
+        }
+        assert!(checked > 70, "{preset} {law:?}: {checked} cells");
+    }
+}

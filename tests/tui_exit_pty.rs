@@ -64,6 +64,9 @@ fn other_terminating_signals_restore_the_terminal_too() {
         (Signal::USR2, 12),
         (Signal::ALARM, 14),
         (Signal::VTALARM, 26),
+        // issue 54 item 6: these two left the terminal raw
+        (Signal::XCPU, 24),
+        (Signal::ABORT, 6),
     ] {
         let home = tempfile::tempdir().unwrap();
         let mut x = Explorer::spawn(home.path(), None, &[]);

@@ -63,7 +63,7 @@ pub fn peak_displacement(
 /// ([`displacement_warning`]); `duration` the time it was followed (s). α = z + y ≥ z (the
 /// recoil element only compresses: c y' + K_r y = F ≥ 0 from y = 0), so a z_m past R is
 /// an α_max past R too, and one warning says it; and α_max ≤ min(v0 · duration, z_m + m v0/c)
-/// (`bounds`), which spares the second run whenever that is within R.
+/// (`centre_bounds`), which spares the second run whenever that is within R.
 /// tests/answer_warnings.rs.
 pub fn reach_warning(
     params: &ImpactParams,
@@ -110,7 +110,7 @@ pub fn reach(
     if z_m > radius {
         return Some(Reach::Indentation(z_m));
     }
-    // α_max ≤ min(v0 t_f, z_m + m v0/c) (`bounds`): within R, no second run
+    // α_max ≤ min(v0 t_f, z_m + m v0/c) (`centre_bounds`): within R, no second run
     let momentum = params.mass * params.v0;
     if (params.v0 * duration).min(z_m + momentum / params.damping) <= radius {
         return None;
@@ -121,26 +121,45 @@ pub fn reach(
     }
 }
 
-/// Bounds on α_max (m) of an impact of `p` that peaked at `z_m` with peak force `f_m` (N)
-/// and lasted `t_f` (s; ∞ without rebound), every one exact for any law: at the peak t*,
-/// α' = 0, so the force's impulse so far is m v0, and the recoil element (c y' + K_r y = F,
-/// y(0) = 0) holds y(t*) ≤ m v0/c (c y' ≤ F) and y ≤ F_m/K_r (y' ≤ 0 there), while z(t*) ≤
-/// z_m and α ≤ v0 t* (α'' ≤ 0): α_max ≤ min(v0 t_f, z_m + min(m v0/c, F_m/K_r)). From below,
-/// y(t*) = ∫ e^{−K_r (t* − s)/c} F(s) ds / c ≥ e^{−K_r t_f/c} m v0/c, and α ≥ y.
-fn bounds(p: &ImpactParams, z_m: f64, f_m: f64, t_f: f64) -> (f64, f64) {
+/// Bounds on α_max (m) of an impact of `p` that peaked at `z_m` with peak force `f_m` (N),
+/// lasted `t_f` (s; ∞ without rebound) and left at `cor`, every one exact for any law
+/// (tests/answer_reach.rs: `the_centre_bounds_hold_the_solver_s_peak_on_a_grid`).
+///
+/// The recoil element (c y' + K_r y = F, y(0) = 0, docs/model.md §2) gives, with τ = c/K_r,
+/// y(t) = ∫₀ᵗ e^{−(t − s)/τ} F(s) ds / c. With 0 ≤ F ≤ F_m and a given impulse Q = ∫₀ᵗ F,
+/// that integral is largest with the impulse at the end (F = F_m on [t − Q/F_m, t]) and
+/// smallest with it at the start (F = F_m on [0, Q/F_m]):
+///
+///     (Q/c) e^{x − t/τ} φ(x)  ≤  y(t)  ≤  (Q/c) φ(x),   x = Q/(F_m τ),  φ(x) = (1 − e^{−x})/x
+///
+/// (→ Q/c as K_r → 0; the lower one needs x ≤ t/τ, true as Q ≤ F_m t).
+/// - Above: at the peak t*, α' = 0, so Q = m v0; α_max = z(t*) + y(t*) ≤ z_m + (m v0/c) φ(x)
+///   (below both of the older min(m v0/c, F_m/K_r)), and α ≤ v0 t* (α'' ≤ 0) with the
+///   rebound's impulse e m v0 after t* taking at least e m v0/F_m: t* ≤ t_f − e m v0/F_m.
+/// - Below: α is largest at t*, so α_max ≥ α(t_f) = z_f + y(t_f) ≥ y(t_f), the impulse to
+///   t_f being (1 + e) m v0; without rebound only K_r = 0 says anything: y(t*) = m v0/c.
+pub fn centre_bounds(p: &ImpactParams, z_m: f64, f_m: f64, t_f: f64, cor: f64) -> (f64, f64) {
     let momentum = p.mass * p.v0;
-    let spring = if p.k_r > 0.0 {
-        f_m / p.k_r
+    let rate = p.k_r / p.damping; // 1/τ
+    let phi = |x: f64| if x > 0.0 { -(-x).exp_m1() / x } else { 1.0 };
+    let within = |q: f64| (q / p.damping) * phi(q * rate / f_m);
+    let rebound = t_f.is_finite() && cor.is_finite();
+    let peak_time = if rebound {
+        t_f - cor.max(0.0) * momentum / f_m
     } else {
-        f64::INFINITY
+        t_f
     };
-    let hi = (p.v0 * t_f).min(z_m + (momentum / p.damping).min(spring));
-    let decay = if p.k_r > 0.0 {
-        (-p.k_r * t_f / p.damping).exp()
+    let hi = (p.v0 * peak_time).min(z_m + within(momentum));
+    let lo = if rebound {
+        let q = (1.0 + cor.max(0.0)) * momentum;
+        let x = q * rate / f_m;
+        within(q) * (x - t_f * rate).min(0.0).exp()
+    } else if p.k_r == 0.0 {
+        momentum / p.damping
     } else {
-        1.0
+        0.0
     };
-    (decay * momentum / p.damping, hi)
+    (lo, hi)
 }
 
 /// The peak indentation z_m (m) of a dimensional map's cell from its peak force F_m (N),
@@ -172,6 +191,8 @@ struct Tally {
     unchecked: usize,
     /// The first of their errors, to name a cell.
     error: Option<String>,
+    /// Cells the bounds left open, run again (`MapReach::solved`).
+    solved: usize,
 }
 
 impl Tally {
@@ -179,6 +200,7 @@ impl Tally {
         self.past += other.past;
         self.alone += other.alone;
         self.unchecked += other.unchecked;
+        self.solved += other.solved;
         self.error = self.error.or(other.error);
         self
     }
@@ -186,7 +208,7 @@ impl Tally {
 
 /// The cells of a dimensional `map` whose ball's centre passes `radius` (m) while their peak
 /// indentation does not ([`super::map_indentation_warning`] names those): a cell past by its
-/// lower bound is counted, one within by its upper bound left (`bounds`), and every other
+/// lower bound is counted, one within by its upper bound left (`centre_bounds`), and every other
 /// read exactly ([`peak_displacement`], the cell's impact again with its flow, on all cores).
 /// One warning, when some cell passes by its centre alone, naming how many cells the centre
 /// passes in (those whose indentation passes too: α ≥ z) and how many of them by it alone;
@@ -215,6 +237,12 @@ impl MapReach {
     /// [`map_radius_note`]'s text.
     pub fn note(&self) -> Option<String> {
         map_note_text(&self.tally, self.radius, self.total)
+    }
+
+    /// How many cells the bounds left open and were run again (each some 0.35 ms by the
+    /// adaptive solver: issue 54 item 10; tests/answer_reach.rs).
+    pub fn solved(&self) -> usize {
+        self.tally.solved
     }
 }
 
@@ -283,32 +311,7 @@ fn map_tally(map: &Map, radius: f64) -> Option<Tally> {
                 ..Tally::default()
             };
         }
-        let cell = at(k);
-        let t_f = c.contact_time.unwrap_or(f64::INFINITY);
-        let (lo, hi) = bounds(&cell, z, c.max_force, t_f);
-        let alone = if lo > radius {
-            true
-        } else if hi <= radius {
-            false
-        } else {
-            match peak_displacement(&cell, spec.law, method) {
-                Ok(a) => a > radius,
-                Err(e) => {
-                    let error = Some(e.to_string());
-                    return Tally {
-                        unchecked: 1,
-                        error,
-                        ..Tally::default()
-                    };
-                }
-            }
-        };
-        let n = usize::from(alone);
-        Tally {
-            past: n,
-            alone: n,
-            ..Tally::default()
-        }
+        read_centre(&at(k), spec.law, method, c, z, radius)
     };
     let cells: Vec<(usize, Cell)> = map
         .cells()
@@ -321,6 +324,45 @@ fn map_tally(map: &Map, radius: f64) -> Option<Tally> {
         .map(read)
         .reduce(Tally::default, Tally::add);
     Some(tally)
+}
+
+/// A map cell of `params` under `law`, whose summary is `c` and peak indentation `z` (m,
+/// within `radius`), read by its centre: past by the lower bound, within by the upper one
+/// (`centre_bounds`), else its impact run again by `method` ([`peak_displacement`]).
+fn read_centre(
+    params: &ImpactParams,
+    law: ContactLaw,
+    method: Method,
+    c: Cell,
+    z: f64,
+    radius: f64,
+) -> Tally {
+    let t_f = c.contact_time.unwrap_or(f64::INFINITY);
+    let (lo, hi) = centre_bounds(params, z, c.max_force, t_f, c.cor);
+    let alone = if lo > radius {
+        true
+    } else if hi <= radius {
+        false
+    } else {
+        match peak_displacement(params, law, method) {
+            Ok(a) => a > radius,
+            Err(e) => {
+                return Tally {
+                    unchecked: 1,
+                    error: Some(e.to_string()),
+                    solved: 1,
+                    ..Tally::default()
+                };
+            }
+        }
+    };
+    let n = usize::from(alone);
+    Tally {
+        past: n,
+        alone: n,
+        solved: usize::from(lo <= radius && hi > radius),
+        ..Tally::default()
+    }
 }
 
 /// The map's centre warning from its `tally` over `total` cells (`map_displacement_warning`).

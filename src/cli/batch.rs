@@ -104,7 +104,7 @@ pub fn run(a: &BatchArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         air,
         rebound_sd: a.rebound_height_sd,
     };
-    let outcomes = judge_all(&ball, &balls, &setup)?;
+    let outcomes = judge_all(&ball, &a.file, &balls, &setup)?;
     let report = BatchReport::new(&ball, standard, &outcomes);
     // both files staged, then the report, then the files published: all or none
     // (cli::outputs, as every command)
@@ -151,46 +151,82 @@ fn standard(a: &BatchArgs, ball: &Ball) -> anyhow::Result<&'static Standard> {
     }
 }
 
-/// The batch's balls with their data, trace files read (relative to the batch's folder).
-fn load(file: &Path) -> anyhow::Result<Vec<(String, usize, Data)>> {
+/// A ball's data as the batch file gives it: its rows, or a trace file, read only when the
+/// ball's step comes ([`judge_all`]), so that a batch holds at most [`STEP`] traces at once
+/// (issue 54 item 4: every trace was read first, 31 MB a ball of a 10⁶-row trace, and kept
+/// to the end). A ball's outcome keeps its numbers only, never its data.
+enum Source {
+    Rows(Data),
+    Trace {
+        path: PathBuf,
+        line: usize,
+        column: usize,
+    },
+}
+
+/// The batch's balls with their data, trace files named (relative to the batch's folder).
+fn load(file: &Path) -> anyhow::Result<Vec<(String, usize, Source)>> {
     let text = files::read_text(file)?;
     let rows = split(&text).map_err(|e| files::at(file, e))?;
     let dir = file.parent().unwrap_or(Path::new(""));
-    rows.into_iter()
+    Ok(rows
+        .into_iter()
         .map(|b| {
-            let data = match b.data {
-                BallData::Measured(d) => d,
-                BallData::TraceFile { path, line, column } => {
-                    let t = files::trace(&dir.join(&path)).map_err(|e| {
-                        anyhow::anyhow!(
-                            "{}:{line}:{column}: trace of '{}': {e:#}",
-                            file.display(),
-                            b.id
-                        )
-                    })?;
-                    Data::Trace(t)
-                }
+            let source = match b.data {
+                BallData::Measured(d) => Source::Rows(d),
+                BallData::TraceFile { path, line, column } => Source::Trace {
+                    path: dir.join(&path),
+                    line,
+                    column,
+                },
             };
-            Ok((b.id, b.line, data))
+            (b.id, b.line, source)
         })
-        .collect()
+        .collect())
+}
+
+/// A ball's trace file read (`None` for a ball given by its rows), an error at the batch
+/// `file`'s `line:column` naming the ball.
+fn read_trace(file: &Path, id: &str, source: &Source) -> anyhow::Result<Option<Data>> {
+    let Source::Trace { path, line, column } = source else {
+        return Ok(None);
+    };
+    let t = files::trace(path).map_err(|e| {
+        anyhow::anyhow!("{}:{line}:{column}: trace of '{id}': {e:#}", file.display())
+    })?;
+    Ok(Some(Data::Trace(t)))
+}
+
+/// A ball's data: its rows, or its `trace` read at its step's start.
+fn data_of<'a>(source: &'a Source, trace: &'a Option<Data>) -> &'a Data {
+    match (source, trace) {
+        (Source::Rows(d), _) | (Source::Trace { .. }, Some(d)) => d,
+        (Source::Trace { .. }, None) => unreachable!("a step's traces are read at its start"),
+    }
 }
 
 /// Every ball, in parallel in steps of [`STEP`], with the bar and the Ctrl-C check between
-/// steps (a ball's outcome depends on its data alone, so the steps change no answer).
+/// steps (a ball's outcome depends on its data alone, so the steps change no answer); a
+/// step's trace files are read at its start and dropped at its end.
 fn judge_all(
     ball: &Ball,
-    balls: &[(String, usize, Data)],
+    file: &Path,
+    balls: &[(String, usize, Source)],
     setup: &BatchSetup<'_>,
 ) -> anyhow::Result<Vec<BallOutcome>> {
     let progress = Progress::new(balls.len() as u64, FIT_COST, "balls");
     let mut all = Vec::with_capacity(balls.len());
     for step in balls.chunks(STEP) {
         progress.check()?;
-        all.par_extend(
-            step.par_iter()
-                .map(|(id, line, data)| ball.judge_in_batch(id, *line, data, setup)),
-        );
+        let traces = step
+            .par_iter()
+            .map(|(id, _, source)| read_trace(file, id, source))
+            .collect::<anyhow::Result<Vec<_>>>()?;
+        all.par_extend(step.par_iter().zip(traces.par_iter()).map(
+            |((id, line, source), trace)| {
+                ball.judge_in_batch(id, *line, data_of(source, trace), setup)
+            },
+        ));
         progress.advance(step.len() as u64);
     }
     progress.finish();

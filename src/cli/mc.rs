@@ -135,7 +135,7 @@ pub fn run(a: &McArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     // both files or neither (crate::atomic), published once the report is out
     let mut files = Outputs::new(a.force);
     if let Some(p) = &a.csv_out {
-        files.text(p, &samples_csv(&sampler, &samples))?;
+        files.text(p, &samples_csv(&sampler, &samples)?)?;
     }
     if let Some(p) = &a.svg_out {
         let fig = cor_histogram(&ball, &spec, &samples, &s.stats);
@@ -201,9 +201,13 @@ fn run_samples(sampler: &Sampler, law: ContactLaw) -> anyhow::Result<Samples> {
     Ok(all)
 }
 
+/// Rows of the samples' CSV formatted between two looks at the signal flag: some 10 ms.
+const CSV_ROWS_PER_LOOK: usize = 1 << 14;
+
 /// `index, <varied parameters>, cor, max_force, contact_time` (SI; contact_time empty where
-/// the ball does not rebound).
-fn samples_csv(sampler: &Sampler, s: &Samples) -> String {
+/// the ball does not rebound). A SIGINT or SIGTERM stops it (`budget::Interrupted`): 10⁷ rows
+/// took minutes on a loaded machine and the signal waited for them (issue 54 item 6).
+fn samples_csv(sampler: &Sampler, s: &Samples) -> anyhow::Result<String> {
     let mut buf = Vec::new();
     let mut header = vec!["index".to_string()];
     header.extend(
@@ -214,9 +218,13 @@ fn samples_csv(sampler: &Sampler, s: &Samples) -> String {
             .map(|v| v.what.name().to_string()),
     );
     header.extend(["cor", "max_force", "contact_time"].map(String::from));
-    let mut rows = || -> std::io::Result<()> {
+    // Ok(false): stopped by a signal
+    let mut rows = || -> std::io::Result<bool> {
         csv_row(&mut buf, &header)?;
         for i in 0..s.len() {
+            if i % CSV_ROWS_PER_LOOK == 0 && super::budget::interrupted() {
+                return Ok(false);
+            }
             let index = s.start + i as u64;
             let mut row = vec![index.to_string()];
             row.extend(sampler.inputs(index).into_iter().map(num));
@@ -225,10 +233,12 @@ fn samples_csv(sampler: &Sampler, s: &Samples) -> String {
             row.push(if t.is_nan() { String::new() } else { num(t) });
             csv_row(&mut buf, &row)?;
         }
-        Ok(())
+        Ok(true)
     };
-    rows().expect("writing to memory");
-    String::from_utf8(buf).expect("CSV of ASCII and the given names")
+    if !rows().expect("writing to memory") {
+        return Err(super::budget::Interrupted.into());
+    }
+    Ok(String::from_utf8(buf).expect("CSV of ASCII and the given names"))
 }
 
 fn cor_histogram(
