@@ -1,6 +1,6 @@
 //! The ball past its radius: its peak indentation z_m, or its centre's peak displacement
 //! α_max = max (z + y) toward the wall, read exactly where α' = 0 (the explorer's validity
-//! note, `tui::physical::validity`, checks the same two). tests/answer_reach.rs.
+//! note, `tui::physical::validity`, checks the same two). tests/cli/answer_reach.rs.
 
 use super::BallError;
 use crate::map::{Cell, Map};
@@ -64,7 +64,7 @@ pub fn peak_displacement(
 /// recoil element only compresses: c y' + K_r y = F ≥ 0 from y = 0), so a z_m past R is
 /// an α_max past R too, and one warning says it; and α_max ≤ min(v0 · duration, z_m + m v0/c)
 /// (`bounds`), which spares the second run whenever that is within R.
-/// tests/answer_warnings.rs.
+/// tests/cli/answer_warnings.rs.
 pub fn reach_warning(
     params: &ImpactParams,
     law: ContactLaw,
@@ -192,7 +192,7 @@ impl Tally {
 /// passes in (those whose indentation passes too: α ≥ z) and how many of them by it alone;
 /// a cell whose run again fails is neither: the warning counts it as not checked (and is
 /// given for it alone), so no cell passes silently. `None` otherwise, for a normalized map,
-/// or with no radius known (NaN). tests/answer_reach.rs.
+/// or with no radius known (NaN). tests/cli/answer_reach.rs.
 pub fn map_displacement_warning(map: &Map, radius: f64) -> Option<String> {
     map_reach(map, radius)?.warning()
 }
@@ -232,7 +232,7 @@ pub fn map_reach(map: &Map, radius: f64) -> Option<MapReach> {
 /// of [`super::map_indentation_warning`] and [`map_displacement_warning`] together (one
 /// tally, the same cells): `z_m > radius 21.55 mm in 8 of 9 cells` (or `centre's α_max`, or
 /// both, by which passes), and the cells not checked. `None` when every cell is within, for
-/// a normalized map, or with no radius known. tests/figure_map_radius.rs.
+/// a normalized map, or with no radius known. tests/figures/figure_map_radius.rs.
 pub fn map_radius_note(map: &Map, radius: f64) -> Option<String> {
     map_reach(map, radius)?.note()
 }

@@ -65,7 +65,7 @@ impl NormalAt {
             (v * theta.sin(), v * theta.cos())
         };
         // a normal speed below the meaningful range is the angle's doing when v is in it:
-        // `--angle 1e-15` said "invalid v0: 1.2e-16" (issue 54 item 9; tests/field_names.rs)
+        // `--angle 1e-15` said "invalid v0: 1.2e-16" (issue 54 item 9; tests/cli/field_names.rs)
         use crate::model::params::MEANINGFUL_MIN;
         if vy < MEANINGFUL_MIN && v >= MEANINGFUL_MIN && v.is_finite() {
             return Err(super::invalid(
@@ -77,7 +77,7 @@ impl NormalAt {
         let params = ImpactParams { v0: vy, ..*params };
         // The linear law's normal motion in closed form where it answers (`closed`: a fifth of
         // the exact solver's instructions), else the solver's flow; at 90° always the solver's,
-        // so that the answer is `run`'s to the last bit (tests/oblique_laws.rs,
+        // so that the answer is `run`'s to the last bit (tests/physics/oblique_laws.rs,
         // `angle_90_is_run_on_every_law`).
         let closed = law == ContactLaw::Linear && opts.method.is_none() && angle_deg != 90.0;
         if closed && opts.samples == 0 {
@@ -174,7 +174,7 @@ impl NormalAt {
 
 /// The refusal of a tangential motion whose search grid would pass [`MAX_GRID`] points: the
 /// grid steps a fifth of the sticking oscillation's radian, ω̃_t = √(K_t/K_p·(1 + 1/κ)), so a
-/// tiny κ or a huge K_t once asked 10⁸ points (3 GB) or more (tests/oblique_bounded.rs). The
+/// tiny κ or a huge K_t once asked 10⁸ points (3 GB) or more (tests/physics/oblique_bounded.rs). The
 /// field named is the factor that drives ω̃_t most: 1/κ or K_t/K_p.
 fn bounded(s: &Scaled, oblique: &Oblique, tf: f64) -> Result<(), ObliqueError> {
     if Grid::steps(s, tf) <= MAX_GRID as f64 {

@@ -64,7 +64,7 @@ impl App {
     /// What `x`, `N`, `+`, `-` say in a view whose charts they do not read: where the
     /// numbers are instead. The oblique and drop views have charts (drawn with true ticks),
     /// so "no chart to read" was false there (issue 51 item 3;
-    /// tests/tui_crosshair.rs: `chart_keys_say_what_works_where_they_do_not_read`).
+    /// tests/tui/tui_crosshair.rs: `chart_keys_say_what_works_where_they_do_not_read`).
     pub(super) fn no_chart_keys(&self) -> String {
         match self.view {
             View::Oblique => "x, N, +/- read the impact, sweeps and models views' charts; \
@@ -85,7 +85,7 @@ impl App {
 impl App {
     /// A chart's name as its frame shows it ("COR vs speed", "Force–time"), never the
     /// export's file name ("peers-cor-velocity": issue 51 item 4, no internal names on screen;
-    /// tests/tui_crosshair.rs: `chart_keys_say_what_works_where_they_do_not_read`).
+    /// tests/tui/tui_crosshair.rs: `chart_keys_say_what_works_where_they_do_not_read`).
     fn chart_name(&self, chart: crate::figure::explorer::Chart) -> String {
         let title = crate::tui::ui::figure(self, chart).screen_title;
         let first = title.split(" · ").next().unwrap_or(&title).trim();
