@@ -286,15 +286,18 @@ def move_helpers(helpers, check):
 
 
 def move_snapshots(stem, area, check):
-    snaps = os.path.join(TESTS, "snapshots")
-    if not os.path.isdir(snaps):
-        return
-    for name in sorted(os.listdir(snaps)):
-        if name.startswith(stem + "__"):
-            dst = os.path.join(TESTS, area, "snapshots", f"{area}__{name}")
-            if os.path.exists(dst):
-                sys.exit(f"error: {rel(dst)} exists and so does tests/snapshots/{name}")
-            move(os.path.join(snaps, name), dst, check)
+    """`tests/snapshots/<stem>__x.snap`, and `tests/<area>/snapshots/<stem>__x.snap` (where
+    git's rename detection puts a snapshot a merge added at the old place), to
+    `tests/<area>/snapshots/<area>__<stem>__x.snap`."""
+    for snaps in (os.path.join(TESTS, "snapshots"), os.path.join(TESTS, area, "snapshots")):
+        if not os.path.isdir(snaps):
+            continue
+        for name in sorted(os.listdir(snaps)):
+            if name.startswith(stem + "__") and not name.startswith(f"{area}__"):
+                dst = os.path.join(TESTS, area, "snapshots", f"{area}__{name}")
+                if os.path.exists(dst):
+                    sys.exit(f"error: {rel(dst)} exists and so does {rel(snaps)}/{name}")
+                move(os.path.join(snaps, name), dst, check)
 
 
 def move_tests(helpers, check):
