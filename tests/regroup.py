@@ -356,6 +356,23 @@ def main_rs(area, modules, used):
     return "\n".join(lines) + "\n"
 
 
+def helper_texts(name):
+    for dirpath, _, files in os.walk(os.path.join(TESTS, SUPPORT, name)):
+        for f in sorted(files):
+            if f.endswith(".rs"):
+                yield read(os.path.join(dirpath, f))
+
+
+def fix_helpers(helpers, check):
+    """A helper's `#[path = "../x/mod.rs"] mod x;` of another helper -> `use crate::x;`."""
+    for name in sorted(helpers):
+        for dirpath, _, files in os.walk(os.path.join(TESTS, SUPPORT, name)):
+            for f in sorted(files):
+                if f.endswith(".rs"):
+                    p = os.path.join(dirpath, f)
+                    write(p, use_helpers(read(p), helpers - {name}), check)
+
+
 def write_areas(helpers, check):
     for area in area_dirs():
         adir = os.path.join(TESTS, area)
@@ -370,7 +387,15 @@ def write_areas(helpers, check):
             write(p, text, check)
             modules.append(f[:-3])
             used |= set(re.findall(r"^\s*use crate::(\w+);", text, re.M)) & helpers
-        # a helper's own helpers are its business (#[path] inside it)
+        # a helper's own helpers are the area's too: clippy refuses a file loaded as a
+        # module twice (`duplicate_mod`), so a helper names another by `use crate::x;`
+        todo = sorted(used)
+        while todo:
+            for text in helper_texts(todo.pop()):
+                for dep in set(re.findall(r"^\s*use crate::(\w+);", text, re.M)) & helpers:
+                    if dep not in used:
+                        used.add(dep)
+                        todo.append(dep)
         if modules:
             write(os.path.join(adir, "main.rs"), main_rs(area, modules, used), check)
 
@@ -429,6 +454,8 @@ def main():
     helpers = helper_names()
     move_helpers(helpers, check)
     moved = move_tests(helpers, check)
+    if not check:
+        fix_helpers(helpers, check)
     write_areas(helpers, check)
     rewrite_references(helpers, check)
     binaries = [a for a in area_dirs() if os.path.isdir(os.path.join(TESTS, a))]

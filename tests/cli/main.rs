@@ -10,6 +10,8 @@ mod common;
 mod fit_common;
 #[path = "../support/pty/mod.rs"]
 mod pty;
+#[path = "../support/seeded/mod.rs"]
+mod seeded;
 #[path = "../support/tui_common/mod.rs"]
 mod tui_common;
 

@@ -12,6 +12,8 @@ mod fit_common;
 mod pty;
 #[path = "../support/save_flow/mod.rs"]
 mod save_flow;
+#[path = "../support/seeded/mod.rs"]
+mod seeded;
 #[path = "../support/tui_common/mod.rs"]
 mod tui_common;
 

@@ -7,8 +7,7 @@ pub mod oblique;
 use bouncelab::measured::{CorPoint, Trace};
 use bouncelab::{ContactLaw, ImpactParams, SolveOptions, simulate};
 
-#[path = "../seeded/mod.rs"]
-mod seeded;
+use crate::seeded;
 
 /// The tests' seeded generator (tests/support/seeded/mod.rs): every test run draws the same noise.
 pub type Rng = seeded::Seeded;

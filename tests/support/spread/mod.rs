@@ -1,8 +1,7 @@
 //! A reproducible spread of balls for the tests that hold a fast path to `run`
 //! (tests/physics/rows.rs, tests/physics/run_summary.rs).
 
-#[path = "../seeded/mod.rs"]
-mod seeded;
+use crate::seeded;
 
 use bouncelab::ImpactParams;
 
