@@ -17,8 +17,9 @@ What it does, in order:
 
 1. Shared helpers (a folder `tests/<x>/mod.rs`: common, tui_common, fit_common, pty, …) move
    to `tests/support/<x>/`, one place; an area's `main.rs` declares the ones its files use
-   (`#[path = "../support/<x>/mod.rs"] mod <x>;`) and a file's `mod <x>;` becomes
-   `use crate::<x>;`.
+   (`#[path = "../support/<x>/mod.rs"] mod <x>;`, with the helpers those use) and a file's
+   `mod <x>;` becomes `use crate::<x>;` (dropped where the file never names it), a helper's
+   too (clippy refuses a file loaded as two modules).
 2. Every top-level `tests/<name>.rs` moves to the area the table below gives it (explicit
    names first, then name prefixes; a name in neither goes to `cli` if it runs the binary,
    else to `physics`, and the script says so: add it to AREA_OF to keep it there on
