@@ -120,10 +120,17 @@ fn peak_memory() -> String {
         .unwrap_or_else(|| "unknown".into())
 }
 
+/// `BENCH_QUICK=1` (`benches/figures.sh --quick`): each part once or twice, to check that it
+/// runs, not to quote.
+fn quick() -> bool {
+    std::env::var_os("BENCH_QUICK").is_some()
+}
+
 fn main() {
-    dense(10_000, 21);
-    dense(100_000, 5);
-    dense(999_999, 5);
+    let runs = |n: usize| if quick() { 1 } else { n };
+    dense(10_000, runs(21));
+    dense(100_000, runs(5));
+    dense(999_999, runs(5));
     let csv = trace_csv();
     let trace = Trace::parse(&csv).unwrap();
     // the fit is given m, v0 and a ball far from the truth
@@ -137,7 +144,7 @@ fn main() {
     let free = [Param::KP, Param::C, Param::KR];
     let mut times = Vec::new();
     let mut last = None;
-    for _ in 0..31 {
+    for _ in 0..runs(31) {
         let t0 = Instant::now();
         let f = fit(&start, ContactLaw::Linear, FitData::Trace(&trace), &free).unwrap();
         times.push(t0.elapsed().as_secs_f64());
@@ -167,7 +174,7 @@ fn main() {
     let out = Command::new("python3")
         .arg(script)
         .arg(&path)
-        .arg("5")
+        .arg(if quick() { "1" } else { "5" })
         .output();
     let _ = std::fs::remove_dir_all(&dir);
     let out = match out {

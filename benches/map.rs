@@ -105,7 +105,7 @@ fn fast_summary_grid_lanes(b: divan::Bencher) {
 /// The lanes' own share of [`fast_summary_grid_lanes`]: the same grid through
 /// `lanes::lanes_only8` (eight cells a call, two AVX registers), without the scalar path that
 /// `summaries` hands the cells the lanes leave (11 of the 24 000: three real roots whose
-/// rounding bound refuses, tests/map_lanes.rs `lanes_hand_back_few_cells_of_the_map`). Per
+/// rounding bound refuses, tests/physics/map_lanes.rs `lanes_hand_back_few_cells_of_the_map`). Per
 /// impact: the median / 24 000.
 #[divan::bench(sample_count = 20)]
 fn fast_summary_grid_lanes_only(b: divan::Bencher) {

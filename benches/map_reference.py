@@ -9,7 +9,7 @@ digits); the coefficients solve the Vandermonde system. τ_m is the first zero o
 z̄(τ_m); τ_f the first zero of z̄ after it; e = -ᾱ'(τ_f), ᾱ' = 1 - ∫ z̄ dτ (ᾱ'' = -F̄).
 
 Run: python3 benches/map_reference.py   (mpmath 1.3); prints the rows of
-tests/map_precision.rs's REFERENCE table: λ, ζ (the doubles' exact values), e, F̄_m, τ_f.
+tests/physics/map_precision.rs's REFERENCE table: λ, ζ (the doubles' exact values), e, F̄_m, τ_f.
 """
 from mpmath import mp, mpf, polyroots, matrix, lu_solve, exp, findroot, re, nstr
 

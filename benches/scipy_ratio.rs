@@ -27,19 +27,22 @@ fn main() {
     let zetas = log_space(0.01, 100.0, 400);
     let mut times = Vec::new();
     let mut ours = Vec::new();
-    for _ in 0..101 {
+    // BENCH_QUICK=1 (`benches/figures.sh --quick`): a few runs each side, to check it runs
+    let quick = std::env::var_os("BENCH_QUICK").is_some();
+    let (runs, scipy_runs) = if quick { (5, "1") } else { (101, "3") };
+    for _ in 0..runs {
         let t0 = Instant::now();
         ours = cor_vs_zeta(&LAMBDAS, &zetas, ContactLaw::Linear).unwrap();
         times.push(t0.elapsed().as_secs_f64());
     }
     let ours_median = median(times);
     println!(
-        "bouncelab sweep 4x400: median {:.3} ms over 101 runs",
+        "bouncelab sweep 4x400: median {:.3} ms over {runs} runs",
         ours_median * 1e3
     );
 
     let script = concat!(env!("CARGO_MANIFEST_DIR"), "/benches/scipy_sweep.py");
-    let out = match Command::new("python3").args([script, "3"]).output() {
+    let out = match Command::new("python3").args([script, scipy_runs]).output() {
         Ok(o) if o.status.success() => o,
         Ok(o) => {
             println!(
@@ -65,7 +68,9 @@ fn main() {
         .split(',')
         .map(|s| s.trim().parse().unwrap())
         .collect();
-    println!("scipy solve_ivp RK45 rtol 1e-10 sweep 4x400: median {median_s:.3} s over 3 runs");
+    println!(
+        "scipy solve_ivp RK45 rtol 1e-10 sweep 4x400: median {median_s:.3} s over {scipy_runs} runs"
+    );
     println!("ratio (scipy / bouncelab): {:.0}x", median_s / ours_median);
 
     let (mut ours_err, mut scipy_err, mut diff) = (0.0f64, 0.0f64, 0.0f64);

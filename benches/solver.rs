@@ -233,7 +233,7 @@ fn elastic_plastic_past_yield_256(b: divan::Bencher, path: &str) {
     });
 }
 
-/// 1 000 tennis balls at 2 … 60 m/s (56 of 59 such speeds flatten: tests/rows.rs), the rows
+/// 1 000 tennis balls at 2 … 60 m/s (56 of 59 such speeds flatten: tests/physics/rows.rs), the rows
 /// `bouncelab.impacts` returns.
 static TENNIS_ROWS: std::sync::LazyLock<Vec<ImpactParams>> = std::sync::LazyLock::new(|| {
     let ball = bouncelab::Ball::from_preset("tennis").unwrap().params;

@@ -153,7 +153,7 @@ fn build(grid: &Grid, c: &Cell) -> Patch {
 /// the stiff corner and the long creeps, the parts would not either), to `MAX_LEVEL`; a
 /// split none of whose parts is kept is not stored. `old` is the same square in an earlier
 /// file (`--reuse`): a square kept there within the tolerance is taken as it is (the same
-/// reference at the same nodes: tests/hertz_table.rs), a split one's error, or a finite one
+/// reference at the same nodes: tests/physics/hertz_table.rs), a split one's error, or a finite one
 /// above the tolerance, is not measured again.
 fn build_tree(grid: &Grid, c: Cell, old: Option<&Patch>) -> Patch {
     let reused =

@@ -7,7 +7,7 @@
 //!
 //! - an existing file is replaced only by a complete new one (rename is atomic on POSIX): a
 //!   full disk or a kill mid-write leaves the old file as it was
-//!   (tests/cli_guarantees.rs, `a_full_disk_leaves_the_old_figure_untouched`);
+//!   (tests/cli/cli_guarantees.rs, `a_full_disk_leaves_the_old_figure_untouched`);
 //! - a command that fails while staging leaves no new file and no temporary one: dropping
 //!   [`Outputs`] removes its temporaries
 //!   (`a_failure_leaves_no_new_file_and_a_rerun_is_not_refused`, and the unit tests in
@@ -246,7 +246,7 @@ static STOP: std::sync::OnceLock<std::sync::Arc<std::sync::atomic::AtomicBool>> 
 
 /// Stop staging once `flag` is set (the command line's SIGINT/SIGTERM flag): the write then
 /// fails with [`io::ErrorKind::Interrupted`] and the temporary file is removed with its
-/// [`Outputs`], so a signal mid-write leaves nothing behind (tests/cli_progress_pty.rs,
+/// [`Outputs`], so a signal mid-write leaves nothing behind (tests/cli/cli_progress_pty.rs,
 /// `a_signal_mid_write_leaves_no_temporary_file`).
 pub fn stop_on(flag: std::sync::Arc<std::sync::atomic::AtomicBool>) {
     let _ = STOP.set(flag);

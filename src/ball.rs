@@ -27,7 +27,7 @@ impl Ball {
     /// its standard's window for the drop-test balls (their preset files say "Not measured"),
     /// plain "measured" for a user's preset. Known by content, not by name alone: a preset
     /// carries the embedded data only if its name and `[measured]` table are an embedded
-    /// preset's (tests/figure_numbers.rs).
+    /// preset's (tests/figures/figure_numbers.rs).
     pub fn measured_label(&self) -> &'static str {
         // parsed once: the explorer draws Fig. 4 (and asks this) at every frame
         static EMBEDDED: std::sync::OnceLock<Vec<Preset>> = std::sync::OnceLock::new();

@@ -241,7 +241,7 @@ impl Catalog {
     }
 
     /// The presets folder's `*.toml` links that lead to no file, skipped by [`Catalog::load`]
-    /// (the command line warns once: tests/cli_small.rs, `dangling_links_are_named_once`).
+    /// (the command line warns once: tests/cli/cli_small.rs, `dangling_links_are_named_once`).
     pub fn skipped(&self) -> &[Skipped] {
         &self.skipped
     }

@@ -2,8 +2,8 @@
 //! `test-faults` feature (the tests' build: see Cargo.toml). Without it no fault is ever active
 //! and neither the variable's name nor the faults' code is compiled into the product.
 //!
-//! These switches exist so that the tests under a pseudo-terminal (`tests/tui_pty.rs`,
-//! `tests/tui_save_pty.rs`) can make the real binary fail at a chosen point: a panic inside
+//! These switches exist so that the tests under a pseudo-terminal (`tests/tui/tui_pty.rs`,
+//! `tests/tui/tui_save_pty.rs`) can make the real binary fail at a chosen point: a panic inside
 //! the explorer's event loop (is the terminal restored?), a panic in one of its worker threads
 //! (does the view say so, and does the explorer go on?) and a pause in the middle of writing
 //! a preset file (does a SIGKILL there leave a truncated preset?).
@@ -21,15 +21,15 @@ pub enum Fault {
     /// temporary file, long enough for a test to kill the process there.
     PauseMidSave,
     /// `slow-work`: each step of watched long work (a fit's model run) takes 20 ms more, so
-    /// that a test can signal the command mid-work (tests/cli_progress_pty.rs).
+    /// that a test can signal the command mid-work (tests/cli/cli_progress_pty.rs).
     SlowWork,
     /// `panic-in-worker`: the explorer's first worker thread panics at its first job (the
     /// sweeps' thread: `Tab` to the sweeps view), once a process, so that a test can see the
-    /// view say its computation stopped and `R` retry it (tests/tui_worker_pty.rs).
+    /// view say its computation stopped and `R` retry it (tests/tui/tui_worker_pty.rs).
     PanicInWorker,
     /// `slow-start`: a command pauses [`START_PAUSE`] just after its signals are watched and
     /// before its work, so that a test can signal it in its first moments
-    /// (tests/signals_early.rs).
+    /// (tests/cli/signals_early.rs).
     SlowStart,
 }
 

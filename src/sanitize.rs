@@ -8,13 +8,13 @@
 //!
 //! - the command line's stdout goes through [`Writer`] and its error lines through [`line`]:
 //!   no byte of C0 (except the line feed), DEL or C1 reaches the terminal
-//!   (tests/cli_guarantees.rs, `control_characters_never_reach_the_terminal`);
+//!   (tests/cli/cli_guarantees.rs, `control_characters_never_reach_the_terminal`);
 //! - every file written through `crate::atomic` is passed through [`text`], and
 //!   `figure::svg::render` too: an SVG stays well-formed XML (`a_figure_with_control_characters_is_valid_xml`).
 //!
 //! JSON escapes them itself: `cli::output::json` writes every such character as `\uXXXX`, so
 //! the sanitizer finds nothing to rewrite and the document stays valid JSON
-//! (tests/escaping.rs, `json_stays_json_whatever_a_name_holds`).
+//! (tests/cli/escaping.rs, `json_stays_json_whatever_a_name_holds`).
 
 use std::borrow::Cow;
 use std::io::{self, Write};
@@ -39,7 +39,7 @@ pub fn control(c: char) -> bool {
 /// (U+200B zero-width space, U+FEFF, the marks U+200E/F and U+061C, U+00AD soft hyphen, …),
 /// Zl (U+2028) and Zp (U+2029). `golf\u{200B}` lists as `golf`: refused in preset names at
 /// load (`preset::check`), shown as `\u{200b}` in every output
-/// (tests/escaping.rs, `invisible_characters_cannot_hide`).
+/// (tests/cli/escaping.rs, `invisible_characters_cannot_hide`).
 pub fn invisible(c: char) -> bool {
     use unicode_properties::{GeneralCategory as G, UnicodeGeneralCategory};
     !c.is_ascii()
@@ -96,7 +96,7 @@ pub fn first_invisible(s: &str) -> Option<(usize, char)> {
 /// Default_Ignorable_Code_Point (DerivedCoreProperties.txt, Unicode 15.1: the Hangul fillers
 /// U+115F, U+1160, U+3164, U+FFA0, the variation selectors, U+034F, the tags, …) and the blank
 /// Braille pattern U+2800, which fonts draw empty. `golf` + U+115F listed as a second `golf`
-/// (issue 54 item 9; tests/field_names.rs). Written out by hand: `unicode-properties`, the crate
+/// (issue 54 item 9; tests/cli/field_names.rs). Written out by hand: `unicode-properties`, the crate
 /// the general category comes from, has no Default_Ignorable property.
 fn ignorable(c: char) -> bool {
     matches!(

@@ -7,7 +7,7 @@
 //!   SIGINT, SIGQUIT, SIGUSR1, SIGUSR2, SIGALRM, SIGVTALRM, SIGXCPU, SIGABRT) would end it
 //!   without undoing that (the shell after it then echoes nothing): the thread takes the stdout lock (so no frame
 //!   is drawn after it), restores the terminal, and exits with the conventional 128 + the
-//!   signal's number (tests/tui_exit_pty.rs, `each_signal_restores_the_terminal_and_exits_128_plus_n`,
+//!   signal's number (tests/tui/tui_exit_pty.rs, `each_signal_restores_the_terminal_and_exits_128_plus_n`,
 //!   `other_terminating_signals_restore_the_terminal_too`). SIGPIPE is ignored by Rust's
 //!   runtime (a write to a closed terminal fails instead);
 //! - SIGTSTP (and Ctrl-Z, which raw mode delivers as a key: the event loop calls [`suspend`])

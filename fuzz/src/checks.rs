@@ -1,4 +1,4 @@
-//! What the fuzz targets check, shared with the main crate's `tests/fuzz_regressions.rs`, which
+//! What the fuzz targets check, shared with the main crate's `tests/physics/fuzz_regressions.rs`, which
 //! includes this file with `#[path]`: a regression input is replayed through exactly the
 //! checks that found it, on the stable toolchain, by `cargo test`.
 //!

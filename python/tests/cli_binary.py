@@ -53,5 +53,5 @@ def without_conditions(value):
 
 def reach(warnings):
     """An answer's warnings but the calibration's (`outside calibration: …`, which every speed
-    but the preset's own adds; tests/calibration.rs checks them)."""
+    but the preset's own adds; tests/cli/calibration.rs checks them)."""
     return [w for w in warnings if not w.startswith("outside calibration:")]

@@ -1,6 +1,6 @@
 """The Python bindings against the command line.
 
-Two references: the transcripts stored by the Rust test tests/cli_golden.rs (tests/golden/*.txt,
+Two references: the transcripts stored by the Rust test tests/cli/cli_golden.rs (tests/golden/*.txt,
 what `bouncelab ARGS` printed, byte for byte), and the `bouncelab` binary itself, run on the
 same arguments (cli_binary.py: BOUNCELAB_BIN, default $CARGO_TARGET_DIR/debug/bouncelab). Values
 must agree to 1e-12, messages word for word.

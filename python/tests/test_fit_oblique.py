@@ -73,7 +73,7 @@ def test_recovers_mu_k_t_and_kappa_with_spins():
 
 
 def test_noisy_bounces_are_recovered_to_a_percent():
-    # 0.03 m/s of noise on v_x,out (the interval's coverage is tests/fit_oblique.rs's)
+    # 0.03 m/s of noise on v_x,out (the interval's coverage is tests/analysis/fit_oblique.rs's)
     f = bouncelab.fit_oblique(preset="tennis", **bounces(sd=0.03, seed=7))
     assert f["identified"], f
     for name, truth in [("friction", MU), ("tangential_stiffness", KT)]:
@@ -94,7 +94,7 @@ def test_the_same_document_as_the_command_line(tmp_path):
 
 def test_an_unfittable_set_is_refused():
     # low angles with backspin slide throughout: K_t leaves no trace in the outgoing motion
-    # (as bounces_that_only_slide_cannot_pin_k_t, tests/fit_oblique.rs)
+    # (as bounces_that_only_slide_cannot_pin_k_t, tests/analysis/fit_oblique.rs)
     sliding = bounces([(25.0, a, -300.0) for a in [5.0, 7.0, 9.0, 11.0, 13.0, 15.0]], mu=0.2,
                       kt=16475.0, sd=0.02, seed=5)
     f = bouncelab.fit_oblique(preset="tennis", **sliding)

@@ -63,7 +63,7 @@ struct Group {
 /// are handed to [`measured::read_any`] as rows, so a ball's data are read as `bouncelab fit`
 /// reads a file of one ball and every error names the batch's own line and column (a batch
 /// once split its lines by hand: a BOM made its header `\u{feff}id` and a quoted header
-/// `"id"`, neither an id column; tests/cli_batch_csv.rs).
+/// `"id"`, neither an id column; tests/cli/cli_batch_csv.rs).
 pub fn split(text: &str) -> Result<Vec<BallRows>, MeasuredError> {
     let text = rows::normalized(text);
     let sep = rows::separator(&text);

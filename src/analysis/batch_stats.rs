@@ -11,7 +11,7 @@
 //!
 //!   Ĉ ± z₀.₉₇₅ √(1/(9n) + Ĉ²/(2(n − 1)))
 //!
-//! (the lot's values normal; tests/batch_cpk_interval.rs measures its coverage).
+//! (the lot's values normal; tests/analysis/batch_cpk_interval.rs measures its coverage).
 
 use super::mc_interval::mean_interval;
 use serde::Serialize;

@@ -151,20 +151,20 @@ fn solver_outcome(p: &ImpactParams, law: ContactLaw) -> Result<Outcome, SolveErr
 
 /// The normalized summary of an impact the lanes do not answer, `None` where `run`'s solver
 /// must: on the linear law (a flattening ball) the flattening closed form where it answers
-/// (`map::fast::flattening`, tests/map_flatten.rs), else the Taylor steps within their
-/// domain (both to 1e-12 of the exact solver, tests/taylor.rs); under the Hertz law the Hertz
+/// (`map::fast::flattening`, tests/physics/map_flatten.rs), else the Taylor steps within their
+/// domain (both to 1e-12 of the exact solver, tests/physics/taylor.rs); under the Hertz law the Hertz
 /// table, else the Taylor steps (`solver::table::summary`: within 1e-9 of their reference,
 /// the Taylor steps without step limit, and of the adaptive solver at its stated precision,
 /// docs/numerics.md; `hertz_samples_take_the_table`); under the elastic–plastic law the same
 /// dispatch (the Hertz table below yield, the Taylor steps past it, to 1e-9 of the adaptive
-/// solver: tests/taylor.rs; tests/cli_mc.rs `elastic_plastic_samples_take_the_fast_path`).
+/// solver: tests/physics/taylor.rs; tests/cli/cli_mc.rs `elastic_plastic_samples_take_the_fast_path`).
 fn fast_one(p: &ImpactParams, law: ContactLaw) -> Option<Summary> {
     let n = p.normalized();
     match law {
         // the scalar closed form, not `lanes::flattening_one`: a flattening ball comes here
         // only where the four lanes handed it back, and a lane of width one hands it back too
-        // (the same bits, `None` included: tests/map_flatten_lanes.rs), then asks this very
-        // call — the same answer for a kernel's run more (tests/mc_flattening.rs; 3 797 against
+        // (the same bits, `None` included: tests/physics/map_flatten_lanes.rs), then asks this very
+        // call — the same answer for a kernel's run more (tests/analysis/mc_flattening.rs; 3 797 against
         // 5 581 instructions on such a cell, BENCHMARKS.md "Ninth session")
         ContactLaw::Linear => crate::map::fast::flattening(n.lambda, n.zeta, n.zp_bar)
             .or_else(|| crate::solver::taylor::summary(&n, law).map(short)),

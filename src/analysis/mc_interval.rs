@@ -12,7 +12,7 @@
 //! or u exists — too few samples for the tail, fewer than 368 for the 1 % quantile — the interval is
 //! absent (NaN; `null` in JSON), and the report says so.
 //!
-//! Held by `mc_interval_tests` (tests/mc_intervals.rs): over 2 000 seeded runs of known
+//! Held by `mc_interval_tests` (tests/analysis/mc_intervals.rs): over 2 000 seeded runs of known
 //! distributions each interval covers its true value 95 % of the time, within the binomial
 //! scatter.
 

@@ -208,7 +208,7 @@ fn a_normal_draw_out_of_the_domain_is_named() {
 
 /// An elastic–plastic sample takes `solver::table::summary` (the Hertz table below yield, the
 /// Taylor steps past it): its zero-spread answer is that summary's, bit for bit, and within
-/// 1e-9 of `run`'s adaptive solver (tests/taylor.rs holds both paths to it over the property
+/// 1e-9 of `run`'s adaptive solver (tests/physics/taylor.rs holds both paths to it over the property
 /// domain). The golf ball at its own speed stays below yield, at 10 v0 it yields.
 #[test]
 fn elastic_plastic_samples_take_the_fast_path() {

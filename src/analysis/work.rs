@@ -8,7 +8,7 @@
 //! ball of the ζ sweeps (`--law hertz --points 20000` took 17.5 s for 60 000 impacts). A
 //! request whose work exceeds [`LIMIT`] (about 7 s on one core) is refused before it starts:
 //! `figure cor-zeta --points 20000 --lambda <500 values>` had run 67 s and written 628 MB.
-//! (tests/cli_guarantees.rs, `work_beyond_the_limit_is_refused_before_it_starts`.) The lower
+//! (tests/cli/cli_guarantees.rs, `work_beyond_the_limit_is_refused_before_it_starts`.) The lower
 //! layer, [`super::sweep::cor_vs_zeta`] and [`super::sweep::cor_vs_velocity`], applies no
 //! limit: code that means to run more calls it.
 

@@ -4,7 +4,7 @@
 //! off the ball itself, and the verdict is on that reading, whether or not the model can be
 //! fitted to the ball. Six balls of a 40-ball lot that rebound to 1.20–1.30 m from 2.54 m
 //! (out of the tennis preset's reach with K_r free) once had no verdict and fell out of the
-//! lot's Cpk (issue 52 item 9; tests/cli_batch_readings.rs).
+//! lot's Cpk (issue 52 item 9; tests/cli/cli_batch_readings.rs).
 //!
 //! The value is the mean of the readings at the standard's condition, its 95 % interval
 //! from their uncertainty: a stated one (`--rebound-height-sd` σ_R for drops, a COR table's

@@ -4,7 +4,7 @@
 //! Hertz and the elastic–plastic law the Hertz table (below yield) — and says which elements
 //! are left and by which path ([`Unanswered::elements`], for `work::check_elements`); the
 //! second ([`Unanswered::answer`]) runs those, once the work limit allows them. Each row is the
-//! one [`super::impact_rows`] gives, bit for bit (tests/rows_columns.rs).
+//! one [`super::impact_rows`] gives, bit for bit (tests/physics/rows_columns.rs).
 
 use super::BallError;
 use super::rows::{ImpactRow, Rest, flattening_si_row, row_from, si_row, solver_row, table_row};
@@ -297,7 +297,7 @@ where
 /// The flattening closed form's answers for the balls that flatten (as `row_from` decides:
 /// no summary without flattening, or its peak past z̄_p), eight at a time in lanes
 /// ([`lanes::flattenings`], issue 30 item 2: each lane bit for bit the lone cell's
-/// [`lanes::flattening_one`] that `row_from` takes, tests/rows_columns.rs); `None` for the
+/// [`lanes::flattening_one`] that `row_from` takes, tests/physics/rows_columns.rs); `None` for the
 /// others and where the closed form does not answer.
 fn flattening_lanes(
     balls: &[Result<Ball, ParamError>],
@@ -369,7 +369,7 @@ impl<'a> Columns<'a> {
 
     /// The columns over the five number slices in the order of [`Columns::NUMBERS`] and the
     /// rebound slice: the one place the six are put together (Python's `impacts` and
-    /// tests/rows_columns.rs each built them by hand).
+    /// tests/physics/rows_columns.rs each built them by hand).
     pub fn from_slices(numbers: [&'a mut [f64]; 5], rebound: &'a mut [bool]) -> Columns<'a> {
         let [
             cor,

@@ -11,7 +11,7 @@
 //! inflation pressure, decayed by the leak over `after` at the inflation temperature
 //! (`conditions::leak`), carried to the run's temperature by the gas law at fixed volume
 //! (`conditions::gas`). At the record's pressure and temperature the ball's parameters are
-//! not touched, so its answers there do not move (tests/conditions.rs).
+//! not touched, so its answers there do not move (tests/physics/conditions.rs).
 
 use super::{Ball, BallError};
 use crate::analysis::fit::{Param, apply};

@@ -38,7 +38,7 @@ pub struct Overrides {
 
 impl Overrides {
     /// A derived group out of range (ζ, λ, z̄_p) named by the override the user gave for it:
-    /// `--damping 1e-5` said "invalid zeta" (issue 54 item 9; tests/field_names.rs). `None`
+    /// `--damping 1e-5` said "invalid zeta" (issue 54 item 9; tests/cli/field_names.rs). `None`
     /// when no override sets the group's own parameter.
     fn blamed(&self, e: &crate::model::params::ParamError) -> Option<BallError> {
         let (field, value) = match e.field {

@@ -132,7 +132,7 @@ impl Ball {
     /// height read to ±σ_R gives e = u(R)/v0 an error σ_e = σ_R ∂e/∂R
     /// (`measured::cor_per_rebound_height`; in vacuum 1/(2√(RH)), nine times larger from
     /// 0.2 m than from 1.8 m): fitted with equal weights, such drops gave 95 % intervals that
-    /// covered K_r and z_p about two times in three (tests/fit_drop_coverage.rs,
+    /// covered K_r and z_p about two times in three (tests/analysis/fit_drop_coverage.rs,
     /// docs/fitting.md). With `rebound_sd` = σ_R (m)
     /// each row's `cor_sd` is σ_e, and the fit judges the scatter by χ²; without it each row's
     /// `cor_sd_relative` is ∂e/∂R and the scale comes from the misses

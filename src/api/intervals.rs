@@ -62,7 +62,7 @@ pub fn intervals(
 /// A band held to what physics allows, [lo, hi]: the delta method's y ± t√Var is symmetric
 /// and knows no bounds, so three drops of a table-tennis ball gave a COR up to 1.0018 and a
 /// rebound above the drop, a huge `[fit]` covariance a COR of ±7e144 and negative contact
-/// times (issue 54 item 8; tests/intervals_physical.rs). A COR lies in [0, 1] (the ball
+/// times (issue 54 item 8; tests/analysis/intervals_physical.rs). A COR lies in [0, 1] (the ball
 /// gives back no more than it got: docs/model.md), forces and times are not negative, a
 /// rebound rises no higher than the drop. The nominal value itself is always inside.
 fn clip(band: [f64; 2], lo: f64, hi: f64) -> [f64; 2] {

@@ -49,7 +49,7 @@ impl Ball {
     /// [`Ball::monte_carlo`] in chunks, the samples done reported to `watch` before each,
     /// which may stop the run ([`BallError::Interrupted`]): Python's Ctrl-C. The same samples
     /// as one call: each is made from its index alone (analysis::mc_tests,
-    /// `same_answer_on_one_thread_and_many_and_in_any_chunks`; tests/mc_watched.rs).
+    /// `same_answer_on_one_thread_and_many_and_in_any_chunks`; tests/analysis/mc_watched.rs).
     pub fn monte_carlo_watched(
         &self,
         spec: &McSpec,
@@ -148,7 +148,7 @@ impl Ball {
         }
         let spec = McSpec::new(vary, Dist::Normal, samples, seed)?;
         // the user gave no --correlate: a matrix that cannot be sampled is the fit's, named
-        // so (issue 54 item 9; tests/field_names.rs)
+        // so (issue 54 item 9; tests/cli/field_names.rs)
         Ok(if pairs.is_empty() {
             spec
         } else {

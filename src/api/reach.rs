@@ -1,6 +1,6 @@
 //! The ball past its radius: its peak indentation z_m, or its centre's peak displacement
 //! α_max = max (z + y) toward the wall, read exactly where α' = 0 (the explorer's validity
-//! note, `tui::physical::validity`, checks the same two). tests/answer_reach.rs.
+//! note, `tui::physical::validity`, checks the same two). tests/cli/answer_reach.rs.
 
 use super::BallError;
 use crate::map::{Cell, Map};
@@ -64,7 +64,7 @@ pub fn peak_displacement(
 /// recoil element only compresses: c y' + K_r y = F ≥ 0 from y = 0), so a z_m past R is
 /// an α_max past R too, and one warning says it; and α_max ≤ min(v0 · duration, z_m + m v0/c)
 /// (`centre_bounds`), which spares the second run whenever that is within R.
-/// tests/answer_warnings.rs.
+/// tests/cli/answer_warnings.rs.
 pub fn reach_warning(
     params: &ImpactParams,
     law: ContactLaw,
@@ -123,7 +123,7 @@ pub fn reach(
 
 /// Bounds on α_max (m) of an impact of `p` that peaked at `z_m` with peak force `f_m` (N),
 /// lasted `t_f` (s; ∞ without rebound) and left at `cor`, every one exact for any law
-/// (tests/answer_reach.rs: `the_centre_bounds_hold_the_solver_s_peak_on_a_grid`).
+/// (tests/cli/answer_reach.rs: `the_centre_bounds_hold_the_solver_s_peak_on_a_grid`).
 ///
 /// The recoil element (c y' + K_r y = F, y(0) = 0, docs/model.md §2) gives, with τ = c/K_r,
 /// y(t) = ∫₀ᵗ e^{−(t − s)/τ} F(s) ds / c. With 0 ≤ F ≤ F_m and a given impulse Q = ∫₀ᵗ F,
@@ -214,7 +214,7 @@ impl Tally {
 /// passes in (those whose indentation passes too: α ≥ z) and how many of them by it alone;
 /// a cell whose run again fails is neither: the warning counts it as not checked (and is
 /// given for it alone), so no cell passes silently. `None` otherwise, for a normalized map,
-/// or with no radius known (NaN). tests/answer_reach.rs.
+/// or with no radius known (NaN). tests/cli/answer_reach.rs.
 pub fn map_displacement_warning(map: &Map, radius: f64) -> Option<String> {
     map_reach(map, radius)?.warning()
 }
@@ -240,7 +240,7 @@ impl MapReach {
     }
 
     /// How many cells the bounds left open and were run again (each some 0.35 ms by the
-    /// adaptive solver: issue 54 item 10; tests/answer_reach.rs).
+    /// adaptive solver: issue 54 item 10; tests/cli/answer_reach.rs).
     pub fn solved(&self) -> usize {
         self.tally.solved
     }
@@ -260,7 +260,7 @@ pub fn map_reach(map: &Map, radius: f64) -> Option<MapReach> {
 /// of [`super::map_indentation_warning`] and [`map_displacement_warning`] together (one
 /// tally, the same cells): `z_m > radius 21.55 mm in 8 of 9 cells` (or `centre's α_max`, or
 /// both, by which passes), and the cells not checked. `None` when every cell is within, for
-/// a normalized map, or with no radius known. tests/figure_map_radius.rs.
+/// a normalized map, or with no radius known. tests/figures/figure_map_radius.rs.
 pub fn map_radius_note(map: &Map, radius: f64) -> Option<String> {
     map_reach(map, radius)?.note()
 }

@@ -34,7 +34,7 @@ pub struct ImpactRow {
 /// (within 1e-9 of their reference and of `run` at its solver's stated precision,
 /// docs/numerics.md); under the elastic–plastic law the same (`solver::table::summary`: the
 /// Hertz table below yield, the Taylor steps past it); else the solver with its default
-/// options. tests/rows.rs holds each path to `run`.
+/// options. tests/physics/rows.rs holds each path to `run`.
 pub fn impact_row(p: &ImpactParams, law: ContactLaw) -> Result<ImpactRow, SolveError> {
     let n = p.normalized();
     let fast = if law == ContactLaw::Linear {
@@ -101,7 +101,7 @@ pub(super) fn solver_row(p: &ImpactParams, law: ContactLaw) -> Result<ImpactRow,
 /// answers or the ball does not leave (then `simulate`). Not `run`'s bits: the table is
 /// within 1e-9 of its reference, the Taylor steps without step limit, and both of the
 /// adaptive solver `run` takes at that solver's stated precision (docs/numerics.md;
-/// tests/rows.rs `a_hertz_row_is_the_tables_answer`,
+/// tests/physics/rows.rs `a_hertz_row_is_the_tables_answer`,
 /// `an_elastic_plastic_row_is_the_fast_paths_answer`).
 fn power_law_row(p: &ImpactParams, n: &Normalized, law: ContactLaw) -> Option<ImpactRow> {
     si_row(p, crate::solver::table::summary(n, law)?)
@@ -162,7 +162,7 @@ pub(super) fn table_row(
 /// The row of a linear-law ball that flattens (F̄_m > z̄_p), from the closed form on one lane
 /// ([`crate::map::fast::lanes::flattening_one`]: the lanes' answer, as `first_pass` takes it
 /// eight at a time, else the scalar closed form's; to 1e-12 of the exact solver,
-/// tests/map_flatten.rs, tests/map_flatten_lanes.rs) by [`flattening_si_row`]. `None` where
+/// tests/physics/map_flatten.rs, tests/physics/map_flatten_lanes.rs) by [`flattening_si_row`]. `None` where
 /// the closed form does not answer or the ball does not leave: the solver answers.
 fn flattening_row(p: &ImpactParams, n: &Normalized) -> Option<ImpactRow> {
     let s = crate::map::fast::lanes::flattening_one(n.lambda, n.zeta, n.zp_bar)?;
@@ -197,7 +197,7 @@ pub(super) fn flattening_si_row(p: &ImpactParams, n: &Normalized, s: Summary) ->
 /// The rows of balls `first … first + 3` (past `last`: `last` again, a copy the caller
 /// drops), each checked, the linear law's closed forms four at once
 /// ([`lanes::summary4`], to 1e-12 of [`crate::map::fast::summary`], or of the exact solver
-/// where the scalar path's rounding bound refuses: tests/map_lanes.rs).
+/// where the scalar path's rounding bound refuses: tests/physics/map_lanes.rs).
 fn four_rows<F>(
     first: usize,
     last: usize,

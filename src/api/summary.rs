@@ -2,7 +2,7 @@
 //! time (Python's `run`, issue 30 item 5): on the linear law the closed forms of
 //! [`crate::map::fast`] where they answer — [`crate::map::fast::summary`] while the ball does
 //! not flatten (F̄_m ≤ z̄_p), [`crate::map::fast::flattening`] where it does — each held to the
-//! exact solver at 1e-12 (tests/map_precision.rs, tests/map_flatten.rs, tests/run_summary.rs),
+//! exact solver at 1e-12 (tests/physics/map_precision.rs, tests/physics/map_flatten.rs, tests/physics/run_summary.rs),
 //! in about a fifth of the exact solver's time with its energy audit (BENCHMARKS.md).
 //!
 //! The audit (the dashpot's dissipation by quadrature on the exact flow, docs/model.md §8)
@@ -82,7 +82,7 @@ impl Ball {
             // it flattens (or the closed form without flattening did not answer, when the
             // flattening one does not either): the lanes' code on one lane, else the scalar
             // closed form — a map's cell and a row of `impacts` bit for bit
-            // (tests/map_flatten_lanes.rs `one_lane_is_the_maps_lane_bit_for_bit`)
+            // (tests/physics/map_flatten_lanes.rs `one_lane_is_the_maps_lane_bit_for_bit`)
             _ => crate::map::fast::lanes::flattening_one(n.lambda, n.zeta, n.zp_bar)?,
         };
         if !(s.cor > 0.0 && s.cor <= 1.0) {

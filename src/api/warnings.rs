@@ -15,7 +15,7 @@ pub const ENERGY_RESIDUAL_MAX: f64 = 1e-6;
 /// z_m from its peak force through the loading branch, which the map's cells share (λ and ζ
 /// move K_r and c, never m, K_p, K_h, z_p or v0; `Contact::loading_indentation`). One
 /// warning naming how many cells and the largest z_m; `None` when none passes, for a
-/// normalized map, or with no radius known (NaN). tests/answer_warnings.rs.
+/// normalized map, or with no radius known (NaN). tests/cli/answer_warnings.rs.
 pub fn map_indentation_warning(map: &crate::map::Map, radius: f64) -> Option<String> {
     let spec = &map.spec;
     if spec.normalized || !radius.is_finite() {
@@ -80,7 +80,7 @@ impl Ball {
                 ));
             }
         }
-        // last: the warnings before it are read by position (tests/answer_warnings.rs)
+        // last: the warnings before it are read by position (tests/cli/answer_warnings.rs)
         w.extend(self.calibration_warning(self.params.v0));
         w
     }
@@ -100,7 +100,7 @@ impl Ball {
     /// moved a fitted parameter):
     /// its rebounds are not those the fit matched — a tennis ball fitted in vacuum to readings
     /// of 1.4625 m from 2.54 m rebounds 1.376 m through air (docs/fitting.md, "The air is
-    /// stated"; tests/cli_fit_air.rs). `None` when the airs agree or the ball has no drop fit.
+    /// stated"; tests/cli/cli_fit_air.rs). `None` when the airs agree or the ball has no drop fit.
     pub fn drop_air_warning(&self, air: Option<crate::measured::Air>) -> Option<String> {
         let fitted = self.measured.as_ref()?.drops?;
         if self

@@ -6,7 +6,7 @@ use std::path::Path;
 /// What an existing `path` is when it is no regular file, no link and no directory — "a
 /// character device", "a block device", "a FIFO", "a socket" — which no output replaces: a
 /// rename over a device puts a regular file in its place, so `/dev/null` itself would go
-/// (tests/outputs_regular_only.rs). A symbolic link is replaced itself, never
+/// (tests/cli/outputs_regular_only.rs). A symbolic link is replaced itself, never
 /// what it leads to; a directory is refused by the callers' own check.
 pub fn refused_kind(path: &Path) -> Option<&'static str> {
     let t = fs::symlink_metadata(path).ok()?.file_type();

@@ -112,7 +112,7 @@ pub fn run(a: &BatArgs, out: &mut dyn Write) -> anyhow::Result<()> {
 
 /// The bat's values checked as `Target::validate` and `collide` check them, the error naming
 /// the flag the user gave (`bat_mass`, not the library's `target_mass`): the library's bat is
-/// a target, the command line's is a bat (tests/cli_targets.rs, `bat_errors_name_its_flags`).
+/// a target, the command line's is a bat (tests/cli/cli_targets.rs, `bat_errors_name_its_flags`).
 fn check(a: &BatArgs) -> anyhow::Result<()> {
     let bat = Target {
         mass: a.bat_mass,

@@ -6,7 +6,7 @@
 //! progress bar on stderr moves (only when stderr is a terminal, and only for work worth
 //! watching) and a SIGINT or SIGTERM is noticed: the command then ends with [`Interrupted`]
 //! (exit 130) before any file is written, so nothing partial is left; a second signal ends the
-//! process at once. (tests/cli_progress_pty.rs.)
+//! process at once. (tests/cli/cli_progress_pty.rs.)
 
 use crate::analysis::sweep::{VelocityPoint, ZetaPoint, cor_vs_velocity, cor_vs_zeta};
 use crate::model::contact::ContactLaw;

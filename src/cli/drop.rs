@@ -265,7 +265,7 @@ struct StandardJson {
     margin: f64,
     /// The release height (m, bottom of the ball) the verdict was judged at: the standard's
     /// own drop, whatever `--height` gave the bounces above (`height`); `null` for a COR
-    /// test. tests/cli_drop.rs.
+    /// test. tests/cli/cli_drop.rs.
     judged_at_height_m: Option<f64>,
     /// A static standard's test (src/drop/deformation.rs): only for one.
     #[serde(rename = "static", skip_serializing_if = "Option::is_none")]

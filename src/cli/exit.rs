@@ -79,7 +79,7 @@ fn exit_code(e: &anyhow::Error) -> Option<u8> {
 
 /// One line on stderr, its control characters shown as text (crate::sanitize). A stderr that
 /// cannot take it (full, closed) changes nothing: the exit code still tells
-/// (tests/cli_guarantees.rs, `a_full_stderr_still_exits_2_and_help_to_a_full_stdout_fails`).
+/// (tests/cli/cli_guarantees.rs, `a_full_stderr_still_exits_2_and_help_to_a_full_stdout_fails`).
 fn say(line: &str) {
     let _ = writeln!(io::stderr(), "{}", crate::sanitize::line(line));
 }

@@ -103,7 +103,7 @@ impl ExplorerArgs {
         let text = read_session(path)?;
         let session = Session::parse(path, &text).map_err(|e| anyhow::anyhow!(e))?;
         // the session's ball by name: a preset this bouncelab lacks is the file's fault, named
-        // (issue 51 item 8; tests/tui_session.rs)
+        // (issue 51 item 8; tests/tui/tui_session.rs)
         let entry = ball::select(Some(&session.ball.preset), None)
             .map_err(|e| anyhow::anyhow!("{}: {e}", path.display()))?;
         let app = App::new(entry.preset, color)
@@ -142,7 +142,7 @@ impl ExplorerArgs {
         if oblique.iter().all(Option::is_none) {
             return Ok(app);
         }
-        // `oblique`'s own checks and messages (tests/cli_explorer_oblique.rs)
+        // `oblique`'s own checks and messages (tests/cli/cli_explorer_oblique.rs)
         app.with_oblique(oblique).map_err(|e| anyhow::anyhow!(e))
     }
 }
@@ -154,7 +154,7 @@ pub const MAX_SESSION_BYTES: u64 = 1 << 20;
 /// end),
 /// at most [`MAX_SESSION_BYTES`], UTF-8, read as the data readers read
 /// (`measured::file::read_text`); missing, unreadable or not UTF-8 is bad input, exit 2,
-/// naming the file (tests/session_file.rs).
+/// naming the file (tests/cli/session_file.rs).
 fn read_session(path: &std::path::Path) -> anyhow::Result<String> {
     let say = |msg: String| anyhow::anyhow!("--session {}: {msg}", path.display());
     if let Ok(meta) = std::fs::metadata(path) {

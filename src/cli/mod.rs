@@ -151,7 +151,7 @@ pub fn main() -> ExitCode {
     }
     // every command watches SIGINT, SIGTERM, SIGHUP and SIGQUIT from its start, so that a
     // signal in its first moments, before any long work asked, still stops it with 130 and
-    // nothing written (tests/signals_early.rs)
+    // nothing written (tests/cli/signals_early.rs)
     budget::interrupt_flag();
     if crate::fault::Fault::SlowStart.active() {
         std::thread::sleep(crate::fault::START_PAUSE);

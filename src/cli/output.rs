@@ -53,7 +53,7 @@ pub fn json_stated<T: Serialize>(
 /// (DEL, C1 controls, the bidirectional overrides, the invisible format characters:
 /// `crate::sanitize`) is a JSON escape
 /// `\u007f` — serde_json escapes only C0 itself, and the sanitizer's visible `\u{7f}` is no
-/// JSON (tests/escaping.rs, `json_stays_json_whatever_a_name_holds`).
+/// JSON (tests/cli/escaping.rs, `json_stays_json_whatever_a_name_holds`).
 pub fn json_string<T: Serialize>(value: &T) -> io::Result<String> {
     let mut buf = Vec::new();
     let mut ser = serde_json::Serializer::with_formatter(&mut buf, Escaping);
@@ -124,7 +124,7 @@ fn signed(x: f64) -> String {
 /// A speed along the line of centres as its size and the way it goes: `positive` names the
 /// way of a positive value (the JSON's sign, docs/targets.md §3), `negative` the other, so
 /// that no signed speed sits beside words that say the opposite
-/// (tests/cli_targets.rs, `collide_text_says_the_way_each_speed_goes`).
+/// (tests/cli/cli_targets.rs, `collide_text_says_the_way_each_speed_goes`).
 pub fn directed(v: f64, positive: &str, negative: &str) -> String {
     let way = if v < 0.0 { negative } else { positive };
     format!("{} m/s {way}", human(v.abs(), 4))
@@ -133,7 +133,7 @@ pub fn directed(v: f64, positive: &str, negative: &str) -> String {
 /// An answer's warnings after its text, a `warning:` line each (docs/guarantees.md,
 /// "Warnings travel with the answer").
 /// A residual (a fraction of an energy) to two digits, `1.5e-16`; an exact zero as `0`, not
-/// Rust's `0.0e0` (`run --lambda 0 --zeta 1`, tests/cli_odd_inputs.rs).
+/// Rust's `0.0e0` (`run --lambda 0 --zeta 1`, tests/cli/cli_odd_inputs.rs).
 pub fn residual(x: f64) -> String {
     if x == 0.0 {
         "0".into()

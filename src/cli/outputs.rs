@@ -3,7 +3,7 @@
 //! published together by [`commit`] only once the report on stdout has gone out
 //! ([`report_then_commit`]); a failure anywhere leaves none of them behind. One check, one
 //! set of messages and exit codes for `figure`, `fit`, `map`, `mc` and `reproduce`
-//! (tests/cli_outputs.rs, one test per command):
+//! (tests/cli/cli_outputs.rs, one test per command):
 //!
 //! - a target given twice: "X is given twice: each output needs a file of its own", exit 2;
 //! - a directory: "X is a directory, not a file", exit 2;

@@ -122,7 +122,7 @@ fn plan(presets: &[Preset]) -> anyhow::Result<Vec<Planned>> {
 
 /// `--out` must be a folder or nothing yet: a file, or a symbolic link that leads nowhere
 /// (dangling or looping), is refused naming it (exit 2), never met by "File exists" from
-/// creating the folder (tests/cli_outputs.rs, `reproduce_refuses_a_dangling_link`).
+/// creating the folder (tests/cli/cli_outputs.rs, `reproduce_refuses_a_dangling_link`).
 fn check_folder(dir: &Path) -> anyhow::Result<()> {
     let Ok(entry) = fs::symlink_metadata(dir) else {
         return Ok(());

@@ -1,6 +1,6 @@
 //! Vertical flight of a ball between bounces under gravity and quadratic air drag
 //! F = ½ ρ C_d A v² (docs/drop.md, "Flight"). Every quantity is a closed form; the test
-//! `closed_forms_follow_the_integrated_flight` (tests/drop_flight.rs) integrates the ODE
+//! `closed_forms_follow_the_integrated_flight` (tests/physics/drop_flight.rs) integrates the ODE
 //! m v' = −m g ∓ k v|v| directly and checks them.
 //!
 //! With k = ½ ρ C_d A and x = k/m (1/m), the terminal speed is v_t = √(g/x) and:
@@ -82,7 +82,7 @@ impl Flight {
     /// Time to fall `s` from rest: t = (v_t/g) a, a = artanh(v/v_t) = arcosh(e^{xs}) (the
     /// inverse of `fall_at`'s s = (1/x) ln cosh a). Past xs = 1 (v/v_t = 0.93) it is read as
     /// a = xs + ln(1 + √(1 − e^{−2xs})): artanh loses the digits of 1 − v/v_t there and, v/v_t
-    /// rounded to 1, gave t = ∞ from `drop --height 3000` on (tests/drop_flight.rs,
+    /// rounded to 1, gave t = ∞ from `drop --height 3000` on (tests/physics/drop_flight.rs,
     /// `a_fall_from_high_up_takes_a_finite_time`). Below, artanh as before: both agree to a
     /// few rounding units at the switch, and the drops of the goldens keep their bits.
     pub fn fall_time(&self, s: f64) -> f64 {

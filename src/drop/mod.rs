@@ -259,7 +259,7 @@ pub fn drop(ball: &DropBall, setup: &DropSetup) -> Result<DropRun, DropError> {
 }
 
 /// [`drop`], the bounces done reported to `watch` before each impact; `None` when the watch
-/// stops it (Python's Ctrl-C, issue 28; tests/mc_watched.rs).
+/// stops it (Python's Ctrl-C, issue 28; tests/analysis/mc_watched.rs).
 pub fn drop_watched(
     ball: &DropBall,
     setup: &DropSetup,

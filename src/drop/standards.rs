@@ -78,7 +78,7 @@ pub struct Standard {
     /// What could not be confirmed from a public source, if anything.
     pub unconfirmed: Option<&'static str>,
     /// The embedded presets that pass this standard (`bouncelab drop --preset BALL --standard
-    /// NAME`: tests/standards.rs, `every_standard_names_a_ball_that_passes_it`).
+    /// NAME`: tests/physics/standards.rs, `every_standard_names_a_ball_that_passes_it`).
     pub balls: &'static [&'static str],
 }
 

@@ -77,7 +77,7 @@ pub fn force_time(ball: &Ball, r: &ImpactResponse) -> Figure {
 /// The note of an impact `r` of `ball` past the ball's radius, as `run` warns of it
 /// (`api::reach`): "outside the model's range: z_m 31.05 mm > radius 21.55 mm" (or the
 /// centre's α_max), after a "; " the SVG may break the subtitle at. Nothing within the radius
-/// or with no radius known. tests/figure_radius.rs.
+/// or with no radius known. tests/figures/figure_radius.rs.
 pub fn push_radius_note(fig: &mut Figure, ball: &Ball, r: &ImpactResponse) {
     let radius = ball.measured.as_ref().map_or(f64::NAN, |m| m.radius);
     if let Some(note) = radius_note(&ball.params, radius, r) {
@@ -113,7 +113,7 @@ fn reach_words(reach: &crate::api::Reach, radius: f64) -> String {
 /// The note of a speed sweep of `ball` (`rows` in rising speed: Fig. 4) whose impacts pass
 /// the ball's radius from some speed on, as `sweep velocity` warns of each row: "; outside
 /// the model's range from v0 = 45.2 m/s: z_m 21.6 mm > radius 21.55 mm", at the first such
-/// row. Nothing when every row is within, or with no radius known. tests/figure_radius.rs.
+/// row. Nothing when every row is within, or with no radius known. tests/figures/figure_radius.rs.
 pub fn push_speed_radius_note(
     fig: &mut Figure,
     ball: &Ball,

@@ -6,7 +6,7 @@
 //! first, lowest, highest and last point (the M4 reduction: the line enters and leaves each
 //! column where the data do and spans its extremes), markers as the lowest and highest — and
 //! its legend says so. Runs, not columns, so that a loop (force against displacement) keeps
-//! both its branches. The CSV of a figure keeps every point. tests/figure_reduced.rs.
+//! both its branches. The CSV of a figure keeps every point. tests/figures/figure_reduced.rs.
 
 use super::ticks::Ticks;
 use super::{Figure, Style};

@@ -211,7 +211,7 @@ fn summary(out: &mut String, balls: &[Comparison]) {
         );
     }
     // the paper's K_r are rounded fits, so e meets its measurement only to the largest miss
-    // of the table above, which the sentence states (tests/cli_reproduce.rs)
+    // of the table above, which the sentence states (tests/cli/cli_reproduce.rs)
     let miss = balls
         .iter()
         .filter_map(|c| {

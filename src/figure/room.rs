@@ -6,7 +6,7 @@
 //! grid and splits a glyph from its label, this one moves boxes of any size around a point
 //! drawn on its own; what they share is the rule, the first clear place from a fixed list.
 //! The boxes are estimates (the renderer's own, [`super::svg`]'s `text_width`), so the tests
-//! check the drawn SVG with the same estimate (tests/figure_room.rs).
+//! check the drawn SVG with the same estimate (tests/figures/figure_room.rs).
 
 use super::{Series, Style};
 

@@ -92,7 +92,7 @@ pub(super) fn color(i: usize) -> RGBColor {
 
 /// Width of `text` in CSS pixels, estimated: sans-serif glyphs average about 0.5 em. The
 /// legend's layout and the markers' texts' places use it, with room to spare (and
-/// tests/common/room.rs checks the drawn figures with it).
+/// tests/support/common/room.rs checks the drawn figures with it).
 fn text_width(text: &str, size: i32) -> i32 {
     (text.chars().count() as f64 * f64::from(size) * 0.52).ceil() as i32
 }
@@ -223,9 +223,9 @@ fn annotation_offsets(chart: &Chart, fig: &Figure) -> Vec<Vec<(i32, i32)>> {
 
 /// The width (CSS pixels) left of the plot for the y axis' tick labels and its rotated
 /// description: 70, or wider where the widest tick label needs it (`fit --plot`'s residuals,
-/// "-0.0005", keep clear of the description "e − model": tests/figure_radius.rs). The
+/// "-0.0005", keep clear of the description "e − model": tests/figures/figure_radius.rs). The
 /// description, its gap, the tick mark and the labels' gap take 31 of it, which leaves room
-/// for labels up to 39 wide ("0.025"; every figure of tests/figure_room.rs).
+/// for labels up to 39 wide ("0.025"; every figure of tests/figures/figure_room.rs).
 fn y_label_area(ty: &Ticks) -> i32 {
     let widest = ty
         .labels()
@@ -238,7 +238,7 @@ fn y_label_area(ty: &Ticks) -> i32 {
 
 /// The subtitle on one line when it fits; else broken after its first "; ", and the rest,
 /// where it still would not fit, at each further "; " that ends a full line (`fit --plot`'s
-/// values with their intervals, tests/cli_fit_reports.rs).
+/// values with their intervals, tests/cli/cli_fit_reports.rs).
 fn subtitle_lines(text: &str) -> Vec<&str> {
     let fits = |s: &str| text_width(s, SUBTITLE_PX) <= WIDTH as i32 - 2 * SIDE_PX;
     if text.is_empty() {
@@ -329,7 +329,7 @@ pub fn render(fig: &Figure) -> Result<String, RenderError> {
 
 /// [`render`] with at least `left` CSS pixels left of the plot: figures stacked one above
 /// the other (`fit --plot`) take the widest of their [`label_area`]s, so that their plots
-/// start at one x and share the x axis (tests/figure_room.rs).
+/// start at one x and share the x axis (tests/figures/figure_room.rs).
 pub fn render_aligned(fig: &Figure, left: i32) -> Result<String, RenderError> {
     // long measured lines drawn as what the picture can show, saying so (`reduce`)
     let reduced = super::reduce::reduced(fig, &ticks(fig, true, Room::Picture));
@@ -395,6 +395,6 @@ pub fn render_aligned(fig: &Figure, left: i32) -> Result<String, RenderError> {
         root.present().map_err(err)?;
     }
     // labels may hold control characters, which XML 1.0 forbids: shown as text instead
-    // (crate::sanitize; tests/escaping.rs)
+    // (crate::sanitize; tests/cli/escaping.rs)
     Ok(crate::sanitize::text(&finish(buf, fig)).into_owned())
 }

@@ -3,7 +3,7 @@
 //! `differential-equations` because a shot must cost microseconds (the crate's solver builds
 //! a `Solution` and its dense output on every call) and because the events are located by
 //! integrating to them from the step's start, not on a dense output. The crate's DOP853 is the
-//! independent check (tests/flight.rs, `an_independent_dop853_agrees`).
+//! independent check (tests/physics/flight.rs, `an_independent_dop853_agrees`).
 
 use super::aero::{Aero, reynolds};
 use crate::drop::G;

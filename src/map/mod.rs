@@ -164,15 +164,15 @@ pub struct MapSpec {
     /// lanes, four cells at a time: [`fast::lanes`], docs/map.md) wherever it answers and the
     /// ball does not flatten; the exact solver elsewhere. It answers only
     /// where its rounding bound keeps 1e-13, and agrees with the exact solver (`run`) to 1e-12
-    /// there (tests/map_precision.rs, a dense grid and the turning points). A flattening ball
+    /// there (tests/physics/map_precision.rs, a dense grid and the turning points). A flattening ball
     /// takes the Taylor steps of [`crate::solver::taylor`] within their domain, which keep
-    /// 1e-12 against the exact solver too (tests/taylor.rs). `bouncelab map` and the explorer
+    /// 1e-12 against the exact solver too (tests/physics/taylor.rs). `bouncelab map` and the explorer
     /// turn it on. Off by default: each cell then is `run`'s own answer.
     pub fast: bool,
     /// The Hertz and elastic–plastic laws: take the Taylor steps of [`crate::solver::taylor`]
     /// within their domain, the adaptive solver elsewhere. They agree with the adaptive
     /// solver to 1e-9 (its own precision at rtol 1e-10, `run`'s) and with it at rtol 1e-14 to
-    /// 1e-12 (tests/taylor.rs): a cell is then not `run`'s to the last digits but closer to
+    /// 1e-12 (tests/physics/taylor.rs): a cell is then not `run`'s to the last digits but closer to
     /// the exact answer. `bouncelab map` and the explorer turn it on.
     pub fast_laws: bool,
 }

@@ -170,7 +170,7 @@ const COR_SPECS: [ColumnSpec; 5] = [
 /// parameters keep (`model::params::check_positive`, 1e-15 … 1e15), or below `max` where the
 /// quantity has a tighter bound (a COR's standard deviation, at most 1). A value outside it is
 /// the file's fault, exit 2 at its place, not a fit with no starting point
-/// (tests/measured_readers.rs, `out_of_domain_numbers_are_named_at_their_cell`).
+/// (tests/analysis/measured_readers.rs, `out_of_domain_numbers_are_named_at_their_cell`).
 fn in_domain(
     p: &table::Parsed,
     k: usize,
@@ -249,7 +249,7 @@ impl CorTable {
 /// Read measured data of whichever kind the header names: the kind that knows the most of its
 /// column names (drop tests, then traces, first on a tie), a COR table when none knows any.
 /// `time_ms,forse_N` is so a trace whose reader blames `forse_N`, not a COR table that blames
-/// `time_ms` (tests/measured_readers.rs, `the_misspelt_column_is_blamed`).
+/// `time_ms` (tests/analysis/measured_readers.rs, `the_misspelt_column_is_blamed`).
 pub fn parse_any(text: &str) -> Result<Data, MeasuredError> {
     read_any(text.into())
 }

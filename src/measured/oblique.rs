@@ -80,7 +80,7 @@ pub fn parse_oblique(text: &str) -> Result<Vec<ObliqueRow>, MeasuredError> {
             return Err(at(0, i, format!("v0 {v0} must be positive")));
         }
         // a speed no impact runs at is the cell's fault (exit 2 at its place), not the fit's
-        // "no starting point" (exit 1; issue 54 item 9, tests/field_names.rs)
+        // "no starting point" (exit 1; issue 54 item 9, tests/cli/field_names.rs)
         use crate::model::params::MEANINGFUL_MIN;
         if v0 < MEANINGFUL_MIN {
             return Err(at(

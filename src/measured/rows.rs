@@ -2,7 +2,7 @@
 //! quoting (`"time_ms","force_N"`, a separator or a quote inside quotes), a UTF-8 BOM (Excel's
 //! "CSV UTF-8"), LF, CRLF and CR-only (classic Mac) line ends; `#` comment lines and blank
 //! lines skipped. Each cell comes with the 1-based line and column it starts at, for the
-//! messages (tests/measured_readers.rs, `spreadsheet_files_are_read`).
+//! messages (tests/analysis/measured_readers.rs, `spreadsheet_files_are_read`).
 
 use super::MeasuredError;
 use std::borrow::Cow;

@@ -157,7 +157,7 @@ pub const POSITIVE_RANGE: Range = Range {
 /// then flattens to z_m with z_r = z_p √(2 z_m/z_p − 1) below the rounding of z_m, z_f = z_m,
 /// and the unloading slope F_m/(z_m − z_f) is infinite. At 1e-15 the run still closes its
 /// energy balance (to ~4e-8); the solver_inputs fuzz target's regressions
-/// (tests/fuzz_regressions.rs, `solver_inputs_regressions`) hold the refusal below it.
+/// (tests/physics/fuzz_regressions.rs, `solver_inputs_regressions`) hold the refusal below it.
 pub const ZP_BAR_MIN: f64 = 1e-15;
 
 /// Largest magnitude accepted for any parameter: beyond it products overflow or lose meaning.

@@ -149,7 +149,7 @@ impl Contact {
     pub fn unloading_force(&self, z: f64, u: &Unloading) -> f64 {
         // An unloading branch entered at z_m ≤ z_f (the adaptive solver, in a stiff extreme,
         // can place the unload event at z ≤ 0, where F = 0) carries no force; the 3/2 power of
-        // the negative ratio would be NaN and poison the whole run (tests/fuzz_regressions.rs,
+        // the negative ratio would be NaN and poison the whole run (tests/physics/fuzz_regressions.rs,
         // `solver_inputs_regressions`; `unloading_from_no_indentation_has_no_force`).
         if z <= u.z_f || u.z_m <= u.z_f {
             return 0.0;

@@ -153,7 +153,7 @@ impl Oblique {
             return Err(invalid("tangential_stiffness", k, "must be positive"));
         }
         // bounded as K_p is (`model::checks::POSITIVE_RANGE`): the search grid's length grows
-        // with √K_t, and past 1e15 it would overflow (tests/oblique_bounded.rs)
+        // with √K_t, and past 1e15 it would overflow (tests/physics/oblique_bounded.rs)
         use crate::model::params::{MEANINGFUL_MAX, MEANINGFUL_MIN};
         if !(MEANINGFUL_MIN..=MEANINGFUL_MAX).contains(&k) {
             return Err(invalid(

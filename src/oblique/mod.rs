@@ -8,7 +8,7 @@
 //! (`solver::exact::NormalPath`) with the tangential motion in closed form phase by phase
 //! (`tangential`): a harmonic oscillator in u while the point sticks, the normal impulse while
 //! it slides, the switches root-found. [`mod@reference`] integrates the same model independently
-//! (DOP853 with events at every switch); tests/oblique.rs holds the two together.
+//! (DOP853 with events at every switch); tests/physics/oblique.rs holds the two together.
 
 mod closed;
 pub mod court;

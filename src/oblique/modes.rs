@@ -3,7 +3,7 @@
 //! e^{−σδ} sin(ωδ)/ω they span, read exactly, turned by a step, or by short series, and a
 //! component of the state as rows over that basis (docs/oblique.md §2).
 
-use crate::solver::propagator::modes_of;
+use crate::solver::modes;
 use crate::solver::series;
 /// Rows kept of each component: f … f''' (τ_m's Halley steps on z̄' read z̄''').
 pub(super) const ROWS: usize = 4;
@@ -11,37 +11,31 @@ pub(super) const ROWS: usize = 4;
 /// The basis at δ = 0.
 pub(super) const START: [f64; 3] = [1.0, 1.0, 0.0];
 
-/// A phase's modes: the real root r and the oscillating pair −σ ± iω of its cubic.
+/// A phase's modes: the real root r and the oscillating pair −σ ± iω of its cubic
+/// (`solver::modes`, the core the map's fast flow shares), and ω.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(super) struct Modes {
-    pub(super) r: f64,
-    pub(super) sigma: f64,
-    pub(super) omega2: f64,
+    core: modes::Modes,
     pub(super) omega: f64,
-    /// (r + σ)² + ω², the real root's distance from the pair (squared).
-    pub(super) gap: f64,
 }
 
 impl Modes {
     /// The modes at slope k, or `None` unless the pair oscillates apart from the real root.
     pub(super) fn new(lambda: f64, zeta: f64, k: f64) -> Option<Modes> {
-        let cubic = [2.0 * zeta * (k + lambda), k, 2.0 * zeta * k * lambda];
-        let (r, sigma, omega2, gap, _) = modes_of(cubic, f64::cbrt);
+        let core = modes::Modes::of_phase(lambda, zeta, k, f64::cbrt);
+        let (r, sigma, omega2, gap) = (core.r, core.sigma, core.omega2, core.gap);
         let ok = omega2 > 0.0 && gap > 0.0 && sigma >= 0.0 && r.is_finite() && gap.is_finite();
         ok.then(|| Modes {
-            r,
-            sigma,
-            omega2,
+            core,
             omega: omega2.sqrt(),
-            gap,
         })
     }
 
     /// The basis at δ: e^{rδ}, e^{−σδ} cos ωδ, e^{−σδ} sin(ωδ)/ω.
     pub(super) fn basis(&self, d: f64) -> [f64; 3] {
         let (sn, cs) = (self.omega * d).sin_cos();
-        let decay = (-self.sigma * d).exp();
-        [(self.r * d).exp(), decay * cs, decay * sn / self.omega]
+        let decay = (-self.core.sigma * d).exp();
+        [(self.core.r * d).exp(), decay * cs, decay * sn / self.omega]
     }
 
     /// The basis h after `b`: e^{rh} times the first, the pair turned by the angle sum
@@ -50,7 +44,7 @@ impl Modes {
     pub(super) fn step(&self, b: &[f64; 3], turn: &[f64; 3]) -> [f64; 3] {
         [
             b[0] * turn[0],
-            b[1] * turn[1] - self.omega2 * b[2] * turn[2],
+            b[1] * turn[1] - self.core.omega2 * b[2] * turn[2],
             b[2] * turn[1] + b[1] * turn[2],
         ]
     }
@@ -60,34 +54,27 @@ impl Modes {
     /// and `sin_cos`.
     pub(super) fn basis_short(&self, d: f64) -> [f64; 3] {
         let (cos, sinc) = cos_sinc(self.omega * d);
-        let decay = exp_short(-self.sigma * d);
-        [exp_short(self.r * d), decay * cos, decay * sinc * d]
+        let decay = exp_short(-self.core.sigma * d);
+        [exp_short(self.core.r * d), decay * cos, decay * sinc * d]
     }
 
     /// Fastest |s| of the three modes.
     pub(super) fn fastest(&self) -> f64 {
-        self.r
+        self.core
+            .r
             .abs()
-            .max((self.sigma * self.sigma + self.omega2).sqrt())
+            .max((self.core.sigma * self.core.sigma + self.core.omega2).sqrt())
     }
 
     /// A component's rows from f, f', f'' at δ = 0: row n = (c_r rⁿ, c_n, s_n), so that
     /// f⁽ⁿ⁾(δ) = row n · basis(δ), since (e^{−σδ}(c C + s S))' = e^{−σδ}((s − σc) C +
     /// (−ω²c − σs) S).
-    pub(super) fn rows(&self, [f, d1, d2]: [f64; 3]) -> Rows {
-        let (r, sg, w2) = (self.r, self.sigma, self.omega2);
-        let p0 = sg * sg + w2;
-        let cr = (d2 + 2.0 * sg * d1 + p0 * f) / self.gap;
-        let cc = f - cr;
-        let cs = d1 - r * cr + sg * cc;
-        let mut rows = [[0.0; 3]; ROWS];
-        let (mut a, mut c, mut s) = (cr, cc, cs);
-        for row in &mut rows {
-            *row = [a, c, s];
-            (a, c, s) = (a * r, s - sg * c, -w2 * c - sg * s);
+    pub(super) fn rows(&self, x: [f64; 3]) -> Rows {
+        let (coefficients, [size, _, _]) = self.core.coefficients(x);
+        Rows {
+            rows: self.core.rows(coefficients),
+            size,
         }
-        let size = (d2.abs() + 2.0 * (sg * d1).abs() + p0 * f.abs()) / self.gap;
-        Rows { rows, size }
     }
 }
 
@@ -126,11 +113,12 @@ impl Rows {
     /// from those (a small COR, a near-triple root) that do not (`closed`'s `KEEP`).
     pub(super) fn rounding(&self, m: &Modes, d: f64, b: &[f64; 3]) -> f64 {
         let [a, c, s] = self.rows[0];
-        let decay = (b[1] * b[1] + m.omega2 * b[2] * b[2]).sqrt();
+        let decay = (b[1] * b[1] + m.core.omega2 * b[2] * b[2]).sqrt();
         let sm = decay * d.min(1.0 / m.omega);
         let terms = a.abs() * b[0] + c.abs() * decay + s.abs() * sm;
-        let carried = self.size * (b[0] + decay * (1.0 + (m.r.abs() + m.sigma) / m.omega));
-        let grow = 1.0 + (m.r.abs() + m.sigma + m.omega) * d;
+        let carried =
+            self.size * (b[0] + decay * (1.0 + (m.core.r.abs() + m.core.sigma) / m.omega));
+        let grow = 1.0 + (m.core.r.abs() + m.core.sigma + m.omega) * d;
         8.0 * f64::EPSILON * grow * (terms + carried)
     }
 }

@@ -54,7 +54,7 @@ impl NormalAt {
         let params = ImpactParams { v0: vy, ..*params };
         // The linear law's normal motion in closed form where it answers (`closed`: a fifth of
         // the exact solver's instructions), else the solver's flow; at 90° always the solver's,
-        // so that the answer is `run`'s to the last bit (tests/oblique_laws.rs,
+        // so that the answer is `run`'s to the last bit (tests/physics/oblique_laws.rs,
         // `angle_90_is_run_on_every_law`).
         let closed = law == ContactLaw::Linear && opts.method.is_none() && angle_deg != 90.0;
         if closed && opts.samples == 0 {
@@ -167,7 +167,7 @@ pub(super) fn arrival(v: f64, angle_deg: f64) -> Result<(f64, f64), ObliqueError
         (v * theta.sin(), v * theta.cos())
     };
     // a normal speed below the meaningful range is the angle's doing when v is in it:
-    // `--angle 1e-15` said "invalid v0: 1.2e-16" (issue 54 item 9; tests/field_names.rs)
+    // `--angle 1e-15` said "invalid v0: 1.2e-16" (issue 54 item 9; tests/cli/field_names.rs)
     use crate::model::params::MEANINGFUL_MIN;
     if vy < MEANINGFUL_MIN && v >= MEANINGFUL_MIN && v.is_finite() {
         return Err(super::invalid(
@@ -181,7 +181,7 @@ pub(super) fn arrival(v: f64, angle_deg: f64) -> Result<(f64, f64), ObliqueError
 
 /// The refusal of a tangential motion whose search grid would pass [`MAX_GRID`] points: the
 /// grid steps a fifth of the sticking oscillation's radian, ω̃_t = √(K_t/K_p·(1 + 1/κ)), so a
-/// tiny κ or a huge K_t once asked 10⁸ points (3 GB) or more (tests/oblique_bounded.rs). The
+/// tiny κ or a huge K_t once asked 10⁸ points (3 GB) or more (tests/physics/oblique_bounded.rs). The
 /// field named is the factor that drives ω̃_t most: 1/κ or K_t/K_p.
 pub(super) fn bounded(s: &Scaled, oblique: &Oblique, tf: f64) -> Result<(), ObliqueError> {
     if Grid::steps(s, tf) <= MAX_GRID as f64 {

@@ -209,7 +209,7 @@ pub fn integrate(path: &impl NormalMotion, s: &Scaled, vx: f64, spin: f64) -> Ou
     // or its negative over K̃ (slip): where that is not 0 the function is negative at once, so
     // a return through 0 is a switch even inside the integrator's first step, where a short
     // stick (K̃|ṽ_c| just under μF̄'(0)) dips between the five points a step watches
-    // (tests/oblique_scan.rs).
+    // (tests/physics/oblique_scan.rs).
     let mut armed = s.kt * vc.abs() != s.mu * p0.rate;
     for &stop in &stops {
         while t < stop {

@@ -10,7 +10,7 @@ use crate::model::params::ImpactParams;
 use crate::solver::roots::brent;
 use crate::solver::{ImpactResponse, SolveError, SolveOptions, simulate};
 
-/// The COR tolerance the exact calibration promises (tests/peers_calibration.rs).
+/// The COR tolerance the exact calibration promises (tests/physics/peers_calibration.rs).
 pub const COR_TOL: f64 = 1e-9;
 
 fn check_target(e: f64) -> Result<(), PeerError> {
@@ -26,7 +26,7 @@ fn check_target(e: f64) -> Result<(), PeerError> {
 }
 
 /// The normalized damping (laws.rs) whose COR is `target`. Every model's COR falls
-/// monotonically from 1 at d = 0 towards 0 (tests/peers_calibration.rs sweeps it), so a
+/// monotonically from 1 at d = 0 towards 0 (tests/physics/peers_calibration.rs sweeps it), so a
 /// bracket grown from the log-decrement or Gonthier guess and Brent's method find it; the root
 /// is resolved to 1e-13 in d, far inside `COR_TOL`.
 pub fn exact(model: PeerModel, target: f64) -> Result<f64, PeerError> {
@@ -156,7 +156,7 @@ pub struct TableFit {
 
 /// Fit `model` to CORs measured at several speeds. None of the peers' COR depends on v0
 /// (laws.rs), so Σ (e − e_i)² is least at the mean of the e_i, and the damping is the exact
-/// calibration to that mean (tests/peers_calibration.rs checks it is a minimum).
+/// calibration to that mean (tests/physics/peers_calibration.rs checks it is a minimum).
 pub fn fit_table(model: PeerModel, table: &[(f64, f64)]) -> Result<TableFit, PeerError> {
     if table.is_empty() {
         return Err(PeerError::Invalid {

@@ -31,7 +31,7 @@ use tableau::{A, B, BH, C, ER};
 
 /// Relative and absolute tolerance per step, in normalized units (x, x' of order 1). With the
 /// 8th-order pair every COR comes out within 1e-10 of its closed form and the peaks within
-/// 1e-11 (tests/peers.rs), well inside the 1e-9 the calibration promises. 1e-13 gave one more
+/// 1e-11 (tests/physics/peers.rs), well inside the 1e-9 the calibration promises. 1e-13 gave one more
 /// digit for 20 % more time; 1e-12 is what brings one Hunt–Crossley impact under the 10 µs of
 /// BENCHMARKS.md.
 pub const TOL: f64 = 1e-12;

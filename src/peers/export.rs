@@ -2,7 +2,7 @@
 //! own names and SI units, with the conventions assumed written beside them (docs/peers.md
 //! §5). Every number comes from the exact calibration; where a code takes a COR and applies
 //! its own rule, the COR given to it (`e_in`) is the one that makes the rule return the exact
-//! damping. tests/peers_export.rs re-reads each snippet and recomputes its COR.
+//! damping. tests/physics/peers_export.rs re-reads each snippet and recomputes its COR.
 //!
 //! Conventions verified against the codes' sources: LAMMPS `src/GRANULAR/gran_sub_mod_*`
 //! (F_hertz = k_n a δ with a = √(R δ); damping force −prefactor·v_n, coeff_restitution:

@@ -8,7 +8,7 @@
 //!
 //! Substituting the scalings into m δ'' = −F(δ, δ') leaves x'' = −F̄(x, x') with x(0) = 0,
 //! x'(0) = 1 and no other parameter: that is why none of these COR depend on v0, m, k or K_h at
-//! fixed d (tests/peers.rs checks it on the SI equations, integrated independently).
+//! fixed d (tests/physics/peers.rs checks it on the SI equations, integrated independently).
 
 use super::integrate::Law;
 

@@ -45,7 +45,7 @@ fn opt(table: &'static str, key: &'static str, v: Option<f64>) -> Result<(), Bad
 /// The name is one word, and neither it nor the description holds a control character.
 fn text(p: &Preset) -> Result<(), Bad> {
     // printed by every command and drawn in figures: no control character may ride along
-    // (crate::sanitize; tests/escaping.rs)
+    // (crate::sanitize; tests/cli/escaping.rs)
     // (a description may keep the tabs and line breaks of its TOML: they command nothing)
     for (key, text, allowed) in [
         ("name", &p.name, &[][..]),
@@ -61,7 +61,7 @@ fn text(p: &Preset) -> Result<(), Bad> {
         }
     }
     // a name is what presets are told apart by: nothing in it may print as nothing, or
-    // `golf\u{200B}` lists as a second "golf" (crate::sanitize::invisible; tests/escaping.rs,
+    // `golf\u{200B}` lists as a second "golf" (crate::sanitize::invisible; tests/cli/escaping.rs,
     // `invisible_characters_cannot_hide`); a description shows them escaped instead
     if let Some((i, c)) = crate::sanitize::first_invisible(&p.name) {
         let msg = format!(

@@ -145,7 +145,7 @@ fn adopted(a: &Adopted, q: Param) -> f64 {
 /// most a factor 100 (`fit::verdict::PIN_RATIO`): 2·t·se ≤ ln 100 in ln p, so se ≤ 1.17 and
 /// the saved relative standard deviation (p·se, the delta method) is at most 1.17. A table
 /// wider than 100 was not written by a fit, and its intervals mean nothing (a COR of ±7e144
-/// once: issue 54 item 8, tests/intervals_physical.rs).
+/// once: issue 54 item 8, tests/analysis/intervals_physical.rs).
 pub const MAX_RELATIVE_SD: f64 = 100.0;
 
 /// Each parameter's standard deviation within [`MAX_RELATIVE_SD`] of its value.

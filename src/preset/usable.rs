@@ -2,7 +2,7 @@
 //! [`crate::ImpactParams::validate`], the very check every command and the explorer apply
 //! before solving. Field checks alone let `k_p = 1e-320` through (positive, finite), which every
 //! command then refused and the explorer showed as "λ —"; now the file is refused at load,
-//! naming the key to change (tests/cli_guarantees.rs, `a_preset_the_commands_refuse_is_refused_at_load`).
+//! naming the key to change (tests/cli/cli_guarantees.rs, `a_preset_the_commands_refuse_is_refused_at_load`).
 
 use super::{Bad, ParamSource, Preset};
 use crate::model::params::{Field, ParamError};

@@ -145,7 +145,7 @@ fn energy_balanced(r: &ImpactResponse, e: &EnergyBudget) -> Result<(), String> {
 /// no force, ȳ' = −2ζλȳ, and z̄' = ᾱ' + 2ζλȳ must be ≤ 0 for z̄ to fall through it, so
 /// e ≥ 2ζλȳ_f. A grazing separation (a weak dashpot's slow manifold) meets it with equality;
 /// the adaptive solver takes one at 1e-3 of it (`numeric::PACE_SLACK`), hence the 2e-3 here.
-/// A separation taken in the integrator's noise breaks it (tests/properties.rs,
+/// A separation taken in the integrator's noise breaks it (tests/physics/properties.rs,
 /// `every_run_keeps_the_invariants`, runs it over the domain).
 ///
 /// ȳ_f with its sign: the element ends a hair below zero where a stiff integrator steps across

@@ -3,6 +3,7 @@
 
 pub mod audit;
 pub mod exact;
+pub(crate) mod modes;
 pub mod numeric;
 mod outcome;
 pub mod propagator;

@@ -1,12 +1,12 @@
 //! Reading a number typed by a user (the command line, the explorer's fields): what
 //! `str::parse::<f64>` does, with three differences that keep the outputs honest
-//! (tests/cli_guarantees.rs, `numbers_are_read_as_typed`):
+//! (tests/cli/cli_guarantees.rs, `numbers_are_read_as_typed`):
 //!
 //! - `-0` is read as `0`: a negative zero would otherwise reach the CSV and JSON as `-0`;
 //! - a literal that is not zero but rounds to zero (`1e-400`) is refused, and so is one that
 //!   rounds to a subnormal (`1e-320`, held to fewer digits than typed): neither is silently
 //!   replaced, also where no range check would catch it (`--spin`, `--friction`, a spread;
-//!   issue 54 item 7, tests/numbers_as_typed.rs);
+//!   issue 54 item 7, tests/cli/numbers_as_typed.rs);
 //! - `inf`, `-inf` and `nan` are numbers (the range checks then refuse them, naming the
 //!   field); the arguments that use this parser also set `allow_hyphen_values`, so clap does
 //!   not take `-inf` for an option.
@@ -25,7 +25,7 @@ pub enum Refused {
 
 /// The number `text` (trimmed) holds, by the rules of this module: one reader for the command
 /// line, the explorer and measured-data files (`measured::table`), so that `1e-400` is refused
-/// alike everywhere (tests/measured_readers.rs, `numbers_in_files_are_read_as_arguments_are`).
+/// alike everywhere (tests/analysis/measured_readers.rs, `numbers_in_files_are_read_as_arguments_are`).
 pub fn read(text: &str) -> Result<f64, Refused> {
     let t = text.trim();
     let x: f64 = t.parse().map_err(|_| Refused::NotANumber)?;

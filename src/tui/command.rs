@@ -114,7 +114,7 @@ pub fn run_line(source: Source, preset: &Preset, setting: &Setting) -> String {
 
 /// The explorer's line, `bouncelab --preset golf --law hertz --v0 3 …` (`y`, issue 29 item
 /// 2): `run`'s options without `run`, which open the explorer in this setting again
-/// (src/cli/explore.rs takes every option `run` takes; tests/tui_roundtrip.rs parses it back).
+/// (src/cli/explore.rs takes every option `run` takes; tests/tui/tui_roundtrip.rs parses it back).
 pub fn explorer_line(source: Source, preset: &Preset, setting: &Setting) -> String {
     let mut words = vec!["bouncelab".to_string()];
     words.extend(options(source, preset, setting));
@@ -146,7 +146,7 @@ fn what_the_ball_meets(setting: &Setting) -> Vec<String> {
 /// The oblique view's line, `bouncelab oblique --preset tennis --v0 25 --angle 16 --spin 300
 /// --friction 0.6 …` (`y` there, issue 31): the ball's options as [`explorer_line`]'s but
 /// K_r and c as `--k-r` and `--damping` (`oblique` takes no `--lambda`, `--zeta`: the same
-/// numbers, exactly), then θ, ω, μ and the K_t, κ set in the view (tests/tui_oblique.rs runs
+/// numbers, exactly), then θ, ω, μ and the K_t, κ set in the view (tests/tui/tui_oblique.rs runs
 /// it and compares its JSON with the screen's impact).
 pub fn oblique_line(
     source: Source,

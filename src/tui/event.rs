@@ -31,7 +31,7 @@ const IDLE: Duration = Duration::from_millis(100);
 
 pub fn run(terminal: &mut DefaultTerminal, app: &mut App) -> anyhow::Result<()> {
     let mut worker = Workers::default();
-    // test-only (see `crate::fault`): tests/tui_pty.rs checks that the terminal is restored
+    // test-only (see `crate::fault`): tests/tui/tui_pty.rs checks that the terminal is restored
     // after a panic in here
     let panic_on_key = Fault::PanicInLoop.active();
     let size = terminal.size()?;
@@ -150,7 +150,7 @@ fn apply_queued(
 /// terminal and on its SIGWINCH pipe together, edge-triggered (mio), and when both are ready
 /// at once it returns the resize and drops the terminal's readiness: a key typed with a resize
 /// stays unread until the next key comes (issue 28: after a burst of resizes, `q` was lost;
-/// tests/tui_exit_pty.rs, `a_key_typed_while_the_explorer_draws_a_resize_is_not_lost`).
+/// tests/tui/tui_exit_pty.rs, `a_key_typed_while_the_explorer_draws_a_resize_is_not_lost`).
 /// Setting the terminal's attributes, even unchanged, wakes its readers (Linux's line
 /// discipline does so on every change of settings), which gives crossterm a new edge for the
 /// pending key; with nothing pending nothing is announced.

@@ -16,7 +16,7 @@
 //! `update`, the finer ones on its worker's thread. [`layout`] is the screen's geometry, which
 //! `update` needs for the map's grid.
 //!
-//! The modules import each other without a cycle (tests/architecture.rs): state below
+//! The modules import each other without a cycle (tests/project/architecture.rs): state below
 //! `update`, widgets and the loop above it.
 
 pub mod action;
@@ -175,7 +175,7 @@ fn resume_all() {
 
 /// Saves and exports killed mid-write (kill -9) leave their temporary files: remove those of
 /// processes that are gone, in the presets folder and among the export's files
-/// (tests/tui_exit_pty.rs, `the_debris_of_a_killed_save_is_removed_at_start`).
+/// (tests/tui/tui_exit_pty.rs, `the_debris_of_a_killed_save_is_removed_at_start`).
 fn remove_stale_temporaries() {
     if let Some(dir) = crate::catalog::user_presets_dir() {
         crate::atomic::remove_stale(&dir, |name| name.ends_with(".toml"));

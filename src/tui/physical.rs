@@ -346,7 +346,7 @@ pub fn validity(run: &ImpactResponse, deflection: Option<&[f64]>, radius: f64) -
         .fold(f64::NAN, f64::max);
     // a number and its unit joined by a no-break space: the readout's line breaking
     // (`format::fit_lines`) never parts them, and the parenthesis is a field of its own (two
-    // spaces before it) (tests/tui_render.rs, `the_validity_note_keeps_its_numbers_with_their_units`)
+    // spaces before it) (tests/tui/tui_render.rs, `the_validity_note_keeps_its_numbers_with_their_units`)
     let mm = |x: f64| format!("{}\u{a0}mm", sig_trim(x * 1e3, 3));
     let mut over = Vec::new();
     if z_m > radius {

@@ -119,7 +119,7 @@ fn fit_cor(
     // (one start more: a table of mixed kinds is fitted again from the first minimum)
     let iterations = fit_iterations(run, free.len(), starts.len() + 1, law, what)?;
     // after the work limit: the scale check is a model run over every row
-    // (tests/fit_work_limit.rs)
+    // (tests/analysis/fit_work_limit.rs)
     check_scale(&p)?;
     // no answer, or stopped by the watch
     let none = || {
@@ -144,7 +144,7 @@ fn fit_cor(
                 // the weights are estimated from the data: the intervals take the degrees of
                 // freedom of the kind with the fewest points, its share of the parameters
                 // taken off (measured: 37–39 of 40 intervals cover, against 35–37 with the
-                // n − p of all the data; tests/fit_recovery.rs,
+                // n − p of all the data; tests/analysis/fit_recovery.rs,
                 // cor_force_and_contact_time_jointly)
                 let share = (free.len() * counts[k]).div_ceil(p.count());
                 let dof = counts[k].saturating_sub(share).max(1);
@@ -322,7 +322,7 @@ fn finish(
     // SciPy's curve_fit returns that zero covariance silently; it returns inf where it cannot
     // estimate (n ≤ p), and so do we here: no standard error, no interval (null), as for an
     // exact solve (`MultiFit::exact`), with a warning. A variable the data do not see keeps
-    // its infinite variance (not pinned). tests/cli_fit.rs,
+    // its infinite variance (not pinned). tests/cli/cli_fit.rs,
     // `equal_cors_leave_no_scatter_to_estimate_from`.
     let dof = sol.residuals.len().saturating_sub(names.len());
     // (with stated sds the interval needs no scatter: `Spread::Stated`)

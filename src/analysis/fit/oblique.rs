@@ -97,7 +97,7 @@ impl ObliqueFit {
 /// What one row of one evaluation costs, in linear-law impacts: a row's normal impact is
 /// solved once (`NormalAt`), and an evaluation runs only its tangential motion — 9.25 k
 /// instructions a row against 12.56 k for the row's normal impact alone (callgrind, 27 rows
-/// of 8–75°, `evaluation_cost` in tests/fit_oblique_coverage.rs; BENCHMARKS.md "The oblique
+/// of 8–75°, `evaluation_cost` in tests/analysis/fit_oblique_coverage.rs; BENCHMARKS.md "The oblique
 /// fit's evaluations"): 0.74 of an impact, priced as one.
 const OBLIQUE_COST: u64 = 1;
 
@@ -277,7 +277,7 @@ pub fn fit_oblique(
         // COR table of mixed kinds is, `multi::fit_cor`) — from each of the best distinct
         // minima, not only the best: the weights move the minima, and the one that was best
         // under the first weights need not be under the second
-        // (`spins_do_not_stop_in_a_local_minimum`, tests/fit_oblique_coverage.rs)
+        // (`spins_do_not_stop_in_a_local_minimum`, tests/analysis/fit_oblique_coverage.rs)
         let pred = p.predict(&best.x).ok_or(MultiFitError::NoAnswer)?;
         let (vx, spin) = rms_pair(&pred, rows);
         if vx > 0.0 && spin > 0.0 {

@@ -80,7 +80,7 @@ impl std::error::Error for FitError {}
 
 /// `bound` to 4 decimals, or to as many more as keep it on its side of `target`: the span's
 /// end at λ = 1e6 (0.99999997) printed `1.0000` beside "cor 1 is out of reach"
-/// (tests/cli_odd_inputs.rs, `an_unreachable_cor_is_not_inside_the_span_shown`).
+/// (tests/cli/cli_odd_inputs.rs, `an_unreachable_cor_is_not_inside_the_span_shown`).
 fn apart(bound: f64, target: f64) -> String {
     (4..=17)
         .map(|d| format!("{bound:.d$}"))

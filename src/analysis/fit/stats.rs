@@ -36,7 +36,7 @@ pub enum Spread {
     /// Every residual divided by its stated standard deviation (`cor_sd` on every row): the
     /// covariance (JᵀJ)⁻¹ not rescaled (s² = 1) and the normal quantile 1.96, as SciPy's
     /// `curve_fit(..., absolute_sigma=True)`; with degrees of freedom left (else as
-    /// `Residuals`: an exact solve). docs/fitting.md, tests/fit_stated_sd.rs.
+    /// `Residuals`: an exact solve). docs/fitting.md, tests/analysis/fit_stated_sd.rs.
     Stated,
 }
 

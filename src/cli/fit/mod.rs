@@ -179,7 +179,7 @@ impl FitArgs {
             given.push(Source::Oblique(p.clone()));
         }
         // air drag corrects drop heights only: with other data it is refused, not ignored
-        // (tests/fit_answers.rs, drag_is_refused_where_there_is_no_flight)
+        // (tests/analysis/fit_answers.rs, drag_is_refused_where_there_is_no_flight)
         let drops = matches!(given.as_slice(), [Source::Drops(_) | Source::DropFile(_)]);
         if self.drag_coefficient.is_some() && given.len() == 1 && !drops {
             anyhow::bail!(

@@ -182,7 +182,7 @@ pub fn run(
     // a trace without --v0 was not taken at the preset's speed for sure: its speed is fitted
     // too (as --free v0), and the report says so. Held at the preset's, a trace made at twice
     // it gave K_r 43 k against a truth of 90 k with a tight interval (issue 52;
-    // tests/calibration.rs, `a_trace_without_v0_fits_its_speed`).
+    // tests/cli/calibration.rs, `a_trace_without_v0_fits_its_speed`).
     let speed_fitted = data.trace.is_some() && a.v0.is_none() && !free.contains(&Param::V0);
     if speed_fitted {
         free.push(Param::V0);
@@ -236,7 +236,7 @@ pub fn run(
 /// The report, the `--plot` and the `--save` of a fit as one transaction
 /// (`cli::outputs`): the files staged, the report written, then the files published; a
 /// failure anywhere (a preset folder that takes no file, a full stdout) leaves none of them
-/// (tests/cli_outputs.rs, `fit_is_all_or_nothing`).
+/// (tests/cli/cli_outputs.rs, `fit_is_all_or_nothing`).
 fn publish(
     a: &FitArgs,
     out: &mut dyn Write,

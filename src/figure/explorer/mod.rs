@@ -257,7 +257,7 @@ fn zeta_figure(chart: Chart, scene: &Scene) -> Figure {
     fig.x.range = Some((z_lo, z_hi));
     // told apart without colour (NO_COLOR, greyscale print): the current λ solid, the fixed
     // ones dashed, dotted, in long dashes, each named at its right end: four lines, four
-    // patterns (tests/tui_render.rs: `no_color_cor_zeta_lines_each_have_their_own_glyph`)
+    // patterns (tests/tui/tui_render.rs: `no_color_cor_zeta_lines_each_have_their_own_glyph`)
     const REFERENCE_STYLES: [Style; 3] = [Style::Dashed, Style::Dotted, Style::LongDashed];
     let now = scene
         .zeta

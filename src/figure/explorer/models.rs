@@ -154,7 +154,7 @@ fn curves(
 
 /// The subtitle (the SVG's): ball, speed and COR of the calibration. Without one (still out,
 /// failed, or its worker stopped) it says that the peers are not calibrated, not that a result
-/// is coming (the export refuses such a figure, `super::missing`: tests/tui_models_export.rs).
+/// is coming (the export refuses such a figure, `super::missing`: tests/tui/tui_models_export.rs).
 fn subtitle(scene: &Scene, data: Option<&ModelsData>) -> String {
     let ball = &scene.ball;
     match data {

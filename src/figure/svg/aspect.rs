@@ -22,7 +22,7 @@ pub fn plot_size(fig: &Figure) -> (f64, f64) {
 /// `fig`'s axes given ranges with one scale across and up — as many units per pixel on both
 /// — around its data with a tenth of the larger span to spare, so that a direction drawn is
 /// the direction meant: a path at 16° to the surface is drawn at 16° (the oblique view's
-/// paths, issue 51 item 7; tests/tui_oblique_export.rs). Linear axes with one unit shown
+/// paths, issue 51 item 7; tests/tui/tui_oblique_export.rs). Linear axes with one unit shown
 /// (the ranges are in it, as the extents are).
 pub fn equal_scales(fig: &mut Figure) {
     let (Some((x0, x1)), Some((y0, y1))) = (fig.data_extent(true), fig.data_extent(false)) else {

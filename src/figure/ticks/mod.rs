@@ -314,7 +314,7 @@ impl Ticks {
     }
 
     /// The power of ten a terminal writes a linear axis' labels in when its values are too
-    /// large or too small to read as they are (tests/tui_render.rs:
+    /// large or too small to read as they are (tests/tui/tui_render.rs:
     /// `extreme_speeds_get_scaled_tick_labels`): a multiple of 3, as SI prefixes go, when the
     /// largest tick lies outside 0.001 … 100 000; `None` otherwise and on a log axis.
     pub fn label_exponent(&self) -> Option<i32> {

@@ -5,13 +5,13 @@
 
 use super::estrin;
 use crate::solver::series;
-use modes::{Modes, abs_sum, antiderivative, quick_cbrt, state_coefficients};
+use modes::{Modes, abs_sum, antiderivative, flow, modes, quick_cbrt};
 
 #[path = "modes.rs"]
 mod modes;
 
 /// What multiplies ε times the terms' sizes in [`Flow::rounding`]: the roots, A, D, P, Q
-/// carry a few roundings each (measured over tests/map_precision.rs's grid: the differences to
+/// carry a few roundings each (measured over tests/physics/map_precision.rs's grid: the differences to
 /// the exact solver stay below 2 ε times the terms' sizes).
 const ROUNDING_FACTOR: f64 = 1.0;
 
@@ -71,7 +71,7 @@ impl Flow {
     /// The flow at (λ, ζ), or `None` where its modes do not separate (the gap (r + σ)² + ω²
     /// vanishes) or the pair does not decay.
     pub fn new(lambda: f64, zeta: f64) -> Option<Flow> {
-        Flow::with_modes(Modes::new(lambda, zeta, f64::cbrt)?, zeta)
+        Flow::with_modes(modes(lambda, zeta, f64::cbrt)?, zeta, 2.0 * zeta * lambda)
     }
 
     /// [`Flow::new`], Cardano's cube root taken by `quick_cbrt` (within an ulp of the
@@ -79,13 +79,14 @@ impl Flow {
     /// flattening's loading (`super::flatten`; the summary keeps `f64::cbrt`, whose maps are pinned by goldens).
     #[inline]
     pub fn new_quick(lambda: f64, zeta: f64) -> Option<Flow> {
-        Flow::with_modes(Modes::new(lambda, zeta, quick_cbrt)?, zeta)
+        Flow::with_modes(modes(lambda, zeta, quick_cbrt)?, zeta, 2.0 * zeta * lambda)
     }
 
-    /// The flow of the modes `m` from the loading's start (z̄, z̄', z̄'') = (0, 1, −2ζ).
+    /// The flow of the modes `m` from the loading's start (z̄, z̄', z̄'') = (0, 1, −2ζ);
+    /// `a0` = 2ζλ, the cubic's constant term.
     #[inline]
-    fn with_modes(m: Modes, zeta: f64) -> Option<Flow> {
-        let (r, sigma, omega2, gap, a0) = (m.r, m.sigma, m.omega2, m.gap, m.a0);
+    fn with_modes(m: Modes, zeta: f64, a0: f64) -> Option<Flow> {
+        let (r, sigma, omega2, gap) = (m.r, m.sigma, m.omega2, m.gap);
         // Z(s) = (s + a0)/cubic (Laplace, z̄(0) = 0, z̄'(0) = 1, z̄''(0) = −2ζ): A is the
         // residue at r, (r + a0)/p'(r) = 2(σ − ζ)/gap; D from matching at s = −σ,
         // (σ − a0 + A ω²)/(σ + r) = 1 − (r + σ) A. Of each two equal forms the one whose
@@ -106,7 +107,7 @@ impl Flow {
             ),
         ];
         let (d, sd) = if d[0].1 <= d[1].1 { d[0] } else { d[1] };
-        Some(m.flow([a, -a, d], [sa, sa, sd]))
+        Some(flow(&m, [a, -a, d], [sa, sa, sd]))
     }
 
     /// The flow at (λ, ζ) from any state (z̄, z̄', z̄'') at τ = 0: the unloading after
@@ -115,9 +116,9 @@ impl Flow {
     /// evaluation's own.
     #[inline]
     pub fn from_state(lambda: f64, zeta: f64, x: [f64; 3]) -> Option<Flow> {
-        let m = Modes::new(lambda, zeta, quick_cbrt)?;
-        let ([a, b, d], [sa, sb, sd]) = state_coefficients(&m, x);
-        let mut flow = m.flow([a, b, d], [sa, sb, sd]);
+        let m = modes(lambda, zeta, quick_cbrt)?;
+        let (coefficients, sizes) = m.coefficients(x);
+        let mut flow = flow(&m, coefficients, sizes);
         flow.tight = true;
         Some(flow)
     }
@@ -286,11 +287,10 @@ impl Flow {
             omega2: self.omega2,
             gap: self.gap,
             p0: self.p0,
-            a0: 0.0,
         };
         let (grown, rate) = self.real_growth(pt);
         xs.map(|x| {
-            let ([a, b, d], _) = state_coefficients(&m, x);
+            let ([a, b, d], _) = m.coefficients(x);
             let (p, q) = antiderivative(&m, b, d);
             let z = a * pt.real + b * pt.ec + d * pt.es;
             (z, a * grown / rate + p * pt.ec + q * pt.es - p)

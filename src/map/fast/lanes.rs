@@ -17,7 +17,7 @@
 //! 0.64–5) the flow is the slowest root's mode and a real pair's cosh and sinh (`lanes/hyper.rs`):
 //! the scalar path's answer to 1e-12, or where its rounding bound refuses and the lanes' does
 //! not (a few points in a thousand of that band), the exact solver's to 1e-12
-//! (tests/map_lanes.rs). Beside that band, where the pair oscillates slowly, τ_m where P ≤ 0
+//! (tests/physics/map_lanes.rs). Beside that band, where the pair oscillates slowly, τ_m where P ≤ 0
 //! is proven first also where the pair part of z̄' rises (`Flow4::pair_rises`), and τ_f where
 //! the real mode overtakes the pair long before the pair's own zero comes from its own start
 //! (`lanes/overtake.rs`). A lane the common path does not settle — a step too long for the
@@ -25,7 +25,7 @@
 //! nearly double, λ or ζ zero — is handed to the scalar [`super::summary`], whole.
 //! The exponential and `atan2` are the lanes' own (`lanes/math.rs`: within 2 ulp of libm's,
 //! the same bits on every machine), `cbrt` `wide`'s written over the lanes (its bits),
-//! `sin_cos` `wide`'s, where the scalar path calls libm's: the answers agree with the scalar path's to 1e-12 (tests/map_lanes.rs), not
+//! `sin_cos` `wide`'s, where the scalar path calls libm's: the answers agree with the scalar path's to 1e-12 (tests/physics/map_lanes.rs), not
 //! bit for bit.
 //!
 //! The files: `lane.rs` (what the kernel asks of four f64, and `wide`'s `f64x4` answering it),

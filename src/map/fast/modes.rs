@@ -1,91 +1,41 @@
 //! The flow's modes and coefficients (`flow.rs`'s [`Flow`] is built from them): the cubic's
-//! real root and pair at (λ, ζ) ([`Modes`], by `propagator::modes_of`), A, B, D from a state,
-//! the pair part's antiderivative, and the quick cube root Cardano's formula takes.
+//! real root and pair at (λ, ζ) and A, B, D from a state (`solver::modes`, the core the
+//! oblique impact's phases share), the pair part's antiderivative, and the quick cube root
+//! Cardano's formula takes.
 
 use super::{Flow, JET};
-use crate::solver::propagator::modes_of;
+pub(super) use crate::solver::modes::Modes;
 
-/// The cubic's modes at (λ, ζ): the real root r and the pair s² + 2σs + (σ² + ω²).
-pub(super) struct Modes {
-    pub(super) r: f64,
-    pub(super) sigma: f64,
-    pub(super) omega2: f64,
-    /// (r + σ)² + ω² = p'(r).
-    pub(super) gap: f64,
-    /// σ² + ω².
-    pub(super) p0: f64,
-    /// 2ζλ, the cubic's constant term.
-    pub(super) a0: f64,
+/// The flow's modes at (λ, ζ) (the loading's: slope 1), `None` where the modes do not
+/// separate (the gap vanishes) or the pair does not decay. `cbrt` takes Cardano's cube root.
+pub(super) fn modes(lambda: f64, zeta: f64, cbrt: fn(f64) -> f64) -> Option<Modes> {
+    let m = Modes::of_phase(lambda, zeta, 1.0, cbrt);
+    (m.gap > 0.0 && m.p0 > 0.0).then_some(m)
 }
 
-impl Modes {
-    /// `None` where the modes do not separate (the gap vanishes) or the pair does not decay.
-    /// `cbrt` takes Cardano's cube root (`propagator::modes_of`).
-    pub(super) fn new(lambda: f64, zeta: f64, cbrt: fn(f64) -> f64) -> Option<Modes> {
-        let a0 = 2.0 * zeta * lambda;
-        let (r, sigma, omega2, gap, p0) = modes_of([2.0 * zeta * (1.0 + lambda), 1.0, a0], cbrt);
-        (gap > 0.0 && p0 > 0.0).then_some(Modes {
-            r,
-            sigma,
-            omega2,
-            gap,
-            p0,
-            a0,
-        })
+/// The flow z̄ = A e^{rτ} + e^{−στ}(B C + D S) of the modes `m` from `[A, B, D]` and their
+/// rounding scales `[sa, sb, sd]`: the antiderivative's P, Q and the jet's rows.
+pub(super) fn flow(m: &Modes, [a, b, d]: [f64; 3], [sa, sb, sd]: [f64; 3]) -> Flow {
+    let (r, sigma, omega2, p0) = (m.r, m.sigma, m.omega2, m.p0);
+    let (p, q) = antiderivative(m, b, d);
+    let sp = (sd + sigma.abs() * sb) / p0;
+    let size = [sa, sb, sd, sp, sb + sigma.abs() * sp];
+    let omega = if omega2 > 0.0 { omega2.sqrt() } else { 0.0 };
+    Flow {
+        size,
+        tight: false,
+        gap: m.gap,
+        p0,
+        r,
+        sigma,
+        omega2,
+        omega,
+        a,
+        d,
+        p,
+        q,
+        jet: m.rows::<JET>([a, b, d]),
     }
-
-    /// The flow z̄ = A e^{rτ} + e^{−στ}(B C + D S) from `[A, B, D]` and their rounding
-    /// scales `[sa, sb, sd]`: the antiderivative's P, Q and the jet's rows.
-    pub(super) fn flow(&self, [a, b, d]: [f64; 3], [sa, sb, sd]: [f64; 3]) -> Flow {
-        let (r, sigma, omega2, p0) = (self.r, self.sigma, self.omega2, self.p0);
-        let (p, q) = antiderivative(self, b, d);
-        let sp = (sd + sigma.abs() * sb) / p0;
-        let size = [sa, sb, sd, sp, sb + sigma.abs() * sp];
-        let omega = if omega2 > 0.0 { omega2.sqrt() } else { 0.0 };
-        // (e^{−στ}(c C + s S))' = e^{−στ}((s − σc) C + (−ω² c − σs) S), as u = (C, S) has
-        // u' = (−ω² S, C)
-        let mut jet = [[0.0; 3]; JET];
-        let (mut ar, mut c, mut s) = (a, b, d);
-        for row in &mut jet {
-            *row = [ar, c, s];
-            (ar, c, s) = (ar * r, s - sigma * c, -omega2 * c - sigma * s);
-        }
-        Flow {
-            size,
-            tight: false,
-            gap: self.gap,
-            p0,
-            r,
-            sigma,
-            omega2,
-            omega,
-            a,
-            d,
-            p,
-            q,
-            jet,
-        }
-    }
-}
-
-/// A, B, D of the flow from the state x = (z̄, z̄', z̄'') at τ = 0, and their rounding scales.
-/// A is the residue at r of the Laplace transform, N(r)/gap, with the numerator
-/// N(s) = z̄ s² + (z̄' + a₂z̄) s + (z̄'' + a₂z̄' + a₁z̄). As a₂ = 2σ − r and a₁ = σ² + ω² − 2σr
-/// (the roots' sums), N(r) = (σ² + ω²) z̄ + 2σ z̄' + z̄'': free of the r² terms that cancel
-/// where the real mode is fast (their rounding, ε z̄ r², would cost D ε|r| z̄ and the
-/// unloading's integral as much: it put the bound 2e4 times over 1e-13 at r = −2e5). B = z̄ − A
-/// and D = z̄' − A r + σB match z̄ and z̄' at 0.
-pub(super) fn state_coefficients(m: &Modes, x: [f64; 3]) -> ([f64; 3], [f64; 3]) {
-    let (r, sigma) = (m.r, m.sigma);
-    let a = (m.p0 * x[0] + 2.0 * sigma * x[1] + x[2]) / m.gap;
-    let sa = (m.p0 * x[0].abs() + 2.0 * (sigma * x[1]).abs() + x[2].abs()) / m.gap;
-    let b = x[0] - a;
-    let d = x[1] - a * r + sigma * b;
-    let sb = x[0].abs() + sa;
-    (
-        [a, b, d],
-        [sa, sb, x[1].abs() + sa * r.abs() + sigma.abs() * sb],
-    )
 }
 
 /// P and Q of the pair part's antiderivative: (e^{−στ}(P C + Q S))' = e^{−στ}((Q − σP) C −

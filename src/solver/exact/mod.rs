@@ -33,7 +33,7 @@ pub(super) const MAX_STEPS: usize = 20_000;
 /// turns back to loading. The unload is located where z̄' = 0 only to rounding, and at a slow
 /// turning point (a creep, z̄'' ~ 1e-12) z̄ may go on rising by a rounding after it, which must
 /// not read as a reload: that would start a loading phase already past its peak
-/// (tests/solver_agreement.rs, `creeps_match_a_40_digit_reference`, λ = 3.2e-8, ζ = 1e4).
+/// (tests/physics/solver_agreement.rs, `creeps_match_a_40_digit_reference`, λ = 3.2e-8, ζ = 1e4).
 const RELOAD_SLACK: f64 = 1e3;
 
 /// The contact indentation z̄ − s (or a derivative) as a functional of w.
@@ -45,7 +45,7 @@ fn l(v: &Vector3<f64>) -> f64 {
 /// soft spring, λ < 1, else 1. Why: a ball creeping into a weak dashpot against a soft spring
 /// (λ ~ 1e-6, ζ ~ 1e4) drives ȳ to hundreds while z̄ − s stays ~1e-5, and the propagator's
 /// rounding is relative to the whole state: scaled, the dissipation along z̄ keeps its digits
-/// (tests/solver_agreement.rs, `creeps_match_a_40_digit_reference`). A stiff
+/// (tests/physics/solver_agreement.rs, `creeps_match_a_40_digit_reference`). A stiff
 /// spring keeps ȳ ≤ F̄/λ small already, and scaling by a large λ would put entries of 2ζλ²
 /// into the matrix (λ = ζ = 1e6: 1e12 beside 1) and break the propagation.
 fn y_scale(lambda: f64) -> f64 {

@@ -27,8 +27,8 @@ impl Modes {
             // The zero root of λ = 0 is not a mode. Every other is, however slow: the recoil
             // spring's relaxation (s ≈ −2ζλ, fifteen decades below the dashpot's rate at
             // λ = 3.1e-12) is what pushes the ball back out, and a phase may settle only once
-            // it has decayed (tests/solver_agreement.rs, `creeps_match_a_40_digit_reference`;
-            // tests/closed_forms.rs, `largest_lambda_and_zeta_still_rebound`, for a complex
+            // it has decayed (tests/physics/solver_agreement.rs, `creeps_match_a_40_digit_reference`;
+            // tests/physics/closed_forms.rs, `largest_lambda_and_zeta_still_rebound`, for a complex
             // pair). Following a slow mode is cheap: the step doubles with τ.
             let oscillation = i > 0 && roots.q < 0.0;
             if norms[i] > 0.0 {
@@ -107,7 +107,7 @@ impl Modes {
         let floor = 600.0 / slow.abs();
         // The next mode is any other faster than the slowest by more than the slowest's own
         // rounding: two slow modes of a creep are told apart however far the fast one lies
-        // (λ = 1e-9, ζ = 3000: −6.2e-6 and −1.6e-4 beside −1.7e5; tests/solver_agreement.rs,
+        // (λ = 1e-9, ζ = 3000: −6.2e-6 and −1.6e-4 beside −1.7e5; tests/physics/solver_agreement.rs,
         // `soft_spring_release_is_a_rebound_for_both`). Counting a near-double root as two
         // only makes the settle time later: safe.
         let next = live

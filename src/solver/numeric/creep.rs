@@ -13,7 +13,7 @@
 //! Why: a ball creeping out of a weak dashpot (λ < 1e-11, ζ > 100) sits at z̄ − z̄_f ~ 1e-16
 //! (Hertz) for ~1e5 ω0⁻¹, inside every integrator's tolerance of the 3/2-power kink at z̄_f.
 //! Integrated, it would cross z̄_f in the noise, phase after phase, never reaching its
-//! separation within a bounded budget; closed, it answers (tests/solver_agreement.rs,
+//! separation within a bounded budget; closed, it answers (tests/physics/solver_agreement.rs,
 //! `creeps_at_the_integrators_noise_floor_answer` and `closed_creeps_agree_with_the_exact_solver`).
 //!
 //! The error of holding z̄: the true motion differs by the forcing λ(z̄ − z̄_f) + z̄'/(2ζ). The
@@ -193,7 +193,7 @@ pub(super) fn close(
     // A creep that asks less of the contact than its force at z̄_f + z_tol is below what the
     // integrators resolve: integrating it on is noise (crossings of z̄_f, a phase each, until
     // the budget runs out), and the closure is the better answer whatever its bound
-    // (tests/solver_agreement.rs, `closed_creeps_agree_with_the_exact_solver`: λ = 3.3e-10,
+    // (tests/physics/solver_agreement.rs, `closed_creeps_agree_with_the_exact_solver`: λ = 3.3e-10,
     // ζ = 1, a creep asking 1.7e-12 of a contact whose force is known to 3.7e-7).
     let unresolved = peak <= c.unloading_force(u.z_f + z_tol, u);
     (unresolved || error <= tol * cor.max(rest)).then_some(Closed {

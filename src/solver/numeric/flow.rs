@@ -7,7 +7,7 @@
 //! exact at every knot — and the ball's speed is ᾱ' at the phase's start minus the exact
 //! integral of that cubic: F̄, F̄' and ᾱ' are one consistent motion (ᾱ'' = −F̄ holds to
 //! rounding, which the tangential closed forms and their energy balance rest on). Between
-//! knots F̄ is good to the interpolation error, O(h⁴ F̄⁗) for a step h (tests/oblique_laws.rs
+//! knots F̄ is good to the interpolation error, O(h⁴ F̄⁗) for a step h (tests/physics/oblique_laws.rs
 //! holds the linear law's numeric flow against its exact one).
 
 use super::X;

@@ -54,7 +54,7 @@ impl Impact {
     /// where it is far below the energy bound: a ball at the integrator's noise floor with a
     /// spring so soft that it holds ½λȳ² but drives the ball at only 2ζλȳ, whose separation
     /// (a crossing of z̄ ~ 1e-27) no integrator resolves; it is at rest, and the run answers
-    /// (tests/solver_agreement.rs, `adaptive_creeps_out_at_a_soft_spring`: λ = 1e-15, ζ = 5).
+    /// (tests/physics/solver_agreement.rs, `adaptive_creeps_out_at_a_soft_spring`: λ = 1e-15, ζ = 5).
     pub(super) fn cor_bound(&self, x: &X) -> f64 {
         let (z, v) = (x[0], x[1]);
         let contact = match self.phase {
@@ -133,7 +133,7 @@ impl Impact {
     /// the unloading one by (slope difference) × slack. Against a weak dashpot that jump turns
     /// z̄' negative at once (2ζ × it, against a creep of z̄' ~ 6e-9): an unload, a reload a
     /// slack higher, and so on without end. At the same force the ball goes on creeping in on
-    /// the loading branch (tests/solver_agreement.rs,
+    /// the loading branch (tests/physics/solver_agreement.rs,
     /// `a_creep_past_yield_reloads_at_the_same_force`). The ball stays put; the element moves
     /// by Δ = z̄ − z̄', the spring taking λȳΔ of the contact's FΔ and the dashpot (F − λȳ)Δ, so
     /// the energy balance is kept.
@@ -193,7 +193,7 @@ impl ODE<f64, X> for Impact {
     /// indentations a creeping ball lives on (z̄ ~ 1e-5 down to 1e-16) and than its distance to
     /// a kink of the force: near the elastic–plastic yield point z̄_p a difference reaches
     /// across it into the linear branch and gives the wrong slope, on which Radau5's Newton
-    /// iteration converges only on steps near the dashpot's time (tests/solver_agreement.rs,
+    /// iteration converges only on steps near the dashpot's time (tests/physics/solver_agreement.rs,
     /// `a_yield_met_mid_creep_against_a_stiff_contact_answers`; the written-out form is
     /// `the_jacobian_is_the_derivative_of_the_system` below).
     ///

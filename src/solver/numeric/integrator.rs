@@ -9,8 +9,8 @@
 //! one collapses, and where, changes with the tolerance: no order of them passes every phase
 //! at every tolerance. So a phase is handed down the list below from the state where the
 //! previous one gave up, and only when all have given up is the phase failed (what holds then,
-//! an answer or an honest "no answer", is checked over the domain by tests/properties.rs,
-//! `every_run_keeps_the_invariants`, and tests/solver_agreement.rs,
+//! an answer or an honest "no answer", is checked over the domain by tests/physics/properties.rs,
+//! `every_run_keeps_the_invariants`, and tests/physics/solver_agreement.rs,
 //! `creeps_at_the_integrators_noise_floor_answer`).
 
 use super::{ATOL_FACTOR, Impact, X};

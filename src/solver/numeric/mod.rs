@@ -33,7 +33,7 @@ type X = [f64; 4];
 /// that coincide (an elastic contact, z̄_f = 0: the unloading branch is the loading law
 /// itself) is not counted here but against `MAX_FLIPS`: it changes no force, and a real
 /// turning point held for thousands of ω0⁻¹ flips tens of thousands of times, a few steps each
-/// (tests/solver_agreement.rs, `creeps_leave_at_the_springs_pace`: Hertz, λ = 7.6e-9, ζ = 1e4).
+/// (tests/physics/solver_agreement.rs, `creeps_leave_at_the_springs_pace`: Hertz, λ = 7.6e-9, ζ = 1e4).
 const MAX_PHASES: usize = 4096;
 /// Budget of flips between coinciding branches (see `MAX_PHASES`); each records an event.
 const MAX_FLIPS: usize = 1 << 17;
@@ -65,7 +65,7 @@ const STIFF: f64 = 2000.0;
 /// manifold of a weak dashpot, leaves at that pace within the integrator's noise, and z̄' at
 /// z̄_f never clears it: taking it at 1e-3 of the pace finds it to that, and turns away
 /// crossings made in the noise with the ball moving out far slower (`audit`'s
-/// outruns_the_element holds every answer to 2e-3 of the pace; tests/solver_agreement.rs,
+/// outruns_the_element holds every answer to 2e-3 of the pace; tests/physics/solver_agreement.rs,
 /// `creeps_leave_at_the_springs_pace`, λ = 4.2e-8, ζ = 6.3, elastic–plastic).
 const PACE_SLACK: f64 = 1e-3;
 /// The relative error of the COR up to which a creep may be finished in closed form (the bound
@@ -77,7 +77,7 @@ const CREEP_TOL: f64 = 0.1 * PACE_SLACK;
 /// estimates can pass steps far less accurate than rtol: under Hertz at λ = 30, ζ = 40 the
 /// balance closed to 7.8e-8 at rtol 1e-10 and the COR was 6e-8 off, the same at rtol 1e-14,
 /// where DOPRI5 closes the balance to 1e-13 and meets the independent reference to 4e-14
-/// (tests/solver_agreement.rs, `stiff_runs_are_checked_by_their_energy_balance`). DOPRI5's
+/// (tests/physics/solver_agreement.rs, `stiff_runs_are_checked_by_their_energy_balance`). DOPRI5's
 /// own balance reaches ~35 rtol (`audit::energy_tolerance`), hence the margin.
 const RECHECK: f64 = 100.0;
 /// DOPRI5's reach along the negative real axis, in steps of 1/rate: a recheck is run only
@@ -92,7 +92,7 @@ const REST_COR: f64 = 1e-9;
 /// time 1/(2ζλ). Capped only where τ itself would lose its digits against the step sizes of
 /// the contact (1e18 ω0⁻¹, λ ≈ 5e-19 at ζ = 1): a recoil spring as soft as λ = 1e-12 releases
 /// the ball only after ~1/(2ζλ), and that must lie inside the horizon for the run to answer
-/// (tests/properties.rs, `every_run_keeps_the_invariants`, draws λ down to 1e-15).
+/// (tests/physics/properties.rs, `every_run_keeps_the_invariants`, draws λ down to 1e-15).
 fn horizon(n: &Normalized) -> f64 {
     let relax = if n.lambda > 0.0 && n.zeta > 0.0 {
         1.0 / (2.0 * n.zeta * n.lambda)

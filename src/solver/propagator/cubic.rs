@@ -54,7 +54,7 @@ fn polish(a: [f64; 3], mut s: C) -> C {
 /// A pair closer than this (((s2 − s3)/2)² < NEAR_DOUBLE · centre²) is near-double: its
 /// roots are not polished one by one on the cubic, where p' ≈ 0 leaves each with only half
 /// the digits (a centre off by ~1e-8 cost τ_f 2.5e-8 at λ = 0.02, ζ = 1.7861026411617908;
-/// tests/map_precision.rs). Its centre and q from the quadratic factor are exact to rounding
+/// tests/physics/map_precision.rs). Its centre and q from the quadratic factor are exact to rounding
 /// (q to ε·centre² absolute, which the flow, smooth in q, sees only as ε). Below it, a
 /// polished root would lose at most ~ε/√NEAR_DOUBLE = 1e2 ε to its neighbour.
 const NEAR_DOUBLE: f64 = 1e-4;

@@ -14,7 +14,7 @@
 //! between its nodes against the same reference, and keeps a patch (or part) only where that
 //! error is within [`TOLERANCE`] (`error` says how it is measured). The file is `hertz.bin`
 //! (`format`, version 3: an index of the patches' records, each read at its patch's first
-//! use). tests/hertz_table.rs re-computes seeded nodes of patches and parts
+//! use). tests/physics/hertz_table.rs re-computes seeded nodes of patches and parts
 //! (they must equal the file's), and meets the reference to 1e-12 at 1 000 seeded points off
 //! the nodes of the kept squares.
 //!
@@ -125,7 +125,7 @@ impl Grid {
     /// (λ̂, ζ̂) at the local coordinates (x, y) ∈ [−1, 1]² of the square `c`. At level 0
     /// s = 1 and a = b = 0 leave every bit of `point`'s arithmetic for a whole patch, so a
     /// whole patch's nodes are those of the version-1 file
-    /// (tests/hertz_table.rs, `seeded_nodes_computed_again_equal_the_file`).
+    /// (tests/physics/hertz_table.rs, `seeded_nodes_computed_again_equal_the_file`).
     pub fn cell_point(&self, c: &Cell, x: f64, y: f64) -> (f64, f64) {
         let s = 0.5f64.powi(c.level as i32);
         let u = self.u0 + self.du * (c.iu as f64 + s * (c.a as f64 + 0.5 * (x + 1.0)));
@@ -189,7 +189,7 @@ pub fn reference(lambda_hat: f64, zeta_hat: f64) -> Option<[f64; OUTPUTS]> {
 
 /// The table's error against the reference at one point: each output relative to its size,
 /// but ȳ (which vanishes as ζ̂ → 0 or λ̂ → ∞, where its reference is good only to the
-/// rounding of the state, of size ẑ) relative to ẑ_m, as tests/taylor.rs measures z̄_f.
+/// rounding of the state, of size ẑ) relative to ẑ_m, as tests/physics/taylor.rs measures z̄_f.
 pub fn error(table: &[f64; OUTPUTS], reference: &[f64; OUTPUTS]) -> f64 {
     let rel = |k: usize, scale: f64| (table[k] - reference[k]).abs() / scale;
     if table.iter().chain(reference).any(|x| !x.is_finite()) {
@@ -285,8 +285,8 @@ struct Table {
 }
 
 /// The table, opened once; `None` when the file's header or index does not read or is not
-/// on [`GRID`] (then every impact goes to the Taylor steps; tests/hertz_table.rs fails on
-/// it). A patch whose record does not read answers nowhere (tests/hertz_table.rs reads every
+/// on [`GRID`] (then every impact goes to the Taylor steps; tests/physics/hertz_table.rs fails on
+/// it). A patch whose record does not read answers nowhere (tests/physics/hertz_table.rs reads every
 /// record of the committed file).
 fn table() -> Option<&'static Table> {
     static TABLE: OnceLock<Option<Table>> = OnceLock::new();
@@ -331,7 +331,7 @@ fn hertz_point(n: &Normalized) -> Option<(f64, f64, f64)> {
 
 /// Whether the table holds the Hertz impact of `n` — where [`summary`] looks it up — without
 /// evaluating it (a lookup, some tens of ns): `api::first_pass` finds the same by evaluating,
-/// and tests/rows_columns.rs checks its counts against this.
+/// and tests/physics/rows_columns.rs checks its counts against this.
 pub fn holds(n: &Normalized) -> bool {
     n.zp_bar > 0.0
         && hertz_point(n)

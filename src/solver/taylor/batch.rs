@@ -5,7 +5,7 @@
 //! event: the step rule lane by lane, Horner sums in lanes); a step with an event goes to the
 //! single impact's code (`stages::PowerImpact`) with that lane's series. A lane runs the same
 //! IEEE operations in the same order as the single path (`power::series_of`, `poly::eval`), so
-//! every answer is its bits (tests/taylor_batch.rs
+//! every answer is its bits (tests/physics/taylor_batch.rs
 //! `batched_summaries_are_the_single_ones_bit_for_bit`).
 //!
 //! The lanes are plain `[f64; W]` with element-wise operators, compiled inside

@@ -6,7 +6,7 @@
 //! compilation with it), libm's `fma` elsewhere, the same bits either way
 //! (`batch::tests::series_are_the_same_bits_without_fma_instructions` holds the series so).
 //! The lanes of `super::batch` run [`horner`] on their own FMA compilation, so a lane's
-//! sums are the single path's bits (tests/taylor_batch.rs).
+//! sums are the single path's bits (tests/physics/taylor_batch.rs).
 
 use super::poly::{self, Coef};
 

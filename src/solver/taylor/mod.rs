@@ -22,7 +22,7 @@
 //! stretch: where the rate times the contact time exceeds `STIFF`, and wherever the run
 //! needs more than `MAX_STEPS` steps (creeps, no rebound) or reloads after unloading began,
 //! `summary` returns `None` and the caller runs the adaptive solver (or the exact one).
-//! tests/taylor.rs holds the answers to the adaptive solver's over the property tests' domain.
+//! tests/physics/taylor.rs holds the answers to the adaptive solver's over the property tests' domain.
 
 pub mod batch;
 mod fused;
@@ -75,7 +75,7 @@ const TAU_MAX: f64 = 1e3;
 /// keeps order 20 and ε 1e-17, so the table's nodes are unchanged.
 const POWER_LEN: usize = 29;
 /// The 3/2-power phases' truncation per step in [`summary`], relative to the state's scale:
-/// 1e-15, some ten steps of it 1e-14 at most, far inside the 1e-12 at which tests/taylor.rs
+/// 1e-15, some ten steps of it 1e-14 at most, far inside the 1e-12 at which tests/physics/taylor.rs
 /// holds the steps to the adaptive solver at rtol 1e-14
 /// (`taylor_meets_the_reference_at_a_thousand_points`).
 const POWER_EPS: f64 = 1e-15;

@@ -12,7 +12,7 @@
 //! z̄_m ≤ z̄_p Eqs. 18–19 give z̄_r = z̄_m, z̄_f = 0, so the unloading of Eq. 12 is
 //! F̄_m (z̄/z̄_m)^{3/2} = κ z̄^{3/2}, the loading curve again. [`below_yield`] takes the Hertz
 //! table's answer (`solver::table`, good to its `TOLERANCE`, 1e-12 of each output) there,
-//! with the margin [`YIELD_MARGIN`] between its z̄_m and z̄_p; tests/taylor.rs holds it to
+//! with the margin [`YIELD_MARGIN`] between its z̄_m and z̄_p; tests/physics/taylor.rs holds it to
 //! the Taylor steps and the adaptive solver (`elastic_plastic_below_yield_is_the_hertz_impact`,
 //! `elastic_plastic_near_yield`).
 //!

@@ -222,7 +222,7 @@ pub(super) enum Stop {
 /// Σ c_k h^k by Estrin's scheme: the pairs c_{2i} + c_{2i+1} h, then the pairs of those with
 /// h², and so on: ⌈log₂ L⌉ dependent steps instead of Horner's L − 1. Its rounding is
 /// bounded as Horner's (both sum the same products, each with at most ⌈log₂ L⌉ or L
-/// roundings), and tests/taylor.rs holds the answers it gives to the references.
+/// roundings), and tests/physics/taylor.rs holds the answers it gives to the references.
 #[inline(always)]
 pub(super) fn eval_estrin<const L: usize>(c: &[f64; L], h: f64) -> f64 {
     estrin_by(c, h, |low, high, x| low + high * x)

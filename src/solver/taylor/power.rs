@@ -48,7 +48,7 @@ pub(super) struct Run {
 
 /// The Taylor coefficients of (s, ᾱ', ȳ, τ) at x to order L − 1 (Cauchy products, each O(k)
 /// at order k, summed in the order of i): the Hertz table's reference ([`run`], from
-/// `super::hertz_reference`), whose nodes tests/hertz_table.rs holds to the committed
+/// `super::hertz_reference`), whose nodes tests/physics/hertz_table.rs holds to the committed
 /// file's bits. The fast paths take [`series_of`].
 pub(super) fn series<const L: usize>(sys: &Sys, br: &Branch, x: [f64; 4]) -> [[f64; L]; 4] {
     let (mut s, mut v, mut y, mut t) = ([0.0; L], [0.0; L], [0.0; L], [0.0; L]);

@@ -14,7 +14,7 @@ pub(super) struct Rules {
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(super) enum Sums {
     /// `powf` and Horner's sums ([`poly::step_of_norms`], [`poly::root`]): the Hertz table's
-    /// reference, whose nodes tests/hertz_table.rs holds to the committed file's bits.
+    /// reference, whose nodes tests/physics/hertz_table.rs holds to the committed file's bits.
     Reference,
     /// The quick rule and roots ([`poly::quick_step_of_norms`], [`poly::root_quick`]), each
     /// product and sum rounded apart: the linear phases, so that the linear law's answers

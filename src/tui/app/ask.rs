@@ -43,7 +43,7 @@ impl App {
     }
 
     /// The measured data, the data to fit and the fit pane put away, as one change `u`
-    /// undoes (tests/tui_fit.rs: `o_asks_before_putting_away_and_u_puts_back`).
+    /// undoes (tests/tui/tui_fit.rs: `o_asks_before_putting_away_and_u_puts_back`).
     fn put_away(&mut self) {
         let id = self.fit.id;
         let was = std::mem::take(&mut self.fit);

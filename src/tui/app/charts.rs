@@ -140,7 +140,7 @@ impl App {
 impl App {
     /// A chart's name as its frame shows it ("COR vs speed", "Force–time"), never the
     /// export's file name ("peers-cor-velocity": issue 51 item 4, no internal names on screen;
-    /// tests/tui_crosshair.rs: `chart_keys_say_what_works_where_they_do_not_read`).
+    /// tests/tui/tui_crosshair.rs: `chart_keys_say_what_works_where_they_do_not_read`).
     fn chart_name(&self, chart: ChartId) -> String {
         let title = self
             .chart_figure(chart)

@@ -67,7 +67,7 @@ impl App {
                 self.info(format!("loaded {name}"));
             }
             // 4 loads a start preset that is none of the three; the help offers it, so
-            // say why it does nothing here (tests/tui_app.rs: `four_says_why_it_loads_nothing`)
+            // say why it does nothing here (tests/tui/tui_app.rs: `four_says_why_it_loads_nothing`)
             None if i == 3 => self.warn(format!(
                 "4 loads the start preset when it is not one of 1–3: 1–{} load one",
                 self.presets.len()

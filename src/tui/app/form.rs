@@ -10,7 +10,7 @@ use crate::tui::physical::{self, Field, Form};
 /// The text a field's entry opens with: its value, or nothing when it has no finite one (the
 /// wall's M = ∞, a metal ball's E). Never the form's "—": typing appends to the entry's text,
 /// so "0.8" typed into "—" read "'—0.8' is not a number" (issue 51;
-/// tests/tui_form.rs: `an_entry_opens_holding_its_value_or_empty`).
+/// tests/tui/tui_form.rs: `an_entry_opens_holding_its_value_or_empty`).
 /// In the field's screen unit (g, mm), as the form shows it, to six digits: an entry
 /// submitted as it opened is no change (`submit_physical`).
 fn entry_text(field: Field, v: f64) -> String {

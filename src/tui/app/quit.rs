@@ -39,7 +39,7 @@ impl App {
         if self.fit.pane.is_some() {
             lost.push("the fit".into());
         }
-        // a change undone back to the start is none (tests/tui_quit.rs:
+        // a change undone back to the start is none (tests/tui/tui_quit.rs:
         // `q_asks_after_any_edit_and_not_after_it_is_undone`)
         if self.setting != self.kept.setting || self.oblique.values() != self.kept.oblique {
             lost.push("your changes (S saves them)".to_string());

@@ -16,7 +16,7 @@ impl App {
 
     /// Whether `action` may act below the minimum size: quitting, the new size, the clock,
     /// and every answer of the loop and the workers (`answers::is_answer`: dropped, a
-    /// result would be lost — tests/tui_oblique.rs, tests/tui_picker.rs).
+    /// result would be lost — tests/tui/tui_oblique.rs, tests/tui/tui_picker.rs).
     pub(super) fn acts_when_too_small(action: &Action) -> bool {
         matches!(action, Action::Quit | Action::Resize(..) | Action::Tick(_))
             || super::answers::is_answer(action)

@@ -1,6 +1,6 @@
 //! What `u` says it undid: each value the undo changes, from what it was to what it is again,
 //! in the explorer's one number format and the readout's units ("undone: m 50 → 37.4 g";
-//! issue 51; tests/tui_app.rs: `u_says_what_it_undid`).
+//! issue 51; tests/tui/tui_app.rs: `u_says_what_it_undid`).
 
 use super::{App, Setting, Undoable};
 use crate::tui::format::{screen_unit, value};

@@ -269,7 +269,7 @@ impl<'a> Plot<'a> {
     ) -> (Vec<(u16, u16)>, Vec<Line<'static>>) {
         let cell = |p: Option<(f64, f64)>| Some((l.col(p?.0)?, l.row(p?.1)?));
         // the markers' own cells: a tag keeps off them, as a marker's glyph stays on its
-        // point (tests/tui_render.rs: `tags_keep_off_the_markers`)
+        // point (tests/tui/tui_render.rs: `tags_keep_off_the_markers`)
         let points: Vec<(u16, u16)> = self
             .figure
             .series
@@ -336,7 +336,7 @@ impl<'a> Plot<'a> {
             tagged.push((y, x, x + w));
         }
         // every cell a tag or a marker's text took: nothing later writes over them, and the
-        // legend keeps off them (tests/tui_render.rs:
+        // legend keeps off them (tests/tui/tui_render.rs:
         // `value_labels_show_whole_beside_legends_and_pins`)
         let mut taken: Vec<(u16, u16)> = tagged
             .iter()
@@ -356,7 +356,7 @@ impl<'a> Plot<'a> {
                 let bounds = (l.plot.x, l.plot.right(), l.plot.y, l.plot.bottom());
                 // a text keeps off every other marker's glyph too, drawn or still to come:
                 // each glyph stays on its point and each label reads whole
-                // (tests/tui_marks.rs)
+                // (tests/tui/tui_marks.rs)
                 let blocked: Vec<(u16, u16)> = taken
                     .iter()
                     .copied()

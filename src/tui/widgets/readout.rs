@@ -51,7 +51,7 @@ pub struct Readout<'a> {
 
 /// The narrowest pane (inner columns) that takes the four compact lines, whose results line
 /// holds e and F_m with their measured values (about 52 columns): the full-width pane at
-/// 60 × 20 shows the results (tests/tui_render.rs: `the_sweeps_readout_keeps_its_results_at_60x20`).
+/// 60 × 20 shows the results (tests/tui/tui_render.rs: `the_sweeps_readout_keeps_its_results_at_60x20`).
 const COMPACT_FROM: usize = 52;
 
 impl Widget for &Readout<'_> {
@@ -65,7 +65,7 @@ impl Widget for &Readout<'_> {
         } else {
             self.compact()
         };
-        // a long line breaks between its fields, never inside a value (tests/tui_render.rs:
+        // a long line breaks between its fields, never inside a value (tests/tui/tui_render.rs:
         // `readout_values_never_wrap`)
         let lines = crate::tui::format::fit_lines(lines, inner_w);
         Paragraph::new(lines)
@@ -342,7 +342,7 @@ impl Readout<'_> {
         lines.extend(self.validity_line());
         if let Some(r) = self.run {
             // the Hertz law is elastic: it never flattens, whatever z_m and z_p (docs/model.md
-            // §3; tests/answer_warnings.rs)
+            // §3; tests/cli/answer_warnings.rs)
             let hertz = self.setting.law == crate::model::contact::ContactLaw::Hertz;
             let note = match (r.rebound, r.permanent_indentation > 0.0) {
                 (false, _) => " no rebound: the ball sinks into the dashpot",

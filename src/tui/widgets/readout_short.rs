@@ -54,7 +54,7 @@ impl Readout<'_> {
             lines.push(Line::raw(format!(" {}{unit}", compact_row(row))));
         }
         // the pins' Δe before the indentations, which the pane's height may cut
-        // (tests/tui_pins.rs: `pins_at_80x24_show_their_delta_e`)
+        // (tests/tui/tui_pins.rs: `pins_at_80x24_show_their_delta_e`)
         lines.extend(pins::compact(self.pins, &self.now()));
         lines.push(Line::raw(format!(
             " {} mm  {} mm",

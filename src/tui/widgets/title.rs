@@ -1,5 +1,5 @@
 //! A chart's title fitted to its frame: the axes and their units stay, everything else goes
-//! first (tests/tui_render.rs: `chart_titles_keep_their_units_at_every_size`).
+//! first (tests/tui/tui_render.rs: `chart_titles_keep_their_units_at_every_size`).
 //!
 //! Titles are parts joined by " · ": a name ("Force–time"), the axes with their units
 //! (`F [N] vs t [ms]`), qualifiers ("linear law, no flattening"), the crosshair's reading

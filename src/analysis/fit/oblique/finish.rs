@@ -80,8 +80,8 @@ fn intervals(
 
 /// Residuals all zero with degrees of freedom left: s² = 0 would make every standard error 0,
 /// an interval that says "certain" where the data show no scatter to estimate it from; as the
-/// other fits (`analysis::fit::multi`, tests/cli_fit_reports.rs), no standard error, no
-/// interval, a warning, and the values judged as an exact solve. tests/cli_fit_oblique.rs,
+/// other fits (`analysis::fit::multi`, tests/cli/cli_fit_reports.rs), no standard error, no
+/// interval, a warning, and the values judged as an exact solve. tests/cli/cli_fit_oblique.rs,
 /// `bounces_the_model_meets_exactly_leave_no_scatter`.
 fn no_scatter(sol: &lm::Solution) -> bool {
     sol.residuals.len() > sol.x.len() && sol.residuals.iter().all(|r| *r == 0.0)

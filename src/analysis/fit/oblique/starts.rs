@@ -5,7 +5,7 @@
 /// smooth in them (a row turns from sliding to gripping) and oscillates with the grip's phase
 /// at separation (√(K_t (1 + 1/κ)), docs/oblique.md §2): the cost has local minima, and a
 /// start in the wrong valley stays there (`spins_do_not_stop_in_a_local_minimum`,
-/// tests/fit_oblique_coverage.rs). With c_t fitted (last in x), also c_t a factor 3 either
+/// tests/analysis/fit_oblique_coverage.rs). With c_t fitted (last in x), also c_t a factor 3 either
 /// way at the start's μ and K_t.
 pub(super) fn starting_points(x0: &[f64], spins: bool, damped: bool) -> Vec<Vec<f64>> {
     let (ln2, ln3, ln10) = (2f64.ln(), 3f64.ln(), 10f64.ln());

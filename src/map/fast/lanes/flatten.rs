@@ -6,7 +6,7 @@
 //! Newton), its turn τ_m from the pair's phase atan2(P, −Q) by Householder's steps; the turn's
 //! values (z̄_m, z̄''(τ_m), ∫₀^τ_m z̄) from the last jet by Taylor's series, as the scalar path
 //! takes them. The unloading is the same cubic at (λ/k, ζ√k) from the state (u0, 0, u2)
-//! (`Unload::from_state` in `lanes/unload.rs`: `flow::state_coefficients`' A, B, D), its
+//! (`Unload::from_state` in `lanes/unload.rs`: `solver::modes::Modes::coefficients`' A, B, D), its
 //! separation from the pair's first zero of u past the phase 0 (`search::separation_guess`),
 //! refined the same way.
 //! The rounding bounds — the turn's, the unloading's own (the scalar `tight` bound), and the
@@ -18,7 +18,7 @@
 //! (the scalar path's bracket search: reloads, long steps), and where the bound cannot keep
 //! `KEEP`. A lane's answer agrees with the scalar `flattening` to 1e-12, not bit for bit: the
 //! exponential, `atan2` and `cbrt` are the lanes' (`math.rs`), and the flows' sums and steps
-//! are `math::Estrin`'s (tests/map_flatten_lanes.rs) — a lone cell (`flattening_one`) is one
+//! are `math::Estrin`'s (tests/physics/map_flatten_lanes.rs) — a lone cell (`flattening_one`) is one
 //! dependent chain, shortened where a series, a quotient by a constant or by ω stood on it.
 
 use super::super::lane::{LANES, Lane};
@@ -235,7 +235,7 @@ pub const FLAT_WIDE: usize = 2 * LANES;
 
 /// Eight flattening cells at once, the lanes' own answers (`None` where a lane is handed
 /// back): with AVX2 and FMA two AVX registers in one instruction stream (`pair.rs`), elsewhere two
-/// calls of the portable kernel; the same bits either way (tests/map_flatten_lanes.rs).
+/// calls of the portable kernel; the same bits either way (tests/physics/map_flatten_lanes.rs).
 pub fn flattening_lanes8(
     lambda: [f64; FLAT_WIDE],
     zeta: [f64; FLAT_WIDE],

@@ -2,7 +2,7 @@
 //! any [`Lane`] (the module's introduction, `lanes.rs`, says what it computes and where it
 //! hands a lane back). Generic so that one text compiles to the portable `f64x4` and to the
 //! AVX register (`avx.rs`); every operation is a [`Lane`] primitive or `math.rs`'s, so both
-//! give the same bits (`avx2_and_portable_kernels_agree_bit_for_bit`, tests/map_lanes.rs).
+//! give the same bits (`avx2_and_portable_kernels_agree_bit_for_bit`, tests/physics/map_lanes.rs).
 
 use super::lane::Lane;
 use super::math::{Horner, Sums, atan2, exp_m1_small};

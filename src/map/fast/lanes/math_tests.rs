@@ -192,7 +192,7 @@ fn cbrt_is_wides_bit_for_bit() {
 }
 
 /// The AVX lane type gives the portable one's bits, function by function (the whole kernel:
-/// tests/map_lanes.rs `avx2_and_portable_kernels_agree_bit_for_bit`).
+/// tests/physics/map_lanes.rs `avx2_and_portable_kernels_agree_bit_for_bit`).
 #[cfg(target_arch = "x86_64")]
 #[test]
 fn avx_and_portable_math_agree_bit_for_bit() {

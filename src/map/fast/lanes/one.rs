@@ -6,7 +6,7 @@
 //! floor, comparisons) and bit operations on its representation, which no crate offers as one
 //! type with masks. Each method is the scalar form of what `wide`'s `f64x4` and the AVX lane
 //! type do to each of their lanes, so lane 0 of `One` is any lane of theirs bit for bit
-//! (`one_lane_is_the_maps_lane_bit_for_bit`, tests/map_flatten_lanes.rs): the same correctly
+//! (`one_lane_is_the_maps_lane_bit_for_bit`, tests/physics/map_flatten_lanes.rs): the same correctly
 //! rounded operations, `mul_add` a fused multiply-add (`f64::mul_add`: one `vfmadd` where the
 //! caller enables FMA, libm's `fma` elsewhere — the same bits), `sin_cos` `wide`'s
 //! `f64x4::sin_cos` of the value splatted (the function the other lane types call).

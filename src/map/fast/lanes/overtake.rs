@@ -15,7 +15,7 @@
 //! 0 there). Four steps (F' ≈ 1/((σ + r)τ) ≈ 0.1 on the map's cells) make the start for
 //! Householder's steps, which must settle on a falling crossing between τ_m and that bound;
 //! elsewhere the lane goes to the scalar path, as before. The answers are the scalar path's
-//! (its bracket search) to 1e-12: tests/map_lanes.rs.
+//! (its bracket search) to 1e-12: tests/physics/map_lanes.rs.
 
 use super::super::lane::Lane;
 use super::super::math::ln_guess;

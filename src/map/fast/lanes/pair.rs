@@ -7,7 +7,7 @@
 //! so). Two independent registers in one instruction stream give the out-of-order core a
 //! second chain to run in those waits (BENCHMARKS.md, "Two registers in one stream"). Each
 //! half runs exactly the operations it would run alone, so a lane's bits are its four-lane
-//! kernel's (`eight_lanes_are_two_fours_bit_for_bit`, tests/map_lanes.rs): the loops that stop
+//! kernel's (`eight_lanes_are_two_fours_bit_for_bit`, tests/physics/map_lanes.rs): the loops that stop
 //! when no lane is active only run longer, on lanes whose answers are masked off.
 
 use super::lane::Lane;

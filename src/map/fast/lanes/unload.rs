@@ -1,6 +1,6 @@
 //! The flattening's unloading over any [`Lane`] (issue 30 item 2; `lanes/flatten.rs` is its
 //! caller): the loading's cubic at (λ/k, ζ√k) as a `Flow4` from the turn's state (u0, 0, u2)
-//! (`flow::state_coefficients`' A, B, D with z̄' = 0), ∫₀^s u, and the rounding bounds of a
+//! (`solver::modes::Modes::coefficients`' A, B, D with z̄' = 0), ∫₀^s u, and the rounding bounds of a
 //! flow from a state (the scalar `tight` flow's: `Flow::rounding`, `Flow::responses`), lane by
 //! lane, as `flatten::flattening` forms them.
 
@@ -56,7 +56,7 @@ impl<L: Lane> Unload<L> {
         let omega2 = p0 - sigma * sigma;
         let gap = (r + sigma) * (r + sigma) + omega2;
         ok &= gap.gt(v(0.0)) & p0.gt(v(0.0)) & omega2.gt(v(0.0));
-        // `flow::state_coefficients` with z̄' = 0: A = N(r)/gap, B = z̄ − A, D = −A r + σB
+        // `solver::modes::Modes::coefficients` with z̄' = 0: A = N(r)/gap, B = z̄ − A, D = −A r + σB
         let a = (p0 * u0 + u2) / gap;
         let sa = (p0 * u0.abs() + u2.abs()) / gap;
         let b = u0 - a;

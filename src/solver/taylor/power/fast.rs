@@ -50,7 +50,7 @@ impl Coefs<f64> {
 /// the middle out, so the one holding order n − 1's coefficients comes last, and the terms
 /// of the coefficients order n computes (s₀p_n, p₀p_n, s₀ȳ'_n) after them: an order waits on
 /// the one before for a few sums, not for a whole chain. A lane runs f64's IEEE operations
-/// in the same order, so its coefficients are the f64 path's bits (tests/taylor_batch.rs
+/// in the same order, so its coefficients are the f64 path's bits (tests/physics/taylor_batch.rs
 /// `batched_summaries_are_the_single_ones_bit_for_bit`). s² and ȳ' go to `scratch`, kept by
 /// the caller from step to step: order n writes their n-th terms before any order reads
 /// them, so it need not be cleared.

@@ -72,7 +72,7 @@ fn render(p: DropPanel, area: Rect, buf: &mut Buffer) {
 /// curve is, behind), the part already flown bright, the ball now as a dot, the standard's
 /// window as two dotted lines across. Drawn by the explorer's one plot widget
 /// (`widgets::plot`), so its ticks are the other charts' (`figure::ticks`), each label at its
-/// value's place (tests/tui_ticks.rs); ratatui's `Chart` spread them evenly, so "2" sat at
+/// value's place (tests/tui/tui_ticks.rs); ratatui's `Chart` spread them evenly, so "2" sat at
 /// 1.8 s on the 80 × 24 screen.
 pub fn height_figure(d: &DropView) -> Figure {
     let mut series = Vec::new();
@@ -137,7 +137,7 @@ fn render_ball(d: &DropView, theme: Theme, area: Rect, buf: &mut Buffer) {
     let r = d.radius.max(1.2 * cell);
     // the plate one braille dot row (a quarter cell) below the ball's lowest point, so a
     // ball at rest (the reduced-motion picture) is a whole circle standing on the plate
-    // (tests/tui_drop.rs: `the_ball_at_rest_is_round_on_its_plate`)
+    // (tests/tui/tui_drop.rs: `the_ball_at_rest_is_round_on_its_plate`)
     let plate_y = -cell / 4.0;
     // braille dots are about square (a cell is 2 dots wide, 4 tall, and twice as tall as
     // wide): equal metres per dot across and up keeps the ball round

@@ -160,7 +160,7 @@ impl App {
             FitStatus::Done(Ok(o)) => o.clone(),
         };
         // a fit that did not answer (docs/fitting.md) is applied only when asked twice
-        // (tests/tui_fit.rs, an_unpinned_parameter_is_said_so)
+        // (tests/tui/tui_fit.rs, an_unpinned_parameter_is_said_so)
         if !outcome.identified && !pane.armed && standing != Some(Standing::Applied) {
             if let Some(p) = &mut self.fit.pane {
                 p.armed = true;

@@ -234,7 +234,7 @@ impl MapPanel<'_> {
             buf.set_stringn(g.gutter.x, y, text, usize::from(g.gutter.width) - 1, axis);
         }
         // where the cursor is, on both axes; a ζ label the ▲ would cut or touch is left out
-        // (tests/tui_render.rs: `the_map_cursor_never_cuts_a_tick_label`)
+        // (tests/tui/tui_render.rs: `the_map_cursor_never_cuts_a_tick_label`)
         let r = Raster {
             map,
             values: Vec::new(),

@@ -42,7 +42,7 @@ pub fn reversals(h: &ObliqueHistory) -> Vec<f64> {
 /// export.rs, with their terminal looks): F_n and F_t with each reversal of F_t a dotted
 /// vertical line named with its time, v_c with its zero line, ω. Drawn by the explorer's one
 /// plot widget (`widgets::plot`), so their ticks are the other charts' (`figure::ticks`), each
-/// label at its value's column (tests/tui_ticks.rs); ratatui's `Chart` spread its labels
+/// label at its value's column (tests/tui/tui_ticks.rs); ratatui's `Chart` spread its labels
 /// evenly whatever their values.
 pub fn time_figures(r: &ObliqueResponse) -> Option<[Figure; 3]> {
     let h = r.history.as_ref()?;

@@ -32,7 +32,7 @@ impl App {
 
     /// The ball as the library takes it: the preset's with the explorer's parameters, law and
     /// radius (R may be typed in the form), its material's ν and its κ — what `bouncelab
-    /// oblique --preset NAME` runs with the same numbers (tests/tui_oblique.rs compares).
+    /// oblique --preset NAME` runs with the same numbers (tests/tui/tui_oblique.rs compares).
     pub fn oblique_ball(&self) -> Ball {
         let preset = self.preset();
         let s = &self.setting;

@@ -1,6 +1,6 @@
 //! A plot's legend (`Plot::draw_legend`): an entry a line in the corner that covers no label
 //! and the fewest drawn cells, on one line when the stack does not fit, the pins as one entry
-//! when even that does not (tests/tui_render.rs: `legends_stay_with_eight_pins`).
+//! when even that does not (tests/tui/tui_render.rs: `legends_stay_with_eight_pins`).
 
 use super::{Plot, PlotLayout};
 use crate::figure::{Corner, Sample, Tone};
@@ -13,7 +13,7 @@ use ratatui::text::{Line, Span};
 impl Plot<'_> {
     /// The figure's legend, a line an entry; with `pins_in_one`, the pins' entries ("p1
     /// golf", "p2 golf", …) as one ("┄ p1–p8 pinned") — their tags on the curves and the
-    /// readout's pin table name each (tests/tui_render.rs: `legends_stay_with_eight_pins`).
+    /// readout's pin table name each (tests/tui/tui_render.rs: `legends_stay_with_eight_pins`).
     fn legend_lines(&self, pins_in_one: bool) -> Vec<Line<'static>> {
         let mut entries = self.figure.legend();
         let pins: Vec<usize> = (0..entries.len())

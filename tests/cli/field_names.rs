@@ -1,0 +1,132 @@
+//! Issue 54 item 9: the small defects — each message names what the user gave, each option
+//! given is used or refused.
+
+use crate::common;
+use common::{assert_bad, bad, bl, bl_at, bl_in, config_home, renamed};
+
+#[test]
+fn a_preset_name_with_a_filler_or_ignorable_character_is_refused() {
+    // `golf` + U+115F (a Hangul filler, a letter that prints as nothing) listed as a second
+    // `golf`; so would the other default-ignorable code points and fillers
+    for c in [
+        '\u{115F}', '\u{1160}', '\u{3164}', '\u{FFA0}', '\u{034F}', '\u{FE0F}', '\u{2800}',
+    ] {
+        let text = renamed(&format!("golf{c}"), "7.08e4");
+        let line = text[..text.find("name = ").unwrap()].matches('\n').count() + 1;
+        let home = config_home(&[("golf2.toml", &text)]);
+        let o = bl_in(home.path(), &["presets"]);
+        assert_bad(
+            &o,
+            &[
+                &format!("golf2.toml:{line}:1: name: holds an invisible character"),
+                &format!("U+{:04X}", c as u32),
+            ],
+        );
+    }
+}
+
+#[test]
+fn peers_friction_without_export_is_refused() {
+    // `--format json --friction 0.5` printed the comparison and ignored the friction
+    for format in ["json", "text", "csv"] {
+        bad(
+            &[
+                "peers",
+                "--preset",
+                "tennis",
+                "--format",
+                format,
+                "--friction",
+                "0.5",
+            ],
+            &["--friction", "--export"],
+        );
+    }
+}
+
+#[test]
+fn a_derived_group_out_of_range_names_the_option_given() {
+    // `--damping 1e-5` said "invalid zeta: 1888081…"
+    bad(
+        &["run", "--preset", "tennis", "--damping", "1e-5"],
+        &["invalid damping: 1e-5", "gives zeta = "],
+    );
+    bad(
+        &["run", "--preset", "tennis", "--k-r", "1e12"],
+        &["invalid k_r: 1e12", "gives lambda = "],
+    );
+    // `oblique --angle 1e-15` said "invalid v0: 1.2e-16"
+    bad(
+        &[
+            "oblique",
+            "--preset",
+            "tennis",
+            "--angle",
+            "1e-15",
+            "--friction",
+            "0.5",
+        ],
+        &["invalid angle: 1e-15", "normal speed"],
+    );
+}
+
+#[test]
+fn an_oblique_row_no_impact_runs_at_is_exit_2_at_its_cell() {
+    // a v0 out of range (or a normal speed v0 sin θ below 1e-15) exited 1, "no starting
+    // point gave parameters the solver answers for"
+    let d = tempfile::tempdir().unwrap();
+    let head = "v0,angle_deg,spin_in,vx_out,vy_out\n20,30,0,15,7\n";
+    for (row, at) in [
+        ("1e-20,30,0,15,7", "ob.csv:3:1: v0 1e-20"),
+        ("20,1e-16,0,15,7", "ob.csv:3:4: angle_deg 1e-16"),
+    ] {
+        std::fs::write(
+            d.path().join("ob.csv"),
+            format!("{head}{row}\n25,40,0,17,10\n"),
+        )
+        .unwrap();
+        let o = bl_at(
+            d.path(),
+            &["fit", "--preset", "tennis", "--oblique", "ob.csv"],
+        );
+        assert_bad(&o, &[at]);
+    }
+    // the rows themselves still fit
+    let o = bl(&["run", "--preset", "tennis"]);
+    assert_eq!(o.code, 0);
+}
+
+#[test]
+fn vary_fit_names_the_fit_not_an_option_never_given() {
+    // a [fit] covariance whose correlations no normal distribution has (ρ = 1 exactly, which
+    // the table's check allows) said "invalid correlate: … weaken the correlations" to a user
+    // who gave no --correlate
+    let base = bouncelab::preset::Preset::embedded_all()
+        .into_iter()
+        .find(|p| p.name == "baseball")
+        .unwrap();
+    let text = base
+        .to_toml(&[])
+        .replace("name = \"baseball\"", "name = \"mine\"");
+    let (k_r, z_p) = (base.adopted.k_r, base.adopted.z_p.unwrap());
+    let fit = format!(
+        "\n[fit]\nfree = [\"k_r\", \"z_p\"]\nvalues = [{k_r:?}, {z_p:?}]\n\
+         covariance = [[4e6, 2.0], [2.0, 1e-6]]\ndof = 6\nresidual_sd = 0.01\n"
+    );
+    let d = tempfile::tempdir().unwrap();
+    std::fs::write(d.path().join("mine.toml"), format!("{text}{fit}")).unwrap();
+    let o = bl_at(
+        d.path(),
+        &[
+            "mc",
+            "--config",
+            "mine.toml",
+            "--vary",
+            "fit",
+            "--samples",
+            "10",
+        ],
+    );
+    assert_bad(&o, &["invalid vary fit", "[fit] covariance", "refit"]);
+    assert!(!o.stderr.contains("correlate"), "{}", o.stderr);
+}

@@ -1,0 +1,47 @@
+//! The library's physics: closed forms, the solvers, maps, oblique impacts, drops, flights,
+//! peers, targets, standards, the rows Python reads.
+//!
+//! One test binary, a module a file; tests/regroup.py writes this file (edit its
+//! tables, then run it: `python3 tests/regroup.py`).
+
+#[path = "../support/common/mod.rs"]
+mod common;
+#[path = "../support/seeded/mod.rs"]
+mod seeded;
+#[path = "../support/spread/mod.rs"]
+mod spread;
+
+mod closed_forms;
+mod conditions;
+mod drop;
+mod drop_flight;
+mod drop_presets;
+mod flight;
+mod flight_mc;
+mod fuzz_regressions;
+mod hertz_table;
+mod map;
+mod map_flatten;
+mod map_flatten_lanes;
+mod map_lanes;
+mod map_precision;
+mod oblique;
+mod oblique_bounded;
+mod oblique_damping;
+mod oblique_laws;
+mod oblique_scan;
+mod peers;
+mod peers_calibration;
+mod peers_export;
+mod peers_figures;
+mod presets;
+mod properties;
+mod rows;
+mod rows_columns;
+mod run_summary;
+mod solver_agreement;
+mod standards;
+mod surfaces;
+mod target_pair;
+mod taylor;
+mod taylor_batch;

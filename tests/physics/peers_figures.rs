@@ -1,0 +1,96 @@
+//! `figure peers-cor-velocity` and `figure peers-force-time` (src/figure/peers.rs): SVG that
+//! parses, and CSV series that say what docs/peers.md says.
+
+use crate::common;
+use common::{bl, ok};
+
+fn series<'a>(csv: &'a str, id: &str) -> Vec<Vec<&'a str>> {
+    csv.lines()
+        .skip(1)
+        .map(|l| l.split(',').collect::<Vec<_>>())
+        .filter(|f| f[0] == id)
+        .collect()
+}
+
+#[test]
+fn peers_cor_velocity_flat_peers_falling_fixed_alpha() {
+    let dir = tempfile::tempdir().unwrap();
+    let (svg, csv) = (dir.path().join("a.svg"), dir.path().join("a.csv"));
+    let (s, c) = (svg.to_str().unwrap(), csv.to_str().unwrap());
+    ok(&[
+        "figure",
+        "peers-cor-velocity",
+        "--preset",
+        "superball",
+        "--out",
+        s,
+        "--csv-out",
+        c,
+    ]);
+    roxmltree::Document::parse(&std::fs::read_to_string(&svg).unwrap()).unwrap();
+    let text = std::fs::read_to_string(&csv).unwrap();
+    assert_eq!(text.lines().next().unwrap(), "series,kind,v0,cor");
+    for id in [
+        "kelvin-voigt",
+        "kelvin-voigt-no-tension",
+        "tsuji",
+        "hunt-crossley",
+    ] {
+        let rows = series(&text, id);
+        assert_eq!(rows.len(), 200, "{id}");
+        for r in &rows {
+            let e: f64 = r[3].parse().unwrap();
+            assert!((e - 0.75).abs() < 1e-9, "{id}: {e}");
+        }
+    }
+    let fixed: Vec<f64> = series(&text, "hunt-crossley-fixed-alpha")
+        .iter()
+        .map(|r| r[3].parse().unwrap())
+        .collect();
+    assert!(fixed.windows(2).all(|w| w[1] < w[0]), "falls with speed");
+    assert!(!series(&text, "christoforou-yigit").is_empty());
+}
+
+#[test]
+fn peers_force_time_starts_and_ends_at_rest() {
+    let dir = tempfile::tempdir().unwrap();
+    let (svg, csv) = (dir.path().join("b.svg"), dir.path().join("b.csv"));
+    let (s, c) = (svg.to_str().unwrap(), csv.to_str().unwrap());
+    ok(&[
+        "figure",
+        "peers-force-time",
+        "--preset",
+        "golf",
+        "--points",
+        "50",
+        "--out",
+        s,
+        "--csv-out",
+        c,
+    ]);
+    let text = std::fs::read_to_string(&csv).unwrap();
+    for id in ["tsuji", "hunt-crossley", "kelvin-voigt-no-tension"] {
+        let rows = series(&text, id);
+        assert_eq!(rows.len(), 50, "{id}");
+        // Hertz-type laws start from F = 0; the dashpot of Kelvin–Voigt jumps to η v0 at touch
+        let first: f64 = rows[0][3].parse().unwrap();
+        if id == "kelvin-voigt-no-tension" {
+            assert!(first > 1.0, "{id}: {first}");
+        } else {
+            assert_eq!(first, 0.0, "{id}");
+        }
+        let last: f64 = rows[49][3].parse().unwrap();
+        assert!(last.abs() < 1e-9, "{id} ends at F = 0: {last}");
+    }
+    let o = bl(&[
+        "figure",
+        "peers-force-time",
+        "--preset",
+        "golf",
+        "--from",
+        "1",
+        "--out",
+        s,
+    ]);
+    assert_eq!(o.code, 2, "{}", o.stderr);
+}

@@ -1,0 +1,186 @@
+//! Helpers for the tests that run the `bouncelab` binary.
+#![allow(dead_code)]
+
+pub mod golden;
+pub mod room;
+
+use serde_json::Value;
+use std::path::Path;
+use std::process::{Command, Stdio};
+
+pub const SUPERBALL: &str = include_str!("../../../presets/superball.toml");
+
+pub struct Out {
+    pub code: i32,
+    pub stdout: String,
+    pub stderr: String,
+}
+
+/// Run the binary with `config` as XDG_CONFIG_HOME (and HOME), so the user's own presets never
+/// leak into a test.
+pub fn bl_in(config: &Path, args: &[&str]) -> Out {
+    let o = Command::new(env!("CARGO_BIN_EXE_bouncelab"))
+        .args(args)
+        .env("XDG_CONFIG_HOME", config)
+        .env("HOME", config)
+        .stdin(Stdio::null())
+        .output()
+        .expect("the binary runs");
+    Out {
+        code: o.status.code().expect("exited, not killed"),
+        stdout: String::from_utf8(o.stdout).expect("UTF-8 stdout"),
+        stderr: String::from_utf8(o.stderr).expect("UTF-8 stderr"),
+    }
+}
+
+pub fn bl(args: &[&str]) -> Out {
+    let dir = tempfile::tempdir().unwrap();
+    bl_in(dir.path(), args)
+}
+
+/// Success, nothing on stderr; stdout.
+pub fn ok(args: &[&str]) -> String {
+    let o = bl(args);
+    assert_eq!(o.code, 0, "{args:?}: {}", o.stderr);
+    assert!(o.stderr.is_empty(), "{args:?}: {}", o.stderr);
+    o.stdout
+}
+
+/// Success, stdout; on stderr nothing but `outside calibration:` warnings (a ball the command
+/// line changed, or run away from the speed its preset was fitted at: tests/cli/calibration.rs).
+pub fn ok_calibrated(args: &[&str]) -> String {
+    let o = bl(args);
+    assert_eq!(o.code, 0, "{args:?}: {}", o.stderr);
+    let calibration = |l: &str| l.starts_with("bouncelab: warning: outside calibration:");
+    assert!(o.stderr.lines().all(calibration), "{args:?}: {}", o.stderr);
+    o.stdout
+}
+
+pub fn json(args: &[&str]) -> Value {
+    let s = ok(args);
+    assert_eq!(s.lines().count(), 1, "one JSON document on one line");
+    serde_json::from_str(&s).unwrap_or_else(|e| panic!("{args:?}: {e}: {s}"))
+}
+
+pub fn f(v: &Value, key: &str) -> f64 {
+    v[key]
+        .as_f64()
+        .unwrap_or_else(|| panic!("{key} is not a number: {}", v[key]))
+}
+
+/// Exit code 2, stdout empty, stderr exactly one line `bouncelab: error: …` holding `needles`.
+pub fn assert_bad(o: &Out, needles: &[&str]) {
+    assert_eq!(o.code, 2, "stderr: {}", o.stderr);
+    assert!(o.stdout.is_empty(), "stdout: {}", o.stdout);
+    assert_eq!(o.stderr.lines().count(), 1, "one line: {:?}", o.stderr);
+    assert!(o.stderr.ends_with('\n'));
+    assert!(o.stderr.starts_with("bouncelab: error: "), "{}", o.stderr);
+    assert!(!o.stderr.contains("panicked"), "{}", o.stderr);
+    for n in needles {
+        assert!(o.stderr.contains(n), "{n:?} not in {:?}", o.stderr);
+    }
+}
+
+pub fn bad(args: &[&str], needles: &[&str]) {
+    assert_bad(&bl(args), needles);
+}
+
+/// A temp folder holding one file written from bytes; returns (folder, path as text).
+pub fn file_with(bytes: &[u8]) -> (tempfile::TempDir, String) {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("ball.toml");
+    std::fs::write(&path, bytes).unwrap();
+    let p = path.to_str().unwrap().to_string();
+    (dir, p)
+}
+
+/// A config home whose presets folder holds `files` (name, contents).
+pub fn config_home(files: &[(&str, &str)]) -> tempfile::TempDir {
+    let dir = tempfile::tempdir().unwrap();
+    let presets = dir.path().join("bouncelab").join("presets");
+    std::fs::create_dir_all(&presets).unwrap();
+    for (name, text) in files {
+        std::fs::write(presets.join(name), text).unwrap();
+    }
+    dir
+}
+
+pub fn renamed(name: &str, k_r: &str) -> String {
+    SUPERBALL
+        .replace("name = \"superball\"", &format!("name = \"{name}\""))
+        .replace("k_r = 7.08e4", &format!("k_r = {k_r}"))
+}
+
+/// Run with `dir` as working folder (and config home): paths in `args` are relative to it.
+pub fn bl_at(dir: &Path, args: &[&str]) -> Out {
+    let o = std::process::Command::new(env!("CARGO_BIN_EXE_bouncelab"))
+        .args(args)
+        .current_dir(dir)
+        .env("XDG_CONFIG_HOME", dir)
+        .env("HOME", dir)
+        .stdin(std::process::Stdio::null())
+        .output()
+        .expect("the binary runs");
+    Out {
+        code: o.status.code().expect("exited"),
+        stdout: String::from_utf8(o.stdout).unwrap(),
+        stderr: String::from_utf8(o.stderr).unwrap(),
+    }
+}
+
+pub fn ok_at(dir: &Path, args: &[&str]) -> String {
+    let o = bl_at(dir, args);
+    assert_eq!(o.code, 0, "{args:?}: {}", o.stderr);
+    assert!(o.stderr.is_empty(), "{args:?}: {}", o.stderr);
+    o.stdout
+}
+
+/// What a figure holds, read from its SVG as an XML document.
+pub struct Svg {
+    /// Every `<text>` content, trimmed.
+    pub texts: Vec<String>,
+    /// Series named in `<desc>`.
+    pub series: Vec<String>,
+    pub polylines: usize,
+}
+
+pub fn parse_svg(text: &str) -> Svg {
+    let doc = roxmltree::Document::parse(text).unwrap_or_else(|e| panic!("not XML: {e}"));
+    let root = doc.root_element();
+    assert_eq!(root.tag_name().name(), "svg");
+    assert_eq!(root.attribute("width"), Some("800"));
+    assert_eq!(root.attribute("height"), Some("560"));
+    assert!(root.attribute("viewBox").is_some());
+    let title = root.children().find(|n| n.has_tag_name("title"));
+    assert!(
+        title.and_then(|t| t.text()).is_some_and(|t| !t.is_empty()),
+        "a <title>"
+    );
+    let desc = root
+        .children()
+        .find(|n| n.has_tag_name("desc"))
+        .and_then(|d| d.text());
+    let series = desc
+        .and_then(|d| d.split("Series: ").nth(1))
+        .map(|s| {
+            s.trim_end_matches('.')
+                .split("; ")
+                .map(String::from)
+                .collect()
+        })
+        .unwrap_or_default();
+    let texts = root
+        .descendants()
+        .filter(|n| n.has_tag_name("text"))
+        .filter_map(|n| n.text().map(|t| t.trim().to_string()))
+        .collect();
+    let polylines = root
+        .descendants()
+        .filter(|n| n.has_tag_name("polyline"))
+        .count();
+    Svg {
+        texts,
+        series,
+        polylines,
+    }
+}

@@ -1,0 +1,58 @@
+//! The explorer: `App::update` and the drawn screen (insta snapshots), and the real binary
+//! under a pseudo-terminal.
+//!
+//! One test binary, a module a file; tests/regroup.py writes this file (edit its
+//! tables, then run it: `python3 tests/regroup.py`).
+
+#[path = "../support/common/mod.rs"]
+mod common;
+#[path = "../support/fit_common/mod.rs"]
+mod fit_common;
+#[path = "../support/pty/mod.rs"]
+mod pty;
+#[path = "../support/save_flow/mod.rs"]
+mod save_flow;
+#[path = "../support/seeded/mod.rs"]
+mod seeded;
+#[path = "../support/tui_common/mod.rs"]
+mod tui_common;
+
+mod measured_explorer;
+mod tui_app;
+mod tui_charts;
+mod tui_command;
+mod tui_command_pty;
+mod tui_crosshair;
+mod tui_drop;
+mod tui_exit_pty;
+mod tui_export;
+mod tui_fit;
+mod tui_fit_drops;
+mod tui_fit_pty;
+mod tui_form;
+mod tui_guards;
+mod tui_heavy;
+mod tui_issue18;
+mod tui_map;
+mod tui_marks;
+mod tui_models;
+mod tui_models_export;
+mod tui_oblique;
+mod tui_oblique_export;
+mod tui_oblique_state;
+mod tui_picker;
+mod tui_pins;
+mod tui_pty;
+mod tui_quit;
+mod tui_quit_pty;
+mod tui_render;
+mod tui_roundtrip;
+mod tui_save;
+mod tui_save_overwrite;
+mod tui_save_pty;
+mod tui_session;
+mod tui_small_pty;
+mod tui_target;
+mod tui_ticks;
+mod tui_worker_pty;
+mod tui_worker_stopped;

@@ -1,0 +1,216 @@
+//! Axes read true (issue 51 item 1): every view with a chart drawn at the five sizes, every
+//! labelled tick read back off the screen, and each label checked against the column (x) or
+//! row (y) its value maps to on its axis — the axis' map fitted through all its labels, so one
+//! misplaced label shows (the oblique forces axis once put `0 2 4 6` at columns 5, 62, 101,
+//! 164: "2" marked 1.9 ms). Linear and decade (log) axes alike.
+
+use crate::tui_common;
+
+use bouncelab::preset::Preset;
+use bouncelab::tui::action::Action;
+use bouncelab::tui::app::{App, View};
+use ratatui::crossterm::event::KeyCode;
+use tui_common::*;
+
+const SIZES: [(u16, u16); 5] = [(80, 24), (100, 30), (120, 40), (160, 50), (200, 60)];
+
+fn preset(name: &str) -> Preset {
+    Preset::embedded_all()
+        .into_iter()
+        .find(|p| p.name == name)
+        .unwrap()
+}
+
+/// One labelled tick read off the screen: its value and the cells its label takes along the
+/// axis (columns of an x label, the row of a y label).
+#[derive(Debug, Clone, Copy)]
+struct Label {
+    value: f64,
+    from: f64,
+    to: f64,
+}
+
+/// The screen as a grid of symbols.
+fn grid(app: &App, w: u16, h: u16) -> Vec<Vec<String>> {
+    let t = draw(app, w, h);
+    let buf = t.backend().buffer();
+    (0..h)
+        .map(|y| (0..w).map(|x| buf[(x, y)].symbol().to_string()).collect())
+        .collect()
+}
+
+/// The tokens of `row` between columns `lo` and `hi` (exclusive): (start, text).
+fn tokens(row: &[String], lo: usize, hi: usize) -> Vec<(usize, String)> {
+    let mut out = Vec::new();
+    let mut cur: Option<(usize, String)> = None;
+    for (x, cell) in row.iter().enumerate().take(hi.min(row.len())).skip(lo) {
+        let blank = cell == " " || cell == "│";
+        match (&mut cur, blank) {
+            (Some((_, s)), false) => s.push_str(cell),
+            (None, false) => cur = Some((x, cell.clone())),
+            (Some(_), true) => out.push(cur.take().unwrap()),
+            (None, true) => {}
+        }
+    }
+    out.extend(cur);
+    out
+}
+
+/// Every chart axis on the screen: (is x, its labels), found from the axes' corners `└`
+/// whose x axis runs right (`─`, `┴`) to something other than a frame's corner `┘`.
+fn axes(g: &[Vec<String>]) -> Vec<(bool, (usize, usize), Vec<Label>)> {
+    let mut out = Vec::new();
+    for (r, row) in g.iter().enumerate() {
+        for (c, cell) in row.iter().enumerate() {
+            if cell != "└" {
+                continue;
+            }
+            let run = row[c + 1..]
+                .iter()
+                .take_while(|s| *s == "─" || *s == "┴" || *s == "┼")
+                .count();
+            let end = c + 1 + run;
+            if run < 6 || row.get(end).is_some_and(|s| s == "┘") || r + 1 >= g.len() {
+                continue;
+            }
+            // x labels: the row under the axis line, from a little left of the corner
+            let xs = tokens(&g[r + 1], c.saturating_sub(4), end)
+                .into_iter()
+                .filter_map(|(s, t)| {
+                    let w = t.chars().count();
+                    Some(Label {
+                        value: t.parse().ok()?,
+                        from: s as f64,
+                        to: (s + w - 1) as f64,
+                    })
+                })
+                .collect();
+            out.push((true, (r, c), xs));
+            // y labels: left of the axis line, on each of its rows
+            let mut ys = Vec::new();
+            let mut y = r;
+            while y > 0 && matches!(g[y - 1][c].as_str(), "│" | "┤" | "┼") {
+                y -= 1;
+                let left = tokens(&g[y], c.saturating_sub(12), c);
+                if let Some((_, t)) = left.last()
+                    && let Ok(value) = t.parse()
+                {
+                    ys.push(Label {
+                        value,
+                        from: y as f64,
+                        to: y as f64,
+                    });
+                }
+            }
+            out.push((false, (r, c), ys));
+        }
+    }
+    out
+}
+
+/// Decade labels (0.01 0.1 1 10 …, three or more): a log axis, read in log10 of the values.
+fn positions(labels: &[Label]) -> Vec<(f64, f64, f64)> {
+    let decade = |v: f64| v > 0.0 && (v.log10() - v.log10().round()).abs() < 1e-9;
+    let log = labels.len() >= 3 && labels.iter().all(|l| decade(l.value));
+    labels
+        .iter()
+        .map(|l| {
+            let v = if log { l.value.log10() } else { l.value };
+            (v, l.from, l.to)
+        })
+        .collect()
+}
+
+/// The labels that do not sit at their value's place (±1 cell) on the line fitted through
+/// all of them (least squares of the label's middle against its value).
+fn misplaced(labels: &[Label]) -> Vec<String> {
+    let p = positions(labels);
+    if p.len() < 3 {
+        return Vec::new();
+    }
+    let n = p.len() as f64;
+    let mid = |&(_, a, b): &(f64, f64, f64)| 0.5 * (a + b);
+    let (mv, mc) = (
+        p.iter().map(|q| q.0).sum::<f64>() / n,
+        p.iter().map(mid).sum::<f64>() / n,
+    );
+    let sxy: f64 = p.iter().map(|q| (q.0 - mv) * (mid(q) - mc)).sum();
+    let sxx: f64 = p.iter().map(|q| (q.0 - mv).powi(2)).sum();
+    let slope = sxy / sxx;
+    p.iter()
+        .filter(|&&(v, a, b)| {
+            let at = mc + slope * (v - mv);
+            at < a - 1.0 || at > b + 1.0
+        })
+        .map(|&(v, a, b)| {
+            format!(
+                "{v} at {a}…{b}, its value's place {:.1}",
+                mc + slope * (v - mv)
+            )
+        })
+        .collect()
+}
+
+/// Checks every axis of `app` at the five sizes; the number of axes with three or more
+/// labels checked.
+fn check(name: &str, app: &mut App) -> usize {
+    let mut checked = 0;
+    for (w, h) in SIZES {
+        app.update(Action::Resize(w, h));
+        let g = grid(app, w, h);
+        for (x, at, labels) in axes(&g) {
+            let bad = misplaced(&labels);
+            let screen: Vec<String> = g.iter().map(|r| r.concat()).collect();
+            assert!(
+                bad.is_empty(),
+                "{name} {w}×{h}: {} axis at {at:?}: {bad:?}\n{}",
+                if x { "x" } else { "y" },
+                screen.join("\n")
+            );
+            checked += usize::from(labels.len() >= 3);
+        }
+    }
+    checked
+}
+
+#[test]
+fn every_tick_label_sits_at_its_value_in_every_view_at_every_size() {
+    for ball in ["tennis", "superball", "golf"] {
+        let mut app = App::new(preset(ball), false);
+        assert!(check(&format!("{ball} impact"), &mut app) >= 10);
+        press(&mut app, &[KeyCode::Tab]);
+        assert_eq!(app.view(), View::Sweeps);
+        assert!(check(&format!("{ball} sweeps"), &mut app) >= 10);
+        press(&mut app, &[KeyCode::Tab]);
+        assert_eq!(app.view(), View::Models);
+        assert!(check(&format!("{ball} models"), &mut app) >= 10);
+        press(&mut app, &[KeyCode::Tab]);
+        assert_eq!(app.view(), View::Map);
+        check(&format!("{ball} map"), &mut app);
+        press(&mut app, &[KeyCode::Tab, KeyCode::Char('d')]);
+        assert_eq!(app.view(), View::Drop);
+        // the drop's chart: its two axes at each size
+        assert!(check(&format!("{ball} drop"), &mut app) >= 5);
+        press(&mut app, &[KeyCode::Char('d'), KeyCode::Char('i')]);
+        assert_eq!(app.view(), View::Oblique);
+        // the forces, slip and spin charts
+        assert!(check(&format!("{ball} oblique"), &mut app) >= 10);
+    }
+}
+
+/// The finder itself: labels evenly spread over an axis whose values are not (ratatui's
+/// `Chart` spreads `0 2 4 6` over a 0…6.2 axis) are found misplaced; true ones are not.
+#[test]
+fn the_check_finds_a_misplaced_label() {
+    let at = |value: f64, col: f64| Label {
+        value,
+        from: col,
+        to: col,
+    };
+    let oblique = [at(0.0, 5.0), at(2.0, 62.0), at(4.0, 101.0), at(6.0, 164.0)];
+    assert!(!misplaced(&oblique).is_empty());
+    let true_ = [at(0.0, 5.0), at(2.0, 57.0), at(4.0, 110.0), at(6.0, 162.0)];
+    assert!(misplaced(&true_).is_empty(), "{:?}", misplaced(&true_));
+    let decades = [at(0.01, 3.0), at(0.1, 23.0), at(1.0, 43.0), at(10.0, 63.0)];
+    assert!(misplaced(&decades).is_empty());
+}
