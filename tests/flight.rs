@@ -297,6 +297,31 @@ fn each_bounce_is_oblique_on_the_arriving_state() {
 }
 
 #[test]
+fn a_shot_bounces_with_its_tangential_damping() {
+    // a steep landing that grips: the bounce is `oblique_damped` with the shot's c_t, and
+    // not the undamped one (`shot --tangential-damping` was taken and ignored)
+    let b = ball("tennis");
+    let mut spec = ShotSpec::new(2.0, 15.0, -40.0, 0.0, 0.9);
+    let plain = b.shot(&spec).unwrap();
+    spec.tangential_damping = Some(5.0);
+    let damped = b.shot(&spec).unwrap();
+    let bn = &damped.bounces[0];
+    assert!(!bn.slid_throughout);
+    let o = ObliqueSpec {
+        v: Some(bn.vx_in.hypot(bn.vy_in)),
+        angle_deg: (-bn.vy_in).atan2(bn.vx_in).to_degrees(),
+        spin: bn.spin_in,
+        friction: 0.9,
+        tangential_stiffness: None,
+        inertia_factor: None,
+    };
+    let r = b.oblique_damped(&o, Some(5.0), 0).unwrap();
+    close("vx_out", bn.vx_out, r.vx_out, 1e-12);
+    close("spin_out", bn.spin_out, r.spin_out, 1e-12);
+    assert!((bn.vx_out - plain.bounces[0].vx_out).abs() > 1e-3);
+}
+
+#[test]
 fn a_ball_arriving_backward_bounces_mirrored() {
     // the library's flight sent backward (elevation 150°, which `Ball::shot` does not take):
     // its bounce asks `oblique` for the mirrored state (|v_x|, −ω) and mirrors the answer back

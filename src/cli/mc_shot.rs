@@ -133,6 +133,7 @@ pub fn run(s: &ShotMcArgs, a: &Mc<'_>, out: &mut dyn Write) -> anyhow::Result<()
         friction: required(s.friction, "--friction")?,
         tangential_stiffness: s.tangential.tangential_stiffness,
         inertia_factor: s.tangential.inertia_factor,
+        tangential_damping: s.tangential.tangential_damping,
         air_density: s.air_density.unwrap_or(crate::drop::flight::AIR_DENSITY),
         drag_coefficient: s.drag_coefficient,
         lift_coefficient: s.lift_coefficient,
