@@ -70,6 +70,9 @@ impl App {
             View::Oblique => "x, N, +/- read the impact, sweeps and models views' charts; \
                  here the readout has the impact's numbers and e exports these charts (SVG + CSV)"
                 .into(),
+            View::Flight => "x, N, +/- read the impact, sweeps and models views' charts; \
+                 here the readout has the shot's numbers and e exports the path (SVG + CSV)"
+                .into(),
             View::Drop => "x, N, +/- read the impact, sweeps and models views' charts; here \
                  the readout has the rebounds, and `bouncelab drop --format csv` the flight"
                 .into(),
