@@ -68,6 +68,7 @@ impl fmt::Display for Case {
             View::Map => "map",
             View::Drop => "drop",
             View::Oblique => "oblique",
+            View::Flight => "flight",
         };
         let key = match self.param {
             Param::Lambda => "l",
@@ -75,7 +76,7 @@ impl fmt::Display for Case {
             Param::V0 => "v",
         };
         let how = match (self.view, self.worker) {
-            (View::Impact | View::Map | View::Drop | View::Oblique, _) => "",
+            (View::Impact | View::Map | View::Drop | View::Oblique | View::Flight, _) => "",
             (View::Sweeps | View::Models, false) => " sync",
             (View::Sweeps | View::Models, true) => " worker",
         };

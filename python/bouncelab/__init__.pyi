@@ -607,9 +607,16 @@ def shot(
     spin_decay: Optional[float] = None,
     tangential_stiffness: Optional[float] = None,
     inertia_factor: Optional[float] = None,
+    tangential_damping: Optional[float] = None,
     samples: int = 200,
     law: Optional[Law] = None,
     params: Optional[ParamSet] = None,
+    mass: Optional[float] = None,
+    radius: Optional[float] = None,
+    k_p: Optional[float] = None,
+    damping: Optional[float] = None,
+    k_r: Optional[float] = None,
+    z_p: Optional[float] = None,
 ) -> dict[str, Any]:
     """A shot (docs/flight.md), as ``bouncelab shot --format json --samples N``: launched from
     ``height`` (the centre, m) at ``speed`` (m/s), ``elevation`` (degrees, negative down) and
@@ -618,7 +625,10 @@ def shot(
     spin_in, vx_in, vy_in, v_out, angle_out, spin_out, vx_out, vy_out, cor_normal,
     contact_time, slid_throughout, and warnings a list), ``end`` (reason, t, x, y, vx, vy,
     spin, speed), ``trajectory`` (arrays t, x, y, vx, vy, spin; ``samples`` of them) and
-    ``source`` (the aerodynamic models used)."""
+    ``source`` (the aerodynamic models used). The overrides are the command line's:
+    ``drag_coefficient``, ``lift_coefficient``, ``spin_decay``, ``air_density``,
+    ``tangential_stiffness``, ``inertia_factor``, ``tangential_damping`` and the ball's
+    ``mass``, ``radius``, ``k_p``, ``damping``, ``k_r``, ``z_p``."""
 
 def shots(
     preset: str = "tennis",
@@ -637,8 +647,15 @@ def shots(
     spin_decay: Optional[float] = None,
     tangential_stiffness: Optional[float] = None,
     inertia_factor: Optional[float] = None,
+    tangential_damping: Optional[float] = None,
     law: Optional[Law] = None,
     params: Optional[ParamSet] = None,
+    mass: Optional[float] = None,
+    radius: Optional[float] = None,
+    k_p: Optional[float] = None,
+    damping: Optional[float] = None,
+    k_r: Optional[float] = None,
+    z_p: Optional[float] = None,
 ) -> dict[str, Array]:
     """Many shots, ``height``, ``speed``, ``elevation`` and ``spin`` (``None``: 0) broadcast
     together as a ufunc's arguments: arrays of the broadcast shape ``landing_t``, ``landing_x``, ``v_in``,

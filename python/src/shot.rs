@@ -24,6 +24,7 @@ struct Common {
     spin_decay: Option<f64>,
     tangential_stiffness: Option<f64>,
     inertia_factor: Option<f64>,
+    tangential_damping: Option<f64>,
 }
 
 impl Common {
@@ -38,6 +39,7 @@ impl Common {
             friction: self.friction,
             tangential_stiffness: self.tangential_stiffness,
             inertia_factor: self.inertia_factor,
+            tangential_damping: self.tangential_damping,
             air_density: self.air_density,
             drag_coefficient: self.drag_coefficient,
             lift_coefficient: self.lift_coefficient,
@@ -117,7 +119,7 @@ fn report<'py>(py: Python<'py>, r: &ShotReport) -> PyResult<Bound<'py, PyDict>> 
 /// arrays, one element per bounce), `end` (a dict), `trajectory` (a dict of arrays t, x, y,
 /// vx, vy, spin; `samples` of them, 0 for none) and `source` (the aerodynamic models).
 #[pyfunction]
-#[pyo3(signature = (preset="tennis", *, height, speed, friction, elevation=0.0, spin=0.0, bounces=1, distance=None, time=None, air_density=1.204, drag_coefficient=None, lift_coefficient=None, spin_decay=None, tangential_stiffness=None, inertia_factor=None, samples=200, law=None, params=None))]
+#[pyo3(signature = (preset="tennis", *, height, speed, friction, elevation=0.0, spin=0.0, bounces=1, distance=None, time=None, air_density=1.204, drag_coefficient=None, lift_coefficient=None, spin_decay=None, tangential_stiffness=None, inertia_factor=None, tangential_damping=None, samples=200, law=None, params=None, mass=None, radius=None, k_p=None, damping=None, k_r=None, z_p=None))]
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn shot<'py>(
     py: Python<'py>,
@@ -136,12 +138,19 @@ pub(crate) fn shot<'py>(
     spin_decay: Option<f64>,
     tangential_stiffness: Option<f64>,
     inertia_factor: Option<f64>,
+    tangential_damping: Option<f64>,
     samples: usize,
     law: Option<&str>,
     params: Option<&str>,
+    mass: Option<f64>,
+    radius: Option<f64>,
+    k_p: Option<f64>,
+    damping: Option<f64>,
+    k_r: Option<f64>,
+    z_p: Option<f64>,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let no = overrides(None, None, None, None, None, None);
-    let ball = overridden_ball(preset, params, law, None, &no)?;
+    let set = overrides(mass, radius, k_p, damping, k_r, z_p);
+    let ball = overridden_ball(preset, params, law, None, &set)?;
     let common = Common {
         friction,
         bounces,
@@ -153,6 +162,7 @@ pub(crate) fn shot<'py>(
         spin_decay,
         tangential_stiffness,
         inertia_factor,
+        tangential_damping,
     };
     let launch = Launch {
         height,
@@ -209,7 +219,7 @@ fn row(r: &ShotReport) -> [f64; 12] {
 /// bounces=0) and the end's `end_t`, `end_x`, `end_y`, `end_vx`, `end_vy`. Element i is what
 /// `shot` gives for the i-th values; the first element without an answer raises, named.
 #[pyfunction]
-#[pyo3(signature = (preset="tennis", *, height, speed, friction, elevation=None, spin=None, bounces=1, distance=None, time=None, air_density=1.204, drag_coefficient=None, lift_coefficient=None, spin_decay=None, tangential_stiffness=None, inertia_factor=None, law=None, params=None))]
+#[pyo3(signature = (preset="tennis", *, height, speed, friction, elevation=None, spin=None, bounces=1, distance=None, time=None, air_density=1.204, drag_coefficient=None, lift_coefficient=None, spin_decay=None, tangential_stiffness=None, inertia_factor=None, tangential_damping=None, law=None, params=None, mass=None, radius=None, k_p=None, damping=None, k_r=None, z_p=None))]
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn shots<'py>(
     py: Python<'py>,
@@ -228,11 +238,18 @@ pub(crate) fn shots<'py>(
     spin_decay: Option<f64>,
     tangential_stiffness: Option<f64>,
     inertia_factor: Option<f64>,
+    tangential_damping: Option<f64>,
     law: Option<&str>,
     params: Option<&str>,
+    mass: Option<f64>,
+    radius: Option<f64>,
+    k_p: Option<f64>,
+    damping: Option<f64>,
+    k_r: Option<f64>,
+    z_p: Option<f64>,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let no = overrides(None, None, None, None, None, None);
-    let ball = overridden_ball(preset, params, law, None, &no)?;
+    let set = overrides(mass, radius, k_p, damping, k_r, z_p);
+    let ball = overridden_ball(preset, params, law, None, &set)?;
     let common = Common {
         friction,
         bounces,
@@ -244,6 +261,7 @@ pub(crate) fn shots<'py>(
         spin_decay,
         tangential_stiffness,
         inertia_factor,
+        tangential_damping,
     };
     let zero = || 0.0_f64.into_pyobject(py).map(|z| z.into_any());
     let elevation = elevation.map_or_else(zero, Ok)?;

@@ -51,3 +51,47 @@ def test_bad_input_names_the_field():
         bouncelab.shot("tennis", height=0.0, speed=50.0, friction=0.6)
     with pytest.raises(ValueError, match="element 1: invalid speed"):
         bouncelab.shots("tennis", height=2.0, speed=np.array([10.0, -1.0]), friction=0.6)
+
+
+# a steep landing that grips (the serve slides throughout: K_t and c_t change nothing there)
+GRIP = dict(height=2.0, speed=15.0, elevation=-40.0, spin=0.0, friction=0.9)
+
+
+def cli_shot(*flags):
+    out = subprocess.run(
+        [binary(), "shot", "--preset", "tennis", "--height", "2", "--speed", "15",
+         "--elevation", "-40", "--spin", "0", "--friction", "0.9", "--format", "json",
+         *flags],
+        capture_output=True, text=True, check=True,
+    )
+    return json.loads(out.stdout)
+
+
+def test_every_override_of_the_command_line_is_taken():
+    # each keyword is the flag of `bouncelab shot --help` of the same name (issue 57 item 4);
+    # each changes the answer, and shot and shots give what the command line gives
+    overrides = [
+        (dict(drag_coefficient=0.3), ["--drag-coefficient", "0.3"]),
+        (dict(lift_coefficient=0.1), ["--lift-coefficient", "0.1"]),
+        (dict(spin_decay=0.5), ["--spin-decay", "0.5"]),
+        (dict(air_density=1.0), ["--air-density", "1.0"]),
+        (dict(tangential_stiffness=2e4), ["--tangential-stiffness", "20000"]),
+        (dict(inertia_factor=0.6), ["--inertia-factor", "0.6"]),
+        (dict(tangential_damping=5.0), ["--tangential-damping", "5"]),
+        (dict(mass=0.06), ["--mass", "0.06"]),
+        (dict(radius=0.034), ["--radius", "0.034"]),
+        (dict(k_p=3e4), ["--k-p", "30000"]),
+        (dict(damping=10.0), ["--damping", "10"]),
+        (dict(k_r=4e4), ["--k-r", "40000"]),
+        (dict(z_p=0.004), ["--z-p", "0.004"]),
+    ]
+    plain = bouncelab.shot("tennis", samples=0, **GRIP)
+    for kw, flags in overrides:
+        r = bouncelab.shot("tennis", samples=0, **GRIP, **kw)
+        cli = cli_shot(*flags)
+        assert r["end"]["x"] == cli["end"]["x"], kw
+        assert r["bounces"]["v_out"][0] == cli["bounces"][0]["v_out"], kw
+        assert (r["end"]["x"], r["bounces"]["v_out"][0]) != (
+            plain["end"]["x"], plain["bounces"]["v_out"][0]), kw
+        many = bouncelab.shots("tennis", **GRIP, **kw)
+        assert many["end_x"] == r["end"]["x"], kw

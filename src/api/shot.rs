@@ -23,6 +23,9 @@ pub struct ShotSpec {
     pub tangential_stiffness: Option<f64>,
     /// κ (`None`: the ball's).
     pub inertia_factor: Option<f64>,
+    /// A tangential dashpot c_t (kg/s) in parallel with K_t at each bounce, as `oblique
+    /// --tangential-damping` (`None` or 0: none).
+    pub tangential_damping: Option<f64>,
     /// ρ (kg/m³); 0 is vacuum.
     pub air_density: f64,
     /// C_D fixed (`None`: the ball's published C_D(Re)).
@@ -54,6 +57,7 @@ impl ShotSpec {
             friction,
             tangential_stiffness: None,
             inertia_factor: None,
+            tangential_damping: None,
             air_density: crate::drop::flight::AIR_DENSITY,
             drag_coefficient: None,
             lift_coefficient: None,
@@ -279,7 +283,7 @@ impl Ball {
                 tangential_stiffness: spec.tangential_stiffness,
                 inertia_factor: spec.inertia_factor,
             };
-            let r = self.oblique(&o, 0)?;
+            let r = self.oblique_damped(&o, spec.tangential_damping, 0)?;
             let rebound = Rebound {
                 vx: r.vx_out,
                 vy: r.vy_out,

@@ -144,9 +144,29 @@ impl ShotMcSpec {
     }
 }
 
+/// Shots a block of the Monte Carlo runs between two calls of its watcher (in parallel): some
+/// 20 ms on one core, so that a Ctrl-C is seen within 0.5 s on a loaded machine too.
+pub const SHOT_MC_BLOCK: usize = 1024;
+
 impl Ball {
     /// A shot's Monte Carlo (docs/flight.md §7).
     pub fn shot_mc(&self, spec: &ShotMcSpec) -> Result<ShotMcReport, BallError> {
+        self.shot_mc_watched(spec, &mut |_| true)?
+            .ok_or_else(|| BallError::Invalid {
+                field: "samples",
+                value: spec.samples as f64,
+                reason: "stopped".into(),
+            })
+    }
+
+    /// [`Ball::shot_mc`] in blocks of [`SHOT_MC_BLOCK`] shots, `watch(done)` called before
+    /// each block and once after the last with the count of shots done: `None` once it
+    /// answers false (a Ctrl-C). The blocks change no sample (each is a function of its index).
+    pub fn shot_mc_watched(
+        &self,
+        spec: &ShotMcSpec,
+        watch: &mut dyn FnMut(usize) -> bool,
+    ) -> Result<Option<ShotMcReport>, BallError> {
         let invalid = |field, value: f64, reason: &str| BallError::Invalid {
             field,
             value,
@@ -172,11 +192,23 @@ impl Ball {
         }
         // the nominal shot first: its errors are the input's
         self.shot(&spec.shot)?;
-        let rows: Vec<Option<[f64; 6]>> = (0..spec.samples as u64)
-            .into_par_iter()
-            .map(|i| self.shot(&spec.sample(i)).ok().map(|r| row(&r)))
-            .collect();
-        let ok: Vec<[f64; 6]> = rows.iter().flatten().copied().collect();
+        let mut ok: Vec<[f64; 6]> = Vec::with_capacity(spec.samples);
+        let mut done = 0usize;
+        while done < spec.samples {
+            if !watch(done) {
+                return Ok(None);
+            }
+            let end = (done + SHOT_MC_BLOCK).min(spec.samples);
+            let block: Vec<Option<[f64; 6]>> = (done as u64..end as u64)
+                .into_par_iter()
+                .map(|i| self.shot(&spec.sample(i)).ok().map(|r| row(&r)))
+                .collect();
+            ok.extend(block.into_iter().flatten());
+            done = end;
+        }
+        if !watch(done) {
+            return Ok(None);
+        }
         if ok.is_empty() {
             return Err(invalid(
                 "samples",
@@ -189,13 +221,13 @@ impl Ball {
             .enumerate()
             .map(|(k, name)| (*name, spread(ok.iter().map(|r| r[k]).collect())))
             .collect();
-        Ok(ShotMcReport {
+        Ok(Some(ShotMcReport {
             samples: spec.samples,
             seed: spec.seed,
             dist: if spec.uniform { "uniform" } else { "normal" },
             vary: spec.spread,
             failed: spec.samples - ok.len(),
             stats,
-        })
+        }))
     }
 }

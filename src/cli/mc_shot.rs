@@ -133,6 +133,7 @@ pub fn run(s: &ShotMcArgs, a: &Mc<'_>, out: &mut dyn Write) -> anyhow::Result<()
         friction: required(s.friction, "--friction")?,
         tangential_stiffness: s.tangential.tangential_stiffness,
         inertia_factor: s.tangential.inertia_factor,
+        tangential_damping: s.tangential.tangential_damping,
         air_density: s.air_density.unwrap_or(crate::drop::flight::AIR_DENSITY),
         drag_coefficient: s.drag_coefficient,
         lift_coefficient: s.lift_coefficient,
@@ -146,9 +147,28 @@ pub fn run(s: &ShotMcArgs, a: &Mc<'_>, out: &mut dyn Write) -> anyhow::Result<()
         samples: a.samples,
         seed: a.seed,
     };
+    // the bar on stderr and the Ctrl-C check between blocks (src/cli/budget.rs); a shot
+    // (some 17 µs, BENCHMARKS.md) counts as one impact for when the bar shows
+    let progress = super::budget::Progress::new(spec.samples as u64, 1.0, "shots");
+    let mut shown = 0usize;
+    let mut stopped = None;
     let r = ball
-        .shot_mc(&spec)
+        .shot_mc_watched(&spec, &mut |done| {
+            progress.advance((done - shown) as u64);
+            shown = done;
+            match progress.check() {
+                Ok(()) => true,
+                Err(e) => {
+                    stopped = Some(e);
+                    false
+                }
+            }
+        })
         .map_err(|e: BallError| anyhow::anyhow!("{e}"))?;
+    let Some(r) = r else {
+        return Err(stopped.unwrap_or_else(|| super::budget::Interrupted.into()));
+    };
+    progress.finish();
     if a.json {
         output::json_stated(out, &json(&ball, &r), &ball.conditions)?
     } else {

@@ -98,6 +98,7 @@ impl ShotArgs {
             friction: self.friction,
             tangential_stiffness: self.tangential.tangential_stiffness,
             inertia_factor: self.tangential.inertia_factor,
+            tangential_damping: self.tangential.tangential_damping,
             air_density: self.air_density,
             drag_coefficient: self.drag_coefficient,
             lift_coefficient: self.lift_coefficient,

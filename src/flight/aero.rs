@@ -21,7 +21,8 @@ pub enum Drag {
         cd: f64,
     },
     /// A drag crisis: C_D = `cd_low` below Re = `re_low`, `cd_high` above `re_high`, and
-    /// linear in ln Re between (docs/flight.md §2: the shape between is assumed).
+    /// a smoothstep in ln Re between (docs/flight.md §2: the shape between is assumed), plus
+    /// `cd_per_spin` × S (a spinning ball's extra drag, Smits & Smith's 0.18 S for golf).
     Crisis {
         /// Below this Re, `cd_low`.
         re_low: f64,
@@ -31,13 +32,15 @@ pub enum Drag {
         re_high: f64,
         /// C_D above the crisis.
         cd_high: f64,
+        /// dC_D/dS: the drag added by spin.
+        cd_per_spin: f64,
     },
 }
 
 impl Drag {
-    /// C_D at Reynolds number `re`.
+    /// C_D at Reynolds number `re` and spin parameter `s` = R|ω|/|v|.
     #[inline]
-    pub fn cd(&self, re: f64) -> f64 {
+    pub fn cd(&self, re: f64, s: f64) -> f64 {
         match *self {
             Drag::Constant { cd } => cd,
             Drag::Crisis {
@@ -45,15 +48,19 @@ impl Drag {
                 cd_low,
                 re_high,
                 cd_high,
+                cd_per_spin,
             } => {
-                if re <= re_low {
+                let crisis = if re <= re_low {
                     cd_low
                 } else if re >= re_high {
                     cd_high
                 } else {
+                    // smoothstep in ln Re: C¹ at both ends (a kink costs the integrations
+                    // their order, see `table`); the shape between is assumed
                     let f = (re / re_low).ln() / (re_high / re_low).ln();
-                    cd_low + f * (cd_high - cd_low)
-                }
+                    cd_low + f * f * (3.0 - 2.0 * f) * (cd_high - cd_low)
+                };
+                crisis + cd_per_spin * s
             }
         }
     }
@@ -78,6 +85,12 @@ pub enum Lift {
         /// c2.
         c2: f64,
     },
+    /// C_L through tabulated (S, C_L) points by a monotone cubic, S increasing from (0, 0),
+    /// held beyond the last point (Smits & Smith's golf table, docs/flight.md §2).
+    Table {
+        /// (S, C_L), S increasing.
+        points: &'static [(f64, f64)],
+    },
 }
 
 impl Lift {
@@ -87,9 +100,89 @@ impl Lift {
         match *self {
             Lift::Constant { cl } => cl,
             Lift::Rational { c0, c1, c2 } => c2 * s / (c0 + c1 * s),
+            Lift::Table { points } => table(points, s),
         }
     }
 }
+
+/// The monotone cubic Hermite interpolant (Fritsch & Butland's slopes, as SciPy's PCHIP) of
+/// `points` (S increasing) at `s`: through every point, C¹, monotone where the data are,
+/// continued straight with its slope below the first point and held at the last point's
+/// value beyond it (its slope there 0: no extrapolation past the data). Smooth rather than
+/// piecewise linear because a kink in a force costs the step-controlled integrations their
+/// order at each crossing (tests/physics/flight.rs `an_independent_dop853_agrees` saw 2e-9 apart
+/// with kinks); written here because it is a dozen lines on five points, on the hot path.
+#[inline]
+fn table(points: &[(f64, f64)], s: f64) -> f64 {
+    let n = points.len();
+    match n {
+        0 => return 0.0,
+        1 => return points[0].1,
+        _ => {}
+    }
+    let secant = |i: usize| (points[i + 1].1 - points[i].1) / (points[i + 1].0 - points[i].0);
+    let width = |i: usize| points[i + 1].0 - points[i].0;
+    // the slope at point i
+    let slope = |i: usize| -> f64 {
+        if n == 2 {
+            return secant(0);
+        }
+        let end = |h0: f64, h1: f64, d0: f64, d1: f64| {
+            // three-point one-sided slope, kept to the secant's sign and under 3 secants
+            let m = ((2.0 * h0 + h1) * d0 - h0 * d1) / (h0 + h1);
+            if m.signum() != d0.signum() {
+                0.0
+            } else if d0.signum() != d1.signum() && m.abs() > 3.0 * d0.abs() {
+                3.0 * d0
+            } else {
+                m
+            }
+        };
+        if i == 0 {
+            end(width(0), width(1), secant(0), secant(1))
+        } else if i == n - 1 {
+            0.0
+        } else {
+            let (d0, d1, h0, h1) = (secant(i - 1), secant(i), width(i - 1), width(i));
+            if d0 * d1 <= 0.0 {
+                0.0
+            } else {
+                let (w1, w2) = (2.0 * h1 + h0, h1 + 2.0 * h0);
+                (w1 + w2) / (w1 / d0 + w2 / d1)
+            }
+        }
+    };
+    let (s0, c0) = points[0];
+    if s <= s0 {
+        return c0 + slope(0) * (s - s0);
+    }
+    let (sn, cn) = points[n - 1];
+    if s >= sn {
+        return cn;
+    }
+    let i = points
+        .iter()
+        .rposition(|p| p.0 <= s)
+        .unwrap_or(0)
+        .min(n - 2);
+    let (h, t) = (width(i), (s - points[i].0) / width(i));
+    let (t2, t3) = (t * t, t * t * t);
+    (2.0 * t3 - 3.0 * t2 + 1.0) * points[i].1
+        + (t3 - 2.0 * t2 + t) * h * slope(i)
+        + (-2.0 * t3 + 3.0 * t2) * points[i + 1].1
+        + (t3 - t2) * h * slope(i + 1)
+}
+
+/// Smits & Smith's (1994) golf C_L against S, as tabulated from their model by the secondary
+/// sources of docs/flight.md §2 [5]; Bearman & Harvey's (1976) measurements agree within 0.02
+/// over 0.05 < S < 0.3 (docs/flight.md §2).
+pub const GOLF_LIFT: [(f64, f64); 5] = [
+    (0.0, 0.0),
+    (0.04, 0.10),
+    (0.10, 0.16),
+    (0.20, 0.23),
+    (0.40, 0.33),
+];
 
 /// How the spin decays in flight.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
@@ -181,18 +274,19 @@ impl Aero {
                 "C_L and spin decay Nathan's calculator; C_D assumed 0.47 (smooth sphere)",
             ),
             // Jenkins et al. (2018): 0.24 < C_D < 0.7 over 3·10⁴ < Re < 1.08·10⁵ (the dimpled
-            // ball's crisis); Smits & Smith (1994): spin loss 0.0004 (1/mph/s) × speed × spin;
-            // C_L: none found, no lift assumed
+            // ball's crisis), plus Smits & Smith's (1994) spin term 0.18 S; their C_L(S) table;
+            // spin loss 0.0004 (1/mph/s) × speed × spin
             Some("golf") => published(
                 Drag::Crisis {
                     re_low: 3.0e4,
                     cd_low: 0.7,
                     re_high: 1.08e5,
                     cd_high: 0.24,
+                    cd_per_spin: 0.18,
                 },
-                Lift::Constant { cl: 0.0 },
+                Lift::Table { points: &GOLF_LIFT },
                 Decay::PerMetre { k: 0.0004 / MPH },
-                "C_D Jenkins et al. 2018 (crisis); spin decay Smits & Smith 1994; no lift (none found)",
+                "C_D Jenkins et al. 2018 (crisis) + 0.18 S, C_L(S) and spin decay Smits & Smith 1994",
             ),
             _ => Aero::assumed(rho),
         }

@@ -12,7 +12,7 @@ use crate::drop::G;
 pub type Y = [f64; 6];
 
 /// The relative and absolute tolerance of a step (its error norm ≤ 1).
-pub const TOL: f64 = 1e-11;
+pub const TOL: f64 = 5e-12;
 
 /// A ball in the air: its aerodynamics and what they act on.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -38,14 +38,19 @@ impl Body {
     pub fn rate(&self, y: &Y) -> Y {
         let (vx, vy, w) = (y[2], y[3], y[4]);
         let v = (vx * vx + vy * vy).sqrt();
-        let cd = self
-            .aero
-            .drag
-            .cd(reynolds(self.aero.air_density, v, self.radius));
+        let spin_parameter = if v == 0.0 {
+            0.0
+        } else {
+            self.radius * w.abs() / v
+        };
+        let cd = self.aero.drag.cd(
+            reynolds(self.aero.air_density, v, self.radius),
+            spin_parameter,
+        );
         let cl = if w == 0.0 || v == 0.0 {
             0.0
         } else {
-            self.aero.lift.cl(self.radius * w.abs() / v).copysign(w)
+            self.aero.lift.cl(spin_parameter).copysign(w)
         };
         let (d, l) = (self.q * cd * v, self.q * cl * v);
         [

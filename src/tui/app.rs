@@ -112,6 +112,8 @@ pub struct App {
     pub(in crate::tui) charts: super::chartview::ChartViews,
     /// The oblique view's angle, spin, friction, impact and map.
     pub(in crate::tui) oblique: crate::tui::views::oblique::state::ObliqueView,
+    /// The flight view's launch, surface and shot.
+    pub(in crate::tui) flight: crate::tui::views::flight::state::FlightView,
 }
 
 impl App {
@@ -165,6 +167,7 @@ impl App {
             copy: Default::default(),
             charts: Default::default(),
             oblique: Default::default(),
+            flight: Default::default(),
         };
         app.keep();
         app.refresh();
@@ -252,6 +255,7 @@ impl App {
             Action::ShowCommand => return self.show_command(),
             Action::Normalize | Action::Zoom(_) => self.chart_view(action),
             Action::Oblique(key) => self.oblique_action(key),
+            Action::Flight(key) => self.flight_action(key),
             Action::Retry => self.retry(),
             _ => self.edit(action),
         }

@@ -183,6 +183,38 @@ pub fn oblique_line(
     words.join(" ")
 }
 
+/// The `bouncelab shot` line that computes the flight view's shot: the ball's options as
+/// `oblique_line`'s (K_r and c for λ and ζ, which `shot` does not take), no v0 (the launch
+/// speed is the view's), then the launch and μ (src/tui/views/flight/).
+pub fn shot_line(
+    source: Source,
+    preset: &Preset,
+    setting: &Setting,
+    v: &crate::tui::views::flight::state::FlightValues,
+) -> String {
+    let mut words = vec!["bouncelab".to_string(), "shot".into()];
+    let mut ball = options(source, preset, setting);
+    if let Some(at) = ball.iter().position(|w| w == "--lambda") {
+        let p = &setting.params;
+        let kr = [
+            "--k-r".into(),
+            number(p.k_r),
+            "--damping".into(),
+            number(p.damping),
+        ];
+        ball.splice(at..at + 4, kr);
+    }
+    if let Some(at) = ball.iter().position(|w| w == "--v0") {
+        ball.drain(at..at + 2);
+    }
+    words.extend(ball);
+    use crate::tui::views::flight::param::FlightParam;
+    for p in FlightParam::ALL {
+        words.extend([p.option().into(), number(v.get(p))]);
+    }
+    words.join(" ")
+}
+
 /// The words after `bouncelab run` that run `setting` (module docs).
 fn options(source: Source, preset: &Preset, setting: &Setting) -> Vec<String> {
     let mut words = Vec::new();

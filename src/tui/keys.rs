@@ -2,7 +2,7 @@
 //! `update` needs to stop the help's scrolling at its end.
 
 /// (keys, what they do); a row without text is a section heading.
-pub const KEYS: [(&str, &str); 70] = [
+pub const KEYS: [(&str, &str); 77] = [
     ("l / L", "λ up / down (±0.01, coarse ±0.1)"),
     ("z / Z", "ζ up / down (×1.1, coarse ×2)"),
     ("v / V", "v0 up / down (±0.1, coarse ±1 m/s)"),
@@ -33,6 +33,7 @@ pub const KEYS: [(&str, &str); 70] = [
     ),
     ("d", "drop test (space pauses, b replays)"),
     ("i", "oblique impact: angle, spin, friction"),
+    ("h", "flight: a shot, its bounce and landing"),
     ("o / O", "load measured data / put it away"),
     ("f / F", "fit the ball to it / apply the fit"),
     ("?", "this help (Esc, ? or q closes)"),
@@ -53,6 +54,12 @@ pub const KEYS: [(&str, &str); 70] = [
     ("← → / ↑ ↓", "on the map: move the cursor, θ / μ"),
     ("n", "map of angle out, spin out or e_x"),
     ("i", "back to the impact view"),
+    ("", ""),
+    ("In the flight view (h)", ""),
+    ("← → / ↑ ↓", "select / step v, elevation, ω, H, μ"),
+    ("a/A w/W k/K", "step elevation ±1°, ω ±10 rad/s, μ ±0.05"),
+    ("y / e", "the bouncelab shot line / export the path"),
+    ("h", "back to the impact view"),
     ("", ""),
     ("In this help", ""),
     ("↑↓ j k PgUp/Dn", "scroll (Home / End: top / end)"),

@@ -77,6 +77,7 @@ fn view_name(v: View) -> &'static str {
         View::Map => "map",
         View::Drop => "drop",
         View::Oblique => "oblique",
+        View::Flight => "flight",
     }
 }
 
@@ -132,6 +133,7 @@ impl App {
             View::Map,
             View::Drop,
             View::Oblique,
+            View::Flight,
         ]
         .into_iter()
         .find(|&v| view_name(v) == session.view)

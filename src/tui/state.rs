@@ -30,6 +30,8 @@ pub enum View {
     Drop,
     /// Oblique impacts (`i`, outside the Tab cycle): src/tui/views/oblique/state.rs.
     Oblique,
+    /// A shot's flight (`h`, outside the Tab cycle): src/tui/views/flight/state.rs.
+    Flight,
 }
 
 impl View {
@@ -44,6 +46,7 @@ impl View {
             View::Map => "map",
             View::Drop => return "drop test".into(),
             View::Oblique => return "oblique".into(),
+            View::Flight => return "flight".into(),
         };
         let n = View::CYCLE.len();
         let k = View::CYCLE.iter().position(|&v| v == self).unwrap_or(0) + 1;
@@ -77,7 +80,7 @@ impl View {
                 Chart::ModelsForceTime,
                 Chart::ModelsForceDisplacement,
             ],
-            View::Map | View::Drop | View::Oblique => &[],
+            View::Map | View::Drop | View::Oblique | View::Flight => &[],
         }
     }
 }

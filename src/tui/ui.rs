@@ -68,7 +68,7 @@ pub fn screen(app: &App, area: Rect) -> Option<Screen> {
             View::Impact => impact_grid(charts),
             View::Sweeps => sweeps_grid(charts),
             View::Models => models_grid(charts),
-            View::Drop | View::Map | View::Oblique => Vec::new(),
+            View::Drop | View::Map | View::Oblique | View::Flight => Vec::new(),
         };
         (charts, b.readout, fit)
     };
@@ -87,7 +87,10 @@ pub fn screen(app: &App, area: Rect) -> Option<Screen> {
 /// The fit pane's view, while there is a fit and the view has charts (not the map's raster).
 fn fit_view(app: &App, theme: Theme) -> Option<FitView<'_>> {
     // the map view's grid is sized by `update` from the whole chart area (layout::body)
-    if matches!(app.view(), View::Drop | View::Map | View::Oblique) {
+    if matches!(
+        app.view(),
+        View::Drop | View::Map | View::Oblique | View::Flight
+    ) {
         return None;
     }
     Some(FitView {
@@ -305,6 +308,7 @@ impl Widget for &App {
             map: self.view() == View::Map,
             drop: self.view() == View::Drop,
             oblique: (self.view() == View::Oblique).then(|| self.oblique_view().page),
+            flight: self.view() == View::Flight,
         }
         .render(s.status, buf);
         if self.view() == View::Drop {
@@ -322,6 +326,21 @@ impl Widget for &App {
                 drop: self.drop_view(),
                 ball: &self.preset().name,
                 chart: &chart,
+                theme,
+            }
+            .render(body, buf);
+        } else if self.view() == View::Flight {
+            // the flight view takes the whole body (src/tui/views/flight/widget.rs)
+            let body = Rect::new(
+                area.x,
+                s.header.bottom(),
+                area.width,
+                s.message.y - s.header.bottom(),
+            );
+            crate::tui::views::flight::widget::FlightPanel {
+                view: self.flight_view(),
+                ball: &self.preset().name,
+                radius: self.setting().radius,
                 theme,
             }
             .render(body, buf);

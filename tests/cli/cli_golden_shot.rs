@@ -22,6 +22,27 @@ const SERVE: &[&str] = &[
 
 const CASES: &[(&str, &[&str])] = &[
     ("shot-text-serve", SERVE),
+    // a steep landing that grips (not slid throughout): the tangential dashpot changes the
+    // bounce (the flag was taken and ignored before: the answer was the undamped one,
+    // end x = 7.205 m)
+    (
+        "shot-text-grip-damped",
+        &[
+            "shot",
+            "--preset",
+            "tennis",
+            "--height",
+            "2",
+            "--speed",
+            "15",
+            "--elevation",
+            "-40",
+            "--friction",
+            "0.9",
+            "--tangential-damping",
+            "5",
+        ],
+    ),
     (
         "shot-json-serve",
         &[

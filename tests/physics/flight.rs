@@ -90,11 +90,11 @@ impl ODE<f64, X> for Air {
     fn diff(&self, _t: f64, s: &X, d: &mut X) {
         let [_, _, vx, vy, w] = *s;
         let v = (vx * vx + vy * vy).sqrt();
+        let sp = self.r * w.abs() / v;
         let cd = self
             .aero
             .drag
-            .cd(reynolds(self.aero.air_density, v, self.r));
-        let sp = self.r * w.abs() / v;
+            .cd(reynolds(self.aero.air_density, v, self.r), sp);
         let cl = if w == 0.0 {
             0.0
         } else {
@@ -297,6 +297,31 @@ fn each_bounce_is_oblique_on_the_arriving_state() {
 }
 
 #[test]
+fn a_shot_bounces_with_its_tangential_damping() {
+    // a steep landing that grips: the bounce is `oblique_damped` with the shot's c_t, and
+    // not the undamped one (`shot --tangential-damping` was taken and ignored)
+    let b = ball("tennis");
+    let mut spec = ShotSpec::new(2.0, 15.0, -40.0, 0.0, 0.9);
+    let plain = b.shot(&spec).unwrap();
+    spec.tangential_damping = Some(5.0);
+    let damped = b.shot(&spec).unwrap();
+    let bn = &damped.bounces[0];
+    assert!(!bn.slid_throughout);
+    let o = ObliqueSpec {
+        v: Some(bn.vx_in.hypot(bn.vy_in)),
+        angle_deg: (-bn.vy_in).atan2(bn.vx_in).to_degrees(),
+        spin: bn.spin_in,
+        friction: 0.9,
+        tangential_stiffness: None,
+        inertia_factor: None,
+    };
+    let r = b.oblique_damped(&o, Some(5.0), 0).unwrap();
+    close("vx_out", bn.vx_out, r.vx_out, 1e-12);
+    close("spin_out", bn.spin_out, r.spin_out, 1e-12);
+    assert!((bn.vx_out - plain.bounces[0].vx_out).abs() > 1e-3);
+}
+
+#[test]
 fn a_ball_arriving_backward_bounces_mirrored() {
     // the library's flight sent backward (elevation 150°, which `Ball::shot` does not take):
     // its bounce asks `oblique` for the mirrored state (|v_x|, −ω) and mirrors the answer back
@@ -393,12 +418,48 @@ fn the_models_have_the_published_forms() {
     // Nathan: C_L = 1.120 S/(0.583 + 2.333 S)
     let bb = Aero::for_ball(Some("baseball"), 1.204);
     assert!((bb.lift.cl(0.25) - 1.120 * 0.25 / (0.583 + 2.333 * 0.25)).abs() < 1e-15);
-    // golf's crisis: 0.7 below Re 3e4, 0.24 above 1.08e5, monotone between
+    // golf's crisis: 0.7 below Re 3e4, 0.24 above 1.08e5, monotone between; plus 0.18 S
     let g = Aero::for_ball(Some("golf"), 1.204);
-    assert_eq!(g.drag.cd(1e4), 0.7);
-    assert_eq!(g.drag.cd(2e5), 0.24);
-    let mid = g.drag.cd(6e4);
+    assert_eq!(g.drag.cd(1e4, 0.0), 0.7);
+    assert_eq!(g.drag.cd(2e5, 0.0), 0.24);
+    assert!((g.drag.cd(2e5, 0.1) - (0.24 + 0.18 * 0.1)).abs() < 1e-15);
+    let mid = g.drag.cd(6e4, 0.0);
     assert!(mid < 0.7 && mid > 0.24);
+    // C¹ across the crisis' ends (a smoothstep in ln Re)
+    for re in [3.0e4, 1.08e5] {
+        let h = re * 1e-7;
+        let left = (g.drag.cd(re, 0.0) - g.drag.cd(re - h, 0.0)) / h;
+        let right = (g.drag.cd(re + h, 0.0) - g.drag.cd(re, 0.0)) / h;
+        assert!((left - right).abs() * re < 1e-4, "kink at Re = {re}");
+    }
+    // Smits & Smith's C_L(S): through their points, increasing between and beyond, smooth
+    let pts = [
+        (0.0, 0.0),
+        (0.04, 0.10),
+        (0.1, 0.16),
+        (0.2, 0.23),
+        (0.4, 0.33),
+    ];
+    for (s, cl) in pts {
+        assert!((g.lift.cl(s) - cl).abs() < 1e-15, "S = {s}");
+    }
+    let grid: Vec<f64> = (0..=600).map(|i| i as f64 * 1e-3).collect();
+    for w in grid.windows(2) {
+        let (a, b) = (g.lift.cl(w[0]), g.lift.cl(w[1]));
+        // increasing up to the last point, held beyond
+        assert!(
+            b > a || (w[0] >= 0.4 && b == a),
+            "C_L not increasing at S = {}",
+            w[1]
+        );
+        // C¹: no jump in the slope anywhere (a kink would show as a jump of the secant)
+        if w[0] > 0.0 {
+            let h = 1e-7;
+            let left = (g.lift.cl(w[1]) - g.lift.cl(w[1] - h)) / h;
+            let right = (g.lift.cl(w[1] + h) - g.lift.cl(w[1])) / h;
+            assert!((left - right).abs() < 1e-4, "kink at S = {}", w[1]);
+        }
+    }
     // a ball with no published model says so
     let s = Aero::for_ball(Some("superball"), 1.204);
     assert!(s.assumed && s.lift == Lift::Constant { cl: 0.0 });

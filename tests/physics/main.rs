@@ -17,6 +17,7 @@ mod drop;
 mod drop_flight;
 mod drop_presets;
 mod flight;
+mod flight_anchors;
 mod flight_mc;
 mod fuzz_regressions;
 mod hertz_table;

@@ -29,6 +29,7 @@ mod tui_export;
 mod tui_fit;
 mod tui_fit_drops;
 mod tui_fit_pty;
+mod tui_flight;
 mod tui_form;
 mod tui_guards;
 mod tui_heavy;

@@ -195,6 +195,10 @@ fn every_tick_label_sits_at_its_value_in_every_view_at_every_size() {
         assert_eq!(app.view(), View::Oblique);
         // the forces, slip and spin charts
         assert!(check(&format!("{ball} oblique"), &mut app) >= 10);
+        press(&mut app, &[KeyCode::Char('i'), KeyCode::Char('h')]);
+        assert_eq!(app.view(), View::Flight);
+        // the shot's path: its two axes at each size
+        assert!(check(&format!("{ball} flight"), &mut app) >= 5);
     }
 }
 

@@ -55,9 +55,17 @@ pub fn from_key(key: KeyEvent, mode: Mode) -> Option<Action> {
             KeyCode::Char('n' | 'N') | KeyCode::Esc => Some(Action::CloseHelp),
             _ => None,
         },
-        Mode::Normal | Mode::Map | Mode::Crosshair | Mode::Oblique | Mode::ObliqueMap if ctrl => {
+        Mode::Normal
+        | Mode::Map
+        | Mode::Crosshair
+        | Mode::Oblique
+        | Mode::ObliqueMap
+        | Mode::Flight
+            if ctrl =>
+        {
             None
         }
+        Mode::Flight => flight::keys(key).or_else(|| normal(key)),
         Mode::Oblique => oblique::charts(key).or_else(|| normal(key)),
         Mode::ObliqueMap => oblique::map(key).or_else(|| normal(key)),
         Mode::Normal => normal(key),
@@ -117,6 +125,7 @@ fn picker(code: KeyCode) -> Option<Action> {
     }
 }
 
+mod flight;
 mod modal;
 mod oblique;
 use modal::{crosshair, form};
@@ -171,6 +180,7 @@ fn normal(key: KeyEvent) -> Option<Action> {
         KeyCode::Char('?') => Some(Action::ToggleHelp),
         KeyCode::Char('d') => Some(Action::ToggleDrop),
         KeyCode::Char('i') => Some(Action::Oblique(super::ObliqueKey::Toggle)),
+        KeyCode::Char('h') => Some(Action::Flight(super::FlightKey::Toggle)),
         KeyCode::Char(' ') => Some(Action::DropPause),
         KeyCode::Char('b') => Some(Action::DropReplay),
         KeyCode::Char('o') => Some(Action::OpenMeasured),

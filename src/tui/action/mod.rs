@@ -191,6 +191,8 @@ pub enum Action {
     },
     /// The oblique view's keys (`i` to open it; src/tui/views/oblique/).
     Oblique(ObliqueKey),
+    /// A key of the flight view.
+    Flight(FlightKey),
     /// A worker's thread is gone (a panic in its job): `why`, with the panic's message. The
     /// view whose computation it was says so; `R` or the next request starts a new thread.
     WorkerStopped {
@@ -204,6 +206,23 @@ pub enum Action {
         generation: u64,
         map: Box<Result<crate::tui::views::oblique::map::ObliqueMap, String>>,
     },
+}
+
+/// What a key asks of the flight view (src/tui/views/flight/).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum FlightKey {
+    /// `h`: open the flight view, or leave it for the impact view.
+    Toggle,
+    /// `a`/`A`, `w`/`W`, `k`/`K`: step the elevation, the spin or μ (and select it).
+    Step {
+        param: crate::tui::views::flight::param::FlightParam,
+        up: bool,
+        coarse: bool,
+    },
+    /// ↑ ↓: step the selected value (Shift, PgUp/PgDn: coarse).
+    StepSelected { up: bool, coarse: bool },
+    /// ← →: select the next or previous of speed, elevation, spin, height, μ.
+    Select { next: bool },
 }
 
 /// What a key asks of the oblique view.
@@ -270,6 +289,9 @@ pub enum Mode {
     Oblique,
     /// The oblique view's map: the arrows move the cursor (θ, μ); other keys as in `Oblique`.
     ObliqueMap,
+    /// The flight view: the arrows select and step the launch and μ, `a w k` step the
+    /// elevation, spin and μ; other keys as in `Normal`.
+    Flight,
 }
 
 mod keys;

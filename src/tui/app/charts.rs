@@ -128,6 +128,9 @@ impl App {
             View::Oblique => "x, N, +/- read the oblique view's charts: t shows them \
                  (the readout has the impact's numbers)"
                 .into(),
+            View::Flight => "x, N, +/- read the impact, sweeps and models views' charts; \
+                 here the readout has the shot's numbers and e exports the path (SVG + CSV)"
+                .into(),
             _ => format!(
                 "the {} view reads with its cursor (arrows): x, N, +/- read the charts of \
                  the other views",

@@ -91,11 +91,15 @@ impl App {
     }
 
     /// The explorer's line that opens it again in what the screen shows (`y`); in the
-    /// oblique view, the `bouncelab oblique …` line that computes the impact it shows.
+    /// oblique view, the `bouncelab oblique …` line that computes the impact it shows; in the
+    /// flight view, the `bouncelab shot …` line that computes the shot it shows.
     pub fn command_line(&self) -> String {
         let (source, preset) = self.source_of(&self.setting);
         if self.view == crate::tui::state::View::Oblique {
             return command::oblique_line(source, preset, &self.setting, &self.oblique.values());
+        }
+        if self.view == crate::tui::state::View::Flight {
+            return command::shot_line(source, preset, &self.setting, &self.flight.values);
         }
         command::explorer_line(source, preset, &self.setting)
     }

@@ -89,6 +89,7 @@ impl App {
             Overlay::None if self.view == View::Map => Mode::Map,
             Overlay::None if self.crosshair().is_some() => Mode::Crosshair,
             Overlay::None if self.view == View::Oblique => self.oblique_mode(),
+            Overlay::None if self.view == View::Flight => crate::tui::action::Mode::Flight,
             Overlay::None => Mode::Normal,
             // the command box closes, and scrolls nothing, like the help
             Overlay::Help | Overlay::Command(_) => Mode::Help,

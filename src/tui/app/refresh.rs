@@ -22,6 +22,9 @@ impl App {
         effects.extend(self.refresh_models());
         effects.extend(self.refresh_map());
         effects.extend(self.refresh_oblique());
+        if self.view == View::Flight {
+            self.refresh_flight();
+        }
         if self.export_wanted {
             effects.extend(self.prepare_export());
         }
@@ -55,6 +58,9 @@ impl App {
     fn prepare_export(&mut self) -> Option<Effect> {
         if self.view == View::Map {
             return self.prepare_map_export();
+        }
+        if self.view == View::Flight {
+            return self.prepare_flight_export();
         }
         if self.view == View::Oblique {
             return self.prepare_oblique_export();

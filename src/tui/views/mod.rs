@@ -5,6 +5,7 @@
 
 pub mod drop;
 pub mod fit;
+pub mod flight;
 pub mod map;
 pub mod models;
 pub mod oblique;

@@ -118,7 +118,19 @@ pub struct KeyHints {
     /// In the oblique view (its page): its own keys in place of `e` and of the arrows' hints
     /// on the map.
     pub oblique: Option<crate::tui::views::oblique::state::Page>,
+    /// In the flight view: its own keys in place of the arrows' hints.
+    pub flight: bool,
 }
+
+/// The flight view's own keys (src/tui/views/flight/).
+const FLIGHT_HINTS: [(&str, &str, u8); 6] = [
+    ("←→", "select", 0),
+    ("↑↓", "step", 0),
+    ("a/A", "elev", 1),
+    ("w/W", "ω", 1),
+    ("k/K", "μ", 1),
+    ("h", "back", 0),
+];
 
 /// The oblique view's own keys (src/tui/views/oblique/).
 const OBLIQUE_HINTS: [(&str, &str, u8); 5] = [
@@ -159,6 +171,10 @@ impl Widget for &KeyHints {
                         (k, d, if knob { r.max(1) } else { r })
                     }),
             );
+            v
+        } else if self.flight {
+            let mut v = FLIGHT_HINTS.to_vec();
+            v.extend(HINTS.iter().filter(|h| !matches!(h.0, "↑↓" | "←→" | "=")));
             v
         } else if self.drop {
             let mut v = DROP_HINTS.to_vec();

@@ -1,0 +1,115 @@
+//! The flight view's part of `update`: `h` in and out, the launch and μ stepped (each taken
+//! only where the library takes it: a refused value leaves the last one and says why), and
+//! the shot kept up to date with the ball (state.rs says what it is).
+
+use crate::api::ShotSpec;
+use crate::text::number;
+use crate::tui::action::FlightKey;
+use crate::tui::app::{App, Effect, View};
+use crate::tui::export::{ExportRequest, file_stem_part};
+use crate::tui::views::flight::export;
+use crate::tui::views::flight::state::{FlightValues, FlightView, SAMPLES};
+
+/// The shot the view shows for `v`: one bounce, to the landing after it, the ball's own
+/// aerodynamic models in standard air (as `bouncelab shot` with the same numbers).
+pub fn spec(v: &FlightValues) -> ShotSpec {
+    let mut s = ShotSpec::new(v.height, v.speed, v.elevation, v.spin, v.friction);
+    s.samples = SAMPLES;
+    s
+}
+
+impl App {
+    /// The flight view's state.
+    pub fn flight_view(&self) -> &FlightView {
+        &self.flight
+    }
+
+    /// The flight view's keys.
+    pub(in crate::tui) fn flight_action(&mut self, key: FlightKey) {
+        if key == FlightKey::Toggle {
+            self.view = if self.view == View::Flight {
+                View::Impact
+            } else {
+                View::Flight
+            };
+            self.crosshair = None;
+            self.refresh_flight();
+            return;
+        }
+        if self.view != View::Flight {
+            return;
+        }
+        let coarse = self.coarse;
+        let f = &mut self.flight;
+        let (param, up, big) = match key {
+            FlightKey::Step { param, up, coarse } => (param, up, coarse),
+            FlightKey::StepSelected { up, coarse } => (f.selected.0, up, coarse),
+            FlightKey::Select { next } => {
+                let p = f.selected.0;
+                f.selected.0 = if next { p.next() } else { p.prev() };
+                return;
+            }
+            FlightKey::Toggle => return,
+        };
+        f.selected.0 = param;
+        let next = f
+            .values
+            .with(param, param.step(f.values.get(param), up, big || coarse));
+        let ball = self.oblique_ball();
+        match ball.shot(&spec(&next)) {
+            Ok(r) => {
+                self.flight.values = next;
+                self.flight.key = Some((ball, next));
+                self.flight.shot = Some(Ok(r));
+            }
+            Err(e) => self.error(format!("{}: {e}", param.option())),
+        }
+    }
+
+    /// Compute the shot again when the ball or the values changed.
+    pub(in crate::tui) fn refresh_flight(&mut self) {
+        let ball = self.oblique_ball();
+        let key = (ball, self.flight.values);
+        if self.flight.key.as_ref() == Some(&key) {
+            return;
+        }
+        self.flight.shot = Some(key.0.shot(&spec(&key.1)).map_err(|e| e.to_string()));
+        self.flight.key = Some(key);
+    }
+
+    /// `e` in the flight view: the path as a figure (SVG and CSV), the CSV headed by `y`'s
+    /// line and the landing's and the bounce's numbers; nothing recomputed.
+    pub(in crate::tui) fn prepare_flight_export(&mut self) -> Option<Effect> {
+        self.export_wanted = false;
+        let r = match &self.flight.shot {
+            Some(Ok(r)) => r,
+            Some(Err(e)) => {
+                self.error(format!("export failed: no shot ({e})"));
+                return None;
+            }
+            None => {
+                self.error("export failed: no shot yet".into());
+                return None;
+            }
+        };
+        let v = &self.flight.values;
+        let subtitle = format!(
+            "{}, from {} m at {} m/s, {}°, {} rad/s; μ = {}",
+            self.preset().name,
+            number(v.height),
+            number(v.speed),
+            number(v.elevation),
+            number(v.spin),
+            number(v.friction)
+        );
+        let radius = self.setting.radius;
+        let charts = vec![("flight-path", export::path_figure(r, radius, &subtitle))];
+        let header = export::header(&self.command_line(), r);
+        Some(Effect::Export(ExportRequest {
+            ball: file_stem_part(&self.preset().name),
+            charts,
+            map: None,
+            header,
+        }))
+    }
+}

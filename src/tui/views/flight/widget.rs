@@ -1,0 +1,174 @@
+//! The flight view (`h`, src/tui/views/flight/state.rs): the shot's path — the height of the
+//! ball's centre against x, the bounce marked, the surface — in braille by the explorer's
+//! one plot widget (so its ticks are the other charts', each label at its value's place:
+//! tests/tui/tui_ticks.rs), and a readout with the launch, the landing, the bounce and the end.
+//! Reads the state only.
+
+use crate::figure::{Look, Marker as Glyph, Role, Tone};
+use crate::text::sig;
+use crate::tui::format::fit_lines;
+use crate::tui::theme::Theme;
+use crate::tui::views::flight::export::path_figure;
+use crate::tui::views::flight::param::FlightParam;
+use crate::tui::views::flight::state::FlightView;
+use crate::tui::widgets::plot::Plot;
+use ratatui::buffer::Buffer;
+use ratatui::layout::{Constraint, Layout, Rect};
+use ratatui::text::{Line, Span};
+use ratatui::widgets::{Block, Paragraph, Widget, Wrap};
+
+/// Width of the readout on wide screens.
+const READOUT_WIDTH: u16 = 40;
+
+/// The flight view in its area (between the header and the status line).
+#[derive(Debug, Clone, Copy)]
+pub struct FlightPanel<'a> {
+    pub view: &'a FlightView,
+    /// The ball's name, for the readout's title.
+    pub ball: &'a str,
+    /// The ball's radius (m): the centre's height at a bounce.
+    pub radius: f64,
+    pub theme: Theme,
+}
+
+impl Widget for FlightPanel<'_> {
+    fn render(self, area: Rect, buf: &mut Buffer) {
+        let wide = area.width >= 100;
+        let (chart, readout) = if wide {
+            let [l, r] =
+                Layout::horizontal([Constraint::Fill(1), Constraint::Length(READOUT_WIDTH)])
+                    .areas(area);
+            (l, r)
+        } else {
+            let rows = (area.height * 45 / 100).clamp(7, 11);
+            let [l, r] =
+                Layout::vertical([Constraint::Fill(1), Constraint::Length(rows)]).areas(area);
+            (l, r)
+        };
+        self.render_chart(chart, buf);
+        if wide {
+            let mut lines = self.launch_lines();
+            lines.push(Line::raw(""));
+            lines.extend(self.shot_lines());
+            lines.push(Line::raw(""));
+            lines.push(Line::styled(
+                "←→ select · ↑↓ step (Shift coarse) · a w k · y line · e export · h back",
+                self.theme.key(),
+            ));
+            let lines = fit_lines(lines, usize::from(readout.width.saturating_sub(2)));
+            Paragraph::new(lines)
+                .wrap(Wrap { trim: true })
+                .block(Block::bordered())
+                .render(readout, buf);
+        } else {
+            // the launch on the left, the shot's numbers on the right, in a few rows
+            let block = Block::bordered();
+            let inner = block.inner(readout);
+            block.render(readout, buf);
+            let [left, right] =
+                Layout::horizontal([Constraint::Length(30), Constraint::Fill(1)]).areas(inner);
+            Paragraph::new(fit_lines(self.launch_lines(), usize::from(left.width)))
+                .wrap(Wrap { trim: true })
+                .render(left, buf);
+            Paragraph::new(fit_lines(self.shot_lines(), usize::from(right.width)))
+                .wrap(Wrap { trim: true })
+                .render(right, buf);
+        }
+    }
+}
+
+impl FlightPanel<'_> {
+    /// The path (the export's figure, `e`), drawn with the current ball's tones.
+    fn render_chart(&self, area: Rect, buf: &mut Buffer) {
+        let Some(r) = self.view.report() else {
+            let text = match &self.view.shot {
+                Some(Err(e)) => Line::styled(e.clone(), self.theme.error()),
+                _ => Line::raw("no shot yet"),
+            };
+            Paragraph::new(text)
+                .wrap(Wrap { trim: true })
+                .block(Block::bordered())
+                .render(area, buf);
+            return;
+        };
+        let mut fig = path_figure(r, self.radius, "");
+        for s in &mut fig.series {
+            match s.kind {
+                Role::Model => {
+                    s.look = Look::new(Tone::Current, Some("centre of the ball"), None);
+                }
+                Role::Measured => {
+                    s.kind = Role::ThisRun;
+                    s.style = crate::figure::Style::Markers(Glyph::Circle);
+                    s.look = Look::new(Tone::Current, Some("bounce"), Some("●"));
+                }
+                _ => s.look = Look::new(Tone::Measured, None, None),
+            }
+        }
+        fig.screen_title = "Flight · height [m] vs x [m]".into();
+        (&Plot::new(&fig, self.theme)).render(area, buf);
+    }
+
+    /// The ball and the launch, the selected value marked.
+    fn launch_lines(&self) -> Vec<Line<'static>> {
+        let t = self.theme;
+        let v = &self.view.values;
+        let mut lines = vec![Line::styled(format!("{} · shot", self.ball), t.title())];
+        for p in FlightParam::ALL {
+            let text = format!("{} {}{}", p.symbol(), sig(v.get(p), 4), p.unit());
+            let style = if p == self.view.selected.0 {
+                t.selected()
+            } else {
+                ratatui::style::Style::default()
+            };
+            lines.push(Line::from(Span::styled(text, style)));
+        }
+        lines
+    }
+
+    /// The landing, the bounce and the end.
+    fn shot_lines(&self) -> Vec<Line<'static>> {
+        let t = self.theme;
+        let Some(r) = self.view.report() else {
+            return match &self.view.shot {
+                Some(Err(e)) => vec![Line::styled(e.clone(), t.error())],
+                _ => Vec::new(),
+            };
+        };
+        let mut lines = Vec::new();
+        if let Some(b) = r.bounces.first() {
+            lines.push(Line::styled("lands", t.dim()));
+            lines.push(Line::raw(format!(
+                "x {} m  t {} s",
+                sig(b.x, 4),
+                sig(b.t, 4)
+            )));
+            lines.push(Line::raw(format!(
+                "in {} m/s at {}°  ω {}",
+                sig(b.v_in, 4),
+                sig(b.angle_in, 3),
+                sig(b.spin_in, 4)
+            )));
+            lines.push(Line::styled("leaves", t.dim()));
+            lines.push(Line::raw(format!(
+                "{} m/s at {}°  ω {}",
+                sig(b.v_out, 4),
+                sig(b.angle_out, 3),
+                sig(b.spin_out, 4)
+            )));
+            let slid = if b.slid_throughout {
+                "slid throughout"
+            } else {
+                "slid, then gripped"
+            };
+            lines.push(Line::styled(slid, t.dim()));
+        }
+        let e = r.end.state;
+        lines.push(Line::raw(format!(
+            "lands again x {} m  t {} s",
+            sig(e.x, 4),
+            sig(e.t, 4)
+        )));
+        lines
+    }
+}

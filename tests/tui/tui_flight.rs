@@ -1,0 +1,154 @@
+//! The explorer's flight view (`h`, issue 57 item 3): snapshots at the five sizes, its numbers
+//! against `bouncelab shot` run on the line `y` gives, its keys through `update` (fine and
+//! coarse steps, a refused value kept out), and `e`'s export.
+
+use crate::common;
+use crate::tui_common;
+
+use bouncelab::preset::Preset;
+use bouncelab::tui::action::{Action, Mode};
+use bouncelab::tui::app::{App, Effect, View};
+use bouncelab::tui::export::{self, ExportRequest};
+use bouncelab::tui::views::flight::param::FlightParam;
+use ratatui::crossterm::event::KeyCode;
+use serde_json::Value;
+use tui_common::*;
+
+fn preset(name: &str) -> Preset {
+    Preset::embedded_all()
+        .into_iter()
+        .find(|p| p.name == name)
+        .unwrap()
+}
+
+/// The tennis ball in the flight view: docs/flight.md §6's serve (the view's default).
+fn serve() -> App {
+    let mut app = App::new(preset("tennis"), false);
+    press(&mut app, &[KeyCode::Char('h')]);
+    assert_eq!((app.view(), app.mode()), (View::Flight, Mode::Flight));
+    app
+}
+
+const SIZES: [(u16, u16); 5] = [(80, 24), (100, 30), (120, 40), (160, 50), (200, 60)];
+
+#[test]
+fn the_view_at_every_size() {
+    let app = serve();
+    for (w, h) in SIZES {
+        let t = draw(&app, w, h);
+        let text = screen_text(&t).join("\n");
+        // the landing and the bounce's numbers are in the readout
+        for needle in ["flight", "lands", "leaves", "15.58", "27.51"] {
+            assert!(text.contains(needle), "{w}×{h}: {needle}\n{text}");
+        }
+        insta::assert_snapshot!(format!("flight_{w}x{h}"), t.backend());
+    }
+}
+
+/// The words of `line` after `bouncelab`.
+fn words(line: &str) -> Vec<String> {
+    line.split_whitespace().skip(1).map(String::from).collect()
+}
+
+#[test]
+fn y_gives_the_shot_line_and_it_computes_what_the_view_shows() {
+    let mut app = serve();
+    press(&mut app, &[KeyCode::Char('w'), KeyCode::Char('a')]);
+    let line = app.command_line();
+    assert!(line.starts_with("bouncelab shot --preset tennis"), "{line}");
+    assert!(
+        line.contains("--spin 210") && line.contains("--elevation -5"),
+        "{line}"
+    );
+    let mut args = words(&line);
+    args.extend(["--format".into(), "json".into()]);
+    let args: Vec<&str> = args.iter().map(String::as_str).collect();
+    let out = common::bl(&args);
+    assert_eq!(out.code, 0, "{line}: {}", out.stderr);
+    let j: Value = serde_json::from_str(&out.stdout).unwrap();
+    let r = app.flight_view().report().expect("a shot");
+    // to 1e-12, as the oblique view's (tests/tui/tui_oblique.rs): the view's ball is built from
+    // the explorer's setting, the line's from the preset and its flags
+    let f = |v: &Value| v.as_f64().unwrap();
+    let close = |a: f64, b: f64| (a - b).abs() <= 1e-12 * a.abs().max(b.abs()).max(1.0);
+    for (k, a, b) in [
+        ("x", f(&j["bounces"][0]["x"]), r.bounces[0].x),
+        ("v_out", f(&j["bounces"][0]["v_out"]), r.bounces[0].v_out),
+        (
+            "spin_out",
+            f(&j["bounces"][0]["spin_out"]),
+            r.bounces[0].spin_out,
+        ),
+        ("end x", f(&j["end"]["x"]), r.end.state.x),
+    ] {
+        assert!(close(a, b), "{k}: command line {a} view {b}");
+    }
+}
+
+#[test]
+fn the_keys_step_fine_and_coarse_and_a_refused_value_is_kept_out() {
+    let mut app = serve();
+    let v = |app: &App, p| app.flight_view().values.get(p);
+    // ↑ steps the selected value (speed): 1 m/s; Shift+↑ 5 m/s
+    press(&mut app, &[KeyCode::Up]);
+    assert_eq!(v(&app, FlightParam::Speed), 51.0);
+    app.update(Action::Flight(
+        bouncelab::tui::action::FlightKey::StepSelected {
+            up: true,
+            coarse: true,
+        },
+    ));
+    assert_eq!(v(&app, FlightParam::Speed), 55.0);
+    // → selects the elevation; the shot follows every step
+    let x0 = app.flight_view().report().unwrap().bounces[0].x;
+    press(&mut app, &[KeyCode::Right, KeyCode::Up]);
+    assert_eq!(v(&app, FlightParam::Elevation), -5.0);
+    assert!(app.flight_view().report().unwrap().bounces[0].x > x0);
+    // the height down to below R: the library refuses it, the view keeps 0.0335 + …
+    for _ in 0..2 {
+        press(&mut app, &[KeyCode::Right]);
+    }
+    assert_eq!(app.flight_view().selected.0, FlightParam::Height);
+    for _ in 0..40 {
+        press(&mut app, &[KeyCode::Down]);
+    }
+    let h = v(&app, FlightParam::Height);
+    assert!((h - 0.1).abs() < 1e-12, "{h}");
+    let text = screen_text(&draw(&app, 120, 40)).join("\n");
+    assert!(text.contains("--height"), "{text}");
+    // h leaves for the impact view
+    press(&mut app, &[KeyCode::Char('h')]);
+    assert_eq!(app.view(), View::Impact);
+}
+
+#[test]
+fn e_exports_the_path_headed_by_the_shot_line() {
+    let mut app = serve();
+    let effects = app.update(Action::Export);
+    let request: ExportRequest = effects
+        .into_iter()
+        .find_map(|e| match e {
+            Effect::Export(r) => Some(r),
+            _ => None,
+        })
+        .expect("an export");
+    assert_eq!(request.header[0], format!("# {}", app.command_line()));
+    assert!(
+        request.header[1].contains("bounce 1: t 0.366"),
+        "{:?}",
+        request.header
+    );
+    let dir = tempfile::tempdir().unwrap();
+    let files = export::write(&request, dir.path()).unwrap();
+    let names: Vec<String> = files
+        .iter()
+        .map(|f| f.file_name().unwrap().to_string_lossy().into_owned())
+        .collect();
+    assert_eq!(
+        names,
+        [
+            "bouncelab-tennis-flight-path-1.svg",
+            "bouncelab-tennis-flight-path-1.csv"
+        ]
+    );
+}
