@@ -130,7 +130,9 @@ pub fn reach(
 /// that integral is largest with the impulse at the end (F = F_m on [t − Q/F_m, t]) and
 /// smallest with it at the start (F = F_m on [0, Q/F_m]):
 ///
-///     (Q/c) e^{x − t/τ} φ(x)  ≤  y(t)  ≤  (Q/c) φ(x),   x = Q/(F_m τ),  φ(x) = (1 − e^{−x})/x
+/// ```text
+/// (Q/c) e^{x − t/τ} φ(x)  ≤  y(t)  ≤  (Q/c) φ(x),   x = Q/(F_m τ),  φ(x) = (1 − e^{−x})/x
+/// ```
 ///
 /// (→ Q/c as K_r → 0; the lower one needs x ≤ t/τ, true as Q ≤ F_m t).
 /// - Above: at the peak t*, α' = 0, so Q = m v0; α_max = z(t*) + y(t*) ≤ z_m + (m v0/c) φ(x)

@@ -2,15 +2,17 @@
 //! series behind it, the recoil spring K_r (the dashpot carries nothing at rest, Eq. 2 with
 //! y' = 0: K_r y = F). One contact pressed by a force F deflects
 //!
-//!     δ(F) = z(F) + F/K_r,
+//! ```text
+//! δ(F) = z(F) + F/K_r,
+//! ```
 //!
 //! z(F) the loading branch's indentation at F (Eqs. 21, 7, 10–11 inverted): F/K_p for the
 //! linear law, (F/K_h)^{2/3} for Hertz, and for the elastic–plastic law Hertz up to
 //! F_p = K_h z_p^{3/2}, then z_p + (F − F_p)/K_p. A ball squeezed between two plates under a
 //! load of mass M carries F = M g at each of its two contacts, so its diameter shortens by
-//! 2 δ(M g): for the linear law d = 2F (1/K_p + 1/K_r). The tennis preset (K_p = K_r =
-//! 24 713 N/m) under the ITF's 8.165 kg so shortens by 12.96 mm (issue 52: outside the ITF's
-//! 5.59–7.37 mm window). Here to be shared by `bouncelab static` (issue 52 item 6) and the
+//! 2 δ(M g): for the linear law d = 2F (1/K_p + 1/K_r). The tennis preset once held K_p = K_r =
+//! 24 713 N/m (2F/d, the recoil spring forgotten) and so shortened by 12.96 mm under the ITF's
+//! 8.165 kg, outside its 5.59–7.37 mm window; refitted through this chain it gives 6.48 mm. Here to be shared by `bouncelab static` (issue 52 item 6) and the
 //! joint fit's static deflections (item 5), so both use one formula.
 
 use super::contact::ContactLaw;

@@ -50,8 +50,10 @@ pub const ITF_COURT_PACE: CourtStandard = CourtStandard {
              Surfaces): CPR = 100(1 − μ) + 150(0.81 − e), μ and e from a ball fired at 30 m/s \
              and 16°",
     unconfirmed: Some(
-        "the test ball's spin at the surface (the model fires it without) and the court's own \
-         give: the model's surface is rigid",
+        "the test ball's spin at the surface (the model fires it without) and any embedded \
+         court's own give: none was found published, so the embedded surfaces are rigid and a \
+         court's give comes from its measured e (`court --surface-cor`, `--fit`; \
+         docs/surfaces.md)",
     ),
     balls: &["tennis"],
 };

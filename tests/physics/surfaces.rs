@@ -63,7 +63,7 @@ fn court_pace_is_rated_by_the_courts_own_e() {
 
 #[test]
 fn a_calibrated_court_returns_its_e_at_every_reachable_value() {
-    for (mu, e) in [(0.5, 0.6), (0.75, 0.78), (0.3, 0.85)] {
+    for (mu, e) in [(0.5, 0.6), (0.75, 0.78), (0.3, 0.84)] {
         let (mu_s, e_s) = (mu.to_string(), e.to_string());
         let c = json(&[
             "court",
@@ -116,7 +116,7 @@ fn an_e_out_of_reach_says_the_range() {
         "--surface-cor",
         "0.95",
     ]);
-    assert_bad(&o, &["invalid surface_cor: 0.95", "reaches 0.54", "0.857"]);
+    assert_bad(&o, &["invalid surface_cor: 0.95", "reaches 0.55", "0.848"]);
     let o = bl(&["court", "--preset", "tennis", "--surface", "clay"]);
     assert_bad(&o, &["the surface clay gives no μ", "--friction"]);
 }
@@ -126,6 +126,9 @@ fn an_e_out_of_reach_says_the_range() {
 #[test]
 fn court_fit_recovers_a_known_court_from_its_bounces() {
     let dir = tempfile::tempdir().unwrap();
+    // the calibration holds K_s at the ball's K_p (docs/surfaces.md §4): the court is made so
+    let ball = json(&["run", "--preset", "tennis", "--format", "json"]);
+    let k_s = format!("{}", f(&ball["ball"], "k_p"));
     let mut csv = String::from("v_in,angle_in,v_out,angle_out\n");
     for (v, a) in [(29.0, 15.0), (30.0, 16.0), (31.0, 17.0)] {
         let (v_s, a_s) = (format!("{v}"), format!("{a}"));
@@ -140,7 +143,7 @@ fn court_fit_recovers_a_known_court_from_its_bounces() {
             "--friction",
             "0.55",
             "--surface-stiffness",
-            "24713",
+            &k_s,
             "--surface-damping",
             "20",
             "--format",
@@ -177,7 +180,9 @@ fn court_fit_recovers_a_known_court_from_its_bounces() {
 }
 
 /// A gripping tennis bounce with the damped tangential spring on a surface preset reaches the
-/// published e_x of 0.1–0.2 over 30–75° (issue 53).
+/// published e_x of 0.1–0.2 over 30–75° (issue 53). c_t = 27 kg/s: the tangential dashpot's
+/// critical value scales as √(m K_t), and the refitted ball's K_t (from its K_p) is twice the
+/// one 19 kg/s was found for; 19 now gives 0.26.
 #[test]
 fn a_gripping_bounce_on_a_hard_court_reaches_published_e_x() {
     for angle in ["30", "45", "60", "75"] {
@@ -190,7 +195,7 @@ fn a_gripping_bounce_on_a_hard_court_reaches_published_e_x() {
             "--friction",
             "0.6",
             "--tangential-damping",
-            "19",
+            "27",
             "--angle",
             angle,
             "--v0",
@@ -201,7 +206,7 @@ fn a_gripping_bounce_on_a_hard_court_reaches_published_e_x() {
         let ex = f(&r, "cor_tangential");
         assert!((0.1..=0.2).contains(&ex), "{angle}°: e_x {ex}");
         assert_eq!(r["surface"]["name"], "hard-court");
-        assert_eq!(r["surface"]["tangential_damping"], 19.0);
+        assert_eq!(r["surface"]["tangential_damping"], 27.0);
     }
 }
 
