@@ -100,7 +100,11 @@ pub fn run(a: &DropArgs, out: &mut dyn Write) -> anyhow::Result<()> {
                     .iter()
                     .map(|s| s.name)
                     .chain(statics)
-                    .chain(crate::drop::conditions::PRESSURE_LOSS.iter().map(|p| p.name))
+                    .chain(
+                        crate::drop::conditions::PRESSURE_LOSS
+                            .iter()
+                            .map(|p| p.name),
+                    )
                     .collect();
                 anyhow::bail!(
                     "unknown standard '{name}' (available: {})",

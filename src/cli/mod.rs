@@ -36,8 +36,8 @@ pub mod run;
 mod run_text;
 pub mod shot;
 pub mod standards;
-pub mod surface;
 pub mod statics;
+pub mod surface;
 pub mod sweep;
 
 use clap::{Parser, Subcommand};

@@ -186,7 +186,12 @@ fn text(out: &mut dyn Write) -> std::io::Result<()> {
     let statics = DEFORMATION_STANDARDS
         .iter()
         .map(|s| (s.name, s.source, s.unconfirmed));
-    for (name, source, unconfirmed) in sources.chain(bats).chain(courts).chain(leaks).chain(statics) {
+    for (name, source, unconfirmed) in sources
+        .chain(bats)
+        .chain(courts)
+        .chain(leaks)
+        .chain(statics)
+    {
         writeln!(out, "  {name}: {source}")?;
         if let Some(u) = unconfirmed {
             writeln!(out, "    not confirmed: {u}")?;

@@ -16,8 +16,8 @@ pub mod rows;
 mod table;
 mod trace;
 
-pub use court::{CourtRow, parse_court};
 pub use cor_temperature::{CorTemperatureRow, parse_cor_temperature};
+pub use court::{CourtRow, parse_court};
 pub use drop::{Air, DropTest, Flight, G, cor_per_rebound_height, drop_to_cor, drops_to_points};
 pub use oblique::{ObliqueRow, parse_oblique};
 pub use pressure::{PressureRow, parse_pressure};

@@ -9,7 +9,6 @@
 //! every flag is run every time, and the values rotate with the seed; every file flag meets
 //! every kind of hostile file. Runs go four at a time in their own empty folder.
 
-
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 use std::sync::Mutex;

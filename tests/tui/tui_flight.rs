@@ -38,7 +38,7 @@ fn the_view_at_every_size() {
         let t = draw(&app, w, h);
         let text = screen_text(&t).join("\n");
         // the landing and the bounce's numbers are in the readout
-        for needle in ["flight", "lands", "leaves", "15.58", "27.51"] {
+        for needle in ["flight", "lands", "leaves", "15.58", "27.45"] {
             assert!(text.contains(needle), "{w}×{h}: {needle}\n{text}");
         }
         insta::assert_snapshot!(format!("flight_{w}x{h}"), t.backend());

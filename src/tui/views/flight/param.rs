@@ -106,7 +106,9 @@ mod tests {
     fn a_step_and_its_inverse_come_back_on_round_values() {
         for p in FlightParam::ALL {
             for coarse in [false, true] {
-                let v = 3.0;
+                // a round value: three of this step (3 m/s is no round value for 5 m/s steps)
+                let (fine, big) = p.steps();
+                let v = 3.0 * if coarse { big } else { fine };
                 let up = p.step(v, true, coarse);
                 assert_eq!(p.step(up, false, coarse), v, "{p:?}");
             }
