@@ -45,10 +45,10 @@ def without_new_keys(value):
     return value
 
 
-def without_conditions(value):
+def without_conditions(value, also=()):
     """A command line answer (parsed JSON) without its `conditions` (issue 56), which the
-    package's `monte_carlo` and `batch` do not carry yet."""
-    return {k: v for k, v in value.items() if k != "conditions"}
+    package's `monte_carlo` and `batch` do not carry yet, nor the top-level keys in `also`."""
+    return {k: v for k, v in value.items() if k != "conditions" and k not in also}
 
 
 def reach(warnings):

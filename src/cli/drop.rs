@@ -93,24 +93,7 @@ pub fn run(a: &DropArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         Some(name) => match (standards::find(name), deformation::find(name)) {
             (Ok(s), _) => (Some(s), None),
             (Err(_), Some(d)) => (None, Some(d)),
-            // the impact standards' names, then the static ones'
-            (Err(_), None) => {
-                let statics = deformation::DEFORMATION_STANDARDS.iter().map(|s| s.name);
-                let names: Vec<&str> = standards::STANDARDS
-                    .iter()
-                    .map(|s| s.name)
-                    .chain(statics)
-                    .chain(
-                        crate::drop::conditions::PRESSURE_LOSS
-                            .iter()
-                            .map(|p| p.name),
-                    )
-                    .collect();
-                anyhow::bail!(
-                    "unknown standard '{name}' (available: {})",
-                    names.join(", ")
-                )
-            }
+            (Err(e), None) => anyhow::bail!(e),
         },
     };
     let mut ball_args = a.ball.clone();
