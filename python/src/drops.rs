@@ -58,7 +58,8 @@ pub(crate) fn drop_test<'py>(
     }
     // the standard first, as the command line looks it up before the ball
     let standard = standard
-        .map(standards::find)
+        // an unknown name is refused listing every kind `drop --standard` takes
+        .map(|n| standards::find(n).map_err(|_| bouncelab::drop::names::unknown(n)))
         .transpose()
         .map_err(value_error)?;
     let ball = overridden_ball(

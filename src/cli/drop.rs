@@ -93,7 +93,8 @@ pub fn run(a: &DropArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         Some(name) => match (standards::find(name), deformation::find(name)) {
             (Ok(s), _) => (Some(s), None),
             (Err(_), Some(d)) => (None, Some(d)),
-            (Err(e), None) => anyhow::bail!(e),
+            // every kind of standard `drop` takes (src/drop/names.rs)
+            (Err(_), None) => anyhow::bail!(crate::drop::names::unknown(name)),
         },
     };
     let mut ball_args = a.ball.clone();

@@ -17,6 +17,7 @@ pub mod conditions;
 pub mod deformation;
 pub mod fit;
 pub mod flight;
+pub mod names;
 pub mod standards;
 mod trajectory;
 

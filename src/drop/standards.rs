@@ -233,27 +233,12 @@ pub const STANDARDS: [Standard; 12] = [
 /// The standard called `name`, or an error listing the names.
 pub fn find(name: &str) -> Result<&'static Standard, String> {
     STANDARDS.iter().find(|s| s.name == name).ok_or_else(|| {
+        let names: Vec<&str> = STANDARDS.iter().map(|s| s.name).collect();
         format!(
             "unknown standard '{name}' (available: {})",
-            all_names().join(", ")
+            names.join(", ")
         )
     })
-}
-
-/// Every name `--standard` takes, in `bouncelab standards`' order: the impact tests, then the
-/// static ones (`super::deformation`), then the pressure-loss tests (`super::conditions`). One
-/// list for every "unknown standard" message (tests/golden/bad-standard.txt).
-pub fn all_names() -> Vec<&'static str> {
-    let statics = super::deformation::DEFORMATION_STANDARDS
-        .iter()
-        .map(|s| s.name);
-    let leaks = super::conditions::PRESSURE_LOSS.iter().map(|p| p.name);
-    STANDARDS
-        .iter()
-        .map(|s| s.name)
-        .chain(statics)
-        .chain(leaks)
-        .collect()
 }
 
 /// Each embedded ball's own standard: the one its damping was fitted to (its TOML file says
