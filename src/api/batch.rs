@@ -66,7 +66,7 @@ pub struct BallOutcome {
     /// standard's condition (so no reading of its own judges it).
     pub error: Option<String>,
     /// What the verdict is on: `measurement` (the ball's own readings at the standard's
-    /// condition, [`batch_reading`](super::batch_reading)) or `model` (the fitted ball run
+    /// condition, `api::batch_reading`) or `model` (the fitted ball run
     /// through the standard's test); `None` without a verdict.
     pub verdict_from: Option<&'static str>,
     /// Readings at the standard's condition (drops from its height, CORs at its speed).
@@ -126,7 +126,7 @@ pub fn quantity(s: &Standard) -> (&'static str, &'static str) {
 impl Ball {
     /// Ball `id` of a batch (its rows from `line`): `data` fitted from this ball, and the
     /// ball judged by `setup.standard` — on its own readings where it was tested at the
-    /// standard's condition ([`super::batch_reading`]; the fitted ball's value beside them),
+    /// standard's condition (`api::batch_reading`; the fitted ball's value beside them),
     /// else on the fitted ball run through the standard's test. Never fails: a ball without a
     /// verdict says why in its `error`; a ball whose verdict stands on its readings but whose
     /// fit gave no answer says why in its `fit_error`.

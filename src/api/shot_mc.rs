@@ -159,7 +159,7 @@ impl Ball {
             })
     }
 
-    /// [`Ball::shot_mc`] in blocks of [`SHOT_MC_BLOCK`] shots, `watch(done)` called before
+    /// [`Ball::shot_mc`] in blocks of `SHOT_MC_BLOCK` shots, `watch(done)` called before
     /// each block and once after the last with the count of shots done: `None` once it
     /// answers false (a Ctrl-C). The blocks change no sample (each is a function of its index).
     pub fn shot_mc_watched(

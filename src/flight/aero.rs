@@ -174,7 +174,7 @@ fn table(points: &[(f64, f64)], s: f64) -> f64 {
 }
 
 /// Smits & Smith's (1994) golf C_L against S, as tabulated from their model by the secondary
-/// sources of docs/flight.md §2 [5]; Bearman & Harvey's (1976) measurements agree within 0.02
+/// sources of docs/flight.md §2, source 5; Bearman & Harvey's (1976) measurements agree within 0.02
 /// over 0.05 < S < 0.3 (docs/flight.md §2).
 pub const GOLF_LIFT: [(f64, f64); 5] = [
     (0.0, 0.0),

@@ -7,7 +7,7 @@ use super::{HEIGHT, SIDE_PX, SUBTITLE_PX, WIDTH, subtitle_lines, y_label_area};
 use crate::figure::Figure;
 use crate::figure::ticks::{Room, ticks};
 
-/// The plot's size (CSS pixels, width and height) inside the picture [`render`] draws of
+/// The plot's size (CSS pixels, width and height) inside the picture `render` draws of
 /// `fig`: the picture less the titles, the legend, the margins and the axes' label areas
 /// (the very sizes `render_aligned` lays out).
 pub fn plot_size(fig: &Figure) -> (f64, f64) {
