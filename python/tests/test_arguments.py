@@ -234,9 +234,7 @@ def test_sweep_velocity_carries_each_rows_warnings():
 
 def test_sweep_velocity_warns_of_the_centre_as_the_cli_does():
     # the softball swept to 300 m/s: from about 175 m/s its centre passes the radius while its
-    # indentation does not (before its K_p was refitted through its own static chain, issue 52,
-    # the default sweep to 3 × 26.82 m/s reached it); the command line's rows said so, the
-    # dict's warnings checked the indentation alone and were empty
+    # indentation does not; the dict's warnings say so as the command line's rows do
     rows = cli_json(
         "sweep", "velocity", "--preset", "softball", "--to", "300", "--format", "json"
     )["rows"]

@@ -2,9 +2,8 @@
 //! standard's condition, whether or not the model fits it (issue 52 item 9, docs/batch.md
 //! "The verdict from the measurement"): six clearly low tennis balls of a forty-ball lot once
 //! had no verdict and the lot's Cpk was computed on the other 34 — the lot looked better than
-//! it is. The issue's six were at 1.20–1.30 m from 2.54 m; the refitted tennis ball (issue 52
-//! item 4: K_p from the ITF deformation test through its own chain) reaches down to about
-//! 1.26 m with K_r free (COR 0.703 at λ = 0), so the six here sit at 1.10–1.20 m, below it.
+//! it is. The tennis ball reaches down to about 1.26 m with K_r free (COR 0.703 at λ = 0), so
+//! the six here sit at 1.10–1.20 m, below its reach.
 
 use crate::common;
 

@@ -181,8 +181,7 @@ fn court_fit_recovers_a_known_court_from_its_bounces() {
 
 /// A gripping tennis bounce with the damped tangential spring on a surface preset reaches the
 /// published e_x of 0.1–0.2 over 30–75° (issue 53). c_t = 27 kg/s: the tangential dashpot's
-/// critical value scales as √(m K_t), and the refitted ball's K_t (from its K_p) is twice the
-/// one 19 kg/s was found for; 19 now gives 0.26.
+/// critical value √(K_t m κ/(1 + κ)) is 26.8 kg/s for the tennis ball's K_t (docs/oblique.md).
 #[test]
 fn a_gripping_bounce_on_a_hard_court_reaches_published_e_x() {
     for angle in ["30", "45", "60", "75"] {

@@ -46,8 +46,7 @@ fn refused(app: &App, effects: &[Effect]) {
 
 /// Without a rebound there is nothing to calibrate the models to: no calibration is asked
 /// (issue 51 item 5, the view says so in words), `e` writes nothing and says why, and the
-/// figures say no calibration is there (not "calibrating…"). Before, a calibration was asked,
-/// `e` waited for it and it failed.
+/// figures say no calibration is there (not "calibrating…").
 #[test]
 fn an_export_without_a_rebound_writes_nothing_and_says_why() {
     let (mut app, _) = no_rebound(&[KeyCode::Tab, KeyCode::Tab]);

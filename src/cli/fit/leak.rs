@@ -14,24 +14,8 @@ use std::path::Path;
 /// 72 h, s: the FIFA Quality Programme's pressure-loss test (docs/model.md §10.3).
 const FIFA_TEST: f64 = 72.0 * 3600.0;
 
-/// The flags a leak fit takes nothing from, refused rather than ignored.
-fn others_given(a: &FitArgs) -> bool {
-    a.cor.is_some()
-        || a.cor_table.is_some()
-        || a.force_time.is_some()
-        || !a.drop_height.is_empty()
-        || a.drop_test.is_some()
-        || a.oblique.is_some()
-        || a.free.is_some()
-        || a.save.is_some()
-        || a.plot.is_some()
-        || a.v0.is_some()
-        || a.drag_coefficient.is_some()
-        || a.rebound_height_sd.is_some()
-}
-
 pub fn run(a: &FitArgs, path: &Path, out: &mut dyn Write) -> anyhow::Result<()> {
-    if others_given(a) {
+    if a.beyond_a_file_fit() {
         anyhow::bail!(
             "--pressure-loss fits a leak to pressure readings alone: the other data (--cor, \
              --cor-table, --force-time, drop tests, --oblique) and --free, --v0, --save, \

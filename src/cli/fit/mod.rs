@@ -207,6 +207,24 @@ impl FitArgs {
         }
     }
 
+    /// Whether any data or option a fit of one file of its own (`--pressure-loss`,
+    /// `--cor-temperature`) takes nothing from was given: those fits refuse them rather than
+    /// ignore them.
+    pub fn beyond_a_file_fit(&self) -> bool {
+        self.cor.is_some()
+            || self.cor_table.is_some()
+            || self.force_time.is_some()
+            || !self.drop_height.is_empty()
+            || self.drop_test.is_some()
+            || self.oblique.is_some()
+            || self.free.is_some()
+            || self.save.is_some()
+            || self.plot.is_some()
+            || self.v0.is_some()
+            || self.drag_coefficient.is_some()
+            || self.rebound_height_sd.is_some()
+    }
+
     /// `--free` as parameters; `None` when not given.
     pub fn free_params(&self) -> anyhow::Result<Option<Vec<Param>>> {
         let Some(list) = &self.free else {

@@ -12,24 +12,8 @@ use crate::cli::output::{self, human, table};
 use std::io::Write;
 use std::path::Path;
 
-/// The flags this fit takes nothing from, refused rather than ignored.
-fn others_given(a: &FitArgs) -> bool {
-    a.cor.is_some()
-        || a.cor_table.is_some()
-        || a.force_time.is_some()
-        || !a.drop_height.is_empty()
-        || a.drop_test.is_some()
-        || a.oblique.is_some()
-        || a.free.is_some()
-        || a.save.is_some()
-        || a.plot.is_some()
-        || a.v0.is_some()
-        || a.drag_coefficient.is_some()
-        || a.rebound_height_sd.is_some()
-}
-
 pub fn run(a: &FitArgs, path: &Path, out: &mut dyn Write) -> anyhow::Result<()> {
-    if others_given(a) {
+    if a.beyond_a_file_fit() {
         anyhow::bail!(
             "--cor-temperature fits the dashpot's temperature shift to CORs at temperatures \
              alone: the other data and --free, --v0, --save, --plot, --drag-coefficient, \
