@@ -94,6 +94,11 @@ pub fn pressure(path: &Path) -> anyhow::Result<Vec<measured::PressureRow>> {
     measured::parse_pressure(&read_text(path)?).map_err(|e| at(path, e))
 }
 
+/// The static deflections in `path` (`fit --static`).
+pub fn statics(path: &Path) -> anyhow::Result<Vec<measured::StaticRow>> {
+    measured::parse_static(&read_text(path)?).map_err(|e| at(path, e))
+}
+
 /// CORs at several temperatures (`fit --cor-temperature`).
 pub fn cor_temperature(path: &Path) -> anyhow::Result<Vec<measured::CorTemperatureRow>> {
     measured::parse_cor_temperature(&read_text(path)?).map_err(|e| at(path, e))

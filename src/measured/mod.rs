@@ -13,6 +13,7 @@ pub mod file;
 pub mod overlay;
 mod pressure;
 pub mod rows;
+mod statics;
 mod table;
 mod trace;
 
@@ -21,6 +22,7 @@ pub use court::{CourtRow, parse_court};
 pub use drop::{Air, DropTest, Flight, G, cor_per_rebound_height, drop_to_cor, drops_to_points};
 pub use oblique::{ObliqueRow, parse_oblique};
 pub use pressure::{PressureRow, parse_pressure};
+pub use statics::{StaticRow, parse_static};
 pub use table::{MAX_ROWS, RowTable, Source};
 pub use trace::{Trace, TraceSummary};
 

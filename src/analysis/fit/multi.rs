@@ -211,7 +211,7 @@ fn finite(s: &Solution) -> bool {
 /// one make another unlikely. (A flat region, where a parameter has no effect, is not such a
 /// minimum: two starts in it would agree and stop the search too early.) Each start takes at
 /// most `max_iterations` ([`crate::analysis::work::fit_iterations`]).
-fn best<P: Residuals>(
+pub(super) fn best<P: Residuals>(
     p: &P,
     starts: Vec<Vec<f64>>,
     bounds: impl Fn(&[f64]) -> (Vec<f64>, Vec<f64>),
@@ -261,7 +261,7 @@ fn best<P: Residuals>(
 }
 
 /// Estimates, correlations and warnings at the minimum `sol`.
-fn finish(
+pub(super) fn finish(
     params: ImpactParams,
     law: ContactLaw,
     free: &[Param],

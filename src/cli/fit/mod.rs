@@ -14,6 +14,7 @@ use clap::{Args, ValueEnum};
 use std::io::Write;
 use std::path::PathBuf;
 
+mod joint;
 mod leak;
 pub mod multi;
 mod oblique;
@@ -52,6 +53,11 @@ pub struct FitArgs {
     /// Drop tests from a CSV with columns drop_height_m, rebound_height_m
     #[arg(long, value_name = "FILE")]
     pub drop_test: Option<PathBuf>,
+    /// Static deflections between two plates: CSV with columns load_kg, deflection_m
+    /// (optional deflection_sd_m); fitted jointly with any --drop-test, --cor-table and
+    /// --force-time given (docs/fitting.md, "Joint calibration")
+    #[arg(long = "static", value_name = "FILE")]
+    pub static_deflection: Option<PathBuf>,
     /// Oblique bounces: CSV with columns v0, angle_deg, spin_in, vx_out, vy_out (optional
     /// spin_out); fits friction and tangential_stiffness (and inertia_factor with spin_out)
     #[arg(long, value_name = "FILE")]
@@ -137,6 +143,9 @@ pub struct Loaded {
     pub points: Vec<CorPoint>,
     /// (drop, rebound) heights of drop tests.
     pub drops: Vec<(f64, f64)>,
+    /// Joint fits (`joint`): each set's record for the saved preset's `[calibration]`;
+    /// empty for a fit of one data set.
+    pub joint: Vec<crate::preset::CalibrationData>,
     /// The air the drops were converted in (`None`: vacuum, the default), which the report
     /// states: `bouncelab drop` runs through air unless `--no-drag`.
     pub air: Option<crate::measured::Air>,
@@ -216,6 +225,7 @@ impl FitArgs {
             || self.force_time.is_some()
             || !self.drop_height.is_empty()
             || self.drop_test.is_some()
+            || self.static_deflection.is_some()
             || self.oblique.is_some()
             || self.free.is_some()
             || self.save.is_some()
@@ -240,6 +250,9 @@ pub fn run(a: &FitArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     }
     if let Some(path) = &a.cor_temperature {
         return temperature::run(a, path, out);
+    }
+    if joint::wanted(a) {
+        return joint::run(a, out);
     }
     let source = a.source()?;
     let free = a.free_params()?;

@@ -24,7 +24,7 @@ pub fn check_outputs(a: &FitArgs) -> anyhow::Result<()> {
     Ok(())
 }
 
-fn load(a: &FitArgs, source: &Source, ball: &Ball) -> anyhow::Result<Loaded> {
+pub(super) fn load(a: &FitArgs, source: &Source, ball: &Ball) -> anyhow::Result<Loaded> {
     let air = a.drag_coefficient.map(|cd| Air {
         density: a.air_density,
         drag_coefficient: cd,
@@ -69,6 +69,7 @@ fn load(a: &FitArgs, source: &Source, ball: &Ball) -> anyhow::Result<Loaded> {
                 drops: vec![],
                 end_line,
                 air,
+                joint: vec![],
             }
         }
         Source::CorTable(p) => {
@@ -82,6 +83,7 @@ fn load(a: &FitArgs, source: &Source, ball: &Ball) -> anyhow::Result<Loaded> {
                 drops: vec![],
                 end_line: t.end_line,
                 air,
+                joint: vec![],
             }
         }
         Source::DropFile(p) => {
@@ -96,6 +98,7 @@ fn load(a: &FitArgs, source: &Source, ball: &Ball) -> anyhow::Result<Loaded> {
                 drops,
                 end_line: t.drops.last().map_or(1, |d| d.2 + 1),
                 air,
+                joint: vec![],
             }
         }
         Source::Drops(pairs) => {
@@ -109,6 +112,7 @@ fn load(a: &FitArgs, source: &Source, ball: &Ball) -> anyhow::Result<Loaded> {
                 drops: pairs.clone(),
                 end_line: 0,
                 air,
+                joint: vec![],
             }
         }
         Source::Cor(e) => {
@@ -128,6 +132,7 @@ fn load(a: &FitArgs, source: &Source, ball: &Ball) -> anyhow::Result<Loaded> {
                 drops: vec![],
                 end_line: 0,
                 air,
+                joint: vec![],
             }
         }
     })
@@ -237,7 +242,7 @@ pub fn run(
 /// (`cli::outputs`): the files staged, the report written, then the files published; a
 /// failure anywhere (a preset folder that takes no file, a full stdout) leaves none of them
 /// (tests/cli/cli_outputs.rs, `fit_is_all_or_nothing`).
-fn publish(
+pub(super) fn publish(
     a: &FitArgs,
     out: &mut dyn Write,
     report: &[u8],

@@ -145,7 +145,9 @@ pub fn report<'a>(
         time_offset: f.time_offset.as_ref().map(|e| e.value),
         nuisance,
         v0: p.v0,
-        target_cor: (data.kind != "COR table" && data.trace.is_none()).then(|| data.points[0].cor),
+        target_cor: (data.kind != "COR table" && data.trace.is_none() && data.joint.is_empty())
+            .then(|| data.points.first().map(|q| q.cor))
+            .flatten(),
         drops: data
             .drops
             .iter()
@@ -183,7 +185,11 @@ fn answered(f: &MultiFit) -> String {
     if f.identified {
         return "yes".into();
     }
-    let why = crate::analysis::fit::verdict::no_answer_reasons(f.converged, &f.not_pinned);
+    let mut why = crate::analysis::fit::verdict::no_answer_reasons(f.converged, &f.not_pinned);
+    // (a joint fit whose data sets contradict each other: `analysis::fit::joint`)
+    if why.is_empty() && f.lack_of_fit.is_some_and(|t| t.significant()) {
+        why.push("the data sets contradict each other".into());
+    }
     format!("NO ({})", why.join("; "))
 }
 
@@ -305,7 +311,13 @@ pub fn text(
     }
     table(out, "  ", &rows)?;
     writeln!(out)?;
-    let unit = if data.trace.is_some() { " N" } else { " (COR)" };
+    let unit = if !data.joint.is_empty() {
+        " (in each set's standard deviations)"
+    } else if data.trace.is_some() {
+        " N"
+    } else {
+        " (COR)"
+    };
     let mut rows = vec![
         vec![
             "λ = K_r/K_p, ζ".into(),

@@ -179,6 +179,9 @@ fn preset(
 /// The record of what the ball was fitted to: the data's file (or what was typed), their
 /// impact speeds (a trace's: the fit's v0) and drop heights; the range is their speeds'.
 fn calibration(data: &Loaded, p: &ImpactParams, when: &str) -> Calibration {
+    if !data.joint.is_empty() {
+        return joint_calibration(data, p, when);
+    }
     let speeds: Vec<f64> = if data.trace.is_some() || data.points.is_empty() {
         vec![p.v0]
     } else {
@@ -199,6 +202,27 @@ fn calibration(data: &Loaded, p: &ImpactParams, when: &str) -> Calibration {
         heights: data.drops.iter().map(|d| d.0).collect(),
     };
     Calibration::over(set, &speeds)
+}
+
+/// The record of a joint fit: every set it was fitted to, the range their impact speeds'
+/// (a trace's the fit's v0; static deflections have none: the joint fit refuses `--save` with
+/// static deflections alone, `cli::fit::joint`).
+fn joint_calibration(data: &Loaded, p: &ImpactParams, when: &str) -> Calibration {
+    let mut sets = data.joint.clone();
+    for s in &mut sets {
+        s.source = crate::sanitize::line(&format!(
+            "{} (fitted jointly by `bouncelab fit` on {when})",
+            s.source
+        ))
+        .to_string();
+        if s.speeds.is_empty() && s.quantities == "force-time trace" {
+            s.speeds = vec![p.v0];
+        }
+    }
+    let speeds: Vec<f64> = sets.iter().flat_map(|s| s.speeds.iter().copied()).collect();
+    let mut c = Calibration::over(sets[0].clone(), &speeds);
+    c.data = sets;
+    c
 }
 
 /// The preset staged in `files`, to be published with the fit's other outputs
