@@ -2,6 +2,7 @@
 //! Christoforou–Yigit model, as text, JSON or CSV; `--export CODE` writes the parameters for
 //! a DEM or multibody code (docs/peers.md).
 
+mod case;
 mod write;
 
 use super::ball::BallArgs;
@@ -102,6 +103,14 @@ pub struct PeersArgs {
     /// [default: none]
     #[arg(long, value_name = "KG_PER_S", requires = "friction", value_parser = super::number::number, allow_hyphen_values = true)]
     pub tangential_damping: Option<f64>,
+    /// With --export: the bounce is oblique, at this angle to the surface (degrees, 0 < θ ≤
+    /// 90); the normal model is calibrated at the normal speed v·sinθ (v: --v0), and the
+    /// snippet gives bouncelab's answer for that bounce (docs/peers.md §5)
+    #[arg(long, value_name = "DEG", value_parser = super::number::number, allow_hyphen_values = true)]
+    pub angle: Option<f64>,
+    /// With --angle: the incoming spin ω of that bounce, rad/s (> 0 topspin) [default: 0]
+    #[arg(long, value_name = "RAD_PER_S", value_parser = super::number::number, allow_hyphen_values = true)]
+    pub spin: Option<f64>,
 }
 
 /// One row of the comparison (the JSON keys of issue 19, then `k_r` for the
@@ -178,7 +187,14 @@ pub fn run(a: &PeersArgs, out: &mut dyn Write) -> anyhow::Result<()> {
             "--friction adds the tangential model to an export: give --export lammps|mujoco|json"
         );
     }
-    let b = a.ball.resolve(a.v0)?;
+    let whole = a.ball.resolve(a.v0)?;
+    // the bounce an export is for: its normal model at the normal speed v·sinθ (docs/peers.md
+    // §5, "The case asked"); head-on without --angle, at v
+    let bounce = case::asked(a, whole.params.v0)?;
+    let b = match a.angle {
+        Some(theta) => a.ball.resolve(Some(case::normal_speed(bounce.0, theta)))?,
+        None => whole.clone(),
+    };
     let (b, pair) = match a.pair_name()? {
         Some(name) => pair_ball(a, b, name)?,
         None => (b, None),
@@ -189,6 +205,13 @@ pub fn run(a: &PeersArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     if let Some(code) = a.export {
         let mut set = ExportSet::new(&ball, target, b.name.as_deref().unwrap_or("ball"))?;
         set.tangential = tangential(a, &b, code)?;
+        set.case = Some(case::case(
+            &whole,
+            bounce,
+            pair.as_ref(),
+            set.tangential.as_ref(),
+            target,
+        )?);
         // the exported file is another code's input: the ball's warnings on stderr
         let mut w = b.warnings(&b.impact()?);
         w.extend(b.measured_cor_warning().filter(|_| source == "measured"));

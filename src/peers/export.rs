@@ -76,6 +76,10 @@ pub struct ExportSet {
     /// The tangential model of oblique impacts, when asked for (`peers --friction`).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub tangential: Option<super::tangential::TangentialExport>,
+    /// The bounce the export is for, the κ of the code's sphere against the ball's, and
+    /// bouncelab's answer at the code's κ (`peers --export`, [`super::case`]).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub case: Option<super::case::ExportCase>,
 }
 
 /// How far from the target an advised time step may leave the COR at any contact phase
@@ -115,6 +119,7 @@ impl ExportSet {
             mujoco_timestep: None,
             lammps_timestep: None,
             tangential: None,
+            case: None,
         };
         set.kv_no_tension_contact_time = impact(
             PeerModel::KelvinVoigtNoTension,
@@ -159,6 +164,9 @@ impl ExportSet {
             out,
             "{c} one ball against a rigid flat: effective mass m, effective radius R; SI units{end}"
         );
+        if let Some(case) = &self.case {
+            case.lines(out, c, end);
+        }
     }
 }
 

@@ -6,6 +6,7 @@
 //! requested COR into each model's damping. No I/O here.
 
 pub mod calibrate;
+pub mod case;
 mod dop853;
 pub mod export;
 mod integrate;

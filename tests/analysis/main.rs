@@ -16,6 +16,7 @@ mod fit_answers;
 mod fit_coverage;
 mod fit_drop_coverage;
 mod fit_intervals;
+mod fit_joint;
 mod fit_oblique;
 mod fit_oblique_coverage;
 mod fit_oblique_damping;
