@@ -6,12 +6,12 @@
 use crate::fit_common;
 
 use bouncelab::ContactLaw;
+use bouncelab::ImpactParams;
 use bouncelab::analysis::fit::joint::{JointData, JointFit, JointSet, contradicted, fit_joint};
 use bouncelab::analysis::fit::{Estimate, Param};
 use bouncelab::analysis::work::Unwatched;
 use bouncelab::measured::{CorPoint, StaticRow, Trace};
 use bouncelab::model::static_chain::plates_deflection;
-use bouncelab::ImpactParams;
 use fit_common::*;
 
 fn covers(e: &Estimate, truth: f64) -> bool {
@@ -194,7 +194,8 @@ fn stated_deviations_are_judged_by_chi2() {
     let mut points = cor_table(&t, ContactLaw::Linear, &SPEEDS, 0.005, &mut rng);
     points.iter_mut().for_each(|p| p.cor_sd = Some(0.005));
     let mut rows = deflections(&t, 0.01, &mut rng);
-    rows.iter_mut().for_each(|r| r.sd = Some(0.01 * r.deflection));
+    rows.iter_mut()
+        .for_each(|r| r.sd = Some(0.01 * r.deflection));
     let free = [Param::KR, Param::ZP];
     let j = joint(&t, &[cor(&points), statics(&rows)], &free);
     assert!(j.fit.stated_sd && j.fit.identified, "{:?}", j.fit);
@@ -205,7 +206,8 @@ fn stated_deviations_are_judged_by_chi2() {
     }
     assert!(covers(estimate(&j, "k_r"), t.k_r));
     // deflections stated ten times too precise for their scatter: χ² flags them
-    rows.iter_mut().for_each(|r| r.sd = Some(0.001 * r.deflection));
+    rows.iter_mut()
+        .for_each(|r| r.sd = Some(0.001 * r.deflection));
     let j = joint(&t, &[cor(&points), statics(&rows)], &free);
     assert!(j.sets[1].lack_of_fit.unwrap().significant(), "{:?}", j.sets);
     assert!(!j.fit.identified);

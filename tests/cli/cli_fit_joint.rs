@@ -30,9 +30,13 @@ fn tennis(k_r: f64) -> ImpactParams {
 fn files(dir: &Path, p: &ImpactParams, q: &ImpactParams) {
     let mut cors = String::from("v0,cor\n");
     for (i, v0) in (1..=10).map(|i| 2.0 * i as f64).enumerate() {
-        let e = simulate(&ImpactParams { v0, ..*p }, ContactLaw::Linear, &SolveOptions::default())
-            .unwrap()
-            .cor;
+        let e = simulate(
+            &ImpactParams { v0, ..*p },
+            ContactLaw::Linear,
+            &SolveOptions::default(),
+        )
+        .unwrap()
+        .cor;
         let noise = if i % 3 == 0 { 0.003 } else { -0.002 };
         cors.push_str(&format!("{v0},{}\n", e + noise));
     }
@@ -79,11 +83,20 @@ fn each_set_is_reported_and_the_saved_record_lists_them_all() {
     assert_eq!(sets.len(), 2, "{v}");
     assert_eq!(sets[0]["kind"], "COR table");
     assert_eq!(sets[1]["kind"], "static deflection");
-    assert_eq!((sets[0]["points"].as_u64(), sets[1]["points"].as_u64()), (Some(10), Some(8)));
-    assert_eq!((sets[0]["unit"].as_str(), sets[1]["unit"].as_str()), (Some("COR"), Some("m")));
+    assert_eq!(
+        (sets[0]["points"].as_u64(), sets[1]["points"].as_u64()),
+        (Some(10), Some(8))
+    );
+    assert_eq!(
+        (sets[0]["unit"].as_str(), sets[1]["unit"].as_str()),
+        (Some("COR"), Some("m"))
+    );
     for s in sets {
         assert_eq!(s["sd_stated"], false, "{s}");
-        assert!(f(s, "sd_estimated") > 0.0 && f(s, "rms_residual") > 0.0, "{s}");
+        assert!(
+            f(s, "sd_estimated") > 0.0 && f(s, "rms_residual") > 0.0,
+            "{s}"
+        );
         assert_eq!(s["lack_of_fit"]["test"], "F", "{s}");
         assert!(f(&s["lack_of_fit"], "p_value") > 1e-3, "{s}");
     }
@@ -100,7 +113,11 @@ fn each_set_is_reported_and_the_saved_record_lists_them_all() {
     // the text report: each set's line
     let o = fit_in(dir.path(), &[]);
     assert_eq!(o.code, 0, "{}", o.stderr);
-    assert!(o.stdout.contains("static deflection static.csv") || o.stdout.contains("static.csv  8"), "{}", o.stdout);
+    assert!(
+        o.stdout.contains("static deflection static.csv") || o.stdout.contains("static.csv  8"),
+        "{}",
+        o.stdout
+    );
     assert!(o.stdout.contains("(estimated)"), "{}", o.stdout);
 }
 
@@ -127,11 +144,16 @@ fn static_input_is_checked() {
     assert_bad(&o, &["static.csv:3:3"]);
     std::fs::write(&path, "load_kg,deflection_m\n1,0.001\n2,0.002\n").unwrap();
     // deflections alone give no impact speed to record
-    let o = bl_in(dir.path(), &["fit", "--preset", "tennis", "--static", p, "--save", "x"]);
+    let o = bl_in(
+        dir.path(),
+        &["fit", "--preset", "tennis", "--static", p, "--save", "x"],
+    );
     assert_bad(&o, &["--save", "impact speed"]);
     let o = bl_in(
         dir.path(),
-        &["fit", "--preset", "tennis", "--static", p, "--plot", "x.svg"],
+        &[
+            "fit", "--preset", "tennis", "--static", p, "--plot", "x.svg",
+        ],
     );
     assert_bad(&o, &["--plot"]);
     let o = bl_in(
@@ -140,7 +162,12 @@ fn static_input_is_checked() {
     );
     assert_bad(&o, &["--cor"]);
     // alone: K_r from the springs in series
-    let o = bl_in(dir.path(), &["fit", "--preset", "tennis", "--static", p, "--format", "json"]);
+    let o = bl_in(
+        dir.path(),
+        &[
+            "fit", "--preset", "tennis", "--static", p, "--format", "json",
+        ],
+    );
     assert_eq!(o.code, 0, "{}", o.stderr);
     let v: Value = serde_json::from_str(&o.stdout).unwrap();
     assert_eq!(v["free"], serde_json::json!(["k_r"]));

@@ -31,15 +31,32 @@ fn close(a: f64, b: f64, rel: f64) {
 #[test]
 fn an_oblique_export_is_calibrated_at_the_normal_speed() {
     let v = export(&[
-        "--v0", "30", "--angle", "16", "--spin", "50", "--friction", "0.6",
+        "--v0",
+        "30",
+        "--angle",
+        "16",
+        "--spin",
+        "50",
+        "--friction",
+        "0.6",
     ]);
     let vn = 30.0 * 16f64.to_radians().sin();
     close(f(&v, "v0"), vn, 1e-15);
     // the target: the Christoforou–Yigit COR at v·sinθ, not at v
-    let run = bl(&["run", "--preset", "tennis", "--v0", &vn.to_string(), "--format", "json"]);
+    let run = bl(&[
+        "run",
+        "--preset",
+        "tennis",
+        "--v0",
+        &vn.to_string(),
+        "--format",
+        "json",
+    ]);
     let run: Value = serde_json::from_str(&run.stdout).unwrap();
     close(f(&v, "target_cor"), f(&run, "cor"), 1e-12);
-    let at_v = bl(&["run", "--preset", "tennis", "--v0", "30", "--format", "json"]);
+    let at_v = bl(&[
+        "run", "--preset", "tennis", "--v0", "30", "--format", "json",
+    ]);
     let at_v: Value = serde_json::from_str(&at_v.stdout).unwrap();
     assert!((f(&v, "target_cor") - f(&at_v, "cor")).abs() > 0.01, "{v}");
     let case = &v["case"];
@@ -47,12 +64,26 @@ fn an_oblique_export_is_calibrated_at_the_normal_speed() {
     assert_eq!(f(case, "angle_deg"), 16.0);
     assert_eq!(f(case, "spin"), 50.0);
     assert_eq!(f(case, "inertia_factor_code"), 0.4);
-    assert_eq!(f(case, "inertia_factor_ball"), f(&v_ball(), "inertia_factor"));
+    assert_eq!(
+        f(case, "inertia_factor_ball"),
+        f(&v_ball(), "inertia_factor")
+    );
     // bouncelab's own answer at the code's κ: `oblique`'s for the same bounce
     let ob = |kappa: Option<&str>| -> Value {
         let mut args = vec![
-            "oblique", "--preset", "tennis", "--v0", "30", "--angle", "16", "--spin", "50",
-            "--friction", "0.6", "--format", "json",
+            "oblique",
+            "--preset",
+            "tennis",
+            "--v0",
+            "30",
+            "--angle",
+            "16",
+            "--spin",
+            "50",
+            "--friction",
+            "0.6",
+            "--format",
+            "json",
         ];
         if let Some(k) = kappa {
             args.extend(["--inertia-factor", k]);
@@ -82,12 +113,21 @@ fn every_snippet_states_the_case_and_the_codes_kappa() {
         assert_eq!(o.code, 0, "{code}: {}", o.stderr);
         let s = &o.stdout;
         assert!(s.contains("the normal speed v·sinθ = 8.269"), "{code}: {s}");
-        assert!(s.contains("κ = I/(m R²) = 0.4; this ball's κ = 0.6105"), "{code}: {s}");
-        assert!(s.contains("bouncelab for this bounce at κ = 0.4"), "{code}: {s}");
+        assert!(
+            s.contains("κ = I/(m R²) = 0.4; this ball's κ = 0.6105"),
+            "{code}: {s}"
+        );
+        assert!(
+            s.contains("bouncelab for this bounce at κ = 0.4"),
+            "{code}: {s}"
+        );
     }
     // head-on, without --angle: at v, and said to hold there only
     let s = ok_calibrated(&["peers", "--preset", "tennis", "--export", "lammps"]);
-    assert!(s.contains("head-on: the COR holds at this speed only"), "{s}");
+    assert!(
+        s.contains("head-on: the COR holds at this speed only"),
+        "{s}"
+    );
     assert!(s.contains("κ = I/(m R²) = 0.4"), "{s}");
 }
 
@@ -103,7 +143,14 @@ fn a_pair_export_says_its_closing_speed() {
     assert_eq!(f(case, "speed"), 30.0);
     // the pair's COR at its closing speed: `collide --target-preset`'s
     let c = bl(&[
-        "collide", "--preset", "tennis", "--target-preset", "tennis", "--v0", "30", "--format",
+        "collide",
+        "--preset",
+        "tennis",
+        "--target-preset",
+        "tennis",
+        "--v0",
+        "30",
+        "--format",
         "json",
     ]);
     let c: Value = serde_json::from_str(&c.stdout).unwrap();
@@ -112,22 +159,35 @@ fn a_pair_export_says_its_closing_speed() {
     let o = bl(&[
         "peers", "--preset", "tennis", "--pair", "tennis", "--v0", "30", "--export", "lammps",
     ]);
-    assert!(o.stdout.contains("the pair's closing speed at v = 30 m/s"), "{}", o.stdout);
+    assert!(
+        o.stdout.contains("the pair's closing speed at v = 30 m/s"),
+        "{}",
+        o.stdout
+    );
 }
 
 #[test]
 fn the_case_is_checked() {
-    bad(&["peers", "--preset", "tennis", "--angle", "16"], &["--export"]);
     bad(
-        &["peers", "--preset", "tennis", "--export", "lammps", "--angle", "0"],
+        &["peers", "--preset", "tennis", "--angle", "16"],
+        &["--export"],
+    );
+    bad(
+        &[
+            "peers", "--preset", "tennis", "--export", "lammps", "--angle", "0",
+        ],
         &["invalid angle"],
     );
     bad(
-        &["peers", "--preset", "tennis", "--export", "lammps", "--angle", "91"],
+        &[
+            "peers", "--preset", "tennis", "--export", "lammps", "--angle", "91",
+        ],
         &["invalid angle"],
     );
     bad(
-        &["peers", "--preset", "tennis", "--export", "lammps", "--spin", "10"],
+        &[
+            "peers", "--preset", "tennis", "--export", "lammps", "--spin", "10",
+        ],
         &["--spin needs --angle"],
     );
 }

@@ -12,9 +12,7 @@ use crate::peers::tangential::TangentialExport;
 /// line naming the field.
 pub(super) fn asked(a: &PeersArgs, v: f64) -> anyhow::Result<(f64, f64, f64)> {
     if a.export.is_none() && (a.angle.is_some() || a.spin.is_some()) {
-        anyhow::bail!(
-            "--angle and --spin state the bounce an export is for: give --export CODE"
-        );
+        anyhow::bail!("--angle and --spin state the bounce an export is for: give --export CODE");
     }
     if a.spin.is_some() && a.angle.is_none() {
         anyhow::bail!("--spin needs --angle: the bounce's angle to the surface");
@@ -28,7 +26,10 @@ pub(super) fn asked(a: &PeersArgs, v: f64) -> anyhow::Result<(f64, f64, f64)> {
     }
     let spin = a.spin.unwrap_or(0.0);
     if !spin.is_finite() {
-        anyhow::bail!("invalid spin: {} (not a finite number)", crate::text::number(spin));
+        anyhow::bail!(
+            "invalid spin: {} (not a finite number)",
+            crate::text::number(spin)
+        );
     }
     Ok((v, theta, spin))
 }

@@ -6,7 +6,7 @@
 //! reweighting (fit, set each such scale to its set's RMS at the minimum, fit again from
 //! there, until the scales move by under 2 %) — the maximum-likelihood weights of sets with
 //! unknown variances. Each set then gets its own residuals and a test of whether the joint
-//! answer suits it ([`lack`]): data sets that contradict each other are flagged, not averaged
+//! answer suits it (`lack.rs`): data sets that contradict each other are flagged, not averaged
 //! into a tight wrong answer.
 
 mod lack;
