@@ -215,6 +215,15 @@ pub fn run(a: &PeersArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         // the exported file is another code's input: the ball's warnings on stderr
         let mut w = b.warnings(&b.impact()?);
         w.extend(b.measured_cor_warning().filter(|_| source == "measured"));
+        // a pair's COR falls with its closing speed (tennis on tennis 0.772 at 6.9 m/s, 0.690
+        // at 30): the preset's own speed is nothing of the pair's (issue 52 item 8)
+        if let (Some(p), None) = (&pair, a.v0) {
+            w.push(format!(
+                "the pair export is calibrated at the closing speed {} m/s, the preset's v0:                  give --v0 with the pair's closing speed against {} (its COR changes with it)",
+                crate::text::number(whole.params.v0),
+                p.preset
+            ));
+        }
         output::warnings_to_stderr(&w);
         let code = match code {
             ExportArg::Json => return Ok(output::json(out, &set)?),

@@ -164,6 +164,22 @@ fn a_pair_export_says_its_closing_speed() {
         "{}",
         o.stdout
     );
+    assert!(
+        !o.stderr.contains("the pair export is calibrated"),
+        "{}",
+        o.stderr
+    );
+    // without --v0 the pair export holds at the preset's speed, and says so on stderr
+    let o = bl(&[
+        "peers", "--preset", "tennis", "--pair", "tennis", "--export", "lammps",
+    ]);
+    assert_eq!(o.code, 0, "{}", o.stderr);
+    assert!(
+        o.stderr
+            .contains("the pair export is calibrated at the closing speed 6.906 m/s"),
+        "{}",
+        o.stderr
+    );
 }
 
 #[test]

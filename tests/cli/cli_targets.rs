@@ -326,11 +326,13 @@ fn peers_target_preset_is_the_pair() {
         ]);
         assert_eq!(by_pair, by_target, "{format}");
     }
+    // (the closing speed given: without it a pair export warns that it holds at the preset's
+    // v0, tests/cli/cli_peers_case.rs)
     let lammps = ok(&[
-        "peers", "--preset", "golf", "--pair", "tennis", "--export", "lammps",
+        "peers", "--preset", "golf", "--pair", "tennis", "--export", "lammps", "--v0", "1.47",
     ]);
     let by_target = ok(&[
-        "peers", "--preset", "golf", "--target", "tennis", "--export", "lammps",
+        "peers", "--preset", "golf", "--target", "tennis", "--export", "lammps", "--v0", "1.47",
     ]);
     assert_eq!(lammps, by_target);
     let cy = json(&[
