@@ -5,6 +5,7 @@ binary there skips the comparison, saying why; a BOUNCELAB_BIN that is not a fil
 whoever set it meant the comparison to run (python/tests/test_cli_binary.py)."""
 
 import os
+import subprocess
 from pathlib import Path
 
 import pytest
@@ -21,6 +22,12 @@ def binary():
             pytest.fail(f"BOUNCELAB_BIN={path} is not a file")
         pytest.skip(f"no bouncelab binary at {path} (cargo build, or set BOUNCELAB_BIN)")
     return path
+
+
+def cli(*args):
+    """(exit code, stdout, stderr) of the binary run on `args`."""
+    p = subprocess.run([binary(), *args], capture_output=True, text=True, env=os.environ)
+    return p.returncode, p.stdout, p.stderr
 
 
 def reach(warnings):

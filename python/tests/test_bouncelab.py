@@ -9,9 +9,7 @@ must agree to 1e-12, messages word for word.
 import csv
 import json
 import math
-import os
 import shlex
-import subprocess
 import threading
 import time
 from pathlib import Path
@@ -19,7 +17,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 import cli_binary
-from cli_binary import binary
+from cli_binary import cli
 
 import bouncelab
 
@@ -33,12 +31,6 @@ def no_user_presets(tmp_path, monkeypatch):
     """Both the binary and the bindings read $XDG_CONFIG_HOME/bouncelab/presets: an empty one."""
     monkeypatch.setenv("XDG_CONFIG_HOME", str(tmp_path / "config"))
     return tmp_path / "config" / "bouncelab" / "presets"
-
-
-def cli(*args):
-    """(exit code, stdout, stderr) of the binary."""
-    p = subprocess.run([binary(), *args], capture_output=True, text=True, env=os.environ)
-    return p.returncode, p.stdout, p.stderr
 
 
 def cli_json(*args):

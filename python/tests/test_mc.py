@@ -2,14 +2,12 @@
 and on a real Dask cluster against the single-process call (docs/scale.md)."""
 
 import json
-import os
 import pickle
-import subprocess
 from pathlib import Path
 
 import numpy as np
 import pytest
-from cli_binary import binary
+from cli_binary import cli
 
 import bouncelab
 
@@ -26,11 +24,6 @@ VARY = {"k_p": 0.05, "c": 0.05, "k_r": 0.05}
 @pytest.fixture(autouse=True)
 def no_user_presets(tmp_path, monkeypatch):
     monkeypatch.setenv("XDG_CONFIG_HOME", str(tmp_path / "config"))
-
-
-def cli(*args):
-    p = subprocess.run([binary(), *args], capture_output=True, text=True, env=os.environ)
-    return p.returncode, p.stdout, p.stderr
 
 
 @pytest.mark.parametrize("dist", ["normal", "uniform", "lognormal"])
