@@ -25,6 +25,7 @@ from ._native import (
     ObliqueImpact,
     batch,
     collide,
+    court,
     drop,
     fit,
     fit_cor_table,
@@ -41,6 +42,7 @@ from ._native import (
     shot,
     shots,
     standards,
+    static,
     sweep_velocity,
     sweep_zeta,
 )
@@ -51,6 +53,7 @@ from ._boundary import guard as _guard
 # numbers too large for it name their argument (bouncelab/_boundary.py)
 batch = _guard(batch)
 collide = _guard(collide)
+court = _guard(court)
 drop = _guard(drop)
 fit = _guard(fit)
 fit_cor_table = _guard(fit_cor_table)
@@ -67,6 +70,7 @@ run_params = _guard(run_params)
 shot = _guard(shot)
 shots = _guard(shots)
 standards = _guard(standards)
+static = _guard(static)
 sweep_velocity = _guard(sweep_velocity)
 sweep_zeta = _guard(sweep_zeta)
 
@@ -77,6 +81,7 @@ __all__ = [
     "ObliqueImpact",
     "batch",
     "collide",
+    "court",
     "drop",
     "fit",
     "fit_cor_table",
@@ -93,6 +98,7 @@ __all__ = [
     "shot",
     "shots",
     "standards",
+    "static",
     "sweep_velocity",
     "sweep_zeta",
 ]

@@ -4,6 +4,8 @@ from typing import Any, Literal, Optional, Sequence, TypedDict, Union
 
 import os
 
+from typing_extensions import Unpack
+
 import numpy as np
 import numpy.typing as npt
 
@@ -16,6 +18,57 @@ Array = npt.NDArray[np.float64]
 # named one's (keys ``name``, ``stiffness``, ``damping``, ``mass``, ``friction``,
 # ``tangential_stiffness``, ``tangential_damping``; docs/surfaces.md, docs/python.md)
 SurfaceArg = Union[str, dict[str, Any]]
+
+class BallArguments(TypedDict, total=False):
+    """The keyword arguments of every function that runs a preset ball, each None (or absent)
+    to keep the preset's (python/src/ball_args.rs): the command line's overrides ``--mass``,
+    ``--radius``, ``--k-p``, ``--damping``, ``--k-r``, ``--z-p`` (SI) and its conditions
+    (docs/model.md §10, inflated balls only but ``temperature``): ``pressure`` (Pa gauge, or
+    with its unit: ``"0.8bar"``, ``"8psi"``, ``"55kPa"``), ``temperature`` and ``inflated_at``
+    (°C), ``after`` the time since inflation and ``half_life`` the leak's (s, or with a unit:
+    ``"72h"``, ``"30d"``)."""
+    mass: Optional[float]
+    radius: Optional[float]
+    k_p: Optional[float]
+    damping: Optional[float]
+    k_r: Optional[float]
+    z_p: Optional[float]
+    pressure: Optional[Union[float, str]]
+    temperature: Optional[float]
+    inflated_at: Optional[float]
+    after: Optional[Union[float, str]]
+    half_life: Optional[Union[float, str]]
+
+class BallRecord(TypedDict):
+    """The ball an answer ran, as the JSON's ``ball`` object (docs/cli.md, "The ball
+    object"): ``overrides`` lists what the call changed from the preset; c and z_p None when
+    infinite."""
+    name: Optional[str]
+    origin: str
+    law: str
+    mass: float
+    radius: Optional[float]
+    k_p: float
+    c: Optional[float]
+    k_r: float
+    z_p: Optional[float]
+    k_h: float
+    inertia_factor: float
+    overrides: list[str]
+
+class Conditions(TypedDict):
+    """The conditions an answer ran at (the JSON's ``conditions``): °C, Pa gauge at that
+    temperature (None for a solid ball), Pa."""
+    temperature_c: Optional[float]
+    pressure_gauge_pa: Optional[float]
+    atmosphere_pa: float
+
+class _Named(TypedDict):
+    """The keys naming the ball in every answer."""
+    preset: Optional[str]
+    origin: str
+    parameters: str
+    law: str
 
 class NoAnswerError(ValueError):
     """The solver ran out of its step budget: no answer (the command line's exit code 1)."""
@@ -71,6 +124,16 @@ class Impact:
     @property
     def measured(self) -> Optional[Measured]: ...
     @property
+    def ball(self) -> BallRecord:
+        """The ball it ran, as the JSON's ``ball`` object."""
+    @property
+    def comparison_withheld(self) -> Optional[str]:
+        """Why the answer is not compared with ``measured`` (an override or a condition
+        changed the ball, or it ran on another surface than the measurement's), else None."""
+    @property
+    def conditions(self) -> Conditions:
+        """The conditions it ran at, as the JSON's ``conditions``."""
+    @property
     def surface(self) -> dict[str, Any]:
         """The surface it ran on, as the JSON's ``surface`` object (docs/surfaces.md)."""
     @property
@@ -103,8 +166,24 @@ class Impact:
     def to_dict(self) -> dict:
         """The keys of ``bouncelab run --format json`` (``lambda``, not ``lambda_``)."""
 
-def presets() -> list[dict]:
-    """Embedded and user presets, as ``bouncelab presets --format json``."""
+class Preset(TypedDict):
+    """One preset, as ``bouncelab presets --format json`` lists it."""
+    name: str
+    origin: str
+    description: str
+    law: Law
+    parameters: ParamSet
+    zeta: float
+    v0: float
+    radius: float
+    poisson_ratio: float
+    inertia_factor: float
+    calibration: Optional[dict[str, Any]]
+
+def presets() -> list[Preset]:
+    """Embedded and user presets, as ``bouncelab presets --format json`` (``lambda`` and
+    ``zeta`` too: λ cannot be spelled here, a Python keyword); ``calibration`` the preset's
+    record (docs/presets.md, "The calibration record"), None without one."""
 
 def run(
     preset: str = "superball",
@@ -116,20 +195,11 @@ def run(
     samples: Optional[int] = None,
     params: Optional[ParamSet] = None,
     *,
-    mass: Optional[float] = None,
-    radius: Optional[float] = None,
-    k_p: Optional[float] = None,
-    damping: Optional[float] = None,
-    k_r: Optional[float] = None,
-    z_p: Optional[float] = None,
-    pressure: Optional[Union[float, str]] = None,
-    temperature: Optional[float] = None,
-    inflated_at: Optional[float] = None,
     surface: Optional[SurfaceArg] = None,
+    **ball: Unpack[BallArguments],
 ) -> Impact:
-    """One impact of a preset, as ``bouncelab run --preset NAME``; ``pressure`` (Pa, or with
-    its unit: ``"0.8bar"``, ``"8psi"``), ``temperature`` and ``inflated_at`` (°C) as
-    ``--pressure``, ``--temperature``, ``--inflated-at`` (inflated balls only)."""
+    """One impact of a preset, as ``bouncelab run --preset NAME``, the ball changed by
+    :class:`BallArguments` as on the command line (overrides, then conditions)."""
 
 def run_normalized(
     lambda_: float = 1.0,
@@ -186,6 +256,7 @@ def sweep_velocity(
     speeds: Optional[Floats] = None,
     law: Optional[Law] = None,
     params: Optional[ParamSet] = None,
+    **ball: Unpack[BallArguments],
 ) -> dict[str, Any]:
     """COR, F_m, t_f, z_f against v0 (columns of ``bouncelab sweep velocity``), and the JSON's
     ``max_indentation`` (an array) and ``warnings`` (a list of lists of str, one a speed: a
@@ -197,6 +268,7 @@ def fit(
     v0: Optional[float] = None,
     law: Optional[Law] = None,
     params: Optional[ParamSet] = None,
+    **ball: Unpack[BallArguments],
 ) -> dict:
     """K_r and λ that give a measured COR (keys of ``bouncelab fit --format json``, with its
     ``warnings``: the fitted ball pressed past its radius at the data's speed)."""
@@ -219,14 +291,7 @@ class DropAir(TypedDict):
     drag_coefficient: float
     air_density: float
 
-class MultiFit(TypedDict, total=False):
-    """A multi-parameter fit: the keys of ``bouncelab fit --format json`` (SI), and
-    ``model``, the model at each data point (N for a trace, COR for a table). The keys
-    ``lambda`` (λ of the fitted ball) cannot be spelled here: a Python keyword."""
-    preset: Optional[str]
-    origin: str
-    parameters: str
-    law: str
+class _MultiFitKeys(TypedDict, total=False):
     data: str
     free: list[str]
     k_p: float
@@ -259,6 +324,12 @@ class MultiFit(TypedDict, total=False):
     model: Array
     drops: dict[str, Array]
     air: Optional[DropAir]
+    ball: BallRecord
+
+class MultiFit(_Named, _MultiFitKeys):
+    """A multi-parameter fit: the keys of ``bouncelab fit --format json`` (SI), and
+    ``model``, the model at each data point (N for a trace, COR for a table). The keys
+    ``lambda`` (λ of the fitted ball) cannot be spelled here: a Python keyword."""
 
 def fit_trace(
     time: Floats,
@@ -269,6 +340,7 @@ def fit_trace(
     v0: Optional[float] = None,
     law: Optional[Law] = None,
     params: Optional[ParamSet] = None,
+    **ball: Unpack[BallArguments],
 ) -> MultiFit:
     """k_p, c, k_r (default; k_h for k_p on the Hertz law) fitted to a force–time trace (s, N),
     with the contact start and the baseline, as ``bouncelab fit --force-time FILE``."""
@@ -284,6 +356,7 @@ def fit_cor_table(
     free: Optional[Union[str, Sequence[FreeParam]]] = None,
     law: Optional[Law] = None,
     params: Optional[ParamSet] = None,
+    **ball: Unpack[BallArguments],
 ) -> MultiFit:
     """k_r, z_p (default, k_r alone below three points) fitted to COR against speed (NaN in
     the optional columns: not measured), as ``bouncelab fit --cor-table FILE``."""
@@ -299,6 +372,7 @@ def fit_drops(
     law: Optional[Law] = None,
     params: Optional[ParamSet] = None,
     rebound_height_sd: Optional[float] = None,
+    **ball: Unpack[BallArguments],
 ) -> MultiFit:
     """k_r, z_p fitted to drop tests (m), in vacuum or with quadratic drag, as ``bouncelab fit
     --drop-height H --rebound-height R …``, each drop weighed by its rebound height's reading
@@ -314,13 +388,9 @@ class ObliqueEstimate(TypedDict):
 class _ObliqueFitSometimes(TypedDict, total=False):
     exact: bool  # only when true: as many rows as quantities, or every residual zero
 
-class ObliqueFit(_ObliqueFitSometimes):
+class ObliqueFit(_Named, _ObliqueFitSometimes):
     """The keys of ``bouncelab fit --oblique FILE --format json`` (SI; ``file`` None for
     arrays): μ, K_t (and κ with spins) fitted, their intervals and the verdict."""
-    preset: Optional[str]
-    origin: str
-    parameters: str
-    law: str
     data: str
     file: Optional[str]
     free: list[str]
@@ -341,6 +411,7 @@ class ObliqueFit(_ObliqueFitSometimes):
     identified: bool
     not_pinned: list[str]
     on_bound: list[str]
+    ball: BallRecord
 
 def fit_oblique(
     file: Optional[Union[str, os.PathLike[str]]] = None,
@@ -354,6 +425,7 @@ def fit_oblique(
     preset: str = "superball",
     law: Optional[Law] = None,
     params: Optional[ParamSet] = None,
+    **ball: Unpack[BallArguments],
 ) -> ObliqueFit:
     """μ and K_t (and κ when ``spin_out`` is given) fitted to oblique bounces, as ``bouncelab
     fit --oblique FILE``: a CSV file ``v0,angle_deg,spin_in,vx_out,vy_out[,spin_out]`` or the
@@ -421,6 +493,8 @@ class _DropKeys(TypedDict):
     bounces: dict[str, Array]
     warnings: list[str]
     surface: dict[str, Any]
+    ball: BallRecord
+    conditions: Conditions
 
 class Drop(_DropKeys, total=False):
     """The keys of ``bouncelab drop --format json``; ``standard`` only when one is named."""
@@ -438,16 +512,8 @@ def drop(
     params: Optional[ParamSet] = None,
     standard: Optional[str] = None,
     *,
-    mass: Optional[float] = None,
-    radius: Optional[float] = None,
-    k_p: Optional[float] = None,
-    damping: Optional[float] = None,
-    k_r: Optional[float] = None,
-    z_p: Optional[float] = None,
-    pressure: Optional[Union[float, str]] = None,
-    temperature: Optional[float] = None,
-    inflated_at: Optional[float] = None,
     surface: Optional[SurfaceArg] = None,
+    **ball: Unpack[BallArguments],
 ) -> Drop:
     """A drop test, bounce by bounce, as ``bouncelab drop --format json``: released from rest at
     ``height`` (m, the bottom of the ball; default the standard's drop height, else 1 m);
@@ -487,6 +553,8 @@ class Collision:
     effective_radius: Optional[float]
     warnings: list[str]
     surface: dict[str, Any]
+    ball_record: BallRecord  # the JSON's ``ball`` object: ``ball`` is the preset's name here
+    conditions: Conditions
     def to_dict(self) -> dict:
         """The keys of ``bouncelab collide --format json``, the target's under ``target``
         (``mass``, ``speed``, ``stiffness``, ``damping``; inf for the JSON's null)."""
@@ -505,13 +573,8 @@ def collide(
     law: Optional[Law] = None,
     params: Optional[ParamSet] = None,
     *,
-    mass: Optional[float] = None,
-    radius: Optional[float] = None,
-    k_p: Optional[float] = None,
-    damping: Optional[float] = None,
-    k_r: Optional[float] = None,
-    z_p: Optional[float] = None,
     surface: Optional[SurfaceArg] = None,
+    **ball: Unpack[BallArguments],
 ) -> Collision:
     """The ball against a target of mass M (inf: the wall) moving at v_t toward it, rigid or
     with a surface K_s ∥ c_s, as ``bouncelab collide``; or against another preset ball
@@ -557,6 +620,8 @@ class ObliqueImpact:
     warnings: list[str]
     tangential_damping: Optional[float]
     surface: dict[str, Any]
+    ball: BallRecord
+    conditions: Conditions
     def to_dict(self) -> dict:
         """The keys of ``bouncelab oblique --format json``, the history arrays with a history."""
     def __eq__(self, other: object) -> bool:
@@ -576,14 +641,9 @@ def oblique(
     params: Optional[ParamSet] = None,
     history: bool = False,
     samples: Optional[int] = None,
-    mass: Optional[float] = None,
-    radius: Optional[float] = None,
-    k_p: Optional[float] = None,
-    damping: Optional[float] = None,
-    k_r: Optional[float] = None,
-    z_p: Optional[float] = None,
     surface: Optional[SurfaceArg] = None,
     tangential_damping: Optional[float] = None,
+    **ball: Unpack[BallArguments],
 ) -> ObliqueImpact:
     """One oblique impact with friction and spin (docs/oblique.md), as ``bouncelab oblique``:
     angle to the surface in degrees (0 < angle ≤ 90), spin in rad/s (> 0 topspin); with
@@ -593,11 +653,7 @@ def oblique(
 def shot(
     preset: str = "tennis",
     *,
-    height: float,
-    speed: float,
     friction: float,
-    elevation: float = 0.0,
-    spin: float = 0.0,
     bounces: int = 1,
     distance: Optional[float] = None,
     time: Optional[float] = None,
@@ -608,15 +664,14 @@ def shot(
     tangential_stiffness: Optional[float] = None,
     inertia_factor: Optional[float] = None,
     tangential_damping: Optional[float] = None,
+    height: float,
+    speed: float,
+    elevation: float = 0.0,
+    spin: float = 0.0,
     samples: int = 200,
     law: Optional[Law] = None,
     params: Optional[ParamSet] = None,
-    mass: Optional[float] = None,
-    radius: Optional[float] = None,
-    k_p: Optional[float] = None,
-    damping: Optional[float] = None,
-    k_r: Optional[float] = None,
-    z_p: Optional[float] = None,
+    **ball: Unpack[BallArguments],
 ) -> dict[str, Any]:
     """A shot (docs/flight.md), as ``bouncelab shot --format json --samples N``: launched from
     ``height`` (the centre, m) at ``speed`` (m/s), ``elevation`` (degrees, negative down) and
@@ -625,19 +680,15 @@ def shot(
     spin_in, vx_in, vy_in, v_out, angle_out, spin_out, vx_out, vy_out, cor_normal,
     contact_time, slid_throughout, and warnings a list), ``end`` (reason, t, x, y, vx, vy,
     spin, speed), ``trajectory`` (arrays t, x, y, vx, vy, spin; ``samples`` of them) and
-    ``source`` (the aerodynamic models used). The overrides are the command line's:
-    ``drag_coefficient``, ``lift_coefficient``, ``spin_decay``, ``air_density``,
-    ``tangential_stiffness``, ``inertia_factor``, ``tangential_damping`` and the ball's
-    ``mass``, ``radius``, ``k_p``, ``damping``, ``k_r``, ``z_p``."""
+    ``source`` (the aerodynamic models used), ``ball`` and ``conditions``. The overrides are
+    the command line's: ``drag_coefficient``, ``lift_coefficient``, ``spin_decay``,
+    ``air_density``, ``tangential_stiffness``, ``inertia_factor``, ``tangential_damping`` and
+    :class:`BallArguments`."""
 
 def shots(
     preset: str = "tennis",
     *,
-    height: Floats,
-    speed: Floats,
     friction: float,
-    elevation: Optional[Floats] = None,
-    spin: Optional[Floats] = None,
     bounces: int = 1,
     distance: Optional[float] = None,
     time: Optional[float] = None,
@@ -648,14 +699,13 @@ def shots(
     tangential_stiffness: Optional[float] = None,
     inertia_factor: Optional[float] = None,
     tangential_damping: Optional[float] = None,
+    height: Floats,
+    speed: Floats,
+    elevation: Optional[Floats] = None,
+    spin: Optional[Floats] = None,
     law: Optional[Law] = None,
     params: Optional[ParamSet] = None,
-    mass: Optional[float] = None,
-    radius: Optional[float] = None,
-    k_p: Optional[float] = None,
-    damping: Optional[float] = None,
-    k_r: Optional[float] = None,
-    z_p: Optional[float] = None,
+    **ball: Unpack[BallArguments],
 ) -> dict[str, Array]:
     """Many shots, ``height``, ``speed``, ``elevation`` and ``spin`` (``None``: 0) broadcast
     together as a ufunc's arguments: arrays of the broadcast shape ``landing_t``, ``landing_x``, ``v_in``,
@@ -687,6 +737,8 @@ class MonteCarlo(TypedDict, total=False):
     stats: dict[str, McStats]
     warnings: list[str]
     values: dict[str, Array]
+    ball: BallRecord
+    conditions: Conditions
 
 def batch(
     file: Union[str, "os.PathLike[str]"],
@@ -699,6 +751,7 @@ def batch(
     free: Optional[Union[str, list[str]]] = None,
     drag_coefficient: Optional[float] = None,
     air_density: float = 1.204,
+    **ball: Unpack[BallArguments],
 ) -> dict[str, Any]:
     """A batch of balls in one CSV (an ``id`` column and ``fit``'s columns), each fitted and
     judged against ``standard``, as ``bouncelab batch FILE --format json``: ``summary`` (n,
@@ -718,13 +771,87 @@ def monte_carlo(
     params: Optional[ParamSet] = None,
     return_samples: bool = False,
     correlate: Optional[Union[str, dict[str, float]]] = None,
-    mass: Optional[float] = None,
-    radius: Optional[float] = None,
-    k_p: Optional[float] = None,
-    damping: Optional[float] = None,
-    k_r: Optional[float] = None,
-    z_p: Optional[float] = None,
+    **ball: Unpack[BallArguments],
 ) -> MonteCarlo:
     """COR, max_force and contact_time over ``samples`` samples of the preset's parameters
     spread by ``vary`` (fractions: {"k_p": 0.05}, or "k_p=5%,…"), as ``bouncelab mc --format
     json``; with ``return_samples``, ``values`` holds each sample's values as arrays."""
+
+class StaticReading(TypedDict):
+    """The diameter's shortening and one contact's parts (m), or None and the ``reason``."""
+    deflection_m: Optional[float]
+    indentation_m: Optional[float]
+    recoil_m: Optional[float]
+    reason: Optional[str]
+
+class StaticReturn(StaticReading):
+    peak_m: float
+    peak_force_n: Optional[float]
+
+class Static(_Named):
+    """The keys of ``bouncelab static --format json`` (``return`` cannot be spelled here: a
+    Python keyword; a :class:`StaticReturn`)."""
+    load_kg: float
+    force_n: float
+    g: float
+    forward: StaticReading
+    warnings: list[str]
+    ball: BallRecord
+
+def static(
+    preset: str = "superball",
+    *,
+    load_kg: float,
+    peak: float = 0.0254,
+    law: Optional[Law] = None,
+    params: Optional[ParamSet] = None,
+    **ball: Unpack[BallArguments],
+) -> Static:
+    """The ball squeezed between two rigid plates under ``load_kg`` (its weight on each
+    contact; the ITF's deformation tests use 8.165 kg), as ``bouncelab static --load KG
+    [--peak M]``: the forward deflection of the diameter and, where the law has hysteresis,
+    the return deflection read on unloading from a ``peak`` m compression (docs/model.md
+    §11); None with the ``reason`` where the model gives none."""
+
+class _CourtSometimes(TypedDict, total=False):
+    tangential_damping: float
+    calibration: dict[str, Any]
+
+class Court(_Named, _CourtSometimes):
+    """The keys of ``bouncelab court --format json``: the Court Pace Rating and what it was
+    computed on; ``calibration`` (surface_cor, stiffness, damping, cor, reachable,
+    assumption) with ``surface_cor``."""
+    standard: str
+    friction: float
+    cpr: float
+    category: int
+    category_name: str
+    apparent_friction: float
+    cor_normal: float
+    v_out: float
+    angle_out_deg: float
+    spin_out: float
+    warnings: list[str]
+    surface: dict[str, Any]
+    computed_on: str
+    ball: BallRecord
+    conditions: Conditions
+
+def court(
+    preset: str = "superball",
+    *,
+    friction: Optional[float] = None,
+    surface: Optional[SurfaceArg] = None,
+    surface_cor: Optional[float] = None,
+    tangential_stiffness: Optional[float] = None,
+    inertia_factor: Optional[float] = None,
+    tangential_damping: Optional[float] = None,
+    law: Optional[Law] = None,
+    params: Optional[ParamSet] = None,
+    **ball: Unpack[BallArguments],
+) -> Court:
+    """The ITF Court Pace Rating (CS 01/02: 30 m/s at 16°, no spin) of a surface for the
+    ball, as ``bouncelab court``: ``surface`` a name or a dict of its numbers, ``friction`` μ
+    (the surface's when not given), ``surface_cor`` a measured e the court is calibrated to
+    (c_s solved at the dict's ``stiffness``, else the ball's K_p: an assumption the answer
+    states; a ValueError with the reachable range when e is out of reach)."""

@@ -6,7 +6,8 @@
 //! returns the JSON document's structure as a dict (serde_json's, so the keys, the order and
 //! the `None`s are the command line's: python/tests/test_batch.py compares them).
 
-use crate::{error, preset_ball, value_error};
+use crate::ball_args::ball_pyfunction;
+use crate::{error, value_error};
 use bouncelab::Ball;
 use bouncelab::analysis::batch::{BallData, split};
 use bouncelab::analysis::fit::parse_free;
@@ -115,62 +116,67 @@ fn standard(name: Option<&str>, ball: &Ball) -> PyResult<&'static Standard> {
     }
 }
 
-/// A batch of balls in one CSV file — an `id` column and the columns `fit` reads (drop tests,
-/// a COR table, a trace, or a `trace` column naming each ball's trace file) — each ball fitted
-/// from the preset and judged against `standard` (default: the preset's own), as `bouncelab
-/// batch FILE --format json`: a dict with `preset`, `law`, `standard`, `summary` (`n`,
-/// `mean`, `sd`, `min`, `max`, `failures`, `cpk`, their 95 % intervals `mean_ci` and
-/// `cpk_ci`, `mean_ci_clipped` (whether `mean_ci` was cut to where the value can lie), `balls`, `identified`, `no_answer`, `unsure`, `free`) and `balls` (one dict a
-/// ball: `id`, `cor`, `measured`, its 95 % interval `measured_ci95`, `verdict`, `margin`,
-/// `warnings`, `error`, `verdict_from`, `readings`, `model_measured`, `fit_error`, …), `None`
-/// where the JSON has null. A ball tested at the standard's condition is judged on its own
-/// readings whether or not it can be fitted (a failed fit says why in its `fit_error`); a ball
-/// without such readings that cannot be fitted says why in its `error` and the batch goes on
-/// (`summary["no_answer"]` counts them: the command line's exit 1). Bad input raises `ValueError` naming the file, line and column; a file that
-/// cannot be read, `OSError`. `free` is a list of names or the command line's "k_p,c". The balls are fitted in parallel without the GIL.
-#[pyfunction]
-#[pyo3(signature = (file, *, standard=None, preset="superball", params=None, law=None, v0=None, free=None, drag_coefficient=None, air_density=1.204))]
-#[allow(clippy::too_many_arguments)]
-pub(crate) fn batch<'py>(
-    py: Python<'py>,
-    file: PathBuf,
-    standard: Option<&str>,
-    preset: &str,
-    params: Option<&str>,
-    law: Option<&str>,
-    v0: Option<f64>,
-    free: Option<&Bound<'py, PyAny>>,
-    drag_coefficient: Option<f64>,
-    air_density: f64,
-) -> PyResult<Bound<'py, PyAny>> {
-    let ball = preset_ball(preset, params, law, v0)?;
-    let standard = self::standard(standard, &ball)?;
-    let free = crate::free_names(free)?;
-    let free = free
-        .as_deref()
-        .map(parse_free)
-        .transpose()
-        .map_err(|e| value_error(e.to_string()))?;
-    let air = drag_coefficient.map(|cd| Air {
-        density: air_density,
-        drag_coefficient: cd,
-    });
-    // the library checks the air once, whatever the data (as the command line)
-    ball.drops_to_cor(&[], air).map_err(error)?;
-    let balls = load(&file)?;
-    let setup = BatchSetup {
-        standard,
-        free: free.as_deref(),
-        air,
-        rebound_sd: None,
-    };
-    let text = py.detach(|| {
-        let outcomes: Vec<_> = balls
-            .par_iter()
-            .map(|(id, line, data)| ball.judge_in_batch(id, *line, data, &setup))
-            .collect();
-        serde_json::to_string(&BatchReport::new(&ball, standard, &outcomes))
-    });
-    let text = text.map_err(|e| value_error(e.to_string()))?;
-    py.import("json")?.call_method1("loads", (text,))
+ball_pyfunction! {
+    /// A batch of balls in one CSV file — an `id` column and the columns `fit` reads (drop tests,
+    /// a COR table, a trace, or a `trace` column naming each ball's trace file) — each ball fitted
+    /// from the preset and judged against `standard` (default: the preset's own), as `bouncelab
+    /// batch FILE --format json`: a dict with `preset`, `law`, `standard`, `summary` (`n`,
+    /// `mean`, `sd`, `min`, `max`, `failures`, `cpk`, their 95 % intervals `mean_ci` and
+    /// `cpk_ci`, `mean_ci_clipped` (whether `mean_ci` was cut to where the value can lie), `balls`, `identified`, `no_answer`, `unsure`, `free`) and `balls` (one dict a
+    /// ball: `id`, `cor`, `measured`, its 95 % interval `measured_ci95`, `verdict`, `margin`,
+    /// `warnings`, `error`, `verdict_from`, `readings`, `model_measured`, `fit_error`, …), `None`
+    /// where the JSON has null. A ball tested at the standard's condition is judged on its own
+    /// readings whether or not it can be fitted (a failed fit says why in its `fit_error`); a ball
+    /// without such readings that cannot be fitted says why in its `error` and the batch goes on
+    /// (`summary["no_answer"]` counts them: the command line's exit 1). Bad input raises `ValueError` naming the file, line and column; a file that
+    /// cannot be read, `OSError`. `free` is a list of names or the command line's "k_p,c". The balls are fitted in parallel without the GIL.
+    signature = (file, *, standard=None, preset="superball", params=None, law=None, v0=None, free=None, drag_coefficient=None, air_density=1.204,);
+    fn batch<'py>(
+        py,
+        file: PathBuf,
+        standard: Option<&str>,
+        preset: &str,
+        params: Option<&str>,
+        law: Option<&str>,
+        v0: Option<f64>,
+        free: Option<&Bound<'py, PyAny>>,
+        drag_coefficient: Option<f64>,
+        air_density: f64,
+    ) -> PyResult<Bound<'py, PyAny>>;
+    ball choice = (preset, params, law);
+    {
+        let ball = choice.ball(v0)?;
+        let standard = self::standard(standard, &ball)?;
+        let free = crate::free_names(free)?;
+        let free = free
+            .as_deref()
+            .map(parse_free)
+            .transpose()
+            .map_err(|e| value_error(e.to_string()))?;
+        let air = drag_coefficient.map(|cd| Air {
+            density: air_density,
+            drag_coefficient: cd,
+        });
+        // the library checks the air once, whatever the data (as the command line)
+        ball.drops_to_cor(&[], air).map_err(error)?;
+        let balls = load(&file)?;
+        let setup = BatchSetup {
+            standard,
+            free: free.as_deref(),
+            air,
+            rebound_sd: None,
+        };
+        let text = py.detach(|| {
+            let outcomes: Vec<_> = balls
+                .par_iter()
+                .map(|(id, line, data)| ball.judge_in_batch(id, *line, data, &setup))
+                .collect();
+            serde_json::to_string(&BatchReport::new(&ball, standard, &outcomes))
+        });
+        let text = text.map_err(|e| value_error(e.to_string()))?;
+        let d = py.import("json")?.call_method1("loads", (text,))?;
+        // the conditions the ball ran at, as the command line's last key
+        d.set_item("conditions", &crate::answer::Stated::of(&ball))?;
+        Ok(d)
+    }
 }

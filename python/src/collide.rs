@@ -2,9 +2,11 @@
 //! own (docs/targets.md), as `bouncelab collide --format json`: the same fields, by the same
 //! names.
 
+use crate::answer::{Record, Stated};
+use crate::ball_args::{BallChoice, ball_pyfunction};
+use crate::error;
 use crate::same::Same;
 use crate::surface::SurfaceUsed;
-use crate::{error, overridden_ball, overrides};
 use bouncelab::Ball;
 use bouncelab::api::CollisionReport;
 use bouncelab::catalog::Catalog;
@@ -43,6 +45,11 @@ pub(crate) struct Collision {
     warnings: Vec<String>,
     /// The surface the target had (the JSON's `surface`, docs/surfaces.md).
     surface: SurfaceUsed,
+    /// The ball as the JSON's `ball_record` object (docs/cli.md "The ball object"; `ball`
+    /// was already the preset's name here, and stays it).
+    ball_record: Record,
+    /// The conditions the ball ran at (the JSON's `conditions`).
+    conditions: Stated,
 }
 
 /// The JSON's keys in its order, after `target` (one macro for both directions, so that
@@ -100,6 +107,7 @@ impl Collision {
     fn to_dict<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
         let d = PyDict::new(py);
         d.set_item("ball", &self.ball)?;
+        d.set_item("ball_record", &self.ball_record)?;
         d.set_item("law", &self.law)?;
         d.set_item("ball_mass", self.ball_mass)?;
         d.set_item("ball_speed", self.ball_speed)?;
@@ -114,15 +122,13 @@ impl Collision {
         }
         answer_keys!(put);
         d.set_item("surface", self.surface.to_dict(py)?)?;
+        d.set_item("conditions", &self.conditions)?;
         Ok(d)
     }
 
     /// Pickling: the class's `_from_state` and `to_dict()` (a frozen value: every protocol).
-    fn __reduce__<'py>(
-        slf: &Bound<'py, Self>,
-    ) -> PyResult<(Bound<'py, PyAny>, (Bound<'py, PyDict>,))> {
-        let rebuild = slf.get_type().getattr("_from_state")?;
-        Ok((rebuild, (slf.get().to_dict(slf.py())?,)))
+    fn __reduce__<'py>(slf: &Bound<'py, Self>) -> PyResult<crate::same::Reduced<'py>> {
+        crate::same::reduce(slf, slf.get().to_dict(slf.py())?)
     }
 
     /// The collision of a state [`Collision::__reduce__`] wrote.
@@ -148,6 +154,8 @@ impl Collision {
                         Some(s) => SurfaceUsed::from_dict(&s)?,
                         None => SurfaceUsed::rigid_plate(),
                     },
+                    ball_record: get(state, "ball_record")?,
+                    conditions: get(state, "conditions")?,
                 }
             };
         }
@@ -172,6 +180,8 @@ impl Collision {
             target_damping
         ) && answer_keys!(all_same)
             && self.surface == other.surface
+            && self.ball_record == other.ball_record
+            && self.conditions == other.conditions
     }
 
     /// A frozen value is its own copy.
@@ -184,8 +194,9 @@ impl Collision {
     }
 }
 
-impl From<CollisionReport> for Collision {
-    fn from(r: CollisionReport) -> Collision {
+impl Collision {
+    /// The answer of `r`, a collision of `ball`, as the command line reports it.
+    fn of(r: CollisionReport, ball: &Ball) -> Collision {
         let (t, c) = (r.target, r.collision);
         Collision {
             ball: r.ball,
@@ -213,41 +224,50 @@ impl From<CollisionReport> for Collision {
             effective_radius: r.effective_radius,
             warnings: r.warnings,
             surface: SurfaceUsed::rigid_plate(),
+            ball_record: Record(r.ball_record),
+            conditions: Stated::of(ball),
         }
     }
 }
 
-/// A preset ball against a target, as `bouncelab collide --preset NAME [--v0 V] --target-mass M
-/// [--target-speed V_T] [--target-stiffness K_S] [--target-damping C_S]`, or against another
-/// preset ball with `target_preset` (instead of `target_mass`; both balls deform, their chains
-/// in series, through the same `Ball::collide_ball`: docs/targets.md §8). `target_mass = inf`
-/// is the wall. `surface=` (a name or a dict of its numbers, python/src/surface.rs) is the
-/// target's surface, as `--surface NAME --surface-stiffness K_S …`: its mass the target's
-/// unless `target_mass` is given, its K_s, c_s unless `target_stiffness` is.
-#[pyfunction]
-#[pyo3(signature = (preset="superball", v0=None, target_mass=None, target_speed=0.0, target_stiffness=f64::INFINITY, target_damping=0.0, target_preset=None, law=None, params=None, *, mass=None, radius=None, k_p=None, damping=None, k_r=None, z_p=None, surface=None))]
-// help()'s signature, which pyo3 writes "..." for f64::INFINITY in (shown "Ellipsis"): 1e999
-// is the literal Python reads as inf, shown "inf" (test_the_stub_and_help_give_each_…)
-#[pyo3(
-    text_signature = "(preset='superball', v0=None, target_mass=None, target_speed=0.0, target_stiffness=1e999, target_damping=0.0, target_preset=None, law=None, params=None, *, mass=None, radius=None, k_p=None, damping=None, k_r=None, z_p=None, surface=None)"
-)]
-#[allow(clippy::too_many_arguments)]
-pub(crate) fn collide(
-    preset: &str,
+ball_pyfunction! {
+    /// A preset ball against a target, as `bouncelab collide --preset NAME [--v0 V] --target-mass M
+    /// [--target-speed V_T] [--target-stiffness K_S] [--target-damping C_S]`, or against another
+    /// preset ball with `target_preset` (instead of `target_mass`; both balls deform, their chains
+    /// in series, through the same `Ball::collide_ball`: docs/targets.md §8). `target_mass = inf`
+    /// is the wall. `surface=` (a name or a dict of its numbers, python/src/surface.rs) is the
+    /// target's surface, as `--surface NAME --surface-stiffness K_S …`: its mass the target's
+    /// unless `target_mass` is given, its K_s, c_s unless `target_stiffness` is.
+    // help()'s signature, which pyo3 writes "..." for f64::INFINITY in (shown "Ellipsis"):
+    // 1e999 is the literal Python reads as inf, shown "inf" (test_the_stub_and_help_give_…)
+    #[pyo3(text_signature = "(preset='superball', v0=None, target_mass=None, target_speed=0.0, target_stiffness=1e999, target_damping=0.0, target_preset=None, law=None, params=None, *, surface=None, mass=None, radius=None, k_p=None, damping=None, k_r=None, z_p=None, pressure=None, temperature=None, inflated_at=None, after=None, half_life=None)")]
+    signature = (preset="superball", v0=None, target_mass=None, target_speed=0.0, target_stiffness=f64::INFINITY, target_damping=0.0, target_preset=None, law=None, params=None, *, surface=None,);
+    fn collide<'py>(
+        _py,
+        preset: &str,
+        v0: Option<f64>,
+        target_mass: Option<f64>,
+        target_speed: f64,
+        target_stiffness: f64,
+        target_damping: f64,
+        target_preset: Option<&str>,
+        law: Option<&str>,
+        params: Option<&str>,
+        surface: Option<&Bound<'py, PyAny>>,
+    ) -> PyResult<Collision>;
+    ball choice = (preset, params, law);
+    {
+        let target = (target_mass, target_speed, target_preset);
+        collide_with(&choice, v0, target, (target_stiffness, target_damping), surface)
+    }
+}
+
+/// [`collide`]'s body: the ball of `choice` at `v0` against the target.
+fn collide_with(
+    choice: &BallChoice<'_>,
     v0: Option<f64>,
-    target_mass: Option<f64>,
-    target_speed: f64,
-    target_stiffness: f64,
-    target_damping: f64,
-    target_preset: Option<&str>,
-    law: Option<&str>,
-    params: Option<&str>,
-    mass: Option<f64>,
-    radius: Option<f64>,
-    k_p: Option<f64>,
-    damping: Option<f64>,
-    k_r: Option<f64>,
-    z_p: Option<f64>,
+    (target_mass, target_speed, target_preset): (Option<f64>, f64, Option<&str>),
+    (target_stiffness, target_damping): (f64, f64),
     surface: Option<&Bound<'_, PyAny>>,
 ) -> PyResult<Collision> {
     if target_damping != 0.0 && !target_damping.is_nan() && target_stiffness == f64::INFINITY {
@@ -259,13 +279,7 @@ pub(crate) fn collide(
             bouncelab::text::number(target_damping)
         )));
     }
-    let ball = overridden_ball(
-        preset,
-        params,
-        law,
-        v0,
-        &overrides(mass, radius, k_p, damping, k_r, z_p),
-    )?;
+    let ball = choice.resolve(v0)?;
     let given = surface.is_some_and(|s| !s.is_none());
     let (mut used, _) = crate::surface::resolve(surface)?;
     let named = used.name != bouncelab::target::surface::DEFAULT || used.mass.is_finite();
@@ -308,7 +322,7 @@ pub(crate) fn collide(
             ));
         }
     };
-    let mut c: Collision = report.map_err(error)?.into();
+    let mut c = Collision::of(report.map_err(error)?, &ball);
     c.surface = used;
     Ok(c)
 }

@@ -1,8 +1,9 @@
 //! `drop`: a preset dropped bounce by bounce, and judged against a standard, as `bouncelab drop
 //! --format json` (src/cli/drop.rs), under its keys.
 
+use crate::ball_args::{BallChoice, ball_pyfunction};
 use crate::impact::interval_columns;
-use crate::{array, error, interrupt, overridden_ball, overrides, value_error};
+use crate::{array, error, interrupt, value_error};
 use bouncelab::BallError;
 use bouncelab::api::Ball;
 use bouncelab::drop::standards::{self, Verdict};
@@ -14,42 +15,49 @@ use pyo3::types::PyDict;
 /// (`cli::drop::DEFAULT_HEIGHT`, a feature the package does not build).
 const DEFAULT_HEIGHT: f64 = 1.0;
 
-/// A preset ball dropped onto a rigid plate, bounce by bounce, as `bouncelab drop --format
-/// json`: released from rest at `height` (m, the bottom of the ball; None: the standard's drop
-/// height, else 1 m). A dict with `height`, `drag`, `bounces` (a dict of numpy arrays with the
-/// JSON's per-bounce keys, one entry a bounce), `warnings`, and with `standard` named (as
-/// `bouncelab standards` lists them), `standard`: the verdict (name, window, measured, verdict,
-/// margin, judged_at_height_m: the standard's own drop height, None for a COR test) of that
-/// standard's own test in this drop's air, whatever `height` says. No standard
-/// is judged unless named, as on the command line; a preset's own is the one whose `balls`
-/// list it in `standards()`.
-#[pyfunction(name = "drop")]
-#[pyo3(signature = (preset="superball", height=None, bounces=10, min_rebound=0.001, drag=true, drag_coefficient=None, air_density=None, law=None, params=None, standard=None, *, mass=None, radius=None, k_p=None, damping=None, k_r=None, z_p=None, pressure=None, temperature=None, inflated_at=None, surface=None))]
-#[allow(clippy::too_many_arguments)]
-pub(crate) fn drop_test<'py>(
+ball_pyfunction! {
+    /// A preset ball dropped onto a rigid plate, bounce by bounce, as `bouncelab drop --format
+    /// json`: released from rest at `height` (m, the bottom of the ball; None: the standard's drop
+    /// height, else 1 m). A dict with `height`, `drag`, `bounces` (a dict of numpy arrays with the
+    /// JSON's per-bounce keys, one entry a bounce), `warnings`, and with `standard` named (as
+    /// `bouncelab standards` lists them), `standard`: the verdict (name, window, measured, verdict,
+    /// margin, judged_at_height_m: the standard's own drop height, None for a COR test) of that
+    /// standard's own test in this drop's air, whatever `height` says. No standard
+    /// is judged unless named, as on the command line; a preset's own is the one whose `balls`
+    /// list it in `standards()`.
+    #[pyo3(name = "drop")]
+    signature = (preset="superball", height=None, bounces=10, min_rebound=0.001, drag=true, drag_coefficient=None, air_density=None, law=None, params=None, standard=None, *, surface=None,);
+    fn drop_test<'py>(
+        py,
+        preset: &str,
+        height: Option<f64>,
+        bounces: usize,
+        min_rebound: f64,
+        drag: bool,
+        drag_coefficient: Option<f64>,
+        air_density: Option<f64>,
+        law: Option<&str>,
+        params: Option<&str>,
+        standard: Option<&str>,
+        surface: Option<&Bound<'py, PyAny>>,
+    ) -> PyResult<Bound<'py, PyDict>>;
+    ball choice = (preset, params, law);
+    {
+        let fall = (height, bounces, min_rebound);
+        let air = (drag, drag_coefficient, air_density);
+        drop_of(py, &choice, fall, air, standard, surface)
+    }
+}
+
+/// [`drop_test`]'s body: the ball of `choice` dropped from `height`.
+fn drop_of<'py>(
     py: Python<'py>,
-    preset: &str,
-    height: Option<f64>,
-    bounces: usize,
-    min_rebound: f64,
-    drag: bool,
-    drag_coefficient: Option<f64>,
-    air_density: Option<f64>,
-    law: Option<&str>,
-    params: Option<&str>,
+    choice: &BallChoice<'_>,
+    (height, bounces, min_rebound): (Option<f64>, usize, f64),
+    (drag, drag_coefficient, air_density): (bool, Option<f64>, Option<f64>),
     standard: Option<&str>,
-    mass: Option<f64>,
-    radius: Option<f64>,
-    k_p: Option<f64>,
-    damping: Option<f64>,
-    k_r: Option<f64>,
-    z_p: Option<f64>,
-    pressure: Option<&Bound<'_, PyAny>>,
-    temperature: Option<f64>,
-    inflated_at: Option<f64>,
     surface: Option<&Bound<'py, PyAny>>,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let spec = crate::preset_balls::conditions(pressure, temperature, inflated_at)?;
     if !drag && (drag_coefficient.is_some() || air_density.is_some()) {
         // as the command line refuses --no-drag with --drag-coefficient or --air-density
         return Err(value_error(
@@ -62,20 +70,13 @@ pub(crate) fn drop_test<'py>(
         .map(|n| standards::find(n).map_err(|_| bouncelab::drop::names::unknown(n)))
         .transpose()
         .map_err(value_error)?;
-    let ball = overridden_ball(
-        preset,
-        params,
-        law,
-        None,
-        &overrides(mass, radius, k_p, damping, k_r, z_p),
-    )?;
-    let ball = crate::preset_balls::at_conditions(std::sync::Arc::new(ball), &spec)?;
+    let ball = choice.resolve(None)?;
     // a standard runs the ball at its test's conditions, and says when it is off them
     let (ball, off_conditions) = match standard {
         Some(s) => ball
             .as_ref()
             .clone()
-            .at_standard(s.name, &spec)
+            .at_standard(s.name, &choice.conditions)
             .map_err(error)?,
         None => (ball.as_ref().clone(), None),
     };
@@ -121,11 +122,19 @@ pub(crate) fn drop_test<'py>(
         d.set_item("standard", verdict)?;
     }
     let mut warnings = ball.drop_warnings(&run).map_err(error)?;
+    // the standard's own test (its height or speed) against the record, when it is another
+    // impact than the first bounce above (as the command line's)
+    if let Some(w) = standard.and_then(|s| ball.standard_calibration_warning(s))
+        && !warnings.contains(&w)
+    {
+        warnings.push(w);
+    }
     // a ball fitted to drops in another air than this drop's says so, as the command line's
     warnings.extend(ball.drop_air_warning(run.setup.air));
     warnings.extend(off_conditions);
     d.set_item("warnings", warnings)?;
     d.set_item("surface", surface.to_dict(py)?)?;
+    crate::answer::stated(&d, &ball)?;
     Ok(d)
 }
 

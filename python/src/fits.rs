@@ -4,7 +4,8 @@
 //! that read the command line's files), the fit is the library's [`Ball::fit`]; each function
 //! returns a dict with the keys of `bouncelab fit --format json`.
 
-use crate::{array, error, floats, preset_ball, value_error};
+use crate::ball_args::ball_pyfunction;
+use crate::{array, error, floats, value_error};
 use bouncelab::Ball;
 use bouncelab::analysis::fit::{Estimate, FitData, MultiFit, parse_free};
 use bouncelab::measured::{Air, CorPoint, CorTable, MeasuredError, Trace};
@@ -167,6 +168,8 @@ fn report<'py>(
         d.set_item("exact", true)?;
     }
     d.set_item("model", array(py, f.model.clone()))?;
+    // the ball the fit started from, as the command line's `ball`
+    d.set_item("ball", &crate::answer::Record::of(ball))?;
     Ok(d)
 }
 
@@ -180,172 +183,178 @@ fn free_list(
         .transpose()
 }
 
-/// Several parameters fitted to a force–time trace, as `bouncelab fit --force-time FILE`:
-/// `time` (s, increasing) and `force` (N) arrays; the contact start in the data's clock and
-/// the force baseline are fitted too.
-#[pyfunction]
-#[pyo3(signature = (time, force, *, preset="superball", free=None, v0=None, law=None, params=None))]
-#[allow(clippy::too_many_arguments)]
-pub fn fit_trace<'py>(
-    py: Python<'py>,
-    time: &Bound<'py, PyAny>,
-    force: &Bound<'py, PyAny>,
-    preset: &str,
-    free: Option<&Bound<'py, PyAny>>,
-    v0: Option<f64>,
-    law: Option<&str>,
-    params: Option<&str>,
-) -> PyResult<Bound<'py, PyDict>> {
-    let (t, f) = (floats(time, "time")?, floats(force, "force")?);
-    same_length(["time", "force"], t.len(), f.len())?;
-    let text = csv(
-        &["time_s", "force_N"],
-        t.len(),
-        &[&|i| Some(t[i]), &|i| Some(f[i])],
-    );
-    let trace = Trace::parse(&text).map_err(|e| data_error("trace", e))?;
-    // a trace with no pulse, named by the row of its largest force, before the fit would
-    // name it by the line and column of the text above (`2:5: empty pulse …`)
-    trace.summary().map_err(|e| data_error("trace", e))?;
-    let free = free_list(free)?;
-    let ball = preset_ball(preset, params, law, v0)?;
-    let fit = crate::interrupt::detach_watched(py, |w| {
-        ball.fit_watched(FitData::Trace(&trace), free.as_deref(), w)
-    })?;
-    let fit = with_fitted_warnings(py, &ball, fit, &[ball.params.v0]);
-    report(py, &ball, "force-time trace", &fit, (ball.params.v0, None))
-}
-
-/// Several parameters fitted to COR against impact speed, as `bouncelab fit --cor-table FILE`:
-/// `v0` (m/s) and `cor` arrays, and optionally the COR's standard deviations (weights) and the
-/// peak forces (N) and contact times (s) measured at each speed (NaN: not measured).
-#[pyfunction]
-#[pyo3(signature = (v0, cor, *, cor_sd=None, max_force=None, contact_time=None, preset="superball", free=None, law=None, params=None))]
-#[allow(clippy::too_many_arguments)]
-pub fn fit_cor_table<'py>(
-    py: Python<'py>,
-    v0: &Bound<'py, PyAny>,
-    cor: &Bound<'py, PyAny>,
-    cor_sd: Option<&Bound<'py, PyAny>>,
-    max_force: Option<&Bound<'py, PyAny>>,
-    contact_time: Option<&Bound<'py, PyAny>>,
-    preset: &str,
-    free: Option<&Bound<'py, PyAny>>,
-    law: Option<&str>,
-    params: Option<&str>,
-) -> PyResult<Bound<'py, PyDict>> {
-    let (v, e) = (floats(v0, "v0")?, floats(cor, "cor")?);
-    same_length(["v0", "cor"], v.len(), e.len())?;
-    let optional = |name: &str, a: Option<&Bound<'py, PyAny>>| -> PyResult<Vec<f64>> {
-        match a {
-            Some(a) => {
-                let x = floats(a, name)?;
-                same_length(["v0", name], v.len(), x.len())?;
-                Ok(x)
-            }
-            None => Ok(vec![f64::NAN; v.len()]),
-        }
-    };
-    let sd = optional("cor_sd", cor_sd)?;
-    let fm = optional("max_force", max_force)?;
-    let tf = optional("contact_time", contact_time)?;
-    // NaN is "not measured": an empty cell
-    let given = |x: f64| (!x.is_nan()).then_some(x);
-    let text = csv(
-        &["v0", "cor", "cor_sd", "max_force_N", "contact_time_s"],
-        v.len(),
-        &[
-            &|i| Some(v[i]),
-            &|i| Some(e[i]),
-            &|i| given(sd[i]),
-            &|i| given(fm[i]),
-            &|i| given(tf[i]),
-        ],
-    );
-    let table = CorTable::parse(&text).map_err(|e| data_error("COR table", e))?;
-    let free = free_list(free)?;
-    let ball = preset_ball(preset, params, law, None)?;
-    let fit = crate::interrupt::detach_watched(py, |w| {
-        ball.fit_watched(FitData::Cor(&table.points), free.as_deref(), w)
-    })?;
-    let speeds: Vec<f64> = table.points.iter().map(|p| p.v0).collect();
-    let fit = with_fitted_warnings(py, &ball, fit, &speeds);
-    report(py, &ball, "COR table", &fit, (v[0], None))
-}
-
-/// Several parameters fitted to drop tests, as `bouncelab fit --drop-height H --rebound-height
-/// R …`: drop and rebound heights (m) of the bottom of the ball, turned into impact speeds and
-/// CORs in vacuum, or with quadratic drag when `drag_coefficient` is given (air density
-/// `air_density`, kg/m³). Each drop weighs by its rebound height's reading (σ_e = σ_R ∂e/∂R,
-/// docs/fitting.md): with `rebound_height_sd` = σ_R (m) each COR carries σ_e (`drops["cor_sd"]`)
-/// and the lack of fit is χ²; without it the scale comes from the misses. The dict adds
-/// `drops`: the heights with the speed and COR of each.
-#[pyfunction]
-#[pyo3(signature = (drop_heights, rebound_heights, *, preset="superball", free=None, drag_coefficient=None, air_density=1.204, law=None, params=None, rebound_height_sd=None))]
-#[allow(clippy::too_many_arguments)]
-pub fn fit_drops<'py>(
-    py: Python<'py>,
-    drop_heights: &Bound<'py, PyAny>,
-    rebound_heights: &Bound<'py, PyAny>,
-    preset: &str,
-    free: Option<&Bound<'py, PyAny>>,
-    drag_coefficient: Option<f64>,
-    air_density: f64,
-    law: Option<&str>,
-    params: Option<&str>,
-    rebound_height_sd: Option<f64>,
-) -> PyResult<Bound<'py, PyDict>> {
-    let (h, r) = (
-        floats(drop_heights, "drop_heights")?,
-        floats(rebound_heights, "rebound_heights")?,
-    );
-    same_length(["drop_heights", "rebound_heights"], h.len(), r.len())?;
-    let free = free_list(free)?;
-    let ball = preset_ball(preset, params, law, None)?;
-    let air = drag_coefficient.map(|cd| Air {
-        density: air_density,
-        drag_coefficient: cd,
-    });
-    let pairs: Vec<(f64, f64)> = h.iter().copied().zip(r.iter().copied()).collect();
-    let points: Vec<CorPoint> = ball
-        .drops_to_cor_read(&pairs, air, rebound_height_sd)
-        .map_err(error)?;
-    let fit = crate::interrupt::detach_watched(py, |w| {
-        ball.fit_watched(FitData::Cor(&points), free.as_deref(), w)
-    })?;
-    let speeds: Vec<f64> = points.iter().map(|p| p.v0).collect();
-    let fit = with_fitted_warnings(py, &ball, fit, &speeds);
-    let d = report(
+ball_pyfunction! {
+    /// Several parameters fitted to a force–time trace, as `bouncelab fit --force-time FILE`:
+    /// `time` (s, increasing) and `force` (N) arrays; the contact start in the data's clock and
+    /// the force baseline are fitted too.
+    signature = (time, force, *, preset="superball", free=None, v0=None, law=None, params=None,);
+    fn fit_trace<'py>(
         py,
-        &ball,
-        "drop test",
-        &fit,
-        (points[0].v0, Some(points[0].cor)),
-    )?;
-    let drops = PyDict::new(py);
-    drops.set_item("drop_height", array(py, h))?;
-    drops.set_item("rebound_height", array(py, r))?;
-    drops.set_item("v0", array(py, points.iter().map(|p| p.v0).collect()))?;
-    drops.set_item("cor", array(py, points.iter().map(|p| p.cor).collect()))?;
-    if rebound_height_sd.is_some() {
-        let sd = points
-            .iter()
-            .map(|p| p.cor_sd.unwrap_or(f64::NAN))
-            .collect();
-        drops.set_item("cor_sd", array(py, sd))?;
+        time: &Bound<'py, PyAny>,
+        force: &Bound<'py, PyAny>,
+        preset: &str,
+        free: Option<&Bound<'py, PyAny>>,
+        v0: Option<f64>,
+        law: Option<&str>,
+        params: Option<&str>,
+    ) -> PyResult<Bound<'py, PyDict>>;
+    ball choice = (preset, params, law);
+    {
+        let (t, f) = (floats(time, "time")?, floats(force, "force")?);
+        same_length(["time", "force"], t.len(), f.len())?;
+        let text = csv(
+            &["time_s", "force_N"],
+            t.len(),
+            &[&|i| Some(t[i]), &|i| Some(f[i])],
+        );
+        let trace = Trace::parse(&text).map_err(|e| data_error("trace", e))?;
+        // a trace with no pulse, named by the row of its largest force, before the fit would
+        // name it by the line and column of the text above (`2:5: empty pulse …`)
+        trace.summary().map_err(|e| data_error("trace", e))?;
+        let free = free_list(free)?;
+        let ball = choice.ball(v0)?;
+        let fit = crate::interrupt::detach_watched(py, |w| {
+            ball.fit_watched(FitData::Trace(&trace), free.as_deref(), w)
+        })?;
+        let fit = with_fitted_warnings(py, &ball, fit, &[ball.params.v0]);
+        report(py, &ball, "force-time trace", &fit, (ball.params.v0, None))
     }
-    d.set_item("drops", drops)?;
-    // the air the drops were taken in, as the command line's `air` (None: vacuum)
-    let air_dict = air
-        .map(|a| -> PyResult<Bound<'_, PyDict>> {
-            let a_d = PyDict::new(py);
-            a_d.set_item("drag_coefficient", a.drag_coefficient)?;
-            a_d.set_item("air_density", a.density)?;
-            Ok(a_d)
-        })
-        .transpose()?;
-    d.set_item("air", air_dict)?;
-    Ok(d)
+}
+
+ball_pyfunction! {
+    /// Several parameters fitted to COR against impact speed, as `bouncelab fit --cor-table FILE`:
+    /// `v0` (m/s) and `cor` arrays, and optionally the COR's standard deviations (weights) and the
+    /// peak forces (N) and contact times (s) measured at each speed (NaN: not measured).
+    signature = (v0, cor, *, cor_sd=None, max_force=None, contact_time=None, preset="superball", free=None, law=None, params=None,);
+    fn fit_cor_table<'py>(
+        py,
+        v0: &Bound<'py, PyAny>,
+        cor: &Bound<'py, PyAny>,
+        cor_sd: Option<&Bound<'py, PyAny>>,
+        max_force: Option<&Bound<'py, PyAny>>,
+        contact_time: Option<&Bound<'py, PyAny>>,
+        preset: &str,
+        free: Option<&Bound<'py, PyAny>>,
+        law: Option<&str>,
+        params: Option<&str>,
+    ) -> PyResult<Bound<'py, PyDict>>;
+    ball choice = (preset, params, law);
+    {
+        let (v, e) = (floats(v0, "v0")?, floats(cor, "cor")?);
+        same_length(["v0", "cor"], v.len(), e.len())?;
+        let optional = |name: &str, a: Option<&Bound<'py, PyAny>>| -> PyResult<Vec<f64>> {
+            match a {
+                Some(a) => {
+                    let x = floats(a, name)?;
+                    same_length(["v0", name], v.len(), x.len())?;
+                    Ok(x)
+                }
+                None => Ok(vec![f64::NAN; v.len()]),
+            }
+        };
+        let sd = optional("cor_sd", cor_sd)?;
+        let fm = optional("max_force", max_force)?;
+        let tf = optional("contact_time", contact_time)?;
+        // NaN is "not measured": an empty cell
+        let given = |x: f64| (!x.is_nan()).then_some(x);
+        let text = csv(
+            &["v0", "cor", "cor_sd", "max_force_N", "contact_time_s"],
+            v.len(),
+            &[
+                &|i| Some(v[i]),
+                &|i| Some(e[i]),
+                &|i| given(sd[i]),
+                &|i| given(fm[i]),
+                &|i| given(tf[i]),
+            ],
+        );
+        let table = CorTable::parse(&text).map_err(|e| data_error("COR table", e))?;
+        let free = free_list(free)?;
+        let ball = choice.ball(None)?;
+        let fit = crate::interrupt::detach_watched(py, |w| {
+            ball.fit_watched(FitData::Cor(&table.points), free.as_deref(), w)
+        })?;
+        let speeds: Vec<f64> = table.points.iter().map(|p| p.v0).collect();
+        let fit = with_fitted_warnings(py, &ball, fit, &speeds);
+        report(py, &ball, "COR table", &fit, (v[0], None))
+    }
+}
+
+ball_pyfunction! {
+    /// Several parameters fitted to drop tests, as `bouncelab fit --drop-height H --rebound-height
+    /// R …`: drop and rebound heights (m) of the bottom of the ball, turned into impact speeds and
+    /// CORs in vacuum, or with quadratic drag when `drag_coefficient` is given (air density
+    /// `air_density`, kg/m³). Each drop weighs by its rebound height's reading (σ_e = σ_R ∂e/∂R,
+    /// docs/fitting.md): with `rebound_height_sd` = σ_R (m) each COR carries σ_e (`drops["cor_sd"]`)
+    /// and the lack of fit is χ²; without it the scale comes from the misses. The dict adds
+    /// `drops`: the heights with the speed and COR of each.
+    signature = (drop_heights, rebound_heights, *, preset="superball", free=None, drag_coefficient=None, air_density=1.204, law=None, params=None, rebound_height_sd=None,);
+    fn fit_drops<'py>(
+        py,
+        drop_heights: &Bound<'py, PyAny>,
+        rebound_heights: &Bound<'py, PyAny>,
+        preset: &str,
+        free: Option<&Bound<'py, PyAny>>,
+        drag_coefficient: Option<f64>,
+        air_density: f64,
+        law: Option<&str>,
+        params: Option<&str>,
+        rebound_height_sd: Option<f64>,
+    ) -> PyResult<Bound<'py, PyDict>>;
+    ball choice = (preset, params, law);
+    {
+        let (h, r) = (
+            floats(drop_heights, "drop_heights")?,
+            floats(rebound_heights, "rebound_heights")?,
+        );
+        same_length(["drop_heights", "rebound_heights"], h.len(), r.len())?;
+        let free = free_list(free)?;
+        let ball = choice.ball(None)?;
+        let air = drag_coefficient.map(|cd| Air {
+            density: air_density,
+            drag_coefficient: cd,
+        });
+        let pairs: Vec<(f64, f64)> = h.iter().copied().zip(r.iter().copied()).collect();
+        let points: Vec<CorPoint> = ball
+            .drops_to_cor_read(&pairs, air, rebound_height_sd)
+            .map_err(error)?;
+        let fit = crate::interrupt::detach_watched(py, |w| {
+            ball.fit_watched(FitData::Cor(&points), free.as_deref(), w)
+        })?;
+        let speeds: Vec<f64> = points.iter().map(|p| p.v0).collect();
+        let fit = with_fitted_warnings(py, &ball, fit, &speeds);
+        let d = report(
+            py,
+            &ball,
+            "drop test",
+            &fit,
+            (points[0].v0, Some(points[0].cor)),
+        )?;
+        let drops = PyDict::new(py);
+        drops.set_item("drop_height", array(py, h))?;
+        drops.set_item("rebound_height", array(py, r))?;
+        drops.set_item("v0", array(py, points.iter().map(|p| p.v0).collect()))?;
+        drops.set_item("cor", array(py, points.iter().map(|p| p.cor).collect()))?;
+        if rebound_height_sd.is_some() {
+            let sd = points
+                .iter()
+                .map(|p| p.cor_sd.unwrap_or(f64::NAN))
+                .collect();
+            drops.set_item("cor_sd", array(py, sd))?;
+        }
+        d.set_item("drops", drops)?;
+        // the air the drops were taken in, as the command line's `air` (None: vacuum)
+        let air_dict = air
+            .map(|a| -> PyResult<Bound<'_, PyDict>> {
+                let a_d = PyDict::new(py);
+                a_d.set_item("drag_coefficient", a.drag_coefficient)?;
+                a_d.set_item("air_density", a.density)?;
+                Ok(a_d)
+            })
+            .transpose()?;
+        d.set_item("air", air_dict)?;
+        Ok(d)
+    }
 }
 
 /// `fit` with the warnings of its fitted ball at the fastest of the data's `speeds` (m/s; a

@@ -93,6 +93,10 @@ pub(crate) struct Impact {
     ball: Option<Arc<Ball>>,
     /// The surface it ran on (the JSON's `surface`; the rigid plate unless `surface=`).
     surface: crate::surface::SurfaceUsed,
+    /// The ball it ran and its conditions (the JSON's `ball` and `conditions`).
+    named: (crate::answer::Record, crate::answer::Stated),
+    /// Why the answer is not compared with `measured` (the JSON's `comparison_withheld`).
+    withheld: Option<String>,
 }
 
 /// What `bouncelab run` reports from the exact solver's run with its energy audit: the
@@ -190,6 +194,11 @@ impl Impact {
             audit: audit.map_or_else(OnceLock::new, OnceLock::from),
             ball: None,
             surface: crate::surface::SurfaceUsed::rigid_plate(),
+            named: (
+                crate::answer::Record(rep.record.clone()),
+                crate::answer::Stated::of(ball),
+            ),
+            withheld: rep.comparison_withheld.clone(),
         }
     }
 
@@ -283,6 +292,27 @@ impl Impact {
         self.surface.to_dict(py)
     }
 
+    /// The ball it ran, as the JSON's `ball` object (docs/cli.md, "The ball object"): name,
+    /// origin, law, mass, radius, k_p, c, k_r, z_p, k_h, inertia_factor, overrides.
+    #[getter]
+    fn ball<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        self.named.0.into_pyobject(py)
+    }
+
+    /// Why the answer is not compared with the preset's measurement (an override changed
+    /// the ball, or it ran elsewhere than the measurement), else None.
+    #[getter]
+    fn comparison_withheld(&self) -> Option<String> {
+        self.withheld.clone()
+    }
+
+    /// The conditions it ran at: temperature_c, pressure_gauge_pa (None for a solid ball),
+    /// atmosphere_pa.
+    #[getter]
+    fn conditions<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        self.named.1.into_pyobject(py)
+    }
+
     /// The energy budget (J): initial_kinetic, final_kinetic, dashpot, contact, spring and
     /// relative_residual.
     #[getter]
@@ -313,6 +343,8 @@ impl Impact {
         d.set_item("origin", &self.origin)?;
         d.set_item("parameters", &self.parameters)?;
         d.set_item("law", &self.law)?;
+        d.set_item("ball", self.ball(py)?)?;
+        d.set_item("comparison_withheld", &self.withheld)?;
         d.set_item("method", &self.method)?;
         let numbers = [
             ("mass", self.mass),
@@ -353,16 +385,14 @@ impl Impact {
             }
         }
         d.set_item("surface", self.surface.to_dict(py)?)?;
+        d.set_item("conditions", self.conditions(py)?)?;
         Ok(d)
     }
 
     /// Pickling (and `copy.copy`, `copy.deepcopy`): rebuilt from [`Impact::to_dict`] by
     /// `Impact._from_state` (python/tests/test_pickle.py).
-    fn __reduce__<'py>(
-        slf: &Bound<'py, Self>,
-    ) -> PyResult<(Bound<'py, PyAny>, (Bound<'py, PyDict>,))> {
-        let rebuild = slf.get_type().getattr("_from_state")?;
-        Ok((rebuild, (slf.get().to_dict(slf.py())?,)))
+    fn __reduce__<'py>(slf: &Bound<'py, Self>) -> PyResult<crate::same::Reduced<'py>> {
+        crate::same::reduce(slf, slf.get().to_dict(slf.py())?)
     }
 
     /// The impact of a state [`Impact::__reduce__`] wrote.

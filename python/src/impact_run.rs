@@ -24,9 +24,10 @@ pub(crate) fn impact(
     impact_on(py, ball, SurfaceUsed::rigid_plate(), history, samples)
 }
 
-/// [`impact`] on `surface` (at rest): on the rigid plate, [`impact`]'s answer; on a surface
-/// that gives or moves, the ball against it (`Ball::impact_on`, as `bouncelab run
-/// --surface`): no energy audit, and the preset's measurement (the rigid plate's) not carried.
+/// [`impact`] on `surface` (at rest), through `Ball::impact_on` as `bouncelab run --surface`
+/// runs it: on the rigid plate the closed forms where they answer, else the solver with its
+/// audit; on a surface that gives or moves, the ball against it, with no energy audit and the
+/// preset's measurement (the rigid plate's) not carried.
 pub(crate) fn impact_on(
     py: Python<'_>,
     ball: Arc<Ball>,
@@ -34,26 +35,11 @@ pub(crate) fn impact_on(
     history: bool,
     samples: usize,
 ) -> PyResult<Py<Impact>> {
-    if !surface.is_rigid() {
-        let ball = Ball {
-            measured: None,
-            ..Arc::unwrap_or_clone(ball)
-        };
-        let target = surface.target();
-        let n = if history { samples } else { 0 };
-        let (r, intervals) = py
-            .detach(|| {
-                let r = ball.impact_on(&target, n)?;
-                Ok::<_, bouncelab::BallError>((r, ball.intervals().transpose()?))
-            })
-            .map_err(error)?;
-        let rep = ImpactReport::new(&ball, &r, history);
-        let audit = Some(Audit::of(&rep));
-        let mut impact = Impact::new(py, &ball, &rep, intervals, audit);
-        impact.surface = surface;
-        return Py::new(py, impact);
-    }
-    if !history && let Some(s) = ball.closed_form_summary() {
+    let rigid = surface.is_rigid();
+    if rigid
+        && !history
+        && let Some(s) = ball.closed_form_summary()
+    {
         let intervals = fitted_intervals(py, &ball)?;
         let rep = ImpactReport::of_summary(&ball, &s);
         let mut impact = Impact::new(py, &ball, &rep, intervals, None);
@@ -62,13 +48,29 @@ pub(crate) fn impact_on(
         // into its Python object here: the answer moved once, not through each caller
         return Py::new(py, impact);
     }
+    // the library reads 0 samples as "no history": asked for, 0 is refused (as `run`'s)
+    if history && samples == 0 {
+        return Err(error(bouncelab::BallError::Samples(0)));
+    }
+    // the preset's measurement is the rigid plate's: not this impact's on a surface that
+    // gives or moves (as `bouncelab run --surface` withholds it)
+    let elsewhere = (!rigid && ball.measured.is_some()).then(|| {
+        format!(
+            "the measurement is on the rigid plate, this impact on surface {}",
+            surface.name
+        )
+    });
+    let ball = match elsewhere {
+        Some(_) => Arc::new(Ball {
+            measured: None,
+            ..Arc::unwrap_or_clone(ball)
+        }),
+        None => ball,
+    };
+    let (target, n) = (surface.target(), if history { samples } else { 0 });
     let (r, intervals) = py
         .detach(|| {
-            let r = if history {
-                ball.impact_history(samples)
-            } else {
-                ball.impact()
-            }?;
+            let r = ball.impact_on(&target, n)?;
             Ok::<_, bouncelab::BallError>((r, ball.intervals().transpose()?))
         })
         .map_err(error)?;
@@ -76,6 +78,9 @@ pub(crate) fn impact_on(
     let audit = Some(Audit::of(&rep));
     let mut impact = Impact::new(py, &ball, &rep, intervals, audit);
     impact.surface = surface;
+    if elsewhere.is_some() {
+        impact.withheld = elsewhere;
+    }
     Py::new(py, impact)
 }
 

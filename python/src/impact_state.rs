@@ -94,6 +94,8 @@ pub(super) fn from_state(d: &Bound<'_, PyDict>) -> PyResult<Impact> {
             Some(s) => crate::surface::SurfaceUsed::from_dict(&s)?,
             None => crate::surface::SurfaceUsed::rigid_plate(),
         },
+        named: (get(d, "ball")?, get(d, "conditions")?),
+        withheld: get(d, "comparison_withheld")?,
     })
 }
 
@@ -163,6 +165,8 @@ pub(super) fn same(a: &Impact, a_audit: &Audit, b: &Impact, b_audit: &Audit) -> 
             i.rebound,
             i.measured.is_some(),
             i.surface.clone(),
+            i.named.clone(),
+            i.withheld.clone(),
         )
     };
     let bands = |i: &Impact| {

@@ -10,11 +10,14 @@ use pyo3::create_exception;
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 
+mod answer;
 mod arguments;
 mod arrays;
+mod ball_args;
 mod batch;
 mod catalog_cache;
 mod collide;
+mod court;
 mod drops;
 mod fits;
 mod impact;
@@ -28,15 +31,14 @@ mod runs;
 mod same;
 mod shot;
 mod standards;
+mod statics;
 mod surface;
 mod sweeps;
 
 // the helpers every call uses, by the names the modules import them by
 pub(crate) use arguments::{array, floats, free_names, frozen_array, history_samples, law, source};
 use impact::Impact;
-pub(crate) use preset_balls::{
-    entry, load_catalog, overridden_ball, overrides, preset_ball, shared_preset_ball,
-};
+pub(crate) use preset_balls::{entry, load_catalog};
 
 create_exception!(
     bouncelab,
@@ -89,5 +91,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(batch::batch, m)?)?;
     m.add_function(wrap_pyfunction!(mc::monte_carlo_chunk, m)?)?;
     m.add_function(wrap_pyfunction!(mc::monte_carlo_merge, m)?)?;
+    m.add_function(wrap_pyfunction!(court::court, m)?)?;
+    m.add_function(wrap_pyfunction!(statics::static_deflection, m)?)?;
     Ok(())
 }

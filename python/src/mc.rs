@@ -5,12 +5,13 @@
 //! seed and its index alone (docs/scale.md), so the chunks give the single call's samples and
 //! the merge its numbers, bit for bit.
 
-use crate::{array, error, overridden_ball, overrides};
+use crate::ball_args::{BallChoice, ball_pyfunction};
+use crate::{array, error};
 use bouncelab::analysis::mc::{
     Dist, McError, McSpec, McSummary, Samples, Spread, Stats, Varied, parse_correlate, parse_vary,
     summary,
 };
-use bouncelab::api::{MonteCarlo, Overrides};
+use bouncelab::api::MonteCarlo;
 use numpy::{PyArray1, PyReadonlyArray1};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
@@ -54,20 +55,15 @@ struct Request {
     spec: McSpec,
 }
 
-#[allow(clippy::too_many_arguments)]
 fn request(
-    preset: &str,
+    choice: &BallChoice<'_>,
     vary: &Bound<'_, PyAny>,
-    samples: usize,
-    seed: u64,
+    (samples, seed): (usize, u64),
     dist: &str,
     v0: Option<f64>,
-    law: Option<&str>,
-    params: Option<&str>,
     correlate: Option<&Bound<'_, PyAny>>,
-    set: &Overrides,
 ) -> PyResult<Request> {
-    let ball = overridden_ball(preset, params, law, v0, set)?;
+    let ball = choice.ball(v0)?;
     let dist = Dist::parse(dist).ok_or_else(|| {
         PyValueError::new_err(format!(
             "invalid dist: '{dist}' (choose from normal, uniform, lognormal)"
@@ -184,12 +180,14 @@ fn report<'py>(py: Python<'py>, r: &Request, s: &McSummary) -> PyResult<Bound<'p
     d.set_item("no_rebound", s.no_rebound)?;
     d.set_item("stats", stats)?;
     d.set_item("warnings", r.ball.mc_warnings(&s.stats))?;
+    crate::answer::stated(&d, &r.ball)?;
     Ok(d)
 }
 
 /// A Monte Carlo function of Python's: the arguments all three share (`preset`, `vary`,
 /// `samples`, `seed`, `dist`, `v0`, `law`, `params`, then the function's own, then
-/// `correlate` and the command line's ball overrides `mass` … `z_p`), keyword-only, read once into the [`Request`] `$r` its body starts from.
+/// `correlate` and the ball's arguments, python/src/ball_args.rs), keyword-only, read once
+/// into the [`Request`] `$r` its body starts from.
 /// `samples` has a default where one is given (`monte_carlo`'s 10 000); the Dask halves take
 /// it as the run's, always given. Written once here so that the single call and the Dask path
 /// cannot drift apart in a name or a default (`test_dask*.py` hold their answers equal).
@@ -201,42 +199,27 @@ macro_rules! mc_pyfunction {
         fn $name:ident<$lt:lifetime>($py:ident, $r:ident; samples $(= $samples:tt)?;
             $($arg:ident: $ty:ty $(= $default:tt)?),* $(,)?) -> $ret:ty $body:block
     ) => {
-        $(#[$attr])*
-        #[pyfunction]
-        #[pyo3(signature = (*, preset="superball", vary, samples $(= $samples)?, seed=0, dist="normal", v0=None, law=None, params=None, $($arg $(= $default)?,)* correlate=None, mass=None, radius=None, k_p=None, damping=None, k_r=None, z_p=None))]
-        #[allow(clippy::too_many_arguments)]
-        pub(crate) fn $name<$lt>(
-            $py: Python<$lt>,
-            preset: &str,
-            vary: &Bound<$lt, PyAny>,
-            samples: usize,
-            seed: u64,
-            dist: &str,
-            v0: Option<f64>,
-            law: Option<&str>,
-            params: Option<&str>,
-            $($arg: $ty,)*
-            correlate: Option<Bound<$lt, PyAny>>,
-            mass: Option<f64>,
-            radius: Option<f64>,
-            k_p: Option<f64>,
-            damping: Option<f64>,
-            k_r: Option<f64>,
-            z_p: Option<f64>,
-        ) -> $ret {
-            let $r = request(
-                preset,
-                vary,
-                samples,
-                seed,
-                dist,
-                v0,
-                law,
-                params,
-                correlate.as_ref(),
-                &overrides(mass, radius, k_p, damping, k_r, z_p),
-            )?;
-            $body
+        ball_pyfunction! {
+            $(#[$attr])*
+            signature = (*, preset="superball", vary, samples $(= $samples)?, seed=0, dist="normal", v0=None, law=None, params=None, $($arg $(= $default)?,)* correlate=None,);
+            fn $name<$lt>(
+                $py,
+                preset: &str,
+                vary: &Bound<$lt, PyAny>,
+                samples: usize,
+                seed: u64,
+                dist: &str,
+                v0: Option<f64>,
+                law: Option<&str>,
+                params: Option<&str>,
+                $($arg: $ty,)*
+                correlate: Option<Bound<$lt, PyAny>>,
+            ) -> $ret;
+            ball choice = (preset, params, law);
+            {
+                let $r = request(&choice, vary, (samples, seed), dist, v0, correlate.as_ref())?;
+                $body
+            }
         }
     };
 }

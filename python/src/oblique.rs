@@ -1,8 +1,10 @@
 //! `oblique`: one oblique impact with friction and spin (docs/oblique.md), as `bouncelab
 //! oblique --format json`: the same fields, by the same names.
 
+use crate::answer::{Record, Stated};
+use crate::ball_args::ball_pyfunction;
 use crate::surface::SurfaceUsed;
-use crate::{error, frozen_array, history_samples, overridden_ball, overrides, value_error};
+use crate::{error, frozen_array, history_samples, value_error};
 use bouncelab::api::ObliqueSpec;
 use bouncelab::oblique::ObliqueResponse;
 use bouncelab::{Ball, BallError};
@@ -56,6 +58,10 @@ pub(crate) struct ObliqueImpact {
     tangential_damping: Option<f64>,
     /// The surface it ran on (the JSON's `surface`, docs/surfaces.md).
     surface: SurfaceUsed,
+    /// The ball it ran (the JSON's `ball` object, docs/cli.md "The ball object").
+    ball: Record,
+    /// The conditions it ran at (the JSON's `conditions`).
+    conditions: Stated,
 }
 
 /// The energy terms' keys, in the JSON's order.
@@ -153,11 +159,8 @@ impl ObliqueImpact {
     }
 
     /// Pickling: the class's `_from_state` and `to_dict()` (every protocol).
-    fn __reduce__<'py>(
-        slf: &Bound<'py, Self>,
-    ) -> PyResult<(Bound<'py, PyAny>, (Bound<'py, PyDict>,))> {
-        let rebuild = slf.get_type().getattr("_from_state")?;
-        Ok((rebuild, (state::to_dict(slf.get(), slf.py())?,)))
+    fn __reduce__<'py>(slf: &Bound<'py, Self>) -> PyResult<crate::same::Reduced<'py>> {
+        crate::same::reduce(slf, state::to_dict(slf.get(), slf.py())?)
     }
 
     /// The impact of a state [`ObliqueImpact::__reduce__`] wrote.
@@ -253,42 +256,69 @@ fn build(
         warnings,
         tangential_damping: surface.tangential_damping,
         surface,
+        ball: Record::of(ball),
+        conditions: Stated::of(ball),
     })
 }
 
-/// One oblique impact of a preset, as `bouncelab oblique --preset NAME [--v0 V] --angle DEG
-/// [--spin W] --friction MU [--tangential-stiffness K_T] [--inertia-factor KAPPA] [--law L]
-/// [--history --samples N] [--surface NAME --surface-stiffness K_S … --tangential-damping C_T]`
-/// (`surface=`: a name or a dict of its numbers, python/src/surface.rs; `friction` the
-/// surface's when not given, required when it has none).
-#[pyfunction]
-#[pyo3(signature = (preset="superball", *, angle, friction=None, v0=None, spin=0.0, tangential_stiffness=None, inertia_factor=None, law=None, params=None, history=false, samples=None, mass=None, radius=None, k_p=None, damping=None, k_r=None, z_p=None, surface=None, tangential_damping=None))]
-#[allow(clippy::too_many_arguments)]
-pub(crate) fn oblique(
-    py: Python<'_>,
-    preset: &str,
-    angle: f64,
-    friction: Option<f64>,
-    v0: Option<f64>,
-    spin: f64,
-    tangential_stiffness: Option<f64>,
-    inertia_factor: Option<f64>,
-    law: Option<&str>,
-    params: Option<&str>,
-    history: bool,
-    samples: Option<usize>,
-    mass: Option<f64>,
-    radius: Option<f64>,
-    k_p: Option<f64>,
-    damping: Option<f64>,
-    k_r: Option<f64>,
-    z_p: Option<f64>,
+ball_pyfunction! {
+    /// One oblique impact of a preset, as `bouncelab oblique --preset NAME [--v0 V] --angle DEG
+    /// [--spin W] --friction MU [--tangential-stiffness K_T] [--inertia-factor KAPPA] [--law L]
+    /// [--history --samples N] [--surface NAME --surface-stiffness K_S … --tangential-damping C_T]`
+    /// (`surface=`: a name or a dict of its numbers, python/src/surface.rs; `friction` the
+    /// surface's when not given, required when it has none).
+    signature = (preset="superball", *, angle, friction=None, v0=None, spin=0.0, tangential_stiffness=None, inertia_factor=None, law=None, params=None, history=false, samples=None, surface=None, tangential_damping=None,);
+    fn oblique<'py>(
+        py,
+        preset: &str,
+        angle: f64,
+        friction: Option<f64>,
+        v0: Option<f64>,
+        spin: f64,
+        tangential_stiffness: Option<f64>,
+        inertia_factor: Option<f64>,
+        law: Option<&str>,
+        params: Option<&str>,
+        history: bool,
+        samples: Option<usize>,
+        surface: Option<&Bound<'py, PyAny>>,
+        tangential_damping: Option<f64>,
+    ) -> PyResult<ObliqueImpact>;
+    ball choice = (preset, params, law);
+    {
+        let tangential = [friction, tangential_stiffness, tangential_damping];
+        let (surface, friction) = tangential_surface(surface, tangential)?;
+        // `run`'s rule: samples only with a history, and at least two of them (the library's
+        // `oblique` reads 0 as "no history", which history=True, samples=0 must not ask for)
+        let samples = history_samples(history, samples)?;
+        if history && samples < 2 {
+            return Err(error(BallError::Samples(samples)));
+        }
+        let ball = choice.resolve(v0)?;
+        let spec = ObliqueSpec {
+            v: v0,
+            angle_deg: angle,
+            spin,
+            friction,
+            tangential_stiffness: surface.tangential_stiffness,
+            inertia_factor,
+        };
+        let n = if history { samples } else { 0 };
+        let r = ball
+            .oblique_on(&spec, surface.tangential_damping, n, &surface.target())
+            .map_err(error)?;
+        build(py, &ball, &spec, r, surface)
+    }
+}
+
+/// The surface of `oblique` and `court`: `surface=` with the tangential arguments (μ, K_t, c_t)
+/// over the surface's own, as the command line's `surface_of`; μ must come from one of them.
+pub(crate) fn tangential_surface(
     surface: Option<&Bound<'_, PyAny>>,
-    tangential_damping: Option<f64>,
-) -> PyResult<ObliqueImpact> {
+    args: [Option<f64>; 3],
+) -> PyResult<(SurfaceUsed, f64)> {
     let (surface, given) = crate::surface::resolve(surface)?;
     // an argument over the dict's number is refused: one quantity given twice
-    let args = [friction, tangential_stiffness, tangential_damping];
     let names = ["friction", "tangential_stiffness", "tangential_damping"];
     let mut tangential = [None; 3];
     for (i, (a, g)) in args.into_iter().zip(given).enumerate() {
@@ -307,30 +337,5 @@ pub(crate) fn oblique(
             surface.name
         )));
     };
-    // `run`'s rule: samples only with a history, and at least two of them (the library's
-    // `oblique` reads 0 as "no history", which history=True, samples=0 must not ask for)
-    let samples = history_samples(history, samples)?;
-    if history && samples < 2 {
-        return Err(error(BallError::Samples(samples)));
-    }
-    let ball = overridden_ball(
-        preset,
-        params,
-        law,
-        v0,
-        &overrides(mass, radius, k_p, damping, k_r, z_p),
-    )?;
-    let spec = ObliqueSpec {
-        v: v0,
-        angle_deg: angle,
-        spin,
-        friction,
-        tangential_stiffness: surface.tangential_stiffness,
-        inertia_factor,
-    };
-    let n = if history { samples } else { 0 };
-    let r = ball
-        .oblique_on(&spec, surface.tangential_damping, n, &surface.target())
-        .map_err(error)?;
-    build(py, &ball, &spec, r, surface)
+    Ok((surface, friction))
 }

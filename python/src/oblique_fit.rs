@@ -4,7 +4,8 @@
 //! the same report, turned into a dict through the command line's JSON (serde_json), so the
 //! keys, their order and the values are the command line's.
 
-use crate::{batch::read_text, floats, preset_ball, value_error};
+use crate::ball_args::ball_pyfunction;
+use crate::{batch::read_text, floats, value_error};
 use bouncelab::api::ObliqueFitReport;
 use bouncelab::measured::{MeasuredError, parse_oblique};
 use pyo3::prelude::*;
@@ -96,30 +97,33 @@ fn rows(
     Ok((rows, None))
 }
 
-/// μ and K_t (and κ with `spin_out`) fitted to oblique bounces, as `bouncelab fit --oblique
-/// FILE`: a CSV file `v0,angle_deg,spin_in,vx_out,vy_out[,spin_out]` or the same columns as
-/// arrays. Returns the command line's JSON document as a dict (`file` None for arrays).
-#[pyfunction]
-#[pyo3(signature = (file=None, *, v0=None, angle_deg=None, spin_in=None, vx_out=None, vy_out=None, spin_out=None, preset="superball", law=None, params=None))]
-#[allow(clippy::too_many_arguments)]
-pub fn fit_oblique<'py>(
-    py: Python<'py>,
-    file: Option<PathBuf>,
-    v0: Option<&Bound<'py, PyAny>>,
-    angle_deg: Option<&Bound<'py, PyAny>>,
-    spin_in: Option<&Bound<'py, PyAny>>,
-    vx_out: Option<&Bound<'py, PyAny>>,
-    vy_out: Option<&Bound<'py, PyAny>>,
-    spin_out: Option<&Bound<'py, PyAny>>,
-    preset: &str,
-    law: Option<&str>,
-    params: Option<&str>,
-) -> PyResult<Bound<'py, PyAny>> {
-    let (rows, shown) = rows(file, [v0, angle_deg, spin_in, vx_out, vy_out, spin_out])?;
-    let ball = preset_ball(preset, params, law, None)?;
-    let text = crate::interrupt::detach_watched(py, |w| {
-        let report: ObliqueFitReport = ball.fit_oblique_watched(&rows, shown, w)?;
-        Ok(serde_json::to_string(&report).expect("a report serializes"))
-    })?;
-    py.import("json")?.call_method1("loads", (text,))
+ball_pyfunction! {
+    /// μ and K_t (and κ with `spin_out`) fitted to oblique bounces, as `bouncelab fit --oblique
+    /// FILE`: a CSV file `v0,angle_deg,spin_in,vx_out,vy_out[,spin_out]` or the same columns as
+    /// arrays. Returns the command line's JSON document as a dict (`file` None for arrays).
+    signature = (file=None, *, v0=None, angle_deg=None, spin_in=None, vx_out=None, vy_out=None, spin_out=None, preset="superball", law=None, params=None,);
+    fn fit_oblique<'py>(
+        py,
+        file: Option<PathBuf>,
+        v0: Option<&Bound<'py, PyAny>>,
+        angle_deg: Option<&Bound<'py, PyAny>>,
+        spin_in: Option<&Bound<'py, PyAny>>,
+        vx_out: Option<&Bound<'py, PyAny>>,
+        vy_out: Option<&Bound<'py, PyAny>>,
+        spin_out: Option<&Bound<'py, PyAny>>,
+        preset: &str,
+        law: Option<&str>,
+        params: Option<&str>,
+    ) -> PyResult<Bound<'py, PyAny>>;
+    ball choice = (preset, params, law);
+    {
+        let (rows, shown) = rows(file, [v0, angle_deg, spin_in, vx_out, vy_out, spin_out])?;
+        let ball = choice.ball(None)?;
+        let report: ObliqueFitReport =
+            crate::interrupt::detach_watched(py, |w| ball.fit_oblique_watched(&rows, shown, w))?;
+        let d = crate::answer::json(py, &report)?;
+        // the ball the fit started from, as the command line's `ball`
+        d.set_item("ball", &crate::answer::Record::of(&ball))?;
+        Ok(d)
+    }
 }

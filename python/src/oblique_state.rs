@@ -51,7 +51,9 @@ pub(super) fn to_dict<'py>(o: &ObliqueImpact, py: Python<'py>) -> PyResult<Bound
         }
     }
     d.set_item("warnings", &o.warnings)?;
+    d.set_item("ball", &o.ball)?;
     d.set_item("surface", o.surface.to_dict(py)?)?;
+    d.set_item("conditions", &o.conditions)?;
     Ok(d)
 }
 
@@ -100,6 +102,8 @@ pub(super) fn from_state(d: &Bound<'_, PyDict>) -> PyResult<ObliqueImpact> {
                     Some(s) => SurfaceUsed::from_dict(&s)?,
                     None => SurfaceUsed::rigid_plate(),
                 },
+                ball: get(d, "ball")?,
+                conditions: get(d, "conditions")?,
             }
         };
     }
@@ -116,7 +120,9 @@ pub(super) fn same(py: Python<'_>, a: &ObliqueImpact, b: &ObliqueImpact) -> PyRe
         && a.energy.1.same(&b.energy.1)
         && a.warnings == b.warnings
         && a.tangential_damping.same(&b.tangential_damping)
-        && a.surface == b.surface)
+        && a.surface == b.surface
+        && a.ball == b.ball
+        && a.conditions == b.conditions)
     {
         return Ok(false);
     }

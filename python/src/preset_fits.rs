@@ -1,48 +1,53 @@
 //! `fit`: the recoil spring that gives a measured COR, as `bouncelab fit --cor` (`drop` is
 //! drops.rs).
 
-use crate::{error, preset_ball};
+use crate::ball_args::ball_pyfunction;
+use crate::error;
 use bouncelab::analysis::fit::Fit;
 use bouncelab::api::FitReport;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
-/// The recoil spring K_r (and λ) that makes the model's COR equal a measured one, at the
-/// preset's ζ, z_p and v0 (or the `v0` given), as `bouncelab fit --cor E`: a dict with the
-/// keys of `bouncelab fit --format json`.
-#[pyfunction]
-#[pyo3(signature = (cor, preset="superball", v0=None, law=None, params=None))]
-pub(crate) fn fit<'py>(
-    py: Python<'py>,
-    cor: f64,
-    preset: &str,
-    v0: Option<f64>,
-    law: Option<&str>,
-    params: Option<&str>,
-) -> PyResult<Bound<'py, PyDict>> {
-    let ball = preset_ball(preset, params, law, v0)?;
-    let f: Fit = py.detach(|| ball.fit_cor(cor)).map_err(error)?;
-    let r = FitReport::new(&ball, cor, &f);
-    // the fitted ball's warnings at the data's speed, as `bouncelab fit --format json`
-    let fitted = bouncelab::ImpactParams {
-        k_r: f.k_r,
-        ..ball.params
-    };
-    let warnings = py.detach(|| ball.fitted_warnings(&fitted, &[ball.params.v0]));
-    let d = PyDict::new(py);
-    d.set_item("preset", r.ball.preset)?;
-    d.set_item("origin", r.ball.origin)?;
-    d.set_item("parameters", r.ball.parameters)?;
-    d.set_item("law", r.ball.law)?;
-    d.set_item("v0", r.v0)?;
-    d.set_item("target_cor", r.target_cor)?;
-    d.set_item("k_r", r.k_r)?;
-    d.set_item("lambda", r.lambda)?;
-    d.set_item("zeta", r.zeta)?;
-    d.set_item("cor", r.cor)?;
-    d.set_item("k_p", r.k_p)?;
-    d.set_item("preset_k_r", r.preset_k_r)?;
-    d.set_item("preset_lambda", r.preset_lambda)?;
-    d.set_item("warnings", warnings)?;
-    Ok(d)
+ball_pyfunction! {
+    /// The recoil spring K_r (and λ) that makes the model's COR equal a measured one, at the
+    /// preset's ζ, z_p and v0 (or the `v0` given), as `bouncelab fit --cor E`: a dict with the
+    /// keys of `bouncelab fit --format json`.
+    signature = (cor, preset="superball", v0=None, law=None, params=None, *,);
+    fn fit<'py>(
+        py,
+        cor: f64,
+        preset: &str,
+        v0: Option<f64>,
+        law: Option<&str>,
+        params: Option<&str>,
+    ) -> PyResult<Bound<'py, PyDict>>;
+    ball choice = (preset, params, law);
+    {
+        let ball = choice.ball(v0)?;
+        let f: Fit = py.detach(|| ball.fit_cor(cor)).map_err(error)?;
+        let r = FitReport::new(&ball, cor, &f);
+        // the fitted ball's warnings at the data's speed, as `bouncelab fit --format json`
+        let fitted = bouncelab::ImpactParams {
+            k_r: f.k_r,
+            ..ball.params
+        };
+        let warnings = py.detach(|| ball.fitted_warnings(&fitted, &[ball.params.v0]));
+        let d = PyDict::new(py);
+        d.set_item("preset", r.ball.preset)?;
+        d.set_item("origin", r.ball.origin)?;
+        d.set_item("parameters", r.ball.parameters)?;
+        d.set_item("law", r.ball.law)?;
+        d.set_item("v0", r.v0)?;
+        d.set_item("target_cor", r.target_cor)?;
+        d.set_item("k_r", r.k_r)?;
+        d.set_item("lambda", r.lambda)?;
+        d.set_item("zeta", r.zeta)?;
+        d.set_item("cor", r.cor)?;
+        d.set_item("k_p", r.k_p)?;
+        d.set_item("preset_k_r", r.preset_k_r)?;
+        d.set_item("preset_lambda", r.preset_lambda)?;
+        d.set_item("warnings", warnings)?;
+        d.set_item("ball", &crate::answer::Record::of(&ball))?;
+        Ok(d)
+    }
 }

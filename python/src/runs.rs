@@ -1,73 +1,49 @@
 //! One impact: `run` (a preset), `run_normalized` and `run_params`, as `bouncelab run`; the
 //! answer an `Impact` (impact.rs, its run impact_run.rs).
 
+use crate::ball_args::ball_pyfunction;
 use crate::impact::{Impact, impact, impact_on};
-use crate::{
-    error, history_samples, law, overridden_ball, overrides, shared_preset_ball, value_error,
-};
+use crate::{error, history_samples, law};
 use bouncelab::Ball;
 use bouncelab::model::params::ImpactParams;
 use pyo3::prelude::*;
 use std::sync::Arc;
 
-/// One impact of a preset, as `bouncelab run --preset NAME [--law L] [--v0 V] [--lambda L]
-/// [--zeta Z] [--params SET] [--history --samples N] [--mass M] [--radius R] [--k-p K_P]
-/// [--damping C] [--k-r K_R] [--z-p Z_P] [--pressure P] [--temperature T] [--inflated-at T0]
-/// [--surface NAME --surface-stiffness K_S …]`
-/// (`pressure` in Pa, or a string with its unit, "0.8bar"; `surface=`: a name or a dict of its
-/// numbers, python/src/surface.rs).
-#[pyfunction]
-#[pyo3(signature = (preset="superball", law=None, v0=None, lambda_=None, zeta=None, history=false, samples=None, params=None, *, mass=None, radius=None, k_p=None, damping=None, k_r=None, z_p=None, pressure=None, temperature=None, inflated_at=None, surface=None))]
-#[allow(clippy::too_many_arguments)]
-pub(crate) fn run(
-    py: Python<'_>,
-    preset: &str,
-    law: Option<&str>,
-    v0: Option<f64>,
-    lambda_: Option<f64>,
-    zeta: Option<f64>,
-    history: bool,
-    samples: Option<usize>,
-    params: Option<&str>,
-    mass: Option<f64>,
-    radius: Option<f64>,
-    k_p: Option<f64>,
-    damping: Option<f64>,
-    k_r: Option<f64>,
-    z_p: Option<f64>,
-    pressure: Option<&Bound<'_, PyAny>>,
-    temperature: Option<f64>,
-    inflated_at: Option<f64>,
-    surface: Option<&Bound<'_, PyAny>>,
-) -> PyResult<Py<Impact>> {
-    let (surface, _) = crate::surface::resolve(surface)?;
-    let samples = history_samples(history, samples)?;
-    let spec = crate::preset_balls::conditions(pressure, temperature, inflated_at)?;
-    let set = overrides(mass, radius, k_p, damping, k_r, z_p);
-    // one parameter set twice is refused, as the command line refuses --k-r with --lambda
-    if k_r.is_some() && lambda_.is_some() {
-        return Err(value_error(
-            "k_r and lambda_ both set K_r: give one of them".into(),
-        ));
+ball_pyfunction! {
+    /// One impact of a preset, as `bouncelab run --preset NAME [--law L] [--v0 V] [--lambda L]
+    /// [--zeta Z] [--params SET] [--history --samples N] [--surface NAME --surface-stiffness
+    /// K_S …]` and the ball's arguments (python/src/ball_args.rs: `--mass` … `--z-p`,
+    /// `--pressure`, `--temperature`, `--inflated-at`, `--after`, `--half-life`; `surface=`: a
+    /// name or a dict of its numbers, python/src/surface.rs).
+    signature = (preset="superball", law=None, v0=None, lambda_=None, zeta=None, history=false, samples=None, params=None, *, surface=None,);
+    fn run<'py>(
+        py,
+        preset: &str,
+        law: Option<&str>,
+        v0: Option<f64>,
+        lambda_: Option<f64>,
+        zeta: Option<f64>,
+        history: bool,
+        samples: Option<usize>,
+        params: Option<&str>,
+        surface: Option<&Bound<'py, PyAny>>,
+    ) -> PyResult<Py<Impact>>;
+    ball choice = (preset, params, law);
+    {
+        let (surface, _) = crate::surface::resolve(surface)?;
+        let samples = history_samples(history, samples)?;
+        // one parameter set twice is refused, as the command line refuses --k-r with --lambda
+        choice.check_lambda_zeta(lambda_, zeta)?;
+        // the conditions before λ and ζ, as the command line resolves its ball
+        let mut ball = choice.resolve(v0)?;
+        // λ or ζ given: a ball of its own (with neither, the ball is as `with_lambda_zeta(None,
+        // None)` leaves it: checked when built)
+        if lambda_.is_some() || zeta.is_some() {
+            let moved = Arc::unwrap_or_clone(ball).with_lambda_zeta(lambda_, zeta);
+            ball = Arc::new(moved.map_err(error)?);
+        }
+        impact_on(py, ball, surface, history, samples)
     }
-    if damping.is_some() && zeta.is_some() {
-        return Err(value_error(
-            "damping and zeta both set c: give one of them".into(),
-        ));
-    }
-    let mut ball = match (v0, set.any()) {
-        (None, false) => shared_preset_ball(preset, params, law)?,
-        _ => Arc::new(overridden_ball(preset, params, law, v0, &set)?),
-    };
-    // the conditions before λ and ζ, as the command line resolves its ball
-    ball = crate::preset_balls::at_conditions(ball, &spec)?;
-    // λ or ζ given: a ball of its own (with neither, the ball is as `with_lambda_zeta(None,
-    // None)` leaves it: checked when built)
-    if lambda_.is_some() || zeta.is_some() {
-        let moved = Arc::unwrap_or_clone(ball).with_lambda_zeta(lambda_, zeta);
-        ball = Arc::new(moved.map_err(error)?);
-    }
-    impact_on(py, ball, surface, history, samples)
 }
 
 /// One impact of the normalized ball (m = K_p = v0 = 1), as `bouncelab run --normalized`.

@@ -1,6 +1,24 @@
 //! Value equality of a result's fields for Python's `==`: a NaN equals a NaN, as `Impact`'s
 //! (impact_state.rs), so that a result and its pickled copy compare equal whatever it holds
-//! (python/tests/test_pickle.py).
+//! (python/tests/test_pickle.py); and the pickle itself ([`reduce`]).
+
+use pyo3::prelude::*;
+use pyo3::types::PyDict;
+
+/// What `__reduce__` returns: the class's `_from_state` and the state it is rebuilt from.
+pub(crate) type Reduced<'py> = (Bound<'py, PyAny>, (Bound<'py, PyDict>,));
+
+/// A result's `__reduce__` (pickling, `copy.copy`, `copy.deepcopy`): its class's
+/// `_from_state` called on `state`, the result's `to_dict()`.
+pub(crate) fn reduce<'py, T: pyo3::PyClass>(
+    slf: &Bound<'py, T>,
+    state: Bound<'py, PyDict>,
+) -> PyResult<Reduced<'py>> {
+    Ok((
+        slf.as_any().get_type().getattr("_from_state")?.into_any(),
+        (state,),
+    ))
+}
 
 pub(crate) trait Same {
     fn same(&self, other: &Self) -> bool;

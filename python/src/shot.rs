@@ -1,8 +1,8 @@
 //! `bouncelab.shot(...)`: a shot (docs/flight.md) as arrays; `bouncelab.shots(...)`: many
 //! shots over numpy arrays of launch conditions, broadcast together, in parallel.
 
+use crate::ball_args::ball_pyfunction;
 use crate::error;
-use crate::preset_balls::{overridden_ball, overrides};
 use bouncelab::api::{ShotReport, ShotSpec};
 use bouncelab::flight::{Ends, Launch};
 use numpy::PyArray1;
@@ -11,41 +11,13 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use rayon::prelude::*;
 
-/// What every shot of a call shares.
-#[derive(Clone, Copy)]
-struct Common {
-    friction: f64,
-    bounces: usize,
-    distance: Option<f64>,
-    time: Option<f64>,
-    air_density: f64,
-    drag_coefficient: Option<f64>,
-    lift_coefficient: Option<f64>,
-    spin_decay: Option<f64>,
-    tangential_stiffness: Option<f64>,
-    inertia_factor: Option<f64>,
-    tangential_damping: Option<f64>,
-}
-
-impl Common {
-    fn spec(&self, launch: Launch, samples: usize) -> ShotSpec {
-        ShotSpec {
-            launch,
-            ends: Ends {
-                bounces: self.bounces,
-                distance: self.distance,
-                time: self.time,
-            },
-            friction: self.friction,
-            tangential_stiffness: self.tangential_stiffness,
-            inertia_factor: self.inertia_factor,
-            tangential_damping: self.tangential_damping,
-            air_density: self.air_density,
-            drag_coefficient: self.drag_coefficient,
-            lift_coefficient: self.lift_coefficient,
-            spin_decay: self.spin_decay,
-            samples,
-        }
+/// What every shot of a call shares: its spec, the launch and the samples each shot's own
+/// (`ShotSpec { launch, samples, ..common }`).
+fn with(common: &ShotSpec, launch: Launch, samples: usize) -> ShotSpec {
+    ShotSpec {
+        launch,
+        samples,
+        ..*common
     }
 }
 
@@ -115,65 +87,84 @@ fn report<'py>(py: Python<'py>, r: &ShotReport) -> PyResult<Bound<'py, PyDict>> 
     Ok(d)
 }
 
-/// One shot, as `bouncelab shot --format json --samples N`: a dict with `bounces` (a dict of
-/// arrays, one element per bounce), `end` (a dict), `trajectory` (a dict of arrays t, x, y,
-/// vx, vy, spin; `samples` of them, 0 for none) and `source` (the aerodynamic models).
-#[pyfunction]
-#[pyo3(signature = (preset="tennis", *, height, speed, friction, elevation=0.0, spin=0.0, bounces=1, distance=None, time=None, air_density=1.204, drag_coefficient=None, lift_coefficient=None, spin_decay=None, tangential_stiffness=None, inertia_factor=None, tangential_damping=None, samples=200, law=None, params=None, mass=None, radius=None, k_p=None, damping=None, k_r=None, z_p=None))]
-#[allow(clippy::too_many_arguments)]
-pub(crate) fn shot<'py>(
-    py: Python<'py>,
-    preset: &str,
-    height: f64,
-    speed: f64,
-    friction: f64,
-    elevation: f64,
-    spin: f64,
-    bounces: usize,
-    distance: Option<f64>,
-    time: Option<f64>,
-    air_density: f64,
-    drag_coefficient: Option<f64>,
-    lift_coefficient: Option<f64>,
-    spin_decay: Option<f64>,
-    tangential_stiffness: Option<f64>,
-    inertia_factor: Option<f64>,
-    tangential_damping: Option<f64>,
-    samples: usize,
-    law: Option<&str>,
-    params: Option<&str>,
-    mass: Option<f64>,
-    radius: Option<f64>,
-    k_p: Option<f64>,
-    damping: Option<f64>,
-    k_r: Option<f64>,
-    z_p: Option<f64>,
-) -> PyResult<Bound<'py, PyDict>> {
-    let set = overrides(mass, radius, k_p, damping, k_r, z_p);
-    let ball = overridden_ball(preset, params, law, None, &set)?;
-    let common = Common {
-        friction,
-        bounces,
-        distance,
-        time,
-        air_density,
-        drag_coefficient,
-        lift_coefficient,
-        spin_decay,
-        tangential_stiffness,
-        inertia_factor,
-        tangential_damping,
+/// A `#[pyfunction]` of a shot: the ball's arguments (ball_args.rs), `friction` and the
+/// flight's keyword-only arguments `shot` and `shots` share (`bounces` … `tangential_damping`,
+/// the command line's `shot` options), then the function's own, then `law` and `params`; the
+/// body starts from the resolved ball `$ball` and the spec every shot shares, `$common`. One list,
+/// so that the two cannot drift apart in a name or a default.
+macro_rules! flight_pyfunction {
+    (
+        $(#[$attr:meta])*
+        fn $name:ident<$lt:lifetime>($py:ident, $ball:ident, $common:ident;
+            $($arg:ident: $ty:ty $(= $default:tt)?),* $(,)?) -> $ret:ty $body:block
+    ) => {
+        ball_pyfunction! {
+            $(#[$attr])*
+            signature = (preset="tennis", *, friction, bounces=1, distance=None, time=None, air_density=1.204, drag_coefficient=None, lift_coefficient=None, spin_decay=None, tangential_stiffness=None, inertia_factor=None, tangential_damping=None, $($arg $(= $default)?,)* law=None, params=None,);
+            fn $name<$lt>(
+                $py,
+                preset: &str,
+                friction: f64,
+                bounces: usize,
+                distance: Option<f64>,
+                time: Option<f64>,
+                air_density: f64,
+                drag_coefficient: Option<f64>,
+                lift_coefficient: Option<f64>,
+                spin_decay: Option<f64>,
+                tangential_stiffness: Option<f64>,
+                inertia_factor: Option<f64>,
+                tangential_damping: Option<f64>,
+                $($arg: $ty,)*
+                law: Option<&str>,
+                params: Option<&str>,
+            ) -> $ret;
+            ball choice = (preset, params, law);
+            {
+                let $ball = choice.resolve(None)?;
+                let $common = ShotSpec {
+                    launch: Launch { height: 0.0, speed: 0.0, elevation_deg: 0.0, spin: 0.0 },
+                    ends: Ends { bounces, distance, time },
+                    friction,
+                    tangential_stiffness,
+                    inertia_factor,
+                    tangential_damping,
+                    air_density,
+                    drag_coefficient,
+                    lift_coefficient,
+                    spin_decay,
+                    samples: 0,
+                };
+                $body
+            }
+        }
     };
-    let launch = Launch {
-        height,
-        speed,
-        elevation_deg: elevation,
-        spin,
-    };
-    let r = py
-        .detach(|| ball.shot(&common.spec(launch, samples)))
-        .map_err(error)?;
-    report(py, &r)
+}
+
+flight_pyfunction! {
+    /// One shot, as `bouncelab shot --format json --samples N`: a dict with `bounces` (a dict of
+    /// arrays, one element per bounce), `end` (a dict), `trajectory` (a dict of arrays t, x, y,
+    /// vx, vy, spin; `samples` of them, 0 for none) and `source` (the aerodynamic models).
+    fn shot<'py>(py, ball, common;
+        height: f64,
+        speed: f64,
+        elevation: f64 = 0.0,
+        spin: f64 = 0.0,
+        samples: usize = 200,
+    ) -> PyResult<Bound<'py, PyDict>> {
+        let launch = Launch {
+            height,
+            speed,
+            elevation_deg: elevation,
+            spin,
+        };
+        let r = py
+            .detach(|| ball.shot(&with(&common, launch, samples)))
+            .map_err(error)?;
+        let d = report(py, &r)?;
+        crate::answer::stated(&d, &ball)?;
+        Ok(d)
+    }
 }
 
 /// The names of `shots`' answer, in order.
@@ -213,93 +204,56 @@ fn row(r: &ShotReport) -> [f64; 12] {
     ]
 }
 
-/// Many shots: `height`, `speed`, `elevation` and `spin` numbers or numpy arrays broadcast
-/// together; a dict of arrays of the broadcast shape: the first bounce's `landing_t`,
-/// `landing_x`, `v_in`, `angle_in`, `v_out`, `angle_out`, `spin_out` (NaN with
-/// bounces=0) and the end's `end_t`, `end_x`, `end_y`, `end_vx`, `end_vy`. Element i is what
-/// `shot` gives for the i-th values; the first element without an answer raises, named.
-#[pyfunction]
-#[pyo3(signature = (preset="tennis", *, height, speed, friction, elevation=None, spin=None, bounces=1, distance=None, time=None, air_density=1.204, drag_coefficient=None, lift_coefficient=None, spin_decay=None, tangential_stiffness=None, inertia_factor=None, tangential_damping=None, law=None, params=None, mass=None, radius=None, k_p=None, damping=None, k_r=None, z_p=None))]
-#[allow(clippy::too_many_arguments)]
-pub(crate) fn shots<'py>(
-    py: Python<'py>,
-    preset: &str,
-    height: Bound<'py, PyAny>,
-    speed: Bound<'py, PyAny>,
-    friction: f64,
-    elevation: Option<Bound<'py, PyAny>>,
-    spin: Option<Bound<'py, PyAny>>,
-    bounces: usize,
-    distance: Option<f64>,
-    time: Option<f64>,
-    air_density: f64,
-    drag_coefficient: Option<f64>,
-    lift_coefficient: Option<f64>,
-    spin_decay: Option<f64>,
-    tangential_stiffness: Option<f64>,
-    inertia_factor: Option<f64>,
-    tangential_damping: Option<f64>,
-    law: Option<&str>,
-    params: Option<&str>,
-    mass: Option<f64>,
-    radius: Option<f64>,
-    k_p: Option<f64>,
-    damping: Option<f64>,
-    k_r: Option<f64>,
-    z_p: Option<f64>,
-) -> PyResult<Bound<'py, PyDict>> {
-    let set = overrides(mass, radius, k_p, damping, k_r, z_p);
-    let ball = overridden_ball(preset, params, law, None, &set)?;
-    let common = Common {
-        friction,
-        bounces,
-        distance,
-        time,
-        air_density,
-        drag_coefficient,
-        lift_coefficient,
-        spin_decay,
-        tangential_stiffness,
-        inertia_factor,
-        tangential_damping,
-    };
-    let zero = || 0.0_f64.into_pyobject(py).map(|z| z.into_any());
-    let elevation = elevation.map_or_else(zero, Ok)?;
-    let spin = spin.map_or_else(zero, Ok)?;
-    let np = py.import("numpy")?;
-    let b = np.call_method1("broadcast_arrays", (height, speed, elevation, spin))?;
-    let shape = b.get_item(0)?.getattr("shape")?;
-    let cols: Vec<Vec<f64>> = (0..4)
-        .map(|k| {
-            let a = np.call_method1("asarray", (b.get_item(k)?, "float64"))?;
-            a.call_method0("ravel")?.call_method0("tolist")?.extract()
-        })
-        .collect::<PyResult<_>>()?;
-    let n = cols[0].len();
-    let rows: Result<Vec<[f64; 12]>, (usize, bouncelab::BallError)> = py.detach(|| {
-        (0..n)
-            .into_par_iter()
-            .map(|i| {
-                let launch = Launch {
-                    height: cols[0][i],
-                    speed: cols[1][i],
-                    elevation_deg: cols[2][i],
-                    spin: cols[3][i],
-                };
-                ball.shot(&common.spec(launch, 0))
-                    .map(|r| row(&r))
-                    .map_err(|e| (i, e))
+flight_pyfunction! {
+    /// Many shots: `height`, `speed`, `elevation` and `spin` numbers or numpy arrays broadcast
+    /// together; a dict of arrays of the broadcast shape: the first bounce's `landing_t`,
+    /// `landing_x`, `v_in`, `angle_in`, `v_out`, `angle_out`, `spin_out` (NaN with
+    /// bounces=0) and the end's `end_t`, `end_x`, `end_y`, `end_vx`, `end_vy`. Element i is what
+    /// `shot` gives for the i-th values; the first element without an answer raises, named.
+    fn shots<'py>(py, ball, common;
+        height: Bound<'py, PyAny>,
+        speed: Bound<'py, PyAny>,
+        elevation: Option<Bound<'py, PyAny>> = None,
+        spin: Option<Bound<'py, PyAny>> = None,
+    ) -> PyResult<Bound<'py, PyDict>> {
+        let zero = || 0.0_f64.into_pyobject(py).map(|z| z.into_any());
+        let elevation = elevation.map_or_else(zero, Ok)?;
+        let spin = spin.map_or_else(zero, Ok)?;
+        let np = py.import("numpy")?;
+        let b = np.call_method1("broadcast_arrays", (height, speed, elevation, spin))?;
+        let shape = b.get_item(0)?.getattr("shape")?;
+        let cols: Vec<Vec<f64>> = (0..4)
+            .map(|k| {
+                let a = np.call_method1("asarray", (b.get_item(k)?, "float64"))?;
+                a.call_method0("ravel")?.call_method0("tolist")?.extract()
             })
-            .collect()
-    });
-    let rows = rows.map_err(|(i, e)| {
-        let err = error(e);
-        PyValueError::new_err(format!("element {i}: {}", err.value(py)))
-    })?;
-    let d = PyDict::new(py);
-    for (k, name) in SHOTS.iter().enumerate() {
-        let a = array(py, rows.iter().map(|r| r[k]).collect());
-        d.set_item(*name, a.call_method1("reshape", (&shape,))?)?;
+            .collect::<PyResult<_>>()?;
+        let n = cols[0].len();
+        let rows: Result<Vec<[f64; 12]>, (usize, bouncelab::BallError)> = py.detach(|| {
+            (0..n)
+                .into_par_iter()
+                .map(|i| {
+                    let launch = Launch {
+                        height: cols[0][i],
+                        speed: cols[1][i],
+                        elevation_deg: cols[2][i],
+                        spin: cols[3][i],
+                    };
+                    ball.shot(&with(&common, launch, 0))
+                        .map(|r| row(&r))
+                        .map_err(|e| (i, e))
+                })
+                .collect()
+        });
+        let rows = rows.map_err(|(i, e)| {
+            let err = error(e);
+            PyValueError::new_err(format!("element {i}: {}", err.value(py)))
+        })?;
+        let d = PyDict::new(py);
+        for (k, name) in SHOTS.iter().enumerate() {
+            let a = array(py, rows.iter().map(|r| r[k]).collect());
+            d.set_item(*name, a.call_method1("reshape", (&shape,))?)?;
+        }
+        Ok(d)
     }
-    Ok(d)
 }

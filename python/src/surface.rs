@@ -83,6 +83,12 @@ impl SurfaceUsed {
         self.stiffness == f64::INFINITY && self.mass == f64::INFINITY
     }
 
+    /// One line for a text header, the command line's (`bouncelab::api::surface_label`).
+    pub(crate) fn label(&self) -> String {
+        let normal = (self.stiffness, self.damping, self.mass);
+        bouncelab::api::surface_label(&self.name, normal, self.friction, &self.overrides)
+    }
+
     /// The JSON `surface` object (∞ as `inf` where the JSON writes `null`).
     pub(crate) fn to_dict<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
         let d = PyDict::new(py);

@@ -5,6 +5,7 @@ binary there skips the comparison, saying why; a BOUNCELAB_BIN that is not a fil
 whoever set it meant the comparison to run (python/tests/test_cli_binary.py)."""
 
 import os
+import subprocess
 from pathlib import Path
 
 import pytest
@@ -23,32 +24,10 @@ def binary():
     return path
 
 
-# The command line's JSON keys the package does not carry yet (issue 52: the `ball` object, and
-# `ball_record`, collide's and bat's name for it, the withheld comparison, a preset's
-# `calibration` record; issue 56: the answer's `conditions`, though run() and drop() take
-# pressure= and temperature=). The comparisons with the command line leave them out;
-# test_bouncelab.py's strict xfail fails the day the package carries them.
-NOT_IN_PYTHON_YET = frozenset(
-    {"ball", "ball_record", "comparison_withheld", "calibration", "conditions"}
-)
-
-
-def without_new_keys(value):
-    """`value` (parsed JSON) without NOT_IN_PYTHON_YET's keys, in it and in the dicts it holds."""
-    if isinstance(value, dict):
-        # `ball` is new as an object; as a string (collide's, bat's ball name) it is not
-        new = {k for k, v in value.items() if k in NOT_IN_PYTHON_YET and
-               (k != "ball" or isinstance(v, dict))}
-        return {k: without_new_keys(v) for k, v in value.items() if k not in new}
-    if isinstance(value, list):
-        return [without_new_keys(v) for v in value]
-    return value
-
-
-def without_conditions(value, also=()):
-    """A command line answer (parsed JSON) without its `conditions` (issue 56), which the
-    package's `monte_carlo` and `batch` do not carry yet, nor the top-level keys in `also`."""
-    return {k: v for k, v in value.items() if k != "conditions" and k not in also}
+def cli(*args):
+    """(exit code, stdout, stderr) of the binary run on `args`."""
+    p = subprocess.run([binary(), *args], capture_output=True, text=True, env=os.environ)
+    return p.returncode, p.stdout, p.stderr
 
 
 def reach(warnings):

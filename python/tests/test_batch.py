@@ -2,20 +2,18 @@
 the same dict key by key, the same refusals (as ValueError / OSError), picklable."""
 
 import json
-import os
 import pickle
-import subprocess
 from pathlib import Path
 
 import pytest
-from cli_binary import binary, without_conditions
+from cli_binary import cli
 
 import bouncelab
 
 
 def answer(out):
-    """The command line's JSON without its `conditions` (cli_binary.py)."""
-    return without_conditions(json.loads(out))
+    """The command line's JSON, every key (its `conditions` included)."""
+    return json.loads(out)
 
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -25,11 +23,6 @@ LOT7 = ROOT / "tests" / "golden" / "batch-lot7.csv"
 @pytest.fixture(autouse=True)
 def no_user_presets(tmp_path, monkeypatch):
     monkeypatch.setenv("XDG_CONFIG_HOME", str(tmp_path / "config"))
-
-
-def cli(*args):
-    p = subprocess.run([binary(), *args], capture_output=True, text=True, env=os.environ)
-    return p.returncode, p.stdout, p.stderr
 
 
 def test_lot7_is_the_command_line_s_json():

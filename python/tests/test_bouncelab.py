@@ -9,9 +9,7 @@ must agree to 1e-12, messages word for word.
 import csv
 import json
 import math
-import os
 import shlex
-import subprocess
 import threading
 import time
 from pathlib import Path
@@ -19,7 +17,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 import cli_binary
-from cli_binary import NOT_IN_PYTHON_YET, binary, without_new_keys
+from cli_binary import cli
 
 import bouncelab
 
@@ -35,17 +33,11 @@ def no_user_presets(tmp_path, monkeypatch):
     return tmp_path / "config" / "bouncelab" / "presets"
 
 
-def cli(*args):
-    """(exit code, stdout, stderr) of the binary."""
-    p = subprocess.run([binary(), *args], capture_output=True, text=True, env=os.environ)
-    return p.returncode, p.stdout, p.stderr
-
-
 def cli_json(*args):
-    """The command line's JSON, without the keys the package does not carry yet."""
+    """The command line's JSON."""
     code, out, err = cli(*args)
     assert code == 0, err
-    return without_new_keys(json.loads(out))
+    return json.loads(out)
 
 
 def cli_error(*args):
@@ -71,10 +63,6 @@ def same(a, b, path="value"):
     infinite z_p or c, and their NaN or None for an absent contact time."""
     if isinstance(b, dict):
         assert isinstance(a, dict), path
-        # the keys the package does not carry everywhere yet are left out on both sides (a
-        # standard's `conditions` is in both lists, a run's in the command line's alone)
-        a = without_new_keys(a)
-        b = without_new_keys(b)
         assert set(a) == set(b), (path, set(a) ^ set(b))
         for k in b:
             same(a[k], b[k], f"{path}.{k}")
@@ -92,13 +80,13 @@ def same(a, b, path="value"):
         assert abs(a - b) <= 1e-12 * max(abs(b), 1e-300), (path, a, b)
 
 
-@pytest.mark.xfail(strict=True, reason="issue 52: the ball object is not in the package yet")
-def test_the_package_carries_the_command_lines_new_keys():
-    # strict: the day run() carries them, this passes and fails the run, and cli_binary.py's
-    # NOT_IN_PYTHON_YET (which the comparisons leave out) must go
-    d = bouncelab.run(preset="golf").to_dict()
-    assert NOT_IN_PYTHON_YET & {"ball", "comparison_withheld"} <= set(d)
-    assert "calibration" in bouncelab.presets()[0]
+def test_the_package_carries_the_command_lines_ball_and_conditions():
+    # issue 52 item 3, issue 56 item 5: the answer names the ball it ran and its conditions
+    d = bouncelab.run(preset="golf", k_p=2e6).to_dict()
+    assert d["ball"]["name"] == "golf" and d["ball"]["overrides"] == ["k_p"]
+    assert d["comparison_withheld"].startswith("the measurement is the preset's ball's")
+    assert set(d["conditions"]) == {"temperature_c", "pressure_gauge_pa", "atmosphere_pa"}
+    assert all("calibration" in p for p in bouncelab.presets())
 
 
 # ---- values against the stored transcripts ----------------------------------------------
@@ -157,8 +145,13 @@ def test_sweep_velocity_matches_the_stored_json():
         "permanent_indentation",
         "max_indentation",
         "warnings",
+        "ball",
+        "conditions",
     ]
-    same({k: list(v) for k, v in d.items()}, {k: [r[k] for r in rows] for k in d})
+    doc = json.loads(out)
+    same({k: d[k] for k in ("ball", "conditions")}, {k: doc[k] for k in ("ball", "conditions")})
+    columns = [k for k in d if k not in ("ball", "conditions")]
+    same({k: list(d[k]) for k in columns}, {k: [r[k] for r in rows] for k in columns})
 
 
 def test_presets_match_the_stored_json():
@@ -253,8 +246,8 @@ def test_sweep_velocity_defaults_are_the_clis():
     rows = [r[:-1] for r in table[1:]]
     expected = np.array([[float(x) if x else math.nan for x in r] for r in rows])
     d = bouncelab.sweep_velocity("baseball")
-    # the CSV's numeric columns, then the JSON's max_indentation and warnings
-    assert list(d) == columns + ["max_indentation", "warnings"]
+    # the CSV's numeric columns, then the JSON's max_indentation, warnings, ball, conditions
+    assert list(d) == columns + ["max_indentation", "warnings", "ball", "conditions"]
     assert [cli_binary.reach(w) for w in d["warnings"]] == [[] for _ in rows]
     got = np.column_stack([d[c] for c in columns])
     np.testing.assert_allclose(got, expected, rtol=1e-12, atol=0)

@@ -23,12 +23,18 @@ def python_blocks(page):
 
 
 def table_rows():
-    """{name: [(argument, default text or None), …]} from library.md's function table."""
+    """{name: [(argument, default text or None), …]} from library.md's function table;
+    `**ball` is the ball's keyword arguments (the stub's `BallArguments`), each None."""
+    from test_stubs import stub_classes
+
+    ball = [(k, "None") for k in stub_classes()["BallArguments"][1]]
     text = (DOCS / "library.md").read_text()
     rows = {}
     for name, args in re.findall(r"^\| `(\w+)\((.*?)\)` \|", text, re.M):
         parts = [a.strip() for a in args.split(",") if a.strip() not in ("", "*")]
-        rows[name] = [tuple(p.split("=", 1)) if "=" in p else (p, None) for p in parts]
+        rows[name] = [p for a in parts
+                      for p in (ball if a == "**ball" else
+                                [tuple(a.split("=", 1)) if "=" in a else (a, None)])]
     return rows
 
 

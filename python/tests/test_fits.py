@@ -10,7 +10,6 @@ import bouncelab
 import json
 
 from test_bouncelab import cli, cli_error, cli_json, no_user_presets, same  # noqa: F401
-from cli_binary import without_new_keys
 
 G = 9.80665  # m/s², the library's g
 
@@ -43,9 +42,7 @@ def write_csv(path, header, columns):
 
 def same_as_cli(f, expected):
     """Every key the command line writes, to 1e-12 — but `file` (the bindings read arrays),
-    `drops` (rows there, arrays here: compared by the drop-test tests) and the keys the
-    package does not carry yet (cli_binary.py, NOT_IN_PYTHON_YET)."""
-    expected = without_new_keys(expected)
+    `drops` (rows there, arrays here: compared by the drop-test tests)."""
     missing = set(expected) - set(f) - {"file"}
     assert not missing, sorted(missing)
     shared = {k: v for k, v in expected.items() if k in f and k != "drops"}

@@ -2,22 +2,19 @@
 and on a real Dask cluster against the single-process call (docs/scale.md)."""
 
 import json
-import os
 import pickle
-import subprocess
 from pathlib import Path
 
 import numpy as np
 import pytest
-from cli_binary import binary, without_conditions
+from cli_binary import cli
 
 import bouncelab
 
 
 def answer(out):
-    """The command line's JSON without its `conditions` and its `ball` object, which the
-    package's `monte_carlo` does not carry yet (cli_binary.py, NOT_IN_PYTHON_YET)."""
-    return without_conditions(json.loads(out), also=("ball",))
+    """The command line's JSON, every key (its `ball` object and `conditions` included)."""
+    return json.loads(out)
 
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -27,11 +24,6 @@ VARY = {"k_p": 0.05, "c": 0.05, "k_r": 0.05}
 @pytest.fixture(autouse=True)
 def no_user_presets(tmp_path, monkeypatch):
     monkeypatch.setenv("XDG_CONFIG_HOME", str(tmp_path / "config"))
-
-
-def cli(*args):
-    p = subprocess.run([binary(), *args], capture_output=True, text=True, env=os.environ)
-    return p.returncode, p.stdout, p.stderr
 
 
 @pytest.mark.parametrize("dist", ["normal", "uniform", "lognormal"])

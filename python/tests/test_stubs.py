@@ -66,6 +66,31 @@ def stub_functions():
     return {n.name: n for n in ast.parse(STUB.read_text()).body if isinstance(n, ast.FunctionDef)}
 
 
+def unpacked(kwarg):
+    """`**ball: Unpack[BallArguments]` as the keyword-only arguments it types, each with the
+    default None (the TypedDict's fields, in order): what the runtime signature spells out."""
+    if kwarg is None:
+        return []
+    hint = ast.unparse(kwarg.annotation)
+    assert hint.startswith("Unpack[") and hint.endswith("]"), hint
+    name = hint[len("Unpack["):-1]
+    _, fields = stub_classes()[name]
+    none = ast.Constant(None)
+    return [(ast.arg(arg=f), none, inspect.Parameter.KEYWORD_ONLY) for f in fields]
+
+
+def test_the_ball_arguments_are_typed_once():
+    # issue 55 item 1: the ball's keyword arguments are one TypedDict, not a block in each
+    # function that takes them
+    tree = ast.parse(STUB.read_text())
+    takes = [n.name for n in tree.body if isinstance(n, ast.FunctionDef) and n.args.kwarg]
+    assert len(takes) >= 15, takes
+    for n in tree.body:
+        if isinstance(n, ast.FunctionDef):
+            assert "k_p" not in [a.arg for a in n.args.kwonlyargs + n.args.args] or \
+                n.name in ("run_params", "impacts"), n.name
+
+
 @pytest.mark.parametrize("name", FUNCTIONS)
 def test_the_stub_and_help_give_each_function_as_it_is(name):
     # help() shows the runtime signature: a default pyo3 cannot spell was "Ellipsis" there
@@ -78,6 +103,7 @@ def test_the_stub_and_help_give_each_function_as_it_is(name):
     stub = [(p, d, inspect.Parameter.POSITIONAL_OR_KEYWORD)
             for p, d in zip(positional, [None] * (len(positional) - len(a.defaults)) + a.defaults)]
     stub += [(p, d, inspect.Parameter.KEYWORD_ONLY) for p, d in zip(a.kwonlyargs, a.kw_defaults)]
+    stub += unpacked(a.kwarg)
     assert [p.arg for p, _, _ in stub] == list(real)
     for p, default, kind in stub:
         r = real[p.arg]
@@ -120,9 +146,13 @@ DICTS = {
         v0=[20.0] * 3, angle_deg=[30.0, 40.0, 50.0], spin_in=[0.0] * 3,
         vx_out=[15.0, 14.0, 13.0], vy_out=[5.0, 6.0, 7.0], preset="tennis")),
     "standard": ("Standard", lambda: bouncelab.standards()[0]),
+    "static": ("Static", lambda: bouncelab.static("tennis", load_kg=8.165)),
+    "court": ("Court", lambda: bouncelab.court("tennis", surface="clay", friction=0.55,
+                                                  surface_cor=0.75)),
+    "preset": ("Preset", lambda: bouncelab.presets()[0]),
 }
 # a key Python cannot spell as a TypedDict field (a keyword): the docstring names it
-UNSPELLABLE = {"lambda"}
+UNSPELLABLE = {"lambda", "return"}
 
 
 @pytest.mark.parametrize("case", DICTS)

@@ -3,11 +3,9 @@ the same names, to 1e-12, and the same one-line errors."""
 
 import json
 import math
-import os
-import subprocess
 
 import pytest
-from cli_binary import binary
+from cli_binary import cli
 
 import bouncelab
 from test_bouncelab import same
@@ -30,11 +28,6 @@ KEYS = [
 @pytest.fixture(autouse=True)
 def no_user_presets(tmp_path, monkeypatch):
     monkeypatch.setenv("XDG_CONFIG_HOME", str(tmp_path / "config"))
-
-
-def cli(*args):
-    p = subprocess.run([binary(), *args], capture_output=True, text=True, env=os.environ)
-    return p.returncode, p.stdout, p.stderr
 
 
 def close(a, b):

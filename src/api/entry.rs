@@ -224,3 +224,62 @@ impl Ball {
         }
     }
 }
+
+/// One preset as `bouncelab presets --format json` lists it (the Python package's
+/// `presets()` too): its name, where it comes from, its law and set, the λ and ζ it runs at,
+/// its measured speed and radius, ν, κ and its `[calibration]` record.
+#[derive(Debug, Clone, serde::Serialize)]
+pub struct PresetRow {
+    /// The preset's name.
+    pub name: String,
+    /// `"embedded"` or the file it was read from.
+    pub origin: String,
+    /// What the preset is.
+    pub description: String,
+    /// The contact law's name.
+    pub law: &'static str,
+    /// The parameter set's name.
+    pub parameters: &'static str,
+    /// λ = K_r/K_p.
+    pub lambda: f64,
+    /// ζ = √(m K_p)/(2c).
+    pub zeta: f64,
+    /// The speed it was measured at, m/s.
+    pub v0: f64,
+    /// R, m.
+    pub radius: f64,
+    /// ν of its material.
+    pub poisson_ratio: f64,
+    /// κ = I/(m R²): the preset's, or a solid ball's 0.4.
+    pub inertia_factor: f64,
+    /// The `[calibration]` record (`null` for a preset without one).
+    pub calibration: Option<crate::preset::Calibration>,
+}
+
+impl PresetRow {
+    /// The row of a catalog entry.
+    pub fn of(e: &Entry) -> PresetRow {
+        let p = &e.preset;
+        let n = p.params().normalized();
+        PresetRow {
+            name: p.name.clone(),
+            origin: match &e.origin {
+                Origin::Embedded => "embedded".into(),
+                Origin::File(f) => f.display().to_string(),
+            },
+            description: p.description.clone(),
+            law: p.law.name(),
+            parameters: p.parameters.name(),
+            lambda: n.lambda,
+            zeta: n.zeta,
+            v0: p.measured.v0,
+            radius: p.measured.radius,
+            poisson_ratio: p.material.poisson,
+            inertia_factor: p
+                .measured
+                .inertia_factor
+                .unwrap_or(super::SOLID_INERTIA_FACTOR),
+            calibration: p.calibration.clone(),
+        }
+    }
+}

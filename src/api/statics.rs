@@ -1,9 +1,10 @@
 //! The ball squeezed between two plates ([`crate::analysis::statics`], docs/model.md §11):
 //! the load in kilograms as the tests give it, and what the ball's record says of the answer.
 
-use super::Ball;
-use crate::analysis::statics::{StaticDeflection, static_deflection};
+use super::{Ball, BallHeader, BallRecord};
+use crate::analysis::statics::{ContactDeflection, StaticDeflection, static_deflection};
 use crate::drop::G;
+use serde::Serialize;
 
 pub use crate::analysis::statics::ITF_RETURN_PEAK;
 
@@ -90,5 +91,94 @@ impl Ball {
             }
         }
         w
+    }
+}
+
+/// One reading of `bouncelab static --format json`, SI: the diameter's shortening and one
+/// contact's parts, or `null` and why.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct StaticReading {
+    /// The diameter's shortening, m.
+    pub deflection_m: Option<f64>,
+    /// One contact's indentation, m.
+    pub indentation_m: Option<f64>,
+    /// One contact's recoil spring, m.
+    pub recoil_m: Option<f64>,
+    /// Why the model gives no reading.
+    pub reason: Option<String>,
+}
+
+impl StaticReading {
+    fn of(r: &Result<ContactDeflection, String>) -> StaticReading {
+        match r {
+            Ok(d) => StaticReading {
+                deflection_m: Some(d.diameter()),
+                indentation_m: Some(d.indentation),
+                recoil_m: Some(d.recoil),
+                reason: None,
+            },
+            Err(why) => StaticReading {
+                deflection_m: None,
+                indentation_m: None,
+                recoil_m: None,
+                reason: Some(why.clone()),
+            },
+        }
+    }
+}
+
+/// The return reading: after compressing the diameter by `peak_m` under `peak_force_n`.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ReturnReading {
+    /// The reading.
+    #[serde(flatten)]
+    pub reading: StaticReading,
+    /// The compression of the diameter it is read after, m.
+    pub peak_m: f64,
+    /// The force at that compression, N (`null` without a return reading).
+    pub peak_force_n: Option<f64>,
+}
+
+/// `bouncelab static --format json`: the ball between two plates under a load (the command
+/// line writes it, the Python package's `static` returns it).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct StaticReport<'a> {
+    /// Which ball.
+    #[serde(flatten)]
+    pub header: BallHeader<'a>,
+    /// The load, kg.
+    pub load_kg: f64,
+    /// Its weight on each contact, N.
+    pub force_n: f64,
+    /// g, m/s².
+    pub g: f64,
+    /// The forward reading.
+    pub forward: StaticReading,
+    /// The return reading.
+    #[serde(rename = "return")]
+    pub return_: ReturnReading,
+    /// [`Ball::static_warnings`].
+    pub warnings: Vec<String>,
+    /// The ball it ran (docs/cli.md, "The ball object").
+    pub ball: BallRecord,
+}
+
+impl<'a> StaticReport<'a> {
+    /// The report of `s`, the static deflection of `ball` under `load_kg`.
+    pub fn new(ball: &'a Ball, load_kg: f64, s: &StaticDeflection) -> StaticReport<'a> {
+        StaticReport {
+            header: ball.header(),
+            load_kg,
+            force_n: s.force,
+            g: G,
+            forward: StaticReading::of(&s.forward),
+            return_: ReturnReading {
+                reading: StaticReading::of(&s.return_),
+                peak_m: s.peak,
+                peak_force_n: s.peak_force,
+            },
+            warnings: ball.static_warnings(s),
+            ball: ball.record_json(),
+        }
     }
 }

@@ -42,3 +42,37 @@ impl Ball {
         Ok(r)
     }
 }
+
+/// A surface's line for a text header (the command line's, and the explanations the Python
+/// package gives): "surface steel-plate (rigid, immovable)", or with its K_s, c_s, moving
+/// mass and μ, and the quantities given over the surface's own.
+pub fn surface_label<S: AsRef<str>>(
+    name: &str,
+    (stiffness, damping, mass): (f64, f64, f64),
+    friction: Option<f64>,
+    overrides: &[S],
+) -> String {
+    let human = crate::text::human;
+    let mut parts = Vec::new();
+    if stiffness.is_infinite() {
+        parts.push("rigid".to_string());
+    } else {
+        parts.push(format!("K_s {} N/m", human(stiffness, 4)));
+        parts.push(format!("c_s {} kg/s", human(damping, 4)));
+    }
+    if mass.is_infinite() {
+        parts.push("immovable".into());
+    } else {
+        parts.push(format!("M {} kg", human(mass, 4)));
+    }
+    if let Some(mu) = friction {
+        parts.push(format!("μ {}", human(mu, 4)));
+    }
+    let over = if overrides.is_empty() {
+        String::new()
+    } else {
+        let given: Vec<&str> = overrides.iter().map(AsRef::as_ref).collect();
+        format!("; given: {}", given.join(", "))
+    };
+    format!("surface {name} ({}{over})", parts.join(", "))
+}

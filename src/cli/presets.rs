@@ -3,9 +3,9 @@
 
 use super::ball::{PresetChoice, load_catalog};
 use super::output::{self, human, table};
-use crate::catalog::{self, Origin};
+use crate::api::PresetRow;
+use crate::catalog;
 use clap::{Args, ValueEnum};
-use serde::Serialize;
 use std::io::Write;
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -26,53 +26,9 @@ pub struct PresetsArgs {
     pub format: PresetsFormat,
 }
 
-#[derive(Serialize)]
-struct Row {
-    name: String,
-    origin: String,
-    description: String,
-    law: &'static str,
-    parameters: &'static str,
-    lambda: f64,
-    zeta: f64,
-    v0: f64,
-    radius: f64,
-    poisson_ratio: f64,
-    inertia_factor: f64,
-    /// The `[calibration]` record (`null` for a preset without one).
-    calibration: Option<crate::preset::Calibration>,
-}
-
 pub fn run(a: &PresetsArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     let cat = load_catalog(a.choice.config.as_deref())?;
-    let rows: Vec<Row> = cat
-        .entries()
-        .iter()
-        .map(|e| {
-            let p = &e.preset;
-            let n = p.params().normalized();
-            Row {
-                name: p.name.clone(),
-                origin: match &e.origin {
-                    Origin::Embedded => "embedded".into(),
-                    Origin::File(f) => f.display().to_string(),
-                },
-                description: p.description.clone(),
-                law: p.law.name(),
-                parameters: p.parameters.name(),
-                lambda: n.lambda,
-                zeta: n.zeta,
-                v0: p.measured.v0,
-                radius: p.measured.radius,
-                poisson_ratio: p.material.poisson,
-                inertia_factor: p
-                    .measured
-                    .inertia_factor
-                    .unwrap_or(crate::api::SOLID_INERTIA_FACTOR),
-                calibration: p.calibration.clone(),
-            }
-        })
-        .collect();
+    let rows: Vec<PresetRow> = cat.entries().iter().map(PresetRow::of).collect();
     match a.format {
         PresetsFormat::Json => output::json(out, &rows)?,
         PresetsFormat::Text => {
@@ -117,7 +73,7 @@ pub fn run(a: &PresetsArgs, out: &mut dyn Write) -> anyhow::Result<()> {
 
 /// Each preset's calibration record, after the table: the speeds it holds over, the
 /// conditions and every data set it was fitted to.
-fn calibration_lines(out: &mut dyn Write, rows: &[Row]) -> std::io::Result<()> {
+fn calibration_lines(out: &mut dyn Write, rows: &[PresetRow]) -> std::io::Result<()> {
     writeln!(
         out,
         "calibration (the impact speeds each ball's parameters hold over):"

@@ -5,10 +5,9 @@
 use super::ball::BallArgs;
 use super::output::{self, human};
 use crate::analysis::statics::{ContactDeflection, StaticDeflection};
-use crate::api::{BallHeader, BallRecord, ITF_RETURN_PEAK};
+use crate::api::{ITF_RETURN_PEAK, StaticReport};
 use crate::drop::G;
 use clap::{Args, ValueEnum};
-use serde::Serialize;
 use std::io::Write;
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -34,86 +33,20 @@ pub struct StaticArgs {
     pub format: StaticFormat,
 }
 
-/// One reading, SI: the diameter's shortening and one contact's parts, or `null` and why.
-#[derive(Serialize)]
-struct Reading {
-    deflection_m: Option<f64>,
-    indentation_m: Option<f64>,
-    recoil_m: Option<f64>,
-    reason: Option<String>,
-}
-
-impl Reading {
-    fn of(r: &Result<ContactDeflection, String>) -> Reading {
-        match r {
-            Ok(d) => Reading {
-                deflection_m: Some(d.diameter()),
-                indentation_m: Some(d.indentation),
-                recoil_m: Some(d.recoil),
-                reason: None,
-            },
-            Err(why) => Reading {
-                deflection_m: None,
-                indentation_m: None,
-                recoil_m: None,
-                reason: Some(why.clone()),
-            },
-        }
-    }
-}
-
-#[derive(Serialize)]
-struct ReturnReading {
-    #[serde(flatten)]
-    reading: Reading,
-    peak_m: f64,
-    peak_force_n: Option<f64>,
-}
-
-#[derive(Serialize)]
-struct Report<'a> {
-    #[serde(flatten)]
-    header: BallHeader<'a>,
-    load_kg: f64,
-    force_n: f64,
-    g: f64,
-    forward: Reading,
-    #[serde(rename = "return")]
-    return_: ReturnReading,
-    warnings: Vec<String>,
-    ball: BallRecord,
-}
-
 pub fn run(a: &StaticArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     super::ball::check_overrides(&a.ball.set, None, None)?;
     let ball = a.ball.resolve(None)?;
     let s = ball.static_deflection(a.load, a.peak)?;
-    let warnings = ball.static_warnings(&s);
+    let report = StaticReport::new(&ball, a.load, &s);
     match a.format {
-        StaticFormat::Json => output::json(
-            out,
-            &Report {
-                header: ball.header(),
-                load_kg: a.load,
-                force_n: s.force,
-                g: G,
-                forward: Reading::of(&s.forward),
-                return_: ReturnReading {
-                    reading: Reading::of(&s.return_),
-                    peak_m: s.peak,
-                    peak_force_n: s.peak_force,
-                },
-                warnings,
-                ball: ball.record_json(),
-            },
-        )?,
+        StaticFormat::Json => output::json(out, &report)?,
         StaticFormat::Text => {
             writeln!(out, "{}", ball.label())?;
             if let Some(line) = ball.overrides_line() {
                 writeln!(out, "{line}")?;
             }
             text(out, a.load, &s, ball.law.name())?;
-            output::warning_lines(out, &warnings)?;
+            output::warning_lines(out, &report.warnings)?;
         }
     }
     Ok(())

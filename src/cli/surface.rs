@@ -107,27 +107,8 @@ impl SurfaceUsed {
     /// One line for a text header: "surface steel-plate (rigid, immovable)" or with its
     /// numbers and μ.
     pub fn label(&self) -> String {
-        let mut parts = Vec::new();
-        if self.stiffness.is_infinite() {
-            parts.push("rigid".to_string());
-        } else {
-            parts.push(format!("K_s {} N/m", human(self.stiffness, 4)));
-            parts.push(format!("c_s {} kg/s", human(self.damping, 4)));
-        }
-        if self.mass.is_infinite() {
-            parts.push("immovable".into());
-        } else {
-            parts.push(format!("M {} kg", human(self.mass, 4)));
-        }
-        if let Some(mu) = self.friction {
-            parts.push(format!("μ {}", human(mu, 4)));
-        }
-        let over = if self.overrides.is_empty() {
-            String::new()
-        } else {
-            format!("; given: {}", self.overrides.join(", "))
-        };
-        format!("surface {} ({}{over})", self.name, parts.join(", "))
+        let normal = (self.stiffness, self.damping, self.mass);
+        crate::api::surface_label(&self.name, normal, self.friction, &self.overrides)
     }
 }
 
