@@ -52,6 +52,13 @@ pub struct ExplorerArgs {
     /// The damping c_s beside K_s (kg/s), as `collide` --target-damping
     #[arg(long, value_name = "kg/s", value_parser = super::number::number, allow_hyphen_values = true)]
     pub target_damping: Option<f64>,
+    /// Inflation (gauge) pressure the explorer opens on, as `run` --pressure takes it: Pa, or
+    /// with a unit (0.8bar, 8psi, 55kPa); inflated balls only [default: the preset's nominal]
+    #[arg(long, value_name = "P", value_parser = super::conditions::pressure, allow_hyphen_values = true)]
+    pub pressure: Option<f64>,
+    /// The ball's temperature (°C) the explorer opens on, as `run` --temperature
+    #[arg(long, value_name = "°C", value_parser = super::number::number, allow_hyphen_values = true)]
+    pub temperature: Option<f64>,
     /// A session the explorer's `S` saved: the explorer opens in it again (docs/explorer.md)
     #[arg(long, value_name = "FILE", conflicts_with_all = ["preset", "config"])]
     pub session: Option<std::path::PathBuf>,
@@ -80,6 +87,8 @@ impl ExplorerArgs {
             ("--target-speed", self.target_speed.is_some()),
             ("--target-stiffness", self.target_stiffness.is_some()),
             ("--target-damping", self.target_damping.is_some()),
+            ("--pressure", self.pressure.is_some()),
+            ("--temperature", self.temperature.is_some()),
             ("--session", self.session.is_some()),
         ]
         .into_iter()
@@ -119,13 +128,24 @@ impl ExplorerArgs {
             params: self.params,
             law: self.law,
             set: self.set.clone(),
-            conditions: Default::default(),
+            conditions: super::conditions::ConditionsArgs {
+                pressure: self.pressure,
+                temperature: self.temperature,
+                ..Default::default()
+            },
         };
         ball::check_overrides(&self.set, self.lambda, self.zeta)?;
         let mut b = args.resolve(self.v0)?;
         ball::set_lambda_zeta(&mut b, self.lambda, self.zeta)?;
         let radius = b.measured.as_ref().map(|m| m.radius);
-        let app = App::new(entry.preset, color).with_start(b.params, b.law, radius);
+        let conditions = crate::api::ConditionsSpec {
+            pressure: self.pressure,
+            temperature: self.temperature,
+            ..Default::default()
+        };
+        let app = App::new(entry.preset, color)
+            .with_conditions(conditions)
+            .with_start(b.params, b.law, radius);
         let target = [
             self.target_mass,
             self.target_speed,

@@ -45,11 +45,13 @@ pub use ask::put_away_what;
 /// How many changes `u` can undo.
 const UNDO_DEPTH: usize = 500;
 
-/// What `u` restores: the setting and the oblique view's θ, ω, μ, K_t, κ before a change.
+/// What `u` restores: the setting, the oblique view's θ, ω, μ, K_t, κ and the flight view's
+/// launch and μ before a change (issue 57 item 3).
 #[derive(Debug, Clone, PartialEq)]
 pub(in crate::tui) struct Undoable {
     pub setting: Setting,
     pub oblique: crate::tui::views::oblique::state::ObliqueValues,
+    pub flight: crate::tui::views::flight::state::FlightValues,
     /// The measured data and fit `O` put away (`u` puts them back); `None` for a change of
     /// the setting alone.
     pub measured: Option<Box<crate::tui::views::fit::state::FitState>>,
@@ -132,6 +134,7 @@ impl App {
         let kept = Undoable {
             setting: setting.clone(),
             oblique: Default::default(),
+            flight: Default::default(),
             measured: None,
         };
         let mut app = App {

@@ -11,12 +11,13 @@
 //! differs from the screen's, if anything. The copy to the terminal's clipboard (OSC 52) is
 //! `crate::tui::clipboard`'s.
 
-use crate::api::{self, Overrides};
+use crate::api::{self, ConditionsSpec, Overrides};
 use crate::model::contact::ContactLaw;
 use crate::model::params::ImpactParams;
 use crate::preset::Preset;
 use crate::text::number;
 use crate::tui::param::Param;
+use crate::tui::physical::conditions::conditioned;
 use crate::tui::setting::Setting;
 use std::path::Path;
 
@@ -51,6 +52,8 @@ struct Options {
     /// --lambda and --zeta, when K_r or c is not what the ball above has.
     lambda_zeta: Option<(f64, f64)>,
     v0: f64,
+    /// --pressure and --temperature (None: the record's).
+    conditions: ConditionsSpec,
 }
 
 impl Options {
@@ -60,6 +63,10 @@ impl Options {
         let mass = differs(p.mass, preset.measured.mass);
         let radius = differs(setting.radius, preset.measured.radius);
         let base = Self::sized(preset, mass, radius);
+        // at the conditions typed (issue 56): `run` sets K_p (K_r, c) from them, after the
+        // ball's size; no `--k-p` where the conditions' K_p is the setting's
+        let r = radius.unwrap_or(preset.measured.radius);
+        let base = conditioned(preset, base, r, &setting.conditions).unwrap_or(base);
         let mut o = Options {
             law: (setting.law != preset.law).then_some(setting.law),
             mass,
@@ -68,6 +75,7 @@ impl Options {
             z_p: differs(p.z_p, base.z_p),
             lambda_zeta: None,
             v0: p.v0,
+            conditions: setting.conditions,
         };
         // λ and ζ are taken on the ball the options above make, as `run` applies them
         let ball = o.ball(preset).unwrap_or(base);
@@ -97,11 +105,42 @@ impl Options {
             ..Overrides::default()
         };
         set.apply(&mut p).ok()?;
+        if !self.conditions.is_empty() {
+            // `run` refuses --k-p beside --pressure (Ball::at_conditions)
+            if self.k_p.is_some()
+                && preset
+                    .calibration
+                    .as_ref()
+                    .and_then(|c| c.pressure)
+                    .is_some()
+            {
+                return None;
+            }
+            let r = self.radius.unwrap_or(preset.measured.radius);
+            p = conditioned(preset, p, r, &self.conditions).ok()?;
+        }
         if let Some((l, z)) = self.lambda_zeta {
             api::set_lambda_zeta(&mut p, Some(l), Some(z)).ok()?;
         }
         Some(p)
     }
+}
+
+/// The parameters the `y` line's ball options make at the setting's conditions, before λ and
+/// ζ: the preset sized by `--mass`, `--radius`, `--z-p` as `run` sizes it, then
+/// `--pressure`, `--temperature` ([`conditioned`]). The form's conditions start from these
+/// (src/tui/physical/conditions.rs), so the line and the screen agree.
+pub fn conditioned_base(preset: &Preset, setting: &Setting) -> Result<ImpactParams, String> {
+    let o = Options::of(preset, setting);
+    let mut p = Options::sized(preset, o.mass, o.radius);
+    p.v0 = setting.params.v0;
+    let set = Overrides {
+        mass: o.mass,
+        z_p: o.z_p,
+        ..Overrides::default()
+    };
+    set.apply(&mut p).map_err(|e| e.to_string())?;
+    conditioned(preset, p, setting.radius, &setting.conditions)
 }
 
 /// The `bouncelab run` line that runs `setting` of the ball `preset` found at `source` (the
@@ -143,6 +182,29 @@ fn what_the_ball_meets(setting: &Setting) -> Vec<String> {
     words
 }
 
+/// `--k-r K --damping C` for the commands that take no `--lambda`, `--zeta`. `run` applies
+/// them before the conditions, which then move K_r and c by the factor they move the ball's
+/// own (src/api/conditions.rs): away from the record the line gives K_r and c before that
+/// factor, so that the command's ball has the screen's (to rounding).
+fn k_r_damping(preset: &Preset, setting: &Setting) -> [String; 4] {
+    let p = &setting.params;
+    let (mut k_r, mut c) = (p.k_r, p.damping);
+    if !setting.conditions.is_empty() {
+        let record = Setting {
+            conditions: ConditionsSpec::default(),
+            ..setting.clone()
+        };
+        if let (Ok(at), Ok(rec)) = (
+            conditioned_base(preset, setting),
+            conditioned_base(preset, &record),
+        ) {
+            k_r /= at.k_r / rec.k_r;
+            c /= at.damping / rec.damping;
+        }
+    }
+    ["--k-r".into(), number(k_r), "--damping".into(), number(c)]
+}
+
 /// The oblique view's line, `bouncelab oblique --preset tennis --v0 25 --angle 16 --spin 300
 /// --friction 0.6 …` (`y` there, issue 31): the ball's options as [`explorer_line`]'s but
 /// K_r and c as `--k-r` and `--damping` (`oblique` takes no `--lambda`, `--zeta`: the same
@@ -157,16 +219,7 @@ pub fn oblique_line(
     let mut words = vec!["bouncelab".to_string(), "oblique".into()];
     let mut ball = options(source, preset, setting);
     if let Some(at) = ball.iter().position(|w| w == "--lambda") {
-        let p = &setting.params;
-        ball.splice(
-            at..at + 4,
-            [
-                "--k-r".into(),
-                number(p.k_r),
-                "--damping".into(),
-                number(p.damping),
-            ],
-        );
+        ball.splice(at..at + 4, k_r_damping(preset, setting));
     }
     words.extend(ball);
     for (option, value) in [
@@ -195,14 +248,7 @@ pub fn shot_line(
     let mut words = vec!["bouncelab".to_string(), "shot".into()];
     let mut ball = options(source, preset, setting);
     if let Some(at) = ball.iter().position(|w| w == "--lambda") {
-        let p = &setting.params;
-        let kr = [
-            "--k-r".into(),
-            number(p.k_r),
-            "--damping".into(),
-            number(p.damping),
-        ];
-        ball.splice(at..at + 4, kr);
+        ball.splice(at..at + 4, k_r_damping(preset, setting));
     }
     if let Some(at) = ball.iter().position(|w| w == "--v0") {
         ball.drain(at..at + 2);
@@ -240,6 +286,14 @@ fn options(source: Source, preset: &Preset, setting: &Setting) -> Vec<String> {
     }
     if let Some((l, z)) = o.lambda_zeta {
         words.extend(["--lambda".into(), number(l), "--zeta".into(), number(z)]);
+    }
+    for (option, value) in [
+        ("--pressure", o.conditions.pressure),
+        ("--temperature", o.conditions.temperature),
+    ] {
+        if let Some(v) = value {
+            words.extend([option.into(), number(v)]);
+        }
     }
     words.extend(["--v0".into(), number(o.v0)]);
     words

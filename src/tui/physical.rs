@@ -21,6 +21,7 @@ use crate::model::params::{self, ImpactParams, MEANINGFUL_MAX, MEANINGFUL_MIN};
 use crate::solver::ImpactResponse;
 use crate::text::{short, sig_trim};
 
+pub mod conditions;
 mod refusal;
 use refusal::ball_refusal;
 pub use refusal::refusal;
@@ -39,6 +40,10 @@ pub enum Field {
     Lambda,
     Zeta,
     V0,
+    /// The inflation (gauge) pressure p, as `--pressure` (inflated balls; issue 56).
+    Pressure,
+    /// The ball's temperature T, °C, as `--temperature`.
+    Temperature,
     /// The target's mass M (∞: the wall; docs/targets.md).
     TargetMass,
     /// The target's speed toward the ball v_t.
@@ -50,7 +55,7 @@ pub enum Field {
 }
 
 impl Field {
-    pub const ALL: [Field; 14] = [
+    pub const ALL: [Field; 16] = [
         Field::Mass,
         Field::Radius,
         Field::KP,
@@ -61,6 +66,8 @@ impl Field {
         Field::Lambda,
         Field::Zeta,
         Field::V0,
+        Field::Pressure,
+        Field::Temperature,
         Field::TargetMass,
         Field::TargetSpeed,
         Field::TargetStiffness,
@@ -79,6 +86,8 @@ impl Field {
             Field::Lambda => "λ",
             Field::Zeta => "ζ",
             Field::V0 => "v0",
+            Field::Pressure => "p",
+            Field::Temperature => "T",
             Field::TargetMass => "M",
             Field::TargetSpeed => "v_t",
             Field::TargetStiffness => "K_s",
@@ -93,7 +102,8 @@ impl Field {
             Field::Radius | Field::ZP => "m",
             Field::KP | Field::KR | Field::TargetStiffness => "N/m",
             Field::C | Field::TargetDamping => "kg/s",
-            Field::E => "Pa",
+            Field::E | Field::Pressure => "Pa",
+            Field::Temperature => "°C",
             Field::V0 | Field::TargetSpeed => "m/s",
             Field::Lambda | Field::Zeta => "",
         }
@@ -103,6 +113,10 @@ impl Field {
     /// mm: [`screen_unit`]) — and the factor from SI to it (issue 51 item 4: the form wrote
     /// m in kg to six digits beside a readout in g).
     pub fn screen(self) -> (&'static str, f64) {
+        // a pressure reads in kPa, as the readout's conditions line states it
+        if self == Field::Pressure {
+            return ("kPa", 1e-3);
+        }
         screen_unit(self.unit())
     }
 
@@ -150,6 +164,17 @@ impl Field {
             Field::TargetSpeed => s.target_speed,
             Field::TargetStiffness => s.target_stiffness,
             Field::TargetDamping => s.target_damping,
+            // as typed, else the record's; NaN ("—") where the ball has none
+            Field::Pressure => s
+                .conditions
+                .pressure
+                .or(s.record.pressure)
+                .unwrap_or(f64::NAN),
+            Field::Temperature => s
+                .conditions
+                .temperature
+                .or(s.record.temperature)
+                .unwrap_or(f64::NAN),
             Field::Lambda | Field::Zeta | Field::V0 => self.live().map_or(f64::NAN, |q| s.get(q)),
         }
     }
@@ -173,6 +198,10 @@ impl Field {
             None if self == Field::TargetDamping => {
                 format!("0 … {} kg/s, with K_s", short(MEANINGFUL_MAX, 4))
             }
+            None if self == Field::Pressure => {
+                "a gauge pressure in kPa, or with its unit (0.8bar, 8psi); inflated balls".into()
+            }
+            None if self == Field::Temperature => "above −273.15 °C".into(),
             None => format!(
                 "{} … {} {}",
                 short(MEANINGFUL_MIN * self.screen().1, 4),
@@ -214,6 +243,15 @@ impl Field {
             | Field::TargetSpeed
             | Field::TargetStiffness
             | Field::TargetDamping => next = target_set(self, value, s).map_err(refuse)?,
+            // the preset's record is needed: App::submit_physical takes these
+            // (physical::conditions::set)
+            Field::Pressure | Field::Temperature => {
+                return Err(format!("{} is set with its ball's record", self.symbol()));
+            }
+            Field::KP | Field::E if conditions::k_p_refused(s).is_some() => {
+                let why = conditions::k_p_refused(s).unwrap_or_default();
+                return Err(refuse(why));
+            }
             Field::E => {
                 if !s.elastomer {
                     return Err(

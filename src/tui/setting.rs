@@ -1,6 +1,7 @@
 //! What the model runs on, as the undo stack keeps it.
 
 use super::param::Param;
+use crate::api::ConditionsSpec;
 use crate::model::contact::ContactLaw;
 use crate::model::params::ImpactParams;
 use crate::preset::Preset;
@@ -29,6 +30,13 @@ pub struct Setting {
     /// c_s (kg/s), typed in the form: the pair's run on a compliant target (docs/targets.md).
     pub target_stiffness: f64,
     pub target_damping: f64,
+    /// The inflation pressure and temperature typed in the form (issue 56), as `--pressure`
+    /// and `--temperature` take them (`None`: the record's); `params` are the ball's at them
+    /// (src/tui/physical/conditions.rs). The other fields of the spec stay `None`.
+    pub conditions: ConditionsSpec,
+    /// The pressure and temperature the preset's record states (`None` where it states none):
+    /// what the form shows where none is typed.
+    pub record: ConditionsSpec,
 }
 
 impl Setting {
@@ -43,6 +51,8 @@ impl Setting {
             target_speed: 0.0,
             target_stiffness: f64::INFINITY,
             target_damping: 0.0,
+            conditions: ConditionsSpec::default(),
+            record: crate::tui::physical::conditions::record(preset),
         }
     }
 

@@ -353,6 +353,10 @@ impl Readout<'_> {
             lines.push(Line::styled(note, theme.dim()));
         }
         lines.extend(self.target_note());
+        // the pressure and temperature the form set (issue 56)
+        if let Some(c) = crate::tui::physical::conditions::stated(self.preset, self.setting) {
+            lines.push(Line::styled(c, theme.dim()));
+        }
         // a preset saved at another speed keeps no measurements, and its `[measured] v0` is
         // only the speed it runs at: claim no measurement then
         let m = &self.preset.measured;
