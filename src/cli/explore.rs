@@ -6,6 +6,7 @@
 //! `run`'s own steps ([`BallArgs::resolve`], [`ball::set_lambda_zeta`]).
 
 use super::ball::{self, BallArgs, LawArg, Overrides, PresetChoice, SourceArg};
+use crate::catalog::surfaces;
 use crate::tui::app::App;
 use crate::tui::session::Session;
 use clap::Args;
@@ -52,6 +53,10 @@ pub struct ExplorerArgs {
     /// The damping c_s beside K_s (kg/s), as `collide` --target-damping
     #[arg(long, value_name = "kg/s", value_parser = super::number::number, allow_hyphen_values = true)]
     pub target_damping: Option<f64>,
+    /// The surface (`bouncelab surfaces` lists them) the explorer opens on, as the surface
+    /// picker (`G`) sets it; the --target-* options override its numbers
+    #[arg(long, value_name = "NAME")]
+    pub surface: Option<String>,
     /// Inflation (gauge) pressure the explorer opens on, as `run` --pressure takes it: Pa, or
     /// with a unit (0.8bar, 8psi, 55kPa); inflated balls only [default: the preset's nominal]
     #[arg(long, value_name = "P", value_parser = super::conditions::pressure, allow_hyphen_values = true)]
@@ -87,6 +92,7 @@ impl ExplorerArgs {
             ("--target-speed", self.target_speed.is_some()),
             ("--target-stiffness", self.target_stiffness.is_some()),
             ("--target-damping", self.target_damping.is_some()),
+            ("--surface", self.surface.is_some()),
             ("--pressure", self.pressure.is_some()),
             ("--temperature", self.temperature.is_some()),
             ("--session", self.session.is_some()),
@@ -146,6 +152,17 @@ impl ExplorerArgs {
         let app = App::new(entry.preset, color)
             .with_conditions(conditions)
             .with_start(b.params, b.law, radius);
+        // the surface as `--surface` finds it, before the target's own options (which
+        // override it) and the oblique ones (--friction over its μ)
+        let app = match &self.surface {
+            Some(name) => {
+                let all = surfaces::load(surfaces::user_surfaces_dir().as_deref())?;
+                let s = surfaces::find(&all, name).map_err(anyhow::Error::msg)?;
+                app.with_surface(s.surface)
+                    .map_err(|e| anyhow::anyhow!("--surface: {e}"))?
+            }
+            None => app,
+        };
         let target = [
             self.target_mass,
             self.target_speed,

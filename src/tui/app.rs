@@ -23,6 +23,7 @@ mod refresh;
 mod scene;
 mod screen;
 mod stopped;
+mod surface;
 mod undone;
 
 use super::action::{Action, Mode};
@@ -246,6 +247,7 @@ impl App {
             ),
             Action::Export => self.export_wanted = true,
             Action::OpenPicker => return vec![Effect::ListPresets],
+            Action::OpenSurfaces => return vec![Effect::ListSurfaces],
             Action::PickerMove(_) | Action::PickerChoose => self.picker(action),
             Action::ClearMeasured => self.clear_measured(),
             Action::Fit => return self.start_fit().into_iter().collect(),

@@ -166,9 +166,17 @@ pub fn explorer_line(source: Source, preset: &Preset, setting: &Setting) -> Stri
 /// takes them, issue 51 item 2). Each is written only where it is not the wall's, so a line
 /// of the wall is what it was; a surface adds its options here the same way.
 fn what_the_ball_meets(setting: &Setting) -> Vec<String> {
-    let wall = crate::target::Target::wall();
-    let t = setting.target();
+    // the surface picked (`G`): by name, and the target's numbers where the form moved them
+    // off it (issue 53 item 6)
     let mut words = Vec::new();
+    let wall = match &setting.surface {
+        Some(s) => {
+            words.extend(["--surface".into(), shell_word(&s.name)]);
+            s.target()
+        }
+        None => crate::target::Target::wall(),
+    };
+    let t = setting.target();
     for (option, value, default) in [
         ("--target-mass", t.mass, wall.mass),
         ("--target-speed", t.speed, wall.speed),
@@ -205,6 +213,34 @@ fn k_r_damping(preset: &Preset, setting: &Setting) -> [String; 4] {
     ["--k-r".into(), number(k_r), "--damping".into(), number(c)]
 }
 
+/// `oblique`'s options of the surface the view bounces on (issue 53 item 6): `--surface NAME`
+/// when one was picked, then `--surface-stiffness`, `--surface-damping`, `--surface-mass` where
+/// the target (at rest) is not that surface's (or the rigid plate's), and c_t.
+fn surface_options(setting: &Setting) -> Vec<String> {
+    let mut words = Vec::new();
+    let own = match &setting.surface {
+        Some(s) => {
+            words.extend(["--surface".into(), shell_word(&s.name)]);
+            s.target()
+        }
+        None => crate::target::Target::wall(),
+    };
+    let t = setting.target();
+    for (option, value, default) in [
+        ("--surface-stiffness", t.stiffness, own.stiffness),
+        ("--surface-damping", t.damping, own.damping),
+        ("--surface-mass", t.mass, own.mass),
+    ] {
+        if value != default {
+            words.extend([option.into(), number(value)]);
+        }
+    }
+    if let Some(c) = setting.tangential_damping {
+        words.extend(["--tangential-damping".into(), number(c)]);
+    }
+    words
+}
+
 /// The oblique view's line, `bouncelab oblique --preset tennis --v0 25 --angle 16 --spin 300
 /// --friction 0.6 …` (`y` there, issue 31): the ball's options as [`explorer_line`]'s but
 /// K_r and c as `--k-r` and `--damping` (`oblique` takes no `--lambda`, `--zeta`: the same
@@ -222,6 +258,7 @@ pub fn oblique_line(
         ball.splice(at..at + 4, k_r_damping(preset, setting));
     }
     words.extend(ball);
+    words.extend(surface_options(setting));
     for (option, value) in [
         ("--angle", Some(o.angle)),
         ("--spin", Some(o.spin)),

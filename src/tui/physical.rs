@@ -327,6 +327,11 @@ fn target_set(field: Field, value: f64, s: &Setting) -> Result<Setting, String> 
     Ok(next)
 }
 
+/// [`closing`] for what sets the target outside the form (the surface picker).
+pub fn closing_check(s: &Setting) -> Result<(), String> {
+    closing(s)
+}
+
 /// The ball and the target must meet (v0 + v_t > 0), and the pair's reduced ball be one the
 /// model takes (docs/targets.md §2).
 fn closing(s: &Setting) -> Result<(), String> {

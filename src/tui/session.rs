@@ -77,6 +77,13 @@ pub struct Ball {
     pub pressure: Option<f64>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub temperature: Option<f64>,
+    /// The surface chosen (`G`), by name as `--surface` takes it (absent: none; version 3):
+    /// read again from the embedded and user surfaces; the target above may differ from it.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub surface: Option<String>,
+    /// c_t, kg/s (absent: none; version 3).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub tangential_damping: Option<f64>,
     pub params: ImpactParams,
 }
 
@@ -114,6 +121,8 @@ impl App {
             target_damping: s.target_damping,
             pressure: s.conditions.pressure,
             temperature: s.conditions.temperature,
+            surface: s.surface.as_ref().map(|x| x.name.clone()),
+            tangential_damping: s.tangential_damping,
             params: s.params,
         };
         Session {
@@ -203,7 +212,16 @@ impl App {
                 ..Default::default()
             },
             record: crate::tui::physical::conditions::record(&self.presets[preset]),
+            surface: b.surface.as_deref().map(surface_named).transpose()?,
+            tangential_damping: b.tangential_damping,
         };
+        if let Some(c) = s.tangential_damping
+            && !(c.is_finite() && c >= 0.0)
+        {
+            return Err(format!(
+                "tangential_damping: {c} (must be zero or positive, kg/s)"
+            ));
+        }
         // the radius as `run --radius` checks it (it sets the validity check, z_m < R)
         crate::model::params::check_positive(crate::model::params::Field::Radius, s.radius)
             .map_err(|e| e.to_string())?;
@@ -254,6 +272,17 @@ impl Session {
         }
         Ok(s)
     }
+}
+
+/// The surface `name` among the embedded and the user's surfaces, as `--surface` finds it; or
+/// why not (`surface: …`, listing the names there are).
+fn surface_named(name: &str) -> Result<crate::target::surface::Surface, String> {
+    use crate::catalog::surfaces;
+    let all = surfaces::load(surfaces::user_surfaces_dir().as_deref())
+        .map_err(|e| format!("surface: {e}"))?;
+    surfaces::find(&all, name)
+        .map(|e| e.surface)
+        .map_err(|e| format!("surface: {e}"))
 }
 
 /// The 1-based line and column (in characters) of byte `at` of `text`.

@@ -37,6 +37,14 @@ pub struct Setting {
     /// The pressure and temperature the preset's record states (`None` where it states none):
     /// what the form shows where none is typed.
     pub record: ConditionsSpec,
+    /// The surface chosen in the surface picker (`G`, issue 53 item 6), as its file gives it
+    /// (`None`: none chosen, the wall until a target is typed). Its normal give is the target
+    /// above when chosen; the form may then move K_s, c_s, M off it (`y` writes them as
+    /// overrides of it).
+    pub surface: Option<crate::target::surface::Surface>,
+    /// The tangential dashpot c_t (kg/s) in parallel with K_t (`None`: none), the chosen
+    /// surface's (`oblique --tangential-damping`; docs/oblique.md §1).
+    pub tangential_damping: Option<f64>,
 }
 
 impl Setting {
@@ -53,6 +61,8 @@ impl Setting {
             target_damping: 0.0,
             conditions: ConditionsSpec::default(),
             record: crate::tui::physical::conditions::record(preset),
+            surface: None,
+            tangential_damping: None,
         }
     }
 

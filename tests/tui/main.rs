@@ -55,6 +55,7 @@ mod tui_save_overwrite;
 mod tui_save_pty;
 mod tui_session;
 mod tui_small_pty;
+mod tui_surface;
 mod tui_target;
 mod tui_ticks;
 mod tui_worker_pty;

@@ -81,6 +81,23 @@ impl App {
             let name = |i: usize| self.presets.get(i).map_or("?", |p| p.name.as_str());
             parts.push(format!("ball {} → {}", name(now.preset), name(was.preset)));
         }
+        // the surface picked (`G`): by name, the rigid plate's when none was picked
+        let surface = |s: &Setting| {
+            s.surface
+                .as_ref()
+                .map_or("none".to_string(), |x| x.name.clone())
+        };
+        if surface(now) != surface(was) {
+            parts.push(format!("surface {} → {}", surface(now), surface(was)));
+        }
+        if now.tangential_damping != was.tangential_damping {
+            parts.push(change(
+                "c_t",
+                "kg/s",
+                now.tangential_damping,
+                was.tangential_damping,
+            ));
+        }
         if now.law != was.law {
             parts.push(format!("law {} → {}", now.law, was.law));
         }

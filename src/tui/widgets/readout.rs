@@ -374,8 +374,21 @@ impl Readout<'_> {
     /// (docs/targets.md; docs/explorer.md).
     fn target_note(&self) -> Vec<Line<'static>> {
         let t = self.setting.target();
+        // the surface picked (`G`, issue 53 item 6): its name and numbers; the pair's line
+        // below when the form moved the target off it
+        let mut lines = Vec::new();
+        if let Some(s) = &self.setting.surface {
+            let own = crate::tui::surface::numbers(s);
+            lines.push(Line::styled(
+                format!(" surface {}: {own}", s.name),
+                self.theme.dim(),
+            ));
+            if t == s.target() {
+                return lines;
+            }
+        }
         if t == crate::target::Target::wall() {
-            return Vec::new();
+            return lines;
         }
         let v = |x: f64| {
             if x.is_finite() {
@@ -397,6 +410,7 @@ impl Readout<'_> {
                 v(t.damping)
             ));
         }
-        vec![Line::styled(text, self.theme.dim())]
+        lines.push(Line::styled(text, self.theme.dim()));
+        lines
     }
 }
