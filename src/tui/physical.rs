@@ -23,8 +23,11 @@ use crate::text::{short, sig_trim};
 
 pub mod conditions;
 mod refusal;
+mod target;
 use refusal::ball_refusal;
 pub use refusal::refusal;
+pub use target::closing_check;
+use target::{closing, target_set};
 
 /// A field of the form, in the order shown.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -303,45 +306,6 @@ impl Field {
         let i = Field::ALL.iter().position(|&f| f == self).unwrap_or(0);
         Field::ALL[(i + n - 1) % n]
     }
-}
-
-/// `s` with the target's field `field` set to `value`, checked as `collide` checks it
-/// (`Target::validate`); c_s needs K_s, as `--target-damping` needs `--target-stiffness`: a
-/// dashpot beside a rigid spring has no effect (docs/targets.md §7).
-fn target_set(field: Field, value: f64, s: &Setting) -> Result<Setting, String> {
-    let mut next = s.clone();
-    match field {
-        Field::TargetMass => next.target_mass = value,
-        Field::TargetSpeed => next.target_speed = value,
-        Field::TargetStiffness => next.target_stiffness = value,
-        _ => next.target_damping = value,
-    }
-    next.target().validate().map_err(|e| refusal(&e))?;
-    if next.target_damping != 0.0 && next.target_stiffness == f64::INFINITY {
-        return Err(if field == Field::TargetStiffness {
-            "a rigid surface takes no damping: set c_s to 0 first".into()
-        } else {
-            "c_s has no effect on a rigid surface: type K_s first".into()
-        });
-    }
-    Ok(next)
-}
-
-/// [`closing`] for what sets the target outside the form (the surface picker).
-pub fn closing_check(s: &Setting) -> Result<(), String> {
-    closing(s)
-}
-
-/// The ball and the target must meet (v0 + v_t > 0), and the pair's reduced ball be one the
-/// model takes (docs/targets.md §2).
-fn closing(s: &Setting) -> Result<(), String> {
-    if s.params.v0 + s.target_speed <= 0.0 {
-        return Err(format!(
-            "the ball and the target never meet: v0 + v_t = {} m/s must be positive",
-            value(s.params.v0 + s.target_speed)
-        ));
-    }
-    s.run_params().validate().map_err(|e| refusal(&e))
 }
 
 /// The contact modulus the values imply for an elastomer ball: E = K_p/(2π z_p) (Eq. 20 with

@@ -211,7 +211,7 @@ impl App {
                 temperature: b.temperature,
                 ..Default::default()
             },
-            record: crate::tui::physical::conditions::record(&self.presets[preset]),
+            record: crate::tui::setting::record(&self.presets[preset]),
             surface: b.surface.as_deref().map(surface_named).transpose()?,
             tangential_damping: b.tangential_damping,
         };

@@ -47,6 +47,16 @@ pub struct Setting {
     pub tangential_damping: Option<f64>,
 }
 
+/// The record's pressure (Pa) and temperature (°C) of `preset`, where it states them.
+pub fn record(preset: &Preset) -> ConditionsSpec {
+    let c = preset.calibration.as_ref();
+    ConditionsSpec {
+        pressure: c.and_then(|c| c.pressure),
+        temperature: c.and_then(|c| c.temperature),
+        ..ConditionsSpec::default()
+    }
+}
+
 impl Setting {
     pub fn from_preset(index: usize, preset: &Preset) -> Setting {
         Setting {
@@ -60,7 +70,7 @@ impl Setting {
             target_stiffness: f64::INFINITY,
             target_damping: 0.0,
             conditions: ConditionsSpec::default(),
-            record: crate::tui::physical::conditions::record(preset),
+            record: record(preset),
             surface: None,
             tangential_damping: None,
         }

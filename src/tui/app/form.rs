@@ -1,7 +1,7 @@
 //! The physical-inputs form (`m`) as part of [`App::update`]: the highlighted field moves,
 //! Enter types a value through the value entry, and each accepted value is one undoable change.
 
-use super::{App, Overlay, Purpose};
+use super::{App, Overlay, Purpose, Setting};
 use crate::text::parse::number;
 use crate::text::sig_trim;
 use crate::tui::action::{Action, Scroll};
@@ -82,7 +82,9 @@ impl App {
             })
             .and_then(|v| match field {
                 Field::Pressure | Field::Temperature => {
-                    physical::conditions::set(field, v, &self.setting, self.preset())
+                    let preset = self.preset();
+                    let base = |s: &Setting| crate::tui::command::conditioned_base(preset, s);
+                    physical::conditions::set(field, v, &self.setting, preset, &base)
                         .map_err(|e| format!("{e}; {} kept", field.symbol()))
                 }
                 _ => field.check(v, &self.setting),

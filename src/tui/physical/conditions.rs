@@ -62,35 +62,31 @@ pub fn inflated(preset: &Preset) -> bool {
         .is_some()
 }
 
-/// The record's pressure (Pa) and temperature (°C) of `preset`, where it states them.
-pub fn record(preset: &Preset) -> ConditionsSpec {
-    let c = preset.calibration.as_ref();
-    ConditionsSpec {
-        pressure: c.and_then(|c| c.pressure),
-        temperature: c.and_then(|c| c.temperature),
-        ..ConditionsSpec::default()
-    }
-}
-
 /// `s` with the pressure (Pa) or temperature (°C) typed in `field` (or why not): the
-/// conditions set, and the parameters of the ball the `y` line makes at them
-/// ([`crate::tui::command::conditioned_base`]). K_r and c each move by the factor the
+/// conditions set, and the parameters of the ball the `y` line makes at them (`base`, given
+/// a setting: `crate::tui::command::conditioned_base`). K_r and c each move by the factor the
 /// conditions move the ball's own, so a λ or ζ the user set moves as the ball's does.
-pub fn set(field: Field, value: f64, s: &Setting, preset: &Preset) -> Result<Setting, String> {
+pub fn set(
+    field: Field,
+    value: f64,
+    s: &Setting,
+    preset: &Preset,
+    base: &dyn Fn(&Setting) -> Result<ImpactParams, String>,
+) -> Result<Setting, String> {
     let mut next = s.clone();
     match field {
         Field::Pressure => next.conditions.pressure = Some(value),
         _ => next.conditions.temperature = Some(value),
     }
     // back at the record's value: no option, as a fresh ball has none
-    let rec = record(preset);
+    let rec = s.record;
     if next.conditions.pressure == rec.pressure {
         next.conditions.pressure = None;
     }
     if next.conditions.temperature == rec.temperature {
         next.conditions.temperature = None;
     }
-    let was = crate::tui::command::conditioned_base(preset, s)?;
+    let was = base(s)?;
     if inflated(preset) && s.params.k_p != was.k_p {
         return Err(format!(
             "K_p was typed, and the pressure sets K_p too (as `run` refuses --k-p beside \
@@ -98,7 +94,7 @@ pub fn set(field: Field, value: f64, s: &Setting, preset: &Preset) -> Result<Set
             field.symbol()
         ));
     }
-    let now = crate::tui::command::conditioned_base(preset, &next)?;
+    let now = base(&next)?;
     let moved = |v: f64, old: f64, new: f64| if v == old { new } else { v * (new / old) };
     let p = &s.params;
     next.params = ImpactParams {
