@@ -116,6 +116,22 @@ fn the_picker_lists_the_surfaces_and_puts_the_ball_on_one() {
     assert!(said.starts_with("surface gym: K_s 4.000e5 N/m"), "{said}");
     let text = screen_text(&draw(&app, 120, 40)).join("\n");
     assert!(text.contains("surface gym:"), "{text}");
+    // y: the explorer's line names the surface, and `run` on it gives the screen's impact
+    let line = app.command_line();
+    assert!(line.ends_with("--surface gym"), "{line}");
+    let mut args = vec!["run".to_string()];
+    args.extend(words(&line)[1..].iter().cloned());
+    args.extend(["--format".into(), "json".into()]);
+    let args: Vec<&str> = args.iter().map(String::as_str).collect();
+    let out = common::bl_in(config.path(), &args);
+    assert_eq!(out.code, 0, "{line}: {}", out.stderr);
+    let j: Value = serde_json::from_str(&out.stdout).unwrap();
+    let run = app.run().unwrap();
+    let close = |a: f64, b: f64| (a - b).abs() <= 1e-12 * a.abs().max(b.abs());
+    for (k, v) in [("cor", run.cor), ("max_force", run.max_force)] {
+        let f = j[k].as_f64().unwrap();
+        assert!(close(f, v), "{line}: {k} {f} {v}");
+    }
     // u: back on the wall, saying so
     press(&mut app, &[KeyCode::Char('u')]);
     assert_eq!(app.setting().surface, None);
