@@ -57,6 +57,10 @@ pub struct ExplorerArgs {
     /// picker (`G`) sets it; the --target-* options override its numbers
     #[arg(long, value_name = "NAME")]
     pub surface: Option<String>,
+    /// The tangential dashpot c_t (kg/s) beside K_t the explorer opens on, as `oblique`
+    /// --tangential-damping [default: the surface's, else none]
+    #[arg(long, value_name = "KG_PER_S", value_parser = super::number::number, allow_hyphen_values = true)]
+    pub tangential_damping: Option<f64>,
     /// Inflation (gauge) pressure the explorer opens on, as `run` --pressure takes it: Pa, or
     /// with a unit (0.8bar, 8psi, 55kPa); inflated balls only [default: the preset's nominal]
     #[arg(long, value_name = "P", value_parser = super::conditions::pressure, allow_hyphen_values = true)]
@@ -93,6 +97,7 @@ impl ExplorerArgs {
             ("--target-stiffness", self.target_stiffness.is_some()),
             ("--target-damping", self.target_damping.is_some()),
             ("--surface", self.surface.is_some()),
+            ("--tangential-damping", self.tangential_damping.is_some()),
             ("--pressure", self.pressure.is_some()),
             ("--temperature", self.temperature.is_some()),
             ("--session", self.session.is_some()),
@@ -174,6 +179,12 @@ impl ExplorerArgs {
             app.with_target(target).map_err(|e| anyhow::anyhow!(e))?
         } else {
             app
+        };
+        let app = match self.tangential_damping {
+            Some(c) => app
+                .with_tangential_damping(c)
+                .map_err(|e| anyhow::anyhow!("--tangential-damping: {e}"))?,
+            None => app,
         };
         let oblique = [self.angle, self.spin, self.friction];
         if oblique.iter().all(Option::is_none) {

@@ -169,13 +169,17 @@ fn what_the_ball_meets(setting: &Setting) -> Vec<String> {
     // the surface picked (`G`): by name, and the target's numbers where the form moved them
     // off it (issue 53 item 6)
     let mut words = Vec::new();
-    let wall = match &setting.surface {
+    let (wall, c_t) = match &setting.surface {
         Some(s) => {
             words.extend(["--surface".into(), shell_word(&s.name)]);
-            s.target()
+            (s.target(), s.tangential_damping)
         }
-        None => crate::target::Target::wall(),
+        None => (crate::target::Target::wall(), None),
     };
+    if setting.tangential_damping != c_t {
+        let c = setting.tangential_damping.unwrap_or(0.0);
+        words.extend(["--tangential-damping".into(), number(c)]);
+    }
     let t = setting.target();
     for (option, value, default) in [
         ("--target-mass", t.mass, wall.mass),
@@ -218,12 +222,12 @@ fn k_r_damping(preset: &Preset, setting: &Setting) -> [String; 4] {
 /// the target (at rest) is not that surface's (or the rigid plate's), and c_t.
 fn surface_options(setting: &Setting) -> Vec<String> {
     let mut words = Vec::new();
-    let own = match &setting.surface {
+    let (own, own_c_t) = match &setting.surface {
         Some(s) => {
             words.extend(["--surface".into(), shell_word(&s.name)]);
-            s.target()
+            (s.target(), s.tangential_damping)
         }
-        None => crate::target::Target::wall(),
+        None => (crate::target::Target::wall(), None),
     };
     let t = setting.target();
     for (option, value, default) in [
@@ -235,7 +239,9 @@ fn surface_options(setting: &Setting) -> Vec<String> {
             words.extend([option.into(), number(value)]);
         }
     }
-    if let Some(c) = setting.tangential_damping {
+    // the surface's own c_t comes with --surface; another (0: none) is written
+    if setting.tangential_damping != own_c_t {
+        let c = setting.tangential_damping.unwrap_or(0.0);
         words.extend(["--tangential-damping".into(), number(c)]);
     }
     words

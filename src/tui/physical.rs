@@ -55,10 +55,12 @@ pub enum Field {
     TargetStiffness,
     /// The damping c_s in parallel with K_s.
     TargetDamping,
+    /// The tangential dashpot c_t beside K_t (the surface's; `oblique --tangential-damping`).
+    TangentialDamping,
 }
 
 impl Field {
-    pub const ALL: [Field; 16] = [
+    pub const ALL: [Field; 17] = [
         Field::Mass,
         Field::Radius,
         Field::KP,
@@ -75,6 +77,7 @@ impl Field {
         Field::TargetSpeed,
         Field::TargetStiffness,
         Field::TargetDamping,
+        Field::TangentialDamping,
     ];
 
     pub fn symbol(self) -> &'static str {
@@ -95,6 +98,7 @@ impl Field {
             Field::TargetSpeed => "v_t",
             Field::TargetStiffness => "K_s",
             Field::TargetDamping => "c_s",
+            Field::TangentialDamping => "c_t",
         }
     }
 
@@ -104,7 +108,7 @@ impl Field {
             Field::Mass | Field::TargetMass => "kg",
             Field::Radius | Field::ZP => "m",
             Field::KP | Field::KR | Field::TargetStiffness => "N/m",
-            Field::C | Field::TargetDamping => "kg/s",
+            Field::C | Field::TargetDamping | Field::TangentialDamping => "kg/s",
             Field::E | Field::Pressure => "Pa",
             Field::Temperature => "°C",
             Field::V0 | Field::TargetSpeed => "m/s",
@@ -167,6 +171,7 @@ impl Field {
             Field::TargetSpeed => s.target_speed,
             Field::TargetStiffness => s.target_stiffness,
             Field::TargetDamping => s.target_damping,
+            Field::TangentialDamping => s.tangential_damping.unwrap_or(0.0),
             // as typed, else the record's; NaN ("—") where the ball has none
             Field::Pressure => s
                 .conditions
@@ -198,6 +203,9 @@ impl Field {
                 short(MEANINGFUL_MIN, 4),
                 short(MEANINGFUL_MAX, 4)
             ),
+            None if self == Field::TangentialDamping => {
+                format!("0 … {} kg/s (0: none)", short(MEANINGFUL_MAX, 4))
+            }
             None if self == Field::TargetDamping => {
                 format!("0 … {} kg/s, with K_s", short(MEANINGFUL_MAX, 4))
             }
@@ -246,6 +254,16 @@ impl Field {
             | Field::TargetSpeed
             | Field::TargetStiffness
             | Field::TargetDamping => next = target_set(self, value, s).map_err(refuse)?,
+            // as `oblique --tangential-damping` takes it: finite, ≥ 0 (0: none)
+            Field::TangentialDamping => {
+                if !(0.0..=MEANINGFUL_MAX).contains(&value) {
+                    return Err(refuse(format!(
+                        "invalid tangential_damping: {}",
+                        self.shown(value)
+                    )));
+                }
+                next.tangential_damping = (value > 0.0).then_some(value);
+            }
             // the preset's record is needed: App::submit_physical takes these
             // (physical::conditions::set)
             Field::Pressure | Field::Temperature => {

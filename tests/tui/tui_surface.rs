@@ -177,8 +177,9 @@ fn the_oblique_view_bounces_on_the_surface_and_its_line_runs_to_the_screen() {
     let e = format!("e\u{a0}{}", bouncelab::tui::format::value(pace.cor_normal));
     assert!(text.contains(&e), "{e}\n{text}");
     let line = app.command_line();
+    // the gym's own c_t comes with --surface gym
     assert!(line.contains("--surface gym"), "{line}");
-    assert!(line.contains("--tangential-damping 2"), "{line}");
+    assert!(!line.contains("--tangential-damping"), "{line}");
     let mut args = words(&line)[1..].to_vec();
     args.extend(["--format".into(), "json".into()]);
     let args: Vec<&str> = args.iter().map(String::as_str).collect();
@@ -265,4 +266,54 @@ fn a_session_keeps_the_surface() {
     let read = Session::parse(Path::new("bad.toml"), &bad).unwrap();
     let e = tennis().with_session(&read).err().unwrap();
     assert!(e.starts_with("surface: ") && e.contains("moon"), "{e}");
+}
+
+#[test]
+fn c_t_is_a_field_of_the_form_and_the_lines_carry_it() {
+    let mut app = tennis();
+    press(&mut app, &[KeyCode::Char('m')]);
+    let n = Field::ALL
+        .iter()
+        .position(|&f| f == Field::TangentialDamping)
+        .unwrap();
+    for _ in 0..n {
+        press(&mut app, &[KeyCode::Down]);
+    }
+    press(&mut app, &[KeyCode::Enter]);
+    app.update(Action::InputClear);
+    type_keys(&mut app, "-1");
+    press(&mut app, &[KeyCode::Enter]);
+    assert_eq!(app.setting().tangential_damping, None, "refused");
+    let why = app.message().unwrap().text.clone();
+    assert!(why.contains("invalid tangential_damping"), "{why}");
+    app.update(Action::InputClear);
+    type_keys(&mut app, "1.5");
+    press(&mut app, &[KeyCode::Enter, KeyCode::Esc]);
+    assert_eq!(app.setting().tangential_damping, Some(1.5));
+    // the explorer's line opens on it again
+    let line = app.command_line();
+    assert!(line.contains("--tangential-damping 1.5"), "{line}");
+    let cli = Cli::try_parse_from(words(&line)).unwrap_or_else(|e| panic!("{line}: {e}"));
+    let again = cli.explore.app(&cli.choice, false).unwrap().0;
+    assert_eq!(again.setting(), app.setting(), "{line}");
+    // the oblique line carries it and runs to the screen's bounce
+    press(&mut app, &[KeyCode::Char('i')]);
+    let line = app.command_line();
+    assert!(line.contains("--tangential-damping 1.5"), "{line}");
+    let mut args = words(&line)[1..].to_vec();
+    args.extend(["--format".into(), "json".into()]);
+    let args: Vec<&str> = args.iter().map(String::as_str).collect();
+    let j = common::json(&args);
+    let r = app.oblique_view().response().unwrap();
+    let f = j["spin_out"].as_f64().unwrap();
+    assert!(
+        (f - r.spin_out).abs() <= 1e-12 * f.abs().max(1.0),
+        "{f} {}",
+        r.spin_out
+    );
+    // u undoes it, naming it
+    press(&mut app, &[KeyCode::Char('u')]);
+    assert_eq!(app.setting().tangential_damping, None);
+    let said = app.message().unwrap().text.clone();
+    assert!(said.starts_with("undone: c_t 1.500 → 0 kg/s"), "{said}");
 }

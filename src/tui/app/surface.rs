@@ -50,6 +50,16 @@ impl App {
         Ok(self)
     }
 
+    /// The explorer started with the tangential dashpot c_t (`--tangential-damping`),
+    /// checked as the form checks it.
+    pub fn with_tangential_damping(mut self, c_t: f64) -> Result<App, String> {
+        use crate::tui::physical::Field;
+        self.setting = Field::TangentialDamping.check(c_t, &self.setting)?;
+        self.keep();
+        self.refresh();
+        Ok(self)
+    }
+
     /// Put the ball on `surface`, as `--surface NAME` does (one undoable change): its normal
     /// give is the target (at rest), its μ and K_t (where it gives them) the oblique view's,
     /// its c_t the dashpot beside K_t. Refused, nothing changed, where the ball and the

@@ -34,7 +34,7 @@ fn change(name: &str, unit: &str, now: Option<f64>, then: Option<f64>) -> String
 
 /// The fields in the order `u` names them: what a user types or steps first, λ and ζ (which
 /// follow m, K_p, …) after, K_r and c (which follow λ and ζ) last.
-const CHANGED_FIRST: [Field; 16] = [
+const CHANGED_FIRST: [Field; 17] = [
     Field::V0,
     Field::Pressure,
     Field::Temperature,
@@ -47,6 +47,7 @@ const CHANGED_FIRST: [Field; 16] = [
     Field::TargetSpeed,
     Field::TargetStiffness,
     Field::TargetDamping,
+    Field::TangentialDamping,
     Field::Lambda,
     Field::Zeta,
     Field::KR,
@@ -89,14 +90,6 @@ impl App {
         };
         if surface(now) != surface(was) {
             parts.push(format!("surface {} → {}", surface(now), surface(was)));
-        }
-        if now.tangential_damping != was.tangential_damping {
-            parts.push(change(
-                "c_t",
-                "kg/s",
-                now.tangential_damping,
-                was.tangential_damping,
-            ));
         }
         if now.law != was.law {
             parts.push(format!("law {} → {}", now.law, was.law));
