@@ -28,7 +28,8 @@ pub(super) fn target_set(field: Field, value: f64, s: &Setting) -> Result<Settin
     Ok(next)
 }
 
-/// [`closing`] for what sets the target outside the form (the surface picker).
+/// `closing` for what sets the target outside the form (the surface picker): the ball and
+/// the target meet, and the pair's reduced ball is one the model takes.
 pub fn closing_check(s: &Setting) -> Result<(), String> {
     closing(s)
 }
