@@ -219,6 +219,26 @@ fn the_oblique_and_flight_lines_carry_the_conditions() {
     ] {
         assert!(close(f(&j, k), v), "{line}: {k} {} {v}", f(&j, k));
     }
+    // the flight view's `bouncelab shot` line too
+    key(&mut app, KeyCode::Char('i'));
+    key(&mut app, KeyCode::Char('h'));
+    app.refresh();
+    assert_eq!(app.view(), View::Flight);
+    let line = app.command_line();
+    assert!(
+        line.starts_with("bouncelab shot") && line.contains("--pressure 45000"),
+        "{line}"
+    );
+    let mut args: Vec<String> = line.split_whitespace().skip(1).map(String::from).collect();
+    args.extend(["--format".into(), "json".into()]);
+    let args: Vec<&str> = args.iter().map(String::as_str).collect();
+    let j = json(&args);
+    let r = app.flight_view().report().expect("a shot");
+    let b = &j["bounces"][0];
+    for (k, v) in [("x", r.bounces[0].x), ("v_out", r.bounces[0].v_out)] {
+        let got = b[k].as_f64().unwrap();
+        assert!(close(got, v), "{line}: {k} {got} {v}");
+    }
 }
 
 #[test]
