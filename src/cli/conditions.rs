@@ -43,7 +43,7 @@ impl ConditionsArgs {
 }
 
 /// `--pressure`'s reader: pascals, or a number with its unit.
-fn pressure(text: &str) -> Result<f64, String> {
+pub(super) fn pressure(text: &str) -> Result<f64, String> {
     crate::conditions::pressure::parse("pressure", text)
 }
 

@@ -6,6 +6,7 @@
 //! `run`'s own steps ([`BallArgs::resolve`], [`ball::set_lambda_zeta`]).
 
 use super::ball::{self, BallArgs, LawArg, Overrides, PresetChoice, SourceArg};
+use crate::catalog::surfaces;
 use crate::tui::app::App;
 use crate::tui::session::Session;
 use clap::Args;
@@ -52,6 +53,21 @@ pub struct ExplorerArgs {
     /// The damping c_s beside K_s (kg/s), as `collide` --target-damping
     #[arg(long, value_name = "kg/s", value_parser = super::number::number, allow_hyphen_values = true)]
     pub target_damping: Option<f64>,
+    /// The surface (`bouncelab surfaces` lists them) the explorer opens on, as the surface
+    /// picker (`G`) sets it; the --target-* options override its numbers
+    #[arg(long, value_name = "NAME")]
+    pub surface: Option<String>,
+    /// The tangential dashpot c_t (kg/s) beside K_t the explorer opens on, as `oblique`
+    /// --tangential-damping [default: the surface's, else none]
+    #[arg(long, value_name = "KG_PER_S", value_parser = super::number::number, allow_hyphen_values = true)]
+    pub tangential_damping: Option<f64>,
+    /// Inflation (gauge) pressure the explorer opens on, as `run` --pressure takes it: Pa, or
+    /// with a unit (0.8bar, 8psi, 55kPa); inflated balls only [default: the preset's nominal]
+    #[arg(long, value_name = "P", value_parser = super::conditions::pressure, allow_hyphen_values = true)]
+    pub pressure: Option<f64>,
+    /// The ball's temperature (°C) the explorer opens on, as `run` --temperature
+    #[arg(long, value_name = "°C", value_parser = super::number::number, allow_hyphen_values = true)]
+    pub temperature: Option<f64>,
     /// A session the explorer's `S` saved: the explorer opens in it again (docs/explorer.md)
     #[arg(long, value_name = "FILE", conflicts_with_all = ["preset", "config"])]
     pub session: Option<std::path::PathBuf>,
@@ -80,6 +96,10 @@ impl ExplorerArgs {
             ("--target-speed", self.target_speed.is_some()),
             ("--target-stiffness", self.target_stiffness.is_some()),
             ("--target-damping", self.target_damping.is_some()),
+            ("--surface", self.surface.is_some()),
+            ("--tangential-damping", self.tangential_damping.is_some()),
+            ("--pressure", self.pressure.is_some()),
+            ("--temperature", self.temperature.is_some()),
             ("--session", self.session.is_some()),
         ]
         .into_iter()
@@ -119,13 +139,35 @@ impl ExplorerArgs {
             params: self.params,
             law: self.law,
             set: self.set.clone(),
-            conditions: Default::default(),
+            conditions: super::conditions::ConditionsArgs {
+                pressure: self.pressure,
+                temperature: self.temperature,
+                ..Default::default()
+            },
         };
         ball::check_overrides(&self.set, self.lambda, self.zeta)?;
         let mut b = args.resolve(self.v0)?;
         ball::set_lambda_zeta(&mut b, self.lambda, self.zeta)?;
         let radius = b.measured.as_ref().map(|m| m.radius);
-        let app = App::new(entry.preset, color).with_start(b.params, b.law, radius);
+        let conditions = crate::api::ConditionsSpec {
+            pressure: self.pressure,
+            temperature: self.temperature,
+            ..Default::default()
+        };
+        let app = App::new(entry.preset, color)
+            .with_conditions(conditions)
+            .with_start(b.params, b.law, radius);
+        // the surface as `--surface` finds it, before the target's own options (which
+        // override it) and the oblique ones (--friction over its μ)
+        let app = match &self.surface {
+            Some(name) => {
+                let all = surfaces::load(surfaces::user_surfaces_dir().as_deref())?;
+                let s = surfaces::find(&all, name).map_err(anyhow::Error::msg)?;
+                app.with_surface(s.surface)
+                    .map_err(|e| anyhow::anyhow!("--surface: {e}"))?
+            }
+            None => app,
+        };
         let target = [
             self.target_mass,
             self.target_speed,
@@ -137,6 +179,12 @@ impl ExplorerArgs {
             app.with_target(target).map_err(|e| anyhow::anyhow!(e))?
         } else {
             app
+        };
+        let app = match self.tangential_damping {
+            Some(c) => app
+                .with_tangential_damping(c)
+                .map_err(|e| anyhow::anyhow!("--tangential-damping: {e}"))?,
+            None => app,
         };
         let oblique = [self.angle, self.spin, self.friction];
         if oblique.iter().all(Option::is_none) {

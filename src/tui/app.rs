@@ -23,6 +23,7 @@ mod refresh;
 mod scene;
 mod screen;
 mod stopped;
+mod surface;
 mod undone;
 
 use super::action::{Action, Mode};
@@ -45,11 +46,13 @@ pub use ask::put_away_what;
 /// How many changes `u` can undo.
 const UNDO_DEPTH: usize = 500;
 
-/// What `u` restores: the setting and the oblique view's θ, ω, μ, K_t, κ before a change.
+/// What `u` restores: the setting, the oblique view's θ, ω, μ, K_t, κ and the flight view's
+/// launch and μ before a change (issue 57 item 3).
 #[derive(Debug, Clone, PartialEq)]
 pub(in crate::tui) struct Undoable {
     pub setting: Setting,
     pub oblique: crate::tui::views::oblique::state::ObliqueValues,
+    pub flight: crate::tui::views::flight::state::FlightValues,
     /// The measured data and fit `O` put away (`u` puts them back); `None` for a change of
     /// the setting alone.
     pub measured: Option<Box<crate::tui::views::fit::state::FitState>>,
@@ -132,6 +135,7 @@ impl App {
         let kept = Undoable {
             setting: setting.clone(),
             oblique: Default::default(),
+            flight: Default::default(),
             measured: None,
         };
         let mut app = App {
@@ -243,6 +247,7 @@ impl App {
             ),
             Action::Export => self.export_wanted = true,
             Action::OpenPicker => return vec![Effect::ListPresets],
+            Action::OpenSurfaces => return vec![Effect::ListSurfaces],
             Action::PickerMove(_) | Action::PickerChoose => self.picker(action),
             Action::ClearMeasured => self.clear_measured(),
             Action::Fit => return self.start_fit().into_iter().collect(),

@@ -11,12 +11,13 @@
 //! differs from the screen's, if anything. The copy to the terminal's clipboard (OSC 52) is
 //! `crate::tui::clipboard`'s.
 
-use crate::api::{self, Overrides};
+use crate::api::{self, ConditionsSpec, Overrides};
 use crate::model::contact::ContactLaw;
 use crate::model::params::ImpactParams;
 use crate::preset::Preset;
 use crate::text::number;
 use crate::tui::param::Param;
+use crate::tui::physical::conditions::conditioned;
 use crate::tui::setting::Setting;
 use std::path::Path;
 
@@ -51,6 +52,8 @@ struct Options {
     /// --lambda and --zeta, when K_r or c is not what the ball above has.
     lambda_zeta: Option<(f64, f64)>,
     v0: f64,
+    /// --pressure and --temperature (None: the record's).
+    conditions: ConditionsSpec,
 }
 
 impl Options {
@@ -60,6 +63,10 @@ impl Options {
         let mass = differs(p.mass, preset.measured.mass);
         let radius = differs(setting.radius, preset.measured.radius);
         let base = Self::sized(preset, mass, radius);
+        // at the conditions typed (issue 56): `run` sets K_p (K_r, c) from them, after the
+        // ball's size; no `--k-p` where the conditions' K_p is the setting's
+        let r = radius.unwrap_or(preset.measured.radius);
+        let base = conditioned(preset, base, r, &setting.conditions).unwrap_or(base);
         let mut o = Options {
             law: (setting.law != preset.law).then_some(setting.law),
             mass,
@@ -68,6 +75,7 @@ impl Options {
             z_p: differs(p.z_p, base.z_p),
             lambda_zeta: None,
             v0: p.v0,
+            conditions: setting.conditions,
         };
         // λ and ζ are taken on the ball the options above make, as `run` applies them
         let ball = o.ball(preset).unwrap_or(base);
@@ -97,11 +105,42 @@ impl Options {
             ..Overrides::default()
         };
         set.apply(&mut p).ok()?;
+        if !self.conditions.is_empty() {
+            // `run` refuses --k-p beside --pressure (Ball::at_conditions)
+            if self.k_p.is_some()
+                && preset
+                    .calibration
+                    .as_ref()
+                    .and_then(|c| c.pressure)
+                    .is_some()
+            {
+                return None;
+            }
+            let r = self.radius.unwrap_or(preset.measured.radius);
+            p = conditioned(preset, p, r, &self.conditions).ok()?;
+        }
         if let Some((l, z)) = self.lambda_zeta {
             api::set_lambda_zeta(&mut p, Some(l), Some(z)).ok()?;
         }
         Some(p)
     }
+}
+
+/// The parameters the `y` line's ball options make at the setting's conditions, before λ and
+/// ζ: the preset sized by `--mass`, `--radius`, `--z-p` as `run` sizes it, then
+/// `--pressure`, `--temperature` ([`conditioned`]). The form's conditions start from these
+/// (src/tui/physical/conditions.rs), so the line and the screen agree.
+pub fn conditioned_base(preset: &Preset, setting: &Setting) -> Result<ImpactParams, String> {
+    let o = Options::of(preset, setting);
+    let mut p = Options::sized(preset, o.mass, o.radius);
+    p.v0 = setting.params.v0;
+    let set = Overrides {
+        mass: o.mass,
+        z_p: o.z_p,
+        ..Overrides::default()
+    };
+    set.apply(&mut p).map_err(|e| e.to_string())?;
+    conditioned(preset, p, setting.radius, &setting.conditions)
 }
 
 /// The `bouncelab run` line that runs `setting` of the ball `preset` found at `source` (the
@@ -127,9 +166,21 @@ pub fn explorer_line(source: Source, preset: &Preset, setting: &Setting) -> Stri
 /// takes them, issue 51 item 2). Each is written only where it is not the wall's, so a line
 /// of the wall is what it was; a surface adds its options here the same way.
 fn what_the_ball_meets(setting: &Setting) -> Vec<String> {
-    let wall = crate::target::Target::wall();
-    let t = setting.target();
+    // the surface picked (`G`): by name, and the target's numbers where the form moved them
+    // off it (issue 53 item 6)
     let mut words = Vec::new();
+    let (wall, c_t) = match &setting.surface {
+        Some(s) => {
+            words.extend(["--surface".into(), shell_word(&s.name)]);
+            (s.target(), s.tangential_damping)
+        }
+        None => (crate::target::Target::wall(), None),
+    };
+    if setting.tangential_damping != c_t {
+        let c = setting.tangential_damping.unwrap_or(0.0);
+        words.extend(["--tangential-damping".into(), number(c)]);
+    }
+    let t = setting.target();
     for (option, value, default) in [
         ("--target-mass", t.mass, wall.mass),
         ("--target-speed", t.speed, wall.speed),
@@ -139,6 +190,59 @@ fn what_the_ball_meets(setting: &Setting) -> Vec<String> {
         if value != default {
             words.extend([option.into(), number(value)]);
         }
+    }
+    words
+}
+
+/// `--k-r K --damping C` for the commands that take no `--lambda`, `--zeta`. `run` applies
+/// them before the conditions, which then move K_r and c by the factor they move the ball's
+/// own (src/api/conditions.rs): away from the record the line gives K_r and c before that
+/// factor, so that the command's ball has the screen's (to rounding).
+fn k_r_damping(preset: &Preset, setting: &Setting) -> [String; 4] {
+    let p = &setting.params;
+    let (mut k_r, mut c) = (p.k_r, p.damping);
+    if !setting.conditions.is_empty() {
+        let record = Setting {
+            conditions: ConditionsSpec::default(),
+            ..setting.clone()
+        };
+        if let (Ok(at), Ok(rec)) = (
+            conditioned_base(preset, setting),
+            conditioned_base(preset, &record),
+        ) {
+            k_r /= at.k_r / rec.k_r;
+            c /= at.damping / rec.damping;
+        }
+    }
+    ["--k-r".into(), number(k_r), "--damping".into(), number(c)]
+}
+
+/// `oblique`'s options of the surface the view bounces on (issue 53 item 6): `--surface NAME`
+/// when one was picked, then `--surface-stiffness`, `--surface-damping`, `--surface-mass` where
+/// the target (at rest) is not that surface's (or the rigid plate's), and c_t.
+fn surface_options(setting: &Setting) -> Vec<String> {
+    let mut words = Vec::new();
+    let (own, own_c_t) = match &setting.surface {
+        Some(s) => {
+            words.extend(["--surface".into(), shell_word(&s.name)]);
+            (s.target(), s.tangential_damping)
+        }
+        None => (crate::target::Target::wall(), None),
+    };
+    let t = setting.target();
+    for (option, value, default) in [
+        ("--surface-stiffness", t.stiffness, own.stiffness),
+        ("--surface-damping", t.damping, own.damping),
+        ("--surface-mass", t.mass, own.mass),
+    ] {
+        if value != default {
+            words.extend([option.into(), number(value)]);
+        }
+    }
+    // the surface's own c_t comes with --surface; another (0: none) is written
+    if setting.tangential_damping != own_c_t {
+        let c = setting.tangential_damping.unwrap_or(0.0);
+        words.extend(["--tangential-damping".into(), number(c)]);
     }
     words
 }
@@ -157,18 +261,10 @@ pub fn oblique_line(
     let mut words = vec!["bouncelab".to_string(), "oblique".into()];
     let mut ball = options(source, preset, setting);
     if let Some(at) = ball.iter().position(|w| w == "--lambda") {
-        let p = &setting.params;
-        ball.splice(
-            at..at + 4,
-            [
-                "--k-r".into(),
-                number(p.k_r),
-                "--damping".into(),
-                number(p.damping),
-            ],
-        );
+        ball.splice(at..at + 4, k_r_damping(preset, setting));
     }
     words.extend(ball);
+    words.extend(surface_options(setting));
     for (option, value) in [
         ("--angle", Some(o.angle)),
         ("--spin", Some(o.spin)),
@@ -195,14 +291,7 @@ pub fn shot_line(
     let mut words = vec!["bouncelab".to_string(), "shot".into()];
     let mut ball = options(source, preset, setting);
     if let Some(at) = ball.iter().position(|w| w == "--lambda") {
-        let p = &setting.params;
-        let kr = [
-            "--k-r".into(),
-            number(p.k_r),
-            "--damping".into(),
-            number(p.damping),
-        ];
-        ball.splice(at..at + 4, kr);
+        ball.splice(at..at + 4, k_r_damping(preset, setting));
     }
     if let Some(at) = ball.iter().position(|w| w == "--v0") {
         ball.drain(at..at + 2);
@@ -240,6 +329,14 @@ fn options(source: Source, preset: &Preset, setting: &Setting) -> Vec<String> {
     }
     if let Some((l, z)) = o.lambda_zeta {
         words.extend(["--lambda".into(), number(l), "--zeta".into(), number(z)]);
+    }
+    for (option, value) in [
+        ("--pressure", o.conditions.pressure),
+        ("--temperature", o.conditions.temperature),
+    ] {
+        if let Some(v) = value {
+            words.extend([option.into(), number(v)]);
+        }
     }
     words.extend(["--v0".into(), number(o.v0)]);
     words

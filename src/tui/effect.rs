@@ -35,6 +35,9 @@ pub enum Effect {
     ObliqueMap(Box<crate::tui::views::oblique::map::MapJob>),
     /// Read the presets for the picker (`g`); the loop answers `Action::PresetsListed`.
     ListPresets,
+    /// Read the surfaces for the surface picker (`G`); the loop answers
+    /// `Action::SurfacesListed`.
+    ListSurfaces,
     /// Write this session file (`S`) atomically, over an existing file only with `replace`
     /// (the user said y); the loop answers `Action::SessionSaved`, `Action::SessionExists` or
     /// `Action::SessionFailed`.

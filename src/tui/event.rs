@@ -204,6 +204,10 @@ fn carry_out(mut effects: Vec<Effect>, app: &mut App, worker: &mut Workers) {
                     let (entries, error) = super::picker::list();
                     Action::PresetsListed(entries, error)
                 }
+                Effect::ListSurfaces => {
+                    let (entries, error) = super::surface::list();
+                    Action::SurfacesListed(entries, error)
+                }
                 Effect::Save(request) => {
                     save::write(&request, catalog::user_presets_dir().as_deref())
                 }

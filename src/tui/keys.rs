@@ -2,7 +2,7 @@
 //! `update` needs to stop the help's scrolling at its end.
 
 /// (keys, what they do); a row without text is a section heading.
-pub const KEYS: [(&str, &str); 77] = [
+pub const KEYS: [(&str, &str); 78] = [
     ("l / L", "λ up / down (±0.01, coarse ±0.1)"),
     ("z / Z", "ζ up / down (×1.1, coarse ×2)"),
     ("v / V", "v0 up / down (±0.1, coarse ±1 m/s)"),
@@ -14,7 +14,8 @@ pub const KEYS: [(&str, &str); 77] = [
     ("1 2 3", "load superball, golf, baseball"),
     ("4", "the start preset, if another"),
     ("g", "pick a preset (embedded and user)"),
-    ("m", "edit m, R, K_p, K_r, c, z_p, E, λ, ζ, v0"),
+    ("G", "pick a surface (embedded and user)"),
+    ("m", "edit m, R, K_p, …, v0, p, T, the target"),
     ("x", "crosshair: read values off a chart"),
     ("N", "normalize a chart: F/F_m vs t/t_f"),
     ("+ / - / 0", "zoom a chart in / out / whole data"),
@@ -64,7 +65,7 @@ pub const KEYS: [(&str, &str); 77] = [
     ("In this help", ""),
     ("↑↓ j k PgUp/Dn", "scroll (Home / End: top / end)"),
     ("", ""),
-    ("In the preset picker (g)", ""),
+    ("In the preset or surface picker (g, G)", ""),
     ("↑↓ Enter / Esc", "choose, load / close"),
     ("", ""),
     ("With the crosshair (x)", ""),

@@ -41,6 +41,7 @@ pub mod save;
 pub mod session;
 pub mod setting;
 pub mod state;
+pub mod surface;
 pub mod theme;
 pub mod ui;
 pub mod views;

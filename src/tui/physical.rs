@@ -21,9 +21,13 @@ use crate::model::params::{self, ImpactParams, MEANINGFUL_MAX, MEANINGFUL_MIN};
 use crate::solver::ImpactResponse;
 use crate::text::{short, sig_trim};
 
+pub mod conditions;
 mod refusal;
+mod target;
 use refusal::ball_refusal;
 pub use refusal::refusal;
+pub use target::closing_check;
+use target::{closing, target_set};
 
 /// A field of the form, in the order shown.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -39,6 +43,10 @@ pub enum Field {
     Lambda,
     Zeta,
     V0,
+    /// The inflation (gauge) pressure p, as `--pressure` (inflated balls; issue 56).
+    Pressure,
+    /// The ball's temperature T, °C, as `--temperature`.
+    Temperature,
     /// The target's mass M (∞: the wall; docs/targets.md).
     TargetMass,
     /// The target's speed toward the ball v_t.
@@ -47,10 +55,12 @@ pub enum Field {
     TargetStiffness,
     /// The damping c_s in parallel with K_s.
     TargetDamping,
+    /// The tangential dashpot c_t beside K_t (the surface's; `oblique --tangential-damping`).
+    TangentialDamping,
 }
 
 impl Field {
-    pub const ALL: [Field; 14] = [
+    pub const ALL: [Field; 17] = [
         Field::Mass,
         Field::Radius,
         Field::KP,
@@ -61,10 +71,13 @@ impl Field {
         Field::Lambda,
         Field::Zeta,
         Field::V0,
+        Field::Pressure,
+        Field::Temperature,
         Field::TargetMass,
         Field::TargetSpeed,
         Field::TargetStiffness,
         Field::TargetDamping,
+        Field::TangentialDamping,
     ];
 
     pub fn symbol(self) -> &'static str {
@@ -79,10 +92,13 @@ impl Field {
             Field::Lambda => "λ",
             Field::Zeta => "ζ",
             Field::V0 => "v0",
+            Field::Pressure => "p",
+            Field::Temperature => "T",
             Field::TargetMass => "M",
             Field::TargetSpeed => "v_t",
             Field::TargetStiffness => "K_s",
             Field::TargetDamping => "c_s",
+            Field::TangentialDamping => "c_t",
         }
     }
 
@@ -92,8 +108,9 @@ impl Field {
             Field::Mass | Field::TargetMass => "kg",
             Field::Radius | Field::ZP => "m",
             Field::KP | Field::KR | Field::TargetStiffness => "N/m",
-            Field::C | Field::TargetDamping => "kg/s",
-            Field::E => "Pa",
+            Field::C | Field::TargetDamping | Field::TangentialDamping => "kg/s",
+            Field::E | Field::Pressure => "Pa",
+            Field::Temperature => "°C",
             Field::V0 | Field::TargetSpeed => "m/s",
             Field::Lambda | Field::Zeta => "",
         }
@@ -103,6 +120,10 @@ impl Field {
     /// mm: [`screen_unit`]) — and the factor from SI to it (issue 51 item 4: the form wrote
     /// m in kg to six digits beside a readout in g).
     pub fn screen(self) -> (&'static str, f64) {
+        // a pressure reads in kPa, as the readout's conditions line states it
+        if self == Field::Pressure {
+            return ("kPa", 1e-3);
+        }
         screen_unit(self.unit())
     }
 
@@ -150,6 +171,18 @@ impl Field {
             Field::TargetSpeed => s.target_speed,
             Field::TargetStiffness => s.target_stiffness,
             Field::TargetDamping => s.target_damping,
+            Field::TangentialDamping => s.tangential_damping.unwrap_or(0.0),
+            // as typed, else the record's; NaN ("—") where the ball has none
+            Field::Pressure => s
+                .conditions
+                .pressure
+                .or(s.record.pressure)
+                .unwrap_or(f64::NAN),
+            Field::Temperature => s
+                .conditions
+                .temperature
+                .or(s.record.temperature)
+                .unwrap_or(f64::NAN),
             Field::Lambda | Field::Zeta | Field::V0 => self.live().map_or(f64::NAN, |q| s.get(q)),
         }
     }
@@ -170,9 +203,16 @@ impl Field {
                 short(MEANINGFUL_MIN, 4),
                 short(MEANINGFUL_MAX, 4)
             ),
+            None if self == Field::TangentialDamping => {
+                format!("0 … {} kg/s (0: none)", short(MEANINGFUL_MAX, 4))
+            }
             None if self == Field::TargetDamping => {
                 format!("0 … {} kg/s, with K_s", short(MEANINGFUL_MAX, 4))
             }
+            None if self == Field::Pressure => {
+                "a gauge pressure in kPa, or with its unit (0.8bar, 8psi); inflated balls".into()
+            }
+            None if self == Field::Temperature => "above −273.15 °C".into(),
             None => format!(
                 "{} … {} {}",
                 short(MEANINGFUL_MIN * self.screen().1, 4),
@@ -214,6 +254,25 @@ impl Field {
             | Field::TargetSpeed
             | Field::TargetStiffness
             | Field::TargetDamping => next = target_set(self, value, s).map_err(refuse)?,
+            // as `oblique --tangential-damping` takes it: finite, ≥ 0 (0: none)
+            Field::TangentialDamping => {
+                if !(0.0..=MEANINGFUL_MAX).contains(&value) {
+                    return Err(refuse(format!(
+                        "invalid tangential_damping: {}",
+                        self.shown(value)
+                    )));
+                }
+                next.tangential_damping = (value > 0.0).then_some(value);
+            }
+            // the preset's record is needed: App::submit_physical takes these
+            // (physical::conditions::set)
+            Field::Pressure | Field::Temperature => {
+                return Err(format!("{} is set with its ball's record", self.symbol()));
+            }
+            Field::KP | Field::E if conditions::k_p_refused(s).is_some() => {
+                let why = conditions::k_p_refused(s).unwrap_or_default();
+                return Err(refuse(why));
+            }
             Field::E => {
                 if !s.elastomer {
                     return Err(
@@ -265,40 +324,6 @@ impl Field {
         let i = Field::ALL.iter().position(|&f| f == self).unwrap_or(0);
         Field::ALL[(i + n - 1) % n]
     }
-}
-
-/// `s` with the target's field `field` set to `value`, checked as `collide` checks it
-/// (`Target::validate`); c_s needs K_s, as `--target-damping` needs `--target-stiffness`: a
-/// dashpot beside a rigid spring has no effect (docs/targets.md §7).
-fn target_set(field: Field, value: f64, s: &Setting) -> Result<Setting, String> {
-    let mut next = s.clone();
-    match field {
-        Field::TargetMass => next.target_mass = value,
-        Field::TargetSpeed => next.target_speed = value,
-        Field::TargetStiffness => next.target_stiffness = value,
-        _ => next.target_damping = value,
-    }
-    next.target().validate().map_err(|e| refusal(&e))?;
-    if next.target_damping != 0.0 && next.target_stiffness == f64::INFINITY {
-        return Err(if field == Field::TargetStiffness {
-            "a rigid surface takes no damping: set c_s to 0 first".into()
-        } else {
-            "c_s has no effect on a rigid surface: type K_s first".into()
-        });
-    }
-    Ok(next)
-}
-
-/// The ball and the target must meet (v0 + v_t > 0), and the pair's reduced ball be one the
-/// model takes (docs/targets.md §2).
-fn closing(s: &Setting) -> Result<(), String> {
-    if s.params.v0 + s.target_speed <= 0.0 {
-        return Err(format!(
-            "the ball and the target never meet: v0 + v_t = {} m/s must be positive",
-            value(s.params.v0 + s.target_speed)
-        ));
-    }
-    s.run_params().validate().map_err(|e| refusal(&e))
 }
 
 /// The contact modulus the values imply for an elastomer ball: E = K_p/(2π z_p) (Eq. 20 with

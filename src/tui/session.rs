@@ -2,11 +2,13 @@
 //! --session FILE` opens the explorer in it again — the ball (its preset and every parameter,
 //! SI), the law, v0, the target, the pins, the measured file (by path), the view, the
 //! selected parameter, the map's quantity, targets and window (`map`), the fit pane's fit
-//! (`fit`) and the oblique view's θ, ω, μ, K_t, κ (`oblique`, version 2) (docs/explorer.md,
+//! (`fit`), the oblique view's θ, ω, μ, K_t, κ (`oblique`, version 2) and the flight view's
+//! launch and μ (`flight`, version 3) (docs/explorer.md,
 //! "Sessions"). Written atomically (src/atomic.rs); a
 //! file that does not read is one line `FILE:LINE:COLUMN: why`, exit 2.
 
 pub mod fit;
+pub mod flight;
 pub mod map;
 pub mod oblique;
 
@@ -20,10 +22,10 @@ use serde::{Deserialize, Serialize};
 use std::path::{Path, PathBuf};
 
 /// The session file's version: what this explorer writes. Version 2 added the `[oblique]`
-/// table; a version-1 file (without it) still reads ([`READS`]).
-pub const VERSION: u32 = 2;
+/// table, version 3 the `[flight]` table; older files (without them) still read ([`READS`]).
+pub const VERSION: u32 = 3;
 /// The versions this explorer reads.
-pub const READS: [u32; 2] = [1, VERSION];
+pub const READS: [u32; 3] = [1, 2, VERSION];
 
 /// The explorer's state as the file holds it.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -48,6 +50,9 @@ pub struct Session {
     /// The oblique view's values, page and map quantity (absent: its defaults).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub oblique: Option<oblique::ObliqueState>,
+    /// The flight view's launch, μ and selected value (absent: its defaults; version 3).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub flight: Option<flight::FlightState>,
     /// The pinned settings, oldest first.
     #[serde(default)]
     pub pins: Vec<Ball>,
@@ -66,6 +71,19 @@ pub struct Ball {
     pub target_speed: f64,
     pub target_stiffness: f64,
     pub target_damping: f64,
+    /// The inflation pressure (Pa) and temperature (°C) typed in the form, as `--pressure`
+    /// and `--temperature` (absent: the record's; version 3). `params` are the ball's at them.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub pressure: Option<f64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub temperature: Option<f64>,
+    /// The surface chosen (`G`), by name as `--surface` takes it (absent: none; version 3):
+    /// read again from the embedded and user surfaces; the target above may differ from it.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub surface: Option<String>,
+    /// c_t, kg/s (absent: none; version 3).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub tangential_damping: Option<f64>,
     pub params: ImpactParams,
 }
 
@@ -101,6 +119,10 @@ impl App {
             target_speed: s.target_speed,
             target_stiffness: s.target_stiffness,
             target_damping: s.target_damping,
+            pressure: s.conditions.pressure,
+            temperature: s.conditions.temperature,
+            surface: s.surface.as_ref().map(|x| x.name.clone()),
+            tangential_damping: s.tangential_damping,
             params: s.params,
         };
         Session {
@@ -112,6 +134,7 @@ impl App {
             map: Some(map::MapState::of(&self.map)),
             fit: self.fit.pane.as_ref().and_then(fit::Fit::of),
             oblique: Some(oblique::ObliqueState::of(&self.oblique)),
+            flight: Some(flight::FlightState::of(&self.flight)),
             pins: self.pins.iter().map(|g| ball(&g.setting)).collect(),
         }
     }
@@ -152,6 +175,10 @@ impl App {
         if let Some(o) = &session.oblique {
             o.restore(&mut self.oblique)?;
         }
+        if let Some(f) = &session.flight {
+            let ball = self.oblique_ball();
+            f.restore(&mut self.flight, &ball)?;
+        }
         self.undo.clear();
         self.keep();
         self.message = None;
@@ -179,12 +206,35 @@ impl App {
             target_speed: b.target_speed,
             target_stiffness: b.target_stiffness,
             target_damping: b.target_damping,
+            conditions: crate::api::ConditionsSpec {
+                pressure: b.pressure,
+                temperature: b.temperature,
+                ..Default::default()
+            },
+            record: crate::tui::setting::record(&self.presets[preset]),
+            surface: b.surface.as_deref().map(surface_named).transpose()?,
+            tangential_damping: b.tangential_damping,
         };
+        if let Some(c) = s.tangential_damping
+            && !(c.is_finite() && c >= 0.0)
+        {
+            return Err(format!(
+                "tangential_damping: {c} (must be zero or positive, kg/s)"
+            ));
+        }
         // the radius as `run --radius` checks it (it sets the validity check, z_m < R)
         crate::model::params::check_positive(crate::model::params::Field::Radius, s.radius)
             .map_err(|e| e.to_string())?;
         s.params.validate().map_err(|e| e.to_string())?;
         s.target().validate().map_err(|e| e.to_string())?;
+        // the conditions as `--pressure`, `--temperature` check them (the library's refusal)
+        let preset = &self.presets[preset];
+        crate::tui::physical::conditions::conditioned(
+            preset,
+            preset.params(),
+            s.radius,
+            &s.conditions,
+        )?;
         Ok(s)
     }
 }
@@ -215,13 +265,24 @@ impl Session {
                 .position(|l| l.trim_start().starts_with("version"))
                 .map_or(1, |i| i + 1);
             return Err(format!(
-                "{}:{line}:1: version {} is not one this explorer reads (1 or {VERSION})",
+                "{}:{line}:1: version {} is not one this explorer reads (1, 2 or {VERSION})",
                 path.display(),
                 s.version
             ));
         }
         Ok(s)
     }
+}
+
+/// The surface `name` among the embedded and the user's surfaces, as `--surface` finds it; or
+/// why not (`surface: …`, listing the names there are).
+fn surface_named(name: &str) -> Result<crate::target::surface::Surface, String> {
+    use crate::catalog::surfaces;
+    let all = surfaces::load(surfaces::user_surfaces_dir().as_deref())
+        .map_err(|e| format!("surface: {e}"))?;
+    surfaces::find(&all, name)
+        .map(|e| e.surface)
+        .map_err(|e| format!("surface: {e}"))
 }
 
 /// The 1-based line and column (in characters) of byte `at` of `text`.

@@ -1,6 +1,7 @@
 //! What the model runs on, as the undo stack keeps it.
 
 use super::param::Param;
+use crate::api::ConditionsSpec;
 use crate::model::contact::ContactLaw;
 use crate::model::params::ImpactParams;
 use crate::preset::Preset;
@@ -29,6 +30,31 @@ pub struct Setting {
     /// c_s (kg/s), typed in the form: the pair's run on a compliant target (docs/targets.md).
     pub target_stiffness: f64,
     pub target_damping: f64,
+    /// The inflation pressure and temperature typed in the form (issue 56), as `--pressure`
+    /// and `--temperature` take them (`None`: the record's); `params` are the ball's at them
+    /// (src/tui/physical/conditions.rs). The other fields of the spec stay `None`.
+    pub conditions: ConditionsSpec,
+    /// The pressure and temperature the preset's record states (`None` where it states none):
+    /// what the form shows where none is typed.
+    pub record: ConditionsSpec,
+    /// The surface chosen in the surface picker (`G`, issue 53 item 6), as its file gives it
+    /// (`None`: none chosen, the wall until a target is typed). Its normal give is the target
+    /// above when chosen; the form may then move K_s, c_s, M off it (`y` writes them as
+    /// overrides of it).
+    pub surface: Option<crate::target::surface::Surface>,
+    /// The tangential dashpot c_t (kg/s) in parallel with K_t (`None`: none), the chosen
+    /// surface's (`oblique --tangential-damping`; docs/oblique.md §1).
+    pub tangential_damping: Option<f64>,
+}
+
+/// The record's pressure (Pa) and temperature (°C) of `preset`, where it states them.
+pub fn record(preset: &Preset) -> ConditionsSpec {
+    let c = preset.calibration.as_ref();
+    ConditionsSpec {
+        pressure: c.and_then(|c| c.pressure),
+        temperature: c.and_then(|c| c.temperature),
+        ..ConditionsSpec::default()
+    }
 }
 
 impl Setting {
@@ -43,6 +69,10 @@ impl Setting {
             target_speed: 0.0,
             target_stiffness: f64::INFINITY,
             target_damping: 0.0,
+            conditions: ConditionsSpec::default(),
+            record: record(preset),
+            surface: None,
+            tangential_damping: None,
         }
     }
 

@@ -195,6 +195,8 @@ pub enum Overlay {
     Command(String),
     /// The preset picker (`g`).
     Picker(super::picker::Picker),
+    /// The surface picker (`G`).
+    Surfaces(super::surface::SurfacePicker),
     /// The physical-inputs form (`m`).
     Form(super::physical::Form),
     /// "Quit?" with what would be lost (`q` with pins, measured data or a fit).

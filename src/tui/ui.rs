@@ -266,6 +266,9 @@ fn render_overlay(app: &App, theme: Theme, area: Rect, buf: &mut Buffer) {
             crate::tui::widgets::quit::QuitDialog { lost, theme }.render(area, buf)
         }
         Overlay::Picker(picker) => PickerBox { picker, theme }.render(area, buf),
+        Overlay::Surfaces(picker) => {
+            crate::tui::widgets::surfaces::SurfacesBox { picker, theme }.render(area, buf)
+        }
         Overlay::Form(form) => crate::tui::widgets::form::FormBox {
             form: *form,
             setting: app.setting(),
@@ -362,6 +365,7 @@ impl Widget for &App {
                 [Some(a), Some(b), Some(c)] => Some([a, b, c]),
                 _ => None,
             };
+            let surface = self.oblique_surface_line();
             crate::tui::views::oblique::widget::ObliquePanel {
                 view: self.oblique_view(),
                 time: time.as_ref(),
@@ -371,6 +375,7 @@ impl Widget for &App {
                     self.oblique_value(ObliqueParam::TangentialStiffness),
                     self.oblique_value(ObliqueParam::InertiaFactor),
                 ],
+                surface: surface.as_deref(),
                 theme,
             }
             .render(body, buf);

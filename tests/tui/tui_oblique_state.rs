@@ -215,7 +215,7 @@ fn a_session_keeps_the_oblique_view_and_a_version_1_file_still_reads() {
     enter(&mut app, "0.5");
     press(&mut app, &[KeyCode::Char('t'), KeyCode::Char('n')]);
     let text = app.session().to_toml();
-    assert!(text.contains("version = 2"), "{text}");
+    assert!(text.contains("version = 3"), "{text}");
     assert!(text.contains("[oblique]"), "{text}");
     let read = Session::parse(Path::new("s.toml"), &text).unwrap();
     let back = tennis().with_session(&read).unwrap();
@@ -235,7 +235,7 @@ fn a_session_keeps_the_oblique_view_and_a_version_1_file_still_reads() {
     let v1 = tennis()
         .session()
         .to_toml()
-        .replace("version = 2", "version = 1");
+        .replace("version = 3", "version = 1");
     let v1 = v1.split("[oblique]").next().unwrap().to_string();
     let read = Session::parse(Path::new("v1.toml"), &v1).unwrap();
     let old = tennis().with_session(&read).unwrap();

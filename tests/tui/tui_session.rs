@@ -93,7 +93,7 @@ fn a_bad_session_is_one_line_with_file_line_and_column_exit_2() {
             "unknown law",
         ),
         (format!("colour = 1\n{text}"), "unknown field"),
-        (text.replace("version = 2", "version = 7"), "version 7"),
+        (text.replace("version = 3", "version = 7"), "version 7"),
         // it was taken, and the readout said "α_max 0.853 mm > R -1000 mm (×-0.000853)"
         (
             text.lines()

@@ -109,11 +109,11 @@ fn map(key: KeyEvent) -> Option<Action> {
     }
 }
 
-/// In the preset picker: move, load, or close (`q` and `g` close it too).
+/// In the preset or surface picker: move, choose, or close (`q`, `g` and `G` close it too).
 fn picker(code: KeyCode) -> Option<Action> {
     let move_by = |s| Some(Action::PickerMove(s));
     match code {
-        KeyCode::Esc | KeyCode::Char('q' | 'g') => Some(Action::CloseHelp),
+        KeyCode::Esc | KeyCode::Char('q' | 'g' | 'G') => Some(Action::CloseHelp),
         KeyCode::Enter => Some(Action::PickerChoose),
         KeyCode::Up | KeyCode::Char('k') => move_by(Scroll::Up),
         KeyCode::Down | KeyCode::Char('j') => move_by(Scroll::Down),
@@ -173,6 +173,7 @@ fn normal(key: KeyEvent) -> Option<Action> {
         KeyCode::Char('S') => Some(Action::SaveSession),
         KeyCode::Char('y') => Some(Action::ShowCommand),
         KeyCode::Char('g') => Some(Action::OpenPicker),
+        KeyCode::Char('G') => Some(Action::OpenSurfaces),
         KeyCode::Char('m') => Some(Action::OpenForm),
         KeyCode::Char('x') => Some(Action::Crosshair),
         KeyCode::Tab => Some(Action::NextView),

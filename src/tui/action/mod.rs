@@ -124,7 +124,11 @@ pub enum Action {
     OpenPicker,
     /// The presets the loop found, and why the user presets could not be read.
     PresetsListed(Vec<super::picker::PickEntry>, Option<String>),
-    /// Move the picker's highlight.
+    /// `G`: open the surface picker (the loop lists the surfaces; issue 53 item 6).
+    OpenSurfaces,
+    /// The surfaces the loop found, and why the user surfaces could not be read.
+    SurfacesListed(Vec<crate::catalog::surfaces::SurfaceEntry>, Option<String>),
+    /// Move the picker's highlight (the preset or the surface picker).
     PickerMove(Scroll),
     /// Enter in the picker: load the highlighted preset.
     PickerChoose,

@@ -15,6 +15,7 @@ pub(super) fn is_answer(action: &Action) -> bool {
             | Action::SessionExists { .. }
             | Action::SessionFailed { .. }
             | Action::PresetsListed(..)
+            | Action::SurfacesListed(..)
             | Action::SpeedReady(..)
             | Action::ModelsReady(..)
             | Action::Exported { .. }
@@ -62,6 +63,7 @@ impl App {
             Action::SessionExists { path, text } => self.ask_session_overwrite(path, text),
             Action::SessionFailed { path, why } => self.session_failed(&path, why),
             Action::PresetsListed(..) => self.picker(action),
+            Action::SurfacesListed(entries, error) => self.surfaces_listed(entries, error),
             Action::SpeedReady(request, result) => self.receive_speed(&request, result),
             Action::ModelsReady(request, result) => self.receive_models(request, result),
             Action::Exported { files } => self.info(export::message(&files)),

@@ -51,6 +51,7 @@ impl App {
         self.undo.push(Undoable {
             setting: self.setting.clone(),
             oblique: self.oblique.values(),
+            flight: self.flight.values,
             measured: Some(Box::new(was)),
         });
     }

@@ -16,6 +16,17 @@ impl App {
     /// The explorer opened in the state the command line gave (`bouncelab --preset golf --law
     /// hertz --v0 3 …`, src/cli/explore.rs): the ball's parameters, law and radius (None: the
     /// preset's), the start of the undo history.
+    /// The explorer started at the conditions `--pressure` and `--temperature` asked (the
+    /// parameters `with_start` takes are the ball's at them): the form shows them, `y` and `S`
+    /// carry them (issue 56). Pressure or temperature back at the record's is none.
+    pub fn with_conditions(mut self, spec: crate::api::ConditionsSpec) -> App {
+        let rec = self.setting.record;
+        let c = &mut self.setting.conditions;
+        c.pressure = spec.pressure.filter(|&p| Some(p) != rec.pressure);
+        c.temperature = spec.temperature.filter(|&t| Some(t) != rec.temperature);
+        self
+    }
+
     pub fn with_start(
         mut self,
         params: crate::model::params::ImpactParams,

@@ -48,6 +48,7 @@ impl App {
                     let said = self.undone_text(&previous);
                     self.setting = previous.setting;
                     self.oblique.set_values(previous.oblique);
+                    self.flight.values = previous.flight;
                     if let Some(m) = previous.measured {
                         self.put_back(*m);
                     }
@@ -130,6 +131,7 @@ impl App {
         self.undo.push(Undoable {
             setting: self.setting.clone(),
             oblique: self.oblique.values(),
+            flight: self.flight.values,
             measured: None,
         });
     }

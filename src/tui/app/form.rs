@@ -1,7 +1,7 @@
 //! The physical-inputs form (`m`) as part of [`App::update`]: the highlighted field moves,
 //! Enter types a value through the value entry, and each accepted value is one undoable change.
 
-use super::{App, Overlay, Purpose};
+use super::{App, Overlay, Purpose, Setting};
 use crate::text::parse::number;
 use crate::text::sig_trim;
 use crate::tui::action::{Action, Scroll};
@@ -18,6 +18,18 @@ fn entry_text(field: Field, v: f64) -> String {
         sig_trim(v * field.screen().1, 6)
     } else {
         String::new()
+    }
+}
+
+/// The SI value of `text` typed in `field`: a number in the field's screen unit, or for the
+/// pressure a number with its unit as `--pressure` reads it (0.8bar, 8psi, 55kPa, 80000Pa).
+fn typed(field: Field, text: &str) -> Result<f64, String> {
+    match number(text) {
+        Ok(v) => Ok(v / field.screen().1),
+        Err(_) if field == Field::Pressure => {
+            crate::conditions::pressure::parse("pressure", text.trim())
+        }
+        Err(e) => Err(e),
     }
 }
 
@@ -60,8 +72,7 @@ impl App {
             self.open_form(field);
             return;
         }
-        let checked = number(text)
-            .map(|v| v / field.screen().1)
+        let checked = typed(field, text)
             .map_err(|e| {
                 format!(
                     "{e}; {} kept (range {})",
@@ -69,7 +80,15 @@ impl App {
                     field.range_text()
                 )
             })
-            .and_then(|v| field.check(v, &self.setting));
+            .and_then(|v| match field {
+                Field::Pressure | Field::Temperature => {
+                    let preset = self.preset();
+                    let base = |s: &Setting| crate::tui::command::conditioned_base(preset, s);
+                    physical::conditions::set(field, v, &self.setting, preset, &base)
+                        .map_err(|e| format!("{e}; {} kept", field.symbol()))
+                }
+                _ => field.check(v, &self.setting),
+            });
         match checked {
             Ok(next) => {
                 self.change(next);

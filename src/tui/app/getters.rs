@@ -95,7 +95,7 @@ impl App {
             Overlay::Help | Overlay::Command(_) => Mode::Help,
             Overlay::Input(_) => Mode::Input,
             Overlay::Confirm(_) | Overlay::Ask(_) => Mode::Confirm,
-            Overlay::Picker(_) => Mode::Picker,
+            Overlay::Picker(_) | Overlay::Surfaces(_) => Mode::Picker,
             Overlay::Form(_) => Mode::Form,
             Overlay::Quit(_) => Mode::QuitConfirm,
         }

@@ -28,17 +28,23 @@ impl App {
                 });
             }
             Action::PickerMove(how) => {
-                if let Overlay::Picker(p) = &mut self.overlay {
-                    let last = p.entries.len().saturating_sub(1);
-                    p.selected = match how {
-                        Scroll::Up => p.selected.saturating_sub(1),
-                        Scroll::Down => (p.selected + 1).min(last),
-                        Scroll::PageUp => p.selected.saturating_sub(PAGE),
-                        Scroll::PageDown => (p.selected + PAGE).min(last),
-                        Scroll::Home => 0,
-                        Scroll::End => last,
-                    };
-                }
+                let (selected, n) = match &mut self.overlay {
+                    Overlay::Picker(p) => (&mut p.selected, p.entries.len()),
+                    Overlay::Surfaces(p) => (&mut p.selected, p.entries.len()),
+                    _ => return,
+                };
+                let last = n.saturating_sub(1);
+                *selected = match how {
+                    Scroll::Up => selected.saturating_sub(1),
+                    Scroll::Down => (*selected + 1).min(last),
+                    Scroll::PageUp => selected.saturating_sub(PAGE),
+                    Scroll::PageDown => (*selected + PAGE).min(last),
+                    Scroll::Home => 0,
+                    Scroll::End => last,
+                };
+            }
+            Action::PickerChoose if matches!(self.overlay, Overlay::Surfaces(_)) => {
+                self.choose_surface()
             }
             Action::PickerChoose => self.choose(),
             _ => {}

@@ -15,11 +15,12 @@ impl App {
         }
     }
 
-    /// The setting and oblique values now are the ones kept: `q` loses nothing of them.
+    /// The setting, oblique and flight values now are the ones kept: `q` loses nothing of them.
     pub(in crate::tui) fn keep(&mut self) {
         self.kept = Undoable {
             setting: self.setting.clone(),
             oblique: self.oblique.values(),
+            flight: self.flight.values,
             measured: None,
         };
     }
@@ -41,7 +42,10 @@ impl App {
         }
         // a change undone back to the start is none (tests/tui/tui_quit.rs:
         // `q_asks_after_any_edit_and_not_after_it_is_undone`)
-        if self.setting != self.kept.setting || self.oblique.values() != self.kept.oblique {
+        if self.setting != self.kept.setting
+            || self.oblique.values() != self.kept.oblique
+            || self.flight.values != self.kept.flight
+        {
             lost.push("your changes (S saves them)".to_string());
         }
         (!lost.is_empty()).then(|| lost.join(", "))

@@ -5,6 +5,7 @@
 use super::{App, Setting, Undoable};
 use crate::tui::format::{screen_unit, value};
 use crate::tui::physical::Field;
+use crate::tui::views::flight::param::FlightParam;
 use crate::tui::views::oblique::param::ObliqueParam;
 use crate::tui::views::oblique::state::ObliqueValues;
 
@@ -33,8 +34,10 @@ fn change(name: &str, unit: &str, now: Option<f64>, then: Option<f64>) -> String
 
 /// The fields in the order `u` names them: what a user types or steps first, λ and ζ (which
 /// follow m, K_p, …) after, K_r and c (which follow λ and ζ) last.
-const CHANGED_FIRST: [Field; 14] = [
+const CHANGED_FIRST: [Field; 17] = [
     Field::V0,
+    Field::Pressure,
+    Field::Temperature,
     Field::Mass,
     Field::Radius,
     Field::KP,
@@ -44,11 +47,21 @@ const CHANGED_FIRST: [Field; 14] = [
     Field::TargetSpeed,
     Field::TargetStiffness,
     Field::TargetDamping,
+    Field::TangentialDamping,
     Field::Lambda,
     Field::Zeta,
     Field::KR,
     Field::C,
 ];
+
+/// "p 60 → 80 kPa": a form field's change in the form's own unit ([`Field::show`]).
+fn field_change(f: Field, now: f64, then: f64) -> String {
+    let (a, b) = (f.show(now), f.show(then));
+    let (a, _) = a.split_once(' ').unwrap_or((&a, ""));
+    let (b, unit) = b.split_once(' ').unwrap_or((&b, ""));
+    let sep = if unit.is_empty() { "" } else { " " };
+    format!("{} {a} → {b}{sep}{unit}", f.symbol())
+}
 
 fn oblique_value(v: &ObliqueValues, p: ObliqueParam) -> Option<f64> {
     match p {
@@ -69,6 +82,15 @@ impl App {
             let name = |i: usize| self.presets.get(i).map_or("?", |p| p.name.as_str());
             parts.push(format!("ball {} → {}", name(now.preset), name(was.preset)));
         }
+        // the surface picked (`G`): by name, the rigid plate's when none was picked
+        let surface = |s: &Setting| {
+            s.surface
+                .as_ref()
+                .map_or("none".to_string(), |x| x.name.clone())
+        };
+        if surface(now) != surface(was) {
+            parts.push(format!("surface {} → {}", surface(now), surface(was)));
+        }
         if now.law != was.law {
             parts.push(format!("law {} → {}", now.law, was.law));
         }
@@ -77,7 +99,7 @@ impl App {
                 let (a, b) = (f.get(now), f.get(was));
                 // NaN on both sides (a metal ball's E) is no change
                 if a != b && !(a.is_nan() && b.is_nan()) {
-                    parts.push(change(f.symbol(), f.unit(), Some(a), Some(b)));
+                    parts.push(field_change(f, a, b));
                 }
             }
         }
@@ -86,6 +108,15 @@ impl App {
             let (a, b) = (oblique_value(&obl, p), oblique_value(&then.oblique, p));
             if a != b {
                 parts.push(change(p.symbol(), p.unit().trim(), a, b));
+            }
+        }
+        // the flight view's launch and μ (issue 57 item 3), in the view's own units (its
+        // height in m, as the view writes it: "flight H 2.9 → 2.8 m")
+        for p in FlightParam::ALL {
+            let (a, b) = (self.flight.values.get(p), then.flight.get(p));
+            if a != b {
+                let (name, (a, b)) = (p.symbol(), (value(a), value(b)));
+                parts.push(format!("flight {name} {a} → {b}{}", p.unit()));
             }
         }
         if let Some(m) = &then.measured {

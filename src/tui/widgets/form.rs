@@ -1,6 +1,6 @@
 //! The physical-inputs form (`m`): each field with its value and unit (the readout's: m in g,
 //! R and z_p in mm, four significant digits) (E with the relation
-//! that ties it to K_p, "—" for a metal ball), the highlighted one marked ▶, the derived ω0, z̄_p, λ, ζ of the current values, and the validity warning when the
+//! that ties it to K_p, "—" for a metal ball; p and T, "—" where the ball has none), the highlighted one marked ▶, the derived ω0, z̄_p, λ, ζ of the current values, and the validity warning when the
 //! run leaves the model (z_m or α_max beyond R).
 
 use crate::tui::format::value;
@@ -89,6 +89,17 @@ impl FormBox<'_> {
                 if f == Field::E {
                     // what E is in this model: the modulus K_p and z_p imply (Eq. 20)
                     spans.push(Span::styled("  K_p = 2π E z_p", self.theme.dim()));
+                }
+                // why a condition has no value (issue 56): the library takes none for it
+                let none = f.get(self.setting).is_nan();
+                match f {
+                    Field::Pressure if none => {
+                        spans.push(Span::styled("  solid ball", self.theme.dim()))
+                    }
+                    Field::Temperature if none => {
+                        spans.push(Span::styled("  not recorded", self.theme.dim()))
+                    }
+                    _ => {}
                 }
                 Line::from(spans)
             })

@@ -15,5 +15,6 @@ pub mod quit;
 pub mod readout;
 pub mod status;
 pub mod strokes;
+pub mod surfaces;
 pub mod tags;
 pub mod title;

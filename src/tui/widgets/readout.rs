@@ -353,6 +353,10 @@ impl Readout<'_> {
             lines.push(Line::styled(note, theme.dim()));
         }
         lines.extend(self.target_note());
+        // the pressure and temperature the form set (issue 56)
+        if let Some(c) = crate::tui::physical::conditions::stated(self.preset, self.setting) {
+            lines.push(Line::styled(c, theme.dim()));
+        }
         // a preset saved at another speed keeps no measurements, and its `[measured] v0` is
         // only the speed it runs at: claim no measurement then
         let m = &self.preset.measured;
@@ -370,8 +374,21 @@ impl Readout<'_> {
     /// (docs/targets.md; docs/explorer.md).
     fn target_note(&self) -> Vec<Line<'static>> {
         let t = self.setting.target();
+        // the surface picked (`G`, issue 53 item 6): its name and numbers; the pair's line
+        // below when the form moved the target off it
+        let mut lines = Vec::new();
+        if let Some(s) = &self.setting.surface {
+            let own = crate::tui::surface::numbers(s);
+            lines.push(Line::styled(
+                format!(" surface {}: {own}", s.name),
+                self.theme.dim(),
+            ));
+            if t == s.target() {
+                return lines;
+            }
+        }
         if t == crate::target::Target::wall() {
-            return Vec::new();
+            return lines;
         }
         let v = |x: f64| {
             if x.is_finite() {
@@ -393,6 +410,7 @@ impl Readout<'_> {
                 v(t.damping)
             ));
         }
-        vec![Line::styled(text, self.theme.dim())]
+        lines.push(Line::styled(text, self.theme.dim()));
+        lines
     }
 }

@@ -9,4 +9,5 @@ pub mod export;
 pub mod param;
 pub mod state;
 mod update;
+pub(in crate::tui) use update::spec;
 pub mod widget;

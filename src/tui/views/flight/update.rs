@@ -1,6 +1,7 @@
 //! The flight view's part of `update`: `h` in and out, the launch and μ stepped (each taken
-//! only where the library takes it: a refused value leaves the last one and says why), and
-//! the shot kept up to date with the ball (state.rs says what it is).
+//! only where the library takes it: a refused value leaves the last one and says why; a
+//! taken one is a change `u` undoes), and the shot kept up to date with the ball (state.rs
+//! says what it is).
 
 use crate::api::ShotSpec;
 use crate::text::number;
@@ -58,6 +59,10 @@ impl App {
         let ball = self.oblique_ball();
         match ball.shot(&spec(&next)) {
             Ok(r) => {
+                // a step `u` undoes, as the ball's and the oblique view's (issue 57 item 3)
+                if next != self.flight.values {
+                    self.remember();
+                }
                 self.flight.values = next;
                 self.flight.key = Some((ball, next));
                 self.flight.shot = Some(Ok(r));

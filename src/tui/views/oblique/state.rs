@@ -22,9 +22,14 @@ pub enum Page {
     Map,
 }
 
-/// The key the impact was computed for: the ball (as the library takes it) and the view's
-/// values.
-pub type ImpactKey = (crate::Ball, ObliqueValues);
+/// The key the impact was computed for: the ball (as the library takes it), the view's
+/// values, the surface it bounces on (at rest) and the tangential dashpot c_t.
+pub type ImpactKey = (
+    crate::Ball,
+    ObliqueValues,
+    crate::target::Target,
+    Option<f64>,
+);
 
 /// What the user sets in the view: θ, ω, μ and the tangential model's K_t and κ (`None`: the
 /// ball's own, Mindlin's K_t and the preset's κ). The undo history and a session keep these

@@ -55,6 +55,44 @@ impl App {
         }
     }
 
+    /// The surface the oblique view's ball bounces on: the target's normal give (K_s ∥ c_s on
+    /// M) at rest — the surface picked (`G`) or typed in the form; the wall until then. A
+    /// target's speed v_t is the impact view's pair's, not a surface's: not used here.
+    pub fn oblique_surface(&self) -> crate::target::Target {
+        crate::target::Target {
+            speed: 0.0,
+            ..self.setting.target()
+        }
+    }
+
+    /// The oblique readout's line of the surface when it is not the wall: " surface clay:
+    /// K_s 4e5 N/m, c_s 20 kg/s" (its name when picked; the numbers the impact runs on,
+    /// c_t with them).
+    pub fn oblique_surface_line(&self) -> Option<String> {
+        let s = &self.setting;
+        let t = self.oblique_surface();
+        let plain = t == crate::target::Target::wall() && s.tangential_damping.is_none();
+        if plain && s.surface.is_none() {
+            return None;
+        }
+        let shown = crate::target::surface::Surface {
+            stiffness: t.stiffness,
+            damping: t.damping,
+            mass: t.mass,
+            friction: None,
+            tangential_stiffness: None,
+            tangential_damping: s.tangential_damping,
+            ..s.surface
+                .clone()
+                .unwrap_or_else(crate::target::surface::Surface::rigid_plate)
+        };
+        let name = s.surface.as_ref().map_or("typed", |x| x.name.as_str());
+        Some(format!(
+            " surface {name}: {}",
+            crate::tui::surface::numbers(&shown)
+        ))
+    }
+
     /// The keyboard's mode in the oblique view, by its page.
     pub(in crate::tui) fn oblique_mode(&self) -> crate::tui::action::Mode {
         match self.oblique.page {
@@ -226,7 +264,11 @@ impl App {
         }
         let ball = self.oblique_ball();
         let o = &self.oblique;
-        let key: ImpactKey = (ball.clone(), o.values());
+        // on the surface the form or the surface picker set (issue 53 item 6), at rest, as
+        // `bouncelab oblique --surface …` bounces on it; the wall's is the very same answer
+        let surface = self.oblique_surface();
+        let c_t = self.setting.tangential_damping;
+        let key: ImpactKey = (ball.clone(), o.values(), surface, c_t);
         if o.impact_for.as_ref() != Some(&key) {
             let spec = ObliqueSpec {
                 v: None,
@@ -236,11 +278,14 @@ impl App {
                 tangential_stiffness: o.tangential_stiffness,
                 inertia_factor: o.inertia_factor,
             };
-            let impact = ball.oblique(&spec, SAMPLES).map_err(|e| e.to_string());
+            let impact = ball
+                .oblique_on(&spec, c_t, SAMPLES, &surface)
+                .map_err(|e| e.to_string());
             let tennis = ITF_COURT_PACE.balls.contains(&self.preset().name.as_str());
             // `bouncelab court --friction μ` with the view's K_t and κ, as `court` takes them
             let pace = tennis.then(|| {
-                ball.court_pace(o.friction, o.tangential_stiffness, o.inertia_factor)
+                let tangential = (o.tangential_stiffness, o.inertia_factor, c_t);
+                ball.court_pace_on(o.friction, tangential, &surface)
                     .map_err(|e: BallError| e.to_string())
             });
             let o = &mut self.oblique;

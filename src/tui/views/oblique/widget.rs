@@ -32,6 +32,9 @@ pub struct ObliquePanel<'a> {
     pub v0: f64,
     /// K_t (N/m) and κ the impact runs on (the view's, or the ball's where it sets none).
     pub tangential: [f64; 2],
+    /// The surface the ball bounces on, when it is not the wall: its name (when picked) and
+    /// K_s, c_s, M, c_t (issue 53 item 6; `App::oblique_surface_line`).
+    pub surface: Option<&'a str>,
     /// The time charts as drawn (`charts::time_figures` with their normalize, zoom and
     /// crosshair: src/tui/app/charts.rs), once the impact is computed.
     pub time: Option<&'a [Figure; 3]>,
@@ -100,6 +103,9 @@ impl ObliquePanel<'_> {
             theme.title(),
         )];
         lines.extend(self.parameter_lines());
+        if let Some(s) = self.surface {
+            lines.push(Line::styled(s.to_string(), theme.dim()));
+        }
         match &self.view.impact {
             Some(Ok(r)) => lines.extend(result_lines(r, theme)),
             Some(Err(e)) => lines.push(Line::styled(e.clone(), theme.error())),
@@ -187,5 +193,12 @@ fn pace_lines(p: &CourtPace, mu: f64, theme: Theme) -> Vec<Line<'static>> {
             Span::raw(format!(" CPR {} · ", value(p.cpr))),
             Span::styled(format!("{} {}", p.category, p.category_name), theme.title()),
         ]),
+        // what it is computed from, e on the court included (CPR = 100(1 − μ_app) +
+        // 150(0.81 − e); issue 53): a name and its number never parted by the wrap
+        Line::raw(format!(
+            " e\u{a0}{}  μ_app\u{a0}{}",
+            value(p.cor_normal),
+            value(p.apparent_friction)
+        )),
     ]
 }

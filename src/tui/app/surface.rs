@@ -1,0 +1,92 @@
+//! The surface picker (`G`) in [`App::update`] (issue 53 item 6; src/tui/surface.rs): the
+//! listed surfaces come back from the loop, the arrows move the highlight (src/tui/app/picker.rs),
+//! Enter puts the ball on the highlighted surface as one change `u` undoes.
+
+use super::{App, Overlay};
+use crate::catalog::surfaces::SurfaceEntry;
+use crate::target::surface::Surface;
+use crate::tui::surface::{SurfacePicker, numbers};
+
+impl App {
+    /// The loop's list: the picker opens on it, the current surface highlighted.
+    pub(super) fn surfaces_listed(&mut self, entries: Vec<SurfaceEntry>, error: Option<String>) {
+        let now = self.setting.surface.as_ref().map(|s| s.name.as_str());
+        let selected = entries
+            .iter()
+            .position(|e| Some(e.surface.name.as_str()) == now)
+            .unwrap_or(0);
+        if let Some(e) = &error {
+            self.warn(e.clone());
+        }
+        self.overlay = Overlay::Surfaces(SurfacePicker {
+            entries,
+            selected,
+            error,
+        });
+    }
+
+    /// Enter in the surface picker: the ball on the highlighted surface, the picker closed.
+    pub(super) fn choose_surface(&mut self) {
+        let Overlay::Surfaces(p) = std::mem::replace(&mut self.overlay, Overlay::None) else {
+            return;
+        };
+        let Some(entry) = p.entries.into_iter().nth(p.selected) else {
+            return;
+        };
+        let name = entry.surface.name.clone();
+        let said = numbers(&entry.surface);
+        match self.on_surface(entry.surface) {
+            Ok(()) => self.info(format!("surface {name}: {said}")),
+            Err(why) => self.error(format!("surface {name}: {why}")),
+        }
+    }
+
+    /// The explorer started on `surface` (`--surface NAME`): nothing to lose yet.
+    pub fn with_surface(mut self, surface: Surface) -> Result<App, String> {
+        self.on_surface(surface)?;
+        self.undo.clear();
+        self.keep();
+        self.refresh();
+        Ok(self)
+    }
+
+    /// The explorer started with the tangential dashpot c_t (`--tangential-damping`),
+    /// checked as the form checks it.
+    pub fn with_tangential_damping(mut self, c_t: f64) -> Result<App, String> {
+        use crate::tui::physical::Field;
+        self.setting = Field::TangentialDamping.check(c_t, &self.setting)?;
+        self.keep();
+        self.refresh();
+        Ok(self)
+    }
+
+    /// Put the ball on `surface`, as `--surface NAME` does (one undoable change): its normal
+    /// give is the target (at rest), its μ and K_t (where it gives them) the oblique view's,
+    /// its c_t the dashpot beside K_t. Refused, nothing changed, where the ball and the
+    /// surface's target would not meet or the model would not take them.
+    pub(in crate::tui) fn on_surface(&mut self, surface: Surface) -> Result<(), String> {
+        let mut next = self.setting.clone();
+        let t = surface.target();
+        (next.target_mass, next.target_speed) = (t.mass, t.speed);
+        (next.target_stiffness, next.target_damping) = (t.stiffness, t.damping);
+        next.tangential_damping = surface.tangential_damping;
+        next.target()
+            .validate()
+            .map_err(|e| crate::tui::physical::refusal(&e))?;
+        crate::tui::physical::closing_check(&next)?;
+        let mut oblique = self.oblique.values();
+        if let Some(mu) = surface.friction {
+            oblique.friction = mu;
+        }
+        if surface.tangential_stiffness.is_some() {
+            oblique.tangential_stiffness = surface.tangential_stiffness;
+        }
+        next.surface = Some(surface);
+        if next != self.setting || oblique != self.oblique.values() {
+            self.remember();
+            self.setting = next;
+            self.oblique.set_values(oblique);
+        }
+        Ok(())
+    }
+}

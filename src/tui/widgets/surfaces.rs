@@ -1,0 +1,82 @@
+//! The surface picker (`G`, issue 53 item 6): every surface with its numbers (K_s, c_s, M, μ,
+//! K_t, c_t where it gives them, src/tui/surface.rs) and where it comes from, the highlighted
+//! one marked ▶, scrolled as the preset picker is (src/tui/widgets/picker.rs).
+
+use crate::tui::format::clip;
+use crate::tui::surface::{SurfacePicker, numbers, origin};
+use crate::tui::theme::Theme;
+use crate::tui::widgets::picker::first_shown;
+use ratatui::buffer::Buffer;
+use ratatui::layout::Rect;
+use ratatui::text::{Line, Span};
+use ratatui::widgets::{Block, Clear, Paragraph, Widget};
+
+/// The surface picker, centred on the area it is given.
+#[derive(Debug, Clone, Copy)]
+pub struct SurfacesBox<'a> {
+    pub picker: &'a SurfacePicker,
+    pub theme: Theme,
+}
+
+impl Widget for &SurfacesBox<'_> {
+    fn render(self, area: Rect, buf: &mut Buffer) {
+        let p = self.picker;
+        let w = 76.min(area.width);
+        // two rows an entry (name and origin, its numbers), the hint, the error if any
+        let extra = 1 + u16::from(p.error.is_some());
+        let want = 2 * p.entries.len() as u16 + extra + 2;
+        let h = want.min(area.height);
+        let popup = Rect::new(
+            area.x + (area.width - w) / 2,
+            area.y + (area.height - h) / 2,
+            w,
+            h,
+        );
+        Clear.render(popup, buf);
+        let rows = usize::from(h.saturating_sub(2 + extra) / 2).max(1);
+        let first = first_shown(p.selected, rows);
+        let inner = usize::from(w.saturating_sub(2));
+        let mut lines = Vec::new();
+        if let Some(e) = &p.error {
+            lines.push(Line::styled(clip(e, inner), self.theme.error()));
+        }
+        for (i, e) in p.entries.iter().enumerate().skip(first).take(rows) {
+            let here = i == p.selected;
+            let style = if here {
+                self.theme.selected()
+            } else {
+                self.theme.title()
+            };
+            let name = clip(&e.surface.name, inner.saturating_sub(1));
+            let from = clip(
+                &format!("  {}", origin(&e.origin)),
+                inner.saturating_sub(1 + name.chars().count()),
+            );
+            lines.push(Line::from(vec![
+                Span::raw(if here { "▶" } else { " " }),
+                Span::styled(name, style),
+                Span::styled(from, self.theme.dim()),
+            ]));
+            lines.push(Line::raw(format!(
+                "   {}",
+                clip(&numbers(&e.surface), inner.saturating_sub(3))
+            )));
+        }
+        let more = if p.entries.len() > rows {
+            format!(" · {}/{}", p.selected + 1, p.entries.len())
+        } else {
+            String::new()
+        };
+        lines.push(Line::styled(
+            clip(
+                &format!("↑↓ choose · Enter puts the ball on it · Esc closes{more}"),
+                inner,
+            ),
+            self.theme.dim(),
+        ));
+        let title = Line::styled(" Surfaces ", self.theme.title());
+        Paragraph::new(lines)
+            .block(Block::bordered().title(title))
+            .render(popup, buf);
+    }
+}
