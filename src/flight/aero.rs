@@ -10,6 +10,8 @@ use serde::Serialize;
 pub const AIR_VISCOSITY: f64 = 1.81e-5;
 /// 1 mph in m/s (exact: 0.44704).
 const MPH: f64 = 0.44704;
+/// 1 rad/s in thousands of rpm: 30/(π · 1000).
+const RAD_S_IN_KRPM: f64 = 30.0 / (std::f64::consts::PI * 1000.0);
 
 /// The drag coefficient's model.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
@@ -35,14 +37,23 @@ pub enum Drag {
         /// dC_D/dS: the drag added by spin.
         cd_per_spin: f64,
     },
+    /// C_D = `cd0` + `per_krpm` × |ω| in thousands of rpm: Nathan's calculator's spin
+    /// drag (docs/flight.md §2 [3]: 0.3008 + 0.0292 per 1000 rpm), |ω| the present spin.
+    Spin {
+        /// C_D without spin.
+        cd0: f64,
+        /// dC_D per 1000 rpm.
+        per_krpm: f64,
+    },
 }
 
 impl Drag {
-    /// C_D at Reynolds number `re` and spin parameter `s` = R|ω|/|v|.
+    /// C_D at Reynolds number `re`, spin parameter `s` = R|ω|/|v| and spin `w` (rad/s).
     #[inline]
-    pub fn cd(&self, re: f64, s: f64) -> f64 {
+    pub fn cd(&self, re: f64, s: f64, w: f64) -> f64 {
         match *self {
             Drag::Constant { cd } => cd,
+            Drag::Spin { cd0, per_krpm } => cd0 + per_krpm * w.abs() * RAD_S_IN_KRPM,
             Drag::Crisis {
                 re_low,
                 cd_low,
@@ -260,9 +271,13 @@ impl Aero {
                 "C_D Cross & Lindsey 2014; C_L Stepanek 1988; no spin decay (none published found)",
             ),
             // Nathan's trajectory calculator: C_L = 1.120 S/(0.583 + 2.333 S), spin decaying
-            // as exp(−(t/30 s)(|v|/100 mph)); C_D: none found, the smooth sphere's assumed
+            // as exp(−(t/30 s)(|v|/100 mph)), C_D = 0.3008 + 0.0292 per 1000 rpm (its
+            // spreadsheet's cd0 and cdspin, fitted to the 2015 Statcast batted balls)
             Some("baseball") => published(
-                Drag::Constant { cd: SMOOTH_CD },
+                Drag::Spin {
+                    cd0: 0.3008,
+                    per_krpm: 0.0292,
+                },
                 Lift::Rational {
                     c0: 0.583,
                     c1: 2.333,
@@ -271,7 +286,7 @@ impl Aero {
                 Decay::PerMetre {
                     k: 1.0 / (30.0 * 100.0 * MPH),
                 },
-                "C_L and spin decay Nathan's calculator; C_D assumed 0.47 (smooth sphere)",
+                "C_D, C_L and spin decay Nathan's calculator (2015 Statcast fit)",
             ),
             // Jenkins et al. (2018): 0.24 < C_D < 0.7 over 3·10⁴ < Re < 1.08·10⁵ (the dimpled
             // ball's crisis), plus Smits & Smith's (1994) spin term 0.18 S; their C_L(S) table;

@@ -46,6 +46,7 @@ impl Body {
         let cd = self.aero.drag.cd(
             reynolds(self.aero.air_density, v, self.radius),
             spin_parameter,
+            w,
         );
         let cl = if w == 0.0 || v == 0.0 {
             0.0
@@ -144,19 +145,20 @@ pub fn next_size(h: f64, err: f64) -> f64 {
     h * f
 }
 
-/// The step size h* in [0, h] at which component `i` of one step from `y0` reaches `target`,
-/// given that it has not at 0 and has at h: safeguarded Newton on h (its derivative the
-/// component's rate, a velocity), every value one step from `y0`; the h* whose state is
-/// nearest the target, and that state.
-pub fn locate(body: &Body, y0: &Y, h: f64, i: usize, target: f64) -> (f64, Y) {
-    let k1 = body.rate(y0);
-    let at = |x: f64| body.step(y0, &k1, x).0;
+/// The step size h* in [0, h] at which component `i` (0: x, 1: y) of one step from `y0` reaches
+/// `target`, given that it has not at 0 and has at h: safeguarded Newton on h (its derivative
+/// the component's rate, the velocity y[i + 2]), every value one step from `y0`; the h* whose
+/// state is nearest the target, and that state. `k1` is the rate at `y0` and `y_h` the step of
+/// size h from it, both already computed by the accepted step (taken, not recomputed: the same
+/// numbers to the last bit, a step and a rate fewer per event; benches/shot.rs).
+pub fn locate(body: &Body, (y0, k1): (&Y, &Y), (h, y_h): (f64, &Y), i: usize, target: f64) -> (f64, Y) {
+    debug_assert!(i < 2, "locate finds x or y");
+    let at = |x: f64| body.step(y0, k1, x).0;
     let above = y0[i] > target;
     let (mut lo, mut hi) = (0.0, h);
-    let y_h = at(h);
     let (f0, f1) = (y0[i] - target, y_h[i] - target);
     let mut x = if f0 != f1 { h * f0 / (f0 - f1) } else { h };
-    let mut best = (h, y_h, f1.abs());
+    let mut best = (h, *y_h, f1.abs());
     for _ in 0..60 {
         let y = at(x);
         let f = y[i] - target;
@@ -171,7 +173,8 @@ pub fn locate(body: &Body, y0: &Y, h: f64, i: usize, target: f64) -> (f64, Y) {
         } else {
             hi = x;
         }
-        let slope = body.rate(&y)[i];
+        // d(x, y)/dt is (v_x, v_y): `rate`'s first two components, copied from the state
+        let slope = y[i + 2];
         let mut next = x - f / slope;
         if !(next > lo && next < hi) {
             next = 0.5 * (lo + hi);
