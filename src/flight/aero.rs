@@ -77,6 +77,23 @@ impl Drag {
     }
 }
 
+impl Drag {
+    /// C_D in flight at speed `v` with R|ω| = `rw` and spin `w`, in air of density `rho`,
+    /// ball radius `r`: [`Drag::cd`] with the Reynolds number and S = R|ω|/|v| formed only
+    /// where the model uses them (S = 0 at rest).
+    #[inline]
+    pub fn cd_flying(&self, rho: f64, r: f64, v: f64, rw: f64, w: f64) -> f64 {
+        match *self {
+            Drag::Constant { cd } => cd,
+            Drag::Spin { .. } => self.cd(0.0, 0.0, w),
+            Drag::Crisis { .. } => {
+                let s = if v == 0.0 { 0.0 } else { rw / v };
+                self.cd(reynolds(rho, v, r), s, w)
+            }
+        }
+    }
+}
+
 /// The lift coefficient's model, a function of S = R|ω|/|v| ≥ 0; the force's side is ω's sign.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 #[serde(tag = "kind", rename_all = "snake_case")]
@@ -112,6 +129,22 @@ impl Lift {
             Lift::Constant { cl } => cl,
             Lift::Rational { c0, c1, c2 } => c2 * s / (c0 + c1 * s),
             Lift::Table { points } => table(points, s),
+        }
+    }
+
+    /// `q` C_L(S) |v| at S = `rw`/`v` (`rw` = R|ω| ≥ 0; `q` = ½ρA/m): the lift's
+    /// acceleration over |v|, 0 without spin or speed. The rational form is taken as
+    /// q c2 R|ω| |v|/(c0 |v| + c1 R|ω|): one division where C_L(S) has two one after the other
+    /// (the same number to rounding; the other forms as before, bit for bit).
+    #[inline]
+    pub fn lift_per_speed(&self, q: f64, rw: f64, v: f64) -> f64 {
+        if rw == 0.0 || v == 0.0 {
+            return 0.0;
+        }
+        match *self {
+            Lift::Constant { cl } => q * cl * v,
+            Lift::Rational { c0, c1, c2 } => q * (c2 * rw * v / (c0 * v + c1 * rw)),
+            Lift::Table { points } => q * table(points, rw / v) * v,
         }
     }
 }

@@ -223,9 +223,10 @@ impl Flier<'_> {
             if self.steps > MAX_STEPS || t > MAX_FLIGHT_TIME {
                 return Err(());
             }
+            // err: the error norm's square (`Body::step`)
             let (y1, k7, err) = body.step(&y, &k1, h);
             if err > 1.0 || !err.is_finite() {
-                self.h = step::next_size(h, if err.is_finite() { err } else { 1e10 });
+                self.h = step::next_size(h, if err.is_finite() { err } else { 1e20 });
                 continue;
             }
             // a step that rises and falls back below R in one go is halved until it ends
