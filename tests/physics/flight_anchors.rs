@@ -69,7 +69,11 @@ fn the_golf_spin_decay_has_smits_and_smiths_units() {
 fn a_batted_ball_carries_as_nathans_calculator() {
     let radius = 9.125 * INCH / (2.0 * std::f64::consts::PI);
     let mass = 5.125 * OUNCE;
-    let body = flight::Body::new(Aero::for_ball(Some("baseball"), 1.193_767_224), mass, radius);
+    let body = flight::Body::new(
+        Aero::for_ball(Some("baseball"), 1.193_767_224),
+        mass,
+        radius,
+    );
     let launch = Launch {
         height: 3.0 * FOOT + radius,
         speed: 103.0 * MPH,

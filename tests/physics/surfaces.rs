@@ -86,7 +86,10 @@ fn a_calibrated_court_is_named_for_what_it_is() {
         "{origin}"
     );
     let on = court["computed_on"].as_str().unwrap();
-    assert!(on.contains("surface calibrated-court (") && !on.contains("steel-plate ("), "{on}");
+    assert!(
+        on.contains("surface calibrated-court (") && !on.contains("steel-plate ("),
+        "{on}"
+    );
     let out = common::ok(&args);
     assert!(out.contains("surface calibrated-court ("), "{out}");
     assert!(!out.contains("surface steel-plate"), "{out}");
