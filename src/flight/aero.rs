@@ -38,7 +38,7 @@ pub enum Drag {
         cd_per_spin: f64,
     },
     /// C_D = `cd0` + `per_krpm` × |ω| in thousands of rpm: Nathan's calculator's spin
-    /// drag (docs/flight.md §2 [3]: 0.3008 + 0.0292 per 1000 rpm), |ω| the present spin.
+    /// drag (docs/flight.md §2, source 3: 0.3008 + 0.0292 per 1000 rpm), |ω| the present spin.
     Spin {
         /// C_D without spin.
         cd0: f64,
