@@ -6,6 +6,7 @@ use super::ball::BallArgs;
 use super::oblique::TangentialArgs;
 use super::output::{self, csv_row, given, num, table};
 use super::outputs::{check as check_writable, report_then_commit};
+use super::surface::{SurfaceArgs, SurfaceUsed};
 use crate::api::{Ball, BallHeader, ShotReport, ShotSpec};
 use crate::atomic::Outputs;
 use crate::figure::svg;
@@ -108,7 +109,8 @@ impl ShotArgs {
     }
 }
 
-/// `shot --format json`: the ball, the surface and the answer.
+/// `shot --format json`: the ball, the surface and the answer, then (additive, as
+/// `oblique`'s) the ball object and the surface object; `conditions` last (`json_stated`).
 #[derive(Serialize)]
 struct Report<'a> {
     #[serde(flatten)]
@@ -117,6 +119,23 @@ struct Report<'a> {
     friction: f64,
     #[serde(flatten)]
     answer: &'a ShotReport,
+    /// The ball it ran (docs/cli.md, "The ball object").
+    #[serde(rename = "ball")]
+    record: crate::api::BallRecord,
+    /// The surface it bounced on (docs/surfaces.md): the rigid plate with the shot's μ and
+    /// tangential flags.
+    surface: &'a SurfaceUsed,
+}
+
+/// The surface a shot bounces on: the rigid plate (the shot takes no `--surface`: every
+/// bounce is `Ball::oblique`'s, on the rigid plate) with `--friction` and the tangential
+/// flags, named in the JSON and the text as every command on a surface names it.
+fn surface_of(a: &ShotArgs) -> anyhow::Result<SurfaceUsed> {
+    Ok(SurfaceArgs::default().resolve()?.with_tangential(
+        Some(a.friction),
+        a.tangential.tangential_stiffness,
+        a.tangential.tangential_damping,
+    ))
 }
 
 pub fn run(a: &ShotArgs, out: &mut dyn Write) -> anyhow::Result<()> {
@@ -129,6 +148,7 @@ pub fn run(a: &ShotArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     let paths: Vec<&std::path::Path> = a.svg_out.iter().map(PathBuf::as_path).collect();
     check_writable(&paths, a.force)?;
     let shot = ball.shot(&spec).map_err(flag_named)?;
+    let surface = surface_of(a)?;
     let mut files = Outputs::new(a.force);
     if let Some(p) = &a.svg_out {
         let drawn = if shot.trajectory.is_empty() {
@@ -151,12 +171,14 @@ pub fn run(a: &ShotArgs, out: &mut dyn Write) -> anyhow::Result<()> {
                 radius: ball.radius(),
                 friction: a.friction,
                 answer: &shot,
+                record: ball.record_json(),
+                surface: &surface,
             },
             &ball.conditions,
         )?,
         ShotFormat::Csv if !shot.trajectory.is_empty() => trajectory_csv(&mut report, &shot)?,
         ShotFormat::Csv => bounces_csv(&mut report, &shot)?,
-        ShotFormat::Text => text(&mut report, &ball, &spec, &shot)?,
+        ShotFormat::Text => text(&mut report, (&ball, &surface), &spec, &shot)?,
     }
     report_then_commit(out, &report, files)?;
     Ok(())
@@ -243,8 +265,14 @@ fn trajectory_csv(out: &mut dyn Write, s: &ShotReport) -> std::io::Result<()> {
     Ok(())
 }
 
-fn text(out: &mut dyn Write, ball: &Ball, spec: &ShotSpec, s: &ShotReport) -> std::io::Result<()> {
+fn text(
+    out: &mut dyn Write,
+    (ball, surface): (&Ball, &SurfaceUsed),
+    spec: &ShotSpec,
+    s: &ShotReport,
+) -> std::io::Result<()> {
     writeln!(out, "{}: {}", ball.label(), title(spec))?;
+    writeln!(out, "{}", surface.label())?;
     if let Some(line) = ball.conditions_line() {
         writeln!(out, "{line}")?;
     }

@@ -10,6 +10,8 @@ use serde::Serialize;
 pub const AIR_VISCOSITY: f64 = 1.81e-5;
 /// 1 mph in m/s (exact: 0.44704).
 const MPH: f64 = 0.44704;
+/// 1 rad/s in thousands of rpm: 30/(π · 1000).
+const RAD_S_IN_KRPM: f64 = 30.0 / (std::f64::consts::PI * 1000.0);
 
 /// The drag coefficient's model.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
@@ -35,14 +37,23 @@ pub enum Drag {
         /// dC_D/dS: the drag added by spin.
         cd_per_spin: f64,
     },
+    /// C_D = `cd0` + `per_krpm` × |ω| in thousands of rpm: Nathan's calculator's spin
+    /// drag (docs/flight.md §2, source 3: 0.3008 + 0.0292 per 1000 rpm), |ω| the present spin.
+    Spin {
+        /// C_D without spin.
+        cd0: f64,
+        /// dC_D per 1000 rpm.
+        per_krpm: f64,
+    },
 }
 
 impl Drag {
-    /// C_D at Reynolds number `re` and spin parameter `s` = R|ω|/|v|.
+    /// C_D at Reynolds number `re`, spin parameter `s` = R|ω|/|v| and spin `w` (rad/s).
     #[inline]
-    pub fn cd(&self, re: f64, s: f64) -> f64 {
+    pub fn cd(&self, re: f64, s: f64, w: f64) -> f64 {
         match *self {
             Drag::Constant { cd } => cd,
+            Drag::Spin { cd0, per_krpm } => cd0 + per_krpm * w.abs() * RAD_S_IN_KRPM,
             Drag::Crisis {
                 re_low,
                 cd_low,
@@ -61,6 +72,23 @@ impl Drag {
                     cd_low + f * f * (3.0 - 2.0 * f) * (cd_high - cd_low)
                 };
                 crisis + cd_per_spin * s
+            }
+        }
+    }
+}
+
+impl Drag {
+    /// C_D in flight at speed `v` with R|ω| = `rw` and spin `w`, in air of density `rho`,
+    /// ball radius `r`: [`Drag::cd`] with the Reynolds number and S = R|ω|/|v| formed only
+    /// where the model uses them (S = 0 at rest).
+    #[inline]
+    pub fn cd_flying(&self, rho: f64, r: f64, v: f64, rw: f64, w: f64) -> f64 {
+        match *self {
+            Drag::Constant { cd } => cd,
+            Drag::Spin { .. } => self.cd(0.0, 0.0, w),
+            Drag::Crisis { .. } => {
+                let s = if v == 0.0 { 0.0 } else { rw / v };
+                self.cd(reynolds(rho, v, r), s, w)
             }
         }
     }
@@ -101,6 +129,22 @@ impl Lift {
             Lift::Constant { cl } => cl,
             Lift::Rational { c0, c1, c2 } => c2 * s / (c0 + c1 * s),
             Lift::Table { points } => table(points, s),
+        }
+    }
+
+    /// `q` C_L(S) |v| at S = `rw`/`v` (`rw` = R|ω| ≥ 0; `q` = ½ρA/m): the lift's
+    /// acceleration over |v|, 0 without spin or speed. The rational form is taken as
+    /// q c2 R|ω| |v|/(c0 |v| + c1 R|ω|): one division where C_L(S) has two one after the other
+    /// (the same number to rounding; the other forms as before, bit for bit).
+    #[inline]
+    pub fn lift_per_speed(&self, q: f64, rw: f64, v: f64) -> f64 {
+        if rw == 0.0 || v == 0.0 {
+            return 0.0;
+        }
+        match *self {
+            Lift::Constant { cl } => q * cl * v,
+            Lift::Rational { c0, c1, c2 } => q * (c2 * rw * v / (c0 * v + c1 * rw)),
+            Lift::Table { points } => q * table(points, rw / v) * v,
         }
     }
 }
@@ -260,9 +304,13 @@ impl Aero {
                 "C_D Cross & Lindsey 2014; C_L Stepanek 1988; no spin decay (none published found)",
             ),
             // Nathan's trajectory calculator: C_L = 1.120 S/(0.583 + 2.333 S), spin decaying
-            // as exp(−(t/30 s)(|v|/100 mph)); C_D: none found, the smooth sphere's assumed
+            // as exp(−(t/30 s)(|v|/100 mph)), C_D = 0.3008 + 0.0292 per 1000 rpm (its
+            // spreadsheet's cd0 and cdspin, fitted to the 2015 Statcast batted balls)
             Some("baseball") => published(
-                Drag::Constant { cd: SMOOTH_CD },
+                Drag::Spin {
+                    cd0: 0.3008,
+                    per_krpm: 0.0292,
+                },
                 Lift::Rational {
                     c0: 0.583,
                     c1: 2.333,
@@ -271,7 +319,7 @@ impl Aero {
                 Decay::PerMetre {
                     k: 1.0 / (30.0 * 100.0 * MPH),
                 },
-                "C_L and spin decay Nathan's calculator; C_D assumed 0.47 (smooth sphere)",
+                "C_D, C_L and spin decay Nathan's calculator (2015 Statcast fit)",
             ),
             // Jenkins et al. (2018): 0.24 < C_D < 0.7 over 3·10⁴ < Re < 1.08·10⁵ (the dimpled
             // ball's crisis), plus Smits & Smith's (1994) spin term 0.18 S; their C_L(S) table;

@@ -194,11 +194,11 @@ impl Flier<'_> {
     /// The earliest event inside the accepted step of size `h` from `y` to `y1`, each
     /// located from the step's start: the step size to it, the state there (on the surface
     /// or at the distance exactly) and which.
-    fn event(&self, y: &Y, y1: &Y, h: f64) -> Option<(f64, Y, Stop)> {
+    fn event(&self, (y, k1): (&Y, &Y), y1: &Y, h: f64) -> Option<(f64, Y, Stop)> {
         let (body, r) = (self.body, self.body.radius);
-        let landing = (y[1] >= r && y1[1] < r).then(|| step::locate(body, y, h, 1, r));
+        let landing = (y[1] >= r && y1[1] < r).then(|| step::locate(body, (y, k1), (h, y1), 1, r));
         let far = self.ends.distance.filter(|&d| y[0] < d && y1[0] >= d);
-        let distance = far.map(|d| (d, step::locate(body, y, h, 0, d)));
+        let distance = far.map(|d| (d, step::locate(body, (y, k1), (h, y1), 0, d)));
         match (landing, distance) {
             (Some(a), Some((d, b))) if b.0 < a.0 => Some((b.0, at(b.1, 0, d), Stop::Distance)),
             (Some(a), _) => Some((a.0, at(a.1, 1, r), Stop::Landing)),
@@ -223,9 +223,10 @@ impl Flier<'_> {
             if self.steps > MAX_STEPS || t > MAX_FLIGHT_TIME {
                 return Err(());
             }
+            // err: the error norm's square (`Body::step`)
             let (y1, k7, err) = body.step(&y, &k1, h);
             if err > 1.0 || !err.is_finite() {
-                self.h = step::next_size(h, if err.is_finite() { err } else { 1e10 });
+                self.h = step::next_size(h, if err.is_finite() { err } else { 1e20 });
                 continue;
             }
             // a step that rises and falls back below R in one go is halved until it ends
@@ -238,7 +239,7 @@ impl Flier<'_> {
             if let Some(rec) = &mut self.record {
                 rec.push((t, y));
             }
-            if let Some((hs, ys, stop)) = self.event(&y, &y1, h) {
+            if let Some((hs, ys, stop)) = self.event((&y, &k1), &y1, h) {
                 return Ok((t + hs, ys, stop));
             }
             let last = self.ends.time.is_some_and(|end| t + h >= end);

@@ -5,7 +5,7 @@
 //! integrating to them from the step's start, not on a dense output. The crate's DOP853 is the
 //! independent check (tests/physics/flight.rs, `an_independent_dop853_agrees`).
 
-use super::aero::{Aero, reynolds};
+use super::aero::Aero;
 use crate::drop::G;
 
 /// The state: x, y (m), v_x, v_y (m/s), ω (rad/s) and the drag's work per unit mass (J/kg).
@@ -34,25 +34,20 @@ impl Body {
 
     /// dY/dt: gravity, drag −½ρAC_D|v|v, lift ½ρAC_L|v| sign(ω) (v_y, −v_x) (topspin pushes
     /// a ball moving in +x down), dω/dt by the decay, and the drag's power |F_D·v|/m.
+    /// C_D|v| and C_L|v| are formed by the models from R|ω| and |v| with as few divisions on
+    /// the way as each needs (`Drag::cd_flying`, `Lift::lift_per_speed`): a step is six of
+    /// these in a row, each waiting on the last (benches/shot.rs).
     #[inline]
     pub fn rate(&self, y: &Y) -> Y {
         let (vx, vy, w) = (y[2], y[3], y[4]);
         let v = (vx * vx + vy * vy).sqrt();
-        let spin_parameter = if v == 0.0 {
-            0.0
-        } else {
-            self.radius * w.abs() / v
-        };
-        let cd = self.aero.drag.cd(
-            reynolds(self.aero.air_density, v, self.radius),
-            spin_parameter,
-        );
-        let cl = if w == 0.0 || v == 0.0 {
-            0.0
-        } else {
-            self.aero.lift.cl(spin_parameter).copysign(w)
-        };
-        let (d, l) = (self.q * cd * v, self.q * cl * v);
+        let rw = self.radius * w.abs();
+        let cd = self
+            .aero
+            .drag
+            .cd_flying(self.aero.air_density, self.radius, v, rw, w);
+        let d = self.q * cd * v;
+        let l = self.aero.lift.lift_per_speed(self.q, rw, v).copysign(w);
         [
             vx,
             vy,
@@ -64,7 +59,9 @@ impl Body {
     }
 
     /// One Dormand–Prince 5(4) step of size `h` from `y0` whose first stage is `k1`: the
-    /// fifth-order state, its rate (the next step's first stage) and the error norm.
+    /// fifth-order state, its rate (the next step's first stage) and the error norm's square
+    /// (the step is accepted where it is at most 1; its square root is left to `next_size`'s
+    /// power, one operation fewer between a step and the next).
     pub fn step(&self, y0: &Y, k1: &Y, h: f64) -> (Y, Y, f64) {
         let at = |ks: &[(&Y, f64)]| -> Y {
             let mut y = *y0;
@@ -121,7 +118,7 @@ impl Body {
             let scale = TOL + TOL * y0[i].abs().max(y1[i].abs());
             sum += (err / scale).powi(2);
         }
-        (y1, k7, (sum / 5.0).sqrt())
+        (y1, k7, sum / 5.0)
     }
 
     /// The state `h` after `y0` in steps no longer than `h0`, the first of size ≤ `h0`
@@ -134,29 +131,37 @@ impl Body {
     }
 }
 
-/// The size of the step after one of size `h` with error norm `err`.
-pub fn next_size(h: f64, err: f64) -> f64 {
-    let f = if err == 0.0 {
+/// The size of the step after one of size `h` whose error norm's square is `err2`: the
+/// usual 0.9 err^(−1/5), as 0.9 (err²)^(−1/10), held to 0.2 … 5 times `h`.
+pub fn next_size(h: f64, err2: f64) -> f64 {
+    let f = if err2 == 0.0 {
         5.0
     } else {
-        (0.9 * err.powf(-0.2)).clamp(0.2, 5.0)
+        (0.9 * err2.powf(-0.1)).clamp(0.2, 5.0)
     };
     h * f
 }
 
-/// The step size h* in [0, h] at which component `i` of one step from `y0` reaches `target`,
-/// given that it has not at 0 and has at h: safeguarded Newton on h (its derivative the
-/// component's rate, a velocity), every value one step from `y0`; the h* whose state is
-/// nearest the target, and that state.
-pub fn locate(body: &Body, y0: &Y, h: f64, i: usize, target: f64) -> (f64, Y) {
-    let k1 = body.rate(y0);
-    let at = |x: f64| body.step(y0, &k1, x).0;
+/// The step size h* in [0, h] at which component `i` (0: x, 1: y) of one step from `y0` reaches
+/// `target`, given that it has not at 0 and has at h: safeguarded Newton on h (its derivative
+/// the component's rate, the velocity y[i + 2]), every value one step from `y0`; the h* whose
+/// state is nearest the target, and that state. `k1` is the rate at `y0` and `y_h` the step of
+/// size h from it, both already computed by the accepted step (taken, not recomputed: the same
+/// numbers to the last bit, a step and a rate fewer per event; benches/shot.rs).
+pub fn locate(
+    body: &Body,
+    (y0, k1): (&Y, &Y),
+    (h, y_h): (f64, &Y),
+    i: usize,
+    target: f64,
+) -> (f64, Y) {
+    debug_assert!(i < 2, "locate finds x or y");
+    let at = |x: f64| body.step(y0, k1, x).0;
     let above = y0[i] > target;
     let (mut lo, mut hi) = (0.0, h);
-    let y_h = at(h);
     let (f0, f1) = (y0[i] - target, y_h[i] - target);
     let mut x = if f0 != f1 { h * f0 / (f0 - f1) } else { h };
-    let mut best = (h, y_h, f1.abs());
+    let mut best = (h, *y_h, f1.abs());
     for _ in 0..60 {
         let y = at(x);
         let f = y[i] - target;
@@ -171,7 +176,8 @@ pub fn locate(body: &Body, y0: &Y, h: f64, i: usize, target: f64) -> (f64, Y) {
         } else {
             hi = x;
         }
-        let slope = body.rate(&y)[i];
+        // d(x, y)/dt is (v_x, v_y): `rate`'s first two components, copied from the state
+        let slope = y[i + 2];
         let mut next = x - f / slope;
         if !(next > lo && next < hi) {
             next = 0.5 * (lo + hi);

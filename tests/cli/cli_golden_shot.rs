@@ -255,3 +255,51 @@ fn svg_out_draws_the_side_view_once() {
     assert_eq!(std::fs::read_to_string(&svg).unwrap(), text);
     assert!(run(&["--force"]).status.success());
 }
+
+/// The defect: `shot --format json` named neither its ball nor its surface as every other
+/// command on a ball and a surface does (`oblique`'s `ball` and `surface` objects; issue 57),
+/// and its text did not say what it bounced on. Fails on the old code (no `ball`, no
+/// `surface`, no `surface …` line).
+#[test]
+fn shot_names_its_ball_surface_and_conditions() {
+    let mut args: Vec<&str> = SERVE.to_vec();
+    args.extend(["--tangential-damping", "5", "--format", "json"]);
+    let j = json_calibrated(&args);
+    let ball = &j["ball"];
+    assert_eq!(ball["name"], "tennis");
+    assert_eq!(ball["mass"], 0.0577);
+    assert_eq!(ball["radius"], j["radius"]);
+    let s = &j["surface"];
+    assert_eq!(s["name"], "steel-plate");
+    assert!(s["stiffness"].is_null() && s["mass"].is_null());
+    assert_eq!(s["friction"], 0.6);
+    assert_eq!(s["tangential_damping"], 5.0);
+    assert_eq!(j["conditions"]["atmosphere_pa"], 101_325.0);
+    // the same objects as `oblique` gives for the first bounce's ball and surface
+    let o = json_calibrated(&[
+        "oblique",
+        "--preset",
+        "tennis",
+        "--v0",
+        "30",
+        "--angle",
+        "16",
+        "--friction",
+        "0.6",
+        "--tangential-damping",
+        "5",
+        "--format",
+        "json",
+    ]);
+    assert_eq!(o["ball"], j["ball"]);
+    assert_eq!(o["surface"], j["surface"]);
+    let text = common::ok_calibrated(SERVE);
+    assert_eq!(
+        text.lines().nth(1),
+        Some("surface steel-plate (rigid, immovable, μ 0.6000)")
+    );
+}
+
+fn json_calibrated(args: &[&str]) -> serde_json::Value {
+    serde_json::from_str(&common::ok_calibrated(args)).expect("one JSON object")
+}

@@ -94,7 +94,7 @@ impl ODE<f64, X> for Air {
         let cd = self
             .aero
             .drag
-            .cd(reynolds(self.aero.air_density, v, self.r), sp);
+            .cd(reynolds(self.aero.air_density, v, self.r), sp, w);
         let cl = if w == 0.0 {
             0.0
         } else {
@@ -420,16 +420,16 @@ fn the_models_have_the_published_forms() {
     assert!((bb.lift.cl(0.25) - 1.120 * 0.25 / (0.583 + 2.333 * 0.25)).abs() < 1e-15);
     // golf's crisis: 0.7 below Re 3e4, 0.24 above 1.08e5, monotone between; plus 0.18 S
     let g = Aero::for_ball(Some("golf"), 1.204);
-    assert_eq!(g.drag.cd(1e4, 0.0), 0.7);
-    assert_eq!(g.drag.cd(2e5, 0.0), 0.24);
-    assert!((g.drag.cd(2e5, 0.1) - (0.24 + 0.18 * 0.1)).abs() < 1e-15);
-    let mid = g.drag.cd(6e4, 0.0);
+    assert_eq!(g.drag.cd(1e4, 0.0, 0.0), 0.7);
+    assert_eq!(g.drag.cd(2e5, 0.0, 0.0), 0.24);
+    assert!((g.drag.cd(2e5, 0.1, 0.0) - (0.24 + 0.18 * 0.1)).abs() < 1e-15);
+    let mid = g.drag.cd(6e4, 0.0, 0.0);
     assert!(mid < 0.7 && mid > 0.24);
     // C¹ across the crisis' ends (a smoothstep in ln Re)
     for re in [3.0e4, 1.08e5] {
         let h = re * 1e-7;
-        let left = (g.drag.cd(re, 0.0) - g.drag.cd(re - h, 0.0)) / h;
-        let right = (g.drag.cd(re + h, 0.0) - g.drag.cd(re, 0.0)) / h;
+        let left = (g.drag.cd(re, 0.0, 0.0) - g.drag.cd(re - h, 0.0, 0.0)) / h;
+        let right = (g.drag.cd(re + h, 0.0, 0.0) - g.drag.cd(re, 0.0, 0.0)) / h;
         assert!((left - right).abs() * re < 1e-4, "kink at Re = {re}");
     }
     // Smits & Smith's C_L(S): through their points, increasing between and beyond, smooth

@@ -61,6 +61,44 @@ fn court_pace_is_rated_by_the_courts_own_e() {
     assert!(rigid["surface"]["stiffness"].is_null());
 }
 
+/// The defect: a court calibrated to a measured e (`--surface-cor`, `--fit`) kept the name of
+/// the surface it started from, the rigid "steel-plate" it is not, in the JSON `surface`, the
+/// text's surface line and `computed_on` (issue 53). Fails on the old code.
+#[test]
+fn a_calibrated_court_is_named_for_what_it_is() {
+    let args = [
+        "court",
+        "--preset",
+        "tennis",
+        "--friction",
+        "0.6",
+        "--surface-cor",
+        "0.81",
+    ];
+    let mut with_json = args.to_vec();
+    with_json.extend(["--format", "json"]);
+    let court = json(&with_json);
+    let s = &court["surface"];
+    assert_eq!(s["name"], "calibrated-court");
+    let origin = s["origin"].as_str().unwrap();
+    assert!(
+        origin.contains("--surface-cor") && origin.contains("from steel-plate (embedded)"),
+        "{origin}"
+    );
+    let on = court["computed_on"].as_str().unwrap();
+    assert!(
+        on.contains("surface calibrated-court (") && !on.contains("steel-plate ("),
+        "{on}"
+    );
+    let out = common::ok(&args);
+    assert!(out.contains("surface calibrated-court ("), "{out}");
+    assert!(!out.contains("surface steel-plate"), "{out}");
+    // a named surface calibrated keeps its name, marked
+    let mut named = with_json.clone();
+    named.extend(["--surface", "clay"]);
+    assert_eq!(json(&named)["surface"]["name"], "clay-calibrated");
+}
+
 #[test]
 fn a_calibrated_court_returns_its_e_at_every_reachable_value() {
     for (mu, e) in [(0.5, 0.6), (0.75, 0.78), (0.3, 0.84)] {
