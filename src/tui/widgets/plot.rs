@@ -14,7 +14,7 @@ use crate::tui::theme::Theme;
 use crate::tui::widgets::tags;
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
-use ratatui::style::{Color, Style};
+use ratatui::style::{Color, Modifier, Style};
 use ratatui::symbols::Marker;
 use ratatui::text::{Line, Span};
 use ratatui::widgets::canvas::{self, Canvas, Context};
@@ -95,13 +95,23 @@ impl<'a> Plot<'a> {
         }
     }
 
-    /// The layout for `area`, or `None` when there is no room for axes and a plot.
+    /// The layout for `area`, or `None` when there is no room for axes and a plot: rows kept
+    /// above the plot for the legend when it would hide data anywhere else (legend.rs).
     pub fn layout(&self, area: Rect) -> Option<PlotLayout> {
+        let first = self.layout_below(area, 0)?;
+        match self.legend_rows(area, &first) {
+            0 => Some(first),
+            rows => self.layout_below(area, rows).or(Some(first)),
+        }
+    }
+
+    /// The layout with the first `top` rows inside the frame kept for the legend.
+    fn layout_below(&self, area: Rect, top: u16) -> Option<PlotLayout> {
         let inner = Block::bordered().inner(area);
-        if inner.width < 10 || inner.height < 4 {
+        if inner.width < 10 || inner.height < 4 + top {
             return None;
         }
-        let plot_h = inner.height - 2;
+        let plot_h = inner.height - 2 - top;
         let y = self.axis(false, usize::from(plot_h / 2).clamp(2, 11));
         let gutter = y
             .ticks
@@ -113,7 +123,12 @@ impl<'a> Plot<'a> {
         if inner.width < gutter + 6 {
             return None;
         }
-        let plot = Rect::new(inner.x + gutter, inner.y, inner.width - gutter, plot_h);
+        let plot = Rect::new(
+            inner.x + gutter,
+            inner.y + top,
+            inner.width - gutter,
+            plot_h,
+        );
         let x = self.axis(true, usize::from(plot.width / 8).max(2));
         Some(PlotLayout { inner, plot, x, y })
     }
@@ -181,7 +196,10 @@ impl<'a> Plot<'a> {
     }
 
     fn color(&self, s: &Series) -> Color {
-        self.theme.tone(s.look.tone).fg.unwrap_or_default()
+        self.theme
+            .series(s.look.tone, s.color)
+            .fg
+            .unwrap_or_default()
     }
 
     /// The lines of one layer (pinned or live) on a scratch canvas: dotted ones (measured
@@ -244,7 +262,6 @@ impl<'a> Plot<'a> {
             .iter()
             .any(|s| s.kind == Role::Pinned)
             .then(|| self.canvas(l, true));
-        let ghost_style = self.theme.ghost();
         for pos in l.plot.positions() {
             let cell = &live[pos];
             if cell.symbol() != " " {
@@ -252,7 +269,9 @@ impl<'a> Plot<'a> {
             } else if let Some(g) = &ghost
                 && g[pos].symbol() != " "
             {
-                buf[pos].set_symbol(g[pos].symbol()).set_style(ghost_style);
+                // dimmed, in the pin's own colour (`Theme::series`)
+                let style = Style::default().fg(g[pos].fg).add_modifier(Modifier::DIM);
+                buf[pos].set_symbol(g[pos].symbol()).set_style(style);
             }
         }
     }
@@ -348,7 +367,7 @@ impl<'a> Plot<'a> {
                 continue;
             };
             let text = s.look.text.as_deref().unwrap_or("●");
-            let style = self.theme.tone(s.look.tone);
+            let style = self.theme.series(s.look.tone, s.color);
             for p in self.drawn(s) {
                 let Some((col, row)) = cell(p) else {
                     continue;
@@ -385,14 +404,14 @@ impl<'a> Plot<'a> {
     }
 }
 
-impl Widget for &Plot<'_> {
-    fn render(self, area: Rect, buf: &mut Buffer) {
-        let area = area.intersection(buf.area);
-        let layout = self.layout(area);
+impl Plot<'_> {
+    /// The plot drawn in `area` on `layout` (its [`Plot::layout`], or another's to compare
+    /// with: tests/tui/tui_legend.rs); the rows the legend asks for above the plot, 0 when it
+    /// found a place that hides no data (or has them already).
+    pub fn draw_in(&self, area: Rect, layout: Option<&PlotLayout>, buf: &mut Buffer) -> u16 {
         // the frame's top row less its corners, the space before the title (the one after
         // it may meet the corner) and the y axis' power of ten
         let factor = layout
-            .as_ref()
             .and_then(|l| l.y.exponent)
             .map_or(0, |e| factor_label(e).chars().count() + 4);
         let room = usize::from(area.width).saturating_sub(3 + factor);
@@ -403,11 +422,19 @@ impl Widget for &Plot<'_> {
                 self.theme.title(),
             ))
             .render(area, buf);
-        let Some(l) = layout else { return };
-        self.draw_factors(area, &l, buf);
-        self.draw_axes(&l, buf);
-        self.draw_series(&l, buf);
-        let (labels, dropped) = self.draw_marks(&l, buf);
-        self.draw_legend(&l, (&labels, dropped), buf);
+        let Some(l) = layout else { return 0 };
+        self.draw_factors(area, l, buf);
+        self.draw_axes(l, buf);
+        self.draw_series(l, buf);
+        let (labels, dropped) = self.draw_marks(l, buf);
+        self.draw_legend(l, (&labels, dropped), buf)
+    }
+}
+
+impl Widget for &Plot<'_> {
+    fn render(self, area: Rect, buf: &mut Buffer) {
+        let area = area.intersection(buf.area);
+        let layout = self.layout(area);
+        self.draw_in(area, layout.as_ref(), buf);
     }
 }
