@@ -126,7 +126,6 @@ mod tests {
         assert!(r.step(11), "no report so soon after the last");
         wanted_now.set(false);
         assert!(!r.step(12), "a later fit asked for stops this one");
-        drop(r);
         let [FitNews::Progress(p)] = news.as_slice() else {
             panic!("not one progress report: {news:?}")
         };
