@@ -103,27 +103,34 @@ pub struct LegendEntry {
     pub tone: Tone,
     /// The text.
     pub key: String,
+    /// The series' colour ([`crate::figure::PALETTE`] index): a pin's or a measured file's
+    /// own, which the terminal draws too (issue 51 item 6).
+    pub color: usize,
 }
 
-/// Whether a terminal draws the series as a dotted line: measured values and thresholds, and
-/// model curves the figure draws dotted.
+/// Whether a terminal draws the series as a dotted line: thresholds, measured values (but a
+/// second measured file, which the figure draws in long dashes), and model and pinned curves
+/// the figure draws dotted.
 pub fn dotted(s: &Series) -> bool {
     match s.kind {
-        Role::Measured | Role::Reference => !matches!(s.style, Style::Markers(_)),
-        Role::Model => s.style == Style::Dotted,
-        Role::Pinned | Role::ThisRun => false,
+        Role::Reference => !matches!(s.style, Style::Markers(_)),
+        Role::Measured => !matches!(s.style, Style::Markers(_) | Style::LongDashed),
+        Role::Model | Role::Pinned => s.style == Style::Dotted,
+        Role::ThisRun => false,
     }
 }
 
-/// Whether a terminal draws the series dashed: model curves the figure draws dashed, so that
-/// curves stay apart without colour (NO_COLOR), as in the SVG picture.
+/// Whether a terminal draws the series dashed: model and pinned curves the figure draws
+/// dashed, so that curves stay apart without colour (NO_COLOR), as in the SVG picture
+/// (measured values the figure draws dashed, its thresholds, stay dotted on screen).
 pub fn dashed(s: &Series) -> bool {
-    s.kind == Role::Model && s.style == Style::Dashed
+    matches!(s.kind, Role::Model | Role::Pinned) && s.style == Style::Dashed
 }
 
-/// Whether a terminal draws the series in long dashes (model curves the figure draws so).
+/// Whether a terminal draws the series in long dashes (model, pinned and measured curves the
+/// figure draws so).
 pub fn long_dashed(s: &Series) -> bool {
-    s.kind == Role::Model && s.style == Style::LongDashed
+    matches!(s.kind, Role::Model | Role::Pinned | Role::Measured) && s.style == Style::LongDashed
 }
 
 /// The legend of `series`: one entry per distinct (key, tone), in series order. Markers that
@@ -160,6 +167,7 @@ pub fn legend(series: &[Series]) -> Vec<LegendEntry> {
                 sample,
                 tone: s.look.tone,
                 key: key.clone(),
+                color: s.color,
             }),
         }
     }

@@ -58,21 +58,28 @@ impl MeasuredOverlay {
         })
     }
 
-    /// A trace (hundreds of samples of one impact) as a dotted line, which leaves the model's
-    /// curve visible under it; a few points across speeds (a COR table) as `+` markers.
-    pub(super) fn series(&self) -> Series {
+    /// The `i`th file's data (from 0): a trace (hundreds of samples of one impact) as a dotted
+    /// line, which leaves the model's curve visible under it; a few points across speeds (a
+    /// COR table) as `+` markers. A second file's trace is in long dashes (its points `×`), a
+    /// third's points `*`, each file in a colour of its own: files told apart without colour
+    /// (issue 51 item 6; a third trace is dotted again, in its own colour: the terminal's
+    /// dashed pattern is the measured thresholds').
+    pub(super) fn series(&self, i: usize) -> Series {
+        const LINES: [Style; 2] = [Style::Dotted, Style::LongDashed];
+        const MARKS: [&str; 3] = ["+", "×", "*"];
+        const COLORS: [usize; 3] = [super::BLACK, 1, 2];
         let trace = matches!(self.chart, Chart::ForceTime | Chart::Hysteresis);
         let (style, text) = if trace {
-            (Style::Dotted, None)
+            (LINES[i % LINES.len()], None)
         } else {
-            (Style::Markers(Marker::Circle), Some("+"))
+            (Style::Markers(Marker::Circle), Some(MARKS[i % MARKS.len()]))
         };
         Series::new(
             &self.label,
             &format!("measured {}", self.label),
             Kind::Measured,
             style,
-            super::BLACK,
+            COLORS[i % COLORS.len()],
         )
         .with_points(self.points.clone())
         .with_look(Look::new(Tone::Measured, Some(&self.label), text))
@@ -102,14 +109,22 @@ mod tests {
             MeasuredOverlay::from_data(&parse_any(&text).unwrap(), "t.csv", 0.0459, 1.47).unwrap();
         assert_eq!(trace.len(), 2);
         for o in &trace {
-            let s = o.series();
+            let s = o.series(0);
             assert_eq!(s.style, Style::Dotted, "{:?}", o.chart);
             assert_eq!(s.look.text, None);
         }
         let table = parse_any("v0,cor\n1,0.8\n2,0.78\n3,0.75\n").unwrap();
         let cor = MeasuredOverlay::from_data(&table, "c.csv", 0.0459, 1.47).unwrap();
-        let s = cor[0].series();
+        let s = cor[0].series(0);
         assert_eq!(s.style, Style::Markers(Marker::Circle));
         assert_eq!(s.look.text.as_deref(), Some("+"));
+        // issue 51 item 6: a second file has its own glyph and colour (all were `+`/dotted
+        // and black)
+        let second = cor[0].series(1);
+        assert_eq!(second.look.text.as_deref(), Some("×"));
+        assert_ne!(second.color, s.color);
+        let second_trace = trace[0].series(1);
+        assert_eq!(second_trace.style, Style::LongDashed);
+        assert_ne!(second_trace.color, trace[0].series(0).color);
     }
 }

@@ -147,10 +147,16 @@ pub fn initial(name: &str) -> String {
 /// The marks of several balls' measured points on screen, one per name and no two alike: the
 /// initial when it is free ("S" superball), else the initials of the name's words ("SC"
 /// superball-custom, "TT" table-tennis), else its first two letters ("So" softball), else the
-/// initial and a number.
+/// initial and a number. A name of several words whose initial is another name's initial
+/// takes its words' initials whatever the order: table tennis is "TT" beside tennis's "T",
+/// never "T" beside "Te" (issue 51 item 6, `table_tennis_is_tt_in_any_order`).
 pub fn initials(names: &[&str]) -> Vec<String> {
     let mut out: Vec<String> = Vec::new();
-    for name in names {
+    for (i, name) in names.iter().enumerate() {
+        let shared = names
+            .iter()
+            .enumerate()
+            .any(|(j, other)| j != i && initial(other) == initial(name));
         let words: String = name
             .split(|c: char| !c.is_alphanumeric())
             .filter_map(|w| w.chars().next())
@@ -158,7 +164,13 @@ pub fn initials(names: &[&str]) -> Vec<String> {
             .collect();
         let first_two: String = initial(name) + &name.chars().skip(1).take(1).collect::<String>();
         let numbered = (2..).map(|k| format!("{}{k}", initial(name)));
-        let mark = [initial(name), words, first_two]
+        let several_words = words.chars().count() > 1;
+        let order = if shared && several_words {
+            [words.clone(), initial(name), first_two]
+        } else {
+            [initial(name), words, first_two]
+        };
+        let mark = order
             .into_iter()
             .chain(numbered)
             .find(|m| !m.is_empty() && !out.contains(m))
@@ -328,4 +340,20 @@ pub fn cor_velocity(ball: &Ball, rows: &[VelocityPoint], onset: Option<f64>) -> 
     fig.screen_title = format!("COR e vs impact speed v0 [m/s] · {}", ball.name);
     fig.legend_corner = Corner::BottomLeft;
     fig
+}
+
+#[cfg(test)]
+mod tests {
+    use super::initials;
+
+    /// Issue 51 item 6: table tennis is "TT" beside tennis in either order (it was "T" beside
+    /// "Te" when it came first); a ball alone keeps its initial.
+    #[test]
+    fn table_tennis_is_tt_in_any_order() {
+        assert_eq!(initials(&["table-tennis", "tennis"]), ["TT", "T"]);
+        assert_eq!(initials(&["tennis", "table-tennis"]), ["T", "TT"]);
+        assert_eq!(initials(&["superball", "superball-custom"]), ["S", "SC"]);
+        assert_eq!(initials(&["softball", "softball-44"]), ["S", "S4"]);
+        assert_eq!(initials(&["table-tennis"]), ["T"]);
+    }
 }

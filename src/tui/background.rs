@@ -1,9 +1,10 @@
-//! One named background thread and its two channels: jobs in, replies out. The explorer's
-//! workers (the sweeps' and models' `worker.rs`, the fits', the (λ, ζ) map's and the oblique
-//! map's) each run their own serving loop on one; what they share — spawning the thread,
-//! reading replies without blocking, and telling "nothing yet" from "the thread is gone" (a
-//! panic in a job), with the panic's message — is here. The event loop reports a thread gone
-//! as `Action::WorkerStopped` and starts a new one at the next request (src/tui/event.rs).
+//! One named background thread and its two channels: jobs in, replies out. The explorer's one
+//! worker type ([`crate::tui::worker::Worker`]: the sweeps', the models', the fits', the
+//! (λ, ζ) map's and the oblique map's jobs, issue 55 item 1) serves on one; what a thread
+//! needs — spawning it, reading replies without blocking, and telling "nothing yet" from "the
+//! thread is gone" (a panic in a job), with the panic's message — is here. The event loop
+//! reports a thread gone as `Action::WorkerStopped` and starts a new one at the next request
+//! (src/tui/event.rs).
 
 use crate::fault::Fault;
 use std::sync::atomic::{AtomicBool, Ordering};

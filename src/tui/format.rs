@@ -125,16 +125,27 @@ pub fn wrap(text: &str, width: usize) -> Vec<String> {
     lines
 }
 
-/// `text` in at most `width` characters: whole, or cut with an ellipsis ("superba…").
+/// `text` in at most `width` characters (a terminal cell each): whole, or its whole words
+/// from the left and "…" — never cut inside a word (issue 51 item 6): words end at a space or
+/// after a hyphen ("table-…"), and a bracketed unit is part of its word, so "[ms" never shows.
+/// Only "…" when not even the first word fits; nothing at width 0. The one place the
+/// explorer shortens a text: chart titles ([`crate::tui::widgets::title::fit`]), the picker,
+/// the pin table.
 pub fn clip(text: &str, width: usize) -> String {
     if text.chars().count() <= width {
         return text.to_string();
     }
-    let mut out: String = text.chars().take(width.saturating_sub(1)).collect();
-    if width > 0 {
-        out.push('…');
+    if width == 0 {
+        return String::new();
     }
-    out
+    // the ends of words: before each space, after each hyphen
+    let chars: Vec<char> = text.chars().collect();
+    let ends = (1..chars.len()).filter(|&i| chars[i] == ' ' || chars[i - 1] == '-');
+    // room for the ellipsis after the words
+    let end = ends.take_while(|&i| i < width).last().unwrap_or(0);
+    let mut out: String = chars[..end].iter().collect();
+    out.truncate(out.trim_end().len());
+    out + "…"
 }
 
 /// `lines` fitted to `width` columns without breaking a value: a line too long breaks
@@ -241,8 +252,16 @@ mod tests {
     #[test]
     fn names_are_cut_with_an_ellipsis() {
         assert_eq!(clip("superball", 9), "superball");
-        assert_eq!(clip("superball", 8), "superba…");
         assert_eq!(clip("golf", 0), "");
+        // never inside a word (issue 51 item 6: the picker showed "hollow rubber ba")
+        assert_eq!(clip("superball", 8), "…");
+        assert_eq!(clip("p1 superball λ 1.3", 14), "p1 superball…");
+        assert_eq!(clip("p1 superball λ 1.3", 12), "p1…");
+        assert_eq!(clip("table-tennis ball", 10), "table-…");
+        assert_eq!(clip("a  b c", 4), "a…");
+        for w in 0..20 {
+            assert!(clip("p1 superball λ 1.3", w).chars().count() <= w, "{w}");
+        }
     }
 
     fn texts(lines: &[Line]) -> Vec<String> {

@@ -70,6 +70,34 @@ impl Theme {
         self.fg(Color::Red).add_modifier(Modifier::BOLD)
     }
 
+    /// The style of a series of colour role `tone` and figure colour `color` (a
+    /// [`crate::figure::PALETTE`] index): a pin and a measured file in the colour the picture
+    /// gives it, so each shows its own (issue 51 item 6); the first measured file in the
+    /// measured colour, every other role by its tone alone.
+    pub fn series(&self, tone: Tone, color: usize) -> Style {
+        // the picture's palette (Okabe & Ito) in the terminal's named colours: blue,
+        // vermillion, bluish green, reddish purple, orange, sky blue, black (white on a
+        // terminal), grey
+        const NAMED: [Color; 8] = [
+            Color::Blue,
+            Color::LightRed,
+            Color::Green,
+            Color::Magenta,
+            Color::LightYellow,
+            Color::LightBlue,
+            Color::White,
+            Color::DarkGray,
+        ];
+        let named = NAMED[color % NAMED.len()];
+        match tone {
+            Tone::Ghost => self.fg(named).add_modifier(Modifier::DIM),
+            Tone::Measured if color != crate::figure::BLACK => {
+                self.fg(named).add_modifier(Modifier::BOLD)
+            }
+            _ => self.tone(tone),
+        }
+    }
+
     /// The style of a figure's colour role.
     pub fn tone(&self, tone: Tone) -> Style {
         match tone {

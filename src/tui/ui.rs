@@ -310,6 +310,7 @@ impl Widget for &App {
             theme,
             map: self.view() == View::Map,
             drop: self.view() == View::Drop,
+            drop_paused: self.view() == View::Drop && self.drop_view().paused(),
             oblique: (self.view() == View::Oblique).then(|| self.oblique_view().page),
             flight: self.view() == View::Flight,
         }

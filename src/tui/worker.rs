@@ -1,9 +1,12 @@
-//! A background thread for the COR-vs-speed sweeps: in some corners of the parameter space
-//! (λ ≈ 0, ζ ≫ 1, nonlinear law: the ball sinks into the dashpot) a sweep takes seconds even in
-//! release builds. The explorer stays responsive meanwhile, and a sweep the user has moved past
-//! is abandoned between two speeds. Results come back as `Action::SpeedReady`. The models
-//! view's calibrations ([`crate::tui::views::models::state::ModelsRequest`]) run on a second
-//! worker of the same kind and come back as `Action::ModelsReady`.
+//! The explorer's one background-worker type (issue 55 item 1): a thread that runs the latest
+//! jobs asked for, one at a time, drops those the user has moved past (between two steps of a
+//! job), and sends back what a job has so far and its answer. Every view's computation is a
+//! [`Job`] on it: the COR-vs-speed sweeps (`Action::SpeedReady`; in some corners of the
+//! parameter space — λ ≈ 0, ζ ≫ 1, a nonlinear law — a sweep takes seconds even in release
+//! builds), the models view's calibrations
+//! ([`crate::tui::views::models::state::ModelsRequest`], `Action::ModelsReady`), the fits
+//! (src/tui/views/fit/worker.rs), the map's passes (src/tui/views/map/worker.rs) and the
+//! oblique view's map (src/tui/views/oblique/worker.rs).
 
 use crate::tui::background::{Background, Stopped};
 use crate::tui::views::sweeps::speed::{SpeedCurve, SpeedRequest};
@@ -12,6 +15,8 @@ use std::sync::mpsc::{Receiver, Sender, TryRecvError};
 /// Work a [`Worker`] does: equal jobs give equal results, so the job is its result's key.
 pub trait Job: Clone + PartialEq + Send + 'static {
     type Output: Send + 'static;
+    /// The thread's name, after [`crate::tui::background::THREAD_PREFIX`].
+    const NAME: &'static str = "sweeps";
     /// The job, asking `go_on` between its steps; `None` when it said stop.
     fn run_while(&self, go_on: &mut dyn FnMut() -> bool) -> Option<Result<Self::Output, String>>;
 
@@ -52,7 +57,7 @@ pub struct Worker<J: Job = SpeedRequest> {
 impl<J: Job> Worker<J> {
     pub fn spawn() -> std::io::Result<Worker<J>> {
         Ok(Worker {
-            thread: Background::spawn("sweeps", serve)?,
+            thread: Background::spawn(J::NAME, serve)?,
             sent: Vec::new(),
         })
     }

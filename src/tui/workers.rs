@@ -9,9 +9,9 @@ use super::background::{Background, Stopped, Work};
 use super::effect::Effect;
 use super::worker::Worker;
 use crate::tui::views::fit::worker::FitWorker;
-use crate::tui::views::map::worker as map_worker;
+use crate::tui::views::map::worker::MapWorker;
 use crate::tui::views::models::state::ModelsRequest;
-use crate::tui::views::oblique::worker as oblique_worker;
+use crate::tui::views::oblique::worker::ObliqueMapWorker;
 
 /// A worker the loop reads news from without blocking.
 pub trait Thread {
@@ -48,8 +48,8 @@ pub struct Workers {
     pub sweeps: Option<Worker>,
     pub models: Option<Worker<ModelsRequest>>,
     pub fits: Option<FitWorker>,
-    pub maps: Option<map_worker::MapWorker>,
-    pub oblique: Option<oblique_worker::ObliqueMapWorker>,
+    pub maps: Option<MapWorker>,
+    pub oblique: Option<ObliqueMapWorker>,
 }
 
 impl Workers {
@@ -78,11 +78,11 @@ impl Workers {
             ),
             Effect::Map(job) => (
                 Work::Map,
-                started(&mut self.maps, map_worker::spawn).map(|w| w.send(job)),
+                started(&mut self.maps, Worker::spawn).map(|w| w.want(&[job])),
             ),
             Effect::ObliqueMap(job) => (
                 Work::ObliqueMap,
-                started(&mut self.oblique, oblique_worker::spawn).map(|w| w.send(*job)),
+                started(&mut self.oblique, Worker::spawn).map(|w| w.want(&[*job])),
             ),
             _ => return None,
         };
@@ -103,17 +103,29 @@ impl Workers {
         collect(&mut self.fits, Work::Fit, &mut out, |(id, news)| {
             Action::FitReady(id, news)
         });
-        collect(&mut self.maps, Work::Map, &mut out, |(generation, map)| {
-            let map = Box::new(map);
-            Action::MapPass { generation, map }
-        });
+        collect(
+            &mut self.maps,
+            Work::Map,
+            &mut out,
+            |(job, map)| match map {
+                Ok(map) => Action::MapPass {
+                    generation: job.generation,
+                    map: Box::new(map),
+                },
+                // a map's refinement has no refusal of its own (`Job for MapJob`)
+                Err(why) => Action::WorkerStopped {
+                    work: Work::Map,
+                    why,
+                },
+            },
+        );
         collect(
             &mut self.oblique,
             Work::ObliqueMap,
             &mut out,
-            |(generation, map)| {
-                let map = Box::new(map);
-                Action::ObliqueMapReady { generation, map }
+            |(job, map)| Action::ObliqueMapReady {
+                generation: job.generation,
+                map: Box::new(map),
             },
         );
         out

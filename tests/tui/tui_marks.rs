@@ -93,3 +93,30 @@ fn the_permanent_indentation_label_shows_whole() {
         assert!(s.contains(&label), "{w}×{h}: no whole '{label}'\n{s}");
     }
 }
+
+/// Issue 51 item 6: the COR chart's texts never run together ("◆nowS", "◇nowSSC"): at the
+/// five sizes, with each embedded ball, every marker's or tag's text has a blank (or a line's
+/// dot) beside it, never another letter.
+#[test]
+fn marker_texts_never_run_together() {
+    let glued = |row: &str| {
+        let c: Vec<char> = row.chars().collect();
+        (0..c.len().saturating_sub(3)).any(|i| {
+            let now = c[i..i + 3].iter().collect::<String>() == "now";
+            let before = i.checked_sub(1).map(|j| c[j]);
+            let after = c.get(i + 3).copied();
+            let letter = |x: Option<char>| x.is_some_and(|x| x.is_alphanumeric());
+            now && (letter(after) || letter(before))
+        })
+    };
+    for preset in Preset::embedded() {
+        let name = preset.name.clone();
+        let app = App::new(preset, false);
+        for (w, h) in [(80, 24), (100, 30), (120, 40), (160, 50), (200, 60)] {
+            let rows = screen_text(&draw(&app, w, h));
+            for row in &rows {
+                assert!(!glued(row), "{name} {w}×{h}: '{row}'\n{}", rows.join("\n"));
+            }
+        }
+    }
+}

@@ -234,3 +234,46 @@ fn pins_at_80x24_show_their_delta_e() {
         assert!(shown, "{w}×{h}: no pin differences\n{s}");
     }
 }
+
+/// Issue 51 item 6: each pin has its own glyph without colour (its legend sample and line
+/// pattern: dotted, dashed, long dashes) and its own colour with it; all were one dim grey.
+#[test]
+fn each_pin_has_its_own_glyph_and_colour() {
+    use ratatui::style::Color;
+    let mut a = App::new(Preset::embedded().remove(0), false);
+    a.update(Action::Resize(200, 60));
+    type_keys(&mut a, "pvvpvvp");
+    assert_eq!(a.pins().len(), 3);
+    let rows = screen_text(&draw(&a, 200, 60)).join("\n");
+    for sample in ["┄ p1 superball", "╍ p2 superball", "═ p3 superball"] {
+        assert!(rows.contains(sample), "no '{sample}'\n{rows}");
+    }
+    let mut c = App::new(Preset::embedded().remove(0), true);
+    c.update(Action::Resize(200, 60));
+    type_keys(&mut c, "pvvpvvp");
+    let t = draw(&c, 200, 60);
+    let buf = t.backend().buffer();
+    // the colour of each pin's legend sample (the glyph before "p1 superball")
+    let rows = screen_text(&t);
+    let sample_color = |key: &str| {
+        let (y, row) = rows
+            .iter()
+            .enumerate()
+            .find(|(_, r)| r.contains(key))
+            .unwrap();
+        let chars: Vec<char> = row.chars().collect();
+        let k: Vec<char> = key.chars().collect();
+        let x = (0..chars.len())
+            .find(|&i| chars[i..].starts_with(&k))
+            .unwrap();
+        buf[((x - 2) as u16, y as u16)].fg
+    };
+    let colors: Vec<Color> = ["p1 superball", "p2 superball", "p3 superball"]
+        .iter()
+        .map(|k| sample_color(k))
+        .collect();
+    assert!(
+        colors[0] != colors[1] && colors[1] != colors[2] && colors[0] != colors[2],
+        "{colors:?}"
+    );
+}

@@ -363,9 +363,10 @@ fn a_figure_draws_its_curve_tag_markers_and_legend() {
     let s = text(&buf);
     assert!(s.starts_with("┌ a chart "), "{s}");
     assert!(s.contains("z_p"), "the threshold's tag:\n{s}");
+    // a blank between them: two marks never read as one ("◆S", issue 51 item 6)
     assert!(
-        s.contains("◆S"),
-        "a marker whose cell is taken moves right:\n{s}"
+        s.contains("◆ S"),
+        "a marker whose cell is taken moves right, a cell apart:\n{s}"
     );
     assert!(
         s.contains("━ model") && s.contains("◆ S here"),
@@ -517,12 +518,13 @@ fn legends_stay_with_eight_pins() {
             press(&mut a, &[KeyCode::Char('p'), KeyCode::Char('v')]);
         }
         let rows = screen_text(&draw(&a, w, h));
-        // the force–time chart: the rows under its title, up to its right border
+        // the force–time chart: the rows under its title, up to its right border, its bottom
+        // border too (where a legend that would hide the curves goes, issue 51 item 6)
         let top = rows.iter().position(|r| r.contains("F [N] vs t")).unwrap();
         let right = rows[top].chars().position(|c| c == '┐').unwrap();
-        let chart: Vec<String> = rows[top..]
+        let bottom = top + rows[top..].iter().position(|r| r.starts_with('└')).unwrap();
+        let chart: Vec<String> = rows[top..=bottom]
             .iter()
-            .take_while(|r| !r.starts_with('└'))
             .map(|r| r.chars().take(right).collect())
             .collect();
         let s = chart.join("\n");

@@ -126,7 +126,12 @@ pub fn figure(chart: Chart, scene: &Scene) -> Figure {
         Chart::ModelsForceDisplacement => models::force_displacement(scene),
     };
     let v0 = scene.ball.params.v0;
-    for m in scene.measured.iter().filter(|m| m.chart == chart) {
+    for (i, m) in scene
+        .measured
+        .iter()
+        .filter(|m| m.chart == chart)
+        .enumerate()
+    {
         match m.v0 {
             // measured at another speed: neither drawn nor stretching the axes; said instead
             Some(at) if !same_speed(at, v0) => {
@@ -135,7 +140,7 @@ pub fn figure(chart: Chart, scene: &Scene) -> Figure {
                 fig.subtitle
                     .push_str(&format!("; measured {} (at {at} m/s) not shown", m.label));
             }
-            _ => fig.series.push(m.series()),
+            _ => fig.series.push(m.series(i)),
         }
     }
     fig

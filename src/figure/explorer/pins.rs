@@ -8,6 +8,10 @@ use crate::text::short;
 /// never orange, this run's colour). On screen every pin is dimmed and tagged `p1`, `p2`, ….
 const PIN_COLORS: [usize; 7] = [GREY, 5, 3, 2, 0, 1, 6];
 
+/// The line patterns of pins 1, 2, …: each pin its own beside the next without colour
+/// (NO_COLOR, greyscale print; issue 51 item 6), the first dotted as the one ghost always was.
+const PIN_STYLES: [Style; 3] = [Style::Dotted, Style::Dashed, Style::LongDashed];
+
 impl Pinned<'_> {
     /// "p2": the tag at the pin's curves on screen.
     pub fn tag(&self) -> String {
@@ -45,7 +49,7 @@ impl Pinned<'_> {
             &self.label(),
             &id,
             Kind::Pinned,
-            Style::Dotted,
+            PIN_STYLES[(self.number.max(1) - 1) % PIN_STYLES.len()],
             self.color(),
         )
         .with_points(points)

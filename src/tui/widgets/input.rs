@@ -28,7 +28,8 @@ impl Widget for &InputDialog<'_> {
 fn render(input: &Input, s: &Setting, theme: &Theme, area: Rect, buf: &mut Buffer) {
     let (title, about, label, keys, width) = match input.purpose {
         Purpose::Value(p) => {
-            let current = sig_trim(s.get(p), 6);
+            // four digits, as the readout shows it (issue 51 item 4: "now 1.29908")
+            let current = sig_trim(s.get(p), 4);
             (
                 format!(" Set {} ", p.symbol()),
                 format!(" range {}, now {current}{}", p.range_text(), p.unit()),

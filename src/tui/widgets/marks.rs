@@ -31,16 +31,27 @@ pub fn marker_place(
     (left, right, top, bottom): (u16, u16, u16, u16),
     taken: &[(u16, u16)],
 ) -> Vec<(u16, u16, String)> {
+    // a text and a blank cell either side of it: two texts never run together ("◆nowS",
+    // tests/tui/tui_marks.rs: `marker_texts_never_run_together`)
     let clear = |x: u16, y: u16, t: &str| {
         let w = t.chars().count() as u16;
-        x >= left && x + w <= right && (x..x + w).all(|c| !taken.contains(&(c, y)))
+        x >= left
+            && x + w <= right
+            && (x.saturating_sub(1)..x + w + 1).all(|c| !taken.contains(&(c, y)))
     };
     let mut chars = text.chars();
     let glyph = chars.next().unwrap_or('●');
     let label = chars.as_str();
     if !matches!(glyph, '●' | '▲' | '◆') || label.is_empty() {
         let mut x = col;
-        while taken.contains(&(x, row)) && x + 1 < right {
+        // off taken cells, a blank cell either side: never run together ("So1", "nowS")
+        let w = text.chars().count() as u16;
+        let blocked = |x: u16| {
+            (x..x + w).any(|c| taken.contains(&(c, row)))
+                || (x > left && taken.contains(&(x - 1, row)))
+                || taken.contains(&(x + w, row))
+        };
+        while blocked(x) && x + w < right {
             x += 1;
         }
         let (x, t) = marker_text_at(text, x, (left, right));

@@ -215,9 +215,11 @@ mod tests {
         assert_eq!(text(9).len(), 9, "heading, two header rows, two rows a pin");
         assert!(text(9)[4].starts_with("  superball "));
         assert_eq!(text(8).len(), 5, "heading, one header row, a row a pin");
+        // cut at a word, never inside one (issue 51 item 6: "p1 superb…")
         assert!(
-            text(8)[2].starts_with(" p1 superb… "),
-            "a cut name ends in …"
+            text(8)[2].starts_with(" p1… "),
+            "a cut name ends in … after a whole word: {:?}",
+            text(8)[2]
         );
         assert_eq!(text(4), [" pin Δe: p1 — p2 — p3 —"]);
         assert!(table(&[], &now, (34, 40), &theme).is_empty());

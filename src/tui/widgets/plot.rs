@@ -3,18 +3,19 @@
 //! label sits over the column where the curve's dot for its value lands. Pinned series are
 //! drawn dimmed behind the live ones; measured values and thresholds dotted; markers as text.
 
+mod draw;
 mod legend;
 
 use super::marks::marker_place;
 use super::strokes::{Pattern, patterned};
 use crate::figure::look::{dashed, dotted, long_dashed};
-use crate::figure::ticks::{Room, factor_label, ticks};
+use crate::figure::ticks::{Room, ticks};
 use crate::figure::{Figure, Role, Series, Style as Stroke};
 use crate::tui::theme::Theme;
 use crate::tui::widgets::tags;
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
-use ratatui::style::{Color, Style};
+use ratatui::style::{Color, Modifier, Style};
 use ratatui::symbols::Marker;
 use ratatui::text::{Line, Span};
 use ratatui::widgets::canvas::{self, Canvas, Context};
@@ -95,13 +96,23 @@ impl<'a> Plot<'a> {
         }
     }
 
-    /// The layout for `area`, or `None` when there is no room for axes and a plot.
+    /// The layout for `area`, or `None` when there is no room for axes and a plot: rows kept
+    /// above the plot for the legend when it would hide data anywhere else (legend.rs).
     pub fn layout(&self, area: Rect) -> Option<PlotLayout> {
+        let first = self.layout_below(area, 0)?;
+        match self.legend_rows(area, &first) {
+            0 => Some(first),
+            rows => self.layout_below(area, rows).or(Some(first)),
+        }
+    }
+
+    /// The layout with the first `top` rows inside the frame kept for the legend.
+    fn layout_below(&self, area: Rect, top: u16) -> Option<PlotLayout> {
         let inner = Block::bordered().inner(area);
-        if inner.width < 10 || inner.height < 4 {
+        if inner.width < 10 || inner.height < 4 + top {
             return None;
         }
-        let plot_h = inner.height - 2;
+        let plot_h = inner.height - 2 - top;
         let y = self.axis(false, usize::from(plot_h / 2).clamp(2, 11));
         let gutter = y
             .ticks
@@ -113,7 +124,12 @@ impl<'a> Plot<'a> {
         if inner.width < gutter + 6 {
             return None;
         }
-        let plot = Rect::new(inner.x + gutter, inner.y, inner.width - gutter, plot_h);
+        let plot = Rect::new(
+            inner.x + gutter,
+            inner.y + top,
+            inner.width - gutter,
+            plot_h,
+        );
         let x = self.axis(true, usize::from(plot.width / 8).max(2));
         Some(PlotLayout { inner, plot, x, y })
     }
@@ -156,21 +172,6 @@ impl<'a> Plot<'a> {
         }
     }
 
-    /// The powers of ten of scaled axes, on the frame's right end: y's on the top border
-    /// ("y ×10⁻¹⁵"), x's on the bottom one, where no title, label or curve is.
-    fn draw_factors(&self, area: Rect, l: &PlotLayout, buf: &mut Buffer) {
-        let style = self.theme.axis();
-        for (axis, row, name) in [(&l.y, area.y, "y"), (&l.x, area.bottom() - 1, "x")] {
-            let Some(e) = axis.exponent else { continue };
-            let text = format!(" {name} {} ", factor_label(e));
-            let w = text.chars().count() as u16;
-            if w + 4 > area.width {
-                continue;
-            }
-            buf.set_stringn(area.right() - 1 - w, row, &text, usize::from(w), style);
-        }
-    }
-
     /// A series' points in plot units; `None` where the axes cannot show one.
     fn drawn(&self, s: &Series) -> Vec<Option<(f64, f64)>> {
         let (fx, fy) = (&self.figure.x, &self.figure.y);
@@ -181,7 +182,10 @@ impl<'a> Plot<'a> {
     }
 
     fn color(&self, s: &Series) -> Color {
-        self.theme.tone(s.look.tone).fg.unwrap_or_default()
+        self.theme
+            .series(s.look.tone, s.color)
+            .fg
+            .unwrap_or_default()
     }
 
     /// The lines of one layer (pinned or live) on a scratch canvas: dotted ones (measured
@@ -244,7 +248,6 @@ impl<'a> Plot<'a> {
             .iter()
             .any(|s| s.kind == Role::Pinned)
             .then(|| self.canvas(l, true));
-        let ghost_style = self.theme.ghost();
         for pos in l.plot.positions() {
             let cell = &live[pos];
             if cell.symbol() != " " {
@@ -252,7 +255,9 @@ impl<'a> Plot<'a> {
             } else if let Some(g) = &ghost
                 && g[pos].symbol() != " "
             {
-                buf[pos].set_symbol(g[pos].symbol()).set_style(ghost_style);
+                // dimmed, in the pin's own colour (`Theme::series`)
+                let style = Style::default().fg(g[pos].fg).add_modifier(Modifier::DIM);
+                buf[pos].set_symbol(g[pos].symbol()).set_style(style);
             }
         }
     }
@@ -348,7 +353,7 @@ impl<'a> Plot<'a> {
                 continue;
             };
             let text = s.look.text.as_deref().unwrap_or("●");
-            let style = self.theme.tone(s.look.tone);
+            let style = self.theme.series(s.look.tone, s.color);
             for p in self.drawn(s) {
                 let Some((col, row)) = cell(p) else {
                     continue;
@@ -382,32 +387,5 @@ impl<'a> Plot<'a> {
             }
         }
         (taken, dropped)
-    }
-}
-
-impl Widget for &Plot<'_> {
-    fn render(self, area: Rect, buf: &mut Buffer) {
-        let area = area.intersection(buf.area);
-        let layout = self.layout(area);
-        // the frame's top row less its corners, the space before the title (the one after
-        // it may meet the corner) and the y axis' power of ten
-        let factor = layout
-            .as_ref()
-            .and_then(|l| l.y.exponent)
-            .map_or(0, |e| factor_label(e).chars().count() + 4);
-        let room = usize::from(area.width).saturating_sub(3 + factor);
-        Block::bordered()
-            .border_style(self.theme.dim())
-            .title(Line::styled(
-                format!(" {} ", super::title::fit(&self.figure.screen_title, room)),
-                self.theme.title(),
-            ))
-            .render(area, buf);
-        let Some(l) = layout else { return };
-        self.draw_factors(area, &l, buf);
-        self.draw_axes(&l, buf);
-        self.draw_series(&l, buf);
-        let (labels, dropped) = self.draw_marks(&l, buf);
-        self.draw_legend(&l, (&labels, dropped), buf);
     }
 }

@@ -115,6 +115,8 @@ pub struct KeyHints {
     pub map: bool,
     /// In the drop view: its own keys in place of `e`, which exports nothing there.
     pub drop: bool,
+    /// The drop view's animation paused: its key bar says so and that space plays.
+    pub drop_paused: bool,
     /// In the oblique view (its page): its own keys in place of `e` and of the arrows' hints
     /// on the map.
     pub oblique: Option<crate::tui::views::oblique::state::Page>,
@@ -178,6 +180,11 @@ impl Widget for &KeyHints {
             v
         } else if self.drop {
             let mut v = DROP_HINTS.to_vec();
+            if self.drop_paused {
+                // "paused" on the key bar at every width, where the readout's own line
+                // may not show (issue 51 item 6: 80 × 24 showed no sign of the pause)
+                v[0] = ("space", "play · paused", 0);
+            }
             v.extend(HINTS.iter().filter(|h| h.0 != "e"));
             v
         } else {

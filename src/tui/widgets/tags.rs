@@ -67,9 +67,10 @@ pub fn place(plot: Rect, own: &Curve, w: u16, buf: &Buffer, taken: &Taken) -> Op
             && !tagged
                 .iter()
                 .any(|&(ty, a, b)| ty == y && x < b + 1 && a < x + w + 1)
+            // and a cell apart from a marker's glyph ("nowS", issue 51 item 6)
             && !points
                 .iter()
-                .any(|&(px, py)| py == y && (x..x + w).contains(&px));
+                .any(|&(px, py)| py == y && px + 1 >= x && px <= x + w);
         if !clear {
             continue;
         }

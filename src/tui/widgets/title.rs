@@ -21,8 +21,11 @@ pub fn fit(title: &str, width: usize) -> String {
         .iter()
         .position(|p| p.contains(" vs ") || p.contains('['))
         .unwrap_or(0);
-    // the parts that stay: the axes, a reading (the crosshair's "+(x, y)") and a stop
-    let kept = |i: usize, p: &str| i == axes || p.starts_with("+(") || p.starts_with("stopped:");
+    // the parts that stay: the axes, a reading (the crosshair's "+(x, y)"), a stop and a
+    // pause (the drop view's "paused", issue 51 item 6)
+    let kept = |i: usize, p: &str| {
+        i == axes || p.starts_with("+(") || p.starts_with("stopped:") || p == "paused"
+    };
     // the others go, those after the axes from the right first, then those before them
     let order: Vec<usize> = (axes + 1..parts.len())
         .rev()
@@ -43,7 +46,7 @@ pub fn fit(title: &str, width: usize) -> String {
     if fits(&candidate) {
         return candidate;
     }
-    cut_words(&candidate, width)
+    crate::tui::format::clip(&candidate, width)
 }
 
 /// The parts not `gone`, joined as titles are.
@@ -64,33 +67,6 @@ fn tighten(axes: &str) -> String {
         .replace(" vs ", "–")
         .replace(" (log)", " log")
         .replace(", ", ",")
-}
-
-/// Whole words of `text` from the left, then "…", in at most `width` characters; a bracketed
-/// unit counts as part of its word, so "[ms" never shows. Nothing (not even "…") when not one
-/// word fits.
-fn cut_words(text: &str, width: usize) -> String {
-    let mut out = String::new();
-    for word in text.split(' ') {
-        let next = if out.is_empty() {
-            word.to_string()
-        } else {
-            format!("{out} {word}")
-        };
-        // room for the ellipsis after it
-        if next.chars().count() + 1 > width {
-            break;
-        }
-        out = next;
-    }
-    if out.is_empty() {
-        return if width >= 1 {
-            "…".into()
-        } else {
-            String::new()
-        };
-    }
-    out + "…"
 }
 
 #[cfg(test)]

@@ -1,4 +1,4 @@
-//! A background thread for the explorer's fits (`f`): a fit solves the model hundreds of
+//! The explorer's fits (`f`) on its one worker type ([`crate::tui::worker::Worker`]): a fit solves the model hundreds of
 //! times, which in a debug build takes seconds, so it runs here while the keys go on acting.
 //! Only the latest fit asked for is run: one asked before it and not yet started is dropped,
 //! and one running stops at its next model run once a later one is asked for (its answer
@@ -7,12 +7,10 @@
 //! budget's `Watch`, issue 29 item 13), then its outcome, each as `Action::FitReady`.
 
 use crate::analysis::work::Watch;
-use crate::tui::background::{Background, Stopped};
+use crate::tui::background::Stopped;
 use crate::tui::views::fit::state::{self as measured, FitNews, FitProgress, FitRequest};
-use std::cell::Cell;
-use std::sync::Arc;
-use std::sync::atomic::{AtomicU64, Ordering};
-use std::sync::mpsc::{Receiver, Sender};
+use crate::tui::worker::{Job, Worker};
+use std::cell::{Cell, RefCell};
 use std::time::{Duration, Instant};
 
 /// How often a running fit reports its progress: often enough for a counter that moves, far
@@ -22,38 +20,65 @@ pub const PROGRESS_EVERY: Duration = Duration::from_millis(100);
 /// News of a fit: the id of its request and its progress or outcome.
 pub type FitReply = (u64, FitNews);
 
+/// The fits' thread: the explorer's one worker type ([`Worker`], issue 55 item 1: the fit had
+/// a thread and serving loop of its own) with a fit as its job, its news told by request id.
 pub struct FitWorker {
-    thread: Background<FitRequest, FitReply>,
-    /// The id of the latest fit asked for: a running fit of another id stops.
-    latest: Arc<AtomicU64>,
+    thread: Worker<FitRequest>,
 }
 
 impl FitWorker {
     pub fn spawn() -> std::io::Result<FitWorker> {
-        let latest = Arc::new(AtomicU64::new(0));
-        let seen = Arc::clone(&latest);
-        let thread = Background::spawn("fit", move |inbox, outbox| serve(inbox, outbox, &seen))?;
-        Ok(FitWorker { thread, latest })
+        Ok(FitWorker {
+            thread: Worker::spawn()?,
+        })
     }
 
     /// Run `request`'s fit; should the thread be gone, `try_recv` says so.
-    pub fn want(&self, request: FitRequest) {
-        self.latest.store(request.id, Ordering::Relaxed);
-        self.thread.send(request);
+    pub fn want(&mut self, request: FitRequest) {
+        self.thread.want(&[request]);
     }
 
     /// News of a fit if some is waiting, or why the thread is gone.
     pub fn try_recv(&mut self) -> Result<Option<FitReply>, Stopped> {
-        self.thread.try_recv()
+        let reply = self.thread.try_recv()?;
+        // a fit's refusal comes inside its outcome (`FitNews::Done`), never as the job's
+        Ok(reply
+            .map(|(request, news)| (request.id, news.unwrap_or_else(|e| FitNews::from(Err(e))))))
+    }
+}
+
+impl Job for FitRequest {
+    type Output = FitNews;
+    const NAME: &'static str = "fit";
+
+    fn run_while(&self, go_on: &mut dyn FnMut() -> bool) -> Option<Result<FitNews, String>> {
+        self.run_refining(go_on, &mut |_| {})
+    }
+
+    /// The fit, its progress to `partial` every [`PROGRESS_EVERY`]; it stops at its next
+    /// model run once `go_on` says a later fit is asked for, and its outcome (then an
+    /// "interrupted" error) still comes back: `App` keeps the id of the latest and drops it.
+    fn run_refining(
+        &self,
+        go_on: &mut dyn FnMut() -> bool,
+        partial: &mut dyn FnMut(FitNews),
+    ) -> Option<Result<FitNews, String>> {
+        let start = Instant::now();
+        let watch = Reporter {
+            go_on: RefCell::new(go_on),
+            partial: RefCell::new(partial),
+            start,
+            last: Cell::new(start),
+        };
+        Some(Ok(FitNews::Done(measured::run_watched(self, &watch))))
     }
 }
 
 /// The watch of one fit on the worker: its progress to the loop every [`PROGRESS_EVERY`], and
 /// a stop once a later fit is asked for.
 struct Reporter<'a> {
-    id: u64,
-    outbox: &'a Sender<FitReply>,
-    latest: &'a AtomicU64,
+    go_on: RefCell<&'a mut dyn FnMut() -> bool>,
+    partial: RefCell<&'a mut dyn FnMut(FitNews)>,
     start: Instant,
     last: Cell<Instant>,
 }
@@ -67,31 +92,9 @@ impl Watch for Reporter<'_> {
                 runs: done,
                 seconds: now.duration_since(self.start).as_secs_f64(),
             };
-            // a closed channel: the explorer is gone, the answer is nobody's
-            let _ = self.outbox.send((self.id, FitNews::Progress(p)));
+            (self.partial.borrow_mut())(FitNews::Progress(p));
         }
-        self.latest.load(Ordering::Relaxed) == self.id
-    }
-}
-
-fn serve(inbox: &Receiver<FitRequest>, outbox: &Sender<FitReply>, latest: &AtomicU64) {
-    while let Ok(mut request) = inbox.recv() {
-        // the latest of those waiting
-        while let Ok(later) = inbox.try_recv() {
-            request = later;
-        }
-        let start = Instant::now();
-        let watch = Reporter {
-            id: request.id,
-            outbox,
-            latest,
-            start,
-            last: Cell::new(start),
-        };
-        let outcome = measured::run_watched(&request, &watch);
-        if outbox.send((request.id, FitNews::Done(outcome))).is_err() {
-            return;
-        }
+        (self.go_on.borrow_mut())()
     }
 }
 
@@ -101,34 +104,33 @@ mod tests {
     use crate::measured::{CorTable, Data};
     use crate::preset::Preset;
     use crate::tui::views::fit::state::{Loaded, request};
-    use std::sync::mpsc;
     use std::thread;
     use std::time::{Duration, Instant};
 
-    /// A running fit goes on while it is the latest asked for and stops at its next model
-    /// run once another is; its progress goes out at most every PROGRESS_EVERY.
+    /// A running fit goes on while `go_on` says it is wanted and stops at its next model run
+    /// once it is not; its progress goes out at most every PROGRESS_EVERY.
     #[test]
     fn the_reporter_stops_a_superseded_fit_and_reports_progress() {
-        let (outbox, replies) = mpsc::channel();
-        let latest = AtomicU64::new(3);
+        let mut news = Vec::new();
+        let wanted_now = Cell::new(true);
+        let mut go_on = || wanted_now.get();
+        let mut partial = |n: FitNews| news.push(n);
         let long_ago = Instant::now() - 2 * PROGRESS_EVERY;
         let r = Reporter {
-            id: 3,
-            outbox: &outbox,
-            latest: &latest,
+            go_on: RefCell::new(&mut go_on),
+            partial: RefCell::new(&mut partial),
             start: long_ago,
             last: Cell::new(long_ago),
         };
         assert!(r.step(10));
         assert!(r.step(11), "no report so soon after the last");
-        let Ok((3, FitNews::Progress(p))) = replies.try_recv() else {
-            panic!("no progress report")
+        wanted_now.set(false);
+        assert!(!r.step(12), "a later fit asked for stops this one");
+        let [FitNews::Progress(p)] = news.as_slice() else {
+            panic!("not one progress report: {news:?}")
         };
         assert_eq!(p.runs, 10);
         assert!(p.seconds >= PROGRESS_EVERY.as_secs_f64() * 2.0);
-        assert!(replies.try_recv().is_err());
-        latest.store(4, Ordering::Relaxed);
-        assert!(!r.step(12), "a later fit asked for stops this one");
     }
 
     #[test]

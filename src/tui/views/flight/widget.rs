@@ -144,16 +144,18 @@ impl FlightPanel<'_> {
                 sig(b.t, 4)
             )));
             lines.push(Line::raw(format!(
-                "in {} m/s at {}°  ω {}",
+                // the spin with its unit, the angle in four digits, as the launch lines
+                // write them (issue 51 item 4: "ω 200.0" bare, "11.2°")
+                "in {} m/s at {}°  ω {} rad/s",
                 sig(b.v_in, 4),
-                sig(b.angle_in, 3),
+                sig(b.angle_in, 4),
                 sig(b.spin_in, 4)
             )));
             lines.push(Line::styled("leaves", t.dim()));
             lines.push(Line::raw(format!(
-                "{} m/s at {}°  ω {}",
+                "{} m/s at {}°  ω {} rad/s",
                 sig(b.v_out, 4),
-                sig(b.angle_out, 3),
+                sig(b.angle_out, 4),
                 sig(b.spin_out, 4)
             )));
             let slid = if b.slid_throughout {

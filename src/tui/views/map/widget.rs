@@ -293,13 +293,19 @@ impl MapPanel<'_> {
     /// The values under the cursor, the sensitivities, the targets and the map's progress.
     fn info(&self, map: &Map, r: &Raster, area: Rect, buf: &mut Buffer) {
         let (i, j) = cell_of(map, self.point.0, self.point.1);
-        let (label, _) = unit(self.view.quantity);
+        // the quantity as the readout writes it: its symbol, the value, its unit after it
+        // ("F_m 117.3 N", issue 51 item 4; it read "F_m (N) 117.3")
+        let (symbol, unit_after) = match self.view.quantity {
+            crate::map::Quantity::Cor => ("e", ""),
+            crate::map::Quantity::MaxForce => ("F_m", " N"),
+            crate::map::Quantity::ContactTime => ("t_f", " ms"),
+        };
         let v = r.at(i, j);
         let approx = if map.cell(i, j).is_some() { "" } else { "≈" };
         let value = if v.is_nan() {
             "none".to_string()
         } else {
-            format!("{approx}{}", sig_trim(v, 4))
+            format!("{approx}{}{unit_after}", sig_trim(v, 4))
         };
         let meets = match self.view.targets {
             Some(_) if r.feasible[i * r.cols() + j] => " · meets the targets",
@@ -308,7 +314,7 @@ impl MapPanel<'_> {
         };
         // the cell's own (λ, ζ): the ball's once the arrows have moved it onto the grid
         let first = format!(
-            " cell λ {} ζ {} · {label} {value}{meets}",
+            " cell λ {} ζ {} · {symbol} {value}{meets}",
             sig_trim(map.lambdas[i], 4),
             sig_trim(map.zetas[j], 4)
         );
@@ -333,10 +339,15 @@ impl MapPanel<'_> {
             Some(why) => format!(" refining stopped: {why} (R retries) ·{sens}{targets}"),
             None => format!("{sens}{targets} · refining…"),
         };
+        // cut at a word with "…" where the line is too long (80 × 24 ended in "· t:")
+        let fit = |s: &str| crate::tui::format::clip(s, usize::from(area.width));
         let lines = if area.height >= 2 {
-            vec![Line::raw(first), Line::styled(second, self.theme.dim())]
+            vec![
+                Line::raw(fit(&first)),
+                Line::styled(fit(&second), self.theme.dim()),
+            ]
         } else {
-            vec![Line::raw(format!("{first} ·{second}"))]
+            vec![Line::raw(fit(&format!("{first} ·{second}")))]
         };
         Paragraph::new(lines).render(area, buf);
     }

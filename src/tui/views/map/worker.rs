@@ -1,38 +1,46 @@
-//! A background thread for the map view: it refines the map it was handed pass by pass (each
-//! pass on all cores, through [`Map::refine_until`]) and sends every finished pass back, so
-//! the screen grows finer while the keys stay free. A job stops inside its pass once `update`
-//! sets its cancel flag (the ball or the view changed); the thread then waits for the next.
+//! The map view's job on the explorer's one worker type ([`crate::tui::worker::Worker`],
+//! issue 55 item 1: it had a thread and serving loop of its own): the worker refines the map
+//! it was handed pass by pass (each pass on all cores, through [`Map::refine_until`]) and
+//! sends every finished pass back, so the screen grows finer while the keys stay free. A job
+//! stops inside its pass once `update` sets its cancel flag (the ball or the view changed),
+//! and between passes once a newer job is asked for; the thread then takes the next.
 
 use crate::map::Map;
-use crate::tui::background::Background;
 use crate::tui::views::map::state::MapJob;
+use crate::tui::worker::{Job, Worker};
 use std::sync::atomic::Ordering;
-use std::sync::mpsc::{Receiver, Sender};
 
-/// A finished pass: the map's generation and the map with that pass in.
-pub type Reply = (u64, Map);
+/// A finished pass: the job it was for and the map with that pass in.
+pub type Reply = crate::tui::worker::Reply<MapJob>;
 
-/// The map's thread: hand it a job (one `update` has not cancelled already) with `send`; should
-/// the thread be gone, `try_recv` says why.
-pub type MapWorker = Background<MapJob, Reply>;
+/// The map's thread: hand it a job (one `update` has not cancelled already) with `want`;
+/// should the thread be gone, `try_recv` says why.
+pub type MapWorker = Worker<MapJob>;
 
-/// Start the map's thread.
-pub fn spawn() -> std::io::Result<MapWorker> {
-    Background::spawn("map", serve)
-}
+impl Job for MapJob {
+    type Output = Map;
+    const NAME: &'static str = "map";
 
-fn serve(inbox: &Receiver<MapJob>, outbox: &Sender<Reply>) {
-    while let Ok(mut job) = inbox.recv() {
-        while !job.cancel.load(Ordering::Relaxed) {
-            match job.map.refine_until(&job.cancel) {
-                Some(pass) if pass.complete => {
-                    if outbox.send((job.generation, job.map.clone())).is_err() {
-                        return;
-                    }
-                }
-                Some(_) | None => break,
+    fn run_while(&self, go_on: &mut dyn FnMut() -> bool) -> Option<Result<Map, String>> {
+        self.run_refining(go_on, &mut |_| {})
+    }
+
+    /// Each pass but the last to `partial`, the last as the answer; `None` once cancelled
+    /// (inside a pass) or superseded (between passes), or when the map was complete already.
+    fn run_refining(
+        &self,
+        go_on: &mut dyn FnMut() -> bool,
+        partial: &mut dyn FnMut(Map),
+    ) -> Option<Result<Map, String>> {
+        let mut map = self.map.clone();
+        while !self.cancel.load(Ordering::Relaxed) && go_on() {
+            match map.refine_until(&self.cancel) {
+                Some(pass) if pass.complete && map.is_complete() => return Some(Ok(map)),
+                Some(pass) if pass.complete => partial(map.clone()),
+                Some(_) | None => return None,
             }
         }
+        None
     }
 }
 
@@ -61,19 +69,22 @@ mod tests {
     /// Every pass comes back, the last one complete; a cancelled job sends nothing.
     #[test]
     fn passes_come_back_until_complete_and_a_cancelled_job_is_silent() {
-        let mut w = spawn().unwrap();
-        w.send(job(1, true));
-        w.send(job(2, false));
+        let mut w = MapWorker::spawn().unwrap();
+        w.want(&[job(1, true)]);
+        w.want(&[job(2, false)]);
         let start = Instant::now();
+        let mut passes = 0;
         loop {
-            if let Some((generation, map)) = w.try_recv().unwrap() {
-                assert_eq!(generation, 2, "the cancelled job sent a pass");
-                if map.is_complete() {
+            if let Some((job, map)) = w.try_recv().unwrap() {
+                assert_eq!(job.generation, 2, "the cancelled job sent a pass");
+                passes += 1;
+                if map.unwrap().is_complete() {
                     break;
                 }
             }
             assert!(start.elapsed() < Duration::from_secs(60), "no reply");
             thread::sleep(Duration::from_millis(2));
         }
+        assert!(passes > 1, "one pass only: {passes}");
     }
 }

@@ -1,37 +1,28 @@
-//! A background thread for the oblique view's (angle, μ) map: it computes the map it was
-//! handed (all cores) and sends it back; a job whose cancel flag `update` set (the ball, spin
-//! or view changed) stops between angles and sends nothing.
+//! The oblique view's (angle, μ) map as a job of the explorer's one worker type
+//! ([`crate::tui::worker::Worker`], issue 55 item 1: it had a thread and serving loop of its
+//! own): the worker computes the map it was handed (all cores) and sends it back; a job whose
+//! cancel flag `update` set (the ball, spin or view changed) stops between angles and sends
+//! nothing, and of a burst of jobs only the newest is computed.
 
-use crate::tui::background::Background;
 use crate::tui::views::oblique::map::{self, MapJob, ObliqueMap};
+use crate::tui::worker::{Job, Worker};
 use std::sync::atomic::Ordering;
-use std::sync::mpsc::{Receiver, Sender};
 
-/// A finished map: its generation and the map, or why there is none.
-pub type Reply = (u64, Result<ObliqueMap, String>);
+/// A finished map: the job it was for and the map, or why there is none.
+pub type Reply = crate::tui::worker::Reply<MapJob>;
 
-/// The oblique map's thread: hand it a job with `send`.
-pub type ObliqueMapWorker = Background<MapJob, Reply>;
+/// The oblique map's thread: hand it a job with `want`.
+pub type ObliqueMapWorker = Worker<MapJob>;
 
-/// Start the oblique map's thread.
-pub fn spawn() -> std::io::Result<ObliqueMapWorker> {
-    Background::spawn("oblique-map", serve)
-}
+impl Job for MapJob {
+    type Output = ObliqueMap;
+    const NAME: &'static str = "oblique-map";
 
-fn serve(inbox: &Receiver<MapJob>, outbox: &Sender<Reply>) {
-    while let Ok(mut job) = inbox.recv() {
-        // only the newest job is worth computing
-        while let Ok(newer) = inbox.try_recv() {
-            job = newer;
+    fn run_while(&self, go_on: &mut dyn FnMut() -> bool) -> Option<Result<ObliqueMap, String>> {
+        if self.cancel.load(Ordering::Relaxed) || !go_on() {
+            return None;
         }
-        if job.cancel.load(Ordering::Relaxed) {
-            continue;
-        }
-        if let Some(answer) = map::compute(&job.spec, &job.cancel)
-            && outbox.send((job.generation, answer)).is_err()
-        {
-            return;
-        }
+        map::compute(&self.spec, &self.cancel)
     }
 }
 
@@ -41,11 +32,12 @@ mod tests {
     use crate::tui::views::oblique::map::MapSpec;
     use std::sync::Arc;
     use std::sync::atomic::AtomicBool;
-    use std::time::Duration;
+    use std::thread;
+    use std::time::{Duration, Instant};
 
     #[test]
     fn a_job_comes_back_and_a_cancelled_one_does_not() {
-        let w = spawn().unwrap();
+        let mut w = ObliqueMapWorker::spawn().unwrap();
         let spec = MapSpec {
             ball: crate::Ball::from_preset("tennis").unwrap(),
             spin: 0.0,
@@ -57,11 +49,19 @@ mod tests {
             spec: spec.clone(),
             cancel: Arc::new(AtomicBool::new(cancel)),
         };
-        w.send(job(1, true));
-        w.send(job(2, false));
-        let (generation, map) = w.recv_timeout(Duration::from_secs(60)).unwrap();
-        assert_eq!(generation, 2);
+        w.want(&[job(1, true)]);
+        w.want(&[job(2, false)]);
+        let start = Instant::now();
+        let (job, map) = loop {
+            if let Some(reply) = w.try_recv().unwrap() {
+                break reply;
+            }
+            assert!(start.elapsed() < Duration::from_secs(60), "no reply");
+            thread::sleep(Duration::from_millis(5));
+        };
+        assert_eq!(job.generation, 2);
         assert_eq!(map.unwrap().cells.len(), 90 * 50);
-        assert!(w.recv_timeout(Duration::from_millis(200)).is_none());
+        thread::sleep(Duration::from_millis(200));
+        assert!(w.try_recv().unwrap().is_none());
     }
 }
