@@ -195,6 +195,9 @@ impl Ball {
         if self.conditions.temperature_c == Some(t) {
             return Ok(self);
         }
+        if let Some(shift) = self.temperature_shift().cloned() {
+            return self.shifted(&shift, t);
+        }
         Err(invalid(
             "temperature",
             t,
@@ -208,6 +211,29 @@ impl Ball {
                 }
             ),
         ))
+    }
+}
+
+impl Ball {
+    /// The dashpot's temperature shift of the ball's record, if it holds one
+    /// (`[calibration.temperature_shift]`).
+    pub fn temperature_shift(&self) -> Option<&crate::preset::TemperatureShift> {
+        self.calibration.as_ref()?.temperature_shift.as_ref()
+    }
+
+    /// A solid ball at `t` °C by its record's shift: c(T) = c · exp[(E_a/R)(1/T − 1/T_ref)]
+    /// (docs/model.md §10.4), the springs kept. Refused beside `--damping`, which sets c too.
+    fn shifted(mut self, shift: &crate::preset::TemperatureShift, t: f64) -> Result<Ball, BallError> {
+        use crate::analysis::fit::cor_temperature::shifted_damping;
+        if self.overrides.iter().any(|o| o == "c") {
+            let why = "--damping sets c too, which the temperature shifts: give one of them";
+            return Err(invalid("temperature", t, why.into()));
+        }
+        let c = shifted_damping(self.params.damping, shift.activation_energy, shift.reference, t);
+        self.params = apply(&self.params, &[Param::C], &[c]);
+        self.params.validate()?;
+        self.conditions.temperature_c = Some(t);
+        Ok(self)
     }
 }
 
