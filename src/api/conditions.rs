@@ -328,3 +328,63 @@ impl Ball {
         })
     }
 }
+
+impl Ball {
+    /// The run's conditions for a Monte Carlo that spreads them (`mc --vary pressure=…,
+    /// temperature=…`; `analysis::mc::McConditions`): `None` when `spec` varies neither.
+    /// Refused, naming the field, where the ball cannot take the spread: a pressure for a
+    /// ball that is not inflated, a temperature for a solid ball without a stored shift or a
+    /// ball whose temperature is not stated (give `--temperature`).
+    pub fn mc_conditions(
+        &self,
+        spec: &crate::analysis::mc::McSpec,
+    ) -> Result<Option<crate::analysis::mc::McConditions>, BallError> {
+        use crate::analysis::mc::Varied;
+        let varies = |w| spec.vary.iter().find(|s| s.what == w).map(|s| s.spread);
+        let (pressure, temperature) = (varies(Varied::Pressure), varies(Varied::Temperature));
+        if pressure.is_none() && temperature.is_none() {
+            return Ok(None);
+        }
+        let c = &self.conditions;
+        let inflated = match c.pressure_gauge_pa {
+            Some(p) => {
+                let model = Inflated::calibrated(self.radius(), self.params.k_p, p).map_err(from)?;
+                let membrane = crate::conditions::inflated::membrane_stiffness(self.radius(), 1.0);
+                Some((p, model.shell, membrane))
+            }
+            None => None,
+        };
+        if let (Some(s), None) = (pressure, inflated) {
+            let why = format!(
+                "pressure: {} is not inflated: its calibration records no inflation pressure",
+                self.called()
+            );
+            return Err(invalid("vary", s, why));
+        }
+        let activation = self.temperature_shift().map(|s| s.activation_energy);
+        if let Some(s) = temperature {
+            let why = if inflated.is_none() && activation.is_none() {
+                Some(format!(
+                    "temperature: {} has no temperature model (docs/model.md §10.4)",
+                    self.called()
+                ))
+            } else if c.temperature_c.is_none() {
+                Some(format!(
+                    "temperature: {}'s temperature is not stated: give --temperature",
+                    self.called()
+                ))
+            } else {
+                None
+            };
+            if let Some(why) = why {
+                return Err(invalid("vary", s, why));
+            }
+        }
+        Ok(Some(crate::analysis::mc::McConditions {
+            temperature_c: c.temperature_c.unwrap_or(f64::NAN),
+            inflated,
+            atmosphere_pa: c.atmosphere_pa,
+            activation,
+        }))
+    }
+}
