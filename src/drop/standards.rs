@@ -175,28 +175,6 @@ pub const STANDARDS: [Standard; 14] = [
         balls: &["table-tennis"],
     },
     Standard {
-        name: "wsf-23",
-        title: "WSF squash ball (double yellow dot), rebound resilience at 23 °C",
-        test: drop_test(WSF_DROP, Reference::Bottom),
-        surface: "steel plate",
-        // 12 % of 100 in, minimum
-        window: [Some(0.12 * WSF_DROP), None],
-        source: WSF_SOURCE,
-        unconfirmed: Some(WSF_UNCONFIRMED),
-        balls: &["squash"],
-    },
-    Standard {
-        name: "wsf-45",
-        title: "WSF squash ball (double yellow dot), rebound resilience at 45 °C",
-        test: drop_test(WSF_DROP, Reference::Bottom),
-        surface: "steel plate",
-        // 26–33 % of 100 in
-        window: [Some(0.26 * WSF_DROP), Some(0.33 * WSF_DROP)],
-        source: WSF_SOURCE,
-        unconfirmed: Some(WSF_UNCONFIRMED),
-        balls: &["squash"],
-    },
-    Standard {
         name: "mlb",
         title: "MLB baseball, COR against a wall of northern white ash",
         test: Test::Cor { speed: FPS_85 },
@@ -259,6 +237,28 @@ pub const STANDARDS: [Standard; 14] = [
         source: "ASA/USA Softball ball classes (COR maximum); ASTM F1887 at 60 mph",
         unconfirmed: Some("any lower limit: the classes are published as maxima"),
         balls: &["softball"],
+    },
+    Standard {
+        name: "wsf-23",
+        title: "WSF squash ball (double yellow dot), rebound resilience at 23 °C",
+        test: drop_test(WSF_DROP, Reference::Bottom),
+        surface: "steel plate",
+        // 12 % of 100 in, minimum
+        window: [Some(0.12 * WSF_DROP), None],
+        source: WSF_SOURCE,
+        unconfirmed: Some(WSF_UNCONFIRMED),
+        balls: &["squash"],
+    },
+    Standard {
+        name: "wsf-45",
+        title: "WSF squash ball (double yellow dot), rebound resilience at 45 °C",
+        test: drop_test(WSF_DROP, Reference::Bottom),
+        surface: "steel plate",
+        // 26–33 % of 100 in
+        window: [Some(0.26 * WSF_DROP), Some(0.33 * WSF_DROP)],
+        source: WSF_SOURCE,
+        unconfirmed: Some(WSF_UNCONFIRMED),
+        balls: &["squash"],
     },
 ];
 

@@ -148,3 +148,48 @@ fn a_volleyball_stiffens_with_its_pressure() {
     let r = |v: &Value| f(&v["bounces"][0], "rebound_height");
     assert!(r(&lo) < r(&nominal) && r(&nominal) < r(&hi));
 }
+
+/// `fit --cor-temperature FILE --save NAME` stores the fitted shift in the saved preset's
+/// record: CORs made by the squash ball's own shift at five temperatures are fitted back
+/// (c_ref and E_a recovered), and the saved ball at another temperature answers as the
+/// squash ball does. An existing name is not replaced without --force.
+#[test]
+fn a_fitted_shift_is_saved_in_the_preset_and_used() {
+    use common::bl_in;
+    let home = tempfile::tempdir().unwrap();
+    let cor = |preset: &str, t: &str| {
+        let o = bl_in(
+            home.path(),
+            &["run", "--preset", preset, "--temperature", t, "--format", "json"],
+        );
+        assert_eq!(o.code, 0, "{}", o.stderr);
+        let v: Value = serde_json::from_str(o.stdout.lines().last().unwrap()).unwrap();
+        f(&v, "cor")
+    };
+    let mut csv = String::from("temperature_c,v0,cor\n");
+    for t in ["15", "25", "35", "45", "55"] {
+        csv += &format!("{t},6.927,{}\n", cor("squash", t));
+    }
+    let file = home.path().join("cors.csv");
+    std::fs::write(&file, csv).unwrap();
+    let fit = |extra: &[&str]| {
+        let mut args = vec!["fit", "--preset", "squash", "--cor-temperature"];
+        args.push(file.to_str().unwrap());
+        args.extend_from_slice(&["--save", "squash-fitted"]);
+        args.extend_from_slice(extra);
+        bl_in(home.path(), &args)
+    };
+    let o = fit(&[]);
+    assert_eq!(o.code, 0, "{}", o.stderr);
+    assert!(o.stdout.contains("saved preset 'squash-fitted'"), "{}", o.stdout);
+    let saved = std::fs::read_to_string(
+        home.path()
+            .join("bouncelab/presets/squash-fitted.toml"),
+    )
+    .unwrap();
+    assert!(saved.contains("[calibration.temperature_shift]"), "{saved}");
+    let c30 = (cor("squash-fitted", "30"), cor("squash", "30"));
+    assert!((c30.0 - c30.1).abs() < 1e-6, "{c30:?}");
+    assert_bad(&fit(&[]), &["preset 'squash-fitted' exists", "--force"]);
+    assert_eq!(fit(&["--force"]).code, 0);
+}
