@@ -206,7 +206,12 @@ impl Sampler {
             Varied::Temperature => v - crate::conditions::ZERO_CELSIUS,
             _ => *v,
         };
-        self.spec.vary.iter().zip(&values[..n]).map(celsius).collect()
+        self.spec
+            .vary
+            .iter()
+            .zip(&values[..n])
+            .map(celsius)
+            .collect()
     }
 
     /// The values of [`Sampler::inputs`] without an allocation: the first `n` of the array.

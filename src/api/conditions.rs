@@ -223,13 +223,22 @@ impl Ball {
 
     /// A solid ball at `t` °C by its record's shift: c(T) = c · exp[(E_a/R)(1/T − 1/T_ref)]
     /// (docs/model.md §10.4), the springs kept. Refused beside `--damping`, which sets c too.
-    fn shifted(mut self, shift: &crate::preset::TemperatureShift, t: f64) -> Result<Ball, BallError> {
+    fn shifted(
+        mut self,
+        shift: &crate::preset::TemperatureShift,
+        t: f64,
+    ) -> Result<Ball, BallError> {
         use crate::analysis::fit::cor_temperature::shifted_damping;
         if self.overrides.iter().any(|o| o == "c") {
             let why = "--damping sets c too, which the temperature shifts: give one of them";
             return Err(invalid("temperature", t, why.into()));
         }
-        let c = shifted_damping(self.params.damping, shift.activation_energy, shift.reference, t);
+        let c = shifted_damping(
+            self.params.damping,
+            shift.activation_energy,
+            shift.reference,
+            t,
+        );
         self.params = apply(&self.params, &[Param::C], &[c]);
         self.params.validate()?;
         self.conditions.temperature_c = Some(t);
@@ -348,7 +357,8 @@ impl Ball {
         let c = &self.conditions;
         let inflated = match c.pressure_gauge_pa {
             Some(p) => {
-                let model = Inflated::calibrated(self.radius(), self.params.k_p, p).map_err(from)?;
+                let model =
+                    Inflated::calibrated(self.radius(), self.params.k_p, p).map_err(from)?;
                 let membrane = crate::conditions::inflated::membrane_stiffness(self.radius(), 1.0);
                 Some((p, model.shell, membrane))
             }

@@ -130,7 +130,11 @@ impl Calibration {
         }
         if let Some(s) = &self.temperature_shift {
             out.push_str("\n[calibration.temperature_shift]\n");
-            let _ = writeln!(out, "activation_energy = {:?}  # J/mol", s.activation_energy);
+            let _ = writeln!(
+                out,
+                "activation_energy = {:?}  # J/mol",
+                s.activation_energy
+            );
             let _ = writeln!(out, "reference = {:?}  # °C", s.reference);
             let _ = writeln!(out, "source = {}", string(&s.source));
         }
@@ -231,7 +235,10 @@ fn check_shift(s: &TemperatureShift) -> Result<(), Bad> {
     const TABLE: &str = "calibration.temperature_shift";
     let e = s.activation_energy;
     if !(e.is_finite() && e.abs() <= 1e6) {
-        let msg = format!("must be a finite energy within ±1e6 J/mol, got {}", number(e));
+        let msg = format!(
+            "must be a finite energy within ±1e6 J/mol, got {}",
+            number(e)
+        );
         return Err(bad(TABLE, None, "activation_energy", msg));
     }
     let t = s.reference;

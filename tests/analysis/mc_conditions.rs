@@ -4,9 +4,9 @@
 //! answer. And the spreads a ball cannot take are refused, naming the field.
 
 use crate::common::bad;
+use bouncelab::Ball;
 use bouncelab::analysis::mc::{Dist, McSpec, parse_vary};
 use bouncelab::api::ConditionsSpec;
-use bouncelab::Ball;
 
 /// Sample `i`'s varied value and COR, against the COR of the ball `at` makes of that value.
 fn agree(preset: &str, vary: &str, at: impl Fn(f64) -> ConditionsSpec) {
@@ -20,11 +20,16 @@ fn agree(preset: &str, vary: &str, at: impl Fn(f64) -> ConditionsSpec) {
         let one = ball.clone().at_conditions(&at(x)).unwrap();
         let cor = one.impact().unwrap().cor;
         let sampled = mc.samples.cor[i as usize];
-        assert!((sampled - cor).abs() < 1e-9, "{preset} {vary} sample {i} at {x}: {sampled} {cor}");
+        assert!(
+            (sampled - cor).abs() < 1e-9,
+            "{preset} {vary} sample {i} at {x}: {sampled} {cor}"
+        );
         seen.push(cor);
     }
     // the spread moves the answer
-    let (lo, hi) = seen.iter().fold((1.0f64, 0.0f64), |(a, b), &c| (a.min(c), b.max(c)));
+    let (lo, hi) = seen
+        .iter()
+        .fold((1.0f64, 0.0f64), |(a, b), &c| (a.min(c), b.max(c)));
     assert!(hi - lo > 1e-4, "{preset} {vary}: {lo} … {hi}");
 }
 

@@ -72,7 +72,10 @@ fn the_shift_gives_back_the_published_ratio_it_was_solved_from() {
             "--format",
             "json",
         ]);
-        assert_eq!(f(&v["conditions"], "temperature_c"), t.parse::<f64>().unwrap());
+        assert_eq!(
+            f(&v["conditions"], "temperature_c"),
+            t.parse::<f64>().unwrap()
+        );
         f(&v["bounces"][0], "rebound_height")
     };
     let t97 = format!("{}", (97.0 - 32.0) * 5.0 / 9.0);
@@ -131,7 +134,15 @@ fn a_shift_that_cannot_apply_is_refused_naming_the_field() {
 #[test]
 fn a_volleyball_stiffens_with_its_pressure() {
     let run = |p: &str| {
-        let mut args = vec!["drop", "--preset", "volleyball", "--height", "2", "--bounces", "1"];
+        let mut args = vec![
+            "drop",
+            "--preset",
+            "volleyball",
+            "--height",
+            "2",
+            "--bounces",
+            "1",
+        ];
         if !p.is_empty() {
             args.extend_from_slice(&["--pressure", p]);
         }
@@ -141,10 +152,18 @@ fn a_volleyball_stiffens_with_its_pressure() {
     let nominal = run("");
     assert_eq!(f(&nominal["conditions"], "pressure_gauge_pa"), 30_645.8);
     let kgf_cm2 = 98_066.5; // Pa (the kilogram-force's definition, 9.806 65 N)
-    let (lo, hi) = (run(&format!("{}", 0.300 * kgf_cm2)), run(&format!("{}", 0.325 * kgf_cm2)));
+    let (lo, hi) = (
+        run(&format!("{}", 0.300 * kgf_cm2)),
+        run(&format!("{}", 0.325 * kgf_cm2)),
+    );
     let k = |v: &Value| f(&v["ball"], "k_p");
     // K_shell = 0 within the preset's rounding: K_p ∝ p
-    assert!((k(&hi) / k(&lo) - 0.325 / 0.300).abs() < 1e-3, "{} {}", k(&hi), k(&lo));
+    assert!(
+        (k(&hi) / k(&lo) - 0.325 / 0.300).abs() < 1e-3,
+        "{} {}",
+        k(&hi),
+        k(&lo)
+    );
     let r = |v: &Value| f(&v["bounces"][0], "rebound_height");
     assert!(r(&lo) < r(&nominal) && r(&nominal) < r(&hi));
 }
@@ -160,7 +179,15 @@ fn a_fitted_shift_is_saved_in_the_preset_and_used() {
     let cor = |preset: &str, t: &str| {
         let o = bl_in(
             home.path(),
-            &["run", "--preset", preset, "--temperature", t, "--format", "json"],
+            &[
+                "run",
+                "--preset",
+                preset,
+                "--temperature",
+                t,
+                "--format",
+                "json",
+            ],
         );
         assert_eq!(o.code, 0, "{}", o.stderr);
         let v: Value = serde_json::from_str(o.stdout.lines().last().unwrap()).unwrap();
@@ -181,12 +208,13 @@ fn a_fitted_shift_is_saved_in_the_preset_and_used() {
     };
     let o = fit(&[]);
     assert_eq!(o.code, 0, "{}", o.stderr);
-    assert!(o.stdout.contains("saved preset 'squash-fitted'"), "{}", o.stdout);
-    let saved = std::fs::read_to_string(
-        home.path()
-            .join("bouncelab/presets/squash-fitted.toml"),
-    )
-    .unwrap();
+    assert!(
+        o.stdout.contains("saved preset 'squash-fitted'"),
+        "{}",
+        o.stdout
+    );
+    let saved =
+        std::fs::read_to_string(home.path().join("bouncelab/presets/squash-fitted.toml")).unwrap();
     assert!(saved.contains("[calibration.temperature_shift]"), "{saved}");
     let c30 = (cor("squash-fitted", "30"), cor("squash", "30"));
     assert!((c30.0 - c30.1).abs() < 1e-6, "{c30:?}");

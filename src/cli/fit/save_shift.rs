@@ -13,7 +13,13 @@ use std::io::Write;
 /// The saved preset: the base's ball and material, c = c_ref, its record the base's (if
 /// any) with the temperature, the shift and the CORs' data set added; no `[fit]` table (the
 /// base's is of other parameters).
-fn shifted(base: &Preset, name: &str, file: &str, points: &[CorAt], fit: &TemperatureFit) -> Preset {
+fn shifted(
+    base: &Preset,
+    name: &str,
+    file: &str,
+    points: &[CorAt],
+    fit: &TemperatureFit,
+) -> Preset {
     let when = now_utc();
     let speeds: Vec<f64> = points.iter().map(|p| p.v0).collect();
     let source = format!("{file} (fitted by `bouncelab fit --cor-temperature` on {when})");

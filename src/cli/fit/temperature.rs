@@ -73,11 +73,19 @@ pub fn run(a: &FitArgs, path: &Path, out: &mut dyn Write) -> anyhow::Result<()> 
     }
     if !fit.no_answer.is_empty() {
         out.write_all(&text)?;
-        let refused = if a.save.is_some() { "; --save not written" } else { "" };
-        return Err(MultiFitError::Unanswered(format!("{}{refused}", fit.no_answer.join("; "))).into());
+        let refused = if a.save.is_some() {
+            "; --save not written"
+        } else {
+            ""
+        };
+        return Err(
+            MultiFitError::Unanswered(format!("{}{refused}", fit.no_answer.join("; "))).into(),
+        );
     }
     match &a.save {
-        Some(name) => super::save_shift::save_then_report(a, name, &file, &points, &fit, &text, out),
+        Some(name) => {
+            super::save_shift::save_then_report(a, name, &file, &points, &fit, &text, out)
+        }
         None => Ok(out.write_all(&text)?),
     }
 }
