@@ -221,3 +221,16 @@ fn a_fitted_shift_is_saved_in_the_preset_and_used() {
     assert_bad(&fit(&[]), &["preset 'squash-fitted' exists", "--force"]);
     assert_eq!(fit(&["--force"]).code, 0);
 }
+
+/// The volleyball's c is the assumption its file states: the football preset's fitted ζ.
+#[test]
+fn the_volleyballs_damping_is_the_footballs_zeta() {
+    use bouncelab::preset::Preset;
+    let all = Preset::embedded_all();
+    let zeta = |name: &str| {
+        let p = all.iter().find(|p| p.name == name).unwrap();
+        let k = p.adopted.k_p.unwrap();
+        (p.measured.mass * k).sqrt() / (2.0 * p.adopted.damping.unwrap())
+    };
+    assert!((zeta("volleyball") / zeta("football") - 1.0).abs() < 1e-6);
+}
