@@ -234,3 +234,27 @@ fn the_volleyballs_damping_is_the_footballs_zeta() {
     };
     assert!((zeta("volleyball") / zeta("football") - 1.0).abs() < 1e-6);
 }
+
+/// `static` states its conditions in its JSON, as every command: an under-inflated football
+/// between the plates is softer (K_p, K_r ∝ p) and says at what pressure it was squeezed.
+#[test]
+fn static_states_its_conditions() {
+    let run = |extra: &[&str]| {
+        let mut args = vec!["static", "--preset", "football", "--load", "8.165"];
+        args.extend_from_slice(extra);
+        args.extend_from_slice(&["--format", "json"]);
+        json_calibrated(&args)
+    };
+    let (nominal, soft) = (run(&[]), run(&["--pressure", "0.6bar"]));
+    assert_eq!(f(&nominal["conditions"], "pressure_gauge_pa"), 80_000.0);
+    assert_eq!(f(&nominal["conditions"], "temperature_c"), 20.0);
+    assert_eq!(f(&soft["conditions"], "pressure_gauge_pa"), 60_000.0);
+    let d = |v: &Value| f(&v["forward"], "deflection_m");
+    // linear chain, K_shell 0 within rounding: the deflection ∝ 1/p
+    assert!(
+        (d(&soft) / d(&nominal) - 0.8 / 0.6).abs() < 1e-3,
+        "{}",
+        d(&soft) / d(&nominal)
+    );
+    assert_eq!(f(&soft["conditions"], "atmosphere_pa"), 101_325.0);
+}
