@@ -47,9 +47,9 @@ pub enum Varied {
     Mass,
     /// The impact speed v0 (m/s).
     V0,
-    /// The gauge pressure of an inflated ball, Pa (`super::McConditions`).
+    /// The gauge pressure of an inflated ball, Pa (`super::mc::McConditions`).
     Pressure,
-    /// The ball's absolute temperature, K (`super::McConditions`; written in °C).
+    /// The ball's absolute temperature, K (`super::mc::McConditions`; written in °C).
     Temperature,
 }
 
@@ -84,7 +84,7 @@ impl Varied {
     }
 
     /// Its nominal value in `p`; NaN for the conditions, which `p` does not hold (the
-    /// sampler's [`super::McConditions`] do).
+    /// sampler's [`super::mc::McConditions`] do).
     pub fn get(self, p: &ImpactParams) -> f64 {
         match self {
             Varied::Param(q) => q.get(p),
