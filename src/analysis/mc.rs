@@ -134,7 +134,7 @@ const TASK: usize = 64 * LANES;
 /// Draws and solves the samples of one spec on one ball.
 #[derive(Debug, Clone)]
 pub struct Sampler {
-    pub(super) base: ImpactParams,
+    base: ImpactParams,
     law: ContactLaw,
     spec: McSpec,
     /// ChaCha8's key: the seed expanded as `ChaCha8Rng::seed_from_u64` expands it.
@@ -142,7 +142,7 @@ pub struct Sampler {
     /// The same as ChaCha's key words ([`key_words`]).
     words: [u32; 8],
     /// The run's conditions, for a spread in pressure or temperature (`super::mc_conditions`).
-    pub(super) conditions: Option<McConditions>,
+    conditions: Option<McConditions>,
 }
 
 /// The key `SeedableRng::seed_from_u64` makes of a seed (rand_core's own expansion), kept so
@@ -170,6 +170,26 @@ impl Sampler {
             words: key_words(&key),
             spec,
             conditions: None,
+        }
+    }
+
+    /// This sampler with the run's conditions, which a `pressure` or `temperature` spread
+    /// moves each sample away from ([`McConditions`]).
+    pub fn with_conditions(self, conditions: McConditions) -> Sampler {
+        Sampler {
+            conditions: Some(conditions),
+            ..self
+        }
+    }
+
+    /// The nominal value of `what`: the ball's, or the run's gauge pressure (Pa) and absolute
+    /// temperature (K); NaN where the sampler has no conditions (refused before by the api).
+    fn nominal(&self, what: Varied) -> f64 {
+        let c = self.conditions.as_ref();
+        match what {
+            Varied::Pressure => c.and_then(|c| c.inflated).map_or(f64::NAN, |i| i.0),
+            Varied::Temperature => c.map_or(f64::NAN, McConditions::kelvin),
+            _ => what.get(&self.base),
         }
     }
 

@@ -14,7 +14,6 @@
 //! 23 °C.
 
 use super::fit::cor_temperature::shifted_damping;
-use super::mc::{Sampler, Varied};
 use crate::conditions::ZERO_CELSIUS;
 use crate::model::params::ImpactParams;
 
@@ -54,27 +53,6 @@ impl McConditions {
             p.damping *= ratio;
         } else if let (Some(e_a), Some(t)) = (self.activation, kelvin) {
             p.damping *= shifted_damping(1.0, e_a, self.temperature_c, t - ZERO_CELSIUS);
-        }
-    }
-}
-
-impl Sampler {
-    /// This sampler with the run's conditions, which a `pressure` or `temperature` spread
-    /// moves each sample away from ([`McConditions`]).
-    pub fn with_conditions(self, conditions: McConditions) -> Sampler {
-        let mut s = self;
-        s.conditions = Some(conditions);
-        s
-    }
-
-    /// The nominal value of `what`: the ball's, or the run's gauge pressure (Pa) and absolute
-    /// temperature (K); NaN where the sampler has no conditions (refused before by the api).
-    pub(super) fn nominal(&self, what: Varied) -> f64 {
-        let c = self.conditions.as_ref();
-        match what {
-            Varied::Pressure => c.and_then(|c| c.inflated).map_or(f64::NAN, |i| i.0),
-            Varied::Temperature => c.map_or(f64::NAN, McConditions::kelvin),
-            _ => what.get(&self.base),
         }
     }
 }
