@@ -11,12 +11,12 @@ mod fit_table;
 mod text;
 mod usable;
 
-pub use calibration::{Calibration, CalibrationData, SPEED_SLACK};
+pub use calibration::{Calibration, CalibrationData, SPEED_SLACK, TemperatureShift};
 pub use fit_table::FitTable;
 
 /// The three balls of the paper, embedded in the binary, first; then the balls of the drop
 /// tests (docs/drop.md, "The new balls").
-pub const EMBEDDED: [(&str, &str); 10] = [
+pub const EMBEDDED: [(&str, &str); 12] = [
     ("superball", include_str!("../presets/superball.toml")),
     ("golf", include_str!("../presets/golf.toml")),
     ("baseball", include_str!("../presets/baseball.toml")),
@@ -29,6 +29,9 @@ pub const EMBEDDED: [(&str, &str); 10] = [
     // ball), docs/presets.md
     ("baseball-mlb", include_str!("../presets/baseball-mlb.toml")),
     ("softball-44", include_str!("../presets/softball-44.toml")),
+    // issue 56: the WSF squash ball (with its temperature shift) and the FIVB volleyball
+    ("squash", include_str!("../presets/squash.toml")),
+    ("volleyball", include_str!("../presets/volleyball.toml")),
 ];
 
 /// How many of [`EMBEDDED`] are the paper's balls.

@@ -27,6 +27,9 @@ ball_pyfunction! {
     {
         let ball = choice.resolve(None)?;
         let s = ball.static_deflection(load_kg, peak).map_err(error)?;
-        crate::answer::json(py, &StaticReport::new(&ball, load_kg, &s))
+        let d = crate::answer::json(py, &StaticReport::new(&ball, load_kg, &s))?;
+        // `conditions` beside the report's keys, as the command line's JSON
+        d.set_item("conditions", &crate::answer::Stated::of(&ball))?;
+        Ok(d)
     }
 }

@@ -33,6 +33,7 @@ use rayon::prelude::*;
 use serde::Serialize;
 use statrs::distribution::{ContinuousCDF, Normal};
 
+pub use super::mc_conditions::McConditions;
 pub use super::mc_corr::parse_correlate;
 pub use super::mc_impact::{Outcome, impact, impacts, impacts_of_groups};
 pub use super::mc_spec::{Correlation, Dist, McError, McSpec, Spread, Varied, parse_vary};
@@ -140,6 +141,8 @@ pub struct Sampler {
     key: [u8; 32],
     /// The same as ChaCha's key words ([`key_words`]).
     words: [u32; 8],
+    /// The run's conditions, for a spread in pressure or temperature (`super::mc_conditions`).
+    conditions: Option<McConditions>,
 }
 
 /// The key `SeedableRng::seed_from_u64` makes of a seed (rand_core's own expansion), kept so
@@ -166,6 +169,27 @@ impl Sampler {
             key,
             words: key_words(&key),
             spec,
+            conditions: None,
+        }
+    }
+
+    /// This sampler with the run's conditions, which a `pressure` or `temperature` spread
+    /// moves each sample away from ([`McConditions`]).
+    pub fn with_conditions(self, conditions: McConditions) -> Sampler {
+        Sampler {
+            conditions: Some(conditions),
+            ..self
+        }
+    }
+
+    /// The nominal value of `what`: the ball's, or the run's gauge pressure (Pa) and absolute
+    /// temperature (K); NaN where the sampler has no conditions (refused before by the api).
+    fn nominal(&self, what: Varied) -> f64 {
+        let c = self.conditions.as_ref();
+        match what {
+            Varied::Pressure => c.and_then(|c| c.inflated).map_or(f64::NAN, |i| i.0),
+            Varied::Temperature => c.map_or(f64::NAN, McConditions::kelvin),
+            _ => what.get(&self.base),
         }
     }
 
@@ -177,7 +201,17 @@ impl Sampler {
     /// The varied parameters' values of sample `index`, in the spec's order.
     pub fn inputs(&self, index: u64) -> Vec<f64> {
         let (values, n) = self.draw(index);
-        values[..n].to_vec()
+        let celsius = |(s, v): (&super::mc_spec::Spread, &f64)| match s.what {
+            // drawn in kelvin (the spread is relative to it), written in °C
+            Varied::Temperature => v - crate::conditions::ZERO_CELSIUS,
+            _ => *v,
+        };
+        self.spec
+            .vary
+            .iter()
+            .zip(&values[..n])
+            .map(celsius)
+            .collect()
     }
 
     /// The values of [`Sampler::inputs`] without an allocation: the first `n` of the array.
@@ -194,7 +228,7 @@ impl Sampler {
         }
         let mut out = [0.0; Varied::ALL.len()];
         for (slot, s) in out.iter_mut().zip(&self.spec.vary) {
-            let v = s.what.get(&self.base);
+            let v = self.nominal(s.what);
             *slot = match self.spec.dist {
                 Dist::Normal => {
                     let n: f64 = StandardNormal.sample(rng);
@@ -228,7 +262,7 @@ impl Sampler {
         c.apply(&mut y[..n]);
         let mut out = [0.0; Varied::ALL.len()];
         for ((slot, s), &y) in out.iter_mut().zip(&self.spec.vary).zip(&y) {
-            let v = s.what.get(&self.base);
+            let v = self.nominal(s.what);
             *slot = match self.spec.dist {
                 Dist::Normal => v * (1.0 + s.spread * y),
                 Dist::Uniform => {
@@ -258,8 +292,11 @@ impl Sampler {
     fn ball(&self, values: &[f64]) -> ImpactParams {
         let mut p = self.base;
         let mut tied = false;
+        let (mut pressure, mut kelvin) = (None, None);
         for (s, &v) in self.spec.vary.iter().zip(values) {
             match s.what {
+                Varied::Pressure => pressure = Some(v),
+                Varied::Temperature => kelvin = Some(v),
                 Varied::Param(Param::KP) => p.k_p = v,
                 Varied::Param(Param::C) => p.damping = v,
                 Varied::Param(Param::KR) => p.k_r = v,
@@ -270,6 +307,10 @@ impl Sampler {
                 Varied::V0 | Varied::Param(Param::V0) => p.v0 = v,
             }
             tied |= matches!(s.what, Varied::Param(Param::KP | Param::ZP | Param::KH));
+        }
+        if let Some(c) = &self.conditions {
+            c.apply(&mut p, pressure, kelvin);
+            tied = true;
         }
         if tied && p.z_p.is_finite() {
             p.k_h = ImpactParams::k_h_matching(p.k_p, p.z_p);

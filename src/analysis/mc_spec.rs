@@ -47,11 +47,15 @@ pub enum Varied {
     Mass,
     /// The impact speed v0 (m/s).
     V0,
+    /// The gauge pressure of an inflated ball, Pa (`super::mc::McConditions`).
+    Pressure,
+    /// The ball's absolute temperature, K (`super::mc::McConditions`; written in °C).
+    Temperature,
 }
 
 impl Varied {
     /// Every parameter, in the order the outputs list them.
-    pub const ALL: [Varied; 7] = [
+    pub const ALL: [Varied; 9] = [
         Varied::Param(Param::KP),
         Varied::Param(Param::C),
         Varied::Param(Param::KR),
@@ -59,14 +63,18 @@ impl Varied {
         Varied::Param(Param::KH),
         Varied::Mass,
         Varied::V0,
+        Varied::Pressure,
+        Varied::Temperature,
     ];
 
-    /// `k_p`, `c`, `k_r`, `z_p`, `k_h`, `m` or `v0`.
+    /// `k_p`, `c`, `k_r`, `z_p`, `k_h`, `m`, `v0`, `pressure` or `temperature`.
     pub fn name(self) -> &'static str {
         match self {
             Varied::Param(p) => p.name(),
             Varied::Mass => "m",
             Varied::V0 => "v0",
+            Varied::Pressure => "pressure",
+            Varied::Temperature => "temperature",
         }
     }
 
@@ -75,12 +83,14 @@ impl Varied {
         Varied::ALL.into_iter().find(|v| v.name() == s.trim())
     }
 
-    /// Its nominal value in `p`.
+    /// Its nominal value in `p`; NaN for the conditions, which `p` does not hold (the
+    /// sampler's [`super::mc::McConditions`] do).
     pub fn get(self, p: &ImpactParams) -> f64 {
         match self {
             Varied::Param(q) => q.get(p),
             Varied::Mass => p.mass,
             Varied::V0 => p.v0,
+            Varied::Pressure | Varied::Temperature => f64::NAN,
         }
     }
 }
@@ -98,7 +108,9 @@ pub struct Spread {
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum McError {
     /// A `--vary` entry names no parameter that can vary.
-    #[error("invalid vary: unknown parameter '{0}' (choose from k_p, c, k_r, z_p, k_h, m, v0)")]
+    #[error(
+        "invalid vary: unknown parameter '{0}' (choose from k_p, c, k_r, z_p, k_h, m, v0, pressure, temperature)"
+    )]
     Unknown(String),
     /// A `--vary` entry without `=` or with a spread that is not a number.
     #[error("invalid vary: '{0}' is not NAME=SPREAD (e.g. k_p=5% or k_p=0.05)")]

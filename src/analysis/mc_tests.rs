@@ -31,7 +31,7 @@ fn bad_vary_names_the_field() {
     let msg = |t: &str| parse_vary(t).unwrap_err().to_string();
     assert_eq!(
         msg("k_q=5%"),
-        "invalid vary: unknown parameter 'k_q' (choose from k_p, c, k_r, z_p, k_h, m, v0)"
+        "invalid vary: unknown parameter 'k_q' (choose from k_p, c, k_r, z_p, k_h, m, v0, pressure, temperature)"
     );
     assert_eq!(
         msg("k_p"),

@@ -5,6 +5,7 @@ pub mod batch;
 mod batch_stats;
 pub mod fit;
 pub mod mc;
+mod mc_conditions;
 mod mc_corr;
 mod mc_impact;
 mod mc_interval;

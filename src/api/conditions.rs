@@ -195,6 +195,9 @@ impl Ball {
         if self.conditions.temperature_c == Some(t) {
             return Ok(self);
         }
+        if let Some(shift) = self.temperature_shift().cloned() {
+            return self.shifted(&shift, t);
+        }
         Err(invalid(
             "temperature",
             t,
@@ -208,6 +211,38 @@ impl Ball {
                 }
             ),
         ))
+    }
+}
+
+impl Ball {
+    /// The dashpot's temperature shift of the ball's record, if it holds one
+    /// (`[calibration.temperature_shift]`).
+    pub fn temperature_shift(&self) -> Option<&crate::preset::TemperatureShift> {
+        self.calibration.as_ref()?.temperature_shift.as_ref()
+    }
+
+    /// A solid ball at `t` °C by its record's shift: c(T) = c · exp[(E_a/R)(1/T − 1/T_ref)]
+    /// (docs/model.md §10.4), the springs kept. Refused beside `--damping`, which sets c too.
+    fn shifted(
+        mut self,
+        shift: &crate::preset::TemperatureShift,
+        t: f64,
+    ) -> Result<Ball, BallError> {
+        use crate::analysis::fit::cor_temperature::shifted_damping;
+        if self.overrides.iter().any(|o| o == "c") {
+            let why = "--damping sets c too, which the temperature shifts: give one of them";
+            return Err(invalid("temperature", t, why.into()));
+        }
+        let c = shifted_damping(
+            self.params.damping,
+            shift.activation_energy,
+            shift.reference,
+            t,
+        );
+        self.params = apply(&self.params, &[Param::C], &[c]);
+        self.params.validate()?;
+        self.conditions.temperature_c = Some(t);
+        Ok(self)
     }
 }
 
@@ -300,5 +335,66 @@ impl Ball {
                 words(&record)
             )
         })
+    }
+}
+
+impl Ball {
+    /// The run's conditions for a Monte Carlo that spreads them (`mc --vary pressure=…,
+    /// temperature=…`; `analysis::mc::McConditions`): `None` when `spec` varies neither.
+    /// Refused, naming the field, where the ball cannot take the spread: a pressure for a
+    /// ball that is not inflated, a temperature for a solid ball without a stored shift or a
+    /// ball whose temperature is not stated (give `--temperature`).
+    pub fn mc_conditions(
+        &self,
+        spec: &crate::analysis::mc::McSpec,
+    ) -> Result<Option<crate::analysis::mc::McConditions>, BallError> {
+        use crate::analysis::mc::Varied;
+        let varies = |w| spec.vary.iter().find(|s| s.what == w).map(|s| s.spread);
+        let (pressure, temperature) = (varies(Varied::Pressure), varies(Varied::Temperature));
+        if pressure.is_none() && temperature.is_none() {
+            return Ok(None);
+        }
+        let c = &self.conditions;
+        let inflated = match c.pressure_gauge_pa {
+            Some(p) => {
+                let model =
+                    Inflated::calibrated(self.radius(), self.params.k_p, p).map_err(from)?;
+                let membrane = crate::conditions::inflated::membrane_stiffness(self.radius(), 1.0);
+                Some((p, model.shell, membrane))
+            }
+            None => None,
+        };
+        if let (Some(s), None) = (pressure, inflated) {
+            let why = format!(
+                "pressure: {} is not inflated: its calibration records no inflation pressure",
+                self.called()
+            );
+            return Err(invalid("vary", s, why));
+        }
+        let activation = self.temperature_shift().map(|s| s.activation_energy);
+        if let Some(s) = temperature {
+            let why = if inflated.is_none() && activation.is_none() {
+                Some(format!(
+                    "temperature: {} has no temperature model (docs/model.md §10.4)",
+                    self.called()
+                ))
+            } else if c.temperature_c.is_none() {
+                Some(format!(
+                    "temperature: {}'s temperature is not stated: give --temperature",
+                    self.called()
+                ))
+            } else {
+                None
+            };
+            if let Some(why) = why {
+                return Err(invalid("vary", s, why));
+            }
+        }
+        Ok(Some(crate::analysis::mc::McConditions {
+            temperature_c: c.temperature_c.unwrap_or(f64::NAN),
+            inflated,
+            atmosphere_pa: c.atmosphere_pa,
+            activation,
+        }))
     }
 }

@@ -22,7 +22,11 @@ pub struct MonteCarlo {
 impl Ball {
     /// The sampler of `spec` around this ball (its parameters the nominal values, its law).
     pub fn sampler(&self, spec: &McSpec) -> Sampler {
-        Sampler::new(self.params, self.law, spec.clone())
+        let sampler = Sampler::new(self.params, self.law, spec.clone());
+        match self.mc_conditions(spec) {
+            Ok(Some(c)) => sampler.with_conditions(c),
+            _ => sampler,
+        }
     }
 
     /// COR, peak force and contact time over `spec.samples` samples of this ball's parameters
@@ -56,6 +60,7 @@ impl Ball {
         watch: &dyn work::Watch,
     ) -> Result<MonteCarlo, BallError> {
         self.check_samples(spec.samples)?;
+        self.mc_conditions(spec)?;
         let sampler = self.sampler(spec);
         // some 5 ms of work on all cores: 16 384 closed-form samples, 409 of another law
         let chunk = ((1u64 << 14) / work::cost(self.law)).max(1) as usize;
@@ -84,6 +89,7 @@ impl Ball {
         count: usize,
     ) -> Result<Samples, BallError> {
         self.check_samples(count)?;
+        self.mc_conditions(spec)?;
         Ok(self.sampler(spec).samples(start, count)?)
     }
 }

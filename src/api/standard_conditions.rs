@@ -54,7 +54,8 @@ impl Ball {
     /// The ball for the standard `name`'s test: when the caller asked no conditions and the
     /// ball is off the test's (an inflated ball's pressure outside its window, or its
     /// temperature off the test's), the ball at the test's own — inflated to the middle of
-    /// the window at the test's temperature. With a warning when the ball the verdict judges
+    /// the window at the test's temperature; a solid ball with a stored temperature shift at
+    /// the test's temperature. With a warning when the ball the verdict judges
     /// is off the test's conditions (the caller's choice, or what the ball cannot change).
     pub fn at_standard(
         self,
@@ -63,16 +64,28 @@ impl Ball {
     ) -> Result<(Ball, Option<String>), BallError> {
         let test = of(name);
         let mut ball = self;
-        if asked.is_empty() && ball.is_inflated() && within(&test, &ball.conditions) == Some(false)
-        {
+        if asked.is_empty() && within(&test, &ball.conditions) == Some(false) {
             let at = test.temperature_c.map(|[n, _]| n);
-            let spec = ConditionsSpec {
-                pressure: test.pressure_gauge_pa.map(|[lo, hi]| (lo + hi) / 2.0),
-                temperature: at,
-                inflated_at: at,
-                ..ConditionsSpec::default()
+            let spec = if ball.is_inflated() {
+                ConditionsSpec {
+                    pressure: test.pressure_gauge_pa.map(|[lo, hi]| (lo + hi) / 2.0),
+                    temperature: at,
+                    inflated_at: at,
+                    ..ConditionsSpec::default()
+                }
+            } else if ball.temperature_shift().is_some() {
+                // a solid ball with a stored shift: at the test's temperature (the squash
+                // ball at WSF's 23 °C, docs/model.md §10.4)
+                ConditionsSpec {
+                    temperature: at,
+                    ..ConditionsSpec::default()
+                }
+            } else {
+                ConditionsSpec::default()
             };
-            ball = ball.at_conditions(&spec)?;
+            if !spec.is_empty() {
+                ball = ball.at_conditions(&spec)?;
+            }
         }
         let warning = (within(&test, &ball.conditions) == Some(false)).then(|| {
             format!(

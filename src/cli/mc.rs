@@ -54,8 +54,10 @@ pub struct McArgs {
     #[arg(long, value_name = "V", value_parser = super::number::number, allow_hyphen_values = true)]
     pub v0: Option<f64>,
     /// Parameters and relative spreads, comma-separated: NAME=SPREAD with NAME one of k_p, c,
-    /// k_r, z_p, k_h, m, v0 and SPREAD a percentage (5%) or a fraction (0.05); or `fit`: the
-    /// multivariate normal of a fitted preset's own covariance (its `[fit]` table)
+    /// k_r, z_p, k_h, m, v0, pressure (an inflated ball's gauge pressure), temperature (of the
+    /// absolute temperature, kelvin: 1% is about 3 K) and SPREAD a percentage (5%) or a
+    /// fraction (0.05); or `fit`: the multivariate normal of a fitted preset's own covariance
+    /// (its `[fit]` table)
     #[arg(long, value_name = "NAME=SPREAD,…", allow_hyphen_values = true)]
     pub vary: String,
     /// Distribution of each varied parameter: normal (sd = spread), uniform (± spread) or
@@ -123,6 +125,7 @@ pub fn run(a: &McArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     let ball = a.ball.resolve(a.v0)?;
     let spec = spec(a, &ball)?;
     ball.check_samples(spec.samples)?;
+    ball.mc_conditions(&spec)?;
     let paths: Vec<&std::path::Path> = [&a.csv_out, &a.svg_out]
         .into_iter()
         .flatten()

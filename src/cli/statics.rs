@@ -39,10 +39,14 @@ pub fn run(a: &StaticArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     let s = ball.static_deflection(a.load, a.peak)?;
     let report = StaticReport::new(&ball, a.load, &s);
     match a.format {
-        StaticFormat::Json => output::json(out, &report)?,
+        // `conditions` beside the answer's keys, as every command's JSON (docs/cli.md)
+        StaticFormat::Json => output::json_stated(out, &report, &ball.conditions)?,
         StaticFormat::Text => {
             writeln!(out, "{}", ball.label())?;
             if let Some(line) = ball.overrides_line() {
+                writeln!(out, "{line}")?;
+            }
+            if let Some(line) = ball.conditions_line() {
                 writeln!(out, "{line}")?;
             }
             text(out, a.load, &s, ball.law.name())?;

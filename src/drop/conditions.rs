@@ -24,7 +24,7 @@ pub struct TestConditions {
 const PSI: f64 = crate::conditions::pressure::PSI;
 
 /// Every standard's conditions that a source states (docs/drop.md, "Conditions").
-pub const TEST_CONDITIONS: [TestConditions; 5] = [
+pub const TEST_CONDITIONS: [TestConditions; 7] = [
     TestConditions {
         standard: "itf",
         temperature_c: Some([20.0, 2.0]),
@@ -54,6 +54,22 @@ pub const TEST_CONDITIONS: [TestConditions; 5] = [
         source: "FIBA Official Basketball Rules, Basketball Equipment (2020), section 2: the \
                  ball is inflated so that it rebounds in the window (no number); 7.5–8.5 psi is \
                  the range printed on size-7 balls; no temperature is stated",
+    },
+    TestConditions {
+        standard: "wsf-23",
+        temperature_c: Some([23.0, 0.0]),
+        pressure_gauge_pa: None,
+        source: "World Squash Federation, Specifications for Squash Balls: the ball conditioned \
+                 to 23 °C (no tolerance stated in the sources used); a squash ball is not \
+                 pressurized",
+    },
+    TestConditions {
+        standard: "wsf-45",
+        temperature_c: Some([45.0, 0.0]),
+        pressure_gauge_pa: None,
+        source: "World Squash Federation, Specifications for Squash Balls: the ball conditioned \
+                 to 45 °C (no tolerance stated in the sources used); a squash ball is not \
+                 pressurized",
     },
     TestConditions {
         standard: "fifa-pressure-loss",

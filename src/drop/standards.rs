@@ -88,6 +88,16 @@ pub const MPH_60: f64 = 60.0 * 0.44704;
 /// 85 ft/s in m/s, the speed of MLB's COR test (exact: 1 ft = 0.3048 m).
 pub const FPS_85: f64 = 85.0 * 0.3048;
 
+/// 100 in in m, the WSF rebound test's drop (exact: 1 in = 0.0254 m).
+const WSF_DROP: f64 = 100.0 * 0.0254;
+const WSF_SOURCE: &str = "World Squash Federation, Specifications for Squash Balls (the \
+     championship, double yellow dot ball): rebound resilience from 100 in, at 23 °C 12 % \
+     minimum, at 45 °C 26–33 % (docs/presets.md, squash)";
+const WSF_UNCONFIRMED: &str = "the windows' percentages (recalled from the WSF specification; \
+     no stored copy of it could be read in the session that added them: the test's 100 in and \
+     23/45 °C are confirmed by S. Edgar's account of it), the plate's material and that both \
+     heights are of the bottom of the ball";
+
 const fn drop_test(height: f64, rebound_ref: Reference) -> Test {
     Test::Drop {
         height,
@@ -97,7 +107,7 @@ const fn drop_test(height: f64, rebound_ref: Reference) -> Test {
 }
 
 /// Every standard, in the order `bouncelab standards` lists them.
-pub const STANDARDS: [Standard; 12] = [
+pub const STANDARDS: [Standard; 14] = [
     Standard {
         name: "itf",
         title: "ITF tennis ball (Type 2), rebound test",
@@ -228,6 +238,28 @@ pub const STANDARDS: [Standard; 12] = [
         unconfirmed: Some("any lower limit: the classes are published as maxima"),
         balls: &["softball"],
     },
+    Standard {
+        name: "wsf-23",
+        title: "WSF squash ball (double yellow dot), rebound resilience at 23 °C",
+        test: drop_test(WSF_DROP, Reference::Bottom),
+        surface: "steel plate",
+        // 12 % of 100 in, minimum
+        window: [Some(0.12 * WSF_DROP), None],
+        source: WSF_SOURCE,
+        unconfirmed: Some(WSF_UNCONFIRMED),
+        balls: &["squash"],
+    },
+    Standard {
+        name: "wsf-45",
+        title: "WSF squash ball (double yellow dot), rebound resilience at 45 °C",
+        test: drop_test(WSF_DROP, Reference::Bottom),
+        surface: "steel plate",
+        // 26–33 % of 100 in
+        window: [Some(0.26 * WSF_DROP), Some(0.33 * WSF_DROP)],
+        source: WSF_SOURCE,
+        unconfirmed: Some(WSF_UNCONFIRMED),
+        balls: &["squash"],
+    },
 ];
 
 /// The standard called `name`, or an error listing the names.
@@ -244,7 +276,7 @@ pub fn find(name: &str) -> Result<&'static Standard, String> {
 /// Each embedded ball's own standard: the one its damping was fitted to (its TOML file says
 /// so). A ball may pass several (`balls` of each lists them all: the football passes both FIFA
 /// windows, the .47 softball every class above .47).
-const OWN: [(&str, &str); 7] = [
+const OWN: [(&str, &str); 8] = [
     ("tennis", "itf"),
     ("football", "fifa-quality-pro"),
     ("basketball", "fiba"),
@@ -252,6 +284,7 @@ const OWN: [(&str, &str); 7] = [
     ("softball", "softball-47"),
     ("baseball-mlb", "mlb"),
     ("softball-44", "softball-44"),
+    ("squash", "wsf-45"),
 ];
 
 /// The standard an embedded preset is made to pass, if any: its own (the one it was fitted

@@ -26,6 +26,11 @@ pub struct Calibration {
     /// The ball's inflation (gauge) pressure in the tests, Pa, where it matters.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub pressure: Option<f64>,
+    /// The temperature shift of the dashpot (`[calibration.temperature_shift]`, docs/model.md
+    /// §10.4), for a solid ball whose CORs against temperature were fitted; `None`: the
+    /// parameters hold at `temperature` alone.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub temperature_shift: Option<TemperatureShift>,
     /// The data sets fitted, one or more.
     pub data: Vec<CalibrationData>,
     /// Set by the caller, never read from a file: what a ball runs that is not the recorded
@@ -33,6 +38,21 @@ pub struct Calibration {
     /// and law, so it does not vouch for the answer (`crate::api::Ball::speeds_warning`).
     #[serde(skip)]
     pub other_model: Option<String>,
+}
+
+/// Arrhenius's shift of the dashpot, c(T) = c · exp[(E_a/R)(1/T − 1/T_ref)] (docs/model.md
+/// §10.4): the preset's own c holds at `reference`; `--temperature T` moves it by the factor.
+/// The springs are kept (a COR against temperature cannot tell a spring's shift from the
+/// dashpot's).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct TemperatureShift {
+    /// The activation energy E_a, J/mol (`fit --cor-temperature`).
+    pub activation_energy: f64,
+    /// The temperature the preset's c holds at, °C.
+    pub reference: f64,
+    /// Where E_a comes from: the data it was fitted or solved from.
+    pub source: String,
 }
 
 /// One data set a ball was fitted to.
@@ -62,6 +82,7 @@ impl Calibration {
             speed_max: max,
             temperature: None,
             pressure: None,
+            temperature_shift: None,
             data: vec![data],
             other_model: None,
         }
@@ -106,6 +127,16 @@ impl Calibration {
         }
         if let Some(p) = self.pressure {
             let _ = writeln!(out, "pressure = {p:?}  # Pa, gauge");
+        }
+        if let Some(s) = &self.temperature_shift {
+            out.push_str("\n[calibration.temperature_shift]\n");
+            let _ = writeln!(
+                out,
+                "activation_energy = {:?}  # J/mol",
+                s.activation_energy
+            );
+            let _ = writeln!(out, "reference = {:?}  # °C", s.reference);
+            let _ = writeln!(out, "source = {}", string(&s.source));
         }
         for d in &self.data {
             out.push_str("\n[[calibration.data]]\n");
@@ -164,6 +195,9 @@ pub(super) fn check(c: &Option<Calibration>) -> Result<(), Bad> {
     if let Some(p) = c.pressure {
         positive(None, "pressure", p)?;
     }
+    if let Some(s) = &c.temperature_shift {
+        check_shift(s)?;
+    }
     if c.data.is_empty() {
         let msg = "names no data set ([[calibration.data]] with its source)".into();
         return Err(bad("calibration", None, "data", msg));
@@ -190,6 +224,39 @@ pub(super) fn check(c: &Option<Calibration>) -> Result<(), Bad> {
         for &h in &d.heights {
             positive(at, "heights", h)?;
         }
+    }
+    Ok(())
+}
+
+/// A shift's activation energy finite and within ±1 MJ/mol (the glass transitions of rubbers
+/// reach a few hundred kJ/mol), its reference a temperature a test is taken at, its source
+/// named and free of control characters.
+fn check_shift(s: &TemperatureShift) -> Result<(), Bad> {
+    const TABLE: &str = "calibration.temperature_shift";
+    let e = s.activation_energy;
+    if !(e.is_finite() && e.abs() <= 1e6) {
+        let msg = format!(
+            "must be a finite energy within ±1e6 J/mol, got {}",
+            number(e)
+        );
+        return Err(bad(TABLE, None, "activation_energy", msg));
+    }
+    let t = s.reference;
+    if !(t.is_finite() && (-50.0..=100.0).contains(&t)) {
+        let msg = format!("must lie in [-50, 100] °C, got {}", number(t));
+        return Err(bad(TABLE, None, "reference", msg));
+    }
+    if let Some((j, ch)) = crate::sanitize::first_control(&s.source, &[]) {
+        let msg = format!(
+            "holds a control character, U+{:04X} (character {})",
+            ch as u32,
+            j + 1
+        );
+        return Err(bad(TABLE, None, "source", msg));
+    }
+    if s.source.trim().is_empty() {
+        let msg = "must name the data the shift was fitted to".into();
+        return Err(bad(TABLE, None, "source", msg));
     }
     Ok(())
 }

@@ -22,7 +22,9 @@ fn embedded_presets_parse() {
             "table-tennis",
             "softball",
             "baseball-mlb",
-            "softball-44"
+            "softball-44",
+            "squash",
+            "volleyball"
         ]
     );
     for p in &all {

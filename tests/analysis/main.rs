@@ -25,6 +25,7 @@ mod fit_recovery;
 mod fit_stated_sd;
 mod fit_work_limit;
 mod intervals_physical;
+mod mc_conditions;
 mod mc_flattening;
 mod mc_intervals;
 mod mc_watched;

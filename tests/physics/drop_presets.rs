@@ -9,7 +9,11 @@ use bouncelab::preset::{ParamSource, Preset};
 
 #[test]
 fn stored_damping_is_the_fit_to_the_nominal_cor() {
-    for p in Preset::embedded_all().into_iter().skip(3) {
+    // the squash ball's c sits on the large-ζ branch (a soft dashpot), which `fit_damping`
+    // does not search: tests/physics/conditions_squash.rs re-fits it; the volleyball's c is
+    // assumed, with no standard to fit it to (presets/volleyball.toml)
+    let own_fit = |p: &Preset| !["squash", "volleyball"].contains(&p.name.as_str());
+    for p in Preset::embedded_all().into_iter().skip(3).filter(own_fit) {
         let s = standards::for_ball(&p.name).unwrap();
         let b = DropBall {
             params: p.params(),

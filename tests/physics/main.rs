@@ -13,6 +13,7 @@ mod spread;
 
 mod closed_forms;
 mod conditions;
+mod conditions_squash;
 mod drop;
 mod drop_flight;
 mod drop_presets;

@@ -153,8 +153,9 @@ fn the_table_is_consistent() {
         if let [Some(lo), Some(hi)] = s.window {
             assert!(lo < hi, "{}", s.name);
         }
+        // the WSF's 23 °C rebound states a minimum only (12 %, docs/drop.md): the one floor
         assert!(
-            s.window[1].is_some(),
+            s.window[1].is_some() || (s.name == "wsf-23" && s.window[0].is_some()),
             "{}: every standard has a ceiling",
             s.name
         );

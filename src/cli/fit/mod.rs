@@ -21,6 +21,7 @@ mod oblique;
 mod plot;
 mod report;
 mod save;
+mod save_shift;
 mod temperature;
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]

@@ -56,7 +56,7 @@ pub fn check(name: &str, force: bool) -> anyhow::Result<()> {
 }
 
 /// Now, UTC, as "2026-11-23 18:55 UTC" (days to a civil date: H. Hinnant's algorithm).
-fn now_utc() -> String {
+pub fn now_utc() -> String {
     let secs = std::time::SystemTime::now()
         .duration_since(std::time::UNIX_EPOCH)
         .map_or(0, |d| d.as_secs()) as i64;
@@ -244,11 +244,23 @@ pub fn stage(
     .preset;
     let when = now_utc();
     let preset = preset(&base, name, ball, data, f, p, &when);
-    let text = preset.to_toml(&header(ball, data, f, &when));
+    stage_preset(&preset, &header(ball, data, f, &when), a.force, files)
+}
+
+/// `preset` as the user preset of its name, its comments `header`, staged in `files` (checked
+/// as a preset first); its path and the presets folder when this call created it.
+pub fn stage_preset(
+    preset: &Preset,
+    header: &[String],
+    force: bool,
+    files: &mut Outputs,
+) -> anyhow::Result<(PathBuf, Option<PathBuf>)> {
+    let name = preset.name.as_str();
+    let text = preset.to_toml(header);
     Preset::parse(&text, name)
         .map_err(|e| anyhow::anyhow!("the fitted ball is not a valid preset: {e}"))?;
     let (path, exists) = target(name)?;
-    if exists && !a.force {
+    if exists && !force {
         anyhow::bail!(
             "preset '{name}' exists ({}): use --force to replace it",
             path.display()

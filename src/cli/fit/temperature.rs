@@ -13,12 +13,20 @@ use std::io::Write;
 use std::path::Path;
 
 pub fn run(a: &FitArgs, path: &Path, out: &mut dyn Write) -> anyhow::Result<()> {
-    if a.beyond_a_file_fit() {
+    // --save writes the shift into a preset (save_shift.rs); the rest is not for this fit
+    let without_save = FitArgs {
+        save: None,
+        ..a.clone()
+    };
+    if without_save.beyond_a_file_fit() {
         anyhow::bail!(
             "--cor-temperature fits the dashpot's temperature shift to CORs at temperatures \
-             alone: the other data and --free, --v0, --save, --plot, --drag-coefficient, \
+             alone: the other data and --free, --v0, --plot, --drag-coefficient, \
              --rebound-height-sd are not for it"
         );
+    }
+    if let Some(name) = &a.save {
+        super::save::check(name, a.force)?;
     }
     // --temperature names the reference temperature here; the ball is the preset's own
     let mut ball_args = a.ball.clone();
@@ -63,11 +71,23 @@ pub fn run(a: &FitArgs, path: &Path, out: &mut dyn Write) -> anyhow::Result<()> 
         FitFormat::Json => output::json(&mut text, &report)?,
         FitFormat::Text => write_text(&mut text, &report, &fit)?,
     }
-    out.write_all(&text)?;
     if !fit.no_answer.is_empty() {
-        return Err(MultiFitError::Unanswered(fit.no_answer.join("; ")).into());
+        out.write_all(&text)?;
+        let refused = if a.save.is_some() {
+            "; --save not written"
+        } else {
+            ""
+        };
+        return Err(
+            MultiFitError::Unanswered(format!("{}{refused}", fit.no_answer.join("; "))).into(),
+        );
     }
-    Ok(())
+    match &a.save {
+        Some(name) => {
+            super::save_shift::save_then_report(a, name, &file, &points, &fit, &text, out)
+        }
+        None => Ok(out.write_all(&text)?),
+    }
 }
 
 /// The report, as JSON writes it (SI: kg/s, J/mol; °C).
