@@ -89,5 +89,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(batch::batch, m)?)?;
     m.add_function(wrap_pyfunction!(mc::monte_carlo_chunk, m)?)?;
     m.add_function(wrap_pyfunction!(mc::monte_carlo_merge, m)?)?;
+    m.add_function(wrap_pyfunction!(mc::monte_carlo_order_ranks, m)?)?;
+    m.add_function(wrap_pyfunction!(mc::monte_carlo_report, m)?)?;
     Ok(())
 }
