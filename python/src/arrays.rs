@@ -207,13 +207,13 @@ pub(crate) fn impacts<'py>(
         })?
         .ok_or_else(stopped)?
         .map_err(|(i, e)| {
-                let msg = format!("element {i}: {e}");
-                if e.is_no_answer() {
-                    crate::NoAnswerError::new_err(msg)
-                } else {
-                    PyValueError::new_err(msg)
-                }
-            })?;
+            let msg = format!("element {i}: {e}");
+            if e.is_no_answer() {
+                crate::NoAnswerError::new_err(msg)
+            } else {
+                PyValueError::new_err(msg)
+            }
+        })?;
     }
     let d = PyDict::new(py);
     for (name, a) in Columns::NUMBERS.into_iter().zip(numbers) {

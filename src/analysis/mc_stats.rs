@@ -208,14 +208,10 @@ pub fn order_ranks(n: usize) -> Vec<usize> {
         .iter()
         .flat_map(|p| type7_pair(n, (n - 1) as f64 * p / 100.0))
         .collect();
-    ranks.extend(
-        PROBS
-            .iter()
-            .flat_map(|p| {
-                let (lo, hi) = quantile_ranks(n, p / 100.0);
-                lo.into_iter().chain(hi)
-            }),
-    );
+    ranks.extend(PROBS.iter().flat_map(|p| {
+        let (lo, hi) = quantile_ranks(n, p / 100.0);
+        lo.into_iter().chain(hi)
+    }));
     ranks.sort_unstable();
     ranks.dedup();
     ranks

@@ -394,7 +394,11 @@ fn read_centre(
 /// the same value to 1e-9 and so the same cells: tests/cli/answer_reach.rs,
 /// `the_map_reads_open_cells_by_the_taylor_steps_as_the_solver_does`), else
 /// [`peak_displacement`] (some 0.35 ms).
-fn cell_peak(params: &ImpactParams, law: ContactLaw, method: Method) -> (Result<f64, BallError>, bool) {
+fn cell_peak(
+    params: &ImpactParams,
+    law: ContactLaw,
+    method: Method,
+) -> (Result<f64, BallError>, bool) {
     let length = params.v0 / params.omega0();
     match crate::solver::taylor::peak_displacement(&params.normalized(), law) {
         Some(alpha) if alpha.is_finite() => (Ok(alpha * length), false),

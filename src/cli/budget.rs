@@ -81,8 +81,7 @@ pub fn interrupt_flag() -> Arc<AtomicBool> {
 /// tests/cli/suspend_pty.rs.
 pub fn stop_on_tstp() {
     #[cfg(unix)]
-    if let Ok(mut signals) = signal_hook::iterator::Signals::new([signal_hook::consts::SIGTSTP])
-    {
+    if let Ok(mut signals) = signal_hook::iterator::Signals::new([signal_hook::consts::SIGTSTP]) {
         let _ = std::thread::Builder::new()
             .name("tstp".into())
             .spawn(move || {

@@ -30,12 +30,12 @@ fn sigtstp_suspends_a_command_and_sigcont_lets_it_finish() {
         "--law",
         "hertz",
         "--points",
-        "2000",
+        "200",
         "--out",
         out.to_str().unwrap(),
     ];
     let mut x = Explorer::spawn(home.path(), None, &args);
-    x.wait_for("/6000 impacts"); // the bar: the work is under way
+    x.wait_for("/600 impacts"); // the bar: the work is under way (some seconds of it)
     let pid = x.pid();
     x.signal(Signal::TSTP);
     x.wait_until("stopped by SIGTSTP", || state(pid) == 'T');
@@ -48,6 +48,11 @@ fn sigtstp_suspends_a_command_and_sigcont_lets_it_finish() {
     assert!(!out.exists(), "the figure was written while stopped");
     x.signal(Signal::CONT);
     let (status, _, text) = x.finish();
-    assert_eq!(status.code(), Some(0), "{status:?}\n{}", text.escape_debug());
+    assert_eq!(
+        status.code(),
+        Some(0),
+        "{status:?}\n{}",
+        text.escape_debug()
+    );
     assert!(out.exists(), "no figure after SIGCONT");
 }
