@@ -103,7 +103,7 @@ pub use batch::{BallOutcome, BatchSetup, quantity as batch_quantity};
 pub use batch_report::{BatchReport, BatchSummary, BatchUnanswered, StandardRef};
 pub use calibration::{BallRecord, changed_params};
 pub use collide::CollisionReport;
-pub use columns::{Columns, Unanswered, first_pass};
+pub use columns::{Columns, Unanswered, first_pass, first_pass_stoppable};
 pub use conditions::{ConditionsSpec, recorded as recorded_conditions, standard_leak};
 pub use court::{CourtCalibration, ITF_ANGLE, ITF_SPEED};
 pub use entry::{Overrides, PresetRow};

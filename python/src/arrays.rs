@@ -7,7 +7,7 @@
 
 use crate::{error, law};
 use bouncelab::analysis::work;
-use bouncelab::api::{Columns, first_pass};
+use bouncelab::api::{Columns, first_pass_stoppable};
 use bouncelab::model::params::ImpactParams;
 use numpy::{PyArray1, PyArrayMethods, PyReadonlyArray1, PyUntypedArrayMethods};
 use pyo3::exceptions::{PyOverflowError, PyTypeError, PyValueError};
@@ -194,17 +194,26 @@ pub(crate) fn impacts<'py>(
         let mut b = rebound.readwrite();
         let [cor, force, time, z_m, z_f] = f.each_mut().map(|a| a.as_slice_mut());
         let mut out = Columns::from_slices([cor?, force?, time?, z_m?, z_f?], b.as_slice_mut()?);
-        let rest = py.detach(|| first_pass(law, &params, &mut out));
+        // both passes in blocks, Ctrl-C read between them (`interrupt::detach_stoppable`)
+        let rest = crate::interrupt::detach_stoppable(py, |stop| {
+            let stop = || stop.load(std::sync::atomic::Ordering::Relaxed);
+            first_pass_stoppable(law, &params, &mut out, &stop)
+        })?
+        .ok_or_else(stopped)?;
         work::check_elements(law, rest.elements()).map_err(|e| error(e.into()))?;
-        py.detach(|| rest.answer(&params, &mut out))
-            .map_err(|(i, e)| {
-                let msg = format!("element {i}: {e}");
-                if e.is_no_answer() {
-                    crate::NoAnswerError::new_err(msg)
-                } else {
-                    PyValueError::new_err(msg)
-                }
-            })?;
+        crate::interrupt::detach_stoppable(py, |stop| {
+            let stop = || stop.load(std::sync::atomic::Ordering::Relaxed);
+            rest.answer_stoppable(&params, &mut out, &stop)
+        })?
+        .ok_or_else(stopped)?
+        .map_err(|(i, e)| {
+            let msg = format!("element {i}: {e}");
+            if e.is_no_answer() {
+                crate::NoAnswerError::new_err(msg)
+            } else {
+                PyValueError::new_err(msg)
+            }
+        })?;
     }
     let d = PyDict::new(py);
     for (name, a) in Columns::NUMBERS.into_iter().zip(numbers) {
@@ -212,4 +221,10 @@ pub(crate) fn impacts<'py>(
     }
     d.set_item("rebound", rebound.call_method1("reshape", (&shape,))?)?;
     Ok(d)
+}
+
+/// Work a flag stopped though no signal's exception was raised (a handler that returned):
+/// said as Python says an interrupted call.
+fn stopped() -> PyErr {
+    pyo3::exceptions::PyKeyboardInterrupt::new_err("stopped")
 }

@@ -93,5 +93,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(mc::monte_carlo_merge, m)?)?;
     m.add_function(wrap_pyfunction!(court::court, m)?)?;
     m.add_function(wrap_pyfunction!(statics::static_deflection, m)?)?;
+    m.add_function(wrap_pyfunction!(mc::monte_carlo_order_ranks, m)?)?;
+    m.add_function(wrap_pyfunction!(mc::monte_carlo_report, m)?)?;
     Ok(())
 }

@@ -327,3 +327,67 @@ mc_pyfunction! {
         report(py, &r, &s)
     }
 }
+
+/// The 0-based ranks of the order statistics a run's summary reads from `n` values of a
+/// quantity (`bouncelab::analysis::mc::order_ranks`): what the Dask client's streaming merge
+/// finds on the workers (`bouncelab/dask.py`, docs/scale.md).
+#[pyfunction]
+pub(crate) fn monte_carlo_order_ranks(n: usize) -> Vec<usize> {
+    if n == 0 {
+        return vec![];
+    }
+    bouncelab::analysis::mc::order_ranks(n)
+}
+
+/// One quantity's statistics from the streaming merge's dict: `n`, `mean`, `sd`, `min`,
+/// `max` and `order`, its order statistics at `monte_carlo_order_ranks(n)`.
+fn merged_stats(d: &Bound<'_, PyDict>) -> PyResult<Stats> {
+    let get = |k: &str| -> PyResult<Bound<'_, PyAny>> {
+        d.get_item(k)?
+            .ok_or_else(|| PyValueError::new_err(format!("invalid merge: no '{k}'")))
+    };
+    let n: usize = get("n")?.extract()?;
+    if n == 0 {
+        return Ok(bouncelab::analysis::mc::stats_of(&[]));
+    }
+    let order: Vec<f64> = get("order")?.extract()?;
+    if order.len() != bouncelab::analysis::mc::order_ranks(n).len() {
+        return Err(PyValueError::new_err(format!(
+            "invalid merge: {} order statistics for {n} values",
+            order.len()
+        )));
+    }
+    let extremes = [get("min")?.extract()?, get("max")?.extract()?];
+    Ok(bouncelab::analysis::mc::stats_from_order(
+        n,
+        get("mean")?.extract()?,
+        get("sd")?.extract()?,
+        extremes,
+        &order,
+    ))
+}
+
+mc_pyfunction! {
+    /// The dict `monte_carlo` returns, from a streaming merge's per-quantity statistics (dicts
+    /// of `n`, `mean`, `sd`, `min`, `max` and `order`: the order statistics at
+    /// `monte_carlo_order_ranks(n)`) and the run's count of samples without rebound: the
+    /// Dask client's merge in memory that does not grow with the samples (docs/scale.md).
+    fn monte_carlo_report<'py>(py, r; samples;
+        cor: Bound<'py, PyDict>,
+        max_force: Bound<'py, PyDict>,
+        contact_time: Bound<'py, PyDict>,
+        no_rebound: usize,
+    ) -> PyResult<Bound<'py, PyDict>>
+    {
+        let s = McSummary {
+            spec: r.spec.clone(),
+            no_rebound,
+            stats: bouncelab::analysis::mc::McStats {
+                cor: merged_stats(&cor)?,
+                max_force: merged_stats(&max_force)?,
+                contact_time: merged_stats(&contact_time)?,
+            },
+        };
+        report(py, &r, &s)
+    }
+}

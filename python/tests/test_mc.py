@@ -166,6 +166,87 @@ def test_hertz_samples_of_a_tabulated_ball_count_as_cheap_ones(client, tmp_path)
         bouncelab.monte_carlo(**{**kw, "preset": "off-table"})
 
 
+def close_but_the_sums(streamed, one):
+    """The streaming merge's answer against the single call's: every number the same bits
+    but the mean, sd and the mean's interval (Chan's update against a compensated sum), those
+    within 1e-13 (docs/scale.md)."""
+    rest = lambda d: {k: v for k, v in d.items() if k != "stats"}  # noqa: E731
+    assert rest(streamed) == rest(one)
+    for q in ("cor", "max_force", "contact_time"):
+        a, b = streamed["stats"][q], one["stats"][q]
+        for k in ("n", "min", "max", "q", "q_ci"):
+            assert a[k] == b[k], (q, k)
+        for k in ("mean", "sd", "mean_se"):
+            assert a[k] == pytest.approx(b[k], rel=1e-13, nan_ok=True), (q, k)
+        assert a["mean_ci"] == pytest.approx(b["mean_ci"], rel=1e-13, nan_ok=True), q
+
+
+def test_dask_streams_the_merge_with_the_single_process_quantiles(client):
+    """Issue 54 item 1: beyond `exact_below` the values stay on the workers; the client merges
+    per-task moments (Chan) and finds the exact order statistics by refined histograms. Few
+    bins and a small cap force several refining passes."""
+    import bouncelab.dask
+
+    kw = dict(preset="golf", vary=VARY, samples=200_003, seed=7, dist="lognormal")
+    one = bouncelab.monte_carlo(**kw)
+    streamed = bouncelab.dask.monte_carlo(
+        client, **kw, chunk=40_000, exact_below=0, bins=16, cap=300
+    )
+    close_but_the_sums(streamed, one)
+
+
+def test_the_streaming_merge_is_exact_with_ties_and_missing_values(monkeypatch):
+    """Order statistics through bins that cannot be split (every value equal) and many ties,
+    with NaN contact times (no rebound), against the gathered merge of the same values."""
+    pytest.importorskip("dask")
+    import dask
+
+    import bouncelab.dask
+
+    def fake(options, start, count):
+        i = np.arange(start, start + count)
+        cor = np.round(np.sin(i * 0.37) * 0.2 + 0.5, 2)
+        force = np.full(count, 5.0)
+        time = np.where(i % 7 == 0, np.nan, 1e-3 + (i % 13) * 1e-5)
+        return cor, force, time
+
+    monkeypatch.setattr(bouncelab.dask, "_chunk", fake)
+    kw = dict(preset="golf", vary=VARY, samples=50_001, seed=1, chunk=7_000)
+    with dask.config.set(scheduler="threads"):
+        gathered = bouncelab.dask.monte_carlo(None, **kw)
+        streamed = bouncelab.dask.monte_carlo(None, **kw, exact_below=0, bins=8, cap=50)
+    assert streamed["no_rebound"] == gathered["no_rebound"] == 7_143
+    close_but_the_sums(streamed, gathered)
+
+
+def test_the_streaming_merge_holds_no_samples_at_the_client(client):
+    """The client's memory does not grow with the samples: the peak of what Python allocated
+    while merging 4·10⁵ samples stays below their 9.6 MB (the gathered merge's cost, twice:
+    the tasks' arrays and their concatenation) and does not grow with the samples."""
+    import tracemalloc
+
+    import bouncelab.dask
+
+    kw = dict(preset="golf", vary=VARY, seed=3, chunk=25_000, exact_below=0)
+    peaks = []
+    for samples in (100_000, 400_000):
+        tracemalloc.start()
+        bouncelab.dask.monte_carlo(client, **kw, samples=samples)
+        peaks.append(tracemalloc.get_traced_memory()[1])
+        tracemalloc.stop()
+    print(f"client peaks {peaks[0] / 1e6:.2f} MB, {peaks[1] / 1e6:.2f} MB")
+    assert peaks[1] < 5e6
+    assert peaks[1] < 1.5 * peaks[0] + 1e6
+
+
+def test_dask_refuses_a_run_beyond_its_bound_before_any_task(client):
+    """Issue 54 item 9: samples=10**12 had no bound on the whole run."""
+    import bouncelab.dask
+
+    with pytest.raises(ValueError, match="invalid samples: 1000000000000 is beyond"):
+        bouncelab.dask.monte_carlo(client, preset="golf", vary=VARY, samples=10**12, chunk=10**7)
+
+
 def test_dask_without_a_client_uses_dasks_own_scheduler():
     pytest.importorskip("dask")
     import dask

@@ -37,7 +37,9 @@ pub use super::mc_conditions::McConditions;
 pub use super::mc_corr::parse_correlate;
 pub use super::mc_impact::{Outcome, impact, impacts, impacts_of_groups};
 pub use super::mc_spec::{Correlation, Dist, McError, McSpec, Spread, Varied, parse_vary};
-pub use super::mc_stats::{PROBS, Quantiles, Stats, interval_warnings};
+pub use super::mc_stats::{
+    PROBS, Quantiles, Stats, interval_warnings, order_ranks, stats as stats_of, stats_from_order,
+};
 
 /// The samples `start … start + len` of a run, one column a quantity, in index order.
 #[derive(Debug, Clone, PartialEq, Default)]

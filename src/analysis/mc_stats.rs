@@ -184,40 +184,64 @@ pub fn stats(values: &[f64]) -> Stats {
     } else {
         f64::NAN
     };
-    let hs = PROBS.map(|p| (n - 1) as f64 * p / 100.0);
-    let pair = |h: f64| {
-        let lo = h.floor() as usize;
-        [lo, (lo + 1).min(n - 1)]
-    };
-    // each quantile's interval: two more order statistics (`mc_interval`)
-    let ci_ranks = PROBS.map(|p| quantile_ranks(n, p / 100.0));
-    let mut ranks: Vec<usize> = hs.iter().flat_map(|&h| pair(h)).collect();
-    ranks.extend(
-        ci_ranks
-            .iter()
-            .flat_map(|&(lo, hi)| lo.into_iter().chain(hi)),
-    );
-    ranks.sort_unstable();
-    ranks.dedup();
+    let ranks = order_ranks(n);
     let x = match &bins {
         Some(b) => b.order_statistics(values, &ranks),
         None => unbinned(values, (min, max), &ranks),
     };
+    stats_from_order(n, mean, sd, [min, max], &x)
+}
+
+/// (⌊h⌋, ⌈h⌉) of the type-7 quantile at h = (n − 1) p/100, clipped to the last rank.
+fn type7_pair(n: usize, h: f64) -> [usize; 2] {
+    let lo = h.floor() as usize;
+    [lo, (lo + 1).min(n - 1)]
+}
+
+/// The 0-based ranks of the order statistics [`stats`] reads from `n` ≥ 1 finite values, in
+/// increasing order without repeats: each quantile's two (type 7) and each quantile's 95 %
+/// interval's ends (`mc_interval::quantile_ranks`). A merge that finds these order
+/// statistics its own way (the Dask client's, docs/scale.md) gives them to
+/// [`stats_from_order`] and has [`stats`]'s numbers.
+pub fn order_ranks(n: usize) -> Vec<usize> {
+    let mut ranks: Vec<usize> = PROBS
+        .iter()
+        .flat_map(|p| type7_pair(n, (n - 1) as f64 * p / 100.0))
+        .collect();
+    ranks.extend(PROBS.iter().flat_map(|p| {
+        let (lo, hi) = quantile_ranks(n, p / 100.0);
+        lo.into_iter().chain(hi)
+    }));
+    ranks.sort_unstable();
+    ranks.dedup();
+    ranks
+}
+
+/// The statistics of `n` ≥ 1 finite values from their `mean`, `sd`, extremes `[min, max]` and
+/// their order statistics `x` at [`order_ranks`]`(n)` (in that order): [`stats`]'s quantiles
+/// and intervals, the same arithmetic. Panics if `x` is not one value a rank.
+pub fn stats_from_order(n: usize, mean: f64, sd: f64, extremes: [f64; 2], x: &[f64]) -> Stats {
+    let ranks = order_ranks(n);
+    assert_eq!(ranks.len(), x.len(), "one order statistic a rank");
+    let hs = PROBS.map(|p| (n - 1) as f64 * p / 100.0);
     let value = |r: usize| x[ranks.binary_search(&r).expect("a rank asked for")];
     let q = hs.map(|h| {
-        let [lo, hi] = pair(h);
+        let [lo, hi] = type7_pair(n, h);
         let (x_lo, x_hi) = (value(lo), value(hi));
         x_lo + (h - lo as f64) * (x_hi - x_lo)
     });
     let side = |r: Option<usize>| r.map_or(f64::NAN, value);
-    let q_ci = ci_ranks.map(|(lo, hi)| [side(lo), side(hi)]);
+    let q_ci = PROBS.map(|p| {
+        let (lo, hi) = quantile_ranks(n, p / 100.0);
+        [side(lo), side(hi)]
+    });
     let (mean_se, mean_ci) = mean_interval(n, mean, sd);
     Stats {
         n,
         mean,
         sd,
-        min,
-        max,
+        min: extremes[0],
+        max: extremes[1],
         q: Quantiles::from_values(q),
         mean_se,
         mean_ci,

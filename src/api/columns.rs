@@ -19,6 +19,9 @@ use crate::solver::SolveError;
 type Ball = (ImpactParams, Normalized);
 use rayon::prelude::*;
 
+mod stoppable;
+pub use stoppable::first_pass_stoppable;
+
 /// Elements a task of the first pass takes: a multiple of the lanes' eight, small enough that
 /// both cores share 10⁴ elements, large enough that rayon's split costs nothing per element.
 const CHUNK: usize = 512;

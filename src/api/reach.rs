@@ -193,8 +193,11 @@ struct Tally {
     unchecked: usize,
     /// The first of their errors, to name a cell.
     error: Option<String>,
-    /// Cells the bounds left open, run again (`MapReach::solved`).
+    /// Cells the bounds left open, read exactly (`MapReach::solved`).
     solved: usize,
+    /// Of those, the cells the Taylor steps could not read, run again by the adaptive solver
+    /// (`MapReach::slow`).
+    slow: usize,
 }
 
 impl Tally {
@@ -203,6 +206,7 @@ impl Tally {
         self.alone += other.alone;
         self.unchecked += other.unchecked;
         self.solved += other.solved;
+        self.slow += other.slow;
         self.error = self.error.or(other.error);
         self
     }
@@ -241,10 +245,18 @@ impl MapReach {
         map_note_text(&self.tally, self.radius, self.total)
     }
 
-    /// How many cells the bounds left open and were run again (each some 0.35 ms by the
-    /// adaptive solver: issue 54 item 10; tests/cli/answer_reach.rs).
+    /// How many cells the bounds left open and were read exactly ([`MapReach::slow`] of
+    /// them by the adaptive solver, the rest by the Taylor steps; tests/cli/answer_reach.rs).
     pub fn solved(&self) -> usize {
         self.tally.solved
+    }
+
+    /// How many cells were run again by the adaptive solver, some 0.35 ms each: those whose
+    /// centre the Taylor steps could not read (`solver::taylor::peak_displacement`: a stiff
+    /// phase, the linear law). Every undecided cell was, before (issue 54 item 10: a preset's
+    /// Hertz map 4–23 × slower than BENCHMARKS.md recorded).
+    pub fn slow(&self) -> usize {
+        self.tally.slow
     }
 }
 
@@ -346,13 +358,24 @@ fn read_centre(
     } else if hi <= radius {
         false
     } else {
-        match peak_displacement(params, law, method) {
-            Ok(a) => a > radius,
+        let (alpha, slow) = cell_peak(params, law, method);
+        match alpha {
+            Ok(a) => {
+                let n = usize::from(a > radius);
+                return Tally {
+                    past: n,
+                    alone: n,
+                    solved: 1,
+                    slow: usize::from(slow),
+                    ..Tally::default()
+                };
+            }
             Err(e) => {
                 return Tally {
                     unchecked: 1,
                     error: Some(e.to_string()),
                     solved: 1,
+                    slow: usize::from(slow),
                     ..Tally::default()
                 };
             }
@@ -362,8 +385,24 @@ fn read_centre(
     Tally {
         past: n,
         alone: n,
-        solved: usize::from(lo <= radius && hi > radius),
         ..Tally::default()
+    }
+}
+
+/// α_max (m) of a map cell the bounds left open, and whether the adaptive solver read it: the
+/// Taylor steps' read where the centre turns (`solver::taylor::peak_displacement`, a few µs,
+/// the same value to 1e-9 and so the same cells: tests/cli/answer_reach.rs,
+/// `the_map_reads_open_cells_by_the_taylor_steps_as_the_solver_does`), else
+/// [`peak_displacement`] (some 0.35 ms).
+fn cell_peak(
+    params: &ImpactParams,
+    law: ContactLaw,
+    method: Method,
+) -> (Result<f64, BallError>, bool) {
+    let length = params.v0 / params.omega0();
+    match crate::solver::taylor::peak_displacement(&params.normalized(), law) {
+        Some(alpha) if alpha.is_finite() => (Ok(alpha * length), false),
+        _ => (peak_displacement(params, law, method), true),
     }
 }
 

@@ -72,6 +72,26 @@ pub fn interrupt_flag() -> Arc<AtomicBool> {
     .clone()
 }
 
+/// Ctrl-Z (SIGTSTP) stops a command as its default action does, also where the kernel
+/// discards it: a process group none of whose parents is in its session (a command run as a
+/// session's leader in a pty — the review's terminal — or whose shell has gone: issue 54 item
+/// 6, Ctrl-Z did not suspend command-line work). A thread waits for SIGTSTP and stops the
+/// process by SIGSTOP, which nothing discards; SIGCONT (`fg`) resumes the work where it was.
+/// The command keeps no terminal state to restore (the progress bar is redrawn as it goes).
+/// tests/cli/suspend_pty.rs.
+pub fn stop_on_tstp() {
+    #[cfg(unix)]
+    if let Ok(mut signals) = signal_hook::iterator::Signals::new([signal_hook::consts::SIGTSTP]) {
+        let _ = std::thread::Builder::new()
+            .name("tstp".into())
+            .spawn(move || {
+                for _ in signals.forever() {
+                    let _ = signal_hook::low_level::raise(signal_hook::consts::SIGSTOP);
+                }
+            });
+    }
+}
+
 /// The watch of the library's long work ([`crate::analysis::work::Watch`], a fit's model
 /// runs): a counter on stderr on a terminal, and Ctrl-C (SIGINT) or SIGTERM stops the work.
 pub struct Watcher {

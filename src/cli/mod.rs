@@ -153,6 +153,7 @@ pub fn main() -> ExitCode {
     // signal in its first moments, before any long work asked, still stops it with 130 and
     // nothing written (tests/cli/signals_early.rs)
     budget::interrupt_flag();
+    budget::stop_on_tstp();
     if crate::fault::Fault::SlowStart.active() {
         std::thread::sleep(crate::fault::START_PAUSE);
     }

@@ -379,3 +379,90 @@ fn the_centre_bounds_hold_the_solver_s_peak_on_a_grid() {
         assert!(checked > 70, "{preset} {law:?}: {checked} cells");
     }
 }
+
+/// Issue 54 item 10: a preset's map under Hertz or elastic–plastic ran every cell its bounds
+/// left open again by the adaptive solver (some 0.35 ms each: tennis under Hertz, 200 × 120,
+/// 0.04 → 0.92 s CPU). The Taylor steps now read those cells' α_max where the centre turns
+/// (`solver::taylor::peak_displacement`): the same value as the adaptive solver's to 1e-8 in
+/// every cell, the same cells counted past the radius at the ball's own radius and at radii
+/// among the cells' own α_max, and no open cell left to the adaptive solver (`slow`, on the
+/// old code every open cell).
+#[test]
+fn the_map_reads_open_cells_by_the_taylor_steps_as_the_solver_does() {
+    use bouncelab::map::{Axis, MapSpec, Param, Scale, compute};
+    let cases = [
+        ("tennis", ContactLaw::Hertz),
+        ("tennis", ContactLaw::ElasticPlastic),
+        ("superball", ContactLaw::ElasticPlastic),
+        ("golf", ContactLaw::Hertz),
+    ];
+    for (preset, law) in cases {
+        let ball = Ball::from_preset(preset).unwrap();
+        let spec = MapSpec::dimensional(
+            ball.params,
+            law,
+            Axis::new(Param::Lambda, 0.01, 100.0, 14, Scale::Log).unwrap(),
+            Axis::new(Param::Zeta, 0.01, 100.0, 10, Scale::Log).unwrap(),
+        )
+        .unwrap()
+        .with_fast(true)
+        .with_fast_laws(true);
+        let map = compute(spec.clone());
+        let exact: Vec<(f64, f64, bool)> = map
+            .lambdas
+            .iter()
+            .flat_map(|&l| map.zetas.iter().map(move |&z| (l, z)))
+            .map(|(l, z)| {
+                let p = spec.params_at(l, z);
+                let z_m = simulate(&p, law, &SolveOptions::default())
+                    .unwrap()
+                    .max_indentation;
+                let alpha = api::peak_displacement(&p, law, Method::Numeric).unwrap();
+                let length = p.v0 / p.omega0();
+                let taylor = bouncelab::solver::taylor::peak_displacement(&p.normalized(), law);
+                if let Some(a) = taylor {
+                    let a = a * length;
+                    assert!(
+                        (a - alpha).abs() <= 1e-8 * alpha,
+                        "{preset} {law:?} λ {l} ζ {z}: Taylor α_max {a} against {alpha}"
+                    );
+                }
+                (z_m, alpha, taylor.is_some())
+            })
+            .collect();
+        let mut alphas: Vec<f64> = exact.iter().map(|e| e.1).collect();
+        alphas.sort_by(f64::total_cmp);
+        // cells the Taylor steps leave (a phase stiffer than they take on): the most the
+        // adaptive solver may be asked for
+        let stiff = exact.iter().filter(|e| !e.2).count();
+        let (mut open, mut slow) = (0, 0);
+        // radii between two cells' α_max (at a cell's own the two reads may differ by 1e-10)
+        let between = |k: usize| 0.5 * (alphas[k] + alphas[k + 1]);
+        for radius in [ball.radius(), between(40), between(70), between(100)] {
+            let reach = api::map_reach(&map, radius).unwrap();
+            let past = exact.iter().filter(|(_, a, _)| *a > radius).count();
+            let alone = exact
+                .iter()
+                .filter(|(z, a, _)| *z <= radius && *a > radius)
+                .count();
+            let w = reach.warning();
+            assert_eq!(w.is_some(), alone > 0, "{preset} {law:?} R {radius}: {w:?}");
+            if let Some(w) = w {
+                let counts = format!("in {past} of 140 cells, {alone} of them with");
+                assert!(w.contains(&counts), "{preset} {law:?} R {radius}: {w}");
+            }
+            assert!(
+                reach.slow() <= stiff,
+                "{preset} {law:?} R {radius}: {} cells left to the solver, {stiff} stiff",
+                reach.slow()
+            );
+            open += reach.solved();
+            slow += reach.slow();
+        }
+        // on the old code every open cell ran the adaptive solver (slow = open)
+        assert!(
+            open > 0 && slow * 4 < open,
+            "{preset} {law:?}: {slow} of {open} open cells by the adaptive solver"
+        );
+    }
+}

@@ -64,3 +64,4 @@ mod numbers_as_typed;
 mod outputs_regular_only;
 mod session_file;
 mod signals_early;
+mod suspend_pty;

@@ -165,6 +165,47 @@ fn power_law(n: &Normalized, law: ContactLaw) -> Option<Summary> {
     }
 }
 
+/// [`peak_displacement`]'s stiffness cut: 50 × [`STIFF`]. The steps it takes grow with the
+/// stiffness (about a seventh of it, `solver::table::REFERENCE_STEPS`), so a stiffer phase than
+/// [`summary`] takes on costs some hundreds of steps — still far below the adaptive solver's
+/// 0.35 ms — and leaves none of a preset's map cells to it (tests/cli/answer_reach.rs).
+const PEAK_STIFF: f64 = 50.0 * STIFF;
+/// [`peak_displacement`]'s most steps: [`PEAK_STIFF`]'s seventh and margin.
+const PEAK_STEPS: usize = 1_000;
+
+/// The peak displacement ᾱ_max = max (z̄ + ȳ) of the ball's centre toward the wall (normalized,
+/// z̄'s units) in the impact of `n` under the Hertz or elastic–plastic law, read where ᾱ' = 0
+/// by the same Taylor steps as [`summary`] (`power::Phase::centre_turn`), stopping there: the
+/// map's centre warning's exact read without the adaptive solver (issue 54 item 10: 0.35 ms a
+/// cell by it). The centre turns after the indentation does (ᾱ' = z̄' + ȳ' and ȳ' > 0 while
+/// F̄ rises: ȳ' = 2ζ(F̄ − λȳ) from ȳ = 0), so on the Hertz branch or on the elastic–plastic
+/// unloading, never on the straight stretch. `None` where [`summary`] would be (the linear
+/// law, a stiff phase, steps run out) or the centre does not turn before the ball leaves:
+/// the caller then runs the adaptive solver. tests/cli/answer_reach.rs holds it to the
+/// adaptive solver's α_max (`api::peak_displacement`) cell by cell.
+pub fn peak_displacement(n: &Normalized, law: ContactLaw) -> Option<f64> {
+    if law == ContactLaw::Linear {
+        return None;
+    }
+    let budget = Budget::with_steps(PEAK_STEPS);
+    let mut impact = stages::PowerImpact::within(n, law, PEAK_STIFF, budget)?;
+    let mut c = [[0.0; POWER_LEN]; 4];
+    let mut scratch = [[0.0; POWER_LEN]; 2];
+    loop {
+        if !impact.take_step() {
+            return None;
+        }
+        let coefs = power::Coefs::of(&impact.sys, &impact.phase.br);
+        series_one(coefs, impact.phase.x, &mut c, &mut scratch);
+        if let Some(alpha) = impact.phase.centre_turn(&c) {
+            return Some(alpha * impact.scale());
+        }
+        if let stages::Progress::Done(_) = impact.feed(&c) {
+            return None;
+        }
+    }
+}
+
 /// `power::series_of` for one impact, compiled with FMA where the CPU has it (an instruction
 /// for each `mul_add`); elsewhere `mul_add` is the library's `fma`: the same bits, slower
 /// (`batch`'s tests: `series_are_the_same_bits_without_fma_instructions`).

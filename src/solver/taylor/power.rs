@@ -208,6 +208,30 @@ impl Phase {
         self.x.map(|xi| xi.abs().max(1.0))
     }
 
+    /// ᾱ (in the branch's units) where the ball's centre turns (ᾱ' falls through 0) within the
+    /// step [`Phase::advance`] takes from here given the series `c`, on this branch (s there in
+    /// [0, s_yield)); `None` where it does not turn in the step. α = z̄ + ȳ with
+    /// z̄ = z̄₀ + b s²; the turn is the root of ᾱ'(σ), the series' second component, read as the
+    /// step's events are (`Rules::root`), so it is α_max to the steps' own precision
+    /// (`super::peak_displacement`).
+    pub(super) fn centre_turn<const L: usize>(&self, c: &[[f64; L]; 4]) -> Option<f64> {
+        if self.x[1] <= 0.0 || self.x[1].is_nan() {
+            return None;
+        }
+        let h = self.rules.step(c, &self.scales());
+        if !(h.is_finite() && h > 0.0) {
+            return None;
+        }
+        let v_end = self.rules.horner(&c[1], h);
+        if v_end > 0.0 || v_end.is_nan() {
+            return None;
+        }
+        let t = self.rules.root(&c[1], 0.0, h, v_end);
+        let s = self.rules.eval(&c[0], t);
+        (s >= 0.0 && s < self.s_yield)
+            .then(|| self.br.z0 + self.br.b * s * s + self.rules.eval(&c[2], t))
+    }
+
     /// One step from `self.x` given the series `c` there: the step the series allow by the
     /// phase's rules, the first event in it (a turn, yield, separation), and the state at its
     /// end.

@@ -45,6 +45,18 @@ impl PowerImpact {
     /// where the steps do not take it on: parameters not finite, or a phase too stiff
     /// (`STIFF`).
     pub(super) fn new(n: &Normalized, law: ContactLaw) -> Option<PowerImpact> {
+        Self::within(n, law, STIFF, Budget::new())
+    }
+
+    /// [`PowerImpact::new`] with a stiffness cut `stiff` and the steps of `budget`: a stiff
+    /// phase needs steps about its rate's inverse, so a higher cut wants a larger budget
+    /// (`super::peak_displacement`, which follows the impact only to the centre's turn).
+    pub(super) fn within(
+        n: &Normalized,
+        law: ContactLaw,
+        stiff: f64,
+        budget: Budget,
+    ) -> Option<PowerImpact> {
         let ok = |x: f64| x.is_finite() && x >= 0.0;
         if !(ok(n.lambda) && ok(n.zeta) && n.kappa.is_finite() && n.kappa > 0.0 && n.zp_bar > 0.0) {
             return None;
@@ -62,7 +74,7 @@ impl PowerImpact {
         // the contact's stiffness in the Hertz scale: 1.5 √ẑ ≈ 1.6 at the Hertz peak, L² past
         // yield; the Hertz contact time is 2.94 (5/4)^{2/5} ≈ 3.2
         let k = if zp < 1.1 { 1.6f64.max(l * l) } else { 1.6 };
-        if 2.0 * sys.zeta * (k + sys.lambda) * 3.2 > STIFF {
+        if 2.0 * sys.zeta * (k + sys.lambda) * 3.2 > stiff {
             return None;
         }
         let (hertz, start) = hertz_start();
@@ -72,9 +84,14 @@ impl PowerImpact {
             law,
             l,
             zp,
-            budget: Budget::new(),
+            budget,
             stage: Stage::Loading,
         })
+    }
+
+    /// L, the Hertz scale's length: ẑ = z̄/L.
+    pub(super) fn scale(&self) -> f64 {
+        self.l
     }
 
     /// Takes one step of the budget before a step's series is fed; `false` when none is left
