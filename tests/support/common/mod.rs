@@ -33,6 +33,12 @@ pub fn bl_in(config: &Path, args: &[&str]) -> Out {
     }
 }
 
+/// A command line as typed, split at its spaces: `argv("drop --preset golf --bounces 1")`
+/// (for arguments that hold no space themselves).
+pub fn argv(line: &str) -> Vec<&str> {
+    line.split_whitespace().collect()
+}
+
 pub fn bl(args: &[&str]) -> Out {
     let dir = tempfile::tempdir().unwrap();
     bl_in(dir.path(), args)
