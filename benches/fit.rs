@@ -23,6 +23,19 @@ fn truth() -> ImpactParams {
     }
 }
 
+/// The fit's start: the truth's m and v0, K_p, c and K_r far from it.
+fn start() -> ImpactParams {
+    ImpactParams {
+        k_p: 2e5,
+        damping: 24.0,
+        k_r: 3.6e4,
+        ..truth()
+    }
+}
+
+/// The parameters the fit frees.
+const FREE: [Param; 3] = [Param::KP, Param::C, Param::KR];
+
 /// 2 000 samples 5 µs apart, contact from 0.8123 ms, noise 1 N (a fixed pseudo-random
 /// sequence, so both sides fit the same numbers), baseline 0.3 N; as CSV text.
 fn trace_csv() -> String {
@@ -81,16 +94,8 @@ fn dense(rows: usize, runs: usize) {
         let t0 = Instant::now();
         let trace = Trace::parse(&csv).unwrap();
         parse.push(t0.elapsed().as_secs_f64());
-        let t = truth();
-        let start = ImpactParams {
-            k_p: 2e5,
-            damping: 24.0,
-            k_r: 3.6e4,
-            ..t
-        };
-        let free = [Param::KP, Param::C, Param::KR];
         let t1 = Instant::now();
-        let f = fit(&start, ContactLaw::Linear, FitData::Trace(&trace), &free).unwrap();
+        let f = fit(&start(), ContactLaw::Linear, FitData::Trace(&trace), &FREE).unwrap();
         fits.push(t1.elapsed().as_secs_f64());
         last = Some(f);
     }
@@ -133,20 +138,12 @@ fn main() {
     dense(999_999, runs(5));
     let csv = trace_csv();
     let trace = Trace::parse(&csv).unwrap();
-    // the fit is given m, v0 and a ball far from the truth
-    let t = truth();
-    let start = ImpactParams {
-        k_p: 2e5,
-        damping: 24.0,
-        k_r: 3.6e4,
-        ..t
-    };
-    let free = [Param::KP, Param::C, Param::KR];
+    let start = start();
     let mut times = Vec::new();
     let mut last = None;
     for _ in 0..runs(31) {
         let t0 = Instant::now();
-        let f = fit(&start, ContactLaw::Linear, FitData::Trace(&trace), &free).unwrap();
+        let f = fit(&start, ContactLaw::Linear, FitData::Trace(&trace), &FREE).unwrap();
         times.push(t0.elapsed().as_secs_f64());
         last = Some(f);
     }

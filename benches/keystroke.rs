@@ -40,12 +40,7 @@ fn main() {
     divan::main();
 }
 
-const AREA: Rect = Rect {
-    x: 0,
-    y: 0,
-    width: 200,
-    height: 60,
-};
+const AREA: Rect = Rect::new(0, 0, 200, 60);
 
 #[derive(Clone, Copy)]
 struct Case {

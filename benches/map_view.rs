@@ -33,12 +33,7 @@ fn main() {
     divan::main();
 }
 
-const AREA: Rect = Rect {
-    x: 0,
-    y: 0,
-    width: 200,
-    height: 60,
-};
+const AREA: Rect = Rect::new(0, 0, 200, 60);
 
 /// A preset in the map view at 200 × 60, its map complete; with the background worker
 /// (`update` then evaluates only a new map's first pass) or without (every pass).

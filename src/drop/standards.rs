@@ -106,6 +106,47 @@ const fn drop_test(height: f64, rebound_ref: Reference) -> Test {
     }
 }
 
+/// A FIFA Quality Programme rebound test of a football: dropped from 2 m (to its bottom) onto
+/// a steel plate, its rebound within `lo` … 1.65 m.
+const fn fifa_rebound(name: &'static str, title: &'static str, lo: f64) -> Standard {
+    Standard {
+        name,
+        title,
+        test: drop_test(2.0, Reference::Bottom),
+        surface: "steel plate",
+        window: [Some(lo), Some(1.65)],
+        source: "FIFA Quality Programme for Footballs, rebound test (as published by licensees)",
+        unconfirmed: Some(
+            "the window in FIFA's own current test manual (a retailer quotes 1.35–1.55 m for \
+             its Quality Pro ball) and the bottom-of-ball reading",
+        ),
+        balls: &["football"],
+    }
+}
+
+/// An ASA/USA Softball COR class: a maximum COR at 60 mph against a rigid wall (ASTM F1887).
+const fn softball_class(
+    name: &'static str,
+    title: &'static str,
+    max: f64,
+    unconfirmed: &'static str,
+    balls: &'static [&'static str],
+) -> Standard {
+    Standard {
+        name,
+        title,
+        test: Test::Cor { speed: MPH_60 },
+        surface: "rigid wall (ASTM F1887)",
+        window: [None, Some(max)],
+        source: "ASA/USA Softball ball classes (COR maximum); ASTM F1887 at 60 mph",
+        unconfirmed: Some(unconfirmed),
+        balls,
+    }
+}
+
+/// What the softball classes leave unconfirmed.
+const MAXIMA_ONLY: &str = "any lower limit: the classes are published as maxima";
+
 /// Every standard, in the order `bouncelab standards` lists them.
 pub const STANDARDS: [Standard; 14] = [
     Standard {
@@ -118,32 +159,12 @@ pub const STANDARDS: [Standard; 14] = [
         unconfirmed: Some("that both heights are read at the bottom of the ball"),
         balls: &["tennis"],
     },
-    Standard {
-        name: "fifa-quality",
-        title: "FIFA Quality football, rebound test",
-        test: drop_test(2.0, Reference::Bottom),
-        surface: "steel plate",
-        window: [Some(1.15), Some(1.65)],
-        source: "FIFA Quality Programme for Footballs, rebound test (as published by licensees)",
-        unconfirmed: Some(
-            "the window in FIFA's own current test manual (a retailer quotes 1.35–1.55 m for \
-             its Quality Pro ball) and the bottom-of-ball reading",
-        ),
-        balls: &["football"],
-    },
-    Standard {
-        name: "fifa-quality-pro",
-        title: "FIFA Quality Pro football, rebound test",
-        test: drop_test(2.0, Reference::Bottom),
-        surface: "steel plate",
-        window: [Some(1.20), Some(1.65)],
-        source: "FIFA Quality Programme for Footballs, rebound test (as published by licensees)",
-        unconfirmed: Some(
-            "the window in FIFA's own current test manual (a retailer quotes 1.35–1.55 m for \
-             its Quality Pro ball) and the bottom-of-ball reading",
-        ),
-        balls: &["football"],
-    },
+    fifa_rebound("fifa-quality", "FIFA Quality football, rebound test", 1.15),
+    fifa_rebound(
+        "fifa-quality-pro",
+        "FIFA Quality Pro football, rebound test",
+        1.20,
+    ),
     Standard {
         name: "fiba",
         title: "FIBA basketball, rebound test",
@@ -195,49 +216,35 @@ pub const STANDARDS: [Standard; 14] = [
         unconfirmed: Some("the test speed (ASTM F1887's 60 mph assumed) and any lower limit"),
         balls: &["baseball-mlb"],
     },
-    Standard {
-        name: "softball-44",
-        title: "Softball, .44 COR class",
-        test: Test::Cor { speed: MPH_60 },
-        surface: "rigid wall (ASTM F1887)",
-        window: [None, Some(0.44)],
-        source: "ASA/USA Softball ball classes (COR maximum); ASTM F1887 at 60 mph",
-        unconfirmed: Some("any lower limit: the classes are published as maxima"),
-        balls: &["softball-44"],
-    },
-    Standard {
-        name: "softball-47",
-        title: "Softball, .47 COR class (fastpitch)",
-        test: Test::Cor { speed: MPH_60 },
-        surface: "rigid wall (ASTM F1887)",
-        window: [None, Some(0.47)],
-        source: "ASA/USA Softball ball classes (COR maximum); ASTM F1887 at 60 mph",
-        unconfirmed: Some("any lower limit: the classes are published as maxima"),
-        balls: &["softball"],
-    },
-    Standard {
-        name: "softball-50",
-        title: "Softball, .50 COR class",
-        test: Test::Cor { speed: MPH_60 },
-        surface: "rigid wall (ASTM F1887)",
-        window: [None, Some(0.50)],
-        source: "ASA/USA Softball ball classes (COR maximum); ASTM F1887 at 60 mph",
-        unconfirmed: Some(
-            "the class itself (named in the issue, not found in a public rule book) and any \
+    softball_class(
+        "softball-44",
+        "Softball, .44 COR class",
+        0.44,
+        MAXIMA_ONLY,
+        &["softball-44"],
+    ),
+    softball_class(
+        "softball-47",
+        "Softball, .47 COR class (fastpitch)",
+        0.47,
+        MAXIMA_ONLY,
+        &["softball"],
+    ),
+    softball_class(
+        "softball-50",
+        "Softball, .50 COR class",
+        0.50,
+        "the class itself (named in the issue, not found in a public rule book) and any \
              lower limit",
-        ),
-        balls: &["softball"],
-    },
-    Standard {
-        name: "softball-52",
-        title: "Softball, .52 COR class (slow pitch)",
-        test: Test::Cor { speed: MPH_60 },
-        surface: "rigid wall (ASTM F1887)",
-        window: [None, Some(0.52)],
-        source: "ASA/USA Softball ball classes (COR maximum); ASTM F1887 at 60 mph",
-        unconfirmed: Some("any lower limit: the classes are published as maxima"),
-        balls: &["softball"],
-    },
+        &["softball"],
+    ),
+    softball_class(
+        "softball-52",
+        "Softball, .52 COR class (slow pitch)",
+        0.52,
+        MAXIMA_ONLY,
+        &["softball"],
+    ),
     Standard {
         name: "wsf-23",
         title: "WSF squash ball (double yellow dot), rebound resilience at 23 °C",

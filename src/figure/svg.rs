@@ -31,6 +31,11 @@ const _: () = assert!(super::reduce::COLUMNS == WIDTH as usize);
 pub const HEIGHT: u32 = 560;
 /// Drawing units per CSS pixel.
 pub(super) const SCALE: i32 = 4;
+/// The page in drawing units: `WIDTH` × `HEIGHT` CSS pixels at `SCALE`.
+pub(super) const PAGE: (u32, u32) = (
+    (WIDTH as i32 * SCALE) as u32,
+    (HEIGHT as i32 * SCALE) as u32,
+);
 
 const FONT: &str = "sans-serif";
 /// Sizes in CSS pixels (multiplied by `SCALE` when drawn).
@@ -336,11 +341,7 @@ pub fn render_aligned(fig: &Figure, left: i32) -> Result<String, RenderError> {
     let fig = reduced.as_ref().unwrap_or(fig);
     let mut buf = String::new();
     {
-        let size = (
-            (WIDTH as i32 * SCALE) as u32,
-            (HEIGHT as i32 * SCALE) as u32,
-        );
-        let root = SVGBackend::with_string(&mut buf, size).into_drawing_area();
+        let root = SVGBackend::with_string(&mut buf, PAGE).into_drawing_area();
         root.fill(&WHITE).map_err(err)?;
         let head = draw_titles(&root, fig)?;
         let legend_h = legend_layout(fig).1.len() as i32 * LEGEND_ROW_PX + LEGEND_TOP_PX + 6;

@@ -289,6 +289,18 @@ pub fn simulate(
         Method::Exact => exact::solve(&n, &contact, opts),
         Method::Numeric => numeric::solve(&n, &contact, opts),
     };
+    answer(params, n, law, method, out)
+}
+
+/// The outcome as the answer in SI units, or [`SolveError::Unresolved`] where the run could
+/// not be brought to an end: never a truncated run passed off as an answer.
+fn answer(
+    params: &ImpactParams,
+    n: Normalized,
+    law: ContactLaw,
+    method: Method,
+    out: Outcome,
+) -> Result<ImpactResponse, SolveError> {
     if let Some(reason) = out.unresolved {
         return Err(SolveError::Unresolved {
             reason,
@@ -314,15 +326,7 @@ pub fn simulate_path(
         kappa: n.kappa,
     };
     let (out, path) = exact::solve_path(&n, &contact, opts);
-    if let Some(reason) = out.unresolved {
-        return Err(SolveError::Unresolved {
-            reason,
-            steps: out.steps,
-            lambda: n.lambda,
-            zeta: n.zeta,
-        });
-    }
-    let response = to_si(params, n, ContactLaw::Linear, Method::Exact, out);
+    let response = answer(params, n, ContactLaw::Linear, Method::Exact, out)?;
     Ok((response, path))
 }
 
@@ -397,15 +401,7 @@ pub fn simulate_flow(
             ..*opts
         },
     );
-    if let Some(reason) = out.unresolved {
-        return Err(SolveError::Unresolved {
-            reason,
-            steps: out.steps,
-            lambda: n.lambda,
-            zeta: n.zeta,
-        });
-    }
-    let response = to_si(params, n, law, Method::Numeric, out);
+    let response = answer(params, n, law, Method::Numeric, out)?;
     Ok((response, path.map(Flow::Numeric)))
 }
 

@@ -242,17 +242,9 @@ fn an_exact_fit_that_misses_is_out_of_reach() {
         &["out of reach"],
     );
     // a reachable one drop is still exact, and verified
-    let v = json(&[
-        "fit",
-        "--preset",
-        "golf",
-        "--drop-height",
-        "1",
-        "--rebound-height",
-        "0.7",
-        "--format",
-        "json",
-    ]);
+    let v = json(&argv(
+        "fit --preset golf --drop-height 1 --rebound-height 0.7 --format json",
+    ));
     assert_eq!(v["exact"], true);
     assert_eq!(v["identified"], true);
     let miss = (f(&v, "cor") - f(&v, "target_cor")).abs();
@@ -276,17 +268,7 @@ fn peers_exact_rows_that_miss_are_out_of_reach() {
 #[test]
 fn a_drag_correction_implying_cor_above_one_is_refused_by_row() {
     bad(
-        &[
-            "fit",
-            "--preset",
-            "golf",
-            "--drop-height",
-            "100",
-            "--rebound-height",
-            "99",
-            "--drag-coefficient",
-            "0.47",
-        ],
+        &argv("fit --preset golf --drop-height 100 --rebound-height 99 --drag-coefficient 0.47"),
         &["rebound_height", "COR 2.291 > 1", "100 m to 99 m"],
     );
     let (_dir, path) = file_with(b"drop_height_m,rebound_height_m\n1,0.5\n100,99\n");
@@ -304,23 +286,10 @@ fn a_drag_correction_implying_cor_above_one_is_refused_by_row() {
     );
     // issue 28's crash (an SVD of NaN): heights of tens of kilometres, refused, no panic
     bad(
-        &[
-            "fit",
-            "--drop-height",
-            "3e4",
-            "--rebound-height",
-            "1.5e4",
-            "--drop-height",
-            "6e4",
-            "--rebound-height",
-            "3e4",
-            "--drop-height",
-            "9e4",
-            "--rebound-height",
-            "4.5e4",
-            "--drag-coefficient",
-            "0.47",
-        ],
+        &argv(
+            "fit --drop-height 3e4 --rebound-height 1.5e4 --drop-height 6e4 --rebound-height 3e4 \
+            --drop-height 9e4 --rebound-height 4.5e4 --drag-coefficient 0.47",
+        ),
         &["rebound_height"],
     );
 }

@@ -5,18 +5,13 @@
 use crate::fit_common;
 
 use bouncelab::Ball;
-use bouncelab::analysis::fit::Estimate;
 use bouncelab::analysis::fit::oblique::fit_oblique;
 use bouncelab::analysis::work::Unwatched;
 use bouncelab::measured::ObliqueRow;
 use bouncelab::model::contact::ContactLaw;
 use bouncelab::oblique::{self, Oblique, mindlin_ratio};
-use fit_common::Rng;
 use fit_common::oblique::{R, mixed, start};
-
-fn covers(e: &Estimate, truth: f64) -> bool {
-    e.ci95[0] <= truth && truth <= e.ci95[1]
-}
+use fit_common::{Rng, covers};
 
 /// Bounces of the tennis ball under μ, K_t, κ, with Gaussian noise of `sd` on v_x,out (m/s)
 /// and `sd_spin` on ω_out (rad/s, `None`: not measured).

@@ -5,20 +5,15 @@
 use crate::fit_common;
 
 use bouncelab::Ball;
-use bouncelab::analysis::fit::Estimate;
 use bouncelab::analysis::fit::oblique::{ObliqueStart, fit_oblique};
 use bouncelab::analysis::work::Unwatched;
 use bouncelab::measured::ObliqueRow;
 use bouncelab::model::contact::ContactLaw;
 use bouncelab::oblique::{self, Oblique, mindlin_ratio};
-use fit_common::Rng;
 use fit_common::oblique::{R, mixed, start};
+use fit_common::{Rng, covers};
 
 const KAPPA: f64 = 0.6105;
-
-fn covers(e: &Estimate, truth: f64) -> bool {
-    e.ci95[0] <= truth && truth <= e.ci95[1]
-}
 
 /// Bounces of the tennis ball under μ, K_t, c_t, with Gaussian noise of `sd` on v_x,out.
 fn bounces(

@@ -5,7 +5,7 @@
 
 use crate::common;
 
-use common::ok_at;
+use common::{argv, ok_at};
 
 /// The plot frames (`fill="none"`, black stroke) of each stacked figure: (x, width).
 fn frames(svg: &str) -> Vec<(u32, u32)> {
@@ -28,26 +28,11 @@ fn the_two_plots_of_fit_plot_line_up() {
     // of drops), each fitted and plotted
     std::fs::write(d.join("c.csv"), "v0,cor\n40,0.62\n45,0.6\n").unwrap();
     let cases: [&[&str]; 2] = [
-        &[
-            "--preset",
-            "superball",
-            "--cor-table",
-            "c.csv",
-            "--free",
-            "k_r",
-        ],
-        &[
-            "--preset",
-            "tennis",
-            "--drop-height",
-            "2.54",
-            "--rebound-height",
-            "1.41",
-            "--drop-height",
-            "2.54",
-            "--rebound-height",
-            "1.43",
-        ],
+        &argv("--preset superball --cor-table c.csv --free k_r"),
+        &argv(
+            "--preset tennis --drop-height 2.54 --rebound-height 1.41 --drop-height 2.54 \
+            --rebound-height 1.43",
+        ),
     ];
     for args in cases {
         let all = [&["fit"][..], args, &["--plot", "p.svg", "--force"]].concat();

@@ -3,12 +3,27 @@
 
 use crate::fit_common;
 
-use bouncelab::ContactLaw;
-use bouncelab::analysis::fit::{Estimate, FitData, Param, fit};
+use bouncelab::analysis::fit::{FitData, MultiFit, Param, fit};
+use bouncelab::measured::CorPoint;
+use bouncelab::{ContactLaw, ImpactParams};
 use fit_common::*;
 
-fn covers(e: &Estimate, truth: f64) -> bool {
-    e.ci95[0] <= truth && truth <= e.ci95[1]
+/// The fit of K_r and z_p (the linear law) to `pts`, started from the truth's with each off by
+/// the factor `off` gives it.
+fn fit_k_r_z_p(t: &ImpactParams, off: (f64, f64), pts: &[CorPoint]) -> MultiFit {
+    let start = ImpactParams {
+        k_r: t.k_r * off.0,
+        z_p: t.z_p * off.1,
+        ..*t
+    };
+    let free = [Param::KR, Param::ZP];
+    fit(&start, ContactLaw::Linear, FitData::Cor(pts), &free).unwrap()
+}
+
+/// Both intervals of a K_r, z_p fit hold the truth's values.
+fn assert_covers_k_r_z_p(f: &MultiFit, t: &ImpactParams) {
+    assert!(covers(&f.fitted[0], t.k_r), "{:?}", f.fitted[0]);
+    assert!(covers(&f.fitted[1], t.z_p), "{:?}", f.fitted[1]);
 }
 
 #[test]
@@ -56,22 +71,10 @@ fn cor_table_with_flattening() {
     let t = truth();
     let mut rng = Rng::new(7);
     let pts = cor_table(&t, ContactLaw::Linear, &SPEEDS, 0.005, &mut rng);
-    let base = bouncelab::ImpactParams {
-        k_r: t.k_r * 0.2,
-        z_p: t.z_p * 4.0,
-        ..t
-    };
-    let f = fit(
-        &base,
-        ContactLaw::Linear,
-        FitData::Cor(&pts),
-        &[Param::KR, Param::ZP],
-    )
-    .unwrap();
+    let f = fit_k_r_z_p(&t, (0.2, 4.0), &pts);
     eprintln!("{:#?} {} {}", f.fitted, f.rms_residual, f.iterations);
     assert!(f.converged);
-    assert!(covers(&f.fitted[0], t.k_r), "{:?}", f.fitted[0]);
-    assert!(covers(&f.fitted[1], t.z_p), "{:?}", f.fitted[1]);
+    assert_covers_k_r_z_p(&f, &t);
     assert!(f.rms_residual < 0.01, "{}", f.rms_residual);
     assert_eq!(f.model.len(), SPEEDS.len());
 }
@@ -83,7 +86,7 @@ fn cor_table_with_flattening() {
 /// counts its coverage).
 #[test]
 fn drop_test() {
-    use bouncelab::measured::{CorPoint, drop_to_cor};
+    use bouncelab::measured::drop_to_cor;
     let t = truth();
     let mut rng = Rng::new(11);
     let pts: Vec<CorPoint> = [0.2, 0.5, 0.8, 1.2, 1.8]
@@ -110,21 +113,9 @@ fn drop_test() {
             }
         })
         .collect();
-    let base = bouncelab::ImpactParams {
-        k_r: t.k_r * 3.0,
-        z_p: t.z_p * 0.5,
-        ..t
-    };
-    let f = fit(
-        &base,
-        ContactLaw::Linear,
-        FitData::Cor(&pts),
-        &[Param::KR, Param::ZP],
-    )
-    .unwrap();
+    let f = fit_k_r_z_p(&t, (3.0, 0.5), &pts);
     eprintln!("{:#?}", f.fitted);
-    assert!(covers(&f.fitted[0], t.k_r), "{:?}", f.fitted[0]);
-    assert!(covers(&f.fitted[1], t.z_p), "{:?}", f.fitted[1]);
+    assert_covers_k_r_z_p(&f, &t);
 }
 
 /// A trace made with the elastic–plastic law (Hertz up to z_p, then linear) fitted with the

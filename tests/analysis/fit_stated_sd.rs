@@ -156,23 +156,10 @@ fn the_report_says_the_sds_were_taken_as_known() {
     // drop tests name the option the user gave, not a column they never wrote
     let drops = common::ok_at(
         dir.path(),
-        &[
-            "fit",
-            "--preset",
-            "superball",
-            "--drop-height",
-            "0.5",
-            "--rebound-height",
-            "0.4",
-            "--drop-height",
-            "1",
-            "--rebound-height",
-            "0.78",
-            "--rebound-height-sd",
-            "0.003",
-            "--free",
-            "k_r",
-        ],
+        &common::argv(
+            "fit --preset superball --drop-height 0.5 --rebound-height 0.4 \
+            --drop-height 1 --rebound-height 0.78 --rebound-height-sd 0.003 --free k_r",
+        ),
     );
     let from = "uncertainty              from the stated reading σ_R (--rebound-height-sd)";
     assert!(drops.contains(from), "{drops}");

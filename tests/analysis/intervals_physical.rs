@@ -5,29 +5,17 @@
 //! not negative, a rebound is no higher than the drop, the nominal value inside each.
 
 use crate::common;
-use common::bl_at;
+use common::{argv, bl_at};
 use serde_json::Value;
 
 /// A folder holding `wide.toml`: the baseball with a `[fit]` table of a huge, valid
 /// covariance (symmetric, non-negative variances).
 fn wide_preset() -> tempfile::TempDir {
-    let base = bouncelab::preset::Preset::embedded_all()
-        .into_iter()
-        .find(|p| p.name == "baseball")
-        .unwrap();
-    let text = base
-        .to_toml(&[])
-        .replace("name = \"baseball\"", "name = \"wide\"");
-    let (k_r, z_p) = (base.adopted.k_r, base.adopted.z_p.unwrap());
-    let var_k = (10.0 * k_r).powi(2);
-    let var_z = (10.0 * z_p).powi(2);
-    let fit = format!(
-        "\n[fit]\nfree = [\"k_r\", \"z_p\"]\nvalues = [{k_r:?}, {z_p:?}]\n\
-         covariance = [[{var_k:?}, 0.0], [0.0, {var_z:?}]]\ndof = 2\nresidual_sd = 0.01\n"
-    );
-    let d = tempfile::tempdir().unwrap();
-    std::fs::write(d.path().join("wide.toml"), format!("{text}{fit}")).unwrap();
-    d
+    let variances = |k_r: f64, z_p: f64| {
+        let (var_k, var_z) = ((10.0 * k_r).powi(2), (10.0 * z_p).powi(2));
+        format!("[[{var_k:?}, 0.0], [0.0, {var_z:?}]]")
+    };
+    common::baseball_with_fit("wide", variances, 2)
 }
 
 fn json_of(dir: &std::path::Path, args: &[&str]) -> Value {
@@ -74,15 +62,7 @@ fn a_drops_intervals_stay_physical() {
     let d = wide_preset();
     let v = json_of(
         d.path(),
-        &[
-            "drop",
-            "--config",
-            "wide.toml",
-            "--height",
-            "1.5",
-            "--format",
-            "json",
-        ],
+        &argv("drop --config wide.toml --height 1.5 --format json"),
     );
     let bounces = v["bounces"].as_array().unwrap();
     assert!(!bounces.is_empty());

@@ -209,26 +209,12 @@ fn figure_measured_files_are_checked_before_anything_is_written() {
     std::fs::write(dir.path().join("cor.csv"), "v0,cor\n1,0.7\n").unwrap();
     let o = bl_at(
         dir.path(),
-        &[
-            "figure",
-            "force-time",
-            "--out",
-            "f.svg",
-            "--measured",
-            "bad.csv",
-        ],
+        &argv("figure force-time --out f.svg --measured bad.csv"),
     );
     assert_bad(&o, &["bad.csv:2:3: force 'x' is not a number"]);
     let o = bl_at(
         dir.path(),
-        &[
-            "figure",
-            "force-time",
-            "--out",
-            "f.svg",
-            "--measured",
-            "cor.csv",
-        ],
+        &argv("figure force-time --out f.svg --measured cor.csv"),
     );
     assert_bad(
         &o,
@@ -236,14 +222,7 @@ fn figure_measured_files_are_checked_before_anything_is_written() {
     );
     let o = bl_at(
         dir.path(),
-        &[
-            "figure",
-            "cor-zeta",
-            "--out",
-            "f.svg",
-            "--measured",
-            "cor.csv",
-        ],
+        &argv("figure cor-zeta --out f.svg --measured cor.csv"),
     );
     assert_bad(&o, &["--measured does not apply to cor-zeta"]);
     assert!(!dir.path().join("f.svg").exists());

@@ -102,14 +102,7 @@ fn the_misspelt_column_is_blamed() {
     bad(
         "m.csv",
         b"time_ms,forse_N\n0,1\n",
-        &[
-            "figure",
-            "force-time",
-            "--out",
-            "f.svg",
-            "--measured",
-            "m.csv",
-        ],
+        &argv("figure force-time --out f.svg --measured m.csv"),
         &["m.csv:1:9: unknown column 'forse_N'"],
     );
 }

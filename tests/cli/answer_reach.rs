@@ -189,38 +189,54 @@ fn soft_ball() -> Ball {
     b
 }
 
+/// The superball's map over λ 1e-4 … 10 and ζ 0.01 … 100, 9 × 9 cells, under `law`.
+fn superball_map(law: ContactLaw) -> bouncelab::map::MapSpec {
+    use bouncelab::map::{Axis, MapSpec, Param, Scale};
+    let base = Ball::from_preset("superball").unwrap().params;
+    MapSpec::dimensional(
+        base,
+        law,
+        Axis::new(Param::Lambda, 1e-4, 10.0, 9, Scale::Log).unwrap(),
+        Axis::new(Param::Zeta, 0.01, 100.0, 9, Scale::Log).unwrap(),
+    )
+    .unwrap()
+}
+
+/// Every cell of `map` solved by `run`'s solver and read exactly: (z_m, the centre's α_max
+/// by `method`), λ-major as the map's cells.
+fn solved_cells(
+    spec: &bouncelab::map::MapSpec,
+    map: &bouncelab::map::Map,
+    method: Method,
+) -> Vec<(f64, f64)> {
+    let law = spec.law;
+    map.lambdas
+        .iter()
+        .flat_map(|&l| map.zetas.iter().map(move |&z| (l, z)))
+        .map(|(l, z)| {
+            let p = spec.params_at(l, z);
+            let r = simulate(&p, law, &SolveOptions::default()).unwrap();
+            let alpha = api::peak_displacement(&p, law, method).unwrap();
+            (r.max_indentation, alpha)
+        })
+        .collect()
+}
+
 /// `map` warned of cells whose indentation passes the radius only. Its count of cells whose
 /// centre passes it, decided by exact bounds where they decide and by the cell's flow where
 /// they do not, against every cell solved and read exactly, at radii that leave both kinds.
 #[test]
 fn the_map_counts_the_cells_whose_centre_passes_the_radius() {
-    use bouncelab::map::{Axis, MapSpec, Param, Scale, compute};
+    use bouncelab::map::compute;
     for law in [ContactLaw::Linear, ContactLaw::Hertz] {
-        let base = Ball::from_preset("superball").unwrap().params;
-        let spec = MapSpec::dimensional(
-            base,
-            law,
-            Axis::new(Param::Lambda, 1e-4, 10.0, 9, Scale::Log).unwrap(),
-            Axis::new(Param::Zeta, 0.01, 100.0, 9, Scale::Log).unwrap(),
-        )
-        .unwrap();
+        let spec = superball_map(law);
         let map = compute(spec.clone());
         let method = if law == ContactLaw::Linear {
             Method::Exact
         } else {
             Method::Numeric
         };
-        let exact: Vec<(f64, f64)> = map
-            .lambdas
-            .iter()
-            .flat_map(|&l| map.zetas.iter().map(move |&z| (l, z)))
-            .map(|(l, z)| {
-                let p = spec.params_at(l, z);
-                let r = simulate(&p, law, &SolveOptions::default()).unwrap();
-                let alpha = api::peak_displacement(&p, law, method).unwrap();
-                (r.max_indentation, alpha)
-            })
-            .collect();
+        let exact = solved_cells(&spec, &map, method);
         let mut alphas: Vec<f64> = exact.iter().map(|e| e.1).collect();
         alphas.sort_by(f64::total_cmp);
         let mut mixed = false;
@@ -264,30 +280,11 @@ fn the_map_counts_the_cells_whose_centre_passes_the_radius() {
 /// while the run again refuses the parameters (`ImpactParams::validate`: invalid k_h).
 #[test]
 fn the_map_counts_cells_it_could_not_check_not_as_within() {
-    use bouncelab::map::{Axis, MapSpec, Param, Scale, compute};
+    use bouncelab::map::compute;
     let law = ContactLaw::Linear;
-    let base = Ball::from_preset("superball").unwrap().params;
-    let spec = MapSpec::dimensional(
-        base,
-        law,
-        Axis::new(Param::Lambda, 1e-4, 10.0, 9, Scale::Log).unwrap(),
-        Axis::new(Param::Zeta, 0.01, 100.0, 9, Scale::Log).unwrap(),
-    )
-    .unwrap();
+    let spec = superball_map(law);
     let mut map = compute(spec.clone());
-    let exact: Vec<(f64, f64)> = map
-        .lambdas
-        .iter()
-        .flat_map(|&l| map.zetas.iter().map(move |&z| (l, z)))
-        .map(|(l, z)| {
-            let p = spec.params_at(l, z);
-            let r = simulate(&p, law, &SolveOptions::default()).unwrap();
-            (
-                r.max_indentation,
-                api::peak_displacement(&p, law, Method::Exact).unwrap(),
-            )
-        })
-        .collect();
+    let exact = solved_cells(&spec, &map, Method::Exact);
     map.spec.base.k_h = f64::NAN;
     let mut alphas: Vec<f64> = exact.iter().map(|e| e.1).collect();
     alphas.sort_by(f64::total_cmp);

@@ -64,15 +64,7 @@ const DROP_100_M: [&str; 6] = [
 /// 21.6 mm radius without a word.
 #[test]
 fn run_says_when_the_indentation_passes_the_radius() {
-    let v = json(&[
-        "run",
-        "--preset",
-        "superball",
-        "--v0",
-        "45",
-        "--format",
-        "json",
-    ]);
+    let v = json(&argv("run --preset superball --v0 45 --format json"));
     let w = v["warnings"].as_array().expect("a warnings array");
     assert_eq!(w.len(), 1, "{w:?}");
     assert!(
@@ -93,20 +85,9 @@ fn run_says_when_the_indentation_passes_the_radius() {
 
 #[test]
 fn sweep_rows_drop_and_peers_carry_their_warnings() {
-    let v = json(&[
-        "sweep",
-        "velocity",
-        "--preset",
-        "superball",
-        "--from",
-        "5",
-        "--to",
-        "45",
-        "--points",
-        "3",
-        "--format",
-        "json",
-    ]);
+    let v = json(&argv(
+        "sweep velocity --preset superball --from 5 --to 45 --points 3 --format json",
+    ));
     let rows = v["rows"].as_array().unwrap();
     // z_m grows with v0: 3.45 mm at 5 m/s, 31 mm at 45
     assert_eq!(rows[0]["warnings"], serde_json::json!([]));
@@ -122,15 +103,7 @@ fn sweep_rows_drop_and_peers_carry_their_warnings() {
     );
     let v = json(&["drop", "--preset", "tennis", "--format", "json"]);
     assert_eq!(v["warnings"], serde_json::json!([]));
-    let v = json(&[
-        "peers",
-        "--preset",
-        "superball",
-        "--v0",
-        "45",
-        "--format",
-        "json",
-    ]);
+    let v = json(&argv("peers --preset superball --v0 45 --format json"));
     assert!(v["warnings"][0].as_str().unwrap().contains(BEYOND));
     let v = json(&["peers", "--preset", "superball", "--format", "json"]);
     assert_eq!(v["warnings"], serde_json::json!([]));
@@ -174,14 +147,7 @@ fn every_answer_and_every_format_carries_the_radius_warning() {
         (
             &["bat", "--bat-mass", "0.8"],
             &["--preset", "table-tennis", "--ball-speed", "100"],
-            &[
-                "--preset",
-                "table-tennis",
-                "--ball-speed",
-                "10",
-                "--bat-speed",
-                "5",
-            ],
+            &argv("--preset table-tennis --ball-speed 10 --bat-speed 5"),
         ),
         (
             &["oblique", "--angle", "80", "--friction", "0.5"],
@@ -219,15 +185,7 @@ fn every_answer_and_every_format_carries_the_radius_warning() {
         assert!(!ok(&args).contains("warning:"), "{cmd:?} within the radius");
     }
     // the CSV rows: a `warnings` column, last
-    let oblique = [
-        "oblique",
-        "--angle",
-        "80",
-        "--friction",
-        "0.5",
-        "--format",
-        "csv",
-    ];
+    let oblique = argv("oblique --angle 80 --friction 0.5 --format csv");
     let rows: [&[&str]; 3] = [
         &["run", "--format", "csv"],
         &[
@@ -331,17 +289,9 @@ fn map_counts_the_cells_past_the_radius_as_run_finds_them() {
             o.stderr
         );
     }
-    let calm = json(&[
-        "map",
-        "--preset",
-        "superball",
-        "--format",
-        "json",
-        "--lambda",
-        "0.1:10:3",
-        "--zeta",
-        "0.01:1:3",
-    ]);
+    let calm = json(&argv(
+        "map --preset superball --format json --lambda 0.1:10:3 --zeta 0.01:1:3",
+    ));
     assert_eq!(calm["warnings"], serde_json::json!([]));
 }
 
@@ -350,19 +300,7 @@ fn map_counts_the_cells_past_the_radius_as_run_finds_them() {
 /// kept), in JSON and text, first.
 #[test]
 fn mc_says_when_its_nominal_ball_passes_the_radius() {
-    let args = [
-        "mc",
-        "--preset",
-        "table-tennis",
-        "--v0",
-        "100",
-        "--vary",
-        "k_p=5%",
-        "--samples",
-        "400",
-        "--seed",
-        "1",
-    ];
+    let args = argv("mc --preset table-tennis --v0 100 --vary k_p=5% --samples 400 --seed 1");
     let v = json(&[&args[..], &["--format", "json"]].concat());
     let w = v["warnings"].as_array().unwrap();
     assert_eq!(w.len(), 1, "{w:?}");
@@ -372,18 +310,8 @@ fn mc_says_when_its_nominal_ball_passes_the_radius() {
         "{said}"
     );
     assert!(ok(&args).contains(&format!("warning: {said}")));
-    let calm = json(&[
-        "mc",
-        "--preset",
-        "table-tennis",
-        "--vary",
-        "k_p=5%",
-        "--samples",
-        "400",
-        "--seed",
-        "1",
-        "--format",
-        "json",
-    ]);
+    let calm = json(&argv(
+        "mc --preset table-tennis --vary k_p=5% --samples 400 --seed 1 --format json",
+    ));
     assert_eq!(calm["warnings"], serde_json::json!([]));
 }

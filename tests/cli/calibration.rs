@@ -145,37 +145,9 @@ fn an_override_is_listed_what_was_kept_too_and_the_comparison_is_withheld() {
 fn every_answer_outside_the_record_says_so() {
     let golf_40: &[&[&str]] = &[
         &["run", "--preset", "golf", "--v0", "40"],
-        &[
-            "oblique",
-            "--preset",
-            "golf",
-            "--v0",
-            "40",
-            "--angle",
-            "90",
-            "--friction",
-            "0.5",
-        ],
-        &[
-            "collide",
-            "--preset",
-            "golf",
-            "--v0",
-            "40",
-            "--target-mass",
-            "inf",
-        ],
-        &[
-            "mc",
-            "--preset",
-            "golf",
-            "--v0",
-            "40",
-            "--vary",
-            "k_p=5%",
-            "--samples",
-            "1000",
-        ],
+        &argv("oblique --preset golf --v0 40 --angle 90 --friction 0.5"),
+        &argv("collide --preset golf --v0 40 --target-mass inf"),
+        &argv("mc --preset golf --v0 40 --vary k_p=5% --samples 1000"),
     ];
     for args in golf_40 {
         let v = json(&[args, &["--format", "json"][..]].concat());
@@ -219,31 +191,13 @@ fn every_answer_outside_the_record_says_so() {
     assert!(outside(&rows[0]).is_empty(), "{}", rows[0]);
     assert_eq!(outside(&rows[1]).len(), 1, "{}", rows[1]);
     // the map: once for the grid
-    let v = json(&[
-        "map",
-        "--preset",
-        "golf",
-        "--v0",
-        "40",
-        "--lambda",
-        "0.5:1:2",
-        "--zeta",
-        "0.05:0.1:2",
-        "--format",
-        "json",
-    ]);
+    let v = json(&argv(
+        "map --preset golf --v0 40 --lambda 0.5:1:2 --zeta 0.05:0.1:2 --format json",
+    ));
     assert_eq!(outside(&v).len(), 1, "{v}");
     assert_eq!(v["ball"]["name"], "golf");
     // a bat: the game's and the BBCOR test's closing speeds, one warning
-    let v = json(&[
-        "bat",
-        "--preset",
-        "baseball",
-        "--bat-mass",
-        "0.9",
-        "--format",
-        "json",
-    ]);
+    let v = json(&argv("bat --preset baseball --bat-mass 0.9 --format json"));
     let w = outside(&v);
     assert_eq!(w.len(), 1, "{v}");
     assert!(
@@ -253,17 +207,9 @@ fn every_answer_outside_the_record_says_so() {
     );
     assert!(w[0].contains("fitted at 1.25 m/s only"), "{}", w[0]);
     // a drop is judged by its first impact: the ITF drop is the tennis ball's record
-    let v = json(&[
-        "drop",
-        "--preset",
-        "tennis",
-        "--height",
-        "2.54",
-        "--standard",
-        "itf",
-        "--format",
-        "json",
-    ]);
+    let v = json(&argv(
+        "drop --preset tennis --height 2.54 --standard itf --format json",
+    ));
     assert!(outside(&v).is_empty(), "{v}");
     let o = bl(&[
         "drop", "--preset", "golf", "--height", "20", "--format", "json",
@@ -271,15 +217,7 @@ fn every_answer_outside_the_record_says_so() {
     let v: Value = serde_json::from_str(&o.stdout).unwrap();
     assert_eq!(outside(&v).len(), 1, "{v}");
     // court: the normal speed of the ITF's 30 m/s at 16°
-    let v = json(&[
-        "court",
-        "--preset",
-        "tennis",
-        "--friction",
-        "0.6",
-        "--format",
-        "json",
-    ]);
+    let v = json(&argv("court --preset tennis --friction 0.6 --format json"));
     let w = outside(&v);
     assert!(
         w[0].starts_with("outside calibration: impact speed 8.269 m/s"),
@@ -291,15 +229,7 @@ fn every_answer_outside_the_record_says_so() {
 /// 20 times the speed the ball was fitted at, and says so; the JSON names the ball dropped.
 #[test]
 fn the_mlb_verdict_on_the_papers_baseball_warns_and_the_drop_names_its_ball() {
-    let o = bl(&[
-        "drop",
-        "--preset",
-        "baseball",
-        "--standard",
-        "mlb",
-        "--format",
-        "json",
-    ]);
+    let o = bl(&argv("drop --preset baseball --standard mlb --format json"));
     let v: Value = serde_json::from_str(&o.stdout).expect(&o.stderr);
     assert_eq!(v["standard"]["verdict"], "fail");
     let w = outside(&v);
@@ -417,17 +347,7 @@ fn json_answers_name_their_ball() {
         &[
             "sweep", "velocity", "--preset", "golf", "--k-r", "5e5", "--points", "2",
         ],
-        &[
-            "oblique",
-            "--preset",
-            "golf",
-            "--k-r",
-            "5e5",
-            "--angle",
-            "40",
-            "--friction",
-            "0.3",
-        ],
+        &argv("oblique --preset golf --k-r 5e5 --angle 40 --friction 0.3"),
         &["peers", "--preset", "golf", "--k-r", "5e5"],
     ];
     for args in cases {
@@ -449,17 +369,7 @@ fn fit_save_writes_the_record_of_its_data() {
     let home = tempfile::tempdir().unwrap();
     let o = bl_in(
         home.path(),
-        &[
-            "fit",
-            "--preset",
-            "tennis",
-            "--drop-height",
-            "2.54",
-            "--rebound-height",
-            "1.41",
-            "--save",
-            "mine",
-        ],
+        &argv("fit --preset tennis --drop-height 2.54 --rebound-height 1.41 --save mine"),
     );
     assert_eq!(o.code, 0, "{}", o.stderr);
     let path = home.path().join("bouncelab/presets/mine.toml");

@@ -124,17 +124,9 @@ fn run_text_compares_with_the_measurement() {
 
 #[test]
 fn lambda_zeta_move_k_r_and_c_only() {
-    let v = json(&[
-        "run",
-        "--preset",
-        "superball",
-        "--lambda",
-        "0.5",
-        "--zeta",
-        "0.3",
-        "--format",
-        "json",
-    ]);
+    let v = json(&argv(
+        "run --preset superball --lambda 0.5 --zeta 0.3 --format json",
+    ));
     assert!((f(&v, "lambda") - 0.5).abs() < 1e-12);
     assert!((f(&v, "zeta") - 0.3).abs() < 1e-12);
     assert_eq!((f(&v, "mass"), f(&v, "k_p")), (0.0374, 5.45e4));
@@ -148,16 +140,9 @@ fn lambda_zeta_move_k_r_and_c_only() {
 #[test]
 fn normalized_runs_match_the_closed_forms() {
     // Maxwell (λ = 0, Eq. 28): e = exp(−πζ/√(1−ζ²)), τ_f = π/√(1−ζ²)
-    let v = json(&[
-        "run",
-        "--normalized",
-        "--lambda",
-        "0",
-        "--zeta",
-        "0.5",
-        "--format",
-        "json",
-    ]);
+    let v = json(&argv(
+        "run --normalized --lambda 0 --zeta 0.5 --format json",
+    ));
     let s = (1.0f64 - 0.25).sqrt();
     assert!((f(&v, "cor") - (-PI * 0.5 / s).exp()).abs() < 1e-9);
     assert!((f(&v, "contact_time") - PI / s).abs() < 1e-9);
@@ -168,31 +153,15 @@ fn normalized_runs_match_the_closed_forms() {
     assert_eq!((f(&v, "lambda"), f(&v, "zeta")), (1.0, 0.1));
     assert_eq!((f(&v, "mass"), f(&v, "k_p"), f(&v, "v0")), (1.0, 1.0, 1.0));
     // ζ ≥ 1 at λ = 0: no rebound, contact time null / empty
-    let v = json(&[
-        "run",
-        "--normalized",
-        "--lambda",
-        "0",
-        "--zeta",
-        "1.5",
-        "--format",
-        "json",
-    ]);
+    let v = json(&argv(
+        "run --normalized --lambda 0 --zeta 1.5 --format json",
+    ));
     assert_eq!(
         (v["rebound"].clone(), f(&v, "cor")),
         (Value::Bool(false), 0.0)
     );
     assert_eq!(v["contact_time"], Value::Null);
-    let csv = ok(&[
-        "run",
-        "--normalized",
-        "--lambda",
-        "0",
-        "--zeta",
-        "1.5",
-        "--format",
-        "csv",
-    ]);
+    let csv = ok(&argv("run --normalized --lambda 0 --zeta 1.5 --format csv"));
     let lines: Vec<&str> = csv.lines().collect();
     let i = lines[0]
         .split(',')

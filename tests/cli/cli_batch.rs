@@ -4,7 +4,7 @@
 
 use crate::common;
 
-use common::{assert_bad, bl_at, f, json, ok_at, parse_svg};
+use common::{argv, assert_bad, bl_at, f, json, ok_at, parse_svg};
 use serde_json::Value;
 use std::path::Path;
 
@@ -95,15 +95,7 @@ fn a_ball_is_fit_and_drop_run_on_their_own() {
         text.push('\n');
     }
     write(dir.path(), "a7.csv", &text);
-    let args = [
-        "fit",
-        "--preset",
-        "tennis",
-        "--drop-test",
-        "a7.csv",
-        "--format",
-        "json",
-    ];
+    let args = argv("fit --preset tennis --drop-test a7.csv --format json");
     let fit: Value = serde_json::from_str(&ok_at(dir.path(), &args)).unwrap();
     assert_eq!(f(b, "k_r"), f(&fit, "k_r"), "the same fit");
     let k_r = format!("{}", f(&fit, "k_r"));
@@ -182,16 +174,7 @@ fn the_files_hold_the_report() {
     std::fs::remove_file(dir.path().join("h.svg")).unwrap();
     let o = bl_at(
         dir.path(),
-        &[
-            "batch",
-            "lot.csv",
-            "--preset",
-            "tennis",
-            "--csv-out",
-            "balls.csv",
-            "--svg-out",
-            "h.svg",
-        ],
+        &argv("batch lot.csv --preset tennis --csv-out balls.csv --svg-out h.svg"),
     );
     assert_bad(&o, &["balls.csv", "--force"]);
     assert!(!dir.path().join("h.svg").exists());
@@ -239,16 +222,9 @@ fn a_ball_without_a_fit_says_why_and_the_batch_goes_on() {
 fn traces_by_file_path() {
     let dir = tempfile::tempdir().unwrap();
     std::fs::create_dir(dir.path().join("traces")).unwrap();
-    let pulse = common::ok(&[
-        "run",
-        "--preset",
-        "baseball",
-        "--history",
-        "--samples",
-        "300",
-        "--format",
-        "csv",
-    ]);
+    let pulse = common::ok(&argv(
+        "run --preset baseball --history --samples 300 --format csv",
+    ));
     let trace: String = pulse
         .lines()
         .map(|l| l.split(',').take(2).collect::<Vec<_>>().join(",") + "\n")
@@ -257,27 +233,11 @@ fn traces_by_file_path() {
     write(dir.path(), "lot.csv", "id,trace\nb1,b1.csv\n");
     let o = bl_at(
         dir.path().join("traces").parent().unwrap(),
-        &[
-            "batch",
-            "lot.csv",
-            "--preset",
-            "baseball",
-            "--standard",
-            "mlb",
-        ],
+        &argv("batch lot.csv --preset baseball --standard mlb"),
     );
     assert_bad(&o, &["lot.csv:2:4: trace of 'b1'", "no such file"]);
     write(dir.path(), "lot.csv", "id,trace\nb1,traces/b1.csv\n");
-    let args = [
-        "batch",
-        "lot.csv",
-        "--preset",
-        "baseball",
-        "--standard",
-        "mlb",
-        "--format",
-        "json",
-    ];
+    let args = argv("batch lot.csv --preset baseball --standard mlb --format json");
     let r: Value = serde_json::from_str(&ok_at(dir.path(), &args)).unwrap();
     let b = &r["balls"][0];
     assert_eq!(b["data"], "force-time trace");
@@ -387,14 +347,7 @@ fn a_ball_s_warnings_hold_its_fitted_ball_past_the_radius() {
         "id,v0,cor\nS1,45,0.6\nS2,3,0.73\nS2,3.12,0.7302\n",
     );
     write(dir.path(), "s1.csv", "v0,cor\n45,0.6\n");
-    let batch = [
-        "batch",
-        "lot.csv",
-        "--preset",
-        "superball",
-        "--standard",
-        "mlb",
-    ];
+    let batch = argv("batch lot.csv --preset superball --standard mlb");
     let free = ["--free", "k_r"];
     let args = |tail: &[&'static str]| -> Vec<&'static str> {
         batch.iter().chain(&free).chain(tail).copied().collect()
@@ -402,15 +355,7 @@ fn a_ball_s_warnings_hold_its_fitted_ball_past_the_radius() {
     let r: Value = serde_json::from_str(&ok_at(dir.path(), &args(&["--format", "json"]))).unwrap();
     let fit: Value = serde_json::from_str(&ok_at(
         dir.path(),
-        &[
-            "fit",
-            "--preset",
-            "superball",
-            "--cor-table",
-            "s1.csv",
-            "--format",
-            "json",
-        ],
+        &argv("fit --preset superball --cor-table s1.csv --format json"),
     ))
     .unwrap();
     let past = fit["warnings"]

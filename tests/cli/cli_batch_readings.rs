@@ -7,7 +7,7 @@
 
 use crate::common;
 
-use common::{bl_at, f, ok_at};
+use common::{argv, bl_at, f, ok_at};
 use serde_json::Value;
 use std::path::Path;
 
@@ -162,14 +162,7 @@ fn the_reading_carries_its_uncertainty() {
     // a reading is a rebound height: S must be a positive number
     let o = bl_at(
         dir.path(),
-        &[
-            "batch",
-            "two.csv",
-            "--preset",
-            "tennis",
-            "--rebound-height-sd",
-            "-1",
-        ],
+        &argv("batch two.csv --preset tennis --rebound-height-sd -1"),
     );
     assert_eq!(o.code, 2, "{}", o.stderr);
     assert!(o.stderr.contains("rebound_height_sd"), "{}", o.stderr);

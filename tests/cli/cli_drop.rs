@@ -8,15 +8,7 @@ use common::*;
 
 #[test]
 fn json_holds_the_issues_keys_and_the_verdict() {
-    let v = json(&[
-        "drop",
-        "--preset",
-        "tennis",
-        "--standard",
-        "itf",
-        "--format",
-        "json",
-    ]);
+    let v = json(&argv("drop --preset tennis --standard itf --format json"));
     // serde_json's map sorts its keys
     let keys: Vec<&String> = v.as_object().unwrap().keys().collect();
     // (issue 27 added `warnings`, the first impact's; issue 52 `ball`, the ball dropped;
@@ -54,15 +46,7 @@ fn json_holds_the_issues_keys_and_the_verdict() {
         ]
     );
     // and the binary writes them in the issue's order
-    let raw = ok(&[
-        "drop",
-        "--preset",
-        "tennis",
-        "--bounces",
-        "1",
-        "--format",
-        "json",
-    ]);
+    let raw = ok(&argv("drop --preset tennis --bounces 1 --format json"));
     assert!(
         raw.starts_with("{\"height\":1.0,\"drag\":true,\"bounces\":[{\"v_in\":"),
         "{raw}"
@@ -97,17 +81,9 @@ fn json_holds_the_issues_keys_and_the_verdict() {
 /// none (`null`).
 #[test]
 fn json_says_the_verdict_is_judged_at_the_standard_s_height() {
-    let v = json(&[
-        "drop",
-        "--preset",
-        "tennis",
-        "--standard",
-        "itf",
-        "--height",
-        "1",
-        "--format",
-        "json",
-    ]);
+    let v = json(&argv(
+        "drop --preset tennis --standard itf --height 1 --format json",
+    ));
     assert_eq!(f(&v, "height"), 1.0);
     let s = &v["standard"];
     assert_eq!(f(s, "judged_at_height_m"), 2.54, "{v}");
@@ -115,32 +91,17 @@ fn json_says_the_verdict_is_judged_at_the_standard_s_height() {
         f(s, "measured") > f(&v["bounces"][0], "rebound_height"),
         "{v}"
     );
-    let v = json(&[
-        "drop",
-        "--preset",
-        "softball",
-        "--standard",
-        "softball-47",
-        "--format",
-        "json",
-    ]);
+    let v = json(&argv(
+        "drop --preset softball --standard softball-47 --format json",
+    ));
     assert!(v["standard"]["judged_at_height_m"].is_null(), "{v}");
 }
 
 #[test]
 fn without_standard_there_is_no_standard_key_and_no_drag_is_vacuum() {
-    let v = json(&[
-        "drop",
-        "--preset",
-        "golf",
-        "--height",
-        "0.5",
-        "--no-drag",
-        "--bounces",
-        "2",
-        "--format",
-        "json",
-    ]);
+    let v = json(&argv(
+        "drop --preset golf --height 0.5 --no-drag --bounces 2 --format json",
+    ));
     assert!(v.get("standard").is_none());
     assert_eq!(v["drag"], false);
     let b = &v["bounces"][0];
@@ -151,46 +112,26 @@ fn without_standard_there_is_no_standard_key_and_no_drag_is_vacuum() {
 
 #[test]
 fn fiba_reads_the_top_of_the_ball_and_a_deader_ball_fails() {
-    let v = json(&[
-        "drop",
-        "--preset",
-        "basketball",
-        "--standard",
-        "fiba",
-        "--format",
-        "json",
-    ]);
+    let v = json(&argv(
+        "drop --preset basketball --standard fiba --format json",
+    ));
     let s = &v["standard"];
     let r = 0.12167;
     assert!((f(s, "measured") - (f(&v["bounces"][0], "rebound_height") + 2.0 * r)).abs() < 1e-12);
     assert_eq!(s["verdict"], "pass");
     // a heavy drag coefficient takes the rebound below the window: fail, negative margin
-    let v = json(&[
-        "drop",
-        "--preset",
-        "basketball",
-        "--standard",
-        "fiba",
-        "--drag-coefficient",
-        "20",
-        "--format",
-        "json",
-    ]);
+    let v = json(&argv(
+        "drop --preset basketball --standard fiba --drag-coefficient 20 --format json",
+    ));
     assert_eq!(v["standard"]["verdict"], "fail");
     assert!(f(&v["standard"], "margin") < 0.0);
 }
 
 #[test]
 fn cor_standards_have_a_one_sided_window() {
-    let v = json(&[
-        "drop",
-        "--preset",
-        "softball",
-        "--standard",
-        "softball-47",
-        "--format",
-        "json",
-    ]);
+    let v = json(&argv(
+        "drop --preset softball --standard softball-47 --format json",
+    ));
     assert_eq!(v["standard"]["window"], serde_json::json!([null, 0.47]));
     assert_eq!(v["standard"]["verdict"], "pass");
     // without a drop test the height defaults to 1 m
@@ -199,15 +140,7 @@ fn cor_standards_have_a_one_sided_window() {
 
 #[test]
 fn csv_is_the_trajectory() {
-    let out = ok_beside_calibration(&[
-        "drop",
-        "--preset",
-        "tennis",
-        "--bounces",
-        "2",
-        "--format",
-        "csv",
-    ]);
+    let out = ok_beside_calibration(&argv("drop --preset tennis --bounces 2 --format csv"));
     let mut lines = out.lines();
     assert_eq!(lines.next(), Some("t,height,velocity"));
     let rows: Vec<[f64; 3]> = lines
@@ -225,51 +158,23 @@ fn csv_is_the_trajectory() {
 
 #[test]
 fn text_names_the_drag_model_and_the_verdict() {
-    let out = ok(&[
-        "drop",
-        "--preset",
-        "football",
-        "--standard",
-        "fifa-quality-pro",
-    ]);
+    let out = ok(&argv("drop --preset football --standard fifa-quality-pro"));
     assert!(
         out.contains("quadratic drag ½ρC_dAv², ρ = 1.204 kg/m³, C_d = 0.47"),
         "{out}"
     );
     assert!(out.contains("window 1.2 … 1.65 m"), "{out}");
     assert!(out.contains("PASS, margin +0.225 m"), "{out}");
-    let out = ok(&[
-        "--preset",
-        "football",
-        "drop",
-        "--no-drag",
-        "--bounces",
-        "1",
-    ]);
+    let out = ok(&argv("--preset football drop --no-drag --bounces 1"));
     assert!(out.contains("no drag (vacuum)"), "{out}");
     // a height other than the standard's: the verdict says it is judged on the standard's
-    let out = ok(&[
-        "drop",
-        "--preset",
-        "tennis",
-        "--standard",
-        "itf",
-        "--height",
-        "1",
-    ]);
+    let out = ok(&argv("drop --preset tennis --standard itf --height 1"));
     assert!(
         out.contains("judged on the standard's own drop, not on the 1 m above"),
         "{out}"
     );
     assert!(out.contains("predicted 1.410 m: PASS"), "{out}");
-    let out = ok(&[
-        "--preset",
-        "football",
-        "drop",
-        "--no-drag",
-        "--bounces",
-        "1",
-    ]);
+    let out = ok(&argv("--preset football drop --no-drag --bounces 1"));
     // without --standard the ball's own is named; a ball without one gets no such line
     assert!(out.contains("add --standard fifa-quality-pro"), "{out}");
     assert!(!ok(&["drop", "--preset", "golf", "--bounces", "1"]).contains("--standard"));
@@ -409,17 +314,9 @@ fn ok_beside_calibration(args: &[&str]) -> String {
 /// with the return reading and the rules' return window beside it (docs/cli.md "standards").
 #[test]
 fn the_static_standard_is_judged_by_drop() {
-    let v = json(&[
-        "drop",
-        "--preset",
-        "tennis",
-        "--standard",
-        "itf-deformation",
-        "--bounces",
-        "1",
-        "--format",
-        "json",
-    ]);
+    let v = json(&argv(
+        "drop --preset tennis --standard itf-deformation --bounces 1 --format json",
+    ));
     let s = &v["standard"];
     assert_eq!(s["verdict"], "pass");
     assert!((f(s, "measured") - 6.48e-3).abs() < 1e-7, "{s}");
@@ -431,26 +328,12 @@ fn the_static_standard_is_judged_by_drop() {
         serde_json::json!([0.008, 0.0108])
     );
     assert!(f(&s["static"], "return_deflection_m") >= f(s, "measured"));
-    let text = ok_beside_calibration(&[
-        "drop",
-        "--preset",
-        "tennis",
-        "--standard",
-        "itf-deformation",
-        "--bounces",
-        "1",
-    ]);
+    let text = ok_beside_calibration(&argv(
+        "drop --preset tennis --standard itf-deformation --bounces 1",
+    ));
     assert!(text.contains("standard itf-deformation:"), "{text}");
     assert!(text.contains("predicted 6.480 mm: PASS"), "{text}");
     // an impact standard's JSON has no `static` object
-    let v = json(&[
-        "drop",
-        "--preset",
-        "tennis",
-        "--standard",
-        "itf",
-        "--format",
-        "json",
-    ]);
+    let v = json(&argv("drop --preset tennis --standard itf --format json"));
     assert!(v["standard"].get("static").is_none());
 }

@@ -79,18 +79,7 @@ fn a_user_preset_joins_and_its_measurements_carry_its_file_name() {
     let home = config_home(&[("mine.toml", &renamed("mine", "9e4"))]);
     let o = bl_at(
         home.path(),
-        &[
-            "figure",
-            "cor-velocity",
-            "--preset",
-            "golf",
-            "--preset",
-            "mine",
-            "--out",
-            "f.svg",
-            "--csv-out",
-            "f.csv",
-        ],
+        &argv("figure cor-velocity --preset golf --preset mine --out f.svg --csv-out f.csv"),
     );
     assert_eq!(o.code, 0, "{}", o.stderr);
     let csv = std::fs::read_to_string(home.path().join("f.csv")).unwrap();
@@ -106,20 +95,7 @@ fn a_user_preset_joins_and_its_measurements_carry_its_file_name() {
     // on the ζ figures a user's balls join the paper's three as markers
     let o = bl_at(
         home.path(),
-        &[
-            "figure",
-            "cor-zeta",
-            "--preset",
-            "mine",
-            "--preset",
-            "golf",
-            "--out",
-            "z.svg",
-            "--csv-out",
-            "z.csv",
-            "--points",
-            "5",
-        ],
+        &argv("figure cor-zeta --preset mine --preset golf --out z.svg --csv-out z.csv --points 5"),
     );
     assert_eq!(o.code, 0, "{}", o.stderr);
     let csv = std::fs::read_to_string(home.path().join("z.csv")).unwrap();
@@ -134,56 +110,28 @@ fn repeats_are_refused_where_they_mean_nothing() {
     let dir = tempfile::tempdir().unwrap();
     let out = |args: &[&str]| bl_at(dir.path(), args);
     assert_bad(
-        &out(&[
-            "figure",
-            "force-time",
-            "--preset",
-            "golf",
-            "--preset",
-            "golf",
-            "--out",
-            "f.svg",
-        ]),
+        &out(&argv(
+            "figure force-time --preset golf --preset golf --out f.svg",
+        )),
         &["--preset golf is given twice"],
     );
     assert_bad(
-        &out(&[
-            "figure",
-            "peers-force-time",
-            "--preset",
-            "golf",
-            "--preset",
-            "baseball",
-            "--out",
-            "f.svg",
-        ]),
+        &out(&argv(
+            "figure peers-force-time --preset golf --preset baseball --out f.svg",
+        )),
         &["a second --preset does not apply to peers-force-time"],
     );
     assert_bad(
-        &out(&[
-            "figure",
-            "force-time",
-            "--preset",
-            "golf",
-            "--config",
-            "x.toml",
-            "--out",
-            "f.svg",
-        ]),
+        &out(&argv(
+            "figure force-time --preset golf --config x.toml --out f.svg",
+        )),
         &["cannot be used with"],
     );
     // before the subcommand, as for one --preset
     assert_bad(
-        &out(&[
-            "--preset",
-            "golf",
-            "figure",
-            "force-time",
-            "--preset",
-            "baseball",
-            "--out",
-            "f.svg",
-        ]),
+        &out(&argv(
+            "--preset golf figure force-time --preset baseball --out f.svg",
+        )),
         &["--preset/--config given both before and after the subcommand"],
     );
     // the other subcommands keep one --preset

@@ -93,15 +93,7 @@ fn cor_velocity_shows_the_flattening_onset_and_the_measured_point() {
     );
     assert!(svg.texts.iter().any(|t| t == "impact speed v0 (m/s)"));
     figure(
-        &[
-            "cor-velocity",
-            "--preset",
-            "golf",
-            "--from",
-            "1",
-            "--to",
-            "5",
-        ],
+        &argv("cor-velocity --preset golf --from 1 --to 5"),
         &["model", "measured (Cross 1999)"],
     );
 }

@@ -59,15 +59,7 @@ fn force_time_json_recovers_the_ball() {
     // the trace's speed given: without --v0 it is fitted too (issue 52, tests/cli/calibration.rs)
     let v = json_at(
         dir.path(),
-        &[
-            "fit",
-            "--force-time",
-            "trace.csv",
-            "--v0",
-            "3.12",
-            "--format",
-            "json",
-        ],
+        &argv("fit --force-time trace.csv --v0 3.12 --format json"),
     );
     for key in [
         "k_p",
@@ -123,15 +115,7 @@ fn cor_table_and_drop_tests() {
     std::fs::write(dir.path().join("ball.toml"), preset).unwrap();
     let v = json_at(
         dir.path(),
-        &[
-            "fit",
-            "--config",
-            "ball.toml",
-            "--cor-table",
-            "cor.csv",
-            "--format",
-            "json",
-        ],
+        &argv("fit --config ball.toml --cor-table cor.csv --format json"),
     );
     assert_eq!(v["data"], "COR table");
     within(&v, "k_r", t.k_r);
@@ -139,15 +123,7 @@ fn cor_table_and_drop_tests() {
     // one drop: K_r alone, v0 and the measured e reported
     let v = json_at(
         dir.path(),
-        &[
-            "fit",
-            "--drop-height",
-            "1",
-            "--rebound-height",
-            "0.49",
-            "--format",
-            "json",
-        ],
+        &argv("fit --drop-height 1 --rebound-height 0.49 --format json"),
     );
     assert!(
         (f(&v, "v0") - (2.0 * 9.80665f64).sqrt()).abs() < 1e-12,
@@ -282,19 +258,9 @@ fn single_cor_keeps_its_output_and_free_is_checked() {
 
 #[test]
 fn overrides_on_run_sweep_and_figure() {
-    let v = json(&[
-        "run",
-        "--k-p",
-        "6e4",
-        "--damping",
-        "80",
-        "--k-r",
-        "5e4",
-        "--z-p",
-        "0.005",
-        "--format",
-        "json",
-    ]);
+    let v = json(&argv(
+        "run --k-p 6e4 --damping 80 --k-r 5e4 --z-p 0.005 --format json",
+    ));
     assert_eq!(
         (f(&v, "k_p"), f(&v, "c"), f(&v, "k_r"), f(&v, "z_p")),
         (6e4, 80.0, 5e4, 0.005)
@@ -319,16 +285,7 @@ fn overrides_on_run_sweep_and_figure() {
     let dir = tempfile::tempdir().unwrap();
     ok_at(
         dir.path(),
-        &[
-            "figure",
-            "force-time",
-            "--k-p",
-            "7e4",
-            "--zeta",
-            "0.2",
-            "--out",
-            "f.svg",
-        ],
+        &argv("figure force-time --k-p 7e4 --zeta 0.2 --out f.svg"),
     );
 }
 
@@ -358,19 +315,10 @@ fn one_drop_is_an_exact_solve_not_a_nan_error() {
     assert!(!saved.contains("NaN"), "{saved}");
     assert!(saved.contains("exact: no residual"), "{saved}");
     // K_r from two drops: a residual is left
-    let two = [
-        "fit",
-        "--drop-height",
-        "1",
-        "--rebound-height",
-        "0.5",
-        "--drop-height",
-        "2",
-        "--rebound-height",
-        "0.9",
-        "--format",
-        "json",
-    ];
+    let two = argv(
+        "fit --drop-height 1 --rebound-height 0.5 --drop-height 2 --rebound-height 0.9 \
+            --format json",
+    );
     // (its interval, 2092 … 674765 N/m at one degree of freedom, spans more than a factor
     // 100: the fit reports it and exits 1, no answer — issue 27)
     let o = bl_at(dir.path(), &two);
@@ -433,15 +381,7 @@ fn drops_weigh_by_their_reading() {
         &["--rebound-height-sd", "drop tests"],
     );
     bad(
-        &[
-            "fit",
-            "--drop-height",
-            "1",
-            "--rebound-height",
-            "0.5",
-            "--rebound-height-sd",
-            "-1",
-        ],
+        &argv("fit --drop-height 1 --rebound-height 0.5 --rebound-height-sd -1"),
         &["rebound_height_sd", "positive"],
     );
 }

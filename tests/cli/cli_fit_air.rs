@@ -5,7 +5,7 @@
 
 use crate::common;
 
-use common::{bl_in, f};
+use common::{argv, bl_in, f};
 use serde_json::Value;
 
 /// Four rebounds from the ITF's own 2.54 m (mean 1.4625 m).
@@ -160,15 +160,7 @@ fn drop_warns_when_it_falls_through_another_air_than_the_fits() {
     let line = "warning: this ball was fitted to drops taken in vacuum";
     assert!(text.contains(line), "{text}");
     // one drop: an exact solve, no [fit] table, the air kept all the same
-    let one = [
-        "fit",
-        "--preset",
-        "tennis",
-        "--drop-height",
-        "2.54",
-        "--rebound-height",
-        "1.46",
-    ];
+    let one = argv("fit --preset tennis --drop-height 2.54 --rebound-height 1.46");
     run(dir.path(), &[&one[..], &["--save", "one-drop"]].concat());
     assert!(says(&warned("one-drop", &[]), "taken in vacuum"));
     assert!(warned("one-drop", &["--no-drag"]).is_empty());

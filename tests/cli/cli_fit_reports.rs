@@ -85,16 +85,9 @@ fn the_plot_subtitle_gives_each_value_with_its_interval() {
         ["superball, linear law; fitted k_r = 70479 N/m (95 %: 70086 … 70874)"]
     );
     // a trace fitted with three parameters
-    let csv = ok(&[
-        "run",
-        "--preset",
-        "superball",
-        "--history",
-        "--samples",
-        "300",
-        "--format",
-        "csv",
-    ]);
+    let csv = ok(&argv(
+        "run --preset superball --history --samples 300 --format csv",
+    ));
     let mut trace = String::from("time_ms,force_N\n");
     for (i, row) in csv.lines().skip(1).enumerate() {
         let (t, force) = row.split_once(',').unwrap();
@@ -104,17 +97,7 @@ fn the_plot_subtitle_gives_each_value_with_its_interval() {
         trace.push_str(&format!("{},{}\n", t * 1e3, force * wobble));
     }
     std::fs::write(d.join("trace.csv"), trace).unwrap();
-    let args = [
-        "fit",
-        "--v0",
-        "3.12",
-        "--force-time",
-        "trace.csv",
-        "--free",
-        "k_p,c,k_r",
-        "--plot",
-        "t.svg",
-    ];
+    let args = argv("fit --v0 3.12 --force-time trace.csv --free k_p,c,k_r --plot t.svg");
     let text = ok_at(d, &args);
     let lines = subtitle(&std::fs::read_to_string(d.join("t.svg")).unwrap());
     assert_eq!(lines.len(), 3, "{lines:?}");
@@ -153,15 +136,7 @@ fn a_fitted_ball_past_its_radius_is_warned_of() {
         "{said}"
     );
     assert!(ok(&args).contains(&format!("warning: {said}")));
-    let calm = json(&[
-        "fit",
-        "--preset",
-        "superball",
-        "--cor",
-        "0.75",
-        "--format",
-        "json",
-    ]);
+    let calm = json(&argv("fit --preset superball --cor 0.75 --format json"));
     assert_eq!(calm["warnings"], serde_json::json!([]));
     // a table: at its fastest row, named
     let dir = tempfile::tempdir().unwrap();
@@ -172,15 +147,7 @@ fn a_fitted_ball_past_its_radius_is_warned_of() {
     .unwrap();
     let o = bl_at(
         dir.path(),
-        &[
-            "fit",
-            "--cor-table",
-            "fast.csv",
-            "--free",
-            "k_r",
-            "--format",
-            "json",
-        ],
+        &argv("fit --cor-table fast.csv --free k_r --format json"),
     );
     let v: Value = serde_json::from_str(&o.stdout).unwrap();
     let fastest = "the fitted ball at v0 = 45 m/s (the fastest of the data): peak indentation";

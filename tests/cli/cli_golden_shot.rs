@@ -4,224 +4,65 @@
 
 use crate::common;
 
-const SERVE: &[&str] = &[
-    "shot",
-    "--preset",
-    "tennis",
-    "--height",
-    "2.8",
-    "--speed",
-    "50",
-    "--elevation",
-    "-6",
-    "--spin",
-    "200",
-    "--friction",
-    "0.6",
-];
+const SERVE: &str =
+    "shot --preset tennis --height 2.8 --speed 50 --elevation -6 --spin 200 --friction 0.6";
 
-const CASES: &[(&str, &[&str])] = &[
+const CASES: &[(&str, &str)] = &[
     ("shot-text-serve", SERVE),
     // a steep landing that grips (not slid throughout): the tangential dashpot changes the
     // bounce (the flag was taken and ignored before: the answer was the undamped one,
     // end x = 7.205 m)
     (
         "shot-text-grip-damped",
-        &[
-            "shot",
-            "--preset",
-            "tennis",
-            "--height",
-            "2",
-            "--speed",
-            "15",
-            "--elevation",
-            "-40",
-            "--friction",
-            "0.9",
-            "--tangential-damping",
-            "5",
-        ],
+        "shot --preset tennis --height 2 --speed 15 --elevation -40 --friction 0.9 \
+            --tangential-damping 5",
     ),
     (
         "shot-json-serve",
-        &[
-            "shot",
-            "--preset",
-            "tennis",
-            "--height",
-            "2.8",
-            "--speed",
-            "50",
-            "--elevation",
-            "-6",
-            "--spin",
-            "200",
-            "--friction",
-            "0.6",
-            "--format",
-            "json",
-            "--samples",
-            "3",
-        ],
+        "shot --preset tennis --height 2.8 --speed 50 --elevation -6 --spin 200 --friction 0.6 \
+            --format json --samples 3",
     ),
     (
         "shot-csv-baseball-bounces",
-        &[
-            "shot",
-            "--preset",
-            "baseball",
-            "--height",
-            "1",
-            "--speed",
-            "40",
-            "--elevation",
-            "20",
-            "--spin",
-            "-200",
-            "--friction",
-            "0.5",
-            "--bounces",
-            "2",
-            "--format",
-            "csv",
-        ],
+        "shot --preset baseball --height 1 --speed 40 --elevation 20 --spin -200 --friction 0.5 \
+            --bounces 2 --format csv",
     ),
     (
         "shot-csv-trajectory",
-        &[
-            "shot",
-            "--preset",
-            "golf",
-            "--height",
-            "0.03",
-            "--speed",
-            "60",
-            "--elevation",
-            "12",
-            "--spin",
-            "-300",
-            "--friction",
-            "0.4",
-            "--format",
-            "csv",
-            "--samples",
-            "5",
-            "--distance",
-            "150",
-        ],
+        "shot --preset golf --height 0.03 --speed 60 --elevation 12 --spin -300 --friction 0.4 \
+            --format csv --samples 5 --distance 150",
     ),
     (
         "bad-shot-height",
-        &[
-            "shot",
-            "--preset",
-            "tennis",
-            "--height",
-            "0.01",
-            "--speed",
-            "50",
-            "--friction",
-            "0.6",
-        ],
+        "shot --preset tennis --height 0.01 --speed 50 --friction 0.6",
     ),
     (
         "bad-shot-drag",
-        &[
-            "shot",
-            "--preset",
-            "tennis",
-            "--height",
-            "2",
-            "--speed",
-            "50",
-            "--friction",
-            "0.6",
-            "--drag-coefficient",
-            "-1",
-        ],
+        "shot --preset tennis --height 2 --speed 50 --friction 0.6 --drag-coefficient -1",
     ),
     (
         "bad-shot-time",
-        &[
-            "shot",
-            "--preset",
-            "tennis",
-            "--height",
-            "2",
-            "--speed",
-            "50",
-            "--friction",
-            "0.6",
-            "--time",
-            "0",
-        ],
+        "shot --preset tennis --height 2 --speed 50 --friction 0.6 --time 0",
     ),
     (
         "shot-mc-serve",
-        &[
-            "mc",
-            "--shot",
-            "--preset",
-            "tennis",
-            "--height",
-            "2.8",
-            "--speed",
-            "50",
-            "--elevation",
-            "-6",
-            "--spin",
-            "200",
-            "--friction",
-            "0.6",
-            "--vary",
-            "speed=2%,spin=30",
-            "--samples",
-            "200",
-        ],
+        "mc --shot --preset tennis --height 2.8 --speed 50 --elevation -6 --spin 200 \
+            --friction 0.6 --vary speed=2%,spin=30 --samples 200",
     ),
     (
         "bad-shot-mc-vary",
-        &[
-            "mc",
-            "--shot",
-            "--preset",
-            "tennis",
-            "--height",
-            "2.8",
-            "--speed",
-            "50",
-            "--friction",
-            "0.6",
-            "--vary",
-            "k_p=5%",
-        ],
+        "mc --shot --preset tennis --height 2.8 --speed 50 --friction 0.6 --vary k_p=5%",
     ),
     (
         "bad-shot-endless",
-        &[
-            "shot",
-            "--preset",
-            "tennis",
-            "--height",
-            "1",
-            "--speed",
-            "10",
-            "--friction",
-            "0.5",
-            "--lift-coefficient",
-            "5",
-            "--drag-coefficient",
-            "0",
-            "--spin",
-            "-100",
-        ],
+        "shot --preset tennis --height 1 --speed 10 --friction 0.5 --lift-coefficient 5 \
+            --drag-coefficient 0 --spin -100",
     ),
 ];
 
 #[test]
 fn shot_prints_what_it_printed_before() {
-    common::golden::check(CASES);
+    common::golden::check_lines(CASES);
 }
 
 /// `--svg-out` writes the side view (valid SVG naming the path, the surface and the bounce),
@@ -231,7 +72,7 @@ fn svg_out_draws_the_side_view_once() {
     let dir = tempfile::tempdir().unwrap();
     let svg = dir.path().join("serve.svg");
     let run = |extra: &[&str]| {
-        let mut args: Vec<&str> = SERVE.to_vec();
+        let mut args = common::argv(SERVE);
         args.extend(["--svg-out", svg.to_str().unwrap()]);
         args.extend(extra);
         std::process::Command::new(env!("CARGO_BIN_EXE_bouncelab"))

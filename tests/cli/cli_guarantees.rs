@@ -36,15 +36,6 @@ fn limited(dir: &Path, kib: u32, args: &[&str]) -> (i32, String) {
     )
 }
 
-fn names(dir: &Path) -> Vec<String> {
-    let mut v: Vec<String> = fs::read_dir(dir)
-        .unwrap()
-        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
-        .collect();
-    v.sort();
-    v
-}
-
 #[test]
 fn a_full_disk_leaves_the_old_figure_untouched() {
     let dir = tempfile::tempdir().unwrap();
@@ -64,7 +55,7 @@ fn a_full_disk_leaves_the_old_figure_untouched() {
         old,
         "the old file is untouched"
     );
-    assert_eq!(names(d), ["old.svg"], "no temporary file is left");
+    assert_eq!(folder_names(d), ["old.svg"], "no temporary file is left");
 }
 
 #[test]
@@ -72,39 +63,23 @@ fn a_failure_leaves_no_new_file_and_a_rerun_is_not_refused() {
     let dir = tempfile::tempdir().unwrap();
     let d = dir.path();
     // the SVG (~14 KiB) fits under 20 KiB, the CSV (~21 KiB) does not
-    let args = [
-        "figure",
-        "force-time",
-        "--v0",
-        "5",
-        "--out",
-        "a.svg",
-        "--csv-out",
-        "a.csv",
-    ];
+    let args = argv("figure force-time --v0 5 --out a.svg --csv-out a.csv");
     let (code, err) = limited(d, 20, &args);
     assert_eq!(code, 1, "{err}");
     assert!(err.contains("cannot write a.csv"), "{err}");
-    assert!(names(d).is_empty(), "{:?}", names(d));
+    assert!(folder_names(d).is_empty(), "{:?}", folder_names(d));
     // an unwritable CSV path after a writable SVG one
     let o = bl_at(
         d,
-        &[
-            "figure",
-            "force-time",
-            "--out",
-            "b.svg",
-            "--csv-out",
-            "/proc/b.csv",
-        ],
+        &argv("figure force-time --out b.svg --csv-out /proc/b.csv"),
     );
     assert_eq!(o.code, 1, "{}", o.stderr);
-    assert!(names(d).is_empty(), "{:?}", names(d));
+    assert!(folder_names(d).is_empty(), "{:?}", folder_names(d));
     // the same command again, without --force: nothing of the failed run is in its way
     let o = bl_at(d, &args);
     assert_eq!(o.code, 0, "{}", o.stderr);
     assert_eq!(o.stdout, "a.svg\na.csv\n");
-    assert_eq!(names(d), ["a.csv", "a.svg"]);
+    assert_eq!(folder_names(d), ["a.csv", "a.svg"]);
 }
 
 #[test]
@@ -114,13 +89,13 @@ fn a_failed_reproduce_leaves_no_folder_and_no_file() {
     let (code, err) = limited(d, 16, &["reproduce", "--out", "figs"]);
     assert_eq!(code, 1, "{err}");
     assert!(err.contains("cannot write figs/"), "{err}");
-    assert!(names(d).is_empty(), "{:?}", names(d));
+    assert!(folder_names(d).is_empty(), "{:?}", folder_names(d));
     // an earlier complete set survives a failed --force run byte for byte
     fs::create_dir(d.join("figs")).unwrap();
     fs::write(d.join("figs/cor-zeta.svg"), "earlier").unwrap();
     let (code, _) = limited(d, 16, &["reproduce", "--out", "figs", "--force"]);
     assert_eq!(code, 1);
-    assert_eq!(names(&d.join("figs")), ["cor-zeta.svg"]);
+    assert_eq!(folder_names(&d.join("figs")), ["cor-zeta.svg"]);
     assert_eq!(
         fs::read_to_string(d.join("figs/cor-zeta.svg")).unwrap(),
         "earlier"
@@ -139,7 +114,7 @@ fn a_killed_run_s_temporary_is_cleared_by_the_next() {
     fs::write(d.join(&debris), "<svg").unwrap();
     let o = bl_at(d, &["figure", "force-time", "--out", "a.svg"]);
     assert_eq!(o.code, 0, "{}", o.stderr);
-    assert_eq!(names(d), ["a.svg"]);
+    assert_eq!(folder_names(d), ["a.svg"]);
 }
 
 /// `bouncelab ARGS` with stdout or stderr on /dev/full: the exit code.
@@ -249,32 +224,16 @@ fn work_beyond_the_limit_is_refused_before_it_starts() {
         &[
             "figure", "cor-zeta", "--points", "20000", "--lambda", &many, "--out", "a.svg",
         ][..],
-        &[
-            "figure",
-            "force-zeta",
-            "--points",
-            "20000",
-            "--law",
-            "hertz",
-            "--out",
-            "a.svg",
-        ][..],
+        &argv("figure force-zeta --points 20000 --law hertz --out a.svg")[..],
         &["sweep", "zeta", "--points", "10000", "--law", "hertz"][..],
-        &[
-            "sweep",
-            "velocity",
-            "--points",
-            "100000",
-            "--law",
-            "elastic-plastic",
-        ][..],
+        &argv("sweep velocity --points 100000 --law elastic-plastic")[..],
     ] {
         let start = std::time::Instant::now();
         let o = bl_at(d, args);
         assert_bad(&o, &["too much work", "work limit of 1000000"]);
         assert!(start.elapsed().as_secs() < 5, "refused before any work");
     }
-    assert!(names(d).is_empty());
+    assert!(folder_names(d).is_empty());
     // within the limit: the same sweep with fewer points runs
     let o = bl_at(d, &["sweep", "zeta", "--points", "3", "--law", "hertz"]);
     assert_eq!(o.code, 0, "{}", o.stderr);

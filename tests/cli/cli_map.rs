@@ -4,7 +4,7 @@
 
 use crate::common;
 
-use common::{bad, bl, bl_at, json, ok, parse_svg};
+use common::{argv, bad, bl, bl_at, json, ok, parse_svg};
 
 /// (λ, ζ, cor, force, time) of each CSV row.
 fn rows(csv: &str) -> Vec<Vec<String>> {
@@ -49,35 +49,17 @@ fn csv_cells_are_what_run_prints() {
             );
         }
     }
-    let n = ok(&[
-        "map",
-        "--normalized",
-        "--zp-bar",
-        "0.5",
-        "--lambda",
-        "0.4:0.4:1",
-        "--zeta",
-        "0.3:0.3:1",
-        "--where",
-        "cor>=0.5",
-    ]);
+    let n = ok(&argv(
+        "map --normalized --zp-bar 0.5 --lambda 0.4:0.4:1 --zeta 0.3:0.3:1 --where cor>=0.5",
+    ));
     assert_eq!(
         n.lines().next(),
         Some("lambda,zeta,cor,max_force_normalized,contact_time_normalized,feasible")
     );
     let r = &rows(&n)[0];
-    let v = json(&[
-        "run",
-        "--normalized",
-        "--zp-bar",
-        "0.5",
-        "--lambda",
-        "0.4",
-        "--zeta",
-        "0.3",
-        "--format",
-        "json",
-    ]);
+    let v = json(&argv(
+        "run --normalized --zp-bar 0.5 --lambda 0.4 --zeta 0.3 --format json",
+    ));
     // the map promises run's values to 1e-12 (docs/map.md), as the golf rows above: this
     // ball flattens (F̄_m = 0.70 > z̄_p), and its cell comes from the flattening closed form
     let (got, want) = (r[2].parse::<f64>().unwrap(), v["cor"].as_f64().unwrap());
@@ -94,35 +76,16 @@ fn csv_cells_are_what_run_prints() {
 
 #[test]
 fn json_and_svg() {
-    let v = json(&[
-        "map",
-        "--normalized",
-        "--lambda",
-        "0.1:10:5",
-        "--zeta",
-        "0.01:10:6",
-        "--where",
-        "cor>=0.8",
-        "--format",
-        "json",
-    ]);
+    let v = json(&argv(
+        "map --normalized --lambda 0.1:10:5 --zeta 0.01:10:6 --where cor>=0.8 --format json",
+    ));
     assert_eq!(v["rows"].as_array().unwrap().len(), 30);
     assert_eq!(v["columns"][5], "feasible");
     assert_eq!(v["iso_cor"][0]["level"], 0.8);
     assert!(!v["iso_cor"][0]["lines"].as_array().unwrap().is_empty());
-    let svg = ok(&[
-        "map",
-        "--preset",
-        "superball",
-        "--lambda",
-        "0.1:10:12",
-        "--zeta",
-        "0.02:2:16",
-        "--where",
-        "cor>=0.7",
-        "--format",
-        "svg",
-    ]);
+    let svg = ok(&argv(
+        "map --preset superball --lambda 0.1:10:12 --zeta 0.02:2:16 --where cor>=0.7 --format svg",
+    ));
     let s = parse_svg(&svg);
     for layer in [
         "cor (model)",
@@ -147,16 +110,7 @@ fn json_and_svg() {
 #[test]
 fn out_is_written_whole_and_not_overwritten_without_force() {
     let dir = tempfile::tempdir().unwrap();
-    let args = [
-        "map",
-        "--normalized",
-        "--lambda",
-        "1:2:2",
-        "--zeta",
-        "0.1:1:2",
-        "--out",
-        "m.csv",
-    ];
+    let args = argv("map --normalized --lambda 1:2:2 --zeta 0.1:1:2 --out m.csv");
     assert_eq!(bl_at(dir.path(), &args).code, 0);
     let text = std::fs::read_to_string(dir.path().join("m.csv")).unwrap();
     assert_eq!(text.lines().count(), 5);
@@ -187,93 +141,35 @@ fn bad_input_is_exit_2_naming_the_flag() {
         a
     };
     bad(
-        &[
-            "map",
-            "--normalized",
-            "--lambda",
-            "0:1:3",
-            "--zeta",
-            "0.1:1:3",
-        ],
+        &argv("map --normalized --lambda 0:1:3 --zeta 0.1:1:3"),
         &["invalid lambda: '0:1:3'", "above 0 on a log axis"],
     );
     bad(
-        &[
-            "map",
-            "--normalized",
-            "--lambda",
-            "0.1:1:3",
-            "--zeta",
-            "1:0.1:3",
-        ],
+        &argv("map --normalized --lambda 0.1:1:3 --zeta 1:0.1:3"),
         &["invalid zeta", "FROM must be below TO"],
     );
     bad(
-        &[
-            "map",
-            "--normalized",
-            "--lambda",
-            "0.1:1:100000",
-            "--zeta",
-            "0.1:1:3",
-        ],
+        &argv("map --normalized --lambda 0.1:1:100000 --zeta 0.1:1:3"),
         &["invalid lambda", "N must lie in 1 … 4096"],
     );
     bad(
-        &[
-            "map",
-            "--normalized",
-            "--lambda",
-            "0.1:1e9:3",
-            "--zeta",
-            "0.1:1:3",
-        ],
+        &argv("map --normalized --lambda 0.1:1e9:3 --zeta 0.1:1:3"),
         &["invalid lambda", "0 … 1e6"],
     );
     bad(
-        &[
-            "map",
-            "--normalized",
-            "--lambda",
-            "nan:1:3",
-            "--zeta",
-            "0.1:1:3",
-        ],
+        &argv("map --normalized --lambda nan:1:3 --zeta 0.1:1:3"),
         &["invalid lambda", "finite"],
     );
     bad(
-        &[
-            "map",
-            "--normalized",
-            "--lambda",
-            "0.1:1",
-            "--zeta",
-            "0.1:1:3",
-        ],
+        &argv("map --normalized --lambda 0.1:1 --zeta 0.1:1:3"),
         &["invalid lambda", "FROM:TO:N"],
     );
     bad(
-        &[
-            "map",
-            "--normalized",
-            "--lambda",
-            "0.01:1:1000",
-            "--zeta",
-            "0.01:1:1001",
-        ],
+        &argv("map --normalized --lambda 0.01:1:1000 --zeta 0.01:1:1001"),
         &["invalid grid: 1000 λ values × 1001 ζ values"],
     );
     bad(
-        &[
-            "map",
-            "--normalized",
-            "--law",
-            "hertz",
-            "--lambda",
-            "0.01:1:200",
-            "--zeta",
-            "0.01:1:200",
-        ],
+        &argv("map --normalized --law hertz --lambda 0.01:1:200 --zeta 0.01:1:200"),
         &["too much work", "40000"],
     );
     bad(
@@ -287,16 +183,7 @@ fn bad_input_is_exit_2_naming_the_flag() {
     bad(&with(&["--format", "png"]), &["png"]);
     bad(&with(&["--zp-bar", "-1"]), &["invalid zp_bar"]);
     bad(
-        &[
-            "map",
-            "--preset",
-            "golf",
-            "--normalized",
-            "--lambda",
-            "1:2:2",
-            "--zeta",
-            "1:2:2",
-        ],
+        &argv("map --preset golf --normalized --lambda 1:2:2 --zeta 1:2:2"),
         &["--normalized"],
     );
     bad(
@@ -324,14 +211,7 @@ fn bad_input_is_exit_2_naming_the_flag() {
 /// once ran and marked every cell infeasible in silence.
 #[test]
 fn a_target_no_impact_meets_is_refused() {
-    let grid = [
-        "map",
-        "--normalized",
-        "--lambda",
-        "0.1:1:3",
-        "--zeta",
-        "0.1:1:3",
-    ];
+    let grid = argv("map --normalized --lambda 0.1:1:3 --zeta 0.1:1:3");
     for (target, why) in [
         ("cor>=1.5", "the COR is at most 1"),
         ("cor<=-0.1", "the COR is at least 0"),

@@ -3,7 +3,7 @@
 
 use crate::common;
 
-use common::{assert_bad, bl, bl_at, f, json, ok, ok_at, parse_svg};
+use common::{argv, assert_bad, bl, bl_at, f, json, ok, ok_at, parse_svg};
 use serde_json::Value;
 use std::process::Command;
 
@@ -22,23 +22,11 @@ fn quantile(sorted: &[f64], p: f64) -> f64 {
 #[test]
 fn the_files_hold_the_samples_the_report_sums_up() {
     let dir = tempfile::tempdir().unwrap();
-    let args = [
-        "mc",
-        "--preset",
-        "golf",
-        "--vary",
-        VARY,
-        "--samples",
-        "301",
-        "--seed",
-        "11",
-        "--format",
-        "json",
-        "--csv-out",
-        "s.csv",
-        "--svg-out",
-        "h.svg",
-    ];
+    let line = format!(
+        "mc --preset golf --vary {VARY} --samples 301 --seed 11 --format json --csv-out s.csv \
+            --svg-out h.svg"
+    );
+    let args = argv(&line);
     let report: Value = serde_json::from_str(&ok_at(dir.path(), &args)).unwrap();
     assert_eq!(
         (report["samples"].as_u64(), report["seed"].as_u64()),
@@ -95,19 +83,8 @@ fn the_files_hold_the_samples_the_report_sums_up() {
 #[test]
 fn a_sample_is_the_impact_run_gives_for_its_parameters() {
     let dir = tempfile::tempdir().unwrap();
-    let args = [
-        "mc",
-        "--preset",
-        "golf",
-        "--vary",
-        VARY,
-        "--samples",
-        "3",
-        "--seed",
-        "5",
-        "--csv-out",
-        "s.csv",
-    ];
+    let line = format!("mc --preset golf --vary {VARY} --samples 3 --seed 5 --csv-out s.csv");
+    let args = argv(&line);
     ok_at(dir.path(), &args);
     let csv = std::fs::read_to_string(dir.path().join("s.csv")).unwrap();
     let row: Vec<&str> = csv.lines().nth(3).unwrap().split(',').collect();
@@ -138,19 +115,9 @@ fn a_sample_is_the_impact_run_gives_for_its_parameters() {
 fn the_same_seed_gives_the_same_report_on_one_thread_and_two() {
     let on = |threads: &str| {
         let o = Command::new(env!("CARGO_BIN_EXE_bouncelab"))
-            .args([
-                "mc",
-                "--preset",
-                "golf",
-                "--vary",
-                VARY,
-                "--samples",
-                "40000",
-                "--seed",
-                "9",
-                "--format",
-                "json",
-            ])
+            .args(argv(&format!(
+                "mc --preset golf --vary {VARY} --samples 40000 --seed 9 --format json"
+            )))
             .env("RAYON_NUM_THREADS", threads)
             .output()
             .unwrap();
@@ -191,15 +158,7 @@ fn bad_input_is_one_line_naming_the_field() {
         assert_bad(&bl(&args), &[needle]);
     }
     // a normal spread wide enough to cross 0 names the sample and the parameter
-    let o = bl(&[
-        "mc",
-        "--preset",
-        "golf",
-        "--vary",
-        "k_r=300%",
-        "--samples",
-        "100",
-    ]);
+    let o = bl(&argv("mc --preset golf --vary k_r=300% --samples 100"));
     assert_bad(&o, &["invalid vary: sample ", "k_r", "--dist lognormal"]);
 }
 
@@ -224,14 +183,7 @@ fn hertz_samples_of_a_tabulated_ball_count_as_cheap_ones() {
         &["too much work: 1000001 samples (40 Hertz-law samples of a ball the Hertz table"],
     );
     let mut off_table = base.to_vec();
-    off_table.extend([
-        "--preset",
-        "baseball",
-        "--k-r",
-        "4.2e11",
-        "--samples",
-        "30000",
-    ]);
+    off_table.extend(argv("--preset baseball --k-r 4.2e11 --samples 30000"));
     assert_bad(
         &bl(&off_table),
         &["too much work: 30000 samples is 30000 hertz-law impacts"],
@@ -292,14 +244,6 @@ fn one_sample_has_no_spread_to_estimate() {
         assert!(v["stats"][q]["mean"].is_number());
     }
     // two samples: a spread
-    let v = json(&[
-        "mc",
-        "--vary",
-        "k_p=5%",
-        "--samples",
-        "2",
-        "--format",
-        "json",
-    ]);
+    let v = json(&argv("mc --vary k_p=5% --samples 2 --format json"));
     assert!(f(&v["stats"]["cor"], "sd") > 0.0);
 }

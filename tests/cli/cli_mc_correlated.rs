@@ -4,7 +4,7 @@
 
 use crate::common;
 
-use common::{assert_bad, bl_at, ok_at};
+use common::{argv, assert_bad, bl_at, ok_at};
 
 /// The columns of `--csv-out` named `names`, as numbers.
 fn columns(csv: &str, names: &[&str]) -> Vec<Vec<f64>> {
@@ -50,21 +50,10 @@ fn corr(x: &[f64], y: &[f64]) -> f64 {
 #[test]
 fn the_samples_have_the_correlation_asked_for() {
     let dir = tempfile::tempdir().unwrap();
-    let args = [
-        "mc",
-        "--preset",
-        "golf",
-        "--vary",
-        "k_p=5%,c=5%,k_r=5%",
-        "--correlate",
-        "k_p:c=0.5,c:k_r=-0.3",
-        "--samples",
-        "20000",
-        "--seed",
-        "5",
-        "--csv-out",
-        "s.csv",
-    ];
+    let args = argv(
+        "mc --preset golf --vary k_p=5%,c=5%,k_r=5% --correlate k_p:c=0.5,c:k_r=-0.3 \
+            --samples 20000 --seed 5 --csv-out s.csv",
+    );
     let text = ok_at(dir.path(), &args);
     assert!(text.contains("correlated: k_p:c 0.5, c:k_r -0.3"), "{text}");
     let csv = std::fs::read_to_string(dir.path().join("s.csv")).unwrap();
@@ -118,16 +107,7 @@ fn a_fitted_preset_is_sampled_from_its_covariance() {
     let dir = tempfile::tempdir().unwrap();
     let pulse = ok_at(
         dir.path(),
-        &[
-            "run",
-            "--preset",
-            "golf",
-            "--history",
-            "--samples",
-            "200",
-            "--format",
-            "csv",
-        ],
+        &argv("run --preset golf --history --samples 200 --format csv"),
     );
     let mut trace = String::from("t,force\n");
     for (i, line) in pulse.lines().skip(1).enumerate() {
@@ -165,19 +145,7 @@ fn a_fitted_preset_is_sampled_from_its_covariance() {
                 .collect()
         })
         .collect();
-    let args = [
-        "mc",
-        "--preset",
-        "gfit",
-        "--vary",
-        "fit",
-        "--samples",
-        "20000",
-        "--seed",
-        "9",
-        "--csv-out",
-        "s.csv",
-    ];
+    let args = argv("mc --preset gfit --vary fit --samples 20000 --seed 9 --csv-out s.csv");
     ok_at(dir.path(), &args);
     let csv = std::fs::read_to_string(dir.path().join("s.csv")).unwrap();
     let s = columns(&csv, &["k_p", "c"]);
@@ -204,17 +172,7 @@ fn a_fitted_preset_is_sampled_from_its_covariance() {
     assert_bad(&o, &["invalid vary fit: golf", "carries no fit"]);
     // a preset saved from an exact fit (one drop, K_r) has no covariance: the message said
     // a preset saved by fit --save carries one, of a preset saved by fit --save
-    let one = [
-        "fit",
-        "--preset",
-        "tennis",
-        "--drop-height",
-        "2.54",
-        "--rebound-height",
-        "1.4625",
-        "--save",
-        "onedrop",
-    ];
+    let one = argv("fit --preset tennis --drop-height 2.54 --rebound-height 1.4625 --save onedrop");
     ok_at(dir.path(), &one);
     let o = bl_at(dir.path(), &["mc", "--preset", "onedrop", "--vary", "fit"]);
     assert_bad(&o, &["carries no fit", "an exact fit has no covariance"]);

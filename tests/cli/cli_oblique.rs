@@ -2,25 +2,13 @@
 //! contract), agreement with the library, the court pace formula, bad input.
 
 use crate::common;
-use common::{bad, f, json, ok};
+use common::{argv, bad, f, json, ok};
 
 #[test]
 fn oblique_json_has_the_issues_keys() {
-    let v = json(&[
-        "oblique",
-        "--preset",
-        "tennis",
-        "--v0",
-        "25",
-        "--angle",
-        "16",
-        "--spin",
-        "300",
-        "--friction",
-        "0.6",
-        "--format",
-        "json",
-    ]);
+    let v = json(&argv(
+        "oblique --preset tennis --v0 25 --angle 16 --spin 300 --friction 0.6 --format json",
+    ));
     for key in [
         "v_in",
         "angle_in_deg",
@@ -54,20 +42,9 @@ fn oblique_json_has_the_issues_keys() {
 
 #[test]
 fn history_adds_the_forces_slip_and_spin() {
-    let v = json(&[
-        "oblique",
-        "--preset",
-        "tennis",
-        "--angle",
-        "20",
-        "--friction",
-        "0.5",
-        "--format",
-        "json",
-        "--history",
-        "--samples",
-        "50",
-    ]);
+    let v = json(&argv(
+        "oblique --preset tennis --angle 20 --friction 0.5 --format json --history --samples 50",
+    ));
     for key in [
         "t",
         "normal_force",
@@ -84,17 +61,9 @@ fn history_adds_the_forces_slip_and_spin() {
 #[test]
 fn arriving_without_slip_has_no_tangential_cor() {
     // straight down without spin: v_c,in = 0, e_x = −v_c,out/v_c,in undefined → null
-    let v = json(&[
-        "oblique",
-        "--preset",
-        "tennis",
-        "--angle",
-        "90",
-        "--friction",
-        "0.5",
-        "--format",
-        "json",
-    ]);
+    let v = json(&argv(
+        "oblique --preset tennis --angle 90 --friction 0.5 --format json",
+    ));
     assert!(v["cor_tangential"].is_null(), "{v}");
     let run = json(&["run", "--preset", "tennis", "--format", "json"]);
     assert!((f(&v, "cor_normal") - f(&run, "cor")).abs() < 1e-12);
@@ -103,45 +72,19 @@ fn arriving_without_slip_has_no_tangential_cor() {
 
 #[test]
 fn court_pace_follows_the_itf_formula() {
-    let v = json(&[
-        "court",
-        "--preset",
-        "tennis",
-        "--friction",
-        "0.6",
-        "--format",
-        "json",
-    ]);
+    let v = json(&argv("court --preset tennis --friction 0.6 --format json"));
     let cpr = 100.0 * (1.0 - f(&v, "apparent_friction")) + 150.0 * (0.81 - f(&v, "cor_normal"));
     assert!((f(&v, "cpr") - cpr).abs() < 1e-12);
     let c = v["category"].as_u64().unwrap();
     assert!((1..=5).contains(&c));
     // the same impact as oblique at 30 m/s, 16°, no spin
-    let o = json(&[
-        "oblique",
-        "--preset",
-        "tennis",
-        "--v0",
-        "30",
-        "--angle",
-        "16",
-        "--friction",
-        "0.6",
-        "--format",
-        "json",
-    ]);
+    let o = json(&argv(
+        "oblique --preset tennis --v0 30 --angle 16 --friction 0.6 --format json",
+    ));
     assert_eq!(f(&v, "apparent_friction"), f(&o, "apparent_friction"));
     assert_eq!(f(&v, "cor_normal"), f(&o, "cor_normal"));
     // more friction, a slower court
-    let slow = json(&[
-        "court",
-        "--preset",
-        "tennis",
-        "--friction",
-        "0.9",
-        "--format",
-        "json",
-    ]);
+    let slow = json(&argv("court --preset tennis --friction 0.9 --format json"));
     assert!(f(&slow, "cpr") < f(&v, "cpr"));
 }
 
@@ -175,36 +118,15 @@ fn bad_input_is_one_line_exit_2() {
         &["friction"],
     );
     bad(
-        &with(&[
-            "--angle",
-            "30",
-            "--friction",
-            "0.5",
-            "--tangential-stiffness",
-            "0",
-        ]),
+        &with(&argv("--angle 30 --friction 0.5 --tangential-stiffness 0")),
         &["tangential_stiffness"],
     );
     bad(
-        &with(&[
-            "--angle",
-            "30",
-            "--friction",
-            "0.5",
-            "--inertia-factor",
-            "0",
-        ]),
+        &with(&argv("--angle 30 --friction 0.5 --inertia-factor 0")),
         &["inertia_factor"],
     );
     bad(
-        &with(&[
-            "--angle",
-            "30",
-            "--friction",
-            "0.5",
-            "--inertia-factor",
-            "1.01",
-        ]),
+        &with(&argv("--angle 30 --friction 0.5 --inertia-factor 1.01")),
         &["inertia_factor"],
     );
     bad(
@@ -253,17 +175,9 @@ fn every_law_answers_and_angle_90_is_runs_cor() {
         // backspin: the contact point slides forward and friction slows the ball
         assert!(f(&oblique, "vx_out") < f(&oblique, "vx_in"), "{law}");
     }
-    let text = ok(&[
-        "oblique",
-        "--preset",
-        "tennis",
-        "--angle",
-        "30",
-        "--friction",
-        "0.5",
-        "--law",
-        "hertz",
-    ]);
+    let text = ok(&argv(
+        "oblique --preset tennis --angle 30 --friction 0.5 --law hertz",
+    ));
     assert!(
         text.starts_with("tennis (embedded, adopted parameters), hertz law: μ = 0.5"),
         "{text}"
@@ -273,17 +187,9 @@ fn every_law_answers_and_angle_90_is_runs_cor() {
 #[test]
 fn peers_exports_add_the_tangential_model_with_friction() {
     let plain = ok(&["peers", "--preset", "tennis", "--export", "lammps"]);
-    let with = ok(&[
-        "peers",
-        "--preset",
-        "tennis",
-        "--export",
-        "lammps",
-        "--friction",
-        "0.6",
-        "--tangential-stiffness",
-        "15000",
-    ]);
+    let with = ok(&argv(
+        "peers --preset tennis --export lammps --friction 0.6 --tangential-stiffness 15000",
+    ));
     // the normal lines unchanged, the tangential fix after them
     assert!(with.starts_with(&plain), "{with}");
     let fix = with
@@ -307,67 +213,29 @@ fn peers_exports_add_the_tangential_model_with_friction() {
             .join(" ")
     };
     assert_eq!(normal(fix), normal(clip));
-    let mujoco = ok(&[
-        "peers",
-        "--preset",
-        "tennis",
-        "--export",
-        "mujoco",
-        "--friction",
-        "0.6",
-    ]);
+    let mujoco = ok(&argv(
+        "peers --preset tennis --export mujoco --friction 0.6",
+    ));
     assert!(
         mujoco.contains("condim=\"3\" friction=\"0.6 0 0\""),
         "{mujoco}"
     );
     assert!(mujoco.contains("no tangential spring"), "{mujoco}");
-    let v = json(&[
-        "peers",
-        "--preset",
-        "tennis",
-        "--export",
-        "json",
-        "--friction",
-        "0.6",
-    ]);
+    let v = json(&argv("peers --preset tennis --export json --friction 0.6"));
     assert!((v["tangential"]["friction"].as_f64().unwrap() - 0.6).abs() < 1e-15);
-    let k_t = json(&[
-        "oblique",
-        "--preset",
-        "tennis",
-        "--angle",
-        "30",
-        "--friction",
-        "0.6",
-        "--format",
-        "json",
-    ]);
+    let k_t = json(&argv(
+        "oblique --preset tennis --angle 30 --friction 0.6 --format json",
+    ));
     assert_eq!(
         v["tangential"]["tangential_stiffness"],
         k_t["tangential_stiffness"]
     );
     bad(
-        &[
-            "peers",
-            "--preset",
-            "tennis",
-            "--export",
-            "lammps",
-            "--friction",
-            "-1",
-        ],
+        &argv("peers --preset tennis --export lammps --friction -1"),
         &["friction"],
     );
     bad(
-        &[
-            "peers",
-            "--preset",
-            "tennis",
-            "--export",
-            "yade",
-            "--friction",
-            "0.5",
-        ],
+        &argv("peers --preset tennis --export yade --friction 0.5"),
         &["--friction"],
     );
     bad(

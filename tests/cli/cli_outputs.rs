@@ -35,16 +35,6 @@ fn to_full_stdout(dir: &Path, args: &[&str]) -> (i32, String) {
     )
 }
 
-/// The names in `dir` (hidden temporaries too), sorted.
-fn names(dir: &Path) -> Vec<String> {
-    let mut v: Vec<String> = fs::read_dir(dir)
-        .unwrap()
-        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
-        .collect();
-    v.sort();
-    v
-}
-
 fn presets(dir: &Path) -> std::path::PathBuf {
     dir.join("bouncelab").join("presets")
 }
@@ -54,22 +44,14 @@ fn fit_is_all_or_nothing() {
     let d = tempfile::tempdir().unwrap();
     let d = d.path();
     fs::write(d.join("cor.csv"), COR).unwrap();
-    let fit = [
-        "fit",
-        "--cor-table",
-        "cor.csv",
-        "--plot",
-        "p.svg",
-        "--save",
-        "mine",
-    ];
+    let fit = argv("fit --cor-table cor.csv --plot p.svg --save mine");
     // a presets folder that cannot be one (a file in its place): refused before the fit
     fs::create_dir(d.join("bouncelab")).unwrap();
     fs::write(presets(d), "").unwrap();
     let o = bl_at(d, &fit);
     assert_ne!(o.code, 0, "{}", o.stderr);
     assert!(o.stdout.is_empty(), "no report: {}", o.stdout);
-    assert_eq!(names(d), ["bouncelab", "cor.csv"], "{}", o.stderr);
+    assert_eq!(folder_names(d), ["bouncelab", "cor.csv"], "{}", o.stderr);
     fs::remove_file(presets(d)).unwrap();
     // the preset cannot be published (a folder in its place): the replaced plot is put back
     fs::create_dir_all(presets(d).join("mine.toml").join("x")).unwrap();
@@ -79,7 +61,7 @@ fn fit_is_all_or_nothing() {
     assert_eq!(o.code, 1, "{}", o.stderr);
     assert!(o.stderr.contains("cannot write"), "{}", o.stderr);
     assert_eq!(fs::read_to_string(d.join("p.svg")).unwrap(), "old");
-    assert_eq!(names(d), ["bouncelab", "cor.csv", "p.svg"]);
+    assert_eq!(folder_names(d), ["bouncelab", "cor.csv", "p.svg"]);
     fs::remove_dir_all(d.join("bouncelab")).unwrap();
     fs::remove_file(d.join("p.svg")).unwrap();
     // a report that cannot be written: neither the plot nor the preset (nor its folder)
@@ -90,7 +72,7 @@ fn fit_is_all_or_nothing() {
         let (code, err) = to_full_stdout(d, args);
         assert_eq!(code, 1, "{err}");
         assert!(err.contains("cannot write the report to stdout"), "{err}");
-        assert_eq!(names(d), ["cor.csv"], "{args:?}");
+        assert_eq!(folder_names(d), ["cor.csv"], "{args:?}");
     }
     // and all of it when everything can be written
     let o = bl_at(d, &fit);
@@ -98,37 +80,26 @@ fn fit_is_all_or_nothing() {
     assert!(d.join("p.svg").is_file() && presets(d).join("mine.toml").is_file());
 }
 
+/// The command, its stdout a full device, fails (exit 1) and leaves its folder empty.
+fn writes_nothing_when_stdout_is_full(args: &[&str]) {
+    let d = tempfile::tempdir().unwrap();
+    let (code, err) = to_full_stdout(d.path(), args);
+    assert_eq!(code, 1, "{err}");
+    assert!(
+        folder_names(d.path()).is_empty(),
+        "{:?}",
+        folder_names(d.path())
+    );
+}
+
 #[test]
 fn figure_writes_nothing_when_its_report_cannot_go_out() {
-    let d = tempfile::tempdir().unwrap();
-    let args = [
-        "figure",
-        "force-time",
-        "--out",
-        "a.svg",
-        "--csv-out",
-        "a.csv",
-    ];
-    let (code, err) = to_full_stdout(d.path(), &args);
-    assert_eq!(code, 1, "{err}");
-    assert!(names(d.path()).is_empty(), "{:?}", names(d.path()));
+    writes_nothing_when_stdout_is_full(&argv("figure force-time --out a.svg --csv-out a.csv"));
 }
 
 #[test]
 fn mc_writes_nothing_when_its_report_cannot_go_out() {
-    let d = tempfile::tempdir().unwrap();
-    let args = [
-        "mc",
-        "--vary",
-        "k_p=5%",
-        "--samples",
-        "20",
-        "--csv-out",
-        "s.csv",
-    ];
-    let (code, err) = to_full_stdout(d.path(), &args);
-    assert_eq!(code, 1, "{err}");
-    assert!(names(d.path()).is_empty(), "{:?}", names(d.path()));
+    writes_nothing_when_stdout_is_full(&argv("mc --vary k_p=5% --samples 20 --csv-out s.csv"));
 }
 
 /// `map --out` is checked before the grid with `figure`'s own check: the same message and exit
@@ -187,7 +158,7 @@ fn reproduce_refuses_a_dangling_link() {
     }
     let (code, err) = to_full_stdout(d, &["reproduce", "--out", "out"]);
     assert_eq!(code, 1, "{err}");
-    assert_eq!(names(d), ["figs"]);
+    assert_eq!(folder_names(d), ["figs"]);
 }
 
 /// 20 real processes saving one preset name at once, in one config folder: their exit codes and
@@ -227,7 +198,11 @@ fn concurrent_saves_of_one_name() {
         assert_eq!(code, 0, "{err}");
     }
     let folder = presets(d.path());
-    assert_eq!(names(&folder), ["readers.toml"], "one preset, no temporary");
+    assert_eq!(
+        folder_names(&folder),
+        ["readers.toml"],
+        "one preset, no temporary"
+    );
     let results = save_race(d.path(), "racers", false);
     let won = results.iter().filter(|r| r.0 == 0).count();
     assert_eq!(won, 1, "{results:?}");
@@ -236,7 +211,7 @@ fn concurrent_saves_of_one_name() {
         assert!(err.contains("exists") && err.contains("--force"), "{err}");
         assert!(!err.contains("os error"), "{err}");
     }
-    assert_eq!(names(&folder), ["racers.toml", "readers.toml"]);
+    assert_eq!(folder_names(&folder), ["racers.toml", "readers.toml"]);
 }
 
 /// A reader that went away (`… | head`) is no failure: the files are published and the command
@@ -263,5 +238,5 @@ fn a_closed_stdout_still_publishes() {
         let err = String::from_utf8(o.stderr).unwrap();
         assert_eq!(o.status.code(), Some(0), "{args:?}: {err}");
     }
-    assert_eq!(names(d.path()), ["a.svg", "cor.csv", "p.svg"]);
+    assert_eq!(folder_names(d.path()), ["a.svg", "cor.csv", "p.svg"]);
 }

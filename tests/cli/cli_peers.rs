@@ -2,7 +2,7 @@
 //! input as one line with exit 2 (src/cli/peers.rs).
 
 use crate::common;
-use common::{assert_bad, bl, f, json, ok};
+use common::{argv, assert_bad, bl, f, json, ok};
 
 const MODELS: [&str; 5] = [
     "kelvin-voigt",
@@ -58,26 +58,10 @@ fn json_lists_every_model_and_rule() {
 /// their damping does not depend on v0 (Kelvin–Voigt, Tsuji) or is χ (Hunt–Crossley).
 #[test]
 fn cor_and_v0_set_the_target_and_speed() {
-    let a = json(&[
-        "peers",
-        "--preset",
-        "superball",
-        "--cor",
-        "0.5",
-        "--format",
-        "json",
-    ]);
-    let b = json(&[
-        "peers",
-        "--preset",
-        "superball",
-        "--cor",
-        "0.5",
-        "--v0",
-        "6",
-        "--format",
-        "json",
-    ]);
+    let a = json(&argv("peers --preset superball --cor 0.5 --format json"));
+    let b = json(&argv(
+        "peers --preset superball --cor 0.5 --v0 6 --format json",
+    ));
     assert_eq!(f(&b, "v0"), 6.0);
     for (ra, rb) in a["models"]
         .as_array()
@@ -125,15 +109,9 @@ fn exports_for_every_code() {
 
 #[test]
 fn christoforou_yigit_targets() {
-    let v = json(&[
-        "peers",
-        "--preset",
-        "superball",
-        "--target",
-        "christoforou-yigit",
-        "--format",
-        "json",
-    ]);
+    let v = json(&argv(
+        "peers --preset superball --target christoforou-yigit --format json",
+    ));
     let cy = v["models"]
         .as_array()
         .unwrap()
@@ -142,15 +120,9 @@ fn christoforou_yigit_targets() {
         .unwrap()
         .clone();
     assert!((f(&cy, "cor") - f(&v, "target_cor")).abs() < 1e-9);
-    let curve = json(&[
-        "peers",
-        "--preset",
-        "superball",
-        "--target",
-        "christoforou-yigit-curve",
-        "--format",
-        "json",
-    ]);
+    let curve = json(&argv(
+        "peers --preset superball --target christoforou-yigit-curve --format json",
+    ));
     assert_eq!(curve["target_source"], "christoforou-yigit-curve");
 }
 

@@ -18,28 +18,13 @@ fn existing_files_are_refused_unless_forced() {
     fs::write(d.join("old.csv"), "keep").unwrap();
     let o = bl_at(
         d,
-        &[
-            "figure",
-            "force-time",
-            "--out",
-            "new.svg",
-            "--csv-out",
-            "old.csv",
-        ],
+        &argv("figure force-time --out new.svg --csv-out old.csv"),
     );
     assert_bad(&o, &["old.csv exists"]);
     assert!(!d.join("new.svg").exists());
     ok_at(
         d,
-        &[
-            "figure",
-            "force-time",
-            "--out",
-            "old.svg",
-            "--csv-out",
-            "old.csv",
-            "--force",
-        ],
+        &argv("figure force-time --out old.svg --csv-out old.csv --force"),
     );
     assert!(
         fs::read_to_string(d.join("old.svg"))
@@ -67,14 +52,7 @@ fn bad_figure_commands_are_one_line_errors() {
         ),
         (&["figure", "cor-zeta"], &["--out"]),
         (
-            &[
-                "figure",
-                "cor-velocity",
-                "--out",
-                "a.svg",
-                "--lambda",
-                "1,2",
-            ],
+            &argv("figure cor-velocity --out a.svg --lambda 1,2"),
             &["--lambda does not apply to cor-velocity"],
         ),
         (
@@ -94,14 +72,7 @@ fn bad_figure_commands_are_one_line_errors() {
             &["no such directory nowhere"],
         ),
         (
-            &[
-                "figure",
-                "force-time",
-                "--out",
-                "a.svg",
-                "--csv-out",
-                "./a.svg",
-            ],
+            &argv("figure force-time --out a.svg --csv-out ./a.svg"),
             &["given twice"],
         ),
     ];

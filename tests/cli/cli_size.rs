@@ -5,7 +5,7 @@
 use crate::common;
 
 use bouncelab::{ContactLaw, ImpactParams, SolveOptions, simulate};
-use common::{bad, f, json, ok, ok_calibrated};
+use common::{argv, bad, f, json, ok, ok_calibrated};
 
 /// The superball's adopted set (docs/model.md §7) at another mass, run by the library directly.
 fn superball_at(mass: f64) -> ImpactParams {
@@ -24,15 +24,7 @@ fn superball_at(mass: f64) -> ImpactParams {
 /// library's impact with that mass (λ the same, ζ = √(m K_p)/(2c) moved).
 #[test]
 fn mass_is_the_model_mass() {
-    let v = json(&[
-        "run",
-        "--preset",
-        "superball",
-        "--mass",
-        "0.05",
-        "--format",
-        "json",
-    ]);
+    let v = json(&argv("run --preset superball --mass 0.05 --format json"));
     let r = simulate(
         &superball_at(0.05),
         ContactLaw::Linear,
@@ -108,14 +100,7 @@ fn every_ball_command_takes_them() {
         &["fit", "--cor", "0.7"],
     ] {
         let mut a = args.to_vec();
-        a.extend([
-            "--preset",
-            "superball",
-            "--mass",
-            "0.04",
-            "--radius",
-            "0.022",
-        ]);
+        a.extend(argv("--preset superball --mass 0.04 --radius 0.022"));
         ok_calibrated(&a);
     }
     let dir = tempfile::tempdir().unwrap();

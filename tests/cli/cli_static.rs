@@ -36,17 +36,9 @@ fn linear_forward_is_the_two_springs_in_series_at_both_plates() {
 
 #[test]
 fn hertz_has_no_return_and_says_why() {
-    let v = json(&[
-        "static",
-        "--preset",
-        "superball",
-        "--law",
-        "hertz",
-        "--load",
-        "2",
-        "--format",
-        "json",
-    ]);
+    let v = json(&argv(
+        "static --preset superball --law hertz --load 2 --format json",
+    ));
     let b = &v["ball"];
     let force = 2.0 * G;
     // z = (F/K_h)^{2/3} (Eq. 7 inverted), in series with F/K_r

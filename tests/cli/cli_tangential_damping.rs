@@ -5,7 +5,7 @@
 use crate::common;
 use bouncelab::Ball;
 use bouncelab::api::ObliqueSpec;
-use common::{bad, bl, f, file_with, json, ok};
+use common::{argv, bad, bl, f, file_with, json, ok};
 
 const OBLIQUE: [&str; 11] = [
     "oblique",
@@ -76,30 +76,14 @@ fn bad_damping_is_one_line_exit_2() {
     args.extend(["--tangential-damping", "-1"]);
     bad(&args, &["invalid tangential_damping: -1"]);
     bad(
-        &[
-            "court",
-            "--preset",
-            "tennis",
-            "--friction",
-            "0.6",
-            "--tangential-damping",
-            "-2",
-        ],
+        &argv("court --preset tennis --friction 0.6 --tangential-damping -2"),
         &["invalid tangential_damping: -2"],
     );
 }
 
 #[test]
 fn court_takes_the_dashpot() {
-    let args = [
-        "court",
-        "--preset",
-        "tennis",
-        "--friction",
-        "0.2",
-        "--format",
-        "json",
-    ];
+    let args = argv("court --preset tennis --friction 0.2 --format json");
     let plain = json(&args);
     let mut with = args.to_vec();
     with.extend(["--tangential-damping", "19"]);
@@ -112,17 +96,8 @@ fn court_takes_the_dashpot() {
 
 #[test]
 fn the_lammps_export_carries_x_gamma_t() {
-    let args = [
-        "peers",
-        "--preset",
-        "tennis",
-        "--export",
-        "lammps",
-        "--friction",
-        "0.6",
-        "--tangential-stiffness",
-        "15000",
-    ];
+    let args =
+        argv("peers --preset tennis --export lammps --friction 0.6 --tangential-stiffness 15000");
     let plain = ok(&args);
     let mut with = args.to_vec();
     with.extend(["--tangential-damping", "19"]);
@@ -143,17 +118,9 @@ fn the_lammps_export_carries_x_gamma_t() {
     let x: f64 = words[at + 2].parse().unwrap();
     assert!((x * eta - 19.0).abs() < 1e-12 * 19.0, "{x} × {eta}");
     assert_eq!(words[at + 3], "0.6");
-    let j = json(&[
-        "peers",
-        "--preset",
-        "tennis",
-        "--export",
-        "json",
-        "--friction",
-        "0.6",
-        "--tangential-damping",
-        "19",
-    ]);
+    let j = json(&argv(
+        "peers --preset tennis --export json --friction 0.6 --tangential-damping 19",
+    ));
     assert_eq!(f(&j["tangential"], "tangential_damping"), 19.0);
 }
 
@@ -213,15 +180,7 @@ fn fit_oblique_fits_c_t_from_a_start() {
     assert_eq!(f(e, "value"), c);
     assert!(e["ci95"].is_array());
     bad(
-        &[
-            "fit",
-            "--preset",
-            "tennis",
-            "--cor",
-            "0.7",
-            "--tangential-damping",
-            "4",
-        ],
+        &argv("fit --preset tennis --cor 0.7 --tangential-damping 4"),
         &["--oblique"],
     );
 }

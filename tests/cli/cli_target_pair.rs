@@ -4,7 +4,7 @@
 //! tennis at ±10 m/s gave e 0.7047, the impact of m/2 at 20 m/s, where the wall's is 0.7219.
 
 use crate::common;
-use common::{f, json};
+use common::{argv, f, json};
 
 /// `collide --preset P --target-preset P` at ±v against `run --preset P --v0 v`, on each law:
 /// e, F_m, t_f, z_m and z_f, and each ball leaving at e·v, to 1e-9 relative.
@@ -49,18 +49,8 @@ fn identical_balls_head_on_at_the_cli_are_the_wall_impact() {
         }
     }
     // the figure: tennis at ±10 m/s, e 0.7219 (the wall's), no longer 0.7047
-    let tennis = json(&[
-        "collide",
-        "--preset",
-        "tennis",
-        "--v0",
-        "10",
-        "--target-preset",
-        "tennis",
-        "--target-speed",
-        "10",
-        "--format",
-        "json",
-    ]);
+    let tennis = json(&argv(
+        "collide --preset tennis --v0 10 --target-preset tennis --target-speed 10 --format json",
+    ));
     assert!((f(&tennis, "cor") - 0.7427).abs() < 5e-5, "{tennis}");
 }

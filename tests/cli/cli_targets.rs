@@ -3,7 +3,7 @@
 //! docs/targets.md §3, bad input is one line naming the field, exit 2.
 
 use crate::common;
-use common::{bad, f, json, ok};
+use common::{argv, bad, f, json, ok};
 
 /// M = ∞, v_t = 0, no K_s: `collide` is today's `run`, for every law.
 #[test]
@@ -34,19 +34,9 @@ fn collide_on_the_wall_is_run() {
 #[test]
 fn collide_json_holds_the_kinematics() {
     let (m_t, v_b, v_t) = (0.8, 40.0, 30.0);
-    let c = json(&[
-        "collide",
-        "--preset",
-        "baseball",
-        "--v0",
-        "40",
-        "--target-mass",
-        "0.8",
-        "--target-speed",
-        "30",
-        "--format",
-        "json",
-    ]);
+    let c = json(&argv(
+        "collide --preset baseball --v0 40 --target-mass 0.8 --target-speed 30 --format json",
+    ));
     let m = f(&c, "ball_mass");
     let (out_b, out_t, e) = (
         f(&c, "ball_speed_out"),
@@ -62,33 +52,16 @@ fn collide_json_holds_the_kinematics() {
         assert!(f(&c, key).is_finite(), "{key}");
     }
     // a compliant target: the peak deflection is reported, the exact solver ran it
-    let s = json(&[
-        "collide",
-        "--preset",
-        "superball",
-        "--target-mass",
-        "0.3",
-        "--target-stiffness",
-        "2e4",
-        "--target-damping",
-        "3",
-        "--format",
-        "json",
-    ]);
+    let s = json(&argv(
+        "collide --preset superball --target-mass 0.3 --target-stiffness 2e4 --target-damping 3 \
+            --format json",
+    ));
     assert_eq!(s["method"], "exact");
     assert!(f(&s, "max_target_deflection") > 0.0);
     // ball on ball: m_eff and R_eff; equal balls leave at the same speed
-    let g = json(&[
-        "collide",
-        "--preset",
-        "golf",
-        "--target-preset",
-        "golf",
-        "--target-speed",
-        "1.47",
-        "--format",
-        "json",
-    ]);
+    let g = json(&argv(
+        "collide --preset golf --target-preset golf --target-speed 1.47 --format json",
+    ));
     assert!((f(&g, "effective_mass") - 0.0228).abs() < 1e-15);
     assert!((f(&g, "effective_radius") - 0.020_75 / 2.0).abs() < 1e-15);
     assert!((f(&g, "ball_speed_out") + f(&g, "target_speed_out")).abs() < 1e-12);
@@ -101,32 +74,9 @@ fn collide_json_holds_the_kinematics() {
 #[test]
 fn collide_text_says_the_way_each_speed_goes() {
     let cases: [&[&str]; 3] = [
-        &[
-            "--preset",
-            "golf",
-            "--target-preset",
-            "golf",
-            "--target-speed",
-            "1.47",
-        ],
-        &[
-            "--preset",
-            "baseball",
-            "--v0",
-            "40",
-            "--target-mass",
-            "0.8",
-            "--target-speed",
-            "-10",
-        ],
-        &[
-            "--preset",
-            "baseball",
-            "--v0",
-            "10",
-            "--target-mass",
-            "0.05",
-        ],
+        &argv("--preset golf --target-preset golf --target-speed 1.47"),
+        &argv("--preset baseball --v0 40 --target-mass 0.8 --target-speed -10"),
+        &argv("--preset baseball --v0 10 --target-mass 0.05"),
     ];
     for args in cases {
         let c = json(&[&["collide"][..], args, &["--format", "json"]].concat());
@@ -179,17 +129,9 @@ fn bat_reports_bbs_and_the_bbcor_verdict() {
     let e_a = f(&b, "apparent_cor");
     assert!((f(&b, "bbs") - (e_a * 40.0 + (1.0 + e_a) * 30.0)).abs() < 1e-12);
     // BBCOR is the pair's COR of `collide` at 136 mph onto the bat at rest
-    let c = json(&[
-        "collide",
-        "--preset",
-        "baseball",
-        "--v0",
-        "60.79744",
-        "--target-mass",
-        "0.8",
-        "--format",
-        "json",
-    ]);
+    let c = json(&argv(
+        "collide --preset baseball --v0 60.79744 --target-mass 0.8 --format json",
+    ));
     assert_eq!(f(&b, "bbcor"), f(&c, "cor"));
     let pass = f(&b, "bbcor") <= 0.5;
     assert_eq!(b["verdict"], if pass { "PASS" } else { "FAIL" });
@@ -222,14 +164,9 @@ fn bad_targets_are_one_line_and_exit_2() {
         &["invalid target_stiffness: 0"],
     );
     bad(
-        &c(&[
-            "--target-mass",
-            "1",
-            "--target-stiffness",
-            "1e4",
-            "--target-damping",
-            "-2",
-        ]),
+        &c(&argv(
+            "--target-mass 1 --target-stiffness 1e4 --target-damping -2",
+        )),
         &["invalid target_damping: -2"],
     );
     bad(
@@ -283,15 +220,9 @@ fn peers_pair_calibrates_for_the_pair() {
     let p = json(&[
         "peers", "--preset", "golf", "--pair", "tennis", "--format", "json",
     ]);
-    let c = json(&[
-        "collide",
-        "--preset",
-        "golf",
-        "--target-preset",
-        "tennis",
-        "--format",
-        "json",
-    ]);
+    let c = json(&argv(
+        "collide --preset golf --target-preset tennis --format json",
+    ));
     assert_eq!(f(&p, "mass"), f(&c, "effective_mass"));
     assert_eq!(f(&p, "radius"), f(&c, "effective_radius"));
     assert_eq!(p["pair"]["preset"], "tennis");
@@ -335,15 +266,9 @@ fn peers_target_preset_is_the_pair() {
         "peers", "--preset", "golf", "--target", "tennis", "--export", "lammps", "--v0", "1.47",
     ]);
     assert_eq!(lammps, by_target);
-    let cy = json(&[
-        "peers",
-        "--preset",
-        "golf",
-        "--target",
-        "christoforou-yigit",
-        "--format",
-        "json",
-    ]);
+    let cy = json(&argv(
+        "peers --preset golf --target christoforou-yigit --format json",
+    ));
     assert!(cy.get("pair").is_none());
     assert_eq!(cy["target_source"], "christoforou-yigit");
     bad(

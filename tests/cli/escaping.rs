@@ -147,17 +147,7 @@ const INVISIBLE: [char; 8] = [
 #[test]
 fn invisible_characters_cannot_hide() {
     for c in INVISIBLE {
-        let text = renamed(&format!("golf{c}"), "7.08e4");
-        let line = text[..text.find("name = ").unwrap()].matches('\n').count() + 1;
-        let home = config_home(&[("golf2.toml", &text)]);
-        let o = bl_in(home.path(), &["presets"]);
-        assert_bad(
-            &o,
-            &[
-                &format!("golf2.toml:{line}:1: name: holds an invisible character"),
-                &format!("U+{:04X}", c as u32),
-            ],
-        );
+        assert_name_refused_as_invisible(c);
     }
     let described = renamed("described", "7.08e4").replace(
         "description = \"",

@@ -2,7 +2,9 @@
 //! given is used or refused.
 
 use crate::common;
-use common::{assert_bad, bad, bl, bl_at, bl_in, config_home, renamed};
+use common::{
+    argv, assert_bad, assert_name_refused_as_invisible, bad, baseball_with_fit, bl, bl_at,
+};
 
 #[test]
 fn a_preset_name_with_a_filler_or_ignorable_character_is_refused() {
@@ -11,17 +13,7 @@ fn a_preset_name_with_a_filler_or_ignorable_character_is_refused() {
     for c in [
         '\u{115F}', '\u{1160}', '\u{3164}', '\u{FFA0}', '\u{034F}', '\u{FE0F}', '\u{2800}',
     ] {
-        let text = renamed(&format!("golf{c}"), "7.08e4");
-        let line = text[..text.find("name = ").unwrap()].matches('\n').count() + 1;
-        let home = config_home(&[("golf2.toml", &text)]);
-        let o = bl_in(home.path(), &["presets"]);
-        assert_bad(
-            &o,
-            &[
-                &format!("golf2.toml:{line}:1: name: holds an invisible character"),
-                &format!("U+{:04X}", c as u32),
-            ],
-        );
+        assert_name_refused_as_invisible(c);
     }
 }
 
@@ -57,15 +49,7 @@ fn a_derived_group_out_of_range_names_the_option_given() {
     );
     // `oblique --angle 1e-15` said "invalid v0: 1.2e-16"
     bad(
-        &[
-            "oblique",
-            "--preset",
-            "tennis",
-            "--angle",
-            "1e-15",
-            "--friction",
-            "0.5",
-        ],
+        &argv("oblique --preset tennis --angle 1e-15 --friction 0.5"),
         &["invalid angle: 1e-15", "normal speed"],
     );
 }
@@ -101,31 +85,10 @@ fn vary_fit_names_the_fit_not_an_option_never_given() {
     // a [fit] covariance whose correlations no normal distribution has (ρ = 1 exactly, which
     // the table's check allows) said "invalid correlate: … weaken the correlations" to a user
     // who gave no --correlate
-    let base = bouncelab::preset::Preset::embedded_all()
-        .into_iter()
-        .find(|p| p.name == "baseball")
-        .unwrap();
-    let text = base
-        .to_toml(&[])
-        .replace("name = \"baseball\"", "name = \"mine\"");
-    let (k_r, z_p) = (base.adopted.k_r, base.adopted.z_p.unwrap());
-    let fit = format!(
-        "\n[fit]\nfree = [\"k_r\", \"z_p\"]\nvalues = [{k_r:?}, {z_p:?}]\n\
-         covariance = [[4e6, 2.0], [2.0, 1e-6]]\ndof = 6\nresidual_sd = 0.01\n"
-    );
-    let d = tempfile::tempdir().unwrap();
-    std::fs::write(d.path().join("mine.toml"), format!("{text}{fit}")).unwrap();
+    let d = baseball_with_fit("mine", |_, _| "[[4e6, 2.0], [2.0, 1e-6]]".into(), 6);
     let o = bl_at(
         d.path(),
-        &[
-            "mc",
-            "--config",
-            "mine.toml",
-            "--vary",
-            "fit",
-            "--samples",
-            "10",
-        ],
+        &argv("mc --config mine.toml --vary fit --samples 10"),
     );
     assert_bad(&o, &["invalid vary fit", "[fit] covariance", "refit"]);
     assert!(!o.stderr.contains("correlate"), "{}", o.stderr);

@@ -4,7 +4,7 @@
 //! `--target-speed`, `--drag-coefficient`, which have no lower bound to catch it.
 
 use crate::common;
-use common::{assert_bad, bl};
+use common::{argv, assert_bad, bl};
 
 #[test]
 fn a_spread_that_underflows_is_refused_naming_it() {
@@ -14,15 +14,9 @@ fn a_spread_that_underflows_is_refused_naming_it() {
         assert_bad(&o, &["invalid vary k_p", "too small"]);
     }
     // a correlation of 1e-400 is no 0 either
-    let o = bl(&[
-        "mc",
-        "--vary",
-        "k_p=5%,c=5%",
-        "--correlate",
-        "k_p:c=1e-400",
-        "--samples",
-        "10",
-    ]);
+    let o = bl(&argv(
+        "mc --vary k_p=5%,c=5% --correlate k_p:c=1e-400 --samples 10",
+    ));
     assert_bad(&o, &["invalid correlate", "k_p:c=1e-400"]);
     // what is typed still reads: 0 and the smallest normal spreads
     for ok in ["k_p=0,c=5%", "k_p=2.3e-308,c=5%"] {
@@ -35,41 +29,15 @@ fn a_spread_that_underflows_is_refused_naming_it() {
 fn subnormals_are_refused_by_every_flag_naming_it() {
     let cases: [(&[&str], &str); 5] = [
         (
-            &[
-                "oblique",
-                "--preset",
-                "tennis",
-                "--angle",
-                "30",
-                "--friction",
-                "1e-320",
-            ],
+            &argv("oblique --preset tennis --angle 30 --friction 1e-320"),
             "--friction",
         ),
         (
-            &[
-                "oblique",
-                "--preset",
-                "tennis",
-                "--angle",
-                "30",
-                "--friction",
-                "0.5",
-                "--spin",
-                "1e-320",
-            ],
+            &argv("oblique --preset tennis --angle 30 --friction 0.5 --spin 1e-320"),
             "--spin",
         ),
         (
-            &[
-                "collide",
-                "--preset",
-                "tennis",
-                "--target-mass",
-                "1",
-                "--target-speed",
-                "-1e-320",
-            ],
+            &argv("collide --preset tennis --target-mass 1 --target-speed -1e-320"),
             "--target-speed",
         ),
         (

@@ -6,7 +6,7 @@
 #![cfg(unix)]
 
 use crate::common;
-use common::{assert_bad, bl_at};
+use common::{argv, assert_bad, bl_at};
 use std::fs;
 use std::os::unix::fs::FileTypeExt;
 use std::path::Path;
@@ -117,17 +117,7 @@ fn a_link_to_a_device_is_replaced_itself_never_the_device() {
             .success()
     );
     std::os::unix::fs::symlink("fifo", d.join("plot.svg")).unwrap();
-    let o = bl_at(
-        d,
-        &[
-            "fit",
-            "--cor-table",
-            "cor.csv",
-            "--plot",
-            "plot.svg",
-            "--force",
-        ],
-    );
+    let o = bl_at(d, &argv("fit --cor-table cor.csv --plot plot.svg --force"));
     assert_eq!(o.code, 0, "{}", o.stderr);
     assert!(kind_of(&d.join("plot.svg")).is_file());
     assert!(kind_of(&d.join("fifo")).is_fifo());

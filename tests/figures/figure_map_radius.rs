@@ -44,14 +44,7 @@ fn the_map_svg_says_which_cells_pass_the_radius() {
     // within the radius, or a normalized ball (no radius), no note
     let slow = svg(d, &[&MAP[..], &["superball"]].concat());
     assert!(!slow.contains("outside the model"), "{slow}");
-    let norm = [
-        "map",
-        "--normalized",
-        "--lambda",
-        "0.1:10:3",
-        "--zeta",
-        "0.01:1:3",
-    ];
+    let norm = argv("map --normalized --lambda 0.1:10:3 --zeta 0.01:1:3");
     let norm = svg(d, &[&norm[..], &["--format", "svg"]].concat());
     assert!(!norm.contains("outside the model"), "{norm}");
 }
@@ -97,14 +90,7 @@ fn the_peers_figures_say_where_the_impacts_pass_the_radius() {
     );
     let s = svg(d, &[&peers[..], &["--to", "10"]].concat());
     assert!(!s.contains("outside the model"), "{s}");
-    let ft = [
-        "figure",
-        "peers-force-time",
-        "--preset",
-        "superball",
-        "--v0",
-        "45",
-    ];
+    let ft = argv("figure peers-force-time --preset superball --v0 45");
     let s = svg(d, &ft);
     assert!(
         s.contains("outside the model&apos;s range: z_m 31.05 mm &gt; radius 21.55 mm"),

@@ -45,16 +45,7 @@ fn a_figure_of_an_impact_past_the_radius_says_so() {
     // several balls: the one past its radius, named
     let s = svg(
         d,
-        &[
-            "figure",
-            "force-time",
-            "--preset",
-            "superball",
-            "--preset",
-            "golf",
-            "--v0",
-            "45",
-        ],
+        &argv("figure force-time --preset superball --preset golf --v0 45"),
     );
     assert!(s.contains(&format!("superball {PAST_Z}")), "{s}");
     assert!(!s.contains("golf outside"), "{s}");
@@ -66,15 +57,7 @@ fn a_figure_of_an_impact_past_the_radius_says_so() {
 fn a_fit_plot_past_the_radius_says_so() {
     let dir = tempfile::tempdir().unwrap();
     std::fs::write(dir.path().join("c.csv"), "v0,cor\n40,0.62\n45,0.6\n").unwrap();
-    let args = [
-        "fit",
-        "--preset",
-        "superball",
-        "--cor-table",
-        "c.csv",
-        "--free",
-        "k_r",
-    ];
+    let args = argv("fit --preset superball --cor-table c.csv --free k_r");
     let report = ok_at(dir.path(), &args);
     assert!(
         report.contains(
@@ -102,32 +85,13 @@ fn a_speed_figure_past_the_radius_says_from_where() {
     let d = dir.path();
     let past = "outside the model&apos;s range from v0 = 24.56 m/s: centre&apos;s α_max 21.66 mm \
                 &gt; radius 21.55 mm";
-    let s = svg(
-        d,
-        &[
-            "figure",
-            "cor-velocity",
-            "--preset",
-            "superball",
-            "--to",
-            "45",
-        ],
-    );
+    let s = svg(d, &argv("figure cor-velocity --preset superball --to 45"));
     assert!(s.contains(past), "{s}");
     let s = svg(d, &["figure", "cor-velocity", "--preset", "superball"]);
     assert!(!s.contains("outside the model"), "{s}");
     let s = svg(
         d,
-        &[
-            "figure",
-            "cor-velocity",
-            "--preset",
-            "superball",
-            "--preset",
-            "golf",
-            "--to",
-            "45",
-        ],
+        &argv("figure cor-velocity --preset superball --preset golf --to 45"),
     );
     assert!(s.contains(&format!("superball {past}")), "{s}");
 }

@@ -5,7 +5,7 @@
 
 use crate::common;
 use bouncelab::solver::{SolveOptions, simulate};
-use common::{bl_at, parse_svg};
+use common::{argv, bl_at, parse_svg};
 
 /// A superball's force trace of `n` samples, in `dir/trace.csv`.
 fn dense_trace(dir: &std::path::Path, n: usize) {
@@ -31,18 +31,9 @@ fn svg_of(dir: &std::path::Path, args: &[&str], file: &str) -> String {
 fn a_dense_trace_is_drawn_as_its_pixel_columns_extremes() {
     let d = tempfile::tempdir().unwrap();
     dense_trace(d.path(), 100_000);
-    let args = [
-        "figure",
-        "force-time",
-        "--preset",
-        "superball",
-        "--measured",
-        "trace.csv",
-        "--out",
-        "f.svg",
-        "--csv-out",
-        "f.csv",
-    ];
+    let args = argv(
+        "figure force-time --preset superball --measured trace.csv --out f.svg --csv-out f.csv",
+    );
     let svg = svg_of(d.path(), &args, "f.svg");
     // 10⁵ vertices were ~2 MB of path alone; the columns' extremes a few thousand
     assert!(svg.len() < 600_000, "{} bytes", svg.len());
@@ -59,16 +50,7 @@ fn a_dense_trace_is_drawn_as_its_pixel_columns_extremes() {
 fn a_trace_of_ordinary_length_is_drawn_as_it_is() {
     let d = tempfile::tempdir().unwrap();
     dense_trace(d.path(), 2_000);
-    let args = [
-        "figure",
-        "force-time",
-        "--preset",
-        "superball",
-        "--measured",
-        "trace.csv",
-        "--out",
-        "f.svg",
-    ];
+    let args = argv("figure force-time --preset superball --measured trace.csv --out f.svg");
     let fig = parse_svg(&svg_of(d.path(), &args, "f.svg"));
     assert!(
         fig.texts.iter().any(|t| t == "trace.csv"),
@@ -82,15 +64,7 @@ fn a_trace_of_ordinary_length_is_drawn_as_it_is() {
 fn a_fits_plot_of_a_dense_trace_stays_small() {
     let d = tempfile::tempdir().unwrap();
     dense_trace(d.path(), 100_000);
-    let args = [
-        "fit",
-        "--preset",
-        "superball",
-        "--force-time",
-        "trace.csv",
-        "--plot",
-        "p.svg",
-    ];
+    let args = argv("fit --preset superball --force-time trace.csv --plot p.svg");
     let o = bl_at(d.path(), &args);
     assert!(o.code == 0 || o.code == 1, "{}", o.stderr);
     let svg = std::fs::read_to_string(d.path().join("p.svg")).unwrap();

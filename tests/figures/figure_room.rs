@@ -124,23 +124,15 @@ fn figures_that_overlapped_no_longer_do() {
     // "softball" sat over the baseball's ▲
     let svg = figure(d, &["figure", "cor-zeta", "--preset", "softball"], "a.svg");
     check(&mut found, "cor-zeta softball", &svg);
-    let five = [
-        "--preset",
-        "tennis",
-        "--preset",
-        "softball",
-        "--preset",
-        "basketball",
-        "--preset",
-        "football",
-        "--preset",
-        "table-tennis",
-    ];
+    let five = argv(
+        "--preset tennis --preset softball --preset basketball --preset football \
+            --preset table-tennis",
+    );
     // "tennis" over "basketball" and the golf ball's ■; "e = 0.771" over "e = 0.79" and it
     // over "e = 0.881"; one "z_f" over another
     for name in ["cor-zeta", "cor-velocity", "force-displacement"] {
         let mut args = vec!["figure", name];
-        args.extend(five);
+        args.extend(&five);
         let svg = figure(d, &args, "b.svg");
         check(&mut found, &format!("{name}, five balls"), &svg);
     }

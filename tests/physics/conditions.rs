@@ -4,7 +4,7 @@
 
 use crate::common;
 
-use common::{assert_bad, bl, f, ok_calibrated};
+use common::{argv, assert_bad, bl, f, ok_calibrated};
 use serde_json::Value;
 
 fn json_calibrated(args: &[&str]) -> Value {
@@ -50,19 +50,10 @@ fn the_nominal_conditions_do_not_move_the_answer() {
 /// (p₀ + p_atm)·T/T₀ − p_atm, worked here in psi and converted, to 1 Pa.
 #[test]
 fn a_cold_football_reads_eleven_psi_in_the_answer() {
-    let v = json_calibrated(&[
-        "run",
-        "--preset",
-        "football",
-        "--pressure",
-        "12.5psi",
-        "--inflated-at",
-        "21.1",
-        "--temperature",
-        "4.4",
-        "--format",
-        "json",
-    ]);
+    let v = json_calibrated(&argv(
+        "run --preset football --pressure 12.5psi --inflated-at 21.1 --temperature 4.4 \
+            --format json",
+    ));
     let c = &v["conditions"];
     let atm_psi = 101_325.0 / PSI;
     let expected_psi = (12.5 + atm_psi) * (4.4 + 273.15) / (21.1 + 273.15) - atm_psi;
@@ -119,28 +110,13 @@ fn every_command_that_runs_a_ball_takes_the_conditions_and_states_them() {
         &["oblique", "--angle", "30", "--friction", "0.5"],
         &["court", "--friction", "0.5"],
         &["collide", "--target-mass", "1"],
-        &[
-            "bat",
-            "--bat-mass",
-            "0.6",
-            "--ball-speed",
-            "35",
-            "--bat-speed",
-            "25",
-        ],
+        &argv("bat --bat-mass 0.6 --ball-speed 35 --bat-speed 25"),
         &["peers"],
         &["mc", "--samples", "4", "--vary", "k_r=5%"],
     ];
     for run in runs {
         let mut args = run.to_vec();
-        args.extend([
-            "--preset",
-            "football",
-            "--pressure",
-            "0.6bar",
-            "--format",
-            "json",
-        ]);
+        args.extend(argv("--preset football --pressure 0.6bar --format json"));
         let v = json_calibrated(&args);
         assert_eq!(
             f(&v["conditions"], "pressure_gauge_pa"),
@@ -149,35 +125,14 @@ fn every_command_that_runs_a_ball_takes_the_conditions_and_states_them() {
         );
         assert_eq!(f(&v["conditions"], "temperature_c"), 20.0, "{args:?}");
     }
-    let map = json_calibrated(&[
-        "map",
-        "--preset",
-        "football",
-        "--pressure",
-        "0.6bar",
-        "--format",
-        "json",
-        "--lambda",
-        "0.5:2:3",
-        "--zeta",
-        "0.01:1:3",
-    ]);
+    let map = json_calibrated(&argv(
+        "map --preset football --pressure 0.6bar --format json --lambda 0.5:2:3 --zeta 0.01:1:3",
+    ));
     assert_eq!(f(&map["conditions"], "pressure_gauge_pa"), 60_000.0);
-    let shot = json_calibrated(&[
-        "shot",
-        "--preset",
-        "football",
-        "--pressure",
-        "0.6bar",
-        "--format",
-        "json",
-        "--speed",
-        "20",
-        "--height",
-        "1",
-        "--friction",
-        "0.5",
-    ]);
+    let shot = json_calibrated(&argv(
+        "shot --preset football --pressure 0.6bar --format json --speed 20 --height 1 \
+            --friction 0.5",
+    ));
     assert_eq!(f(&shot["conditions"], "pressure_gauge_pa"), 60_000.0);
 }
 
@@ -231,15 +186,7 @@ fn conditions_a_ball_cannot_take_are_refused_naming_the_field_and_the_ball() {
         assert_bad(&bl(args), needles);
     }
     assert_bad(
-        &bl(&[
-            "run",
-            "--preset",
-            "football",
-            "--pressure",
-            "1bar",
-            "--k-p",
-            "5e4",
-        ]),
+        &bl(&argv("run --preset football --pressure 1bar --k-p 5e4")),
         &["invalid pressure", "--k-p"],
     );
     assert_bad(
@@ -264,17 +211,9 @@ fn after_a_time_the_ball_has_leaked() {
         w.contains("72 h after inflation") && w.contains("limit of fifa-pressure-loss assumed")
     });
     assert!(warned, "{}", v["warnings"]);
-    let v = json_calibrated(&[
-        "run",
-        "--preset",
-        "football",
-        "--after",
-        "30d",
-        "--half-life",
-        "500h",
-        "--format",
-        "json",
-    ]);
+    let v = json_calibrated(&argv(
+        "run --preset football --after 30d --half-life 500h --format json",
+    ));
     let expected = 80_000.0 * 2f64.powf(-720.0 / 500.0);
     assert!((f(&v["conditions"], "pressure_gauge_pa") - expected).abs() < 1e-6);
 }
@@ -338,15 +277,7 @@ fn a_ball_off_its_standards_conditions_is_warned() {
                 .starts_with("off the test's conditions: ")
         })
     };
-    let base = [
-        "drop",
-        "--preset",
-        "football",
-        "--standard",
-        "fifa-quality-pro",
-        "--format",
-        "json",
-    ];
+    let base = argv("drop --preset football --standard fifa-quality-pro --format json");
     assert!(!warned(&base));
     let mut cold = base.to_vec();
     cold.extend(["--temperature", "5"]);
@@ -391,27 +322,15 @@ fn the_fifa_pressure_loss_test() {
     assert!((f(&v["conditions"], "pressure_gauge_pa") - p).abs() < 1e-6);
     assert_eq!(run("150h")["pressure_loss"]["verdict"], "fail");
     assert_bad(
-        &bl(&[
-            "drop",
-            "--preset",
-            "football",
-            "--standard",
-            "fifa-pressure-loss",
-        ]),
+        &bl(&argv(
+            "drop --preset football --standard fifa-pressure-loss",
+        )),
         &["invalid half-life", "fifa-pressure-loss"],
     );
     assert_bad(
-        &bl(&[
-            "drop",
-            "--preset",
-            "football",
-            "--standard",
-            "fifa-pressure-loss",
-            "--half-life",
-            "300h",
-            "--after",
-            "10h",
-        ]),
+        &bl(&argv(
+            "drop --preset football --standard fifa-pressure-loss --half-life 300h --after 10h",
+        )),
         &["give only --half-life"],
     );
 }

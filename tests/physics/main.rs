@@ -6,6 +6,8 @@
 
 #[path = "../support/common/mod.rs"]
 mod common;
+#[path = "../support/domain/mod.rs"]
+mod domain;
 #[path = "../support/seeded/mod.rs"]
 mod seeded;
 #[path = "../support/spread/mod.rs"]

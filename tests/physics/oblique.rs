@@ -1,7 +1,7 @@
 //! The oblique impact (docs/oblique.md): its limits in closed form, the independent
 //! integration over a grid, the energy balance, angle 90 against `run`, and bad input.
 
-use bouncelab::oblique::{self, Oblique, ObliqueError, mindlin_ratio, reference};
+use bouncelab::oblique::{self, Oblique, ObliqueError, ObliqueResponse, mindlin_ratio, reference};
 use bouncelab::{Ball, ImpactParams};
 
 const R: f64 = 0.0335;
@@ -201,6 +201,22 @@ fn ok() -> Oblique {
     }
 }
 
+/// The peak friction force (exact per phase, docs/oblique.md §3) is never exceeded by a
+/// dense history's largest, and comes within 1e-6 of it.
+pub fn assert_peak_friction_is_the_historys(r: &ObliqueResponse, angle: f64) {
+    let h = r.history.as_ref().unwrap();
+    let sampled = h.friction_force.iter().fold(0.0f64, |m, f| m.max(f.abs()));
+    let peak = r.max_friction_force;
+    assert!(
+        sampled <= peak * (1.0 + 1e-12),
+        "{angle}°: {sampled} > {peak}"
+    );
+    assert!(
+        sampled >= peak * (1.0 - 1e-6),
+        "{angle}°: {sampled} ≪ {peak}"
+    );
+}
+
 #[test]
 fn the_peak_friction_force_is_the_historys_largest() {
     // exact per phase (docs/oblique.md §3): a dense history never exceeds it, and comes close
@@ -209,16 +225,6 @@ fn the_peak_friction_force_is_the_historys_largest() {
     for (angle, spin, mu) in [(16.0, 300.0, 0.6), (45.0, -200.0, 2.0), (70.0, 0.0, 0.3)] {
         let o = setup(angle, spin, mu, kt, 0.55);
         let r = oblique::solve(&p, 25.0, &o, 20_001).unwrap();
-        let h = r.history.as_ref().unwrap();
-        let sampled = h.friction_force.iter().fold(0.0f64, |m, f| m.max(f.abs()));
-        let peak = r.max_friction_force;
-        assert!(
-            sampled <= peak * (1.0 + 1e-12),
-            "{angle}°: {sampled} > {peak}"
-        );
-        assert!(
-            sampled >= peak * (1.0 - 1e-6),
-            "{angle}°: {sampled} ≪ {peak}"
-        );
+        assert_peak_friction_is_the_historys(&r, angle);
     }
 }

@@ -7,23 +7,13 @@
 use crate::common;
 use bouncelab::api::ObliqueSpec;
 use bouncelab::{Ball, BallError};
-use common::bad;
+use common::{argv, bad};
 
 #[test]
 fn a_tiny_inertia_factor_is_refused_naming_it() {
     // the issue's reproduction: 9.9 GB asked, abort (exit 134)
     bad(
-        &[
-            "oblique",
-            "--preset",
-            "tennis",
-            "--angle",
-            "16",
-            "--friction",
-            "0.6",
-            "--inertia-factor",
-            "1e-15",
-        ],
+        &argv("oblique --preset tennis --angle 16 --friction 0.6 --inertia-factor 1e-15"),
         &["invalid inertia_factor: 1e-15", "search steps"],
     );
 }
@@ -32,19 +22,10 @@ fn a_tiny_inertia_factor_is_refused_naming_it() {
 fn a_huge_tangential_stiffness_is_refused_naming_it() {
     // the issue's reproduction: "capacity overflow", exit 101
     bad(
-        &[
-            "oblique",
-            "--preset",
-            "tennis",
-            "--law",
-            "hertz",
-            "--angle",
-            "30",
-            "--friction",
-            "0.4",
-            "--tangential-stiffness",
-            "1e308",
-        ],
+        &argv(
+            "oblique --preset tennis --law hertz --angle 30 --friction 0.4 \
+            --tangential-stiffness 1e308",
+        ),
         &["invalid tangential_stiffness: 1e308", "1e-15 … 1e15"],
     );
     for k in ["1e-16", "1e16"] {
@@ -68,17 +49,7 @@ fn a_huge_tangential_stiffness_is_refused_naming_it() {
 #[test]
 fn peers_export_bounds_the_tangential_stiffness() {
     bad(
-        &[
-            "peers",
-            "--preset",
-            "tennis",
-            "--export",
-            "json",
-            "--friction",
-            "0.5",
-            "--tangential-stiffness",
-            "1e308",
-        ],
+        &argv("peers --preset tennis --export json --friction 0.5 --tangential-stiffness 1e308"),
         &["invalid tangential_stiffness: 1e308"],
     );
 }

@@ -3,6 +3,7 @@
 //! peak friction, no dashpot as before, and a gripping tennis bounce brought to the measured
 //! e_x.
 
+use crate::oblique::assert_peak_friction_is_the_historys;
 use bouncelab::oblique::{self, Oblique, ObliqueError, mindlin_ratio, reference};
 use bouncelab::{Ball, ImpactParams};
 
@@ -112,17 +113,7 @@ fn the_peak_friction_force_is_the_historys_largest_with_a_dashpot() {
         for (angle, spin, mu) in [(16.0, 300.0, 0.6), (45.0, -200.0, 2.0), (70.0, 0.0, 0.3)] {
             let o = damped(angle, spin, mu, kt, ct);
             let r = oblique::solve(&p, 25.0, &o, 20_001).unwrap();
-            let h = r.history.as_ref().unwrap();
-            let sampled = h.friction_force.iter().fold(0.0f64, |m, f| m.max(f.abs()));
-            let peak = r.max_friction_force;
-            assert!(
-                sampled <= peak * (1.0 + 1e-12),
-                "{angle}°: {sampled} > {peak}"
-            );
-            assert!(
-                sampled >= peak * (1.0 - 1e-6),
-                "{angle}°: {sampled} ≪ {peak}"
-            );
+            assert_peak_friction_is_the_historys(&r, angle);
         }
     }
 }

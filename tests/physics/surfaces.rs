@@ -3,7 +3,7 @@
 //! and e, and its calibration to a measured (μ, e).
 
 use crate::common;
-use common::{assert_bad, bl, bl_in, f, json};
+use common::{argv, assert_bad, bl, bl_in, f, json};
 
 /// The ITF formula (ITF CS 01/02).
 fn cpr(mu: f64, e: f64) -> f64 {
@@ -16,26 +16,10 @@ fn cpr(mu: f64, e: f64) -> f64 {
 /// rigid plate's 49.2. On the old code `--surface-cor` did not exist (exit 2).
 #[test]
 fn court_pace_is_rated_by_the_courts_own_e() {
-    let rigid = json(&[
-        "court",
-        "--preset",
-        "tennis",
-        "--friction",
-        "0.6",
-        "--format",
-        "json",
-    ]);
-    let court = json(&[
-        "court",
-        "--preset",
-        "tennis",
-        "--friction",
-        "0.6",
-        "--surface-cor",
-        "0.81",
-        "--format",
-        "json",
-    ]);
+    let rigid = json(&argv("court --preset tennis --friction 0.6 --format json"));
+    let court = json(&argv(
+        "court --preset tennis --friction 0.6 --surface-cor 0.81 --format json",
+    ));
     let e = f(&court, "cor_normal");
     assert!((e - 0.81).abs() < 0.002, "e {e}");
     let mu = f(&court, "apparent_friction");
@@ -122,19 +106,9 @@ fn a_calibrated_court_returns_its_e_at_every_reachable_value() {
     }
     // a court that moves (0.5 kg under the ball) is calibrated as it moves: it carries energy
     // off, so its reach is lower (0.394–0.671 at K_s = K_p)
-    let c = json(&[
-        "court",
-        "--preset",
-        "tennis",
-        "--friction",
-        "0.6",
-        "--surface-mass",
-        "0.5",
-        "--surface-cor",
-        "0.6",
-        "--format",
-        "json",
-    ]);
+    let c = json(&argv(
+        "court --preset tennis --friction 0.6 --surface-mass 0.5 --surface-cor 0.6 --format json",
+    ));
     assert!(
         (f(&c, "cor_normal") - 0.6).abs() < 0.002,
         "{}",
@@ -145,15 +119,9 @@ fn a_calibrated_court_returns_its_e_at_every_reachable_value() {
 
 #[test]
 fn an_e_out_of_reach_says_the_range() {
-    let o = bl(&[
-        "court",
-        "--preset",
-        "tennis",
-        "--friction",
-        "0.6",
-        "--surface-cor",
-        "0.95",
-    ]);
+    let o = bl(&argv(
+        "court --preset tennis --friction 0.6 --surface-cor 0.95",
+    ));
     assert_bad(&o, &["invalid surface_cor: 0.95", "reaches 0.55", "0.848"]);
     let o = bl(&["court", "--preset", "tennis", "--surface", "clay"]);
     assert_bad(&o, &["the surface clay gives no μ", "--friction"]);
@@ -249,55 +217,20 @@ fn a_gripping_bounce_on_a_hard_court_reaches_published_e_x() {
 
 #[test]
 fn oblique_at_90_degrees_is_collide_on_the_same_surface() {
-    let o = json(&[
-        "oblique",
-        "--preset",
-        "tennis",
-        "--angle",
-        "90",
-        "--v0",
-        "20",
-        "--friction",
-        "0.6",
-        "--surface-stiffness",
-        "3e4",
-        "--surface-damping",
-        "40",
-        "--format",
-        "json",
-    ]);
-    let c = json(&[
-        "collide",
-        "--preset",
-        "tennis",
-        "--v0",
-        "20",
-        "--target-mass",
-        "inf",
-        "--target-stiffness",
-        "3e4",
-        "--target-damping",
-        "40",
-        "--format",
-        "json",
-    ]);
+    let o = json(&argv(
+        "oblique --preset tennis --angle 90 --v0 20 --friction 0.6 --surface-stiffness 3e4 \
+            --surface-damping 40 --format json",
+    ));
+    let c = json(&argv(
+        "collide --preset tennis --v0 20 --target-mass inf --target-stiffness 3e4 \
+            --target-damping 40 --format json",
+    ));
     assert_eq!(f(&o, "cor_normal"), f(&c, "cor"));
     assert!((f(&o, "v_out") - f(&c, "ball_speed_out")).abs() < 1e-12 * 20.0);
-    let s = json(&[
-        "collide",
-        "--preset",
-        "tennis",
-        "--v0",
-        "20",
-        "--surface-stiffness",
-        "3e4",
-        "--surface-damping",
-        "40",
-        "--surface-mass",
-        "inf",
-        "--format",
-        "json",
-    ]);
+    let s = json(&argv(
+        "collide --preset tennis --v0 20 --surface-stiffness 3e4 --surface-damping 40 \
+            --surface-mass inf --format json",
+    ));
     assert_eq!(f(&s, "cor"), f(&c, "cor"));
 }
 
@@ -343,17 +276,7 @@ fn user_surfaces_are_read_beside_user_presets_and_checked() {
     .unwrap();
     let o = bl_in(
         dir.path(),
-        &[
-            "collide",
-            "--preset",
-            "tennis",
-            "--v0",
-            "20",
-            "--surface",
-            "gym",
-            "--format",
-            "json",
-        ],
+        &argv("collide --preset tennis --v0 20 --surface gym --format json"),
     );
     assert_eq!(o.code, 0, "{}", o.stderr);
     let v: serde_json::Value = serde_json::from_str(&o.stdout).unwrap();
@@ -370,15 +293,7 @@ fn user_surfaces_are_read_beside_user_presets_and_checked() {
     std::fs::remove_file(folder.join("bad.toml")).unwrap();
     let o = bl_in(
         dir.path(),
-        &[
-            "court",
-            "--preset",
-            "tennis",
-            "--friction",
-            "0.5",
-            "--surface",
-            "nope",
-        ],
+        &argv("court --preset tennis --friction 0.5 --surface nope"),
     );
     assert_bad(&o, &["unknown surface 'nope'"]);
 }
@@ -387,30 +302,13 @@ fn user_surfaces_are_read_beside_user_presets_and_checked() {
 /// and contact time); on the rigid plate it is today's run with the surface named.
 #[test]
 fn run_on_a_surface_is_collide_against_it_at_rest() {
-    let r = json(&[
-        "run",
-        "--preset",
-        "tennis",
-        "--surface-stiffness",
-        "24713",
-        "--surface-damping",
-        "50",
-        "--format",
-        "json",
-    ]);
-    let c = json(&[
-        "collide",
-        "--preset",
-        "tennis",
-        "--target-mass",
-        "inf",
-        "--target-stiffness",
-        "24713",
-        "--target-damping",
-        "50",
-        "--format",
-        "json",
-    ]);
+    let r = json(&argv(
+        "run --preset tennis --surface-stiffness 24713 --surface-damping 50 --format json",
+    ));
+    let c = json(&argv(
+        "collide --preset tennis --target-mass inf --target-stiffness 24713 --target-damping 50 \
+            --format json",
+    ));
     for (a, b) in [
         ("cor", "cor"),
         ("max_force", "max_force"),
@@ -429,15 +327,9 @@ fn run_on_a_surface_is_collide_against_it_at_rest() {
         serde_json::json!(["stiffness", "damping"])
     );
     let plate = json(&["run", "--preset", "tennis", "--format", "json"]);
-    let concrete = json(&[
-        "run",
-        "--preset",
-        "tennis",
-        "--surface",
-        "concrete",
-        "--format",
-        "json",
-    ]);
+    let concrete = json(&argv(
+        "run --preset tennis --surface concrete --format json",
+    ));
     assert_eq!(f(&plate, "cor"), f(&concrete, "cor"));
     assert_eq!(concrete["surface"]["name"], "concrete");
     let o = bl(&["run", "--preset", "tennis", "--surface-stiffness", "-1"]);
@@ -448,14 +340,7 @@ fn run_on_a_surface_is_collide_against_it_at_rest() {
 /// rest; on the rigid plate nothing moves.
 #[test]
 fn drop_bounces_on_its_surface() {
-    let give = [
-        "--surface-stiffness",
-        "2e5",
-        "--surface-damping",
-        "100",
-        "--format",
-        "json",
-    ];
+    let give = argv("--surface-stiffness 2e5 --surface-damping 100 --format json");
     let base = ["drop", "--preset", "basketball", "--standard", "fiba"];
     let d = json(&[&base[..], &give[..]].concat());
     let plate = json(&[&base[..], &["--format", "json"][..]].concat());

@@ -11,11 +11,13 @@
 //!   1e-12: the adaptive solver at rtol 1e-14 (DOPRI5 at its tightest; an independent
 //!   integration, of another method in another variable), the exact solver for the linear law.
 
+use crate::domain;
 use crate::seeded;
 
 use bouncelab::solver::table;
 use bouncelab::solver::taylor::{Summary, summary};
 use bouncelab::{ContactLaw, ImpactParams, ImpactResponse, SolveOptions, simulate};
+use domain::ball;
 use proptest::prelude::*;
 use proptest::test_runner::{RngSeed, TestCaseError};
 use seeded::Seeded;
@@ -31,59 +33,6 @@ fn config(cases: u32) -> ProptestConfig {
         },
         ..from_env
     }
-}
-
-/// log-uniform in [lo, hi]
-fn log_range(lo: f64, hi: f64) -> impl Strategy<Value = f64> {
-    (lo.ln()..=hi.ln()).prop_map(f64::exp)
-}
-
-/// λ as tests/physics/properties.rs draws it.
-fn lambda() -> impl Strategy<Value = f64> {
-    prop_oneof![
-        1 => Just(0.0),
-        1 => Just(1e4),
-        6 => log_range(1e-6, 1e4),
-        2 => log_range(1e-11, 1e-6),
-        1 => log_range(1e-15, 1e-11),
-        2 => 0.0..=1e4,
-    ]
-}
-
-/// ζ as tests/physics/properties.rs draws it.
-fn zeta() -> impl Strategy<Value = f64> {
-    prop_oneof![
-        1 => Just(1e-4),
-        1 => Just(1e4),
-        1 => Just(1.0),
-        8 => log_range(1e-4, 1e4),
-    ]
-}
-
-/// A ball as tests/physics/properties.rs draws it.
-fn ball() -> impl Strategy<Value = ImpactParams> {
-    (
-        lambda(),
-        zeta(),
-        prop_oneof![1 => Just(200.0), 9 => log_range(1e-3, 200.0)],
-        log_range(1e-3, 10.0),
-        log_range(1e2, 1e8),
-        prop_oneof![1 => Just(f64::INFINITY), 5 => log_range(1e-8, 1e-1)],
-        log_range(0.1, 10.0),
-    )
-        .prop_map(|(lambda, zeta, v0, mass, k_p, z_p, k_h_factor)| {
-            let k_h_at = if z_p.is_finite() { z_p } else { 1e-3 };
-            ImpactParams {
-                mass,
-                k_p,
-                damping: 1.0,
-                k_r: 0.0,
-                z_p,
-                k_h: ImpactParams::k_h_matching(k_p, k_h_at) * k_h_factor,
-                v0,
-            }
-            .with_lambda_zeta(lambda, zeta)
-        })
 }
 
 /// The largest difference between the Taylor summary and a solver's response, each quantity

@@ -2,6 +2,7 @@
 //! to, labelled by the file name; a bad file is refused before the terminal is asked for.
 
 use crate::common;
+use crate::tui_common;
 
 use bouncelab::figure::explorer::{Chart, MeasuredOverlay};
 use bouncelab::measured::parse_any;
@@ -10,26 +11,11 @@ use bouncelab::tui::app::App;
 use bouncelab::tui::ui::figure;
 use common::*;
 
-fn pulse() -> String {
-    let mut s = String::from("time_ms,force_N\n");
-    for i in 0..300 {
-        let t = i as f64 * 0.02;
-        let x = (t - 1.0) / 3.0;
-        let f = if (0.0..=1.0).contains(&x) {
-            100.0 * (std::f64::consts::PI * x).sin()
-        } else {
-            0.0
-        };
-        s.push_str(&format!("{t},{f}\n"));
-    }
-    s
-}
-
 #[test]
 fn the_explorer_draws_measured_data_on_its_charts() {
     let ball = Preset::embedded().remove(0);
     let p = ball.params();
-    let data = parse_any(&pulse()).unwrap();
+    let data = parse_any(&tui_common::half_sine_csv(300, 0.02)).unwrap();
     let overlays = MeasuredOverlay::from_data(&data, "plate.csv", p.mass, p.v0).unwrap();
     let app = App::new(ball, false).with_measured(overlays);
     for chart in [Chart::ForceTime, Chart::Hysteresis] {
@@ -47,15 +33,7 @@ fn the_explorer_draws_measured_data_on_its_charts() {
         );
     }
     // drawn on a screen: the legend names the file
-    let mut t = ratatui::Terminal::new(ratatui::backend::TestBackend::new(160, 48)).unwrap();
-    t.draw(|f| f.render_widget(&app, f.area())).unwrap();
-    let screen: String = t
-        .backend()
-        .buffer()
-        .content()
-        .iter()
-        .map(|c| c.symbol())
-        .collect();
+    let screen = tui_common::screen_text(&tui_common::draw(&app, 160, 48)).concat();
     assert!(screen.contains("plate.csv"), "the legend names the file");
     // on the force–time chart the pulse starts at t = 0
     let fig = figure(&app, Chart::ForceTime);
@@ -78,7 +56,11 @@ fn a_bad_measured_file_is_refused_before_the_terminal() {
         &bl_at(dir.path(), &["--measured", "bad.csv"]),
         &["bad.csv:2:3: force 'zero' is not a number"],
     );
-    std::fs::write(dir.path().join("good.csv"), pulse()).unwrap();
+    std::fs::write(
+        dir.path().join("good.csv"),
+        tui_common::half_sine_csv(300, 0.02),
+    )
+    .unwrap();
     assert_bad(
         &bl_at(dir.path(), &["--measured", "good.csv"]),
         &["needs a terminal"],

@@ -7,7 +7,7 @@ use crate::tui_common;
 
 use bouncelab::preset::Preset;
 use bouncelab::tui::action::{self, Action, Mode};
-use bouncelab::tui::app::{App, Effect, Overlay};
+use bouncelab::tui::app::{App, Overlay};
 use bouncelab::tui::export;
 use ratatui::Terminal;
 use ratatui::backend::TestBackend;
@@ -15,7 +15,7 @@ use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
 use serde_json::Value;
 use std::fs;
 use std::path::Path;
-use tui_common::type_keys;
+use tui_common::{export_of, type_keys};
 
 fn app(i: usize) -> App {
     App::new(Preset::embedded().remove(i), true)
@@ -182,13 +182,7 @@ fn every_export_csv_starts_with_the_line_and_the_parameters() {
     type_keys(&mut a, "2vp1lll");
     let line = shown(&mut a);
     let effects = type_keys(&mut a, "e");
-    let request = effects
-        .into_iter()
-        .find_map(|e| match e {
-            Effect::Export(r) => Some(r),
-            _ => None,
-        })
-        .expect("an export");
+    let request = export_of(effects);
     let files = export::write(&request, dir.path()).unwrap();
     let csvs: Vec<_> = files
         .iter()

@@ -9,6 +9,33 @@ use crate::pty;
 use pty::{Explorer, HIDE_CURSOR, assert_restored, modes, signal};
 use rustix::process::Signal;
 use std::fs;
+use std::path::Path;
+
+/// The explorer with no ball, its first frame drawn (up to the cursor hidden at its end), and
+/// the terminal's modes before it started.
+fn started(home: &Path) -> (Explorer, String) {
+    let mut x = Explorer::spawn(home, None, &[]);
+    let before = modes(&x.before);
+    x.wait_for_first_draw();
+    x.wait_for(HIDE_CURSOR);
+    (x, before)
+}
+
+/// The explorer, sent `sig` (number `n`) after its first frame, gives the terminal back as it
+/// was and exits with 128 + n.
+fn assert_signal_ends_it_restored(sig: Signal, n: i32) {
+    let home = tempfile::tempdir().unwrap();
+    let (x, before) = started(home.path());
+    x.signal(sig);
+    let (status, after, out) = x.finish();
+    assert_eq!(
+        status.code(),
+        Some(128 + n),
+        "signal {n}: {status:?}, killed by {:?}",
+        signal(&status)
+    );
+    assert_restored(&before, &after, &out);
+}
 
 #[test]
 fn each_signal_restores_the_terminal_and_exits_128_plus_n() {
@@ -18,20 +45,7 @@ fn each_signal_restores_the_terminal_and_exits_128_plus_n() {
         (Signal::INT, 2),
         (Signal::QUIT, 3),
     ] {
-        let home = tempfile::tempdir().unwrap();
-        let mut x = Explorer::spawn(home.path(), None, &[]);
-        let before = modes(&x.before);
-        x.wait_for_first_draw();
-        x.wait_for(HIDE_CURSOR); // the end of the first frame
-        x.signal(sig);
-        let (status, after, out) = x.finish();
-        assert_eq!(
-            status.code(),
-            Some(128 + n),
-            "signal {n}: {status:?}, killed by {:?}",
-            signal(&status)
-        );
-        assert_restored(&before, &after, &out);
+        assert_signal_ends_it_restored(sig, n);
     }
 }
 
@@ -68,20 +82,7 @@ fn other_terminating_signals_restore_the_terminal_too() {
         (Signal::XCPU, 24),
         (Signal::ABORT, 6),
     ] {
-        let home = tempfile::tempdir().unwrap();
-        let mut x = Explorer::spawn(home.path(), None, &[]);
-        let before = modes(&x.before);
-        x.wait_for_first_draw();
-        x.wait_for(HIDE_CURSOR);
-        x.signal(sig);
-        let (status, after, out) = x.finish();
-        assert_eq!(
-            status.code(),
-            Some(128 + n),
-            "signal {n}: {status:?}, killed by {:?}",
-            signal(&status)
-        );
-        assert_restored(&before, &after, &out);
+        assert_signal_ends_it_restored(sig, n);
     }
 }
 
@@ -99,10 +100,7 @@ fn ctrl_z_and_sigtstp_suspend_with_the_terminal_restored_and_sigcont_redraws() {
     use rustix::termios::LocalModes;
     for how in ["ctrl-z", "sigtstp"] {
         let home = tempfile::tempdir().unwrap();
-        let mut x = Explorer::spawn(home.path(), None, &[]);
-        let before = modes(&x.before);
-        x.wait_for_first_draw();
-        x.wait_for(HIDE_CURSOR);
+        let (mut x, before) = started(home.path());
         match how {
             "ctrl-z" => x.send(b"\x1a"),
             _ => x.signal(Signal::TSTP),
@@ -146,10 +144,7 @@ fn ctrl_z_and_sigtstp_suspend_with_the_terminal_restored_and_sigcont_redraws() {
 fn a_key_after_a_burst_of_resizes_is_not_lost() {
     for trial in 0..3 {
         let home = tempfile::tempdir().unwrap();
-        let mut x = Explorer::spawn(home.path(), None, &[]);
-        let before = modes(&x.before);
-        x.wait_for_first_draw();
-        x.wait_for(HIDE_CURSOR);
+        let (mut x, before) = started(home.path());
         // the burst and the key come while the explorer reads nothing (stopped, as when it is
         // busy or its output is blocked): on waking it finds both the resizes and the key
         x.signal(Signal::STOP);
@@ -175,10 +170,7 @@ fn a_key_typed_while_the_explorer_draws_a_resize_is_not_lost() {
     // until the next key); a trial that loses it fails at `finish`'s timeout
     for trial in 0..10 {
         let home = tempfile::tempdir().unwrap();
-        let mut x = Explorer::spawn(home.path(), None, &[]);
-        let before = modes(&x.before);
-        x.wait_for_first_draw();
-        x.wait_for(HIDE_CURSOR);
+        let (mut x, before) = started(home.path());
         x.resize(400, 150);
         std::thread::sleep(std::time::Duration::from_millis(30));
         x.resize(401, 150);

@@ -2,6 +2,8 @@
 //! in the header. Never overwriting, valid SVG, the documented CSV headers, and figures drawn
 //! from the curves the state already holds.
 
+use crate::tui_common;
+
 use bouncelab::preset::Preset;
 use bouncelab::tui::action::{self, Action};
 use bouncelab::tui::app::{App, Effect, Severity, View};
@@ -12,6 +14,7 @@ use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
 use std::cell::RefCell;
 use std::fs;
 use std::path::{Path, PathBuf};
+use tui_common::file_names;
 
 thread_local! {
     /// The effects `update` returned that the test has not carried out yet, as the event
@@ -80,13 +83,6 @@ fn perform(app: &mut App, dir: &Path) -> Vec<PathBuf> {
     files
 }
 
-fn names(files: &[PathBuf]) -> Vec<String> {
-    files
-        .iter()
-        .map(|f| f.file_name().unwrap().to_string_lossy().into_owned())
-        .collect()
-}
-
 fn message(app: &App) -> (String, Severity) {
     let m = app.message().expect("a message");
     (m.text.clone(), m.severity)
@@ -105,7 +101,7 @@ fn e_asks_for_the_views_charts_and_the_loop_writes_them() {
     let dir = tempfile::tempdir().unwrap();
     let files = perform(&mut app, dir.path());
     assert_eq!(
-        names(&files),
+        file_names(&files),
         [
             "bouncelab-superball-force-time-1.svg",
             "bouncelab-superball-force-time-1.csv",
@@ -141,7 +137,7 @@ fn exporting_twice_never_overwrites() {
     press(&mut app, "lle");
     let second = perform(&mut app, dir.path());
     assert!(
-        names(&second)
+        file_names(&second)
             .iter()
             .all(|n| n.ends_with("-2.svg") || n.ends_with("-2.csv"))
     );
@@ -162,7 +158,7 @@ fn exporting_twice_never_overwrites() {
     let third = perform(&mut app, dir.path());
     let n = if cfg!(unix) { "5" } else { "4" };
     assert!(
-        names(&third)
+        file_names(&third)
             .iter()
             .all(|f| f.ends_with(&format!("-{n}.svg")) || f.ends_with(&format!("-{n}.csv"))),
         "{third:?}"
@@ -186,7 +182,7 @@ fn pictures_parse_and_data_files_have_the_documented_headers() {
     assert_eq!(app.view(), View::Sweeps);
     let sweeps = perform(&mut app, dir.path());
     assert_eq!(
-        names(&sweeps),
+        file_names(&sweeps),
         [
             "bouncelab-superball-force-zeta-1.svg",
             "bouncelab-superball-force-zeta-1.csv",

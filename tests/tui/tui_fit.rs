@@ -3,6 +3,7 @@
 //! (`bouncelab::tui::views::fit::state::run`), and the fit pane drawn on a TestBackend.
 
 use crate::fit_common;
+use crate::tui_common;
 
 use bouncelab::figure::explorer::Chart;
 use bouncelab::measured::Data;
@@ -16,6 +17,7 @@ use bouncelab::{ContactLaw, ImpactParams, SolveOptions, simulate};
 use ratatui::Terminal;
 use ratatui::backend::TestBackend;
 use std::path::{Path, PathBuf};
+use tui_common::{draw, screen_text};
 
 /// COR at five speeds from the solver on `p` (linear law), past the flattening onset, with
 /// noise of sd 0.005: what an air cannon would give.
@@ -65,12 +67,6 @@ fn ask_fit(app: &mut App) -> FitRequest {
 /// The worker's part: run the fit, hand its answer back.
 fn answer(app: &mut App, r: &FitRequest) {
     app.update(Action::FitReady(r.id, measured::run(r).into()));
-}
-
-fn screen(app: &App, w: u16, h: u16) -> Terminal<TestBackend> {
-    let mut t = Terminal::new(TestBackend::new(w, h)).unwrap();
-    t.draw(|f| f.render_widget(app, f.area())).unwrap();
-    t
 }
 
 fn text(t: &Terminal<TestBackend>) -> String {
@@ -152,7 +148,7 @@ fn the_load_error_is_on_screen_with_file_line_and_column() {
     std::fs::write(&bad, "t,F\n0,zero\n").unwrap();
     let msg = measured::load(&bad).unwrap_err();
     app.update(Action::MeasuredFailed { msg });
-    let shown = text(&screen(&app, 160, 40));
+    let shown = text(&draw(&app, 160, 40));
     let rows: Vec<&str> = shown.lines().collect();
     // the message has its own line(s) above the key hints
     let s = bouncelab::tui::ui::screen(&app, ratatui::layout::Rect::new(0, 0, 160, 40)).unwrap();
@@ -278,11 +274,11 @@ fn the_fit_pane() {
     let (mut app, _) = loaded(dir.path());
     app.update(Action::NextView);
     let r = ask_fit(&mut app);
-    let t = screen(&app, 120, 40);
+    let t = draw(&app, 120, 40);
     assert!(text(&t).contains("fitting k_r, z_p…"));
     insta::assert_snapshot!("fit_pane_running", t.backend());
     answer(&mut app, &r);
-    let t = screen(&app, 120, 40);
+    let t = draw(&app, 120, 40);
     let s = text(&t);
     for needle in [
         "k_r = ",
@@ -299,11 +295,11 @@ fn the_fit_pane() {
         dir: Dir::Up,
         coarse: false,
     });
-    let t = screen(&app, 120, 40);
+    let t = draw(&app, 120, 40);
     assert!(text(&t).contains("stale: the ball changed since f"));
     insta::assert_snapshot!("fit_pane_stale", t.backend());
     // at 80×24 the pane still shows its values
-    let s = text(&screen(&app, 80, 24));
+    let s = text(&draw(&app, 80, 24));
     assert!(s.contains("k_r = "), "{s}");
 }
 
@@ -342,7 +338,7 @@ fn an_unpinned_parameter_is_said_so() {
     });
     let r = ask_fit(&mut app);
     answer(&mut app, &r);
-    let s = text(&screen(&app, 120, 40));
+    let s = text(&draw(&app, 120, 40));
     assert!(
         s.contains("k_r = ") && s.contains("not pinned by the data"),
         "{s}"
@@ -401,18 +397,7 @@ fn o_asks_before_putting_away_and_u_puts_back() {
     assert!(data.is_some() && pane.is_some());
     app.update(Action::ClearMeasured);
     assert!(matches!(app.overlay(), Overlay::Ask(_)), "asks first");
-    let t = {
-        let mut t = Terminal::new(TestBackend::new(100, 30)).unwrap();
-        t.draw(|f| f.render_widget(&app, f.area())).unwrap();
-        t
-    };
-    let screen: String = t
-        .backend()
-        .buffer()
-        .content()
-        .iter()
-        .map(|c| c.symbol())
-        .collect();
+    let screen = screen_text(&draw(&app, 100, 30)).concat();
     assert!(
         screen.contains("Put away the measured data and the fit?"),
         "{screen}"

@@ -4,25 +4,10 @@
 #![cfg(unix)]
 
 use crate::pty;
+use crate::tui_common;
 
-use pty::{Explorer, assert_restored, modes};
+use pty::{Explorer, modes};
 use std::time::Duration;
-
-/// A half-sine pulse of 100 N over 3 ms, on a 60 µs clock that starts 1 ms before it.
-fn pulse() -> String {
-    let mut s = String::from("time_ms,force_N\n");
-    for i in 0..100 {
-        let t = i as f64 * 0.06;
-        let x = (t - 1.0) / 3.0;
-        let f = if (0.0..=1.0).contains(&x) {
-            100.0 * (std::f64::consts::PI * x).sin()
-        } else {
-            0.0
-        };
-        s.push_str(&format!("{t},{f}\n"));
-    }
-    s
-}
 
 #[test]
 fn o_names_a_bad_file_then_f_fits_and_shift_f_applies() {
@@ -30,7 +15,7 @@ fn o_names_a_bad_file_then_f_fits_and_shift_f_applies() {
     let bad = home.path().join("bad.csv");
     std::fs::write(&bad, "t,F\n0,zero\n").unwrap();
     let good = home.path().join("plate.csv");
-    std::fs::write(&good, pulse()).unwrap();
+    std::fs::write(&good, tui_common::half_sine_csv(100, 0.06)).unwrap();
     let mut x = Explorer::spawn(home.path(), None, &[]);
     let before = modes(&x.before);
     x.wait_for_first_draw();
@@ -59,7 +44,5 @@ fn o_names_a_bad_file_then_f_fits_and_shift_f_applies() {
     x.send(b"q");
     x.wait_for("Quit");
     x.send(b"q");
-    let (status, after, out) = x.finish();
-    assert!(status.success(), "{status:?}\n{}", out.escape_debug());
-    assert_restored(&before, &after, &out);
+    x.finish_restored(&before);
 }

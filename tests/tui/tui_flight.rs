@@ -7,8 +7,8 @@ use crate::tui_common;
 
 use bouncelab::preset::Preset;
 use bouncelab::tui::action::{Action, Mode};
-use bouncelab::tui::app::{App, Effect, View};
-use bouncelab::tui::export::{self, ExportRequest};
+use bouncelab::tui::app::{App, View};
+use bouncelab::tui::export;
 use bouncelab::tui::views::flight::param::FlightParam;
 use ratatui::crossterm::event::KeyCode;
 use serde_json::Value;
@@ -125,13 +125,7 @@ fn the_keys_step_fine_and_coarse_and_a_refused_value_is_kept_out() {
 fn e_exports_the_path_headed_by_the_shot_line() {
     let mut app = serve();
     let effects = app.update(Action::Export);
-    let request: ExportRequest = effects
-        .into_iter()
-        .find_map(|e| match e {
-            Effect::Export(r) => Some(r),
-            _ => None,
-        })
-        .expect("an export");
+    let request = export_of(effects);
     assert_eq!(request.header[0], format!("# {}", app.command_line()));
     assert!(
         request.header[1].contains("bounce 1: t 0.366"),
@@ -140,10 +134,7 @@ fn e_exports_the_path_headed_by_the_shot_line() {
     );
     let dir = tempfile::tempdir().unwrap();
     let files = export::write(&request, dir.path()).unwrap();
-    let names: Vec<String> = files
-        .iter()
-        .map(|f| f.file_name().unwrap().to_string_lossy().into_owned())
-        .collect();
+    let names = file_names(&files);
     assert_eq!(
         names,
         [

@@ -158,6 +158,14 @@ fn measured_marker_letters_never_collide() {
     let mark = speed.series.iter().find(|s| s.id == "measured cor");
     assert_eq!(mark.and_then(|s| s.look.text.as_deref()), Some("SC"));
 }
+
+/// The readout panel of a 120×40 impact view (columns 85 to 116), its wrapped lines joined.
+fn readout_panel(rows: &[String]) -> String {
+    let line = |r: &String| r.chars().skip(85).take(32).collect::<String>();
+    let lines: Vec<String> = rows.iter().map(|r| line(r).trim().to_string()).collect();
+    lines.join(" ")
+}
+
 /// Defect 3: at 12 m/s the readout compares nothing with the peak force measured at 3.12 m/s
 /// and says where it was measured; at 0.01 m/s a force trace measured at 3.12 m/s neither
 /// draws on force–time nor stretches its force axis (the title says where the data is).
@@ -167,22 +175,8 @@ fn measured_values_are_compared_and_drawn_only_at_their_speed() {
     assert_eq!(enter(&mut app, Param::V0, "12"), None);
     let rows = screen_text(&draw(&app, 120, 40));
     let text = rows.join("\n");
-    // the readout panel, its wrapped lines joined
-    let panel: Vec<String> = rows
-        .iter()
-        .map(|r| {
-            r.chars()
-                .skip(85)
-                .take(32)
-                .collect::<String>()
-                .trim()
-                .to_string()
-        })
-        .collect();
     assert!(
-        panel
-            .join(" ")
-            .contains("measured at v0 = 3.12 m/s: not compared"),
+        readout_panel(&rows).contains("measured at v0 = 3.12 m/s: not compared"),
         "{text}"
     );
     assert!(
@@ -250,21 +244,8 @@ fn messages_have_their_own_line_and_wrap() {
     assert_eq!(enter(&mut app, Param::Lambda, "0"), None);
     assert_eq!(enter(&mut app, Param::Zeta, "1000"), None);
     let rows = screen_text(&draw(&app, 120, 40));
-    let panel: Vec<String> = rows
-        .iter()
-        .map(|r| {
-            r.chars()
-                .skip(85)
-                .take(32)
-                .collect::<String>()
-                .trim()
-                .to_string()
-        })
-        .collect();
     assert!(
-        panel
-            .join(" ")
-            .contains("no rebound: the ball sinks into the dashpot"),
+        readout_panel(&rows).contains("no rebound: the ball sinks into the dashpot"),
         "{}",
         rows.join("\n")
     );

@@ -304,23 +304,14 @@ fn e_exports_the_map_on_screen_as_svg_and_csv() {
     typed(&mut app, "cor>=0.7");
     press(&mut app, &[KeyCode::Enter]);
     let effects = app.update(Action::Export);
-    let request = effects
-        .into_iter()
-        .find_map(|e| match e {
-            Effect::Export(r) => Some(r),
-            _ => None,
-        })
-        .expect("an export");
+    let request = export_of(effects);
     assert!(request.charts.is_empty());
     let m = request.map.as_ref().expect("the map");
     assert_eq!(m.quantity, Quantity::MaxForce);
     assert_eq!(&m.map, app.map_view().map().unwrap(), "the map on screen");
     let dir = tempfile::tempdir().unwrap();
     let files = bouncelab::tui::export::write(&request, dir.path()).unwrap();
-    let names: Vec<String> = files
-        .iter()
-        .map(|f| f.file_name().unwrap().to_string_lossy().into_owned())
-        .collect();
+    let names = file_names(&files);
     assert_eq!(
         names,
         [

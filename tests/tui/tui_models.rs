@@ -19,7 +19,6 @@ use bouncelab::tui::theme::Theme;
 use bouncelab::tui::ui::{self, Chart};
 use bouncelab::tui::views::models::state::ModelsRequest;
 use bouncelab::tui::widgets::plot::Plot;
-use ratatui::buffer::Buffer;
 use ratatui::crossterm::event::KeyCode;
 use ratatui::layout::Rect;
 use ratatui::style::Color;
@@ -40,18 +39,6 @@ fn models_view(i: usize, color: bool) -> App {
     press(&mut app, &[KeyCode::Tab, KeyCode::Tab]);
     assert_eq!(app.view(), View::Models);
     app
-}
-
-fn text(buf: &Buffer) -> String {
-    let a = buf.area;
-    (a.y..a.bottom())
-        .map(|y| {
-            (a.x..a.right())
-                .map(|x| buf[(x, y)].symbol())
-                .collect::<String>()
-                + "\n"
-        })
-        .collect()
 }
 
 /// The calibrations the effects ask of the background worker (the last such effect).
@@ -144,7 +131,7 @@ fn readable_at_the_usual_sizes() {
                 "{chart:?} at {w}×{h}"
             );
         }
-        let s = text(draw(&app, w, h).backend().buffer());
+        let s = buffer_text(draw(&app, w, h).backend().buffer());
         for rule in [
             "log-dec",
             "L–N",
@@ -170,7 +157,7 @@ fn calibrations_arrive_from_the_worker_and_stale_ones_are_dropped() {
     assert_eq!(app.models_request(), Some(&first));
     assert!(app.models().is_none(), "not computed on the UI thread");
     assert_eq!(first.target, app.run().unwrap().cor);
-    let s = text(draw(&app, 120, 40).backend().buffer());
+    let s = buffer_text(draw(&app, 120, 40).backend().buffer());
     assert!(s.contains("calibrating…"), "{s}");
 
     // the user moves on before it comes back: a new request replaces it
@@ -189,7 +176,7 @@ fn calibrations_arrive_from_the_worker_and_stale_ones_are_dropped() {
         app.message().is_none(),
         "an answer leaves the message line alone"
     );
-    let s = text(draw(&app, 120, 40).backend().buffer());
+    let s = buffer_text(draw(&app, 120, 40).backend().buffer());
     assert!(!s.contains("calibrating…"), "{s}");
 
     // v0 up again, then undone: the calibration held stays, the one sent out is called off,
@@ -229,7 +216,7 @@ fn a_failed_calibration_says_why() {
     assert!(app.models().is_none());
     assert_eq!(app.models_error(), None);
     assert!(app.models_request().is_none(), "not asked");
-    let s = text(draw(&app, 120, 40).backend().buffer());
+    let s = buffer_text(draw(&app, 120, 40).backend().buffer());
     assert!(s.contains("no rebound at this v0"), "{s}");
     for bad in ["NaN", "nan", "inf"] {
         assert!(!s.contains(bad), "{bad} on screen:\n{s}");
@@ -320,7 +307,7 @@ fn the_damping_on_screen_is_what_bouncelab_peers_gives() {
         assert_eq!(common::f(&cli, "target_cor"), data.target);
         let rows = cli["models"].as_array().unwrap();
         assert_eq!(rows.len(), data.rows.len() + 1, "and the C–Y row");
-        let screen = text(draw(&app, 120, 40).backend().buffer());
+        let screen = buffer_text(draw(&app, 120, 40).backend().buffer());
         for c in &data.rows {
             let row = rows
                 .iter()
@@ -385,7 +372,7 @@ fn every_size_draws() {
     let app = models_view(2, false);
     for w in (1..=130).step_by(3) {
         for h in (1..=45).step_by(2) {
-            let s = text(draw(&app, w, h).backend().buffer());
+            let s = buffer_text(draw(&app, w, h).backend().buffer());
             for bad in ["NaN", "nan", "inf"] {
                 assert!(!s.contains(bad), "{bad} at {w}×{h}:\n{s}");
             }

@@ -104,21 +104,9 @@ fn close(a: f64, b: f64) -> bool {
 fn the_view_s_numbers_are_the_command_line_s() {
     let app = tennis_example(false);
     let r = app.oblique_view().response().expect("an answer");
-    let out = common::bl(&[
-        "oblique",
-        "--preset",
-        "tennis",
-        "--v0",
-        "25",
-        "--angle",
-        "16",
-        "--spin",
-        "300",
-        "--friction",
-        "0.6",
-        "--format",
-        "json",
-    ]);
+    let out = common::bl(&common::argv(
+        "oblique --preset tennis --v0 25 --angle 16 --spin 300 --friction 0.6 --format json",
+    ));
     assert_eq!(out.code, 0, "{}", out.stderr);
     let j: Value = serde_json::from_str(&out.stdout).unwrap();
     let f = |k: &str| j[k].as_f64().unwrap_or_else(|| panic!("{k}"));
@@ -141,15 +129,9 @@ fn the_view_s_numbers_are_the_command_line_s() {
     }
     assert_eq!(j["slid_throughout"].as_bool(), Some(r.slid_throughout));
     // the court pace of the readout is `bouncelab court`'s
-    let out = common::bl(&[
-        "court",
-        "--preset",
-        "tennis",
-        "--friction",
-        "0.6",
-        "--format",
-        "json",
-    ]);
+    let out = common::bl(&common::argv(
+        "court --preset tennis --friction 0.6 --format json",
+    ));
     assert_eq!(out.code, 0, "{}", out.stderr);
     let j: Value = serde_json::from_str(&out.stdout).unwrap();
     let pace = app.oblique_view().pace.clone().unwrap().unwrap();
@@ -179,21 +161,9 @@ fn a_map_cell_is_the_command_line_s_impact() {
     let (i, j) = (29, 19); // θ 30°, μ 0.4
     assert_eq!((angle_at(i), friction_at(j)), (30.0, 0.4));
     let c = map.at(i, j).unwrap();
-    let out = common::bl(&[
-        "oblique",
-        "--preset",
-        "tennis",
-        "--v0",
-        "25",
-        "--angle",
-        "30",
-        "--spin",
-        "300",
-        "--friction",
-        "0.4",
-        "--format",
-        "json",
-    ]);
+    let out = common::bl(&common::argv(
+        "oblique --preset tennis --v0 25 --angle 30 --spin 300 --friction 0.4 --format json",
+    ));
     let jv: Value = serde_json::from_str(&out.stdout).unwrap();
     assert!(close(jv["angle_out_deg"].as_f64().unwrap(), c.angle_out));
     assert!(close(jv["spin_out"].as_f64().unwrap(), c.spin_out));

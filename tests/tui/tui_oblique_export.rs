@@ -7,8 +7,8 @@ use crate::tui_common;
 
 use bouncelab::preset::Preset;
 use bouncelab::tui::action::Action;
-use bouncelab::tui::app::{App, Effect, View};
-use bouncelab::tui::export::{self, ExportRequest};
+use bouncelab::tui::app::{App, View};
+use bouncelab::tui::export;
 use ratatui::crossterm::event::KeyCode;
 use std::fs;
 use tui_common::*;
@@ -22,16 +22,6 @@ fn tennis() -> App {
     press(&mut app, &[KeyCode::Char('i')]);
     assert_eq!(app.view(), View::Oblique);
     app
-}
-
-fn export_of(effects: Vec<Effect>) -> ExportRequest {
-    effects
-        .into_iter()
-        .find_map(|e| match e {
-            Effect::Export(r) => Some(r),
-            _ => None,
-        })
-        .expect("an export")
 }
 
 #[test]

@@ -5,7 +5,7 @@ use crate::tui_common;
 
 use bouncelab::preset::Preset;
 use bouncelab::tui::action::Action;
-use bouncelab::tui::app::{App, Effect, MAX_PINS, Severity, View};
+use bouncelab::tui::app::{App, MAX_PINS, Severity, View};
 use bouncelab::tui::export;
 use bouncelab::tui::param::Param;
 use bouncelab::tui::ui::{self, Chart};
@@ -134,13 +134,7 @@ fn export_writes_every_pin() {
     let dir = tempfile::tempdir().unwrap();
     let mut a = three_balls();
     let effects = type_keys(&mut a, "e");
-    let request = effects
-        .into_iter()
-        .find_map(|e| match e {
-            Effect::Export(r) => Some(r),
-            _ => None,
-        })
-        .expect("an export");
+    let request = export_of(effects);
     let files = export::write(&request, dir.path()).unwrap();
     let csv = files
         .iter()

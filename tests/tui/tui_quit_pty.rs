@@ -5,7 +5,7 @@
 
 use crate::pty;
 
-use pty::{Explorer, assert_restored, modes};
+use pty::{Explorer, modes};
 
 #[test]
 fn esc_keeps_the_pins_and_q_asks_before_losing_them() {
@@ -22,9 +22,7 @@ fn esc_keeps_the_pins_and_q_asks_before_losing_them() {
     x.send(b"q");
     x.wait_for("Quit");
     x.send(b"q");
-    let (status, after, out) = x.finish();
-    assert!(status.success(), "{status:?}\n{}", out.escape_debug());
-    assert_restored(&before, &after, &out);
+    x.finish_restored(&before);
 }
 
 /// `q` after an edit of the ball (no pin) asks too, naming the changes (issue 51 item 2); a
@@ -41,7 +39,5 @@ fn q_asks_before_losing_an_edit() {
     x.wait_for("Quit");
     x.wait_for("changes");
     x.send(b"q");
-    let (status, after, out) = x.finish();
-    assert!(status.success(), "{status:?}\n{}", out.escape_debug());
-    assert_restored(&before, &after, &out);
+    x.finish_restored(&before);
 }

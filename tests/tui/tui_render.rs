@@ -32,18 +32,6 @@ fn draw(app: &App, w: u16, h: u16) -> Terminal<TestBackend> {
     t
 }
 
-fn text(buf: &Buffer) -> String {
-    let a = buf.area;
-    (a.y..a.bottom())
-        .map(|y| {
-            (a.x..a.right())
-                .map(|x| buf[(x, y)].symbol())
-                .collect::<String>()
-                + "\n"
-        })
-        .collect()
-}
-
 #[test]
 fn first_screen_superball() {
     insta::assert_snapshot!(draw(&app(0), 120, 40).backend());
@@ -156,7 +144,7 @@ fn flattened_superball_with_a_pinned_ghost() {
 /// A preset without measurements (as the explorer saves one at another speed) claims none.
 #[test]
 fn no_measured_speed_without_measurements() {
-    let text_of = |p: Preset| text(draw(&App::new(p, true), 120, 40).backend().buffer());
+    let text_of = |p: Preset| buffer_text(draw(&App::new(p, true), 120, 40).backend().buffer());
     let mut p = Preset::embedded().remove(0);
     assert!(text_of(p.clone()).contains("measured at v0 = 3.12 m/s"));
     p.name = "unmeasured".into();
@@ -276,7 +264,7 @@ fn never_nan_or_inf_on_screen() {
             codes = vec![KeyCode::Tab];
         }
         press(&mut a, &codes);
-        let s = text(draw(&a, 120, 40).backend().buffer());
+        let s = buffer_text(draw(&a, 120, 40).backend().buffer());
         for bad in ["NaN", "nan", "inf"] {
             assert!(!s.contains(bad), "{bad} on screen:\n{s}");
         }
@@ -301,7 +289,7 @@ fn every_tiny_size_draws() {
             }
         }
     }
-    let s = text(draw(&apps[0], 20, 3).backend().buffer());
+    let s = buffer_text(draw(&apps[0], 20, 3).backend().buffer());
     assert!(s.starts_with("enlarge the"), "{s}");
 }
 
@@ -360,7 +348,7 @@ fn a_figure_draws_its_curve_tag_markers_and_legend() {
     let area = Rect::new(0, 0, 60, 20);
     let mut buf = Buffer::empty(area);
     Plot::new(&fig, Theme::new(false)).render(area, &mut buf);
-    let s = text(&buf);
+    let s = buffer_text(&buf);
     assert!(s.starts_with("┌ a chart "), "{s}");
     assert!(s.contains("z_p"), "the threshold's tag:\n{s}");
     // a blank between them: two marks never read as one ("◆S", issue 51 item 6)
@@ -387,7 +375,7 @@ fn chart_titles_keep_their_units_at_every_size() {
         let mut a = app(0);
         for view in 0..4 {
             let t = draw(&a, w, h);
-            let s = text(t.backend().buffer());
+            let s = buffer_text(t.backend().buffer());
             for row in s.lines().filter(|r| r.contains('┌')) {
                 let opened = row.matches('[').count();
                 assert_eq!(

@@ -4,7 +4,7 @@
 //! page, fonts and frame as the paper's figures ([`super::svg`]).
 
 use crate::figure::svg::{
-    ANNOTATION_PX, AXIS_DESC_PX, HEIGHT, RenderError, SCALE, SIDE_PX, TICK_PX, WIDTH, draw_titles,
+    ANNOTATION_PX, AXIS_DESC_PX, HEIGHT, PAGE, RenderError, SIDE_PX, TICK_PX, WIDTH, draw_titles,
     err, finish, font, px,
 };
 use crate::figure::ticks::{Room, Ticks, fitted, ticks};
@@ -355,11 +355,7 @@ pub fn render(map: &Map, v: &View) -> Result<String, RenderError> {
     };
     let mut buf = String::new();
     {
-        let size = (
-            (WIDTH as i32 * SCALE) as u32,
-            (HEIGHT as i32 * SCALE) as u32,
-        );
-        let root = SVGBackend::with_string(&mut buf, size).into_drawing_area();
+        let root = SVGBackend::with_string(&mut buf, PAGE).into_drawing_area();
         root.fill(&WHITE).map_err(err)?;
         let head = draw_titles(&root, &fig)?;
         let (_, rest) = root.split_vertically(px(head));

@@ -86,3 +86,14 @@ pub fn check(cases: &[(&str, &[&str])]) {
         "output changed for: {differ:?}; review with BOUNCELAB_BLESS=1 and git diff tests/golden"
     );
 }
+
+/// `check` for cases written as command lines (`"map --normalized --lambda 1:2:2"`), split
+/// at their spaces (`super::argv`).
+pub fn check_lines(cases: &[(&str, &str)]) {
+    let argvs: Vec<(&str, Vec<&str>)> = cases
+        .iter()
+        .map(|(name, line)| (*name, super::argv(line)))
+        .collect();
+    let cases: Vec<(&str, &[&str])> = argvs.iter().map(|(n, a)| (*n, a.as_slice())).collect();
+    check(&cases);
+}

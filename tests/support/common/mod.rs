@@ -33,6 +33,12 @@ pub fn bl_in(config: &Path, args: &[&str]) -> Out {
     }
 }
 
+/// A command line as typed, split at its spaces: `argv("drop --preset golf --bounces 1")`
+/// (for arguments that hold no space themselves).
+pub fn argv(line: &str) -> Vec<&str> {
+    line.split_whitespace().collect()
+}
+
 pub fn bl(args: &[&str]) -> Out {
     let dir = tempfile::tempdir().unwrap();
     bl_in(dir.path(), args)
@@ -94,6 +100,16 @@ pub fn file_with(bytes: &[u8]) -> (tempfile::TempDir, String) {
     (dir, p)
 }
 
+/// The names in `dir` (hidden temporaries too), sorted.
+pub fn folder_names(dir: &Path) -> Vec<String> {
+    let mut v: Vec<String> = std::fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    v.sort();
+    v
+}
+
 /// A config home whose presets folder holds `files` (name, contents).
 pub fn config_home(files: &[(&str, &str)]) -> tempfile::TempDir {
     let dir = tempfile::tempdir().unwrap();
@@ -109,6 +125,52 @@ pub fn renamed(name: &str, k_r: &str) -> String {
     SUPERBALL
         .replace("name = \"superball\"", &format!("name = \"{name}\""))
         .replace("k_r = 7.08e4", &format!("k_r = {k_r}"))
+}
+
+/// A preset named `golf` + `c` (a character that prints as nothing) is refused at load, at
+/// the name's file:line:column, the character named by its code point.
+pub fn assert_name_refused_as_invisible(c: char) {
+    let text = renamed(&format!("golf{c}"), "7.08e4");
+    let line = text[..text.find("name = ").unwrap()].matches('\n').count() + 1;
+    let home = config_home(&[("golf2.toml", &text)]);
+    let o = bl_in(home.path(), &["presets"]);
+    assert_bad(
+        &o,
+        &[
+            &format!("golf2.toml:{line}:1: name: holds an invisible character"),
+            &format!("U+{:04X}", c as u32),
+        ],
+    );
+}
+
+/// A folder holding `NAME.toml`: the baseball preset renamed `name`, with a `[fit]` table
+/// freeing K_r and z_p at their adopted values, its `covariance` made by `covariance(k_r,
+/// z_p)` (a TOML array of arrays), `dof` degrees of freedom, a residual sd of 0.01.
+pub fn baseball_with_fit(
+    name: &str,
+    covariance: impl Fn(f64, f64) -> String,
+    dof: u32,
+) -> tempfile::TempDir {
+    let base = bouncelab::preset::Preset::embedded_all()
+        .into_iter()
+        .find(|p| p.name == "baseball")
+        .unwrap();
+    let text = base
+        .to_toml(&[])
+        .replace("name = \"baseball\"", &format!("name = \"{name}\""));
+    let (k_r, z_p) = (base.adopted.k_r, base.adopted.z_p.unwrap());
+    let fit = format!(
+        "\n[fit]\nfree = [\"k_r\", \"z_p\"]\nvalues = [{k_r:?}, {z_p:?}]\n\
+         covariance = {}\ndof = {dof}\nresidual_sd = 0.01\n",
+        covariance(k_r, z_p)
+    );
+    let d = tempfile::tempdir().unwrap();
+    std::fs::write(
+        d.path().join(format!("{name}.toml")),
+        format!("{text}{fit}"),
+    )
+    .unwrap();
+    d
 }
 
 /// Run with `dir` as working folder (and config home): paths in `args` are relative to it.

@@ -4,6 +4,7 @@
 
 pub mod oblique;
 
+use bouncelab::analysis::fit::Estimate;
 use bouncelab::measured::{CorPoint, Trace};
 use bouncelab::{ContactLaw, ImpactParams, SolveOptions, simulate};
 
@@ -11,6 +12,11 @@ use crate::seeded;
 
 /// The tests' seeded generator (tests/support/seeded/mod.rs): every test run draws the same noise.
 pub type Rng = seeded::Seeded;
+
+/// The estimate's 95 % interval holds `truth`.
+pub fn covers(e: &Estimate, truth: f64) -> bool {
+    e.ci95[0] <= truth && truth <= e.ci95[1]
+}
 
 /// A ball no preset has: m = 50 g, v0 = 2 m/s, K_p = 8e4 N/m, K_r = 1.2e5 N/m (λ = 1.5),
 /// c = 60 kg/s (ζ ≈ 0.53), z_p = 1 mm (the contact flattens from about 1.6 m/s, where

@@ -255,6 +255,15 @@ impl Explorer {
         (status, after, out)
     }
 
+    /// [`finish`](Explorer::finish), the explorer having exited 0 and given the terminal back
+    /// as `before` (its [`modes`] at the start) had it; everything it printed.
+    pub fn finish_restored(self, before: &str) -> String {
+        let (status, after, out) = self.finish();
+        assert!(status.success(), "{status:?}\n{}", out.escape_debug());
+        assert_restored(before, &after, &out);
+        out
+    }
+
     /// The child's process id.
     pub fn pid(&self) -> u32 {
         self.child.id()

@@ -4,9 +4,12 @@
 
 use bouncelab::tui::action;
 use bouncelab::tui::app::{App, Effect};
+use bouncelab::tui::export::ExportRequest;
 use ratatui::Terminal;
 use ratatui::backend::TestBackend;
+use ratatui::buffer::Buffer;
 use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
+use std::path::PathBuf;
 
 /// Press `keys` in turn (an upper-case letter with Shift, as a terminal sends it); the effects
 /// `update` returned, in order.
@@ -48,6 +51,38 @@ pub fn screen_text(t: &Terminal<TestBackend>) -> Vec<String> {
         .collect()
 }
 
+/// The export among `effects` (what `update` returned for `e`).
+pub fn export_of(effects: Vec<Effect>) -> ExportRequest {
+    effects
+        .into_iter()
+        .find_map(|e| match e {
+            Effect::Export(r) => Some(r),
+            _ => None,
+        })
+        .expect("an export")
+}
+
+/// The files' names, without their folder.
+pub fn file_names(files: &[PathBuf]) -> Vec<String> {
+    files
+        .iter()
+        .map(|f| f.file_name().unwrap().to_string_lossy().into_owned())
+        .collect()
+}
+
+/// A buffer's rows as text, each ended by a newline.
+pub fn buffer_text(buf: &Buffer) -> String {
+    let a = buf.area;
+    (a.y..a.bottom())
+        .map(|y| {
+            (a.x..a.right())
+                .map(|x| buf[(x, y)].symbol())
+                .collect::<String>()
+                + "\n"
+        })
+        .collect()
+}
+
 /// Type `keys` as a terminal sends them: a letter (upper case with Shift), `\t` Tab, `\u{1b}`
 /// Esc; the effects `update` returned, in order.
 pub fn type_keys(app: &mut App, keys: &str) -> Vec<Effect> {
@@ -60,4 +95,21 @@ pub fn type_keys(app: &mut App, keys: &str) -> Vec<Effect> {
         })
         .collect();
     press(app, &codes)
+}
+
+/// A force–time CSV (`time_ms,force_N`): a half-sine pulse of 100 N over 3 ms starting at
+/// 1 ms, `samples` readings `step_ms` apart from 0.
+pub fn half_sine_csv(samples: usize, step_ms: f64) -> String {
+    let mut s = String::from("time_ms,force_N\n");
+    for i in 0..samples {
+        let t = i as f64 * step_ms;
+        let x = (t - 1.0) / 3.0;
+        let f = if (0.0..=1.0).contains(&x) {
+            100.0 * (std::f64::consts::PI * x).sin()
+        } else {
+            0.0
+        };
+        s.push_str(&format!("{t},{f}\n"));
+    }
+    s
 }
