@@ -372,6 +372,8 @@ mod tests {
             "softball",
             "baseball-mlb",
             "softball-44",
+            "squash",
+            "volleyball",
         ];
         let users = ["first", "second"];
         assert_eq!(names, [&paper[..], &drop_balls, &users].concat());
@@ -405,7 +407,7 @@ mod tests {
         assert_eq!(
             err.to_string(),
             "unknown preset 'cricket' (available: superball, golf, baseball, tennis, football, \
-             basketball, table-tennis, softball, baseball-mlb, softball-44)"
+             basketball, table-tennis, softball, baseball-mlb, softball-44, squash, volleyball)"
         );
     }
 }

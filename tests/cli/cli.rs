@@ -309,7 +309,9 @@ fn presets_lists_the_three_balls() {
             "table-tennis",
             "softball",
             "baseball-mlb",
-            "softball-44"
+            "softball-44",
+            "squash",
+            "volleyball"
         ]
     );
     assert!((f(&v[2], "zeta") - 0.6067).abs() < 1e-3);

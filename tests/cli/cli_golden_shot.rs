@@ -103,7 +103,7 @@ fn svg_out_draws_the_side_view_once() {
 /// `surface`, no `surface …` line).
 #[test]
 fn shot_names_its_ball_surface_and_conditions() {
-    let mut args: Vec<&str> = SERVE.to_vec();
+    let mut args = common::argv(SERVE);
     args.extend(["--tangential-damping", "5", "--format", "json"]);
     let j = json_calibrated(&args);
     let ball = &j["ball"];
@@ -117,24 +117,13 @@ fn shot_names_its_ball_surface_and_conditions() {
     assert_eq!(s["tangential_damping"], 5.0);
     assert_eq!(j["conditions"]["atmosphere_pa"], 101_325.0);
     // the same objects as `oblique` gives for the first bounce's ball and surface
-    let o = json_calibrated(&[
-        "oblique",
-        "--preset",
-        "tennis",
-        "--v0",
-        "30",
-        "--angle",
-        "16",
-        "--friction",
-        "0.6",
-        "--tangential-damping",
-        "5",
-        "--format",
-        "json",
-    ]);
+    let o = json_calibrated(&common::argv(
+        "oblique --preset tennis --v0 30 --angle 16 --friction 0.6 --tangential-damping 5 \
+         --format json",
+    ));
     assert_eq!(o["ball"], j["ball"]);
     assert_eq!(o["surface"], j["surface"]);
-    let text = common::ok_calibrated(SERVE);
+    let text = common::ok_calibrated(&common::argv(SERVE));
     assert_eq!(
         text.lines().nth(1),
         Some("surface steel-plate (rigid, immovable, μ 0.6000)")
