@@ -797,6 +797,7 @@ class Static(_Named):
     forward: StaticReading
     warnings: list[str]
     ball: BallRecord
+    conditions: Conditions
 
 def static(
     preset: str = "superball",

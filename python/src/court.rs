@@ -95,5 +95,11 @@ fn calibrate(
     (surface.stiffness, surface.damping) = (c.stiffness, c.damping);
     surface.overrides.retain(|o| o != "stiffness");
     surface.overrides.push("calibrated".into());
+    // named as the command line names it: no longer the surface it started from
+    (surface.name, surface.origin) = bouncelab::api::calibrated_court_name(
+        &surface.name,
+        &surface.origin,
+        "court --surface-cor",
+    );
     Ok(c)
 }

@@ -117,7 +117,13 @@ pub fn run(a: &CourtArgs, out: &mut dyn Write) -> anyhow::Result<()> {
             // the court is no longer the surface it started from (the rigid steel plate by
             // default, which it was still named: tests/physics/surfaces.rs,
             // `a_calibrated_court_is_named_for_what_it_is`)
-            (surface.name, surface.origin) = calibrated_name(&surface, a.fit.as_deref());
+            let how = match a.fit.as_deref() {
+                Some(p) => format!("court --fit {}", p.display()),
+                None => "court --surface-cor".to_string(),
+            };
+            let (name, origin) =
+                crate::api::calibrated_court_name(&surface.name, &surface.origin, &how);
+            (surface.name, surface.origin) = (name, origin);
             Some(c)
         }
         None => None,
@@ -159,26 +165,6 @@ pub fn run(a: &CourtArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         )?,
     }
     Ok(())
-}
-
-/// The name and origin of a court calibrated from `surface` (by `--fit FILE` when given,
-/// else `--surface-cor`): `calibrated-court` from the default plate, `NAME-calibrated` from a
-/// named surface; the origin says how, and from which surface.
-fn calibrated_name(surface: &SurfaceUsed, fit: Option<&std::path::Path>) -> (String, String) {
-    let name = if surface.name == crate::target::surface::DEFAULT {
-        "calibrated-court".to_string()
-    } else {
-        format!("{}-calibrated", surface.name)
-    };
-    let how = match fit {
-        Some(p) => format!("court --fit {}", p.display()),
-        None => "court --surface-cor".to_string(),
-    };
-    let origin = format!(
-        "calibrated by {how} from {} ({})",
-        surface.name, surface.origin
-    );
-    (name, origin)
 }
 
 /// What `court --fit` and `--surface-cor` add to the text: the measured and the calibration.
