@@ -258,3 +258,40 @@ fn static_states_its_conditions() {
     );
     assert_eq!(f(&soft["conditions"], "atmosphere_pa"), 101_325.0);
 }
+
+/// The defect: the basketball's record states 8 psi as 55 160 Pa, `--pressure 8psi` is
+/// 55 158.06 Pa, and every answer warned "outside calibration: the ball at … 55.16 kPa gauge;
+/// its record at … 55.16 kPa gauge" and withheld the comparison with the measurement: the
+/// same conditions, in its own words. At the record to the precision it states them, no
+/// warning; a pressure that is another (8.1 psi) still warns.
+#[test]
+fn a_ball_at_its_record_s_pressure_typed_in_other_units_is_not_warned() {
+    let run = |p: &str| {
+        json_calibrated(&[
+            "run",
+            "--preset",
+            "basketball",
+            "--pressure",
+            p,
+            "--format",
+            "json",
+        ])
+    };
+    let moved = |v: &Value| {
+        v["warnings"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .any(|w| w.as_str().unwrap().contains("its record at"))
+    };
+    let at = run("8psi");
+    assert!(!moved(&at), "{}", at["warnings"]);
+    assert!(
+        at["comparison_withheld"].is_null(),
+        "{}",
+        at["comparison_withheld"]
+    );
+    let other = run("8.1psi");
+    assert!(moved(&other), "{}", other["warnings"]);
+    assert!(other["comparison_withheld"].is_string());
+}
