@@ -19,7 +19,7 @@ use super::setting::Setting;
 use crate::api::Overrides;
 use crate::model::params::{self, ImpactParams, MEANINGFUL_MAX, MEANINGFUL_MIN};
 use crate::solver::ImpactResponse;
-use crate::text::{short, sig_trim};
+use crate::text::short;
 
 pub mod conditions;
 mod refusal;
@@ -372,7 +372,9 @@ pub fn validity(run: &ImpactResponse, deflection: Option<&[f64]>, radius: f64) -
     // a number and its unit joined by a no-break space: the readout's line breaking
     // (`format::fit_lines`) never parts them, and the parenthesis is a field of its own (two
     // spaces before it) (tests/tui/tui_render.rs, `the_validity_note_keeps_its_numbers_with_their_units`)
-    let mm = |x: f64| format!("{}\u{a0}mm", sig_trim(x * 1e3, 3));
+    // four significant digits, the readout's one format (issue 51 item 4; it wrote three,
+    // trimmed: "α_max 35 mm")
+    let mm = |x: f64| format!("{}\u{a0}mm", crate::tui::format::value(x * 1e3));
     let mut over = Vec::new();
     if z_m > radius {
         over.push(format!("z_m {}", mm(z_m)));
@@ -387,7 +389,7 @@ pub fn validity(run: &ImpactResponse, deflection: Option<&[f64]>, radius: f64) -
             over.join(", "),
             mm(radius),
             mm(worst - radius),
-            sig_trim(worst / radius, 3)
+            crate::tui::format::value(worst / radius)
         )
     })
 }

@@ -239,3 +239,20 @@ fn the_drop_view_shows_paused() {
         assert!(shown.contains("paused"), "{w}x{h}\n{shown}");
     }
 }
+
+/// Issue 51 item 4: the drop view's air line wrote its drag coefficient as a typed string,
+/// "C_d 0.47", two digits beside the readout's four and apart from the constant the drop
+/// uses; it is the constant, in the one format: "C_d 0.4700".
+#[test]
+fn the_drop_view_writes_the_drag_coefficient_it_uses_in_four_digits() {
+    use bouncelab::drop::flight::SPHERE_DRAG_COEFFICIENT;
+    let mut app = App::new(preset("tennis"), false);
+    press(&mut app, &[KeyCode::Char('d')]);
+    let s = screen_text(&draw(&app, 120, 36)).join("\n");
+    let c_d = format!(
+        "C_d {}",
+        bouncelab::tui::format::value(SPHERE_DRAG_COEFFICIENT)
+    );
+    assert_eq!(c_d, "C_d 0.4700");
+    assert!(s.contains(&c_d), "{c_d:?} in\n{s}");
+}

@@ -13,6 +13,8 @@ use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
 
 use tui_common::*;
 
+const SIZES: [(u16, u16); 5] = [(80, 24), (100, 30), (120, 40), (160, 50), (200, 60)];
+
 fn superball() -> App {
     App::new(Preset::embedded().remove(0), true)
 }
@@ -143,7 +145,7 @@ fn the_validity_warning_appears_exactly_when_z_m_or_alpha_exceeds_r() {
     assert!(alpha > r, "α {alpha} R {r}");
     let w = a.validity().expect("a warning");
     assert!(w.contains("α_max") && !w.contains("z_m"), "{w}");
-    let mm = |x: f64| bouncelab::text::sig_trim(x * 1e3, 3);
+    let mm = |x: f64| bouncelab::tui::format::value(x * 1e3);
     assert!(w.contains(&mm(alpha)) && w.contains(&mm(alpha - r)), "{w}");
     // the message and the readout say it
     assert!(a.message().unwrap().text.contains("outside the model"));
@@ -300,4 +302,55 @@ fn the_form_speaks_the_readouts_units_and_digits() {
         "{why}"
     );
     assert!(!why.contains("target_mass"), "{why}");
+}
+
+/// Issue 51 item 6: with the validity warning showing both z_m and α_max, the form at
+/// 80 × 24 lost its last lines (the warning's end and the hint "↑↓ field · Enter/= type · Esc
+/// closes") below the screen. The fields scroll now: the selected field, the whole warning
+/// and the hint are in the form whichever field is selected, at every size.
+#[test]
+fn the_form_with_a_warning_keeps_its_hint_and_selected_field_at_every_size() {
+    let mut a = superball();
+    set(&mut a, Field::Lambda, "0.001");
+    set(&mut a, Field::Zeta, "10");
+    let (z_m, _) = peaks(&a);
+    set(&mut a, Field::Radius, &format!("{}", z_m * 0.999 * 1e3));
+    let warning = a.validity().expect("a warning");
+    assert!(
+        warning.contains("z_m") && warning.contains("α_max"),
+        "{warning}"
+    );
+    // in the readout's one format: four significant digits (it wrote "z_m 0.128 mm")
+    let z_m_mm = format!("z_m {}\u{a0}mm", bouncelab::tui::format::value(z_m * 1e3));
+    assert!(warning.contains(&z_m_mm), "{z_m_mm:?} in {warning:?}");
+    // the warning's last line as the form wraps it (46 wide: 43 for the text)
+    let last = bouncelab::tui::format::wrap(&warning, 43).pop().unwrap();
+    for (w, h) in SIZES {
+        for field in Field::ALL {
+            let n = Field::ALL.iter().position(|&f| f == field).unwrap();
+            let Overlay::Form(f) = a.overlay() else {
+                panic!("no form")
+            };
+            let at = Field::ALL.iter().position(|&g| g == f.selected).unwrap();
+            for _ in 0..(n + Field::ALL.len() - at) % Field::ALL.len() {
+                key(&mut a, KeyCode::Down);
+            }
+            // the form's own columns (46 wide, centred), not the readout beside it
+            let t = draw(&a, w, h);
+            let buf = t.backend().buffer();
+            let x0 = (w - 46) / 2;
+            let rows: Vec<String> = (0..h)
+                .map(|y| (x0..x0 + 46).map(|x| buf[(x, y)].symbol()).collect())
+                .collect();
+            let s = rows.join("\n");
+            assert!(s.contains("Esc closes"), "{w}×{h} {field:?}: no hint\n{s}");
+            assert!(
+                s.contains(last.trim()),
+                "{w}×{h} {field:?}: warning cut\n{s}"
+            );
+            let selected = format!("▶{}", field.symbol());
+            assert!(s.contains(&selected), "{w}×{h} {field:?}: not shown\n{s}");
+        }
+    }
+    insta::assert_snapshot!("form_warning_80x24", draw(&a, 80, 24).backend());
 }

@@ -449,3 +449,29 @@ fn map_targets_are_typed_in_the_units_the_map_shows() {
     press(&mut app, &[KeyCode::Enter]);
     assert_eq!(app.map_view().targets.as_ref(), Some(&t));
 }
+
+/// Issue 51 item 4: the map's cell line writes its numbers as the readout does, four
+/// significant digits: it read "cell λ 1.45 ζ 0.17" (trailing zeros trimmed) and
+/// "∂e/∂ln ζ -0.085" (three decimals, two digits) beside a readout's "ζ 0.1612".
+#[test]
+fn the_map_cell_line_writes_four_significant_digits() {
+    use bouncelab::tui::format::value;
+    let app = map_app(false, 120, 40);
+    let map = app.map_view().map().unwrap();
+    let (l, z) = point(&app);
+    let (i, j) = cell_of(map, l, z);
+    let s = screen_text(&draw(&app, 120, 40)).join("\n");
+    let cell = format!("cell λ {} ζ {}", value(map.lambdas[i]), value(map.zetas[j]));
+    assert!(s.contains(&cell), "{cell:?} in\n{s}");
+    let line = s
+        .lines()
+        .find(|r| r.contains("∂e/∂ln λ"))
+        .expect("the sensitivities' line");
+    for part in line.split("∂e/∂ln ").skip(1) {
+        let number = part.split_whitespace().nth(1).unwrap();
+        let digits = number
+            .trim_start_matches(['+', '-', '0', '.'])
+            .replace('.', "");
+        assert_eq!(digits.len(), 4, "{number:?} in {line:?}");
+    }
+}

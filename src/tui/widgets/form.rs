@@ -26,7 +26,7 @@ impl Widget for &FormBox<'_> {
     fn render(self, area: Rect, buf: &mut Buffer) {
         let w = 46.min(area.width);
         let inner = usize::from(w.saturating_sub(2));
-        let mut lines = self.field_lines();
+        let mut lines = Vec::new();
         let d = physical::derived(&self.setting.params);
         let derived: Vec<String> = d
             .iter()
@@ -52,6 +52,13 @@ impl Widget for &FormBox<'_> {
             " ↑↓ field · Enter/= type · Esc closes",
             self.theme.dim(),
         ));
+        // the fields scroll, the rest stays: the warning and the hint were cut off below an
+        // 80 × 24 screen (issue 51 item 6; tests/tui/tui_form.rs,
+        // `the_form_with_a_warning_keeps_its_hint_and_selected_field_at_every_size`)
+        let room = usize::from(area.height.saturating_sub(2)).saturating_sub(lines.len());
+        let mut fields = self.shown_fields(room.max(1));
+        fields.append(&mut lines);
+        let lines = fields;
         let h = (lines.len() as u16 + 2).min(area.height);
         let popup = Rect::new(
             area.x + (area.width - w) / 2,
@@ -69,6 +76,21 @@ impl Widget for &FormBox<'_> {
 }
 
 impl FormBox<'_> {
+    /// The field lines that fit in `room` rows: all of them, or a window holding the
+    /// selected field (as near the middle as the ends allow).
+    fn shown_fields(&self, room: usize) -> Vec<Line<'static>> {
+        let all = self.field_lines();
+        if all.len() <= room {
+            return all;
+        }
+        let selected = Field::ALL
+            .iter()
+            .position(|&f| f == self.form.selected)
+            .unwrap_or(0);
+        let first = selected.saturating_sub(room / 2).min(all.len() - room);
+        all.into_iter().skip(first).take(room).collect()
+    }
+
     fn field_lines(&self) -> Vec<Line<'static>> {
         Field::ALL
             .iter()

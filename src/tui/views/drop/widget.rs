@@ -214,7 +214,14 @@ fn setting_lines(ball: &str, d: &DropView, theme: Theme) -> Vec<Line<'static>> {
                 sig(run.setup.height, 4),
                 sig(run.bounces[0].v_in, 4)
             )));
-            lines.push(Line::styled("drag ½ρC_dAv², C_d 0.47", theme.dim()));
+            // the constant the drop flies with, in the one format (issue 51 item 4: a typed
+            // "C_d 0.47"; tests/tui/tui_drop.rs,
+            // `the_drop_view_writes_the_drag_coefficient_it_uses_in_four_digits`)
+            let c_d = crate::tui::format::value(crate::drop::flight::SPHERE_DRAG_COEFFICIENT);
+            lines.push(Line::styled(
+                format!("drag ½ρC_dAv², C_d {c_d}"),
+                theme.dim(),
+            ));
         }
         _ => {}
     }

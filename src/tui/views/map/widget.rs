@@ -7,6 +7,7 @@
 use crate::figure::ticks::{Ticks, fitted};
 use crate::map::{Axis, Map};
 use crate::text::sig_trim;
+use crate::tui::format::value as value_on_screen;
 use crate::tui::theme::Theme;
 use crate::tui::views::map::cells::{
     CURSOR, ISO, OUTLINE, Raster, cell_of_slot, colour, contrast, dimmed, rgb, shade, slot_of_cell,
@@ -305,23 +306,31 @@ impl MapPanel<'_> {
         let value = if v.is_nan() {
             "none".to_string()
         } else {
-            format!("{approx}{}{unit_after}", sig_trim(v, 4))
+            format!("{approx}{}{unit_after}", value_on_screen(v))
         };
         let meets = match self.view.targets {
             Some(_) if r.feasible[i * r.cols() + j] => " · meets the targets",
             Some(_) => " · misses the targets",
             None => "",
         };
-        // the cell's own (λ, ζ): the ball's once the arrows have moved it onto the grid
+        // the cell's own (λ, ζ): the ball's once the arrows have moved it onto the grid; every
+        // number in the readout's one format, four significant digits (issue 51 item 4: it
+        // read "λ 1.45 ζ 0.17", "∂e/∂ln ζ -0.085"; tests/tui/tui_map.rs,
+        // `the_map_cell_line_writes_four_significant_digits`)
         let first = format!(
             " cell λ {} ζ {} · {symbol} {value}{meets}",
-            sig_trim(map.lambdas[i], 4),
-            sig_trim(map.zetas[j], 4)
+            value_on_screen(map.lambdas[i]),
+            value_on_screen(map.zetas[j])
         );
+        let signed = |x: f64| {
+            let sign = if x >= 0.0 { "+" } else { "" };
+            format!("{sign}{}", value_on_screen(x))
+        };
         let sens = match &self.view.sensitivity {
             Some(Ok(s)) => format!(
-                " ∂e/∂ln λ {:+.3}  ∂e/∂ln ζ {:+.3}",
-                s.d_ln_lambda, s.d_ln_zeta
+                " ∂e/∂ln λ {}  ∂e/∂ln ζ {}",
+                signed(s.d_ln_lambda),
+                signed(s.d_ln_zeta)
             ),
             Some(Err(e)) => format!(" no sensitivities: {e}"),
             None => String::new(),
