@@ -97,6 +97,7 @@ mod standard_conditions;
 mod statics;
 mod summary;
 mod surface;
+mod surface_used;
 mod sweep;
 mod warnings;
 pub use batch::{BallOutcome, BatchSetup, quantity as batch_quantity};
@@ -124,6 +125,7 @@ pub use standard_conditions::test_words;
 pub use statics::{ITF_RETURN_PEAK, ReturnReading, StaticReading, StaticReport};
 pub use summary::ImpactSummary;
 pub use surface::surface_label;
+pub use surface_used::{SurfaceError, SurfaceUsed};
 pub use sweep::{sweep_zeta, sweep_zeta_watched};
 pub use warnings::{ENERGY_RESIDUAL_MAX, map_indentation_warning};
 

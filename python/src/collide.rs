@@ -6,9 +6,9 @@ use crate::answer::{Record, Stated};
 use crate::ball_args::{BallChoice, ball_pyfunction};
 use crate::error;
 use crate::same::Same;
-use crate::surface::SurfaceUsed;
 use bouncelab::Ball;
 use bouncelab::api::CollisionReport;
+use bouncelab::api::SurfaceUsed;
 use bouncelab::catalog::Catalog;
 use bouncelab::target::Target;
 use pyo3::prelude::*;
@@ -44,7 +44,7 @@ pub(crate) struct Collision {
     effective_radius: Option<f64>,
     warnings: Vec<String>,
     /// The surface the target had (the JSON's `surface`, docs/surfaces.md).
-    surface: SurfaceUsed,
+    surface: crate::surface::SurfaceObject,
     /// The ball as the JSON's `ball_record` object (docs/cli.md "The ball object"; `ball`
     /// was already the preset's name here, and stays it).
     ball_record: Record,
@@ -121,7 +121,7 @@ impl Collision {
             ($($k:ident),*) => { $(d.set_item(stringify!($k), &self.$k)?;)* };
         }
         answer_keys!(put);
-        d.set_item("surface", self.surface.to_dict(py)?)?;
+        d.set_item("surface", crate::surface::to_dict(py, &self.surface)?)?;
         d.set_item("conditions", &self.conditions)?;
         Ok(d)
     }
@@ -151,8 +151,8 @@ impl Collision {
                     target_damping: get(&target, "damping")?,
                     $($k: get(state, stringify!($k))?,)*
                     surface: match state.get_item("surface")? {
-                        Some(s) => SurfaceUsed::from_dict(&s)?,
-                        None => SurfaceUsed::rigid_plate(),
+                        Some(s) => crate::surface::from_dict(&s)?.into(),
+                        None => SurfaceUsed::rigid_plate().into(),
                     },
                     ball_record: get(state, "ball_record")?,
                     conditions: get(state, "conditions")?,
@@ -223,7 +223,7 @@ impl Collision {
             effective_mass: r.effective_mass,
             effective_radius: r.effective_radius,
             warnings: r.warnings,
-            surface: SurfaceUsed::rigid_plate(),
+            surface: SurfaceUsed::rigid_plate().into(),
             ball_record: Record(r.ball_record),
             conditions: Stated::of(ball),
         }
@@ -323,7 +323,7 @@ fn collide_with(
         }
     };
     let mut c = Collision::of(report.map_err(error)?, &ball);
-    c.surface = used;
+    c.surface = used.into();
     Ok(c)
 }
 

@@ -63,7 +63,7 @@ ball_pyfunction! {
             d.set_item("tangential_damping", c)?;
         }
         d.update(crate::answer::json(py, &pace)?.cast::<pyo3::types::PyMapping>()?)?;
-        d.set_item("surface", surface.to_dict(py)?)?;
+        d.set_item("surface", crate::surface::to_dict(py, &surface)?)?;
         if let Some(c) = &calibration {
             d.set_item("calibration", crate::answer::json(py, c)?)?;
         }
@@ -79,7 +79,7 @@ ball_pyfunction! {
 fn calibrate(
     ball: &Ball,
     e: f64,
-    surface: &mut crate::surface::SurfaceUsed,
+    surface: &mut bouncelab::api::SurfaceUsed,
 ) -> PyResult<CourtCalibration> {
     let given = |k: &str| surface.overrides.iter().any(|o| o == k);
     if given("damping") {

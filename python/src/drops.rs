@@ -133,7 +133,7 @@ fn drop_of<'py>(
     warnings.extend(ball.drop_air_warning(run.setup.air));
     warnings.extend(off_conditions);
     d.set_item("warnings", warnings)?;
-    d.set_item("surface", surface.to_dict(py)?)?;
+    d.set_item("surface", crate::surface::to_dict(py, &surface)?)?;
     crate::answer::stated(&d, &ball)?;
     Ok(d)
 }

@@ -92,7 +92,7 @@ pub(crate) struct Impact {
     /// that the answer stays small to move and a preset's ball is not copied (catalog_cache.rs).
     ball: Option<Arc<Ball>>,
     /// The surface it ran on (the JSON's `surface`; the rigid plate unless `surface=`).
-    surface: crate::surface::SurfaceUsed,
+    surface: bouncelab::api::SurfaceUsed,
     /// The ball it ran and its conditions (the JSON's `ball` and `conditions`).
     named: (crate::answer::Record, crate::answer::Stated),
     /// Why the answer is not compared with `measured` (the JSON's `comparison_withheld`).
@@ -193,7 +193,7 @@ impl Impact {
             intervals,
             audit: audit.map_or_else(OnceLock::new, OnceLock::from),
             ball: None,
-            surface: crate::surface::SurfaceUsed::rigid_plate(),
+            surface: bouncelab::api::SurfaceUsed::rigid_plate(),
             named: (
                 crate::answer::Record(rep.record.clone()),
                 crate::answer::Stated::of(ball),
@@ -289,7 +289,7 @@ impl Impact {
     /// tangential_damping, overrides.
     #[getter]
     fn surface<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
-        self.surface.to_dict(py)
+        crate::surface::to_dict(py, &self.surface)
     }
 
     /// The ball it ran, as the JSON's `ball` object (docs/cli.md, "The ball object"): name,
@@ -384,7 +384,7 @@ impl Impact {
                 d.set_item(k, a)?;
             }
         }
-        d.set_item("surface", self.surface.to_dict(py)?)?;
+        d.set_item("surface", crate::surface::to_dict(py, &self.surface)?)?;
         d.set_item("conditions", self.conditions(py)?)?;
         Ok(d)
     }

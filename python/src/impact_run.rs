@@ -4,8 +4,8 @@
 
 use super::{Audit, Impact};
 use crate::error;
-use crate::surface::SurfaceUsed;
 use bouncelab::Ball;
+use bouncelab::api::SurfaceUsed;
 use bouncelab::api::{ImpactReport, Intervals};
 use pyo3::prelude::*;
 use std::sync::Arc;

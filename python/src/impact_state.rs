@@ -91,8 +91,8 @@ pub(super) fn from_state(d: &Bound<'_, PyDict>) -> PyResult<Impact> {
         .into(),
         ball: None,
         surface: match d.get_item("surface")? {
-            Some(s) => crate::surface::SurfaceUsed::from_dict(&s)?,
-            None => crate::surface::SurfaceUsed::rigid_plate(),
+            Some(s) => crate::surface::from_dict(&s)?,
+            None => bouncelab::api::SurfaceUsed::rigid_plate(),
         },
         named: (get(d, "ball")?, get(d, "conditions")?),
         withheld: get(d, "comparison_withheld")?,

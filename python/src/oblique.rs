@@ -3,9 +3,9 @@
 
 use crate::answer::{Record, Stated};
 use crate::ball_args::ball_pyfunction;
-use crate::surface::SurfaceUsed;
 use crate::{error, frozen_array, history_samples, value_error};
 use bouncelab::api::ObliqueSpec;
+use bouncelab::api::SurfaceUsed;
 use bouncelab::oblique::ObliqueResponse;
 use bouncelab::{Ball, BallError};
 use numpy::PyArray1;
@@ -57,7 +57,7 @@ pub(crate) struct ObliqueImpact {
     /// c_t (kg/s) when the tangential spring had a dashpot (the JSON's key only then).
     tangential_damping: Option<f64>,
     /// The surface it ran on (the JSON's `surface`, docs/surfaces.md).
-    surface: SurfaceUsed,
+    surface: crate::surface::SurfaceObject,
     /// The ball it ran (the JSON's `ball` object, docs/cli.md "The ball object").
     ball: Record,
     /// The conditions it ran at (the JSON's `conditions`).
@@ -255,7 +255,7 @@ fn build(
         spin: w,
         warnings,
         tangential_damping: surface.tangential_damping,
-        surface,
+        surface: surface.into(),
         ball: Record::of(ball),
         conditions: Stated::of(ball),
     })

@@ -4,7 +4,7 @@
 use super::{ENERGY_KEYS, EnergyTerms, ObliqueImpact};
 use crate::frozen_array;
 use crate::same::Same;
-use crate::surface::SurfaceUsed;
+use bouncelab::api::SurfaceUsed;
 use numpy::{PyArray1, PyArrayMethods, PyReadonlyArray1};
 use pyo3::conversion::FromPyObjectOwned;
 use pyo3::exceptions::PyValueError;
@@ -52,7 +52,7 @@ pub(super) fn to_dict<'py>(o: &ObliqueImpact, py: Python<'py>) -> PyResult<Bound
     }
     d.set_item("warnings", &o.warnings)?;
     d.set_item("ball", &o.ball)?;
-    d.set_item("surface", o.surface.to_dict(py)?)?;
+    d.set_item("surface", crate::surface::to_dict(py, &o.surface)?)?;
     d.set_item("conditions", &o.conditions)?;
     Ok(d)
 }
@@ -99,8 +99,8 @@ pub(super) fn from_state(d: &Bound<'_, PyDict>) -> PyResult<ObliqueImpact> {
                     None => None,
                 },
                 surface: match d.get_item("surface")? {
-                    Some(s) => SurfaceUsed::from_dict(&s)?,
-                    None => SurfaceUsed::rigid_plate(),
+                    Some(s) => crate::surface::from_dict(&s)?.into(),
+                    None => SurfaceUsed::rigid_plate().into(),
                 },
                 ball: get(d, "ball")?,
                 conditions: get(d, "conditions")?,

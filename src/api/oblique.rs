@@ -7,8 +7,7 @@ use crate::oblique::{self, Oblique, ObliqueError, ObliqueResponse, mindlin_ratio
 use crate::target::Target;
 use serde::Serialize;
 
-/// A solid ball's κ = I/(m R²), for a ball whose preset names none.
-pub const SOLID_INERTIA_FACTOR: f64 = 0.4;
+pub use crate::model::materials::SOLID_INERTIA_FACTOR;
 
 /// What an oblique impact asks beyond the ball; `None` takes the ball's own (its preset's
 /// speed, Mindlin's K_t from its Poisson ratio, its preset's κ).

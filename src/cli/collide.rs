@@ -73,14 +73,14 @@ pub fn run(a: &CollideArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     let mut used = a.surface.resolve()?;
     if let Some(m) = a.target_mass {
         used.mass = m;
-        used.overrides.push("target_mass");
+        used.overrides.push("target_mass".into());
     }
     if let Some(k) = a.target_stiffness {
         used.stiffness = k;
         used.damping = a.target_damping.unwrap_or(0.0);
-        used.overrides.push("target_stiffness");
+        used.overrides.push("target_stiffness".into());
         if a.target_damping.is_some() {
-            used.overrides.push("target_damping");
+            used.overrides.push("target_damping".into());
         }
     }
     let surface = (used.stiffness, used.damping);

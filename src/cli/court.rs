@@ -112,8 +112,8 @@ pub fn run(a: &CourtArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         Some(e) => {
             let c = ball.calibrate_court(e, a.surface.surface_stiffness, surface.mass)?;
             (surface.stiffness, surface.damping) = (c.stiffness, c.damping);
-            surface.overrides.retain(|o| *o != "stiffness");
-            surface.overrides.push("calibrated");
+            surface.overrides.retain(|o| o != "stiffness");
+            surface.overrides.push("calibrated".into());
             // the court is no longer the surface it started from (the rigid steel plate by
             // default, which it was still named: tests/physics/surfaces.rs,
             // `a_calibrated_court_is_named_for_what_it_is`)

@@ -96,11 +96,11 @@ pub fn surface_of(
     friction: Option<f64>,
     tangential: &TangentialArgs,
 ) -> anyhow::Result<(SurfaceUsed, f64)> {
-    let used = surface.resolve()?.with_tangential(
+    let used = surface.resolve()?.with_tangential([
         friction,
         tangential.tangential_stiffness,
         tangential.tangential_damping,
-    );
+    ]);
     let Some(mu) = used.friction else {
         anyhow::bail!(
             "invalid friction: the surface {} gives no μ (docs/surfaces.md): give --friction",

@@ -131,11 +131,11 @@ struct Report<'a> {
 /// bounce is `Ball::oblique`'s, on the rigid plate) with `--friction` and the tangential
 /// flags, named in the JSON and the text as every command on a surface names it.
 fn surface_of(a: &ShotArgs) -> anyhow::Result<SurfaceUsed> {
-    Ok(SurfaceArgs::default().resolve()?.with_tangential(
+    Ok(SurfaceArgs::default().resolve()?.with_tangential([
         Some(a.friction),
         a.tangential.tangential_stiffness,
         a.tangential.tangential_damping,
-    ))
+    ]))
 }
 
 pub fn run(a: &ShotArgs, out: &mut dyn Write) -> anyhow::Result<()> {

@@ -19,6 +19,12 @@ pub fn hertz_stiffness(e_star: f64, radius: f64) -> f64 {
     4.0 / 3.0 * e_star * radius.sqrt()
 }
 
+/// κ = I/(m R²) of a solid sphere, I = (2/5) m R² ([`shell_inertia_factor`] at q = 0): a
+/// ball whose preset names none, and the solid spheres of the codes an export is for
+/// (LAMMPS's `atom_style sphere`, LIGGGHTS's and Yade's spheres, Chrono's
+/// `ChBodyEasySphere`, a MuJoCo sphere geom's inferred inertia; src/peers/case.rs).
+pub const SOLID_INERTIA_FACTOR: f64 = 0.4;
+
 /// κ = I/(m R²) of a spherical shell of uniform density between radii `inner` and `outer`:
 /// (2/5)(1 − q⁵)/(1 − q³), q = inner/outer (docs/oblique.md §1). 0.4 for a solid ball
 /// (q = 0), 2/3 in the thin-shell limit (q → 1, taken by its series there).

@@ -1,18 +1,15 @@
 //! The bounce an export is for (issue 52 item 8, docs/peers.md §5 "The case asked"): the
 //! normal model of every code is calibrated at the normal speed v·sinθ of that bounce (the
 //! normal contact sees nothing else), a pair's at its closing speed; and since the codes'
-//! spheres are solid (κ = I/(m R²) = 2/5) while a ball may not be (a tennis ball's 0.6105),
-//! every snippet states both κ and bouncelab's own answer for the bounce at the code's κ, so
-//! that a user can check the paste against it (652 against 427 rad/s out for the tennis ball
-//! at 30 m/s and 16° with μ 0.6: the difference is κ's, not the export's).
+//! spheres are solid (κ = I/(m R²) = 2/5, `model::materials::SOLID_INERTIA_FACTOR`) while a
+//! ball may not be (a tennis ball's 0.6105), every snippet states both κ and bouncelab's own
+//! answer for the bounce at the code's κ, so that a user can check the paste against it (652
+//! against 427 rad/s out for the tennis ball at 30 m/s and 16° with μ 0.6: the difference is
+//! κ's, not the export's).
 
 use crate::text::number as num;
 use serde::Serialize;
 use std::fmt::Write;
-
-/// κ of a solid sphere, I = (2/5) m R²: LAMMPS's `atom_style sphere`, LIGGGHTS's and Yade's
-/// spheres, Chrono's `ChBodyEasySphere` and a MuJoCo sphere geom's inferred inertia.
-pub const SOLID_SPHERE_KAPPA: f64 = 0.4;
 
 /// The bounce asked for and what bouncelab says of it.
 #[derive(Debug, Clone, PartialEq, Serialize)]

@@ -5,7 +5,8 @@
 
 use super::{Pair, PeersArgs};
 use crate::api::{Ball, ObliqueSpec};
-use crate::peers::case::{CaseAnswer, ExportCase, SOLID_SPHERE_KAPPA};
+use crate::model::materials::SOLID_INERTIA_FACTOR;
+use crate::peers::case::{CaseAnswer, ExportCase};
 use crate::peers::tangential::TangentialExport;
 
 /// The bounce asked: (v, θ in degrees, ω); θ = 90 and ω = 0 without `--angle`; checked, one
@@ -76,14 +77,14 @@ pub(super) fn case(
                 };
                 whole.oblique_damped(&spec, Some(t.tangential_damping), 0)
             };
-            let code = run(Some(SOLID_SPHERE_KAPPA))?;
-            let own = if (kappa_ball - SOLID_SPHERE_KAPPA).abs() > 1e-12 {
+            let code = run(Some(SOLID_INERTIA_FACTOR))?;
+            let own = if (kappa_ball - SOLID_INERTIA_FACTOR).abs() > 1e-12 {
                 Some(run(None)?)
             } else {
                 None
             };
             CaseAnswer {
-                inertia_factor: SOLID_SPHERE_KAPPA,
+                inertia_factor: SOLID_INERTIA_FACTOR,
                 vx_out: code.vx_out,
                 vy_out: code.vy_out,
                 spin_out: code.spin_out,
@@ -95,7 +96,7 @@ pub(super) fn case(
         // no tangential force (no friction, or head-on without spin's lever): v_x and ω pass
         // unchanged; the normal bounce is the calibrated COR's
         _ => CaseAnswer {
-            inertia_factor: SOLID_SPHERE_KAPPA,
+            inertia_factor: SOLID_INERTIA_FACTOR,
             vx_out: vx,
             vy_out: e_normal * vn,
             spin_out: spin,
@@ -110,7 +111,7 @@ pub(super) fn case(
         spin,
         normal_speed: vn,
         pair: pair.map(|p| p.preset.clone()),
-        inertia_factor_code: SOLID_SPHERE_KAPPA,
+        inertia_factor_code: SOLID_INERTIA_FACTOR,
         inertia_factor_ball: kappa_ball,
         answer,
     })

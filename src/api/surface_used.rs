@@ -1,0 +1,139 @@
+//! The surface an answer ran on (docs/surfaces.md): the named surface with the explicit
+//! numbers given over its own, checked; the JSON `surface` object every answer on a surface
+//! carries, the command line's (src/cli/surface.rs) and the Python package's
+//! (python/src/surface.rs) alike. Reading the named surface is the faces' (the catalog);
+//! the wording of the errors too (`--surface-damping` against `surface={"damping": …}`).
+
+use crate::ParamError;
+use crate::catalog::Origin;
+use crate::catalog::surfaces::SurfaceEntry;
+use crate::target::Target;
+use crate::target::surface::Surface;
+use serde::Serialize;
+
+/// The normal quantities a surface's explicit numbers may override, in the order of
+/// [`SurfaceUsed::with_normal`]'s argument and of `overrides`.
+const NORMAL: [&str; 3] = ["stiffness", "damping", "mass"];
+/// The tangential ones, in the order of [`SurfaceUsed::with_tangential`]'s argument.
+const TANGENTIAL: [&str; 3] = ["friction", "tangential_stiffness", "tangential_damping"];
+
+/// The surface a command ran on: the named one with the explicit numbers over it; the JSON
+/// `surface` object, its fields in this order.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct SurfaceUsed {
+    /// The surface's name.
+    pub name: String,
+    /// `embedded` or the file it was read from.
+    pub origin: String,
+    /// K_s, N/m (`null`: rigid).
+    pub stiffness: f64,
+    /// c_s, kg/s.
+    pub damping: f64,
+    /// The moving mass, kg (`null`: fixed).
+    pub mass: f64,
+    /// μ the answer used (`null` where the command uses none).
+    pub friction: Option<f64>,
+    /// K_t the answer used, N/m.
+    pub tangential_stiffness: Option<f64>,
+    /// c_t the answer used, kg/s.
+    pub tangential_damping: Option<f64>,
+    /// The quantities given over the surface's own, in the order above.
+    pub overrides: Vec<String>,
+}
+
+/// Why explicit normal numbers cannot be the surface's.
+#[derive(Debug, Clone, PartialEq)]
+pub enum SurfaceError {
+    /// A number out of range, named as the target's (`target_stiffness`, …): the face
+    /// renames it as its own option.
+    Invalid(ParamError),
+    /// A damping given for a rigid surface, whose dashpot does nothing (the value given).
+    RigidDashpot(f64),
+}
+
+impl SurfaceUsed {
+    /// The catalog entry's numbers, nothing overridden.
+    pub fn from_entry(e: &SurfaceEntry) -> SurfaceUsed {
+        let s = &e.surface;
+        SurfaceUsed {
+            name: s.name.clone(),
+            origin: e.origin.to_string(),
+            stiffness: s.stiffness,
+            damping: s.damping,
+            mass: s.mass,
+            friction: s.friction,
+            tangential_stiffness: s.tangential_stiffness,
+            tangential_damping: s.tangential_damping,
+            overrides: Vec::new(),
+        }
+    }
+
+    /// The rigid, immovable test plate (the default), its tangential quantities unset.
+    pub fn rigid_plate() -> SurfaceUsed {
+        SurfaceUsed::from_entry(&SurfaceEntry {
+            surface: Surface::rigid_plate(),
+            origin: Origin::Embedded,
+        })
+    }
+
+    /// The normal part: a target at rest.
+    pub fn target(&self) -> Target {
+        Target {
+            mass: self.mass,
+            speed: 0.0,
+            stiffness: self.stiffness,
+            damping: self.damping,
+        }
+    }
+
+    /// Whether the answer is the rigid plate's (rigid and immovable).
+    pub fn is_rigid(&self) -> bool {
+        self.stiffness == f64::INFINITY && self.mass == f64::INFINITY
+    }
+
+    /// One line for a text header: "surface steel-plate (rigid, immovable)" or with its
+    /// numbers and μ ([`super::surface_label`]).
+    pub fn label(&self) -> String {
+        let normal = (self.stiffness, self.damping, self.mass);
+        super::surface_label(&self.name, normal, self.friction, &self.overrides)
+    }
+
+    /// The explicit K_s, c_s, M (in that order) over the surface's own, each recorded as an
+    /// override, the result checked: every number in range, and no damping given for a
+    /// surface that stays rigid.
+    pub fn with_normal(mut self, given: [Option<f64>; 3]) -> Result<SurfaceUsed, SurfaceError> {
+        let slots = [&mut self.stiffness, &mut self.damping, &mut self.mass];
+        let mut overrides = Vec::new();
+        for ((slot, value), name) in slots.into_iter().zip(given).zip(NORMAL) {
+            let Some(v) = value else { continue };
+            overrides.push(name.to_string());
+            *slot = v;
+        }
+        self.overrides.extend(overrides);
+        self.target().validate().map_err(SurfaceError::Invalid)?;
+        if self.stiffness.is_infinite() && self.damping > 0.0 && given[1].is_some() {
+            return Err(SurfaceError::RigidDashpot(self.damping));
+        }
+        Ok(self)
+    }
+
+    /// The tangential quantities the answer used, μ, K_t, c_t (in that order): each the one
+    /// given, else the surface's own; one given over the surface's own is recorded as an
+    /// override.
+    pub fn with_tangential(mut self, given: [Option<f64>; 3]) -> SurfaceUsed {
+        let slots = [
+            &mut self.friction,
+            &mut self.tangential_stiffness,
+            &mut self.tangential_damping,
+        ];
+        let mut overrides = Vec::new();
+        for ((slot, value), name) in slots.into_iter().zip(given).zip(TANGENTIAL) {
+            if value.is_some() && slot.is_some() {
+                overrides.push(name.to_string());
+            }
+            *slot = value.or(*slot);
+        }
+        self.overrides.extend(overrides);
+        self
+    }
+}
