@@ -106,7 +106,7 @@ pub use calibration::{BallRecord, changed_params};
 pub use collide::CollisionReport;
 pub use columns::{Columns, Unanswered, first_pass, first_pass_stoppable};
 pub use conditions::{ConditionsSpec, recorded as recorded_conditions, standard_leak};
-pub use court::{CourtCalibration, ITF_ANGLE, ITF_SPEED, calibrated_court_name};
+pub use court::{CourtCalibration, ITF_ANGLE, ITF_SPEED};
 pub use entry::{Overrides, PresetRow};
 pub use error::BallError;
 pub use intervals::{Intervals, bands, fit_table, holds, intervals};

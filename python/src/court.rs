@@ -92,14 +92,7 @@ fn calibrate(
     let c = ball
         .calibrate_court(e, stiffness, surface.mass)
         .map_err(error)?;
-    (surface.stiffness, surface.damping) = (c.stiffness, c.damping);
-    surface.overrides.retain(|o| o != "stiffness");
-    surface.overrides.push("calibrated".into());
-    // named as the command line names it: no longer the surface it started from
-    (surface.name, surface.origin) = bouncelab::api::calibrated_court_name(
-        &surface.name,
-        &surface.origin,
-        "court --surface-cor",
-    );
+    // as the command line calibrates and names it
+    surface.calibrated(&c, "court --surface-cor");
     Ok(c)
 }

@@ -85,7 +85,10 @@ def test_the_new_keys_say_what_ran():
     c = bouncelab.collide("baseball", v0=40.0, target_mass=0.9, mass=0.15)
     assert c.ball == "baseball" and c.ball_record["overrides"] == ["mass"]
     o = bouncelab.oblique("tennis", angle=30.0, friction=0.5)
-    assert o.ball["name"] == "tennis" and o.conditions["pressure_gauge_pa"] is None
+    # a pressurised ball: its record's 12 psi gauge (presets/tennis.toml)
+    assert o.ball["name"] == "tennis" and o.conditions["pressure_gauge_pa"] == 82_737.09
+    s = bouncelab.oblique("superball", angle=30.0, friction=0.5)
+    assert s.conditions["pressure_gauge_pa"] is None  # a solid ball
 
 
 def test_fit_drops_and_a_cor_table_name_the_ball_as_the_command_line(tmp_path):

@@ -159,17 +159,3 @@ impl Ball {
         Ok((scale * 10f64.powf(x), at(x)?))
     }
 }
-
-/// The name and origin of a court calibrated from the surface `name` (`origin`) by `how`
-/// (`court --surface-cor`, `court --fit FILE`, Python's `court(surface_cor=…)`): it is no
-/// longer the surface it started from — `calibrated-court` from the default rigid plate,
-/// `NAME-calibrated` from a named surface (tests/physics/surfaces.rs,
-/// `a_calibrated_court_is_named_for_what_it_is`).
-pub fn calibrated_court_name(name: &str, origin: &str, how: &str) -> (String, String) {
-    let new = if name == crate::target::surface::DEFAULT {
-        "calibrated-court".to_string()
-    } else {
-        format!("{name}-calibrated")
-    };
-    (new, format!("calibrated by {how} from {name} ({origin})"))
-}

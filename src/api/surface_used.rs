@@ -52,6 +52,24 @@ pub enum SurfaceError {
 }
 
 impl SurfaceUsed {
+    /// This surface calibrated by `how` (`court --surface-cor`, `court --fit FILE`) to the
+    /// court `c`: its K_s and c_s, `calibrated` among the overrides in place of `stiffness`,
+    /// and a name saying it is no longer the surface it started from — `calibrated-court`
+    /// from the default rigid plate, `NAME-calibrated` from a named one
+    /// (tests/physics/surfaces.rs, `a_calibrated_court_is_named_for_what_it_is`).
+    pub fn calibrated(&mut self, c: &super::CourtCalibration, how: &str) {
+        (self.stiffness, self.damping) = (c.stiffness, c.damping);
+        self.overrides.retain(|o| o != "stiffness");
+        self.overrides.push("calibrated".into());
+        let name = if self.name == crate::target::surface::DEFAULT {
+            "calibrated-court".to_string()
+        } else {
+            format!("{}-calibrated", self.name)
+        };
+        self.origin = format!("calibrated by {how} from {} ({})", self.name, self.origin);
+        self.name = name;
+    }
+
     /// The catalog entry's numbers, nothing overridden.
     pub fn from_entry(e: &SurfaceEntry) -> SurfaceUsed {
         let s = &e.surface;

@@ -111,19 +111,11 @@ pub fn run(a: &CourtArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     let calibration = match target_cor {
         Some(e) => {
             let c = ball.calibrate_court(e, a.surface.surface_stiffness, surface.mass)?;
-            (surface.stiffness, surface.damping) = (c.stiffness, c.damping);
-            surface.overrides.retain(|o| o != "stiffness");
-            surface.overrides.push("calibrated".into());
-            // the court is no longer the surface it started from (the rigid steel plate by
-            // default, which it was still named: tests/physics/surfaces.rs,
-            // `a_calibrated_court_is_named_for_what_it_is`)
             let how = match a.fit.as_deref() {
                 Some(p) => format!("court --fit {}", p.display()),
                 None => "court --surface-cor".to_string(),
             };
-            let (name, origin) =
-                crate::api::calibrated_court_name(&surface.name, &surface.origin, &how);
-            (surface.name, surface.origin) = (name, origin);
+            surface.calibrated(&c, &how);
             Some(c)
         }
         None => None,

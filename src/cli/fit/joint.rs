@@ -216,17 +216,7 @@ fn report_and_save(
         Some(_) => vec![f.params.v0],
         None => all.points.iter().map(|p| p.v0).collect(),
     };
-    f.warnings.extend(ball.fitted_warnings(&f.params, &speeds));
-    if speed_fitted {
-        f.warnings.insert(
-            0,
-            format!(
-                "no --v0 given: the trace's impact speed was fitted (as --free v0), starting \
-                 from the preset's {} m/s; give --v0 to hold a measured one",
-                crate::text::short(ball.params.v0, 4)
-            ),
-        );
-    }
+    super::multi::fitted_warnings(ball, &mut f, &speeds, speed_fitted);
     // the model shown at the trace's speed, else the first COR's, else the ball's
     let v0 = match (&all.trace, all.points.first()) {
         (Some(_), _) | (None, None) => f.params.v0,

@@ -205,17 +205,7 @@ pub fn run(
         Some(_) => vec![ball.params.v0],
         None => data.points.iter().map(|p| p.v0).collect(),
     };
-    f.warnings.extend(ball.fitted_warnings(&f.params, &speeds));
-    if speed_fitted {
-        f.warnings.insert(
-            0,
-            format!(
-                "no --v0 given: the trace's impact speed was fitted (as --free v0), starting \
-                 from the preset's {} m/s; give --v0 to hold a measured one",
-                crate::text::short(ball.params.v0, 4)
-            ),
-        );
-    }
+    fitted_warnings(&ball, &mut f, &speeds, speed_fitted);
     // the data's speed: the trace's (the ball's v0), else the first row's
     // (a fitted speed is the fit's)
     let v0 = if free.contains(&Param::V0) {
@@ -242,6 +232,23 @@ pub fn run(
 /// (`cli::outputs`): the files staged, the report written, then the files published; a
 /// failure anywhere (a preset folder that takes no file, a full stdout) leaves none of them
 /// (tests/cli/cli_outputs.rs, `fit_is_all_or_nothing`).
+/// The fitted ball's warnings at the data's `speeds` (calibration range, validity), and
+/// first, where no `--v0` was given for a trace, that its impact speed was fitted: the one
+/// and the joint fit's (src/cli/fit/joint.rs) alike.
+pub(super) fn fitted_warnings(ball: &Ball, f: &mut MultiFit, speeds: &[f64], speed_fitted: bool) {
+    f.warnings.extend(ball.fitted_warnings(&f.params, speeds));
+    if speed_fitted {
+        f.warnings.insert(
+            0,
+            format!(
+                "no --v0 given: the trace's impact speed was fitted (as --free v0), starting \
+                 from the preset's {} m/s; give --v0 to hold a measured one",
+                crate::text::short(ball.params.v0, 4)
+            ),
+        );
+    }
+}
+
 pub(super) fn publish(
     a: &FitArgs,
     out: &mut dyn Write,
