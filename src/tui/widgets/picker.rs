@@ -21,13 +21,29 @@ pub fn first_shown(selected: usize, rows: usize) -> usize {
     selected.saturating_sub(rows.saturating_sub(1))
 }
 
-impl Widget for &PickerBox<'_> {
-    fn render(self, area: Rect, buf: &mut Buffer) {
-        let p = self.picker;
+/// Where a picker's list sits (the preset picker's and the surface picker's): a popup up to
+/// 76 columns wide, centred and cleared, two rows an entry, the hint and the error if any
+/// below them; `rows` entries shown from `first`, `inner` columns inside the borders (a text
+/// too long for them is cut with "…", docs/explorer.md, Numbers, not by the border).
+pub struct Popup {
+    pub popup: Rect,
+    pub rows: usize,
+    pub first: usize,
+    pub inner: usize,
+}
+
+impl Popup {
+    /// The popup for `entries` entries with `selected` shown, cleared in `buf`.
+    pub fn cleared(
+        area: Rect,
+        buf: &mut Buffer,
+        entries: usize,
+        selected: usize,
+        error: bool,
+    ) -> Popup {
         let w = 76.min(area.width);
-        // two rows an entry (name, description), the hint, the error if any
-        let extra = 1 + u16::from(p.error.is_some());
-        let want = 2 * p.entries.len() as u16 + extra + 2;
+        let extra = 1 + u16::from(error);
+        let want = 2 * entries as u16 + extra + 2;
         let h = want.min(area.height);
         let popup = Rect::new(
             area.x + (area.width - w) / 2,
@@ -37,10 +53,24 @@ impl Widget for &PickerBox<'_> {
         );
         Clear.render(popup, buf);
         let rows = usize::from(h.saturating_sub(2 + extra) / 2).max(1);
-        let first = first_shown(p.selected, rows);
-        // inside the borders; a text too long for it is cut with "…" (docs/explorer.md,
-        // Numbers), not by the border
-        let inner = usize::from(w.saturating_sub(2));
+        Popup {
+            popup,
+            rows,
+            first: first_shown(selected, rows),
+            inner: usize::from(w.saturating_sub(2)),
+        }
+    }
+}
+
+impl Widget for &PickerBox<'_> {
+    fn render(self, area: Rect, buf: &mut Buffer) {
+        let p = self.picker;
+        let Popup {
+            popup,
+            rows,
+            first,
+            inner,
+        } = Popup::cleared(area, buf, p.entries.len(), p.selected, p.error.is_some());
         let mut lines = Vec::new();
         if let Some(e) = &p.error {
             lines.push(Line::styled(e.clone(), self.theme.error()));

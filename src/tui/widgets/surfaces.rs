@@ -5,11 +5,11 @@
 use crate::tui::format::clip;
 use crate::tui::surface::{SurfacePicker, numbers, origin};
 use crate::tui::theme::Theme;
-use crate::tui::widgets::picker::first_shown;
+use crate::tui::widgets::picker::Popup;
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
 use ratatui::text::{Line, Span};
-use ratatui::widgets::{Block, Clear, Paragraph, Widget};
+use ratatui::widgets::{Block, Paragraph, Widget};
 
 /// The surface picker, centred on the area it is given.
 #[derive(Debug, Clone, Copy)]
@@ -21,21 +21,13 @@ pub struct SurfacesBox<'a> {
 impl Widget for &SurfacesBox<'_> {
     fn render(self, area: Rect, buf: &mut Buffer) {
         let p = self.picker;
-        let w = 76.min(area.width);
-        // two rows an entry (name and origin, its numbers), the hint, the error if any
-        let extra = 1 + u16::from(p.error.is_some());
-        let want = 2 * p.entries.len() as u16 + extra + 2;
-        let h = want.min(area.height);
-        let popup = Rect::new(
-            area.x + (area.width - w) / 2,
-            area.y + (area.height - h) / 2,
-            w,
-            h,
-        );
-        Clear.render(popup, buf);
-        let rows = usize::from(h.saturating_sub(2 + extra) / 2).max(1);
-        let first = first_shown(p.selected, rows);
-        let inner = usize::from(w.saturating_sub(2));
+        // two rows an entry: name and origin, its numbers
+        let Popup {
+            popup,
+            rows,
+            first,
+            inner,
+        } = Popup::cleared(area, buf, p.entries.len(), p.selected, p.error.is_some());
         let mut lines = Vec::new();
         if let Some(e) = &p.error {
             lines.push(Line::styled(clip(e, inner), self.theme.error()));
