@@ -94,6 +94,7 @@ mod rows;
 mod shot;
 mod shot_mc;
 mod standard_conditions;
+mod standards;
 mod statics;
 mod summary;
 mod surface;
@@ -122,6 +123,9 @@ pub use rows::{ImpactRow, Rest, impact_row, impact_rows};
 pub use shot::{ShotBounce, ShotEnd, ShotReport, ShotSpec};
 pub use shot_mc::{SHOT_MC_QUANTITIES, ShotMcReport, ShotMcSpec, ShotSpread, Spread};
 pub use standard_conditions::test_words;
+pub use standards::{
+    ConditionsEntry, PressureLossEntry, PressureLossTest, StandardEntry, standards,
+};
 pub use statics::{ITF_RETURN_PEAK, ReturnReading, StaticReading, StaticReport};
 pub use summary::ImpactSummary;
 pub use surface::surface_label;
@@ -186,20 +190,7 @@ impl Ball {
         }
         let params = ImpactParams::from_normalized(lambda, zeta, zp_bar.unwrap_or(f64::INFINITY));
         params.validate()?;
-        Ok(Ball {
-            name: None,
-            origin: "normalized".into(),
-            source: "normalized",
-            params,
-            law,
-            measured: None,
-            description: String::new(),
-            fit: None,
-            poisson_ratio: None,
-            calibration: None,
-            overrides: Vec::new(),
-            conditions: recorded_conditions(None),
-        })
+        Ok(Ball::unnamed("normalized", "normalized", params, law))
     }
 
     /// A ball given by its parameters, SI units (checked: the first bad field is named).
@@ -218,10 +209,16 @@ impl Ball {
     /// ```
     pub fn from_params(params: ImpactParams, law: ContactLaw) -> Result<Ball, BallError> {
         params.validate()?;
-        Ok(Ball {
+        Ok(Ball::unnamed("parameters", "given", params, law))
+    }
+
+    /// A ball of no preset (checked parameters): no name, no measurements, no fit, the
+    /// conditions recorded as none; `origin` and `source` say where its parameters came from.
+    fn unnamed(origin: &str, source: &'static str, params: ImpactParams, law: ContactLaw) -> Ball {
+        Ball {
             name: None,
-            origin: "parameters".into(),
-            source: "given",
+            origin: origin.into(),
+            source,
             params,
             law,
             measured: None,
@@ -231,7 +228,7 @@ impl Ball {
             calibration: None,
             overrides: Vec::new(),
             conditions: recorded_conditions(None),
-        })
+        }
     }
 
     /// "superball (embedded, adopted parameters)", "normalized ball (m = K_p = v0 = 1)" or
