@@ -146,17 +146,5 @@ fn write_text(out: &mut dyn Write, r: &LeakJson) -> std::io::Result<()> {
         out,
         "  (FIFA's 72 h test at 0.8 bar, 20 °C: at most 20 % lost for Quality Pro, 25 % for Quality)"
     )?;
-    if let Some(l) = &r.lack_of_fit {
-        writeln!(
-            out,
-            "  lack of fit: {} test, statistic {}, p = {}",
-            l.test,
-            human(l.statistic, 4),
-            human(l.p_value, 3)
-        )?;
-    }
-    if !r.answered {
-        writeln!(out, "no answer: {}", r.no_answer.join("; "))?;
-    }
-    Ok(())
+    super::report::write_verdict(out, r.lack_of_fit.as_ref(), r.no_answer)
 }

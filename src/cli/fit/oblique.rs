@@ -4,9 +4,9 @@
 
 use super::{FitArgs, FitFormat};
 use crate::BallError;
-use crate::analysis::fit::MultiFitError;
 use crate::analysis::fit::oblique::ObliqueFit;
 use crate::analysis::fit::verdict::no_answer_reasons;
+use crate::analysis::fit::{Estimate, MultiFitError};
 use crate::api::{ObliqueFitReport, is_oblique_data_error as is_data_error};
 use crate::cli::output::{self, human, table};
 use std::io::Write;
@@ -53,15 +53,6 @@ pub fn run(a: &FitArgs, path: &Path, out: &mut dyn Write) -> anyhow::Result<()> 
     Ok(())
 }
 
-/// The text in place of an interval of an exact solve (`super::report::exact_text`'s words).
-fn exact_text(f: &ObliqueFit) -> &'static str {
-    if f.no_scatter {
-        "exact: no scatter to estimate it from"
-    } else {
-        super::report::EXACT
-    }
-}
-
 fn write_text(
     out: &mut dyn Write,
     label: &str,
@@ -77,31 +68,10 @@ fn write_text(
         f.model.len()
     )?;
     writeln!(out)?;
-    let mut rows = vec![vec![
-        String::new(),
-        "value".into(),
-        "std. error".into(),
-        "95 % interval".into(),
-        "unit".into(),
-    ]];
-    for e in &f.fitted {
-        // an exact solve has no error to give (`ObliqueFit::exact`), as `fit --cor-table`
-        let (error, interval) = if f.exact() {
-            ("–".into(), exact_text(f).into())
-        } else {
-            (
-                human(e.std_error, 3),
-                format!("{} … {}", human(e.ci95[0], 4), human(e.ci95[1], 4)),
-            )
-        };
-        rows.push(vec![
-            e.name.into(),
-            human(e.value, 5),
-            error,
-            interval,
-            e.unit.into(),
-        ]);
-    }
+    // an exact solve has no error to give (`ObliqueFit::exact`), as `fit --cor-table`
+    let exact = f.exact().then(|| super::report::exact_words(f.no_scatter));
+    let interval = |e: &Estimate| format!("{} … {}", human(e.ci95[0], 4), human(e.ci95[1], 4));
+    let rows = super::report::estimate_rows(&f.fitted, exact, interval);
     table(out, "  ", &rows)?;
     writeln!(out)?;
     let mut rest = vec![vec![

@@ -2,6 +2,7 @@
 //! table with intervals, correlations and warnings.
 
 use super::Loaded;
+use crate::analysis::fit::verdict::LackOfFit;
 use crate::analysis::fit::{Estimate, MultiFit};
 use crate::api::Ball;
 use crate::cli::output::{human, table};
@@ -193,6 +194,28 @@ fn answered(f: &MultiFit) -> String {
     format!("NO ({})", why.join("; "))
 }
 
+/// The closing lines of a one-law fit's text (`fit --pressure-loss`, `--cor-temperature`): the
+/// lack-of-fit test where there was one, and why there is no answer where there is none.
+pub(super) fn write_verdict(
+    out: &mut dyn Write,
+    lack_of_fit: Option<&LackOfFit>,
+    no_answer: &[String],
+) -> std::io::Result<()> {
+    if let Some(l) = lack_of_fit {
+        writeln!(
+            out,
+            "  lack of fit: {} test, statistic {}, p = {}",
+            l.test,
+            human(l.statistic, 4),
+            human(l.p_value, 3)
+        )?;
+    }
+    if !no_answer.is_empty() {
+        writeln!(out, "no answer: {}", no_answer.join("; "))?;
+    }
+    Ok(())
+}
+
 /// "1 point", "7 points".
 pub fn points(n: usize) -> String {
     format!("{n} point{}", if n == 1 { "" } else { "s" })
@@ -204,11 +227,48 @@ pub const EXACT: &str = "exact: no residual to estimate it from";
 /// The text in place of an interval of `f`, an exact solve: [`EXACT`], or, with degrees of
 /// freedom left but every residual zero, that the data show no scatter.
 pub fn exact_text(f: &MultiFit) -> &'static str {
-    if f.no_scatter {
+    exact_words(f.no_scatter)
+}
+
+/// [`EXACT`], or, with every residual zero (`no_scatter`), that the data show no scatter: the
+/// words of a multi-parameter and of an oblique fit's exact solve.
+pub(super) fn exact_words(no_scatter: bool) -> &'static str {
+    if no_scatter {
         "exact: no scatter to estimate it from"
     } else {
         EXACT
     }
+}
+
+/// The table of fitted parameters: a header, then a row an estimate (name, value, standard
+/// error, 95 % interval as `interval` gives it, unit); an exact solve (`exact`: the words in
+/// place of its interval) has no error to give, `–`.
+pub(super) fn estimate_rows<'e>(
+    estimates: impl IntoIterator<Item = &'e Estimate>,
+    exact: Option<&'static str>,
+    interval: fn(&Estimate) -> String,
+) -> Vec<Vec<String>> {
+    let mut rows = vec![vec![
+        String::new(),
+        "value".into(),
+        "std. error".into(),
+        "95 % interval".into(),
+        "unit".into(),
+    ]];
+    for e in estimates {
+        let (error, interval) = match exact {
+            Some(words) => ("–".into(), words.into()),
+            None => (human(e.std_error, 3), interval(e)),
+        };
+        rows.push(vec![
+            e.name.into(),
+            human(e.value, 5),
+            error,
+            interval,
+            e.unit.into(),
+        ]);
+    }
+    rows
 }
 
 /// An estimate's 95 % interval as the report's table gives it.
@@ -266,29 +326,9 @@ pub fn text(
         )?;
     }
     writeln!(out)?;
-    let mut rows = vec![vec![
-        "".into(),
-        "value".into(),
-        "std. error".into(),
-        "95 % interval".into(),
-        "unit".into(),
-    ]];
-    let exact = f.exact();
-    for e in f.fitted.iter().chain(&f.time_offset).chain(&f.baseline) {
-        let (error, interval) = if exact {
-            ("–".into(), exact_text(f).into())
-        } else {
-            (human(e.std_error, 3), interval(e))
-        };
-        rows.push(vec![
-            e.name.into(),
-            human(e.value, 5),
-            error,
-            interval,
-            e.unit.into(),
-        ]);
-    }
-    table(out, "  ", &rows)?;
+    let estimates = f.fitted.iter().chain(&f.time_offset).chain(&f.baseline);
+    let exact = f.exact().then(|| exact_text(f));
+    table(out, "  ", &estimate_rows(estimates, exact, interval))?;
     writeln!(out)?;
     writeln!(out, "  correlation")?;
     let mut rows = vec![

@@ -145,17 +145,5 @@ fn write_text(out: &mut dyn Write, r: &Report, f: &TemperatureFit) -> std::io::R
         ],
     ];
     table(out, "  ", &rows)?;
-    if let Some(l) = &r.lack_of_fit {
-        writeln!(
-            out,
-            "  lack of fit: {} test, statistic {}, p = {}",
-            l.test,
-            human(l.statistic, 4),
-            human(l.p_value, 3)
-        )?;
-    }
-    if !r.answered {
-        writeln!(out, "no answer: {}", r.no_answer.join("; "))?;
-    }
-    Ok(())
+    super::report::write_verdict(out, r.lack_of_fit.as_ref(), r.no_answer)
 }
