@@ -33,11 +33,9 @@ fn target(name: &str) -> anyhow::Result<(PathBuf, bool)> {
     Ok((path, exists))
 }
 
-/// A name the catalog can take, and no preset replaced without `force` (checked before the
-/// fit runs, and again when writing).
-pub fn check(name: &str, force: bool) -> anyhow::Result<()> {
-    crate::tui::save::check_name(name)
-        .map_err(|e| anyhow::anyhow!("invalid --save name '{name}': {e}"))?;
+/// Where `name` goes ([`target`]), refused when a preset is there already and `force` is not
+/// given: a user's preset is never replaced unasked.
+fn target_free(name: &str, force: bool) -> anyhow::Result<PathBuf> {
     let (path, exists) = target(name)?;
     if exists && !force {
         anyhow::bail!(
@@ -45,6 +43,15 @@ pub fn check(name: &str, force: bool) -> anyhow::Result<()> {
             path.display()
         );
     }
+    Ok(path)
+}
+
+/// A name the catalog can take, and no preset replaced without `force` (checked before the
+/// fit runs, and again when writing).
+pub fn check(name: &str, force: bool) -> anyhow::Result<()> {
+    crate::tui::save::check_name(name)
+        .map_err(|e| anyhow::anyhow!("invalid --save name '{name}': {e}"))?;
+    let path = target_free(name, force)?;
     // a folder that takes no new file is found now, not after the fit (cli::outputs)
     if let Some(dir) = path
         .parent()
@@ -259,13 +266,7 @@ pub fn stage_preset(
     let text = preset.to_toml(header);
     Preset::parse(&text, name)
         .map_err(|e| anyhow::anyhow!("the fitted ball is not a valid preset: {e}"))?;
-    let (path, exists) = target(name)?;
-    if exists && !force {
-        anyhow::bail!(
-            "preset '{name}' exists ({}): use --force to replace it",
-            path.display()
-        );
-    }
+    let path = target_free(name, force)?;
     let folder = path.parent().unwrap_or(Path::new("."));
     let created = first_missing(folder);
     std::fs::create_dir_all(folder).map_err(|e| {
