@@ -324,15 +324,9 @@ fn text(
         ("max", |s| s.max),
     ];
     for (name, f) in stat_rows {
-        let mut r = vec![name.to_string()];
-        r.extend(cols.iter().map(|(s, k)| cell(f(s), *k)));
-        rows.push(r);
+        rows.push(row(name.to_string(), &cols, |s, k| cell(f(s), k)));
     }
-    for (k, p) in PROBS.iter().enumerate() {
-        let mut r = vec![format!("{} %", given(*p, 3))];
-        r.extend(cols.iter().map(|(s, sc)| cell(s.q.values()[k], *sc)));
-        rows.push(r);
-    }
+    rows.extend(quantile_rows(&cols, |s, i, k| cell(s.q.values()[i], k)));
     table(out, "  ", &rows)?;
     intervals(out, st)?;
     output::warning_lines(out, &ball.mc_warnings(st))?;
@@ -360,6 +354,29 @@ fn header() -> Vec<String> {
     ["", "COR", "F_m N", "t_f ms"].map(String::from).to_vec()
 }
 
+/// A row of the text tables: `label`, then each column's `value` (of its statistics and the
+/// scale it is printed in).
+fn row(
+    label: String,
+    cols: &[(&Stats, f64)],
+    value: impl Fn(&Stats, f64) -> String,
+) -> Vec<String> {
+    std::iter::once(label)
+        .chain(cols.iter().map(|(s, k)| value(s, *k)))
+        .collect()
+}
+
+/// A row a quantile of [`PROBS`] ("2.5 %", …): each column's `value` of the i-th quantile.
+fn quantile_rows(
+    cols: &[(&Stats, f64)],
+    value: impl Fn(&Stats, usize, f64) -> String,
+) -> Vec<Vec<String>> {
+    let label = |p: f64| format!("{} %", given(p, 3));
+    let rows = PROBS.iter().enumerate();
+    rows.map(|(i, p)| row(label(*p), cols, |s, k| value(s, i, k)))
+        .collect()
+}
+
 /// A value of the text tables, scaled, to five digits; "–" where there is none.
 fn cell(x: f64, scale: f64) -> String {
     if x.is_nan() {
@@ -380,14 +397,8 @@ fn intervals(out: &mut dyn Write, st: &McStats) -> std::io::Result<()> {
         "\n95 % intervals of these estimates (sampling error; docs/scale.md):"
     )?;
     let mut rows = vec![header()];
-    let mut r = vec!["mean".to_string()];
-    r.extend(cols.iter().map(|(s, k)| span(s.mean_ci, *k)));
-    rows.push(r);
-    for (i, p) in PROBS.iter().enumerate() {
-        let mut r = vec![format!("{} %", given(*p, 3))];
-        r.extend(cols.iter().map(|(s, k)| span(s.q_ci.values()[i], *k)));
-        rows.push(r);
-    }
+    rows.push(row("mean".to_string(), &cols, |s, k| span(s.mean_ci, k)));
+    rows.extend(quantile_rows(&cols, |s, i, k| span(s.q_ci.values()[i], k)));
     table(out, "  ", &rows)?;
     Ok(())
 }
