@@ -2,7 +2,7 @@
 //! "Standards", cites each source).
 
 use super::output::{self, given, table};
-use crate::drop::conditions::{self, PRESSURE_LOSS, PressureLoss};
+use crate::drop::conditions::{self, PRESSURE_LOSS};
 use crate::drop::deformation::DEFORMATION_STANDARDS;
 use crate::drop::standards::{STANDARDS, Standard, Test};
 use crate::oblique::court::{CourtTest, ITF_COURT_PACE};
@@ -25,59 +25,15 @@ pub struct StandardsArgs {
 
 pub fn run(a: &StandardsArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     match a.format {
-        // the ball standards, then the bat standards (`test.kind` "bbcor"), in one list
+        // the ball standards with their conditions, the bat standards, the court pace, the
+        // pressure-loss tests, the static standards: one list (`test.kind` tells them apart);
+        // through a `Value`, so that the keys are serde_json's order, as they always were
         StandardsFormat::Json => {
-            let mut all = serde_json::to_value(STANDARDS)?;
-            if let Some(list) = all.as_array_mut() {
-                // each ball standard's test conditions (docs/drop.md, "Conditions")
-                for s in list.iter_mut() {
-                    let name = s["name"].as_str().unwrap_or_default().to_string();
-                    s["conditions"] = conditions_json(&name)?;
-                }
-                for s in &BAT_STANDARDS {
-                    list.push(serde_json::to_value(s)?);
-                }
-                list.push(serde_json::to_value(ITF_COURT_PACE)?);
-                for p in &PRESSURE_LOSS {
-                    list.push(pressure_loss_json(p)?);
-                }
-                // the static standards (`test.kind` "static", windows in m of the diameter)
-                for s in &DEFORMATION_STANDARDS {
-                    list.push(serde_json::to_value(s)?);
-                }
-            }
-            output::json(out, &all)?
+            output::json(out, &serde_json::to_value(crate::api::standards())?)?
         }
         StandardsFormat::Text => text(out)?,
     }
     Ok(())
-}
-
-/// A standard's test conditions as JSON: `{temperature_c: [nominal, ±] | null,
-/// pressure_gauge_pa: [lo, hi] | null, source}`.
-fn conditions_json(name: &str) -> serde_json::Result<serde_json::Value> {
-    let c = conditions::of(name);
-    Ok(serde_json::json!({
-        "temperature_c": c.temperature_c,
-        "pressure_gauge_pa": c.pressure_gauge_pa,
-        "source": c.source,
-    }))
-}
-
-/// A pressure-loss test as an entry of the list: `test: {kind: "pressure-loss", hours,
-/// pressure, temperature}`, `window: [null, max_loss]`.
-fn pressure_loss_json(p: &PressureLoss) -> serde_json::Result<serde_json::Value> {
-    Ok(serde_json::json!({
-        "name": p.name,
-        "title": p.title,
-        "test": {"kind": "pressure-loss", "hours": p.hours, "pressure": p.pressure,
-                 "temperature": p.temperature},
-        "window": [null, p.max_loss],
-        "source": p.source,
-        "unconfirmed": p.unconfirmed,
-        "balls": p.balls,
-        "conditions": conditions_json(p.name)?,
-    }))
 }
 
 /// "drop 2.54 m (bottom) → rebound (bottom)" or "COR at 26.82 m/s".
