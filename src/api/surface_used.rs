@@ -135,6 +135,31 @@ impl SurfaceUsed {
         Ok(self)
     }
 
+    /// `collide`'s target numbers over the surface's own, each recorded as an override: the
+    /// mass M (`target_mass`), and K_s (`target_stiffness`) with c_s beside it (given:
+    /// `target_damping`; else 0, a new spring comes without the old dashpot). Unchecked: the
+    /// collision checks its target. The command line's and Python's `collide` alike.
+    pub fn with_target(
+        mut self,
+        mass: Option<f64>,
+        stiffness: Option<f64>,
+        damping: Option<f64>,
+    ) -> SurfaceUsed {
+        if let Some(m) = mass {
+            self.mass = m;
+            self.overrides.push("target_mass".into());
+        }
+        if let Some(k) = stiffness {
+            self.stiffness = k;
+            self.damping = damping.unwrap_or(0.0);
+            self.overrides.push("target_stiffness".into());
+            if damping.is_some() {
+                self.overrides.push("target_damping".into());
+            }
+        }
+        self
+    }
+
     /// The tangential quantities the answer used, μ, K_t, c_t (in that order): each the one
     /// given, else the surface's own; one given over the surface's own is recorded as an
     /// override.

@@ -70,19 +70,10 @@ pub fn run(a: &CollideArgs, out: &mut dyn Write) -> anyhow::Result<()> {
             "--target-preset is the target: --surface and --surface-mass do not apply (give              --surface-stiffness, --surface-damping for its surface)"
         );
     }
-    let mut used = a.surface.resolve()?;
-    if let Some(m) = a.target_mass {
-        used.mass = m;
-        used.overrides.push("target_mass".into());
-    }
-    if let Some(k) = a.target_stiffness {
-        used.stiffness = k;
-        used.damping = a.target_damping.unwrap_or(0.0);
-        used.overrides.push("target_stiffness".into());
-        if a.target_damping.is_some() {
-            used.overrides.push("target_damping".into());
-        }
-    }
+    let used =
+        a.surface
+            .resolve()?
+            .with_target(a.target_mass, a.target_stiffness, a.target_damping);
     let surface = (used.stiffness, used.damping);
     let report = match &a.target_preset {
         Some(name) => {
