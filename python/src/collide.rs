@@ -281,7 +281,7 @@ fn collide_with(
     }
     let ball = choice.resolve(v0)?;
     let given = surface.is_some_and(|s| !s.is_none());
-    let (mut used, _) = crate::surface::resolve(surface)?;
+    let (used, _) = crate::surface::resolve(surface)?;
     let named = used.name != bouncelab::target::surface::DEFAULT || used.mass.is_finite();
     if target_preset.is_some() && given && named {
         return Err(crate::value_error(
@@ -290,19 +290,13 @@ fn collide_with(
                 .into(),
         ));
     }
-    if let Some(m) = target_mass {
-        used.mass = m;
-        used.overrides.push("target_mass".into());
-    }
     // the defaults (inf, 0) read as not given: the surface's own then
-    if target_stiffness != f64::INFINITY || target_damping != 0.0 {
-        used.stiffness = target_stiffness;
-        used.damping = target_damping;
-        used.overrides.push("target_stiffness".into());
-        if target_damping != 0.0 {
-            used.overrides.push("target_damping".into());
-        }
-    }
+    let stiffness_given = target_stiffness != f64::INFINITY || target_damping != 0.0;
+    let used = used.with_target(
+        target_mass,
+        stiffness_given.then_some(target_stiffness),
+        (target_damping != 0.0).then_some(target_damping),
+    );
     let pair = (used.stiffness, used.damping);
     let report = match (target_mass, target_preset) {
         (None, Some(name)) => {
