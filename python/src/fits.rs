@@ -213,10 +213,8 @@ ball_pyfunction! {
         trace.summary().map_err(|e| data_error("trace", e))?;
         let free = free_list(free)?;
         let ball = choice.ball(v0)?;
-        let fit = crate::interrupt::detach_watched(py, |w| {
-            ball.fit_watched(FitData::Trace(&trace), free.as_deref(), w)
-        })?;
-        let fit = with_fitted_warnings(py, &ball, fit, &[ball.params.v0]);
+        let data = FitData::Trace(&trace);
+        let fit = fit_with_warnings(py, &ball, data, free.as_deref(), &[ball.params.v0])?;
         report(py, &ball, "force-time trace", &fit, (ball.params.v0, None))
     }
 }
@@ -271,11 +269,9 @@ ball_pyfunction! {
         let table = CorTable::parse(&text).map_err(|e| data_error("COR table", e))?;
         let free = free_list(free)?;
         let ball = choice.ball(None)?;
-        let fit = crate::interrupt::detach_watched(py, |w| {
-            ball.fit_watched(FitData::Cor(&table.points), free.as_deref(), w)
-        })?;
         let speeds: Vec<f64> = table.points.iter().map(|p| p.v0).collect();
-        let fit = with_fitted_warnings(py, &ball, fit, &speeds);
+        let data = FitData::Cor(&table.points);
+        let fit = fit_with_warnings(py, &ball, data, free.as_deref(), &speeds)?;
         report(py, &ball, "COR table", &fit, (v[0], None))
     }
 }
@@ -318,11 +314,8 @@ ball_pyfunction! {
         let points: Vec<CorPoint> = ball
             .drops_to_cor_read(&pairs, air, rebound_height_sd)
             .map_err(error)?;
-        let fit = crate::interrupt::detach_watched(py, |w| {
-            ball.fit_watched(FitData::Cor(&points), free.as_deref(), w)
-        })?;
         let speeds: Vec<f64> = points.iter().map(|p| p.v0).collect();
-        let fit = with_fitted_warnings(py, &ball, fit, &speeds);
+        let fit = fit_with_warnings(py, &ball, FitData::Cor(&points), free.as_deref(), &speeds)?;
         let d = report(
             py,
             &ball,
@@ -357,17 +350,20 @@ ball_pyfunction! {
     }
 }
 
-/// `fit` with the warnings of its fitted ball at the fastest of the data's `speeds` (m/s; a
+/// The ball's parameters `free` fitted to `data`, Ctrl-C heard (`interrupt::detach_watched`),
+/// with the warnings of its fitted ball at the fastest of the data's `speeds` (m/s; a
 /// trace's: the ball's v0), as `bouncelab fit` adds them (`Ball::fitted_warnings`: pressed
 /// past its radius, an energy balance that does not close); the dicts lacked them
 /// (python/tests/test_fits.py).
-fn with_fitted_warnings(
+fn fit_with_warnings(
     py: Python<'_>,
     ball: &Ball,
-    mut fit: MultiFit,
+    data: FitData<'_>,
+    free: Option<&[bouncelab::analysis::fit::Param]>,
     speeds: &[f64],
-) -> MultiFit {
+) -> PyResult<MultiFit> {
+    let mut fit = crate::interrupt::detach_watched(py, |w| ball.fit_watched(data, free, w))?;
     let w = py.detach(|| ball.fitted_warnings(&fit.params, speeds));
     fit.warnings.extend(w);
-    fit
+    Ok(fit)
 }
