@@ -3,10 +3,13 @@
 //! `solve_ivp`, benches/fit_scipy.py) timed in the same run; prints both medians and the ratio.
 //! Run: `cargo bench --bench fit` (the SciPy side needs python3 with numpy and scipy).
 
+mod common;
+
 use bouncelab::ContactLaw;
 use bouncelab::analysis::fit::{FitData, Param, fit};
 use bouncelab::measured::Trace;
 use bouncelab::{ImpactParams, SolveOptions, simulate};
+use common::{median, quick};
 use std::process::Command;
 use std::time::Instant;
 
@@ -79,11 +82,6 @@ fn dense_csv(rows: usize, dt: f64) -> String {
     text
 }
 
-fn median(mut v: Vec<f64>) -> f64 {
-    v.sort_by(f64::total_cmp);
-    v[v.len() / 2]
-}
-
 /// Dense traces over the same 10 ms (issue 30, item 4: binned to the model's resolution):
 /// parse and fit timed apart, medians of `runs`.
 fn dense(rows: usize, runs: usize) {
@@ -123,12 +121,6 @@ fn peak_memory() -> String {
                 .map(|l| l["VmHWM:".len()..].trim().to_string())
         })
         .unwrap_or_else(|| "unknown".into())
-}
-
-/// `BENCH_QUICK=1` (`benches/figures.sh --quick`): each part once or twice, to check that it
-/// runs, not to quote.
-fn quick() -> bool {
-    std::env::var_os("BENCH_QUICK").is_some()
 }
 
 fn main() {
@@ -174,21 +166,8 @@ fn main() {
         .arg(if quick() { "1" } else { "5" })
         .output();
     let _ = std::fs::remove_dir_all(&dir);
-    let out = match out {
-        Ok(o) if o.status.success() => o,
-        Ok(o) => {
-            let err = String::from_utf8_lossy(&o.stderr);
-            println!(
-                "scipy comparison skipped: {}",
-                err.lines().last().unwrap_or("")
-            );
-            println!("(install with: pip install numpy scipy)");
-            return;
-        }
-        Err(e) => {
-            println!("scipy comparison skipped: python3 not found ({e})");
-            return;
-        }
+    let Some(out) = common::scipy_output(out) else {
+        return;
     };
     let text = String::from_utf8_lossy(&out.stdout);
     print!("{text}");

@@ -3,17 +3,15 @@
 //! and the accuracy of both against the closed form at λ = 0 (Eq. 28) and against each other.
 //! Run: `cargo bench --bench scipy_ratio` (needs python3 with numpy and scipy).
 
+mod common;
+
 use bouncelab::ContactLaw;
 use bouncelab::analysis::sweep::{cor_vs_zeta, log_space};
+use common::{median, quick};
 use std::process::Command;
 use std::time::Instant;
 
 const LAMBDAS: [f64; 4] = [0.0, 0.4, 1.0, 1.3];
-
-fn median(mut v: Vec<f64>) -> f64 {
-    v.sort_by(f64::total_cmp);
-    v[v.len() / 2]
-}
 
 fn maxwell(zeta: f64) -> f64 {
     if zeta >= 1.0 {
@@ -28,8 +26,7 @@ fn main() {
     let mut times = Vec::new();
     let mut ours = Vec::new();
     // BENCH_QUICK=1 (`benches/figures.sh --quick`): a few runs each side, to check it runs
-    let quick = std::env::var_os("BENCH_QUICK").is_some();
-    let (runs, scipy_runs) = if quick { (5, "1") } else { (101, "3") };
+    let (runs, scipy_runs) = if quick() { (5, "1") } else { (101, "3") };
     for _ in 0..runs {
         let t0 = Instant::now();
         ours = cor_vs_zeta(&LAMBDAS, &zetas, ContactLaw::Linear).unwrap();
@@ -42,23 +39,9 @@ fn main() {
     );
 
     let script = concat!(env!("CARGO_MANIFEST_DIR"), "/benches/scipy_sweep.py");
-    let out = match Command::new("python3").args([script, scipy_runs]).output() {
-        Ok(o) if o.status.success() => o,
-        Ok(o) => {
-            println!(
-                "scipy comparison skipped: {}",
-                String::from_utf8_lossy(&o.stderr)
-                    .lines()
-                    .last()
-                    .unwrap_or("")
-            );
-            println!("(install with: pip install numpy scipy)");
-            return;
-        }
-        Err(e) => {
-            println!("scipy comparison skipped: python3 not found ({e})");
-            return;
-        }
+    let run = Command::new("python3").args([script, scipy_runs]).output();
+    let Some(out) = common::scipy_output(run) else {
+        return;
     };
     let text = String::from_utf8_lossy(&out.stdout);
     let median_s = field(&text, "\"median_s\": ").expect("median_s in the script's output");
