@@ -31,21 +31,11 @@ SCIPY_BALLS = 300
 
 
 def scipy_cor(lam, zeta):
-    """The normalized linear impact by solve_ivp (docs/model.md §5): x = (a, a', y)."""
-    from scipy.integrate import solve_ivp
+    """The normalized linear impact by solve_ivp (docs/model.md §5): benches/scipy_sweep.py's,
+    imported only when the SciPy side runs (the rest of this script needs no SciPy)."""
+    from scipy_sweep import one
 
-    def rhs(t, x):
-        f = x[0] - x[2]
-        return [x[1], -f, 2.0 * zeta * (f - lam * x[2])]
-
-    def force(t, x):
-        return x[0] - x[2]
-
-    force.terminal = True
-    force.direction = -1
-    sol = solve_ivp(rhs, (0.0, 100.0), [0.0, 1.0, 0.0], method="RK45", rtol=1e-10, atol=1e-13,
-                    events=force)
-    return max(0.0, -sol.y_events[0][0][1]) if sol.t_events[0].size else 0.0
+    return one(lam, zeta)
 
 
 def scipy_side_by_side(m, k_p, c, k_r, v0, per_impact_ns):

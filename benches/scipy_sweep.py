@@ -14,11 +14,13 @@ from scipy.integrate import solve_ivp
 
 LAMBDAS = [0.0, 0.4, 1.0, 1.3]
 ZETAS = np.logspace(-2, 2, 400)
-REPEATS = int(sys.argv[1]) if len(sys.argv) > 1 else 3
+# the command line's repeats; imported (benches/impacts_python.py takes `one`), 3
+REPEATS = int(sys.argv[1]) if __name__ == "__main__" and len(sys.argv) > 1 else 3
 T_MAX = 100.0  # no event by then: no rebound
 
 
 def one(lam, zeta):
+    """The COR of the normalized ball (lam, zeta) by solve_ivp, 0 without a rebound."""
     def rhs(t, x):
         f = x[0] - x[2]
         return [x[1], -f, 2.0 * zeta * (f - lam * x[2])]
@@ -39,9 +41,10 @@ def sweep():
     return [one(lam, z) for lam in LAMBDAS for z in ZETAS]
 
 
-times = []
-for _ in range(REPEATS):
-    t0 = time.perf_counter()
-    cors = sweep()
-    times.append(time.perf_counter() - t0)
-print(json.dumps({"median_s": float(np.median(times)), "runs": REPEATS, "cor": cors}))
+if __name__ == "__main__":
+    times = []
+    for _ in range(REPEATS):
+        t0 = time.perf_counter()
+        cors = sweep()
+        times.append(time.perf_counter() - t0)
+    print(json.dumps({"median_s": float(np.median(times)), "runs": REPEATS, "cor": cors}))
