@@ -36,6 +36,30 @@ pub struct CourtCalibration {
 }
 
 impl Ball {
+    /// `court`'s answer, the command line's and Python's: the ITF court pace of this ball on
+    /// `surface` (its K_s, c_s, M, K_t and c_t; μ `friction`, κ `inertia_factor` or the
+    /// ball's), by [`Ball::court_pace_on`], with the words saying what it was computed on
+    /// ("the model's bounce of … at 30 m/s and 16° without spin on surface …").
+    pub fn court_pace_on_surface(
+        &self,
+        friction: f64,
+        inertia_factor: Option<f64>,
+        surface: &super::SurfaceUsed,
+    ) -> Result<(super::CourtPace, String), BallError> {
+        let computed_on = format!(
+            "the model's bounce of {} at 30 m/s and 16° without spin on {}",
+            self.label(),
+            surface.label()
+        );
+        let tangential = (
+            surface.tangential_stiffness,
+            inertia_factor,
+            surface.tangential_damping,
+        );
+        let pace = self.court_pace_on(friction, tangential, &surface.target())?;
+        Ok((pace, computed_on))
+    }
+
     /// The normal speed of the ITF court test, v sin θ as `oblique` takes it.
     pub fn itf_normal_speed() -> f64 {
         ITF_SPEED * ITF_ANGLE.to_radians().sin()

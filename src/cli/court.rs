@@ -120,17 +120,8 @@ pub fn run(a: &CourtArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         }
         None => None,
     };
-    let computed_on = format!(
-        "the model's bounce of {} at 30 m/s and 16° without spin on {}",
-        ball.label(),
-        surface.label()
-    );
-    let tangential = (
-        surface.tangential_stiffness,
-        a.tangential.inertia_factor,
-        surface.tangential_damping,
-    );
-    let pace = ball.court_pace_on(friction, tangential, &surface.target())?;
+    let (pace, computed_on) =
+        ball.court_pace_on_surface(friction, a.tangential.inertia_factor, &surface)?;
     match a.format {
         CourtFormat::Json => output::json_stated(
             out,
