@@ -11,17 +11,14 @@ use bouncelab::catalog::surfaces as catalog;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyString};
 
-/// The keys a `surface=` dict may hold, the normal ones first (the command line's
-/// `--surface-*`), then the tangential ones (`--friction`, `--tangential-*`).
-const KEYS: [&str; 7] = [
-    "name",
-    "stiffness",
-    "damping",
-    "mass",
-    "friction",
-    "tangential_stiffness",
-    "tangential_damping",
-];
+/// The keys a `surface=` dict may hold: `name`, the normal numbers (the command line's
+/// `--surface-*`), then the tangential ones (`--friction`, `--tangential-*`), by the names
+/// the answer's `overrides` give them (`SurfaceUsed::NORMAL`, `SurfaceUsed::TANGENTIAL`).
+fn keys() -> impl Iterator<Item = &'static str> {
+    std::iter::once("name")
+        .chain(SurfaceUsed::NORMAL)
+        .chain(SurfaceUsed::TANGENTIAL)
+}
 
 /// The surface an answer ran on as an answer holds it: the library's [`SurfaceUsed`] (the
 /// command line's JSON `surface`), wrapped only because pyo3's conversion (the `surface`
@@ -102,7 +99,7 @@ pub(crate) fn from_dict(d: &Bound<'_, PyAny>) -> PyResult<SurfaceUsed> {
     })
 }
 
-/// `surface=` read: `None`, a name, or a dict of [`KEYS`].
+/// `surface=` read: `None`, a name, or a dict of [`keys`].
 fn explicit(arg: Option<&Bound<'_, PyAny>>) -> PyResult<Explicit> {
     let Some(arg) = arg.filter(|a| !a.is_none()) else {
         return Ok(Explicit::default());
@@ -121,10 +118,11 @@ fn explicit(arg: Option<&Bound<'_, PyAny>>) -> PyResult<Explicit> {
     let mut x = Explicit::default();
     for (k, v) in d.iter() {
         let k: String = k.extract()?;
-        let at = KEYS.iter().position(|n| *n == k).ok_or_else(|| {
+        let at = keys().position(|n| n == k).ok_or_else(|| {
+            let all: Vec<&str> = keys().collect();
             value_error(format!(
                 "invalid surface: unknown key {k:?} (one of {})",
-                KEYS.join(", ")
+                all.join(", ")
             ))
         })?;
         if at == 0 {

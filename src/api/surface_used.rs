@@ -11,12 +11,6 @@ use crate::target::Target;
 use crate::target::surface::Surface;
 use serde::Serialize;
 
-/// The normal quantities a surface's explicit numbers may override, in the order of
-/// [`SurfaceUsed::with_normal`]'s argument and of `overrides`.
-const NORMAL: [&str; 3] = ["stiffness", "damping", "mass"];
-/// The tangential ones, in the order of [`SurfaceUsed::with_tangential`]'s argument.
-const TANGENTIAL: [&str; 3] = ["friction", "tangential_stiffness", "tangential_damping"];
-
 /// The surface a command ran on: the named one with the explicit numbers over it; the JSON
 /// `surface` object, its fields in this order.
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -52,6 +46,14 @@ pub enum SurfaceError {
 }
 
 impl SurfaceUsed {
+    /// The normal quantities a surface's explicit numbers may override, in the order of
+    /// [`SurfaceUsed::with_normal`]'s argument and of `overrides` (Python's `surface=` dict
+    /// keys too).
+    pub const NORMAL: [&'static str; 3] = ["stiffness", "damping", "mass"];
+    /// The tangential ones, in the order of [`SurfaceUsed::with_tangential`]'s argument.
+    pub const TANGENTIAL: [&'static str; 3] =
+        ["friction", "tangential_stiffness", "tangential_damping"];
+
     /// This surface calibrated by `how` (`court --surface-cor`, `court --fit FILE`) to the
     /// court `c`: its K_s and c_s, `calibrated` among the overrides in place of `stiffness`,
     /// and a name saying it is no longer the surface it started from — `calibrated-court`
@@ -122,7 +124,7 @@ impl SurfaceUsed {
     pub fn with_normal(mut self, given: [Option<f64>; 3]) -> Result<SurfaceUsed, SurfaceError> {
         let slots = [&mut self.stiffness, &mut self.damping, &mut self.mass];
         let mut overrides = Vec::new();
-        for ((slot, value), name) in slots.into_iter().zip(given).zip(NORMAL) {
+        for ((slot, value), name) in slots.into_iter().zip(given).zip(Self::NORMAL) {
             let Some(v) = value else { continue };
             overrides.push(name.to_string());
             *slot = v;
@@ -170,7 +172,7 @@ impl SurfaceUsed {
             &mut self.tangential_damping,
         ];
         let mut overrides = Vec::new();
-        for ((slot, value), name) in slots.into_iter().zip(given).zip(TANGENTIAL) {
+        for ((slot, value), name) in slots.into_iter().zip(given).zip(Self::TANGENTIAL) {
             if value.is_some() && slot.is_some() {
                 overrides.push(name.to_string());
             }
