@@ -318,5 +318,8 @@ fn presets_lists_the_three_balls() {
     assert!((f(&v[2], "zeta") - 0.6067).abs() < 1e-3);
     // the golf ball at driver speeds lists its record's two speeds (docs/presets.md)
     let driver = &v[12]["calibration"];
-    assert_eq!((f(driver, "speed_min"), f(driver, "speed_max")), (20.0, 45.0));
+    assert_eq!(
+        (f(driver, "speed_min"), f(driver, "speed_max")),
+        (20.0, 45.0)
+    );
 }
