@@ -374,6 +374,7 @@ mod tests {
             "softball-44",
             "squash",
             "volleyball",
+            "golf-driver",
         ];
         let users = ["first", "second"];
         assert_eq!(names, [&paper[..], &drop_balls, &users].concat());
@@ -407,7 +408,8 @@ mod tests {
         assert_eq!(
             err.to_string(),
             "unknown preset 'cricket' (available: superball, golf, baseball, tennis, football, \
-             basketball, table-tennis, softball, baseball-mlb, softball-44, squash, volleyball)"
+             basketball, table-tennis, softball, baseball-mlb, softball-44, squash, volleyball, \
+             golf-driver)"
         );
     }
 }

@@ -16,7 +16,7 @@ pub use fit_table::FitTable;
 
 /// The three balls of the paper, embedded in the binary, first; then the balls of the drop
 /// tests (docs/drop.md, "The new balls").
-pub const EMBEDDED: [(&str, &str); 12] = [
+pub const EMBEDDED: [(&str, &str); 13] = [
     ("superball", include_str!("../presets/superball.toml")),
     ("golf", include_str!("../presets/golf.toml")),
     ("baseball", include_str!("../presets/baseball.toml")),
@@ -32,6 +32,8 @@ pub const EMBEDDED: [(&str, &str); 12] = [
     // issue 56: the WSF squash ball (with its temperature shift) and the FIVB volleyball
     ("squash", include_str!("../presets/squash.toml")),
     ("volleyball", include_str!("../presets/volleyball.toml")),
+    // issue 52: a golf ball fitted to a published fall of COR with speed (docs/presets.md)
+    ("golf-driver", include_str!("../presets/golf-driver.toml")),
 ];
 
 /// How many of [`EMBEDDED`] are the paper's balls.

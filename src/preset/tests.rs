@@ -24,7 +24,8 @@ fn embedded_presets_parse() {
             "baseball-mlb",
             "softball-44",
             "squash",
-            "volleyball"
+            "volleyball",
+            "golf-driver"
         ]
     );
     for p in &all {

@@ -311,8 +311,15 @@ fn presets_lists_the_three_balls() {
             "baseball-mlb",
             "softball-44",
             "squash",
-            "volleyball"
+            "volleyball",
+            "golf-driver"
         ]
     );
     assert!((f(&v[2], "zeta") - 0.6067).abs() < 1e-3);
+    // the golf ball at driver speeds lists its record's two speeds (docs/presets.md)
+    let driver = &v[12]["calibration"];
+    assert_eq!(
+        (f(driver, "speed_min"), f(driver, "speed_max")),
+        (20.0, 45.0)
+    );
 }

@@ -23,6 +23,7 @@ mod flight;
 mod flight_anchors;
 mod flight_mc;
 mod fuzz_regressions;
+mod golf_driver;
 mod hertz_table;
 mod map;
 mod map_flatten;
