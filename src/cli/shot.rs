@@ -129,12 +129,13 @@ struct Report<'a> {
 
 /// The surface a shot bounces on: the rigid plate (the shot takes no `--surface`: every
 /// bounce is `Ball::oblique`'s, on the rigid plate) with `--friction` and the tangential
-/// flags, named in the JSON and the text as every command on a surface names it.
-fn surface_of(a: &ShotArgs) -> anyhow::Result<SurfaceUsed> {
+/// flags, named in the JSON and the text as every command on a surface names it (`shot`
+/// and `mc --shot`).
+pub(super) fn surface_of(friction: f64, t: &TangentialArgs) -> anyhow::Result<SurfaceUsed> {
     Ok(SurfaceArgs::default().resolve()?.with_tangential([
-        Some(a.friction),
-        a.tangential.tangential_stiffness,
-        a.tangential.tangential_damping,
+        Some(friction),
+        t.tangential_stiffness,
+        t.tangential_damping,
     ]))
 }
 
@@ -148,7 +149,7 @@ pub fn run(a: &ShotArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     let paths: Vec<&std::path::Path> = a.svg_out.iter().map(PathBuf::as_path).collect();
     check_writable(&paths, a.force)?;
     let shot = ball.shot(&spec).map_err(flag_named)?;
-    let surface = surface_of(a)?;
+    let surface = surface_of(a.friction, &a.tangential)?;
     let mut files = Outputs::new(a.force);
     if let Some(p) = &a.svg_out {
         let drawn = if shot.trajectory.is_empty() {
@@ -272,6 +273,9 @@ fn text(
     s: &ShotReport,
 ) -> std::io::Result<()> {
     writeln!(out, "{}: {}", ball.label(), title(spec))?;
+    if let Some(line) = ball.overrides_line() {
+        writeln!(out, "{line}")?;
+    }
     writeln!(out, "{}", surface.label())?;
     if let Some(line) = ball.conditions_line() {
         writeln!(out, "{line}")?;

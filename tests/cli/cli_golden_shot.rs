@@ -133,3 +133,36 @@ fn shot_names_its_ball_surface_and_conditions() {
 fn json_calibrated(args: &[&str]) -> serde_json::Value {
     serde_json::from_str(&common::ok_calibrated(args)).expect("one JSON object")
 }
+
+/// The defect: `mc --shot` answered without the `ball`, `surface` (and the air) every other
+/// answer names (issue 52 item 3, issue 53), and its text said neither what it bounced on nor
+/// the conditions. Its objects are now `shot`'s for the same flags. Fails on the old code.
+#[test]
+fn mc_shot_names_its_ball_surface_and_conditions() {
+    let launch = "--preset tennis --height 2.8 --speed 50 --elevation -6 --spin 200 \
+                  --friction 0.6 --tangential-damping 5";
+    let mc = json_calibrated(&common::argv(&format!(
+        "mc --shot {launch} --vary speed=2% --samples 20 --format json"
+    )));
+    let shot = json_calibrated(&common::argv(&format!("shot {launch} --format json")));
+    for key in ["ball", "surface", "conditions", "aero"] {
+        assert!(mc[key].is_object(), "{key}: {mc}");
+        assert_eq!(mc[key], shot[key], "{key}");
+    }
+    assert_eq!(mc["surface"]["tangential_damping"], 5.0);
+    assert_eq!(mc["warnings"], shot["bounces"][0]["warnings"]);
+    let text = common::ok_calibrated(&common::argv(&format!(
+        "mc --shot {launch} --vary speed=2% --samples 20"
+    )));
+    let lines: Vec<&str> = text.lines().collect();
+    assert_eq!(lines[1], "surface steel-plate (rigid, immovable, μ 0.6000)");
+    assert!(lines[2].starts_with("conditions: "), "{text}");
+    assert!(lines[3].starts_with("air: ρ = 1.204 kg/m³; C_D "), "{text}");
+    assert!(
+        text.lines()
+            .last()
+            .unwrap()
+            .starts_with("warning: outside calibration:"),
+        "{text}"
+    );
+}
