@@ -56,6 +56,10 @@ pub struct ShotArgs {
     /// End at this time, s after the launch
     #[arg(long, value_name = "T", value_parser = super::number::number, allow_hyphen_values = true)]
     pub time: Option<f64>,
+    /// End D m (along x) past the last of the --bounces bounces: where the ball is a metre
+    /// after it bounces is --after-bounce 1
+    #[arg(long, value_name = "D", conflicts_with = "distance", value_parser = super::number::number, allow_hyphen_values = true)]
+    pub after_bounce: Option<f64>,
     /// Air density ρ, kg/m³ (0: vacuum)
     #[arg(long, value_name = "RHO", default_value_t = crate::drop::flight::AIR_DENSITY, value_parser = super::number::number, allow_hyphen_values = true)]
     pub air_density: f64,
@@ -145,7 +149,10 @@ pub fn run(a: &ShotArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         return Err(crate::api::BallError::Samples(0).into());
     }
     let ball = a.ball.resolve(None)?;
-    let spec = a.spec();
+    let mut spec = a.spec();
+    if let Some(d) = a.after_bounce {
+        spec.ends.distance = Some(past_bounce(&ball, &spec, d)?);
+    }
     let paths: Vec<&std::path::Path> = a.svg_out.iter().map(PathBuf::as_path).collect();
     check_writable(&paths, a.force)?;
     let shot = ball.shot(&spec).map_err(flag_named)?;
@@ -183,6 +190,48 @@ pub fn run(a: &ShotArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     }
     report_then_commit(out, &report, files)?;
     Ok(())
+}
+
+/// `--after-bounce D` as the distance it stands for: the x of the last of the shot's
+/// bounces, plus D. A first run finds that bounce; the shot is then run to that distance,
+/// whose event lies past the bounce, so the flight to it is the first run's, bit for bit
+/// (`after_bounce_is_the_distance_past_the_bounce`, tests/cli/cli_golden_shot.rs).
+fn past_bounce(ball: &Ball, spec: &ShotSpec, d: f64) -> anyhow::Result<f64> {
+    let n = spec.ends.bounces;
+    if !(d.is_finite() && d > 0.0) {
+        anyhow::bail!("invalid --after-bounce: {} (must be positive)", given(d, 6));
+    }
+    if n == 0 {
+        anyhow::bail!("invalid --after-bounce: the shot makes no bounce (--bounces 0)");
+    }
+    let first = ball
+        .shot_unwarned(&ShotSpec {
+            samples: 0,
+            ..*spec
+        })
+        .map_err(flag_named)?;
+    let Some(last) = first.bounces.get(n - 1) else {
+        anyhow::bail!(
+            "invalid --after-bounce: the shot ends (at t = {} s) before its bounce {n}",
+            given(first.end.state.t, 4)
+        );
+    };
+    let x = last.x + d;
+    let to = ball.shot_unwarned(&ShotSpec {
+        ends: Ends {
+            distance: Some(x),
+            ..spec.ends
+        },
+        samples: 0,
+        ..*spec
+    });
+    if to.map_err(flag_named)?.bounces.len() < n {
+        anyhow::bail!(
+            "invalid --after-bounce: the ball passes x = {} m before its bounce {n}",
+            given(x, 6)
+        );
+    }
+    Ok(x)
 }
 
 /// A value refused by the library, named by its flag: `invalid --drag-coefficient: …`.
