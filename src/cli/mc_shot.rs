@@ -231,19 +231,7 @@ fn text(out: &mut dyn Write, ran: &Ran<'_>, r: &ShotMcReport) -> std::io::Result
         given(v.elevation, 4),
         given(v.height, 4)
     )?;
-    if let Some(line) = ran.ball.overrides_line() {
-        writeln!(out, "{line}")?;
-    }
-    writeln!(out, "{}", ran.surface.label())?;
-    if let Some(line) = ran.ball.conditions_line() {
-        writeln!(out, "{line}")?;
-    }
-    writeln!(
-        out,
-        "air: ρ = {} kg/m³; {}",
-        given(ran.aero.air_density, 4),
-        ran.aero.source
-    )?;
+    super::shot::ran_lines(out, ran.ball, ran.surface, &ran.aero)?;
     let mut rows = vec![
         ["", "mean", "sd", "2.5 %", "median", "97.5 %"]
             .map(String::from)

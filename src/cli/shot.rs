@@ -151,7 +151,7 @@ pub fn run(a: &ShotArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     let ball = a.ball.resolve(None)?;
     let mut spec = a.spec();
     if let Some(d) = a.after_bounce {
-        spec.ends.distance = Some(past_bounce(&ball, &spec, d)?);
+        spec.ends.distance = Some(super::shot_after::past_bounce(&ball, &spec, d)?);
     }
     let paths: Vec<&std::path::Path> = a.svg_out.iter().map(PathBuf::as_path).collect();
     check_writable(&paths, a.force)?;
@@ -192,50 +192,8 @@ pub fn run(a: &ShotArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     Ok(())
 }
 
-/// `--after-bounce D` as the distance it stands for: the x of the last of the shot's
-/// bounces, plus D. A first run finds that bounce; the shot is then run to that distance,
-/// whose event lies past the bounce, so the flight to it is the first run's, bit for bit
-/// (`after_bounce_is_the_distance_past_the_bounce`, tests/cli/cli_golden_shot.rs).
-fn past_bounce(ball: &Ball, spec: &ShotSpec, d: f64) -> anyhow::Result<f64> {
-    let n = spec.ends.bounces;
-    if !(d.is_finite() && d > 0.0) {
-        anyhow::bail!("invalid --after-bounce: {} (must be positive)", given(d, 6));
-    }
-    if n == 0 {
-        anyhow::bail!("invalid --after-bounce: the shot makes no bounce (--bounces 0)");
-    }
-    let first = ball
-        .shot_unwarned(&ShotSpec {
-            samples: 0,
-            ..*spec
-        })
-        .map_err(flag_named)?;
-    let Some(last) = first.bounces.get(n - 1) else {
-        anyhow::bail!(
-            "invalid --after-bounce: the shot ends (at t = {} s) before its bounce {n}",
-            given(first.end.state.t, 4)
-        );
-    };
-    let x = last.x + d;
-    let to = ball.shot_unwarned(&ShotSpec {
-        ends: Ends {
-            distance: Some(x),
-            ..spec.ends
-        },
-        samples: 0,
-        ..*spec
-    });
-    if to.map_err(flag_named)?.bounces.len() < n {
-        anyhow::bail!(
-            "invalid --after-bounce: the ball passes x = {} m before its bounce {n}",
-            given(x, 6)
-        );
-    }
-    Ok(x)
-}
-
 /// A value refused by the library, named by its flag: `invalid --drag-coefficient: …`.
-fn flag_named(e: crate::api::BallError) -> anyhow::Error {
+pub(super) fn flag_named(e: crate::api::BallError) -> anyhow::Error {
     match &e {
         crate::api::BallError::Invalid { field, value, .. } if *field == "shot" => {
             anyhow::anyhow!(
@@ -315,13 +273,14 @@ fn trajectory_csv(out: &mut dyn Write, s: &ShotReport) -> std::io::Result<()> {
     Ok(())
 }
 
-fn text(
+/// The header's lines after its first, `shot`'s and `mc --shot`'s: the ball's overrides
+/// (when any), the surface, the conditions (when stated) and the air.
+pub(super) fn ran_lines(
     out: &mut dyn Write,
-    (ball, surface): (&Ball, &SurfaceUsed),
-    spec: &ShotSpec,
-    s: &ShotReport,
+    ball: &Ball,
+    surface: &SurfaceUsed,
+    aero: &crate::flight::Aero,
 ) -> std::io::Result<()> {
-    writeln!(out, "{}: {}", ball.label(), title(spec))?;
     if let Some(line) = ball.overrides_line() {
         writeln!(out, "{line}")?;
     }
@@ -332,9 +291,19 @@ fn text(
     writeln!(
         out,
         "air: ρ = {} kg/m³; {}",
-        given(s.aero.air_density, 4),
-        s.aero.source
-    )?;
+        given(aero.air_density, 4),
+        aero.source
+    )
+}
+
+fn text(
+    out: &mut dyn Write,
+    (ball, surface): (&Ball, &SurfaceUsed),
+    spec: &ShotSpec,
+    s: &ShotReport,
+) -> std::io::Result<()> {
+    writeln!(out, "{}: {}", ball.label(), title(spec))?;
+    ran_lines(out, ball, surface, &s.aero)?;
     writeln!(out)?;
     let mut rows = vec![
         [

@@ -192,8 +192,14 @@ fn after_bounce_is_the_distance_past_the_bounce() {
         assert_eq!(after, common::ok_calibrated(&by_hand));
     }
     for (extra, says) in [
-        ("--after-bounce 1 --bounces 0", "invalid --after-bounce: the shot makes no bounce"),
-        ("--after-bounce 0", "invalid --after-bounce: 0 (must be positive)"),
+        (
+            "--after-bounce 1 --bounces 0",
+            "invalid --after-bounce: the shot makes no bounce",
+        ),
+        (
+            "--after-bounce 0",
+            "invalid --after-bounce: 0 (must be positive)",
+        ),
         ("--after-bounce 1 --time 0.2", "before its bounce 1"),
         ("--after-bounce 1 --distance 20", "cannot be used with"),
     ] {

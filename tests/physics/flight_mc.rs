@@ -128,7 +128,10 @@ fn the_monte_carlo_warns_as_its_nominal_shot() {
         .into_iter()
         .flat_map(|b| b.warnings)
         .collect();
-    assert!(nominal[0].starts_with("outside calibration:"), "{nominal:?}");
+    assert!(
+        nominal[0].starts_with("outside calibration:"),
+        "{nominal:?}"
+    );
     assert_eq!(r.warnings, nominal);
     // a baseball's line drive off the ground: the same rule
     let baseball = Ball::from_preset("baseball").unwrap();
