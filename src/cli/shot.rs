@@ -6,6 +6,7 @@ use super::ball::BallArgs;
 use super::oblique::TangentialArgs;
 use super::output::{self, csv_row, given, num, table};
 use super::outputs::{check as check_writable, report_then_commit};
+use super::shot_after::{flag_named, past_bounce};
 use super::surface::{SurfaceArgs, SurfaceUsed};
 use crate::api::{Ball, BallHeader, ShotReport, ShotSpec};
 use crate::atomic::Outputs;
@@ -151,7 +152,7 @@ pub fn run(a: &ShotArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     let ball = a.ball.resolve(None)?;
     let mut spec = a.spec();
     if let Some(d) = a.after_bounce {
-        spec.ends.distance = Some(super::shot_after::past_bounce(&ball, &spec, d)?);
+        spec.ends.distance = Some(past_bounce(&ball, &spec, d)?);
     }
     let paths: Vec<&std::path::Path> = a.svg_out.iter().map(PathBuf::as_path).collect();
     check_writable(&paths, a.force)?;
@@ -190,24 +191,6 @@ pub fn run(a: &ShotArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     }
     report_then_commit(out, &report, files)?;
     Ok(())
-}
-
-/// A value refused by the library, named by its flag: `invalid --drag-coefficient: …`.
-pub(super) fn flag_named(e: crate::api::BallError) -> anyhow::Error {
-    match &e {
-        crate::api::BallError::Invalid { field, value, .. } if *field == "shot" => {
-            anyhow::anyhow!(
-                "the ball flies for more than {} s without landing (a lift that holds it up?): \
-                 give --time or --distance",
-                given(*value, 6)
-            )
-        }
-        crate::api::BallError::Invalid { field, .. } => {
-            let flag = format!("--{}", field.replace('_', "-"));
-            anyhow::anyhow!("{}", e.to_string().replacen(field, &flag, 1))
-        }
-        _ => e.into(),
-    }
 }
 
 fn title(s: &ShotSpec) -> String {

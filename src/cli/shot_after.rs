@@ -1,5 +1,6 @@
 //! `shot --after-bounce D`: the shot ended D m past its last bounce (docs/cli.md `shot`,
-//! docs/flight.md §6: where a serve is a metre after it bounces).
+//! docs/flight.md §6: where a serve is a metre after it bounces), and the library's
+//! refusals of a shot named by their flags.
 
 use super::output::given;
 use crate::api::{Ball, ShotSpec};
@@ -22,7 +23,7 @@ pub(super) fn past_bounce(ball: &Ball, spec: &ShotSpec, d: f64) -> anyhow::Resul
             samples: 0,
             ..*spec
         })
-        .map_err(super::shot::flag_named)?;
+        .map_err(flag_named)?;
     let Some(last) = first.bounces.get(n - 1) else {
         anyhow::bail!(
             "invalid --after-bounce: the shot ends (at t = {} s) before its bounce {n}",
@@ -38,11 +39,29 @@ pub(super) fn past_bounce(ball: &Ball, spec: &ShotSpec, d: f64) -> anyhow::Resul
         samples: 0,
         ..*spec
     });
-    if to.map_err(super::shot::flag_named)?.bounces.len() < n {
+    if to.map_err(flag_named)?.bounces.len() < n {
         anyhow::bail!(
             "invalid --after-bounce: the ball passes x = {} m before its bounce {n}",
             given(x, 6)
         );
     }
     Ok(x)
+}
+
+/// A value refused by the library, named by its flag: `invalid --drag-coefficient: …`.
+pub(super) fn flag_named(e: crate::api::BallError) -> anyhow::Error {
+    match &e {
+        crate::api::BallError::Invalid { field, value, .. } if *field == "shot" => {
+            anyhow::anyhow!(
+                "the ball flies for more than {} s without landing (a lift that holds it up?): \
+                 give --time or --distance",
+                given(*value, 6)
+            )
+        }
+        crate::api::BallError::Invalid { field, .. } => {
+            let flag = format!("--{}", field.replace('_', "-"));
+            anyhow::anyhow!("{}", e.to_string().replacen(field, &flag, 1))
+        }
+        _ => e.into(),
+    }
 }
