@@ -277,8 +277,9 @@ impl Ball {
 
     /// [`Ball::shot`] with its bounces' `warnings` left empty, not made: for a caller that
     /// reads the numbers only (`mc --shot`'s samples, Python's `shots`). Making them (the
-    /// ball copied at the bounce's v_y, the calibration warning formatted) was some 7 % of a
-    /// shot's instructions, spent on text no one read. Every number is `shot`'s
+    /// ball copied at the bounce's v_y, the calibration warning formatted) is 7 % of the
+    /// serve's instructions (callgrind, `benches/shot.rs`), spent on text no one read there.
+    /// Every number is `shot`'s
     /// (`shot_unwarned_is_shot_without_its_warnings`, tests/physics).
     pub fn shot_unwarned(&self, spec: &ShotSpec) -> Result<ShotReport, BallError> {
         let radius = Some(self.radius())
