@@ -19,6 +19,22 @@ fn shot_one_bounce(b: divan::Bencher) {
     b.bench(|| black_box(&ball).shot(black_box(&spec)).unwrap().end.state.x);
 }
 
+/// The same shot without its bounce's warnings (`Ball::shot_unwarned`): what each sample of
+/// `mc --shot` runs.
+#[divan::bench]
+fn shot_one_bounce_unwarned(b: divan::Bencher) {
+    let ball = Ball::from_preset("tennis").unwrap();
+    let spec = ShotSpec::new(2.8, 50.0, -6.0, 200.0, 0.6);
+    b.bench(|| {
+        black_box(&ball)
+            .shot_unwarned(black_box(&spec))
+            .unwrap()
+            .end
+            .state
+            .x
+    });
+}
+
 /// The same two flights with a bounce that costs nothing (v_y reversed): the integration's
 /// share.
 #[divan::bench]

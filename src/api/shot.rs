@@ -102,7 +102,7 @@ pub struct ShotBounce {
     pub contact_time: f64,
     /// Whether the contact point slid throughout.
     pub slid_throughout: bool,
-    /// The bounce's warnings (`oblique`'s).
+    /// The bounce's warnings (`oblique`'s; empty, not made, from [`Ball::shot_unwarned`]).
     pub warnings: Vec<String>,
 }
 
@@ -230,7 +230,8 @@ impl Ball {
         Ok(())
     }
 
-    /// One bounce of a shot as the report gives it.
+    /// One bounce of a shot as the report gives it, its warnings not made
+    /// ([`Ball::shot`] makes them).
     fn shot_bounce(&self, b: &flight::Bounce<ObliqueResponse>) -> ShotBounce {
         let r = &b.answer;
         let sx = if b.mirrored { -1.0 } else { 1.0 };
@@ -250,7 +251,7 @@ impl Ball {
             cor_normal: r.cor_normal,
             contact_time: r.contact_time,
             slid_throughout: r.slid_throughout,
-            warnings: self.oblique_warnings(r),
+            warnings: Vec::new(),
         }
     }
 
@@ -267,6 +268,20 @@ impl Ball {
     /// # Ok::<(), bouncelab::BallError>(())
     /// ```
     pub fn shot(&self, spec: &ShotSpec) -> Result<ShotReport, BallError> {
+        let mut shot = self.shot_unwarned(spec)?;
+        for (b, (r, _)) in shot.bounces.iter_mut().zip(&shot.responses) {
+            b.warnings = self.oblique_warnings(r);
+        }
+        Ok(shot)
+    }
+
+    /// [`Ball::shot`] with its bounces' `warnings` left empty, not made: for a caller that
+    /// reads the numbers only (`mc --shot`'s samples, Python's `shots`). Making them (the
+    /// ball copied at the bounce's v_y, the calibration warning formatted) is 7 % of the
+    /// serve's instructions (callgrind, `benches/shot.rs`), spent on text no one read there.
+    /// Every number is `shot`'s
+    /// (`shot_unwarned_is_shot_without_its_warnings`, tests/physics).
+    pub fn shot_unwarned(&self, spec: &ShotSpec) -> Result<ShotReport, BallError> {
         let radius = Some(self.radius())
             .filter(|r| r.is_finite())
             .ok_or(BallError::Oblique(ObliqueError::Missing("radius")))?;

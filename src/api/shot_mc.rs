@@ -87,6 +87,11 @@ pub struct ShotMcReport {
     /// [`SHOT_MC_QUANTITIES`]' spreads, in that order (the first bounce's for landing_x …
     /// spin_out; NaN with bounces = 0).
     pub stats: Vec<(&'static str, Spread)>,
+    /// The nominal shot's warnings (its bounces', as `shot` gives them for the same flags),
+    /// as `mc` gives its nominal impact's: "outside calibration: …" as it is, any other
+    /// opened by "at the nominal launch: ". The samples' own are not made
+    /// ([`Ball::shot_unwarned`]).
+    pub warnings: Vec<String>,
 }
 
 fn row(r: &ShotReport) -> [f64; 6] {
@@ -117,6 +122,22 @@ fn spread(mut v: Vec<f64>) -> Spread {
         q50: q(0.5),
         q975: q(0.975),
     }
+}
+
+/// The nominal shot's warnings as a Monte Carlo states them (`Ball::mc_warnings`' rule).
+fn nominal_warnings(nominal: &ShotReport) -> Vec<String> {
+    nominal
+        .bounces
+        .iter()
+        .flat_map(|b| &b.warnings)
+        .map(|w| {
+            if w.starts_with("outside calibration:") {
+                w.clone()
+            } else {
+                format!("at the nominal launch: {w}")
+            }
+        })
+        .collect()
 }
 
 impl ShotMcSpec {
@@ -190,8 +211,8 @@ impl Ball {
                 return Err(invalid(field, x, "its spread must be zero or positive"));
             }
         }
-        // the nominal shot first: its errors are the input's
-        self.shot(&spec.shot)?;
+        // the nominal shot first: its errors are the input's, its warnings the report's
+        let nominal = self.shot(&spec.shot)?;
         let mut ok: Vec<[f64; 6]> = Vec::with_capacity(spec.samples);
         let mut done = 0usize;
         while done < spec.samples {
@@ -201,7 +222,7 @@ impl Ball {
             let end = (done + SHOT_MC_BLOCK).min(spec.samples);
             let block: Vec<Option<[f64; 6]>> = (done as u64..end as u64)
                 .into_par_iter()
-                .map(|i| self.shot(&spec.sample(i)).ok().map(|r| row(&r)))
+                .map(|i| self.shot_unwarned(&spec.sample(i)).ok().map(|r| row(&r)))
                 .collect();
             ok.extend(block.into_iter().flatten());
             done = end;
@@ -228,6 +249,7 @@ impl Ball {
             vary: spec.spread,
             failed: spec.samples - ok.len(),
             stats,
+            warnings: nominal_warnings(&nominal),
         }))
     }
 }

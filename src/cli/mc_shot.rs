@@ -6,8 +6,9 @@
 use super::ball::BallArgs;
 use super::oblique::TangentialArgs;
 use super::output::{self, given, table};
-use crate::api::{BallError, ShotMcReport, ShotMcSpec, ShotSpec, ShotSpread};
-use crate::flight::{Ends, Launch};
+use super::surface::SurfaceUsed;
+use crate::api::{Ball, BallError, ShotMcReport, ShotMcSpec, ShotSpec, ShotSpread};
+use crate::flight::{Aero, Ends, Launch};
 use clap::Args;
 use std::io::Write;
 
@@ -169,15 +170,32 @@ pub fn run(s: &ShotMcArgs, a: &Mc<'_>, out: &mut dyn Write) -> anyhow::Result<()
         return Err(stopped.unwrap_or_else(|| super::budget::Interrupted.into()));
     };
     progress.finish();
+    let surface = super::shot::surface_of(spec.shot.friction, &s.tangential)?;
+    let ran = Ran {
+        ball: &ball,
+        surface: &surface,
+        aero: ball.aero(&spec.shot),
+    };
     if a.json {
-        output::json_stated(out, &json(&ball, &r), &ball.conditions)?
+        output::json_stated(out, &json(&ran, &r), &ball.conditions)?
     } else {
-        text(out, &ball.label(), &r)?
+        text(out, &ran, &r)?
     }
     Ok(())
 }
 
-fn json(ball: &crate::api::Ball, r: &ShotMcReport) -> serde_json::Value {
+/// What the shots ran with, named in the answer as `shot` names it (issue 52 item 3, issue
+/// 53): the ball, the surface, the air; the conditions follow (`json_stated`).
+struct Ran<'a> {
+    ball: &'a Ball,
+    surface: &'a SurfaceUsed,
+    aero: Aero,
+}
+
+/// The JSON answer: `mc --shot`'s keys, then (additive) `aero`, `warnings`, the ball and the
+/// surface objects; `conditions` last.
+fn json(ran: &Ran<'_>, r: &ShotMcReport) -> serde_json::Value {
+    let ball = ran.ball;
     let stats: serde_json::Map<String, serde_json::Value> = r
         .stats
         .iter()
@@ -192,14 +210,19 @@ fn json(ball: &crate::api::Ball, r: &ShotMcReport) -> serde_json::Value {
         "vary": r.vary,
         "failed": r.failed,
         "stats": stats,
+        "aero": ran.aero,
+        "warnings": r.warnings,
+        "ball": ball.record_json(),
+        "surface": ran.surface,
     })
 }
 
-fn text(out: &mut dyn Write, label: &str, r: &ShotMcReport) -> std::io::Result<()> {
+fn text(out: &mut dyn Write, ran: &Ran<'_>, r: &ShotMcReport) -> std::io::Result<()> {
     let v = r.vary;
     writeln!(
         out,
-        "{label}: {} shots, seed {}, {} spread: speed {} %, spin {} rad/s, elevation {}°, height {} m",
+        "{}: {} shots, seed {}, {} spread: speed {} %, spin {} rad/s, elevation {}°, height {} m",
+        ran.ball.label(),
         r.samples,
         r.seed,
         r.dist,
@@ -208,6 +231,7 @@ fn text(out: &mut dyn Write, label: &str, r: &ShotMcReport) -> std::io::Result<(
         given(v.elevation, 4),
         given(v.height, 4)
     )?;
+    super::shot::ran_lines(out, ran.ball, ran.surface, &ran.aero)?;
     let mut rows = vec![
         ["", "mean", "sd", "2.5 %", "median", "97.5 %"]
             .map(String::from)
@@ -239,5 +263,6 @@ fn text(out: &mut dyn Write, label: &str, r: &ShotMcReport) -> std::io::Result<(
             r.failed
         )?;
     }
+    output::warning_lines(out, &r.warnings)?;
     Ok(())
 }

@@ -6,6 +6,7 @@ use super::ball::BallArgs;
 use super::oblique::TangentialArgs;
 use super::output::{self, csv_row, given, num, table};
 use super::outputs::{check as check_writable, report_then_commit};
+use super::shot_after::{flag_named, past_bounce};
 use super::surface::{SurfaceArgs, SurfaceUsed};
 use crate::api::{Ball, BallHeader, ShotReport, ShotSpec};
 use crate::atomic::Outputs;
@@ -56,6 +57,10 @@ pub struct ShotArgs {
     /// End at this time, s after the launch
     #[arg(long, value_name = "T", value_parser = super::number::number, allow_hyphen_values = true)]
     pub time: Option<f64>,
+    /// End D m (along x) past the last of the --bounces bounces: where the ball is a metre
+    /// after it bounces is --after-bounce 1
+    #[arg(long, value_name = "D", conflicts_with = "distance", value_parser = super::number::number, allow_hyphen_values = true)]
+    pub after_bounce: Option<f64>,
     /// Air density ρ, kg/m³ (0: vacuum)
     #[arg(long, value_name = "RHO", default_value_t = crate::drop::flight::AIR_DENSITY, value_parser = super::number::number, allow_hyphen_values = true)]
     pub air_density: f64,
@@ -129,12 +134,13 @@ struct Report<'a> {
 
 /// The surface a shot bounces on: the rigid plate (the shot takes no `--surface`: every
 /// bounce is `Ball::oblique`'s, on the rigid plate) with `--friction` and the tangential
-/// flags, named in the JSON and the text as every command on a surface names it.
-fn surface_of(a: &ShotArgs) -> anyhow::Result<SurfaceUsed> {
+/// flags, named in the JSON and the text as every command on a surface names it (`shot`
+/// and `mc --shot`).
+pub(super) fn surface_of(friction: f64, t: &TangentialArgs) -> anyhow::Result<SurfaceUsed> {
     Ok(SurfaceArgs::default().resolve()?.with_tangential([
-        Some(a.friction),
-        a.tangential.tangential_stiffness,
-        a.tangential.tangential_damping,
+        Some(friction),
+        t.tangential_stiffness,
+        t.tangential_damping,
     ]))
 }
 
@@ -144,11 +150,14 @@ pub fn run(a: &ShotArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         return Err(crate::api::BallError::Samples(0).into());
     }
     let ball = a.ball.resolve(None)?;
-    let spec = a.spec();
+    let mut spec = a.spec();
+    if let Some(d) = a.after_bounce {
+        spec.ends.distance = Some(past_bounce(&ball, &spec, d)?);
+    }
     let paths: Vec<&std::path::Path> = a.svg_out.iter().map(PathBuf::as_path).collect();
     check_writable(&paths, a.force)?;
     let shot = ball.shot(&spec).map_err(flag_named)?;
-    let surface = surface_of(a)?;
+    let surface = surface_of(a.friction, &a.tangential)?;
     let mut files = Outputs::new(a.force);
     if let Some(p) = &a.svg_out {
         let drawn = if shot.trajectory.is_empty() {
@@ -182,24 +191,6 @@ pub fn run(a: &ShotArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     }
     report_then_commit(out, &report, files)?;
     Ok(())
-}
-
-/// A value refused by the library, named by its flag: `invalid --drag-coefficient: …`.
-fn flag_named(e: crate::api::BallError) -> anyhow::Error {
-    match &e {
-        crate::api::BallError::Invalid { field, value, .. } if *field == "shot" => {
-            anyhow::anyhow!(
-                "the ball flies for more than {} s without landing (a lift that holds it up?): \
-                 give --time or --distance",
-                given(*value, 6)
-            )
-        }
-        crate::api::BallError::Invalid { field, .. } => {
-            let flag = format!("--{}", field.replace('_', "-"));
-            anyhow::anyhow!("{}", e.to_string().replacen(field, &flag, 1))
-        }
-        _ => e.into(),
-    }
 }
 
 fn title(s: &ShotSpec) -> String {
@@ -265,13 +256,17 @@ fn trajectory_csv(out: &mut dyn Write, s: &ShotReport) -> std::io::Result<()> {
     Ok(())
 }
 
-fn text(
+/// The header's lines after its first, `shot`'s and `mc --shot`'s: the ball's overrides
+/// (when any), the surface, the conditions (when stated) and the air.
+pub(super) fn ran_lines(
     out: &mut dyn Write,
-    (ball, surface): (&Ball, &SurfaceUsed),
-    spec: &ShotSpec,
-    s: &ShotReport,
+    ball: &Ball,
+    surface: &SurfaceUsed,
+    aero: &crate::flight::Aero,
 ) -> std::io::Result<()> {
-    writeln!(out, "{}: {}", ball.label(), title(spec))?;
+    if let Some(line) = ball.overrides_line() {
+        writeln!(out, "{line}")?;
+    }
     writeln!(out, "{}", surface.label())?;
     if let Some(line) = ball.conditions_line() {
         writeln!(out, "{line}")?;
@@ -279,9 +274,19 @@ fn text(
     writeln!(
         out,
         "air: ρ = {} kg/m³; {}",
-        given(s.aero.air_density, 4),
-        s.aero.source
-    )?;
+        given(aero.air_density, 4),
+        aero.source
+    )
+}
+
+fn text(
+    out: &mut dyn Write,
+    (ball, surface): (&Ball, &SurfaceUsed),
+    spec: &ShotSpec,
+    s: &ShotReport,
+) -> std::io::Result<()> {
+    writeln!(out, "{}: {}", ball.label(), title(spec))?;
+    ran_lines(out, ball, surface, &s.aero)?;
     writeln!(out)?;
     let mut rows = vec![
         [

@@ -68,3 +68,83 @@ fn bad_spreads_are_refused_by_name() {
         .to_string();
     assert!(e.contains("invalid samples"), "{e}");
 }
+
+/// `Ball::shot_unwarned` (what `mc --shot`'s samples and Python's `shots` run) is `Ball::shot`
+/// with its bounces' warnings not made: every number the same, bit for bit, over spread
+/// launches of one and two bounces, the warnings `shot` makes among them.
+#[test]
+fn shot_unwarned_is_shot_without_its_warnings() {
+    let ball = Ball::from_preset("tennis").unwrap();
+    let wide = ShotSpread {
+        speed: 0.3,
+        spin: 150.0,
+        elevation: 3.0,
+        height: 0.3,
+    };
+    let mut warned = 0;
+    for bounces in [1, 2] {
+        let mut mc = spec(wide, 100, 5);
+        mc.shot.ends.bounces = bounces;
+        for i in 0..100 {
+            let s = mc.sample(i);
+            let (full, bare) = match (ball.shot(&s), ball.shot_unwarned(&s)) {
+                (Ok(full), Ok(bare)) => (full, bare),
+                (Err(a), Err(b)) => {
+                    assert_eq!(a.to_string(), b.to_string());
+                    continue;
+                }
+                (a, b) => panic!("sample {i}: {a:?} against {b:?}"),
+            };
+            assert!(bare.bounces.iter().all(|b| b.warnings.is_empty()));
+            let mut filled = bare.clone();
+            for (b, f) in filled.bounces.iter_mut().zip(&full.bounces) {
+                warned += usize::from(!f.warnings.is_empty());
+                b.warnings = f.warnings.clone();
+            }
+            assert_eq!(filled, full, "sample {i}");
+        }
+    }
+    assert!(warned > 100, "the cases warn: {warned}");
+}
+
+/// The defect: `mc --shot` made every sample's warnings and said none of them, not even the
+/// nominal shot's, which `shot` says for the same flags (its bounce is outside the tennis
+/// ball's calibration) and `mc` says for its nominal impact. Its warnings are now the
+/// nominal shot's, as `mc` states them. Fails on the old code (no `warnings`).
+#[test]
+fn the_monte_carlo_warns_as_its_nominal_shot() {
+    let ball = Ball::from_preset("tennis").unwrap();
+    let s = ShotSpread {
+        speed: 0.02,
+        spin: 30.0,
+        ..ShotSpread::default()
+    };
+    let mc = spec(s, 64, 1);
+    let r = ball.shot_mc(&mc).unwrap();
+    let nominal: Vec<String> = ball
+        .shot(&mc.shot)
+        .unwrap()
+        .bounces
+        .into_iter()
+        .flat_map(|b| b.warnings)
+        .collect();
+    assert!(
+        nominal[0].starts_with("outside calibration:"),
+        "{nominal:?}"
+    );
+    assert_eq!(r.warnings, nominal);
+    // a baseball's line drive off the ground: the same rule
+    let baseball = Ball::from_preset("baseball").unwrap();
+    let drive = ShotMcSpec {
+        shot: ShotSpec::new(1.0, 40.0, 10.0, -200.0, 0.5),
+        ..mc
+    };
+    let nominal: Vec<String> = baseball
+        .shot(&drive.shot)
+        .unwrap()
+        .bounces
+        .into_iter()
+        .flat_map(|b| b.warnings)
+        .collect();
+    assert_eq!(baseball.shot_mc(&drive).unwrap().warnings, nominal);
+}

@@ -15,7 +15,8 @@ use crate::model::contact::ContactLaw;
 use crate::model::params::ImpactParams;
 use crate::solver::{ImpactResponse, SolveOptions, simulate};
 use nalgebra::DMatrix;
-use std::cell::Cell;
+use std::cell::{Cell, RefCell};
+use std::rc::Rc;
 
 pub(super) struct TraceProblem<'a> {
     pub base: ImpactParams,
@@ -33,6 +34,12 @@ pub(super) struct TraceProblem<'a> {
     runs: Cell<u64>,
     /// The watch said stop: every later run gives no answer, and the fit ends.
     stopped: Cell<bool>,
+    /// The last model run and the parameters (x's first k, bit for bit) it ran at: the
+    /// Levenberg–Marquardt loop asks the residuals at x and then, the step taken, the
+    /// Jacobian at the same x, and the report asks the rows at the answer; one solver run
+    /// serves them all (the solver is deterministic, and t0 and b do not enter it).
+    /// `trace::tests::one_run_serves_residuals_jacobian_and_rows`.
+    last: RefCell<Option<(Vec<u64>, Rc<ImpactResponse>)>>,
 }
 
 /// Model force on a uniform history grid `t` (`t[0] = 0`), at time `s`, and its slope:
@@ -100,6 +107,7 @@ impl<'a> TraceProblem<'a> {
             watch,
             runs: Cell::new(0),
             stopped: Cell::new(false),
+            last: RefCell::new(None),
         }
     }
 
@@ -121,23 +129,42 @@ impl<'a> TraceProblem<'a> {
     }
 
     /// The solver's run (with its history) at `x`, or `None` when it has no answer or the
-    /// watch stops the fit (asked before every run).
-    fn run(&self, x: &[f64]) -> Option<ImpactResponse> {
+    /// watch stops the fit (asked before every run). The last run answers again for the
+    /// same parameters without running (nor counting) again.
+    fn run(&self, x: &[f64]) -> Option<Rc<ImpactResponse>> {
+        if self.stopped.get() {
+            return None;
+        }
+        let key: Vec<u64> = x[..self.k()].iter().map(|v| v.to_bits()).collect();
+        if let Some((at, r)) = &*self.last.borrow()
+            && *at == key
+        {
+            return Some(Rc::clone(r));
+        }
         let runs = self.runs.get() + 1;
         self.runs.set(runs);
-        if self.stopped.get() || !self.watch.step(runs) {
+        if !self.watch.step(runs) {
             self.stopped.set(true);
             return None;
         }
         let p = self.ball(x);
         p.validate().ok()?;
         let opts = SolveOptions::default().with_samples(self.history);
-        simulate(&p, self.law, &opts).ok()
+        let r = Rc::new(simulate(&p, self.law, &opts).ok()?);
+        *self.last.borrow_mut() = Some((key, Rc::clone(&r)));
+        Some(r)
+    }
+
+    /// Model runs so far (each a solver run; the last run's answer given again is none).
+    #[cfg(test)]
+    pub fn runs(&self) -> u64 {
+        self.runs.get()
     }
 
     /// The model force at every row of the trace (not its bins), for the report and plots.
     pub fn model_at_rows(&self, x: &[f64]) -> Option<Vec<f64>> {
-        let h = self.run(x)?.history;
+        let run = self.run(x)?;
+        let h = &run.history;
         let (t0, b) = (x[self.k()], x[self.k() + 1]);
         let f = |t: f64| interpolate(&h.t, &h.force, t - t0).0 + b;
         Some(self.trace.time.iter().map(|&t| f(t)).collect())
@@ -155,7 +182,8 @@ impl<'a> TraceProblem<'a> {
     /// (model force at each sample (row or bin), its slope in t) or `None` when the solver has
     /// no answer.
     pub fn model(&self, x: &[f64]) -> Option<(Vec<f64>, Vec<f64>)> {
-        let h = self.run(x)?.history;
+        let run = self.run(x)?;
+        let h = &run.history;
         let (t0, b) = (x[self.k()], x[self.k() + 1]);
         Some(
             self.data
@@ -328,3 +356,6 @@ impl Residuals for Sub<'_, '_> {
         self.p.stopped()
     }
 }
+
+#[cfg(test)]
+mod tests;
