@@ -60,5 +60,6 @@ mod tui_small_pty;
 mod tui_surface;
 mod tui_target;
 mod tui_ticks;
+mod tui_typed_numbers;
 mod tui_worker_pty;
 mod tui_worker_stopped;

@@ -23,9 +23,11 @@ fn entry_text(field: Field, v: f64) -> String {
 
 /// The SI value of `text` typed in `field`: a number in the field's screen unit, or for the
 /// pressure a number with its unit as `--pressure` reads it (0.8bar, 8psi, 55kPa, 80000Pa).
+/// A number in a screen unit is the decimal typed, its point moved (45.93 g is 0.04593 kg to
+/// the bit, not 45.93/1000 an ulp beside it: `y` then writes `--mass 0.04593`).
 fn typed(field: Field, text: &str) -> Result<f64, String> {
     match number(text) {
-        Ok(v) => Ok(v / field.screen().1),
+        Ok(v) => Ok(crate::tui::exact::from_screen(v, field.screen().1)),
         Err(_) if field == Field::Pressure => {
             crate::conditions::pressure::parse("pressure", text.trim())
         }
