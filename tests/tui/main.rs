@@ -58,6 +58,7 @@ mod tui_screen_words;
 mod tui_session;
 mod tui_small_pty;
 mod tui_surface;
+mod tui_surface_form;
 mod tui_target;
 mod tui_ticks;
 mod tui_typed_numbers;
