@@ -4,10 +4,10 @@
 //! (`Ball::calibrate_court`) under the JSON's keys.
 
 use crate::ball_args::ball_pyfunction;
+use crate::batch::read_text;
 use crate::oblique::tangential_surface;
 use crate::{error, value_error};
 use bouncelab::Ball;
-use crate::batch::read_text;
 use bouncelab::api::{CourtCalibration, CourtMeasured, court_measured};
 use bouncelab::measured::parse_court;
 use pyo3::prelude::*;
@@ -122,8 +122,7 @@ fn calibrate(
     if given("damping") {
         // as the command line refuses --surface-cor and --fit with --surface-damping
         return Err(value_error(
-            "surface_cor and fit solve the surface's damping: give no damping in surface="
-                .into(),
+            "surface_cor and fit solve the surface's damping: give no damping in surface=".into(),
         ));
     }
     let stiffness = given("stiffness").then_some(surface.stiffness);

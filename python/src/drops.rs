@@ -205,7 +205,10 @@ fn static_verdict<'py>(
     })?;
     let verdict = verdict_dict(py, &v)?;
     verdict.set_item("judged_at_height_m", py.None())?;
-    verdict.set_item("static", crate::answer::json(py, &api::static_test_report(d, &s))?)?;
+    verdict.set_item(
+        "static",
+        crate::answer::json(py, &api::static_test_report(d, &s))?,
+    )?;
     Ok((verdict, ball.static_warnings(&s)))
 }
 
