@@ -85,6 +85,7 @@ mod entry;
 mod error;
 mod fit;
 mod intervals;
+mod judged;
 mod mc;
 mod oblique;
 mod oblique_fit;
@@ -111,6 +112,10 @@ pub use court::{CourtCalibration, ITF_ANGLE, ITF_SPEED};
 pub use entry::{Overrides, PresetRow};
 pub use error::BallError;
 pub use intervals::{Intervals, bands, fit_table, holds, intervals};
+pub use judged::{
+    CourtMeasured, LeakVerdict, StaticTestReport, court_measured, judge_leak, leak_test_conditions,
+    pressure_loss_test, static_test_report,
+};
 pub use mc::{McReport, MonteCarlo};
 pub use oblique::{CourtPace, ObliqueSpec, SOLID_INERTIA_FACTOR};
 pub use oblique_fit::{ObliqueFitReport, is_data_error as is_oblique_data_error};

@@ -474,12 +474,19 @@ def standards() -> list[Standard]:
     ``drop(standard=…)`` and ``batch(standard=…)`` take (docs/drop.md, "Standards", cites
     each source; ``unconfirmed`` says what a public source did not confirm)."""
 
-class DropStandard(TypedDict):
+class _DropStandardSometimes(TypedDict, total=False):
+    # a static standard's (``itf-deformation``): its load, the return reading and the rules'
+    # return window (load_kg, peak_m, return_deflection_m, return_reason, return_window,
+    # return_inside)
+    static: dict[str, Any]
+
+class DropStandard(_DropStandardSometimes):
     """The verdict of ``bouncelab drop --standard NAME``: ``window`` [lo, hi] (m of rebound in
     the standard's convention, or a COR; None where the standard sets no bound), ``measured``
     in the same units, ``margin`` the distance to the nearer bound (positive inside),
     ``judged_at_height_m`` the standard's own drop height it was judged at (None for a COR
-    test)."""
+    test or a static one); a static standard's (``itf-deformation``: the forward deflection
+    in m of the diameter, by the model's static chain) ``static`` report."""
     name: str
     window: list[Optional[float]]
     measured: float
@@ -496,9 +503,21 @@ class _DropKeys(TypedDict):
     ball: BallRecord
     conditions: Conditions
 
+class LeakVerdict(TypedDict):
+    """``drop(standard="fifa-pressure-loss", half_life=…)``'s verdict on the ball's leak."""
+    name: str
+    hours: float
+    max_loss: float
+    half_life_h: float
+    lost: float
+    verdict: Literal["pass", "fail"]
+    margin: float
+
 class Drop(_DropKeys, total=False):
-    """The keys of ``bouncelab drop --format json``; ``standard`` only when one is named."""
+    """The keys of ``bouncelab drop --format json``; ``standard`` only when an impact or a
+    static standard is named, ``pressure_loss`` only for a pressure-loss test."""
     standard: DropStandard
+    pressure_loss: LeakVerdict
 
 def drop(
     preset: str = "superball",
@@ -522,8 +541,12 @@ def drop(
     max_force, contact_time, rebound_height); ``warnings`` what the caller should know. With
     ``standard`` (a name ``bouncelab standards`` lists, e.g. ``"itf"``), ``standard`` holds the
     verdict of that standard's own test (its drop height, or its COR speed) in this drop's air,
-    whatever ``height`` says. No standard is judged unless named, as on the command line; a
-    preset's own is the one whose ``balls`` list it in ``standards()``."""
+    whatever ``height`` says. Every standard ``drop --standard`` takes: a static one
+    (``"itf-deformation"``) is judged on the model's static deflection, with its ``static``
+    report; the pressure-loss test (``"fifa-pressure-loss"``) judges the leak of the
+    ``half_life`` given (no other conditions: the test sets them) in ``pressure_loss`` and
+    drops the ball after the test's time. No standard is judged unless named, as on the
+    command line; a preset's own is the one whose ``balls`` list it in ``standards()``."""
 
 class Collision:
     """A two-body impact, SI units: the keys of ``bouncelab collide --format json``."""
@@ -817,11 +840,14 @@ def static(
 class _CourtSometimes(TypedDict, total=False):
     tangential_damping: float
     calibration: dict[str, Any]
+    # with ``fit``: file, bounces, apparent_friction, cor_normal, cpr of the measured bounces
+    measured: dict[str, Any]
 
 class Court(_Named, _CourtSometimes):
     """The keys of ``bouncelab court --format json``: the Court Pace Rating and what it was
     computed on; ``calibration`` (surface_cor, stiffness, damping, cor, reachable,
-    assumption) with ``surface_cor``."""
+    assumption) with ``surface_cor`` or ``fit``; ``measured`` (the file's name, its bounces,
+    their mean μ_app and e and the CPR of them) with ``fit``."""
     standard: str
     friction: float
     cpr: float
@@ -844,6 +870,7 @@ def court(
     friction: Optional[float] = None,
     surface: Optional[SurfaceArg] = None,
     surface_cor: Optional[float] = None,
+    fit: Optional[Union[str, os.PathLike[str]]] = None,
     tangential_stiffness: Optional[float] = None,
     inertia_factor: Optional[float] = None,
     tangential_damping: Optional[float] = None,
@@ -855,4 +882,7 @@ def court(
     ball, as ``bouncelab court``: ``surface`` a name or a dict of its numbers, ``friction`` μ
     (the surface's when not given), ``surface_cor`` a measured e the court is calibrated to
     (c_s solved at the dict's ``stiffness``, else the ball's K_p: an assumption the answer
-    states; a ValueError with the reachable range when e is out of reach)."""
+    states; a ValueError with the reachable range when e is out of reach); ``fit`` a CSV
+    file of measured ITF test bounces (v_in, angle_in, v_out, angle_out in m/s and degrees),
+    as ``court --fit FILE``: their mean μ_app and e are the friction and the e calibrated to
+    (not with ``friction`` or ``surface_cor``)."""

@@ -4,12 +4,15 @@
 //! (`Ball::calibrate_court`) under the JSON's keys.
 
 use crate::ball_args::ball_pyfunction;
+use crate::batch::read_text;
 use crate::oblique::tangential_surface;
 use crate::{error, value_error};
 use bouncelab::Ball;
-use bouncelab::api::CourtCalibration;
+use bouncelab::api::{CourtCalibration, CourtMeasured, court_measured};
+use bouncelab::measured::parse_court;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
+use std::path::PathBuf;
 
 ball_pyfunction! {
     /// The ITF court pace of a surface for the ball, as `bouncelab court --preset NAME
@@ -20,14 +23,18 @@ ball_pyfunction! {
     /// `stiffness`, else the ball's K_p, an assumption the answer states). A dict with the
     /// JSON's keys: the ball, `standard`, `friction`, `cpr`, `category`, `category_name`,
     /// `apparent_friction`, `cor_normal`, `v_out`, `angle_out_deg`, `spin_out`, `warnings`,
-    /// `surface`, `calibration` (with `surface_cor`), `computed_on`, `ball`, `conditions`.
-    signature = (preset="superball", *, friction=None, surface=None, surface_cor=None, tangential_stiffness=None, inertia_factor=None, tangential_damping=None, law=None, params=None,);
+    /// `surface`, `calibration` (with `surface_cor` or `fit`), `measured` (with `fit`),
+    /// `computed_on`, `ball`, `conditions`. `fit` a file of measured ITF test bounces (CSV:
+    /// v_in, angle_in, v_out, angle_out in m/s and degrees), as `court --fit FILE`: their mean
+    /// μ_app and e are the friction and the e the court is calibrated to.
+    signature = (preset="superball", *, friction=None, surface=None, surface_cor=None, fit=None, tangential_stiffness=None, inertia_factor=None, tangential_damping=None, law=None, params=None,);
     fn court<'py>(
         py,
         preset: &str,
         friction: Option<f64>,
         surface: Option<&Bound<'py, PyAny>>,
         surface_cor: Option<f64>,
+        fit: Option<PathBuf>,
         tangential_stiffness: Option<f64>,
         inertia_factor: Option<f64>,
         tangential_damping: Option<f64>,
@@ -36,11 +43,18 @@ ball_pyfunction! {
     ) -> PyResult<Bound<'py, PyDict>>;
     ball choice = (preset, params, law);
     {
+        let measured = fit.map(|path| measured(path, [friction, surface_cor])).transpose()?;
         let ball = choice.resolve(None)?;
+        let friction = measured.as_ref().map(|(m, _)| m.apparent_friction).or(friction);
         let tangential = [friction, tangential_stiffness, tangential_damping];
         let (mut surface, friction) = tangential_surface(surface, tangential)?;
-        let calibration = match surface_cor {
-            Some(e) => Some(calibrate(&ball, e, &mut surface)?),
+        // the measured e, as `--fit` calibrates to it, else the one given
+        let target = match &measured {
+            Some((m, how)) => Some((m.cor_normal, how.as_str())),
+            None => surface_cor.map(|e| (e, "court --surface-cor")),
+        };
+        let calibration = match target {
+            Some((e, how)) => Some(calibrate(&ball, e, &mut surface, how)?),
             None => None,
         };
         let computed_on = format!(
@@ -67,25 +81,48 @@ ball_pyfunction! {
         if let Some(c) = &calibration {
             d.set_item("calibration", crate::answer::json(py, c)?)?;
         }
+        if let Some((m, _)) = &measured {
+            d.set_item("measured", crate::answer::json(py, m)?)?;
+        }
         d.set_item("computed_on", computed_on)?;
         crate::answer::stated(&d, &ball)?;
         Ok(d)
     }
 }
 
-/// The surface calibrated to the measured e at the ITF test, as `court --surface-cor E`: c_s
-/// solved, K_s held (the dict's `stiffness`, else the ball's K_p), the surface's numbers and
-/// overrides changed as the command line changes them.
+/// The means of the measured bounces in `path` (`court --fit FILE`) and how the court is
+/// calibrated to them; refused beside `friction` or `surface_cor`, which they give, as the
+/// command line refuses `--fit` with `--friction` or `--surface-cor`. A cell that does not
+/// read is named `FILE:LINE:COLUMN: message`, as the command line names it.
+fn measured(path: PathBuf, given: [Option<f64>; 2]) -> PyResult<(CourtMeasured, String)> {
+    if given.iter().any(Option::is_some) {
+        return Err(value_error(
+            "fit measures μ_app and e: give no friction or surface_cor with it".into(),
+        ));
+    }
+    let text = read_text(&path)?;
+    let shown = path.display().to_string();
+    let rows = parse_court(&text).map_err(|e| value_error(format!("{shown}:{e}")))?;
+    let name = path
+        .file_name()
+        .map_or_else(|| shown.clone(), |n| n.to_string_lossy().into_owned());
+    Ok((court_measured(name, &rows), format!("court --fit {shown}")))
+}
+
+/// The surface calibrated to the measured e at the ITF test, as `court --surface-cor E` (or
+/// `--fit FILE`, `how`): c_s solved, K_s held (the dict's `stiffness`, else the ball's K_p),
+/// the surface's numbers and overrides changed as the command line changes them.
 fn calibrate(
     ball: &Ball,
     e: f64,
     surface: &mut bouncelab::api::SurfaceUsed,
+    how: &str,
 ) -> PyResult<CourtCalibration> {
     let given = |k: &str| surface.overrides.iter().any(|o| o == k);
     if given("damping") {
-        // as the command line refuses --surface-cor with --surface-damping
+        // as the command line refuses --surface-cor and --fit with --surface-damping
         return Err(value_error(
-            "surface_cor solves the surface's damping: give no damping in surface=".into(),
+            "surface_cor and fit solve the surface's damping: give no damping in surface=".into(),
         ));
     }
     let stiffness = given("stiffness").then_some(surface.stiffness);
@@ -93,6 +130,6 @@ fn calibrate(
         .calibrate_court(e, stiffness, surface.mass)
         .map_err(error)?;
     // as the command line calibrates and names it
-    surface.calibrated(&c, "court --surface-cor");
+    surface.calibrated(&c, how);
     Ok(c)
 }

@@ -5,8 +5,10 @@ use crate::ball_args::{BallChoice, ball_pyfunction};
 use crate::impact::interval_columns;
 use crate::{array, error, interrupt, value_error};
 use bouncelab::BallError;
-use bouncelab::api::Ball;
-use bouncelab::drop::standards::{self, Verdict};
+use bouncelab::api::{self, Ball};
+use bouncelab::drop::conditions::PressureLoss;
+use bouncelab::drop::deformation::{self, DeformationStandard};
+use bouncelab::drop::standards::{self, Standard, Verdict};
 use bouncelab::drop::{Air, Bounce, DropRun, DropSetup};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
@@ -65,12 +67,30 @@ fn drop_of<'py>(
         ));
     }
     // the standard first, as the command line looks it up before the ball
-    let standard = standard
-        // an unknown name is refused listing every kind `drop --standard` takes
-        .map(|n| standards::find(n).map_err(|_| bouncelab::drop::names::unknown(n)))
-        .transpose()
-        .map_err(value_error)?;
-    let ball = choice.resolve(None)?;
+    let judged = standard.map(find).transpose()?;
+    let (standard, static_standard, leak_test) = match judged {
+        None => (None, None, None),
+        Some(Judged::Impact(s)) => (Some(s), None, None),
+        Some(Judged::Static(d)) => (None, Some(d), None),
+        Some(Judged::Leak(t)) => (None, None, Some(t)),
+    };
+    // the pressure-loss test runs the ball at its conditions, with the caller's half-life
+    let leak = leak_test
+        .map(|t| {
+            let flag = |n: &str| format!("{}=", n.replace('-', "_"));
+            let c = api::leak_test_conditions(t, &choice.conditions, flag).map_err(value_error)?;
+            let v = api::judge_leak(t, c.half_life.unwrap_or(f64::NAN)).map_err(value_error)?;
+            Ok::<_, PyErr>((c, v))
+        })
+        .transpose()?;
+    let ball = match &leak {
+        Some((conditions, _)) => BallChoice {
+            conditions: *conditions,
+            ..*choice
+        }
+        .resolve(None)?,
+        None => choice.resolve(None)?,
+    };
     // a standard runs the ball at its test's conditions, and says when it is off them
     let (ball, off_conditions) = match standard {
         Some(s) => ball
@@ -122,6 +142,11 @@ fn drop_of<'py>(
         d.set_item("standard", verdict)?;
     }
     let mut warnings = ball.drop_warnings(&run).map_err(error)?;
+    if let Some(s) = static_standard {
+        let (verdict, static_warnings) = static_verdict(py, s, &ball)?;
+        d.set_item("standard", verdict)?;
+        warnings.extend(static_warnings);
+    }
     // the standard's own test (its height or speed) against the record, when it is another
     // impact than the first bounce above (as the command line's)
     if let Some(w) = standard.and_then(|s| ball.standard_calibration_warning(s))
@@ -134,8 +159,57 @@ fn drop_of<'py>(
     warnings.extend(off_conditions);
     d.set_item("warnings", warnings)?;
     d.set_item("surface", crate::surface::to_dict(py, &surface)?)?;
+    if let Some((_, v)) = &leak {
+        d.set_item("pressure_loss", crate::answer::json(py, v)?)?;
+    }
     crate::answer::stated(&d, &ball)?;
     Ok(d)
+}
+
+/// A standard `drop` judges, of the kind `drop --standard` finds it (src/cli/drop.rs): the
+/// pressure-loss test first, then an impact standard, then a static one.
+enum Judged {
+    Impact(&'static Standard),
+    Static(&'static DeformationStandard),
+    Leak(&'static PressureLoss),
+}
+
+/// The standard named `name`; an unknown name is refused listing every one `drop --standard`
+/// takes (`drop::names::unknown`, the command line's message).
+fn find(name: &str) -> PyResult<Judged> {
+    if let Some(t) = api::pressure_loss_test(name) {
+        return Ok(Judged::Leak(t));
+    }
+    match (standards::find(name), deformation::find(name)) {
+        (Ok(s), _) => Ok(Judged::Impact(s)),
+        (Err(_), Some(d)) => Ok(Judged::Static(d)),
+        (Err(_), None) => Err(value_error(bouncelab::drop::names::unknown(name))),
+    }
+}
+
+/// A static standard's verdict on the ball (the model's static chain, not the drop), as the
+/// command line's `standard` with its `static` report, and the statics' warnings.
+fn static_verdict<'py>(
+    py: Python<'py>,
+    d: &DeformationStandard,
+    ball: &Ball,
+) -> PyResult<(Bound<'py, PyDict>, Vec<String>)> {
+    let dball = ball.drop_ball();
+    let s = py.detach(|| d.deflection(&dball, dball.law));
+    let v = d.judge(&dball).ok_or_else(|| {
+        value_error(format!(
+            "standard {}: the model gives no static deflection of this ball: {}",
+            d.name,
+            s.forward.as_ref().err().map_or("", |e| e.as_str())
+        ))
+    })?;
+    let verdict = verdict_dict(py, &v)?;
+    verdict.set_item("judged_at_height_m", py.None())?;
+    verdict.set_item(
+        "static",
+        crate::answer::json(py, &api::static_test_report(d, &s))?,
+    )?;
+    Ok((verdict, ball.static_warnings(&s)))
 }
 
 /// The bounces as columns under the JSON's per-bounce keys, with a fitted preset's 95 %

@@ -69,33 +69,15 @@ struct Report<'a> {
 }
 
 /// `court --fit FILE`: the measured bounces' means and the ITF's rating of them.
-#[derive(Serialize)]
-struct Measured {
-    file: String,
-    bounces: usize,
-    /// Mean μ_app of the bounces.
-    apparent_friction: f64,
-    /// Mean e of the bounces.
-    cor_normal: f64,
-    /// CPR = 100(1 − μ_app) + 150(0.81 − e) of those means.
-    cpr: f64,
-}
+type Measured = crate::api::CourtMeasured;
 
 /// The measured means of `--fit FILE`.
 fn measured(path: &std::path::Path) -> anyhow::Result<Measured> {
     let rows = super::measured_file::court(path)?;
-    let n = rows.len() as f64;
-    let (mu, e) = rows.iter().fold((0.0, 0.0), |(m, e), r| {
-        let (mi, ei) = r.friction_and_cor();
-        (m + mi / n, e + ei / n)
-    });
-    Ok(Measured {
-        file: super::measured_file::label(path),
-        bounces: rows.len(),
-        apparent_friction: mu,
-        cor_normal: e,
-        cpr: 100.0 * (1.0 - mu) + 150.0 * (0.81 - e),
-    })
+    Ok(crate::api::court_measured(
+        super::measured_file::label(path),
+        &rows,
+    ))
 }
 
 pub fn run(a: &CourtArgs, out: &mut dyn Write) -> anyhow::Result<()> {

@@ -174,7 +174,7 @@ pub fn run(a: &DropArgs, out: &mut dyn Write) -> anyhow::Result<()> {
             let judged_at = standard.and_then(|s| s.release_height(radius));
             let mut r = report(&run, &bands, verdict.as_ref(), judged_at);
             if let (Some(sj), Some((d, s))) = (r.standard.as_mut(), &statics) {
-                sj.static_test = Some(static_json(d, s));
+                sj.static_test = Some(crate::api::static_test_report(d, s));
             }
             r.warnings = warnings;
             r.ball = Some(b.record_json());
@@ -257,35 +257,7 @@ struct StandardJson {
     judged_at_height_m: Option<f64>,
     /// A static standard's test (src/drop/deformation.rs): only for one.
     #[serde(rename = "static", skip_serializing_if = "Option::is_none")]
-    static_test: Option<StaticJson>,
-}
-
-/// A static standard's conditions and its return reading, reported beside the verdict on the
-/// forward deflection (`measured`).
-#[derive(Serialize)]
-struct StaticJson {
-    load_kg: f64,
-    peak_m: f64,
-    return_deflection_m: Option<f64>,
-    /// Why the model gives no return deflection (`null` when it gives one).
-    return_reason: Option<String>,
-    /// The rules' return window, reported, not judged (docs/drop.md).
-    return_window: Option<[f64; 2]>,
-    return_inside: Option<bool>,
-}
-
-fn static_json(d: &DeformationStandard, s: &StaticDeflection) -> StaticJson {
-    let ret = s.return_.as_ref().ok().map(|r| r.diameter());
-    StaticJson {
-        load_kg: d.test.load_kg,
-        peak_m: d.test.peak_m,
-        return_deflection_m: ret,
-        return_reason: s.return_.as_ref().err().cloned(),
-        return_window: d.return_window,
-        return_inside: ret
-            .zip(d.return_window)
-            .map(|(r, [lo, hi])| (lo..=hi).contains(&r)),
-    }
+    static_test: Option<crate::api::StaticTestReport>,
 }
 
 /// "standard itf-deformation: …" with the forward verdict and the return reading.

@@ -6,8 +6,9 @@
 //! it is not the preset's, the mass and radius typed in the form (`--mass`, `--radius`: the
 //! preset's set derived for them), K_p and z_p when they differ from that ball's, λ and ζ when
 //! K_r or c do (`run` sets K_r = λ K_p and c = √(m K_p)/(2ζ) from them on that ball, as the
-//! explorer does: Eq. 24), and v0. Numbers are written in the shortest form that reads back to
-//! the same `f64`. [`not_carried`] builds the ball `run` makes of the line and names what
+//! explorer does: Eq. 24), and v0. Each number is the shortest decimal that gives `run` the
+//! screen's ball to the bit, a pressure in the unit that writes it shortest (`--pressure
+//! 8psi`; src/tui/exact.rs). [`not_carried`] builds the ball `run` makes of the line and names what
 //! differs from the screen's, if anything. The copy to the terminal's clipboard (OSC 52) is
 //! `crate::tui::clipboard`'s.
 
@@ -16,6 +17,7 @@ use crate::model::contact::ContactLaw;
 use crate::model::params::ImpactParams;
 use crate::preset::Preset;
 use crate::text::number;
+use crate::tui::exact;
 use crate::tui::param::Param;
 use crate::tui::physical::conditions::conditioned;
 use crate::tui::setting::Setting;
@@ -42,6 +44,7 @@ pub fn shell_word(s: &str) -> String {
 }
 
 /// The options that take `run` from the preset to `setting` (module docs), in their order.
+#[derive(Clone)]
 struct Options {
     law: Option<ContactLaw>,
     /// --mass, --radius, --k-p, --z-p (None: the preset's).
@@ -82,7 +85,40 @@ impl Options {
         if p.k_r != ball.k_r || p.damping != ball.damping {
             o.lambda_zeta = Some((setting.get(Param::Lambda), setting.get(Param::Zeta)));
         }
-        o
+        o.shortened(preset)
+    }
+
+    /// These options with λ and ζ the shortest decimals that make `run`'s ball the same to
+    /// the bit (src/tui/exact.rs): λ = K_r/K_p of a typed 0.3 is 0.30000000000000004, and
+    /// "0.3" gives the same K_r; one no shorter text reproduces is kept whole. The other
+    /// numbers are the setting's own (m, R, K_p, z_p, v0, T: typed or stepped as decimals),
+    /// written as they are: R, for one, moves no parameter of a fitted ball, so "the same
+    /// ball" could not tell 0.025 from 0.03.
+    fn shortened(mut self, preset: &Preset) -> Options {
+        let Some(want) = self.ball(preset) else {
+            return self;
+        };
+        type Slot = fn(&mut Options) -> Option<&mut f64>;
+        let slots: [Slot; 2] = [
+            |o| o.lambda_zeta.as_mut().map(|(l, _)| l),
+            |o| o.lambda_zeta.as_mut().map(|(_, z)| z),
+        ];
+        for slot in slots {
+            let Some(&mut x) = slot(&mut self) else {
+                continue;
+            };
+            let short = exact::shortest_accepted(x, |y| {
+                let mut tried = self.clone();
+                if let Some(v) = slot(&mut tried) {
+                    *v = y;
+                }
+                tried.ball(preset) == Some(want)
+            });
+            if let Some(v) = slot(&mut self) {
+                *v = short;
+            }
+        }
+        self
     }
 
     /// The preset's parameter set derived for mass `m` and radius `r` (`run --mass --radius`).
@@ -330,13 +366,12 @@ fn options(source: Source, preset: &Preset, setting: &Setting) -> Vec<String> {
     if let Some((l, z)) = o.lambda_zeta {
         words.extend(["--lambda".into(), number(l), "--zeta".into(), number(z)]);
     }
-    for (option, value) in [
-        ("--pressure", o.conditions.pressure),
-        ("--temperature", o.conditions.temperature),
-    ] {
-        if let Some(v) = value {
-            words.extend([option.into(), number(v)]);
-        }
+    // a pressure in the unit that writes it shortest and reads back exact (`8psi`)
+    if let Some(p) = o.conditions.pressure {
+        words.extend(["--pressure".into(), exact::pressure_text(p)]);
+    }
+    if let Some(t) = o.conditions.temperature {
+        words.extend(["--temperature".into(), number(t)]);
     }
     words.extend(["--v0".into(), number(o.v0)]);
     words

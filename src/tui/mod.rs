@@ -29,6 +29,7 @@ pub mod compute;
 pub mod crosshair;
 pub mod effect;
 pub mod event;
+pub mod exact;
 pub mod export;
 pub mod format;
 pub mod keys;

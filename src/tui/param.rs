@@ -67,14 +67,16 @@ impl Param {
     /// Not clamped.
     pub fn step(self, value: f64, dir: Dir, coarse: bool) -> f64 {
         let sign = if dir == Dir::Up { 1.0 } else { -1.0 };
-        match self {
+        // without the steps' float noise: three steps of 0.1 from 3 are 3.3, which `y` writes
+        // as typed (not 3.3000000000000003; src/tui/exact.rs)
+        crate::tui::exact::tidy(match self {
             Param::Lambda => value + sign * if coarse { 0.1 } else { 0.01 },
             Param::V0 => value + sign * if coarse { 1.0 } else { 0.1 },
             Param::Zeta => {
                 let factor: f64 = if coarse { 2.0 } else { 1.1 };
                 value * factor.powf(sign)
             }
-        }
+        })
     }
 
     /// `value` brought into [`Param::range`]'s closed span 0 (or its smallest value) … its

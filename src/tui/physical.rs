@@ -18,16 +18,18 @@ use super::param::Param;
 use super::setting::Setting;
 use crate::api::Overrides;
 use crate::model::params::{self, ImpactParams, MEANINGFUL_MAX, MEANINGFUL_MIN};
-use crate::solver::ImpactResponse;
 use crate::text::short;
 
 pub mod conditions;
 mod refusal;
+mod surface;
 mod target;
+mod validity;
 use refusal::ball_refusal;
 pub use refusal::refusal;
 pub use target::closing_check;
 use target::{closing, target_set};
+pub use validity::validity;
 
 /// A field of the form, in the order shown.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -55,12 +57,18 @@ pub enum Field {
     TargetStiffness,
     /// The damping c_s in parallel with K_s.
     TargetDamping,
+    /// The surface's Coulomb friction μ (issue 53 item 1): the oblique view's, which the
+    /// surface picker sets and the court pace is rated at; the flight view's bounce too.
+    Friction,
+    /// The surface's tangential stiffness K_t (N/m; the ball's Mindlin value until set): the
+    /// oblique view's, as `oblique --tangential-stiffness`.
+    TangentialStiffness,
     /// The tangential dashpot c_t beside K_t (the surface's; `oblique --tangential-damping`).
     TangentialDamping,
 }
 
 impl Field {
-    pub const ALL: [Field; 17] = [
+    pub const ALL: [Field; 19] = [
         Field::Mass,
         Field::Radius,
         Field::KP,
@@ -77,6 +85,8 @@ impl Field {
         Field::TargetSpeed,
         Field::TargetStiffness,
         Field::TargetDamping,
+        Field::Friction,
+        Field::TangentialStiffness,
         Field::TangentialDamping,
     ];
 
@@ -98,6 +108,8 @@ impl Field {
             Field::TargetSpeed => "v_t",
             Field::TargetStiffness => "K_s",
             Field::TargetDamping => "c_s",
+            Field::Friction => "μ",
+            Field::TangentialStiffness => "K_t",
             Field::TangentialDamping => "c_t",
         }
     }
@@ -107,12 +119,12 @@ impl Field {
         match self {
             Field::Mass | Field::TargetMass => "kg",
             Field::Radius | Field::ZP => "m",
-            Field::KP | Field::KR | Field::TargetStiffness => "N/m",
+            Field::KP | Field::KR | Field::TargetStiffness | Field::TangentialStiffness => "N/m",
             Field::C | Field::TargetDamping | Field::TangentialDamping => "kg/s",
             Field::E | Field::Pressure => "Pa",
             Field::Temperature => "°C",
             Field::V0 | Field::TargetSpeed => "m/s",
-            Field::Lambda | Field::Zeta => "",
+            Field::Lambda | Field::Zeta | Field::Friction => "",
         }
     }
 
@@ -172,6 +184,8 @@ impl Field {
             Field::TargetStiffness => s.target_stiffness,
             Field::TargetDamping => s.target_damping,
             Field::TangentialDamping => s.tangential_damping.unwrap_or(0.0),
+            // the oblique view holds μ and K_t: `App::form_value` reads them there
+            Field::Friction | Field::TangentialStiffness => f64::NAN,
             // as typed, else the record's; NaN ("—") where the ball has none
             Field::Pressure => s
                 .conditions
@@ -189,6 +203,9 @@ impl Field {
 
     /// The range the command line holds a positive input to, e.g. "1e-15 … 1e15 N/m".
     pub fn range_text(self) -> String {
+        if let Some(p) = self.surface_param() {
+            return p.range_text().into();
+        }
         match self.live() {
             Some(p) => p.range_text(),
             None if self == Field::TargetMass => format!(
@@ -268,6 +285,10 @@ impl Field {
             // (physical::conditions::set)
             Field::Pressure | Field::Temperature => {
                 return Err(format!("{} is set with its ball's record", self.symbol()));
+            }
+            // the oblique view's values: App::submit_physical sets them (physical/surface.rs)
+            Field::Friction | Field::TangentialStiffness => {
+                return Err(format!("{} is the oblique view's", self.symbol()));
             }
             Field::KP | Field::E if conditions::k_p_refused(s).is_some() => {
                 let why = conditions::k_p_refused(s).unwrap_or_default();
@@ -352,44 +373,4 @@ pub fn derived(p: &ImpactParams) -> [(&'static str, f64); 4] {
         ("λ", n.lambda),
         ("ζ", n.zeta),
     ]
-}
-
-/// Where a run leaves the model's validity: the contact model is a small-deformation model,
-/// so a peak indentation z_m or a peak ball displacement α_max beyond the radius R is outside
-/// it. From the run's own numbers (z_m from the solver, α_max the largest sampled α). On a
-/// compliant target α also holds the surface's give s (`deflection`, sampled with α): the
-/// ball's own displacement is α − s (docs/targets.md §2: α = z + y + s).
-pub fn validity(run: &ImpactResponse, deflection: Option<&[f64]>, radius: f64) -> Option<String> {
-    let z_m = run.max_indentation;
-    let give = |i: usize| deflection.and_then(|d| d.get(i)).copied().unwrap_or(0.0);
-    let alpha = run
-        .history
-        .displacement
-        .iter()
-        .enumerate()
-        .map(|(i, a)| a - give(i))
-        .fold(f64::NAN, f64::max);
-    // a number and its unit joined by a no-break space: the readout's line breaking
-    // (`format::fit_lines`) never parts them, and the parenthesis is a field of its own (two
-    // spaces before it) (tests/tui/tui_render.rs, `the_validity_note_keeps_its_numbers_with_their_units`)
-    // four significant digits, the readout's one format (issue 51 item 4; it wrote three,
-    // trimmed: "α_max 35 mm")
-    let mm = |x: f64| format!("{}\u{a0}mm", crate::tui::format::value(x * 1e3));
-    let mut over = Vec::new();
-    if z_m > radius {
-        over.push(format!("z_m {}", mm(z_m)));
-    }
-    if alpha > radius {
-        over.push(format!("α_max {}", mm(alpha)));
-    }
-    let worst = z_m.max(alpha);
-    (!over.is_empty()).then(|| {
-        format!(
-            "outside the model: {} > R {}  (by {}, ×{})",
-            over.join(", "),
-            mm(radius),
-            mm(worst - radius),
-            crate::tui::format::value(worst / radius)
-        )
-    })
 }

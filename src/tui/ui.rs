@@ -272,6 +272,7 @@ fn render_overlay(app: &App, theme: Theme, area: Rect, buf: &mut Buffer) {
         Overlay::Form(form) => crate::tui::widgets::form::FormBox {
             form: *form,
             setting: app.setting(),
+            surface: app.form_surface(),
             warning: app.validity(),
             theme,
         }

@@ -6,6 +6,8 @@ use crate::text::parse::number;
 use crate::text::sig_trim;
 use crate::tui::action::{Action, Scroll};
 use crate::tui::physical::{self, Field, Form};
+use crate::tui::views::flight::param::FlightParam;
+use crate::tui::views::oblique::param::ObliqueParam;
 
 /// The text a field's entry opens with: its value, or nothing when it has no finite one (the
 /// wall's M = ∞, a metal ball's E). Never the form's "—": typing appends to the entry's text,
@@ -23,9 +25,11 @@ fn entry_text(field: Field, v: f64) -> String {
 
 /// The SI value of `text` typed in `field`: a number in the field's screen unit, or for the
 /// pressure a number with its unit as `--pressure` reads it (0.8bar, 8psi, 55kPa, 80000Pa).
+/// A number in a screen unit is the decimal typed, its point moved (45.93 g is 0.04593 kg to
+/// the bit, not 45.93/1000 an ulp beside it: `y` then writes `--mass 0.04593`).
 fn typed(field: Field, text: &str) -> Result<f64, String> {
     match number(text) {
-        Ok(v) => Ok(v / field.screen().1),
+        Ok(v) => Ok(crate::tui::exact::from_screen(v, field.screen().1)),
         Err(_) if field == Field::Pressure => {
             crate::conditions::pressure::parse("pressure", text.trim())
         }
@@ -49,7 +53,7 @@ impl App {
             }
             Action::FormEdit => {
                 if let Overlay::Form(f) = self.overlay {
-                    let now = entry_text(f.selected, f.selected.get(&self.setting));
+                    let now = entry_text(f.selected, self.form_value(f.selected));
                     self.open_input(Purpose::Physical(f.selected), now);
                 }
             }
@@ -68,9 +72,12 @@ impl App {
     /// comes back; a refused one keeps the entry open with the reason and the range.
     pub(super) fn submit_physical(&mut self, field: Field, text: &str) {
         // empty, or as it opened: the value stays to its last digit (six shown would round it)
-        if text.is_empty() || text == entry_text(field, field.get(&self.setting)) {
+        if text.is_empty() || text == entry_text(field, self.form_value(field)) {
             self.open_form(field);
             return;
+        }
+        if let Some(p) = field.surface_param() {
+            return self.submit_surface(field, p, text);
         }
         let checked = typed(field, text)
             .map_err(|e| {
@@ -111,6 +118,58 @@ impl App {
                 self.warn(why);
             }
         }
+    }
+
+    /// A form field's value (SI) as the form shows it: the setting's, the oblique view's μ and
+    /// K_t (the ball's Mindlin K_t where none is set, as the impact runs on it).
+    pub fn form_value(&self, field: Field) -> f64 {
+        match field.surface_param() {
+            Some(p) => self.oblique_value(p),
+            None => field.get(&self.setting),
+        }
+    }
+
+    /// The surface's μ and K_t the form shows ([`App::form_value`]).
+    pub fn form_surface(&self) -> [f64; 2] {
+        [Field::Friction, Field::TangentialStiffness].map(|f| self.form_value(f))
+    }
+
+    /// Enter in μ's or K_t's entry (the surface's, src/tui/physical/surface.rs): checked as the
+    /// oblique view checks it, one undoable change of the oblique view's value — and of the
+    /// flight view's μ, the same surface's — or refused with the reason, the entry kept open.
+    fn submit_surface(&mut self, field: Field, p: ObliqueParam, text: &str) {
+        let read = typed(field, text)
+            .map_err(|e| {
+                format!(
+                    "{e}; {} kept (range {})",
+                    field.symbol(),
+                    field.range_text()
+                )
+            })
+            .and_then(|v| p.check(v));
+        let v = match read {
+            Ok(v) => v,
+            Err(why) => {
+                if let Overlay::Input(input) = &mut self.overlay {
+                    input.error = Some(why.clone());
+                }
+                return self.warn(why);
+            }
+        };
+        let (mut oblique, mut flight) = (self.oblique.values(), self.flight.values);
+        if field == Field::Friction {
+            oblique.friction = v;
+            flight = flight.with(FlightParam::Friction, v);
+        } else {
+            oblique.tangential_stiffness = Some(v);
+        }
+        if oblique != self.oblique.values() || flight != self.flight.values {
+            self.remember();
+            self.oblique.set_values(oblique);
+            self.flight.values = flight;
+        }
+        self.open_form(field);
+        self.info(format!("{} = {}", field.symbol(), field.show(v)));
     }
 
     /// Whether the current run leaves the model's validity (z_m or α_max beyond R), and by

@@ -61,8 +61,8 @@ impl App {
     }
 
     /// Put the ball on `surface`, as `--surface NAME` does (one undoable change): its normal
-    /// give is the target (at rest), its μ and K_t (where it gives them) the oblique view's,
-    /// its c_t the dashpot beside K_t. Refused, nothing changed, where the ball and the
+    /// give is the target (at rest), its μ and K_t (where it gives them) the oblique view's
+    /// (μ the flight view's too), its c_t the dashpot beside K_t. Refused, nothing changed, where the ball and the
     /// surface's target would not meet or the model would not take them.
     pub(in crate::tui) fn on_surface(&mut self, surface: Surface) -> Result<(), String> {
         let mut next = self.setting.clone();
@@ -75,17 +75,22 @@ impl App {
             .map_err(|e| crate::tui::physical::refusal(&e))?;
         crate::tui::physical::closing_check(&next)?;
         let mut oblique = self.oblique.values();
+        // its μ is the flight view's bounce's too (the form's μ sets both)
+        let mut flight = self.flight.values;
         if let Some(mu) = surface.friction {
             oblique.friction = mu;
+            flight.friction = mu;
         }
         if surface.tangential_stiffness.is_some() {
             oblique.tangential_stiffness = surface.tangential_stiffness;
         }
         next.surface = Some(surface);
-        if next != self.setting || oblique != self.oblique.values() {
+        if next != self.setting || oblique != self.oblique.values() || flight != self.flight.values
+        {
             self.remember();
             self.setting = next;
             self.oblique.set_values(oblique);
+            self.flight.values = flight;
         }
         Ok(())
     }

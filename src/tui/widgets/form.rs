@@ -17,6 +17,8 @@ use ratatui::widgets::{Block, Clear, Paragraph, Widget, Wrap};
 pub struct FormBox<'a> {
     pub form: Form,
     pub setting: &'a Setting,
+    /// The surface's μ and K_t the oblique view runs on (`App::form_surface`).
+    pub surface: [f64; 2],
     /// Why the current run is outside the model, if it is ([`physical::validity`]).
     pub warning: Option<String>,
     pub theme: Theme,
@@ -55,11 +57,14 @@ impl Widget for &FormBox<'_> {
         // the fields scroll, the rest stays: the warning and the hint were cut off below an
         // 80 × 24 screen (issue 51 item 6; tests/tui/tui_form.rs,
         // `the_form_with_a_warning_keeps_its_hint_and_selected_field_at_every_size`)
-        let room = usize::from(area.height.saturating_sub(2)).saturating_sub(lines.len());
+        // a row kept above and below, the title and the key bar, where the screen is short
+        // (80 × 24 with the surface's μ, K_t, c_t): the fields scroll instead
+        let tall = area.height.saturating_sub(2).max(area.height.min(5));
+        let room = usize::from(tall.saturating_sub(2)).saturating_sub(lines.len());
         let mut fields = self.shown_fields(room.max(1));
         fields.append(&mut lines);
         let lines = fields;
-        let h = (lines.len() as u16 + 2).min(area.height);
+        let h = (lines.len() as u16 + 2).min(tall);
         let popup = Rect::new(
             area.x + (area.width - w) / 2,
             area.y + (area.height - h) / 2,
@@ -91,6 +96,15 @@ impl FormBox<'_> {
         all.into_iter().skip(first).take(room).collect()
     }
 
+    /// The value of `f` shown: the setting's, or the surface's μ and K_t.
+    fn value(&self, f: Field) -> f64 {
+        match f {
+            Field::Friction => self.surface[0],
+            Field::TangentialStiffness => self.surface[1],
+            _ => f.get(self.setting),
+        }
+    }
+
     fn field_lines(&self) -> Vec<Line<'static>> {
         Field::ALL
             .iter()
@@ -102,7 +116,7 @@ impl FormBox<'_> {
                     ratatui::style::Style::default()
                 };
                 // the readout's one format and units: m 37.40 g, z_p 4.000 mm, M ∞ (the wall)
-                let shown = f.show(f.get(self.setting));
+                let shown = f.show(self.value(f));
                 let (number, unit) = shown.split_once(' ').unwrap_or((&shown, ""));
                 let mut spans = vec![
                     Span::raw(if here { "▶" } else { " " }),
@@ -113,7 +127,7 @@ impl FormBox<'_> {
                     spans.push(Span::styled("  K_p = 2π E z_p", self.theme.dim()));
                 }
                 // why a condition has no value (issue 56): the library takes none for it
-                let none = f.get(self.setting).is_nan();
+                let none = self.value(f).is_nan();
                 match f {
                     Field::Pressure if none => {
                         spans.push(Span::styled("  solid ball", self.theme.dim()))

@@ -75,7 +75,8 @@ impl FlightParam {
         let (fine, big) = self.steps();
         let s = if coarse { big } else { fine };
         let next = value + if up { s } else { -s };
-        let rounded = (next / s).round() * s;
+        // the f64 nearest the decimal (3 × 0.1 is 0.30000000000000004; `y` writes 0.3)
+        let rounded = crate::tui::exact::tidy((next / s).round() * s);
         // −0 reads as "-0" on the screen
         if rounded == 0.0 { 0.0 } else { rounded }
     }

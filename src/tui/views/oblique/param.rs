@@ -104,7 +104,8 @@ impl ObliqueParam {
     pub fn step(self, value: f64, up: bool, coarse: bool) -> f64 {
         if self == ObliqueParam::TangentialStiffness {
             let factor: f64 = if coarse { 2.0 } else { 1.1 };
-            return if up { value * factor } else { value / factor };
+            // without the float noise of the factor (1e5 × 1.1 is 110000.00000000001)
+            return crate::tui::exact::tidy(if up { value * factor } else { value / factor });
         }
         let sign = if up { 1.0 } else { -1.0 };
         let (fine, big) = match self {
