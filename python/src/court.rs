@@ -57,18 +57,8 @@ ball_pyfunction! {
             Some((e, how)) => Some(calibrate(&ball, e, &mut surface, how)?),
             None => None,
         };
-        let computed_on = format!(
-            "the model's bounce of {} at 30 m/s and 16° without spin on {}",
-            ball.label(),
-            surface.label()
-        );
-        let tangential = (
-            surface.tangential_stiffness,
-            inertia_factor,
-            surface.tangential_damping,
-        );
-        let pace = py
-            .detach(|| ball.court_pace_on(friction, tangential, &surface.target()))
+        let (pace, computed_on) = py
+            .detach(|| ball.court_pace_on_surface(friction, inertia_factor, &surface))
             .map_err(error)?;
         let d = crate::answer::json(py, &ball.header())?.cast_into::<PyDict>()?;
         d.set_item("standard", "itf-court-pace")?;
