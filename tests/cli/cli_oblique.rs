@@ -2,7 +2,7 @@
 //! contract), agreement with the library, the court pace formula, bad input.
 
 use crate::common;
-use common::{argv, bad, f, json, ok};
+use common::{argv, argv_with, bad, f, json, ok};
 
 #[test]
 fn oblique_json_has_the_issues_keys() {
@@ -138,40 +138,21 @@ fn bad_input_is_one_line_exit_2() {
 #[test]
 fn every_law_answers_and_angle_90_is_runs_cor() {
     for law in ["linear", "hertz", "elastic-plastic"] {
-        let o = json(&[
-            "oblique",
-            "--preset",
-            "tennis",
-            "--angle",
-            "90",
-            "--friction",
-            "0.5",
-            "--law",
-            law,
-            "--format",
-            "json",
-        ]);
-        let r = json(&[
-            "run", "--preset", "tennis", "--law", law, "--format", "json",
-        ]);
+        let o = json(&argv_with(
+            "oblique --preset tennis --angle 90 --friction 0.5 --law {} --format json",
+            &[law],
+        ));
+        let r = json(&argv_with(
+            "run --preset tennis --law {} --format json",
+            &[law],
+        ));
         assert_eq!(o["law"], law);
         assert!((f(&o, "cor_normal") - f(&r, "cor")).abs() <= 1e-12, "{law}");
         assert!(f(&o, "vx_out").abs() <= 1e-12 && f(&o, "spin_out").abs() <= 1e-12);
-        let oblique = json(&[
-            "oblique",
-            "--preset",
-            "tennis",
-            "--angle",
-            "30",
-            "--spin",
-            "-200",
-            "--friction",
-            "0.5",
-            "--law",
-            law,
-            "--format",
-            "json",
-        ]);
+        let oblique = json(&argv_with(
+            "oblique --preset tennis --angle 30 --spin -200 --friction 0.5 --law {} --format json",
+            &[law],
+        ));
         // backspin: the contact point slides forward and friction slows the ball
         assert!(f(&oblique, "vx_out") < f(&oblique, "vx_in"), "{law}");
     }

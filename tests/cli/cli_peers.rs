@@ -138,9 +138,7 @@ fn bad_input_is_one_line_and_exit_2() {
     );
     assert_bad(&bl(&["peers", "--preset", "golf", "--v0", "-3"]), &["v0"]);
     assert_bad(
-        &bl(&[
-            "peers", "--preset", "golf", "--cor", "0", "--format", "json",
-        ]),
+        &bl(&argv("peers --preset golf --cor 0 --format json")),
         &["cor", "out of reach"],
     );
     assert_bad(&bl(&["peers", "--preset", "nosuchball"]), &["nosuchball"]);
