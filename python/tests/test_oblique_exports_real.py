@@ -20,50 +20,20 @@ import subprocess
 
 from cli_binary import binary
 
-from test_exports_real import header, need
+from test_exports_real import header, lammps_bounce, need
 
 
 def bouncelab(*args):
     return subprocess.run([binary(), *args], check=True, capture_output=True, text=True).stdout
 
 
-def lammps_bounce(timestep, fix, mass, radius, vx, vy, spin):
-    """(v_x, ω_y) after one bounce of the sphere off the plane z = 0; ω_y is bouncelab's ω
-    (the contact point's velocity is v_x − R ω_y)."""
-    lammps = need("lammps")
+def lammps_oblique(timestep, fix, mass, radius, vx, vy, spin):
+    """(v_x, ω_y, v_z) after one bounce of the sphere off the plane z = 0, arriving from
+    2.3 steps away; ω_y is bouncelab's ω (the contact point's velocity is v_x − R ω_y)."""
     h = float(timestep.split()[1])
-    lmp = lammps.lammps(cmdargs=["-log", "none", "-screen", "none", "-nocite"])
-    density = mass / (4 / 3 * math.pi * radius**3)
-    lmp.commands_string(
-        f"""units si
-atom_style sphere
-boundary p p f
-region box block -100 100 -1 1 -0.5 1
-create_box 1 box
-create_atoms 1 single 0 0 {radius + 2.3 * vy * h!r}
-set atom 1 diameter {2 * radius!r}
-set atom 1 density {density!r}
-set atom 1 omega 0.0 {spin!r} 0.0
-velocity all set {vx!r} 0 {-vy!r}
-comm_modify vel yes
-neighbor {radius!r} bin
-fix integrate all nve/sphere
-{fix}
-{timestep}
-"""
-    )
-    try:
-        touched = False
-        for _ in range(1_000_000):
-            lmp.command("run 1 pre no post no")
-            z = lmp.extract_atom("x")[0][2]
-            v, w = lmp.extract_atom("v")[0], lmp.extract_atom("omega")[0]
-            touched |= z < radius
-            if touched and z > radius and v[2] > 0:
-                return v[0], w[1], v[2]
-        raise AssertionError("the ball never left the wall")
-    finally:
-        lmp.close()
+    start = (radius + 2.3 * vy * h, vx, -vy)
+    v, w = lammps_bounce(timestep, fix, mass, radius, start, spin)
+    return v[0], w[1], v[2]
 
 
 def both(angle, spin, mu, v=20.0, damping=None):
@@ -86,7 +56,7 @@ def both(angle, spin, mu, v=20.0, damping=None):
     assert "tangential linear_history" in fix
     mass, radius, _ = header(snippet)
     assert radius == ours["radius"]
-    theirs = lammps_bounce(timestep, fix, mass, radius, vx, vy, spin)
+    theirs = lammps_oblique(timestep, fix, mass, radius, vx, vy, spin)
     return ours, theirs
 
 
