@@ -61,23 +61,33 @@ def header(snippet):
     return float(m[1]), float(m[2]), float(m[3])
 
 
-def mujoco_cor(option, geom, radius, v0, phase):
+def mujoco_bounce(option, geom, plane, height, qvel):
+    """One bounce in MuJoCo of a body holding an export's `geom` off a plane (`plane` m square
+    each way from the origin), gravity off, under the export's `option` line: the body starts
+    at `height` with its free joint's velocities `qvel` ({index: value}); those velocities as
+    it leaves the plane."""
     mujoco = need("mujoco")
-    h = float(re.search(r'timestep="([^"]+)"', option)[1])
-    xml = f"""<mujoco>{option}<worldbody><geom type="plane" size="1 1 0.1"/>
-      <body pos="0 0 {radius + (2 + phase) * v0 * h!r}"><freejoint/>{geom}</body>
+    xml = f"""<mujoco>{option}<worldbody><geom type="plane" size="{plane} {plane} 0.1"/>
+      <body pos="0 0 {height!r}"><freejoint/>{geom}</body>
     </worldbody></mujoco>"""
     model = mujoco.MjModel.from_xml_string(xml)
     model.opt.gravity[:] = 0
     data = mujoco.MjData(model)
-    data.qvel[2] = -v0
+    for i, v in qvel.items():
+        data.qvel[i] = v
     touched = False
     for _ in range(1_000_000):
         mujoco.mj_step(model, data)
         touched |= data.ncon > 0
         if touched and data.ncon == 0 and data.qvel[2] > 0:
-            return data.qvel[2] / v0
+            return list(data.qvel)
     raise AssertionError("the ball never left the plane")
+
+
+def mujoco_cor(option, geom, radius, v0, phase):
+    h = float(re.search(r'timestep="([^"]+)"', option)[1])
+    qvel = mujoco_bounce(option, geom, 1, radius + (2 + phase) * v0 * h, {2: -v0})
+    return qvel[2] / v0
 
 
 @pytest.mark.parametrize("preset,target", CASES)

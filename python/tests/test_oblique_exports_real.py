@@ -20,7 +20,7 @@ import subprocess
 
 from cli_binary import binary
 
-from test_exports_real import header, lammps_bounce, need
+from test_exports_real import header, lammps_bounce, mujoco_bounce
 
 
 def bouncelab(*args):
@@ -108,27 +108,14 @@ def test_the_tangential_dashpot_damps_the_grip_in_lammps_as_in_bouncelab():
     assert abs(ex_lmp - ex_ours) < 0.03, (ex_lmp, ex_ours)
 
 
-def mujoco_bounce(snippet, radius, vx, vy, spin):
+def mujoco_oblique(snippet, radius, vx, vy, spin):
     """(v_x, ω_y, v_z) after one bounce of the condim 3 geom off MuJoCo's plane."""
-    mujoco = need("mujoco")
     lines = snippet.splitlines()
     option = next(l for l in lines if l.startswith("<option"))
     geom = next(l for l in lines if l.startswith("<geom") and 'condim="3"' in l)
     h = float(option.split('timestep="')[1].split('"')[0])
-    xml = f"""<mujoco>{option}<worldbody><geom type="plane" size="100 100 0.1"/>
-      <body pos="0 0 {radius + 2.3 * vy * h!r}"><freejoint/>{geom}</body>
-    </worldbody></mujoco>"""
-    model = mujoco.MjModel.from_xml_string(xml)
-    model.opt.gravity[:] = 0
-    data = mujoco.MjData(model)
-    data.qvel[0], data.qvel[2], data.qvel[4] = vx, -vy, spin
-    touched = False
-    for _ in range(1_000_000):
-        mujoco.mj_step(model, data)
-        touched |= data.ncon > 0
-        if touched and data.ncon == 0 and data.qvel[2] > 0:
-            return data.qvel[0], data.qvel[4], data.qvel[2]
-    raise AssertionError("the ball never left the plane")
+    qvel = mujoco_bounce(option, geom, 100, radius + 2.3 * vy * h, {0: vx, 2: -vy, 4: spin})
+    return qvel[0], qvel[4], qvel[2]
 
 
 def test_mujoco_condim_3_slides_at_mu_and_says_what_it_moves():
@@ -142,6 +129,6 @@ def test_mujoco_condim_3_slides_at_mu_and_says_what_it_moves():
     snippet = bouncelab("peers", "--preset", "tennis", "--target", "christoforou-yigit",
                         "--v0", repr(vy), "--export", "mujoco", "--friction", str(mu))
     _, radius, _ = header(snippet)
-    vx_out, _, vz = mujoco_bounce(snippet, radius, vx, vy, spin)
+    vx_out, _, vz = mujoco_oblique(snippet, radius, vx, vy, spin)
     e = vz / vy
     assert abs((vx_out - vx) + mu * (1 + e) * vy) < 1e-2 * mu * (1 + e) * vy
