@@ -40,15 +40,7 @@ fn json_lists_every_model_and_rule() {
             .any(|r| r["model"] == "kelvin-voigt" && r["rule"] == "log-decrement")
     );
     for r in rows {
-        for key in [
-            "model",
-            "rule",
-            "stiffness",
-            "damping",
-            "cor",
-            "max_force",
-            "contact_time",
-        ] {
+        for key in argv("model rule stiffness damping cor max_force contact_time") {
             assert!(!r[key].is_null(), "{key} in {r}");
         }
     }

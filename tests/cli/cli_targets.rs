@@ -248,14 +248,12 @@ fn peers_pair_calibrates_for_the_pair() {
 #[test]
 fn peers_target_preset_is_the_pair() {
     for format in ["json", "text", "csv"] {
-        let by_pair = ok(&argv_with(
-            "peers --preset golf --pair tennis --format {}",
-            &[format],
-        ));
-        let by_target = ok(&argv_with(
-            "peers --preset golf --target tennis --format {}",
-            &[format],
-        ));
+        let by_pair = ok(&argv(&format!(
+            "peers --preset golf --pair tennis --format {format}"
+        )));
+        let by_target = ok(&argv(&format!(
+            "peers --preset golf --target tennis --format {format}"
+        )));
         assert_eq!(by_pair, by_target, "{format}");
     }
     // (the closing speed given: without it a pair export warns that it holds at the preset's
