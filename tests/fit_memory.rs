@@ -3,6 +3,9 @@
 //! allocator's caching blur on a shared machine: every byte the reader and the fit allocate,
 //! the highest total in use at once.
 
+#[path = "support/fit_common/force.rs"]
+mod force;
+
 use bouncelab::analysis::fit::{FitData, Param, fit};
 use bouncelab::measured::Trace;
 use bouncelab::{ContactLaw, ImpactParams, SolveOptions, simulate};
@@ -76,14 +79,7 @@ fn csv(rows: usize) -> String {
     let dt = 1e-2 / rows as f64;
     for i in 0..rows {
         let t = -1.7e-3 + i as f64 * dt;
-        let s = t - 0.8123e-3;
-        let f = if s <= 0.0 || s >= tf {
-            0.0
-        } else {
-            let k = ((s / h.t[1]) as usize).min(h.t.len() - 2);
-            let w = (s - h.t[k]) / (h.t[k + 1] - h.t[k]);
-            h.force[k] * (1.0 - w) + h.force[k + 1] * w
-        };
+        let f = force::force_at(&h, tf, t - 0.8123e-3);
         state = state
             .wrapping_mul(6364136223846793005)
             .wrapping_add(1442695040888963407);

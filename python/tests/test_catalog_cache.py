@@ -4,38 +4,25 @@ command line sees it."""
 
 import os
 import sys
-from pathlib import Path
-
 import pytest
+from user_presets import mine
 
 import bouncelab
 
-ROOT = Path(__file__).resolve().parents[2]
-SUPERBALL = (ROOT / "presets" / "superball.toml").read_text()
 
-
-def test_a_preset_added_edited_and_removed_is_seen(tmp_path, monkeypatch):
-    monkeypatch.setenv("XDG_CONFIG_HOME", str(tmp_path))
-    folder = tmp_path / "bouncelab" / "presets"
-    folder.mkdir(parents=True)
+def test_a_preset_added_edited_and_removed_is_seen(presets_folder):
     with pytest.raises(ValueError, match="unknown preset 'mine'"):
         bouncelab.run(preset="mine")
-    path = folder / "mine.toml"
-    path.write_text(SUPERBALL.replace('name = "superball"', 'name = "mine"'))
+    path = presets_folder / "mine.toml"
+    path.write_text(mine())
     first = bouncelab.run(preset="mine")
     assert first == bouncelab.run(preset="mine")  # from the cache: the same answer
     assert first.k_r == bouncelab.run(preset="superball").k_r
-    path.write_text(
-        SUPERBALL.replace('name = "superball"', 'name = "mine"').replace("k_r = 7.08e4", "k_r = 9e4")
-    )
+    path.write_text(mine("9e4"))
     assert bouncelab.run(preset="mine").k_r == 9e4
     path.unlink()
     with pytest.raises(ValueError, match="unknown preset 'mine'"):
         bouncelab.run(preset="mine")
-
-
-def mine(k_r="7.08e4"):
-    return SUPERBALL.replace('name = "superball"', 'name = "mine"').replace("k_r = 7.08e4", f"k_r = {k_r}")
 
 
 def test_a_folder_made_after_the_first_call_is_seen(tmp_path, monkeypatch):
@@ -55,12 +42,9 @@ linux_only = pytest.mark.skipif(
 
 
 @linux_only
-def test_an_edit_that_keeps_size_and_time_is_seen(tmp_path, monkeypatch):
+def test_an_edit_that_keeps_size_and_time_is_seen(presets_folder):
     # the stamp (name, size, modification time) cannot tell this edit; the watch does
-    monkeypatch.setenv("XDG_CONFIG_HOME", str(tmp_path))
-    folder = tmp_path / "bouncelab" / "presets"
-    folder.mkdir(parents=True)
-    path = folder / "mine.toml"
+    path = presets_folder / "mine.toml"
     path.write_text(mine("7.08e4"))
     assert bouncelab.run(preset="mine").k_r == 7.08e4
     before = path.stat()
@@ -70,27 +54,21 @@ def test_an_edit_that_keeps_size_and_time_is_seen(tmp_path, monkeypatch):
     assert bouncelab.run(preset="mine").k_r == 9.08e4
 
 
-def test_a_linked_preset_edited_at_its_target_is_seen(tmp_path, monkeypatch):
+def test_a_linked_preset_edited_at_its_target_is_seen(tmp_path, presets_folder):
     # a link's target lies in a folder nobody watches: the stamp is taken at each call
-    monkeypatch.setenv("XDG_CONFIG_HOME", str(tmp_path / "config"))
-    folder = tmp_path / "config" / "bouncelab" / "presets"
-    folder.mkdir(parents=True)
     target = tmp_path / "elsewhere.toml"
     target.write_text(mine("7.08e4"))
-    (folder / "mine.toml").symlink_to(target)
+    (presets_folder / "mine.toml").symlink_to(target)
     assert bouncelab.run(preset="mine").k_r == 7.08e4
     target.write_text(mine("1.5e5"))
     assert bouncelab.run(preset="mine").k_r == 1.5e5
 
 
 @linux_only
-def test_a_forked_child_does_not_take_its_parents_news(tmp_path, monkeypatch):
+def test_a_forked_child_does_not_take_its_parents_news(presets_folder):
     # parent and child share an inotify instance after a fork: a child reading it would take
     # the event the parent needs
-    monkeypatch.setenv("XDG_CONFIG_HOME", str(tmp_path))
-    folder = tmp_path / "bouncelab" / "presets"
-    folder.mkdir(parents=True)
-    path = folder / "mine.toml"
+    path = presets_folder / "mine.toml"
     path.write_text(mine("7.08e4"))
     assert bouncelab.run(preset="mine").k_r == 7.08e4
     pid = os.fork()

@@ -14,7 +14,7 @@ Skipped without the codes unless BOUNCELAB_REQUIRE_CODES=1 (test_exports_real.py
 import json
 import math
 
-from test_oblique_exports_real import bouncelab, lammps_bounce
+from test_oblique_exports_real import bouncelab, lammps_oblique
 from test_exports_real import header
 
 
@@ -33,7 +33,7 @@ def test_the_angle_export_gives_its_own_answer_in_lammps():
     fix = next(l for l in lines if l.startswith("fix kvclipt "))
     mass, radius, v0 = header(snippet)
     assert abs(v0 - vy) < 1e-9 * vy, (v0, vy)
-    vx_out, w_out, vz_out = lammps_bounce(timestep, fix, mass, radius, vx, vy, spin)
+    vx_out, w_out, vz_out = lammps_oblique(timestep, fix, mass, radius, vx, vy, spin)
     a = case["answer"]
     assert a["inertia_factor"] == 0.4
     assert abs(vz_out / vy - a["cor_normal"]) < 0.002, (vz_out / vy, a["cor_normal"])

@@ -48,36 +48,51 @@ def export(code, preset, cor):
     return subprocess.run(args, check=True, capture_output=True, text=True).stdout
 
 
+def exported(code, preset, cor):
+    """`bouncelab peers --export CODE` for `preset` at target `cor`: its lines, and the m (kg),
+    R (m) and v0 (m/s) of its first comment line."""
+    snippet = export(code, preset, cor)
+    return (snippet.splitlines(), *header(snippet))
+
+
 def header(snippet):
     """m (kg), R (m) and v0 (m/s) from the snippet's first comment line."""
     m = re.search(r"m = (\S+) kg, R = (\S+) m, v0 = (\S+) m/s", snippet)
     return float(m[1]), float(m[2]), float(m[3])
 
 
-def mujoco_cor(option, geom, radius, v0, phase):
+def mujoco_bounce(option, geom, plane, height, qvel):
+    """One bounce in MuJoCo of a body holding an export's `geom` off a plane (`plane` m square
+    each way from the origin), gravity off, under the export's `option` line: the body starts
+    at `height` with its free joint's velocities `qvel` ({index: value}); those velocities as
+    it leaves the plane."""
     mujoco = need("mujoco")
-    h = float(re.search(r'timestep="([^"]+)"', option)[1])
-    xml = f"""<mujoco>{option}<worldbody><geom type="plane" size="1 1 0.1"/>
-      <body pos="0 0 {radius + (2 + phase) * v0 * h!r}"><freejoint/>{geom}</body>
+    xml = f"""<mujoco>{option}<worldbody><geom type="plane" size="{plane} {plane} 0.1"/>
+      <body pos="0 0 {height!r}"><freejoint/>{geom}</body>
     </worldbody></mujoco>"""
     model = mujoco.MjModel.from_xml_string(xml)
     model.opt.gravity[:] = 0
     data = mujoco.MjData(model)
-    data.qvel[2] = -v0
+    for i, v in qvel.items():
+        data.qvel[i] = v
     touched = False
     for _ in range(1_000_000):
         mujoco.mj_step(model, data)
         touched |= data.ncon > 0
         if touched and data.ncon == 0 and data.qvel[2] > 0:
-            return data.qvel[2] / v0
+            return list(data.qvel)
     raise AssertionError("the ball never left the plane")
+
+
+def mujoco_cor(option, geom, radius, v0, phase):
+    h = float(re.search(r'timestep="([^"]+)"', option)[1])
+    qvel = mujoco_bounce(option, geom, 1, radius + (2 + phase) * v0 * h, {2: -v0})
+    return qvel[2] / v0
 
 
 @pytest.mark.parametrize("preset,target", CASES)
 def test_mujoco_export_gives_the_target(preset, target):
-    snippet = export("mujoco", preset, target)
-    mass, radius, v0 = header(snippet)
-    lines = snippet.splitlines()
+    lines, mass, radius, v0 = exported("mujoco", preset, target)
     option = next(l for l in lines if l.startswith("<option"))
     geom = next(l for l in lines if l.startswith("<geom"))
     assert 'priority="1"' in geom
@@ -86,21 +101,26 @@ def test_mujoco_export_gives_the_target(preset, target):
     assert worst < TOL, f"{preset} {target}: {got}"
 
 
-def lammps_cor(timestep, fix, mass, radius, v0, phase):
+def lammps_bounce(timestep, fix, mass, radius, start, spin=0.0):
+    """One bounce in LAMMPS of a sphere of `mass` and `radius` off the wall z = 0, gravity off,
+    under an export's `timestep` and `fix` lines: it starts at height `start[0]`, moving at
+    (`start[1]`, 0, `start[2]`) m/s and spinning at `spin` rad/s about y; its velocity and its
+    spin (vectors) as it leaves the wall."""
     lammps = need("lammps")
-    h = float(timestep.split()[1])
+    height, vx, vz = start
     lmp = lammps.lammps(cmdargs=["-log", "none", "-screen", "none", "-nocite"])
     density = mass / (4 / 3 * math.pi * radius**3)
     lmp.commands_string(
         f"""units si
 atom_style sphere
 boundary p p f
-region box block -1 1 -1 1 -0.5 1
+region box block -100 100 -1 1 -0.5 1
 create_box 1 box
-create_atoms 1 single 0 0 {radius + (2 + phase) * v0 * h!r}
+create_atoms 1 single 0 0 {height!r}
 set atom 1 diameter {2 * radius!r}
 set atom 1 density {density!r}
-velocity all set 0 0 {-v0!r}
+set atom 1 omega 0.0 {spin!r} 0.0
+velocity all set {vx!r} 0 {vz!r}
 comm_modify vel yes
 neighbor {radius!r} bin
 fix integrate all nve/sphere
@@ -112,23 +132,28 @@ fix integrate all nve/sphere
         touched = False
         for _ in range(1_000_000):
             lmp.command("run 1 pre no post no")
-            z, vz = lmp.extract_atom("x")[0][2], lmp.extract_atom("v")[0][2]
+            z = lmp.extract_atom("x")[0][2]
+            v, w = lmp.extract_atom("v")[0], lmp.extract_atom("omega")[0]
             touched |= z < radius
-            if touched and z > radius and vz > 0:
-                return vz / v0
+            if touched and z > radius and v[2] > 0:
+                return (v[0], v[1], v[2]), (w[0], w[1], w[2])
         raise AssertionError("the ball never left the wall")
     finally:
         lmp.close()
 
 
+def lammps_cor(timestep, fix, mass, radius, v0, phase):
+    h = float(timestep.split()[1])
+    v, _ = lammps_bounce(timestep, fix, mass, radius, (radius + (2 + phase) * v0 * h, 0.0, -v0))
+    return v[2] / v0
+
+
 @pytest.mark.parametrize("preset,target", CASES)
 def test_lammps_export_gives_the_target(preset, target):
-    snippet = export("lammps", preset, target)
-    mass, radius, v0 = header(snippet)
-    lines = snippet.splitlines()
+    lines, mass, radius, v0 = exported("lammps", preset, target)
     timestep = next(l for l in lines if l.startswith("timestep "))
     fixes = [l for l in lines if l.startswith("fix ")]
-    assert len(fixes) == 3, snippet  # hooke, hooke clipped, hertz: every line runs
+    assert len(fixes) == 3, lines  # hooke, hooke clipped, hertz: every line runs
     for fix in fixes:
         got = [lammps_cor(timestep, fix, mass, radius, v0, p) for p in PHASES]
         worst = max(abs(e - target) for e in got)

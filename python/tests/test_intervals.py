@@ -3,7 +3,6 @@ intervals"): Python's `run` reports the same 95 % intervals as `bouncelab run --
 and none on a plain preset."""
 
 import json
-import os
 import subprocess
 
 import pytest
@@ -12,30 +11,13 @@ from cli_binary import binary
 import bouncelab
 
 
-def fitted(tmp_path, monkeypatch):
-    """A preset `bbfit` fitted to noisy baseball CORs and saved; the environment for the CLI."""
-    home = tmp_path / "config"
-    monkeypatch.setenv("XDG_CONFIG_HOME", str(home))
-    monkeypatch.setenv("HOME", str(home))
-    table = tmp_path / "cors.csv"
-    noise = [0.004, -0.006, 0.002, 0.005, -0.003, -0.001, 0.006, -0.004]
-    rows = ["v0,cor"]
-    for v0, n in zip([1, 2, 3, 5, 8, 12, 18, 25], noise):
-        rows.append(f"{v0},{bouncelab.run(preset='baseball', v0=v0).cor + n}")
-    table.write_text("\n".join(rows) + "\n")
-    env = dict(os.environ)
-    fit = [binary(), "fit", "--preset", "baseball", "--cor-table", str(table), "--save", "bbfit"]
-    subprocess.run(fit, check=True, capture_output=True, env=env)
-    return env
-
-
 def cli_json(env, *args):
     out = subprocess.run([binary(), *args, "--format", "json"], check=True, capture_output=True, env=env)
     return json.loads(out.stdout)
 
 
-def test_a_fitted_preset_carries_its_intervals(tmp_path, monkeypatch):
-    env = fitted(tmp_path, monkeypatch)
+def test_a_fitted_preset_carries_its_intervals(fitted_baseball):
+    env = fitted_baseball
     cli = cli_json(env, "run", "--preset", "bbfit", "--v0", "45")
     r = bouncelab.run(preset="bbfit", v0=45)
     for key in ["cor_ci95", "max_force_ci95", "contact_time_ci95"]:
@@ -49,8 +31,8 @@ def test_a_fitted_preset_carries_its_intervals(tmp_path, monkeypatch):
     assert plain.cor_ci95 is None and "cor_ci95" not in plain.to_dict()
 
 
-def test_sweep_and_drop_carry_them_too(tmp_path, monkeypatch):
-    env = fitted(tmp_path, monkeypatch)
+def test_sweep_and_drop_carry_them_too(fitted_baseball):
+    env = fitted_baseball
     rows = cli_json(env, "sweep", "velocity", "--preset", "bbfit", "--points", "4")["rows"]
     sweep = bouncelab.sweep_velocity(preset="bbfit", speeds=[r["v0"] for r in rows])
     bounces = cli_json(env, "drop", "--preset", "bbfit", "--bounces", "3")["bounces"]
@@ -69,10 +51,10 @@ def test_sweep_and_drop_carry_them_too(tmp_path, monkeypatch):
     assert "cor_ci95_lo" not in bouncelab.drop(preset="baseball", bounces=1)["bounces"]
 
 
-def test_drop_warns_when_its_air_is_not_the_fits(tmp_path, monkeypatch):
+def test_drop_warns_when_its_air_is_not_the_fits(tmp_path, fitted_baseball):
     # a ball fitted to drops in vacuum (fit's default) and dropped through air (drop's
     # default) misses its own readings: Python's drop says so, as the command line's
-    env = fitted(tmp_path, monkeypatch)
+    env = fitted_baseball
     drops = tmp_path / "drops.csv"
     drops.write_text("drop_height_m,rebound_height_m\n2.54,1.44\n2.54,1.46\n2.54,1.48\n2.54,1.47\n")
     fit = [binary(), "fit", "--preset", "tennis", "--drop-test", str(drops), "--free", "k_r",

@@ -20,50 +20,20 @@ import subprocess
 
 from cli_binary import binary
 
-from test_exports_real import header, need
+from test_exports_real import header, lammps_bounce, mujoco_bounce
 
 
 def bouncelab(*args):
     return subprocess.run([binary(), *args], check=True, capture_output=True, text=True).stdout
 
 
-def lammps_bounce(timestep, fix, mass, radius, vx, vy, spin):
-    """(v_x, ω_y) after one bounce of the sphere off the plane z = 0; ω_y is bouncelab's ω
-    (the contact point's velocity is v_x − R ω_y)."""
-    lammps = need("lammps")
+def lammps_oblique(timestep, fix, mass, radius, vx, vy, spin):
+    """(v_x, ω_y, v_z) after one bounce of the sphere off the plane z = 0, arriving from
+    2.3 steps away; ω_y is bouncelab's ω (the contact point's velocity is v_x − R ω_y)."""
     h = float(timestep.split()[1])
-    lmp = lammps.lammps(cmdargs=["-log", "none", "-screen", "none", "-nocite"])
-    density = mass / (4 / 3 * math.pi * radius**3)
-    lmp.commands_string(
-        f"""units si
-atom_style sphere
-boundary p p f
-region box block -100 100 -1 1 -0.5 1
-create_box 1 box
-create_atoms 1 single 0 0 {radius + 2.3 * vy * h!r}
-set atom 1 diameter {2 * radius!r}
-set atom 1 density {density!r}
-set atom 1 omega 0.0 {spin!r} 0.0
-velocity all set {vx!r} 0 {-vy!r}
-comm_modify vel yes
-neighbor {radius!r} bin
-fix integrate all nve/sphere
-{fix}
-{timestep}
-"""
-    )
-    try:
-        touched = False
-        for _ in range(1_000_000):
-            lmp.command("run 1 pre no post no")
-            z = lmp.extract_atom("x")[0][2]
-            v, w = lmp.extract_atom("v")[0], lmp.extract_atom("omega")[0]
-            touched |= z < radius
-            if touched and z > radius and v[2] > 0:
-                return v[0], w[1], v[2]
-        raise AssertionError("the ball never left the wall")
-    finally:
-        lmp.close()
+    start = (radius + 2.3 * vy * h, vx, -vy)
+    v, w = lammps_bounce(timestep, fix, mass, radius, start, spin)
+    return v[0], w[1], v[2]
 
 
 def both(angle, spin, mu, v=20.0, damping=None):
@@ -86,7 +56,7 @@ def both(angle, spin, mu, v=20.0, damping=None):
     assert "tangential linear_history" in fix
     mass, radius, _ = header(snippet)
     assert radius == ours["radius"]
-    theirs = lammps_bounce(timestep, fix, mass, radius, vx, vy, spin)
+    theirs = lammps_oblique(timestep, fix, mass, radius, vx, vy, spin)
     return ours, theirs
 
 
@@ -138,27 +108,14 @@ def test_the_tangential_dashpot_damps_the_grip_in_lammps_as_in_bouncelab():
     assert abs(ex_lmp - ex_ours) < 0.03, (ex_lmp, ex_ours)
 
 
-def mujoco_bounce(snippet, radius, vx, vy, spin):
+def mujoco_oblique(snippet, radius, vx, vy, spin):
     """(v_x, ω_y, v_z) after one bounce of the condim 3 geom off MuJoCo's plane."""
-    mujoco = need("mujoco")
     lines = snippet.splitlines()
     option = next(l for l in lines if l.startswith("<option"))
     geom = next(l for l in lines if l.startswith("<geom") and 'condim="3"' in l)
     h = float(option.split('timestep="')[1].split('"')[0])
-    xml = f"""<mujoco>{option}<worldbody><geom type="plane" size="100 100 0.1"/>
-      <body pos="0 0 {radius + 2.3 * vy * h!r}"><freejoint/>{geom}</body>
-    </worldbody></mujoco>"""
-    model = mujoco.MjModel.from_xml_string(xml)
-    model.opt.gravity[:] = 0
-    data = mujoco.MjData(model)
-    data.qvel[0], data.qvel[2], data.qvel[4] = vx, -vy, spin
-    touched = False
-    for _ in range(1_000_000):
-        mujoco.mj_step(model, data)
-        touched |= data.ncon > 0
-        if touched and data.ncon == 0 and data.qvel[2] > 0:
-            return data.qvel[0], data.qvel[4], data.qvel[2]
-    raise AssertionError("the ball never left the plane")
+    qvel = mujoco_bounce(option, geom, 100, radius + 2.3 * vy * h, {0: vx, 2: -vy, 4: spin})
+    return qvel[0], qvel[4], qvel[2]
 
 
 def test_mujoco_condim_3_slides_at_mu_and_says_what_it_moves():
@@ -172,6 +129,6 @@ def test_mujoco_condim_3_slides_at_mu_and_says_what_it_moves():
     snippet = bouncelab("peers", "--preset", "tennis", "--target", "christoforou-yigit",
                         "--v0", repr(vy), "--export", "mujoco", "--friction", str(mu))
     _, radius, _ = header(snippet)
-    vx_out, _, vz = mujoco_bounce(snippet, radius, vx, vy, spin)
+    vx_out, _, vz = mujoco_oblique(snippet, radius, vx, vy, spin)
     e = vz / vy
     assert abs((vx_out - vx) + mu * (1 + e) * vy) < 1e-2 * mu * (1 + e) * vy

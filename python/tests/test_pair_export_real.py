@@ -27,11 +27,14 @@ def run(*args):
     return subprocess.run([binary(), *args], check=True, capture_output=True, text=True)
 
 
-def two_balls(kv_line, mass, radius, closing, timestep):
+def two_balls(export, mass, radius, closing):
     """The relative COR of two equal spheres closing head-on at `closing` m/s in LAMMPS, with
-    the export's hooke model as their pair contact."""
+    the hooke model of `export` (the text of a pair export) as their pair contact, at its
+    timestep."""
     lammps = need("lammps")
-    words = kv_line.split()
+    lines = export.splitlines()
+    timestep = next(l for l in lines if l.startswith("timestep "))
+    words = next(l for l in lines if l.startswith("fix kv ")).split()
     k, eta = words[6], words[7]
     h = float(timestep.split()[1])
     gap = 2.3 * closing * h
@@ -87,19 +90,13 @@ def test_a_pair_export_gives_the_pairs_cor_at_its_closing_speed():
                           "--v0", repr(closing), "--format", "json").stdout)["cor"]
     at = export_at(closing)
     assert "the pair's closing speed at v = 30 m/s" in at.stdout
-    lines = at.stdout.splitlines()
-    timestep = next(l for l in lines if l.startswith("timestep "))
-    kv = next(l for l in lines if l.startswith("fix kv "))
-    e = two_balls(kv, ball["mass"], ball["radius"], closing, timestep)
+    e = two_balls(at.stdout, ball["mass"], ball["radius"], closing)
     print(f"two tennis balls at {closing} m/s in LAMMPS: e {e:.5f}, the pair's {pair:.5f}")
     assert abs(e - pair) < 0.002, (e, pair)
     # made at the preset's speed, the export warns, and misses at 30 m/s
     old = export_at(None)
     assert "the pair export is calibrated at the closing speed" in old.stderr
-    lines = old.stdout.splitlines()
-    timestep = next(l for l in lines if l.startswith("timestep "))
-    kv = next(l for l in lines if l.startswith("fix kv "))
-    e_old = two_balls(kv, ball["mass"], ball["radius"], closing, timestep)
+    e_old = two_balls(old.stdout, ball["mass"], ball["radius"], closing)
     print(f"the export at the preset's speed: e {e_old:.5f}, "
           f"{(e_old - pair) * closing:+.2f} m/s off at {closing} m/s")
     assert abs(e_old - pair) * closing > 1.0

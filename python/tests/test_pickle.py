@@ -3,13 +3,10 @@
 
 import concurrent.futures
 import copy
-import os
 import pickle
-import subprocess
 
 import numpy as np
 import pytest
-from cli_binary import binary
 
 import bouncelab
 
@@ -104,18 +101,7 @@ def run_golf(v0):
     return bouncelab.run(preset="golf", v0=v0)
 
 
-def test_a_fitted_presets_intervals_travel_too(tmp_path, monkeypatch):
-    path = binary()
-    home = tmp_path / "config"
-    monkeypatch.setenv("HOME", str(home))
-    table = tmp_path / "cors.csv"
-    noise = [0.004, -0.006, 0.002, 0.005, -0.003, -0.001, 0.006, -0.004]
-    rows = ["v0,cor"]
-    for v0, n in zip([1, 2, 3, 5, 8, 12, 18, 25], noise):
-        rows.append(f"{v0},{bouncelab.run(preset='baseball', v0=v0).cor + n}")
-    table.write_text("\n".join(rows) + "\n")
-    fit = [path, "fit", "--preset", "baseball", "--cor-table", str(table), "--save", "bbfit"]
-    subprocess.run(fit, check=True, capture_output=True, env=dict(os.environ))
+def test_a_fitted_presets_intervals_travel_too(fitted_baseball):
     r = bouncelab.run(preset="bbfit", v0=45)
     assert r.cor_ci95 is not None
     back = pickle.loads(pickle.dumps(r))

@@ -5,14 +5,11 @@ kept for, and for every call that takes a preset's ball."""
 
 import math
 import struct
-from pathlib import Path
 
 import pytest
+from user_presets import mine
 
 import bouncelab
-
-ROOT = Path(__file__).resolve().parents[2]
-SUPERBALL = (ROOT / "presets" / "superball.toml").read_text()
 
 
 def bits(impact):
@@ -26,10 +23,6 @@ def bits(impact):
         else:
             out[k] = v
     return out
-
-
-def mine(k_r="7.08e4"):
-    return SUPERBALL.replace('name = "superball"', 'name = "mine"').replace("k_r = 7.08e4", f"k_r = {k_r}")
 
 
 @pytest.mark.parametrize("preset", ["golf", "tennis", "superball"])
@@ -51,11 +44,8 @@ def test_lambda_and_zeta_leave_the_kept_ball_as_it_was():
     assert bits(bouncelab.run(preset="golf")) == before
 
 
-def test_a_preset_edited_drops_every_ball_kept_from_it(tmp_path, monkeypatch):
-    monkeypatch.setenv("XDG_CONFIG_HOME", str(tmp_path))
-    folder = tmp_path / "bouncelab" / "presets"
-    folder.mkdir(parents=True)
-    path = folder / "mine.toml"
+def test_a_preset_edited_drops_every_ball_kept_from_it(presets_folder):
+    path = presets_folder / "mine.toml"
     path.write_text(mine("7.08e4"))
     laws = [None, "linear", "hertz", "elastic-plastic"]
     for law in laws:  # each kept

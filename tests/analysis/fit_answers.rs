@@ -119,15 +119,7 @@ fn a_parameter_the_data_cannot_pin_is_no_answer_exit_1() {
     let path = dir.path().join("batch.csv");
     std::fs::write(&path, text).unwrap();
     let path = path.display().to_string();
-    let args = [
-        "fit",
-        "--preset",
-        "tennis",
-        "--drop-test",
-        &path,
-        "--format",
-        "json",
-    ];
+    let args = argv_with("fit --preset tennis --drop-test {} --format json", &[&path]);
     let o = bl(&args);
     assert_eq!(o.code, 1, "{}", o.stderr);
     // the report is still printed, and says why
@@ -151,17 +143,10 @@ fn a_parameter_the_data_cannot_pin_is_no_answer_exit_1() {
     let plot = dir.path().join("p.svg");
     let o = bl_in(
         dir.path(),
-        &[
-            "fit",
-            "--preset",
-            "tennis",
-            "--drop-test",
-            &path,
-            "--plot",
-            plot.to_str().unwrap(),
-            "--save",
-            "mine",
-        ],
+        &argv_with(
+            "fit --preset tennis --drop-test {} --plot {} --save mine",
+            &[&path, plot.to_str().unwrap()],
+        ),
     );
     assert_eq!(o.code, 1, "{}", o.stderr);
     assert!(
@@ -172,17 +157,10 @@ fn a_parameter_the_data_cannot_pin_is_no_answer_exit_1() {
     assert!(!plot.exists());
     assert!(!dir.path().join("bouncelab/presets/mine.toml").exists());
     // the set the data can pin answers
-    let args = [
-        "fit",
-        "--preset",
-        "tennis",
-        "--drop-test",
-        &path,
-        "--free",
-        "k_r",
-        "--format",
-        "json",
-    ];
+    let args = argv_with(
+        "fit --preset tennis --drop-test {} --free k_r --format json",
+        &[&path],
+    );
     let v = json(&args);
     assert_eq!(v["identified"], true);
     assert_eq!(v["not_pinned"], serde_json::json!([]));
@@ -194,15 +172,7 @@ fn a_parameter_the_data_cannot_pin_is_no_answer_exit_1() {
 #[test]
 fn an_exact_fit_does_not_pin_a_parameter_its_data_do_not_see() {
     let (_dir, path) = file_with(b"v0,cor\n1,0.75\n2,0.75\n");
-    let args = [
-        "fit",
-        "--cor-table",
-        &path,
-        "--free",
-        "k_r,z_p",
-        "--format",
-        "json",
-    ];
+    let args = argv_with("fit --cor-table {} --free k_r,z_p --format json", &[&path]);
     let o = bl(&args);
     assert_eq!(o.code, 1, "{}", o.stderr);
     let v: Value = serde_json::from_str(&o.stdout).unwrap();
@@ -236,9 +206,7 @@ fn an_exact_fit_that_misses_is_out_of_reach() {
     assert_bad(&bl(&table), &["out of reach"]);
     // and the single-COR fit at the same speed, as before
     bad(
-        &[
-            "fit", "--preset", "golf", "--cor", "0.7071", "--v0", "4.429",
-        ],
+        &argv("fit --preset golf --cor 0.7071 --v0 4.429"),
         &["out of reach"],
     );
     // a reachable one drop is still exact, and verified
@@ -273,15 +241,10 @@ fn a_drag_correction_implying_cor_above_one_is_refused_by_row() {
     );
     let (_dir, path) = file_with(b"drop_height_m,rebound_height_m\n1,0.5\n100,99\n");
     bad(
-        &[
-            "fit",
-            "--preset",
-            "golf",
-            "--drop-test",
-            &path,
-            "--drag-coefficient",
-            "0.47",
-        ],
+        &argv_with(
+            "fit --preset golf --drop-test {} --drag-coefficient 0.47",
+            &[&path],
+        ),
         &[&format!("{path}:3:"), "COR 2.291 > 1"],
     );
     // issue 28's crash (an SVD of NaN): heights of tens of kilometres, refused, no panic
@@ -341,17 +304,10 @@ fn a_parameter_run_to_its_bound_is_no_answer() {
         text.push_str(&format!("1.0,{}\n", 0.450 + 0.001 * i as f64));
     }
     let (_dir, path) = file_with(text.as_bytes());
-    let o = bl(&[
-        "fit",
-        "--preset",
-        "tennis",
-        "--drop-test",
-        &path,
-        "--free",
-        "k_r",
-        "--format",
-        "json",
-    ]);
+    let o = bl(&argv_with(
+        "fit --preset tennis --drop-test {} --free k_r --format json",
+        &[&path],
+    ));
     assert_eq!(o.code, 1, "{}", o.stderr);
     let v: Value = serde_json::from_str(&o.stdout).unwrap();
     assert_eq!(v["not_pinned"], serde_json::json!(["k_r"]));

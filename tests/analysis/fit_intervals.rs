@@ -6,12 +6,13 @@
 //! not by the library's `apply`), the spread of the outputs against the delta method's.
 
 use crate::common;
+use crate::common::embedded;
 use crate::fit_common;
 
 use bouncelab::analysis::fit::stats::t975;
 use bouncelab::preset::Preset;
 use bouncelab::{Ball, ContactLaw, ImpactParams, SolveOptions, simulate};
-use common::{bl_in, f};
+use common::{argv, argv_with, bl_in, f};
 use fit_common::Rng;
 use nalgebra::{DMatrix, DVector};
 use serde_json::Value;
@@ -48,15 +49,10 @@ fn fitted(home: &Path) -> Preset {
     let table = noisy_table(home);
     let o = bl_in(
         home,
-        &[
-            "fit",
-            "--preset",
-            "baseball",
-            "--cor-table",
-            &table,
-            "--save",
-            "bb-fit",
-        ],
+        &argv_with(
+            "fit --preset baseball --cor-table {} --save bb-fit",
+            &[&table],
+        ),
     );
     assert_eq!(o.code, 0, "{}", o.stderr);
     let path = home.join("bouncelab/presets/bb-fit.toml");
@@ -166,9 +162,7 @@ fn text_and_plain_presets() {
     // an override that moves a fitted parameter leaves the fit's ball: no interval claimed
     let moved = run_json(
         home.path(),
-        &[
-            "run", "--preset", "bb-fit", "--k-r", "5e5", "--format", "json",
-        ],
+        &argv("run --preset bb-fit --k-r 5e5 --format json"),
     );
     assert!(moved.get("cor_ci95").is_none());
 }
@@ -176,10 +170,7 @@ fn text_and_plain_presets() {
 /// A malformed `[fit]` table stops the preset with `file:line:column` and the key at fault.
 #[test]
 fn malformed_fit_tables_are_located() {
-    let base = Preset::embedded_all()
-        .into_iter()
-        .find(|p| p.name == "baseball")
-        .unwrap();
+    let base = embedded("baseball");
     let text = base.to_toml(&[]);
     let k_r = base.adopted.k_r;
     let z_p = base.adopted.z_p.unwrap();

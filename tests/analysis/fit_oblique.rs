@@ -10,44 +10,15 @@ use bouncelab::analysis::work::Unwatched;
 use bouncelab::measured::ObliqueRow;
 use bouncelab::model::contact::ContactLaw;
 use bouncelab::oblique::{self, Oblique, mindlin_ratio};
-use fit_common::oblique::{R, mixed, start};
+use fit_common::oblique::{Noise, R, bounces, mixed, start};
 use fit_common::{Rng, covers};
-
-/// Bounces of the tennis ball under μ, K_t, κ, with Gaussian noise of `sd` on v_x,out (m/s)
-/// and `sd_spin` on ω_out (rad/s, `None`: not measured).
-fn bounces(
-    cases: &[(f64, f64, f64)],
-    (mu, kt, kappa): (f64, f64, f64),
-    sd: f64,
-    sd_spin: Option<f64>,
-    rng: &mut Rng,
-) -> Vec<ObliqueRow> {
-    let p = Ball::from_preset("tennis").unwrap().params;
-    cases
-        .iter()
-        .enumerate()
-        .map(|(i, &(v0, angle, spin))| {
-            let o = Oblique::new(angle, spin, mu, kt, kappa, R).unwrap();
-            let r = oblique::solve_law(&p, ContactLaw::Linear, v0, &o, 0).unwrap();
-            ObliqueRow {
-                v0,
-                angle_deg: angle,
-                spin_in: spin,
-                vx_out: r.vx_out + sd * rng.normal(),
-                vy_out: r.vy_out,
-                spin_out: sd_spin.map(|s| r.spin_out + s * rng.normal()),
-                line: i + 2,
-            }
-        })
-        .collect()
-}
 
 #[test]
 fn recovers_mu_and_k_t_from_noisy_bounces() {
     let p = Ball::from_preset("tennis").unwrap().params;
     let truth = (0.45, 0.9 * mindlin_ratio(0.5) * p.k_p, 0.6105);
     let mut rng = Rng::new(3);
-    let rows = bounces(&mixed(), truth, 0.03, None, &mut rng);
+    let rows = bounces(&mixed(), truth, None, Noise::vx(0.03), &mut rng);
     let f = fit_oblique(&start(0.3 * truth.1, truth.2), &rows, &Unwatched).unwrap();
     assert!(f.identified, "{f:?}");
     assert!(covers(&f.fitted[0], truth.0), "{:?}", f.fitted[0]);
@@ -67,7 +38,7 @@ fn the_intervals_cover_the_truth() {
     let mut covered = [0, 0];
     for seed in 0..16 {
         let mut rng = Rng::new(100 + seed);
-        let rows = bounces(&cases, truth, 0.05, None, &mut rng);
+        let rows = bounces(&cases, truth, None, Noise::vx(0.05), &mut rng);
         let f = fit_oblique(&start(truth.1, truth.2), &rows, &Unwatched).unwrap();
         assert!(f.identified, "{seed}: {f:?}");
         covered[0] += usize::from(covers(&f.fitted[0], truth.0));
@@ -85,7 +56,16 @@ fn measured_spins_fit_the_inertia_factor_too() {
     // off: the one-in-a-hundred draw a single-seed test must not hang on; seeds 12–14 all
     // cover, 0.7–0.8 standard errors off at most)
     let mut rng = Rng::new(12);
-    let rows = bounces(&mixed(), truth, 0.03, Some(3.0), &mut rng);
+    let rows = bounces(
+        &mixed(),
+        truth,
+        None,
+        Noise {
+            spin: Some(3.0),
+            ..Noise::vx(0.03)
+        },
+        &mut rng,
+    );
     let f = fit_oblique(&start(2.0 * truth.1, 0.4), &rows, &Unwatched).unwrap();
     assert!(f.identified, "{f:?}");
     assert_eq!(f.fitted.len(), 3);
@@ -107,7 +87,7 @@ fn bounces_that_only_slide_cannot_pin_k_t() {
         .map(|a| (25.0, a, -300.0))
         .collect();
     let mut rng = Rng::new(5);
-    let rows = bounces(&cases, truth, 0.02, None, &mut rng);
+    let rows = bounces(&cases, truth, None, Noise::vx(0.02), &mut rng);
     let f = fit_oblique(&start(truth.1, truth.2), &rows, &Unwatched).unwrap();
     assert!(!f.identified, "{f:?}");
     assert!(f.not_pinned.contains(&"tangential_stiffness"), "{f:?}");
@@ -154,7 +134,7 @@ fn profiled_cost(rows: &[ObliqueRow], kt: f64, kappa: f64, mu0: f64) -> f64 {
 fn k_ts_interval_ends_where_the_profiled_cost_rises_by_t_squared() {
     let truth = (0.45, 13_000.0, 0.6105);
     let mut rng = Rng::new(11);
-    let rows = bounces(&mixed(), truth, 0.03, None, &mut rng);
+    let rows = bounces(&mixed(), truth, None, Noise::vx(0.03), &mut rng);
     let f = fit_oblique(&start(0.5 * truth.1, truth.2), &rows, &Unwatched).unwrap();
     assert!(f.identified, "{f:?}");
     let (mu, kt) = (&f.fitted[0], &f.fitted[1]);

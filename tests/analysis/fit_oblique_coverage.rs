@@ -7,51 +7,11 @@ use crate::fit_common;
 use bouncelab::Ball;
 use bouncelab::analysis::fit::oblique::{ObliqueFit, fit_oblique};
 use bouncelab::analysis::work::Unwatched;
-use bouncelab::measured::ObliqueRow;
 use bouncelab::model::contact::ContactLaw;
-use bouncelab::oblique::{self, Oblique};
+use bouncelab::oblique::Oblique;
 use fit_common::Rng;
-use fit_common::oblique::{R, mixed, start};
+use fit_common::oblique::{Noise, R, bounces, mixed, start};
 
-/// Noise of a data set: v_x,out and v_y,out (m/s), ω_out (rad/s; `None`: not measured).
-#[derive(Clone, Copy)]
-struct Noise {
-    speed: f64,
-    spin: Option<f64>,
-}
-
-/// The tennis ball's bounces at `cases` (v0, angle, spin) under `truth` = (μ, K_t, κ).
-fn bounces(
-    cases: &[(f64, f64, f64)],
-    truth: (f64, f64, f64),
-    noise: Noise,
-    rng: &mut Rng,
-) -> Vec<ObliqueRow> {
-    let p = Ball::from_preset("tennis").unwrap().params;
-    let (mu, kt, kappa) = truth;
-    cases
-        .iter()
-        .enumerate()
-        .map(|(i, &(v0, angle, spin))| {
-            let o = Oblique::new(angle, spin, mu, kt, kappa, R).unwrap();
-            let r = oblique::solve_law(&p, ContactLaw::Linear, v0, &o, 0).unwrap();
-            let vx_out = r.vx_out + noise.speed * rng.normal();
-            let vy_out = r.vy_out + noise.speed * rng.normal();
-            ObliqueRow {
-                v0,
-                angle_deg: angle,
-                spin_in: spin,
-                vx_out,
-                vy_out,
-                spin_out: noise.spin.map(|s| r.spin_out + s * rng.normal()),
-                line: i + 2,
-            }
-        })
-        .collect()
-}
-
-/// What a study counts: intervals holding the truth, and Σ z² with
-/// z = (ln p̂ − ln p)/s_θ (1 on average for honest intervals).
 #[derive(Debug, Default)]
 struct Tally {
     sets: usize,
@@ -87,7 +47,7 @@ fn study(seeds: std::ops::Range<u64>, truth: (f64, f64, f64), noise: Noise) -> T
     let mut t = Tally::default();
     for seed in seeds {
         let mut rng = Rng::new(seed);
-        let rows = bounces(&cases, truth, noise, &mut rng);
+        let rows = bounces(&cases, truth, None, noise, &mut rng);
         let kappa0 = if noise.spin.is_some() { 0.5 } else { truth.2 };
         match fit_oblique(&start(0.5 * truth.1, kappa0), &rows, &Unwatched) {
             Ok(f) if f.identified => t.add(&f, [truth.0, truth.1, truth.2]),
@@ -103,11 +63,13 @@ const TRUTH: (f64, f64, f64) = (0.45, 13_000.0, 0.6105);
 
 /// No spins: 0.03 m/s on the speeds. With spins: 3 rad/s on ω_out besides.
 const PLAIN: Noise = Noise {
-    speed: 0.03,
+    vx: 0.03,
+    vy: Some(0.03),
     spin: None,
 };
 const SPINS: Noise = Noise {
-    speed: 0.03,
+    vx: 0.03,
+    vy: Some(0.03),
     spin: Some(3.0),
 };
 
@@ -159,13 +121,13 @@ fn a_small_coverage_check() {
 #[test]
 fn spins_do_not_stop_in_a_local_minimum() {
     let mut rng = Rng::new(45);
-    let rows = bounces(&mixed(), TRUTH, SPINS, &mut rng);
+    let rows = bounces(&mixed(), TRUTH, None, SPINS, &mut rng);
     let f = fit_oblique(&start(0.5 * TRUTH.1, 0.5), &rows, &Unwatched).unwrap();
     assert!(f.identified, "{f:?}");
     let mut t = Tally::default();
     t.add(&f, [TRUTH.0, TRUTH.1, TRUTH.2]);
     assert!(t.worst.iter().all(|z| *z < 2.0), "{t:?} {f:?}");
-    assert!(f.rms_vx < 1.5 * SPINS.speed, "{}", f.rms_vx);
+    assert!(f.rms_vx < 1.5 * SPINS.vx, "{}", f.rms_vx);
 }
 
 /// What one evaluation of the fit costs against a normal impact, for `OBLIQUE_COST`

@@ -7,43 +7,11 @@ use crate::fit_common;
 use bouncelab::Ball;
 use bouncelab::analysis::fit::oblique::{ObliqueStart, fit_oblique};
 use bouncelab::analysis::work::Unwatched;
-use bouncelab::measured::ObliqueRow;
-use bouncelab::model::contact::ContactLaw;
-use bouncelab::oblique::{self, Oblique, mindlin_ratio};
-use fit_common::oblique::{R, mixed, start};
+use bouncelab::oblique::mindlin_ratio;
+use fit_common::oblique::{Noise, bounces, mixed, start};
 use fit_common::{Rng, covers};
 
 const KAPPA: f64 = 0.6105;
-
-/// Bounces of the tennis ball under μ, K_t, c_t, with Gaussian noise of `sd` on v_x,out.
-fn bounces(
-    cases: &[(f64, f64, f64)],
-    (mu, kt, ct): (f64, f64, f64),
-    sd: f64,
-    rng: &mut Rng,
-) -> Vec<ObliqueRow> {
-    let p = Ball::from_preset("tennis").unwrap().params;
-    cases
-        .iter()
-        .enumerate()
-        .map(|(i, &(v0, angle, spin))| {
-            let o = Oblique::new(angle, spin, mu, kt, KAPPA, R)
-                .unwrap()
-                .with_tangential_damping(ct)
-                .unwrap();
-            let r = oblique::solve_law(&p, ContactLaw::Linear, v0, &o, 0).unwrap();
-            ObliqueRow {
-                v0,
-                angle_deg: angle,
-                spin_in: spin,
-                vx_out: r.vx_out + sd * rng.normal(),
-                vy_out: r.vy_out,
-                spin_out: None,
-                line: i + 2,
-            }
-        })
-        .collect()
-}
 
 fn damped_start(kt: f64, ct: f64) -> ObliqueStart {
     ObliqueStart {
@@ -61,7 +29,13 @@ fn recovers_mu_k_t_and_c_t_from_noisy_bounces() {
     let seeds = 6;
     for seed in 0..seeds {
         let mut rng = Rng::new(500 + seed);
-        let rows = bounces(&mixed(), truth, 0.03, &mut rng);
+        let rows = bounces(
+            &mixed(),
+            (truth.0, kt, KAPPA),
+            Some(truth.2),
+            Noise::vx(0.03),
+            &mut rng,
+        );
         let f = fit_oblique(&damped_start(0.5 * kt, 4.0), &rows, &Unwatched).unwrap();
         assert!(f.identified, "{seed}: {f:?}");
         let names: Vec<_> = f.fitted.iter().map(|e| e.name).collect();
@@ -105,7 +79,13 @@ fn bounces_that_all_slide_do_not_pin_c_t() {
         .flat_map(|a| [(20.0, a, -300.0), (24.0, a, -100.0)])
         .collect();
     let mut rng = Rng::new(9);
-    let rows = bounces(&cases, (0.3, kt, 10.0), 0.02, &mut rng);
+    let rows = bounces(
+        &cases,
+        (0.3, kt, KAPPA),
+        Some(10.0),
+        Noise::vx(0.02),
+        &mut rng,
+    );
     let f = fit_oblique(&damped_start(kt, 10.0), &rows, &Unwatched).unwrap();
     assert!(!f.identified, "{f:?}");
     assert!(

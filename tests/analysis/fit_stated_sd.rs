@@ -6,6 +6,7 @@
 
 use crate::common;
 use crate::seeded;
+use common::argv_with;
 
 use bouncelab::analysis::fit::{FitData, MultiFit, Param, fit};
 use bouncelab::measured::CorPoint;
@@ -131,15 +132,7 @@ fn the_report_says_the_sds_were_taken_as_known() {
     )
     .unwrap();
     let fit = |file: &str, tail: &[&str]| {
-        let args = [
-            "fit",
-            "--preset",
-            "superball",
-            "--cor-table",
-            file,
-            "--free",
-            "k_r",
-        ];
+        let args = argv_with("fit --preset superball --cor-table {} --free k_r", &[file]);
         common::ok_at(dir.path(), &[&args[..], tail].concat())
     };
     let text = fit("sd.csv", &[]);

@@ -7,7 +7,6 @@
 use crate::common;
 use crate::tui_common;
 
-use bouncelab::preset::Preset;
 use bouncelab::tui::app::App;
 use common::*;
 use ratatui::crossterm::event::KeyCode;
@@ -113,10 +112,7 @@ fn sweep_rows_drop_and_peers_carry_their_warnings() {
 /// 6 mm (tennis, football, basketball, softball).
 #[test]
 fn the_readout_does_not_claim_z_m_below_z_p_under_hertz() {
-    let tennis = Preset::embedded_all()
-        .into_iter()
-        .find(|p| p.name == "tennis")
-        .unwrap();
+    let tennis = embedded("tennis");
     let mut app = App::new(tennis, true);
     // c cycles the law: linear → elastic–plastic → Hertz
     while !screen_text(&draw(&app, 120, 40))
@@ -188,9 +184,7 @@ fn every_answer_and_every_format_carries_the_radius_warning() {
     let oblique = argv("oblique --angle 80 --friction 0.5 --format csv");
     let rows: [&[&str]; 3] = [
         &["run", "--format", "csv"],
-        &[
-            "sweep", "velocity", "--from", "90", "--to", "100", "--points", "2",
-        ],
+        &argv("sweep velocity --from 90 --to 100 --points 2"),
         &oblique,
     ];
     for cmd in rows {

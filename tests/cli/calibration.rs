@@ -82,9 +82,7 @@ fn presets_shows_the_records() {
 /// The paper's baseball at the MLB test speed, 85 ft/s = 25.908 m/s: outside its record.
 #[test]
 fn the_papers_baseball_at_the_mlb_speed_is_outside_calibration() {
-    let v = json(&[
-        "run", "--preset", "baseball", "--v0", "25.908", "--format", "json",
-    ]);
+    let v = json(&argv("run --preset baseball --v0 25.908 --format json"));
     let w = outside(&v);
     assert_eq!(w.len(), 1, "{v}");
     assert!(
@@ -107,9 +105,7 @@ fn the_papers_baseball_at_the_mlb_speed_is_outside_calibration() {
 
 #[test]
 fn an_override_is_listed_what_was_kept_too_and_the_comparison_is_withheld() {
-    let v = json(&[
-        "run", "--preset", "tennis", "--k-p", "30000", "--format", "json",
-    ]);
+    let v = json(&argv("run --preset tennis --k-p 30000 --format json"));
     let ball = &v["ball"];
     assert_eq!(ball["name"], "tennis");
     assert_eq!(ball["overrides"], serde_json::json!(["k_p"]));
@@ -162,9 +158,7 @@ fn every_answer_outside_the_record_says_so() {
         );
     }
     // peers at 40 m/s: the speed, and the target COR measured at another one, both named
-    let v = json(&[
-        "peers", "--preset", "golf", "--v0", "40", "--format", "json",
-    ]);
+    let v = json(&argv("peers --preset golf --v0 40 --format json"));
     let w = outside(&v);
     assert_eq!(w.len(), 2, "{v}");
     assert!(
@@ -178,15 +172,12 @@ fn every_answer_outside_the_record_says_so() {
          calibration is at impact speed 40 m/s (give --cor E for the COR at that speed)"
     );
     // a COR given is the user's, at the speed asked: no second warning
-    let v = json(&[
-        "peers", "--preset", "golf", "--v0", "40", "--cor", "0.7", "--format", "json",
-    ]);
+    let v = json(&argv("peers --preset golf --v0 40 --cor 0.7 --format json"));
     assert_eq!(outside(&v).len(), 1, "{v}");
     // sweep rows: each row its own
-    let v = json(&[
-        "sweep", "velocity", "--preset", "golf", "--from", "1.47", "--to", "40", "--points", "2",
-        "--format", "json",
-    ]);
+    let v = json(&argv(
+        "sweep velocity --preset golf --from 1.47 --to 40 --points 2 --format json",
+    ));
     let rows = v["rows"].as_array().unwrap();
     assert!(outside(&rows[0]).is_empty(), "{}", rows[0]);
     assert_eq!(outside(&rows[1]).len(), 1, "{}", rows[1]);
@@ -211,9 +202,7 @@ fn every_answer_outside_the_record_says_so() {
         "drop --preset tennis --height 2.54 --standard itf --format json",
     ));
     assert!(outside(&v).is_empty(), "{v}");
-    let o = bl(&[
-        "drop", "--preset", "golf", "--height", "20", "--format", "json",
-    ]);
+    let o = bl(&argv("drop --preset golf --height 20 --format json"));
     let v: Value = serde_json::from_str(&o.stdout).unwrap();
     assert_eq!(outside(&v).len(), 1, "{v}");
     // court: the normal speed of the ITF's 30 m/s at 16°
@@ -241,9 +230,9 @@ fn the_mlb_verdict_on_the_papers_baseball_warns_and_the_drop_names_its_ball() {
     );
     assert_eq!(v["ball"]["name"], "baseball");
     assert_eq!(f(&v["ball"], "k_p"), 1.05e6);
-    let v = json(&[
-        "drop", "--preset", "tennis", "--height", "2.54", "--k-r", "20000", "--format", "json",
-    ]);
+    let v = json(&argv(
+        "drop --preset tennis --height 2.54 --k-r 20000 --format json",
+    ));
     assert_eq!(v["ball"]["overrides"], serde_json::json!(["k_r"]));
     assert!(outside(&v)[0].starts_with("outside calibration: k_r changed the ball"));
     let text = bl(&["drop", "--preset", "tennis", "--k-r", "20000"]).stdout;
@@ -277,28 +266,17 @@ fn a_trace_without_v0_fits_its_speed() {
     let dt = 1e-5;
     for i in 0..600 {
         let t = -5e-4 + i as f64 * dt;
-        let force = if t <= 0.0 || t >= tf {
-            0.0
-        } else {
-            let k = ((t / h.t[1]) as usize).min(h.t.len() - 2);
-            let w = (t - h.t[k]) / (h.t[k + 1] - h.t[k]);
-            h.force[k] * (1.0 - w) + h.force[k + 1] * w
-        };
+        let force = fit_common::force_at(h, tf, t);
         text.push_str(&format!("{t},{}\n", force + 0.5 * rng.normal()));
     }
     let dir = tempfile::tempdir().unwrap();
     let path = dir.path().join("trace.csv");
     std::fs::write(&path, text).unwrap();
     let p = path.to_str().unwrap();
-    let v = json(&[
-        "fit",
-        "--preset",
-        "superball",
-        "--force-time",
-        p,
-        "--format",
-        "json",
-    ]);
+    let v = json(&argv_with(
+        "fit --preset superball --force-time {} --format json",
+        &[p],
+    ));
     let inside = |name: &str, want: f64| {
         let ci = &v["fitted"][name]["ci95"];
         let (lo, hi) = (ci[0].as_f64().unwrap(), ci[1].as_f64().unwrap());
@@ -317,17 +295,10 @@ fn a_trace_without_v0_fits_its_speed() {
         "{said}"
     );
     // with --v0 the speed is held, as before
-    let v = json(&[
-        "fit",
-        "--preset",
-        "superball",
-        "--force-time",
-        p,
-        "--v0",
-        "6.24",
-        "--format",
-        "json",
-    ]);
+    let v = json(&argv_with(
+        "fit --preset superball --force-time {} --v0 6.24 --format json",
+        &[p],
+    ));
     assert!(v["fitted"]["v0"].is_null(), "{v}");
     inside_of(&v, "k_r", truth.k_r);
 }
@@ -344,9 +315,7 @@ fn json_answers_name_their_ball() {
     let cases: &[&[&str]] = &[
         &["run", "--preset", "golf", "--k-r", "5e5"],
         &["drop", "--preset", "golf", "--k-r", "5e5"],
-        &[
-            "sweep", "velocity", "--preset", "golf", "--k-r", "5e5", "--points", "2",
-        ],
+        &argv("sweep velocity --preset golf --k-r 5e5 --points 2"),
         &argv("oblique --preset golf --k-r 5e5 --angle 40 --friction 0.3"),
         &["peers", "--preset", "golf", "--k-r", "5e5"],
     ];

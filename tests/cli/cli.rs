@@ -10,24 +10,9 @@ use std::f64::consts::PI;
 #[test]
 fn run_json_has_every_key_with_the_papers_values() {
     let v = json(&["run", "--preset", "superball", "--format", "json"]);
-    for key in [
-        "cor",
-        "max_force",
-        "contact_time",
-        "max_indentation",
-        "permanent_indentation",
-        "rebound",
-        "lambda",
-        "zeta",
-        "v0",
-        "law",
-        "preset",
-        "parameters",
-        "k_p",
-        "k_r",
-        "c",
-        "energy",
-    ] {
+    let keys = "cor max_force contact_time max_indentation permanent_indentation rebound lambda \
+                zeta v0 law preset parameters k_p k_r c energy";
+    for key in argv(keys) {
         assert!(v.get(key).is_some(), "missing {key}: {v}");
     }
     assert_eq!(v["preset"], "superball");
@@ -185,9 +170,7 @@ fn fit_inverts_run_through_the_binary() {
         assert!((f(&fit, "cor") - f(&run, "cor")).abs() < 1e-10);
     }
     // the baseball's adopted K_r = 4.2e5 gives 0.4856; the measured 0.49 needs a bit more
-    let fit = json(&[
-        "fit", "--preset", "baseball", "--cor", "0.49", "--format", "json",
-    ]);
+    let fit = json(&argv("fit --preset baseball --cor 0.49 --format json"));
     assert!(f(&fit, "k_r") > 4.2e5 && f(&fit, "k_r") < 4.4e5, "{fit}");
     let text = ok(&["fit", "--preset", "baseball", "--cor", "0.49"]);
     assert!(
@@ -219,9 +202,7 @@ fn sweep_zeta_csv_header_and_rows() {
             assert!(r[2].parse::<f64>().unwrap() > 0.0 && !r[4].is_empty());
         }
     }
-    let csv = ok(&[
-        "sweep", "zeta", "--lambda", "0.4", "--from", "1", "--to", "10", "--points", "2",
-    ]);
+    let csv = ok(&argv("sweep zeta --lambda 0.4 --from 1 --to 10 --points 2"));
     assert_eq!(csv.lines().count(), 3);
     let v = json(&["sweep", "zeta", "--points", "5", "--format", "json"]);
     let rows = v["rows"].as_array().unwrap();
@@ -266,9 +247,9 @@ fn sweep_velocity_cor_drops_at_high_speed_for_the_superball() {
     );
     assert_eq!(rows[0][4], 0.0);
     assert!(rows[59][4] > 1e-4, "permanent flattening at 9.36 m/s");
-    let v = json(&[
-        "sweep", "velocity", "--from", "1", "--to", "2", "--points", "3", "--format", "json",
-    ]);
+    let v = json(&argv(
+        "sweep velocity --from 1 --to 2 --points 3 --format json",
+    ));
     assert_eq!(v["preset"], "superball");
     assert_eq!(v["rows"].as_array().unwrap().len(), 3);
 }
@@ -298,22 +279,9 @@ fn presets_lists_the_three_balls() {
         .collect();
     // the paper's three first, then the balls of the drop tests (docs/drop.md)
     assert_eq!(
-        names,
-        [
-            "superball",
-            "golf",
-            "baseball",
-            "tennis",
-            "football",
-            "basketball",
-            "table-tennis",
-            "softball",
-            "baseball-mlb",
-            "softball-44",
-            "squash",
-            "volleyball",
-            "golf-driver"
-        ]
+        names.join(" "),
+        "superball golf baseball tennis football basketball table-tennis softball baseball-mlb \
+         softball-44 squash volleyball golf-driver"
     );
     assert!((f(&v[2], "zeta") - 0.6067).abs() < 1e-3);
     // the golf ball at driver speeds lists its record's two speeds (docs/presets.md)

@@ -4,7 +4,7 @@
 
 use crate::common;
 
-use common::{argv, assert_bad, bl_at, f, json, ok_at, parse_svg};
+use common::{argv, argv_with, assert_bad, bl_at, f, json, ok_at, parse_svg};
 use serde_json::Value;
 use std::path::Path;
 
@@ -99,18 +99,10 @@ fn a_ball_is_fit_and_drop_run_on_their_own() {
     let fit: Value = serde_json::from_str(&ok_at(dir.path(), &args)).unwrap();
     assert_eq!(f(b, "k_r"), f(&fit, "k_r"), "the same fit");
     let k_r = format!("{}", f(&fit, "k_r"));
-    let drop = json(&[
-        "drop",
-        "--preset",
-        "tennis",
-        "--k-r",
-        &k_r,
-        "--standard",
-        "itf",
-        "--no-drag",
-        "--format",
-        "json",
-    ]);
+    let drop = json(&argv_with(
+        "drop --preset tennis --k-r {} --standard itf --no-drag --format json",
+        &[&k_r],
+    ));
     let v = &drop["standard"];
     // the fitted ball's value (the verdict itself is on A7's readings at 2.54 m:
     // tests/cli/cli_batch_readings.rs)
@@ -241,15 +233,10 @@ fn traces_by_file_path() {
     let r: Value = serde_json::from_str(&ok_at(dir.path(), &args)).unwrap();
     let b = &r["balls"][0];
     assert_eq!(b["data"], "force-time trace");
-    let run = json(&[
-        "run",
-        "--preset",
-        "baseball",
-        "--v0",
-        &format!("{}", 85.0 * 0.3048),
-        "--format",
-        "json",
-    ]);
+    let run = json(&argv_with(
+        "run --preset baseball --v0 {} --format json",
+        &[&format!("{}", 85.0 * 0.3048)],
+    ));
     assert!((f(b, "k_r") / 420000.0 - 1.0).abs() < 1e-4, "{b}");
     assert!((f(b, "cor") - f(&run, "cor")).abs() < 1e-4, "{b} vs {run}");
 }

@@ -51,15 +51,7 @@ fn json_holds_the_issues_keys_and_the_verdict() {
         raw.starts_with("{\"height\":1.0,\"drag\":true,\"bounces\":[{\"v_in\":"),
         "{raw}"
     );
-    let order = [
-        "v_in",
-        "v_out",
-        "cor",
-        "rebound_height",
-        "contact_time",
-        "max_force",
-        "t_start",
-    ];
+    let order = argv("v_in v_out cor rebound_height contact_time max_force t_start");
     let at: Vec<usize> = order
         .iter()
         .map(|k| raw.find(&format!("\"{k}\"")).unwrap())
@@ -245,39 +237,24 @@ fn bad_input_is_one_line_and_exit_2() {
 /// and the figures, as the paper's balls do.
 #[test]
 fn every_new_ball_runs_through_the_other_commands() {
-    for ball in [
-        "tennis",
-        "football",
-        "basketball",
-        "table-tennis",
-        "softball",
-    ] {
+    for ball in drop_test_balls() {
         let v = json(&["run", "--preset", ball, "--format", "json"]);
         assert_eq!(v["preset"], ball);
         assert!(v["rebound"].as_bool().unwrap(), "{ball}");
-        let m = json(&[
-            "run",
-            "--preset",
-            ball,
-            "--params",
-            "materials",
-            "--format",
-            "json",
-        ]);
+        let m = json(&argv_with(
+            "run --preset {} --params materials --format json",
+            &[ball],
+        ));
         assert!(f(&m, "cor") > 0.0 && f(&m, "cor") < 1.0, "{ball}");
         let sweep = ok(&["sweep", "velocity", "--preset", ball, "--points", "4"]);
         assert_eq!(sweep.lines().count(), 5, "{ball}: {sweep}");
         let dir = tempfile::tempdir().unwrap();
         for fig in ["cor-velocity", "force-time", "force-displacement"] {
             let out = dir.path().join(format!("{ball}-{fig}.svg"));
-            ok(&[
-                "figure",
-                fig,
-                "--preset",
-                ball,
-                "--out",
-                out.to_str().unwrap(),
-            ]);
+            ok(&argv_with(
+                "figure {} --preset {} --out {}",
+                &[fig, ball, out.to_str().unwrap()],
+            ));
             assert!(out.exists(), "{ball} {fig}");
         }
     }

@@ -3,8 +3,8 @@
 //! checks it (one line naming the field, exit 2); the state itself through `with_oblique`.
 
 use crate::common;
+use crate::common::embedded;
 
-use bouncelab::preset::Preset;
 use bouncelab::tui::app::{App, View};
 
 #[test]
@@ -36,10 +36,7 @@ fn bad_values_are_refused_before_the_terminal() {
 
 #[test]
 fn the_explorer_opens_on_the_oblique_view_at_those_values() {
-    let tennis = Preset::embedded_all()
-        .into_iter()
-        .find(|p| p.name == "tennis")
-        .unwrap();
+    let tennis = embedded("tennis");
     let app = App::new(tennis, false)
         .with_oblique([Some(30.0), None, Some(0.3)])
         .unwrap();

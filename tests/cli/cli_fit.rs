@@ -278,9 +278,7 @@ fn overrides_on_run_sweep_and_figure() {
         &["run", "--normalized", "--damping", "3"],
         &["--normalized", "do not apply"],
     );
-    let csv = ok(&[
-        "sweep", "velocity", "--k-r", "5e4", "--zeta", "0.3", "--points", "2",
-    ]);
+    let csv = ok(&argv("sweep velocity --k-r 5e4 --zeta 0.3 --points 2"));
     assert_eq!(csv.lines().count(), 3, "{csv}");
     let dir = tempfile::tempdir().unwrap();
     ok_at(
@@ -353,9 +351,7 @@ fn drops_weigh_by_their_reading() {
     }
     std::fs::write(dir.path().join("drops.csv"), text).unwrap();
     let run = |extra: &[&str]| {
-        let mut args = vec![
-            "fit", "--preset", "tennis", "--free", "k_r", "--format", "json",
-        ];
+        let mut args = argv("fit --preset tennis --free k_r --format json");
         args.extend_from_slice(extra);
         json_at(dir.path(), &args)
     };

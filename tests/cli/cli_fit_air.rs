@@ -5,7 +5,7 @@
 
 use crate::common;
 
-use common::{argv, bl_in, f};
+use common::{argv, argv_with, bl_in, f};
 use serde_json::Value;
 
 /// Four rebounds from the ITF's own 2.54 m (mean 1.4625 m).
@@ -19,15 +19,7 @@ fn run(dir: &std::path::Path, args: &[&str]) -> String {
 
 /// The ITF's predicted rebound of preset `name`, with `extra` arguments to `drop`.
 fn itf_rebound(dir: &std::path::Path, name: &str, extra: &[&str]) -> f64 {
-    let mut args = vec![
-        "drop",
-        "--preset",
-        name,
-        "--standard",
-        "itf",
-        "--format",
-        "json",
-    ];
+    let mut args = argv_with("drop --preset {} --standard itf --format json", &[name]);
     args.extend(extra);
     let v: Value = serde_json::from_str(&run(dir, &args)).unwrap();
     f(&v["standard"], "measured")
@@ -90,9 +82,7 @@ fn a_drop_fit_states_its_air_and_the_same_air_gives_back_the_readings() {
     // a COR has no drops, and no air
     let v: Value = serde_json::from_str(&run(
         dir.path(),
-        &[
-            "fit", "--preset", "tennis", "--cor", "0.75", "--format", "json",
-        ],
+        &argv("fit --preset tennis --cor 0.75 --format json"),
     ))
     .unwrap();
     assert!(v.get("air").is_none(), "{v}");

@@ -53,15 +53,10 @@ fn files(dir: &Path, p: &ImpactParams, q: &ImpactParams) {
 fn fit_in(dir: &Path, extra: &[&str]) -> Out {
     let cors = dir.join("cors.csv");
     let statics = dir.join("static.csv");
-    let mut args = vec![
-        "fit",
-        "--preset",
-        "tennis",
-        "--cor-table",
-        cors.to_str().unwrap(),
-        "--static",
-        statics.to_str().unwrap(),
-    ];
+    let mut args = argv_with(
+        "fit --preset tennis --cor-table {} --static {}",
+        &[cors.to_str().unwrap(), statics.to_str().unwrap()],
+    );
     args.extend(extra);
     bl_in(dir, &args)
 }
@@ -151,9 +146,7 @@ fn static_input_is_checked() {
     assert_bad(&o, &["--save", "impact speed"]);
     let o = bl_in(
         dir.path(),
-        &[
-            "fit", "--preset", "tennis", "--static", p, "--plot", "x.svg",
-        ],
+        &argv_with("fit --preset tennis --static {} --plot x.svg", &[p]),
     );
     assert_bad(&o, &["--plot"]);
     let o = bl_in(
@@ -164,9 +157,7 @@ fn static_input_is_checked() {
     // alone: K_r from the springs in series
     let o = bl_in(
         dir.path(),
-        &[
-            "fit", "--preset", "tennis", "--static", p, "--format", "json",
-        ],
+        &argv_with("fit --preset tennis --static {} --format json", &[p]),
     );
     assert_eq!(o.code, 0, "{}", o.stderr);
     let v: Value = serde_json::from_str(&o.stdout).unwrap();

@@ -5,7 +5,7 @@ use crate::common;
 use bouncelab::Ball;
 use bouncelab::model::contact::ContactLaw;
 use bouncelab::oblique::{self, Oblique, mindlin_ratio};
-use common::{assert_bad, bl, f};
+use common::{argv_with, assert_bad, bl, f};
 use serde_json::Value;
 
 /// A CSV of the tennis ball's bounces under μ and Mindlin's K_t at (v0, angle, spin), v_x,out
@@ -43,15 +43,10 @@ fn write(text: &str) -> (tempfile::TempDir, String) {
 #[test]
 fn fit_oblique_recovers_friction_with_its_interval() {
     let (_dir, path) = write(&bounces(0.55, &mixed(), 0.02));
-    let o = bl(&[
-        "fit",
-        "--preset",
-        "tennis",
-        "--oblique",
-        &path,
-        "--format",
-        "json",
-    ]);
+    let o = bl(&argv_with(
+        "fit --preset tennis --oblique {} --format json",
+        &[&path],
+    ));
     assert_eq!(o.code, 0, "{}", o.stderr);
     let v: Value = serde_json::from_str(&o.stdout).unwrap();
     assert_eq!(v["data"], "oblique bounces");
@@ -121,15 +116,10 @@ fn a_bad_file_is_one_line_exit_2() {
     );
     let (_dir, path) = write(&bounces(0.5, &mixed(), 0.0));
     assert_bad(
-        &bl(&[
-            "fit",
-            "--preset",
-            "tennis",
-            "--oblique",
-            &path,
-            "--free",
-            "k_r",
-        ]),
+        &bl(&argv_with(
+            "fit --preset tennis --oblique {} --free k_r",
+            &[&path],
+        )),
         &["--oblique", "--free"],
     );
 }
@@ -206,15 +196,10 @@ fn bounces_the_model_meets_exactly_leave_no_scatter() {
     );
     // noisy bounces keep their intervals, and no `exact` key
     let (_dir, path) = write(&bounces(0.55, &mixed(), 0.02));
-    let o = bl(&[
-        "fit",
-        "--preset",
-        "tennis",
-        "--oblique",
-        &path,
-        "--format",
-        "json",
-    ]);
+    let o = bl(&argv_with(
+        "fit --preset tennis --oblique {} --format json",
+        &[&path],
+    ));
     let v: Value = serde_json::from_str(&o.stdout).unwrap();
     assert!(v.get("exact").is_none(), "{v}");
     assert!(f(&v["fitted"]["friction"], "std_error") > 0.0, "{v}");

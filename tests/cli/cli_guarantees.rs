@@ -221,9 +221,10 @@ fn work_beyond_the_limit_is_refused_before_it_starts() {
     let many: Vec<String> = (0..500).map(|i| format!("{}", i as f64 / 100.0)).collect();
     let many = many.join(",");
     for args in [
-        &[
-            "figure", "cor-zeta", "--points", "20000", "--lambda", &many, "--out", "a.svg",
-        ][..],
+        &argv_with(
+            "figure cor-zeta --points 20000 --lambda {} --out a.svg",
+            &[&many],
+        )[..],
         &argv("figure force-zeta --points 20000 --law hertz --out a.svg")[..],
         &["sweep", "zeta", "--points", "10000", "--law", "hertz"][..],
         &argv("sweep velocity --points 100000 --law elastic-plastic")[..],

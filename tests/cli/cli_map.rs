@@ -4,7 +4,7 @@
 
 use crate::common;
 
-use common::{argv, bad, bl, bl_at, json, ok, parse_svg};
+use common::{argv, argv_with, bad, bl, bl_at, json, ok, parse_svg};
 
 /// (λ, ζ, cor, force, time) of each CSV row.
 fn rows(csv: &str) -> Vec<Vec<String>> {
@@ -16,9 +16,9 @@ fn rows(csv: &str) -> Vec<Vec<String>> {
 
 #[test]
 fn csv_cells_are_what_run_prints() {
-    let o = bl(&[
-        "map", "--preset", "golf", "--v0", "30", "--lambda", "0.2:5:3", "--zeta", "0.05:2:2",
-    ]);
+    let o = bl(&argv(
+        "map --preset golf --v0 30 --lambda 0.2:5:3 --zeta 0.05:2:2",
+    ));
     // golf's record is 1.47 m/s: the grid at 30 m/s says so once, on stderr (issue 52)
     assert_eq!(o.code, 0, "{}", o.stderr);
     assert_eq!(o.stderr.lines().count(), 1, "{}", o.stderr);
@@ -36,10 +36,10 @@ fn csv_cells_are_what_run_prints() {
     let cells = rows(&csv);
     assert_eq!(cells.len(), 6);
     for r in &cells {
-        let v = json(&[
-            "run", "--preset", "golf", "--v0", "30", "--lambda", &r[0], "--zeta", &r[1],
-            "--format", "json",
-        ]);
+        let v = json(&argv_with(
+            "run --preset golf --v0 30 --lambda {} --zeta {} --format json",
+            &[&r[0], &r[1]],
+        ));
         for (k, key) in [(2, "cor"), (3, "max_force"), (4, "contact_time")] {
             let want = v[key].as_f64().unwrap();
             let got: f64 = r[k].parse().unwrap();
@@ -187,21 +187,15 @@ fn bad_input_is_exit_2_naming_the_flag() {
         &["--normalized"],
     );
     bad(
-        &[
-            "map", "--zp-bar", "0.5", "--lambda", "1:2:2", "--zeta", "1:2:2",
-        ],
+        &argv("map --zp-bar 0.5 --lambda 1:2:2 --zeta 1:2:2"),
         &["--normalized"],
     );
     bad(
-        &[
-            "map", "--preset", "golf", "--v0", "-3", "--lambda", "1:2:2", "--zeta", "1:2:2",
-        ],
+        &argv("map --preset golf --v0 -3 --lambda 1:2:2 --zeta 1:2:2"),
         &["v0"],
     );
     bad(
-        &[
-            "map", "--preset", "nope", "--lambda", "1:2:2", "--zeta", "1:2:2",
-        ],
+        &argv("map --preset nope --lambda 1:2:2 --zeta 1:2:2"),
         &["nope"],
     );
     bad(&["map", "--lambda", "1:2:2"], &["--zeta"]);
@@ -233,9 +227,7 @@ fn a_target_no_impact_meets_is_refused() {
 /// a map with a feasible cell says nothing.
 #[test]
 fn targets_no_cell_meets_are_warned_of() {
-    let grid = [
-        "map", "--preset", "tennis", "--lambda", "0.1:10:6", "--zeta", "0.01:1:5",
-    ];
+    let grid = argv("map --preset tennis --lambda 0.1:10:6 --zeta 0.01:1:5");
     let unmet = [&grid[..], &["--where", "cor>=0.96,max_force<=250"]].concat();
     let o = bl(&unmet);
     assert_eq!(o.code, 0, "{}", o.stderr);

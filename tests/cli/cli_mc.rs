@@ -3,7 +3,7 @@
 
 use crate::common;
 
-use common::{argv, assert_bad, bl, bl_at, f, json, ok, ok_at, parse_svg};
+use common::{argv, argv_with, assert_bad, bl, bl_at, f, json, ok, ok_at, parse_svg};
 use serde_json::Value;
 use std::process::Command;
 
@@ -88,19 +88,10 @@ fn a_sample_is_the_impact_run_gives_for_its_parameters() {
     ok_at(dir.path(), &args);
     let csv = std::fs::read_to_string(dir.path().join("s.csv")).unwrap();
     let row: Vec<&str> = csv.lines().nth(3).unwrap().split(',').collect();
-    let r = json(&[
-        "run",
-        "--preset",
-        "golf",
-        "--k-p",
-        row[1],
-        "--damping",
-        row[2],
-        "--k-r",
-        row[3],
-        "--format",
-        "json",
-    ]);
+    let r = json(&argv_with(
+        "run --preset golf --k-p {} --damping {} --k-r {} --format json",
+        &[row[1], row[2], row[3]],
+    ));
     let cor: f64 = row[4].parse().unwrap();
     let force: f64 = row[5].parse().unwrap();
     assert!(

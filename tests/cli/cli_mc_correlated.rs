@@ -4,7 +4,7 @@
 
 use crate::common;
 
-use common::{argv, assert_bad, bl_at, ok_at};
+use common::{argv, argv_with, assert_bad, bl_at, ok_at};
 
 /// The columns of `--csv-out` named `names`, as numbers.
 fn columns(csv: &str, names: &[&str]) -> Vec<Vec<f64>> {
@@ -76,15 +76,10 @@ fn correlations_that_cannot_be_are_refused() {
     let run = |c: &str| {
         bl_at(
             dir.path(),
-            &[
-                "mc",
-                "--preset",
-                "golf",
-                "--vary",
-                "k_p=5%,c=5%,k_r=5%",
-                "--correlate",
-                c,
-            ],
+            &argv_with(
+                "mc --preset golf --vary k_p=5%,c=5%,k_r=5% --correlate {}",
+                &[c],
+            ),
         )
     };
     assert_bad(
@@ -163,9 +158,7 @@ fn a_fitted_preset_is_sampled_from_its_covariance() {
     // what does not go with a fit's covariance
     let o = bl_at(
         dir.path(),
-        &[
-            "mc", "--preset", "gfit", "--vary", "fit", "--dist", "uniform",
-        ],
+        &argv("mc --preset gfit --vary fit --dist uniform"),
     );
     assert_bad(&o, &["invalid vary fit: --dist does not go with it"]);
     let o = bl_at(dir.path(), &["mc", "--preset", "golf", "--vary", "fit"]);

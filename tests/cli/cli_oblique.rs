@@ -9,27 +9,10 @@ fn oblique_json_has_the_issues_keys() {
     let v = json(&argv(
         "oblique --preset tennis --v0 25 --angle 16 --spin 300 --friction 0.6 --format json",
     ));
-    for key in [
-        "v_in",
-        "angle_in_deg",
-        "spin_in",
-        "vx_in",
-        "vy_in",
-        "v_out",
-        "angle_out_deg",
-        "spin_out",
-        "vx_out",
-        "vy_out",
-        "cor_normal",
-        "cor_tangential",
-        "apparent_friction",
-        "slid_throughout",
-        "grip_time",
-        "contact_time",
-        "max_normal_force",
-        "max_friction_force",
-        "energy",
-    ] {
+    let keys = "v_in angle_in_deg spin_in vx_in vy_in v_out angle_out_deg spin_out vx_out vy_out \
+                cor_normal cor_tangential apparent_friction slid_throughout grip_time contact_time \
+                max_normal_force max_friction_force energy";
+    for key in argv(keys) {
         assert!(v.get(key).is_some(), "{key} missing: {v}");
     }
     assert!((f(&v, "v_in") - 25.0).abs() < 1e-12);
@@ -138,40 +121,18 @@ fn bad_input_is_one_line_exit_2() {
 #[test]
 fn every_law_answers_and_angle_90_is_runs_cor() {
     for law in ["linear", "hertz", "elastic-plastic"] {
-        let o = json(&[
-            "oblique",
-            "--preset",
-            "tennis",
-            "--angle",
-            "90",
-            "--friction",
-            "0.5",
-            "--law",
-            law,
-            "--format",
-            "json",
-        ]);
-        let r = json(&[
-            "run", "--preset", "tennis", "--law", law, "--format", "json",
-        ]);
+        let o = json(&argv(&format!(
+            "oblique --preset tennis --angle 90 --friction 0.5 --law {law} --format json"
+        )));
+        let r = json(&argv(&format!(
+            "run --preset tennis --law {law} --format json"
+        )));
         assert_eq!(o["law"], law);
         assert!((f(&o, "cor_normal") - f(&r, "cor")).abs() <= 1e-12, "{law}");
         assert!(f(&o, "vx_out").abs() <= 1e-12 && f(&o, "spin_out").abs() <= 1e-12);
-        let oblique = json(&[
-            "oblique",
-            "--preset",
-            "tennis",
-            "--angle",
-            "30",
-            "--spin",
-            "-200",
-            "--friction",
-            "0.5",
-            "--law",
-            law,
-            "--format",
-            "json",
-        ]);
+        let oblique = json(&argv(&format!(
+            "oblique --preset tennis --angle 30 --spin -200 --friction 0.5 --law {law} --format json"
+        )));
         // backspin: the contact point slides forward and friction slows the ball
         assert!(f(&oblique, "vx_out") < f(&oblique, "vx_in"), "{law}");
     }

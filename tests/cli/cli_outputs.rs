@@ -9,7 +9,7 @@ use crate::common;
 use common::*;
 use std::fs;
 use std::path::Path;
-use std::process::{Command, Stdio};
+use std::process::Stdio;
 
 const COR: &str = "v0,cor\n2,0.8\n4,0.75\n6,0.7\n";
 
@@ -19,12 +19,7 @@ fn to_full_stdout(dir: &Path, args: &[&str]) -> (i32, String) {
         .write(true)
         .open("/dev/full")
         .unwrap();
-    let o = Command::new(env!("CARGO_BIN_EXE_bouncelab"))
-        .args(args)
-        .current_dir(dir)
-        .env("XDG_CONFIG_HOME", dir)
-        .env("HOME", dir)
-        .stdin(Stdio::null())
+    let o = command_in(dir, args)
         .stdout(Stdio::from(full))
         .stderr(Stdio::piped())
         .output()
@@ -115,9 +110,7 @@ fn map_checks_its_target_as_figure_does() {
     let map = |out: &str| {
         bl_at(
             d,
-            &[
-                "map", "--lambda", "0.1:10:4", "--zeta", "0.1:10:4", "--out", out,
-            ],
+            &argv_with("map --lambda 0.1:10:4 --zeta 0.1:10:4 --out {}", &[out]),
         )
     };
     let figure = |out: &str| bl_at(d, &["figure", "force-time", "--out", out]);
@@ -168,11 +161,7 @@ fn save_race(dir: &Path, name: &str, force: bool) -> Vec<(i32, String)> {
         .map(|_| {
             let mut args = vec!["fit", "--cor", "0.8", "--save", name];
             args.extend(force.then_some("--force"));
-            Command::new(env!("CARGO_BIN_EXE_bouncelab"))
-                .args(&args)
-                .env("XDG_CONFIG_HOME", dir)
-                .env("HOME", dir)
-                .stdin(Stdio::null())
+            command(dir, &args)
                 .stdout(Stdio::null())
                 .stderr(Stdio::piped())
                 .spawn()
@@ -226,11 +215,7 @@ fn a_closed_stdout_still_publishes() {
     ] {
         let (reader, writer) = std::io::pipe().unwrap();
         drop(reader);
-        let o = Command::new(env!("CARGO_BIN_EXE_bouncelab"))
-            .args(args)
-            .current_dir(d.path())
-            .env("XDG_CONFIG_HOME", d.path())
-            .stdin(Stdio::null())
+        let o = command_in(d.path(), args)
             .stdout(Stdio::from(writer))
             .stderr(Stdio::piped())
             .output()

@@ -40,15 +40,7 @@ fn json_lists_every_model_and_rule() {
             .any(|r| r["model"] == "kelvin-voigt" && r["rule"] == "log-decrement")
     );
     for r in rows {
-        for key in [
-            "model",
-            "rule",
-            "stiffness",
-            "damping",
-            "cor",
-            "max_force",
-            "contact_time",
-        ] {
+        for key in argv("model rule stiffness damping cor max_force contact_time") {
             assert!(!r[key].is_null(), "{key} in {r}");
         }
     }
@@ -138,9 +130,7 @@ fn bad_input_is_one_line_and_exit_2() {
     );
     assert_bad(&bl(&["peers", "--preset", "golf", "--v0", "-3"]), &["v0"]);
     assert_bad(
-        &bl(&[
-            "peers", "--preset", "golf", "--cor", "0", "--format", "json",
-        ]),
+        &bl(&argv("peers --preset golf --cor 0 --format json")),
         &["cor", "out of reach"],
     );
     assert_bad(&bl(&["peers", "--preset", "nosuchball"]), &["nosuchball"]);

@@ -9,15 +9,7 @@ use common::*;
 use serde_json::Value;
 
 fn export(extra: &[&str]) -> Value {
-    let mut args = vec![
-        "peers",
-        "--preset",
-        "tennis",
-        "--target",
-        "christoforou-yigit",
-        "--export",
-        "json",
-    ];
+    let mut args = argv("peers --preset tennis --target christoforou-yigit --export json");
     args.extend(extra);
     let o = bl(&args);
     assert_eq!(o.code, 0, "{}", o.stderr);
@@ -30,33 +22,17 @@ fn close(a: f64, b: f64, rel: f64) {
 
 #[test]
 fn an_oblique_export_is_calibrated_at_the_normal_speed() {
-    let v = export(&[
-        "--v0",
-        "30",
-        "--angle",
-        "16",
-        "--spin",
-        "50",
-        "--friction",
-        "0.6",
-    ]);
+    let v = export(&argv("--v0 30 --angle 16 --spin 50 --friction 0.6"));
     let vn = 30.0 * 16f64.to_radians().sin();
     close(f(&v, "v0"), vn, 1e-15);
     // the target: the Christoforou–Yigit COR at v·sinθ, not at v
-    let run = bl(&[
-        "run",
-        "--preset",
-        "tennis",
-        "--v0",
-        &vn.to_string(),
-        "--format",
-        "json",
-    ]);
+    let run = bl(&argv_with(
+        "run --preset tennis --v0 {} --format json",
+        &[&vn.to_string()],
+    ));
     let run: Value = serde_json::from_str(&run.stdout).unwrap();
     close(f(&v, "target_cor"), f(&run, "cor"), 1e-12);
-    let at_v = bl(&[
-        "run", "--preset", "tennis", "--v0", "30", "--format", "json",
-    ]);
+    let at_v = bl(&argv("run --preset tennis --v0 30 --format json"));
     let at_v: Value = serde_json::from_str(&at_v.stdout).unwrap();
     assert!((f(&v, "target_cor") - f(&at_v, "cor")).abs() > 0.01, "{v}");
     let case = &v["case"];
@@ -70,21 +46,9 @@ fn an_oblique_export_is_calibrated_at_the_normal_speed() {
     );
     // bouncelab's own answer at the code's κ: `oblique`'s for the same bounce
     let ob = |kappa: Option<&str>| -> Value {
-        let mut args = vec![
-            "oblique",
-            "--preset",
-            "tennis",
-            "--v0",
-            "30",
-            "--angle",
-            "16",
-            "--spin",
-            "50",
-            "--friction",
-            "0.6",
-            "--format",
-            "json",
-        ];
+        let mut args = argv(
+            "oblique --preset tennis --v0 30 --angle 16 --spin 50 --friction 0.6 --format json",
+        );
         if let Some(k) = kappa {
             args.extend(["--inertia-factor", k]);
         }
@@ -107,9 +71,10 @@ fn v_ball() -> Value {
 #[test]
 fn every_snippet_states_the_case_and_the_codes_kappa() {
     for code in ["lammps", "liggghts", "chrono", "yade", "mujoco"] {
-        let o = bl(&[
-            "peers", "--preset", "tennis", "--export", code, "--v0", "30", "--angle", "16",
-        ]);
+        let o = bl(&argv_with(
+            "peers --preset tennis --export {} --v0 30 --angle 16",
+            &[code],
+        ));
         assert_eq!(o.code, 0, "{code}: {}", o.stderr);
         let s = &o.stdout;
         assert!(s.contains("the normal speed v·sinθ = 8.269"), "{code}: {s}");
@@ -133,32 +98,24 @@ fn every_snippet_states_the_case_and_the_codes_kappa() {
 
 #[test]
 fn a_pair_export_says_its_closing_speed() {
-    let o = bl(&[
-        "peers", "--preset", "tennis", "--pair", "tennis", "--v0", "30", "--export", "json",
-    ]);
+    let o = bl(&argv(
+        "peers --preset tennis --pair tennis --v0 30 --export json",
+    ));
     assert_eq!(o.code, 0, "{}", o.stderr);
     let v: Value = serde_json::from_str(&o.stdout).unwrap();
     let case = &v["case"];
     assert_eq!(case["pair"], "tennis");
     assert_eq!(f(case, "speed"), 30.0);
     // the pair's COR at its closing speed: `collide --target-preset`'s
-    let c = bl(&[
-        "collide",
-        "--preset",
-        "tennis",
-        "--target-preset",
-        "tennis",
-        "--v0",
-        "30",
-        "--format",
-        "json",
-    ]);
+    let c = bl(&argv(
+        "collide --preset tennis --target-preset tennis --v0 30 --format json",
+    ));
     let c: Value = serde_json::from_str(&c.stdout).unwrap();
     close(f(&v, "target_cor"), f(&c, "cor"), 1e-12);
     close(f(&case["answer"], "vy_out"), 30.0 * f(&c, "cor"), 1e-12);
-    let o = bl(&[
-        "peers", "--preset", "tennis", "--pair", "tennis", "--v0", "30", "--export", "lammps",
-    ]);
+    let o = bl(&argv(
+        "peers --preset tennis --pair tennis --v0 30 --export lammps",
+    ));
     assert!(
         o.stdout.contains("the pair's closing speed at v = 30 m/s"),
         "{}",
@@ -170,9 +127,7 @@ fn a_pair_export_says_its_closing_speed() {
         o.stderr
     );
     // without --v0 the pair export holds at the preset's speed, and says so on stderr
-    let o = bl(&[
-        "peers", "--preset", "tennis", "--pair", "tennis", "--export", "lammps",
-    ]);
+    let o = bl(&argv("peers --preset tennis --pair tennis --export lammps"));
     assert_eq!(o.code, 0, "{}", o.stderr);
     assert!(
         o.stderr
@@ -189,21 +144,15 @@ fn the_case_is_checked() {
         &["--export"],
     );
     bad(
-        &[
-            "peers", "--preset", "tennis", "--export", "lammps", "--angle", "0",
-        ],
+        &argv("peers --preset tennis --export lammps --angle 0"),
         &["invalid angle"],
     );
     bad(
-        &[
-            "peers", "--preset", "tennis", "--export", "lammps", "--angle", "91",
-        ],
+        &argv("peers --preset tennis --export lammps --angle 91"),
         &["invalid angle"],
     );
     bad(
-        &[
-            "peers", "--preset", "tennis", "--export", "lammps", "--spin", "10",
-        ],
+        &argv("peers --preset tennis --export lammps --spin 10"),
         &["--spin needs --angle"],
     );
 }

@@ -63,12 +63,7 @@ fn duplicate_preset_names_are_errors_naming_both() {
     let o = bl_in(home.path(), &["presets"]);
     assert_bad(
         &o,
-        &[
-            "duplicate",
-            "'superball'",
-            "mine.toml",
-            "embedded:superball",
-        ],
+        &argv("duplicate 'superball' mine.toml embedded:superball"),
     );
     let home = config_home(&[
         ("a.toml", &renamed("twin", "1e4")),

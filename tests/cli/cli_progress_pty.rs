@@ -2,6 +2,7 @@
 //! (SIGINT) or SIGTERM ends the command with exit 130 before any file is written.
 #![cfg(unix)]
 
+use crate::common::argv;
 use crate::pty;
 
 use pty::Explorer;
@@ -11,18 +12,7 @@ use rustix::process::Signal;
 fn long_work_shows_progress_and_a_signal_stops_it_writing_nothing() {
     for sig in [Signal::INT, Signal::TERM] {
         let home = tempfile::tempdir().unwrap();
-        let out = home.path().join("slow.svg");
-        let args = [
-            "figure",
-            "cor-zeta",
-            "--law",
-            "hertz",
-            "--points",
-            "2000",
-            "--out",
-            out.to_str().unwrap(),
-        ];
-        let mut x = Explorer::spawn(home.path(), None, &args);
+        let (mut x, _) = pty::slow_figure(home.path(), 2000);
         x.wait_for("/6000 impacts"); // the bar
         x.signal(sig);
         stopped_writing_nothing(x, home.path(), &format!("{sig:?}"));
@@ -81,17 +71,8 @@ fn a_dense_trace_fit_shows_progress_and_a_signal_stops_it_writing_nothing() {
     for sig in [Signal::INT, Signal::TERM] {
         let home = tempfile::tempdir().unwrap();
         let plot = home.path().join("fit.svg");
-        let args = [
-            "fit",
-            "--preset",
-            "tennis",
-            "--force-time",
-            trace.to_str().unwrap(),
-            "--free",
-            "k_p,c,k_r,v0",
-            "--plot",
-            plot.to_str().unwrap(),
-        ];
+        let mut args = argv("fit --preset tennis --free k_p,c,k_r,v0 --force-time");
+        args.extend([trace.to_str().unwrap(), "--plot", plot.to_str().unwrap()]);
         // each model run slowed to 20 ms: the fit is still running when the signal comes
         let mut x = Explorer::spawn(home.path(), Some("slow-work"), &args);
         // the counter, after the 999 999 rows are read: about 25 s in a debug build at a load
@@ -107,18 +88,9 @@ fn a_signal_mid_write_leaves_no_temporary_file() {
     for sig in [Signal::INT, Signal::TERM] {
         let home = tempfile::tempdir().unwrap();
         let out = home.path().join("m.svg");
-        let args = [
-            "map",
-            "--normalized",
-            "--lambda",
-            "0.1:10:40",
-            "--zeta",
-            "0.1:10:40",
-            "--format",
-            "svg",
-            "--out",
-            out.to_str().unwrap(),
-        ];
+        let mut args =
+            argv("map --normalized --lambda 0.1:10:40 --zeta 0.1:10:40 --format svg --out");
+        args.push(out.to_str().unwrap());
         // the write stops halfway (30 s) with its temporary file on disk
         let mut x = Explorer::spawn(home.path(), Some("pause-mid-save"), &args);
         let dir = home.path().to_path_buf();
@@ -144,31 +116,14 @@ fn cor_table_and_drop_test_fits_stop_on_a_signal_writing_nothing() {
         text.push_str(&format!("{v0},{}\n", 0.85 - 0.005 * v0));
     }
     std::fs::write(&table, text).unwrap();
-    let drops = [
-        "--drop-height",
-        "1",
-        "--rebound-height",
-        "0.7",
-        "--drop-height",
-        "2",
-        "--rebound-height",
-        "1.3",
-        "--drop-height",
-        "3",
-        "--rebound-height",
-        "1.8",
-    ];
-    let cases: [Vec<&str>; 2] = [vec!["--cor-table", table.to_str().unwrap()], drops.to_vec()];
+    let drops = "--drop-height 1 --rebound-height 0.7 --drop-height 2 --rebound-height 1.3 \
+                 --drop-height 3 --rebound-height 1.8";
+    let cases: [Vec<&str>; 2] = [vec!["--cor-table", table.to_str().unwrap()], argv(drops)];
     for (case, sig) in cases.iter().zip([Signal::INT, Signal::TERM]) {
         let home = tempfile::tempdir().unwrap();
         let plot = home.path().join("fit.svg");
-        let mut args = vec![
-            "fit",
-            "--preset",
-            "tennis",
-            "--plot",
-            plot.to_str().unwrap(),
-        ];
+        let mut args = argv("fit --preset tennis --plot");
+        args.push(plot.to_str().unwrap());
         args.extend(case.iter().copied());
         // each look of the watch slowed to 20 ms: the fit is still running at the signal
         let mut x = Explorer::spawn(home.path(), Some("slow-work"), &args);
@@ -183,17 +138,7 @@ fn a_drop_stops_on_a_signal_printing_nothing() {
     // `drop` looks at the watch before every bounce, as do the drops of a fitted preset's
     // intervals (issue 28): a signal stops it before its table is printed
     let home = tempfile::tempdir().unwrap();
-    let args = [
-        "drop",
-        "--preset",
-        "superball",
-        "--law",
-        "hertz",
-        "--bounces",
-        "1000",
-        "--min-rebound",
-        "1e-9",
-    ];
+    let args = argv("drop --preset superball --law hertz --bounces 1000 --min-rebound 1e-9");
     // 593 bounces, each slowed to 20 ms: the drop is still running at the signal
     let mut x = Explorer::spawn(home.path(), Some("slow-work"), &args);
     x.wait_for("bounces,"); // the counter
@@ -208,26 +153,10 @@ fn a_shot_monte_carlo_shows_progress_and_a_signal_stops_it() {
     // them (issue 57 item 5): 2·10⁶ shots are still running at the signal
     for sig in [Signal::INT, Signal::TERM] {
         let home = tempfile::tempdir().unwrap();
-        let args = [
-            "mc",
-            "--shot",
-            "--preset",
-            "tennis",
-            "--height",
-            "2.8",
-            "--speed",
-            "50",
-            "--elevation",
-            "-6",
-            "--spin",
-            "200",
-            "--friction",
-            "0.6",
-            "--vary",
-            "speed=2%,spin=30",
-            "--samples",
-            "2000000",
-        ];
+        let args = argv(
+            "mc --shot --preset tennis --height 2.8 --speed 50 --elevation -6 --spin 200 \
+             --friction 0.6 --vary speed=2%,spin=30 --samples 2000000",
+        );
         let mut x = Explorer::spawn(home.path(), None, &args);
         x.wait_for("/2000000 shots"); // the bar
         let sent = std::time::Instant::now();

@@ -5,7 +5,7 @@
 use crate::common;
 
 use bouncelab::{ContactLaw, ImpactParams, SolveOptions, simulate};
-use common::{argv, bad, f, json, ok, ok_calibrated};
+use common::{argv, argv_with, bad, f, json, ok, ok_calibrated};
 
 /// The superball's adopted set (docs/model.md §7) at another mass, run by the library directly.
 fn superball_at(mass: f64) -> ImpactParams {
@@ -72,16 +72,15 @@ fn radius_moves_only_what_reads_it() {
 #[test]
 fn drop_and_peers_take_the_radius() {
     let drop = |r: &str| {
-        let v = json(&[
-            "drop", "--preset", "tennis", "--radius", r, "--format", "json",
-        ]);
+        let v = json(&argv_with(
+            "drop --preset tennis --radius {} --format json",
+            &[r],
+        ));
         f(&v["bounces"][0], "v_in")
     };
     // a bigger ball meets more air on the way down
     assert!(drop("0.05") < drop("0.03"));
-    let s = ok_calibrated(&[
-        "peers", "--preset", "golf", "--radius", "0.03", "--export", "mujoco",
-    ]);
+    let s = ok_calibrated(&argv("peers --preset golf --radius 0.03 --export mujoco"));
     assert!(
         s.contains("R = 0.03 m") && s.contains("size=\"0.03\""),
         "{s}"
@@ -106,16 +105,10 @@ fn every_ball_command_takes_them() {
     let dir = tempfile::tempdir().unwrap();
     let out = dir.path().join("f.svg");
     let out = out.to_str().unwrap();
-    ok(&[
-        "figure",
-        "cor-velocity",
-        "--mass",
-        "0.04",
-        "--radius",
-        "0.022",
-        "--out",
-        out,
-    ]);
+    ok(&argv_with(
+        "figure cor-velocity --mass 0.04 --radius 0.022 --out {}",
+        &[out],
+    ));
 }
 
 #[test]

@@ -12,15 +12,10 @@ use common::*;
 #[test]
 fn map_reaches_the_end_of_its_zeta_axis() {
     for preset in ["golf", "superball", "tennis", "baseball"] {
-        let o = bl(&[
-            "map",
-            "--preset",
-            preset,
-            "--lambda",
-            "0.1:1e6:3",
-            "--zeta",
-            "1:1e6:5",
-        ]);
+        let o = bl(&argv_with(
+            "map --preset {} --lambda 0.1:1e6:3 --zeta 1:1e6:5",
+            &[preset],
+        ));
         assert_eq!(o.code, 0, "{preset}: {}", o.stderr);
         for line in o.stderr.lines() {
             let centre = "bouncelab: warning: peak displacement of the ball's centre exceeds";

@@ -16,9 +16,10 @@ fn close(a: f64, b: f64, rel: f64) {
 #[test]
 fn linear_forward_is_the_two_springs_in_series_at_both_plates() {
     for preset in ["tennis", "superball", "baseball", "softball"] {
-        let v = json(&[
-            "static", "--preset", preset, "--load", "8.165", "--format", "json",
-        ]);
+        let v = json(&argv_with(
+            "static --preset {} --load 8.165 --format json",
+            &[preset],
+        ));
         let b = &v["ball"];
         let (k_p, k_r) = (f(b, "k_p"), f(b, "k_r"));
         let force = 8.165 * G;
@@ -60,9 +61,10 @@ fn hertz_has_no_return_and_says_why() {
 fn no_recoil_spring_gives_no_static_answer() {
     // a user preset with K_r = 0 (the command line's --k-r refuses 0 on a preset)
     let (_dir, path) = file_with(renamed("maxwell", "0.0").as_bytes());
-    let v = json(&[
-        "static", "--config", &path, "--load", "1", "--format", "json",
-    ]);
+    let v = json(&argv_with(
+        "static --config {} --load 1 --format json",
+        &[&path],
+    ));
     assert!(v["forward"]["deflection_m"].is_null());
     assert!(v["return"]["deflection_m"].is_null());
     assert!(v["forward"]["reason"].as_str().unwrap().contains("K_r = 0"));
@@ -72,18 +74,16 @@ fn no_recoil_spring_gives_no_static_answer() {
 
 #[test]
 fn an_override_is_listed_and_warned() {
-    let v = json(&[
-        "static", "--preset", "tennis", "--k-p", "5e4", "--load", "1", "--format", "json",
-    ]);
+    let v = json(&argv(
+        "static --preset tennis --k-p 5e4 --load 1 --format json",
+    ));
     assert_eq!(v["ball"]["overrides"][0], "k_p");
     let w = v["warnings"][0].as_str().unwrap();
     assert!(
         w.starts_with("outside calibration: k_p changed the ball"),
         "{w}"
     );
-    let text = ok(&[
-        "static", "--preset", "tennis", "--k-p", "5e4", "--load", "1",
-    ]);
+    let text = ok(&argv("static --preset tennis --k-p 5e4 --load 1"));
     assert!(
         text.contains("overrides: k_p; kept from the preset"),
         "{text}"
@@ -110,9 +110,7 @@ fn bad_input_is_one_line_and_exit_2() {
         &["invalid load"],
     );
     bad(
-        &[
-            "static", "--preset", "tennis", "--load", "1", "--peak", "0.07",
-        ],
+        &argv("static --preset tennis --load 1 --peak 0.07"),
         &["invalid peak", "diameter"],
     );
     bad(&["static", "--preset", "tennis"], &["--load"]);

@@ -5,7 +5,7 @@
 use crate::common;
 use bouncelab::Ball;
 use bouncelab::api::ObliqueSpec;
-use common::{argv, bad, bl, f, file_with, json, ok};
+use common::{argv, argv_with, bad, bl, f, file_with, json, ok};
 
 const OBLIQUE: [&str; 11] = [
     "oblique",
@@ -130,39 +130,20 @@ fn fit_oblique_fits_c_t_from_a_start() {
     let mut csv = String::from("v0,angle_deg,spin_in,vx_out,vy_out\n");
     for angle in ["8", "12", "16", "25", "35", "45", "55", "65", "75"] {
         for spin in ["-200", "0", "250"] {
-            let v = json(&[
-                "oblique",
-                "--preset",
-                "tennis",
-                "--v0",
-                "20",
-                "--angle",
-                angle,
-                "--spin",
-                spin,
-                "--friction",
-                "0.45",
-                "--tangential-damping",
-                "12",
-                "--format",
-                "json",
-            ]);
+            let v = json(&argv_with(
+                "oblique --preset tennis --v0 20 --angle {} --spin {} --friction 0.45 \
+                 --tangential-damping 12 --format json",
+                &[angle, spin],
+            ));
             let (vx, vy) = (f(&v, "vx_out"), f(&v, "vy_out"));
             csv.push_str(&format!("20,{angle},{spin},{vx:.6},{vy}\n"));
         }
     }
     let (_dir, path) = file_with(csv.as_bytes());
-    let v = json(&[
-        "fit",
-        "--preset",
-        "tennis",
-        "--oblique",
-        &path,
-        "--tangential-damping",
-        "4",
-        "--format",
-        "json",
-    ]);
+    let v = json(&argv_with(
+        "fit --preset tennis --oblique {} --tangential-damping 4 --format json",
+        &[&path],
+    ));
     let c = f(&v, "tangential_damping");
     assert!((c - 12.0).abs() < 1e-3 * 12.0, "{c}");
     assert!((f(&v, "friction") - 0.45).abs() < 1e-4);

@@ -4,7 +4,7 @@
 //! tennis at ±10 m/s gave e 0.7047, the impact of m/2 at 20 m/s, where the wall's is 0.7219.
 
 use crate::common;
-use common::{argv, f, json};
+use common::{argv, argv_with, f, json};
 
 /// `collide --preset P --target-preset P` at ±v against `run --preset P --v0 v`, on each law:
 /// e, F_m, t_f, z_m and z_f, and each ball leaving at e·v, to 1e-9 relative.
@@ -18,14 +18,10 @@ fn identical_balls_head_on_at_the_cli_are_the_wall_impact() {
                 &[
                     &["collide"][..],
                     &base,
-                    &[
-                        "--target-preset",
-                        name,
-                        "--target-speed",
-                        v,
-                        "--format",
-                        "json",
-                    ],
+                    &argv_with(
+                        "--target-preset {} --target-speed {} --format json",
+                        &[name, v],
+                    ),
                 ]
                 .concat(),
             );

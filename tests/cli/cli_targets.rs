@@ -3,7 +3,7 @@
 //! docs/targets.md §3, bad input is one line naming the field, exit 2.
 
 use crate::common;
-use common::{argv, bad, f, json, ok};
+use common::{argv, argv_with, bad, f, json, ok};
 
 /// M = ∞, v_t = 0, no K_s: `collide` is today's `run`, for every law.
 #[test]
@@ -13,9 +13,10 @@ fn collide_on_the_wall_is_run() {
         ("golf", "elastic-plastic", "6"),
         ("baseball", "hertz", "2"),
     ] {
-        let common = [
-            "--preset", preset, "--law", law, "--v0", v0, "--format", "json",
-        ];
+        let common = argv_with(
+            "--preset {} --law {} --v0 {} --format json",
+            &[preset, law, v0],
+        );
         let run = json(&[&["run"][..], &common].concat());
         let c = json(&[&["collide", "--target-mass", "inf"][..], &common].concat());
         for key in ["cor", "max_force", "contact_time", "max_indentation"] {
@@ -217,9 +218,7 @@ fn bat_errors_name_its_flags() {
 /// --target-preset` (m_eff, R_eff, the partner at rest), and its COR as the target.
 #[test]
 fn peers_pair_calibrates_for_the_pair() {
-    let p = json(&[
-        "peers", "--preset", "golf", "--pair", "tennis", "--format", "json",
-    ]);
+    let p = json(&argv("peers --preset golf --pair tennis --format json"));
     let c = json(&argv(
         "collide --preset golf --target-preset tennis --format json",
     ));
@@ -249,22 +248,22 @@ fn peers_pair_calibrates_for_the_pair() {
 #[test]
 fn peers_target_preset_is_the_pair() {
     for format in ["json", "text", "csv"] {
-        let by_pair = ok(&[
-            "peers", "--preset", "golf", "--pair", "tennis", "--format", format,
-        ]);
-        let by_target = ok(&[
-            "peers", "--preset", "golf", "--target", "tennis", "--format", format,
-        ]);
+        let by_pair = ok(&argv(&format!(
+            "peers --preset golf --pair tennis --format {format}"
+        )));
+        let by_target = ok(&argv(&format!(
+            "peers --preset golf --target tennis --format {format}"
+        )));
         assert_eq!(by_pair, by_target, "{format}");
     }
     // (the closing speed given: without it a pair export warns that it holds at the preset's
     // v0, tests/cli/cli_peers_case.rs)
-    let lammps = ok(&[
-        "peers", "--preset", "golf", "--pair", "tennis", "--export", "lammps", "--v0", "1.47",
-    ]);
-    let by_target = ok(&[
-        "peers", "--preset", "golf", "--target", "tennis", "--export", "lammps", "--v0", "1.47",
-    ]);
+    let lammps = ok(&argv(
+        "peers --preset golf --pair tennis --export lammps --v0 1.47",
+    ));
+    let by_target = ok(&argv(
+        "peers --preset golf --target tennis --export lammps --v0 1.47",
+    ));
     assert_eq!(lammps, by_target);
     let cy = json(&argv(
         "peers --preset golf --target christoforou-yigit --format json",
@@ -272,9 +271,7 @@ fn peers_target_preset_is_the_pair() {
     assert!(cy.get("pair").is_none());
     assert_eq!(cy["target_source"], "christoforou-yigit");
     bad(
-        &[
-            "peers", "--preset", "golf", "--target", "tennis", "--pair", "golf",
-        ],
+        &argv("peers --preset golf --target tennis --pair golf"),
         &["target", "two partners"],
     );
     bad(

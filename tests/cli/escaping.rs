@@ -116,9 +116,10 @@ fn json_stays_json_whatever_a_name_holds() {
         for args in [
             &["run", "--config", name, "--format", "json"][..],
             &["presets", "--config", name, "--format", "json"][..],
-            &[
-                "sweep", "velocity", "--config", name, "--points", "2", "--format", "json",
-            ][..],
+            &argv_with(
+                "sweep velocity --config {} --points 2 --format json",
+                &[name],
+            )[..],
         ] {
             let out = ok_at(dir.path(), args);
             assert_clean("stdout", &out);

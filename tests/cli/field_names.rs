@@ -3,7 +3,8 @@
 
 use crate::common;
 use common::{
-    argv, assert_bad, assert_name_refused_as_invisible, bad, baseball_with_fit, bl, bl_at,
+    argv, argv_with, assert_bad, assert_name_refused_as_invisible, bad, baseball_with_fit, bl,
+    bl_at,
 };
 
 #[test]
@@ -22,15 +23,10 @@ fn peers_friction_without_export_is_refused() {
     // `--format json --friction 0.5` printed the comparison and ignored the friction
     for format in ["json", "text", "csv"] {
         bad(
-            &[
-                "peers",
-                "--preset",
-                "tennis",
-                "--format",
-                format,
-                "--friction",
-                "0.5",
-            ],
+            &argv_with(
+                "peers --preset tennis --format {} --friction 0.5",
+                &[format],
+            ),
             &["--friction", "--export"],
         );
     }

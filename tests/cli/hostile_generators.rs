@@ -9,6 +9,7 @@
 //! every flag is run every time, and the values rotate with the seed; every file flag meets
 //! every kind of hostile file. Runs go four at a time in their own empty folder.
 
+use crate::common::command_in;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 use std::sync::Mutex;
@@ -141,12 +142,7 @@ fn takes_file(f: &Flag) -> bool {
 
 /// One run's verdict: `Err` with what was wrong.
 fn run(args: &[String], dir: &Path) -> Result<i32, String> {
-    let mut child = Command::new(bin())
-        .args(args)
-        .current_dir(dir)
-        .env("XDG_CONFIG_HOME", dir)
-        .env("HOME", dir)
-        .stdin(Stdio::null())
+    let mut child = command_in(dir, args)
         .stdout(Stdio::piped())
         .stderr(Stdio::piped())
         .spawn()

@@ -6,7 +6,7 @@
 #![cfg(unix)]
 
 use crate::common;
-use common::{argv, assert_bad, bl_at};
+use common::{argv, argv_with, assert_bad, bl_at};
 use std::fs;
 use std::os::unix::fs::FileTypeExt;
 use std::path::Path;
@@ -19,34 +19,10 @@ const LOT: &str = "id,drop_height_m,rebound_height_m\nA1,2.54,1.40\nA2,2.54,1.45
 fn commands(target: &str) -> Vec<Vec<&str>> {
     vec![
         vec!["fit", "--cor-table", "cor.csv", "--plot", target],
-        vec![
-            "mc",
-            "--vary",
-            "k_p=5%",
-            "--samples",
-            "20",
-            "--csv-out",
-            target,
-        ],
-        vec![
-            "batch",
-            "lot.csv",
-            "--preset",
-            "tennis",
-            "--csv-out",
-            target,
-        ],
-        vec![
-            "map", "--lambda", "0.1:10:4", "--zeta", "0.1:10:4", "--out", target,
-        ],
-        vec![
-            "figure",
-            "force-time",
-            "--out",
-            "f.svg",
-            "--csv-out",
-            target,
-        ],
+        argv_with("mc --vary k_p=5% --samples 20 --csv-out {}", &[target]),
+        argv_with("batch lot.csv --preset tennis --csv-out {}", &[target]),
+        argv_with("map --lambda 0.1:10:4 --zeta 0.1:10:4 --out {}", &[target]),
+        argv_with("figure force-time --out f.svg --csv-out {}", &[target]),
     ]
 }
 

@@ -10,11 +10,7 @@ use std::time::{Duration, Instant};
 /// `bouncelab ARGS` with a deadline: (exit code, stderr); a run past it is killed and fails.
 fn run_within(args: &[&str], seconds: u64) -> (i32, String) {
     let home = tempfile::tempdir().unwrap();
-    let mut child = Command::new(env!("CARGO_BIN_EXE_bouncelab"))
-        .args(args)
-        .env("XDG_CONFIG_HOME", home.path())
-        .env("HOME", home.path())
-        .stdin(Stdio::null())
+    let mut child = crate::common::command(home.path(), args)
         .stdout(Stdio::null())
         .stderr(Stdio::piped())
         .spawn()

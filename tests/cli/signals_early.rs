@@ -5,8 +5,9 @@
 //! the command just after its signals are watched, so the signal lands in those moments.
 #![cfg(unix)]
 
+use crate::common::{argv, command_in};
 use std::path::Path;
-use std::process::{Command, Stdio};
+use std::process::Stdio;
 use std::time::{Duration, Instant};
 
 const COR: &str = "v0,cor\n2,0.8\n4,0.75\n6,0.7\n";
@@ -15,13 +16,8 @@ const LOT: &str = "id,drop_height_m,rebound_height_m\nA1,2.54,1.40\nA2,2.54,1.45
 /// `bouncelab ARGS` in `dir`, sent `signal` 250 ms after it started: its exit code (None:
 /// ended by the signal itself).
 fn signalled(dir: &Path, args: &[&str], signal: i32) -> Option<i32> {
-    let mut child = Command::new(env!("CARGO_BIN_EXE_bouncelab"))
-        .args(args)
-        .current_dir(dir)
-        .env("XDG_CONFIG_HOME", dir)
-        .env("HOME", dir)
+    let mut child = command_in(dir, args)
         .env("BOUNCELAB_TEST_FAULT", "slow-start")
-        .stdin(Stdio::null())
         .stdout(Stdio::null())
         .stderr(Stdio::null())
         .spawn()
@@ -43,36 +39,12 @@ fn signalled(dir: &Path, args: &[&str], signal: i32) -> Option<i32> {
     }
 }
 
-fn commands() -> Vec<(Vec<&'static str>, &'static str)> {
-    vec![
-        (
-            vec![
-                "figure",
-                "force-time",
-                "--measured",
-                "cor2.csv",
-                "--out",
-                "f.svg",
-            ],
-            "f.svg",
-        ),
-        (
-            vec!["fit", "--cor-table", "cor.csv", "--plot", "p.svg"],
-            "p.svg",
-        ),
-        (
-            vec![
-                "batch",
-                "lot.csv",
-                "--preset",
-                "tennis",
-                "--csv-out",
-                "b.csv",
-            ],
-            "b.csv",
-        ),
-    ]
-}
+/// Each command and the file it would write.
+const COMMANDS: [(&str, &str); 3] = [
+    ("figure force-time --measured cor2.csv --out f.svg", "f.svg"),
+    ("fit --cor-table cor.csv --plot p.svg", "p.svg"),
+    ("batch lot.csv --preset tennis --csv-out b.csv", "b.csv"),
+];
 
 #[test]
 fn an_early_signal_stops_the_command_writing_nothing() {
@@ -92,7 +64,8 @@ fn an_early_signal_stops_the_command_writing_nothing() {
     }
     std::fs::write(d.join("cor2.csv"), trace).unwrap();
     for signal in [Signal::INT, Signal::TERM, Signal::HUP, Signal::QUIT] {
-        for (args, file) in commands() {
+        for (line, file) in COMMANDS {
+            let args = argv(line);
             let code = signalled(d, &args, signal.as_raw());
             assert_eq!(code, Some(130), "{args:?} and {signal:?}");
             assert!(

@@ -7,7 +7,6 @@
 
 use crate::pty;
 
-use pty::Explorer;
 use rustix::process::Signal;
 use std::time::{Duration, Instant};
 
@@ -23,18 +22,7 @@ fn state(pid: u32) -> char {
 #[test]
 fn sigtstp_suspends_a_command_and_sigcont_lets_it_finish() {
     let home = tempfile::tempdir().unwrap();
-    let out = home.path().join("slow.svg");
-    let args = [
-        "figure",
-        "cor-zeta",
-        "--law",
-        "hertz",
-        "--points",
-        "200",
-        "--out",
-        out.to_str().unwrap(),
-    ];
-    let mut x = Explorer::spawn(home.path(), None, &args);
+    let (mut x, out) = pty::slow_figure(home.path(), 200);
     x.wait_for("/600 impacts"); // the bar: the work is under way (some seconds of it)
     let pid = x.pid();
     x.signal(Signal::TSTP);

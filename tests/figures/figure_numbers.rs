@@ -7,15 +7,10 @@ use common::*;
 
 /// The subtitle of a force–displacement figure, from its `<desc>`.
 fn subtitle(dir: &std::path::Path, v0: &str) -> String {
-    let args = [
-        "figure",
-        "force-displacement",
-        "--v0",
-        v0,
-        "--out",
-        "fd.svg",
-        "--force",
-    ];
+    let args = argv_with(
+        "figure force-displacement --v0 {} --out fd.svg --force",
+        &[v0],
+    );
     ok_at(dir, &args);
     let svg = std::fs::read_to_string(dir.join("fd.svg")).unwrap();
     let doc = roxmltree::Document::parse(&svg).unwrap();
@@ -127,15 +122,10 @@ fn legend_numbers_are_runs_rounded_as_the_figure_rounds() {
                 }
             }
         }
-        let args = [
-            "figure",
-            "cor-velocity",
-            "--preset",
-            &p.name,
-            "--out",
-            "cv.svg",
-            "--force",
-        ];
+        let args = argv_with(
+            "figure cor-velocity --preset {} --out cv.svg --force",
+            &[&p.name],
+        );
         ok_at(d, &args);
         let svg = std::fs::read_to_string(d.join("cv.svg")).unwrap();
         let r = json(&["run", "--preset", &p.name, "--format", "json"]);
@@ -174,13 +164,7 @@ fn a_reference_cor_is_labelled_by_where_it_comes_from() {
     };
     let golf = label(&["--preset", "golf"]);
     assert!(golf.contains("measured (Cross 1999)"), "{golf}");
-    for ball in [
-        "tennis",
-        "football",
-        "basketball",
-        "table-tennis",
-        "softball",
-    ] {
+    for ball in drop_test_balls() {
         let t = label(&["--preset", ball]);
         assert!(!t.contains("Cross 1999"), "{ball}: {t}");
         assert!(t.contains("standard's mid-window"), "{ball}: {t}");

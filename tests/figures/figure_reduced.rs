@@ -4,15 +4,13 @@
 //! column (src/figure/reduce.rs), its legend saying so, and the SVG stays small.
 
 use crate::common;
+use crate::common::embedded;
 use bouncelab::solver::{SolveOptions, simulate};
 use common::{argv, bl_at, parse_svg};
 
 /// A superball's force trace of `n` samples, in `dir/trace.csv`.
 fn dense_trace(dir: &std::path::Path, n: usize) {
-    let p = bouncelab::preset::Preset::embedded_all()
-        .into_iter()
-        .find(|p| p.name == "superball")
-        .unwrap();
+    let p = embedded("superball");
     let r = simulate(&p.params(), p.law, &SolveOptions::default().with_samples(n)).unwrap();
     let mut trace = String::from("time_s,force_N\n");
     for (t, f) in r.history.t.iter().zip(&r.history.force) {

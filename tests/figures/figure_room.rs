@@ -191,13 +191,7 @@ fn reproduce_several_balls_maps_and_fit_plots_have_room() {
     }
     let sets: [&[&str]; 2] = [
         &["golf", "baseball", "superball"],
-        &[
-            "tennis",
-            "softball",
-            "basketball",
-            "football",
-            "table-tennis",
-        ],
+        &argv("tennis softball basketball football table-tennis"),
     ];
     for set in sets {
         for fig in [
@@ -246,10 +240,7 @@ fn reproduce_several_balls_maps_and_fit_plots_have_room() {
 /// A superball trace (the solver's, sampled) and a COR table of a softer superball at five
 /// speeds, written in `dir`: (file, the fit's flag).
 fn fit_data(dir: &Path) -> Vec<(String, &'static str)> {
-    let p = Preset::embedded_all()
-        .into_iter()
-        .find(|p| p.name == "superball")
-        .unwrap();
+    let p = embedded("superball");
     let mut params = p.params();
     params.k_r *= 1.3;
     let r = simulate(&params, p.law, &SolveOptions::default().with_samples(300)).unwrap();
@@ -344,21 +335,11 @@ fn the_explorers_exports_have_room() {
     }
     charts.sort_unstable();
     charts.dedup();
-    let every = [
-        "cor-velocity",
-        "cor-zeta",
-        "force-displacement",
-        "force-time",
-        "force-zeta",
-        "map",
-        "oblique-forces",
-        "oblique-paths",
-        "oblique-slip-velocity",
-        "oblique-spin",
-        "peers-cor-velocity",
-        "peers-force-displacement",
-        "peers-force-time",
-    ];
+    let every = argv(
+        "cor-velocity cor-zeta force-displacement force-time force-zeta map oblique-forces \
+         oblique-paths oblique-slip-velocity oblique-spin peers-cor-velocity \
+         peers-force-displacement peers-force-time",
+    );
     assert_eq!(charts, every, "every view's export was checked");
     assert_room(&found);
 }

@@ -4,7 +4,7 @@
 
 use crate::common;
 
-use common::{argv, assert_bad, bl, f, ok_calibrated};
+use common::{argv, argv_with, assert_bad, bl, f, ok_calibrated};
 use serde_json::Value;
 
 fn json_calibrated(args: &[&str]) -> Value {
@@ -66,17 +66,10 @@ fn a_cold_football_reads_eleven_psi_in_the_answer() {
 
 /// The rebound height the FIBA test reads, and its verdict, for a basketball at `psi`.
 fn fiba(psi: &str) -> (f64, bool) {
-    let v = json_calibrated(&[
-        "drop",
-        "--preset",
-        "basketball",
-        "--standard",
-        "fiba",
-        "--pressure",
-        psi,
-        "--format",
-        "json",
-    ]);
+    let v = json_calibrated(&argv_with(
+        "drop --preset basketball --standard fiba --pressure {} --format json",
+        &[psi],
+    ));
     let verdict = &v["standard"];
     (f(verdict, "measured"), verdict["verdict"] == "pass")
 }
@@ -85,9 +78,7 @@ fn fiba(psi: &str) -> (f64, bool) {
 /// below 7.5 psi (at 4 psi the model's ball rebounds below the window's 1.20 m).
 #[test]
 fn a_basketball_bounces_lower_as_its_pressure_falls() {
-    let pressures = [
-        "9psi", "8.5psi", "8psi", "7.5psi", "7psi", "6psi", "5psi", "4psi",
-    ];
+    let pressures = argv("9psi 8.5psi 8psi 7.5psi 7psi 6psi 5psi 4psi");
     let heights: Vec<(f64, bool)> = pressures.iter().map(|p| fiba(p)).collect();
     for w in heights.windows(2) {
         assert!(w[1].0 < w[0].0, "{heights:?}");
@@ -200,9 +191,7 @@ fn conditions_a_ball_cannot_take_are_refused_naming_the_field_and_the_ball() {
 /// measurement. A half-life given replaces it: 0.8 bar · 2^(−720/500) after 30 d.
 #[test]
 fn after_a_time_the_ball_has_leaked() {
-    let o = bl(&[
-        "drop", "--preset", "football", "--after", "72h", "--format", "json",
-    ]);
+    let o = bl(&argv("drop --preset football --after 72h --format json"));
     assert_eq!(o.code, 0, "{}", o.stderr);
     let v: Value = serde_json::from_str(&o.stdout).unwrap();
     assert!((f(&v["conditions"], "pressure_gauge_pa") - 64_000.0).abs() < 1e-6);
@@ -282,15 +271,7 @@ fn a_ball_off_its_standards_conditions_is_warned() {
     let mut cold = base.to_vec();
     cold.extend(["--temperature", "5"]);
     assert!(warned(&cold));
-    let mut fiba = vec![
-        "drop",
-        "--preset",
-        "basketball",
-        "--standard",
-        "fiba",
-        "--format",
-        "json",
-    ];
+    let mut fiba = argv("drop --preset basketball --standard fiba --format json");
     assert!(!warned(&fiba));
     fiba.extend(["--pressure", "6psi"]);
     assert!(warned(&fiba));
@@ -302,17 +283,10 @@ fn a_ball_off_its_standards_conditions_is_warned() {
 #[test]
 fn the_fifa_pressure_loss_test() {
     let run = |half: &str| {
-        json_calibrated(&[
-            "drop",
-            "--preset",
-            "football",
-            "--standard",
-            "fifa-pressure-loss",
-            "--half-life",
-            half,
-            "--format",
-            "json",
-        ])
+        json_calibrated(&argv_with(
+            "drop --preset football --standard fifa-pressure-loss --half-life {} --format json",
+            &[half],
+        ))
     };
     let v = run("300h");
     let pl = &v["pressure_loss"];
@@ -351,17 +325,10 @@ fn fit_cor_temperature_recovers_the_shift_and_refuses_what_it_cannot_fit() {
     let good = dir.path().join("shifted.csv");
     std::fs::write(&good, SHIFTED).unwrap();
     let good = good.to_str().unwrap();
-    let v = common::json(&[
-        "fit",
-        "--preset",
-        "superball",
-        "--cor-temperature",
-        good,
-        "--temperature",
-        "23",
-        "--format",
-        "json",
-    ]);
+    let v = common::json(&argv_with(
+        "fit --preset superball --cor-temperature {} --temperature 23 --format json",
+        &[good],
+    ));
     let c = f(&v["c_ref"], "value");
     let e = f(&v["activation_energy"], "value");
     assert!((c / 90.0 - 1.0).abs() < 1e-3, "{c}");
@@ -378,15 +345,10 @@ fn fit_cor_temperature_recovers_the_shift_and_refuses_what_it_cannot_fit() {
     )
     .unwrap();
     let bad = bad.to_str().unwrap();
-    let o = bl(&[
-        "fit",
-        "--preset",
-        "superball",
-        "--cor-temperature",
-        bad,
-        "--temperature",
-        "23",
-    ]);
+    let o = bl(&argv_with(
+        "fit --preset superball --cor-temperature {} --temperature 23",
+        &[bad],
+    ));
     assert_eq!(o.code, 1, "{}", o.stderr);
     assert!(
         o.stdout.contains("no answer") && o.stdout.contains("lack of fit"),

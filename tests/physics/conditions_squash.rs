@@ -4,7 +4,7 @@
 
 use crate::common;
 
-use common::{assert_bad, bl, f, file_with, ok_calibrated};
+use common::{argv, argv_with, assert_bad, bl, f, file_with, ok_calibrated};
 use serde_json::Value;
 
 fn json_calibrated(args: &[&str]) -> Value {
@@ -59,19 +59,10 @@ fn a_squash_ball_passes_the_wsf_test_at_23_and_45_c_and_bounces_higher_hot() {
 #[test]
 fn the_shift_gives_back_the_published_ratio_it_was_solved_from() {
     let rebound = |t: &str| {
-        let v = json_calibrated(&[
-            "drop",
-            "--preset",
-            "squash",
-            "--height",
-            "2.54",
-            "--bounces",
-            "1",
-            "--temperature",
-            t,
-            "--format",
-            "json",
-        ]);
+        let v = json_calibrated(&argv_with(
+            "drop --preset squash --height 2.54 --bounces 1 --temperature {} --format json",
+            &[t],
+        ));
         assert_eq!(
             f(&v["conditions"], "temperature_c"),
             t.parse::<f64>().unwrap()
@@ -90,15 +81,7 @@ fn the_shift_gives_back_the_published_ratio_it_was_solved_from() {
 #[test]
 fn a_shift_that_cannot_apply_is_refused_naming_the_field() {
     assert_bad(
-        &bl(&[
-            "run",
-            "--preset",
-            "squash",
-            "--damping",
-            "9",
-            "--temperature",
-            "23",
-        ]),
+        &bl(&argv("run --preset squash --damping 9 --temperature 23")),
         &["invalid temperature", "--damping"],
     );
     assert_bad(
@@ -134,15 +117,7 @@ fn a_shift_that_cannot_apply_is_refused_naming_the_field() {
 #[test]
 fn a_volleyball_stiffens_with_its_pressure() {
     let run = |p: &str| {
-        let mut args = vec![
-            "drop",
-            "--preset",
-            "volleyball",
-            "--height",
-            "2",
-            "--bounces",
-            "1",
-        ];
+        let mut args = argv("drop --preset volleyball --height 2 --bounces 1");
         if !p.is_empty() {
             args.extend_from_slice(&["--pressure", p]);
         }
@@ -179,15 +154,10 @@ fn a_fitted_shift_is_saved_in_the_preset_and_used() {
     let cor = |preset: &str, t: &str| {
         let o = bl_in(
             home.path(),
-            &[
-                "run",
-                "--preset",
-                preset,
-                "--temperature",
-                t,
-                "--format",
-                "json",
-            ],
+            &argv_with(
+                "run --preset {} --temperature {} --format json",
+                &[preset, t],
+            ),
         );
         assert_eq!(o.code, 0, "{}", o.stderr);
         let v: Value = serde_json::from_str(o.stdout.lines().last().unwrap()).unwrap();
@@ -267,15 +237,10 @@ fn static_states_its_conditions() {
 #[test]
 fn a_ball_at_its_record_s_pressure_typed_in_other_units_is_not_warned() {
     let run = |p: &str| {
-        json_calibrated(&[
-            "run",
-            "--preset",
-            "basketball",
-            "--pressure",
-            p,
-            "--format",
-            "json",
-        ])
+        json_calibrated(&argv_with(
+            "run --preset basketball --pressure {} --format json",
+            &[p],
+        ))
     };
     let moved = |v: &Value| {
         v["warnings"]

@@ -10,6 +10,7 @@
 //! - outside its grid, at λ̂ = 0 and in patches it does not keep, it does not answer, and
 //!   `table::summary` is then the Taylor steps' answer.
 
+use crate::common::embedded;
 use bouncelab::solver::table::{self, GRID, Patch, cheb};
 use bouncelab::solver::taylor;
 use bouncelab::{ContactLaw, Normalized};
@@ -161,12 +162,7 @@ fn the_table_meets_the_reference_at_a_thousand_points_of_its_squares() {
 /// the reference to the tolerance, 1e-12.
 #[test]
 fn the_baseball_is_in_the_table() {
-    let n = bouncelab::preset::Preset::embedded_all()
-        .into_iter()
-        .find(|p| p.name == "baseball")
-        .unwrap()
-        .params()
-        .normalized();
+    let n = embedded("baseball").params().normalized();
     let s = table::summary(&n, ContactLaw::Hertz).unwrap();
     assert_eq!(s.steps, 0);
     let big_l = n.kappa.powf(-0.4);

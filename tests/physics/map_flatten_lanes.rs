@@ -100,21 +100,7 @@ fn check(cells: &[(f64, f64, f64)]) -> Counts {
 /// nine in ten of those the scalar path answers.
 #[test]
 fn the_tennis_map_flattens_in_lanes() {
-    let ball = bouncelab::Ball::from_preset("tennis").unwrap();
-    let mut cells = Vec::new();
-    for i in 0..=60 {
-        for j in 0..=60 {
-            let (l, z) = (
-                10f64.powf(-3.0 + 0.1 * i as f64),
-                10f64.powf(-3.0 + 0.1 * j as f64),
-            );
-            let n = ball.params.with_lambda_zeta(l, z).normalized();
-            match summary(n.lambda, n.zeta) {
-                Some(s) if s.max_force <= n.zp_bar => continue,
-                _ => cells.push((n.lambda, n.zeta, n.zp_bar)),
-            }
-        }
-    }
+    let cells = crate::map_flatten::tennis_flattening_cells(0.1, 60);
     let c = check(&cells);
     eprintln!("tennis: {c:?}");
     assert!(c.cells >= 2000, "{c:?}");

@@ -7,7 +7,7 @@
 use crate::common;
 use bouncelab::api::ObliqueSpec;
 use bouncelab::{Ball, BallError};
-use common::{argv, bad};
+use common::{argv, argv_with, bad};
 
 #[test]
 fn a_tiny_inertia_factor_is_refused_naming_it() {
@@ -30,17 +30,10 @@ fn a_huge_tangential_stiffness_is_refused_naming_it() {
     );
     for k in ["1e-16", "1e16"] {
         bad(
-            &[
-                "oblique",
-                "--preset",
-                "tennis",
-                "--angle",
-                "30",
-                "--friction",
-                "0.4",
-                "--tangential-stiffness",
-                k,
-            ],
+            &argv_with(
+                "oblique --preset tennis --angle 30 --friction 0.4 --tangential-stiffness {}",
+                &[k],
+            ),
             &["invalid tangential_stiffness", "1e-15 … 1e15"],
         );
     }

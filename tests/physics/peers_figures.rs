@@ -2,7 +2,7 @@
 //! parses, and CSV series that say what docs/peers.md says.
 
 use crate::common;
-use common::{bl, ok};
+use common::{argv_with, bl, ok};
 
 fn series<'a>(csv: &'a str, id: &str) -> Vec<Vec<&'a str>> {
     csv.lines()
@@ -17,16 +17,10 @@ fn peers_cor_velocity_flat_peers_falling_fixed_alpha() {
     let dir = tempfile::tempdir().unwrap();
     let (svg, csv) = (dir.path().join("a.svg"), dir.path().join("a.csv"));
     let (s, c) = (svg.to_str().unwrap(), csv.to_str().unwrap());
-    ok(&[
-        "figure",
-        "peers-cor-velocity",
-        "--preset",
-        "superball",
-        "--out",
-        s,
-        "--csv-out",
-        c,
-    ]);
+    ok(&argv_with(
+        "figure peers-cor-velocity --preset superball --out {} --csv-out {}",
+        &[s, c],
+    ));
     roxmltree::Document::parse(&std::fs::read_to_string(&svg).unwrap()).unwrap();
     let text = std::fs::read_to_string(&csv).unwrap();
     assert_eq!(text.lines().next().unwrap(), "series,kind,v0,cor");
@@ -56,18 +50,10 @@ fn peers_force_time_starts_and_ends_at_rest() {
     let dir = tempfile::tempdir().unwrap();
     let (svg, csv) = (dir.path().join("b.svg"), dir.path().join("b.csv"));
     let (s, c) = (svg.to_str().unwrap(), csv.to_str().unwrap());
-    ok(&[
-        "figure",
-        "peers-force-time",
-        "--preset",
-        "golf",
-        "--points",
-        "50",
-        "--out",
-        s,
-        "--csv-out",
-        c,
-    ]);
+    ok(&argv_with(
+        "figure peers-force-time --preset golf --points 50 --out {} --csv-out {}",
+        &[s, c],
+    ));
     let text = std::fs::read_to_string(&csv).unwrap();
     for id in ["tsuji", "hunt-crossley", "kelvin-voigt-no-tension"] {
         let rows = series(&text, id);
@@ -82,15 +68,9 @@ fn peers_force_time_starts_and_ends_at_rest() {
         let last: f64 = rows[49][3].parse().unwrap();
         assert!(last.abs() < 1e-9, "{id} ends at F = 0: {last}");
     }
-    let o = bl(&[
-        "figure",
-        "peers-force-time",
-        "--preset",
-        "golf",
-        "--from",
-        "1",
-        "--out",
-        s,
-    ]);
+    let o = bl(&argv_with(
+        "figure peers-force-time --preset golf --from 1 --out {}",
+        &[s],
+    ));
     assert_eq!(o.code, 2, "{}", o.stderr);
 }

@@ -2,15 +2,12 @@
 //! standard in the middle of its window, a livelier-damped copy fails with a negative margin,
 //! and each body's bottom/top-of-ball convention is applied.
 
+use crate::common::{drop_test_balls, embedded};
 use bouncelab::drop::standards::{self, Reference, STANDARDS, Test};
 use bouncelab::drop::{Air, DropBall, DropSetup, drop, fit, impact};
-use bouncelab::preset::Preset;
 
 fn ball(name: &str) -> DropBall {
-    let p = Preset::embedded_all()
-        .into_iter()
-        .find(|p| p.name == name)
-        .unwrap();
+    let p = embedded(name);
     DropBall {
         params: p.params(),
         law: p.law,
@@ -18,19 +15,9 @@ fn ball(name: &str) -> DropBall {
     }
 }
 
-const NEW_BALLS: [&str; 7] = [
-    "tennis",
-    "football",
-    "basketball",
-    "table-tennis",
-    "softball",
-    "baseball-mlb",
-    "softball-44",
-];
-
 #[test]
 fn each_new_ball_passes_its_standard_mid_window() {
-    for name in NEW_BALLS {
+    for name in drop_test_balls() {
         let s = standards::for_ball(name).unwrap_or_else(|| panic!("{name} has no standard"));
         let v = s.judge(&ball(name), Some(Air::default())).unwrap();
         assert!(v.pass, "{name}: {v:?}");
@@ -56,7 +43,7 @@ fn each_new_ball_passes_its_standard_mid_window() {
 /// with the margin −5 % of the width (of the ceiling, one-sided).
 #[test]
 fn a_ball_made_to_fail_fails_with_a_negative_margin() {
-    for name in NEW_BALLS {
+    for name in drop_test_balls() {
         let s = standards::for_ball(name).unwrap();
         let b = ball(name);
         let (aim, width) = match s.window {

@@ -3,7 +3,7 @@
 //! and e, and its calibration to a measured (μ, e).
 
 use crate::common;
-use common::{argv, assert_bad, bl, bl_in, f, json};
+use common::{argv, argv_with, assert_bad, bl, bl_in, f, json};
 
 /// The ITF formula (ITF CS 01/02).
 fn cpr(mu: f64, e: f64) -> f64 {
@@ -50,15 +50,7 @@ fn court_pace_is_rated_by_the_courts_own_e() {
 /// text's surface line and `computed_on` (issue 53). Fails on the old code.
 #[test]
 fn a_calibrated_court_is_named_for_what_it_is() {
-    let args = [
-        "court",
-        "--preset",
-        "tennis",
-        "--friction",
-        "0.6",
-        "--surface-cor",
-        "0.81",
-    ];
+    let args = argv("court --preset tennis --friction 0.6 --surface-cor 0.81");
     let mut with_json = args.to_vec();
     with_json.extend(["--format", "json"]);
     let court = json(&with_json);
@@ -87,17 +79,10 @@ fn a_calibrated_court_is_named_for_what_it_is() {
 fn a_calibrated_court_returns_its_e_at_every_reachable_value() {
     for (mu, e) in [(0.5, 0.6), (0.75, 0.78), (0.3, 0.84)] {
         let (mu_s, e_s) = (mu.to_string(), e.to_string());
-        let c = json(&[
-            "court",
-            "--preset",
-            "tennis",
-            "--friction",
-            &mu_s,
-            "--surface-cor",
-            &e_s,
-            "--format",
-            "json",
-        ]);
+        let c = json(&argv_with(
+            "court --preset tennis --friction {} --surface-cor {} --format json",
+            &[&mu_s, &e_s],
+        ));
         let got = f(&c, "cor_normal");
         assert!((got - e).abs() < 0.002, "({mu}, {e}): e {got}");
         let cal = &c["calibration"];
@@ -138,23 +123,11 @@ fn court_fit_recovers_a_known_court_from_its_bounces() {
     let mut csv = String::from("v_in,angle_in,v_out,angle_out\n");
     for (v, a) in [(29.0, 15.0), (30.0, 16.0), (31.0, 17.0)] {
         let (v_s, a_s) = (format!("{v}"), format!("{a}"));
-        let r = json(&[
-            "oblique",
-            "--preset",
-            "tennis",
-            "--v0",
-            &v_s,
-            "--angle",
-            &a_s,
-            "--friction",
-            "0.55",
-            "--surface-stiffness",
-            &k_s,
-            "--surface-damping",
-            "20",
-            "--format",
-            "json",
-        ]);
+        let r = json(&argv_with(
+            "oblique --preset tennis --v0 {} --angle {} --friction 0.55 --surface-stiffness {} \
+             --surface-damping 20 --format json",
+            &[&v_s, &a_s, &k_s],
+        ));
         csv.push_str(&format!(
             "{v},{a},{},{}\n",
             f(&r, "v_out"),
@@ -163,15 +136,10 @@ fn court_fit_recovers_a_known_court_from_its_bounces() {
     }
     let file = dir.path().join("itf.csv");
     std::fs::write(&file, csv).unwrap();
-    let c = json(&[
-        "court",
-        "--preset",
-        "tennis",
-        "--fit",
-        file.to_str().unwrap(),
-        "--format",
-        "json",
-    ]);
+    let c = json(&argv_with(
+        "court --preset tennis --fit {} --format json",
+        &[file.to_str().unwrap()],
+    ));
     let m = &c["measured"];
     assert_eq!(m["bounces"], 3);
     assert!((f(m, "apparent_friction") - 0.55).abs() < 1e-6, "{m}");
@@ -191,23 +159,11 @@ fn court_fit_recovers_a_known_court_from_its_bounces() {
 #[test]
 fn a_gripping_bounce_on_a_hard_court_reaches_published_e_x() {
     for angle in ["30", "45", "60", "75"] {
-        let r = json(&[
-            "oblique",
-            "--preset",
-            "tennis",
-            "--surface",
-            "hard-court",
-            "--friction",
-            "0.6",
-            "--tangential-damping",
-            "27",
-            "--angle",
-            angle,
-            "--v0",
-            "25",
-            "--format",
-            "json",
-        ]);
+        let r = json(&argv_with(
+            "oblique --preset tennis --surface hard-court --friction 0.6 --tangential-damping 27 \
+             --angle {} --v0 25 --format json",
+            &[angle],
+        ));
         let ex = f(&r, "cor_tangential");
         assert!((0.1..=0.2).contains(&ex), "{angle}°: e_x {ex}");
         assert_eq!(r["surface"]["name"], "hard-court");
@@ -346,21 +302,11 @@ fn drop_bounces_on_its_surface() {
     let plate = json(&[&base[..], &["--format", "json"][..]].concat());
     let first = &d["bounces"][0];
     let v_in = f(first, "v_in").to_string();
-    let c = json(&[
-        "collide",
-        "--preset",
-        "basketball",
-        "--v0",
-        &v_in,
-        "--target-mass",
-        "inf",
-        "--target-stiffness",
-        "2e5",
-        "--target-damping",
-        "100",
-        "--format",
-        "json",
-    ]);
+    let c = json(&argv_with(
+        "collide --preset basketball --v0 {} --target-mass inf --target-stiffness 2e5 \
+         --target-damping 100 --format json",
+        &[&v_in],
+    ));
     assert_eq!(f(first, "cor"), f(&c, "apparent_cor"));
     assert_eq!(f(first, "max_force"), f(&c, "max_force"));
     assert!(f(first, "cor") < f(&plate["bounces"][0], "cor"));

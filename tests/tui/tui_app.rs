@@ -1,5 +1,6 @@
 //! The explorer's state machine: key → action → `update` → state.
 
+use crate::common::embedded;
 use crate::tui_common;
 
 use bouncelab::ContactLaw;
@@ -419,10 +420,7 @@ fn four_says_why_it_loads_nothing() {
         text.contains("start preset") && text.contains("1–3"),
         "{text}"
     );
-    let tennis = Preset::embedded_all()
-        .into_iter()
-        .find(|p| p.name == "tennis")
-        .unwrap();
+    let tennis = embedded("tennis");
     let mut app = App::new(tennis, false);
     press(&mut app, &[KeyCode::Char('1'), KeyCode::Char('4')]);
     assert!(app.message().unwrap().text.contains("loaded tennis"));

@@ -5,25 +5,20 @@
 //! ball is refused a pressure with the library's reason.
 
 use crate::common;
+use crate::common::embedded;
 use crate::tui_common;
 
-use bouncelab::cli::Cli;
-use bouncelab::preset::Preset;
 use bouncelab::tui::action::{self, Action};
 use bouncelab::tui::app::{App, Overlay, View};
 use bouncelab::tui::physical::Field;
 use bouncelab::tui::session::Session;
-use clap::Parser;
 use common::{f, json};
 use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
 use std::path::Path;
 use tui_common::*;
 
 fn ball(name: &str) -> App {
-    let p = Preset::embedded_all()
-        .into_iter()
-        .find(|p| p.name == name)
-        .unwrap();
+    let p = embedded(name);
     App::new(p, false)
 }
 
@@ -72,8 +67,7 @@ fn runs_to_the_screen(app: &App, line: &str) {
     run.extend(["--format".into(), "json".into()]);
     let args: Vec<&str> = run.iter().map(String::as_str).collect();
     let r = json(&args);
-    let cli = Cli::try_parse_from(&words).unwrap_or_else(|e| panic!("{line}: {e}"));
-    let again = cli.explore.app(&cli.choice, false).unwrap().0;
+    let again = explorer_from(line);
     let screen = app.run().expect("a run");
     let back = again.run().expect("a run");
     for (key, got, other) in [
@@ -207,18 +201,8 @@ fn the_oblique_and_flight_lines_carry_the_conditions() {
     let mut args: Vec<String> = line.split_whitespace().skip(1).map(String::from).collect();
     args.extend(["--format".into(), "json".into()]);
     let args: Vec<&str> = args.iter().map(String::as_str).collect();
-    let j = json(&args);
-    let r = app.oblique_view().response().expect("an impact");
     // to 1e-12, as the oblique view's own line (tests/tui/tui_oblique.rs)
-    let close = |a: f64, b: f64| (a - b).abs() <= 1e-12 * a.abs().max(b.abs()).max(1.0);
-    for (k, v) in [
-        ("v_out", r.v_out),
-        ("angle_out_deg", r.angle_out_deg),
-        ("spin_out", r.spin_out),
-        ("cor_normal", r.cor_normal),
-    ] {
-        assert!(close(f(&j, k), v), "{line}: {k} {} {v}", f(&j, k));
-    }
+    assert_oblique_answer_is(&app, &json(&args), &line);
     // the flight view's `bouncelab shot` line too
     key(&mut app, KeyCode::Char('i'));
     key(&mut app, KeyCode::Char('h'));

@@ -1,26 +1,19 @@
 //! The explorer's drop view (`d`): a snapshot, the keys that re-run it, the animation clock,
 //! and the reduced-motion setting.
 
+use crate::common::embedded;
 use crate::tui_common;
 
 use bouncelab::drop::standards;
-use bouncelab::preset::Preset;
 use bouncelab::tui::action::Action;
 use bouncelab::tui::app::{App, View};
 use ratatui::crossterm::event::KeyCode;
 
 use tui_common::*;
 
-fn preset(name: &str) -> Preset {
-    Preset::embedded_all()
-        .into_iter()
-        .find(|p| p.name == name)
-        .unwrap()
-}
-
 #[test]
 fn drop_view_tennis() {
-    let mut app = App::new(preset("tennis"), false);
+    let mut app = App::new(embedded("tennis"), false);
     press(&mut app, &[KeyCode::Char('d')]);
     assert_eq!(app.view(), View::Drop);
     let t = draw(&app, 120, 36);
@@ -38,7 +31,7 @@ fn drop_view_tennis() {
 
 #[test]
 fn the_tennis_ball_drops_from_the_itf_height_and_passes() {
-    let mut app = App::new(preset("tennis"), false);
+    let mut app = App::new(embedded("tennis"), false);
     press(&mut app, &[KeyCode::Char('d')]);
     let d = app.drop_view();
     let run = d.sequence().unwrap();
@@ -54,17 +47,17 @@ fn the_tennis_ball_drops_from_the_itf_height_and_passes() {
     // the band is the window, in bottom-of-ball heights (ITF reads the bottom)
     assert_eq!(d.band(), Some((1.35, 1.47)));
     // FIBA reads the top: the band moves down by the diameter
-    let mut bb = App::new(preset("basketball"), false);
+    let mut bb = App::new(embedded("basketball"), false);
     press(&mut bb, &[KeyCode::Char('d')]);
     let (lo, hi) = bb.drop_view().band().unwrap();
-    let r = preset("basketball").measured.radius;
+    let r = embedded("basketball").measured.radius;
     assert!((lo - (1.20 - 2.0 * r)).abs() < 1e-12 && (hi - (1.40 - 2.0 * r)).abs() < 1e-12);
     assert_eq!(standards::for_ball("golf"), None);
 }
 
 #[test]
 fn lambda_zeta_and_v0_keys_rerun_the_drop() {
-    let mut app = App::new(preset("tennis"), false);
+    let mut app = App::new(embedded("tennis"), false);
     press(&mut app, &[KeyCode::Char('d')]);
     let first = |app: &App| app.drop_view().sequence().unwrap().bounces[0];
     let before = first(&app);
@@ -85,7 +78,7 @@ fn lambda_zeta_and_v0_keys_rerun_the_drop() {
 
 #[test]
 fn the_animation_runs_pauses_and_replays() {
-    let mut app = App::new(preset("tennis"), false).with_motion(true);
+    let mut app = App::new(embedded("tennis"), false).with_motion(true);
     press(&mut app, &[KeyCode::Char('d')]);
     assert!(app.animating());
     assert_eq!(app.drop_view().t, 0.0);
@@ -113,7 +106,7 @@ fn the_animation_runs_pauses_and_replays() {
 
 #[test]
 fn reduced_motion_shows_the_whole_sequence_still() {
-    let mut app = App::new(preset("football"), false).with_motion(false);
+    let mut app = App::new(embedded("football"), false).with_motion(false);
     press(&mut app, &[KeyCode::Char('d')]);
     let d = app.drop_view();
     assert!(!app.animating());
@@ -132,7 +125,7 @@ fn reduced_motion_shows_the_whole_sequence_still() {
 #[test]
 fn the_drop_view_shows_its_verdict_and_rebounds_at_small_sizes() {
     for (w, h) in [(60, 20), (80, 24), (100, 30), (120, 40), (200, 60)] {
-        let mut app = App::new(preset("tennis"), false);
+        let mut app = App::new(embedded("tennis"), false);
         app.update(Action::Resize(w, h));
         press(&mut app, &[KeyCode::Char('d')]);
         let s = screen_text(&draw(&app, w, h)).join("\n");
@@ -155,7 +148,7 @@ fn the_drop_view_shows_its_verdict_and_rebounds_at_small_sizes() {
 #[test]
 fn the_verdict_keeps_its_margin_with_its_unit() {
     for (w, h) in [(60, 20), (80, 24), (100, 30), (120, 40), (200, 60)] {
-        let mut app = App::new(preset("football"), false);
+        let mut app = App::new(embedded("football"), false);
         app.update(Action::Resize(w, h));
         press(&mut app, &[KeyCode::Char('d')]);
         let s = screen_text(&draw(&app, w, h)).join("\n");
@@ -173,7 +166,7 @@ fn the_verdict_keeps_its_margin_with_its_unit() {
 #[test]
 fn the_ball_at_rest_is_round_on_its_plate() {
     for (w, h) in [(60, 20), (80, 24), (100, 30), (120, 40), (200, 60)] {
-        let mut app = App::new(preset("superball"), false).with_motion(false);
+        let mut app = App::new(embedded("superball"), false).with_motion(false);
         app.update(Action::Resize(w, h));
         press(&mut app, &[KeyCode::Char('d')]);
         let rows = screen_text(&draw(&app, w, h));
@@ -207,7 +200,7 @@ fn the_ball_at_rest_is_round_on_its_plate() {
 /// standard's window, its legend and "itf PASS" over nothing).
 #[test]
 fn above_the_terminal_speed_the_view_says_why_it_has_no_bounce() {
-    let mut app = App::new(preset("tennis"), false);
+    let mut app = App::new(embedded("tennis"), false);
     press(&mut app, &[KeyCode::Char('v'), KeyCode::Char('=')]);
     app.update(Action::InputClear);
     type_keys(&mut app, "60");
@@ -226,7 +219,7 @@ fn above_the_terminal_speed_the_view_says_why_it_has_no_bounce() {
 /// Paused, the drop view says so, at every size (issue 51 item 6).
 #[test]
 fn the_drop_view_shows_paused() {
-    let mut app = App::new(preset("tennis"), false).with_motion(true);
+    let mut app = App::new(embedded("tennis"), false).with_motion(true);
     press(&mut app, &[KeyCode::Char('d')]);
     app.update(Action::Tick(0.25));
     for (w, h) in [(80, 24), (100, 30), (120, 40), (160, 50), (200, 60)] {
@@ -246,7 +239,7 @@ fn the_drop_view_shows_paused() {
 #[test]
 fn the_drop_view_writes_the_drag_coefficient_it_uses_in_four_digits() {
     use bouncelab::drop::flight::SPHERE_DRAG_COEFFICIENT;
-    let mut app = App::new(preset("tennis"), false);
+    let mut app = App::new(embedded("tennis"), false);
     press(&mut app, &[KeyCode::Char('d')]);
     let s = screen_text(&draw(&app, 120, 36)).join("\n");
     let c_d = format!(

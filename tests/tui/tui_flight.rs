@@ -3,9 +3,9 @@
 //! coarse steps, a refused value kept out), and `e`'s export.
 
 use crate::common;
+use crate::common::embedded;
 use crate::tui_common;
 
-use bouncelab::preset::Preset;
 use bouncelab::tui::action::{Action, Mode};
 use bouncelab::tui::app::{App, View};
 use bouncelab::tui::export;
@@ -14,16 +14,9 @@ use ratatui::crossterm::event::KeyCode;
 use serde_json::Value;
 use tui_common::*;
 
-fn preset(name: &str) -> Preset {
-    Preset::embedded_all()
-        .into_iter()
-        .find(|p| p.name == name)
-        .unwrap()
-}
-
 /// The tennis ball in the flight view: docs/flight.md §6's serve (the view's default).
 fn serve() -> App {
-    let mut app = App::new(preset("tennis"), false);
+    let mut app = App::new(embedded("tennis"), false);
     press(&mut app, &[KeyCode::Char('h')]);
     assert_eq!((app.view(), app.mode()), (View::Flight, Mode::Flight));
     app

@@ -2,9 +2,9 @@
 //! value in the session's `[flight]` table and `--session` restores them (the same shot); `u`
 //! undoes a step of the launch and says what it undid; `q` asks before losing one.
 
+use crate::common::embedded;
 use crate::tui_common;
 
-use bouncelab::preset::Preset;
 use bouncelab::tui::app::{App, View};
 use bouncelab::tui::session::Session;
 use bouncelab::tui::views::flight::param::FlightParam;
@@ -13,10 +13,7 @@ use std::path::Path;
 use tui_common::*;
 
 fn serve() -> App {
-    let tennis = Preset::embedded_all()
-        .into_iter()
-        .find(|p| p.name == "tennis")
-        .unwrap();
+    let tennis = embedded("tennis");
     let mut app = App::new(tennis, false);
     press(&mut app, &[KeyCode::Char('h')]);
     assert_eq!(app.view(), View::Flight);

@@ -3,6 +3,7 @@
 //! second shows inside the plot shows the same in the first (the legend goes to an empty
 //! corner, or outside the plot, on the frame).
 
+use crate::tui_common::buffer_text;
 use bouncelab::figure::Figure;
 use bouncelab::preset::Preset;
 use bouncelab::tui::app::App;
@@ -40,18 +41,6 @@ fn hidden_cells(fig: &Figure, area: Rect) -> Vec<String> {
         .collect()
 }
 
-fn screen(buf: &Buffer) -> String {
-    let a = buf.area;
-    (a.y..a.bottom())
-        .map(|y| {
-            (a.x..a.right())
-                .map(|x| buf[(x, y)].symbol())
-                .collect::<String>()
-                + "\n"
-        })
-        .collect()
-}
-
 /// Every impact-view chart of the four embedded balls, in the sizes the explorer gives them
 /// at the five terminal sizes.
 #[test]
@@ -72,7 +61,7 @@ fn no_legend_hides_a_charts_data() {
                     failures.push(format!(
                         "ball {i} {w}×{h} {chart:?}: hides {}\n{}",
                         hidden.join(" "),
-                        screen(&buf)
+                        buffer_text(&buf)
                     ));
                 }
             }

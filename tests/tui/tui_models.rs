@@ -8,6 +8,7 @@
 use crate::tui_common;
 
 use crate::common;
+use common::argv_with;
 
 use bouncelab::peers::PeerModel;
 use bouncelab::preset::Preset;
@@ -293,17 +294,10 @@ fn the_damping_on_screen_is_what_bouncelab_peers_gives() {
         let app = models_view(i, true);
         let data = app.models().unwrap();
         let v0 = app.setting().params.v0;
-        let cli = common::json(&[
-            "peers",
-            "--preset",
-            name,
-            "--v0",
-            &v0.to_string(),
-            "--cor",
-            &data.target.to_string(),
-            "--format",
-            "json",
-        ]);
+        let cli = common::json(&argv_with(
+            "peers --preset {} --v0 {} --cor {} --format json",
+            &[name, &v0.to_string(), &data.target.to_string()],
+        ));
         assert_eq!(common::f(&cli, "target_cor"), data.target);
         let rows = cli["models"].as_array().unwrap();
         assert_eq!(rows.len(), data.rows.len() + 1, "and the C–Y row");

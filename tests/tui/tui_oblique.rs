@@ -3,9 +3,9 @@
 //! and its keys through `update`.
 
 use crate::common;
+use crate::common::embedded;
 use crate::tui_common;
 
-use bouncelab::preset::Preset;
 use bouncelab::tui::action::Mode;
 use bouncelab::tui::app::{App, View};
 use bouncelab::tui::views::oblique::map::{Quantity, angle_at, friction_at};
@@ -14,13 +14,6 @@ use ratatui::crossterm::event::KeyCode;
 use ratatui::style::Color;
 use serde_json::Value;
 use tui_common::*;
-
-fn preset(name: &str) -> Preset {
-    Preset::embedded_all()
-        .into_iter()
-        .find(|p| p.name == name)
-        .unwrap()
-}
 
 /// Type `text` and Enter into the entry `=` opens.
 fn enter(app: &mut App, text: &str) {
@@ -32,7 +25,7 @@ fn enter(app: &mut App, text: &str) {
 /// The tennis ball at 25 m/s in the oblique view at θ 16°, ω 300 rad/s, μ 0.6: the issue's
 /// example, set by typed entries.
 fn tennis_example(color: bool) -> App {
-    let mut app = App::new(preset("tennis"), color);
+    let mut app = App::new(embedded("tennis"), color);
     press(&mut app, &[KeyCode::Char('v')]);
     enter(&mut app, "25");
     press(&mut app, &[KeyCode::Char('i')]);
@@ -93,11 +86,6 @@ fn map_at_every_size_in_colour_and_without() {
             insta::assert_snapshot!(name, t.backend());
         }
     }
-}
-
-/// Whether `a` and `b` agree to 1e-12 relative (1e-12 absolute near zero).
-fn close(a: f64, b: f64) -> bool {
-    (a - b).abs() <= 1e-12 * a.abs().max(b.abs()).max(1.0)
 }
 
 #[test]
@@ -194,7 +182,7 @@ fn a_map_cell_is_the_command_line_s_impact() {
 
 #[test]
 fn keys_step_select_and_type_in_the_library_s_ranges() {
-    let mut app = App::new(preset("tennis"), false);
+    let mut app = App::new(embedded("tennis"), false);
     assert_eq!(app.mode(), Mode::Normal);
     press(&mut app, &[KeyCode::Char('i')]);
     assert_eq!((app.view(), app.mode()), (View::Oblique, Mode::Oblique));
@@ -274,7 +262,7 @@ fn keys_step_select_and_type_in_the_library_s_ranges() {
 /// any law: `frictions_equal_solve`).
 #[test]
 fn other_laws_run_in_the_view_and_its_map() {
-    let mut app = App::new(preset("golf"), false);
+    let mut app = App::new(embedded("golf"), false);
     type_keys(&mut app, "c");
     let law = app.setting().law;
     assert_ne!(law, bouncelab::ContactLaw::Linear);
@@ -294,7 +282,7 @@ fn other_laws_run_in_the_view_and_its_map() {
 #[test]
 fn a_grip_shows_the_friction_reversal() {
     // the superball at 40° grips: its friction force reverses during contact (Cross 2002)
-    let mut app = App::new(preset("superball"), false);
+    let mut app = App::new(embedded("superball"), false);
     press(&mut app, &[KeyCode::Char('i')]);
     enter(&mut app, "40");
     press(&mut app, &[KeyCode::Char('k')]);
@@ -311,7 +299,7 @@ fn a_grip_shows_the_friction_reversal() {
 #[test]
 fn the_map_goes_to_the_worker_and_is_asked_again_after_a_cancel() {
     use bouncelab::tui::app::Effect;
-    let mut app = App::new(preset("tennis"), false).with_background_sweeps();
+    let mut app = App::new(embedded("tennis"), false).with_background_sweeps();
     let asked = |effects: &[Effect]| {
         effects
             .iter()
@@ -351,7 +339,7 @@ fn the_map_goes_to_the_worker_and_is_asked_again_after_a_cancel() {
 fn the_map_that_comes_back_while_the_terminal_is_too_small_is_taken() {
     use bouncelab::tui::action::Action;
     use bouncelab::tui::app::Effect;
-    let mut app = App::new(preset("tennis"), false).with_background_sweeps();
+    let mut app = App::new(embedded("tennis"), false).with_background_sweeps();
     let job = press(&mut app, &[KeyCode::Char('i')])
         .into_iter()
         .find_map(|e| match e {

@@ -3,9 +3,9 @@
 //! files headed by `y`'s `bouncelab oblique` line and the impact's numbers, the series the
 //! very history the view holds.
 
+use crate::common::embedded;
 use crate::tui_common;
 
-use bouncelab::preset::Preset;
 use bouncelab::tui::action::Action;
 use bouncelab::tui::app::{App, View};
 use bouncelab::tui::export;
@@ -14,10 +14,7 @@ use std::fs;
 use tui_common::*;
 
 fn tennis() -> App {
-    let p = Preset::embedded_all()
-        .into_iter()
-        .find(|p| p.name == "tennis")
-        .unwrap();
+    let p = embedded("tennis");
     let mut app = App::new(p, false);
     press(&mut app, &[KeyCode::Char('i')]);
     assert_eq!(app.view(), View::Oblique);

@@ -4,9 +4,10 @@
 //! that computes the impact the view shows.
 
 use crate::common;
+use crate::common::embedded;
 use crate::tui_common;
+use common::argv_with;
 
-use bouncelab::preset::Preset;
 use bouncelab::tui::action::Mode;
 use bouncelab::tui::app::{App, View};
 use bouncelab::tui::session::Session;
@@ -18,10 +19,7 @@ use std::path::Path;
 use tui_common::*;
 
 fn tennis() -> App {
-    let p = Preset::embedded_all()
-        .into_iter()
-        .find(|p| p.name == "tennis")
-        .unwrap();
+    let p = embedded("tennis");
     App::new(p, false)
 }
 
@@ -120,21 +118,11 @@ fn k_t_and_kappa_are_set_in_the_view_with_the_command_line_s_ranges() {
     assert!(app.message().unwrap().text.contains("κ held at 1"));
     // the impact runs on them, as `bouncelab oblique --tangential-stiffness --inertia-factor`
     let r = app.oblique_view().response().unwrap().clone();
-    let out = common::bl(&[
-        "oblique",
-        "--preset",
-        "tennis",
-        "--angle",
-        "16",
-        "--friction",
-        "0.6",
-        "--tangential-stiffness",
-        &format!("{}", values(&app).tangential_stiffness.unwrap()),
-        "--inertia-factor",
-        "1",
-        "--format",
-        "json",
-    ]);
+    let out = common::bl(&argv_with(
+        "oblique --preset tennis --angle 16 --friction 0.6 --tangential-stiffness {} \
+         --inertia-factor 1 --format json",
+        &[&format!("{}", values(&app).tangential_stiffness.unwrap())],
+    ));
     assert_eq!(out.code, 0, "{}", out.stderr);
     let j: Value = serde_json::from_str(&out.stdout).unwrap();
     assert_eq!(j["spin_out"].as_f64().unwrap(), r.spin_out);

@@ -8,15 +8,11 @@ use crate::common;
 use crate::tui_common;
 
 use bouncelab::cli::Cli;
-use bouncelab::tui::app::{App, Overlay};
+use bouncelab::tui::app::Overlay;
 use clap::Parser;
 use common::{bad, f, json};
 use ratatui::crossterm::event::KeyCode;
-
-fn app_of(words: &[String]) -> App {
-    let cli = Cli::try_parse_from(words).unwrap_or_else(|e| panic!("{words:?}: {e}"));
-    cli.explore.app(&cli.choice, false).unwrap().0
-}
+use tui_common::{explorer_from, explorer_refuses};
 
 fn words(line: &str) -> Vec<String> {
     line.split_whitespace().map(String::from).collect()
@@ -37,7 +33,7 @@ const LINES: [&str; 5] = [
 #[test]
 fn the_command_line_opens_the_explorer_in_runs_state() {
     for line in LINES {
-        let app = app_of(&words(&format!("bouncelab {line}")));
+        let app = explorer_from(&format!("bouncelab {line}"));
         let mut run_args = words(&format!("run {line} --format json"));
         run_args.retain(|w| !w.is_empty());
         let args: Vec<&str> = run_args.iter().map(String::as_str).collect();
@@ -56,7 +52,7 @@ fn the_command_line_opens_the_explorer_in_runs_state() {
 #[test]
 fn the_line_y_shows_gives_the_same_state_back() {
     for line in LINES {
-        let mut app = app_of(&words(&format!("bouncelab {line}")));
+        let mut app = explorer_from(&format!("bouncelab {line}"));
         tui_common::press(&mut app, &[KeyCode::Char('y')]);
         let Overlay::Command(shown) = app.overlay().clone() else {
             panic!("no command box")
@@ -66,7 +62,7 @@ fn the_line_y_shows_gives_the_same_state_back() {
         let back = words(&shown);
         assert_eq!(back[0], "bouncelab", "{shown}");
         assert!(back[1].starts_with("--"), "no subcommand: {shown}");
-        let again = app_of(&back);
+        let again = explorer_from(&shown);
         let (a, b) = (app.setting(), again.setting());
         assert_eq!(
             (a.preset, a.law, a.radius),
@@ -110,7 +106,7 @@ fn bad_state_options_are_one_line_and_exit_2() {
 #[test]
 fn y_shows_one_unwrapped_row_and_copies_it_with_osc_52_where_allowed() {
     let line = LINES[2];
-    let mut plain = app_of(&words(&format!("bouncelab {line}")));
+    let mut plain = explorer_from(&format!("bouncelab {line}"));
     assert_eq!(plain.last_command(), None);
     let effects = plain.update(bouncelab::tui::action::Action::ShowCommand);
     assert_eq!(
@@ -120,7 +116,7 @@ fn y_shows_one_unwrapped_row_and_copies_it_with_osc_52_where_allowed() {
     );
     let screen = tui_common::screen_text(&tui_common::draw(&plain, 200, 60)).join("\n");
     assert!(screen.contains("select it with the mouse"), "{screen}");
-    let mut app = app_of(&words(&format!("bouncelab {line}"))).with_osc52(true);
+    let mut app = explorer_from(&format!("bouncelab {line}")).with_osc52(true);
     let effects = app.update(bouncelab::tui::action::Action::ShowCommand);
     let Overlay::Command(shown) = app.overlay().clone() else {
         panic!("no command box")
@@ -174,14 +170,14 @@ fn the_command_box_at_every_size() {
 fn the_target_is_part_of_the_line_y_shows() {
     let racket =
         "--preset tennis --v0 20 --target-mass 0.3 --target-stiffness 40000 --target-damping 5";
-    let app = app_of(&words(&format!("bouncelab {racket}")));
+    let app = explorer_from(&format!("bouncelab {racket}"));
     let t = app.setting().target();
     assert_eq!(
         (t.mass, t.speed, t.stiffness, t.damping),
         (0.3, 0.0, 4e4, 5.0)
     );
     // typed in the form (M in g), then `y`
-    let mut typed = app_of(&words("bouncelab --preset tennis --v0 20"));
+    let mut typed = explorer_from("bouncelab --preset tennis --v0 20");
     tui_common::press(&mut typed, &[KeyCode::Char('m')]);
     let to = bouncelab::tui::physical::Field::ALL
         .iter()
@@ -203,16 +199,10 @@ fn the_target_is_part_of_the_line_y_shows() {
         "nothing left uncarried: {:?}",
         typed.message()
     );
-    let again = app_of(&words(&shown));
+    let again = explorer_from(&shown);
     assert_eq!(again.setting().target(), typed.setting().target());
     assert_eq!(again.run().unwrap().cor, typed.run().unwrap().cor);
     // refused as the form refuses it, naming the flag
-    let cli = Cli::try_parse_from(words("bouncelab --preset tennis --target-mass 0")).unwrap();
-    let e = cli
-        .explore
-        .app(&cli.choice, false)
-        .err()
-        .unwrap()
-        .to_string();
+    let e = explorer_refuses("bouncelab --preset tennis --target-mass 0");
     assert!(e.starts_with("--target-mass: invalid M: 0 g"), "{e}");
 }

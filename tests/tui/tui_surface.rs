@@ -6,26 +6,21 @@
 //! restores it; `u` undoes it and says so.
 
 use crate::common;
+use crate::common::embedded;
 use crate::tui_common;
 
-use bouncelab::cli::Cli;
-use bouncelab::preset::Preset;
 use bouncelab::tui::action::{Action, Scroll};
 use bouncelab::tui::app::{App, Effect, Overlay, View};
 use bouncelab::tui::physical::Field;
 use bouncelab::tui::session::Session;
 use bouncelab::tui::surface::list_in;
-use clap::Parser;
 use ratatui::crossterm::event::KeyCode;
 use serde_json::Value;
 use std::path::Path;
 use tui_common::*;
 
 fn tennis() -> App {
-    let p = Preset::embedded_all()
-        .into_iter()
-        .find(|p| p.name == "tennis")
-        .unwrap();
+    let p = embedded("tennis");
     App::new(p, false)
 }
 
@@ -186,17 +181,8 @@ fn the_oblique_view_bounces_on_the_surface_and_its_line_runs_to_the_screen() {
     let out = common::bl_in(config.path(), &args);
     assert_eq!(out.code, 0, "{line}: {}", out.stderr);
     let j: Value = serde_json::from_str(&out.stdout).unwrap();
+    assert_oblique_answer_is(&app, &j, &line);
     let r = app.oblique_view().response().expect("an impact");
-    let close = |a: f64, b: f64| (a - b).abs() <= 1e-12 * a.abs().max(b.abs()).max(1.0);
-    for (k, v) in [
-        ("v_out", r.v_out),
-        ("angle_out_deg", r.angle_out_deg),
-        ("spin_out", r.spin_out),
-        ("cor_normal", r.cor_normal),
-    ] {
-        let f = j[k].as_f64().unwrap();
-        assert!(close(f, v), "{line}: {k} {f} {v}");
-    }
     // on the wall the gym's K_s makes a difference: the bounce is not the wall's
     let mut wall = tennis();
     press(&mut wall, &[KeyCode::Char('i'), KeyCode::Char('K')]);
@@ -232,22 +218,14 @@ fn y_carries_the_surface_and_the_explorer_opens_on_it_again() {
         line.contains("--surface hard-court --target-stiffness 300000 --target-damping 12"),
         "{line}"
     );
-    let cli = Cli::try_parse_from(words(&line)).unwrap_or_else(|e| panic!("{line}: {e}"));
-    let again = cli.explore.app(&cli.choice, false).unwrap().0;
+    let again = explorer_from(&line);
     assert_eq!(again.setting(), app.setting(), "{line}");
     assert_eq!(again.run().unwrap().cor, app.run().unwrap().cor);
     let text = screen_text(&draw(&app, 120, 40)).join("\n");
     assert!(text.contains("surface hard-court: rigid"), "{text}");
     assert!(text.contains("K_s 3.000e5 N/m, c_s 12 kg/s"), "{text}");
     // an unknown surface is refused, naming the flag's value
-    let cli =
-        Cli::try_parse_from(["bouncelab", "--preset", "tennis", "--surface", "moon"]).unwrap();
-    let e = cli
-        .explore
-        .app(&cli.choice, false)
-        .err()
-        .unwrap()
-        .to_string();
+    let e = explorer_refuses("bouncelab --preset tennis --surface moon");
     assert!(e.contains("moon"), "{e}");
 }
 
@@ -293,8 +271,7 @@ fn c_t_is_a_field_of_the_form_and_the_lines_carry_it() {
     // the explorer's line opens on it again
     let line = app.command_line();
     assert!(line.contains("--tangential-damping 1.5"), "{line}");
-    let cli = Cli::try_parse_from(words(&line)).unwrap_or_else(|e| panic!("{line}: {e}"));
-    let again = cli.explore.app(&cli.choice, false).unwrap().0;
+    let again = explorer_from(&line);
     assert_eq!(again.setting(), app.setting(), "{line}");
     // the oblique line carries it and runs to the screen's bounce
     press(&mut app, &[KeyCode::Char('i')]);

@@ -4,22 +4,15 @@
 //! misplaced label shows (the oblique forces axis once put `0 2 4 6` at columns 5, 62, 101,
 //! 164: "2" marked 1.9 ms). Linear and decade (log) axes alike.
 
+use crate::common::embedded;
 use crate::tui_common;
 
-use bouncelab::preset::Preset;
 use bouncelab::tui::action::Action;
 use bouncelab::tui::app::{App, View};
 use ratatui::crossterm::event::KeyCode;
 use tui_common::*;
 
 const SIZES: [(u16, u16); 5] = [(80, 24), (100, 30), (120, 40), (160, 50), (200, 60)];
-
-fn preset(name: &str) -> Preset {
-    Preset::embedded_all()
-        .into_iter()
-        .find(|p| p.name == name)
-        .unwrap()
-}
 
 /// One labelled tick read off the screen: its value and the cells its label takes along the
 /// axis (columns of an x label, the row of a y label).
@@ -176,7 +169,7 @@ fn check(name: &str, app: &mut App) -> usize {
 #[test]
 fn every_tick_label_sits_at_its_value_in_every_view_at_every_size() {
     for ball in ["tennis", "superball", "golf"] {
-        let mut app = App::new(preset(ball), false);
+        let mut app = App::new(embedded(ball), false);
         assert!(check(&format!("{ball} impact"), &mut app) >= 10);
         press(&mut app, &[KeyCode::Tab]);
         assert_eq!(app.view(), View::Sweeps);

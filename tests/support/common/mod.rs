@@ -5,10 +5,25 @@ pub mod golden;
 pub mod room;
 
 use serde_json::Value;
+use std::ffi::OsStr;
 use std::path::Path;
 use std::process::{Command, Stdio};
 
 pub const SUPERBALL: &str = include_str!("../../../presets/superball.toml");
+
+/// The balls that came with the drop tests (docs/drop.md), each fitted to the middle of its
+/// standard's window (or 0.015 under a one-sided limit): one list for the tests that run each.
+pub fn drop_test_balls() -> Vec<&'static str> {
+    argv("tennis football basketball table-tennis softball baseball-mlb softball-44")
+}
+
+/// The embedded preset `name`.
+pub fn embedded(name: &str) -> bouncelab::preset::Preset {
+    bouncelab::preset::Preset::embedded_all()
+        .into_iter()
+        .find(|p| p.name == name)
+        .unwrap_or_else(|| panic!("no embedded preset {name}"))
+}
 
 pub struct Out {
     pub code: i32,
@@ -16,27 +31,61 @@ pub struct Out {
     pub stderr: String,
 }
 
+impl Out {
+    /// Run `cmd` to its exit (not killed), its output UTF-8.
+    pub fn of(mut cmd: Command) -> Out {
+        let o = cmd.output().expect("the binary runs");
+        Out {
+            code: o.status.code().expect("exited, not killed"),
+            stdout: String::from_utf8(o.stdout).expect("UTF-8 stdout"),
+            stderr: String::from_utf8(o.stderr).expect("UTF-8 stderr"),
+        }
+    }
+}
+
+/// `bouncelab ARGS` with `config` as XDG_CONFIG_HOME (and HOME), so the user's own presets
+/// never leak into a test, and stdin closed; the caller sets the rest and runs it.
+pub fn command<S: AsRef<OsStr>>(config: &Path, args: impl IntoIterator<Item = S>) -> Command {
+    let mut cmd = Command::new(env!("CARGO_BIN_EXE_bouncelab"));
+    cmd.args(args)
+        .env("XDG_CONFIG_HOME", config)
+        .env("HOME", config)
+        .stdin(Stdio::null());
+    cmd
+}
+
+/// [`command`] run in `dir`, which is its config folder too.
+pub fn command_in<S: AsRef<OsStr>>(dir: &Path, args: impl IntoIterator<Item = S>) -> Command {
+    let mut cmd = command(dir, args);
+    cmd.current_dir(dir);
+    cmd
+}
+
 /// Run the binary with `config` as XDG_CONFIG_HOME (and HOME), so the user's own presets never
 /// leak into a test.
 pub fn bl_in(config: &Path, args: &[&str]) -> Out {
-    let o = Command::new(env!("CARGO_BIN_EXE_bouncelab"))
-        .args(args)
-        .env("XDG_CONFIG_HOME", config)
-        .env("HOME", config)
-        .stdin(Stdio::null())
-        .output()
-        .expect("the binary runs");
-    Out {
-        code: o.status.code().expect("exited, not killed"),
-        stdout: String::from_utf8(o.stdout).expect("UTF-8 stdout"),
-        stderr: String::from_utf8(o.stderr).expect("UTF-8 stderr"),
-    }
+    Out::of(command(config, args))
 }
 
 /// A command line as typed, split at its spaces: `argv("drop --preset golf --bounces 1")`
 /// (for arguments that hold no space themselves).
 pub fn argv(line: &str) -> Vec<&str> {
     line.split_whitespace().collect()
+}
+
+/// [`argv`] with each `{}` word replaced by the next of `values`, which are passed whole (a
+/// path may hold a space): `argv_with("fit --drop-test {} --free k_r", &[&path])`.
+pub fn argv_with<'a>(line: &'a str, values: &[&'a str]) -> Vec<&'a str> {
+    let mut values = values.iter();
+    let words: Vec<&str> = argv(line)
+        .into_iter()
+        .map(|w| match w {
+            "{}" => values.next().expect("a value for every {}"),
+            w => w,
+        })
+        .collect();
+    assert!(values.next().is_none(), "more values than {{}} in {line:?}");
+    words
 }
 
 pub fn bl(args: &[&str]) -> Out {
@@ -151,10 +200,7 @@ pub fn baseball_with_fit(
     covariance: impl Fn(f64, f64) -> String,
     dof: u32,
 ) -> tempfile::TempDir {
-    let base = bouncelab::preset::Preset::embedded_all()
-        .into_iter()
-        .find(|p| p.name == "baseball")
-        .unwrap();
+    let base = embedded("baseball");
     let text = base
         .to_toml(&[])
         .replace("name = \"baseball\"", &format!("name = \"{name}\""));
@@ -175,19 +221,7 @@ pub fn baseball_with_fit(
 
 /// Run with `dir` as working folder (and config home): paths in `args` are relative to it.
 pub fn bl_at(dir: &Path, args: &[&str]) -> Out {
-    let o = std::process::Command::new(env!("CARGO_BIN_EXE_bouncelab"))
-        .args(args)
-        .current_dir(dir)
-        .env("XDG_CONFIG_HOME", dir)
-        .env("HOME", dir)
-        .stdin(std::process::Stdio::null())
-        .output()
-        .expect("the binary runs");
-    Out {
-        code: o.status.code().expect("exited"),
-        stdout: String::from_utf8(o.stdout).unwrap(),
-        stderr: String::from_utf8(o.stderr).unwrap(),
-    }
+    Out::of(command_in(dir, args))
 }
 
 pub fn ok_at(dir: &Path, args: &[&str]) -> String {

@@ -2,7 +2,10 @@
 //! fit is not told: what the recovery tests fit back.
 #![allow(dead_code)]
 
+mod force;
 pub mod oblique;
+
+pub use force::force_at;
 
 use bouncelab::analysis::fit::Estimate;
 use bouncelab::measured::{CorPoint, Trace};
@@ -61,14 +64,7 @@ pub fn trace(
     let mut text = String::from("# synthetic\ntime_ms;force_N\n");
     for i in 0..n {
         let t = -1.7e-3 + i as f64 * dt;
-        let s = t - offset;
-        let f = if s <= 0.0 || s >= tf {
-            0.0
-        } else {
-            let k = ((s / h.t[1]) as usize).min(h.t.len() - 2);
-            let w = (s - h.t[k]) / (h.t[k + 1] - h.t[k]);
-            h.force[k] * (1.0 - w) + h.force[k + 1] * w
-        };
+        let f = force_at(h, tf, t - offset);
         text.push_str(&format!(
             "{};{}\n",
             t * 1e3,

@@ -12,7 +12,7 @@ use rustix::termios::{Termios, Winsize, tcgetattr, tcsetwinsize};
 use std::fs::File;
 use std::io::{ErrorKind, Read, Write};
 use std::os::unix::process::{CommandExt, ExitStatusExt};
-use std::path::Path;
+use std::path::{Path, PathBuf};
 use std::process::{Child, Command, ExitStatus, Stdio};
 use std::sync::mpsc::{Receiver, RecvTimeoutError, channel};
 use std::time::{Duration, Instant};
@@ -38,6 +38,19 @@ pub struct Explorer {
     seen: usize,
     /// The terminal's settings before the child started.
     pub before: Termios,
+}
+
+/// `bouncelab figure cor-zeta --law hertz --points POINTS --out HOME/slow.svg` under a pty with
+/// `home` as its config: 3 × POINTS Hertz-law impacts behind a progress bar (`/600 impacts` at
+/// 200 points), some seconds of work in a debug build; the figure's path.
+pub fn slow_figure(home: &Path, points: u32) -> (Explorer, PathBuf) {
+    let out = home.join("slow.svg");
+    let points = points.to_string();
+    let path = out.to_str().unwrap();
+    let args = [
+        "figure", "cor-zeta", "--law", "hertz", "--points", &points, "--out", path,
+    ];
+    (Explorer::spawn(home, None, &args), out)
 }
 
 /// The mode flags of a terminal, which raw mode changes (rustix's `Termios` has no `==`).

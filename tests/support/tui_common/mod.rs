@@ -2,9 +2,11 @@
 //! as the event loop sends them, and the screen drawn into a `TestBackend`.
 #![allow(dead_code)]
 
+use bouncelab::cli::Cli;
 use bouncelab::tui::action;
 use bouncelab::tui::app::{App, Effect};
 use bouncelab::tui::export::ExportRequest;
+use clap::Parser;
 use ratatui::Terminal;
 use ratatui::backend::TestBackend;
 use ratatui::buffer::Buffer;
@@ -68,6 +70,49 @@ pub fn file_names(files: &[PathBuf]) -> Vec<String> {
         .iter()
         .map(|f| f.file_name().unwrap().to_string_lossy().into_owned())
         .collect()
+}
+
+/// The explorer `LINE` opens (`bouncelab …`, split at its spaces), as the binary would.
+pub fn explorer_from(line: &str) -> App {
+    let cli =
+        Cli::try_parse_from(line.split_whitespace()).unwrap_or_else(|e| panic!("{line}: {e}"));
+    match cli.explore.app(&cli.choice, false) {
+        Ok((app, _)) => app,
+        Err(e) => panic!("{line}: {e}"),
+    }
+}
+
+/// Why the explorer refuses to open on `LINE` (`bouncelab …`, split at its spaces).
+pub fn explorer_refuses(line: &str) -> String {
+    let cli =
+        Cli::try_parse_from(line.split_whitespace()).unwrap_or_else(|e| panic!("{line}: {e}"));
+    match cli.explore.app(&cli.choice, false) {
+        Ok(_) => panic!("{line}: the explorer opened"),
+        Err(e) => e.to_string(),
+    }
+}
+
+/// Whether `a` and `b` agree to 1e-12 relative (1e-12 absolute near zero): the explorer's
+/// numbers against its command line's, which run the same code.
+pub fn close(a: f64, b: f64) -> bool {
+    (a - b).abs() <= 1e-12 * a.abs().max(b.abs()).max(1.0)
+}
+
+/// The oblique view's answer (speed, angle and spin out, normal COR) is the one its command
+/// line `line` printed as JSON, `j`, to [`close`].
+pub fn assert_oblique_answer_is(app: &App, j: &serde_json::Value, line: &str) {
+    let r = app.oblique_view().response().expect("an impact");
+    for (k, v) in [
+        ("v_out", r.v_out),
+        ("angle_out_deg", r.angle_out_deg),
+        ("spin_out", r.spin_out),
+        ("cor_normal", r.cor_normal),
+    ] {
+        let f = j[k]
+            .as_f64()
+            .unwrap_or_else(|| panic!("{line}: {k} is not a number"));
+        assert!(close(f, v), "{line}: {k} {f} {v}");
+    }
 }
 
 /// A buffer's rows as text, each ended by a newline.
