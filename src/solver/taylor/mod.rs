@@ -154,15 +154,25 @@ fn power_law(n: &Normalized, law: ContactLaw) -> Option<Summary> {
     let mut c = [[0.0; POWER_LEN]; 4];
     let mut scratch = [[0.0; POWER_LEN]; 2];
     loop {
-        if !impact.take_step() {
+        if !next_series(&mut impact, &mut c, &mut scratch) {
             return None;
         }
-        let coefs = power::Coefs::of(&impact.sys, &impact.phase.br);
-        series_one(coefs, impact.phase.x, &mut c, &mut scratch);
         if let stages::Progress::Done(summary) = impact.feed(&c) {
             return summary;
         }
     }
+}
+
+/// The next Taylor step of `impact` (`stages::PowerImpact::take_step`) and its series into
+/// `c`; false where there is none (steps or budget run out, a stiff phase).
+#[inline]
+fn next_series(impact: &mut stages::PowerImpact, c: &mut Series, scratch: &mut Scratch) -> bool {
+    if !impact.take_step() {
+        return false;
+    }
+    let coefs = power::Coefs::of(&impact.sys, &impact.phase.br);
+    series_one(coefs, impact.phase.x, c, scratch);
+    true
 }
 
 /// [`peak_displacement`]'s stiffness cut: 50 × [`STIFF`]. The steps it takes grow with the
@@ -192,11 +202,9 @@ pub fn peak_displacement(n: &Normalized, law: ContactLaw) -> Option<f64> {
     let mut c = [[0.0; POWER_LEN]; 4];
     let mut scratch = [[0.0; POWER_LEN]; 2];
     loop {
-        if !impact.take_step() {
+        if !next_series(&mut impact, &mut c, &mut scratch) {
             return None;
         }
-        let coefs = power::Coefs::of(&impact.sys, &impact.phase.br);
-        series_one(coefs, impact.phase.x, &mut c, &mut scratch);
         if let Some(alpha) = impact.phase.centre_turn(&c) {
             return Some(alpha * impact.scale());
         }
