@@ -103,6 +103,16 @@ struct Point {
     y: f64,
 }
 
+impl Point {
+    /// First touch at unit speed: nothing indented, the element at rest.
+    const FIRST_TOUCH: Point = Point {
+        tau: 0.0,
+        z: 0.0,
+        v: 1.0,
+        y: 0.0,
+    };
+}
+
 /// The steps left to an impact, and its longest contact.
 #[derive(Debug, Clone, Copy)]
 struct Budget {
@@ -256,13 +266,7 @@ fn hertz_start() -> (power::Branch, Point) {
         b: 1.0,
         a: 1.0,
     };
-    let start = Point {
-        tau: 0.0,
-        z: 0.0,
-        v: 1.0,
-        y: 0.0,
-    };
-    (hertz, start)
+    (hertz, Point::FIRST_TOUCH)
 }
 
 /// The Hertz impact in the Hertz scale (κ̂ = 1, unit speed) at (λ̂, ζ̂), by the Taylor steps
@@ -305,14 +309,8 @@ fn linear_flattening(n: &Normalized) -> Option<Summary> {
         z0: 0.0,
         f0: 0.0,
     };
-    let start = Point {
-        tau: 0.0,
-        z: 0.0,
-        v: 1.0,
-        y: 0.0,
-    };
     let linear::End::Turned(top) =
-        linear::run::<{ poly::LEN }>(&sys, &load, start, None, &mut budget)?
+        linear::run::<{ poly::LEN }>(&sys, &load, Point::FIRST_TOUCH, None, &mut budget)?
     else {
         return None;
     };
