@@ -392,4 +392,4 @@ fn process_gone(pid: u32) -> bool {
 }
 
 #[cfg(test)]
-mod tests;
+pub(crate) mod tests;

@@ -135,18 +135,7 @@ fn group_rows(
     let mut first_line: HashMap<String, usize> = HashMap::new();
     for row in lines {
         let row = row?;
-        if row.cells.len() != fields {
-            let last = row.cells.last();
-            return Err(MeasuredError::at(
-                last.map_or(row.line, |c| c.line),
-                last.map_or(1, |c| c.column),
-                format!(
-                    "{} fields, but the header names {fields} (separator '{}')",
-                    row.cells.len(),
-                    char::from(sep).escape_default()
-                ),
-            ));
-        }
+        rows::check_width(&row, fields, sep)?;
         let cell = &row.cells[id_col];
         let (ln, col) = (cell.line, cell.column);
         let id = cell.text.clone();

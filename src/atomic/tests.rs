@@ -2,7 +2,8 @@
 
 use super::*;
 
-fn entries(dir: &Path) -> Vec<String> {
+/// The names in `dir`, sorted: what a writer left there (also the catalog's tests').
+pub(crate) fn entries(dir: &Path) -> Vec<String> {
     let mut v: Vec<String> = fs::read_dir(dir)
         .unwrap()
         .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())

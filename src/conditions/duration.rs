@@ -22,20 +22,7 @@ const UNITS: [(&str, f64); 9] = [
 /// `d`/`day`/`days`, `w`), with or without a space between. Refused, naming `field`: no
 /// number, a negative or non-finite time.
 pub fn parse(field: &str, text: &str) -> Result<f64, String> {
-    let t = text.trim();
-    let lower = t.to_ascii_lowercase();
-    let shown = crate::sanitize::line(t);
-    let (number, scale) = UNITS
-        .iter()
-        .find(|(unit, _)| lower.ends_with(unit))
-        .map(|(unit, scale)| (&t[..t.len() - unit.len()], *scale))
-        .unwrap_or((t, 1.0));
-    let x = crate::text::parse::read(number.trim_end()).map_err(|why| {
-        format!(
-            "invalid {field}: {}",
-            crate::text::parse::refusal(&shown, why)
-        )
-    })?;
+    let (x, scale, shown) = super::with_unit(field, text, &UNITS)?;
     let seconds = x * scale;
     if !seconds.is_finite() || seconds < 0.0 {
         return Err(format!(

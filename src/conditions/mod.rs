@@ -16,6 +16,34 @@ pub mod inflated;
 pub mod leak;
 pub mod pressure;
 
+/// A quantity as users type it, a number and an optional unit from `units` (lower case; of
+/// two that end alike the longer first), matched case-insensitively at its end, with or
+/// without a space between: (the number, the unit's size, the text as messages show it).
+/// A number the command line's own reader refuses (`text::parse::read`) is refused naming
+/// `field`; the caller checks the quantity's own domain. [`pressure::parse`] and
+/// [`duration::parse`] read by it.
+fn with_unit<'t>(
+    field: &str,
+    text: &'t str,
+    units: &[(&str, f64)],
+) -> Result<(f64, f64, std::borrow::Cow<'t, str>), String> {
+    let t = text.trim();
+    let lower = t.to_ascii_lowercase();
+    let (number, scale) = units
+        .iter()
+        .find(|(unit, _)| lower.ends_with(unit))
+        .map(|(unit, scale)| (&t[..t.len() - unit.len()], *scale))
+        .unwrap_or((t, 1.0));
+    let shown = crate::sanitize::line(t);
+    match crate::text::parse::read(number) {
+        Ok(x) => Ok((x, scale, shown)),
+        Err(why) => Err(format!(
+            "invalid {field}: {}",
+            crate::text::parse::refusal(&shown, why)
+        )),
+    }
+}
+
 /// The standard atmosphere, Pa (ISO 2533; the pressure a gauge reading is relative to unless
 /// the user gives another).
 pub const STANDARD_ATMOSPHERE: f64 = 101_325.0;

@@ -26,30 +26,12 @@ const UNITS: [(&str, f64); 8] = [
 /// `text::parse::read`) and an optional unit from `Pa, hPa, kPa, MPa, mbar, bar, psi, atm`,
 /// with or without a space between. `field` names the flag in the message.
 pub fn parse(field: &str, text: &str) -> Result<f64, String> {
-    let t = text.trim();
-    let lower = t.to_ascii_lowercase();
-    let (number, scale) = UNITS
-        .iter()
-        .find(|(unit, _)| lower.ends_with(unit))
-        .map(|(unit, scale)| (&t[..t.len() - unit.len()], *scale))
-        .unwrap_or((t, 1.0));
-    let shown = crate::sanitize::line(t);
-    let x = crate::text::parse::read(number)
-        .map_err(|why| {
-            format!(
-                "invalid {field}: {}",
-                crate::text::parse::refusal(&shown, why)
-            )
-        })
-        .and_then(|x| {
-            if x.is_finite() {
-                Ok(x)
-            } else {
-                Err(format!(
-                    "invalid {field}: {shown} (must be a finite pressure)"
-                ))
-            }
-        })?;
+    let (x, scale, shown) = super::with_unit(field, text, &UNITS)?;
+    if !x.is_finite() {
+        return Err(format!(
+            "invalid {field}: {shown} (must be a finite pressure)"
+        ));
+    }
     Ok(x * scale)
 }
 

@@ -13,6 +13,7 @@ use super::room;
 use super::ticks::{Room, Ticks, ticks};
 use super::{Figure, Marker, PALETTE, Series, Style};
 use legend::{LEGEND_ROW_PX, LEGEND_TOP_PX, draw_legend, legend_layout};
+use plotters::chart::MeshStyle;
 use plotters::element::DashedPathElement;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
@@ -82,6 +83,17 @@ pub(super) const fn px(v: i32) -> i32 {
 /// A font of `size` CSS pixels. plotters writes `font-size` as size/1.24, so undo that here.
 pub(super) fn font(size: i32) -> TextStyle<'static> {
     font_in(size, FontStyle::Normal)
+}
+
+/// The house's axes on a chart's mesh, every SVG chart's and the map's alike: descriptions
+/// and tick labels in the house's fonts, black axes, 5-pixel tick marks.
+pub(super) fn house_axes<'m, 'a, 'b, X: Ranged, Y: Ranged, DB: DrawingBackend>(
+    mesh: &'m mut MeshStyle<'a, 'b, X, Y, DB>,
+) -> &'m mut MeshStyle<'a, 'b, X, Y, DB> {
+    mesh.axis_desc_style(font(AXIS_DESC_PX))
+        .label_style(font(TICK_PX))
+        .axis_style(BLACK.stroke_width(px(1) as u32))
+        .set_all_tick_mark_size(px(5))
 }
 
 fn font_in(size: i32, style: FontStyle) -> TextStyle<'static> {
@@ -360,20 +372,18 @@ pub fn render_aligned(fig: &Figure, left: i32) -> Result<String, RenderError> {
             .build_cartesian_2d(tx.clone(), ty.clone())
             .map_err(err)?;
         let (fx, fy) = (|v: &f64| tx.label(*v), |v: &f64| ty.label(*v));
-        chart
-            .configure_mesh()
-            .x_desc(fig.x.label.as_str())
-            .y_desc(fig.y.label.as_str())
-            .x_label_formatter(&fx)
-            .y_label_formatter(&fy)
-            .axis_desc_style(font(AXIS_DESC_PX))
-            .label_style(font(TICK_PX))
-            .bold_line_style(RGBColor(218, 218, 218).stroke_width(px(1) as u32))
-            .light_line_style(RGBColor(242, 242, 242).stroke_width(px(1) as u32))
-            .axis_style(BLACK.stroke_width(px(1) as u32))
-            .set_all_tick_mark_size(px(5))
-            .draw()
-            .map_err(err)?;
+        house_axes(
+            chart
+                .configure_mesh()
+                .x_desc(fig.x.label.as_str())
+                .y_desc(fig.y.label.as_str())
+                .x_label_formatter(&fx)
+                .y_label_formatter(&fy)
+                .bold_line_style(RGBColor(218, 218, 218).stroke_width(px(1) as u32))
+                .light_line_style(RGBColor(242, 242, 242).stroke_width(px(1) as u32)),
+        )
+        .draw()
+        .map_err(err)?;
         let offsets = annotation_offsets(&chart, fig);
         // this run's marker last, over everything: never hidden under a measured marker at
         // its place (the legend keeps the series' order; issue 51 item 7)

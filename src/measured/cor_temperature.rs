@@ -3,8 +3,9 @@
 //! read by the same table reader as the COR tables (`table`: quoting, BOM, separators, line
 //! and column in every error).
 
-use super::table::{self, ColumnSpec};
-use super::{MeasuredError, check_points};
+use super::MeasuredError;
+use super::points;
+use super::table::ColumnSpec;
 
 /// One COR at a temperature, SI (°C for the temperature, as typed).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -47,35 +48,25 @@ const SPECS: [ColumnSpec; 4] = [
 /// The rows of `text`: `temperature_c,v0,cor[,cor_sd]`. Temperatures above −273.15 °C, speeds
 /// positive, CORs in [0, 1], deviations positive; at most `MAX_POINTS` rows.
 pub fn parse_cor_temperature(text: &str) -> Result<Vec<CorTemperatureRow>, MeasuredError> {
-    let p = table::read(text, &SPECS)?;
-    check_points(&p)?;
-    let at =
-        |k: usize, i: usize, why: &str| MeasuredError::at(p.lines[i], p.cell_columns[k][i], why);
-    let mut rows = Vec::with_capacity(p.lines.len());
-    for i in 0..p.lines.len() {
-        let value = |k: usize| p.columns[k][i].unwrap_or(f64::NAN);
-        let (t, v0, cor, sd) = (value(0), value(1), value(2), p.columns[3][i]);
+    let p = points::read(text, &SPECS)?;
+    points::each_row(&p, |row| {
+        let t = row.value(0);
         if t.is_nan() || t <= -crate::conditions::ZERO_CELSIUS {
-            return Err(at(0, i, "temperature must lie above −273.15 °C"));
+            return Err(row.error(0, "temperature must lie above −273.15 °C"));
         }
-        if v0.is_nan() || v0 <= 0.0 {
-            return Err(at(1, i, "v0 must be positive"));
-        }
+        let v0 = row.positive(1, "v0 must be positive")?;
+        let cor = row.value(2);
         if !(0.0..=1.0).contains(&cor) {
-            return Err(at(2, i, "cor must lie in [0, 1]"));
+            return Err(row.error(2, "cor must lie in [0, 1]"));
         }
-        if sd.is_some_and(|s| s <= 0.0) {
-            return Err(at(3, i, "cor_sd must be positive"));
-        }
-        rows.push(CorTemperatureRow {
+        Ok(CorTemperatureRow {
             temperature_c: t,
             v0,
             cor,
-            sd,
-            line: p.lines[i],
-        });
-    }
-    Ok(rows)
+            sd: row.positive_if_given(3, "cor_sd must be positive")?,
+            line: row.line(),
+        })
+    })
 }
 
 #[cfg(test)]

@@ -4,8 +4,9 @@
 //! every error). Each row gives the ITF's two numbers: μ_app = (v_x,in − v_x,out)/(v_y,in +
 //! v_y,out) and e = v_y,out/v_y,in.
 
-use super::table::{self, ColumnSpec};
-use super::{MeasuredError, check_points};
+use super::MeasuredError;
+use super::points;
+use super::table::ColumnSpec;
 
 /// One measured bounce, SI (angles in degrees).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -49,28 +50,22 @@ const SPECS: [ColumnSpec; 4] = [
 
 /// The rows of a court test table. Errors name the cell.
 pub fn parse_court(text: &str) -> Result<Vec<CourtRow>, MeasuredError> {
-    let p = table::read(text, &SPECS)?;
-    check_points(&p)?;
-    let at =
-        |k: usize, i: usize, why: String| MeasuredError::at(p.lines[i], p.cell_columns[k][i], why);
-    let value = |k: usize, i: usize, lo: f64, hi: f64, what: &str| -> Result<f64, MeasuredError> {
-        match p.columns[k][i] {
-            Some(v) if v > lo && v <= hi => Ok(v),
-            Some(v) => Err(at(k, i, format!("{} {v} must {what}", SPECS[k].name))),
-            None => Err(at(k, i, format!("{} is missing", SPECS[k].name))),
-        }
-    };
+    let p = points::read(text, &SPECS)?;
     let speed = "be a positive speed (m/s, at most 1e9)";
-    let mut rows = Vec::with_capacity(p.lines.len());
-    for i in 0..p.lines.len() {
-        rows.push(CourtRow {
-            v_in: value(0, i, 1e-9, 1e9, speed)?,
-            angle_in: value(1, i, 0.0, 89.999_999, "lie in (0, 90) degrees")?,
-            v_out: value(2, i, 1e-9, 1e9, speed)?,
-            angle_out: value(3, i, 0.0, 90.0, "lie in (0, 90] degrees")?,
-            line: p.lines[i],
-        });
-    }
+    let rows = points::each_row(&p, |row| {
+        let value = |k: usize, lo: f64, hi: f64, what: &str| match row.get(k) {
+            Some(v) if v > lo && v <= hi => Ok(v),
+            Some(v) => Err(row.error(k, format!("{} {v} must {what}", SPECS[k].name))),
+            None => Err(row.error(k, format!("{} is missing", SPECS[k].name))),
+        };
+        Ok(CourtRow {
+            v_in: value(0, 1e-9, 1e9, speed)?,
+            angle_in: value(1, 0.0, 89.999_999, "lie in (0, 90) degrees")?,
+            v_out: value(2, 1e-9, 1e9, speed)?,
+            angle_out: value(3, 0.0, 90.0, "lie in (0, 90] degrees")?,
+            line: row.line(),
+        })
+    })?;
     if rows.is_empty() {
         return Err(MeasuredError::at(1, 1, "no bounces: the table has no rows"));
     }

@@ -5,6 +5,7 @@
 //! u² = (g/κ)(e^{2κR} − 1) (docs/fitting.md).
 
 use super::MeasuredError;
+use super::points;
 use super::table::{self, ColumnSpec};
 pub use crate::drop::{Air, Flight, G};
 use crate::model::params::{MEANINGFUL_MAX, MEANINGFUL_MIN};
@@ -95,35 +96,28 @@ impl DropTest {
 
     /// [`DropTest::parse`] of a text or of rows already read (a batch's ball).
     pub fn read(src: table::Source<'_>) -> Result<DropTest, MeasuredError> {
-        let p = table::read(src, &SPECS)?;
-        super::check_points(&p)?;
-        let mut drops = Vec::with_capacity(p.lines.len());
-        for i in 0..p.lines.len() {
-            let (h, r) = (
-                p.columns[0][i].unwrap_or(0.0),
-                p.columns[1][i].unwrap_or(0.0),
-            );
-            let at =
-                |k: usize, msg: String| MeasuredError::at(p.lines[i], p.cell_columns[k][i], msg);
+        let p = points::read(src, &SPECS)?;
+        let drops = points::each_row(&p, |row| {
+            let (h, r) = (row.get(0).unwrap_or(0.0), row.get(1).unwrap_or(0.0));
             if h <= 0.0 {
-                return Err(at(0, format!("drop height {h} m must be positive")));
+                return Err(row.error(0, format!("drop height {h} m must be positive")));
             }
             // heights in the range a measurement can have, as every measured quantity
             // (`super::in_domain`): 1e-310 m is no drop, 1e300 m no rebound
             if !(MEANINGFUL_MIN..=MEANINGFUL_MAX).contains(&h) {
-                return Err(at(0, out_of_range("drop height", h)));
+                return Err(row.error(0, out_of_range("drop height", h)));
             }
             if r > 0.0 && r < MEANINGFUL_MIN {
-                return Err(at(1, out_of_range("rebound height", r)));
+                return Err(row.error(1, out_of_range("rebound height", r)));
             }
             if !(0.0..=h).contains(&r) {
-                return Err(at(
+                return Err(row.error(
                     1,
                     format!("rebound height {r} m must lie in [0, the drop height {h} m]"),
                 ));
             }
-            drops.push((h, r, p.lines[i]));
-        }
+            Ok((h, r, row.line()))
+        })?;
         Ok(DropTest { drops })
     }
 }

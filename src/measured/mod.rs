@@ -6,6 +6,7 @@
 mod court;
 mod drop;
 mod oblique;
+mod points;
 // reading a data file from disk: anyhow, which the `tui` and `cli` features bring
 mod cor_temperature;
 #[cfg(feature = "tui")]
@@ -174,15 +175,14 @@ const COR_SPECS: [ColumnSpec; 5] = [
 /// the file's fault, exit 2 at its place, not a fit with no starting point
 /// (tests/analysis/measured_readers.rs, `out_of_domain_numbers_are_named_at_their_cell`).
 fn in_domain(
-    p: &table::Parsed,
+    row: &points::Cells<'_>,
     k: usize,
-    row: usize,
     name: &str,
     max: f64,
 ) -> Result<Option<f64>, MeasuredError> {
     use crate::model::params::{MEANINGFUL_MAX, MEANINGFUL_MIN};
-    let at = |why: String| MeasuredError::at(p.lines[row], p.cell_columns[k][row], why);
-    match p.columns[k][row] {
+    let at = |why: String| row.error(k, why);
+    match row.get(k) {
         Some(v) if v <= 0.0 => Err(at(format!("{name} {v} must be positive"))),
         Some(v) if !(MEANINGFUL_MIN..=max.min(MEANINGFUL_MAX)).contains(&v) => Err(at(format!(
             "{name} {} is out of the range a measurement can have ({} … {})",
@@ -198,18 +198,6 @@ fn in_domain(
 /// ten thousand measured impacts is already far beyond any series a lab takes.
 pub const MAX_POINTS: usize = 10_000;
 
-/// A table of more than [`MAX_POINTS`] rows is refused at the first row past it.
-fn check_points(p: &table::Parsed) -> Result<(), MeasuredError> {
-    match p.lines.get(MAX_POINTS) {
-        Some(&line) => Err(MeasuredError::at(
-            line,
-            1,
-            format!("more than {MAX_POINTS} rows: a COR table or drop test is at most that"),
-        )),
-        None => Ok(()),
-    }
-}
-
 impl CorTable {
     /// Columns `v0`/`v0_m_s`/`speed`, `cor`/`e`; optional `cor_sd`, `max_force_N`,
     /// `contact_time_s` (or `_ms`, `_us`).
@@ -219,28 +207,22 @@ impl CorTable {
 
     /// [`CorTable::parse`] of a text or of rows already read (a batch's ball).
     pub fn read(src: Source<'_>) -> Result<CorTable, MeasuredError> {
-        let p = table::read(src, &COR_SPECS)?;
-        check_points(&p)?;
-        let mut points = Vec::with_capacity(p.lines.len());
-        for i in 0..p.lines.len() {
-            let cor = p.columns[1][i].unwrap_or(f64::NAN);
+        let p = points::read(src, &COR_SPECS)?;
+        let points = points::each_row(&p, |row| {
+            let cor = row.value(1);
             if !(0.0..=1.0).contains(&cor) {
-                return Err(MeasuredError::at(
-                    p.lines[i],
-                    p.cell_columns[1][i],
-                    format!("COR {cor} must lie in [0, 1]"),
-                ));
+                return Err(row.error(1, format!("COR {cor} must lie in [0, 1]")));
             }
-            points.push(CorPoint {
-                v0: in_domain(&p, 0, i, "impact speed", f64::MAX)?.unwrap_or(f64::NAN),
+            Ok(CorPoint {
+                v0: in_domain(&row, 0, "impact speed", f64::MAX)?.unwrap_or(f64::NAN),
                 cor,
-                cor_sd: in_domain(&p, 2, i, "COR standard deviation", 1.0)?,
+                cor_sd: in_domain(&row, 2, "COR standard deviation", 1.0)?,
                 cor_sd_relative: 1.0,
-                max_force: in_domain(&p, 3, i, "peak force", f64::MAX)?,
-                contact_time: in_domain(&p, 4, i, "contact time", f64::MAX)?,
-                line: p.lines[i],
-            });
-        }
+                max_force: in_domain(&row, 3, "peak force", f64::MAX)?,
+                contact_time: in_domain(&row, 4, "contact time", f64::MAX)?,
+                line: row.line(),
+            })
+        })?;
         Ok(CorTable {
             points,
             end_line: p.end_line,

@@ -3,8 +3,9 @@
 //! table reader as the COR tables (`table`: quoting, BOM, separators, line and column in
 //! every error).
 
-use super::table::{self, ColumnSpec};
-use super::{MeasuredError, check_points};
+use super::MeasuredError;
+use super::points;
+use super::table::ColumnSpec;
 
 /// One measured oblique bounce, SI.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -61,84 +62,69 @@ const SPECS: [ColumnSpec; 6] = [
 /// The rows of an oblique-bounce table; `spin_out` is given on every row or on none (a fit
 /// of κ needs it throughout). Errors name the cell.
 pub fn parse_oblique(text: &str) -> Result<Vec<ObliqueRow>, MeasuredError> {
-    let p = table::read(text, &SPECS)?;
-    check_points(&p)?;
-    let at =
-        |k: usize, i: usize, why: String| MeasuredError::at(p.lines[i], p.cell_columns[k][i], why);
-    let finite = |k: usize, i: usize| -> Result<f64, MeasuredError> {
-        match p.columns[k][i] {
-            Some(v) if v.is_finite() && v.abs() <= 1e9 => Ok(v),
-            Some(v) => Err(at(k, i, format!("{} {v} must be finite", SPECS[k].name))),
-            None => Err(at(k, i, format!("{} is missing", SPECS[k].name))),
-        }
-    };
+    let p = points::read(text, &SPECS)?;
     let spins = p.columns[5].iter().filter(|s| s.is_some()).count();
-    let mut rows = Vec::with_capacity(p.lines.len());
-    for i in 0..p.lines.len() {
-        let v0 = finite(0, i)?;
+    let rows = points::each_row(&p, |row| {
+        let finite = |k: usize| -> Result<f64, MeasuredError> {
+            match row.get(k) {
+                Some(v) if v.is_finite() && v.abs() <= 1e9 => Ok(v),
+                Some(v) => Err(row.error(k, format!("{} {v} must be finite", SPECS[k].name))),
+                None => Err(row.error(k, format!("{} is missing", SPECS[k].name))),
+            }
+        };
+        let v0 = finite(0)?;
         if v0 <= 0.0 {
-            return Err(at(0, i, format!("v0 {v0} must be positive")));
+            return Err(row.error(0, format!("v0 {v0} must be positive")));
         }
         // a speed no impact runs at is the cell's fault (exit 2 at its place), not the fit's
         // "no starting point" (exit 1; issue 54 item 9, tests/cli/field_names.rs)
         use crate::model::params::MEANINGFUL_MIN;
         if v0 < MEANINGFUL_MIN {
-            return Err(at(
+            return Err(row.error(
                 0,
-                i,
                 format!(
                     "v0 {} is out of the range a measurement can have (1e-15 … 1e9)",
                     crate::text::number(v0)
                 ),
             ));
         }
-        let angle_deg = finite(1, i)?;
+        let angle_deg = finite(1)?;
         if !(angle_deg > 0.0 && angle_deg <= 90.0) {
-            return Err(at(
-                1,
-                i,
-                format!("angle_deg {angle_deg} must lie in (0, 90]"),
-            ));
+            return Err(row.error(1, format!("angle_deg {angle_deg} must lie in (0, 90]")));
         }
         if v0 * angle_deg.to_radians().sin() < MEANINGFUL_MIN {
-            return Err(at(
+            return Err(row.error(
                 1,
-                i,
                 format!(
                     "angle_deg {}: the normal speed v0 sin θ falls below 1e-15 m/s",
                     crate::text::number(angle_deg)
                 ),
             ));
         }
-        let vy_out = finite(4, i)?;
+        let vy_out = finite(4)?;
         if vy_out < 0.0 {
-            return Err(at(
+            return Err(row.error(
                 4,
-                i,
                 format!("vy_out {vy_out} must be ≥ 0 (away from the surface)"),
             ));
         }
-        let spin_out = match p.columns[5][i] {
-            Some(_) => Some(finite(5, i)?),
+        let spin_out = match row.get(5) {
+            Some(_) => Some(finite(5)?),
             None if spins > 0 => {
-                return Err(at(
-                    5,
-                    i,
-                    "spin_out is missing: give it on every row or on none".into(),
-                ));
+                return Err(row.error(5, "spin_out is missing: give it on every row or on none"));
             }
             None => None,
         };
-        rows.push(ObliqueRow {
+        Ok(ObliqueRow {
             v0,
             angle_deg,
-            spin_in: finite(2, i)?,
-            vx_out: finite(3, i)?,
+            spin_in: finite(2)?,
+            vx_out: finite(3)?,
             vy_out,
             spin_out,
-            line: p.lines[i],
-        });
-    }
+            line: row.line(),
+        })
+    })?;
     if rows.is_empty() {
         return Err(MeasuredError::at(p.end_line, 1, "no data rows"));
     }

@@ -4,8 +4,9 @@
 //! standard deviation; read by the same table reader as the COR tables (`table`: quoting,
 //! BOM, separators, line and column in every error).
 
-use super::table::{self, ColumnSpec};
-use super::{MeasuredError, check_points};
+use super::MeasuredError;
+use super::points;
+use super::table::ColumnSpec;
 use crate::conditions::pressure::PSI;
 
 /// One pressure reading, SI.
@@ -63,33 +64,20 @@ const SPECS: [ColumnSpec; 3] = [
 /// `pressure_sd_…` in the same units. Times must not be negative, pressures finite, standard
 /// deviations positive; at most `MAX_POINTS` rows.
 pub fn parse_pressure(text: &str) -> Result<Vec<PressureRow>, MeasuredError> {
-    let p = table::read(text, &SPECS)?;
-    check_points(&p)?;
-    let at =
-        |k: usize, i: usize, why: String| MeasuredError::at(p.lines[i], p.cell_columns[k][i], why);
-    let mut rows = Vec::with_capacity(p.lines.len());
-    for i in 0..p.lines.len() {
-        let time = p.columns[0][i].unwrap_or(f64::NAN);
+    let p = points::read(text, &SPECS)?;
+    points::each_row(&p, |row| {
+        let time = row.value(0);
         if time.is_nan() || time < 0.0 {
             // the cell is named by its place: its value in SI would not read as typed
-            return Err(at(0, i, "time must not be negative".into()));
+            return Err(row.error(0, "time must not be negative"));
         }
-        let sd = p.columns[2][i];
-        if sd.is_some_and(|s| s <= 0.0) {
-            return Err(at(
-                2,
-                i,
-                "pressure standard deviation must be positive".into(),
-            ));
-        }
-        rows.push(PressureRow {
+        Ok(PressureRow {
             time,
-            gauge: p.columns[1][i].unwrap_or(f64::NAN),
-            sd,
-            line: p.lines[i],
-        });
-    }
-    Ok(rows)
+            sd: row.positive_if_given(2, "pressure standard deviation must be positive")?,
+            gauge: row.value(1),
+            line: row.line(),
+        })
+    })
 }
 
 #[cfg(test)]

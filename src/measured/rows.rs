@@ -251,6 +251,24 @@ impl Iterator for Rows<'_> {
     }
 }
 
+/// A row with as many cells as the header names (`fields`), or an error at its last cell
+/// naming both counts and the separator `sep` the rows were read with.
+pub fn check_width(row: &Row, fields: usize, sep: u8) -> Result<(), MeasuredError> {
+    if row.cells.len() == fields {
+        return Ok(());
+    }
+    let last = row.cells.last();
+    Err(MeasuredError::at(
+        last.map_or(row.line, |c| c.line),
+        last.map_or(1, |c| c.column),
+        format!(
+            "{} fields, but the header names {fields} (separator '{}')",
+            row.cells.len(),
+            char::from(sep).escape_default()
+        ),
+    ))
+}
+
 fn is_blank_or_comment(row: &Row) -> bool {
     match row.cells.as_slice() {
         [only] if only.text.is_empty() => true,

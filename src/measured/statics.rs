@@ -4,8 +4,9 @@
 //! deviation (`deflection_sd_m`, `deflection_sd_mm`). Read by the same table reader as the
 //! COR tables (`table`: quoting, BOM, separators, line and column in every error).
 
-use super::table::{self, ColumnSpec};
-use super::{MeasuredError, check_points};
+use super::MeasuredError;
+use super::points;
+use super::table::ColumnSpec;
 
 /// One static deflection, SI.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -42,32 +43,16 @@ const SPECS: [ColumnSpec; 3] = [
 /// `deflection_mm`), optionally `deflection_sd_m` (`deflection_sd_mm`). Loads and deflections
 /// must be positive, standard deviations positive; at most `MAX_POINTS` rows.
 pub fn parse_static(text: &str) -> Result<Vec<StaticRow>, MeasuredError> {
-    let p = table::read(text, &SPECS)?;
-    check_points(&p)?;
-    let at =
-        |k: usize, i: usize, why: &str| MeasuredError::at(p.lines[i], p.cell_columns[k][i], why);
-    let mut rows = Vec::with_capacity(p.lines.len());
-    for i in 0..p.lines.len() {
-        let load_kg = p.columns[0][i].unwrap_or(f64::NAN);
-        // (the cell is named by its place: its value in SI would not read as typed)
-        if load_kg.is_nan() || load_kg <= 0.0 {
-            return Err(at(0, i, "load must be positive"));
-        }
-        let deflection = p.columns[1][i].unwrap_or(f64::NAN);
-        if deflection.is_nan() || deflection <= 0.0 {
-            return Err(at(1, i, "deflection must be positive"));
-        }
-        let sd = p.columns[2][i];
-        if sd.is_some_and(|s| s <= 0.0) {
-            return Err(at(2, i, "deflection standard deviation must be positive"));
-        }
-        rows.push(StaticRow {
-            load_kg,
-            deflection,
-            sd,
-            line: p.lines[i],
-        });
-    }
+    let p = points::read(text, &SPECS)?;
+    // (each cell is named by its place: its value in SI would not read as typed)
+    let rows = points::each_row(&p, |row| {
+        Ok(StaticRow {
+            load_kg: row.positive(0, "load must be positive")?,
+            deflection: row.positive(1, "deflection must be positive")?,
+            sd: row.positive_if_given(2, "deflection standard deviation must be positive")?,
+            line: row.line(),
+        })
+    })?;
     if rows.is_empty() {
         return Err(MeasuredError::at(
             p.end_line,

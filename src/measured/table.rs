@@ -157,19 +157,7 @@ fn read_rows(
                 format!("more than {MAX_ROWS} data rows: not one measurement"),
             ));
         }
-        if row.cells.len() != map.len() {
-            let last = row.cells.last();
-            return Err(MeasuredError::at(
-                last.map_or(row.line, |c| c.line),
-                last.map_or(1, |c| c.column),
-                format!(
-                    "{} fields, but the header names {} (separator '{}')",
-                    row.cells.len(),
-                    map.len(),
-                    char::from(sep).escape_default()
-                ),
-            ));
-        }
+        rows::check_width(&row, map.len(), sep)?;
         values.fill((None, 0));
         for (cell, slot) in row.cells.iter().zip(&map) {
             let (k, factor) = *slot;

@@ -12,10 +12,10 @@ use super::tangential::Mode;
 use super::{NormalMotion, Oblique, ObliqueError, Scaled, prepare};
 use crate::model::contact::ContactLaw;
 use crate::model::params::ImpactParams;
+use crate::solver::dop853::{self, EndState};
 use crate::solver::roots::brent;
 use differential_equations::interpolate::Interpolation;
-use differential_equations::methods::ExplicitRungeKutta;
-use differential_equations::ode::{ODE, solve_ode};
+use differential_equations::ode::ODE;
 use differential_equations::prelude::{ControlFlag, Solout};
 use differential_equations::solution::Solution;
 
@@ -127,17 +127,14 @@ impl<P: NormalMotion> Solout<f64, X> for Watcher<'_, '_, P> {
 }
 
 /// One DOP853 run from (τ0, x0) to τ1 into `out`.
-fn dop853<P: NormalMotion, O: Solout<f64, X>>(
+fn run_to<P: NormalMotion, O: Solout<f64, X>>(
     sys: &Sys<'_, P>,
     (t0, x0): (f64, X),
     t1: f64,
     out: &mut O,
 ) {
-    let mut m = ExplicitRungeKutta::dop853()
-        .rtol(RTOL)
-        .atol(RTOL * 1e-2)
-        .max_steps(1_000_000);
-    solve_ode(&mut m, sys, t0, t1, &x0, out).expect("DOP853 runs");
+    let ran = dop853::run(sys, (t0, &x0), t1, (RTOL, 1_000_000), out);
+    assert!(ran, "DOP853 runs");
 }
 
 /// The state at τ, integrated from (τ0, x0) in the current mode.
@@ -145,9 +142,9 @@ fn integrate_to<P: NormalMotion>(sys: &Sys<'_, P>, (t0, x0): (f64, X), t: f64) -
     if t <= t0 {
         return x0;
     }
-    let mut end = End((t0, x0));
-    dop853(sys, (t0, x0), t, &mut end);
-    end.0.1
+    let mut end = EndState(t0, x0);
+    run_to(sys, (t0, x0), t, &mut end);
+    end.1
 }
 
 /// The first τ in [τa, τb] where the switch function turns positive, every value integrated
@@ -165,27 +162,6 @@ fn locate<P: NormalMotion>(sys: &Sys<'_, P>, from: (f64, X), ta: f64, tb: f64) -
         _ => ta,
     };
     (t, integrate_to(sys, from, t))
-}
-
-/// Keeps the last state reached.
-struct End((f64, X));
-
-impl Solout<f64, X> for End {
-    fn solout<I>(
-        &mut self,
-        t_curr: f64,
-        _t_prev: f64,
-        y_curr: &X,
-        _y_prev: &X,
-        _interp: &mut I,
-        _s: &mut Solution<f64, X>,
-    ) -> ControlFlag<f64, X>
-    where
-        I: Interpolation<f64, X> + ?Sized,
-    {
-        self.0 = (t_curr, *y_curr);
-        ControlFlag::Continue
-    }
 }
 
 /// Integrate the tangential motion from ṽ_x = `vx`, Rω/v_y = `spin` at first touch over the
@@ -219,7 +195,7 @@ pub fn integrate(path: &impl NormalMotion, s: &Scaled, vx: f64, spin: f64) -> Ou
                 hit: None,
                 last: (t, x),
             };
-            dop853(&sys, (t, x), stop, &mut w);
+            run_to(&sys, (t, x), stop, &mut w);
             match w.hit {
                 Some((from, ta, tb)) => {
                     (t, x) = locate(&sys, from, ta, tb);

@@ -2,6 +2,7 @@
 //! they both return (docs/model.md §2, Eq. 6).
 
 pub mod audit;
+pub(crate) mod dop853;
 pub mod exact;
 pub(crate) mod modes;
 pub mod numeric;

@@ -20,11 +20,11 @@ use super::history::Samples;
 use super::{Outcome, Surface, horizon};
 use crate::model::contact::{Contact, ContactLaw, Unloading};
 use crate::model::params::Normalized;
+use crate::solver::dop853::{self, EndState};
 use crate::solver::roots::{brent, first_rising};
 use crate::solver::{Method, Unresolved};
 use differential_equations::interpolate::Interpolation;
-use differential_equations::methods::ExplicitRungeKutta;
-use differential_equations::ode::{ODE, solve_ode};
+use differential_equations::ode::ODE;
 use differential_equations::prelude::{ControlFlag, Solout};
 use differential_equations::solution::Solution;
 
@@ -181,33 +181,8 @@ impl Solout<f64, X> for Watcher<'_> {
     }
 }
 
-/// Keeps the last state reached.
-struct End(f64, X);
-
-impl Solout<f64, X> for End {
-    fn solout<I>(
-        &mut self,
-        t: f64,
-        _tp: f64,
-        x: &X,
-        _xp: &X,
-        _i: &mut I,
-        _s: &mut Solution<f64, X>,
-    ) -> ControlFlag<f64, X>
-    where
-        I: Interpolation<f64, X> + ?Sized,
-    {
-        (self.0, self.1) = (t, *x);
-        ControlFlag::Continue
-    }
-}
-
 fn integrate<O: Solout<f64, X>>(chain: &Chain, t0: f64, x0: X, tf: f64, out: &mut O) -> bool {
-    let mut m = ExplicitRungeKutta::dop853()
-        .rtol(RTOL)
-        .atol(RTOL * 1e-2)
-        .max_steps(MAX_STEPS);
-    t0 >= tf || solve_ode(&mut m, chain, t0, tf, &x0, out).is_ok()
+    t0 >= tf || dop853::run(chain, (t0, &x0), tf, (RTOL, MAX_STEPS), out)
 }
 
 /// The impact, any law; an error is the budget that ran out, with the phases taken.
@@ -282,7 +257,7 @@ impl Run<'_> {
         s_max = w.s_max;
         // each peak of the deflection, integrated to rather than read off the dense output
         for (tp, t0, x0) in std::mem::take(&mut w.peaks) {
-            let mut end = End(t0, x0);
+            let mut end = EndState(t0, x0);
             if integrate(chain, t0, x0, tp, &mut end) {
                 s_max = s_max.max(end.1[3]);
             }
@@ -302,7 +277,7 @@ impl Run<'_> {
             };
         };
         // the state at the event, integrated to it rather than read off the dense output
-        let mut end = End(tp, xp);
+        let mut end = EndState(tp, xp);
         if !integrate(chain, tp, xp, tc, &mut end) {
             return Err(Unresolved::Steps);
         }

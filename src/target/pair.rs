@@ -21,10 +21,10 @@
 use crate::model::contact::{Contact, ContactLaw, Unloading};
 use crate::model::params::{ImpactParams, Normalized};
 use crate::solver::Unresolved;
+use crate::solver::dop853::{self, EndState};
 use crate::solver::roots::{brent, first_rising};
 use differential_equations::interpolate::Interpolation;
-use differential_equations::methods::ExplicitRungeKutta;
-use differential_equations::ode::{ODE, solve_ode};
+use differential_equations::ode::ODE;
 use differential_equations::prelude::{ControlFlag, Solout};
 use differential_equations::solution::Solution;
 
@@ -171,32 +171,8 @@ impl Solout<f64, X> for Watcher<'_> {
     }
 }
 
-struct End(X);
-
-impl Solout<f64, X> for End {
-    fn solout<I>(
-        &mut self,
-        _t: f64,
-        _tp: f64,
-        x: &X,
-        _xp: &X,
-        _i: &mut I,
-        _s: &mut Solution<f64, X>,
-    ) -> ControlFlag<f64, X>
-    where
-        I: Interpolation<f64, X> + ?Sized,
-    {
-        self.0 = *x;
-        ControlFlag::Continue
-    }
-}
-
 fn integrate<O: Solout<f64, X>>(pair: &Pair, t0: f64, x0: X, tf: f64, out: &mut O) -> bool {
-    let mut m = ExplicitRungeKutta::dop853()
-        .rtol(RTOL)
-        .atol(RTOL * 1e-2)
-        .max_steps(MAX_STEPS);
-    t0 >= tf || solve_ode(&mut m, pair, t0, tf, &x0, out).is_ok()
+    t0 >= tf || dop853::run(pair, (t0, &x0), tf, (RTOL, MAX_STEPS), out)
 }
 
 /// The head-on impact of ball `p1` with ball `p2` (their `v0` ignored) at closing speed
@@ -258,11 +234,11 @@ pub fn solve(
                 z_f,
             });
         };
-        let mut end = End(xp);
+        let mut end = EndState(tp, xp);
         if !integrate(&pair, tp, xp, tc, &mut end) {
             return Err(Unresolved::Steps);
         }
-        (t, x) = (tc, end.0);
+        (t, x) = (tc, end.1);
         match (pair.branch, which) {
             (Branch::Loading, _) => {
                 let f = pair.force(x[0]);

@@ -103,7 +103,7 @@ fn bin(t: &[f64], f: &[f64], pulse: (f64, f64)) -> Samples {
 }
 
 #[cfg(test)]
-mod tests {
+pub(super) mod tests {
     use super::*;
 
     #[test]
@@ -133,8 +133,9 @@ mod tests {
     use crate::model::params::ImpactParams;
     use crate::solver::{SolveOptions, simulate};
 
-    /// The ball of benches/fit.rs: m = 50 g, v0 = 2 m/s, K_p = 8e4, c = 60, K_r = 1.2e5.
-    fn truth() -> ImpactParams {
+    /// The ball of benches/fit.rs: m = 50 g, v0 = 2 m/s, K_p = 8e4, c = 60, K_r = 1.2e5; the
+    /// sensitivity tests' too.
+    pub(in crate::analysis::fit) fn truth() -> ImpactParams {
         ImpactParams {
             mass: 0.05,
             k_p: 8e4,

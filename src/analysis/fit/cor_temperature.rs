@@ -219,35 +219,22 @@ pub fn fit_cor_temperature(
         .map(|p| problem.cor(c_ref, activation, p).unwrap_or(f64::NAN))
         .collect();
     let dof = points.len() - 2;
-    let lack_of_fit = if stated {
-        verdict::chi2_test(&sol.residuals, dof)
-    } else {
-        verdict::runs_test(&sol.residuals)
-    };
-    let mut no_answer = verdict::no_answer_reasons(sol.converged, &[]);
-    if lack_of_fit.as_ref().is_some_and(LackOfFit::significant) {
-        no_answer
-            .push("the CORs do not follow an Arrhenius shift of the dashpot (lack of fit)".into());
-    }
+    let (lack_of_fit, no_answer) = verdict::judge_law(
+        &sol.residuals,
+        dof,
+        stated,
+        sol.converged,
+        "the CORs do not follow an Arrhenius shift of the dashpot (lack of fit)",
+    );
     Ok(TemperatureFit {
         t_ref_c,
-        c_ref: estimate("c_ref", "kg/s", c_ref, c_ref * se(0), c_ci),
-        activation: estimate("activation_energy", "J/mol", activation, a_se, a_ci),
+        c_ref: Estimate::new("c_ref", "kg/s", c_ref, c_ref * se(0), c_ci),
+        activation: Estimate::new("activation_energy", "J/mol", activation, a_se, a_ci),
         predicted,
         dof,
         lack_of_fit,
         no_answer,
     })
-}
-
-fn estimate(name: &'static str, unit: &'static str, value: f64, se: f64, ci: [f64; 2]) -> Estimate {
-    Estimate {
-        name,
-        unit,
-        value,
-        std_error: se,
-        ci95: ci,
-    }
 }
 
 #[cfg(test)]

@@ -217,34 +217,22 @@ pub fn fit_pressure_loss(readings: &[Reading]) -> Result<LeakFit, LeakFitError> 
         .zip(&scale)
         .map(|(r, s)| r * s)
         .collect();
-    let lack_of_fit = if stated {
-        verdict::chi2_test(&sol.residuals, dof)
-    } else {
-        verdict::runs_test(&sol.residuals)
-    };
-    let mut no_answer = verdict::no_answer_reasons(sol.converged, &[]);
-    if lack_of_fit.as_ref().is_some_and(LackOfFit::significant) {
-        no_answer.push("the readings do not follow an exponential decay (lack of fit)".into());
-    }
+    let (lack_of_fit, no_answer) = verdict::judge_law(
+        &sol.residuals,
+        dof,
+        stated,
+        sol.converged,
+        "the readings do not follow an exponential decay (lack of fit)",
+    );
     Ok(LeakFit {
-        p0: estimate("p0", "Pa", p0, sp0, interval(p0, sp0, 0.0)),
-        rate: estimate("leak_rate", "1/s", k, sk, rate_ci),
+        p0: Estimate::new("p0", "Pa", p0, sp0, interval(p0, sp0, 0.0)),
+        rate: Estimate::new("leak_rate", "1/s", k, sk, rate_ci),
         half_life,
         residuals,
         dof,
         lack_of_fit,
         no_answer,
     })
-}
-
-fn estimate(name: &'static str, unit: &'static str, value: f64, se: f64, ci: [f64; 2]) -> Estimate {
-    Estimate {
-        name,
-        unit,
-        value,
-        std_error: se,
-        ci95: ci,
-    }
 }
 
 #[cfg(test)]

@@ -41,6 +41,26 @@ pub struct Estimate {
     pub ci95: [f64; 2],
 }
 
+impl Estimate {
+    /// `name` (in `unit`) fitted at `value`, its standard error `std_error` and 95 % interval
+    /// `ci95`.
+    pub fn new(
+        name: &'static str,
+        unit: &'static str,
+        value: f64,
+        std_error: f64,
+        ci95: [f64; 2],
+    ) -> Estimate {
+        Estimate {
+            name,
+            unit,
+            value,
+            std_error,
+            ci95,
+        }
+    }
+}
+
 /// A fitted ball and how well the data pin it.
 #[derive(Debug, Clone)]
 pub struct MultiFit {

@@ -161,17 +161,7 @@ mod tests {
     use super::*;
     use crate::solver::{SolveOptions, simulate};
 
-    fn ball() -> ImpactParams {
-        ImpactParams {
-            mass: 0.05,
-            k_p: 8e4,
-            damping: 60.0,
-            k_r: 1.2e5,
-            z_p: 1.0,
-            k_h: ImpactParams::k_h_matching(8e4, 1.0),
-            v0: 2.0,
-        }
-    }
+    use super::super::bins::tests::truth as ball;
 
     fn run(p: &ImpactParams) -> ImpactResponse {
         simulate(

@@ -106,6 +106,30 @@ pub fn no_answer_reasons(converged: bool, not_pinned: &[&str]) -> Vec<String> {
     why
 }
 
+/// The judgement of a fit of a law to readings (`fit --cor-temperature`,
+/// `fit --pressure-loss`): its lack-of-fit test on the `residuals` (each divided by its
+/// standard deviation) — χ² at `dof` where every reading's deviation is `stated`, the runs
+/// test otherwise — and why it gave no answer: not `converged`, or the test significant,
+/// said as `misfit`.
+pub fn judge_law(
+    residuals: &[f64],
+    dof: usize,
+    stated: bool,
+    converged: bool,
+    misfit: &str,
+) -> (Option<LackOfFit>, Vec<String>) {
+    let lack_of_fit = if stated {
+        chi2_test(residuals, dof)
+    } else {
+        runs_test(residuals)
+    };
+    let mut no_answer = no_answer_reasons(converged, &[]);
+    if lack_of_fit.as_ref().is_some_and(LackOfFit::significant) {
+        no_answer.push(misfit.to_string());
+    }
+    (lack_of_fit, no_answer)
+}
+
 /// The warning of a fit whose residuals are all zero with degrees of freedom left
 /// (`MultiFit::no_scatter`): no standard error or interval is given.
 pub const NO_SCATTER: &str = "the residuals are all zero: the data show no scatter to estimate \

@@ -12,7 +12,7 @@ use crate::figure::{Axis, Corner, Figure, GREY, Kind, Look, Marker, Series, Styl
 use crate::peers::PeerModel;
 use crate::peers::calibrate::Calibrated;
 use crate::peers::rules::Rule;
-use crate::solver::ImpactResponse;
+use crate::solver::{History, ImpactResponse};
 use crate::text::short;
 
 /// The calibrations and sweeps the models view draws, for one ball.
@@ -249,47 +249,53 @@ pub fn cor_speed(scene: &Scene) -> Figure {
 
 /// Force against time at v0: the Christoforou–Yigit impact and each peer's exact calibration.
 pub fn force_time(scene: &Scene) -> Figure {
-    let series = curves(scene, scene.models, |r| {
-        let h = &r.history;
-        h.t.iter().copied().zip(h.force.iter().copied()).collect()
-    });
-    let mut fig = Figure::new(
-        format!(
-            "Contact force against time, models calibrated: {}",
-            scene.ball.name
-        ),
-        subtitle(scene, scene.models),
+    force_against(
+        scene,
+        |h| &h.t,
+        "time",
         Axis::linear("time t (ms)", "t", 1e3),
-        Axis::linear("contact force F (N)", "force", 1.0),
-        series,
-    );
-    fig.screen_title = screen_title("F [N] vs t [ms]", scene);
-    fig
+        "F [N] vs t [ms]",
+    )
 }
 
 /// Force against the ball's displacement toward the wall at v0 — the approach δ, the overlap
 /// of a DEM code: the peers' δ (rigid flat), the Christoforou–Yigit ball's α = z + the
 /// element's displacement — with the loading and unloading loops.
 pub fn force_displacement(scene: &Scene) -> Figure {
+    let mut fig = force_against(
+        scene,
+        |h| &h.displacement,
+        "the ball's approach",
+        Axis::linear("ball displacement (approach) δ (mm)", "displacement", 1e3),
+        "F [N] vs δ [mm]",
+    );
+    fig.legend_corner = Corner::TopLeft;
+    fig
+}
+
+/// The contact force of every model against the history's column `x` (`what`, on `x_axis`),
+/// titled `screen` on the screen.
+fn force_against(
+    scene: &Scene,
+    x: fn(&History) -> &[f64],
+    what: &str,
+    x_axis: Axis,
+    screen: &str,
+) -> Figure {
     let series = curves(scene, scene.models, |r| {
         let h = &r.history;
-        h.displacement
-            .iter()
-            .copied()
-            .zip(h.force.iter().copied())
-            .collect()
+        x(h).iter().copied().zip(h.force.iter().copied()).collect()
     });
     let mut fig = Figure::new(
         format!(
-            "Contact force against the ball's approach, models calibrated: {}",
+            "Contact force against {what}, models calibrated: {}",
             scene.ball.name
         ),
         subtitle(scene, scene.models),
-        Axis::linear("ball displacement (approach) δ (mm)", "displacement", 1e3),
+        x_axis,
         Axis::linear("contact force F (N)", "force", 1.0),
         series,
     );
-    fig.screen_title = screen_title("F [N] vs δ [mm]", scene);
-    fig.legend_corner = Corner::TopLeft;
+    fig.screen_title = screen_title(screen, scene);
     fig
 }

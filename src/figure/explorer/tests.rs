@@ -6,13 +6,7 @@ use crate::preset::Preset;
 use crate::solver::{ImpactResponse, SolveOptions, simulate};
 
 fn ball(p: &Preset) -> Ball {
-    Ball {
-        name: p.name.clone(),
-        source: p.parameters.name().into(),
-        params: p.params(),
-        law: p.law,
-        measured: Some(p.measured.clone()),
-    }
+    Ball::from_preset(p, p.parameters, p.law)
 }
 
 /// A scene of `b` with this run, the current λ's curve and reference curves, nothing else.
@@ -42,21 +36,8 @@ fn scene_with<'a>(
 #[test]
 fn a_scene_without_results_draws_frames_and_says_what_is_missing() {
     let p = &Preset::embedded()[0];
-    let scene = Scene {
-        ball: ball(p),
-        balls: vec![ball(p)],
-        run: None,
-        references: Vec::new(),
-        zeta: None,
-        speed: None,
-        speed_pending: Some(20.0),
-        speed_stopped: None,
-        pinned: Vec::new(),
-        measured: &[],
-        models: None,
-        models_pending: false,
-        target: None,
-    };
+    let mut scene = scene_with(ball(p), None, None, Vec::new());
+    scene.speed_pending = Some(20.0);
     let ft = figure(Chart::ForceTime, &scene);
     assert!(ft.series.is_empty());
     assert_eq!(ft.screen_title, "Force–time · F [N] vs t [ms]");

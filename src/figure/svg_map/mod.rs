@@ -4,8 +4,8 @@
 //! page, fonts and frame as the paper's figures ([`super::svg`]).
 
 use crate::figure::svg::{
-    ANNOTATION_PX, AXIS_DESC_PX, HEIGHT, PAGE, RenderError, SIDE_PX, TICK_PX, WIDTH, draw_titles,
-    err, finish, font, px,
+    ANNOTATION_PX, HEIGHT, PAGE, RenderError, SIDE_PX, WIDTH, draw_titles, err, finish, font,
+    house_axes, px,
 };
 use crate::figure::ticks::{Room, Ticks, fitted, ticks};
 use crate::figure::{Axis, Figure, PALETTE, Role, Series, Style, colormap::viridis};
@@ -251,17 +251,15 @@ fn draw_bar(
         .build_cartesian_2d(x, bar.clone())
         .map_err(err)?;
     let fy = |v: &f64| bar.label(*v);
-    c.configure_mesh()
-        .disable_x_mesh()
-        .disable_y_mesh()
-        .y_label_formatter(&fy)
-        .y_desc(label)
-        .axis_desc_style(font(AXIS_DESC_PX))
-        .label_style(font(TICK_PX))
-        .axis_style(BLACK.stroke_width(px(1) as u32))
-        .set_all_tick_mark_size(px(5))
-        .draw()
-        .map_err(err)?;
+    house_axes(
+        c.configure_mesh()
+            .disable_x_mesh()
+            .disable_y_mesh()
+            .y_label_formatter(&fy)
+            .y_desc(label),
+    )
+    .draw()
+    .map_err(err)?;
     let n = 128;
     let step = (bar.hi - bar.lo) / n as f64;
     c.draw_series((0..n).map(|k| {
@@ -302,19 +300,17 @@ fn draw_plot(
         .map_err(err)?;
     draw_cells(&mut chart, map, field, bar)?;
     let (fx, fy) = (|v: &f64| tx.label(*v), |v: &f64| ty.label(*v));
-    chart
-        .configure_mesh()
-        .disable_mesh()
-        .x_desc(fig.x.label.as_str())
-        .y_desc(fig.y.label.as_str())
-        .x_label_formatter(&fx)
-        .y_label_formatter(&fy)
-        .axis_desc_style(font(AXIS_DESC_PX))
-        .label_style(font(TICK_PX))
-        .axis_style(BLACK.stroke_width(px(1) as u32))
-        .set_all_tick_mark_size(px(5))
-        .draw()
-        .map_err(err)?;
+    house_axes(
+        chart
+            .configure_mesh()
+            .disable_mesh()
+            .x_desc(fig.x.label.as_str())
+            .y_desc(fig.y.label.as_str())
+            .x_label_formatter(&fx)
+            .y_label_formatter(&fy),
+    )
+    .draw()
+    .map_err(err)?;
     draw_iso(&mut chart, map, v.quantity, bar, scale)?;
     if let Some(t) = v.targets {
         draw_targets(&mut chart, map, t)?;

@@ -19,8 +19,7 @@ use differential_equations::methods::{
     BackwardDifferentiationFormula, ExplicitRungeKutta, ImplicitRungeKutta, Ordinary,
 };
 use differential_equations::ode::{OrdinaryNumericalMethod, solve_ode};
-use differential_equations::prelude::{ControlFlag, Solout};
-use differential_equations::solution::Solution;
+use differential_equations::prelude::Solout;
 
 /// Step budget of DOPRI5 in one phase before the stiff integrators take the rest of it over: a
 /// phase that long is one where the dashpot, though not stiff by `STIFF`, creeps for many of
@@ -183,26 +182,5 @@ where
             steps: budget,
             failed: true,
         },
-    }
-}
-
-/// A solout that keeps only the last state reached (the end, or where the integrator gave up).
-pub(super) struct EndState(pub f64, pub X);
-
-impl Solout<f64, X> for EndState {
-    fn solout<I>(
-        &mut self,
-        t: f64,
-        _tp: f64,
-        y: &X,
-        _yp: &X,
-        _i: &mut I,
-        _s: &mut Solution<f64, X>,
-    ) -> ControlFlag<f64, X>
-    where
-        I: Interpolation<f64, X> + ?Sized,
-    {
-        (self.0, self.1) = (t, *y);
-        ControlFlag::Continue
     }
 }

@@ -3,8 +3,9 @@
 //! output, and the integration of the phase down the integrator cascade to its first
 //! confirmed event.
 
-use super::integrator::{CASCADE, EndState, Integrator, STIFF_ENTRY, solve_with};
+use super::integrator::{CASCADE, Integrator, STIFF_ENTRY, solve_with};
 use super::{ATOL_FACTOR, EVENT_SLACK, Impact, STIFF, X};
+use crate::solver::dop853::EndState;
 use crate::solver::roots::brent;
 use differential_equations::interpolate::Interpolation;
 use differential_equations::prelude::{ControlFlag, Solout};

@@ -103,6 +103,16 @@ struct Point {
     y: f64,
 }
 
+impl Point {
+    /// First touch at unit speed: nothing indented, the element at rest.
+    const FIRST_TOUCH: Point = Point {
+        tau: 0.0,
+        z: 0.0,
+        v: 1.0,
+        y: 0.0,
+    };
+}
+
 /// The steps left to an impact, and its longest contact.
 #[derive(Debug, Clone, Copy)]
 struct Budget {
@@ -154,15 +164,25 @@ fn power_law(n: &Normalized, law: ContactLaw) -> Option<Summary> {
     let mut c = [[0.0; POWER_LEN]; 4];
     let mut scratch = [[0.0; POWER_LEN]; 2];
     loop {
-        if !impact.take_step() {
+        if !next_series(&mut impact, &mut c, &mut scratch) {
             return None;
         }
-        let coefs = power::Coefs::of(&impact.sys, &impact.phase.br);
-        series_one(coefs, impact.phase.x, &mut c, &mut scratch);
         if let stages::Progress::Done(summary) = impact.feed(&c) {
             return summary;
         }
     }
+}
+
+/// The next Taylor step of `impact` (`stages::PowerImpact::take_step`) and its series into
+/// `c`; false where there is none (steps or budget run out, a stiff phase).
+#[inline]
+fn next_series(impact: &mut stages::PowerImpact, c: &mut Series, scratch: &mut Scratch) -> bool {
+    if !impact.take_step() {
+        return false;
+    }
+    let coefs = power::Coefs::of(&impact.sys, &impact.phase.br);
+    series_one(coefs, impact.phase.x, c, scratch);
+    true
 }
 
 /// [`peak_displacement`]'s stiffness cut: 50 × [`STIFF`]. The steps it takes grow with the
@@ -192,11 +212,9 @@ pub fn peak_displacement(n: &Normalized, law: ContactLaw) -> Option<f64> {
     let mut c = [[0.0; POWER_LEN]; 4];
     let mut scratch = [[0.0; POWER_LEN]; 2];
     loop {
-        if !impact.take_step() {
+        if !next_series(&mut impact, &mut c, &mut scratch) {
             return None;
         }
-        let coefs = power::Coefs::of(&impact.sys, &impact.phase.br);
-        series_one(coefs, impact.phase.x, &mut c, &mut scratch);
         if let Some(alpha) = impact.phase.centre_turn(&c) {
             return Some(alpha * impact.scale());
         }
@@ -248,13 +266,7 @@ fn hertz_start() -> (power::Branch, Point) {
         b: 1.0,
         a: 1.0,
     };
-    let start = Point {
-        tau: 0.0,
-        z: 0.0,
-        v: 1.0,
-        y: 0.0,
-    };
-    (hertz, start)
+    (hertz, Point::FIRST_TOUCH)
 }
 
 /// The Hertz impact in the Hertz scale (κ̂ = 1, unit speed) at (λ̂, ζ̂), by the Taylor steps
@@ -297,14 +309,8 @@ fn linear_flattening(n: &Normalized) -> Option<Summary> {
         z0: 0.0,
         f0: 0.0,
     };
-    let start = Point {
-        tau: 0.0,
-        z: 0.0,
-        v: 1.0,
-        y: 0.0,
-    };
     let linear::End::Turned(top) =
-        linear::run::<{ poly::LEN }>(&sys, &load, start, None, &mut budget)?
+        linear::run::<{ poly::LEN }>(&sys, &load, Point::FIRST_TOUCH, None, &mut budget)?
     else {
         return None;
     };
