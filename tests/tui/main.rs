@@ -60,5 +60,7 @@ mod tui_small_pty;
 mod tui_surface;
 mod tui_target;
 mod tui_ticks;
+mod tui_typeahead_pty;
+mod tui_walk;
 mod tui_worker_pty;
 mod tui_worker_stopped;

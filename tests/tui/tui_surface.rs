@@ -138,7 +138,10 @@ fn the_picker_lists_the_surfaces_and_puts_the_ball_on_one() {
     assert_eq!(app.setting().target_stiffness, f64::INFINITY);
     assert_eq!(app.oblique_view().values().friction, 0.6);
     let said = app.message().unwrap().text.clone();
-    assert!(said.starts_with("undone: surface gym → none"), "{said}");
+    assert!(
+        said.starts_with("undone: surface gym → steel-plate"),
+        "{said}"
+    );
     assert_eq!(app.run().unwrap().cor, before);
 }
 

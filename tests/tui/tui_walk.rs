@@ -1,0 +1,135 @@
+//! What a walk through the explorer at the five sizes found (issue 51): the readout's
+//! measured column at four digits as the model's (`0.7506` beside `0.75`), the energy
+//! residual's round-off read as 0 (`residual 2e-16`), the surface named in the impact and
+//! oblique views (the steel plate said nothing), and no frame's title touching its corner
+//! (`┌Paths · angles…`, `┌ball`).
+
+use crate::tui_common;
+
+use bouncelab::preset::Preset;
+use bouncelab::tui::action::Action;
+use bouncelab::tui::app::{App, View};
+use ratatui::crossterm::event::KeyCode;
+use tui_common::*;
+
+const SIZES: [(u16, u16); 5] = [(80, 24), (100, 30), (120, 40), (160, 50), (200, 60)];
+
+fn superball() -> App {
+    App::new(Preset::embedded().remove(0), false)
+}
+
+fn text(app: &mut App, w: u16, h: u16) -> String {
+    app.update(Action::Resize(w, h));
+    screen_text(&draw(app, w, h)).join("\n")
+}
+
+/// The readout's row of `name` ("e", "t_f ms") at 120×40, its words.
+fn result_row(app: &mut App, name: &str) -> Vec<String> {
+    let screen = text(app, 120, 40);
+    let row = screen
+        .lines()
+        .filter_map(|l| l.rsplit("││").next())
+        .find(|r| {
+            r.trim_start_matches('│')
+                .trim_start()
+                .starts_with(&format!("{name} "))
+        })
+        .unwrap_or_else(|| panic!("no row {name}\n{screen}"))
+        .to_string();
+    row.split_whitespace()
+        .filter(|w| *w != "│")
+        .map(|w| w.trim_matches('│').to_string())
+        .collect()
+}
+
+#[test]
+fn the_measured_column_has_the_models_four_digits() {
+    let mut app = superball();
+    // the superball's measured e 0.75 and t_f 3 ms (presets/superball.toml)
+    assert_eq!(result_row(&mut app, "e")[..3], ["e", "0.7506", "0.7500"]);
+    assert_eq!(
+        result_row(&mut app, "t_f")[..4],
+        ["t_f", "ms", "2.743", "3.000"]
+    );
+    // the compact readout's line at 80×24 too
+    let small = text(&mut app, 80, 24);
+    assert!(small.contains("e 0.7506 (0.7500, +0.1%)"), "{small}");
+}
+
+#[test]
+fn a_round_off_energy_residual_reads_0() {
+    let mut app = superball();
+    let screen = text(&mut app, 120, 40);
+    let line = screen
+        .lines()
+        .find(|l| l.contains("residual"))
+        .unwrap_or_else(|| panic!("{screen}"));
+    assert!(line.contains("residual 0 "), "{line}");
+}
+
+#[test]
+fn the_impact_and_oblique_views_name_the_steel_plate() {
+    let mut app = superball();
+    for (w, h) in [(100, 30), (120, 40), (160, 50), (200, 60)] {
+        let screen = text(&mut app, w, h);
+        assert!(
+            screen.contains("surface steel-plate: rigid"),
+            "impact {w}×{h}\n{screen}"
+        );
+    }
+    press(&mut app, &[KeyCode::Char('i')]);
+    assert_eq!(app.view(), View::Oblique);
+    for (w, h) in [(100, 30), (120, 40), (160, 50), (200, 60)] {
+        let screen = text(&mut app, w, h);
+        assert!(
+            screen.contains("surface steel-plate: rigid"),
+            "oblique {w}×{h}\n{screen}"
+        );
+    }
+}
+
+/// Every frame's top-left corner `┌` followed by a title's letter rather than a space or `─`.
+fn titles_on_corners(screen: &str) -> Vec<String> {
+    screen
+        .lines()
+        .flat_map(|l| l.match_indices('┌').map(move |(i, _)| &l[i..]))
+        .filter(|rest| rest.chars().nth(1).is_some_and(char::is_alphanumeric))
+        .map(|rest| rest.chars().take(24).collect())
+        .collect()
+}
+
+#[test]
+fn no_title_touches_its_frames_corner_in_any_view_at_any_size() {
+    let mut app = superball();
+    let check = |app: &mut App, what: &str| {
+        for (w, h) in SIZES {
+            let screen = text(app, w, h);
+            let bad = titles_on_corners(&screen);
+            assert!(bad.is_empty(), "{what} {w}×{h}: {bad:?}\n{screen}");
+        }
+    };
+    for view in ["impact", "sweeps", "models", "map"] {
+        check(&mut app, view);
+        press(&mut app, &[KeyCode::Tab]);
+    }
+    press(&mut app, &[KeyCode::Char('d')]);
+    assert_eq!(app.view(), View::Drop);
+    check(&mut app, "drop");
+    press(&mut app, &[KeyCode::Char('d'), KeyCode::Char('i')]);
+    assert_eq!(app.view(), View::Oblique);
+    check(&mut app, "oblique");
+    press(&mut app, &[KeyCode::Char('t')]);
+    check(&mut app, "oblique map");
+    press(
+        &mut app,
+        &[KeyCode::Char('t'), KeyCode::Char('i'), KeyCode::Char('h')],
+    );
+    assert_eq!(app.view(), View::Flight);
+    check(&mut app, "flight");
+}
+
+#[test]
+fn the_finder_finds_a_title_on_its_corner() {
+    assert_eq!(titles_on_corners("┌Paths · angles─┐").len(), 1);
+    assert!(titles_on_corners("┌ Paths · angles ─┐ ┌───┐").is_empty());
+}
