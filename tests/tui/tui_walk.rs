@@ -2,13 +2,14 @@
 //! measured column at four digits as the model's (`0.7506` beside `0.75`), the energy
 //! residual's round-off read as 0 (`residual 2e-16`), the surface named in the impact and
 //! oblique views (the steel plate said nothing), and no frame's title touching its corner
-//! (`┌Paths · angles…`, `┌ball`).
+//! (`┌Paths · angles…`, `┌ball`), a measured COR table drawn whole on COR against speed.
 
 use crate::tui_common;
 
 use bouncelab::preset::Preset;
 use bouncelab::tui::action::Action;
 use bouncelab::tui::app::{App, View};
+use bouncelab::tui::views::fit::state as measured;
 use ratatui::crossterm::event::KeyCode;
 use tui_common::*;
 
@@ -132,4 +133,34 @@ fn no_title_touches_its_frames_corner_in_any_view_at_any_size() {
 fn the_finder_finds_a_title_on_its_corner() {
     assert_eq!(titles_on_corners("┌Paths · angles─┐").len(), 1);
     assert!(titles_on_corners("┌ Paths · angles ─┐ ┌───┐").is_empty());
+}
+
+/// A cannon's COR table to 50 m/s on the superball, whose own sweep ends at 20 m/s: the
+/// COR-vs-speed chart showed the rows at 10 and 20 m/s and hid the other three.
+#[test]
+fn the_speed_chart_reaches_the_measured_tables_fastest_row() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("cannon.csv");
+    std::fs::write(
+        &path,
+        "v0,cor\n10,0.80\n20,0.76\n30,0.72\n40,0.69\n50,0.66\n",
+    )
+    .unwrap();
+    let mut app = superball().with_background_sweeps();
+    // the sweeps view: the speed chart's sweeps are asked for while it shows
+    press(&mut app, &[KeyCode::Tab]);
+    let reach = |app: &mut App| {
+        app.refresh();
+        let v: Vec<f64> = app.speed_requests().iter().map(|r| r.v_max).collect();
+        assert!(!v.is_empty());
+        v.into_iter().fold(f64::INFINITY, f64::min)
+    };
+    assert!(reach(&mut app) < 50.0, "the sweep already reaches 50 m/s");
+    let data = measured::load(&path).unwrap();
+    app.update(Action::MeasuredLoaded { path, data });
+    assert!(
+        reach(&mut app) >= 50.0,
+        "the sweep ends at {}",
+        reach(&mut app)
+    );
 }
