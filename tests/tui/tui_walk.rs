@@ -164,3 +164,26 @@ fn the_speed_chart_reaches_the_measured_tables_fastest_row() {
         reach(&mut app)
     );
 }
+
+/// The flight view's readout: its selected value marked ▶ (it was marked by reverse video
+/// alone, which a copy of the screen loses), and its key line keeping `a/w/k` whole (it
+/// broke as `· a` / `w k ·` at 120×40 and 160×50).
+#[test]
+fn the_flight_readout_marks_its_selection_and_keeps_its_keys_whole() {
+    let mut app = superball();
+    press(&mut app, &[KeyCode::Char('h')]);
+    assert_eq!(app.view(), View::Flight);
+    for (w, h) in SIZES {
+        let screen = text(&mut app, w, h);
+        assert!(screen.contains("▶v 50.00 m/s"), "{w}×{h}\n{screen}");
+        assert!(
+            !screen
+                .lines()
+                .any(|l| l.contains("· a│") || l.contains("│w k ·")),
+            "{w}×{h}\n{screen}"
+        );
+    }
+    press(&mut app, &[KeyCode::Right]);
+    let screen = text(&mut app, 120, 40);
+    assert!(screen.contains("▶elev -6.000°"), "{screen}");
+}
