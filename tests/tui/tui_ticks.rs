@@ -56,9 +56,19 @@ fn tokens(row: &[String], lo: usize, hi: usize) -> Vec<(usize, String)> {
     out
 }
 
-/// Every chart axis on the screen: (is x, its labels), found from the axes' corners `└`
-/// whose x axis runs right (`─`, `┴`) to something other than a frame's corner `┘`.
-fn axes(g: &[Vec<String>]) -> Vec<(bool, (usize, usize), Vec<Label>, usize)> {
+/// One axis read off the screen.
+struct ScreenAxis {
+    x: bool,
+    /// The axes' corner `└`: (row, column).
+    at: (usize, usize),
+    labels: Vec<Label>,
+    /// A y axis's top row (an x axis's own row).
+    top: usize,
+}
+
+/// Every chart axis on the screen, found from the axes' corners `└` whose x axis runs right
+/// (`─`, `┴`) to something other than a frame's corner `┘`.
+fn axes(g: &[Vec<String>]) -> Vec<ScreenAxis> {
     let mut out = Vec::new();
     for (r, row) in g.iter().enumerate() {
         for (c, cell) in row.iter().enumerate() {
@@ -85,7 +95,12 @@ fn axes(g: &[Vec<String>]) -> Vec<(bool, (usize, usize), Vec<Label>, usize)> {
                     })
                 })
                 .collect();
-            out.push((true, (r, c), xs, r));
+            out.push(ScreenAxis {
+                x: true,
+                at: (r, c),
+                labels: xs,
+                top: r,
+            });
             // y labels: left of the axis line, on each of its rows
             let mut ys = Vec::new();
             let mut y = r;
@@ -102,7 +117,12 @@ fn axes(g: &[Vec<String>]) -> Vec<(bool, (usize, usize), Vec<Label>, usize)> {
                     });
                 }
             }
-            out.push((false, (r, c), ys, y));
+            out.push(ScreenAxis {
+                x: false,
+                at: (r, c),
+                labels: ys,
+                top: y,
+            });
         }
     }
     out
@@ -165,7 +185,7 @@ fn check(name: &str, app: &mut App) -> usize {
     for (w, h) in SIZES {
         app.update(Action::Resize(w, h));
         let g = grid(app, w, h);
-        for (x, at, labels, top) in axes(&g) {
+        for ScreenAxis { x, at, labels, top } in axes(&g) {
             let mut bad = misplaced(&labels);
             bad.extend(unlabelled_top(x, &labels, top));
             let screen: Vec<String> = g.iter().map(|r| r.concat()).collect();
