@@ -9,30 +9,27 @@ use pty::Explorer;
 
 const DOWN: &[u8] = b"\x1b[B";
 
-#[test]
-fn keys_typed_ahead_of_the_surface_picker_pick() {
+/// The explorer sent `keys` in one write: `needle` comes, and `q q` quits it cleanly.
+fn typed_ahead(keys: &[&[u8]], needle: &str) {
     let home = tempfile::tempdir().unwrap();
     let mut x = Explorer::spawn(home.path(), None, &[]);
     x.wait_for_first_draw();
     std::thread::sleep(std::time::Duration::from_millis(300));
-    // the list: steel-plate, then concrete
-    x.send(&[b"G", DOWN, b"\r"].concat());
-    x.wait_for("surface concrete");
+    x.send(&keys.concat());
+    x.wait_for(needle);
     x.send(b"qq");
     let (status, _, _) = x.finish();
     assert!(status.success(), "{status:?}");
 }
 
 #[test]
+fn keys_typed_ahead_of_the_surface_picker_pick() {
+    // the list: steel-plate, then concrete
+    typed_ahead(&[b"G", DOWN, b"\r"], "surface concrete");
+}
+
+#[test]
 fn keys_typed_ahead_of_the_preset_picker_pick() {
-    let home = tempfile::tempdir().unwrap();
-    let mut x = Explorer::spawn(home.path(), None, &[]);
-    x.wait_for_first_draw();
-    std::thread::sleep(std::time::Duration::from_millis(300));
-    // the picker opens on the superball; the next one down is the golf ball
-    x.send(&[b"g", DOWN, b"\r"].concat());
-    x.wait_for("golf · ");
-    x.send(b"qq");
-    let (status, _, _) = x.finish();
-    assert!(status.success(), "{status:?}");
+    // the picker opens on the superball; the next one down is the golf ball (the header)
+    typed_ahead(&[b"g", DOWN, b"\r"], "golf · ");
 }
