@@ -241,7 +241,7 @@ fn y_carries_the_surface_and_the_explorer_opens_on_it_again() {
     assert_eq!(again.run().unwrap().cor, app.run().unwrap().cor);
     let text = screen_text(&draw(&app, 120, 40)).join("\n");
     assert!(text.contains("surface hard-court: rigid"), "{text}");
-    assert!(text.contains("K_s 3.000e5 N/m, c_s 12 kg/s"), "{text}");
+    assert!(text.contains("K_s 3.000e5 N/m, c_s 12.00 kg/s"), "{text}");
     // an unknown surface is refused, naming the flag's value
     let cli =
         Cli::try_parse_from(["bouncelab", "--preset", "tennis", "--surface", "moon"]).unwrap();

@@ -52,6 +52,9 @@ fn the_measured_column_has_the_models_four_digits() {
         result_row(&mut app, "t_f")[..4],
         ["t_f", "ms", "2.743", "3.000"]
     );
+    // the note of the speed they were taken at, as the v0 line above it writes v0
+    let screen = text(&mut app, 120, 40);
+    assert!(screen.contains("measured at v0 = 3.120 m/s"), "{screen}");
     // the compact readout's line at 80×24 too
     let small = text(&mut app, 80, 24);
     assert!(small.contains("e 0.7506 (0.7500, +0.1%)"), "{small}");

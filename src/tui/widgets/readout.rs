@@ -5,7 +5,6 @@
 
 use crate::preset::Preset;
 use crate::solver::{EnergyBudget, ImpactResponse};
-use crate::text::sig_trim;
 use crate::tui::format::{percent_diff, stepped, value};
 use crate::tui::param::{Dir, Param};
 use crate::tui::setting::Setting;
@@ -360,7 +359,8 @@ impl Readout<'_> {
         if m.cor.is_some() || m.max_force.is_some() || m.contact_time.is_some() {
             let elsewhere = not_compared(self.preset, self.setting).unwrap_or("");
             lines.push(Line::styled(
-                format!(" measured at v0 = {} m/s{elsewhere}", sig_trim(m.v0, 4)),
+                // v0 as the parameters above write it (3.120, not 3.12: one number format)
+                format!(" measured at v0 = {} m/s{elsewhere}", value(m.v0)),
                 theme.dim(),
             ));
         }
@@ -393,7 +393,7 @@ impl Readout<'_> {
         }
         let v = |x: f64| {
             if x.is_finite() {
-                sig_trim(x, 4)
+                value(x)
             } else {
                 "∞".into()
             }
