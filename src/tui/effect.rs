@@ -50,3 +50,21 @@ pub enum Effect {
     /// [`crate::tui::clipboard::osc52`]); a terminal without it ignores the sequence. No answer.
     Copy(String),
 }
+
+impl Effect {
+    /// Whether the loop answers this effect itself and the answer can change what the next
+    /// key does: the picker's list opens the picker, a measured file or a write may ask a
+    /// question. Keys queued behind it wait for the answer (`G` with `↓ Enter` typed ahead
+    /// picked nothing: the picker was still empty; tests/tui/tui_typeahead_pty.rs).
+    pub fn answered_before_next_key(&self) -> bool {
+        matches!(
+            self,
+            Effect::ListPresets
+                | Effect::ListSurfaces
+                | Effect::LoadMeasured(_)
+                | Effect::Save(_)
+                | Effect::SaveSession { .. }
+                | Effect::Export(_)
+        )
+    }
+}

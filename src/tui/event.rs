@@ -107,8 +107,9 @@ fn wait(app: &App) -> Duration {
 }
 
 /// Apply `next` and every event queued behind it (zero-timeout polls; after a resize the
-/// terminal is asked to announce pending input again, [`rearm_input`]), until none is left or
-/// the explorer quits; whether any came.
+/// terminal is asked to announce pending input again, [`rearm_input`]), until none is left,
+/// the explorer quits or an effect must be answered before the next key
+/// ([`Effect::answered_before_next_key`]); whether any came.
 fn apply_queued(
     mut next: Option<event::Event>,
     app: &mut App,
@@ -132,6 +133,13 @@ fn apply_queued(
             effects.extend(app.apply(a));
         }
         if app.should_quit() {
+            break;
+        }
+        if effects.iter().any(Effect::answered_before_next_key) {
+            // the keys behind it stay queued for the loop's next turn, after the answer
+            if resized {
+                rearm_input();
+            }
             break;
         }
         next = if event::poll(Duration::ZERO)? {

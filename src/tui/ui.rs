@@ -377,7 +377,7 @@ impl Widget for &App {
                     self.oblique_value(ObliqueParam::TangentialStiffness),
                     self.oblique_value(ObliqueParam::InertiaFactor),
                 ],
-                surface: surface.as_deref(),
+                surface: (&surface.0, surface.1),
                 theme,
             }
             .render(body, buf);

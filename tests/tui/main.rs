@@ -61,6 +61,8 @@ mod tui_surface;
 mod tui_surface_form;
 mod tui_target;
 mod tui_ticks;
+mod tui_typeahead_pty;
 mod tui_typed_numbers;
+mod tui_walk;
 mod tui_worker_pty;
 mod tui_worker_stopped;

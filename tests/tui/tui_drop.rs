@@ -170,10 +170,10 @@ fn the_ball_at_rest_is_round_on_its_plate() {
         app.update(Action::Resize(w, h));
         press(&mut app, &[KeyCode::Char('d')]);
         let rows = screen_text(&draw(&app, w, h));
-        let top = rows.iter().position(|r| r.contains("┌ball")).unwrap();
+        let top = rows.iter().position(|r| r.contains("┌ ball ")).unwrap();
         let x = rows[top].chars().collect::<Vec<_>>();
         let left = (0..x.len())
-            .find(|&i| x[i] == '┌' && x[i + 1..].starts_with(&['b', 'a', 'l', 'l']))
+            .find(|&i| x[i] == '┌' && x[i + 1..].starts_with(&[' ', 'b', 'a', 'l', 'l']))
             .unwrap();
         let right = (left + 1..x.len()).find(|&i| x[i] == '┐').unwrap();
         let inner: Vec<String> = rows[top + 1..]

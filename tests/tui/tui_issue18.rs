@@ -176,7 +176,7 @@ fn measured_values_are_compared_and_drawn_only_at_their_speed() {
     let rows = screen_text(&draw(&app, 120, 40));
     let text = rows.join("\n");
     assert!(
-        readout_panel(&rows).contains("measured at v0 = 3.12 m/s: not compared"),
+        readout_panel(&rows).contains("measured at v0 = 3.120 m/s: not compared"),
         "{text}"
     );
     assert!(

@@ -146,7 +146,7 @@ fn flattened_superball_with_a_pinned_ghost() {
 fn no_measured_speed_without_measurements() {
     let text_of = |p: Preset| buffer_text(draw(&App::new(p, true), 120, 40).backend().buffer());
     let mut p = Preset::embedded().remove(0);
-    assert!(text_of(p.clone()).contains("measured at v0 = 3.12 m/s"));
+    assert!(text_of(p.clone()).contains("measured at v0 = 3.120 m/s"));
     p.name = "unmeasured".into();
     (
         p.measured.cor,

@@ -133,7 +133,10 @@ fn the_picker_lists_the_surfaces_and_puts_the_ball_on_one() {
     assert_eq!(app.setting().target_stiffness, f64::INFINITY);
     assert_eq!(app.oblique_view().values().friction, 0.6);
     let said = app.message().unwrap().text.clone();
-    assert!(said.starts_with("undone: surface gym → none"), "{said}");
+    assert!(
+        said.starts_with("undone: surface gym → steel-plate"),
+        "{said}"
+    );
     assert_eq!(app.run().unwrap().cor, before);
 }
 
@@ -223,7 +226,7 @@ fn y_carries_the_surface_and_the_explorer_opens_on_it_again() {
     assert_eq!(again.run().unwrap().cor, app.run().unwrap().cor);
     let text = screen_text(&draw(&app, 120, 40)).join("\n");
     assert!(text.contains("surface hard-court: rigid"), "{text}");
-    assert!(text.contains("K_s 3.000e5 N/m, c_s 12 kg/s"), "{text}");
+    assert!(text.contains("K_s 3.000e5 N/m, c_s 12.00 kg/s"), "{text}");
     // an unknown surface is refused, naming the flag's value
     let e = explorer_refuses("bouncelab --preset tennis --surface moon");
     assert!(e.contains("moon"), "{e}");

@@ -49,9 +49,19 @@ fn tokens(row: &[String], lo: usize, hi: usize) -> Vec<(usize, String)> {
     out
 }
 
-/// Every chart axis on the screen: (is x, its labels), found from the axes' corners `└`
-/// whose x axis runs right (`─`, `┴`) to something other than a frame's corner `┘`.
-fn axes(g: &[Vec<String>]) -> Vec<(bool, (usize, usize), Vec<Label>)> {
+/// One axis read off the screen.
+struct ScreenAxis {
+    x: bool,
+    /// The axes' corner `└`: (row, column).
+    at: (usize, usize),
+    labels: Vec<Label>,
+    /// A y axis's top row (an x axis's own row).
+    top: usize,
+}
+
+/// Every chart axis on the screen, found from the axes' corners `└` whose x axis runs right
+/// (`─`, `┴`) to something other than a frame's corner `┘`.
+fn axes(g: &[Vec<String>]) -> Vec<ScreenAxis> {
     let mut out = Vec::new();
     for (r, row) in g.iter().enumerate() {
         for (c, cell) in row.iter().enumerate() {
@@ -78,7 +88,12 @@ fn axes(g: &[Vec<String>]) -> Vec<(bool, (usize, usize), Vec<Label>)> {
                     })
                 })
                 .collect();
-            out.push((true, (r, c), xs));
+            out.push(ScreenAxis {
+                x: true,
+                at: (r, c),
+                labels: xs,
+                top: r,
+            });
             // y labels: left of the axis line, on each of its rows
             let mut ys = Vec::new();
             let mut y = r;
@@ -95,7 +110,12 @@ fn axes(g: &[Vec<String>]) -> Vec<(bool, (usize, usize), Vec<Label>)> {
                     });
                 }
             }
-            out.push((false, (r, c), ys));
+            out.push(ScreenAxis {
+                x: false,
+                at: (r, c),
+                labels: ys,
+                top: y,
+            });
         }
     }
     out
@@ -144,6 +164,13 @@ fn misplaced(labels: &[Label]) -> Vec<String> {
         .collect()
 }
 
+/// A y axis labelled below its top row but not on it: the top end's value unread (the
+/// sweeps' COR axis at 200×60 ran to 1.05 over a top row left blank above `1.0`).
+fn unlabelled_top(x: bool, labels: &[Label], top: usize) -> Option<String> {
+    let labelled = |row: usize| labels.iter().any(|l| l.from as usize == row);
+    (!x && labels.len() >= 2 && !labelled(top)).then(|| format!("top row {top} has no label"))
+}
+
 /// Checks every axis of `app` at the five sizes; the number of axes with three or more
 /// labels checked.
 fn check(name: &str, app: &mut App) -> usize {
@@ -151,8 +178,9 @@ fn check(name: &str, app: &mut App) -> usize {
     for (w, h) in SIZES {
         app.update(Action::Resize(w, h));
         let g = grid(app, w, h);
-        for (x, at, labels) in axes(&g) {
-            let bad = misplaced(&labels);
+        for ScreenAxis { x, at, labels, top } in axes(&g) {
+            let mut bad = misplaced(&labels);
+            bad.extend(unlabelled_top(x, &labels, top));
             let screen: Vec<String> = g.iter().map(|r| r.concat()).collect();
             assert!(
                 bad.is_empty(),
@@ -210,4 +238,8 @@ fn the_check_finds_a_misplaced_label() {
     assert!(misplaced(&true_).is_empty(), "{:?}", misplaced(&true_));
     let decades = [at(0.01, 3.0), at(0.1, 23.0), at(1.0, 43.0), at(10.0, 63.0)];
     assert!(misplaced(&decades).is_empty());
+    // a y axis whose labels start a row below its top (rows 3, 9, 15; the axis from row 2)
+    let rows = [at(1.0, 3.0), at(0.5, 9.0), at(0.0, 15.0)];
+    assert!(unlabelled_top(false, &rows, 2).is_some());
+    assert!(unlabelled_top(false, &rows, 3).is_none());
 }

@@ -84,9 +84,10 @@ impl App {
         }
         // the surface picked (`G`): by name, the rigid plate's when none was picked
         let surface = |s: &Setting| {
-            s.surface
-                .as_ref()
-                .map_or("none".to_string(), |x| x.name.clone())
+            s.surface.as_ref().map_or_else(
+                || crate::target::surface::Surface::rigid_plate().name,
+                |x| x.name.clone(),
+            )
         };
         if surface(now) != surface(was) {
             parts.push(format!("surface {} → {}", surface(now), surface(was)));

@@ -68,22 +68,33 @@ impl PlotLayout {
     }
 }
 
+/// Whether `v` falls on the top row of a y axis from `lo` to `hi` over `rows` rows, as
+/// [`PlotLayout::row`] places it.
+fn on_top_row(lo: f64, hi: f64, v: f64, rows: u16) -> bool {
+    let dots = 4.0 * f64::from(rows);
+    ((hi - v) * (dots - 1.0) / (hi - lo)).round() < 4.0
+}
+
 impl<'a> Plot<'a> {
     pub fn new(figure: &'a Figure, theme: Theme) -> Plot<'a> {
         Plot { figure, theme }
     }
 
-    /// The x (`x: true`) or y axis with room for about `labels` tick labels.
-    /// A fitted linear y axis ends on a labelled tick: its top is raised to the next major
-    /// tick when the data's margin left it above the last one (force–time's top row had no
-    /// label).
-    fn axis(&self, x: bool, labels: usize) -> Axis {
+    /// The x (`x: true`) or y axis with room for about `labels` tick labels; a y axis over
+    /// `rows` rows.
+    /// A linear y axis ends on a labelled tick: its top is raised to the next major tick when
+    /// the data's margin left it above the last one (force–time's top row had no label), or,
+    /// for a fixed range, when the last tick's label is not on the top row (the COR axes' 0 …
+    /// 1.05 left a blank top row above `1.0` at 200×60; tests/tui/tui_ticks.rs).
+    fn axis(&self, x: bool, labels: usize, rows: u16) -> Axis {
         let mut t = ticks(self.figure, x, Room::Labels(labels));
         let fitted = if x { &self.figure.x } else { &self.figure.y };
-        if let (false, false, None, [.., a, b]) = (x, fitted.log, fitted.range, t.major.as_slice())
-        {
+        if let (false, false, [.., a, b]) = (x, fitted.log, t.major.as_slice()) {
+            let (a, b) = (*a, *b);
             let next = b + (b - a);
-            if t.hi > b + 1e-9 * (b - a) && next.is_finite() {
+            let above = t.hi > b + 1e-9 * (b - a);
+            let unlabelled = fitted.range.is_none() || !on_top_row(t.lo, t.hi, b, rows);
+            if above && unlabelled && next.is_finite() {
                 t.major.push(next);
                 t.hi = next;
             }
@@ -113,7 +124,7 @@ impl<'a> Plot<'a> {
             return None;
         }
         let plot_h = inner.height - 2 - top;
-        let y = self.axis(false, usize::from(plot_h / 2).clamp(2, 11));
+        let y = self.axis(false, usize::from(plot_h / 2).clamp(2, 11), plot_h);
         let gutter = y
             .ticks
             .iter()
@@ -130,7 +141,7 @@ impl<'a> Plot<'a> {
             inner.width - gutter,
             plot_h,
         );
-        let x = self.axis(true, usize::from(plot.width / 8).max(2));
+        let x = self.axis(true, usize::from(plot.width / 8).max(2), 0);
         Some(PlotLayout { inner, plot, x, y })
     }
 

@@ -4,8 +4,7 @@
 //! (`pins`).
 
 use crate::preset::Preset;
-use crate::solver::ImpactResponse;
-use crate::text::sig_trim;
+use crate::solver::{EnergyBudget, ImpactResponse};
 use crate::tui::format::{percent_diff, stepped, value};
 use crate::tui::param::{Dir, Param};
 use crate::tui::setting::Setting;
@@ -248,10 +247,7 @@ impl Readout<'_> {
             Line::raw(format!(
                 "  spring {}  residual {}",
                 mj(e.spring),
-                match e.relative_residual() {
-                    0.0 => "0".to_string(),
-                    r => format!("{r:.0e}"),
-                }
+                residual_text(&e)
             )),
         ];
         if !rebound {
@@ -322,7 +318,7 @@ impl Readout<'_> {
         }
         for row in rows {
             let (measured, diff) = match row.measured {
-                Some(m) => (sig_trim(m, 4), percent_diff(row.model_value, m)),
+                Some(m) => (value(m), percent_diff(row.model_value, m)),
                 None => (String::new(), String::new()),
             };
             lines.push(Line::from(vec![
@@ -363,36 +359,41 @@ impl Readout<'_> {
         if m.cor.is_some() || m.max_force.is_some() || m.contact_time.is_some() {
             let elsewhere = not_compared(self.preset, self.setting).unwrap_or("");
             lines.push(Line::styled(
-                format!(" measured at v0 = {} m/s{elsewhere}", sig_trim(m.v0, 4)),
+                // v0 as the parameters above write it (3.120, not 3.12: one number format)
+                format!(" measured at v0 = {} m/s{elsewhere}", value(m.v0)),
                 theme.dim(),
             ));
         }
         lines
     }
 
-    /// What the ball meets when it is not the wall: the run is then the pair's
-    /// (docs/targets.md; docs/explorer.md).
+    /// What the ball meets: the surface by name (the rigid steel plate when none was picked,
+    /// issue 53 item 6: every answer names its surface), and the pair's line when the target
+    /// is not that surface — the run is then the pair's (docs/targets.md; docs/explorer.md).
     fn target_note(&self) -> Vec<Line<'static>> {
         let t = self.setting.target();
-        // the surface picked (`G`, issue 53 item 6): its name and numbers; the pair's line
-        // below when the form moved the target off it
+        // the surface picked (`G`): its name and numbers; the pair's line below when the
+        // form moved the target off it
+        let plate = crate::target::surface::Surface::rigid_plate;
+        let (s, picked) = match &self.setting.surface {
+            Some(s) => (s.clone(), true),
+            None => (plate(), false),
+        };
         let mut lines = Vec::new();
-        if let Some(s) = &self.setting.surface {
-            let own = crate::tui::surface::numbers(s);
+        let on_it = t == s.target();
+        if picked || on_it {
+            let own = crate::tui::surface::numbers(&s);
             lines.push(Line::styled(
                 format!(" surface {}: {own}", s.name),
                 self.theme.dim(),
             ));
-            if t == s.target() {
-                return lines;
-            }
         }
-        if t == crate::target::Target::wall() {
+        if on_it {
             return lines;
         }
         let v = |x: f64| {
             if x.is_finite() {
-                sig_trim(x, 4)
+                value(x)
             } else {
                 "∞".into()
             }
@@ -412,5 +413,44 @@ impl Readout<'_> {
         }
         lines.push(Line::styled(text, self.theme.dim()));
         lines
+    }
+}
+
+/// The budget's residual as a fraction of the energy in, to one digit; round-off — a residual
+/// below 1e-12 of the energy in, the threshold [`EnergyBudget::shown`] applies to every term of
+/// the budget — reads 0 (issue 51: `residual 2e-16` beside terms shown to 4 digits;
+/// docs/explorer.md, tests/tui/tui_walk.rs).
+fn residual_text(e: &EnergyBudget) -> String {
+    let r = e.relative_residual();
+    if e.shown(r * e.initial_kinetic) == 0.0 {
+        "0".into()
+    } else {
+        format!("{r:.0e}")
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A budget of 1 J in whose terms leave `residual` J unaccounted.
+    fn budget(residual: f64) -> EnergyBudget {
+        EnergyBudget {
+            initial_kinetic: 1.0,
+            final_kinetic: 0.5,
+            dashpot: 0.3,
+            contact: 0.0,
+            spring: 0.2 - residual,
+        }
+    }
+
+    #[test]
+    fn a_round_off_residual_reads_0_and_a_real_one_its_size() {
+        // the superball's default run left 2e-16 of the energy in: round-off
+        assert_eq!(residual_text(&budget(2.2e-16)), "0");
+        assert_eq!(residual_text(&budget(0.9e-12)), "0");
+        assert_eq!(residual_text(&budget(3e-12)), "3e-12");
+        assert_eq!(residual_text(&budget(2e-3)), "2e-3");
+        assert_eq!(residual_text(&budget(0.0)), "0");
     }
 }

@@ -2,7 +2,6 @@
 //! below the charts on narrow terminals (`compact`).
 
 use super::{Readout, Row, results};
-use crate::text::sig_trim;
 use crate::tui::format::{percent_diff, value};
 use crate::tui::param::Param;
 use crate::tui::widgets::pins;
@@ -115,14 +114,14 @@ impl Readout<'_> {
     }
 }
 
-/// "e 0.7506 (0.75, +0.1%)": a result with its measured value and the difference, if any.
+/// "e 0.7506 (0.7500, +0.1%)": a result with its measured value and the difference, if any.
 fn compact_row(row: &Row) -> String {
     let name = row.name.split(' ').next().unwrap_or("");
     match row.measured {
         Some(m) => format!(
             "{name} {} ({}, {})",
             row.model,
-            sig_trim(m, 4),
+            value(m),
             percent_diff(row.model_value, m)
         ),
         None => format!("{name} {}", row.model),

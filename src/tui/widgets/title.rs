@@ -10,6 +10,16 @@
 //! (`F[N]–t[ms]`); last, whole words are cut from the right with "…", never inside a
 //! bracketed unit.
 
+/// `title` as a frame `frame_width` cells wide writes it on its top row: fitted ([`fit`]) and
+/// set off by a space each side, so it never touches the corner (the oblique view's
+/// `┌Paths · angles…`, issue 51).
+pub fn framed(title: &str, frame_width: u16) -> String {
+    format!(
+        " {} ",
+        fit(title, usize::from(frame_width).saturating_sub(4))
+    )
+}
+
 /// `title` in at most `width` characters (a terminal cell each).
 pub fn fit(title: &str, width: usize) -> String {
     let fits = |s: &str| s.chars().count() <= width;

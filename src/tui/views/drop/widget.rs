@@ -145,7 +145,10 @@ fn render_ball(d: &DropView, theme: Theme, area: Rect, buf: &mut Buffer) {
     let color = theme.current();
     let plate = theme.c(Color::Gray);
     Canvas::default()
-        .block(Block::bordered().title(Span::styled("ball", theme.title())))
+        .block(Block::bordered().title(Span::styled(
+            crate::tui::widgets::title::framed("ball", area.width),
+            theme.title(),
+        )))
         .marker(Marker::Braille)
         .x_bounds([-half_width, half_width])
         .y_bounds([plate_y, top])

@@ -52,7 +52,7 @@ impl Widget for FlightPanel<'_> {
             lines.extend(self.shot_lines());
             lines.push(Line::raw(""));
             lines.push(Line::styled(
-                "←→ select · ↑↓ step (Shift coarse) · a w k · y line · e export · h back",
+                "←→ select · ↑↓ step (Shift coarse) · a/w/k · y line · e export · h back",
                 self.theme.key(),
             ));
             let lines = fit_lines(lines, usize::from(readout.width.saturating_sub(2)));
@@ -115,8 +115,11 @@ impl FlightPanel<'_> {
         let v = &self.view.values;
         let mut lines = vec![Line::styled(format!("{} · shot", self.ball), t.title())];
         for p in FlightParam::ALL {
-            let text = format!("{} {}{}", p.symbol(), sig(v.get(p), 4), p.unit());
-            let style = if p == self.view.selected.0 {
+            // marked ▶ as in the other readouts, not by its style alone (NO_COLOR, a copy)
+            let chosen = p == self.view.selected.0;
+            let mark = if chosen { "▶" } else { "" };
+            let text = format!("{mark}{} {}{}", p.symbol(), sig(v.get(p), 4), p.unit());
+            let style = if chosen {
                 t.selected()
             } else {
                 ratatui::style::Style::default()

@@ -88,8 +88,8 @@ pub fn render_time(fig: &Figure, theme: Theme, area: Rect, buf: &mut Buffer) {
 /// square (a cell is 2 dots wide, 4 tall, twice as tall as wide), so equal units across and
 /// up keep the angles true.
 pub fn render_paths(r: &ObliqueResponse, theme: Theme, area: Rect, buf: &mut Buffer) {
-    let block =
-        Block::bordered().title(Span::styled("Paths · angles to the surface", theme.title()));
+    let title = crate::tui::widgets::title::framed("Paths · angles to the surface", area.width);
+    let block = Block::bordered().title(Span::styled(title, theme.title()));
     let inner = block.inner(area);
     let (w, h) = (
         f64::from(inner.width.max(1)),

@@ -36,7 +36,9 @@ fn nearest(slot: usize, slots: usize, cells: usize) -> usize {
 impl Widget for MapRaster<'_> {
     fn render(self, area: Rect, buf: &mut Buffer) {
         let q = self.view.quantity;
-        let title = format!("(θ, μ) map · {} · n next, t charts", q.label());
+        // `t` (back to the charts) is on the key bar at every size; `n` only here
+        let title = format!("(θ, μ) map · {} · n next", q.label());
+        let title = crate::tui::widgets::title::framed(&title, area.width);
         let block = Block::bordered().title(Span::styled(title, self.theme.title()));
         let inner = block.inner(area);
         block.render(area, buf);

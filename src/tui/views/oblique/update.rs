@@ -65,16 +65,14 @@ impl App {
         }
     }
 
-    /// The oblique readout's line of the surface when it is not the wall: " surface clay:
-    /// K_s 4e5 N/m, c_s 20 kg/s" (its name when picked; the numbers the impact runs on,
-    /// c_t with them).
-    pub fn oblique_surface_line(&self) -> Option<String> {
+    /// The oblique readout's line of the surface: " surface clay: K_s 4e5 N/m, c_s 20 kg/s"
+    /// (its name when picked, the steel plate's when none was and the form left the wall as
+    /// it is, else "typed"; the numbers the impact runs on, c_t with them), and whether it is
+    /// the default plate's (said last: a short readout loses it first).
+    pub fn oblique_surface_line(&self) -> (String, bool) {
         let s = &self.setting;
         let t = self.oblique_surface();
         let plain = t == crate::target::Target::wall() && s.tangential_damping.is_none();
-        if plain && s.surface.is_none() {
-            return None;
-        }
         let shown = crate::target::surface::Surface {
             stiffness: t.stiffness,
             damping: t.damping,
@@ -86,11 +84,15 @@ impl App {
                 .clone()
                 .unwrap_or_else(crate::target::surface::Surface::rigid_plate)
         };
-        let name = s.surface.as_ref().map_or("typed", |x| x.name.as_str());
-        Some(format!(
-            " surface {name}: {}",
-            crate::tui::surface::numbers(&shown)
-        ))
+        // none picked: the rigid steel plate by its name while the form left it as it is
+        // (issue 53 item 6: every answer names its surface)
+        let name = match &s.surface {
+            Some(x) => x.name.clone(),
+            None if plain => shown.name.clone(),
+            None => "typed".into(),
+        };
+        let line = format!(" surface {name}: {}", crate::tui::surface::numbers(&shown));
+        (line, plain && s.surface.is_none())
     }
 
     /// The keyboard's mode in the oblique view, by its page.

@@ -32,9 +32,10 @@ pub struct ObliquePanel<'a> {
     pub v0: f64,
     /// K_t (N/m) and κ the impact runs on (the view's, or the ball's where it sets none).
     pub tangential: [f64; 2],
-    /// The surface the ball bounces on, when it is not the wall: its name (when picked) and
-    /// K_s, c_s, M, c_t (issue 53 item 6; `App::oblique_surface_line`).
-    pub surface: Option<&'a str>,
+    /// The surface the ball bounces on: its name (the steel plate's when none was picked)
+    /// and K_s, c_s, M, c_t (issue 53 item 6; `App::oblique_surface_line`), and whether it is
+    /// the default plate, said last so that a short readout loses it first (60×20).
+    pub surface: (&'a str, bool),
     /// The time charts as drawn (`charts::time_figures` with their normalize, zoom and
     /// crosshair: src/tui/app/charts.rs), once the impact is computed.
     pub time: Option<&'a [Figure; 3]>,
@@ -103,8 +104,10 @@ impl ObliquePanel<'_> {
             theme.title(),
         )];
         lines.extend(self.parameter_lines());
-        if let Some(s) = self.surface {
-            lines.push(Line::styled(s.to_string(), theme.dim()));
+        let (surface, default) = self.surface;
+        let surface = Line::styled(surface.to_string(), theme.dim());
+        if !default {
+            lines.push(surface.clone());
         }
         match &self.view.impact {
             Some(Ok(r)) => lines.extend(result_lines(r, theme)),
@@ -115,6 +118,9 @@ impl ObliquePanel<'_> {
             Some(Ok(p)) => lines.extend(pace_lines(p, self.view.friction, theme)),
             Some(Err(e)) => lines.push(Line::styled(format!("ITF pace: {e}"), theme.error())),
             None => {}
+        }
+        if default {
+            lines.push(surface);
         }
         Paragraph::new(lines)
             .wrap(Wrap { trim: true })

@@ -39,10 +39,24 @@ impl App {
         })
     }
 
-    /// The sweeps the current setting and each pin (in order) need.
+    /// The sweeps the current setting and each pin (in order) need. They reach the measured
+    /// file's fastest row too (a COR table or drop test): the sweep ends at 1.5 × the speed
+    /// it is given at least, rounded up (`SpeedRequest::new`), so it is given 1/1.5 of that
+    /// row's speed (a cannon's table to 50 m/s showed 2 of its 5 rows on a chart that ended
+    /// at 20 m/s; tests/tui/tui_walk.rs).
     pub(in crate::tui) fn speed_targets(&self) -> (SpeedRequest, Vec<SpeedRequest>) {
-        let request =
-            |s: &Setting| SpeedRequest::new(&s.params, s.law, self.presets[s.preset].measured.v0);
+        let fastest = self
+            .fit
+            .overlays
+            .iter()
+            .filter(|m| m.chart == crate::figure::explorer::Chart::CorSpeed)
+            .flat_map(|m| m.points.iter().map(|p| p.0))
+            .filter(|v| v.is_finite())
+            .fold(0.0, f64::max);
+        let request = |s: &Setting| {
+            let measured = self.presets[s.preset].measured.v0;
+            SpeedRequest::new(&s.params, s.law, measured.max(fastest / 1.5))
+        };
         (
             request(&self.setting),
             self.pins.iter().map(|g| request(&g.setting)).collect(),
