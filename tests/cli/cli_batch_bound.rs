@@ -24,7 +24,12 @@ fn a_batch_past_its_bound_is_refused_before_any_fit_naming_the_limit() {
     std::fs::write(dir.path().join("lot.csv"), lot(100_000)).unwrap();
     let start = Instant::now();
     let args = [
-        "batch", "lot.csv", "--preset", "tennis", "--csv-out", "out.csv",
+        "batch",
+        "lot.csv",
+        "--preset",
+        "tennis",
+        "--csv-out",
+        "out.csv",
     ];
     let o = bl_at(dir.path(), &args);
     let line = format!("lot.csv:{}:1:", max + 2);
@@ -42,5 +47,8 @@ fn the_library_s_split_takes_a_batch_at_its_bound_and_refuses_one_more() {
     let balls = bouncelab::analysis::batch::split(&lot(max)).unwrap();
     assert_eq!(balls.len(), max);
     let e = bouncelab::analysis::batch::split(&lot(max + 1)).unwrap_err();
-    assert!(e.to_string().contains(&format!("at most {max} balls")), "{e}");
+    assert!(
+        e.to_string().contains(&format!("at most {max} balls")),
+        "{e}"
+    );
 }

@@ -53,7 +53,13 @@ fn apart(row: &ImpactRow, r: &bouncelab::ImpactResponse) -> f64 {
     let want = [r.cor, r.max_force, t, r.max_indentation];
     let d = (0..4).fold(0.0f64, |w, k| {
         let d = (got[k] - want[k]).abs() / want[k].abs();
-        if got[k] == want[k] { w } else if d.is_nan() { f64::INFINITY } else { w.max(d) }
+        if got[k] == want[k] {
+            w
+        } else if d.is_nan() {
+            f64::INFINITY
+        } else {
+            w.max(d)
+        }
     });
     d.max((row.permanent_indentation - r.permanent_indentation).abs() / r.max_indentation)
 }
@@ -70,7 +76,10 @@ fn impacts_meet_run_params_to_the_documented_bound_over_a_wide_grid() {
                 continue;
             };
             if !r.rebound || !row.rebound {
-                assert_eq!(row.rebound, r.rebound, "{p:?} {law:?}: {row:?} against {r:?}");
+                assert_eq!(
+                    row.rebound, r.rebound,
+                    "{p:?} {law:?}: {row:?} against {r:?}"
+                );
                 continue;
             }
             compared += 1;
