@@ -69,49 +69,27 @@ fn describe(e: &std::io::Error) -> String {
     }
 }
 
-/// A ball's data as the batch gives it: its rows, or a trace file read only when the ball's
-/// turn comes and dropped after its fit (issue 54 items 4 and 9: every trace was read first and
-/// held to the end, 31 MB a ball of a 10⁶-row trace), as the command line's `src/cli/batch.rs`.
-enum Source {
-    Rows(Data),
-    Trace {
-        path: PathBuf,
-        line: usize,
-        column: usize,
-    },
-}
-
-/// The batch's balls, trace files named (relative to the batch's folder); the library's
+/// The batch's balls with their data as the file gives them: rows, or a trace file's name
+/// (relative to the batch's folder) read only when the ball's turn comes and dropped after its
+/// fit ([`data_of`]; issue 54 items 4 and 9: every trace was read first and held to the end,
+/// 31 MB a ball of a 10⁶-row trace), as the command line's `src/cli/batch.rs`. The library's
 /// `split` refuses a batch beyond `analysis::batch::MAX_BALLS` balls.
-fn load(file: &Path) -> PyResult<Vec<(String, usize, Source)>> {
+fn load(file: &Path) -> PyResult<Vec<(String, usize, BallData)>> {
     let text = read_text(file)?;
     let rows = split(&text).map_err(|e| value_error(format!("{}:{e}", file.display())))?;
-    let dir = file.parent().unwrap_or(Path::new(""));
-    Ok(rows
-        .into_iter()
-        .map(|b| {
-            let source = match b.data {
-                BallData::Measured(d) => Source::Rows(d),
-                BallData::TraceFile { path, line, column } => Source::Trace {
-                    path: dir.join(&path),
-                    line,
-                    column,
-                },
-            };
-            (b.id, b.line, source)
-        })
-        .collect())
+    Ok(rows.into_iter().map(|b| (b.id, b.line, b.data)).collect())
 }
 
 /// Ball `id`'s data: its rows, or its trace file read now; an error (a `ValueError`'s text)
 /// at the batch `file`'s line and column naming the ball.
-fn data_of<'a>(file: &Path, id: &str, source: &'a Source) -> Result<Cow<'a, Data>, String> {
-    let (path, line, column) = match source {
-        Source::Rows(d) => return Ok(Cow::Borrowed(d)),
-        Source::Trace { path, line, column } => (path, line, column),
+fn data_of<'a>(file: &Path, id: &str, data: &'a BallData) -> Result<Cow<'a, Data>, String> {
+    let (path, line, column) = match data {
+        BallData::Measured(d) => return Ok(Cow::Borrowed(d)),
+        BallData::TraceFile { path, line, column } => (path, line, column),
     };
     let at = |e: String| format!("{}:{line}:{column}: trace of '{id}': {e}", file.display());
-    let text = read_text(path).map_err(|e| at(e.to_string()))?;
+    let path = file.parent().unwrap_or(Path::new("")).join(path);
+    let text = read_text(&path).map_err(|e| at(e.to_string()))?;
     let t = Trace::parse(&text).map_err(|e| at(format!("{}:{e}", path.display())))?;
     Ok(Cow::Owned(Data::Trace(t)))
 }
