@@ -265,3 +265,38 @@ def test_ctrl_c_stops_a_drop_in_its_intervals(tmp_path, monkeypatch):
     late = interrupted_after(0.4 * full, call)
     print(f"KeyboardInterrupt {late * 1e3:.0f} ms after SIGINT, of a {full:.2f} s drop")
     assert late < 0.3 * full
+
+
+# ---- a Dask run's whole bound
+
+
+RAN = []
+
+
+def _slow_part(options, start, count, extra):
+    """A task of `_tasks` that takes its time and says it ran (workers are threads here)."""
+    time.sleep(0.05)
+    RAN.append(start)
+    return start
+
+
+def test_a_stopped_dask_run_cancels_the_tasks_it_has_not_run():
+    # issue 54 item 9: a Dask run beyond 10**10 samples is refused (test_mc.py); within it the
+    # run sends at most IN_FLIGHT tasks at a time and cancels those pending when its caller
+    # stops (Ctrl-C's KeyboardInterrupt or an error ends the generator alike), so no work
+    # goes on behind a stopped call
+    distributed = pytest.importorskip("distributed")
+    from bouncelab import dask as bdask
+
+    with distributed.LocalCluster(
+        n_workers=1, threads_per_worker=1, processes=False, dashboard_address=None
+    ) as cluster, distributed.Client(cluster) as client:
+        RAN.clear()
+        parts = bdask._tasks(client, _slow_part, None, [(i, 1) for i in range(400)], None)
+        next(parts)
+        parts.close()
+        ran = len(RAN)
+        time.sleep(1.0)
+        # the tasks under way may end; none that was only waiting runs after the stop
+        assert len(RAN) <= ran + 2, f"{len(RAN)} ran, {ran} at the stop"
+        assert len(RAN) < 400
