@@ -17,6 +17,7 @@ use bouncelab::measured::{Air, Data, Trace};
 use pyo3::exceptions::PyOSError;
 use pyo3::prelude::*;
 use rayon::prelude::*;
+use std::borrow::Cow;
 use std::io::Read;
 use std::path::{Path, PathBuf};
 
@@ -68,34 +69,29 @@ fn describe(e: &std::io::Error) -> String {
     }
 }
 
-/// The batch's balls with their data, trace files read (relative to the batch's folder).
-fn load(file: &Path) -> PyResult<Vec<(String, usize, Data)>> {
+/// The batch's balls with their data as the file gives them: rows, or a trace file's name
+/// (relative to the batch's folder) read only when the ball's turn comes and dropped after its
+/// fit ([`data_of`]; issue 54 items 4 and 9: every trace was read first and held to the end,
+/// 31 MB a ball of a 10⁶-row trace), as the command line's `src/cli/batch.rs`. The library's
+/// `split` refuses a batch beyond `analysis::batch::MAX_BALLS` balls.
+fn load(file: &Path) -> PyResult<Vec<(String, usize, BallData)>> {
     let text = read_text(file)?;
     let rows = split(&text).map_err(|e| value_error(format!("{}:{e}", file.display())))?;
-    let dir = file.parent().unwrap_or(Path::new(""));
-    rows.into_iter()
-        .map(|b| {
-            let data = match b.data {
-                BallData::Measured(d) => d,
-                BallData::TraceFile { path, line, column } => {
-                    let at = |e: String| {
-                        format!(
-                            "{}:{line}:{column}: trace of '{}': {e}",
-                            file.display(),
-                            b.id
-                        )
-                    };
-                    let trace_path = dir.join(&path);
-                    let text =
-                        read_text(&trace_path).map_err(|e| value_error(at(e.to_string())))?;
-                    let t = Trace::parse(&text)
-                        .map_err(|e| value_error(at(format!("{}:{e}", trace_path.display()))))?;
-                    Data::Trace(t)
-                }
-            };
-            Ok((b.id, b.line, data))
-        })
-        .collect()
+    Ok(rows.into_iter().map(|b| (b.id, b.line, b.data)).collect())
+}
+
+/// Ball `id`'s data: its rows, or its trace file read now; an error (a `ValueError`'s text)
+/// at the batch `file`'s line and column naming the ball.
+fn data_of<'a>(file: &Path, id: &str, data: &'a BallData) -> Result<Cow<'a, Data>, String> {
+    let (path, line, column) = match data {
+        BallData::Measured(d) => return Ok(Cow::Borrowed(d)),
+        BallData::TraceFile { path, line, column } => (path, line, column),
+    };
+    let at = |e: String| format!("{}:{line}:{column}: trace of '{id}': {e}", file.display());
+    let path = file.parent().unwrap_or(Path::new("")).join(path);
+    let text = read_text(&path).map_err(|e| at(e.to_string()))?;
+    let t = Trace::parse(&text).map_err(|e| at(format!("{}:{e}", path.display())))?;
+    Ok(Cow::Owned(Data::Trace(t)))
 }
 
 /// `standard`, or the preset's own (as the command line's `--standard`).
@@ -169,16 +165,21 @@ ball_pyfunction! {
         // each ball looks at the flag Ctrl-C raises before its fit starts: the batch stops
         // within the fits under way (`interrupt::detach_stoppable`; issue 54 item 6: 9.4 s)
         let text = crate::interrupt::detach_stoppable(py, |stop| {
-            let outcomes: Option<Vec<_>> = balls
+            let outcomes: Option<Result<Vec<_>, String>> = balls
                 .par_iter()
-                .map(|(id, line, data)| {
-                    (!stop.load(std::sync::atomic::Ordering::Relaxed))
-                        .then(|| ball.judge_in_batch(id, *line, data, &setup))
+                .map(|(id, line, source)| {
+                    (!stop.load(std::sync::atomic::Ordering::Relaxed)).then(|| {
+                        let data = data_of(&file, id, source)?;
+                        Ok(ball.judge_in_batch(id, *line, &data, &setup))
+                    })
                 })
                 .collect();
-            outcomes.map(|o| serde_json::to_string(&BatchReport::new(&ball, standard, &o)))
+            outcomes.map(|o| {
+                o.map(|o| serde_json::to_string(&BatchReport::new(&ball, standard, &o)))
+            })
         })?
-        .ok_or_else(|| pyo3::exceptions::PyKeyboardInterrupt::new_err("stopped"))?;
+        .ok_or_else(|| pyo3::exceptions::PyKeyboardInterrupt::new_err("stopped"))?
+        .map_err(value_error)?;
         let text = text.map_err(|e| value_error(e.to_string()))?;
         let d = py.import("json")?.call_method1("loads", (text,))?;
         // the conditions the ball ran at, as the command line's last key

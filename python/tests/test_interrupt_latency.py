@@ -65,14 +65,16 @@ def test_ctrl_c_stops_impacts_on_ten_million_elements():
 def test_ctrl_c_stops_a_batch(tmp_path):
     lot = tmp_path / "lot.csv"
     rows = ["id,drop_height_m,rebound_height_m"]
-    rows += [f"B{i},2.54,{1.35 + 0.0001 * (i % 500):.4f}" for i in range(20_000)]
+    # the most balls a batch takes (`analysis::batch::MAX_BALLS`), run again until the signal
+    rows += [f"B{i},2.54,{1.35 + 0.0001 * (i % 500):.4f}" for i in range(10_000)]
     lot.write_text("\n".join(rows) + "\n")
     late = interrupted(
         f"""
         import time, bouncelab
         print("go", flush=True)
         try:
-            bouncelab.batch({str(lot)!r}, preset="tennis")
+            for _ in range(20):
+                bouncelab.batch({str(lot)!r}, preset="tennis")
             print("finished", flush=True)
         except KeyboardInterrupt:
             print("interrupted", time.monotonic(), flush=True)

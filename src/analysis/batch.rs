@@ -22,6 +22,12 @@ pub const ID_COLUMN: &str = "id";
 /// Header names of a column giving each ball's force–time trace as a file path.
 pub const TRACE_COLUMNS: [&str; 3] = ["trace", "trace_file", "force_time"];
 
+/// The most balls one batch takes: the bound on a whole run (issue 54 item 9). Each ball's fit
+/// is held to the work limit by itself (`analysis::work`), some 5–50 ms on one core; a batch
+/// of 10⁵ balls ran for hours, holding every outcome. A batch beyond it is refused at the
+/// first ball past the bound, before any fit: split the file.
+pub const MAX_BALLS: usize = 10_000;
+
 /// One ball's data as the batch gives it.
 #[derive(Debug, Clone, PartialEq)]
 pub enum BallData {
@@ -158,6 +164,17 @@ fn group_rows(
                     "id '{}' again: its rows began at line {first}, and a ball's rows must be \
                      consecutive (another ball's rows came between)",
                     crate::sanitize::line(&id.chars().take(40).collect::<String>())
+                ),
+            ));
+        }
+        if groups.len() == MAX_BALLS {
+            return Err(MeasuredError::at(
+                ln,
+                col,
+                format!(
+                    "ball {} of the batch: a batch takes at most {MAX_BALLS} balls (split the \
+                     file into batches of at most {MAX_BALLS})",
+                    MAX_BALLS + 1
                 ),
             ));
         }

@@ -411,16 +411,23 @@ fn hostile_file(kind: &str, dir: &Path) -> PathBuf {
             f.set_len(100 << 20).unwrap();
         }
         "binary" => write(&[0xff, 0xfe, 0, 1, 2, 0x80, b'\n']),
+        "unreadable" => {
+            // a good file no one may read (root reads it anyway: then it is answered as read)
+            use std::os::unix::fs::PermissionsExt;
+            write(b"v0,cor\n3,0.8\n5,0.7\n");
+            std::fs::set_permissions(&p, std::fs::Permissions::from_mode(0o000)).unwrap();
+        }
         _ => unreachable!("{kind}"),
     }
     p
 }
 
-const FILE_KINDS: [&str; 9] = [
+const FILE_KINDS: [&str; 10] = [
     "missing",
     "directory",
     "fifo",
     "device",
+    "unreadable",
     "bom",
     "crlf",
     "quoted",

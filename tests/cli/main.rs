@@ -21,6 +21,7 @@ mod calibration;
 mod cli;
 mod cli_bad_input;
 mod cli_batch;
+mod cli_batch_bound;
 mod cli_batch_cor_interval;
 mod cli_batch_csv;
 mod cli_batch_readings;

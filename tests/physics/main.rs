@@ -43,6 +43,7 @@ mod presets;
 mod properties;
 mod rows;
 mod rows_columns;
+mod rows_wide;
 mod run_summary;
 mod solver_agreement;
 mod standards;
