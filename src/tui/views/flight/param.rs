@@ -107,9 +107,11 @@ mod tests {
     fn a_step_and_its_inverse_come_back_on_round_values() {
         for p in FlightParam::ALL {
             for coarse in [false, true] {
-                // a round value: three of this step (3 m/s is no round value for 5 m/s steps)
+                // a round value: three of this step (3 m/s is no round value for 5 m/s steps),
+                // as the f64 nearest the decimal (3 × 0.1 is 0.30000000000000004; steps land
+                // on 0.3)
                 let (fine, big) = p.steps();
-                let v = 3.0 * if coarse { big } else { fine };
+                let v = crate::tui::exact::tidy(3.0 * if coarse { big } else { fine });
                 let up = p.step(v, true, coarse);
                 assert_eq!(p.step(up, false, coarse), v, "{p:?}");
             }
