@@ -93,6 +93,7 @@ mod reach;
 mod report;
 mod rows;
 mod shot;
+mod shot_after;
 mod shot_mc;
 mod standard_conditions;
 mod standards;
@@ -126,6 +127,7 @@ pub use reach::{
 pub use report::{BallHeader, Energy, FitReport, ImpactReport, MeasuredAt};
 pub use rows::{ImpactRow, Rest, impact_row, impact_rows};
 pub use shot::{ShotBounce, ShotEnd, ShotReport, ShotSpec};
+pub use shot_after::AfterBounceError;
 pub use shot_mc::{SHOT_MC_QUANTITIES, ShotMcReport, ShotMcSpec, ShotSpread, Spread};
 pub use standard_conditions::test_words;
 pub use standards::{

@@ -676,7 +676,7 @@ def oblique(
 def shot(
     preset: str = "tennis",
     *,
-    friction: float,
+    friction: Optional[float] = None,
     bounces: int = 1,
     distance: Optional[float] = None,
     time: Optional[float] = None,
@@ -687,23 +687,29 @@ def shot(
     tangential_stiffness: Optional[float] = None,
     inertia_factor: Optional[float] = None,
     tangential_damping: Optional[float] = None,
+    surface: Optional[SurfaceArg] = None,
     height: float,
     speed: float,
     elevation: float = 0.0,
     spin: float = 0.0,
     samples: int = 200,
+    after_bounce: Optional[float] = None,
     law: Optional[Law] = None,
     params: Optional[ParamSet] = None,
     **ball: Unpack[BallArguments],
 ) -> dict[str, Any]:
     """A shot (docs/flight.md), as ``bouncelab shot --format json --samples N``: launched from
     ``height`` (the centre, m) at ``speed`` (m/s), ``elevation`` (degrees, negative down) and
-    ``spin`` (rad/s, > 0 topspin), bouncing by ``oblique`` on a surface of ``friction``; a
+    ``spin`` (rad/s, > 0 topspin), bouncing by ``oblique`` on ``surface`` (a name or a dict
+    of its numbers, as ``oblique``'s; the rigid plate when None) of ``friction`` (the
+    surface's when None, required when it has none); ``after_bounce=D`` ends it D m past its
+    last bounce (``--after-bounce D``; not with ``distance``); a
     dict with ``bounces`` (a dict of arrays, one element a bounce: t, x, v_in, angle_in,
     spin_in, vx_in, vy_in, v_out, angle_out, spin_out, vx_out, vy_out, cor_normal,
     contact_time, slid_throughout, and warnings a list), ``end`` (reason, t, x, y, vx, vy,
     spin, speed), ``trajectory`` (arrays t, x, y, vx, vy, spin; ``samples`` of them) and
-    ``source`` (the aerodynamic models used), ``ball`` and ``conditions``. The overrides are
+    ``source`` (the aerodynamic models used), ``surface`` (the JSON's ``surface`` object),
+    ``ball`` and ``conditions``. The overrides are
     the command line's: ``drag_coefficient``, ``lift_coefficient``, ``spin_decay``,
     ``air_density``, ``tangential_stiffness``, ``inertia_factor``, ``tangential_damping`` and
     :class:`BallArguments`."""
@@ -711,7 +717,7 @@ def shot(
 def shots(
     preset: str = "tennis",
     *,
-    friction: float,
+    friction: Optional[float] = None,
     bounces: int = 1,
     distance: Optional[float] = None,
     time: Optional[float] = None,
@@ -722,6 +728,7 @@ def shots(
     tangential_stiffness: Optional[float] = None,
     inertia_factor: Optional[float] = None,
     tangential_damping: Optional[float] = None,
+    surface: Optional[SurfaceArg] = None,
     height: Floats,
     speed: Floats,
     elevation: Optional[Floats] = None,

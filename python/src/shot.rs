@@ -95,16 +95,16 @@ fn report<'py>(py: Python<'py>, r: &ShotReport) -> PyResult<Bound<'py, PyDict>> 
 macro_rules! flight_pyfunction {
     (
         $(#[$attr:meta])*
-        fn $name:ident<$lt:lifetime>($py:ident, $ball:ident, $common:ident;
+        fn $name:ident<$lt:lifetime>($py:ident, $ball:ident, $common:ident, $surface:ident;
             $($arg:ident: $ty:ty $(= $default:tt)?),* $(,)?) -> $ret:ty $body:block
     ) => {
         ball_pyfunction! {
             $(#[$attr])*
-            signature = (preset="tennis", *, friction, bounces=1, distance=None, time=None, air_density=1.204, drag_coefficient=None, lift_coefficient=None, spin_decay=None, tangential_stiffness=None, inertia_factor=None, tangential_damping=None, $($arg $(= $default)?,)* law=None, params=None,);
+            signature = (preset="tennis", *, friction=None, bounces=1, distance=None, time=None, air_density=1.204, drag_coefficient=None, lift_coefficient=None, spin_decay=None, tangential_stiffness=None, inertia_factor=None, tangential_damping=None, surface=None, $($arg $(= $default)?,)* law=None, params=None,);
             fn $name<$lt>(
                 $py,
                 preset: &str,
-                friction: f64,
+                friction: Option<f64>,
                 bounces: usize,
                 distance: Option<f64>,
                 time: Option<f64>,
@@ -115,6 +115,7 @@ macro_rules! flight_pyfunction {
                 tangential_stiffness: Option<f64>,
                 inertia_factor: Option<f64>,
                 tangential_damping: Option<f64>,
+                surface: Option<&Bound<$lt, PyAny>>,
                 $($arg: $ty,)*
                 law: Option<&str>,
                 params: Option<&str>,
@@ -122,18 +123,24 @@ macro_rules! flight_pyfunction {
             ball choice = (preset, params, law);
             {
                 let $ball = choice.resolve(None)?;
+                // `surface=` with μ, K_t, c_t over its own, as `oblique`'s (the command
+                // line's `shot --surface`)
+                let tangential = [friction, tangential_stiffness, tangential_damping];
+                let ($surface, friction) =
+                    crate::oblique::tangential_surface(surface, tangential)?;
                 let $common = ShotSpec {
                     launch: Launch { height: 0.0, speed: 0.0, elevation_deg: 0.0, spin: 0.0 },
                     ends: Ends { bounces, distance, time },
                     friction,
-                    tangential_stiffness,
+                    tangential_stiffness: $surface.tangential_stiffness,
                     inertia_factor,
-                    tangential_damping,
+                    tangential_damping: $surface.tangential_damping,
                     air_density,
                     drag_coefficient,
                     lift_coefficient,
                     spin_decay,
                     samples: 0,
+                    surface: $surface.target(),
                 };
                 $body
             }
@@ -144,13 +151,15 @@ macro_rules! flight_pyfunction {
 flight_pyfunction! {
     /// One shot, as `bouncelab shot --format json --samples N`: a dict with `bounces` (a dict of
     /// arrays, one element per bounce), `end` (a dict), `trajectory` (a dict of arrays t, x, y,
-    /// vx, vy, spin; `samples` of them, 0 for none) and `source` (the aerodynamic models).
-    fn shot<'py>(py, ball, common;
+    /// vx, vy, spin; `samples` of them, 0 for none), `source` (the aerodynamic models) and
+    /// `surface` (the JSON's `surface` object). `after_bounce=D`: `shot --after-bounce D`.
+    fn shot<'py>(py, ball, common, surface;
         height: f64,
         speed: f64,
         elevation: f64 = 0.0,
         spin: f64 = 0.0,
         samples: usize = 200,
+        after_bounce: Option<f64> = None,
     ) -> PyResult<Bound<'py, PyDict>> {
         let launch = Launch {
             height,
@@ -158,13 +167,42 @@ flight_pyfunction! {
             elevation_deg: elevation,
             spin,
         };
-        let r = py
-            .detach(|| ball.shot(&with(&common, launch, samples)))
-            .map_err(error)?;
+        let mut spec = with(&common, launch, samples);
+        if let Some(d) = after_bounce {
+            if common.ends.distance.is_some() {
+                return Err(crate::value_error(
+                    "after_bounce does not go with distance (it sets the distance)".into(),
+                ));
+            }
+            spec.ends.distance = Some(py.detach(|| past_bounce(&ball, &spec, d))?);
+        }
+        let r = py.detach(|| ball.shot(&spec)).map_err(error)?;
         let d = report(py, &r)?;
+        d.set_item("surface", crate::surface::to_dict(py, &surface)?)?;
         crate::answer::stated(&d, &ball)?;
         Ok(d)
     }
+}
+
+/// `after_bounce=D` as the distance it stands for (`Ball::after_bounce_distance`), its
+/// refusals named by the arguments, as the command line's `--after-bounce`.
+fn past_bounce(ball: &bouncelab::Ball, spec: &ShotSpec, d: f64) -> PyResult<f64> {
+    use bouncelab::api::AfterBounceError as E;
+    ball.after_bounce_distance(spec, d).map_err(|e| match e {
+        E::NotPositive(d) => {
+            crate::value_error(format!("invalid after_bounce: {d} (must be positive)"))
+        }
+        E::NoBounce => {
+            crate::value_error("invalid after_bounce: the shot makes no bounce (bounces=0)".into())
+        }
+        E::EndsBefore { bounce, t } => crate::value_error(format!(
+            "invalid after_bounce: the shot ends (at t = {t} s) before its bounce {bounce}"
+        )),
+        E::PassesBefore { bounce, x } => crate::value_error(format!(
+            "invalid after_bounce: the ball passes x = {x} m before its bounce {bounce}"
+        )),
+        E::Shot(e) => error(e),
+    })
 }
 
 /// The names of `shots`' answer, in order.
@@ -210,7 +248,7 @@ flight_pyfunction! {
     /// `landing_x`, `v_in`, `angle_in`, `v_out`, `angle_out`, `spin_out` (NaN with
     /// bounces=0) and the end's `end_t`, `end_x`, `end_y`, `end_vx`, `end_vy`. Element i is what
     /// `shot` gives for the i-th values; the first element without an answer raises, named.
-    fn shots<'py>(py, ball, common;
+    fn shots<'py>(py, ball, common, _surface;
         height: Bound<'py, PyAny>,
         speed: Bound<'py, PyAny>,
         elevation: Option<Bound<'py, PyAny>> = None,

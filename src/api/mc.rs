@@ -252,6 +252,9 @@ pub struct McReport<'a> {
     pub warnings: Vec<String>,
     /// The ball sampled around (docs/cli.md, "The ball object").
     pub ball: super::BallRecord,
+    /// The surface every sample ran on (docs/surfaces.md): the rigid plate, as `run`'s
+    /// default (plain `mc` takes no `--surface`; `mc --shot` does).
+    pub surface: super::SurfaceUsed,
 }
 
 impl<'a> McReport<'a> {
@@ -271,6 +274,7 @@ impl<'a> McReport<'a> {
             stats: &summary.stats,
             warnings: ball.mc_warnings(&summary.stats),
             ball: ball.record_json(),
+            surface: super::SurfaceUsed::rigid_plate(),
         }
     }
 }

@@ -8,6 +8,7 @@ use crate::flight::{
     State,
 };
 use crate::oblique::{ObliqueError, ObliqueResponse};
+use crate::target::Target;
 use serde::Serialize;
 
 /// What a shot asks beyond the ball.
@@ -36,6 +37,9 @@ pub struct ShotSpec {
     pub spin_decay: Option<f64>,
     /// Trajectory samples (0: none, else 2 … [`super::MAX_SAMPLES`]).
     pub samples: usize,
+    /// The surface every bounce is on, at rest ([`Ball::oblique_on`]'s; `Target::wall()`:
+    /// the rigid plate, [`Ball::oblique_damped`]'s very answer).
+    pub surface: Target,
 }
 
 impl ShotSpec {
@@ -63,6 +67,7 @@ impl ShotSpec {
             lift_coefficient: None,
             spin_decay: None,
             samples: 0,
+            surface: Target::wall(),
         }
     }
 }
@@ -256,7 +261,7 @@ impl Ball {
     }
 
     /// A shot (docs/flight.md): the flight from the launch, each bounce `oblique` on the
-    /// arriving state, until the ends.
+    /// arriving state (on `spec.surface`), until the ends.
     ///
     /// ```
     /// use bouncelab::{Ball, api::ShotSpec};
@@ -298,7 +303,7 @@ impl Ball {
                 tangential_stiffness: spec.tangential_stiffness,
                 inertia_factor: spec.inertia_factor,
             };
-            let r = self.oblique_damped(&o, spec.tangential_damping, 0)?;
+            let r = self.oblique_on(&o, spec.tangential_damping, 0, &spec.surface)?;
             let rebound = Rebound {
                 vx: r.vx_out,
                 vy: r.vy_out,

@@ -122,6 +122,7 @@ pub fn run(a: &McArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         };
         return super::mc_shot::run(&a.shot, &mc, out);
     }
+    refuse_surface(&a.shot.surface)?;
     let ball = a.ball.resolve(a.v0)?;
     let spec = spec(a, &ball)?;
     ball.check_samples(spec.samples)?;
@@ -153,6 +154,23 @@ pub fn run(a: &McArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     }
     report_then_commit(out, &report, files)?;
     Ok(())
+}
+
+/// Plain `mc` samples on the rigid plate (its JSON `surface`): the surface's flags go with
+/// `--shot` only.
+fn refuse_surface(s: &super::surface::SurfaceArgs) -> anyhow::Result<()> {
+    let given = [
+        (s.surface.is_some(), "--surface"),
+        (s.surface_stiffness.is_some(), "--surface-stiffness"),
+        (s.surface_damping.is_some(), "--surface-damping"),
+        (s.surface_mass.is_some(), "--surface-mass"),
+    ];
+    match given.iter().find(|(g, _)| *g) {
+        Some((_, flag)) => anyhow::bail!(
+            "invalid {flag}: plain mc samples on the rigid plate; the surface goes with --shot"
+        ),
+        None => Ok(()),
+    }
 }
 
 /// The spec of `--vary` (or `--vary fit`), `--dist` and `--correlate`.

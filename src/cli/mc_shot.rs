@@ -6,7 +6,7 @@
 use super::ball::BallArgs;
 use super::oblique::TangentialArgs;
 use super::output::{self, given, table};
-use super::surface::SurfaceUsed;
+use super::surface::{SurfaceArgs, SurfaceUsed};
 use crate::api::{Ball, BallError, ShotMcReport, ShotMcSpec, ShotSpec, ShotSpread};
 use crate::flight::{Aero, Ends, Launch};
 use clap::Args;
@@ -31,11 +31,15 @@ pub struct ShotMcArgs {
     /// With --shot: spin, rad/s (> 0 topspin)
     #[arg(long, value_name = "RAD_PER_S", requires = "shot", value_parser = super::number::number, allow_hyphen_values = true)]
     pub spin: Option<f64>,
-    /// With --shot: the surface's friction μ
+    /// With --shot: the surface's friction μ [default: the surface's; required when it has
+    /// none]
     #[arg(long, value_name = "MU", requires = "shot", value_parser = super::number::number, allow_hyphen_values = true)]
     pub friction: Option<f64>,
     #[command(flatten)]
     pub tangential: TangentialArgs,
+    /// With --shot: the surface every bounce is on (`shot`'s)
+    #[command(flatten)]
+    pub surface: SurfaceArgs,
     /// With --shot: bounces before the shot may end on the surface
     #[arg(long, value_name = "N", requires = "shot")]
     pub bounces: Option<usize>,
@@ -119,6 +123,10 @@ pub fn run(s: &ShotMcArgs, a: &Mc<'_>, out: &mut dyn Write) -> anyhow::Result<()
     let uniform = a.uniform;
     super::ball::check_overrides(&a.ball.set, None, None)?;
     let ball = a.ball.resolve(None)?;
+    if s.surface.surface.is_none() {
+        required(s.friction, "--friction")?;
+    }
+    let (surface, friction) = super::oblique::surface_of(&s.surface, s.friction, &s.tangential)?;
     let shot = ShotSpec {
         launch: Launch {
             height: required(s.height, "--height")?,
@@ -131,15 +139,16 @@ pub fn run(s: &ShotMcArgs, a: &Mc<'_>, out: &mut dyn Write) -> anyhow::Result<()
             distance: s.distance,
             time: s.time,
         },
-        friction: required(s.friction, "--friction")?,
-        tangential_stiffness: s.tangential.tangential_stiffness,
+        friction,
+        tangential_stiffness: surface.tangential_stiffness,
         inertia_factor: s.tangential.inertia_factor,
-        tangential_damping: s.tangential.tangential_damping,
+        tangential_damping: surface.tangential_damping,
         air_density: s.air_density.unwrap_or(crate::drop::flight::AIR_DENSITY),
         drag_coefficient: s.drag_coefficient,
         lift_coefficient: s.lift_coefficient,
         spin_decay: s.spin_decay,
         samples: 0,
+        surface: surface.target(),
     };
     let spec = ShotMcSpec {
         shot,
@@ -170,7 +179,6 @@ pub fn run(s: &ShotMcArgs, a: &Mc<'_>, out: &mut dyn Write) -> anyhow::Result<()
         return Err(stopped.unwrap_or_else(|| super::budget::Interrupted.into()));
     };
     progress.finish();
-    let surface = super::shot::surface_of(spec.shot.friction, &s.tangential)?;
     let ran = Ran {
         ball: &ball,
         surface: &surface,

@@ -43,11 +43,13 @@ pub struct ShotArgs {
     /// Spin ω, rad/s (> 0 topspin, which pushes a ball moving forward down)
     #[arg(long, value_name = "RAD_PER_S", default_value_t = 0.0, value_parser = super::number::number, allow_hyphen_values = true)]
     pub spin: f64,
-    /// Coulomb friction coefficient μ ≥ 0 of the surface
+    /// Coulomb friction coefficient μ ≥ 0 [default: the surface's; required when it has none]
     #[arg(long, value_name = "MU", value_parser = super::number::number, allow_hyphen_values = true)]
-    pub friction: f64,
+    pub friction: Option<f64>,
     #[command(flatten)]
     pub tangential: TangentialArgs,
+    #[command(flatten)]
+    pub surface: SurfaceArgs,
     /// Bounces before the shot may end on the surface (0 … 100)
     #[arg(long, value_name = "N", default_value_t = 1)]
     pub bounces: usize,
@@ -88,7 +90,8 @@ pub struct ShotArgs {
 }
 
 impl ShotArgs {
-    fn spec(&self) -> ShotSpec {
+    /// The shot asked for, on `surface` (its μ, K_t and c_t those `oblique` runs with).
+    fn spec(&self, surface: &SurfaceUsed, friction: f64) -> ShotSpec {
         ShotSpec {
             launch: Launch {
                 height: self.height,
@@ -101,15 +104,16 @@ impl ShotArgs {
                 distance: self.distance,
                 time: self.time,
             },
-            friction: self.friction,
-            tangential_stiffness: self.tangential.tangential_stiffness,
+            friction,
+            tangential_stiffness: surface.tangential_stiffness,
             inertia_factor: self.tangential.inertia_factor,
-            tangential_damping: self.tangential.tangential_damping,
+            tangential_damping: surface.tangential_damping,
             air_density: self.air_density,
             drag_coefficient: self.drag_coefficient,
             lift_coefficient: self.lift_coefficient,
             spin_decay: self.spin_decay,
             samples: self.samples.unwrap_or(0),
+            surface: surface.target(),
         }
     }
 }
@@ -127,21 +131,9 @@ struct Report<'a> {
     /// The ball it ran (docs/cli.md, "The ball object").
     #[serde(rename = "ball")]
     record: crate::api::BallRecord,
-    /// The surface it bounced on (docs/surfaces.md): the rigid plate with the shot's μ and
-    /// tangential flags.
+    /// The surface it bounced on (docs/surfaces.md): `--surface` (the rigid plate when not
+    /// given) with the shot's μ and tangential flags over its own.
     surface: &'a SurfaceUsed,
-}
-
-/// The surface a shot bounces on: the rigid plate (the shot takes no `--surface`: every
-/// bounce is `Ball::oblique`'s, on the rigid plate) with `--friction` and the tangential
-/// flags, named in the JSON and the text as every command on a surface names it (`shot`
-/// and `mc --shot`).
-pub(super) fn surface_of(friction: f64, t: &TangentialArgs) -> anyhow::Result<SurfaceUsed> {
-    Ok(SurfaceArgs::default().resolve()?.with_tangential([
-        Some(friction),
-        t.tangential_stiffness,
-        t.tangential_damping,
-    ]))
 }
 
 pub fn run(a: &ShotArgs, out: &mut dyn Write) -> anyhow::Result<()> {
@@ -150,14 +142,14 @@ pub fn run(a: &ShotArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         return Err(crate::api::BallError::Samples(0).into());
     }
     let ball = a.ball.resolve(None)?;
-    let mut spec = a.spec();
+    let (surface, friction) = super::oblique::surface_of(&a.surface, a.friction, &a.tangential)?;
+    let mut spec = a.spec(&surface, friction);
     if let Some(d) = a.after_bounce {
         spec.ends.distance = Some(past_bounce(&ball, &spec, d)?);
     }
     let paths: Vec<&std::path::Path> = a.svg_out.iter().map(PathBuf::as_path).collect();
     check_writable(&paths, a.force)?;
     let shot = ball.shot(&spec).map_err(flag_named)?;
-    let surface = surface_of(a.friction, &a.tangential)?;
     let mut files = Outputs::new(a.force);
     if let Some(p) = &a.svg_out {
         let drawn = if shot.trajectory.is_empty() {
@@ -178,7 +170,7 @@ pub fn run(a: &ShotArgs, out: &mut dyn Write) -> anyhow::Result<()> {
             &Report {
                 ball: ball.header(),
                 radius: ball.radius(),
-                friction: a.friction,
+                friction,
                 answer: &shot,
                 record: ball.record_json(),
                 surface: &surface,

@@ -3,49 +3,28 @@
 //! refusals of a shot named by their flags.
 
 use super::output::given;
-use crate::api::{Ball, ShotSpec};
-use crate::flight::Ends;
+use crate::api::{AfterBounceError, Ball, ShotSpec};
 
-/// `--after-bounce D` as the distance it stands for: the x of the last of the shot's
-/// bounces, plus D. A first run finds that bounce; the shot is then run to that distance,
-/// whose event lies past the bounce, so the flight to it is the first run's, bit for bit
-/// (`after_bounce_is_the_distance_past_the_bounce`, tests/cli/cli_golden_shot.rs).
+/// `--after-bounce D` as the distance it stands for (`Ball::after_bounce_distance`), its
+/// refusals named by the flags.
 pub(super) fn past_bounce(ball: &Ball, spec: &ShotSpec, d: f64) -> anyhow::Result<f64> {
-    let n = spec.ends.bounces;
-    if !(d.is_finite() && d > 0.0) {
-        anyhow::bail!("invalid --after-bounce: {} (must be positive)", given(d, 6));
-    }
-    if n == 0 {
-        anyhow::bail!("invalid --after-bounce: the shot makes no bounce (--bounces 0)");
-    }
-    let first = ball
-        .shot_unwarned(&ShotSpec {
-            samples: 0,
-            ..*spec
-        })
-        .map_err(flag_named)?;
-    let Some(last) = first.bounces.get(n - 1) else {
-        anyhow::bail!(
-            "invalid --after-bounce: the shot ends (at t = {} s) before its bounce {n}",
-            given(first.end.state.t, 4)
-        );
-    };
-    let x = last.x + d;
-    let to = ball.shot_unwarned(&ShotSpec {
-        ends: Ends {
-            distance: Some(x),
-            ..spec.ends
-        },
-        samples: 0,
-        ..*spec
-    });
-    if to.map_err(flag_named)?.bounces.len() < n {
-        anyhow::bail!(
-            "invalid --after-bounce: the ball passes x = {} m before its bounce {n}",
+    ball.after_bounce_distance(spec, d).map_err(|e| match e {
+        AfterBounceError::NotPositive(d) => {
+            anyhow::anyhow!("invalid --after-bounce: {} (must be positive)", given(d, 6))
+        }
+        AfterBounceError::NoBounce => {
+            anyhow::anyhow!("invalid --after-bounce: the shot makes no bounce (--bounces 0)")
+        }
+        AfterBounceError::EndsBefore { bounce, t } => anyhow::anyhow!(
+            "invalid --after-bounce: the shot ends (at t = {} s) before its bounce {bounce}",
+            given(t, 4)
+        ),
+        AfterBounceError::PassesBefore { bounce, x } => anyhow::anyhow!(
+            "invalid --after-bounce: the ball passes x = {} m before its bounce {bounce}",
             given(x, 6)
-        );
-    }
-    Ok(x)
+        ),
+        AfterBounceError::Shot(e) => flag_named(e),
+    })
 }
 
 /// A value refused by the library, named by its flag: `invalid --drag-coefficient: …`.

@@ -37,7 +37,10 @@ impl SurfaceArgs {
             None => SurfaceUsed::rigid_plate(),
             Some(name) => {
                 let all = catalog::load(catalog::user_surfaces_dir().as_deref())?;
-                SurfaceUsed::from_entry(&catalog::find(&all, name).map_err(anyhow::Error::msg)?)
+                // the flag named before the catalog's words (`invalid --surface: unknown …`)
+                let entry = catalog::find(&all, name)
+                    .map_err(|e| anyhow::anyhow!("invalid --surface: {e}"))?;
+                SurfaceUsed::from_entry(&entry)
             }
         };
         let given = [

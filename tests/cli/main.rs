@@ -52,6 +52,7 @@ mod cli_peers_case;
 mod cli_presets;
 mod cli_progress_pty;
 mod cli_reproduce;
+mod cli_shot_surface;
 mod cli_size;
 mod cli_small;
 mod cli_static;
