@@ -64,13 +64,13 @@ fn the_warning_disappears_inside_the_record_and_comes_back_outside_it() {
         let text = screen(&app, width, height);
         assert!(!text.contains("calibration"), "{width}×{height}:\n{text}");
     }
-    // v steps v0 by 0.1 m/s: out of the record, and the message line says so once
+    // v steps v0 by 0.1 m/s: out of the record, which the readout says (the message line
+    // only when the explorer opens outside it)
     press(&mut app, &[KeyCode::Char('v')]);
     let v0 = app.setting().params.v0;
     assert!((v0 - 7.006).abs() < 1e-9, "{v0}");
     let w = library(v0).expect("7.006 m/s is outside it");
     assert_eq!(app.calibration().as_deref(), Some(w.as_str()));
-    assert_eq!(app.message().map(|m| m.text.as_str()), Some(w.as_str()));
     assert!(screen(&app, 120, 40).contains("outside calibration: impact speed"));
     // back to the fitted speed: gone from the readout and the message line
     press(&mut app, &[KeyCode::Char('V')]);

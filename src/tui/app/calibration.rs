@@ -22,11 +22,10 @@ impl App {
         ball.calibration_warning(v)
     }
 
-    /// The message line says the calibration warning whole when one appears (the explorer
-    /// opened outside the record, or a change took the ball out of it): the short readouts
-    /// show it cut to a line. A warning or error already on the message line stays; a
-    /// warning that only changes its numbers (v0 stepped on) is not said again; one that no
-    /// longer holds leaves the message line.
+    /// The message line says the calibration warning whole when the explorer opens outside
+    /// the record (nothing to undo yet: a change's own message, "λ = 0.31", is not pushed
+    /// aside), where the short readouts show it cut to a line. A warning or error already on
+    /// the message line stays; one that no longer holds leaves it.
     pub(super) fn say_calibration(&mut self) {
         let now = self.calibration();
         let quiet = self
@@ -35,6 +34,7 @@ impl App {
             .is_none_or(|m| m.severity == Severity::Info);
         if let Some(w) = &now
             && self.calibration_said.is_none()
+            && self.undo.is_empty()
             && quiet
         {
             self.warn(w.clone());
