@@ -9,6 +9,7 @@
 
 mod answers;
 mod ask;
+mod calibration;
 mod charts;
 mod command;
 mod crosshair;
@@ -117,6 +118,9 @@ pub struct App {
     pub(in crate::tui) oblique: crate::tui::views::oblique::state::ObliqueView,
     /// The flight view's launch, surface and shot.
     pub(in crate::tui) flight: crate::tui::views::flight::state::FlightView,
+    /// The calibration warning as the last refresh found it (`App::calibration`): when one
+    /// appears the message line says it whole (src/tui/app/calibration.rs).
+    pub(in crate::tui) calibration_said: Option<String>,
 }
 
 impl App {
@@ -172,6 +176,7 @@ impl App {
             charts: Default::default(),
             oblique: Default::default(),
             flight: Default::default(),
+            calibration_said: None,
         };
         app.keep();
         app.refresh();

@@ -182,6 +182,9 @@ impl App {
         self.undo.clear();
         self.keep();
         self.message = None;
+        // a session goes on where it was: its readout shows the calibration warning, the
+        // message line stays clear (src/tui/app/calibration.rs says it only on a fresh start)
+        self.calibration_said = Some(String::new());
         self.refresh();
         Ok(self)
     }

@@ -206,6 +206,7 @@ fn readout<'a>(app: &'a App, pins: &'a [PinView<'a>], tall: bool, theme: Theme) 
         coarse: app.coarse(),
         run: app.run(),
         validity: app.validity(),
+        calibration: app.calibration(),
         pins,
         tall,
         theme,
@@ -368,6 +369,7 @@ impl Widget for &App {
                 _ => None,
             };
             let surface = self.oblique_surface_line();
+            let calibration = self.calibration();
             crate::tui::views::oblique::widget::ObliquePanel {
                 view: self.oblique_view(),
                 time: time.as_ref(),
@@ -378,6 +380,7 @@ impl Widget for &App {
                     self.oblique_value(ObliqueParam::InertiaFactor),
                 ],
                 surface: (&surface.0, surface.1),
+                calibration: calibration.as_deref(),
                 theme,
             }
             .render(body, buf);

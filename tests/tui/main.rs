@@ -19,6 +19,7 @@ mod tui_common;
 
 mod measured_explorer;
 mod tui_app;
+mod tui_calibration;
 mod tui_charts;
 mod tui_command;
 mod tui_command_pty;

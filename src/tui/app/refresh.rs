@@ -28,6 +28,7 @@ impl App {
         if self.export_wanted {
             effects.extend(self.prepare_export());
         }
+        self.say_calibration();
         effects
     }
 

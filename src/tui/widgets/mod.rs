@@ -18,3 +18,4 @@ pub mod strokes;
 pub mod surfaces;
 pub mod tags;
 pub mod title;
+pub mod warning;

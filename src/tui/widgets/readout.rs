@@ -10,6 +10,7 @@ use crate::tui::param::{Dir, Param};
 use crate::tui::setting::Setting;
 use crate::tui::theme::Theme;
 use crate::tui::widgets::pins::{self, Now, PinView};
+use crate::tui::widgets::warning::warning_lines;
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
 use ratatui::style::Style;
@@ -23,6 +24,8 @@ mod short;
 pub const PANEL_HEIGHT: u16 = 22;
 /// Rows the compact form needs, border included.
 pub const COMPACT_HEIGHT: u16 = 6;
+/// Most rows of the calibration warning in the tall panel (tests/tui/tui_calibration.rs).
+const CALIBRATION_ROWS: usize = 4;
 /// Rows of the energy budget in the tall panel, shown only when they fit.
 const ENERGY_ROWS: usize = 3;
 
@@ -41,6 +44,10 @@ pub struct Readout<'a> {
     pub run: Option<&'a ImpactResponse>,
     /// Why the run is outside the model's validity (z_m or α_max beyond R), if it is.
     pub validity: Option<String>,
+    /// The library's "outside calibration: …" warning when v0 lies outside the ball's record
+    /// (`App::calibration`): whole in the tall panel, one line cut at a word in the short
+    /// forms, whose full text the message line gives (issue 52 item 2).
+    pub calibration: Option<String>,
     /// The pinned runs, oldest first: the pin table compares them with this run.
     pub pins: &'a [PinView<'a>],
     /// The tall panel beside the charts, or four compact lines below them.
@@ -60,9 +67,9 @@ impl Widget for &Readout<'_> {
             let inner = Block::bordered().inner(area);
             self.panel(usize::from(inner.width), usize::from(inner.height))
         } else if inner_w < COMPACT_FROM {
-            self.narrow()
+            self.narrow(inner_w)
         } else {
-            self.compact()
+            self.compact(inner_w)
         };
         // a long line breaks between its fields, never inside a value (tests/tui/tui_render.rs:
         // `readout_values_never_wrap`)
@@ -204,7 +211,7 @@ impl Readout<'_> {
         let mut lines = self.parameter_lines();
         lines.push(Line::raw(""));
         lines.extend(self.result_lines(inner_w));
-        lines.extend(self.notes());
+        lines.extend(self.notes(inner_w));
         let energy = self.energy_lines();
         if inner_h >= lines.len() + energy.len().max(ENERGY_ROWS) {
             lines.extend(energy);
@@ -332,10 +339,14 @@ impl Readout<'_> {
     }
 
     /// What the run did, at which speed the measurements were taken, what is pinned.
-    fn notes(&self) -> Vec<Line<'static>> {
+    fn notes(&self, inner_w: usize) -> Vec<Line<'static>> {
         let theme = &self.theme;
         let mut lines = Vec::new();
         lines.extend(self.validity_line());
+        // four rows at most: the message line says it whole
+        if let Some(w) = &self.calibration {
+            lines.extend(warning_lines(w, inner_w, CALIBRATION_ROWS, theme));
+        }
         if let Some(r) = self.run {
             // the Hertz law is elastic: it never flattens, whatever z_m and z_p (docs/model.md
             // §3; tests/cli/answer_warnings.rs)

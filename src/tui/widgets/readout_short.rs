@@ -23,7 +23,7 @@ impl Readout<'_> {
     }
 
     /// Short lines, one or two quantities each, for a pane beside a chart (80×24).
-    pub(super) fn narrow(&self) -> Vec<Line<'static>> {
+    pub(super) fn narrow(&self, inner_w: usize) -> Vec<Line<'static>> {
         let s = self.setting;
         let [lambda, zeta, v0] = self.knobs();
         let mut lines = vec![
@@ -44,6 +44,9 @@ impl Readout<'_> {
                 if self.coarse { "[coarse]" } else { "[fine]" }
             )),
         ];
+        // the calibration warning before the results: below them the pane's height cuts it at
+        // 80 × 24 (tests/tui/tui_calibration.rs)
+        lines.extend(self.calibration_line(inner_w));
         let rows = results(self.preset, self.run, s);
         if rows.len() < 5 {
             lines.push(Line::styled(" no result", self.theme.error()));
@@ -70,8 +73,15 @@ impl Readout<'_> {
         Some(Line::styled(format!(" {w}"), self.theme.warning()))
     }
 
+    /// The calibration warning on one line of `width` columns, cut at a word with "…" (the
+    /// message line gives it whole), if v0 lies outside the ball's record.
+    fn calibration_line(&self, width: usize) -> Option<Line<'static>> {
+        let w = self.calibration.as_ref()?;
+        crate::tui::widgets::warning::warning_lines(w, width, 1, &self.theme).pop()
+    }
+
     /// Four lines for narrow terminals.
-    pub(super) fn compact(&self) -> Vec<Line<'static>> {
+    pub(super) fn compact(&self, inner_w: usize) -> Vec<Line<'static>> {
         let s = self.setting;
         let [lambda, zeta, v0] = self.knobs();
         let mut lines = vec![
@@ -109,6 +119,7 @@ impl Readout<'_> {
             lines.push(Line::styled(" no result", self.theme.error()));
         }
         lines.extend(self.validity_line());
+        lines.extend(self.calibration_line(inner_w));
         lines.extend(pins::compact(self.pins, &self.now()));
         lines
     }

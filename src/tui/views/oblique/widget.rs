@@ -36,6 +36,9 @@ pub struct ObliquePanel<'a> {
     /// and K_s, c_s, M, c_t (issue 53 item 6; `App::oblique_surface_line`), and whether it is
     /// the default plate, said last so that a short readout loses it first (60×20).
     pub surface: (&'a str, bool),
+    /// The library's "outside calibration: …" warning when the impact's normal speed lies
+    /// outside the ball's record (`App::calibration`, issue 52 item 2).
+    pub calibration: Option<&'a str>,
     /// The time charts as drawn (`charts::time_figures` with their normalize, zoom and
     /// crosshair: src/tui/app/charts.rs), once the impact is computed.
     pub time: Option<&'a [Figure; 3]>,
@@ -114,11 +117,17 @@ impl ObliquePanel<'_> {
             Some(Err(e)) => lines.push(Line::styled(e.clone(), theme.error())),
             None => {}
         }
+        let mut pace = Vec::new();
         match &self.view.pace {
-            Some(Ok(p)) => lines.extend(pace_lines(p, self.view.friction, theme)),
-            Some(Err(e)) => lines.push(Line::styled(format!("ITF pace: {e}"), theme.error())),
+            Some(Ok(p)) => pace.extend(pace_lines(p, self.view.friction, theme)),
+            Some(Err(e)) => pace.push(Line::styled(format!("ITF pace: {e}"), theme.error())),
             None => {}
         }
+        let inner = Block::bordered().inner(area);
+        let last = usize::from(default);
+        let room = usize::from(inner.height).saturating_sub(lines.len() + pace.len() + last);
+        lines.extend(self.calibration_lines(usize::from(inner.width), room));
+        lines.extend(pace);
         if default {
             lines.push(surface);
         }
@@ -126,6 +135,15 @@ impl ObliquePanel<'_> {
             .wrap(Wrap { trim: true })
             .block(Block::bordered())
             .render(area, buf);
+    }
+
+    /// The calibration warning in the `rows` left (one at least), its last line cut at a word
+    /// with "…" when it does not all fit: the message line says it whole.
+    fn calibration_lines(self, width: usize, rows: usize) -> Vec<Line<'static>> {
+        let Some(w) = self.calibration else {
+            return Vec::new();
+        };
+        crate::tui::widgets::warning::warning_lines(w, width, rows.max(1), &self.theme)
     }
 
     /// θ, ω and μ a line each, K_t and κ on one (the ball's Mindlin K_t and preset κ until
