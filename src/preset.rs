@@ -226,11 +226,19 @@ use error::{Bad, line_col, locate, one_line};
 impl Preset {
     /// Parse and validate a preset; errors carry file:line:column.
     pub fn parse(text: &str, origin: &str) -> Result<Preset, PresetError> {
-        let preset: Preset = toml::from_str(text).map_err(|e| PresetError {
-            origin: origin.to_string(),
+        let preset: Preset = toml::from_str(text).map_err(|e| {
             // an error without a span concerns the whole document: its start
-            position: Some(line_col(text, e.span().map_or(0, |s| s.start))),
-            message: one_line(e.message()),
+            let offset = e.span().map_or(0, |s| s.start);
+            let message = one_line(e.message());
+            PresetError {
+                origin: origin.to_string(),
+                position: Some(line_col(text, offset)),
+                // a value of the wrong type: the message names no field, the path does
+                message: match e.span().and_then(|_| error::key_at(text, offset)) {
+                    Some(key) => format!("{key}: {message}"),
+                    None => message,
+                },
+            }
         })?;
         preset.check().map_err(|bad| PresetError {
             origin: origin.to_string(),

@@ -4,7 +4,7 @@ from typing import Any, Literal, Optional, Sequence, TypedDict, Union
 
 import os
 
-from typing_extensions import Unpack
+from typing_extensions import NotRequired, Unpack
 
 import numpy as np
 import numpy.typing as npt
@@ -41,8 +41,8 @@ class BallArguments(TypedDict, total=False):
 
 class BallRecord(TypedDict):
     """The ball an answer ran, as the JSON's ``ball`` object (docs/cli.md, "The ball
-    object"): ``overrides`` lists what the call changed from the preset; c and z_p None when
-    infinite."""
+    object"): ``overrides`` lists what the call changed from the preset, ``kept`` (only with
+    an override) what it kept; c and z_p None when infinite."""
     name: Optional[str]
     origin: str
     law: str
@@ -55,6 +55,7 @@ class BallRecord(TypedDict):
     k_h: float
     inertia_factor: float
     overrides: list[str]
+    kept: NotRequired[list[str]]
 
 class Conditions(TypedDict):
     """The conditions an answer ran at (the JSON's ``conditions``): °C, Pa gauge at that

@@ -98,6 +98,12 @@ impl<'a, 'py> FromPyObject<'a, 'py> for Record {
             k_h: item(r, "k_h")?.extract()?,
             inertia_factor: item(r, "inertia_factor")?.extract()?,
             overrides: item(r, "overrides")?.extract()?,
+            // absent without an override (`ball.kept`, issue 52)
+            kept: r
+                .get_item("kept")?
+                .map(|k| k.extract())
+                .transpose()?
+                .unwrap_or_default(),
         }))
     }
 }

@@ -56,6 +56,10 @@ pub struct BallRecord {
     /// What the command line changed from the preset: `mass`, `radius`, `k_p`, `c`, `k_r`,
     /// `z_p`, `lambda`, `zeta` (the `parameters` and `law` keys say the set and law).
     pub overrides: Vec<String>,
+    /// With overrides: the parameters kept from the preset, as the text header's "kept from
+    /// the preset: …" ([`Ball::kept`]); absent without an override (nothing was changed).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub kept: Vec<String>,
 }
 
 impl Ball {
@@ -75,6 +79,7 @@ impl Ball {
             k_h: p.k_h,
             inertia_factor: self.inertia_factor(),
             overrides: self.overrides.clone(),
+            kept: self.kept().into_iter().map(String::from).collect(),
         }
     }
 
@@ -101,21 +106,30 @@ impl Ball {
         if self.overrides.is_empty() || self.name.is_none() {
             return None;
         }
+        let kept = self.kept();
+        let mut line = format!("overrides: {}", self.overrides.join(", "));
+        if !kept.is_empty() {
+            line.push_str(&format!("; kept from the preset: {}", kept.join(", ")));
+        }
+        Some(line)
+    }
+
+    /// The preset's parameters an override left as they were (mass, radius, k_p, c, k_r,
+    /// z_p, in that order); empty without an override or for a ball that is no preset.
+    pub fn kept(&self) -> Vec<&'static str> {
+        if self.overrides.is_empty() || self.name.is_none() {
+            return Vec::new();
+        }
         // λ moves K_r and ζ moves c (Eq. 24): those are changed, not kept
         let moved = |n: &str| match n {
             "k_r" => "lambda",
             "c" => "zeta",
             _ => "",
         };
-        let kept: Vec<&str> = ["mass", "radius", "k_p", "c", "k_r", "z_p"]
+        ["mass", "radius", "k_p", "c", "k_r", "z_p"]
             .into_iter()
             .filter(|n| !self.overrides.iter().any(|o| o == n || o == moved(n)))
-            .collect();
-        let mut line = format!("overrides: {}", self.overrides.join(", "));
-        if !kept.is_empty() {
-            line.push_str(&format!("; kept from the preset: {}", kept.join(", ")));
-        }
-        Some(line)
+            .collect()
     }
 
     /// "outside calibration: …" when the preset's measured COR, taken at its measured speed,

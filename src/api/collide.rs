@@ -109,24 +109,8 @@ impl Ball {
             // the reach is read on the reduced single chain (ball 1 against a rigid m*, the
             // old model), not on the pair's run: an estimate (docs/targets.md §8)
             let warnings = self.collision_warning(&target, p1.v0, &collision);
-            // each record is of impacts on a rigid plate: in the pair's centre-of-mass frame
-            // each ball meets the other at m_other·v_closing/(m1 + m2), the wall impact's
-            // speed for two identical balls (v each at ±v) and for a wall (m_other → ∞)
-            let (closing, total) = (collision.closing_speed, p1.mass + p2.mass);
-            let own = self.calibration_warning(p2.mass * closing / total);
-            let partner = other
-                .calibration_warning(p1.mass * closing / total)
-                .map(|w| {
-                    w.replacen(
-                        "outside calibration: ",
-                        &format!(
-                            "outside calibration: the partner ({}): ",
-                            other.name.as_deref().unwrap_or("a ball")
-                        ),
-                        1,
-                    )
-                });
-            let warnings: Vec<String> = warnings.into_iter().chain(own).chain(partner).collect();
+            let calibration = self.pair_calibration_warnings(other, collision.closing_speed);
+            let warnings: Vec<String> = warnings.into_iter().chain(calibration).collect();
             CollisionReport {
                 ball: self.name.clone(),
                 ball_record: self.record_json(),
@@ -150,9 +134,45 @@ impl Ball {
         Ok(r)
     }
 
+    /// The records' warnings of this ball meeting `other` head-on at the closing speed
+    /// `closing` (m/s), this ball's then the partner's, named as the partner's. Each record is
+    /// of impacts on a rigid plate: in the pair's centre-of-mass frame each ball meets the
+    /// other at m_other·v_c/(m1 + m2), the wall impact's speed for two identical balls (v each
+    /// at ±v) and for a wall (m_other → ∞). `collide --target-preset` and `peers --pair`.
+    pub fn pair_calibration_warnings(&self, other: &Ball, closing: f64) -> Vec<String> {
+        let total = self.params.mass + other.params.mass;
+        let own = self.calibration_warning(other.params.mass * closing / total);
+        let partner = other
+            .calibration_warning(self.params.mass * closing / total)
+            .map(|w| {
+                w.replacen(
+                    "outside calibration: ",
+                    &format!(
+                        "outside calibration: the partner ({}): ",
+                        other.name.as_deref().unwrap_or("a ball")
+                    ),
+                    1,
+                )
+            });
+        own.into_iter().chain(partner).collect()
+    }
+
     /// The warnings of a bat's run `r` for this ball: its peak indentation, or its own
-    /// compression, beyond its radius in the game impact or in the BBCOR test, each named.
+    /// compression, beyond its radius in the game impact or in the BBCOR test, each named;
+    /// its record's range; last, a ball that is not the standard's (the verdict is then not
+    /// the test's: tests/cli/cli_targets.rs, `bat_names_the_standards_ball`).
     pub fn bat_warnings(&self, r: &BatRun) -> Vec<String> {
+        let standard = &bat::BAT_STANDARDS[0];
+        let own = self.name.as_deref().filter(|n| standard.balls.contains(n));
+        let not_standard = own.is_none().then(|| {
+            format!(
+                "not the standard's ball: the {} test fires {}; this is {}: the verdict judges \
+                 the bat with another ball",
+                standard.name,
+                standard.balls.join(", "),
+                self.name.as_deref().unwrap_or("a ball that is no preset")
+            )
+        });
         let at_rest = Target {
             speed: 0.0,
             ..r.bat
@@ -172,6 +192,7 @@ impl Ball {
             r.game.closing_speed.min(r.test.closing_speed),
             r.game.closing_speed.max(r.test.closing_speed),
         ))
+        .chain(not_standard)
         .collect()
     }
 

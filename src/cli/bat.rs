@@ -11,8 +11,9 @@ use clap::{Args, ValueEnum};
 use serde::Serialize;
 use std::io::Write;
 
-/// The preset `bat` runs when none is given.
-const BAT_BALL: &str = "baseball";
+/// The preset `bat` runs when none is given: the ball of the standard it judges
+/// (`ncaa-bbcor`'s, docs/targets.md §5).
+const BAT_BALL: &str = BAT_STANDARDS[0].balls[0];
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
 pub enum BatFormat {
@@ -22,7 +23,7 @@ pub enum BatFormat {
 
 #[derive(Debug, Clone, Args)]
 pub struct BatArgs {
-    /// The ball [default: baseball]
+    /// The ball [default: baseball-mlb, the ball of the BBCOR test]
     #[command(flatten)]
     pub ball: BallArgs,
     /// The bat's effective mass at the impact point M_eff (kg)

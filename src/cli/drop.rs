@@ -167,6 +167,7 @@ pub fn run(a: &DropArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     {
         warnings.push(w);
     }
+    warnings.extend(standard.and_then(|s| surface.off_standard_warning(s.name, s.surface)));
     warnings.extend(b.drop_air_warning(air));
     warnings.extend(off_conditions);
     match a.format {

@@ -179,6 +179,9 @@ pub fn run(a: &ObliqueArgs, out: &mut dyn Write) -> anyhow::Result<()> {
                 given(radius * 1e3, 4)
             )?;
             writeln!(out, "{}", surface.label())?;
+            if let Some(line) = ball.overrides_line() {
+                writeln!(out, "{line}")?;
+            }
             if let Some(line) = ball.conditions_line() {
                 writeln!(out, "{line}")?;
             }

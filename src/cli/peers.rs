@@ -156,6 +156,10 @@ struct Pair {
     /// --target-preset`, docs/targets.md §8): the model's COR for the pair.
     #[serde(skip)]
     cor: f64,
+    /// `collide --target-preset`'s warnings of that impact: the reach against the ball's own
+    /// radius (not R_eff), each ball's record at the speed it meets the other.
+    #[serde(skip)]
+    warnings: Vec<String>,
 }
 
 impl PeersArgs {
@@ -204,7 +208,7 @@ pub fn run(a: &PeersArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     let (target, source) = target(a, &b, pair.as_ref())?;
     if let Some(code) = a.export {
         let mut set = ExportSet::new(&ball, target, b.name.as_deref().unwrap_or("ball"))?;
-        set.tangential = tangential(a, &b, code)?;
+        set.tangential = case::tangential(a, &b, code)?;
         set.case = Some(case::case(
             &whole,
             bounce,
@@ -213,13 +217,12 @@ pub fn run(a: &PeersArgs, out: &mut dyn Write) -> anyhow::Result<()> {
             target,
         )?);
         // the exported file is another code's input: the ball's warnings on stderr
-        let mut w = b.warnings(&b.impact()?);
-        w.extend(b.measured_cor_warning().filter(|_| source == "measured"));
+        let mut w = ball_warnings(&b, pair.as_ref(), source)?;
         // a pair's COR falls with its closing speed (tennis on tennis 0.772 at 6.9 m/s, 0.690
         // at 30): the preset's own speed is nothing of the pair's (issue 52 item 8)
         if let (Some(p), None) = (&pair, a.v0) {
             w.push(format!(
-                "the pair export is calibrated at the closing speed {} m/s, the preset's v0:                  give --v0 with the pair's closing speed against {} (its COR changes with it)",
+                "the pair export is calibrated at the closing speed {} m/s, the preset's v0: give --v0 with the pair's closing speed against {} (its COR changes with it)",
                 crate::text::number(whole.params.v0),
                 p.preset
             ));
@@ -236,8 +239,7 @@ pub fn run(a: &PeersArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         out.write_all(export::snippet(code, &set).as_bytes())?;
         return Ok(());
     }
-    let mut warnings = b.warnings(&b.impact()?);
-    warnings.extend(b.measured_cor_warning().filter(|_| source == "measured"));
+    let warnings = ball_warnings(&b, pair.as_ref(), source)?;
     let mut rows: Vec<Row> = calibrate::compare(&ball, target, 0)?
         .iter()
         .map(|c| peer_row(&ball, c))
@@ -269,6 +271,20 @@ pub fn run(a: &PeersArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         }
     }
     Ok(())
+}
+
+/// The ball's warnings at v0, and the measured COR's when it is the target. A pair's reduced
+/// ball is no ball that was measured: its warnings (one ball at the closing speed against one
+/// record, `peers --pair tennis --v0 30` checked 30 m/s; a reach against R_eff) give way to
+/// `collide --target-preset`'s (tests/cli/issue52_trial.rs,
+/// `peers_pair_warns_as_collide_for_both_balls`).
+fn ball_warnings(b: &Ball, pair: Option<&Pair>, source: &str) -> anyhow::Result<Vec<String>> {
+    let mut w = match pair {
+        Some(p) => p.warnings.clone(),
+        None => b.warnings(&b.impact()?),
+    };
+    w.extend(b.measured_cor_warning().filter(|_| source == "measured"));
+    Ok(w)
 }
 
 /// The target COR and where it came from.
@@ -324,11 +340,13 @@ fn pair_ball(a: &PeersArgs, mut b: Ball, name: &str) -> anyhow::Result<(Ball, Op
     let radius = |x: &Ball| x.measured.as_ref().map_or(f64::NAN, |m| m.radius);
     let (r1, r2) = (radius(&b), radius(&other));
     let rigid = (f64::INFINITY, 0.0);
+    let met = b.collide_ball(&other, 0.0, rigid)?;
     let pair = Pair {
         preset: other.name.clone().unwrap_or_default(),
         effective_mass: m1 * m2 / (m1 + m2),
         effective_radius: r1 * r2 / (r1 + r2),
-        cor: b.collide_ball(&other, 0.0, rigid)?.collision.cor,
+        cor: met.collision.cor,
+        warnings: met.warnings,
     };
     b.params.mass = pair.effective_mass;
     b.params.validate()?;
@@ -371,38 +389,4 @@ fn christoforou_yigit_row(b: &Ball, target: f64) -> anyhow::Result<Row> {
         contact_time: r.contact_time,
         k_r: Some(params.k_r),
     })
-}
-
-/// The tangential model `--friction` asks the export to add, checked as `oblique` checks it
-/// (one line naming the field, exit 2).
-fn tangential(
-    a: &PeersArgs,
-    b: &crate::Ball,
-    code: ExportArg,
-) -> anyhow::Result<Option<crate::peers::tangential::TangentialExport>> {
-    let Some(mu) = a.friction else {
-        return Ok(None);
-    };
-    if !matches!(
-        code,
-        ExportArg::Lammps | ExportArg::Mujoco | ExportArg::Json
-    ) {
-        anyhow::bail!("--friction exports the tangential model to lammps, mujoco or json only");
-    }
-    let k_t = a
-        .tangential_stiffness
-        .or(b.tangential_stiffness())
-        .ok_or_else(|| {
-            anyhow::anyhow!(
-                "invalid tangential_stiffness: the ball is no preset and carries none: give it"
-            )
-        })?;
-    // the same checks as an oblique impact's (angle and κ are not the export's)
-    let c_t = a.tangential_damping.unwrap_or(0.0);
-    crate::oblique::Oblique::new(45.0, 0.0, mu, k_t, 0.5, 1.0)?.with_tangential_damping(c_t)?;
-    Ok(Some(crate::peers::tangential::TangentialExport {
-        friction: mu,
-        tangential_stiffness: k_t,
-        tangential_damping: c_t,
-    }))
 }

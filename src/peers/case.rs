@@ -7,7 +7,6 @@
 //! against 427 rad/s out for the tennis ball at 30 m/s and 16° with μ 0.6: the difference is
 //! κ's, not the export's).
 
-use crate::text::number as num;
 use serde::Serialize;
 use std::fmt::Write;
 
@@ -108,6 +107,12 @@ impl ExportCase {
             );
         }
     }
+}
+
+/// A number in a comment line: six digits as the text answers give them (15, not
+/// 14.999999999999998: v·sinθ of 30 m/s at 30°); comments are read, not pasted (issue 52).
+fn num(x: f64) -> String {
+    crate::text::given(x, 6)
 }
 
 /// Six significant digits: what a paste is checked to.

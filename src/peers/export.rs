@@ -9,7 +9,7 @@ mod codes;
 
 use super::rules::{self, Rule};
 use super::{PeerBall, PeerError, PeerModel, calibrate, impact};
-use crate::text::number as num;
+use crate::text::given;
 use serde::Serialize;
 use std::fmt::Write;
 
@@ -143,16 +143,18 @@ impl ExportSet {
         rules::rule_input_for(PeerModel::Tsuji, Rule::LogDecrement, self.tsuji_alpha)
     }
 
-    /// Two comment lines naming the ball; `c` opens a comment, `end` closes it.
+    /// Two comment lines naming the ball; `c` opens a comment, `end` closes it. A comment is
+    /// read, not pasted: six digits as the text answers give them (v0 = 15, not
+    /// 14.999999999999998); the values the code reads keep every digit.
     fn header(&self, out: &mut String, c: &str, end: &str) {
         let _ = writeln!(
             out,
             "{c} bouncelab peers: {}, m = {} kg, R = {} m, v0 = {} m/s, target COR {}{end}",
             self.label,
-            num(self.mass),
-            num(self.radius),
-            num(self.v0),
-            num(self.target_cor)
+            given(self.mass, 6),
+            given(self.radius, 6),
+            given(self.v0, 6),
+            given(self.target_cor, 6)
         );
         let _ = writeln!(
             out,

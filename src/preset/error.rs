@@ -84,3 +84,31 @@ pub(super) fn locate(text: &str, bad: &Bad) -> (usize, usize) {
     }
     line_col(text, offset)
 }
+
+/// The key whose value holds the byte `offset` ("calibration.speed_max",
+/// "calibration.data[1].speeds[0]"), to name the field of a TOML error that points at a value
+/// and names none ("invalid type: string \"fast\", expected f64": issue 52); `None` when no
+/// value holds it (an unknown or missing key, whose message names it).
+pub(crate) fn key_at(text: &str, offset: usize) -> Option<String> {
+    let doc = toml::de::DeTable::parse(text).ok()?;
+    key_in(doc.get_ref(), offset)
+}
+
+fn key_in(table: &toml::de::DeTable, offset: usize) -> Option<String> {
+    table.iter().find_map(|(key, value)| {
+        value_path(value, offset).map(|rest| format!("{}{rest}", key.get_ref()))
+    })
+}
+
+/// The path below `value` to the scalar holding `offset` ("" for `value` itself).
+fn value_path(value: &toml::Spanned<toml::de::DeValue>, offset: usize) -> Option<String> {
+    use toml::de::DeValue;
+    match value.get_ref() {
+        DeValue::Table(t) => key_in(t, offset).map(|p| format!(".{p}")),
+        DeValue::Array(items) => items
+            .iter()
+            .enumerate()
+            .find_map(|(i, item)| value_path(item, offset).map(|rest| format!("[{i}]{rest}"))),
+        _ => value.span().contains(&offset).then(String::new),
+    }
+}

@@ -173,12 +173,22 @@ fn every_answer_and_every_format_carries_the_radius_warning() {
         );
         let args = [cmd, within].concat();
         let v = json(&[&args[..], &["--format", "json"]].concat());
-        assert_eq!(
-            v["warnings"],
-            serde_json::json!([]),
-            "{cmd:?} within the radius"
-        );
-        assert!(!ok(&args).contains("warning:"), "{cmd:?} within the radius");
+        // `bat` with another ball than the BBCOR standard's says so: not the reach
+        let other_ball = |w: &str| w.starts_with("not the standard's ball:");
+        let w: Vec<&str> = v["warnings"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|w| w.as_str().unwrap())
+            .filter(|w| !other_ball(w))
+            .collect();
+        assert!(w.is_empty(), "{cmd:?} within the radius: {w:?}");
+        let text = ok(&args);
+        let warned = text
+            .lines()
+            .filter_map(|l| l.strip_prefix("warning: "))
+            .any(|w| !other_ball(w));
+        assert!(!warned, "{cmd:?} within the radius");
     }
     // the CSV rows: a `warnings` column, last
     let oblique = argv("oblique --angle 80 --friction 0.5 --format csv");

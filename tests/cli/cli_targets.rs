@@ -3,7 +3,7 @@
 //! docs/targets.md §3, bad input is one line naming the field, exit 2.
 
 use crate::common;
-use common::{argv, argv_with, bad, f, json, ok};
+use common::{argv, argv_with, bad, f, json, ok, ok_calibrated};
 
 /// M = ∞, v_t = 0, no K_s: `collide` is today's `run`, for every law.
 #[test]
@@ -126,12 +126,13 @@ fn collide_text_says_the_way_each_speed_goes() {
 #[test]
 fn bat_reports_bbs_and_the_bbcor_verdict() {
     let b = json(&["bat", "--bat-mass", "0.8", "--format", "json"]);
-    assert_eq!(b["ball"], "baseball");
+    // the BBCOR standard's ball (tests/cli/issue52_trial.rs, `bat_names_the_standards_ball`)
+    assert_eq!(b["ball"], "baseball-mlb");
     let e_a = f(&b, "apparent_cor");
     assert!((f(&b, "bbs") - (e_a * 40.0 + (1.0 + e_a) * 30.0)).abs() < 1e-12);
     // BBCOR is the pair's COR of `collide` at 136 mph onto the bat at rest
     let c = json(&argv(
-        "collide --preset baseball --v0 60.79744 --target-mass 0.8 --format json",
+        "collide --preset baseball-mlb --v0 60.79744 --target-mass 0.8 --format json",
     ));
     assert_eq!(f(&b, "bbcor"), f(&c, "cor"));
     let pass = f(&b, "bbcor") <= 0.5;
@@ -247,21 +248,23 @@ fn peers_pair_calibrates_for_the_pair() {
 /// sources keep their names under `--target`, and two different partners are refused.
 #[test]
 fn peers_target_preset_is_the_pair() {
+    // golf meets tennis at 0.82 m/s, tennis golf at 0.65: both below their records, each
+    // warned of (as `collide --target-preset`)
     for format in ["json", "text", "csv"] {
-        let by_pair = ok(&argv(&format!(
+        let by_pair = ok_calibrated(&argv(&format!(
             "peers --preset golf --pair tennis --format {format}"
         )));
-        let by_target = ok(&argv(&format!(
+        let by_target = ok_calibrated(&argv(&format!(
             "peers --preset golf --target tennis --format {format}"
         )));
         assert_eq!(by_pair, by_target, "{format}");
     }
     // (the closing speed given: without it a pair export warns that it holds at the preset's
     // v0, tests/cli/cli_peers_case.rs)
-    let lammps = ok(&argv(
+    let lammps = ok_calibrated(&argv(
         "peers --preset golf --pair tennis --export lammps --v0 1.47",
     ));
-    let by_target = ok(&argv(
+    let by_target = ok_calibrated(&argv(
         "peers --preset golf --target tennis --export lammps --v0 1.47",
     ));
     assert_eq!(lammps, by_target);

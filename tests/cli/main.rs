@@ -62,6 +62,7 @@ mod cli_targets;
 mod escaping;
 mod field_names;
 mod hostile_generators;
+mod issue52_trial;
 mod numbers_as_typed;
 mod outputs_regular_only;
 mod session_file;

@@ -179,8 +179,18 @@ fn preset(
             k_r: p.k_r,
         },
         fit: crate::api::fit_table(f),
-        calibration: Some(calibration(data, p, when)),
+        calibration: Some(at_conditions(calibration(data, p, when), &ball.conditions)),
     }
+}
+
+/// The record `c` at the conditions the ball was fitted at: its gauge pressure and
+/// temperature (the base preset's record's, or `--pressure`, `--temperature`). A tennis ball
+/// fitted and saved lost its 12 psi from the record (issue 52; tests/cli/issue52_trial.rs,
+/// `fit_save_keeps_the_balls_pressure`).
+fn at_conditions(mut c: Calibration, conditions: &crate::conditions::Conditions) -> Calibration {
+    c.pressure = conditions.pressure_gauge_pa;
+    c.temperature = conditions.temperature_c;
+    c
 }
 
 /// The record of what the ball was fitted to: the data's file (or what was typed), their

@@ -3,7 +3,7 @@
 //! the normal speed v·sinθ, and every snippet states the code's κ against the ball's and
 //! bouncelab's own answer for that bounce at the code's κ ([`crate::peers::case`]).
 
-use super::{Pair, PeersArgs};
+use super::{ExportArg, Pair, PeersArgs};
 use crate::api::{Ball, ObliqueSpec};
 use crate::model::materials::SOLID_INERTIA_FACTOR;
 use crate::peers::case::{CaseAnswer, ExportCase};
@@ -115,4 +115,38 @@ pub(super) fn case(
         inertia_factor_ball: kappa_ball,
         answer,
     })
+}
+
+/// The tangential model `--friction` asks the export to add, checked as `oblique` checks it
+/// (one line naming the field, exit 2).
+pub(super) fn tangential(
+    a: &PeersArgs,
+    b: &crate::Ball,
+    code: ExportArg,
+) -> anyhow::Result<Option<crate::peers::tangential::TangentialExport>> {
+    let Some(mu) = a.friction else {
+        return Ok(None);
+    };
+    if !matches!(
+        code,
+        ExportArg::Lammps | ExportArg::Mujoco | ExportArg::Json
+    ) {
+        anyhow::bail!("--friction exports the tangential model to lammps, mujoco or json only");
+    }
+    let k_t = a
+        .tangential_stiffness
+        .or(b.tangential_stiffness())
+        .ok_or_else(|| {
+            anyhow::anyhow!(
+                "invalid tangential_stiffness: the ball is no preset and carries none: give it"
+            )
+        })?;
+    // the same checks as an oblique impact's (angle and κ are not the export's)
+    let c_t = a.tangential_damping.unwrap_or(0.0);
+    crate::oblique::Oblique::new(45.0, 0.0, mu, k_t, 0.5, 1.0)?.with_tangential_damping(c_t)?;
+    Ok(Some(crate::peers::tangential::TangentialExport {
+        friction: mu,
+        tangential_stiffness: k_t,
+        tangential_damping: c_t,
+    }))
 }

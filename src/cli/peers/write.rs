@@ -55,6 +55,9 @@ pub(super) fn text(
         given(ball.radius, 6),
         given(ball.v0, 6)
     )?;
+    if let Some(line) = b.overrides_line() {
+        writeln!(out, "{line}")?;
+    }
     if let Some(line) = b.conditions_line() {
         writeln!(out, "{line}")?;
     }
