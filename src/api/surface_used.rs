@@ -96,6 +96,32 @@ impl SurfaceUsed {
         })
     }
 
+    /// The bat `bat` runs against, as the surface the ball met (docs/cli.md, "The surface
+    /// object"): named `bat`, its effective mass M_eff, its barrel's K_s (`None`: rigid) and
+    /// c_s; every number came from the command line (or Python's arguments), so each given is
+    /// an override of the rigid barrel of no set mass, `mass` always. No μ: the bat's impact
+    /// is head-on. Its speed is the answer's `bat_speed`, not the surface's.
+    pub fn bat(mass: f64, stiffness: Option<f64>, damping: Option<f64>) -> SurfaceUsed {
+        let given = [stiffness, damping, Some(mass)];
+        let overrides = given
+            .iter()
+            .zip(Self::NORMAL)
+            .filter(|(v, _)| v.is_some())
+            .map(|(_, name)| name.to_string())
+            .collect();
+        SurfaceUsed {
+            name: "bat".into(),
+            origin: "given (the bat's effective mass and barrel)".into(),
+            stiffness: stiffness.unwrap_or(f64::INFINITY),
+            damping: damping.unwrap_or(0.0),
+            mass,
+            friction: None,
+            tangential_stiffness: None,
+            tangential_damping: None,
+            overrides,
+        }
+    }
+
     /// The normal part: a target at rest.
     pub fn target(&self) -> Target {
         Target {

@@ -15,6 +15,7 @@ mod seeded;
 #[path = "../support/tui_common/mod.rs"]
 mod tui_common;
 
+mod answer_keys;
 mod answer_reach;
 mod answer_warnings;
 mod calibration;
