@@ -139,9 +139,15 @@ impl SurfaceUsed {
 
     /// One line for a text header: "surface steel-plate (rigid, immovable)" or with its
     /// numbers and μ ([`super::surface_label`]).
+    /// Its `given:` names the normal quantities given (and `calibrated`, `target_*`), not the
+    /// tangential ones: μ is in the line as its number, K_t and c_t are the command's own lines
+    /// (the text headers stay as they were when μ joined `overrides`).
     pub fn label(&self) -> String {
         let normal = (self.stiffness, self.damping, self.mass);
-        super::surface_label(&self.name, normal, self.friction, &self.overrides)
+        let given: Vec<&String> = (self.overrides.iter())
+            .filter(|o| !Self::TANGENTIAL.contains(&o.as_str()))
+            .collect();
+        super::surface_label(&self.name, normal, self.friction, &given)
     }
 
     /// The explicit K_s, c_s, M (in that order) over the surface's own, each recorded as an
@@ -189,8 +195,9 @@ impl SurfaceUsed {
     }
 
     /// The tangential quantities the answer used, μ, K_t, c_t (in that order): each the one
-    /// given, else the surface's own; one given over the surface's own is recorded as an
-    /// override.
+    /// given, else the surface's own; every one given is recorded as an override, over the
+    /// surface's own or where it has none (`court --surface clay --friction 0.8`: μ came from
+    /// the command line, tests/cli/court_assumed.rs).
     pub fn with_tangential(mut self, given: [Option<f64>; 3]) -> SurfaceUsed {
         let slots = [
             &mut self.friction,
@@ -199,7 +206,7 @@ impl SurfaceUsed {
         ];
         let mut overrides = Vec::new();
         for ((slot, value), name) in slots.into_iter().zip(given).zip(Self::TANGENTIAL) {
-            if value.is_some() && slot.is_some() {
+            if value.is_some() {
                 overrides.push(name.to_string());
             }
             *slot = value.or(*slot);

@@ -58,6 +58,7 @@ mod cli_static;
 mod cli_tangential_damping;
 mod cli_target_pair;
 mod cli_targets;
+mod court_assumed;
 mod escaping;
 mod field_names;
 mod hostile_generators;
