@@ -182,6 +182,7 @@ ball_pyfunction! {
         let text = text.map_err(|e| value_error(e.to_string()))?;
         let d = py.import("json")?.call_method1("loads", (text,))?;
         // the conditions the ball ran at, as the command line's last key
+        d.set_item("surface", crate::surface::rigid_plate(py)?)?;
         d.set_item("conditions", &crate::answer::Stated::of(&ball))?;
         Ok(d)
     }
