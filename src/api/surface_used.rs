@@ -62,7 +62,8 @@ impl SurfaceUsed {
     pub fn calibrated(&mut self, c: &super::CourtCalibration, how: &str) {
         (self.stiffness, self.damping) = (c.stiffness, c.damping);
         self.overrides.retain(|o| o != "stiffness");
-        self.overrides.push("calibrated".into());
+        // first, where the normal quantities it stands for are listed (before μ, K_t, c_t)
+        self.overrides.insert(0, "calibrated".into());
         let name = if self.name == crate::target::surface::DEFAULT {
             "calibrated-court".to_string()
         } else {
