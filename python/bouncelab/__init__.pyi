@@ -326,6 +326,8 @@ class _MultiFitKeys(TypedDict, total=False):
     drops: dict[str, Array]
     air: Optional[DropAir]
     ball: BallRecord
+    surface: dict[str, Any]
+    conditions: Conditions
 
 class MultiFit(_Named, _MultiFitKeys):
     """A multi-parameter fit: the keys of ``bouncelab fit --format json`` (SI), and
@@ -413,6 +415,8 @@ class ObliqueFit(_Named, _ObliqueFitSometimes):
     not_pinned: list[str]
     on_bound: list[str]
     ball: BallRecord
+    surface: dict[str, Any]
+    conditions: Conditions
 
 def fit_oblique(
     file: Optional[Union[str, os.PathLike[str]]] = None,
@@ -828,6 +832,7 @@ class Static(_Named):
     forward: StaticReading
     warnings: list[str]
     ball: BallRecord
+    surface: dict[str, Any]
     conditions: Conditions
 
 def static(

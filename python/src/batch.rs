@@ -183,6 +183,9 @@ ball_pyfunction! {
         let text = text.map_err(|e| value_error(e.to_string()))?;
         let d = py.import("json")?.call_method1("loads", (text,))?;
         // the conditions the ball ran at, as the command line's last key
+        // the document is the command line's JSON: its surface too (null for ∞)
+        let plate = bouncelab::api::SurfaceUsed::rigid_plate();
+        d.set_item("surface", crate::answer::json(py, &plate)?)?;
         d.set_item("conditions", &crate::answer::Stated::of(&ball))?;
         Ok(d)
     }

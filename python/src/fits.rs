@@ -170,6 +170,9 @@ fn report<'py>(
     d.set_item("model", array(py, f.model.clone()))?;
     // the ball the fit started from, as the command line's `ball`
     d.set_item("ball", &crate::answer::Record::of(ball))?;
+    // the rigid plate the fit assumed, and the conditions, as the command line's JSON
+    d.set_item("surface", crate::surface::rigid_plate(py)?)?;
+    d.set_item("conditions", &crate::answer::Stated::of(ball))?;
     Ok(d)
 }
 

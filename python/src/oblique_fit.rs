@@ -124,6 +124,11 @@ ball_pyfunction! {
         let d = crate::answer::json(py, &report)?;
         // the ball the fit started from, as the command line's `ball`
         d.set_item("ball", &crate::answer::Record::of(&ball))?;
+        // the rigid plate the fit assumed, and the conditions, as the command line's JSON
+        // the report is the command line's JSON document: its surface too (null for ∞)
+        let plate = bouncelab::api::SurfaceUsed::rigid_plate();
+        d.set_item("surface", crate::answer::json(py, &plate)?)?;
+        d.set_item("conditions", &crate::answer::Stated::of(&ball))?;
         Ok(d)
     }
 }

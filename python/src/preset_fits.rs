@@ -48,6 +48,9 @@ ball_pyfunction! {
         d.set_item("preset_lambda", r.preset_lambda)?;
         d.set_item("warnings", warnings)?;
         d.set_item("ball", &crate::answer::Record::of(&ball))?;
+        // the rigid plate the fit assumed, and the conditions, as the command line's JSON
+        d.set_item("surface", crate::surface::rigid_plate(py)?)?;
+        d.set_item("conditions", &crate::answer::Stated::of(&ball))?;
         Ok(d)
     }
 }

@@ -29,6 +29,7 @@ ball_pyfunction! {
         let s = ball.static_deflection(load_kg, peak).map_err(error)?;
         let d = crate::answer::json(py, &StaticReport::new(&ball, load_kg, &s))?;
         // `conditions` beside the report's keys, as the command line's JSON
+        d.set_item("surface", crate::surface::rigid_plate(py)?)?;
         d.set_item("conditions", &crate::answer::Stated::of(&ball))?;
         Ok(d)
     }

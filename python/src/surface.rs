@@ -75,6 +75,13 @@ pub(crate) fn to_dict<'py>(py: Python<'py>, s: &SurfaceUsed) -> PyResult<Bound<'
     Ok(d)
 }
 
+/// The rigid plate's surface object: the `surface` of the answers that take no surface and
+/// ran on it (`static`, `fit`, `batch`, `sweep_velocity`), as the command line's JSON
+/// (docs/cli.md, "The surface of the commands that take no surface options").
+pub(crate) fn rigid_plate(py: Python<'_>) -> PyResult<Bound<'_, PyDict>> {
+    to_dict(py, &SurfaceUsed::rigid_plate())
+}
+
 /// The object back from [`to_dict`]'s dict (pickling); `None` (JSON null) reads as ∞ for
 /// the stiffness and the mass.
 pub(crate) fn from_dict(d: &Bound<'_, PyAny>) -> PyResult<SurfaceUsed> {

@@ -129,6 +129,7 @@ ball_pyfunction! {
         }
         // the ball swept and its conditions, as the JSON's `ball` and `conditions`
         crate::answer::stated(&d, &ball)?;
+        d.set_item("surface", crate::surface::rigid_plate(py)?)?;
         Ok(d)
     }
 }

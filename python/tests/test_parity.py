@@ -97,7 +97,9 @@ def test_fit_drops_and_a_cor_table_name_the_ball_as_the_command_line(tmp_path):
     expected = cli_json("fit", "--preset", "superball", "--cor-table", str(table), "--format",
                         "json")
     f = bouncelab.fit_cor_table([1.0, 2.0, 4.0, 8.0], [0.85, 0.84, 0.83, 0.80])
-    same(f["ball"], expected["ball"])
+    # the ball, the rigid plate the fit assumed and the conditions (issues 52, 53)
+    for key in ("ball", "surface", "conditions"):
+        same(f[key], expected[key], key)
     expected = cli_json("fit", "--preset", "tennis", "--free", "k_r", "--drop-height", "2.54",
                         "--rebound-height", "1.40", "--drop-height", "1.0", "--rebound-height",
                         "0.57", "--format", "json")
@@ -110,8 +112,8 @@ def test_sweep_velocity_names_the_ball_as_the_command_line():
     expected = cli_json("sweep", "velocity", "--preset", "football", "--pressure", "0.75bar",
                         "--points", "3", "--from", "2", "--to", "8", "--format", "json")
     s = bouncelab.sweep_velocity("football", speeds=[2.0, 5.0, 8.0], pressure="0.75bar")
-    same({k: s[k] for k in ("ball", "conditions")},
-         {k: expected[k] for k in ("ball", "conditions")})
+    same({k: s[k] for k in ("ball", "surface", "conditions")},
+         {k: expected[k] for k in ("ball", "surface", "conditions")})
     rows = columns_of(expected["rows"], ["v0", "cor", "warnings"])
     np.testing.assert_allclose(s["cor"], rows["cor"], rtol=1e-12)
     assert s["warnings"] == rows["warnings"]

@@ -56,8 +56,9 @@ def test_every_answer_names_the_rigid_plate_by_default():
     assert c.surface == dict(want, overrides=["target_mass"])
     assert bouncelab.drop("tennis", bounces=1)["surface"] == want
     o = bouncelab.oblique("tennis", angle=30.0, friction=0.5)
-    # the surface object holds what was given (K_t: Mindlin's, not given, stays None there)
-    assert o.surface == dict(want, friction=0.5)
+    # the surface object holds what was given (K_t: Mindlin's, not given, stays None there);
+    # μ given is an override, as `oblique --friction` (tests/cli/court_assumed.rs)
+    assert o.surface == dict(want, friction=0.5, overrides=["friction"])
 
 
 def test_run_on_a_surface_that_gives_is_the_command_lines():

@@ -56,7 +56,8 @@ impl Ball {
             inertia_factor,
             surface.tangential_damping,
         );
-        let pace = self.court_pace_on(friction, tangential, &surface.target())?;
+        let mut pace = self.court_pace_on(friction, tangential, &surface.target())?;
+        pace.warnings.extend(assumed_rigid_warning(surface));
         Ok((pace, computed_on))
     }
 
@@ -182,4 +183,37 @@ impl Ball {
         let x = 0.5 * (a + b);
         Ok((scale * 10f64.powf(x), at(x)?))
     }
+}
+
+/// The mark of an embedded surface whose normal give is assumed, not published: its `model`
+/// source says `ASSUMED rigid` (presets/surfaces/*.toml, docs/surfaces.md §5).
+const ASSUMED_RIGID: &str = "ASSUMED rigid";
+
+/// `court`'s warning on an embedded court whose normal give is assumed rigid because no
+/// published value exists (every embedded court today: docs/surfaces.md §5), its K_s not
+/// given or calibrated: its e_y is the rigid plate's, so the rating ranks such courts by μ
+/// alone (tests/cli/court_assumed.rs). `None` on the rigid plate itself, on a surface whose
+/// rigidity is its definition (`steel-plate`, `concrete`), on a given or calibrated K_s, and
+/// on a user's surface (its file says what it assumed).
+pub fn assumed_rigid_warning(surface: &super::SurfaceUsed) -> Option<String> {
+    let own_stiffness = !surface.overrides.iter().any(|o| o == "stiffness");
+    if surface.origin != "embedded" || !surface.stiffness.is_infinite() || !own_stiffness {
+        return None;
+    }
+    let named = crate::target::surface::Surface::embedded()
+        .into_iter()
+        .find(|s| s.name == surface.name)?;
+    let assumed = named
+        .sources
+        .iter()
+        .any(|s| s.quantity == "model" && s.source.contains(ASSUMED_RIGID));
+    assumed.then(|| {
+        format!(
+            "surface {}: its normal give is ASSUMED rigid (no published K_s or c_s, \
+             docs/surfaces.md §5), so e_y is the rigid plate's and the rating ranks the court by \
+             μ alone; give the court's own e with --surface-cor E or --fit FILE (Python: \
+             surface_cor=, fit=)",
+            surface.name
+        )
+    })
 }

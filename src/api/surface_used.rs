@@ -62,7 +62,8 @@ impl SurfaceUsed {
     pub fn calibrated(&mut self, c: &super::CourtCalibration, how: &str) {
         (self.stiffness, self.damping) = (c.stiffness, c.damping);
         self.overrides.retain(|o| o != "stiffness");
-        self.overrides.push("calibrated".into());
+        // first, where the normal quantities it stands for are listed (before μ, K_t, c_t)
+        self.overrides.insert(0, "calibrated".into());
         let name = if self.name == crate::target::surface::DEFAULT {
             "calibrated-court".to_string()
         } else {
@@ -96,6 +97,32 @@ impl SurfaceUsed {
         })
     }
 
+    /// The bat `bat` runs against, as the surface the ball met (docs/cli.md, "The surface
+    /// object"): named `bat`, its effective mass M_eff, its barrel's K_s (`None`: rigid) and
+    /// c_s; every number came from the command line (or Python's arguments), so each given is
+    /// an override of the rigid barrel of no set mass, `mass` always. No μ: the bat's impact
+    /// is head-on. Its speed is the answer's `bat_speed`, not the surface's.
+    pub fn bat(mass: f64, stiffness: Option<f64>, damping: Option<f64>) -> SurfaceUsed {
+        let given = [stiffness, damping, Some(mass)];
+        let overrides = given
+            .iter()
+            .zip(Self::NORMAL)
+            .filter(|(v, _)| v.is_some())
+            .map(|(_, name)| name.to_string())
+            .collect();
+        SurfaceUsed {
+            name: "bat".into(),
+            origin: "given (the bat's effective mass and barrel)".into(),
+            stiffness: stiffness.unwrap_or(f64::INFINITY),
+            damping: damping.unwrap_or(0.0),
+            mass,
+            friction: None,
+            tangential_stiffness: None,
+            tangential_damping: None,
+            overrides,
+        }
+    }
+
     /// The normal part: a target at rest.
     pub fn target(&self) -> Target {
         Target {
@@ -113,9 +140,15 @@ impl SurfaceUsed {
 
     /// One line for a text header: "surface steel-plate (rigid, immovable)" or with its
     /// numbers and μ ([`super::surface_label`]).
+    /// Its `given:` names the normal quantities given (and `calibrated`, `target_*`), not the
+    /// tangential ones: μ is in the line as its number, K_t and c_t are the command's own lines
+    /// (the text headers stay as they were when μ joined `overrides`).
     pub fn label(&self) -> String {
         let normal = (self.stiffness, self.damping, self.mass);
-        super::surface_label(&self.name, normal, self.friction, &self.overrides)
+        let given: Vec<&String> = (self.overrides.iter())
+            .filter(|o| !Self::TANGENTIAL.contains(&o.as_str()))
+            .collect();
+        super::surface_label(&self.name, normal, self.friction, &given)
     }
 
     /// "standard NAME: the standard's test is on …; this drop is on …" when this surface gives
@@ -177,8 +210,9 @@ impl SurfaceUsed {
     }
 
     /// The tangential quantities the answer used, μ, K_t, c_t (in that order): each the one
-    /// given, else the surface's own; one given over the surface's own is recorded as an
-    /// override.
+    /// given, else the surface's own; every one given is recorded as an override, over the
+    /// surface's own or where it has none (`court --surface clay --friction 0.8`: μ came from
+    /// the command line, tests/cli/court_assumed.rs).
     pub fn with_tangential(mut self, given: [Option<f64>; 3]) -> SurfaceUsed {
         let slots = [
             &mut self.friction,
@@ -187,7 +221,7 @@ impl SurfaceUsed {
         ];
         let mut overrides = Vec::new();
         for ((slot, value), name) in slots.into_iter().zip(given).zip(Self::TANGENTIAL) {
-            if value.is_some() && slot.is_some() {
+            if value.is_some() {
                 overrides.push(name.to_string());
             }
             *slot = value.or(*slot);

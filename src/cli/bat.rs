@@ -76,7 +76,7 @@ pub fn run(a: &BatArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     );
     let r = ball.bat(a.bat_mass, (a.ball_speed, a.bat_speed), surface)?;
     match a.format {
-        BatFormat::Json => output::json_stated(
+        BatFormat::Json => output::json_on(
             out,
             &BatJson {
                 ball: ball.name.as_deref(),
@@ -88,6 +88,12 @@ pub fn run(a: &BatArgs, out: &mut dyn Write) -> anyhow::Result<()> {
                 warnings: ball.bat_warnings(&r),
                 ball_record: ball.record_json(),
             },
+            // what the ball met: the bat (docs/cli.md, "The surface object")
+            output::Met::Surface(&crate::api::SurfaceUsed::bat(
+                a.bat_mass,
+                a.bat_stiffness,
+                a.bat_damping,
+            )),
             &ball.conditions,
         )?,
         BatFormat::Text => {

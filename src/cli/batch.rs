@@ -117,7 +117,12 @@ pub fn run(a: &BatchArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     }
     let mut text_out = Vec::new();
     match a.format {
-        BatchFormat::Json => output::json_stated(&mut text_out, &report, &ball.conditions)?,
+        // the balls were judged on the standard's rigid plate (docs/cli.md, "The surface object")
+        BatchFormat::Json => {
+            let plate = crate::api::SurfaceUsed::rigid_plate();
+            let on = output::Met::Surface(&plate);
+            output::json_on(&mut text_out, &report, on, &ball.conditions)?
+        }
         BatchFormat::Csv => text_out.extend_from_slice(balls_csv(&outcomes).as_bytes()),
         BatchFormat::Text => text(&mut text_out, &ball, &a.file, air, &report)?,
     }

@@ -223,6 +223,9 @@ struct Doc<'a> {
     warnings: &'a [String],
     /// The ball the grid starts from (docs/cli.md, "The ball object").
     ball: &'a crate::api::BallRecord,
+    /// The surface every cell's ball bounces on: the rigid plate, the model's own (docs/cli.md,
+    /// "The surface object").
+    surface: crate::api::SurfaceUsed,
     /// The conditions it is at (docs/cli.md, "Conditions").
     conditions: &'a crate::conditions::Conditions,
 }
@@ -300,6 +303,7 @@ fn json(
         feasible_outline,
         warnings,
         ball: &ball.record,
+        surface: crate::api::SurfaceUsed::rigid_plate(),
         conditions: &ball.conditions,
     };
     let mut s = super::output::json_string(&doc)?;

@@ -2,6 +2,7 @@
 //! text-table helpers. Everything writes to a `dyn Write` so a closed pipe surfaces as an
 //! `io::Error` (handled quietly in `cli::main`), never a panic.
 
+use crate::api::SurfaceUsed;
 use serde::Serialize;
 use std::io::{self, Write};
 
@@ -47,6 +48,45 @@ pub fn json_stated<T: Serialize>(
             conditions,
         },
     )
+}
+
+/// An answer on a surface: the answer's keys, then `surface` (the [`SurfaceUsed`] it ran on,
+/// or `null` where the ball met no surface, `surface_note` then saying what it met).
+#[derive(Serialize)]
+struct OnSurface<'a, T: Serialize> {
+    #[serde(flatten)]
+    answer: &'a T,
+    surface: Option<&'a SurfaceUsed>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    surface_note: Option<&'a str>,
+}
+
+/// What an answer's ball met, for [`json_on`]: a surface, or none and why.
+pub enum Met<'a> {
+    /// The surface it ran on.
+    Surface(&'a SurfaceUsed),
+    /// No surface: what it met instead (the JSON `surface_note`).
+    NoSurface(&'a str),
+}
+
+/// [`json_stated`] of an answer with the surface its ball met (docs/cli.md, "The surface
+/// object"): the answer's keys, `surface`, then `conditions`.
+pub fn json_on<T: Serialize>(
+    out: &mut dyn Write,
+    value: &T,
+    met: Met<'_>,
+    conditions: &crate::conditions::Conditions,
+) -> io::Result<()> {
+    let (surface, surface_note) = match met {
+        Met::Surface(s) => (Some(s), None),
+        Met::NoSurface(why) => (None, Some(why)),
+    };
+    let on = OnSurface {
+        answer: value,
+        surface,
+        surface_note,
+    };
+    json_stated(out, &on, conditions)
 }
 
 /// `value` as one line of JSON in which every character the terminal sanitizer would rewrite

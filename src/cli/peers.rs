@@ -146,6 +146,9 @@ struct Report<'a> {
     ball: crate::api::BallRecord,
 }
 
+/// The JSON `surface_note` of `peers --pair`, whose `surface` is `null`.
+const PAIR_NO_SURFACE: &str = "a pair: the ball met the other ball (`pair`), no surface; the models are calibrated to the pair's COR";
+
 /// The pair `--pair` calibrates for: the other preset and the effective mass and radius.
 #[derive(Debug, Clone, Serialize)]
 struct Pair {
@@ -258,7 +261,16 @@ pub fn run(a: &PeersArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         ball: b.record_json(),
     };
     match a.format {
-        PeersFormat::Json => output::json_stated(out, &report, &b.conditions)?,
+        // the COR is the ball's on the rigid plate, or the pair's (docs/cli.md, "The surface
+        // object")
+        PeersFormat::Json => {
+            let plate = crate::api::SurfaceUsed::rigid_plate();
+            let met = match report.pair {
+                None => output::Met::Surface(&plate),
+                Some(_) => output::Met::NoSurface(PAIR_NO_SURFACE),
+            };
+            output::json_on(out, &report, met, &b.conditions)?
+        }
         // the rows are the peers' calibrations, not the ball's answer: its warnings on stderr,
         // as beside `run --history`'s CSV
         PeersFormat::Csv => {

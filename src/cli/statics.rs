@@ -40,7 +40,16 @@ pub fn run(a: &StaticArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     let report = StaticReport::new(&ball, a.load, &s);
     match a.format {
         // `conditions` beside the answer's keys, as every command's JSON (docs/cli.md)
-        StaticFormat::Json => output::json_stated(out, &report, &ball.conditions)?,
+        // and `surface`: both plates are the rigid plate (docs/cli.md, "The surface object")
+        StaticFormat::Json => {
+            let plates = crate::api::SurfaceUsed::rigid_plate();
+            output::json_on(
+                out,
+                &report,
+                output::Met::Surface(&plates),
+                &ball.conditions,
+            )?
+        }
         StaticFormat::Text => {
             writeln!(out, "{}", ball.label())?;
             if let Some(line) = ball.overrides_line() {

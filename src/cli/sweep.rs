@@ -219,7 +219,9 @@ fn velocity(a: &VelocityArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     match a.format {
         SweepFormat::Json => {
             let n = b.params.normalized();
-            output::json_stated(
+            // the ball bounces on the rigid plate (docs/cli.md, "The surface object")
+            let plate = crate::api::SurfaceUsed::rigid_plate();
+            output::json_on(
                 out,
                 &VelocityDoc {
                     sweep: "velocity",
@@ -229,6 +231,7 @@ fn velocity(a: &VelocityArgs, out: &mut dyn Write) -> anyhow::Result<()> {
                     rows: &rows,
                     record: b.record_json(),
                 },
+                output::Met::Surface(&plate),
                 &b.conditions,
             )?
         }

@@ -15,6 +15,7 @@ mod seeded;
 #[path = "../support/tui_common/mod.rs"]
 mod tui_common;
 
+mod answer_keys;
 mod answer_reach;
 mod answer_warnings;
 mod calibration;
@@ -59,6 +60,7 @@ mod cli_static;
 mod cli_tangential_damping;
 mod cli_target_pair;
 mod cli_targets;
+mod court_assumed;
 mod escaping;
 mod field_names;
 mod hostile_generators;

@@ -227,12 +227,15 @@ fn report_and_save(
     let report = super::report::report(ball, &all, &f, &fitted, &r);
     let mut text = Vec::new();
     match a.format {
-        FitFormat::Json => output::json(
+        FitFormat::Json => output::json_on(
             &mut text,
             &JointJson {
                 report,
                 data_sets: &j.sets,
             },
+            // the data's fit assumed the rigid plate (docs/cli.md, "The surface object")
+            output::Met::Surface(&crate::api::SurfaceUsed::rigid_plate()),
+            &ball.conditions,
         )?,
         FitFormat::Text => {
             super::report::text(&mut text, ball, &all, &f, &report)?;

@@ -8,7 +8,7 @@
 use super::ball::BallArgs;
 use super::output::{self, given, human, table};
 use crate::analysis::fit::Param;
-use crate::api::FitReport;
+use crate::api::{FitReport, SurfaceUsed};
 use crate::measured::{CorPoint, Trace};
 use clap::{Args, ValueEnum};
 use std::io::Write;
@@ -277,13 +277,15 @@ fn single(a: &FitArgs, cor: f64, stdout: &mut dyn Write) -> anyhow::Result<()> {
     let mut report = Vec::new();
     let out = &mut report;
     match a.format {
-        FitFormat::Json => output::json(
+        FitFormat::Json => output::json_on(
             out,
             &SingleJson {
                 r,
                 warnings: &warnings,
                 ball: b.record_json(),
             },
+            output::Met::Surface(&SurfaceUsed::rigid_plate()),
+            &b.conditions,
         )?,
         FitFormat::Text => {
             writeln!(out, "{}, {} law", b.label(), r.ball.law)?;

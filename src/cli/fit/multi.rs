@@ -218,7 +218,12 @@ pub fn run(
     let report = super::report::report(&ball, &data, &f, &fitted, &r);
     let mut text = Vec::new();
     match a.format {
-        FitFormat::Json => output::json(&mut text, &report)?,
+        FitFormat::Json => {
+            // the data's fit assumed the rigid plate (docs/cli.md, "The surface object")
+            let plate = crate::api::SurfaceUsed::rigid_plate();
+            let on = output::Met::Surface(&plate);
+            output::json_on(&mut text, &report, on, &ball.conditions)?
+        }
         FitFormat::Text => super::report::text(&mut text, &ball, &data, &f, &report)?,
     }
     if !f.identified {

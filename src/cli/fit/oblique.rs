@@ -36,12 +36,15 @@ pub fn run(a: &FitArgs, path: &Path, out: &mut dyn Write) -> anyhow::Result<()> 
     let f = &report.fit;
     let mut text = Vec::new();
     match a.format {
-        FitFormat::Json => output::json(
+        FitFormat::Json => output::json_on(
             &mut text,
             &WithBall {
                 report: &report,
                 ball: ball.record_json(),
             },
+            // the data's fit assumed the rigid plate (docs/cli.md, "The surface object")
+            output::Met::Surface(&crate::api::SurfaceUsed::rigid_plate()),
+            &ball.conditions,
         )?,
         FitFormat::Text => write_text(&mut text, &ball.label(), &report, f)?,
     }
