@@ -86,3 +86,101 @@ fn force_time_intervals_cover_the_truth() {
     }
     assert!(hits.iter().sum::<usize>() >= 104, "{hits:?}");
 }
+
+/// The superball (presets/superball.toml) at speed `v0`.
+fn superball(v0: f64) -> bouncelab::ImpactParams {
+    bouncelab::ImpactParams {
+        mass: 0.0374,
+        k_p: 5.45e4,
+        damping: 140.0,
+        k_r: 7.08e4,
+        z_p: 4e-3,
+        k_h: bouncelab::ImpactParams::k_h_matching(5.45e4, 4e-3),
+        v0,
+    }
+}
+
+/// `bouncelab run --preset superball --v0 6.24 --history --format csv` (400 rows over the
+/// contact alone: no quiet stretch before or after it) with Gaussian noise of 3 N on the force.
+fn superball_trace(rng: &mut Rng) -> bouncelab::measured::Trace {
+    use bouncelab::{SolveOptions, simulate};
+    let opts = SolveOptions::default().with_samples(400);
+    let r = simulate(&superball(6.24), ContactLaw::Linear, &opts).unwrap();
+    let mut text = String::from("t,force\n");
+    for (t, f) in r.history.t.iter().zip(&r.history.force) {
+        text.push_str(&format!("{t},{}\n", f + 3.0 * rng.normal()));
+    }
+    bouncelab::measured::Trace::parse(&text).unwrap()
+}
+
+/// How many of `seeds` seeds' 95 % intervals of k_p, c, k_r, v0, t0 and the baseline (truths
+/// 0 and 0) hold the truth, in the superball trial of issue 52: a trace at twice the preset's
+/// speed fitted without its speed, as `fit --force-time` without `--v0` does (`--free v0`
+/// added, from the preset's 3.12 m/s). `SHOW=1` prints each seed's fit.
+fn speed_free_coverage(seeds: u64) -> [usize; 6] {
+    let free = [Param::KP, Param::C, Param::KR, Param::V0];
+    let t = superball(6.24);
+    let truths = [t.k_p, t.damping, t.k_r, t.v0, 0.0, 0.0];
+    let mut hits = [0; 6];
+    let start = std::time::Instant::now();
+    for seed in 0..seeds {
+        let mut rng = Rng::new(5200 + seed);
+        let tr = superball_trace(&mut rng);
+        let f = fit(
+            &superball(3.12),
+            ContactLaw::Linear,
+            FitData::Trace(&tr),
+            &free,
+        )
+        .unwrap();
+        let mut all = f.fitted.clone();
+        all.extend(f.time_offset.clone());
+        all.extend(f.baseline.clone());
+        if std::env::var("SHOW").is_ok() {
+            let show: Vec<String> = all
+                .iter()
+                .map(|e| {
+                    format!(
+                        "{} {:.4e} [{:.4e}, {:.4e}]",
+                        e.name, e.value, e.ci95[0], e.ci95[1]
+                    )
+                })
+                .collect();
+            eprintln!("seed {seed}: {}", show.join("; "));
+        }
+        tally(&mut hits, &all, &truths);
+    }
+    eprintln!(
+        "superball at 6.24 m/s, v0 free, {seeds} seeds: covered {hits:?} (k_p, c, k_r, v0, t0, \
+         baseline), {:.0} ms a fit",
+        start.elapsed().as_secs_f64() * 1e3 / seeds as f64
+    );
+    hits
+}
+
+/// Issue 52 item 7: 60 seeds, each interval must hold at least 53 times (88 %; honest 95 %
+/// intervals fall below that with probability about 0.015 each). Measured on the Jacobian's
+/// intervals: [55, 55, 50, 50, 52, 52]. Fails today: see the many-seed test.
+#[test]
+#[ignore = "fails: trace intervals under-cover with no quiet stretch before the pulse (issue 52 item 7)"]
+fn speed_free_trace_intervals_cover_the_truth() {
+    let hits = speed_free_coverage(60);
+    assert!(hits.iter().all(|&h| h >= 53), "{hits:?} of 60");
+}
+
+/// The same over 500 seeds (`SEEDS=N` for another count; 45 ms a fit, release). Measured on
+/// the Jacobian's intervals, 500 seeds: [440, 473, 428, 419, 431, 424] of a nominal 475
+/// (k_p 88 %, c 95 %, k_r 86 %, v0 84 %, t0 86 %, baseline 85 %). Of the 285 seeds whose
+/// fitted t0 came after the first row (the onset's kink seen from one side), 209 held v0
+/// (73 %); of the 168 with t0 before it, 164. With v0 held at the truth (`--v0 6.24`) the
+/// others under-cover too: 200 seeds, [179, 177, 177, –, 174, 177]. Profile-t intervals
+/// (`analysis::fit::profile`) did not mend it: 200 seeds, [174, 183, 193, 173, 169, 190],
+/// 1.4 s a fit.
+#[test]
+#[ignore = "minutes in a debug build; fails like the 60-seed test: SEEDS=500 cargo test --release --test analysis speed_free -- --ignored"]
+fn speed_free_trace_intervals_cover_the_truth_over_many_seeds() {
+    let seeds: u64 = std::env::var("SEEDS").map_or(500, |s| s.parse().unwrap());
+    let hits = speed_free_coverage(seeds);
+    let least = (0.92 * seeds as f64) as usize;
+    assert!(hits.iter().all(|&h| h >= least), "{hits:?} of {seeds}");
+}
