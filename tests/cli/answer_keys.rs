@@ -1,8 +1,7 @@
 //! Every answer names its ball, its surface and its conditions (issues 52 and 53): each
 //! JSON-answering subcommand's document has the keys `ball`, `surface` and `conditions`
 //! (docs/cli.md, "The surface object"). A new user found `bat`, `peers`, `static`, `batch`,
-//! `map` and `fit` without `surface`, and `fit` without `conditions`. `mc` is left out: its
-//! `surface` is another change's (plain `mc` and `mc --shot`).
+//! `map` and `fit` without `surface`, and `fit` without `conditions`.
 
 use crate::common;
 
@@ -54,7 +53,7 @@ fn data_files(dir: &Path) {
 /// Every subcommand that answers in JSON, once each way its JSON is written: `{dir}` is the
 /// data files' folder. `surface: null` is allowed only with a `surface_note` saying what the
 /// ball met instead (`peers --pair`).
-const ANSWERS: [&str; 20] = [
+const ANSWERS: [&str; 22] = [
     "run --preset golf --format json",
     "drop --preset basketball --standard fiba --format json",
     "oblique --angle 45 --friction 0.3 --format json",
@@ -75,6 +74,8 @@ const ANSWERS: [&str; 20] = [
     "fit --preset tennis --oblique {dir}/bounces.csv --format json",
     "fit --preset tennis --static {dir}/static.csv --cor-table {dir}/cor.csv --format json",
     "fit --drop-height 1 --rebound-height 0.49 --format json",
+    "mc --preset golf --vary k_p=5% --samples 50 --seed 7 --format json",
+    "mc --shot --preset tennis --height 2.8 --speed 50 --elevation -6 --friction 0.6 --vary speed=2% --samples 20 --format json",
 ];
 
 #[test]
