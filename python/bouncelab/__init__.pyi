@@ -774,6 +774,7 @@ class MonteCarlo(TypedDict, total=False):
     values: dict[str, Array]
     ball: BallRecord
     conditions: Conditions
+    surface: dict[str, Any]
 
 def batch(
     file: Union[str, "os.PathLike[str]"],

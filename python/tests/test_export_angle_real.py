@@ -31,8 +31,9 @@ def test_the_angle_export_gives_its_own_answer_in_lammps():
     lines = snippet.splitlines()
     timestep = next(l for l in lines if l.startswith("timestep "))
     fix = next(l for l in lines if l.startswith("fix kvclipt "))
+    # the comment says v·sinθ to six figures for a reader; the JSON case holds it whole
     mass, radius, v0 = header(snippet)
-    assert abs(v0 - vy) < 1e-9 * vy, (v0, vy)
+    assert abs(v0 - vy) < 5e-6 * vy, (v0, vy)
     vx_out, w_out, vz_out = lammps_oblique(timestep, fix, mass, radius, vx, vy, spin)
     a = case["answer"]
     assert a["inertia_factor"] == 0.4
