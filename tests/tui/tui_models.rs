@@ -145,6 +145,35 @@ fn readable_at_the_usual_sizes() {
     }
 }
 
+/// The table keeps its miss column Δe wherever it is shown (issue 51 item 6: at 100×30 and
+/// 80×24 its 30 cells lost Δe to the width): the header and every rule's row carry it, and
+/// the 100×30 screen is held as a snapshot.
+#[test]
+fn the_table_shows_the_miss_at_the_small_sizes() {
+    let app = models_view(1, false);
+    for (w, h) in [(80, 24), (100, 30)] {
+        let s = buffer_text(draw(&app, w, h).backend().buffer());
+        assert!(s.contains("Δe"), "no Δe at {w}×{h}:\n{s}");
+        // every rule's row ends in its signed miss: `log-dec      17.66 0.8456 +0.005`
+        for rule in ["exact", "log-dec", "Gonthier"] {
+            let row = s
+                .lines()
+                .find(|l| l.contains(&format!(" {rule} ")))
+                .unwrap();
+            let cells: Vec<&str> = row.split('│').collect();
+            let table = cells.iter().rev().find(|c| c.contains(rule)).unwrap();
+            let last = table.split_whitespace().last().unwrap();
+            assert!(
+                last.starts_with(['+', '-']) && last.parse::<f64>().is_ok(),
+                "{rule} at {w}×{h}: no miss in {table:?}"
+            );
+        }
+        if (w, h) == (100, 30) {
+            insta::assert_snapshot!("models_table_100x30", s);
+        }
+    }
+}
+
 /// The calibration runs on the worker: the view asks for it and keys go on acting meanwhile;
 /// a result arrives and is drawn; a result for a ball the user has since changed is dropped.
 #[test]

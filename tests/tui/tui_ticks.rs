@@ -9,7 +9,9 @@ use crate::tui_common;
 
 use bouncelab::tui::action::Action;
 use bouncelab::tui::app::{App, View};
+use bouncelab::tui::views::map::state::geometry;
 use ratatui::crossterm::event::KeyCode;
+use ratatui::layout::Rect;
 use tui_common::*;
 
 const SIZES: [(u16, u16); 5] = [(80, 24), (100, 30), (120, 40), (160, 50), (200, 60)];
@@ -121,10 +123,11 @@ fn axes(g: &[Vec<String>]) -> Vec<ScreenAxis> {
     out
 }
 
-/// Decade labels (0.01 0.1 1 10 …, three or more): a log axis, read in log10 of the values.
-fn positions(labels: &[Label]) -> Vec<(f64, f64, f64)> {
+/// Decade labels (0.01 0.1 1 10 …, three or more): a log axis, read in log10 of the values
+/// (or any labels, when the axis is known to be log: `log`).
+fn positions(labels: &[Label], log: bool) -> Vec<(f64, f64, f64)> {
     let decade = |v: f64| v > 0.0 && (v.log10() - v.log10().round()).abs() < 1e-9;
-    let log = labels.len() >= 3 && labels.iter().all(|l| decade(l.value));
+    let log = log || labels.len() >= 3 && labels.iter().all(|l| decade(l.value));
     labels
         .iter()
         .map(|l| {
@@ -137,7 +140,12 @@ fn positions(labels: &[Label]) -> Vec<(f64, f64, f64)> {
 /// The labels that do not sit at their value's place (±1 cell) on the line fitted through
 /// all of them (least squares of the label's middle against its value).
 fn misplaced(labels: &[Label]) -> Vec<String> {
-    let p = positions(labels);
+    misplaced_on(labels, false)
+}
+
+/// [`misplaced`], the values read on a log scale when `log` (else when they are decades).
+fn misplaced_on(labels: &[Label], log: bool) -> Vec<String> {
+    let p = positions(labels, log);
     if p.len() < 3 {
         return Vec::new();
     }
@@ -194,6 +202,94 @@ fn check(name: &str, app: &mut App) -> usize {
     checked
 }
 
+/// The map view's two log axes (its own widget, no `└` corner): λ labels in the gutter left
+/// of the heat map, one per row, ζ labels on the row under it. The panel found by its
+/// title, its parts by the widget's own layout (`views::map::state::geometry`); the labels'
+/// values then checked against their rows and columns as every other chart's.
+fn map_axes(g: &[Vec<String>]) -> Option<[ScreenAxis; 2]> {
+    let (r0, c0) = g.iter().enumerate().find_map(|(r, row)| {
+        let line = row.concat();
+        let at = line.find("┌ map of")?;
+        Some((r, line[..at].chars().count()))
+    })?;
+    let width = g[r0][c0 + 1..].iter().position(|s| s == "┐")? + 2;
+    let height = g[r0 + 1..].iter().position(|row| row[c0] == "└")? + 2;
+    let area = Rect::new(c0 as u16, r0 as u16, width as u16, height as u16);
+    let geo = geometry(area)?;
+    let (gx, gw) = (usize::from(geo.gutter.x), usize::from(geo.gutter.width));
+    let mut ys = Vec::new();
+    for y in geo.plot.y..geo.plot.bottom() {
+        // the gutter's last cell is the cursor's ▶
+        if let Some((_, t)) = tokens(&g[usize::from(y)], gx, gx + gw - 1).last()
+            && let Ok(value) = t.parse()
+        {
+            let y = f64::from(y);
+            ys.push(Label {
+                value,
+                from: y,
+                to: y,
+            });
+        }
+    }
+    let row = usize::from(geo.x_labels.y);
+    let xs = tokens(&g[row], gx, usize::from(geo.plot.right()) + 2)
+        .into_iter()
+        .filter_map(|(s, t)| {
+            let w = t.chars().count();
+            Some(Label {
+                value: t.parse().ok()?,
+                from: s as f64,
+                to: (s + w - 1) as f64,
+            })
+        })
+        .collect();
+    let at = (row, usize::from(geo.plot.x));
+    Some([
+        ScreenAxis {
+            x: true,
+            at,
+            labels: xs,
+            top: row,
+        },
+        ScreenAxis {
+            x: false,
+            at,
+            labels: ys,
+            top: usize::from(geo.plot.y),
+        },
+    ])
+}
+
+/// Checks the map's two axes at the five sizes.
+fn check_map(name: &str, app: &mut App) {
+    for (w, h) in SIZES {
+        app.update(Action::Resize(w, h));
+        let g = grid(app, w, h);
+        let screen: Vec<String> = g.iter().map(|r| r.concat()).collect();
+        let axes = map_axes(&g);
+        assert!(
+            axes.is_some(),
+            "{name} {w}×{h}: no map panel\n{}",
+            screen.join("\n")
+        );
+        for ScreenAxis { x, at, labels, top } in axes.into_iter().flatten() {
+            assert!(
+                labels.len() >= 3,
+                "{name} {w}×{h}: {labels:?}\n{}",
+                screen.join("\n")
+            );
+            let mut bad = misplaced_on(&labels, true);
+            bad.extend(unlabelled_top(x, &labels, top));
+            assert!(
+                bad.is_empty(),
+                "{name} {w}×{h}: map {} axis at {at:?}: {bad:?}\n{}",
+                if x { "ζ" } else { "λ" },
+                screen.join("\n")
+            );
+        }
+    }
+}
+
 #[test]
 fn every_tick_label_sits_at_its_value_in_every_view_at_every_size() {
     for ball in ["tennis", "superball", "golf"] {
@@ -208,6 +304,7 @@ fn every_tick_label_sits_at_its_value_in_every_view_at_every_size() {
         press(&mut app, &[KeyCode::Tab]);
         assert_eq!(app.view(), View::Map);
         check(&format!("{ball} map"), &mut app);
+        check_map(&format!("{ball} map"), &mut app);
         press(&mut app, &[KeyCode::Tab, KeyCode::Char('d')]);
         assert_eq!(app.view(), View::Drop);
         // the drop's chart: its two axes at each size

@@ -225,15 +225,31 @@ impl MapPanel<'_> {
         let axis = self.theme.axis();
         let rows = usize::from(g.plot.height);
         // λ: the top row is the largest value
-        for (slot, v) in log_ticks(&map.spec.lambda, rows, 2) {
+        let w = usize::from(g.gutter.width) - 1;
+        let ticks = log_ticks(&map.spec.lambda, rows, 2);
+        for &(slot, v) in &ticks {
             let y = g.plot.bottom() - 1 - slot as u16;
-            let text = format!(
-                "{:>w$}",
-                sig_trim(v, 2),
-                w = usize::from(g.gutter.width) - 1
-            );
-            buf.set_stringn(g.gutter.x, y, text, usize::from(g.gutter.width) - 1, axis);
+            let text = format!("{:>w$}", sig_trim(v, 2));
+            buf.set_stringn(g.gutter.x, y, text, w, axis);
         }
+        // the top row labelled with its own λ, as every chart's top row is (issue 51 item 1;
+        // it showed only the name "λ": tests/tui/tui_ticks.rs reads the map's axes); the name
+        // beside it where the number leaves a cell, else in the corner under the λ labels
+        let top = match ticks.iter().find(|&&(slot, _)| slot + 1 == rows) {
+            Some(&(_, v)) => sig_trim(v, 2),
+            None => {
+                let top = sig_trim(map.spec.lambda.to, 2);
+                buf.set_stringn(g.gutter.x, g.plot.y, format!("{top:>w$}"), w, axis);
+                top
+            }
+        };
+        let name_on_top = top.chars().count() + 2 <= w;
+        let name_at = if name_on_top {
+            g.gutter.y
+        } else {
+            g.x_labels.y
+        };
+        buf.set_string(g.gutter.x, name_at, "λ", self.theme.title());
         // where the cursor is, on both axes; a ζ label the ▲ would cut or touch is left out
         // (tests/tui/tui_render.rs: `the_map_cursor_never_cuts_a_tick_label`)
         let r = Raster {
@@ -254,7 +270,6 @@ impl MapPanel<'_> {
             }
         }
         buf.set_string(g.plot.right() + 3, g.x_labels.y, "ζ", self.theme.title());
-        buf.set_string(g.gutter.x, g.gutter.y, "λ", self.theme.title());
         buf.set_string(g.gutter.right() - 1, cy, "▶", self.theme.warning());
         buf.set_string(cx, g.x_labels.y, "▲", self.theme.warning());
     }

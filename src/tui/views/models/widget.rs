@@ -16,8 +16,11 @@ use ratatui::style::Style;
 use ratatui::text::{Line, Span};
 use ratatui::widgets::{Block, Paragraph, Widget, Wrap};
 
-/// From this inner width the table shows the miss Δe = e − target too.
-const WIDTH_FOR_MISS: usize = 34;
+/// From this inner width the table shows the miss Δe = e − target too: a row is
+/// ` Gonthier 0.3494 0.8104 -0.030`, 30 cells, the table's inner width at 80×24 and 100×30
+/// (issue 51 item 6: its rows took 34 and lost Δe there; tests/tui/tui_models.rs,
+/// `the_table_shows_the_miss_at_the_small_sizes`).
+const WIDTH_FOR_MISS: usize = 30;
 /// A rule whose COR misses the target by more than this is shown highlighted.
 const MISS_SHOWN: f64 = 0.005;
 
@@ -50,7 +53,7 @@ impl ModelsTable<'_> {
     fn rule_line(&self, c: &Calibrated, target: f64, miss: bool) -> Line<'static> {
         let e = c.response.cor;
         let mut text = format!(
-            "  {:<8} {:>9} {:>6}",
+            " {:<8} {:>6} {:>6}",
             short_rule(c.rule),
             sig(c.damping, 4),
             format!("{e:.4}")
@@ -99,8 +102,9 @@ impl ModelsTable<'_> {
             sig(d.target, 4)
         )));
         let miss = inner_w >= WIDTH_FOR_MISS;
+        // "damping" right-aligned over the damping column (1 + 8 + 1 + 6 cells)
         let head = format!(
-            "  {:<8} {:>9} {:>6}{}",
+            " {:<8}{:>7} {:>6}{}",
             "rule",
             "damping",
             "e",
@@ -127,7 +131,7 @@ impl ModelsTable<'_> {
         // notes, where there is room (a short panel cuts them off)
         lines.push(Line::raw(""));
         if miss {
-            lines.push(Line::raw("Δe: the rule's COR − the target"));
+            lines.push(Line::raw("Δe: the rule's COR − target"));
         }
         lines.push(Line::raw("for a DEM code's input file:"));
         lines.push(Line::raw("bouncelab peers --export CODE"));
