@@ -14,7 +14,7 @@ use super::widgets::picker::PickerBox;
 use super::widgets::pins::PinView;
 use super::widgets::plot::Plot;
 use super::widgets::readout::{self, Readout};
-use super::widgets::status::{Header, KeyHints, MessageLine, message_lines};
+use super::widgets::status::{Header, KeyHints, MessageLine, message_lines, surface_words};
 pub use crate::figure::explorer::Chart;
 use crate::figure::{Figure, explorer};
 use crate::tui::views::fit::widget::FitView;
@@ -296,8 +296,11 @@ impl Widget for &App {
             return;
         };
         let theme = Theme::new(self.color());
+        // the compact readout has no row for the surface: the header names it
+        let surface = (!s.side_panel).then(|| surface_words(self.setting()));
         Header {
             ball: &self.preset().name,
+            surface: surface.as_deref(),
             law: self.setting().law,
             view: self.view(),
             theme,

@@ -297,3 +297,31 @@ fn c_t_is_a_field_of_the_form_and_the_lines_carry_it() {
     let said = app.message().unwrap().text.clone();
     assert!(said.starts_with("undone: c_t 1.500 → 0 kg/s"), "{said}");
 }
+
+/// The compact 80×24 readout has no row for the surface: the header names it ("tennis on
+/// clay"; issue 51 item 6, issue 53 item 6), the plate's name before one is picked; where
+/// the side panel says `│ surface clay: …` the header does not repeat it.
+#[test]
+fn the_compact_screen_names_the_surface_in_its_header() {
+    let dir = config_with_gym();
+    let mut app = tennis();
+    let header = |app: &App, w, h| {
+        let s = buffer_text(draw(app, w, h).backend().buffer());
+        (s.lines().next().unwrap().to_string(), s)
+    };
+    let (first, s) = header(&app, 80, 24);
+    assert!(first.contains("tennis on steel-plate ·"), "{s}");
+    pick(&mut app, dir.path(), "clay");
+    // impact, sweeps and map (the models view has its table beside the charts, no readout)
+    for view in 0..4 {
+        let (first, s) = header(&app, 80, 24);
+        if app.view() != View::Models {
+            assert!(first.contains("tennis on clay ·"), "view {view}:\n{s}");
+        }
+        press(&mut app, &[KeyCode::Tab]);
+    }
+    let (first, s) = header(&app, 120, 40);
+    assert!(!first.contains(" on clay"), "{s}");
+    // the side panel's own line, not the pick's message
+    assert!(s.lines().any(|l| l.contains("│ surface clay")), "{s}");
+}

@@ -39,26 +39,50 @@ const MAP_HINTS: [(&str, &str, u8); 3] = [
     ("t", "targets", 1),
 ];
 
-/// The header line: ball, law, view.
+/// The header line: ball, law, view — and the surface where the compact readout (80×24) has
+/// no row for it ("tennis on clay", issue 53 item 6: every answer names its surface).
 #[derive(Debug, Clone, Copy)]
 pub struct Header<'a> {
     pub ball: &'a str,
+    /// What the ball meets, as [`surface_words`] names it; `None` where the readout says it.
+    pub surface: Option<&'a str>,
     pub law: ContactLaw,
     pub view: View,
     pub theme: Theme,
 }
 
+/// What the ball meets, in the readout's words: the surface picked (the rigid steel plate when
+/// none was), or "a pair target" when the form moved the target off it (the readout's
+/// ` pair: target M …` line; src/tui/widgets/readout.rs, `target_note`).
+pub fn surface_words(setting: &crate::tui::setting::Setting) -> String {
+    let s = setting
+        .surface
+        .clone()
+        .unwrap_or_else(crate::target::surface::Surface::rigid_plate);
+    if setting.target() == s.target() {
+        s.name
+    } else {
+        "a pair target".into()
+    }
+}
+
 impl Widget for &Header<'_> {
     fn render(self, area: Rect, buf: &mut Buffer) {
         let theme = self.theme;
-        let left = Line::from(vec![
-            Span::styled(" bouncelab ", theme.title()),
-            Span::raw(format!(
-                "· {} · {} law · view {}",
+        let rest = |on: &str| {
+            format!(
+                "· {}{on} · {} law · view {}",
                 self.ball,
                 self.law,
                 self.view.title()
-            )),
+            )
+        };
+        // the surface only where the whole line fits (60 columns would cut the view's name)
+        let with = rest(&self.surface.map(|s| format!(" on {s}")).unwrap_or_default());
+        let fits = " bouncelab ".len() + with.chars().count() <= usize::from(area.width);
+        let left = Line::from(vec![
+            Span::styled(" bouncelab ", theme.title()),
+            Span::raw(if fits { with } else { rest("") }),
         ]);
         left.render(area, buf);
     }
