@@ -85,8 +85,8 @@ pub(super) fn locate(text: &str, bad: &Bad) -> (usize, usize) {
     line_col(text, offset)
 }
 
-/// The key whose value holds the byte `offset` ("calibration.speed_max",
-/// "calibration.data[1].speeds[0]"), to name the field of a TOML error that points at a value
+/// The key whose value holds the byte `offset` (`calibration.speed_max`,
+/// `calibration.data[1].speeds[0]`), to name the field of a TOML error that points at a value
 /// and names none ("invalid type: string \"fast\", expected f64": issue 52); `None` when no
 /// value holds it (an unknown or missing key, whose message names it).
 pub(crate) fn key_at(text: &str, offset: usize) -> Option<String> {
