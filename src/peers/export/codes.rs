@@ -1,4 +1,4 @@
-//! The snippet of each code from an [`ExportSet`](super::ExportSet), in the code's own names
+//! The snippet of each code from an [`ExportSet`], in the code's own names
 //! and SI units (docs/peers.md §5).
 //!
 //! Conventions verified against the codes' sources: LAMMPS `src/GRANULAR/gran_sub_mod_*`
