@@ -31,18 +31,7 @@ fn key(app: &mut App, code: KeyCode) {
 /// Open the form, go to `field`, type `text` over its value and press Enter; the form closed.
 /// What the message line said before it closed.
 fn set(app: &mut App, field: Field, text: &str) -> String {
-    key(app, KeyCode::Char('m'));
-    let n = Field::ALL.iter().position(|&f| f == field).unwrap();
-    for _ in 0..n {
-        key(app, KeyCode::Down);
-    }
-    key(app, KeyCode::Enter);
-    app.update(Action::InputClear);
-    for c in text.chars() {
-        key(app, KeyCode::Char(c));
-    }
-    key(app, KeyCode::Enter);
-    let said = app.message().map(|m| m.text.clone()).unwrap_or_default();
+    let said = type_into_form(app, field, text);
     // a refused entry stays open: Esc closes it, then the form
     for _ in 0..2 {
         if !matches!(app.overlay(), Overlay::None) {

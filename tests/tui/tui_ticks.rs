@@ -61,6 +61,22 @@ struct ScreenAxis {
     top: usize,
 }
 
+/// The numbers on an x axis's label row between columns `from` and `to`, each spanning the
+/// cells its text covers.
+fn x_labels(row: &[String], from: usize, to: usize) -> Vec<Label> {
+    tokens(row, from, to)
+        .into_iter()
+        .filter_map(|(s, t)| {
+            let w = t.chars().count();
+            Some(Label {
+                value: t.parse().ok()?,
+                from: s as f64,
+                to: (s + w - 1) as f64,
+            })
+        })
+        .collect()
+}
+
 /// Every chart axis on the screen, found from the axes' corners `└` whose x axis runs right
 /// (`─`, `┴`) to something other than a frame's corner `┘`.
 fn axes(g: &[Vec<String>]) -> Vec<ScreenAxis> {
@@ -79,17 +95,7 @@ fn axes(g: &[Vec<String>]) -> Vec<ScreenAxis> {
                 continue;
             }
             // x labels: the row under the axis line, from a little left of the corner
-            let xs = tokens(&g[r + 1], c.saturating_sub(4), end)
-                .into_iter()
-                .filter_map(|(s, t)| {
-                    let w = t.chars().count();
-                    Some(Label {
-                        value: t.parse().ok()?,
-                        from: s as f64,
-                        to: (s + w - 1) as f64,
-                    })
-                })
-                .collect();
+            let xs = x_labels(&g[r + 1], c.saturating_sub(4), end);
             out.push(ScreenAxis {
                 x: true,
                 at: (r, c),
@@ -232,17 +238,7 @@ fn map_axes(g: &[Vec<String>]) -> Option<[ScreenAxis; 2]> {
         }
     }
     let row = usize::from(geo.x_labels.y);
-    let xs = tokens(&g[row], gx, usize::from(geo.plot.right()) + 2)
-        .into_iter()
-        .filter_map(|(s, t)| {
-            let w = t.chars().count();
-            Some(Label {
-                value: t.parse().ok()?,
-                from: s as f64,
-                to: (s + w - 1) as f64,
-            })
-        })
-        .collect();
+    let xs = x_labels(&g[row], gx, usize::from(geo.plot.right()) + 2);
     let at = (row, usize::from(geo.plot.x));
     Some([
         ScreenAxis {

@@ -31,18 +31,7 @@ fn key(app: &mut App, code: KeyCode) {
 
 /// Type `text` into the form's `field` and close the form.
 fn set(app: &mut App, field: Field, text: &str) {
-    key(app, KeyCode::Char('m'));
-    let n = Field::ALL.iter().position(|&f| f == field).unwrap();
-    for _ in 0..n {
-        key(app, KeyCode::Down);
-    }
-    key(app, KeyCode::Enter);
-    app.update(Action::InputClear);
-    for c in text.chars() {
-        key(app, KeyCode::Char(c));
-    }
-    key(app, KeyCode::Enter);
-    let said = app.message().map(|m| m.text.clone()).unwrap_or_default();
+    let said = crate::tui_common::type_into_form(app, field, text);
     assert!(matches!(app.overlay(), Overlay::Form(_)), "{text}: {said}");
     key(app, KeyCode::Esc);
 }

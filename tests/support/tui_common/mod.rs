@@ -29,6 +29,21 @@ pub fn press(app: &mut App, keys: &[KeyCode]) -> Vec<Effect> {
     effects
 }
 
+/// Open the `m` form, go to `field`, type `text` over its value and press Enter: what the
+/// message line says then. The form stays open (an accepted entry closes only the entry; a
+/// refused one stays open too): the caller closes it.
+pub fn type_into_form(app: &mut App, field: bouncelab::tui::physical::Field, text: &str) -> String {
+    use bouncelab::tui::physical::Field;
+    press(app, &[KeyCode::Char('m')]);
+    let n = Field::ALL.iter().position(|&f| f == field).unwrap();
+    press(app, &vec![KeyCode::Down; n]);
+    press(app, &[KeyCode::Enter]);
+    app.update(action::Action::InputClear);
+    press(app, &chars(text));
+    press(app, &[KeyCode::Enter]);
+    app.message().map(|m| m.text.clone()).unwrap_or_default()
+}
+
 /// The keys of `s`, one character each.
 pub fn chars(s: &str) -> Vec<KeyCode> {
     s.chars().map(KeyCode::Char).collect()
