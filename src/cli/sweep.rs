@@ -129,6 +129,9 @@ struct ZetaDoc<'a, T> {
     sweep: &'static str,
     law: &'static str,
     rows: &'a [T],
+    /// The ball swept: the normalized ball (m = K_p = v0 = 1) at λ = ζ = 1, whose K_r and c
+    /// each row moves (docs/cli.md, "The ball object"), as `map --normalized` names it.
+    ball: crate::api::BallRecord,
 }
 
 fn zeta(a: &ZetaArgs, out: &mut dyn Write) -> anyhow::Result<()> {
@@ -145,14 +148,24 @@ fn zeta(a: &ZetaArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     check_points(a.points, a.lambda.len(), law)?;
     let rows = super::budget::zeta_rows(&a.lambda, &log_space(a.from, a.to, a.points), law)?;
     match a.format {
-        SweepFormat::Json => output::json(
-            out,
-            &ZetaDoc {
-                sweep: "zeta",
-                law: law.name(),
-                rows: &rows,
-            },
-        )?,
+        SweepFormat::Json => {
+            // dimensionless, yet named like every answer (issue 53), as `map --normalized`
+            // names its grid: the normalized ball at λ = ζ = 1 (each row moves its K_r and c),
+            // on the rigid plate, at the recorded conditions (no preset: the defaults)
+            let ball = crate::Ball::normalized(1.0, 1.0, None, law)?;
+            let plate = crate::api::SurfaceUsed::rigid_plate();
+            output::json_on(
+                out,
+                &ZetaDoc {
+                    sweep: "zeta",
+                    law: law.name(),
+                    rows: &rows,
+                    ball: ball.record_json(),
+                },
+                output::Met::Surface(&plate),
+                &crate::api::recorded_conditions(None),
+            )?
+        }
         SweepFormat::Csv => {
             csv_row(
                 out,

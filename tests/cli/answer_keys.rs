@@ -53,7 +53,7 @@ fn data_files(dir: &Path) {
 /// Every subcommand that answers in JSON, once each way its JSON is written: `{dir}` is the
 /// data files' folder. `surface: null` is allowed only with a `surface_note` saying what the
 /// ball met instead (`peers --pair`).
-const ANSWERS: [&str; 22] = [
+const ANSWERS: [&str; 23] = [
     "run --preset golf --format json",
     "drop --preset basketball --standard fiba --format json",
     "oblique --angle 45 --friction 0.3 --format json",
@@ -61,6 +61,7 @@ const ANSWERS: [&str; 22] = [
     "collide --preset superball --target-mass 0.3 --format json",
     "shot --preset tennis --height 2.8 --speed 50 --elevation -6 --friction 0.6 --format json",
     "sweep velocity --preset golf --points 3 --format json",
+    "sweep zeta --lambda 0.4 --points 3 --format json",
     "bat --preset baseball-mlb --bat-mass 0.6 --format json",
     "bat --bat-mass 0.6 --bat-stiffness 1e7 --bat-damping 5 --format json",
     "peers --preset tennis --format json",
