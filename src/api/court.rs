@@ -190,9 +190,9 @@ impl Ball {
 const ASSUMED_RIGID: &str = "ASSUMED rigid";
 
 /// `court`'s warning on an embedded court whose normal give is assumed rigid because no
-/// published value exists (every embedded court today: docs/surfaces.md §5), its K_s not
-/// given or calibrated: its e_y is the rigid plate's, so the rating ranks such courts by μ
-/// alone (tests/cli/court_assumed.rs). `None` on the rigid plate itself, on a surface whose
+/// published value exists (every embedded court but hard-court, rigid as published:
+/// docs/surfaces.md §2, §5), its K_s not given or calibrated: its e_y is the rigid plate's,
+/// so the rating ranks such courts by μ alone (tests/cli/court_assumed.rs). `None` on the rigid plate itself, on a surface whose
 /// rigidity is its definition (`steel-plate`, `concrete`), on a given or calibrated K_s, and
 /// on a user's surface (its file says what it assumed).
 pub fn assumed_rigid_warning(surface: &super::SurfaceUsed) -> Option<String> {

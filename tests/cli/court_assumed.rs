@@ -19,8 +19,9 @@ fn warned(v: &Value) -> bool {
         .any(|w| w.as_str().unwrap().contains(ASSUMED))
 }
 
-/// Every embedded surface: warned exactly when its file says its rigidity is ASSUMED (all
-/// courts today), never on the rigid plate or concrete, whose rigidity is their definition.
+/// Every embedded surface: warned exactly when its file says its rigidity is ASSUMED (every
+/// court but hard-court, whose rigidity is published), never on the rigid plate or concrete,
+/// whose rigidity is their definition.
 #[test]
 fn an_assumed_rigid_court_says_so() {
     let all = json(&argv("surfaces --format json"));
@@ -42,7 +43,7 @@ fn an_assumed_rigid_court_says_so() {
             assert_eq!(f(&v, "cor_normal"), f(&plate, "cor_normal"), "{name}");
         }
     }
-    assert!(assumed >= 6, "the six embedded courts: {assumed}");
+    assert!(assumed >= 5, "the five embedded courts but hard-court: {assumed}");
     let text = ok_calibrated(&argv("court --preset tennis --surface clay --friction 0.6"));
     let line = text
         .lines()
@@ -73,4 +74,38 @@ fn friction_given_is_listed_among_the_overrides() {
     ));
     assert_eq!(v["surface"]["overrides"], serde_json::json!(["friction"]));
     assert_eq!(f(&v["surface"], "friction"), 0.8);
+}
+
+/// `hard-court` is rigid as published (docs/surfaces.md §2, §5: Haake et al. 2000, an acrylic
+/// court rigid next to the ball, a rigid-court model matching the measured bounce): its file
+/// cites that, not an assumption, so `court` on it does not warn, and its e_y is the rigid
+/// plate's because the court is rigid. It gives no μ: `--friction` is still required.
+#[test]
+fn the_hard_court_is_rigid_as_published() {
+    let all = json(&argv("surfaces --format json"));
+    let hard = all
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|s| s["name"] == "hard-court")
+        .unwrap();
+    let model = hard["sources"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|q| q["quantity"] == "model")
+        .unwrap()["source"]
+        .as_str()
+        .unwrap();
+    assert!(model.contains("Haake") && !model.contains("ASSUMED"), "{model}");
+    assert!(hard["stiffness"].is_null() && hard["friction"].is_null(), "{hard}");
+    let v = json(&argv(
+        "court --preset tennis --surface hard-court --friction 0.6 --format json",
+    ));
+    let plate = json(&argv("court --preset tennis --friction 0.6 --format json"));
+    assert!(!warned(&v), "{v}");
+    assert_eq!(f(&v, "cor_normal"), f(&plate, "cor_normal"));
+    let o = bl(&argv("court --preset tennis --surface hard-court --format json"));
+    assert_eq!(o.code, 2, "no μ: {}", o.stderr);
+    assert!(o.stderr.contains("friction"), "{}", o.stderr);
 }
