@@ -43,7 +43,10 @@ fn an_assumed_rigid_court_says_so() {
             assert_eq!(f(&v, "cor_normal"), f(&plate, "cor_normal"), "{name}");
         }
     }
-    assert!(assumed >= 5, "the five embedded courts but hard-court: {assumed}");
+    assert!(
+        assumed >= 5,
+        "the five embedded courts but hard-court: {assumed}"
+    );
     let text = ok_calibrated(&argv("court --preset tennis --surface clay --friction 0.6"));
     let line = text
         .lines()
@@ -97,15 +100,23 @@ fn the_hard_court_is_rigid_as_published() {
         .unwrap()["source"]
         .as_str()
         .unwrap();
-    assert!(model.contains("Haake") && !model.contains("ASSUMED"), "{model}");
-    assert!(hard["stiffness"].is_null() && hard["friction"].is_null(), "{hard}");
+    assert!(
+        model.contains("Haake") && !model.contains("ASSUMED"),
+        "{model}"
+    );
+    assert!(
+        hard["stiffness"].is_null() && hard["friction"].is_null(),
+        "{hard}"
+    );
     let v = json(&argv(
         "court --preset tennis --surface hard-court --friction 0.6 --format json",
     ));
     let plate = json(&argv("court --preset tennis --friction 0.6 --format json"));
     assert!(!warned(&v), "{v}");
     assert_eq!(f(&v, "cor_normal"), f(&plate, "cor_normal"));
-    let o = bl(&argv("court --preset tennis --surface hard-court --format json"));
+    let o = bl(&argv(
+        "court --preset tennis --surface hard-court --format json",
+    ));
     assert_eq!(o.code, 2, "no μ: {}", o.stderr);
     assert!(o.stderr.contains("friction"), "{}", o.stderr);
 }
