@@ -23,6 +23,26 @@ pub struct ColumnSpec {
     pub required: bool,
 }
 
+impl ColumnSpec {
+    /// A column the file must have.
+    pub const fn required(name: &'static str, aliases: &'static [(&'static str, f64)]) -> Self {
+        Self {
+            name,
+            aliases,
+            required: true,
+        }
+    }
+
+    /// A column the file may leave out (or leave empty on a row).
+    pub const fn optional(name: &'static str, aliases: &'static [(&'static str, f64)]) -> Self {
+        Self {
+            name,
+            aliases,
+            required: false,
+        }
+    }
+}
+
 /// Parsed numbers, SI, one `Vec` per spec (`None`: column absent or cell empty), and the
 /// line of each row.
 #[derive(Debug, Clone, PartialEq)]
