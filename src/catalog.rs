@@ -363,21 +363,11 @@ mod tests {
             .iter()
             .map(|e| e.preset.name.as_str())
             .collect();
-        let paper = ["superball", "golf", "baseball"];
-        let drop_balls = [
-            "tennis",
-            "football",
-            "basketball",
-            "table-tennis",
-            "softball",
-            "baseball-mlb",
-            "softball-44",
-            "squash",
-            "volleyball",
-            "golf-driver",
-        ];
+        // the embedded balls in their order (pinned by `preset::tests::embedded_presets_parse`),
+        // then the folder's in file-name order
+        let embedded: Vec<&str> = crate::preset::EMBEDDED.iter().map(|e| e.0).collect();
         let users = ["first", "second"];
-        assert_eq!(names, [&paper[..], &drop_balls, &users].concat());
+        assert_eq!(names, [&embedded[..], &users].concat());
         assert_eq!(
             cat.get("first").unwrap().origin,
             Origin::File(dir.path().join("a.toml"))

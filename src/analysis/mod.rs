@@ -11,6 +11,7 @@ mod mc_impact;
 mod mc_interval;
 mod mc_order;
 mod mc_rng;
+mod mc_samples;
 mod mc_spec;
 mod mc_stats;
 pub mod statics;

@@ -23,26 +23,10 @@ pub struct CorTemperatureRow {
 }
 
 const SPECS: [ColumnSpec; 4] = [
-    ColumnSpec {
-        name: "temperature",
-        aliases: &[("temperature_c", 1.0)],
-        required: true,
-    },
-    ColumnSpec {
-        name: "impact speed",
-        aliases: &[("v0", 1.0), ("v0_m_s", 1.0)],
-        required: true,
-    },
-    ColumnSpec {
-        name: "COR",
-        aliases: &[("cor", 1.0)],
-        required: true,
-    },
-    ColumnSpec {
-        name: "COR standard deviation",
-        aliases: &[("cor_sd", 1.0)],
-        required: false,
-    },
+    ColumnSpec::required("temperature", &[("temperature_c", 1.0)]),
+    ColumnSpec::required("impact speed", &[("v0", 1.0), ("v0_m_s", 1.0)]),
+    ColumnSpec::required("COR", &[("cor", 1.0)]),
+    ColumnSpec::optional("COR standard deviation", &[("cor_sd", 1.0)]),
 ];
 
 /// The rows of `text`: `temperature_c,v0,cor[,cor_sd]`. Temperatures above −273.15 °C, speeds

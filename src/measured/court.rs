@@ -33,19 +33,11 @@ impl CourtRow {
     }
 }
 
-const fn spec(name: &'static str, aliases: &'static [(&'static str, f64)]) -> ColumnSpec {
-    ColumnSpec {
-        name,
-        aliases,
-        required: true,
-    }
-}
-
 const SPECS: [ColumnSpec; 4] = [
-    spec("v_in", &[("v_in", 1.0), ("v_in_m_s", 1.0)]),
-    spec("angle_in", &[("angle_in", 1.0), ("angle_in_deg", 1.0)]),
-    spec("v_out", &[("v_out", 1.0), ("v_out_m_s", 1.0)]),
-    spec("angle_out", &[("angle_out", 1.0), ("angle_out_deg", 1.0)]),
+    ColumnSpec::required("v_in", &[("v_in", 1.0), ("v_in_m_s", 1.0)]),
+    ColumnSpec::required("angle_in", &[("angle_in", 1.0), ("angle_in_deg", 1.0)]),
+    ColumnSpec::required("v_out", &[("v_out", 1.0), ("v_out_m_s", 1.0)]),
+    ColumnSpec::required("angle_out", &[("angle_out", 1.0), ("angle_out_deg", 1.0)]),
 ];
 
 /// The rows of a court test table. Errors name the cell.

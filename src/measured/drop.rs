@@ -12,16 +12,14 @@ use crate::model::params::{MEANINGFUL_MAX, MEANINGFUL_MIN};
 
 /// The columns of a drop test (also how `parse_any` tells one).
 pub(super) const SPECS: [ColumnSpec; 2] = [
-    ColumnSpec {
-        name: "drop height",
-        aliases: &[("drop_height_m", 1.0), ("drop_height", 1.0)],
-        required: true,
-    },
-    ColumnSpec {
-        name: "rebound height",
-        aliases: &[("rebound_height_m", 1.0), ("rebound_height", 1.0)],
-        required: true,
-    },
+    ColumnSpec::required(
+        "drop height",
+        &[("drop_height_m", 1.0), ("drop_height", 1.0)],
+    ),
+    ColumnSpec::required(
+        "rebound height",
+        &[("rebound_height_m", 1.0), ("rebound_height", 1.0)],
+    ),
 ];
 
 /// Drop and rebound heights (m) and the line each came from (0: the command line).

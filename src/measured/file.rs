@@ -10,41 +10,71 @@ use std::path::Path;
 /// Largest data file read: 64 MiB holds a million rows of a few numbers with room to spare.
 pub const MAX_DATA_BYTES: u64 = 64 << 20;
 
-fn whole(path: &Path, msg: impl std::fmt::Display) -> anyhow::Error {
-    anyhow::anyhow!("{}: {msg}", path.display())
+/// Why a data file gave no text: the file itself (missing, unreadable, not a regular file)
+/// or what it holds (too large, not UTF-8). Each reader words it for its own users:
+/// [`read_text`] for the command line.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum ReadError {
+    /// The system refused it: "no such file", "permission denied", or its own words without
+    /// the error number.
+    Io(String),
+    /// A directory.
+    Directory,
+    /// A FIFO, socket or device (which could block or never end).
+    NotRegular,
+    /// Larger than [`MAX_DATA_BYTES`]: its size in bytes.
+    TooLarge(u64),
+    /// Not UTF-8 from this line and column (1-based, the column in characters) on.
+    NotUtf8 {
+        /// The line of the first byte that is not.
+        line: usize,
+        /// Its column.
+        column: usize,
+    },
 }
 
-/// The text of `path`, or an error naming it.
-pub fn read_text(path: &Path) -> anyhow::Result<String> {
-    let meta = std::fs::metadata(path).map_err(|e| whole(path, describe(&e)))?;
+/// The text of the data file `path`: a regular file of at most [`MAX_DATA_BYTES`], UTF-8.
+pub fn read_bounded(path: &Path) -> Result<String, ReadError> {
+    let io = |e: std::io::Error| ReadError::Io(describe(&e));
+    let meta = std::fs::metadata(path).map_err(io)?;
     if meta.is_dir() {
-        return Err(whole(path, "is a directory, not a data file"));
+        return Err(ReadError::Directory);
     }
     if !meta.is_file() {
-        return Err(whole(
-            path,
-            "is not a regular file (a FIFO, socket or device is not read)",
-        ));
+        return Err(ReadError::NotRegular);
     }
     if meta.len() > MAX_DATA_BYTES {
-        return Err(whole(
-            path,
-            format!(
-                "is {} bytes; a data file is at most {MAX_DATA_BYTES} bytes",
-                meta.len()
-            ),
-        ));
+        return Err(ReadError::TooLarge(meta.len()));
     }
     let mut bytes = Vec::new();
     std::fs::File::open(path)
         .and_then(|f| f.take(MAX_DATA_BYTES + 1).read_to_end(&mut bytes))
-        .map_err(|e| whole(path, describe(&e)))?;
+        .map_err(io)?;
     String::from_utf8(bytes).map_err(|e| {
         let valid = &e.as_bytes()[..e.utf8_error().valid_up_to()];
         let line = valid.iter().filter(|&&b| b == b'\n').count() + 1;
         let last = valid.rsplit(|&b| b == b'\n').next().unwrap_or(&[]);
-        let col = String::from_utf8_lossy(last).chars().count() + 1;
-        anyhow::anyhow!("{}:{line}:{col}: not UTF-8 text", path.display())
+        let column = String::from_utf8_lossy(last).chars().count() + 1;
+        ReadError::NotUtf8 { line, column }
+    })
+}
+
+/// The text of `path`, or an error naming it: `FILE: message`, or `FILE:LINE:COLUMN: not
+/// UTF-8 text`.
+pub fn read_text(path: &Path) -> anyhow::Result<String> {
+    let file = path.display();
+    read_bounded(path).map_err(|e| match e {
+        ReadError::Io(why) => anyhow::anyhow!("{file}: {why}"),
+        ReadError::Directory => anyhow::anyhow!("{file}: is a directory, not a data file"),
+        ReadError::NotRegular => {
+            anyhow::anyhow!("{file}: is not a regular file (a FIFO, socket or device is not read)")
+        }
+        ReadError::TooLarge(n) => {
+            anyhow::anyhow!("{file}: is {n} bytes; a data file is at most {MAX_DATA_BYTES} bytes")
+        }
+        ReadError::NotUtf8 { line, column } => {
+            anyhow::anyhow!("{file}:{line}:{column}: not UTF-8 text")
+        }
     })
 }
 
@@ -115,4 +145,58 @@ pub fn label(path: &Path) -> String {
         || path.display().to_string(),
         |n| n.to_string_lossy().into_owned(),
     )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Each refusal in the command line's words, naming the file (and the place of the first
+    /// byte that is not UTF-8).
+    #[test]
+    fn refusals_name_the_file() {
+        let dir = tempfile::tempdir().unwrap();
+        let said = |p: &Path| read_text(p).unwrap_err().to_string();
+        let missing = dir.path().join("none.csv");
+        assert_eq!(
+            said(&missing),
+            format!("{}: no such file", missing.display())
+        );
+        assert_eq!(
+            read_bounded(&missing),
+            Err(ReadError::Io("no such file".into()))
+        );
+        let d = dir.path().display();
+        assert_eq!(
+            said(dir.path()),
+            format!("{d}: is a directory, not a data file")
+        );
+        let latin = dir.path().join("latin.csv");
+        std::fs::write(&latin, b"v0,cor\n1,0.5 \xe9t\xe9\n").unwrap();
+        assert_eq!(
+            said(&latin),
+            format!("{}:2:7: not UTF-8 text", latin.display())
+        );
+        // a sparse file one byte over the limit: its size is read, not its bytes
+        let big = dir.path().join("big.csv");
+        std::fs::File::create(&big)
+            .and_then(|f| f.set_len(MAX_DATA_BYTES + 1))
+            .unwrap();
+        assert_eq!(
+            said(&big),
+            format!(
+                "{}: is {} bytes; a data file is at most {MAX_DATA_BYTES} bytes",
+                big.display(),
+                MAX_DATA_BYTES + 1
+            )
+        );
+        #[cfg(unix)]
+        assert_eq!(
+            said(Path::new("/dev/null")),
+            "/dev/null: is not a regular file (a FIFO, socket or device is not read)"
+        );
+        let fine = dir.path().join("fine.csv");
+        std::fs::write(&fine, "v0,cor\n1,0.5\n").unwrap();
+        assert_eq!(read_text(&fine).unwrap(), "v0,cor\n1,0.5\n");
+    }
 }

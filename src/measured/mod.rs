@@ -132,40 +132,29 @@ impl Data {
 }
 
 const COR_SPECS: [ColumnSpec; 5] = [
-    ColumnSpec {
-        name: "impact speed",
-        aliases: &[("v0", 1.0), ("v0_m_s", 1.0), ("speed", 1.0)],
-        required: true,
-    },
-    ColumnSpec {
-        name: "COR",
-        aliases: &[("cor", 1.0), ("e", 1.0)],
-        required: true,
-    },
-    ColumnSpec {
-        name: "COR standard deviation",
-        aliases: &[("cor_sd", 1.0)],
-        required: false,
-    },
-    ColumnSpec {
-        name: "peak force",
-        aliases: &[
+    ColumnSpec::required(
+        "impact speed",
+        &[("v0", 1.0), ("v0_m_s", 1.0), ("speed", 1.0)],
+    ),
+    ColumnSpec::required("COR", &[("cor", 1.0), ("e", 1.0)]),
+    ColumnSpec::optional("COR standard deviation", &[("cor_sd", 1.0)]),
+    ColumnSpec::optional(
+        "peak force",
+        &[
             ("max_force_n", 1.0),
             ("max_force", 1.0),
             ("max_force_kn", 1e3),
         ],
-        required: false,
-    },
-    ColumnSpec {
-        name: "contact time",
-        aliases: &[
+    ),
+    ColumnSpec::optional(
+        "contact time",
+        &[
             ("contact_time_s", 1.0),
             ("contact_time", 1.0),
             ("contact_time_ms", 1e-3),
             ("contact_time_us", 1e-6),
         ],
-        required: false,
-    },
+    ),
 ];
 
 /// A measured quantity in its domain, or an error at its cell naming it: positive (else "must

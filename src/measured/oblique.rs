@@ -27,36 +27,12 @@ pub struct ObliqueRow {
 }
 
 const SPECS: [ColumnSpec; 6] = [
-    ColumnSpec {
-        name: "v0",
-        aliases: &[("v0", 1.0), ("v0_m_s", 1.0), ("speed", 1.0)],
-        required: true,
-    },
-    ColumnSpec {
-        name: "angle_deg",
-        aliases: &[("angle_deg", 1.0), ("angle", 1.0)],
-        required: true,
-    },
-    ColumnSpec {
-        name: "spin_in",
-        aliases: &[("spin_in", 1.0), ("spin_in_rad_s", 1.0)],
-        required: true,
-    },
-    ColumnSpec {
-        name: "vx_out",
-        aliases: &[("vx_out", 1.0), ("vx_out_m_s", 1.0)],
-        required: true,
-    },
-    ColumnSpec {
-        name: "vy_out",
-        aliases: &[("vy_out", 1.0), ("vy_out_m_s", 1.0)],
-        required: true,
-    },
-    ColumnSpec {
-        name: "spin_out",
-        aliases: &[("spin_out", 1.0), ("spin_out_rad_s", 1.0)],
-        required: false,
-    },
+    ColumnSpec::required("v0", &[("v0", 1.0), ("v0_m_s", 1.0), ("speed", 1.0)]),
+    ColumnSpec::required("angle_deg", &[("angle_deg", 1.0), ("angle", 1.0)]),
+    ColumnSpec::required("spin_in", &[("spin_in", 1.0), ("spin_in_rad_s", 1.0)]),
+    ColumnSpec::required("vx_out", &[("vx_out", 1.0), ("vx_out_m_s", 1.0)]),
+    ColumnSpec::required("vy_out", &[("vy_out", 1.0), ("vy_out_m_s", 1.0)]),
+    ColumnSpec::optional("spin_out", &[("spin_out", 1.0), ("spin_out_rad_s", 1.0)]),
 ];
 
 /// The rows of an oblique-bounce table; `spin_out` is given on every row or on none (a fit

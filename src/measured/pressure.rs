@@ -23,19 +23,18 @@ pub struct PressureRow {
 }
 
 const SPECS: [ColumnSpec; 3] = [
-    ColumnSpec {
-        name: "time",
-        aliases: &[
+    ColumnSpec::required(
+        "time",
+        &[
             ("time_s", 1.0),
             ("time_min", 60.0),
             ("time_h", 3600.0),
             ("time_d", 86_400.0),
         ],
-        required: true,
-    },
-    ColumnSpec {
-        name: "gauge pressure",
-        aliases: &[
+    ),
+    ColumnSpec::required(
+        "gauge pressure",
+        &[
             ("pressure_pa", 1.0),
             ("pressure_hpa", 100.0),
             ("pressure_mbar", 100.0),
@@ -43,11 +42,10 @@ const SPECS: [ColumnSpec; 3] = [
             ("pressure_bar", 1e5),
             ("pressure_psi", PSI),
         ],
-        required: true,
-    },
-    ColumnSpec {
-        name: "pressure standard deviation",
-        aliases: &[
+    ),
+    ColumnSpec::optional(
+        "pressure standard deviation",
+        &[
             ("pressure_sd_pa", 1.0),
             ("pressure_sd_hpa", 100.0),
             ("pressure_sd_mbar", 100.0),
@@ -55,8 +53,7 @@ const SPECS: [ColumnSpec; 3] = [
             ("pressure_sd_bar", 1e5),
             ("pressure_sd_psi", PSI),
         ],
-        required: false,
-    },
+    ),
 ];
 
 /// The readings in `text`: a time column (`time_s`, `time_min`, `time_h`, `time_d`), a gauge

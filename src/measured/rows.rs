@@ -18,6 +18,13 @@ pub struct Cell {
     pub column: usize,
 }
 
+impl Cell {
+    /// `message` at this cell's line and column.
+    pub fn error(&self, message: impl Into<String>) -> MeasuredError {
+        MeasuredError::at(self.line, self.column, message)
+    }
+}
+
 /// One row: its line (where it starts) and its cells.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Row {

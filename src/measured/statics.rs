@@ -22,21 +22,15 @@ pub struct StaticRow {
 }
 
 const SPECS: [ColumnSpec; 3] = [
-    ColumnSpec {
-        name: "load",
-        aliases: &[("load_kg", 1.0), ("load_g", 1e-3)],
-        required: true,
-    },
-    ColumnSpec {
-        name: "deflection",
-        aliases: &[("deflection_m", 1.0), ("deflection_mm", 1e-3)],
-        required: true,
-    },
-    ColumnSpec {
-        name: "deflection standard deviation",
-        aliases: &[("deflection_sd_m", 1.0), ("deflection_sd_mm", 1e-3)],
-        required: false,
-    },
+    ColumnSpec::required("load", &[("load_kg", 1.0), ("load_g", 1e-3)]),
+    ColumnSpec::required(
+        "deflection",
+        &[("deflection_m", 1.0), ("deflection_mm", 1e-3)],
+    ),
+    ColumnSpec::optional(
+        "deflection standard deviation",
+        &[("deflection_sd_m", 1.0), ("deflection_sd_mm", 1e-3)],
+    ),
 ];
 
 /// The static deflections in `text`: `load_kg` (or `load_g`), `deflection_m` (or

@@ -23,6 +23,26 @@ pub struct ColumnSpec {
     pub required: bool,
 }
 
+impl ColumnSpec {
+    /// A column the file must have.
+    pub const fn required(name: &'static str, aliases: &'static [(&'static str, f64)]) -> Self {
+        Self {
+            name,
+            aliases,
+            required: true,
+        }
+    }
+
+    /// A column the file may leave out (or leave empty on a row).
+    pub const fn optional(name: &'static str, aliases: &'static [(&'static str, f64)]) -> Self {
+        Self {
+            name,
+            aliases,
+            required: false,
+        }
+    }
+}
+
 /// Parsed numbers, SI, one `Vec` per spec (`None`: column absent or cell empty), and the
 /// line of each row.
 #[derive(Debug, Clone, PartialEq)]
@@ -183,15 +203,11 @@ fn read_rows(
 fn header_map(header: &Row, specs: &[ColumnSpec]) -> Result<Vec<(usize, f64)>, MeasuredError> {
     let line = header.line;
     if let Some(cell) = header.cells.iter().find(|c| c.text.parse::<f64>().is_ok()) {
-        return Err(MeasuredError::at(
-            cell.line,
-            cell.column,
-            format!(
-                "no header: '{}' is a number; the first line must name the columns ({})",
-                escape(&cell.text),
-                expected(specs)
-            ),
-        ));
+        return Err(cell.error(format!(
+            "no header: '{}' is a number; the first line must name the columns ({})",
+            escape(&cell.text),
+            expected(specs)
+        )));
     }
     let mut map = Vec::new();
     for cell in &header.cells {
@@ -203,26 +219,18 @@ fn header_map(header: &Row, specs: &[ColumnSpec]) -> Result<Vec<(usize, f64)>, M
                 .map(|(_, f)| (k, *f))
         });
         let Some((k, f)) = found else {
-            return Err(MeasuredError::at(
-                cell.line,
-                cell.column,
-                format!(
-                    "unknown column '{}' (expected {})",
-                    escape(&cell.text),
-                    expected(specs)
-                ),
-            ));
+            return Err(cell.error(format!(
+                "unknown column '{}' (expected {})",
+                escape(&cell.text),
+                expected(specs)
+            )));
         };
         if map.iter().any(|&(j, _)| j == k) {
-            return Err(MeasuredError::at(
-                cell.line,
-                cell.column,
-                format!(
-                    "column '{}' gives {} a second time",
-                    escape(&cell.text),
-                    specs[k].name
-                ),
-            ));
+            return Err(cell.error(format!(
+                "column '{}' gives {} a second time",
+                escape(&cell.text),
+                specs[k].name
+            )));
         }
         map.push((k, f));
     }
@@ -264,10 +272,9 @@ fn escape(s: &str) -> String {
 /// (`text::parse::read`, so `1e-400` is refused here as there), finite; empty only in an
 /// optional column.
 fn cell_value(cell: &Cell, sep: u8, spec: &ColumnSpec) -> Result<Option<f64>, MeasuredError> {
-    let at = |message: String| MeasuredError::at(cell.line, cell.column, message);
     if cell.text.is_empty() {
         return if spec.required {
-            Err(at(format!("empty {} cell", spec.name)))
+            Err(cell.error(format!("empty {} cell", spec.name)))
         } else {
             Ok(None)
         };
@@ -281,10 +288,7 @@ fn cell_value(cell: &Cell, sep: u8, spec: &ColumnSpec) -> Result<Option<f64>, Me
     let shown = escape(&cell.text);
     match parse::read(&text) {
         Ok(v) if v.is_finite() => Ok(Some(v)),
-        Ok(_) => Err(at(format!(
-            "{} '{shown}' is not a finite number",
-            spec.name
-        ))),
-        Err(why) => Err(at(format!("{} {}", spec.name, parse::refusal(&shown, why)))),
+        Ok(_) => Err(cell.error(format!("{} '{shown}' is not a finite number", spec.name))),
+        Err(why) => Err(cell.error(format!("{} {}", spec.name, parse::refusal(&shown, why)))),
     }
 }

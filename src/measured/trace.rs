@@ -7,27 +7,25 @@ use super::table::{self, ColumnSpec};
 
 /// The columns of a trace (also how `parse_any` tells one).
 pub(super) const SPECS: [ColumnSpec; 2] = [
-    ColumnSpec {
-        name: "time",
-        aliases: &[
+    ColumnSpec::required(
+        "time",
+        &[
             ("time", 1.0),
             ("t", 1.0),
             ("time_s", 1.0),
             ("time_ms", 1e-3),
             ("time_us", 1e-6),
         ],
-        required: true,
-    },
-    ColumnSpec {
-        name: "force",
-        aliases: &[
+    ),
+    ColumnSpec::required(
+        "force",
+        &[
             ("force", 1.0),
             ("f", 1.0),
             ("force_n", 1.0),
             ("force_kn", 1e3),
         ],
-        required: true,
-    },
+    ),
 ];
 
 /// Samples in SI, time strictly increasing.

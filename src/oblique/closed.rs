@@ -30,7 +30,7 @@ use crate::model::contact::{Contact, ContactLaw};
 use crate::model::params::ImpactParams;
 use crate::solver::exact::PathPoint;
 use crate::solver::roots::halley_bracketed_from;
-use crate::solver::{EventKind, History, ImpactResponse, Method, PhaseEvent};
+use crate::solver::{EventKind, ImpactResponse, Method, Outcome, to_si};
 
 /// Most bracketing steps of one event.
 const MAX_STEPS: usize = 64;
@@ -203,17 +203,19 @@ impl ClosedPath {
                 v: v2,
             },
         ];
-        let ends = Ends {
-            tau_m,
-            z_m,
-            tau_f,
-            z_end: z2.at(0, &b2) + u.z_f,
-            z_f: u.z_f,
+        let ends = Outcome {
+            rebound: true,
+            tau_end: tau_f,
+            velocity_end,
             y_end: y2.at(0, &b2),
-            cor,
+            f_max: z_m,
+            z_max: z_m,
+            z_f: u.z_f,
             steps: evals,
+            ..Outcome::default()
         };
-        Some((ends.response(params), ClosedPath { parts }))
+        let z_end = z2.at(0, &b2) + u.z_f;
+        Some((response(params, ends, (tau_m, z_end)), ClosedPath { parts }))
     }
 
     /// The phase holding τ: at a boundary, the one that ends there (as `NormalPath::at`).
@@ -329,52 +331,11 @@ impl super::NormalMotion for ClosedPath {
     }
 }
 
-/// What the normal response is built from, normalized.
-struct Ends {
-    tau_m: f64,
-    z_m: f64,
-    tau_f: f64,
-    z_end: f64,
-    z_f: f64,
-    y_end: f64,
-    cor: f64,
-    steps: usize,
-}
-
-impl Ends {
-    /// The response as the exact solver's run gives it (`solver::outcome::to_si` with no
-    /// energy audit and no samples): an unload, then separation.
-    fn response(&self, p: &ImpactParams) -> ImpactResponse {
-        let w0 = p.omega0();
-        let (t, z, f) = (1.0 / w0, p.v0 / w0, p.mass * p.v0 * w0);
-        let event = |tau: f64, kind, at: f64| PhaseEvent {
-            t: tau * t,
-            kind,
-            z: at * z,
-        };
-        ImpactResponse {
-            law: ContactLaw::Linear,
-            method: Method::Exact,
-            cor: self.cor.clamp(0.0, 1.0),
-            rebound: true,
-            max_force: self.z_m * f,
-            contact_time: Some(self.tau_f * t),
-            duration: self.tau_f * t,
-            max_indentation: self.z_m * z,
-            permanent_indentation: self.z_f * z,
-            element_displacement: self.y_end * z,
-            max_force_normalized: self.z_m,
-            element_displacement_normalized: self.y_end,
-            contact_time_normalized: Some(self.tau_f),
-            normalized: p.normalized(),
-            events: vec![
-                event(self.tau_m, EventKind::Unload, self.z_m),
-                event(self.tau_f, EventKind::Separation, self.z_end),
-            ],
-            energy: None,
-            history: History::default(),
-            steps: self.steps,
-            stiff: false,
-        }
-    }
+/// The response as the exact solver's run gives it: the normalized outcome `o` (no energy
+/// audit, no samples) with its unload at (τ_m, z̄_m) and its separation at (τ_f, `z_end`),
+/// turned into SI by the solver's own conversion (`solver::to_si`).
+fn response(p: &ImpactParams, mut o: Outcome, (tau_m, z_end): (f64, f64)) -> ImpactResponse {
+    o.event(tau_m, EventKind::Unload, o.z_max);
+    o.event(o.tau_end, EventKind::Separation, z_end);
+    to_si(p, p.normalized(), ContactLaw::Linear, Method::Exact, o)
 }

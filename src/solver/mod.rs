@@ -13,7 +13,7 @@ pub(crate) mod series;
 pub mod table;
 pub mod taylor;
 
-use outcome::to_si;
+pub(crate) use outcome::to_si;
 pub(crate) use outcome::{Outcome, Sample};
 
 use crate::model::contact::{Contact, ContactLaw};

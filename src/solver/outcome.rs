@@ -63,7 +63,7 @@ pub(crate) struct Sample {
 }
 
 /// The SI response of a run of `p` from its normalized outcome `o`.
-pub(super) fn to_si(
+pub(crate) fn to_si(
     p: &ImpactParams,
     n: Normalized,
     law: ContactLaw,
