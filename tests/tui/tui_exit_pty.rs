@@ -14,9 +14,7 @@ use std::path::Path;
 /// The explorer with no ball, its first frame drawn (up to the cursor hidden at its end), and
 /// the terminal's modes before it started.
 fn started(home: &Path) -> (Explorer, String) {
-    let mut x = Explorer::spawn(home, None, &[]);
-    let before = modes(&x.before);
-    x.wait_for_first_draw();
+    let (mut x, before) = Explorer::started(home, None, &[]);
     x.wait_for(HIDE_CURSOR);
     (x, before)
 }

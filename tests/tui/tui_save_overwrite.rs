@@ -12,6 +12,21 @@ use save_flow::{
     message, perform, press, save_modified, save_request, superball, take_save, type_name, update,
 };
 use std::fs;
+use std::path::Path;
+
+/// The save performed in `dir` finds `path` taken by a preset named `holds`: the explorer
+/// asks before replacing it.
+fn assert_asks_before_replacing(app: &mut App, dir: &Path, path: &Path, holds: &str) {
+    let answer = perform(app, dir);
+    assert_eq!(
+        answer,
+        Action::SaveExists {
+            path: path.to_path_buf(),
+            holds: Some(holds.into())
+        }
+    );
+    assert_eq!(app.mode(), Mode::Confirm);
+}
 
 #[test]
 fn an_existing_file_is_replaced_only_after_yes() {
@@ -24,15 +39,7 @@ fn an_existing_file_is_replaced_only_after_yes() {
     press(&mut app, "LLs");
     type_name(&mut app, "mine");
     press(&mut app, "\n");
-    let answer = perform(&mut app, dir.path());
-    assert_eq!(
-        answer,
-        Action::SaveExists {
-            path: path.clone(),
-            holds: Some("mine".into())
-        }
-    );
-    assert_eq!(app.mode(), Mode::Confirm);
+    assert_asks_before_replacing(&mut app, dir.path(), &path, "mine");
     assert_eq!(
         message(&app),
         ("overwrite mine.toml? y/n".into(), Severity::Warning)
@@ -124,15 +131,7 @@ fn a_file_that_appears_after_the_prompt_is_not_clobbered() {
         .1
         .replace("name = \"golf\"", "name = \"theirs\"");
     fs::write(&path, &theirs).unwrap();
-    let answer = perform(&mut app, dir.path());
-    assert_eq!(
-        answer,
-        Action::SaveExists {
-            path: path.clone(),
-            holds: Some("theirs".into())
-        }
-    );
-    assert_eq!(app.mode(), Mode::Confirm);
+    assert_asks_before_replacing(&mut app, dir.path(), &path, "theirs");
     assert_eq!(fs::read_to_string(&path).unwrap(), theirs);
 }
 
