@@ -9,7 +9,7 @@ use bouncelab::tui::action::{Action, Mode};
 use bouncelab::tui::app::{App, Severity};
 use bouncelab::tui::save;
 use save_flow::{
-    message, perform, press, save_modified, save_request, superball, take_save, type_name, update,
+    message, perform, press, save_as, save_modified, save_request, superball, take_save, update,
 };
 use std::fs;
 use std::path::Path;
@@ -36,9 +36,7 @@ fn an_existing_file_is_replaced_only_after_yes() {
 
     // the same name again, from other parameters
     let mut app = superball();
-    press(&mut app, "LLs");
-    type_name(&mut app, "mine");
-    press(&mut app, "\n");
+    save_as(&mut app, "LLs", "mine");
     assert_asks_before_replacing(&mut app, dir.path(), &path, "mine");
     assert_eq!(
         message(&app),
@@ -59,9 +57,7 @@ fn an_existing_file_is_replaced_only_after_yes() {
     );
     assert_eq!(fs::read(&path).unwrap(), first);
 
-    press(&mut app, "s");
-    type_name(&mut app, "mine");
-    press(&mut app, "\n");
+    save_as(&mut app, "s", "mine");
     assert!(matches!(
         perform(&mut app, dir.path()),
         Action::SaveExists { .. }
@@ -96,9 +92,7 @@ fn a_preset_of_that_name_in_another_file_is_the_one_asked_about() {
     let other = dir.path().join("my-balls.toml");
     fs::rename(&first, &other).unwrap();
     let mut app = superball();
-    press(&mut app, "s");
-    type_name(&mut app, "mine");
-    press(&mut app, "\n");
+    save_as(&mut app, "s", "mine");
     // not a second file "mine.toml", which would give the catalog two presets "mine"
     assert_eq!(
         perform(&mut app, dir.path()),
@@ -121,9 +115,7 @@ fn a_preset_of_that_name_in_another_file_is_the_one_asked_about() {
 fn a_file_that_appears_after_the_prompt_is_not_clobbered() {
     let dir = tempfile::tempdir().unwrap();
     let mut app = superball();
-    press(&mut app, "s");
-    type_name(&mut app, "mine");
-    press(&mut app, "\n");
+    save_as(&mut app, "s", "mine");
     assert!(save_request().is_some());
     // another program writes the name (a preset called otherwise) before the loop gets to it
     let path = dir.path().join("mine.toml");
