@@ -162,6 +162,17 @@ pub fn bad_each(cases: &[(&str, &[&str])]) {
     }
 }
 
+/// `args` with `--format json` give one warning, starting with `starts`, and the text answer
+/// (`args` alone) says the same as `warning: …`.
+pub fn assert_warns_once_in_json_and_text(args: &[&str], starts: &str) {
+    let v = json(&[args, &["--format", "json"][..]].concat());
+    let w = v["warnings"].as_array().expect("a warnings array");
+    assert_eq!(w.len(), 1, "{w:?}");
+    let said = w[0].as_str().unwrap();
+    assert!(said.starts_with(starts), "{said}");
+    assert!(ok(args).contains(&format!("warning: {said}")));
+}
+
 /// A temp folder holding one file written from bytes; returns (folder, path as text).
 pub fn file_with(bytes: &[u8]) -> (tempfile::TempDir, String) {
     let dir = tempfile::tempdir().unwrap();
