@@ -8,6 +8,7 @@ use bouncelab::preset::ParamSource;
 use numpy::{PyArray1, PyArrayMethods, PyReadonlyArray1};
 use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
+use pyo3::types::PyDict;
 
 /// History samples when `history` is asked for; `samples` without it is refused, as the
 /// command line refuses `--samples` without `--history`.
@@ -87,4 +88,20 @@ pub(crate) fn frozen_array<'py>(py: Python<'py>, v: Vec<f64>) -> Py<PyArray1<f64
     // a new array has no other borrow, so `readwrite` cannot fail here
     let _ = a.readwrite().make_nonwriteable();
     a.unbind()
+}
+
+/// `NAME_ci95_lo` and `NAME_ci95_hi` arrays in `d`, one entry per row of `bands`.
+pub(crate) fn interval_columns<const N: usize>(
+    py: Python<'_>,
+    d: &Bound<'_, PyDict>,
+    names: [&str; N],
+    bands: &[[[f64; 2]; N]],
+) -> PyResult<()> {
+    for (k, name) in names.iter().enumerate() {
+        for (side, end) in ["lo", "hi"].iter().enumerate() {
+            let v: Vec<f64> = bands.iter().map(|b| b[k][side]).collect();
+            d.set_item(format!("{name}_ci95_{end}"), array(py, v))?;
+        }
+    }
+    Ok(())
 }

@@ -130,6 +130,12 @@ fn overridden_ball(
     Ball::from_entry_with(entry, params, law_, v0, set).map_err(error)
 }
 
+/// The preset `name`'s own ball, nothing changed (`collide`'s `target_preset`): the shared
+/// one of [`shared_preset_ball`].
+pub(crate) fn preset_as_it_is(name: &str) -> PyResult<Arc<Ball>> {
+    shared_preset_ball(name, None, None)
+}
+
 /// A preset ball with the command line's `--params` and `--law` applied, at the preset's
 /// speed: built once while the catalog holds (catalog_cache.rs), the same ball, checked the
 /// same way, as [`overridden_ball`] builds.

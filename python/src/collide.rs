@@ -9,7 +9,6 @@ use crate::same::Same;
 use bouncelab::Ball;
 use bouncelab::api::CollisionReport;
 use bouncelab::api::SurfaceUsed;
-use bouncelab::catalog::Catalog;
 use bouncelab::target::Target;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
@@ -300,8 +299,7 @@ fn collide_with(
     let pair = (used.stiffness, used.damping);
     let report = match (target_mass, target_preset) {
         (None, Some(name)) => {
-            let cat = crate::load_catalog()?;
-            let other = other_ball(&cat, name)?;
+            let other = crate::ball_args::preset_as_it_is(name)?;
             ball.collide_ball(&other, target_speed, pair)
         }
         (_, None) if target_mass.is_some() || given => ball.collide(&Target {
@@ -319,9 +317,4 @@ fn collide_with(
     let mut c = Collision::of(report.map_err(error)?, &ball);
     c.surface = used.into();
     Ok(c)
-}
-
-fn other_ball(cat: &Catalog, name: &str) -> PyResult<Ball> {
-    let entry = crate::entry(cat, name)?;
-    Ball::from_entry(entry, None, None, None).map_err(error)
 }

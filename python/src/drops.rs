@@ -2,7 +2,7 @@
 //! --format json` (src/cli/drop.rs), under its keys.
 
 use crate::ball_args::{BallChoice, ball_pyfunction};
-use crate::impact::interval_columns;
+use crate::interval_columns;
 use crate::{array, error, interrupt, value_error};
 use bouncelab::BallError;
 use bouncelab::api::{self, Ball};

@@ -2,7 +2,7 @@
 //! dicts of numpy arrays with the CSV's columns.
 
 use crate::ball_args::ball_pyfunction;
-use crate::impact::interval_columns;
+use crate::interval_columns;
 use crate::{array, error, floats, interrupt, law, value_error};
 use bouncelab::BallError;
 use bouncelab::api;

@@ -3,7 +3,7 @@
 //! `Ball::at_conditions` makes at that sample's pressure or temperature: two paths, one
 //! answer. And the spreads a ball cannot take are refused, naming the field.
 
-use crate::common::bad;
+use crate::common::bad_each;
 use bouncelab::Ball;
 use bouncelab::analysis::mc::{Dist, McSpec, parse_vary};
 use bouncelab::api::ConditionsSpec;
@@ -54,16 +54,18 @@ fn each_sample_is_the_ball_at_its_own_conditions() {
 
 #[test]
 fn a_spread_the_ball_cannot_take_is_refused() {
-    bad(
-        &["mc", "--preset", "golf", "--vary", "pressure=5%"],
-        &["invalid vary", "golf is not inflated"],
-    );
-    bad(
-        &["mc", "--preset", "superball", "--vary", "temperature=1%"],
-        &["invalid vary", "superball has no temperature model"],
-    );
-    bad(
-        &["mc", "--preset", "basketball", "--vary", "temperature=1%"],
-        &["invalid vary", "temperature is not stated"],
-    );
+    bad_each(&[
+        (
+            "mc --preset golf --vary pressure=5%",
+            &["invalid vary", "golf is not inflated"],
+        ),
+        (
+            "mc --preset superball --vary temperature=1%",
+            &["invalid vary", "superball has no temperature model"],
+        ),
+        (
+            "mc --preset basketball --vary temperature=1%",
+            &["invalid vary", "temperature is not stated"],
+        ),
+    ]);
 }

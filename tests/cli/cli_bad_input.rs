@@ -10,98 +10,67 @@ use std::process::{Command, Stdio};
 #[test]
 fn fit_out_of_reach_and_bad_target() {
     // at the superball's ζ ≈ 0.16, λ = 0 already gives e ≈ 0.60
-    bad(&["fit", "--cor", "0.2"], &["out of reach", "0.2"]);
-    bad(&["fit", "--cor", "1.5"], &["invalid cor: 1.5"]);
-    bad(&["fit", "--cor", "NaN"], &["invalid cor: NaN"]);
-    bad(&["fit"], &["--cor"]);
+    bad_each(&[
+        ("fit --cor 0.2", &["out of reach", "0.2"]),
+        ("fit --cor 1.5", &["invalid cor: 1.5"]),
+        ("fit --cor NaN", &["invalid cor: NaN"]),
+        ("fit", &["--cor"]),
+    ]);
 }
 
 #[test]
 fn bad_numbers_name_the_field() {
-    bad(
-        &["run", "--zeta", "NaN"],
-        &["invalid zeta: NaN (not a number)"],
-    );
-    bad(
-        &["run", "--normalized", "--zeta", "nan"],
-        &["invalid zeta: NaN"],
-    );
-    bad(&["run", "--lambda", "inf"], &["invalid lambda: inf"]);
-    bad(
-        &["run", "--lambda", "-1"],
-        &["invalid lambda: -1", "negative"],
-    );
-    bad(&["run", "--v0", "-3"], &["invalid v0: -3", "negative"]);
-    bad(&["run", "--v0", "0"], &["invalid v0: 0", "positive"]);
-    bad(&["run", "--v0", "1e300"], &["invalid v0: 1e300"]);
-    bad(&["run", "--v0", "abc"], &["--v0", "abc"]);
-    bad(&["run", "--zeta", "1e-300"], &["invalid zeta: 1e-300"]);
-    bad(
-        &["run", "--zeta", "1e8"],
-        &["invalid zeta: 1e8", "above 1e6"],
-    );
-    bad(
-        &["run", "--lambda", "1e14"],
-        &["invalid lambda: 1e14", "above 1e6"],
-    );
-    bad(
-        &["run", "--zeta", "1e-14"],
-        &["invalid zeta: 1e-14", "c = "],
-    );
-    bad(
-        &["run", "--normalized", "--zp-bar", "0"],
-        &["invalid zp_bar: 0"],
-    );
-    bad(
-        &["run", "--history", "--samples", "1"],
-        &["invalid samples: 1"],
-    );
-    // `--history --samples 0` wrote no history and exit 0 from `oblique`, where 1 was refused
-    bad(
-        &["run", "--history", "--samples", "0"],
-        &["invalid samples: 0", "2 … 100000"],
-    );
+    bad_each(&[
+        ("run --zeta NaN", &["invalid zeta: NaN (not a number)"]),
+        ("run --normalized --zeta nan", &["invalid zeta: NaN"]),
+        ("run --lambda inf", &["invalid lambda: inf"]),
+        ("run --lambda -1", &["invalid lambda: -1", "negative"]),
+        ("run --v0 -3", &["invalid v0: -3", "negative"]),
+        ("run --v0 0", &["invalid v0: 0", "positive"]),
+        ("run --v0 1e300", &["invalid v0: 1e300"]),
+        ("run --v0 abc", &["--v0", "abc"]),
+        ("run --zeta 1e-300", &["invalid zeta: 1e-300"]),
+        ("run --zeta 1e8", &["invalid zeta: 1e8", "above 1e6"]),
+        ("run --lambda 1e14", &["invalid lambda: 1e14", "above 1e6"]),
+        ("run --zeta 1e-14", &["invalid zeta: 1e-14", "c = "]),
+        ("run --normalized --zp-bar 0", &["invalid zp_bar: 0"]),
+        ("run --history --samples 1", &["invalid samples: 1"]),
+        // `--history --samples 0` wrote no history and exit 0 from `oblique`, where 1 was refused
+        (
+            "run --history --samples 0",
+            &["invalid samples: 0", "2 … 100000"],
+        ),
+    ]);
     let oblique = ["oblique", "--angle", "30", "--friction", "0.5", "--history"];
     for n in ["0", "1", "100001"] {
         let args: Vec<&str> = oblique.iter().copied().chain(["--samples", n]).collect();
         bad(&args, &[&format!("invalid samples: {n}"), "2 … 100000"]);
     }
-    bad(
-        &["fit", "--cor", "0.5", "--v0", "inf"],
-        &["invalid v0: inf"],
-    );
-    bad(&["sweep", "zeta", "--points", "0"], &["invalid points: 0"]);
-    bad(
-        &["sweep", "zeta", "--points", "100001"],
-        &["invalid points: 100001", "100000"],
-    );
-    bad(&["sweep", "zeta", "--points", "-5"], &["--points", "-5"]);
-    bad(&["sweep", "zeta", "--from", "0"], &["invalid from: 0"]);
-    bad(&["sweep", "zeta", "--to", "inf"], &["invalid to: inf"]);
-    bad(
-        &["sweep", "zeta", "--lambda", "0.4,NaN"],
-        &["invalid lambda: NaN"],
-    );
-    bad(
-        &["sweep", "velocity", "--from", "-1"],
-        &["invalid from: -1"],
-    );
-    bad(
-        &["sweep", "velocity", "--points", "0"],
-        &["invalid points: 0"],
-    );
+    bad_each(&[
+        ("fit --cor 0.5 --v0 inf", &["invalid v0: inf"]),
+        ("sweep zeta --points 0", &["invalid points: 0"]),
+        (
+            "sweep zeta --points 100001",
+            &["invalid points: 100001", "100000"],
+        ),
+        ("sweep zeta --points -5", &["--points", "-5"]),
+        ("sweep zeta --from 0", &["invalid from: 0"]),
+        ("sweep zeta --to inf", &["invalid to: inf"]),
+        ("sweep zeta --lambda 0.4,NaN", &["invalid lambda: NaN"]),
+        ("sweep velocity --from -1", &["invalid from: -1"]),
+        ("sweep velocity --points 0", &["invalid points: 0"]),
+    ]);
 }
 
 #[test]
 fn bad_presets_and_files() {
-    bad(
-        &["run", "--preset", "nope"],
-        &["unknown preset 'nope'", "superball, golf, baseball"],
-    );
-    bad(
-        &["sweep", "velocity", "--preset", "nope"],
-        &["unknown preset"],
-    );
+    bad_each(&[
+        (
+            "run --preset nope",
+            &["unknown preset 'nope'", "superball, golf, baseball"],
+        ),
+        ("sweep velocity --preset nope", &["unknown preset"]),
+    ]);
     let (_d, p) = file_with(b"name = \"x\"\n[measured\nmass = 1\n");
     bad(&["run", "--config", &p], &[&format!("{p}:2:10:")]);
     let neg = SUPERBALL.replace("mass = 0.0374 ", "mass = -1 ");
@@ -127,14 +96,16 @@ fn bad_presets_and_files() {
 
 #[test]
 fn usage_errors_exit_2_on_one_line() {
-    bad(&["run", "--format", "xml"], &["xml", "text, json, csv"]);
-    bad(&["run", "--bogus"], &["--bogus"]);
-    bad(
-        &["run", "--normalized", "--preset", "golf"],
-        &["--normalized", "--preset"],
-    );
-    bad(&["frobnicate"], &["frobnicate"]);
-    bad(&["--preset", "golf", "sweep", "zeta"], &["sweep zeta"]);
+    bad_each(&[
+        ("run --format xml", &["xml", "text, json, csv"]),
+        ("run --bogus", &["--bogus"]),
+        (
+            "run --normalized --preset golf",
+            &["--normalized", "--preset"],
+        ),
+        ("frobnicate", &["frobnicate"]),
+        ("--preset golf sweep zeta", &["sweep zeta"]),
+    ]);
 }
 
 #[test]

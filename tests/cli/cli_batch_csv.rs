@@ -24,6 +24,14 @@ fn json(dir: &Path, file: &str) -> String {
     )
 }
 
+/// `batch NAME` over `text` written in `dir`, refused (exit 2): what it said on stderr.
+fn refused(dir: &Path, name: &str, text: &str) -> String {
+    write(dir, name, text.as_bytes());
+    let o = bl_at(dir, &["batch", name, "--preset", "tennis"]);
+    assert_eq!(o.code, 2, "{name}: {}", o.stderr);
+    o.stderr
+}
+
 /// The plain file written as a spreadsheet writes it: a UTF-8 BOM, every cell quoted, CRLF.
 fn spreadsheet(plain: &str, nl: &str) -> Vec<u8> {
     let mut out = "\u{feff}".to_string();
@@ -65,24 +73,16 @@ fn errors_name_the_batchs_line_and_column() {
     let dir = tempfile::tempdir().unwrap();
     let text = "\u{feff}\"id\",\"drop_height_m\",\"rebound_height_m\"\r\n\"T01\",2.54,1.41\r\n\
                 \"T02\",2.54,\"x\"\r\n";
-    write(dir.path(), "bad.csv", text.as_bytes());
-    let o = bl_at(dir.path(), &["batch", "bad.csv", "--preset", "tennis"]);
-    assert_eq!(o.code, 2, "{}", o.stderr);
+    let said = refused(dir.path(), "bad.csv", text);
     assert!(
-        o.stderr
-            .starts_with("bouncelab: error: bad.csv:3:12: rebound height 'x'"),
-        "{}",
-        o.stderr
+        said.starts_with("bouncelab: error: bad.csv:3:12: rebound height 'x'"),
+        "{said}"
     );
     // an id coming back, named at its cell
     let text = "id;v0;cor\nA;1;0,5\nB;1;0,6\n\"A\";2;0,4\n";
-    write(dir.path(), "back.csv", text.as_bytes());
-    let o = bl_at(dir.path(), &["batch", "back.csv", "--preset", "tennis"]);
-    assert_eq!(o.code, 2, "{}", o.stderr);
+    let said = refused(dir.path(), "back.csv", text);
     assert!(
-        o.stderr
-            .contains("back.csv:4:1: id 'A' again: its rows began at line 2"),
-        "{}",
-        o.stderr
+        said.contains("back.csv:4:1: id 'A' again: its rows began at line 2"),
+        "{said}"
     );
 }

@@ -173,29 +173,28 @@ fn the_reading_carries_its_uncertainty() {
 #[test]
 fn drops_from_another_height_are_judged_on_the_model() {
     let dir = tempfile::tempdir().unwrap();
-    write(
+    let b = one_ball(
         dir.path(),
-        "low.csv",
         "id,drop_height_m,rebound_height_m\nL1,1.00,0.58\nL1,2.54,1.41\n",
     );
-    let r = report(dir.path(), "low.csv", &[]);
-    let b = &r["balls"][0];
     // one of the two drops is at the ITF's height: that one is the reading
-    assert_eq!(
-        (b["verdict_from"].as_str(), b["readings"].as_u64()),
-        (Some("measurement"), Some(1))
-    );
-    assert_eq!(f(b, "measured"), 1.41);
-    write(
+    assert_eq!(judged_from(&b), (Some("measurement"), Some(1)));
+    assert_eq!(f(&b, "measured"), 1.41);
+    let b = one_ball(
         dir.path(),
-        "low.csv",
         "id,drop_height_m,rebound_height_m\nL1,1.00,0.58\n",
     );
-    let r = report(dir.path(), "low.csv", &[]);
-    let b = &r["balls"][0];
-    assert_eq!(
-        (b["verdict_from"].as_str(), b["readings"].as_u64()),
-        (Some("model"), Some(0))
-    );
-    assert_eq!(f(b, "measured"), f(b, "model_measured"));
+    assert_eq!(judged_from(&b), (Some("model"), Some(0)));
+    assert_eq!(f(&b, "measured"), f(&b, "model_measured"));
+}
+
+/// The one ball of the batch `text`, judged by the ITF test (low.csv in `dir`).
+fn one_ball(dir: &Path, text: &str) -> Value {
+    write(dir, "low.csv", text);
+    report(dir, "low.csv", &[])["balls"][0].clone()
+}
+
+/// A ball's `verdict_from` and `readings`.
+fn judged_from(b: &Value) -> (Option<&str>, Option<u64>) {
+    (b["verdict_from"].as_str(), b["readings"].as_u64())
 }

@@ -200,37 +200,36 @@ fn standards_lists_every_standard() {
 
 #[test]
 fn bad_input_is_one_line_and_exit_2() {
-    bad(&["drop", "--height", "-1"], &["invalid height: -1"]);
-    bad(&["drop", "--height", "0"], &["invalid height: 0"]);
-    bad(&["drop", "--height", "nan"], &["invalid height: NaN"]);
-    bad(&["drop", "--height", "1e9"], &["invalid height: 1e9"]);
-    bad(&["drop", "--height", "abc"], &["--height", "abc"]);
-    bad(&["drop", "--bounces", "0"], &["invalid bounces: 0"]);
-    bad(&["drop", "--bounces", "5000"], &["invalid bounces: 5000"]);
-    bad(&["drop", "--bounces", "-2"], &["--bounces"]);
-    bad(
-        &["drop", "--drag-coefficient", "-1"],
-        &["invalid drag_coefficient: -1"],
-    );
-    bad(
-        &["drop", "--air-density", "inf"],
-        &["invalid air_density: inf"],
-    );
-    bad(&["drop", "--min-rebound", "0"], &["invalid min_rebound: 0"]);
-    bad(
-        &["drop", "--no-drag", "--drag-coefficient", "0.5"],
-        &["--drag-coefficient"],
-    );
-    bad(
-        &["drop", "--standard", "wimbledon"],
-        &["unknown standard 'wimbledon'", "itf, fifa-quality"],
-    );
-    bad(
-        &["drop", "--preset", "cricket"],
-        &["unknown preset 'cricket'", "tennis"],
-    );
-    bad(&["drop", "--format", "xml"], &["--format"]);
-    bad(&["--preset", "tennis", "standards"], &["--preset"]);
+    bad_each(&[
+        ("drop --height -1", &["invalid height: -1"]),
+        ("drop --height 0", &["invalid height: 0"]),
+        ("drop --height nan", &["invalid height: NaN"]),
+        ("drop --height 1e9", &["invalid height: 1e9"]),
+        ("drop --height abc", &["--height", "abc"]),
+        ("drop --bounces 0", &["invalid bounces: 0"]),
+        ("drop --bounces 5000", &["invalid bounces: 5000"]),
+        ("drop --bounces -2", &["--bounces"]),
+        (
+            "drop --drag-coefficient -1",
+            &["invalid drag_coefficient: -1"],
+        ),
+        ("drop --air-density inf", &["invalid air_density: inf"]),
+        ("drop --min-rebound 0", &["invalid min_rebound: 0"]),
+        (
+            "drop --no-drag --drag-coefficient 0.5",
+            &["--drag-coefficient"],
+        ),
+        (
+            "drop --standard wimbledon",
+            &["unknown standard 'wimbledon'", "itf, fifa-quality"],
+        ),
+        (
+            "drop --preset cricket",
+            &["unknown preset 'cricket'", "tennis"],
+        ),
+        ("drop --format xml", &["--format"]),
+        ("--preset tennis standards", &["--preset"]),
+    ]);
 }
 
 /// Every new ball validates and runs through `run` (both parameter sets), `sweep velocity`

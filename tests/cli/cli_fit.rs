@@ -237,23 +237,19 @@ fn plot_holds_data_model_and_residuals() {
 fn single_cor_keeps_its_output_and_free_is_checked() {
     let old = ok(&["fit", "--cor", "0.7"]);
     assert_eq!(ok(&["fit", "--cor", "0.7", "--free", "k_r"]), old);
-    bad(
-        &["fit", "--cor", "0.7", "--free", "k_r,mass"],
-        &["invalid free parameter 'mass'"],
-    );
-    bad(
-        &["fit", "--cor", "0.7", "--free", "k_p,k_h"],
-        &["k_h and k_p are tied"],
-    );
-    bad(
-        &["fit", "--cor", "0.7", "--free", "k_r,c"],
-        &["1 data points, fewer than the 2 parameters"],
-    );
-    bad(
-        &["fit", "--cor", "0.7", "--cor-table", "x.csv"],
-        &["one kind of data"],
-    );
-    bad(&["fit", "--drop-height", "1"], &["--rebound-height"]);
+    bad_each(&[
+        (
+            "fit --cor 0.7 --free k_r,mass",
+            &["invalid free parameter 'mass'"],
+        ),
+        ("fit --cor 0.7 --free k_p,k_h", &["k_h and k_p are tied"]),
+        (
+            "fit --cor 0.7 --free k_r,c",
+            &["1 data points, fewer than the 2 parameters"],
+        ),
+        ("fit --cor 0.7 --cor-table x.csv", &["one kind of data"]),
+        ("fit --drop-height 1", &["--rebound-height"]),
+    ]);
 }
 
 #[test]
@@ -269,15 +265,17 @@ fn overrides_on_run_sweep_and_figure() {
     assert!((f(&v, "k_h") - 6e4 / (1.5 * 0.005f64.sqrt())).abs() < 1e-6);
     let v = json(&["run", "--k-p", "6e4", "--lambda", "2", "--format", "json"]);
     assert_eq!(f(&v, "k_r"), 1.2e5);
-    bad(
-        &["run", "--k-r", "5e4", "--lambda", "1"],
-        &["--k-r and --lambda both set K_r"],
-    );
-    bad(&["run", "--k-p", "-1"], &["invalid k_p: -1"]);
-    bad(
-        &["run", "--normalized", "--damping", "3"],
-        &["--normalized", "do not apply"],
-    );
+    bad_each(&[
+        (
+            "run --k-r 5e4 --lambda 1",
+            &["--k-r and --lambda both set K_r"],
+        ),
+        ("run --k-p -1", &["invalid k_p: -1"]),
+        (
+            "run --normalized --damping 3",
+            &["--normalized", "do not apply"],
+        ),
+    ]);
     let csv = ok(&argv("sweep velocity --k-r 5e4 --zeta 0.3 --points 2"));
     assert_eq!(csv.lines().count(), 3, "{csv}");
     let dir = tempfile::tempdir().unwrap();

@@ -157,32 +157,28 @@ fn numbers_are_read_as_typed() {
     assert!(csv.lines().skip(1).all(|l| l.starts_with("0,")), "{csv}");
     // a literal that rounds to zero is refused, and one that rounds to a subnormal (issue 54
     // item 7: refused when read, naming the flag, as no range check catches it everywhere)
-    bad(
-        &["run", "--lambda", "1e-400"],
-        &["--lambda", "1e-400", "rounds to 0"],
-    );
-    bad(
-        &["run", "--lambda", "1e-320"],
-        &["--lambda", "1e-320", "too small"],
-    );
-    // −inf is a value, refused as not finite, not taken for an option
-    bad(&["run", "--lambda", "-inf"], &["invalid lambda: -inf"]);
-    bad(
-        &["figure", "cor-zeta", "--out", "x.svg", "--lambda", "-inf,1"],
-        &["invalid lambda: -inf"],
-    );
-    // the same for every number option (drop's, from another command family)
-    bad(&["drop", "--height", "-inf"], &["invalid height: -inf"]);
-    bad(
-        &["drop", "--air-density", "1e-400"],
-        &["--air-density", "rounds to 0"],
-    );
-    // a tiny COR is printed in its shortest form
-    bad(&["fit", "--cor", "1e-300"], &["cor 1e-300 is out of reach"]);
-    bad(
-        &["fit", "--cor", "1e-320"],
-        &["--cor", "1e-320", "too small"],
-    );
+    bad_each(&[
+        (
+            "run --lambda 1e-400",
+            &["--lambda", "1e-400", "rounds to 0"],
+        ),
+        ("run --lambda 1e-320", &["--lambda", "1e-320", "too small"]),
+        // −inf is a value, refused as not finite, not taken for an option
+        ("run --lambda -inf", &["invalid lambda: -inf"]),
+        (
+            "figure cor-zeta --out x.svg --lambda -inf,1",
+            &["invalid lambda: -inf"],
+        ),
+        // the same for every number option (drop's, from another command family)
+        ("drop --height -inf", &["invalid height: -inf"]),
+        (
+            "drop --air-density 1e-400",
+            &["--air-density", "rounds to 0"],
+        ),
+        // a tiny COR is printed in its shortest form
+        ("fit --cor 1e-300", &["cor 1e-300 is out of reach"]),
+        ("fit --cor 1e-320", &["--cor", "1e-320", "too small"]),
+    ]);
     let o = bl(&["fit", "--cor", "1e-320"]);
     assert!(o.stderr.len() < 160, "{}", o.stderr);
 }

@@ -101,14 +101,10 @@ fn a_ball_with_no_static_test_in_its_record_is_warned() {
 
 #[test]
 fn bad_input_is_one_line_and_exit_2() {
-    bad(
-        &["static", "--preset", "tennis", "--load", "-1"],
-        &["invalid load"],
-    );
-    bad(
-        &["static", "--preset", "tennis", "--load", "0"],
-        &["invalid load"],
-    );
+    bad_each(&[
+        ("static --preset tennis --load -1", &["invalid load"]),
+        ("static --preset tennis --load 0", &["invalid load"]),
+    ]);
     bad(
         &argv("static --preset tennis --load 1 --peak 0.07"),
         &["invalid peak", "diameter"],

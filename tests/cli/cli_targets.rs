@@ -3,7 +3,7 @@
 //! docs/targets.md §3, bad input is one line naming the field, exit 2.
 
 use crate::common;
-use common::{argv, argv_with, bad, f, json, ok, ok_calibrated};
+use common::{argv, argv_with, bad, bad_each, f, json, ok, ok_calibrated};
 
 /// M = ∞, v_t = 0, no K_s: `collide` is today's `run`, for every law.
 #[test]
@@ -190,8 +190,10 @@ fn bat_errors_name_its_flags() {
     fn b<'a>(more: &[&'a str]) -> Vec<&'a str> {
         [&["bat", "--bat-mass", "0.8"][..], more].concat()
     }
-    bad(&["bat", "--bat-mass", "0"], &["invalid bat_mass: 0"]);
-    bad(&["bat", "--bat-mass", "-1"], &["invalid bat_mass: -1"]);
+    bad_each(&[
+        ("bat --bat-mass 0", &["invalid bat_mass: 0"]),
+        ("bat --bat-mass -1", &["invalid bat_mass: -1"]),
+    ]);
     let never = "never meet: ball_speed + bat_speed must be positive";
     bad(
         &b(&["--bat-speed", "-50"]),

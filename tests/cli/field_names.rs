@@ -3,8 +3,8 @@
 
 use crate::common;
 use common::{
-    argv, argv_with, assert_bad, assert_name_refused_as_invisible, bad, baseball_with_fit, bl,
-    bl_at,
+    argv, argv_with, assert_bad, assert_name_refused_as_invisible, bad, bad_each,
+    baseball_with_fit, bl, bl_at,
 };
 
 #[test]
@@ -35,14 +35,16 @@ fn peers_friction_without_export_is_refused() {
 #[test]
 fn a_derived_group_out_of_range_names_the_option_given() {
     // `--damping 1e-5` said "invalid zeta: 1888081…"
-    bad(
-        &["run", "--preset", "tennis", "--damping", "1e-5"],
-        &["invalid damping: 1e-5", "gives zeta = "],
-    );
-    bad(
-        &["run", "--preset", "tennis", "--k-r", "1e12"],
-        &["invalid k_r: 1e12", "gives lambda = "],
-    );
+    bad_each(&[
+        (
+            "run --preset tennis --damping 1e-5",
+            &["invalid damping: 1e-5", "gives zeta = "],
+        ),
+        (
+            "run --preset tennis --k-r 1e12",
+            &["invalid k_r: 1e12", "gives lambda = "],
+        ),
+    ]);
     // `oblique --angle 1e-15` said "invalid v0: 1.2e-16"
     bad(
         &argv("oblique --preset tennis --angle 1e-15 --friction 0.5"),

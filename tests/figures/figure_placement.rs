@@ -18,11 +18,13 @@ const PLOT: Rect = Rect {
     y1: 2000,
 };
 
+/// A marker at `at` and its text's `size` (0 wide: no text).
+fn label(at: (i32, i32), size: (i32, i32)) -> Label {
+    Label { at, size }
+}
+
 fn labels() -> impl Strategy<Value = Vec<Label>> {
-    let one = (0..3000i32, 0..2000i32, 0..400i32).prop_map(|(x, y, w)| Label {
-        at: (x, y),
-        size: (w, 52),
-    });
+    let one = (0..3000i32, 0..2000i32, 0..400i32).prop_map(|(x, y, w)| label((x, y), (w, 52)));
     proptest::collection::vec(one, 1..12)
 }
 
@@ -59,24 +61,15 @@ proptest! {
 
 #[test]
 fn a_text_with_room_keeps_its_usual_place() {
-    let l = Label {
-        at: (1000, 1000),
-        size: (200, 52),
-    };
+    let l = label((1000, 1000), (200, 52));
     assert_eq!(place(&[l], &[(1000, 1000)], PLOT, S), [(1036, 932)]);
 }
 
 #[test]
 fn a_text_moves_off_a_marker_and_off_the_text_before_it() {
     // the second marker sits where the first one's text would go
-    let a = Label {
-        at: (1000, 1000),
-        size: (200, 52),
-    };
-    let b = Label {
-        at: (1100, 960),
-        size: (200, 52),
-    };
+    let a = label((1000, 1000), (200, 52));
+    let b = label((1100, 960), (200, 52));
     let at = place(&[a, b], &[a.at, b.at], PLOT, S);
     assert_eq!(at[0], (1036, 1016), "below: up-right holds b's marker");
     let boxes: Vec<Rect> = at.iter().map(|&c| Rect::at(c, a.size)).collect();
@@ -102,14 +95,8 @@ fn a_text_moved_away_gets_a_line_to_its_nearest_point() {
 #[test]
 fn a_marker_without_a_text_keeps_the_usual_place_and_takes_no_room() {
     // at the top edge, where a text would move; the next marker's text is not pushed off
-    let none = Label {
-        at: (1000, 10),
-        size: (0, 52),
-    };
-    let text = Label {
-        at: (1000, 200),
-        size: (200, 52),
-    };
+    let none = label((1000, 10), (0, 52));
+    let text = label((1000, 200), (200, 52));
     let at = place(&[none, text], &[none.at, text.at], PLOT, S);
     assert_eq!(at, [(1036, -58), (1036, 132)]);
 }
@@ -117,10 +104,7 @@ fn a_marker_without_a_text_keeps_the_usual_place_and_takes_no_room() {
 #[test]
 fn a_text_stays_inside_the_plot() {
     // at the top right corner: up-right would leave the plot, down-left does not
-    let l = Label {
-        at: (2990, 10),
-        size: (200, 52),
-    };
+    let l = label((2990, 10), (200, 52));
     let at = place(&[l], &[l.at], PLOT, S);
     assert_eq!(at, [(2990 - 36 - 200, 10 + 68 - 52)]);
 }

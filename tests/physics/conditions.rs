@@ -4,7 +4,7 @@
 
 use crate::common;
 
-use common::{argv, argv_with, assert_bad, bl, f, ok_calibrated};
+use common::{argv, argv_with, assert_bad, bad_each, bl, f, ok_calibrated};
 use serde_json::Value;
 
 fn json_calibrated(args: &[&str]) -> Value {
@@ -139,43 +139,37 @@ fn a_solid_ball_states_no_pressure() {
 
 #[test]
 fn conditions_a_ball_cannot_take_are_refused_naming_the_field_and_the_ball() {
-    let cases: [(&[&str], &[&str]); 8] = [
+    bad_each(&[
         (
-            &["run", "--preset", "superball", "--pressure", "1bar"],
+            "run --preset superball --pressure 1bar",
             &["invalid pressure", "superball is not inflated"],
         ),
         (
-            &["drop", "--preset", "golf", "--after", "72h"],
+            "drop --preset golf --after 72h",
             &["invalid after", "golf is not inflated"],
         ),
         (
-            &["run", "--preset", "superball", "--temperature", "5"],
+            "run --preset superball --temperature 5",
             &["invalid temperature", "superball has no temperature model"],
         ),
         (
-            &["run", "--preset", "basketball", "--temperature", "5"],
+            "run --preset basketball --temperature 5",
             &["invalid inflated-at", "basketball"],
         ),
         (
-            &["drop", "--preset", "basketball", "--after", "3d"],
+            "drop --preset basketball --after 3d",
             &["invalid after", "no leak rate is known for basketball"],
         ),
         (
-            &["run", "--preset", "football", "--pressure", "0"],
+            "run --preset football --pressure 0",
             &["invalid pressure", "flat"],
         ),
         (
-            &["run", "--preset", "football", "--pressure", "0.8bars"],
+            "run --preset football --pressure 0.8bars",
             &["invalid pressure"],
         ),
-        (
-            &["run", "--preset", "football", "--after", "-1h"],
-            &["invalid after"],
-        ),
-    ];
-    for (args, needles) in cases {
-        assert_bad(&bl(args), needles);
-    }
+        ("run --preset football --after -1h", &["invalid after"]),
+    ]);
     assert_bad(
         &bl(&argv("run --preset football --pressure 1bar --k-p 5e4")),
         &["invalid pressure", "--k-p"],

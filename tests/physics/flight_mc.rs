@@ -7,6 +7,20 @@ fn serve() -> ShotSpec {
     ShotSpec::new(2.8, 50.0, -6.0, 200.0, 0.6)
 }
 
+/// Every warning of `shot`'s bounces, in order.
+fn warnings_of(shot: bouncelab::api::ShotReport) -> Vec<String> {
+    shot.bounces.into_iter().flat_map(|b| b.warnings).collect()
+}
+
+/// A narrow spread: 2 % on the speed, 30 rad/s on the spin.
+fn narrow() -> ShotSpread {
+    ShotSpread {
+        speed: 0.02,
+        spin: 30.0,
+        ..ShotSpread::default()
+    }
+}
+
 fn spec(spread: ShotSpread, samples: usize, seed: u64) -> ShotMcSpec {
     ShotMcSpec {
         shot: serve(),
@@ -33,11 +47,7 @@ fn without_spread_every_sample_is_the_nominal_shot() {
 #[test]
 fn a_seed_gives_one_answer_and_the_spread_brackets_the_nominal() {
     let ball = Ball::from_preset("tennis").unwrap();
-    let s = ShotSpread {
-        speed: 0.02,
-        spin: 30.0,
-        ..ShotSpread::default()
-    };
+    let s = narrow();
     let a = ball.shot_mc(&spec(s, 400, 7)).unwrap();
     let b = ball.shot_mc(&spec(s, 400, 7)).unwrap();
     let c = ball.shot_mc(&spec(s, 400, 8)).unwrap();
@@ -114,20 +124,10 @@ fn shot_unwarned_is_shot_without_its_warnings() {
 #[test]
 fn the_monte_carlo_warns_as_its_nominal_shot() {
     let ball = Ball::from_preset("tennis").unwrap();
-    let s = ShotSpread {
-        speed: 0.02,
-        spin: 30.0,
-        ..ShotSpread::default()
-    };
+    let s = narrow();
     let mc = spec(s, 64, 1);
     let r = ball.shot_mc(&mc).unwrap();
-    let nominal: Vec<String> = ball
-        .shot(&mc.shot)
-        .unwrap()
-        .bounces
-        .into_iter()
-        .flat_map(|b| b.warnings)
-        .collect();
+    let nominal = warnings_of(ball.shot(&mc.shot).unwrap());
     assert!(
         nominal[0].starts_with("outside calibration:"),
         "{nominal:?}"
@@ -139,12 +139,6 @@ fn the_monte_carlo_warns_as_its_nominal_shot() {
         shot: ShotSpec::new(1.0, 40.0, 10.0, -200.0, 0.5),
         ..mc
     };
-    let nominal: Vec<String> = baseball
-        .shot(&drive.shot)
-        .unwrap()
-        .bounces
-        .into_iter()
-        .flat_map(|b| b.warnings)
-        .collect();
+    let nominal = warnings_of(baseball.shot(&drive.shot).unwrap());
     assert_eq!(baseball.shot_mc(&drive).unwrap().warnings, nominal);
 }

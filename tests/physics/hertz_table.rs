@@ -98,6 +98,30 @@ fn every_kept_square_was_measured_within_the_tolerance() {
     assert!(area >= KEPT_AREA, "{area}");
 }
 
+/// The reference computed again at node `(i, j)`, the point `(l, z)`, equals the ln of each
+/// output `values` stores for it (output-major, `m` × `m` nodes each) to 1e-15, a failure
+/// naming `part`: how many of them are equal bit for bit.
+fn assert_node_is_the_reference(
+    (l, z): (f64, f64),
+    values: &[f64],
+    (i, j): (usize, usize),
+    part: &str,
+) -> usize {
+    let m = GRID.degree + 1;
+    let r = table::reference(l, z).unwrap();
+    let mut same_bits = 0;
+    for (k, rk) in r.iter().enumerate() {
+        let stored = values[k * m * m + i * m + j];
+        assert!(
+            (rk.ln() - stored).abs() <= 1e-15,
+            "{part} node ({i}, {j}) output {k}: {} against {stored}",
+            rk.ln()
+        );
+        same_bits += usize::from(rk.ln().to_bits() == stored.to_bits());
+    }
+    same_bits
+}
+
 /// 40 seeded nodes of kept parts (squares of split patches), computed again, equal the
 /// file's values to 1e-15, as `seeded_nodes_computed_again_equal_the_file` for whole patches.
 #[test]
@@ -116,15 +140,7 @@ fn seeded_nodes_of_the_parts_computed_again_equal_the_file() {
         let values = p.values.as_ref().unwrap();
         let (i, j) = ((u() * m as f64) as usize, (u() * m as f64) as usize);
         let (l, z) = GRID.cell_point(c, xs[i], xs[j]);
-        let r = table::reference(l, z).unwrap();
-        for (k, rk) in r.iter().enumerate() {
-            let stored = values[k * m * m + i * m + j];
-            assert!(
-                (rk.ln() - stored).abs() <= 1e-15,
-                "{c:?} node ({i}, {j}) output {k}: {} against {stored}",
-                rk.ln()
-            );
-        }
+        assert_node_is_the_reference((l, z), values, (i, j), &format!("{c:?}"));
     }
 }
 
@@ -276,16 +292,8 @@ fn seeded_nodes_computed_again_equal_the_file() {
         let (i, j) = ((u() * m as f64) as usize, (u() * m as f64) as usize);
         let (iu, iw) = (patch / GRID.nw, patch % GRID.nw);
         let (l, z) = GRID.point(iu, iw, xs[i], xs[j]);
-        let r = table::reference(l, z).unwrap();
-        for (k, rk) in r.iter().enumerate() {
-            let stored = values[k * m * m + i * m + j];
-            assert!(
-                (rk.ln() - stored).abs() <= 1e-15,
-                "patch {patch} node ({i}, {j}) output {k}: {} against {stored}",
-                rk.ln()
-            );
-            same_bits += usize::from(rk.ln().to_bits() == stored.to_bits());
-        }
+        let patch_name = format!("patch {patch}");
+        same_bits += assert_node_is_the_reference((l, z), values, (i, j), &patch_name);
     }
     eprintln!("{same_bits} of 200 values bit for bit");
 }

@@ -4,18 +4,57 @@
 use bouncelab::oblique::{self, Oblique, ObliqueError, ObliqueResponse, mindlin_ratio, reference};
 use bouncelab::{Ball, ImpactParams};
 
-const R: f64 = 0.0335;
+/// The tennis ball's radius (m), the oblique tests' R.
+pub const R: f64 = 0.0335;
 
-fn tennis() -> ImpactParams {
+pub fn tennis() -> ImpactParams {
     Ball::from_preset("tennis").unwrap().params
 }
 
-fn setup(angle: f64, spin: f64, mu: f64, kt: f64, kappa: f64) -> Oblique {
+pub fn setup(angle: f64, spin: f64, mu: f64, kt: f64, kappa: f64) -> Oblique {
     Oblique::new(angle, spin, mu, kt, kappa, R).unwrap()
+}
+
+/// The tangential answer `r` at 25 m/s against the independent integration's `(v_x, ω)`,
+/// both normalized by the incoming speed scale (v_x against v, Rω against v): within 1e-8,
+/// else a failure naming `case`. Returns the larger of the two, for the grid's worst.
+fn assert_agrees_with_the_integration(r: &ObliqueResponse, (vx, w): (f64, f64), case: &str) -> f64 {
+    let dv = (vx - r.vx_out).abs() / 25.0;
+    let dw = R * (w - r.spin_out).abs() / 25.0;
+    assert!(
+        dv < 1e-8 && dw < 1e-8,
+        "{case}: v_x {} vs {vx}, ω {} vs {w}",
+        r.vx_out,
+        r.spin_out
+    );
+    dv.max(dw)
 }
 
 fn rel(a: f64, b: f64) -> f64 {
     (a - b).abs() / b.abs().max(1e-300)
+}
+
+/// Each impact of `grid` (its name, and what `solve` takes) against the independent
+/// integration, `solve` giving both (the answer; the integration's v_x, ω and switches): each
+/// agrees ([`assert_agrees_with_the_integration`]), and the grid switches between stick and
+/// slip more than `switches` times.
+pub fn assert_the_grid_agrees<T>(
+    grid: Vec<(String, T)>,
+    solve: impl Fn(&T) -> (ObliqueResponse, (f64, f64, usize)),
+    switches: usize,
+) {
+    let (mut worst, mut switched) = (0.0f64, 0);
+    for (case, o) in &grid {
+        let (r, (vx, w, n)) = solve(o);
+        switched += n;
+        worst = worst.max(assert_agrees_with_the_integration(&r, (vx, w), case));
+    }
+    assert!(
+        switched > switches,
+        "the grid must switch between stick and slip: {switched}"
+    );
+    let n = grid.len();
+    eprintln!("worst disagreement {worst:e} over {n} impacts, {switched} switches");
 }
 
 #[test]
@@ -82,33 +121,20 @@ fn angle_90_is_run() {
 fn the_independent_integration_agrees_over_a_grid() {
     let p = tennis();
     let kt = mindlin_ratio(0.5) * p.k_p;
-    let mut worst: f64 = 0.0;
-    let mut switches = 0;
+    let mut grid = Vec::new();
     for angle in [5.0, 16.0, 30.0, 45.0, 60.0, 85.0] {
         for spin in [-500.0, -100.0, 0.0, 150.0, 500.0] {
             for mu in [0.05, 0.3, 0.6, 2.0] {
-                let o = setup(angle, spin, mu, kt, 0.55);
-                let r = oblique::solve(&p, 25.0, &o, 0).unwrap();
-                let (vx, w, n) = reference::solve(&p, 25.0, &o).unwrap();
-                switches += n;
-                // both normalized by the incoming speed scale: v_x against v, Rω against v
-                let dv = (vx - r.vx_out).abs() / 25.0;
-                let dw = R * (w - r.spin_out).abs() / 25.0;
-                assert!(
-                    dv < 1e-8 && dw < 1e-8,
-                    "{angle}°, {spin} rad/s, μ {mu}: v_x {} vs {vx}, ω {} vs {w}",
-                    r.vx_out,
-                    r.spin_out
-                );
-                worst = worst.max(dv).max(dw);
+                let case = format!("{angle}°, {spin} rad/s, μ {mu}");
+                grid.push((case, setup(angle, spin, mu, kt, 0.55)));
             }
         }
     }
-    assert!(
-        switches > 50,
-        "the grid must switch between stick and slip: {switches}"
-    );
-    eprintln!("worst disagreement {worst:e} over 120 impacts, {switches} switches");
+    let solve = |o: &Oblique| {
+        let r = oblique::solve(&p, 25.0, o, 0).unwrap();
+        (r, reference::solve(&p, 25.0, o).unwrap())
+    };
+    assert_the_grid_agrees(grid, solve, 50);
 }
 
 #[test]
@@ -204,17 +230,20 @@ fn ok() -> Oblique {
 /// The peak friction force (exact per phase, docs/oblique.md §3) is never exceeded by a
 /// dense history's largest, and comes within 1e-6 of it.
 pub fn assert_peak_friction_is_the_historys(r: &ObliqueResponse, angle: f64) {
+    assert_peak_friction_within(r, 1e-12, &format!("{angle}°"));
+}
+
+/// A dense history's largest friction force exceeds the peak `r` reports by at most `above`
+/// (relative) and comes within 1e-6 of it; a failure names `case`.
+pub fn assert_peak_friction_within(r: &ObliqueResponse, above: f64, case: &str) {
     let h = r.history.as_ref().unwrap();
     let sampled = h.friction_force.iter().fold(0.0f64, |m, f| m.max(f.abs()));
     let peak = r.max_friction_force;
     assert!(
-        sampled <= peak * (1.0 + 1e-12),
-        "{angle}°: {sampled} > {peak}"
+        sampled <= peak * (1.0 + above),
+        "{case}: {sampled} > {peak}"
     );
-    assert!(
-        sampled >= peak * (1.0 - 1e-6),
-        "{angle}°: {sampled} ≪ {peak}"
-    );
+    assert!(sampled >= peak * (1.0 - 1e-6), "{case}: {sampled} ≪ {peak}");
 }
 
 #[test]

@@ -3,16 +3,11 @@
 //! peak friction, no dashpot as before, and a gripping tennis bounce brought to the measured
 //! e_x.
 
-use crate::oblique::assert_peak_friction_is_the_historys;
+use crate::oblique::{R, assert_peak_friction_is_the_historys, assert_the_grid_agrees, tennis};
 use bouncelab::oblique::{self, Oblique, ObliqueError, mindlin_ratio, reference};
 use bouncelab::{Ball, ImpactParams};
 
-const R: f64 = 0.0335;
 const KAPPA: f64 = 0.6105;
-
-fn tennis() -> ImpactParams {
-    Ball::from_preset("tennis").unwrap().params
-}
 
 fn damped(angle: f64, spin: f64, mu: f64, kt: f64, ct: f64) -> Oblique {
     Oblique::new(angle, spin, mu, kt, KAPPA, R)
@@ -47,31 +42,22 @@ fn the_independent_integration_agrees_with_a_dashpot() {
     let p = tennis();
     let kt = mindlin_ratio(0.5) * p.k_p;
     let cc = critical(&p, kt);
-    let (mut worst, mut switches, mut n): (f64, usize, usize) = (0.0, 0, 0);
+    let mut grid = Vec::new();
     for ct in [0.05 * cc, 0.5 * cc, cc, 3.0 * cc] {
         for angle in [5.0, 16.0, 30.0, 60.0, 85.0] {
             for spin in [-500.0, 0.0, 150.0, 500.0] {
                 for mu in [0.05, 0.3, 0.6, 2.0] {
-                    let o = damped(angle, spin, mu, kt, ct);
-                    let r = oblique::solve(&p, 25.0, &o, 0).unwrap();
-                    let (vx, w, k) = reference::solve(&p, 25.0, &o).unwrap();
-                    switches += k;
-                    n += 1;
-                    let dv = (vx - r.vx_out).abs() / 25.0;
-                    let dw = R * (w - r.spin_out).abs() / 25.0;
-                    assert!(
-                        dv < 1e-8 && dw < 1e-8,
-                        "c_t {ct}, {angle}°, {spin} rad/s, μ {mu}: v_x {} vs {vx}, ω {} vs {w}",
-                        r.vx_out,
-                        r.spin_out
-                    );
-                    worst = worst.max(dv).max(dw);
+                    let case = format!("c_t {ct}, {angle}°, {spin} rad/s, μ {mu}");
+                    grid.push((case, damped(angle, spin, mu, kt, ct)));
                 }
             }
         }
     }
-    assert!(switches > 100, "the grid must switch: {switches}");
-    eprintln!("worst disagreement {worst:e} over {n} impacts, {switches} switches");
+    let solve = |o: &Oblique| {
+        let r = oblique::solve(&p, 25.0, o, 0).unwrap();
+        (r, reference::solve(&p, 25.0, o).unwrap())
+    };
+    assert_the_grid_agrees(grid, solve, 100);
 }
 
 #[test]

@@ -2,21 +2,12 @@
 //! `run`'s own solver (the adaptive one for Hertz and the elastic–plastic law, its steps kept
 //! and read between them), the tangential motion the same closed forms as the linear law's.
 
+use crate::oblique::{R, assert_peak_friction_within, assert_the_grid_agrees, setup, tennis};
 use bouncelab::model::contact::ContactLaw;
 use bouncelab::oblique::{self, Oblique, mindlin_ratio, reference};
 use bouncelab::solver::{SolveOptions, simulate};
-use bouncelab::{Ball, ImpactParams};
 
-const R: f64 = 0.0335;
 const LAWS: [ContactLaw; 2] = [ContactLaw::Hertz, ContactLaw::ElasticPlastic];
-
-fn tennis() -> ImpactParams {
-    Ball::from_preset("tennis").unwrap().params
-}
-
-fn setup(angle: f64, spin: f64, mu: f64, kt: f64, kappa: f64) -> Oblique {
-    Oblique::new(angle, spin, mu, kt, kappa, R).unwrap()
-}
 
 #[test]
 fn angle_90_is_run_on_every_law() {
@@ -79,31 +70,22 @@ fn a_stiff_spring_sliding_throughout_loses_mu_times_the_normal_impulse_on_every_
 fn the_independent_integration_agrees_on_hertz_and_elastic_plastic() {
     let p = tennis();
     let kt = mindlin_ratio(0.5) * p.k_p;
-    let mut worst: f64 = 0.0;
-    let mut switches = 0;
+    let mut grid = Vec::new();
     for law in LAWS {
         for angle in [5.0, 16.0, 45.0, 85.0] {
             for spin in [-500.0, 0.0, 500.0] {
                 for mu in [0.05, 0.6, 2.0] {
-                    let o = setup(angle, spin, mu, kt, 0.61);
-                    let r = oblique::solve_law(&p, law, 25.0, &o, 0).unwrap();
-                    let (vx, w, n) = reference::solve_law(&p, law, 25.0, &o).unwrap();
-                    switches += n;
-                    let dv = (vx - r.vx_out).abs() / 25.0;
-                    let dw = R * (w - r.spin_out).abs() / 25.0;
-                    assert!(
-                        dv < 1e-8 && dw < 1e-8,
-                        "{law} {angle}°, {spin} rad/s, μ {mu}: v_x {} vs {vx}, ω {} vs {w}",
-                        r.vx_out,
-                        r.spin_out
-                    );
-                    worst = worst.max(dv).max(dw);
+                    let case = format!("{law} {angle}°, {spin} rad/s, μ {mu}");
+                    grid.push((case, (law, setup(angle, spin, mu, kt, 0.61))));
                 }
             }
         }
     }
-    assert!(switches > 20, "the grid must switch: {switches}");
-    eprintln!("worst disagreement {worst:e} over 72 impacts, {switches} switches");
+    let solve = |(law, o): &(ContactLaw, Oblique)| {
+        let r = oblique::solve_law(&p, *law, 25.0, o, 0).unwrap();
+        (r, reference::solve_law(&p, *law, 25.0, o).unwrap())
+    };
+    assert_the_grid_agrees(grid, solve, 20);
 }
 
 /// The oblique terms close to 1e-12 of the input beyond what the normal run's own audit
@@ -141,17 +123,7 @@ fn the_peak_friction_force_is_the_historys_largest_on_every_law() {
         for (angle, spin, mu) in [(16.0, 300.0, 0.6), (45.0, -200.0, 2.0)] {
             let o = setup(angle, spin, mu, kt, 0.55);
             let r = oblique::solve_law(&p, law, 25.0, &o, 20_001).unwrap();
-            let h = r.history.as_ref().unwrap();
-            let sampled = h.friction_force.iter().fold(0.0f64, |m, f| m.max(f.abs()));
-            let peak = r.max_friction_force;
-            assert!(
-                sampled <= peak * (1.0 + 1e-9),
-                "{law} {angle}°: {sampled} > {peak}"
-            );
-            assert!(
-                sampled >= peak * (1.0 - 1e-6),
-                "{law} {angle}°: {sampled} ≪ {peak}"
-            );
+            assert_peak_friction_within(&r, 1e-9, &format!("{law} {angle}°"));
         }
     }
 }

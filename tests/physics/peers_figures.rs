@@ -12,17 +12,22 @@ fn series<'a>(csv: &'a str, id: &str) -> Vec<Vec<&'a str>> {
         .collect()
 }
 
+/// `bouncelab FIGURE --out F.svg --csv-out F.csv` in a folder of its own: the SVG and the CSV
+/// it wrote.
+fn svg_and_csv(figure: &str) -> (String, String) {
+    let dir = tempfile::tempdir().unwrap();
+    let (svg, csv) = (dir.path().join("f.svg"), dir.path().join("f.csv"));
+    let (s, c) = (svg.to_str().unwrap(), csv.to_str().unwrap());
+    let line = format!("{figure} --out {{}} --csv-out {{}}");
+    ok(&argv_with(&line, &[s, c]));
+    let read = |p| std::fs::read_to_string(p).unwrap();
+    (read(svg), read(csv))
+}
+
 #[test]
 fn peers_cor_velocity_flat_peers_falling_fixed_alpha() {
-    let dir = tempfile::tempdir().unwrap();
-    let (svg, csv) = (dir.path().join("a.svg"), dir.path().join("a.csv"));
-    let (s, c) = (svg.to_str().unwrap(), csv.to_str().unwrap());
-    ok(&argv_with(
-        "figure peers-cor-velocity --preset superball --out {} --csv-out {}",
-        &[s, c],
-    ));
-    roxmltree::Document::parse(&std::fs::read_to_string(&svg).unwrap()).unwrap();
-    let text = std::fs::read_to_string(&csv).unwrap();
+    let (svg, text) = svg_and_csv("figure peers-cor-velocity --preset superball");
+    roxmltree::Document::parse(&svg).unwrap();
     assert_eq!(text.lines().next().unwrap(), "series,kind,v0,cor");
     for id in [
         "kelvin-voigt",
@@ -47,14 +52,7 @@ fn peers_cor_velocity_flat_peers_falling_fixed_alpha() {
 
 #[test]
 fn peers_force_time_starts_and_ends_at_rest() {
-    let dir = tempfile::tempdir().unwrap();
-    let (svg, csv) = (dir.path().join("b.svg"), dir.path().join("b.csv"));
-    let (s, c) = (svg.to_str().unwrap(), csv.to_str().unwrap());
-    ok(&argv_with(
-        "figure peers-force-time --preset golf --points 50 --out {} --csv-out {}",
-        &[s, c],
-    ));
-    let text = std::fs::read_to_string(&csv).unwrap();
+    let (_, text) = svg_and_csv("figure peers-force-time --preset golf --points 50");
     for id in ["tsuji", "hunt-crossley", "kelvin-voigt-no-tension"] {
         let rows = series(&text, id);
         assert_eq!(rows.len(), 50, "{id}");
@@ -68,9 +66,11 @@ fn peers_force_time_starts_and_ends_at_rest() {
         let last: f64 = rows[49][3].parse().unwrap();
         assert!(last.abs() < 1e-9, "{id} ends at F = 0: {last}");
     }
+    let dir = tempfile::tempdir().unwrap();
+    let svg = dir.path().join("b.svg");
     let o = bl(&argv_with(
         "figure peers-force-time --preset golf --from 1 --out {}",
-        &[s],
+        &[svg.to_str().unwrap()],
     ));
     assert_eq!(o.code, 2, "{}", o.stderr);
 }

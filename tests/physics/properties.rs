@@ -67,20 +67,22 @@ fn rejected_well(e: &SolveError) -> Result<(), TestCaseError> {
     }
 }
 
+/// `params` under `law` answer keeping every invariant (`audit`, a failure naming `case`), or
+/// are refused well ([`rejected_well`]).
+fn answers_well(params: &ImpactParams, law: ContactLaw, case: &str) -> Result<(), TestCaseError> {
+    match simulate(params, law, &opts()) {
+        Ok(r) => audit(&r).map_err(|why| TestCaseError::fail(format!("{why}: {case}"))),
+        Err(e) => rejected_well(&e),
+    }
+}
+
 proptest! {
     #![proptest_config(config())]
 
     /// A ball of random mass, contact stiffness, flattening and speed, at random λ, ζ.
     #[test]
     fn every_run_keeps_the_invariants(params in ball(), law in law()) {
-        match simulate(&params, law, &opts()) {
-            Ok(r) => {
-                if let Err(why) = audit(&r) {
-                    return Err(TestCaseError::fail(format!("{why}: {params:?} {law:?}")));
-                }
-            }
-            Err(e) => rejected_well(&e)?,
-        }
+        answers_well(&params, law, &format!("{params:?} {law:?}"))?;
     }
 
     /// The two independent solvers on the linear law, over the whole domain: the same outcome,
@@ -159,14 +161,7 @@ proptest! {
             // outside it (both are accepted up to 1e6), where the energy balance degrades
             let n = params.normalized();
             prop_assume!(n.lambda <= 1e4 && (1e-4..=1e4).contains(&n.zeta));
-            match simulate(&params, law, &opts()) {
-                Ok(r) => {
-                    if let Err(why) = audit(&r) {
-                        return Err(TestCaseError::fail(format!("{why}: {source:?} {text}")));
-                    }
-                }
-                Err(e) => rejected_well(&e)?,
-            }
+            answers_well(&params, law, &format!("{source:?} {text}"))?;
         }
     }
 }

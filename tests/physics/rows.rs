@@ -9,7 +9,7 @@ use crate::spread;
 
 use bouncelab::api::{ImpactRow, impact_row, impact_rows};
 use bouncelab::solver::table;
-use bouncelab::{ContactLaw, ImpactParams, SolveOptions, simulate};
+use bouncelab::{ContactLaw, ImpactParams, ImpactResponse, SolveOptions, simulate};
 
 /// The balls every row test runs: 400 of tests/support/spread's.
 fn balls() -> Vec<ImpactParams> {
@@ -70,6 +70,22 @@ fn a_row_is_the_solvers_answer() {
 }
 
 /// The largest relative difference of the four quantities.
+/// A row's e, F_m, t_f and z_m, in the order [`apart`] and [`run_fields`] take them.
+pub fn row_fields(row: &ImpactRow) -> [f64; 4] {
+    [
+        row.cor,
+        row.max_force,
+        row.contact_time,
+        row.max_indentation,
+    ]
+}
+
+/// `run`'s e, F_m, t_f (NaN where it has none) and z_m.
+pub fn run_fields(r: &ImpactResponse) -> [f64; 4] {
+    let t = r.contact_time.unwrap_or(f64::NAN);
+    [r.cor, r.max_force, t, r.max_indentation]
+}
+
 fn apart(a: [f64; 4], b: [f64; 4]) -> f64 {
     (0..4).fold(0.0, |w: f64, k| {
         let d = (a[k] - b[k]).abs() / b[k].abs();
@@ -100,12 +116,7 @@ fn a_hertz_row_is_the_tables_answer() {
         assert_eq!(row.max_force, s.max_force * p.mass * p.v0 * w0, "{p:?}");
         assert_eq!(row.contact_time, s.contact_time / w0, "{p:?}");
         assert_eq!(row.max_indentation, s.max_indentation * p.v0 / w0, "{p:?}");
-        let got = [
-            row.cor,
-            row.max_force,
-            row.contact_time,
-            row.max_indentation,
-        ];
+        let got = row_fields(&row);
         // the reference in the Hertz scale L = κ^{−2/5}: F̄ = F̂/L, τ = L t̂, z̄ = L ẑ
         let l = n.kappa.powf(-0.4);
         let r = table::reference(n.lambda * l * l, n.zeta / l).unwrap();
@@ -121,8 +132,7 @@ fn a_hertz_row_is_the_tables_answer() {
                 ..SolveOptions::default()
             };
             let r = simulate(&p, ContactLaw::Hertz, &options).unwrap();
-            let t = r.contact_time.unwrap_or(f64::NAN);
-            let d = apart(got, [r.cor, r.max_force, t, r.max_indentation]);
+            let d = apart(got, run_fields(&r));
             (d, r.stiff)
         };
         let (mut d, is_stiff) = solve(1e-10);
@@ -169,14 +179,7 @@ fn an_elastic_plastic_row_is_the_fast_paths_answer() {
             ..SolveOptions::default()
         };
         let r = simulate(&p, law, &options).unwrap();
-        let t = r.contact_time.unwrap_or(f64::NAN);
-        let got = [
-            row.cor,
-            row.max_force,
-            row.contact_time,
-            row.max_indentation,
-        ];
-        let d = apart(got, [r.cor, r.max_force, t, r.max_indentation])
+        let d = apart(row_fields(&row), run_fields(&r))
             .max((row.permanent_indentation - r.permanent_indentation).abs() / r.max_indentation);
         let tol = if r.stiff { 1e-6 } else { 1e-9 };
         assert!(d <= tol, "{p:?}: {d:e} ({row:?} against {r:?})");

@@ -76,6 +76,18 @@ fn a_ball_made_to_fail_fails_with_a_negative_margin() {
     );
 }
 
+/// `ball` dropped from `height` (m), to its first rebound.
+fn one_bounce(ball: &DropBall, height: f64) -> bouncelab::drop::DropRun {
+    drop(
+        ball,
+        &DropSetup {
+            bounces: 1,
+            ..DropSetup::new(height)
+        },
+    )
+    .unwrap()
+}
+
 /// FIBA drops from 1.80 m to the bottom of the ball and reads the rebound at its top: the
 /// measured value is the bottom's apex plus the diameter. ITF reads both at the bottom.
 #[test]
@@ -83,14 +95,7 @@ fn conventions_are_applied() {
     let fiba = standards::find("fiba").unwrap();
     let b = ball("basketball");
     assert_eq!(fiba.release_height(b.radius), Some(1.80));
-    let run = drop(
-        &b,
-        &DropSetup {
-            bounces: 1,
-            ..DropSetup::new(1.80)
-        },
-    )
-    .unwrap();
+    let run = one_bounce(&b, 1.80);
     let v = fiba.judge(&b, Some(Air::default())).unwrap();
     assert_eq!(v.measured, run.bounces[0].rebound_height + 2.0 * b.radius);
     assert_eq!(Reference::Top.offset(0.1), 0.2);
@@ -98,14 +103,7 @@ fn conventions_are_applied() {
 
     let itf = standards::find("itf").unwrap();
     let t = ball("tennis");
-    let run = drop(
-        &t,
-        &DropSetup {
-            bounces: 1,
-            ..DropSetup::new(2.54)
-        },
-    )
-    .unwrap();
+    let run = one_bounce(&t, 2.54);
     assert_eq!(
         itf.judge(&t, Some(Air::default())).unwrap().measured,
         run.bounces[0].rebound_height

@@ -6,14 +6,12 @@
 
 use crate::pty;
 
-use pty::{Explorer, modes};
+use pty::Explorer;
 
 #[test]
 fn the_last_y_line_is_printed_on_the_main_screen_at_exit() {
     let home = tempfile::tempdir().unwrap();
-    let mut x = Explorer::spawn(home.path(), None, &["--preset", "golf", "--v0", "3"]);
-    let before = modes(&x.before);
-    x.wait_for_first_draw();
+    let (mut x, before) = Explorer::started(home.path(), None, &["--preset", "golf", "--v0", "3"]);
     x.send(b"y");
     x.wait_for("reopens");
     // q closes the box (Esc then q would read as Alt+q), a second q quits

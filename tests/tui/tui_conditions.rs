@@ -187,11 +187,8 @@ fn the_oblique_and_flight_lines_carry_the_conditions() {
         line.contains("--pressure 45000") && line.contains("--k-r"),
         "{line}"
     );
-    let mut args: Vec<String> = line.split_whitespace().skip(1).map(String::from).collect();
-    args.extend(["--format".into(), "json".into()]);
-    let args: Vec<&str> = args.iter().map(String::as_str).collect();
     // to 1e-12, as the oblique view's own line (tests/tui/tui_oblique.rs)
-    assert_oblique_answer_is(&app, &json(&args), &line);
+    assert_oblique_answer_is(&app, &line_json(&line), &line);
     // the flight view's `bouncelab shot` line too
     key(&mut app, KeyCode::Char('i'));
     key(&mut app, KeyCode::Char('h'));
@@ -202,10 +199,7 @@ fn the_oblique_and_flight_lines_carry_the_conditions() {
         line.starts_with("bouncelab shot") && line.contains("--pressure 45000"),
         "{line}"
     );
-    let mut args: Vec<String> = line.split_whitespace().skip(1).map(String::from).collect();
-    args.extend(["--format".into(), "json".into()]);
-    let args: Vec<&str> = args.iter().map(String::as_str).collect();
-    let j = json(&args);
+    let j = line_json(&line);
     let r = app.flight_view().report().expect("a shot");
     let b = &j["bounces"][0];
     for (k, v) in [("x", r.bounces[0].x), ("v_out", r.bounces[0].v_out)] {

@@ -118,6 +118,13 @@ fn reduced_motion_shows_the_whole_sequence_still() {
     assert!(text.contains("PASS"), "{text}");
 }
 
+/// The drop view of `app` in a `w` × `h` terminal: the screen's rows.
+fn drop_screen(mut app: App, w: u16, h: u16) -> Vec<String> {
+    app.update(Action::Resize(w, h));
+    press(&mut app, &[KeyCode::Char('d')]);
+    screen_text(&draw(&app, w, h))
+}
+
 /// Issue 29, item 9: at 60×20 and 80×24 the drop view showed no rebound and no verdict (its
 /// seven-row readout held the setting only); its ticks read "0 0.716 1.43"; under NO_COLOR
 /// the legend named two lines it drew alike. Now the verdict and the first rebound show at
@@ -125,10 +132,7 @@ fn reduced_motion_shows_the_whole_sequence_still() {
 #[test]
 fn the_drop_view_shows_its_verdict_and_rebounds_at_small_sizes() {
     for (w, h) in [(60, 20), (80, 24), (100, 30), (120, 40), (200, 60)] {
-        let mut app = App::new(embedded("tennis"), false);
-        app.update(Action::Resize(w, h));
-        press(&mut app, &[KeyCode::Char('d')]);
-        let s = screen_text(&draw(&app, w, h)).join("\n");
+        let s = drop_screen(App::new(embedded("tennis"), false), w, h).join("\n");
         assert!(s.contains("itf PASS"), "{w}×{h}: no verdict\n{s}");
         assert!(s.contains("1.410"), "{w}×{h}: no first rebound\n{s}");
         assert!(
@@ -148,10 +152,7 @@ fn the_drop_view_shows_its_verdict_and_rebounds_at_small_sizes() {
 #[test]
 fn the_verdict_keeps_its_margin_with_its_unit() {
     for (w, h) in [(60, 20), (80, 24), (100, 30), (120, 40), (200, 60)] {
-        let mut app = App::new(embedded("football"), false);
-        app.update(Action::Resize(w, h));
-        press(&mut app, &[KeyCode::Char('d')]);
-        let s = screen_text(&draw(&app, w, h)).join("\n");
+        let s = drop_screen(App::new(embedded("football"), false), w, h).join("\n");
         assert!(
             s.contains("fifa-quality-pro PASS"),
             "{w}×{h}: no verdict\n{s}"
@@ -166,10 +167,8 @@ fn the_verdict_keeps_its_margin_with_its_unit() {
 #[test]
 fn the_ball_at_rest_is_round_on_its_plate() {
     for (w, h) in [(60, 20), (80, 24), (100, 30), (120, 40), (200, 60)] {
-        let mut app = App::new(embedded("superball"), false).with_motion(false);
-        app.update(Action::Resize(w, h));
-        press(&mut app, &[KeyCode::Char('d')]);
-        let rows = screen_text(&draw(&app, w, h));
+        let app = App::new(embedded("superball"), false).with_motion(false);
+        let rows = drop_screen(app, w, h);
         let top = rows.iter().position(|r| r.contains("┌ ball ")).unwrap();
         let x = rows[top].chars().collect::<Vec<_>>();
         let left = (0..x.len())

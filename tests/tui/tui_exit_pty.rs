@@ -14,11 +14,22 @@ use std::path::Path;
 /// The explorer with no ball, its first frame drawn (up to the cursor hidden at its end), and
 /// the terminal's modes before it started.
 fn started(home: &Path) -> (Explorer, String) {
-    let mut x = Explorer::spawn(home, None, &[]);
-    let before = modes(&x.before);
-    x.wait_for_first_draw();
+    let (mut x, before) = Explorer::started(home, None, &[]);
     x.wait_for(HIDE_CURSOR);
     (x, before)
+}
+
+/// `trials` times: the explorer [`started`], `act` on it (ending in its quit), and it exits
+/// with 0, the terminal as it was; a failure names the trial.
+fn each_trial_quits_restored(trials: usize, act: impl Fn(&mut Explorer)) {
+    for trial in 0..trials {
+        let home = tempfile::tempdir().unwrap();
+        let (mut x, before) = started(home.path());
+        act(&mut x);
+        let (status, after, out) = x.finish();
+        assert_eq!(status.code(), Some(0), "trial {trial}: {status:?}");
+        assert_restored(&before, &after, &out);
+    }
 }
 
 /// The explorer, sent `sig` (number `n`) after its first frame, gives the terminal back as it
@@ -142,9 +153,7 @@ fn ctrl_z_and_sigtstp_suspend_with_the_terminal_restored_and_sigcont_redraws() {
 // issue 28 ("after a burst of 20 resizes the next key is lost"): it lost the `q` in one trial
 // of three under CI load; the cause and its test that fails every time are below
 fn a_key_after_a_burst_of_resizes_is_not_lost() {
-    for trial in 0..3 {
-        let home = tempfile::tempdir().unwrap();
-        let (mut x, before) = started(home.path());
+    each_trial_quits_restored(3, |x| {
         // the burst and the key come while the explorer reads nothing (stopped, as when it is
         // busy or its output is blocked): on waking it finds both the resizes and the key
         x.signal(Signal::STOP);
@@ -155,10 +164,7 @@ fn a_key_after_a_burst_of_resizes_is_not_lost() {
         }
         x.send(b"q");
         x.signal(Signal::CONT);
-        let (status, after, out) = x.finish();
-        assert_eq!(status.code(), Some(0), "trial {trial}: {status:?}");
-        assert_restored(&before, &after, &out);
-    }
+    });
 }
 
 #[test]
@@ -168,16 +174,11 @@ fn a_key_typed_while_the_explorer_draws_a_resize_is_not_lost() {
     // large screen keeps the explorer drawing, and meanwhile a second resize then a key
     // arrive, in that order. Before the fix 7 of 10 trials lost the `q` (the explorer sat
     // until the next key); a trial that loses it fails at `finish`'s timeout
-    for trial in 0..10 {
-        let home = tempfile::tempdir().unwrap();
-        let (mut x, before) = started(home.path());
+    each_trial_quits_restored(10, |x| {
         x.resize(400, 150);
         std::thread::sleep(std::time::Duration::from_millis(30));
         x.resize(401, 150);
         std::thread::sleep(std::time::Duration::from_millis(5));
         x.send(b"q");
-        let (status, after, out) = x.finish();
-        assert_eq!(status.code(), Some(0), "trial {trial}: {status:?}");
-        assert_restored(&before, &after, &out);
-    }
+    });
 }

@@ -6,7 +6,7 @@
 use crate::pty;
 use crate::tui_common;
 
-use pty::{Explorer, modes};
+use pty::Explorer;
 use std::time::Duration;
 
 #[test]
@@ -16,9 +16,7 @@ fn o_names_a_bad_file_then_f_fits_and_shift_f_applies() {
     std::fs::write(&bad, "t,F\n0,zero\n").unwrap();
     let good = home.path().join("plate.csv");
     std::fs::write(&good, tui_common::half_sine_csv(100, 0.06)).unwrap();
-    let mut x = Explorer::spawn(home.path(), None, &[]);
-    let before = modes(&x.before);
-    x.wait_for_first_draw();
+    let (mut x, before) = Explorer::started(home.path(), None, &[]);
     x.send(b"o");
     x.wait_for("file:");
     x.send(bad.to_str().unwrap().as_bytes());

@@ -3,18 +3,11 @@
 
 use crate::tui_common;
 
-use bouncelab::figure::{
-    Axis as FigAxis, Figure, Kind, Look, Marker as Shape, Series, Style as Stroke, Tone,
-};
+use bouncelab::figure::{Kind, Look, Marker as Shape, Series, Style as Stroke, Tone};
 use bouncelab::preset::Preset;
 use bouncelab::tui::action::Action;
 use bouncelab::tui::app::App;
-use bouncelab::tui::theme::Theme;
-use bouncelab::tui::widgets::plot::Plot;
-use ratatui::buffer::Buffer;
 use ratatui::crossterm::event::KeyCode;
-use ratatui::layout::Rect;
-use ratatui::widgets::Widget;
 
 use tui_common::*;
 
@@ -29,11 +22,8 @@ fn labelled(text: &str, at: (f64, f64), shape: Shape) -> Series {
 /// glyphs show.
 #[test]
 fn a_marker_glyph_keeps_off_another_markers_label() {
-    let mut fig = Figure::new(
-        "t".into(),
-        String::new(),
-        FigAxis::linear("x", "x", 1.0),
-        FigAxis::linear("y", "y", 1.0),
+    let fig = hand_figure(
+        "F vs z",
         vec![
             labelled("▲z_f 30.9 mm", (30.9, 0.0), Shape::Diamond),
             labelled("●spring left 1901 mJ", (39.0, 0.0), Shape::Circle),
@@ -43,14 +33,8 @@ fn a_marker_glyph_keeps_off_another_markers_label() {
                 .with_look(Look::new(Tone::Current, Some("model"), None)),
         ],
     );
-    fig.screen_title = "F vs z".into();
     for (w, h) in [(40, 20), (60, 20), (80, 24)] {
-        let area = Rect::new(0, 0, w, h);
-        let mut buf = Buffer::empty(area);
-        Plot::new(&fig, Theme::new(false)).render(area, &mut buf);
-        let s: String = (0..h)
-            .map(|y| (0..w).map(|x| buf[(x, y)].symbol()).collect::<String>() + "\n")
-            .collect();
+        let s = chart_text(&fig, w, h);
         assert!(s.contains("z_f 30.9 mm"), "{w}×{h}: the label cut\n{s}");
         assert!(s.contains("spring left 1901 mJ"), "{w}×{h}: no label\n{s}");
         assert!(

@@ -8,7 +8,6 @@ use crate::common::embedded;
 use crate::tui_common;
 use common::argv_with;
 
-use bouncelab::tui::action::Mode;
 use bouncelab::tui::app::{App, View};
 use bouncelab::tui::session::Session;
 use bouncelab::tui::views::oblique::param::ObliqueParam;
@@ -24,12 +23,6 @@ fn tennis() -> App {
 }
 
 /// Type `text` and Enter into the entry `=` opens.
-fn enter(app: &mut App, text: &str) {
-    press(app, &[KeyCode::Char('=')]);
-    type_keys(app, text);
-    press(app, &[KeyCode::Enter]);
-}
-
 fn values(app: &App) -> ObliqueValues {
     app.oblique_view().values()
 }
@@ -96,13 +89,11 @@ fn k_t_and_kappa_are_set_in_the_view_with_the_command_line_s_ranges() {
         ball.inertia_factor()
     );
     select(&mut app, ObliqueParam::TangentialStiffness);
-    enter(&mut app, "0");
-    assert_eq!(app.mode(), Mode::Input);
-    assert_eq!(
-        app.message().unwrap().text,
-        "invalid tangential_stiffness: 0 (must be positive); K_t kept"
+    assert_entry_refused(
+        &mut app,
+        "0",
+        "invalid tangential_stiffness: 0 (must be positive); K_t kept",
     );
-    press(&mut app, &[KeyCode::Esc]);
     enter(&mut app, "2e5");
     assert_eq!(values(&app).tangential_stiffness, Some(2e5));
     // ↑ steps K_t by 10 %, Shift by ×2

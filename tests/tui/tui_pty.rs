@@ -30,9 +30,7 @@ fn q_quits_with_the_terminal_restored() {
 #[test]
 fn a_panic_in_the_event_loop_restores_the_terminal_and_reports() {
     let home = tempfile::tempdir().unwrap();
-    let mut x = Explorer::spawn(home.path(), Some("panic-in-loop"), &[]);
-    let before = modes(&x.before);
-    x.wait_for_first_draw();
+    let (mut x, before) = Explorer::started(home.path(), Some("panic-in-loop"), &[]);
     x.send(b"l");
     let (status, after, out) = x.finish();
     assert!(!status.success(), "a panic must not exit 0");

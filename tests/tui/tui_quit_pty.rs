@@ -5,14 +5,12 @@
 
 use crate::pty;
 
-use pty::{Explorer, modes};
+use pty::Explorer;
 
 #[test]
 fn esc_keeps_the_pins_and_q_asks_before_losing_them() {
     let home = tempfile::tempdir().unwrap();
-    let mut x = Explorer::spawn(home.path(), None, &[]);
-    let before = modes(&x.before);
-    x.wait_for_first_draw();
+    let (mut x, before) = Explorer::started(home.path(), None, &[]);
     x.send(b"p");
     x.wait_for("pinned");
     x.send(b"\x1b");
@@ -30,9 +28,7 @@ fn esc_keeps_the_pins_and_q_asks_before_losing_them() {
 #[test]
 fn q_asks_before_losing_an_edit() {
     let home = tempfile::tempdir().unwrap();
-    let mut x = Explorer::spawn(home.path(), None, &[]);
-    let before = modes(&x.before);
-    x.wait_for_first_draw();
+    let (mut x, before) = Explorer::started(home.path(), None, &[]);
     x.send(b"c");
     x.wait_for("law:");
     x.send(b"q");

@@ -3,9 +3,7 @@
 
 use crate::tui_common;
 
-use bouncelab::figure::{
-    Axis as FigAxis, Figure, Kind, Look, Marker as Shape, Series, Style as Stroke, Tone,
-};
+use bouncelab::figure::{Kind, Look, Marker as Shape, Series, Style as Stroke, Tone};
 use bouncelab::preset::Preset;
 use bouncelab::tui::action::Action;
 use bouncelab::tui::app::App;
@@ -14,22 +12,14 @@ use bouncelab::tui::ui::{self, Chart};
 use bouncelab::tui::widgets::plot::Plot;
 use ratatui::Terminal;
 use ratatui::backend::TestBackend;
-use ratatui::buffer::Buffer;
 use ratatui::crossterm::event::KeyCode;
 use ratatui::layout::Rect;
 use ratatui::style::Color;
-use ratatui::widgets::Widget;
 
 use tui_common::*;
 
 fn app(i: usize) -> App {
     App::new(Preset::embedded().remove(i), true)
-}
-
-fn draw(app: &App, w: u16, h: u16) -> Terminal<TestBackend> {
-    let mut t = Terminal::new(TestBackend::new(w, h)).unwrap();
-    t.draw(|f| f.render_widget(app, f.area())).unwrap();
-    t
 }
 
 #[test]
@@ -332,11 +322,8 @@ fn a_figure_draws_its_curve_tag_markers_and_legend() {
             .with_points(vec![(0.5, 0.5)])
             .with_look(Look::new(Tone::Highlight, Some("here"), Some(text)))
     };
-    let mut fig = Figure::new(
-        "t".into(),
-        String::new(),
-        FigAxis::linear("x", "x", 1.0),
-        FigAxis::linear("y", "y", 1.0),
+    let fig = hand_figure(
+        "a chart",
         vec![
             curve,
             threshold,
@@ -344,11 +331,7 @@ fn a_figure_draws_its_curve_tag_markers_and_legend() {
             marker("S", Kind::ThisRun),
         ],
     );
-    fig.screen_title = "a chart".into();
-    let area = Rect::new(0, 0, 60, 20);
-    let mut buf = Buffer::empty(area);
-    Plot::new(&fig, Theme::new(false)).render(area, &mut buf);
-    let s = buffer_text(&buf);
+    let s = chart_text(&fig, 60, 20);
     assert!(s.starts_with("┌ a chart "), "{s}");
     assert!(s.contains("z_p"), "the threshold's tag:\n{s}");
     // a blank between them: two marks never read as one ("◆S", issue 51 item 6)

@@ -10,7 +10,7 @@ use crate::tui_common;
 use bouncelab::cli::Cli;
 use bouncelab::tui::app::Overlay;
 use clap::Parser;
-use common::{bad, f, json};
+use common::{bad_each, f, json};
 use ratatui::crossterm::event::KeyCode;
 use tui_common::{explorer_from, explorer_refuses};
 
@@ -88,15 +88,14 @@ fn the_line_y_shows_gives_the_same_state_back() {
 /// a subcommand they are refused by name.
 #[test]
 fn bad_state_options_are_one_line_and_exit_2() {
-    bad(&["--preset", "golf", "--v0", "-3"], &["v0"]);
-    bad(
-        &["--preset", "golf", "--lambda", "0.5", "--k-r", "5"],
-        &["--k-r", "--lambda"],
-    );
-    bad(
-        &["--law", "hertz", "run", "--preset", "golf"],
-        &["--law", "before a subcommand"],
-    );
+    bad_each(&[
+        ("--preset golf --v0 -3", &["v0"]),
+        ("--preset golf --lambda 0.5 --k-r 5", &["--k-r", "--lambda"]),
+        (
+            "--law hertz run --preset golf",
+            &["--law", "before a subcommand"],
+        ),
+    ]);
 }
 
 /// `y` shows the line on one row wherever the terminal is wider than it (a mouse selects it

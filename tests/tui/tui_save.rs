@@ -12,7 +12,7 @@ use bouncelab::tui::action::Mode;
 use bouncelab::tui::app::{App, Overlay, Purpose, Severity};
 use bouncelab::tui::save;
 use save_flow::{
-    message, perform, press, save_modified, save_request, state, superball, type_name,
+    message, perform, press, save_as, save_modified, save_request, state, superball, type_name,
 };
 use std::fs;
 
@@ -132,9 +132,7 @@ fn measurements_stay_only_at_the_speed_they_were_taken_at() {
     let dir = tempfile::tempdir().unwrap();
     // λ moved, v0 not: the superball's measurements at 3.12 m/s still apply
     let mut app = superball();
-    press(&mut app, "ls");
-    type_name(&mut app, "same-speed");
-    press(&mut app, "\n");
+    save_as(&mut app, "ls", "same-speed");
     perform(&mut app, dir.path());
     let same = catalog::read_preset_file(&dir.path().join("same-speed.toml")).unwrap();
     assert_eq!(same.measured, app.presets()[0].measured);
@@ -170,9 +168,7 @@ fn a_preset_on_its_materials_set_is_saved_with_that_set_as_adopted() {
         .replace("parameters = \"adopted\"", "parameters = \"materials\"");
     let source = Preset::parse(&text, "mat.toml").unwrap();
     let mut app = App::new(source, true);
-    press(&mut app, "lzs");
-    type_name(&mut app, "mat2");
-    press(&mut app, "\n");
+    save_as(&mut app, "lzs", "mat2");
     perform(&mut app, dir.path());
     let saved = catalog::read_preset_file(&dir.path().join("mat2.toml")).unwrap();
     assert_eq!(saved.parameters, bouncelab::preset::ParamSource::Adopted);
@@ -200,9 +196,7 @@ fn a_preset_on_its_materials_set_is_saved_with_that_set_as_adopted() {
 
     // saved again from the saved one: the description does not pile up
     let mut again = App::new(saved, true);
-    press(&mut again, "s");
-    type_name(&mut again, "mat3");
-    press(&mut again, "\n");
+    save_as(&mut again, "s", "mat3");
     perform(&mut again, dir.path());
     let third = catalog::read_preset_file(&dir.path().join("mat3.toml")).unwrap();
     assert_eq!(

@@ -9,9 +9,24 @@ use bouncelab::tui::action::{Action, Mode};
 use bouncelab::tui::app::{App, Severity};
 use bouncelab::tui::save;
 use save_flow::{
-    message, perform, press, save_modified, save_request, superball, take_save, type_name, update,
+    message, perform, press, save_as, save_modified, save_request, superball, take_save, update,
 };
 use std::fs;
+use std::path::Path;
+
+/// The save performed in `dir` finds `path` taken by a preset named `holds`: the explorer
+/// asks before replacing it.
+fn assert_asks_before_replacing(app: &mut App, dir: &Path, path: &Path, holds: &str) {
+    let answer = perform(app, dir);
+    assert_eq!(
+        answer,
+        Action::SaveExists {
+            path: path.to_path_buf(),
+            holds: Some(holds.into())
+        }
+    );
+    assert_eq!(app.mode(), Mode::Confirm);
+}
 
 #[test]
 fn an_existing_file_is_replaced_only_after_yes() {
@@ -21,18 +36,8 @@ fn an_existing_file_is_replaced_only_after_yes() {
 
     // the same name again, from other parameters
     let mut app = superball();
-    press(&mut app, "LLs");
-    type_name(&mut app, "mine");
-    press(&mut app, "\n");
-    let answer = perform(&mut app, dir.path());
-    assert_eq!(
-        answer,
-        Action::SaveExists {
-            path: path.clone(),
-            holds: Some("mine".into())
-        }
-    );
-    assert_eq!(app.mode(), Mode::Confirm);
+    save_as(&mut app, "LLs", "mine");
+    assert_asks_before_replacing(&mut app, dir.path(), &path, "mine");
     assert_eq!(
         message(&app),
         ("overwrite mine.toml? y/n".into(), Severity::Warning)
@@ -52,9 +57,7 @@ fn an_existing_file_is_replaced_only_after_yes() {
     );
     assert_eq!(fs::read(&path).unwrap(), first);
 
-    press(&mut app, "s");
-    type_name(&mut app, "mine");
-    press(&mut app, "\n");
+    save_as(&mut app, "s", "mine");
     assert!(matches!(
         perform(&mut app, dir.path()),
         Action::SaveExists { .. }
@@ -89,9 +92,7 @@ fn a_preset_of_that_name_in_another_file_is_the_one_asked_about() {
     let other = dir.path().join("my-balls.toml");
     fs::rename(&first, &other).unwrap();
     let mut app = superball();
-    press(&mut app, "s");
-    type_name(&mut app, "mine");
-    press(&mut app, "\n");
+    save_as(&mut app, "s", "mine");
     // not a second file "mine.toml", which would give the catalog two presets "mine"
     assert_eq!(
         perform(&mut app, dir.path()),
@@ -114,9 +115,7 @@ fn a_preset_of_that_name_in_another_file_is_the_one_asked_about() {
 fn a_file_that_appears_after_the_prompt_is_not_clobbered() {
     let dir = tempfile::tempdir().unwrap();
     let mut app = superball();
-    press(&mut app, "s");
-    type_name(&mut app, "mine");
-    press(&mut app, "\n");
+    save_as(&mut app, "s", "mine");
     assert!(save_request().is_some());
     // another program writes the name (a preset called otherwise) before the loop gets to it
     let path = dir.path().join("mine.toml");
@@ -124,15 +123,7 @@ fn a_file_that_appears_after_the_prompt_is_not_clobbered() {
         .1
         .replace("name = \"golf\"", "name = \"theirs\"");
     fs::write(&path, &theirs).unwrap();
-    let answer = perform(&mut app, dir.path());
-    assert_eq!(
-        answer,
-        Action::SaveExists {
-            path: path.clone(),
-            holds: Some("theirs".into())
-        }
-    );
-    assert_eq!(app.mode(), Mode::Confirm);
+    assert_asks_before_replacing(&mut app, dir.path(), &path, "theirs");
     assert_eq!(fs::read_to_string(&path).unwrap(), theirs);
 }
 

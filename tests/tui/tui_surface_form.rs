@@ -42,10 +42,14 @@ fn close(a: f64, b: f64) -> bool {
     (a - b).abs() <= 1e-12 * a.abs().max(b.abs()).max(1.0)
 }
 
-fn args(line: &str) -> Vec<String> {
-    let mut a: Vec<String> = line.split_whitespace().skip(1).map(String::from).collect();
-    a.extend(["--format".into(), "json".into()]);
-    a
+/// The tennis ball with μ 0.45 and K_t 5e4 typed in the form (each entry closed).
+fn tennis_at_mu_and_k_t() -> App {
+    let mut app = tennis();
+    type_in(&mut app, Field::Friction, "0.45");
+    press(&mut app, &[KeyCode::Esc]);
+    type_in(&mut app, Field::TangentialStiffness, "5e4");
+    press(&mut app, &[KeyCode::Esc]);
+    app
 }
 
 #[test]
@@ -85,11 +89,7 @@ fn mu_and_k_t_are_typed_in_the_form_and_refused_out_of_range() {
 
 #[test]
 fn the_oblique_impact_and_the_court_pace_run_on_them_and_the_lines_carry_them() {
-    let mut app = tennis();
-    type_in(&mut app, Field::Friction, "0.45");
-    press(&mut app, &[KeyCode::Esc]);
-    type_in(&mut app, Field::TangentialStiffness, "5e4");
-    press(&mut app, &[KeyCode::Esc]);
+    let mut app = tennis_at_mu_and_k_t();
     press(&mut app, &[KeyCode::Char('i')]);
     app.refresh();
     assert_eq!(app.view(), View::Oblique);
@@ -98,8 +98,7 @@ fn the_oblique_impact_and_the_court_pace_run_on_them_and_the_lines_carry_them() 
         line.contains("--friction 0.45 --tangential-stiffness 50000"),
         "{line}"
     );
-    let a = args(&line);
-    let j = common::json(&a.iter().map(String::as_str).collect::<Vec<_>>());
+    let j = line_json(&line);
     let r = app.oblique_view().response().expect("an impact");
     for (k, v) in [
         ("v_out", r.v_out),
@@ -129,8 +128,7 @@ fn the_oblique_impact_and_the_court_pace_run_on_them_and_the_lines_carry_them() 
     app.refresh();
     let line = app.command_line();
     assert!(line.contains("--friction 0.45"), "{line}");
-    let a = args(&line);
-    let j = common::json(&a.iter().map(String::as_str).collect::<Vec<_>>());
+    let j = line_json(&line);
     let r = app.flight_view().report().expect("a shot");
     let got = j["bounces"][0]["v_out"].as_f64().unwrap();
     assert!(close(got, r.bounces[0].v_out), "{line}");
@@ -138,11 +136,7 @@ fn the_oblique_impact_and_the_court_pace_run_on_them_and_the_lines_carry_them() 
 
 #[test]
 fn a_session_keeps_them_and_u_undoes_them_naming_them() {
-    let mut app = tennis();
-    type_in(&mut app, Field::Friction, "0.45");
-    press(&mut app, &[KeyCode::Esc]);
-    type_in(&mut app, Field::TangentialStiffness, "5e4");
-    press(&mut app, &[KeyCode::Esc]);
+    let mut app = tennis_at_mu_and_k_t();
     let text = app.session().to_toml();
     let read = Session::parse(Path::new("s.toml"), &text).unwrap();
     let back = tennis().with_session(&read).unwrap();

@@ -7,15 +7,13 @@
 
 use crate::pty;
 
-use pty::{Explorer, LEAVE_ALT_SCREEN, modes};
+use pty::{Explorer, LEAVE_ALT_SCREEN};
 use rustix::termios::LocalModes;
 
 #[test]
 fn a_worker_that_panics_is_reported_and_the_explorer_goes_on() {
     let home = tempfile::tempdir().unwrap();
-    let mut x = Explorer::spawn(home.path(), Some("panic-in-worker"), &[]);
-    let before = modes(&x.before);
-    x.wait_for_first_draw();
+    let (mut x, before) = Explorer::started(home.path(), Some("panic-in-worker"), &[]);
     x.send(b"\t"); // the sweeps view: its sweep goes to the worker, which panics
     x.wait_for("panic-in-worker:");
     let out = x.output();

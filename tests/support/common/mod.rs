@@ -125,19 +125,52 @@ pub fn f(v: &Value, key: &str) -> f64 {
 
 /// Exit code 2, stdout empty, stderr exactly one line `bouncelab: error: …` holding `needles`.
 pub fn assert_bad(o: &Out, needles: &[&str]) {
-    assert_eq!(o.code, 2, "stderr: {}", o.stderr);
-    assert!(o.stdout.is_empty(), "stdout: {}", o.stdout);
-    assert_eq!(o.stderr.lines().count(), 1, "one line: {:?}", o.stderr);
-    assert!(o.stderr.ends_with('\n'));
-    assert!(o.stderr.starts_with("bouncelab: error: "), "{}", o.stderr);
-    assert!(!o.stderr.contains("panicked"), "{}", o.stderr);
+    assert_bad_of(o, needles, "");
+}
+
+/// [`assert_bad`], each failure's message starting with `case` (the command that ran).
+fn assert_bad_of(o: &Out, needles: &[&str], case: &str) {
+    assert_eq!(o.code, 2, "{case}stderr: {}", o.stderr);
+    assert!(o.stdout.is_empty(), "{case}stdout: {}", o.stdout);
+    assert_eq!(
+        o.stderr.lines().count(),
+        1,
+        "{case}one line: {:?}",
+        o.stderr
+    );
+    assert!(o.stderr.ends_with('\n'), "{case}{:?}", o.stderr);
+    assert!(
+        o.stderr.starts_with("bouncelab: error: "),
+        "{case}{}",
+        o.stderr
+    );
+    assert!(!o.stderr.contains("panicked"), "{case}{}", o.stderr);
     for n in needles {
-        assert!(o.stderr.contains(n), "{n:?} not in {:?}", o.stderr);
+        assert!(o.stderr.contains(n), "{case}{n:?} not in {:?}", o.stderr);
     }
 }
 
 pub fn bad(args: &[&str], needles: &[&str]) {
-    assert_bad(&bl(args), needles);
+    assert_bad_of(&bl(args), needles, &format!("{args:?}: "));
+}
+
+/// [`bad`] over a table: each command line (split at its spaces, as [`argv`]) refused, its
+/// error holding its needles; a failure names the line.
+pub fn bad_each(cases: &[(&str, &[&str])]) {
+    for (line, needles) in cases {
+        assert_bad_of(&bl(&argv(line)), needles, &format!("`{line}`: "));
+    }
+}
+
+/// `args` with `--format json` give one warning, starting with `starts`, and the text answer
+/// (`args` alone) says the same as `warning: …`.
+pub fn assert_warns_once_in_json_and_text(args: &[&str], starts: &str) {
+    let v = json(&[args, &["--format", "json"][..]].concat());
+    let w = v["warnings"].as_array().expect("a warnings array");
+    assert_eq!(w.len(), 1, "{w:?}");
+    let said = w[0].as_str().unwrap();
+    assert!(said.starts_with(starts), "{said}");
+    assert!(ok(args).contains(&format!("warning: {said}")));
 }
 
 /// A temp folder holding one file written from bytes; returns (folder, path as text).

@@ -216,6 +216,15 @@ impl Explorer {
         self.output.len() > before
     }
 
+    /// [`Explorer::spawn`], its first frame drawn: the explorer, and the terminal's modes
+    /// before it started ([`modes`]), to hold its exit against.
+    pub fn started(config: &Path, fault: Option<&str>, args: &[&str]) -> (Explorer, String) {
+        let mut x = Explorer::spawn(config, fault, args);
+        let before = modes(&x.before);
+        x.wait_for_first_draw();
+        (x, before)
+    }
+
     /// The first frame is drawn: the explorer reads keys from now on.
     pub fn wait_for_first_draw(&mut self) {
         self.wait_for(ENTER_ALT_SCREEN);

@@ -65,6 +65,13 @@ pub fn press(app: &mut App, keys: &str) {
     }
 }
 
+/// Press `keys` (ending in the save key), type `name` over the suggested one, Enter.
+pub fn save_as(app: &mut App, keys: &str, name: &str) {
+    press(app, keys);
+    type_name(app, name);
+    press(app, "\n");
+}
+
 /// Replace the prompt's text with `name`.
 pub fn type_name(app: &mut App, name: &str) {
     let n = match app.overlay() {
@@ -106,9 +113,7 @@ pub fn state(app: &App) -> (f64, f64, f64, ContactLaw) {
 pub fn save_modified(dir: &Path, name: &str) -> (App, PathBuf) {
     let mut app = superball();
     press(&mut app, "lllZZvvvvvc");
-    press(&mut app, "s");
-    type_name(&mut app, name);
-    press(&mut app, "\n");
+    save_as(&mut app, "s", name);
     let Action::Saved { path, replaced } = perform(&mut app, dir) else {
         panic!("not saved: {:?}", app.message());
     };

@@ -130,6 +130,59 @@ pub fn assert_oblique_answer_is(app: &App, j: &serde_json::Value, line: &str) {
     }
 }
 
+/// A figure made by hand on linear axes `x` and `y` of unit scale, its chart titled `title`
+/// on screen.
+pub fn hand_figure(
+    title: &str,
+    series: Vec<bouncelab::figure::Series>,
+) -> bouncelab::figure::Figure {
+    use bouncelab::figure::{Axis, Figure};
+    let mut fig = Figure::new(
+        "t".into(),
+        String::new(),
+        Axis::linear("x", "x", 1.0),
+        Axis::linear("y", "y", 1.0),
+        series,
+    );
+    fig.screen_title = title.into();
+    fig
+}
+
+/// `fig` drawn by the explorer's chart widget (`Plot`, no colour) into a `w` × `h` buffer:
+/// its rows as text ([`buffer_text`]).
+pub fn chart_text(fig: &bouncelab::figure::Figure, w: u16, h: u16) -> String {
+    use ratatui::widgets::Widget;
+    let area = ratatui::layout::Rect::new(0, 0, w, h);
+    let mut buf = Buffer::empty(area);
+    bouncelab::tui::widgets::plot::Plot::new(fig, bouncelab::tui::theme::Theme::new(false))
+        .render(area, &mut buf);
+    buffer_text(&buf)
+}
+
+/// Type `text` as the selected parameter's value: `=`, the keys, Enter.
+pub fn enter(app: &mut App, text: &str) {
+    press(app, &[KeyCode::Char('=')]);
+    type_keys(app, text);
+    press(app, &[KeyCode::Enter]);
+}
+
+/// [`enter`] `text`, refused: the entry stays open with `says` on the message line; then Esc
+/// closes it.
+pub fn assert_entry_refused(app: &mut App, text: &str, says: &str) {
+    enter(app, text);
+    assert_eq!(app.mode(), bouncelab::tui::action::Mode::Input, "{text}");
+    assert_eq!(app.message().unwrap().text, says, "{text}");
+    press(app, &[KeyCode::Esc]);
+}
+
+/// The explorer's `bouncelab …` line (its `y` line) run by the binary with `--format json`
+/// added: the JSON it writes.
+pub fn line_json(line: &str) -> serde_json::Value {
+    let mut args: Vec<&str> = line.split_whitespace().skip(1).collect();
+    args.extend(["--format", "json"]);
+    crate::common::json(&args)
+}
+
 /// A buffer's rows as text, each ended by a newline.
 pub fn buffer_text(buf: &Buffer) -> String {
     let a = buf.area;
