@@ -45,12 +45,7 @@ impl Popup {
         let extra = 1 + u16::from(error);
         let want = 2 * entries as u16 + extra + 2;
         let h = want.min(area.height);
-        let popup = Rect::new(
-            area.x + (area.width - w) / 2,
-            area.y + (area.height - h) / 2,
-            w,
-            h,
-        );
+        let popup = crate::tui::widgets::centred(area, w, h);
         Clear.render(popup, buf);
         let rows = usize::from(h.saturating_sub(2 + extra) / 2).max(1);
         Popup {
