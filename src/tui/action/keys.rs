@@ -205,3 +205,6 @@ fn normal(key: KeyEvent) -> Option<Action> {
         _ => None,
     }
 }
+
+#[cfg(test)]
+mod tests;
