@@ -106,13 +106,11 @@ fn tangential_damping(setting: &Setting, own: Option<f64>) -> Vec<String> {
 
 /// Each option whose value is not its default, with the value.
 fn differing(pairs: &[(&str, f64, f64)]) -> Vec<String> {
-    let mut words = Vec::new();
-    for &(option, value, default) in pairs {
-        if value != default {
-            words.extend([option.into(), number(value)]);
-        }
-    }
-    words
+    let off: Vec<(&str, Option<f64>)> = pairs
+        .iter()
+        .map(|&(option, value, default)| (option, (value != default).then_some(value)))
+        .collect();
+    given(&off)
 }
 
 /// Each option that has a value, with it.
