@@ -12,16 +12,16 @@
 //! differs from the screen's, if anything. The copy to the terminal's clipboard (OSC 52) is
 //! `crate::tui::clipboard`'s.
 
-use crate::api::{self, ConditionsSpec, Overrides};
-use crate::model::contact::ContactLaw;
-use crate::model::params::ImpactParams;
+use crate::api::ConditionsSpec;
 use crate::preset::Preset;
 use crate::text::number;
-use crate::tui::exact;
 use crate::tui::param::Param;
-use crate::tui::physical::conditions::conditioned;
 use crate::tui::setting::Setting;
 use std::path::Path;
+
+mod options;
+use options::options;
+pub use options::{conditioned_base, not_carried};
 
 /// Where `run` finds the ball.
 #[derive(Debug, Clone, Copy)]
@@ -41,142 +41,6 @@ pub fn shell_word(s: &str) -> String {
     } else {
         format!("'{}'", s.replace('\'', r"'\''"))
     }
-}
-
-/// The options that take `run` from the preset to `setting` (module docs), in their order.
-#[derive(Clone)]
-struct Options {
-    law: Option<ContactLaw>,
-    /// --mass, --radius, --k-p, --z-p (None: the preset's).
-    mass: Option<f64>,
-    radius: Option<f64>,
-    k_p: Option<f64>,
-    z_p: Option<f64>,
-    /// --lambda and --zeta, when K_r or c is not what the ball above has.
-    lambda_zeta: Option<(f64, f64)>,
-    v0: f64,
-    /// --pressure and --temperature (None: the record's).
-    conditions: ConditionsSpec,
-}
-
-impl Options {
-    fn of(preset: &Preset, setting: &Setting) -> Options {
-        let p = &setting.params;
-        let differs = |now: f64, was: f64| (now != was).then_some(now);
-        let mass = differs(p.mass, preset.measured.mass);
-        let radius = differs(setting.radius, preset.measured.radius);
-        let base = Self::sized(preset, mass, radius);
-        // at the conditions typed (issue 56): `run` sets K_p (K_r, c) from them, after the
-        // ball's size; no `--k-p` where the conditions' K_p is the setting's
-        let r = radius.unwrap_or(preset.measured.radius);
-        let base = conditioned(preset, base, r, &setting.conditions).unwrap_or(base);
-        let mut o = Options {
-            law: (setting.law != preset.law).then_some(setting.law),
-            mass,
-            radius,
-            k_p: differs(p.k_p, base.k_p),
-            z_p: differs(p.z_p, base.z_p),
-            lambda_zeta: None,
-            v0: p.v0,
-            conditions: setting.conditions,
-        };
-        // λ and ζ are taken on the ball the options above make, as `run` applies them
-        let ball = o.ball(preset).unwrap_or(base);
-        if p.k_r != ball.k_r || p.damping != ball.damping {
-            o.lambda_zeta = Some((setting.get(Param::Lambda), setting.get(Param::Zeta)));
-        }
-        o.shortened(preset)
-    }
-
-    /// These options with λ and ζ the shortest decimals that make `run`'s ball the same to
-    /// the bit (src/tui/exact.rs): λ = K_r/K_p of a typed 0.3 is 0.30000000000000004, and
-    /// "0.3" gives the same K_r; one no shorter text reproduces is kept whole. The other
-    /// numbers are the setting's own (m, R, K_p, z_p, v0, T: typed or stepped as decimals),
-    /// written as they are: R, for one, moves no parameter of a fitted ball, so "the same
-    /// ball" could not tell 0.025 from 0.03.
-    fn shortened(mut self, preset: &Preset) -> Options {
-        let Some(want) = self.ball(preset) else {
-            return self;
-        };
-        type Slot = fn(&mut Options) -> Option<&mut f64>;
-        let slots: [Slot; 2] = [
-            |o| o.lambda_zeta.as_mut().map(|(l, _)| l),
-            |o| o.lambda_zeta.as_mut().map(|(_, z)| z),
-        ];
-        for slot in slots {
-            let Some(&mut x) = slot(&mut self) else {
-                continue;
-            };
-            let short = exact::shortest_accepted(x, |y| {
-                let mut tried = self.clone();
-                if let Some(v) = slot(&mut tried) {
-                    *v = y;
-                }
-                tried.ball(preset) == Some(want)
-            });
-            if let Some(v) = slot(&mut self) {
-                *v = short;
-            }
-        }
-        self
-    }
-
-    /// The preset's parameter set derived for mass `m` and radius `r` (`run --mass --radius`).
-    fn sized(preset: &Preset, m: Option<f64>, r: Option<f64>) -> ImpactParams {
-        let mut sized = preset.clone();
-        sized.measured.mass = m.unwrap_or(sized.measured.mass);
-        sized.measured.radius = r.unwrap_or(sized.measured.radius);
-        sized.params()
-    }
-
-    /// The parameters `run` builds from these options, by the library's own steps
-    /// ([`Overrides::apply`], [`api::set_lambda_zeta`]); `None` where it would refuse them.
-    fn ball(&self, preset: &Preset) -> Option<ImpactParams> {
-        let mut p = Self::sized(preset, self.mass, self.radius);
-        p.v0 = self.v0;
-        let set = Overrides {
-            mass: self.mass,
-            k_p: self.k_p,
-            z_p: self.z_p,
-            ..Overrides::default()
-        };
-        set.apply(&mut p).ok()?;
-        if !self.conditions.is_empty() {
-            // `run` refuses --k-p beside --pressure (Ball::at_conditions)
-            if self.k_p.is_some()
-                && preset
-                    .calibration
-                    .as_ref()
-                    .and_then(|c| c.pressure)
-                    .is_some()
-            {
-                return None;
-            }
-            let r = self.radius.unwrap_or(preset.measured.radius);
-            p = conditioned(preset, p, r, &self.conditions).ok()?;
-        }
-        if let Some((l, z)) = self.lambda_zeta {
-            api::set_lambda_zeta(&mut p, Some(l), Some(z)).ok()?;
-        }
-        Some(p)
-    }
-}
-
-/// The parameters the `y` line's ball options make at the setting's conditions, before λ and
-/// ζ: the preset sized by `--mass`, `--radius`, `--z-p` as `run` sizes it, then
-/// `--pressure`, `--temperature` ([`conditioned`]). The form's conditions start from these
-/// (src/tui/physical/conditions.rs), so the line and the screen agree.
-pub fn conditioned_base(preset: &Preset, setting: &Setting) -> Result<ImpactParams, String> {
-    let o = Options::of(preset, setting);
-    let mut p = Options::sized(preset, o.mass, o.radius);
-    p.v0 = setting.params.v0;
-    let set = Overrides {
-        mass: o.mass,
-        z_p: o.z_p,
-        ..Overrides::default()
-    };
-    set.apply(&mut p).map_err(|e| e.to_string())?;
-    conditioned(preset, p, setting.radius, &setting.conditions)
 }
 
 /// The `bouncelab run` line that runs `setting` of the ball `preset` found at `source` (the
@@ -204,27 +68,57 @@ pub fn explorer_line(source: Source, preset: &Preset, setting: &Setting) -> Stri
 fn what_the_ball_meets(setting: &Setting) -> Vec<String> {
     // the surface picked (`G`): by name, and the target's numbers where the form moved them
     // off it (issue 53 item 6)
-    let mut words = Vec::new();
-    let (wall, c_t) = match &setting.surface {
-        Some(s) => {
-            words.extend(["--surface".into(), shell_word(&s.name)]);
-            (s.target(), s.tangential_damping)
-        }
-        None => (crate::target::Target::wall(), None),
-    };
-    if setting.tangential_damping != c_t {
-        let c = setting.tangential_damping.unwrap_or(0.0);
-        words.extend(["--tangential-damping".into(), number(c)]);
-    }
+    let (mut words, own, own_c_t) = picked_surface(setting);
+    words.extend(tangential_damping(setting, own_c_t));
     let t = setting.target();
-    for (option, value, default) in [
-        ("--target-mass", t.mass, wall.mass),
-        ("--target-speed", t.speed, wall.speed),
-        ("--target-stiffness", t.stiffness, wall.stiffness),
-        ("--target-damping", t.damping, wall.damping),
-    ] {
-        if value != default {
-            words.extend([option.into(), number(value)]);
+    words.extend(differing(&[
+        ("--target-mass", t.mass, own.mass),
+        ("--target-speed", t.speed, own.speed),
+        ("--target-stiffness", t.stiffness, own.stiffness),
+        ("--target-damping", t.damping, own.damping),
+    ]));
+    words
+}
+
+/// `--surface NAME` where one was picked (`G`, issue 53 item 6), and what the ball meets with
+/// it: that surface's target and c_t (the rigid plate and none where none was picked). The
+/// lines write the setting's target and c_t only where they differ from these.
+fn picked_surface(setting: &Setting) -> (Vec<String>, crate::target::Target, Option<f64>) {
+    match &setting.surface {
+        Some(s) => (
+            vec!["--surface".into(), shell_word(&s.name)],
+            s.target(),
+            s.tangential_damping,
+        ),
+        None => (Vec::new(), crate::target::Target::wall(), None),
+    }
+}
+
+/// `--tangential-damping C` where the setting's c_t is not `own` (the surface's, which comes
+/// with `--surface`); none as 0.
+fn tangential_damping(setting: &Setting, own: Option<f64>) -> Vec<String> {
+    if setting.tangential_damping == own {
+        return Vec::new();
+    }
+    let c = setting.tangential_damping.unwrap_or(0.0);
+    vec!["--tangential-damping".into(), number(c)]
+}
+
+/// Each option whose value is not its default, with the value.
+fn differing(pairs: &[(&str, f64, f64)]) -> Vec<String> {
+    let off: Vec<(&str, Option<f64>)> = pairs
+        .iter()
+        .map(|&(option, value, default)| (option, (value != default).then_some(value)))
+        .collect();
+    given(&off)
+}
+
+/// Each option that has a value, with it.
+fn given(pairs: &[(&str, Option<f64>)]) -> Vec<String> {
+    let mut words = Vec::new();
+    for &(option, value) in pairs {
+        if let Some(v) = value {
+            words.extend([option.into(), number(v)]);
         }
     }
     words
@@ -257,30 +151,25 @@ fn k_r_damping(preset: &Preset, setting: &Setting) -> [String; 4] {
 /// when one was picked, then `--surface-stiffness`, `--surface-damping`, `--surface-mass` where
 /// the target (at rest) is not that surface's (or the rigid plate's), and c_t.
 fn surface_options(setting: &Setting) -> Vec<String> {
-    let mut words = Vec::new();
-    let (own, own_c_t) = match &setting.surface {
-        Some(s) => {
-            words.extend(["--surface".into(), shell_word(&s.name)]);
-            (s.target(), s.tangential_damping)
-        }
-        None => (crate::target::Target::wall(), None),
-    };
+    let (mut words, own, own_c_t) = picked_surface(setting);
     let t = setting.target();
-    for (option, value, default) in [
+    words.extend(differing(&[
         ("--surface-stiffness", t.stiffness, own.stiffness),
         ("--surface-damping", t.damping, own.damping),
         ("--surface-mass", t.mass, own.mass),
-    ] {
-        if value != default {
-            words.extend([option.into(), number(value)]);
-        }
-    }
-    // the surface's own c_t comes with --surface; another (0: none) is written
-    if setting.tangential_damping != own_c_t {
-        let c = setting.tangential_damping.unwrap_or(0.0);
-        words.extend(["--tangential-damping".into(), number(c)]);
-    }
+    ]));
+    words.extend(tangential_damping(setting, own_c_t));
     words
+}
+
+/// The ball's options as [`explorer_line`]'s but K_r and c as `--k-r` and `--damping`, for
+/// the commands that take no `--lambda`, `--zeta` (`oblique`, `shot`).
+fn ball_by_k_r(source: Source, preset: &Preset, setting: &Setting) -> Vec<String> {
+    let mut ball = options(source, preset, setting);
+    if let Some(at) = ball.iter().position(|w| w == "--lambda") {
+        ball.splice(at..at + 4, k_r_damping(preset, setting));
+    }
+    ball
 }
 
 /// The oblique view's line, `bouncelab oblique --preset tennis --v0 25 --angle 16 --spin 300
@@ -295,23 +184,15 @@ pub fn oblique_line(
     o: &crate::tui::views::oblique::state::ObliqueValues,
 ) -> String {
     let mut words = vec!["bouncelab".to_string(), "oblique".into()];
-    let mut ball = options(source, preset, setting);
-    if let Some(at) = ball.iter().position(|w| w == "--lambda") {
-        ball.splice(at..at + 4, k_r_damping(preset, setting));
-    }
-    words.extend(ball);
+    words.extend(ball_by_k_r(source, preset, setting));
     words.extend(surface_options(setting));
-    for (option, value) in [
+    words.extend(given(&[
         ("--angle", Some(o.angle)),
         ("--spin", Some(o.spin)),
         ("--friction", Some(o.friction)),
         ("--tangential-stiffness", o.tangential_stiffness),
         ("--inertia-factor", o.inertia_factor),
-    ] {
-        if let Some(v) = value {
-            words.extend([option.into(), number(v)]);
-        }
-    }
+    ]));
     words.join(" ")
 }
 
@@ -325,10 +206,7 @@ pub fn shot_line(
     v: &crate::tui::views::flight::state::FlightValues,
 ) -> String {
     let mut words = vec!["bouncelab".to_string(), "shot".into()];
-    let mut ball = options(source, preset, setting);
-    if let Some(at) = ball.iter().position(|w| w == "--lambda") {
-        ball.splice(at..at + 4, k_r_damping(preset, setting));
-    }
+    let mut ball = ball_by_k_r(source, preset, setting);
     if let Some(at) = ball.iter().position(|w| w == "--v0") {
         ball.drain(at..at + 2);
     }
@@ -338,73 +216,6 @@ pub fn shot_line(
         words.extend([p.option().into(), number(v.get(p))]);
     }
     words.join(" ")
-}
-
-/// The words after `bouncelab run` that run `setting` (module docs).
-fn options(source: Source, preset: &Preset, setting: &Setting) -> Vec<String> {
-    let mut words = Vec::new();
-    match source {
-        Source::Name(name) => words.extend(["--preset".into(), shell_word(name)]),
-        Source::Config(path) => {
-            words.extend(["--config".into(), shell_word(&path.to_string_lossy())])
-        }
-    }
-    let o = Options::of(preset, setting);
-    if let Some(law) = o.law {
-        words.extend(["--law".into(), law.name().into()]);
-    }
-    for (option, value) in [
-        ("--mass", o.mass),
-        ("--radius", o.radius),
-        ("--k-p", o.k_p),
-        ("--z-p", o.z_p),
-    ] {
-        if let Some(v) = value {
-            words.extend([option.into(), number(v)]);
-        }
-    }
-    if let Some((l, z)) = o.lambda_zeta {
-        words.extend(["--lambda".into(), number(l), "--zeta".into(), number(z)]);
-    }
-    // a pressure in the unit that writes it shortest and reads back exact (`8psi`)
-    if let Some(p) = o.conditions.pressure {
-        words.extend(["--pressure".into(), exact::pressure_text(p)]);
-    }
-    if let Some(t) = o.conditions.temperature {
-        words.extend(["--temperature".into(), number(t)]);
-    }
-    words.extend(["--v0".into(), number(o.v0)]);
-    words
-}
-
-/// What the line cannot carry: the parameters the ball `run` builds from it differs in (by
-/// more than the rounding of λ and ζ, 1e-12), found by building that ball with the library's
-/// own steps. `None` when the line reproduces the setting.
-pub fn not_carried(preset: &Preset, setting: &Setting) -> Option<String> {
-    let o = Options::of(preset, setting);
-    let Some(b) = o.ball(preset) else {
-        return Some("`run` would refuse this setting's options".into());
-    };
-    let p = &setting.params;
-    let off: Vec<&str> = [
-        ("m", p.mass, b.mass),
-        ("K_p", p.k_p, b.k_p),
-        ("K_r", p.k_r, b.k_r),
-        ("c", p.damping, b.damping),
-        ("z_p", p.z_p, b.z_p),
-        ("K_h", p.k_h, b.k_h),
-        ("v0", p.v0, b.v0),
-    ]
-    .into_iter()
-    .filter(|(_, a, b)| (a - b).abs() > 1e-12 * a.abs())
-    .map(|(name, _, _)| name)
-    .collect();
-    (!off.is_empty()).then(|| {
-        format!(
-            "the line runs another {}: `run` has no option that sets it as the screen has it",
-            off.join(", ")
-        )
-    })
 }
 
 /// The `#` lines an export's CSV files start with: the command, the ball and law, every

@@ -124,34 +124,24 @@ mod tests {
 
     #[test]
     fn colours_go_to_the_nearest_the_terminal_has() {
-        // the cube's corners and a grey
-        assert_eq!(
-            shown(Color::Rgb(255, 0, 0), Depth::Indexed),
-            Color::Indexed(196)
-        );
-        assert_eq!(
-            shown(Color::Rgb(0, 0, 0), Depth::Indexed),
-            Color::Indexed(16)
-        );
-        assert_eq!(
-            shown(Color::Rgb(128, 128, 128), Depth::Indexed),
-            Color::Indexed(244)
-        );
-        // viridis' ends: dark purple and yellow
-        assert_eq!(
-            shown(Color::Rgb(68, 1, 84), Depth::Indexed),
-            Color::Indexed(53)
-        );
-        assert_eq!(
-            shown(Color::Rgb(253, 231, 37), Depth::Ansi),
-            Color::LightYellow
-        );
-        assert_eq!(shown(Color::Rgb(68, 1, 84), Depth::Ansi), Color::Black);
-        // named colours stay
-        assert_eq!(shown(Color::Cyan, Depth::Ansi), Color::Cyan);
-        assert_eq!(
-            shown(Color::Rgb(1, 2, 3), Depth::TrueColor),
-            Color::Rgb(1, 2, 3)
-        );
+        for (colour, depth, want) in [
+            // the cube's corners and a grey
+            (Color::Rgb(255, 0, 0), Depth::Indexed, Color::Indexed(196)),
+            (Color::Rgb(0, 0, 0), Depth::Indexed, Color::Indexed(16)),
+            (
+                Color::Rgb(128, 128, 128),
+                Depth::Indexed,
+                Color::Indexed(244),
+            ),
+            // viridis' ends: dark purple and yellow
+            (Color::Rgb(68, 1, 84), Depth::Indexed, Color::Indexed(53)),
+            (Color::Rgb(253, 231, 37), Depth::Ansi, Color::LightYellow),
+            (Color::Rgb(68, 1, 84), Depth::Ansi, Color::Black),
+            // named colours stay
+            (Color::Cyan, Depth::Ansi, Color::Cyan),
+            (Color::Rgb(1, 2, 3), Depth::TrueColor, Color::Rgb(1, 2, 3)),
+        ] {
+            assert_eq!(shown(colour, depth), want, "{colour:?} at {depth:?}");
+        }
     }
 }

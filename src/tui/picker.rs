@@ -13,13 +13,32 @@ pub struct PickEntry {
     pub origin: String,
 }
 
-/// The open picker: every preset, the highlighted one, and why the user presets could not be
-/// read (then only the embedded ones are listed).
+/// An open picker (the preset picker's entries by default; the surface picker's are
+/// [`crate::tui::surface::SurfacePicker`]): every entry, the highlighted one, and why the
+/// user's folder could not be read (then only the embedded entries are listed).
 #[derive(Debug, Clone, PartialEq)]
-pub struct Picker {
-    pub entries: Vec<PickEntry>,
+pub struct Picker<E = PickEntry> {
+    pub entries: Vec<E>,
     pub selected: usize,
     pub error: Option<String>,
+}
+
+impl<E> Picker<E> {
+    /// The picker on the loop's list, the entry `current` says is the one in use highlighted
+    /// (the first when none is).
+    pub fn opened(entries: Vec<E>, error: Option<String>, current: impl Fn(&E) -> bool) -> Self {
+        let selected = entries.iter().position(current).unwrap_or(0);
+        Picker {
+            entries,
+            selected,
+            error,
+        }
+    }
+
+    /// The highlighted entry, taken out of the picker (Enter).
+    pub fn chosen(self) -> Option<E> {
+        self.entries.into_iter().nth(self.selected)
+    }
 }
 
 /// Every preset `run --preset` knows now: embedded ones, then user presets from `dir` (one

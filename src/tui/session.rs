@@ -87,18 +87,6 @@ pub struct Ball {
     pub params: ImpactParams,
 }
 
-fn view_name(v: View) -> &'static str {
-    match v {
-        View::Impact => "impact",
-        View::Sweeps => "sweeps",
-        View::Models => "models",
-        View::Map => "map",
-        View::Drop => "drop",
-        View::Oblique => "oblique",
-        View::Flight => "flight",
-    }
-}
-
 fn param_name(p: Param) -> &'static str {
     match p {
         Param::Lambda => "lambda",
@@ -127,7 +115,7 @@ impl App {
         };
         Session {
             version: VERSION,
-            view: view_name(self.view).into(),
+            view: self.view.name().into(),
             selected: param_name(self.selected).into(),
             measured: self.fit.loaded.as_ref().map(|l| l.path.clone()),
             ball: ball(&self.setting),
@@ -149,18 +137,10 @@ impl App {
             self.pin();
         }
         self.setting = self.setting_of(&session.ball)?;
-        self.view = [
-            View::Impact,
-            View::Sweeps,
-            View::Models,
-            View::Map,
-            View::Drop,
-            View::Oblique,
-            View::Flight,
-        ]
-        .into_iter()
-        .find(|&v| view_name(v) == session.view)
-        .ok_or_else(|| format!("view: unknown view '{}'", session.view))?;
+        self.view = View::ALL
+            .into_iter()
+            .find(|&v| v.name() == session.view)
+            .ok_or_else(|| format!("view: unknown view '{}'", session.view))?;
         self.selected = [Param::Lambda, Param::Zeta, Param::V0]
             .into_iter()
             .find(|&p| param_name(p) == session.selected)

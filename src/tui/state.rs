@@ -38,19 +38,42 @@ impl View {
     /// The views `Tab` goes through, in order (`Shift+Tab` backwards).
     pub const CYCLE: [View; 4] = [View::Impact, View::Sweeps, View::Models, View::Map];
 
-    pub fn title(self) -> String {
-        let name = match self {
+    /// Every view.
+    pub const ALL: [View; 7] = [
+        View::Impact,
+        View::Sweeps,
+        View::Models,
+        View::Map,
+        View::Drop,
+        View::Oblique,
+        View::Flight,
+    ];
+
+    /// The view's name, as a session file keeps it (`view = "oblique"`).
+    pub fn name(self) -> &'static str {
+        match self {
             View::Impact => "impact",
             View::Sweeps => "sweeps",
             View::Models => "models",
             View::Map => "map",
-            View::Drop => return "drop test".into(),
-            View::Oblique => return "oblique".into(),
-            View::Flight => return "flight".into(),
-        };
-        let n = View::CYCLE.len();
-        let k = View::CYCLE.iter().position(|&v| v == self).unwrap_or(0) + 1;
-        format!("{k}/{n} {name}")
+            View::Drop => "drop",
+            View::Oblique => "oblique",
+            View::Flight => "flight",
+        }
+    }
+
+    /// The header's name of the view: its place in the cycle and name ("2/4 sweeps"); the
+    /// views outside the cycle by name alone (the drop view "drop test").
+    pub fn title(self) -> String {
+        match self {
+            View::Drop => "drop test".into(),
+            View::Oblique | View::Flight => self.name().into(),
+            View::Impact | View::Sweeps | View::Models | View::Map => {
+                let n = View::CYCLE.len();
+                let k = View::CYCLE.iter().position(|&v| v == self).unwrap_or(0) + 1;
+                format!("{k}/{n} {}", self.name())
+            }
+        }
     }
 
     /// The next view of the cycle (from the drop view: the impact view).

@@ -15,12 +15,7 @@ use crate::tui::format::value;
 
 /// The open surface picker: every surface, the highlighted one, and why the user surfaces
 /// could not be read (then only the embedded ones are listed).
-#[derive(Debug, Clone, PartialEq)]
-pub struct SurfacePicker {
-    pub entries: Vec<SurfaceEntry>,
-    pub selected: usize,
-    pub error: Option<String>,
-}
+pub type SurfacePicker = crate::tui::picker::Picker<SurfaceEntry>;
 
 /// Every surface `--surface` knows now: the embedded ones, then the user's from `dir`. When
 /// the folder cannot be read, the embedded ones and the reason.

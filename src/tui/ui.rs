@@ -320,14 +320,15 @@ impl Widget for &App {
             flight: self.view() == View::Flight,
         }
         .render(s.status, buf);
+        // the drop, flight and oblique views take the whole body, between the header and the
+        // message line (src/tui/views/{drop,flight,oblique}/widget.rs)
+        let body = Rect::new(
+            area.x,
+            s.header.bottom(),
+            area.width,
+            s.message.y - s.header.bottom(),
+        );
         if self.view() == View::Drop {
-            // the drop view takes the whole body (src/tui/views/drop/widget.rs)
-            let body = Rect::new(
-                area.x,
-                s.header.bottom(),
-                area.width,
-                s.message.y - s.header.bottom(),
-            );
             let chart = self.screen_figure(ChartId::DropHeight).unwrap_or_else(|| {
                 crate::tui::views::drop::widget::height_figure(self.drop_view())
             });
@@ -339,13 +340,6 @@ impl Widget for &App {
             }
             .render(body, buf);
         } else if self.view() == View::Flight {
-            // the flight view takes the whole body (src/tui/views/flight/widget.rs)
-            let body = Rect::new(
-                area.x,
-                s.header.bottom(),
-                area.width,
-                s.message.y - s.header.bottom(),
-            );
             crate::tui::views::flight::widget::FlightPanel {
                 view: self.flight_view(),
                 ball: &self.preset().name,
@@ -354,13 +348,6 @@ impl Widget for &App {
             }
             .render(body, buf);
         } else if self.view() == View::Oblique {
-            // the oblique view takes the whole body (src/tui/views/oblique/widget.rs)
-            let body = Rect::new(
-                area.x,
-                s.header.bottom(),
-                area.width,
-                s.message.y - s.header.bottom(),
-            );
             let time = [
                 ChartId::ObliqueForces,
                 ChartId::ObliqueSlip,

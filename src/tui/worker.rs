@@ -17,25 +17,23 @@ pub trait Job: Clone + PartialEq + Send + 'static {
     type Output: Send + 'static;
     /// The thread's name, after [`crate::tui::background::THREAD_PREFIX`].
     const NAME: &'static str = "sweeps";
-    /// The job, asking `go_on` between its steps; `None` when it said stop.
-    fn run_while(&self, go_on: &mut dyn FnMut() -> bool) -> Option<Result<Self::Output, String>>;
-
-    /// [`Job::run_while`], handing `partial` what it has so far between its steps when it
-    /// can (a coarse COR-vs-speed curve); by default it has nothing to show early.
+    /// The job, asking `go_on` between its steps (`None` when it said stop), handing
+    /// `partial` what it has so far between them when it can (a coarse COR-vs-speed curve, a
+    /// map's pass, a fit's progress); a job with nothing to show early ignores `partial`.
     fn run_refining(
         &self,
         go_on: &mut dyn FnMut() -> bool,
-        _partial: &mut dyn FnMut(Self::Output),
-    ) -> Option<Result<Self::Output, String>> {
-        self.run_while(go_on)
+        partial: &mut dyn FnMut(Self::Output),
+    ) -> Option<Result<Self::Output, String>>;
+
+    /// [`Job::run_refining`] with nothing shown early.
+    fn run_while(&self, go_on: &mut dyn FnMut() -> bool) -> Option<Result<Self::Output, String>> {
+        self.run_refining(go_on, &mut |_| {})
     }
 }
 
 impl Job for SpeedRequest {
     type Output = SpeedCurve;
-    fn run_while(&self, go_on: &mut dyn FnMut() -> bool) -> Option<Result<SpeedCurve, String>> {
-        SpeedRequest::run_while(self, go_on)
-    }
 
     fn run_refining(
         &self,

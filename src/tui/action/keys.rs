@@ -89,20 +89,30 @@ fn help(code: KeyCode) -> Option<Action> {
     }
 }
 
-/// The map view's own keys: arrows move the cursor a cell (Shift: [`MAP_LEAP`] cells), `n`
-/// the quantity, `t` the targets.
-fn map(key: KeyEvent) -> Option<Action> {
+/// The cells or steps an arrow key moves something: (right, up), one (Shift: `leap`); `None`
+/// for any other key. The map views' cursors and the crosshair move by it.
+fn arrow(key: KeyEvent, leap: i32) -> Option<(i32, i32)> {
     let n = if key.modifiers.contains(KeyModifiers::SHIFT) {
-        MAP_LEAP
+        leap
     } else {
         1
     };
-    let cursor = |lambda, zeta| Some(Action::MapCursor { lambda, zeta });
     match key.code {
-        KeyCode::Up => cursor(n, 0),
-        KeyCode::Down => cursor(-n, 0),
-        KeyCode::Right => cursor(0, n),
-        KeyCode::Left => cursor(0, -n),
+        KeyCode::Right => Some((n, 0)),
+        KeyCode::Left => Some((-n, 0)),
+        KeyCode::Up => Some((0, n)),
+        KeyCode::Down => Some((0, -n)),
+        _ => None,
+    }
+}
+
+/// The map view's own keys: arrows move the cursor a cell (Shift: [`MAP_LEAP`] cells), `n`
+/// the quantity, `t` the targets.
+fn map(key: KeyEvent) -> Option<Action> {
+    if let Some((zeta, lambda)) = arrow(key, MAP_LEAP) {
+        return Some(Action::MapCursor { lambda, zeta });
+    }
+    match key.code {
         KeyCode::Char('n') => Some(Action::MapQuantity),
         KeyCode::Char('t') => Some(Action::MapTargets),
         _ => None,
@@ -195,3 +205,6 @@ fn normal(key: KeyEvent) -> Option<Action> {
         _ => None,
     }
 }
+
+#[cfg(test)]
+mod tests;

@@ -12,20 +12,13 @@ impl App {
     pub(super) fn picker(&mut self, action: Action) {
         match action {
             Action::PresetsListed(entries, error) => {
-                // the current ball highlighted, when listed
-                let now = &self.preset().name;
-                let selected = entries
-                    .iter()
-                    .position(|e| &e.preset.name == now)
-                    .unwrap_or(0);
                 if let Some(e) = &error {
                     self.warn(e.clone());
                 }
-                self.overlay = Overlay::Picker(Picker {
-                    entries,
-                    selected,
-                    error,
-                });
+                // the current ball highlighted, when listed
+                let now = &self.preset().name;
+                let picker = Picker::opened(entries, error, |e| &e.preset.name == now);
+                self.overlay = Overlay::Picker(picker);
             }
             Action::PickerMove(how) => {
                 let (selected, n) = match &mut self.overlay {
@@ -57,7 +50,7 @@ impl App {
         let Overlay::Picker(p) = std::mem::replace(&mut self.overlay, Overlay::None) else {
             return;
         };
-        let Some(entry) = p.entries.into_iter().nth(p.selected) else {
+        let Some(entry) = p.chosen() else {
             return;
         };
         let i = match self.presets.iter().position(|q| *q == entry.preset) {

@@ -10,19 +10,13 @@ use crate::tui::surface::{SurfacePicker, numbers};
 impl App {
     /// The loop's list: the picker opens on it, the current surface highlighted.
     pub(super) fn surfaces_listed(&mut self, entries: Vec<SurfaceEntry>, error: Option<String>) {
-        let now = self.setting.surface.as_ref().map(|s| s.name.as_str());
-        let selected = entries
-            .iter()
-            .position(|e| Some(e.surface.name.as_str()) == now)
-            .unwrap_or(0);
         if let Some(e) = &error {
             self.warn(e.clone());
         }
-        self.overlay = Overlay::Surfaces(SurfacePicker {
-            entries,
-            selected,
-            error,
-        });
+        let now = self.setting.surface.as_ref().map(|s| s.name.as_str());
+        let picker =
+            SurfacePicker::opened(entries, error, |e| Some(e.surface.name.as_str()) == now);
+        self.overlay = Overlay::Surfaces(picker);
     }
 
     /// Enter in the surface picker: the ball on the highlighted surface, the picker closed.
@@ -30,7 +24,7 @@ impl App {
         let Overlay::Surfaces(p) = std::mem::replace(&mut self.overlay, Overlay::None) else {
             return;
         };
-        let Some(entry) = p.entries.into_iter().nth(p.selected) else {
+        let Some(entry) = p.chosen() else {
             return;
         };
         let name = entry.surface.name.clone();

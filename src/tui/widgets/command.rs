@@ -6,10 +6,11 @@
 //! line, and a modal can only cut or wrap what the terminal is too narrow for.
 
 use crate::tui::theme::Theme;
+use crate::tui::widgets::dialog;
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
 use ratatui::text::Line;
-use ratatui::widgets::{Block, Clear, Paragraph, Widget, Wrap};
+use ratatui::widgets::Widget;
 
 /// The command box, centred on the area it is given.
 #[derive(Debug, Clone, Copy)]
@@ -33,25 +34,14 @@ impl Widget for &CommandBox<'_> {
         );
         let hint = hint.as_str();
         // the line's rows once wrapped (at most), a blank row, the hint's rows
-        let rows = (len.div_ceil(inner_w) + 1 + hint.chars().count().div_ceil(inner_w)) as u16;
-        let h = (rows + 2).min(area.height);
-        let popup = Rect::new(
-            area.x + (area.width - w) / 2,
-            area.y + (area.height - h) / 2,
-            w,
-            h,
-        );
-        Clear.render(popup, buf);
+        let rows = len.div_ceil(inner_w) + 1 + hint.chars().count().div_ceil(inner_w);
         let lines = vec![
             Line::raw(self.line.to_string()),
             Line::raw(""),
             Line::styled(hint, self.theme.dim()),
         ];
-        let title = Line::styled(" Command · select it to copy ", self.theme.title());
-        Paragraph::new(lines)
-            .wrap(Wrap { trim: false })
-            .block(Block::bordered().title(title))
-            .render(popup, buf);
+        let title = " Command · select it to copy ";
+        dialog(area, buf, w, rows, title, lines, &self.theme);
     }
 }
 

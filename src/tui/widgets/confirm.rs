@@ -3,10 +3,11 @@
 use crate::tui::save::{question, short_path};
 use crate::tui::state::Confirm;
 use crate::tui::theme::Theme;
+use crate::tui::widgets::{dialog, wrapped_rows};
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
 use ratatui::text::Line;
-use ratatui::widgets::{Block, Clear, Paragraph, Widget, Wrap};
+use ratatui::widgets::Widget;
 
 /// The question, centred on the area it is given.
 #[derive(Debug, Clone, Copy)]
@@ -46,20 +47,9 @@ fn render(confirm: &Confirm, theme: &Theme, area: Rect, buf: &mut Buffer) {
         " y replaces it · n or Esc keeps it",
         theme.dim(),
     ));
-    let w = 60.min(area.width);
-    let h = (lines.len() as u16 + 2).min(area.height);
-    let popup = Rect::new(
-        area.x + (area.width - w) / 2,
-        area.y + (area.height - h) / 2,
-        w,
-        h,
-    );
-    Clear.render(popup, buf);
     let title = format!(" Save preset {} ", confirm.request.name);
-    Paragraph::new(lines)
-        .wrap(Wrap { trim: false })
-        .block(Block::bordered().title(Line::styled(title, theme.title())))
-        .render(popup, buf);
+    let rows = lines.len();
+    dialog(area, buf, 60.min(area.width), rows, &title, lines, theme);
 }
 
 /// A y/n question of [`crate::tui::state::Ask`], centred on the area it is given.
@@ -93,19 +83,7 @@ impl Widget for &AskDialog<'_> {
             ),
         };
         let w = 60.min(area.width);
-        let inner = usize::from(w.saturating_sub(2)).max(1);
-        let rows: usize = lines.iter().map(|l| l.width().max(1).div_ceil(inner)).sum();
-        let h = (rows as u16 + 2).min(area.height);
-        let popup = Rect::new(
-            area.x + (area.width - w) / 2,
-            area.y + (area.height - h) / 2,
-            w,
-            h,
-        );
-        Clear.render(popup, buf);
-        Paragraph::new(lines)
-            .wrap(Wrap { trim: false })
-            .block(Block::bordered().title(Line::styled(title, theme.title())))
-            .render(popup, buf);
+        let rows = wrapped_rows(&lines, w);
+        dialog(area, buf, w, rows, title, lines, &theme);
     }
 }

@@ -65,12 +65,7 @@ impl Widget for &FormBox<'_> {
         fields.append(&mut lines);
         let lines = fields;
         let h = (lines.len() as u16 + 2).min(tall);
-        let popup = Rect::new(
-            area.x + (area.width - w) / 2,
-            area.y + (area.height - h) / 2,
-            w,
-            h,
-        );
+        let popup = crate::tui::widgets::centred(area, w, h);
         Clear.render(popup, buf);
         let title = Line::styled(" Physical inputs ", self.theme.title());
         Paragraph::new(lines)

@@ -25,12 +25,7 @@ fn render(theme: &Theme, scroll: u16, area: Rect, buf: &mut Buffer) {
     let rows = help_rows(area.width);
     let w = help_width(area.width);
     let h = (rows.len() as u16 + 2).min(area.height);
-    let popup = Rect::new(
-        area.x + (area.width - w) / 2,
-        area.y + (area.height - h) / 2,
-        w,
-        h,
-    );
+    let popup = crate::tui::widgets::centred(area, w, h);
     let lines: Vec<Line> = rows
         .into_iter()
         .map(|r| {

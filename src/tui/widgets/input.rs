@@ -115,12 +115,7 @@ fn render(input: &Input, s: &Setting, theme: &Theme, area: Rect, buf: &mut Buffe
             .map(|r| Line::styled(format!(" {r}"), theme.warning())),
     );
     lines.push(Line::styled(keys, theme.dim()));
-    let popup = Rect::new(
-        area.x + (area.width - w) / 2,
-        area.y + (area.height - h) / 2,
-        w,
-        h,
-    );
+    let popup = crate::tui::widgets::centred(area, w, h);
     Clear.render(popup, buf);
     Paragraph::new(lines)
         .block(Block::bordered().title(Line::styled(title, theme.title())))

@@ -19,3 +19,47 @@ pub mod surfaces;
 pub mod tags;
 pub mod title;
 pub mod warning;
+
+use crate::tui::theme::Theme;
+use ratatui::buffer::Buffer;
+use ratatui::layout::Rect;
+use ratatui::text::Line;
+use ratatui::widgets::{Block, Clear, Paragraph, Widget, Wrap};
+
+/// A `w` × `h` rectangle centred on `area` (`w`, `h` no larger than it): where every dialog
+/// and picker sits.
+pub fn centred(area: Rect, w: u16, h: u16) -> Rect {
+    Rect::new(
+        area.x + (area.width - w) / 2,
+        area.y + (area.height - h) / 2,
+        w,
+        h,
+    )
+}
+
+/// The rows `lines` take wrapped inside a dialog `w` columns wide (its border excluded), an
+/// empty line one row.
+pub fn wrapped_rows(lines: &[Line], w: u16) -> usize {
+    let inner = usize::from(w.saturating_sub(2)).max(1);
+    lines.iter().map(|l| l.width().max(1).div_ceil(inner)).sum()
+}
+
+/// A dialog (the questions, the command box): `lines` wrapped in a bordered box `w` columns
+/// wide and `rows` rows inside (as much as `area` has), titled, centred on `area` and cleared.
+pub fn dialog(
+    area: Rect,
+    buf: &mut Buffer,
+    w: u16,
+    rows: usize,
+    title: &str,
+    lines: Vec<Line>,
+    theme: &Theme,
+) {
+    let h = (rows as u16 + 2).min(area.height);
+    let popup = centred(area, w, h);
+    Clear.render(popup, buf);
+    Paragraph::new(lines)
+        .wrap(Wrap { trim: false })
+        .block(Block::bordered().title(Line::styled(title, theme.title())))
+        .render(popup, buf);
+}

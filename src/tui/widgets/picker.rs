@@ -2,18 +2,55 @@
 //! highlighted one marked ▶, scrolled so it stays in view at any size.
 
 use crate::tui::format::clip;
-use crate::tui::picker::Picker;
+use crate::tui::picker::{PickEntry, Picker};
 use crate::tui::theme::Theme;
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
 use ratatui::text::{Line, Span};
 use ratatui::widgets::{Block, Clear, Paragraph, Widget};
 
-/// The picker, centred on the area it is given.
+/// A picker, centred on the area it is given: the preset picker's by default, the surface
+/// picker's as [`crate::tui::widgets::surfaces::SurfacesBox`].
 #[derive(Debug, Clone, Copy)]
-pub struct PickerBox<'a> {
-    pub picker: &'a Picker,
+pub struct PickerBox<'a, E = PickEntry> {
+    pub picker: &'a Picker<E>,
     pub theme: Theme,
+}
+
+/// An entry as its picker writes it, in two rows: `▶` (when highlighted), its name and where
+/// it comes from; then its detail, indented.
+pub trait Listed {
+    /// The popup's title.
+    const TITLE: &'static str;
+    /// What Enter does, in the hint.
+    const ENTER: &'static str;
+    /// Whether a reading error too long for the popup is cut with "…" (the surface picker's),
+    /// or by the border (the preset picker's, as it always was).
+    const CUT_ERROR: bool;
+    fn name(&self) -> &str;
+    /// Where it comes from: "embedded", or its file.
+    fn origin(&self) -> String;
+    /// The second row.
+    fn detail(&self) -> String;
+}
+
+impl Listed for PickEntry {
+    const TITLE: &'static str = " Presets ";
+    const ENTER: &'static str = "Enter loads";
+    const CUT_ERROR: bool = false;
+    fn name(&self) -> &str {
+        &self.preset.name
+    }
+    fn origin(&self) -> String {
+        self.origin.clone()
+    }
+    fn detail(&self) -> String {
+        if self.preset.description.is_empty() {
+            "(no description)".into()
+        } else {
+            self.preset.description.clone()
+        }
+    }
 }
 
 /// The first entry shown so that `selected` is one of `rows` entries shown.
@@ -45,12 +82,7 @@ impl Popup {
         let extra = 1 + u16::from(error);
         let want = 2 * entries as u16 + extra + 2;
         let h = want.min(area.height);
-        let popup = Rect::new(
-            area.x + (area.width - w) / 2,
-            area.y + (area.height - h) / 2,
-            w,
-            h,
-        );
+        let popup = crate::tui::widgets::centred(area, w, h);
         Clear.render(popup, buf);
         let rows = usize::from(h.saturating_sub(2 + extra) / 2).max(1);
         Popup {
@@ -62,7 +94,7 @@ impl Popup {
     }
 }
 
-impl Widget for &PickerBox<'_> {
+impl<E: Listed> Widget for &PickerBox<'_, E> {
     fn render(self, area: Rect, buf: &mut Buffer) {
         let p = self.picker;
         let Popup {
@@ -73,7 +105,12 @@ impl Widget for &PickerBox<'_> {
         } = Popup::cleared(area, buf, p.entries.len(), p.selected, p.error.is_some());
         let mut lines = Vec::new();
         if let Some(e) = &p.error {
-            lines.push(Line::styled(e.clone(), self.theme.error()));
+            let e = if E::CUT_ERROR {
+                clip(e, inner)
+            } else {
+                e.clone()
+            };
+            lines.push(Line::styled(e, self.theme.error()));
         }
         for (i, e) in p.entries.iter().enumerate().skip(first).take(rows) {
             let here = i == p.selected;
@@ -82,9 +119,9 @@ impl Widget for &PickerBox<'_> {
             } else {
                 self.theme.title()
             };
-            let name = clip(&e.preset.name, inner.saturating_sub(1));
+            let name = clip(e.name(), inner.saturating_sub(1));
             let origin = clip(
-                &format!("  {}", e.origin),
+                &format!("  {}", e.origin()),
                 inner.saturating_sub(1 + name.chars().count()),
             );
             lines.push(Line::from(vec![
@@ -92,14 +129,9 @@ impl Widget for &PickerBox<'_> {
                 Span::styled(name, style),
                 Span::styled(origin, self.theme.dim()),
             ]));
-            let text = if e.preset.description.is_empty() {
-                "(no description)"
-            } else {
-                e.preset.description.as_str()
-            };
             lines.push(Line::raw(format!(
                 "   {}",
-                clip(text, inner.saturating_sub(3))
+                clip(&e.detail(), inner.saturating_sub(3))
             )));
         }
         let more = if p.entries.len() > rows {
@@ -107,11 +139,11 @@ impl Widget for &PickerBox<'_> {
         } else {
             String::new()
         };
-        lines.push(Line::styled(
-            format!("↑↓ choose · Enter loads · Esc closes{more}"),
-            self.theme.dim(),
-        ));
-        let title = Line::styled(" Presets ", self.theme.title());
+        // the presets' hint (46 columns at most) fits the narrowest popup (MIN_WIDTH less the
+        // borders): only the surfaces' is ever cut
+        let hint = format!("↑↓ choose · {} · Esc closes{more}", E::ENTER);
+        lines.push(Line::styled(clip(&hint, inner), self.theme.dim()));
+        let title = Line::styled(E::TITLE, self.theme.title());
         Paragraph::new(lines)
             .block(Block::bordered().title(title))
             .render(popup, buf);

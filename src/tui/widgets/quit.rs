@@ -1,10 +1,11 @@
 //! The question before quitting loses work (`q` with pins, measured data or a fit).
 
 use crate::tui::theme::Theme;
+use crate::tui::widgets::{dialog, wrapped_rows};
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
 use ratatui::text::Line;
-use ratatui::widgets::{Block, Clear, Paragraph, Widget, Wrap};
+use ratatui::widgets::Widget;
 
 /// "Quit and lose …?", centred on the area it is given.
 #[derive(Debug, Clone, Copy)]
@@ -24,19 +25,7 @@ impl Widget for &QuitDialog<'_> {
             Line::styled(" q or y quits · n or Esc stays", self.theme.dim()),
         ];
         let w = 50.min(area.width);
-        let inner = usize::from(w.saturating_sub(2));
-        let rows: usize = lines.iter().map(|l| l.width().div_ceil(inner.max(1))).sum();
-        let h = (rows as u16 + 2).min(area.height);
-        let popup = Rect::new(
-            area.x + (area.width - w) / 2,
-            area.y + (area.height - h) / 2,
-            w,
-            h,
-        );
-        Clear.render(popup, buf);
-        Paragraph::new(lines)
-            .wrap(Wrap { trim: false })
-            .block(Block::bordered().title(Line::styled(" Quit ", self.theme.title())))
-            .render(popup, buf);
+        let rows = wrapped_rows(&lines, w);
+        dialog(area, buf, w, rows, " Quit ", lines, &self.theme);
     }
 }

@@ -1,22 +1,15 @@
 //! The keys of the crosshair (`x`) and of the physical-inputs form (`m`).
 
 use super::{Action, Scroll};
-use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
+use ratatui::crossterm::event::{KeyCode, KeyEvent};
 
 /// With the crosshair on: arrows move it a step (Shift: [`crate::tui::crosshair::LEAP`]
 /// steps), Tab or `x` the next chart, Esc off.
 pub(super) fn crosshair(key: KeyEvent) -> Option<Action> {
-    let n = if key.modifiers.contains(KeyModifiers::SHIFT) {
-        crate::tui::crosshair::LEAP as i32
-    } else {
-        1
-    };
-    let to = |dx, dy| Some(Action::CrosshairMove { dx, dy });
+    if let Some((dx, dy)) = super::arrow(key, crate::tui::crosshair::LEAP as i32) {
+        return Some(Action::CrosshairMove { dx, dy });
+    }
     match key.code {
-        KeyCode::Right => to(n, 0),
-        KeyCode::Left => to(-n, 0),
-        KeyCode::Up => to(0, n),
-        KeyCode::Down => to(0, -n),
         KeyCode::Tab | KeyCode::Char('x') => Some(Action::CrosshairNext),
         KeyCode::Esc => Some(Action::CrosshairOff),
         _ => None,

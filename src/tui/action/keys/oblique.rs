@@ -48,18 +48,9 @@ pub fn charts(key: KeyEvent) -> Option<Action> {
 
 /// On the map: the arrows move the cursor a cell, θ along ← →, μ along ↑ ↓ (Shift: 8).
 pub fn map(key: KeyEvent) -> Option<Action> {
-    let n = if key.modifiers.contains(KeyModifiers::SHIFT) {
-        MAP_LEAP
-    } else {
-        1
-    };
-    let cursor = |angle, friction| Some(ObliqueKey::Cursor { angle, friction });
-    let k = match key.code {
-        KeyCode::Right => cursor(n, 0),
-        KeyCode::Left => cursor(-n, 0),
-        KeyCode::Up => cursor(0, n),
-        KeyCode::Down => cursor(0, -n),
-        _ => shared(key),
+    let k = match super::arrow(key, MAP_LEAP) {
+        Some((angle, friction)) => Some(ObliqueKey::Cursor { angle, friction }),
+        None => shared(key),
     };
     k.map(Action::Oblique)
 }

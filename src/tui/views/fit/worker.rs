@@ -51,10 +51,6 @@ impl Job for FitRequest {
     type Output = FitNews;
     const NAME: &'static str = "fit";
 
-    fn run_while(&self, go_on: &mut dyn FnMut() -> bool) -> Option<Result<FitNews, String>> {
-        self.run_refining(go_on, &mut |_| {})
-    }
-
     /// The fit, its progress to `partial` every [`PROGRESS_EVERY`]; it stops at its next
     /// model run once `go_on` says a later fit is asked for, and its outcome (then an
     /// "interrupted" error) still comes back: `App` keeps the id of the latest and drops it.

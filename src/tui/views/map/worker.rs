@@ -21,10 +21,6 @@ impl Job for MapJob {
     type Output = Map;
     const NAME: &'static str = "map";
 
-    fn run_while(&self, go_on: &mut dyn FnMut() -> bool) -> Option<Result<Map, String>> {
-        self.run_refining(go_on, &mut |_| {})
-    }
-
     /// Each pass but the last to `partial`, the last as the answer; `None` once cancelled
     /// (inside a pass) or superseded (between passes), or when the map was complete already.
     fn run_refining(

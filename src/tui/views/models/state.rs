@@ -56,8 +56,13 @@ impl ModelsRequest {
 impl Job for ModelsRequest {
     type Output = ModelsData;
 
-    /// The calibrations first, then the sweep one speed at a time, asking `go_on` before each.
-    fn run_while(&self, go_on: &mut dyn FnMut() -> bool) -> Option<Result<ModelsData, String>> {
+    /// The calibrations first, then the sweep one speed at a time, asking `go_on` before each;
+    /// nothing to show before the whole.
+    fn run_refining(
+        &self,
+        go_on: &mut dyn FnMut() -> bool,
+        _partial: &mut dyn FnMut(ModelsData),
+    ) -> Option<Result<ModelsData, String>> {
         let err = |e: &dyn std::fmt::Display| Some(Err(e.to_string()));
         if !go_on() {
             return None;

@@ -18,7 +18,12 @@ impl Job for MapJob {
     type Output = ObliqueMap;
     const NAME: &'static str = "oblique-map";
 
-    fn run_while(&self, go_on: &mut dyn FnMut() -> bool) -> Option<Result<ObliqueMap, String>> {
+    /// The whole map or nothing: no pass to show early.
+    fn run_refining(
+        &self,
+        go_on: &mut dyn FnMut() -> bool,
+        _partial: &mut dyn FnMut(ObliqueMap),
+    ) -> Option<Result<ObliqueMap, String>> {
         if self.cancel.load(Ordering::Relaxed) || !go_on() {
             return None;
         }
