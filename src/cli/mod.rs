@@ -35,6 +35,7 @@ pub mod reproduce;
 pub mod run;
 mod run_text;
 pub mod shot;
+pub mod shot_net;
 mod shot_after;
 pub mod standards;
 pub mod statics;

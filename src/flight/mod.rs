@@ -162,6 +162,19 @@ pub struct Shot<P> {
     pub legs: Vec<Leg>,
     /// Samples evenly spaced in time from launch to the end, when asked for.
     pub trajectory: Vec<State>,
+    /// Where the ball first crossed the watched x moving forward ([`shot_watching`]; `None`
+    /// when nothing was watched or the shot ended before it).
+    pub crossing: Option<Crossing>,
+}
+
+/// The ball's first crossing of a watched x (a net's plane) moving forward: the state there,
+/// located from its step's start as a distance end is, and the bounces made before it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Crossing {
+    /// The state at x = the watched x (to rounding).
+    pub state: State,
+    /// Bounces made before it.
+    pub bounces: usize,
 }
 
 /// A shot without an answer.
@@ -188,6 +201,10 @@ struct Flier<'a> {
     steps: usize,
     /// Every accepted step's start, kept when samples are asked for.
     record: Option<Vec<(f64, Y)>>,
+    /// The x watched for a crossing, until it is crossed.
+    watch: Option<f64>,
+    /// The crossing (t, state), once found.
+    crossed: Option<(f64, Y)>,
 }
 
 impl Flier<'_> {
@@ -204,6 +221,20 @@ impl Flier<'_> {
             (Some(a), _) => Some((a.0, at(a.1, 1, r), Stop::Landing)),
             (None, Some((d, b))) => Some((b.0, at(b.1, 0, d), Stop::Distance)),
             (None, None) => None,
+        }
+    }
+
+    /// The watched x crossed forward inside the accepted step from (t, `y`) to `y1` (of size
+    /// `h`), before its event at `until` (the step is cut there): located from the step's
+    /// start as a distance end is (`step::locate`), and the watch ended.
+    fn watch_crossing(&mut self, (t, y, k1): (f64, &Y, &Y), (y1, h): (&Y, f64), until: Option<f64>) {
+        let Some(d) = self.watch.filter(|&d| y[0] < d && y1[0] >= d) else {
+            return;
+        };
+        let (hs, ys) = step::locate(self.body, (y, k1), (h, y1), 0, d);
+        if until.is_none_or(|u| hs <= u) {
+            self.crossed = Some((t + hs, at(ys, 0, d)));
+            self.watch = None;
         }
     }
 
@@ -239,7 +270,9 @@ impl Flier<'_> {
             if let Some(rec) = &mut self.record {
                 rec.push((t, y));
             }
-            if let Some((hs, ys, stop)) = self.event((&y, &k1), &y1, h) {
+            let event = self.event((&y, &k1), &y1, h);
+            self.watch_crossing((t, &y, &k1), (&y1, h), event.as_ref().map(|e| e.0));
+            if let Some((hs, ys, stop)) = event {
                 return Ok((t + hs, ys, stop));
             }
             let last = self.ends.time.is_some_and(|end| t + h >= end);
@@ -277,6 +310,21 @@ pub fn shot<P, E>(
     launch: &Launch,
     ends: &Ends,
     samples: usize,
+    bounce: impl FnMut(&Arrival) -> Result<(Rebound, P), E>,
+) -> Result<Shot<P>, FlightError<E>> {
+    shot_watching(body, mass, launch, ends, samples, None, bounce)
+}
+
+/// [`shot`], and where the ball first crosses x = `watch` moving forward (a net's plane,
+/// docs/flight.md §6): `Shot::crossing`. The flight is the same bit for bit: the crossing is
+/// located from its step's start, and the step is taken as without the watch.
+pub fn shot_watching<P, E>(
+    body: &Body,
+    mass: f64,
+    launch: &Launch,
+    ends: &Ends,
+    samples: usize,
+    watch: Option<f64>,
     mut bounce: impl FnMut(&Arrival) -> Result<(Rebound, P), E>,
 ) -> Result<Shot<P>, FlightError<E>> {
     let (s, c) = launch.elevation_deg.to_radians().sin_cos();
@@ -294,11 +342,20 @@ pub fn shot<P, E>(
         h: FIRST_STEP,
         steps: 0,
         record: (samples > 0).then(Vec::new),
+        watch,
+        crossed: None,
     };
     let (mut t, mut bounces, mut legs) = (0.0, Vec::new(), Vec::new());
+    let mut crossing = None;
     loop {
         let (t0, e0) = (t, energy(mass, &y));
         let (t1, y1, stop) = fl.leg(t, y).map_err(|()| FlightError::Endless)?;
+        if let Some((tc, yc)) = fl.crossed.take() {
+            crossing = Some(Crossing {
+                state: State::of(tc, &yc),
+                bounces: bounces.len(),
+            });
+        }
         legs.push(Leg {
             t0,
             t1,
@@ -325,6 +382,7 @@ pub fn shot<P, E>(
                 reason,
                 legs,
                 trajectory,
+                crossing,
             });
         }
         let b = bounce_at(body.radius, t_end, &y_end, &mut bounce).map_err(FlightError::Bounce)?;
