@@ -239,7 +239,12 @@ impl Ball {
         }
         if let Some(net) = &s.net {
             check("net", net.x, net.x > 0.0, "its distance must be positive")?;
-            check("net", net.height, net.height > 0.0, "its height must be positive")?;
+            check(
+                "net",
+                net.height,
+                net.height > 0.0,
+                "its height must be positive",
+            )?;
         }
         if s.samples == 1 || s.samples > super::MAX_SAMPLES {
             return Err(BallError::Samples(s.samples));

@@ -228,8 +228,12 @@ fn after_bounce_reason(e: super::AfterBounceError) -> String {
     match e {
         E::NotPositive(_) => "must be positive".into(),
         E::NoBounce => "the shot makes no bounce".into(),
-        E::EndsBefore { bounce, t } => format!("the shot ends (at t = {t} s) before its bounce {bounce}"),
-        E::PassesBefore { bounce, x } => format!("the ball passes x = {x} m before its bounce {bounce}"),
+        E::EndsBefore { bounce, t } => {
+            format!("the shot ends (at t = {t} s) before its bounce {bounce}")
+        }
+        E::PassesBefore { bounce, x } => {
+            format!("the ball passes x = {x} m before its bounce {bounce}")
+        }
         E::Shot(e) => e.to_string(),
     }
 }

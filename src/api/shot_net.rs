@@ -8,8 +8,8 @@ use crate::flight::Crossing;
 use crate::text::given;
 use serde::Serialize;
 
-/// The tennis net's height at the centre (m): "3 feet (0.914 m) at the centre, where it shall
-/// be held down taut by a strap", ITF Rules of Tennis, Rule 1 (docs/flight.md §6).
+/// The tennis net's height at the centre (m): 3 feet, held down there by a strap (ITF Rules
+/// of Tennis, Rule 1; docs/flight.md §6 says where the figure was read).
 pub const TENNIS_NET_HEIGHT: f64 = 0.914;
 
 /// A vertical net across the path: its plane at x = `x` (m from the launch point), its top
@@ -88,7 +88,10 @@ impl NetReport {
                 let lowest = if c < 0.0 {
                     format!("{} m under the top", given(-c, 3))
                 } else {
-                    format!("{} m over the top, within its radius of the cord", given(c, 3))
+                    format!(
+                        "{} m over the top, within its radius of the cord",
+                        given(c, 3)
+                    )
                 };
                 format!(
                     "the ball meets {at} ({} m high): its centre crosses it {} m up, its lowest \

@@ -276,7 +276,11 @@ fn bounces_csv(out: &mut dyn Write, s: &ShotReport) -> std::io::Result<()> {
 fn trajectory_csv(out: &mut dyn Write, s: &ShotReport) -> std::io::Result<()> {
     csv_header(out, &TRAJECTORY_COLUMNS, s)?;
     for p in &s.trajectory {
-        csv_cells(out, [p.t, p.x, p.y, p.vx, p.vy, p.spin].map(num).to_vec(), s)?;
+        csv_cells(
+            out,
+            [p.t, p.x, p.y, p.vx, p.vy, p.spin].map(num).to_vec(),
+            s,
+        )?;
     }
     Ok(())
 }

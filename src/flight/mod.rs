@@ -227,7 +227,12 @@ impl Flier<'_> {
     /// The watched x crossed forward inside the accepted step from (t, `y`) to `y1` (of size
     /// `h`), before its event at `until` (the step is cut there): located from the step's
     /// start as a distance end is (`step::locate`), and the watch ended.
-    fn watch_crossing(&mut self, (t, y, k1): (f64, &Y, &Y), (y1, h): (&Y, f64), until: Option<f64>) {
+    fn watch_crossing(
+        &mut self,
+        (t, y, k1): (f64, &Y, &Y),
+        (y1, h): (&Y, f64),
+        until: Option<f64>,
+    ) {
         let Some(d) = self.watch.filter(|&d| y[0] < d && y1[0] >= d) else {
             return;
         };

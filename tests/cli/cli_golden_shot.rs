@@ -54,7 +54,10 @@ const CASES: &[(&str, &str)] = &[
         "mc --shot --preset tennis --height 2.8 --speed 50 --friction 0.6 --vary k_p=5%",
     ),
     // the net (docs/flight.md §6): the serve meets it; at −5° it clears it
-    ("shot-text-net", "shot --preset tennis --height 2.8 --speed 50 --elevation -6 --spin 200 --friction 0.6 --net 11.89"),
+    (
+        "shot-text-net",
+        "shot --preset tennis --height 2.8 --speed 50 --elevation -6 --spin 200 --friction 0.6 --net 11.89",
+    ),
     (
         "shot-json-net",
         "shot --preset tennis --height 2.8 --speed 50 --elevation -5 --spin 200 --friction 0.6 \

@@ -19,19 +19,33 @@ fn the_json_says_whether_the_serve_clears_the_net() {
     let plain = json(&format!("{SERVE} --format json"));
     let low = json(&format!("{SERVE} --net 11.89 --format json"));
     let net = &low["net"];
-    assert_eq!((net["x"].as_f64(), net["height"].as_f64()), (Some(11.89), Some(0.914)));
+    assert_eq!(
+        (net["x"].as_f64(), net["height"].as_f64()),
+        (Some(11.89), Some(0.914))
+    );
     assert_eq!(net["cleared"], false);
     assert!(net["clearance"].as_f64().unwrap() < 0.0);
     assert_eq!(net["bounces_before"], 0);
-    assert!(net["warnings"][0].as_str().unwrap().contains("as if there were no net"));
+    assert!(
+        net["warnings"][0]
+            .as_str()
+            .unwrap()
+            .contains("as if there were no net")
+    );
     let mut without = low.clone();
     without.as_object_mut().unwrap().remove("net");
     assert_eq!(without, plain);
-    let high = json(&format!("{} --net 11.89,0.914 --format json", SERVE.replace("-6", "-5")));
+    let high = json(&format!(
+        "{} --net 11.89,0.914 --format json",
+        SERVE.replace("-6", "-5")
+    ));
     assert_eq!(high["net"]["cleared"], true);
     assert_eq!(high["net"]["warnings"], serde_json::json!([]));
     // HEIGHT given: a higher net is met
-    let tall = json(&format!("{} --net 11.89,1.2 --format json", SERVE.replace("-6", "-5")));
+    let tall = json(&format!(
+        "{} --net 11.89,1.2 --format json",
+        SERVE.replace("-6", "-5")
+    ));
     assert_eq!(tall["net"]["cleared"], false);
 }
 
@@ -71,14 +85,20 @@ fn the_svg_draws_the_net() {
     common::ok_calibrated(&common::argv(&line));
     let text = std::fs::read_to_string(&svg).unwrap();
     roxmltree::Document::parse(&text).unwrap();
-    assert!(text.contains("net (0.914 m; met)"), "the legend names the net");
+    assert!(
+        text.contains("net (0.914 m; met)"),
+        "the legend names the net"
+    );
 }
 
 #[test]
 fn a_net_without_a_distance_or_height_is_refused_by_name() {
     for (net, says) in [
         ("0", "invalid --net: 0 (its distance must be positive)"),
-        ("11.89,-1", "invalid --net: -1 (its height must be positive)"),
+        (
+            "11.89,-1",
+            "invalid --net: -1 (its height must be positive)",
+        ),
         ("11.89,abc", "the net's height"),
         ("x", "the net's distance"),
     ] {
@@ -117,7 +137,10 @@ fn mc_shot_gives_the_fraction_that_clears_the_net() {
 /// height spread among the stats; refused as `shot`'s where it means nothing.
 #[test]
 fn mc_shot_spreads_where_the_ball_is_a_metre_past_its_bounce() {
-    let shot = json(&format!("{} --after-bounce 1 --format json", SERVE.replace("-6", "-5")));
+    let shot = json(&format!(
+        "{} --after-bounce 1 --format json",
+        SERVE.replace("-6", "-5")
+    ));
     let mc = json(
         "mc --shot --preset tennis --height 2.8 --speed 50 --elevation -5 --spin 200 \
          --friction 0.6 --after-bounce 1 --vary speed=0 --samples 20 --format json",
@@ -130,5 +153,8 @@ fn mc_shot_spreads_where_the_ball_is_a_metre_past_its_bounce() {
          --after-bounce 1 --vary speed=1%",
     ));
     assert_eq!(o.code, 2, "{}", o.stderr);
-    assert!(o.stderr.contains("invalid --after-bounce: the shot makes no bounce"));
+    assert!(
+        o.stderr
+            .contains("invalid --after-bounce: the shot makes no bounce")
+    );
 }

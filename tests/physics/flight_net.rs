@@ -139,7 +139,13 @@ fn a_net_past_the_bounce_is_crossed_after_it_and_one_past_the_end_not_at_all() {
 #[test]
 fn a_net_with_no_distance_or_height_is_refused_by_name() {
     let ball = tennis();
-    for (x, height) in [(0.0, 0.9), (-1.0, 0.9), (5.0, 0.0), (f64::NAN, 0.9), (5.0, f64::INFINITY)] {
+    for (x, height) in [
+        (0.0, 0.9),
+        (-1.0, 0.9),
+        (5.0, 0.0),
+        (f64::NAN, 0.9),
+        (5.0, f64::INFINITY),
+    ] {
         let mut s = serve(-5.0);
         s.net = Some(Net { x, height });
         let e = ball.shot(&s).unwrap_err().to_string();
@@ -181,10 +187,16 @@ fn the_monte_carlo_counts_the_samples_that_clear_the_net() {
     let c = net.clearance.unwrap();
     assert!(c.min < 0.0 && c.max > 0.0, "{c:?}");
     // without a net there is no net answer
-    assert!(ball.shot_mc(&mc(ShotSpec::new(2.8, 50.0, -5.5, 200.0, 0.6), spread, None))
+    assert!(
+        ball.shot_mc(&mc(
+            ShotSpec::new(2.8, 50.0, -5.5, 200.0, 0.6),
+            spread,
+            None
+        ))
         .unwrap()
         .net
-        .is_none());
+        .is_none()
+    );
 }
 
 /// `after_bounce`: each sample ends D m past its own bounce (not the nominal's), and the
@@ -197,7 +209,11 @@ fn the_monte_carlo_ends_each_sample_past_its_own_bounce() {
         spin: 30.0,
         ..ShotSpread::default()
     };
-    let spec = mc(ShotSpec::new(2.8, 50.0, -5.0, 200.0, 0.6), spread, Some(1.0));
+    let spec = mc(
+        ShotSpec::new(2.8, 50.0, -5.0, 200.0, 0.6),
+        spread,
+        Some(1.0),
+    );
     let r = ball.shot_mc(&spec).unwrap();
     let names: Vec<&str> = r.end_stats.iter().map(|(n, _)| *n).collect();
     assert_eq!(names, ["end_y", "end_t"]);

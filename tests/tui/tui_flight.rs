@@ -32,7 +32,14 @@ fn the_view_at_every_size() {
         let t = draw(&app, w, h);
         let text = screen_text(&t).join("\n");
         // the net, the landing and the bounce's numbers are in the readout
-        for needle in ["flight", "clears by 0.183 m", "lands", "leaves", "16.7", "27.04"] {
+        for needle in [
+            "flight",
+            "clears by 0.183 m",
+            "lands",
+            "leaves",
+            "16.7",
+            "27.04",
+        ] {
             assert!(text.contains(needle), "{w}×{h}: {needle}\n{text}");
         }
         insta::assert_snapshot!(format!("flight_{w}x{h}"), t.backend());
@@ -139,7 +146,10 @@ fn e_exports_the_path_headed_by_the_shot_line() {
         request.header
     );
     let (_, path) = &request.charts[0];
-    assert!(path.series.iter().any(|s| s.id == "net"), "the figure draws the net");
+    assert!(
+        path.series.iter().any(|s| s.id == "net"),
+        "the figure draws the net"
+    );
     let dir = tempfile::tempdir().unwrap();
     let files = export::write(&request, dir.path()).unwrap();
     let names = file_names(&files);
@@ -159,14 +169,17 @@ fn e_exports_the_path_headed_by_the_shot_line() {
 #[test]
 fn the_default_serve_clears_the_net_and_the_readout_says_by_how_much() {
     let mut app = serve();
-    let net = app.flight_view().report().unwrap().net.clone().expect("a net");
+    let net = app
+        .flight_view()
+        .report()
+        .unwrap()
+        .net
+        .clone()
+        .expect("a net");
     assert!(net.cleared, "{net:?}");
     assert_eq!((net.x, net.height), (11.89, 0.914));
     press(&mut app, &[KeyCode::Char('A')]);
     assert_eq!(app.flight_view().values.elevation, -6.0);
     let text = screen_text(&draw(&app, 120, 40)).join("\n");
-    assert!(
-        text.contains("net 11.89 m: 0.0296 m too low"),
-        "{text}"
-    );
+    assert!(text.contains("net 11.89 m: 0.0296 m too low"), "{text}");
 }

@@ -56,7 +56,15 @@ impl FlightValues {
     /// `bouncelab shot`'s words for the net (`--net X,HEIGHT`), none without one.
     pub fn net_words(&self) -> Vec<String> {
         use crate::text::number;
-        self.net.iter().flat_map(|n| ["--net".into(), format!("{},{}", number(n.x), number(n.height))]).collect()
+        self.net
+            .iter()
+            .flat_map(|n| {
+                [
+                    "--net".into(),
+                    format!("{},{}", number(n.x), number(n.height)),
+                ]
+            })
+            .collect()
     }
 
     pub fn with(mut self, p: FlightParam, v: f64) -> FlightValues {
