@@ -193,10 +193,8 @@ pub fn run(a: &ShotArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     }
     report_then_commit(out, &report, files)?;
     // the net's warning belongs to no CSV row: on stderr, as a time series' (`run --history`)
-    if a.format == ShotFormat::Csv {
-        if let Some(n) = &shot.net {
-            output::warnings_to_stderr(&n.warnings);
-        }
+    if let (ShotFormat::Csv, Some(n)) = (a.format, &shot.net) {
+        output::warnings_to_stderr(&n.warnings);
     }
     Ok(())
 }

@@ -9,9 +9,11 @@
 //! leaves from where it landed, and the flight is planar (spin about the axis normal to it).
 
 pub mod aero;
+mod crossing;
 pub mod step;
 
 pub use aero::{Aero, Decay, Drag, Lift};
+pub use crossing::Crossing;
 pub use step::Body;
 
 use serde::Serialize;
@@ -167,16 +169,6 @@ pub struct Shot<P> {
     pub crossing: Option<Crossing>,
 }
 
-/// The ball's first crossing of a watched x (a net's plane) moving forward: the state there,
-/// located from its step's start as a distance end is, and the bounces made before it.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Crossing {
-    /// The state at x = the watched x (to rounding).
-    pub state: State,
-    /// Bounces made before it.
-    pub bounces: usize,
-}
-
 /// A shot without an answer.
 #[derive(Debug, Clone, PartialEq)]
 pub enum FlightError<E> {
@@ -221,25 +213,6 @@ impl Flier<'_> {
             (Some(a), _) => Some((a.0, at(a.1, 1, r), Stop::Landing)),
             (None, Some((d, b))) => Some((b.0, at(b.1, 0, d), Stop::Distance)),
             (None, None) => None,
-        }
-    }
-
-    /// The watched x crossed forward inside the accepted step from (t, `y`) to `y1` (of size
-    /// `h`), before its event at `until` (the step is cut there): located from the step's
-    /// start as a distance end is (`step::locate`), and the watch ended.
-    fn watch_crossing(
-        &mut self,
-        (t, y, k1): (f64, &Y, &Y),
-        (y1, h): (&Y, f64),
-        until: Option<f64>,
-    ) {
-        let Some(d) = self.watch.filter(|&d| y[0] < d && y1[0] >= d) else {
-            return;
-        };
-        let (hs, ys) = step::locate(self.body, (y, k1), (h, y1), 0, d);
-        if until.is_none_or(|u| hs <= u) {
-            self.crossed = Some((t + hs, at(ys, 0, d)));
-            self.watch = None;
         }
     }
 
