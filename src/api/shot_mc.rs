@@ -10,8 +10,9 @@ use rand_distr::{Distribution, StandardNormal, StandardUniform};
 use rayon::prelude::*;
 use serde::Serialize;
 
-/// Samples allowed at most: their six numbers are kept for the quantiles (48 bytes a
-/// sample, about 100 MB at most with the sorting).
+/// Samples allowed at most: their ten numbers (the six quantities, the end's height and
+/// time, the net's verdict and clearance) are kept for the quantiles (80 bytes a sample,
+/// 160 MB, and one column of 16 MB sorted at a time: about 180 MB at most).
 pub const MAX_SHOT_SAMPLES: usize = 2_000_000;
 
 /// The launch's spreads: the sd of a normal spread, the half-width of a uniform one.
