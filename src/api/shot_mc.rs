@@ -117,6 +117,8 @@ pub struct ShotMcReport {
     pub end_stats: Vec<(&'static str, Spread)>,
     /// The net's answer over the samples, with a net.
     pub net: Option<NetMc>,
+    /// D when each sample ended D m past its own bounce.
+    pub after_bounce: Option<f64>,
     /// The nominal shot's warnings (its bounces', as `shot` gives them for the same flags),
     /// as `mc` gives its nominal impact's: "outside calibration: …" as it is, any other
     /// opened by "at the nominal launch: ". The samples' own are not made
@@ -348,6 +350,7 @@ impl Ball {
             stats,
             end_stats,
             net: net_mc(&spec.shot, &ok),
+            after_bounce: spec.after_bounce,
             warnings: nominal_warnings(&nominal),
         }))
     }

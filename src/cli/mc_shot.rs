@@ -235,8 +235,13 @@ fn json(ran: &Ran<'_>, r: &ShotMcReport) -> serde_json::Value {
         "ball": ball.record_json(),
         "surface": ran.surface,
     });
-    if let (Some(net), Some(map)) = (&r.net, j.as_object_mut()) {
-        map.insert("net".into(), serde_json::to_value(net).unwrap_or_default());
+    if let Some(map) = j.as_object_mut() {
+        if let Some(net) = &r.net {
+            map.insert("net".into(), serde_json::to_value(net).unwrap_or_default());
+        }
+        if let Some(d) = r.after_bounce {
+            map.insert("after_bounce".into(), d.into());
+        }
     }
     j
 }
@@ -256,6 +261,9 @@ fn text(out: &mut dyn Write, ran: &Ran<'_>, r: &ShotMcReport) -> std::io::Result
         given(v.height, 4)
     )?;
     super::shot::ran_lines(out, ran.ball, ran.surface, &ran.aero)?;
+    if let Some(d) = r.after_bounce {
+        writeln!(out, "end: {} m past each shot's own bounce", given(d, 6))?;
+    }
     let mut rows = vec![
         ["", "mean", "sd", "2.5 %", "median", "97.5 %"]
             .map(String::from)

@@ -148,6 +148,7 @@ fn mc_shot_spreads_where_the_ball_is_a_metre_past_its_bounce() {
     assert_eq!(mc["stats"]["end_x"]["q50"], shot["end"]["x"]);
     assert_eq!(mc["stats"]["end_y"]["q50"], shot["end"]["y"]);
     assert_eq!(mc["stats"]["end_t"]["q50"], shot["end"]["t"]);
+    assert_eq!(mc["after_bounce"], 1.0);
     let o = common::bl(&common::argv(
         "mc --shot --preset tennis --height 2.8 --speed 50 --friction 0.6 --bounces 0 \
          --after-bounce 1 --vary speed=1%",

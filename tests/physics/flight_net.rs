@@ -217,6 +217,7 @@ fn the_monte_carlo_ends_each_sample_past_its_own_bounce() {
     let r = ball.shot_mc(&spec).unwrap();
     let names: Vec<&str> = r.end_stats.iter().map(|(n, _)| *n).collect();
     assert_eq!(names, ["end_y", "end_t"]);
+    assert_eq!(r.after_bounce, Some(1.0));
     let mut past = Vec::new();
     let mut heights = Vec::new();
     for i in 0..300 {
