@@ -95,6 +95,7 @@ mod rows;
 mod shot;
 mod shot_after;
 mod shot_mc;
+mod shot_net;
 mod standard_conditions;
 mod standards;
 mod statics;
@@ -128,7 +129,10 @@ pub use report::{BallHeader, Energy, FitReport, ImpactReport, MeasuredAt};
 pub use rows::{ImpactRow, Rest, impact_row, impact_rows};
 pub use shot::{ShotBounce, ShotEnd, ShotReport, ShotSpec};
 pub use shot_after::AfterBounceError;
-pub use shot_mc::{SHOT_MC_QUANTITIES, ShotMcReport, ShotMcSpec, ShotSpread, Spread};
+pub use shot_mc::{
+    NetMc, SHOT_MC_END_QUANTITIES, SHOT_MC_QUANTITIES, ShotMcReport, ShotMcSpec, ShotSpread, Spread,
+};
+pub use shot_net::{Net, NetReport, TENNIS_NET_HEIGHT};
 pub use standard_conditions::test_words;
 pub use standards::{
     ConditionsEntry, PressureLossEntry, PressureLossTest, StandardEntry, standards,

@@ -678,6 +678,10 @@ def oblique(
     ``history``, ``samples`` of it (2 … 100000, default 400; refused without ``history``, as
     ``run`` refuses it)."""
 
+NetArg = Union[float, tuple[float, float]]
+"""``net=``: a net's distance from the launch (m; its height the tennis net's 0.914 m at
+the centre), or (distance, height): the command line's ``--net DISTANCE[,HEIGHT]``."""
+
 def shot(
     preset: str = "tennis",
     *,
@@ -693,6 +697,7 @@ def shot(
     inertia_factor: Optional[float] = None,
     tangential_damping: Optional[float] = None,
     surface: Optional[SurfaceArg] = None,
+    net: Optional[NetArg] = None,
     height: float,
     speed: float,
     elevation: float = 0.0,
@@ -714,7 +719,9 @@ def shot(
     contact_time, slid_throughout, and warnings a list), ``end`` (reason, t, x, y, vx, vy,
     spin, speed), ``trajectory`` (arrays t, x, y, vx, vy, spin; ``samples`` of them) and
     ``source`` (the aerodynamic models used), ``surface`` (the JSON's ``surface`` object),
-    ``ball`` and ``conditions``. The overrides are
+    ``ball`` and ``conditions``; with ``net=`` (:data:`NetArg`) ``net``, the JSON's ``net``
+    object (x, height, clearance, cleared, t, y, bounces_before, warnings: the flight is the
+    same, computed as if the net were absent). The overrides are
     the command line's: ``drag_coefficient``, ``lift_coefficient``, ``spin_decay``,
     ``air_density``, ``tangential_stiffness``, ``inertia_factor``, ``tangential_damping`` and
     :class:`BallArguments`."""
@@ -734,6 +741,7 @@ def shots(
     inertia_factor: Optional[float] = None,
     tangential_damping: Optional[float] = None,
     surface: Optional[SurfaceArg] = None,
+    net: Optional[NetArg] = None,
     height: Floats,
     speed: Floats,
     elevation: Optional[Floats] = None,
@@ -741,11 +749,13 @@ def shots(
     law: Optional[Law] = None,
     params: Optional[ParamSet] = None,
     **ball: Unpack[BallArguments],
-) -> dict[str, Array]:
+) -> dict[str, Any]:
     """Many shots, ``height``, ``speed``, ``elevation`` and ``spin`` (``None``: 0) broadcast
     together as a ufunc's arguments: arrays of the broadcast shape ``landing_t``, ``landing_x``, ``v_in``,
     ``angle_in``, ``v_out``, ``angle_out``, ``spin_out`` (the first bounce; NaN with
-    bounces=0) and ``end_t``, ``end_x``, ``end_y``, ``end_vx``, ``end_vy``."""
+    bounces=0) and ``end_t``, ``end_x``, ``end_y``, ``end_vx``, ``end_vy``; with ``net=``
+    ``net_clearance`` (NaN where the ball does not reach it) and ``net_cleared`` (bools);
+    and ``surface``, the surface dict ``shot`` gives."""
 
 Dist = Literal["normal", "uniform", "lognormal"]
 

@@ -3,7 +3,7 @@
 
 use crate::ball_args::ball_pyfunction;
 use crate::error;
-use bouncelab::api::{ShotReport, ShotSpec};
+use bouncelab::api::{Net, NetReport, ShotReport, ShotSpec, TENNIS_NET_HEIGHT};
 use bouncelab::flight::{Ends, Launch};
 use numpy::PyArray1;
 use pyo3::exceptions::PyValueError;
@@ -84,7 +84,43 @@ fn report<'py>(py: Python<'py>, r: &ShotReport) -> PyResult<Bound<'py, PyDict>> 
     }
     d.set_item("end", e)?;
     d.set_item("source", r.aero.source)?;
+    if let Some(n) = &r.net {
+        d.set_item("net", net_dict(py, n)?)?;
+    }
     Ok(d)
+}
+
+/// The net's answer as a dict, the JSON's `net` object (None where it has null).
+fn net_dict<'py>(py: Python<'py>, n: &NetReport) -> PyResult<Bound<'py, PyDict>> {
+    let d = PyDict::new(py);
+    d.set_item("x", n.x)?;
+    d.set_item("height", n.height)?;
+    d.set_item("clearance", n.clearance)?;
+    d.set_item("cleared", n.cleared)?;
+    d.set_item("t", n.t)?;
+    d.set_item("y", n.y)?;
+    d.set_item("bounces_before", n.bounces_before)?;
+    d.set_item("warnings", n.warnings.clone())?;
+    Ok(d)
+}
+
+/// `net=`: the distance (the tennis net's height at the centre, 0.914 m), or (distance,
+/// height), as the command line's `--net DISTANCE[,HEIGHT]`; the library refuses a value
+/// that is not positive (`invalid net: …`).
+fn net_of(net: Option<&Bound<'_, PyAny>>) -> PyResult<Option<Net>> {
+    let Some(net) = net else {
+        return Ok(None);
+    };
+    if let Ok(x) = net.extract::<f64>() {
+        return Ok(Some(Net {
+            x,
+            height: TENNIS_NET_HEIGHT,
+        }));
+    }
+    let (x, height): (f64, f64) = net.extract().map_err(|_| {
+        crate::value_error("invalid net: a distance (m) or a (distance, height) pair".into())
+    })?;
+    Ok(Some(Net { x, height }))
 }
 
 /// A `#[pyfunction]` of a shot: the ball's arguments (ball_args.rs), `friction` and the
@@ -100,7 +136,7 @@ macro_rules! flight_pyfunction {
     ) => {
         ball_pyfunction! {
             $(#[$attr])*
-            signature = (preset="tennis", *, friction=None, bounces=1, distance=None, time=None, air_density=1.204, drag_coefficient=None, lift_coefficient=None, spin_decay=None, tangential_stiffness=None, inertia_factor=None, tangential_damping=None, surface=None, $($arg $(= $default)?,)* law=None, params=None,);
+            signature = (preset="tennis", *, friction=None, bounces=1, distance=None, time=None, air_density=1.204, drag_coefficient=None, lift_coefficient=None, spin_decay=None, tangential_stiffness=None, inertia_factor=None, tangential_damping=None, surface=None, net=None, $($arg $(= $default)?,)* law=None, params=None,);
             fn $name<$lt>(
                 $py,
                 preset: &str,
@@ -116,6 +152,7 @@ macro_rules! flight_pyfunction {
                 inertia_factor: Option<f64>,
                 tangential_damping: Option<f64>,
                 surface: Option<&Bound<$lt, PyAny>>,
+                net: Option<&Bound<$lt, PyAny>>,
                 $($arg: $ty,)*
                 law: Option<&str>,
                 params: Option<&str>,
@@ -141,6 +178,7 @@ macro_rules! flight_pyfunction {
                     spin_decay,
                     samples: 0,
                     surface: $surface.target(),
+                    net: net_of(net)?,
                 };
                 $body
             }
@@ -152,7 +190,8 @@ flight_pyfunction! {
     /// One shot, as `bouncelab shot --format json --samples N`: a dict with `bounces` (a dict of
     /// arrays, one element per bounce), `end` (a dict), `trajectory` (a dict of arrays t, x, y,
     /// vx, vy, spin; `samples` of them, 0 for none), `source` (the aerodynamic models) and
-    /// `surface` (the JSON's `surface` object). `after_bounce=D`: `shot --after-bounce D`.
+    /// `surface` (the JSON's `surface` object), and with `net=` (a distance, or (distance,
+    /// height)) `net`, the JSON's `net` object. `after_bounce=D`: `shot --after-bounce D`.
     fn shot<'py>(py, ball, common, surface;
         height: f64,
         speed: f64,
@@ -221,11 +260,16 @@ const SHOTS: [&str; 12] = [
     "end_vy",
 ];
 
-/// One shot's numbers for `shots` (NaN for a bounce that did not happen).
-fn row(r: &ShotReport) -> [f64; 12] {
+/// The names of `shots`' net arrays, with `net=`: the clearance (NaN where the ball does not
+/// reach the net) and whether it clears it (1 or 0 here, a bool array out).
+const SHOTS_NET: [&str; 2] = ["net_clearance", "net_cleared"];
+
+/// One shot's numbers for `shots` (NaN for a bounce that did not happen), then the net's.
+fn row(r: &ShotReport) -> [f64; 14] {
     let nan = f64::NAN;
     let b = r.bounces.first();
     let s = r.end.state;
+    let net = r.net.as_ref();
     [
         b.map_or(nan, |b| b.t),
         b.map_or(nan, |b| b.x),
@@ -239,6 +283,8 @@ fn row(r: &ShotReport) -> [f64; 12] {
         s.y,
         s.vx,
         s.vy,
+        net.and_then(|n| n.clearance).unwrap_or(nan),
+        net.map_or(0.0, |n| f64::from(u8::from(n.cleared))),
     ]
 }
 
@@ -246,9 +292,11 @@ flight_pyfunction! {
     /// Many shots: `height`, `speed`, `elevation` and `spin` numbers or numpy arrays broadcast
     /// together; a dict of arrays of the broadcast shape: the first bounce's `landing_t`,
     /// `landing_x`, `v_in`, `angle_in`, `v_out`, `angle_out`, `spin_out` (NaN with
-    /// bounces=0) and the end's `end_t`, `end_x`, `end_y`, `end_vx`, `end_vy`. Element i is what
+    /// bounces=0) and the end's `end_t`, `end_x`, `end_y`, `end_vx`, `end_vy`; with `net=`,
+    /// `net_clearance` (NaN where the ball does not reach it) and `net_cleared` (bools); and
+    /// `surface`, the surface the bounces are on (`shot`'s `surface` dict). Element i is what
     /// `shot` gives for the i-th values; the first element without an answer raises, named.
-    fn shots<'py>(py, ball, common, _surface;
+    fn shots<'py>(py, ball, common, surface;
         height: Bound<'py, PyAny>,
         speed: Bound<'py, PyAny>,
         elevation: Option<Bound<'py, PyAny>> = None,
@@ -267,7 +315,7 @@ flight_pyfunction! {
             })
             .collect::<PyResult<_>>()?;
         let n = cols[0].len();
-        let rows: Result<Vec<[f64; 12]>, (usize, bouncelab::BallError)> = py.detach(|| {
+        let rows: Result<Vec<[f64; 14]>, (usize, bouncelab::BallError)> = py.detach(|| {
             (0..n)
                 .into_par_iter()
                 .map(|i| {
@@ -294,6 +342,14 @@ flight_pyfunction! {
             let a = array(py, rows.iter().map(|r| r[k]).collect());
             d.set_item(*name, a.call_method1("reshape", (&shape,))?)?;
         }
+        if common.net.is_some() {
+            let clearance = array(py, rows.iter().map(|r| r[12]).collect());
+            d.set_item(SHOTS_NET[0], clearance.call_method1("reshape", (&shape,))?)?;
+            let cleared = PyArray1::from_vec(py, rows.iter().map(|r| r[13] == 1.0).collect());
+            d.set_item(SHOTS_NET[1], cleared.call_method1("reshape", (&shape,))?)?;
+        }
+        // every answer names its surface, as `shot`'s and the command line's (issue 57)
+        d.set_item("surface", crate::surface::to_dict(py, &surface)?)?;
         Ok(d)
     }
 }

@@ -2,6 +2,7 @@
 //! [`Ball::oblique`] on the arriving state, as `bouncelab shot` and Python's
 //! `bouncelab.shot` run it.
 
+use super::shot_net::{Net, NetReport};
 use super::{Ball, BallError, ObliqueSpec};
 use crate::flight::{
     self, Aero, Arrival, Decay, Drag, EndReason, Ends, FlightError, Launch, Leg, Lift, Rebound,
@@ -40,6 +41,9 @@ pub struct ShotSpec {
     /// The surface every bounce is on, at rest ([`Ball::oblique_on`]'s; `Target::wall()`:
     /// the rigid plate, [`Ball::oblique_damped`]'s very answer).
     pub surface: Target,
+    /// A net across the path (`None`: none): the report says whether the ball clears it;
+    /// the flight is the same (docs/flight.md §6).
+    pub net: Option<Net>,
 }
 
 impl ShotSpec {
@@ -68,6 +72,7 @@ impl ShotSpec {
             spin_decay: None,
             samples: 0,
             surface: Target::wall(),
+            net: None,
         }
     }
 }
@@ -137,6 +142,9 @@ pub struct ShotReport {
     /// Samples (t, x, y, vx, vy, spin), when asked for.
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub trajectory: Vec<State>,
+    /// The net's answer, when the shot has a net.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub net: Option<NetReport>,
     /// Each bounce's full oblique answer (in its own frame, mirrored when `mirrored`).
     #[serde(skip)]
     pub responses: Vec<(ObliqueResponse, bool)>,
@@ -229,6 +237,15 @@ impl Ball {
                 check(field, x, x >= 0.0, "must be zero or positive")?;
             }
         }
+        if let Some(net) = &s.net {
+            check("net", net.x, net.x > 0.0, "its distance must be positive")?;
+            check(
+                "net",
+                net.height,
+                net.height > 0.0,
+                "its height must be positive",
+            )?;
+        }
         if s.samples == 1 || s.samples > super::MAX_SAMPLES {
             return Err(BallError::Samples(s.samples));
         }
@@ -277,6 +294,9 @@ impl Ball {
         for (b, (r, _)) in shot.bounces.iter_mut().zip(&shot.responses) {
             b.warnings = self.oblique_warnings(r);
         }
+        if let Some(net) = &mut shot.net {
+            net.warnings = net.warning().into_iter().collect();
+        }
         Ok(shot)
     }
 
@@ -311,12 +331,13 @@ impl Ball {
             };
             Ok::<_, BallError>((rebound, r))
         };
-        let shot = flight::shot(
+        let shot = flight::shot_watching(
             &body,
             self.params.mass,
             &spec.launch,
             &spec.ends,
             spec.samples,
+            spec.net.map(|n| n.x),
             bounce,
         )
         .map_err(|e| match e {
@@ -329,6 +350,9 @@ impl Ball {
             },
         })?;
         let bounces = shot.bounces.iter().map(|b| self.shot_bounce(b)).collect();
+        let net = spec
+            .net
+            .map(|n| NetReport::of(&n, shot.crossing.as_ref(), radius));
         for b in shot.bounces {
             responses.push((b.answer, b.mirrored));
         }
@@ -343,6 +367,7 @@ impl Ball {
             },
             flights: shot.legs,
             trajectory: shot.trajectory,
+            net,
             responses,
         })
     }

@@ -3,7 +3,7 @@
 //! `shot(after_bounce=D)`: the distance end it stands for. The faces word the refusals with
 //! their own names (`--after-bounce`, `after_bounce=`).
 
-use super::{Ball, BallError, ShotSpec};
+use super::{Ball, BallError, ShotReport, ShotSpec};
 use crate::flight::Ends;
 
 /// Why D m past the last bounce is no end of this shot.
@@ -38,6 +38,17 @@ impl Ball {
     /// flight to it bit for bit (`after_bounce_is_the_distance_past_the_bounce`,
     /// tests/cli/cli_golden_shot.rs).
     pub fn after_bounce_distance(&self, spec: &ShotSpec, d: f64) -> Result<f64, AfterBounceError> {
+        self.shot_after_bounce(spec, d).map(|(x, _)| x)
+    }
+
+    /// [`Ball::after_bounce_distance`] and the shot to it, unwarned
+    /// ([`Ball::shot_unwarned`]'s numbers, no trajectory samples): `mc --shot
+    /// --after-bounce D`'s samples, each ended D m past its own bounce.
+    pub fn shot_after_bounce(
+        &self,
+        spec: &ShotSpec,
+        d: f64,
+    ) -> Result<(f64, ShotReport), AfterBounceError> {
         let n = spec.ends.bounces;
         if !(d.is_finite() && d > 0.0) {
             return Err(AfterBounceError::NotPositive(d));
@@ -71,6 +82,6 @@ impl Ball {
         if to.bounces.len() < n {
             return Err(AfterBounceError::PassesBefore { bounce: n, x });
         }
-        Ok(x)
+        Ok((x, to))
     }
 }

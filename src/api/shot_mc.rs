@@ -10,8 +10,9 @@ use rand_distr::{Distribution, StandardNormal, StandardUniform};
 use rayon::prelude::*;
 use serde::Serialize;
 
-/// Samples allowed at most: their six numbers are kept for the quantiles (48 bytes a
-/// sample, about 100 MB at most with the sorting).
+/// Samples allowed at most: their ten numbers (the six quantities, the end's height and
+/// time, the net's verdict and clearance) are kept for the quantiles (80 bytes a sample,
+/// 160 MB, and one column of 16 MB sorted at a time: about 180 MB at most).
 pub const MAX_SHOT_SAMPLES: usize = 2_000_000;
 
 /// The launch's spreads: the sd of a normal spread, the half-width of a uniform one.
@@ -40,6 +41,9 @@ pub struct ShotMcSpec {
     pub samples: usize,
     /// The generator's seed.
     pub seed: u64,
+    /// End each sample this many m past its own last bounce (`--after-bounce D`; the
+    /// nominal's distance would end a short sample before its bounce).
+    pub after_bounce: Option<f64>,
 }
 
 /// One quantity's spread over the samples that answered.
@@ -71,6 +75,27 @@ pub const SHOT_MC_QUANTITIES: [&str; 6] = [
     "end_x",
 ];
 
+/// The quantities added after [`SHOT_MC_QUANTITIES`] when the shot ends off the surface (at
+/// a distance, a time or D m past its bounce): the end's height and time.
+pub const SHOT_MC_END_QUANTITIES: [&str; 2] = ["end_y", "end_t"];
+
+/// How many samples clear the net (`mc --shot --net`): the count, the fraction, and the
+/// clearance's spread over the samples that reach it.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct NetMc {
+    /// Where the net stands (m).
+    pub x: f64,
+    /// Its height (m).
+    pub height: f64,
+    /// Samples that clear it.
+    pub cleared: usize,
+    /// `cleared` over the samples that answered.
+    pub fraction: f64,
+    /// The clearance (y − R − height at the net) over the samples that reach it; `None` when
+    /// none does.
+    pub clearance: Option<Spread>,
+}
+
 /// A shot's Monte Carlo's answer.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct ShotMcReport {
@@ -87,6 +112,13 @@ pub struct ShotMcReport {
     /// [`SHOT_MC_QUANTITIES`]' spreads, in that order (the first bounce's for landing_x …
     /// spin_out; NaN with bounces = 0).
     pub stats: Vec<(&'static str, Spread)>,
+    /// The end's height and time ([`SHOT_MC_END_QUANTITIES`]) when the shot ends off the
+    /// surface; empty when it ends on a landing (its height is R).
+    pub end_stats: Vec<(&'static str, Spread)>,
+    /// The net's answer over the samples, with a net.
+    pub net: Option<NetMc>,
+    /// D when each sample ended D m past its own bounce.
+    pub after_bounce: Option<f64>,
     /// The nominal shot's warnings (its bounces', as `shot` gives them for the same flags),
     /// as `mc` gives its nominal impact's: "outside calibration: …" as it is, any other
     /// opened by "at the nominal launch: ". The samples' own are not made
@@ -94,9 +126,14 @@ pub struct ShotMcReport {
     pub warnings: Vec<String>,
 }
 
-fn row(r: &ShotReport) -> [f64; 6] {
+/// One sample's numbers: [`SHOT_MC_QUANTITIES`], [`SHOT_MC_END_QUANTITIES`], whether it
+/// clears the net (1 or 0) and its clearance (NaN when it does not reach it or has no net).
+type Row = [f64; 10];
+
+fn row(r: &ShotReport) -> Row {
     let b = r.bounces.first();
     let nan = f64::NAN;
+    let net = r.net.as_ref();
     [
         b.map_or(nan, |b| b.x),
         b.map_or(nan, |b| b.t),
@@ -104,7 +141,25 @@ fn row(r: &ShotReport) -> [f64; 6] {
         b.map_or(nan, |b| b.angle_out),
         b.map_or(nan, |b| b.spin_out),
         r.end.state.x,
+        r.end.state.y,
+        r.end.state.t,
+        net.map_or(0.0, |n| f64::from(u8::from(n.cleared))),
+        net.and_then(|n| n.clearance).unwrap_or(nan),
     ]
+}
+
+/// The net's answer over the rows, for the net `spec` has.
+fn net_mc(spec: &ShotSpec, rows: &[Row]) -> Option<NetMc> {
+    let net = spec.net?;
+    let cleared = rows.iter().filter(|r| r[8] == 1.0).count();
+    let reached: Vec<f64> = rows.iter().map(|r| r[9]).filter(|c| !c.is_nan()).collect();
+    Some(NetMc {
+        x: net.x,
+        height: net.height,
+        cleared,
+        fraction: cleared as f64 / rows.len() as f64,
+        clearance: (!reached.is_empty()).then(|| spread(reached)),
+    })
 }
 
 fn spread(mut v: Vec<f64>) -> Spread {
@@ -130,6 +185,7 @@ fn nominal_warnings(nominal: &ShotReport) -> Vec<String> {
         .bounces
         .iter()
         .flat_map(|b| &b.warnings)
+        .chain(nominal.net.iter().flat_map(|n| &n.warnings))
         .map(|w| {
             if w.starts_with("outside calibration:") {
                 w.clone()
@@ -169,7 +225,34 @@ impl ShotMcSpec {
 /// 20 ms on one core, so that a Ctrl-C is seen within 0.5 s on a loaded machine too.
 pub const SHOT_MC_BLOCK: usize = 1024;
 
+/// Why the nominal shot has no end D m past its bounce, in words.
+fn after_bounce_reason(e: super::AfterBounceError) -> String {
+    use super::AfterBounceError as E;
+    match e {
+        E::NotPositive(_) => "must be positive".into(),
+        E::NoBounce => "the shot makes no bounce".into(),
+        E::EndsBefore { bounce, t } => {
+            format!("the shot ends (at t = {t} s) before its bounce {bounce}")
+        }
+        E::PassesBefore { bounce, x } => {
+            format!("the ball passes x = {x} m before its bounce {bounce}")
+        }
+        E::Shot(e) => e.to_string(),
+    }
+}
+
 impl Ball {
+    /// Sample `index`'s numbers (`None`: drawn out of the shot's domain, or no end D m past
+    /// its own bounce with `after_bounce`).
+    fn sample_row(&self, spec: &ShotMcSpec, index: u64) -> Option<Row> {
+        let shot = spec.sample(index);
+        let r = match spec.after_bounce {
+            Some(d) => self.shot_after_bounce(&shot, d).ok()?.1,
+            None => self.shot_unwarned(&shot).ok()?,
+        };
+        Some(row(&r))
+    }
+
     /// A shot's Monte Carlo (docs/flight.md §7).
     pub fn shot_mc(&self, spec: &ShotMcSpec) -> Result<ShotMcReport, BallError> {
         self.shot_mc_watched(spec, &mut |_| true)?
@@ -213,16 +296,20 @@ impl Ball {
         }
         // the nominal shot first: its errors are the input's, its warnings the report's
         let nominal = self.shot(&spec.shot)?;
-        let mut ok: Vec<[f64; 6]> = Vec::with_capacity(spec.samples);
+        if let Some(d) = spec.after_bounce {
+            self.shot_after_bounce(&spec.shot, d)
+                .map_err(|e| invalid("after_bounce", d, &after_bounce_reason(e)))?;
+        }
+        let mut ok: Vec<Row> = Vec::with_capacity(spec.samples);
         let mut done = 0usize;
         while done < spec.samples {
             if !watch(done) {
                 return Ok(None);
             }
             let end = (done + SHOT_MC_BLOCK).min(spec.samples);
-            let block: Vec<Option<[f64; 6]>> = (done as u64..end as u64)
+            let block: Vec<Option<Row>> = (done as u64..end as u64)
                 .into_par_iter()
-                .map(|i| self.shot_unwarned(&spec.sample(i)).ok().map(|r| row(&r)))
+                .map(|i| self.sample_row(spec, i))
                 .collect();
             ok.extend(block.into_iter().flatten());
             done = end;
@@ -237,11 +324,23 @@ impl Ball {
                 "no sample answered",
             ));
         }
+        let column = |k: usize| spread(ok.iter().map(|r| r[k]).collect());
         let stats = SHOT_MC_QUANTITIES
             .iter()
             .enumerate()
-            .map(|(k, name)| (*name, spread(ok.iter().map(|r| r[k]).collect())))
+            .map(|(k, name)| (*name, column(k)))
             .collect();
+        let ends = &spec.shot.ends;
+        let off_surface =
+            ends.distance.is_some() || ends.time.is_some() || spec.after_bounce.is_some();
+        let end_stats = if off_surface {
+            let n = SHOT_MC_QUANTITIES.len();
+            (SHOT_MC_END_QUANTITIES.iter().enumerate())
+                .map(|(k, name)| (*name, column(n + k)))
+                .collect()
+        } else {
+            Vec::new()
+        };
         Ok(Some(ShotMcReport {
             samples: spec.samples,
             seed: spec.seed,
@@ -249,6 +348,9 @@ impl Ball {
             vary: spec.spread,
             failed: spec.samples - ok.len(),
             stats,
+            end_stats,
+            net: net_mc(&spec.shot, &ok),
+            after_bounce: spec.after_bounce,
             warnings: nominal_warnings(&nominal),
         }))
     }

@@ -49,6 +49,13 @@ pub struct ShotMcArgs {
     /// With --shot: end at this time, s
     #[arg(long, value_name = "T", requires = "shot", value_parser = super::number::number, allow_hyphen_values = true)]
     pub time: Option<f64>,
+    /// With --shot: end D m past each sample's own last bounce (`shot --after-bounce`)
+    #[arg(long, value_name = "D", requires = "shot", conflicts_with = "distance", value_parser = super::number::number, allow_hyphen_values = true)]
+    pub after_bounce: Option<f64>,
+    /// With --shot: a net DISTANCE m from the launch, HEIGHT m high [default height: 0.914];
+    /// the fraction of the samples that clear it
+    #[arg(long, value_name = "DISTANCE[,HEIGHT]", requires = "shot", value_parser = super::shot_net::parse, allow_hyphen_values = true)]
+    pub net: Option<crate::api::Net>,
     /// With --shot: air density, kg/m³
     #[arg(long, value_name = "RHO", requires = "shot", value_parser = super::number::number, allow_hyphen_values = true)]
     pub air_density: Option<f64>,
@@ -149,13 +156,19 @@ pub fn run(s: &ShotMcArgs, a: &Mc<'_>, out: &mut dyn Write) -> anyhow::Result<()
         spin_decay: s.spin_decay,
         samples: 0,
         surface: surface.target(),
+        net: s.net,
     };
+    if let Some(d) = s.after_bounce {
+        // the nominal's refusal, named by the flag as `shot`'s
+        super::shot_after::past_bounce(&ball, &shot, d)?;
+    }
     let spec = ShotMcSpec {
         shot,
         spread: parse_vary(a.vary)?,
         uniform,
         samples: a.samples,
         seed: a.seed,
+        after_bounce: s.after_bounce,
     };
     // the bar on stderr and the Ctrl-C check between blocks (src/cli/budget.rs); a shot
     // (some 17 µs, BENCHMARKS.md) counts as one impact for when the bar shows
@@ -204,12 +217,11 @@ struct Ran<'a> {
 /// surface objects; `conditions` last.
 fn json(ran: &Ran<'_>, r: &ShotMcReport) -> serde_json::Value {
     let ball = ran.ball;
-    let stats: serde_json::Map<String, serde_json::Value> = r
-        .stats
-        .iter()
+    let stats: serde_json::Map<String, serde_json::Value> = (r.stats.iter())
+        .chain(&r.end_stats)
         .map(|(k, s)| (k.to_string(), serde_json::to_value(s).unwrap_or_default()))
         .collect();
-    serde_json::json!({
+    let mut j = serde_json::json!({
         "preset": ball.name,
         "shot": true,
         "samples": r.samples,
@@ -222,7 +234,16 @@ fn json(ran: &Ran<'_>, r: &ShotMcReport) -> serde_json::Value {
         "warnings": r.warnings,
         "ball": ball.record_json(),
         "surface": ran.surface,
-    })
+    });
+    if let Some(map) = j.as_object_mut() {
+        if let Some(net) = &r.net {
+            map.insert("net".into(), serde_json::to_value(net).unwrap_or_default());
+        }
+        if let Some(d) = r.after_bounce {
+            map.insert("after_bounce".into(), d.into());
+        }
+    }
+    j
 }
 
 fn text(out: &mut dyn Write, ran: &Ran<'_>, r: &ShotMcReport) -> std::io::Result<()> {
@@ -240,6 +261,9 @@ fn text(out: &mut dyn Write, ran: &Ran<'_>, r: &ShotMcReport) -> std::io::Result
         given(v.height, 4)
     )?;
     super::shot::ran_lines(out, ran.ball, ran.surface, &ran.aero)?;
+    if let Some(d) = r.after_bounce {
+        writeln!(out, "end: {} m past each shot's own bounce", given(d, 6))?;
+    }
     let mut rows = vec![
         ["", "mean", "sd", "2.5 %", "median", "97.5 %"]
             .map(String::from)
@@ -252,8 +276,10 @@ fn text(out: &mut dyn Write, ran: &Ran<'_>, r: &ShotMcReport) -> std::io::Result
         "angle out (°)",
         "spin out (rad/s)",
         "end x (m)",
+        "end height (m)",
+        "end t (s)",
     ];
-    for ((_, s), name) in r.stats.iter().zip(names) {
+    for ((_, s), name) in r.stats.iter().chain(&r.end_stats).zip(names) {
         rows.push(vec![
             name.to_string(),
             given(s.mean, 5),
@@ -264,6 +290,9 @@ fn text(out: &mut dyn Write, ran: &Ran<'_>, r: &ShotMcReport) -> std::io::Result
         ]);
     }
     table(out, "", &rows)?;
+    if let Some(n) = &r.net {
+        writeln!(out, "{}", net_line(n, r.samples - r.failed))?;
+    }
     if r.failed > 0 {
         writeln!(
             out,
@@ -273,4 +302,25 @@ fn text(out: &mut dyn Write, ran: &Ran<'_>, r: &ShotMcReport) -> std::io::Result
     }
     output::warning_lines(out, &r.warnings)?;
     Ok(())
+}
+
+/// The net's line: how many samples clear it, and the clearance's spread.
+fn net_line(n: &crate::api::NetMc, answered: usize) -> String {
+    let head = format!(
+        "net at x = {} m, {} m high: {} % clear it ({} of {answered})",
+        given(n.x, 6),
+        given(n.height, 4),
+        given(100.0 * n.fraction, 3),
+        n.cleared
+    );
+    match &n.clearance {
+        Some(c) => format!(
+            "{head}; clearance mean {} m, sd {} m, 2.5 % {} m, 97.5 % {} m",
+            given(c.mean, 3),
+            given(c.sd, 3),
+            given(c.q025, 3),
+            given(c.q975, 3)
+        ),
+        None => format!("{head}; none reaches it"),
+    }
 }

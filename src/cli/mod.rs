@@ -36,6 +36,7 @@ pub mod run;
 mod run_text;
 pub mod shot;
 mod shot_after;
+pub mod shot_net;
 pub mod standards;
 pub mod statics;
 pub mod surface;

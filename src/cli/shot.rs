@@ -75,6 +75,11 @@ pub struct ShotArgs {
     /// Spin decay time τ, s: dω/dt = −ω/τ; 0 for none [default: the ball's published decay]
     #[arg(long, value_name = "TAU", value_parser = super::number::number, allow_hyphen_values = true)]
     pub spin_decay: Option<f64>,
+    /// A vertical net DISTANCE m from the launch, HEIGHT m high [default height: 0.914, the
+    /// tennis net's at the centre]: the answer says whether the ball clears it (the flight is
+    /// computed as if it were absent)
+    #[arg(long, value_name = "DISTANCE[,HEIGHT]", value_parser = super::shot_net::parse, allow_hyphen_values = true)]
+    pub net: Option<crate::api::Net>,
     /// Trajectory samples (t, x, y, vx, vy, spin), evenly spaced in time (2 … 100000)
     #[arg(long, value_name = "N")]
     pub samples: Option<usize>,
@@ -114,6 +119,7 @@ impl ShotArgs {
             spin_decay: self.spin_decay,
             samples: self.samples.unwrap_or(0),
             surface: surface.target(),
+            net: self.net,
         }
     }
 }
@@ -160,7 +166,11 @@ pub fn run(a: &ShotArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         } else {
             shot.clone()
         };
-        let fig = crate::figure::shot::side_view(&drawn, ball.radius(), title(&spec), ball.label());
+        let mut fig =
+            crate::figure::shot::side_view(&drawn, ball.radius(), title(&spec), ball.label());
+        if let Some(n) = &drawn.net {
+            super::shot_net::draw(&mut fig, n);
+        }
         files.text(p, &svg::render(&fig)?)?;
     }
     let mut report = Vec::new();
@@ -182,7 +192,28 @@ pub fn run(a: &ShotArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         ShotFormat::Text => text(&mut report, (&ball, &surface), &spec, &shot)?,
     }
     report_then_commit(out, &report, files)?;
+    // the net's warning belongs to no CSV row: on stderr, as a time series' (`run --history`)
+    if let (ShotFormat::Csv, Some(n)) = (a.format, &shot.net) {
+        output::warnings_to_stderr(&n.warnings);
+    }
     Ok(())
+}
+
+/// A CSV header: `columns`, then the net's with `--net`.
+fn csv_header(out: &mut dyn Write, columns: &[&str], s: &ShotReport) -> std::io::Result<()> {
+    let mut names = columns.to_vec();
+    if s.net.is_some() {
+        names.extend(super::shot_net::COLUMNS);
+    }
+    csv_row(out, &names)
+}
+
+/// A CSV row: `cells`, then the net's with `--net` (the shot's, on every row).
+fn csv_cells(out: &mut dyn Write, mut cells: Vec<String>, s: &ShotReport) -> std::io::Result<()> {
+    if let Some(n) = &s.net {
+        cells.extend(super::shot_net::cells(n));
+    }
+    csv_row(out, &cells)
 }
 
 fn title(s: &ShotSpec) -> String {
@@ -217,7 +248,7 @@ pub const BOUNCE_COLUMNS: [&str; 12] = [
 pub const TRAJECTORY_COLUMNS: [&str; 6] = ["t", "x", "y", "vx", "vy", "spin"];
 
 fn bounces_csv(out: &mut dyn Write, s: &ShotReport) -> std::io::Result<()> {
-    csv_row(out, &BOUNCE_COLUMNS)?;
+    csv_header(out, &BOUNCE_COLUMNS, s)?;
     for b in &s.bounces {
         let mut row: Vec<String> = [
             b.t,
@@ -235,15 +266,19 @@ fn bounces_csv(out: &mut dyn Write, s: &ShotReport) -> std::io::Result<()> {
         .to_vec();
         row.push(b.slid_throughout.to_string());
         row.push(output::warnings_cell(&b.warnings));
-        csv_row(out, &row)?;
+        csv_cells(out, row, s)?;
     }
     Ok(())
 }
 
 fn trajectory_csv(out: &mut dyn Write, s: &ShotReport) -> std::io::Result<()> {
-    csv_row(out, &TRAJECTORY_COLUMNS)?;
+    csv_header(out, &TRAJECTORY_COLUMNS, s)?;
     for p in &s.trajectory {
-        csv_row(out, &[p.t, p.x, p.y, p.vx, p.vy, p.spin].map(num))?;
+        csv_cells(
+            out,
+            [p.t, p.x, p.y, p.vx, p.vy, p.spin].map(num).to_vec(),
+            s,
+        )?;
     }
     Ok(())
 }
@@ -320,6 +355,9 @@ fn text(
         writeln!(out, "(speeds m/s, spins rad/s, > 0 topspin)")?;
         writeln!(out)?;
     }
+    if let Some(n) = &s.net {
+        writeln!(out, "{}", super::shot_net::line(n))?;
+    }
     let e = s.end.state;
     let why = match s.end.reason {
         crate::flight::EndReason::Landing => "lands",
@@ -339,6 +377,9 @@ fn text(
     )?;
     for b in &s.bounces {
         output::warning_lines(out, &b.warnings)?;
+    }
+    if let Some(n) = &s.net {
+        output::warning_lines(out, &n.warnings)?;
     }
     Ok(())
 }

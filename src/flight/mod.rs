@@ -9,9 +9,11 @@
 //! leaves from where it landed, and the flight is planar (spin about the axis normal to it).
 
 pub mod aero;
+mod crossing;
 pub mod step;
 
 pub use aero::{Aero, Decay, Drag, Lift};
+pub use crossing::Crossing;
 pub use step::Body;
 
 use serde::Serialize;
@@ -162,6 +164,9 @@ pub struct Shot<P> {
     pub legs: Vec<Leg>,
     /// Samples evenly spaced in time from launch to the end, when asked for.
     pub trajectory: Vec<State>,
+    /// Where the ball first crossed the watched x moving forward ([`shot_watching`]; `None`
+    /// when nothing was watched or the shot ended before it).
+    pub crossing: Option<Crossing>,
 }
 
 /// A shot without an answer.
@@ -188,6 +193,10 @@ struct Flier<'a> {
     steps: usize,
     /// Every accepted step's start, kept when samples are asked for.
     record: Option<Vec<(f64, Y)>>,
+    /// The x watched for a crossing, until it is crossed.
+    watch: Option<f64>,
+    /// The crossing (t, state), once found.
+    crossed: Option<(f64, Y)>,
 }
 
 impl Flier<'_> {
@@ -239,7 +248,9 @@ impl Flier<'_> {
             if let Some(rec) = &mut self.record {
                 rec.push((t, y));
             }
-            if let Some((hs, ys, stop)) = self.event((&y, &k1), &y1, h) {
+            let event = self.event((&y, &k1), &y1, h);
+            self.watch_crossing((t, &y, &k1), (&y1, h), event.as_ref().map(|e| e.0));
+            if let Some((hs, ys, stop)) = event {
                 return Ok((t + hs, ys, stop));
             }
             let last = self.ends.time.is_some_and(|end| t + h >= end);
@@ -277,6 +288,21 @@ pub fn shot<P, E>(
     launch: &Launch,
     ends: &Ends,
     samples: usize,
+    bounce: impl FnMut(&Arrival) -> Result<(Rebound, P), E>,
+) -> Result<Shot<P>, FlightError<E>> {
+    shot_watching(body, mass, launch, ends, samples, None, bounce)
+}
+
+/// [`shot`], and where the ball first crosses x = `watch` moving forward (a net's plane,
+/// docs/flight.md §6): `Shot::crossing`. The flight is the same bit for bit: the crossing is
+/// located from its step's start, and the step is taken as without the watch.
+pub fn shot_watching<P, E>(
+    body: &Body,
+    mass: f64,
+    launch: &Launch,
+    ends: &Ends,
+    samples: usize,
+    watch: Option<f64>,
     mut bounce: impl FnMut(&Arrival) -> Result<(Rebound, P), E>,
 ) -> Result<Shot<P>, FlightError<E>> {
     let (s, c) = launch.elevation_deg.to_radians().sin_cos();
@@ -294,11 +320,20 @@ pub fn shot<P, E>(
         h: FIRST_STEP,
         steps: 0,
         record: (samples > 0).then(Vec::new),
+        watch,
+        crossed: None,
     };
     let (mut t, mut bounces, mut legs) = (0.0, Vec::new(), Vec::new());
+    let mut crossing = None;
     loop {
         let (t0, e0) = (t, energy(mass, &y));
         let (t1, y1, stop) = fl.leg(t, y).map_err(|()| FlightError::Endless)?;
+        if let Some((tc, yc)) = fl.crossed.take() {
+            crossing = Some(Crossing {
+                state: State::of(tc, &yc),
+                bounces: bounces.len(),
+            });
+        }
         legs.push(Leg {
             t0,
             t1,
@@ -325,6 +360,7 @@ pub fn shot<P, E>(
                 reason,
                 legs,
                 trajectory,
+                crossing,
             });
         }
         let b = bounce_at(body.radius, t_end, &y_end, &mut bounce).map_err(FlightError::Bounce)?;

@@ -215,6 +215,7 @@ pub fn shot_line(
     for p in FlightParam::ALL {
         words.extend([p.option().into(), number(v.get(p))]);
     }
+    words.extend(v.net_words());
     words.join(" ")
 }
 

@@ -53,6 +53,21 @@ const CASES: &[(&str, &str)] = &[
         "bad-shot-mc-vary",
         "mc --shot --preset tennis --height 2.8 --speed 50 --friction 0.6 --vary k_p=5%",
     ),
+    // the net (docs/flight.md §6): the serve meets it; at −5° it clears it
+    (
+        "shot-text-net",
+        "shot --preset tennis --height 2.8 --speed 50 --elevation -6 --spin 200 --friction 0.6 --net 11.89",
+    ),
+    (
+        "shot-json-net",
+        "shot --preset tennis --height 2.8 --speed 50 --elevation -5 --spin 200 --friction 0.6 \
+            --net 11.89 --format json",
+    ),
+    (
+        "shot-mc-net-after-bounce",
+        "mc --shot --preset tennis --height 2.8 --speed 50 --elevation -5.5 --spin 200 \
+            --friction 0.6 --net 11.89 --after-bounce 1 --vary speed=2%,elevation=0.5 --samples 200",
+    ),
     (
         "bad-shot-endless",
         "shot --preset tennis --height 1 --speed 10 --friction 0.5 --lift-coefficient 5 \

@@ -53,6 +53,7 @@ mod cli_peers_case;
 mod cli_presets;
 mod cli_progress_pty;
 mod cli_reproduce;
+mod cli_shot_net;
 mod cli_shot_surface;
 mod cli_size;
 mod cli_small;

@@ -28,6 +28,7 @@ fn spec(spread: ShotSpread, samples: usize, seed: u64) -> ShotMcSpec {
         uniform: false,
         samples,
         seed,
+        after_bounce: None,
     }
 }
 

@@ -22,6 +22,7 @@ mod drop_presets;
 mod flight;
 mod flight_anchors;
 mod flight_mc;
+mod flight_net;
 mod fuzz_regressions;
 mod golf_driver;
 mod hertz_table;

@@ -14,7 +14,8 @@ use ratatui::crossterm::event::KeyCode;
 use serde_json::Value;
 use tui_common::*;
 
-/// The tennis ball in the flight view: docs/flight.md §6's serve (the view's default).
+/// The tennis ball in the flight view: docs/flight.md §6's serve that clears the net, 5° down
+/// (the view's default), and the net 11.89 m out.
 fn serve() -> App {
     let mut app = App::new(embedded("tennis"), false);
     press(&mut app, &[KeyCode::Char('h')]);
@@ -30,8 +31,15 @@ fn the_view_at_every_size() {
     for (w, h) in SIZES {
         let t = draw(&app, w, h);
         let text = screen_text(&t).join("\n");
-        // the landing and the bounce's numbers are in the readout
-        for needle in ["flight", "lands", "leaves", "15.58", "27.45"] {
+        // the net, the landing and the bounce's numbers are in the readout
+        for needle in [
+            "flight",
+            "clears by 0.183 m",
+            "lands",
+            "leaves",
+            "16.7",
+            "27.04",
+        ] {
             assert!(text.contains(needle), "{w}×{h}: {needle}\n{text}");
         }
         insta::assert_snapshot!(format!("flight_{w}x{h}"), t.backend());
@@ -50,7 +58,9 @@ fn y_gives_the_shot_line_and_it_computes_what_the_view_shows() {
     let line = app.command_line();
     assert!(line.starts_with("bouncelab shot --preset tennis"), "{line}");
     assert!(
-        line.contains("--spin 210") && line.contains("--elevation -5"),
+        line.contains("--spin 210")
+            && line.contains("--elevation -4")
+            && line.ends_with("--net 11.89,0.914"),
         "{line}"
     );
     let mut args = words(&line);
@@ -73,6 +83,11 @@ fn y_gives_the_shot_line_and_it_computes_what_the_view_shows() {
             r.bounces[0].spin_out,
         ),
         ("end x", f(&j["end"]["x"]), r.end.state.x),
+        (
+            "net clearance",
+            f(&j["net"]["clearance"]),
+            r.net.as_ref().unwrap().clearance.unwrap(),
+        ),
     ] {
         assert!(close(a, b), "{k}: command line {a} view {b}");
     }
@@ -95,7 +110,7 @@ fn the_keys_step_fine_and_coarse_and_a_refused_value_is_kept_out() {
     // → selects the elevation; the shot follows every step
     let x0 = app.flight_view().report().unwrap().bounces[0].x;
     press(&mut app, &[KeyCode::Right, KeyCode::Up]);
-    assert_eq!(v(&app, FlightParam::Elevation), -5.0);
+    assert_eq!(v(&app, FlightParam::Elevation), -4.0);
     assert!(app.flight_view().report().unwrap().bounces[0].x > x0);
     // the height down to below R: the library refuses it, the view keeps 0.0335 + …
     for _ in 0..2 {
@@ -121,9 +136,19 @@ fn e_exports_the_path_headed_by_the_shot_line() {
     let request = export_of(effects);
     assert_eq!(request.header[0], format!("# {}", app.command_line()));
     assert!(
-        request.header[1].contains("bounce 1: t 0.366"),
+        request.header[1].contains("bounce 1: t 0.396"),
         "{:?}",
         request.header
+    );
+    assert!(
+        request.header[2].starts_with("# net at x 11.89 m, height 0.914 m: clears by 0.183"),
+        "{:?}",
+        request.header
+    );
+    let (_, path) = &request.charts[0];
+    assert!(
+        path.series.iter().any(|s| s.id == "net"),
+        "the figure draws the net"
     );
     let dir = tempfile::tempdir().unwrap();
     let files = export::write(&request, dir.path()).unwrap();
@@ -135,4 +160,26 @@ fn e_exports_the_path_headed_by_the_shot_line() {
             "bouncelab-tennis-flight-path-1.csv"
         ]
     );
+}
+
+/// The defect (issue 57): the view's default serve (6° down) went into the net, and neither
+/// the side view nor the readout said so. Its default now clears it (5° down, as
+/// docs/flight.md §6), the net is drawn and the readout gives the clearance; stepped 1° down,
+/// it says the ball hits the net. Fails on the old code (no net, the serve 6° down).
+#[test]
+fn the_default_serve_clears_the_net_and_the_readout_says_by_how_much() {
+    let mut app = serve();
+    let net = app
+        .flight_view()
+        .report()
+        .unwrap()
+        .net
+        .clone()
+        .expect("a net");
+    assert!(net.cleared, "{net:?}");
+    assert_eq!((net.x, net.height), (11.89, 0.914));
+    press(&mut app, &[KeyCode::Char('A')]);
+    assert_eq!(app.flight_view().values.elevation, -6.0);
+    let text = screen_text(&draw(&app, 120, 40)).join("\n");
+    assert!(text.contains("net 11.89 m: 0.0296 m too low"), "{text}");
 }

@@ -20,7 +20,7 @@ fn serve() -> App {
     app
 }
 
-/// The launch of the serve moved: elevation −4°, spin 220 rad/s, μ 0.65, speed 52 m/s, height
+/// The launch of the serve moved: elevation −3°, spin 220 rad/s, μ 0.65, speed 52 m/s, height
 /// 2.9 m, the height left selected.
 fn moved() -> App {
     let mut app = serve();
@@ -41,7 +41,7 @@ fn moved() -> App {
     let v = app.flight_view().values;
     assert_eq!(
         (v.speed, v.elevation, v.spin, v.friction),
-        (52.0, -4.0, 220.0, 0.65)
+        (52.0, -3.0, 220.0, 0.65)
     );
     assert!((v.height - 2.9).abs() < 1e-12, "{}", v.height);
     assert_eq!(app.flight_view().selected.0, FlightParam::Height);
@@ -87,7 +87,7 @@ fn a_session_flight_value_the_library_refuses_is_named() {
             "flight: invalid height",
         ),
         (
-            "elevation = -4.0",
+            "elevation = -3.0",
             "elevation = 95.0",
             "flight: invalid elevation",
         ),

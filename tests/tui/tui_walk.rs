@@ -188,5 +188,5 @@ fn the_flight_readout_marks_its_selection_and_keeps_its_keys_whole() {
     }
     press(&mut app, &[KeyCode::Right]);
     let screen = text(&mut app, 120, 40);
-    assert!(screen.contains("▶elev -6.000°"), "{screen}");
+    assert!(screen.contains("▶elev -5.000°"), "{screen}");
 }

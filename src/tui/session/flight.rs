@@ -51,6 +51,8 @@ impl FlightState {
             spin: self.spin,
             height: self.height,
             friction: self.friction,
+            // the net: the view's, which no key moves (not in the file)
+            ..FlightValues::default()
         };
         ball.shot(&spec(&values))
             .map_err(|e| format!("flight: {e}"))?;

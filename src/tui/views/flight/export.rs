@@ -8,13 +8,18 @@ use crate::figure::{Axis, Figure, GREY, Kind, Marker, Series, Style};
 use crate::flight::EndReason;
 use crate::text::number;
 
-/// The centre's height against x, the bounces as markers, the surface (y = 0) as a line.
+/// The centre's height against x, the bounces as markers, the surface (y = 0) as a line,
+/// the net (when the shot has one) a vertical line from the surface to its top.
 /// `radius`: the ball's, the centre's height at a bounce.
 pub fn path_figure(r: &ShotReport, radius: f64, subtitle: &str) -> Figure {
     let path: Vec<(f64, f64)> = r.trajectory.iter().map(|s| (s.x, s.y)).collect();
     let bounces: Vec<(f64, f64)> = r.bounces.iter().map(|b| (b.x, radius)).collect();
     let x_end = path.iter().map(|p| p.0).fold(0.0_f64, f64::max);
     let x_start = path.iter().map(|p| p.0).fold(0.0_f64, f64::min);
+    let net = r.net.iter().map(|n| {
+        Series::new("net", "net", Kind::Reference, Style::Solid, GREY)
+            .with_points(vec![(n.x, 0.0), (n.x, n.height)])
+    });
     Figure::new(
         "Flight: the ball's centre over the surface".into(),
         subtitle.into(),
@@ -32,8 +37,23 @@ pub fn path_figure(r: &ShotReport, radius: f64, subtitle: &str) -> Figure {
                 1,
             )
             .with_points(bounces),
-        ],
+        ]
+        .into_iter()
+        .chain(net)
+        .collect(),
     )
+}
+
+/// Whether the ball clears the net, in a few words (the readout's narrow column holds 30
+/// characters): "clears by 0.183 m", "0.0296 m too low" (its lowest point under the top),
+/// "touches its cord", "not reached".
+pub fn net_words(n: &crate::api::NetReport) -> String {
+    match n.clearance {
+        Some(c) if n.cleared => format!("clears by {} m", crate::text::sig(c, 3)),
+        Some(c) if c < 0.0 => format!("{} m too low", crate::text::sig(-c, 3)),
+        Some(_) => "touches its cord".into(),
+        None => "not reached".into(),
+    }
 }
 
 /// The `#` lines of the CSV: `line` (the `bouncelab shot` line), each bounce's numbers and
@@ -54,6 +74,14 @@ pub fn header(line: &str, r: &ShotReport) -> Vec<String> {
             number(b.angle_out),
             number(b.spin_out),
             b.slid_throughout
+        ));
+    }
+    if let Some(n) = &r.net {
+        lines.push(format!(
+            "# net at x {} m, height {} m: {}",
+            number(n.x),
+            number(n.height),
+            net_words(n)
         ));
     }
     let e = r.end.state;

@@ -12,10 +12,12 @@ use crate::tui::views::flight::export;
 use crate::tui::views::flight::state::{FlightValues, FlightView, SAMPLES};
 
 /// The shot the view shows for `v`: one bounce, to the landing after it, the ball's own
-/// aerodynamic models in standard air (as `bouncelab shot` with the same numbers).
+/// aerodynamic models in standard air, and its net (as `bouncelab shot` with the same
+/// numbers and `--net`).
 pub fn spec(v: &FlightValues) -> ShotSpec {
     let mut s = ShotSpec::new(v.height, v.speed, v.elevation, v.spin, v.friction);
     s.samples = SAMPLES;
+    s.net = v.net;
     s
 }
 

@@ -8,7 +8,7 @@ use crate::figure::{Look, Marker as Glyph, Role, Tone};
 use crate::text::sig;
 use crate::tui::format::fit_lines;
 use crate::tui::theme::Theme;
-use crate::tui::views::flight::export::path_figure;
+use crate::tui::views::flight::export::{net_words, path_figure};
 use crate::tui::views::flight::param::FlightParam;
 use crate::tui::views::flight::state::FlightView;
 use crate::tui::widgets::plot::Plot;
@@ -61,12 +61,13 @@ impl Widget for FlightPanel<'_> {
                 .block(Block::bordered())
                 .render(readout, buf);
         } else {
-            // the launch on the left, the shot's numbers on the right, in a few rows
+            // the launch and the net on the left (30 characters and a gap), the shot's numbers
+            // on the right, in a few rows
             let block = Block::bordered();
             let inner = block.inner(readout);
             block.render(readout, buf);
             let [left, right] =
-                Layout::horizontal([Constraint::Length(30), Constraint::Fill(1)]).areas(inner);
+                Layout::horizontal([Constraint::Length(32), Constraint::Fill(1)]).areas(inner);
             Paragraph::new(fit_lines(self.launch_lines(), usize::from(left.width)))
                 .wrap(Wrap { trim: true })
                 .render(left, buf);
@@ -102,6 +103,7 @@ impl FlightPanel<'_> {
                     s.style = crate::figure::Style::Markers(Glyph::Circle);
                     s.look = Look::new(Tone::Current, Some("bounce"), Some("●"));
                 }
+                _ if s.id == "net" => s.look = Look::new(Tone::Measured, Some("net"), None),
                 _ => s.look = Look::new(Tone::Measured, None, None),
             }
         }
@@ -125,6 +127,17 @@ impl FlightPanel<'_> {
                 ratatui::style::Style::default()
             };
             lines.push(Line::from(Span::styled(text, style)));
+        }
+        // the net and whether the ball clears it, under the launch (the one row the narrow
+        // readout has spare)
+        if let Some(n) = self.view.report().and_then(|r| r.net.as_ref()) {
+            let style = if n.cleared {
+                ratatui::style::Style::default()
+            } else {
+                t.error()
+            };
+            let text = format!("net {} m: {}", sig(n.x, 4), net_words(n));
+            lines.push(Line::styled(text, style));
         }
         lines
     }
