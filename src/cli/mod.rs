@@ -16,6 +16,7 @@ pub mod conditions;
 pub mod court;
 pub mod drop;
 mod drop_leak;
+mod drop_text;
 mod exit;
 pub mod explore;
 pub mod figure;
