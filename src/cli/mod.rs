@@ -10,6 +10,7 @@
 pub mod ball;
 pub mod bat;
 pub mod batch;
+mod batch_text;
 pub mod budget;
 pub mod collide;
 pub mod conditions;
