@@ -27,6 +27,7 @@ pub mod map;
 pub use crate::measured::file as measured_file;
 pub use crate::text::parse as number;
 pub mod mc;
+mod mc_text;
 pub mod mc_shot;
 pub mod oblique;
 pub mod output;
