@@ -72,9 +72,9 @@ fn write_text(
     )?;
     writeln!(out)?;
     // an exact solve has no error to give (`ObliqueFit::exact`), as `fit --cor-table`
-    let exact = f.exact().then(|| super::report::exact_words(f.no_scatter));
+    let exact = f.exact().then(|| super::report_text::exact_words(f.no_scatter));
     let interval = |e: &Estimate| format!("{} … {}", human(e.ci95[0], 4), human(e.ci95[1], 4));
-    let rows = super::report::estimate_rows(&f.fitted, exact, interval);
+    let rows = super::report_text::estimate_rows(&f.fitted, exact, interval);
     table(out, "  ", &rows)?;
     writeln!(out)?;
     let mut rest = vec![vec![

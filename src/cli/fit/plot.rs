@@ -23,9 +23,9 @@ fn subtitle(ball: &Ball, f: &MultiFit, speeds: &[f64]) -> String {
         .iter()
         .map(|e| {
             let interval = if f.exact() {
-                super::report::exact_text(f).to_string()
+                super::report_text::exact_text(f).to_string()
             } else {
-                format!("95 %: {}", super::report::interval(e))
+                format!("95 %: {}", super::report_text::interval(e))
             };
             format!("{} = {} {} ({interval})", e.name, human(e.value, 5), e.unit)
         })
