@@ -17,12 +17,7 @@ pub(super) fn text(
     st: &McStats,
 ) -> std::io::Result<()> {
     writeln!(out, "{}", ball.label())?;
-    if let Some(line) = ball.overrides_line() {
-        writeln!(out, "{line}")?;
-    }
-    if let Some(line) = ball.conditions_line() {
-        writeln!(out, "{line}")?;
-    }
+    output::ball_lines(out, ball, None)?;
     let vary: Vec<String> = spec
         .vary
         .iter()
