@@ -62,6 +62,10 @@ const AFTER_HELP: &str = "With no subcommand, opens the terminal explorer on a p
 #[command(mut_arg("config", |a| {
     a.help("Preset file the explorer opens on (TOML, same schema as the embedded presets)")
 }))]
+#[command(mut_arg("params", |a| {
+    a.help("Parameter set of the preset the explorer opens on [default: the preset's]")
+}))]
+#[command(mut_arg("law", |a| a.help("Contact law the explorer opens on [default: the preset's]")))]
 pub struct Cli {
     /// The preset the explorer opens on, or the one a subcommand runs
     /// (`bouncelab --preset golf run` is `bouncelab run --preset golf`)
