@@ -38,12 +38,7 @@ fn oblique_impact(b: divan::Bencher) {
 /// The normal impact alone at the same normal speed, summary only (as `run`, no energy audit).
 #[divan::bench]
 fn normal_impact(b: divan::Bencher) {
-    let (p, opts) = (tennis_normal(), SolveOptions::default());
-    b.bench(|| {
-        simulate(black_box(&p), ContactLaw::Linear, &opts)
-            .unwrap()
-            .cor
-    });
+    time_normal(b, ContactLaw::Linear);
 }
 
 /// The same oblique impact on the Hertz law: the normal motion is the adaptive solver's run
@@ -61,10 +56,11 @@ fn oblique_impact_hertz(b: divan::Bencher) {
 /// The normal Hertz impact alone at the same normal speed, summary only.
 #[divan::bench]
 fn normal_impact_hertz(b: divan::Bencher) {
+    time_normal(b, ContactLaw::Hertz);
+}
+
+/// The normal impact of [`tennis_normal`] under `law`, summary only.
+fn time_normal(b: divan::Bencher, law: ContactLaw) {
     let (p, opts) = (tennis_normal(), SolveOptions::default());
-    b.bench(|| {
-        simulate(black_box(&p), ContactLaw::Hertz, &opts)
-            .unwrap()
-            .cor
-    });
+    b.bench(|| simulate(black_box(&p), law, &opts).unwrap().cor);
 }
