@@ -81,7 +81,7 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     }
     ball::check_overrides(&args.ball.changes.set, args.lambda, args.zeta)?;
     let ball = if args.normalized {
-        let law = args.ball.changes.law.map_or(ContactLaw::Linear, ContactLaw::from);
+        let law = args.ball.changes.law.map_or(ContactLaw::Linear, Into::into);
         Ball::normalized(
             args.lambda.unwrap_or(1.0),
             args.zeta.unwrap_or(0.1),

@@ -80,9 +80,8 @@ fn residuals(x: Axis, y_label: &str, label: &str, rms: String, points: Vec<(f64,
 /// (data and model, residuals) for a trace.
 fn trace_figures(ball: &Ball, data: &Loaded, f: &MultiFit) -> Option<(Figure, Figure)> {
     let t = data.trace.as_ref()?;
-    let over_time = |y: &[f64]| -> Vec<(f64, f64)> {
-        t.time.iter().copied().zip(y.iter().copied()).collect()
-    };
+    let over_time =
+        |y: &[f64]| -> Vec<(f64, f64)> { t.time.iter().copied().zip(y.iter().copied()).collect() };
     let (measured, model) = (over_time(&t.force), over_time(&f.model));
     let resid: Vec<(f64, f64)> = t
         .time
