@@ -57,22 +57,17 @@ def scipy_side_by_side(m, k_p, c, k_r, v0, per_impact_ns):
     )
 
 
-def median_of(f, runs=5):
+def median_of(f, runs=5, clock=time.perf_counter):
     ts = []
     for _ in range(runs):
-        t = time.perf_counter()
+        t = clock()
         f()
-        ts.append(time.perf_counter() - t)
+        ts.append(clock() - t)
     return statistics.median(ts)
 
 
 def median_of_cpu(f, runs=5):
-    ts = []
-    for _ in range(runs):
-        t = time.process_time()
-        f()
-        ts.append(time.process_time() - t)
-    return statistics.median(ts)
+    return median_of(f, runs, clock=time.process_time)
 
 
 CALLS = [

@@ -30,7 +30,11 @@ fn sampler(correlate: bool) -> Sampler {
 /// and its impact.
 #[divan::bench]
 fn one_sample(b: divan::Bencher) {
-    let s = sampler(false);
+    sample_by_sample(b, &sampler(false));
+}
+
+/// Samples 1, 2, 3, … of `s`, one a call.
+fn sample_by_sample(b: divan::Bencher, s: &Sampler) {
     let mut i = 0u64;
     b.bench_local(|| {
         i += 1;
@@ -59,12 +63,7 @@ fn impact_only(b: divan::Bencher) {
 /// One sample with a correlation (the Cholesky product added).
 #[divan::bench]
 fn one_sample_correlated(b: divan::Bencher) {
-    let s = sampler(true);
-    let mut i = 0u64;
-    b.bench_local(|| {
-        i += 1;
-        s.outcome(black_box(i)).unwrap().cor
-    });
+    sample_by_sample(b, &sampler(true));
 }
 
 /// 100,000 samples on one thread, through `Sampler::samples` (blocks, ordering, the columns):

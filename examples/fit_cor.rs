@@ -2,17 +2,12 @@
 //! (default: the superball's measured e = 0.75 at 3.12 m/s). Then check the fit by running
 //! the fitted ball, and show how the fitted K_r moves with the COR measured.
 
+mod common;
+
 use bouncelab::{Ball, BallError};
 
 fn main() -> std::process::ExitCode {
-    match run() {
-        Ok(()) => std::process::ExitCode::SUCCESS,
-        Err(e) => {
-            // the message names the field at fault, as the command line's does
-            eprintln!("error: {e}");
-            std::process::ExitCode::from(2)
-        }
-    }
+    common::exit(run())
 }
 
 fn run() -> Result<(), BallError> {

@@ -1,17 +1,12 @@
 //! One impact of an embedded preset, printed: `cargo run --example impact [PRESET [V0]]`
 //! (default: the golf ball at 3 m/s).
 
+mod common;
+
 use bouncelab::{Ball, BallError};
 
 fn main() -> std::process::ExitCode {
-    match run() {
-        Ok(()) => std::process::ExitCode::SUCCESS,
-        Err(e) => {
-            // the message names the field at fault, as the command line's does
-            eprintln!("error: {e}");
-            std::process::ExitCode::from(2)
-        }
-    }
+    common::exit(run())
 }
 
 fn run() -> Result<(), BallError> {

@@ -86,6 +86,7 @@ mod error;
 mod fit;
 mod intervals;
 mod judged;
+mod map_reach;
 mod mc;
 mod oblique;
 mod oblique_fit;
@@ -118,12 +119,13 @@ pub use judged::{
     CourtMeasured, LeakVerdict, StaticTestReport, court_measured, judge_leak, leak_test_conditions,
     pressure_loss_test, static_test_report,
 };
+pub use map_reach::{MapReach, map_displacement_warning, map_radius_note, map_reach};
 pub use mc::{McReport, MonteCarlo};
 pub use oblique::{CourtPace, ObliqueSpec, SOLID_INERTIA_FACTOR};
 pub use oblique_fit::{ObliqueFitReport, is_data_error as is_oblique_data_error};
 pub use reach::{
-    MapReach, Reach, centre_bounds, displacement_warning, indentation_warning,
-    map_displacement_warning, map_radius_note, map_reach, peak_displacement, reach, reach_warning,
+    Reach, centre_bounds, displacement_warning, indentation_warning, peak_displacement, reach,
+    reach_warning,
 };
 pub use report::{BallHeader, Energy, FitReport, ImpactReport, MeasuredAt};
 pub use rows::{ImpactRow, Rest, impact_row, impact_rows};

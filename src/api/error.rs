@@ -138,54 +138,30 @@ impl BallError {
     }
 }
 
-impl From<CatalogError> for BallError {
-    fn from(e: CatalogError) -> Self {
-        BallError::Catalog(e)
-    }
+/// `From<E> for BallError` for each error that a variant wraps as it is: one line a pair.
+macro_rules! wraps {
+    ($($error:ty => $variant:ident),+ $(,)?) => {$(
+        impl From<$error> for BallError {
+            fn from(e: $error) -> Self {
+                BallError::$variant(e)
+            }
+        }
+    )+};
 }
 
-impl From<ParamError> for BallError {
-    fn from(e: ParamError) -> Self {
-        BallError::Param(e)
-    }
+wraps! {
+    CatalogError => Catalog,
+    ParamError => Param,
+    SolveError => Solve,
+    FitError => Fit,
+    MultiFitError => MultiFit,
+    TooMuchWork => Work,
+    DropError => Drop,
+    McError => MonteCarlo,
 }
 
-impl From<SolveError> for BallError {
-    fn from(e: SolveError) -> Self {
-        BallError::Solve(e)
-    }
-}
-
-impl From<FitError> for BallError {
-    fn from(e: FitError) -> Self {
-        BallError::Fit(e)
-    }
-}
-
-impl From<MultiFitError> for BallError {
-    fn from(e: MultiFitError) -> Self {
-        BallError::MultiFit(e)
-    }
-}
-
-impl From<TooMuchWork> for BallError {
-    fn from(e: TooMuchWork) -> Self {
-        BallError::Work(e)
-    }
-}
-
-impl From<DropError> for BallError {
-    fn from(e: DropError) -> Self {
-        BallError::Drop(e)
-    }
-}
-
-impl From<McError> for BallError {
-    fn from(e: McError) -> Self {
-        BallError::MonteCarlo(e)
-    }
-}
-
+/// An oblique impact's bad input and solver failure are the run's own errors; only its
+/// own failures (no rebound, endless switching) stay [`BallError::Oblique`].
 impl From<ObliqueError> for BallError {
     fn from(e: ObliqueError) -> Self {
         match e {

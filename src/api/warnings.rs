@@ -2,7 +2,8 @@
 //! travel with the answer"): the JSON `warnings` array of run, sweep velocity, drop and peers,
 //! a `warning:` line in text, and the explorer's readout.
 
-use super::reach::{cell_indentation, reach_warning};
+use super::map_reach::cell_indentation;
+use super::reach::reach_warning;
 use super::{Ball, BallError};
 use crate::solver::ImpactResponse;
 use crate::text::{number, short, sig};

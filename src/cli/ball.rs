@@ -67,6 +67,17 @@ impl PresetChoice {
 pub struct BallArgs {
     #[command(flatten)]
     pub choice: PresetChoice,
+    #[command(flatten)]
+    pub changes: PresetChanges,
+    /// `--pressure`, `--temperature`, `--inflated-at`, `--after`, `--half-life`.
+    #[command(flatten)]
+    pub conditions: super::conditions::ConditionsArgs,
+}
+
+/// What to change about a preset: its parameter set, its contact law and its parameters.
+/// Declared once, for every command that runs a preset ball and for `figure`'s balls.
+#[derive(Debug, Clone, Default, Args)]
+pub struct PresetChanges {
     /// Parameter set of the preset [default: the preset's `parameters` field]
     #[arg(long, value_enum, value_name = "SET")]
     pub params: Option<SourceArg>,
@@ -75,9 +86,6 @@ pub struct BallArgs {
     pub law: Option<LawArg>,
     #[command(flatten)]
     pub set: Overrides,
-    /// `--pressure`, `--temperature`, `--inflated-at`, `--after`, `--half-life`.
-    #[command(flatten)]
-    pub conditions: super::conditions::ConditionsArgs,
 }
 
 /// Parameters set on the command line over the preset's, so that a fitted ball can be tried
@@ -195,9 +203,9 @@ impl BallArgs {
     /// parameter checked by the library ([`Ball::from_entry_with`]).
     pub fn resolve(&self, v0: Option<f64>) -> anyhow::Result<Ball> {
         let entry = select(self.choice.preset.as_deref(), self.choice.config.as_deref())?;
-        let source = self.params.map(ParamSource::from);
-        let law = self.law.map(ContactLaw::from);
-        let ball = Ball::from_entry_with(&entry, source, law, v0, &self.set.values())?;
+        let source = self.changes.params.map(ParamSource::from);
+        let law = self.changes.law.map(ContactLaw::from);
+        let ball = Ball::from_entry_with(&entry, source, law, v0, &self.changes.set.values())?;
         Ok(ball.at_conditions(&self.conditions.spec())?)
     }
 }

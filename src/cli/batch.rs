@@ -5,13 +5,14 @@
 //! runs the balls in parallel in steps with a progress bar and Ctrl-C, and writes.
 
 use super::ball::BallArgs;
+use super::batch_text;
 use super::budget::Progress;
 use super::measured_file as files;
-use super::output::{self, csv_row, given, human};
+use super::output::{self, csv_row};
 use super::outputs::{check as check_writable, report_then_commit};
 use crate::analysis::batch::{BallData, split};
 use crate::analysis::fit::parse_free;
-use crate::api::{Ball, batch_quantity};
+use crate::api::Ball;
 use crate::api::{BallOutcome, BatchReport, BatchSetup, BatchUnanswered};
 use crate::atomic::Outputs;
 use crate::drop::standards::{self, Standard};
@@ -124,7 +125,7 @@ pub fn run(a: &BatchArgs, out: &mut dyn Write) -> anyhow::Result<()> {
             output::json_on(&mut text_out, &report, on, &ball.conditions)?
         }
         BatchFormat::Csv => text_out.extend_from_slice(balls_csv(&outcomes).as_bytes()),
-        BatchFormat::Text => text(&mut text_out, &ball, &a.file, air, &report)?,
+        BatchFormat::Text => batch_text::text(&mut text_out, &ball, &a.file, air, &report)?,
     }
     report_then_commit(out, &text_out, written)?;
     let s = &report.summary;
@@ -335,139 +336,4 @@ fn histogram_figure(file: &Path, r: &BatchReport<'_>) -> crate::figure::Figure {
         bins,
         &marks,
     )
-}
-
-/// A number or a dash.
-fn cell(x: Option<f64>, digits: usize) -> String {
-    x.filter(|v| v.is_finite())
-        .map_or_else(|| "–".to_string(), |v| human(v, digits))
-}
-
-fn text(
-    out: &mut dyn Write,
-    ball: &Ball,
-    file: &Path,
-    air: Option<Air>,
-    r: &BatchReport<'_>,
-) -> std::io::Result<()> {
-    let s = &r.summary;
-    let std = r.standard.name;
-    let standard = standards::find(std).map_err(std::io::Error::other)?;
-    writeln!(out, "{}, {} law", ball.label(), r.law)?;
-    if let Some(line) = ball.conditions_line() {
-        writeln!(out, "{line}")?;
-    }
-    writeln!(
-        out,
-        "{} from {}, fitted one by one ({}){}; judged against {}: {}, window {}",
-        crate::text::counted(s.balls, "ball"),
-        files::label(file),
-        s.free.join(", "),
-        if air.is_some() {
-            ", with air drag"
-        } else {
-            ", in vacuum"
-        },
-        std,
-        r.standard.title,
-        super::standards::window_cell(standard)
-    )?;
-    writeln!(out)?;
-    let (quantity, _) = batch_quantity(standard);
-    let drop = quantity == "rebound_height";
-    let mut head = vec!["id", "points", "COR"];
-    if drop {
-        head.push("rebound m");
-    }
-    head.extend(["verdict", "margin", ""]);
-    let mut rows = vec![head.into_iter().map(String::from).collect::<Vec<_>>()];
-    for b in r.balls {
-        let mut row = vec![b.id.clone(), b.points.to_string(), cell(b.cor, 5)];
-        if drop {
-            row.push(cell(b.measured, 5));
-        }
-        row.push(b.verdict.unwrap_or("no verdict").to_string());
-        row.push(b.margin.map_or("–".into(), |m| format!("{m:+.4}")));
-        row.push(match (&b.error, &b.fit_error) {
-            (Some(e), _) => e.clone(),
-            (None, Some(e)) => format!("on its readings; no fit: {e}"),
-            (None, None) => String::new(),
-        });
-        rows.push(row);
-    }
-    output::table(out, "  ", &rows)?;
-    let st = &s.stats;
-    let unit = if drop { " m" } else { "" };
-    let v = |x: f64| {
-        if x.is_finite() {
-            format!("{}{unit}", human(x, 5))
-        } else {
-            "–".to_string()
-        }
-    };
-    // an estimate's 95 % interval beside it, where there is one (analysis::batch_stats)
-    let within = |ci: [f64; 2], f: &dyn Fn(f64) -> String, note: &str| {
-        if ci.iter().all(|x| x.is_finite()) {
-            format!(" (95 % {} … {}{note})", f(ci[0]), f(ci[1]))
-        } else {
-            String::new()
-        }
-    };
-    let c = |x: f64| given(x, 3);
-    // the Student interval cut to [0, 1] (a COR) or [0, ∞) (a height): say so beside it
-    let clipped = match (st.mean_ci_clipped, drop) {
-        (false, _) => "",
-        (true, false) => "; Student's t clipped to 0 … 1, where a COR lies",
-        (true, true) => "; Student's t clipped at 0 m, where a rebound lies",
-    };
-    writeln!(out)?;
-    writeln!(
-        out,
-        "{}: n {}, mean {}{}, sd {}, min {}, max {}",
-        quantity.replace('_', " "),
-        st.n,
-        v(st.mean),
-        within(st.mean_ci, &v, clipped),
-        v(st.sd),
-        v(st.min),
-        v(st.max)
-    )?;
-    writeln!(
-        out,
-        "failures {} of {}, Cpk {}{}; {} of {} fits answered",
-        st.failures,
-        st.n,
-        if st.cpk.is_finite() {
-            c(st.cpk)
-        } else {
-            "–".into()
-        },
-        within(st.cpk_ci, &c, ""),
-        s.identified,
-        s.balls
-    )?;
-    if s.unfitted > 0 {
-        writeln!(
-            out,
-            "judged on their readings without a fit: {} (the model cannot follow them; their \
-             rows say why)",
-            s.unfitted
-        )?;
-    }
-    if s.unsure > 0 {
-        writeln!(
-            out,
-            "verdicts not sure at 95 %: {} (a bound of the window within the ball's own interval)",
-            s.unsure
-        )?;
-    }
-    let warned = r.balls.iter().filter(|b| !b.warnings.is_empty()).count();
-    if warned > 0 {
-        writeln!(
-            out,
-            "balls whose fit warns: {warned} (--format json or --csv-out gives the warnings)"
-        )?;
-    }
-    super::output::warning_lines(out, &r.warnings)?;
-    Ok(())
 }

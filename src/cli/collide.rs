@@ -141,12 +141,7 @@ fn text(
         Some(o) => format!("{o} (a body of its mass behind the given surface)"),
     };
     writeln!(out, "{} against {what}", ball.label())?;
-    if let Some(line) = ball.overrides_line() {
-        writeln!(out, "{line}")?;
-    }
-    if let Some(line) = ball.conditions_line() {
-        writeln!(out, "{line}")?;
-    }
+    output::ball_lines(out, ball, None)?;
     writeln!(out, "  law {}, method {}", r.law, r.collision.method.name())?;
     writeln!(out)?;
     table(out, "  ", &setup_rows(r, other.is_some()))?;

@@ -81,7 +81,7 @@ fn measured(path: &std::path::Path) -> anyhow::Result<Measured> {
 }
 
 pub fn run(a: &CourtArgs, out: &mut dyn Write) -> anyhow::Result<()> {
-    super::ball::check_overrides(&a.ball.set, None, None)?;
+    super::ball::check_overrides(&a.ball.changes.set, None, None)?;
     let ball = a.ball.resolve(None)?;
     let measured = a.fit.as_deref().map(measured).transpose()?;
     let friction = measured
@@ -155,13 +155,7 @@ fn text(
         ball.label(),
         given(friction, 6)
     )?;
-    if let Some(line) = ball.overrides_line() {
-        writeln!(out, "{line}")?;
-    }
-    writeln!(out, "{}", surface.label())?;
-    if let Some(line) = ball.conditions_line() {
-        writeln!(out, "{line}")?;
-    }
+    output::ball_lines(out, ball, Some(surface))?;
     let row = |k: &str, v: String| vec![k.to_string(), v];
     let rows = vec![
         row("court pace rating", human(pace.cpr, 4)),

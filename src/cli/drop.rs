@@ -2,15 +2,13 @@
 //! text table, one JSON object, or the trajectory as CSV; with `--standard`, the verdict.
 
 use super::ball::BallArgs;
+use super::drop_text;
 use super::intervals_text::line;
-use super::output::{self, csv_row, given, human, num, table};
-use crate::analysis::statics::StaticDeflection;
+use super::output::{self, csv_row, num};
 use crate::api::Ball;
-use crate::drop::deformation::{self, DeformationStandard};
-use crate::drop::standards::{self, Reference, Standard, Test, Verdict};
-use crate::drop::{
-    Air, DEFAULT_BOUNCES, DEFAULT_MIN_REBOUND, DropError, DropRun, DropSetup, End, G,
-};
+use crate::drop::deformation;
+use crate::drop::standards::{self, Verdict};
+use crate::drop::{Air, DEFAULT_BOUNCES, DEFAULT_MIN_REBOUND, DropError, DropRun, DropSetup};
 use clap::{Args, ValueEnum};
 use serde::Serialize;
 use std::io::Write;
@@ -200,12 +198,12 @@ pub fn run(a: &DropArgs, out: &mut dyn Write) -> anyhow::Result<()> {
                 label.push('\n');
                 label.push_str(&line);
             }
-            text(out, &label, &run, standard.zip(verdict), radius)?;
+            drop_text::text(out, &label, &run, standard.zip(verdict), radius)?;
             if let (Some(t), Some(v)) = (leak_test, &leak_verdict) {
                 super::drop_leak::text(out, t, v)?;
             }
             if let (Some((d, s)), Some(v)) = (&statics, &verdict) {
-                static_verdict_text(out, d, s, v)?;
+                drop_text::static_verdict_text(out, d, s, v)?;
             }
             output::warning_lines(out, &warnings)?;
             if let (Some(i), Some(first), Some(fit)) = (bands.first(), run.bounces.first(), &b.fit)
@@ -259,54 +257,6 @@ struct StandardJson {
     /// A static standard's test (src/drop/deformation.rs): only for one.
     #[serde(rename = "static", skip_serializing_if = "Option::is_none")]
     static_test: Option<crate::api::StaticTestReport>,
-}
-
-/// "standard itf-deformation: …" with the forward verdict and the return reading.
-fn static_verdict_text(
-    out: &mut dyn Write,
-    d: &DeformationStandard,
-    s: &StaticDeflection,
-    v: &Verdict,
-) -> std::io::Result<()> {
-    let mm = |x: f64| human(x * 1e3, 4);
-    let window = |lo: Option<f64>, hi: Option<f64>| {
-        format!(
-            "{} … {} mm",
-            lo.map_or("–".into(), |x| human(x * 1e3, 4)),
-            hi.map_or("–".into(), |x| human(x * 1e3, 4))
-        )
-    };
-    writeln!(out)?;
-    writeln!(out, "standard {}: {}", d.name, d.title)?;
-    writeln!(
-        out,
-        "  {} kg between {}, the model's static chain (not the drop above)",
-        given(d.test.load_kg, 6),
-        d.surface
-    )?;
-    writeln!(
-        out,
-        "  forward deflection: window {}, predicted {} mm: {}, margin {}{} mm",
-        window(v.window[0], v.window[1]),
-        mm(v.measured),
-        if v.pass { "PASS" } else { "FAIL" },
-        if v.margin >= 0.0 { "+" } else { "" },
-        human(v.margin * 1e3, 3),
-    )?;
-    let ret = match &s.return_ {
-        Ok(r) => format!("{} mm", mm(r.diameter())),
-        Err(why) => format!("none ({why})"),
-    };
-    match d.return_window {
-        Some([lo, hi]) => writeln!(
-            out,
-            "  return deflection after a {} mm compression: {ret}; the rules' window {} \
-             (reported, not judged: docs/drop.md)",
-            mm(d.test.peak_m),
-            window(Some(lo), Some(hi))
-        ),
-        None => writeln!(out, "  return deflection: {ret}"),
-    }
 }
 
 /// One bounce's 95 % intervals on a fitted preset (docs/fitting.md, "Prediction intervals").
@@ -411,112 +361,4 @@ fn trajectory_csv(out: &mut dyn Write, run: &DropRun) -> std::io::Result<()> {
         csv_row(out, &[num(s.t), num(s.height), num(s.velocity)])?;
     }
     Ok(())
-}
-
-fn text(
-    out: &mut dyn Write,
-    label: &str,
-    run: &DropRun,
-    judged: Option<(&Standard, Verdict)>,
-    radius: f64,
-) -> std::io::Result<()> {
-    writeln!(out, "{label}")?;
-    writeln!(
-        out,
-        "released from rest at {} m (bottom of the ball), g = {G} m/s², {}",
-        given(run.setup.height, 6),
-        run.drag_model()
-    )?;
-    writeln!(out)?;
-    let mut rows = vec![
-        [
-            "#",
-            "t_start s",
-            "v_in m/s",
-            "v_out m/s",
-            "COR",
-            "rebound m",
-            "contact ms",
-            "peak force N",
-        ]
-        .map(String::from)
-        .to_vec(),
-    ];
-    for (i, b) in run.bounces.iter().enumerate() {
-        rows.push(vec![
-            (i + 1).to_string(),
-            human(b.t_start, 4),
-            human(b.v_in, 4),
-            human(b.v_out, 4),
-            format!("{:.4}", b.cor),
-            human(b.rebound_height, 4),
-            human(b.contact_time * 1e3, 4),
-            human(b.max_force, 4),
-        ]);
-    }
-    table(out, "  ", &rows)?;
-    writeln!(out)?;
-    let why = match run.end {
-        End::Count => format!("after {} bounces (--bounces)", run.bounces.len()),
-        End::MinRebound => format!(
-            "a rebound below {} m (--min-rebound)",
-            given(run.setup.min_rebound, 4)
-        ),
-        End::NoRebound => "the ball stayed on the plate (e = 0)".into(),
-    };
-    writeln!(out, "ended: {why}")?;
-    if let Some((s, v)) = judged {
-        writeln!(out)?;
-        verdict_text(out, s, &v, radius)?;
-        if s.release_height(radius)
-            .is_some_and(|h| h != run.setup.height)
-        {
-            writeln!(
-                out,
-                "  (judged on the standard's own drop, not on the {} m above)",
-                given(run.setup.height, 6)
-            )?;
-        }
-    }
-    Ok(())
-}
-
-/// "standard itf (…): window 1.35 … 1.47 m, measured 1.410 m → pass, margin +0.060 m".
-fn verdict_text(
-    out: &mut dyn Write,
-    s: &Standard,
-    v: &Verdict,
-    radius: f64,
-) -> std::io::Result<()> {
-    let (unit, conditions) = match s.test {
-        Test::Drop {
-            height,
-            drop_ref,
-            rebound_ref,
-        } => (
-            " m",
-            format!(
-                "drop from {} m to the {} of the ball, rebound read at the {}{}",
-                given(height, 4),
-                drop_ref.name(),
-                rebound_ref.name(),
-                match rebound_ref {
-                    Reference::Top => format!(" (+{} m, the diameter)", given(2.0 * radius, 4)),
-                    Reference::Bottom => String::new(),
-                }
-            ),
-        ),
-        Test::Cor { speed } => ("", format!("COR at {} m/s", given(speed, 4))),
-    };
-    writeln!(out, "standard {}: {}", s.name, s.title)?;
-    writeln!(out, "  {conditions}, {}", s.surface)?;
-    writeln!(
-        out,
-        "  window {}, predicted {}{unit}: {}, margin {}{}{unit}",
-        super::standards::window_cell(s),
-        human(v.measured, 4),
-        if v.pass { "PASS" } else { "FAIL" },
-        if v.margin >= 0.0 { "+" } else { "" },
-        human(v.margin, 3),
-    )
 }

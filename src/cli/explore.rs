@@ -5,7 +5,7 @@
 //! `y` shows (the `run` line) gives that state back without `run`. The ball is built by
 //! `run`'s own steps ([`BallArgs::resolve`], [`ball::set_lambda_zeta`]).
 
-use super::ball::{self, BallArgs, LawArg, Overrides, PresetChoice, SourceArg};
+use super::ball::{self, BallArgs, PresetChanges, PresetChoice};
 use crate::catalog::surfaces;
 use crate::tui::app::App;
 use crate::tui::session::Session;
@@ -14,14 +14,10 @@ use clap::Args;
 /// The state options of the explorer, as `run` takes them.
 #[derive(Debug, Clone, Default, Args)]
 pub struct ExplorerArgs {
-    /// Parameter set of the preset the explorer opens on [default: the preset's]
-    #[arg(long, value_enum, value_name = "SET")]
-    pub params: Option<SourceArg>,
-    /// Contact law the explorer opens on [default: the preset's]
-    #[arg(long, value_enum)]
-    pub law: Option<LawArg>,
+    /// `--params`, `--law` and the overrides, as `run` takes them; their help says "the
+    /// explorer opens on" (`Cli`'s `mut_arg`, src/cli/mod.rs).
     #[command(flatten)]
-    pub set: Overrides,
+    pub changes: PresetChanges,
     /// Impact speed v0 (m/s) the explorer opens on [default: the preset's]
     #[arg(long, value_name = "V", value_parser = super::number::number, allow_hyphen_values = true)]
     pub v0: Option<f64>,
@@ -76,10 +72,10 @@ pub struct ExplorerArgs {
 impl ExplorerArgs {
     /// The first option given, as the error before a subcommand names it.
     pub fn given(&self) -> Option<&'static str> {
-        let s = &self.set;
+        let s = &self.changes.set;
         [
-            ("--params", self.params.is_some()),
-            ("--law", self.law.is_some()),
+            ("--params", self.changes.params.is_some()),
+            ("--law", self.changes.law.is_some()),
             ("--mass", s.size.mass.is_some()),
             ("--radius", s.size.radius.is_some()),
             ("--k-p", s.k_p.is_some()),
@@ -136,16 +132,14 @@ impl ExplorerArgs {
         let entry = ball::select(choice.preset.as_deref(), choice.config.as_deref())?;
         let args = BallArgs {
             choice: choice.clone(),
-            params: self.params,
-            law: self.law,
-            set: self.set.clone(),
+            changes: self.changes.clone(),
             conditions: super::conditions::ConditionsArgs {
                 pressure: self.pressure,
                 temperature: self.temperature,
                 ..Default::default()
             },
         };
-        ball::check_overrides(&self.set, self.lambda, self.zeta)?;
+        ball::check_overrides(&self.changes.set, self.lambda, self.zeta)?;
         let mut b = args.resolve(self.v0)?;
         ball::set_lambda_zeta(&mut b, self.lambda, self.zeta)?;
         let radius = b.measured.as_ref().map(|m| m.radius);

@@ -2,7 +2,7 @@
 //! CSV, JSON or an SVG heat map (docs/map.md). The library does the work ([`crate::map`]);
 //! this file reads the options, checks the work limit and writes.
 
-use super::ball::{BallArgs, LawArg, Overrides, PresetChoice, Size};
+use super::ball::{BallArgs, LawArg, Overrides, PresetChanges, PresetChoice, Size};
 use super::output::num;
 
 use crate::map::csv::{csv, header};
@@ -121,13 +121,15 @@ pub fn spec(a: &MapArgs) -> anyhow::Result<MapBall> {
     }
     let args = BallArgs {
         choice: a.choice.clone(),
-        law: a.law,
-        set: Overrides {
-            size: a.size.clone(),
-            ..Overrides::default()
+        changes: PresetChanges {
+            law: a.law,
+            set: Overrides {
+                size: a.size.clone(),
+                ..Overrides::default()
+            },
+            ..PresetChanges::default()
         },
         conditions: a.conditions,
-        ..BallArgs::default()
     };
     let b = args.resolve(a.v0)?;
     let spec = MapSpec::dimensional(b.params, b.law, lambda, zeta)?

@@ -10,12 +10,14 @@
 pub mod ball;
 pub mod bat;
 pub mod batch;
+mod batch_text;
 pub mod budget;
 pub mod collide;
 pub mod conditions;
 pub mod court;
 pub mod drop;
 mod drop_leak;
+mod drop_text;
 mod exit;
 pub mod explore;
 pub mod figure;
@@ -26,6 +28,7 @@ pub use crate::measured::file as measured_file;
 pub use crate::text::parse as number;
 pub mod mc;
 pub mod mc_shot;
+mod mc_text;
 pub mod oblique;
 pub mod output;
 pub mod outputs;
@@ -60,6 +63,10 @@ const AFTER_HELP: &str = "With no subcommand, opens the terminal explorer on a p
 #[command(mut_arg("config", |a| {
     a.help("Preset file the explorer opens on (TOML, same schema as the embedded presets)")
 }))]
+#[command(mut_arg("params", |a| {
+    a.help("Parameter set of the preset the explorer opens on [default: the preset's]")
+}))]
+#[command(mut_arg("law", |a| a.help("Contact law the explorer opens on [default: the preset's]")))]
 pub struct Cli {
     /// The preset the explorer opens on, or the one a subcommand runs
     /// (`bouncelab --preset golf run` is `bouncelab run --preset golf`)
@@ -208,10 +215,7 @@ fn dispatch(cli: Cli, out: &mut dyn Write) -> anyhow::Result<()> {
             }
             sweep::run(&s, out)
         }
-        Command::Fit(mut a) => {
-            merge(top, &mut a.ball)?;
-            fit::run(&a, out)
-        }
+        Command::Fit(a) => with_ball(top, a, |a| &mut a.ball, fit::run, out),
         Command::Presets(mut a) => {
             merge_config(top, &mut a.choice)?;
             presets::run(&a, out)
@@ -221,10 +225,7 @@ fn dispatch(cli: Cli, out: &mut dyn Write) -> anyhow::Result<()> {
             merge(top, &mut a.ball)?;
             figure::run(&a, out)
         }
-        Command::Peers(mut a) => {
-            merge(top, &mut a.ball)?;
-            peers::run(&a, out)
-        }
+        Command::Peers(a) => with_ball(top, a, |a| &mut a.ball, peers::run, out),
         Command::Reproduce(a) => {
             if top.is_given() {
                 anyhow::bail!(
@@ -246,42 +247,15 @@ fn dispatch(cli: Cli, out: &mut dyn Write) -> anyhow::Result<()> {
             }
             map::run(&a, out)
         }
-        Command::Drop(mut a) => {
-            merge(top, &mut a.ball)?;
-            drop::run(&a, out)
-        }
-        Command::Collide(mut a) => {
-            merge(top, &mut a.ball)?;
-            collide::run(&a, out)
-        }
-        Command::Bat(mut a) => {
-            merge(top, &mut a.ball)?;
-            bat::run(&a, out)
-        }
-        Command::Mc(mut a) => {
-            merge(top, &mut a.ball)?;
-            mc::run(&a, out)
-        }
-        Command::Batch(mut a) => {
-            merge(top, &mut a.ball)?;
-            batch::run(&a, out)
-        }
-        Command::Oblique(mut a) => {
-            merge(top, &mut a.ball)?;
-            oblique::run(&a, out)
-        }
-        Command::Court(mut a) => {
-            merge(top, &mut a.ball)?;
-            court::run(&a, out)
-        }
-        Command::Shot(mut a) => {
-            merge(top, &mut a.ball)?;
-            shot::run(&a, out)
-        }
-        Command::Static(mut a) => {
-            merge(top, &mut a.ball)?;
-            statics::run(&a, out)
-        }
+        Command::Drop(a) => with_ball(top, a, |a| &mut a.ball, drop::run, out),
+        Command::Collide(a) => with_ball(top, a, |a| &mut a.ball, collide::run, out),
+        Command::Bat(a) => with_ball(top, a, |a| &mut a.ball, bat::run, out),
+        Command::Mc(a) => with_ball(top, a, |a| &mut a.ball, mc::run, out),
+        Command::Batch(a) => with_ball(top, a, |a| &mut a.ball, batch::run, out),
+        Command::Oblique(a) => with_ball(top, a, |a| &mut a.ball, oblique::run, out),
+        Command::Court(a) => with_ball(top, a, |a| &mut a.ball, court::run, out),
+        Command::Shot(a) => with_ball(top, a, |a| &mut a.ball, shot::run, out),
+        Command::Static(a) => with_ball(top, a, |a| &mut a.ball, statics::run, out),
         Command::Standards(a) => {
             if top.is_given() {
                 anyhow::bail!("standards lists the standards: --preset and --config do not apply");
@@ -310,6 +284,19 @@ fn merge_config(top: ball::PresetChoice, choice: &mut ball::PresetChoice) -> any
         choice.config = Some(c);
     }
     Ok(())
+}
+
+/// A command that runs one ball: the preset chosen before the subcommand merged into its
+/// own options (`merge`), then its `run`.
+fn with_ball<A>(
+    top: ball::PresetChoice,
+    mut args: A,
+    ball: fn(&mut A) -> &mut ball::BallArgs,
+    run: fn(&A, &mut dyn Write) -> anyhow::Result<()>,
+    out: &mut dyn Write,
+) -> anyhow::Result<()> {
+    merge(top, ball(&mut args))?;
+    run(&args, out)
 }
 
 /// `bouncelab --preset golf run` means `bouncelab run --preset golf`.

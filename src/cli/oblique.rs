@@ -111,7 +111,7 @@ pub fn surface_of(
 }
 
 pub fn run(a: &ObliqueArgs, out: &mut dyn Write) -> anyhow::Result<()> {
-    super::ball::check_overrides(&a.ball.set, None, None)?;
+    super::ball::check_overrides(&a.ball.changes.set, None, None)?;
     let ball = a.ball.resolve(a.v0)?;
     let (surface, friction) = surface_of(&a.surface, a.friction, &a.tangential)?;
     let spec = ObliqueSpec {

@@ -182,6 +182,27 @@ pub fn residual(x: f64) -> String {
     }
 }
 
+/// The lines under a text report's first that say how its ball differs from its preset: the
+/// overrides ([`crate::api::Ball::overrides_line`]), then the `surface` it ran on where the
+/// report names it there, then the conditions ([`crate::api::Ball::conditions_line`]); each
+/// only where there is one.
+pub fn ball_lines(
+    out: &mut dyn Write,
+    ball: &crate::api::Ball,
+    surface: Option<&SurfaceUsed>,
+) -> io::Result<()> {
+    if let Some(line) = ball.overrides_line() {
+        writeln!(out, "{line}")?;
+    }
+    if let Some(s) = surface {
+        writeln!(out, "{}", s.label())?;
+    }
+    if let Some(line) = ball.conditions_line() {
+        writeln!(out, "{line}")?;
+    }
+    Ok(())
+}
+
 pub fn warning_lines(out: &mut dyn Write, warnings: &[String]) -> io::Result<()> {
     for w in warnings {
         writeln!(out, "warning: {w}")?;

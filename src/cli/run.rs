@@ -67,7 +67,7 @@ struct Report<'a> {
 }
 
 pub fn run(args: &RunArgs, out: &mut dyn Write) -> anyhow::Result<()> {
-    if args.normalized && args.ball.set.any() {
+    if args.normalized && args.ball.changes.set.any() {
         anyhow::bail!(
             "--normalized runs m = K_p = v0 = 1: --mass, --radius, --k-p, --damping, --k-r and \
              --z-p do not apply"
@@ -79,9 +79,9 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> anyhow::Result<()> {
              --after and --half-life do not apply"
         );
     }
-    ball::check_overrides(&args.ball.set, args.lambda, args.zeta)?;
+    ball::check_overrides(&args.ball.changes.set, args.lambda, args.zeta)?;
     let ball = if args.normalized {
-        let law = args.ball.law.map_or(ContactLaw::Linear, ContactLaw::from);
+        let law = args.ball.changes.law.map_or(ContactLaw::Linear, Into::into);
         Ball::normalized(
             args.lambda.unwrap_or(1.0),
             args.zeta.unwrap_or(0.1),

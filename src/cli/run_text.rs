@@ -93,12 +93,7 @@ pub fn write(
         _ => writeln!(out, "{}", b.label())?,
     }
     writeln!(out, "{} law, {method}", r.law)?;
-    if let Some(line) = b.overrides_line() {
-        writeln!(out, "{line}")?;
-    }
-    if let Some(line) = b.conditions_line() {
-        writeln!(out, "{line}")?;
-    }
+    output::ball_lines(out, b, None)?;
     writeln!(out)?;
     write_parameters(out, b, r, &units)?;
     writeln!(out)?;

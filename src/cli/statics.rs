@@ -34,7 +34,7 @@ pub struct StaticArgs {
 }
 
 pub fn run(a: &StaticArgs, out: &mut dyn Write) -> anyhow::Result<()> {
-    super::ball::check_overrides(&a.ball.set, None, None)?;
+    super::ball::check_overrides(&a.ball.changes.set, None, None)?;
     let ball = a.ball.resolve(None)?;
     let s = ball.static_deflection(a.load, a.peak)?;
     let report = StaticReport::new(&ball, a.load, &s);
@@ -52,12 +52,7 @@ pub fn run(a: &StaticArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         }
         StaticFormat::Text => {
             writeln!(out, "{}", ball.label())?;
-            if let Some(line) = ball.overrides_line() {
-                writeln!(out, "{line}")?;
-            }
-            if let Some(line) = ball.conditions_line() {
-                writeln!(out, "{line}")?;
-            }
+            output::ball_lines(out, &ball, None)?;
             text(out, a.load, &s, ball.law.name())?;
             output::warning_lines(out, &report.warnings)?;
         }

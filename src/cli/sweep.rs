@@ -208,7 +208,7 @@ struct VelocityDoc<'a, T> {
 }
 
 fn velocity(a: &VelocityArgs, out: &mut dyn Write) -> anyhow::Result<()> {
-    super::ball::check_overrides(&a.ball.set, a.lambda, a.zeta)?;
+    super::ball::check_overrides(&a.ball.changes.set, a.lambda, a.zeta)?;
     let mut b = a.ball.resolve(a.v0)?;
     super::ball::set_lambda_zeta(&mut b, a.lambda, a.zeta)?;
     let v0 = b.params.v0;

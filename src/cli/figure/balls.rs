@@ -14,7 +14,7 @@
 use super::{
     FigureArgs, FigureName, HISTORY_SAMPLES, VELOCITY_POINTS, history_figures, velocity_figure,
 };
-use crate::cli::ball::{self, BallArgs, LawArg, Overrides, PresetChoice, SourceArg};
+use crate::cli::ball::{self, BallArgs, PresetChanges, PresetChoice};
 use crate::figure::history::OUTSIDE;
 use crate::figure::paper;
 use crate::figure::{Figure, Kind};
@@ -31,14 +31,8 @@ pub struct FigureBall {
     /// Preset from a TOML file (same schema as the embedded presets)
     #[arg(long, value_name = "FILE")]
     pub config: Option<PathBuf>,
-    /// Parameter set of the preset [default: the preset's `parameters` field]
-    #[arg(long, value_enum, value_name = "SET")]
-    pub params: Option<SourceArg>,
-    /// Contact law [default: the preset's `law` field]
-    #[arg(long, value_enum)]
-    pub law: Option<LawArg>,
     #[command(flatten)]
-    pub set: Overrides,
+    pub changes: PresetChanges,
 }
 
 impl FigureBall {
@@ -55,9 +49,7 @@ impl FigureBall {
                 preset: self.presets.first().cloned(),
                 config: self.config.clone(),
             },
-            params: self.params,
-            law: self.law,
-            set: self.set.clone(),
+            changes: self.changes.clone(),
             conditions: Default::default(),
         };
         Ok((ball, self.presets.iter().skip(1).cloned().collect()))
@@ -94,7 +86,7 @@ pub(super) fn ball_figure(a: &FigureArgs, b: &paper::Ball) -> anyhow::Result<Fig
 pub(super) fn one_ball(a: &FigureArgs, args: &BallArgs) -> anyhow::Result<(paper::Ball, String)> {
     let v0 = a.v0.filter(|_| a.name != FigureName::CorVelocity);
     let lambda = a.lambda.as_ref().filter(|l| l.len() == 1).map(|l| l[0]);
-    ball::check_overrides(&args.set, lambda, a.zeta)?;
+    ball::check_overrides(&args.changes.set, lambda, a.zeta)?;
     let mut b = args.resolve(v0)?;
     ball::set_lambda_zeta(&mut b, lambda, a.zeta)?;
     Ok((b.record(), b.origin))

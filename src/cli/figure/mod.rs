@@ -278,8 +278,9 @@ fn build(a: &FigureArgs) -> anyhow::Result<Figure> {
     use FigureName::*;
     match a.name {
         CorZeta | ForceZeta => {
-            let law = a.ball.law.map_or(ContactLaw::Linear, ContactLaw::from);
-            let source = a.ball.params.map(ParamSource::from);
+            let changes = &a.ball.changes;
+            let law = changes.law.map_or(ContactLaw::Linear, ContactLaw::from);
+            let source = changes.params.map(ParamSource::from);
             let mut balls: Vec<paper::Ball> = Preset::embedded()
                 .iter()
                 .map(|p| embedded_ball(p, source, law))

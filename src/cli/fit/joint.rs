@@ -238,7 +238,7 @@ fn report_and_save(
             &ball.conditions,
         )?,
         FitFormat::Text => {
-            super::report::text(&mut text, ball, &all, &f, &report)?;
+            super::report_text::text(&mut text, ball, &all, &f, &report)?;
             sets_text(&mut text, &j.sets)?;
         }
     }

@@ -146,5 +146,5 @@ fn write_text(out: &mut dyn Write, r: &LeakJson) -> std::io::Result<()> {
         out,
         "  (FIFA's 72 h test at 0.8 bar, 20 °C: at most 20 % lost for Quality Pro, 25 % for Quality)"
     )?;
-    super::report::write_verdict(out, r.lack_of_fit.as_ref(), r.no_answer)
+    super::report_text::write_verdict(out, r.lack_of_fit.as_ref(), r.no_answer)
 }

@@ -2,8 +2,8 @@
 //! recoil spring K_r (and λ) at the ball's ζ, z_p and v0 (docs/model.md §4), as it always
 //! has; a COR table, a force–time trace or drop tests fit several parameters at once
 //! ([`multi`]). The types the fit's files share ([`FitArgs`], [`Source`], [`Loaded`]) live
-//! here; `multi` uses `plot`, `report` and `save`, which use only these types and each other
-//! downward (`save` uses `report`).
+//! here; `multi` uses `plot`, `report`, `report_text` and `save`, which use only these types
+//! and each other downward (`save` and `plot` use `report_text`, which uses `report`).
 
 use super::ball::BallArgs;
 use super::output::{self, given, human, table};
@@ -20,6 +20,7 @@ pub mod multi;
 mod oblique;
 mod plot;
 mod report;
+mod report_text;
 mod save;
 mod save_shift;
 mod temperature;

@@ -224,7 +224,7 @@ pub fn run(
             let on = output::Met::Surface(&plate);
             output::json_on(&mut text, &report, on, &ball.conditions)?
         }
-        FitFormat::Text => super::report::text(&mut text, &ball, &data, &f, &report)?,
+        FitFormat::Text => super::report_text::text(&mut text, &ball, &data, &f, &report)?,
     }
     if !f.identified {
         out.write_all(&text)?;

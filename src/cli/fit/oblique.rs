@@ -2,6 +2,7 @@
 //! measured oblique bounces (docs/oblique.md §9), with the other fits' intervals, verdict and
 //! exit codes: a report, then exit 1 when the data do not pin what was fitted.
 
+use super::report_text::{estimate_rows, exact_words};
 use super::{FitArgs, FitFormat};
 use crate::BallError;
 use crate::analysis::fit::oblique::ObliqueFit;
@@ -72,9 +73,9 @@ fn write_text(
     )?;
     writeln!(out)?;
     // an exact solve has no error to give (`ObliqueFit::exact`), as `fit --cor-table`
-    let exact = f.exact().then(|| super::report::exact_words(f.no_scatter));
+    let exact = f.exact().then(|| exact_words(f.no_scatter));
     let interval = |e: &Estimate| format!("{} … {}", human(e.ci95[0], 4), human(e.ci95[1], 4));
-    let rows = super::report::estimate_rows(&f.fitted, exact, interval);
+    let rows = estimate_rows(&f.fitted, exact, interval);
     table(out, "  ", &rows)?;
     writeln!(out)?;
     let mut rest = vec![vec![

@@ -23,9 +23,9 @@ fn subtitle(ball: &Ball, f: &MultiFit, speeds: &[f64]) -> String {
         .iter()
         .map(|e| {
             let interval = if f.exact() {
-                super::report::exact_text(f).to_string()
+                super::report_text::exact_text(f).to_string()
             } else {
-                format!("95 %: {}", super::report::interval(e))
+                format!("95 %: {}", super::report_text::interval(e))
             };
             format!("{} = {} {} ({interval})", e.name, human(e.value, 5), e.unit)
         })
@@ -80,18 +80,9 @@ fn residuals(x: Axis, y_label: &str, label: &str, rms: String, points: Vec<(f64,
 /// (data and model, residuals) for a trace.
 fn trace_figures(ball: &Ball, data: &Loaded, f: &MultiFit) -> Option<(Figure, Figure)> {
     let t = data.trace.as_ref()?;
-    let measured: Vec<(f64, f64)> = t
-        .time
-        .iter()
-        .copied()
-        .zip(t.force.iter().copied())
-        .collect();
-    let model: Vec<(f64, f64)> = t
-        .time
-        .iter()
-        .copied()
-        .zip(f.model.iter().copied())
-        .collect();
+    let over_time =
+        |y: &[f64]| -> Vec<(f64, f64)> { t.time.iter().copied().zip(y.iter().copied()).collect() };
+    let (measured, model) = (over_time(&t.force), over_time(&f.model));
     let resid: Vec<(f64, f64)> = t
         .time
         .iter()

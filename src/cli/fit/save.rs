@@ -93,7 +93,7 @@ fn header(ball: &Ball, data: &Loaded, f: &MultiFit, when: &str) -> Vec<String> {
     let mut h = vec![
         format!(
             "Fitted by `bouncelab fit` on {when} to {what} ({}), {} law,",
-            super::report::points(f.points),
+            super::report_text::points(f.points),
             ball.law
         ),
         format!(
@@ -108,7 +108,7 @@ fn header(ball: &Ball, data: &Loaded, f: &MultiFit, when: &str) -> Vec<String> {
         let value = short(e.value);
         h.push(format!(
             "{name} = {value} {unit} ({})",
-            super::report::exact_text(f)
+            super::report_text::exact_text(f)
         ));
     }
     for e in f.fitted.iter().filter(|_| !exact) {

@@ -145,5 +145,5 @@ fn write_text(out: &mut dyn Write, r: &Report, f: &TemperatureFit) -> std::io::R
         ],
     ];
     table(out, "  ", &rows)?;
-    super::report::write_verdict(out, r.lack_of_fit.as_ref(), r.no_answer)
+    super::report_text::write_verdict(out, r.lack_of_fit.as_ref(), r.no_answer)
 }

@@ -3,7 +3,7 @@
 
 use super::{Report, Row};
 use crate::api::Ball;
-use crate::cli::output::{csv_row, given, human, num, opt_num, table};
+use crate::cli::output::{ball_lines, csv_row, given, human, num, opt_num, table};
 use crate::peers::PeerBall;
 use std::io::Write;
 
@@ -55,12 +55,7 @@ pub(super) fn text(
         given(ball.radius, 6),
         given(ball.v0, 6)
     )?;
-    if let Some(line) = b.overrides_line() {
-        writeln!(out, "{line}")?;
-    }
-    if let Some(line) = b.conditions_line() {
-        writeln!(out, "{line}")?;
-    }
+    ball_lines(out, b, None)?;
     if let Some(p) = &r.pair {
         writeln!(
             out,

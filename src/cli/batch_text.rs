@@ -1,0 +1,145 @@
+//! `bouncelab batch`'s text report (src/cli/batch.rs): a row a ball with its verdict, then
+//! the batch's statistics with Cpk.
+
+use super::measured_file as files;
+use super::output::{self, given, human};
+use crate::api::{Ball, BatchReport, batch_quantity};
+use crate::drop::standards;
+use crate::measured::Air;
+use std::io::Write;
+use std::path::Path;
+
+/// A number or a dash.
+fn cell(x: Option<f64>, digits: usize) -> String {
+    x.filter(|v| v.is_finite())
+        .map_or_else(|| "–".to_string(), |v| human(v, digits))
+}
+
+pub(super) fn text(
+    out: &mut dyn Write,
+    ball: &Ball,
+    file: &Path,
+    air: Option<Air>,
+    r: &BatchReport<'_>,
+) -> std::io::Result<()> {
+    let s = &r.summary;
+    let std = r.standard.name;
+    let standard = standards::find(std).map_err(std::io::Error::other)?;
+    writeln!(out, "{}, {} law", ball.label(), r.law)?;
+    if let Some(line) = ball.conditions_line() {
+        writeln!(out, "{line}")?;
+    }
+    writeln!(
+        out,
+        "{} from {}, fitted one by one ({}){}; judged against {}: {}, window {}",
+        crate::text::counted(s.balls, "ball"),
+        files::label(file),
+        s.free.join(", "),
+        if air.is_some() {
+            ", with air drag"
+        } else {
+            ", in vacuum"
+        },
+        std,
+        r.standard.title,
+        super::standards::window_cell(standard)
+    )?;
+    writeln!(out)?;
+    let (quantity, _) = batch_quantity(standard);
+    let drop = quantity == "rebound_height";
+    let mut head = vec!["id", "points", "COR"];
+    if drop {
+        head.push("rebound m");
+    }
+    head.extend(["verdict", "margin", ""]);
+    let mut rows = vec![head.into_iter().map(String::from).collect::<Vec<_>>()];
+    for b in r.balls {
+        let mut row = vec![b.id.clone(), b.points.to_string(), cell(b.cor, 5)];
+        if drop {
+            row.push(cell(b.measured, 5));
+        }
+        row.push(b.verdict.unwrap_or("no verdict").to_string());
+        row.push(b.margin.map_or("–".into(), |m| format!("{m:+.4}")));
+        row.push(match (&b.error, &b.fit_error) {
+            (Some(e), _) => e.clone(),
+            (None, Some(e)) => format!("on its readings; no fit: {e}"),
+            (None, None) => String::new(),
+        });
+        rows.push(row);
+    }
+    output::table(out, "  ", &rows)?;
+    let st = &s.stats;
+    let unit = if drop { " m" } else { "" };
+    let v = |x: f64| {
+        if x.is_finite() {
+            format!("{}{unit}", human(x, 5))
+        } else {
+            "–".to_string()
+        }
+    };
+    // an estimate's 95 % interval beside it, where there is one (analysis::batch_stats)
+    let within = |ci: [f64; 2], f: &dyn Fn(f64) -> String, note: &str| {
+        if ci.iter().all(|x| x.is_finite()) {
+            format!(" (95 % {} … {}{note})", f(ci[0]), f(ci[1]))
+        } else {
+            String::new()
+        }
+    };
+    let c = |x: f64| given(x, 3);
+    // the Student interval cut to [0, 1] (a COR) or [0, ∞) (a height): say so beside it
+    let clipped = match (st.mean_ci_clipped, drop) {
+        (false, _) => "",
+        (true, false) => "; Student's t clipped to 0 … 1, where a COR lies",
+        (true, true) => "; Student's t clipped at 0 m, where a rebound lies",
+    };
+    writeln!(out)?;
+    writeln!(
+        out,
+        "{}: n {}, mean {}{}, sd {}, min {}, max {}",
+        quantity.replace('_', " "),
+        st.n,
+        v(st.mean),
+        within(st.mean_ci, &v, clipped),
+        v(st.sd),
+        v(st.min),
+        v(st.max)
+    )?;
+    writeln!(
+        out,
+        "failures {} of {}, Cpk {}{}; {} of {} fits answered",
+        st.failures,
+        st.n,
+        if st.cpk.is_finite() {
+            c(st.cpk)
+        } else {
+            "–".into()
+        },
+        within(st.cpk_ci, &c, ""),
+        s.identified,
+        s.balls
+    )?;
+    if s.unfitted > 0 {
+        writeln!(
+            out,
+            "judged on their readings without a fit: {} (the model cannot follow them; their \
+             rows say why)",
+            s.unfitted
+        )?;
+    }
+    if s.unsure > 0 {
+        writeln!(
+            out,
+            "verdicts not sure at 95 %: {} (a bound of the window within the ball's own interval)",
+            s.unsure
+        )?;
+    }
+    let warned = r.balls.iter().filter(|b| !b.warnings.is_empty()).count();
+    if warned > 0 {
+        writeln!(
+            out,
+            "balls whose fit warns: {warned} (--format json or --csv-out gives the warnings)"
+        )?;
+    }
+    output::warning_lines(out, &r.warnings)?;
+    Ok(())
+}
