@@ -71,19 +71,14 @@ pub(super) fn step<S: System>(sys: &S, x0: &X, h: f64, tol: Tolerance) -> Option
             let f = sys.f(&at);
             let rhs = Vector4::from_fn(|i, _| sub * f[i]);
             let d = lu.solve(&rhs)?;
-            for i in 0..4 {
-                x[i] += d[i];
-            }
+            x = std::array::from_fn(|i| x[i] + d[i]);
         }
         // Aitken–Neville: table[k] holds T_{j+1, k+1} after the sweep (n_{j−k} = j − k + 1)
         let mut prev = x;
-        for k in 0..j {
+        for (k, row) in table.iter_mut().enumerate().take(j) {
             let ratio = n as f64 / (n - k - 1) as f64 - 1.0;
-            let mut next = [0.0; 4];
-            for i in 0..4 {
-                next[i] = prev[i] + (prev[i] - table[k][i]) / ratio;
-            }
-            table[k] = prev;
+            let next: X = std::array::from_fn(|i| prev[i] + (prev[i] - row[i]) / ratio);
+            *row = prev;
             prev = next;
         }
         table[j] = prev;
@@ -145,7 +140,7 @@ mod tests {
         };
         for stiffness in [1.0, 1e3, 1e6] {
             let sys = Prothero(stiffness);
-            let (mut x, mut h, mut steps) = ([1.0, 0.0, 0.0, 0.0], 0.1, 0);
+            let (mut x, mut h, mut steps) = ([1.0, 0.0, 0.0, 0.0], 0.1f64, 0);
             while x[2] < 3.0 {
                 let h_now = h.min(3.0 - x[2]);
                 let s = step(&sys, &x, h_now, tol).unwrap();
