@@ -13,16 +13,18 @@
 //! expansion in h): T_{j,k+1} = T_{j,k} + (T_{j,k} − T_{j−1,k}) / (n_j/n_{j−k} − 1). The
 //! step is taken at T_{K,K} (order K) where ‖T_{K,K} − T_{K,K−1}‖ (the error of the order
 //! K − 1 value) is within the tolerance. Each substep solves with I − hJ, so the stiff mode
-//! (the dashpot's 2ζ(k + λ), docs/model.md §8) decays in it rather than setting the step: the
-//! step is set by the slow motion alone.
+//! (the dashpot's 2ζ(k + λ), docs/model.md §8) decays in it whatever the step: the method is
+//! stable at any stiffness. Its steps are not free of the stiffness, though: the expansion in
+//! h holds only for h·rate small, and at 1e-12 the Prothero–Robinson test below takes 33 steps
+//! at rate 1 but some 1 400–1 700 at 10³ and 10⁶ (the unit test prints them) — accurate, not
+//! fast, which is why it is a reference (`super`).
 //!
-//! Why by hand: the `differential-equations` crate's implicit methods (Radau5, BDF) are what
-//! the adaptive solver already runs on these phases; they take the Jacobian by differences on
-//! heap matrices and collapse their steps at the 3/2-power kink (`numeric::integrator`), and
-//! the cells went to DOPRI5 at its stability limit instead (issue 54 item 10: 80 % of the
-//! map's time). `russell_ode`'s Radau5 needs a system BLAS/LAPACK and `diffsol` a large tree
-//! for what is here a 4 × 4 system with a written-out Jacobian and no dense output: the method
-//! is the few lines below, its 4 × 4 solves nalgebra's LU.
+//! Why by hand: the reference must be independent of the adaptive solver, whose stiff
+//! integrators are the `differential-equations` crate's Radau5 and BDF (their runs in the
+//! map's stiff corner close their energy balance loosely and are run again by DOPRI5,
+//! docs/numerics.md). `russell_ode` (Radau5) needs a system BLAS/LAPACK and `diffsol` brings a
+//! large tree; neither was tried here. For a 4 × 4 system with its Jacobian written out and
+//! no dense output the method is the few lines below, its solves nalgebra's 4 × 4 LU.
 
 use nalgebra::{Matrix4, Vector4};
 
@@ -132,8 +134,11 @@ mod tests {
         }
     }
 
+    /// The answer holds its tolerance at every stiffness; the steps it takes say where the
+    /// method pays (the module's introduction, `super`'s: a mildly stiff problem, the rate
+    /// some hundreds to thousands, takes the most).
     #[test]
-    fn a_stiff_problem_is_followed_at_the_slow_pace() {
+    fn a_stiff_problem_is_followed_to_its_tolerance() {
         let tol = Tolerance {
             rtol: 1e-12,
             atol: 1e-12,
@@ -147,13 +152,12 @@ mod tests {
                 h = next_step(h_now, s.err);
                 if s.err <= 1.0 {
                     x = s.x;
-                    steps += 1;
                 }
-                assert!(steps < 200, "{stiffness}: {steps} steps");
+                steps += 1;
+                assert!(steps < 100_000, "{stiffness}: {steps} steps");
             }
+            eprintln!("stiffness {stiffness}: {steps} steps");
             assert!((x[0] - 3f64.cos()).abs() < 1e-10, "{stiffness}: {}", x[0]);
-            // the step is set by the slow cosine, not by the stiffness
-            assert!(steps < 60, "{stiffness}: {steps} steps");
         }
     }
 }

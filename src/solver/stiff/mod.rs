@@ -1,7 +1,7 @@
 //! An independent summary of a stiff impact under the Hertz or elastic–plastic law (issue 54
-//! item 10): COR, F̄_m, τ_f, z̄_m, z̄_f and ȳ at separation by an implicit method whose step is
-//! set by the slow motion, not by the dashpot's rate 2ζ(k + λ) (`extrapolation`: the linearly
-//! implicit Euler method, extrapolated). It is the reference the stiff cells' fast answers
+//! item 10): COR, F̄_m, τ_f, z̄_m, z̄_f and ȳ at separation by an implicit method, stable
+//! whatever the dashpot's rate 2ζ(k + λ) (`extrapolation`: the linearly implicit Euler
+//! method, extrapolated), and so independent of the explicit Taylor steps. It is the reference the stiff cells' fast answers
 //! (`taylor::stiff_summary`, explicit steps in their thousands) are held to in
 //! tests/physics/map_stiff.rs: the adaptive solver's stiff runs are good to 1e-6 only
 //! (docs/numerics.md), too loose to check 1e-9 by. Not a fast path: in the mildly stiff range

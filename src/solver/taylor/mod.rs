@@ -184,8 +184,8 @@ const FAR_STIFF: f64 = 1.5e5;
 
 /// The Hertz or elastic–plastic impact of `n` where [`summary`] leaves a phase too stiff for
 /// its steps (issue 54 item 10): the same steps, as many as the stiffness needs (its fifth and
-/// a margin), up to [`FAR_STIFF`]. An explicit step cannot outrun the dashpot's rate
-/// 2ζ̂(k + λ̂), but each of these keeps its truncation below [`POWER_EPS`] whatever the rate, so
+/// a margin), up to `FAR_STIFF`. An explicit step cannot outrun the dashpot's rate
+/// 2ζ̂(k + λ̂), but each of these keeps its truncation below `POWER_EPS` whatever the rate, so
 /// the answer keeps its precision, and the steps, some hundreds to thousands, cost less than the
 /// adaptive solver's DOPRI5 held to its stability limit (the cascade's check of a stiff run,
 /// `numeric::checked_run`). tests/physics/map_stiff.rs holds it to an independent implicit
