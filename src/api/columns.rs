@@ -224,7 +224,9 @@ where
 /// [`crate::solver::table::summaries`] of `norm`, the elements of `left`, the same bits
 /// without asking the table again where the first pass found the impact past yield
 /// ([`Rest::PastYield`]: the table's branch is `None` there, for `rows::table_row` and
-/// `solver::table::summary` read it alike): those go to the Taylor steps in lanes at once.
+/// `solver::table::summary` read it alike): those go to the Taylor steps in lanes at once,
+/// and one at a time with more steps where a phase is too stiff for those
+/// ([`crate::solver::taylor::stiff_summary`], as `summaries` does).
 fn past_the_table(
     left: &[(usize, Rest)],
     norm: &[Normalized],
@@ -235,6 +237,10 @@ fn past_the_table(
     let pick = |ks: &[usize]| ks.iter().map(|&k| norm[k]).collect::<Vec<_>>();
     let mut out = vec![None; left.len()];
     let taylor = crate::solver::taylor::batch::summaries(&pick(&yielded), law);
+    let stiff = |(s, &k): (Option<_>, &usize)| {
+        s.or_else(|| crate::solver::taylor::stiff_summary(&norm[k], law))
+    };
+    let taylor: Vec<_> = taylor.into_iter().zip(&yielded).map(stiff).collect();
     let table = crate::solver::table::summaries(&pick(&rest), law);
     for (k, s) in yielded
         .into_iter()

@@ -10,6 +10,7 @@ mod outcome;
 pub mod propagator;
 pub mod roots;
 pub(crate) mod series;
+pub mod stiff;
 pub mod table;
 pub mod taylor;
 

@@ -31,6 +31,7 @@ mod map_flatten;
 mod map_flatten_lanes;
 mod map_lanes;
 mod map_precision;
+mod map_stiff;
 mod oblique;
 mod oblique_bounded;
 mod oblique_damping;

@@ -358,10 +358,13 @@ pub fn hertz(n: &Normalized) -> Option<Summary> {
 
 /// The fast summary of one impact: the table under the Hertz law where it answers, and
 /// under the elastic–plastic law where its Hertz impact stays below yield
-/// ([`taylor::plastic::below_yield`]); else the Taylor steps ([`taylor::summary`]: `None`
-/// where the adaptive solver must run).
+/// ([`taylor::plastic::below_yield`]); else the Taylor steps ([`taylor::summary`]), else,
+/// where a phase is too stiff for their usual few steps, the Taylor steps given as many as
+/// its stiffness needs ([`taylor::stiff_summary`]); `None` where the adaptive solver must run.
 pub fn summary(n: &Normalized, law: ContactLaw) -> Option<Summary> {
-    tabulated(n, law).or_else(|| taylor::summary(n, law))
+    tabulated(n, law)
+        .or_else(|| taylor::summary(n, law))
+        .or_else(|| taylor::stiff_summary(n, law))
 }
 
 /// [`summary`]'s table branch alone.
@@ -376,13 +379,14 @@ fn tabulated(n: &Normalized, law: ContactLaw) -> Option<Summary> {
 }
 
 /// [`summary`] of each of `ns`, the same bits: the table where it answers, the rest's Taylor
-/// steps several at a time in lanes ([`taylor::batch::summaries`]).
+/// steps several at a time in lanes ([`taylor::batch::summaries`]), and one at a time with
+/// more steps where a phase is too stiff for those ([`taylor::stiff_summary`]).
 pub fn summaries(ns: &[Normalized], law: ContactLaw) -> Vec<Option<Summary>> {
     let mut out: Vec<Option<Summary>> = ns.iter().map(|n| tabulated(n, law)).collect();
     let rest: Vec<usize> = (0..ns.len()).filter(|&i| out[i].is_none()).collect();
     let picked: Vec<Normalized> = rest.iter().map(|&i| ns[i]).collect();
     for (i, s) in rest.into_iter().zip(taylor::batch::summaries(&picked, law)) {
-        out[i] = s;
+        out[i] = s.or_else(|| taylor::stiff_summary(&ns[i], law));
     }
     out
 }

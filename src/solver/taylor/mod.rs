@@ -160,7 +160,51 @@ pub fn summary(n: &Normalized, law: ContactLaw) -> Option<Summary> {
 /// The Hertz and elastic–plastic laws in the Hertz scale, one step after another
 /// (`stages::PowerImpact`).
 fn power_law(n: &Normalized, law: ContactLaw) -> Option<Summary> {
-    let mut impact = stages::PowerImpact::new(n, law)?;
+    power_run(stages::PowerImpact::new(n, law)?)
+}
+
+/// The Hertz or elastic–plastic impact of `n` by the Taylor steps of [`summary`] with no
+/// stiffness cut and at most `max_steps` steps: a stiff impact's reference, independent of
+/// the implicit steps that answer it on the fast path (`solver::stiff`), as
+/// [`hertz_reference`] is the Hertz table's. A stiff phase takes steps about a seventh of its
+/// stiffness 2ζ̂(k + λ̂)·τ̂, so thousands where `summary` stops at 60. `None` for the linear
+/// law, or where the steps run out.
+pub fn unbounded(n: &Normalized, law: ContactLaw, max_steps: usize) -> Option<Summary> {
+    if law == ContactLaw::Linear {
+        return None;
+    }
+    let budget = Budget::with_steps(max_steps);
+    power_run(stages::PowerImpact::within(n, law, f64::INFINITY, budget)?)
+}
+
+/// [`stiff_summary`]'s stiffness cut: past it a stiff impact's steps (a seventh to a fifth of
+/// the stiffness) would cost more than the adaptive solver's stiff cascade. The
+/// elastic–plastic map's stiff corner (λ, ζ ∈ [1, 100], tennis) reaches 7·10⁴.
+const FAR_STIFF: f64 = 1.5e5;
+
+/// The Hertz or elastic–plastic impact of `n` where [`summary`] leaves a phase too stiff for
+/// its steps (issue 54 item 10): the same steps, as many as the stiffness needs (its fifth and
+/// a margin), up to `FAR_STIFF`. An explicit step cannot outrun the dashpot's rate
+/// 2ζ̂(k + λ̂), but each of these keeps its truncation below `POWER_EPS` whatever the rate, so
+/// the answer keeps its precision, and the steps, some hundreds to thousands, cost less than the
+/// adaptive solver's DOPRI5 held to its stability limit (the cascade's check of a stiff run,
+/// `numeric::checked_run`). tests/physics/map_stiff.rs holds it to an independent implicit
+/// integration (`solver::stiff::summary`) to 1e-9. `None` outside that band (within
+/// [`summary`]'s cut it has answered or refused for another reason) or where the steps run out.
+pub fn stiff_summary(n: &Normalized, law: ContactLaw) -> Option<Summary> {
+    if law == ContactLaw::Linear {
+        return None;
+    }
+    let stiffness = stages::PowerImpact::stiffness(n, law)?;
+    if stiffness <= STIFF || stiffness > FAR_STIFF {
+        return None;
+    }
+    let budget = Budget::with_steps((stiffness / 5.0) as usize + MAX_STEPS);
+    power_run(stages::PowerImpact::within(n, law, FAR_STIFF, budget)?)
+}
+
+/// An impact's Taylor steps from first touch to its end.
+fn power_run(mut impact: stages::PowerImpact) -> Option<Summary> {
     let mut c = [[0.0; POWER_LEN]; 4];
     let mut scratch = [[0.0; POWER_LEN]; 2];
     loop {

@@ -57,6 +57,25 @@ impl PowerImpact {
         stiff: f64,
         budget: Budget,
     ) -> Option<PowerImpact> {
+        let (sys, l, zp, stiffness) = Self::scaled(n, law)?;
+        if stiffness > stiff {
+            return None;
+        }
+        let (hertz, start) = hertz_start();
+        Some(PowerImpact {
+            sys,
+            phase: Phase::new(hertz, start, zp.sqrt(), false, POWER_RULES),
+            law,
+            l,
+            zp,
+            budget,
+            stage: Stage::Loading,
+        })
+    }
+
+    /// The system of `n` under `law` in the Hertz scale, L, ẑ_p and the stiffness
+    /// 2ζ̂(k + λ̂)·τ̂ the steps meet; `None` where the parameters are not finite.
+    fn scaled(n: &Normalized, law: ContactLaw) -> Option<(Sys, f64, f64, f64)> {
         let ok = |x: f64| x.is_finite() && x >= 0.0;
         if !(ok(n.lambda) && ok(n.zeta) && n.kappa.is_finite() && n.kappa > 0.0 && n.zp_bar > 0.0) {
             return None;
@@ -74,19 +93,13 @@ impl PowerImpact {
         // the contact's stiffness in the Hertz scale: 1.5 √ẑ ≈ 1.6 at the Hertz peak, L² past
         // yield; the Hertz contact time is 2.94 (5/4)^{2/5} ≈ 3.2
         let k = if zp < 1.1 { 1.6f64.max(l * l) } else { 1.6 };
-        if 2.0 * sys.zeta * (k + sys.lambda) * 3.2 > stiff {
-            return None;
-        }
-        let (hertz, start) = hertz_start();
-        Some(PowerImpact {
-            sys,
-            phase: Phase::new(hertz, start, zp.sqrt(), false, POWER_RULES),
-            law,
-            l,
-            zp,
-            budget,
-            stage: Stage::Loading,
-        })
+        Some((sys, l, zp, 2.0 * sys.zeta * (k + sys.lambda) * 3.2))
+    }
+
+    /// The stiffness 2ζ̂(k + λ̂)·τ̂ the steps meet in the impact of `n` under `law` (the
+    /// estimate [`PowerImpact::within`] cuts at), `None` where the parameters are not finite.
+    pub(super) fn stiffness(n: &Normalized, law: ContactLaw) -> Option<f64> {
+        Self::scaled(n, law).map(|(.., stiffness)| stiffness)
     }
 
     /// L, the Hertz scale's length: ẑ = z̄/L.
