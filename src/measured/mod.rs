@@ -24,7 +24,7 @@ pub use drop::{Air, DropTest, Flight, G, cor_per_rebound_height, drop_to_cor, dr
 pub use oblique::{ObliqueRow, parse_oblique};
 pub use pressure::{PressureRow, parse_pressure};
 pub use statics::{StaticRow, parse_static};
-pub use table::{MAX_ROWS, RowTable, Source};
+pub use table::{MAX_ROWS, RowTable, Source, stop_on};
 pub use trace::{Trace, TraceSummary};
 
 use std::fmt;

@@ -124,7 +124,7 @@ pub fn read<'a>(src: impl Into<Source<'a>>, specs: &[ColumnSpec]) -> Result<Pars
 /// for them once.
 pub fn rows_at_most(src: Source<'_>) -> usize {
     match src {
-        Source::Text(text) => (text.bytes().filter(|&b| b == b'\n').count() + 1).min(MAX_ROWS),
+        Source::Text(text) => (rows::newlines(text) + 1).min(MAX_ROWS),
         Source::Rows(t) => t.rows.len().min(MAX_ROWS),
     }
 }
@@ -148,13 +148,38 @@ pub fn read_each<'a>(
                 return Err(MeasuredError::at(1, 1, "no data: the file is empty"));
             };
             read_rows(sep, &header, lines, specs, each)?;
-            Ok(rows::line_count(&text) + 1)
+            let end = rows::line_count(&text) + 1;
+            if stopped() {
+                return Err(MeasuredError::at(end, 1, "interrupted"));
+            }
+            Ok(end)
         }
         Source::Rows(t) => {
             read_rows(t.sep, t.header, t.rows.iter().cloned().map(Ok), specs, each)?;
             Ok(t.end_line)
         }
     }
+}
+
+/// Rows read between two looks at the stop flag ([`stop_on`]): some milliseconds of parsing
+/// on a release build, well under a second on a debug one.
+const ROWS_PER_LOOK: usize = 4096;
+
+static STOP: std::sync::OnceLock<std::sync::Arc<std::sync::atomic::AtomicBool>> =
+    std::sync::OnceLock::new();
+
+/// Stop reading rows once `flag` is set (the command line's SIGINT/SIGTERM flag, as
+/// `atomic::stop_on`): the read then fails with an "interrupted" error at the row it reached,
+/// and a 10⁶-row trace no longer holds Ctrl-C for its whole parse (issue 54 item 6;
+/// tests/cli/signals_prompt.rs).
+pub fn stop_on(flag: std::sync::Arc<std::sync::atomic::AtomicBool>) {
+    let _ = STOP.set(flag);
+}
+
+/// Whether the flag [`stop_on`] was given is set.
+pub(super) fn stopped() -> bool {
+    STOP.get()
+        .is_some_and(|f| f.load(std::sync::atomic::Ordering::Relaxed))
 }
 
 /// The data rows after `header`, each handed to `each` ([`read_each`]).
@@ -170,6 +195,9 @@ fn read_rows(
     let mut count = 0;
     for row in lines {
         let row = row?;
+        if count % ROWS_PER_LOOK == 0 && stopped() {
+            return Err(MeasuredError::at(row.line, 1, "interrupted"));
+        }
         if count == MAX_ROWS {
             return Err(MeasuredError::at(
                 row.line,
