@@ -34,7 +34,7 @@ pub struct Row {
     pub cells: Vec<Cell>,
 }
 
-/// Bytes scanned between two looks at the stop flag (`table::stop_on`): some milliseconds
+/// Bytes scanned between two looks at the stop flag (`measured::stop_on`): some milliseconds
 /// on a debug build, where a whole 19 MB trace took a second a scan (issue 54 item 6).
 const SCAN_CHUNK: usize = 1 << 18;
 
@@ -43,7 +43,7 @@ const SCAN_CHUNK: usize = 1 << 18;
 fn any_index(b: &[u8], pred: impl Fn(usize) -> bool) -> bool {
     (0..b.len())
         .step_by(SCAN_CHUNK)
-        .take_while(|_| !super::table::stopped())
+        .take_while(|_| !super::stop::stopped())
         .any(|from| (from..(from + SCAN_CHUNK).min(b.len())).any(&pred))
 }
 
@@ -52,7 +52,7 @@ fn any_index(b: &[u8], pred: impl Fn(usize) -> bool) -> bool {
 pub fn newlines(text: &str) -> usize {
     text.as_bytes()
         .chunks(SCAN_CHUNK)
-        .take_while(|_| !super::table::stopped())
+        .take_while(|_| !super::stop::stopped())
         .map(|c| c.iter().filter(|&&b| b == b'\n').count())
         .sum()
 }

@@ -4,8 +4,8 @@
 //! `,`); with `;` a decimal comma (`0,75`) is read as a decimal point. Errors carry the 1-based
 //! line and column of the cell at fault.
 
-use super::MeasuredError;
 use super::rows::{self, Cell, Row, Rows};
+use super::{MeasuredError, stop};
 use crate::text::parse;
 use std::borrow::Cow;
 
@@ -149,7 +149,7 @@ pub fn read_each<'a>(
             };
             read_rows(sep, &header, lines, specs, each)?;
             let end = rows::line_count(&text) + 1;
-            if stopped() {
+            if stop::stopped() {
                 return Err(MeasuredError::at(end, 1, "interrupted"));
             }
             Ok(end)
@@ -161,26 +161,9 @@ pub fn read_each<'a>(
     }
 }
 
-/// Rows read between two looks at the stop flag ([`stop_on`]): some milliseconds of parsing
-/// on a release build, well under a second on a debug one.
+/// Rows read between two looks at the stop flag (`measured::stop_on`): some milliseconds of
+/// parsing on a release build, well under a second on a debug one.
 const ROWS_PER_LOOK: usize = 4096;
-
-static STOP: std::sync::OnceLock<std::sync::Arc<std::sync::atomic::AtomicBool>> =
-    std::sync::OnceLock::new();
-
-/// Stop reading rows once `flag` is set (the command line's SIGINT/SIGTERM flag, as
-/// `atomic::stop_on`): the read then fails with an "interrupted" error at the row it reached,
-/// and a 10⁶-row trace no longer holds Ctrl-C for its whole parse (issue 54 item 6;
-/// tests/cli/signals_prompt.rs).
-pub fn stop_on(flag: std::sync::Arc<std::sync::atomic::AtomicBool>) {
-    let _ = STOP.set(flag);
-}
-
-/// Whether the flag [`stop_on`] was given is set.
-pub(super) fn stopped() -> bool {
-    STOP.get()
-        .is_some_and(|f| f.load(std::sync::atomic::Ordering::Relaxed))
-}
 
 /// The data rows after `header`, each handed to `each` ([`read_each`]).
 fn read_rows(
@@ -195,7 +178,7 @@ fn read_rows(
     let mut count = 0;
     for row in lines {
         let row = row?;
-        if count % ROWS_PER_LOOK == 0 && stopped() {
+        if count % ROWS_PER_LOOK == 0 && stop::stopped() {
             return Err(MeasuredError::at(row.line, 1, "interrupted"));
         }
         if count == MAX_ROWS {
