@@ -48,6 +48,16 @@ pub fn interrupted() -> bool {
     FLAG.get().is_some_and(|f| f.load(Ordering::Relaxed))
 }
 
+/// [`Interrupted`] once a SIGINT or SIGTERM came: the look between the phases of work that
+/// has none of its own (reading a measured file, drawing a figure), so that no phase but the
+/// one under way runs after the signal (issue 54 item 6, tests/cli/signals_prompt.rs).
+pub fn stop_if_interrupted() -> anyhow::Result<()> {
+    if interrupted() {
+        return Err(Interrupted.into());
+    }
+    Ok(())
+}
+
 /// Set by SIGINT or SIGTERM once this was called; the atomic writer looks at it too, so a
 /// signal mid-write stops the staging and its temporaries go ([`crate::atomic::stop_on`]).
 pub fn interrupt_flag() -> Arc<AtomicBool> {
@@ -67,6 +77,7 @@ pub fn interrupt_flag() -> Arc<AtomicBool> {
             let _ = signal_hook::flag::register(sig, flag.clone());
         }
         crate::atomic::stop_on(flag.clone());
+        crate::measured::stop_on(flag.clone());
         flag
     })
     .clone()

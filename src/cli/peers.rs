@@ -77,8 +77,9 @@ pub struct PeersArgs {
     pub v0: Option<f64>,
     /// Target when --cor is not given: measured, christoforou-yigit, christoforou-yigit-curve;
     /// or another preset's name, the partner of a pair (as --pair PRESET, issue 33's name)
-    #[arg(long, value_name = "TARGET", default_value = "measured", value_parser = target_or_pair)]
-    pub target: TargetChoice,
+    /// [default: measured; with --export, christoforou-yigit at the bounce's normal speed]
+    #[arg(long, value_name = "TARGET", value_parser = target_or_pair)]
+    pub target: Option<TargetChoice>,
     /// Calibrate for the pair with another preset ball (docs/targets.md): m_eff = m1 m2/(m1 +
     /// m2), R_eff = R1 R2/(R1 + R2), v0 the closing speed; the target COR is the model's for
     /// the pair, both balls deforming (as collide --target-preset), unless --cor or another
@@ -169,19 +170,24 @@ impl PeersArgs {
     /// The partner of the pair, by `--pair` or `--target PRESET`; both at once is refused.
     fn pair_name(&self) -> anyhow::Result<Option<&str>> {
         match (&self.pair, &self.target) {
-            (Some(p), TargetChoice::Pair(t)) if p != t => {
+            (Some(p), Some(TargetChoice::Pair(t))) if p != t => {
                 anyhow::bail!("target: --target {t} and --pair {p} name two partners; give one")
             }
-            (Some(p), _) | (None, TargetChoice::Pair(p)) => Ok(Some(p)),
-            (None, TargetChoice::Source(_)) => Ok(None),
+            (Some(p), _) | (None, Some(TargetChoice::Pair(p))) => Ok(Some(p)),
+            (None, Some(TargetChoice::Source(_)) | None) => Ok(None),
         }
     }
 
-    /// Where the target COR comes from: a pair named by `--target` takes the default.
+    /// Where the target COR comes from: a pair named by `--target` takes the default, which
+    /// is the measured COR for the comparison and, for an export, the model's COR at the
+    /// bounce's normal speed: the export is bouncelab's model of that bounce, and the answer
+    /// its snippet states is the model's (issue 52 item 8; a COR measured at 6.906 m/s gave
+    /// the code e_y 0.7709 where bouncelab answers 0.7610 at 30 m/s and 16°).
     fn source(&self) -> TargetArg {
         match self.target {
-            TargetChoice::Source(t) => t,
-            TargetChoice::Pair(_) => TargetArg::Measured,
+            Some(TargetChoice::Source(t)) => t,
+            _ if self.export.is_some() => TargetArg::ChristoforouYigit,
+            _ => TargetArg::Measured,
         }
     }
 }
@@ -212,12 +218,17 @@ pub fn run(a: &PeersArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     if let Some(code) = a.export {
         let mut set = ExportSet::new(&ball, target, b.name.as_deref().unwrap_or("ball"))?;
         set.tangential = case::tangential(a, &b, code)?;
+        // bouncelab's answer for the bounce is its model's, whatever the export's target
+        let model_cor = match &pair {
+            Some(p) => p.cor,
+            None => calibrate::christoforou_yigit_cor(&b.params, b.law, b.params.v0)?,
+        };
         set.case = Some(case::case(
             &whole,
             bounce,
             pair.as_ref(),
             set.tangential.as_ref(),
-            target,
+            model_cor,
         )?);
         // the exported file is another code's input: the ball's warnings on stderr
         let mut w = ball_warnings(&b, pair.as_ref(), source)?;

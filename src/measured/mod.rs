@@ -15,6 +15,7 @@ pub mod overlay;
 mod pressure;
 pub mod rows;
 mod statics;
+mod stop;
 mod table;
 mod trace;
 
@@ -24,6 +25,7 @@ pub use drop::{Air, DropTest, Flight, G, cor_per_rebound_height, drop_to_cor, dr
 pub use oblique::{ObliqueRow, parse_oblique};
 pub use pressure::{PressureRow, parse_pressure};
 pub use statics::{StaticRow, parse_static};
+pub use stop::stop_on;
 pub use table::{MAX_ROWS, RowTable, Source};
 pub use trace::{Trace, TraceSummary};
 

@@ -55,8 +55,9 @@ pub struct CaseAnswer {
 }
 
 impl ExportCase {
-    /// The comment lines a snippet carries; `c` opens a comment, `end` closes it.
-    pub fn lines(&self, out: &mut String, c: &str, end: &str) {
+    /// The comment lines a snippet carries; `c` opens a comment, `end` closes it; `target`
+    /// is the COR the export is calibrated to, said beside the answer's where they differ.
+    pub fn lines(&self, out: &mut String, c: &str, end: &str, target: f64) {
         let who = if self.pair.is_some() {
             "the pair's closing speed"
         } else {
@@ -97,6 +98,19 @@ impl ExportCase {
             short(a.spin_out),
             short(a.cor_normal)
         );
+        // a target of the user's (`--cor`, a measured COR, the curve's mean) is not the
+        // model's e_y at this speed: the code will bounce at the target, bouncelab at e_y
+        if short(target) != short(a.cor_normal) {
+            let _ = writeln!(
+                out,
+                "{c} this export's target COR {} is not bouncelab's e_y = {} for this bounce: \
+                 the code's v_y,out will be {} m/s, bouncelab's {} m/s{end}",
+                short(target),
+                short(a.cor_normal),
+                short(target * self.normal_speed),
+                short(a.vy_out)
+            );
+        }
         if let (Some(w), Some(vx)) = (a.spin_out_ball_kappa, a.vx_out_ball_kappa) {
             let _ = writeln!(
                 out,

@@ -161,7 +161,7 @@ impl ExportSet {
             "{c} one ball against a rigid flat: effective mass m, effective radius R; SI units{end}"
         );
         if let Some(case) = &self.case {
-            case.lines(out, c, end);
+            case.lines(out, c, end, self.target_cor);
         }
     }
 }

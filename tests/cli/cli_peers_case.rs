@@ -156,3 +156,97 @@ fn the_case_is_checked() {
         &["--spin needs --angle"],
     );
 }
+
+/// The e_y a snippet states (`… (e_y = 0.760977)`), or the JSON case's.
+fn stated_e_y(code: &str, out: &str) -> f64 {
+    if code == "json" {
+        let v: Value = serde_json::from_str(out).unwrap();
+        return f(&v["case"]["answer"], "cor_normal");
+    }
+    let at = out
+        .find("(e_y = ")
+        .unwrap_or_else(|| panic!("{code}: {out}"))
+        + 7;
+    let n = &out[at..];
+    n[..n.find(')').unwrap()].parse().unwrap()
+}
+
+/// Issue 52 item 8, a new user's trial: the same bounce (tennis at 30 m/s and 16°) had two
+/// "bouncelab answers": e_y 0.770900 — the measured COR, taken at 6.906 m/s — without
+/// `--friction`, `oblique`'s 0.760977 with it. The export is now calibrated to the model's COR
+/// at the normal speed and states the model's answer, `oblique`'s e_y to the printed digits,
+/// for every code, with and without `--friction`.
+#[test]
+fn the_stated_answer_is_obliques_with_and_without_friction() {
+    let oblique = |mu: &str| {
+        let v = json(&argv_with(
+            "oblique --preset tennis --v0 30 --angle 16 --friction {} --inertia-factor 0.4 --format json",
+            &[mu],
+        ));
+        f(&v, "cor_normal")
+    };
+    let e_y = oblique("0");
+    assert!((e_y - oblique("0.6")).abs() < 1e-12, "{e_y}");
+    for code in ["lammps", "liggghts", "chrono", "yade", "mujoco", "json"] {
+        let frictions: &[&[&str]] = match code {
+            "lammps" | "mujoco" | "json" => &[&[], &["--friction", "0.6"]],
+            _ => &[&[]],
+        };
+        for friction in frictions {
+            let mut args = argv_with(
+                "peers --preset tennis --v0 30 --angle 16 --export {}",
+                &[code],
+            );
+            args.extend(*friction);
+            let o = bl(&args);
+            assert_eq!(o.code, 0, "{args:?}: {}", o.stderr);
+            let stated = stated_e_y(code, &o.stdout);
+            // six significant digits printed: within half the last one
+            assert!(
+                (stated - e_y).abs() <= 5e-7,
+                "{args:?}: e_y {stated}, oblique's {e_y}"
+            );
+            // calibrated to it: the code's bounce is bouncelab's, so no second COR is said
+            assert!(!o.stdout.contains("is not bouncelab's e_y"), "{args:?}");
+            assert!(!o.stderr.contains("measured at"), "{args:?}: {}", o.stderr);
+        }
+    }
+    let v: Value = serde_json::from_str(&ok_calibrated(&argv(
+        "peers --preset tennis --v0 30 --angle 16 --export json",
+    )))
+    .unwrap();
+    assert!((f(&v, "target_cor") - e_y).abs() <= 5e-7, "{v}");
+}
+
+/// A target of the user's (`--cor`, `--target measured`) is calibrated to as asked, and the
+/// snippet says both it and bouncelab's answer, which stays the model's.
+#[test]
+fn a_users_target_is_said_beside_the_models_answer() {
+    for target in ["--cor 0.7", "--target measured"] {
+        for code in ["yade", "lammps"] {
+            let line = format!("peers --preset tennis --v0 30 --angle 16 {target} --export {code}");
+            let o = bl(&argv(&line));
+            assert_eq!(o.code, 0, "{line}: {}", o.stderr);
+            let want = if target.contains("cor") {
+                "0.7"
+            } else {
+                "0.7709"
+            };
+            assert!(
+                o.stdout.contains(&format!("target COR {want}")),
+                "{line}: {}",
+                o.stdout
+            );
+            assert!(
+                o.stdout.contains("is not bouncelab's e_y = 0.760977"),
+                "{line}: {}",
+                o.stdout
+            );
+            assert!(
+                o.stdout.contains("(e_y = 0.760977)"),
+                "{line}: {}",
+                o.stdout
+            );
+        }
+    }
+}

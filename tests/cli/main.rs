@@ -70,4 +70,5 @@ mod numbers_as_typed;
 mod outputs_regular_only;
 mod session_file;
 mod signals_early;
+mod signals_prompt;
 mod suspend_pty;

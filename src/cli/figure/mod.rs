@@ -322,11 +322,14 @@ fn build_all(a: &FigureArgs) -> anyhow::Result<Figure> {
     for path in &a.measured {
         super::measured_file::any(path)?;
     }
+    super::budget::stop_if_interrupted()?;
     let mut fig = build(a)?;
     if !a.measured.is_empty() {
+        super::budget::stop_if_interrupted()?;
         let (b, _) = balls::one_ball(a, &a.ball)?;
         overlay::add_measured(&mut fig, a.name, &a.measured, b.params.mass, b.params.v0)?;
     }
+    super::budget::stop_if_interrupted()?;
     Ok(fig)
 }
 
@@ -337,6 +340,7 @@ pub fn run(a: &FigureArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     check_writable(&paths, a.force)?;
     let fig = build_all(a)?;
     let picture = svg::render(&fig)?;
+    super::budget::stop_if_interrupted()?;
     // both files or neither (crate::atomic), and none when stdout cannot take their names
     let mut files = Outputs::new(a.force);
     files.text(&a.out, &picture)?;

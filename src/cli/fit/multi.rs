@@ -59,6 +59,7 @@ pub(super) fn load(a: &FitArgs, source: &Source, ball: &Ball) -> anyhow::Result<
         ),
         Source::Trace(p) => {
             let t = files::trace(p)?;
+            crate::cli::budget::stop_if_interrupted()?;
             let end_line = t.end_line;
             Loaded {
                 kind: "force-time trace",

@@ -189,6 +189,9 @@ pub fn svg(ball: &Ball, data: &Loaded, f: &MultiFit, p: &ImpactParams) -> anyhow
     // both plots start at one x: each takes the wider of the two label areas (the
     // residuals' "-0.0005" is wider than the COR's "0.6")
     let left = svg::label_area(&top).max(svg::label_area(&bottom));
-    let render = |fig: &Figure| svg::render_aligned(fig, left).map_err(anyhow::Error::from);
+    let render = |fig: &Figure| {
+        crate::cli::budget::stop_if_interrupted()?;
+        svg::render_aligned(fig, left).map_err(anyhow::Error::from)
+    };
     Ok(stack(&render(&top)?, &render(&bottom)?))
 }

@@ -45,7 +45,10 @@ pub(super) fn normal_speed(v: f64, theta: f64) -> f64 {
 }
 
 /// The case for the export: `whole` is the ball at the bounce's speed (not a pair's reduced
-/// ball), `e_normal` the COR the export is calibrated to (at the normal speed).
+/// ball), `e_normal` the model's COR at the normal speed (a pair's: `collide
+/// --target-preset`'s), which is the answer's whatever the export's target: with or without
+/// `--friction`, the e_y `oblique` gives for the bounce (tests/cli/cli_peers_case.rs,
+/// `the_stated_answer_is_obliques_with_and_without_friction`).
 pub(super) fn case(
     whole: &Ball,
     (v, theta, spin): (f64, f64, f64),
@@ -94,7 +97,7 @@ pub(super) fn case(
             }
         }
         // no tangential force (no friction, or head-on without spin's lever): v_x and ω pass
-        // unchanged; the normal bounce is the calibrated COR's
+        // unchanged; the normal bounce is the model's COR at the normal speed
         _ => CaseAnswer {
             inertia_factor: SOLID_INERTIA_FACTOR,
             vx_out: vx,
