@@ -10,7 +10,13 @@ use std::time::{Duration, Instant};
 /// `bouncelab ARGS` with a deadline: (exit code, stderr); a run past it is killed and fails.
 fn run_within(args: &[&str], seconds: u64) -> (i32, String) {
     let home = tempfile::tempdir().unwrap();
-    let mut child = crate::common::command(home.path(), args)
+    wait_within(crate::common::command(home.path(), args), args, seconds)
+}
+
+/// `cmd` run to its end with a deadline: (exit code, stderr); a run past it is killed and
+/// fails, naming `args`.
+fn wait_within(mut cmd: Command, args: &[&str], seconds: u64) -> (i32, String) {
+    let mut child = cmd
         .stdout(Stdio::null())
         .stderr(Stdio::piped())
         .spawn()
@@ -76,14 +82,39 @@ fn fifos_and_devices_are_not_read() {
 fn an_unreadable_session_is_exit_2() {
     use std::os::unix::fs::PermissionsExt;
     let d = tempfile::tempdir().unwrap();
+    // the folder open to all (a dropped user must reach the file to be refused by it)
+    std::fs::set_permissions(d.path(), std::fs::Permissions::from_mode(0o755)).unwrap();
     let p = d.path().join("locked.toml");
     std::fs::write(&p, "version = 2\n").unwrap();
     std::fs::set_permissions(&p, std::fs::Permissions::from_mode(0o000)).unwrap();
-    if std::fs::read(&p).is_ok() {
-        // root reads anything: nothing to test here
-        return;
+    if std::fs::read(&p).is_err() {
+        return refused(&p, "permission denied");
     }
-    refused(&p, "permission denied");
+    // root reads a mode-000 file: the run drops to nobody (65534) with util-linux's setpriv,
+    // as hostile_generators' unreadable-file test does; never a silent pass without it
+    let there = Command::new("setpriv").arg("--version").output();
+    assert!(
+        there.is_ok_and(|o| o.status.success()),
+        "NOT TESTED: root reads a mode-000 file and `setpriv` is absent to drop to nobody"
+    );
+    let home = tempfile::tempdir().unwrap();
+    std::os::unix::fs::chown(home.path(), Some(65534), Some(65534)).unwrap();
+    let path = p.to_str().unwrap();
+    let mut cmd = Command::new("setpriv");
+    cmd.args(["--reuid=65534", "--regid=65534", "--clear-groups", "--"])
+        .arg(env!("CARGO_BIN_EXE_bouncelab"))
+        .args(["--session", path])
+        .env("XDG_CONFIG_HOME", home.path())
+        .env("HOME", home.path())
+        .stdin(Stdio::null());
+    let (code, err) = wait_within(cmd, &["--session", path], 20);
+    assert_eq!(code, 2, "{path}: {err}");
+    assert_eq!(err.lines().count(), 1, "{err}");
+    assert!(err.starts_with("bouncelab: error: --session "), "{err}");
+    assert!(
+        err.contains(path) && err.contains("permission denied"),
+        "{err}"
+    );
 }
 
 #[test]
