@@ -10,6 +10,7 @@
 mod bins;
 mod checks;
 mod cor;
+mod edge;
 pub mod cor_temperature;
 pub mod joint;
 pub mod lm;
