@@ -189,4 +189,3 @@ fn speed_free_trace_intervals_cover_the_truth_over_many_seeds() {
     let least = (0.92 * seeds as f64) as usize;
     assert!(hits.iter().all(|&h| h >= least), "{hits:?} of {seeds}");
 }
-

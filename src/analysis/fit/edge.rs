@@ -107,6 +107,10 @@ fn other_side(p: &TraceProblem, best: &Best, first: f64, iterations: usize) -> O
         ..lm::Options::default()
     };
     let s = lm::minimize(p, &x, &lo, &hi, opts)?;
-    let finite = s.residuals.iter().chain(s.jacobian.iter()).all(|v| v.is_finite());
+    let finite = s
+        .residuals
+        .iter()
+        .chain(s.jacobian.iter())
+        .all(|v| v.is_finite());
     finite.then_some(s)
 }

@@ -10,8 +10,8 @@
 mod bins;
 mod checks;
 mod cor;
-mod edge;
 pub mod cor_temperature;
+mod edge;
 pub mod joint;
 pub mod lm;
 mod multi;
