@@ -11,6 +11,7 @@ mod bins;
 mod checks;
 mod cor;
 pub mod cor_temperature;
+mod edge;
 pub mod joint;
 pub mod lm;
 mod multi;

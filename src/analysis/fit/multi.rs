@@ -4,6 +4,7 @@ use super::Param;
 use super::bins::Samples;
 use super::checks::{check_free, check_impulse, check_scale, too_few, verify_exact};
 use super::cor::CorProblem;
+use super::edge;
 use super::lm::{self, Best, Residuals, Solution};
 use super::result::{Estimate, FitData, MultiFit, MultiFitError};
 use super::stats::{CONDITION_MAX, Spread, uncertainty, uncertainty_by};
@@ -74,7 +75,8 @@ pub(super) fn fit_trace(
             free.len()
         )
     };
-    let iterations = fit_iterations(run, free.len() + 2, starts.len(), law, what)?;
+    // (one start more: the fit on the other side of the first row, `edge::both_sides`)
+    let iterations = fit_iterations(run, free.len() + 2, starts.len() + 1, law, what)?;
     // a minimum at the noise floor needs no further start
     let floor = 1.5 * summary.noise;
     let sol = best(&p, starts, |x| p.bounds(x), floor, iterations);
@@ -86,6 +88,10 @@ pub(super) fn fit_trace(
     let ball = p.ball(&sol.sol.x);
     let rms = rms(&sol.sol.residuals);
     let mut f = finish(ball, law, free, &sol, Spread::Residuals, rms, model)?;
+    edge::both_sides(&p, &sol, &mut f, iterations);
+    if p.stopped() {
+        return Err(MultiFitError::Interrupted);
+    }
     // the trace's rows, whether compared one by one or in bins
     f.points = rows;
     // the model's misses matter only above the noise's scale (a noise-free synthetic trace

@@ -37,7 +37,9 @@ pub struct Estimate {
     /// value ± t₀.₉₇₅ std_error for the offset and baseline; the oblique fit's the profile's
     /// (`analysis::fit::profile`: exp of where τ(θ) = ±t₀.₉₇₅, ∞ where the data do not bound
     /// it); Student t at n − p degrees of freedom; NaN when the data leave no degree of
-    /// freedom or do not pin the value.
+    /// freedom or do not pin the value. A trace that starts with the contact: the hull of the
+    /// intervals on both sides of its first row where both fit (`analysis::fit::edge`,
+    /// docs/fitting.md).
     pub ci95: [f64; 2],
 }
 
