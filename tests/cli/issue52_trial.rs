@@ -3,7 +3,7 @@
 //! header of `oblique` and `peers`, raw floats in text) each fail here on the old code.
 
 use crate::common;
-use common::{argv, json, ok};
+use common::{argv, bl, json, ok};
 use serde_json::Value;
 
 /// The warnings of a JSON answer that begin with `outside calibration:`.
@@ -48,6 +48,33 @@ fn bat_names_the_standards_ball() {
         .expect("ncaa-bbcor")
         .clone();
     assert_eq!(bbcor["balls"], serde_json::json!(["baseball-mlb"]));
+}
+
+/// The standard's ball is its preset as recorded: `baseball-mlb` with a parameter the command
+/// line changed (or under another law) is another ball, and `bat` says so as for another name
+/// (the name alone was checked: `--k-r 5e5` gave no warning).
+#[test]
+fn bat_names_the_standards_ball_unchanged() {
+    let standard = |args: &str| {
+        let o = bl(&argv(args));
+        assert_eq!(o.code, 0, "{args}: {}", o.stderr);
+        let v: Value = serde_json::from_str(&o.stdout).unwrap();
+        let w = v["warnings"].as_array().expect("warnings").clone();
+        w.into_iter()
+            .map(|w| w.as_str().unwrap().to_string())
+            .find(|w| w.starts_with("not the standard's ball"))
+    };
+    assert_eq!(standard("bat --bat-mass 0.6 --format json"), None);
+    let stiffer = standard("bat --bat-mass 0.6 --k-r 5e5 --format json").expect("a warning");
+    assert!(
+        stiffer.contains("this is baseball-mlb with k_r changed"),
+        "{stiffer}"
+    );
+    let hertz = standard("bat --bat-mass 0.6 --law hertz --format json").expect("a warning");
+    assert!(
+        hertz.contains("this is baseball-mlb under another law"),
+        "{hertz}"
+    );
 }
 
 /// `peers --pair` warns as `collide --target-preset` does: each ball at the speed it meets
