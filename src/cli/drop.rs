@@ -157,8 +157,11 @@ pub fn run(a: &DropArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         })?);
     }
     let mut warnings = b.drop_warnings(&run)?;
-    if let Some((_, s)) = &statics {
+    if let Some((d, s)) = &statics {
         warnings.extend(b.static_warnings(s));
+        if let Some(w) = d.return_warning(s).filter(|w| !warnings.contains(w)) {
+            warnings.push(w);
+        }
     }
     // the standard's own test (its height or speed) against the record, when it is another
     // impact than the first bounce above
