@@ -239,3 +239,52 @@ fn the_itf_return_window_is_warned() {
         "{v}"
     );
 }
+
+/// Issue 52's trial: a peak reached below the load printed the floats' 17 digits, "(61.783750000000005
+/// N < 80.07129724999999 N)"; the house gives them to 4 figures.
+#[test]
+fn a_peak_below_the_load_is_said_in_four_figures() {
+    let text = ok(&argv("static --preset tennis --load 8.165 --peak 0.005"));
+    assert!(
+        text.contains("the peak 0.005 m is reached below the load (61.78 N < 80.07 N)"),
+        "{text}"
+    );
+}
+
+/// Issue 52's trial: `drop --standard mlb` (and the other standards judged at a speed or a
+/// load) warned "outside calibration: impact speed 4.41 m/s", the default 1 m drop's, not the
+/// speed the verdict is judged at. The standard's own test is warned, where it is outside.
+#[test]
+fn a_standard_is_warned_at_its_own_speed_not_the_shown_drop() {
+    for (preset, standard) in [
+        ("baseball-mlb", "mlb"),
+        ("tennis", "itf-deformation"),
+        ("superball", "mlb"),
+    ] {
+        let v = json(&argv_with(
+            "drop --preset {} --standard {} --format json",
+            &[preset, standard],
+        ));
+        let w = warnings(&v);
+        assert!(
+            !w.iter()
+                .any(|w| w.starts_with("outside calibration: impact speed 4.")),
+            "{preset} {standard}: {w:?}"
+        );
+        // superball was fitted at 3.12 m/s: the MLB test's 85 ft/s is outside, and said
+        let at_test = w
+            .iter()
+            .any(|w| w.starts_with("outside calibration: impact speed 25.91 m/s"));
+        assert_eq!(at_test, preset == "superball", "{preset} {standard}: {w:?}");
+    }
+    // a height the user gives is the drop's own test: its speed is warned as before
+    let v = json(&argv(
+        "drop --preset tennis --standard itf-deformation --height 1 --format json",
+    ));
+    assert!(
+        warnings(&v)
+            .iter()
+            .any(|w| w.starts_with("outside calibration: impact speed 4.")),
+        "{v}"
+    );
+}
