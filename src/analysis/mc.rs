@@ -200,7 +200,7 @@ impl Sampler {
         let p = self.ball(&values[..n]);
         p.validate().map_err(|e| McError::Domain {
             index,
-            reason: e.to_string(),
+            reason: super::mc_spec::drawn(&e),
         })?;
         Ok(p)
     }

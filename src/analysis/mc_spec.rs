@@ -38,6 +38,17 @@ impl Dist {
     }
 }
 
+/// Why a drawn ball is out of its domain, its value to 4 significant figures (a draw is no
+/// number the user typed: "invalid k_r: -6369 (must not be negative)").
+pub fn drawn(e: &crate::model::params::ParamError) -> String {
+    format!(
+        "invalid {}: {} ({})",
+        e.field,
+        crate::text::short(e.value, 4),
+        e.reason
+    )
+}
+
 /// A parameter a Monte Carlo can vary: one a fit can free, the mass or the impact speed.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
 pub enum Varied {

@@ -112,9 +112,13 @@ pub fn static_deflection(
     }
     let f_m = peak_force(p, &c, peak / 2.0);
     if f_m < force {
+        let short = crate::text::short;
         answer.return_ = Err(format!(
-            "the peak {peak} m is reached below the load ({f_m} N < {force} N): the ball is \
-             never unloaded to the load"
+            "the peak {} m is reached below the load ({} N < {} N): the ball is never \
+             unloaded to the load",
+            short(peak, 6),
+            short(f_m, 4),
+            short(force, 4)
         ));
         return answer;
     }

@@ -4,11 +4,44 @@
 use super::{Ball, BallHeader, BallRecord};
 use crate::analysis::statics::{ContactDeflection, StaticDeflection, static_deflection};
 use crate::drop::G;
+use crate::drop::deformation::DEFORMATION_STANDARDS;
+use crate::preset::{Calibration, SPEED_SLACK};
 use serde::Serialize;
 
 pub use crate::analysis::statics::ITF_RETURN_PEAK;
 
+/// "outside calibration: load …" when `load_kg` lies outside the loads of the record's
+/// static tests (to [`SPEED_SLACK`] either side); `None` inside, or when no static test
+/// gives its loads.
+fn outside_loads(c: &Calibration, load_kg: f64) -> Option<String> {
+    let ([lo, hi], sources) = c.load_range()?;
+    if load_kg >= lo * (1.0 - SPEED_SLACK) && load_kg <= hi * (1.0 + SPEED_SLACK) {
+        return None;
+    }
+    let kg = |v: f64| crate::text::short(v, 4);
+    let range = if lo == hi {
+        format!("{} kg only", kg(lo))
+    } else {
+        format!("{}–{} kg", kg(lo), kg(hi))
+    };
+    Some(format!(
+        "outside calibration: load {} kg, the ball was tested between plates at {range} \
+         ({sources}): the static deflection extrapolates the model there",
+        kg(load_kg)
+    ))
+}
+
 impl Ball {
+    /// The return-window warning of a static standard this answer is the test of (its load
+    /// and peak) on a ball the standard is for (`DeformationStandard::return_warning`).
+    fn return_window_warning(&self, s: &StaticDeflection) -> Option<String> {
+        let name = self.name.as_deref()?;
+        DEFORMATION_STANDARDS
+            .iter()
+            .filter(|d| d.balls.contains(&name) && d.is_test_of(s))
+            .find_map(|d| d.return_warning(s))
+    }
+
     /// Forward and return deflection between two plates under `load_kg` (the weight
     /// `load_kg · g` on each contact), the return read after compressing the diameter by
     /// `peak` m. `Err` names the field at fault.
@@ -64,19 +97,18 @@ impl Ball {
                      and law, and this answer runs {other}",
                     c.sources()
                 ));
-            } else if !c
-                .data
-                .iter()
-                .any(|d| d.speeds.is_empty() && d.heights.is_empty())
-            {
+            } else if !c.data.iter().any(|d| d.is_static()) {
                 w.push(format!(
                     "outside calibration: the ball's record holds no static test (it was fitted \
                      to impacts, {}: {}): the static deflection extrapolates the model there",
                     c.range_text(),
                     c.sources()
                 ));
+            } else if let Some(warning) = outside_loads(c, s.force / G) {
+                w.push(warning);
             }
         }
+        w.extend(self.return_window_warning(s));
         let r = self.radius();
         for (what, d) in [("forward", &s.forward), ("return", &s.return_)] {
             if let Ok(d) = d

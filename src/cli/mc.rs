@@ -131,7 +131,7 @@ pub fn run(a: &McArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         .collect();
     check_writable(&paths, a.force)?;
     let sampler = ball.sampler(&spec);
-    let samples = run_samples(&sampler, ball.law)?;
+    let samples = run_samples(&sampler, ball.law).map_err(|e| fit_domain(e, &spec, a))?;
     let s = summary(&spec, &samples);
     // both files or neither (crate::atomic), published once the report is out
     let mut files = Outputs::new(a.force);
@@ -151,6 +151,25 @@ pub fn run(a: &McArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     }
     report_then_commit(out, &report, files)?;
     Ok(())
+}
+
+/// `--vary fit`'s normal draw out of the domain: the spread is the fit's covariance, not one
+/// the user gave, so the advice is `--dist lognormal` or more data, never a smaller spread.
+fn fit_domain(e: anyhow::Error, spec: &McSpec, a: &McArgs) -> anyhow::Error {
+    let domain = match e.downcast_ref::<crate::BallError>() {
+        Some(crate::BallError::MonteCarlo(McError::Domain { index, reason })) => (*index, reason),
+        _ => return e,
+    };
+    if a.vary.trim() != "fit" || spec.dist != Dist::Normal {
+        return e;
+    }
+    crate::BallError::from(McError::Fit(format!(
+        "sample {} draws an out-of-domain ball ({}): the fit's own covariance is this wide (the \
+         data barely pin the parameter) and its normal crosses 0: use --dist lognormal (the \
+         fit's means, sds and correlations, never below 0) or refit with more data",
+        domain.0, domain.1
+    )))
+    .into()
 }
 
 /// Plain `mc` samples on the rigid plate (its JSON `surface`): the surface's flags go with
@@ -175,17 +194,24 @@ fn spec(a: &McArgs, ball: &Ball) -> anyhow::Result<McSpec> {
     if a.vary.trim() == "fit" {
         let refuse = |what: &str| {
             crate::BallError::from(McError::Fit(format!(
-                "{what} does not go with it: the fit's own covariance gives the normal \
-                 distribution and the correlations"
+                "{what} does not go with it: the fit's own covariance gives the distribution \
+                 (normal, or --dist lognormal) and the correlations"
             )))
         };
-        if a.dist.is_some_and(|d| d != DistArg::Normal) {
-            return Err(refuse("--dist").into());
+        if a.dist == Some(DistArg::Uniform) {
+            return Err(refuse("--dist uniform").into());
         }
         if a.correlate.is_some() {
             return Err(refuse("--correlate").into());
         }
-        return Ok(ball.fit_spec(a.samples, a.seed)?);
+        // lognormal: each parameter's mean and sd the fit's, its correlations on the logs
+        // (the fits search ln p): the normal's to first order where the spread is narrow,
+        // and never below 0 where the data barely pin a parameter (docs/cli.md, mc)
+        let mut spec = ball.fit_spec(a.samples, a.seed)?;
+        if a.dist == Some(DistArg::Lognormal) {
+            spec.dist = crate::analysis::mc::Dist::Lognormal;
+        }
+        return Ok(spec);
     }
     let dist = a.dist.unwrap_or(DistArg::Normal).into();
     let spec = McSpec::new(parse_vary(&a.vary)?, dist, a.samples, a.seed)?;

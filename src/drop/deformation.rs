@@ -81,6 +81,36 @@ impl DeformationStandard {
         static_deflection(&ball.params, law, self.test.load_kg * G, self.test.peak_m)
     }
 
+    /// Whether the static answer `s` is this test's: its load and peak, to 1e-3.
+    pub fn is_test_of(&self, s: &StaticDeflection) -> bool {
+        let near = |a: f64, b: f64| (a - b).abs() <= 1e-3 * b.abs();
+        near(s.force / G, self.test.load_kg) && near(s.peak, self.test.peak_m)
+    }
+
+    /// The warning of a return deflection outside the rules' return window (reported, not
+    /// judged: the verdict is the forward deflection's). The tennis preset's linear law with
+    /// Eq. 20's z_p flattens only just at the 1 in peak, so it returns almost its forward
+    /// deflection (docs/presets.md, tennis; docs/drop.md, "Standards").
+    pub fn return_warning(&self, s: &StaticDeflection) -> Option<String> {
+        let [lo, hi] = self.return_window?;
+        let d = s.return_.as_ref().ok()?.diameter();
+        if (lo..=hi).contains(&d) {
+            return None;
+        }
+        let mm = |v: f64| format!("{:.2}", v * 1e3);
+        Some(format!(
+            "the return deflection after a {} mm compression, {} mm, is outside the rules' \
+             window {}–{} mm ({}; reported, not judged: the verdict is the forward \
+             deflection's): the model's unloading from that peak returns too little \
+             (docs/presets.md says why and what would fit it)",
+            mm(self.test.peak_m),
+            mm(d),
+            mm(lo),
+            mm(hi),
+            self.name
+        ))
+    }
+
     /// The verdict on the forward deflection of the diameter (`None`: the model gives none, a
     /// ball without a recoil spring).
     pub fn judge(&self, ball: &DropBall) -> Option<Verdict> {

@@ -70,6 +70,18 @@ pub struct CalibrationData {
     /// The drop heights of the data, m (empty when the data give speeds).
     #[serde(default)]
     pub heights: Vec<f64>,
+    /// The loads of a static test between two plates, kg (empty for impacts, and for a static
+    /// test whose record does not give them: written only when known).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub loads: Vec<f64>,
+}
+
+impl CalibrationData {
+    /// Whether the set is a static test: loads, or neither speeds nor heights (a record
+    /// written before loads were kept).
+    pub fn is_static(&self) -> bool {
+        !self.loads.is_empty() || (self.speeds.is_empty() && self.heights.is_empty())
+    }
 }
 
 impl Calibration {
@@ -104,6 +116,18 @@ impl Calibration {
                 short(self.speed_max, 4)
             )
         }
+    }
+
+    /// The static loads of the record's static tests (kg) as `[min, max]`, with their
+    /// sources; `None` when no static test gives its loads.
+    pub fn load_range(&self) -> Option<([f64; 2], String)> {
+        let tests: Vec<&CalibrationData> =
+            self.data.iter().filter(|d| !d.loads.is_empty()).collect();
+        let loads = tests.iter().flat_map(|d| d.loads.iter().copied());
+        let lo = loads.clone().fold(f64::INFINITY, f64::min);
+        let hi = loads.fold(f64::NEG_INFINITY, f64::max);
+        let sources: Vec<&str> = tests.iter().map(|d| d.source.as_str()).collect();
+        (!tests.is_empty()).then(|| ([lo, hi], sources.join("; ")))
     }
 
     /// The sources, "; "-separated.
@@ -144,6 +168,9 @@ impl Calibration {
             let _ = writeln!(out, "quantities = {}", string(&d.quantities));
             let _ = writeln!(out, "speeds = {}  # m/s", list(&d.speeds));
             let _ = writeln!(out, "heights = {}  # m", list(&d.heights));
+            if !d.loads.is_empty() {
+                let _ = writeln!(out, "loads = {}  # kg", list(&d.loads));
+            }
         }
     }
 }
@@ -223,6 +250,9 @@ pub(super) fn check(c: &Option<Calibration>) -> Result<(), Bad> {
         }
         for &h in &d.heights {
             positive(at, "heights", h)?;
+        }
+        for &l in &d.loads {
+            positive(at, "loads", l)?;
         }
     }
     Ok(())

@@ -160,7 +160,10 @@ fn a_fitted_preset_is_sampled_from_its_covariance() {
         dir.path(),
         &argv("mc --preset gfit --vary fit --dist uniform"),
     );
-    assert_bad(&o, &["invalid vary fit: --dist does not go with it"]);
+    assert_bad(
+        &o,
+        &["invalid vary fit: --dist uniform does not go with it"],
+    );
     let o = bl_at(dir.path(), &["mc", "--preset", "golf", "--vary", "fit"]);
     assert_bad(&o, &["invalid vary fit: golf", "carries no fit"]);
     // a preset saved from an exact fit (one drop, K_r) has no covariance: the message said
@@ -169,4 +172,53 @@ fn a_fitted_preset_is_sampled_from_its_covariance() {
     ok_at(dir.path(), &one);
     let o = bl_at(dir.path(), &["mc", "--preset", "onedrop", "--vary", "fit"]);
     assert_bad(&o, &["carries no fit", "an exact fit has no covariance"]);
+}
+
+/// Issue 52's trial: a fit of three table-tennis drops pins K_r barely (95 % interval wider
+/// than its value); `mc --vary fit` refused with "a normal spread this wide crosses 0: use
+/// --dist lognormal or a smaller spread" and a raw float, and `--dist lognormal` then said it
+/// does not go with `--vary fit`. The advice now names the fit's covariance and what works,
+/// the value to 4 figures, and `--dist lognormal` samples the fit's means and sds, positive.
+#[test]
+fn a_fit_too_wide_for_a_normal_is_sampled_lognormal() {
+    let dir = tempfile::tempdir().unwrap();
+    let fit = "fit --preset table-tennis --drop-height 0.305 --rebound-height 0.300 \
+               --drop-height 0.305 --rebound-height 0.285 --drop-height 0.305 \
+               --rebound-height 0.296 --free k_r --save tt3";
+    let text = ok_at(dir.path(), &argv(fit));
+    assert_eq!(text.matches("is wider than its value").count(), 1, "{text}");
+    let o = bl_at(
+        dir.path(),
+        &argv("mc --preset tt3 --vary fit --samples 1000"),
+    );
+    assert_bad(
+        &o,
+        &[
+            "invalid vary fit: sample",
+            "(invalid k_r: -",
+            "--dist lognormal",
+        ],
+    );
+    assert!(!o.stderr.contains("smaller spread"), "{}", o.stderr);
+    // the drawn value to 4 significant figures, not the float's 16
+    let value = o.stderr.split("k_r: -").nth(1).unwrap();
+    let digits = value.split(' ').next().unwrap().replace('.', "");
+    assert!(digits.len() <= 4, "{}", o.stderr);
+    let args = argv("mc --preset tt3 --vary fit --dist lognormal --samples 20000 --csv-out s.csv");
+    ok_at(dir.path(), &args);
+    let csv = std::fs::read_to_string(dir.path().join("s.csv")).unwrap();
+    let k_r = &columns(&csv, &["k_r"])[0];
+    assert!(k_r.iter().all(|k| *k > 0.0));
+    let saved = dir.path().join("bouncelab/presets/tt3.toml");
+    let table: toml::Table = toml::from_str(&std::fs::read_to_string(saved).unwrap()).unwrap();
+    let value = table["fit"]["values"][0].as_float().unwrap();
+    let var = table["fit"]["covariance"][0][0].as_float().unwrap();
+    let m = mean(k_r);
+    let sd = cov(k_r, k_r).sqrt();
+    assert!((m / value - 1.0).abs() < 0.02, "mean {m} vs {value}");
+    assert!(
+        (sd / var.sqrt() - 1.0).abs() < 0.1,
+        "sd {sd} vs {}",
+        var.sqrt()
+    );
 }

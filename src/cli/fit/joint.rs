@@ -167,6 +167,7 @@ fn combined(data: &[Loaded], statics: Option<&(String, Vec<StaticRow>)>) -> Load
                 d.points.iter().map(|q| q.v0).collect()
             },
             heights: d.drops.iter().map(|x| x.0).collect(),
+            loads: vec![],
         })
         .collect();
     if let Some((file, rows)) = statics {
@@ -176,6 +177,7 @@ fn combined(data: &[Loaded], statics: Option<&(String, Vec<StaticRow>)>) -> Load
             quantities: format!("static deflection under {} loads", rows.len()),
             speeds: vec![],
             heights: vec![],
+            loads: rows.iter().map(|r| r.load_kg).collect(),
         });
     }
     Loaded {

@@ -217,6 +217,7 @@ fn calibration(data: &Loaded, p: &ImpactParams, when: &str) -> Calibration {
         quantities: data.kind.to_string(),
         speeds: speeds.clone(),
         heights: data.drops.iter().map(|d| d.0).collect(),
+        loads: Vec::new(),
     };
     Calibration::over(set, &speeds)
 }

@@ -29,6 +29,7 @@ fn shifted(
         quantities: "COR against temperature: the dashpot's Arrhenius shift".into(),
         speeds: speeds.clone(),
         heights: Vec::new(),
+        loads: Vec::new(),
     };
     let mut record = match &base.calibration {
         Some(c) => {

@@ -10,7 +10,11 @@
 //!
 //! q the parameters the set sees (the rank of its Jacobian): a set the joint answer forces
 //! away from its own best leaves RSS_joint ≫ RSS_alone (tests/analysis/fit_joint.rs,
-//! `contradicting_sets_are_flagged`). With one set alone, the runs test of its misses (20
+//! `contradicting_sets_are_flagged`). The denominator estimates the set's noise variance; it
+//! is taken no smaller than the set's resolution squared (`Part::resolution`, the floor its
+//! scale may be given): a set the model made exactly has RSS_alone at float noise, and a
+//! nudge of 1e-12 from another set's rounding over 1e-24 is not a contradiction
+//! (`an_exact_set_beside_rounded_data_is_not_a_contradiction`). With one set alone, the runs test of its misses (20
 //! or more), as the fits of one data set take.
 
 use super::super::lm::{self, Best, Residuals};
@@ -65,7 +69,8 @@ pub(super) fn accounts(
         let lack = if part.stated() {
             verdict::chi2_test(r, r.len().saturating_sub(share))
         } else if sets.len() > 1 {
-            f_test(&Alone { p, i }, x, r, best, iterations)
+            let floor = part.resolution();
+            f_test(&Alone { p, i }, x, r, best, iterations, floor)
         } else {
             verdict::runs_test(&in_order(part, r)).filter(|_| r.iter().any(|v| *v != 0.0))
         };
@@ -100,13 +105,15 @@ fn in_order(part: &Part, r: &[f64]) -> Vec<f64> {
     pairs.into_iter().map(|p| p.1).collect()
 }
 
-/// The extra-sum-of-squares F test of one set fitted alone from the joint `x`.
+/// The extra-sum-of-squares F test of one set fitted alone from the joint `x`, its noise
+/// variance taken no smaller than `resolution`² (residuals' units).
 fn f_test(
     alone: &Alone,
     x: &[f64],
     r: &[f64],
     best: &Best,
     max_iterations: usize,
+    resolution: f64,
 ) -> Option<LackOfFit> {
     let opts = lm::Options {
         max_iterations,
@@ -124,8 +131,9 @@ fn f_test(
     if joint == 0.0 {
         return None;
     }
-    let f = if apart > 0.0 {
-        ((joint - apart) / q as f64) / (apart / (n - q) as f64)
+    let noise = (apart / (n - q) as f64).max(resolution * resolution);
+    let f = if noise > 0.0 {
+        ((joint - apart) / q as f64) / noise
     } else {
         f64::INFINITY
     };

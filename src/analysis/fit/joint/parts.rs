@@ -178,6 +178,26 @@ impl Part<'_> {
         }
     }
 
+    /// The smallest miss the set resolves, in units of its residuals (its scale's
+    /// [`SCALE_FLOOR`] over the scale it was weighed by: 1 for a set fitted to within its
+    /// floor; 0 for a stated set, read as its rows say). A joint answer's nudge below it is
+    /// float noise, not a contradiction (`lack::f_test`).
+    pub fn resolution(&self) -> f64 {
+        let (floor, scale) = match self {
+            _ if self.stated() => return 0.0,
+            Part::Cor(p) => (SCALE_FLOOR, p.scale[0].get()),
+            Part::Trace(t) => (
+                SCALE_FLOOR * t.p.summary.peak.abs().max(f64::MIN_POSITIVE),
+                t.scale.get(),
+            ),
+            Part::Static(p) => (
+                SCALE_FLOOR * p.rows.iter().map(|r| r.deflection).fold(0.0, f64::max),
+                p.scale.get(),
+            ),
+        };
+        if scale > 0.0 { floor / scale } else { 0.0 }
+    }
+
     /// RMS of the set's misses in its own unit (COR, N, m) at `x`.
     pub fn rms_raw(&self, x: &[f64], k: usize) -> Option<f64> {
         match self {
