@@ -208,6 +208,17 @@ impl BallArgs {
         let ball = Ball::from_entry_with(&entry, source, law, v0, &self.set.values())?;
         Ok(ball.at_conditions(&self.conditions.spec())?)
     }
+
+    /// [`BallArgs::resolve`] with `standard_ball` as the preset when neither `--preset` nor
+    /// `--config` is given: a test-rig command (`bat`, `court`) fires the ball of the standard
+    /// it judges by default (its `balls[0]`, as `bouncelab standards` names it).
+    pub fn resolve_for_standard(&self, standard_ball: &str) -> anyhow::Result<Ball> {
+        let mut args = self.clone();
+        if !args.choice.is_given() {
+            args.choice.preset = Some(standard_ball.into());
+        }
+        args.resolve(None)
+    }
 }
 
 /// Change λ and/or ζ of a ball: K_r and c move, m and K_p stay (Eq. 24). The library's own
