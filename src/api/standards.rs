@@ -112,6 +112,16 @@ impl From<&PressureLoss> for PressureLossEntry {
     }
 }
 
+/// The command that judges standard `name` when it is not a drop test: `bat` for a bat
+/// standard, `court` for the court pace (both listed by `bouncelab standards`, refused by
+/// `drop --standard` as unknown before: issue 52's trial), with the standard's title.
+pub fn judged_elsewhere(name: &str) -> Option<(&'static str, &'static str)> {
+    let bat = BAT_STANDARDS.iter().find(|s| s.name == name);
+    let bat = bat.map(|s| ("bat", s.title));
+    let court = (ITF_COURT_PACE.name == name).then_some(("court", ITF_COURT_PACE.title));
+    bat.or(court)
+}
+
 /// The list, in its order: ball standards, bat standards, the court pace, pressure-loss
 /// tests, static standards.
 pub fn standards() -> Vec<StandardEntry> {
