@@ -115,7 +115,7 @@ impl Ball {
             (None, Some(t)) => {
                 let why = format!(
                     "{}'s calibration records no temperature the ball was inflated at: give \
-                     --inflated-at too (the temperature at which it held its pressure)",
+                     --inflated-at too, the temperature at which it was inflated",
                     self.called()
                 );
                 return Err(invalid("temperature", t, why));

@@ -73,10 +73,10 @@ const MAX_COUNT: f64 = 9_007_199_254_740_992.0;
 /// (issue 52's trial; tests/cli/issue52_trial.rs).
 pub fn count(text: &str) -> Result<usize, String> {
     let shown = crate::sanitize::line(text);
-    let what = "a count is a whole number ≥ 0, e.g. 10000 or 1e4";
-    let x = read(text).map_err(|why| format!("{}; {what}", refusal(&shown, why)))?;
+    let what = "a whole number ≥ 0, e.g. 10000 or 1e4";
+    let x = read(text).map_err(|why| format!("{}; a count is {what}", refusal(&shown, why)))?;
     if !x.is_finite() || x < 0.0 || x.fract() != 0.0 {
-        return Err(format!("{shown} is not a whole number ≥ 0 ({what})"));
+        return Err(format!("{shown} is not a count ({what})"));
     }
     if x > MAX_COUNT {
         return Err(format!("{shown} is too large to count (at most 2^53)"));
