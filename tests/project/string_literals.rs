@@ -13,22 +13,12 @@
 //! begin and end (comments, char literals and lifetimes told apart), and no parser is among
 //! the dependencies.
 
+use super::architecture::rust_files;
 use std::fs;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
 /// A run of this many spaces inside a literal is source indentation.
 const INDENT: usize = 8;
-
-fn rust_files(dir: &Path, out: &mut Vec<PathBuf>) {
-    for entry in fs::read_dir(dir).unwrap() {
-        let path = entry.unwrap().path();
-        if path.is_dir() {
-            rust_files(&path, out);
-        } else if path.extension().is_some_and(|e| e == "rs") {
-            out.push(path);
-        }
-    }
-}
 
 /// The non-raw string literals of `src` (Rust source): (line, body between the quotes).
 fn string_literals(src: &str) -> Vec<(usize, String)> {
