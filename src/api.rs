@@ -131,7 +131,7 @@ pub use shot_after::AfterBounceError;
 pub use shot_mc::{SHOT_MC_QUANTITIES, ShotMcReport, ShotMcSpec, ShotSpread, Spread};
 pub use standard_conditions::test_words;
 pub use standards::{
-    ConditionsEntry, PressureLossEntry, PressureLossTest, StandardEntry, judged_elsewhere,
+    ConditionsEntry, PressureLossEntry, PressureLossTest, StandardEntry, not_a_drop_standard,
     standards,
 };
 pub use statics::{ITF_RETURN_PEAK, ReturnReading, StaticReading, StaticReport};

@@ -311,6 +311,7 @@ ERRORS = [
     (lambda: bouncelab.drop(height=-1.0), ["drop", "--height", "-1"]),
     (lambda: bouncelab.drop(drag_coefficient=-1.0), ["drop", "--drag-coefficient", "-1"]),
     (lambda: bouncelab.drop(standard="nope"), ["drop", "--standard", "nope"]),
+    (lambda: bouncelab.drop(standard="ncaa-bbcor"), ["drop", "--standard", "ncaa-bbcor"]),
 ]
 
 
