@@ -335,6 +335,16 @@ impl Catalog {
         }))
     }
 
+    /// A skipped file that may hold the name `name` (its `name` field or file name is it, or
+    /// its `name` cannot be read): a save of `name` would not know whether it makes a second
+    /// preset of that name once the file is mended, so it is refused with this file's error
+    /// (the explorer's `s`, `fit --save`).
+    pub fn may_hold(&self, name: &str) -> Option<&Skipped> {
+        self.skipped
+            .iter()
+            .find(|s| s.error.is_some() && (s.name.is_none() || s.is_named(name)))
+    }
+
     /// The skipped file whose error [`Catalog::get`] gives for `name`: none when a preset of
     /// that name loaded.
     pub fn skipped_for(&self, name: &str) -> Option<&Skipped> {

@@ -135,3 +135,24 @@ fn a_bad_user_preset_is_skipped_unless_asked_for() {
     let invisible = format!("golfx.toml:{line}:1: name: holds an invisible");
     asked("golfx", &[&invisible]);
 }
+
+/// `fit --save NAME` beside a bad file of the presets folder: refused (nothing written) when the
+/// file may hold NAME — its name cannot be read, or is NAME — since the save could make a
+/// second preset of that name once the file is mended; saved, with the file warned of, when
+/// the bad file's name is readable and another.
+#[test]
+fn a_save_beside_a_bad_file_that_may_hold_its_name_is_refused() {
+    let home = config_home(&[("broken.toml", "name = \n")]);
+    let o = bl_in(home.path(), &argv("fit --cor 0.8 --save mine"));
+    assert_bad(&o, &["broken.toml:1:"]);
+    let presets = home.path().join("bouncelab").join("presets");
+    assert!(!presets.join("mine.toml").exists());
+    let golf = include_str!("../../presets/golf.toml");
+    let invisible = golf.replace("name = \"golf\"", "name = \"golf\\u115F\"");
+    let home = config_home(&[("golfx.toml", &invisible)]);
+    let o = bl_in(home.path(), &argv("fit --cor 0.8 --save mine"));
+    assert_eq!(o.code, 0, "{}", o.stderr);
+    assert!(o.stderr.contains("golfx.toml:"), "{}", o.stderr);
+    let presets = home.path().join("bouncelab").join("presets");
+    assert!(presets.join("mine.toml").exists());
+}
