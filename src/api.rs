@@ -137,7 +137,8 @@ pub use shot_mc::{
 pub use shot_net::{Net, NetReport, TENNIS_NET_HEIGHT};
 pub use standard_conditions::test_words;
 pub use standards::{
-    ConditionsEntry, PressureLossEntry, PressureLossTest, StandardEntry, standards,
+    ConditionsEntry, PressureLossEntry, PressureLossTest, StandardEntry, not_a_drop_standard,
+    standards,
 };
 pub use statics::{ITF_RETURN_PEAK, ReturnReading, StaticReading, StaticReport};
 pub use summary::ImpactSummary;

@@ -8,8 +8,10 @@
 //! - a preset is known by its `name` field, not by its file name;
 //! - a user preset may not take the name of an embedded one, nor of another user preset: both
 //!   are errors naming the two origins (rename one of them);
-//! - any file that cannot be read or parsed is an error naming `file:line:column`: a broken
-//!   preset is never skipped silently;
+//! - a file of the presets folder that cannot be read or parsed is skipped with a warning
+//!   naming `file:line:column` and why ([`Catalog::skipped`]): one bad file does not stop every
+//!   command. Asked for by its name (its `name` field or its file name without `.toml`), or
+//!   given as `--config`, it is the error;
 //! - in the presets folder only regular `*.toml` files not starting with `.` are read, in
 //!   file-name order; a missing folder means no user presets.
 //!
@@ -183,18 +185,61 @@ fn describe_io(e: &std::io::Error) -> String {
 pub struct Catalog {
     entries: Vec<Entry>,
     /// `*.toml` entries of the presets folder that are symbolic links leading to no file
-    /// (dangling or looping): skipped, and said so by the caller ([`Catalog::skipped`]).
+    /// (dangling or looping), or files that cannot be read or parsed: skipped, and said so by
+    /// the caller ([`Catalog::skipped`]).
     skipped: Vec<Skipped>,
 }
 
 /// A `*.toml` name in the presets folder that was not read, and why ("a symbolic link to a
-/// missing file", "a symbolic link that cannot be followed: …").
+/// missing file", "a symbolic link that cannot be followed: …", or the file's error).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Skipped {
-    /// The link, in the presets folder.
+    /// The link or file, in the presets folder.
     pub path: PathBuf,
     /// Why it was not read.
     pub why: String,
+    /// For a file that could not be read or parsed: its error (file:line:column), the error
+    /// of a command that asks for it ([`Catalog::get`]).
+    pub error: Option<CatalogError>,
+    /// The `name` its text holds, where the TOML parses that far.
+    pub name: Option<String>,
+}
+
+impl Skipped {
+    /// A folder file that could not be read or parsed.
+    fn bad_file(path: PathBuf, error: CatalogError) -> Skipped {
+        Skipped {
+            name: name_field(&path),
+            why: error.to_string(),
+            error: Some(error),
+            path,
+        }
+    }
+
+    /// The warning, one line: the file (with line:column where the text is at fault) and why.
+    pub fn message(&self) -> String {
+        match self.error {
+            Some(_) => format!("{} (file skipped: fix or remove it)", self.why),
+            None => format!("{} skipped: {}", self.path.display(), self.why),
+        }
+    }
+
+    /// Whether a command asking for preset `name` means this file: its `name` field or its
+    /// file name without `.toml`.
+    pub fn is_named(&self, name: &str) -> bool {
+        self.name.as_deref() == Some(name) || self.path.file_stem().is_some_and(|stem| stem == name)
+    }
+}
+
+/// The string a preset file's `name` key holds, if the file reads as TOML that far (a name
+/// that fails the preset's own checks, e.g. an invisible character, is still read).
+fn name_field(path: &Path) -> Option<String> {
+    let mut bytes = Vec::new();
+    std::fs::File::open(path)
+        .and_then(|f| f.take(MAX_FILE_BYTES).read_to_end(&mut bytes))
+        .ok()?;
+    let table: toml::Table = std::str::from_utf8(&bytes).ok()?.parse().ok()?;
+    table.get("name")?.as_str().map(str::to_string)
 }
 
 impl Catalog {
@@ -221,27 +266,36 @@ impl Catalog {
             None => (Vec::new(), Vec::new()),
         };
         catalog.skipped = skipped;
+        // the file given on the command line is asked for: its error is the command's
+        let mut asked = None;
         if let Some(x) = extra {
             let same = |a: &Path| match (a.canonicalize(), x.canonicalize()) {
                 (Ok(a), Ok(b)) => a == b,
                 _ => false,
             };
-            if !files.iter().any(|f| same(f)) {
+            asked = files.iter().position(|f| same(f));
+            if asked.is_none() {
+                asked = Some(files.len());
                 files.push(x.to_path_buf());
             }
         }
-        for path in files {
-            let preset = read_preset_file(&path)?;
-            catalog.add(Entry {
-                preset,
-                origin: Origin::File(path),
-            })?;
+        for (i, path) in files.into_iter().enumerate() {
+            match read_preset_file(&path) {
+                Ok(preset) => catalog.add(Entry {
+                    preset,
+                    origin: Origin::File(path),
+                })?,
+                Err(e) if asked != Some(i) => catalog.skipped.push(Skipped::bad_file(path, e)),
+                Err(e) => return Err(e),
+            }
         }
+        catalog.skipped.sort_by(|a, b| a.path.cmp(&b.path));
         Ok(catalog)
     }
 
-    /// The presets folder's `*.toml` links that lead to no file, skipped by [`Catalog::load`]
-    /// (the command line warns once: tests/cli/cli_small.rs, `dangling_links_are_named_once`).
+    /// The presets folder's `*.toml` links that lead to no file and files that cannot be read
+    /// or parsed, skipped by [`Catalog::load`] (the command line warns once:
+    /// tests/cli/cli_small.rs, `dangling_links_are_named_once`, `a_bad_user_preset_is_skipped`).
     pub fn skipped(&self) -> &[Skipped] {
         &self.skipped
     }
@@ -268,15 +322,38 @@ impl Catalog {
         &self.entries
     }
 
-    /// The preset called `name`, or an error listing the available names.
+    /// The preset called `name`; else the error of a skipped file of that name (its `name`
+    /// field or file name), else an error listing the available names.
     pub fn get(&self, name: &str) -> Result<&Entry, CatalogError> {
-        self.entries
+        if let Some(entry) = self.entries.iter().find(|e| e.preset.name == name) {
+            return Ok(entry);
+        }
+        let skipped_error = self.skipped_for(name).and_then(|s| s.error.clone());
+        Err(skipped_error.unwrap_or_else(|| CatalogError::Unknown {
+            name: name.to_string(),
+            available: self.entries.iter().map(|e| e.preset.name.clone()).collect(),
+        }))
+    }
+
+    /// A skipped file that may hold the name `name` (its `name` field or file name is it, or
+    /// its `name` cannot be read): a save of `name` would not know whether it makes a second
+    /// preset of that name once the file is mended, so it is refused with this file's error
+    /// (the explorer's `s`, `fit --save`).
+    pub fn may_hold(&self, name: &str) -> Option<&Skipped> {
+        self.skipped
             .iter()
-            .find(|e| e.preset.name == name)
-            .ok_or_else(|| CatalogError::Unknown {
-                name: name.to_string(),
-                available: self.entries.iter().map(|e| e.preset.name.clone()).collect(),
-            })
+            .find(|s| s.error.is_some() && (s.name.is_none() || s.is_named(name)))
+    }
+
+    /// The skipped file whose error [`Catalog::get`] gives for `name`: none when a preset of
+    /// that name loaded.
+    pub fn skipped_for(&self, name: &str) -> Option<&Skipped> {
+        if self.entries.iter().any(|e| e.preset.name == name) {
+            return None;
+        }
+        self.skipped
+            .iter()
+            .find(|s| s.error.is_some() && s.is_named(name))
     }
 
     /// The entry read from `path` (the `--config` file).
@@ -328,7 +405,12 @@ fn preset_files(dir: &Path) -> Result<(Vec<PathBuf>, Vec<Skipped>), CatalogError
                     describe_io(&e)
                 ),
             };
-            skipped.push(Skipped { path, why });
+            skipped.push(Skipped {
+                path,
+                why,
+                error: None,
+                name: None,
+            });
         }
     }
     files.sort();
@@ -337,69 +419,4 @@ fn preset_files(dir: &Path) -> Result<(Vec<PathBuf>, Vec<Skipped>), CatalogError
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    fn write(dir: &Path, file: &str, name: &str) -> PathBuf {
-        let text = crate::preset::EMBEDDED[0]
-            .1
-            .replace("name = \"superball\"", &format!("name = \"{name}\""));
-        let path = dir.join(file);
-        std::fs::write(&path, text).unwrap();
-        path
-    }
-
-    #[test]
-    fn folder_files_in_name_order_hidden_and_other_files_skipped() {
-        let dir = tempfile::tempdir().unwrap();
-        write(dir.path(), "b.toml", "second");
-        write(dir.path(), "a.toml", "first");
-        write(dir.path(), ".hidden.toml", "hidden");
-        write(dir.path(), "notes.txt", "text");
-        std::fs::create_dir(dir.path().join("sub.toml")).unwrap();
-        let cat = Catalog::load(Some(dir.path()), None).unwrap();
-        let names: Vec<&str> = cat
-            .entries()
-            .iter()
-            .map(|e| e.preset.name.as_str())
-            .collect();
-        // the embedded balls in their order (pinned by `preset::tests::embedded_presets_parse`),
-        // then the folder's in file-name order
-        let embedded: Vec<&str> = crate::preset::EMBEDDED.iter().map(|e| e.0).collect();
-        let users = ["first", "second"];
-        assert_eq!(names, [&embedded[..], &users].concat());
-        assert_eq!(
-            cat.get("first").unwrap().origin,
-            Origin::File(dir.path().join("a.toml"))
-        );
-        // a missing folder: no user presets
-        let none = Catalog::load(Some(&dir.path().join("absent")), None).unwrap();
-        assert_eq!(none, Catalog::embedded());
-    }
-
-    #[test]
-    fn extra_file_is_read_once_and_found_by_path() {
-        let dir = tempfile::tempdir().unwrap();
-        let p = write(dir.path(), "mine.toml", "mine");
-        let cat = Catalog::load(Some(dir.path()), Some(&p)).unwrap();
-        assert_eq!(cat.entries().len(), crate::preset::EMBEDDED.len() + 1);
-        assert_eq!(cat.from_file(&p).unwrap().preset.name, "mine");
-        let other = tempfile::tempdir().unwrap();
-        let q = write(other.path(), "x.toml", "mine");
-        let err = Catalog::load(Some(dir.path()), Some(&q)).unwrap_err();
-        assert!(matches!(err, CatalogError::Duplicate { .. }), "{err}");
-        let msg = err.to_string();
-        assert!(msg.contains("mine.toml") && msg.contains("x.toml"), "{msg}");
-    }
-
-    #[test]
-    fn unknown_names_list_the_catalog() {
-        let err = Catalog::embedded().get("cricket").unwrap_err();
-        assert_eq!(
-            err.to_string(),
-            "unknown preset 'cricket' (available: superball, golf, baseball, tennis, football, \
-             basketball, table-tennis, softball, baseball-mlb, softball-44, squash, volleyball, \
-             golf-driver)"
-        );
-    }
-}
+mod tests;

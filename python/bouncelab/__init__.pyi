@@ -889,7 +889,7 @@ class Court(_Named, _CourtSometimes):
     conditions: Conditions
 
 def court(
-    preset: str = "superball",
+    preset: str = "tennis",
     *,
     friction: Optional[float] = None,
     surface: Optional[SurfaceArg] = None,
@@ -903,7 +903,7 @@ def court(
     **ball: Unpack[BallArguments],
 ) -> Court:
     """The ITF Court Pace Rating (CS 01/02: 30 m/s at 16°, no spin) of a surface for the
-    ball, as ``bouncelab court``: ``surface`` a name or a dict of its numbers, ``friction`` μ
+    ball (by default the test's ball, ``tennis``), as ``bouncelab court``: ``surface`` a name or a dict of its numbers, ``friction`` μ
     (the surface's when not given), ``surface_cor`` a measured e the court is calibrated to
     (c_s solved at the dict's ``stiffness``, else the ball's K_p: an assumption the answer
     states; a ValueError with the reachable range when e is out of reach); ``fit`` a CSV

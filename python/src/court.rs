@@ -27,7 +27,7 @@ ball_pyfunction! {
     /// `computed_on`, `ball`, `conditions`. `fit` a file of measured ITF test bounces (CSV:
     /// v_in, angle_in, v_out, angle_out in m/s and degrees), as `court --fit FILE`: their mean
     /// μ_app and e are the friction and the e the court is calibrated to.
-    signature = (preset="superball", *, friction=None, surface=None, surface_cor=None, fit=None, tangential_stiffness=None, inertia_factor=None, tangential_damping=None, law=None, params=None,);
+    signature = (preset="tennis", *, friction=None, surface=None, surface_cor=None, fit=None, tangential_stiffness=None, inertia_factor=None, tangential_damping=None, law=None, params=None,);
     fn court<'py>(
         py,
         preset: &str,

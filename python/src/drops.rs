@@ -175,7 +175,8 @@ enum Judged {
 }
 
 /// The standard named `name`; an unknown name is refused listing every one `drop --standard`
-/// takes (`drop::names::unknown`, the command line's message).
+/// takes, a bat or court standard naming the command that judges it
+/// (`api::not_a_drop_standard`, the command line's message).
 fn find(name: &str) -> PyResult<Judged> {
     if let Some(t) = api::pressure_loss_test(name) {
         return Ok(Judged::Leak(t));
@@ -183,7 +184,7 @@ fn find(name: &str) -> PyResult<Judged> {
     match (standards::find(name), deformation::find(name)) {
         (Ok(s), _) => Ok(Judged::Impact(s)),
         (Err(_), Some(d)) => Ok(Judged::Static(d)),
-        (Err(_), None) => Err(value_error(bouncelab::drop::names::unknown(name))),
+        (Err(_), None) => Err(value_error(api::not_a_drop_standard(name))),
     }
 }
 

@@ -311,6 +311,7 @@ ERRORS = [
     (lambda: bouncelab.drop(height=-1.0), ["drop", "--height", "-1"]),
     (lambda: bouncelab.drop(drag_coefficient=-1.0), ["drop", "--drag-coefficient", "-1"]),
     (lambda: bouncelab.drop(standard="nope"), ["drop", "--standard", "nope"]),
+    (lambda: bouncelab.drop(standard="ncaa-bbcor"), ["drop", "--standard", "ncaa-bbcor"]),
 ]
 
 
@@ -323,13 +324,16 @@ def test_errors_are_the_clis(call, args):
 
 
 def test_broken_user_preset_is_named_with_line_and_column(no_user_presets):
+    # skipped by the catalog the command line shares (it warns; Python lists the others), and
+    # the error, file:line:column, of a call asking for it by its file name
     no_user_presets.mkdir(parents=True)
     (no_user_presets / "bad.toml").write_text('name = "bad"\nmass = [\n')
-    message = cli_error("presets")
+    message = cli_error("run", "--preset", "bad")
     assert ":2:" in message or ":3:" in message, message
     with pytest.raises(ValueError) as e:
-        bouncelab.presets()
+        bouncelab.run(preset="bad")
     assert str(e.value) == message
+    assert "superball" in [p["name"] for p in bouncelab.presets()]
 
 
 def test_errors_of_the_bindings_own_arguments():

@@ -77,3 +77,11 @@ def test_what_the_command_line_refuses_the_package_refuses(tmp_path):
     with pytest.raises(ValueError) as e:
         bouncelab.court("tennis", fit=f)
     assert str(e.value) == said
+
+
+def test_the_default_ball_is_the_tests_ball():
+    # `court` fired the superball when no ball was given; the ITF test's ball is the tennis
+    # ball (issue 52's second trial), as `bouncelab court` without --preset fires
+    expected = cli_json("court", "--surface", "clay", "--friction", "0.6", "--format", "json")
+    assert expected["ball"]["name"] == "tennis"
+    same(bouncelab.court(surface="clay", friction=0.6), expected)

@@ -105,7 +105,12 @@ pub fn check_samples_by(
         ),
         _ => (n, format!("{samples} samples")),
     };
-    check(impacts as usize, law, &what)
+    // what a Monte Carlo's user can change is the number of samples (`mc` said "ask for
+    // fewer points or values", which it takes none of: issue 52's trial)
+    check(impacts as usize, law, &what).map_err(|e| TooMuchWork {
+        ask: "ask for fewer samples",
+        ..e
+    })
 }
 
 /// `bouncelab.impacts`' elements by the path that answers each (`api::first_pass` finds it
@@ -186,6 +191,9 @@ pub fn check_elements(law: ContactLaw, e: Elements) -> Result<(), TooMuchWork> {
     check(usize::try_from(impacts).unwrap_or(usize::MAX), law, &what)
 }
 
+/// How a sweep's or a fit's user asks for less work.
+const ASK_FEWER: &str = "ask for fewer points or values";
+
 /// A request beyond [`LIMIT`]; its message says how much and how to ask for less.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct TooMuchWork {
@@ -197,6 +205,8 @@ pub struct TooMuchWork {
     pub law: ContactLaw,
     /// Their work, impacts × [`cost`].
     pub work: u64,
+    /// How to ask for less ("ask for fewer points or values", "ask for fewer samples").
+    pub ask: &'static str,
 }
 
 impl fmt::Display for TooMuchWork {
@@ -206,12 +216,13 @@ impl fmt::Display for TooMuchWork {
             impacts,
             law,
             work,
+            ask,
         } = self;
         write!(
             f,
             "too much work: {what} is {impacts} {law}-law impacts, worth {work} against the \
              work limit of {LIMIT} (an impact counts 1 with the linear law, {} with the \
-             others); ask for fewer points or values",
+             others); {ask}",
             cost(ContactLaw::Hertz)
         )
     }
@@ -229,6 +240,7 @@ pub fn check(impacts: usize, law: ContactLaw, what: &str) -> Result<(), TooMuchW
             impacts,
             law,
             work,
+            ask: ASK_FEWER,
         });
     }
     Ok(())
@@ -316,6 +328,7 @@ pub fn fit_iterations(
             impacts: (runs.saturating_mul(run_cost) / cost(law).max(1)) as usize,
             law,
             work: least.saturating_mul(starts),
+            ask: ASK_FEWER,
         });
     }
     Ok((iterations as usize).min(FIT_ITERATIONS))

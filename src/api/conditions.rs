@@ -110,16 +110,20 @@ impl Ball {
         };
         let p = match (t0, t) {
             (Some(t0), Some(t)) => gas::gauge_at(leaked, t0, t, atm).map_err(from)?,
-            (None, Some(_)) => {
+            // the temperature given is the one at fault: `run --preset tennis --temperature
+            // 30` said "invalid inflated-at: 30" (issue 52's trial; tests/cli/issue52_trial.rs)
+            (None, Some(t)) => {
                 let why = format!(
-                    "{}'s calibration records no temperature to start from: give --inflated-at",
+                    "{}'s calibration records no temperature the ball was inflated at: give \
+                     --inflated-at too, the temperature at which it was inflated",
                     self.called()
                 );
-                return Err(invalid("inflated-at", spec.temperature.unwrap_or(0.0), why));
+                return Err(invalid("temperature", t, why));
             }
             _ => leaked,
         };
-        self.set_pressure(p0, p)?;
+        self.set_pressure(p0, p)
+            .map_err(|e| blame_pressure(e, spec))?;
         self.conditions = Conditions {
             temperature_c: t,
             pressure_gauge_pa: Some(p),
@@ -243,6 +247,20 @@ impl Ball {
         self.params.validate()?;
         self.conditions.temperature_c = Some(t);
         Ok(self)
+    }
+}
+
+/// A parameter out of range at the pressure given, named by `--pressure` when only it moved
+/// the pressure: `--pressure 1e308` said "invalid k_p: 2.1048670779051614e307" (issue 52's
+/// trial; tests/cli/issue52_trial.rs).
+fn blame_pressure(e: BallError, spec: &ConditionsSpec) -> BallError {
+    match (e, spec.pressure) {
+        (BallError::Param(p), Some(given)) if spec.temperature.is_none() => {
+            let derived = crate::text::human(p.value, 4);
+            let why = format!("gives {} = {derived}: {}", p.field.as_str(), p.reason);
+            invalid("pressure", given, why)
+        }
+        (e, _) => e,
     }
 }
 

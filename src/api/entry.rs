@@ -48,7 +48,8 @@ impl Overrides {
             _ => return None,
         };
         let group = e.field.as_str();
-        let derived = crate::text::number(e.value);
+        // four significant figures: "gives zeta = 2.670e6", not 2670176.9136145264
+        let derived = crate::text::human(e.value, 4);
         Some(BallError::Invalid {
             field,
             value,

@@ -160,7 +160,8 @@ impl Ball {
         } else {
             spec.with_correlation(pairs).map_err(|e| match e {
                 McError::Correlate(_) => McError::Fit(format!(
-                    "the [fit] covariance of {} gives correlations no normal distribution has                      (not positive definite): refit the ball (`bouncelab fit … --save NAME`)",
+                    "the [fit] covariance of {} gives correlations no normal distribution has \
+                     (not positive definite): refit the ball (`bouncelab fit … --save NAME`)",
                     self.label()
                 )),
                 e => e,

@@ -30,11 +30,16 @@ fn within(t: &TestConditions, c: &Conditions) -> Option<bool> {
     }
 }
 
-/// "20 ± 2 °C, 80 kPa gauge": a test's stated conditions in words.
+/// "20 ± 2 °C, 80 kPa gauge": a test's stated conditions in words; "23 °C" where no
+/// tolerance is stated (a tolerance of 0: `wsf-23` printed "23 ± 0 °C", issue 52's trial).
 pub fn test_words(t: &TestConditions) -> String {
-    let temperature = t
-        .temperature_c
-        .map(|[n, tol]| format!("{} ± {} °C", short(n, 4), short(tol, 3)));
+    let temperature = t.temperature_c.map(|[n, tol]| {
+        if tol == 0.0 {
+            format!("{} °C", short(n, 4))
+        } else {
+            format!("{} ± {} °C", short(n, 4), short(tol, 3))
+        }
+    });
     let pressure = t.pressure_gauge_pa.map(|[lo, hi]| {
         if lo == hi {
             format!("{} kPa gauge", short(lo / 1e3, 4))
@@ -102,6 +107,13 @@ impl Ball {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn no_tolerance_stated_prints_none() {
+        let words = |name| test_words(&crate::drop::conditions::of(name));
+        assert_eq!(words("wsf-23"), "23 °C, no pressure stated");
+        assert_eq!(words("fifa-quality-pro"), "20 ± 2 °C, 80 kPa gauge");
+    }
 
     fn at(t: Option<f64>, p: Option<f64>) -> Conditions {
         Conditions {

@@ -112,6 +112,23 @@ impl From<&PressureLoss> for PressureLossEntry {
     }
 }
 
+/// Why `drop --standard name` (and Python's `drop(standard=name)`) takes no standard `name`:
+/// a bat or court standard is named with the command that judges it (`bat`, `court`; both
+/// listed by `bouncelab standards`, yet refused as "unknown" before: issue 52's trial), any
+/// other name is unknown, listing every one `drop` takes.
+pub fn not_a_drop_standard(name: &str) -> String {
+    let bat = BAT_STANDARDS.iter().find(|s| s.name == name);
+    let bat = bat.map(|s| ("bat", s.title));
+    let court = (ITF_COURT_PACE.name == name).then_some(("court", ITF_COURT_PACE.title));
+    match bat.or(court) {
+        Some((command, title)) => format!(
+            "standard '{name}' ({title}) is not a drop test: it is judged by `bouncelab \
+             {command}`"
+        ),
+        None => crate::drop::names::unknown(name),
+    }
+}
+
 /// The list, in its order: ball standards, bat standards, the court pace, pressure-loss
 /// tests, static standards.
 pub fn standards() -> Vec<StandardEntry> {

@@ -159,36 +159,44 @@ pub fn check_overrides(
 /// The catalog: embedded presets, the user's presets folder, and `config` if given.
 /// A `--config` file that cannot be read is named as such.
 pub fn load_catalog(config: Option<&Path>) -> anyhow::Result<Catalog> {
-    let cat =
-        Catalog::load(catalog::user_presets_dir().as_deref(), config).map_err(|e| match e {
-            catalog::CatalogError::Io { path, message } if Some(path.as_path()) == config => {
-                anyhow::anyhow!("--config {}: {message}", path.display())
-            }
-            e => e.into(),
-        })?;
-    warn_skipped(cat.skipped());
+    let cat = load_catalog_quietly(config)?;
+    warn_skipped(cat.skipped(), None);
     Ok(cat)
 }
 
-/// The presets folder's links that lead nowhere, each named once a run on stderr as a warning
-/// (a command may load the catalog more than once).
-fn warn_skipped(skipped: &[catalog::Skipped]) {
-    static WARNED: std::sync::Once = std::sync::Once::new();
-    if skipped.is_empty() {
-        return;
-    }
-    WARNED.call_once(|| {
-        let lines: Vec<String> = skipped
-            .iter()
-            .map(|s| format!("{} skipped: {}", s.path.display(), s.why))
-            .collect();
-        super::output::warnings_to_stderr(&lines);
-    });
+/// [`load_catalog`] without the warnings of what the presets folder skipped.
+fn load_catalog_quietly(config: Option<&Path>) -> anyhow::Result<Catalog> {
+    Catalog::load(catalog::user_presets_dir().as_deref(), config).map_err(|e| match e {
+        catalog::CatalogError::Io { path, message } if Some(path.as_path()) == config => {
+            anyhow::anyhow!("--config {}: {message}", path.display())
+        }
+        e => e.into(),
+    })
 }
 
-/// The preset entry chosen by `--preset` / `--config` (default: superball).
+/// The presets folder's links that lead nowhere and files that cannot be read, each named once
+/// a run on stderr as a warning (a command may load the catalog more than once); not `asked`,
+/// the file whose error the command ends with.
+fn warn_skipped(skipped: &[catalog::Skipped], asked: Option<&catalog::Skipped>) {
+    static WARNED: std::sync::Once = std::sync::Once::new();
+    let lines: Vec<String> = skipped
+        .iter()
+        .filter(|s| asked != Some(*s))
+        .map(catalog::Skipped::message)
+        .collect();
+    if lines.is_empty() {
+        return;
+    }
+    WARNED.call_once(|| super::output::warnings_to_stderr(&lines));
+}
+
+/// The preset entry chosen by `--preset` / `--config` (default: superball). A bad file of the
+/// presets folder holding the preset asked for is the error, not a warning.
 pub fn select(preset: Option<&str>, config: Option<&Path>) -> anyhow::Result<Entry> {
-    let cat = load_catalog(config)?;
+    let cat = load_catalog_quietly(config)?;
+    let name = preset.unwrap_or(DEFAULT_PRESET);
+    let asked = config.is_none().then(|| cat.skipped_for(name)).flatten();
+    warn_skipped(cat.skipped(), asked);
     let entry = match config {
         Some(path) => cat
             .from_file(path)
@@ -207,6 +215,17 @@ impl BallArgs {
         let law = self.changes.law.map(ContactLaw::from);
         let ball = Ball::from_entry_with(&entry, source, law, v0, &self.changes.set.values())?;
         Ok(ball.at_conditions(&self.conditions.spec())?)
+    }
+
+    /// [`BallArgs::resolve`] with `standard_ball` as the preset when neither `--preset` nor
+    /// `--config` is given: a test-rig command (`bat`, `court`) fires the ball of the standard
+    /// it judges by default (its `balls[0]`, as `bouncelab standards` names it).
+    pub fn resolve_for_standard(&self, standard_ball: &str) -> anyhow::Result<Ball> {
+        let mut args = self.clone();
+        if !args.choice.is_given() {
+            args.choice.preset = Some(standard_ball.into());
+        }
+        args.resolve(None)
     }
 }
 

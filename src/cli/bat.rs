@@ -64,11 +64,7 @@ struct BatJson<'a> {
 }
 
 pub fn run(a: &BatArgs, out: &mut dyn Write) -> anyhow::Result<()> {
-    let mut args = a.ball.clone();
-    if !args.choice.is_given() {
-        args.choice.preset = Some(BAT_BALL.into());
-    }
-    let ball = args.resolve(None)?;
+    let ball = a.ball.resolve_for_standard(BAT_BALL)?;
     check(a)?;
     let surface = (
         a.bat_stiffness.unwrap_or(f64::INFINITY),

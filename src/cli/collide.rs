@@ -67,7 +67,8 @@ pub fn run(a: &CollideArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         && (a.surface.surface.is_some() || a.surface.surface_mass.is_some())
     {
         anyhow::bail!(
-            "--target-preset is the target: --surface and --surface-mass do not apply (give              --surface-stiffness, --surface-damping for its surface)"
+            "--target-preset is the target: --surface and --surface-mass do not apply (give \
+             --surface-stiffness, --surface-damping for its surface)"
         );
     }
     let used =

@@ -6,6 +6,7 @@ use super::oblique::TangentialArgs;
 use super::output::{self, given, human, table};
 use super::surface::{SurfaceArgs, SurfaceUsed};
 use crate::api::{BallHeader, CourtCalibration, CourtPace};
+use crate::oblique::court::ITF_COURT_PACE;
 use clap::{Args, ValueEnum};
 use serde::Serialize;
 use std::io::Write;
@@ -18,6 +19,7 @@ pub enum CourtFormat {
 
 #[derive(Debug, Clone, Args)]
 pub struct CourtArgs {
+    /// The ball [default: tennis, the ball of the ITF court pace test]
     #[command(flatten)]
     pub ball: BallArgs,
     /// The surface's Coulomb friction coefficient μ ≥ 0 [default: the surface's; required
@@ -82,7 +84,7 @@ fn measured(path: &std::path::Path) -> anyhow::Result<Measured> {
 
 pub fn run(a: &CourtArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     super::ball::check_overrides(&a.ball.changes.set, None, None)?;
-    let ball = a.ball.resolve(None)?;
+    let ball = a.ball.resolve_for_standard(ITF_COURT_PACE.balls[0])?;
     let measured = a.fit.as_deref().map(measured).transpose()?;
     let friction = measured
         .as_ref()
@@ -109,7 +111,7 @@ pub fn run(a: &CourtArgs, out: &mut dyn Write) -> anyhow::Result<()> {
             out,
             &Report {
                 ball: ball.header(),
-                standard: "itf-court-pace",
+                standard: ITF_COURT_PACE.name,
                 friction,
                 tangential_damping: surface.tangential_damping,
                 pace: &pace,

@@ -92,7 +92,7 @@ pub fn run(a: &DropArgs, out: &mut dyn Write) -> anyhow::Result<()> {
             (Ok(s), _) => (Some(s), None),
             (Err(_), Some(d)) => (None, Some(d)),
             // every kind of standard `drop` takes (src/drop/names.rs)
-            (Err(_), None) => anyhow::bail!(crate::drop::names::unknown(name)),
+            (Err(_), None) => anyhow::bail!(crate::api::not_a_drop_standard(name)),
         },
     };
     let mut ball_args = a.ball.clone();

@@ -73,6 +73,7 @@ pub struct McArgs {
         long,
         value_name = "N",
         default_value_t = 10_000,
+        value_parser = super::number::count,
         allow_hyphen_values = true
     )]
     pub samples: usize,

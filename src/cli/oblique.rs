@@ -62,7 +62,7 @@ pub struct ObliqueArgs {
     #[arg(long)]
     pub history: bool,
     /// Number of history samples
-    #[arg(long, value_name = "N", default_value_t = SAMPLES, requires = "history", allow_hyphen_values = true)]
+    #[arg(long, value_name = "N", default_value_t = SAMPLES, requires = "history", value_parser = super::number::count, allow_hyphen_values = true)]
     pub samples: usize,
 }
 

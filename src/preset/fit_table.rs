@@ -154,7 +154,9 @@ fn widths(c: &[Vec<f64>], names: &[Param], values: &[f64]) -> Result<(), Bad> {
         let sd = c[i][i].sqrt();
         if sd > MAX_RELATIVE_SD * v {
             let msg = format!(
-                "diagonal {}: the standard deviation {} of {} = {} is more than {} times its                  value: no interval drawn from it means anything (fit --save writes none this                  wide)",
+                "diagonal {}: the standard deviation {} of {} = {} is more than {} times its \
+                 value: no interval drawn from it means anything (fit --save writes none this \
+                 wide)",
                 i + 1,
                 number(sd),
                 q.name(),

@@ -62,6 +62,28 @@ pub fn number(text: &str) -> Result<f64, String> {
     })
 }
 
+/// Largest count [`count`] reads: 2^53, the last whole number every larger one is not exactly
+/// held as (a command's own cap, e.g. `mc`'s samples, is far below and named by the command).
+const MAX_COUNT: f64 = 9_007_199_254_740_992.0;
+
+/// A value parser for a count (`--samples`): a whole number, written plainly or in scientific
+/// notation (`10000`, `1e7`, `2.5e3`: a scientific tool's counts are typed so; docs/guarantees.md
+/// runs `mc --samples 1e7`). Refused, saying what a count is: a fraction (`1.5e0`), a negative
+/// number, inf, nan, text. `--samples -inf` and `1e2` said "invalid digit found in string"
+/// (issue 52's trial; tests/cli/issue52_trial.rs).
+pub fn count(text: &str) -> Result<usize, String> {
+    let shown = crate::sanitize::line(text);
+    let what = "a whole number ≥ 0, e.g. 10000 or 1e4";
+    let x = read(text).map_err(|why| format!("{}; a count is {what}", refusal(&shown, why)))?;
+    if !x.is_finite() || x < 0.0 || x.fract() != 0.0 {
+        return Err(format!("{shown} is not a count ({what})"));
+    }
+    if x > MAX_COUNT {
+        return Err(format!("{shown} is too large to count (at most 2^53)"));
+    }
+    Ok(x as usize)
+}
+
 /// Whether the mantissa of a decimal literal (before any exponent) has a digit other than 0.
 fn has_nonzero_digit(t: &str) -> bool {
     t.chars()
@@ -72,6 +94,22 @@ fn has_nonzero_digit(t: &str) -> bool {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn counts_take_whole_numbers_plain_or_scientific() {
+        assert_eq!(count("10000"), Ok(10_000));
+        assert_eq!(count("1e7"), Ok(10_000_000));
+        assert_eq!(count("2.5e3"), Ok(2_500));
+        assert_eq!(count("0"), Ok(0));
+        for bad in [
+            "1.5e0", "-1", "-inf", "inf", "nan", "1e300", "ten", "1e-400",
+        ] {
+            let e = count(bad).unwrap_err();
+            assert!(e.starts_with(&format!("{bad} ")) || e.starts_with(&format!("'{bad}'")));
+        }
+        assert!(count("1.5e0").unwrap_err().contains("whole number"));
+        assert!(count("1e300").unwrap_err().contains("too large"));
+    }
 
     #[test]
     fn zeros_underflow_and_infinities() {

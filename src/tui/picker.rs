@@ -42,10 +42,20 @@ impl<E> Picker<E> {
 }
 
 /// Every preset `run --preset` knows now: embedded ones, then user presets from `dir` (one
-/// just saved too). When the folder cannot be read, the embedded ones and the reason.
+/// just saved too). When the folder cannot be read, the embedded ones and the reason; a file
+/// of it that cannot be read or parsed is skipped (`Catalog::load`) and named with its reason.
 pub fn list_in(dir: Option<&std::path::Path>) -> (Vec<PickEntry>, Option<String>) {
     let (catalog, error) = match Catalog::load(dir, None) {
-        Ok(c) => (c, None),
+        Ok(c) => {
+            let bad: Vec<&str> = c
+                .skipped()
+                .iter()
+                .filter(|s| s.error.is_some())
+                .map(|s| s.why.as_str())
+                .collect();
+            let error = (!bad.is_empty()).then(|| format!("skipped: {}", bad.join("; ")));
+            (c, error)
+        }
         Err(e) => (
             Catalog::embedded(),
             Some(format!("user presets not read: {e}")),

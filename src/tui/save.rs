@@ -231,6 +231,12 @@ fn try_write(request: &SaveRequest, dir: Option<&Path>) -> Result<Action, String
     // the one a save would replace (a second file with the same name would break the catalog)
     let catalog = Catalog::load(Some(dir), None)
         .map_err(|e| format!("cannot read the user presets ({e}); nothing saved"))?;
+    if let Some(bad) = catalog.may_hold(&request.name) {
+        return Err(format!(
+            "cannot read the user presets ({}); nothing saved",
+            bad.why
+        ));
+    }
     let in_file = |want: &dyn Fn(&catalog::Entry) -> bool| {
         catalog
             .entries()

@@ -65,6 +65,7 @@ mod court_assumed;
 mod escaping;
 mod field_names;
 mod hostile_generators;
+mod issue52_messages;
 mod issue52_trial;
 mod numbers_as_typed;
 mod outputs_regular_only;

@@ -153,8 +153,13 @@ fn conditions_a_ball_cannot_take_are_refused_naming_the_field_and_the_ball() {
             &["invalid temperature", "superball has no temperature model"],
         ),
         (
+            // the temperature given is named, and what else is needed (issue 52's trial)
             "run --preset basketball --temperature 5",
-            &["invalid inflated-at", "basketball"],
+            &[
+                "invalid temperature: 5",
+                "basketball",
+                "give --inflated-at too",
+            ],
         ),
         (
             "drop --preset basketball --after 3d",

@@ -5,3 +5,4 @@
 
 mod architecture;
 mod docs_examples;
+mod string_literals;

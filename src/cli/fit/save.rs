@@ -23,6 +23,9 @@ fn dir() -> anyhow::Result<PathBuf> {
 fn target(name: &str) -> anyhow::Result<(PathBuf, bool)> {
     let dir = dir()?;
     let cat = Catalog::load(Some(&dir), None)?;
+    if let Some(e) = cat.may_hold(name).and_then(|bad| bad.error.clone()) {
+        return Err(e.into());
+    }
     if let Some(e) = cat.entries().iter().find(|e| e.preset.name == name)
         && let Origin::File(f) = &e.origin
     {

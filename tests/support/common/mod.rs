@@ -210,19 +210,24 @@ pub fn renamed(name: &str, k_r: &str) -> String {
 }
 
 /// A preset named `golf` + `c` (a character that prints as nothing) is refused at load, at
-/// the name's file:line:column, the character named by its code point.
+/// the name's file:line:column, the character named by its code point: asked for (by its file
+/// name), the error; otherwise skipped with that as a warning (`presets` lists the others).
 pub fn assert_name_refused_as_invisible(c: char) {
     let text = renamed(&format!("golf{c}"), "7.08e4");
     let line = text[..text.find("name = ").unwrap()].matches('\n').count() + 1;
     let home = config_home(&[("golf2.toml", &text)]);
+    let why = [
+        &format!("golf2.toml:{line}:1: name: holds an invisible character")[..],
+        &format!("U+{:04X}", c as u32),
+    ];
+    assert_bad(&bl_in(home.path(), &["run", "--preset", "golf2"]), &why);
     let o = bl_in(home.path(), &["presets"]);
-    assert_bad(
-        &o,
-        &[
-            &format!("golf2.toml:{line}:1: name: holds an invisible character"),
-            &format!("U+{:04X}", c as u32),
-        ],
-    );
+    assert_eq!(o.code, 0, "{}", o.stderr);
+    assert!(o.stdout.contains("superball"), "{}", o.stdout);
+    let warning = o.stderr.trim_end();
+    assert!(!warning.contains('\n'), "one line: {warning}");
+    assert!(warning.starts_with("bouncelab: warning: "), "{warning}");
+    assert!(why.iter().all(|w| warning.contains(w)), "{warning}");
 }
 
 /// A folder holding `NAME.toml`: the baseball preset renamed `name`, with a `[fit]` table
