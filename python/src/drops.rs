@@ -5,6 +5,7 @@ use crate::ball_args::{BallChoice, ball_pyfunction};
 use crate::interval_columns;
 use crate::{array, error, interrupt, value_error};
 use bouncelab::BallError;
+use bouncelab::analysis::statics::StaticDeflection;
 use bouncelab::api::{self, Ball};
 use bouncelab::drop::conditions::PressureLoss;
 use bouncelab::drop::deformation::{self, DeformationStandard};
@@ -141,19 +142,19 @@ fn drop_of<'py>(
         verdict.set_item("judged_at_height_m", s.release_height(dball.radius))?;
         d.set_item("standard", verdict)?;
     }
-    let mut warnings = ball.drop_warnings(&run).map_err(error)?;
-    if let Some(s) = static_standard {
-        let (verdict, static_warnings) = static_verdict(py, s, &ball)?;
-        d.set_item("standard", verdict)?;
-        warnings.extend(static_warnings);
-    }
-    // the standard's own test (its height or speed) against the record, when it is another
-    // impact than the first bounce above (as the command line's)
-    if let Some(w) = standard.and_then(|s| ball.standard_calibration_warning(s))
-        && !warnings.contains(&w)
-    {
-        warnings.push(w);
-    }
+    // the command line's warnings of a judged drop (`Ball::judged_drop_warnings`)
+    let statics = match static_standard {
+        Some(s) => {
+            let (verdict, deflection) = static_verdict(py, s, &ball)?;
+            d.set_item("standard", verdict)?;
+            Some((s, deflection))
+        }
+        None => None,
+    };
+    let statics_run = statics.as_ref().map(|(s, deflection)| (*s, deflection));
+    let mut warnings = ball
+        .judged_drop_warnings(&run, height.is_some(), standard, statics_run)
+        .map_err(error)?;
     // a ball fitted to drops in another air than this drop's says so, as the command line's
     warnings.extend(ball.drop_air_warning(run.setup.air));
     warnings.extend(off_conditions);
@@ -189,12 +190,12 @@ fn find(name: &str) -> PyResult<Judged> {
 }
 
 /// A static standard's verdict on the ball (the model's static chain, not the drop), as the
-/// command line's `standard` with its `static` report, and the statics' warnings.
+/// command line's `standard` with its `static` report, and the static deflection it judged.
 fn static_verdict<'py>(
     py: Python<'py>,
     d: &DeformationStandard,
     ball: &Ball,
-) -> PyResult<(Bound<'py, PyDict>, Vec<String>)> {
+) -> PyResult<(Bound<'py, PyDict>, StaticDeflection)> {
     let dball = ball.drop_ball();
     let s = py.detach(|| d.deflection(&dball, dball.law));
     let v = d.judge(&dball).ok_or_else(|| {
@@ -210,7 +211,7 @@ fn static_verdict<'py>(
         "static",
         crate::answer::json(py, &api::static_test_report(d, &s))?,
     )?;
-    Ok((verdict, ball.static_warnings(&s)))
+    Ok((verdict, s))
 }
 
 /// The bounces as columns under the JSON's per-bounce keys, with a fitted preset's 95 %

@@ -96,6 +96,45 @@ impl Ball {
         Ok(ball.warnings(&ball.impact()?))
     }
 
+    /// The warnings of a drop test `run` judged by a standard, the same from the command line
+    /// and Python (`bouncelab drop --standard`, `drop(standard=…)`): the first impact's
+    /// ([`Ball::drop_warnings`]) — without its impact-speed calibration warning where the
+    /// standard is judged at its own speed or load and the bounces are only shown from the
+    /// default height (`height_given` false: their speed is not the verdict's) —, a static
+    /// standard's (`statics`: its deflection's warnings and the rules' return window), then
+    /// the standard's own test against the record when it is another impact
+    /// (tests/cli/cli_static.rs).
+    pub fn judged_drop_warnings(
+        &self,
+        run: &crate::drop::DropRun,
+        height_given: bool,
+        standard: Option<&crate::drop::standards::Standard>,
+        statics: Option<(
+            &crate::drop::deformation::DeformationStandard,
+            &crate::analysis::statics::StaticDeflection,
+        )>,
+    ) -> Result<Vec<String>, BallError> {
+        let mut warnings = self.drop_warnings(run)?;
+        let radius = self.drop_ball().radius;
+        let shown_only =
+            statics.is_some() || standard.is_some_and(|s| s.release_height(radius).is_none());
+        if !height_given && shown_only {
+            warnings.retain(|w| !w.starts_with("outside calibration: impact speed"));
+        }
+        if let Some((d, s)) = statics {
+            warnings.extend(self.static_warnings(s));
+            if let Some(w) = d.return_warning(s).filter(|w| !warnings.contains(w)) {
+                warnings.push(w);
+            }
+        }
+        if let Some(w) = standard.and_then(|s| self.standard_calibration_warning(s))
+            && !warnings.contains(&w)
+        {
+            warnings.push(w);
+        }
+        Ok(warnings)
+    }
+
     /// The warning of a drop through `air` (`None`: vacuum) of a ball fitted to drop tests
     /// taken in another air (its `[measured.drops]`; with a `[fit]` table, while no override
     /// moved a fitted parameter):

@@ -154,27 +154,8 @@ pub fn run(a: &DropArgs, out: &mut dyn Write) -> anyhow::Result<()> {
             )
         })?);
     }
-    let mut warnings = b.drop_warnings(&run)?;
-    // a standard judged at its own speed or load, its bounces shown from the default height:
-    // their speed is not the verdict's (the standard's own test is warned below, issue 52)
-    let shown_only =
-        static_standard.is_some() || standard.is_some_and(|s| s.release_height(radius).is_none());
-    if a.height.is_none() && shown_only {
-        warnings.retain(|w| !w.starts_with("outside calibration: impact speed"));
-    }
-    if let Some((d, s)) = &statics {
-        warnings.extend(b.static_warnings(s));
-        if let Some(w) = d.return_warning(s).filter(|w| !warnings.contains(w)) {
-            warnings.push(w);
-        }
-    }
-    // the standard's own test (its height or speed) against the record, when it is another
-    // impact than the first bounce above
-    if let Some(w) = standard.and_then(|s| b.standard_calibration_warning(s))
-        && !warnings.contains(&w)
-    {
-        warnings.push(w);
-    }
+    let statics_run = statics.as_ref().map(|(d, s)| (*d, s));
+    let mut warnings = b.judged_drop_warnings(&run, a.height.is_some(), standard, statics_run)?;
     warnings.extend(standard.and_then(|s| surface.off_standard_warning(s.name, s.surface)));
     warnings.extend(b.drop_air_warning(air));
     warnings.extend(off_conditions);

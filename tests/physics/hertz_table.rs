@@ -348,7 +348,10 @@ fn the_table_answers_inside_its_kept_patches_only() {
     ] {
         assert!(table::hertz_hat(l, z).is_none(), "{l} {z}");
         let n = ball(l, z, 1.0);
-        assert_eq!(table::summary(&n, ContactLaw::Hertz), steps(&n, ContactLaw::Hertz));
+        assert_eq!(
+            table::summary(&n, ContactLaw::Hertz),
+            steps(&n, ContactLaw::Hertz)
+        );
     }
     let (_, patches) = table::stored().unwrap();
     if let Some(out) = patches
