@@ -99,8 +99,8 @@ impl MapReach {
 
     /// How many cells were run again by the adaptive solver, some 0.35 ms each: those whose
     /// centre the Taylor steps could not read (`solver::taylor::peak_displacement`: a stiff
-    /// phase, the linear law). Every undecided cell was, before (issue 54 item 10: a preset's
-    /// Hertz map 4–23 × slower than BENCHMARKS.md recorded).
+    /// phase, the linear law); the others are decided by the bounds or read by the Taylor
+    /// steps (issue 54 item 10).
     pub fn slow(&self) -> usize {
         self.tally.slow
     }

@@ -114,8 +114,8 @@ impl From<&PressureLoss> for PressureLossEntry {
 
 /// Why `drop --standard name` (and Python's `drop(standard=name)`) takes no standard `name`:
 /// a bat or court standard is named with the command that judges it (`bat`, `court`; both
-/// listed by `bouncelab standards`, yet refused as "unknown" before: issue 52's trial), any
-/// other name is unknown, listing every one `drop` takes.
+/// are listed by `bouncelab standards`), any other name is unknown, listing every one `drop`
+/// takes.
 pub fn not_a_drop_standard(name: &str) -> String {
     let bat = BAT_STANDARDS.iter().find(|s| s.name == name);
     let bat = bat.map(|s| ("bat", s.title));

@@ -259,7 +259,7 @@ mod tests {
 
     /// A contact-only trace (a half-sine filling every row, as `run --history` writes one) with
     /// Gaussian noise of 3 N: the noise read is 3 N to its estimate's error (about 5 % at
-    /// 400 rows), not the flanks' spread (tens of newtons before the second differences).
+    /// 400 rows), not the flanks' spread (tens of newtons: the pulse's edges, not its noise).
     #[test]
     fn a_contact_only_trace_reads_its_noise() {
         let mut state = 52u64;

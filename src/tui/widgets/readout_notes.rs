@@ -11,8 +11,8 @@ use crate::tui::widgets::warning::warning_lines;
 use ratatui::text::{Line, Span};
 
 /// Why the preset's measured values are not compared, if they are not: taken at another
-/// speed, or against a wall while the run is a pair's (issue 51 item 5: a pair's COR was
-/// compared with a wall's measurement).
+/// speed, or against a wall while the run is a pair's (a pair's COR is no wall's
+/// measurement: issue 51 item 5).
 fn not_compared(preset: &Preset, setting: &Setting) -> Option<&'static str> {
     if setting.target() != crate::target::Target::wall() {
         Some(": a wall's, not compared with the pair")
