@@ -4,6 +4,9 @@
 //! Run: `cargo bench --bench fit` (the SciPy side needs python3 with numpy and scipy).
 
 mod common;
+// the trace read between the solver's samples, as the fit tests read it
+#[path = "../tests/support/fit_common/force.rs"]
+mod force;
 
 use bouncelab::ContactLaw;
 use bouncelab::analysis::fit::{FitData, Param, fit};
@@ -69,14 +72,7 @@ fn dense_csv(rows: usize, dt: f64) -> String {
     let mut text = String::from("time_s,force_N\n");
     for i in 0..rows {
         let t = -1.7e-3 + i as f64 * dt;
-        let s = t - 0.8123e-3;
-        let f = if s <= 0.0 || s >= tf {
-            0.0
-        } else {
-            let k = ((s / h.t[1]) as usize).min(h.t.len() - 2);
-            let w = (s - h.t[k]) / (h.t[k + 1] - h.t[k]);
-            h.force[k] * (1.0 - w) + h.force[k + 1] * w
-        };
+        let f = force::force_at(h, tf, t - 0.8123e-3);
         text.push_str(&format!("{t:e},{:e}\n", f + 0.3 + normal()));
     }
     text

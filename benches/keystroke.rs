@@ -56,15 +56,8 @@ struct Case {
 
 impl fmt::Display for Case {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        let view = match self.view {
-            View::Impact => "impact",
-            View::Sweeps => "sweeps",
-            View::Models => "models",
-            View::Map => "map",
-            View::Drop => "drop",
-            View::Oblique => "oblique",
-            View::Flight => "flight",
-        };
+        // the view's own name, as a session file keeps it
+        let view = self.view.name();
         let key = match self.param {
             Param::Lambda => "l",
             Param::Zeta => "z",

@@ -35,6 +35,27 @@ pub struct TangentialArgs {
     pub tangential_damping: Option<f64>,
 }
 
+/// What `oblique` and `shot` share, word for word: the surface a bounce is on, its μ and the
+/// tangential model. (`court` and `mc --shot` word `--friction` their own way, so declare
+/// their own and call [`surface_of`].)
+#[derive(Debug, Clone, Args)]
+pub struct BounceSurfaceArgs {
+    /// Coulomb friction coefficient μ ≥ 0 [default: the surface's; required when it has none]
+    #[arg(long, value_name = "MU", value_parser = super::number::number, allow_hyphen_values = true)]
+    pub friction: Option<f64>,
+    #[command(flatten)]
+    pub tangential: TangentialArgs,
+    #[command(flatten)]
+    pub surface: SurfaceArgs,
+}
+
+impl BounceSurfaceArgs {
+    /// The surface with the tangential flags over its own, and its μ ([`surface_of`]).
+    pub fn resolve(&self) -> anyhow::Result<(SurfaceUsed, f64)> {
+        surface_of(&self.surface, self.friction, &self.tangential)
+    }
+}
+
 #[derive(Debug, Clone, Args)]
 pub struct ObliqueArgs {
     #[command(flatten)]
@@ -48,13 +69,8 @@ pub struct ObliqueArgs {
     /// Incoming spin ω, rad/s (> 0 topspin for a ball moving in +x)
     #[arg(long, value_name = "RAD_PER_S", default_value_t = 0.0, value_parser = super::number::number, allow_hyphen_values = true)]
     pub spin: f64,
-    /// Coulomb friction coefficient μ ≥ 0 [default: the surface's; required when it has none]
-    #[arg(long, value_name = "MU", value_parser = super::number::number, allow_hyphen_values = true)]
-    pub friction: Option<f64>,
     #[command(flatten)]
-    pub tangential: TangentialArgs,
-    #[command(flatten)]
-    pub surface: SurfaceArgs,
+    pub bounce: BounceSurfaceArgs,
     /// Output format
     #[arg(long, value_enum, default_value = "text")]
     pub format: ObliqueFormat,
@@ -89,8 +105,8 @@ struct Report<'a> {
     surface: SurfaceUsed,
 }
 
-/// The surface of `oblique` and `court`: `--surface*` with the tangential flags over the
-/// surface's own; μ must come from one of them.
+/// The surface of a bounce (`oblique`, `shot`, `court`, `mc --shot`): `--surface*` with the
+/// tangential flags over the surface's own; μ must come from one of them.
 pub fn surface_of(
     surface: &SurfaceArgs,
     friction: Option<f64>,
@@ -113,14 +129,14 @@ pub fn surface_of(
 pub fn run(a: &ObliqueArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     super::ball::check_overrides(&a.ball.changes.set, None, None)?;
     let ball = a.ball.resolve(a.v0)?;
-    let (surface, friction) = surface_of(&a.surface, a.friction, &a.tangential)?;
+    let (surface, friction) = a.bounce.resolve()?;
     let spec = ObliqueSpec {
         v: a.v0,
         angle_deg: a.angle,
         spin: a.spin,
         friction,
         tangential_stiffness: surface.tangential_stiffness,
-        inertia_factor: a.tangential.inertia_factor,
+        inertia_factor: a.bounce.tangential.inertia_factor,
     };
     // the library reads 0 samples as "no history"; `--history` asks for one, so 0 is refused
     // as 1 is (2 … MAX_SAMPLES, `run --history`'s range)
@@ -135,6 +151,7 @@ pub fn run(a: &ObliqueArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         .or(ball.tangential_stiffness())
         .unwrap_or(f64::NAN);
     let kappa = a
+        .bounce
         .tangential
         .inertia_factor
         .unwrap_or_else(|| ball.inertia_factor());

@@ -3,11 +3,11 @@
 //! or CSV, and the side view as SVG.
 
 use super::ball::BallArgs;
-use super::oblique::TangentialArgs;
+use super::oblique::BounceSurfaceArgs;
 use super::output::{self, csv_row, given, num, table};
 use super::outputs::{check as check_writable, report_then_commit};
 use super::shot_after::{flag_named, past_bounce};
-use super::surface::{SurfaceArgs, SurfaceUsed};
+use super::surface::SurfaceUsed;
 use crate::api::{Ball, BallHeader, ShotReport, ShotSpec};
 use crate::atomic::Outputs;
 use crate::figure::svg;
@@ -43,13 +43,8 @@ pub struct ShotArgs {
     /// Spin ω, rad/s (> 0 topspin, which pushes a ball moving forward down)
     #[arg(long, value_name = "RAD_PER_S", default_value_t = 0.0, value_parser = super::number::number, allow_hyphen_values = true)]
     pub spin: f64,
-    /// Coulomb friction coefficient μ ≥ 0 [default: the surface's; required when it has none]
-    #[arg(long, value_name = "MU", value_parser = super::number::number, allow_hyphen_values = true)]
-    pub friction: Option<f64>,
     #[command(flatten)]
-    pub tangential: TangentialArgs,
-    #[command(flatten)]
-    pub surface: SurfaceArgs,
+    pub bounce: BounceSurfaceArgs,
     /// Bounces before the shot may end on the surface (0 … 100)
     #[arg(long, value_name = "N", default_value_t = 1)]
     pub bounces: usize,
@@ -111,7 +106,7 @@ impl ShotArgs {
             },
             friction,
             tangential_stiffness: surface.tangential_stiffness,
-            inertia_factor: self.tangential.inertia_factor,
+            inertia_factor: self.bounce.tangential.inertia_factor,
             tangential_damping: surface.tangential_damping,
             air_density: self.air_density,
             drag_coefficient: self.drag_coefficient,
@@ -148,7 +143,7 @@ pub fn run(a: &ShotArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         return Err(crate::api::BallError::Samples(0).into());
     }
     let ball = a.ball.resolve(None)?;
-    let (surface, friction) = super::oblique::surface_of(&a.surface, a.friction, &a.tangential)?;
+    let (surface, friction) = a.bounce.resolve()?;
     let mut spec = a.spec(&surface, friction);
     if let Some(d) = a.after_bounce {
         spec.ends.distance = Some(past_bounce(&ball, &spec, d)?);

@@ -1,5 +1,6 @@
 //! A solver history read between its samples, for the synthetic force traces of the fit tests
-//! (tests/support/fit_common, tests/fit_memory.rs, tests/cli/calibration.rs).
+//! (tests/support/fit_common, tests/fit_memory.rs, tests/cli/calibration.rs) and of
+//! benches/fit.rs.
 
 use bouncelab::solver::History;
 
