@@ -7,37 +7,18 @@ mod common;
 // the trace read between the solver's samples, as the fit tests read it
 #[path = "../tests/support/fit_common/force.rs"]
 mod force;
+// the trace's ball and the fit's start, as tests/fit_memory.rs fits them
+#[path = "../tests/support/fit_common/bench_ball.rs"]
+mod bench_ball;
 
+use bench_ball::{start, truth};
 use bouncelab::ContactLaw;
 use bouncelab::analysis::fit::{FitData, Param, fit};
 use bouncelab::measured::Trace;
-use bouncelab::{ImpactParams, SolveOptions, simulate};
+use bouncelab::{SolveOptions, simulate};
 use common::{median, quick};
 use std::process::Command;
 use std::time::Instant;
-
-/// The trace's ball (not a preset's): m = 50 g, v0 = 2 m/s, K_p = 8e4, c = 60, K_r = 1.2e5.
-fn truth() -> ImpactParams {
-    ImpactParams {
-        mass: 0.05,
-        k_p: 8e4,
-        damping: 60.0,
-        k_r: 1.2e5,
-        z_p: 1.0,
-        k_h: ImpactParams::k_h_matching(8e4, 1.0),
-        v0: 2.0,
-    }
-}
-
-/// The fit's start: the truth's m and v0, K_p, c and K_r far from it.
-fn start() -> ImpactParams {
-    ImpactParams {
-        k_p: 2e5,
-        damping: 24.0,
-        k_r: 3.6e4,
-        ..truth()
-    }
-}
 
 /// The parameters the fit frees.
 const FREE: [Param; 3] = [Param::KP, Param::C, Param::KR];

@@ -5,10 +5,14 @@
 
 #[path = "support/fit_common/force.rs"]
 mod force;
+// the ball of benches/fit.rs and its fit's start
+#[path = "support/fit_common/bench_ball.rs"]
+mod bench_ball;
 
+use bench_ball::{start, truth};
 use bouncelab::analysis::fit::{FitData, Param, fit};
 use bouncelab::measured::Trace;
-use bouncelab::{ContactLaw, ImpactParams, SolveOptions, simulate};
+use bouncelab::{ContactLaw, SolveOptions, simulate};
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::sync::atomic::{AtomicUsize, Ordering};
 
@@ -53,19 +57,6 @@ unsafe impl GlobalAlloc for Counting {
 #[global_allocator]
 static COUNTING: Counting = Counting;
 
-/// The ball of benches/fit.rs: m = 50 g, v0 = 2 m/s, K_p = 8e4, c = 60, K_r = 1.2e5.
-fn truth() -> ImpactParams {
-    ImpactParams {
-        mass: 0.05,
-        k_p: 8e4,
-        damping: 60.0,
-        k_r: 1.2e5,
-        z_p: 1.0,
-        k_h: ImpactParams::k_h_matching(8e4, 1.0),
-        v0: 2.0,
-    }
-}
-
 /// benches/fit.rs's dense trace as CSV text: `rows` samples over 10 ms, contact from
 /// 0.8123 ms after −1.7 ms, baseline 0.3 N, noise of ±1 N from a fixed sequence.
 fn csv(rows: usize) -> String {
@@ -105,12 +96,7 @@ fn a_dense_trace_is_read_and_fitted_in_at_most_55_bytes_a_row() {
     PEAK.store(before, Ordering::SeqCst);
     let trace = Trace::parse(&text).unwrap();
     let read = PEAK.load(Ordering::SeqCst) - before;
-    let start = ImpactParams {
-        k_p: 2e5,
-        damping: 24.0,
-        k_r: 3.6e4,
-        ..truth()
-    };
+    let start = start();
     let free = [Param::KP, Param::C, Param::KR];
     let f = fit(&start, ContactLaw::Linear, FitData::Trace(&trace), &free).unwrap();
     let all = PEAK.load(Ordering::SeqCst) - before;
