@@ -2,9 +2,9 @@
 //! impact of the ball at 30 m/s and 16° without spin (docs/oblique.md §6).
 
 use super::ball::BallArgs;
-use super::oblique::TangentialArgs;
+use super::oblique::BounceSurfaceArgs;
 use super::output::{self, given, human, table};
-use super::surface::{SurfaceArgs, SurfaceUsed};
+use super::surface::SurfaceUsed;
 use crate::api::{BallHeader, CourtCalibration, CourtPace};
 use crate::oblique::court::ITF_COURT_PACE;
 use clap::{Args, ValueEnum};
@@ -18,18 +18,20 @@ pub enum CourtFormat {
 }
 
 #[derive(Debug, Clone, Args)]
+#[command(mut_arg("friction", |a| {
+    a.help(
+        "The surface's Coulomb friction coefficient μ ≥ 0 [default: the surface's; required \
+         when it has none]",
+    )
+}))]
 pub struct CourtArgs {
     /// The ball [default: tennis, the ball of the ITF court pace test]
     #[command(flatten)]
     pub ball: BallArgs,
-    /// The surface's Coulomb friction coefficient μ ≥ 0 [default: the surface's; required
-    /// when it has none]
-    #[arg(long, value_name = "MU", value_parser = super::number::number, allow_hyphen_values = true)]
-    pub friction: Option<f64>,
+    /// `oblique`'s --friction (its help names the court's surface: the `mut_arg` above), the
+    /// tangential flags and --surface*
     #[command(flatten)]
-    pub tangential: TangentialArgs,
-    #[command(flatten)]
-    pub surface: SurfaceArgs,
+    pub bounce: BounceSurfaceArgs,
     /// Calibrate the court to this measured vertical COR e at the ITF test: c_s solved, K_s
     /// held (--surface-stiffness, else the ball's K_p: an assumption); with --friction, the
     /// measured (μ, e) pair
@@ -89,12 +91,13 @@ pub fn run(a: &CourtArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     let friction = measured
         .as_ref()
         .map(|m| m.apparent_friction)
-        .or(a.friction);
-    let (mut surface, friction) = super::oblique::surface_of(&a.surface, friction, &a.tangential)?;
+        .or(a.bounce.friction);
+    let (mut surface, friction) =
+        super::oblique::surface_of(&a.bounce.surface, friction, &a.bounce.tangential)?;
     let target_cor = measured.as_ref().map(|m| m.cor_normal).or(a.surface_cor);
     let calibration = match target_cor {
         Some(e) => {
-            let c = ball.calibrate_court(e, a.surface.surface_stiffness, surface.mass)?;
+            let c = ball.calibrate_court(e, a.bounce.surface.surface_stiffness, surface.mass)?;
             let how = match a.fit.as_deref() {
                 Some(p) => format!("court --fit {}", p.display()),
                 None => "court --surface-cor".to_string(),
@@ -105,7 +108,7 @@ pub fn run(a: &CourtArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         None => None,
     };
     let (pace, computed_on) =
-        ball.court_pace_on_surface(friction, a.tangential.inertia_factor, &surface)?;
+        ball.court_pace_on_surface(friction, a.bounce.tangential.inertia_factor, &surface)?;
     match a.format {
         CourtFormat::Json => output::json_stated(
             out,

@@ -20,7 +20,7 @@ pub enum ObliqueFormat {
     Csv,
 }
 
-/// What `oblique` and `court` share: the tangential model's options.
+/// The tangential model's options (in [`BounceSurfaceArgs`], and `mc --shot`'s).
 #[derive(Debug, Clone, Args)]
 pub struct TangentialArgs {
     /// Tangential stiffness K_t, N/m [default: Mindlin's 2(1 − ν)/(2 − ν) K_p, ν the preset's]
@@ -35,9 +35,9 @@ pub struct TangentialArgs {
     pub tangential_damping: Option<f64>,
 }
 
-/// What `oblique` and `shot` share, word for word: the surface a bounce is on, its μ and the
-/// tangential model. (`court` and `mc --shot` word `--friction` their own way, so declare
-/// their own and call [`surface_of`].)
+/// What `oblique`, `shot` and `court` share: the surface a bounce is on, its μ and the
+/// tangential model (`court` words --friction's help its own way, by `mut_arg`). `mc --shot`
+/// declares its own, each flag optional and `requires = "shot"`, and calls [`surface_of`].
 #[derive(Debug, Clone, Args)]
 pub struct BounceSurfaceArgs {
     /// Coulomb friction coefficient μ ≥ 0 [default: the surface's; required when it has none]
