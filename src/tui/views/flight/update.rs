@@ -30,12 +30,7 @@ impl App {
     /// The flight view's keys.
     pub(in crate::tui) fn flight_action(&mut self, key: FlightKey) {
         if key == FlightKey::Toggle {
-            self.view = if self.view == View::Flight {
-                View::Impact
-            } else {
-                View::Flight
-            };
-            self.crosshair = None;
+            self.show_view(self.view.toggled(View::Flight));
             self.refresh_flight();
             return;
         }

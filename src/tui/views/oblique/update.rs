@@ -106,12 +106,7 @@ impl App {
     /// The oblique view's keys.
     pub(in crate::tui) fn oblique_action(&mut self, key: ObliqueKey) {
         if key == ObliqueKey::Toggle {
-            self.view = if self.view == View::Oblique {
-                View::Impact
-            } else {
-                View::Oblique
-            };
-            self.crosshair = None;
+            self.show_view(self.view.toggled(View::Oblique));
             return;
         }
         if self.view != View::Oblique {
