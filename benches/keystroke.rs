@@ -56,15 +56,7 @@ struct Case {
 
 impl fmt::Display for Case {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        let view = match self.view {
-            View::Impact => "impact",
-            View::Sweeps => "sweeps",
-            View::Models => "models",
-            View::Map => "map",
-            View::Drop => "drop",
-            View::Oblique => "oblique",
-            View::Flight => "flight",
-        };
+        let view = self.view.name();
         let key = match self.param {
             Param::Lambda => "l",
             Param::Zeta => "z",
