@@ -104,7 +104,12 @@ pub fn request(scene: &Scene, charts: &[Chart]) -> Result<ExportRequest, String>
             None => Ok((chart.file_name(), explorer::figure(chart, scene))),
         })
         .collect::<Result<Vec<_>, String>>()?;
-    Ok(ExportRequest::of(&scene.ball.name, charts, None, Vec::new()))
+    Ok(ExportRequest::of(
+        &scene.ball.name,
+        charts,
+        None,
+        Vec::new(),
+    ))
 }
 
 /// A view's `answer` as its export takes it, or why there is none: "export failed: no

@@ -85,7 +85,10 @@ pub fn readout_columns(area: Rect, buf: &mut Buffer, columns: [Constraint; 2]) -
 
 /// `lines` broken between fields to `area`'s width and wrapped there, without a border.
 pub fn fitted(lines: Vec<Line<'static>>, area: Rect, buf: &mut Buffer) {
-    Paragraph::new(crate::tui::format::fit_lines(lines, usize::from(area.width)))
-        .wrap(Wrap { trim: true })
-        .render(area, buf);
+    Paragraph::new(crate::tui::format::fit_lines(
+        lines,
+        usize::from(area.width),
+    ))
+    .wrap(Wrap { trim: true })
+    .render(area, buf);
 }

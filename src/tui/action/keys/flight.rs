@@ -3,8 +3,8 @@
 //! elevation, spin and μ directly as they step θ, ω, μ in the oblique view (upper case: down).
 
 use super::super::{Action, FlightKey};
-use crate::tui::views::flight::param::FlightParam;
 use super::{lettered, stepping};
+use crate::tui::views::flight::param::FlightParam;
 use ratatui::crossterm::event::KeyEvent;
 
 pub fn keys(key: KeyEvent) -> Option<Action> {

@@ -4,8 +4,8 @@
 //! the map's quantity.
 
 use super::super::{Action, MAP_LEAP, ObliqueKey};
-use crate::tui::views::oblique::param::ObliqueParam;
 use super::{lettered, stepping};
+use crate::tui::views::oblique::param::ObliqueParam;
 use ratatui::crossterm::event::{KeyCode, KeyEvent};
 
 /// The keys of both pages.
