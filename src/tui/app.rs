@@ -232,13 +232,12 @@ impl App {
             Action::Resize(w, h) => self.resize(w, h),
             Action::HelpScroll(how) => self.scroll_help(how),
             Action::NextView | Action::PrevView => {
-                let next = action == Action::NextView;
-                self.view = if next {
+                let next = if action == Action::NextView {
                     self.view.next()
                 } else {
                     self.view.prev()
                 };
-                self.crosshair = None;
+                self.show_view(next);
             }
             Action::Crosshair
             | Action::CrosshairNext

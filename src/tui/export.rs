@@ -41,6 +41,22 @@ pub struct ExportRequest {
 }
 
 impl ExportRequest {
+    /// The export of `ball`'s `charts` (and the map view's `map`), their CSV files headed by
+    /// `header`; the files named after the ball ([`file_stem_part`]).
+    pub fn of(
+        ball: &str,
+        charts: Vec<(&'static str, Figure)>,
+        map: Option<crate::tui::views::map::export::MapExport>,
+        header: Vec<String>,
+    ) -> ExportRequest {
+        ExportRequest {
+            ball: file_stem_part(ball),
+            charts,
+            map,
+            header,
+        }
+    }
+
     /// The request with `lines` (each starting with `#`) heading its CSV files.
     pub fn with_header(mut self, lines: Vec<String>) -> ExportRequest {
         self.header = lines;
@@ -88,12 +104,22 @@ pub fn request(scene: &Scene, charts: &[Chart]) -> Result<ExportRequest, String>
             None => Ok((chart.file_name(), explorer::figure(chart, scene))),
         })
         .collect::<Result<Vec<_>, String>>()?;
-    Ok(ExportRequest {
-        ball: file_stem_part(&scene.ball.name),
+    Ok(ExportRequest::of(
+        &scene.ball.name,
         charts,
-        map: None,
-        header: Vec::new(),
-    })
+        None,
+        Vec::new(),
+    ))
+}
+
+/// A view's `answer` as its export takes it, or why there is none: "export failed: no
+/// `what` (why)" when it could not be computed, "export failed: no `what` yet" before it is.
+pub fn computed<'a, T>(answer: &'a Option<Result<T, String>>, what: &str) -> Result<&'a T, String> {
+    match answer {
+        Some(Ok(a)) => Ok(a),
+        Some(Err(e)) => Err(format!("export failed: no {what} ({e})")),
+        None => Err(format!("export failed: no {what} yet")),
+    }
 }
 
 /// The export directory: `$BOUNCELAB_EXPORT_DIR` when set and not empty, else `.`.

@@ -40,15 +40,8 @@ pub fn body(area: Rect, side: bool, compact: u16, message: u16) -> Option<Body> 
     .areas(area);
     let side_panel =
         (area.width >= SIDE_PANEL_WIDTH && body.height >= readout::PANEL_HEIGHT) || side;
-    let (charts, readout) = if side_panel {
-        let w = (area.width * 3 / 10).clamp(32, 40);
-        let [c, r] = Layout::horizontal([Constraint::Fill(1), Constraint::Length(w)]).areas(body);
-        (c, r)
-    } else {
-        let [c, r] =
-            Layout::vertical([Constraint::Fill(1), Constraint::Length(compact)]).areas(body);
-        (c, r)
-    };
+    let w = (area.width * 3 / 10).clamp(32, 40);
+    let (charts, readout) = charts_and_readout(body, side_panel, w, compact);
     Some(Body {
         header,
         message,
@@ -57,4 +50,16 @@ pub fn body(area: Rect, side: bool, compact: u16, message: u16) -> Option<Body> 
         side_panel,
         charts,
     })
+}
+
+/// `area` split into the charts and their readout: a column `width` wide on the right when
+/// `beside`, else a strip `rows` high below — the screen's body, and the drop and flight
+/// views within it.
+pub fn charts_and_readout(area: Rect, beside: bool, width: u16, rows: u16) -> (Rect, Rect) {
+    let [charts, readout] = if beside {
+        Layout::horizontal([Constraint::Fill(1), Constraint::Length(width)]).areas(area)
+    } else {
+        Layout::vertical([Constraint::Fill(1), Constraint::Length(rows)]).areas(area)
+    };
+    (charts, readout)
 }

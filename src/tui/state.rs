@@ -76,6 +76,12 @@ impl View {
         }
     }
 
+    /// The view a view's own key (`d`, `i`, `h`) leads to from this one: into `own`, or out
+    /// of it back to the impact view.
+    pub fn toggled(self, own: View) -> View {
+        if self == own { View::Impact } else { own }
+    }
+
     /// The next view of the cycle (from the drop view: the impact view).
     pub fn next(self) -> View {
         match View::CYCLE.iter().position(|&v| v == self) {

@@ -106,6 +106,42 @@ fn arrow(key: KeyEvent, leap: i32) -> Option<(i32, i32)> {
     }
 }
 
+/// The arrows of a view that steps values of its own (the impact view's λ, ζ, v0, the
+/// oblique view's charts, the flight view): ↑ ↓ `step` the selected one, `up` or not (Shift,
+/// PgUp/PgDn: `coarse`), → ← `select` the next one or the previous; `None` for other keys.
+fn stepping<K>(
+    key: KeyEvent,
+    step: impl Fn(bool, bool) -> K,
+    select: impl Fn(bool) -> K,
+) -> Option<K> {
+    let shift = key.modifiers.contains(KeyModifiers::SHIFT);
+    match key.code {
+        KeyCode::Up => Some(step(true, shift)),
+        KeyCode::Down => Some(step(false, shift)),
+        KeyCode::PageUp => Some(step(true, true)),
+        KeyCode::PageDown => Some(step(false, true)),
+        KeyCode::Right => Some(select(true)),
+        KeyCode::Left => Some(select(false)),
+        _ => None,
+    }
+}
+
+/// The letters that step a view's values directly: each of `letters`' in lower case steps
+/// its value up, in upper case down (`l` `z` `v` λ, ζ, v0; `a` `w` `k` θ or the elevation,
+/// ω, μ); the value and whether up, or `None` for other keys.
+fn lettered<P: Copy>(code: KeyCode, letters: [(char, P); 3]) -> Option<(P, bool)> {
+    let KeyCode::Char(c) = code else { return None };
+    letters.into_iter().find_map(|(letter, param)| {
+        if c == letter {
+            Some((param, true))
+        } else if c == letter.to_ascii_uppercase() {
+            Some((param, false))
+        } else {
+            None
+        }
+    })
+}
+
 /// The map view's own keys: arrows move the cursor a cell (Shift: [`MAP_LEAP`] cells), `n`
 /// the quantity, `t` the targets.
 fn map(key: KeyEvent) -> Option<Action> {
@@ -144,30 +180,35 @@ use modal::{crosshair, form};
 pub const MAP_LEAP: i32 = 8;
 
 fn normal(key: KeyEvent) -> Option<Action> {
-    let shift = key.modifiers.contains(KeyModifiers::SHIFT);
-    let step = |param, dir| {
-        Some(Action::Step {
+    let dir = |up| if up { Dir::Up } else { Dir::Down };
+    let letters = [('l', Param::Lambda), ('z', Param::Zeta), ('v', Param::V0)];
+    if let Some((param, up)) = lettered(key.code, letters) {
+        return Some(Action::Step {
             param,
-            dir,
+            dir: dir(up),
             coarse: false,
-        })
-    };
-    let selected = |dir, coarse| Some(Action::StepSelected { dir, coarse });
+        });
+    }
+    let arrows = stepping(
+        key,
+        |up, coarse| Action::StepSelected {
+            dir: dir(up),
+            coarse,
+        },
+        |next| {
+            if next {
+                Action::SelectNext
+            } else {
+                Action::SelectPrev
+            }
+        },
+    );
+    if arrows.is_some() {
+        return arrows;
+    }
     match key.code {
         KeyCode::Char('q') => Some(Action::Quit),
         KeyCode::Esc => Some(Action::Dismiss),
-        KeyCode::Char('l') => step(Param::Lambda, Dir::Up),
-        KeyCode::Char('L') => step(Param::Lambda, Dir::Down),
-        KeyCode::Char('z') => step(Param::Zeta, Dir::Up),
-        KeyCode::Char('Z') => step(Param::Zeta, Dir::Down),
-        KeyCode::Char('v') => step(Param::V0, Dir::Up),
-        KeyCode::Char('V') => step(Param::V0, Dir::Down),
-        KeyCode::Up => selected(Dir::Up, shift),
-        KeyCode::Down => selected(Dir::Down, shift),
-        KeyCode::PageUp => selected(Dir::Up, true),
-        KeyCode::PageDown => selected(Dir::Down, true),
-        KeyCode::Right => Some(Action::SelectNext),
-        KeyCode::Left => Some(Action::SelectPrev),
         KeyCode::Char('[') => Some(Action::SetCoarse(false)),
         KeyCode::Char(']') => Some(Action::SetCoarse(true)),
         KeyCode::Char('=') | KeyCode::Enter => Some(Action::OpenInput),

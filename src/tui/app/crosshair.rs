@@ -6,6 +6,13 @@ use crate::tui::action::Action;
 use crate::tui::crosshair::{self, Crosshair};
 
 impl App {
+    /// Show `view`: a crosshair belongs to the charts it was put on, so it goes (Tab,
+    /// Shift+Tab and the oblique and flight views' own keys).
+    pub(in crate::tui) fn show_view(&mut self, view: View) {
+        self.view = view;
+        self.crosshair = None;
+    }
+
     pub(super) fn crosshair_action(&mut self, action: Action) {
         match action {
             Action::Crosshair if self.crosshair.is_some() => self.crosshair_chart(1),

@@ -22,7 +22,7 @@ pub mod warning;
 
 use crate::tui::theme::Theme;
 use ratatui::buffer::Buffer;
-use ratatui::layout::Rect;
+use ratatui::layout::{Constraint, Layout, Rect};
 use ratatui::text::Line;
 use ratatui::widgets::{Block, Clear, Paragraph, Widget, Wrap};
 
@@ -62,4 +62,33 @@ pub fn dialog(
         .wrap(Wrap { trim: false })
         .block(Block::bordered().title(Line::styled(title, theme.title())))
         .render(popup, buf);
+}
+
+/// A readout in one bordered column (wide screens): `lines` broken between fields, never
+/// inside a value (`+0.225` and its `m` on two lines), to the width inside the border.
+pub fn readout_column(lines: Vec<Line<'static>>, area: Rect, buf: &mut Buffer) {
+    let lines = crate::tui::format::fit_lines(lines, usize::from(area.width.saturating_sub(2)));
+    Paragraph::new(lines)
+        .wrap(Wrap { trim: true })
+        .block(Block::bordered())
+        .render(area, buf);
+}
+
+/// A readout under the charts (narrow screens): its border drawn on `area`, and the two
+/// columns inside it, as wide as `columns` says, for [`fitted`] lines.
+pub fn readout_columns(area: Rect, buf: &mut Buffer, columns: [Constraint; 2]) -> [Rect; 2] {
+    let block = Block::bordered();
+    let inner = block.inner(area);
+    block.render(area, buf);
+    Layout::horizontal(columns).areas(inner)
+}
+
+/// `lines` broken between fields to `area`'s width and wrapped there, without a border.
+pub fn fitted(lines: Vec<Line<'static>>, area: Rect, buf: &mut Buffer) {
+    Paragraph::new(crate::tui::format::fit_lines(
+        lines,
+        usize::from(area.width),
+    ))
+    .wrap(Wrap { trim: true })
+    .render(area, buf);
 }

@@ -22,6 +22,17 @@ impl Readout<'_> {
         ]
     }
 
+    /// "K_p … N/m  K_r … N/m": the setting's two stiffnesses, in the readout's format.
+    fn stiffnesses(&self) -> String {
+        let p = &self.setting.params;
+        format!("K_p {} N/m  K_r {} N/m", value(p.k_p), value(p.k_r))
+    }
+
+    /// "c … kg/s": the setting's damping, in the readout's format.
+    fn damping(&self) -> String {
+        format!("c {} kg/s", value(self.setting.params.damping))
+    }
+
     /// Short lines, one or two quantities each, for a pane beside a chart (80×24).
     pub(super) fn narrow(&self, inner_w: usize) -> Vec<Line<'static>> {
         let s = self.setting;
@@ -33,14 +44,10 @@ impl Readout<'_> {
                 v0,
                 Span::raw(format!("  {} law", s.law)),
             ]),
+            Line::raw(format!(" {}", self.stiffnesses())),
             Line::raw(format!(
-                " K_p {} N/m  K_r {} N/m",
-                value(s.params.k_p),
-                value(s.params.k_r)
-            )),
-            Line::raw(format!(
-                " c {} kg/s  {}",
-                value(s.params.damping),
+                " {}  {}",
+                self.damping(),
                 if self.coarse { "[coarse]" } else { "[fine]" }
             )),
         ];
@@ -94,12 +101,7 @@ impl Readout<'_> {
                 v0,
                 Span::raw(format!("  {}", s.law)),
             ]),
-            Line::raw(format!(
-                " K_p {} N/m  K_r {} N/m  c {} kg/s",
-                value(s.params.k_p),
-                value(s.params.k_r),
-                value(s.params.damping)
-            )),
+            Line::raw(format!(" {}  {}", self.stiffnesses(), self.damping())),
         ];
         let rows = results(self.preset, self.run, self.setting);
         let fmt = compact_row;

@@ -4,25 +4,25 @@
 //! the map's quantity.
 
 use super::super::{Action, MAP_LEAP, ObliqueKey};
+use super::{lettered, stepping};
 use crate::tui::views::oblique::param::ObliqueParam;
-use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
+use ratatui::crossterm::event::{KeyCode, KeyEvent};
 
 /// The keys of both pages.
 fn shared(key: KeyEvent) -> Option<ObliqueKey> {
-    let step = |param, up| {
-        Some(ObliqueKey::Step {
+    let letters = [
+        ('a', ObliqueParam::Angle),
+        ('w', ObliqueParam::Spin),
+        ('k', ObliqueParam::Friction),
+    ];
+    if let Some((param, up)) = lettered(key.code, letters) {
+        return Some(ObliqueKey::Step {
             param,
             up,
             coarse: false,
-        })
-    };
+        });
+    }
     match key.code {
-        KeyCode::Char('a') => step(ObliqueParam::Angle, true),
-        KeyCode::Char('A') => step(ObliqueParam::Angle, false),
-        KeyCode::Char('w') => step(ObliqueParam::Spin, true),
-        KeyCode::Char('W') => step(ObliqueParam::Spin, false),
-        KeyCode::Char('k') => step(ObliqueParam::Friction, true),
-        KeyCode::Char('K') => step(ObliqueParam::Friction, false),
         KeyCode::Char('=') | KeyCode::Enter => Some(ObliqueKey::Type),
         KeyCode::Char('t') => Some(ObliqueKey::Page),
         KeyCode::Char('n') => Some(ObliqueKey::Quantity),
@@ -32,17 +32,12 @@ fn shared(key: KeyEvent) -> Option<ObliqueKey> {
 
 /// On the charts: ↑ ↓ step the selected one (Shift, PgUp/PgDn: coarse), ← → select.
 pub fn charts(key: KeyEvent) -> Option<Action> {
-    let shift = key.modifiers.contains(KeyModifiers::SHIFT);
-    let stepped = |up, coarse| Some(ObliqueKey::StepSelected { up, coarse });
-    let k = match key.code {
-        KeyCode::Up => stepped(true, shift),
-        KeyCode::Down => stepped(false, shift),
-        KeyCode::PageUp => stepped(true, true),
-        KeyCode::PageDown => stepped(false, true),
-        KeyCode::Right => Some(ObliqueKey::Select { next: true }),
-        KeyCode::Left => Some(ObliqueKey::Select { next: false }),
-        _ => shared(key),
-    };
+    let k = stepping(
+        key,
+        |up, coarse| ObliqueKey::StepSelected { up, coarse },
+        |next| ObliqueKey::Select { next },
+    )
+    .or_else(|| shared(key));
     k.map(Action::Oblique)
 }
 

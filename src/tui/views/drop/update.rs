@@ -26,11 +26,8 @@ impl App {
     pub(in crate::tui) fn drop_action(&mut self, action: &Action) {
         match action {
             Action::ToggleDrop => {
-                self.view = if self.view == View::Drop {
-                    View::Impact
-                } else {
-                    View::Drop
-                };
+                // the crosshair stays as it is (Tab, `i` and `h` take it off: `show_view`)
+                self.view = self.view.toggled(View::Drop);
                 // entering: the animation starts from the release
                 self.drop = DropView::new(self.drop.motion);
             }

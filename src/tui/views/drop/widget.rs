@@ -8,17 +8,18 @@ use crate::figure::{
     Axis as FigAxis, Figure, GREY, Look, Marker as Glyph, Role, Series, Style as Stroke, Tone,
 };
 use crate::text::sig;
-use crate::tui::format::fit_lines;
+use crate::tui::layout::charts_and_readout;
 use crate::tui::theme::Theme;
 use crate::tui::views::drop::state::DropView;
 use crate::tui::widgets::plot::Plot;
+use crate::tui::widgets::{fitted, readout_column, readout_columns};
 use ratatui::buffer::Buffer;
 use ratatui::layout::{Constraint, Layout, Rect};
 use ratatui::style::Color;
 use ratatui::symbols::Marker;
 use ratatui::text::{Line, Span};
 use ratatui::widgets::canvas::{Canvas, Circle, Line as CanvasLine};
-use ratatui::widgets::{Block, Paragraph, Widget, Wrap};
+use ratatui::widgets::{Block, Paragraph, Widget};
 
 /// Width of the ball's column and of the readout.
 const BALL_WIDTH: u16 = 18;
@@ -45,18 +46,11 @@ impl Widget for DropPanel<'_> {
 fn render(p: DropPanel, area: Rect, buf: &mut Buffer) {
     let (d, theme) = (p.drop, p.theme);
     let wide = area.width >= 90;
-    let (left, readout) = if wide {
-        let [l, r] = Layout::horizontal([Constraint::Fill(1), Constraint::Length(READOUT_WIDTH)])
-            .areas(area);
-        (l, r)
-    } else {
-        // below the chart: the setting and verdict beside the rebounds, as many rows as the
-        // longer needs and the chart can spare (at 80 × 24 seven rows cut off the rebounds,
-        // the verdict and the keys)
-        let rows = (area.height * 45 / 100).clamp(7, 10);
-        let [l, r] = Layout::vertical([Constraint::Fill(1), Constraint::Length(rows)]).areas(area);
-        (l, r)
-    };
+    // below the chart (narrow): the setting and verdict beside the rebounds, as many rows as
+    // the longer needs and the chart can spare (at 80 × 24 seven rows cut off the rebounds,
+    // the verdict and the keys)
+    let rows = (area.height * 45 / 100).clamp(7, 10);
+    let (left, readout) = charts_and_readout(area, wide, READOUT_WIDTH, rows);
     let [chart, ball] =
         Layout::horizontal([Constraint::Fill(1), Constraint::Length(BALL_WIDTH)]).areas(left);
     (&Plot::new(p.chart, theme)).render(chart, buf);
@@ -179,30 +173,19 @@ fn render_readout(ball: &str, d: &DropView, theme: Theme, area: Rect, buf: &mut 
     lines.extend(verdict_lines(d, theme));
     lines.push(Line::raw(""));
     lines.push(keys_line(d, theme));
-    // broken between fields, never inside a value (`+0.225` and its `m` on two lines)
-    let lines = fit_lines(lines, usize::from(area.width.saturating_sub(2)));
-    Paragraph::new(lines)
-        .wrap(Wrap { trim: true })
-        .block(Block::bordered())
-        .render(area, buf);
+    readout_column(lines, area, buf);
 }
 
 /// The readout under the chart (narrow screens): the setting and the verdict on the left,
 /// the rebounds on the right, so both show in a few rows; the status line has the keys.
 fn render_readout_beside(ball: &str, d: &DropView, theme: Theme, area: Rect, buf: &mut Buffer) {
-    let block = Block::bordered();
-    let inner = block.inner(area);
-    block.render(area, buf);
-    let [left, right] =
-        Layout::horizontal([Constraint::Fill(1), Constraint::Length(22)]).areas(inner);
+    let [left, right] = readout_columns(area, buf, [Constraint::Fill(1), Constraint::Length(22)]);
     let mut lines = setting_lines(ball, d, theme);
     lines.extend(verdict_lines(d, theme));
     if !d.motion {
         lines.push(keys_line(d, theme));
     }
-    Paragraph::new(fit_lines(lines, usize::from(left.width)))
-        .wrap(Wrap { trim: true })
-        .render(left, buf);
+    fitted(lines, left, buf);
     Paragraph::new(bounce_lines(d, theme)).render(right, buf);
 }
 

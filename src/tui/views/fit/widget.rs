@@ -166,26 +166,22 @@ mod tests {
     /// reads mm, and "[78094, 1.17e5]" (two forms in one interval). One format, one unit.
     #[test]
     fn estimates_read_in_the_readouts_units_and_one_form() {
-        let z_p = Estimate {
-            name: "z_p",
-            unit: "m",
-            value: 0.001572,
-            std_error: 0.000122,
-            ci95: [0.00133, 0.00181],
+        let line = |name, unit, value, std_error, ci95| {
+            let e = Estimate {
+                name,
+                unit,
+                value,
+                std_error,
+                ci95,
+            };
+            estimate(&e).to_string()
         };
         assert_eq!(
-            estimate(&z_p).to_string(),
+            line("z_p", "m", 0.001572, 0.000122, [0.00133, 0.00181]),
             " z_p = 1.572 ± 0.122 mm  [1.33, 1.81]"
         );
-        let k_r = Estimate {
-            name: "k_r",
-            unit: "N/m",
-            value: 96000.0,
-            std_error: 9700.0,
-            ci95: [78094.0, 1.17e5],
-        };
         assert_eq!(
-            estimate(&k_r).to_string(),
+            line("k_r", "N/m", 96000.0, 9700.0, [78094.0, 1.17e5]),
             " k_r = 96000 ± 9700 N/m  [7.81e4, 1.17e5]"
         );
     }

@@ -7,7 +7,7 @@ use crate::api::ShotSpec;
 use crate::text::number;
 use crate::tui::action::FlightKey;
 use crate::tui::app::{App, Effect, View};
-use crate::tui::export::{ExportRequest, file_stem_part};
+use crate::tui::export::{ExportRequest, computed};
 use crate::tui::views::flight::export;
 use crate::tui::views::flight::state::{FlightValues, FlightView, SAMPLES};
 
@@ -30,12 +30,7 @@ impl App {
     /// The flight view's keys.
     pub(in crate::tui) fn flight_action(&mut self, key: FlightKey) {
         if key == FlightKey::Toggle {
-            self.view = if self.view == View::Flight {
-                View::Impact
-            } else {
-                View::Flight
-            };
-            self.crosshair = None;
+            self.show_view(self.view.toggled(View::Flight));
             self.refresh_flight();
             return;
         }
@@ -88,14 +83,10 @@ impl App {
     /// line and the landing's and the bounce's numbers; nothing recomputed.
     pub(in crate::tui) fn prepare_flight_export(&mut self) -> Option<Effect> {
         self.export_wanted = false;
-        let r = match &self.flight.shot {
-            Some(Ok(r)) => r,
-            Some(Err(e)) => {
-                self.error(format!("export failed: no shot ({e})"));
-                return None;
-            }
-            None => {
-                self.error("export failed: no shot yet".into());
+        let r = match computed(&self.flight.shot, "shot") {
+            Ok(r) => r,
+            Err(why) => {
+                self.error(why);
                 return None;
             }
         };
@@ -112,11 +103,7 @@ impl App {
         let radius = self.setting.radius;
         let charts = vec![("flight-path", export::path_figure(r, radius, &subtitle))];
         let header = export::header(&self.command_line(), r);
-        Some(Effect::Export(ExportRequest {
-            ball: file_stem_part(&self.preset().name),
-            charts,
-            map: None,
-            header,
-        }))
+        let request = ExportRequest::of(&self.preset().name, charts, None, header);
+        Some(Effect::Export(request))
     }
 }

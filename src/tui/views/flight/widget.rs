@@ -6,14 +6,15 @@
 
 use crate::figure::{Look, Marker as Glyph, Role, Tone};
 use crate::text::sig;
-use crate::tui::format::fit_lines;
+use crate::tui::layout::charts_and_readout;
 use crate::tui::theme::Theme;
 use crate::tui::views::flight::export::{net_words, path_figure};
 use crate::tui::views::flight::param::FlightParam;
 use crate::tui::views::flight::state::FlightView;
 use crate::tui::widgets::plot::Plot;
+use crate::tui::widgets::{fitted, readout_column, readout_columns};
 use ratatui::buffer::Buffer;
-use ratatui::layout::{Constraint, Layout, Rect};
+use ratatui::layout::{Constraint, Rect};
 use ratatui::text::{Line, Span};
 use ratatui::widgets::{Block, Paragraph, Widget, Wrap};
 
@@ -34,17 +35,8 @@ pub struct FlightPanel<'a> {
 impl Widget for FlightPanel<'_> {
     fn render(self, area: Rect, buf: &mut Buffer) {
         let wide = area.width >= 100;
-        let (chart, readout) = if wide {
-            let [l, r] =
-                Layout::horizontal([Constraint::Fill(1), Constraint::Length(READOUT_WIDTH)])
-                    .areas(area);
-            (l, r)
-        } else {
-            let rows = (area.height * 45 / 100).clamp(7, 11);
-            let [l, r] =
-                Layout::vertical([Constraint::Fill(1), Constraint::Length(rows)]).areas(area);
-            (l, r)
-        };
+        let rows = (area.height * 45 / 100).clamp(7, 11);
+        let (chart, readout) = charts_and_readout(area, wide, READOUT_WIDTH, rows);
         self.render_chart(chart, buf);
         if wide {
             let mut lines = self.launch_lines();
@@ -55,25 +47,14 @@ impl Widget for FlightPanel<'_> {
                 "←→ select · ↑↓ step (Shift coarse) · a/w/k · y line · e export · h back",
                 self.theme.key(),
             ));
-            let lines = fit_lines(lines, usize::from(readout.width.saturating_sub(2)));
-            Paragraph::new(lines)
-                .wrap(Wrap { trim: true })
-                .block(Block::bordered())
-                .render(readout, buf);
+            readout_column(lines, readout, buf);
         } else {
             // the launch and the net on the left (30 characters and a gap), the shot's numbers
             // on the right, in a few rows
-            let block = Block::bordered();
-            let inner = block.inner(readout);
-            block.render(readout, buf);
             let [left, right] =
-                Layout::horizontal([Constraint::Length(32), Constraint::Fill(1)]).areas(inner);
-            Paragraph::new(fit_lines(self.launch_lines(), usize::from(left.width)))
-                .wrap(Wrap { trim: true })
-                .render(left, buf);
-            Paragraph::new(fit_lines(self.shot_lines(), usize::from(right.width)))
-                .wrap(Wrap { trim: true })
-                .render(right, buf);
+                readout_columns(readout, buf, [Constraint::Length(32), Constraint::Fill(1)]);
+            fitted(self.launch_lines(), left, buf);
+            fitted(self.shot_lines(), right, buf);
         }
     }
 }

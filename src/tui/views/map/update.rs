@@ -7,7 +7,7 @@ use crate::model::contact::ContactLaw;
 use crate::text::sig_trim;
 use crate::tui::action::Action;
 use crate::tui::app::{App, Effect, Setting, View};
-use crate::tui::export::{ExportRequest, file_stem_part};
+use crate::tui::export::{ExportRequest, computed};
 use crate::tui::param::Param;
 use crate::tui::state::{Overlay, Purpose};
 use crate::tui::views::map::export::MapExport;
@@ -237,17 +237,11 @@ impl App {
     /// `e` in the map view: the map on screen once it has full detail (while the worker
     /// refines it the export waits, and says so).
     pub(in crate::tui) fn prepare_map_export(&mut self) -> Option<Effect> {
-        let map = match &self.map.map {
-            Some(Ok(m)) => m,
-            Some(Err(e)) => {
+        let map = match computed(&self.map.map, "map") {
+            Ok(m) => m,
+            Err(why) => {
                 self.export_wanted = false;
-                let e = e.clone();
-                self.error(format!("export failed: no map ({e})"));
-                return None;
-            }
-            None => {
-                self.export_wanted = false;
-                self.error("export failed: no map yet".into());
+                self.error(why);
                 return None;
             }
         };
@@ -275,11 +269,8 @@ impl App {
             ),
             radius: s.radius,
         };
-        Some(Effect::Export(ExportRequest {
-            ball: file_stem_part(&self.preset().name),
-            charts: Vec::new(),
-            map: Some(export),
-            header: self.csv_header(),
-        }))
+        let header = self.csv_header();
+        let request = ExportRequest::of(&self.preset().name, Vec::new(), Some(export), header);
+        Some(Effect::Export(request))
     }
 }

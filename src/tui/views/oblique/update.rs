@@ -9,7 +9,7 @@ use crate::text::number as number_text;
 use crate::text::parse::number;
 use crate::tui::action::ObliqueKey;
 use crate::tui::app::{App, Effect, View};
-use crate::tui::export::{ExportRequest, file_stem_part};
+use crate::tui::export::{ExportRequest, computed};
 use crate::tui::state::{Overlay, Purpose};
 use crate::tui::views::oblique::export;
 use crate::tui::views::oblique::map::{self, ANGLES, FRICTIONS, MapJob, MapSpec};
@@ -106,12 +106,7 @@ impl App {
     /// The oblique view's keys.
     pub(in crate::tui) fn oblique_action(&mut self, key: ObliqueKey) {
         if key == ObliqueKey::Toggle {
-            self.view = if self.view == View::Oblique {
-                View::Impact
-            } else {
-                View::Oblique
-            };
-            self.crosshair = None;
+            self.show_view(self.view.toggled(View::Oblique));
             return;
         }
         if self.view != View::Oblique {
@@ -365,15 +360,10 @@ impl App {
     /// impact is computed in `update` itself, so there is nothing to wait for.
     pub(in crate::tui) fn prepare_oblique_export(&mut self) -> Option<Effect> {
         self.export_wanted = false;
-        let r = match &self.oblique.impact {
-            Some(Ok(r)) => r,
-            Some(Err(e)) => {
-                let e = format!("export failed: no impact ({e})");
-                self.error(e);
-                return None;
-            }
-            None => {
-                self.error("export failed: no impact yet".into());
+        let r = match computed(&self.oblique.impact, "impact") {
+            Ok(r) => r,
+            Err(why) => {
+                self.error(why);
                 return None;
             }
         };
@@ -391,11 +381,7 @@ impl App {
             return None;
         };
         let header = export::header(&self.command_line(), r);
-        Some(Effect::Export(ExportRequest {
-            ball: file_stem_part(&self.preset().name),
-            charts,
-            map: None,
-            header,
-        }))
+        let request = ExportRequest::of(&self.preset().name, charts, None, header);
+        Some(Effect::Export(request))
     }
 }
