@@ -21,7 +21,7 @@ SurfaceArg = Union[str, dict[str, Any]]
 
 class BallArguments(TypedDict, total=False):
     """The keyword arguments of every function that runs a preset ball, each None (or absent)
-    to keep the preset's (python/src/ball_args.rs): the command line's overrides ``--mass``,
+    to keep the preset's (python/src/arguments/ball.rs): the command line's overrides ``--mass``,
     ``--radius``, ``--k-p``, ``--damping``, ``--k-r``, ``--z-p`` (SI) and its conditions
     (docs/model.md §10, inflated balls only but ``temperature``): ``pressure`` (Pa gauge, or
     with its unit: ``"0.8bar"``, ``"8psi"``, ``"55kPa"``), ``temperature`` and ``inflated_at``
