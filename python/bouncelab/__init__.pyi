@@ -21,7 +21,7 @@ SurfaceArg = Union[str, dict[str, Any]]
 
 class BallArguments(TypedDict, total=False):
     """The keyword arguments of every function that runs a preset ball, each None (or absent)
-    to keep the preset's (python/src/ball_args.rs): the command line's overrides ``--mass``,
+    to keep the preset's (python/src/arguments/ball.rs): the command line's overrides ``--mass``,
     ``--radius``, ``--k-p``, ``--damping``, ``--k-r``, ``--z-p`` (SI) and its conditions
     (docs/model.md §10, inflated balls only but ``temperature``): ``pressure`` (Pa gauge, or
     with its unit: ``"0.8bar"``, ``"8psi"``, ``"55kPa"``), ``temperature`` and ``inflated_at``
@@ -682,22 +682,28 @@ NetArg = Union[float, tuple[float, float]]
 """``net=``: a net's distance from the launch (m; its height the tennis net's 0.914 m at
 the centre), or (distance, height): the command line's ``--net DISTANCE[,HEIGHT]``."""
 
+class FlightArguments(BallArguments, total=False):
+    """The keyword arguments ``shot`` and ``shots`` share beside ``bounces`` and
+    ``air_density`` (python/src/shot.rs declares them once for both), each None (or absent)
+    as the command line's ``shot`` without that option (``friction`` the surface's); the
+    ball's, :class:`BallArguments`, with them."""
+    friction: Optional[float]
+    distance: Optional[float]
+    time: Optional[float]
+    drag_coefficient: Optional[float]
+    lift_coefficient: Optional[float]
+    spin_decay: Optional[float]
+    tangential_stiffness: Optional[float]
+    inertia_factor: Optional[float]
+    tangential_damping: Optional[float]
+    surface: Optional[SurfaceArg]
+    net: Optional[NetArg]
+
 def shot(
     preset: str = "tennis",
     *,
-    friction: Optional[float] = None,
     bounces: int = 1,
-    distance: Optional[float] = None,
-    time: Optional[float] = None,
     air_density: float = 1.204,
-    drag_coefficient: Optional[float] = None,
-    lift_coefficient: Optional[float] = None,
-    spin_decay: Optional[float] = None,
-    tangential_stiffness: Optional[float] = None,
-    inertia_factor: Optional[float] = None,
-    tangential_damping: Optional[float] = None,
-    surface: Optional[SurfaceArg] = None,
-    net: Optional[NetArg] = None,
     height: float,
     speed: float,
     elevation: float = 0.0,
@@ -706,7 +712,7 @@ def shot(
     after_bounce: Optional[float] = None,
     law: Optional[Law] = None,
     params: Optional[ParamSet] = None,
-    **ball: Unpack[BallArguments],
+    **flight: Unpack[FlightArguments],
 ) -> dict[str, Any]:
     """A shot (docs/flight.md), as ``bouncelab shot --format json --samples N``: launched from
     ``height`` (the centre, m) at ``speed`` (m/s), ``elevation`` (degrees, negative down) and
@@ -729,26 +735,15 @@ def shot(
 def shots(
     preset: str = "tennis",
     *,
-    friction: Optional[float] = None,
     bounces: int = 1,
-    distance: Optional[float] = None,
-    time: Optional[float] = None,
     air_density: float = 1.204,
-    drag_coefficient: Optional[float] = None,
-    lift_coefficient: Optional[float] = None,
-    spin_decay: Optional[float] = None,
-    tangential_stiffness: Optional[float] = None,
-    inertia_factor: Optional[float] = None,
-    tangential_damping: Optional[float] = None,
-    surface: Optional[SurfaceArg] = None,
-    net: Optional[NetArg] = None,
     height: Floats,
     speed: Floats,
     elevation: Optional[Floats] = None,
     spin: Optional[Floats] = None,
     law: Optional[Law] = None,
     params: Optional[ParamSet] = None,
-    **ball: Unpack[BallArguments],
+    **flight: Unpack[FlightArguments],
 ) -> dict[str, Any]:
     """Many shots, ``height``, ``speed``, ``elevation`` and ``spin`` (``None``: 0) broadcast
     together as a ufunc's arguments: arrays of the broadcast shape ``landing_t``, ``landing_x``, ``v_in``,

@@ -63,10 +63,9 @@ macro_rules! into_json {
 }
 into_json!(Record, Stated);
 
-/// `d[k]`, named when absent.
+/// `d[k]`, named when absent (`same::state_item`).
 fn item<'py>(d: &Bound<'py, PyDict>, k: &str) -> PyResult<Bound<'py, PyAny>> {
-    d.get_item(k)?
-        .ok_or_else(|| PyValueError::new_err(format!("state without '{k}'")))
+    crate::same::state_item(d, k, "state")
 }
 
 impl<'a, 'py> FromPyObject<'a, 'py> for Record {

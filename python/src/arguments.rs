@@ -1,6 +1,10 @@
-//! The arguments as the command line reads them: a contact law and a parameter set by their
-//! names, `samples` only with a history, floats from numbers, sequences or numpy arrays, and
-//! numpy arrays out.
+//! The arguments as the command line reads them, resolved here for every binding: a contact
+//! law and a parameter set by their names, `samples` only with a history, the `free` names,
+//! floats from numbers, sequences or numpy arrays; the ball a call runs from its preset and
+//! keyword arguments ([`ball`]); and numpy arrays out. (`surface=` is surface.rs's, with the
+//! surface's dicts both ways.)
+
+pub(crate) mod ball;
 
 use crate::value_error;
 use bouncelab::ContactLaw;

@@ -6,23 +6,20 @@
 //! returns the JSON document's structure as a dict (serde_json's, so the keys, the order and
 //! the `None`s are the command line's: python/tests/test_batch.py compares them).
 
-use crate::ball_args::ball_pyfunction;
+use crate::arguments::ball::ball_pyfunction;
 use crate::{error, value_error};
 use bouncelab::Ball;
 use bouncelab::analysis::batch::{BallData, split};
 use bouncelab::analysis::fit::parse_free;
 use bouncelab::api::{BatchReport, BatchSetup};
 use bouncelab::drop::standards::{self, Standard};
+use bouncelab::measured::bounded::{MAX_DATA_BYTES, ReadError, read_bounded};
 use bouncelab::measured::{Air, Data, Trace};
 use pyo3::exceptions::PyOSError;
 use pyo3::prelude::*;
 use rayon::prelude::*;
 use std::borrow::Cow;
-use std::io::Read;
 use std::path::{Path, PathBuf};
-
-/// Largest data file read, as the command line's (`measured::file::MAX_DATA_BYTES`).
-const MAX_DATA_BYTES: u64 = 64 << 20;
 
 /// A file that cannot be read: `OSError` with the command line's message (its exit 1).
 fn os_error(path: &Path, msg: impl std::fmt::Display) -> PyErr {
@@ -31,42 +28,23 @@ fn os_error(path: &Path, msg: impl std::fmt::Display) -> PyErr {
     )
 }
 
-/// A data file's text: a regular file of at most [`MAX_DATA_BYTES`], UTF-8 (an error names
-/// the line and column of the first byte that is not), as `measured::file::read_text`.
+/// A data file's text, read by the library's reader (`measured::bounded::read_bounded`, the
+/// command line's): what the system refuses and what is not a regular file an `OSError`, a
+/// file past [`MAX_DATA_BYTES`] or not UTF-8 (named at the line and column of its first
+/// byte that is not) a `ValueError`.
 pub(crate) fn read_text(path: &Path) -> PyResult<String> {
-    let meta = std::fs::metadata(path).map_err(|e| os_error(path, describe(&e)))?;
-    if !meta.is_file() {
-        return Err(os_error(path, "is not a regular file"));
-    }
-    if meta.len() > MAX_DATA_BYTES {
-        let msg = format!(
-            "is {} bytes; a data file is at most {MAX_DATA_BYTES} bytes",
-            meta.len()
-        );
-        return Err(value_error(format!("{}: {msg}", path.display())));
-    }
-    let mut bytes = Vec::new();
-    std::fs::File::open(path)
-        .and_then(|f| f.take(MAX_DATA_BYTES + 1).read_to_end(&mut bytes))
-        .map_err(|e| os_error(path, describe(&e)))?;
-    String::from_utf8(bytes).map_err(|e| {
-        let valid = &e.as_bytes()[..e.utf8_error().valid_up_to()];
-        let line = valid.iter().filter(|&&b| b == b'\n').count() + 1;
-        let last = valid.rsplit(|&b| b == b'\n').next().unwrap_or(&[]);
-        let col = String::from_utf8_lossy(last).chars().count() + 1;
-        value_error(format!("{}:{line}:{col}: not UTF-8 text", path.display()))
+    read_bounded(path).map_err(|e| match e {
+        ReadError::Io(why) => os_error(path, why),
+        ReadError::Directory | ReadError::NotRegular => os_error(path, "is not a regular file"),
+        ReadError::TooLarge(n) => value_error(format!(
+            "{}: is {n} bytes; a data file is at most {MAX_DATA_BYTES} bytes",
+            path.display()
+        )),
+        ReadError::NotUtf8 { line, column } => value_error(format!(
+            "{}:{line}:{column}: not UTF-8 text",
+            path.display()
+        )),
     })
-}
-
-fn describe(e: &std::io::Error) -> String {
-    match e.kind() {
-        std::io::ErrorKind::NotFound => "no such file".into(),
-        std::io::ErrorKind::PermissionDenied => "permission denied".into(),
-        _ => {
-            let s = e.to_string();
-            s.split(" (os error").next().unwrap_or(&s).to_string()
-        }
-    }
 }
 
 /// The batch's balls with their data as the file gives them: rows, or a trace file's name

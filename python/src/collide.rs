@@ -3,7 +3,7 @@
 //! names.
 
 use crate::answer::{Record, Stated};
-use crate::ball_args::{BallChoice, ball_pyfunction};
+use crate::arguments::ball::{BallChoice, ball_pyfunction};
 use crate::error;
 use crate::same::Same;
 use bouncelab::Ball;
@@ -76,19 +76,12 @@ macro_rules! answer_keys {
     };
 }
 
-/// `key`'s value in a state dict, named when absent.
+/// `key`'s value in a state dict, named when absent (`same::state_item`).
 fn get<'py, T: pyo3::conversion::FromPyObjectOwned<'py>>(
     d: &Bound<'py, PyDict>,
     key: &str,
 ) -> PyResult<T> {
-    // a bad pickle is a bad value, a ValueError, as `Impact`'s (impact_state.rs;
-    // tests/test_arrays_hostile.py)
-    d.get_item(key)?
-        .ok_or_else(|| {
-            pyo3::exceptions::PyValueError::new_err(format!("Collision state without '{key}'"))
-        })?
-        .extract()
-        .map_err(Into::into)
+    crate::same::state_item(d, key, "Collision state")
 }
 
 #[pymethods]
@@ -149,10 +142,7 @@ impl Collision {
                     target_stiffness: get(&target, "stiffness")?,
                     target_damping: get(&target, "damping")?,
                     $($k: get(state, stringify!($k))?,)*
-                    surface: match state.get_item("surface")? {
-                        Some(s) => crate::surface::from_dict(&s)?.into(),
-                        None => SurfaceUsed::rigid_plate().into(),
-                    },
+                    surface: crate::same::state_surface(state)?.into(),
                     ball_record: get(state, "ball_record")?,
                     conditions: get(state, "conditions")?,
                 }
@@ -299,7 +289,7 @@ fn collide_with(
     let pair = (used.stiffness, used.damping);
     let report = match (target_mass, target_preset) {
         (None, Some(name)) => {
-            let other = crate::ball_args::preset_as_it_is(name)?;
+            let other = crate::arguments::ball::preset_as_it_is(name)?;
             ball.collide_ball(&other, target_speed, pair)
         }
         (_, None) if target_mass.is_some() || given => ball.collide(&Target {

@@ -3,7 +3,7 @@
 //! json`: the library's rating (`Ball::court_pace_on`) and calibration
 //! (`Ball::calibrate_court`) under the JSON's keys.
 
-use crate::ball_args::ball_pyfunction;
+use crate::arguments::ball::ball_pyfunction;
 use crate::batch::read_text;
 use crate::oblique::tangential_surface;
 use crate::{error, value_error};

@@ -1,7 +1,7 @@
 //! `drop`: a preset dropped bounce by bounce, and judged against a standard, as `bouncelab drop
 //! --format json` (src/cli/drop.rs), under its keys.
 
-use crate::ball_args::{BallChoice, ball_pyfunction};
+use crate::arguments::ball::{BallChoice, ball_pyfunction};
 use crate::interval_columns;
 use crate::{array, error, interrupt, value_error};
 use bouncelab::BallError;

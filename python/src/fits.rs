@@ -4,7 +4,7 @@
 //! that read the command line's files), the fit is the library's [`Ball::fit`]; each function
 //! returns a dict with the keys of `bouncelab fit --format json`.
 
-use crate::ball_args::ball_pyfunction;
+use crate::arguments::ball::ball_pyfunction;
 use crate::{array, error, floats, value_error};
 use bouncelab::Ball;
 use bouncelab::analysis::fit::{Estimate, FitData, MultiFit, parse_free};

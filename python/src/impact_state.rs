@@ -6,17 +6,13 @@ use super::{Audit, ENERGY_KEYS, HISTORY_KEYS, Impact, MEASURED_KEYS};
 use crate::frozen_array;
 use bouncelab::api::Intervals;
 use numpy::{PyArray1, PyArrayMethods, PyReadonlyArray1};
-use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use std::borrow::Cow;
 
-/// `d[key]`, extracted; a missing key is an error naming it.
+/// `d[key]`, extracted; a missing key is an error naming it (`same::state_item`).
 fn get<'py, T: FromPyObjectOwned<'py>>(d: &Bound<'py, PyDict>, key: &str) -> PyResult<T> {
-    d.get_item(key)?
-        .ok_or_else(|| PyValueError::new_err(format!("Impact state without '{key}'")))?
-        .extract()
-        .map_err(Into::into)
+    crate::same::state_item(d, key, "Impact state")
 }
 
 /// A dict of `keys` (or None) as an array of its values.
@@ -90,10 +86,7 @@ pub(super) fn from_state(d: &Bound<'_, PyDict>) -> PyResult<Impact> {
         }
         .into(),
         ball: None,
-        surface: match d.get_item("surface")? {
-            Some(s) => crate::surface::from_dict(&s)?,
-            None => bouncelab::api::SurfaceUsed::rigid_plate(),
-        },
+        surface: crate::same::state_surface(d)?,
         named: (get(d, "ball")?, get(d, "conditions")?),
         withheld: get(d, "comparison_withheld")?,
     })

@@ -13,7 +13,6 @@ use pyo3::prelude::*;
 mod answer;
 mod arguments;
 mod arrays;
-mod ball_args;
 mod batch;
 mod catalog_cache;
 mod collide;

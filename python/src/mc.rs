@@ -5,7 +5,7 @@
 //! seed and its index alone (docs/scale.md), so the chunks give the single call's samples and
 //! the merge its numbers, bit for bit.
 
-use crate::ball_args::{BallChoice, ball_pyfunction};
+use crate::arguments::ball::{BallChoice, ball_pyfunction};
 use crate::{array, error};
 use bouncelab::analysis::mc::{
     Dist, McError, McSpec, McSummary, Samples, Spread, Stats, Varied, parse_correlate, parse_vary,
@@ -190,7 +190,7 @@ fn report<'py>(py: Python<'py>, r: &Request, s: &McSummary) -> PyResult<Bound<'p
 
 /// A Monte Carlo function of Python's: the arguments all three share (`preset`, `vary`,
 /// `samples`, `seed`, `dist`, `v0`, `law`, `params`, then the function's own, then
-/// `correlate` and the ball's arguments, python/src/ball_args.rs), keyword-only, read once
+/// `correlate` and the ball's arguments, python/src/arguments/ball.rs), keyword-only, read once
 /// into the [`Request`] `$r` its body starts from.
 /// `samples` has a default where one is given (`monte_carlo`'s 10 000); the Dask halves take
 /// it as the run's, always given. Written once here so that the single call and the Dask path

@@ -2,7 +2,7 @@
 //! oblique --format json`: the same fields, by the same names.
 
 use crate::answer::{Record, Stated};
-use crate::ball_args::ball_pyfunction;
+use crate::arguments::ball::ball_pyfunction;
 use crate::{error, frozen_array, history_samples, value_error};
 use bouncelab::api::ObliqueSpec;
 use bouncelab::api::SurfaceUsed;

@@ -4,7 +4,7 @@
 //! the same report, turned into a dict through the command line's JSON (serde_json), so the
 //! keys, their order and the values are the command line's.
 
-use crate::ball_args::ball_pyfunction;
+use crate::arguments::ball::ball_pyfunction;
 use crate::{batch::read_text, floats, value_error};
 use bouncelab::api::ObliqueFitReport;
 use bouncelab::measured::{MeasuredError, parse_oblique};

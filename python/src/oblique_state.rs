@@ -4,10 +4,8 @@
 use super::{ENERGY_KEYS, EnergyTerms, ObliqueImpact};
 use crate::frozen_array;
 use crate::same::Same;
-use bouncelab::api::SurfaceUsed;
 use numpy::{PyArray1, PyArrayMethods, PyReadonlyArray1};
 use pyo3::conversion::FromPyObjectOwned;
-use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
@@ -57,11 +55,9 @@ pub(super) fn to_dict<'py>(o: &ObliqueImpact, py: Python<'py>) -> PyResult<Bound
     Ok(d)
 }
 
+/// `d[key]`, extracted; a missing key is an error naming it (`same::state_item`).
 fn get<'py, T: FromPyObjectOwned<'py>>(d: &Bound<'py, PyDict>, key: &str) -> PyResult<T> {
-    d.get_item(key)?
-        .ok_or_else(|| PyValueError::new_err(format!("ObliqueImpact state without '{key}'")))?
-        .extract()
-        .map_err(Into::into)
+    crate::same::state_item(d, key, "ObliqueImpact state")
 }
 
 pub(super) fn from_state(d: &Bound<'_, PyDict>) -> PyResult<ObliqueImpact> {
@@ -98,10 +94,7 @@ pub(super) fn from_state(d: &Bound<'_, PyDict>) -> PyResult<ObliqueImpact> {
                     Some(c) => c.extract()?,
                     None => None,
                 },
-                surface: match d.get_item("surface")? {
-                    Some(s) => crate::surface::from_dict(&s)?.into(),
-                    None => SurfaceUsed::rigid_plate().into(),
-                },
+                surface: crate::same::state_surface(d)?.into(),
                 ball: get(d, "ball")?,
                 conditions: get(d, "conditions")?,
             }

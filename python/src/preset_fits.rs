@@ -1,7 +1,7 @@
 //! `fit`: the recoil spring that gives a measured COR, as `bouncelab fit --cor` (`drop` is
 //! drops.rs).
 
-use crate::ball_args::ball_pyfunction;
+use crate::arguments::ball::ball_pyfunction;
 use crate::error;
 use bouncelab::analysis::fit::Fit;
 use bouncelab::api::FitReport;
@@ -32,20 +32,8 @@ ball_pyfunction! {
             ..ball.params
         };
         let warnings = py.detach(|| ball.fitted_warnings(&fitted, &[ball.params.v0]));
-        let d = PyDict::new(py);
-        d.set_item("preset", r.ball.preset)?;
-        d.set_item("origin", r.ball.origin)?;
-        d.set_item("parameters", r.ball.parameters)?;
-        d.set_item("law", r.ball.law)?;
-        d.set_item("v0", r.v0)?;
-        d.set_item("target_cor", r.target_cor)?;
-        d.set_item("k_r", r.k_r)?;
-        d.set_item("lambda", r.lambda)?;
-        d.set_item("zeta", r.zeta)?;
-        d.set_item("cor", r.cor)?;
-        d.set_item("k_p", r.k_p)?;
-        d.set_item("preset_k_r", r.preset_k_r)?;
-        d.set_item("preset_lambda", r.preset_lambda)?;
+        // the report's keys as the command line's JSON writes them (`FitReport`'s serde)
+        let d = crate::answer::json(py, &r)?.cast_into::<PyDict>()?;
         d.set_item("warnings", warnings)?;
         d.set_item("ball", &crate::answer::Record::of(&ball))?;
         // the rigid plate the fit assumed, and the conditions, as the command line's JSON

@@ -1,7 +1,7 @@
 //! One impact: `run` (a preset), `run_normalized` and `run_params`, as `bouncelab run`; the
 //! answer an `Impact` (impact.rs, its run impact_run.rs).
 
-use crate::ball_args::ball_pyfunction;
+use crate::arguments::ball::ball_pyfunction;
 use crate::impact::{Impact, impact, impact_on};
 use crate::{error, history_samples, law};
 use bouncelab::Ball;
@@ -12,7 +12,7 @@ use std::sync::Arc;
 ball_pyfunction! {
     /// One impact of a preset, as `bouncelab run --preset NAME [--law L] [--v0 V] [--lambda L]
     /// [--zeta Z] [--params SET] [--history --samples N] [--surface NAME --surface-stiffness
-    /// K_S …]` and the ball's arguments (python/src/ball_args.rs: `--mass` … `--z-p`,
+    /// K_S …]` and the ball's arguments (python/src/arguments/ball.rs: `--mass` … `--z-p`,
     /// `--pressure`, `--temperature`, `--inflated-at`, `--after`, `--half-life`; `surface=`: a
     /// name or a dict of its numbers, python/src/surface.rs).
     signature = (preset="superball", law=None, v0=None, lambda_=None, zeta=None, history=false, samples=None, params=None, *, surface=None,);

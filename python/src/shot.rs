@@ -1,7 +1,7 @@
 //! `bouncelab.shot(...)`: a shot (docs/flight.md) as arrays; `bouncelab.shots(...)`: many
 //! shots over numpy arrays of launch conditions, broadcast together, in parallel.
 
-use crate::ball_args::ball_pyfunction;
+use crate::arguments::ball::ball_pyfunction;
 use crate::error;
 use bouncelab::api::{Net, NetReport, ShotReport, ShotSpec, TENNIS_NET_HEIGHT};
 use bouncelab::flight::{Ends, Launch};
@@ -123,7 +123,7 @@ fn net_of(net: Option<&Bound<'_, PyAny>>) -> PyResult<Option<Net>> {
     Ok(Some(Net { x, height }))
 }
 
-/// A `#[pyfunction]` of a shot: the ball's arguments (ball_args.rs), `friction` and the
+/// A `#[pyfunction]` of a shot: the ball's arguments (arguments/ball.rs), `friction` and the
 /// flight's keyword-only arguments `shot` and `shots` share (`bounces` … `tangential_damping`,
 /// the command line's `shot` options), then the function's own, then `law` and `params`; the
 /// body starts from the resolved ball `$ball` and the spec every shot shares, `$common`. One list,

@@ -1,7 +1,7 @@
 //! `static`: the ball squeezed between two rigid plates under a load (docs/model.md §11), as
 //! `bouncelab static --format json`: the library's report (`StaticReport`), key for key.
 
-use crate::ball_args::ball_pyfunction;
+use crate::arguments::ball::ball_pyfunction;
 use crate::error;
 use bouncelab::api::StaticReport;
 use pyo3::prelude::*;

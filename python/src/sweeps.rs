@@ -1,7 +1,7 @@
 //! `sweep_zeta` and `sweep_velocity`, as `bouncelab sweep zeta` and `bouncelab sweep velocity`:
 //! dicts of numpy arrays with the CSV's columns.
 
-use crate::ball_args::ball_pyfunction;
+use crate::arguments::ball::ball_pyfunction;
 use crate::interval_columns;
 use crate::{array, error, floats, interrupt, law, value_error};
 use bouncelab::BallError;

@@ -88,3 +88,27 @@ def test_a_missing_file_is_an_os_error(tmp_path):
         bouncelab.batch(tmp_path / "none.csv", preset="tennis")
     with pytest.raises(ValueError, match="free|k_x"):
         bouncelab.batch(LOT7, preset="tennis", free="k_x")
+
+
+def test_a_file_it_cannot_read_is_refused_in_the_readers_words(tmp_path):
+    # the batch file, a trace it names, court's and fit_oblique's files: one reader, the
+    # library's (measured::bounded), each refusal worded as before it was shared
+    latin = tmp_path / "latin.csv"
+    latin.write_bytes(b"id,time_s,force_N\nA,0.5 \xe9t\xe9,1\n")
+    big = tmp_path / "big.csv"
+    with open(big, "wb") as f:
+        f.truncate((64 << 20) + 1)  # sparse: its size is read, not its bytes
+    cases = [
+        (tmp_path, OSError, f"{tmp_path}: is not a regular file"),
+        (Path("/dev/null"), OSError, "/dev/null: is not a regular file"),
+        (latin, ValueError, f"{latin}:2:7: not UTF-8 text"),
+        (big, ValueError, f"{big}: is {(64 << 20) + 1} bytes; a data file is at most "
+                          f"{64 << 20} bytes"),
+    ]
+    for path, kind, message in cases:
+        with pytest.raises(kind) as e:
+            bouncelab.batch(path, preset="tennis")
+        assert str(e.value) == message, path
+        with pytest.raises(kind) as e:
+            bouncelab.fit_oblique(path, preset="tennis")
+        assert str(e.value) == message, path

@@ -67,14 +67,14 @@ def stub_functions():
 
 
 def unpacked(kwarg):
-    """`**ball: Unpack[BallArguments]` as the keyword-only arguments it types, each with the
-    default None (the TypedDict's fields, in order): what the runtime signature spells out."""
+    """`**ball: Unpack[BallArguments]` (or `**flight: Unpack[FlightArguments]`, its fields and
+    its base's) as the keyword-only arguments it types, each with the default None: what the
+    runtime signature spells out."""
     if kwarg is None:
         return []
     hint = ast.unparse(kwarg.annotation)
     assert hint.startswith("Unpack[") and hint.endswith("]"), hint
-    name = hint[len("Unpack["):-1]
-    _, fields = stub_classes()[name]
+    fields = declared(hint[len("Unpack["):-1])
     none = ast.Constant(None)
     return [(ast.arg(arg=f), none, inspect.Parameter.KEYWORD_ONLY) for f in fields]
 
@@ -103,9 +103,14 @@ def test_the_stub_and_help_give_each_function_as_it_is(name):
     stub = [(p, d, inspect.Parameter.POSITIONAL_OR_KEYWORD)
             for p, d in zip(positional, [None] * (len(positional) - len(a.defaults)) + a.defaults)]
     stub += [(p, d, inspect.Parameter.KEYWORD_ONLY) for p, d in zip(a.kwonlyargs, a.kw_defaults)]
-    stub += unpacked(a.kwarg)
-    assert [p.arg for p, _, _ in stub] == list(real)
-    for p, default, kind in stub:
+    # the arguments the stub spells out in the runtime's order; a TypedDict's (keyword-only,
+    # their order no caller sees) each once among the rest, wherever the runtime puts them
+    typed = unpacked(a.kwarg)
+    names = [p.arg for p, _, _ in typed]
+    assert len(set(names)) == len(names), names
+    assert [p.arg for p, _, _ in stub] == [n for n in real if n not in names]
+    assert set(names) <= set(real), set(names) - set(real)
+    for p, default, kind in stub + typed:
         r = real[p.arg]
         assert r.kind == kind, (p.arg, r.kind)
         if default is None:

@@ -3,61 +3,9 @@
 //! [`crate::measured`] parses it. Every error is one line `FILE:LINE:COLUMN: message`
 //! (`FILE: message` when it is about the file as a whole).
 
+pub use super::bounded::{MAX_DATA_BYTES, ReadError, read_bounded};
 use crate::measured::{self, CorTable, Data, DropTest, MeasuredError, Trace};
-use std::io::Read;
 use std::path::Path;
-
-/// Largest data file read: 64 MiB holds a million rows of a few numbers with room to spare.
-pub const MAX_DATA_BYTES: u64 = 64 << 20;
-
-/// Why a data file gave no text: the file itself (missing, unreadable, not a regular file)
-/// or what it holds (too large, not UTF-8). Each reader words it for its own users:
-/// [`read_text`] for the command line.
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub enum ReadError {
-    /// The system refused it: "no such file", "permission denied", or its own words without
-    /// the error number.
-    Io(String),
-    /// A directory.
-    Directory,
-    /// A FIFO, socket or device (which could block or never end).
-    NotRegular,
-    /// Larger than [`MAX_DATA_BYTES`]: its size in bytes.
-    TooLarge(u64),
-    /// Not UTF-8 from this line and column (1-based, the column in characters) on.
-    NotUtf8 {
-        /// The line of the first byte that is not.
-        line: usize,
-        /// Its column.
-        column: usize,
-    },
-}
-
-/// The text of the data file `path`: a regular file of at most [`MAX_DATA_BYTES`], UTF-8.
-pub fn read_bounded(path: &Path) -> Result<String, ReadError> {
-    let io = |e: std::io::Error| ReadError::Io(describe(&e));
-    let meta = std::fs::metadata(path).map_err(io)?;
-    if meta.is_dir() {
-        return Err(ReadError::Directory);
-    }
-    if !meta.is_file() {
-        return Err(ReadError::NotRegular);
-    }
-    if meta.len() > MAX_DATA_BYTES {
-        return Err(ReadError::TooLarge(meta.len()));
-    }
-    let mut bytes = Vec::new();
-    std::fs::File::open(path)
-        .and_then(|f| f.take(MAX_DATA_BYTES + 1).read_to_end(&mut bytes))
-        .map_err(io)?;
-    String::from_utf8(bytes).map_err(|e| {
-        let valid = &e.as_bytes()[..e.utf8_error().valid_up_to()];
-        let line = valid.iter().filter(|&&b| b == b'\n').count() + 1;
-        let last = valid.rsplit(|&b| b == b'\n').next().unwrap_or(&[]);
-        let column = String::from_utf8_lossy(last).chars().count() + 1;
-        ReadError::NotUtf8 { line, column }
-    })
-}
 
 /// The text of `path`, or an error naming it: `FILE: message`, or `FILE:LINE:COLUMN: not
 /// UTF-8 text`.
@@ -76,17 +24,6 @@ pub fn read_text(path: &Path) -> anyhow::Result<String> {
             anyhow::anyhow!("{file}:{line}:{column}: not UTF-8 text")
         }
     })
-}
-
-fn describe(e: &std::io::Error) -> String {
-    match e.kind() {
-        std::io::ErrorKind::NotFound => "no such file".into(),
-        std::io::ErrorKind::PermissionDenied => "permission denied".into(),
-        _ => {
-            let s = e.to_string();
-            s.split(" (os error").next().unwrap_or(&s).to_string()
-        }
-    }
 }
 
 /// A parse error at its place in `path`.

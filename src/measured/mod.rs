@@ -1,8 +1,10 @@
 //! Measured data read from text: force–time traces, COR-against-speed tables and drop tests
 //! (docs/fitting.md). Parsing from `&str`; reading a file at the edge (a regular file, a size
-//! limit, UTF-8) is `file`'s (with the `tui` feature). Every error carries
+//! limit, UTF-8) is `bounded`'s, its errors worded for the command line by `file` (with the
+//! `tui` feature). Every error carries
 //! the 1-based line and column it is about.
 
+pub mod bounded;
 mod court;
 mod drop;
 mod oblique;

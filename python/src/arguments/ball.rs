@@ -101,12 +101,12 @@ macro_rules! ball_pyfunction {
         ) -> $ret {
             let set = bouncelab::api::Overrides { mass, radius, k_p, damping, k_r, z_p };
             let given = [&pressure, &after, &half_life];
-            let $choice = $crate::ball_args::BallChoice {
+            let $choice = $crate::arguments::ball::BallChoice {
                 preset: $preset,
                 params: $params,
                 law: $law,
                 set,
-                conditions: $crate::ball_args::conditions(given, temperature, inflated_at)?,
+                conditions: $crate::arguments::ball::conditions(given, temperature, inflated_at)?,
             };
             $body
         }
