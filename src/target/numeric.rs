@@ -17,28 +17,15 @@
 //! dashpot so weak that the phase is stiff runs out of the step budget and says so (no answer).
 
 use super::history::Samples;
+use super::series::{MAX_PHASES, RELOAD, Series, X, first_event, integrate, state_at};
 use super::{Outcome, Surface, horizon};
 use crate::model::contact::{Contact, ContactLaw, Unloading};
 use crate::model::params::Normalized;
-use crate::solver::dop853::{self, EndState};
-use crate::solver::roots::{brent, first_rising};
+use crate::solver::roots::brent;
 use crate::solver::{Method, Unresolved};
 use differential_equations::interpolate::Interpolation;
-use differential_equations::ode::ODE;
 use differential_equations::prelude::{ControlFlag, Solout};
 use differential_equations::solution::Solution;
-
-type X = [f64; 4];
-
-/// Tolerance of DOP853 (relative; absolute 1e-2 of it: states are of order 1).
-const RTOL: f64 = 1e-12;
-/// Step budget of one phase.
-const MAX_STEPS: usize = 200_000;
-/// Phase budget (load, unload, reload …).
-const MAX_PHASES: usize = 256;
-/// How far past z̄_m, relative, an unloading ball must rise before it reloads (against the
-/// integrator's noise at a slow turn, as `solver::numeric::RELOAD_SLACK`).
-const RELOAD: f64 = 1e-9;
 /// A ball whose remaining energy could not give it a COR above this has come to rest.
 const REST_COR: f64 = 1e-9;
 
@@ -70,6 +57,23 @@ impl Chain {
         }
     }
 
+    /// Twice the energy still held; √ of it bounds the COR.
+    fn energy2(&self, x: &X) -> f64 {
+        let contact = match &self.phase {
+            Phase::Loading => self.contact.loading_work(x[0]),
+            Phase::Unloading(u) => self.contact.unloading_work(x[0], u),
+        };
+        let f = self.force(x[0]);
+        let surface = if self.s.zeta_s.is_infinite() {
+            f * f / self.s.lambda_s
+        } else {
+            self.s.lambda_s * x[3] * x[3]
+        };
+        x[1] * x[1] + 2.0 * contact + self.n.lambda * x[2] * x[2] + surface
+    }
+}
+
+impl Series for Chain {
     /// (F̄, ȳ', s̄', z̄') at x.
     fn rates(&self, x: &X) -> (f64, f64, f64, f64) {
         let f = self.force(x[0]);
@@ -95,28 +99,6 @@ impl Chain {
             Phase::Loading => [-self.rates(x).3, f64::NEG_INFINITY],
             Phase::Unloading(u) => [u.z_f - x[0], x[0] - u.z_m * (1.0 + RELOAD)],
         }
-    }
-
-    /// Twice the energy still held; √ of it bounds the COR.
-    fn energy2(&self, x: &X) -> f64 {
-        let contact = match &self.phase {
-            Phase::Loading => self.contact.loading_work(x[0]),
-            Phase::Unloading(u) => self.contact.unloading_work(x[0], u),
-        };
-        let f = self.force(x[0]);
-        let surface = if self.s.zeta_s.is_infinite() {
-            f * f / self.s.lambda_s
-        } else {
-            self.s.lambda_s * x[3] * x[3]
-        };
-        x[1] * x[1] + 2.0 * contact + self.n.lambda * x[2] * x[2] + surface
-    }
-}
-
-impl ODE<f64, X> for Chain {
-    fn diff(&self, _t: f64, x: &X, dx: &mut X) {
-        let (f, ydot, sdot, zdot) = self.rates(x);
-        *dx = [zdot, -f, ydot, sdot];
     }
 }
 
@@ -156,8 +138,7 @@ impl Solout<f64, X> for Watcher<'_> {
         }
         self.s_max = self.s_max.max(x[3]);
         self.last = (t, *x);
-        let (ga, gb) = (self.chain.watches(x_prev), self.chain.watches(x));
-        let best = first_rising(ga, gb, t_prev, t, |i, tt| self.chain.watches(&at(tt))[i]);
+        let best = first_event(self.chain, (t_prev, x_prev), (t, x), &mut at);
         // the history's points in this step, up to the event that ends the phase
         let upto = best.map_or(t, |(tc, _)| tc);
         let chain = self.chain;
@@ -179,10 +160,6 @@ impl Solout<f64, X> for Watcher<'_> {
             None => ControlFlag::Continue,
         }
     }
-}
-
-fn integrate<O: Solout<f64, X>>(chain: &Chain, t0: f64, x0: X, tf: f64, out: &mut O) -> bool {
-    t0 >= tf || dop853::run(chain, (t0, &x0), tf, (RTOL, MAX_STEPS), out)
 }
 
 /// The impact, any law; an error is the budget that ran out, with the phases taken.
@@ -257,9 +234,8 @@ impl Run<'_> {
         s_max = w.s_max;
         // each peak of the deflection, integrated to rather than read off the dense output
         for (tp, t0, x0) in std::mem::take(&mut w.peaks) {
-            let mut end = EndState(t0, x0);
-            if integrate(chain, t0, x0, tp, &mut end) {
-                s_max = s_max.max(end.1[3]);
+            if let Some(at_peak) = state_at(chain, (t0, x0), tp) {
+                s_max = s_max.max(at_peak[3]);
             }
         }
         let Some((tc, which, tp, xp)) = w.hit else {
@@ -277,11 +253,10 @@ impl Run<'_> {
             };
         };
         // the state at the event, integrated to it rather than read off the dense output
-        let mut end = EndState(tp, xp);
-        if !integrate(chain, tp, xp, tc, &mut end) {
+        let Some(end) = state_at(chain, (tp, xp), tc) else {
             return Err(Unresolved::Steps);
-        }
-        (self.t, self.x) = (tc, end.1);
+        };
+        (self.t, self.x) = (tc, end);
         let x = self.x;
         self.peaks.2 = s_max.max(x[3]);
         match (self.chain.phase, which) {
