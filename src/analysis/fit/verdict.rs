@@ -240,6 +240,17 @@ pub(super) fn judge(f: &mut super::result::MultiFit, lack: Option<LackOfFit>) {
     }
 }
 
+/// Tests': that a fit judged by [`judge_law`] gave no answer for the lack of fit it found
+/// (`no_answer` naming it).
+#[cfg(test)]
+#[track_caller]
+pub(super) fn assert_refused_for_lack_of_fit(no_answer: &[String]) {
+    assert!(
+        no_answer.iter().any(|w| w.contains("lack of fit")),
+        "{no_answer:?}"
+    );
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
