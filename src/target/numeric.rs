@@ -17,15 +17,12 @@
 //! dashpot so weak that the phase is stiff runs out of the step budget and says so (no answer).
 
 use super::history::Samples;
-use super::series::{MAX_PHASES, RELOAD, Series, X, first_event, integrate, state_at};
+use super::series::{MAX_PHASES, RELOAD, Series, Watch, X, first_event, state_at, watch_run};
 use super::{Outcome, Surface, horizon};
 use crate::model::contact::{Contact, ContactLaw, Unloading};
 use crate::model::params::Normalized;
 use crate::solver::roots::brent;
 use crate::solver::{Method, Unresolved};
-use differential_equations::interpolate::Interpolation;
-use differential_equations::prelude::{ControlFlag, Solout};
-use differential_equations::solution::Solution;
 /// A ball whose remaining energy could not give it a COR above this has come to rest.
 const REST_COR: f64 = 1e-9;
 
@@ -106,7 +103,6 @@ impl Series for Chain {
 /// deflection on it (where s̄' falls through 0).
 struct Watcher<'a> {
     chain: &'a Chain,
-    hit: Option<(f64, usize, f64, X)>,
     last: (f64, X),
     s_max: f64,
     /// Where s̄ peaks within a step (τ), and the step's start (τ, x) to integrate to it from.
@@ -115,20 +111,13 @@ struct Watcher<'a> {
     samples: &'a mut Samples,
 }
 
-impl Solout<f64, X> for Watcher<'_> {
-    fn solout<I>(
+impl Watch for Watcher<'_> {
+    fn step(
         &mut self,
-        t: f64,
-        t_prev: f64,
-        x: &X,
-        x_prev: &X,
-        interp: &mut I,
-        _s: &mut Solution<f64, X>,
-    ) -> ControlFlag<f64, X>
-    where
-        I: Interpolation<f64, X> + ?Sized,
-    {
-        let mut at = |tt: f64| interp.interpolate(tt).unwrap_or(*x);
+        (t_prev, x_prev): (f64, &X),
+        (t, x): (f64, &X),
+        at: &mut dyn FnMut(f64) -> X,
+    ) -> Option<(f64, usize)> {
         // the surface's peak deflection, where s̄' falls through 0 within the step
         let sdot = |x: &X| self.chain.rates(x).2;
         let (da, db) = (sdot(x_prev), sdot(x));
@@ -138,7 +127,7 @@ impl Solout<f64, X> for Watcher<'_> {
         }
         self.s_max = self.s_max.max(x[3]);
         self.last = (t, *x);
-        let best = first_event(self.chain, (t_prev, x_prev), (t, x), &mut at);
+        let best = first_event(self.chain, (t_prev, x_prev), (t, x), at);
         // the history's points in this step, up to the event that ends the phase
         let upto = best.map_or(t, |(tc, _)| tc);
         let chain = self.chain;
@@ -152,13 +141,7 @@ impl Solout<f64, X> for Watcher<'_> {
             let (f, _, _, _) = chain.rates(&x);
             [f, x[0], x[0] + x[2] + x[3], x[3]]
         });
-        match best {
-            Some((tc, i)) => {
-                self.hit = Some((tc, i, t_prev, *x_prev));
-                ControlFlag::Terminate
-            }
-            None => ControlFlag::Continue,
-        }
+        best
     }
 }
 
@@ -224,13 +207,12 @@ impl Run<'_> {
         let (f_max, z_max, mut s_max) = self.peaks;
         let mut w = Watcher {
             chain,
-            hit: None,
             last: (self.t, self.x),
             s_max,
             peaks: Vec::new(),
             samples: &mut *self.samples,
         };
-        let done = integrate(chain, self.t, self.x, self.t_max, &mut w);
+        let (done, hit) = watch_run(chain, (self.t, self.x), self.t_max, &mut w);
         s_max = w.s_max;
         // each peak of the deflection, integrated to rather than read off the dense output
         for (tp, t0, x0) in std::mem::take(&mut w.peaks) {
@@ -238,7 +220,7 @@ impl Run<'_> {
                 s_max = s_max.max(at_peak[3]);
             }
         }
-        let Some((tc, which, tp, xp)) = w.hit else {
+        let Some((tc, which, tp, xp)) = hit else {
             // the horizon: at rest, or no answer
             let (t_end, x_end) = w.last;
             return match (done, chain.energy2(&x_end).sqrt() < REST_COR) {

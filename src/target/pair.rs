@@ -18,7 +18,7 @@
 //! (`numeric`). Identical balls make both halves equal at every step: the wall impact of one
 //! ball at half the closing speed (`identical_balls_head_on_are_the_wall_impact`).
 
-use super::series::{FirstEvent, MAX_PHASES, MAX_STEPS, RELOAD, Series, X, integrate, state_at};
+use super::series::{FirstEvent, MAX_PHASES, MAX_STEPS, RELOAD, Series, X, state_at, watch_run};
 use crate::model::contact::{Contact, ContactLaw, Unloading};
 use crate::model::params::{ImpactParams, Normalized};
 use crate::solver::Unresolved;
@@ -165,14 +165,11 @@ pub fn solve(
     let mut f_max: f64 = 0.0;
     let (mut z_max, mut z_f): (f64, f64) = (0.0, 0.0);
     for _ in 0..MAX_PHASES {
-        let mut w = FirstEvent {
-            series: &pair,
-            hit: None,
-        };
-        if !integrate(&pair, t, x, t_max, &mut w) {
+        let (done, hit) = watch_run(&pair, (t, x), t_max, &mut FirstEvent(&pair));
+        if !done {
             return Err(Unresolved::Steps);
         }
-        let Some((tc, which, tp, xp)) = w.hit else {
+        let Some((tc, which, tp, xp)) = hit else {
             // followed to the horizon without letting go: no rebound
             return Ok(PairOutcome {
                 cor: 0.0,

@@ -53,7 +53,7 @@ impl<S: Series> ODE<f64, X> for Motion<'_, S> {
 
 /// Integrate `series` from (`t0`, `x0`) to `tf`, every step handed to `out`; whether it got
 /// there within [`MAX_STEPS`] (nothing to do when `t0` is already at or past `tf`).
-pub(super) fn integrate<S: Series, O: Solout<f64, X>>(
+fn integrate<S: Series, O: Solout<f64, X>>(
     series: &S,
     t0: f64,
     x0: X,
@@ -76,20 +76,49 @@ pub(super) fn first_event<S: Series>(
     series: &S,
     (t_prev, x_prev): (f64, &X),
     (t, x): (f64, &X),
-    mut at: impl FnMut(f64) -> X,
+    at: &mut dyn FnMut(f64) -> X,
 ) -> Option<(f64, usize)> {
     let (ga, gb) = (series.watches(x_prev), series.watches(x));
     first_rising(ga, gb, t_prev, t, |i, tt| series.watches(&at(tt))[i])
 }
 
-/// Stops the run at the first watched crossing: (its τ, which watch, the step's start τ and
-/// x to integrate to it from).
-pub(super) struct FirstEvent<'a, S> {
-    pub series: &'a S,
-    pub hit: Option<(f64, usize, f64, X)>,
+/// What follows a run step by step on the dense output: the event that ends the phase within
+/// the step from (`t_prev`, `x_prev`) to (`t`, `x`), `at` the step's dense output, as
+/// [`first_event`] gives it (and whatever else the watcher keeps on the way).
+pub(super) trait Watch {
+    fn step(
+        &mut self,
+        prev: (f64, &X),
+        end: (f64, &X),
+        at: &mut dyn FnMut(f64) -> X,
+    ) -> Option<(f64, usize)>;
 }
 
-impl<S: Series> Solout<f64, X> for FirstEvent<'_, S> {
+/// Watches for the ends of the phase only.
+pub(super) struct FirstEvent<'a, S>(pub &'a S);
+
+impl<S: Series> Watch for FirstEvent<'_, S> {
+    fn step(
+        &mut self,
+        prev: (f64, &X),
+        end: (f64, &X),
+        at: &mut dyn FnMut(f64) -> X,
+    ) -> Option<(f64, usize)> {
+        first_event(self.0, prev, end, at)
+    }
+}
+
+/// A phase's event: its τ, which watch, and the step's start (τ, x) to integrate to it from.
+pub(super) type Hit = (f64, usize, f64, X);
+
+/// The integrator's view of a [`Watch`]: every step handed to it, the run stopped at the
+/// first event.
+struct Watching<'w, W> {
+    watch: &'w mut W,
+    hit: Option<Hit>,
+}
+
+impl<W: Watch> Solout<f64, X> for Watching<'_, W> {
     fn solout<I>(
         &mut self,
         t: f64,
@@ -102,8 +131,8 @@ impl<S: Series> Solout<f64, X> for FirstEvent<'_, S> {
     where
         I: Interpolation<f64, X> + ?Sized,
     {
-        let at = |tt: f64| interp.interpolate(tt).unwrap_or(*x);
-        match first_event(self.series, (t_prev, x_prev), (t, x), at) {
+        let mut at = |tt: f64| interp.interpolate(tt).unwrap_or(*x);
+        match self.watch.step((t_prev, x_prev), (t, x), &mut at) {
             Some((tc, i)) => {
                 self.hit = Some((tc, i, t_prev, *x_prev));
                 ControlFlag::Terminate
@@ -111,4 +140,17 @@ impl<S: Series> Solout<f64, X> for FirstEvent<'_, S> {
             None => ControlFlag::Continue,
         }
     }
+}
+
+/// Integrate `series` from (`t0`, `x0`) toward `tf` under `watch`: whether the run ended
+/// within [`MAX_STEPS`] (at `tf` or at an event), and the event, if one ended it.
+pub(super) fn watch_run<S: Series, W: Watch>(
+    series: &S,
+    (t0, x0): (f64, X),
+    tf: f64,
+    watch: &mut W,
+) -> (bool, Option<Hit>) {
+    let mut w = Watching { watch, hit: None };
+    let done = integrate(series, t0, x0, tf, &mut w);
+    (done, w.hit)
 }

@@ -251,6 +251,13 @@ pub(super) fn assert_refused_for_lack_of_fit(no_answer: &[String]) {
     );
 }
 
+/// Tests': an estimate `got` within the relative `tol` of the `truth` it should give back.
+#[cfg(test)]
+#[track_caller]
+pub(super) fn assert_recovered(got: f64, truth: f64, tol: f64) {
+    assert!((got / truth - 1.0).abs() < tol, "{got} vs {truth}");
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
