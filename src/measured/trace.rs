@@ -221,9 +221,42 @@ fn short(x: f64) -> String {
     crate::text::short(x, 3)
 }
 
+/// Tests' synthetic traces.
+#[cfg(test)]
+impl Trace {
+    /// These samples as a two-column file with a header reads them: sample i on line i + 2
+    /// (`from_columns_is_what_the_file_reads`), with no text behind them to place the force
+    /// cells in: column 2 for each.
+    pub(crate) fn from_columns(time: Vec<f64>, force: Vec<f64>) -> Trace {
+        let rows = time.len();
+        Trace {
+            lines: (2..rows + 2).collect(),
+            force_columns: vec![2; rows],
+            end_line: rows + 2,
+            time,
+            force,
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn from_columns_is_what_the_file_reads() {
+        let (time, force) = (vec![0.0, 1e-3, 2e-3], vec![0.5, 80.0, 0.25]);
+        let text = "time_s,force_N\n0,0.5\n0.001,80\n0.002,0.25\n";
+        let (made, read) = (
+            Trace::from_columns(time, force),
+            Trace::parse(text).unwrap(),
+        );
+        assert_eq!(
+            (made.time, made.force, made.lines, made.end_line),
+            (read.time, read.force, read.lines, read.end_line)
+        );
+        assert_eq!(made.force_columns, [2, 2, 2]);
+    }
 
     fn half_sine(offset: f64, base: f64) -> String {
         let mut s = String::from("# made up\ntime_ms,force_kN\n");

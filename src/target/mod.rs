@@ -29,6 +29,7 @@ mod history;
 mod linear;
 mod numeric;
 pub mod pair;
+mod series;
 pub mod surface;
 #[cfg(test)]
 mod tests;

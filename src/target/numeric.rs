@@ -17,28 +17,12 @@
 //! dashpot so weak that the phase is stiff runs out of the step budget and says so (no answer).
 
 use super::history::Samples;
+use super::series::{MAX_PHASES, RELOAD, Series, Watch, X, first_event, state_at, watch_run};
 use super::{Outcome, Surface, horizon};
 use crate::model::contact::{Contact, ContactLaw, Unloading};
 use crate::model::params::Normalized;
-use crate::solver::dop853::{self, EndState};
-use crate::solver::roots::{brent, first_rising};
+use crate::solver::roots::brent;
 use crate::solver::{Method, Unresolved};
-use differential_equations::interpolate::Interpolation;
-use differential_equations::ode::ODE;
-use differential_equations::prelude::{ControlFlag, Solout};
-use differential_equations::solution::Solution;
-
-type X = [f64; 4];
-
-/// Tolerance of DOP853 (relative; absolute 1e-2 of it: states are of order 1).
-const RTOL: f64 = 1e-12;
-/// Step budget of one phase.
-const MAX_STEPS: usize = 200_000;
-/// Phase budget (load, unload, reload …).
-const MAX_PHASES: usize = 256;
-/// How far past z̄_m, relative, an unloading ball must rise before it reloads (against the
-/// integrator's noise at a slow turn, as `solver::numeric::RELOAD_SLACK`).
-const RELOAD: f64 = 1e-9;
 /// A ball whose remaining energy could not give it a COR above this has come to rest.
 const REST_COR: f64 = 1e-9;
 
@@ -70,6 +54,23 @@ impl Chain {
         }
     }
 
+    /// Twice the energy still held; √ of it bounds the COR.
+    fn energy2(&self, x: &X) -> f64 {
+        let contact = match &self.phase {
+            Phase::Loading => self.contact.loading_work(x[0]),
+            Phase::Unloading(u) => self.contact.unloading_work(x[0], u),
+        };
+        let f = self.force(x[0]);
+        let surface = if self.s.zeta_s.is_infinite() {
+            f * f / self.s.lambda_s
+        } else {
+            self.s.lambda_s * x[3] * x[3]
+        };
+        x[1] * x[1] + 2.0 * contact + self.n.lambda * x[2] * x[2] + surface
+    }
+}
+
+impl Series for Chain {
     /// (F̄, ȳ', s̄', z̄') at x.
     fn rates(&self, x: &X) -> (f64, f64, f64, f64) {
         let f = self.force(x[0]);
@@ -96,35 +97,12 @@ impl Chain {
             Phase::Unloading(u) => [u.z_f - x[0], x[0] - u.z_m * (1.0 + RELOAD)],
         }
     }
-
-    /// Twice the energy still held; √ of it bounds the COR.
-    fn energy2(&self, x: &X) -> f64 {
-        let contact = match &self.phase {
-            Phase::Loading => self.contact.loading_work(x[0]),
-            Phase::Unloading(u) => self.contact.unloading_work(x[0], u),
-        };
-        let f = self.force(x[0]);
-        let surface = if self.s.zeta_s.is_infinite() {
-            f * f / self.s.lambda_s
-        } else {
-            self.s.lambda_s * x[3] * x[3]
-        };
-        x[1] * x[1] + 2.0 * contact + self.n.lambda * x[2] * x[2] + surface
-    }
-}
-
-impl ODE<f64, X> for Chain {
-    fn diff(&self, _t: f64, x: &X, dx: &mut X) {
-        let (f, ydot, sdot, zdot) = self.rates(x);
-        *dx = [zdot, -f, ydot, sdot];
-    }
 }
 
 /// Finds the first watched crossing on each step's dense output, and the surface's peak
 /// deflection on it (where s̄' falls through 0).
 struct Watcher<'a> {
     chain: &'a Chain,
-    hit: Option<(f64, usize, f64, X)>,
     last: (f64, X),
     s_max: f64,
     /// Where s̄ peaks within a step (τ), and the step's start (τ, x) to integrate to it from.
@@ -133,20 +111,13 @@ struct Watcher<'a> {
     samples: &'a mut Samples,
 }
 
-impl Solout<f64, X> for Watcher<'_> {
-    fn solout<I>(
+impl Watch for Watcher<'_> {
+    fn step(
         &mut self,
-        t: f64,
-        t_prev: f64,
-        x: &X,
-        x_prev: &X,
-        interp: &mut I,
-        _s: &mut Solution<f64, X>,
-    ) -> ControlFlag<f64, X>
-    where
-        I: Interpolation<f64, X> + ?Sized,
-    {
-        let mut at = |tt: f64| interp.interpolate(tt).unwrap_or(*x);
+        (t_prev, x_prev): (f64, &X),
+        (t, x): (f64, &X),
+        at: &mut dyn FnMut(f64) -> X,
+    ) -> Option<(f64, usize)> {
         // the surface's peak deflection, where s̄' falls through 0 within the step
         let sdot = |x: &X| self.chain.rates(x).2;
         let (da, db) = (sdot(x_prev), sdot(x));
@@ -156,8 +127,7 @@ impl Solout<f64, X> for Watcher<'_> {
         }
         self.s_max = self.s_max.max(x[3]);
         self.last = (t, *x);
-        let (ga, gb) = (self.chain.watches(x_prev), self.chain.watches(x));
-        let best = first_rising(ga, gb, t_prev, t, |i, tt| self.chain.watches(&at(tt))[i]);
+        let best = first_event(self.chain, (t_prev, x_prev), (t, x), at);
         // the history's points in this step, up to the event that ends the phase
         let upto = best.map_or(t, |(tc, _)| tc);
         let chain = self.chain;
@@ -171,18 +141,8 @@ impl Solout<f64, X> for Watcher<'_> {
             let (f, _, _, _) = chain.rates(&x);
             [f, x[0], x[0] + x[2] + x[3], x[3]]
         });
-        match best {
-            Some((tc, i)) => {
-                self.hit = Some((tc, i, t_prev, *x_prev));
-                ControlFlag::Terminate
-            }
-            None => ControlFlag::Continue,
-        }
+        best
     }
-}
-
-fn integrate<O: Solout<f64, X>>(chain: &Chain, t0: f64, x0: X, tf: f64, out: &mut O) -> bool {
-    t0 >= tf || dop853::run(chain, (t0, &x0), tf, (RTOL, MAX_STEPS), out)
 }
 
 /// The impact, any law; an error is the budget that ran out, with the phases taken.
@@ -247,22 +207,20 @@ impl Run<'_> {
         let (f_max, z_max, mut s_max) = self.peaks;
         let mut w = Watcher {
             chain,
-            hit: None,
             last: (self.t, self.x),
             s_max,
             peaks: Vec::new(),
             samples: &mut *self.samples,
         };
-        let done = integrate(chain, self.t, self.x, self.t_max, &mut w);
+        let (done, hit) = watch_run(chain, (self.t, self.x), self.t_max, &mut w);
         s_max = w.s_max;
         // each peak of the deflection, integrated to rather than read off the dense output
         for (tp, t0, x0) in std::mem::take(&mut w.peaks) {
-            let mut end = EndState(t0, x0);
-            if integrate(chain, t0, x0, tp, &mut end) {
-                s_max = s_max.max(end.1[3]);
+            if let Some(at_peak) = state_at(chain, (t0, x0), tp) {
+                s_max = s_max.max(at_peak[3]);
             }
         }
-        let Some((tc, which, tp, xp)) = w.hit else {
+        let Some((tc, which, tp, xp)) = hit else {
             // the horizon: at rest, or no answer
             let (t_end, x_end) = w.last;
             return match (done, chain.energy2(&x_end).sqrt() < REST_COR) {
@@ -277,11 +235,10 @@ impl Run<'_> {
             };
         };
         // the state at the event, integrated to it rather than read off the dense output
-        let mut end = EndState(tp, xp);
-        if !integrate(chain, tp, xp, tc, &mut end) {
+        let Some(end) = state_at(chain, (tp, xp), tc) else {
             return Err(Unresolved::Steps);
-        }
-        (self.t, self.x) = (tc, end.1);
+        };
+        (self.t, self.x) = (tc, end);
         let x = self.x;
         self.peaks.2 = s_max.max(x[3]);
         match (self.chain.phase, which) {

@@ -18,24 +18,11 @@
 //! (`numeric`). Identical balls make both halves equal at every step: the wall impact of one
 //! ball at half the closing speed (`identical_balls_head_on_are_the_wall_impact`).
 
+use super::series::{FirstEvent, MAX_PHASES, MAX_STEPS, RELOAD, Series, X, state_at, watch_run};
 use crate::model::contact::{Contact, ContactLaw, Unloading};
 use crate::model::params::{ImpactParams, Normalized};
 use crate::solver::Unresolved;
-use crate::solver::dop853::{self, EndState};
-use crate::solver::roots::{brent, first_rising};
-use differential_equations::interpolate::Interpolation;
-use differential_equations::ode::ODE;
-use differential_equations::prelude::{ControlFlag, Solout};
-use differential_equations::solution::Solution;
-
-/// State (Z̄, ᾱ', ȳ₁, ȳ₂).
-type X = [f64; 4];
-
-const RTOL: f64 = 1e-12;
-const MAX_STEPS: usize = 200_000;
-const MAX_PHASES: usize = 256;
-/// How far past Z̄_m, relative, an unloading pair must rise before it reloads.
-const RELOAD: f64 = 1e-9;
+use crate::solver::roots::brent;
 
 /// The pair's answer in ball 1's reduced units: ᾱ' at separation (−e), the peak force, the
 /// contact time (τ) and ball 1's own contact indentations.
@@ -105,7 +92,10 @@ impl Pair {
         }
         brent(h, 0.0, hi, h0, hh, 1e-16 * hi)
     }
+}
 
+/// The state is (Z̄, ᾱ', ȳ₁, ȳ₂).
+impl Series for Pair {
     /// (F̄, ȳ₁', ȳ₂', Z̄') at x.
     fn rates(&self, x: &X) -> (f64, f64, f64, f64) {
         let f = self.force(x[0]);
@@ -132,47 +122,6 @@ impl Pair {
             }
         }
     }
-}
-
-impl ODE<f64, X> for Pair {
-    fn diff(&self, _t: f64, x: &X, dx: &mut X) {
-        let (f, y1, y2, z) = self.rates(x);
-        *dx = [z, -f, y1, y2];
-    }
-}
-
-struct Watcher<'a> {
-    pair: &'a Pair,
-    hit: Option<(f64, usize, f64, X)>,
-}
-
-impl Solout<f64, X> for Watcher<'_> {
-    fn solout<I>(
-        &mut self,
-        t: f64,
-        t_prev: f64,
-        x: &X,
-        x_prev: &X,
-        interp: &mut I,
-        _s: &mut Solution<f64, X>,
-    ) -> ControlFlag<f64, X>
-    where
-        I: Interpolation<f64, X> + ?Sized,
-    {
-        let (ga, gb) = (self.pair.watches(x_prev), self.pair.watches(x));
-        let at = |i: usize, tt: f64| self.pair.watches(&interp.interpolate(tt).unwrap_or(*x))[i];
-        match first_rising(ga, gb, t_prev, t, at) {
-            Some((tc, i)) => {
-                self.hit = Some((tc, i, t_prev, *x_prev));
-                ControlFlag::Terminate
-            }
-            None => ControlFlag::Continue,
-        }
-    }
-}
-
-fn integrate<O: Solout<f64, X>>(pair: &Pair, t0: f64, x0: X, tf: f64, out: &mut O) -> bool {
-    t0 >= tf || dop853::run(pair, (t0, &x0), tf, (RTOL, MAX_STEPS), out)
 }
 
 /// The head-on impact of ball `p1` with ball `p2` (their `v0` ignored) at closing speed
@@ -216,14 +165,11 @@ pub fn solve(
     let mut f_max: f64 = 0.0;
     let (mut z_max, mut z_f): (f64, f64) = (0.0, 0.0);
     for _ in 0..MAX_PHASES {
-        let mut w = Watcher {
-            pair: &pair,
-            hit: None,
-        };
-        if !integrate(&pair, t, x, t_max, &mut w) {
+        let (done, hit) = watch_run(&pair, (t, x), t_max, &mut FirstEvent(&pair));
+        if !done {
             return Err(Unresolved::Steps);
         }
-        let Some((tc, which, tp, xp)) = w.hit else {
+        let Some((tc, which, tp, xp)) = hit else {
             // followed to the horizon without letting go: no rebound
             return Ok(PairOutcome {
                 cor: 0.0,
@@ -234,11 +180,10 @@ pub fn solve(
                 z_f,
             });
         };
-        let mut end = EndState(tp, xp);
-        if !integrate(&pair, tp, xp, tc, &mut end) {
+        let Some(end) = state_at(&pair, (tp, xp), tc) else {
             return Err(Unresolved::Steps);
-        }
-        (t, x) = (tc, end.1);
+        };
+        (t, x) = (tc, end);
         match (pair.branch, which) {
             (Branch::Loading, _) => {
                 let f = pair.force(x[0]);

@@ -182,13 +182,7 @@ pub(super) mod tests {
                 f + 0.3 + 3.0 * normal()
             })
             .collect();
-        Trace {
-            lines: (2..rows + 2).collect(),
-            force_columns: vec![2; rows],
-            end_line: rows + 2,
-            time,
-            force,
-        }
+        Trace::from_columns(time, force)
     }
 
     fn fit(t: &Trace, choose: fn(&Trace, &TraceSummary) -> Samples) -> MultiFit {

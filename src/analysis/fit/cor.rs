@@ -8,7 +8,7 @@
 //! also every [`WATCH_EVERY`] impacts within a run, and the watch may stop the fit.
 
 use super::lm::Residuals;
-use super::{Param, apply, fit_k_r};
+use super::{Param, apply, fit_k_r, log_step};
 use crate::analysis::work::Watch;
 use crate::measured::CorPoint;
 use crate::model::contact::ContactLaw;
@@ -46,18 +46,13 @@ impl<'a> CorProblem<'a> {
         points: &'a [CorPoint],
         watch: &'a dyn Watch,
     ) -> Self {
-        let log_step = if law == ContactLaw::Linear {
-            1e-5
-        } else {
-            1e-4
-        };
         CorProblem {
             base,
             law,
             free,
             points,
             scale: [Cell::new(1.0), Cell::new(1.0), Cell::new(1.0)],
-            log_step,
+            log_step: log_step(law),
             watch,
             runs: Cell::new(0),
             stopped: Cell::new(false),

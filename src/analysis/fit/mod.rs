@@ -156,3 +156,14 @@ pub fn apply(base: &ImpactParams, free: &[Param], values: &[f64]) -> ImpactParam
     }
     b
 }
+
+/// The forward-difference step in a log-parameter (ln p) of the models that run an impact per
+/// evaluation, the COR table's and the force trace's (`Residuals::step`): 1e-5 under the
+/// linear law, 1e-4 under the others, the two values the fit was written with (a25b884).
+pub(super) fn log_step(law: ContactLaw) -> f64 {
+    if law == ContactLaw::Linear {
+        1e-5
+    } else {
+        1e-4
+    }
+}

@@ -228,13 +228,7 @@ mod tests {
                 0.3 + if s <= 0.0 || s >= tf { 0.0 } else { f }
             })
             .collect();
-        crate::measured::Trace {
-            lines: (2..rows + 2).collect(),
-            force_columns: vec![2; rows],
-            end_line: rows + 2,
-            time,
-            force,
-        }
+        crate::measured::Trace::from_columns(time, force)
     }
 
     /// The largest difference between the exact Jacobian's parameter columns and central

@@ -240,6 +240,24 @@ pub(super) fn judge(f: &mut super::result::MultiFit, lack: Option<LackOfFit>) {
     }
 }
 
+/// Tests': that a fit judged by [`judge_law`] gave no answer for the lack of fit it found
+/// (`no_answer` naming it).
+#[cfg(test)]
+#[track_caller]
+pub(super) fn assert_refused_for_lack_of_fit(no_answer: &[String]) {
+    assert!(
+        no_answer.iter().any(|w| w.contains("lack of fit")),
+        "{no_answer:?}"
+    );
+}
+
+/// Tests': an estimate `got` within the relative `tol` of the `truth` it should give back.
+#[cfg(test)]
+#[track_caller]
+pub(super) fn assert_recovered(got: f64, truth: f64, tol: f64) {
+    assert!((got / truth - 1.0).abs() < tol, "{got} vs {truth}");
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
