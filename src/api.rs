@@ -97,6 +97,7 @@ mod shot;
 mod shot_after;
 mod shot_mc;
 mod shot_net;
+mod shot_row;
 mod standard_conditions;
 mod standards;
 mod statics;
@@ -135,6 +136,7 @@ pub use shot_mc::{
     NetMc, SHOT_MC_END_QUANTITIES, SHOT_MC_QUANTITIES, ShotMcReport, ShotMcSpec, ShotSpread, Spread,
 };
 pub use shot_net::{Net, NetReport, TENNIS_NET_HEIGHT};
+pub use shot_row::SHOT_QUANTITIES;
 pub use standard_conditions::test_words;
 pub use standards::{
     ConditionsEntry, PressureLossEntry, PressureLossTest, StandardEntry, not_a_drop_standard,

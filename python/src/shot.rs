@@ -3,7 +3,7 @@
 
 use crate::arguments::ball::ball_pyfunction;
 use crate::error;
-use bouncelab::api::{Net, NetReport, ShotReport, ShotSpec, TENNIS_NET_HEIGHT};
+use bouncelab::api::{Net, NetReport, SHOT_QUANTITIES, ShotReport, ShotSpec, TENNIS_NET_HEIGHT};
 use bouncelab::flight::{Ends, Launch};
 use numpy::PyArray1;
 use pyo3::exceptions::PyValueError;
@@ -244,49 +244,10 @@ fn past_bounce(ball: &bouncelab::Ball, spec: &ShotSpec, d: f64) -> PyResult<f64>
     })
 }
 
-/// The names of `shots`' answer, in order.
-const SHOTS: [&str; 12] = [
-    "landing_t",
-    "landing_x",
-    "v_in",
-    "angle_in",
-    "v_out",
-    "angle_out",
-    "spin_out",
-    "end_t",
-    "end_x",
-    "end_y",
-    "end_vx",
-    "end_vy",
-];
-
-/// The names of `shots`' net arrays, with `net=`: the clearance (NaN where the ball does not
-/// reach the net) and whether it clears it (1 or 0 here, a bool array out).
-const SHOTS_NET: [&str; 2] = ["net_clearance", "net_cleared"];
-
-/// One shot's numbers for `shots` (NaN for a bounce that did not happen), then the net's.
-fn row(r: &ShotReport) -> [f64; 14] {
-    let nan = f64::NAN;
-    let b = r.bounces.first();
-    let s = r.end.state;
-    let net = r.net.as_ref();
-    [
-        b.map_or(nan, |b| b.t),
-        b.map_or(nan, |b| b.x),
-        b.map_or(nan, |b| b.v_in),
-        b.map_or(nan, |b| b.angle_in),
-        b.map_or(nan, |b| b.v_out),
-        b.map_or(nan, |b| b.angle_out),
-        b.map_or(nan, |b| b.spin_out),
-        s.t,
-        s.x,
-        s.y,
-        s.vx,
-        s.vy,
-        net.and_then(|n| n.clearance).unwrap_or(nan),
-        net.map_or(0.0, |n| f64::from(u8::from(n.cleared))),
-    ]
-}
+/// How many of `shots`' arrays are always there ([`SHOT_QUANTITIES`]' first): the first
+/// bounce's and the end's; with `net=` the net's clearance (NaN where the ball does not reach
+/// the net) and whether it clears it (1 or 0 in a row, a bool array out) follow.
+const SHOTS: usize = 12;
 
 flight_pyfunction! {
     /// Many shots: `height`, `speed`, `elevation` and `spin` numbers or numpy arrays broadcast
@@ -328,7 +289,7 @@ flight_pyfunction! {
                     // the numbers only: the bounces' warnings are not made
                     // (`Ball::shot_unwarned`, the numbers of `Ball::shot`)
                     ball.shot_unwarned(&with(&common, launch, 0))
-                        .map(|r| row(&r))
+                        .map(|r| r.quantities(&SHOT_QUANTITIES))
                         .map_err(|e| (i, e))
                 })
                 .collect()
@@ -338,15 +299,15 @@ flight_pyfunction! {
             PyValueError::new_err(format!("element {i}: {}", err.value(py)))
         })?;
         let d = PyDict::new(py);
-        for (k, name) in SHOTS.iter().enumerate() {
+        for (k, name) in SHOT_QUANTITIES[..SHOTS].iter().enumerate() {
             let a = array(py, rows.iter().map(|r| r[k]).collect());
             d.set_item(*name, a.call_method1("reshape", (&shape,))?)?;
         }
         if common.net.is_some() {
             let clearance = array(py, rows.iter().map(|r| r[12]).collect());
-            d.set_item(SHOTS_NET[0], clearance.call_method1("reshape", (&shape,))?)?;
+            d.set_item(SHOT_QUANTITIES[12], clearance.call_method1("reshape", (&shape,))?)?;
             let cleared = PyArray1::from_vec(py, rows.iter().map(|r| r[13] == 1.0).collect());
-            d.set_item(SHOTS_NET[1], cleared.call_method1("reshape", (&shape,))?)?;
+            d.set_item(SHOT_QUANTITIES[13], cleared.call_method1("reshape", (&shape,))?)?;
         }
         // every answer names its surface, as `shot`'s and the command line's (issue 57)
         d.set_item("surface", crate::surface::to_dict(py, &surface)?)?;

@@ -126,26 +126,23 @@ pub struct ShotMcReport {
     pub warnings: Vec<String>,
 }
 
-/// One sample's numbers: [`SHOT_MC_QUANTITIES`], [`SHOT_MC_END_QUANTITIES`], whether it
-/// clears the net (1 or 0) and its clearance (NaN when it does not reach it or has no net).
+/// One sample's numbers, named in [`ROW`].
 type Row = [f64; 10];
 
-fn row(r: &ShotReport) -> Row {
-    let b = r.bounces.first();
-    let nan = f64::NAN;
-    let net = r.net.as_ref();
+/// The names of a sample's numbers ([`ShotReport::quantity`]): [`SHOT_MC_QUANTITIES`],
+/// [`SHOT_MC_END_QUANTITIES`], whether it clears the net (1 or 0) and its clearance (NaN when
+/// it does not reach it or has no net).
+pub(super) const ROW: [&str; 10] = {
+    let [x, t, v_out, angle_out, spin_out, end_x] = SHOT_MC_QUANTITIES;
+    let [end_y, end_t] = SHOT_MC_END_QUANTITIES;
+    let net = ["net_cleared", "net_clearance"];
     [
-        b.map_or(nan, |b| b.x),
-        b.map_or(nan, |b| b.t),
-        b.map_or(nan, |b| b.v_out),
-        b.map_or(nan, |b| b.angle_out),
-        b.map_or(nan, |b| b.spin_out),
-        r.end.state.x,
-        r.end.state.y,
-        r.end.state.t,
-        net.map_or(0.0, |n| f64::from(u8::from(n.cleared))),
-        net.and_then(|n| n.clearance).unwrap_or(nan),
+        x, t, v_out, angle_out, spin_out, end_x, end_y, end_t, net[0], net[1],
     ]
+};
+
+fn row(r: &ShotReport) -> Row {
+    r.quantities(&ROW)
 }
 
 /// The net's answer over the rows, for the net `spec` has.

@@ -342,7 +342,9 @@ fn cos_sinc(x: f64) -> (f64, f64) {
 mod tests {
     use super::*;
 
-    fn close(a: f64, b: f64, ulps: f64) -> bool {
+    /// a within `ulps` units in the last place of b (of the smallest normal, where b is 0);
+    /// `modes.rs`'s tests' too.
+    pub(super) fn close(a: f64, b: f64, ulps: f64) -> bool {
         (a - b).abs() <= ulps * f64::EPSILON * b.abs().max(f64::MIN_POSITIVE)
     }
 

@@ -73,11 +73,8 @@ pub(super) fn abs_sum(terms: [f64; 3]) -> f64 {
 
 #[cfg(test)]
 mod tests {
+    use super::super::tests::close;
     use super::*;
-
-    fn close(a: f64, b: f64, ulps: f64) -> bool {
-        (a - b).abs() <= ulps * f64::EPSILON * b.abs().max(f64::MIN_POSITIVE)
-    }
 
     /// `quick_cbrt` is `f64::cbrt` within an ulp over 2 000 log-spread x, either sign, and at
     /// 0, subnormals and infinities (where it is `f64::cbrt`).

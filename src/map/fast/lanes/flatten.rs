@@ -23,7 +23,7 @@
 
 use super::super::lane::{LANES, Lane};
 use super::super::math::{Estrin, atan2};
-use super::{Flow4, Point4, Root4, householder_root, taylor};
+use super::{Flow4, Point4, Root4, answers, householder_root, taylor};
 use crate::map::fast::{KEEP, Summary, flattening};
 use std::f64::consts::{FRAC_1_PI, FRAC_PI_2, PI};
 use wide::f64x4;
@@ -186,16 +186,7 @@ pub fn flatten_kernel<L: Lane<Array = [f64; N]>, const N: usize>(
         & (top.dint + root_k * dint_u).le(keep * cor.abs())
         & dtau.le(keep * tau_f);
     let answered = (live & found & precise & cor.is_finite() & tau_f.is_finite()).bitmask();
-    let (cor, z_m, tau_f) = (cor.to_array(), top.z_m.to_array(), tau_f.to_array());
-    let mut out = [None; N];
-    for (i, o) in out.iter_mut().enumerate() {
-        *o = (answered & (1 << i) != 0).then_some(Summary {
-            cor: cor[i],
-            max_force: z_m[i],
-            contact_time: tau_f[i],
-        });
-    }
-    out
+    answers(answered, cor, top.z_m, tau_f)
 }
 
 /// Four flattening cells at once, the lanes' own answers (`None` where a lane is handed

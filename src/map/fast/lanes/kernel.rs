@@ -371,14 +371,29 @@ pub fn kernel<L: Lane<Array = [f64; N]>, const N: usize>(
     let slope = taylor(&j[1..6], h).abs();
     let keep = v(crate::map::fast::KEEP);
     let precise = dz_m.le(keep * z_m) & dint.le(keep * cor.abs()) & dz_f.le(keep * slope * end.t);
-    let answered = (live & settled & precise).bitmask();
-    let (cor, z_m, t_f) = (cor.to_array(), z_m.to_array(), end.t.to_array());
+    answers((live & settled & precise).bitmask(), cor, z_m, end.t)
+}
+
+/// The lanes' answers, the linear law's kernel's and the flattening's alike: lane i's
+/// (e, F̄_m = z̄_m, τ_f) where bit i of `answered` is set, `None` (handed back) elsewhere.
+#[inline(always)]
+fn answers<L: Lane<Array = [f64; N]>, const N: usize>(
+    answered: u32,
+    cor: L,
+    max_force: L,
+    contact_time: L,
+) -> [Option<Summary>; N] {
+    let (cor, max_force, contact_time) = (
+        cor.to_array(),
+        max_force.to_array(),
+        contact_time.to_array(),
+    );
     let mut out = [None; N];
     for (i, o) in out.iter_mut().enumerate() {
         *o = (answered & (1 << i) != 0).then_some(Summary {
             cor: cor[i],
-            max_force: z_m[i],
-            contact_time: t_f[i],
+            max_force: max_force[i],
+            contact_time: contact_time[i],
         });
     }
     out

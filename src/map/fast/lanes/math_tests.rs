@@ -60,21 +60,35 @@ fn exp_arguments() -> Vec<f64> {
     xs
 }
 
-#[test]
-fn exp_is_libms_to_two_ulp() {
+/// The largest distance in ulp from `got[i]` to `want[i]`.
+fn worst_ulps(got: &[f64], want: &[f64]) -> f64 {
+    got.iter()
+        .zip(want)
+        .map(|(&g, &w)| ulps(g, w))
+        .fold(0.0, f64::max)
+}
+
+/// `f`, named `name`, is libm's exp to 2 ulp over `exp_arguments` (where eˣ is normal), and
+/// past the range 0, ∞ and NaN as libm's: `exp`'s test and `exp_estrin`'s.
+fn assert_exp_is_libms(name: &str, f: impl Fn(f64x4) -> f64x4) {
     let xs = exp_arguments();
-    let got = in_lanes(&xs, exp);
+    let got = in_lanes(&xs, &f);
     let worst = xs
         .iter()
         .zip(&got)
         .filter(|(x, _)| x.exp() >= f64::MIN_POSITIVE)
         .map(|(x, g)| (ulps(*g, x.exp()), *x))
         .fold((0.0, 0.0), |a, b| if b.0 > a.0 { b } else { a });
-    assert!(worst.0 <= 2.0, "exp({}) off by {} ulp", worst.1, worst.0);
+    assert!(worst.0 <= 2.0, "{name}({}) off by {} ulp", worst.1, worst.0);
     // past the range: 0, ∞ and NaN as libm's
-    let edges = in_lanes(&[-800.0, -1e300, 800.0, f64::NAN], exp);
-    assert_eq!(edges[..3], [0.0, 0.0, f64::INFINITY]);
-    assert!(edges[3].is_nan());
+    let edges = in_lanes(&[-800.0, -1e300, 800.0, f64::NAN], f);
+    assert_eq!(edges[..3], [0.0, 0.0, f64::INFINITY], "{name}");
+    assert!(edges[3].is_nan(), "{name}");
+}
+
+#[test]
+fn exp_is_libms_to_two_ulp() {
+    assert_exp_is_libms("exp", exp);
 }
 
 fn atan2_arguments() -> Vec<(f64, f64)> {
@@ -249,11 +263,8 @@ fn exp_m1_small_is_libms_to_two_ulp() {
     );
     xs.extend([0.0, -0.0, 1e-310, -1e-310, 9.99e-4, -9.99e-4]);
     let got = in_lanes(&xs, exp_m1_small);
-    let worst = xs
-        .iter()
-        .zip(&got)
-        .map(|(&x, &g)| ulps(g, x.exp_m1()))
-        .fold(0.0, f64::max);
+    let want: Vec<f64> = xs.iter().map(|x| x.exp_m1()).collect();
+    let worst = worst_ulps(&got, &want);
     assert!(worst <= 2.0, "{worst} ulp");
 }
 
@@ -295,11 +306,7 @@ fn cos_sinc_sq_is_cosh_and_sinhc_too() {
         ),
     ];
     for (k, (got, want)) in want.iter().enumerate() {
-        let worst = got
-            .iter()
-            .zip(want)
-            .map(|(&g, &w)| ulps(g, w))
-            .fold(0.0, f64::max);
+        let worst = worst_ulps(got, want);
         assert!(worst <= 2.0, "function {k}: {worst} ulp");
     }
 }
@@ -309,18 +316,7 @@ fn cos_sinc_sq_is_cosh_and_sinhc_too() {
 /// the Horner sums to 2 ulp over the short steps' reach (|x| ≤ 1/16, x² of either sign).
 #[test]
 fn estrin_sums_are_horners_to_two_ulp() {
-    let xs = exp_arguments();
-    let got = in_lanes(&xs, exp_estrin);
-    let worst = xs
-        .iter()
-        .zip(&got)
-        .filter(|(x, _)| x.exp() >= f64::MIN_POSITIVE)
-        .map(|(x, g)| ulps(*g, x.exp()))
-        .fold(0.0, f64::max);
-    assert!(worst <= 2.0, "exp_estrin: {worst} ulp");
-    let edges = in_lanes(&[-800.0, -1e300, 800.0, f64::NAN], exp_estrin);
-    assert_eq!(edges[..3], [0.0, 0.0, f64::INFINITY]);
-    assert!(edges[3].is_nan());
+    assert_exp_is_libms("exp_estrin", exp_estrin);
     let small: Vec<f64> = units(36, 20_000).iter().map(|u| (u - 0.5) / 8.0).collect();
     let sq: Vec<f64> = small.iter().map(|x| x * x.abs()).collect();
     let pairs: [(Vec<f64>, Vec<f64>); 3] = [
@@ -338,11 +334,7 @@ fn estrin_sums_are_horners_to_two_ulp() {
         ),
     ];
     for (k, (got, want)) in pairs.iter().enumerate() {
-        let worst = got
-            .iter()
-            .zip(want)
-            .map(|(&g, &w)| ulps(g, w))
-            .fold(0.0, f64::max);
+        let worst = worst_ulps(got, want);
         assert!(worst <= 2.0, "sum {k}: {worst} ulp");
     }
 }
