@@ -122,15 +122,10 @@ struct Room {
 
 impl Room {
     fn new() -> Room {
-        let dir = tempfile::tempdir().unwrap();
         Room {
-            dir,
+            dir: tempfile::tempdir().unwrap(),
             found: Vec::new(),
         }
-    }
-
-    fn path(&self) -> &Path {
-        self.dir.path()
     }
 
     /// The figure `args` write as `out` ([`figure`]), its overlaps kept under `name`.
@@ -204,7 +199,7 @@ fn every_preset_law_and_speed_has_room() {
 #[test]
 fn reproduce_several_balls_maps_and_fit_plots_have_room() {
     let mut room = Room::new();
-    let d = room.path().to_path_buf();
+    let d = room.dir.path().to_path_buf();
     ok_at(&d, &["reproduce", "--out", "rep"]);
     for f in std::fs::read_dir(d.join("rep")).unwrap() {
         let f = f.unwrap().path();
