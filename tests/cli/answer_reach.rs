@@ -329,6 +329,30 @@ fn the_map_counts_cells_it_could_not_check_not_as_within() {
     assert!(unchecked_seen, "no radius left a cell to its run again");
 }
 
+/// The map of ball `base` under `law` as the command line computes it (the fast paths on:
+/// the Hertz table, the Taylor steps, the closed forms), over λ and ζ each log-spaced
+/// `(from, to, points)`; with its spec.
+fn command_line_map(
+    base: bouncelab::ImpactParams,
+    law: ContactLaw,
+    lambda: (f64, f64, usize),
+    zeta: (f64, f64, usize),
+) -> (bouncelab::map::MapSpec, bouncelab::map::Map) {
+    use bouncelab::map::{Axis, MapSpec, Param, Scale, compute};
+    let axis =
+        |p: Param, (from, to, n): (f64, f64, usize)| Axis::new(p, from, to, n, Scale::Log).unwrap();
+    let spec = MapSpec::dimensional(
+        base,
+        law,
+        axis(Param::Lambda, lambda),
+        axis(Param::Zeta, zeta),
+    )
+    .unwrap()
+    .with_fast(true)
+    .with_fast_laws(true);
+    (spec.clone(), compute(spec))
+}
+
 /// Every bound of `api::centre_bounds` holds the adaptive solver's α_max (read where α' = 0,
 /// `api::peak_displacement`) in every cell of a λ × ζ grid, 10⁻³ … 10³ × 10⁻² … 10², under
 /// each law, from the cells as the command line's map computes them (the Hertz table, the
@@ -337,7 +361,6 @@ fn the_map_counts_cells_it_could_not_check_not_as_within() {
 /// upper bound, exact there to its inputs: y relaxes to F_m/K_r at the peak).
 #[test]
 fn the_centre_bounds_hold_the_solver_s_peak_on_a_grid() {
-    use bouncelab::map::{Axis, MapSpec, Param, Scale, compute};
     let cases = [
         ("tennis", ContactLaw::Hertz),
         ("tennis", ContactLaw::ElasticPlastic),
@@ -347,16 +370,7 @@ fn the_centre_bounds_hold_the_solver_s_peak_on_a_grid() {
     ];
     for (preset, law) in cases {
         let base = Ball::from_preset(preset).unwrap().params;
-        let spec = MapSpec::dimensional(
-            base,
-            law,
-            Axis::new(Param::Lambda, 1e-3, 1e3, 9, Scale::Log).unwrap(),
-            Axis::new(Param::Zeta, 1e-2, 1e2, 9, Scale::Log).unwrap(),
-        )
-        .unwrap()
-        .with_fast(true)
-        .with_fast_laws(true);
-        let map = compute(spec.clone());
+        let (spec, map) = command_line_map(base, law, (1e-3, 1e3, 9), (1e-2, 1e2, 9));
         let method = match law {
             ContactLaw::Linear => Method::Exact,
             _ => Method::Numeric,
@@ -392,7 +406,6 @@ fn the_centre_bounds_hold_the_solver_s_peak_on_a_grid() {
 /// old code every open cell).
 #[test]
 fn the_map_reads_open_cells_by_the_taylor_steps_as_the_solver_does() {
-    use bouncelab::map::{Axis, MapSpec, Param, Scale, compute};
     let cases = [
         ("tennis", ContactLaw::Hertz),
         ("tennis", ContactLaw::ElasticPlastic),
@@ -401,16 +414,7 @@ fn the_map_reads_open_cells_by_the_taylor_steps_as_the_solver_does() {
     ];
     for (preset, law) in cases {
         let ball = Ball::from_preset(preset).unwrap();
-        let spec = MapSpec::dimensional(
-            ball.params,
-            law,
-            Axis::new(Param::Lambda, 0.01, 100.0, 14, Scale::Log).unwrap(),
-            Axis::new(Param::Zeta, 0.01, 100.0, 10, Scale::Log).unwrap(),
-        )
-        .unwrap()
-        .with_fast(true)
-        .with_fast_laws(true);
-        let map = compute(spec.clone());
+        let (spec, map) = command_line_map(ball.params, law, (0.01, 100.0, 14), (0.01, 100.0, 10));
         let exact: Vec<(f64, f64, bool)> = map
             .lambdas
             .iter()

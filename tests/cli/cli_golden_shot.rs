@@ -206,22 +206,19 @@ fn after_bounce_is_the_distance_past_the_bounce() {
         by_hand.extend(["--distance", &x]);
         assert_eq!(after, common::ok_calibrated(&by_hand));
     }
-    for (extra, says) in [
-        (
-            "--after-bounce 1 --bounces 0",
-            "invalid --after-bounce: the shot makes no bounce",
-        ),
-        (
-            "--after-bounce 0",
-            "invalid --after-bounce: 0 (must be positive)",
-        ),
-        ("--after-bounce 1 --time 0.2", "before its bounce 1"),
-        ("--after-bounce 1 --distance 20", "cannot be used with"),
-    ] {
-        let line = format!("{SERVE} {extra}");
-        let o = common::bl(&common::argv(&line));
-        assert_eq!(o.code, 2, "{line}: {}", o.stderr);
-        assert!(o.stderr.contains(says), "{line}: {}", o.stderr);
-        assert!(o.stdout.is_empty());
-    }
+    common::refused_each(
+        SERVE,
+        &[
+            (
+                "--after-bounce 1 --bounces 0",
+                "invalid --after-bounce: the shot makes no bounce",
+            ),
+            (
+                "--after-bounce 0",
+                "invalid --after-bounce: 0 (must be positive)",
+            ),
+            ("--after-bounce 1 --time 0.2", "before its bounce 1"),
+            ("--after-bounce 1 --distance 20", "cannot be used with"),
+        ],
+    );
 }

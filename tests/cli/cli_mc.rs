@@ -3,7 +3,7 @@
 
 use crate::common;
 
-use common::{argv, argv_with, assert_bad, bl, bl_at, f, json, ok, ok_at, parse_svg};
+use common::{Out, argv, argv_with, assert_bad, bl, bl_at, f, json, ok, ok_at, parse_svg};
 use serde_json::Value;
 use std::process::Command;
 
@@ -153,6 +153,13 @@ fn bad_input_is_one_line_naming_the_field() {
     assert_bad(&o, &["invalid vary: sample ", "k_r", "--dist lognormal"]);
 }
 
+/// `o`, a JSON answer of `mc --samples 30000`, ran them all (`case` names it).
+fn assert_ran_30000(o: &Out, case: &str) {
+    assert_eq!(o.code, 0, "{case}: {}", o.stderr);
+    let v: Value = serde_json::from_str(&o.stdout).unwrap();
+    assert_eq!(v["samples"], 30000, "{case}: {}", o.stdout);
+}
+
 /// Under Hertz the work limit counts a sample of a ball the Hertz table answers as 1/40 of an
 /// impact (`work::check_samples_by`, `Nominal::Table`): golf's 30 000 samples run, its
 /// 1 000 001 are refused; a ball whose Hertz cell the table leaves to the Taylor steps
@@ -165,10 +172,7 @@ fn hertz_samples_of_a_tabulated_ball_count_as_cheap_ones() {
         args.extend(["--preset", preset, "--samples", samples, "--format", "json"]);
         bl(&args)
     };
-    let o = run("golf", "30000");
-    assert_eq!(o.code, 0, "{}", o.stderr);
-    let v: Value = serde_json::from_str(&o.stdout).unwrap();
-    assert_eq!(v["samples"], 30000, "{}", o.stdout);
+    assert_ran_30000(&run("golf", "30000"), "golf");
     assert_bad(
         &run("golf", "1000001"),
         &["too much work: 1000001 samples (40 Hertz-law samples of a ball the Hertz table"],
@@ -197,10 +201,7 @@ fn elastic_plastic_samples_count_by_their_path() {
         bl(&args)
     };
     for v0 in ["3.12", "9.4"] {
-        let o = run(v0, "30000");
-        assert_eq!(o.code, 0, "{v0}: {}", o.stderr);
-        let v: Value = serde_json::from_str(&o.stdout).unwrap();
-        assert_eq!(v["samples"], 30000, "{}", o.stdout);
+        assert_ran_30000(&run(v0, "30000"), v0);
     }
     assert_bad(
         &run("3.12", "1000001"),

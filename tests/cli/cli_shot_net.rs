@@ -93,21 +93,18 @@ fn the_svg_draws_the_net() {
 
 #[test]
 fn a_net_without_a_distance_or_height_is_refused_by_name() {
-    for (net, says) in [
-        ("0", "invalid --net: 0 (its distance must be positive)"),
-        (
-            "11.89,-1",
-            "invalid --net: -1 (its height must be positive)",
-        ),
-        ("11.89,abc", "the net's height"),
-        ("x", "the net's distance"),
-    ] {
-        let line = format!("{SERVE} --net {net}");
-        let o = common::bl(&common::argv(&line));
-        assert_eq!(o.code, 2, "{line}: {}", o.stderr);
-        assert!(o.stderr.contains(says), "{line}: {}", o.stderr);
-        assert!(o.stdout.is_empty());
-    }
+    common::refused_each(
+        &format!("{SERVE} --net"),
+        &[
+            ("0", "invalid --net: 0 (its distance must be positive)"),
+            (
+                "11.89,-1",
+                "invalid --net: -1 (its height must be positive)",
+            ),
+            ("11.89,abc", "the net's height"),
+            ("x", "the net's distance"),
+        ],
+    );
 }
 
 /// `mc --shot --net`: without spread every sample is the nominal shot, all in or all out;

@@ -25,6 +25,23 @@ const PAST_Z: &str = "outside the model's range: z_m 31.05 mm &gt; radius 21.55 
 const PAST_ALPHA: &str =
     "outside the model&apos;s range: centre&apos;s α_max 34.97 mm &gt; radius 21.55 mm";
 
+/// `figure NAME --preset superball` (within the radius) draws no note; with golf beside it
+/// and `past_flags` (what takes the superball past its radius), the note is the superball's,
+/// named, `past` after its name. The figure of the two balls.
+fn assert_no_note_within_and_named_past(
+    dir: &Path,
+    name: &str,
+    past_flags: &str,
+    past: &str,
+) -> String {
+    let s = svg(dir, &["figure", name, "--preset", "superball"]);
+    assert!(!s.contains("outside the model"), "{name}: {s}");
+    let line = format!("figure {name} --preset superball --preset golf {past_flags}");
+    let s = svg(dir, &argv(&line));
+    assert!(s.contains(&format!("superball {past}")), "{line}: {s}");
+    s
+}
+
 #[test]
 fn a_figure_of_an_impact_past_the_radius_says_so() {
     let dir = tempfile::tempdir().unwrap();
@@ -39,15 +56,7 @@ fn a_figure_of_an_impact_past_the_radius_says_so() {
     let soft = ["--preset", "superball", "--lambda", "0.001", "--zeta", "10"];
     let s = svg(d, &[&["figure", "force-displacement"][..], &soft].concat());
     assert!(s.contains(PAST_ALPHA), "{s}");
-    // within the radius, no note
-    let s = svg(d, &["figure", "force-time", "--preset", "superball"]);
-    assert!(!s.contains("outside the model"), "{s}");
-    // several balls: the one past its radius, named
-    let s = svg(
-        d,
-        &argv("figure force-time --preset superball --preset golf --v0 45"),
-    );
-    assert!(s.contains(&format!("superball {PAST_Z}")), "{s}");
+    let s = assert_no_note_within_and_named_past(d, "force-time", "--v0 45", PAST_Z);
     assert!(!s.contains("golf outside"), "{s}");
 }
 
@@ -87,11 +96,5 @@ fn a_speed_figure_past_the_radius_says_from_where() {
                 &gt; radius 21.55 mm";
     let s = svg(d, &argv("figure cor-velocity --preset superball --to 45"));
     assert!(s.contains(past), "{s}");
-    let s = svg(d, &["figure", "cor-velocity", "--preset", "superball"]);
-    assert!(!s.contains("outside the model"), "{s}");
-    let s = svg(
-        d,
-        &argv("figure cor-velocity --preset superball --preset golf --to 45"),
-    );
-    assert!(s.contains(&format!("superball {past}")), "{s}");
+    assert_no_note_within_and_named_past(d, "cor-velocity", "--to 45", past);
 }

@@ -113,17 +113,45 @@ fn the_checker_sees_a_text_over_a_marker_and_over_a_text() {
     assert_eq!((texts[0].1.y0, texts[1].1.y0), (233.0, 793.0));
 }
 
+/// A folder to draw figures in, and the overlaps found in them ([`check`]); a test draws its
+/// figures here and ends with [`Room::assert_none`].
+struct Room {
+    dir: tempfile::TempDir,
+    found: Vec<String>,
+}
+
+impl Room {
+    fn new() -> Room {
+        Room {
+            dir: tempfile::tempdir().unwrap(),
+            found: Vec::new(),
+        }
+    }
+
+    /// The figure `args` write as `out` ([`figure`]), its overlaps kept under `name`.
+    fn figure(&mut self, name: &str, args: &[&str], out: &str) {
+        let svg = figure(self.dir.path(), args, out);
+        self.check(name, &svg);
+    }
+
+    fn check(&mut self, name: &str, svg: &str) {
+        check(&mut self.found, name, svg);
+    }
+
+    fn assert_none(&self) {
+        assert_room(&self.found);
+    }
+}
+
 /// The figures that drew a text over another or over a marker before the texts were placed
 /// (src/figure/room.rs): a ball's name over another ball's marker on `cor-zeta`, and the
 /// measured e of five balls over each other on `cor-velocity`.
 #[test]
 fn figures_that_overlapped_no_longer_do() {
-    let dir = tempfile::tempdir().unwrap();
-    let d = dir.path();
-    let mut found = Vec::new();
+    let mut room = Room::new();
     // "softball" sat over the baseball's ▲
-    let svg = figure(d, &["figure", "cor-zeta", "--preset", "softball"], "a.svg");
-    check(&mut found, "cor-zeta softball", &svg);
+    let softball = ["figure", "cor-zeta", "--preset", "softball"];
+    room.figure("cor-zeta softball", &softball, "a.svg");
     let five = argv(
         "--preset tennis --preset softball --preset basketball --preset football \
             --preset table-tennis",
@@ -133,10 +161,9 @@ fn figures_that_overlapped_no_longer_do() {
     for name in ["cor-zeta", "cor-velocity", "force-displacement"] {
         let mut args = vec!["figure", name];
         args.extend(&five);
-        let svg = figure(d, &args, "b.svg");
-        check(&mut found, &format!("{name}, five balls"), &svg);
+        room.figure(&format!("{name}, five balls"), &args, "b.svg");
     }
-    assert_room(&found);
+    room.assert_none();
 }
 
 /// Every preset, each law, speeds from gentle (0.3 v0) to 3 v0: the one-ball figures. The ζ
@@ -144,49 +171,41 @@ fn figures_that_overlapped_no_longer_do() {
 /// linear law (their default), which computes in a fraction of the time.
 #[test]
 fn every_preset_law_and_speed_has_room() {
-    let dir = tempfile::tempdir().unwrap();
-    let d = dir.path();
-    let mut found = Vec::new();
+    let mut room = Room::new();
     for p in Preset::embedded_all() {
         let name = p.name.clone();
         for fig in ["cor-zeta", "force-zeta"] {
-            let svg = figure(d, &["figure", fig, "--preset", &name], "z.svg");
-            check(&mut found, &format!("{fig} {name}"), &svg);
+            let args = ["figure", fig, "--preset", &name];
+            room.figure(&format!("{fig} {name}"), &args, "z.svg");
         }
         for law in LAWS {
             for fig in ["cor-velocity", "peers-cor-velocity", "peers-force-time"] {
                 let args = ["figure", fig, "--preset", &name, "--law", law];
-                check(
-                    &mut found,
-                    &format!("{fig} {name} {law}"),
-                    &figure(d, &args, "v.svg"),
-                );
+                room.figure(&format!("{fig} {name} {law}"), &args, "v.svg");
             }
             for k in [0.3, 1.0, 3.0] {
                 let v0 = (k * p.measured.v0).to_string();
                 for fig in ["force-time", "force-displacement"] {
                     let args = ["figure", fig, "--preset", &name, "--law", law, "--v0", &v0];
-                    let what = format!("{fig} {name} {law} v0 = {v0}");
-                    check(&mut found, &what, &figure(d, &args, "h.svg"));
+                    room.figure(&format!("{fig} {name} {law} v0 = {v0}"), &args, "h.svg");
                 }
             }
         }
     }
-    assert_room(&found);
+    room.assert_none();
 }
 
 /// `reproduce`, several balls on one figure, the design map and `fit --plot`.
 #[test]
 fn reproduce_several_balls_maps_and_fit_plots_have_room() {
-    let dir = tempfile::tempdir().unwrap();
-    let d = dir.path();
-    let mut found = Vec::new();
-    ok_at(d, &["reproduce", "--out", "rep"]);
+    let mut room = Room::new();
+    let d = room.dir.path().to_path_buf();
+    ok_at(&d, &["reproduce", "--out", "rep"]);
     for f in std::fs::read_dir(d.join("rep")).unwrap() {
         let f = f.unwrap().path();
         if f.extension().is_some_and(|e| e == "svg") {
             let svg = std::fs::read_to_string(&f).unwrap();
-            check(&mut found, &f.display().to_string(), &svg);
+            room.check(&f.display().to_string(), &svg);
         }
     }
     let sets: [&[&str]; 2] = [
@@ -205,11 +224,7 @@ fn reproduce_several_balls_maps_and_fit_plots_have_room() {
             for p in set {
                 args.extend(["--preset", p]);
             }
-            check(
-                &mut found,
-                &format!("{fig} {set:?}"),
-                &figure(d, &args, "m.svg"),
-            );
+            room.figure(&format!("{fig} {set:?}"), &args, "m.svg");
         }
     }
     for p in ["superball", "golf", "baseball", "tennis", "softball"] {
@@ -221,20 +236,16 @@ fn reproduce_several_balls_maps_and_fit_plots_have_room() {
             let mut args = vec!["map", "--preset", p, "--lambda", "0.01:10:40"];
             args.extend(["--zeta", "0.01:100:40", "--format", "svg"]);
             args.extend(extra);
-            check(
-                &mut found,
-                &format!("map {p} {extra:?}"),
-                &figure(d, &args, "map.svg"),
-            );
+            room.figure(&format!("map {p} {extra:?}"), &args, "map.svg");
         }
     }
-    for (data, flag) in fit_data(d) {
+    for (data, flag) in fit_data(&d) {
         let args = ["fit", flag, data.as_str(), "--plot", "fit.svg", "--force"];
-        ok_at(d, &args);
+        ok_at(&d, &args);
         let svg = std::fs::read_to_string(d.join("fit.svg")).unwrap();
-        check(&mut found, &format!("fit {flag} {data}"), &svg);
+        room.check(&format!("fit {flag} {data}"), &svg);
     }
-    assert_room(&found);
+    room.assert_none();
 }
 
 /// A superball trace (the solver's, sampled) and a COR table of a softer superball at five

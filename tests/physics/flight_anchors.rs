@@ -25,6 +25,16 @@ fn tour_drive() -> ShotSpec {
     spec
 }
 
+/// The model's `what` within `tolerance` (relative) of the published figure.
+fn assert_near_published(what: &str, model: f64, published: f64, tolerance: f64) {
+    let miss = model / published - 1.0;
+    assert!(
+        miss.abs() <= tolerance,
+        "{what} {model:.3} against {published:.3} published ({:+.2} %)",
+        100.0 * miss
+    );
+}
+
 #[test]
 fn a_tour_drive_carries_as_published() {
     let shot = Ball::from_preset("golf")
@@ -37,12 +47,7 @@ fn a_tour_drive_carries_as_published() {
     // (docs/flight.md §4: Smits & Smith's, the default, carries it 10 % short; Lyu et al.'s
     // 2018 fit to launch-monitor flights 11 % long). Without lift (the old default) the
     // drive carried 137 m, 46 % short.
-    let miss = carry / published - 1.0;
-    assert!(
-        miss.abs() <= 0.15,
-        "carry {carry:.1} m against {published:.1} m published ({:+.1} %)",
-        100.0 * miss
-    );
+    assert_near_published("carry (m)", carry, published, 0.15);
 }
 
 #[test]
@@ -95,18 +100,8 @@ fn a_batted_ball_carries_as_nathans_calculator() {
     // high; its spin decays as exp(−t|v|/(τ·100 mph)) with the present speed, here as
     // dω/dt = −ω|v|/(τ·100 mph). Expected here: +0.3 % (128.23 m). With the former
     // default C_D 0.47 (assumed) the test fails: 113.3 m, −11 %.
-    let miss = carry / published - 1.0;
-    assert!(
-        miss.abs() <= 0.01,
-        "carry {carry:.2} m against {published:.2} m published ({:+.2} %)",
-        100.0 * miss
-    );
-    let miss_t = hang / published_hang - 1.0;
-    assert!(
-        miss_t.abs() <= 0.01,
-        "hang time {hang:.3} s against {published_hang:.3} s ({:+.2} %)",
-        100.0 * miss_t
-    );
+    assert_near_published("carry (m)", carry, published, 0.01);
+    assert_near_published("hang time (s)", hang, published_hang, 0.01);
 }
 
 #[test]

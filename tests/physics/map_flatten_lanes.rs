@@ -107,6 +107,12 @@ fn the_tennis_map_flattens_in_lanes() {
     assert!(c.lanes * 10 >= c.scalar * 9, "{c:?}");
 }
 
+/// A seeded random ball of [`random_flattening_balls_in_lanes`]: (λ, ζ) = 1e-6 … 1e4,
+/// 1e-3 … 1e3, each log-uniform.
+fn random_ball(s: &mut Seeded) -> (f64, f64) {
+    (s.decades(-6.0, 10.0), s.decades(-3.0, 6.0))
+}
+
 /// Seeded random flattening balls (λ = 1e-6 … 1e4, ζ = 1e-3 … 1e3 log-uniform, z̄_p a
 /// log-uniform 1e-4 … 1 of the peak), 8 000 of them, and groups that mix them with lanes the
 /// kernel leaves out (zeros, NaN, ∞, a ball that does not flatten).
@@ -115,10 +121,7 @@ fn random_flattening_balls_in_lanes() {
     let mut s = Seeded::new(0x5eed_f1a7_0000_0007);
     let mut cells = Vec::new();
     while cells.len() < 8000 {
-        let (l, z) = (
-            10f64.powf(-6.0 + 10.0 * s.uniform()),
-            10f64.powf(-3.0 + 6.0 * s.uniform()),
-        );
+        let (l, z) = random_ball(&mut s);
         let f = 10f64.powf(-4.0 * s.uniform());
         let Some(peak) = summary(l, z).map(|s| s.max_force) else {
             continue;
@@ -144,10 +147,7 @@ fn avx2_and_portable_flattening_agree_bit_for_bit() {
     let mut answered = 0;
     for _ in 0..1000 {
         let cells: [(f64, f64, f64); FLAT_WIDE] = std::array::from_fn(|_| {
-            let (l, z) = (
-                10f64.powf(-3.0 + 6.0 * s.uniform()),
-                10f64.powf(-3.0 + 4.0 * s.uniform()),
-            );
+            let (l, z) = (s.decades(-3.0, 6.0), s.decades(-3.0, 4.0));
             let peak = summary(l, z).map_or(1.0, |s| s.max_force);
             (l, z, peak * 10f64.powf(-3.0 * s.uniform()))
         });
@@ -180,10 +180,7 @@ fn one_lane_is_the_maps_lane_bit_for_bit() {
     let mut s = Seeded::new(0x0e1a_0000_0000_0008);
     let mut cells = Vec::new();
     while cells.len() < 3000 {
-        let (l, z) = (
-            10f64.powf(-6.0 + 10.0 * s.uniform()),
-            10f64.powf(-3.0 + 6.0 * s.uniform()),
-        );
+        let (l, z) = random_ball(&mut s);
         let peak = summary(l, z).map_or(1.0, |s| s.max_force);
         cells.push((l, z, peak * 10f64.powf(-4.0 * s.uniform())));
         if cells.len() % 89 == 0 {

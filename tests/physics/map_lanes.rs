@@ -75,30 +75,41 @@ fn check(points: &[(f64, f64)]) -> (usize, usize) {
     (points.len(), own)
 }
 
+/// [`check`] `points`, the lanes answering at least `share` (numerator, denominator) of
+/// them themselves.
+fn assert_lanes_answer(points: &[(f64, f64)], (num, den): (usize, usize)) {
+    let (n, own) = check(points);
+    assert!(own * den >= n * num, "the lanes answered {own} of {n}");
+}
+
+/// `n` points drawn from the seeded stream `seed`, each what `draw` gives where it gives one
+/// (drawing again where it gives none).
+fn seeded_points(
+    seed: u64,
+    n: usize,
+    mut draw: impl FnMut(&mut Seeded) -> Option<(f64, f64)>,
+) -> Vec<(f64, f64)> {
+    let mut s = Seeded::new(seed);
+    let mut points = Vec::with_capacity(n);
+    while points.len() < n {
+        points.extend(draw(&mut s));
+    }
+    points
+}
+
 /// The 200 × 120 map's grid (λ, ζ = 0.01 … 100, log-spaced), as benches/map.rs runs it.
 #[test]
 fn lanes_agree_with_the_scalar_path_over_the_map() {
-    let log = |i: usize, n: usize| 10f64.powf(-2.0 + 4.0 * i as f64 / (n - 1) as f64);
-    let points: Vec<(f64, f64)> = (0..120)
-        .flat_map(|i| (0..200).map(move |j| (log(i, 120), log(j, 200))))
-        .collect();
-    let (n, own) = check(&points);
-    assert!(own * 10 >= n * 8, "the lanes answered {own} of {n}");
+    assert_lanes_answer(&grid(), (8, 10));
 }
 
 /// 40,000 seeded points, λ = 1e-4 … 1e4 and ζ = 1e-3 … 1e3 (log-uniform), with zeros, a
 /// negative, NaN and infinities among them (the scalar path's `None`s and its ζ = 0).
 #[test]
 fn lanes_agree_with_the_scalar_path_at_random_points() {
-    let mut s = Seeded::new(2026);
-    let mut points: Vec<(f64, f64)> = (0..40_000)
-        .map(|_| {
-            (
-                10f64.powf(-4.0 + 8.0 * s.uniform()),
-                10f64.powf(-3.0 + 6.0 * s.uniform()),
-            )
-        })
-        .collect();
+    let mut points = seeded_points(2026, 40_000, |s| {
+        Some((s.decades(-4.0, 8.0), s.decades(-3.0, 6.0)))
+    });
     points.extend([
         (0.0, 0.5),
         (1.0, 0.0),
@@ -108,23 +119,16 @@ fn lanes_agree_with_the_scalar_path_at_random_points() {
         (1.0, f64::INFINITY),
         (0.02, 1.7861026411617908),
     ]);
-    let (n, own) = check(&points);
-    assert!(own * 10 >= n * 7, "the lanes answered {own} of {n}");
+    assert_lanes_answer(&points, (7, 10));
 }
 
 /// `summaries` over a slice whose length is no multiple of four is `summary4` lane by lane:
 /// a point's answer does not depend on its neighbours or on where the groups fall.
 #[test]
 fn a_point_s_answer_does_not_depend_on_its_group() {
-    let mut s = Seeded::new(7);
-    let points: Vec<(f64, f64)> = (0..23)
-        .map(|_| {
-            (
-                10f64.powf(-2.0 + 4.0 * s.uniform()),
-                10f64.powf(-2.0 + 4.0 * s.uniform()),
-            )
-        })
-        .collect();
+    let points = seeded_points(7, 23, |s| {
+        Some((s.decades(-2.0, 4.0), s.decades(-2.0, 4.0)))
+    });
     let (l, z): (Vec<f64>, Vec<f64>) = points.iter().copied().unzip();
     let mut whole = vec![None; points.len()];
     summaries(&l, &z, &mut whole);
@@ -142,14 +146,11 @@ fn a_point_s_answer_does_not_depend_on_its_group() {
 /// same map.
 #[test]
 fn avx2_and_portable_kernels_agree_bit_for_bit() {
-    let log = |i: usize, n: usize| 10f64.powf(-2.0 + 4.0 * i as f64 / (n - 1) as f64);
-    let bits =
-        |s: &Option<Summary>| s.map(|s| [s.cor, s.max_force, s.contact_time].map(f64::to_bits));
     let mut answered = 0;
     for i in 0..120 {
         for j in (0..200).step_by(LANES) {
-            let l = [log(i, 120); LANES];
-            let z = std::array::from_fn(|k| log(j + k, 200));
+            let l = [log_step(i, 120); LANES];
+            let z = std::array::from_fn(|k| log_step(j + k, 200));
             let (a, b) = (lanes_only(l, z), lanes_only_portable(l, z));
             for k in 0..LANES {
                 assert_eq!(bits(&a[k]), bits(&b[k]), "λ {}, ζ {}", l[k], z[k]);
@@ -167,17 +168,9 @@ fn avx2_and_portable_kernels_agree_bit_for_bit() {
 /// out, whose neighbours must not notice).
 #[test]
 fn eight_lanes_are_two_fours_bit_for_bit() {
-    let log = |i: usize, n: usize| 10f64.powf(-2.0 + 4.0 * i as f64 / (n - 1) as f64);
-    let mut points: Vec<(f64, f64)> = (0..120)
-        .flat_map(|i| (0..200).map(move |j| (log(i, 120), log(j, 200))))
-        .collect();
+    let mut points = grid();
     let mut s = Seeded::new(88);
-    points.extend((0..8_000).map(|_| {
-        (
-            10f64.powf(-4.0 + 8.0 * s.uniform()),
-            10f64.powf(-3.0 + 6.0 * s.uniform()),
-        )
-    }));
+    points.extend((0..8_000).map(|_| (s.decades(-4.0, 8.0), s.decades(-3.0, 6.0))));
     let odd = [
         (0.0, 0.5),
         (1.0, 0.0),
@@ -187,8 +180,6 @@ fn eight_lanes_are_two_fours_bit_for_bit() {
     for (k, p) in odd.iter().enumerate() {
         points.insert(3 + 11 * k, *p);
     }
-    let bits =
-        |s: &Option<Summary>| s.map(|s| [s.cor, s.max_force, s.contact_time].map(f64::to_bits));
     let mut answered = 0;
     for group in points.chunks_exact(WIDE) {
         let l: [f64; WIDE] = std::array::from_fn(|i| group[i].0);
@@ -221,17 +212,8 @@ fn eight_lanes_are_two_fours_bit_for_bit() {
 /// (3 860 of the `seeded` points).
 #[test]
 fn lanes_settle_the_peak_where_the_pair_part_starts_negative() {
-    let mut s = Seeded::new(30);
-    let points: Vec<(f64, f64)> = (0..4_000)
-        .map(|_| {
-            (
-                0.01 * 24f64.powf(s.uniform()),
-                0.64 * (5.0f64 / 0.64).powf(s.uniform()),
-            )
-        })
-        .collect();
-    let (n, own) = check(&points);
-    assert!(own * 4 >= n * 3, "the lanes answered {own} of {n}");
+    let points = seeded_points(30, 4_000, |s| Some(corner_point(s)));
+    assert_lanes_answer(&points, (3, 4));
 }
 
 /// Short contacts of a slow real mode (λ, ζ ≤ 0.016: |rτ_f| < 1e-3, where e^{rτ} − 1 takes
@@ -240,17 +222,10 @@ fn lanes_settle_the_peak_where_the_pair_part_starts_negative() {
 /// every lane with |rτ| < 1e-3 to the scalar path.
 #[test]
 fn lanes_settle_short_contacts_of_a_slow_real_mode() {
-    let mut s = Seeded::new(31);
-    let points: Vec<(f64, f64)> = (0..2_000)
-        .map(|_| {
-            (
-                10f64.powf(-4.0 + 2.2 * s.uniform()),
-                10f64.powf(-4.0 + 2.2 * s.uniform()),
-            )
-        })
-        .collect();
-    let (n, own) = check(&points);
-    assert!(own * 10 >= n * 9, "the lanes answered {own} of {n}");
+    let points = seeded_points(31, 2_000, |s| {
+        Some((s.decades(-4.0, 2.2), s.decades(-4.0, 2.2)))
+    });
+    assert_lanes_answer(&points, (9, 10));
 }
 
 /// Where the cubic's three roots are real (λ ≲ 0.24, ζ ≈ 0.64–5: Cardano's discriminant ≤ 0,
@@ -262,19 +237,19 @@ fn lanes_settle_short_contacts_of_a_slow_real_mode() {
 /// the hyperbolic flow answers none of them.
 #[test]
 fn lanes_settle_the_band_of_three_real_roots() {
-    let mut s = Seeded::new(32);
-    let mut points = Vec::new();
-    while points.len() < 3_000 {
-        let (lambda, zeta) = (
-            0.01 * 24f64.powf(s.uniform()),
-            0.64 * (5.0f64 / 0.64).powf(s.uniform()),
-        );
-        if three_real_roots(lambda, zeta) {
-            points.push((lambda, zeta));
-        }
-    }
-    let (n, own) = check(&points);
-    assert!(own * 100 >= n * 95, "the lanes answered {own} of {n}");
+    let points = seeded_points(32, 3_000, |s| {
+        Some(corner_point(s)).filter(|&(l, z)| three_real_roots(l, z))
+    });
+    assert_lanes_answer(&points, (95, 100));
+}
+
+/// A seeded point of the corner λ = 0.01 … 0.24, ζ = 0.64 … 5 (each log-uniform), where the
+/// band of three real roots lies and the pair part of z̄' starts negative beside it.
+fn corner_point(s: &mut Seeded) -> (f64, f64) {
+    (
+        0.01 * 24f64.powf(s.uniform()),
+        0.64 * (5.0f64 / 0.64).powf(s.uniform()),
+    )
 }
 
 /// Whether s³ + 2ζ(1 + λ)s² + s + 2ζλ has three real roots: Cardano's discriminant
@@ -287,12 +262,21 @@ fn three_real_roots(lambda: f64, zeta: f64) -> bool {
     0.25 * q * q + p * p * p / 27.0 <= 0.0
 }
 
+/// Step `i` of `n` log-spaced from 0.01 to 100: the map's λ (n = 120) and ζ (n = 200).
+fn log_step(i: usize, n: usize) -> f64 {
+    10f64.powf(-2.0 + 4.0 * i as f64 / (n - 1) as f64)
+}
+
 /// The 200 × 120 map's grid, λ outer (as benches/map.rs runs it).
 fn grid() -> Vec<(f64, f64)> {
-    let log = |i: usize, n: usize| 10f64.powf(-2.0 + 4.0 * i as f64 / (n - 1) as f64);
     (0..120)
-        .flat_map(|i| (0..200).map(move |j| (log(i, 120), log(j, 200))))
+        .flat_map(|i| (0..200).map(move |j| (log_step(i, 120), log_step(j, 200))))
         .collect()
+}
+
+/// A summary's numbers as bits, to compare two kernels bit for bit.
+fn bits(s: &Option<Summary>) -> Option<[u64; 3]> {
+    s.map(|s| [s.cor, s.max_force, s.contact_time].map(f64::to_bits))
 }
 
 /// The lanes leave at most 11 of the 200 × 120 map's 24 000 cells to the scalar path (the
@@ -336,15 +320,11 @@ fn lanes_hand_back_few_cells_of_the_map() {
 /// the `seeded` points; the kernel of f36c05f 1 743).
 #[test]
 fn lanes_settle_the_slow_pairs_beside_the_band() {
-    let mut s = Seeded::new(33);
-    let mut points = Vec::new();
-    while points.len() < 2_000 {
-        let (lambda, zeta) = (s.log_uniform(0.01, 0.25), s.log_uniform(0.6, 1.0));
-        if !three_real_roots(lambda, zeta) {
-            points.push((lambda, zeta));
-        }
-    }
-    let (n, own) = check(&points);
+    let points = seeded_points(33, 2_000, |s| {
+        Some((s.log_uniform(0.01, 0.25), s.log_uniform(0.6, 1.0)))
+            .filter(|&(l, z)| !three_real_roots(l, z))
+    });
+    assert_lanes_answer(&points, (99, 100));
     for &(l, z) in &points {
         if let Some(a) = summary4([l; LANES], [z; LANES])[0] {
             let b = exact(l, z);
@@ -354,5 +334,4 @@ fn lanes_settle_the_slow_pairs_beside_the_band() {
             );
         }
     }
-    assert!(own * 100 >= n * 99, "the lanes answered {own} of {n}");
 }

@@ -57,6 +57,17 @@ pub fn assert_the_grid_agrees<T>(
     eprintln!("worst disagreement {worst:e} over {n} impacts, {switched} switches");
 }
 
+/// What [`assert_the_grid_agrees`] takes of an impact of ball `p` at 25 m/s under the linear
+/// law: the answer and the independent integration's.
+pub fn at_25_m_s(
+    p: &ImpactParams,
+) -> impl Fn(&Oblique) -> (ObliqueResponse, (f64, f64, usize)) + '_ {
+    |o| {
+        let r = oblique::solve(p, 25.0, o, 0).unwrap();
+        (r, reference::solve(p, 25.0, o).unwrap())
+    }
+}
+
 #[test]
 fn no_friction_leaves_the_tangential_motion_unchanged() {
     let p = tennis();
@@ -130,11 +141,7 @@ fn the_independent_integration_agrees_over_a_grid() {
             }
         }
     }
-    let solve = |o: &Oblique| {
-        let r = oblique::solve(&p, 25.0, o, 0).unwrap();
-        (r, reference::solve(&p, 25.0, o).unwrap())
-    };
-    assert_the_grid_agrees(grid, solve, 50);
+    assert_the_grid_agrees(grid, at_25_m_s(&p), 50);
 }
 
 #[test]

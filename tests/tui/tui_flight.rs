@@ -3,7 +3,6 @@
 //! coarse steps, a refused value kept out), and `e`'s export.
 
 use crate::common;
-use crate::common::embedded;
 use crate::tui_common;
 
 use bouncelab::tui::action::{Action, Mode};
@@ -17,9 +16,8 @@ use tui_common::*;
 /// The tennis ball in the flight view: docs/flight.md §6's serve that clears the net, 5° down
 /// (the view's default), and the net 11.89 m out.
 fn serve() -> App {
-    let mut app = App::new(embedded("tennis"), false);
-    press(&mut app, &[KeyCode::Char('h')]);
-    assert_eq!((app.view(), app.mode()), (View::Flight, Mode::Flight));
+    let app = opened_on("tennis", 'h', View::Flight);
+    assert_eq!(app.mode(), Mode::Flight);
     app
 }
 

@@ -2,7 +2,6 @@
 //! value in the session's `[flight]` table and `--session` restores them (the same shot); `u`
 //! undoes a step of the launch and says what it undid; `q` asks before losing one.
 
-use crate::common::embedded;
 use crate::tui_common;
 
 use bouncelab::tui::app::{App, View};
@@ -13,11 +12,7 @@ use std::path::Path;
 use tui_common::*;
 
 fn serve() -> App {
-    let tennis = embedded("tennis");
-    let mut app = App::new(tennis, false);
-    press(&mut app, &[KeyCode::Char('h')]);
-    assert_eq!(app.view(), View::Flight);
-    app
+    opened_on("tennis", 'h', View::Flight)
 }
 
 /// The launch of the serve moved: elevation −3°, spin 220 rad/s, μ 0.65, speed 52 m/s, height

@@ -19,6 +19,15 @@ fn superball() -> App {
     App::new(Preset::embedded().remove(0), true)
 }
 
+/// The superball with λ = 0.001 and ζ = 10 set in the form (which stays open): a ball whose
+/// impact passes its radius (the form's validity warning).
+fn soft_superball() -> App {
+    let mut a = superball();
+    set(&mut a, Field::Lambda, "0.001");
+    set(&mut a, Field::Zeta, "10");
+    a
+}
+
 fn key(app: &mut App, code: KeyCode) {
     if let Some(a) = action::from_key(KeyEvent::new(code, KeyModifiers::NONE), app.mode()) {
         app.update(a);
@@ -165,9 +174,7 @@ fn the_validity_warning_appears_exactly_when_z_m_or_alpha_exceeds_r() {
 
 #[test]
 fn the_form_at_120x40_and_80x24() {
-    let mut a = superball();
-    set(&mut a, Field::Lambda, "0.001");
-    set(&mut a, Field::Zeta, "10");
+    let mut a = soft_superball();
     insta::assert_snapshot!("form_120x40", draw(&a, 120, 40).backend());
     key(&mut a, KeyCode::Esc);
     insta::assert_snapshot!("readout_outside_120x40", draw(&a, 120, 40).backend());
@@ -182,9 +189,7 @@ fn the_form_at_120x40_and_80x24() {
 
 #[test]
 fn the_narrow_readout_at_80x24_keeps_the_warning() {
-    let mut a = superball();
-    set(&mut a, Field::Lambda, "0.001");
-    set(&mut a, Field::Zeta, "10");
+    let mut a = soft_superball();
     key(&mut a, KeyCode::Esc);
     key(&mut a, KeyCode::Char('['));
     assert!(!a.message().unwrap().text.contains("outside"));
@@ -310,9 +315,7 @@ fn the_form_speaks_the_readouts_units_and_digits() {
 /// and the hint are in the form whichever field is selected, at every size.
 #[test]
 fn the_form_with_a_warning_keeps_its_hint_and_selected_field_at_every_size() {
-    let mut a = superball();
-    set(&mut a, Field::Lambda, "0.001");
-    set(&mut a, Field::Zeta, "10");
+    let mut a = soft_superball();
     let (z_m, _) = peaks(&a);
     set(&mut a, Field::Radius, &format!("{}", z_m * 0.999 * 1e3));
     let warning = a.validity().expect("a warning");

@@ -26,8 +26,10 @@ fn map_app(color: bool, w: u16, h: u16) -> App {
     app
 }
 
-fn typed(app: &mut App, text: &str) {
+/// Type `text` and press Enter (the targets' entry, `t`).
+fn type_and_enter(app: &mut App, text: &str) {
     press(app, &text.chars().map(KeyCode::Char).collect::<Vec<_>>());
+    press(app, &[KeyCode::Enter]);
 }
 
 fn point(app: &App) -> (f64, f64) {
@@ -51,17 +53,10 @@ fn map_view_in_colour_120x40() {
 }
 
 #[test]
-fn map_view_in_colour_80x24() {
-    let app = map_app(true, 80, 24);
-    insta::assert_snapshot!(draw(&app, 80, 24).backend());
-}
-
-#[test]
 fn map_view_without_colour_120x40() {
     let mut app = map_app(false, 120, 40);
     press(&mut app, &[KeyCode::Char('t')]);
-    typed(&mut app, "cor>=0.8");
-    press(&mut app, &[KeyCode::Enter]);
+    type_and_enter(&mut app, "cor>=0.8");
     let t = draw(&app, 120, 40);
     insta::assert_snapshot!(t.backend());
     let buf = t.backend().buffer();
@@ -83,10 +78,15 @@ fn map_view_without_colour_120x40() {
     assert!(shades >= 3, "{shades} shades");
 }
 
+/// At 80×24, in colour and without: each screen under the name its own test had.
 #[test]
-fn map_view_without_colour_80x24() {
-    let app = map_app(false, 80, 24);
-    insta::assert_snapshot!(draw(&app, 80, 24).backend());
+fn map_view_80x24_in_colour_and_without() {
+    for (name, color) in [
+        ("map_view_in_colour_80x24", true),
+        ("map_view_without_colour_80x24", false),
+    ] {
+        insta::assert_snapshot!(name, draw(&map_app(color, 80, 24), 80, 24).backend());
+    }
 }
 
 /// The grid has one cell per half character of the heat map (one per character without
@@ -201,8 +201,7 @@ fn targets_are_set_refused_with_the_part_named_and_cleared() {
     let mut app = map_app(true, 120, 40);
     press(&mut app, &[KeyCode::Char('t')]);
     assert_eq!(app.mode(), Mode::Input);
-    typed(&mut app, "cor>=0.8,max_force<=2000");
-    press(&mut app, &[KeyCode::Enter]);
+    type_and_enter(&mut app, "cor>=0.8,max_force<=2000");
     assert_eq!(app.mode(), Mode::Map);
     let t = app.map_view().targets.clone().unwrap();
     assert_eq!(t.to_string(), "cor>=0.8,max_force<=2000");
@@ -211,8 +210,7 @@ fn targets_are_set_refused_with_the_part_named_and_cleared() {
     assert_eq!(app.mode(), Mode::Input, "t reopens the entry");
     let back = [KeyCode::Backspace; 40];
     press(&mut app, &back);
-    typed(&mut app, "cor>=0.8,force<=2");
-    press(&mut app, &[KeyCode::Enter]);
+    type_and_enter(&mut app, "cor>=0.8,force<=2");
     assert_eq!(app.mode(), Mode::Input);
     let msg = app.message().unwrap().text.clone();
     assert!(
@@ -224,8 +222,7 @@ fn targets_are_set_refused_with_the_part_named_and_cleared() {
     // a part without its bound lists the quantities too, with their units here (issue 51
     // item 8: "expected QUANTITY>=VALUE or QUANTITY<=VALUE" named none)
     press(&mut app, &back);
-    typed(&mut app, "cor=0.8");
-    press(&mut app, &[KeyCode::Enter]);
+    type_and_enter(&mut app, "cor=0.8");
     let msg = app.message().unwrap().text.clone();
     assert!(
         msg.contains("cor, max_force (N) or contact_time (ms)"),
@@ -301,8 +298,7 @@ fn passes_come_from_the_worker_and_stale_ones_are_dropped() {
 fn e_exports_the_map_on_screen_as_svg_and_csv() {
     let mut app = map_app(true, 120, 40);
     press(&mut app, &[KeyCode::Char('n'), KeyCode::Char('t')]);
-    typed(&mut app, "cor>=0.7");
-    press(&mut app, &[KeyCode::Enter]);
+    type_and_enter(&mut app, "cor>=0.7");
     let effects = app.update(Action::Export);
     let request = export_of(effects);
     assert!(request.charts.is_empty());
@@ -357,8 +353,7 @@ fn every_size_draws() {
     for color in [true, false] {
         let mut app = map_app(color, 120, 40);
         press(&mut app, &[KeyCode::Char('t')]);
-        typed(&mut app, "cor>=0.7");
-        press(&mut app, &[KeyCode::Enter]);
+        type_and_enter(&mut app, "cor>=0.7");
         for (w, h) in [
             (50, 16),
             (51, 17),
@@ -438,8 +433,7 @@ fn the_map_cursor_never_cuts_a_tick_label() {
 fn map_targets_are_typed_in_the_units_the_map_shows() {
     let mut app = map_app(false, 120, 40);
     press(&mut app, &[KeyCode::Char('t')]);
-    typed(&mut app, "contact_time>=2");
-    press(&mut app, &[KeyCode::Enter]);
+    type_and_enter(&mut app, "contact_time>=2");
     let t = app.map_view().targets.clone().unwrap();
     assert_eq!(t.0[0].value, 0.002, "2 ms held as 0.002 s");
     let s = screen_text(&draw(&app, 120, 40)).join("\n");

@@ -52,24 +52,18 @@ fn asked(effects: &[Effect]) -> Option<Vec<ModelsRequest>> {
 
 // Buffer's Debug lists each cell's colours and modifiers beside the text, so these snapshots
 // hold the colours (and their absence under NO_COLOR) too.
+// Each screen under the name its own test had, so the snapshot files stand as they were:
+// (name, the preset's index in `Preset::embedded()`, colour, the terminal's size).
 #[test]
-fn models_view_120x40_colour() {
-    insta::assert_debug_snapshot!(draw(&models_view(0, true), 120, 40).backend().buffer());
-}
-
-#[test]
-fn models_view_120x40_no_colour() {
-    insta::assert_debug_snapshot!(draw(&models_view(0, false), 120, 40).backend().buffer());
-}
-
-#[test]
-fn models_view_80x24_colour() {
-    insta::assert_debug_snapshot!(draw(&models_view(1, true), 80, 24).backend().buffer());
-}
-
-#[test]
-fn models_view_80x24_no_colour() {
-    insta::assert_debug_snapshot!(draw(&models_view(1, false), 80, 24).backend().buffer());
+fn models_view_with_and_without_colour() {
+    for (name, i, color, (w, h)) in [
+        ("models_view_120x40_colour", 0, true, (120, 40)),
+        ("models_view_120x40_no_colour", 0, false, (120, 40)),
+        ("models_view_80x24_colour", 1, true, (80, 24)),
+        ("models_view_80x24_no_colour", 1, false, (80, 24)),
+    ] {
+        insta::assert_debug_snapshot!(name, draw(&models_view(i, color), w, h).backend().buffer());
+    }
 }
 
 /// Without colour every cell is in the terminal's colours and the curves are told apart by

@@ -86,29 +86,25 @@ fn map_at_every_size_in_colour_and_without() {
 fn the_view_s_numbers_are_the_command_line_s() {
     let app = tennis_example(false);
     let r = app.oblique_view().response().expect("an answer");
-    let out = common::bl(&common::argv(
-        "oblique --preset tennis --v0 25 --angle 16 --spin 300 --friction 0.6 --format json",
-    ));
+    let line = "oblique --preset tennis --v0 25 --angle 16 --spin 300 --friction 0.6 --format json";
+    let out = common::bl(&common::argv(line));
     assert_eq!(out.code, 0, "{}", out.stderr);
     let j: Value = serde_json::from_str(&out.stdout).unwrap();
-    let f = |k: &str| j[k].as_f64().unwrap_or_else(|| panic!("{k}"));
-    let pairs = [
-        ("v_out", r.v_out),
-        ("angle_out_deg", r.angle_out_deg),
-        ("spin_out", r.spin_out),
-        ("cor_normal", r.cor_normal),
-        ("cor_tangential", r.cor_tangential.unwrap()),
-        ("apparent_friction", r.apparent_friction),
-        ("grip_time", r.grip_time),
-        ("contact_time", r.contact_time),
-        ("max_normal_force", r.max_normal_force),
-        ("max_friction_force", r.max_friction_force),
-        ("vx_out", r.vx_out),
-        ("vy_out", r.vy_out),
+    let keys = [
+        "v_out",
+        "angle_out_deg",
+        "spin_out",
+        "cor_normal",
+        "cor_tangential",
+        "apparent_friction",
+        "grip_time",
+        "contact_time",
+        "max_normal_force",
+        "max_friction_force",
+        "vx_out",
+        "vy_out",
     ];
-    for (k, v) in pairs {
-        assert!(close(f(k), v), "{k}: command line {} view {v}", f(k));
-    }
+    assert_oblique_numbers_are(&app, &j, line, &keys);
     assert_eq!(j["slid_throughout"].as_bool(), Some(r.slid_throughout));
     // the court pace of the readout is `bouncelab court`'s
     let out = common::bl(&common::argv(

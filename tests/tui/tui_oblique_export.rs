@@ -3,7 +3,6 @@
 //! files headed by `y`'s `bouncelab oblique` line and the impact's numbers, the series the
 //! very history the view holds.
 
-use crate::common::embedded;
 use crate::tui_common;
 
 use bouncelab::tui::action::Action;
@@ -14,11 +13,7 @@ use std::fs;
 use tui_common::*;
 
 fn tennis() -> App {
-    let p = embedded("tennis");
-    let mut app = App::new(p, false);
-    press(&mut app, &[KeyCode::Char('i')]);
-    assert_eq!(app.view(), View::Oblique);
-    app
+    opened_on("tennis", 'i', View::Oblique)
 }
 
 #[test]

@@ -22,84 +22,74 @@ fn app(i: usize) -> App {
     App::new(Preset::embedded().remove(i), true)
 }
 
-#[test]
-fn first_screen_superball() {
-    insta::assert_snapshot!(draw(&app(0), 120, 40).backend());
+/// The whole explorer, opened on the embedded preset `ball` (0 superball, 1 golf, 2 baseball),
+/// after `keys`, drawn at `size`: each screen its snapshot `name` (the name its own test had,
+/// so the snapshot files stand as they were).
+struct Screen {
+    name: &'static str,
+    ball: usize,
+    keys: Vec<KeyCode>,
+    size: (u16, u16),
 }
 
-#[test]
-fn first_screen_golf() {
-    insta::assert_snapshot!(draw(&app(1), 120, 40).backend());
+fn screens() -> Vec<Screen> {
+    use KeyCode::{Backspace, Char, Enter, Right, Tab};
+    let screen = |name, ball, keys: &[&[KeyCode]], size| Screen {
+        name,
+        ball,
+        keys: keys.concat(),
+        size,
+    };
+    vec![
+        screen("first_screen_superball", 0, &[], (120, 40)),
+        screen("first_screen_golf", 1, &[], (120, 40)),
+        screen("first_screen_baseball", 2, &[], (120, 40)),
+        screen("help_overlay", 0, &[&[Char('?')]], (120, 40)),
+        screen("sweeps_view", 0, &[&[Tab]], (120, 40)),
+        screen("small_terminal_60x20", 0, &[], (60, 20)),
+        screen("common_terminal_80x24", 0, &[], (80, 24)),
+        screen("too_small", 0, &[], (30, 10)),
+        screen(
+            "after_lambda_up_three_times_and_zeta_down_twice",
+            0,
+            &[&chars("lll"), &chars("ZZ")],
+            (120, 40),
+        ),
+        screen(
+            "value_entry_refusing_text",
+            0,
+            &[&[Right, Char('=')], &chars("abc"), &[Enter]],
+            (120, 40),
+        ),
+        screen(
+            "save_prompt_refusing_a_name_with_a_space",
+            0,
+            &[&chars("ls"), &[Backspace; 6], &chars(" mine"), &[Enter]],
+            (120, 40),
+        ),
+        screen(
+            "flattened_superball_with_a_pinned_ghost",
+            0,
+            &[&[Char('p'), Right, Right, Char('=')], &[Char('8'), Enter]],
+            (120, 40),
+        ),
+    ]
 }
 
+/// Each of [`screens`] drawn as its snapshot holds it (insta names the snapshot that differs).
 #[test]
-fn first_screen_baseball() {
-    insta::assert_snapshot!(draw(&app(2), 120, 40).backend());
-}
-
-#[test]
-fn help_overlay() {
-    let mut a = app(0);
-    press(&mut a, &[KeyCode::Char('?')]);
-    insta::assert_snapshot!(draw(&a, 120, 40).backend());
-}
-
-#[test]
-fn sweeps_view() {
-    let mut a = app(0);
-    press(&mut a, &[KeyCode::Tab]);
-    insta::assert_snapshot!(draw(&a, 120, 40).backend());
-}
-
-#[test]
-fn small_terminal_60x20() {
-    insta::assert_snapshot!(draw(&app(0), 60, 20).backend());
-}
-
-#[test]
-fn common_terminal_80x24() {
-    insta::assert_snapshot!(draw(&app(0), 80, 24).backend());
-}
-
-#[test]
-fn too_small() {
-    insta::assert_snapshot!(draw(&app(0), 30, 10).backend());
-}
-
-#[test]
-fn after_lambda_up_three_times_and_zeta_down_twice() {
-    let mut a = app(0);
-    press(
-        &mut a,
-        &[KeyCode::Char('l'), KeyCode::Char('l'), KeyCode::Char('l')],
-    );
-    press(&mut a, &[KeyCode::Char('Z'), KeyCode::Char('Z')]);
-    insta::assert_snapshot!(draw(&a, 120, 40).backend());
-}
-
-#[test]
-fn value_entry_refusing_text() {
-    let mut a = app(0);
-    press(&mut a, &[KeyCode::Right, KeyCode::Char('=')]);
-    press(
-        &mut a,
-        &"abc".chars().map(KeyCode::Char).collect::<Vec<_>>(),
-    );
-    press(&mut a, &[KeyCode::Enter]);
-    insta::assert_snapshot!(draw(&a, 120, 40).backend());
-}
-
-#[test]
-fn save_prompt_refusing_a_name_with_a_space() {
-    let mut a = app(0);
-    press(&mut a, &[KeyCode::Char('l'), KeyCode::Char('s')]);
-    press(&mut a, &[KeyCode::Backspace; 6]);
-    press(
-        &mut a,
-        &" mine".chars().map(KeyCode::Char).collect::<Vec<_>>(),
-    );
-    press(&mut a, &[KeyCode::Enter]);
-    insta::assert_snapshot!(draw(&a, 120, 40).backend());
+fn screens_after_keys() {
+    for Screen {
+        name,
+        ball,
+        keys,
+        size: (w, h),
+    } in screens()
+    {
+        let mut a = app(ball);
+        press(&mut a, &keys);
+        insta::assert_snapshot!(name, draw(&a, w, h).backend());
+    }
 }
 
 #[test]
@@ -112,22 +102,6 @@ fn overwrite_question() {
         path: "/home/user/.config/bouncelab/presets/superball-custom.toml".into(),
         holds: Some("old-superball".into()),
     });
-    insta::assert_snapshot!(draw(&a, 120, 40).backend());
-}
-
-#[test]
-fn flattened_superball_with_a_pinned_ghost() {
-    let mut a = app(0);
-    press(
-        &mut a,
-        &[
-            KeyCode::Char('p'),
-            KeyCode::Right,
-            KeyCode::Right,
-            KeyCode::Char('='),
-        ],
-    );
-    press(&mut a, &[KeyCode::Char('8'), KeyCode::Enter]);
     insta::assert_snapshot!(draw(&a, 120, 40).backend());
 }
 

@@ -45,11 +45,29 @@ fn stopped(app: &mut App, work: Work) -> Vec<Effect> {
     app.update(Action::WorkerStopped { work, why })
 }
 
+/// `R` asks the stopped work again: its one effect the job (`is_job`), and the view waits for
+/// it (`pending`).
+fn assert_r_asks_again(app: &mut App, is_job: fn(&Effect) -> bool, pending: fn(&App) -> bool) {
+    let effects = press(app, &[KeyCode::Char('R')]);
+    assert!(
+        matches!(effects.as_slice(), [job] if is_job(job)),
+        "{effects:?}"
+    );
+    assert!(pending(app));
+}
+
+/// The superball with background workers (each view's computation handed to a worker, as
+/// the explorer runs) on a `w` × `h` screen, in its first view.
+fn with_workers(w: u16, h: u16) -> App {
+    let mut app = App::new(Preset::embedded().remove(0), true).with_background_sweeps();
+    app.update(Action::Resize(w, h));
+    app
+}
+
 /// The superball with background workers on a `w` × `h` screen, in the sweeps view: the
 /// sweep asked of the worker.
 fn sweeping(w: u16, h: u16) -> (App, Vec<bouncelab::tui::views::sweeps::speed::SpeedRequest>) {
-    let mut app = App::new(Preset::embedded().remove(0), true).with_background_sweeps();
-    app.update(Action::Resize(w, h));
+    let mut app = with_workers(w, h);
     let asked = match press(&mut app, &[KeyCode::Tab]).as_slice() {
         [Effect::Compute(r)] => r.clone(),
         other => panic!("expected the sweep asked, got {other:?}"),
@@ -151,8 +169,7 @@ fn an_export_does_not_wait_for_a_stopped_sweep() {
 /// stopped and why, no job is handed out again until `R`.
 #[test]
 fn a_map_whose_refinement_stopped() {
-    let mut app = App::new(Preset::embedded().remove(0), true).with_background_sweeps();
-    app.update(Action::Resize(120, 40));
+    let mut app = with_workers(120, 40);
     let effects = press(&mut app, &[KeyCode::Tab, KeyCode::Tab, KeyCode::Tab]);
     assert!(effects.iter().any(|e| matches!(e, Effect::Map(_))));
     assert!(app.map_pending());
@@ -172,20 +189,14 @@ fn a_map_whose_refinement_stopped() {
         app.update(Action::Resize(120, 40)).is_empty(),
         "not asked again"
     );
-    let effects = press(&mut app, &[KeyCode::Char('R')]);
-    assert!(
-        matches!(effects.as_slice(), [Effect::Map(_)]),
-        "{effects:?}"
-    );
-    assert!(app.map_pending());
+    assert_r_asks_again(&mut app, |e| matches!(e, Effect::Map(_)), App::map_pending);
 }
 
 /// The models' worker dies: the table says "no calibration: stopped: …" where it said
 /// "calibrating…"; `R` asks the calibration again.
 #[test]
 fn a_calibration_that_stopped() {
-    let mut app = App::new(Preset::embedded().remove(0), true).with_background_sweeps();
-    app.update(Action::Resize(120, 40));
+    let mut app = with_workers(120, 40);
     let effects = press(&mut app, &[KeyCode::Tab, KeyCode::Tab]);
     let asked = effects.iter().find_map(|e| match e {
         Effect::ComputeModels(r) if !r.is_empty() => Some(r.clone()),
@@ -207,8 +218,7 @@ fn a_calibration_that_stopped() {
 /// The oblique map's worker dies: the map says it stopped and why; `R` asks it again.
 #[test]
 fn an_oblique_map_that_stopped() {
-    let mut app = App::new(Preset::embedded().remove(0), true).with_background_sweeps();
-    app.update(Action::Resize(120, 40));
+    let mut app = with_workers(120, 40);
     let effects = press(&mut app, &[KeyCode::Char('i')]);
     assert!(effects.iter().any(|e| matches!(e, Effect::ObliqueMap(_))));
     assert!(app.oblique_pending());
@@ -218,12 +228,11 @@ fn an_oblique_map_that_stopped() {
     let text = screen_text(&draw(&app, 120, 40)).join("\n");
     assert!(text.contains("stopped: it panicked: test: a job"), "{text}");
     assert!(!text.contains("computing the map…"), "{text}");
-    let effects = press(&mut app, &[KeyCode::Char('R')]);
-    assert!(
-        matches!(effects.as_slice(), [Effect::ObliqueMap(_)]),
-        "{effects:?}"
+    assert_r_asks_again(
+        &mut app,
+        |e| matches!(e, Effect::ObliqueMap(_)),
+        App::oblique_pending,
     );
-    assert!(app.oblique_pending());
 }
 
 /// The fit's worker dies: the pane says the fit stopped and why where it said "fitting…";

@@ -162,6 +162,19 @@ pub fn bad_each(cases: &[(&str, &[&str])]) {
     }
 }
 
+/// Each `{prefix} {words}` (split at its spaces, as [`argv`]) exits 2 with `says` on stderr
+/// and nothing on stdout; a failure names the line. Looser than [`bad_each`]: stderr may hold
+/// more than the one error line (a shot's calibration warning before it).
+pub fn refused_each(prefix: &str, cases: &[(&str, &str)]) {
+    for (words, says) in cases {
+        let line = format!("{prefix} {words}");
+        let o = bl(&argv(&line));
+        assert_eq!(o.code, 2, "{line}: {}", o.stderr);
+        assert!(o.stderr.contains(says), "{line}: {}", o.stderr);
+        assert!(o.stdout.is_empty(), "{line}: {}", o.stdout);
+    }
+}
+
 /// `args` with `--format json` give one warning, starting with `starts`, and the text answer
 /// (`args` alone) says the same as `warning: …`.
 pub fn assert_warns_once_in_json_and_text(args: &[&str], starts: &str) {

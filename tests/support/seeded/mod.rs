@@ -27,6 +27,13 @@ impl Seeded {
         10f64.powf(a + (b - a) * self.uniform())
     }
 
+    /// `10^x`, `x` uniform over [`from`, `from + span`): log-uniform over `span` decades from
+    /// `10^from`, written as the tests wrote it by hand, so that the same seed draws the same
+    /// bits.
+    pub fn decades(&mut self, from: f64, span: f64) -> f64 {
+        10f64.powf(from + span * self.uniform())
+    }
+
     /// Standard normal (`rand_distr`'s ziggurat).
     pub fn normal(&mut self) -> f64 {
         StandardNormal.sample(&mut self.0)

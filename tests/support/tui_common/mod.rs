@@ -4,7 +4,7 @@
 
 use bouncelab::cli::Cli;
 use bouncelab::tui::action;
-use bouncelab::tui::app::{App, Effect};
+use bouncelab::tui::app::{App, Effect, View};
 use bouncelab::tui::export::ExportRequest;
 use clap::Parser;
 use ratatui::Terminal;
@@ -27,6 +27,15 @@ pub fn press(app: &mut App, keys: &[KeyCode]) -> Vec<Effect> {
         }
     }
     effects
+}
+
+/// The explorer on the embedded preset `name`, without colour, after the key `view_key`,
+/// which opens `view` (asserted): the start of a test of one view.
+pub fn opened_on(name: &str, view_key: char, view: View) -> App {
+    let mut app = App::new(crate::common::embedded(name), false);
+    press(&mut app, &[KeyCode::Char(view_key)]);
+    assert_eq!(app.view(), view, "{name} after {view_key:?}");
+    app
 }
 
 /// Open the `m` form, go to `field`, type `text` over its value and press Enter: what the
@@ -116,17 +125,34 @@ pub fn close(a: f64, b: f64) -> bool {
 /// The oblique view's answer (speed, angle and spin out, normal COR) is the one its command
 /// line `line` printed as JSON, `j`, to [`close`].
 pub fn assert_oblique_answer_is(app: &App, j: &serde_json::Value, line: &str) {
+    let keys = ["v_out", "angle_out_deg", "spin_out", "cor_normal"];
+    assert_oblique_numbers_are(app, j, line, &keys);
+}
+
+/// [`assert_oblique_answer_is`] in each of `keys`: the JSON's keys, each the number of the
+/// view's answer (`ObliqueResponse`) of the same name.
+pub fn assert_oblique_numbers_are(app: &App, j: &serde_json::Value, line: &str, keys: &[&str]) {
     let r = app.oblique_view().response().expect("an impact");
-    for (k, v) in [
-        ("v_out", r.v_out),
-        ("angle_out_deg", r.angle_out_deg),
-        ("spin_out", r.spin_out),
-        ("cor_normal", r.cor_normal),
-    ] {
+    for &k in keys {
+        let v = match k {
+            "v_out" => r.v_out,
+            "angle_out_deg" => r.angle_out_deg,
+            "spin_out" => r.spin_out,
+            "cor_normal" => r.cor_normal,
+            "cor_tangential" => r.cor_tangential.expect("a tangential COR"),
+            "apparent_friction" => r.apparent_friction,
+            "grip_time" => r.grip_time,
+            "contact_time" => r.contact_time,
+            "max_normal_force" => r.max_normal_force,
+            "max_friction_force" => r.max_friction_force,
+            "vx_out" => r.vx_out,
+            "vy_out" => r.vy_out,
+            _ => panic!("the oblique answer has no number {k}"),
+        };
         let f = j[k]
             .as_f64()
             .unwrap_or_else(|| panic!("{line}: {k} is not a number"));
-        assert!(close(f, v), "{line}: {k} {f} {v}");
+        assert!(close(f, v), "{line}: {k}: command line {f}, view {v}");
     }
 }
 
