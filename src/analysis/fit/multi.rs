@@ -83,12 +83,12 @@ pub(super) fn fit_trace(
     if p.stopped() {
         return Err(MultiFitError::Interrupted);
     }
-    let sol = sol.ok_or(MultiFitError::NoAnswer)?;
+    let mut sol = sol.ok_or(MultiFitError::NoAnswer)?;
     let model = p.model_at_rows(&sol.sol.x).unwrap_or_default();
     let ball = p.ball(&sol.sol.x);
     let rms = rms(&sol.sol.residuals);
     let mut f = finish(ball, law, free, &sol, Spread::Residuals, rms, model)?;
-    edge::both_sides(&p, &sol, &mut f, iterations);
+    edge::both_sides(&p, &mut sol, &mut f, iterations)?;
     if p.stopped() {
         return Err(MultiFitError::Interrupted);
     }
@@ -97,7 +97,7 @@ pub(super) fn fit_trace(
     // the model's misses matter only above the noise's scale (a noise-free synthetic trace
     // leaves rounding's systematic residuals)
     let lack = verdict::runs_test(&sol.sol.residuals)
-        .filter(|_| rms > 1e-6 * summary.peak.abs().max(f64::MIN_POSITIVE));
+        .filter(|_| f.rms_residual > 1e-6 * summary.peak.abs().max(f64::MIN_POSITIVE));
     judge(&mut f, lack);
     Ok(f)
 }
@@ -201,7 +201,7 @@ fn variance(s: &Solution) -> f64 {
     2.0 * s.cost / s.residuals.len().saturating_sub(s.x.len()).max(1) as f64
 }
 
-fn rms(r: &[f64]) -> f64 {
+pub(super) fn rms(r: &[f64]) -> f64 {
     (r.iter().map(|v| v * v).sum::<f64>() / r.len().max(1) as f64).sqrt()
 }
 
