@@ -162,7 +162,7 @@ fn speed_free_coverage(seeds: u64) -> [usize; 6] {
 /// intervals fall below that with probability about 0.015 each). Measured on the Jacobian's
 /// intervals alone: [55, 55, 50, 50, 52, 52] (failed); with the intervals spanning both
 /// sides of the first row where the profile-t test kept the other side: [58, 58, 58, 57, 55,
-/// 55]; with the hull of both sides (`analysis::fit::edge`): FIGURES_60.
+/// 55]; with the hull of both sides (`analysis::fit::edge`): [59, 59, 59, 58, 59, 59].
 #[test]
 fn speed_free_trace_intervals_cover_the_truth() {
     let hits = speed_free_coverage(60);
