@@ -17,15 +17,9 @@ use rand_distr::{Distribution, StandardNormal};
 
 /// The superball (presets/superball.toml) at speed `v0`.
 fn superball(v0: f64) -> ImpactParams {
-    ImpactParams {
-        mass: 0.0374,
-        k_p: 5.45e4,
-        damping: 140.0,
-        k_r: 7.08e4,
-        z_p: 4e-3,
-        k_h: ImpactParams::k_h_matching(5.45e4, 4e-3),
-        v0,
-    }
+    let ball = crate::Ball::from_preset("superball").unwrap();
+    assert_eq!(ball.law, ContactLaw::Linear);
+    ImpactParams { v0, ..ball.params }
 }
 
 /// tests/analysis/fit_coverage.rs's `superball_trace` at `seed`: the contact alone at
