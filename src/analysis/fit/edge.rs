@@ -34,9 +34,8 @@
 //! it pinned nothing), and is left out where the test rejects it.
 
 use super::lm::{self, Best, Solution};
-use super::multi::{finish, rms};
 use super::result::{Estimate, MultiFit, MultiFitError};
-use super::stats::{Spread, t975, uncertainty};
+use super::stats::{t975, uncertainty};
 use super::trace::TraceProblem;
 use super::verdict;
 
@@ -55,12 +54,14 @@ where the speed was measured";
 /// lies near it (see the module's comment); `iterations` is the budget of the side's fit. Where
 /// the other side's minimum is the lower, it becomes the fit (`best` and `f` at it: the
 /// least-squares estimate is the lowest minimum, `lower_minimum_on_the_other_side_is_reported`),
-/// and the first side's intervals join the hull.
+/// and the first side's intervals join the hull; `refinish` makes the fit's report at a
+/// minimum.
 pub(super) fn both_sides(
     p: &TraceProblem,
     best: &mut Best,
     f: &mut MultiFit,
     iterations: usize,
+    refinish: impl Fn(&Best) -> Result<MultiFit, MultiFitError>,
 ) -> Result<(), MultiFitError> {
     let first = p.data.time[0];
     let Some(t0) = &f.time_offset else {
@@ -83,17 +84,7 @@ pub(super) fn both_sides(
     if other.sol.cost < best.sol.cost {
         other.sol.iterations += best.sol.iterations;
         std::mem::swap(best, &mut other);
-        let model = p.model_at_rows(&best.sol.x).unwrap_or_default();
-        let rms = rms(&best.sol.residuals);
-        *f = finish(
-            p.ball(&best.sol.x),
-            p.law,
-            &p.free,
-            best,
-            Spread::Residuals,
-            rms,
-            model,
-        )?;
+        *f = refinish(best)?;
     }
     hull_other_side(p, best, &other.sol, f);
     Ok(())

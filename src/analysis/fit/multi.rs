@@ -88,7 +88,12 @@ pub(super) fn fit_trace(
     let ball = p.ball(&sol.sol.x);
     let rms = rms(&sol.sol.residuals);
     let mut f = finish(ball, law, free, &sol, Spread::Residuals, rms, model)?;
-    edge::both_sides(&p, &mut sol, &mut f, iterations)?;
+    let refinish = |b: &Best| {
+        let model = p.model_at_rows(&b.sol.x).unwrap_or_default();
+        let at = self::rms(&b.sol.residuals);
+        finish(p.ball(&b.sol.x), law, free, b, Spread::Residuals, at, model)
+    };
+    edge::both_sides(&p, &mut sol, &mut f, iterations, refinish)?;
     if p.stopped() {
         return Err(MultiFitError::Interrupted);
     }
@@ -201,7 +206,7 @@ fn variance(s: &Solution) -> f64 {
     2.0 * s.cost / s.residuals.len().saturating_sub(s.x.len()).max(1) as f64
 }
 
-pub(super) fn rms(r: &[f64]) -> f64 {
+fn rms(r: &[f64]) -> f64 {
     (r.iter().map(|v| v * v).sum::<f64>() / r.len().max(1) as f64).sqrt()
 }
 
