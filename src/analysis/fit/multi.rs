@@ -83,12 +83,17 @@ pub(super) fn fit_trace(
     if p.stopped() {
         return Err(MultiFitError::Interrupted);
     }
-    let sol = sol.ok_or(MultiFitError::NoAnswer)?;
+    let mut sol = sol.ok_or(MultiFitError::NoAnswer)?;
     let model = p.model_at_rows(&sol.sol.x).unwrap_or_default();
     let ball = p.ball(&sol.sol.x);
     let rms = rms(&sol.sol.residuals);
     let mut f = finish(ball, law, free, &sol, Spread::Residuals, rms, model)?;
-    edge::both_sides(&p, &sol, &mut f, iterations);
+    let refinish = |b: &Best| {
+        let model = p.model_at_rows(&b.sol.x).unwrap_or_default();
+        let at = self::rms(&b.sol.residuals);
+        finish(p.ball(&b.sol.x), law, free, b, Spread::Residuals, at, model)
+    };
+    edge::both_sides(&p, &mut sol, &mut f, iterations, refinish)?;
     if p.stopped() {
         return Err(MultiFitError::Interrupted);
     }
@@ -97,7 +102,7 @@ pub(super) fn fit_trace(
     // the model's misses matter only above the noise's scale (a noise-free synthetic trace
     // leaves rounding's systematic residuals)
     let lack = verdict::runs_test(&sol.sol.residuals)
-        .filter(|_| rms > 1e-6 * summary.peak.abs().max(f64::MIN_POSITIVE));
+        .filter(|_| f.rms_residual > 1e-6 * summary.peak.abs().max(f64::MIN_POSITIVE));
     judge(&mut f, lack);
     Ok(f)
 }
