@@ -38,13 +38,7 @@ fn trace(p: &ImpactParams) -> Trace {
         .iter()
         .map(|&t| 0.2 + interpolate(&h.t, &h.force, t - 2e-3).0)
         .collect();
-    Trace {
-        lines: (2..rows + 2).collect(),
-        force_columns: vec![2; rows],
-        end_line: rows + 2,
-        time,
-        force,
-    }
+    Trace::from_columns(time, force)
 }
 
 fn problem<'a>(tr: &'a Trace, watch: &'a dyn Watch) -> TraceProblem<'a> {

@@ -23,35 +23,57 @@ pub type FitReply = (u64, FitNews);
 /// The fits' thread: the explorer's one worker type ([`Worker`], issue 55 item 1: the fit had
 /// a thread and serving loop of its own) with a fit as its job, its news told by request id.
 pub struct FitWorker {
-    thread: Worker<FitRequest>,
+    thread: Worker<PacedFit>,
+    every: Duration,
+}
+
+/// A fit as the worker runs it: the request and how often its progress goes out.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PacedFit {
+    request: FitRequest,
+    every: Duration,
 }
 
 impl FitWorker {
+    /// The explorer's: progress every [`PROGRESS_EVERY`].
     pub fn spawn() -> std::io::Result<FitWorker> {
+        FitWorker::spawn_reporting_every(PROGRESS_EVERY)
+    }
+
+    /// Progress at most every `every` (zero: after each model run, so that a test sees it
+    /// whatever the build's speed: tests/tui/tui_heavy.rs, whose 200 000-row fit ends within
+    /// one [`PROGRESS_EVERY`] when optimised).
+    pub fn spawn_reporting_every(every: Duration) -> std::io::Result<FitWorker> {
         Ok(FitWorker {
             thread: Worker::spawn()?,
+            every,
         })
     }
 
     /// Run `request`'s fit; should the thread be gone, `try_recv` says so.
     pub fn want(&mut self, request: FitRequest) {
-        self.thread.want(&[request]);
+        let every = self.every;
+        self.thread.want(&[PacedFit { request, every }]);
     }
 
     /// News of a fit if some is waiting, or why the thread is gone.
     pub fn try_recv(&mut self) -> Result<Option<FitReply>, Stopped> {
         let reply = self.thread.try_recv()?;
         // a fit's refusal comes inside its outcome (`FitNews::Done`), never as the job's
-        Ok(reply
-            .map(|(request, news)| (request.id, news.unwrap_or_else(|e| FitNews::from(Err(e))))))
+        Ok(reply.map(|(paced, news)| {
+            (
+                paced.request.id,
+                news.unwrap_or_else(|e| FitNews::from(Err(e))),
+            )
+        }))
     }
 }
 
-impl Job for FitRequest {
+impl Job for PacedFit {
     type Output = FitNews;
     const NAME: &'static str = "fit";
 
-    /// The fit, its progress to `partial` every [`PROGRESS_EVERY`]; it stops at its next
+    /// The fit, its progress to `partial` every `every`; it stops at its next
     /// model run once `go_on` says a later fit is asked for, and its outcome (then an
     /// "interrupted" error) still comes back: `App` keeps the id of the latest and drops it.
     fn run_refining(
@@ -65,24 +87,29 @@ impl Job for FitRequest {
             partial: RefCell::new(partial),
             start,
             last: Cell::new(start),
+            every: self.every,
         };
-        Some(Ok(FitNews::Done(measured::run_watched(self, &watch))))
+        Some(Ok(FitNews::Done(measured::run_watched(
+            &self.request,
+            &watch,
+        ))))
     }
 }
 
-/// The watch of one fit on the worker: its progress to the loop every [`PROGRESS_EVERY`], and
-/// a stop once a later fit is asked for.
+/// The watch of one fit on the worker: its progress to the loop every `every`, and a stop
+/// once a later fit is asked for.
 struct Reporter<'a> {
     go_on: RefCell<&'a mut dyn FnMut() -> bool>,
     partial: RefCell<&'a mut dyn FnMut(FitNews)>,
     start: Instant,
     last: Cell<Instant>,
+    every: Duration,
 }
 
 impl Watch for Reporter<'_> {
     fn step(&self, done: u64) -> bool {
         let now = Instant::now();
-        if now.duration_since(self.last.get()) >= PROGRESS_EVERY {
+        if now.duration_since(self.last.get()) >= self.every {
             self.last.set(now);
             let p = FitProgress {
                 runs: done,
@@ -117,6 +144,7 @@ mod tests {
             partial: RefCell::new(&mut partial),
             start: long_ago,
             last: Cell::new(long_ago),
+            every: PROGRESS_EVERY,
         };
         assert!(r.step(10));
         assert!(r.step(11), "no report so soon after the last");
