@@ -316,7 +316,9 @@ def py_impacts():
 
 def py_past():
     out = py(["benches/impacts_python.py", "past"])
-    return re.search(r"([\d.]+ (?:ns|µs)) (?:per|an) ", out).group(1) + " an element"
+    # "…: 1.061 µs wall per element (1.753 µs CPU)" (benches/impacts_python.py)
+    m = re.search(r"([\d.]+ (?:ns|µs)) wall per element \(([\d.]+ (?:ns|µs)) CPU\)", out)
+    return f"{m.group(1)} wall an element ({m.group(2)} CPU)"
 
 
 def py_sweep():
