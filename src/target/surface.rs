@@ -232,8 +232,8 @@ impl Surface {
     }
 
     /// The rigid, immovable test plate without friction data: today's wall. Parsed once: every
-    /// answer on the plate names it, and parsing its file each time was over half the CPU of
-    /// Python's `run` (10.5 µs a call against 4.5 µs, BENCHMARKS.md).
+    /// answer on the plate names it, and `run` from Python answers in a few µs a call
+    /// (BENCHMARKS.md), which parsing the file on each call would more than double.
     pub fn rigid_plate() -> Surface {
         static PLATE: LazyLock<Surface> = LazyLock::new(|| {
             Surface::parse(EMBEDDED[0].1, "embedded:steel-plate")

@@ -16,15 +16,15 @@
 //! The rule: when the fitted pulse starts within the trace's first tenth (or t0's interval
 //! reaches back to t₁), the fit is done again with t0 held on the other side of t₁
 //! (Levenberg–Marquardt from the first minimum, t0's bound moved to t₁). The estimate is the
-//! lower of the two minima (the least-squares one; 12 of the first 100 seeds found the lower
-//! one on the second side, and the old code reported the first), and each 95 % interval is
+//! lower of the two minima (the least-squares one; in 12 of the first 100 seeds the lower
+//! one is on the second side: `lower_minimum_on_the_other_side_is_reported`), and each 95 % interval is
 //! the hull of the two sides' intervals (each the Jacobian's on its side): the union of a
 //! set that holds the truth 95 % of the time when t0 lies before t₁ and one that does when
 //! it lies after, so a set that holds it at least 95 % of the time wherever it lies.
 //!
-//! The old rule took the other side only where its cost was above the lower's by at most
-//! s² t₀.₉₇₅² (the profile-t test of t0 = t₁, Bates & Watts §6.1, as `super::profile`). That
-//! test assumes a smooth cost, and here it is kinked at every row the start crosses (the
+//! A sound other side joins the hull without the profile-t test of t0 = t₁ (its cost above the lower's
+//! by at most s² t₀.₉₇₅², Bates & Watts §6.1, as `super::profile`): that test assumes a smooth
+//! cost, and here it is kinked at every row the start crosses (the
 //! pulse opens with a ramp, F ≈ K_p v0 (t − t0)): with the truth at t₁ (the superball
 //! trace), τ² passed t₀.₉₇₅² in 20 of the first 100 seeds where 5 were due, and most of
 //! the t0 and baseline intervals that missed were those. A side whose fit ran a parameter
