@@ -100,7 +100,7 @@ fn the_picker_lists_the_surfaces_and_puts_the_ball_on_one() {
     assert_eq!((s.target_mass, s.target_speed), (f64::INFINITY, 0.0));
     assert_eq!(s.tangential_damping, Some(2.0));
     assert_eq!(s.surface.as_ref().unwrap().name, "gym");
-    let o = app.oblique_view().values();
+    let o = app.oblique_view().values;
     assert_eq!((o.friction, o.tangential_stiffness), (0.45, Some(5e4)));
     assert_ne!(
         app.run().unwrap().cor,
@@ -131,7 +131,7 @@ fn the_picker_lists_the_surfaces_and_puts_the_ball_on_one() {
     press(&mut app, &[KeyCode::Char('u')]);
     assert_eq!(app.setting().surface, None);
     assert_eq!(app.setting().target_stiffness, f64::INFINITY);
-    assert_eq!(app.oblique_view().values().friction, 0.6);
+    assert_eq!(app.oblique_view().values.friction, 0.6);
     let said = app.message().unwrap().text.clone();
     assert!(
         said.starts_with("undone: surface gym → steel-plate"),

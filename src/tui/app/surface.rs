@@ -68,7 +68,7 @@ impl App {
             .validate()
             .map_err(|e| crate::tui::physical::refusal(&e))?;
         crate::tui::physical::closing_check(&next)?;
-        let mut oblique = self.oblique.values();
+        let mut oblique = self.oblique.values;
         // its μ is the flight view's bounce's too (the form's μ sets both)
         let mut flight = self.flight.values;
         if let Some(mu) = surface.friction {
@@ -79,11 +79,10 @@ impl App {
             oblique.tangential_stiffness = surface.tangential_stiffness;
         }
         next.surface = Some(surface);
-        if next != self.setting || oblique != self.oblique.values() || flight != self.flight.values
-        {
+        if next != self.setting || oblique != self.oblique.values || flight != self.flight.values {
             self.remember();
             self.setting = next;
-            self.oblique.set_values(oblique);
+            self.oblique.values = oblique;
             self.flight.values = flight;
         }
         Ok(())
