@@ -60,11 +60,9 @@ impl App {
     /// surface's target would not meet or the model would not take them.
     pub(in crate::tui) fn on_surface(&mut self, surface: Surface) -> Result<(), String> {
         let mut next = self.setting.clone();
-        let t = surface.target();
-        (next.target_mass, next.target_speed) = (t.mass, t.speed);
-        (next.target_stiffness, next.target_damping) = (t.stiffness, t.damping);
+        next.target = surface.target();
         next.tangential_damping = surface.tangential_damping;
-        next.target()
+        next.target
             .validate()
             .map_err(|e| crate::tui::physical::refusal(&e))?;
         crate::tui::physical::closing_check(&next)?;

@@ -61,7 +61,7 @@ impl App {
     pub fn oblique_surface(&self) -> crate::target::Target {
         crate::target::Target {
             speed: 0.0,
-            ..self.setting.target()
+            ..self.setting.target
         }
     }
 
