@@ -21,7 +21,7 @@ use std::path::Path;
 
 mod options;
 use options::options;
-pub use options::{conditioned_base, not_carried};
+pub use options::{conditioned_base, not_carried, params_off};
 
 /// Where `run` finds the ball.
 #[derive(Debug, Clone, Copy)]
@@ -70,7 +70,7 @@ fn what_the_ball_meets(setting: &Setting) -> Vec<String> {
     // off it (issue 53 item 6)
     let (mut words, own, own_c_t) = picked_surface(setting);
     words.extend(tangential_damping(setting, own_c_t));
-    let t = setting.target();
+    let t = setting.target;
     words.extend(differing(&[
         ("--target-mass", t.mass, own.mass),
         ("--target-speed", t.speed, own.speed),
@@ -152,7 +152,7 @@ fn k_r_damping(preset: &Preset, setting: &Setting) -> [String; 4] {
 /// the target (at rest) is not that surface's (or the rigid plate's), and c_t.
 fn surface_options(setting: &Setting) -> Vec<String> {
     let (mut words, own, own_c_t) = picked_surface(setting);
-    let t = setting.target();
+    let t = setting.target;
     words.extend(differing(&[
         ("--surface-stiffness", t.stiffness, own.stiffness),
         ("--surface-damping", t.damping, own.damping),

@@ -43,7 +43,7 @@ pub fn impact(params: &ImpactParams, law: ContactLaw) -> Result<ImpactResponse, 
 /// the reduced ball, with the surface's deflection too. An impact on a compliant target
 /// carries no energy budget (the readout then shows none).
 pub fn pair(setting: &Setting) -> Result<(ImpactResponse, Option<TargetMotion>), String> {
-    let target = setting.target();
+    let target = setting.target;
     let p = setting.run_params();
     if target.is_rigid() {
         let run = impact(&p, setting.law)?;

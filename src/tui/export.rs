@@ -78,18 +78,18 @@ impl ExportRequest {
     }
 }
 
-/// A ball's name made safe for a file name: ASCII letters, digits, `_` and `-` are kept,
-/// anything else (spaces, `/`, accents) becomes `-`.
+/// Whether `c` is safe in a file name the explorer writes (and so in a saved preset's name,
+/// its file's stem): an ASCII letter or digit, `_` or `-`.
+pub fn file_name_char(c: char) -> bool {
+    c.is_ascii_alphanumeric() || c == '_' || c == '-'
+}
+
+/// A ball's name made safe for a file name: the [`file_name_char`]s are kept, anything else
+/// (spaces, `/`, accents) becomes `-`.
 pub fn file_stem_part(name: &str) -> String {
     let s: String = name
         .chars()
-        .map(|c| {
-            if c.is_ascii_alphanumeric() || c == '_' || c == '-' {
-                c
-            } else {
-                '-'
-            }
-        })
+        .map(|c| if file_name_char(c) { c } else { '-' })
         .collect();
     if s.is_empty() { "ball".into() } else { s }
 }

@@ -15,7 +15,7 @@
 //! bit for bit.
 
 use super::action::Action;
-use super::export::{file_stem_part, short_dir};
+use super::export::{file_name_char, file_stem_part, short_dir};
 use super::setting::Setting;
 use crate::catalog::{self, Catalog, Origin};
 use crate::model::contact::ContactLaw;
@@ -60,10 +60,7 @@ pub fn check_name(name: &str) -> Result<(), String> {
     if name.chars().count() > NAME_MAX {
         return Err(format!("a preset name has at most {NAME_MAX} characters"));
     }
-    if let Some(bad) = name
-        .chars()
-        .find(|c| !(c.is_ascii_alphanumeric() || *c == '-' || *c == '_'))
-    {
+    if let Some(bad) = name.chars().find(|&c| !file_name_char(c)) {
         return Err(format!(
             "'{bad}' cannot be in a name: use letters, digits, - and _"
         ));

@@ -103,10 +103,10 @@ impl App {
             law: s.law.name().into(),
             radius: s.radius,
             elastomer: s.elastomer,
-            target_mass: s.target_mass,
-            target_speed: s.target_speed,
-            target_stiffness: s.target_stiffness,
-            target_damping: s.target_damping,
+            target_mass: s.target.mass,
+            target_speed: s.target.speed,
+            target_stiffness: s.target.stiffness,
+            target_damping: s.target.damping,
             pressure: s.conditions.pressure,
             temperature: s.conditions.temperature,
             surface: s.surface.as_ref().map(|x| x.name.clone()),
@@ -185,10 +185,12 @@ impl App {
             law,
             radius: b.radius,
             elastomer: b.elastomer,
-            target_mass: b.target_mass,
-            target_speed: b.target_speed,
-            target_stiffness: b.target_stiffness,
-            target_damping: b.target_damping,
+            target: crate::target::Target {
+                mass: b.target_mass,
+                speed: b.target_speed,
+                stiffness: b.target_stiffness,
+                damping: b.target_damping,
+            },
             conditions: crate::api::ConditionsSpec {
                 pressure: b.pressure,
                 temperature: b.temperature,
@@ -209,7 +211,7 @@ impl App {
         crate::model::params::check_positive(crate::model::params::Field::Radius, s.radius)
             .map_err(|e| e.to_string())?;
         s.params.validate().map_err(|e| e.to_string())?;
-        s.target().validate().map_err(|e| e.to_string())?;
+        s.target.validate().map_err(|e| e.to_string())?;
         // the conditions as `--pressure`, `--temperature` check them (the library's refusal)
         let preset = &self.presets[preset];
         crate::tui::physical::conditions::conditioned(

@@ -21,15 +21,12 @@ pub struct Setting {
     /// Whether the ball flattens as an elastomer (p0 = E z_p/R, Eq. 20), which ties its
     /// contact modulus to K_p: K_p = 2π E z_p (the form's E field).
     pub elastomer: bool,
-    /// The target's mass M (kg; ∞: today's wall) and speed toward the ball v_t (m/s), typed in
-    /// the form: the run is the pair's, the reduced ball at the closing speed
-    /// (docs/targets.md §2).
-    pub target_mass: f64,
-    pub target_speed: f64,
-    /// The target surface's stiffness K_s (N/m; ∞: rigid) and the damping in parallel with it
-    /// c_s (kg/s), typed in the form: the pair's run on a compliant target (docs/targets.md).
-    pub target_stiffness: f64,
-    pub target_damping: f64,
+    /// The target the ball meets, typed in the form (the wall until M, v_t, K_s or c_s is):
+    /// its mass M (kg; ∞: today's wall) and speed toward the ball v_t (m/s) make the run the
+    /// pair's, the reduced ball at the closing speed (docs/targets.md §2); its stiffness K_s
+    /// (N/m; ∞: rigid) and the damping in parallel with it c_s (kg/s), the pair's run on a
+    /// compliant target (docs/targets.md).
+    pub target: Target,
     /// The inflation pressure and temperature typed in the form (issue 56), as `--pressure`
     /// and `--temperature` take them (`None`: the record's); `params` are the ball's at them
     /// (src/tui/physical/conditions.rs). The other fields of the spec stay `None`.
@@ -65,10 +62,7 @@ impl Setting {
             law: preset.law,
             radius: preset.measured.radius,
             elastomer: preset.material.kind == crate::preset::MaterialKind::Elastomer,
-            target_mass: f64::INFINITY,
-            target_speed: 0.0,
-            target_stiffness: f64::INFINITY,
-            target_damping: 0.0,
+            target: Target::wall(),
             conditions: ConditionsSpec::default(),
             record: record(preset),
             surface: None,
@@ -79,24 +73,14 @@ impl Setting {
     /// The parameters the run is made on: the ball's against the wall, else the reduced ball
     /// m* = m/(1 + m/M) at the closing speed v0 + v_t (docs/targets.md §2: a rigid target).
     pub fn run_params(&self) -> ImpactParams {
-        if self.target_mass == f64::INFINITY && self.target_speed == 0.0 {
+        if self.target.mass == f64::INFINITY && self.target.speed == 0.0 {
             return self.params;
         }
         let p = &self.params;
         ImpactParams {
-            mass: p.mass / (1.0 + p.mass / self.target_mass),
-            v0: p.v0 + self.target_speed,
+            mass: p.mass / (1.0 + p.mass / self.target.mass),
+            v0: p.v0 + self.target.speed,
             ..*p
-        }
-    }
-
-    /// The target the ball meets: the wall until M, v_t, K_s or c_s is typed.
-    pub fn target(&self) -> Target {
-        Target {
-            mass: self.target_mass,
-            speed: self.target_speed,
-            stiffness: self.target_stiffness,
-            damping: self.target_damping,
         }
     }
 

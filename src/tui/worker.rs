@@ -10,6 +10,8 @@
 
 use crate::tui::background::{Background, Stopped};
 use crate::tui::views::sweeps::speed::{SpeedCurve, SpeedRequest};
+use std::sync::Arc;
+use std::sync::atomic::AtomicBool;
 use std::sync::mpsc::{Receiver, Sender, TryRecvError};
 
 /// Work a [`Worker`] does: equal jobs give equal results, so the job is its result's key.
@@ -41,6 +43,23 @@ impl Job for SpeedRequest {
         partial: &mut dyn FnMut(SpeedCurve),
     ) -> Option<Result<SpeedCurve, String>> {
         SpeedRequest::run_refining(self, go_on, partial)
+    }
+}
+
+/// Work handed to the worker that `update` calls off once it is stale (the ball or the view
+/// changed): it sets `cancel`, and the job stops at its next step. `generation` counts the
+/// view's hand-outs, so that an answer of an older one is known as stale. Two are the same
+/// job when they are the same hand-out: the generation and the flag, whatever the work.
+#[derive(Debug, Clone)]
+pub struct Cancellable<W> {
+    pub generation: u64,
+    pub work: W,
+    pub cancel: Arc<AtomicBool>,
+}
+
+impl<W> PartialEq for Cancellable<W> {
+    fn eq(&self, other: &Cancellable<W>) -> bool {
+        self.generation == other.generation && Arc::ptr_eq(&self.cancel, &other.cancel)
     }
 }
 

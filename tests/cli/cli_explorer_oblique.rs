@@ -43,7 +43,10 @@ fn the_explorer_opens_on_the_oblique_view_at_those_values() {
     assert_eq!(app.view(), View::Oblique);
     let o = app.oblique_view();
     // spin left at the view's default
-    assert_eq!((o.angle, o.spin, o.friction), (30.0, 0.0, 0.3));
+    assert_eq!(
+        (o.values.angle, o.values.spin, o.values.friction),
+        (30.0, 0.0, 0.3)
+    );
     let r = o.response().unwrap();
     assert_eq!(r.angle_in_deg, 30.0);
     assert!(

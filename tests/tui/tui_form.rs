@@ -253,7 +253,7 @@ fn a_metal_ball_has_no_e_to_type() {
 #[test]
 fn an_entry_opens_holding_its_value_or_empty() {
     let mut a = superball();
-    assert!(a.setting().target_mass.is_infinite());
+    assert!(a.setting().target.mass.is_infinite());
     key(&mut a, KeyCode::Char('m'));
     let n = Field::ALL
         .iter()
@@ -269,7 +269,7 @@ fn an_entry_opens_holding_its_value_or_empty() {
     assert_eq!(input.text, "");
     typed(&mut a, "800");
     key(&mut a, KeyCode::Enter);
-    assert_eq!(a.setting().target_mass, 0.8, "{:?}", a.message());
+    assert_eq!(a.setting().target.mass, 0.8, "{:?}", a.message());
     // a finite value opens as itself, in g: Enter keeps it
     key(&mut a, KeyCode::Enter);
     let Overlay::Input(input) = a.overlay() else {

@@ -38,7 +38,7 @@ fn hertz_map_job() -> (App, bouncelab::tui::views::map::state::MapJob) {
 #[test]
 fn the_hertz_map_shows_a_coarse_full_picture_first() {
     let (mut a, job) = hertz_map_job();
-    let mut map = job.map.clone();
+    let mut map = job.work.clone();
     let first = map.next_pass_cells();
     let cost = work::cost(ContactLaw::Hertz);
     assert!(

@@ -258,7 +258,7 @@ fn passes_come_from_the_worker_and_stale_ones_are_dropped() {
         "a coarse picture"
     );
     // the worker's answer, done here: the whole map of that job
-    let mut full = job.map.clone();
+    let mut full = job.work.clone();
     while full.refine().is_some() {}
     // the ball changes (v0): a new map, the old job cancelled
     press(&mut app, &[KeyCode::Char('v')]);

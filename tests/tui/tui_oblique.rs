@@ -165,7 +165,7 @@ fn a_map_cell_is_the_command_line_s_impact() {
     ));
     press(&mut app, &keys);
     let v = app.oblique_view();
-    assert_eq!((v.angle, v.friction), (30.0, 0.4));
+    assert_eq!((v.values.angle, v.values.friction), (30.0, 0.4));
     let r = v.response().unwrap();
     assert_eq!((r.angle_out_deg, r.spin_out), (c.angle_out, c.spin_out));
 }
@@ -177,7 +177,7 @@ fn keys_step_select_and_type_in_the_library_s_ranges() {
     press(&mut app, &[KeyCode::Char('i')]);
     assert_eq!((app.view(), app.mode()), (View::Oblique, Mode::Oblique));
     let v = |app: &App| {
-        let o = app.oblique_view();
+        let o = app.oblique_view().values;
         (o.angle, o.spin, o.friction)
     };
     assert_eq!(v(&app), (16.0, 0.0, 0.6));
@@ -307,7 +307,7 @@ fn the_map_goes_to_the_worker_and_is_asked_again_after_a_cancel() {
     let Some(Effect::ObliqueMap(job)) = press(&mut app, &[KeyCode::Char('W')]).pop() else {
         panic!("a new map for the new spin");
     };
-    let map = bouncelab::tui::views::oblique::map::compute(&job.spec, &Default::default());
+    let map = bouncelab::tui::views::oblique::map::compute(&job.work, &Default::default());
     let stale = bouncelab::tui::action::Action::ObliqueMapReady {
         generation: job.generation - 1,
         map: Box::new(map.clone().unwrap()),

@@ -24,7 +24,7 @@ fn tennis() -> App {
 
 /// Type `text` and Enter into the entry `=` opens.
 fn values(app: &App) -> ObliqueValues {
-    app.oblique_view().values()
+    app.oblique_view().values
 }
 
 /// Select `p` with → from wherever the selection is.

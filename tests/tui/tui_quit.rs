@@ -158,7 +158,7 @@ fn q_asks_after_any_edit_and_not_after_it_is_undone() {
     press(&mut app, &[KeyCode::Enter]);
     press(&mut app, &chars("800"));
     press(&mut app, &[KeyCode::Enter, KeyCode::Esc]);
-    assert_eq!(app.setting().target_mass, 0.8);
+    assert_eq!(app.setting().target.mass, 0.8);
     press(&mut app, &chars("q"));
     assert!(!app.should_quit(), "a target edit: asks first");
     // a saved session keeps the changes: nothing to lose

@@ -96,11 +96,11 @@ fn the_picker_lists_the_surfaces_and_puts_the_ball_on_one() {
     let before = app.run().unwrap().cor;
     pick(&mut app, config.path(), "gym");
     let s = app.setting();
-    assert_eq!((s.target_stiffness, s.target_damping), (4e5, 30.0));
-    assert_eq!((s.target_mass, s.target_speed), (f64::INFINITY, 0.0));
+    assert_eq!((s.target.stiffness, s.target.damping), (4e5, 30.0));
+    assert_eq!((s.target.mass, s.target.speed), (f64::INFINITY, 0.0));
     assert_eq!(s.tangential_damping, Some(2.0));
     assert_eq!(s.surface.as_ref().unwrap().name, "gym");
-    let o = app.oblique_view().values();
+    let o = app.oblique_view().values;
     assert_eq!((o.friction, o.tangential_stiffness), (0.45, Some(5e4)));
     assert_ne!(
         app.run().unwrap().cor,
@@ -130,8 +130,8 @@ fn the_picker_lists_the_surfaces_and_puts_the_ball_on_one() {
     // u: back on the wall, saying so
     press(&mut app, &[KeyCode::Char('u')]);
     assert_eq!(app.setting().surface, None);
-    assert_eq!(app.setting().target_stiffness, f64::INFINITY);
-    assert_eq!(app.oblique_view().values().friction, 0.6);
+    assert_eq!(app.setting().target.stiffness, f64::INFINITY);
+    assert_eq!(app.oblique_view().values.friction, 0.6);
     let said = app.message().unwrap().text.clone();
     assert!(
         said.starts_with("undone: surface gym → steel-plate"),
@@ -215,7 +215,7 @@ fn y_carries_the_surface_and_the_explorer_opens_on_it_again() {
         type_keys(&mut app, text);
         press(&mut app, &[KeyCode::Enter, KeyCode::Esc]);
     }
-    assert_eq!(app.setting().target_stiffness, 3e5);
+    assert_eq!(app.setting().target.stiffness, 3e5);
     let line = app.command_line();
     assert!(
         line.contains("--surface hard-court --target-stiffness 300000 --target-damping 12"),

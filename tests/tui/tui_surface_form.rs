@@ -61,7 +61,7 @@ fn mu_and_k_t_are_typed_in_the_form_and_refused_out_of_range() {
         matches!(app.overlay(), Overlay::Input(_)),
         "the entry stays open"
     );
-    assert_eq!(app.oblique_view().friction, 0.6);
+    assert_eq!(app.oblique_view().values.friction, 0.6);
     app.update(Action::InputClear);
     type_keys(&mut app, "0.45");
     press(&mut app, &[KeyCode::Enter]);
@@ -70,7 +70,7 @@ fn mu_and_k_t_are_typed_in_the_form_and_refused_out_of_range() {
         "back in the form"
     );
     press(&mut app, &[KeyCode::Esc]);
-    assert_eq!(app.oblique_view().friction, 0.45);
+    assert_eq!(app.oblique_view().values.friction, 0.45);
     assert_eq!(
         app.flight_view().values.friction,
         0.45,
@@ -81,7 +81,7 @@ fn mu_and_k_t_are_typed_in_the_form_and_refused_out_of_range() {
     app.update(Action::InputClear);
     type_keys(&mut app, "5e4");
     press(&mut app, &[KeyCode::Enter, KeyCode::Esc]);
-    assert_eq!(app.oblique_view().tangential_stiffness, Some(5e4));
+    assert_eq!(app.oblique_view().values.tangential_stiffness, Some(5e4));
     // the form shows them in its format (four digits)
     assert_eq!(app.form_surface(), [0.45, 5e4]);
     assert_eq!(Field::Friction.show(0.45), "0.4500");
@@ -140,17 +140,17 @@ fn a_session_keeps_them_and_u_undoes_them_naming_them() {
     let text = app.session().to_toml();
     let read = Session::parse(Path::new("s.toml"), &text).unwrap();
     let back = tennis().with_session(&read).unwrap();
-    assert_eq!(back.oblique_view().friction, 0.45);
-    assert_eq!(back.oblique_view().tangential_stiffness, Some(5e4));
+    assert_eq!(back.oblique_view().values.friction, 0.45);
+    assert_eq!(back.oblique_view().values.tangential_stiffness, Some(5e4));
     assert_eq!(back.flight_view().values.friction, 0.45);
     press(&mut app, &[KeyCode::Char('u')]);
     let said = app.message().unwrap().text.clone();
     assert!(said.starts_with("undone: K_t "), "{said}");
-    assert_eq!(app.oblique_view().tangential_stiffness, None);
+    assert_eq!(app.oblique_view().values.tangential_stiffness, None);
     press(&mut app, &[KeyCode::Char('u')]);
     let said = app.message().unwrap().text.clone();
     assert!(said.contains("μ 0.4500 → 0.6000"), "{said}");
-    assert_eq!(app.oblique_view().friction, 0.6);
+    assert_eq!(app.oblique_view().values.friction, 0.6);
     assert_eq!(app.flight_view().values.friction, 0.6);
 }
 

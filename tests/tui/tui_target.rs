@@ -39,7 +39,7 @@ fn the_run_is_the_pairs_and_inf_is_the_wall_again() {
     set(&mut a, Field::TargetMass, "200");
     set(&mut a, Field::TargetSpeed, "1.5");
     assert_eq!(
-        (a.setting().target_mass, a.setting().target_speed),
+        (a.setting().target.mass, a.setting().target.speed),
         (0.2, 1.5)
     );
     let ball = Ball::from_preset("superball").unwrap();
@@ -161,7 +161,7 @@ fn a_compliant_target_typed_in_the_form_is_the_pairs_run() {
     assert!(rel <= 1e-3, "s_m {s_m} {}", pair.max_target_deflection);
     // c_s needs K_s: a rigid surface refuses it, and K_s cannot go rigid under a dashpot
     set(&mut a, Field::TargetStiffness, "inf");
-    assert_eq!(a.setting().target_stiffness, 4e4);
+    assert_eq!(a.setting().target.stiffness, 4e4);
     press(&mut a, &[KeyCode::Esc, KeyCode::Esc]);
     set(&mut a, Field::TargetDamping, "0");
     set(&mut a, Field::TargetStiffness, "inf");

@@ -50,7 +50,7 @@ impl App {
         self.fit.id = id;
         self.undo.push(Undoable {
             setting: self.setting.clone(),
-            oblique: self.oblique.values(),
+            oblique: self.oblique.values,
             flight: self.flight.values,
             measured: Some(Box::new(was)),
         });

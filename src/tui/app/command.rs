@@ -107,7 +107,7 @@ impl App {
     pub fn command_line(&self) -> String {
         let (source, preset) = self.source_of(&self.setting);
         if self.view == crate::tui::state::View::Oblique {
-            return command::oblique_line(source, preset, &self.setting, &self.oblique.values());
+            return command::oblique_line(source, preset, &self.setting, &self.oblique.values);
         }
         if self.view == crate::tui::state::View::Flight {
             return command::shot_line(source, preset, &self.setting, &self.flight.values);

@@ -47,7 +47,7 @@ impl App {
                 Some(previous) => {
                     let said = self.undone_text(&previous);
                     self.setting = previous.setting;
-                    self.oblique.set_values(previous.oblique);
+                    self.oblique.values = previous.oblique;
                     self.flight.values = previous.flight;
                     if let Some(m) = previous.measured {
                         self.put_back(*m);
@@ -130,7 +130,7 @@ impl App {
         }
         self.undo.push(Undoable {
             setting: self.setting.clone(),
-            oblique: self.oblique.values(),
+            oblique: self.oblique.values,
             flight: self.flight.values,
             measured: None,
         });

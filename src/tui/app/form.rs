@@ -156,16 +156,16 @@ impl App {
                 return self.warn(why);
             }
         };
-        let (mut oblique, mut flight) = (self.oblique.values(), self.flight.values);
+        let (mut oblique, mut flight) = (self.oblique.values, self.flight.values);
         if field == Field::Friction {
             oblique.friction = v;
             flight = flight.with(FlightParam::Friction, v);
         } else {
             oblique.tangential_stiffness = Some(v);
         }
-        if oblique != self.oblique.values() || flight != self.flight.values {
+        if oblique != self.oblique.values || flight != self.flight.values {
             self.remember();
-            self.oblique.set_values(oblique);
+            self.oblique.values = oblique;
             self.flight.values = flight;
         }
         self.open_form(field);

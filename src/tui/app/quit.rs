@@ -19,7 +19,7 @@ impl App {
     pub(in crate::tui) fn keep(&mut self) {
         self.kept = Undoable {
             setting: self.setting.clone(),
-            oblique: self.oblique.values(),
+            oblique: self.oblique.values,
             flight: self.flight.values,
             measured: None,
         };
@@ -43,7 +43,7 @@ impl App {
         // a change undone back to the start is none (tests/tui/tui_quit.rs:
         // `q_asks_after_any_edit_and_not_after_it_is_undone`)
         if self.setting != self.kept.setting
-            || self.oblique.values() != self.kept.oblique
+            || self.oblique.values != self.kept.oblique
             || self.flight.values != self.kept.flight
         {
             lost.push("your changes (S saves them)".to_string());

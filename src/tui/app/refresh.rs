@@ -37,7 +37,7 @@ impl App {
     pub(super) fn refresh_run(&mut self) {
         let s = &self.setting;
         // the pair's run: the reduced ball at the closing speed, or on the target's surface
-        let key = (s.params, s.law, s.target());
+        let key = (s.params, s.law, s.target);
         if self.run_for != Some(key) {
             self.run_for = Some(key);
             (self.run, self.target_motion) = match compute::pair(s) {

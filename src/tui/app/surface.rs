@@ -60,15 +60,13 @@ impl App {
     /// surface's target would not meet or the model would not take them.
     pub(in crate::tui) fn on_surface(&mut self, surface: Surface) -> Result<(), String> {
         let mut next = self.setting.clone();
-        let t = surface.target();
-        (next.target_mass, next.target_speed) = (t.mass, t.speed);
-        (next.target_stiffness, next.target_damping) = (t.stiffness, t.damping);
+        next.target = surface.target();
         next.tangential_damping = surface.tangential_damping;
-        next.target()
+        next.target
             .validate()
             .map_err(|e| crate::tui::physical::refusal(&e))?;
         crate::tui::physical::closing_check(&next)?;
-        let mut oblique = self.oblique.values();
+        let mut oblique = self.oblique.values;
         // its μ is the flight view's bounce's too (the form's μ sets both)
         let mut flight = self.flight.values;
         if let Some(mu) = surface.friction {
@@ -79,11 +77,10 @@ impl App {
             oblique.tangential_stiffness = surface.tangential_stiffness;
         }
         next.surface = Some(surface);
-        if next != self.setting || oblique != self.oblique.values() || flight != self.flight.values
-        {
+        if next != self.setting || oblique != self.oblique.values || flight != self.flight.values {
             self.remember();
             self.setting = next;
-            self.oblique.set_values(oblique);
+            self.oblique.values = oblique;
             self.flight.values = flight;
         }
         Ok(())

@@ -7,7 +7,6 @@ use crate::tui::format::{screen_unit, value};
 use crate::tui::physical::Field;
 use crate::tui::views::flight::param::FlightParam;
 use crate::tui::views::oblique::param::ObliqueParam;
-use crate::tui::views::oblique::state::ObliqueValues;
 
 /// A value in `unit` (SI) as the screen writes it, with its screen unit: "37.4 g", "∞".
 fn shown(v: Option<f64>, unit: &str) -> (String, String) {
@@ -63,16 +62,6 @@ fn field_change(f: Field, now: f64, then: f64) -> String {
     format!("{} {a} → {b}{sep}{unit}", f.symbol())
 }
 
-fn oblique_value(v: &ObliqueValues, p: ObliqueParam) -> Option<f64> {
-    match p {
-        ObliqueParam::Angle => Some(v.angle),
-        ObliqueParam::Spin => Some(v.spin),
-        ObliqueParam::Friction => Some(v.friction),
-        ObliqueParam::TangentialStiffness => v.tangential_stiffness,
-        ObliqueParam::InertiaFactor => v.inertia_factor,
-    }
-}
-
 impl App {
     /// The changes from the current state back to `then`, one phrase each.
     pub(super) fn undone_text(&self, then: &Undoable) -> String {
@@ -104,9 +93,8 @@ impl App {
                 }
             }
         }
-        let obl = self.oblique.values();
         for p in ObliqueParam::ALL {
-            let (a, b) = (oblique_value(&obl, p), oblique_value(&then.oblique, p));
+            let (a, b) = (self.oblique.values.get(p), then.oblique.get(p));
             if a != b {
                 parts.push(change(p.symbol(), p.unit().trim(), a, b));
             }

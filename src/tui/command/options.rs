@@ -183,15 +183,27 @@ pub(super) fn options(source: Source, preset: &Preset, setting: &Setting) -> Vec
 }
 
 /// What the line cannot carry: the parameters the ball `run` builds from it differs in (by
-/// more than the rounding of λ and ζ, 1e-12), found by building that ball with the library's
-/// own steps. `None` when the line reproduces the setting.
+/// more than the rounding of λ and ζ, 1e-12: [`params_off`]), found by building that ball
+/// with the library's own steps. `None` when the line reproduces the setting.
 pub fn not_carried(preset: &Preset, setting: &Setting) -> Option<String> {
     let o = Options::of(preset, setting);
     let Some(b) = o.ball(preset) else {
         return Some("`run` would refuse this setting's options".into());
     };
-    let p = &setting.params;
-    let off: Vec<&str> = [
+    let off = params_off(&setting.params, &b);
+    (!off.is_empty()).then(|| {
+        format!(
+            "the line runs another {}: `run` has no option that sets it as the screen has it",
+            off.join(", ")
+        )
+    })
+}
+
+/// The parameters `b` gives another value than `p` (beyond 1e-12 of `p`'s), by the symbols
+/// the screen shows them with, in the form's order: m, K_p, K_r, c, z_p, K_h, v0. Empty when
+/// `b` is the screen's ball (equal infinities are the same value).
+pub fn params_off(p: &ImpactParams, b: &ImpactParams) -> Vec<&'static str> {
+    [
         ("m", p.mass, b.mass),
         ("K_p", p.k_p, b.k_p),
         ("K_r", p.k_r, b.k_r),
@@ -203,11 +215,5 @@ pub fn not_carried(preset: &Preset, setting: &Setting) -> Option<String> {
     .into_iter()
     .filter(|(_, a, b)| (a - b).abs() > 1e-12 * a.abs())
     .map(|(name, _, _)| name)
-    .collect();
-    (!off.is_empty()).then(|| {
-        format!(
-            "the line runs another {}: `run` has no option that sets it as the screen has it",
-            off.join(", ")
-        )
-    })
+    .collect()
 }

@@ -12,13 +12,13 @@ use crate::tui::setting::Setting;
 pub(super) fn target_set(field: Field, value: f64, s: &Setting) -> Result<Setting, String> {
     let mut next = s.clone();
     match field {
-        Field::TargetMass => next.target_mass = value,
-        Field::TargetSpeed => next.target_speed = value,
-        Field::TargetStiffness => next.target_stiffness = value,
-        _ => next.target_damping = value,
+        Field::TargetMass => next.target.mass = value,
+        Field::TargetSpeed => next.target.speed = value,
+        Field::TargetStiffness => next.target.stiffness = value,
+        _ => next.target.damping = value,
     }
-    next.target().validate().map_err(|e| refusal(&e))?;
-    if next.target_damping != 0.0 && next.target_stiffness == f64::INFINITY {
+    next.target.validate().map_err(|e| refusal(&e))?;
+    if next.target.damping != 0.0 && next.target.stiffness == f64::INFINITY {
         return Err(if field == Field::TargetStiffness {
             "a rigid surface takes no damping: set c_s to 0 first".into()
         } else {
@@ -37,10 +37,10 @@ pub fn closing_check(s: &Setting) -> Result<(), String> {
 /// The ball and the target must meet (v0 + v_t > 0), and the pair's reduced ball be one the
 /// model takes (docs/targets.md §2).
 pub(super) fn closing(s: &Setting) -> Result<(), String> {
-    if s.params.v0 + s.target_speed <= 0.0 {
+    if s.params.v0 + s.target.speed <= 0.0 {
         return Err(format!(
             "the ball and the target never meet: v0 + v_t = {} m/s must be positive",
-            value(s.params.v0 + s.target_speed)
+            value(s.params.v0 + s.target.speed)
         ));
     }
     s.run_params().validate().map_err(|e| refusal(&e))

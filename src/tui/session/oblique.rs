@@ -48,11 +48,11 @@ fn quantity_name(q: Quantity) -> &'static str {
 impl ObliqueState {
     pub fn of(view: &ObliqueView) -> ObliqueState {
         ObliqueState {
-            angle: view.angle,
-            spin: view.spin,
-            friction: view.friction,
-            tangential_stiffness: view.tangential_stiffness,
-            inertia_factor: view.inertia_factor,
+            angle: view.values.angle,
+            spin: view.values.spin,
+            friction: view.values.friction,
+            tangential_stiffness: view.values.tangential_stiffness,
+            inertia_factor: view.values.inertia_factor,
             selected: view.selected.name().into(),
             page: page_name(view.page).into(),
             quantity: quantity_name(view.quantity).into(),
@@ -87,7 +87,7 @@ impl ObliqueState {
             .into_iter()
             .find(|&q| quantity_name(q) == self.quantity)
             .ok_or_else(|| format!("oblique: quantity: unknown quantity '{}'", self.quantity))?;
-        view.set_values(values);
+        view.values = values;
         Ok(())
     }
 }

@@ -93,7 +93,7 @@ struct Row {
 /// Whether the preset's measured values were taken at `v0`: only then are they compared.
 fn measured_here(preset: &Preset, setting: &Setting) -> bool {
     crate::figure::explorer::same_speed(preset.measured.v0, setting.params.v0)
-        && setting.target() == crate::target::Target::wall()
+        && setting.target == crate::target::Target::wall()
 }
 
 /// The results against the preset's measured values; no measured values away from the speed

@@ -14,7 +14,7 @@ use ratatui::text::{Line, Span};
 /// speed, or against a wall while the run is a pair's (a pair's COR is no wall's
 /// measurement: issue 51 item 5).
 fn not_compared(preset: &Preset, setting: &Setting) -> Option<&'static str> {
-    if setting.target() != crate::target::Target::wall() {
+    if setting.target != crate::target::Target::wall() {
         Some(": a wall's, not compared with the pair")
     } else if !measured_here(preset, setting) {
         Some(": not compared")
@@ -68,7 +68,7 @@ impl Readout<'_> {
     /// issue 53 item 6: every answer names its surface), and the pair's line when the target
     /// is not that surface — the run is then the pair's (docs/targets.md; docs/explorer.md).
     fn target_note(&self) -> Vec<Line<'static>> {
-        let t = self.setting.target();
+        let t = self.setting.target;
         // the surface picked (`G`): its name and numbers; the pair's line below when the
         // form moved the target off it
         let plate = crate::target::surface::Surface::rigid_plate;

@@ -156,18 +156,7 @@ pub fn first_pass_cells(law: ContactLaw) -> usize {
 /// A map handed to the background worker to refine, pass by pass. Its `cancel` flag is set by
 /// `update` once the map is stale (the ball or the view changed): the worker then stops inside
 /// the pass ([`Map::refine_until`]).
-#[derive(Debug, Clone)]
-pub struct MapJob {
-    pub generation: u64,
-    pub map: Map,
-    pub cancel: Arc<AtomicBool>,
-}
-
-impl PartialEq for MapJob {
-    fn eq(&self, other: &MapJob) -> bool {
-        self.generation == other.generation && Arc::ptr_eq(&self.cancel, &other.cancel)
-    }
-}
+pub type MapJob = crate::tui::worker::Cancellable<Map>;
 
 /// The map view's state.
 #[derive(Debug, Clone)]

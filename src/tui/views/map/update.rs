@@ -213,7 +213,7 @@ impl App {
         self.map.out = Some(Arc::clone(&cancel));
         Some(Effect::Map(MapJob {
             generation: self.map.generation,
-            map,
+            work: map,
             cancel,
         }))
     }

@@ -28,7 +28,7 @@ impl Job for MapJob {
         go_on: &mut dyn FnMut() -> bool,
         partial: &mut dyn FnMut(Map),
     ) -> Option<Result<Map, String>> {
-        let mut map = self.map.clone();
+        let mut map = self.work.clone();
         while !self.cancel.load(Ordering::Relaxed) && go_on() {
             match map.refine_until(&self.cancel) {
                 Some(pass) if pass.complete && map.is_complete() => return Some(Ok(map)),
@@ -57,7 +57,7 @@ mod tests {
         let spec = MapSpec::dimensional(p, ContactLaw::Linear, l, z).unwrap();
         MapJob {
             generation,
-            map: Map::new(spec),
+            work: Map::new(spec),
             cancel: Arc::new(AtomicBool::new(cancel)),
         }
     }

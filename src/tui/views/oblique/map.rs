@@ -8,7 +8,6 @@ use crate::api::ObliqueSpec;
 use crate::oblique::{Oblique, ObliqueResponse, solve_frictions};
 use crate::{Ball, BallError};
 use rayon::prelude::*;
-use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, Ordering};
 
 /// Angles of the map: 1°, 2°, … 90°.
@@ -183,18 +182,7 @@ pub fn oblique_of(ball: &Ball, s: &ObliqueSpec) -> Result<Oblique, BallError> {
 }
 
 /// A map handed to the worker; `update` sets `cancel` once it is stale.
-#[derive(Debug, Clone)]
-pub struct MapJob {
-    pub generation: u64,
-    pub spec: MapSpec,
-    pub cancel: Arc<AtomicBool>,
-}
-
-impl PartialEq for MapJob {
-    fn eq(&self, other: &MapJob) -> bool {
-        self.generation == other.generation && Arc::ptr_eq(&self.cancel, &other.cancel)
-    }
-}
+pub type MapJob = crate::tui::worker::Cancellable<MapSpec>;
 
 #[cfg(test)]
 mod tests {

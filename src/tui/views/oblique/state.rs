@@ -56,18 +56,35 @@ impl Default for ObliqueValues {
     }
 }
 
+impl ObliqueValues {
+    /// The value of `p`; `None` for K_t or κ left to the ball.
+    pub fn get(&self, p: ObliqueParam) -> Option<f64> {
+        match p {
+            ObliqueParam::Angle => Some(self.angle),
+            ObliqueParam::Spin => Some(self.spin),
+            ObliqueParam::Friction => Some(self.friction),
+            ObliqueParam::TangentialStiffness => self.tangential_stiffness,
+            ObliqueParam::InertiaFactor => self.inertia_factor,
+        }
+    }
+
+    pub fn set(&mut self, p: ObliqueParam, v: f64) {
+        match p {
+            ObliqueParam::Angle => self.angle = v,
+            ObliqueParam::Spin => self.spin = v,
+            ObliqueParam::Friction => self.friction = v,
+            ObliqueParam::TangentialStiffness => self.tangential_stiffness = Some(v),
+            ObliqueParam::InertiaFactor => self.inertia_factor = Some(v),
+        }
+    }
+}
+
 /// The oblique view's state.
 #[derive(Debug, Clone)]
 pub struct ObliqueView {
-    /// θ, degrees to the surface.
-    pub angle: f64,
-    /// ω, rad/s (> 0 topspin).
-    pub spin: f64,
-    /// μ.
-    pub friction: f64,
-    /// K_t (N/m) and κ when set in the view; `None`: the ball's.
-    pub tangential_stiffness: Option<f64>,
-    pub inertia_factor: Option<f64>,
+    /// θ (degrees to the surface), ω (rad/s, > 0 topspin), μ, and K_t (N/m) and κ when set
+    /// in the view (`None`: the ball's): what undo and a session keep.
+    pub values: ObliqueValues,
     /// The parameter ↑ ↓ and `=` act on.
     pub selected: ObliqueParam,
     pub page: Page,
@@ -93,13 +110,8 @@ pub struct ObliqueView {
 impl Default for ObliqueView {
     /// The ITF court pace test's arrival (16°, no spin) on a μ = 0.6 court.
     fn default() -> ObliqueView {
-        let v = ObliqueValues::default();
         ObliqueView {
-            angle: v.angle,
-            spin: v.spin,
-            friction: v.friction,
-            tangential_stiffness: v.tangential_stiffness,
-            inertia_factor: v.inertia_factor,
+            values: ObliqueValues::default(),
             selected: ObliqueParam::Angle,
             page: Page::Charts,
             quantity: Quantity::AngleOut,
@@ -116,46 +128,6 @@ impl Default for ObliqueView {
 }
 
 impl ObliqueView {
-    /// The value of `p` set in the view; `None` for K_t or κ left to the ball.
-    pub fn get(&self, p: ObliqueParam) -> Option<f64> {
-        match p {
-            ObliqueParam::Angle => Some(self.angle),
-            ObliqueParam::Spin => Some(self.spin),
-            ObliqueParam::Friction => Some(self.friction),
-            ObliqueParam::TangentialStiffness => self.tangential_stiffness,
-            ObliqueParam::InertiaFactor => self.inertia_factor,
-        }
-    }
-
-    pub fn set(&mut self, p: ObliqueParam, v: f64) {
-        match p {
-            ObliqueParam::Angle => self.angle = v,
-            ObliqueParam::Spin => self.spin = v,
-            ObliqueParam::Friction => self.friction = v,
-            ObliqueParam::TangentialStiffness => self.tangential_stiffness = Some(v),
-            ObliqueParam::InertiaFactor => self.inertia_factor = Some(v),
-        }
-    }
-
-    /// The values set in the view (what undo and a session keep).
-    pub fn values(&self) -> ObliqueValues {
-        ObliqueValues {
-            angle: self.angle,
-            spin: self.spin,
-            friction: self.friction,
-            tangential_stiffness: self.tangential_stiffness,
-            inertia_factor: self.inertia_factor,
-        }
-    }
-
-    pub fn set_values(&mut self, v: ObliqueValues) {
-        self.angle = v.angle;
-        self.spin = v.spin;
-        self.friction = v.friction;
-        self.tangential_stiffness = v.tangential_stiffness;
-        self.inertia_factor = v.inertia_factor;
-    }
-
     /// The impact, when there is one.
     pub fn response(&self) -> Option<&ObliqueResponse> {
         self.impact.as_ref()?.as_ref().ok()
@@ -168,7 +140,7 @@ impl ObliqueView {
 
     /// The map's cell under (θ, μ).
     pub fn cursor(&self) -> (usize, usize) {
-        map::cell_of(self.angle, self.friction)
+        map::cell_of(self.values.angle, self.values.friction)
     }
 
     /// Stop the job out at the worker, if any.

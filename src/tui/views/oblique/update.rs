@@ -61,7 +61,7 @@ impl App {
     pub fn oblique_surface(&self) -> crate::target::Target {
         crate::target::Target {
             speed: 0.0,
-            ..self.setting.target()
+            ..self.setting.target
         }
     }
 
@@ -157,7 +157,7 @@ impl App {
     /// The value of `param` the impact runs on: the view's, or the ball's K_t (Mindlin's) and
     /// κ (the preset's) where the view sets none — as `Ball::oblique` takes them.
     pub fn oblique_value(&self, param: ObliqueParam) -> f64 {
-        if let Some(v) = self.oblique.get(param) {
+        if let Some(v) = self.oblique.values.get(param) {
             return v;
         }
         let ball = self.oblique_ball();
@@ -170,17 +170,17 @@ impl App {
     /// Change the view's values to `next`, remembering the state for undo (as a change of
     /// the ball is: `u` undoes θ, ω, μ, K_t and κ too).
     fn change_oblique(&mut self, next: ObliqueValues) {
-        if next != self.oblique.values() {
+        if next != self.oblique.values {
             self.remember();
-            self.oblique.set_values(next);
+            self.oblique.values = next;
         }
     }
 
     /// The view's values with `param` at `value`.
     fn oblique_with(&self, param: ObliqueParam, value: f64) -> ObliqueValues {
-        let mut o = self.oblique.clone();
-        o.set(param, value);
-        o.values()
+        let mut v = self.oblique.values;
+        v.set(param, value);
+        v
     }
 
     /// A step moved `param` to `value`: taken when the library takes it; past a closed bound
@@ -215,7 +215,7 @@ impl App {
         let next = ObliqueValues {
             angle: map::angle_at(i as usize),
             friction: map::friction_at(j as usize),
-            ..self.oblique.values()
+            ..self.oblique.values
         };
         self.change_oblique(next);
     }
@@ -265,15 +265,16 @@ impl App {
         // `bouncelab oblique --surface …` bounces on it; the wall's is the very same answer
         let surface = self.oblique_surface();
         let c_t = self.setting.tangential_damping;
-        let key: ImpactKey = (ball.clone(), o.values(), surface, c_t);
+        let v = o.values;
+        let key: ImpactKey = (ball.clone(), v, surface, c_t);
         if o.impact_for.as_ref() != Some(&key) {
             let spec = ObliqueSpec {
                 v: None,
-                angle_deg: o.angle,
-                spin: o.spin,
-                friction: o.friction,
-                tangential_stiffness: o.tangential_stiffness,
-                inertia_factor: o.inertia_factor,
+                angle_deg: v.angle,
+                spin: v.spin,
+                friction: v.friction,
+                tangential_stiffness: v.tangential_stiffness,
+                inertia_factor: v.inertia_factor,
             };
             let impact = ball
                 .oblique_on(&spec, c_t, SAMPLES, &surface)
@@ -281,8 +282,8 @@ impl App {
             let tennis = ITF_COURT_PACE.balls.contains(&self.preset().name.as_str());
             // `bouncelab court --friction μ` with the view's K_t and κ, as `court` takes them
             let pace = tennis.then(|| {
-                let tangential = (o.tangential_stiffness, o.inertia_factor, c_t);
-                ball.court_pace_on(o.friction, tangential, &surface)
+                let tangential = (v.tangential_stiffness, v.inertia_factor, c_t);
+                ball.court_pace_on(v.friction, tangential, &surface)
                     .map_err(|e: BallError| e.to_string())
             });
             let o = &mut self.oblique;
@@ -294,9 +295,9 @@ impl App {
     fn refresh_oblique_map(&mut self, ball: Ball) -> Option<Effect> {
         let spec = MapSpec {
             ball,
-            spin: self.oblique.spin,
-            tangential_stiffness: self.oblique.tangential_stiffness,
-            inertia_factor: self.oblique.inertia_factor,
+            spin: self.oblique.values.spin,
+            tangential_stiffness: self.oblique.values.tangential_stiffness,
+            inertia_factor: self.oblique.values.inertia_factor,
         };
         if self.oblique.map_for.as_ref() == Some(&spec) {
             return None;
@@ -315,7 +316,7 @@ impl App {
         o.out = Some(Arc::clone(&cancel));
         Some(Effect::ObliqueMap(Box::new(MapJob {
             generation: o.generation,
-            spec,
+            work: spec,
             cancel,
         })))
     }
@@ -347,7 +348,7 @@ impl App {
         for (param, value) in given {
             if let Some(v) = value {
                 let v = param.library_check(v)?;
-                self.oblique.set(param, v);
+                self.oblique.values.set(param, v);
             }
         }
         self.view = View::Oblique;
@@ -367,7 +368,7 @@ impl App {
                 return None;
             }
         };
-        let o = &self.oblique;
+        let o = &self.oblique.values;
         let subtitle = format!(
             "{}, {} m/s at {}°, spin {} rad/s, μ = {}",
             self.preset().name,

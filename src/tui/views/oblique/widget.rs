@@ -119,7 +119,7 @@ impl ObliquePanel<'_> {
         }
         let mut pace = Vec::new();
         match &self.view.pace {
-            Some(Ok(p)) => pace.extend(pace_lines(p, self.view.friction, theme)),
+            Some(Ok(p)) => pace.extend(pace_lines(p, self.view.values.friction, theme)),
             Some(Err(e)) => pace.push(Line::styled(format!("ITF pace: {e}"), theme.error())),
             None => {}
         }
@@ -165,9 +165,9 @@ impl ObliquePanel<'_> {
         };
         let [k_t, kappa] = self.tangential;
         vec![
-            Line::from(span(ObliqueParam::Angle, v.angle)),
-            Line::from(span(ObliqueParam::Spin, v.spin)),
-            Line::from(span(ObliqueParam::Friction, v.friction)),
+            Line::from(span(ObliqueParam::Angle, v.values.angle)),
+            Line::from(span(ObliqueParam::Spin, v.values.spin)),
+            Line::from(span(ObliqueParam::Friction, v.values.friction)),
             Line::from(vec![
                 span(ObliqueParam::TangentialStiffness, k_t),
                 Span::raw(" "),

@@ -27,7 +27,7 @@ impl Job for MapJob {
         if self.cancel.load(Ordering::Relaxed) || !go_on() {
             return None;
         }
-        map::compute(&self.spec, &self.cancel)
+        map::compute(&self.work, &self.cancel)
     }
 }
 
@@ -51,7 +51,7 @@ mod tests {
         };
         let job = |generation, cancel| MapJob {
             generation,
-            spec: spec.clone(),
+            work: spec.clone(),
             cancel: Arc::new(AtomicBool::new(cancel)),
         };
         w.want(&[job(1, true)]);
