@@ -85,7 +85,6 @@ fn measured(path: &std::path::Path) -> anyhow::Result<Measured> {
 }
 
 pub fn run(a: &CourtArgs, out: &mut dyn Write) -> anyhow::Result<()> {
-    super::ball::check_overrides(&a.ball.changes.set, None, None)?;
     let ball = a.ball.resolve_for_standard(ITF_COURT_PACE.balls[0])?;
     let measured = a.fit.as_deref().map(measured).transpose()?;
     let friction = measured

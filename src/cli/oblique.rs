@@ -127,7 +127,6 @@ pub fn surface_of(
 }
 
 pub fn run(a: &ObliqueArgs, out: &mut dyn Write) -> anyhow::Result<()> {
-    super::ball::check_overrides(&a.ball.changes.set, None, None)?;
     let ball = a.ball.resolve(a.v0)?;
     let (surface, friction) = a.bounce.resolve()?;
     let spec = ObliqueSpec {

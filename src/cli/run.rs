@@ -1,6 +1,6 @@
 //! `bouncelab run`: one impact, as a text table, one JSON object or CSV.
 
-use super::ball::{self, BallArgs};
+use super::ball::BallArgs;
 use super::output::{self, csv_row, num, opt_num};
 use super::surface::{SurfaceArgs, SurfaceUsed};
 use crate::api::{Ball, ImpactReport};
@@ -79,7 +79,7 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> anyhow::Result<()> {
              --after and --half-life do not apply"
         );
     }
-    ball::check_overrides(&args.ball.changes.set, args.lambda, args.zeta)?;
+    // --normalized takes no override (refused above) for its λ and ζ to meet
     let ball = if args.normalized {
         let law = args.ball.changes.law.map_or(ContactLaw::Linear, Into::into);
         Ball::normalized(
@@ -89,9 +89,7 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> anyhow::Result<()> {
             law,
         )?
     } else {
-        let mut b = args.ball.resolve(args.v0)?;
-        ball::set_lambda_zeta(&mut b, args.lambda, args.zeta)?;
-        b
+        args.ball.resolve_tuned(args.v0, args.lambda, args.zeta)?
     };
     let surface = args.surface.resolve()?;
     // the library checks the number of samples (2 … MAX_SAMPLES)

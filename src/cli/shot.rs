@@ -138,7 +138,6 @@ struct Report<'a> {
 }
 
 pub fn run(a: &ShotArgs, out: &mut dyn Write) -> anyhow::Result<()> {
-    super::ball::check_overrides(&a.ball.changes.set, None, None)?;
     if a.samples == Some(0) {
         return Err(crate::api::BallError::Samples(0).into());
     }

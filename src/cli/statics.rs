@@ -34,7 +34,6 @@ pub struct StaticArgs {
 }
 
 pub fn run(a: &StaticArgs, out: &mut dyn Write) -> anyhow::Result<()> {
-    super::ball::check_overrides(&a.ball.changes.set, None, None)?;
     let ball = a.ball.resolve(None)?;
     let s = ball.static_deflection(a.load, a.peak)?;
     let report = StaticReport::new(&ball, a.load, &s);
