@@ -2,23 +2,16 @@
 //! table, one JSON object or CSV.
 
 use super::ball::BallArgs;
-use super::output::{self, csv_row, given, human, num, opt_num, table};
+use super::output::{self, TextJsonCsv, csv_row, given, human, num, opt_num, table};
 use super::surface::{SurfaceArgs, SurfaceUsed};
 use crate::api::{BallHeader, ObliqueSpec};
 use crate::oblique::ObliqueResponse;
-use clap::{Args, ValueEnum};
+use clap::Args;
 use serde::Serialize;
 use std::io::Write;
 
 /// History samples by default.
 const SAMPLES: usize = 400;
-
-#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum ObliqueFormat {
-    Text,
-    Json,
-    Csv,
-}
 
 /// The tangential model's options (in [`BounceSurfaceArgs`], and `mc --shot`'s).
 #[derive(Debug, Clone, Args)]
@@ -73,7 +66,7 @@ pub struct ObliqueArgs {
     pub bounce: BounceSurfaceArgs,
     /// Output format
     #[arg(long, value_enum, default_value = "text")]
-    pub format: ObliqueFormat,
+    pub format: TextJsonCsv,
     /// Also print t, F_n, F_t, v_c and ω, evenly sampled over the contact
     #[arg(long)]
     pub history: bool,
@@ -157,7 +150,7 @@ pub fn run(a: &ObliqueArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     let radius = ball.radius();
     let warnings = ball.oblique_warnings(&r);
     match a.format {
-        ObliqueFormat::Json => {
+        TextJsonCsv::Json => {
             let report = Report {
                 ball: ball.header(),
                 friction,
@@ -172,12 +165,12 @@ pub fn run(a: &ObliqueArgs, out: &mut dyn Write) -> anyhow::Result<()> {
             };
             output::json_stated(out, &report, &ball.conditions)?
         }
-        ObliqueFormat::Csv if a.history => {
+        TextJsonCsv::Csv if a.history => {
             history_csv(out, &r)?;
             output::warnings_to_stderr(&warnings);
         }
-        ObliqueFormat::Csv => summary_csv(out, &r, &warnings)?,
-        ObliqueFormat::Text => {
+        TextJsonCsv::Csv => summary_csv(out, &r, &warnings)?,
+        TextJsonCsv::Text => {
             // the law is named when it is not the linear one (the header `run` prints too)
             let law = match ball.law {
                 crate::model::contact::ContactLaw::Linear => String::new(),

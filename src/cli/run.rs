@@ -1,24 +1,17 @@
 //! `bouncelab run`: one impact, as a text table, one JSON object or CSV.
 
 use super::ball::BallArgs;
-use super::output::{self, csv_row, num, opt_num};
+use super::output::{self, TextJsonCsv, csv_row, num, opt_num};
 use super::surface::{SurfaceArgs, SurfaceUsed};
 use crate::api::{Ball, ImpactReport};
 use crate::model::contact::ContactLaw;
 use crate::solver::{EnergyBudget, ImpactResponse};
-use clap::{Args, ValueEnum};
+use clap::Args;
 use serde::Serialize;
 use std::io::Write;
 
 /// History samples by default (at most [`crate::api::MAX_SAMPLES`]).
 const SAMPLES: usize = 400;
-
-#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum RunFormat {
-    Text,
-    Json,
-    Csv,
-}
 
 #[derive(Debug, Clone, Args)]
 pub struct RunArgs {
@@ -47,7 +40,7 @@ pub struct RunArgs {
     pub zeta: Option<f64>,
     /// Output format
     #[arg(long, value_enum, default_value = "text")]
-    pub format: RunFormat,
+    pub format: TextJsonCsv,
     /// Also print F(t), z(t), α(t), evenly sampled over the contact
     #[arg(long)]
     pub history: bool,
@@ -115,7 +108,7 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     // a fitted preset's 95 % intervals (docs/fitting.md), when no override moved the fit
     let intervals = ball.intervals().transpose()?;
     match args.format {
-        RunFormat::Json => {
+        TextJsonCsv::Json => {
             let mut report = ImpactReport::new(&ball, &r, args.history);
             report.intervals = intervals;
             if elsewhere.is_some() {
@@ -124,12 +117,12 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> anyhow::Result<()> {
             let surface = &surface;
             output::json_stated(out, &Report { report, surface }, &ball.conditions)?
         }
-        RunFormat::Csv if args.history => {
+        TextJsonCsv::Csv if args.history => {
             history_csv(out, &r)?;
             output::warnings_to_stderr(&ball.warnings(&r));
         }
-        RunFormat::Csv => summary_csv(out, &ball, &r)?,
-        RunFormat::Text => {
+        TextJsonCsv::Csv => summary_csv(out, &ball, &r)?,
+        TextJsonCsv::Text => {
             super::run_text::write(out, &ball, &r, intervals.as_ref(), args.history)?;
             if !surface.is_rigid() || args.surface.surface.is_some() {
                 writeln!(out, "{}", surface.label())?;
