@@ -13,6 +13,30 @@ use std::io::Write;
 /// History samples by default (at most [`crate::api::MAX_SAMPLES`]).
 const SAMPLES: usize = 400;
 
+/// `--history` and `--samples`: the contact's history, evenly sampled, beside the answer
+/// (`run`; `oblique`, whose `--history` help names its own columns by `mut_arg`).
+#[derive(Debug, Clone, Args)]
+pub struct HistoryArgs {
+    /// Also print F(t), z(t), α(t), evenly sampled over the contact
+    #[arg(long)]
+    pub history: bool,
+    /// Number of history samples
+    #[arg(long, value_name = "N", default_value_t = SAMPLES, requires = "history", value_parser = super::number::count, allow_hyphen_values = true)]
+    pub samples: usize,
+}
+
+impl HistoryArgs {
+    /// The samples to ask the library for: none without `--history`. The library reads 0 as
+    /// "no history", so with `--history` 0 is refused as 1 is (2 … MAX_SAMPLES).
+    pub fn samples(&self) -> Result<usize, crate::api::BallError> {
+        match (self.history, self.samples) {
+            (false, _) => Ok(0),
+            (true, 0) => Err(crate::api::BallError::Samples(0)),
+            (true, n) => Ok(n),
+        }
+    }
+}
+
 #[derive(Debug, Clone, Args)]
 pub struct RunArgs {
     #[command(flatten)]
@@ -41,12 +65,8 @@ pub struct RunArgs {
     /// Output format
     #[arg(long, value_enum, default_value = "text")]
     pub format: TextJsonCsv,
-    /// Also print F(t), z(t), α(t), evenly sampled over the contact
-    #[arg(long)]
-    pub history: bool,
-    /// Number of history samples
-    #[arg(long, value_name = "N", default_value_t = SAMPLES, requires = "history", value_parser = super::number::count, allow_hyphen_values = true)]
-    pub samples: usize,
+    #[command(flatten)]
+    pub history: HistoryArgs,
     #[command(flatten)]
     pub surface: SurfaceArgs,
 }
@@ -86,10 +106,7 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     };
     let surface = args.surface.resolve()?;
     // the library checks the number of samples (2 … MAX_SAMPLES)
-    let samples = if args.history { args.samples } else { 0 };
-    if args.history && samples == 0 {
-        return Err(crate::api::BallError::Samples(0).into());
-    }
+    let samples = args.history.samples()?;
     let r = ball.impact_on(&surface.target(), samples)?;
     // the preset's measurement is the rigid plate's: not this impact's on a surface that gives
     let elsewhere = (!surface.is_rigid() && ball.measured.is_some()).then(|| {
@@ -109,7 +126,7 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     let intervals = ball.intervals().transpose()?;
     match args.format {
         TextJsonCsv::Json => {
-            let mut report = ImpactReport::new(&ball, &r, args.history);
+            let mut report = ImpactReport::new(&ball, &r, args.history.history);
             report.intervals = intervals;
             if elsewhere.is_some() {
                 report.comparison_withheld = elsewhere;
@@ -117,13 +134,13 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> anyhow::Result<()> {
             let surface = &surface;
             output::json_stated(out, &Report { report, surface }, &ball.conditions)?
         }
-        TextJsonCsv::Csv if args.history => {
+        TextJsonCsv::Csv if args.history.history => {
             history_csv(out, &r)?;
             output::warnings_to_stderr(&ball.warnings(&r));
         }
         TextJsonCsv::Csv => summary_csv(out, &ball, &r)?,
         TextJsonCsv::Text => {
-            super::run_text::write(out, &ball, &r, intervals.as_ref(), args.history)?;
+            super::run_text::write(out, &ball, &r, intervals.as_ref(), args.history.history)?;
             if !surface.is_rigid() || args.surface.surface.is_some() {
                 writeln!(out, "{}", surface.label())?;
             }
