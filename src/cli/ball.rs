@@ -142,11 +142,7 @@ impl Overrides {
 }
 
 /// `--k-r` with `--lambda`, or `--damping` with `--zeta`, set one parameter twice.
-pub fn check_overrides(
-    set: &Overrides,
-    lambda: Option<f64>,
-    zeta: Option<f64>,
-) -> anyhow::Result<()> {
+fn check_overrides(set: &Overrides, lambda: Option<f64>, zeta: Option<f64>) -> anyhow::Result<()> {
     if set.k_r.is_some() && lambda.is_some() {
         anyhow::bail!("--k-r and --lambda both set K_r: give one of them");
     }
@@ -227,19 +223,23 @@ impl BallArgs {
         }
         args.resolve(None)
     }
-}
 
-/// Change λ and/or ζ of a ball: K_r and c move, m and K_p stay (Eq. 24). The library's own
-/// check and messages ([`crate::api::set_lambda_zeta`]), so code and command line agree.
-/// Each given is an override of the preset's ball (`ball.overrides`: `lambda`, `zeta`).
-pub fn set_lambda_zeta(
-    ball: &mut crate::api::Ball,
-    lambda: Option<f64>,
-    zeta: Option<f64>,
-) -> anyhow::Result<()> {
-    if lambda.is_none() && zeta.is_none() {
-        return Ok(());
+    /// [`BallArgs::resolve`], then λ and/or ζ changed: K_r and c move, m and K_p stay (Eq. 24),
+    /// by the library's own check and messages ([`crate::api::set_lambda_zeta`]), so code and
+    /// command line agree. Each given is an override of the preset's ball (`ball.overrides`:
+    /// `lambda`, `zeta`). `--k-r` with `--lambda`, or `--damping` with `--zeta`, is refused
+    /// before the preset is read.
+    pub fn resolve_tuned(
+        &self,
+        v0: Option<f64>,
+        lambda: Option<f64>,
+        zeta: Option<f64>,
+    ) -> anyhow::Result<Ball> {
+        check_overrides(&self.changes.set, lambda, zeta)?;
+        let ball = self.resolve(v0)?;
+        if lambda.is_none() && zeta.is_none() {
+            return Ok(ball);
+        }
+        Ok(ball.with_lambda_zeta(lambda, zeta)?)
     }
-    *ball = ball.clone().with_lambda_zeta(lambda, zeta)?;
-    Ok(())
 }

@@ -3,23 +3,17 @@
 //! against ≤ 0.50 (docs/targets.md §5).
 
 use super::ball::BallArgs;
-use super::output::{self, directed, human, num, table};
+use super::output::{self, TextJson, directed, human, num, table};
 use crate::model::params::Field;
 use crate::target::Target;
 use crate::target::bat::{BAT_STANDARDS, BatRun, MPH_136};
-use clap::{Args, ValueEnum};
+use clap::Args;
 use serde::Serialize;
 use std::io::Write;
 
 /// The preset `bat` runs when none is given: the ball of the standard it judges
 /// (`ncaa-bbcor`'s, docs/targets.md §5).
 const BAT_BALL: &str = BAT_STANDARDS[0].balls[0];
-
-#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum BatFormat {
-    Text,
-    Json,
-}
 
 #[derive(Debug, Clone, Args)]
 pub struct BatArgs {
@@ -43,7 +37,7 @@ pub struct BatArgs {
     pub bat_damping: Option<f64>,
     /// Output format
     #[arg(long, value_enum, default_value = "text")]
-    pub format: BatFormat,
+    pub format: TextJson,
 }
 
 /// `bat --format json`: what was asked, then the run's fields at the top level.
@@ -72,7 +66,7 @@ pub fn run(a: &BatArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     );
     let r = ball.bat(a.bat_mass, (a.ball_speed, a.bat_speed), surface)?;
     match a.format {
-        BatFormat::Json => output::json_on(
+        TextJson::Json => output::json_on(
             out,
             &BatJson {
                 ball: ball.name.as_deref(),
@@ -92,7 +86,7 @@ pub fn run(a: &BatArgs, out: &mut dyn Write) -> anyhow::Result<()> {
             )),
             &ball.conditions,
         )?,
-        BatFormat::Text => {
+        TextJson::Text => {
             let mut head = format!(
                 "{} against a bat of effective mass {} kg at the impact point",
                 ball.label(),

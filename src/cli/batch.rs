@@ -8,7 +8,7 @@ use super::ball::BallArgs;
 use super::batch_text;
 use super::budget::Progress;
 use super::measured_file as files;
-use super::output::{self, csv_row};
+use super::output::{self, TextJsonCsv, csv_row};
 use super::outputs::{check as check_writable, report_then_commit};
 use crate::analysis::batch::{BallData, split};
 use crate::analysis::fit::parse_free;
@@ -18,17 +18,10 @@ use crate::atomic::Outputs;
 use crate::drop::standards::{self, Standard};
 use crate::figure::{Axis, histogram, svg};
 use crate::measured::{Air, Data};
-use clap::{Args, ValueEnum};
+use clap::Args;
 use rayon::prelude::*;
 use std::io::Write;
 use std::path::{Path, PathBuf};
-
-#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum BatchFormat {
-    Text,
-    Json,
-    Csv,
-}
 
 #[derive(Debug, Clone, Args)]
 pub struct BatchArgs {
@@ -65,7 +58,7 @@ pub struct BatchArgs {
     pub v0: Option<f64>,
     /// Output format: a text report, one JSON document, or the per-ball CSV
     #[arg(long, value_enum, default_value = "text")]
-    pub format: BatchFormat,
+    pub format: TextJsonCsv,
     /// Write the per-ball CSV (id, …, cor, verdict, margin, warnings)
     #[arg(long, value_name = "FILE")]
     pub csv_out: Option<PathBuf>,
@@ -119,13 +112,13 @@ pub fn run(a: &BatchArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     let mut text_out = Vec::new();
     match a.format {
         // the balls were judged on the standard's rigid plate (docs/cli.md, "The surface object")
-        BatchFormat::Json => {
+        TextJsonCsv::Json => {
             let plate = crate::api::SurfaceUsed::rigid_plate();
             let on = output::Met::Surface(&plate);
             output::json_on(&mut text_out, &report, on, &ball.conditions)?
         }
-        BatchFormat::Csv => text_out.extend_from_slice(balls_csv(&outcomes).as_bytes()),
-        BatchFormat::Text => batch_text::text(&mut text_out, &ball, &a.file, air, &report)?,
+        TextJsonCsv::Csv => text_out.extend_from_slice(balls_csv(&outcomes).as_bytes()),
+        TextJsonCsv::Text => batch_text::text(&mut text_out, &ball, &a.file, air, &report)?,
     }
     report_then_commit(out, &text_out, written)?;
     let s = &report.summary;

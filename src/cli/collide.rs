@@ -2,19 +2,13 @@
 //! surface of its own (docs/targets.md), as a text table or one JSON object.
 
 use super::ball::{self, BallArgs};
-use super::output::{self, directed, human, table};
+use super::output::{self, TextJson, directed, human, table};
 use super::surface::{SurfaceArgs, SurfaceUsed};
 use crate::api::{Ball, CollisionReport};
 use crate::target::Target;
-use clap::{Args, ValueEnum};
+use clap::Args;
 use serde::Serialize;
 use std::io::Write;
-
-#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum CollideFormat {
-    Text,
-    Json,
-}
 
 #[derive(Debug, Clone, Args)]
 pub struct CollideArgs {
@@ -50,7 +44,7 @@ pub struct CollideArgs {
     pub target_damping: Option<f64>,
     /// Output format
     #[arg(long, value_enum, default_value = "text")]
-    pub format: CollideFormat,
+    pub format: TextJson,
 }
 
 /// `collide --format json`: the answer and the surface the target had (docs/surfaces.md).
@@ -90,7 +84,7 @@ pub fn run(a: &CollideArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         })?,
     };
     match a.format {
-        CollideFormat::Json => output::json_stated(
+        TextJson::Json => output::json_stated(
             out,
             &Report {
                 report: &report,
@@ -98,7 +92,7 @@ pub fn run(a: &CollideArgs, out: &mut dyn Write) -> anyhow::Result<()> {
             },
             &ball.conditions,
         )?,
-        CollideFormat::Text => {
+        TextJson::Text => {
             text(out, &ball, &report, a.target_preset.as_deref())?;
             if a.surface.surface.is_some() {
                 writeln!(out, "  {}", used.label())?;

@@ -3,19 +3,13 @@
 
 use super::ball::BallArgs;
 use super::oblique::BounceSurfaceArgs;
-use super::output::{self, given, human, table};
+use super::output::{self, TextJson, given, human, table};
 use super::surface::SurfaceUsed;
 use crate::api::{BallHeader, CourtCalibration, CourtPace};
 use crate::oblique::court::ITF_COURT_PACE;
-use clap::{Args, ValueEnum};
+use clap::Args;
 use serde::Serialize;
 use std::io::Write;
-
-#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum CourtFormat {
-    Text,
-    Json,
-}
 
 #[derive(Debug, Clone, Args)]
 #[command(mut_arg("friction", |a| {
@@ -43,7 +37,7 @@ pub struct CourtArgs {
     pub fit: Option<std::path::PathBuf>,
     /// Output format
     #[arg(long, value_enum, default_value = "text")]
-    pub format: CourtFormat,
+    pub format: TextJson,
 }
 
 #[derive(Serialize)]
@@ -85,7 +79,6 @@ fn measured(path: &std::path::Path) -> anyhow::Result<Measured> {
 }
 
 pub fn run(a: &CourtArgs, out: &mut dyn Write) -> anyhow::Result<()> {
-    super::ball::check_overrides(&a.ball.changes.set, None, None)?;
     let ball = a.ball.resolve_for_standard(ITF_COURT_PACE.balls[0])?;
     let measured = a.fit.as_deref().map(measured).transpose()?;
     let friction = measured
@@ -110,7 +103,7 @@ pub fn run(a: &CourtArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     let (pace, computed_on) =
         ball.court_pace_on_surface(friction, a.bounce.tangential.inertia_factor, &surface)?;
     match a.format {
-        CourtFormat::Json => output::json_stated(
+        TextJson::Json => output::json_stated(
             out,
             &Report {
                 ball: ball.header(),
@@ -126,7 +119,7 @@ pub fn run(a: &CourtArgs, out: &mut dyn Write) -> anyhow::Result<()> {
             },
             &ball.conditions,
         )?,
-        CourtFormat::Text => text(
+        TextJson::Text => text(
             out,
             &ball,
             &pace,

@@ -4,12 +4,12 @@
 use super::ball::BallArgs;
 use super::drop_text;
 use super::intervals_text::line;
-use super::output::{self, csv_row, num};
+use super::output::{self, TextJsonCsv, csv_row, num};
 use crate::api::Ball;
 use crate::drop::deformation;
 use crate::drop::standards::{self, Verdict};
 use crate::drop::{Air, DEFAULT_BOUNCES, DEFAULT_MIN_REBOUND, DropError, DropRun, DropSetup};
-use clap::{Args, ValueEnum};
+use clap::Args;
 use serde::Serialize;
 use std::io::Write;
 
@@ -17,13 +17,6 @@ use std::io::Write;
 pub const DEFAULT_HEIGHT: f64 = 1.0;
 /// Time step of the CSV trajectory within each flight (s).
 pub const CSV_STEP: f64 = 1e-3;
-
-#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum DropFormat {
-    Text,
-    Json,
-    Csv,
-}
 
 #[derive(Debug, Clone, Args)]
 pub struct DropArgs {
@@ -68,7 +61,7 @@ pub struct DropArgs {
     pub standard: Option<String>,
     /// Output format (csv: the trajectory t, height, velocity)
     #[arg(long, value_enum, default_value = "text")]
-    pub format: DropFormat,
+    pub format: TextJsonCsv,
     #[command(flatten)]
     pub surface: super::surface::SurfaceArgs,
 }
@@ -160,7 +153,7 @@ pub fn run(a: &DropArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     warnings.extend(b.drop_air_warning(air));
     warnings.extend(off_conditions);
     match a.format {
-        DropFormat::Json => {
+        TextJsonCsv::Json => {
             let judged_at = standard.and_then(|s| s.release_height(radius));
             let mut r = report(&run, &bands, verdict.as_ref(), judged_at);
             if let (Some(sj), Some((d, s))) = (r.standard.as_mut(), &statics) {
@@ -172,11 +165,11 @@ pub fn run(a: &DropArgs, out: &mut dyn Write) -> anyhow::Result<()> {
             r.pressure_loss = leak_verdict.clone();
             output::json_stated(out, &r, &b.conditions)?
         }
-        DropFormat::Csv => {
+        TextJsonCsv::Csv => {
             trajectory_csv(out, &run)?;
             output::warnings_to_stderr(&warnings);
         }
-        DropFormat::Text => {
+        TextJsonCsv::Text => {
             let mut label = b.label();
             if let Some(line) = b.overrides_line() {
                 label.push('\n');

@@ -3,7 +3,7 @@
 //! `--lambda`, `--zeta` — and the oblique view's `--angle`, `--spin`, `--friction` — so that `bouncelab --preset golf --law hertz --v0 3 --lambda 0.5`
 //! opens the explorer in the state `bouncelab run` with the same options runs, and the line
 //! `y` shows (the `run` line) gives that state back without `run`. The ball is built by
-//! `run`'s own steps ([`BallArgs::resolve`], [`ball::set_lambda_zeta`]).
+//! `run`'s own steps ([`BallArgs::resolve_tuned`]).
 
 use super::ball::{self, BallArgs, PresetChanges, PresetChoice};
 use crate::catalog::surfaces;
@@ -139,9 +139,7 @@ impl ExplorerArgs {
                 ..Default::default()
             },
         };
-        ball::check_overrides(&self.changes.set, self.lambda, self.zeta)?;
-        let mut b = args.resolve(self.v0)?;
-        ball::set_lambda_zeta(&mut b, self.lambda, self.zeta)?;
+        let b = args.resolve_tuned(self.v0, self.lambda, self.zeta)?;
         let radius = b.measured.as_ref().map(|m| m.radius);
         let conditions = crate::api::ConditionsSpec {
             pressure: self.pressure,

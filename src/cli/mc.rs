@@ -6,7 +6,7 @@
 use super::ball::BallArgs;
 use super::budget::Progress;
 use super::mc_text;
-use super::output::{self, csv_row, given, num};
+use super::output::{self, TextJson, csv_row, given, num};
 use super::outputs::{check as check_writable, report_then_commit};
 use crate::analysis::mc::{
     Dist, McError, McSpec, McStats, Sampler, Samples, parse_correlate, parse_vary, summary,
@@ -19,12 +19,6 @@ use crate::model::contact::ContactLaw;
 use clap::{Args, ValueEnum};
 use std::io::Write;
 use std::path::PathBuf;
-
-#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum McFormat {
-    Text,
-    Json,
-}
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
 pub enum DistArg {
@@ -82,7 +76,7 @@ pub struct McArgs {
     pub seed: u64,
     /// Output format
     #[arg(long, value_enum, default_value = "text")]
-    pub format: McFormat,
+    pub format: TextJson,
     /// Write every sample (index, the varied parameters, cor, max_force, contact_time) as CSV
     #[arg(long, value_name = "FILE")]
     pub csv_out: Option<PathBuf>,
@@ -115,7 +109,7 @@ pub fn run(a: &McArgs, out: &mut dyn Write) -> anyhow::Result<()> {
             uniform: a.dist == Some(DistArg::Uniform),
             samples: a.samples,
             seed: a.seed,
-            json: a.format == McFormat::Json,
+            json: a.format == TextJson::Json,
             refused: &refused,
         };
         return super::mc_shot::run(&a.shot, &mc, out);
@@ -145,10 +139,10 @@ pub fn run(a: &McArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     }
     let mut report = Vec::new();
     match a.format {
-        McFormat::Json => {
+        TextJson::Json => {
             output::json_stated(&mut report, &McReport::new(&ball, &s), &ball.conditions)?
         }
-        McFormat::Text => mc_text::text(&mut report, &ball, &spec, s.no_rebound, &s.stats)?,
+        TextJson::Text => mc_text::text(&mut report, &ball, &spec, s.no_rebound, &s.stats)?,
     }
     report_then_commit(out, &report, files)?;
     Ok(())

@@ -128,7 +128,6 @@ pub fn run(s: &ShotMcArgs, a: &Mc<'_>, out: &mut dyn Write) -> anyhow::Result<()
         anyhow::bail!("{flag} does not go with --shot");
     }
     let uniform = a.uniform;
-    super::ball::check_overrides(&a.ball.changes.set, None, None)?;
     let ball = a.ball.resolve(None)?;
     if s.surface.surface.is_none() {
         required(s.friction, "--friction")?;

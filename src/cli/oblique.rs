@@ -2,23 +2,14 @@
 //! table, one JSON object or CSV.
 
 use super::ball::BallArgs;
-use super::output::{self, csv_row, given, human, num, opt_num, table};
+use super::output::{self, TextJsonCsv, csv_row, given, human, num, opt_num, table};
+use super::run::HistoryArgs;
 use super::surface::{SurfaceArgs, SurfaceUsed};
 use crate::api::{BallHeader, ObliqueSpec};
 use crate::oblique::ObliqueResponse;
-use clap::{Args, ValueEnum};
+use clap::Args;
 use serde::Serialize;
 use std::io::Write;
-
-/// History samples by default.
-const SAMPLES: usize = 400;
-
-#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum ObliqueFormat {
-    Text,
-    Json,
-    Csv,
-}
 
 /// The tangential model's options (in [`BounceSurfaceArgs`], and `mc --shot`'s).
 #[derive(Debug, Clone, Args)]
@@ -57,6 +48,9 @@ impl BounceSurfaceArgs {
 }
 
 #[derive(Debug, Clone, Args)]
+#[command(mut_arg("history", |a| {
+    a.help("Also print t, F_n, F_t, v_c and ω, evenly sampled over the contact")
+}))]
 pub struct ObliqueArgs {
     #[command(flatten)]
     pub ball: BallArgs,
@@ -73,13 +67,9 @@ pub struct ObliqueArgs {
     pub bounce: BounceSurfaceArgs,
     /// Output format
     #[arg(long, value_enum, default_value = "text")]
-    pub format: ObliqueFormat,
-    /// Also print t, F_n, F_t, v_c and ω, evenly sampled over the contact
-    #[arg(long)]
-    pub history: bool,
-    /// Number of history samples
-    #[arg(long, value_name = "N", default_value_t = SAMPLES, requires = "history", value_parser = super::number::count, allow_hyphen_values = true)]
-    pub samples: usize,
+    pub format: TextJsonCsv,
+    #[command(flatten)]
+    pub history: HistoryArgs,
 }
 
 /// `oblique --format json`: the ball, the tangential model it ran and the answer.
@@ -127,7 +117,6 @@ pub fn surface_of(
 }
 
 pub fn run(a: &ObliqueArgs, out: &mut dyn Write) -> anyhow::Result<()> {
-    super::ball::check_overrides(&a.ball.changes.set, None, None)?;
     let ball = a.ball.resolve(a.v0)?;
     let (surface, friction) = a.bounce.resolve()?;
     let spec = ObliqueSpec {
@@ -138,13 +127,8 @@ pub fn run(a: &ObliqueArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         tangential_stiffness: surface.tangential_stiffness,
         inertia_factor: a.bounce.tangential.inertia_factor,
     };
-    // the library reads 0 samples as "no history"; `--history` asks for one, so 0 is refused
-    // as 1 is (2 … MAX_SAMPLES, `run --history`'s range)
-    if a.history && a.samples == 0 {
-        return Err(crate::api::BallError::Samples(0).into());
-    }
+    let samples = a.history.samples()?;
     let damping = surface.tangential_damping;
-    let samples = if a.history { a.samples } else { 0 };
     let r = ball.oblique_on(&spec, damping, samples, &surface.target())?;
     let k_t = surface
         .tangential_stiffness
@@ -158,7 +142,7 @@ pub fn run(a: &ObliqueArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     let radius = ball.radius();
     let warnings = ball.oblique_warnings(&r);
     match a.format {
-        ObliqueFormat::Json => {
+        TextJsonCsv::Json => {
             let report = Report {
                 ball: ball.header(),
                 friction,
@@ -173,12 +157,12 @@ pub fn run(a: &ObliqueArgs, out: &mut dyn Write) -> anyhow::Result<()> {
             };
             output::json_stated(out, &report, &ball.conditions)?
         }
-        ObliqueFormat::Csv if a.history => {
+        TextJsonCsv::Csv if a.history.history => {
             history_csv(out, &r)?;
             output::warnings_to_stderr(&warnings);
         }
-        ObliqueFormat::Csv => summary_csv(out, &r, &warnings)?,
-        ObliqueFormat::Text => {
+        TextJsonCsv::Csv => summary_csv(out, &r, &warnings)?,
+        TextJsonCsv::Text => {
             // the law is named when it is not the linear one (the header `run` prints too)
             let law = match ball.law {
                 crate::model::contact::ContactLaw::Linear => String::new(),

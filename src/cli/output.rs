@@ -1,12 +1,29 @@
-//! Writers shared by the subcommands: number formatting, CSV rows, JSON documents, and the
-//! text-table helpers. Everything writes to a `dyn Write` so a closed pipe surfaces as an
-//! `io::Error` (handled quietly in `cli::main`), never a panic.
+//! Writers shared by the subcommands: number formatting, CSV rows, JSON documents, the
+//! text-table helpers, and the `--format` choices they write by. Everything writes to a
+//! `dyn Write` so a closed pipe surfaces as an `io::Error` (handled quietly in `cli::main`),
+//! never a panic.
 
 use crate::api::SurfaceUsed;
+use clap::ValueEnum;
 use serde::Serialize;
 use std::io::{self, Write};
 
 pub use crate::text::{csv_field, given, human, number as num};
+
+/// `--format` of a command that writes a text report or one JSON document.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum TextJson {
+    Text,
+    Json,
+}
+
+/// `--format` of a command that writes a text report, one JSON document or CSV.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum TextJsonCsv {
+    Text,
+    Json,
+    Csv,
+}
 
 /// An optional number for CSV: empty when absent (e.g. no rebound).
 pub fn opt_num(x: Option<f64>) -> String {

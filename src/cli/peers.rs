@@ -6,7 +6,7 @@ mod case;
 mod write;
 
 use super::ball::BallArgs;
-use super::output::{self, num};
+use super::output::{self, TextJsonCsv, num};
 use crate::analysis::fit::{FitError, fit_k_r};
 use crate::api::Ball;
 use crate::model::params::ImpactParams;
@@ -17,13 +17,6 @@ use crate::solver::{SolveOptions, simulate};
 use clap::{Args, ValueEnum};
 use serde::Serialize;
 use std::io::Write;
-
-#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum PeersFormat {
-    Text,
-    Json,
-    Csv,
-}
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
 pub enum ExportArg {
@@ -89,7 +82,7 @@ pub struct PeersArgs {
     /// Output format of the comparison (not with --export, whose CODE is the format; `--export
     /// json` is the JSON one)
     #[arg(long, value_enum, default_value = "text", conflicts_with = "export")]
-    pub format: PeersFormat,
+    pub format: TextJsonCsv,
     /// Write the exactly calibrated parameters for a code instead of the comparison
     #[arg(long, value_enum, value_name = "CODE")]
     pub export: Option<ExportArg>,
@@ -274,7 +267,7 @@ pub fn run(a: &PeersArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     match a.format {
         // the COR is the ball's on the rigid plate, or the pair's (docs/cli.md, "The surface
         // object")
-        PeersFormat::Json => {
+        TextJsonCsv::Json => {
             let plate = crate::api::SurfaceUsed::rigid_plate();
             let met = match report.pair {
                 None => output::Met::Surface(&plate),
@@ -284,11 +277,11 @@ pub fn run(a: &PeersArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         }
         // the rows are the peers' calibrations, not the ball's answer: its warnings on stderr,
         // as beside `run --history`'s CSV
-        PeersFormat::Csv => {
+        TextJsonCsv::Csv => {
             write::csv(out, &rows)?;
             output::warnings_to_stderr(&report.warnings);
         }
-        PeersFormat::Text => {
+        TextJsonCsv::Text => {
             write::text(out, &b, &ball, &report)?;
             output::warning_lines(out, &report.warnings)?;
         }

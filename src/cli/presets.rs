@@ -2,17 +2,11 @@
 //! runs at.
 
 use super::ball::{PresetChoice, load_catalog};
-use super::output::{self, human, table};
+use super::output::{self, TextJson, human, table};
 use crate::api::PresetRow;
 use crate::catalog;
-use clap::{Args, ValueEnum};
+use clap::Args;
 use std::io::Write;
-
-#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum PresetsFormat {
-    Text,
-    Json,
-}
 
 #[derive(Debug, Clone, Args)]
 #[command(mut_arg("config", |a| a.help("Also list the preset in this file")))]
@@ -23,15 +17,15 @@ pub struct PresetsArgs {
     pub choice: PresetChoice,
     /// Output format
     #[arg(long, value_enum, default_value = "text")]
-    pub format: PresetsFormat,
+    pub format: TextJson,
 }
 
 pub fn run(a: &PresetsArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     let cat = load_catalog(a.choice.config.as_deref())?;
     let rows: Vec<PresetRow> = cat.entries().iter().map(PresetRow::of).collect();
     match a.format {
-        PresetsFormat::Json => output::json(out, &rows)?,
-        PresetsFormat::Text => {
+        TextJson::Json => output::json(out, &rows)?,
+        TextJson::Text => {
             let mut t = vec![
                 [
                     "name",

@@ -1,23 +1,40 @@
 //! `bouncelab run`: one impact, as a text table, one JSON object or CSV.
 
-use super::ball::{self, BallArgs};
-use super::output::{self, csv_row, num, opt_num};
+use super::ball::BallArgs;
+use super::output::{self, TextJsonCsv, csv_row, num, opt_num};
 use super::surface::{SurfaceArgs, SurfaceUsed};
 use crate::api::{Ball, ImpactReport};
 use crate::model::contact::ContactLaw;
 use crate::solver::{EnergyBudget, ImpactResponse};
-use clap::{Args, ValueEnum};
+use clap::Args;
 use serde::Serialize;
 use std::io::Write;
 
 /// History samples by default (at most [`crate::api::MAX_SAMPLES`]).
 const SAMPLES: usize = 400;
 
-#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum RunFormat {
-    Text,
-    Json,
-    Csv,
+/// `--history` and `--samples`: the contact's history, evenly sampled, beside the answer
+/// (`run`; `oblique`, whose `--history` help names its own columns by `mut_arg`).
+#[derive(Debug, Clone, Args)]
+pub struct HistoryArgs {
+    /// Also print F(t), z(t), α(t), evenly sampled over the contact
+    #[arg(long)]
+    pub history: bool,
+    /// Number of history samples
+    #[arg(long, value_name = "N", default_value_t = SAMPLES, requires = "history", value_parser = super::number::count, allow_hyphen_values = true)]
+    pub samples: usize,
+}
+
+impl HistoryArgs {
+    /// The samples to ask the library for: none without `--history`. The library reads 0 as
+    /// "no history", so with `--history` 0 is refused as 1 is (2 … MAX_SAMPLES).
+    pub fn samples(&self) -> Result<usize, crate::api::BallError> {
+        match (self.history, self.samples) {
+            (false, _) => Ok(0),
+            (true, 0) => Err(crate::api::BallError::Samples(0)),
+            (true, n) => Ok(n),
+        }
+    }
 }
 
 #[derive(Debug, Clone, Args)]
@@ -47,13 +64,9 @@ pub struct RunArgs {
     pub zeta: Option<f64>,
     /// Output format
     #[arg(long, value_enum, default_value = "text")]
-    pub format: RunFormat,
-    /// Also print F(t), z(t), α(t), evenly sampled over the contact
-    #[arg(long)]
-    pub history: bool,
-    /// Number of history samples
-    #[arg(long, value_name = "N", default_value_t = SAMPLES, requires = "history", value_parser = super::number::count, allow_hyphen_values = true)]
-    pub samples: usize,
+    pub format: TextJsonCsv,
+    #[command(flatten)]
+    pub history: HistoryArgs,
     #[command(flatten)]
     pub surface: SurfaceArgs,
 }
@@ -79,7 +92,7 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> anyhow::Result<()> {
              --after and --half-life do not apply"
         );
     }
-    ball::check_overrides(&args.ball.changes.set, args.lambda, args.zeta)?;
+    // --normalized takes no override (refused above) for its λ and ζ to meet
     let ball = if args.normalized {
         let law = args.ball.changes.law.map_or(ContactLaw::Linear, Into::into);
         Ball::normalized(
@@ -89,16 +102,11 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> anyhow::Result<()> {
             law,
         )?
     } else {
-        let mut b = args.ball.resolve(args.v0)?;
-        ball::set_lambda_zeta(&mut b, args.lambda, args.zeta)?;
-        b
+        args.ball.resolve_tuned(args.v0, args.lambda, args.zeta)?
     };
     let surface = args.surface.resolve()?;
     // the library checks the number of samples (2 … MAX_SAMPLES)
-    let samples = if args.history { args.samples } else { 0 };
-    if args.history && samples == 0 {
-        return Err(crate::api::BallError::Samples(0).into());
-    }
+    let samples = args.history.samples()?;
     let r = ball.impact_on(&surface.target(), samples)?;
     // the preset's measurement is the rigid plate's: not this impact's on a surface that gives
     let elsewhere = (!surface.is_rigid() && ball.measured.is_some()).then(|| {
@@ -117,8 +125,8 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     // a fitted preset's 95 % intervals (docs/fitting.md), when no override moved the fit
     let intervals = ball.intervals().transpose()?;
     match args.format {
-        RunFormat::Json => {
-            let mut report = ImpactReport::new(&ball, &r, args.history);
+        TextJsonCsv::Json => {
+            let mut report = ImpactReport::new(&ball, &r, args.history.history);
             report.intervals = intervals;
             if elsewhere.is_some() {
                 report.comparison_withheld = elsewhere;
@@ -126,13 +134,13 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> anyhow::Result<()> {
             let surface = &surface;
             output::json_stated(out, &Report { report, surface }, &ball.conditions)?
         }
-        RunFormat::Csv if args.history => {
+        TextJsonCsv::Csv if args.history.history => {
             history_csv(out, &r)?;
             output::warnings_to_stderr(&ball.warnings(&r));
         }
-        RunFormat::Csv => summary_csv(out, &ball, &r)?,
-        RunFormat::Text => {
-            super::run_text::write(out, &ball, &r, intervals.as_ref(), args.history)?;
+        TextJsonCsv::Csv => summary_csv(out, &ball, &r)?,
+        TextJsonCsv::Text => {
+            super::run_text::write(out, &ball, &r, intervals.as_ref(), args.history.history)?;
             if !surface.is_rigid() || args.surface.surface.is_some() {
                 writeln!(out, "{}", surface.label())?;
             }

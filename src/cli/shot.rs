@@ -4,7 +4,7 @@
 
 use super::ball::BallArgs;
 use super::oblique::BounceSurfaceArgs;
-use super::output::{self, csv_row, given, num, table};
+use super::output::{self, TextJsonCsv, csv_row, given, num, table};
 use super::outputs::{check as check_writable, report_then_commit};
 use super::shot_after::{flag_named, past_bounce};
 use super::surface::SurfaceUsed;
@@ -12,20 +12,13 @@ use crate::api::{Ball, BallHeader, ShotReport, ShotSpec};
 use crate::atomic::Outputs;
 use crate::figure::svg;
 use crate::flight::{Ends, Launch};
-use clap::{Args, ValueEnum};
+use clap::Args;
 use serde::Serialize;
 use std::io::Write;
 use std::path::PathBuf;
 
 /// Samples of the path drawn by --svg-out when --samples does not say.
 const FIGURE_SAMPLES: usize = 400;
-
-#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum ShotFormat {
-    Text,
-    Json,
-    Csv,
-}
 
 #[derive(Debug, Clone, Args)]
 pub struct ShotArgs {
@@ -80,7 +73,7 @@ pub struct ShotArgs {
     pub samples: Option<usize>,
     /// Output format (csv: the trajectory with --samples, else one row per bounce)
     #[arg(long, value_enum, default_value = "text")]
-    pub format: ShotFormat,
+    pub format: TextJsonCsv,
     /// Write the side view (path, surface, bounces) as SVG
     #[arg(long, value_name = "FILE")]
     pub svg_out: Option<PathBuf>,
@@ -138,7 +131,6 @@ struct Report<'a> {
 }
 
 pub fn run(a: &ShotArgs, out: &mut dyn Write) -> anyhow::Result<()> {
-    super::ball::check_overrides(&a.ball.changes.set, None, None)?;
     if a.samples == Some(0) {
         return Err(crate::api::BallError::Samples(0).into());
     }
@@ -170,7 +162,7 @@ pub fn run(a: &ShotArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     }
     let mut report = Vec::new();
     match a.format {
-        ShotFormat::Json => output::json_stated(
+        TextJsonCsv::Json => output::json_stated(
             &mut report,
             &Report {
                 ball: ball.header(),
@@ -182,13 +174,13 @@ pub fn run(a: &ShotArgs, out: &mut dyn Write) -> anyhow::Result<()> {
             },
             &ball.conditions,
         )?,
-        ShotFormat::Csv if !shot.trajectory.is_empty() => trajectory_csv(&mut report, &shot)?,
-        ShotFormat::Csv => bounces_csv(&mut report, &shot)?,
-        ShotFormat::Text => text(&mut report, (&ball, &surface), &spec, &shot)?,
+        TextJsonCsv::Csv if !shot.trajectory.is_empty() => trajectory_csv(&mut report, &shot)?,
+        TextJsonCsv::Csv => bounces_csv(&mut report, &shot)?,
+        TextJsonCsv::Text => text(&mut report, (&ball, &surface), &spec, &shot)?,
     }
     report_then_commit(out, &report, files)?;
     // the net's warning belongs to no CSV row: on stderr, as a time series' (`run --history`)
-    if let (ShotFormat::Csv, Some(n)) = (a.format, &shot.net) {
+    if let (TextJsonCsv::Csv, Some(n)) = (a.format, &shot.net) {
         output::warnings_to_stderr(&n.warnings);
     }
     Ok(())

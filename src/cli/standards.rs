@@ -1,26 +1,20 @@
 //! `bouncelab standards`: the governing bodies' ball tests and their windows (docs/drop.md,
 //! "Standards", cites each source).
 
-use super::output::{self, given, table};
+use super::output::{self, TextJson, given, table};
 use crate::drop::conditions::{self, PRESSURE_LOSS};
 use crate::drop::deformation::DEFORMATION_STANDARDS;
 use crate::drop::standards::{STANDARDS, Standard, Test};
 use crate::oblique::court::{CourtTest, ITF_COURT_PACE};
 use crate::target::bat::{BAT_STANDARDS, BatTest};
-use clap::{Args, ValueEnum};
+use clap::Args;
 use std::io::Write;
-
-#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum StandardsFormat {
-    Text,
-    Json,
-}
 
 #[derive(Debug, Clone, Args)]
 pub struct StandardsArgs {
     /// Output format
     #[arg(long, value_enum, default_value = "text")]
-    pub format: StandardsFormat,
+    pub format: TextJson,
 }
 
 pub fn run(a: &StandardsArgs, out: &mut dyn Write) -> anyhow::Result<()> {
@@ -28,10 +22,8 @@ pub fn run(a: &StandardsArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         // the ball standards with their conditions, the bat standards, the court pace, the
         // pressure-loss tests, the static standards: one list (`test.kind` tells them apart);
         // through a `Value`, so that the keys are serde_json's order, as they always were
-        StandardsFormat::Json => {
-            output::json(out, &serde_json::to_value(crate::api::standards())?)?
-        }
-        StandardsFormat::Text => text(out)?,
+        TextJson::Json => output::json(out, &serde_json::to_value(crate::api::standards())?)?,
+        TextJson::Text => text(out)?,
     }
     Ok(())
 }

@@ -3,18 +3,12 @@
 //! a deeper compression (docs/model.md §11; the ITF's deformation tests, docs/cli.md).
 
 use super::ball::BallArgs;
-use super::output::{self, human};
+use super::output::{self, TextJson, human};
 use crate::analysis::statics::{ContactDeflection, StaticDeflection};
 use crate::api::{ITF_RETURN_PEAK, StaticReport};
 use crate::drop::G;
-use clap::{Args, ValueEnum};
+use clap::Args;
 use std::io::Write;
-
-#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum StaticFormat {
-    Text,
-    Json,
-}
 
 #[derive(Debug, Clone, Args)]
 pub struct StaticArgs {
@@ -30,18 +24,17 @@ pub struct StaticArgs {
     pub peak: f64,
     /// Output format
     #[arg(long, value_enum, default_value = "text")]
-    pub format: StaticFormat,
+    pub format: TextJson,
 }
 
 pub fn run(a: &StaticArgs, out: &mut dyn Write) -> anyhow::Result<()> {
-    super::ball::check_overrides(&a.ball.changes.set, None, None)?;
     let ball = a.ball.resolve(None)?;
     let s = ball.static_deflection(a.load, a.peak)?;
     let report = StaticReport::new(&ball, a.load, &s);
     match a.format {
         // `conditions` beside the answer's keys, as every command's JSON (docs/cli.md)
         // and `surface`: both plates are the rigid plate (docs/cli.md, "The surface object")
-        StaticFormat::Json => {
+        TextJson::Json => {
             let plates = crate::api::SurfaceUsed::rigid_plate();
             output::json_on(
                 out,
@@ -50,7 +43,7 @@ pub fn run(a: &StaticArgs, out: &mut dyn Write) -> anyhow::Result<()> {
                 &ball.conditions,
             )?
         }
-        StaticFormat::Text => {
+        TextJson::Text => {
             writeln!(out, "{}", ball.label())?;
             output::ball_lines(out, &ball, None)?;
             text(out, a.load, &s, ball.law.name())?;

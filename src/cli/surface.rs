@@ -3,12 +3,12 @@
 //! surface's), resolved against the embedded and user surfaces; the JSON `surface` object
 //! every answer on a surface carries; and `bouncelab surfaces`, which lists them.
 
-use super::output::{self, human, table};
+use super::output::{self, TextJson, human, table};
 use crate::api::SurfaceError;
 pub use crate::api::SurfaceUsed;
 use crate::catalog::surfaces as catalog;
 use crate::target::surface::{DEFAULT, Surface};
-use clap::{Args, ValueEnum};
+use clap::Args;
 use serde::Serialize;
 use std::io::Write;
 
@@ -66,18 +66,12 @@ impl SurfaceArgs {
     }
 }
 
-#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum SurfacesFormat {
-    Text,
-    Json,
-}
-
 /// `bouncelab surfaces`.
 #[derive(Debug, Clone, Args)]
 pub struct SurfacesArgs {
     /// Output format
     #[arg(long, value_enum, default_value = "text")]
-    pub format: SurfacesFormat,
+    pub format: TextJson,
 }
 
 #[derive(Serialize)]
@@ -100,7 +94,7 @@ pub fn list(a: &SurfacesArgs, out: &mut dyn Write) -> anyhow::Result<()> {
             default: e.surface.name == DEFAULT,
         })
         .collect();
-    if a.format == SurfacesFormat::Json {
+    if a.format == TextJson::Json {
         return Ok(output::json(out, &rows)?);
     }
     let opt = |v: Option<f64>| v.map_or("—".to_string(), |x| human(x, 4));

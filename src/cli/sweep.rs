@@ -208,9 +208,7 @@ struct VelocityDoc<'a, T> {
 }
 
 fn velocity(a: &VelocityArgs, out: &mut dyn Write) -> anyhow::Result<()> {
-    super::ball::check_overrides(&a.ball.changes.set, a.lambda, a.zeta)?;
-    let mut b = a.ball.resolve(a.v0)?;
-    super::ball::set_lambda_zeta(&mut b, a.lambda, a.zeta)?;
+    let b = a.ball.resolve_tuned(a.v0, a.lambda, a.zeta)?;
     let v0 = b.params.v0;
     let from = a.from.unwrap_or(0.1 * v0);
     let to = a.to.unwrap_or(3.0 * v0);

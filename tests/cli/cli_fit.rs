@@ -272,6 +272,14 @@ fn overrides_on_run_sweep_and_figure() {
         ),
         ("run --k-p -1", &["invalid k_p: -1"]),
         (
+            "sweep velocity --damping 3 --zeta 0.3",
+            &["--damping and --zeta both set c"],
+        ),
+        (
+            "figure force-time --k-r 5e4 --lambda 1 --out f.svg",
+            &["--k-r and --lambda both set K_r"],
+        ),
+        (
             "run --normalized --damping 3",
             &["--normalized", "do not apply"],
         ),

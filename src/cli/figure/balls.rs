@@ -14,7 +14,7 @@
 use super::{
     FigureArgs, FigureName, HISTORY_SAMPLES, VELOCITY_POINTS, history_figures, velocity_figure,
 };
-use crate::cli::ball::{self, BallArgs, PresetChanges, PresetChoice};
+use crate::cli::ball::{BallArgs, PresetChanges, PresetChoice};
 use crate::figure::history::OUTSIDE;
 use crate::figure::paper;
 use crate::figure::{Figure, Kind};
@@ -86,9 +86,7 @@ pub(super) fn ball_figure(a: &FigureArgs, b: &paper::Ball) -> anyhow::Result<Fig
 pub(super) fn one_ball(a: &FigureArgs, args: &BallArgs) -> anyhow::Result<(paper::Ball, String)> {
     let v0 = a.v0.filter(|_| a.name != FigureName::CorVelocity);
     let lambda = a.lambda.as_ref().filter(|l| l.len() == 1).map(|l| l[0]);
-    ball::check_overrides(&args.changes.set, lambda, a.zeta)?;
-    let mut b = args.resolve(v0)?;
-    ball::set_lambda_zeta(&mut b, lambda, a.zeta)?;
+    let b = args.resolve_tuned(v0, lambda, a.zeta)?;
     Ok((b.record(), b.origin))
 }
 

@@ -5,11 +5,11 @@
 //! `data_sets`); `--save` records every set in the preset's `[calibration]`.
 
 use super::multi::{check_outputs, load, publish};
-use super::{FitArgs, FitFormat, Loaded, Source};
+use super::{FitArgs, Loaded, Source};
 use crate::analysis::fit::joint::{JointData, JointFit, JointSet, SetFit, fit_joint};
 use crate::analysis::fit::{MultiFitError, Param};
 use crate::cli::measured_file as files;
-use crate::cli::output::{self, human, table};
+use crate::cli::output::{self, TextJson, human, table};
 use crate::measured::StaticRow;
 use crate::model::params::ImpactParams;
 use crate::preset::CalibrationData;
@@ -229,7 +229,7 @@ fn report_and_save(
     let report = super::report::report(ball, &all, &f, &fitted, &r);
     let mut text = Vec::new();
     match a.format {
-        FitFormat::Json => output::json_on(
+        TextJson::Json => output::json_on(
             &mut text,
             &JointJson {
                 report,
@@ -239,7 +239,7 @@ fn report_and_save(
             output::Met::Surface(&crate::api::SurfaceUsed::rigid_plate()),
             &ball.conditions,
         )?,
-        FitFormat::Text => {
+        TextJson::Text => {
             super::report_text::text(&mut text, ball, &all, &f, &report)?;
             sets_text(&mut text, &j.sets)?;
         }

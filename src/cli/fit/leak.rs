@@ -3,11 +3,11 @@
 //! other fits' intervals, verdict and exit codes: a report, then exit 1 when the readings do
 //! not follow the law.
 
-use super::{FitArgs, FitFormat};
+use super::FitArgs;
 use crate::analysis::fit::pressure_loss::{LeakFit, Reading, fit_pressure_loss};
 use crate::analysis::fit::verdict::LackOfFit;
 use crate::analysis::fit::{Estimate, MultiFitError};
-use crate::cli::output::{self, human, table};
+use crate::cli::output::{self, TextJson, human, table};
 use std::io::Write;
 use std::path::Path;
 
@@ -36,8 +36,8 @@ pub fn run(a: &FitArgs, path: &Path, out: &mut dyn Write) -> anyhow::Result<()> 
     let report = LeakJson::new(&file, readings.len(), &fit);
     let mut text = Vec::new();
     match a.format {
-        FitFormat::Json => output::json(&mut text, &report)?,
-        FitFormat::Text => write_text(&mut text, &report)?,
+        TextJson::Json => output::json(&mut text, &report)?,
+        TextJson::Text => write_text(&mut text, &report)?,
     }
     out.write_all(&text)?;
     if !fit.no_answer.is_empty() {

@@ -9,8 +9,9 @@ use super::ball::BallArgs;
 use super::output::{self, given, human, table};
 use crate::analysis::fit::Param;
 use crate::api::{FitReport, SurfaceUsed};
+use crate::cli::output::TextJson;
 use crate::measured::{CorPoint, Trace};
-use clap::{Args, ValueEnum};
+use clap::Args;
 use std::io::Write;
 use std::path::PathBuf;
 
@@ -24,12 +25,6 @@ mod report_text;
 mod save;
 mod save_shift;
 mod temperature;
-
-#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum FitFormat {
-    Text,
-    Json,
-}
 
 #[derive(Debug, Clone, Args)]
 pub struct FitArgs {
@@ -117,7 +112,7 @@ pub struct FitArgs {
     pub force: bool,
     /// Output format
     #[arg(long, value_enum, default_value = "text")]
-    pub format: FitFormat,
+    pub format: TextJson,
 }
 
 /// What a fit is given.
@@ -278,7 +273,7 @@ fn single(a: &FitArgs, cor: f64, stdout: &mut dyn Write) -> anyhow::Result<()> {
     let mut report = Vec::new();
     let out = &mut report;
     match a.format {
-        FitFormat::Json => output::json_on(
+        TextJson::Json => output::json_on(
             out,
             &SingleJson {
                 r,
@@ -288,7 +283,7 @@ fn single(a: &FitArgs, cor: f64, stdout: &mut dyn Write) -> anyhow::Result<()> {
             output::Met::Surface(&SurfaceUsed::rigid_plate()),
             &b.conditions,
         )?,
-        FitFormat::Text => {
+        TextJson::Text => {
             writeln!(out, "{}, {} law", b.label(), r.ball.law)?;
             if let Some(line) = b.overrides_line() {
                 writeln!(out, "{line}")?;

@@ -2,11 +2,12 @@
 //! standard errors, 95 % intervals and correlations ([`crate::analysis::fit::fit`]); the
 //! report as text or JSON, and the `--plot` and `--save` that go with every fit.
 
-use super::{FitArgs, FitFormat, Loaded, Source};
+use super::{FitArgs, Loaded, Source};
 use crate::analysis::fit::{FitData, MultiFit, MultiFitError, Param, fit_watched};
 use crate::api::Ball;
 use crate::atomic::Outputs;
 use crate::cli::measured_file as files;
+use crate::cli::output::TextJson;
 use crate::cli::{output, outputs};
 use crate::measured::{Air, CorPoint};
 use crate::model::params::ImpactParams;
@@ -219,13 +220,13 @@ pub fn run(
     let report = super::report::report(&ball, &data, &f, &fitted, &r);
     let mut text = Vec::new();
     match a.format {
-        FitFormat::Json => {
+        TextJson::Json => {
             // the data's fit assumed the rigid plate (docs/cli.md, "The surface object")
             let plate = crate::api::SurfaceUsed::rigid_plate();
             let on = output::Met::Surface(&plate);
             output::json_on(&mut text, &report, on, &ball.conditions)?
         }
-        FitFormat::Text => super::report_text::text(&mut text, &ball, &data, &f, &report)?,
+        TextJson::Text => super::report_text::text(&mut text, &ball, &data, &f, &report)?,
     }
     if !f.identified {
         out.write_all(&text)?;
@@ -306,8 +307,8 @@ fn refuse_unanswered(a: &FitArgs, f: &crate::analysis::fit::MultiFit) -> anyhow:
 /// (stdout stays one JSON document).
 fn note(a: &FitArgs, out: &mut dyn Write, line: &str) -> anyhow::Result<()> {
     match a.format {
-        FitFormat::Text => writeln!(out, "{line}")?,
-        FitFormat::Json => eprintln!("bouncelab: {line}"),
+        TextJson::Text => writeln!(out, "{line}")?,
+        TextJson::Json => eprintln!("bouncelab: {line}"),
     }
     Ok(())
 }

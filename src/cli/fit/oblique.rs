@@ -2,14 +2,14 @@
 //! measured oblique bounces (docs/oblique.md §9), with the other fits' intervals, verdict and
 //! exit codes: a report, then exit 1 when the data do not pin what was fitted.
 
+use super::FitArgs;
 use super::report_text::{estimate_rows, exact_words};
-use super::{FitArgs, FitFormat};
 use crate::BallError;
 use crate::analysis::fit::oblique::ObliqueFit;
 use crate::analysis::fit::verdict::no_answer_reasons;
 use crate::analysis::fit::{Estimate, MultiFitError};
 use crate::api::{ObliqueFitReport, is_oblique_data_error as is_data_error};
-use crate::cli::output::{self, human, table};
+use crate::cli::output::{self, TextJson, human, table};
 use std::io::Write;
 use std::path::Path;
 
@@ -37,7 +37,7 @@ pub fn run(a: &FitArgs, path: &Path, out: &mut dyn Write) -> anyhow::Result<()> 
     let f = &report.fit;
     let mut text = Vec::new();
     match a.format {
-        FitFormat::Json => output::json_on(
+        TextJson::Json => output::json_on(
             &mut text,
             &WithBall {
                 report: &report,
@@ -47,7 +47,7 @@ pub fn run(a: &FitArgs, path: &Path, out: &mut dyn Write) -> anyhow::Result<()> 
             output::Met::Surface(&crate::api::SurfaceUsed::rigid_plate()),
             &ball.conditions,
         )?,
-        FitFormat::Text => write_text(&mut text, &ball.label(), &report, f)?,
+        TextJson::Text => write_text(&mut text, &ball.label(), &report, f)?,
     }
     out.write_all(&text)?;
     if !f.identified {

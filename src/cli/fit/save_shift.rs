@@ -7,6 +7,7 @@
 use super::save::{now_utc, remove_created, stage_preset};
 use crate::analysis::fit::cor_temperature::{CorAt, TemperatureFit};
 use crate::atomic::Outputs;
+use crate::cli::output::TextJson;
 use crate::preset::{Calibration, CalibrationData, Preset, TemperatureShift};
 use std::io::Write;
 
@@ -92,8 +93,8 @@ pub fn save_then_report(
     }
     let note = format!("saved preset '{name}' to {}", path.display());
     match a.format {
-        super::FitFormat::Json => eprintln!("bouncelab: {note}"),
-        super::FitFormat::Text => writeln!(out, "{note}")?,
+        TextJson::Json => eprintln!("bouncelab: {note}"),
+        TextJson::Text => writeln!(out, "{note}")?,
     }
     Ok(())
 }

@@ -4,11 +4,11 @@
 //! other fits' intervals, verdict and exit codes: a report, then exit 1 when the data do not
 //! follow the law.
 
-use super::{FitArgs, FitFormat};
+use super::FitArgs;
 use crate::analysis::fit::cor_temperature::{CorAt, TemperatureFit, fit_cor_temperature};
 use crate::analysis::fit::verdict::LackOfFit;
 use crate::analysis::fit::{Estimate, MultiFitError};
-use crate::cli::output::{self, human, table};
+use crate::cli::output::{self, TextJson, human, table};
 use std::io::Write;
 use std::path::Path;
 
@@ -68,8 +68,8 @@ pub fn run(a: &FitArgs, path: &Path, out: &mut dyn Write) -> anyhow::Result<()> 
     };
     let mut text = Vec::new();
     match a.format {
-        FitFormat::Json => output::json(&mut text, &report)?,
-        FitFormat::Text => write_text(&mut text, &report, &fit)?,
+        TextJson::Json => output::json(&mut text, &report)?,
+        TextJson::Text => write_text(&mut text, &report, &fit)?,
     }
     if !fit.no_answer.is_empty() {
         out.write_all(&text)?;
