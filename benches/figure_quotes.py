@@ -25,8 +25,8 @@ import sys
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 ANCHOR = "BENCHMARKS.md#the-current-table"
 # a number and its unit (tests/project/speed_figures.rs's UNITS), a × before a number excluded
-FIGURE = re.compile(r"(?<![\w.\-])\d+(?:\.\d+)? ?(?:core-seconds|minutes|seconds|min|µs|ns|ms|MB|s|×)"
-                    r"(?![\w])(?!\s*\d)")
+FIGURE = re.compile(r"(?<![\w.\-])\d+(?:\.\d+)? ?"
+                    r"(?:core-seconds|minutes|seconds|min|µs|ns|ms|MB|s|×)(?![\w])(?!\s*\d)")
 LINK = re.compile(r"\[([^\[\]]+)\](?:\(([^()\s]+)\)|\[([^\[\]]+)\])")
 
 
@@ -130,7 +130,8 @@ def main(argv):
     if argv[:1] == ["--list"]:
         for page, line, _, _, quoted in quotes():
             hit = find(rows, quoted)
-            print(f"{rel(page)}:{line}: {quoted} — " + (f"“{rows[hit[0]][0]}”" if hit else "NOT IN THE TABLE"))
+            row = f"“{rows[hit[0]][0]}”" if hit else "NOT IN THE TABLE"
+            print(f"{rel(page)}:{line}: {quoted} — {row}")
         return 0
     if argv[:1] == ["--check"]:
         other = table_rows(open(argv[1], encoding="utf-8").read()) if len(argv) > 1 else rows
