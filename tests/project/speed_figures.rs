@@ -284,25 +284,32 @@ fn every_speed_figure_of_the_docs_is_a_row_of_the_benchmarks_table() {
     );
 }
 
-/// The pages, README.md first: (name as the messages give it, the table's link target, text).
-fn pages() -> Vec<(String, String, String)> {
-    let mut docs: Vec<PathBuf> = std::fs::read_dir(root().join("docs"))
+/// The pages checked, here and by docs_examples.rs: every docs page in name order, then the
+/// README.
+pub(super) fn doc_pages() -> Vec<PathBuf> {
+    let mut pages: Vec<PathBuf> = std::fs::read_dir(root().join("docs"))
         .unwrap()
         .map(|e| e.unwrap().path())
         .filter(|p| p.extension().is_some_and(|x| x == "md"))
         .collect();
-    docs.sort();
-    let readme = std::fs::read_to_string(root().join("README.md")).unwrap();
-    let mut out = vec![("README.md".to_string(), TABLE.to_string(), readme)];
-    for page in docs {
-        let name = format!("docs/{}", page.file_name().unwrap().to_string_lossy());
-        out.push((
-            name,
-            format!("../{TABLE}"),
-            std::fs::read_to_string(&page).unwrap(),
-        ));
-    }
-    out
+    pages.sort();
+    pages.push(root().join("README.md"));
+    pages
+}
+
+/// The pages: (name as the messages give it, the table's link target from it, text).
+fn pages() -> Vec<(String, String, String)> {
+    let root = root();
+    let page = |path: PathBuf| {
+        let name = path.strip_prefix(&root).unwrap().display().to_string();
+        let target = if path.parent() == Some(root.as_path()) {
+            TABLE.to_string()
+        } else {
+            format!("../{TABLE}")
+        };
+        (name, target, std::fs::read_to_string(&path).unwrap())
+    };
+    doc_pages().into_iter().map(page).collect()
 }
 
 /// A row named in words (`BENCHMARKS.md, “one key in the explorer”`) is the start of a row
