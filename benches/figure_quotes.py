@@ -163,6 +163,12 @@ def update(new_file, bench, text, start, end, rows):
             body = body[:s] + figure + body[e:]
         open(page, "w", encoding="utf-8").write(body)
     block = measured.strip("\n") + "\n"
+    cpu = re.compile(r"^Measured .*? on (.*?), \d+ cores")
+    old_cpu, new_cpu = cpu.search(text[start:end]), cpu.search(block)
+    if old_cpu and new_cpu and old_cpu.group(1) != new_cpu.group(1):
+        problems.append(f"the processor is {new_cpu.group(1)} now, {old_cpu.group(1)} "
+                        "before: say so in BENCHMARKS.md's “The machine” and README's "
+                        "“Speed on …”")
     open(bench, "w", encoding="utf-8").write(text[:start] + block + text[end:])
     for p in problems:
         print(p)
