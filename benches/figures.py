@@ -183,6 +183,12 @@ def hertz_map_cli():
     return f"{cpu:.2f} s CPU" + (" (20 × 120)" if QUICK else "")
 
 
+def reproduce_cli():
+    with tempfile.TemporaryDirectory() as out:
+        cpu, mb = timed([BIN, "reproduce", "--out", out])
+    return f"{cpu:.2f} s CPU, {mb:.0f} MB"
+
+
 _fit_out = []
 
 
@@ -366,6 +372,8 @@ ROWS = [
     ("tennis map under Hertz from the command line, 200 × 120", hertz_map_cli,
      "/usr/bin/time bouncelab map --preset tennis --law hertz --lambda 0.01:100:200 "
      "--zeta 0.01:100:120"),
+    ("`reproduce`, the paper's 29 files (SVG, CSV and the report)", reproduce_cli,
+     "/usr/bin/time bouncelab reproduce --out DIR"),
     ("a 3-parameter fit to a 2 000-sample force trace / SciPy `least_squares`", fit_vs_scipy,
      "cargo bench --bench fit"),
     ("dense traces: 10⁴ rows / 10⁶ rows, parse + fit", dense_fit, "cargo bench --bench fit"),

@@ -32,18 +32,6 @@ fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
 }
 
-/// The pages checked: every docs page and the README.
-fn pages() -> Vec<PathBuf> {
-    let mut pages: Vec<PathBuf> = std::fs::read_dir(root().join("docs"))
-        .unwrap()
-        .map(|e| e.unwrap().path())
-        .filter(|p| p.extension().is_some_and(|x| x == "md"))
-        .collect();
-    pages.sort();
-    pages.push(root().join("README.md"));
-    pages
-}
-
 /// The examples of one page, in order: inside each fenced block, a `$ ` line (and its `\`
 /// continuations) is a command, the lines up to the next `$ ` or the fence its output.
 fn examples(lines: &[&str]) -> Vec<Example> {
@@ -216,7 +204,7 @@ fn every_docs_example_prints_what_the_binary_prints() {
     let bless = std::env::var_os("BOUNCELAB_BLESS").is_some();
     let scratch = tempfile::tempdir().unwrap();
     let bin = bin_dir(scratch.path());
-    let differ: Vec<String> = pages()
+    let differ: Vec<String> = super::speed_figures::doc_pages()
         .iter()
         .flat_map(|p| check_page(p, &bin, bless))
         .collect();

@@ -5,4 +5,5 @@
 
 mod architecture;
 mod docs_examples;
+mod speed_figures;
 mod string_literals;
