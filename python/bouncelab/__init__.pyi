@@ -798,7 +798,7 @@ def batch(
     judged against ``standard``, as ``bouncelab batch FILE --format json``: ``summary`` (n,
     mean, sd, min, max, failures, cpk, the 95 % intervals mean_ci and cpk_ci, unsure, …) and
     ``balls`` (id, cor, verdict, margin, measured_ci95, warnings, error, …); ``None`` where
-    the JSON has null."""
+    the JSON has null, but ``inf`` for the surface's infinite K_s and M, as every answer's."""
 
 def monte_carlo(
     *,

@@ -160,10 +160,10 @@ ball_pyfunction! {
         .map_err(value_error)?;
         let text = text.map_err(|e| value_error(e.to_string()))?;
         let d = py.import("json")?.call_method1("loads", (text,))?;
+        // the document is the command line's JSON; its surface the rigid plate as every
+        // answer's surface dict gives it (∞ as inf, where the JSON writes null)
+        d.set_item("surface", crate::surface::rigid_plate(py)?)?;
         // the conditions the ball ran at, as the command line's last key
-        // the document is the command line's JSON: its surface too (null for ∞)
-        let plate = bouncelab::api::SurfaceUsed::rigid_plate();
-        d.set_item("surface", crate::answer::json(py, &plate)?)?;
         d.set_item("conditions", &crate::answer::Stated::of(&ball))?;
         Ok(d)
     }

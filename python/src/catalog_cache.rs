@@ -21,6 +21,7 @@
 use bouncelab::catalog::{Catalog, CatalogError};
 use bouncelab::preset::ParamSource;
 use bouncelab::{Ball, BallError, ContactLaw};
+use pyo3::prelude::*;
 use std::ffi::OsString;
 use std::path::{Path, PathBuf};
 use std::sync::{Arc, Mutex};
@@ -121,28 +122,64 @@ pub(crate) fn user_catalog() -> Result<Arc<Catalog>, CatalogError> {
 /// None)`, built and checked once while the catalog holds. An unknown name is the catalog's
 /// error, and `choose` (the caller's parse of its set and law) runs after the name is found,
 /// as the command line checks them; the library's errors are the caller's by `error`, and
-/// none is kept.
-pub(crate) fn preset_ball<E>(
+/// none is kept. The files the folder skipped are warned of first ([`warn_skipped`]).
+pub(crate) fn preset_ball<E: From<PyErr>>(
     name: &str,
     choose: impl FnOnce() -> Result<(Option<ParamSource>, Option<ContactLaw>), E>,
     error: fn(BallError) -> E,
 ) -> Result<Arc<Ball>, E> {
-    in_user_presets_dir(|dir| {
-        let catalog_error = |e| error(BallError::Catalog(e));
+    let (skipped, ball) = in_user_presets_dir(|dir| {
         let mut cache = CACHE.lock().unwrap_or_else(|e| e.into_inner());
-        let cached = fresh(&mut cache, dir).map_err(catalog_error)?;
-        let entry = cached.catalog.get(name).map_err(catalog_error)?;
-        let (source, law) = choose()?;
-        let balls = &mut cached.balls.0;
-        let kept = balls
-            .iter()
-            .find(|((n, s, l), _)| n == name && *s == source && *l == law);
-        if let Some((_, ball)) = kept {
-            return Ok(ball.clone());
+        let cached = fresh(&mut cache, dir).map_err(|e| error(BallError::Catalog(e)))?;
+        // the catalog held for the warnings only where it skipped a file
+        let skipped = (!cached.catalog.skipped().is_empty()).then(|| cached.catalog.clone());
+        Ok::<_, E>((skipped, built(cached, name, choose, error)))
+    })?;
+    if let Some(catalog) = skipped {
+        warn_skipped(&catalog, Some(name))?;
+    }
+    ball
+}
+
+/// [`preset_ball`]'s ball from the catalog `cached`: the one kept, else built and kept.
+fn built<E>(
+    cached: &mut Cached,
+    name: &str,
+    choose: impl FnOnce() -> Result<(Option<ParamSource>, Option<ContactLaw>), E>,
+    error: fn(BallError) -> E,
+) -> Result<Arc<Ball>, E> {
+    let entry = (cached.catalog.get(name)).map_err(|e| error(BallError::Catalog(e)))?;
+    let (source, law) = choose()?;
+    let balls = &mut cached.balls.0;
+    let kept = balls
+        .iter()
+        .find(|((n, s, l), _)| n == name && *s == source && *l == law);
+    if let Some((_, ball)) = kept {
+        return Ok(ball.clone());
+    }
+    let ball = Arc::new(Ball::from_entry(entry, source, law, None).map_err(error)?);
+    balls.push(((name.to_string(), source, law), ball.clone()));
+    Ok(ball)
+}
+
+/// The command line's warnings of the presets folder's files it skipped (src/cli/ball.rs,
+/// `warn_skipped`), as Python's `UserWarning`s: each file's one line, as the command line
+/// prints it after `bouncelab: warning: `, but for the file whose error ends a call asking
+/// for `asked`. Given with no lock held: a warning filter may call into the package again.
+pub(crate) fn warn_skipped(catalog: &Catalog, asked: Option<&str>) -> PyResult<()> {
+    if catalog.skipped().is_empty() {
+        return Ok(());
+    }
+    let asked = asked.and_then(|name| catalog.skipped_for(name));
+    Python::attach(|py| {
+        let category = py.get_type::<pyo3::exceptions::PyUserWarning>();
+        for s in catalog.skipped().iter().filter(|s| Some(*s) != asked) {
+            let line = bouncelab::sanitize::line(&s.message()).into_owned();
+            let line = std::ffi::CString::new(line).map_err(PyErr::from)?;
+            // at the caller's line, past bouncelab/_boundary.py's guard
+            PyErr::warn(py, &category, &line, 2)?;
         }
-        let ball = Arc::new(Ball::from_entry(entry, source, law, None).map_err(error)?);
-        balls.push(((name.to_string(), source, law), ball.clone()));
-        Ok(ball)
+        Ok(())
     })
 }
 

@@ -181,10 +181,9 @@ fn report<'py>(py: Python<'py>, r: &Request, s: &McSummary) -> PyResult<Bound<'p
     d.set_item("stats", stats)?;
     d.set_item("warnings", r.ball.mc_warnings(&s.stats))?;
     crate::answer::stated(&d, &r.ball)?;
-    // plain `mc` samples on the rigid plate; the dict is the command line's JSON document
-    // (`McReport::surface`), so ∞ is None as there
-    let plate = bouncelab::api::SurfaceUsed::rigid_plate();
-    d.set_item("surface", crate::answer::json(py, &plate)?)?;
+    // plain `mc` samples on the rigid plate (`McReport::surface`): as every answer's surface
+    // dict gives it (∞ as inf, where the JSON writes null)
+    d.set_item("surface", crate::surface::rigid_plate(py)?)?;
     Ok(d)
 }
 

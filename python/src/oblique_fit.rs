@@ -124,10 +124,9 @@ ball_pyfunction! {
         let d = crate::answer::json(py, &report)?;
         // the ball the fit started from, as the command line's `ball`
         d.set_item("ball", &crate::answer::Record::of(&ball))?;
-        // the rigid plate the fit assumed, and the conditions, as the command line's JSON
-        // the report is the command line's JSON document: its surface too (null for ∞)
-        let plate = bouncelab::api::SurfaceUsed::rigid_plate();
-        d.set_item("surface", crate::answer::json(py, &plate)?)?;
+        // the rigid plate the fit assumed, as every answer's surface dict gives it (∞ as inf,
+        // where the JSON writes null), and the conditions, as the command line's JSON
+        d.set_item("surface", crate::surface::rigid_plate(py)?)?;
         d.set_item("conditions", &crate::answer::Stated::of(&ball))?;
         Ok(d)
     }

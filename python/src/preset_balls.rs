@@ -9,10 +9,13 @@ use pyo3::prelude::*;
 use std::sync::Arc;
 
 /// The presets the command line knows: the embedded ones and the user's folder
-/// (`$XDG_CONFIG_HOME/bouncelab/presets`).
-pub(crate) fn load_catalog() -> PyResult<Arc<Catalog>> {
+/// (`$XDG_CONFIG_HOME/bouncelab/presets`), the files it skipped warned of but the one a call
+/// asking for `asked` ends with the error of (`catalog_cache::warn_skipped`).
+pub(crate) fn load_catalog(asked: Option<&str>) -> PyResult<Arc<Catalog>> {
     // kept between calls while the folder is unchanged (catalog_cache.rs)
-    catalog_cache::user_catalog().map_err(|e| error(BallError::Catalog(e)))
+    let cat = catalog_cache::user_catalog().map_err(|e| error(BallError::Catalog(e)))?;
+    catalog_cache::warn_skipped(&cat, asked)?;
+    Ok(cat)
 }
 
 pub(crate) fn entry<'c>(cat: &'c Catalog, name: &str) -> PyResult<&'c Entry> {
@@ -24,7 +27,7 @@ pub(crate) fn entry<'c>(cat: &'c Catalog, name: &str) -> PyResult<&'c Entry> {
 /// the `calibration` record (None for a preset without one).
 #[pyfunction]
 pub(crate) fn presets(py: Python<'_>) -> PyResult<Bound<'_, PyAny>> {
-    let cat = load_catalog()?;
+    let cat = load_catalog(None)?;
     let rows: Vec<PresetRow> = cat.entries().iter().map(PresetRow::of).collect();
     crate::answer::json(py, &rows)
 }

@@ -76,8 +76,9 @@ pub(crate) fn to_dict<'py>(py: Python<'py>, s: &SurfaceUsed) -> PyResult<Bound<'
 }
 
 /// The rigid plate's surface object: the `surface` of the answers that take no surface and
-/// ran on it (`static`, `fit`, `batch`, `sweep_velocity`), as the command line's JSON
-/// (docs/cli.md, "The surface of the commands that take no surface options").
+/// ran on it (`static`, `fit`, `batch`, `monte_carlo`, `fit_oblique`, `sweep_velocity`), as
+/// the command line's JSON (docs/cli.md, "The surface of the commands that take no surface
+/// options"), ∞ as inf as in every answer's.
 pub(crate) fn rigid_plate(py: Python<'_>) -> PyResult<Bound<'_, PyDict>> {
     to_dict(py, &SurfaceUsed::rigid_plate())
 }

@@ -4,6 +4,7 @@ defaulting to target/ at the repository's root; .ci/run builds it before pytest 
 binary there skips the comparison, saying why; a BOUNCELAB_BIN that is not a file fails, since
 whoever set it meant the comparison to run (python/tests/test_cli_binary.py)."""
 
+import math
 import os
 import subprocess
 from pathlib import Path
@@ -34,3 +35,13 @@ def reach(warnings):
     """An answer's warnings but the calibration's (`outside calibration: …`, which every speed
     but the preset's own adds; tests/cli/calibration.rs checks them)."""
     return [w for w in warnings if not w.startswith("outside calibration:")]
+
+
+def as_package(document):
+    """The command line's JSON `document` as the package's dict holds it: its `surface`'s
+    infinite K_s and M, null in JSON (which has no infinity), are inf (docs/python.md)."""
+    surface = document["surface"]
+    for key in ("stiffness", "mass"):
+        if surface[key] is None:
+            surface[key] = math.inf
+    return document

@@ -324,8 +324,8 @@ def test_errors_are_the_clis(call, args):
 
 
 def test_broken_user_preset_is_named_with_line_and_column(no_user_presets):
-    # skipped by the catalog the command line shares (it warns; Python lists the others), and
-    # the error, file:line:column, of a call asking for it by its file name
+    # skipped by the catalog the command line shares (both warn of it and list the others),
+    # and the error, file:line:column, of a call asking for it by its file name
     no_user_presets.mkdir(parents=True)
     (no_user_presets / "bad.toml").write_text('name = "bad"\nmass = [\n')
     message = cli_error("run", "--preset", "bad")
@@ -333,7 +333,8 @@ def test_broken_user_preset_is_named_with_line_and_column(no_user_presets):
     with pytest.raises(ValueError) as e:
         bouncelab.run(preset="bad")
     assert str(e.value) == message
-    assert "superball" in [p["name"] for p in bouncelab.presets()]
+    with pytest.warns(UserWarning, match="bad.toml:2:"):
+        assert "superball" in [p["name"] for p in bouncelab.presets()]
 
 
 def test_errors_of_the_bindings_own_arguments():

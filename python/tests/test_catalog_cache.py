@@ -4,7 +4,10 @@ command line sees it."""
 
 import os
 import sys
+import warnings
+
 import pytest
+from cli_binary import cli
 from user_presets import mine
 
 import bouncelab
@@ -88,3 +91,38 @@ def test_a_forked_child_does_not_take_its_parents_news(mine_read):
     _, status = os.waitpid(pid, 0)
     assert os.waitstatus_to_exitcode(status) == 0
     assert bouncelab.run(preset="mine").k_r == 9e4
+
+
+def test_a_bad_preset_file_is_warned_of_as_the_command_line_warns(presets_folder):
+    # the command line warns of each file of the presets folder it skips, one line on stderr,
+    # and runs; the package skipped them silently. Asked for by name, the file's error ends
+    # the call (exit 2 there), the other bad file warned of first
+    (presets_folder / "broken.toml").write_text('name = "x"\n[measured\n')
+    (presets_folder / "bad.toml").write_text('name = "bad"\nmass = [\n')
+    (presets_folder / "mine.toml").write_text(mine())
+    prefix = "bouncelab: warning: "
+    code, _, err = cli("run", "--preset", "mine")
+    assert code == 0 and err.startswith(prefix), err
+    said = [line[len(prefix):] for line in err.splitlines()]
+    assert len(said) == 2 and "bad.toml:" in said[0] and "broken.toml:2:" in said[1], said
+
+    def warned(call):
+        """The UserWarnings `call` gives, and the ValueError it raises (None if none)."""
+        error = None
+        with warnings.catch_warnings(record=True) as w:
+            warnings.simplefilter("always")
+            try:
+                call()
+            except ValueError as e:
+                error = str(e)
+        return [str(x.message) for x in w if x.category is UserWarning], error
+
+    assert warned(lambda: bouncelab.run(preset="mine")) == (said, None)
+    assert warned(lambda: bouncelab.run(preset="mine", k_p=6e4)) == (said, None)
+    assert warned(bouncelab.presets) == (said, None)
+    code, _, err = cli("run", "--preset", "broken")
+    lines = err.splitlines()
+    assert code == 2 and len(lines) == 2 and lines[0] == prefix + said[0], err
+    error = lines[1].removeprefix("bouncelab: error: ")
+    assert warned(lambda: bouncelab.run(preset="broken")) == (said[:1], error)
+    assert warned(lambda: bouncelab.run(preset="broken", k_p=6e4)) == (said[:1], error)

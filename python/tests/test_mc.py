@@ -7,14 +7,15 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from cli_binary import cli
+from cli_binary import as_package, cli
 
 import bouncelab
 
 
 def answer(out):
-    """The command line's JSON, every key (its `ball` object and `conditions` included)."""
-    return json.loads(out)
+    """The command line's JSON, every key (its `ball` object and `conditions` included), as the
+    package holds it."""
+    return as_package(json.loads(out))
 
 
 ROOT = Path(__file__).resolve().parents[2]

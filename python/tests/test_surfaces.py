@@ -61,6 +61,29 @@ def test_every_answer_names_the_rigid_plate_by_default():
     assert o.surface == dict(want, friction=0.5, overrides=["friction"])
 
 
+def test_the_rigid_plate_is_the_same_dict_in_every_answer():
+    # the answers that take no surface ran on the rigid plate: its infinite K_s and M are inf
+    # in each, as in run's (batch, monte_carlo and fit_oblique gave None, their dicts read
+    # from the command line's JSON, where ∞ is null); inf, a number, also goes back in as
+    # surface= (None is refused there)
+    from test_batch import LOT7
+    from test_fit_oblique import bounces
+
+    plate = bouncelab.run(preset="tennis").surface
+    answers = {
+        "static": bouncelab.static("tennis", load_kg=8.165),
+        "fit": bouncelab.fit(0.5, preset="baseball", v0=30.0),
+        "sweep_velocity": bouncelab.sweep_velocity("tennis", speeds=[2.0, 5.0]),
+        "batch": bouncelab.batch(LOT7, preset="tennis"),
+        "monte_carlo": bouncelab.monte_carlo(preset="golf", vary="k_p=5%", samples=50),
+        "fit_oblique": bouncelab.fit_oblique(preset="tennis", **bounces()),
+    }
+    for name, answer in answers.items():
+        assert answer["surface"] == plate, (name, answer["surface"])
+    again = {k: answers["batch"]["surface"][k] for k in ("stiffness", "mass")}
+    assert bouncelab.run(preset="tennis", surface=again).cor == bouncelab.run(preset="tennis").cor
+
+
 def test_run_on_a_surface_that_gives_is_the_command_lines():
     # before: run() had no surface= (a TypeError), and its answer no surface
     r = bouncelab.run(preset="tennis", surface={"stiffness": 1e6, "damping": 20.0})

@@ -176,7 +176,7 @@ pub fn run(a: &ShotArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         )?,
         TextJsonCsv::Csv if !shot.trajectory.is_empty() => trajectory_csv(&mut report, &shot)?,
         TextJsonCsv::Csv => bounces_csv(&mut report, &shot)?,
-        TextJsonCsv::Text => text(&mut report, (&ball, &surface), &spec, &shot)?,
+        TextJsonCsv::Text => text(&mut report, (&ball, &surface), &spec, &shot, a.after_bounce)?,
     }
     report_then_commit(out, &report, files)?;
     // the net's warning belongs to no CSV row: on stderr, as a time series' (`run --history`)
@@ -298,6 +298,7 @@ fn text(
     (ball, surface): (&Ball, &SurfaceUsed),
     spec: &ShotSpec,
     s: &ShotReport,
+    after_bounce: Option<f64>,
 ) -> std::io::Result<()> {
     writeln!(out, "{}: {}", ball.label(), title(spec))?;
     ran_lines(out, ball, surface, &s.aero)?;
@@ -346,10 +347,15 @@ fn text(
         writeln!(out, "{}", super::shot_net::line(n))?;
     }
     let e = s.end.state;
-    let why = match s.end.reason {
-        crate::flight::EndReason::Landing => "lands",
-        crate::flight::EndReason::Distance => "reaches the distance",
-        crate::flight::EndReason::Time => "reaches the time",
+    let why = match (s.end.reason, after_bounce) {
+        (crate::flight::EndReason::Landing, _) => "lands".into(),
+        // the distance --after-bounce stood for, past the last bounce (`past_bounce` refused a
+        // shot that passes it before)
+        (crate::flight::EndReason::Distance, Some(d)) => {
+            format!("{} m past bounce {}", given(d, 6), s.bounces.len())
+        }
+        (crate::flight::EndReason::Distance, None) => "reaches the distance".into(),
+        (crate::flight::EndReason::Time, _) => "reaches the time".into(),
     };
     writeln!(
         out,

@@ -222,3 +222,26 @@ fn after_bounce_is_the_distance_past_the_bounce() {
         ],
     );
 }
+
+/// The text's end line says why the shot ended as it was asked to: `--after-bounce D` ends D m
+/// past the last bounce (no distance was given), `--distance` where x reaches it. Fails on the
+/// old code: "end (reaches the distance)" for both.
+#[test]
+fn the_end_line_names_the_after_bounce() {
+    let end = |extra: &str| {
+        let mut args = common::argv(SERVE);
+        args.extend(common::argv(extra));
+        let text = common::ok_calibrated(&args);
+        let line = text
+            .lines()
+            .find(|l| l.starts_with("end ("))
+            .map(str::to_string);
+        line.unwrap_or_else(|| panic!("{extra}: no end line in {text}"))
+    };
+    let once = end("--after-bounce 1");
+    assert!(once.starts_with("end (1 m past bounce 1): "), "{once}");
+    let twice = end("--bounces 2 --after-bounce 0.5");
+    assert!(twice.starts_with("end (0.5 m past bounce 2): "), "{twice}");
+    let at = end("--distance 20");
+    assert!(at.starts_with("end (reaches the distance): "), "{at}");
+}

@@ -9,6 +9,7 @@ mod common;
 mod tui_common;
 
 mod figure_map_radius;
+mod figure_measured_once;
 mod figure_numbers;
 mod figure_placement;
 mod figure_radius;

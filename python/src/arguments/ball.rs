@@ -123,7 +123,7 @@ fn overridden_ball(
     v0: Option<f64>,
     set: &Overrides,
 ) -> PyResult<Ball> {
-    let cat = load_catalog()?;
+    let cat = load_catalog(Some(preset))?;
     let entry = entry(&cat, preset)?;
     let params = params.map(source).transpose()?;
     let law_ = law_name.map(law).transpose()?;

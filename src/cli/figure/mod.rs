@@ -318,16 +318,17 @@ fn build(a: &FigureArgs) -> anyhow::Result<Figure> {
 
 /// `build`, with the `--measured` files drawn on it (against the ball's m and v0).
 fn build_all(a: &FigureArgs) -> anyhow::Result<Figure> {
-    // the files are read before any solving: a bad file fails fast
-    for path in &a.measured {
-        super::measured_file::any(path)?;
-    }
+    // the files are read before any solving, once: a bad file fails fast, and what is drawn
+    // is what was checked
+    let measured = (a.measured.iter())
+        .map(|path| Ok((path.as_path(), super::measured_file::any(path)?)))
+        .collect::<anyhow::Result<Vec<_>>>()?;
     super::budget::stop_if_interrupted()?;
     let mut fig = build(a)?;
     if !a.measured.is_empty() {
         super::budget::stop_if_interrupted()?;
         let (b, _) = balls::one_ball(a, &a.ball)?;
-        overlay::add_measured(&mut fig, a.name, &a.measured, b.params.mass, b.params.v0)?;
+        overlay::add_measured(&mut fig, a.name, &measured, b.params.mass, b.params.v0)?;
     }
     super::budget::stop_if_interrupted()?;
     Ok(fig)

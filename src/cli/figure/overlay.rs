@@ -37,17 +37,16 @@ fn points(name: FigureName, data: &Data, mass: f64, v0: f64) -> Result<Vec<(f64,
     }
 }
 
-/// Add each `--measured` file's points to `fig`, labelled by the file name.
+/// Add each `--measured` file's points (its data as read) to `fig`, labelled by the file name.
 pub fn add_measured(
     fig: &mut Figure,
     name: FigureName,
-    files_given: &[std::path::PathBuf],
+    measured: &[(&Path, Data)],
     mass: f64,
     v0: f64,
 ) -> anyhow::Result<()> {
-    for (i, path) in files_given.iter().enumerate() {
-        let data = files::any(path)?;
-        let pts = points(name, &data, mass, v0)
+    for (i, (path, data)) in measured.iter().enumerate() {
+        let pts = points(name, data, mass, v0)
             .map_err(|m| anyhow::anyhow!("--measured {}: {m}", path.display()))?;
         let label = files::label(path);
         let id = format!("measured {}", label.replace(',', "_"));
