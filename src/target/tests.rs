@@ -5,19 +5,19 @@ use super::*;
 use crate::api::Ball;
 use crate::model::params::Field;
 
-fn preset(name: &str) -> ImpactParams {
+pub(super) fn preset(name: &str) -> ImpactParams {
     Ball::from_preset(name).unwrap().params
 }
 
 /// The preset `name` without flattening (z_p = ∞): on the linear law, the exact flow's ball.
-fn unflattened(name: &str) -> ImpactParams {
+pub(super) fn unflattened(name: &str) -> ImpactParams {
     ImpactParams {
         z_p: f64::INFINITY,
         ..preset(name)
     }
 }
 
-fn rel(a: f64, b: f64) -> f64 {
+pub(super) fn rel(a: f64, b: f64) -> f64 {
     (a - b).abs() / b.abs().max(1e-300)
 }
 

@@ -1,7 +1,8 @@
 //! The ball of benches/fit.rs's force–time trace, the fit's start from it and the trace's
-//! noise, shared with tests/fit_memory.rs, which reads and fits a dense trace of the same
-//! ball, and with the binned fit's tests (src/analysis/fit/bins.rs); all by `#[path]`, as
-//! force.rs beside it.
+//! noise, shared by `#[path]` (as force.rs beside it) with tests/fit_memory.rs, which reads
+//! and fits a dense trace of the same ball, and with the binned fit's tests
+//! (src/analysis/fit/bins.rs); the fit tests' ball (`fit_common::truth`) is it with a finite
+//! z_p.
 #![allow(dead_code)]
 
 use bouncelab::ImpactParams;
