@@ -7,11 +7,11 @@ mod common;
 // the trace read between the solver's samples, as the fit tests read it
 #[path = "../tests/support/fit_common/force.rs"]
 mod force;
-// the trace's ball and the fit's start, as tests/fit_memory.rs fits them
+// the trace's ball, the fit's start and the noise, as tests/fit_memory.rs fits them
 #[path = "../tests/support/fit_common/bench_ball.rs"]
 mod bench_ball;
 
-use bench_ball::{start, truth};
+use bench_ball::{normals, start, truth};
 use bouncelab::ContactLaw;
 use bouncelab::analysis::fit::{FitData, Param, fit};
 use bouncelab::measured::Trace;
@@ -39,17 +39,7 @@ fn dense_csv(rows: usize, dt: f64) -> String {
     .unwrap();
     let h = &r.history;
     let tf = *h.t.last().unwrap();
-    let mut state = 12345u64;
-    let mut normal = || {
-        let mut u = || {
-            state = state
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            ((state >> 11) as f64 + 0.5) / (1u64 << 53) as f64
-        };
-        let (a, b) = (u(), u());
-        (-2.0 * a.ln()).sqrt() * (std::f64::consts::TAU * b).cos()
-    };
+    let mut normal = normals(12345);
     let mut text = String::from("time_s,force_N\n");
     for i in 0..rows {
         let t = -1.7e-3 + i as f64 * dt;

@@ -126,7 +126,6 @@ pub use oblique::{CourtPace, ObliqueSpec, SOLID_INERTIA_FACTOR};
 pub use oblique_fit::{ObliqueFitReport, is_data_error as is_oblique_data_error};
 pub use reach::{
     Reach, centre_bounds, displacement_warning, indentation_warning, peak_displacement, reach,
-    reach_warning,
 };
 pub use report::{BallHeader, Energy, FitReport, ImpactReport, MeasuredAt};
 pub use rows::{ImpactRow, Rest, impact_row, impact_rows};

@@ -69,6 +69,11 @@
 // application's modules (`cli`, `tui`, …) are `#[doc(hidden)]`, which the lint skips.
 #![warn(missing_docs)]
 
+// the test-support files the unit tests share by `#[path]` with the tests and benches name
+// the crate as they do (src/analysis/fit/bins.rs)
+#[cfg(test)]
+extern crate self as bouncelab;
+
 pub mod analysis;
 pub mod api;
 #[cfg(feature = "tui")]

@@ -28,6 +28,19 @@ pub struct Outcome {
     pub contact_time: f64,
 }
 
+impl Outcome {
+    /// The normalized summary `s` of the ball `p` in SI, as the Monte Carlo scales it:
+    /// F = F̄ m v0 ω0, t = τ/ω0.
+    pub fn in_si(p: &ImpactParams, s: &Summary) -> Outcome {
+        let w0 = p.omega0();
+        Outcome {
+            cor: s.cor,
+            max_force: s.max_force * p.mass * p.v0 * w0,
+            contact_time: s.contact_time / w0,
+        }
+    }
+}
+
 /// One impact as `bouncelab run` solves it (COR, F_m, t_f): [`impacts`]' lane 0 with `p` in
 /// every lane, so that a ball's answer is the same alone as in any group of four.
 pub fn impact(p: &ImpactParams, law: ContactLaw) -> Result<Outcome, SolveError> {
@@ -81,20 +94,10 @@ pub fn impacts(
                 max_force: max_force[k],
                 contact_time: contact_time[k],
             }),
-            (_, Some(s)) => Ok(in_si(p, &s)),
+            (_, Some(s)) => Ok(Outcome::in_si(p, &s)),
             _ => one_by_one(p, law),
         })
     })
-}
-
-/// A normalized summary in SI: F = F̄ m v0 ω0, t = τ/ω0.
-fn in_si(p: &ImpactParams, s: &Summary) -> Outcome {
-    let w0 = p.omega0();
-    Outcome {
-        cor: s.cor,
-        max_force: s.max_force * p.mass * p.v0 * w0,
-        contact_time: s.contact_time / w0,
-    }
 }
 
 /// [`impacts`] of each group of balls, the same answers: under the Hertz and elastic–plastic
@@ -118,7 +121,7 @@ pub fn impacts_of_groups(
     let solve = |p: &ImpactParams, s: Option<crate::solver::taylor::Summary>| match s
         .filter(|t| t.cor > 0.0)
     {
-        Some(t) => Ok(in_si(p, &short(t))),
+        Some(t) => Ok(Outcome::in_si(p, &short(t))),
         None => solver_outcome(p, law),
     };
     groups
@@ -135,7 +138,7 @@ pub fn impacts_of_groups(
 /// F = F̄ m v0 ω0 and t = τ/ω0, else `run`'s solver.
 fn one_by_one(p: &ImpactParams, law: ContactLaw) -> Result<Outcome, SolveError> {
     if let Some(s) = fast_one(p, law) {
-        return Ok(in_si(p, &s));
+        return Ok(Outcome::in_si(p, &s));
     }
     solver_outcome(p, law)
 }

@@ -34,7 +34,7 @@ pub struct CollisionReport {
     /// Ball on ball: the pair's effective radius R_eff = R1 R2/(R1 + R2) (m).
     pub effective_radius: Option<f64>,
     /// What the caller should know about this answer: the ball's peak indentation, or its own
-    /// compression α = z + y, beyond its radius ([`super::reach_warning`]); `[]` when nothing.
+    /// compression α = z + y, beyond its radius ([`super::Reach::warning`]); `[]` when nothing.
     pub warnings: Vec<String>,
 }
 
@@ -219,7 +219,7 @@ impl Ball {
     /// The warning of `c`, this ball's collision at `ball_speed` with `target`: its peak
     /// indentation, else the ball's own compression α = z + y, beyond its radius. On a rigid
     /// target the relative motion is the ball's impact at the reduced mass and the closing
-    /// speed (`target::collide`), whose α_max [`super::reach_warning`] reads exactly; on a
+    /// speed (`target::collide`), whose α_max [`super::Reach::warning`] reads exactly; on a
     /// compliant one the ball's compression is the chain's minus the surface's deflection
     /// (docs/targets.md §2), read off 4 001 samples of the run (`target::history`: a value from
     /// below, as the explorer's), unless α ≤ v_c t_f (α'' ≤ 0) keeps it within the radius.
@@ -233,7 +233,8 @@ impl Ball {
         };
         if target.is_rigid() || c.max_indentation > radius || c.closing_speed * duration <= radius {
             let z_m = c.max_indentation;
-            return super::reach_warning(&reduced, self.law, c.method, z_m, duration, radius);
+            return super::reach(&reduced, self.law, c.method, z_m, duration, radius)?
+                .warning(radius);
         }
         let h = crate::target::history(&self.params, self.law, target, ball_speed, 4001);
         match h {

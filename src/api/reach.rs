@@ -57,30 +57,6 @@ pub fn peak_displacement(
     })
 }
 
-/// The warning of an impact of `params` reaching past the ball's `radius` (m): its peak
-/// indentation `z_m` ([`indentation_warning`]), else the peak displacement of its centre
-/// ([`displacement_warning`]); `duration` the time it was followed (s). α = z + y ≥ z (the
-/// recoil element only compresses: c y' + K_r y = F ≥ 0 from y = 0), so a z_m past R is
-/// an α_max past R too, and one warning says it; and α_max ≤ min(v0 · duration, z_m + m v0/c)
-/// (`centre_bounds`), which spares the second run whenever that is within R.
-/// tests/cli/answer_warnings.rs.
-pub fn reach_warning(
-    params: &ImpactParams,
-    law: ContactLaw,
-    method: Method,
-    z_m: f64,
-    duration: f64,
-    radius: f64,
-) -> Option<String> {
-    Some(match reach(params, law, method, z_m, duration, radius)? {
-        Reach::Indentation(z_m) => indentation_warning(z_m, radius)?,
-        Reach::Displacement(alpha) => displacement_warning(alpha, radius)?,
-        Reach::Unchecked(e) => {
-            format!("the ball's peak displacement could not be checked against its radius: {e}")
-        }
-    })
-}
-
 /// How an impact reaches past the ball's radius ([`reach`]).
 #[derive(Debug, Clone, PartialEq)]
 pub enum Reach {
@@ -92,9 +68,28 @@ pub enum Reach {
     Unchecked(BallError),
 }
 
-/// Whether an impact reaches past the ball's `radius` (m), and how: [`reach_warning`]'s
-/// test, for a caller that words it its own way (a figure's note, `figure::history`).
-/// `None` within, or with no radius known (NaN).
+impl Reach {
+    /// The warning of this reach past a ball of `radius` (m), as `run` gives it: the peak
+    /// indentation's ([`indentation_warning`]), else the centre's ([`displacement_warning`]),
+    /// one warning for both (a z_m past R is an α_max past R too).
+    pub fn warning(self, radius: f64) -> Option<String> {
+        Some(match self {
+            Reach::Indentation(z_m) => indentation_warning(z_m, radius)?,
+            Reach::Displacement(alpha) => displacement_warning(alpha, radius)?,
+            Reach::Unchecked(e) => {
+                format!("the ball's peak displacement could not be checked against its radius: {e}")
+            }
+        })
+    }
+}
+
+/// Whether an impact of `params` reaches past the ball's `radius` (m), and how: its peak
+/// indentation `z_m`, else the peak displacement of its centre; `duration` the time it was
+/// followed (s). α = z + y ≥ z (the recoil element only compresses: c y' + K_r y = F ≥ 0 from
+/// y = 0), so a z_m past R is an α_max past R too; and α_max ≤ min(v0 · duration,
+/// z_m + m v0/c) (`centre_bounds`), which spares the second run whenever that is within R.
+/// `None` within, or with no radius known (NaN). [`Reach::warning`] words it as `run` warns of
+/// it; a figure's note (`figure::history`) its own way. tests/cli/answer_warnings.rs.
 pub fn reach(
     params: &ImpactParams,
     law: ContactLaw,

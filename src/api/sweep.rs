@@ -43,7 +43,7 @@ impl Ball {
     }
 
     /// The warning of one `row` of this ball's speed sweep: its reach past the radius
-    /// ([`super::reach_warning`], the ball at the row's speed), as `run` warns of it — the
+    /// ([`super::Reach::warning`], the ball at the row's speed), as `run` warns of it — the
     /// command line's `sweep velocity` rows and Python's `sweep_velocity` alike.
     pub fn velocity_row_warning(&self, row: &VelocityPoint) -> Option<String> {
         let params = crate::ImpactParams {
@@ -56,7 +56,8 @@ impl Ball {
         };
         let duration = row.contact_time.unwrap_or(f64::INFINITY);
         let z_m = row.max_indentation;
-        super::reach_warning(&params, self.law, method, z_m, duration, self.radius())
+        let radius = self.radius();
+        super::reach(&params, self.law, method, z_m, duration, radius)?.warning(radius)
     }
 
     /// Every warning of a `sweep velocity` row: [`Ball::velocity_row_warning`], then the

@@ -3,7 +3,7 @@
 //! a `warning:` line in text, and the explorer's readout.
 
 use super::map_reach::cell_indentation;
-use super::reach::reach_warning;
+use super::reach::reach;
 use super::{Ball, BallError};
 use crate::solver::ImpactResponse;
 use crate::text::{number, short, sig};
@@ -52,7 +52,7 @@ impl Ball {
     }
 
     /// The warnings of an impact `r` of this ball: an indentation or its centre's displacement
-    /// beyond its radius ([`reach_warning`]), an energy balance that does not close.
+    /// beyond its radius ([`super::Reach::warning`]), an energy balance that does not close.
     ///
     /// ```
     /// let b = bouncelab::Ball::from_preset("superball")?;
@@ -68,10 +68,10 @@ impl Ball {
     /// ```
     pub fn warnings(&self, r: &ImpactResponse) -> Vec<String> {
         let (z_m, radius) = (r.max_indentation, self.radius());
-        let mut w: Vec<String> =
-            reach_warning(&self.params, r.law, r.method, z_m, r.duration, radius)
-                .into_iter()
-                .collect();
+        let mut w: Vec<String> = reach(&self.params, r.law, r.method, z_m, r.duration, radius)
+            .and_then(|how| how.warning(radius))
+            .into_iter()
+            .collect();
         if let Some(e) = &r.energy {
             let residual = e.relative_residual();
             if residual.abs() > ENERGY_RESIDUAL_MAX {

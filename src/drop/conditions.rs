@@ -23,6 +23,25 @@ pub struct TestConditions {
 /// 1 psi, Pa (NIST SP 811, B.8), for the pressures printed in psi.
 const PSI: f64 = crate::conditions::pressure::PSI;
 
+/// A WSF squash ball's conditions at its test temperature `$c` (°C): the standard `wsf-$c`,
+/// conditioned to `$c`, not pressurized.
+macro_rules! squash {
+    ($c:literal) => {
+        TestConditions {
+            standard: concat!("wsf-", $c),
+            temperature_c: Some([$c as f64, 0.0]),
+            pressure_gauge_pa: None,
+            source: concat!(
+                "World Squash Federation, Specifications for Squash Balls: the ball conditioned \
+                 to ",
+                $c,
+                " °C (no tolerance stated in the sources used); a squash ball is not \
+                 pressurized"
+            ),
+        }
+    };
+}
+
 /// Every standard's conditions that a source states (docs/drop.md, "Conditions").
 pub const TEST_CONDITIONS: [TestConditions; 7] = [
     TestConditions {
@@ -33,20 +52,16 @@ pub const TEST_CONDITIONS: [TestConditions; 7] = [
                  20 ± 2 °C, 60 ± 5 % RH, 102 ± 3 kPa atmosphere; the ball's own pressure is \
                  not specified (the rules test its deformation and rebound)",
     },
-    TestConditions {
-        standard: "fifa-quality",
-        temperature_c: Some([20.0, 2.0]),
-        pressure_gauge_pa: Some([80_000.0, 80_000.0]),
-        source: "FIFA Quality Programme for Footballs as licensees publish it (derbystar.de, \
-                 \"FIFA Quality Pro\"): 0.8 bar, 20 °C; the ± 2 °C is the pressure-loss test's",
-    },
-    TestConditions {
-        standard: "fifa-quality-pro",
-        temperature_c: Some([20.0, 2.0]),
-        pressure_gauge_pa: Some([80_000.0, 80_000.0]),
-        source: "FIFA Quality Programme for Footballs as licensees publish it (derbystar.de, \
-                 \"FIFA Quality Pro\"): 0.8 bar, 20 °C; the ± 2 °C is the pressure-loss test's",
-    },
+    fifa(
+        "fifa-quality",
+        "FIFA Quality Programme for Footballs as licensees publish it (derbystar.de, \
+         \"FIFA Quality Pro\"): 0.8 bar, 20 °C; the ± 2 °C is the pressure-loss test's",
+    ),
+    fifa(
+        "fifa-quality-pro",
+        "FIFA Quality Programme for Footballs as licensees publish it (derbystar.de, \
+         \"FIFA Quality Pro\"): 0.8 bar, 20 °C; the ± 2 °C is the pressure-loss test's",
+    ),
     TestConditions {
         standard: "fiba",
         temperature_c: None,
@@ -55,30 +70,25 @@ pub const TEST_CONDITIONS: [TestConditions; 7] = [
                  ball is inflated so that it rebounds in the window (no number); 7.5–8.5 psi is \
                  the range printed on size-7 balls; no temperature is stated",
     },
+    squash!(23),
+    squash!(45),
+    fifa(
+        "fifa-pressure-loss",
+        "FIFA Quality Programme for Footballs, loss of pressure, as licensees publish it \
+         (derbystar.de): inflated to 0.8 bar, kept 72 h at 20 ± 2 °C",
+    ),
+];
+
+/// A FIFA test's conditions: 0.8 bar at 20 ± 2 °C (the Quality Programme's classes and its
+/// pressure-loss test alike), as `source` words it.
+const fn fifa(standard: &'static str, source: &'static str) -> TestConditions {
     TestConditions {
-        standard: "wsf-23",
-        temperature_c: Some([23.0, 0.0]),
-        pressure_gauge_pa: None,
-        source: "World Squash Federation, Specifications for Squash Balls: the ball conditioned \
-                 to 23 °C (no tolerance stated in the sources used); a squash ball is not \
-                 pressurized",
-    },
-    TestConditions {
-        standard: "wsf-45",
-        temperature_c: Some([45.0, 0.0]),
-        pressure_gauge_pa: None,
-        source: "World Squash Federation, Specifications for Squash Balls: the ball conditioned \
-                 to 45 °C (no tolerance stated in the sources used); a squash ball is not \
-                 pressurized",
-    },
-    TestConditions {
-        standard: "fifa-pressure-loss",
+        standard,
         temperature_c: Some([20.0, 2.0]),
         pressure_gauge_pa: Some([80_000.0, 80_000.0]),
-        source: "FIFA Quality Programme for Footballs, loss of pressure, as licensees publish \
-                 it (derbystar.de): inflated to 0.8 bar, kept 72 h at 20 ± 2 °C",
-    },
-];
+        source,
+    }
+}
 
 /// The conditions of the standard `name`: its entry, or one that says the rule states none
 /// (ITTF's, MLB's, the NCAA's and the softball classes' in the sources used).

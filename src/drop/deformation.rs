@@ -115,17 +115,6 @@ impl DeformationStandard {
     /// ball without a recoil spring).
     pub fn judge(&self, ball: &DropBall) -> Option<Verdict> {
         let d = self.deflection(ball, ball.law).forward.ok()?.diameter();
-        let [lo, hi] = self.window;
-        let margin = [lo.map(|l| d - l), hi.map(|h| h - d)]
-            .into_iter()
-            .flatten()
-            .fold(f64::INFINITY, f64::min);
-        Some(Verdict {
-            name: self.name,
-            window: self.window,
-            measured: d,
-            pass: margin >= 0.0,
-            margin,
-        })
+        Some(Verdict::of(self.name, self.window, d))
     }
 }

@@ -60,25 +60,27 @@ pub enum Test {
     },
 }
 
-/// One governing body's test and its window.
+/// One governing body's test and its window: a ball standard's ([`Test`]), or a bat
+/// standard's (`T` = [`crate::target::bat::BatTest`]).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
-pub struct Standard {
-    /// Short name for `--standard`.
+pub struct Standard<T = Test> {
+    /// Short name (`--standard NAME` for a ball standard).
     pub name: &'static str,
     /// The governing body and the test, as the text output heads it.
     pub title: &'static str,
     /// The test and its conditions.
-    pub test: Test,
+    pub test: T,
     /// Surface the ball hits.
     pub surface: &'static str,
     /// [lo, hi] of the measured value; `None` where the standard sets no bound.
     pub window: [Option<f64>; 2],
-    /// Where the numbers come from (docs/drop.md cites each in full).
+    /// Where the numbers come from (docs/drop.md and docs/targets.md cite each in full).
     pub source: &'static str,
     /// What could not be confirmed from a public source, if anything.
     pub unconfirmed: Option<&'static str>,
-    /// The embedded presets that pass this standard (`bouncelab drop --preset BALL --standard
-    /// NAME`: tests/physics/standards.rs, `every_standard_names_a_ball_that_passes_it`).
+    /// The embedded presets it is the ball of; a ball standard's pass it (`bouncelab drop
+    /// --preset BALL --standard NAME`: tests/physics/standards.rs,
+    /// `every_standard_names_a_ball_that_passes_it`).
     pub balls: &'static [&'static str],
 }
 
@@ -317,6 +319,25 @@ pub struct Verdict {
     pub margin: f64,
 }
 
+impl Verdict {
+    /// The verdict of the standard `name` on `measured` against its `window`: the margin is
+    /// the distance to the nearer bound.
+    pub fn of(name: &'static str, window: [Option<f64>; 2], measured: f64) -> Verdict {
+        let [lo, hi] = window;
+        let margin = [lo.map(|l| measured - l), hi.map(|h| h - measured)]
+            .into_iter()
+            .flatten()
+            .fold(f64::INFINITY, f64::min);
+        Verdict {
+            name,
+            window,
+            measured,
+            pass: margin >= 0.0,
+            margin,
+        }
+    }
+}
+
 impl Standard {
     /// Release height of the bottom of the ball (m) for a drop test.
     pub fn release_height(&self, radius: f64) -> Option<f64> {
@@ -330,18 +351,7 @@ impl Standard {
 
     /// The verdict on a measured value: the margin is the distance to the nearer bound.
     pub fn judge_value(&self, measured: f64) -> Verdict {
-        let [lo, hi] = self.window;
-        let margin = [lo.map(|l| measured - l), hi.map(|h| h - measured)]
-            .into_iter()
-            .flatten()
-            .fold(f64::INFINITY, f64::min);
-        Verdict {
-            name: self.name,
-            window: self.window,
-            measured,
-            pass: margin >= 0.0,
-            margin,
-        }
+        Verdict::of(self.name, self.window, measured)
     }
 
     /// Run this standard's test on `ball` in `air` (`None`: vacuum; a COR test reads the speeds

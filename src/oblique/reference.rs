@@ -12,12 +12,10 @@ use super::tangential::Mode;
 use super::{NormalMotion, Oblique, ObliqueError, Scaled, prepare};
 use crate::model::contact::ContactLaw;
 use crate::model::params::ImpactParams;
-use crate::solver::dop853::{self, EndState};
+use crate::solver::dop853;
+use crate::solver::each_step::{EachStep, EndState};
 use crate::solver::roots::brent;
-use differential_equations::interpolate::Interpolation;
 use differential_equations::ode::ODE;
-use differential_equations::prelude::{ControlFlag, Solout};
-use differential_equations::solution::Solution;
 
 type X = [f64; 3];
 
@@ -83,51 +81,41 @@ struct Watcher<'a, 'b, P: NormalMotion> {
     last: (f64, X),
 }
 
-impl<P: NormalMotion> Solout<f64, X> for Watcher<'_, '_, P> {
-    fn solout<I>(
+impl<P: NormalMotion> EachStep<X> for Watcher<'_, '_, P> {
+    fn watch(
         &mut self,
-        t_curr: f64,
-        t_prev: f64,
-        y_curr: &X,
-        y_prev: &X,
-        interp: &mut I,
-        _s: &mut Solution<f64, X>,
-    ) -> ControlFlag<f64, X>
-    where
-        I: Interpolation<f64, X> + ?Sized,
-    {
+        (t_prev, y_prev): (f64, &X),
+        (t_curr, y_curr): (f64, &X),
+        at: &mut impl FnMut(f64) -> X,
+    ) -> bool {
         self.last = (t_curr, *y_curr);
         // the integrator's first call, at the start itself: nothing has moved (with a dashpot
         // the trial force k̃ũ + c̃ṽ_c there is 0 only to rounding, which marks no switch)
         if t_curr <= t_prev {
-            return ControlFlag::Continue;
+            return false;
         }
         let mut ta = t_prev;
         for j in 1..=5 {
             let t = t_prev + (t_curr - t_prev) * j as f64 / 5.0;
-            let x = if j == 5 {
-                *y_curr
-            } else {
-                interp.interpolate(t).unwrap_or(*y_curr)
-            };
+            let x = if j == 5 { *y_curr } else { at(t) };
             let g = self.sys.switch(t, &x);
             // a function not yet negative since the phase began marks no switch (as in
             // `tangential`: the modes agree there to second order)
             if g > 0.0 && self.armed {
                 self.hit = Some(((t_prev, *y_prev), ta, t));
-                return ControlFlag::Terminate;
+                return true;
             }
             if g < 0.0 {
                 self.armed = true;
                 ta = t;
             }
         }
-        ControlFlag::Continue
+        false
     }
 }
 
 /// One DOP853 run from (τ0, x0) to τ1 into `out`.
-fn run_to<P: NormalMotion, O: Solout<f64, X>>(
+fn run_to<P: NormalMotion, O: EachStep<X>>(
     sys: &Sys<'_, P>,
     (t0, x0): (f64, X),
     t1: f64,

@@ -10,7 +10,7 @@
 //!   force from the new x and the half-step v, v ← v + h a/2.
 //!
 //! A contact exists while the ball overlaps the wall (both codes); the COR is the speed out
-//! over v0. [`advised_step`] takes the largest h = t_c/N (t_c the model's contact time) for
+//! over v0. [`Stepper::advised_step`] takes the largest h = t_c/N (t_c the model's contact time) for
 //! which every phase of a dense set gives the target within a tolerance. The real codes
 //! reproduce these steppers to rounding (python/tests/test_exports_real.py runs them).
 
@@ -44,81 +44,75 @@ pub const PHASES: u32 = 32;
 const N_MIN: u32 = 20;
 const N_MAX: u32 = 100_000;
 
-/// The COR the scheme gives: the ball approaches at `v0` from a gap (2 + `phase`) v0 h;
-/// `accel(δ, δ̇)` is the wall's push per unit mass at indentation δ > 0 and indentation rate δ̇.
-/// `None` when it has not left the wall within 20 contact times of steps (`max_steps`).
-pub fn discrete_cor(
-    scheme: Scheme,
-    accel: &dyn Fn(f64, f64) -> f64,
-    v0: f64,
-    h: f64,
-    phase: f64,
-    max_steps: u64,
-) -> Option<f64> {
-    // x: the gap (negative = indentation δ = −x), v: the ball's velocity away from the wall
-    let (mut x, mut v) = ((2.0 + phase) * v0 * h, -v0);
-    let push = |x: f64, v: f64| if x < 0.0 { accel(-x, -v) } else { 0.0 };
-    let mut a = push(x, v);
-    let mut touched = false;
-    for _ in 0..max_steps {
-        match scheme {
-            Scheme::SymplecticEuler => {
-                a = push(x, v);
-                v += h * a;
-                x += h * v;
+/// A code's integrator on a law: `scheme` stepping a ball that approaches the wall at `v0`,
+/// `accel(δ, δ̇)` the wall's push per unit mass at indentation δ > 0 and indentation rate δ̇.
+#[derive(Clone, Copy)]
+pub struct Stepper<'a> {
+    /// How the code advances the ball.
+    pub scheme: Scheme,
+    /// The wall's push per unit mass, (δ, δ̇) ↦ a.
+    pub accel: &'a dyn Fn(f64, f64) -> f64,
+    /// The approach speed, m/s.
+    pub v0: f64,
+}
+
+impl Stepper<'_> {
+    /// The COR at step `h` with the ball approaching from a gap (2 + `phase`) v0 h; `None`
+    /// when it has not left the wall within `max_steps` steps.
+    pub fn cor(&self, h: f64, phase: f64, max_steps: u64) -> Option<f64> {
+        let (scheme, accel, v0) = (self.scheme, self.accel, self.v0);
+        // x: the gap (negative = indentation δ = −x), v: the ball's velocity away from the wall
+        let (mut x, mut v) = ((2.0 + phase) * v0 * h, -v0);
+        let push = |x: f64, v: f64| if x < 0.0 { accel(-x, -v) } else { 0.0 };
+        let mut a = push(x, v);
+        let mut touched = false;
+        for _ in 0..max_steps {
+            match scheme {
+                Scheme::SymplecticEuler => {
+                    a = push(x, v);
+                    v += h * a;
+                    x += h * v;
+                }
+                Scheme::VelocityVerlet => {
+                    v += 0.5 * h * a;
+                    x += h * v;
+                    a = push(x, v);
+                    v += 0.5 * h * a;
+                }
             }
-            Scheme::VelocityVerlet => {
-                v += 0.5 * h * a;
-                x += h * v;
-                a = push(x, v);
-                v += 0.5 * h * a;
+            touched |= x < 0.0;
+            if touched && x > 0.0 && v > 0.0 {
+                return Some(v / v0);
             }
         }
-        touched |= x < 0.0;
-        if touched && x > 0.0 && v > 0.0 {
-            return Some(v / v0);
-        }
+        None
     }
-    None
-}
 
-/// The worst |COR − target| over the phases, or `None` if some phase did not end.
-pub fn worst_over_phases(
-    scheme: Scheme,
-    accel: &dyn Fn(f64, f64) -> f64,
-    v0: f64,
-    h: f64,
-    n: u32,
-    target: f64,
-) -> Option<f64> {
-    let budget = 20 * u64::from(n) + 100;
-    (0..PHASES)
-        .map(|j| {
-            let phase = (f64::from(j) + 0.5) / f64::from(PHASES);
-            discrete_cor(scheme, accel, v0, h, phase, budget).map(|e| (e - target).abs())
-        })
-        .try_fold(0.0f64, |w, d| d.map(|d| w.max(d)))
-}
+    /// The worst |COR − target| over the phases at step `h` = t_c/`n`, each given 20 contact
+    /// times of steps; `None` if some phase did not end.
+    pub fn worst_over_phases(&self, h: f64, n: u32, target: f64) -> Option<f64> {
+        let budget = 20 * u64::from(n) + 100;
+        (0..PHASES)
+            .map(|j| {
+                let phase = (f64::from(j) + 0.5) / f64::from(PHASES);
+                self.cor(h, phase, budget).map(|e| (e - target).abs())
+            })
+            .try_fold(0.0f64, |w, d| d.map(|d| w.max(d)))
+    }
 
-/// The largest h = t_c/N, N = 20 · 1.25^j, at which every phase gives `target` within `tol`;
-/// `None` beyond N = 100 000 (then the snippet says no step was found).
-pub fn advised_step(
-    scheme: Scheme,
-    accel: &dyn Fn(f64, f64) -> f64,
-    v0: f64,
-    contact_time: f64,
-    target: f64,
-    tol: f64,
-) -> Option<Step> {
-    ladder().find_map(|n| {
-        let h = contact_time / f64::from(n);
-        let worst = worst_over_phases(scheme, accel, v0, h, n, target)?;
-        (worst <= tol).then_some(Step {
-            h,
-            per_contact: n,
-            worst,
+    /// The largest h = t_c/N, N = 20 · 1.25^j, at which every phase gives `target` within
+    /// `tol`; `None` beyond N = 100 000 (then the snippet says no step was found).
+    pub fn advised_step(&self, contact_time: f64, target: f64, tol: f64) -> Option<Step> {
+        ladder().find_map(|n| {
+            let h = contact_time / f64::from(n);
+            let worst = self.worst_over_phases(h, n, target)?;
+            (worst <= tol).then_some(Step {
+                h,
+                per_contact: n,
+                worst,
+            })
         })
-    })
+    }
 }
 
 /// The steps per contact time tried, coarsest first: 20, 25, 32, 40, … ≤ 100 000.
@@ -185,8 +179,13 @@ impl ExportSet {
         law: &dyn Fn(f64, f64) -> f64,
     ) -> Result<Option<Step>, PeerError> {
         let r = impact(model, ball, damping, 0)?;
+        let stepper = Stepper {
+            scheme,
+            accel: law,
+            v0: self.v0,
+        };
         Ok(r.contact_time
-            .and_then(|t_c| advised_step(scheme, law, self.v0, t_c, self.target_cor, STEP_TOL)))
+            .and_then(|t_c| stepper.advised_step(t_c, self.target_cor, STEP_TOL)))
     }
 }
 
@@ -198,8 +197,13 @@ mod tests {
     #[test]
     fn no_force_no_rebound() {
         let none = |_: f64, _: f64| 0.0;
-        for s in [Scheme::SymplecticEuler, Scheme::VelocityVerlet] {
-            assert_eq!(discrete_cor(s, &none, 1.0, 1e-3, 0.5, 10_000), None);
+        for scheme in [Scheme::SymplecticEuler, Scheme::VelocityVerlet] {
+            let s = Stepper {
+                scheme,
+                accel: &none,
+                v0: 1.0,
+            };
+            assert_eq!(s.cor(1e-3, 0.5, 10_000), None);
         }
     }
 
@@ -210,12 +214,17 @@ mod tests {
     fn undamped_spring_converges_to_one() {
         let spring = |d: f64, _: f64| 1.0e4 * d;
         let t_c = std::f64::consts::PI / 100.0;
-        for s in [Scheme::SymplecticEuler, Scheme::VelocityVerlet] {
-            let coarse = worst_over_phases(s, &spring, 1.0, t_c / 20.0, 20, 1.0).unwrap();
-            let fine = worst_over_phases(s, &spring, 1.0, t_c / 2000.0, 2000, 1.0).unwrap();
+        for scheme in [Scheme::SymplecticEuler, Scheme::VelocityVerlet] {
+            let s = Stepper {
+                scheme,
+                accel: &spring,
+                v0: 1.0,
+            };
+            let coarse = s.worst_over_phases(t_c / 20.0, 20, 1.0).unwrap();
+            let fine = s.worst_over_phases(t_c / 2000.0, 2000, 1.0).unwrap();
             assert!(
                 fine < 2e-3 && fine < coarse / 20.0,
-                "{s:?}: {coarse} → {fine}"
+                "{scheme:?}: {coarse} → {fine}"
             );
         }
     }
@@ -234,14 +243,21 @@ mod tests {
             (Scheme::SymplecticEuler, 2e-3),
             (Scheme::VelocityVerlet, 1e-3),
         ] {
-            let s = advised_step(scheme, &kv, 1.0, t_c, target, tol).unwrap();
+            let stepper = Stepper {
+                scheme,
+                accel: &kv,
+                v0: 1.0,
+            };
+            let s = stepper.advised_step(t_c, target, tol).unwrap();
             assert!(s.worst <= tol && s.per_contact > N_MIN, "{scheme:?} {s:?}");
             assert!((s.h * f64::from(s.per_contact) - t_c).abs() < 1e-15);
             let coarser = ladder().take_while(|&n| n < s.per_contact).last().unwrap();
             let h = t_c / f64::from(coarser);
-            let w = worst_over_phases(scheme, &kv, 1.0, h, coarser, target).unwrap();
+            let w = stepper.worst_over_phases(h, coarser, target).unwrap();
             assert!(w > tol, "{scheme:?}: N = {coarser} already holds ({w})");
-            let fine = worst_over_phases(scheme, &kv, 1.0, t_c / 5e4, 50_000, target).unwrap();
+            let fine = stepper
+                .worst_over_phases(t_c / 5e4, 50_000, target)
+                .unwrap();
             assert!(fine < 2e-5, "{scheme:?}: {fine} at N = 50 000");
         }
     }

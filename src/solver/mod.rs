@@ -3,6 +3,9 @@
 
 pub mod audit;
 pub(crate) mod dop853;
+// the watchers' one solout, public for the tests' own integrations (tests/physics/flight.rs)
+#[doc(hidden)]
+pub mod each_step;
 pub mod exact;
 pub(crate) mod modes;
 pub mod numeric;

@@ -6,6 +6,7 @@
 //! (separation speed over closing speed). NCAA's certification allows at most 0.50.
 
 use super::{Collision, Target, collide};
+use crate::drop::standards::Standard;
 use crate::model::contact::ContactLaw;
 use crate::model::params::ImpactParams;
 use crate::solver::SolveError;
@@ -25,26 +26,8 @@ pub enum BatTest {
     },
 }
 
-/// One body's bat test and its window, laid out as [`crate::drop::standards::Standard`].
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
-pub struct BatStandard {
-    /// Short name.
-    pub name: &'static str,
-    /// The governing body and the test.
-    pub title: &'static str,
-    /// The test and its conditions.
-    pub test: BatTest,
-    /// What the ball hits.
-    pub surface: &'static str,
-    /// [lo, hi] of the measured value; `None` where unbounded.
-    pub window: [Option<f64>; 2],
-    /// Where the numbers come from (docs/targets.md cites it).
-    pub source: &'static str,
-    /// What could not be confirmed from a public source, if anything.
-    pub unconfirmed: Option<&'static str>,
-    /// The embedded presets it is the ball of.
-    pub balls: &'static [&'static str],
-}
+/// One body's bat test and its window.
+pub type BatStandard = Standard<BatTest>;
 
 /// The bat standards, as `bouncelab standards` lists them after the ball standards.
 pub const BAT_STANDARDS: [BatStandard; 1] = [BatStandard {

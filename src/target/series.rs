@@ -12,12 +12,10 @@
 //! (the turn; separation or reload), found by Brent on the dense output, the state there
 //! integrated to rather than read off it.
 
-use crate::solver::dop853::{self, EndState};
+use crate::solver::dop853;
+use crate::solver::each_step::{EachStep, EndState};
 use crate::solver::roots::first_rising;
-use differential_equations::interpolate::Interpolation;
 use differential_equations::ode::ODE;
-use differential_equations::prelude::{ControlFlag, Solout};
-use differential_equations::solution::Solution;
 
 /// State (z̄, ᾱ', ȳ, s̄).
 pub(super) type X = [f64; 4];
@@ -53,13 +51,7 @@ impl<S: Series> ODE<f64, X> for Motion<'_, S> {
 
 /// Integrate `series` from (`t0`, `x0`) to `tf`, every step handed to `out`; whether it got
 /// there within [`MAX_STEPS`] (nothing to do when `t0` is already at or past `tf`).
-fn integrate<S: Series, O: Solout<f64, X>>(
-    series: &S,
-    t0: f64,
-    x0: X,
-    tf: f64,
-    out: &mut O,
-) -> bool {
+fn integrate<S: Series, O: EachStep<X>>(series: &S, t0: f64, x0: X, tf: f64, out: &mut O) -> bool {
     t0 >= tf || dop853::run(&Motion(series), (t0, &x0), tf, (RTOL, MAX_STEPS), out)
 }
 
@@ -118,27 +110,18 @@ struct Watching<'w, W> {
     hit: Option<Hit>,
 }
 
-impl<W: Watch> Solout<f64, X> for Watching<'_, W> {
-    fn solout<I>(
+impl<W: Watch> EachStep<X> for Watching<'_, W> {
+    fn watch(
         &mut self,
-        t: f64,
-        t_prev: f64,
-        x: &X,
-        x_prev: &X,
-        interp: &mut I,
-        _s: &mut Solution<f64, X>,
-    ) -> ControlFlag<f64, X>
-    where
-        I: Interpolation<f64, X> + ?Sized,
-    {
-        let mut at = |tt: f64| interp.interpolate(tt).unwrap_or(*x);
-        match self.watch.step((t_prev, x_prev), (t, x), &mut at) {
-            Some((tc, i)) => {
-                self.hit = Some((tc, i, t_prev, *x_prev));
-                ControlFlag::Terminate
-            }
-            None => ControlFlag::Continue,
-        }
+        (t_prev, x_prev): (f64, &X),
+        end: (f64, &X),
+        at: &mut impl FnMut(f64) -> X,
+    ) -> bool {
+        let Some((tc, i)) = self.watch.step((t_prev, x_prev), end, at) else {
+            return false;
+        };
+        self.hit = Some((tc, i, t_prev, *x_prev));
+        true
     }
 }
 

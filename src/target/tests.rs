@@ -5,11 +5,19 @@ use super::*;
 use crate::api::Ball;
 use crate::model::params::Field;
 
-fn preset(name: &str) -> ImpactParams {
+pub(super) fn preset(name: &str) -> ImpactParams {
     Ball::from_preset(name).unwrap().params
 }
 
-fn rel(a: f64, b: f64) -> f64 {
+/// The preset `name` without flattening (z_p = ∞): on the linear law, the exact flow's ball.
+pub(super) fn unflattened(name: &str) -> ImpactParams {
+    ImpactParams {
+        z_p: f64::INFINITY,
+        ..preset(name)
+    }
+}
+
+pub(super) fn rel(a: f64, b: f64) -> f64 {
     (a - b).abs() / b.abs().max(1e-300)
 }
 
@@ -138,8 +146,7 @@ fn equal_balls_head_on_are_the_wall_impact_at_v_and_a_rigid_partner_is_m_half_at
 fn lossless() -> (ImpactParams, Target) {
     let p = ImpactParams {
         damping: f64::INFINITY,
-        z_p: f64::INFINITY,
-        ..preset("superball")
+        ..unflattened("superball")
     };
     let target = Target {
         mass: 0.3,
@@ -262,10 +269,7 @@ fn a_locked_ball_on_a_damped_surface_is_todays_ball_with_the_surfaces_pair() {
 #[test]
 fn an_undamped_surface_is_a_softer_contact() {
     for name in ["superball", "golf", "baseball"] {
-        let p = ImpactParams {
-            z_p: f64::INFINITY,
-            ..preset(name)
-        };
+        let p = unflattened(name);
         let target = Target {
             mass: 0.3,
             speed: 0.5,
@@ -296,10 +300,7 @@ fn an_undamped_surface_is_a_softer_contact() {
 fn the_exact_and_the_integrated_compliant_solvers_agree() {
     for name in ["superball", "golf", "baseball"] {
         for (ks, cs) in [(0.3, 0.2), (2.0, 1.0), (10.0, 0.05), (0.5, 0.0)] {
-            let p = ImpactParams {
-                z_p: f64::INFINITY,
-                ..preset(name)
-            };
+            let p = unflattened(name);
             let target = Target {
                 mass: 0.6,
                 speed: 2.0,

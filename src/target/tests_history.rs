@@ -3,16 +3,8 @@
 //! target's displacement leaving at the speed the impulse gives it.
 
 use super::history::Samples;
+use super::tests::{preset, rel, unflattened};
 use super::*;
-use crate::api::Ball;
-
-fn preset(name: &str) -> ImpactParams {
-    Ball::from_preset(name).unwrap().params
-}
-
-fn rel(a: f64, b: f64) -> f64 {
-    (a - b).abs() / b.abs().max(1e-300)
-}
 
 /// A rigid target's history is today's history of the reduced ball at the closing speed; the
 /// target's displacement leaves at the speed change J/M the impulse gives it.
@@ -53,10 +45,7 @@ fn a_rigid_targets_history_is_the_reduced_balls() {
 /// and ends where the force returns to zero.
 #[test]
 fn the_exact_and_the_integrated_histories_agree() {
-    let p = ImpactParams {
-        z_p: f64::INFINITY,
-        ..preset("golf")
-    };
+    let p = unflattened("golf");
     let target = Target {
         mass: 0.6,
         speed: 2.0,

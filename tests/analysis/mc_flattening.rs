@@ -10,23 +10,13 @@ use crate::seeded;
 
 use bouncelab::analysis::mc::{Outcome, impacts};
 use bouncelab::map::fast::lanes::{LANES, flattening_lane1, flattening_one};
-use bouncelab::map::fast::{Summary, summary};
+use bouncelab::map::fast::summary;
 use bouncelab::{ContactLaw, ImpactParams};
 use seeded::Seeded;
 
 /// The bits of an outcome.
 fn bits(o: &Outcome) -> [u64; 3] {
     [o.cor, o.max_force, o.contact_time].map(f64::to_bits)
-}
-
-/// A normalized summary in SI as the Monte Carlo scales it: F = F̄ m v0 ω0, t = τ/ω0.
-fn in_si(p: &ImpactParams, s: &Summary) -> Outcome {
-    let w0 = p.omega0();
-    Outcome {
-        cor: s.cor,
-        max_force: s.max_force * p.mass * p.v0 * w0,
-        contact_time: s.contact_time / w0,
-    }
 }
 
 /// A seeded ball past its flattening point (z̄_p below the peak without flattening), scaled
@@ -68,7 +58,7 @@ fn flattening_samples_are_the_lone_balls_answer_handed_back_or_not() {
             };
             let case = format!("λ {:e}, ζ {:e}, z̄_p {:e}", n.lambda, n.zeta, n.zp_bar);
             let got = got.expect("a ball has its answer").expect(&case);
-            assert_eq!(bits(&got), bits(&in_si(p, &one)), "{case}");
+            assert_eq!(bits(&got), bits(&Outcome::in_si(p, &one)), "{case}");
             compared += 1;
             handed += usize::from(flattening_lane1(n.lambda, n.zeta, n.zp_bar).is_none());
         }

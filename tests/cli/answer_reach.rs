@@ -78,7 +78,8 @@ fn the_warning_turns_at_the_exact_peak() {
     let r = b.impact().unwrap();
     let alpha = api::peak_displacement(&b.params, r.law, r.method).unwrap();
     assert!((alpha * 1e3 - 34.97).abs() < 0.005, "{alpha}");
-    let w = |radius: f64| api::reach_warning(&b.params, r.law, r.method, 1e-4, 1.0, radius);
+    let w =
+        |radius: f64| api::reach(&b.params, r.law, r.method, 1e-4, 1.0, radius)?.warning(radius);
     assert!(w(alpha * (1.0 + 1e-9)).is_none());
     assert!(w(alpha * (1.0 - 1e-9)).is_some());
     for (radius, warned) in [("0.0349", true), ("0.0351", false)] {

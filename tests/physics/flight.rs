@@ -4,12 +4,10 @@
 
 use bouncelab::api::{ShotReport, ShotSpec};
 use bouncelab::flight::{self, Aero, Decay, Drag, Lift, aero::reynolds};
+use bouncelab::solver::each_step::{EachStep, EndState, Watched};
 use bouncelab::{Ball, api::ObliqueSpec};
-use differential_equations::interpolate::Interpolation;
 use differential_equations::methods::ExplicitRungeKutta;
 use differential_equations::ode::{ODE, solve_ode};
-use differential_equations::prelude::{ControlFlag, Solout};
-use differential_equations::solution::Solution;
 
 const G: f64 = 9.80665;
 
@@ -121,33 +119,27 @@ struct Below {
     hit: Option<(f64, X, f64)>,
 }
 
-impl Solout<f64, X> for Below {
-    fn solout<I>(
+impl EachStep<X> for Below {
+    fn watch(
         &mut self,
-        t: f64,
-        t_prev: f64,
-        y: &X,
-        y_prev: &X,
-        _i: &mut I,
-        _s: &mut Solution<f64, X>,
-    ) -> ControlFlag<f64, X>
-    where
-        I: Interpolation<f64, X> + ?Sized,
-    {
+        (t_prev, y_prev): (f64, &X),
+        (t, y): (f64, &X),
+        _: &mut impl FnMut(f64) -> X,
+    ) -> bool {
         if y[1] < self.r {
             self.hit = Some((t_prev, *y_prev, t));
-            return ControlFlag::Terminate;
+            return true;
         }
-        ControlFlag::Continue
+        false
     }
 }
 
-fn dop853(air: &Air, t0: f64, x0: &X, t1: f64, out: &mut impl Solout<f64, X>) {
+fn dop853(air: &Air, t0: f64, x0: &X, t1: f64, out: &mut impl EachStep<X>) {
     let mut m = ExplicitRungeKutta::dop853()
         .rtol(1e-13)
         .atol(1e-13)
         .max_steps(10_000_000);
-    solve_ode(&mut m, air, t0, t1, x0, out).expect("DOP853 runs");
+    solve_ode(&mut m, air, t0, t1, x0, &mut Watched(out)).expect("DOP853 runs");
 }
 
 /// The state at t1 from (t0, x0).
@@ -155,30 +147,9 @@ fn to(air: &Air, t0: f64, x0: &X, t1: f64) -> X {
     if t1 <= t0 {
         return *x0;
     }
-    let mut last = Last(*x0);
+    let mut last = EndState(t0, *x0);
     dop853(air, t0, x0, t1, &mut last);
-    last.0
-}
-
-/// Keeps the last state reached.
-struct Last(X);
-
-impl Solout<f64, X> for Last {
-    fn solout<I>(
-        &mut self,
-        _t: f64,
-        _t_prev: f64,
-        y: &X,
-        _y_prev: &X,
-        _i: &mut I,
-        _s: &mut Solution<f64, X>,
-    ) -> ControlFlag<f64, X>
-    where
-        I: Interpolation<f64, X> + ?Sized,
-    {
-        self.0 = *y;
-        ControlFlag::Continue
-    }
+    last.1
 }
 
 /// The landing after (t0, x0): the step that goes below R, then bisection on t, every value

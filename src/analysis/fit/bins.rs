@@ -102,6 +102,15 @@ fn bin(t: &[f64], f: &[f64], pulse: (f64, f64)) -> Samples {
     out
 }
 
+// the ball of benches/fit.rs (the sensitivity tests' too), its fit's start and noise, and its
+// history read between the solver's samples, as the bench and tests/fit_memory.rs have them
+#[cfg(test)]
+#[path = "../../../tests/support/fit_common/bench_ball.rs"]
+mod bench_ball;
+#[cfg(test)]
+#[path = "../../../tests/support/fit_common/force.rs"]
+mod force;
+
 #[cfg(test)]
 pub(super) mod tests {
     use super::*;
@@ -128,24 +137,12 @@ pub(super) mod tests {
 
     use super::super::multi::fit_trace;
     use super::super::{MultiFit, Param};
+    pub(in crate::analysis::fit) use super::bench_ball::truth;
+    use super::bench_ball::{normals, start};
+    use super::force;
     use crate::analysis::work::Unwatched;
     use crate::model::contact::ContactLaw;
-    use crate::model::params::ImpactParams;
     use crate::solver::{SolveOptions, simulate};
-
-    /// The ball of benches/fit.rs: m = 50 g, v0 = 2 m/s, K_p = 8e4, c = 60, K_r = 1.2e5; the
-    /// sensitivity tests' too.
-    pub(in crate::analysis::fit) fn truth() -> ImpactParams {
-        ImpactParams {
-            mass: 0.05,
-            k_p: 8e4,
-            damping: 60.0,
-            k_r: 1.2e5,
-            z_p: 1.0,
-            k_h: ImpactParams::k_h_matching(8e4, 1.0),
-            v0: 2.0,
-        }
-    }
 
     /// `rows` samples over 10 ms, contact from 2.1 ms, baseline 0.3 N, noise σ = 3 N (the peak
     /// is ≈ 100 N) from a fixed pseudo-random sequence (`seed`).
@@ -155,45 +152,19 @@ pub(super) mod tests {
             .unwrap()
             .history;
         let tf = *h.t.last().unwrap();
-        let mut state = seed;
-        let mut normal = || {
-            let mut u = || {
-                state = state
-                    .wrapping_mul(6364136223846793005)
-                    .wrapping_add(1442695040888963407);
-                ((state >> 11) as f64 + 0.5) / (1u64 << 53) as f64
-            };
-            let (a, b) = (u(), u());
-            (-2.0 * a.ln()).sqrt() * (std::f64::consts::TAU * b).cos()
-        };
+        let mut normal = normals(seed);
         let dt = 1e-2 / rows as f64;
         let time: Vec<f64> = (0..rows).map(|i| i as f64 * dt).collect();
         let force = time
             .iter()
-            .map(|&t| {
-                let s = t - 2.1e-3;
-                let f = if s <= 0.0 || s >= tf {
-                    0.0
-                } else {
-                    let k = ((s / h.t[1]) as usize).min(h.t.len() - 2);
-                    let w = (s - h.t[k]) / (h.t[k + 1] - h.t[k]);
-                    h.force[k] * (1.0 - w) + h.force[k + 1] * w
-                };
-                f + 0.3 + 3.0 * normal()
-            })
+            .map(|&t| force::force_at(&h, tf, t - 2.1e-3) + 0.3 + 3.0 * normal())
             .collect();
         Trace::from_columns(time, force)
     }
 
     fn fit(t: &Trace, choose: fn(&Trace, &TraceSummary) -> Samples) -> MultiFit {
-        let start = ImpactParams {
-            k_p: 2e5,
-            damping: 24.0,
-            k_r: 3.6e4,
-            ..truth()
-        };
         let free = [Param::KP, Param::C, Param::KR];
-        fit_trace(&start, ContactLaw::Linear, t, &free, &Unwatched, choose).unwrap()
+        fit_trace(&start(), ContactLaw::Linear, t, &free, &Unwatched, choose).unwrap()
     }
 
     #[test]

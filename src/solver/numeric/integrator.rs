@@ -14,6 +14,7 @@
 //! `creeps_at_the_integrators_noise_floor_answer`).
 
 use super::{ATOL_FACTOR, Impact, X};
+use crate::solver::each_step::{EachStep, Watched};
 use differential_equations::interpolate::Interpolation;
 use differential_equations::methods::{
     BackwardDifferentiationFormula, ExplicitRungeKutta, ImplicitRungeKutta, Ordinary,
@@ -109,7 +110,7 @@ pub(super) struct RunStats {
 }
 
 /// One integration with `method`.
-pub(super) fn solve_with<O: Solout<f64, X>>(
+pub(super) fn solve_with<O: EachStep<X>>(
     imp: &Impact,
     t0: f64,
     x0: X,
@@ -119,6 +120,7 @@ pub(super) fn solve_with<O: Solout<f64, X>>(
     out: &mut O,
 ) -> RunStats {
     let budget = method.budget();
+    let out = &mut Watched(out);
     match method {
         Integrator::Dopri5(_) => {
             let mut m = ExplicitRungeKutta::dopri5()

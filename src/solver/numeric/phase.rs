@@ -1,15 +1,12 @@
 //! One phase of the adaptive solver: what it watches for (the events, with the direction of
-//! their crossing, as SciPy's `solve_ivp` events), the solout that finds them on the dense
+//! their crossing, as SciPy's `solve_ivp` events), the watcher that finds them on the dense
 //! output, and the integration of the phase down the integrator cascade to its first
 //! confirmed event.
 
 use super::integrator::{CASCADE, Integrator, STIFF_ENTRY, solve_with};
 use super::{ATOL_FACTOR, EVENT_SLACK, Impact, STIFF, X};
-use crate::solver::dop853::EndState;
+use crate::solver::each_step::{EachStep, EndState};
 use crate::solver::roots::brent;
-use differential_equations::interpolate::Interpolation;
-use differential_equations::prelude::{ControlFlag, Solout};
-use differential_equations::solution::Solution;
 
 /// What a phase watches for, with the direction of the crossing.
 #[derive(Clone, Copy, Debug)]
@@ -81,7 +78,7 @@ pub(super) struct Integrated {
     pub(super) knots: Vec<(f64, X)>,
 }
 
-/// The custom solout: finds the first watched crossing (terminal), and records evenly spaced
+/// The custom watcher: finds the first watched crossing (terminal), and records evenly spaced
 /// samples from the dense output when asked to.
 struct Watcher<'a> {
     imp: &'a Impact,
@@ -123,26 +120,14 @@ impl Watcher<'_> {
     }
 }
 
-impl Solout<f64, X> for Watcher<'_> {
-    fn solout<I>(
+impl EachStep<X> for Watcher<'_> {
+    fn watch(
         &mut self,
-        t_curr: f64,
-        t_prev: f64,
-        y_curr: &X,
-        y_prev: &X,
-        interp: &mut I,
-        _s: &mut Solution<f64, X>,
-    ) -> ControlFlag<f64, X>
-    where
-        I: Interpolation<f64, X> + ?Sized,
-    {
-        let mut at = |t: f64| {
-            if t == t_curr {
-                *y_curr
-            } else {
-                interp.interpolate(t).unwrap_or(*y_curr)
-            }
-        };
+        (t_prev, y_prev): (f64, &X),
+        (t_curr, y_curr): (f64, &X),
+        dense: &mut impl FnMut(f64) -> X,
+    ) -> bool {
+        let mut at = |t: f64| if t == t_curr { *y_curr } else { dense(t) };
         let mut best: Option<(f64, Watch)> = None;
         for &w in &self.watches {
             let sign = if w.rising() { 1.0 } else { -1.0 };
@@ -180,12 +165,10 @@ impl Solout<f64, X> for Watcher<'_> {
                     x_prev: *y_prev,
                     watch,
                 });
-                ControlFlag::Terminate
+                true
             }
-            None if t_curr >= self.t_stop => ControlFlag::Terminate,
-            // come to rest: no rebound can follow (see `cor_bound`)
-            None if self.imp.at_rest(y_curr) => ControlFlag::Terminate,
-            None => ControlFlag::Continue,
+            // at `t_stop`, or come to rest: no rebound can follow (see `cor_bound`)
+            None => t_curr >= self.t_stop || self.imp.at_rest(y_curr),
         }
     }
 }

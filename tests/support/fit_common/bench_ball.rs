@@ -1,6 +1,9 @@
-//! The ball of benches/fit.rs's force–time trace and the fit's start from it, shared with
-//! tests/fit_memory.rs, which reads and fits a dense trace of the same ball (both by
-//! `#[path]`, as force.rs beside it).
+//! The ball of benches/fit.rs's force–time trace, the fit's start from it and the trace's
+//! noise, shared by `#[path]` (as force.rs beside it) with tests/fit_memory.rs, which reads
+//! and fits a dense trace of the same ball, and with the binned fit's tests
+//! (src/analysis/fit/bins.rs); the fit tests' ball (`fit_common::truth`) is it with a finite
+//! z_p.
+#![allow(dead_code)]
 
 use bouncelab::ImpactParams;
 
@@ -24,5 +27,21 @@ pub fn start() -> ImpactParams {
         damping: 24.0,
         k_r: 3.6e4,
         ..truth()
+    }
+}
+
+/// Standard normal numbers from a fixed `seed` (Box–Muller on the top 53 bits of a 64-bit
+/// linear congruential sequence): the same noise on every run and machine.
+pub fn normals(seed: u64) -> impl FnMut() -> f64 {
+    let mut state = seed;
+    let mut u = move || {
+        state = state
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        ((state >> 11) as f64 + 0.5) / (1u64 << 53) as f64
+    };
+    move || {
+        let (a, b) = (u(), u());
+        (-2.0 * a.ln()).sqrt() * (std::f64::consts::TAU * b).cos()
     }
 }
