@@ -73,6 +73,11 @@
 // the crate as they do (src/analysis/fit/bins.rs)
 #[cfg(test)]
 extern crate self as bouncelab;
+// the bench ball's file (benches/fit.rs's ball, its fit's start, its fixed noise), one module
+// for every unit test that takes it: the binned fit's and src/measured/trace.rs's
+#[cfg(test)]
+#[path = "../tests/support/fit_common/bench_ball.rs"]
+mod bench_ball;
 
 pub mod analysis;
 pub mod api;

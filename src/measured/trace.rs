@@ -295,19 +295,11 @@ mod tests {
     /// 400 rows), not the flanks' spread (tens of newtons: the pulse's edges, not its noise).
     #[test]
     fn a_contact_only_trace_reads_its_noise() {
-        let mut state = 52u64;
-        let mut uniform = || {
-            state = state
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            ((state >> 11) as f64 + 0.5) / (1u64 << 53) as f64
-        };
+        let mut normal = crate::bench_ball::normals(52);
         let mut text = String::from("t,F\n");
         for i in 0..400 {
             let x = i as f64 / 399.0;
-            let (a, b) = (uniform(), uniform());
-            let normal = (-2.0 * a.ln()).sqrt() * (std::f64::consts::TAU * b).cos();
-            let f = 250.0 * (std::f64::consts::PI * x).sin() + 3.0 * normal;
+            let f = 250.0 * (std::f64::consts::PI * x).sin() + 3.0 * normal();
             text.push_str(&format!("{},{f}\n", x * 3.5e-3));
         }
         let s = Trace::parse(&text).unwrap().summary().unwrap();

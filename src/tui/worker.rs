@@ -11,7 +11,7 @@
 use crate::tui::background::{Background, Stopped};
 use crate::tui::views::sweeps::speed::{SpeedCurve, SpeedRequest};
 use std::sync::Arc;
-use std::sync::atomic::AtomicBool;
+use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::mpsc::{Receiver, Sender, TryRecvError};
 
 /// Work a [`Worker`] does: equal jobs give equal results, so the job is its result's key.
@@ -60,6 +60,47 @@ pub struct Cancellable<W> {
 impl<W> PartialEq for Cancellable<W> {
     fn eq(&self, other: &Cancellable<W>) -> bool {
         self.generation == other.generation && Arc::ptr_eq(&self.cancel, &other.cancel)
+    }
+}
+
+/// A view's side of its [`Cancellable`] jobs: how many it handed out, the flag of the one out
+/// at the worker, and why the worker's thread stopped (then nothing is handed out again until
+/// `R` or another job, src/tui/app/stopped.rs).
+#[derive(Debug, Clone, Default)]
+pub struct JobState {
+    /// Counts the jobs made: an answer of an older one is stale.
+    pub generation: u64,
+    /// The flag of the job out at the worker, if one is.
+    pub out: Option<Arc<AtomicBool>>,
+    /// Why the worker's thread stopped, if it did.
+    pub stopped: Option<String>,
+}
+
+impl JobState {
+    /// Stop the job out at the worker, if any.
+    pub fn cancel(&mut self) {
+        if let Some(flag) = self.out.take() {
+            flag.store(true, Ordering::Relaxed);
+        }
+    }
+
+    /// A new job replaces the old: the one out is stopped, a stop of the old forgotten, and
+    /// answers of the old are stale from now.
+    pub fn renew(&mut self) {
+        self.cancel();
+        self.stopped = None;
+        self.generation += 1;
+    }
+
+    /// `work` handed out as the current job, its flag kept to cancel it by.
+    pub fn hand_out<W>(&mut self, work: W) -> Cancellable<W> {
+        let cancel = Arc::new(AtomicBool::new(false));
+        self.out = Some(Arc::clone(&cancel));
+        Cancellable {
+            generation: self.generation,
+            work,
+            cancel,
+        }
     }
 }
 

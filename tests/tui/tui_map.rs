@@ -107,7 +107,7 @@ fn the_grid_follows_the_screen() {
 fn arrows_move_the_cursor_and_the_ball_one_undoable_cell_at_a_time() {
     let mut app = map_app(true, 120, 40);
     let depth = app.undo_depth();
-    let generation = app.map_view().generation;
+    let generation = app.map_view().job.generation;
     let (i, j) = {
         let (l, z) = point(&app);
         cell_of(app.map_view().map().unwrap(), l, z)
@@ -137,7 +137,7 @@ fn arrows_move_the_cursor_and_the_ball_one_undoable_cell_at_a_time() {
     press(&mut app, &[KeyCode::Char('u')]);
     assert_eq!(point(&app).0, map.lambdas[i + 1], "undo: one cell back");
     // the same map all along: moving inside the window re-solves no map
-    assert_eq!(app.map_view().generation, generation);
+    assert_eq!(app.map_view().job.generation, generation);
     // l / L still work in the map view, and the cursor follows
     press(&mut app, &[KeyCode::Char('l')]);
     assert_eq!(app.mode(), Mode::Map);
@@ -266,7 +266,7 @@ fn passes_come_from_the_worker_and_stale_ones_are_dropped() {
         job.cancel.load(std::sync::atomic::Ordering::Relaxed),
         "stale job cancelled"
     );
-    let now = app.map_view().generation;
+    let now = app.map_view().job.generation;
     assert_eq!(now, job.generation + 1);
     app.update(Action::MapPass {
         generation: job.generation,
@@ -276,7 +276,11 @@ fn passes_come_from_the_worker_and_stale_ones_are_dropped() {
         !app.map_view().map().unwrap().is_complete(),
         "stale pass dropped"
     );
-    assert_eq!(app.map_view().generation, now, "the map held is untouched");
+    assert_eq!(
+        app.map_view().job.generation,
+        now,
+        "the map held is untouched"
+    );
     let mut fresh = app.map_view().map().unwrap().clone();
     while fresh.refine().is_some() {}
     app.update(Action::MapPass {

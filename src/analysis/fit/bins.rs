@@ -102,11 +102,8 @@ fn bin(t: &[f64], f: &[f64], pulse: (f64, f64)) -> Samples {
     out
 }
 
-// the ball of benches/fit.rs (the sensitivity tests' too), its fit's start and noise, and its
-// history read between the solver's samples, as the bench and tests/fit_memory.rs have them
-#[cfg(test)]
-#[path = "../../../tests/support/fit_common/bench_ball.rs"]
-mod bench_ball;
+// the history of benches/fit.rs's ball (`crate::bench_ball`, the sensitivity tests' too) read
+// between the solver's samples, as the bench and tests/fit_memory.rs have it
 #[cfg(test)]
 #[path = "../../../tests/support/fit_common/force.rs"]
 mod force;
@@ -137,10 +134,10 @@ pub(super) mod tests {
 
     use super::super::multi::fit_trace;
     use super::super::{MultiFit, Param};
-    pub(in crate::analysis::fit) use super::bench_ball::truth;
-    use super::bench_ball::{normals, start};
     use super::force;
     use crate::analysis::work::Unwatched;
+    pub(in crate::analysis::fit) use crate::bench_ball::truth;
+    use crate::bench_ball::{normals, start};
     use crate::model::contact::ContactLaw;
     use crate::solver::{SolveOptions, simulate};
 

@@ -17,25 +17,13 @@ use super::lm::{self, Residuals};
 use super::stats::{self, Spread};
 use super::verdict::{self, LackOfFit};
 use crate::conditions::{ZERO_CELSIUS, kelvin};
+use crate::measured::CorTemperatureRow;
 use crate::model::contact::ContactLaw;
 use crate::model::params::ImpactParams;
 use crate::solver::{SolveOptions, simulate};
 
 /// The molar gas constant, J/(mol K) (CODATA 2018, exact since the 2019 SI).
 pub const GAS_CONSTANT: f64 = 8.314_462_618;
-
-/// One measured COR at a temperature and an impact speed.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct CorAt {
-    /// The ball's temperature, °C.
-    pub temperature_c: f64,
-    /// Impact speed, m/s.
-    pub v0: f64,
-    /// The measured COR.
-    pub cor: f64,
-    /// Its standard deviation, where stated.
-    pub sd: Option<f64>,
-}
 
 /// The fitted shift.
 #[derive(Debug, Clone)]
@@ -86,7 +74,7 @@ struct Problem<'a> {
     base: ImpactParams,
     law: ContactLaw,
     t_ref_c: f64,
-    points: &'a [CorAt],
+    points: &'a [CorTemperatureRow],
     /// Without stated deviations, residuals are in COR (scale 1).
     stated: bool,
 }
@@ -98,7 +86,7 @@ impl Problem<'_> {
         (self.base.damping * x[0].exp(), x[1] * GAS_CONSTANT * t_ref)
     }
 
-    fn cor(&self, c_ref: f64, activation: f64, p: &CorAt) -> Option<f64> {
+    fn cor(&self, c_ref: f64, activation: f64, p: &CorTemperatureRow) -> Option<f64> {
         let damping = shifted_damping(c_ref, activation, self.t_ref_c, p.temperature_c);
         let params = ImpactParams {
             damping,
@@ -134,7 +122,7 @@ impl Residuals for Problem<'_> {
     }
 }
 
-fn check(points: &[CorAt]) -> Result<(), CorTemperatureError> {
+fn check(points: &[CorTemperatureRow]) -> Result<(), CorTemperatureError> {
     for (i, p) in points.iter().enumerate() {
         let bad = |why| Err(CorTemperatureError::Point { row: i + 1, why });
         if kelvin("temperature", p.temperature_c).is_err() {
@@ -163,7 +151,7 @@ pub fn fit_cor_temperature(
     base: &ImpactParams,
     law: ContactLaw,
     t_ref_c: f64,
-    points: &[CorAt],
+    points: &[CorTemperatureRow],
 ) -> Result<TemperatureFit, CorTemperatureError> {
     check(points)?;
     kelvin("temperature", t_ref_c).map_err(|_| CorTemperatureError::Point {

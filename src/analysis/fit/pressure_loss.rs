@@ -14,19 +14,8 @@ use super::lm::{self, Residuals};
 use super::stats::{self, Spread};
 use super::verdict::{self, LackOfFit};
 use crate::conditions::leak::Leak;
+use crate::measured::PressureRow;
 use nalgebra::DMatrix;
-
-/// One pressure reading: `time` s since inflation, the gauge pressure `gauge` Pa and, where
-/// stated, its standard deviation `sd` Pa.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Reading {
-    /// Time since inflation, s.
-    pub time: f64,
-    /// Gauge pressure, Pa.
-    pub gauge: f64,
-    /// The reading's standard deviation, Pa, where stated.
-    pub sd: Option<f64>,
-}
 
 /// The fitted leak.
 #[derive(Debug, Clone)]
@@ -77,13 +66,13 @@ pub enum LeakFitError {
 }
 
 struct Problem<'a> {
-    readings: &'a [Reading],
+    readings: &'a [PressureRow],
     p_scale: f64,
     t_span: f64,
 }
 
 impl Problem<'_> {
-    fn sigma(&self, r: &Reading) -> f64 {
+    fn sigma(&self, r: &PressureRow) -> f64 {
         r.sd.unwrap_or(self.p_scale)
     }
 }
@@ -114,7 +103,7 @@ impl Residuals for Problem<'_> {
     }
 }
 
-fn check(readings: &[Reading]) -> Result<(), LeakFitError> {
+fn check(readings: &[PressureRow]) -> Result<(), LeakFitError> {
     for (i, r) in readings.iter().enumerate() {
         let row = i + 1;
         if !r.time.is_finite() || r.time < 0.0 {
@@ -145,7 +134,7 @@ fn check(readings: &[Reading]) -> Result<(), LeakFitError> {
 
 /// The start: a straight line through (t, ln p) of the positive readings (k = 0 where the
 /// readings rise or too few are positive).
-fn start(readings: &[Reading], p_scale: f64, t_span: f64) -> [f64; 2] {
+fn start(readings: &[PressureRow], p_scale: f64, t_span: f64) -> [f64; 2] {
     let pts: Vec<(f64, f64)> = readings
         .iter()
         .filter(|r| r.gauge > 0.0)
@@ -172,7 +161,7 @@ fn start(readings: &[Reading], p_scale: f64, t_span: f64) -> [f64; 2] {
 }
 
 /// Fit p(t) = p₀ e^(−k t) to `readings` (in any order).
-pub fn fit_pressure_loss(readings: &[Reading]) -> Result<LeakFit, LeakFitError> {
+pub fn fit_pressure_loss(readings: &[PressureRow]) -> Result<LeakFit, LeakFitError> {
     check(readings)?;
     let p_scale = readings
         .iter()

@@ -4,7 +4,7 @@
 //! not follow the law.
 
 use super::FitArgs;
-use crate::analysis::fit::pressure_loss::{LeakFit, Reading, fit_pressure_loss};
+use crate::analysis::fit::pressure_loss::{LeakFit, fit_pressure_loss};
 use crate::analysis::fit::verdict::LackOfFit;
 use crate::analysis::fit::{Estimate, MultiFitError};
 use crate::cli::output::{self, TextJson, human, table};
@@ -22,15 +22,7 @@ pub fn run(a: &FitArgs, path: &Path, out: &mut dyn Write) -> anyhow::Result<()> 
              --plot, --drag-coefficient, --rebound-height-sd are not for it"
         );
     }
-    let rows = crate::measured::file::pressure(path)?;
-    let readings: Vec<Reading> = rows
-        .iter()
-        .map(|r| Reading {
-            time: r.time,
-            gauge: r.gauge,
-            sd: r.sd,
-        })
-        .collect();
+    let readings = crate::measured::file::pressure(path)?;
     let file = path.display().to_string();
     let fit = fit_pressure_loss(&readings).map_err(|e| anyhow::anyhow!("{file}: {e}"))?;
     let report = LeakJson::new(&file, readings.len(), &fit);

@@ -5,9 +5,10 @@
 //! ([`crate::cli::outputs`]), never over an existing preset without `--force`.
 
 use super::save::{now_utc, remove_created, stage_preset};
-use crate::analysis::fit::cor_temperature::{CorAt, TemperatureFit};
+use crate::analysis::fit::cor_temperature::TemperatureFit;
 use crate::atomic::Outputs;
 use crate::cli::output::TextJson;
+use crate::measured::CorTemperatureRow;
 use crate::preset::{Calibration, CalibrationData, Preset, TemperatureShift};
 use std::io::Write;
 
@@ -18,7 +19,7 @@ fn shifted(
     base: &Preset,
     name: &str,
     file: &str,
-    points: &[CorAt],
+    points: &[CorTemperatureRow],
     fit: &TemperatureFit,
 ) -> Preset {
     let when = now_utc();
@@ -64,7 +65,7 @@ pub fn save_then_report(
     a: &super::FitArgs,
     name: &str,
     file: &str,
-    points: &[CorAt],
+    points: &[CorTemperatureRow],
     fit: &TemperatureFit,
     report: &[u8],
     out: &mut dyn Write,

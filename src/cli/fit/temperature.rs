@@ -5,7 +5,7 @@
 //! follow the law.
 
 use super::FitArgs;
-use crate::analysis::fit::cor_temperature::{CorAt, TemperatureFit, fit_cor_temperature};
+use crate::analysis::fit::cor_temperature::{TemperatureFit, fit_cor_temperature};
 use crate::analysis::fit::verdict::LackOfFit;
 use crate::analysis::fit::{Estimate, MultiFitError};
 use crate::cli::output::{self, TextJson, human, table};
@@ -39,16 +39,7 @@ pub fn run(a: &FitArgs, path: &Path, out: &mut dyn Write) -> anyhow::Result<()> 
             ball.name.as_deref().unwrap_or("the ball")
         );
     };
-    let rows = crate::measured::file::cor_temperature(path)?;
-    let points: Vec<CorAt> = rows
-        .iter()
-        .map(|r| CorAt {
-            temperature_c: r.temperature_c,
-            v0: r.v0,
-            cor: r.cor,
-            sd: r.sd,
-        })
-        .collect();
+    let points = crate::measured::file::cor_temperature(path)?;
     let file = path.display().to_string();
     let fit = fit_cor_temperature(&ball.params, ball.law, t_ref, &points)
         .map_err(|e| anyhow::anyhow!("{file}: {e}"))?;

@@ -33,14 +33,14 @@ impl App {
                 "f fits again"
             }
             Work::Map => {
-                self.map.out = None;
-                self.map.stopped = Some(why.clone());
+                self.map.job.out = None;
+                self.map.job.stopped = Some(why.clone());
                 "R retries"
             }
             Work::ObliqueMap => {
-                self.oblique.out = None;
+                self.oblique.job.out = None;
                 self.oblique.map = Some(Err(format!("stopped: {why} (R retries)")));
-                self.oblique.stopped = Some(why.clone());
+                self.oblique.job.stopped = Some(why.clone());
                 "R retries"
             }
         };
@@ -59,10 +59,10 @@ impl App {
             (self.models.held, self.models.asked) = (None, None);
             again.push(Work::Models);
         }
-        if self.map.stopped.take().is_some() {
+        if self.map.job.stopped.take().is_some() {
             again.push(Work::Map);
         }
-        if self.oblique.stopped.take().is_some() {
+        if self.oblique.job.stopped.take().is_some() {
             (self.oblique.map, self.oblique.map_for) = (None, None);
             again.push(Work::ObliqueMap);
         }

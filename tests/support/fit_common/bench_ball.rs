@@ -1,8 +1,8 @@
 //! The ball of benches/fit.rs's force–time trace, the fit's start from it and the trace's
 //! noise, shared by `#[path]` (as force.rs beside it) with tests/fit_memory.rs, which reads
-//! and fits a dense trace of the same ball, and with the binned fit's tests
-//! (src/analysis/fit/bins.rs); the fit tests' ball (`fit_common::truth`) is it with a finite
-//! z_p.
+//! and fits a dense trace of the same ball, and with the library's unit tests (src/lib.rs:
+//! the binned fit's, and src/measured/trace.rs's noise); the fit tests' ball
+//! (`fit_common::truth`) is it with a finite z_p.
 #![allow(dead_code)]
 
 use bouncelab::ImpactParams;

@@ -21,7 +21,7 @@ const E_A: f64 = 40_000.0;
 const T_REF: f64 = 23.0;
 
 /// CORs at 0 … 45 °C and two speeds by the law with (C_REF, E_A), plus Gaussian noise `sd`.
-fn data(sd: f64, seed: u64, state_sd: bool) -> Vec<CorAt> {
+fn data(sd: f64, seed: u64, state_sd: bool) -> Vec<CorTemperatureRow> {
     let mut rng = ChaCha8Rng::seed_from_u64(seed);
     let mut points = Vec::new();
     for t in [0.0, 10.0, 23.0, 35.0, 45.0] {
@@ -36,11 +36,12 @@ fn data(sd: f64, seed: u64, state_sd: bool) -> Vec<CorAt> {
                 .unwrap()
                 .cor;
             let noise: f64 = StandardNormal.sample(&mut rng);
-            points.push(CorAt {
+            points.push(CorTemperatureRow {
                 temperature_c: t,
                 v0,
                 cor: e + sd * noise,
                 sd: state_sd.then_some(sd),
+                line: 0,
             });
         }
     }
@@ -90,14 +91,15 @@ fn noisy_data_recover_the_shift_with_honest_intervals() {
 #[test]
 fn data_the_law_cannot_follow_are_refused() {
     let zigzag = [0.5, 0.8, 0.5, 0.8, 0.5, 0.8];
-    let points: Vec<CorAt> = zigzag
+    let points: Vec<CorTemperatureRow> = zigzag
         .iter()
         .enumerate()
-        .map(|(i, &cor)| CorAt {
+        .map(|(i, &cor)| CorTemperatureRow {
             temperature_c: 5.0 * i as f64,
             v0: 3.0,
             cor,
             sd: Some(0.005),
+            line: 0,
         })
         .collect();
     let fit = fit_cor_temperature(&ball(), ContactLaw::Linear, T_REF, &points).unwrap();
@@ -110,7 +112,7 @@ fn bad_points_are_named() {
     p[2].cor = 1.5;
     let e = fit_cor_temperature(&ball(), ContactLaw::Linear, T_REF, &p).unwrap_err();
     assert_eq!(e.to_string(), "point 3: cor must lie in [0, 1]");
-    let one_t: Vec<CorAt> = data(0.0, 1, false)
+    let one_t: Vec<CorTemperatureRow> = data(0.0, 1, false)
         .into_iter()
         .filter(|p| p.temperature_c == 23.0)
         .collect();

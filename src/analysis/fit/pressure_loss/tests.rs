@@ -10,16 +10,17 @@ const HOUR: f64 = 3600.0;
 
 /// Readings every 6 h over 72 h of a ball inflated to `p0` leaking at `k`, each with Gaussian
 /// noise of `sd` Pa (stated on every reading when `state_sd`).
-fn readings(p0: f64, k: f64, sd: f64, seed: u64, state_sd: bool) -> Vec<Reading> {
+fn readings(p0: f64, k: f64, sd: f64, seed: u64, state_sd: bool) -> Vec<PressureRow> {
     let mut rng = ChaCha8Rng::seed_from_u64(seed);
     (0..=12)
         .map(|i| {
             let t = i as f64 * 6.0 * HOUR;
             let noise: f64 = StandardNormal.sample(&mut rng);
-            Reading {
+            PressureRow {
                 time: t,
                 gauge: p0 * (-k * t).exp() + sd * noise,
                 sd: state_sd.then_some(sd),
+                line: 0,
             }
         })
         .collect()
@@ -88,10 +89,11 @@ fn readings_the_law_cannot_follow_are_refused() {
 
 #[test]
 fn bad_readings_are_refused_naming_the_row() {
-    let one = [Reading {
+    let one = [PressureRow {
         time: 0.0,
         gauge: 8e4,
         sd: None,
+        line: 0,
     }];
     assert_eq!(
         fit_pressure_loss(&one).unwrap_err(),
@@ -104,20 +106,22 @@ fn bad_readings_are_refused_naming_the_row() {
     ));
     let neg = [
         one[0],
-        Reading {
+        PressureRow {
             time: -1.0,
             gauge: 7e4,
             sd: None,
+            line: 0,
         },
     ];
     let e = fit_pressure_loss(&neg).unwrap_err().to_string();
     assert!(e.starts_with("reading 2: time"), "{e}");
     let sd0 = [
         one[0],
-        Reading {
+        PressureRow {
             time: 1.0,
             gauge: 7e4,
             sd: Some(0.0),
+            line: 0,
         },
     ];
     assert!(

@@ -15,9 +15,8 @@ use crate::map::{Axis, Map, MapError, MapSpec, Param, Quantity, Scale, Sensitivi
 use crate::model::contact::ContactLaw;
 use crate::model::params::ImpactParams;
 use crate::tui::layout;
+use crate::tui::worker::JobState;
 use ratatui::layout::Rect;
-use std::sync::Arc;
-use std::sync::atomic::{AtomicBool, Ordering};
 
 /// Decades of λ the window spans (the presets lie within λ 0.2 … 1.3: one decade each side).
 pub const LAMBDA_DECADES: f64 = 2.0;
@@ -167,13 +166,9 @@ pub struct MapView {
     pub window: Option<Window>,
     /// The map of the window, refined as passes come in; `Err`: why it cannot be made.
     pub map: Option<Result<Map, String>>,
-    /// Counts the maps made: a pass of an older one is stale.
-    pub generation: u64,
-    /// The flag of the job out at the worker, if one is.
-    pub out: Option<Arc<AtomicBool>>,
-    /// Why the worker's thread stopped while refining this map: it is not handed out again
-    /// until `R` or a new map (src/tui/app/stopped.rs).
-    pub stopped: Option<String>,
+    /// The map's refinement at the worker: a pass of an older map is stale; a map whose
+    /// worker stopped is not handed out again until `R` or a new map.
+    pub job: JobState,
     /// ∂e/∂ln λ and ∂e/∂ln ζ at the current point (for `sens_for`).
     pub sensitivity: Option<Result<Sensitivity, String>>,
     pub sens_for: Option<(ImpactParams, ContactLaw)>,
@@ -186,9 +181,7 @@ impl Default for MapView {
             targets: None,
             window: None,
             map: None,
-            generation: 0,
-            out: None,
-            stopped: None,
+            job: JobState::default(),
             sensitivity: None,
             sens_for: None,
         }
@@ -199,13 +192,6 @@ impl MapView {
     /// The map, when there is one.
     pub fn map(&self) -> Option<&Map> {
         self.map.as_ref().and_then(|m| m.as_ref().ok())
-    }
-
-    /// Stop the job out at the worker, if any.
-    pub fn cancel(&mut self) {
-        if let Some(flag) = self.out.take() {
-            flag.store(true, Ordering::Relaxed);
-        }
     }
 
     /// Whether `spec` is the one of the map held (same ball apart from K_r and c, same law,

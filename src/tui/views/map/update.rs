@@ -11,12 +11,8 @@ use crate::tui::export::{ExportRequest, computed};
 use crate::tui::param::Param;
 use crate::tui::state::{Overlay, Purpose};
 use crate::tui::views::map::export::MapExport;
-use crate::tui::views::map::state::{
-    self as map_view, MapJob, MapView, Window, cell_of, next_quantity,
-};
+use crate::tui::views::map::state::{self as map_view, MapView, Window, cell_of, next_quantity};
 use crate::tui::views::map::targets;
-use std::sync::Arc;
-use std::sync::atomic::AtomicBool;
 
 impl App {
     /// The map view's state.
@@ -27,7 +23,7 @@ impl App {
     /// Whether a map is being refined in the background (the loop then wakes often to take
     /// its passes).
     pub fn map_pending(&self) -> bool {
-        self.map.out.is_some()
+        self.map.job.out.is_some()
     }
 
     /// The map view's actions.
@@ -110,7 +106,7 @@ impl App {
     /// A pass from the worker: kept when it is of the map held and not coarser than it;
     /// a pass of an older map (the ball or the window changed since) is dropped.
     fn receive_pass(&mut self, generation: u64, map: Map) {
-        if generation != self.map.generation {
+        if generation != self.map.job.generation {
             return;
         }
         let evaluated = |m: &Map| m.cells().iter().filter(|c| c.is_some()).count();
@@ -120,7 +116,7 @@ impl App {
             .is_none_or(|held| evaluated(&map) >= evaluated(held));
         if keep {
             if map.is_complete() {
-                self.map.out = None;
+                self.map.job.out = None;
             }
             self.map.map = Some(Ok(map));
         }
@@ -161,7 +157,7 @@ impl App {
     /// rest on the worker), and the sensitivities at the current point.
     pub(in crate::tui) fn refresh_map(&mut self) -> Option<Effect> {
         if self.view != View::Map {
-            self.map.cancel();
+            self.map.job.cancel();
             return None;
         }
         let (rows, cols) = map_view::grid(self.size, self.color, self.pins().len())?;
@@ -183,15 +179,13 @@ impl App {
         let spec = match spec {
             Ok(s) => s,
             Err(e) => {
-                self.map.cancel();
+                self.map.job.cancel();
                 self.map.map = Some(Err(e.to_string()));
                 return None;
             }
         };
         if !self.map.holds(&spec) {
-            self.map.cancel();
-            self.map.stopped = None;
-            self.map.generation += 1;
+            self.map.job.renew();
             let mut map =
                 Map::new(spec.clone()).first_cells_at_most(map_view::first_pass_cells(law));
             if !self.background {
@@ -204,18 +198,12 @@ impl App {
         self.refresh_sensitivity(&spec);
         let map = self.map.map()?;
         // a map whose worker stopped waits for `R` (src/tui/app/stopped.rs)
-        let stopped = self.map.stopped.is_some();
-        if !self.background || map.is_complete() || self.map.out.is_some() || stopped {
+        let stopped = self.map.job.stopped.is_some();
+        if !self.background || map.is_complete() || self.map.job.out.is_some() || stopped {
             return None;
         }
         let map = map.clone();
-        let cancel = Arc::new(AtomicBool::new(false));
-        self.map.out = Some(Arc::clone(&cancel));
-        Some(Effect::Map(MapJob {
-            generation: self.map.generation,
-            work: map,
-            cancel,
-        }))
+        Some(Effect::Map(self.map.job.hand_out(map)))
     }
 
     /// ∂e/∂ln λ and ∂e/∂ln ζ at the current point, when the ball changed.
@@ -246,7 +234,7 @@ impl App {
             }
         };
         if !map.is_complete() {
-            if let Some(why) = &self.map.stopped {
+            if let Some(why) = &self.map.job.stopped {
                 let why = format!("export failed: the map's refinement stopped: {why} (R retries)");
                 self.export_wanted = false;
                 self.error(why);

@@ -354,7 +354,7 @@ impl MapPanel<'_> {
             Some(t) => format!(" · where {}", super::targets::text(t)),
             None => " · t: targets".to_string(),
         };
-        let second = match &self.view.stopped {
+        let second = match &self.view.job.stopped {
             _ if map.is_complete() => {
                 let (cols, rows) = (map.zetas.len(), map.lambdas.len());
                 format!("{sens}{targets} · {cols}×{rows} cells")

@@ -7,8 +7,7 @@ use crate::api::CourtPace;
 use crate::oblique::ObliqueResponse;
 use crate::tui::views::oblique::map::{self, MapSpec, ObliqueMap, Quantity};
 use crate::tui::views::oblique::param::ObliqueParam;
-use std::sync::Arc;
-use std::sync::atomic::{AtomicBool, Ordering};
+use crate::tui::worker::JobState;
 
 /// History samples of the charts (as `bouncelab oblique --history`'s default).
 pub const SAMPLES: usize = 400;
@@ -98,13 +97,10 @@ pub struct ObliqueView {
     pub map: Option<Result<ObliqueMap, String>>,
     /// What the map held or asked is of.
     pub map_for: Option<MapSpec>,
-    /// Counts the maps asked: an answer of an older one is stale.
-    pub generation: u64,
-    /// The flag of the job out at the worker, if one is.
-    pub out: Option<Arc<AtomicBool>>,
-    /// Why the worker's thread stopped while computing the map of `map_for` (`map` then says
-    /// so): not asked again until `R` or another map (src/tui/app/stopped.rs).
-    pub stopped: Option<String>,
+    /// The map's job at the worker: an answer of an older map is stale; when the worker
+    /// stopped while computing the map of `map_for` (`map` then says so), it is not asked
+    /// again until `R` or another map.
+    pub job: JobState,
 }
 
 impl Default for ObliqueView {
@@ -120,9 +116,7 @@ impl Default for ObliqueView {
             impact_for: None,
             map: None,
             map_for: None,
-            generation: 0,
-            out: None,
-            stopped: None,
+            job: JobState::default(),
         }
     }
 }
@@ -141,12 +135,5 @@ impl ObliqueView {
     /// The map's cell under (θ, μ).
     pub fn cursor(&self) -> (usize, usize) {
         map::cell_of(self.values.angle, self.values.friction)
-    }
-
-    /// Stop the job out at the worker, if any.
-    pub fn cancel(&mut self) {
-        if let Some(flag) = self.out.take() {
-            flag.store(true, Ordering::Relaxed);
-        }
     }
 }

@@ -12,11 +12,10 @@ use crate::tui::app::{App, Effect, View};
 use crate::tui::export::{ExportRequest, computed};
 use crate::tui::state::{Overlay, Purpose};
 use crate::tui::views::oblique::export;
-use crate::tui::views::oblique::map::{self, ANGLES, FRICTIONS, MapJob, MapSpec};
+use crate::tui::views::oblique::map::{self, ANGLES, FRICTIONS, MapSpec};
 use crate::tui::views::oblique::param::ObliqueParam;
 use crate::tui::views::oblique::state::{ImpactKey, ObliqueValues, ObliqueView, Page, SAMPLES};
 use crate::{Ball, BallError};
-use std::sync::Arc;
 use std::sync::atomic::AtomicBool;
 
 impl App {
@@ -27,7 +26,7 @@ impl App {
 
     /// Whether the (angle, μ) map is out at the worker (the loop then wakes often for it).
     pub fn oblique_pending(&self) -> bool {
-        self.oblique.out.is_some()
+        self.oblique.job.out.is_some()
     }
 
     /// The ball as the library takes it: the preset's with the explorer's parameters, law and
@@ -253,10 +252,10 @@ impl App {
     pub(in crate::tui) fn refresh_oblique(&mut self) -> Option<Effect> {
         if self.view != View::Oblique {
             // a map stopped before it came back is asked again on the way back in
-            if self.oblique.out.is_some() {
+            if self.oblique.job.out.is_some() {
                 self.oblique.map_for = None;
             }
-            self.oblique.cancel();
+            self.oblique.job.cancel();
             return None;
         }
         let ball = self.oblique_ball();
@@ -303,22 +302,14 @@ impl App {
             return None;
         }
         let o = &mut self.oblique;
-        o.cancel();
-        o.stopped = None;
-        o.generation += 1;
+        o.job.renew();
         o.map = None;
         o.map_for = Some(spec.clone());
         if !self.background {
             o.map = map::compute(&spec, &AtomicBool::new(false));
             return None;
         }
-        let cancel = Arc::new(AtomicBool::new(false));
-        o.out = Some(Arc::clone(&cancel));
-        Some(Effect::ObliqueMap(Box::new(MapJob {
-            generation: o.generation,
-            work: spec,
-            cancel,
-        })))
+        Some(Effect::ObliqueMap(Box::new(o.job.hand_out(spec))))
     }
 
     /// The worker's map: kept when it is of the map asked last.
@@ -327,8 +318,8 @@ impl App {
         generation: u64,
         map: Result<map::ObliqueMap, String>,
     ) {
-        if generation == self.oblique.generation {
-            self.oblique.out = None;
+        if generation == self.oblique.job.generation {
+            self.oblique.job.out = None;
             self.oblique.map = Some(map);
         }
     }
