@@ -142,7 +142,7 @@ pub use standards::{
     standards,
 };
 pub use statics::{ITF_RETURN_PEAK, ReturnReading, StaticReading, StaticReport};
-pub use summary::ImpactSummary;
+pub use summary::{ImpactOutcome, ImpactSummary};
 pub use surface::surface_label;
 pub use surface_used::{SurfaceError, SurfaceUsed};
 pub use sweep::{sweep_zeta, sweep_zeta_watched};

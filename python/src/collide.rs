@@ -271,7 +271,7 @@ fn collide_with(
     let ball = choice.resolve(v0)?;
     let given = surface.is_some_and(|s| !s.is_none());
     let (used, _) = crate::surface::resolve(surface)?;
-    let named = used.name != bouncelab::target::surface::DEFAULT || used.mass.is_finite();
+    let named = used.name != bouncelab::target::surface::DEFAULT || used.mechanics.mass.is_finite();
     if target_preset.is_some() && given && named {
         return Err(crate::value_error(
             "target_preset is the target: a named surface and its mass do not apply (give \
@@ -286,14 +286,14 @@ fn collide_with(
         stiffness_given.then_some(target_stiffness),
         (target_damping != 0.0).then_some(target_damping),
     );
-    let pair = (used.stiffness, used.damping);
+    let pair = (used.mechanics.stiffness, used.mechanics.damping);
     let report = match (target_mass, target_preset) {
         (None, Some(name)) => {
             let other = crate::arguments::ball::preset_as_it_is(name)?;
             ball.collide_ball(&other, target_speed, pair)
         }
         (_, None) if target_mass.is_some() || given => ball.collide(&Target {
-            mass: used.mass,
+            mass: used.mechanics.mass,
             speed: target_speed,
             stiffness: pair.0,
             damping: pair.1,

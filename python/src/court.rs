@@ -63,7 +63,7 @@ ball_pyfunction! {
         let d = crate::answer::json(py, &ball.header())?.cast_into::<PyDict>()?;
         d.set_item("standard", "itf-court-pace")?;
         d.set_item("friction", friction)?;
-        if let Some(c) = surface.tangential_damping {
+        if let Some(c) = surface.mechanics.tangential_damping {
             d.set_item("tangential_damping", c)?;
         }
         d.update(crate::answer::json(py, &pace)?.cast::<pyo3::types::PyMapping>()?)?;
@@ -115,9 +115,9 @@ fn calibrate(
             "surface_cor and fit solve the surface's damping: give no damping in surface=".into(),
         ));
     }
-    let stiffness = given("stiffness").then_some(surface.stiffness);
+    let stiffness = given("stiffness").then_some(surface.mechanics.stiffness);
     let c = ball
-        .calibrate_court(e, stiffness, surface.mass)
+        .calibrate_court(e, stiffness, surface.mechanics.mass)
         .map_err(error)?;
     // as the command line calibrates and names it
     surface.calibrated(&c, how);

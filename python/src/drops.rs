@@ -119,8 +119,8 @@ fn drop_of<'py>(
     // today's drop, with a fitted preset's intervals; elsewhere none (they are the rigid
     // plate's)
     let (surface, _) = crate::surface::resolve(surface)?;
-    let target = surface.target();
-    let rigid = surface.is_rigid();
+    let target = surface.mechanics.target();
+    let rigid = surface.mechanics.is_rigid();
     let run = interrupt::detach_watched(py, |w| match rigid {
         true => ball.drop_test_watched(&setup, w),
         false => bouncelab::drop::drop_on_watched(&ball.drop_ball(), &setup, &target, w)?

@@ -155,6 +155,7 @@ impl Impact {
     ) -> Impact {
         let series = |s: Option<&[f64]>| s.map(|v| frozen_array(py, v.to_vec()));
         let h = [rep.t, rep.force, rep.indentation, rep.displacement].map(series);
+        let o = &rep.outcome;
         Impact {
             preset: rep.ball.preset.map(String::from),
             origin: match rep.ball.origin {
@@ -178,14 +179,14 @@ impl Impact {
             zp_bar: rep.zp_bar,
             radius: rep.radius,
             poisson_ratio: rep.poisson_ratio,
-            cor: rep.cor,
-            rebound: rep.rebound,
-            max_force: rep.max_force,
-            contact_time: rep.contact_time,
-            max_indentation: rep.max_indentation,
-            permanent_indentation: rep.permanent_indentation,
-            max_force_normalized: rep.max_force_normalized,
-            contact_time_normalized: rep.contact_time_normalized,
+            cor: o.cor,
+            rebound: o.rebound,
+            max_force: o.max_force,
+            contact_time: o.contact_time,
+            max_indentation: o.max_indentation,
+            permanent_indentation: o.permanent_indentation,
+            max_force_normalized: o.max_force_normalized,
+            contact_time_normalized: o.contact_time_normalized,
             measured: rep
                 .measured
                 .map(|m| [Some(m.v0), m.cor, m.max_force, m.contact_time]),

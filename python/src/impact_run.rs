@@ -35,7 +35,7 @@ pub(crate) fn impact_on(
     history: bool,
     samples: usize,
 ) -> PyResult<Py<Impact>> {
-    let rigid = surface.is_rigid();
+    let rigid = surface.mechanics.is_rigid();
     if rigid
         && !history
         && let Some(s) = ball.closed_form_summary()
@@ -67,7 +67,8 @@ pub(crate) fn impact_on(
         }),
         None => ball,
     };
-    let (target, n) = (surface.target(), if history { samples } else { 0 });
+    let target = surface.mechanics.target();
+    let n = if history { samples } else { 0 };
     let (r, intervals) = py
         .detach(|| {
             let r = ball.impact_on(&target, n)?;

@@ -254,7 +254,7 @@ fn build(
         slip_velocity: vc,
         spin: w,
         warnings,
-        tangential_damping: surface.tangential_damping,
+        tangential_damping: surface.mechanics.tangential_damping,
         surface: surface.into(),
         ball: Record::of(ball),
         conditions: Stated::of(ball),
@@ -300,12 +300,12 @@ ball_pyfunction! {
             angle_deg: angle,
             spin,
             friction,
-            tangential_stiffness: surface.tangential_stiffness,
+            tangential_stiffness: surface.mechanics.tangential_stiffness,
             inertia_factor,
         };
         let n = if history { samples } else { 0 };
         let r = ball
-            .oblique_on(&spec, surface.tangential_damping, n, &surface.target())
+            .oblique_on(&spec, surface.mechanics.tangential_damping, n, &surface.mechanics.target())
             .map_err(error)?;
         build(py, &ball, &spec, r, surface)
     }
@@ -331,7 +331,7 @@ pub(crate) fn tangential_surface(
         tangential[i] = a.or(g);
     }
     let surface = surface.with_tangential(tangential);
-    let Some(friction) = surface.friction else {
+    let Some(friction) = surface.mechanics.friction else {
         return Err(value_error(format!(
             "invalid friction: the surface {} gives no μ (docs/surfaces.md): give friction",
             surface.name

@@ -169,15 +169,15 @@ macro_rules! flight_pyfunction {
                     launch: Launch { height: 0.0, speed: 0.0, elevation_deg: 0.0, spin: 0.0 },
                     ends: Ends { bounces, distance, time },
                     friction,
-                    tangential_stiffness: $surface.tangential_stiffness,
+                    tangential_stiffness: $surface.mechanics.tangential_stiffness,
                     inertia_factor,
-                    tangential_damping: $surface.tangential_damping,
+                    tangential_damping: $surface.mechanics.tangential_damping,
                     air_density,
                     drag_coefficient,
                     lift_coefficient,
                     spin_decay,
                     samples: 0,
-                    surface: $surface.target(),
+                    surface: $surface.mechanics.target(),
                     net: net_of(net)?,
                 };
                 $body

@@ -8,6 +8,7 @@
 use crate::value_error;
 use bouncelab::api::{SurfaceError, SurfaceUsed};
 use bouncelab::catalog::surfaces as catalog;
+use bouncelab::target::surface::SurfaceMechanics;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyString};
 
@@ -65,12 +66,13 @@ pub(crate) fn to_dict<'py>(py: Python<'py>, s: &SurfaceUsed) -> PyResult<Bound<'
     let d = PyDict::new(py);
     d.set_item("name", &s.name)?;
     d.set_item("origin", &s.origin)?;
-    d.set_item("stiffness", s.stiffness)?;
-    d.set_item("damping", s.damping)?;
-    d.set_item("mass", s.mass)?;
-    d.set_item("friction", s.friction)?;
-    d.set_item("tangential_stiffness", s.tangential_stiffness)?;
-    d.set_item("tangential_damping", s.tangential_damping)?;
+    let m = &s.mechanics;
+    d.set_item("stiffness", m.stiffness)?;
+    d.set_item("damping", m.damping)?;
+    d.set_item("mass", m.mass)?;
+    d.set_item("friction", m.friction)?;
+    d.set_item("tangential_stiffness", m.tangential_stiffness)?;
+    d.set_item("tangential_damping", m.tangential_damping)?;
     d.set_item("overrides", &s.overrides)?;
     Ok(d)
 }
@@ -97,12 +99,14 @@ pub(crate) fn from_dict(d: &Bound<'_, PyAny>) -> PyResult<SurfaceUsed> {
     Ok(SurfaceUsed {
         name: get("name")?.extract()?,
         origin: get("origin")?.extract()?,
-        stiffness: inf("stiffness")?,
-        damping: get("damping")?.extract()?,
-        mass: inf("mass")?,
-        friction: get("friction")?.extract()?,
-        tangential_stiffness: get("tangential_stiffness")?.extract()?,
-        tangential_damping: get("tangential_damping")?.extract()?,
+        mechanics: SurfaceMechanics {
+            stiffness: inf("stiffness")?,
+            damping: get("damping")?.extract()?,
+            mass: inf("mass")?,
+            friction: get("friction")?.extract()?,
+            tangential_stiffness: get("tangential_stiffness")?.extract()?,
+            tangential_damping: get("tangential_damping")?.extract()?,
+        },
         overrides: get("overrides")?.extract()?,
     })
 }

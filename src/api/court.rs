@@ -51,12 +51,9 @@ impl Ball {
             self.label(),
             surface.label()
         );
-        let tangential = (
-            surface.tangential_stiffness,
-            inertia_factor,
-            surface.tangential_damping,
-        );
-        let mut pace = self.court_pace_on(friction, tangential, &surface.target())?;
+        let m = &surface.mechanics;
+        let tangential = (m.tangential_stiffness, inertia_factor, m.tangential_damping);
+        let mut pace = self.court_pace_on(friction, tangential, &m.target())?;
         pace.warnings.extend(assumed_rigid_warning(surface));
         Ok((pace, computed_on))
     }
@@ -197,7 +194,8 @@ const ASSUMED_RIGID: &str = "ASSUMED rigid";
 /// on a user's surface (its file says what it assumed).
 pub fn assumed_rigid_warning(surface: &super::SurfaceUsed) -> Option<String> {
     let own_stiffness = !surface.overrides.iter().any(|o| o == "stiffness");
-    if surface.origin != "embedded" || !surface.stiffness.is_infinite() || !own_stiffness {
+    let rigid = surface.mechanics.stiffness.is_infinite();
+    if surface.origin != "embedded" || !rigid || !own_stiffness {
         return None;
     }
     let named = crate::target::surface::Surface::embedded()

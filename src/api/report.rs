@@ -97,22 +97,9 @@ pub struct ImpactReport<'a> {
     pub zeta: f64,
     /// z̄_p = z_p ω0/v0.
     pub zp_bar: f64,
-    /// e.
-    pub cor: f64,
-    /// Whether the ball left the wall.
-    pub rebound: bool,
-    /// F_m, N.
-    pub max_force: f64,
-    /// t_f, s (`None` without a rebound).
-    pub contact_time: Option<f64>,
-    /// z_m, m.
-    pub max_indentation: f64,
-    /// z_f, m.
-    pub permanent_indentation: f64,
-    /// F̄_m.
-    pub max_force_normalized: f64,
-    /// τ_f (`None` without a rebound).
-    pub contact_time_normalized: Option<f64>,
+    /// e, rebound, F_m, t_f, z_m, z_f, F̄_m, τ_f.
+    #[serde(flatten)]
+    pub outcome: super::ImpactOutcome,
     /// What was measured (presets only).
     pub measured: Option<MeasuredAt>,
     /// The energy budget, when the run audited it.
@@ -180,14 +167,7 @@ impl<'a> ImpactReport<'a> {
             lambda: n.lambda,
             zeta: n.zeta,
             zp_bar: n.zp_bar,
-            cor: s.cor,
-            rebound: s.rebound,
-            max_force: s.max_force,
-            contact_time: s.contact_time,
-            max_indentation: s.max_indentation,
-            permanent_indentation: s.permanent_indentation,
-            max_force_normalized: s.max_force_normalized,
-            contact_time_normalized: s.contact_time_normalized,
+            outcome: s.outcome,
             measured: ball.measured.as_ref().map(|m| MeasuredAt {
                 v0: m.v0,
                 cor: m.cor,

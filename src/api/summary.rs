@@ -13,14 +13,12 @@ use super::Ball;
 use crate::model::contact::{Contact, ContactLaw};
 use crate::model::params::Normalized;
 use crate::solver::{ImpactResponse, Method};
+use serde::Serialize;
 
-/// What `run` reports of one impact apart from its energy budget, its warnings and its
-/// history, SI units: the fields of [`ImpactResponse`] of the same names.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct ImpactSummary {
-    /// The solver whose answer this is: [`Method::Exact`] for the linear law's closed forms
-    /// too (the exact solution of the same flow, evaluated in closed form).
-    pub method: Method,
+/// What one impact came to, SI units: the fields of [`ImpactResponse`] of the same names; the
+/// JSON answer's keys `cor` … `contact_time_normalized` ([`super::ImpactReport`]).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct ImpactOutcome {
     /// e.
     pub cor: f64,
     /// Whether the ball left the wall.
@@ -37,6 +35,17 @@ pub struct ImpactSummary {
     pub max_force_normalized: f64,
     /// τ_f (`None` without a rebound).
     pub contact_time_normalized: Option<f64>,
+}
+
+/// What `run` reports of one impact apart from its energy budget, its warnings and its
+/// history, SI units: the fields of [`ImpactResponse`] of the same names.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ImpactSummary {
+    /// The solver whose answer this is: [`Method::Exact`] for the linear law's closed forms
+    /// too (the exact solution of the same flow, evaluated in closed form).
+    pub method: Method,
+    /// e, rebound, F_m, t_f, z_m, z_f, F̄_m, τ_f.
+    pub outcome: ImpactOutcome,
     /// λ, ζ, z̄_p, κ.
     pub normalized: Normalized,
 }
@@ -45,14 +54,16 @@ impl From<&ImpactResponse> for ImpactSummary {
     fn from(r: &ImpactResponse) -> ImpactSummary {
         ImpactSummary {
             method: r.method,
-            cor: r.cor,
-            rebound: r.rebound,
-            max_force: r.max_force,
-            contact_time: r.contact_time,
-            max_indentation: r.max_indentation,
-            permanent_indentation: r.permanent_indentation,
-            max_force_normalized: r.max_force_normalized,
-            contact_time_normalized: r.contact_time_normalized,
+            outcome: ImpactOutcome {
+                cor: r.cor,
+                rebound: r.rebound,
+                max_force: r.max_force,
+                contact_time: r.contact_time,
+                max_indentation: r.max_indentation,
+                permanent_indentation: r.permanent_indentation,
+                max_force_normalized: r.max_force_normalized,
+                contact_time_normalized: r.contact_time_normalized,
+            },
             normalized: r.normalized,
         }
     }
@@ -68,7 +79,7 @@ impl Ball {
     /// let golf = bouncelab::Ball::from_preset("golf")?;
     /// let s = golf.closed_form_summary().expect("golf does not flatten at 1.47 m/s");
     /// let r = golf.impact()?;
-    /// assert!((s.cor - r.cor).abs() <= 1e-12 * r.cor);
+    /// assert!((s.outcome.cor - r.cor).abs() <= 1e-12 * r.cor);
     /// # Ok::<(), bouncelab::BallError>(())
     /// ```
     pub fn closed_form_summary(&self) -> Option<ImpactSummary> {
@@ -99,14 +110,16 @@ impl Ball {
         let (t, z, f) = (1.0 / w0, p.v0 / w0, p.mass * p.v0 * w0);
         Some(ImpactSummary {
             method: Method::Exact,
-            cor: s.cor,
-            rebound: true,
-            max_force: s.max_force * f,
-            contact_time: Some(s.contact_time * t),
-            max_indentation: z_m * z,
-            permanent_indentation: z_f * z,
-            max_force_normalized: s.max_force,
-            contact_time_normalized: Some(s.contact_time),
+            outcome: ImpactOutcome {
+                cor: s.cor,
+                rebound: true,
+                max_force: s.max_force * f,
+                contact_time: Some(s.contact_time * t),
+                max_indentation: z_m * z,
+                permanent_indentation: z_f * z,
+                max_force_normalized: s.max_force,
+                contact_time_normalized: Some(s.contact_time),
+            },
             normalized: n,
         })
     }

@@ -7,8 +7,7 @@
 use crate::ParamError;
 use crate::catalog::Origin;
 use crate::catalog::surfaces::SurfaceEntry;
-use crate::target::Target;
-use crate::target::surface::Surface;
+use crate::target::surface::{Surface, SurfaceMechanics};
 use serde::Serialize;
 
 /// The surface a command ran on: the named one with the explicit numbers over it; the JSON
@@ -19,18 +18,10 @@ pub struct SurfaceUsed {
     pub name: String,
     /// `embedded` or the file it was read from.
     pub origin: String,
-    /// K_s, N/m (`null`: rigid).
-    pub stiffness: f64,
-    /// c_s, kg/s.
-    pub damping: f64,
-    /// The moving mass, kg (`null`: fixed).
-    pub mass: f64,
-    /// μ the answer used (`null` where the command uses none).
-    pub friction: Option<f64>,
-    /// K_t the answer used, N/m.
-    pub tangential_stiffness: Option<f64>,
-    /// c_t the answer used, kg/s.
-    pub tangential_damping: Option<f64>,
+    /// The numbers the answer ran on: K_s, c_s, M (`null` for ∞: rigid, fixed), and μ, K_t,
+    /// c_t (`null` where the command uses none).
+    #[serde(flatten)]
+    pub mechanics: SurfaceMechanics,
     /// The quantities given over the surface's own, in the order above.
     pub overrides: Vec<String>,
 }
@@ -60,7 +51,7 @@ impl SurfaceUsed {
     /// from the default rigid plate, `NAME-calibrated` from a named one
     /// (tests/physics/surfaces.rs, `a_calibrated_court_is_named_for_what_it_is`).
     pub fn calibrated(&mut self, c: &super::CourtCalibration, how: &str) {
-        (self.stiffness, self.damping) = (c.stiffness, c.damping);
+        (self.mechanics.stiffness, self.mechanics.damping) = (c.stiffness, c.damping);
         self.overrides.retain(|o| o != "stiffness");
         // first, where the normal quantities it stands for are listed (before μ, K_t, c_t)
         self.overrides.insert(0, "calibrated".into());
@@ -75,16 +66,10 @@ impl SurfaceUsed {
 
     /// The catalog entry's numbers, nothing overridden.
     pub fn from_entry(e: &SurfaceEntry) -> SurfaceUsed {
-        let s = &e.surface;
         SurfaceUsed {
-            name: s.name.clone(),
+            name: e.surface.name.clone(),
             origin: e.origin.to_string(),
-            stiffness: s.stiffness,
-            damping: s.damping,
-            mass: s.mass,
-            friction: s.friction,
-            tangential_stiffness: s.tangential_stiffness,
-            tangential_damping: s.tangential_damping,
+            mechanics: e.surface.mechanics,
             overrides: Vec::new(),
         }
     }
@@ -113,29 +98,16 @@ impl SurfaceUsed {
         SurfaceUsed {
             name: "bat".into(),
             origin: "given (the bat's effective mass and barrel)".into(),
-            stiffness: stiffness.unwrap_or(f64::INFINITY),
-            damping: damping.unwrap_or(0.0),
-            mass,
-            friction: None,
-            tangential_stiffness: None,
-            tangential_damping: None,
+            mechanics: SurfaceMechanics {
+                stiffness: stiffness.unwrap_or(f64::INFINITY),
+                damping: damping.unwrap_or(0.0),
+                mass,
+                friction: None,
+                tangential_stiffness: None,
+                tangential_damping: None,
+            },
             overrides,
         }
-    }
-
-    /// The normal part: a target at rest.
-    pub fn target(&self) -> Target {
-        Target {
-            mass: self.mass,
-            speed: 0.0,
-            stiffness: self.stiffness,
-            damping: self.damping,
-        }
-    }
-
-    /// Whether the answer is the rigid plate's (rigid and immovable).
-    pub fn is_rigid(&self) -> bool {
-        self.stiffness == f64::INFINITY && self.mass == f64::INFINITY
     }
 
     /// One line for a text header: "surface steel-plate (rigid, immovable)" or with its
@@ -144,11 +116,12 @@ impl SurfaceUsed {
     /// tangential ones: μ is in the line as its number, K_t and c_t are the command's own lines
     /// (the text headers stay as they were when μ joined `overrides`).
     pub fn label(&self) -> String {
-        let normal = (self.stiffness, self.damping, self.mass);
+        let m = &self.mechanics;
+        let normal = (m.stiffness, m.damping, m.mass);
         let given: Vec<&String> = (self.overrides.iter())
             .filter(|o| !Self::TANGENTIAL.contains(&o.as_str()))
             .collect();
-        super::surface_label(&self.name, normal, self.friction, &given)
+        super::surface_label(&self.name, normal, m.friction, &given)
     }
 
     /// "standard NAME: the standard's test is on …; this drop is on …" when this surface gives
@@ -156,7 +129,7 @@ impl SurfaceUsed {
     /// (`test_surface`, the standard's own words) the model runs on a rigid plate
     /// (tests/cli/issue52_trial.rs, `a_drop_on_another_surface_says_so`); `None` when rigid.
     pub fn off_standard_warning(&self, standard: &str, test_surface: &str) -> Option<String> {
-        (!self.is_rigid()).then(|| {
+        (!self.mechanics.is_rigid()).then(|| {
             format!(
                 "standard {standard}: the standard's test is on a {test_surface}; this drop is \
                  on {}: the verdict is the ball's on that surface, not the standard's",
@@ -169,7 +142,8 @@ impl SurfaceUsed {
     /// override, the result checked: every number in range, and no damping given for a
     /// surface that stays rigid.
     pub fn with_normal(mut self, given: [Option<f64>; 3]) -> Result<SurfaceUsed, SurfaceError> {
-        let slots = [&mut self.stiffness, &mut self.damping, &mut self.mass];
+        let m = &mut self.mechanics;
+        let slots = [&mut m.stiffness, &mut m.damping, &mut m.mass];
         let mut overrides = Vec::new();
         for ((slot, value), name) in slots.into_iter().zip(given).zip(Self::NORMAL) {
             let Some(v) = value else { continue };
@@ -177,9 +151,10 @@ impl SurfaceUsed {
             *slot = v;
         }
         self.overrides.extend(overrides);
-        self.target().validate().map_err(SurfaceError::Invalid)?;
-        if self.stiffness.is_infinite() && self.damping > 0.0 && given[1].is_some() {
-            return Err(SurfaceError::RigidDashpot(self.damping));
+        let m = &self.mechanics;
+        m.target().validate().map_err(SurfaceError::Invalid)?;
+        if m.stiffness.is_infinite() && m.damping > 0.0 && given[1].is_some() {
+            return Err(SurfaceError::RigidDashpot(m.damping));
         }
         Ok(self)
     }
@@ -195,12 +170,12 @@ impl SurfaceUsed {
         damping: Option<f64>,
     ) -> SurfaceUsed {
         if let Some(m) = mass {
-            self.mass = m;
+            self.mechanics.mass = m;
             self.overrides.push("target_mass".into());
         }
         if let Some(k) = stiffness {
-            self.stiffness = k;
-            self.damping = damping.unwrap_or(0.0);
+            self.mechanics.stiffness = k;
+            self.mechanics.damping = damping.unwrap_or(0.0);
             self.overrides.push("target_stiffness".into());
             if damping.is_some() {
                 self.overrides.push("target_damping".into());
@@ -214,10 +189,11 @@ impl SurfaceUsed {
     /// surface's own or where it has none (`court --surface clay --friction 0.8`: μ came from
     /// the command line, tests/cli/court_assumed.rs).
     pub fn with_tangential(mut self, given: [Option<f64>; 3]) -> SurfaceUsed {
+        let m = &mut self.mechanics;
         let slots = [
-            &mut self.friction,
-            &mut self.tangential_stiffness,
-            &mut self.tangential_damping,
+            &mut m.friction,
+            &mut m.tangential_stiffness,
+            &mut m.tangential_damping,
         ];
         let mut overrides = Vec::new();
         for ((slot, value), name) in slots.into_iter().zip(given).zip(Self::TANGENTIAL) {

@@ -106,7 +106,7 @@ fn reports_carry_the_balls_values() {
     let rep = ImpactReport::new(&ball, &r, true);
     assert_eq!(rep.ball.preset, Some("superball"));
     assert_eq!(
-        (rep.mass, rep.c, rep.cor),
+        (rep.mass, rep.c, rep.outcome.cor),
         (0.0374, ball.params.damping, r.cor)
     );
     assert_eq!(rep.lambda, ball.params.k_r / ball.params.k_p);

@@ -69,7 +69,7 @@ pub fn run(a: &CollideArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         a.surface
             .resolve()?
             .with_target(a.target_mass, a.target_stiffness, a.target_damping);
-    let surface = (used.stiffness, used.damping);
+    let surface = (used.mechanics.stiffness, used.mechanics.damping);
     let report = match &a.target_preset {
         Some(name) => {
             let entry = ball::select(Some(name), a.ball.choice.config.as_deref())?;
@@ -77,7 +77,7 @@ pub fn run(a: &CollideArgs, out: &mut dyn Write) -> anyhow::Result<()> {
             ball.collide_ball(&other, a.target_speed, surface)?
         }
         None => ball.collide(&Target {
-            mass: used.mass,
+            mass: used.mechanics.mass,
             speed: a.target_speed,
             stiffness: surface.0,
             damping: surface.1,

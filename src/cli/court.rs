@@ -90,7 +90,11 @@ pub fn run(a: &CourtArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     let target_cor = measured.as_ref().map(|m| m.cor_normal).or(a.surface_cor);
     let calibration = match target_cor {
         Some(e) => {
-            let c = ball.calibrate_court(e, a.bounce.surface.surface_stiffness, surface.mass)?;
+            let c = ball.calibrate_court(
+                e,
+                a.bounce.surface.surface_stiffness,
+                surface.mechanics.mass,
+            )?;
             let how = match a.fit.as_deref() {
                 Some(p) => format!("court --fit {}", p.display()),
                 None => "court --surface-cor".to_string(),
@@ -109,7 +113,7 @@ pub fn run(a: &CourtArgs, out: &mut dyn Write) -> anyhow::Result<()> {
                 ball: ball.header(),
                 standard: ITF_COURT_PACE.name,
                 friction,
-                tangential_damping: surface.tangential_damping,
+                tangential_damping: surface.mechanics.tangential_damping,
                 pace: &pace,
                 surface: &surface,
                 calibration: calibration.as_ref(),

@@ -124,17 +124,17 @@ pub fn run(a: &DropArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     // the command with exit 130 before anything is printed (cli_progress_pty.rs)
     let watch = super::budget::Watcher::new("bounces");
     let surface = a.surface.resolve()?;
-    let run = crate::drop::drop_on_watched(&dball, &setup, &surface.target(), &watch)
+    let run = crate::drop::drop_on_watched(&dball, &setup, &surface.mechanics.target(), &watch)
         .map_err(drop_error)?
         .ok_or(super::budget::Interrupted)?;
     // the intervals are the fitted parameters' on the rigid plate: none on another surface
-    let bands = match surface.is_rigid() {
+    let bands = match surface.mechanics.is_rigid() {
         true => bounce_intervals(&b, &setup, &watch)?,
         false => Vec::new(),
     };
     drop(watch);
     let mut verdict = standard
-        .map(|s| s.judge_on(&dball, air, &surface.target()))
+        .map(|s| s.judge_on(&dball, air, &surface.mechanics.target()))
         .transpose()
         .map_err(drop_error)?;
     let statics = static_standard.map(|d| (d, d.deflection(&dball, dball.law)));
@@ -175,7 +175,7 @@ pub fn run(a: &DropArgs, out: &mut dyn Write) -> anyhow::Result<()> {
                 label.push('\n');
                 label.push_str(&line);
             }
-            if !surface.is_rigid() || a.surface.surface.is_some() {
+            if !surface.mechanics.is_rigid() || a.surface.surface.is_some() {
                 label = format!("{label}\n{}", surface.label());
             }
             if let Some(line) = b.conditions_line() {

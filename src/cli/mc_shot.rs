@@ -146,15 +146,15 @@ pub fn run(s: &ShotMcArgs, a: &Mc<'_>, out: &mut dyn Write) -> anyhow::Result<()
             time: s.time,
         },
         friction,
-        tangential_stiffness: surface.tangential_stiffness,
+        tangential_stiffness: surface.mechanics.tangential_stiffness,
         inertia_factor: s.tangential.inertia_factor,
-        tangential_damping: surface.tangential_damping,
+        tangential_damping: surface.mechanics.tangential_damping,
         air_density: s.air_density.unwrap_or(crate::drop::flight::AIR_DENSITY),
         drag_coefficient: s.drag_coefficient,
         lift_coefficient: s.lift_coefficient,
         spin_decay: s.spin_decay,
         samples: 0,
-        surface: surface.target(),
+        surface: surface.mechanics.target(),
         net: s.net,
     };
     if let Some(d) = s.after_bounce {

@@ -107,7 +107,7 @@ pub fn surface_of(
         tangential.tangential_stiffness,
         tangential.tangential_damping,
     ]);
-    let Some(mu) = used.friction else {
+    let Some(mu) = used.mechanics.friction else {
         anyhow::bail!(
             "invalid friction: the surface {} gives no μ (docs/surfaces.md): give --friction",
             used.name
@@ -124,13 +124,14 @@ pub fn run(a: &ObliqueArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         angle_deg: a.angle,
         spin: a.spin,
         friction,
-        tangential_stiffness: surface.tangential_stiffness,
+        tangential_stiffness: surface.mechanics.tangential_stiffness,
         inertia_factor: a.bounce.tangential.inertia_factor,
     };
     let samples = a.history.samples()?;
-    let damping = surface.tangential_damping;
-    let r = ball.oblique_on(&spec, damping, samples, &surface.target())?;
+    let damping = surface.mechanics.tangential_damping;
+    let r = ball.oblique_on(&spec, damping, samples, &surface.mechanics.target())?;
     let k_t = surface
+        .mechanics
         .tangential_stiffness
         .or(ball.tangential_stiffness())
         .unwrap_or(f64::NAN);

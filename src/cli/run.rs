@@ -107,9 +107,9 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     let surface = args.surface.resolve()?;
     // the library checks the number of samples (2 … MAX_SAMPLES)
     let samples = args.history.samples()?;
-    let r = ball.impact_on(&surface.target(), samples)?;
+    let r = ball.impact_on(&surface.mechanics.target(), samples)?;
     // the preset's measurement is the rigid plate's: not this impact's on a surface that gives
-    let elsewhere = (!surface.is_rigid() && ball.measured.is_some()).then(|| {
+    let elsewhere = (!surface.mechanics.is_rigid() && ball.measured.is_some()).then(|| {
         format!(
             "the measurement is on the rigid plate, this impact on surface {}",
             surface.name
@@ -141,7 +141,7 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         TextJsonCsv::Csv => summary_csv(out, &ball, &r)?,
         TextJsonCsv::Text => {
             super::run_text::write(out, &ball, &r, intervals.as_ref(), args.history.history)?;
-            if !surface.is_rigid() || args.surface.surface.is_some() {
+            if !surface.mechanics.is_rigid() || args.surface.surface.is_some() {
                 writeln!(out, "{}", surface.label())?;
             }
             if let Some(why) = &elsewhere {

@@ -98,15 +98,15 @@ impl ShotArgs {
                 time: self.time,
             },
             friction,
-            tangential_stiffness: surface.tangential_stiffness,
+            tangential_stiffness: surface.mechanics.tangential_stiffness,
             inertia_factor: self.bounce.tangential.inertia_factor,
-            tangential_damping: surface.tangential_damping,
+            tangential_damping: surface.mechanics.tangential_damping,
             air_density: self.air_density,
             drag_coefficient: self.drag_coefficient,
             lift_coefficient: self.lift_coefficient,
             spin_decay: self.spin_decay,
             samples: self.samples.unwrap_or(0),
-            surface: surface.target(),
+            surface: surface.mechanics.target(),
             net: self.net,
         }
     }

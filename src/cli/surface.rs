@@ -120,9 +120,9 @@ pub fn list(a: &SurfacesArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         .to_vec(),
     ];
     for e in &all {
-        let s = &e.surface;
+        let s = &e.surface.mechanics;
         t.push(vec![
-            s.name.clone(),
+            e.surface.name.clone(),
             inf(s.stiffness, "rigid"),
             human(s.damping, 4),
             inf(s.mass, "fixed"),

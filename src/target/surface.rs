@@ -55,6 +55,43 @@ pub struct Source {
     pub source: String,
 }
 
+/// What a surface does to a ball that meets it, SI units: its normal give and its tangential
+/// contact. A surface file's numbers, and the numbers an answer ran on
+/// (`crate::api::SurfaceUsed`); serialized as six fields of the object holding it.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct SurfaceMechanics {
+    /// K_s (N/m); ∞ for a rigid surface (JSON `null`).
+    pub stiffness: f64,
+    /// c_s (kg/s) in parallel with K_s; 0 for none.
+    pub damping: f64,
+    /// The mass that moves with the surface (kg); ∞ for a fixed one (JSON `null`).
+    pub mass: f64,
+    /// μ (`None`: the surface gives none, or the answer used none).
+    pub friction: Option<f64>,
+    /// K_t, N/m (`None`: as μ's).
+    pub tangential_stiffness: Option<f64>,
+    /// c_t, kg/s (`None`: as μ's).
+    pub tangential_damping: Option<f64>,
+}
+
+impl SurfaceMechanics {
+    /// Whether the surface neither gives nor moves (K_s = ∞, M = ∞): the ball's normal impact
+    /// on it is `run`'s.
+    pub fn is_rigid(&self) -> bool {
+        self.stiffness == f64::INFINITY && self.mass == f64::INFINITY
+    }
+
+    /// The surface's normal part as a target at rest (docs/targets.md §1).
+    pub fn target(&self) -> Target {
+        Target {
+            mass: self.mass,
+            speed: 0.0,
+            stiffness: self.stiffness,
+            damping: self.damping,
+        }
+    }
+}
+
 /// A surface, SI units.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Surface {
@@ -62,18 +99,9 @@ pub struct Surface {
     pub name: String,
     /// One line.
     pub description: String,
-    /// K_s (N/m); ∞ for a rigid surface.
-    pub stiffness: f64,
-    /// c_s (kg/s) in parallel with K_s; 0 for none.
-    pub damping: f64,
-    /// The mass that moves with the surface (kg); ∞ for a fixed one.
-    pub mass: f64,
-    /// μ, when the surface gives it.
-    pub friction: Option<f64>,
-    /// K_t (N/m), when the surface gives it.
-    pub tangential_stiffness: Option<f64>,
-    /// c_t (kg/s), when the surface gives it.
-    pub tangential_damping: Option<f64>,
+    /// Its numbers: a quantity the file does not give is rigid, immovable, or `None`.
+    #[serde(flatten)]
+    pub mechanics: SurfaceMechanics,
     /// Where each number comes from.
     pub sources: Vec<Source>,
 }
@@ -203,12 +231,14 @@ impl Surface {
         Ok(Surface {
             name: name.clone(),
             description: file.description,
-            stiffness: get(&n.stiffness).unwrap_or(f64::INFINITY),
-            damping: get(&n.damping).unwrap_or(0.0),
-            mass: get(&n.mass).unwrap_or(f64::INFINITY),
-            friction: get(&t.friction),
-            tangential_stiffness: get(&t.stiffness),
-            tangential_damping: get(&t.damping),
+            mechanics: SurfaceMechanics {
+                stiffness: get(&n.stiffness).unwrap_or(f64::INFINITY),
+                damping: get(&n.damping).unwrap_or(0.0),
+                mass: get(&n.mass).unwrap_or(f64::INFINITY),
+                friction: get(&t.friction),
+                tangential_stiffness: get(&t.stiffness),
+                tangential_damping: get(&t.damping),
+            },
             sources: file
                 .sources
                 .into_iter()
@@ -240,22 +270,6 @@ impl Surface {
                 .expect("embedded surfaces are tested")
         });
         PLATE.clone()
-    }
-
-    /// Whether the surface neither gives nor moves (K_s = ∞, M = ∞): the ball's normal impact
-    /// on it is `run`'s.
-    pub fn is_rigid(&self) -> bool {
-        self.stiffness == f64::INFINITY && self.mass == f64::INFINITY
-    }
-
-    /// The surface's normal part as a target at rest (docs/targets.md §1).
-    pub fn target(&self) -> Target {
-        Target {
-            mass: self.mass,
-            speed: 0.0,
-            stiffness: self.stiffness,
-            damping: self.damping,
-        }
     }
 }
 

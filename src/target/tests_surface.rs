@@ -14,8 +14,8 @@ fn every_embedded_surface_parses_and_cites_its_sources() {
     assert_eq!(names.len(), all.len(), "names are unique");
     assert_eq!(all[0].name, DEFAULT);
     let plate = Surface::rigid_plate();
-    assert!(plate.is_rigid());
-    assert_eq!(plate.target(), super::Target::wall());
+    assert!(plate.mechanics.is_rigid());
+    assert_eq!(plate.mechanics.target(), super::Target::wall());
 }
 
 /// Parse `text` and the error it gives, as `origin:line:column: message`.
@@ -37,7 +37,7 @@ fn a_number_without_a_source_is_refused_where_it_is() {
          [[sources]]\nquantity = \"stiffness\"\nsource = \"a\"\n[[sources]]\n\
          quantity = \"damping\"\nsource = \"b\"\n[[sources]]\nquantity = \"friction\"\nsource = \"c\"\n"
     );
-    let s = Surface::parse(&ok, "s.toml").unwrap();
+    let s = Surface::parse(&ok, "s.toml").unwrap().mechanics;
     assert_eq!((s.stiffness, s.damping, s.mass), (1e5, 20.0, f64::INFINITY));
     assert_eq!(s.friction, Some(0.5));
     assert_eq!(s.tangential_stiffness, None);

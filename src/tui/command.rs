@@ -87,8 +87,8 @@ fn picked_surface(setting: &Setting) -> (Vec<String>, crate::target::Target, Opt
     match &setting.surface {
         Some(s) => (
             vec!["--surface".into(), shell_word(&s.name)],
-            s.target(),
-            s.tangential_damping,
+            s.mechanics.target(),
+            s.mechanics.tangential_damping,
         ),
         None => (Vec::new(), crate::target::Target::wall(), None),
     }

@@ -10,7 +10,7 @@
 
 use crate::catalog::Origin;
 use crate::catalog::surfaces::{self, SurfaceEntry};
-use crate::target::surface::Surface;
+use crate::target::surface::SurfaceMechanics;
 use crate::tui::format::value;
 
 /// The open surface picker: every surface, the highlighted one, and why the user surfaces
@@ -54,7 +54,7 @@ fn shown(x: f64) -> String {
 /// The surface's numbers in one line, as the picker and the readouts write them: "K_s ∞ N/m,
 /// c_s 0 kg/s, M ∞ kg, μ 0.6000" (μ, K_t, c_t where it gives them; "rigid" for K_s = ∞ and
 /// M = ∞ with no more).
-pub fn numbers(s: &Surface) -> String {
+pub fn numbers(s: &SurfaceMechanics) -> String {
     let mut parts = Vec::new();
     if s.stiffness.is_infinite() {
         parts.push("rigid".to_string());

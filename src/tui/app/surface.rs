@@ -28,7 +28,7 @@ impl App {
             return;
         };
         let name = entry.surface.name.clone();
-        let said = numbers(&entry.surface);
+        let said = numbers(&entry.surface.mechanics);
         match self.on_surface(entry.surface) {
             Ok(()) => self.info(format!("surface {name}: {said}")),
             Err(why) => self.error(format!("surface {name}: {why}")),
@@ -60,8 +60,8 @@ impl App {
     /// surface's target would not meet or the model would not take them.
     pub(in crate::tui) fn on_surface(&mut self, surface: Surface) -> Result<(), String> {
         let mut next = self.setting.clone();
-        next.target = surface.target();
-        next.tangential_damping = surface.tangential_damping;
+        next.target = surface.mechanics.target();
+        next.tangential_damping = surface.mechanics.tangential_damping;
         next.target
             .validate()
             .map_err(|e| crate::tui::physical::refusal(&e))?;
@@ -69,12 +69,12 @@ impl App {
         let mut oblique = self.oblique.values;
         // its μ is the flight view's bounce's too (the form's μ sets both)
         let mut flight = self.flight.values;
-        if let Some(mu) = surface.friction {
+        if let Some(mu) = surface.mechanics.friction {
             oblique.friction = mu;
             flight.friction = mu;
         }
-        if surface.tangential_stiffness.is_some() {
-            oblique.tangential_stiffness = surface.tangential_stiffness;
+        if surface.mechanics.tangential_stiffness.is_some() {
+            oblique.tangential_stiffness = surface.mechanics.tangential_stiffness;
         }
         next.surface = Some(surface);
         if next != self.setting || oblique != self.oblique.values || flight != self.flight.values {

@@ -77,9 +77,9 @@ impl Readout<'_> {
             None => (plate(), false),
         };
         let mut lines = Vec::new();
-        let on_it = t == s.target();
+        let on_it = t == s.mechanics.target();
         if picked || on_it {
-            let own = crate::tui::surface::numbers(&s);
+            let own = crate::tui::surface::numbers(&s.mechanics);
             lines.push(Line::styled(
                 format!(" surface {}: {own}", s.name),
                 self.theme.dim(),

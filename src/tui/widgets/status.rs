@@ -59,7 +59,7 @@ pub fn surface_words(setting: &crate::tui::setting::Setting) -> String {
         .surface
         .clone()
         .unwrap_or_else(crate::target::surface::Surface::rigid_plate);
-    if setting.target == s.target() {
+    if setting.target == s.mechanics.target() {
         s.name
     } else {
         "a pair target".into()

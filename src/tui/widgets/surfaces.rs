@@ -21,6 +21,6 @@ impl Listed for SurfaceEntry {
     }
     /// Its numbers (K_s, c_s, M, μ, K_t, c_t where it gives them).
     fn detail(&self) -> String {
-        numbers(&self.surface)
+        numbers(&self.surface.mechanics)
     }
 }

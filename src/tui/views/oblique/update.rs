@@ -72,22 +72,19 @@ impl App {
         let s = &self.setting;
         let t = self.oblique_surface();
         let plain = t == crate::target::Target::wall() && s.tangential_damping.is_none();
-        let shown = crate::target::surface::Surface {
+        let shown = crate::target::surface::SurfaceMechanics {
             stiffness: t.stiffness,
             damping: t.damping,
             mass: t.mass,
             friction: None,
             tangential_stiffness: None,
             tangential_damping: s.tangential_damping,
-            ..s.surface
-                .clone()
-                .unwrap_or_else(crate::target::surface::Surface::rigid_plate)
         };
         // none picked: the rigid steel plate by its name while the form left it as it is
         // (issue 53 item 6: every answer names its surface)
         let name = match &s.surface {
             Some(x) => x.name.clone(),
-            None if plain => shown.name.clone(),
+            None if plain => crate::target::surface::DEFAULT.into(),
             None => "typed".into(),
         };
         let line = format!(" surface {name}: {}", crate::tui::surface::numbers(&shown));
