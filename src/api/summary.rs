@@ -50,20 +50,26 @@ pub struct ImpactSummary {
     pub normalized: Normalized,
 }
 
+impl From<&ImpactResponse> for ImpactOutcome {
+    fn from(r: &ImpactResponse) -> ImpactOutcome {
+        ImpactOutcome {
+            cor: r.cor,
+            rebound: r.rebound,
+            max_force: r.max_force,
+            contact_time: r.contact_time,
+            max_indentation: r.max_indentation,
+            permanent_indentation: r.permanent_indentation,
+            max_force_normalized: r.max_force_normalized,
+            contact_time_normalized: r.contact_time_normalized,
+        }
+    }
+}
+
 impl From<&ImpactResponse> for ImpactSummary {
     fn from(r: &ImpactResponse) -> ImpactSummary {
         ImpactSummary {
             method: r.method,
-            outcome: ImpactOutcome {
-                cor: r.cor,
-                rebound: r.rebound,
-                max_force: r.max_force,
-                contact_time: r.contact_time,
-                max_indentation: r.max_indentation,
-                permanent_indentation: r.permanent_indentation,
-                max_force_normalized: r.max_force_normalized,
-                contact_time_normalized: r.contact_time_normalized,
-            },
+            outcome: r.into(),
             normalized: r.normalized,
         }
     }

@@ -6,7 +6,7 @@
 //! (separation speed over closing speed). NCAA's certification allows at most 0.50.
 
 use super::{Collision, Target, collide};
-use crate::drop::standards::Standard;
+use crate::drop::standards::{Standard, Verdict};
 use crate::model::contact::ContactLaw;
 use crate::model::params::ImpactParams;
 use crate::solver::SolveError;
@@ -92,8 +92,10 @@ pub fn run(
     let at_rest = Target { speed: 0.0, ..bat };
     let BatTest::Bbcor { speed } = BAT_STANDARDS[0].test;
     let test = collide(params, law, &at_rest, speed, None)?;
-    let limit = BAT_STANDARDS[0].window[1].unwrap_or(f64::INFINITY);
-    let pass = test.cor <= limit;
+    let standard = &BAT_STANDARDS[0];
+    let limit = standard.window[1].unwrap_or(f64::INFINITY);
+    // the window's verdict, as a ball standard's (`Verdict::of`)
+    let pass = Verdict::of(standard.name, standard.window, test.cor).pass;
     Ok(BatRun {
         bbcor: test.cor,
         bbs: game.ball_speed_out,
