@@ -64,6 +64,21 @@ class Conditions(TypedDict):
     pressure_gauge_pa: Optional[float]
     atmosphere_pa: float
 
+class SurfaceObject(TypedDict):
+    """The surface an answer ran on, as the JSON's ``surface`` object (docs/surfaces.md), but
+    ``inf`` where the JSON writes null: K_s (N/m) of a rigid surface, M (kg) of a fixed one;
+    μ, K_t, c_t None where neither the surface nor the call gives them, or the answer uses
+    none (a normal impact); ``overrides`` what the call changed of the surface's own."""
+    name: str
+    origin: str
+    stiffness: float
+    damping: float
+    mass: float
+    friction: Optional[float]
+    tangential_stiffness: Optional[float]
+    tangential_damping: Optional[float]
+    overrides: list[str]
+
 class _Named(TypedDict):
     """The keys naming the ball in every answer."""
     preset: Optional[str]
@@ -135,7 +150,7 @@ class Impact:
     def conditions(self) -> Conditions:
         """The conditions it ran at, as the JSON's ``conditions``."""
     @property
-    def surface(self) -> dict[str, Any]:
+    def surface(self) -> SurfaceObject:
         """The surface it ran on, as the JSON's ``surface`` object (docs/surfaces.md)."""
     @property
     def energy(self) -> Optional[Energy]:
@@ -326,7 +341,7 @@ class _MultiFitKeys(TypedDict, total=False):
     drops: dict[str, Array]
     air: Optional[DropAir]
     ball: BallRecord
-    surface: dict[str, Any]
+    surface: SurfaceObject
     conditions: Conditions
 
 class MultiFit(_Named, _MultiFitKeys):
@@ -415,7 +430,7 @@ class ObliqueFit(_Named, _ObliqueFitSometimes):
     not_pinned: list[str]
     on_bound: list[str]
     ball: BallRecord
-    surface: dict[str, Any]
+    surface: SurfaceObject
     conditions: Conditions
 
 def fit_oblique(
@@ -504,7 +519,7 @@ class _DropKeys(TypedDict):
     drag: bool
     bounces: dict[str, Array]
     warnings: list[str]
-    surface: dict[str, Any]
+    surface: SurfaceObject
     ball: BallRecord
     conditions: Conditions
 
@@ -580,7 +595,7 @@ class Collision:
     effective_mass: Optional[float]
     effective_radius: Optional[float]
     warnings: list[str]
-    surface: dict[str, Any]
+    surface: SurfaceObject
     ball_record: BallRecord  # the JSON's ``ball`` object: ``ball`` is the preset's name here
     conditions: Conditions
     def to_dict(self) -> dict:
@@ -647,7 +662,7 @@ class ObliqueImpact:
     spin: Optional[Array]
     warnings: list[str]
     tangential_damping: Optional[float]
-    surface: dict[str, Any]
+    surface: SurfaceObject
     ball: BallRecord
     conditions: Conditions
     def to_dict(self) -> dict:
@@ -779,7 +794,7 @@ class MonteCarlo(TypedDict, total=False):
     values: dict[str, Array]
     ball: BallRecord
     conditions: Conditions
-    surface: dict[str, Any]
+    surface: SurfaceObject
 
 def batch(
     file: Union[str, "os.PathLike[str]"],
@@ -838,7 +853,7 @@ class Static(_Named):
     forward: StaticReading
     warnings: list[str]
     ball: BallRecord
-    surface: dict[str, Any]
+    surface: SurfaceObject
     conditions: Conditions
 
 def static(
@@ -878,7 +893,7 @@ class Court(_Named, _CourtSometimes):
     angle_out_deg: float
     spin_out: float
     warnings: list[str]
-    surface: dict[str, Any]
+    surface: SurfaceObject
     computed_on: str
     ball: BallRecord
     conditions: Conditions

@@ -4,7 +4,9 @@
 //! measurement is withheld (`comparison_withheld`: `Ball::measurement_withheld`). Each is the
 //! library's own struct, turned into Python values through the JSON the command line writes
 //! (serde_json, then Python's `json`), so the keys, their order and their nulls are the
-//! command line's.
+//! command line's. The other objects an answer holds as a library type (the `surface`, a
+//! fit's estimates, a shot's `end` and `net`) go over by [`dict`]: the same keys in the same
+//! order, but a number stays a number where the JSON has null for it (∞ `inf`, NaN `nan`).
 
 use bouncelab::Ball;
 use bouncelab::api::BallRecord;
@@ -19,6 +21,14 @@ use serde::Serialize;
 pub(crate) fn json<'py>(py: Python<'py>, value: &impl Serialize) -> PyResult<Bound<'py, PyAny>> {
     let text = serde_json::to_string(value).map_err(|e| PyValueError::new_err(e.to_string()))?;
     py.import("json")?.call_method1("loads", (text,))
+}
+
+/// `value`'s serde form as Python values, with no JSON between (pythonize): a struct a dict
+/// in its fields' order (`flatten`ed fields in place, `skip`ped ones left out), an `f64` a
+/// float, ∞ and NaN kept (where [`json`] gives `None`), an integer an int, a `Vec` a list, a
+/// fixed-size array or a tuple a tuple, `None` `None`, a unit variant its (renamed) name.
+pub(crate) fn dict<'py>(py: Python<'py>, value: &impl Serialize) -> PyResult<Bound<'py, PyDict>> {
+    Ok(pythonize::pythonize(py, value)?.cast_into::<PyDict>()?)
 }
 
 /// The ball an answer ran (the JSON's `ball` object), kept by a result object (`Impact`,

@@ -7,7 +7,7 @@
 use crate::arguments::ball::ball_pyfunction;
 use crate::{array, error, floats, value_error};
 use bouncelab::Ball;
-use bouncelab::analysis::fit::{Estimate, FitData, MultiFit, parse_free};
+use bouncelab::analysis::fit::{FitData, MultiFit, parse_free};
 use bouncelab::measured::{Air, CorPoint, CorTable, MeasuredError, Trace};
 use bouncelab::model::params::ImpactParams;
 use bouncelab::solver::SolveOptions;
@@ -64,14 +64,6 @@ fn same_length(names: [&str; 2], a: usize, b: usize) -> PyResult<()> {
     Ok(())
 }
 
-fn estimate<'py>(py: Python<'py>, e: &Estimate) -> PyResult<Bound<'py, PyDict>> {
-    let d = PyDict::new(py);
-    d.set_item("value", e.value)?;
-    d.set_item("std_error", e.std_error)?;
-    d.set_item("ci95", (e.ci95[0], e.ci95[1]))?;
-    Ok(d)
-}
-
 /// The fit as the command line's JSON has it (docs/fitting.md), with `model`: the model at
 /// each data point (force, N, of a trace; COR of a table).
 /// The dict of `bouncelab fit --format json`: the fit, and the fitted ball's impact at `v0`,
@@ -113,7 +105,7 @@ fn report<'py>(
     d.set_item("iterations", f.iterations)?;
     let fitted = PyDict::new(py);
     for e in &f.fitted {
-        fitted.set_item(e.name, estimate(py, e)?)?;
+        fitted.set_item(e.name, crate::answer::dict(py, e)?)?;
     }
     d.set_item("fitted", fitted)?;
     let correlation = PyDict::new(py);
@@ -129,7 +121,7 @@ fn report<'py>(
         d.set_item("time_offset", t.value)?;
         let nuisance = PyDict::new(py);
         for e in f.time_offset.iter().chain(&f.baseline) {
-            nuisance.set_item(e.name, estimate(py, e)?)?;
+            nuisance.set_item(e.name, crate::answer::dict(py, e)?)?;
         }
         d.set_item("nuisance", nuisance)?;
     }
@@ -155,11 +147,7 @@ fn report<'py>(
     d.set_item("not_pinned", f.not_pinned.clone())?;
     d.set_item("on_bound", f.on_bound.clone())?;
     if let Some(t) = &f.lack_of_fit {
-        let lack = PyDict::new(py);
-        lack.set_item("test", t.test)?;
-        lack.set_item("statistic", t.statistic)?;
-        lack.set_item("p_value", t.p_value)?;
-        d.set_item("lack_of_fit", lack)?;
+        d.set_item("lack_of_fit", crate::answer::dict(py, t)?)?;
     }
     if f.stated_sd {
         d.set_item("sd_stated", true)?;

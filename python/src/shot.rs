@@ -3,7 +3,7 @@
 
 use crate::arguments::ball::ball_pyfunction;
 use crate::error;
-use bouncelab::api::{Net, NetReport, SHOT_QUANTITIES, ShotReport, ShotSpec, TENNIS_NET_HEIGHT};
+use bouncelab::api::{Net, SHOT_QUANTITIES, ShotReport, ShotSpec, TENNIS_NET_HEIGHT};
 use bouncelab::flight::{Ends, Launch};
 use numpy::PyArray1;
 use pyo3::exceptions::PyValueError;
@@ -68,39 +68,13 @@ fn report<'py>(py: Python<'py>, r: &ShotReport) -> PyResult<Bound<'py, PyDict>> 
         t.set_item(name, array(py, r.trajectory.iter().map(f).collect()))?;
     }
     d.set_item("trajectory", t)?;
-    let e = PyDict::new(py);
-    let s = r.end.state;
-    e.set_item("reason", format!("{:?}", r.end.reason).to_lowercase())?;
-    for (name, v) in [
-        ("t", s.t),
-        ("x", s.x),
-        ("y", s.y),
-        ("vx", s.vx),
-        ("vy", s.vy),
-        ("spin", s.spin),
-        ("speed", r.end.speed),
-    ] {
-        e.set_item(name, v)?;
-    }
-    d.set_item("end", e)?;
+    // the JSON's `end` (reason, t, x, y, vx, vy, spin, speed) and `net` objects (None where
+    // they have null)
+    d.set_item("end", crate::answer::dict(py, &r.end)?)?;
     d.set_item("source", r.aero.source)?;
     if let Some(n) = &r.net {
-        d.set_item("net", net_dict(py, n)?)?;
+        d.set_item("net", crate::answer::dict(py, n)?)?;
     }
-    Ok(d)
-}
-
-/// The net's answer as a dict, the JSON's `net` object (None where it has null).
-fn net_dict<'py>(py: Python<'py>, n: &NetReport) -> PyResult<Bound<'py, PyDict>> {
-    let d = PyDict::new(py);
-    d.set_item("x", n.x)?;
-    d.set_item("height", n.height)?;
-    d.set_item("clearance", n.clearance)?;
-    d.set_item("cleared", n.cleared)?;
-    d.set_item("t", n.t)?;
-    d.set_item("y", n.y)?;
-    d.set_item("bounces_before", n.bounces_before)?;
-    d.set_item("warnings", n.warnings.clone())?;
     Ok(d)
 }
 

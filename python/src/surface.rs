@@ -61,20 +61,10 @@ struct Explicit {
     tangential: [Option<f64>; 3],
 }
 
-/// The JSON `surface` object as a dict (∞ as `inf` where the JSON writes `null`).
+/// The JSON `surface` object as a dict, its keys in the JSON's order (∞ as `inf` where the
+/// JSON writes `null`).
 pub(crate) fn to_dict<'py>(py: Python<'py>, s: &SurfaceUsed) -> PyResult<Bound<'py, PyDict>> {
-    let d = PyDict::new(py);
-    d.set_item("name", &s.name)?;
-    d.set_item("origin", &s.origin)?;
-    let m = &s.mechanics;
-    d.set_item("stiffness", m.stiffness)?;
-    d.set_item("damping", m.damping)?;
-    d.set_item("mass", m.mass)?;
-    d.set_item("friction", m.friction)?;
-    d.set_item("tangential_stiffness", m.tangential_stiffness)?;
-    d.set_item("tangential_damping", m.tangential_damping)?;
-    d.set_item("overrides", &s.overrides)?;
-    Ok(d)
+    crate::answer::dict(py, s)
 }
 
 /// The rigid plate's surface object: the `surface` of the answers that take no surface and

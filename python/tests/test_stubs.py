@@ -155,6 +155,8 @@ DICTS = {
     "court": ("Court", lambda: bouncelab.court("tennis", surface="clay", friction=0.55,
                                                   surface_cor=0.75)),
     "preset": ("Preset", lambda: bouncelab.presets()[0]),
+    "surface": ("SurfaceObject", lambda: bouncelab.oblique("tennis", angle=30.0, friction=0.6,
+                                                           tangential_damping=2.0).surface),
 }
 # a key Python cannot spell as a TypedDict field (a keyword): the docstring names it
 UNSPELLABLE = {"lambda", "return"}
