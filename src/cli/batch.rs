@@ -112,11 +112,12 @@ pub fn run(a: &BatchArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     let mut text_out = Vec::new();
     match a.format {
         // the balls were judged on the standard's rigid plate (docs/cli.md, "The surface object")
-        TextJsonCsv::Json => {
-            let plate = crate::api::SurfaceUsed::rigid_plate();
-            let on = output::Met::Surface(&plate);
-            output::json_on(&mut text_out, &report, on, &ball.conditions)?
-        }
+        TextJsonCsv::Json => output::json_on(
+            &mut text_out,
+            &report,
+            output::Met::RigidPlate,
+            &ball.conditions,
+        )?,
         TextJsonCsv::Csv => text_out.extend_from_slice(balls_csv(&outcomes).as_bytes()),
         TextJsonCsv::Text => batch_text::text(&mut text_out, &ball, &a.file, air, &report)?,
     }

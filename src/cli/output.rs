@@ -82,6 +82,9 @@ struct OnSurface<'a, T: Serialize> {
 pub enum Met<'a> {
     /// The surface it ran on.
     Surface(&'a SurfaceUsed),
+    /// The rigid plate ([`SurfaceUsed::rigid_plate`]): what a normal impact, a drop test, a
+    /// fit to them and the static test's plates run on.
+    RigidPlate,
     /// No surface: what it met instead (the JSON `surface_note`).
     NoSurface(&'a str),
 }
@@ -94,8 +97,13 @@ pub fn json_on<T: Serialize>(
     met: Met<'_>,
     conditions: &crate::conditions::Conditions,
 ) -> io::Result<()> {
+    let plate;
     let (surface, surface_note) = match met {
         Met::Surface(s) => (Some(s), None),
+        Met::RigidPlate => {
+            plate = SurfaceUsed::rigid_plate();
+            (Some(&plate), None)
+        }
         Met::NoSurface(why) => (None, Some(why)),
     };
     let on = OnSurface {

@@ -268,9 +268,8 @@ pub fn run(a: &PeersArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         // the COR is the ball's on the rigid plate, or the pair's (docs/cli.md, "The surface
         // object")
         TextJsonCsv::Json => {
-            let plate = crate::api::SurfaceUsed::rigid_plate();
             let met = match report.pair {
-                None => output::Met::Surface(&plate),
+                None => output::Met::RigidPlate,
                 Some(_) => output::Met::NoSurface(PAIR_NO_SURFACE),
             };
             output::json_on(out, &report, met, &b.conditions)?

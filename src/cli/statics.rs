@@ -34,15 +34,7 @@ pub fn run(a: &StaticArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     match a.format {
         // `conditions` beside the answer's keys, as every command's JSON (docs/cli.md)
         // and `surface`: both plates are the rigid plate (docs/cli.md, "The surface object")
-        TextJson::Json => {
-            let plates = crate::api::SurfaceUsed::rigid_plate();
-            output::json_on(
-                out,
-                &report,
-                output::Met::Surface(&plates),
-                &ball.conditions,
-            )?
-        }
+        TextJson::Json => output::json_on(out, &report, output::Met::RigidPlate, &ball.conditions)?,
         TextJson::Text => {
             writeln!(out, "{}", ball.label())?;
             output::ball_lines(out, &ball, None)?;

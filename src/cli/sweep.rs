@@ -153,7 +153,6 @@ fn zeta(a: &ZetaArgs, out: &mut dyn Write) -> anyhow::Result<()> {
             // names its grid: the normalized ball at λ = ζ = 1 (each row moves its K_r and c),
             // on the rigid plate, at the recorded conditions (no preset: the defaults)
             let ball = crate::Ball::normalized(1.0, 1.0, None, law)?;
-            let plate = crate::api::SurfaceUsed::rigid_plate();
             output::json_on(
                 out,
                 &ZetaDoc {
@@ -162,7 +161,7 @@ fn zeta(a: &ZetaArgs, out: &mut dyn Write) -> anyhow::Result<()> {
                     rows: &rows,
                     ball: ball.record_json(),
                 },
-                output::Met::Surface(&plate),
+                output::Met::RigidPlate,
                 &crate::api::recorded_conditions(None),
             )?
         }
@@ -231,7 +230,6 @@ fn velocity(a: &VelocityArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         SweepFormat::Json => {
             let n = b.params.normalized();
             // the ball bounces on the rigid plate (docs/cli.md, "The surface object")
-            let plate = crate::api::SurfaceUsed::rigid_plate();
             output::json_on(
                 out,
                 &VelocityDoc {
@@ -242,7 +240,7 @@ fn velocity(a: &VelocityArgs, out: &mut dyn Write) -> anyhow::Result<()> {
                     rows: &rows,
                     record: b.record_json(),
                 },
-                output::Met::Surface(&plate),
+                output::Met::RigidPlate,
                 &b.conditions,
             )?
         }

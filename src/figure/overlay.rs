@@ -89,22 +89,14 @@ impl MeasuredOverlay {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::measured::overlay::pulse_text;
     use crate::measured::parse_any;
 
     /// A trace of hundreds of samples is a dotted line (markers would cover the model's curve
     /// under them); a COR table's few points are `+` markers.
     #[test]
     fn a_trace_is_a_line_and_a_cor_table_markers() {
-        let mut text = String::from("time_s,force_N\n");
-        for k in 0..400 {
-            let t = f64::from(k) * 1e-5;
-            let f = if (100..300).contains(&k) {
-                100.0 * (std::f64::consts::PI * f64::from(k - 100) / 200.0).sin()
-            } else {
-                0.0
-            };
-            text.push_str(&format!("{t},{f}\n"));
-        }
+        let text = pulse_text(|k| 100.0 * (std::f64::consts::PI * k / 200.0).sin());
         let trace =
             MeasuredOverlay::from_data(&parse_any(&text).unwrap(), "t.csv", 0.0459, 1.47).unwrap();
         assert_eq!(trace.len(), 2);

@@ -45,10 +45,8 @@ pub fn parse_court(text: &str) -> Result<Vec<CourtRow>, MeasuredError> {
     let p = points::read(text, &SPECS)?;
     let speed = "be a positive speed (m/s, at most 1e9)";
     let rows = points::each_row(&p, |row| {
-        let value = |k: usize, lo: f64, hi: f64, what: &str| match row.get(k) {
-            Some(v) if v > lo && v <= hi => Ok(v),
-            Some(v) => Err(row.error(k, format!("{} {v} must {what}", SPECS[k].name))),
-            None => Err(row.error(k, format!("{} is missing", SPECS[k].name))),
+        let value = |k: usize, lo: f64, hi: f64, what: &str| {
+            row.checked(k, SPECS[k].name, |v| v > lo && v <= hi, what)
         };
         Ok(CourtRow {
             v_in: value(0, 1e-9, 1e9, speed)?,

@@ -41,12 +41,9 @@ pub fn parse_oblique(text: &str) -> Result<Vec<ObliqueRow>, MeasuredError> {
     let p = points::read(text, &SPECS)?;
     let spins = p.columns[5].iter().filter(|s| s.is_some()).count();
     let rows = points::each_row(&p, |row| {
-        let finite = |k: usize| -> Result<f64, MeasuredError> {
-            match row.get(k) {
-                Some(v) if v.is_finite() && v.abs() <= 1e9 => Ok(v),
-                Some(v) => Err(row.error(k, format!("{} {v} must be finite", SPECS[k].name))),
-                None => Err(row.error(k, format!("{} is missing", SPECS[k].name))),
-            }
+        let finite = |k: usize| {
+            let ok = |v: f64| v.is_finite() && v.abs() <= 1e9;
+            row.checked(k, SPECS[k].name, ok, "be finite")
         };
         let v0 = finite(0)?;
         if v0 <= 0.0 {
@@ -105,4 +102,26 @@ pub fn parse_oblique(text: &str) -> Result<Vec<ObliqueRow>, MeasuredError> {
         return Err(MeasuredError::at(p.end_line, 1, "no data rows"));
     }
     Ok(rows)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::parse_oblique;
+
+    #[test]
+    fn a_cell_out_of_range_is_named_at_its_place() {
+        let head = "v0,angle_deg,spin_in,vx_out,vy_out,spin_out\n";
+        let e = parse_oblique(&format!("{head}10,30,0,-2e9,2,0\n")).unwrap_err();
+        assert_eq!((e.line, e.column), (2, 9), "{e}");
+        assert!(
+            e.message.contains("vx_out -2000000000 must be finite"),
+            "{e}"
+        );
+        let e = parse_oblique(&format!("{head}10,30,0,5,2,2e9\n")).unwrap_err();
+        assert_eq!((e.line, e.column), (2, 13), "{e}");
+        assert!(
+            e.message.contains("spin_out 2000000000 must be finite"),
+            "{e}"
+        );
+    }
 }

@@ -51,6 +51,23 @@ pub fn cor_points(data: &Data) -> Option<Vec<(f64, f64)>> {
     }
 }
 
+/// A test's force–time file (s, N): 400 samples 10 µs apart, 0 but over samples 100 … 299,
+/// where the force is `pulse`(k) of the pulse's k-th sample (k = 0 … 199).
+#[cfg(test)]
+pub(crate) fn pulse_text(pulse: impl Fn(f64) -> f64) -> String {
+    let mut text = String::from("time_s,force_N\n");
+    for i in 0..400 {
+        let t = f64::from(i) * 1e-5;
+        let f = if (100..300).contains(&i) {
+            pulse(f64::from(i - 100))
+        } else {
+            0.0
+        };
+        text.push_str(&format!("{t},{f}\n"));
+    }
+    text
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -59,13 +76,7 @@ mod tests {
     /// (the trapezoidal rule is exact for it).
     #[test]
     fn displacement_of_a_constant_force() {
-        let mut text = String::from("t,F\n");
-        for i in 0..400 {
-            let t = i as f64 * 1e-5;
-            let f = if (100..300).contains(&i) { 10.0 } else { 0.0 };
-            text.push_str(&format!("{t},{f}\n"));
-        }
-        let tr = Trace::parse(&text).unwrap();
+        let tr = Trace::parse(&pulse_text(|_| 10.0)).unwrap();
         let pts = displacement(&tr, 0.05, 2.0).unwrap();
         let start = tr.summary().unwrap().t_start;
         let (a, f) = pts[pts.len() / 2];

@@ -70,6 +70,22 @@ impl Cells<'_> {
         }
     }
 
+    /// Spec `k`'s value where `ok` holds of it; otherwise, at its cell, `{name} {v} must
+    /// {what}`, or `{name} is missing` where the cell is empty (`name`: the spec's).
+    pub fn checked(
+        &self,
+        k: usize,
+        name: &str,
+        ok: impl Fn(f64) -> bool,
+        what: &str,
+    ) -> Result<f64, MeasuredError> {
+        match self.get(k) {
+            Some(v) if ok(v) => Ok(v),
+            Some(v) => Err(self.error(k, format!("{name} {v} must {what}"))),
+            None => Err(self.error(k, format!("{name} is missing"))),
+        }
+    }
+
     /// Spec `k`'s value where given, which must then be positive (else `why` at its cell).
     pub fn positive_if_given(&self, k: usize, why: &str) -> Result<Option<f64>, MeasuredError> {
         match self.get(k) {

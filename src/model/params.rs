@@ -189,10 +189,32 @@ pub fn validate_lambda_zeta(lambda: f64, zeta: f64) -> Result<(), ParamError> {
     Ok(())
 }
 
+/// The (λ, ζ) plane the solvers are tested over, λ = 1e-4 … 1e4 and ζ = 1e-3 … 1e3 on log
+/// scales, `per_decade` points a decade along each (both ends included), one λ's ζs in turn.
+#[cfg(test)]
+pub(crate) fn test_plane(per_decade: u32) -> impl Iterator<Item = (f64, f64)> {
+    let n = f64::from(per_decade);
+    (0..=8 * per_decade).flat_map(move |i| {
+        (0..=6 * per_decade).map(move |j| {
+            let (u, w) = (f64::from(i), f64::from(j));
+            (10f64.powf(-4.0 + u / n), 10f64.powf(-3.0 + w / n))
+        })
+    })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::text::short;
+
+    #[test]
+    fn the_test_plane_spans_its_decades() {
+        let plane: Vec<(f64, f64)> = test_plane(10).collect();
+        assert_eq!(plane.len(), 81 * 61);
+        assert_eq!((plane[0], plane[60]), ((1e-4, 1e-3), (1e-4, 1e3)));
+        assert_eq!(plane[plane.len() - 1], (1e4, 1e3));
+        assert_eq!(test_plane(5).count(), 41 * 31);
+    }
 
     #[test]
     fn each_range_reads_as_its_bounds() {

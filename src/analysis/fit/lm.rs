@@ -232,34 +232,48 @@ fn gauss_newton_gain(jac: &DMatrix<f64>, r: &[f64]) -> f64 {
         .map_or(f64::INFINITY, |ch| 0.5 * g.dot(&ch.solve(&g)))
 }
 
+/// The tests' problem: a curve y = `model`(v, x) through the points (`x`, `y`), its residuals
+/// `model`(v, x) − y, every step 1e-7.
+#[cfg(test)]
+pub(super) struct Curve {
+    pub x: Vec<f64>,
+    pub y: Vec<f64>,
+    pub model: fn(&[f64], f64) -> f64,
+}
+
+#[cfg(test)]
+impl Residuals for Curve {
+    fn residuals(&self, v: &[f64]) -> Option<Vec<f64>> {
+        Some(
+            self.x
+                .iter()
+                .zip(&self.y)
+                .map(|(&x, y)| (self.model)(v, x) - y)
+                .collect(),
+        )
+    }
+    fn step(&self, _: usize) -> f64 {
+        1e-7
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
 
     /// y = a e^{−b t} sampled without noise: the minimum is (a, b) exactly, from a start 3×
     /// off, and a bound below the answer holds the variable at the bound.
-    struct Decay(Vec<(f64, f64)>);
-    impl Residuals for Decay {
-        fn residuals(&self, x: &[f64]) -> Option<Vec<f64>> {
-            Some(
-                self.0
-                    .iter()
-                    .map(|(t, y)| x[0] * (-x[1] * t).exp() - y)
-                    .collect(),
-            )
-        }
-        fn step(&self, _: usize) -> f64 {
-            1e-7
-        }
-    }
-
     #[test]
     fn recovers_exponential_decay() {
-        let data = Decay(
-            (0..30)
-                .map(|i| (i as f64 * 0.1, 2.5 * (-1.7 * i as f64 * 0.1).exp()))
-                .collect(),
-        );
+        let x: Vec<f64> = (0..30).map(|i| i as f64 * 0.1).collect();
+        let y = (0..30)
+            .map(|i| 2.5 * (-1.7 * i as f64 * 0.1).exp())
+            .collect();
+        let data = Curve {
+            x,
+            y,
+            model: |v, t| v[0] * (-v[1] * t).exp(),
+        };
         let s = minimize(
             &data,
             &[7.0, 0.5],

@@ -193,25 +193,15 @@ fn drop_at(v: &[f64], j: usize) -> Vec<f64> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::analysis::fit::lm::Curve;
     use crate::analysis::fit::stats::{t975, uncertainty};
 
     /// y = a + b x: linear in (a, b), so the profile interval is the Jacobian's, θ̂ ± t s_θ.
-    struct Line {
-        x: Vec<f64>,
-        y: Vec<f64>,
-    }
-    impl Residuals for Line {
-        fn residuals(&self, v: &[f64]) -> Option<Vec<f64>> {
-            Some(
-                self.x
-                    .iter()
-                    .zip(&self.y)
-                    .map(|(x, y)| v[0] + v[1] * x - y)
-                    .collect(),
-            )
-        }
-        fn step(&self, _j: usize) -> f64 {
-            1e-7
+    fn line(x: Vec<f64>, y: Vec<f64>) -> Curve {
+        Curve {
+            x,
+            y,
+            model: |v, x| v[0] + v[1] * x,
         }
     }
 
@@ -226,7 +216,7 @@ mod tests {
             .zip(noise)
             .map(|(x, e)| 1.0 + 0.5 * x + e)
             .collect();
-        let line = Line { x, y };
+        let line = line(x, y);
         let (lo, hi) = ([-1e3, -1e3], [1e3, 1e3]);
         let opts = Options::default();
         let best = lm::minimize(&line, &[0.0, 0.0], &lo, &hi, opts).unwrap();
@@ -244,22 +234,11 @@ mod tests {
 
     /// y = exp(k x): curved in k, so the profile's ends are where S rises by s² t², which
     /// the Wald interval misses on the steep side.
-    struct Decay {
-        x: Vec<f64>,
-        y: Vec<f64>,
-    }
-    impl Residuals for Decay {
-        fn residuals(&self, v: &[f64]) -> Option<Vec<f64>> {
-            Some(
-                self.x
-                    .iter()
-                    .zip(&self.y)
-                    .map(|(x, y)| (v[0] * x).exp() - y)
-                    .collect(),
-            )
-        }
-        fn step(&self, _j: usize) -> f64 {
-            1e-7
+    fn decay(x: Vec<f64>, y: Vec<f64>) -> Curve {
+        Curve {
+            x,
+            y,
+            model: |v, x| (v[0] * x).exp(),
         }
     }
 
@@ -272,7 +251,7 @@ mod tests {
             .zip(noise)
             .map(|(x, e)| (-0.7 * x).exp() + e)
             .collect();
-        let decay = Decay { x, y };
+        let decay = decay(x, y);
         let (lo, hi) = ([-10.0], [10.0]);
         let opts = Options::default();
         let best = lm::minimize(&decay, &[-1.0], &lo, &hi, opts).unwrap();
@@ -301,7 +280,7 @@ mod tests {
     fn exactly_fitted_data_keep_the_jacobians_interval() {
         let x: Vec<f64> = (0..8).map(|i| 0.5 * f64::from(i)).collect();
         let y = x.iter().map(|x| (-0.7 * x).exp()).collect();
-        let decay = Decay { x, y };
+        let decay = decay(x, y);
         let (lo, hi) = ([-10.0], [10.0]);
         let opts = Options::default();
         let best = lm::minimize(&decay, &[-1.0], &lo, &hi, opts).unwrap();
@@ -315,10 +294,7 @@ mod tests {
     #[test]
     fn a_profile_that_stays_low_to_the_box_is_unbounded() {
         // y = exp(k x) sampled where x = 0 only: no k changes the model
-        let decay = Decay {
-            x: vec![0.0; 5],
-            y: vec![1.0, 1.1, 0.9, 1.05, 0.95],
-        };
+        let decay = decay(vec![0.0; 5], vec![1.0, 1.1, 0.9, 1.05, 0.95]);
         let (lo, hi) = ([-10.0], [10.0]);
         let opts = Options::default();
         let best = lm::minimize(&decay, &[-1.0], &lo, &hi, opts).unwrap();

@@ -236,7 +236,7 @@ fn report_and_save(
                 data_sets: &j.sets,
             },
             // the data's fit assumed the rigid plate (docs/cli.md, "The surface object")
-            output::Met::Surface(&crate::api::SurfaceUsed::rigid_plate()),
+            output::Met::RigidPlate,
             &ball.conditions,
         )?,
         TextJson::Text => {

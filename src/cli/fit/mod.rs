@@ -8,7 +8,7 @@
 use super::ball::BallArgs;
 use super::output::{self, given, human, table};
 use crate::analysis::fit::Param;
-use crate::api::{FitReport, SurfaceUsed};
+use crate::api::FitReport;
 use crate::cli::output::TextJson;
 use crate::measured::{CorPoint, Trace};
 use clap::Args;
@@ -280,7 +280,7 @@ fn single(a: &FitArgs, cor: f64, stdout: &mut dyn Write) -> anyhow::Result<()> {
                 warnings: &warnings,
                 ball: b.record_json(),
             },
-            output::Met::Surface(&SurfaceUsed::rigid_plate()),
+            output::Met::RigidPlate,
             &b.conditions,
         )?,
         TextJson::Text => {

@@ -222,9 +222,12 @@ pub fn run(
     match a.format {
         TextJson::Json => {
             // the data's fit assumed the rigid plate (docs/cli.md, "The surface object")
-            let plate = crate::api::SurfaceUsed::rigid_plate();
-            let on = output::Met::Surface(&plate);
-            output::json_on(&mut text, &report, on, &ball.conditions)?
+            output::json_on(
+                &mut text,
+                &report,
+                output::Met::RigidPlate,
+                &ball.conditions,
+            )?
         }
         TextJson::Text => super::report_text::text(&mut text, &ball, &data, &f, &report)?,
     }

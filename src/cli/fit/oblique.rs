@@ -44,7 +44,7 @@ pub fn run(a: &FitArgs, path: &Path, out: &mut dyn Write) -> anyhow::Result<()> 
                 ball: ball.record_json(),
             },
             // the data's fit assumed the rigid plate (docs/cli.md, "The surface object")
-            output::Met::Surface(&crate::api::SurfaceUsed::rigid_plate()),
+            output::Met::RigidPlate,
             &ball.conditions,
         )?,
         TextJson::Text => write_text(&mut text, &ball.label(), &report, f)?,

@@ -9,6 +9,12 @@ fn ball(p: &Preset) -> Ball {
     Ball::from_preset(p, p.parameters, p.law)
 }
 
+/// `p`'s impact under `law`, and its λ (the current λ of a ζ chart).
+fn run_and_lambda(p: &Preset, law: ContactLaw) -> (ImpactResponse, f64) {
+    let run = simulate(&p.params(), law, &SolveOptions::default()).unwrap();
+    (run, p.params().normalized().lambda)
+}
+
 /// A scene of `b` with this run, the current λ's curve and reference curves, nothing else.
 fn scene_with<'a>(
     b: Ball,
@@ -56,8 +62,7 @@ fn a_scene_without_results_draws_frames_and_says_what_is_missing() {
 #[test]
 fn zeta_charts_show_the_decades_and_mark_the_current_lambda() {
     let p = &Preset::embedded()[0];
-    let run = simulate(&p.params(), p.law, &SolveOptions::default()).unwrap();
-    let lambda = p.params().normalized().lambda;
+    let (run, lambda) = run_and_lambda(p, p.law);
     let zetas = log_space(1e-3, 1e3, 121);
     let points = cor_vs_zeta(&[lambda], &zetas, ContactLaw::Linear).unwrap();
     let zeta = ZetaSweep {
@@ -82,8 +87,7 @@ fn no_color_cor_zeta_lines_each_have_their_own_glyph() {
     // the current λ and the three references λ = 0, 0.4, 1: the references were dashed,
     // dotted, dashed, so λ = 0 and λ = 1 shared "╍" without colour (issue 29, item 12)
     let p = &Preset::embedded()[0];
-    let run = simulate(&p.params(), p.law, &SolveOptions::default()).unwrap();
-    let lambda = p.params().normalized().lambda;
+    let (run, lambda) = run_and_lambda(p, p.law);
     let zetas = log_space(1e-3, 1e3, 41);
     let sweep = |l: f64| cor_vs_zeta(&[l], &zetas, ContactLaw::Linear).unwrap();
     let (now, r0, r1, r2) = (sweep(lambda), sweep(0.0), sweep(0.4), sweep(1.0));
@@ -120,8 +124,7 @@ fn a_run_off_the_linear_curves_is_drawn_hollow_and_says_so() {
     // own e, off every curve, as if on them (issue 29, item 11)
     let p = &Preset::embedded()[0];
     for (law, glyph) in [(ContactLaw::Linear, "◆"), (ContactLaw::Hertz, "◇")] {
-        let run = simulate(&p.params(), law, &SolveOptions::default()).unwrap();
-        let lambda = p.params().normalized().lambda;
+        let (run, lambda) = run_and_lambda(p, law);
         let points = cor_vs_zeta(&[lambda], &log_space(1e-2, 1e2, 21), ContactLaw::Linear).unwrap();
         let mut b = ball(p);
         b.law = law;

@@ -159,41 +159,35 @@ mod tests {
     #[test]
     fn the_phase_separation_is_the_brackets() {
         let (mut phased, mut oscillating, mut rises) = (0, 0, 0);
-        for i in 0..=40 {
-            for j in 0..=30 {
-                let (lambda, zeta) = (
-                    10f64.powf(-4.0 + i as f64 / 5.0),
-                    10f64.powf(-3.0 + j as f64 / 5.0),
-                );
-                let Some(top) = turn(lambda, zeta) else {
+        for (lambda, zeta) in crate::model::params::test_plane(5) {
+            let Some(top) = turn(lambda, zeta) else {
+                continue;
+            };
+            for f in [1e-3, 1e-2, 0.1, 0.5, 0.9] {
+                let contact = Contact {
+                    law: ContactLaw::Linear,
+                    zp_bar: f * top.z_m,
+                    kappa: 1.0,
+                };
+                let u0 = top.z_m - contact.permanent_indentation(top.z_m);
+                let k = top.z_m / u0;
+                let x = [u0, 0.0, top.z2 / k];
+                let Some(unload) = Flow::from_state(lambda / k, zeta * k.sqrt(), x) else {
                     continue;
                 };
-                for f in [1e-3, 1e-2, 0.1, 0.5, 0.9] {
-                    let contact = Contact {
-                        law: ContactLaw::Linear,
-                        zp_bar: f * top.z_m,
-                        kappa: 1.0,
-                    };
-                    let u0 = top.z_m - contact.permanent_indentation(top.z_m);
-                    let k = top.z_m / u0;
-                    let x = [u0, 0.0, top.z2 / k];
-                    let Some(unload) = Flow::from_state(lambda / k, zeta * k.sqrt(), x) else {
-                        continue;
-                    };
-                    oscillating += usize::from(unload.omega > 0.0);
-                    let Some(phase) = search::fall_from_turn(&unload) else {
-                        continue;
-                    };
-                    phased += 1;
-                    let case = format!("λ = {lambda}, ζ = {zeta}, z̄_p = {f} z̄_m");
-                    match by_brackets(&unload, u0, x[2]) {
-                        Some(b) => assert!((phase.t - b.t).abs() < 1e-13 * b.t, "{case}"),
-                        None => {
-                            // u rose somewhere before 0 (not past u0: no reload): the cell
-                            // is still the exact solver's
-                            rises += 1;
-                            assert_exact(lambda, zeta, contact.zp_bar, &case);
-                        }
+                oscillating += usize::from(unload.omega > 0.0);
+                let Some(phase) = search::fall_from_turn(&unload) else {
+                    continue;
+                };
+                phased += 1;
+                let case = format!("λ = {lambda}, ζ = {zeta}, z̄_p = {f} z̄_m");
+                match by_brackets(&unload, u0, x[2]) {
+                    Some(b) => assert!((phase.t - b.t).abs() < 1e-13 * b.t, "{case}"),
+                    None => {
+                        // u rose somewhere before 0 (not past u0: no reload): the cell
+                        // is still the exact solver's
+                        rises += 1;
+                        assert_exact(lambda, zeta, contact.zp_bar, &case);
                     }
                 }
             }

@@ -376,36 +376,30 @@ mod tests {
     #[test]
     fn events_find_the_roots_the_brackets_find() {
         let (mut phased, mut oscillating) = (0, 0);
-        for i in 0..=80 {
-            for j in 0..=60 {
-                let (lambda, zeta) = (
-                    10f64.powf(-4.0 + i as f64 / 10.0),
-                    10f64.powf(-3.0 + j as f64 / 10.0),
-                );
-                let Some(flow) = Flow::new(lambda, zeta) else {
-                    continue;
-                };
-                if let Some(guesses) = phase_guesses(&flow) {
-                    oscillating += 1;
-                    let [peak, end] = refine_both(&flow, guesses);
-                    phased += matches!((peak, end), (Some(p), Some(e)) if e.t > p.t) as usize;
-                }
-                let Some((peak, end)) = events(&flow, zeta) else {
-                    continue;
-                };
-                let (tm, tf) = by_brackets(&flow, zeta).expect("brackets find both roots");
-                let rel = |a: f64, b: f64| (a - b).abs() / b;
-                assert!(
-                    rel(peak.t, tm) < 1e-13,
-                    "λ = {lambda}, ζ = {zeta}: τ_m {} vs {tm}",
-                    peak.t
-                );
-                assert!(
-                    rel(end.t, tf) < 1e-13,
-                    "λ = {lambda}, ζ = {zeta}: τ_f {} vs {tf}",
-                    end.t
-                );
+        for (lambda, zeta) in crate::model::params::test_plane(10) {
+            let Some(flow) = Flow::new(lambda, zeta) else {
+                continue;
+            };
+            if let Some(guesses) = phase_guesses(&flow) {
+                oscillating += 1;
+                let [peak, end] = refine_both(&flow, guesses);
+                phased += matches!((peak, end), (Some(p), Some(e)) if e.t > p.t) as usize;
             }
+            let Some((peak, end)) = events(&flow, zeta) else {
+                continue;
+            };
+            let (tm, tf) = by_brackets(&flow, zeta).expect("brackets find both roots");
+            let rel = |a: f64, b: f64| (a - b).abs() / b;
+            assert!(
+                rel(peak.t, tm) < 1e-13,
+                "λ = {lambda}, ζ = {zeta}: τ_m {} vs {tm}",
+                peak.t
+            );
+            assert!(
+                rel(end.t, tf) < 1e-13,
+                "λ = {lambda}, ζ = {zeta}: τ_f {} vs {tf}",
+                end.t
+            );
         }
         assert!(phased * 10 >= oscillating * 9, "{phased} of {oscillating}");
     }

@@ -232,37 +232,31 @@ mod tests {
     #[test]
     fn cardano_finds_the_bracketed_root() {
         let (mut complex, mut answered) = (0, 0);
-        for i in 0..=80 {
-            for j in 0..=60 {
-                let (lambda, zeta) = (
-                    10f64.powf(-4.0 + f64::from(i) / 10.0),
-                    10f64.powf(-3.0 + f64::from(j) / 10.0),
-                );
-                let a = [2.0 * zeta * (1.0 + lambda), 1.0, 2.0 * zeta * lambda];
-                let (r, p1, p0) = isolated_root(a);
-                let pair_complex = p1 * p1 < 4.0 * p0;
-                complex += pair_complex as usize;
-                let Some((s, q1, q0)) = lone_real_root_with(a, f64::cbrt) else {
-                    continue;
-                };
-                answered += 1;
-                assert!(
-                    pair_complex,
-                    "λ = {lambda}, ζ = {zeta}: an answer with 3 real roots"
-                );
-                // the root to a few ulps; the quadratic factor to a few ulps of the terms that
-                // deflation sums (p1 = a2 + r can cancel)
-                let close = |x: f64, y: f64, size: f64| (x - y).abs() <= 8.0 * f64::EPSILON * size;
-                let (a2, a1, a0) = (a[0], a[1], a[2]);
-                assert!(
-                    close(s, r, r.abs())
-                        && close(q1, p1, a2 + r.abs())
-                        && close(q0, p0, a1 + (a0 / r).abs() + (r * p1).abs()),
-                    "λ = {lambda}, ζ = {zeta}: {:?} vs {:?}",
-                    (s, q1, q0),
-                    (r, p1, p0)
-                );
-            }
+        for (lambda, zeta) in crate::model::params::test_plane(10) {
+            let a = [2.0 * zeta * (1.0 + lambda), 1.0, 2.0 * zeta * lambda];
+            let (r, p1, p0) = isolated_root(a);
+            let pair_complex = p1 * p1 < 4.0 * p0;
+            complex += pair_complex as usize;
+            let Some((s, q1, q0)) = lone_real_root_with(a, f64::cbrt) else {
+                continue;
+            };
+            answered += 1;
+            assert!(
+                pair_complex,
+                "λ = {lambda}, ζ = {zeta}: an answer with 3 real roots"
+            );
+            // the root to a few ulps; the quadratic factor to a few ulps of the terms that
+            // deflation sums (p1 = a2 + r can cancel)
+            let close = |x: f64, y: f64, size: f64| (x - y).abs() <= 8.0 * f64::EPSILON * size;
+            let (a2, a1, a0) = (a[0], a[1], a[2]);
+            assert!(
+                close(s, r, r.abs())
+                    && close(q1, p1, a2 + r.abs())
+                    && close(q0, p0, a1 + (a0 / r).abs() + (r * p1).abs()),
+                "λ = {lambda}, ζ = {zeta}: {:?} vs {:?}",
+                (s, q1, q0),
+                (r, p1, p0)
+            );
         }
         assert!(answered * 100 >= complex * 99, "{answered} of {complex}");
     }
