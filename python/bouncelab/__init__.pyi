@@ -16,7 +16,8 @@ Floats = Union[float, Sequence[float], npt.NDArray[Union[np.floating[Any], np.in
 Array = npt.NDArray[np.float64]
 # ``surface=``: a surface's name (``bouncelab surfaces``), or a dict of its numbers over the
 # named one's (keys ``name``, ``stiffness``, ``damping``, ``mass``, ``friction``,
-# ``tangential_stiffness``, ``tangential_damping``; docs/surfaces.md, docs/python.md)
+# ``tangential_stiffness``, ``tangential_damping``: the last three for oblique, court and shot
+# only; docs/surfaces.md, docs/python.md)
 SurfaceArg = Union[str, dict[str, Any]]
 
 class BallArguments(TypedDict, total=False):

@@ -270,7 +270,7 @@ fn collide_with(
     }
     let ball = choice.resolve(v0)?;
     let given = surface.is_some_and(|s| !s.is_none());
-    let (used, _) = crate::surface::resolve(surface)?;
+    let used = crate::surface::resolve_normal(surface)?;
     let named = used.name != bouncelab::target::surface::DEFAULT || used.mechanics.mass.is_finite();
     if target_preset.is_some() && given && named {
         return Err(crate::value_error(

@@ -118,7 +118,7 @@ fn drop_of<'py>(
     // each bounce on the surface at rest (`bouncelab drop --surface`): on the rigid plate
     // today's drop, with a fitted preset's intervals; elsewhere none (they are the rigid
     // plate's)
-    let (surface, _) = crate::surface::resolve(surface)?;
+    let surface = crate::surface::resolve_normal(surface)?;
     let target = surface.mechanics.target();
     let rigid = surface.mechanics.is_rigid();
     let run = interrupt::detach_watched(py, |w| match rigid {

@@ -30,7 +30,7 @@ ball_pyfunction! {
     ) -> PyResult<Py<Impact>>;
     ball choice = (preset, params, law);
     {
-        let (surface, _) = crate::surface::resolve(surface)?;
+        let surface = crate::surface::resolve_normal(surface)?;
         let samples = history_samples(history, samples)?;
         // one parameter set twice is refused, as the command line refuses --k-r with --lambda
         choice.check_lambda_zeta(lambda_, zeta)?;

@@ -171,3 +171,21 @@ pub(crate) fn resolve(arg: Option<&Bound<'_, PyAny>>) -> PyResult<(SurfaceUsed, 
     })?;
     Ok((s, x.tangential))
 }
+
+/// The surface of a normal impact (`run`, `collide`, `drop`): [`resolve`]'s, refusing the
+/// tangential numbers the impact cannot use, as the command line refuses `run --friction`
+/// (test_surfaces.py::test_a_normal_impact_refuses_tangential_numbers).
+pub(crate) fn resolve_normal(arg: Option<&Bound<'_, PyAny>>) -> PyResult<SurfaceUsed> {
+    let (surface, tangential) = resolve(arg)?;
+    match SurfaceUsed::TANGENTIAL
+        .iter()
+        .zip(tangential)
+        .find(|(_, v)| v.is_some())
+    {
+        Some((key, _)) => Err(value_error(format!(
+            "invalid surface {key}: a normal impact uses no tangential numbers (oblique, \
+             court and shot do; docs/surfaces.md)"
+        ))),
+        None => Ok(surface),
+    }
+}

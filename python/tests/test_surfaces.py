@@ -183,6 +183,19 @@ def test_bad_surfaces_are_named(surface, message):
         bouncelab.run(preset="tennis", surface=surface)
 
 
+@pytest.mark.parametrize("key", ["friction", "tangential_stiffness", "tangential_damping"])
+@pytest.mark.parametrize("call", [
+    lambda s: bouncelab.run(preset="tennis", surface=s),
+    lambda s: bouncelab.collide("tennis", surface=s),
+    lambda s: bouncelab.drop("tennis", bounces=1, surface=s),
+], ids=["run", "collide", "drop"])
+def test_a_normal_impact_refuses_tangential_numbers(call, key):
+    # the command line refuses `run --friction` (exit 2): a number the impact cannot use is
+    # refused, not silently dropped from the answer
+    with pytest.raises(ValueError, match=f"invalid surface {key}: .*normal impact"):
+        call({"name": "hard-court", key: 0.6})
+
+
 def test_answers_on_a_surface_pickle_and_copy():
     s = {"stiffness": 1e6, "damping": 20.0}
     for r in (bouncelab.run(preset="tennis", surface=s),
