@@ -30,15 +30,16 @@ fn sampler(correlate: bool) -> Sampler {
 /// and its impact.
 #[divan::bench]
 fn one_sample(b: divan::Bencher) {
-    sample_by_sample(b, &sampler(false));
+    let s = sampler(false);
+    sample_by_sample(b, |i| s.outcome(i).unwrap().cor);
 }
 
-/// Samples 1, 2, 3, … of `s`, one a call.
-fn sample_by_sample(b: divan::Bencher, s: &Sampler) {
+/// `of` samples 1, 2, 3, …, one a call.
+fn sample_by_sample<T>(b: divan::Bencher, mut of: impl FnMut(u64) -> T) {
     let mut i = 0u64;
     b.bench_local(|| {
         i += 1;
-        s.outcome(black_box(i)).unwrap().cor
+        of(black_box(i))
     });
 }
 
@@ -46,11 +47,7 @@ fn sample_by_sample(b: divan::Bencher, s: &Sampler) {
 #[divan::bench]
 fn draws_only(b: divan::Bencher) {
     let s = sampler(false);
-    let mut i = 0u64;
-    b.bench_local(|| {
-        i += 1;
-        s.params(black_box(i)).unwrap().k_p
-    });
+    sample_by_sample(b, |i| s.params(i).unwrap().k_p);
 }
 
 /// The impact alone, at the nominal golf ball (the closed form of `map::fast`).
@@ -63,7 +60,8 @@ fn impact_only(b: divan::Bencher) {
 /// One sample with a correlation (the Cholesky product added).
 #[divan::bench]
 fn one_sample_correlated(b: divan::Bencher) {
-    sample_by_sample(b, &sampler(true));
+    let s = sampler(true);
+    sample_by_sample(b, |i| s.outcome(i).unwrap().cor);
 }
 
 /// 100,000 samples on one thread, through `Sampler::samples` (blocks, ordering, the columns):

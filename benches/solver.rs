@@ -3,7 +3,7 @@
 
 use bouncelab::analysis::sweep::{cor_vs_zeta, log_space};
 use bouncelab::preset::Preset;
-use bouncelab::{ContactLaw, ImpactParams, SolveOptions, simulate};
+use bouncelab::{ContactLaw, ImpactParams, ImpactResponse, SolveOptions, simulate};
 use divan::black_box;
 
 fn main() {
@@ -39,45 +39,36 @@ fn cor_zeta_sweep_4x400() -> usize {
         .len()
 }
 
-/// Superball hit at 3× its measured speed, so that it goes well past z_p; rtol 1e-9.
-fn elastic_plastic_case(samples: usize) -> (ImpactParams, SolveOptions) {
+/// Superball hit at 3× its measured speed, so that it goes well past z_p; rtol 1e-9, a
+/// history of `samples`; each answer `read`.
+fn elastic_plastic_bench<T>(
+    b: divan::Bencher,
+    samples: usize,
+    read: impl Fn(ImpactResponse) -> T + Sync,
+) {
     let p = Preset::embedded()[0].params();
     let p = ImpactParams {
         v0: 3.0 * p.v0,
         ..p
     };
-    (
-        p,
-        SolveOptions {
-            rtol: 1e-9,
-            ..SolveOptions::default()
-        }
-        .with_samples(samples),
-    )
+    let o = SolveOptions {
+        rtol: 1e-9,
+        ..SolveOptions::default()
+    }
+    .with_samples(samples);
+    b.bench(|| read(simulate(black_box(&p), ContactLaw::ElasticPlastic, &o).unwrap()));
 }
 
 /// One elastic–fully-plastic impact at rtol 1e-9 (target: ≤ 50 µs).
 #[divan::bench]
 fn elastic_plastic_impact(b: divan::Bencher) {
-    let (p, o) = elastic_plastic_case(0);
-    b.bench(|| {
-        simulate(black_box(&p), ContactLaw::ElasticPlastic, &o)
-            .unwrap()
-            .cor
-    });
+    elastic_plastic_bench(b, 0, |r| r.cor);
 }
 
 /// The same impact with a 400-sample history (what the explorer asks for).
 #[divan::bench]
 fn elastic_plastic_with_history(b: divan::Bencher) {
-    let (p, o) = elastic_plastic_case(400);
-    b.bench(|| {
-        simulate(black_box(&p), ContactLaw::ElasticPlastic, &o)
-            .unwrap()
-            .history
-            .t
-            .len()
-    });
+    elastic_plastic_bench(b, 400, |r| r.history.t.len());
 }
 
 /// The issue 30 points: the superball's adopted set at 1×, 3× its measured speed (elastic–

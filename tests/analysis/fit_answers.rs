@@ -131,10 +131,9 @@ fn a_parameter_the_data_cannot_pin_is_no_answer_exit_1() {
     assert_eq!(v["not_pinned"].as_array().unwrap().len(), 1, "{v}");
     let other = if lost == "z_p" { "k_r" } else { "z_p" };
     assert!(o.stderr.contains("no answer") && o.stderr.contains(&lost));
-    let warned = v["warnings"].as_array().unwrap().iter();
     assert!(
-        warned
-            .map(|w| w.as_str().unwrap())
+        warnings(&v)
+            .iter()
             .any(|w| w.contains(&format!("--free {other}"))),
         "{}",
         v["warnings"]

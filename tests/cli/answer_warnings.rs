@@ -175,13 +175,8 @@ fn every_answer_and_every_format_carries_the_radius_warning() {
         let v = json(&[&args[..], &["--format", "json"]].concat());
         // `bat` with another ball than the BBCOR standard's says so: not the reach
         let other_ball = |w: &str| w.starts_with("not the standard's ball:");
-        let w: Vec<&str> = v["warnings"]
-            .as_array()
-            .unwrap()
-            .iter()
-            .map(|w| w.as_str().unwrap())
-            .filter(|w| !other_ball(w))
-            .collect();
+        let mut w = warnings(&v);
+        w.retain(|w| !other_ball(w));
         assert!(w.is_empty(), "{cmd:?} within the radius: {w:?}");
         let text = ok(&args);
         let warned = text

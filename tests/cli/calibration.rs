@@ -9,18 +9,6 @@ use bouncelab::preset::Preset;
 use common::*;
 use serde_json::Value;
 
-/// The warnings of a JSON answer that begin with "outside calibration:".
-fn outside(v: &Value) -> Vec<String> {
-    v["warnings"]
-        .as_array()
-        .unwrap_or_else(|| panic!("no warnings array: {v}"))
-        .iter()
-        .filter_map(Value::as_str)
-        .filter(|w| w.starts_with("outside calibration:"))
-        .map(String::from)
-        .collect()
-}
-
 #[test]
 fn every_embedded_preset_has_a_record_that_holds_at_its_own_speed() {
     for p in Preset::embedded_all() {
@@ -63,12 +51,7 @@ fn a_bad_record_is_named_with_file_line_and_column() {
 #[test]
 fn presets_shows_the_records() {
     let v = json(&["presets", "--format", "json"]);
-    let golf = v
-        .as_array()
-        .unwrap()
-        .iter()
-        .find(|p| p["name"] == "golf")
-        .unwrap();
+    let golf = named(&v, "golf");
     assert_eq!(f(&golf["calibration"], "speed_min"), 1.47);
     assert_eq!(f(&golf["calibration"], "speed_max"), 1.47);
     let text = ok(&["presets"]);
@@ -83,7 +66,7 @@ fn presets_shows_the_records() {
 #[test]
 fn the_papers_baseball_at_the_mlb_speed_is_outside_calibration() {
     let v = json(&argv("run --preset baseball --v0 25.908 --format json"));
-    let w = outside(&v);
+    let w = outside_calibration(&v);
     assert_eq!(w.len(), 1, "{v}");
     assert!(
         w[0].starts_with(
@@ -94,7 +77,7 @@ fn the_papers_baseball_at_the_mlb_speed_is_outside_calibration() {
     );
     // at its own speed: none
     let v = json(&["run", "--preset", "baseball", "--format", "json"]);
-    assert!(outside(&v).is_empty(), "{v}");
+    assert!(outside_calibration(&v).is_empty(), "{v}");
     // text: a warning line
     let text = ok(&["run", "--preset", "golf", "--v0", "40"]);
     assert!(
@@ -118,7 +101,7 @@ fn an_override_is_listed_what_was_kept_too_and_the_comparison_is_withheld() {
             .contains("k_p changed this ball"),
         "{v}"
     );
-    let w = outside(&v);
+    let w = outside_calibration(&v);
     assert!(
         w[0].starts_with("outside calibration: k_p changed the ball"),
         "{w:?}"
@@ -147,7 +130,7 @@ fn every_answer_outside_the_record_says_so() {
     ];
     for args in golf_40 {
         let v = json(&[args, &["--format", "json"][..]].concat());
-        let w = outside(&v);
+        let w = outside_calibration(&v);
         assert_eq!(w.len(), 1, "{args:?}: {v}");
         assert!(
             w[0].starts_with(
@@ -159,7 +142,7 @@ fn every_answer_outside_the_record_says_so() {
     }
     // peers at 40 m/s: the speed, and the target COR measured at another one, both named
     let v = json(&argv("peers --preset golf --v0 40 --format json"));
-    let w = outside(&v);
+    let w = outside_calibration(&v);
     assert_eq!(w.len(), 2, "{v}");
     assert!(
         w[0].starts_with("outside calibration: impact speed 40 m/s"),
@@ -173,23 +156,23 @@ fn every_answer_outside_the_record_says_so() {
     );
     // a COR given is the user's, at the speed asked: no second warning
     let v = json(&argv("peers --preset golf --v0 40 --cor 0.7 --format json"));
-    assert_eq!(outside(&v).len(), 1, "{v}");
+    assert_eq!(outside_calibration(&v).len(), 1, "{v}");
     // sweep rows: each row its own
     let v = json(&argv(
         "sweep velocity --preset golf --from 1.47 --to 40 --points 2 --format json",
     ));
     let rows = v["rows"].as_array().unwrap();
-    assert!(outside(&rows[0]).is_empty(), "{}", rows[0]);
-    assert_eq!(outside(&rows[1]).len(), 1, "{}", rows[1]);
+    assert!(outside_calibration(&rows[0]).is_empty(), "{}", rows[0]);
+    assert_eq!(outside_calibration(&rows[1]).len(), 1, "{}", rows[1]);
     // the map: once for the grid
     let v = json(&argv(
         "map --preset golf --v0 40 --lambda 0.5:1:2 --zeta 0.05:0.1:2 --format json",
     ));
-    assert_eq!(outside(&v).len(), 1, "{v}");
+    assert_eq!(outside_calibration(&v).len(), 1, "{v}");
     assert_eq!(v["ball"]["name"], "golf");
     // a bat: the game's and the BBCOR test's closing speeds, one warning
     let v = json(&argv("bat --preset baseball --bat-mass 0.9 --format json"));
-    let w = outside(&v);
+    let w = outside_calibration(&v);
     assert_eq!(w.len(), 1, "{v}");
     assert!(
         w[0].starts_with("outside calibration: impact speeds "),
@@ -201,13 +184,13 @@ fn every_answer_outside_the_record_says_so() {
     let v = json(&argv(
         "drop --preset tennis --height 2.54 --standard itf --format json",
     ));
-    assert!(outside(&v).is_empty(), "{v}");
+    assert!(outside_calibration(&v).is_empty(), "{v}");
     let o = bl(&argv("drop --preset golf --height 20 --format json"));
     let v: Value = serde_json::from_str(&o.stdout).unwrap();
-    assert_eq!(outside(&v).len(), 1, "{v}");
+    assert_eq!(outside_calibration(&v).len(), 1, "{v}");
     // court: the normal speed of the ITF's 30 m/s at 16°
     let v = json(&argv("court --preset tennis --friction 0.6 --format json"));
-    let w = outside(&v);
+    let w = outside_calibration(&v);
     assert!(
         w[0].starts_with("outside calibration: impact speed 8.269 m/s"),
         "{w:?}"
@@ -221,7 +204,7 @@ fn the_mlb_verdict_on_the_papers_baseball_warns_and_the_drop_names_its_ball() {
     let o = bl(&argv("drop --preset baseball --standard mlb --format json"));
     let v: Value = serde_json::from_str(&o.stdout).expect(&o.stderr);
     assert_eq!(v["standard"]["verdict"], "fail");
-    let w = outside(&v);
+    let w = outside_calibration(&v);
     assert!(
         w.iter().any(|w| w.starts_with(
             "outside calibration: impact speed 25.91 m/s, the ball was fitted at 1.25 m/s only"
@@ -234,7 +217,7 @@ fn the_mlb_verdict_on_the_papers_baseball_warns_and_the_drop_names_its_ball() {
         "drop --preset tennis --height 2.54 --k-r 20000 --format json",
     ));
     assert_eq!(v["ball"]["overrides"], serde_json::json!(["k_r"]));
-    assert!(outside(&v)[0].starts_with("outside calibration: k_r changed the ball"));
+    assert!(outside_calibration(&v)[0].starts_with("outside calibration: k_r changed the ball"));
     let text = bl(&["drop", "--preset", "tennis", "--k-r", "20000"]).stdout;
     assert!(
         text.contains("\noverrides: k_r; kept from the preset: mass, radius, k_p, c, z_p\n"),
@@ -364,13 +347,13 @@ fn fit_save_writes_the_record_of_its_data() {
         &["run", "--preset", "mine", "--format", "json"],
     );
     let run: Value = serde_json::from_str(&o.stdout).unwrap();
-    assert!(outside(&run).is_empty(), "{run}");
+    assert!(outside_calibration(&run).is_empty(), "{run}");
     let o = bl_in(
         home.path(),
         &["run", "--preset", "mine", "--v0", "20", "--format", "json"],
     );
     let run: Value = serde_json::from_str(&o.stdout).unwrap();
-    assert_eq!(outside(&run).len(), 1, "{run}");
+    assert_eq!(outside_calibration(&run).len(), 1, "{run}");
 }
 
 /// Issue 52 item 3, the rest: `collide`, `bat` (as `ball_record`: their `ball` is the preset's

@@ -271,15 +271,9 @@ fn presets_lists_the_three_balls() {
         assert!(lines[i + 1].contains("embedded"));
     }
     let v = json(&["presets", "--format", "json"]);
-    let names: Vec<&str> = v
-        .as_array()
-        .unwrap()
-        .iter()
-        .map(|p| p["name"].as_str().unwrap())
-        .collect();
     // the paper's three first, then the balls of the drop tests (docs/drop.md)
     assert_eq!(
-        names.join(" "),
+        names(&v).join(" "),
         "superball golf baseball tennis football basketball table-tennis softball baseball-mlb \
          softball-44 squash volleyball golf-driver"
     );

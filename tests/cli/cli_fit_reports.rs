@@ -146,12 +146,5 @@ fn a_fitted_ball_past_its_radius_is_warned_of() {
     );
     let v: Value = serde_json::from_str(&o.stdout).unwrap();
     let fastest = "the fitted ball at v0 = 45 m/s (the fastest of the data): peak indentation";
-    assert!(
-        v["warnings"]
-            .as_array()
-            .unwrap()
-            .iter()
-            .any(|w| w.as_str().unwrap().starts_with(fastest)),
-        "{v}"
-    );
+    assert!(warnings(&v).iter().any(|w| w.starts_with(fastest)), "{v}");
 }

@@ -2,7 +2,7 @@
 //! contract), agreement with the library, the court pace formula, bad input.
 
 use crate::common;
-use common::{argv, bad, f, json, ok};
+use common::{argv, bad, f, json, names, ok};
 
 #[test]
 fn oblique_json_has_the_issues_keys() {
@@ -75,13 +75,8 @@ fn court_pace_follows_the_itf_formula() {
 fn standards_lists_the_court_pace() {
     assert!(ok(&["standards"]).contains("itf-court-pace"));
     let v = json(&["standards", "--format", "json"]);
-    let names: Vec<&str> = v
-        .as_array()
-        .unwrap()
-        .iter()
-        .filter_map(|s| s["name"].as_str())
-        .collect();
-    assert!(names.contains(&"itf-court-pace"), "{names:?}");
+    let listed = names(&v);
+    assert!(listed.contains(&"itf-court-pace"), "{listed:?}");
 }
 
 #[test]

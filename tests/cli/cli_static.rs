@@ -112,16 +112,6 @@ fn bad_input_is_one_line_and_exit_2() {
     bad(&["static", "--preset", "tennis"], &["--load"]);
 }
 
-/// The warnings of a JSON answer, as text.
-fn warnings(v: &serde_json::Value) -> Vec<String> {
-    v["warnings"]
-        .as_array()
-        .unwrap_or_else(|| panic!("no warnings array: {v}"))
-        .iter()
-        .filter_map(|w| w.as_str().map(String::from))
-        .collect()
-}
-
 /// Issue 52's trial: `static --preset tennis --load 30` answered 23.81 mm with no warning,
 /// the record holding one static test, at 8.165 kg. The record now keeps its static tests'
 /// loads (tennis: the ITF's 8.165 kg; softball: ASTM F1888's 375 lbf) and `static` warns

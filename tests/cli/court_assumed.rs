@@ -12,11 +12,7 @@ use serde_json::Value;
 const ASSUMED: &str = "its normal give is ASSUMED rigid";
 
 fn warned(v: &Value) -> bool {
-    v["warnings"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .any(|w| w.as_str().unwrap().contains(ASSUMED))
+    warnings(v).iter().any(|w| w.contains(ASSUMED))
 }
 
 /// Every embedded surface: warned exactly when its file says its rigidity is ASSUMED (every
@@ -86,12 +82,7 @@ fn friction_given_is_listed_among_the_overrides() {
 #[test]
 fn the_hard_court_is_rigid_as_published() {
     let all = json(&argv("surfaces --format json"));
-    let hard = all
-        .as_array()
-        .unwrap()
-        .iter()
-        .find(|s| s["name"] == "hard-court")
-        .unwrap();
+    let hard = named(&all, "hard-court");
     let model = hard["sources"]
         .as_array()
         .unwrap()

@@ -203,11 +203,6 @@ fn fit_save_holds_any_data_file_name() {
         assert_eq!(o.code, 0, "{file:?}: {}", o.stderr);
         let out = ok_at(dir.path(), &["presets", "--format", "json"]);
         let v: serde_json::Value = serde_json::from_str(&out).unwrap();
-        let listed = v
-            .as_array()
-            .unwrap()
-            .iter()
-            .any(|p| p["name"] == name.as_str());
-        assert!(listed, "{file:?}: {out}");
+        assert!(names(&v).contains(&name.as_str()), "{file:?}: {out}");
     }
 }

@@ -5,7 +5,7 @@
 //! code.
 
 use crate::common;
-use common::{argv, bad, bad_each, bl, json, ok};
+use common::{argv, bad, bad_each, bl, json, named, ok};
 
 /// `court` without `--preset` fires the ITF court pace test's ball, `tennis` (as `bat` fires
 /// its standard's): it answered for the superball, with an outside-calibration warning.
@@ -22,12 +22,7 @@ fn court_fires_the_standards_ball() {
     assert_eq!(v["standard"], "itf-court-pace");
     // the ball `standards` names for it
     let standards = json(&argv("standards --format json"));
-    let court = standards
-        .as_array()
-        .unwrap()
-        .iter()
-        .find(|s| s["name"] == "itf-court-pace")
-        .expect("itf-court-pace listed");
+    let court = named(&standards, "itf-court-pace");
     assert_eq!(court["balls"][0], "tennis", "{court}");
 }
 

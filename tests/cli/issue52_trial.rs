@@ -3,19 +3,8 @@
 //! header of `oblique` and `peers`, raw floats in text) each fail here on the old code.
 
 use crate::common;
-use common::{argv, bl, json, ok};
+use common::{argv, bl, json, named, ok, outside_calibration};
 use serde_json::Value;
-
-/// The warnings of a JSON answer that begin with `outside calibration:`.
-fn calibration_warnings(v: &Value) -> Vec<String> {
-    v["warnings"]
-        .as_array()
-        .expect("warnings")
-        .iter()
-        .map(|w| w.as_str().unwrap().to_string())
-        .filter(|w| w.starts_with("outside calibration:"))
-        .collect()
-}
 
 /// `bat` without `--preset` fires the BBCOR test's ball, `baseball-mlb` (the paper's
 /// baseball, COR 0.485 at 85 ft/s, gave BBCOR 0.42 with any rigid bat: every bat PASSed), and
@@ -39,14 +28,7 @@ fn bat_names_the_standards_ball() {
         "{text}"
     );
     let standards = json(&argv("standards --format json"));
-    let bbcor = standards
-        .as_array()
-        .or_else(|| standards["standards"].as_array())
-        .expect("a list")
-        .iter()
-        .find(|s| s["name"] == "ncaa-bbcor")
-        .expect("ncaa-bbcor")
-        .clone();
+    let bbcor = named(&standards, "ncaa-bbcor");
     assert_eq!(bbcor["balls"], serde_json::json!(["baseball-mlb"]));
 }
 
@@ -97,14 +79,14 @@ fn peers_pair_warns_as_collide_for_both_balls() {
             "--format",
             "json",
         ]);
-        let expected = calibration_warnings(&collide);
+        let expected = outside_calibration(&collide);
         assert!(!expected.is_empty(), "{ball}/{partner}: {collide}");
-        assert_eq!(calibration_warnings(&peers), expected, "{ball}/{partner}");
+        assert_eq!(outside_calibration(&peers), expected, "{ball}/{partner}");
     }
     let equal = json(&argv(
         "peers --preset tennis --pair tennis --v0 30 --format json",
     ));
-    let w = calibration_warnings(&equal).join("\n");
+    let w = outside_calibration(&equal).join("\n");
     assert!(w.contains("impact speed 15 m/s"), "{w}");
     assert!(
         w.contains("the partner (tennis): impact speed 15 m/s"),

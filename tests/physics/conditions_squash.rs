@@ -4,7 +4,7 @@
 
 use crate::common;
 
-use common::{argv, argv_with, assert_bad, bl, f, file_with, ok_calibrated};
+use common::{argv, argv_with, assert_bad, bl, f, file_with, ok_calibrated, warnings};
 use serde_json::Value;
 
 fn json_calibrated(args: &[&str]) -> Value {
@@ -242,13 +242,7 @@ fn a_ball_at_its_record_s_pressure_typed_in_other_units_is_not_warned() {
             &[p],
         ))
     };
-    let moved = |v: &Value| {
-        v["warnings"]
-            .as_array()
-            .unwrap()
-            .iter()
-            .any(|w| w.as_str().unwrap().contains("its record at"))
-    };
+    let moved = |v: &Value| warnings(v).iter().any(|w| w.contains("its record at"));
     let at = run("8psi");
     assert!(!moved(&at), "{}", at["warnings"]);
     assert!(

@@ -3,7 +3,7 @@
 //! and e, and its calibration to a measured (μ, e).
 
 use crate::common;
-use common::{argv, argv_with, assert_bad, bl, bl_in, f, json};
+use common::{argv, argv_with, assert_bad, bl, bl_in, f, json, names};
 
 /// The ITF formula (ITF CS 01/02).
 fn cpr(mu: f64, e: f64) -> f64 {
@@ -193,14 +193,8 @@ fn oblique_at_90_degrees_is_collide_on_the_same_surface() {
 #[test]
 fn surfaces_lists_every_surface_with_its_sources() {
     let all = json(&["surfaces", "--format", "json"]);
-    let names: Vec<&str> = all
-        .as_array()
-        .unwrap()
-        .iter()
-        .map(|s| s["name"].as_str().unwrap())
-        .collect();
     assert_eq!(
-        names,
+        names(&all),
         [
             "steel-plate",
             "concrete",

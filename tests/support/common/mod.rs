@@ -123,6 +123,47 @@ pub fn f(v: &Value, key: &str) -> f64 {
         .unwrap_or_else(|| panic!("{key} is not a number: {}", v[key]))
 }
 
+/// The warnings of a JSON answer, in its order: `warnings` must be a list of strings.
+pub fn warnings(v: &Value) -> Vec<&str> {
+    v["warnings"]
+        .as_array()
+        .unwrap_or_else(|| panic!("no warnings array: {v}"))
+        .iter()
+        .map(|w| {
+            w.as_str()
+                .unwrap_or_else(|| panic!("a warning not a string: {w}"))
+        })
+        .collect()
+}
+
+/// The warnings of a JSON answer that begin with `outside calibration:`.
+pub fn outside_calibration(v: &Value) -> Vec<&str> {
+    let mut w = warnings(v);
+    w.retain(|w| w.starts_with("outside calibration:"));
+    w
+}
+
+/// The `name` of each entry of a JSON list (`presets`, `surfaces`, `standards`), in its order.
+pub fn names(list: &Value) -> Vec<&str> {
+    entries(list)
+        .iter()
+        .map(|e| e["name"].as_str().unwrap_or_else(|| panic!("no name: {e}")))
+        .collect()
+}
+
+/// The entry of a JSON list whose `name` is `name`.
+pub fn named<'a>(list: &'a Value, name: &str) -> &'a Value {
+    entries(list)
+        .iter()
+        .find(|e| e["name"] == name)
+        .unwrap_or_else(|| panic!("{name} not listed: {list}"))
+}
+
+fn entries(list: &Value) -> &Vec<Value> {
+    list.as_array()
+        .unwrap_or_else(|| panic!("not a list: {list}"))
+}
+
 /// Exit code 2, stdout empty, stderr exactly one line `bouncelab: error: …` holding `needles`.
 pub fn assert_bad(o: &Out, needles: &[&str]) {
     assert_bad_of(o, needles, "");
