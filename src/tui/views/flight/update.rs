@@ -30,7 +30,7 @@ impl App {
     /// The flight view's keys.
     pub(in crate::tui) fn flight_action(&mut self, key: FlightKey) {
         if key == FlightKey::Toggle {
-            self.show_view(self.view.toggled(View::Flight));
+            self.toggle_view(View::Flight);
             self.refresh_flight();
             return;
         }

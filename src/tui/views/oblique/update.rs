@@ -102,7 +102,7 @@ impl App {
     /// The oblique view's keys.
     pub(in crate::tui) fn oblique_action(&mut self, key: ObliqueKey) {
         if key == ObliqueKey::Toggle {
-            self.show_view(self.view.toggled(View::Oblique));
+            self.toggle_view(View::Oblique);
             return;
         }
         if self.view != View::Oblique {
