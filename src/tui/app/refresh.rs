@@ -54,9 +54,9 @@ impl App {
         }
     }
 
-    /// The export of what is on screen, once it is up to date: while a COR-vs-speed sweep is
-    /// still out the export waits for it (and says so). Once there is a request or a reason
-    /// why not, the export is no longer wanted.
+    /// The export of what is on screen, once it is up to date (while a sweep, the models'
+    /// calibration or the map's refinement is still out the export waits, and says so); once
+    /// there is a request or a reason why not, the export is no longer wanted.
     fn prepare_export(&mut self) -> Option<Effect> {
         let request = match self.view {
             View::Map => self.map_export(),
