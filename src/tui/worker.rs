@@ -57,6 +57,14 @@ pub struct Cancellable<W> {
     pub cancel: Arc<AtomicBool>,
 }
 
+impl<W> Cancellable<W> {
+    /// Whether the job is to go on: `update` has not called it off and `go_on` (the worker:
+    /// no newer list that leaves it out) still wants it.
+    pub fn wanted(&self, go_on: &mut dyn FnMut() -> bool) -> bool {
+        !self.cancel.load(Ordering::Relaxed) && go_on()
+    }
+}
+
 impl<W> PartialEq for Cancellable<W> {
     fn eq(&self, other: &Cancellable<W>) -> bool {
         self.generation == other.generation && Arc::ptr_eq(&self.cancel, &other.cancel)

@@ -285,3 +285,37 @@ fn the_peak_force_label_reads_as_the_readout() {
         .unwrap();
     assert_eq!(peak.annotations, [format!("F_m {readout} N")]);
 }
+
+/// Every view switch takes the crosshair off, as it belongs to the charts it was put on: Tab,
+/// Shift+Tab, `i`, `h` and `d`, into a view and out of the drop view (the drop key kept it on,
+/// on a chart of the view it left).
+#[test]
+fn every_view_switch_takes_the_crosshair_off() {
+    use bouncelab::tui::action::{Action, FlightKey, ObliqueKey};
+    let switches = [
+        Action::NextView,
+        Action::PrevView,
+        Action::ToggleDrop,
+        Action::Oblique(ObliqueKey::Toggle),
+        Action::Flight(FlightKey::Toggle),
+    ];
+    for switch in switches {
+        let mut app = App::new(Preset::embedded().remove(1), false);
+        app.update(Action::Crosshair);
+        assert!(app.crosshair().is_some(), "{switch:?}");
+        app.update(switch.clone());
+        assert!(
+            app.crosshair().is_none(),
+            "{switch:?} into {:?}",
+            app.view()
+        );
+    }
+    // out of the drop view, its animation paused so the height chart holds still
+    let mut app = App::new(Preset::embedded().remove(1), false);
+    app.update(Action::ToggleDrop);
+    app.update(Action::DropPause);
+    app.update(Action::Crosshair);
+    assert!(app.crosshair().is_some(), "on the drop view's chart");
+    app.update(Action::ToggleDrop);
+    assert!(app.crosshair().is_none(), "out of the drop view");
+}

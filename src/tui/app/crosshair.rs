@@ -7,10 +7,16 @@ use crate::tui::crosshair::{self, Crosshair};
 
 impl App {
     /// Show `view`: a crosshair belongs to the charts it was put on, so it goes (Tab,
-    /// Shift+Tab and the oblique and flight views' own keys).
+    /// Shift+Tab and the drop, oblique and flight views' own keys).
     pub(in crate::tui) fn show_view(&mut self, view: View) {
         self.view = view;
         self.crosshair = None;
+    }
+
+    /// A view's own key (`d`, `i`, `h`): open the view `own`, or leave it for the impact view,
+    /// as [`App::show_view`] does.
+    pub(in crate::tui) fn toggle_view(&mut self, own: View) {
+        self.show_view(self.view.toggled(own));
     }
 
     pub(super) fn crosshair_action(&mut self, action: Action) {

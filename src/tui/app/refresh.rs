@@ -54,25 +54,35 @@ impl App {
         }
     }
 
-    /// The export of what is on screen, once it is up to date: while a COR-vs-speed sweep is
-    /// still out the export waits for it (and says so).
+    /// The export of what is on screen, once it is up to date (while a sweep, the models'
+    /// calibration or the map's refinement is still out the export waits, and says so); once
+    /// there is a request or a reason why not, the export is no longer wanted.
     fn prepare_export(&mut self) -> Option<Effect> {
-        if self.view == View::Map {
-            return self.prepare_map_export();
+        let request = match self.view {
+            View::Map => self.map_export(),
+            // the flight and oblique views compute in `update` itself: nothing to wait for
+            View::Flight => Some(self.flight_export()),
+            View::Oblique => Some(self.oblique_export()),
+            _ => self.charts_export(),
+        }?;
+        self.export_wanted = false;
+        match request {
+            Ok(r) => Some(Effect::Export(r)),
+            Err(why) => {
+                self.error(why);
+                None
+            }
         }
-        if self.view == View::Flight {
-            return self.prepare_flight_export();
-        }
-        if self.view == View::Oblique {
-            return self.prepare_oblique_export();
-        }
+    }
+
+    /// The export of the view's charts, or why not; `None` while a sweep or the models'
+    /// calibration it draws is still out (the export waits, and says so).
+    fn charts_export(&mut self) -> Option<Result<export::ExportRequest, String>> {
         if !self.sweeps.wanted.is_empty() {
             if let Some(why) = &self.sweeps.stopped {
                 let why =
                     format!("export failed: the COR-vs-speed sweep stopped: {why} (R retries)");
-                self.export_wanted = false;
-                self.error(why);
-                return None;
+                return Some(Err(why));
             }
             self.info("export waits for the COR-vs-speed sweep…".into());
             return None;
@@ -81,13 +91,11 @@ impl App {
             self.info("export waits for the models' calibration…".into());
             return None;
         }
-        self.export_wanted = false;
-        match export::request(&self.scene(), self.view.charts()) {
-            Ok(r) => Some(Effect::Export(r.with_header(self.csv_header()))),
-            Err(e) => {
-                self.error(format!("export failed: {e}"));
-                None
-            }
-        }
+        let request = export::request(&self.scene(), self.view.charts());
+        Some(
+            request
+                .map(|r| r.with_header(self.csv_header()))
+                .map_err(|e| format!("export failed: {e}")),
+        )
     }
 }

@@ -3,7 +3,7 @@
 use crate::tui::save::{question, short_path};
 use crate::tui::state::Confirm;
 use crate::tui::theme::Theme;
-use crate::tui::widgets::{dialog, wrapped_rows};
+use crate::tui::widgets::{dialog, wrapped_dialog};
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
 use ratatui::text::Line;
@@ -82,8 +82,6 @@ impl Widget for &AskDialog<'_> {
                 ],
             ),
         };
-        let w = 60.min(area.width);
-        let rows = wrapped_rows(&lines, w);
-        dialog(area, buf, w, rows, title, lines, &theme);
+        wrapped_dialog(area, buf, 60, title, lines, &theme);
     }
 }

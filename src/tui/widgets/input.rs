@@ -26,17 +26,12 @@ impl Widget for &InputDialog<'_> {
 }
 
 fn render(input: &Input, s: &Setting, theme: &Theme, area: Rect, buf: &mut Buffer) {
-    let (title, about, label, keys, width) = match input.purpose {
+    let (title, about, label, keys, width): Entry = match input.purpose {
         Purpose::Value(p) => {
             // four digits, as the readout shows it (issue 51 item 4: "now 1.29908")
             let current = sig_trim(s.get(p), 4);
-            (
-                format!(" Set {} ", p.symbol()),
-                format!(" range {}, now {current}{}", p.range_text(), p.unit()),
-                format!(" {} = ", p.symbol()),
-                " Enter accepts · Esc cancels",
-                44,
-            )
+            let about = format!(" range {}, now {current}{}", p.range_text(), p.unit());
+            number_entry(p.symbol(), about, " Enter accepts · Esc cancels", 44)
         }
         Purpose::MeasuredPath => (
             " Load measured data ".to_string(),
@@ -63,10 +58,9 @@ fn render(input: &Input, s: &Setting, theme: &Theme, area: Rect, buf: &mut Buffe
                 62,
             )
         }
-        Purpose::Physical(f) => (
-            format!(" Set {} ", f.symbol()),
+        Purpose::Physical(f) => number_entry(
+            f.symbol(),
             format!(" range {}, now {}", f.range_text(), f.show(f.get(s))),
-            format!(" {} = ", f.symbol()),
             " Enter accepts · Esc back to the form",
             50,
         ),
@@ -77,10 +71,9 @@ fn render(input: &Input, s: &Setting, theme: &Theme, area: Rect, buf: &mut Buffe
             " Enter saves · Esc cancels",
             62,
         ),
-        Purpose::Oblique(p) => (
-            format!(" Set {} ", p.symbol()),
+        Purpose::Oblique(p) => number_entry(
+            p.symbol(),
             format!(" {}: range {}", p.name(), p.range_text()),
-            format!(" {} = ", p.symbol()),
             " Enter accepts · Esc cancels",
             50,
         ),
@@ -120,6 +113,16 @@ fn render(input: &Input, s: &Setting, theme: &Theme, area: Rect, buf: &mut Buffe
     Paragraph::new(lines)
         .block(Block::bordered().title(Line::styled(title, theme.title())))
         .render(popup, buf);
+}
+
+/// What an entry dialog says: its title, the line about the value, the entry's label, the
+/// keys, and its width.
+type Entry = (String, String, String, &'static str, u16);
+
+/// The entry of one number named by its `symbol` (λ, m, θ, …): "Set λ", "λ = ".
+fn number_entry(symbol: &str, about: String, keys: &'static str, width: u16) -> Entry {
+    let title = format!(" Set {symbol} ");
+    (title, about, format!(" {symbol} = "), keys, width)
 }
 
 /// The entry's text with the cursor shown, in `room` cells plus one: the character under the

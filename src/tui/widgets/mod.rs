@@ -64,6 +64,21 @@ pub fn dialog(
         .render(popup, buf);
 }
 
+/// A [`dialog`] `width` columns wide (as much as `area` has) and as tall as `lines` wrapped
+/// in it ([`wrapped_rows`]): the y/n questions.
+pub fn wrapped_dialog(
+    area: Rect,
+    buf: &mut Buffer,
+    width: u16,
+    title: &str,
+    lines: Vec<Line>,
+    theme: &Theme,
+) {
+    let w = width.min(area.width);
+    let rows = wrapped_rows(&lines, w);
+    dialog(area, buf, w, rows, title, lines, theme);
+}
+
 /// A readout in one bordered column (wide screens): `lines` broken between fields, never
 /// inside a value (`+0.225` and its `m` on two lines), to the width inside the border.
 pub fn readout_column(lines: Vec<Line<'static>>, area: Rect, buf: &mut Buffer) {

@@ -1,7 +1,7 @@
 //! The question before quitting loses work (`q` with pins, measured data or a fit).
 
 use crate::tui::theme::Theme;
-use crate::tui::widgets::{dialog, wrapped_rows};
+use crate::tui::widgets::wrapped_dialog;
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
 use ratatui::text::Line;
@@ -24,8 +24,6 @@ impl Widget for &QuitDialog<'_> {
             ),
             Line::styled(" q or y quits · n or Esc stays", self.theme.dim()),
         ];
-        let w = 50.min(area.width);
-        let rows = wrapped_rows(&lines, w);
-        dialog(area, buf, w, rows, " Quit ", lines, &self.theme);
+        wrapped_dialog(area, buf, 50, " Quit ", lines, &self.theme);
     }
 }

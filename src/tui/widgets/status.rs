@@ -10,9 +10,12 @@ use ratatui::layout::Rect;
 use ratatui::text::{Line, Span};
 use ratatui::widgets::Widget;
 
-/// Key hints in display order, with the rank at which they are dropped when space runs out
-/// (lower ranks stay longer).
-const HINTS: [(&str, &str, u8); 17] = [
+/// A key hint: the key, what it does, and the rank at which it is dropped when space runs
+/// out (lower ranks stay longer).
+type Hint = (&'static str, &'static str, u8);
+
+/// Key hints in display order.
+const HINTS: [Hint; 17] = [
     ("l/L", "λ", 0),
     ("z/Z", "ζ", 0),
     ("v/V", "v0", 0),
@@ -33,7 +36,7 @@ const HINTS: [(&str, &str, u8); 17] = [
 ];
 
 /// The map view's hints in place of `↑↓ change` and `←→ select`: the arrows move the cursor.
-const MAP_HINTS: [(&str, &str, u8); 3] = [
+const MAP_HINTS: [Hint; 3] = [
     ("←→↑↓", "cursor", 0),
     ("n", "quantity", 1),
     ("t", "targets", 1),
@@ -152,7 +155,7 @@ pub struct KeyHints {
 }
 
 /// The flight view's own keys (src/tui/views/flight/).
-const FLIGHT_HINTS: [(&str, &str, u8); 6] = [
+const FLIGHT_HINTS: [Hint; 6] = [
     ("←→", "select", 0),
     ("↑↓", "step", 0),
     ("a/A", "elev", 1),
@@ -162,7 +165,7 @@ const FLIGHT_HINTS: [(&str, &str, u8); 6] = [
 ];
 
 /// The oblique view's own keys (src/tui/views/oblique/).
-const OBLIQUE_HINTS: [(&str, &str, u8); 5] = [
+const OBLIQUE_HINTS: [Hint; 5] = [
     ("a/A", "θ", 0),
     ("w/W", "ω", 0),
     ("k/K", "μ", 0),
@@ -172,47 +175,41 @@ const OBLIQUE_HINTS: [(&str, &str, u8); 5] = [
 ];
 
 /// The drop view's own keys (src/tui/views/drop/state.rs).
-const DROP_HINTS: [(&str, &str, u8); 2] = [("space", "pause", 0), ("b", "replay", 1)];
+const DROP_HINTS: [Hint; 2] = [("space", "pause", 0), ("b", "replay", 1)];
 
 impl Widget for &KeyHints {
     fn render(self, area: Rect, buf: &mut Buffer) {
-        let hints_shown: Vec<(&str, &str, u8)> = if self.map {
-            let mut v = MAP_HINTS.to_vec();
-            v.extend(HINTS.iter().filter(|h| !matches!(h.0, "↑↓" | "←→")));
-            v
+        let hints_shown: Vec<Hint> = if self.map {
+            own_first(&MAP_HINTS, &["↑↓", "←→"])
         } else if let Some(page) = self.oblique {
-            let mut v = OBLIQUE_HINTS.to_vec();
-            if page == crate::tui::views::oblique::state::Page::Map {
-                v[3] = ("t", "charts", 1);
-                v.insert(3, ("←→↑↓", "θ μ", 0));
-            }
             let arrows = page == crate::tui::views::oblique::state::Page::Map;
+            let mut own = OBLIQUE_HINTS.to_vec();
+            if arrows {
+                own[3] = ("t", "charts", 1);
+                own.insert(3, ("←→↑↓", "θ μ", 0));
+            }
+            let replaced: &[&str] = if arrows {
+                &["e", "[ ]", "1-3", "↑↓", "←→"]
+            } else {
+                &["e", "[ ]", "1-3"]
+            };
             // the view's own keys before λ, ζ, v0 where the row is short
-            v.extend(
-                HINTS
-                    .iter()
-                    .filter(|h| {
-                        let moved = arrows && matches!(h.0, "↑↓" | "←→");
-                        !(moved || matches!(h.0, "e" | "[ ]" | "1-3"))
-                    })
-                    .map(|&(k, d, r)| {
-                        let knob = matches!(k, "l/L" | "z/Z" | "v/V");
-                        (k, d, if knob { r.max(1) } else { r })
-                    }),
-            );
-            v
+            own_first(&own, replaced)
+                .into_iter()
+                .map(|(k, d, r)| {
+                    let knob = matches!(k, "l/L" | "z/Z" | "v/V");
+                    (k, d, if knob { r.max(1) } else { r })
+                })
+                .collect()
         } else if self.flight {
-            let mut v = FLIGHT_HINTS.to_vec();
-            v.extend(HINTS.iter().filter(|h| !matches!(h.0, "↑↓" | "←→" | "=")));
-            v
+            own_first(&FLIGHT_HINTS, &["↑↓", "←→", "="])
         } else if self.drop {
-            let mut v = DROP_HINTS.to_vec();
+            let mut v = own_first(&DROP_HINTS, &["e"]);
             if self.drop_paused {
                 // "paused" on the key bar at every width, where the readout's own line
                 // may not show (issue 51 item 6: 80 × 24 showed no sign of the pause)
                 v[0] = ("space", "play · paused", 0);
             }
-            v.extend(HINTS.iter().filter(|h| h.0 != "e"));
             v
         } else {
             HINTS.to_vec()
@@ -221,8 +218,16 @@ impl Widget for &KeyHints {
     }
 }
 
-fn hints(theme: &Theme, all: &[(&str, &str, u8)], area: Rect, buf: &mut Buffer) {
-    let width = |h: &(&str, &str, u8)| h.0.chars().count() + h.1.chars().count() + 3;
+/// A view's key bar: its `own` keys first, then the common [`HINTS`] but those it takes over
+/// (`replaced`, by key).
+fn own_first(own: &[Hint], replaced: &[&str]) -> Vec<Hint> {
+    let mut v = own.to_vec();
+    v.extend(HINTS.iter().filter(|h| !replaced.contains(&h.0)));
+    v
+}
+
+fn hints(theme: &Theme, all: &[Hint], area: Rect, buf: &mut Buffer) {
+    let width = |h: &Hint| h.0.chars().count() + h.1.chars().count() + 3;
     let mut budget = usize::from(area.width);
     let mut keep = vec![false; all.len()];
     for rank in 0..=4 {

@@ -26,8 +26,7 @@ impl App {
     pub(in crate::tui) fn drop_action(&mut self, action: &Action) {
         match action {
             Action::ToggleDrop => {
-                // the crosshair stays as it is (Tab, `i` and `h` take it off: `show_view`)
-                self.view = self.view.toggled(View::Drop);
+                self.toggle_view(View::Drop);
                 // entering: the animation starts from the release
                 self.drop = DropView::new(self.drop.motion);
             }

@@ -6,7 +6,7 @@
 use crate::api::ShotSpec;
 use crate::text::number;
 use crate::tui::action::FlightKey;
-use crate::tui::app::{App, Effect, View};
+use crate::tui::app::{App, View};
 use crate::tui::export::{ExportRequest, computed};
 use crate::tui::views::flight::export;
 use crate::tui::views::flight::state::{FlightValues, FlightView, SAMPLES};
@@ -30,7 +30,7 @@ impl App {
     /// The flight view's keys.
     pub(in crate::tui) fn flight_action(&mut self, key: FlightKey) {
         if key == FlightKey::Toggle {
-            self.show_view(self.view.toggled(View::Flight));
+            self.toggle_view(View::Flight);
             self.refresh_flight();
             return;
         }
@@ -80,16 +80,9 @@ impl App {
     }
 
     /// `e` in the flight view: the path as a figure (SVG and CSV), the CSV headed by `y`'s
-    /// line and the landing's and the bounce's numbers; nothing recomputed.
-    pub(in crate::tui) fn prepare_flight_export(&mut self) -> Option<Effect> {
-        self.export_wanted = false;
-        let r = match computed(&self.flight.shot, "shot") {
-            Ok(r) => r,
-            Err(why) => {
-                self.error(why);
-                return None;
-            }
-        };
+    /// line and the landing's and the bounce's numbers; nothing recomputed. Or why not.
+    pub(in crate::tui) fn flight_export(&self) -> Result<ExportRequest, String> {
+        let r = computed(&self.flight.shot, "shot")?;
         let v = &self.flight.values;
         let subtitle = format!(
             "{}, from {} m at {} m/s, {}°, {} rad/s; μ = {}",
@@ -103,7 +96,6 @@ impl App {
         let radius = self.setting.radius;
         let charts = vec![("flight-path", export::path_figure(r, radius, &subtitle))];
         let header = export::header(&self.command_line(), r);
-        let request = ExportRequest::of(&self.preset().name, charts, None, header);
-        Some(Effect::Export(request))
+        Ok(ExportRequest::of(&self.preset().name, charts, None, header))
     }
 }

@@ -222,28 +222,21 @@ impl App {
 }
 
 impl App {
-    /// `e` in the map view: the map on screen once it has full detail (while the worker
-    /// refines it the export waits, and says so).
-    pub(in crate::tui) fn prepare_map_export(&mut self) -> Option<Effect> {
+    /// `e` in the map view: the map on screen once it has full detail, or why not; `None`
+    /// while the worker refines it (the export waits, and says so).
+    pub(in crate::tui) fn map_export(&mut self) -> Option<Result<ExportRequest, String>> {
         let map = match computed(&self.map.map, "map") {
             Ok(m) => m,
-            Err(why) => {
-                self.export_wanted = false;
-                self.error(why);
-                return None;
-            }
+            Err(why) => return Some(Err(why)),
         };
         if !map.is_complete() {
             if let Some(why) = &self.map.job.stopped {
                 let why = format!("export failed: the map's refinement stopped: {why} (R retries)");
-                self.export_wanted = false;
-                self.error(why);
-                return None;
+                return Some(Err(why));
             }
             self.info("export waits for the map's full detail…".into());
             return None;
         }
-        self.export_wanted = false;
         let s = &self.setting;
         let export = MapExport {
             map: map.clone(),
@@ -259,6 +252,6 @@ impl App {
         };
         let header = self.csv_header();
         let request = ExportRequest::of(&self.preset().name, Vec::new(), Some(export), header);
-        Some(Effect::Export(request))
+        Some(Ok(request))
     }
 }

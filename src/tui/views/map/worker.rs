@@ -8,7 +8,6 @@
 use crate::map::Map;
 use crate::tui::views::map::state::MapJob;
 use crate::tui::worker::{Job, Worker};
-use std::sync::atomic::Ordering;
 
 /// A finished pass: the job it was for and the map with that pass in.
 pub type Reply = crate::tui::worker::Reply<MapJob>;
@@ -29,7 +28,7 @@ impl Job for MapJob {
         partial: &mut dyn FnMut(Map),
     ) -> Option<Result<Map, String>> {
         let mut map = self.work.clone();
-        while !self.cancel.load(Ordering::Relaxed) && go_on() {
+        while self.wanted(go_on) {
             match map.refine_until(&self.cancel) {
                 Some(pass) if pass.complete && map.is_complete() => return Some(Ok(map)),
                 Some(pass) if pass.complete => partial(map.clone()),

@@ -102,7 +102,7 @@ impl App {
     /// The oblique view's keys.
     pub(in crate::tui) fn oblique_action(&mut self, key: ObliqueKey) {
         if key == ObliqueKey::Toggle {
-            self.show_view(self.view.toggled(View::Oblique));
+            self.toggle_view(View::Oblique);
             return;
         }
         if self.view != View::Oblique {
@@ -346,16 +346,9 @@ impl App {
 
     /// `e` in the oblique view: the impact's charts and numbers
     /// (src/tui/views/oblique/export.rs), headed by `y`'s `bouncelab oblique` line; the
-    /// impact is computed in `update` itself, so there is nothing to wait for.
-    pub(in crate::tui) fn prepare_oblique_export(&mut self) -> Option<Effect> {
-        self.export_wanted = false;
-        let r = match computed(&self.oblique.impact, "impact") {
-            Ok(r) => r,
-            Err(why) => {
-                self.error(why);
-                return None;
-            }
-        };
+    /// impact is computed in `update` itself, so there is nothing to wait for. Or why not.
+    pub(in crate::tui) fn oblique_export(&self) -> Result<ExportRequest, String> {
+        let r = computed(&self.oblique.impact, "impact")?;
         let o = &self.oblique.values;
         let subtitle = format!(
             "{}, {} m/s at {}°, spin {} rad/s, μ = {}",
@@ -365,12 +358,9 @@ impl App {
             number_text(o.spin),
             number_text(o.friction)
         );
-        let Some(charts) = export::figures(r, &subtitle) else {
-            self.error("export failed: the impact has no history".into());
-            return None;
-        };
+        let charts = export::figures(r, &subtitle)
+            .ok_or_else(|| "export failed: the impact has no history".to_string())?;
         let header = export::header(&self.command_line(), r);
-        let request = ExportRequest::of(&self.preset().name, charts, None, header);
-        Some(Effect::Export(request))
+        Ok(ExportRequest::of(&self.preset().name, charts, None, header))
     }
 }

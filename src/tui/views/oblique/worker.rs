@@ -6,7 +6,6 @@
 
 use crate::tui::views::oblique::map::{self, MapJob, ObliqueMap};
 use crate::tui::worker::{Job, Worker};
-use std::sync::atomic::Ordering;
 
 /// A finished map: the job it was for and the map, or why there is none.
 pub type Reply = crate::tui::worker::Reply<MapJob>;
@@ -24,7 +23,7 @@ impl Job for MapJob {
         go_on: &mut dyn FnMut() -> bool,
         _partial: &mut dyn FnMut(ObliqueMap),
     ) -> Option<Result<ObliqueMap, String>> {
-        if self.cancel.load(Ordering::Relaxed) || !go_on() {
+        if !self.wanted(go_on) {
             return None;
         }
         map::compute(&self.work, &self.cancel)
