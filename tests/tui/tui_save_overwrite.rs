@@ -164,3 +164,29 @@ fn failures_are_one_line_messages_and_write_nothing() {
     assert!(text.starts_with("save failed: "), "{text}");
     assert!(!text.contains('\n'));
 }
+
+/// The overwrite question keeps its answer line on a narrow screen with a long file name: the
+/// box is as tall as its lines wrapped, as the other y/n questions are (it was as tall as its
+/// lines unwrapped, so "y replaces it" fell off the box).
+#[test]
+fn the_overwrite_question_shows_its_answers_when_its_lines_wrap() {
+    let long = format!("{}-custom.toml", "a-very-long-ball-name".repeat(3));
+    for (w, h) in [(60, 20), (80, 24), (120, 40)] {
+        let mut app = superball();
+        press(&mut app, "s\n");
+        update(
+            &mut app,
+            Action::SaveExists {
+                path: Path::new("/home/user/.config/bouncelab/presets").join(&long),
+                holds: Some("old-ball".into()),
+            },
+        );
+        assert_eq!(app.mode(), Mode::Confirm);
+        let screen =
+            crate::tui_common::buffer_text(crate::tui_common::draw(&app, w, h).backend().buffer());
+        assert!(
+            screen.contains("y replaces it · n or Esc keeps it"),
+            "{w}×{h}: the answers are cut off:\n{screen}"
+        );
+    }
+}

@@ -3,7 +3,7 @@
 use crate::tui::save::{question, short_path};
 use crate::tui::state::Confirm;
 use crate::tui::theme::Theme;
-use crate::tui::widgets::{dialog, wrapped_dialog};
+use crate::tui::widgets::wrapped_dialog;
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
 use ratatui::text::Line;
@@ -48,8 +48,9 @@ fn render(confirm: &Confirm, theme: &Theme, area: Rect, buf: &mut Buffer) {
         theme.dim(),
     ));
     let title = format!(" Save preset {} ", confirm.request.name);
-    let rows = lines.len();
-    dialog(area, buf, 60.min(area.width), rows, &title, lines, theme);
+    // as tall as its lines wrapped: a long file name must not push the answers out
+    // (tui_save_overwrite::the_overwrite_question_shows_its_answers_when_its_lines_wrap)
+    wrapped_dialog(area, buf, 60, &title, lines, theme);
 }
 
 /// A y/n question of [`crate::tui::state::Ask`], centred on the area it is given.

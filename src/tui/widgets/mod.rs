@@ -38,10 +38,13 @@ pub fn centred(area: Rect, w: u16, h: u16) -> Rect {
 }
 
 /// The rows `lines` take wrapped inside a dialog `w` columns wide (its border excluded), an
-/// empty line one row.
+/// empty line one row: counted by ratatui's own word wrapper, the one [`dialog`] draws with
+/// (a count by characters misses the rows a word moved whole to the next line leaves:
+/// tui_save_overwrite::the_overwrite_question_shows_its_answers_when_its_lines_wrap).
 pub fn wrapped_rows(lines: &[Line], w: u16) -> usize {
-    let inner = usize::from(w.saturating_sub(2)).max(1);
-    lines.iter().map(|l| l.width().max(1).div_ceil(inner)).sum()
+    Paragraph::new(lines.to_vec())
+        .wrap(Wrap { trim: false })
+        .line_count(w.saturating_sub(2).max(1))
 }
 
 /// A dialog (the questions, the command box): `lines` wrapped in a bordered box `w` columns
