@@ -78,6 +78,10 @@ extern crate self as bouncelab;
 #[cfg(test)]
 #[path = "../tests/support/fit_common/bench_ball.rs"]
 mod bench_ball;
+// the tests' one seeded generator (ChaCha8), for the unit tests that draw points
+#[cfg(test)]
+#[path = "../tests/support/seeded/mod.rs"]
+mod seeded;
 
 pub mod analysis;
 pub mod api;

@@ -11,19 +11,15 @@
 //!   `table::summary` is then the Taylor steps' answer.
 
 use crate::common::embedded;
+use crate::seeded::Seeded;
 use bouncelab::solver::table::{self, GRID, Patch, cheb};
 use bouncelab::solver::taylor;
 use bouncelab::{ContactLaw, Normalized};
 
-/// A xorshift generator's uniform numbers in [0, 1).
+/// Seeded uniform numbers in [0, 1) (the tests' one generator, tests/support/seeded).
 fn uniform(seed: u64) -> impl FnMut() -> f64 {
-    let mut state = seed;
-    move || {
-        state ^= state << 13;
-        state ^= state >> 7;
-        state ^= state << 17;
-        (state >> 11) as f64 / (1u64 << 53) as f64
-    }
+    let mut seeded = Seeded::new(seed);
+    move || seeded.uniform()
 }
 
 fn kept() -> Vec<(usize, Vec<f64>)> {

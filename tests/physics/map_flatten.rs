@@ -116,14 +116,8 @@ fn the_tennis_ball_flattens_in_closed_form() {
 /// (the exact solver follows a reload: its answer would differ).
 #[test]
 fn random_flattening_balls_agree_with_the_exact_solver() {
-    let mut x = 0x2545_f491_4f6c_dd1d_u64;
-    let mut next = || {
-        // xorshift64*: plain, seeded, enough to spread test points
-        x ^= x >> 12;
-        x ^= x << 25;
-        x ^= x >> 27;
-        (x.wrapping_mul(0x2545_f491_4f6c_dd1d) >> 11) as f64 / (1u64 << 53) as f64
-    };
+    let mut seeded = crate::seeded::Seeded::new(0x2545_f491_4f6c_dd1d_u64);
+    let mut next = || seeded.uniform();
     let (mut answered, mut cells, mut worst) = (0, 0, 0.0f64);
     while cells < 4000 {
         let (l, z) = (

@@ -248,14 +248,8 @@ fn tennis_rows_over_speeds_are_runs_answers() {
 /// speed: every row is `run`'s answer to 1e-12, and the closed form answers most of them.
 #[test]
 fn random_flattening_rows_are_runs_answers() {
-    let mut x = 0x9e37_79b9_7f4a_7c15_u64 ^ 0x5a5a;
-    let mut next = || {
-        // xorshift64*, as `balls`
-        x ^= x >> 12;
-        x ^= x << 25;
-        x ^= x >> 27;
-        (x.wrapping_mul(0x2545_f491_4f6c_dd1d) >> 11) as f64 / (1u64 << 53) as f64
-    };
+    let mut seeded = crate::seeded::Seeded::new(0x9e37_79b9_7f4a_7c15_u64 ^ 0x5a5a);
+    let mut next = || seeded.uniform();
     let (mut rows, mut closed) = (0, 0);
     while rows < 300 {
         let (l, z) = (

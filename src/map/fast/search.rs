@@ -330,13 +330,8 @@ mod tests {
     /// either sign, steps from 1e-9 to 0.3 of the scale), and settles where it does.
     #[test]
     fn one_division_is_householder() {
-        let mut x = 0x9e37_79b9_7f4a_7c15_u64;
-        let mut next = || {
-            x ^= x >> 12;
-            x ^= x << 25;
-            x ^= x >> 27;
-            (x.wrapping_mul(0x2545_f491_4f6c_dd1d) >> 11) as f64 / (1u64 << 53) as f64 - 0.5
-        };
+        let mut seeded = crate::seeded::Seeded::new(0x9e37_79b9_7f4a_7c15);
+        let mut next = || seeded.uniform() - 0.5;
         for _ in 0..10_000 {
             let f1 = 10f64.powf(6.0 * next()) * next().signum();
             let u = 10f64.powf(-9.0 + 8.0 * (next() + 0.5)) * next().signum();
