@@ -15,11 +15,7 @@ use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
 use serde_json::Value;
 use std::fs;
 use std::path::Path;
-use tui_common::{export_of, type_keys};
-
-fn app(i: usize) -> App {
-    App::new(Preset::embedded().remove(i), true)
-}
+use tui_common::{app, export_of, type_keys};
 
 /// The line `y` shows.
 fn shown(app: &mut App) -> String {

@@ -13,10 +13,6 @@ use std::fs;
 
 use tui_common::*;
 
-fn app(i: usize) -> App {
-    App::new(Preset::embedded().remove(i), true)
-}
-
 fn message(app: &App) -> (String, Severity) {
     let m = app.message().expect("a message");
     (m.text.clone(), m.severity)

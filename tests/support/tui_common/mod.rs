@@ -29,6 +29,25 @@ pub fn press(app: &mut App, keys: &[KeyCode]) -> Vec<Effect> {
     effects
 }
 
+/// The explorer in colour on the embedded preset number `i` (0 superball, 1 golf, 2 baseball).
+pub fn app(i: usize) -> App {
+    App::new(bouncelab::preset::Preset::embedded().remove(i), true)
+}
+
+/// The superball in colour: `app(0)`.
+pub fn superball() -> App {
+    app(0)
+}
+
+/// The superball in the map view of a `w` × `h` terminal (every pass evaluated in `update`).
+pub fn map_app(color: bool, w: u16, h: u16) -> App {
+    let mut app = App::new(bouncelab::preset::Preset::embedded().remove(0), color);
+    app.update(action::Action::Resize(w, h));
+    press(&mut app, &[KeyCode::Tab, KeyCode::Tab, KeyCode::Tab]);
+    assert_eq!(app.view(), View::Map);
+    app
+}
+
 /// The explorer on the embedded preset `name`, without colour, after the key `view_key`,
 /// which opens `view` (asserted): the start of a test of one view.
 pub fn opened_on(name: &str, view_key: char, view: View) -> App {
