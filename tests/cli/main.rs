@@ -8,6 +8,8 @@
 mod common;
 #[path = "../support/fit_common/mod.rs"]
 mod fit_common;
+#[path = "../support/hostile/mod.rs"]
+mod hostile;
 #[path = "../support/pty/mod.rs"]
 mod pty;
 #[path = "../support/seeded/mod.rs"]
@@ -17,6 +19,7 @@ mod tui_common;
 
 mod answer_keys;
 mod answer_reach;
+mod answer_reach_map;
 mod answer_warnings;
 mod calibration;
 mod cli;
@@ -65,6 +68,7 @@ mod court_assumed;
 mod escaping;
 mod field_names;
 mod hostile_generators;
+mod hostile_unreadable;
 mod issue52_messages;
 mod issue52_trial;
 mod numbers_as_typed;
