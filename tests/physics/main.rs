@@ -8,6 +8,8 @@
 mod common;
 #[path = "../support/domain/mod.rs"]
 mod domain;
+#[path = "../support/flight_ode/mod.rs"]
+mod flight_ode;
 #[path = "../support/seeded/mod.rs"]
 mod seeded;
 #[path = "../support/spread/mod.rs"]
@@ -48,6 +50,7 @@ mod rows_columns;
 mod rows_wide;
 mod run_summary;
 mod solver_agreement;
+mod solver_creeps;
 mod standards;
 mod surfaces;
 mod target_pair;
