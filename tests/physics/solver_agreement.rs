@@ -1,5 +1,6 @@
-//! The two independent solvers agree, the energy balance closes, COR grows with λ, a creep
-//! matches a 40-digit reference, and stiff runs are checked by their energy balance.
+//! The two independent solvers agree, the energy balance closes, COR grows with λ, the cases
+//! the properties found (a soft spring's slow release, a NaN after τ = 1.5e10, creeps against
+//! 40-digit references), and stiff runs are checked by their energy balance.
 
 use bouncelab::{ContactLaw, ImpactParams, Method, SolveOptions, simulate};
 
@@ -118,6 +119,21 @@ fn soft_spring_release_is_a_rebound_for_both() {
     assert!(e.rebound && n.rebound, "{e:?} {n:?}");
     assert!((e.cor - 0.0299).abs() < 1e-3, "e = {}", e.cor);
     assert!((e.cor - n.cor).abs() < 1e-6, "{} vs {}", e.cor, n.cor);
+}
+
+/// Followed to τ = 1.5e10 (λ = 6e-12, ζ = 1), the exact flow's real pair used to be formed as
+/// e^{cτ} e^{∓hτ} = 0 · ∞: NaN in the history and the energy audit.
+#[test]
+fn a_very_long_creep_stays_finite() {
+    let p = ImpactParams::from_normalized(6.1e-12, 1.0, 0.216);
+    let o = SolveOptions::default().with_energy().with_samples(64);
+    let r = simulate(&p, ContactLaw::Linear, &o).unwrap();
+    let all = r.history.indentation.iter().chain(&r.history.displacement);
+    assert!(
+        all.clone().count() > 0 && all.copied().all(f64::is_finite),
+        "{r:?}"
+    );
+    assert!(r.energy.unwrap().relative_residual() < 1e-6);
 }
 
 /// Creeps against a 40-digit reference (mpmath: eigen-decomposition of each phase, roots by

@@ -1,23 +1,8 @@
-//! Creeps, the slow contacts of a tiny λ or a large ζ: finite however long, leaving at the
-//! spring's pace, the closed forms against the exact solver, answers at the integrators' noise
-//! floor, and a yield met mid-creep.
+//! Creeps, the slow contacts of a tiny λ or a large ζ: leaving at the spring's pace, the
+//! closed forms against the exact solver, answers at the integrators' noise floor, and a yield
+//! met mid-creep.
 
 use bouncelab::{ContactLaw, ImpactParams, Method, SolveOptions, simulate};
-
-/// Followed to τ = 1.5e10 (λ = 6e-12, ζ = 1), the exact flow's real pair used to be formed as
-/// e^{cτ} e^{∓hτ} = 0 · ∞: NaN in the history and the energy audit.
-#[test]
-fn a_very_long_creep_stays_finite() {
-    let p = ImpactParams::from_normalized(6.1e-12, 1.0, 0.216);
-    let o = SolveOptions::default().with_energy().with_samples(64);
-    let r = simulate(&p, ContactLaw::Linear, &o).unwrap();
-    let all = r.history.indentation.iter().chain(&r.history.displacement);
-    assert!(
-        all.clone().count() > 0 && all.copied().all(f64::is_finite),
-        "{r:?}"
-    );
-    assert!(r.energy.unwrap().relative_residual() < 1e-6);
-}
 
 /// The adaptive solver at a recoil spring so soft that the ball creeps out at the integrator's
 /// noise floor. Linear law, λ = 1e-15, ζ = 5 (the exact solver: e = 1e-13 at τ ≈ 593): noise
