@@ -1,6 +1,7 @@
 //! A dimensional map's cells against the ball's radius (src/api/reach.rs for one impact):
 //! each cell's peak indentation from its peak force, and its centre read once, by the bounds
-//! where they decide and exactly where they do not. tests/cli/answer_reach.rs.
+//! where they decide and exactly where they do not. tests/cli/answer_reach.rs (the open cells
+//! read by the Taylor steps) and tests/cli/answer_reach_map.rs (the counts).
 
 use super::BallError;
 use super::reach::{centre_bounds, peak_displacement};
@@ -66,7 +67,7 @@ impl Tally {
 /// passes in (those whose indentation passes too: α ≥ z) and how many of them by it alone;
 /// a cell whose run again fails is neither: the warning counts it as not checked (and is
 /// given for it alone), so no cell passes silently. `None` otherwise, for a normalized map,
-/// or with no radius known (NaN). tests/cli/answer_reach.rs.
+/// or with no radius known (NaN). tests/cli/answer_reach_map.rs.
 pub fn map_displacement_warning(map: &Map, radius: f64) -> Option<String> {
     map_reach(map, radius)?.warning()
 }

@@ -3,6 +3,7 @@
 //! from the curves the state already holds.
 
 use crate::tui_common;
+use crate::tui_common::superball;
 
 use bouncelab::preset::Preset;
 use bouncelab::tui::action::{self, Action};
@@ -43,10 +44,6 @@ fn take_export() -> Option<ExportRequest> {
     let request = export_request();
     PENDING.with(|p| p.borrow_mut().retain(|e| !matches!(e, Effect::Export(_))));
     request
-}
-
-fn superball() -> App {
-    App::new(Preset::embedded().remove(0), true)
 }
 
 fn press(app: &mut App, keys: &str) {

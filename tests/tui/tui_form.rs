@@ -3,8 +3,8 @@
 //! warning when a run leaves the model's validity (z_m or α_max beyond the radius R).
 
 use crate::tui_common;
+use crate::tui_common::superball;
 
-use bouncelab::preset::Preset;
 use bouncelab::tui::action::{self, Action};
 use bouncelab::tui::app::{App, Overlay, Severity};
 use bouncelab::tui::param::Param;
@@ -14,10 +14,6 @@ use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
 use tui_common::*;
 
 const SIZES: [(u16, u16); 5] = [(80, 24), (100, 30), (120, 40), (160, 50), (200, 60)];
-
-fn superball() -> App {
-    App::new(Preset::embedded().remove(0), true)
-}
 
 /// The superball with λ = 0.001 and ζ = 10 set in the form (which stays open): a ball whose
 /// impact passes its radius (the form's validity warning).

@@ -2,18 +2,14 @@
 //! own keys, over-long names and values.
 
 use crate::tui_common;
+use crate::tui_common::superball;
 
-use bouncelab::preset::Preset;
 use bouncelab::tui::action::{self, Action, Mode};
 use bouncelab::tui::app::{App, Overlay};
 use bouncelab::tui::param::Param;
 use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
 
 use tui_common::*;
-
-fn superball() -> App {
-    App::new(Preset::embedded().remove(0), true)
-}
 
 fn input_error(app: &App) -> Option<String> {
     match app.overlay() {

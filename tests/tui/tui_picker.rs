@@ -1,6 +1,7 @@
 //! The preset picker (`g`): it lists the embedded and user presets, one just saved with `s`
 //! included, with their descriptions; Enter loads, Esc closes; it scrolls at small sizes.
 
+use crate::tui_common::superball;
 use bouncelab::preset::Preset;
 use bouncelab::tui::action::{self, Action, Mode};
 use bouncelab::tui::app::{App, Effect, Overlay};
@@ -10,10 +11,6 @@ use ratatui::Terminal;
 use ratatui::backend::TestBackend;
 use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
 use std::path::Path;
-
-fn superball() -> App {
-    App::new(Preset::embedded().remove(0), true)
-}
 
 /// Press keys as the event loop would, carrying out the effects with `dir` as the user presets
 /// folder (saves written there, the picker's list read from there).
