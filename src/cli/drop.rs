@@ -2,15 +2,21 @@
 //! text table, one JSON object, or the trajectory as CSV; with `--standard`, the verdict.
 
 use super::ball::BallArgs;
+use super::drop_json::{BounceIntervals, bounce_intervals, report};
+use super::drop_leak::LeakVerdict;
 use super::drop_text;
 use super::intervals_text::line;
 use super::output::{self, TextJsonCsv, csv_row, num};
+use super::surface::SurfaceUsed;
+use crate::analysis::statics::StaticDeflection;
 use crate::api::Ball;
-use crate::drop::deformation;
-use crate::drop::standards::{self, Verdict};
-use crate::drop::{Air, DEFAULT_BOUNCES, DEFAULT_MIN_REBOUND, DropError, DropRun, DropSetup};
+use crate::drop::conditions::PressureLoss;
+use crate::drop::deformation::{self, DeformationStandard};
+use crate::drop::standards::{self, Standard, Verdict};
+use crate::drop::{
+    Air, DEFAULT_BOUNCES, DEFAULT_MIN_REBOUND, DropBall, DropError, DropRun, DropSetup,
+};
 use clap::Args;
-use serde::Serialize;
 use std::io::Write;
 
 /// Release height without a standard (m).
@@ -75,35 +81,60 @@ fn drop_error(e: DropError) -> anyhow::Error {
     }
 }
 
-pub fn run(a: &DropArgs, out: &mut dyn Write) -> anyhow::Result<()> {
-    // the pressure-loss test judges the leak, and runs the ball at its conditions
-    let leak_test = a.standard.as_deref().and_then(super::drop_leak::find);
-    // an impact standard (drop or COR test) or a static one (src/drop/deformation.rs)
-    let (standard, static_standard) = match a.standard.as_deref().filter(|_| leak_test.is_none()) {
+/// The standard `--standard` names, by kind: every kind `drop` takes (src/drop/names.rs).
+#[derive(Clone, Copy)]
+struct Asked {
+    /// The pressure-loss test: it judges the leak, and runs the ball at its conditions.
+    leak: Option<&'static PressureLoss>,
+    /// An impact standard (a drop or COR test).
+    impact: Option<&'static Standard>,
+    /// A static standard (src/drop/deformation.rs).
+    statics: Option<&'static DeformationStandard>,
+}
+
+fn asked_standard(name: Option<&str>) -> anyhow::Result<Asked> {
+    let leak = name.and_then(super::drop_leak::find);
+    let (impact, statics) = match name.filter(|_| leak.is_none()) {
         None => (None, None),
         Some(name) => match (standards::find(name), deformation::find(name)) {
             (Ok(s), _) => (Some(s), None),
             (Err(_), Some(d)) => (None, Some(d)),
-            // every kind of standard `drop` takes (src/drop/names.rs)
             (Err(_), None) => anyhow::bail!(crate::api::not_a_drop_standard(name)),
         },
     };
+    Ok(Asked {
+        leak,
+        impact,
+        statics,
+    })
+}
+
+/// The ball dropped, with the leak test's verdict and the warning of a ball off a rebound
+/// standard's conditions: the leak test and a rebound standard run the ball at their test's
+/// conditions (docs/drop.md, "Conditions").
+fn dropped_ball(
+    a: &DropArgs,
+    asked: &Asked,
+) -> anyhow::Result<(Ball, Option<LeakVerdict>, Option<String>)> {
     let mut ball_args = a.ball.clone();
-    if let Some(t) = leak_test {
+    if let Some(t) = asked.leak {
         ball_args.conditions = super::drop_leak::conditions(t, &a.ball.conditions)?;
     }
     let b = ball_args.resolve(None)?;
-    let leak_verdict = leak_test
+    let leak_verdict = asked
+        .leak
         .zip(ball_args.conditions.half_life)
         .map(|(t, h)| super::drop_leak::judge(t, h))
         .transpose()?;
-    // a rebound standard runs the ball at its test's conditions (docs/drop.md, "Conditions")
-    let (b, off_conditions) = match standard {
+    let (b, off_conditions) = match asked.impact {
         Some(s) => b.at_standard(s.name, &a.ball.conditions.spec())?,
         None => (b, None),
     };
-    let dball = b.drop_ball();
-    let radius = dball.radius;
+    Ok((b, leak_verdict, off_conditions))
+}
+
+/// The drop's air (none with `--no-drag`) and height (asked, else the standard's, else 1 m).
+fn drop_setup(a: &DropArgs, standard: Option<&Standard>, radius: f64) -> DropSetup {
     let air = (!a.no_drag).then(|| Air {
         density: a.air_density.unwrap_or(Air::default().density),
         drag_coefficient: a
@@ -114,32 +145,55 @@ pub fn run(a: &DropArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         .height
         .or_else(|| standard.and_then(|s| s.release_height(radius)))
         .unwrap_or(DEFAULT_HEIGHT);
-    let setup = DropSetup {
+    DropSetup {
         height,
         air,
         bounces: a.bounces,
         min_rebound: a.min_rebound,
-    };
-    // the drop and its intervals' drops watched: a bar on a terminal, Ctrl-C or SIGTERM ends
-    // the command with exit 130 before anything is printed (cli_progress_pty.rs)
+    }
+}
+
+/// The surface, the bounces on it and their intervals. The drop and its intervals' drops are
+/// watched: a bar on a terminal, Ctrl-C or SIGTERM ends the command with exit 130 before
+/// anything is printed (cli_progress_pty.rs).
+fn bounces(
+    b: &Ball,
+    dball: &DropBall,
+    setup: &DropSetup,
+    surface: &super::surface::SurfaceArgs,
+) -> anyhow::Result<(SurfaceUsed, DropRun, Vec<BounceIntervals>)> {
     let watch = super::budget::Watcher::new("bounces");
-    let surface = a.surface.resolve()?;
-    let run = crate::drop::drop_on_watched(&dball, &setup, &surface.mechanics.target(), &watch)
+    let surface = surface.resolve()?;
+    let run = crate::drop::drop_on_watched(dball, setup, &surface.mechanics.target(), &watch)
         .map_err(drop_error)?
         .ok_or(super::budget::Interrupted)?;
     // the intervals are the fitted parameters' on the rigid plate: none on another surface
     let bands = match surface.mechanics.is_rigid() {
-        true => bounce_intervals(&b, &setup, &watch)?,
+        true => bounce_intervals(b, setup, &watch)?,
         false => Vec::new(),
     };
     drop(watch);
-    let mut verdict = standard
-        .map(|s| s.judge_on(&dball, air, &surface.mechanics.target()))
+    Ok((surface, run, bands))
+}
+
+/// A static standard's deflection of the ball.
+type Statics = (&'static DeformationStandard, StaticDeflection);
+
+/// The asked standard's verdict on the ball, and a static standard's deflection.
+fn verdicts(
+    asked: &Asked,
+    dball: &DropBall,
+    air: Option<Air>,
+    surface: &SurfaceUsed,
+) -> anyhow::Result<(Option<Verdict>, Option<Statics>)> {
+    let mut verdict = asked
+        .impact
+        .map(|s| s.judge_on(dball, air, &surface.mechanics.target()))
         .transpose()
         .map_err(drop_error)?;
-    let statics = static_standard.map(|d| (d, d.deflection(&dball, dball.law)));
+    let statics = asked.statics.map(|d| (d, d.deflection(dball, dball.law)));
     if let Some((d, s)) = &statics {
-        verdict = Some(d.judge(&dball).ok_or_else(|| {
+        verdict = Some(d.judge(dball).ok_or_else(|| {
             anyhow::anyhow!(
                 "standard {}: the model gives no static deflection of this ball: {}",
                 d.name,
@@ -147,196 +201,161 @@ pub fn run(a: &DropArgs, out: &mut dyn Write) -> anyhow::Result<()> {
             )
         })?);
     }
+    Ok((verdict, statics))
+}
+
+/// Everything a drop answers, for its three formats.
+struct Dropped {
+    asked: Asked,
+    ball: Ball,
+    radius: f64,
+    surface: SurfaceUsed,
+    run: DropRun,
+    bands: Vec<BounceIntervals>,
+    verdict: Option<Verdict>,
+    statics: Option<Statics>,
+    leak_verdict: Option<LeakVerdict>,
+    warnings: Vec<String>,
+}
+
+/// The drop `a` asks, judged against its standard, with what the caller should know.
+fn dropped(a: &DropArgs) -> anyhow::Result<Dropped> {
+    let asked = asked_standard(a.standard.as_deref())?;
+    let (ball, leak_verdict, off_conditions) = dropped_ball(a, &asked)?;
+    let dball = ball.drop_ball();
+    let setup = drop_setup(a, asked.impact, dball.radius);
+    let (surface, run, bands) = bounces(&ball, &dball, &setup, &a.surface)?;
+    let (verdict, statics) = verdicts(&asked, &dball, setup.air, &surface)?;
     let statics_run = statics.as_ref().map(|(d, s)| (*d, s));
-    let mut warnings = b.judged_drop_warnings(&run, a.height.is_some(), standard, statics_run)?;
+    let standard = asked.impact;
+    let mut warnings =
+        ball.judged_drop_warnings(&run, a.height.is_some(), standard, statics_run)?;
     warnings.extend(standard.and_then(|s| surface.off_standard_warning(s.name, s.surface)));
-    warnings.extend(b.drop_air_warning(air));
+    warnings.extend(ball.drop_air_warning(setup.air));
     warnings.extend(off_conditions);
+    Ok(Dropped {
+        asked,
+        radius: dball.radius,
+        ball,
+        surface,
+        run,
+        bands,
+        verdict,
+        statics,
+        leak_verdict,
+        warnings,
+    })
+}
+
+pub fn run(a: &DropArgs, out: &mut dyn Write) -> anyhow::Result<()> {
+    let d = dropped(a)?;
     match a.format {
-        TextJsonCsv::Json => {
-            let judged_at = standard.and_then(|s| s.release_height(radius));
-            let mut r = report(&run, &bands, verdict.as_ref(), judged_at);
-            if let (Some(sj), Some((d, s))) = (r.standard.as_mut(), &statics) {
-                sj.static_test = Some(crate::api::static_test_report(d, s));
-            }
-            r.warnings = warnings;
-            r.ball = Some(b.record_json());
-            r.surface = Some(surface);
-            r.pressure_loss = leak_verdict.clone();
-            output::json_stated(out, &r, &b.conditions)?
-        }
+        TextJsonCsv::Json => json(out, d)?,
         TextJsonCsv::Csv => {
-            trajectory_csv(out, &run)?;
-            output::warnings_to_stderr(&warnings);
+            trajectory_csv(out, &d.run)?;
+            output::warnings_to_stderr(&d.warnings);
         }
-        TextJsonCsv::Text => {
-            let mut label = b.label();
-            if let Some(line) = b.overrides_line() {
-                label.push('\n');
-                label.push_str(&line);
-            }
-            if !surface.mechanics.is_rigid() || a.surface.surface.is_some() {
-                label = format!("{label}\n{}", surface.label());
-            }
-            if let Some(line) = b.conditions_line() {
-                label.push('\n');
-                label.push_str(&line);
-            }
-            drop_text::text(out, &label, &run, standard.zip(verdict), radius)?;
-            if let (Some(t), Some(v)) = (leak_test, &leak_verdict) {
-                super::drop_leak::text(out, t, v)?;
-            }
-            if let (Some((d, s)), Some(v)) = (&statics, &verdict) {
-                drop_text::static_verdict_text(out, d, s, v)?;
-            }
-            output::warning_lines(out, &warnings)?;
-            if let (Some(i), Some(first), Some(fit)) = (bands.first(), run.bounces.first(), &b.fit)
-            {
-                writeln!(
-                    out,
-                    "\nfirst bounce, 95 % from the preset's fit (delta method, Student t, {} dof):\n  {}\n  {}",
-                    fit.dof,
-                    line("COR", first.cor, i.cor_ci95, 1.0, ""),
-                    line(
-                        "rebound height",
-                        first.rebound_height,
-                        i.rebound_height_ci95,
-                        1e3,
-                        "mm"
-                    )
-                )?;
-            }
-            // no standard asked for: name the ball's own, if it has one
-            if let (None, None, None, Some(own)) = (
-                standard,
-                static_standard,
-                leak_test,
-                b.name.as_deref().and_then(standards::for_ball),
-            ) {
-                writeln!(
-                    out,
-                    "\n{}'s standard is {} ({}): add --standard {}",
-                    b.name.as_deref().unwrap_or_default(),
-                    own.name,
-                    own.title,
-                    own.name
-                )?;
-            }
-        }
+        TextJsonCsv::Text => text(out, a, &d)?,
     }
     Ok(())
 }
 
-#[derive(Serialize)]
-struct StandardJson {
-    name: &'static str,
-    window: [Option<f64>; 2],
-    measured: f64,
-    verdict: &'static str,
-    margin: f64,
-    /// The release height (m, bottom of the ball) the verdict was judged at: the standard's
-    /// own drop, whatever `--height` gave the bounces above (`height`); `null` for a COR
-    /// test. tests/cli/cli_drop.rs.
-    judged_at_height_m: Option<f64>,
-    /// A static standard's test (src/drop/deformation.rs): only for one.
-    #[serde(rename = "static", skip_serializing_if = "Option::is_none")]
-    static_test: Option<crate::api::StaticTestReport>,
-}
-
-/// One bounce's 95 % intervals on a fitted preset (docs/fitting.md, "Prediction intervals").
-#[derive(Debug, Clone, Copy, Serialize)]
-struct BounceIntervals {
-    cor_ci95: [f64; 2],
-    max_force_ci95: [f64; 2],
-    contact_time_ci95: [f64; 2],
-    rebound_height_ci95: [f64; 2],
-}
-
-/// A bounce, with its intervals when the ball carries a fit.
-#[derive(Serialize)]
-struct BounceRow<'a> {
-    #[serde(flatten)]
-    bounce: &'a crate::drop::Bounce,
-    #[serde(flatten, skip_serializing_if = "Option::is_none")]
-    intervals: Option<BounceIntervals>,
-}
-
-/// A fitted preset's bounce intervals ([`Ball::drop_intervals`]); empty without a fit or when
-/// an override moved it.
-fn bounce_intervals(
-    b: &Ball,
-    setup: &DropSetup,
-    watch: &super::budget::Watcher,
-) -> anyhow::Result<Vec<BounceIntervals>> {
-    // a watch that said stop leaves the signal flag set: any error then exits 130
-    // (`cli::exit_code`)
-    let Some(bands) = b.drop_intervals_watched(setup, watch).transpose()? else {
-        return Ok(Vec::new());
-    };
-    Ok(bands
-        .iter()
-        .map(|c| BounceIntervals {
-            cor_ci95: c[0],
-            max_force_ci95: c[1],
-            contact_time_ci95: c[2],
-            rebound_height_ci95: c[3],
-        })
-        .collect())
-}
-
-/// The JSON document of the issue, SI: `standard` only with `--standard`.
-#[derive(Serialize)]
-struct Report<'a> {
-    height: f64,
-    drag: bool,
-    bounces: Vec<BounceRow<'a>>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    standard: Option<StandardJson>,
-    /// What the caller should know (the first, fastest impact's [`Ball::warnings`]).
-    warnings: Vec<String>,
-    /// The ball dropped (docs/cli.md, "The ball object").
-    ball: Option<crate::api::BallRecord>,
-    /// The surface it bounced on (docs/surfaces.md).
-    surface: Option<super::surface::SurfaceUsed>,
-    /// `--standard fifa-pressure-loss`'s verdict on the ball's leak.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pressure_loss: Option<super::drop_leak::LeakVerdict>,
-}
-
-fn report<'a>(
-    run: &'a DropRun,
-    bands: &[BounceIntervals],
-    v: Option<&Verdict>,
-    judged_at: Option<f64>,
-) -> Report<'a> {
-    let bands = bands
-        .iter()
-        .copied()
-        .map(Some)
-        .chain(std::iter::repeat(None));
-    Report {
-        height: run.setup.height,
-        drag: run.drag(),
-        bounces: run
-            .bounces
-            .iter()
-            .zip(bands)
-            .map(|(bounce, intervals)| BounceRow { bounce, intervals })
-            .collect(),
-        standard: v.map(|v| StandardJson {
-            name: v.name,
-            window: v.window,
-            measured: v.measured,
-            verdict: if v.pass { "pass" } else { "fail" },
-            margin: v.margin,
-            judged_at_height_m: judged_at,
-            static_test: None,
-        }),
-        warnings: Vec::new(),
-        ball: None,
-        surface: None,
-        pressure_loss: None,
+/// The JSON document ([`Report`]), with the ball, its surface and conditions.
+fn json(out: &mut dyn Write, d: Dropped) -> anyhow::Result<()> {
+    let judged_at = d.asked.impact.and_then(|s| s.release_height(d.radius));
+    let mut r = report(&d.run, &d.bands, d.verdict.as_ref(), judged_at);
+    if let (Some(sj), Some((t, s))) = (r.standard.as_mut(), &d.statics) {
+        sj.static_test = Some(crate::api::static_test_report(t, s));
     }
+    r.warnings = d.warnings;
+    r.ball = Some(d.ball.record_json());
+    r.surface = Some(d.surface);
+    r.pressure_loss = d.leak_verdict;
+    output::json_stated(out, &r, &d.ball.conditions)?;
+    Ok(())
+}
+
+/// The text output's heading: the ball, its overrides, the surface when it is asked or not
+/// the rigid plate, the conditions.
+fn text_label(a: &DropArgs, b: &Ball, surface: &SurfaceUsed) -> String {
+    let mut label = b.label();
+    if let Some(line) = b.overrides_line() {
+        label.push('\n');
+        label.push_str(&line);
+    }
+    if !surface.mechanics.is_rigid() || a.surface.surface.is_some() {
+        label = format!("{label}\n{}", surface.label());
+    }
+    if let Some(line) = b.conditions_line() {
+        label.push('\n');
+        label.push_str(&line);
+    }
+    label
+}
+
+/// The text output: the bounces, the verdicts, the warnings, the first bounce's intervals and
+/// the ball's own standard when none was asked.
+fn text(out: &mut dyn Write, a: &DropArgs, d: &Dropped) -> anyhow::Result<()> {
+    let label = text_label(a, &d.ball, &d.surface);
+    let standard = d.asked.impact;
+    drop_text::text(out, &label, &d.run, standard.zip(d.verdict), d.radius)?;
+    if let (Some(t), Some(v)) = (d.asked.leak, &d.leak_verdict) {
+        super::drop_leak::text(out, t, v)?;
+    }
+    if let (Some((t, s)), Some(v)) = (&d.statics, &d.verdict) {
+        drop_text::static_verdict_text(out, t, s, v)?;
+    }
+    output::warning_lines(out, &d.warnings)?;
+    first_bounce_intervals_text(out, d)?;
+    own_standard_text(out, d)?;
+    Ok(())
+}
+
+/// The first bounce's 95 % intervals, on a fitted preset.
+fn first_bounce_intervals_text(out: &mut dyn Write, d: &Dropped) -> std::io::Result<()> {
+    let (Some(i), Some(first), Some(fit)) = (d.bands.first(), d.run.bounces.first(), &d.ball.fit)
+    else {
+        return Ok(());
+    };
+    writeln!(
+        out,
+        "\nfirst bounce, 95 % from the preset's fit (delta method, Student t, {} dof):\n  {}\n  {}",
+        fit.dof,
+        line("COR", first.cor, i.cor_ci95, 1.0, ""),
+        line(
+            "rebound height",
+            first.rebound_height,
+            i.rebound_height_ci95,
+            1e3,
+            "mm"
+        )
+    )
+}
+
+/// No standard asked for: the ball's own, if it has one.
+fn own_standard_text(out: &mut dyn Write, d: &Dropped) -> std::io::Result<()> {
+    let b = &d.ball;
+    let Asked {
+        leak,
+        impact,
+        statics,
+    } = d.asked;
+    if let (None, None, None, Some(own)) = (
+        impact,
+        statics,
+        leak,
+        b.name.as_deref().and_then(standards::for_ball),
+    ) {
+        writeln!(
+            out,
+            "\n{}'s standard is {} ({}): add --standard {}",
+            b.name.as_deref().unwrap_or_default(),
+            own.name,
+            own.title,
+            own.name
+        )?;
+    }
+    Ok(())
 }
 
 fn trajectory_csv(out: &mut dyn Write, run: &DropRun) -> std::io::Result<()> {

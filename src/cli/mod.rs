@@ -16,6 +16,7 @@ pub mod collide;
 pub mod conditions;
 pub mod court;
 pub mod drop;
+mod drop_json;
 mod drop_leak;
 mod drop_text;
 mod exit;
