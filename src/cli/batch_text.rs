@@ -22,9 +22,25 @@ pub(super) fn text(
     air: Option<Air>,
     r: &BatchReport<'_>,
 ) -> std::io::Result<()> {
+    let standard = standards::find(r.standard.name).map_err(std::io::Error::other)?;
+    heading(out, ball, file, air, r, standard)?;
+    let (quantity, _) = batch_quantity(standard);
+    let drop = quantity == "rebound_height";
+    balls_table(out, r, drop)?;
+    statistics(out, r, quantity, drop)?;
+    notes(out, r)
+}
+
+/// The ball, the file, how the balls were fitted and the standard they are judged against.
+fn heading(
+    out: &mut dyn Write,
+    ball: &Ball,
+    file: &Path,
+    air: Option<Air>,
+    r: &BatchReport<'_>,
+    standard: &standards::Standard,
+) -> std::io::Result<()> {
     let s = &r.summary;
-    let std = r.standard.name;
-    let standard = standards::find(std).map_err(std::io::Error::other)?;
     writeln!(out, "{}, {} law", ball.label(), r.law)?;
     if let Some(line) = ball.conditions_line() {
         writeln!(out, "{line}")?;
@@ -40,13 +56,15 @@ pub(super) fn text(
         } else {
             ", in vacuum"
         },
-        std,
+        r.standard.name,
         r.standard.title,
         super::standards::window_cell(standard)
     )?;
-    writeln!(out)?;
-    let (quantity, _) = batch_quantity(standard);
-    let drop = quantity == "rebound_height";
+    writeln!(out)
+}
+
+/// A row a ball: its COR (and rebound, judged on a drop), verdict, margin and what went wrong.
+fn balls_table(out: &mut dyn Write, r: &BatchReport<'_>, drop: bool) -> std::io::Result<()> {
     let mut head = vec!["id", "points", "COR"];
     if drop {
         head.push("rebound m");
@@ -67,7 +85,17 @@ pub(super) fn text(
         });
         rows.push(row);
     }
-    output::table(out, "  ", &rows)?;
+    output::table(out, "  ", &rows)
+}
+
+/// The judged quantity's statistics over the batch, the failures and Cpk.
+fn statistics(
+    out: &mut dyn Write,
+    r: &BatchReport<'_>,
+    quantity: &str,
+    drop: bool,
+) -> std::io::Result<()> {
+    let s = &r.summary;
     let st = &s.stats;
     let unit = if drop { " m" } else { "" };
     let v = |x: f64| {
@@ -118,6 +146,12 @@ pub(super) fn text(
         s.identified,
         s.balls
     )?;
+    Ok(())
+}
+
+/// How many balls went without a fit, with an unsure verdict or with warnings; the warnings.
+fn notes(out: &mut dyn Write, r: &BatchReport<'_>) -> std::io::Result<()> {
+    let s = &r.summary;
     if s.unfitted > 0 {
         writeln!(
             out,
