@@ -116,6 +116,27 @@ pub fn text(
     f: &MultiFit,
     r: &Report,
 ) -> anyhow::Result<()> {
+    heading(out, ball, data, f, r)?;
+    writeln!(out)?;
+    let estimates = f.fitted.iter().chain(&f.time_offset).chain(&f.baseline);
+    let exact = f.exact().then(|| exact_text(f));
+    table(out, "  ", &estimate_rows(estimates, exact, interval))?;
+    writeln!(out)?;
+    writeln!(out, "  correlation")?;
+    table(out, "  ", &correlation_rows(f))?;
+    writeln!(out)?;
+    table(out, "  ", &summary_rows(data, f, r))?;
+    Ok(crate::cli::output::warning_lines(out, &f.warnings)?)
+}
+
+/// The ball, what is fitted to which data, and how the data were taken and weighed.
+fn heading(
+    out: &mut dyn Write,
+    ball: &Ball,
+    data: &Loaded,
+    f: &MultiFit,
+    r: &Report,
+) -> std::io::Result<()> {
     writeln!(out, "{}, {} law", ball.label(), r.law)?;
     if let Some(line) = ball.overrides_line() {
         writeln!(out, "{line}")?;
@@ -154,12 +175,11 @@ pub fn text(
             human(ball.params.mass * 1e3, 4)
         )?;
     }
-    writeln!(out)?;
-    let estimates = f.fitted.iter().chain(&f.time_offset).chain(&f.baseline);
-    let exact = f.exact().then(|| exact_text(f));
-    table(out, "  ", &estimate_rows(estimates, exact, interval))?;
-    writeln!(out)?;
-    writeln!(out, "  correlation")?;
+    Ok(())
+}
+
+/// The fitted parameters' correlation matrix, a row and a column each.
+fn correlation_rows(f: &MultiFit) -> Vec<Vec<String>> {
     let mut rows = vec![
         std::iter::once(String::new())
             .chain(f.names.iter().map(|s| s.to_string()))
@@ -178,8 +198,12 @@ pub fn text(
                 .collect(),
         );
     }
-    table(out, "  ", &rows)?;
-    writeln!(out)?;
+    rows
+}
+
+/// The fit's summary: λ and ζ, the residual, the iterations, what answered and the model's
+/// impact at v0.
+fn summary_rows(data: &Loaded, f: &MultiFit, r: &Report) -> Vec<Vec<String>> {
     let unit = if !data.joint.is_empty() {
         " (in each set's standard deviations)"
     } else if data.trace.is_some() {
@@ -231,8 +255,7 @@ pub fn text(
         };
         rows.insert(2, vec!["uncertainty".into(), from.into()]);
     }
-    table(out, "  ", &rows)?;
-    Ok(crate::cli::output::warning_lines(out, &f.warnings)?)
+    rows
 }
 
 /// The air a drop fit assumed, stated with its answer: in vacuum (the default) the fit reads
