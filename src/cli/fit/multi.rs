@@ -13,6 +13,7 @@ use crate::measured::{Air, CorPoint};
 use crate::model::params::ImpactParams;
 use crate::solver::{SolveOptions, simulate};
 use std::io::Write;
+use std::path::Path;
 
 /// Refuse outputs that cannot be written, before any work.
 pub fn check_outputs(a: &FitArgs) -> anyhow::Result<()> {
@@ -33,25 +34,7 @@ pub(super) fn load(a: &FitArgs, source: &Source, ball: &Ball) -> anyhow::Result<
     // the library checks the air and the reading's precision (whatever the data) and the drop
     // heights
     ball.drops_to_cor_read(&[], air, a.rebound_height_sd)?;
-    // a file's rows checked one at a time, so that a refused drop is named by its line; then
-    // converted together, each weighed against the others (`Ball::drops_to_cor_read`)
-    let from_drops = |drops: &[(f64, f64, usize)]| -> anyhow::Result<Vec<CorPoint>> {
-        let file = match source {
-            Source::DropFile(p) => p.display().to_string(),
-            _ => String::new(),
-        };
-        for d in drops.iter().filter(|d| d.2 != 0) {
-            ball.drops_to_cor(&[(d.0, d.1)], air)
-                .map_err(|e| anyhow::anyhow!("{file}:{}:1: {e}", d.2))?;
-        }
-        let pairs: Vec<(f64, f64)> = drops.iter().map(|d| (d.0, d.1)).collect();
-        let mut points = ball.drops_to_cor_read(&pairs, air, a.rebound_height_sd)?;
-        for (p, d) in points.iter_mut().zip(drops) {
-            p.line = d.2;
-        }
-        Ok(points)
-    };
-    let name = |p: &std::path::Path| Some(p.display().to_string());
+    let from_drops = |drops: &[(f64, f64, usize)]| drop_points(a, source, ball, air, drops);
     Ok(match source {
         // `fit::run` hands oblique bounces to `oblique`
         Source::Oblique(p) => anyhow::bail!(
@@ -61,60 +44,35 @@ pub(super) fn load(a: &FitArgs, source: &Source, ball: &Ball) -> anyhow::Result<
         Source::Trace(p) => {
             let t = files::trace(p)?;
             crate::cli::budget::stop_if_interrupted()?;
-            let end_line = t.end_line;
             Loaded {
-                kind: "force-time trace",
-                file: name(p),
-                label: files::label(p),
+                end_line: t.end_line,
                 trace: Some(t),
-                points: vec![],
-                drops: vec![],
-                end_line,
-                air,
-                joint: vec![],
+                ..no_data("force-time trace", Some(p), files::label(p), air)
             }
         }
         Source::CorTable(p) => {
             let t = files::cor_table(p)?;
             Loaded {
-                kind: "COR table",
-                file: name(p),
-                label: files::label(p),
-                trace: None,
                 points: t.points,
-                drops: vec![],
                 end_line: t.end_line,
-                air,
-                joint: vec![],
+                ..no_data("COR table", Some(p), files::label(p), air)
             }
         }
         Source::DropFile(p) => {
             let t = files::drop_test(p)?;
-            let drops = t.drops.iter().map(|d| (d.0, d.1)).collect();
             Loaded {
-                kind: "drop test",
-                file: name(p),
-                label: files::label(p),
-                trace: None,
                 points: from_drops(&t.drops)?,
-                drops,
+                drops: t.drops.iter().map(|d| (d.0, d.1)).collect(),
                 end_line: t.drops.last().map_or(1, |d| d.2 + 1),
-                air,
-                joint: vec![],
+                ..no_data("drop test", Some(p), files::label(p), air)
             }
         }
         Source::Drops(pairs) => {
             let drops: Vec<(f64, f64, usize)> = pairs.iter().map(|&(h, r)| (h, r, 0)).collect();
             Loaded {
-                kind: "drop test",
-                file: None,
-                label: "drop tests".into(),
-                trace: None,
                 points: from_drops(&drops)?,
                 drops: pairs.clone(),
-                end_line: 0,
-                air,
-                joint: vec![],
+                ..no_data("drop test", None, "drop tests".into(), air)
             }
         }
         Source::Cor(e) => {
@@ -124,20 +82,54 @@ pub(super) fn load(a: &FitArgs, source: &Source, ball: &Ball) -> anyhow::Result<
                     output::num(*e)
                 );
             }
-            let pt = CorPoint::new(ball.params.v0, *e);
             Loaded {
-                kind: "COR",
-                file: None,
-                label: format!("COR {}", output::num(*e)),
-                trace: None,
-                points: vec![pt],
-                drops: vec![],
-                end_line: 0,
-                air,
-                joint: vec![],
+                points: vec![CorPoint::new(ball.params.v0, *e)],
+                ..no_data("COR", None, format!("COR {}", output::num(*e)), air)
             }
         }
     })
+}
+
+/// The data of `kind` read from `file` (`None`: given on the command line), as yet without
+/// any, under the legend label `label`.
+fn no_data(kind: &'static str, file: Option<&Path>, label: String, air: Option<Air>) -> Loaded {
+    Loaded {
+        kind,
+        file: file.map(|p| p.display().to_string()),
+        label,
+        trace: None,
+        points: vec![],
+        drops: vec![],
+        end_line: 0,
+        air,
+        joint: vec![],
+    }
+}
+
+/// Drop tests (drop height, rebound height, line) as COR points. A file's rows are checked
+/// one at a time, so that a refused drop is named by its line; then converted together, each
+/// weighed against the others (`Ball::drops_to_cor_read`).
+fn drop_points(
+    a: &FitArgs,
+    source: &Source,
+    ball: &Ball,
+    air: Option<Air>,
+    drops: &[(f64, f64, usize)],
+) -> anyhow::Result<Vec<CorPoint>> {
+    let file = match source {
+        Source::DropFile(p) => p.display().to_string(),
+        _ => String::new(),
+    };
+    for d in drops.iter().filter(|d| d.2 != 0) {
+        ball.drops_to_cor(&[(d.0, d.1)], air)
+            .map_err(|e| anyhow::anyhow!("{file}:{}:1: {e}", d.2))?;
+    }
+    let pairs: Vec<(f64, f64)> = drops.iter().map(|d| (d.0, d.1)).collect();
+    let mut points = ball.drops_to_cor_read(&pairs, air, a.rebound_height_sd)?;
+    for (p, d) in points.iter_mut().zip(drops) {
+        p.line = d.2;
+    }
+    Ok(points)
 }
 
 /// A fit error for the user: where the data are at fault, the file and line.
