@@ -60,6 +60,24 @@ pub fn window_cell(s: &Standard) -> String {
 }
 
 fn text(out: &mut dyn Write) -> std::io::Result<()> {
+    table(out, "", &table_rows())?;
+    // below the table, whose columns stay as they were (the names are longer)
+    pressure_loss_lines(out)?;
+    writeln!(out)?;
+    sources_text(out)?;
+    writeln!(out)?;
+    conditions_text(out)?;
+    writeln!(out)?;
+    writeln!(
+        out,
+        "heights are of the bottom or the top of the ball as each body reads them; \
+         `bouncelab drop --standard NAME` judges a ball, `bouncelab bat` a bat, \
+         `bouncelab court` a surface"
+    )
+}
+
+/// The table's rows: a standard each, of a ball's impact, a bat, a court and a static test.
+fn table_rows() -> Vec<Vec<String>> {
     let mut rows = vec![
         ["name", "test", "window", "ball", "title"]
             .map(String::from)
@@ -108,8 +126,11 @@ fn text(out: &mut dyn Write) -> std::io::Result<()> {
             s.title.into(),
         ]);
     }
-    table(out, "", &rows)?;
-    // below the table, whose columns stay as they were (the names are longer)
+    rows
+}
+
+/// The pressure-loss tests, a line each.
+fn pressure_loss_lines(out: &mut dyn Write) -> std::io::Result<()> {
     for p in &PRESSURE_LOSS {
         writeln!(
             out,
@@ -123,7 +144,12 @@ fn text(out: &mut dyn Write) -> std::io::Result<()> {
             p.title
         )?;
     }
-    writeln!(out)?;
+    Ok(())
+}
+
+/// Every standard's source, and what of it could not be confirmed.
+fn sources_text(out: &mut dyn Write) -> std::io::Result<()> {
+    let court = &ITF_COURT_PACE;
     writeln!(out, "sources, and what could not be confirmed:")?;
     let sources = STANDARDS.iter().map(|s| (s.name, s.source, s.unconfirmed));
     let bats = BAT_STANDARDS
@@ -145,7 +171,11 @@ fn text(out: &mut dyn Write) -> std::io::Result<()> {
             writeln!(out, "    not confirmed: {u}")?;
         }
     }
-    writeln!(out)?;
+    Ok(())
+}
+
+/// The conditions each test runs the ball at, with their source.
+fn conditions_text(out: &mut dyn Write) -> std::io::Result<()> {
     writeln!(
         out,
         "test conditions (`drop --standard NAME` runs the ball at them; a ball at others is \
@@ -157,11 +187,5 @@ fn text(out: &mut dyn Write) -> std::io::Result<()> {
         writeln!(out, "  {name}: {}", crate::api::test_words(&c))?;
         writeln!(out, "    {}", c.source)?;
     }
-    writeln!(out)?;
-    writeln!(
-        out,
-        "heights are of the bottom or the top of the ball as each body reads them; \
-         `bouncelab drop --standard NAME` judges a ball, `bouncelab bat` a bat, \
-         `bouncelab court` a surface"
-    )
+    Ok(())
 }
