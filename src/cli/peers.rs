@@ -3,6 +3,8 @@
 //! a DEM or multibody code (docs/peers.md).
 
 mod case;
+mod code_export;
+mod pair;
 mod write;
 
 use super::ball::BallArgs;
@@ -12,9 +14,9 @@ use crate::api::Ball;
 use crate::model::params::ImpactParams;
 use crate::peers::PeerBall;
 use crate::peers::calibrate::{self, Calibrated};
-use crate::peers::export::{self, Code, ExportSet};
 use crate::solver::{SolveOptions, simulate};
 use clap::{Args, ValueEnum};
+use pair::{Pair, pair_ball};
 use serde::Serialize;
 use std::io::Write;
 
@@ -143,22 +145,6 @@ struct Report<'a> {
 /// The JSON `surface_note` of `peers --pair`, whose `surface` is `null`.
 const PAIR_NO_SURFACE: &str = "a pair: the ball met the other ball (`pair`), no surface; the models are calibrated to the pair's COR";
 
-/// The pair `--pair` calibrates for: the other preset and the effective mass and radius.
-#[derive(Debug, Clone, Serialize)]
-struct Pair {
-    preset: String,
-    effective_mass: f64,
-    effective_radius: f64,
-    /// The pair's e at v0 onto the partner at rest, both balls deforming (`collide
-    /// --target-preset`, docs/targets.md §8): the model's COR for the pair.
-    #[serde(skip)]
-    cor: f64,
-    /// `collide --target-preset`'s warnings of that impact: the reach against the ball's own
-    /// radius (not R_eff), each ball's record at the speed it meets the other.
-    #[serde(skip)]
-    warnings: Vec<String>,
-}
-
 impl PeersArgs {
     /// The partner of the pair, by `--pair` or `--target PRESET`; both at once is refused.
     fn pair_name(&self) -> anyhow::Result<Option<&str>> {
@@ -185,6 +171,22 @@ impl PeersArgs {
     }
 }
 
+/// The ball `peers` calibrates, and the COR it is calibrated to.
+struct Peered {
+    /// The ball at v0, whose bounce an export states.
+    whole: Ball,
+    /// The bounce an export is for ([`case::asked`]).
+    bounce: (f64, f64, f64),
+    /// The ball calibrated: at the bounce's normal speed, or the pair's reduced ball.
+    b: Ball,
+    pair: Option<Pair>,
+    radius: f64,
+    ball: PeerBall,
+    target: f64,
+    /// Where the target COR came from.
+    source: &'static str,
+}
+
 pub fn run(a: &PeersArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     // clap's `requires = "export"` is not held once `--format` (which conflicts with --export)
     // is given: `--format json --friction 0.5` ignored the friction (tests/peers_flags.rs)
@@ -193,6 +195,15 @@ pub fn run(a: &PeersArgs, out: &mut dyn Write) -> anyhow::Result<()> {
             "--friction adds the tangential model to an export: give --export lammps|mujoco|json"
         );
     }
+    let p = peered(a)?;
+    match a.export {
+        Some(code) => code_export::write(a, out, code, &p),
+        None => compare(a, out, p),
+    }
+}
+
+/// The ball `a` asks for and its target COR.
+fn peered(a: &PeersArgs) -> anyhow::Result<Peered> {
     let whole = a.ball.resolve(a.v0)?;
     // the bounce an export is for: its normal model at the normal speed v·sinθ (docs/peers.md
     // §5, "The case asked"); head-on without --angle, at v
@@ -208,44 +219,29 @@ pub fn run(a: &PeersArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     let radius = b.measured.as_ref().map_or(f64::NAN, |m| m.radius);
     let ball = PeerBall::from_params(&b.params, radius);
     let (target, source) = target(a, &b, pair.as_ref())?;
-    if let Some(code) = a.export {
-        let mut set = ExportSet::new(&ball, target, b.name.as_deref().unwrap_or("ball"))?;
-        set.tangential = case::tangential(a, &b, code)?;
-        // bouncelab's answer for the bounce is its model's, whatever the export's target
-        let model_cor = match &pair {
-            Some(p) => p.cor,
-            None => calibrate::christoforou_yigit_cor(&b.params, b.law, b.params.v0)?,
-        };
-        set.case = Some(case::case(
-            &whole,
-            bounce,
-            pair.as_ref(),
-            set.tangential.as_ref(),
-            model_cor,
-        )?);
-        // the exported file is another code's input: the ball's warnings on stderr
-        let mut w = ball_warnings(&b, pair.as_ref(), source)?;
-        // a pair's COR falls with its closing speed (tennis on tennis 0.772 at 6.9 m/s, 0.690
-        // at 30): the preset's own speed is nothing of the pair's (issue 52 item 8)
-        if let (Some(p), None) = (&pair, a.v0) {
-            w.push(format!(
-                "the pair export is calibrated at the closing speed {} m/s, the preset's v0: give --v0 with the pair's closing speed against {} (its COR changes with it)",
-                crate::text::number(whole.params.v0),
-                p.preset
-            ));
-        }
-        output::warnings_to_stderr(&w);
-        let code = match code {
-            ExportArg::Json => return Ok(output::json(out, &set)?),
-            ExportArg::Lammps => Code::Lammps,
-            ExportArg::Liggghts => Code::Liggghts,
-            ExportArg::Chrono => Code::Chrono,
-            ExportArg::Yade => Code::Yade,
-            ExportArg::Mujoco => Code::Mujoco,
-        };
-        out.write_all(export::snippet(code, &set).as_bytes())?;
-        return Ok(());
-    }
+    Ok(Peered {
+        whole,
+        bounce,
+        b,
+        pair,
+        radius,
+        ball,
+        target,
+        source,
+    })
+}
+
+/// The peers' calibrations beside the Christoforou–Yigit model, as text, JSON or CSV.
+fn compare(a: &PeersArgs, out: &mut dyn Write, p: Peered) -> anyhow::Result<()> {
+    let Peered {
+        b,
+        pair,
+        radius,
+        ball,
+        target,
+        source,
+        ..
+    } = p;
     let warnings = ball_warnings(&b, pair.as_ref(), source)?;
     let mut rows: Vec<Row> = calibrate::compare(&ball, target, 0)?
         .iter()
@@ -342,33 +338,6 @@ fn target(a: &PeersArgs, b: &Ball, pair: Option<&Pair>) -> anyhow::Result<(f64, 
             Ok((mean, "christoforou-yigit-curve"))
         }
     }
-}
-
-/// The ball as the pair with preset `name` presents it to a DEM code: mass m_eff and radius
-/// R_eff (the presets' measured radii), the rest of the ball kept, v0 the closing speed (the
-/// partner at rest): the reduced ball of docs/targets.md §2, which the peers' single contact
-/// calibrates; the target COR is the pair's own, both balls deforming (docs/targets.md §8).
-fn pair_ball(a: &PeersArgs, mut b: Ball, name: &str) -> anyhow::Result<(Ball, Option<Pair>)> {
-    let entry = super::ball::select(Some(name), a.ball.choice.config.as_deref())?;
-    let other = Ball::from_entry(&entry, None, None, None)?;
-    let (m1, m2) = (b.params.mass, other.params.mass);
-    let radius = |x: &Ball| x.measured.as_ref().map_or(f64::NAN, |m| m.radius);
-    let (r1, r2) = (radius(&b), radius(&other));
-    let rigid = (f64::INFINITY, 0.0);
-    let met = b.collide_ball(&other, 0.0, rigid)?;
-    let pair = Pair {
-        preset: other.name.clone().unwrap_or_default(),
-        effective_mass: m1 * m2 / (m1 + m2),
-        effective_radius: r1 * r2 / (r1 + r2),
-        cor: met.collision.cor,
-        warnings: met.warnings,
-    };
-    b.params.mass = pair.effective_mass;
-    b.params.validate()?;
-    if let Some(m) = b.measured.as_mut() {
-        (m.mass, m.radius, m.cor) = (pair.effective_mass, pair.effective_radius, None);
-    }
-    Ok((b, Some(pair)))
 }
 
 fn peer_row(ball: &PeerBall, c: &Calibrated) -> Row {
