@@ -48,7 +48,7 @@ pub mod sweep;
 
 use clap::{Parser, Subcommand};
 use std::io::{self, IsTerminal, Write};
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 const ABOUT: &str = "The Christoforou–Yigit model of a deformable ball hitting a rigid wall: \
@@ -184,18 +184,7 @@ fn dispatch(cli: Cli, out: &mut dyn Write) -> anyhow::Result<()> {
     let Some(command) = cli.command else {
         return explorer(top, &cli.explore, cli.measured);
     };
-    if let Some(option) = cli.explore.given() {
-        anyhow::bail!(
-            "{option} before a subcommand is for the explorer; give it after the subcommand"
-        );
-    }
-    if let Some(m) = &cli.measured {
-        anyhow::bail!(
-            "--measured before a subcommand is for the explorer; to draw {} on a figure use \
-             `bouncelab figure NAME --measured FILE`, to fit it `bouncelab fit`",
-            m.display()
-        );
-    }
+    explorer_options_refused(&cli.explore, cli.measured.as_deref())?;
     match command {
         Command::Run(mut a) => {
             if top.is_given() && a.normalized {
@@ -209,11 +198,10 @@ fn dispatch(cli: Cli, out: &mut dyn Write) -> anyhow::Result<()> {
             sweep::run(&sweep::Sweep::Velocity(a), out)
         }
         Command::Sweep(s) => {
-            if top.is_given() {
-                anyhow::bail!(
-                    "sweep zeta runs the normalized ball: --preset and --config do not apply"
-                );
-            }
+            no_ball_choice(
+                top,
+                "sweep zeta runs the normalized ball: --preset and --config do not apply",
+            )?;
             sweep::run(&s, out)
         }
         Command::Fit(a) => with_ball(top, a, |a| &mut a.ball, fit::run, out),
@@ -228,24 +216,15 @@ fn dispatch(cli: Cli, out: &mut dyn Write) -> anyhow::Result<()> {
         }
         Command::Peers(a) => with_ball(top, a, |a| &mut a.ball, peers::run, out),
         Command::Reproduce(a) => {
-            if top.is_given() {
-                anyhow::bail!(
-                    "reproduce runs the paper's three embedded balls: --preset and --config do \
-                     not apply"
-                );
-            }
+            no_ball_choice(
+                top,
+                "reproduce runs the paper's three embedded balls: --preset and --config do \
+                 not apply",
+            )?;
             reproduce::run(&a, out)
         }
         Command::Map(mut a) => {
-            if top.is_given() {
-                if a.normalized {
-                    anyhow::bail!("--normalized cannot be used with --preset or --config");
-                }
-                if a.choice.is_given() {
-                    anyhow::bail!("--preset/--config given both before and after the subcommand");
-                }
-                a.choice = top;
-            }
+            merge_map_choice(top, &mut a)?;
             map::run(&a, out)
         }
         Command::Drop(a) => with_ball(top, a, |a| &mut a.ball, drop::run, out),
@@ -258,18 +237,63 @@ fn dispatch(cli: Cli, out: &mut dyn Write) -> anyhow::Result<()> {
         Command::Shot(a) => with_ball(top, a, |a| &mut a.ball, shot::run, out),
         Command::Static(a) => with_ball(top, a, |a| &mut a.ball, statics::run, out),
         Command::Standards(a) => {
-            if top.is_given() {
-                anyhow::bail!("standards lists the standards: --preset and --config do not apply");
-            }
+            no_ball_choice(
+                top,
+                "standards lists the standards: --preset and --config do not apply",
+            )?;
             standards::run(&a, out)
         }
         Command::Surfaces(a) => {
-            if top.is_given() {
-                anyhow::bail!("surfaces lists the surfaces: --preset and --config do not apply");
-            }
+            no_ball_choice(
+                top,
+                "surfaces lists the surfaces: --preset and --config do not apply",
+            )?;
             surface::list(&a, out)
         }
     }
+}
+
+/// The explorer's options given before a subcommand: refused, with where they belong.
+fn explorer_options_refused(
+    explore: &explore::ExplorerArgs,
+    measured: Option<&Path>,
+) -> anyhow::Result<()> {
+    if let Some(option) = explore.given() {
+        anyhow::bail!(
+            "{option} before a subcommand is for the explorer; give it after the subcommand"
+        );
+    }
+    if let Some(m) = measured {
+        anyhow::bail!(
+            "--measured before a subcommand is for the explorer; to draw {} on a figure use \
+             `bouncelab figure NAME --measured FILE`, to fit it `bouncelab fit`",
+            m.display()
+        );
+    }
+    Ok(())
+}
+
+/// `--preset`/`--config` before a subcommand that runs no chosen ball: refused with `why`.
+fn no_ball_choice(top: ball::PresetChoice, why: &'static str) -> anyhow::Result<()> {
+    match top.is_given() {
+        true => Err(anyhow::Error::msg(why)),
+        false => Ok(()),
+    }
+}
+
+/// `bouncelab --preset P map` means `bouncelab map --preset P`: not with `--normalized`, nor
+/// with a choice after the subcommand too.
+fn merge_map_choice(top: ball::PresetChoice, a: &mut map::MapArgs) -> anyhow::Result<()> {
+    if top.is_given() {
+        if a.normalized {
+            anyhow::bail!("--normalized cannot be used with --preset or --config");
+        }
+        if a.choice.is_given() {
+            anyhow::bail!("--preset/--config given both before and after the subcommand");
+        }
+        a.choice = top;
+    }
+    Ok(())
 }
 
 /// `bouncelab --config F presets` means `bouncelab presets --config F`; `presets` takes no
