@@ -97,21 +97,6 @@ pub fn report<'a>(
     r: &crate::ImpactResponse,
 ) -> Report<'a> {
     let n = p.normalized();
-    let correlation = f
-        .names
-        .iter()
-        .enumerate()
-        .map(|(i, a)| {
-            (
-                *a,
-                f.names
-                    .iter()
-                    .enumerate()
-                    .map(|(j, b)| (*b, f.correlation[i][j]))
-                    .collect(),
-            )
-        })
-        .collect();
     let nuisance = f
         .time_offset
         .iter()
@@ -139,25 +124,14 @@ pub fn report<'a>(
         iterations: f.iterations,
         condition_number: f.condition,
         fitted: f.fitted.iter().map(|e| (e.name, e)).collect(),
-        correlation,
+        correlation: correlation(f),
         time_offset: f.time_offset.as_ref().map(|e| e.value),
         nuisance,
         v0: p.v0,
         target_cor: (data.kind != "COR table" && data.trace.is_none() && data.joint.is_empty())
             .then(|| data.points.first().map(|q| q.cor))
             .flatten(),
-        drops: data
-            .drops
-            .iter()
-            .zip(&data.points)
-            .map(|(&(h, r), q)| DropRow {
-                drop_height: h,
-                rebound_height: r,
-                v0: q.v0,
-                cor: q.cor,
-                cor_sd: q.cor_sd,
-            })
-            .collect(),
+        drops: drop_rows(data),
         air: (!data.drops.is_empty()).then(|| {
             data.air.map(|a| AirRow {
                 drag_coefficient: a.drag_coefficient,
@@ -176,4 +150,37 @@ pub fn report<'a>(
         sd_stated: f.stated_sd,
         ball: ball.record_json(),
     }
+}
+
+/// The fitted parameters' correlations, by name and name.
+fn correlation(f: &MultiFit) -> BTreeMap<&'static str, BTreeMap<&'static str, f64>> {
+    f.names
+        .iter()
+        .enumerate()
+        .map(|(i, a)| {
+            (
+                *a,
+                f.names
+                    .iter()
+                    .enumerate()
+                    .map(|(j, b)| (*b, f.correlation[i][j]))
+                    .collect(),
+            )
+        })
+        .collect()
+}
+
+/// The drops fitted, each with its COR (and its sd, when the reading's is given).
+fn drop_rows(data: &Loaded) -> Vec<DropRow> {
+    data.drops
+        .iter()
+        .zip(&data.points)
+        .map(|(&(h, r), q)| DropRow {
+            drop_height: h,
+            rebound_height: r,
+            v0: q.v0,
+            cor: q.cor,
+            cor_sd: q.cor_sd,
+        })
+        .collect()
 }
