@@ -1,13 +1,17 @@
 //! Several parameters at once: restarts, the best minimum, and its uncertainty.
 
+mod finish;
+
+pub(super) use finish::finish;
+
 use super::Param;
 use super::bins::Samples;
 use super::checks::{check_free, check_impulse, check_scale, too_few, verify_exact};
 use super::cor::CorProblem;
 use super::edge;
 use super::lm::{self, Best, Residuals, Solution};
-use super::result::{Estimate, FitData, MultiFit, MultiFitError};
-use super::stats::{CONDITION_MAX, Spread, uncertainty, uncertainty_by};
+use super::result::{FitData, MultiFit, MultiFitError};
+use super::stats::{CONDITION_MAX, Spread, uncertainty};
 use super::trace::TraceProblem;
 use super::verdict::{self, judge};
 use crate::analysis::work::{Unwatched, Watch, fit_iterations, fit_run_cost};
@@ -269,146 +273,4 @@ pub(super) fn best<P: Residuals>(
         b.sol.iterations = iterations;
         b
     })
-}
-
-/// Estimates, correlations and warnings at the minimum `sol`.
-pub(super) fn finish(
-    params: ImpactParams,
-    law: ContactLaw,
-    free: &[Param],
-    best: &Best,
-    spread: Spread,
-    rms_residual: f64,
-    model: Vec<f64>,
-) -> Result<MultiFit, MultiFitError> {
-    let sol = &best.sol;
-    if !finite(sol) || !rms_residual.is_finite() {
-        return Err(MultiFitError::NonFinite);
-    }
-    let u = uncertainty_by(&sol.jacobian, &sol.residuals, spread);
-    let k = free.len();
-    // a trace has the contact start and the baseline after the parameters
-    let trace = sol.x.len() > k;
-    let se = |j: usize| u.covariance[(j, j)].sqrt();
-    let mut fitted: Vec<Estimate> = free
-        .iter()
-        .enumerate()
-        .map(|(j, p)| {
-            // an interval symmetric in ln p: exp(θ ± t s_θ); the standard error by the delta
-            // method, s_p = p s_θ
-            let (theta, s) = (sol.x[j], se(j));
-            Estimate {
-                name: p.name(),
-                unit: p.unit(),
-                value: theta.exp(),
-                std_error: theta.exp() * s,
-                ci95: [(theta - u.t975 * s).exp(), (theta + u.t975 * s).exp()],
-            }
-        })
-        .collect();
-    let linear = |j: usize, name, unit| Estimate {
-        name,
-        unit,
-        value: sol.x[j],
-        std_error: se(j),
-        ci95: [sol.x[j] - u.t975 * se(j), sol.x[j] + u.t975 * se(j)],
-    };
-    let (mut time_offset, mut baseline) = if trace {
-        (
-            Some(linear(k, "time_offset", "s")),
-            Some(linear(k + 1, "baseline", "N")),
-        )
-    } else {
-        (None, None)
-    };
-    let mut names: Vec<&'static str> = fitted.iter().map(|e| e.name).collect();
-    names.extend(time_offset.iter().chain(&baseline).map(|e| e.name));
-    let n = names.len();
-    let correlation = (0..n)
-        .map(|i| (0..n).map(|j| u.correlation[(i, j)]).collect())
-        .collect();
-    let mut warnings = warnings(&fitted, &names, &u, sol);
-    // Residuals all zero with degrees of freedom left: s² = 0 makes every standard error 0,
-    // an interval that says "certain" where the data show no scatter to estimate it from.
-    // SciPy's curve_fit returns that zero covariance silently; it returns inf where it cannot
-    // estimate (n ≤ p), and so do we here: no standard error, no interval (null), as for an
-    // exact solve (`MultiFit::exact`), with a warning. A variable the data do not see keeps
-    // its infinite variance (not pinned). tests/cli/cli_fit.rs,
-    // `equal_cors_leave_no_scatter_to_estimate_from`.
-    let dof = sol.residuals.len().saturating_sub(names.len());
-    // (with stated sds the interval needs no scatter: `Spread::Stated`)
-    let stated = spread == Spread::Stated && dof > 0;
-    let no_scatter = !stated && dof > 0 && sol.residuals.iter().all(|r| *r == 0.0);
-    if no_scatter {
-        warnings.insert(0, verdict::NO_SCATTER.into());
-        let unknown = |e: &mut Estimate| {
-            if e.std_error.is_finite() {
-                e.std_error = f64::NAN;
-            }
-        };
-        fitted.iter_mut().for_each(unknown);
-        time_offset
-            .iter_mut()
-            .chain(baseline.iter_mut())
-            .for_each(unknown);
-    }
-    for e in fitted
-        .iter_mut()
-        .chain(time_offset.iter_mut())
-        .chain(baseline.iter_mut())
-    {
-        if !e.std_error.is_finite() {
-            e.ci95 = [f64::NAN, f64::NAN];
-        }
-    }
-    let not_pinned = verdict::not_pinned(&fitted, best, names.len(), no_scatter);
-    let on_bound = (0..free.len())
-        .filter(|&j| verdict::on_bound(sol.x[j], best.lo[j], best.hi[j]))
-        .map(|j| free[j].name())
-        .collect();
-    Ok(MultiFit {
-        params,
-        law,
-        fitted,
-        time_offset,
-        baseline,
-        names,
-        correlation,
-        rms_residual,
-        points: sol.residuals.len(),
-        iterations: sol.iterations,
-        converged: sol.converged,
-        condition: u.condition,
-        warnings,
-        model,
-        identified: false,
-        not_pinned,
-        on_bound,
-        no_scatter,
-        stated_sd: stated,
-        lack_of_fit: None,
-    })
-}
-
-fn warnings(
-    fitted: &[Estimate],
-    names: &[&str],
-    u: &super::stats::Uncertainty,
-    sol: &Solution,
-) -> Vec<String> {
-    let dof = sol.residuals.len().saturating_sub(names.len());
-    let hint = "fix it (leave it out of --free) or add data";
-    let mut w = verdict::pinning_warnings(dof, u, names[u.weakest], hint);
-    for e in fitted {
-        if dof > 0 && e.std_error.is_finite() && e.ci95[1] - e.ci95[0] > e.value {
-            w.push(format!(
-                "the 95 % interval of {} is wider than its value: the data barely pin it",
-                e.name
-            ));
-        }
-    }
-    if !sol.converged {
-        w.push(verdict::not_converged(sol.iterations));
-    }
-    w
 }
