@@ -20,6 +20,12 @@ pub(super) fn find_switch(
 ) -> Option<f64> {
     let g = |t: f64| phase.switch(s, &path.at(t), t);
     let tol = 1e-15 * tf.max(1.0);
+    let on_flow = OnFlow {
+        path,
+        s,
+        phase,
+        tol,
+    };
     // while sticking, sin and cos of ω̃_t (τ_j − start) turn by one rotation a grid step
     let turn = (s.omega_t * grid.h).sin_cos();
     let mut angle: Option<(f64, f64)> = None;
@@ -45,7 +51,7 @@ pub(super) fn find_switch(
             // two modes agree there to second order (k̃u on the cap, ṽ_c = μF̄'/k̃), and the
             // phase goes on until its function has turned negative and back
             if let Some((a, ga)) = bracket {
-                return Some(crossing(path, s, phase, (a, ga), (b, gb), tol));
+                return Some(on_flow.crossing((a, ga), (b, gb)));
             }
         }
         if let Some((a, ga, da)) = below
@@ -54,9 +60,9 @@ pub(super) fn find_switch(
             && matches!(phase.mode, Mode::Stick)
         {
             // a peak of k̃|u| − μF̄ between two points below the cap
-            let (tm, gm) = stick_peak(path, s, phase, (a, da), (b, db), tol);
+            let (tm, gm) = on_flow.stick_peak((a, da), (b, db));
             if gm > 0.0 {
-                return Some(crossing(path, s, phase, (a, ga), (tm, gm), tol));
+                return Some(on_flow.crossing((a, ga), (tm, gm)));
             }
         }
         if gb < 0.0 {
@@ -98,49 +104,58 @@ fn switch_at_point(
     }
 }
 
-/// The crossing of `phase`'s switch function in [a, b] (G(a) = `ga` < 0 < G(b) = `gb`): by
-/// safeguarded Newton on the flow's series, G' exact (a slide's from F̄''), else by Brent on
-/// the flow.
-fn crossing(
-    path: &impl NormalMotion,
-    s: &Scaled,
-    phase: &Phase,
-    (a, ga): (f64, f64),
-    (b, gb): (f64, f64),
+/// A phase's switch function on the exact flow `path`, and the tolerance of Brent's roots on
+/// it.
+struct OnFlow<'a, M> {
+    path: &'a M,
+    s: &'a Scaled,
+    phase: &'a Phase,
     tol: f64,
-) -> f64 {
-    match path.local(a, b) {
-        Some(l) => newton_bracketed_from(
-            |t| {
-                let (p, curvature) = l.at_with_curvature(t);
-                phase.switch_rate(s, &p, curvature, t)
-            },
-            (a, ga),
-            (b, gb),
-        ),
-        None => brent(|t| phase.switch(s, &path.at(t), t).0, a, b, ga, gb, tol),
-    }
 }
 
-/// The peak of a stick's k̃|u| − μF̄ in [a, b], where its rate goes from `da` > 0 to `db` < 0:
-/// (τ, G) there. On [a, b] the flow's series when it has one (a few dozen multiply-adds a
-/// reading).
-fn stick_peak(
-    path: &impl NormalMotion,
-    s: &Scaled,
-    phase: &Phase,
-    (a, da): (f64, f64),
-    (b, db): (f64, f64),
-    tol: f64,
-) -> (f64, f64) {
-    let local = path.local(a, b);
-    let g = move |t: f64| match &local {
-        Some(l) => phase.switch(s, &l.at(t), t),
-        None => phase.switch(s, &path.at(t), t),
-    };
-    let tm = brent(|t| g(t).1, a, b, da, db, tol);
-    let (gm, _) = g(tm);
-    (tm, gm)
+impl<M: NormalMotion> OnFlow<'_, M> {
+    /// The crossing of the switch function in [a, b] (G(a) = `ga` < 0 < G(b) = `gb`): by
+    /// safeguarded Newton on the flow's series, G' exact (a slide's from F̄''), else by Brent
+    /// on the flow.
+    fn crossing(&self, (a, ga): (f64, f64), (b, gb): (f64, f64)) -> f64 {
+        let OnFlow {
+            path,
+            s,
+            phase,
+            tol,
+        } = *self;
+        match path.local(a, b) {
+            Some(l) => newton_bracketed_from(
+                |t| {
+                    let (p, curvature) = l.at_with_curvature(t);
+                    phase.switch_rate(s, &p, curvature, t)
+                },
+                (a, ga),
+                (b, gb),
+            ),
+            None => brent(|t| phase.switch(s, &path.at(t), t).0, a, b, ga, gb, tol),
+        }
+    }
+
+    /// The peak of a stick's k̃|u| − μF̄ in [a, b], where its rate goes from `da` > 0 to
+    /// `db` < 0: (τ, G) there. On [a, b] the flow's series when it has one (a few dozen
+    /// multiply-adds a reading).
+    fn stick_peak(&self, (a, da): (f64, f64), (b, db): (f64, f64)) -> (f64, f64) {
+        let OnFlow {
+            path,
+            s,
+            phase,
+            tol,
+        } = *self;
+        let local = path.local(a, b);
+        let g = move |t: f64| match &local {
+            Some(l) => phase.switch(s, &l.at(t), t),
+            None => phase.switch(s, &path.at(t), t),
+        };
+        let tm = brent(|t| g(t).1, a, b, da, db, tol);
+        let (gm, _) = g(tm);
+        (tm, gm)
+    }
 }
 
 /// A point in (start, b) where the switch function is negative, when the first step already
