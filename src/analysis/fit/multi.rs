@@ -144,39 +144,15 @@ fn fit_cor(
             MultiFitError::NoAnswer
         }
     };
-    let mut sol = best(&p, starts, |x| p.bounds(x), 0.0, iterations).ok_or_else(none)?;
-    let mut t_dof = None;
+    let sol = best(&p, starts, |x| p.bounds(x), 0.0, iterations).ok_or_else(none)?;
     // every row's COR with its stated sd, and nothing else measured: the residuals are in
     // units of their sd (`Spread::Stated`)
     let stated = points.iter().all(|q| q.cor_sd.is_some()) && p.count() == points.len();
-    if p.count() > points.len() {
-        // mixed kinds: weigh each by its own scatter, then fit again from there
-        let kinds = p.rms_by_kind(&sol.sol.x).ok_or_else(none)?;
-        let counts = p.count_by_kind();
-        for k in 0..3 {
-            if kinds[k].is_finite() && (k > 0 || points.iter().all(|q| q.cor_sd.is_none())) {
-                p.scale[k].set(kinds[k].max(1e-6));
-                // the weights are estimated from the data: the intervals take the degrees of
-                // freedom of the kind with the fewest points, its share of the parameters
-                // taken off (measured: 37–39 of 40 intervals cover, against 35–37 with the
-                // n − p of all the data; tests/analysis/fit_recovery.rs,
-                // cor_force_and_contact_time_jointly)
-                let share = (free.len() * counts[k]).div_ceil(p.count());
-                let dof = counts[k].saturating_sub(share).max(1);
-                t_dof = Some(t_dof.map_or(dof, |d: usize| d.min(dof)));
-            }
-        }
-        let again = best(
-            &p,
-            vec![sol.sol.x.clone()],
-            |x| p.bounds(x),
-            0.0,
-            iterations,
-        );
-        let its = sol.sol.iterations;
-        sol = again.ok_or_else(none)?;
-        sol.sol.iterations += its;
-    }
+    let (sol, t_dof) = if p.count() > points.len() {
+        refit_by_kind(&p, points, free.len(), sol, iterations).ok_or_else(none)?
+    } else {
+        (sol, None)
+    };
     let pred = p.predict(&sol.sol.x).ok_or_else(none)?;
     let model: Vec<f64> = pred.iter().map(|q| q.0).collect();
     let misses: Vec<f64> = model.iter().zip(points).map(|(m, q)| m - q.cor).collect();
@@ -190,19 +166,65 @@ fn fit_cor(
         None => Spread::Residuals,
     };
     let mut f = finish(ball, law, free, &sol, spread, rms(&misses), model)?;
-    let dof = sol.sol.residuals.len().saturating_sub(free.len());
-    // χ² when every row carries its standard deviation (and nothing else was measured), else
-    // the runs test of the COR misses in the data's order of speed
-    let lack = if stated {
+    let lack = cor_lack_of_fit(stated, &sol, free.len(), points, misses, f.rms_residual);
+    judge(&mut f, lack);
+    Ok(f)
+}
+
+/// A COR table of mixed kinds: each kind weighed by its own scatter at `sol`, then fitted
+/// again from there. The new minimum (its iterations counting the first fit's too), and the
+/// degrees of freedom its intervals take; `None` when there is no answer or the watch
+/// stopped the fit.
+fn refit_by_kind(
+    p: &CorProblem,
+    points: &[CorPoint],
+    free: usize,
+    sol: Best,
+    iterations: usize,
+) -> Option<(Best, Option<usize>)> {
+    let mut t_dof = None;
+    let kinds = p.rms_by_kind(&sol.sol.x)?;
+    let counts = p.count_by_kind();
+    for k in 0..3 {
+        if kinds[k].is_finite() && (k > 0 || points.iter().all(|q| q.cor_sd.is_none())) {
+            p.scale[k].set(kinds[k].max(1e-6));
+            // the weights are estimated from the data: the intervals take the degrees of
+            // freedom of the kind with the fewest points, its share of the parameters
+            // taken off (measured: 37–39 of 40 intervals cover, against 35–37 with the
+            // n − p of all the data; tests/analysis/fit_recovery.rs,
+            // cor_force_and_contact_time_jointly)
+            let share = (free * counts[k]).div_ceil(p.count());
+            let dof = counts[k].saturating_sub(share).max(1);
+            t_dof = Some(t_dof.map_or(dof, |d: usize| d.min(dof)));
+        }
+    }
+    let again = best(p, vec![sol.sol.x.clone()], |x| p.bounds(x), 0.0, iterations);
+    let its = sol.sol.iterations;
+    let mut sol = again?;
+    sol.sol.iterations += its;
+    Some((sol, t_dof))
+}
+
+/// χ² when every row carries its standard deviation (and nothing else was measured,
+/// `stated`), else the runs test of the COR `misses` in the data's order of speed (none
+/// where the model meets the data: RMS ≤ 1e-9).
+fn cor_lack_of_fit(
+    stated: bool,
+    sol: &Best,
+    free: usize,
+    points: &[CorPoint],
+    misses: Vec<f64>,
+    rms_residual: f64,
+) -> Option<verdict::LackOfFit> {
+    let dof = sol.sol.residuals.len().saturating_sub(free);
+    if stated {
         verdict::chi2_test(&sol.sol.residuals, dof)
     } else {
         let mut by_speed: Vec<(f64, f64)> = points.iter().map(|q| q.v0).zip(misses).collect();
         by_speed.sort_by(|a, b| a.0.total_cmp(&b.0));
         let r: Vec<f64> = by_speed.iter().map(|m| m.1).collect();
-        verdict::runs_test(&r).filter(|_| f.rms_residual > 1e-9)
-    };
-    judge(&mut f, lack);
-    Ok(f)
+        verdict::runs_test(&r).filter(|_| rms_residual > 1e-9)
+    }
 }
 
 /// s² = Σr²/(n − p) at a minimum.
