@@ -108,17 +108,7 @@ pub(super) fn finish(
     let ci95 = intervals(p, &sol, &u, b, &mut warnings)?;
     let no_scatter = no_scatter(&sol);
     let fitted = estimates(p, &sol, &u, &ci95, no_scatter);
-    let on_bound: Vec<&'static str> = (0..vars)
-        .filter(|&j| verdict::on_bound(sol.x[j], b.lo[j], b.hi[j]))
-        .map(|j| p.names[j])
-        .collect();
-    // residuals all zero: judged as an exact solve, on what the data see (`verdict::pinned`)
-    let judged_dof = if no_scatter { 0 } else { dof };
-    let not_pinned: Vec<&'static str> = fitted
-        .iter()
-        .filter(|e| !verdict::pinned(e, judged_dof, on_bound.contains(&e.name)))
-        .map(|e| e.name)
-        .collect();
+    let (on_bound, not_pinned) = unpinned(p, &sol, b, &fitted, no_scatter);
     let pred = p.predict(&sol.x).ok_or(MultiFitError::NoAnswer)?;
     let (rms_vx, rms_spin) = rms_pair(&pred, p.rows);
     let rms_vy = normal_misses(p);
@@ -154,6 +144,31 @@ pub(super) fn finish(
         on_bound,
         no_scatter,
     })
+}
+
+/// The fitted quantities that ran to the bound of their search, and those the data do not
+/// pin (`verdict::pinned`).
+fn unpinned(
+    p: &Problem,
+    sol: &lm::Solution,
+    b: &Search,
+    fitted: &[Estimate],
+    no_scatter: bool,
+) -> (Vec<&'static str>, Vec<&'static str>) {
+    let vars = sol.x.len();
+    let dof = sol.residuals.len().saturating_sub(vars);
+    let on_bound: Vec<&'static str> = (0..vars)
+        .filter(|&j| verdict::on_bound(sol.x[j], b.lo[j], b.hi[j]))
+        .map(|j| p.names[j])
+        .collect();
+    // residuals all zero: judged as an exact solve, on what the data see (`verdict::pinned`)
+    let judged_dof = if no_scatter { 0 } else { dof };
+    let not_pinned: Vec<&'static str> = fitted
+        .iter()
+        .filter(|e| !verdict::pinned(e, judged_dof, on_bound.contains(&e.name)))
+        .map(|e| e.name)
+        .collect();
+    (on_bound, not_pinned)
 }
 
 /// μ, K_t (κ, c_t) at `sol` with their standard errors (by the delta method, s_p = p s_θ)
