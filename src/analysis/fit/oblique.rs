@@ -209,7 +209,7 @@ pub fn fit_oblique(
         max_iterations: iterations,
         ..lm::Options::default()
     };
-    let found = minimize_each(&p, starts, &lo, &hi, opts).ok_or_else(|| stopped(&p))?;
+    let found = minimize_each(&p, starts, &lo, &hi, opts).ok_or_else(|| no_minimum(&p))?;
     let mut iterations: usize = found.iter().map(|s| s.iterations).sum();
     let mut best = found[0].clone();
     if spins && let Some(refined) = refit_weighed(&p, &found, &lo, &hi, opts)? {
@@ -313,7 +313,7 @@ fn budget(
 }
 
 /// Why no minimum came back: the watch stopped the fit, or no start gave an answer.
-fn stopped(p: &Problem) -> MultiFitError {
+fn no_minimum(p: &Problem) -> MultiFitError {
     if p.stopped() {
         MultiFitError::Interrupted
     } else {
@@ -339,7 +339,7 @@ fn refit_weighed(
     if vx > 0.0 && spin > 0.0 {
         p.spin_weight.set(vx / spin);
         let again = distinct(found, REFINED);
-        let refined = minimize_each(p, again, lo, hi, opts).ok_or_else(|| stopped(p))?;
+        let refined = minimize_each(p, again, lo, hi, opts).ok_or_else(|| no_minimum(p))?;
         Ok(Some(refined))
     } else {
         Ok(None)
