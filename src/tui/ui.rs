@@ -2,29 +2,20 @@
 //! Drawing reads the state and never changes it: each panel gets the few things it shows,
 //! each chart its figure, built from the state's [`crate::figure::explorer::Scene`].
 
-use super::app::{App, Overlay, View};
-use super::chartview::ChartId;
+mod render;
+
+use super::app::{App, View};
 use super::param::Param;
 use super::theme::Theme;
-use super::widgets::command::CommandBox;
-use super::widgets::confirm::ConfirmDialog;
-use super::widgets::help::Help;
-use super::widgets::input::InputDialog;
-use super::widgets::picker::PickerBox;
 use super::widgets::pins::PinView;
-use super::widgets::plot::Plot;
 use super::widgets::readout::{self, Readout};
-use super::widgets::status::{Header, KeyHints, MessageLine, message_lines, surface_words};
+use super::widgets::status::message_lines;
 pub use crate::figure::explorer::Chart;
 use crate::figure::{Figure, explorer};
 use crate::tui::views::fit::widget::FitView;
 use crate::tui::views::map::widget::MapPanel;
 use crate::tui::views::models::widget::ModelsTable;
-use crate::tui::views::oblique::param::ObliqueParam;
-use ratatui::buffer::Buffer;
 use ratatui::layout::{Constraint, Layout, Rect};
-use ratatui::text::Line;
-use ratatui::widgets::{Paragraph, Widget, Wrap};
 
 pub use super::layout::SIDE_PANEL_WIDTH;
 pub use super::state::{MIN_HEIGHT, MIN_WIDTH};
@@ -237,162 +228,5 @@ fn map_panel(app: &App, theme: Theme) -> MapPanel<'_> {
             s.law
         ),
         theme,
-    }
-}
-
-/// The overlay on top of everything, if any.
-fn render_overlay(app: &App, theme: Theme, area: Rect, buf: &mut Buffer) {
-    match app.overlay() {
-        Overlay::None => {}
-        Overlay::Help => Help {
-            theme,
-            scroll: app.help_scroll(),
-        }
-        .render(area, buf),
-        Overlay::Input(input) => InputDialog {
-            input,
-            setting: app.setting(),
-            theme,
-        }
-        .render(area, buf),
-        Overlay::Confirm(confirm) => ConfirmDialog { confirm, theme }.render(area, buf),
-        Overlay::Ask(ask) => super::widgets::confirm::AskDialog { ask, theme }.render(area, buf),
-        Overlay::Command(line) => CommandBox {
-            line,
-            copied: app.osc52(),
-            theme,
-        }
-        .render(area, buf),
-        Overlay::Quit(lost) => {
-            crate::tui::widgets::quit::QuitDialog { lost, theme }.render(area, buf)
-        }
-        Overlay::Picker(picker) => PickerBox { picker, theme }.render(area, buf),
-        Overlay::Surfaces(picker) => {
-            crate::tui::widgets::surfaces::SurfacesBox { picker, theme }.render(area, buf)
-        }
-        Overlay::Form(form) => crate::tui::widgets::form::FormBox {
-            form: *form,
-            setting: app.setting(),
-            surface: app.form_surface(),
-            warning: app.validity(),
-            theme,
-        }
-        .render(area, buf),
-    }
-}
-
-impl Widget for &App {
-    fn render(self, area: Rect, buf: &mut Buffer) {
-        let area = area.intersection(buf.area);
-        let Some(s) = screen(self, area) else {
-            let mut text = format!("enlarge the terminal: at least {MIN_WIDTH}×{MIN_HEIGHT}");
-            // `q` asked, with no room for its dialog: the question here
-            if let Overlay::Quit(lost) = self.overlay() {
-                text = format!("Quit and lose {lost}? q or y quits · n stays. {text}");
-            }
-            Paragraph::new(Line::raw(text))
-                .wrap(Wrap { trim: true })
-                .render(area, buf);
-            return;
-        };
-        let theme = Theme::new(self.color());
-        // the compact readout has no row for the surface: the header names it
-        let surface = (!s.side_panel).then(|| surface_words(self.setting()));
-        Header {
-            ball: &self.preset().name,
-            surface: surface.as_deref(),
-            law: self.setting().law,
-            view: self.view(),
-            theme,
-        }
-        .render(s.header, buf);
-        MessageLine {
-            message: self.message(),
-            theme,
-        }
-        .render(s.message, buf);
-        KeyHints {
-            theme,
-            map: self.view() == View::Map,
-            drop: self.view() == View::Drop,
-            drop_paused: self.view() == View::Drop && self.drop_view().paused(),
-            oblique: (self.view() == View::Oblique).then(|| self.oblique_view().page),
-            flight: self.view() == View::Flight,
-        }
-        .render(s.status, buf);
-        // the drop, flight and oblique views take the whole body, between the header and the
-        // message line (src/tui/views/{drop,flight,oblique}/widget.rs)
-        let body = Rect::new(
-            area.x,
-            s.header.bottom(),
-            area.width,
-            s.message.y - s.header.bottom(),
-        );
-        if self.view() == View::Drop {
-            let chart = self.screen_figure(ChartId::DropHeight).unwrap_or_else(|| {
-                crate::tui::views::drop::widget::height_figure(self.drop_view())
-            });
-            crate::tui::views::drop::widget::DropPanel {
-                drop: self.drop_view(),
-                ball: &self.preset().name,
-                chart: &chart,
-                theme,
-            }
-            .render(body, buf);
-        } else if self.view() == View::Flight {
-            crate::tui::views::flight::widget::FlightPanel {
-                view: self.flight_view(),
-                ball: &self.preset().name,
-                radius: self.setting().radius,
-                theme,
-            }
-            .render(body, buf);
-        } else if self.view() == View::Oblique {
-            let time = [
-                ChartId::ObliqueForces,
-                ChartId::ObliqueSlip,
-                ChartId::ObliqueSpin,
-            ]
-            .map(|id| self.screen_figure(id));
-            let time = match time {
-                [Some(a), Some(b), Some(c)] => Some([a, b, c]),
-                _ => None,
-            };
-            let surface = self.oblique_surface_line();
-            let calibration = self.calibration();
-            crate::tui::views::oblique::widget::ObliquePanel {
-                view: self.oblique_view(),
-                time: time.as_ref(),
-                ball: &self.preset().name,
-                v0: self.setting().params.v0,
-                tangential: [
-                    self.oblique_value(ObliqueParam::TangentialStiffness),
-                    self.oblique_value(ObliqueParam::InertiaFactor),
-                ],
-                surface: (&surface.0, surface.1),
-                calibration: calibration.as_deref(),
-                theme,
-            }
-            .render(body, buf);
-        } else if self.view() == View::Models {
-            models_table(self, theme).render(s.readout, buf);
-        } else {
-            let pins = pin_views(self);
-            readout(self, &pins, s.side_panel, theme).render(s.readout, buf);
-        }
-        if self.view() == View::Map {
-            map_panel(self, theme).render(s.chart_area, buf);
-        }
-        for (chart, rect) in &s.charts {
-            if let Some(fig) = self.screen_figure(ChartId::Explorer(*chart)) {
-                Plot::new(&fig, theme).render(*rect, buf);
-            }
-        }
-        if let (Some(rect), Some(v)) = (s.fit, fit_view(self, theme)) {
-            v.render(rect, buf);
-        }
-        render_overlay(self, theme, area, buf);
-        // the map's 24-bit cells in colours the terminal shows
-        super::palette::bring_down(buf, area, self.color_depth());
     }
 }

@@ -121,13 +121,8 @@ pub fn minimize<P: Residuals>(
     hi: &[f64],
     opts: Options,
 ) -> Option<Solution> {
-    let clamp = |x: &mut [f64]| {
-        x.iter_mut()
-            .enumerate()
-            .for_each(|(j, v)| *v = v.clamp(lo[j], hi[j]))
-    };
     let mut x = x0.to_vec();
-    clamp(&mut x);
+    clamp(&mut x, lo, hi);
     let mut r = p.residuals(&x)?;
     let mut c = cost(&r);
     let mut jac = p.jacobian(&x, &r)?;
@@ -142,28 +137,13 @@ pub fn minimize<P: Residuals>(
         it += 1;
         let jtj = jac.transpose() * &jac;
         let g = jac.transpose() * DVector::from_column_slice(&r);
-        // Moré's scaling: damp each variable by its own curvature
-        let d: Vec<f64> = (0..x.len()).map(|j| jtj[(j, j)].max(1e-300)).collect();
         // μ is relative to each variable's own curvature (Moré): dimensionless
         let m = *mu.get_or_insert(1e-3);
-        let mut a = jtj.clone();
-        for j in 0..x.len() {
-            a[(j, j)] += m * d[j];
-        }
-        let Some(delta) = a.cholesky().map(|ch| ch.solve(&(-&g))) else {
+        let Some(xn) = trial_point(p, &x, (&jtj, &g), m, (lo, hi)) else {
             mu = Some(m * nu);
             nu *= 2.0;
             continue;
         };
-        let shrink = (0..x.len())
-            .map(|j| delta[j].abs() / p.max_step(j))
-            .fold(1.0, f64::max);
-        let mut xn: Vec<f64> = x
-            .iter()
-            .zip(delta.iter())
-            .map(|(a, b)| a + b / shrink)
-            .collect();
-        clamp(&mut xn);
         let step = DVector::from_iterator(x.len(), xn.iter().zip(&x).map(|(a, b)| a - b));
         let small = (0..x.len()).all(|j| step[j].abs() <= opts.xtol * p.typical(j));
         let Some(rn) = p.residuals(&xn) else {
@@ -208,6 +188,42 @@ pub fn minimize<P: Residuals>(
         iterations: it,
         converged,
     })
+}
+
+/// `x` clamped into the box [`lo`, `hi`].
+fn clamp(x: &mut [f64], lo: &[f64], hi: &[f64]) {
+    x.iter_mut()
+        .enumerate()
+        .for_each(|(j, v)| *v = v.clamp(lo[j], hi[j]))
+}
+
+/// Where one step from `x` at damping `m` goes: (JᵀJ + m D) δ = −g with Moré's scaling D
+/// (each variable damped by its own curvature), δ shortened so no variable moves by more
+/// than its `max_step`, the point clamped into the box; `None` when JᵀJ + m D has no
+/// Cholesky factor.
+fn trial_point<P: Residuals>(
+    p: &P,
+    x: &[f64],
+    (jtj, g): (&DMatrix<f64>, &DVector<f64>),
+    m: f64,
+    (lo, hi): (&[f64], &[f64]),
+) -> Option<Vec<f64>> {
+    let d: Vec<f64> = (0..x.len()).map(|j| jtj[(j, j)].max(1e-300)).collect();
+    let mut a = jtj.clone();
+    for j in 0..x.len() {
+        a[(j, j)] += m * d[j];
+    }
+    let delta = a.cholesky().map(|ch| ch.solve(&(-g)))?;
+    let shrink = (0..x.len())
+        .map(|j| delta[j].abs() / p.max_step(j))
+        .fold(1.0, f64::max);
+    let mut xn: Vec<f64> = x
+        .iter()
+        .zip(delta.iter())
+        .map(|(a, b)| a + b / shrink)
+        .collect();
+    clamp(&mut xn, lo, hi);
+    Some(xn)
 }
 
 /// A gain not worth another step: a fraction `ftol` of the cost, or `of_variance` of the

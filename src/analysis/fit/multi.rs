@@ -1,13 +1,17 @@
 //! Several parameters at once: restarts, the best minimum, and its uncertainty.
 
+mod finish;
+
+pub(super) use finish::finish;
+
 use super::Param;
 use super::bins::Samples;
 use super::checks::{check_free, check_impulse, check_scale, too_few, verify_exact};
 use super::cor::CorProblem;
 use super::edge;
 use super::lm::{self, Best, Residuals, Solution};
-use super::result::{Estimate, FitData, MultiFit, MultiFitError};
-use super::stats::{CONDITION_MAX, Spread, uncertainty, uncertainty_by};
+use super::result::{FitData, MultiFit, MultiFitError};
+use super::stats::{CONDITION_MAX, Spread, uncertainty};
 use super::trace::TraceProblem;
 use super::verdict::{self, judge};
 use crate::analysis::work::{Unwatched, Watch, fit_iterations, fit_run_cost};
@@ -140,39 +144,15 @@ fn fit_cor(
             MultiFitError::NoAnswer
         }
     };
-    let mut sol = best(&p, starts, |x| p.bounds(x), 0.0, iterations).ok_or_else(none)?;
-    let mut t_dof = None;
+    let sol = best(&p, starts, |x| p.bounds(x), 0.0, iterations).ok_or_else(none)?;
     // every row's COR with its stated sd, and nothing else measured: the residuals are in
     // units of their sd (`Spread::Stated`)
     let stated = points.iter().all(|q| q.cor_sd.is_some()) && p.count() == points.len();
-    if p.count() > points.len() {
-        // mixed kinds: weigh each by its own scatter, then fit again from there
-        let kinds = p.rms_by_kind(&sol.sol.x).ok_or_else(none)?;
-        let counts = p.count_by_kind();
-        for k in 0..3 {
-            if kinds[k].is_finite() && (k > 0 || points.iter().all(|q| q.cor_sd.is_none())) {
-                p.scale[k].set(kinds[k].max(1e-6));
-                // the weights are estimated from the data: the intervals take the degrees of
-                // freedom of the kind with the fewest points, its share of the parameters
-                // taken off (measured: 37–39 of 40 intervals cover, against 35–37 with the
-                // n − p of all the data; tests/analysis/fit_recovery.rs,
-                // cor_force_and_contact_time_jointly)
-                let share = (free.len() * counts[k]).div_ceil(p.count());
-                let dof = counts[k].saturating_sub(share).max(1);
-                t_dof = Some(t_dof.map_or(dof, |d: usize| d.min(dof)));
-            }
-        }
-        let again = best(
-            &p,
-            vec![sol.sol.x.clone()],
-            |x| p.bounds(x),
-            0.0,
-            iterations,
-        );
-        let its = sol.sol.iterations;
-        sol = again.ok_or_else(none)?;
-        sol.sol.iterations += its;
-    }
+    let (sol, t_dof) = if p.count() > points.len() {
+        refit_by_kind(&p, points, free.len(), sol, iterations).ok_or_else(none)?
+    } else {
+        (sol, None)
+    };
     let pred = p.predict(&sol.sol.x).ok_or_else(none)?;
     let model: Vec<f64> = pred.iter().map(|q| q.0).collect();
     let misses: Vec<f64> = model.iter().zip(points).map(|(m, q)| m - q.cor).collect();
@@ -186,19 +166,65 @@ fn fit_cor(
         None => Spread::Residuals,
     };
     let mut f = finish(ball, law, free, &sol, spread, rms(&misses), model)?;
-    let dof = sol.sol.residuals.len().saturating_sub(free.len());
-    // χ² when every row carries its standard deviation (and nothing else was measured), else
-    // the runs test of the COR misses in the data's order of speed
-    let lack = if stated {
+    let lack = cor_lack_of_fit(stated, &sol, free.len(), points, misses, f.rms_residual);
+    judge(&mut f, lack);
+    Ok(f)
+}
+
+/// A COR table of mixed kinds: each kind weighed by its own scatter at `sol`, then fitted
+/// again from there. The new minimum (its iterations counting the first fit's too), and the
+/// degrees of freedom its intervals take; `None` when there is no answer or the watch
+/// stopped the fit.
+fn refit_by_kind(
+    p: &CorProblem,
+    points: &[CorPoint],
+    free: usize,
+    sol: Best,
+    iterations: usize,
+) -> Option<(Best, Option<usize>)> {
+    let mut t_dof = None;
+    let kinds = p.rms_by_kind(&sol.sol.x)?;
+    let counts = p.count_by_kind();
+    for k in 0..3 {
+        if kinds[k].is_finite() && (k > 0 || points.iter().all(|q| q.cor_sd.is_none())) {
+            p.scale[k].set(kinds[k].max(1e-6));
+            // the weights are estimated from the data: the intervals take the degrees of
+            // freedom of the kind with the fewest points, its share of the parameters
+            // taken off (measured: 37–39 of 40 intervals cover, against 35–37 with the
+            // n − p of all the data; tests/analysis/fit_recovery.rs,
+            // cor_force_and_contact_time_jointly)
+            let share = (free * counts[k]).div_ceil(p.count());
+            let dof = counts[k].saturating_sub(share).max(1);
+            t_dof = Some(t_dof.map_or(dof, |d: usize| d.min(dof)));
+        }
+    }
+    let again = best(p, vec![sol.sol.x.clone()], |x| p.bounds(x), 0.0, iterations);
+    let its = sol.sol.iterations;
+    let mut sol = again?;
+    sol.sol.iterations += its;
+    Some((sol, t_dof))
+}
+
+/// χ² when every row carries its standard deviation (and nothing else was measured,
+/// `stated`), else the runs test of the COR `misses` in the data's order of speed (none
+/// where the model meets the data: RMS ≤ 1e-9).
+fn cor_lack_of_fit(
+    stated: bool,
+    sol: &Best,
+    free: usize,
+    points: &[CorPoint],
+    misses: Vec<f64>,
+    rms_residual: f64,
+) -> Option<verdict::LackOfFit> {
+    let dof = sol.sol.residuals.len().saturating_sub(free);
+    if stated {
         verdict::chi2_test(&sol.sol.residuals, dof)
     } else {
         let mut by_speed: Vec<(f64, f64)> = points.iter().map(|q| q.v0).zip(misses).collect();
         by_speed.sort_by(|a, b| a.0.total_cmp(&b.0));
         let r: Vec<f64> = by_speed.iter().map(|m| m.1).collect();
-        verdict::runs_test(&r).filter(|_| f.rms_residual > 1e-9)
-    };
-    judge(&mut f, lack);
-    Ok(f)
+        verdict::runs_test(&r).filter(|_| rms_residual > 1e-9)
+    }
 }
 
 /// s² = Σr²/(n − p) at a minimum.
@@ -269,146 +295,4 @@ pub(super) fn best<P: Residuals>(
         b.sol.iterations = iterations;
         b
     })
-}
-
-/// Estimates, correlations and warnings at the minimum `sol`.
-pub(super) fn finish(
-    params: ImpactParams,
-    law: ContactLaw,
-    free: &[Param],
-    best: &Best,
-    spread: Spread,
-    rms_residual: f64,
-    model: Vec<f64>,
-) -> Result<MultiFit, MultiFitError> {
-    let sol = &best.sol;
-    if !finite(sol) || !rms_residual.is_finite() {
-        return Err(MultiFitError::NonFinite);
-    }
-    let u = uncertainty_by(&sol.jacobian, &sol.residuals, spread);
-    let k = free.len();
-    // a trace has the contact start and the baseline after the parameters
-    let trace = sol.x.len() > k;
-    let se = |j: usize| u.covariance[(j, j)].sqrt();
-    let mut fitted: Vec<Estimate> = free
-        .iter()
-        .enumerate()
-        .map(|(j, p)| {
-            // an interval symmetric in ln p: exp(θ ± t s_θ); the standard error by the delta
-            // method, s_p = p s_θ
-            let (theta, s) = (sol.x[j], se(j));
-            Estimate {
-                name: p.name(),
-                unit: p.unit(),
-                value: theta.exp(),
-                std_error: theta.exp() * s,
-                ci95: [(theta - u.t975 * s).exp(), (theta + u.t975 * s).exp()],
-            }
-        })
-        .collect();
-    let linear = |j: usize, name, unit| Estimate {
-        name,
-        unit,
-        value: sol.x[j],
-        std_error: se(j),
-        ci95: [sol.x[j] - u.t975 * se(j), sol.x[j] + u.t975 * se(j)],
-    };
-    let (mut time_offset, mut baseline) = if trace {
-        (
-            Some(linear(k, "time_offset", "s")),
-            Some(linear(k + 1, "baseline", "N")),
-        )
-    } else {
-        (None, None)
-    };
-    let mut names: Vec<&'static str> = fitted.iter().map(|e| e.name).collect();
-    names.extend(time_offset.iter().chain(&baseline).map(|e| e.name));
-    let n = names.len();
-    let correlation = (0..n)
-        .map(|i| (0..n).map(|j| u.correlation[(i, j)]).collect())
-        .collect();
-    let mut warnings = warnings(&fitted, &names, &u, sol);
-    // Residuals all zero with degrees of freedom left: s² = 0 makes every standard error 0,
-    // an interval that says "certain" where the data show no scatter to estimate it from.
-    // SciPy's curve_fit returns that zero covariance silently; it returns inf where it cannot
-    // estimate (n ≤ p), and so do we here: no standard error, no interval (null), as for an
-    // exact solve (`MultiFit::exact`), with a warning. A variable the data do not see keeps
-    // its infinite variance (not pinned). tests/cli/cli_fit.rs,
-    // `equal_cors_leave_no_scatter_to_estimate_from`.
-    let dof = sol.residuals.len().saturating_sub(names.len());
-    // (with stated sds the interval needs no scatter: `Spread::Stated`)
-    let stated = spread == Spread::Stated && dof > 0;
-    let no_scatter = !stated && dof > 0 && sol.residuals.iter().all(|r| *r == 0.0);
-    if no_scatter {
-        warnings.insert(0, verdict::NO_SCATTER.into());
-        let unknown = |e: &mut Estimate| {
-            if e.std_error.is_finite() {
-                e.std_error = f64::NAN;
-            }
-        };
-        fitted.iter_mut().for_each(unknown);
-        time_offset
-            .iter_mut()
-            .chain(baseline.iter_mut())
-            .for_each(unknown);
-    }
-    for e in fitted
-        .iter_mut()
-        .chain(time_offset.iter_mut())
-        .chain(baseline.iter_mut())
-    {
-        if !e.std_error.is_finite() {
-            e.ci95 = [f64::NAN, f64::NAN];
-        }
-    }
-    let not_pinned = verdict::not_pinned(&fitted, best, names.len(), no_scatter);
-    let on_bound = (0..free.len())
-        .filter(|&j| verdict::on_bound(sol.x[j], best.lo[j], best.hi[j]))
-        .map(|j| free[j].name())
-        .collect();
-    Ok(MultiFit {
-        params,
-        law,
-        fitted,
-        time_offset,
-        baseline,
-        names,
-        correlation,
-        rms_residual,
-        points: sol.residuals.len(),
-        iterations: sol.iterations,
-        converged: sol.converged,
-        condition: u.condition,
-        warnings,
-        model,
-        identified: false,
-        not_pinned,
-        on_bound,
-        no_scatter,
-        stated_sd: stated,
-        lack_of_fit: None,
-    })
-}
-
-fn warnings(
-    fitted: &[Estimate],
-    names: &[&str],
-    u: &super::stats::Uncertainty,
-    sol: &Solution,
-) -> Vec<String> {
-    let dof = sol.residuals.len().saturating_sub(names.len());
-    let hint = "fix it (leave it out of --free) or add data";
-    let mut w = verdict::pinning_warnings(dof, u, names[u.weakest], hint);
-    for e in fitted {
-        if dof > 0 && e.std_error.is_finite() && e.ci95[1] - e.ci95[0] > e.value {
-            w.push(format!(
-                "the 95 % interval of {} is wider than its value: the data barely pin it",
-                e.name
-            ));
-        }
-    }
-    if !sol.converged {
-        w.push(verdict::not_converged(sol.iterations));
-    }
-    w
 }

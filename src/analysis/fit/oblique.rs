@@ -197,96 +197,24 @@ pub fn fit_oblique(
     rows: &[ObliqueRow],
     watch: &dyn Watch,
 ) -> Result<ObliqueFit, MultiFitError> {
-    let spins = rows.iter().all(|r| r.spin_out.is_some());
-    let damped = start.tangential_damping.is_some();
-    let vars = 2 + usize::from(spins) + usize::from(damped);
-    let count = rows.len() * if spins { 2 } else { 1 };
-    if count < vars {
-        return Err(MultiFitError::TooFew {
-            points: count,
-            parameters: vars,
-        });
-    }
-    let normals = rows
-        .iter()
-        .map(|r| NormalAt::new(&start.params, start.law, r.v0, r.angle_deg))
-        .collect::<Result<Vec<_>, _>>()
-        .map_err(|_| MultiFitError::NoAnswer)?;
-    let p = Problem {
-        rows,
-        normals,
-        radius: start.radius,
-        kappa: (!spins).then_some(start.inertia_factor),
-        damping: damped.then_some(vars - 1),
-        names: (0..vars)
-            .map(|j| {
-                if damped && j == vars - 1 {
-                    NAMES[3]
-                } else {
-                    NAMES[j]
-                }
-            })
-            .collect(),
-        spin_weight: Cell::new(start.radius),
-        watch,
-        runs: Cell::new(0),
-        halted: Cell::new(false),
-    };
-    let mu0 = start
-        .friction
-        .unwrap_or_else(|| apparent_friction(rows, &p));
-    let mut x0 = vec![mu0.max(1e-3).ln(), start.tangential_stiffness.ln()];
-    if spins {
-        x0.push(start.inertia_factor.ln());
-    }
-    if let Some(c) = start.tangential_damping {
-        x0.push(c.ln());
-    }
+    let p = Problem::new(start, rows, watch)?;
+    let (spins, damped) = (p.spins(), p.damping.is_some());
+    let x0 = first_point(start, &p);
     let starts = starting_points(&x0, spins, damped);
-    let run = (rows.len() as u64) * OBLIQUE_COST * work::cost(start.law).min(4);
     let refits = if spins { REFINED } else { 0 };
-    let what = || format!("an oblique fit of {vars} parameters to {} rows", rows.len());
-    // the intervals' profile fits count as starts; where they would pass the limit, the
-    // intervals are the Jacobian's, and a warning says so
-    let fits = starts.len() + refits;
-    let profiles = fits + 2 * vars * profile::FITS_PER_SIDE;
-    let (iterations, profiled) = match work::fit_iterations(run, vars, profiles, start.law, what) {
-        Ok(iterations) => (iterations, true),
-        Err(_) => (
-            work::fit_iterations(run, vars, fits, start.law, what)?,
-            false,
-        ),
-    };
+    let vars = p.names.len();
+    let (iterations, profiled) = budget(start, rows.len(), vars, starts.len() + refits)?;
     let (lo, hi) = bounds(&x0, spins, damped);
     let opts = lm::Options {
         max_iterations: iterations,
         ..lm::Options::default()
     };
-    let stopped = |p: &Problem| {
-        if p.stopped() {
-            MultiFitError::Interrupted
-        } else {
-            MultiFitError::NoAnswer
-        }
-    };
-    let found = minimize_each(&p, starts, &lo, &hi, opts).ok_or_else(|| stopped(&p))?;
+    let found = minimize_each(&p, starts, &lo, &hi, opts).ok_or_else(|| no_minimum(&p))?;
     let mut iterations: usize = found.iter().map(|s| s.iterations).sum();
     let mut best = found[0].clone();
-    if spins {
-        // weigh the spins by the scatter of the two kinds, then fit again from there (as a
-        // COR table of mixed kinds is, `multi::fit_cor`) — from each of the best distinct
-        // minima, not only the best: the weights move the minima, and the one that was best
-        // under the first weights need not be under the second
-        // (`spins_do_not_stop_in_a_local_minimum`, tests/analysis/fit_oblique_coverage.rs)
-        let pred = p.predict(&best.x).ok_or(MultiFitError::NoAnswer)?;
-        let (vx, spin) = rms_pair(&pred, rows);
-        if vx > 0.0 && spin > 0.0 {
-            p.spin_weight.set(vx / spin);
-            let again = distinct(&found, REFINED);
-            let refined = minimize_each(&p, again, &lo, &hi, opts).ok_or_else(|| stopped(&p))?;
-            iterations += refined.iter().map(|s| s.iterations).sum::<usize>();
-            best = refined[0].clone();
-        }
+    if spins && let Some(refined) = refit_weighed(&p, &found, &lo, &hi, opts)? {
+        iterations += refined.iter().map(|s| s.iterations).sum::<usize>();
+        best = refined[0].clone();
     }
     best.iterations = iterations;
     let search = Search {
@@ -296,6 +224,126 @@ pub fn fit_oblique(
         profiled,
     };
     finish(&p, best, &search)
+}
+
+impl<'a> Problem<'a> {
+    /// The fit of `rows` from `start`, each row's normal impact solved once; an error when
+    /// the rows give fewer residuals than there are quantities to fit, or a normal impact
+    /// has no answer.
+    fn new(
+        start: &ObliqueStart,
+        rows: &'a [ObliqueRow],
+        watch: &'a dyn Watch,
+    ) -> Result<Self, MultiFitError> {
+        let spins = rows.iter().all(|r| r.spin_out.is_some());
+        let damped = start.tangential_damping.is_some();
+        let vars = 2 + usize::from(spins) + usize::from(damped);
+        let count = rows.len() * if spins { 2 } else { 1 };
+        if count < vars {
+            return Err(MultiFitError::TooFew {
+                points: count,
+                parameters: vars,
+            });
+        }
+        let normals = rows
+            .iter()
+            .map(|r| NormalAt::new(&start.params, start.law, r.v0, r.angle_deg))
+            .collect::<Result<Vec<_>, _>>()
+            .map_err(|_| MultiFitError::NoAnswer)?;
+        Ok(Problem {
+            rows,
+            normals,
+            radius: start.radius,
+            kappa: (!spins).then_some(start.inertia_factor),
+            damping: damped.then_some(vars - 1),
+            names: (0..vars)
+                .map(|j| {
+                    if damped && j == vars - 1 {
+                        NAMES[3]
+                    } else {
+                        NAMES[j]
+                    }
+                })
+                .collect(),
+            spin_weight: Cell::new(start.radius),
+            watch,
+            runs: Cell::new(0),
+            halted: Cell::new(false),
+        })
+    }
+}
+
+/// Where the search starts, x = (ln μ, ln K_t[, ln κ][, ln c_t]): the start's values, μ the
+/// rows' largest apparent friction when the start names none.
+fn first_point(start: &ObliqueStart, p: &Problem) -> Vec<f64> {
+    let mu0 = start
+        .friction
+        .unwrap_or_else(|| apparent_friction(p.rows, p));
+    let mut x0 = vec![mu0.max(1e-3).ln(), start.tangential_stiffness.ln()];
+    if p.spins() {
+        x0.push(start.inertia_factor.ln());
+    }
+    if let Some(c) = start.tangential_damping {
+        x0.push(c.ln());
+    }
+    x0
+}
+
+/// The iterations each of `fits` starts may take under the work limit, and whether the
+/// intervals can be the profile's: its fits count as starts; where they would pass the
+/// limit, the intervals are the Jacobian's, and a warning says so.
+fn budget(
+    start: &ObliqueStart,
+    rows: usize,
+    vars: usize,
+    fits: usize,
+) -> Result<(usize, bool), MultiFitError> {
+    let run = (rows as u64) * OBLIQUE_COST * work::cost(start.law).min(4);
+    let what = || format!("an oblique fit of {vars} parameters to {rows} rows");
+    let profiles = fits + 2 * vars * profile::FITS_PER_SIDE;
+    Ok(
+        match work::fit_iterations(run, vars, profiles, start.law, what) {
+            Ok(iterations) => (iterations, true),
+            Err(_) => (
+                work::fit_iterations(run, vars, fits, start.law, what)?,
+                false,
+            ),
+        },
+    )
+}
+
+/// Why no minimum came back: the watch stopped the fit, or no start gave an answer.
+fn no_minimum(p: &Problem) -> MultiFitError {
+    if p.stopped() {
+        MultiFitError::Interrupted
+    } else {
+        MultiFitError::NoAnswer
+    }
+}
+
+/// With spins: the spins weighed by the scatter of the two kinds, then fitted again from
+/// there (as a COR table of mixed kinds is, `multi::fit_cor`) — from each of the best
+/// distinct minima of `found`, not only the best: the weights move the minima, and the one
+/// that was best under the first weights need not be under the second
+/// (`spins_do_not_stop_in_a_local_minimum`, tests/analysis/fit_oblique_coverage.rs).
+/// The new minima, best first; none when either kind shows no scatter.
+fn refit_weighed(
+    p: &Problem,
+    found: &[lm::Solution],
+    lo: &[f64],
+    hi: &[f64],
+    opts: lm::Options,
+) -> Result<Option<Vec<lm::Solution>>, MultiFitError> {
+    let pred = p.predict(&found[0].x).ok_or(MultiFitError::NoAnswer)?;
+    let (vx, spin) = rms_pair(&pred, p.rows);
+    if vx > 0.0 && spin > 0.0 {
+        p.spin_weight.set(vx / spin);
+        let again = distinct(found, REFINED);
+        let refined = minimize_each(p, again, lo, hi, opts).ok_or_else(|| no_minimum(p))?;
+        Ok(Some(refined))
+    } else {
+        Ok(None)
+    }
 }
 
 /// The largest apparent friction |Δv_x|/(v_y,in + v_y,out) of the rows: a row that slid

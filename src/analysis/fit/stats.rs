@@ -68,6 +68,25 @@ pub fn uncertainty_by(jac: &DMatrix<f64>, residuals: &[f64], spread: Spread) -> 
     for (j, norm) in norms.iter().enumerate() {
         scaled.column_mut(j).scale_mut(1.0 / norm);
     }
+    let (condition, weakest) = conditioning(&scaled);
+    let cov = covariance(&scaled, &norms, s2);
+    Uncertainty {
+        correlation: correlation(&cov),
+        covariance: cov,
+        t975: match spread {
+            Spread::Kinds(d) => t975(d),
+            _ if stated => Z975,
+            _ => t975(dof),
+        },
+        condition,
+        weakest,
+    }
+}
+
+/// The condition number of the column-scaled Jacobian `scaled` (largest over smallest
+/// singular value), and the variable that dominates its smallest singular direction.
+fn conditioning(scaled: &DMatrix<f64>) -> (f64, usize) {
+    let p = scaled.ncols();
     let svd = scaled.clone().svd(false, true);
     let sv = &svd.singular_values;
     let (imin, smin) =
@@ -85,9 +104,15 @@ pub fn uncertainty_by(jac: &DMatrix<f64>, residuals: &[f64], spread: Spread) -> 
             }
         })
     });
-    // (JᵀJ)⁻¹ = D⁻¹ (SᵀS)⁻¹ D⁻¹ with S the scaled Jacobian. When a direction is not seen by
-    // the data, the variable that dominates it gets an infinite variance and the others the
-    // covariance they have with it held (conditional on it), from the rest of the matrix.
+    (smax / smin, weakest)
+}
+
+/// s² (JᵀJ)⁻¹ from the column-scaled Jacobian `scaled` and its columns' `norms`:
+/// (JᵀJ)⁻¹ = D⁻¹ (SᵀS)⁻¹ D⁻¹ with S the scaled Jacobian. When a direction is not seen by
+/// the data, the variable that dominates it gets an infinite variance and the others the
+/// covariance they have with it held (conditional on it), from the rest of the matrix.
+fn covariance(scaled: &DMatrix<f64>, norms: &[f64], s2: f64) -> DMatrix<f64> {
+    let (n, p) = scaled.shape();
     let mut keep: Vec<usize> = (0..p).collect();
     let mut cov = DMatrix::from_element(p, p, f64::INFINITY);
     while !keep.is_empty() {
@@ -118,6 +143,12 @@ pub fn uncertainty_by(jac: &DMatrix<f64>, residuals: &[f64], spread: Spread) -> 
         });
         keep.remove(worst);
     }
+    cov
+}
+
+/// cov_ij / √(cov_ii cov_jj), clamped to [−1, 1]; 1 on the diagonal, NaN where not finite.
+fn correlation(cov: &DMatrix<f64>) -> DMatrix<f64> {
+    let p = cov.nrows();
     let mut corr = DMatrix::from_element(p, p, f64::NAN);
     for i in 0..p {
         for j in 0..p {
@@ -131,17 +162,7 @@ pub fn uncertainty_by(jac: &DMatrix<f64>, residuals: &[f64], spread: Spread) -> 
             };
         }
     }
-    Uncertainty {
-        covariance: cov,
-        correlation: corr,
-        t975: match spread {
-            Spread::Kinds(d) => t975(d),
-            _ if stated => Z975,
-            _ => t975(dof),
-        },
-        condition: smax / smin,
-        weakest,
-    }
+    corr
 }
 
 /// The 0.975 quantile of Student's t with `dof` degrees of freedom: tabulated up to 10, the

@@ -26,7 +26,40 @@ impl Widget for &InputDialog<'_> {
 }
 
 fn render(input: &Input, s: &Setting, theme: &Theme, area: Rect, buf: &mut Buffer) {
-    let (title, about, label, keys, width): Entry = match input.purpose {
+    let (title, about, label, keys, width) = entry(input.purpose, s);
+    let w = width.min(area.width);
+    // border, label and cursor take the rest of the row: a longer text shows its end
+    let room = (w as usize).saturating_sub(label.chars().count() + 3);
+    let mut lines = vec![
+        Line::styled(about, theme.dim()),
+        Line::from(
+            std::iter::once(Span::styled(label, theme.title()))
+                .chain(with_cursor(input, room, theme))
+                .collect::<Vec<_>>(),
+        ),
+    ];
+    // the reason is wrapped at spaces, never cut mid-word: the dialog grows for it
+    let reason = match &input.error {
+        Some(e) => crate::tui::format::wrap(e, (w as usize).saturating_sub(3)),
+        None => vec![String::new()],
+    };
+    let h = (5 + reason.len() as u16).min(area.height);
+    lines.extend(
+        reason
+            .into_iter()
+            .map(|r| Line::styled(format!(" {r}"), theme.warning())),
+    );
+    lines.push(Line::styled(keys, theme.dim()));
+    let popup = crate::tui::widgets::centred(area, w, h);
+    Clear.render(popup, buf);
+    Paragraph::new(lines)
+        .block(Block::bordered().title(Line::styled(title, theme.title())))
+        .render(popup, buf);
+}
+
+/// What the dialog for `purpose` says, with `s` the values now.
+fn entry(purpose: Purpose, s: &Setting) -> Entry {
+    match purpose {
         Purpose::Value(p) => {
             // four digits, as the readout shows it (issue 51 item 4: "now 1.29908")
             let current = sig_trim(s.get(p), 4);
@@ -84,35 +117,7 @@ fn render(input: &Input, s: &Setting, theme: &Theme, area: Rect, buf: &mut Buffe
             " Enter accepts · Esc cancels",
             60,
         ),
-    };
-    let w = width.min(area.width);
-    // border, label and cursor take the rest of the row: a longer text shows its end
-    let room = (w as usize).saturating_sub(label.chars().count() + 3);
-    let mut lines = vec![
-        Line::styled(about, theme.dim()),
-        Line::from(
-            std::iter::once(Span::styled(label, theme.title()))
-                .chain(with_cursor(input, room, theme))
-                .collect::<Vec<_>>(),
-        ),
-    ];
-    // the reason is wrapped at spaces, never cut mid-word: the dialog grows for it
-    let reason = match &input.error {
-        Some(e) => crate::tui::format::wrap(e, (w as usize).saturating_sub(3)),
-        None => vec![String::new()],
-    };
-    let h = (5 + reason.len() as u16).min(area.height);
-    lines.extend(
-        reason
-            .into_iter()
-            .map(|r| Line::styled(format!(" {r}"), theme.warning())),
-    );
-    lines.push(Line::styled(keys, theme.dim()));
-    let popup = crate::tui::widgets::centred(area, w, h);
-    Clear.render(popup, buf);
-    Paragraph::new(lines)
-        .block(Block::bordered().title(Line::styled(title, theme.title())))
-        .render(popup, buf);
+    }
 }
 
 /// What an entry dialog says: its title, the line about the value, the entry's label, the

@@ -5,19 +5,17 @@
 
 mod draw;
 mod legend;
+mod marks;
 
-use super::marks::marker_place;
 use super::strokes::{Pattern, patterned};
 use crate::figure::look::{dashed, dotted, long_dashed};
 use crate::figure::ticks::{Room, ticks};
 use crate::figure::{Figure, Role, Series, Style as Stroke};
 use crate::tui::theme::Theme;
-use crate::tui::widgets::tags;
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
 use ratatui::style::{Color, Modifier, Style};
 use ratatui::symbols::Marker;
-use ratatui::text::{Line, Span};
 use ratatui::widgets::canvas::{self, Canvas, Context};
 use ratatui::widgets::{Block, Widget};
 
@@ -271,132 +269,5 @@ impl<'a> Plot<'a> {
                 buf[pos].set_symbol(g[pos].symbol()).set_style(style);
             }
         }
-    }
-
-    /// Line tags (a threshold's name, a curve's λ) at the line's last point — right of it, or
-    /// ending left of it at the plot's edge, a row up or down when another tag is there — then
-    /// markers; a marker whose cell another took moves right, so both show.
-    /// Returns the cells the tags and markers took, and the labels that found no room (the
-    /// legend shows those).
-    fn draw_marks(
-        &self,
-        l: &PlotLayout,
-        buf: &mut Buffer,
-    ) -> (Vec<(u16, u16)>, Vec<Line<'static>>) {
-        let cell = |p: Option<(f64, f64)>| Some((l.col(p?.0)?, l.row(p?.1)?));
-        // the markers' own cells: a tag keeps off them, as a marker's glyph stays on its
-        // point (tests/tui/tui_render.rs: `tags_keep_off_the_markers`)
-        let points: Vec<(u16, u16)> = self
-            .figure
-            .series
-            .iter()
-            .filter(|s| matches!(s.style, Stroke::Markers(_)))
-            .flat_map(|s| self.drawn(s))
-            .filter_map(cell)
-            .collect();
-        // every line's cells, and how many lines pass each cell: a tag goes where its own
-        // curve runs apart from the others (one pass over the lines a frame)
-        // (none on a chart without tagged lines: the force charts with a dense measured trace)
-        let any_tag = self
-            .figure
-            .series
-            .iter()
-            .any(|s| s.look.text.is_some() && !matches!(s.style, Stroke::Markers(_)));
-        let lines: Vec<Vec<(u16, u16)>> = self
-            .figure
-            .series
-            .iter()
-            .map(|s| match s.style {
-                Stroke::Markers(_) => Vec::new(),
-                _ if !any_tag => Vec::new(),
-                _ => tags::along(
-                    &self
-                        .drawn(s)
-                        .into_iter()
-                        .filter_map(cell)
-                        .collect::<Vec<_>>(),
-                ),
-            })
-            .collect();
-        let sets: Vec<std::collections::HashSet<(u16, u16)>> =
-            lines.iter().map(|c| c.iter().copied().collect()).collect();
-        let mut passing: std::collections::HashMap<(u16, u16), u16> =
-            std::collections::HashMap::new();
-        for &c in sets.iter().flatten() {
-            *passing.entry(c).or_default() += 1;
-        }
-        let mut tagged: Vec<(u16, u16, u16)> = Vec::new();
-        for (i, s) in self.figure.series.iter().enumerate() {
-            let (Stroke::Solid | Stroke::Dashed | Stroke::Dotted | Stroke::LongDashed, Some(tag)) =
-                (s.style, &s.look.text)
-            else {
-                continue;
-            };
-            let w = tag.chars().count() as u16;
-            let taken = tags::Taken {
-                tags: &tagged,
-                points: &points,
-                passing: &passing,
-            };
-            let own = tags::Curve {
-                cells: &lines[i],
-                set: &sets[i],
-            };
-            let Some((x, y)) = tags::place(l.plot, &own, w, buf, &taken) else {
-                // no room on the curve: the legend names it (its key and glyph)
-                continue;
-            };
-            let room = usize::from(l.plot.right() - x);
-            let style = Style::default().fg(self.color(s));
-            buf.set_stringn(x, y, tag, room, style);
-            tagged.push((y, x, x + w));
-        }
-        // every cell a tag or a marker's text took: nothing later writes over them, and the
-        // legend keeps off them (tests/tui/tui_render.rs:
-        // `value_labels_show_whole_beside_legends_and_pins`)
-        let mut taken: Vec<(u16, u16)> = tagged
-            .iter()
-            .flat_map(|&(y, a, b)| (a..b).map(move |x| (x, y)))
-            .collect();
-        let mut dropped = Vec::new();
-        for s in &self.figure.series {
-            let Stroke::Markers(_) = s.style else {
-                continue;
-            };
-            let text = s.look.text.as_deref().unwrap_or("●");
-            let style = self.theme.series(s.look.tone, s.color);
-            for p in self.drawn(s) {
-                let Some((col, row)) = cell(p) else {
-                    continue;
-                };
-                let bounds = (l.plot.x, l.plot.right(), l.plot.y, l.plot.bottom());
-                // a text keeps off every other marker's glyph too, drawn or still to come:
-                // each glyph stays on its point and each label reads whole
-                // (tests/tui/tui_marks.rs)
-                let blocked: Vec<(u16, u16)> = taken
-                    .iter()
-                    .copied()
-                    .chain(points.iter().copied().filter(|&c| c != (col, row)))
-                    .collect();
-                let pieces = marker_place(text, (col, row), bounds, &blocked);
-                if pieces.len() == 1 && pieces[0].2.chars().count() < text.chars().count() {
-                    // the glyph alone: its label goes to the legend
-                    let mut chars = text.chars();
-                    let glyph = chars.next().map(String::from).unwrap_or_default();
-                    let label = chars.as_str().to_string();
-                    dropped.push(Line::from(vec![
-                        Span::styled(glyph, style),
-                        Span::raw(" "),
-                        Span::raw(label),
-                    ]));
-                }
-                for (x, y, piece) in pieces {
-                    let room = usize::from(l.plot.right() - x);
-                    let (end, _) = buf.set_stringn(x, y, &piece, room, style);
-                    taken.extend((x..end).map(|c| (c, y)));
-                }
-            }
-        }
-        (taken, dropped)
     }
 }

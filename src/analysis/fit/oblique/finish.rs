@@ -107,49 +107,11 @@ pub(super) fn finish(
     let mut warnings = Vec::new();
     let ci95 = intervals(p, &sol, &u, b, &mut warnings)?;
     let no_scatter = no_scatter(&sol);
-    let fitted: Vec<Estimate> = (0..vars)
-        .map(|j| {
-            let s = sol.x[j].exp() * u.covariance[(j, j)].sqrt();
-            Estimate {
-                name: p.names[j],
-                unit: match p.names[j] {
-                    "tangential_stiffness" => "N/m",
-                    "tangential_damping" => "kg/s",
-                    _ => "",
-                },
-                value: sol.x[j].exp(),
-                // a quantity the data do not see keeps its infinite variance (not pinned)
-                std_error: if no_scatter && s.is_finite() {
-                    f64::NAN
-                } else {
-                    s
-                },
-                ci95: ci95[j],
-            }
-        })
-        .collect();
-    let on_bound: Vec<&'static str> = (0..vars)
-        .filter(|&j| verdict::on_bound(sol.x[j], b.lo[j], b.hi[j]))
-        .map(|j| p.names[j])
-        .collect();
-    // residuals all zero: judged as an exact solve, on what the data see (`verdict::pinned`)
-    let judged_dof = if no_scatter { 0 } else { dof };
-    let not_pinned: Vec<&'static str> = fitted
-        .iter()
-        .filter(|e| !verdict::pinned(e, judged_dof, on_bound.contains(&e.name)))
-        .map(|e| e.name)
-        .collect();
+    let fitted = estimates(p, &sol, &u, &ci95, no_scatter);
+    let (on_bound, not_pinned) = unpinned(p, &sol, b, &fitted, no_scatter);
     let pred = p.predict(&sol.x).ok_or(MultiFitError::NoAnswer)?;
     let (rms_vx, rms_spin) = rms_pair(&pred, p.rows);
-    let rms_vy = rms(p.rows.iter().zip(&p.normals).map(|(q, n)| {
-        let theta = q.angle_deg.to_radians();
-        let vy = if q.angle_deg == 90.0 {
-            q.v0
-        } else {
-            q.v0 * theta.sin()
-        };
-        n.normal().cor * vy - q.vy_out
-    }));
+    let rms_vy = normal_misses(p);
     let hint = "add rows that slide and rows that grip";
     if no_scatter {
         warnings.insert(0, verdict::NO_SCATTER.into());
@@ -158,14 +120,7 @@ pub(super) fn finish(
     if !sol.converged {
         warnings.push(verdict::not_converged(sol.iterations));
     }
-    let vy_scale = rms(p.rows.iter().map(|q| q.vy_out));
-    if rms_vy > 0.05 * vy_scale {
-        warnings.push(format!(
-            "the normal model misses vy_out by {:.1} % RMS: μ and K_t cannot correct that; fit \
-             the normal ball first (fit --cor-table)",
-            100.0 * rms_vy / vy_scale
-        ));
-    }
+    warnings.extend(normal_warning(p, rms_vy));
     let identified = sol.converged && not_pinned.is_empty();
     let correlation = (0..vars)
         .map(|i| (0..vars).map(|j| u.correlation[(i, j)]).collect())
@@ -188,5 +143,88 @@ pub(super) fn finish(
         not_pinned,
         on_bound,
         no_scatter,
+    })
+}
+
+/// The fitted quantities that ran to the bound of their search, and those the data do not
+/// pin (`verdict::pinned`).
+fn unpinned(
+    p: &Problem,
+    sol: &lm::Solution,
+    b: &Search,
+    fitted: &[Estimate],
+    no_scatter: bool,
+) -> (Vec<&'static str>, Vec<&'static str>) {
+    let vars = sol.x.len();
+    let dof = sol.residuals.len().saturating_sub(vars);
+    let on_bound: Vec<&'static str> = (0..vars)
+        .filter(|&j| verdict::on_bound(sol.x[j], b.lo[j], b.hi[j]))
+        .map(|j| p.names[j])
+        .collect();
+    // residuals all zero: judged as an exact solve, on what the data see (`verdict::pinned`)
+    let judged_dof = if no_scatter { 0 } else { dof };
+    let not_pinned: Vec<&'static str> = fitted
+        .iter()
+        .filter(|e| !verdict::pinned(e, judged_dof, on_bound.contains(&e.name)))
+        .map(|e| e.name)
+        .collect();
+    (on_bound, not_pinned)
+}
+
+/// μ, K_t (κ, c_t) at `sol` with their standard errors (by the delta method, s_p = p s_θ)
+/// and the intervals `ci95`; with `no_scatter`, no standard error.
+fn estimates(
+    p: &Problem,
+    sol: &lm::Solution,
+    u: &Uncertainty,
+    ci95: &[[f64; 2]],
+    no_scatter: bool,
+) -> Vec<Estimate> {
+    (0..sol.x.len())
+        .map(|j| {
+            let s = sol.x[j].exp() * u.covariance[(j, j)].sqrt();
+            Estimate {
+                name: p.names[j],
+                unit: match p.names[j] {
+                    "tangential_stiffness" => "N/m",
+                    "tangential_damping" => "kg/s",
+                    _ => "",
+                },
+                value: sol.x[j].exp(),
+                // a quantity the data do not see keeps its infinite variance (not pinned)
+                std_error: if no_scatter && s.is_finite() {
+                    f64::NAN
+                } else {
+                    s
+                },
+                ci95: ci95[j],
+            }
+        })
+        .collect()
+}
+
+/// RMS of the normal model's v_y,out − the data's (m/s), each row's from its normal impact.
+fn normal_misses(p: &Problem) -> f64 {
+    rms(p.rows.iter().zip(&p.normals).map(|(q, n)| {
+        let theta = q.angle_deg.to_radians();
+        let vy = if q.angle_deg == 90.0 {
+            q.v0
+        } else {
+            q.v0 * theta.sin()
+        };
+        n.normal().cor * vy - q.vy_out
+    }))
+}
+
+/// The warning that the normal model misses v_y,out by more than 5 % RMS (`rms_vy`): not a
+/// thing μ and K_t can correct.
+fn normal_warning(p: &Problem, rms_vy: f64) -> Option<String> {
+    let vy_scale = rms(p.rows.iter().map(|q| q.vy_out));
+    (rms_vy > 0.05 * vy_scale).then(|| {
+        format!(
+            "the normal model misses vy_out by {:.1} % RMS: μ and K_t cannot correct that; fit \
+             the normal ball first (fit --cor-table)",
+            100.0 * rms_vy / vy_scale
+        )
     })
 }

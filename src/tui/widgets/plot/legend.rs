@@ -71,11 +71,7 @@ impl Plot<'_> {
         };
         let kept = p.y - l.inner.y;
         if kept > 0 {
-            // as many entries as the rows kept hold, should the marks' texts have moved
-            let lines = above(&legend, p.width, kept).unwrap_or_else(|| legend(false));
-            for (i, line) in lines.iter().take(usize::from(kept)).enumerate() {
-                buf.set_line(p.x, l.inner.y + i as u16, line, p.width);
-            }
+            draw_in_rows_kept(l, &legend, kept, buf);
             return 0;
         }
         // bottom legends keep clear of the lowest row, where curves often run along zero
@@ -104,6 +100,34 @@ impl Plot<'_> {
         };
         let width = lines.iter().map(Line::width).max().unwrap_or(0) as u16;
         let h = lines.len() as u16;
+        let (left, r) = self.quietest_corner(p, (width, h), labels, buf);
+        // every corner hides some of the data: the legend goes outside the plot, on the
+        // frame's bottom border, else in rows above the plot (issue 51 item 6: at 80 × 24
+        // "━ model" hid the force–time curve's rise; tests/tui/tui_legend.rs)
+        let drawn = r.positions().filter(|&q| buf[q].symbol() != " ").count();
+        if drawn > 0 {
+            if on_frame(buf) {
+                return 0;
+            }
+            let rows = rows_above();
+            if rows > 0 {
+                return rows;
+            }
+        }
+        draw_in_box(&lines, (left, r), width, buf);
+        0
+    }
+
+    /// Where a legend of `width` columns and `h` rows goes in plot `p`: the corner where it
+    /// covers no label and the fewest drawn cells; the figure's on a tie. Whether that is on
+    /// the left, and the legend's box (a column of margin either side).
+    fn quietest_corner(
+        &self,
+        p: Rect,
+        (width, h): (u16, u16),
+        labels: &[(u16, u16)],
+        buf: &Buffer,
+    ) -> (bool, Rect) {
         let place = |corner: Corner| {
             let top = matches!(corner, Corner::TopLeft | Corner::TopRight);
             let left = matches!(corner, Corner::TopLeft | Corner::BottomLeft);
@@ -111,8 +135,6 @@ impl Plot<'_> {
             let y0 = if top { p.y } else { p.bottom() - 1 - h };
             (left, Rect::new(x - 1, y0, width + 2, h))
         };
-        // the corner where the legend covers no label and the fewest drawn cells; the
-        // figure's on a tie
         let covered = |r: Rect| {
             let over_labels = labels.iter().filter(|&&(x, y)| r.contains((x, y).into()));
             1000 * over_labels.count() + r.positions().filter(|&q| buf[q].symbol() != " ").count()
@@ -128,28 +150,7 @@ impl Plot<'_> {
         .into_iter()
         .min_by_key(|&c| covered(place(c).1))
         .unwrap_or(preferred);
-        let (left, r) = place(corner);
-        // every corner hides some of the data: the legend goes outside the plot, on the
-        // frame's bottom border, else in rows above the plot (issue 51 item 6: at 80 × 24
-        // "━ model" hid the force–time curve's rise; tests/tui/tui_legend.rs)
-        let drawn = r.positions().filter(|&q| buf[q].symbol() != " ").count();
-        if drawn > 0 {
-            if on_frame(buf) {
-                return 0;
-            }
-            let rows = rows_above();
-            if rows > 0 {
-                return rows;
-            }
-        }
-        let x = r.x + 1;
-        for (i, line) in lines.iter().enumerate() {
-            let y = r.y + i as u16;
-            buf.set_string(r.x, y, " ".repeat(usize::from(r.width)), Style::default());
-            let w = line.width() as u16;
-            buf.set_line(if left { x } else { x + width - w }, y, line, w);
-        }
-        0
+        place(corner)
     }
 
     /// The legend on one line in the frame's bottom border, right-aligned (left of the x
@@ -185,6 +186,33 @@ impl Plot<'_> {
         };
         buf.set_line(x, y, &one, w);
         true
+    }
+}
+
+/// The legend in the `kept` rows above the plot: as many entries as they hold, should the
+/// marks' texts have moved.
+fn draw_in_rows_kept(
+    l: &PlotLayout,
+    legend: &dyn Fn(bool) -> Vec<Line<'static>>,
+    kept: u16,
+    buf: &mut Buffer,
+) {
+    let p = l.plot;
+    let lines = above(legend, p.width, kept).unwrap_or_else(|| legend(false));
+    for (i, line) in lines.iter().take(usize::from(kept)).enumerate() {
+        buf.set_line(p.x, l.inner.y + i as u16, line, p.width);
+    }
+}
+
+/// The legend's `lines` in box `r` (cleared first), aligned to its side (`left`, else
+/// right-aligned within the legend's `width`).
+fn draw_in_box(lines: &[Line<'static>], (left, r): (bool, Rect), width: u16, buf: &mut Buffer) {
+    let x = r.x + 1;
+    for (i, line) in lines.iter().enumerate() {
+        let y = r.y + i as u16;
+        buf.set_string(r.x, y, " ".repeat(usize::from(r.width)), Style::default());
+        let w = line.width() as u16;
+        buf.set_line(if left { x } else { x + width - w }, y, line, w);
     }
 }
 
