@@ -226,14 +226,15 @@ fn messages_have_their_own_line_and_wrap() {
         );
         let rows = screen_text(&draw(&app, w, h));
         let s = bouncelab::tui::ui::screen(&app, ratatui::layout::Rect::new(0, 0, w, h)).unwrap();
-        // the compact readout's screens name the surface in the header where it fits
-        // (tui_surface.rs)
-        let on = if s.side_panel || w < 80 {
-            ""
+        // the compact readout's screens name the surface in the header, in shorter words
+        // where the whole line does not fit (tui_surface.rs)
+        let title = if s.side_panel {
+            " bouncelab · superball · linear law · view 1/4 impact"
+        } else if w >= 80 {
+            " bouncelab · superball on steel-plate · linear law · view 1/4 impact"
         } else {
-            " on steel-plate"
+            " bouncelab · superball on steel-plate · linear · 1/4 impact"
         };
-        let title = format!(" bouncelab · superball{on} · linear law · view 1/4 impact");
         assert_eq!(rows[0].trim_end(), title, "{w}×{h}");
         let shown: Vec<&str> = (s.message.y..s.message.bottom())
             .map(|y| rows[usize::from(y)].trim())

@@ -309,8 +309,10 @@ fn the_compact_screen_names_the_surface_in_its_header() {
         let s = buffer_text(draw(app, w, h).backend().buffer());
         (s.lines().next().unwrap().to_string(), s)
     };
-    let (first, s) = header(&app, 80, 24);
-    assert!(first.contains("tennis on steel-plate ·"), "{s}");
+    for (w, h) in [(80, 24), (60, 20)] {
+        let (first, s) = header(&app, w, h);
+        assert!(first.contains("tennis on steel-plate ·"), "{w}×{h}:\n{s}");
+    }
     pick(&mut app, dir.path(), "clay");
     // impact, sweeps and map (the models view has its table beside the charts, no readout)
     for view in 0..4 {
@@ -320,6 +322,28 @@ fn the_compact_screen_names_the_surface_in_its_header() {
         }
         press(&mut app, &[KeyCode::Tab]);
     }
+    // at 60×20 too, the smallest screen the explorer promises: the header shortens its
+    // other words before it leaves the surface out (it had no room for " on clay" and dropped it)
+    for view in 0..4 {
+        let (first, s) = header(&app, 60, 20);
+        if app.view() != View::Models {
+            assert!(
+                first.contains("tennis on clay ·"),
+                "60×20 view {view}:\n{s}"
+            );
+        }
+        press(&mut app, &[KeyCode::Tab]);
+    }
+    for key in ['i', 'i', 'h', 'h', 'd'] {
+        press(&mut app, &[KeyCode::Char(key)]);
+        let (first, s) = header(&app, 60, 20);
+        assert!(
+            first.contains("tennis on clay ·"),
+            "60×20 {:?}:\n{s}",
+            app.view()
+        );
+    }
+    press(&mut app, &[KeyCode::Char('d')]);
     let (first, s) = header(&app, 120, 40);
     assert!(!first.contains(" on clay"), "{s}");
     // the side panel's own line, not the pick's message

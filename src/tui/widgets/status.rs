@@ -69,25 +69,44 @@ pub fn surface_words(setting: &crate::tui::setting::Setting) -> String {
     }
 }
 
+impl Header<'_> {
+    /// The header's words at `width` columns: the whole line; where it does not fit and the
+    /// surface is to be named, the law's and the view's words shortened ("linear", "1/4
+    /// impact"), then the program's name left out, so the surface stays named at 60 columns
+    /// (tui_surface::the_compact_screen_names_the_surface_in_its_header); with none of these
+    /// fitting, the line without the surface. `(program name shown, the rest)`.
+    fn words(&self, width: usize) -> (bool, String) {
+        let (law, view) = (self.law, self.view.title());
+        let whole = |on: &str| format!("· {}{on} · {law} law · view {view}", self.ball);
+        let fits = |brand: bool, rest: &str| {
+            usize::from(brand) * BRAND.len() + rest.chars().count() <= width
+        };
+        if let Some(s) = self.surface {
+            let on = format!(" on {s}");
+            let short = format!("· {}{on} · {law} · {view}", self.ball);
+            let bare = format!(" {}{on} · {law} · {view}", self.ball);
+            for (brand, rest) in [(true, whole(&on)), (true, short), (false, bare)] {
+                if fits(brand, &rest) {
+                    return (brand, rest);
+                }
+            }
+        }
+        (true, whole(""))
+    }
+}
+
+/// The program's name at the head of the header.
+const BRAND: &str = " bouncelab ";
+
 impl Widget for &Header<'_> {
     fn render(self, area: Rect, buf: &mut Buffer) {
-        let theme = self.theme;
-        let rest = |on: &str| {
-            format!(
-                "· {}{on} · {} law · view {}",
-                self.ball,
-                self.law,
-                self.view.title()
-            )
-        };
-        // the surface only where the whole line fits (60 columns would cut the view's name)
-        let with = rest(&self.surface.map(|s| format!(" on {s}")).unwrap_or_default());
-        let fits = " bouncelab ".len() + with.chars().count() <= usize::from(area.width);
-        let left = Line::from(vec![
-            Span::styled(" bouncelab ", theme.title()),
-            Span::raw(if fits { with } else { rest("") }),
-        ]);
-        left.render(area, buf);
+        let (brand, rest) = self.words(usize::from(area.width));
+        let mut spans = Vec::with_capacity(2);
+        if brand {
+            spans.push(Span::styled(BRAND, self.theme.title()));
+        }
+        spans.push(Span::raw(rest));
+        Line::from(spans).render(area, buf);
     }
 }
 
