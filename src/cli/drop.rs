@@ -260,7 +260,7 @@ pub fn run(a: &DropArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     Ok(())
 }
 
-/// The JSON document ([`Report`]), with the ball, its surface and conditions.
+/// The JSON document ([`super::drop_json::Report`]), with the ball, its surface and conditions.
 fn json(out: &mut dyn Write, d: Dropped) -> anyhow::Result<()> {
     let judged_at = d.asked.impact.and_then(|s| s.release_height(d.radius));
     let mut r = report(&d.run, &d.bands, d.verdict.as_ref(), judged_at);
