@@ -187,8 +187,8 @@ fn dispatch(cli: Cli, out: &mut dyn Write) -> anyhow::Result<()> {
     explorer_options_refused(&cli.explore, cli.measured.as_deref())?;
     match command {
         Command::Run(mut a) => {
-            if top.is_given() && a.normalized {
-                anyhow::bail!("--normalized cannot be used with --preset or --config");
+            if a.normalized {
+                no_ball_choice(&top, NORMALIZED_WITH_CHOICE)?;
             }
             merge(top, &mut a.ball)?;
             run::run(&a, out)
@@ -199,7 +199,7 @@ fn dispatch(cli: Cli, out: &mut dyn Write) -> anyhow::Result<()> {
         }
         Command::Sweep(s) => {
             no_ball_choice(
-                top,
+                &top,
                 "sweep zeta runs the normalized ball: --preset and --config do not apply",
             )?;
             sweep::run(&s, out)
@@ -217,7 +217,7 @@ fn dispatch(cli: Cli, out: &mut dyn Write) -> anyhow::Result<()> {
         Command::Peers(a) => with_ball(top, a, |a| &mut a.ball, peers::run, out),
         Command::Reproduce(a) => {
             no_ball_choice(
-                top,
+                &top,
                 "reproduce runs the paper's three embedded balls: --preset and --config do \
                  not apply",
             )?;
@@ -238,14 +238,14 @@ fn dispatch(cli: Cli, out: &mut dyn Write) -> anyhow::Result<()> {
         Command::Static(a) => with_ball(top, a, |a| &mut a.ball, statics::run, out),
         Command::Standards(a) => {
             no_ball_choice(
-                top,
+                &top,
                 "standards lists the standards: --preset and --config do not apply",
             )?;
             standards::run(&a, out)
         }
         Command::Surfaces(a) => {
             no_ball_choice(
-                top,
+                &top,
                 "surfaces lists the surfaces: --preset and --config do not apply",
             )?;
             surface::list(&a, out)
@@ -273,8 +273,11 @@ fn explorer_options_refused(
     Ok(())
 }
 
+/// `--normalized` is a ball of its own (m = K_p = v0 = 1): no preset before the subcommand.
+const NORMALIZED_WITH_CHOICE: &str = "--normalized cannot be used with --preset or --config";
+
 /// `--preset`/`--config` before a subcommand that runs no chosen ball: refused with `why`.
-fn no_ball_choice(top: ball::PresetChoice, why: &'static str) -> anyhow::Result<()> {
+fn no_ball_choice(top: &ball::PresetChoice, why: &'static str) -> anyhow::Result<()> {
     match top.is_given() {
         true => Err(anyhow::Error::msg(why)),
         false => Ok(()),
@@ -284,10 +287,10 @@ fn no_ball_choice(top: ball::PresetChoice, why: &'static str) -> anyhow::Result<
 /// `bouncelab --preset P map` means `bouncelab map --preset P`: not with `--normalized`, nor
 /// with a choice after the subcommand too.
 fn merge_map_choice(top: ball::PresetChoice, a: &mut map::MapArgs) -> anyhow::Result<()> {
+    if a.normalized {
+        no_ball_choice(&top, NORMALIZED_WITH_CHOICE)?;
+    }
     if top.is_given() {
-        if a.normalized {
-            anyhow::bail!("--normalized cannot be used with --preset or --config");
-        }
         if a.choice.is_given() {
             anyhow::bail!("--preset/--config given both before and after the subcommand");
         }

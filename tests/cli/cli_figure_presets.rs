@@ -149,3 +149,29 @@ fn repeats_are_refused_where_they_mean_nothing() {
     }
     assert!(!dir.path().join("f.svg").exists(), "nothing written");
 }
+
+/// A preset before a subcommand that runs no chosen ball is refused, each with its reason:
+/// `--normalized` (run, map) is a ball of its own, and sweep zeta, standards and surfaces take
+/// no ball.
+#[test]
+fn a_preset_before_a_subcommand_without_a_ball_is_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = |args: &[&str]| bl_at(dir.path(), args);
+    let normalized = "--normalized cannot be used with --preset or --config";
+    for line in [
+        "--preset golf run --normalized",
+        "--preset golf map --normalized --lambda 0.1:1:3 --zeta 0.1:1:3",
+    ] {
+        assert_bad(&out(&argv(line)), &[normalized]);
+    }
+    for (line, why) in [
+        (
+            "--preset golf sweep zeta",
+            "sweep zeta runs the normalized ball",
+        ),
+        ("--preset golf standards", "standards lists the standards"),
+        ("--preset golf surfaces", "surfaces lists the surfaces"),
+    ] {
+        assert_bad(&out(&argv(line)), &[why]);
+    }
+}
