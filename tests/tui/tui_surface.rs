@@ -323,7 +323,7 @@ fn the_compact_screen_names_the_surface_in_its_header() {
         press(&mut app, &[KeyCode::Tab]);
     }
     // at 60×20 too, the smallest screen the explorer promises: the header shortens its
-    // other words before it leaves the surface out (it had no room for " on clay" and dropped it)
+    // other words before it leaves the surface out
     for view in 0..4 {
         let (first, s) = header(&app, 60, 20);
         if app.view() != View::Models {
