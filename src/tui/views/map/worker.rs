@@ -1,9 +1,8 @@
-//! The map view's job on the explorer's one worker type ([`crate::tui::worker::Worker`],
-//! issue 55 item 1: it had a thread and serving loop of its own): the worker refines the map
-//! it was handed pass by pass (each pass on all cores, through [`Map::refine_until`]) and
-//! sends every finished pass back, so the screen grows finer while the keys stay free. A job
-//! stops inside its pass once `update` sets its cancel flag (the ball or the view changed),
-//! and between passes once a newer job is asked for; the thread then takes the next.
+//! The map view's job on the explorer's one worker type ([`crate::tui::worker::Worker`]): the
+//! worker refines the map it was handed pass by pass (each pass on all cores, through
+//! [`Map::refine_until`]) and sends every finished pass back, so the screen grows finer while the
+//! keys stay free. A job stops inside its pass once `update` sets its cancel flag (the ball or the
+//! view changed), and between passes once a newer job is asked for; the thread then takes the next.
 
 use crate::map::Map;
 use crate::tui::views::map::state::MapJob;

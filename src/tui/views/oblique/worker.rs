@@ -1,8 +1,7 @@
 //! The oblique view's (angle, μ) map as a job of the explorer's one worker type
-//! ([`crate::tui::worker::Worker`], issue 55 item 1: it had a thread and serving loop of its
-//! own): the worker computes the map it was handed (all cores) and sends it back; a job whose
-//! cancel flag `update` set (the ball, spin or view changed) stops between angles and sends
-//! nothing, and of a burst of jobs only the newest is computed.
+//! ([`crate::tui::worker::Worker`]): the worker computes the map it was handed (all cores) and
+//! sends it back; a job whose cancel flag `update` set (the ball, spin or view changed) stops
+//! between angles and sends nothing, and of a burst of jobs only the newest is computed.
 
 use crate::tui::views::oblique::map::{self, MapJob, ObliqueMap};
 use crate::tui::worker::{Job, Worker};
