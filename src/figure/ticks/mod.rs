@@ -1,7 +1,8 @@
 //! Axis ticks, for the SVG picture and the terminal alike. Linear axes get "nice" steps
 //! (1, 2, 2.5, 5 × 10^k) with every label printed to the same number of decimals; log axes are
 //! drawn as log10 of the data on a linear axis, so the ticks sit exactly on the decades
-//! (0.01, 0.1, 1, 10, 100), with light grid lines at 2…9 × 10^k in the picture.
+//! (0.01, 0.1, 1, 10, 100), with light grid lines at 2…9 × 10^k in the picture; the
+//! explorer's map labels its log axes with 1-2-5 or 1-3 × 10^k where they fit ([`log`]).
 //!
 //! Two kinds of room: a picture ([`Room::Picture`]) has space for about six intervals and
 //! pads a fitted range with headroom; a terminal chart ([`Room::Labels`]) fits as many round
@@ -11,6 +12,9 @@
 use super::{Axis, Figure};
 use plotters::coord::ranged1d::{DefaultFormatting, KeyPointHint, Ranged};
 use std::ops::Range;
+
+pub mod log;
+use log::log_ticks;
 
 /// Ticks of one axis, in drawing coordinates (log10 of the value on a log axis).
 #[derive(Debug, Clone, PartialEq)]
@@ -95,31 +99,6 @@ fn linear_ticks(axis: &Axis, extent: Option<(f64, f64)>) -> Ticks {
         major,
         minor,
         decimals: Some(decimals_for(step)),
-    }
-}
-
-/// Decade ticks of a log axis, in log10 units.
-fn log_ticks(axis: &Axis, extent: Option<(f64, f64)>) -> Ticks {
-    let (a, b) = axis.range.or(extent).unwrap_or((1.0, 10.0));
-    let (mut lo, mut hi) = (a.max(f64::MIN_POSITIVE).log10(), b.max(a).log10());
-    if axis.range.is_none() {
-        (lo, hi) = (lo.floor(), hi.ceil());
-    }
-    if hi - lo < 1e-9 {
-        (lo, hi) = (lo - 1.0, hi + 1.0);
-    }
-    let (first, last) = ((lo - 1e-9).ceil() as i32, (hi + 1e-9).floor() as i32);
-    let major = (first..=last).map(f64::from).collect();
-    let minor = ((lo.floor() as i32)..=(hi.ceil() as i32))
-        .flat_map(|d| (2..10).map(move |k| (f64::from(k)).log10() + f64::from(d)))
-        .filter(|&v| v > lo && v < hi)
-        .collect();
-    Ticks {
-        lo,
-        hi,
-        major,
-        minor,
-        decimals: None,
     }
 }
 

@@ -111,3 +111,26 @@ fn terminal_decades() {
     assert_eq!(t.major.len(), 5);
     assert_eq!([t.lo, t.hi], [-2.0, 2.0]);
 }
+
+#[test]
+fn log_labels_are_the_richest_set_that_fits() {
+    let close = |a: &[f64], b: &[f64]| {
+        a.len() == b.len() && a.iter().zip(b).all(|(x, y)| (x - y).abs() <= 1e-12 * y)
+    };
+    let all = log::labels(0.01, 100.0, |_| true);
+    assert_eq!(all.len(), 13, "1, 2, 5 × 10^k from 0.01 to 100: {all:?}");
+    let nine = log::labels(0.01, 100.0, |v| v.len() <= 9);
+    let want = [0.01, 0.03, 0.1, 0.3, 1.0, 3.0, 10.0, 30.0, 100.0];
+    assert!(close(&nine, &want), "{nine:?}");
+    let decades = log::labels(0.01, 100.0, |_| false);
+    assert!(
+        close(&decades, &[0.01, 0.1, 1.0, 10.0, 100.0]),
+        "{decades:?}"
+    );
+    // the ends are taken with their slack, and a range inside one decade has no decade
+    assert!(close(
+        &log::marks(0.2 * (1.0 + 1e-12), 5.0, &[1.0, 2.0, 5.0]),
+        &[0.2, 0.5, 1.0, 2.0, 5.0]
+    ));
+    assert!(log::labels(3.0, 4.0, |_| false).is_empty());
+}

@@ -4,7 +4,7 @@
 //! colour bar with its numbers on the right, the marks (cursor, iso-COR line, feasible
 //! outline, other presets by their number) and the line of values under the cursor.
 
-use crate::figure::ticks::{Ticks, fitted};
+use crate::figure::ticks::{Ticks, fitted, log};
 use crate::map::{Axis, Map};
 use crate::text::sig_trim;
 use crate::tui::format::value as value_on_screen;
@@ -196,28 +196,16 @@ impl MapPanel<'_> {
     }
 }
 
-/// Tick values of a log axis: 1, 2, 5 × 10^k (or 1 × 10^k alone, or 1, 3 × 10^k) inside it,
-/// the richest set whose neighbours lie `room` slots apart on `slots`.
+/// The labelled values of a log axis with the slot each stands at (of `slots` along the
+/// axis): the map's labels are `figure::ticks::log::labels`, neighbours `room` slots apart.
 fn log_ticks(a: &Axis, slots: usize, room: usize) -> Vec<(usize, f64)> {
-    let sets: [&[f64]; 3] = [&[1.0, 2.0, 5.0], &[1.0, 3.0], &[1.0]];
-    let (k0, k1) = (a.from.log10().floor() as i32, a.to.log10().ceil() as i32);
-    for set in sets {
-        let mut out = Vec::new();
-        for k in k0..=k1 {
-            for &m in set {
-                let v = m * 10f64.powi(k);
-                if v >= a.from * (1.0 - 1e-9) && v <= a.to * (1.0 + 1e-9) {
-                    let slot = (a.index_of(v) / (a.n.max(2) - 1) as f64 * (slots - 1) as f64)
-                        .round() as usize;
-                    out.push((slot, v));
-                }
-            }
-        }
-        if out.windows(2).all(|w| w[1].0 >= w[0].0 + room) || set.len() == 1 {
-            return out;
-        }
-    }
-    Vec::new()
+    let slot =
+        |v: f64| (a.index_of(v) / (a.n.max(2) - 1) as f64 * (slots - 1) as f64).round() as usize;
+    let apart = |values: &[f64]| values.windows(2).all(|w| slot(w[1]) >= slot(w[0]) + room);
+    log::labels(a.from, a.to, apart)
+        .into_iter()
+        .map(|v| (slot(v), v))
+        .collect()
 }
 
 impl MapPanel<'_> {
