@@ -38,10 +38,6 @@ fn type_in(app: &mut App, field: Field, text: &str) -> String {
     app.message().map(|m| m.text.clone()).unwrap_or_default()
 }
 
-fn close(a: f64, b: f64) -> bool {
-    (a - b).abs() <= 1e-12 * a.abs().max(b.abs()).max(1.0)
-}
-
 /// The tennis ball with μ 0.45 and K_t 5e4 typed in the form (each entry closed).
 fn tennis_at_mu_and_k_t() -> App {
     let mut app = tennis();
