@@ -16,6 +16,8 @@
 //! Each page runs in one scratch folder, in page order (a later command may read an earlier
 //! one's file), holding `lot7.csv` (tests/golden/batch-lot7.csv). A command continues on the
 //! next line after a trailing `\`. The exit code is not compared (cli_golden.rs holds them).
+//! A `$ ` line anywhere else (an indented block, or indented inside a fence) is refused: such
+//! an example would not be run, and would go stale unseen.
 #![cfg(unix)]
 
 use std::path::{Path, PathBuf};
@@ -59,6 +61,21 @@ fn examples(lines: &[&str]) -> Vec<Example> {
             });
         }
         i += 1;
+    }
+    out
+}
+
+/// The lines (1-based) showing a `$ ` command that `examples` does not run: one in an
+/// indented block, or indented inside a fence. Such an example would go stale unchecked.
+fn unchecked_commands(lines: &[&str]) -> Vec<usize> {
+    let mut fenced = false;
+    let mut out = Vec::new();
+    for (i, line) in lines.iter().enumerate() {
+        if line.trim_start().starts_with("```") {
+            fenced = !fenced;
+        } else if line.trim_start().starts_with("$ ") && !(fenced && line.starts_with("$ ")) {
+            out.push(i + 1);
+        }
     }
     out
 }
@@ -217,6 +234,28 @@ fn every_docs_example_prints_what_the_binary_prints() {
 }
 
 #[test]
+fn every_shown_command_is_in_a_checked_block() {
+    let unchecked: Vec<String> = super::speed_figures::doc_pages()
+        .iter()
+        .flat_map(|page| {
+            let text = std::fs::read_to_string(page).unwrap();
+            let name = page.strip_prefix(root()).unwrap().display().to_string();
+            let lines: Vec<&str> = text.lines().collect();
+            unchecked_commands(&lines)
+                .into_iter()
+                .map(move |n| format!("{name}:{n}"))
+                .collect::<Vec<_>>()
+        })
+        .collect();
+    assert!(
+        unchecked.is_empty(),
+        "a `$ ` command outside a fenced block, or indented in one, is not run against the \
+         binary: put it in a ``` block at the line's start ({})",
+        unchecked.join(", ")
+    );
+}
+
+#[test]
 fn the_matching_rules_leave_shown_numbers_checked() {
     assert!(line_matches("COR 0.75 … 0.80", "COR 0.75 … 0.80"));
     assert!(line_matches(r#"{"a":1,…,"c":3}"#, r#"{"a":1,"b":2,"c":3}"#));
@@ -236,4 +275,13 @@ fn the_matching_rules_leave_shown_numbers_checked() {
         ("one two", 3, 4)
     );
     assert_eq!((found[1].from, found[1].to), (6, 6));
+    let indented = [
+        "    $ one",
+        "```",
+        "  $ two",
+        "$ three",
+        "```",
+        "text $ four",
+    ];
+    assert_eq!(unchecked_commands(&indented), [1, 3]);
 }
