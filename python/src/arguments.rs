@@ -46,13 +46,12 @@ pub(crate) fn free_names(free: Option<&Bound<'_, PyAny>>) -> PyResult<Option<Vec
 /// error of an argument it extracts (Python 3.11's notes), which the boundary
 /// (bouncelab/_boundary.py) reads to raise the error again naming the argument and its value.
 pub(crate) fn of_argument<T>(py: Python<'_>, name: &str, result: PyResult<T>) -> PyResult<T> {
-    result.map_err(|e| {
+    result.inspect_err(|e| {
         // before Python 3.11 there is no `add_note`, and the error goes as it is (as PyO3's)
         let note = format!("while processing '{name}'");
         let _ = e
             .value(py)
             .call_method1(pyo3::intern!(py, "add_note"), (note,));
-        e
     })
 }
 
