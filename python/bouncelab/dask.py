@@ -41,6 +41,7 @@ there with the command line's one-line message, as ``bouncelab.monte_carlo`` doe
 from __future__ import annotations
 
 import math
+import numbers
 from typing import Any, Dict, Iterator, List, Mapping, Optional, Tuple, Union
 
 import numpy as np
@@ -322,14 +323,18 @@ def monte_carlo(
         k_r=k_r,
         z_p=z_p,
     )
-    if not isinstance(chunk, int) or chunk < 1:
-        raise ValueError(f"invalid chunk: {chunk!r} (must be a whole number ≥ 1)")
-    for name, value in (("bins", bins), ("cap", cap)):
-        if not isinstance(value, int) or value < 2:
-            raise ValueError(f"invalid {name}: {value!r} (must be a whole number ≥ 2)")
+    for name, value, least in (
+        ("chunk", chunk, 1), ("bins", bins, 2), ("cap", cap, 2), ("exact_below", exact_below, 0)
+    ):
+        if not isinstance(value, numbers.Integral) or isinstance(value, bool):
+            raise TypeError(f"invalid {name}: {value!r} (must be a whole number ≥ {least})")
+        if value < least:
+            raise ValueError(f"invalid {name}: {value!r} (must be a whole number ≥ {least})")
     # every argument, and a chunk's size against the work limit, checked here on the client
-    # before a task leaves
-    _check(**options, start=0, count=min(chunk, samples), check_only=True)
+    # before a task leaves (a `samples` that is no whole number is the check's to name: it
+    # reads samples before count)
+    count = min(chunk, samples) if isinstance(samples, numbers.Integral) else chunk
+    _check(**options, start=0, count=count, check_only=True)
     if samples > MAX_SAMPLES:
         raise ValueError(
             f"invalid samples: {samples} is beyond the most a Dask run takes, {MAX_SAMPLES:.0e} "

@@ -41,6 +41,20 @@ pub(crate) fn free_names(free: Option<&Bound<'_, PyAny>>) -> PyResult<Option<Vec
     .transpose()
 }
 
+/// `result`'s error marked as the argument `name`'s, for an argument the native code reads by
+/// hand (a `PyAny` it converts itself): the note `while processing 'NAME'` PyO3 puts on the
+/// error of an argument it extracts (Python 3.11's notes), which the boundary
+/// (bouncelab/_boundary.py) reads to raise the error again naming the argument and its value.
+pub(crate) fn of_argument<T>(py: Python<'_>, name: &str, result: PyResult<T>) -> PyResult<T> {
+    result.inspect_err(|e| {
+        // before Python 3.11 there is no `add_note`, and the error goes as it is (as PyO3's)
+        let note = format!("while processing '{name}'");
+        let _ = e
+            .value(py)
+            .call_method1(pyo3::intern!(py, "add_note"), (note,));
+    })
+}
+
 /// A contact law by its command-line name: linear, elastic-plastic, hertz.
 pub(crate) fn law(name: &str) -> PyResult<ContactLaw> {
     name.parse::<ContactLaw>().map_err(value_error)

@@ -36,7 +36,8 @@ mod sweeps;
 
 // the helpers every call uses, by the names the modules import them by
 pub(crate) use arguments::{
-    array, floats, free_names, frozen_array, history_samples, interval_columns, law, source,
+    array, floats, free_names, frozen_array, history_samples, interval_columns, law, of_argument,
+    source,
 };
 use impact::Impact;
 pub(crate) use preset_balls::{entry, load_catalog};

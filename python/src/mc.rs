@@ -6,7 +6,7 @@
 //! the merge its numbers, bit for bit.
 
 use crate::arguments::ball::{BallChoice, ball_pyfunction};
-use crate::{array, error};
+use crate::{array, error, of_argument};
 use bouncelab::analysis::mc::{
     Dist, McError, McSpec, McSummary, Samples, Spread, Stats, Varied, parse_correlate, parse_vary,
     summary,
@@ -27,7 +27,7 @@ fn spreads(vary: &Bound<'_, PyAny>) -> PyResult<Vec<Spread>> {
     })?;
     let mut out = Vec::new();
     for (k, v) in dict.iter() {
-        let name: String = k.extract()?;
+        let name: String = of_argument(k.py(), "vary", k.extract())?;
         let what = Varied::parse(&name).ok_or_else(|| error(McError::Unknown(name).into()))?;
         // a bool is an int to Python (`True` would be a spread of 1, 100 %): refused, as is
         // anything that is not a number (tests/test_numbers_typed.py)
@@ -112,11 +112,13 @@ fn pairs(c: &Bound<'_, PyAny>) -> PyResult<Vec<(Varied, Varied, f64)>> {
             })?;
             let mut items = Vec::new();
             for (k, v) in dict.iter() {
-                items.push(format!(
-                    "{}={}",
-                    k.extract::<String>()?,
-                    v.extract::<f64>()?
-                ));
+                let (k, v) = of_argument(
+                    c.py(),
+                    "correlate",
+                    k.extract::<String>()
+                        .and_then(|k| Ok((k, v.extract::<f64>()?))),
+                )?;
+                items.push(format!("{k}={v}"));
             }
             items.join(",")
         }

@@ -243,9 +243,12 @@ flight_pyfunction! {
         let np = py.import("numpy")?;
         let b = np.call_method1("broadcast_arrays", (height, speed, elevation, spin))?;
         let shape = b.get_item(0)?.getattr("shape")?;
-        let cols: Vec<Vec<f64>> = (0..4)
-            .map(|k| {
-                let a = np.call_method1("asarray", (b.get_item(k)?, "float64"))?;
+        let cols: Vec<Vec<f64>> = ["height", "speed", "elevation", "spin"]
+            .iter()
+            .enumerate()
+            .map(|(k, name)| {
+                let a = np.call_method1("asarray", (b.get_item(k)?, "float64"));
+                let a = crate::of_argument(py, name, a)?;
                 a.call_method0("ravel")?.call_method0("tolist")?.extract()
             })
             .collect::<PyResult<_>>()?;

@@ -5,7 +5,7 @@
 //! and the `surface` object every answer carries, the command line's JSON `surface`
 //! (src/cli/surface.rs).
 
-use crate::value_error;
+use crate::{of_argument, value_error};
 use bouncelab::api::{SurfaceError, SurfaceUsed};
 use bouncelab::catalog::surfaces as catalog;
 use bouncelab::target::surface::SurfaceMechanics;
@@ -119,7 +119,7 @@ fn explicit(arg: Option<&Bound<'_, PyAny>>) -> PyResult<Explicit> {
     };
     let mut x = Explicit::default();
     for (k, v) in d.iter() {
-        let k: String = k.extract()?;
+        let k: String = of_argument(d.py(), "surface", k.extract())?;
         let at = keys().position(|n| n == k).ok_or_else(|| {
             let all: Vec<&str> = keys().collect();
             value_error(format!(
@@ -128,7 +128,7 @@ fn explicit(arg: Option<&Bound<'_, PyAny>>) -> PyResult<Explicit> {
             ))
         })?;
         if at == 0 {
-            x.name = Some(v.extract()?);
+            x.name = Some(of_argument(d.py(), "surface", v.extract())?);
             continue;
         }
         let n: f64 = v

@@ -5,7 +5,7 @@
 //! those keyword arguments through [`ball_pyfunction!`], so no function's names, defaults or
 //! order of resolution drift from another's.
 
-use crate::{catalog_cache, entry, error, law, load_catalog, source, value_error};
+use crate::{catalog_cache, entry, error, law, load_catalog, of_argument, source, value_error};
 use bouncelab::Ball;
 use bouncelab::api::{ConditionsSpec, Overrides};
 use pyo3::prelude::*;
@@ -160,6 +160,7 @@ pub(crate) fn conditions(
     temperature: Option<f64>,
     inflated_at: Option<f64>,
 ) -> PyResult<ConditionsSpec> {
+    // `field` the command line's name, which its reader's messages give (`half-life`)
     let read = |value: &Option<Bound<'_, PyAny>>,
                 field: &str,
                 unit: fn(&str, &str) -> Result<f64, String>| {
@@ -167,7 +168,7 @@ pub(crate) fn conditions(
             .as_ref()
             .map(|v| match v.extract::<String>() {
                 Ok(text) => unit(field, &text).map_err(value_error),
-                Err(_) => v.extract::<f64>(),
+                Err(_) => of_argument(v.py(), &field.replace('-', "_"), v.extract::<f64>()),
             })
             .transpose()
     };
