@@ -164,11 +164,22 @@ fn every_answer_outside_the_record_says_so() {
     let rows = v["rows"].as_array().unwrap();
     assert!(outside_calibration(&rows[0]).is_empty(), "{}", rows[0]);
     assert_eq!(outside_calibration(&rows[1]).len(), 1, "{}", rows[1]);
-    // the map: once for the grid
+    // the map: once for the grid's speed, once for its cells' other λ and ζ
     let v = json(&argv(
         "map --preset golf --v0 40 --lambda 0.5:1:2 --zeta 0.05:0.1:2 --format json",
     ));
-    assert_eq!(outside_calibration(&v).len(), 1, "{v}");
+    let w = outside_calibration(&v);
+    assert_eq!(w.len(), 2, "{v}");
+    assert!(
+        w[0].starts_with("outside calibration: impact speed 40 m/s"),
+        "{}",
+        w[0]
+    );
+    assert!(
+        w[1].starts_with("outside calibration: lambda, zeta changed"),
+        "{}",
+        w[1]
+    );
     assert_eq!(v["ball"]["name"], "golf");
     // a bat: the game's and the BBCOR test's closing speeds, one warning
     let v = json(&argv("bat --preset baseball --bat-mass 0.9 --format json"));
