@@ -214,6 +214,34 @@ impl Ball {
         ))
     }
 
+    /// The warnings of a map over (λ, ζ) around this ball at its v0: the map's cells move its
+    /// K_r and c as `run --lambda --zeta` does, so their warning is `run`'s for this ball with
+    /// `lambda` and `zeta` changed, saying that only the ball's own point is its record's;
+    /// before it, when nothing else changed the ball, the speed's warning
+    /// ([`Ball::calibration_warning`]), which an override's would repeat. Empty without a record.
+    pub fn map_calibration_warnings(&self) -> Vec<String> {
+        let v = self.params.v0;
+        let mut moved = self.clone();
+        moved
+            .overrides
+            .extend(["lambda".to_string(), "zeta".to_string()]);
+        let n = self.params.normalized();
+        let cells = moved.calibration_warning(v).map(|w| {
+            format!(
+                "{w}: the map's cells are this ball at other λ and ζ; only its own point \
+                 (λ = {}, ζ = {}) is calibrated",
+                short(n.lambda, 4),
+                short(n.zeta, 4)
+            )
+        });
+        let speed = self
+            .overrides
+            .is_empty()
+            .then(|| self.calibration_warning(v))
+            .flatten();
+        speed.into_iter().chain(cells).collect()
+    }
+
     /// "outside calibration: …" for a test of `standard` on this ball: its impact speed (a
     /// drop's first impact, through standard air, from the release height) against the
     /// ball's record; `None` inside it, without a record, or when the drop has no impact.

@@ -15,7 +15,7 @@ use super::{Ball, BallError};
 use crate::analysis::fit::{Param, apply};
 use crate::catalog::{Entry, Origin};
 use crate::model::contact::ContactLaw;
-use crate::model::params::{Field, ImpactParams, check_positive};
+use crate::model::params::{Field, ImpactParams, check_positive, check_range};
 use crate::preset::{ParamSource, Preset};
 
 /// Parameters set over a preset's, SI units (`None` keeps the preset's), so that a fitted ball
@@ -98,23 +98,24 @@ impl Overrides {
     }
 
     /// The values set on `params` (m included; R is no parameter, [`Overrides::sized`] sets
-    /// it); each checked (finite, positive, in 1e-15 … 1e15) and named by its field, `params`
-    /// unchanged on an error.
+    /// it); each checked (finite, positive, in 1e-15 … 1e15; K_r also 0, the ball with no
+    /// recoil spring that λ = 0 and a preset's `k_r = 0` give, which [`ImpactParams::validate`]
+    /// takes) and named by its field, `params` unchanged on an error.
     pub fn apply(&self, params: &mut ImpactParams) -> Result<(), BallError> {
         if let Some(m) = self.mass {
             check_positive(Field::Mass, m)?;
         }
         let given = [
-            (Param::KP, Field::KP, self.k_p),
-            (Param::C, Field::Damping, self.damping),
-            (Param::KR, Field::KR, self.k_r),
-            (Param::ZP, Field::ZP, self.z_p),
+            (Param::KP, Field::KP, self.k_p, false),
+            (Param::C, Field::Damping, self.damping, false),
+            (Param::KR, Field::KR, self.k_r, true),
+            (Param::ZP, Field::ZP, self.z_p, false),
         ];
         let mut free = Vec::new();
         let mut values = Vec::new();
-        for (p, field, v) in given {
+        for (p, field, v, zero) in given {
             if let Some(v) = v {
-                check_positive(field, v)?;
+                check_range(field, v, zero, false)?;
                 free.push(p);
                 values.push(v);
             }

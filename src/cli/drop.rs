@@ -252,7 +252,8 @@ pub fn run(a: &DropArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     match a.format {
         TextJsonCsv::Json => json(out, d)?,
         TextJsonCsv::Csv => {
-            trajectory_csv(out, &d.run)?;
+            let stated = super::csv_stated::with_ball_cells(&d.ball, &d.surface);
+            trajectory_csv(out, &d.run, &stated)?;
             output::warnings_to_stderr(&d.warnings);
         }
         TextJsonCsv::Text => text(out, a, &d)?,
@@ -358,10 +359,16 @@ fn own_standard_text(out: &mut dyn Write, d: &Dropped) -> std::io::Result<()> {
     Ok(())
 }
 
-fn trajectory_csv(out: &mut dyn Write, run: &DropRun) -> std::io::Result<()> {
-    csv_row(out, &["t", "height", "velocity"])?;
+/// `drop --format csv`: the trajectory, each row ending with the ball, the surface and the
+/// conditions (`stated`, [`super::csv_stated::with_ball`]).
+fn trajectory_csv(out: &mut dyn Write, run: &DropRun, stated: &[String]) -> std::io::Result<()> {
+    let mut head = vec!["t", "height", "velocity"];
+    head.extend(super::csv_stated::with_ball());
+    csv_row(out, &head)?;
     for s in run.trajectory(CSV_STEP) {
-        csv_row(out, &[num(s.t), num(s.height), num(s.velocity)])?;
+        let mut row = vec![num(s.t), num(s.height), num(s.velocity)];
+        row.extend_from_slice(stated);
+        csv_row(out, &row)?;
     }
     Ok(())
 }

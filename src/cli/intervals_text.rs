@@ -39,3 +39,28 @@ pub fn write(out: &mut dyn Write, i: &Intervals, values: [f64; 3], dof: u32) -> 
     }
     Ok(())
 }
+
+/// The CSV columns of one answer's intervals (`sweep velocity`'s rows, `run`'s row), each
+/// JSON `…_ci95` pair as `…_ci95_lo`, `…_ci95_hi`.
+pub const CSV_COLUMNS: [&str; 6] = [
+    "cor_ci95_lo",
+    "cor_ci95_hi",
+    "max_force_ci95_lo",
+    "max_force_ci95_hi",
+    "contact_time_ci95_lo",
+    "contact_time_ci95_hi",
+];
+
+/// The cells of [`CSV_COLUMNS`] (the contact time's empty without a rebound).
+pub fn csv_cells(i: &Intervals) -> [String; 6] {
+    use super::output::{num, opt_num};
+    let ct = i.contact_time_ci95;
+    [
+        num(i.cor_ci95[0]),
+        num(i.cor_ci95[1]),
+        num(i.max_force_ci95[0]),
+        num(i.max_force_ci95[1]),
+        opt_num(ct.map(|c| c[0])),
+        opt_num(ct.map(|c| c[1])),
+    ]
+}

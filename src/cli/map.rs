@@ -76,9 +76,10 @@ pub struct MapBall {
     pub v0: f64,
     /// The preset's radius, m (NaN for the normalized ball): the map's warnings.
     pub radius: f64,
-    /// The grid's speed against the ball's calibration record, said once for the grid
-    /// ([`crate::Ball::calibration_warning`]; `None` inside it or without a record).
-    pub calibration: Option<String>,
+    /// The grid against the ball's calibration record, said once for the grid: its speed,
+    /// and its cells' other λ and ζ ([`crate::Ball::map_calibration_warnings`]; empty
+    /// without a record).
+    pub calibration: Vec<String>,
     /// The JSON `ball` object: the ball the grid starts from (the cells move its K_r and c).
     pub record: crate::api::BallRecord,
     /// The conditions the ball is at (the JSON `conditions`).
@@ -114,7 +115,7 @@ pub fn spec(a: &MapArgs) -> anyhow::Result<MapBall> {
             own: None,
             v0: 1.0,
             radius: f64::NAN,
-            calibration: None,
+            calibration: Vec::new(),
             record: crate::Ball::normalized(1.0, 1.0, a.zp_bar, law)?.record_json(),
             conditions: crate::api::recorded_conditions(None),
         });
@@ -142,7 +143,7 @@ pub fn spec(a: &MapArgs) -> anyhow::Result<MapBall> {
         own: Some((n.lambda, n.zeta)),
         v0: b.params.v0,
         radius: b.radius(),
-        calibration: b.calibration_warning(b.params.v0),
+        calibration: b.map_calibration_warnings(),
         record: b.record_json(),
         conditions: b.conditions,
     })

@@ -15,6 +15,7 @@ pub mod budget;
 pub mod collide;
 pub mod conditions;
 pub mod court;
+mod csv_stated;
 pub mod drop;
 mod drop_json;
 mod drop_leak;

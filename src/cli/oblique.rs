@@ -162,7 +162,10 @@ pub fn run(a: &ObliqueArgs, out: &mut dyn Write) -> anyhow::Result<()> {
             history_csv(out, &r)?;
             output::warnings_to_stderr(&warnings);
         }
-        TextJsonCsv::Csv => summary_csv(out, &r, &warnings)?,
+        TextJsonCsv::Csv => {
+            let stated = super::csv_stated::with_ball_cells(&ball, &surface);
+            summary_csv(out, &r, &warnings, &stated)?
+        }
         TextJsonCsv::Text => {
             // the law is named when it is not the linear one (the header `run` prints too)
             let law = match ball.law {
@@ -217,12 +220,17 @@ pub const SUMMARY_COLUMNS: [&str; 19] = [
     "warnings",
 ];
 
+/// The one row of `oblique --format csv`: [`SUMMARY_COLUMNS`], then the ball, the surface
+/// and the conditions (`stated`, [`super::csv_stated::with_ball`]).
 fn summary_csv(
     out: &mut dyn Write,
     r: &ObliqueResponse,
     warnings: &[String],
+    stated: &[String],
 ) -> std::io::Result<()> {
-    csv_row(out, &SUMMARY_COLUMNS)?;
+    let mut head = SUMMARY_COLUMNS.to_vec();
+    head.extend(super::csv_stated::with_ball());
+    csv_row(out, &head)?;
     let mut row: Vec<String> = [
         r.v_in,
         r.angle_in_deg,
@@ -250,6 +258,7 @@ fn summary_csv(
         row.push(num(x));
     }
     row.push(output::warnings_cell(warnings));
+    row.extend_from_slice(stated);
     csv_row(out, &row)
 }
 

@@ -138,7 +138,7 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> anyhow::Result<()> {
             history_csv(out, &r)?;
             output::warnings_to_stderr(&ball.warnings(&r));
         }
-        TextJsonCsv::Csv => summary_csv(out, &ball, &r)?,
+        TextJsonCsv::Csv => summary_csv(out, &ball, &r, &surface, intervals.as_ref())?,
         TextJsonCsv::Text => {
             super::run_text::write(out, &ball, &r, intervals.as_ref(), args.history.history)?;
             if !surface.mechanics.is_rigid() || args.surface.surface.is_some() {
@@ -152,7 +152,9 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     Ok(())
 }
 
-/// Columns of `run --format csv` (one row).
+/// Columns of `run --format csv` (one row), before the surface's and the conditions'
+/// ([`super::csv_stated::columns`]) and a fitted preset's 95 % intervals
+/// ([`super::intervals_text::CSV_COLUMNS`]).
 pub const SUMMARY_COLUMNS: [&str; 29] = [
     "preset",
     "origin",
@@ -185,46 +187,64 @@ pub const SUMMARY_COLUMNS: [&str; 29] = [
     "warnings",
 ];
 
-fn summary_csv(out: &mut dyn Write, b: &Ball, r: &ImpactResponse) -> std::io::Result<()> {
+/// The one row of `run --format csv`: the ball, the answer, its warnings, the surface and
+/// conditions it ran on and at, and on a fitted preset the intervals (text and JSON have them).
+fn summary_csv(
+    out: &mut dyn Write,
+    b: &Ball,
+    r: &ImpactResponse,
+    surface: &SurfaceUsed,
+    intervals: Option<&crate::api::Intervals>,
+) -> std::io::Result<()> {
+    let mut head = SUMMARY_COLUMNS.to_vec();
+    head.extend(super::csv_stated::columns());
+    let mut cells = summary_cells(b, r);
+    cells.extend(super::csv_stated::cells(surface, &b.conditions));
+    if let Some(i) = intervals {
+        head.extend(super::intervals_text::CSV_COLUMNS);
+        cells.extend(super::intervals_text::csv_cells(i));
+    }
+    csv_row(out, &head)?;
+    csv_row(out, &cells)
+}
+
+/// The cells of [`SUMMARY_COLUMNS`].
+fn summary_cells(b: &Ball, r: &ImpactResponse) -> Vec<String> {
     let p = &b.params;
     let n = &r.normalized;
     let e = r.energy;
     let en = |f: fn(&EnergyBudget) -> f64| opt_num(e.as_ref().map(f));
-    csv_row(out, &SUMMARY_COLUMNS)?;
-    csv_row(
-        out,
-        &[
-            b.name.clone().unwrap_or_default(),
-            b.origin.clone(),
-            b.source.into(),
-            r.law.name().into(),
-            r.method.name().into(),
-            num(p.mass),
-            num(p.k_p),
-            num(p.k_r),
-            num(p.damping),
-            num(p.z_p),
-            num(p.k_h),
-            num(p.v0),
-            num(n.lambda),
-            num(n.zeta),
-            num(n.zp_bar),
-            num(r.cor),
-            r.rebound.to_string(),
-            num(r.max_force),
-            opt_num(r.contact_time),
-            num(r.max_indentation),
-            num(r.permanent_indentation),
-            num(r.max_force_normalized),
-            opt_num(r.contact_time_normalized),
-            en(|e| e.initial_kinetic),
-            en(|e| e.final_kinetic),
-            en(|e| e.dashpot),
-            en(|e| e.contact),
-            en(|e| e.spring),
-            output::warnings_cell(&b.warnings(r)),
-        ],
-    )
+    vec![
+        b.name.clone().unwrap_or_default(),
+        b.origin.clone(),
+        b.source.into(),
+        r.law.name().into(),
+        r.method.name().into(),
+        num(p.mass),
+        num(p.k_p),
+        num(p.k_r),
+        num(p.damping),
+        num(p.z_p),
+        num(p.k_h),
+        num(p.v0),
+        num(n.lambda),
+        num(n.zeta),
+        num(n.zp_bar),
+        num(r.cor),
+        r.rebound.to_string(),
+        num(r.max_force),
+        opt_num(r.contact_time),
+        num(r.max_indentation),
+        num(r.permanent_indentation),
+        num(r.max_force_normalized),
+        opt_num(r.contact_time_normalized),
+        en(|e| e.initial_kinetic),
+        en(|e| e.final_kinetic),
+        en(|e| e.dashpot),
+        en(|e| e.contact),
+        en(|e| e.spring),
+        output::warnings_cell(&b.warnings(r)),
+    ]
 }
 
 fn history_csv(out: &mut dyn Write, r: &ImpactResponse) -> std::io::Result<()> {

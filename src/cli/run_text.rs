@@ -155,8 +155,9 @@ fn write_comparison(
         .measured
         .as_ref()
         .filter(|m| m.v0 == v0 && (m.cor.is_some() || m.max_force.is_some()))
-        // nor once an override changed the ball they were measured on
-        .filter(|_| b.overrides.is_empty());
+        // nor where the JSON's `comparison_withheld` withholds them (an override changed the
+        // ball, or it runs away from its record's conditions): one rule for both outputs
+        .filter(|_| b.measurement_withheld().is_none());
     let mut rows = vec![if measured.is_some() {
         vec![
             "".into(),

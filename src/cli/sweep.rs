@@ -2,9 +2,10 @@
 //! several λ) and Fig. 4 (COR against impact speed for one ball), as CSV or JSON.
 
 use super::ball::{BallArgs, LawArg};
+use super::csv_stated;
 use super::output::{self, csv_row, num, opt_num};
 use crate::analysis::sweep::{VelocityPoint, lin_space, log_space};
-use crate::api::{self, Ball, BallHeader, Intervals};
+use crate::api::{self, Ball, BallHeader, Intervals, SurfaceUsed};
 use crate::model::contact::ContactLaw;
 use crate::model::params::ImpactParams;
 use crate::model::params::{Field, check_positive, validate_lambda_zeta};
@@ -244,7 +245,7 @@ fn velocity(a: &VelocityArgs, out: &mut dyn Write) -> anyhow::Result<()> {
                 &b.conditions,
             )?
         }
-        SweepFormat::Csv => velocity_csv(out, &rows, !bands.is_empty())?,
+        SweepFormat::Csv => velocity_csv(out, &b, &rows, !bands.is_empty())?,
     }
     Ok(())
 }
@@ -277,7 +278,14 @@ fn velocity_intervals(b: &Ball, rows: &[VelocityPoint]) -> anyhow::Result<Vec<In
         .collect()
 }
 
-fn velocity_csv(out: &mut dyn Write, rows: &[VelocityRow], bands: bool) -> anyhow::Result<()> {
+/// `sweep velocity --format csv`: a row per speed, each ending with the ball, the surface
+/// and the conditions ([`csv_stated::with_ball`]).
+fn velocity_csv(
+    out: &mut dyn Write,
+    b: &Ball,
+    rows: &[VelocityRow],
+    bands: bool,
+) -> anyhow::Result<()> {
     let mut head = vec![
         "v0",
         "cor",
@@ -286,17 +294,13 @@ fn velocity_csv(out: &mut dyn Write, rows: &[VelocityRow], bands: bool) -> anyho
         "permanent_indentation",
     ];
     if bands {
-        head.extend([
-            "cor_ci95_lo",
-            "cor_ci95_hi",
-            "max_force_ci95_lo",
-            "max_force_ci95_hi",
-            "contact_time_ci95_lo",
-            "contact_time_ci95_hi",
-        ]);
+        head.extend(super::intervals_text::CSV_COLUMNS);
     }
     head.push("warnings");
+    head.extend(csv_stated::with_ball());
     csv_row(out, &head)?;
+    // the ball bounces on the rigid plate, as the JSON's `surface` says
+    let stated = csv_stated::with_ball_cells(b, &SurfaceUsed::rigid_plate());
     for VelocityRow {
         row: r,
         intervals,
@@ -311,17 +315,10 @@ fn velocity_csv(out: &mut dyn Write, rows: &[VelocityRow], bands: bool) -> anyho
             num(r.permanent_indentation),
         ];
         if let Some(i) = intervals {
-            let ct = i.contact_time_ci95;
-            cells.extend([
-                num(i.cor_ci95[0]),
-                num(i.cor_ci95[1]),
-                num(i.max_force_ci95[0]),
-                num(i.max_force_ci95[1]),
-                opt_num(ct.map(|c| c[0])),
-                opt_num(ct.map(|c| c[1])),
-            ]);
+            cells.extend(super::intervals_text::csv_cells(i));
         }
         cells.push(output::warnings_cell(warnings));
+        cells.extend(stated.iter().cloned());
         csv_row(out, &cells)?;
     }
     Ok(())

@@ -146,10 +146,16 @@ impl ExportSet {
     /// Two comment lines naming the ball; `c` opens a comment, `end` closes it. A comment is
     /// read, not pasted: six digits as the text answers give them (v0 = 15, not
     /// 14.999999999999998); the values the code reads keep every digit.
+    /// At an angle the export's v0 is the bounce's normal speed v·sinθ, and says so (the
+    /// case's line names v and θ).
     fn header(&self, out: &mut String, c: &str, end: &str) {
+        let normal = match &self.case {
+            Some(case) if case.angle_deg < 90.0 => " (the normal speed v·sinθ)",
+            _ => "",
+        };
         let _ = writeln!(
             out,
-            "{c} bouncelab peers: {}, m = {} kg, R = {} m, v0 = {} m/s, target COR {}{end}",
+            "{c} bouncelab peers: {}, m = {} kg, R = {} m, v0 = {} m/s{normal}, target COR {}{end}",
             self.label,
             given(self.mass, 6),
             given(self.radius, 6),

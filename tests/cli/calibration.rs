@@ -118,6 +118,19 @@ fn an_override_is_listed_what_was_kept_too_and_the_comparison_is_withheld() {
     assert!(v["comparison_withheld"].is_null());
 }
 
+/// The two `outside calibration:` warnings of the golf ball's answer `v` at 40 m/s: the
+/// speed's first (checked here), then the answer's own (the caller checks it).
+fn speed_40_then_one(v: &Value) -> Vec<&str> {
+    let w = outside_calibration(v);
+    assert_eq!(w.len(), 2, "{v}");
+    assert!(
+        w[0].starts_with("outside calibration: impact speed 40 m/s"),
+        "{}",
+        w[0]
+    );
+    w
+}
+
 /// The warnings of every kind of answer, at a speed outside the ball's record: each begins
 /// with "outside calibration:" and names the value and the range.
 #[test]
@@ -142,13 +155,7 @@ fn every_answer_outside_the_record_says_so() {
     }
     // peers at 40 m/s: the speed, and the target COR measured at another one, both named
     let v = json(&argv("peers --preset golf --v0 40 --format json"));
-    let w = outside_calibration(&v);
-    assert_eq!(w.len(), 2, "{v}");
-    assert!(
-        w[0].starts_with("outside calibration: impact speed 40 m/s"),
-        "{}",
-        w[0]
-    );
+    let w = speed_40_then_one(&v);
     assert_eq!(
         w[1],
         "outside calibration: the target COR 0.84 was measured at 1.47 m/s, and this \
@@ -164,11 +171,16 @@ fn every_answer_outside_the_record_says_so() {
     let rows = v["rows"].as_array().unwrap();
     assert!(outside_calibration(&rows[0]).is_empty(), "{}", rows[0]);
     assert_eq!(outside_calibration(&rows[1]).len(), 1, "{}", rows[1]);
-    // the map: once for the grid
+    // the map: once for the grid's speed, once for its cells' other λ and ζ
     let v = json(&argv(
         "map --preset golf --v0 40 --lambda 0.5:1:2 --zeta 0.05:0.1:2 --format json",
     ));
-    assert_eq!(outside_calibration(&v).len(), 1, "{v}");
+    let w = speed_40_then_one(&v);
+    assert!(
+        w[1].starts_with("outside calibration: lambda, zeta changed"),
+        "{}",
+        w[1]
+    );
     assert_eq!(v["ball"]["name"], "golf");
     // a bat: the game's and the BBCOR test's closing speeds, one warning
     let v = json(&argv("bat --preset baseball --bat-mass 0.9 --format json"));

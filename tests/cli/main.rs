@@ -56,6 +56,7 @@ mod cli_peers_case;
 mod cli_presets;
 mod cli_progress_pty;
 mod cli_reproduce;
+mod cli_runout_trial;
 mod cli_shot_net;
 mod cli_shot_surface;
 mod cli_size;

@@ -43,6 +43,13 @@ pub fn run(a: &FitArgs, path: &Path, out: &mut dyn Write) -> anyhow::Result<()> 
     let file = path.display().to_string();
     let fit = fit_cor_temperature(&ball.params, ball.law, t_ref, &points)
         .map_err(|e| anyhow::anyhow!("{file}: {e}"))?;
+    // the springs kept are the record's: its speeds against the data's, as every fit's ball
+    let speeds = points.iter().map(|p| p.v0);
+    let (lo, hi) = (
+        speeds.clone().fold(f64::INFINITY, f64::min),
+        speeds.fold(0.0, f64::max),
+    );
+    let warnings: Vec<String> = ball.speeds_warning(lo, hi).into_iter().collect();
     let report = Report {
         kind: "cor temperature",
         file: &file,
@@ -56,10 +63,20 @@ pub fn run(a: &FitArgs, path: &Path, out: &mut dyn Write) -> anyhow::Result<()> 
         lack_of_fit: fit.lack_of_fit,
         answered: fit.no_answer.is_empty(),
         no_answer: &fit.no_answer,
+        warnings: &warnings,
+        record: ball.record_json(),
     };
     let mut text = Vec::new();
     match a.format {
-        TextJson::Json => output::json(&mut text, &report)?,
+        // `ball`, `warnings` and `conditions` as every answer that runs a ball (docs/cli.md)
+        // (the ball's conditions at T_ref, the temperature c_ref is the dashpot's at)
+        TextJson::Json => {
+            let at_ref = crate::conditions::Conditions {
+                temperature_c: Some(fit.t_ref_c),
+                ..ball.conditions
+            };
+            output::json_stated(&mut text, &report, &at_ref)?
+        }
         TextJson::Text => write_text(&mut text, &report, &fit)?,
     }
     if !fit.no_answer.is_empty() {
@@ -100,6 +117,12 @@ struct Report<'a> {
     lack_of_fit: Option<LackOfFit>,
     answered: bool,
     no_answer: &'a [String],
+    /// What the caller should know: the data's speeds against the ball's record, whose
+    /// springs the fit keeps ([`crate::Ball::speeds_warning`]); `[]` when nothing.
+    warnings: &'a [String],
+    /// The ball the fit starts from (docs/cli.md, "The ball object").
+    #[serde(rename = "ball")]
+    record: crate::api::BallRecord,
 }
 
 fn write_text(out: &mut dyn Write, r: &Report, f: &TemperatureFit) -> std::io::Result<()> {
@@ -136,5 +159,6 @@ fn write_text(out: &mut dyn Write, r: &Report, f: &TemperatureFit) -> std::io::R
         ],
     ];
     table(out, "  ", &rows)?;
-    super::report_text::write_verdict(out, r.lack_of_fit.as_ref(), r.no_answer)
+    super::report_text::write_verdict(out, r.lack_of_fit.as_ref(), r.no_answer)?;
+    output::warning_lines(out, r.warnings)
 }
