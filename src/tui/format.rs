@@ -155,15 +155,7 @@ pub fn clip(text: &str, width: usize) -> String {
 pub fn fit_lines(lines: Vec<Line<'static>>, width: usize) -> Vec<Line<'static>> {
     let mut out = Vec::new();
     for line in lines {
-        let mut cells: Vec<(char, Style)> = line
-            .spans
-            .iter()
-            .flat_map(|s| {
-                s.content
-                    .chars()
-                    .map(move |c| (c, line.style.patch(s.style)))
-            })
-            .collect();
+        let mut cells = cells_of(&line);
         let indent = cells.iter().take_while(|c| c.0 == ' ').count();
         while cells.len() > width {
             let Some(cut) = break_at(&cells, width, indent) else {
@@ -200,8 +192,20 @@ fn break_at(cells: &[(char, Style)], width: usize, indent: usize) -> Option<usiz
         .or_else(|| fits.clone().find(|&i| word_end(i)))
 }
 
+/// `line`'s characters, each with its style (the line's patched by its span's).
+pub(crate) fn cells_of(line: &Line) -> Vec<(char, Style)> {
+    line.spans
+        .iter()
+        .flat_map(|s| {
+            s.content
+                .chars()
+                .map(move |c| (c, line.style.patch(s.style)))
+        })
+        .collect()
+}
+
 /// A line from styled characters, one span per run of one style.
-fn spans_of(cells: &[(char, Style)]) -> Line<'static> {
+pub(crate) fn spans_of(cells: &[(char, Style)]) -> Line<'static> {
     let mut spans: Vec<Span<'static>> = Vec::new();
     for &(c, style) in cells {
         match spans.last_mut() {

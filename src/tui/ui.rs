@@ -96,7 +96,7 @@ fn split_fit(app: &App, charts: Rect) -> (Rect, Option<Rect>) {
     let Some(v) = fit_view(app, Theme::new(false)) else {
         return (charts, None);
     };
-    let h = v.height().min(charts.height / 2);
+    let h = v.height(charts.width).min(charts.height / 2);
     let [c, f] = Layout::vertical([Constraint::Fill(1), Constraint::Length(h)]).areas(charts);
     (c, Some(f))
 }

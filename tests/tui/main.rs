@@ -62,6 +62,7 @@ mod tui_save_overwrite;
 mod tui_save_pty;
 mod tui_screen_words;
 mod tui_session;
+mod tui_small;
 mod tui_small_pty;
 mod tui_surface;
 mod tui_surface_form;

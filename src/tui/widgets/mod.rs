@@ -4,6 +4,7 @@
 
 pub mod command;
 pub mod confirm;
+pub mod cut;
 pub mod form;
 pub mod help;
 pub mod input;
@@ -83,30 +84,37 @@ pub fn wrapped_dialog(
 }
 
 /// A readout in one bordered column (wide screens): `lines` broken between fields, never
-/// inside a value (`+0.225` and its `m` on two lines), to the width inside the border.
+/// inside a value (`+0.225` and its `m` on two lines), to the width inside the border, and
+/// the last row ending in "…" when they do not all fit ([`cut::kept`]).
 pub fn readout_column(lines: Vec<Line<'static>>, area: Rect, buf: &mut Buffer) {
-    let lines = crate::tui::format::fit_lines(lines, usize::from(area.width.saturating_sub(2)));
+    let block = Block::bordered();
+    let inner = block.inner(area);
+    let lines = cut::kept(lines, usize::from(inner.width), usize::from(inner.height));
     Paragraph::new(lines)
         .wrap(Wrap { trim: true })
-        .block(Block::bordered())
+        .block(block)
         .render(area, buf);
 }
 
-/// A readout under the charts (narrow screens): its border drawn on `area`, and the two
-/// columns inside it, as wide as `columns` says, for [`fitted`] lines.
-pub fn readout_columns(area: Rect, buf: &mut Buffer, columns: [Constraint; 2]) -> [Rect; 2] {
-    let block = Block::bordered();
+/// A readout under the charts (narrow screens): its border drawn on `area` with `title` on
+/// it if any, and the two columns inside it, as wide as `columns` says, for [`fitted`] lines.
+pub fn readout_columns(
+    area: Rect,
+    buf: &mut Buffer,
+    title: Option<Line<'static>>,
+    columns: [Constraint; 2],
+) -> [Rect; 2] {
+    let block = title.map_or_else(Block::bordered, |t| Block::bordered().title(t));
     let inner = block.inner(area);
     block.render(area, buf);
     Layout::horizontal(columns).areas(inner)
 }
 
-/// `lines` broken between fields to `area`'s width and wrapped there, without a border.
+/// `lines` broken between fields to `area`'s width and wrapped there, without a border; the
+/// last row ending in "…" when they do not all fit ([`cut::kept`]).
 pub fn fitted(lines: Vec<Line<'static>>, area: Rect, buf: &mut Buffer) {
-    Paragraph::new(crate::tui::format::fit_lines(
-        lines,
-        usize::from(area.width),
-    ))
-    .wrap(Wrap { trim: true })
-    .render(area, buf);
+    let lines = cut::kept(lines, usize::from(area.width), usize::from(area.height));
+    Paragraph::new(lines)
+        .wrap(Wrap { trim: true })
+        .render(area, buf);
 }

@@ -73,8 +73,9 @@ impl Widget for &Readout<'_> {
             self.compact(inner_w)
         };
         // a long line breaks between its fields, never inside a value (tests/tui/tui_render.rs:
-        // `readout_values_never_wrap`)
-        let lines = crate::tui::format::fit_lines(lines, inner_w);
+        // `readout_values_never_wrap`); a last row cut short ends in "…"
+        let rows = usize::from(area.height.saturating_sub(2));
+        let lines = crate::tui::widgets::cut::kept(lines, inner_w, rows);
         Paragraph::new(lines)
             .block(self.block())
             .wrap(Wrap { trim: false })

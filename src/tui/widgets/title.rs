@@ -5,10 +5,11 @@
 //! (`F [N] vs t [ms]`), qualifiers ("linear law, no flattening"), the crosshair's reading
 //! (`+(1.2, 60.9)`), a computation's stop (`stopped: it panicked: … (R retries)`,
 //! src/tui/app/stopped.rs). When the whole title does not fit, the parts other than the axes,
-//! a reading and a stop are dropped, those right of the axes first; then the axes are written
-//! tighter
-//! (`F[N]–t[ms]`); last, whole words are cut from the right with "…", never inside a
-//! bracketed unit.
+//! a reading and a stop are dropped, those right of the axes first; then the words that name
+//! an axis in the axes themselves ("Normalized peak force Fm/(m v0 ω0)" → `Fm/(m v0 ω0)`);
+//! then the axes are written tighter (`F[N]–t[ms]`); then the vertical axis stays alone
+//! (`v_c[m/s]`); last, whole words are cut from the right with "…", never inside a
+//! bracketed unit — and never down to a bare "…" (tests/tui/tui_small.rs).
 
 /// `title` as a frame `frame_width` cells wide writes it on its top row: fitted ([`fit`]) and
 /// set off by a space each side, so it never touches the corner (the oblique view's
@@ -50,13 +51,85 @@ pub fn fit(title: &str, width: usize) -> String {
             return candidate;
         }
     }
-    let tight = tighten(parts[axes]);
-    parts[axes] = &tight;
-    let candidate = join(&parts, &gone);
-    if fits(&candidate) {
-        return candidate;
+    // the axes ever shorter: unnamed, tighter, and the vertical one alone where the axes are
+    // all the title keeps (a reading or a stop beside them is cut at a word instead)
+    let unnamed = unname(parts[axes]);
+    let tight = tighten(&unnamed);
+    let vertical = tight.split('–').next().unwrap_or_default().to_string();
+    let alone = gone.iter().filter(|g| !**g).count() == 1;
+    let shorter = [&unnamed, &tight, &vertical];
+    for axes_text in &shorter[..if alone { 3 } else { 2 }] {
+        parts[axes] = axes_text;
+        let candidate = join(&parts, &gone);
+        if fits(&candidate) {
+            return candidate;
+        }
     }
-    crate::tui::format::clip(&candidate, width)
+    parts[axes] = &tight;
+    let cut = crate::tui::format::clip(&join(&parts, &gone), width);
+    if cut != "…" {
+        return cut;
+    }
+    // not even the first word fits: the vertical axis' symbol, cut if it must be, says more
+    // than a bare "…"
+    let symbol = vertical.split('[').next().unwrap_or_default();
+    if fits(symbol) || width < 2 {
+        return symbol.chars().take(width).collect();
+    }
+    symbol.chars().take(width - 1).chain(['…']).collect()
+}
+
+/// The axes without the words that name them, each side keeping its symbol and units:
+/// `"Normalized peak force Fm/(m v0 ω0) vs ζ (log)"` → `"Fm/(m v0 ω0) vs ζ (log)"`,
+/// `"COR e vs impact speed v0 [m/s]"` → `"COR e vs v0 [m/s]"` (an acronym is a symbol).
+fn unname(axes: &str) -> String {
+    axes.split(" vs ")
+        .map(|side| {
+            let words = words(side);
+            // the symbol: the last word that is not a unit or "(log)"
+            let symbol = words
+                .iter()
+                .rposition(|w| !w.starts_with('[') && !w.starts_with('('))
+                .unwrap_or(0);
+            let first = (0..symbol).find(|&i| !naming(words[i])).unwrap_or(symbol);
+            words[first..].join(" ")
+        })
+        .collect::<Vec<_>>()
+        .join(" vs ")
+}
+
+/// Whether `word` names an axis rather than writes it: a word of letters in lower case after
+/// its first ("peak", "Normalized"), or a label ending in ':' ("models:").
+fn naming(word: &str) -> bool {
+    let mut chars = word.chars();
+    let lettered = chars.next().is_some_and(char::is_alphabetic)
+        && chars.clone().count() >= 1
+        && chars.all(char::is_lowercase);
+    lettered || (word.len() > 1 && word.ends_with(':'))
+}
+
+/// `side` split at its spaces outside brackets and parentheses: `"Fm/(m v0 ω0) [N]"` is two
+/// words.
+fn words(side: &str) -> Vec<&str> {
+    let mut out = Vec::new();
+    let (mut depth, mut start) = (0i32, 0);
+    for (i, c) in side.char_indices() {
+        match c {
+            '(' | '[' => depth += 1,
+            ')' | ']' => depth -= 1,
+            ' ' if depth == 0 => {
+                if i > start {
+                    out.push(&side[start..i]);
+                }
+                start = i + 1;
+            }
+            _ => {}
+        }
+    }
+    if start < side.len() {
+        out.push(&side[start..]);
+    }
+    out
 }
 
 /// The parts not `gone`, joined as titles are.
@@ -107,18 +180,29 @@ mod tests {
             "COR e vs v0 [m/s] · stopped: it panicked: boom (R retries)"
         );
         assert_eq!(fit(s, 40), "COR e–v0[m/s] · stopped: it panicked:…");
+        // the axes stay whole beside a stop: its words are cut instead
+        assert!(fit(s, 50).starts_with("COR e–v0[m/s] · stopped:"));
     }
 
     #[test]
     fn a_title_that_cannot_fit_is_cut_at_a_word_with_an_ellipsis() {
         let t = "Normalized peak force Fm/(m v0 ω0) vs ζ (log) · linear law";
-        let got = fit(t, 20);
+        let got = fit(t, 10);
         assert!(got.ends_with('…') && got.chars().count() <= 20, "{got}");
         assert!(!got.contains('['), "{got}");
-        assert_eq!(fit("abc", 2), "…");
+        // never a bare "…"
+        assert_eq!(fit("abc", 2), "a…");
+        assert_eq!(fit("Slip · v_c [m/s] vs t [ms]", 12), "v_c[m/s]");
+        assert_eq!(fit("Slip · v_c [m/s] vs t [ms]", 5), "v_c");
+        assert_eq!(
+            fit(t, 28),
+            "Fm/(m v0 ω0) vs ζ (log)",
+            "the axis' name goes before its symbol"
+        );
         assert_eq!(fit("abc", 0), "");
         for w in 0..60 {
             assert!(fit(t, w).chars().count() <= w, "{w}");
+            assert!(w == 0 || fit(t, w) != "…", "{w}");
         }
     }
 }

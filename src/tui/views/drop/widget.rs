@@ -179,7 +179,12 @@ fn render_readout(ball: &str, d: &DropView, theme: Theme, area: Rect, buf: &mut 
 /// The readout under the chart (narrow screens): the setting and the verdict on the left,
 /// the rebounds on the right, so both show in a few rows; the status line has the keys.
 fn render_readout_beside(ball: &str, d: &DropView, theme: Theme, area: Rect, buf: &mut Buffer) {
-    let [left, right] = readout_columns(area, buf, [Constraint::Fill(1), Constraint::Length(22)]);
+    let [left, right] = readout_columns(
+        area,
+        buf,
+        None,
+        [Constraint::Fill(1), Constraint::Length(22)],
+    );
     let mut lines = setting_lines(ball, d, theme);
     lines.extend(verdict_lines(d, theme));
     if !d.motion {

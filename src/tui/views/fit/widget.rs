@@ -10,7 +10,7 @@ use crate::tui::views::fit::state::{FitOutcome, FitPane, FitStatus, Standing};
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
 use ratatui::text::{Line, Span};
-use ratatui::widgets::{Block, Clear, Paragraph, Widget};
+use ratatui::widgets::{Block, Clear, Paragraph, Widget, Wrap};
 
 /// The pane's view: the fit and how it stands to the ball on screen.
 #[derive(Debug, Clone, Copy)]
@@ -21,37 +21,18 @@ pub struct FitView<'a> {
 }
 
 impl FitView<'_> {
-    /// Rows the pane wants, borders included.
-    pub fn height(&self) -> u16 {
-        let rows = match &self.pane.status {
-            FitStatus::Done(Ok(o)) => {
-                o.fitted.len()
-                    + usize::from(o.time_offset.is_some())
-                    + usize::from(self.pane.drops)
-                    + o.warnings.len().min(1)
-                    + 2
-            }
-            _ => 2,
-        };
-        rows as u16 + 2
+    /// Rows the pane wants, borders included, its lines broken to `width` (the pane's, its
+    /// border included) as [`Widget::render`] breaks them.
+    pub fn height(&self, width: u16) -> u16 {
+        let inner = usize::from(width.saturating_sub(2));
+        let lines = crate::tui::format::fit_lines(self.lines(), inner);
+        crate::tui::widgets::cut::rows(&lines, inner) as u16 + 2
     }
-}
 
-impl Widget for &FitView<'_> {
-    fn render(self, area: Rect, buf: &mut Buffer) {
+    /// The pane's lines, before they are fitted to its width.
+    fn lines(&self) -> Vec<Line<'static>> {
         let t = self.theme;
-        let stale = self.standing == Standing::Stale;
-        // the stale mark takes the legend's place: a narrow pane keeps it whole
-        let legend = if stale {
-            ""
-        } else {
-            "· value ± std error [95 % interval] "
-        };
-        let mut title = vec![Span::styled(
-            format!(" fit to {} {legend}", self.pane.label),
-            t.title(),
-        )];
-        let lines = match &self.pane.status {
+        match &self.pane.status {
             FitStatus::Running => vec![
                 Line::raw(format!(
                     " fitting {}…{} (the keys keep working)",
@@ -65,16 +46,62 @@ impl Widget for &FitView<'_> {
                 Line::styled(" f fits again · O puts the data away", t.dim()),
             ],
             FitStatus::Done(Ok(o)) => outcome(o, self.pane.drops, self.standing, &t),
-        };
-        if stale {
-            title.push(Span::styled(
-                " stale: the ball changed since f ",
-                t.warning(),
-            ));
         }
+    }
+
+    /// The title: what was fitted, then the legend of its numbers or, once the ball has
+    /// changed, the stale mark in its place; cut at a word with "…" to `width` (the pane's
+    /// top border less its corners).
+    fn title(&self, width: usize) -> Line<'static> {
+        let t = self.theme;
+        let name = format!(" fit to {} ", self.pane.label);
+        // each in shorter words where the longer do not fit
+        let (forms, style): (&[&str], _) = if self.standing == Standing::Stale {
+            (
+                &[
+                    " stale: the ball changed since f ",
+                    " stale: ball changed ",
+                    " stale ",
+                ],
+                t.warning(),
+            )
+        } else {
+            (
+                &[
+                    "· value ± std error [95 % interval] ",
+                    "· value ± std error ",
+                ],
+                t.title(),
+            )
+        };
+        let name = crate::tui::format::clip(&name, width);
+        let room = width.saturating_sub(name.chars().count());
+        let tail = match forms.iter().find(|f| f.chars().count() <= room) {
+            Some(f) => f.to_string(),
+            None => crate::tui::format::clip(forms[0].trim_end(), room.saturating_sub(1)) + " ",
+        };
+        Line::from(vec![
+            Span::styled(name, t.title()),
+            Span::styled(tail, style),
+        ])
+    }
+}
+
+impl Widget for &FitView<'_> {
+    fn render(self, area: Rect, buf: &mut Buffer) {
+        let block = Block::bordered().title(self.title(usize::from(area.width.saturating_sub(2))));
+        let inner = block.inner(area);
+        // broken at words; a pane shorter than its lines ends in "…" (80 × 24:
+        // tests/tui/tui_small.rs)
+        let lines = crate::tui::widgets::cut::kept(
+            self.lines(),
+            usize::from(inner.width),
+            usize::from(inner.height),
+        );
         Clear.render(area, buf);
         Paragraph::new(lines)
-            .block(Block::bordered().title(Line::from(title)))
+            .wrap(Wrap { trim: false })
+            .block(block)
             .render(area, buf);
     }
 }

@@ -49,14 +49,15 @@ impl Widget for FlightPanel<'_> {
             ));
             readout_column(lines, readout, buf);
         } else {
-            // the launch and the net on the left (30 characters and a gap), the shot's numbers
-            // on the right, in a few rows
-            let [left, right] =
-                readout_columns(readout, buf, [Constraint::Length(32), Constraint::Fill(1)]);
-            fitted(self.launch_lines(), left, buf);
-            fitted(self.shot_lines(), right, buf);
+            self.render_strip(readout, buf);
         }
     }
+}
+
+/// The rows `lines` take broken to `width` (as [`fitted`] breaks them).
+fn rows_of(lines: Vec<Line<'static>>, width: u16) -> usize {
+    let w = usize::from(width);
+    crate::tui::widgets::cut::rows(&crate::tui::format::fit_lines(lines, w), w)
 }
 
 impl FlightPanel<'_> {
@@ -92,7 +93,47 @@ impl FlightPanel<'_> {
         (&Plot::new(&fig, self.theme)).render(area, buf);
     }
 
-    /// The ball and the launch, the selected value marked.
+    /// The readout under the chart (narrow screens): the launch and the net on the left (30
+    /// characters and a gap), the shot's numbers on the right. Where the rows are too few
+    /// (60 × 20), the ball's name goes on the border and the launch two values a row, so
+    /// the net's verdict shows, and the shot's numbers come the bounce's way out first; what
+    /// still does not fit is marked "…" (tests/tui/tui_small.rs).
+    fn render_strip(&self, area: Rect, buf: &mut Buffer) {
+        let rows = usize::from(area.height.saturating_sub(2));
+        let mut launch = self.launch_lines();
+        let title = (launch.len() > rows).then(|| {
+            // set off by a space each side, as every panel's title
+            let mut title = launch.remove(0);
+            title.spans.insert(0, Span::raw(" "));
+            title.spans.push(Span::raw(" "));
+            let params = launch.drain(..FlightParam::ALL.len()).collect::<Vec<_>>();
+            let paired = params.chunks(2).map(|pair| {
+                let mut spans = pair[0].spans.clone();
+                if let Some(second) = pair.get(1) {
+                    spans.push(Span::raw("  "));
+                    spans.extend(second.spans.iter().cloned());
+                }
+                Line::from(spans)
+            });
+            launch.splice(0..0, paired);
+            title
+        });
+        let [left, right] = readout_columns(
+            area,
+            buf,
+            title,
+            [Constraint::Length(32), Constraint::Fill(1)],
+        );
+        fitted(launch, left, buf);
+        let shot = if rows_of(self.shot_lines(), right.width) <= rows {
+            self.shot_lines()
+        } else {
+            self.shot_lines_short()
+        };
+        fitted(shot, right, buf);
+    }
+
+    /// The ball and the launch, the selected value marked, then the net's verdict.
     fn launch_lines(&self) -> Vec<Line<'static>> {
         let t = self.theme;
         let v = &self.view.values;
@@ -123,6 +164,33 @@ impl FlightPanel<'_> {
         lines
     }
 
+    /// The bounce's way out first, then the end, the landing and the way in: the narrow
+    /// readout's order, whose few rows cut the least telling last.
+    fn shot_lines_short(&self) -> Vec<Line<'static>> {
+        let t = self.theme;
+        let Some(r) = self.view.report() else {
+            return self.shot_lines();
+        };
+        let mut lines = Vec::new();
+        if let Some(b) = r.bounces.first() {
+            lines.push(Line::styled(format!("leaves · {}", slid_words(b)), t.dim()));
+            lines.push(Line::raw(way(b.v_out, b.angle_out, b.spin_out)));
+        }
+        lines.push(Line::raw(landing(
+            "lands again",
+            r.end.state.x,
+            r.end.state.t,
+        )));
+        if let Some(b) = r.bounces.first() {
+            lines.push(Line::styled(landing("lands", b.x, b.t), t.dim()));
+            lines.push(Line::raw(format!(
+                "in {}",
+                way(b.v_in, b.angle_in, b.spin_in)
+            )));
+        }
+        lines
+    }
+
     /// The landing, the bounce and the end.
     fn shot_lines(&self) -> Vec<Line<'static>> {
         let t = self.theme;
@@ -135,39 +203,43 @@ impl FlightPanel<'_> {
         let mut lines = Vec::new();
         if let Some(b) = r.bounces.first() {
             lines.push(Line::styled("lands", t.dim()));
+            lines.push(Line::raw(landing("", b.x, b.t).trim_start().to_string()));
             lines.push(Line::raw(format!(
-                "x {} m  t {} s",
-                sig(b.x, 4),
-                sig(b.t, 4)
-            )));
-            lines.push(Line::raw(format!(
-                // the spin with its unit, the angle in four digits, as the launch lines
-                // write them (issue 51 item 4: "ω 200.0" bare, "11.2°")
-                "in {} m/s at {}°  ω {} rad/s",
-                sig(b.v_in, 4),
-                sig(b.angle_in, 4),
-                sig(b.spin_in, 4)
+                "in {}",
+                way(b.v_in, b.angle_in, b.spin_in)
             )));
             lines.push(Line::styled("leaves", t.dim()));
-            lines.push(Line::raw(format!(
-                "{} m/s at {}°  ω {} rad/s",
-                sig(b.v_out, 4),
-                sig(b.angle_out, 4),
-                sig(b.spin_out, 4)
-            )));
-            let slid = if b.slid_throughout {
-                "slid throughout"
-            } else {
-                "slid, then gripped"
-            };
-            lines.push(Line::styled(slid, t.dim()));
+            lines.push(Line::raw(way(b.v_out, b.angle_out, b.spin_out)));
+            lines.push(Line::styled(slid_words(b), t.dim()));
         }
         let e = r.end.state;
-        lines.push(Line::raw(format!(
-            "lands again x {} m  t {} s",
-            sig(e.x, 4),
-            sig(e.t, 4)
-        )));
+        lines.push(Line::raw(landing("lands again", e.x, e.t)));
         lines
+    }
+}
+
+/// "21.96 m/s at 14.27°  ω 215.3 rad/s": a way into or out of the bounce, the spin with its
+/// unit and the angle in four digits, as the launch lines write them (issue 51 item 4:
+/// "ω 200.0" bare, "11.2°").
+fn way(v: f64, angle: f64, spin: f64) -> String {
+    format!(
+        "{} m/s at {}°  ω {} rad/s",
+        sig(v, 4),
+        sig(angle, 4),
+        sig(spin, 4)
+    )
+}
+
+/// "lands again x 23.45 m  t 1.234 s".
+fn landing(what: &str, x: f64, t: f64) -> String {
+    format!("{what} x {} m  t {} s", sig(x, 4), sig(t, 4))
+}
+
+/// How the ball met the surface.
+fn slid_words(b: &crate::api::ShotBounce) -> &'static str {
+    if b.slid_throughout {
+        "slid throughout"
+    } else {
+        "slid, then gripped"
     }
 }

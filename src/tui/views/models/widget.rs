@@ -72,14 +72,33 @@ impl ModelsTable<'_> {
         Line::styled(text, style)
     }
 
-    fn lines(&self, inner_w: usize) -> Vec<Line<'static>> {
+    /// The ball's setting and the target: "λ 1.000 ζ 0.06571 v0 1.470 m/s" over "target e
+    /// 0.8404 = C–Y at v0"; where the first is wider than the table (λ 0.9333 ζ 0.07122 at
+    /// 80 × 24: its "m/s" wrapped, pushing the table down a row), v0 goes to the second line.
+    fn head(&self, target: Option<f64>, inner_w: usize) -> Vec<Line<'static>> {
         let (lambda, zeta, v0) = self.setting;
-        let mut lines = vec![Line::raw(format!(
-            "λ {} ζ {} v0 {} m/s",
-            sig(lambda, 4),
-            sig(zeta, 4),
-            sig(v0, 4)
-        ))];
+        let (lambda, zeta, v0) = (sig(lambda, 4), sig(zeta, 4), sig(v0, 4));
+        let whole = format!("λ {lambda} ζ {zeta} v0 {v0} m/s");
+        let Some(e) = target else {
+            return vec![Line::raw(whole)];
+        };
+        let e = sig(e, 4);
+        if whole.chars().count() <= inner_w {
+            vec![
+                Line::raw(whole),
+                Line::raw(format!("target e {e} = C–Y at v0")),
+            ]
+        } else {
+            vec![
+                Line::raw(format!("λ {lambda} ζ {zeta}")),
+                Line::raw(format!("v0 {v0} m/s: target e {e}")),
+            ]
+        }
+    }
+
+    /// The table, then the notes that go where there is room.
+    fn lines(&self, inner_w: usize) -> (Vec<Line<'static>>, Vec<Line<'static>>) {
+        let mut lines = self.head(self.data.map(|d| d.target), inner_w);
         let Some(d) = self.data else {
             let text = match self.error {
                 _ if self.no_rebound => "no rebound at this v0: the ball sinks into the \
@@ -95,12 +114,8 @@ impl ModelsTable<'_> {
                 self.theme.dim()
             };
             lines.push(Line::styled(text, style));
-            return lines;
+            return (lines, Vec::new());
         };
-        lines.push(Line::raw(format!(
-            "target e {} = C–Y at v0",
-            sig(d.target, 4)
-        )));
         let miss = inner_w >= WIDTH_FOR_MISS;
         // "damping" right-aligned over the damping column (1 + 8 + 1 + 6 cells)
         let head = format!(
@@ -128,14 +143,13 @@ impl ModelsTable<'_> {
             "C C–Y  h H–C α fixed  ◆ target",
             self.theme.dim(),
         ));
-        // notes, where there is room (a short panel cuts them off)
-        lines.push(Line::raw(""));
+        let mut notes = vec![Line::raw("")];
         if miss {
-            lines.push(Line::raw("Δe: the rule's COR − target"));
+            notes.push(Line::raw("Δe: the rule's COR − target"));
         }
-        lines.push(Line::raw("for a DEM code's input file:"));
-        lines.push(Line::raw("bouncelab peers --export CODE"));
-        lines
+        notes.push(Line::raw("for a DEM code's input file:"));
+        notes.push(Line::raw("bouncelab peers --export CODE"));
+        (lines, notes)
     }
 }
 
@@ -157,8 +171,16 @@ impl Widget for &ModelsTable<'_> {
         let block = Block::bordered()
             .border_style(self.theme.dim())
             .title(Line::styled(" rule → COR obtained ", self.theme.title()));
-        let inner_w = usize::from(block.inner(area).width);
-        Paragraph::new(self.lines(inner_w))
+        let inner = block.inner(area);
+        let inner_w = usize::from(inner.width);
+        // a short panel cuts the table at a row, marked (60 × 20: tests/tui/tui_small.rs);
+        // the notes fill what rows are left after the whole table, as many as fit
+        let rows = usize::from(inner.height);
+        let (table, notes) = self.lines(inner_w);
+        let mut lines = crate::tui::widgets::cut::kept(table, inner_w, rows);
+        let room = rows.saturating_sub(crate::tui::widgets::cut::rows(&lines, inner_w));
+        lines.extend(notes.into_iter().take(room));
+        Paragraph::new(lines)
             .block(block)
             .wrap(Wrap { trim: false })
             .render(area, buf);
