@@ -121,6 +121,9 @@ pub struct App {
     /// The calibration warning as the last refresh found it (`App::calibration`): when one
     /// appears the message line says it whole (src/tui/app/calibration.rs).
     pub(in crate::tui) calibration_said: Option<String>,
+    /// The session last saved (`S`) or opened (`--session`): `q` does not ask for the pins,
+    /// measured file and fit it holds (src/tui/app/quit.rs).
+    pub(in crate::tui) saved: Option<crate::tui::session::Session>,
 }
 
 impl App {
@@ -177,6 +180,7 @@ impl App {
             oblique: Default::default(),
             flight: Default::default(),
             calibration_said: None,
+            saved: None,
         };
         app.keep();
         app.refresh();

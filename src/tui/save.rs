@@ -85,7 +85,11 @@ pub fn preset_for(source: &Preset, setting: &Setting, name: &str) -> (Preset, Ve
         sig_trim(p.v0, 6),
     );
     let measured_v0 = source.measured.v0;
+    // the conditions typed in the form, when they are not the record's (the measurements'):
+    // the saved parameters are the ball's at them
+    let moved = crate::tui::physical::conditions::library_ball(source, setting).conditions_moved();
     let same_speed = (p.v0 - measured_v0).abs() <= 1e-9 * measured_v0;
+    let here = same_speed && moved.is_none();
     let had_results = [
         source.measured.cor,
         source.measured.max_force,
@@ -93,14 +97,24 @@ pub fn preset_for(source: &Preset, setting: &Setting, name: &str) -> (Preset, Ve
     ]
     .iter()
     .any(Option::is_some);
-    // A measurement belongs to the speed it was taken at: keep cor, max_force and contact_time
-    // only at that speed (they are then still this ball's, whatever λ and ζ are now; the
-    // explorer shows the difference). At another speed they would be shown, and read, as
-    // measured at this one, so they are left out; mass and radius stay, they hold at any
-    // speed.
-    let left_out = !same_speed && had_results;
-    let header = header_lines(source, setting.law, [&lambda, &zeta, &v0], left_out);
-    let keep = |x: Option<f64>| x.filter(|_| same_speed);
+    // A measurement belongs to the speed and conditions it was taken at: keep cor, max_force
+    // and contact_time only there (they are then still this ball's, whatever λ and ζ are now;
+    // the explorer shows the difference). Elsewhere they would be shown, and read, as
+    // measured there, so they are left out; mass and radius stay, they hold at any speed.
+    // (Keeping them with the record's conditions would not do: the saved K_p, K_r, c are the
+    // ball's at the new conditions, and a record would carry them on from the old.)
+    let why = match (!same_speed, moved) {
+        (_, Some(m)) => Some(LeftOut::Conditions(m)),
+        (true, None) => Some(LeftOut::Speed),
+        (false, None) => None,
+    };
+    let header = header_lines(
+        source,
+        setting.law,
+        [&lambda, &zeta, &v0],
+        why.filter(|_| had_results),
+    );
+    let keep = |x: Option<f64>| x.filter(|_| here);
     let base = source
         .description
         .split(SAVED_TAG)
@@ -125,7 +139,7 @@ pub fn preset_for(source: &Preset, setting: &Setting, name: &str) -> (Preset, Ve
             contact_time: keep(source.measured.contact_time),
             inertia_factor: source.measured.inertia_factor,
             // the air of the drops the values came from goes with them
-            drops: source.measured.drops.filter(|_| same_speed),
+            drops: source.measured.drops.filter(|_| here),
         },
         material: source.material.clone(),
         adopted: Adopted {
@@ -145,13 +159,22 @@ pub fn preset_for(source: &Preset, setting: &Setting, name: &str) -> (Preset, Ve
     (preset, header)
 }
 
+/// Why a saved preset leaves its source's measurements out.
+enum LeftOut {
+    /// They were taken at another speed.
+    Speed,
+    /// They were taken at the record's conditions, and the ball is at these (the library's
+    /// words: "the ball at …; its record at …").
+    Conditions(String),
+}
+
 /// The comment lines at the top of a saved preset's file: where it came from, what
-/// `[adopted]` holds, and which measurements were `left_out` (taken at another speed).
+/// `[adopted]` holds, and why the measurements were left out, if they were.
 fn header_lines(
     source: &Preset,
     law: ContactLaw,
     [lambda, zeta, v0]: [&str; 3],
-    left_out: bool,
+    left_out: Option<LeftOut>,
 ) -> Vec<String> {
     let mut header = vec![
         format!(
@@ -170,15 +193,26 @@ fn header_lines(
         ));
         header.push("[adopted] (K_h now follows Eq. 16 from K_p and z_p).".into());
     }
-    if left_out {
-        header.push(format!(
-            "The measured COR, peak force and contact time of '{}' were taken at",
-            source.name
-        ));
-        header.push(format!(
-            "{} m/s, not at {v0} m/s: left out. [measured] v0 is the speed this preset runs at.",
-            sig_trim(source.measured.v0, 6)
-        ));
+    match left_out {
+        Some(LeftOut::Speed) => {
+            header.push(format!(
+                "The measured COR, peak force and contact time of '{}' were taken at",
+                source.name
+            ));
+            header.push(format!(
+                "{} m/s, not at {v0} m/s: left out. [measured] v0 is the speed this preset runs at.",
+                sig_trim(source.measured.v0, 6)
+            ));
+        }
+        Some(LeftOut::Conditions(moved)) => {
+            header.push(format!(
+                "The measured COR, peak force and contact time of '{}' were taken at its",
+                source.name
+            ));
+            header.push("record's conditions, not at this ball's: left out.".into());
+            header.push(format!("({moved})"));
+        }
+        None => {}
     }
     header
 }

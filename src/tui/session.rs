@@ -98,7 +98,23 @@ fn param_name(p: Param) -> &'static str {
 impl App {
     /// The session of the current state (`S`).
     pub fn session(&self) -> Session {
-        let ball = |s: &Setting| Ball {
+        Session {
+            version: VERSION,
+            view: self.view.name().into(),
+            selected: param_name(self.selected).into(),
+            measured: self.fit.loaded.as_ref().map(|l| l.path.clone()),
+            ball: self.session_ball(&self.setting),
+            map: Some(map::MapState::of(&self.map)),
+            fit: self.fit.pane.as_ref().and_then(fit::Fit::of),
+            oblique: Some(oblique::ObliqueState::of(&self.oblique)),
+            flight: Some(flight::FlightState::of(&self.flight)),
+            pins: self.pins.iter().map(|g| self.session_ball(&g.setting)).collect(),
+        }
+    }
+
+    /// A setting as the session file holds it.
+    pub(in crate::tui) fn session_ball(&self, s: &Setting) -> Ball {
+        Ball {
             preset: self.presets[s.preset].name.clone(),
             law: s.law.name().into(),
             radius: s.radius,
@@ -112,18 +128,6 @@ impl App {
             surface: s.surface.as_ref().map(|x| x.name.clone()),
             tangential_damping: s.tangential_damping,
             params: s.params,
-        };
-        Session {
-            version: VERSION,
-            view: self.view.name().into(),
-            selected: param_name(self.selected).into(),
-            measured: self.fit.loaded.as_ref().map(|l| l.path.clone()),
-            ball: ball(&self.setting),
-            map: Some(map::MapState::of(&self.map)),
-            fit: self.fit.pane.as_ref().and_then(fit::Fit::of),
-            oblique: Some(oblique::ObliqueState::of(&self.oblique)),
-            flight: Some(flight::FlightState::of(&self.flight)),
-            pins: self.pins.iter().map(|g| ball(&g.setting)).collect(),
         }
     }
 
@@ -161,6 +165,7 @@ impl App {
         }
         self.undo.clear();
         self.keep();
+        self.saved = Some(session.clone());
         self.message = None;
         // a session goes on where it was: its readout shows the calibration warning, the
         // message line stays clear (src/tui/app/calibration.rs says it only on a fresh start)

@@ -1,7 +1,7 @@
 //! Quitting (issue 29): Esc never quits; `q` quits at once when nothing would be lost, else
 //! asks first, naming what would go — a change to the ball, the target or the oblique inputs
-//! since the start or the last `S` (issue 51), the pins, the measured data, the fit — and a
-//! second `q` (or `y`) quits; Ctrl-C quits at once, as an interrupt.
+//! since the start or the last `S` (issue 51), the pins, the measured data, the fit that `S`
+//! has not saved — and a second `q` (or `y`) quits; Ctrl-C quits at once, as an interrupt.
 
 use super::{App, Undoable};
 use crate::tui::state::Overlay;
@@ -26,18 +26,30 @@ impl App {
     }
 
     /// What quitting would lose, as the question names it: "2 pins, measured data, the fit,
-    /// your changes (S saves them)".
+    /// your changes (S saves them)". What the session last saved or opened holds is not lost:
+    /// its pins, its measured file (by path) and its fit.
     pub fn at_stake(&self) -> Option<String> {
         let mut lost = Vec::new();
-        match self.pins.len() {
+        let saved = self.saved.as_ref();
+        let held = saved.map_or(&[][..], |s| &s.pins[..]);
+        let pins = self
+            .pins
+            .iter()
+            .filter(|g| !held.contains(&self.session_ball(&g.setting)))
+            .count();
+        match pins {
             0 => {}
             1 => lost.push("1 pin".to_string()),
             n => lost.push(format!("{n} pins")),
         }
-        if self.fit.loaded.is_some() || !self.fit.overlays.is_empty() {
+        let path = self.fit.loaded.as_ref().map(|l| &l.path);
+        let file_held = path.is_some() && saved.is_some_and(|s| s.measured.as_ref() == path);
+        if (path.is_some() || !self.fit.overlays.is_empty()) && !file_held {
             lost.push("measured data".into());
         }
-        if self.fit.pane.is_some() {
+        let fit = self.fit.pane.as_ref().and_then(crate::tui::session::fit::Fit::of);
+        let fit_held = fit.is_some() && saved.is_some_and(|s| s.fit == fit);
+        if self.fit.pane.is_some() && !fit_held {
             lost.push("the fit".into());
         }
         // a change undone back to the start is none (tests/tui/tui_quit.rs:
