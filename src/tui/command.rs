@@ -77,11 +77,7 @@ pub fn explorer_line(source: Source, preset: &Preset, setting: &Setting) -> Stri
 /// from them: `run` against the wall or a surface; `collide` on a target (`--target-mass`, …,
 /// which `run` does not take), the ball's K_r and c then as `--k-r`, `--damping` (`collide`
 /// takes no `--lambda`, `--zeta`; the explorer takes both forms).
-fn impact_words(
-    source: Source,
-    preset: &Preset,
-    setting: &Setting,
-) -> (&'static str, Vec<String>) {
+fn impact_words(source: Source, preset: &Preset, setting: &Setting) -> (&'static str, Vec<String>) {
     let meets = what_the_ball_meets(setting);
     if meets.iter().any(|w| w.starts_with("--target-")) {
         let mut words = ball_by_k_r(source, preset, setting);

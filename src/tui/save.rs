@@ -14,11 +14,12 @@
 //! `[measured] v0` = the current speed, so loading it back gives the same λ, ζ, v0 and law
 //! bit for bit.
 
+mod header;
+
 use super::action::Action;
 use super::export::{file_name_char, file_stem_part, short_dir};
 use super::setting::Setting;
 use crate::catalog::{self, Catalog, Origin};
-use crate::model::contact::ContactLaw;
 use crate::preset::{Adopted, EMBEDDED, Measured, ParamSource, Preset};
 use crate::text::{io_text, sig_trim};
 use std::io;
@@ -84,12 +85,8 @@ pub fn preset_for(source: &Preset, setting: &Setting, name: &str) -> (Preset, Ve
         sig_trim(n.zeta, 6),
         sig_trim(p.v0, 6),
     );
-    let measured_v0 = source.measured.v0;
-    // the conditions typed in the form, when they are not the record's (the measurements'):
-    // the saved parameters are the ball's at them
-    let moved = crate::tui::physical::conditions::library_ball(source, setting).conditions_moved();
-    let same_speed = (p.v0 - measured_v0).abs() <= 1e-9 * measured_v0;
-    let here = same_speed && moved.is_none();
+    let why = header::elsewhere(source, setting);
+    let here = why.is_none();
     let had_results = [
         source.measured.cor,
         source.measured.max_force,
@@ -101,19 +98,8 @@ pub fn preset_for(source: &Preset, setting: &Setting, name: &str) -> (Preset, Ve
     // and contact_time only there (they are then still this ball's, whatever λ and ζ are now;
     // the explorer shows the difference). Elsewhere they would be shown, and read, as
     // measured there, so they are left out; mass and radius stay, they hold at any speed.
-    // (Keeping them with the record's conditions would not do: the saved K_p, K_r, c are the
-    // ball's at the new conditions, and a record would carry them on from the old.)
-    let why = match (!same_speed, moved) {
-        (_, Some(m)) => Some(LeftOut::Conditions(m)),
-        (true, None) => Some(LeftOut::Speed),
-        (false, None) => None,
-    };
-    let header = header_lines(
-        source,
-        setting.law,
-        [&lambda, &zeta, &v0],
-        why.filter(|_| had_results),
-    );
+    let why = why.filter(|_| had_results);
+    let header = header::lines(source, setting.law, [&lambda, &zeta, &v0], why);
     let keep = |x: Option<f64>| x.filter(|_| here);
     let base = source
         .description
@@ -157,64 +143,6 @@ pub fn preset_for(source: &Preset, setting: &Setting, name: &str) -> (Preset, Ve
         }),
     };
     (preset, header)
-}
-
-/// Why a saved preset leaves its source's measurements out.
-enum LeftOut {
-    /// They were taken at another speed.
-    Speed,
-    /// They were taken at the record's conditions, and the ball is at these (the library's
-    /// words: "the ball at …; its record at …").
-    Conditions(String),
-}
-
-/// The comment lines at the top of a saved preset's file: where it came from, what
-/// `[adopted]` holds, and why the measurements were left out, if they were.
-fn header_lines(
-    source: &Preset,
-    law: ContactLaw,
-    [lambda, zeta, v0]: [&str; 3],
-    left_out: Option<LeftOut>,
-) -> Vec<String> {
-    let mut header = vec![
-        format!(
-            "Saved from the bouncelab explorer, from the preset '{}'.",
-            source.name
-        ),
-        format!(
-            "λ = {lambda}, ζ = {zeta}, v0 = {v0} m/s, {law} law. [adopted] holds the K_r and c"
-        ),
-        "that give this λ and ζ with the ball's own m and K_p.".into(),
-    ];
-    if source.parameters == ParamSource::Materials {
-        header.push(format!(
-            "'{}' ran on the set derived from its material data: that set is written as",
-            source.name
-        ));
-        header.push("[adopted] (K_h now follows Eq. 16 from K_p and z_p).".into());
-    }
-    match left_out {
-        Some(LeftOut::Speed) => {
-            header.push(format!(
-                "The measured COR, peak force and contact time of '{}' were taken at",
-                source.name
-            ));
-            header.push(format!(
-                "{} m/s, not at {v0} m/s: left out. [measured] v0 is the speed this preset runs at.",
-                sig_trim(source.measured.v0, 6)
-            ));
-        }
-        Some(LeftOut::Conditions(moved)) => {
-            header.push(format!(
-                "The measured COR, peak force and contact time of '{}' were taken at its",
-                source.name
-            ));
-            header.push("record's conditions, not at this ball's: left out.".into());
-            header.push(format!("({moved})"));
-        }
-        None => {}
-    }
-    header
 }
 
 /// The save of `setting` (from the preset `source`) as `name` (checked with [`check_name`]

@@ -108,7 +108,11 @@ impl App {
             fit: self.fit.pane.as_ref().and_then(fit::Fit::of),
             oblique: Some(oblique::ObliqueState::of(&self.oblique)),
             flight: Some(flight::FlightState::of(&self.flight)),
-            pins: self.pins.iter().map(|g| self.session_ball(&g.setting)).collect(),
+            pins: self
+                .pins
+                .iter()
+                .map(|g| self.session_ball(&g.setting))
+                .collect(),
         }
     }
 

@@ -47,7 +47,11 @@ impl App {
         if (path.is_some() || !self.fit.overlays.is_empty()) && !file_held {
             lost.push("measured data".into());
         }
-        let fit = self.fit.pane.as_ref().and_then(crate::tui::session::fit::Fit::of);
+        let fit = self
+            .fit
+            .pane
+            .as_ref()
+            .and_then(crate::tui::session::fit::Fit::of);
         let fit_held = fit.is_some() && saved.is_some_and(|s| s.fit == fit);
         if self.fit.pane.is_some() && !fit_held {
             lost.push("the fit".into());
