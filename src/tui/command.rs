@@ -46,7 +46,7 @@ pub fn shell_word(s: &str) -> String {
 
 /// The line that computes the impact of `setting` of the ball `preset` found at `source`
 /// (the export's CSV header: it reproduces the data): the explorer's line's words after the
-/// subcommand that takes them ([`impact_words`]), `bouncelab run …` against the wall or a
+/// subcommand that takes them, `bouncelab run …` against the wall or a
 /// surface, `bouncelab collide …` on a target. c_t (`--tangential-damping`) acts along the
 /// surface only: the normal impact does not use it, and neither subcommand takes it.
 pub fn run_line(source: Source, preset: &Preset, setting: &Setting) -> String {
