@@ -8,8 +8,8 @@
 use crate::common;
 use crate::tui_common;
 
-use bouncelab::tui::action::{Action, Scroll};
-use bouncelab::tui::app::{App, Effect, Overlay};
+use bouncelab::tui::action::Action;
+use bouncelab::tui::app::{App, Effect};
 use bouncelab::tui::physical::Field;
 use common::embedded;
 use ratatui::crossterm::event::KeyCode;
@@ -98,22 +98,8 @@ fn on_a_target_the_header_and_y_name_collide_and_run_the_screen_s_pair() {
 #[test]
 fn on_a_surface_the_header_carries_it_and_runs_the_screen() {
     let mut app = App::new(embedded("tennis"), false);
-    press(&mut app, &[KeyCode::Char('G')]);
     let empty = tempfile::tempdir().unwrap();
-    let (entries, error) = bouncelab::tui::surface::list_in(Some(empty.path()));
-    assert_eq!(error, None);
-    let at = entries
-        .iter()
-        .position(|e| e.surface.name == "clay")
-        .unwrap();
-    app.update(Action::SurfacesListed(entries, None));
-    app.update(Action::PickerMove(Scroll::Home));
-    for _ in 0..at {
-        app.update(Action::PickerMove(Scroll::Down));
-    }
-    app.update(Action::PickerChoose);
-    app.refresh();
-    assert!(matches!(app.overlay(), Overlay::None));
+    pick_surface(&mut app, empty.path(), "clay");
     let header = header_command(&mut app);
     assert!(header.contains("--surface clay"), "{header}");
     assert_header_is_y_s_words(&app, &header, "run");
