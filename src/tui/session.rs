@@ -12,7 +12,7 @@ pub mod flight;
 pub mod map;
 pub mod oblique;
 
-use super::app::App;
+use super::app::{App, Held};
 use super::param::Param;
 use super::setting::Setting;
 use super::state::View;
@@ -116,8 +116,19 @@ impl App {
         }
     }
 
+    /// What the session of this state holds of what `q` asks for (src/tui/app/quit.rs).
+    pub(in crate::tui) fn held(&self) -> Held {
+        Held {
+            pins: self.pins.iter().map(|g| g.setting.clone()).collect(),
+            measured: self.fit.loaded.as_ref().map(|l| l.path.clone()),
+            fit: (self.fit.pane.as_ref())
+                .and_then(fit::Fit::of)
+                .map(|f| format!("{f:?}")),
+        }
+    }
+
     /// A setting as the session file holds it.
-    pub(in crate::tui) fn session_ball(&self, s: &Setting) -> Ball {
+    fn session_ball(&self, s: &Setting) -> Ball {
         Ball {
             preset: self.presets[s.preset].name.clone(),
             law: s.law.name().into(),
@@ -169,7 +180,11 @@ impl App {
         }
         self.undo.clear();
         self.keep();
-        self.saved = Some(session.clone());
+        // the measured file is read after this, by the caller: held by path already
+        self.session_held = Some(Held {
+            measured: session.measured.clone(),
+            ..self.held()
+        });
         self.message = None;
         // a session goes on where it was: its readout shows the calibration warning, the
         // message line stays clear (src/tui/app/calibration.rs says it only on a fresh start)

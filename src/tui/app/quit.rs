@@ -3,8 +3,19 @@
 //! since the start or the last `S` (issue 51), the pins, the measured data, the fit that `S`
 //! has not saved — and a second `q` (or `y`) quits; Ctrl-C quits at once, as an interrupt.
 
-use super::{App, Undoable};
+use super::{App, Setting, Undoable};
 use crate::tui::state::Overlay;
+use std::path::PathBuf;
+
+/// What a session file holds of what `q` would otherwise ask for: the pins' settings, the
+/// measured file by path, and the fit as the file writes it (its fields, in `Debug` form:
+/// the app does not name the session's types, which name the app's).
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Held {
+    pub pins: Vec<Setting>,
+    pub measured: Option<PathBuf>,
+    pub fit: Option<String>,
+}
 
 impl App {
     /// `q`: quit, or ask first when work would be lost; in the question, quit.
@@ -30,29 +41,21 @@ impl App {
     /// its pins, its measured file (by path) and its fit.
     pub fn at_stake(&self) -> Option<String> {
         let mut lost = Vec::new();
-        let saved = self.saved.as_ref();
-        let held = saved.map_or(&[][..], |s| &s.pins[..]);
-        let pins = self
-            .pins
-            .iter()
-            .filter(|g| !held.contains(&self.session_ball(&g.setting)))
+        let held = self.session_held.as_ref();
+        let now = self.held();
+        let pins = (now.pins.iter())
+            .filter(|p| !held.is_some_and(|h| h.pins.contains(p)))
             .count();
         match pins {
             0 => {}
             1 => lost.push("1 pin".to_string()),
             n => lost.push(format!("{n} pins")),
         }
-        let path = self.fit.loaded.as_ref().map(|l| &l.path);
-        let file_held = path.is_some() && saved.is_some_and(|s| s.measured.as_ref() == path);
-        if (path.is_some() || !self.fit.overlays.is_empty()) && !file_held {
+        let file_held = now.measured.is_some() && held.is_some_and(|h| h.measured == now.measured);
+        if (now.measured.is_some() || !self.fit.overlays.is_empty()) && !file_held {
             lost.push("measured data".into());
         }
-        let fit = self
-            .fit
-            .pane
-            .as_ref()
-            .and_then(crate::tui::session::fit::Fit::of);
-        let fit_held = fit.is_some() && saved.is_some_and(|s| s.fit == fit);
+        let fit_held = now.fit.is_some() && held.is_some_and(|h| h.fit == now.fit);
         if self.fit.pane.is_some() && !fit_held {
             lost.push("the fit".into());
         }
