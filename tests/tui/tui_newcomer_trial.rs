@@ -125,11 +125,18 @@ fn after_s_q_asks_only_for_what_the_session_does_not_hold() {
     assert_eq!(app.at_stake().as_deref(), Some("1 pin"));
     press(&mut app, &[KeyCode::Char('S')]);
     let effects = app.update(Action::InputSubmit);
-    let [Effect::SaveSession { path, .. }] = effects.as_slice() else {
+    let [Effect::SaveSession { path, text, .. }] = effects.as_slice() else {
         panic!("{effects:?}")
     };
     app.update(Action::SessionSaved(path.clone()));
     assert_eq!(app.at_stake(), None);
+    // the session opened again (`--session`) holds its pin too
+    let read = bouncelab::tui::session::Session::parse(path, text).unwrap();
+    let back = App::new(embedded("baseball"), false)
+        .with_session(&read)
+        .unwrap();
+    assert_eq!(back.pins().len(), 1);
+    assert_eq!(back.at_stake(), None);
     press(&mut app, &[KeyCode::Char('q')]);
     assert!(app.should_quit(), "nothing to lose: q quits at once");
     // a pin after the save is not in the file
