@@ -112,7 +112,7 @@ fn zeta_series(
         );
     }
     let names: Vec<&str> = balls.iter().map(|b| b.name.as_str()).collect();
-    let letters = initials(&names);
+    let letters = marks(&names);
     for (i, b) in balls.iter().enumerate() {
         let Some(value) = measured(b) else { continue };
         let n = b.params.normalized();
@@ -177,6 +177,19 @@ pub fn initials(names: &[&str]) -> Vec<String> {
             .unwrap_or_default();
         out.push(mark);
     }
+    out
+}
+
+/// The marks of the balls `names` drawn: their [`initials`] among themselves and every
+/// embedded preset's name after them, so that a ball has the mark docs/explorer.md gives it
+/// whichever balls are drawn: table tennis is "TT" though tennis is not drawn beside it (the
+/// explorer draws the paper's three balls and the one it started on).
+pub fn marks(names: &[&str]) -> Vec<String> {
+    let mut all = names.to_vec();
+    let others = crate::preset::EMBEDDED.iter().map(|(n, _)| *n);
+    all.extend(others.filter(|n| !names.contains(n)));
+    let mut out = initials(&all);
+    out.truncate(names.len());
     out
 }
 
@@ -355,5 +368,18 @@ mod tests {
         assert_eq!(initials(&["superball", "superball-custom"]), ["S", "SC"]);
         assert_eq!(initials(&["softball", "softball-44"]), ["S", "S4"]);
         assert_eq!(initials(&["table-tennis"]), ["T"]);
+    }
+
+    /// A ball's mark does not depend on which others are drawn: table tennis beside the paper's
+    /// three is "TT" (docs/explorer.md), their marks stay S, G, B.
+    #[test]
+    fn marks_are_the_same_whichever_balls_are_drawn() {
+        let drawn = ["superball", "golf", "baseball", "table-tennis"];
+        assert_eq!(super::marks(&drawn), ["S", "G", "B", "TT"]);
+        assert_eq!(
+            super::marks(&["superball", "golf", "baseball", "superball-custom"]),
+            ["S", "G", "B", "SC"]
+        );
+        assert_eq!(super::marks(&["superball", "softball"]), ["S", "So"]);
     }
 }

@@ -43,6 +43,7 @@ use crate::solver::ImpactResponse;
 use crate::tui::views::drop::state::DropView;
 use crate::tui::views::sweeps::speed::{SpeedCurve, SpeedRequest};
 pub use ask::put_away_what;
+pub use quit::Held;
 
 /// How many changes `u` can undo.
 const UNDO_DEPTH: usize = 500;
@@ -121,6 +122,9 @@ pub struct App {
     /// The calibration warning as the last refresh found it (`App::calibration`): when one
     /// appears the message line says it whole (src/tui/app/calibration.rs).
     pub(in crate::tui) calibration_said: Option<String>,
+    /// What the session last saved (`S`) or opened (`--session`) holds: `q` does not ask
+    /// for those pins, that measured file and fit (src/tui/app/quit.rs).
+    pub(in crate::tui) session_held: Option<Held>,
 }
 
 impl App {
@@ -177,6 +181,7 @@ impl App {
             oblique: Default::default(),
             flight: Default::default(),
             calibration_said: None,
+            session_held: None,
         };
         app.keep();
         app.refresh();

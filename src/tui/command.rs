@@ -1,5 +1,6 @@
-//! "Copy as command" (`y`): the `bouncelab run …` line that reproduces a setting of the
-//! explorer, and the `#` lines an export's CSV files start with (that line and the parameters).
+//! "Copy as command" (`y`): the explorer's line that opens it in a setting again, the
+//! `bouncelab run …` (or `collide …`) line with the same words that computes the setting's
+//! impact, and the `#` lines an export's CSV files start with (that line and the parameters).
 //!
 //! The line names the ball as `run` finds it — `--preset NAME` (embedded or user preset), or
 //! `--config FILE` for the preset the explorer was started on from a file — then the law when
@@ -43,22 +44,49 @@ pub fn shell_word(s: &str) -> String {
     }
 }
 
-/// The `bouncelab run` line that runs `setting` of the ball `preset` found at `source` (the
-/// export's CSV header: it reproduces the data).
+/// The line that computes the impact of `setting` of the ball `preset` found at `source`
+/// (the export's CSV header: it reproduces the data): the explorer's line's words after the
+/// subcommand that takes them, `bouncelab run …` against the wall or a
+/// surface, `bouncelab collide …` on a target. c_t (`--tangential-damping`) acts along the
+/// surface only: the normal impact does not use it, and neither subcommand takes it.
 pub fn run_line(source: Source, preset: &Preset, setting: &Setting) -> String {
-    let mut words = vec!["bouncelab".to_string(), "run".into()];
-    words.extend(options(source, preset, setting));
+    let (subcommand, options) = impact_words(source, preset, setting);
+    let mut words = vec!["bouncelab".to_string(), subcommand.into()];
+    let mut rest = options.into_iter();
+    while let Some(w) = rest.next() {
+        if w == "--tangential-damping" {
+            rest.next();
+        } else {
+            words.push(w);
+        }
+    }
     words.join(" ")
 }
 
 /// The explorer's line, `bouncelab --preset golf --law hertz --v0 3 …` (`y`, issue 29 item
-/// 2): `run`'s options without `run`, which open the explorer in this setting again
-/// (src/cli/explore.rs takes every option `run` takes; tests/tui/tui_roundtrip.rs parses it back).
+/// 2): the options that open the explorer in this setting again (src/cli/explore.rs takes
+/// every option `run` and `collide` take for a preset ball; tests/tui/tui_roundtrip.rs parses
+/// it back), the same words [`run_line`] gives its subcommand.
 pub fn explorer_line(source: Source, preset: &Preset, setting: &Setting) -> String {
     let mut words = vec!["bouncelab".to_string()];
-    words.extend(options(source, preset, setting));
-    words.extend(what_the_ball_meets(setting));
+    words.extend(impact_words(source, preset, setting).1);
     words.join(" ")
+}
+
+/// The options of the ball and of what it meets, and the subcommand that computes the impact
+/// from them: `run` against the wall or a surface; `collide` on a target (`--target-mass`, …,
+/// which `run` does not take), the ball's K_r and c then as `--k-r`, `--damping` (`collide`
+/// takes no `--lambda`, `--zeta`; the explorer takes both forms).
+fn impact_words(source: Source, preset: &Preset, setting: &Setting) -> (&'static str, Vec<String>) {
+    let meets = what_the_ball_meets(setting);
+    if meets.iter().any(|w| w.starts_with("--target-")) {
+        let mut words = ball_by_k_r(source, preset, setting);
+        words.extend(meets);
+        return ("collide", words);
+    }
+    let mut words = options(source, preset, setting);
+    words.extend(meets);
+    ("run", words)
 }
 
 /// The options of what the ball meets, after the ball's: the target off the wall

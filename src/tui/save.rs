@@ -14,11 +14,12 @@
 //! `[measured] v0` = the current speed, so loading it back gives the same λ, ζ, v0 and law
 //! bit for bit.
 
+mod header;
+
 use super::action::Action;
 use super::export::{file_name_char, file_stem_part, short_dir};
 use super::setting::Setting;
 use crate::catalog::{self, Catalog, Origin};
-use crate::model::contact::ContactLaw;
 use crate::preset::{Adopted, EMBEDDED, Measured, ParamSource, Preset};
 use crate::text::{io_text, sig_trim};
 use std::io;
@@ -84,8 +85,8 @@ pub fn preset_for(source: &Preset, setting: &Setting, name: &str) -> (Preset, Ve
         sig_trim(n.zeta, 6),
         sig_trim(p.v0, 6),
     );
-    let measured_v0 = source.measured.v0;
-    let same_speed = (p.v0 - measured_v0).abs() <= 1e-9 * measured_v0;
+    let why = header::elsewhere(source, setting);
+    let here = why.is_none();
     let had_results = [
         source.measured.cor,
         source.measured.max_force,
@@ -93,14 +94,13 @@ pub fn preset_for(source: &Preset, setting: &Setting, name: &str) -> (Preset, Ve
     ]
     .iter()
     .any(Option::is_some);
-    // A measurement belongs to the speed it was taken at: keep cor, max_force and contact_time
-    // only at that speed (they are then still this ball's, whatever λ and ζ are now; the
-    // explorer shows the difference). At another speed they would be shown, and read, as
-    // measured at this one, so they are left out; mass and radius stay, they hold at any
-    // speed.
-    let left_out = !same_speed && had_results;
-    let header = header_lines(source, setting.law, [&lambda, &zeta, &v0], left_out);
-    let keep = |x: Option<f64>| x.filter(|_| same_speed);
+    // A measurement belongs to the speed and conditions it was taken at: keep cor, max_force
+    // and contact_time only there (they are then still this ball's, whatever λ and ζ are now;
+    // the explorer shows the difference). Elsewhere they would be shown, and read, as
+    // measured there, so they are left out; mass and radius stay, they hold at any speed.
+    let why = why.filter(|_| had_results);
+    let header = header::lines(source, setting.law, [&lambda, &zeta, &v0], why);
+    let keep = |x: Option<f64>| x.filter(|_| here);
     let base = source
         .description
         .split(SAVED_TAG)
@@ -125,7 +125,7 @@ pub fn preset_for(source: &Preset, setting: &Setting, name: &str) -> (Preset, Ve
             contact_time: keep(source.measured.contact_time),
             inertia_factor: source.measured.inertia_factor,
             // the air of the drops the values came from goes with them
-            drops: source.measured.drops.filter(|_| same_speed),
+            drops: source.measured.drops.filter(|_| here),
         },
         material: source.material.clone(),
         adopted: Adopted {
@@ -143,44 +143,6 @@ pub fn preset_for(source: &Preset, setting: &Setting, name: &str) -> (Preset, Ve
         }),
     };
     (preset, header)
-}
-
-/// The comment lines at the top of a saved preset's file: where it came from, what
-/// `[adopted]` holds, and which measurements were `left_out` (taken at another speed).
-fn header_lines(
-    source: &Preset,
-    law: ContactLaw,
-    [lambda, zeta, v0]: [&str; 3],
-    left_out: bool,
-) -> Vec<String> {
-    let mut header = vec![
-        format!(
-            "Saved from the bouncelab explorer, from the preset '{}'.",
-            source.name
-        ),
-        format!(
-            "λ = {lambda}, ζ = {zeta}, v0 = {v0} m/s, {law} law. [adopted] holds the K_r and c"
-        ),
-        "that give this λ and ζ with the ball's own m and K_p.".into(),
-    ];
-    if source.parameters == ParamSource::Materials {
-        header.push(format!(
-            "'{}' ran on the set derived from its material data: that set is written as",
-            source.name
-        ));
-        header.push("[adopted] (K_h now follows Eq. 16 from K_p and z_p).".into());
-    }
-    if left_out {
-        header.push(format!(
-            "The measured COR, peak force and contact time of '{}' were taken at",
-            source.name
-        ));
-        header.push(format!(
-            "{} m/s, not at {v0} m/s: left out. [measured] v0 is the speed this preset runs at.",
-            sig_trim(source.measured.v0, 6)
-        ));
-    }
-    header
 }
 
 /// The save of `setting` (from the preset `source`) as `name` (checked with [`check_name`]

@@ -12,7 +12,7 @@ pub mod flight;
 pub mod map;
 pub mod oblique;
 
-use super::app::App;
+use super::app::{App, Held};
 use super::param::Param;
 use super::setting::Setting;
 use super::state::View;
@@ -98,7 +98,38 @@ fn param_name(p: Param) -> &'static str {
 impl App {
     /// The session of the current state (`S`).
     pub fn session(&self) -> Session {
-        let ball = |s: &Setting| Ball {
+        Session {
+            version: VERSION,
+            view: self.view.name().into(),
+            selected: param_name(self.selected).into(),
+            measured: self.fit.loaded.as_ref().map(|l| l.path.clone()),
+            ball: self.session_ball(&self.setting),
+            map: Some(map::MapState::of(&self.map)),
+            fit: self.fit.pane.as_ref().and_then(fit::Fit::of),
+            oblique: Some(oblique::ObliqueState::of(&self.oblique)),
+            flight: Some(flight::FlightState::of(&self.flight)),
+            pins: self
+                .pins
+                .iter()
+                .map(|g| self.session_ball(&g.setting))
+                .collect(),
+        }
+    }
+
+    /// What the session of this state holds of what `q` asks for (src/tui/app/quit.rs).
+    pub(in crate::tui) fn held(&self) -> Held {
+        Held {
+            pins: self.pins.iter().map(|g| g.setting.clone()).collect(),
+            measured: self.fit.loaded.as_ref().map(|l| l.path.clone()),
+            fit: (self.fit.pane.as_ref())
+                .and_then(fit::Fit::of)
+                .map(|f| format!("{f:?}")),
+        }
+    }
+
+    /// A setting as the session file holds it.
+    fn session_ball(&self, s: &Setting) -> Ball {
+        Ball {
             preset: self.presets[s.preset].name.clone(),
             law: s.law.name().into(),
             radius: s.radius,
@@ -112,18 +143,6 @@ impl App {
             surface: s.surface.as_ref().map(|x| x.name.clone()),
             tangential_damping: s.tangential_damping,
             params: s.params,
-        };
-        Session {
-            version: VERSION,
-            view: self.view.name().into(),
-            selected: param_name(self.selected).into(),
-            measured: self.fit.loaded.as_ref().map(|l| l.path.clone()),
-            ball: ball(&self.setting),
-            map: Some(map::MapState::of(&self.map)),
-            fit: self.fit.pane.as_ref().and_then(fit::Fit::of),
-            oblique: Some(oblique::ObliqueState::of(&self.oblique)),
-            flight: Some(flight::FlightState::of(&self.flight)),
-            pins: self.pins.iter().map(|g| ball(&g.setting)).collect(),
         }
     }
 
@@ -161,6 +180,11 @@ impl App {
         }
         self.undo.clear();
         self.keep();
+        // the measured file is read after this, by the caller: held by path already
+        self.session_held = Some(Held {
+            measured: session.measured.clone(),
+            ..self.held()
+        });
         self.message = None;
         // a session goes on where it was: its readout shows the calibration warning, the
         // message line stays clear (src/tui/app/calibration.rs says it only on a fresh start)

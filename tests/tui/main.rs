@@ -45,6 +45,7 @@ mod tui_map_state;
 mod tui_marks;
 mod tui_models;
 mod tui_models_export;
+mod tui_newcomer_trial;
 mod tui_oblique;
 mod tui_oblique_export;
 mod tui_oblique_state;

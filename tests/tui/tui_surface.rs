@@ -10,7 +10,7 @@ use crate::common::embedded;
 use crate::tui_common;
 
 use bouncelab::tui::action::{Action, Scroll};
-use bouncelab::tui::app::{App, Effect, Overlay, View};
+use bouncelab::tui::app::{App, Overlay, View};
 use bouncelab::tui::physical::Field;
 use bouncelab::tui::session::Session;
 use bouncelab::tui::surface::list_in;
@@ -49,27 +49,6 @@ fn config_with_gym() -> tempfile::TempDir {
     dir
 }
 
-/// `G`, the loop's list from `config`, the highlight on `name`, Enter.
-fn pick(app: &mut App, config: &Path, name: &str) {
-    let effects = press(app, &[KeyCode::Char('G')]);
-    assert!(
-        effects.iter().any(|e| matches!(e, Effect::ListSurfaces)),
-        "{effects:?}"
-    );
-    let (entries, error) = list_in(Some(&config.join("bouncelab/surfaces")));
-    assert_eq!(error, None);
-    let at = entries.iter().position(|e| e.surface.name == name).unwrap();
-    app.update(Action::SurfacesListed(entries, None));
-    assert!(matches!(app.overlay(), Overlay::Surfaces(_)));
-    app.update(Action::PickerMove(Scroll::Home));
-    for _ in 0..at {
-        app.update(Action::PickerMove(Scroll::Down));
-    }
-    app.update(Action::PickerChoose);
-    app.refresh();
-    assert!(matches!(app.overlay(), Overlay::None));
-}
-
 fn words(line: &str) -> Vec<String> {
     line.split_whitespace().map(String::from).collect()
 }
@@ -94,7 +73,7 @@ fn the_picker_lists_the_surfaces_and_puts_the_ball_on_one() {
     assert!(matches!(app.overlay(), Overlay::None));
     // Enter: the target is the gym's, the oblique view's μ and K_t, the c_t
     let before = app.run().unwrap().cor;
-    pick(&mut app, config.path(), "gym");
+    pick_surface(&mut app, config.path(), "gym");
     let s = app.setting();
     assert_eq!((s.target.stiffness, s.target.damping), (4e5, 30.0));
     assert_eq!((s.target.mass, s.target.speed), (f64::INFINITY, 0.0));
@@ -164,7 +143,7 @@ fn the_picker_at_every_size() {
 fn the_oblique_view_bounces_on_the_surface_and_its_line_runs_to_the_screen() {
     let config = config_with_gym();
     let mut app = tennis();
-    pick(&mut app, config.path(), "gym");
+    pick_surface(&mut app, config.path(), "gym");
     press(&mut app, &[KeyCode::Char('i')]);
     assert_eq!(app.view(), View::Oblique);
     let text = screen_text(&draw(&app, 160, 50)).join("\n");
@@ -200,7 +179,7 @@ fn y_carries_the_surface_and_the_explorer_opens_on_it_again() {
     // an embedded surface, the form's K_s and c_s typed over it
     let mut app = tennis();
     let dir = tempfile::tempdir().unwrap();
-    pick(&mut app, dir.path(), "hard-court");
+    pick_surface(&mut app, dir.path(), "hard-court");
     for (field, text) in [
         (Field::TargetStiffness, "3e5"),
         (Field::TargetDamping, "12"),
@@ -236,7 +215,7 @@ fn y_carries_the_surface_and_the_explorer_opens_on_it_again() {
 fn a_session_keeps_the_surface() {
     let mut app = tennis();
     let dir = tempfile::tempdir().unwrap();
-    pick(&mut app, dir.path(), "clay");
+    pick_surface(&mut app, dir.path(), "clay");
     let text = app.session().to_toml();
     assert!(text.contains("surface = \"clay\""), "{text}");
     let read = Session::parse(Path::new("s.toml"), &text).unwrap();
@@ -313,7 +292,7 @@ fn the_compact_screen_names_the_surface_in_its_header() {
         let (first, s) = header(&app, w, h);
         assert!(first.contains("tennis on steel-plate ·"), "{w}×{h}:\n{s}");
     }
-    pick(&mut app, dir.path(), "clay");
+    pick_surface(&mut app, dir.path(), "clay");
     // impact, sweeps and map (the models view has its table beside the charts, no readout)
     for view in 0..4 {
         let (first, s) = header(&app, 80, 24);

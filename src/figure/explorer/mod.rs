@@ -343,7 +343,7 @@ fn speed_figure(scene: &Scene) -> Figure {
     if let Some(i) = names.iter().position(|n| *n == ball.name)
         && let Some(s) = fig.series.iter_mut().find(|s| s.id == "measured cor")
     {
-        s.look.text = Some(paper::initials(&names)[i].clone());
+        s.look.text = Some(paper::marks(&names)[i].clone());
     }
     let v_hi = [
         scene.speed.map(|s| s.v_max),

@@ -54,6 +54,7 @@ impl App {
         match action {
             Action::SessionSaved(path) => {
                 self.keep();
+                self.session_held = Some(self.held());
                 self.info(format!(
                     "session saved to {} (bouncelab --session {} restores it)",
                     path.display(),

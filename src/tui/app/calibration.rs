@@ -25,9 +25,20 @@ impl App {
     /// The message line says the calibration warning whole when the explorer opens outside
     /// the record (nothing to undo yet: a change's own message, "λ = 0.31", is not pushed
     /// aside), where the short readouts show it cut to a line. A warning or error already on
-    /// the message line stays; one that no longer holds leaves it.
+    /// the message line stays; the calibration warning said before gives way to the one that
+    /// holds now (the oblique view's, at v sin θ, once the explorer opens there), or goes when
+    /// none does.
     pub(super) fn say_calibration(&mut self) {
         let now = self.calibration();
+        let said = self.message.as_ref().map(|m| &m.text);
+        let ours = said.is_some() && said == self.calibration_said.as_ref();
+        if ours && now != self.calibration_said {
+            match &now {
+                Some(w) => self.warn(w.clone()),
+                // back inside the record (or in a view whose answer is inside it)
+                None => self.message = None,
+            }
+        }
         let quiet = self
             .message
             .as_ref()
@@ -38,12 +49,6 @@ impl App {
             && quiet
         {
             self.warn(w.clone());
-        }
-        // back inside the record (or in a view whose answer is inside it): a warning still on
-        // the message line is no longer true, and goes
-        let said = self.message.as_ref().map(|m| &m.text);
-        if now.is_none() && said.is_some() && said == self.calibration_said.as_ref() {
-            self.message = None;
         }
         self.calibration_said = now;
     }

@@ -1,5 +1,6 @@
 //! The explorer's line of the screen (`y`: `bouncelab --preset … --v0 …`) and the
-//! `bouncelab run …` line of the export's CSV header.
+//! `bouncelab run …` (`collide …` on a target) line of the export's CSV header: the same
+//! words, after the subcommand that computes them.
 
 use super::{App, Setting};
 use crate::tui::command::{self, Source};
@@ -115,7 +116,8 @@ impl App {
         command::explorer_line(source, preset, &self.setting)
     }
 
-    /// The `bouncelab run` line that runs what the screen shows (the export's CSV header).
+    /// The `bouncelab run` (or `collide`) line that computes what the screen shows, `y`'s
+    /// words after that subcommand (the export's CSV header).
     pub fn run_line(&self) -> String {
         self.command_for(&self.setting)
     }

@@ -55,6 +55,13 @@ impl App {
         if !preset_lambda_zeta(preset, &self.setting) {
             current.source = MODIFIED.into();
         }
+        // the measurements are of the record's conditions: not drawn beside a ball at others
+        // (the readout does not compare them either, as `run` withholds them)
+        if !self.setting.conditions.is_empty()
+            && let Some(m) = current.measured.as_mut()
+        {
+            (m.cor, m.max_force, m.contact_time) = (None, None, None);
+        }
         let pending = self.speed_requests().iter().map(|r| r.v_max);
         Scene {
             ball: current,

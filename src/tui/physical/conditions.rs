@@ -53,6 +53,22 @@ fn ball_of(preset: &Preset, params: ImpactParams, radius: f64) -> Ball {
     }
 }
 
+/// The library's ball of `s`: the preset's at the setting's conditions, as `run --pressure …
+/// --temperature …` makes it ([`Ball::at_conditions`]; at the record's where it cannot), with
+/// the setting's parameters and law, what those change from that ball its overrides. A typed
+/// pressure is so a condition, not a change of K_p, K_r, c: the ball's calibration warning
+/// and withheld comparison are `run`'s for the `y` line.
+pub fn library_ball(preset: &Preset, s: &Setting) -> Ball {
+    let own = ball_of(preset, preset.params(), s.radius);
+    let at = own.clone().at_conditions(&s.conditions).unwrap_or(own);
+    Ball {
+        overrides: crate::api::changed_params(&at.params, &s.params),
+        params: s.params,
+        law: s.law,
+        ..at
+    }
+}
+
 /// Whether `preset` is an inflated ball: its calibration records a gauge pressure.
 pub fn inflated(preset: &Preset) -> bool {
     preset

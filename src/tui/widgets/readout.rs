@@ -91,10 +91,13 @@ struct Row {
     model_value: f64,
 }
 
-/// Whether the preset's measured values were taken at `v0`: only then are they compared.
+/// Whether the preset's measured values were taken at `v0`, against the wall and at the
+/// record's conditions (none typed in the form; `run` withholds them at others): only then
+/// are they compared.
 fn measured_here(preset: &Preset, setting: &Setting) -> bool {
     crate::figure::explorer::same_speed(preset.measured.v0, setting.params.v0)
         && setting.target == crate::target::Target::wall()
+        && setting.conditions.is_empty()
 }
 
 /// The results against the preset's measured values; no measured values away from the speed

@@ -11,7 +11,7 @@ use ratatui::Terminal;
 use ratatui::backend::TestBackend;
 use ratatui::buffer::Buffer;
 use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 /// Press `keys` in turn (an upper-case letter with Shift, as a terminal sends it); the effects
 /// `update` returned, in order.
@@ -270,4 +270,32 @@ pub fn half_sine_csv(samples: usize, step_ms: f64) -> String {
         s.push_str(&format!("{t},{f}\n"));
     }
     s
+}
+
+/// `G`, the loop's list of the surfaces with the user's of the config home `config`, the
+/// highlight on `name`, Enter.
+pub fn pick_surface(app: &mut App, config: &Path, name: &str) {
+    let effects = press(app, &[KeyCode::Char('G')]);
+    assert!(
+        effects
+            .iter()
+            .any(|e| matches!(e, bouncelab::tui::app::Effect::ListSurfaces)),
+        "{effects:?}"
+    );
+    let (entries, error) =
+        bouncelab::tui::surface::list_in(Some(&config.join("bouncelab/surfaces")));
+    assert_eq!(error, None);
+    let at = entries.iter().position(|e| e.surface.name == name).unwrap();
+    app.update(action::Action::SurfacesListed(entries, None));
+    assert!(matches!(
+        app.overlay(),
+        bouncelab::tui::app::Overlay::Surfaces(_)
+    ));
+    app.update(action::Action::PickerMove(action::Scroll::Home));
+    for _ in 0..at {
+        app.update(action::Action::PickerMove(action::Scroll::Down));
+    }
+    app.update(action::Action::PickerChoose);
+    app.refresh();
+    assert!(matches!(app.overlay(), bouncelab::tui::app::Overlay::None));
 }

@@ -30,28 +30,11 @@ impl App {
     }
 
     /// The ball as the library takes it: the preset's with the explorer's parameters, law and
-    /// radius (R may be typed in the form), its material's ν and its κ — what `bouncelab
-    /// oblique --preset NAME` runs with the same numbers (tests/tui/tui_oblique.rs compares).
+    /// radius (R may be typed in the form), its material's ν and its κ, at the conditions
+    /// typed in the form — what `bouncelab oblique --preset NAME` runs with the same numbers
+    /// (tests/tui/tui_oblique.rs compares).
     pub fn oblique_ball(&self) -> Ball {
-        let preset = self.preset();
-        let s = &self.setting;
-        let mut measured = preset.measured.clone();
-        measured.radius = s.radius;
-        Ball {
-            name: Some(preset.name.clone()),
-            origin: "explorer".into(),
-            source: "adopted",
-            params: s.params,
-            law: s.law,
-            measured: Some(measured),
-            description: String::new(),
-            fit: None,
-            poisson_ratio: Some(preset.material.poisson),
-            calibration: preset.calibration.clone(),
-            // what the explorer's setting changed from the preset's own ball
-            overrides: crate::api::changed_params(&preset.params(), &s.params),
-            conditions: crate::api::recorded_conditions(preset.calibration.as_ref()),
-        }
+        crate::tui::physical::conditions::library_ball(self.preset(), &self.setting)
     }
 
     /// The surface the oblique view's ball bounces on: the target's normal give (K_s ∥ c_s on
