@@ -74,6 +74,7 @@ pub struct Ball {
 }
 
 mod batch;
+mod batch_failure;
 mod batch_reading;
 mod batch_report;
 mod calibration;
@@ -98,6 +99,7 @@ mod shot_after;
 mod shot_mc;
 mod shot_net;
 mod shot_row;
+mod standard_ball;
 mod standard_conditions;
 mod standards;
 mod statics;
@@ -107,7 +109,10 @@ mod surface_used;
 mod sweep;
 mod warnings;
 pub use batch::{BallOutcome, BatchSetup, quantity as batch_quantity};
-pub use batch_report::{BatchReport, BatchSummary, BatchUnanswered, StandardRef};
+pub use batch_failure::FitFailure;
+pub use batch_report::{
+    BatchReport, BatchSummary, BatchUnanswered, StandardRef, unfitted_by_reason,
+};
 pub use calibration::{BallRecord, changed_params};
 pub use collide::CollisionReport;
 pub use columns::{Columns, Unanswered, first_pass, first_pass_stoppable};

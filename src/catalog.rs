@@ -74,9 +74,11 @@ pub enum CatalogError {
     /// A preset file does not parse or validate (carries file:line:column).
     #[error(transparent)]
     Preset(#[from] PresetError),
-    /// Two presets share a name.
-    #[error("{}", duplicate_message(name, first, second))]
+    /// Two presets (or two surfaces) share a name.
+    #[error("{}", duplicate_message(what, name, first, second))]
     Duplicate {
+        /// What shares it: `"preset"` or `"surface"`.
+        what: &'static str,
         /// The shared name.
         name: String,
         /// Where the first preset of that name came from.
@@ -94,19 +96,19 @@ pub enum CatalogError {
     },
 }
 
-/// Two presets named `name`: which, and which file to change.
-fn duplicate_message(name: &str, first: &Origin, second: &Origin) -> String {
+/// Two presets (`what`: or surfaces) named `name`: which, and which file to change.
+fn duplicate_message(what: &str, name: &str, first: &Origin, second: &Origin) -> String {
     match (first, second) {
         (Origin::Embedded, Origin::File(file)) | (Origin::File(file), Origin::Embedded) => {
             format!(
-                "duplicate preset name '{name}': {} and the embedded preset \
+                "duplicate {what} name '{name}': {} and the embedded {what} \
                  (embedded:{name}); change the name in {}",
                 file.display(),
                 file.display()
             )
         }
         _ => format!(
-            "duplicate preset name '{name}': {first} and {second}; change the name in one of \
+            "duplicate {what} name '{name}': {first} and {second}; change the name in one of \
              them"
         ),
     }
@@ -308,6 +310,7 @@ impl Catalog {
             .find(|e| e.preset.name == entry.preset.name)
         {
             return Err(CatalogError::Duplicate {
+                what: "preset",
                 name: entry.preset.name.clone(),
                 first: old.origin.clone(),
                 second: entry.origin,

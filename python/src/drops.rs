@@ -97,7 +97,7 @@ fn drop_of<'py>(
         Some(s) => ball
             .as_ref()
             .clone()
-            .at_standard(s.name, &choice.conditions)
+            .at_standard(s, &choice.conditions)
             .map_err(error)?,
         None => (ball.as_ref().clone(), None),
     };

@@ -104,7 +104,7 @@ def test_an_unfittable_set_is_refused():
     cols = bounces()
     # one row cannot pin two parameters
     one = {k: v[:1] for k, v in cols.items()}
-    with pytest.raises(ValueError, match="1 data points, fewer than the 2 parameters"):
+    with pytest.raises(ValueError, match="1 data point, fewer than the 2 parameters"):
         bouncelab.fit_oblique(preset="tennis", **one)
 
 

@@ -198,7 +198,7 @@ def test_too_few_points_is_the_clis_message_without_its_option():
     with pytest.raises(ValueError) as e:
         bouncelab.fit_cor_table([1.0], [0.5], free=["k_r", "z_p"])
     cli = cli_error("fit", "--drop-height", "1", "--rebound-height", "0.25", "--free", "k_r,z_p")
-    assert str(e.value) == "1 data points, fewer than the 2 parameters fitted"
+    assert str(e.value) == "1 data point, fewer than the 2 parameters fitted"
     assert cli == f"{e.value} (--free k_r,z_p)"
 
 

@@ -86,3 +86,17 @@ def test_the_static_and_the_leak_verdicts_say_what_they_judged():
     with pytest.raises(ValueError, match="give only half_life="):
         bouncelab.drop(preset="football", standard="fifa-pressure-loss", half_life="300h",
                        temperature=5.0)
+
+
+def test_another_sports_ball_is_warned_and_keeps_its_own_conditions():
+    # the newcomer trial of 2026-12-07: the tennis ball ran at FIBA's 8 psi, unwarned
+    d = bouncelab.drop(preset="tennis", standard="fiba", bounces=1)
+    said = [w for w in d["warnings"] if w.startswith("not the standard's ball: ")]
+    assert said and said[0].startswith(
+        "not the standard's ball: the fiba test drops basketball; this is tennis: "), said
+    assert d["conditions"]["pressure_gauge_pa"] == 82737.09
+    r = bouncelab.batch(LOT7, preset="tennis", standard="softball-47")
+    assert "not the standard's ball: the softball-47 test fires softball; this is tennis: the " \
+        "verdict judges another ball by this test" in r["warnings"]
+    assert not [w for w in bouncelab.batch(LOT7, preset="tennis")["warnings"]
+                if w.startswith("not the standard's ball")]

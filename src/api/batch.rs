@@ -4,6 +4,7 @@
 //! What `bouncelab batch` writes and `bouncelab.batch` returns.
 
 use super::Ball;
+use super::batch_failure::{FitFailure, failure};
 use crate::analysis::fit::verdict::no_answer_reasons;
 use crate::analysis::fit::{FitData, MultiFit, Param};
 use crate::drop::standards::{Standard, Test};
@@ -76,6 +77,9 @@ pub struct BallOutcome {
     pub model_measured: Option<f64>,
     /// Why the fit gave no answer, where the ball's verdict stands on its measurement.
     pub fit_error: Option<String>,
+    /// The kind of `fit_error` (or of `error`), as the text's summary groups the balls.
+    #[serde(skip)]
+    pub fit_failure: Option<FitFailure>,
 }
 
 impl BallOutcome {
@@ -102,6 +106,7 @@ impl BallOutcome {
             readings: 0,
             model_measured: None,
             fit_error: None,
+            fit_failure: None,
         }
     }
 }
@@ -171,12 +176,12 @@ impl Ball {
         }
         let fitted = match self.fit_and_judge(data, setup, &mut o) {
             Ok(fitted) => fitted,
-            Err(e) if reading.is_some() => {
-                o.fit_error = Some(e);
-                return o;
-            }
-            Err(e) => {
-                o.error = Some(e);
+            Err((kind, e)) => {
+                o.fit_failure = Some(kind);
+                match reading {
+                    Some(_) => o.fit_error = Some(e),
+                    None => o.error = Some(e),
+                }
                 return o;
             }
         };
@@ -206,13 +211,13 @@ impl Ball {
     /// The ball fitted to `data` and run through the standard's test: the fit's values and
     /// warnings, the fitted ball's COR and value (`model_measured`, its verdict kept aside)
     /// in `o`; the fitted ball and its fit's covariance table where the fit leaves degrees of
-    /// freedom. An error says why the fit or the test gave no answer.
+    /// freedom. An error says why the fit or the test gave no answer, and of what kind.
     fn fit_and_judge(
         &self,
         data: &Data,
         setup: &BatchSetup<'_>,
         o: &mut BallOutcome,
-    ) -> Result<Fitted, String> {
+    ) -> Result<Fitted, (FitFailure, String)> {
         let (f, speeds) = self.fit_batch_data(data, setup)?;
         o.points = f.points;
         o.free = f.fitted.iter().map(|e| e.name).collect();
@@ -224,13 +229,16 @@ impl Ball {
         o.warnings.extend(self.fitted_warnings(&f.params, &speeds));
         if !f.identified {
             let why = no_answer_reasons(f.converged, &f.not_pinned);
-            return Err(format!("the fit gave no answer: {}", why.join("; ")));
+            return Err((
+                FitFailure::NotFollowed,
+                format!("the fit gave no answer: {}", why.join("; ")),
+            ));
         }
         let fitted = Ball {
             params: f.params,
             ..self.clone()
         };
-        let verdict = judge(&fitted, setup, o)?;
+        let verdict = judge(&fitted, setup, o).map_err(|e| (FitFailure::TestFailed, e))?;
         Ok(Fitted {
             verdict,
             band: super::fit_table(&f).map(|t| (fitted, t)),
@@ -244,25 +252,25 @@ impl Ball {
         &self,
         data: &Data,
         setup: &BatchSetup<'_>,
-    ) -> Result<(MultiFit, Vec<f64>), String> {
+    ) -> Result<(MultiFit, Vec<f64>), (FitFailure, String)> {
         let points = match data {
             Data::Trace(t) => {
                 return self
                     .fit(FitData::Trace(t), setup.free)
                     .map(|f| (f, vec![self.params.v0]))
-                    .map_err(|e| e.to_string());
+                    .map_err(failure);
             }
             Data::Cor(t) => t.points.clone(),
             Data::Drop(d) => {
                 let pairs: Vec<(f64, f64)> = d.drops.iter().map(|d| (d.0, d.1)).collect();
                 self.drops_to_cor_read(&pairs, setup.air, setup.rebound_sd)
-                    .map_err(|e| e.to_string())?
+                    .map_err(|e| (FitFailure::Other, e.to_string()))?
             }
         };
         let speeds = points.iter().map(|p| p.v0).collect();
         self.fit(FitData::Cor(&points), setup.free)
             .map(|f| (f, speeds))
-            .map_err(|e| e.to_string())
+            .map_err(failure)
     }
 }
 

@@ -4,6 +4,7 @@
 
 use super::Ball;
 use super::batch::{BallOutcome, quantity, quantity_range, within};
+use super::batch_failure::FitFailure;
 use crate::analysis::batch::{BatchStats, stats_in};
 use crate::analysis::fit::Param;
 use crate::drop::standards::Standard;
@@ -111,10 +112,30 @@ impl<'a> BatchReport<'a> {
             warnings: ball
                 .standard_calibration_warning(standard)
                 .into_iter()
+                .chain(ball.standard_ball_warning(standard))
                 .collect(),
             ball: ball.record_json(),
         }
     }
+}
+
+/// The balls whose verdict stands on their readings without a fit, counted by why, in
+/// the order of the kinds.
+pub fn unfitted_by_reason(balls: &[BallOutcome]) -> Vec<(FitFailure, usize)> {
+    let mut kinds: Vec<FitFailure> = balls
+        .iter()
+        .filter(|b| b.fit_error.is_some())
+        .map(|b| b.fit_failure.unwrap_or(FitFailure::Other))
+        .collect();
+    kinds.sort();
+    let mut counts: Vec<(FitFailure, usize)> = Vec::new();
+    for k in kinds {
+        match counts.last_mut() {
+            Some((last, n)) if *last == k => *n += 1,
+            _ => counts.push((k, 1)),
+        }
+    }
+    counts
 }
 
 /// Some balls of a batch have no verdict: the command line's exit 1, after its report.
@@ -122,7 +143,10 @@ impl<'a> BatchReport<'a> {
 #[error("{}", if *balls == 1 {
     "the ball has no verdict: its row says why".to_string()
 } else {
-    format!("{no_answer} of {balls} balls have no verdict: their rows say why")
+    format!(
+        "{no_answer} of {balls} balls {} no verdict: their rows say why",
+        if *no_answer == 1 { "has" } else { "have" }
+    )
 })]
 pub struct BatchUnanswered {
     /// Balls without a verdict.

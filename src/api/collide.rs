@@ -163,36 +163,12 @@ impl Ball {
     /// the test's: tests/cli/cli_targets.rs, `bat_names_the_standards_ball`).
     pub fn bat_warnings(&self, r: &BatRun) -> Vec<String> {
         let standard = &bat::BAT_STANDARDS[0];
-        let named = self.name.as_deref().filter(|n| standard.balls.contains(n));
-        // the standard's ball is its preset as recorded: a parameter the command line changed,
-        // or another law, makes it another ball (`bat_names_the_standards_ball_unchanged`)
-        let other_law = self
-            .calibration
-            .as_ref()
-            .is_some_and(|c| c.other_model.is_some());
-        let changed = (!self.overrides.is_empty() || other_law).then(|| {
-            if self.overrides.is_empty() {
-                "under another law".to_string()
-            } else {
-                format!("with {} changed", self.overrides.join(", "))
-            }
-        });
-        let not_standard = match (named, changed) {
-            (Some(_), None) => None,
-            (Some(name), Some(how)) => Some(format!(
-                "not the standard's ball: the {} test fires {}; this is {name} {how}: the \
-                 verdict judges the bat with another ball",
-                standard.name,
-                standard.balls.join(", "),
-            )),
-            (None, _) => Some(format!(
-                "not the standard's ball: the {} test fires {}; this is {}: the verdict judges \
-                 the bat with another ball",
-                standard.name,
-                standard.balls.join(", "),
-                self.name.as_deref().unwrap_or("a ball that is no preset")
-            )),
-        };
+        let not_standard = self.not_standards_ball(
+            standard.name,
+            "fires",
+            standard.balls,
+            "the verdict judges the bat with another ball",
+        );
         let at_rest = Target {
             speed: 0.0,
             ..r.bat

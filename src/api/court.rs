@@ -39,7 +39,8 @@ impl Ball {
     /// `court`'s answer, the command line's and Python's: the ITF court pace of this ball on
     /// `surface` (its K_s, c_s, M, K_t and c_t; μ `friction`, κ `inertia_factor` or the
     /// ball's), by [`Ball::court_pace_on`], with the words saying what it was computed on
-    /// ("the model's bounce of … at 30 m/s and 16° without spin on surface …").
+    /// ("the model's bounce of … at 30 m/s and 16° without spin on surface …"); its warnings
+    /// end with a ball that is not the test's ([`Ball::not_standards_ball`]).
     pub fn court_pace_on_surface(
         &self,
         friction: f64,
@@ -55,6 +56,13 @@ impl Ball {
         let tangential = (m.tangential_stiffness, inertia_factor, m.tangential_damping);
         let mut pace = self.court_pace_on(friction, tangential, &m.target())?;
         pace.warnings.extend(assumed_rigid_warning(surface));
+        let standard = &crate::oblique::court::ITF_COURT_PACE;
+        pace.warnings.extend(self.not_standards_ball(
+            standard.name,
+            "fires",
+            standard.balls,
+            "the rating judges the court with another ball",
+        ));
         Ok((pace, computed_on))
     }
 

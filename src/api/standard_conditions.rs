@@ -5,6 +5,7 @@
 use super::{Ball, BallError, ConditionsSpec};
 use crate::conditions::Conditions;
 use crate::drop::conditions::{TestConditions, of};
+use crate::drop::standards::Standard;
 use crate::text::short;
 
 /// Relative slack on a pressure window's ends: the presets' pressures are rounded to 10 Pa
@@ -56,19 +57,25 @@ pub fn test_words(t: &TestConditions) -> String {
 }
 
 impl Ball {
-    /// The ball for the standard `name`'s test: when the caller asked no conditions and the
-    /// ball is off the test's (an inflated ball's pressure outside its window, or its
-    /// temperature off the test's), the ball at the test's own — inflated to the middle of
-    /// the window at the test's temperature; a solid ball with a stored temperature shift at
-    /// the test's temperature. With a warning when the ball the verdict judges
+    /// The ball for the standard `s`'s test: when the caller asked no conditions and one of
+    /// the standard's balls ([`Ball::is_named_among`]) is off the test's (an inflated ball's
+    /// pressure outside its window, or its temperature off the test's), the ball at the
+    /// test's own — inflated to the middle of the window at the test's temperature; a solid
+    /// ball with a stored temperature shift at the test's temperature. Another sport's ball
+    /// keeps its own conditions (a tennis ball is not inflated to FIBA's 8 psi): its warning
+    /// is [`Ball::standard_ball_warning`]'s. With a warning when one of the standard's balls
     /// is off the test's conditions (the caller's choice, or what the ball cannot change).
     pub fn at_standard(
         self,
-        name: &str,
+        s: &Standard,
         asked: &ConditionsSpec,
     ) -> Result<(Ball, Option<String>), BallError> {
+        let name = s.name;
         let test = of(name);
         let mut ball = self;
+        if !ball.is_named_among(s.balls) {
+            return Ok((ball, None));
+        }
         if asked.is_empty() && within(&test, &ball.conditions) == Some(false) {
             let at = test.temperature_c.map(|[n, _]| n);
             let spec = if ball.is_inflated() {
@@ -138,6 +145,7 @@ mod tests {
 
     #[test]
     fn a_ball_off_the_test_is_brought_to_it_unless_the_caller_asked() {
+        let fifa_pro = crate::drop::standards::find("fifa-quality-pro").unwrap();
         let cold = Ball::from_preset("football")
             .unwrap()
             .at_conditions(&ConditionsSpec {
@@ -150,10 +158,7 @@ mod tests {
             temperature: Some(5.0),
             ..ConditionsSpec::default()
         };
-        let (b, w) = cold
-            .clone()
-            .at_standard("fifa-quality-pro", &asked)
-            .unwrap();
+        let (b, w) = cold.clone().at_standard(fifa_pro, &asked).unwrap();
         assert_eq!(b.conditions.temperature_c, Some(5.0));
         assert!(
             w.unwrap()
@@ -163,7 +168,7 @@ mod tests {
         let own = Ball::from_preset("football").unwrap();
         let (b, w) = own
             .clone()
-            .at_standard("fifa-quality-pro", &ConditionsSpec::default())
+            .at_standard(fifa_pro, &ConditionsSpec::default())
             .unwrap();
         assert_eq!((b, w), (own, None));
     }

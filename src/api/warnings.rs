@@ -103,7 +103,8 @@ impl Ball {
     /// default height (`height_given` false: their speed is not the verdict's) —, a static
     /// standard's (`statics`: its deflection's warnings and the rules' return window), then
     /// the standard's own test against the record when it is another impact
-    /// (tests/cli/cli_static.rs).
+    /// (tests/cli/cli_static.rs), last a ball that is not the standard's
+    /// ([`Ball::standard_ball_warning`]).
     pub fn judged_drop_warnings(
         &self,
         run: &crate::drop::DropRun,
@@ -132,6 +133,8 @@ impl Ball {
         {
             warnings.push(w);
         }
+        warnings.extend(standard.and_then(|s| self.standard_ball_warning(s)));
+        warnings.extend(statics.and_then(|(d, _)| self.static_standard_ball_warning(d)));
         Ok(warnings)
     }
 

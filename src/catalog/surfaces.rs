@@ -42,6 +42,7 @@ pub fn load(dir: Option<&Path>) -> Result<Vec<SurfaceEntry>, CatalogError> {
         let surface = read_surface_file(&path)?;
         if let Some(old) = all.iter().find(|e| e.surface.name == surface.name) {
             return Err(CatalogError::Duplicate {
+                what: "surface",
                 name: surface.name,
                 first: old.origin.clone(),
                 second: Origin::File(path),

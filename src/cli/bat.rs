@@ -177,7 +177,14 @@ fn text(out: &mut dyn Write, head: &str, a: &BatArgs, r: &BatRun) -> std::io::Re
         vec!["apparent COR e_A".into(), human(r.test.apparent_cor, 4)],
         vec![
             "verdict".into(),
-            format!("{} (BBCOR ≤ {})", r.verdict, human(r.limit, 2)),
+            // the limit as a limit: "FAIL (BBCOR ≤ 0.50)" read as if the condition held
+            format!(
+                "{} (BBCOR {} {} the limit {})",
+                r.verdict,
+                human(r.bbcor, 4),
+                if r.pass { "within" } else { "over" },
+                human(r.limit, 2)
+            ),
         ],
     ];
     table(out, "  ", &rows)

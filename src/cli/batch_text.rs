@@ -3,7 +3,7 @@
 
 use super::measured_file as files;
 use super::output::{self, given, human};
-use crate::api::{Ball, BatchReport, batch_quantity};
+use crate::api::{Ball, BatchReport, batch_quantity, unfitted_by_reason};
 use crate::drop::standards;
 use crate::measured::Air;
 use std::io::Write;
@@ -45,22 +45,51 @@ fn heading(
     if let Some(line) = ball.conditions_line() {
         writeln!(out, "{line}")?;
     }
+    // the air plays a part only in drop tests, fitted or judged
+    let drops = matches!(standard.test, standards::Test::Drop { .. })
+        || r.balls.iter().any(|b| b.data == "drop test");
     writeln!(
         out,
         "{} from {}, fitted one by one ({}){}; judged against {}: {}, window {}",
         crate::text::counted(s.balls, "ball"),
         files::label(file),
-        s.free.join(", "),
-        if air.is_some() {
-            ", with air drag"
-        } else {
-            ", in vacuum"
+        fitted_words(r),
+        match (drops, air.is_some()) {
+            (false, _) => "",
+            (true, true) => ", with air drag",
+            (true, false) => ", in vacuum",
         },
         r.standard.name,
         r.standard.title,
         super::standards::window_cell(standard)
     )?;
     writeln!(out)
+}
+
+/// What the balls were fitted on: `k_r, z_p` when every ball was fitted on the same, else
+/// each set with its count of balls, then the balls whose fit gave nothing (`k_r, z_p: 3
+/// balls; 2 without a fit`: their reasons are the summary's).
+fn fitted_words(r: &BatchReport<'_>) -> String {
+    let mut groups: Vec<(String, usize)> = Vec::new();
+    for b in r.balls.iter().filter(|b| !b.free.is_empty()) {
+        let set = b.free.join(", ");
+        match groups.iter_mut().find(|(g, _)| *g == set) {
+            Some((_, n)) => *n += 1,
+            None => groups.push((set, 1)),
+        }
+    }
+    let without = r.balls.iter().filter(|b| b.free.is_empty()).count();
+    if let ([(set, _)], 0) = (groups.as_slice(), without) {
+        return set.clone();
+    }
+    let mut words: Vec<String> = groups
+        .iter()
+        .map(|(set, n)| format!("{set}: {}", crate::text::counted(*n, "ball")))
+        .collect();
+    if without > 0 {
+        words.push(format!("{without} without a fit"));
+    }
+    words.join("; ")
 }
 
 /// A row a ball: its COR (and rebound, judged on a drop), verdict, margin and what went wrong.
@@ -153,10 +182,18 @@ fn statistics(
 fn notes(out: &mut dyn Write, r: &BatchReport<'_>) -> std::io::Result<()> {
     let s = &r.summary;
     if s.unfitted > 0 {
+        // each ball's reason, grouped: too few points is not the model failing them
+        let why = match unfitted_by_reason(r.balls).as_slice() {
+            [(kind, _)] => kind.words().to_string(),
+            groups => groups
+                .iter()
+                .map(|(kind, n)| format!("{n}: {}", kind.words()))
+                .collect::<Vec<_>>()
+                .join("; "),
+        };
         writeln!(
             out,
-            "judged on their readings without a fit: {} (the model cannot follow them; their \
-             rows say why)",
+            "judged on their readings without a fit: {} ({why}; their rows say why)",
             s.unfitted
         )?;
     }

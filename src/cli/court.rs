@@ -181,9 +181,9 @@ fn text(
     if let Some(m) = &measured {
         writeln!(
             out,
-            "measured ({}, {} bounces): μ_app {}, e {}, CPR {}",
+            "measured ({}, {}): μ_app {}, e {}, CPR {}",
             m.file,
-            m.bounces,
+            crate::text::counted(m.bounces, "bounce"),
             human(m.apparent_friction, 5),
             human(m.cor_normal, 5),
             human(m.cpr, 4)

@@ -127,7 +127,7 @@ fn dropped_ball(
         .map(|(t, h)| super::drop_leak::judge(t, h))
         .transpose()?;
     let (b, off_conditions) = match asked.impact {
-        Some(s) => b.at_standard(s.name, &a.ball.conditions.spec())?,
+        Some(s) => b.at_standard(s, &a.ball.conditions.spec())?,
         None => (b, None),
     };
     Ok((b, leak_verdict, off_conditions))

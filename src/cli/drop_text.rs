@@ -100,7 +100,10 @@ pub(super) fn text(
     table(out, "  ", &rows)?;
     writeln!(out)?;
     let why = match run.end {
-        End::Count => format!("after {} bounces (--bounces)", run.bounces.len()),
+        End::Count => format!(
+            "after {} (--bounces)",
+            crate::text::counted(run.bounces.len(), "bounce")
+        ),
         End::MinRebound => format!(
             "a rebound below {} m (--min-rebound)",
             given(run.setup.min_rebound, 4)

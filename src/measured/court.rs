@@ -48,13 +48,31 @@ pub fn parse_court(text: &str) -> Result<Vec<CourtRow>, MeasuredError> {
         let value = |k: usize, lo: f64, hi: f64, what: &str| {
             row.checked(k, SPECS[k].name, |v| v > lo && v <= hi, what)
         };
-        Ok(CourtRow {
+        let r = CourtRow {
             v_in: value(0, 1e-9, 1e9, speed)?,
             angle_in: value(1, 0.0, 89.999_999, "lie in (0, 90) degrees")?,
             v_out: value(2, 1e-9, 1e9, speed)?,
             angle_out: value(3, 0.0, 90.0, "lie in (0, 90] degrees")?,
             line: row.line(),
-        })
+        };
+        // a court gives back less than it gets: e = v_y,out/v_y,in below 1 (at v_out's cell,
+        // the first of the rebound's two)
+        let (_, e) = r.friction_and_cor();
+        if e >= 1.0 {
+            let up = |v: f64, deg: f64| crate::text::sig(v * deg.to_radians().sin(), 4);
+            return Err(row.error(
+                2,
+                format!(
+                    "the rebound is {} the arrival: v_out sin(angle_out) = {} m/s up against \
+                     v_in sin(angle_in) = {} m/s down (e = {}); a bounce's e lies below 1",
+                    if e > 1.0 { "faster than" } else { "as fast as" },
+                    up(r.v_out, r.angle_out),
+                    up(r.v_in, r.angle_in),
+                    crate::text::sig(e, 4)
+                ),
+            ));
+        }
+        Ok(r)
     })?;
     if rows.is_empty() {
         return Err(MeasuredError::at(1, 1, "no bounces: the table has no rows"));
@@ -83,6 +101,13 @@ mod tests {
         );
         assert!((mu - (vx_in - vx) / (vy_in + vy)).abs() < 1e-12);
         assert!((e - vy / vy_in).abs() < 1e-12);
+        // the trial's row: 40 sin 17.5° = 12.03 m/s up from 30 sin 16° = 8.269 m/s down
+        let faster = "v_in,angle_in,v_out,angle_out\n30,16,20,20\n30,16,40,17.5\n";
+        let bad = parse_court(faster).unwrap_err().to_string();
+        assert!(
+            bad.starts_with("3:7: the rebound is faster than the arrival: v_out sin(angle_out) = 12.03 m/s up against v_in sin(angle_in) = 8.269 m/s down (e = 1.455)"),
+            "{bad}"
+        );
         let bad = parse_court("v_in,angle_in,v_out,angle_out\n30,95,20,20\n").unwrap_err();
         assert!(
             bad.to_string().contains("angle_in 95 must lie in (0, 90)"),

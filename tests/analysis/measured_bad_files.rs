@@ -106,7 +106,7 @@ fn fewer_points_than_parameters() {
     );
     assert_bad(
         &o,
-        &["cor.csv:3:1: 1 data points, fewer than the 2 parameters fitted"],
+        &["cor.csv:3:1: 1 data point, fewer than the 2 parameters fitted"],
     );
     let (o, _d) = fit_file(
         "trace.csv",

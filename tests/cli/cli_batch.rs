@@ -189,7 +189,7 @@ fn a_ball_without_a_fit_says_why_and_the_batch_goes_on() {
     assert_eq!(o.code, 1, "{}", o.stderr);
     assert_eq!(
         o.stderr,
-        "bouncelab: error: 1 of 3 balls have no verdict: their rows say why\n"
+        "bouncelab: error: 1 of 3 balls has no verdict: their rows say why\n"
     );
     let r: Value = serde_json::from_str(&o.stdout).unwrap();
     let b2 = &r["balls"][1];

@@ -245,9 +245,12 @@ fn single_cor_keeps_its_output_and_free_is_checked() {
         ("fit --cor 0.7 --free k_p,k_h", &["k_h and k_p are tied"]),
         (
             "fit --cor 0.7 --free k_r,c",
-            &["1 data points, fewer than the 2 parameters"],
+            &["1 data point, fewer than the 2 parameters"],
         ),
-        ("fit --cor 0.7 --cor-table x.csv", &["one kind of data"]),
+        (
+            "fit --cor 0.7 --cor-table x.csv",
+            &["--cor fits alone, without --cor-table"],
+        ),
         ("fit --drop-height 1", &["--rebound-height"]),
     ]);
 }

@@ -61,6 +61,7 @@ mod cli_shot_net;
 mod cli_shot_surface;
 mod cli_size;
 mod cli_small;
+mod cli_standards_ball;
 mod cli_static;
 mod cli_tangential_damping;
 mod cli_target_pair;

@@ -197,7 +197,9 @@ impl fmt::Display for MultiFitError {
             ),
             MultiFitError::TooFew { points, parameters } => write!(
                 f,
-                "{points} data points, fewer than the {parameters} parameters fitted"
+                "{}, fewer than the {} fitted",
+                crate::text::counted(*points, "data point"),
+                crate::text::counted(*parameters, "parameter")
             ),
             MultiFitError::NoPulse(e) => write!(f, "{e}"),
             MultiFitError::NoAnswer => write!(

@@ -100,9 +100,9 @@ fn interval(ci: [f64; 2], scale: f64, unit: &str) -> String {
 fn write_text(out: &mut dyn Write, r: &LeakJson) -> std::io::Result<()> {
     writeln!(
         out,
-        "pressure loss fitted to {} ({} readings): p(t) = p0 e^(-k t)",
+        "pressure loss fitted to {} ({}): p(t) = p0 e^(-k t)",
         crate::sanitize::line(r.file),
-        r.readings
+        crate::text::counted(r.readings, "reading")
     )?;
     writeln!(out)?;
     let hour = 3600.0;

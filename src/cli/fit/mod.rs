@@ -206,11 +206,42 @@ impl FitArgs {
                  --drop-height H --rebound-height R, --drop-test FILE, --oblique FILE, or \
                  --pressure-loss FILE"
             ),
-            _ => anyhow::bail!(
-                "give one kind of data to fit: --cor, --cor-table, --force-time, \
-                 --drop-height/--rebound-height, --drop-test and --oblique exclude each other"
-            ),
+            _ => anyhow::bail!(self.excluded()),
         }
+    }
+
+    /// Why the data given cannot be fitted together (`joint::wanted` took every pair a joint
+    /// fit takes): `--cor` and `--oblique` fit alone, and drop tests are given once.
+    fn excluded(&self) -> String {
+        let flags: Vec<&str> = [
+            ("--cor", self.cor.is_some()),
+            ("--cor-table", self.cor_table.is_some()),
+            ("--force-time", self.force_time.is_some()),
+            (
+                "--drop-height/--rebound-height",
+                !self.drop_height.is_empty(),
+            ),
+            ("--drop-test", self.drop_test.is_some()),
+            ("--oblique", self.oblique.is_some()),
+        ]
+        .into_iter()
+        .filter_map(|(flag, given)| given.then_some(flag))
+        .collect();
+        let Some(alone) = flags.iter().find(|f| ["--cor", "--oblique"].contains(f)) else {
+            return "give drop tests once: --drop-test FILE or --drop-height/--rebound-height"
+                .into();
+        };
+        let rest: Vec<&str> = flags.iter().filter(|f| *f != alone).copied().collect();
+        format!(
+            "{alone} fits alone, without {}: a joint fit takes --drop-test (or \
+             --drop-height/--rebound-height), --cor-table, --force-time and --static{}",
+            rest.join(", "),
+            if *alone == "--cor" {
+                " (put a single COR in a COR table to fit it with them)"
+            } else {
+                ""
+            }
+        )
     }
 
     /// Whether any data or option a fit of one file of its own (`--pressure-loss`,

@@ -150,8 +150,9 @@ fn fit_error(e: MultiFitError, data: &Loaded, free: &[Param]) -> anyhow::Error {
             anyhow::anyhow!("{}:{m}", data.file.clone().unwrap_or_default())
         }
         MultiFitError::TooFew { points, parameters } => anyhow::anyhow!(
-            "{place}{points} data points, fewer than the {parameters} parameters fitted \
-             (--free {}{})",
+            "{place}{}, fewer than the {} fitted (--free {}{})",
+            crate::text::counted(points, "data point"),
+            crate::text::counted(parameters, "parameter"),
             names.join(","),
             if data.trace.is_some() {
                 ", with the contact start and the baseline"

@@ -66,10 +66,10 @@ fn write_text(
     writeln!(out, "{label}, {} law", r.ball.law)?;
     writeln!(
         out,
-        "fitting {} to the oblique bounces {} ({} rows); the normal ball held",
+        "fitting {} to the oblique bounces {} ({}); the normal ball held",
         r.free.join(", "),
         r.file.as_deref().unwrap_or("given"),
-        f.model.len()
+        crate::text::counted(f.model.len(), "row")
     )?;
     writeln!(out)?;
     // an exact solve has no error to give (`ObliqueFit::exact`), as `fit --cor-table`

@@ -128,9 +128,9 @@ struct Report<'a> {
 fn write_text(out: &mut dyn Write, r: &Report, f: &TemperatureFit) -> std::io::Result<()> {
     writeln!(
         out,
-        "dashpot temperature shift fitted to {} ({} points) on {}: c(T) = c_ref exp[(E_a/R)(1/T − 1/T_ref)], T_ref = {} °C",
+        "dashpot temperature shift fitted to {} ({}) on {}: c(T) = c_ref exp[(E_a/R)(1/T − 1/T_ref)], T_ref = {} °C",
         crate::sanitize::line(r.file),
-        r.points,
+        crate::text::counted(r.points, "point"),
         r.preset.unwrap_or("the ball"),
         human(r.t_ref_c, 4)
     )?;
