@@ -51,6 +51,7 @@ impl App {
             // what the explorer's setting changed from the preset's own ball
             overrides: crate::api::changed_params(&preset.params(), &s.params),
             conditions: crate::api::recorded_conditions(preset.calibration.as_ref()),
+            flight_model: preset.flight_model(),
         }
     }
 
