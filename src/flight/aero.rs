@@ -1,8 +1,8 @@
 //! The air's forces on a spinning ball in the vertical plane (docs/flight.md §1–2): drag
 //! C_D against the Reynolds number, Magnus lift C_L against the spin parameter S = R|ω|/|v|,
-//! and the spin's decay. The published models are [`Published`]'s (`published.rs`), each
-//! with its source in docs/flight.md §2; a ball with none takes the smooth sphere's C_D, no
-//! lift and no decay, and says so ([`Aero::assumed`]).
+//! and the spin's decay. The published models are [`super::Published`]'s (`published.rs`),
+//! each with its source in docs/flight.md §2; a ball with none takes the smooth sphere's C_D,
+//! no lift and no decay, and says so ([`Aero::assumed`]).
 
 use serde::Serialize;
 
@@ -285,8 +285,9 @@ impl Aero {
             lift: Lift::Constant { cl: 0.0 },
             decay: Decay::None,
             assumed: true,
-            source: "assumed: C_D 0.47 (smooth sphere), no lift, no spin decay (no published \
-                     model for this ball: a preset names its with `aerodynamics`, docs/flight.md §2)",
+            source: "assumed: C_D 0.47 (smooth sphere), no lift, no spin decay (no \
+                     published model for this ball: a preset names its with `aerodynamics`, \
+                     docs/flight.md §2)",
         }
     }
 
