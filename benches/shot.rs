@@ -3,7 +3,7 @@
 
 use bouncelab::Ball;
 use bouncelab::api::ShotSpec;
-use bouncelab::flight::{self, Aero, Ends, Launch, Rebound};
+use bouncelab::flight::{self, Aero, Ends, Launch, Published, Rebound};
 use divan::black_box;
 
 fn main() {
@@ -41,7 +41,7 @@ fn shot_one_bounce_unwarned(b: divan::Bencher) {
 fn flights_alone(b: divan::Bencher) {
     let ball = Ball::from_preset("tennis").unwrap();
     let body = flight::Body::new(
-        Aero::for_ball(Some("tennis"), 1.204),
+        Aero::published(Published::Tennis, 1.204),
         ball.params.mass,
         ball.radius(),
     );

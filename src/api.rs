@@ -71,6 +71,9 @@ pub struct Ball {
     /// The conditions the ball is at (temperature, gauge pressure, atmosphere): its
     /// calibration record's, or those [`Ball::at_conditions`] set; every answer states them.
     pub conditions: crate::conditions::Conditions,
+    /// The published flight model a shot of it flies on, its preset's
+    /// ([`crate::preset::Preset::flight_model`]); `None`: none, the assumed smooth sphere.
+    pub flight_model: Option<crate::flight::Published>,
 }
 
 mod batch;
@@ -248,6 +251,7 @@ impl Ball {
             calibration: None,
             overrides: Vec::new(),
             conditions: recorded_conditions(None),
+            flight_model: None,
         }
     }
 

@@ -1,6 +1,7 @@
 //! Ball presets: measured data, material data and the parameters the paper adopted
 //! (docs/model.md §7), in a TOML schema documented in the README. Parsing only: no file I/O here.
 
+use crate::flight::published::Published;
 use crate::model::contact::ContactLaw;
 use crate::model::materials::{self, Layer};
 use crate::model::params::ImpactParams;
@@ -176,6 +177,10 @@ pub struct Preset {
     /// The parameter set it runs on by default (adopted when absent).
     #[serde(default)]
     pub parameters: ParamSource,
+    /// The published flight model the ball has (docs/flight.md §2); when absent, the one named
+    /// like the preset, if any ([`Preset::flight_model`]).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub aerodynamics: Option<Published>,
     /// What was measured on the ball.
     pub measured: Measured,
     /// Its material data.
@@ -339,6 +344,13 @@ impl Preset {
                 }
             }
         }
+    }
+
+    /// The published flight model its ball flies on (docs/flight.md §2): its `aerodynamics`,
+    /// or when absent the model named like the preset (a user's file named `golf` flies as
+    /// golf), else none (the assumed smooth sphere).
+    pub fn flight_model(&self) -> Option<Published> {
+        self.aerodynamics.or_else(|| Published::named(&self.name))
     }
 
     /// The impact parameters the preset runs on (its `parameters` choice).

@@ -95,3 +95,19 @@ def test_every_override_of_the_command_line_is_taken():
             plain["end"]["x"], plain["bounces"]["v_out"][0]), kw
         many = bouncelab.shots("tennis", **GRIP, **kw)
         assert many["end_x"] == r["end"]["x"], kw
+
+
+# the average tour drive of docs/flight.md §4, to its landing
+DRIVE = dict(height=0.05, speed=74.97, elevation=10.8, spin=-272.2, friction=0.4, bounces=0,
+             samples=0)
+
+
+def test_the_driver_and_mlb_balls_fly_on_their_kinds_models():
+    # each preset names its ball's published model (`aerodynamics`, docs/flight.md §2), not
+    # its name: golf-driver flew as a smooth sphere without lift, the drive 103.5 m
+    driver, golf = bouncelab.shot("golf-driver", **DRIVE), bouncelab.shot("golf", **DRIVE)
+    assert driver["source"] == golf["source"]
+    assert abs(driver["end"]["x"] / golf["end"]["x"] - 1.0) < 0.05
+    mlb, baseball = bouncelab.shot("baseball-mlb", **DRIVE), bouncelab.shot("baseball", **DRIVE)
+    assert mlb["source"] == baseball["source"]
+    assert "Nathan" in mlb["source"]

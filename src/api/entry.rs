@@ -200,6 +200,7 @@ impl Ball {
             }),
             overrides: overrides.names(),
             conditions: super::recorded_conditions(p.calibration.as_ref()),
+            flight_model: p.flight_model(),
         })
     }
 

@@ -169,9 +169,10 @@ fn check(field: &'static str, x: f64, ok: bool, reason: &str) -> Result<(), Ball
 
 impl Ball {
     /// The air and the models a shot of this ball flies in (docs/flight.md §2): the
-    /// preset's published ones, each replaced by a fixed value given.
+    /// published ones its preset names ([`Ball::flight_model`]), each replaced by a fixed
+    /// value given.
     pub fn aero(&self, spec: &ShotSpec) -> Aero {
-        let mut a = Aero::for_ball(self.name.as_deref(), spec.air_density);
+        let mut a = Aero::for_ball(self.flight_model, spec.air_density);
         if let Some(cd) = spec.drag_coefficient {
             a.drag = Drag::Constant { cd };
         }

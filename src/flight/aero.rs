@@ -1,15 +1,13 @@
 //! The air's forces on a spinning ball in the vertical plane (docs/flight.md §1–2): drag
 //! C_D against the Reynolds number, Magnus lift C_L against the spin parameter S = R|ω|/|v|,
-//! and the spin's decay. Each preset's published model is [`Aero::for_ball`]'s, with its
-//! source in docs/flight.md §2; a ball with none takes the smooth sphere's C_D, no lift and
-//! no decay, and says so ([`Aero::assumed`]).
+//! and the spin's decay. The published models are [`super::Published`]'s (`published.rs`),
+//! each with its source in docs/flight.md §2; a ball with none takes the smooth sphere's C_D,
+//! no lift and no decay, and says so ([`Aero::assumed`]).
 
 use serde::Serialize;
 
 /// Dynamic viscosity of air at 20 °C (Pa s), the Reynolds number's μ (docs/flight.md §2).
 pub const AIR_VISCOSITY: f64 = 1.81e-5;
-/// 1 mph in m/s (exact: 0.44704).
-const MPH: f64 = 0.44704;
 /// 1 rad/s in thousands of rpm: 30/(π · 1000).
 const RAD_S_IN_KRPM: f64 = 30.0 / (std::f64::consts::PI * 1000.0);
 
@@ -279,67 +277,6 @@ pub struct Aero {
 const SMOOTH_CD: f64 = crate::drop::flight::SPHERE_DRAG_COEFFICIENT;
 
 impl Aero {
-    /// The published model of a preset `name` in air of density `rho` (docs/flight.md §2),
-    /// or [`Aero::assumed`] for a ball with none.
-    pub fn for_ball(name: Option<&str>, rho: f64) -> Aero {
-        let published = |drag, lift, decay, source| Aero {
-            air_density: rho,
-            drag,
-            lift,
-            decay,
-            assumed: false,
-            source,
-        };
-        match name {
-            // Cross & Lindsey (2014): C_D = 0.507 ± 0.024 in free flight, independent of speed
-            // and spin (15–30 m/s); Štěpánek (1988): C_L = 1/(2.022 + 0.981/S)
-            Some("tennis") => published(
-                Drag::Constant { cd: 0.507 },
-                Lift::Rational {
-                    c0: 0.981,
-                    c1: 2.022,
-                    c2: 1.0,
-                },
-                Decay::None,
-                "C_D Cross & Lindsey 2014; C_L Stepanek 1988; no spin decay (none published found)",
-            ),
-            // Nathan's trajectory calculator: C_L = 1.120 S/(0.583 + 2.333 S), spin decaying
-            // as exp(−(t/30 s)(|v|/100 mph)), C_D = 0.3008 + 0.0292 per 1000 rpm (its
-            // spreadsheet's cd0 and cdspin, fitted to the 2015 Statcast batted balls)
-            Some("baseball") => published(
-                Drag::Spin {
-                    cd0: 0.3008,
-                    per_krpm: 0.0292,
-                },
-                Lift::Rational {
-                    c0: 0.583,
-                    c1: 2.333,
-                    c2: 1.120,
-                },
-                Decay::PerMetre {
-                    k: 1.0 / (30.0 * 100.0 * MPH),
-                },
-                "C_D, C_L and spin decay Nathan's calculator (2015 Statcast fit)",
-            ),
-            // Jenkins et al. (2018): 0.24 < C_D < 0.7 over 3·10⁴ < Re < 1.08·10⁵ (the dimpled
-            // ball's crisis), plus Smits & Smith's (1994) spin term 0.18 S; their C_L(S) table;
-            // spin loss 0.0004 (1/mph/s) × speed × spin
-            Some("golf") => published(
-                Drag::Crisis {
-                    re_low: 3.0e4,
-                    cd_low: 0.7,
-                    re_high: 1.08e5,
-                    cd_high: 0.24,
-                    cd_per_spin: 0.18,
-                },
-                Lift::Table { points: &GOLF_LIFT },
-                Decay::PerMetre { k: 0.0004 / MPH },
-                "C_D Jenkins et al. 2018 (crisis) + 0.18 S, C_L(S) and spin decay Smits & Smith 1994",
-            ),
-            _ => Aero::assumed(rho),
-        }
-    }
-
     /// A ball with no published model: the smooth sphere's C_D = 0.47, no lift, no decay.
     pub fn assumed(rho: f64) -> Aero {
         Aero {
@@ -348,7 +285,9 @@ impl Aero {
             lift: Lift::Constant { cl: 0.0 },
             decay: Decay::None,
             assumed: true,
-            source: "assumed: C_D 0.47 (smooth sphere), no lift, no spin decay",
+            source: "assumed: C_D 0.47 (smooth sphere), no lift, no spin decay (no \
+                     published model for this ball: a preset names its with `aerodynamics`, \
+                     docs/flight.md §2)",
         }
     }
 

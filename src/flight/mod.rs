@@ -10,10 +10,12 @@
 
 pub mod aero;
 mod crossing;
+pub mod published;
 pub mod step;
 
 pub use aero::{Aero, Decay, Drag, Lift};
 pub use crossing::Crossing;
+pub use published::Published;
 pub use step::Body;
 
 use serde::Serialize;

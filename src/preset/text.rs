@@ -49,6 +49,14 @@ impl Preset {
         line(&mut out, "description", string(&self.description), "");
         line(&mut out, "law", string(self.law.name()), "");
         line(&mut out, "parameters", string(self.parameters.name()), "");
+        if let Some(a) = self.aerodynamics {
+            line(
+                &mut out,
+                "aerodynamics",
+                string(a.name()),
+                "the published flight model",
+            );
+        }
 
         let m = &self.measured;
         out.push_str("\n[measured]\n");

@@ -115,6 +115,9 @@ pub fn preset_for(source: &Preset, setting: &Setting, name: &str) -> (Preset, Ve
         ),
         law: setting.law,
         parameters: ParamSource::Adopted,
+        // the same ball in the air under its new name: the model is written, not left to
+        // the name
+        aerodynamics: source.flight_model(),
         measured: Measured {
             // the form (`m`) may have changed them: the preset runs as the screen does
             mass: p.mass,

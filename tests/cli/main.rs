@@ -23,6 +23,7 @@ mod answer_reach_map;
 mod answer_warnings;
 mod calibration;
 mod cli;
+mod cli_aerodynamics;
 mod cli_bad_input;
 mod cli_batch;
 mod cli_batch_bound;

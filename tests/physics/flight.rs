@@ -4,7 +4,7 @@
 
 use crate::flight_ode;
 use bouncelab::api::{ShotReport, ShotSpec};
-use bouncelab::flight::{self, Aero, Drag, Lift};
+use bouncelab::flight::{self, Aero, Drag, Lift, Published};
 use bouncelab::{Ball, api::ObliqueSpec};
 use flight_ode::{Air, G, land};
 
@@ -193,7 +193,7 @@ fn a_ball_arriving_backward_bounces_mirrored() {
     // the library's flight sent backward (elevation 150°, which `Ball::shot` does not take):
     // its bounce asks `oblique` for the mirrored state (|v_x|, −ω) and mirrors the answer back
     let b = ball("tennis");
-    let aero = Aero::for_ball(Some("tennis"), 1.204);
+    let aero = Aero::published(Published::Tennis, 1.204);
     let body = flight::Body::new(aero, b.params.mass, b.radius());
     let launch = flight::Launch {
         height: 1.2,
@@ -279,14 +279,14 @@ fn the_energy_lost_in_flight_is_the_drags_work() {
 #[test]
 fn the_models_have_the_published_forms() {
     // Štěpánek (1988): C_L = 1/(2.022 + 0.981/S); at S = 0.2: 1/(2.022 + 4.905)
-    let t = Aero::for_ball(Some("tennis"), 1.204);
+    let t = Aero::published(Published::Tennis, 1.204);
     assert!((t.lift.cl(0.2) - 1.0 / (2.022 + 0.981 / 0.2)).abs() < 1e-15);
     assert_eq!(t.drag, Drag::Constant { cd: 0.507 });
     // Nathan: C_L = 1.120 S/(0.583 + 2.333 S)
-    let bb = Aero::for_ball(Some("baseball"), 1.204);
+    let bb = Aero::published(Published::Baseball, 1.204);
     assert!((bb.lift.cl(0.25) - 1.120 * 0.25 / (0.583 + 2.333 * 0.25)).abs() < 1e-15);
     // golf's crisis: 0.7 below Re 3e4, 0.24 above 1.08e5, monotone between; plus 0.18 S
-    let g = Aero::for_ball(Some("golf"), 1.204);
+    let g = Aero::published(Published::Golf, 1.204);
     assert_eq!(g.drag.cd(1e4, 0.0, 0.0), 0.7);
     assert_eq!(g.drag.cd(2e5, 0.0, 0.0), 0.24);
     assert!((g.drag.cd(2e5, 0.1, 0.0) - (0.24 + 0.18 * 0.1)).abs() < 1e-15);
@@ -328,7 +328,7 @@ fn the_models_have_the_published_forms() {
         }
     }
     // a ball with no published model says so
-    let s = Aero::for_ball(Some("superball"), 1.204);
+    let s = Aero::for_ball(ball("superball").flight_model, 1.204);
     assert!(s.assumed && s.lift == Lift::Constant { cl: 0.0 });
 }
 

@@ -211,3 +211,33 @@ fn a_preset_on_its_materials_set_is_saved_with_that_set_as_adopted() {
         third.description
     );
 }
+
+#[test]
+fn a_saved_preset_keeps_the_balls_flight_model() {
+    // the model its file names (golf-driver's), and the one a user's file gets by its name
+    // (`golf` without the field): both written, so that the new name keeps it (docs/flight.md §2)
+    let driver = bouncelab::preset::EMBEDDED[12];
+    assert_eq!(driver.0, "golf-driver");
+    let golf = bouncelab::preset::EMBEDDED[1].1;
+    let field = golf
+        .lines()
+        .find(|l| l.starts_with("aerodynamics"))
+        .unwrap();
+    let bare = golf.replace(&format!("{field}\n"), "");
+    let dir = tempfile::tempdir().unwrap();
+    for text in [driver.1, &bare] {
+        let source = Preset::parse(text, "x.toml").unwrap();
+        let mut app = App::new(source, true);
+        save_as(&mut app, "s", "mine");
+        perform(&mut app, dir.path());
+        let path = dir.path().join("mine.toml");
+        let written = fs::read_to_string(&path).unwrap();
+        assert!(written.contains("\naerodynamics = \"golf\""), "{written}");
+        let saved = catalog::read_preset_file(&path).unwrap();
+        assert_eq!(
+            saved.flight_model(),
+            Some(bouncelab::flight::Published::Golf)
+        );
+        fs::remove_file(path).unwrap();
+    }
+}

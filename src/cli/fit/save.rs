@@ -159,6 +159,9 @@ fn preset(
         ),
         law: ball.law,
         parameters: ParamSource::Adopted,
+        // the base's ball in the air under its new name: the model is written, not left to
+        // the name
+        aerodynamics: base.flight_model(),
         measured: Measured {
             // the fitted ball's: --mass and --radius replace the base preset's
             mass: p.mass,

@@ -52,6 +52,8 @@ fn shifted(
         source,
     });
     let mut p = base.clone();
+    // the base's flight model kept under the new name
+    p.aerodynamics = base.flight_model();
     p.name = name.into();
     p.description = format!("{} with the temperature shift fitted on {when}", base.name);
     p.adopted.damping = Some(fit.c_ref.value);

@@ -50,6 +50,7 @@ fn ball_of(preset: &Preset, params: ImpactParams, radius: f64) -> Ball {
         calibration: preset.calibration.clone(),
         overrides: Vec::new(),
         conditions: recorded_conditions(preset.calibration.as_ref()),
+        flight_model: preset.flight_model(),
     }
 }
 
