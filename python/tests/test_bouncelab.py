@@ -241,11 +241,20 @@ def test_sweep_velocity_defaults_are_the_clis():
     assert code == 0, err
     table = list(csv.reader(out.splitlines()))
     # the CSV's numbers, then its warnings column: the calibration's alone (the baseball stays
-    # within its radius; every speed but its record's 1.25 m/s is outside its calibration)
-    assert table[0][-1] == "warnings"
-    assert all(cli_binary.reach(r[-1].split("; ") if r[-1] else []) == [] for r in table[1:])
-    columns = table[0][:-1]
-    rows = [r[:-1] for r in table[1:]]
+    # within its radius; every speed but its record's 1.25 m/s is outside its calibration),
+    # then the ball, the surface and the conditions it ran (docs/cli.md)
+    w = table[0].index("warnings")
+    assert table[0][w + 1 :] == [
+        "preset", "origin", "parameters", "law",
+        "surface", "surface_stiffness", "surface_damping", "surface_mass",
+        "temperature_c", "pressure_gauge_pa", "atmosphere_pa",
+    ]
+    assert all(cli_binary.reach(r[w].split("; ") if r[w] else []) == [] for r in table[1:])
+    assert {tuple(r[w + 1 : w + 6]) for r in table[1:]} == {
+        ("baseball", "embedded", "adopted", "linear", "steel-plate")
+    }
+    columns = table[0][:w]
+    rows = [r[:w] for r in table[1:]]
     expected = np.array([[float(x) if x else math.nan for x in r] for r in rows])
     d = bouncelab.sweep_velocity("baseball")
     # the CSV's numeric columns, then the JSON's max_indentation, warnings, ball, conditions,

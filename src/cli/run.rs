@@ -153,8 +153,8 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> anyhow::Result<()> {
 }
 
 /// Columns of `run --format csv` (one row), before the surface's and the conditions'
-/// ([`super::csv_stated::columns`]) and a fitted preset's 95 % intervals
-/// ([`super::intervals_text::CSV_COLUMNS`]).
+/// (`csv_stated::columns`) and a fitted preset's 95 % intervals
+/// (`intervals_text::CSV_COLUMNS`).
 pub const SUMMARY_COLUMNS: [&str; 29] = [
     "preset",
     "origin",
