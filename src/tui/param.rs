@@ -94,9 +94,9 @@ impl Param {
 
     /// `params` with this parameter set to `value`, if `run` takes it: checked by the command
     /// line's own path (`api::set_lambda_zeta` for λ and ζ, `ImpactParams::validate` for v0,
-    /// as `run --v0`). Refused, never clamped, with the command line's message word for word
-    /// ("invalid lambda: 1e-16 (outside the range 0 or 1e-15 … 1e6); λ kept"), the range added
-    /// when the reason does not name it.
+    /// as `run --v0`). Refused, never clamped, with the command line's message, the parameter
+    /// named by its symbol ("invalid λ: 1e-16 (outside the range 0 or 1e-15 … 1e6); λ kept"),
+    /// the range added when the reason does not name it.
     pub fn check(self, value: f64, params: &ImpactParams) -> Result<ImpactParams, String> {
         let mut next = *params;
         let valid = match self {
