@@ -122,12 +122,13 @@ impl Answer<'_> {
         let spin_out = o.spin - vy * dvc / ((1.0 + s.kappa) * r);
         let vy_out = normal.cor * vy;
         let w0 = p.omega0();
-        let grip: f64 = run
+        // a fold from +0: `sum` of no f64 is −0, which the JSON would print as -0.0
+        let grip = run
             .phases
             .iter()
             .filter(|ph| ph.mode == Mode::Stick)
             .map(|ph| ph.end - ph.start)
-            .sum();
+            .fold(0.0, |total, t| total + t);
         let inertia = s.kappa * m * r * r;
         let unit = m * vy * vy;
         let normal_dissipation = normal_losses(&normal, m, vy);

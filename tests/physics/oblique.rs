@@ -88,6 +88,12 @@ fn a_stiff_spring_sliding_throughout_loses_mu_times_the_normal_impulse() {
     let o = setup(16.0, 0.0, mu, 1e6 * p.k_p, kappa);
     let r = oblique::solve(&p, 25.0, &o, 0).unwrap();
     assert!(r.slid_throughout);
+    // no grip: zero time, +0 (the JSON says 0.0, not -0.0: a sum over no phases)
+    assert!(
+        r.grip_time == 0.0 && r.grip_time.is_sign_positive(),
+        "grip_time {:?}",
+        r.grip_time
+    );
     let impulse = (1.0 + r.cor_normal) * r.vy_in;
     let dvx = r.vx_out - r.vx_in;
     assert!(
