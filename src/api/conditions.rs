@@ -78,9 +78,10 @@ impl Ball {
 
     /// The ball at the conditions `spec` asks for: K_p (and K_r, λ kept; K_h following) at the
     /// gauge pressure the run has, and [`Ball::conditions`] stating them. Refused, naming the
-    /// field: a pressure or a leak for a ball that is not inflated, a temperature for a ball
-    /// with no temperature model, a temperature where the record states none to start from,
-    /// `--k-p` beside a pressure, a pressure at which the ball is flat.
+    /// field: a pressure or a leak for a ball that is not inflated, a half-life without a time
+    /// to leak over, a temperature for a ball with no temperature model, a temperature where
+    /// the record states none to start from, `--k-p` beside a pressure, a pressure at which
+    /// the ball is flat.
     pub fn at_conditions(mut self, spec: &ConditionsSpec) -> Result<Ball, BallError> {
         if spec.is_empty() {
             return Ok(self);
@@ -88,6 +89,15 @@ impl Ball {
         let Some(p0) = self.calibration.as_ref().and_then(|c| c.pressure) else {
             return self.solid_at(spec);
         };
+        if let (Some(h), None) = (spec.half_life, spec.after) {
+            return Err(invalid(
+                "half-life",
+                h,
+                "a leak's half-life needs the time it leaks over: give --after (a pressure-loss \
+                 standard gives its own)"
+                    .into(),
+            ));
+        }
         if self.overrides.iter().any(|o| o == "k_p") {
             return Err(invalid(
                 "pressure",

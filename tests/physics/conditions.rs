@@ -206,6 +206,29 @@ fn after_a_time_the_ball_has_leaked() {
     assert!((f(&v["conditions"], "pressure_gauge_pa") - expected).abs() < 1e-6);
 }
 
+/// A half-life with no time to leak over would be dropped silently: it is refused, naming
+/// it, unless a pressure-loss standard gives the time (`drop --standard fifa-pressure-loss`).
+#[test]
+fn a_half_life_without_a_time_is_refused() {
+    for cmd in [
+        "run --preset football --half-life 10h",
+        "drop --preset football --half-life 10h",
+    ] {
+        let o = bl(&argv(cmd));
+        assert_eq!(o.code, 2, "{cmd}: {}", o.stdout);
+        assert!(
+            o.stderr.contains("invalid half-life") && o.stderr.contains("--after"),
+            "{cmd}: {}",
+            o.stderr
+        );
+        assert_eq!(o.stderr.lines().count(), 1, "{}", o.stderr);
+    }
+    let o = bl(&argv(
+        "drop --preset football --standard fifa-pressure-loss --half-life 300h",
+    ));
+    assert_eq!(o.code, 0, "{}", o.stderr);
+}
+
 /// The text header states the conditions of a ball that has any.
 #[test]
 fn the_text_header_states_the_conditions() {
