@@ -122,6 +122,26 @@ pub struct Size {
     pub radius: Option<f64>,
 }
 
+impl PresetChanges {
+    /// The first of these options given (`--params`, `--law`, then the overrides), as a
+    /// command that takes none names it.
+    pub fn first_given(&self) -> Option<&'static str> {
+        let s = &self.set;
+        [
+            ("--params", self.params.is_some()),
+            ("--law", self.law.is_some()),
+            ("--mass", s.size.mass.is_some()),
+            ("--radius", s.size.radius.is_some()),
+            ("--k-p", s.k_p.is_some()),
+            ("--damping", s.damping.is_some()),
+            ("--k-r", s.k_r.is_some()),
+            ("--z-p", s.z_p.is_some()),
+        ]
+        .into_iter()
+        .find_map(|(flag, given)| given.then_some(flag))
+    }
+}
+
 impl Overrides {
     /// The values given, for the library to apply and check ([`api::Overrides`]).
     pub fn values(&self) -> api::Overrides {
@@ -203,6 +223,30 @@ pub fn select(preset: Option<&str>, config: Option<&Path>) -> anyhow::Result<Ent
 }
 
 impl BallArgs {
+    /// The first ball option given, as a command that takes no ball names it.
+    pub fn first_given(&self) -> Option<&'static str> {
+        let c = &self.conditions;
+        let chosen = [
+            ("--preset", self.choice.preset.is_some()),
+            ("--config", self.choice.config.is_some()),
+        ];
+        let conditions = [
+            ("--pressure", c.pressure.is_some()),
+            ("--temperature", c.temperature.is_some()),
+            ("--inflated-at", c.inflated_at.is_some()),
+            ("--after", c.after.is_some()),
+            ("--half-life", c.half_life.is_some()),
+        ];
+        let first = |flags: &[(&'static str, bool)]| {
+            flags
+                .iter()
+                .find_map(|&(flag, given)| given.then_some(flag))
+        };
+        first(&chosen)
+            .or_else(|| self.changes.first_given())
+            .or_else(|| first(&conditions))
+    }
+
     /// The preset ball with `--params`, `--law`, `--v0` and the overrides applied, every
     /// parameter checked by the library ([`Ball::from_entry_with`]).
     pub fn resolve(&self, v0: Option<f64>) -> anyhow::Result<Ball> {

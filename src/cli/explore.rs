@@ -72,16 +72,10 @@ pub struct ExplorerArgs {
 impl ExplorerArgs {
     /// The first option given, as the error before a subcommand names it.
     pub fn given(&self) -> Option<&'static str> {
-        let s = &self.changes.set;
+        if let Some(flag) = self.changes.first_given() {
+            return Some(flag);
+        }
         [
-            ("--params", self.changes.params.is_some()),
-            ("--law", self.changes.law.is_some()),
-            ("--mass", s.size.mass.is_some()),
-            ("--radius", s.size.radius.is_some()),
-            ("--k-p", s.k_p.is_some()),
-            ("--damping", s.damping.is_some()),
-            ("--k-r", s.k_r.is_some()),
-            ("--z-p", s.z_p.is_some()),
             ("--v0", self.v0.is_some()),
             ("--lambda", self.lambda.is_some()),
             ("--zeta", self.zeta.is_some()),

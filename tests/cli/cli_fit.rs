@@ -436,6 +436,15 @@ fn pressure_loss_fits_the_leak_and_says_when_the_law_does_not_hold() {
         &["fit", "--pressure-loss", &good, "--cor", "0.5"],
         &["--pressure-loss fits a leak"],
     );
+    // no ball is run: a ball option is refused by name, not dropped (docs/cli.md: "Alone")
+    for (flag, value) in [("--preset", "football"), ("--k-r", "5"), ("--after", "72h")] {
+        bad(
+            &["fit", "--pressure-loss", &good, flag, value],
+            &[&format!(
+                "--pressure-loss fits a leak to pressure readings alone: {flag} is not for it"
+            )],
+        );
+    }
     let broken = dir.path().join("broken.csv");
     std::fs::write(&broken, "time_h,pressure_kpa\n0,80\n-6,79\n").unwrap();
     bad(

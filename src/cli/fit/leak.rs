@@ -22,6 +22,12 @@ pub fn run(a: &FitArgs, path: &Path, out: &mut dyn Write) -> anyhow::Result<()> 
              --plot, --drag-coefficient, --rebound-height-sd are not for it"
         );
     }
+    if let Some(flag) = a.ball.first_given() {
+        anyhow::bail!(
+            "--pressure-loss fits a leak to pressure readings alone: {flag} is not for it (no \
+             ball is run)"
+        );
+    }
     let readings = crate::measured::file::pressure(path)?;
     let file = path.display().to_string();
     let fit = fit_pressure_loss(&readings).map_err(|e| anyhow::anyhow!("{file}: {e}"))?;
