@@ -26,15 +26,27 @@ fn bad(table: &'static str, key: &'static str, message: String) -> Bad {
     }
 }
 
+/// Every preset number lies below this (the parameters' range, `model::checks`).
+const BELOW: f64 = 1e15;
+
+/// Why `v` is refused: past [`BELOW`] where it is a finite number there, else not `what`
+/// ("positive", "non-negative").
+fn refused(v: f64, what: &str) -> String {
+    if v.is_finite() && v >= BELOW {
+        format!(
+            "must be below 1e15 (every parameter's range), got {}",
+            number(v)
+        )
+    } else {
+        format!("must be a {what} finite number, got {}", number(v))
+    }
+}
+
 fn positive(table: &'static str, key: &'static str, v: f64) -> Result<(), Bad> {
-    if v.is_finite() && v > 0.0 && v < 1e15 {
+    if v.is_finite() && v > 0.0 && v < BELOW {
         Ok(())
     } else {
-        Err(bad(
-            table,
-            key,
-            format!("must be a positive finite number, got {}", number(v)),
-        ))
+        Err(bad(table, key, refused(v, "positive")))
     }
 }
 
@@ -170,15 +182,8 @@ fn adopted(a: &Adopted, parameters: ParamSource) -> Result<(), Bad> {
     opt("adopted", "damping", a.damping)?;
     opt("adopted", "z_p", a.z_p)?;
     opt("adopted", "k_p", a.k_p)?;
-    if !(a.k_r.is_finite() && a.k_r >= 0.0 && a.k_r < 1e15) {
-        return Err(bad(
-            "adopted",
-            "k_r",
-            format!(
-                "must be a non-negative finite number, got {}",
-                number(a.k_r)
-            ),
-        ));
+    if !(a.k_r.is_finite() && a.k_r >= 0.0 && a.k_r < BELOW) {
+        return Err(bad("adopted", "k_r", refused(a.k_r, "non-negative")));
     }
     if parameters == ParamSource::Adopted {
         for (key, v) in [("damping", a.damping), ("z_p", a.z_p), ("k_p", a.k_p)] {

@@ -55,6 +55,19 @@ fn errors_point_at_file_line_column() {
     let huge = EMBEDDED[0].1.replace("mass = 0.0374", "mass = 1e300");
     let e = Preset::parse(&huge, "x.toml").unwrap_err();
     assert!(e.to_string().ends_with("got 1e300"), "{e}");
+    // a finite number past the parameters' range is told so, not called infinite or negative
+    for (from, to, key) in [
+        ("mass = 0.0374", "mass = 1e16", "measured.mass"),
+        ("k_r = 7.08e4", "k_r = 1e16", "adopted.k_r"),
+    ] {
+        let e = Preset::parse(&EMBEDDED[0].1.replace(from, to), "x.toml").unwrap_err();
+        assert!(
+            e.to_string().ends_with(&format!(
+                "{key}: must be below 1e15 (every parameter's range), got 1e16"
+            )),
+            "{e}"
+        );
+    }
     let unknown = EMBEDDED[0].1.replace("[adopted]", "[adopted]\nspring = 3");
     let e = Preset::parse(&unknown, "x.toml").unwrap_err();
     assert!(e.to_string().contains("spring"), "{e}");
