@@ -236,3 +236,28 @@ fn table_tennis_is_marked_tt() {
     let text = screen_text(&draw(&app, 200, 60)).join("\n");
     assert!(text.contains("S G B TT measured"), "{text}");
 }
+
+/// On a target the force–time chart drew the wall's measured peak force and contact time
+/// beside the pair's pulse, a comparison the readout withholds ("a wall's, not compared with
+/// the pair") and `collide` does not make; at the wall they are drawn.
+#[test]
+fn on_a_target_the_wall_s_measurements_are_not_drawn() {
+    let measured_lines = |app: &App| {
+        bouncelab::tui::ui::figure(app, bouncelab::figure::explorer::Chart::ForceTime)
+            .series
+            .iter()
+            .filter(|s| s.id.starts_with("measured "))
+            .count()
+    };
+    let mut app = superball();
+    app.refresh();
+    assert_eq!(
+        measured_lines(&app),
+        2,
+        "the wall's F_m and t_f at the measured speed"
+    );
+    type_into_form(&mut app, Field::TargetMass, "300");
+    press(&mut app, &[KeyCode::Esc]);
+    app.refresh();
+    assert_eq!(measured_lines(&app), 0);
+}

@@ -55,9 +55,11 @@ impl App {
         if !preset_lambda_zeta(preset, &self.setting) {
             current.source = MODIFIED.into();
         }
-        // the measurements are of the record's conditions: not drawn beside a ball at others
-        // (the readout does not compare them either, as `run` withholds them)
-        if !self.setting.conditions.is_empty()
+        // the measurements are of the record's conditions, against its wall: not drawn beside
+        // a ball at others or on a target (the readout does not compare them either, as `run`
+        // withholds them and `collide` has none)
+        let elsewhere = self.setting.target != crate::target::Target::wall();
+        if (!self.setting.conditions.is_empty() || elsewhere)
             && let Some(m) = current.measured.as_mut()
         {
             (m.cor, m.max_force, m.contact_time) = (None, None, None);
