@@ -196,11 +196,13 @@ class Preset(TypedDict):
     poisson_ratio: float
     inertia_factor: float
     calibration: Optional[dict[str, Any]]
+    aerodynamics: Optional[Literal["tennis", "baseball", "golf"]]
 
 def presets() -> list[Preset]:
     """Embedded and user presets, as ``bouncelab presets --format json`` (``lambda`` and
     ``zeta`` too: λ cannot be spelled here, a Python keyword); ``calibration`` the preset's
-    record (docs/presets.md, "The calibration record"), None without one."""
+    record (docs/presets.md, "The calibration record"), None without one; ``aerodynamics``
+    the published flight model it flies on (docs/flight.md §2), None for the assumed sphere."""
 
 def run(
     preset: str = "superball",

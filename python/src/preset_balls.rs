@@ -23,8 +23,9 @@ pub(crate) fn entry<'c>(cat: &'c Catalog, name: &str) -> PyResult<&'c Entry> {
 }
 
 /// The presets, as `bouncelab presets --format json`: a list of dicts with name, origin,
-/// description, law, parameters, lambda, zeta, v0, radius, poisson_ratio, inertia_factor and
-/// the `calibration` record (None for a preset without one).
+/// description, law, parameters, lambda, zeta, v0, radius, poisson_ratio, inertia_factor, the
+/// `calibration` record (None for a preset without one) and `aerodynamics`, the flight model
+/// the ball flies on (None: the assumed smooth sphere).
 #[pyfunction]
 pub(crate) fn presets(py: Python<'_>) -> PyResult<Bound<'_, PyAny>> {
     let cat = load_catalog(None)?;

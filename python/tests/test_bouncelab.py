@@ -87,6 +87,8 @@ def test_the_package_carries_the_command_lines_ball_and_conditions():
     assert d["comparison_withheld"].startswith("the measurement is the preset's ball's")
     assert set(d["conditions"]) == {"temperature_c", "pressure_gauge_pa", "atmosphere_pa"}
     assert all("calibration" in p for p in bouncelab.presets())
+    models = {p["name"]: p["aerodynamics"] for p in bouncelab.presets()}
+    assert models["golf-driver"] == "golf" and models["superball"] is None
 
 
 # ---- values against the stored transcripts ----------------------------------------------

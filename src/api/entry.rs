@@ -257,6 +257,9 @@ pub struct PresetRow {
     pub inertia_factor: f64,
     /// The `[calibration]` record (`null` for a preset without one).
     pub calibration: Option<crate::preset::Calibration>,
+    /// The published flight model the ball flies on (docs/flight.md §2): its `aerodynamics`,
+    /// or the model named like it; `null` for neither (the assumed smooth sphere).
+    pub aerodynamics: Option<&'static str>,
 }
 
 impl PresetRow {
@@ -283,6 +286,7 @@ impl PresetRow {
                 .inertia_factor
                 .unwrap_or(super::SOLID_INERTIA_FACTOR),
             calibration: p.calibration.clone(),
+            aerodynamics: p.flight_model().map(|m| m.name()),
         }
     }
 }

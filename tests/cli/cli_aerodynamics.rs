@@ -90,3 +90,28 @@ fn fit_save_writes_the_model_the_ball_flew_on() {
     let (mine, golf) = (drive(dir.path(), "my-driver"), drive(dir.path(), "golf"));
     assert_eq!(mine["aero"], golf["aero"]);
 }
+
+/// `presets --format json` names the flight model each ball flies on (its `aerodynamics`, or
+/// the model named like it, `null` for neither): golf-driver flies as golf although its name
+/// is none of the models' (the list lacked the field).
+#[test]
+fn the_presets_list_names_each_ball_s_flight_model() {
+    let copy = GOLF.replace("name = \"golf\"", "name = \"my-golf\"");
+    let home = config_home(&[("my-golf.toml", &copy)]);
+    let o = bl_in(home.path(), &["presets", "--format", "json"]);
+    assert_eq!(o.code, 0, "{}", o.stderr);
+    let rows: Value = serde_json::from_str(&o.stdout).unwrap();
+    let model = |name: &str| {
+        let row = rows.as_array().unwrap().iter().find(|r| r["name"] == name);
+        row.unwrap_or_else(|| panic!("{name} listed"))["aerodynamics"].clone()
+    };
+    for (ball, kind) in [
+        ("golf-driver", "golf"),
+        ("my-golf", "golf"),
+        ("baseball-mlb", "baseball"),
+        ("tennis", "tennis"),
+    ] {
+        assert_eq!(model(ball), kind, "{ball}");
+    }
+    assert_eq!(model("superball"), Value::Null);
+}
