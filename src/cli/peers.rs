@@ -294,7 +294,12 @@ fn ball_warnings(b: &Ball, pair: Option<&Pair>, source: &str) -> anyhow::Result<
         Some(p) => p.warnings.clone(),
         None => b.warnings(&b.impact()?),
     };
-    w.extend(b.measured_cor_warning().filter(|_| source == "measured"));
+    if source == "measured" {
+        w.extend(b.measured_cor_warning());
+        w.extend(b.measurement_withheld().map(|why| {
+            format!("outside calibration: the target COR is the record's, not this ball's: {why}")
+        }));
+    }
     Ok(w)
 }
 
@@ -312,6 +317,12 @@ fn target(a: &PeersArgs, b: &Ball, pair: Option<&Pair>) -> anyhow::Result<(f64, 
     let which = match (pair, a.source()) {
         (Some(pair), TargetArg::Measured | TargetArg::ChristoforouYigit) => {
             return Ok((pair.cor, "christoforou-yigit"));
+        }
+        // a ball the conditions or an override changed is not the one whose COR was measured:
+        // by default the model's COR for the ball as run, an export's target
+        // (a_changed_ball_is_calibrated_to_its_own_cor); `--target measured` keeps the record's
+        (None, TargetArg::Measured) if a.target.is_none() && b.measurement_withheld().is_some() => {
+            TargetArg::ChristoforouYigit
         }
         (_, which) => which,
     };

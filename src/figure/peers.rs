@@ -148,10 +148,12 @@ fn history(label: &str, id: &str, color: usize, r: &crate::ImpactResponse) -> Se
         .with_points(h.t.iter().copied().zip(h.force.iter().copied()).collect())
 }
 
-/// The target of both figures: the measured COR when the ball has one at its v0, else the
-/// Christoforou–Yigit model's COR there.
-pub fn target(b: &Ball) -> Result<f64, String> {
-    match b.measured_at(b.params.v0).and_then(|m| m.cor) {
+/// The target of both figures: the measured COR when the ball has one at its v0 and
+/// `is_measured` (no condition or override changed the ball: `peers`'s rule, docs/peers.md),
+/// else the Christoforou–Yigit model's COR there.
+pub fn target(b: &Ball, is_measured: bool) -> Result<f64, String> {
+    let measured = b.measured_at(b.params.v0).filter(|_| is_measured);
+    match measured.and_then(|m| m.cor) {
         Some(e) => Ok(e),
         None => christoforou_yigit_cor(&b.params, b.law, b.params.v0).map_err(error),
     }

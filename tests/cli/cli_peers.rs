@@ -139,3 +139,46 @@ fn bad_input_is_one_line_and_exit_2() {
         &["--cor"],
     );
 }
+
+/// A ball the conditions or an override changed is not the ball whose COR was measured: the
+/// default target is then the Christoforou–Yigit model's COR for the ball as run, as an
+/// export's is (`peers --preset football --pressure 0.6bar` targeted the measured 0.8806 at
+/// 80 kPa and refitted K_r to reach it, while `run` there gives 0.8658 and the LAMMPS export
+/// 0.865808); `--target measured` keeps the measured COR, saying whose it is.
+#[test]
+fn a_changed_ball_is_calibrated_to_its_own_cor() {
+    for changed in [
+        "peers --preset football --pressure 0.6bar --format json",
+        "peers --preset tennis --k-p 60000 --format json",
+    ] {
+        let v = json(&argv(changed));
+        let run = json(&argv(&changed.replacen("peers", "run", 1)));
+        assert_eq!(v["target_source"], "christoforou-yigit", "{changed}");
+        assert!(
+            (f(&v, "target_cor") - f(&run, "cor")).abs() < 1e-9,
+            "{changed}"
+        );
+        let cy = v["models"].as_array().unwrap().iter();
+        let cy = cy
+            .clone()
+            .find(|r| r["model"] == "christoforou-yigit")
+            .unwrap();
+        // the model's own COR needs no refit: K_r stays the ball's
+        assert!((f(cy, "k_r") - f(&run["ball"], "k_r")).abs() < 1e-6 * f(cy, "k_r"));
+    }
+    let asked = json(&argv(
+        "peers --preset football --pressure 0.6bar --target measured --format json",
+    ));
+    assert_eq!(asked["target_source"], "measured");
+    let warned = asked["warnings"].as_array().unwrap().iter();
+    assert!(
+        warned
+            .clone()
+            .any(|w| w.as_str().unwrap().contains("record's conditions")),
+        "{}",
+        asked["warnings"]
+    );
+    // the recorded ball at its record: the measured COR, as before
+    let own = json(&argv("peers --preset football --format json"));
+    assert_eq!(own["target_source"], "measured");
+}

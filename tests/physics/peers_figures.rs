@@ -74,3 +74,25 @@ fn peers_force_time_starts_and_ends_at_rest() {
     ));
     assert_eq!(o.code, 2, "{}", o.stderr);
 }
+
+/// The figures' target follows `peers`: a ball an override changed is not the measured one,
+/// so its peers are calibrated to the Christoforou–Yigit COR of the ball as run (the tennis
+/// ball with K_p 60 000 N/m drew its peers flat at the 0.7709 measured with 49 427 N/m).
+#[test]
+fn the_figures_target_a_changed_ball_s_own_cor() {
+    let (_, text) = svg_and_csv("figure peers-cor-velocity --preset tennis --k-p 60000");
+    let run = common::json(&common::argv(
+        "run --preset tennis --k-p 60000 --format json",
+    ));
+    let own = run["cor"].as_f64().unwrap();
+    assert!(
+        (own - 0.7709).abs() > 1e-3,
+        "the override moves the COR: {own}"
+    );
+    let rows = series(&text, "tsuji");
+    let e: f64 = rows[0][3].parse().unwrap();
+    assert!(
+        (e - own).abs() < 1e-9,
+        "tsuji flat at {e}, the ball's COR {own}"
+    );
+}

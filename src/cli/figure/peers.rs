@@ -2,11 +2,14 @@
 //! drawing is src/figure/peers.rs, the peers themselves `bouncelab peers`).
 
 /// `figure peers-cor-velocity` and `figure peers-force-time` (src/figure/peers.rs): the
-/// peers calibrated to the ball's measured COR (else its Christoforou–Yigit COR) at v0.
+/// peers calibrated to the ball's measured COR (else, at another speed or for a ball an
+/// override changed, its Christoforou–Yigit COR) at v0.
 pub fn figure(a: &super::FigureArgs) -> anyhow::Result<crate::figure::Figure> {
     use crate::figure::peers as fig;
-    let b = a.ball.resolve(a.v0)?.record();
-    let target = fig::target(&b).map_err(|e| anyhow::anyhow!(e))?;
+    let whole = a.ball.resolve(a.v0)?;
+    let b = whole.record();
+    let is_measured = whole.measurement_withheld().is_none();
+    let target = fig::target(&b, is_measured).map_err(|e| anyhow::anyhow!(e))?;
     let built = if a.name == super::FigureName::PeersForceTime {
         fig::force_time(&b, target, a.points.unwrap_or(super::HISTORY_SAMPLES))
     } else {
