@@ -37,16 +37,27 @@ pub struct Overrides {
 }
 
 impl Overrides {
-    /// A derived group out of range (ζ, λ, z̄_p) named by the override the user gave for it:
-    /// `--damping 1e-5` said "invalid zeta" (issue 54 item 9; tests/cli/field_names.rs). `None`
-    /// when no override sets the group's own parameter.
+    /// A derived quantity out of range (ζ, λ, z̄_p, K_h) named by the override the user gave
+    /// that moves it, its own parameter first (ζ = √(m K_p)/(2c): c, else m, else K_p):
+    /// `--damping 1e-5` said "invalid zeta" (issue 54 item 9), `--mass 1e15` too, and
+    /// `--k-p 1e15` "invalid k_h" (tests/cli/field_names.rs). `None` when no override moves it.
     fn blamed(&self, e: &crate::model::params::ParamError) -> Option<BallError> {
-        let (field, value) = match e.field {
-            Field::Zeta => ("damping", self.damping?),
-            Field::Lambda => ("k_r", self.k_r?),
-            Field::ZpBar => ("z_p", self.z_p?),
+        let suspects: &[(&'static str, Option<f64>)] = match e.field {
+            Field::Zeta => &[
+                ("damping", self.damping),
+                ("mass", self.mass),
+                ("k_p", self.k_p),
+            ],
+            Field::Lambda => &[("k_r", self.k_r), ("k_p", self.k_p)],
+            Field::ZpBar => &[("z_p", self.z_p), ("mass", self.mass), ("k_p", self.k_p)],
+            Field::KH => &[
+                ("k_p", self.k_p),
+                ("z_p", self.z_p),
+                ("radius", self.radius),
+            ],
             _ => return None,
         };
+        let (field, value) = suspects.iter().find_map(|&(f, v)| Some((f, v?)))?;
         let group = e.field.as_str();
         // four significant figures: "gives zeta = 2.670e6", not 2670176.9136145264
         let derived = crate::text::human(e.value, 4);

@@ -44,6 +44,16 @@ fn a_derived_group_out_of_range_names_the_option_given() {
             "run --preset tennis --k-r 1e12",
             &["invalid k_r: 1e12", "gives lambda = "],
         ),
+        // the mass and K_p move ζ and K_h too: they said "invalid zeta: 2.6365755464702502e7",
+        // "invalid k_h: 1.0540925533894598e16"
+        (
+            "run --mass 1e15",
+            &["invalid mass: 1e15", "gives zeta = 2.637e7"],
+        ),
+        (
+            "run --k-p 1e15 --v0 200",
+            &["invalid k_p: 1e15", "gives k_h = 1.054e16"],
+        ),
     ]);
     // `oblique --angle 1e-15` said "invalid v0: 1.2e-16"
     bad(
