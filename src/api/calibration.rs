@@ -258,4 +258,94 @@ impl Ball {
         };
         self.calibration_warning(v)
     }
+
+    /// "outside calibration: …" for the later bounces of a drop whose impact `speeds` (first
+    /// to last) leave the ball's record: a drop is judged by its first impact (that one's
+    /// warning is [`Ball::calibration_warning`]'s), but its table shows every bounce, and the
+    /// tennis ball fitted at 6.906 m/s only showed nine more down to 0.63 m/s without a word
+    /// (tests/cli/cli_drop.rs, `later_bounces_outside_the_record_are_named`). Names them by
+    /// their numbers and speeds. `None` when they all lie inside, without a record, and when
+    /// an override, another law or the conditions already took the record away (that warning
+    /// says so for the whole answer).
+    pub fn later_bounces_warning(&self, speeds: &[f64]) -> Option<String> {
+        let c = self.calibration.as_ref()?;
+        if !self.overrides.is_empty()
+            || c.other_model.is_some()
+            || self.conditions_moved().is_some()
+        {
+            return None;
+        }
+        // bounces are numbered from 1; the first is the judged one
+        let out: Vec<(usize, f64)> = (speeds.iter().enumerate().skip(1))
+            .filter(|(_, v)| !c.holds_at(**v))
+            .map(|(i, v)| (i + 1, *v))
+            .collect();
+        let (lo, hi) = out
+            .iter()
+            .fold((f64::INFINITY, 0.0_f64), |(lo, hi), &(_, v)| {
+                (lo.min(v), hi.max(v))
+            });
+        let which = bounce_numbers(&out.iter().map(|b| b.0).collect::<Vec<_>>())?;
+        let at = if out.len() == 1 {
+            format!("impact speed {} m/s", short(lo, 4))
+        } else {
+            format!("impact speeds {}–{} m/s", short(lo, 4), short(hi, 4))
+        };
+        let (lie, rows) = if out.len() == 1 {
+            ("lies", "that row extrapolates")
+        } else {
+            ("lie", "those rows extrapolate")
+        };
+        Some(format!(
+            "outside calibration: {which} of the drop ({at}) {lie} outside the ball's record, \
+             fitted at {} ({}): {rows} the model",
+            c.range_text(),
+            c.sources()
+        ))
+    }
+}
+
+/// "bounce 4", "bounces 2–10", "bounces 2–3 and 8–10": runs of consecutive numbers
+/// (`numbers` ascending); `None` when empty.
+fn bounce_numbers(numbers: &[usize]) -> Option<String> {
+    let (&first, _) = numbers.split_first()?;
+    let mut runs: Vec<(usize, usize)> = vec![(first, first)];
+    for &n in &numbers[1..] {
+        match runs.last_mut() {
+            Some(run) if run.1 + 1 == n => run.1 = n,
+            _ => runs.push((n, n)),
+        }
+    }
+    let text: Vec<String> = runs
+        .iter()
+        .map(|&(a, b)| {
+            if a == b {
+                a.to_string()
+            } else {
+                format!("{a}–{b}")
+            }
+        })
+        .collect();
+    let noun = if numbers.len() == 1 {
+        "bounce"
+    } else {
+        "bounces"
+    };
+    Some(format!("{noun} {}", text.join(" and ")))
+}
+
+#[cfg(test)]
+mod bounce_number_tests {
+    use super::bounce_numbers;
+
+    #[test]
+    fn runs_of_bounces_are_named_compactly() {
+        assert_eq!(bounce_numbers(&[]), None);
+        assert_eq!(bounce_numbers(&[4]).unwrap(), "bounce 4");
+        assert_eq!(bounce_numbers(&[2, 3, 4, 5]).unwrap(), "bounces 2–5");
+        assert_eq!(
+            bounce_numbers(&[2, 3, 8, 9, 10]).unwrap(),
+            "bounces 2–3 and 8–10"
+        );
+    }
 }

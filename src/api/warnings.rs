@@ -87,13 +87,17 @@ impl Ball {
     }
 
     /// The warnings of a drop test `run` of this ball: those of its first impact, the
-    /// fastest (the later ones only slow down).
+    /// fastest (the later ones only slow down), then the later bounces' that leave the ball's
+    /// record ([`Ball::later_bounces_warning`]).
     pub fn drop_warnings(&self, run: &crate::drop::DropRun) -> Result<Vec<String>, BallError> {
         let Some(first) = run.bounces.first() else {
             return Ok(Vec::new());
         };
         let ball = self.clone().with_v0(first.v_in)?;
-        Ok(ball.warnings(&ball.impact()?))
+        let mut warnings = ball.warnings(&ball.impact()?);
+        let speeds: Vec<f64> = run.bounces.iter().map(|b| b.v_in).collect();
+        warnings.extend(self.later_bounces_warning(&speeds));
+        Ok(warnings)
     }
 
     /// The warnings of a drop test `run` judged by a standard, the same from the command line
@@ -120,7 +124,10 @@ impl Ball {
         let shown_only =
             statics.is_some() || standard.is_some_and(|s| s.release_height(radius).is_none());
         if !height_given && shown_only {
-            warnings.retain(|w| !w.starts_with("outside calibration: impact speed"));
+            warnings.retain(|w| {
+                !w.starts_with("outside calibration: impact speed")
+                    && !w.starts_with("outside calibration: bounce")
+            });
         }
         if let Some((d, s)) = statics {
             warnings.extend(self.static_warnings(s));
