@@ -38,3 +38,23 @@ def test_a_solid_ball_refuses_a_pressure_naming_it():
         bouncelab.run(preset="superball", pressure="1bar")
     with pytest.raises(ValueError, match="invalid pressure"):
         bouncelab.run(preset="football", pressure="0.8 bars")
+
+
+def test_the_conditions_hold_where_the_command_line_holds_them():
+    # no time since inflation is the record's conditions: the comparison made, no warning
+    r = bouncelab.run(preset="football", after="0h")
+    assert r.comparison_withheld is None
+    same(r.to_dict(), bouncelab.run(preset="football").to_dict())
+    # beyond its shift's span, past the COR's minimum, the squash ball is refused; inside
+    # the refusal's bound but outside the span, warned
+    with pytest.raises(ValueError, match="invalid temperature: -50 .*COR's minimum"):
+        bouncelab.run(preset="squash", temperature=-50.0)
+    cold = bouncelab.run(preset="squash", temperature=23.0)
+    assert any("outside the temperature shift's fitted span" in w for w in cold.warnings)
+    # a refusal names the flag that caused it, as the command line's
+    with pytest.raises(ValueError, match="invalid after: .*leaked flat"):
+        bouncelab.run(preset="football", after="1e30d")
+    with pytest.raises(ValueError, match="invalid inflated-at: 30 .*give --temperature too"):
+        bouncelab.run(preset="tennis", inflated_at=30.0)
+    with pytest.raises(ValueError, match="invalid temperature: 45 .*--damping"):
+        bouncelab.run(preset="squash", temperature=45.0, damping=10.0)

@@ -198,14 +198,32 @@ impl Ball {
                 c.sources()
             ));
         }
+        let inside = c.holds_at(lo) && c.holds_at(hi);
         if let Some(moved) = self.conditions_moved() {
+            // the speed said as inside or outside: "…carries it there; impact speed 6.111
+            // m/s, the ball was fitted at 6.111 m/s only" read as if the speed were out
+            let speed = if inside {
+                let record = if c.speed_min == c.speed_max {
+                    format!("{} m/s", short(c.speed_min, 4))
+                } else {
+                    range
+                };
+                format!("at {at}, inside the record's {record}")
+            } else {
+                let verb = if lo == hi { "is" } else { "reach" };
+                format!(
+                    "{at} {verb} outside the record too: {fitted}, and the answer extrapolates \
+                     the model there"
+                )
+            };
             return Some(format!(
                 "outside calibration: {moved} ({}); the conditions' model (docs/model.md §10) \
-                 carries it there; {at}, {fitted}",
-                c.sources()
+                 carries it there{}; {speed}",
+                c.sources(),
+                self.conditions_caveat()
             ));
         }
-        if c.holds_at(lo) && c.holds_at(hi) {
+        if inside {
             return None;
         }
         Some(format!(

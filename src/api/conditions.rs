@@ -16,6 +16,7 @@
 use super::{Ball, BallError};
 use crate::analysis::fit::{Param, apply};
 use crate::conditions::{Conditions, STANDARD_ATMOSPHERE, gas, inflated::Inflated, leak::Leak};
+use crate::model::params::ImpactParams;
 
 /// Seconds in an hour.
 const HOUR: f64 = 3_600.0;
@@ -80,8 +81,9 @@ impl Ball {
     /// gauge pressure the run has, and [`Ball::conditions`] stating them. Refused, naming the
     /// field: a pressure or a leak for a ball that is not inflated, a half-life without a time
     /// to leak over, a temperature for a ball with no temperature model, a temperature where
-    /// the record states none to start from, `--k-p` beside a pressure, a pressure at which
-    /// the ball is flat.
+    /// the record states none to start from (or an inflation temperature without the run's),
+    /// `--k-p` beside a pressure, and a ball left flat, named by the flag whose step flattened
+    /// it ([`Ball::blame`]).
     pub fn at_conditions(mut self, spec: &ConditionsSpec) -> Result<Ball, BallError> {
         if spec.is_empty() {
             return Ok(self);
@@ -89,6 +91,62 @@ impl Ball {
         let Some(p0) = self.calibration.as_ref().and_then(|c| c.pressure) else {
             return self.solid_at(spec);
         };
+        self.check_inflated(spec, p0)?;
+        let t_record = self.calibration.as_ref().and_then(|c| c.temperature);
+        let t0 = spec.inflated_at.or(t_record);
+        let t = spec.temperature.or(t_record);
+        let atm = self.conditions.atmosphere_pa;
+        let inflated = spec.pressure.unwrap_or(p0);
+        let (leaked, leak) = match spec.after {
+            Some(after) => {
+                let (l, assumed) = self.leak(spec)?;
+                let p = l.gauge_after(inflated, after).map_err(from)?;
+                // a leak that lost nothing (no time since inflation) moved nothing: the
+                // record's own conditions, as `--after 0` is
+                (
+                    p,
+                    (p != inflated).then_some((after, l.half_life(), assumed)),
+                )
+            }
+            None => (inflated, None),
+        };
+        let (t0, t) = match (t0, t) {
+            (Some(t0), Some(t)) => (t0, t),
+            // the temperature given is the one at fault: `run --preset tennis --temperature
+            // 30` said "invalid inflated-at: 30" (issue 52's trial; tests/cli/issue52_trial.rs)
+            (None, Some(t)) => {
+                let why = format!(
+                    "{}'s calibration records no temperature the ball was inflated at: give \
+                     --inflated-at too, the temperature at which it was inflated",
+                    self.called()
+                );
+                return Err(invalid("temperature", t, why));
+            }
+            _ => {
+                let params = self.pressure_params(p0, leaked);
+                self.params = params.map_err(|e| self.blame(e, spec, p0, None))?;
+                self.conditions.pressure_gauge_pa = Some(leaked);
+                self.conditions.leak = leak;
+                return Ok(self);
+            }
+        };
+        let p = gas::gauge_at(leaked, t0, t, atm).map_err(from)?;
+        let params = self.pressure_params(p0, p);
+        self.params = params.map_err(|e| self.blame(e, spec, p0, Some(t0)))?;
+        self.conditions = Conditions {
+            temperature_c: Some(t),
+            pressure_gauge_pa: Some(p),
+            atmosphere_pa: atm,
+            leak,
+        };
+        Ok(self)
+    }
+
+    /// What an inflated ball refuses before its pressure is worked: a half-life without a
+    /// time, `--k-p` beside a pressure, an inflation temperature without the run's where the
+    /// record states none (docs/cli.md: such a ball needs both; `--inflated-at 30` alone ran
+    /// the tennis ball as if at 30 °C).
+    fn check_inflated(&self, spec: &ConditionsSpec, p0: f64) -> Result<(), BallError> {
         if let (Some(h), None) = (spec.half_life, spec.after) {
             return Err(invalid(
                 "half-life",
@@ -106,64 +164,43 @@ impl Ball {
             ));
         }
         let t_record = self.calibration.as_ref().and_then(|c| c.temperature);
-        let t0 = spec.inflated_at.or(t_record);
-        let t = spec.temperature.or(t_record).or(t0);
-        let atm = self.conditions.atmosphere_pa;
-        let inflated = spec.pressure.unwrap_or(p0);
-        let (leaked, leak) = match spec.after {
-            Some(after) => {
-                let (l, assumed) = self.leak(spec)?;
-                let p = l.gauge_after(inflated, after).map_err(from)?;
-                (p, Some((after, l.half_life(), assumed)))
-            }
-            None => (inflated, None),
-        };
-        let p = match (t0, t) {
-            (Some(t0), Some(t)) => gas::gauge_at(leaked, t0, t, atm).map_err(from)?,
-            // the temperature given is the one at fault: `run --preset tennis --temperature
-            // 30` said "invalid inflated-at: 30" (issue 52's trial; tests/cli/issue52_trial.rs)
-            (None, Some(t)) => {
-                let why = format!(
-                    "{}'s calibration records no temperature the ball was inflated at: give \
-                     --inflated-at too, the temperature at which it was inflated",
-                    self.called()
-                );
-                return Err(invalid("temperature", t, why));
-            }
-            _ => leaked,
-        };
-        self.set_pressure(p0, p)
-            .map_err(|e| blame_pressure(e, spec))?;
-        self.conditions = Conditions {
-            temperature_c: t,
-            pressure_gauge_pa: Some(p),
-            atmosphere_pa: atm,
-            leak,
-        };
-        Ok(self)
+        if let (None, Some(t0), None) = (t_record, spec.inflated_at, spec.temperature) {
+            let why = format!(
+                "{}'s calibration records no temperature: give --temperature too, the \
+                 ball's temperature at the run (the gas law carries it from the one it was \
+                 inflated at)",
+                self.called()
+            );
+            return Err(invalid("inflated-at", t0, why));
+        }
+        Ok(())
     }
 
     /// K_p at gauge pressure `p` from its value at the record's `p0`, as a ratio so that at
     /// `p0` nothing moves (the football's K_p is the membrane term rounded to the newton).
     /// K_r keeps λ = K_r/K_p and c keeps the Kelvin–Voigt pair's retardation time c/K_r, so
     /// both move by the same ratio (docs/model.md §10.1: ζ = √(m K_p)/(2c) ∝ 1/√K_p, and a
-    /// softer ball loses more, as inflated balls do).
-    fn set_pressure(&mut self, p0: f64, p: f64) -> Result<(), BallError> {
+    /// softer ball loses more, as inflated balls do). The ball's parameters there, checked.
+    pub(super) fn pressure_params(&self, p0: f64, p: f64) -> Result<ImpactParams, BallError> {
         let radius = self.radius();
         let model = Inflated::calibrated(radius, self.params.k_p, p0).map_err(from)?;
         let ratio = model.k_p(p).map_err(from)? / model.k_p(p0).map_err(from)?;
-        if ratio != 1.0 {
-            let k = &self.params;
-            let moved = [k.k_p * ratio, k.damping * ratio, k.k_r * ratio];
-            self.params = apply(&self.params, &[Param::KP, Param::C, Param::KR], &moved);
-            self.params.validate()?;
+        if ratio == 1.0 {
+            return Ok(self.params);
         }
-        Ok(())
+        let k = &self.params;
+        let moved = [k.k_p * ratio, k.damping * ratio, k.k_r * ratio];
+        let params = apply(&self.params, &[Param::KP, Param::C, Param::KR], &moved);
+        params.validate()?;
+        Ok(params)
     }
 
     /// The leak over `--after`: the half-life given, or the limit of the ball's own
     /// pressure-loss standard (named, as the assumption it is).
-    fn leak(&self, spec: &ConditionsSpec) -> Result<(Leak, Option<&'static str>), BallError> {
+    pub(super) fn leak(
+        &self,
+        spec: &ConditionsSpec,
+    ) -> Result<(Leak, Option<&'static str>), BallError> {
         if let Some(h) = spec.half_life {
             return Ok((Leak::from_half_life(h).map_err(from)?, None));
         }
@@ -206,10 +243,17 @@ impl Ball {
         }
         let t = spec.temperature.unwrap_or(f64::NAN);
         crate::conditions::kelvin("temperature", t).map_err(from)?;
+        let shift = self.temperature_shift().cloned();
+        if shift.is_some() && self.overrides.iter().any(|o| o == "c") {
+            // before the record's own temperature returns: `--temperature 45 --damping 10`
+            // on the squash ball slipped through there, against docs/cli.md
+            let why = "--damping sets c too, which the temperature shifts: give one of them";
+            return Err(invalid("temperature", t, why.into()));
+        }
         if self.conditions.temperature_c == Some(t) {
             return Ok(self);
         }
-        if let Some(shift) = self.temperature_shift().cloned() {
+        if let Some(shift) = shift {
             return self.shifted(&shift, t);
         }
         Err(invalid(
@@ -228,53 +272,7 @@ impl Ball {
     }
 }
 
-impl Ball {
-    /// The dashpot's temperature shift of the ball's record, if it holds one
-    /// (`[calibration.temperature_shift]`).
-    pub fn temperature_shift(&self) -> Option<&crate::preset::TemperatureShift> {
-        self.calibration.as_ref()?.temperature_shift.as_ref()
-    }
-
-    /// A solid ball at `t` °C by its record's shift: c(T) = c · exp[(E_a/R)(1/T − 1/T_ref)]
-    /// (docs/model.md §10.4), the springs kept. Refused beside `--damping`, which sets c too.
-    fn shifted(
-        mut self,
-        shift: &crate::preset::TemperatureShift,
-        t: f64,
-    ) -> Result<Ball, BallError> {
-        use crate::analysis::fit::cor_temperature::shifted_damping;
-        if self.overrides.iter().any(|o| o == "c") {
-            let why = "--damping sets c too, which the temperature shifts: give one of them";
-            return Err(invalid("temperature", t, why.into()));
-        }
-        let c = shifted_damping(
-            self.params.damping,
-            shift.activation_energy,
-            shift.reference,
-            t,
-        );
-        self.params = apply(&self.params, &[Param::C], &[c]);
-        self.params.validate()?;
-        self.conditions.temperature_c = Some(t);
-        Ok(self)
-    }
-}
-
-/// A parameter out of range at the pressure given, named by `--pressure` when only it moved
-/// the pressure: `--pressure 1e308` said "invalid k_p: 2.1048670779051614e307" (issue 52's
-/// trial; tests/cli/issue52_trial.rs).
-fn blame_pressure(e: BallError, spec: &ConditionsSpec) -> BallError {
-    match (e, spec.pressure) {
-        (BallError::Param(p), Some(given)) if spec.temperature.is_none() => {
-            let derived = crate::text::human(p.value, 4);
-            let why = format!("gives {} = {derived}: {}", p.field.as_str(), p.reason);
-            invalid("pressure", given, why)
-        }
-        (e, _) => e,
-    }
-}
-
-fn invalid(field: &'static str, value: f64, reason: String) -> BallError {
+pub(super) fn invalid(field: &'static str, value: f64, reason: String) -> BallError {
     BallError::Invalid {
         field,
         value,
@@ -283,106 +281,13 @@ fn invalid(field: &'static str, value: f64, reason: String) -> BallError {
 }
 
 /// A condition out of its domain as the ball's error, its message kept.
-fn from(e: crate::conditions::ConditionsError) -> BallError {
+pub(super) fn from(e: crate::conditions::ConditionsError) -> BallError {
     use crate::conditions::ConditionsError as E;
     match e {
         E::Temperature { field, value } => invalid(field, value, "must be above −273.15 °C".into()),
         E::Pressure { field, value, why } | E::Time { field, value, why } => {
             invalid(field, value, why.into())
         }
-    }
-}
-
-impl Ball {
-    /// The text header's line of conditions: "conditions: 20 °C, gauge 80 kPa (0.8 bar,
-    /// 11.6 psi), atmosphere 101.3 kPa"; `None` for a ball whose record states neither a
-    /// temperature nor a pressure and that was given none (the JSON's `conditions` says so
-    /// with its nulls).
-    pub fn conditions_line(&self) -> Option<String> {
-        let c = &self.conditions;
-        if c.temperature_c.is_none() && c.pressure_gauge_pa.is_none() {
-            return None;
-        }
-        let short = crate::text::short;
-        let t = c
-            .temperature_c
-            .map_or("temperature not recorded".into(), |t| {
-                format!("{} °C", short(t, 4))
-            });
-        let p = c.pressure_gauge_pa.map_or("solid ball".into(), |p| {
-            format!(
-                "gauge {} kPa ({} bar, {} psi)",
-                short(p / 1e3, 4),
-                short(p / 1e5, 3),
-                short(p / crate::conditions::pressure::PSI, 4)
-            )
-        });
-        let atm = short(c.atmosphere_pa / 1e3, 4);
-        Some(format!("conditions: {t}, {p}, atmosphere {atm} kPa"))
-    }
-}
-
-/// "20 °C, 0.8 bar": a record's or a run's conditions in words, for the warnings.
-pub(super) fn words(c: &Conditions) -> String {
-    let short = crate::text::short;
-    let t = c
-        .temperature_c
-        .map_or("an unrecorded temperature".into(), |t| {
-            format!("{} °C", short(t, 4))
-        });
-    match c.pressure_gauge_pa {
-        Some(p) => format!("{t}, {} kPa gauge", short(p / 1e3, 4)),
-        None => t,
-    }
-}
-
-/// Whether `run` is at `record`'s conditions to the precision a record states them: 4
-/// significant digits of the gauge pressure (0.05 %: the basketball's record says 55 160 Pa
-/// for 8 psi, 55 158.06 Pa; a user typing `--pressure 8psi` is at it) and 0.01 K; a
-/// leak is always a change. Tested by tests/physics/conditions_squash.rs,
-/// `a_ball_at_its_record_s_pressure_typed_in_other_units_is_not_warned`.
-fn at_record(run: &Conditions, record: &Conditions) -> bool {
-    let near = |a: Option<f64>, b: Option<f64>, tol: f64| match (a, b) {
-        (Some(a), Some(b)) => (a - b).abs() <= tol * b.abs().max(1.0),
-        (None, None) => true,
-        _ => false,
-    };
-    run.leak.is_none()
-        && run.atmosphere_pa == record.atmosphere_pa
-        && near(run.pressure_gauge_pa, record.pressure_gauge_pa, 5e-4)
-        && match (run.temperature_c, record.temperature_c) {
-            (Some(a), Some(b)) => (a - b).abs() <= 0.01,
-            (a, b) => a.is_none() && b.is_none(),
-        }
-}
-
-impl Ball {
-    /// The ball's conditions against its record's, in words, when they differ: "the ball at
-    /// 5 °C, 75.54 kPa gauge; its record at 20 °C, 80 kPa gauge"; `None` at the record's
-    /// own (or without a record).
-    pub fn conditions_moved(&self) -> Option<String> {
-        let record = recorded(Some(self.calibration.as_ref()?));
-        (!at_record(&self.conditions, &record)).then(|| {
-            let leak = self
-                .conditions
-                .leak
-                .map_or(String::new(), |(t, half, assumed)| {
-                    let h = crate::text::short;
-                    let whose = match assumed {
-                        Some(s) => format!(
-                            "no measured leak rate: the limit of {s} assumed, half-life {} h",
-                            h(half / HOUR, 4)
-                        ),
-                        None => format!("half-life {} h", h(half / HOUR, 4)),
-                    };
-                    format!(", {} h after inflation ({whose})", h(t / HOUR, 4))
-                });
-            format!(
-                "the ball at {}{leak}; its record at {}",
-                words(&self.conditions),
-                words(&record)
-            )
-        })
     }
 }
 

@@ -66,7 +66,7 @@ impl Ball {
         let judged = match stated && !self.is_named_among(s.balls) {
             true => format!(
                 "{ANOTHER_BALL}, at its own conditions ({}), not the test's ({})",
-                super::conditions::words(&self.conditions),
+                super::conditions_words::words(&self.conditions),
                 super::test_words(&test)
             ),
             false => ANOTHER_BALL.to_string(),

@@ -104,7 +104,7 @@ impl Ball {
                 "off the test's conditions: {name} tests at {}; this ball is at {} — the \
                  verdict is of this ball, not of the test's",
                 test_words(&test),
-                super::conditions::words(&ball.conditions)
+                super::conditions_words::words(&ball.conditions)
             )
         });
         Ok((ball, warning))

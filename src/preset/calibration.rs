@@ -53,6 +53,12 @@ pub struct TemperatureShift {
     pub reference: f64,
     /// Where E_a comes from: the data it was fitted or solved from.
     pub source: String,
+    /// The lowest and highest temperature of those data, °C: the span the shift holds over
+    /// (beyond it the answer says the shift is extrapolated, and refuses it where the COR
+    /// would turn back; docs/model.md §10.4). `None` in a record written before spans were
+    /// kept: then only `reference` is known to hold.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub span: Option<[f64; 2]>,
 }
 
 /// One data set a ball was fitted to.
@@ -160,6 +166,9 @@ impl Calibration {
                 s.activation_energy
             );
             let _ = writeln!(out, "reference = {:?}  # °C", s.reference);
+            if let Some([lo, hi]) = s.span {
+                let _ = writeln!(out, "span = [{lo:?}, {hi:?}]  # °C, the data's");
+            }
             let _ = writeln!(out, "source = {}", string(&s.source));
         }
         for d in &self.data {
@@ -259,8 +268,8 @@ pub(super) fn check(c: &Option<Calibration>) -> Result<(), Bad> {
 }
 
 /// A shift's activation energy finite and within ±1 MJ/mol (the glass transitions of rubbers
-/// reach a few hundred kJ/mol), its reference a temperature a test is taken at, its source
-/// named and free of control characters.
+/// reach a few hundred kJ/mol), its reference and its span's ends temperatures a test is
+/// taken at (the span's in order), its source named and free of control characters.
 fn check_shift(s: &TemperatureShift) -> Result<(), Bad> {
     const TABLE: &str = "calibration.temperature_shift";
     let e = s.activation_energy;
@@ -271,10 +280,21 @@ fn check_shift(s: &TemperatureShift) -> Result<(), Bad> {
         );
         return Err(bad(TABLE, None, "activation_energy", msg));
     }
-    let t = s.reference;
-    if !(t.is_finite() && (-50.0..=100.0).contains(&t)) {
+    let test_temperature = |key, t: f64| {
+        if t.is_finite() && (-50.0..=100.0).contains(&t) {
+            return Ok(());
+        }
         let msg = format!("must lie in [-50, 100] °C, got {}", number(t));
-        return Err(bad(TABLE, None, "reference", msg));
+        Err(bad(TABLE, None, key, msg))
+    };
+    test_temperature("reference", s.reference)?;
+    if let Some([lo, hi]) = s.span {
+        test_temperature("span", lo)?;
+        test_temperature("span", hi)?;
+        if hi < lo {
+            let msg = format!("[{}, {}] is not in order", number(lo), number(hi));
+            return Err(bad(TABLE, None, "span", msg));
+        }
     }
     if let Some((j, ch)) = crate::sanitize::first_control(&s.source, &[]) {
         let msg = format!(

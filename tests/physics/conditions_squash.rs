@@ -186,6 +186,8 @@ fn a_fitted_shift_is_saved_in_the_preset_and_used() {
     let saved =
         std::fs::read_to_string(home.path().join("bouncelab/presets/squash-fitted.toml")).unwrap();
     assert!(saved.contains("[calibration.temperature_shift]"), "{saved}");
+    // the span of the fitted data, where the shift holds (docs/model.md §10.4)
+    assert!(saved.contains("span = [15.0, 55.0]"), "{saved}");
     let c30 = (cor("squash-fitted", "30"), cor("squash", "30"));
     assert!((c30.0 - c30.1).abs() < 1e-6, "{c30:?}");
     assert_bad(&fit(&[]), &["preset 'squash-fitted' exists", "--force"]);

@@ -225,5 +225,8 @@ pub fn fit_cor_temperature(
     })
 }
 
+mod turn;
+pub use turn::{cor_turn, damping_temperature};
+
 #[cfg(test)]
 mod tests;

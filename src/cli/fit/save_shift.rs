@@ -46,10 +46,14 @@ fn shifted(
         record.speed_max = record.speed_max.max(v);
     }
     record.temperature = Some(fit.t_ref_c);
+    let temperatures = points.iter().map(|p| p.temperature_c);
+    let lo = temperatures.clone().fold(f64::INFINITY, f64::min);
+    let hi = temperatures.fold(f64::NEG_INFINITY, f64::max);
     record.temperature_shift = Some(TemperatureShift {
         activation_energy: fit.activation.value,
         reference: fit.t_ref_c,
         source,
+        span: Some([lo, hi]),
     });
     let mut p = base.clone();
     // the base's flight model kept under the new name
