@@ -179,11 +179,24 @@ pub fn run(a: &ShotArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         TextJsonCsv::Text => text(&mut report, (&ball, &surface), &spec, &shot, a.after_bounce)?,
     }
     report_then_commit(out, &report, files)?;
-    // the net's warning belongs to no CSV row: on stderr, as a time series' (`run --history`)
-    if let (TextJsonCsv::Csv, Some(n)) = (a.format, &shot.net) {
-        output::warnings_to_stderr(&n.warnings);
+    if a.format == TextJsonCsv::Csv {
+        csv_warnings(&shot);
     }
     Ok(())
+}
+
+/// The warnings a shot's CSV has no cell for, on stderr as a time series' (`run --history`),
+/// in the text's order: the bounces' where the rows are the trajectory's samples, not the
+/// bounces (whose `warnings` column holds them), then the net's, which belongs to no row.
+fn csv_warnings(s: &ShotReport) {
+    if !s.trajectory.is_empty() {
+        for b in &s.bounces {
+            output::warnings_to_stderr(&b.warnings);
+        }
+    }
+    if let Some(n) = &s.net {
+        output::warnings_to_stderr(&n.warnings);
+    }
 }
 
 /// A CSV header: `columns`, then the net's with `--net`.
