@@ -155,6 +155,9 @@ pub fn run(a: &ShotArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         };
         let mut fig =
             crate::figure::shot::side_view(&drawn, ball.radius(), title(&spec), ball.label());
+        // what moved from the preset, its record and the plate (its bounces' speeds are the
+        // text's and JSON's warnings, each bounce's own)
+        fig.push_notes(&ball.moved_notes(Some(&surface), None));
         if let Some(n) = &drawn.net {
             super::shot_net::draw(&mut fig, n);
         }
