@@ -1,9 +1,10 @@
 //! Every format names the ball, its surface and conditions and warns outside them (docs/
 //! guarantees.md; docs/cli.md "Conditions", "The ball object"): the formats a newcomer's trial
 //! found losing a warning or a name. A batch's CSV lost the lot's warning; `figure` never
-//! warned and subtitled a changed ball as the preset's; the SVGs of `map`, `mc` and `shot`
-//! named no override, condition or surface. (A shot's trajectory CSV:
-//! tests/cli/cli_shot_net.rs.)
+//! warned and subtitled a changed ball as the preset's; `fit`'s text showed no conditions,
+//! called K_r at other conditions the preset's, and held the record's parameters at any speed
+//! without a word; the SVGs of `map`, `mc` and `shot` named no override, condition or surface.
+//! (A shot's trajectory CSV: tests/cli/cli_shot_net.rs.)
 
 use crate::common;
 
@@ -157,6 +158,91 @@ fn a_speed_figure_warns_over_the_speeds_it_draws() {
     assert!(
         text.contains("; outside calibration: tennis, golf"),
         "{text}"
+    );
+}
+
+/// `fit`'s text shows the conditions as `run`'s header does (a single COR, drop tests, a COR
+/// table; given or recorded), names the K_r it started from for what it is (41 402 N/m is
+/// the football's at 0.6 bar, its preset's 55 202 at 0.8 bar), and warns of the record
+/// its held parameters come from as `run` warns of the ball.
+#[test]
+fn a_fit_shows_its_conditions_and_the_k_r_it_started_from() {
+    let dir = tempfile::tempdir().unwrap();
+    let drops = dir.path().join("d.csv");
+    std::fs::write(&drops, "drop_height_m,rebound_height_m\n2,1.5\n").unwrap();
+    let table = dir.path().join("t.csv");
+    std::fs::write(&table, "v0,cor\n5,0.87\n6,0.86\n7,0.85\n").unwrap();
+    let (drops, table) = (drops.display().to_string(), table.display().to_string());
+    let ball = "--preset football --pressure 0.6bar";
+    let header = "conditions: 20 °C, gauge 60 kPa (0.6 bar, 8.702 psi), atmosphere 101.3 kPa";
+    let run = common::ok_calibrated(&argv(&format!("run {ball}")));
+    assert!(run.lines().any(|l| l == header));
+    for (data, path) in [
+        ("--cor 0.85", ""),
+        ("--drop-test {}", &*drops),
+        ("--cor-table {}", &*table),
+    ] {
+        let line = format!("fit {ball} {data}");
+        let values: Vec<&str> = [path].into_iter().filter(|p| !p.is_empty()).collect();
+        let o = bl(&argv_with(&line, &values));
+        assert_eq!(o.code, 0, "{line}: {}", o.stderr);
+        assert_eq!(
+            o.stdout.lines().nth(1),
+            Some(header),
+            "{line}: {}",
+            o.stdout
+        );
+        let warned = o.stdout.lines().filter(|l| {
+            l.starts_with("warning: outside calibration: the ball at 20 °C, 60 kPa gauge")
+        });
+        assert_eq!(warned.count(), 1, "{line}: {}", o.stdout);
+    }
+    let text = common::ok_calibrated(&argv(&format!("fit {ball} --cor 0.85")));
+    let row = |label: &str| {
+        text.lines()
+            .find_map(|l| l.trim().strip_prefix(label).map(str::trim))
+            .unwrap_or_else(|| panic!("no {label}: {text}"))
+            .to_string()
+    };
+    assert_eq!(row("K_r at these conditions"), "41402 N/m (λ = 1.0000)");
+    assert_eq!(
+        row("preset's K_r at its record's conditions"),
+        "55202 N/m (λ = 1.0000)"
+    );
+    assert!(!text.contains("preset's K_r  "), "{text}");
+    let squash = common::ok_calibrated(&argv("fit --preset squash --cor 0.4 --temperature 23"));
+    assert_eq!(
+        squash.lines().nth(1),
+        Some("conditions: 23 °C, solid ball, atmosphere 101.3 kPa")
+    );
+}
+
+/// `fit --cor 0.6 --v0 60` holds K_p, c and z_p from a record taken at 6.906 m/s: `run`'s
+/// warning at 60 m/s, after the fitted ball's radius warning (it gave the radius alone).
+#[test]
+fn a_fit_at_another_speed_warns_of_the_record_it_holds() {
+    let line = "fit --preset tennis --cor 0.6 --v0 60 --format json";
+    let v = common::json(&argv(line));
+    let want = run_calibration("run --preset tennis --v0 60");
+    let got: Vec<&str> = common::outside_calibration(&v);
+    assert_eq!(got, want.iter().map(String::as_str).collect::<Vec<_>>());
+    assert!(
+        common::warnings(&v)[0].starts_with("the fitted ball at v0 = 60 m/s: peak indentation")
+    );
+    // a table at other speeds, with K_p and c held: the same, over its speeds
+    let dir = tempfile::tempdir().unwrap();
+    let table = dir.path().join("t.csv");
+    std::fs::write(&table, "v0,cor\n10,0.7\n20,0.65\n30,0.6\n").unwrap();
+    let path = table.display().to_string();
+    let o = bl(&argv_with(
+        "fit --preset tennis --cor-table {} --format json",
+        &[&path],
+    ));
+    let v: serde_json::Value = serde_json::from_str(&o.stdout).unwrap();
+    let tennis = bouncelab::Ball::from_preset("tennis").unwrap();
+    assert_eq!(
+        common::outside_calibration(&v),
+        [tennis.speeds_warning(10.0, 30.0).unwrap().as_str()]
     );
 }
 
