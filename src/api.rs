@@ -94,6 +94,7 @@ mod intervals;
 mod judged;
 mod map_reach;
 mod mc;
+mod moved;
 mod oblique;
 mod oblique_fit;
 mod reach;

@@ -103,15 +103,22 @@ impl Ball {
     /// from the preset ("overrides: k_p; kept from the preset: mass, radius, c, k_r, z_p");
     /// `None` without an override or for a ball that is no preset.
     pub fn overrides_line(&self) -> Option<String> {
-        if self.overrides.is_empty() || self.name.is_none() {
-            return None;
-        }
+        let mut line = self.overrides_words()?;
         let kept = self.kept();
-        let mut line = format!("overrides: {}", self.overrides.join(", "));
         if !kept.is_empty() {
             line.push_str(&format!("; kept from the preset: {}", kept.join(", ")));
         }
         Some(line)
+    }
+
+    /// "overrides: k_p": what the command line changed, the first words of
+    /// [`Ball::overrides_line`] (a figure's subtitle says no more, [`Ball::moved_notes`]);
+    /// `None` without an override or for a ball that is no preset.
+    pub fn overrides_words(&self) -> Option<String> {
+        if self.overrides.is_empty() || self.name.is_none() {
+            return None;
+        }
+        Some(format!("overrides: {}", self.overrides.join(", ")))
     }
 
     /// The preset's parameters an override left as they were (mass, radius, k_p, c, k_r,
@@ -172,17 +179,7 @@ impl Ball {
     /// map's grid, a lot's): one warning naming the range of the answer and the record's.
     pub fn speeds_warning(&self, lo: f64, hi: f64) -> Option<String> {
         let c = self.calibration.as_ref()?;
-        let at = if lo == hi {
-            format!("impact speed {} m/s", short(lo, 4))
-        } else {
-            format!("impact speeds {}–{} m/s", short(lo, 4), short(hi, 4))
-        };
-        let range = c.range_text();
-        let fitted = if c.speed_min == c.speed_max {
-            format!("the ball was fitted at {range}")
-        } else {
-            format!("the ball was fitted over {range}")
-        };
+        let (at, fitted) = (speeds_words(lo, hi), fitted_words(c));
         if !self.overrides.is_empty() {
             return Some(format!(
                 "outside calibration: {} changed the ball, whose record ({fitted}; {}) no \
@@ -365,5 +362,26 @@ mod bounce_number_tests {
             bounce_numbers(&[2, 3, 8, 9, 10]).unwrap(),
             "bounces 2–3 and 8–10"
         );
+    }
+}
+
+/// "impact speed 40 m/s", "impact speeds 0.69–20.7 m/s": an answer's speeds as the
+/// calibration warning names them (and a figure's subtitle, [`Ball::moved_notes`]).
+pub(super) fn speeds_words(lo: f64, hi: f64) -> String {
+    if lo == hi {
+        format!("impact speed {} m/s", short(lo, 4))
+    } else {
+        format!("impact speeds {}–{} m/s", short(lo, 4), short(hi, 4))
+    }
+}
+
+/// "the ball was fitted at 1.47 m/s only", "the ball was fitted over 1.2–6.9 m/s": the
+/// record's speeds as the calibration warning names them.
+pub(super) fn fitted_words(c: &crate::preset::Calibration) -> String {
+    let range = c.range_text();
+    if c.speed_min == c.speed_max {
+        format!("the ball was fitted at {range}")
+    } else {
+        format!("the ball was fitted over {range}")
     }
 }

@@ -106,6 +106,40 @@ impl Ball {
         }
     }
 
+    /// "outside calibration: …" for a fit from this ball to data at `speeds` (m/s) that frees
+    /// `free` and holds the rest: the parameters held are the record's, which vouches for them
+    /// at its own speeds and conditions only — `run`'s warning at the data's speeds
+    /// ([`Ball::speeds_warning`]), as `fit --cor-temperature` (its springs) and a batch (its
+    /// lot's) give it. `None` within the record, without one, and for a fit that frees every
+    /// parameter of its law (K_p or K_h, c, K_r, and z_p but under the Hertz law, which has no
+    /// flattening): its ball is the data's.
+    ///
+    /// ```
+    /// use bouncelab::analysis::fit::Param;
+    /// let b = bouncelab::Ball::from_preset("tennis")?;
+    /// let w = b.held_warning(&[Param::KR], &[60.0]).unwrap();
+    /// assert!(w.starts_with("outside calibration: impact speed 60 m/s, the ball was fitted at 6.906 m/s"));
+    /// assert_eq!(b.held_warning(&[Param::KR], &[6.906]), None);
+    /// assert_eq!(b.held_warning(&[Param::KP, Param::C, Param::KR, Param::ZP], &[60.0]), None);
+    /// # Ok::<(), bouncelab::BallError>(())
+    /// ```
+    pub fn held_warning(&self, free: &[Param], speeds: &[f64]) -> Option<String> {
+        let lo = speeds.iter().copied().fold(f64::INFINITY, f64::min);
+        let hi = speeds.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+        if !(lo.is_finite() && hi.is_finite()) {
+            return None;
+        }
+        let frees = |p: Param| free.contains(&p);
+        let every = (frees(Param::KP) || frees(Param::KH))
+            && frees(Param::C)
+            && frees(Param::KR)
+            && (frees(Param::ZP) || self.law == crate::ContactLaw::Hertz);
+        if every {
+            return None;
+        }
+        self.speeds_warning(lo, hi)
+    }
+
     /// Drop tests as a COR table: each (drop height, rebound height) pair (m) checked and
     /// turned into an impact speed and a COR by this ball's flight ([`drop_to_cor`]), in
     /// vacuum or through `air` (drag on the preset's measured radius); each row weighed by

@@ -103,8 +103,9 @@ pub fn run(a: &BatchArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     // both files staged, then the report, then the files published: all or none
     // (cli::outputs, as every command)
     let mut written = Outputs::new(a.force);
+    let csv = || balls_csv(&outcomes, &report.warnings, &ball);
     if let Some(p) = &a.csv_out {
-        written.text(p, &balls_csv(&outcomes))?;
+        written.text(p, &csv())?;
     }
     if let Some(p) = &a.svg_out {
         written.text(p, &svg::render(&histogram_figure(&a.file, &report))?)?;
@@ -118,7 +119,7 @@ pub fn run(a: &BatchArgs, out: &mut dyn Write) -> anyhow::Result<()> {
             output::Met::RigidPlate,
             &ball.conditions,
         )?,
-        TextJsonCsv::Csv => text_out.extend_from_slice(balls_csv(&outcomes).as_bytes()),
+        TextJsonCsv::Csv => text_out.extend_from_slice(csv().as_bytes()),
         TextJsonCsv::Text => batch_text::text(&mut text_out, &ball, &a.file, air, &report)?,
     }
     report_then_commit(out, &text_out, written)?;
@@ -235,10 +236,14 @@ fn judge_all(
 
 /// `id, line, data, points, free, k_p, c, k_r, z_p, identified, cor, measured, verdict,
 /// margin, error, warnings, measured_ci95_lo, measured_ci95_hi, verdict_from, readings,
-/// model_measured, fit_error` (SI; empty where a ball has no value; lists joined by `; `;
-/// columns added later come last).
-fn balls_csv(balls: &[BallOutcome]) -> String {
-    let header = [
+/// model_measured, fit_error`, then on every row the lot's: `lot_warnings` (the JSON's
+/// top-level `warnings`, which belong to no ball: `lot` its warnings) and the ball the fits
+/// start from, the rigid plate they were judged on and its conditions
+/// ([`super::csv_stated::with_ball`]) (SI; empty where a ball has no value; lists joined by
+/// `; `; columns added later come last).
+fn balls_csv(balls: &[BallOutcome], lot: &[String], ball: &Ball) -> String {
+    let stated = super::csv_stated::with_ball_cells(ball, &crate::api::SurfaceUsed::rigid_plate());
+    let mut header = vec![
         "id",
         "line",
         "data",
@@ -261,12 +266,14 @@ fn balls_csv(balls: &[BallOutcome]) -> String {
         "readings",
         "model_measured",
         "fit_error",
+        "lot_warnings",
     ];
+    header.extend(super::csv_stated::with_ball());
     let mut buf = Vec::new();
     let mut rows = || -> std::io::Result<()> {
         csv_row(&mut buf, &header)?;
         for b in balls {
-            let row = [
+            let mut row = vec![
                 b.id.clone(),
                 b.line.to_string(),
                 b.data.to_string(),
@@ -289,7 +296,9 @@ fn balls_csv(balls: &[BallOutcome]) -> String {
                 b.readings.to_string(),
                 output::opt_num(b.model_measured),
                 b.fit_error.clone().unwrap_or_default(),
+                output::warnings_cell(lot),
             ];
+            row.extend(stated.iter().cloned());
             csv_row(&mut buf, &row)?;
         }
         Ok(())

@@ -84,6 +84,10 @@ pub struct MapBall {
     pub record: crate::api::BallRecord,
     /// The conditions the ball is at (the JSON `conditions`).
     pub conditions: crate::conditions::Conditions,
+    /// What moved from the preset and its record, for the picture's subtitle
+    /// ([`crate::Ball::moved_notes`]: overrides, conditions, its speed); empty for the
+    /// normalized ball.
+    pub notes: Vec<String>,
 }
 
 /// The map's ball and axes from the options, each checked (exit 2 naming the flag).
@@ -118,6 +122,7 @@ pub fn spec(a: &MapArgs) -> anyhow::Result<MapBall> {
             calibration: Vec::new(),
             record: crate::Ball::normalized(1.0, 1.0, a.zp_bar, law)?.record_json(),
             conditions: crate::api::recorded_conditions(None),
+            notes: Vec::new(),
         });
     }
     let args = BallArgs {
@@ -145,6 +150,7 @@ pub fn spec(a: &MapArgs) -> anyhow::Result<MapBall> {
         radius: b.radius(),
         calibration: b.map_calibration_warnings(),
         record: b.record_json(),
+        notes: b.moved_notes(None, Some((b.params.v0, b.params.v0))),
         conditions: b.conditions,
     })
 }
@@ -187,6 +193,7 @@ pub fn run(a: &MapArgs, out: &mut dyn Write) -> anyhow::Result<()> {
                     None => "normalized ball (m = K_p = v0 = 1)".into(),
                 },
                 radius_note: reach.as_ref().and_then(crate::api::MapReach::note),
+                notes: ball.notes.clone(),
             };
             crate::figure::svg_map::render(&map, &view)?
         }

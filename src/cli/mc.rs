@@ -304,12 +304,16 @@ fn cor_histogram(
         ("2.5 %", "q2.5", stats.cor.q.q2_5),
         ("97.5 %", "q97.5", stats.cor.q.q97_5),
     ];
-    histogram::figure(
+    let mut fig = histogram::figure(
         &format!("COR of {}", ball.label()),
         &subtitle,
         Axis::linear("e", "cor", 1.0),
         &samples.cor,
         BINS,
         &marks,
-    )
+    );
+    // the nominal ball's changes from its preset and record, as every picture names them
+    let v0 = ball.params.v0;
+    fig.push_notes(&ball.moved_notes(None, Some((v0, v0))));
+    fig
 }

@@ -155,6 +155,9 @@ pub fn run(a: &ShotArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         };
         let mut fig =
             crate::figure::shot::side_view(&drawn, ball.radius(), title(&spec), ball.label());
+        // what moved from the preset, its record and the plate (its bounces' speeds are the
+        // text's and JSON's warnings, each bounce's own)
+        fig.push_notes(&ball.moved_notes(Some(&surface), None));
         if let Some(n) = &drawn.net {
             super::shot_net::draw(&mut fig, n);
         }
@@ -179,11 +182,24 @@ pub fn run(a: &ShotArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         TextJsonCsv::Text => text(&mut report, (&ball, &surface), &spec, &shot, a.after_bounce)?,
     }
     report_then_commit(out, &report, files)?;
-    // the net's warning belongs to no CSV row: on stderr, as a time series' (`run --history`)
-    if let (TextJsonCsv::Csv, Some(n)) = (a.format, &shot.net) {
-        output::warnings_to_stderr(&n.warnings);
+    if a.format == TextJsonCsv::Csv {
+        csv_warnings(&shot);
     }
     Ok(())
+}
+
+/// The warnings a shot's CSV has no cell for, on stderr as a time series' (`run --history`),
+/// in the text's order: the bounces' where the rows are the trajectory's samples, not the
+/// bounces (whose `warnings` column holds them), then the net's, which belongs to no row.
+fn csv_warnings(s: &ShotReport) {
+    if !s.trajectory.is_empty() {
+        for b in &s.bounces {
+            output::warnings_to_stderr(&b.warnings);
+        }
+    }
+    if let Some(n) = &s.net {
+        output::warnings_to_stderr(&n.warnings);
+    }
 }
 
 /// A CSV header: `columns`, then the net's with `--net`.

@@ -255,6 +255,19 @@ impl Figure {
         }
     }
 
+    /// Add `notes` to the subtitle after its first part (the ball, its law and speed), before
+    /// the figure's own notes (its flattening, its radius), each after a "; " the SVG may
+    /// break it at: what moved from the ball's preset and record (`api::Ball::moved_notes`),
+    /// said on every picture of a ball the same way.
+    pub fn push_notes(&mut self, notes: &[String]) {
+        if notes.is_empty() {
+            return;
+        }
+        let at = self.subtitle.find("; ").unwrap_or(self.subtitle.len());
+        let added: String = notes.iter().map(|n| format!("; {n}")).collect();
+        self.subtitle.insert_str(at, &added);
+    }
+
     /// Add `series` after the model curves, before the measured values (which are drawn last,
     /// and listed last in the legend), so that a measured marker at the same place stays
     /// visible.

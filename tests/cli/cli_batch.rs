@@ -151,7 +151,18 @@ fn the_files_hold_the_report() {
     // that every earlier column keeps its place
     assert_eq!(&header[14..16], ["error", "warnings"]);
     assert_eq!(&header[16..18], ["measured_ci95_lo", "measured_ci95_hi"]);
-    assert!(header.ends_with(&["verdict_from", "readings", "model_measured", "fit_error"]));
+    assert_eq!(
+        &header[18..23],
+        [
+            "verdict_from",
+            "readings",
+            "model_measured",
+            "fit_error",
+            "lot_warnings"
+        ]
+    );
+    // then the ball, the plate and the conditions, as `sweep velocity`'s CSV ends
+    assert!(header.ends_with(&["temperature_c", "pressure_gauge_pa", "atmosphere_pa"]));
     let svg = parse_svg(&std::fs::read_to_string(dir.path().join("h.svg")).unwrap());
     assert_eq!(
         svg.series,

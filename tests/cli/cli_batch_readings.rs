@@ -118,8 +118,9 @@ fn the_text_and_csv_say_which_balls_have_no_fit() {
     );
     let mut lines = csv.lines();
     assert!(
-        lines.next().unwrap().ends_with(
-            "measured_ci95_lo,measured_ci95_hi,verdict_from,readings,model_measured,fit_error"
+        lines.next().unwrap().contains(
+            "measured_ci95_lo,measured_ci95_hi,verdict_from,readings,model_measured,fit_error,\
+             lot_warnings,"
         ),
         "{csv}"
     );

@@ -257,7 +257,7 @@ fn every_new_ball_runs_through_the_other_commands() {
         let dir = tempfile::tempdir().unwrap();
         for fig in ["cor-velocity", "force-time", "force-displacement"] {
             let out = dir.path().join(format!("{ball}-{fig}.svg"));
-            ok(&argv_with(
+            ok_calibrated(&argv_with(
                 "figure {} --preset {} --out {}",
                 &[fig, ball, out.to_str().unwrap()],
             ));

@@ -16,7 +16,7 @@ fn figure_in(dir: &Path, name: &str, presets: &[&str], extra: &[&str]) -> (Strin
     }
     args.extend(["--out", "f.svg", "--csv-out", "f.csv", "--force"]);
     args.extend(extra);
-    ok_at(dir, &args);
+    ok_at_calibrated(dir, &args);
     (
         std::fs::read_to_string(dir.join("f.svg")).unwrap(),
         std::fs::read_to_string(dir.join("f.csv")).unwrap(),

@@ -12,7 +12,7 @@ fn figure(args: &[&str], legend: &[&str]) -> Svg {
     let mut all = vec!["figure"];
     all.extend_from_slice(args);
     all.extend_from_slice(&["--out", "f.svg"]);
-    assert_eq!(ok_at(dir.path(), &all), "f.svg\n");
+    assert_eq!(ok_at_calibrated(dir.path(), &all), "f.svg\n");
     let svg = parse_svg(&fs::read_to_string(dir.path().join("f.svg")).unwrap());
     assert_eq!(svg.series.len(), legend.len(), "series {:?}", svg.series);
     for l in legend {
@@ -187,7 +187,7 @@ fn data_files_hold_the_plotted_series_in_si() {
         let mut all = vec!["figure"];
         all.extend_from_slice(args);
         all.extend_from_slice(&["--out", &svg, "--csv-out", &csv]);
-        assert_eq!(ok_at(d, &all), format!("{svg}\n{csv}\n"));
+        assert_eq!(ok_at_calibrated(d, &all), format!("{svg}\n{csv}\n"));
         let rows = csv_rows(&fs::read_to_string(d.join(&csv)).unwrap(), header);
         assert_eq!(rows.len(), *n, "{args:?}");
     }

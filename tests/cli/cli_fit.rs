@@ -290,7 +290,7 @@ fn overrides_on_run_sweep_and_figure() {
     let csv = ok(&argv("sweep velocity --k-r 5e4 --zeta 0.3 --points 2"));
     assert_eq!(csv.lines().count(), 3, "{csv}");
     let dir = tempfile::tempdir().unwrap();
-    ok_at(
+    ok_at_calibrated(
         dir.path(),
         &argv("figure force-time --k-p 7e4 --zeta 0.2 --out f.svg"),
     );

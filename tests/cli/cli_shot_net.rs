@@ -77,6 +77,30 @@ fn the_csv_carries_the_net_and_its_warning_goes_to_stderr() {
     }
 }
 
+/// A trajectory's CSV (`--samples`) has no row for a bounce, so no cell for its warnings: they
+/// go to stderr as the net's does, in the text's order (the serve's `outside calibration:
+/// impact speed 9.585 m/s …` was in neither stdout nor stderr); one row per bounce keeps them
+/// in its `warnings` column, not repeated on stderr.
+#[test]
+fn a_trajectory_csv_gives_the_bounces_warnings_on_stderr() {
+    let text = common::bl(&common::argv(&format!("{SERVE} --net 11.89")));
+    let said: Vec<&str> = (text.stdout.lines())
+        .filter_map(|l| l.strip_prefix("warning: "))
+        .collect();
+    assert!(said[0].starts_with("outside calibration: impact speed 9.585 m/s"));
+    assert_eq!(said.len(), 2, "{said:?}");
+    let line = format!("{SERVE} --net 11.89 --samples 4 --format csv");
+    let o = common::bl(&common::argv(&line));
+    assert_eq!(o.code, 0, "{}", o.stderr);
+    let stderr: Vec<&str> = (o.stderr.lines())
+        .filter_map(|l| l.strip_prefix("bouncelab: warning: "))
+        .collect();
+    assert_eq!(stderr, said);
+    let rows = common::bl(&common::argv(&format!("{SERVE} --format csv")));
+    assert!(rows.stdout.contains(said[0]), "{}", rows.stdout);
+    assert_eq!(rows.stderr, "");
+}
+
 #[test]
 fn the_svg_draws_the_net() {
     let dir = tempfile::tempdir().unwrap();

@@ -5,7 +5,7 @@
 use crate::common;
 
 use bouncelab::{ContactLaw, ImpactParams, SolveOptions, simulate};
-use common::{argv, argv_with, bad, f, json, ok, ok_calibrated};
+use common::{argv, argv_with, bad, f, json, ok_calibrated};
 
 /// The superball's adopted set (docs/model.md §7) at another mass, run by the library directly.
 fn superball_at(mass: f64) -> ImpactParams {
@@ -105,7 +105,7 @@ fn every_ball_command_takes_them() {
     let dir = tempfile::tempdir().unwrap();
     let out = dir.path().join("f.svg");
     let out = out.to_str().unwrap();
-    ok(&argv_with(
+    ok_calibrated(&argv_with(
         "figure cor-velocity --mass 0.04 --radius 0.022 --out {}",
         &[out],
     ));

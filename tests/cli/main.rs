@@ -39,6 +39,7 @@ mod cli_fit_air;
 mod cli_fit_joint;
 mod cli_fit_oblique;
 mod cli_fit_reports;
+mod cli_formats_name;
 mod cli_golden;
 mod cli_golden_batch;
 mod cli_golden_map;

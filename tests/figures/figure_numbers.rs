@@ -11,7 +11,7 @@ fn subtitle(dir: &std::path::Path, v0: &str) -> String {
         "figure force-displacement --v0 {} --out fd.svg --force",
         &[v0],
     );
-    ok_at(dir, &args);
+    ok_at_calibrated(dir, &args);
     let svg = std::fs::read_to_string(dir.join("fd.svg")).unwrap();
     let doc = roxmltree::Document::parse(&svg).unwrap();
     let desc = doc.descendants().find(|n| n.has_tag_name("desc")).unwrap();
@@ -103,7 +103,7 @@ fn legend_numbers_are_runs_rounded_as_the_figure_rounds() {
                 let mut args = vec!["figure", "force-displacement"];
                 args.extend(base);
                 args.extend(["--out", "fd.svg", "--force"]);
-                ok_at(d, &args);
+                ok_at_calibrated(d, &args);
                 let svg = std::fs::read_to_string(d.join("fd.svg")).unwrap();
                 let mut run = vec!["run"];
                 run.extend(base);
@@ -126,7 +126,7 @@ fn legend_numbers_are_runs_rounded_as_the_figure_rounds() {
             "figure cor-velocity --preset {} --out cv.svg --force",
             &[&p.name],
         );
-        ok_at(d, &args);
+        ok_at_calibrated(d, &args);
         let svg = std::fs::read_to_string(d.join("cv.svg")).unwrap();
         let r = json(&["run", "--preset", &p.name, "--format", "json"]);
         if r["measured"]["cor"].is_null() {
@@ -158,7 +158,7 @@ fn a_reference_cor_is_labelled_by_where_it_comes_from() {
     let label = |args: &[&str]| {
         let mut all = vec!["figure", "cor-velocity", "--out", "cv.svg", "--force"];
         all.extend_from_slice(args);
-        ok_at(dir.path(), &all);
+        ok_at_calibrated(dir.path(), &all);
         let svg = std::fs::read_to_string(dir.path().join("cv.svg")).unwrap();
         texts(&svg).join("|")
     };

@@ -13,10 +13,11 @@
 
 use super::{
     FigureArgs, FigureName, HISTORY_SAMPLES, VELOCITY_POINTS, history_figures, velocity_figure,
+    velocity_range,
 };
+use crate::api::Ball;
 use crate::cli::ball::{BallArgs, PresetChanges, PresetChoice};
 use crate::figure::history::OUTSIDE;
-use crate::figure::paper;
 use crate::figure::{Figure, Kind};
 use clap::Args;
 use std::path::PathBuf;
@@ -68,26 +69,83 @@ pub fn each(first: &BallArgs, more: &[String]) -> Vec<BallArgs> {
     all
 }
 
-/// One ball's figure of cor-velocity, force-time or force-displacement.
-pub(super) fn ball_figure(a: &FigureArgs, b: &paper::Ball) -> anyhow::Result<Figure> {
-    if a.name == FigureName::CorVelocity {
-        return velocity_figure(b, a.from, a.to, a.points.unwrap_or(VELOCITY_POINTS));
-    }
-    let (t, d) = history_figures(b, a.points.unwrap_or(HISTORY_SAMPLES))?;
-    Ok(if a.name == FigureName::ForceTime {
-        t
+/// One ball's figure of cor-velocity, force-time or force-displacement, with what `run` and
+/// `sweep velocity` warn of over its speeds (the calibration record's: [`Ball::speeds_warning`])
+/// and the notes of what moved ([`Ball::moved_notes`]), which [`push_notes`] puts in the
+/// subtitle once the balls are [`combine`]d.
+pub(super) fn ball_figure(a: &FigureArgs, ball: &Ball) -> anyhow::Result<OneBall> {
+    let b = ball.record();
+    let (fig, (lo, hi)) = if a.name == FigureName::CorVelocity {
+        let range = velocity_range(&b, a.from, a.to)?;
+        let points = a.points.unwrap_or(VELOCITY_POINTS);
+        let fig = velocity_figure(&b, Some(range.0), Some(range.1), points)?;
+        (fig, range)
     } else {
-        d
+        let (t, d) = history_figures(&b, a.points.unwrap_or(HISTORY_SAMPLES))?;
+        let fig = if a.name == FigureName::ForceTime {
+            t
+        } else {
+            d
+        };
+        (fig, (b.params.v0, b.params.v0))
+    };
+    Ok(OneBall {
+        name: b.name,
+        fig,
+        warnings: ball.speeds_warning(lo, hi).into_iter().collect(),
+        notes: ball.moved_notes(None, Some((lo, hi))),
     })
 }
 
+/// One ball's figure, before [`combine`]: its name, the figure, the warnings for stderr and
+/// the subtitle's notes of what moved.
+pub(super) struct OneBall {
+    pub name: String,
+    pub fig: Figure,
+    pub warnings: Vec<String>,
+    pub notes: Vec<String>,
+}
+
 /// The ball `args` of a one-ball figure, with the overrides, λ and ζ applied (and v0 for the
-/// force figures), and its origin.
-pub(super) fn one_ball(a: &FigureArgs, args: &BallArgs) -> anyhow::Result<(paper::Ball, String)> {
+/// force figures).
+pub(super) fn one_ball(a: &FigureArgs, args: &BallArgs) -> anyhow::Result<Ball> {
     let v0 = a.v0.filter(|_| a.name != FigureName::CorVelocity);
     let lambda = a.lambda.as_ref().filter(|l| l.len() == 1).map(|l| l[0]);
-    let b = args.resolve_tuned(v0, lambda, a.zeta)?;
-    Ok((b.record(), b.origin))
+    args.resolve_tuned(v0, lambda, a.zeta)
+}
+
+/// The balls' notes of what moved ([`Ball::moved_notes`]) in the subtitle of their
+/// [`combine`]d figure: one ball's as they are; of several, a note every ball has once, the
+/// balls whose speeds pass their records named in one ("outside calibration: golf,
+/// baseball": the note of a ball's speeds is its only one that begins so, and each ball's
+/// numbers are its warning's on stderr, a subtitle having no room for several), and each
+/// other after its ball's name.
+pub(super) fn push_notes(fig: &mut Figure, balls: &[(String, Vec<String>)]) {
+    if let [(_, notes)] = balls {
+        fig.push_notes(notes);
+        return;
+    }
+    const OUTSIDE: &str = "outside calibration: ";
+    let shared = |n: &String| balls.iter().all(|(_, ns)| ns.contains(n));
+    let mut notes: Vec<String> = Vec::new();
+    for n in balls.iter().flat_map(|(_, ns)| ns).filter(|n| shared(n)) {
+        if !notes.contains(n) {
+            notes.push(n.clone());
+        }
+    }
+    let mut outside = Vec::new();
+    for (name, ns) in balls {
+        for n in ns.iter().filter(|n| !shared(n)) {
+            match n.starts_with(OUTSIDE) {
+                true => outside.push(name.as_str()),
+                false => notes.push(format!("{name}: {n}")),
+            }
+        }
+    }
+    if !outside.is_empty() {
+        notes.push(format!("{OUTSIDE}{}", outside.join(", ")));
+    }
+    fig.push_notes(&notes);
 }
 
 /// Colours of the balls' model curves: the palette's first six (black and grey are for

@@ -241,8 +241,22 @@ pub fn velocity_figure(
     points: usize,
 ) -> anyhow::Result<Figure> {
     super::budget::check(points, b.law, &format!("{points} points"))?;
-    let v0 = b.params.v0;
     let onset = paper::speed_for_indentation(&b.params, b.law, 1.0)?;
+    let (from, to) = velocity_range(b, from, to)?;
+    let rows = super::budget::velocity_rows(&b.params, b.law, &lin_space(from, to, points))?;
+    let mut fig = paper::cor_velocity(b, &rows, onset);
+    crate::figure::history::push_speed_radius_note(&mut fig, b, &rows);
+    Ok(fig)
+}
+
+/// The speeds of Fig. 4, (lowest, highest): `from` (default 0.1 v0) and `to` (default: where
+/// z_m = 3 z_p, at least 1.2 v0 so the measured point shows), each checked.
+pub fn velocity_range(
+    b: &paper::Ball,
+    from: Option<f64>,
+    to: Option<f64>,
+) -> anyhow::Result<(f64, f64)> {
+    let v0 = b.params.v0;
     let far = paper::speed_for_indentation(&b.params, b.law, SPEED_RANGE_ZP)?;
     let from = from.unwrap_or(0.1 * v0);
     let to = to.unwrap_or_else(|| far.unwrap_or(3.0 * v0).max(1.2 * v0));
@@ -251,10 +265,7 @@ pub fn velocity_figure(
     if from >= to {
         anyhow::bail!("invalid speed range: --from {from} must be below --to {to}");
     }
-    let rows = super::budget::velocity_rows(&b.params, b.law, &lin_space(from, to, points))?;
-    let mut fig = paper::cor_velocity(b, &rows, onset);
-    crate::figure::history::push_speed_radius_note(&mut fig, b, &rows);
-    Ok(fig)
+    Ok((from, to))
 }
 
 /// Figs. 5–8 at the ball's v0: (force-time, force-displacement).
@@ -274,7 +285,9 @@ pub fn history_figures(b: &paper::Ball, samples: usize) -> anyhow::Result<(Figur
     Ok((paper::force_time(b, &r), paper::force_displacement(b, &r)))
 }
 
-fn build(a: &FigureArgs) -> anyhow::Result<Figure> {
+/// The figure `a` asks for, and what its balls' answers warn of (on stderr: a picture has
+/// no place for them beyond its subtitle's notes).
+fn build(a: &FigureArgs) -> anyhow::Result<(Figure, Vec<String>)> {
     use FigureName::*;
     match a.name {
         CorZeta | ForceZeta => {
@@ -300,38 +313,61 @@ fn build(a: &FigureArgs) -> anyhow::Result<Figure> {
             }
             let points = a.points.unwrap_or(ZETA_POINTS);
             let (cor, force) = zeta_figures(&lambdas, points, law, &balls)?;
-            Ok(if a.name == CorZeta { cor } else { force })
+            // the normalized ball's curves, the balls' measured points: no ball is run
+            Ok((if a.name == CorZeta { cor } else { force }, Vec::new()))
         }
-        CorVelocity | ForceTime | ForceDisplacement => {
-            let mut figs = Vec::new();
-            for args in balls::each(&a.ball, &a.more) {
-                let (b, origin) = balls::one_ball(a, &args)?;
-                let mut f = balls::ball_figure(a, &b)?;
-                overlay::relabel_user(&mut f, &origin);
-                figs.push((b.name, f));
-            }
-            Ok(balls::combine(figs))
-        }
+        CorVelocity | ForceTime | ForceDisplacement => one_ball_figures(a),
         PeersCorVelocity | PeersForceTime => peers::figure(a),
     }
 }
 
+/// cor-velocity, force-time or force-displacement of each ball given, combined, with the
+/// notes of what moved in its subtitle and the balls' warnings (each after its ball's name
+/// when there are several).
+fn one_ball_figures(a: &FigureArgs) -> anyhow::Result<(Figure, Vec<String>)> {
+    let (mut figs, mut notes, mut warnings) = (Vec::new(), Vec::new(), Vec::new());
+    let several = !a.more.is_empty();
+    for args in balls::each(&a.ball, &a.more) {
+        let ball = balls::one_ball(a, &args)?;
+        let mut one = balls::ball_figure(a, &ball)?;
+        overlay::relabel_user(&mut one.fig, &ball.origin);
+        warnings.extend(one.warnings.iter().map(|w| named(w, &one.name, several)));
+        notes.push((one.name.clone(), one.notes));
+        figs.push((one.name, one.fig));
+    }
+    let mut fig = balls::combine(figs);
+    balls::push_notes(&mut fig, &notes);
+    Ok((fig, warnings))
+}
+
+/// A ball's warning `w` as a figure of `several` balls says it: named after its "outside
+/// calibration:" as `collide` names its partner's ("outside calibration: golf: impact speeds
+/// …"), else before it; one ball's as it is.
+fn named(w: &str, name: &str, several: bool) -> String {
+    const OUTSIDE: &str = "outside calibration: ";
+    match (several, w.strip_prefix(OUTSIDE)) {
+        (false, _) => w.to_string(),
+        (true, Some(rest)) => format!("{OUTSIDE}{name}: {rest}"),
+        (true, None) => format!("{name}: {w}"),
+    }
+}
+
 /// `build`, with the `--measured` files drawn on it (against the ball's m and v0).
-fn build_all(a: &FigureArgs) -> anyhow::Result<Figure> {
+fn build_all(a: &FigureArgs) -> anyhow::Result<(Figure, Vec<String>)> {
     // the files are read before any solving, once: a bad file fails fast, and what is drawn
     // is what was checked
     let measured = (a.measured.iter())
         .map(|path| Ok((path.as_path(), super::measured_file::any(path)?)))
         .collect::<anyhow::Result<Vec<_>>>()?;
     super::budget::stop_if_interrupted()?;
-    let mut fig = build(a)?;
+    let (mut fig, warnings) = build(a)?;
     if !a.measured.is_empty() {
         super::budget::stop_if_interrupted()?;
-        let (b, _) = balls::one_ball(a, &a.ball)?;
+        let b = balls::one_ball(a, &a.ball)?;
         overlay::add_measured(&mut fig, a.name, &measured, b.params.mass, b.params.v0)?;
     }
     super::budget::stop_if_interrupted()?;
-    Ok(fig)
+    Ok((fig, warnings))
 }
 
 pub fn run(a: &FigureArgs, out: &mut dyn Write) -> anyhow::Result<()> {
@@ -339,7 +375,7 @@ pub fn run(a: &FigureArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     let mut paths = vec![a.out.as_path()];
     paths.extend(a.csv_out.as_deref());
     check_writable(&paths, a.force)?;
-    let fig = build_all(a)?;
+    let (fig, warnings) = build_all(a)?;
     let picture = svg::render(&fig)?;
     super::budget::stop_if_interrupted()?;
     // both files or neither (crate::atomic), and none when stdout cannot take their names
@@ -350,5 +386,7 @@ pub fn run(a: &FigureArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     }
     let report: String = paths.iter().map(|p| format!("{}\n", p.display())).collect();
     super::outputs::report_then_commit(out, report.as_bytes(), files)?;
+    // stdout names the files: the answers' warnings go to stderr, as a time series' do
+    super::output::warnings_to_stderr(&warnings);
     Ok(())
 }

@@ -299,7 +299,7 @@ fn single(a: &FitArgs, cor: f64, stdout: &mut dyn Write) -> anyhow::Result<()> {
     let p = &b.params;
     let r = FitReport::new(&b, cor, &f);
     let fitted = crate::model::params::ImpactParams { k_r: f.k_r, ..*p };
-    let warnings = b.fitted_warnings(&fitted, &[p.v0]);
+    let warnings = single_warnings(&b, &fitted);
     // the report first in memory: it goes out with the files, or not at all (cli::outputs)
     let mut report = Vec::new();
     let out = &mut report;
@@ -316,9 +316,7 @@ fn single(a: &FitArgs, cor: f64, stdout: &mut dyn Write) -> anyhow::Result<()> {
         )?,
         TextJson::Text => {
             writeln!(out, "{}, {} law", b.label(), r.ball.law)?;
-            if let Some(line) = b.overrides_line() {
-                writeln!(out, "{line}")?;
-            }
+            output::ball_lines(out, &b, None)?;
             writeln!(
                 out,
                 "fitting K_r at v0 = {} m/s, holding m, K_p, c (ζ = {}) and z_p",
@@ -332,20 +330,59 @@ fn single(a: &FitArgs, cor: f64, stdout: &mut dyn Write) -> anyhow::Result<()> {
                 vec!["fitted K_r".into(), format!("{} N/m", human(r.k_r, 5))],
                 vec!["fitted λ = K_r/K_p".into(), human(r.lambda, 5)],
                 vec!["model COR at the fit".into(), human(r.cor, 6)],
-                vec![
-                    "preset's K_r".into(),
-                    format!(
-                        "{} N/m (λ = {})",
-                        human(r.preset_k_r, 5),
-                        human(r.preset_lambda, 5)
-                    ),
-                ],
             ];
+            let rows = [rows, start_rows(a, &b, &r)?].concat();
             table(out, "  ", &rows)?;
             output::warning_lines(out, &warnings)?;
         }
     }
     multi::single_extras(a, &b, &fitted, cor, stdout, &report)
+}
+
+/// The warnings of a single-COR fit: its fitted ball's ([`crate::Ball::fitted_warnings`]),
+/// then the record's of the K_p, c and z_p it holds at the COR's speed
+/// ([`crate::Ball::held_warning`]), as `run` warns of the ball there.
+pub(super) fn single_warnings(
+    b: &crate::Ball,
+    fitted: &crate::model::params::ImpactParams,
+) -> Vec<String> {
+    let v0 = b.params.v0;
+    let mut w = b.fitted_warnings(fitted, &[v0]);
+    w.extend(b.held_warning(&[Param::KR], &[v0]));
+    w
+}
+
+/// The text's rows of the K_r the fit started from, named for what it is: the preset's; the
+/// one given (`--k-r`, `--lambda`); or, where conditions away from the record's moved it, the
+/// one at these conditions with the preset's at its record's beside it (`preset_k_r` in JSON
+/// is the first: the ball the fit started from).
+fn start_rows(a: &FitArgs, b: &crate::Ball, r: &FitReport) -> anyhow::Result<Vec<Vec<String>>> {
+    let value = |k_r: f64, lambda: f64| format!("{} N/m (λ = {})", human(k_r, 5), human(lambda, 5));
+    let start = value(r.preset_k_r, r.preset_lambda);
+    let given = b.overrides.iter().any(|o| o == "k_r" || o == "lambda");
+    // the same ball at its record's conditions: the K_r the preset gives
+    let record = match b.conditions_moved() {
+        Some(_) => {
+            let args = BallArgs {
+                conditions: Default::default(),
+                ..a.ball.clone()
+            };
+            Some(args.resolve(a.v0)?.params).filter(|p| p.k_r != r.preset_k_r)
+        }
+        None => None,
+    };
+    Ok(match (given, record) {
+        (false, None) => vec![vec!["preset's K_r".into(), start]],
+        (true, None) => vec![vec!["K_r given".into(), start]],
+        (true, Some(_)) => vec![vec!["K_r given, at these conditions".into(), start]],
+        (false, Some(p)) => vec![
+            vec!["K_r at these conditions".into(), start],
+            vec![
+                "preset's K_r at its record's conditions".into(),
+                value(p.k_r, p.k_r / p.k_p),
+            ],
+        ],
+    })
 }
 
 /// `fit --cor E --format json`: the library's report and what the caller should know of the

@@ -235,11 +235,22 @@ pub fn run(
 /// (`cli::outputs`): the files staged, the report written, then the files published; a
 /// failure anywhere (a preset folder that takes no file, a full stdout) leaves none of them
 /// (tests/cli/cli_outputs.rs, `fit_is_all_or_nothing`).
-/// The fitted ball's warnings at the data's `speeds` (calibration range, validity), and
+/// The fitted ball's warnings at the data's `speeds` (validity), then the record's of the
+/// parameters held ([`Ball::held_warning`], at the fit's speed where it was fitted), and
 /// first, where no `--v0` was given for a trace, that its impact speed was fitted: the one
 /// and the joint fit's (src/cli/fit/joint.rs) alike.
 pub(super) fn fitted_warnings(ball: &Ball, f: &mut MultiFit, speeds: &[f64], speed_fitted: bool) {
     f.warnings.extend(ball.fitted_warnings(&f.params, speeds));
+    let free: Vec<Param> = f
+        .fitted
+        .iter()
+        .filter_map(|e| Param::parse(e.name))
+        .collect();
+    let at = match free.contains(&Param::V0) {
+        true => vec![f.params.v0],
+        false => speeds.to_vec(),
+    };
+    f.warnings.extend(ball.held_warning(&free, &at));
     if speed_fitted {
         f.warnings.insert(
             0,
@@ -327,7 +338,6 @@ pub fn single_extras(
         crate::analysis::fit::fit(fitted, ball.law, FitData::Cor(&data.points), &[Param::KR])
             .map_err(|e| fit_error(e, &data, &[Param::KR]))?;
     // the saved header's warnings: the report's (`single`)
-    f.warnings
-        .extend(ball.fitted_warnings(fitted, &[fitted.v0]));
+    f.warnings.extend(super::single_warnings(ball, fitted));
     publish(a, out, report, (ball, &data, &f, fitted))
 }

@@ -47,7 +47,7 @@ pub fn run(a: &FitArgs, path: &Path, out: &mut dyn Write) -> anyhow::Result<()> 
             output::Met::RigidPlate,
             &ball.conditions,
         )?,
-        TextJson::Text => write_text(&mut text, &ball.label(), &report, f)?,
+        TextJson::Text => write_text(&mut text, &ball, &report, f)?,
     }
     out.write_all(&text)?;
     if !f.identified {
@@ -59,11 +59,12 @@ pub fn run(a: &FitArgs, path: &Path, out: &mut dyn Write) -> anyhow::Result<()> 
 
 fn write_text(
     out: &mut dyn Write,
-    label: &str,
+    ball: &crate::Ball,
     r: &ObliqueFitReport,
     f: &ObliqueFit,
 ) -> std::io::Result<()> {
-    writeln!(out, "{label}, {} law", r.ball.law)?;
+    writeln!(out, "{}, {} law", ball.label(), r.ball.law)?;
+    output::ball_lines(out, ball, None)?;
     writeln!(
         out,
         "fitting {} to the oblique bounces {} ({}); the normal ball held",

@@ -138,9 +138,7 @@ fn heading(
     r: &Report,
 ) -> std::io::Result<()> {
     writeln!(out, "{}, {} law", ball.label(), r.law)?;
-    if let Some(line) = ball.overrides_line() {
-        writeln!(out, "{line}")?;
-    }
+    crate::cli::output::ball_lines(out, ball, None)?;
     let what = match &data.file {
         Some(file) => format!("the {} {file}", data.kind),
         None => format!("the {} given", data.kind),

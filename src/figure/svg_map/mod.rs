@@ -30,6 +30,9 @@ pub struct View<'a> {
     /// subtitle as on the impact figures (`figure::history::OUTSIDE`); stderr and JSON give
     /// the warnings in full.
     pub radius_note: Option<String>,
+    /// What moved from the ball's preset and record (`api::Ball::moved_notes`): after the
+    /// law, before the targets.
+    pub notes: Vec<String>,
 }
 
 /// Room for the colour bar at the right of the plot, CSS pixels.
@@ -63,10 +66,11 @@ fn frame(map: &Map, v: &View) -> Figure {
     let note = v.radius_note.as_ref().map_or(String::new(), |n| {
         format!("; {}{n}", crate::figure::history::OUTSIDE)
     });
+    let moved: String = v.notes.iter().map(|n| format!("; {n}")).collect();
     Figure::new(
         format!("Design map: {label} over (λ, ζ)"),
         format!(
-            "{}, {} law{targets}{note}",
+            "{}, {} law{moved}{targets}{note}",
             v.title_ball,
             map.spec.law.name()
         ),

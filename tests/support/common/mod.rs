@@ -111,6 +111,15 @@ pub fn ok_calibrated(args: &[&str]) -> String {
     o.stdout
 }
 
+/// [`ok_calibrated`] run in `dir` ([`bl_at`]).
+pub fn ok_at_calibrated(dir: &Path, args: &[&str]) -> String {
+    let o = bl_at(dir, args);
+    assert_eq!(o.code, 0, "{args:?}: {}", o.stderr);
+    let calibration = |l: &str| l.starts_with("bouncelab: warning: outside calibration:");
+    assert!(o.stderr.lines().all(calibration), "{args:?}: {}", o.stderr);
+    o.stdout
+}
+
 pub fn json(args: &[&str]) -> Value {
     let s = ok(args);
     assert_eq!(s.lines().count(), 1, "one JSON document on one line");

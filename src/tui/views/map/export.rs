@@ -33,6 +33,8 @@ impl MapExport {
             own: Some(self.own),
             title_ball: self.title_ball.clone(),
             radius_note: crate::api::map_radius_note(&self.map, self.radius),
+            // the explorer's ball is its setting's (its readout names what moved)
+            notes: Vec::new(),
         };
         let svg = svg_map::render(&self.map, &view).map_err(|e| e.to_string())?;
         let csv = crate::map::csv::csv(&self.map, self.targets.as_ref());
