@@ -203,7 +203,7 @@ impl Ball {
                 let record = if c.speed_min == c.speed_max {
                     format!("{} m/s", short(c.speed_min, 4))
                 } else {
-                    range
+                    c.range_text()
                 };
                 format!("at {at}, inside the record's {record}")
             } else {
