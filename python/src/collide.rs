@@ -271,7 +271,9 @@ fn collide_with(
     let ball = choice.resolve(v0)?;
     let given = surface.is_some_and(|s| !s.is_none());
     let used = crate::surface::resolve_normal(surface)?;
-    let named = used.name != bouncelab::target::surface::DEFAULT || used.mechanics.mass.is_finite();
+    // the surface asked for by name (not the one its numbers renamed: docs/surfaces.md §1)
+    let named = used.started_from().0 != bouncelab::target::surface::DEFAULT
+        || used.mechanics.mass.is_finite();
     if target_preset.is_some() && given && named {
         return Err(crate::value_error(
             "target_preset is the target: a named surface and its mass do not apply (give \
