@@ -109,6 +109,7 @@ mod statics;
 mod summary;
 mod surface;
 mod surface_used;
+mod surface_warnings;
 mod sweep;
 mod warnings;
 pub use batch::{BallOutcome, BatchSetup, quantity as batch_quantity};

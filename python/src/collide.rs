@@ -307,6 +307,10 @@ fn collide_with(
         }
     };
     let mut c = Collision::of(report.map_err(error)?, &ball);
+    // a target's surface (a ball partner has none of its own), as the command line's
+    if target_preset.is_none() {
+        c.warnings.extend(used.warnings());
+    }
     c.surface = used.into();
     Ok(c)
 }

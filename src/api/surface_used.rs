@@ -183,20 +183,6 @@ impl SurfaceUsed {
         super::surface_label(&self.name, normal, m.friction, &given)
     }
 
-    /// "standard NAME: the standard's test is on …; this drop is on …" when this surface gives
-    /// or moves: a verdict judged on it is the ball's there, not the standard's, whose test
-    /// (`test_surface`, the standard's own words) the model runs on a rigid plate
-    /// (tests/cli/issue52_trial.rs, `a_drop_on_another_surface_says_so`); `None` when rigid.
-    pub fn off_standard_warning(&self, standard: &str, test_surface: &str) -> Option<String> {
-        (!self.mechanics.is_rigid()).then(|| {
-            format!(
-                "standard {standard}: the standard's test is on a {test_surface}; this drop is \
-                 on {}: the verdict is the ball's on that surface, not the standard's",
-                self.label()
-            )
-        })
-    }
-
     /// The explicit K_s, c_s, M (in that order) over the surface's own, each recorded as an
     /// override, the result checked: every number in range, and no damping given for a
     /// surface that stays rigid.

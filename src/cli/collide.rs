@@ -70,7 +70,7 @@ pub fn run(a: &CollideArgs, out: &mut dyn Write) -> anyhow::Result<()> {
             .resolve()?
             .with_target(a.target_mass, a.target_stiffness, a.target_damping);
     let surface = (used.mechanics.stiffness, used.mechanics.damping);
-    let report = match &a.target_preset {
+    let mut report = match &a.target_preset {
         Some(name) => {
             let entry = ball::select(Some(name), a.ball.choice.config.as_deref())?;
             let other = Ball::from_entry(&entry, None, None, None)?;
@@ -83,6 +83,10 @@ pub fn run(a: &CollideArgs, out: &mut dyn Write) -> anyhow::Result<()> {
             damping: surface.1,
         })?,
     };
+    // a target's surface (a ball partner has none of its own): as every answer on it says
+    if a.target_preset.is_none() {
+        report.warnings.extend(used.warnings());
+    }
     match a.format {
         TextJson::Json => output::json_stated(
             out,

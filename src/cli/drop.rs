@@ -229,8 +229,7 @@ fn dropped(a: &DropArgs) -> anyhow::Result<Dropped> {
     let statics_run = statics.as_ref().map(|(d, s)| (*d, s));
     let standard = asked.impact;
     let mut warnings =
-        ball.judged_drop_warnings(&run, a.height.is_some(), standard, statics_run)?;
-    warnings.extend(standard.and_then(|s| surface.off_standard_warning(s.name, s.surface)));
+        ball.judged_drop_warnings(&run, a.height.is_some(), standard, statics_run, &surface)?;
     warnings.extend(ball.drop_air_warning(setup.air));
     warnings.extend(off_conditions);
     Ok(Dropped {

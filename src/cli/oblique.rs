@@ -141,7 +141,7 @@ pub fn run(a: &ObliqueArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         .inertia_factor
         .unwrap_or_else(|| ball.inertia_factor());
     let radius = ball.radius();
-    let warnings = ball.oblique_warnings(&r);
+    let warnings = ball.oblique_warnings_on(&r, &surface);
     match a.format {
         TextJsonCsv::Json => {
             let report = Report {

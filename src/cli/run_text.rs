@@ -80,6 +80,7 @@ pub fn write(
     out: &mut dyn Write,
     b: &Ball,
     r: &ImpactResponse,
+    surface: &crate::api::SurfaceUsed,
     intervals: Option<&Intervals>,
     history: bool,
 ) -> io::Result<()> {
@@ -110,7 +111,7 @@ pub fn write(
     if history {
         write_history(out, r, &units.force, &units.time, &units.length)?;
     }
-    super::output::warning_lines(out, &b.warnings(r))
+    super::output::warning_lines(out, &b.warnings_on(r, surface))
 }
 
 /// The parameters the run used (SI ones for a preset), and λ, ζ, z̄_p.

@@ -65,6 +65,7 @@ mod cli_small;
 mod cli_standards_ball;
 mod cli_static;
 mod cli_surface_names;
+mod cli_surface_warnings;
 mod cli_tangential_damping;
 mod cli_target_pair;
 mod cli_targets;
