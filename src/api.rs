@@ -82,6 +82,7 @@ mod batch_reading;
 mod batch_report;
 mod calibration;
 mod collide;
+mod collide_pair;
 mod columns;
 mod conditions;
 mod court;
@@ -119,6 +120,7 @@ pub use batch_report::{
 };
 pub use calibration::{BallRecord, changed_params};
 pub use collide::CollisionReport;
+pub use collide_pair::{Partner, TargetRecord};
 pub use columns::{Columns, Unanswered, first_pass, first_pass_stoppable};
 pub use conditions::{ConditionsSpec, recorded as recorded_conditions, standard_leak};
 pub use court::{CourtCalibration, ITF_ANGLE, ITF_SPEED};

@@ -30,6 +30,7 @@ mod cli_batch_bound;
 mod cli_batch_cor_interval;
 mod cli_batch_csv;
 mod cli_batch_readings;
+mod cli_collide_pair;
 mod cli_drop;
 mod cli_explorer_oblique;
 mod cli_figure_presets;

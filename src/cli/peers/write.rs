@@ -62,7 +62,7 @@ pub(super) fn text(
             "pair with {}: m_eff = {} kg, R_eff = {} m (the partner at rest, v0 the closing speed)",
             p.preset,
             given(p.effective_mass, 6),
-            given(p.effective_radius, 6)
+            given(p.effective_radius.unwrap_or(f64::NAN), 6)
         )?;
     }
     writeln!(
