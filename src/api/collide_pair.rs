@@ -81,6 +81,12 @@ impl Partner {
         )
     }
 
+    /// What the text's surface line says the ball met instead of a surface (`surface none:
+    /// the ball met golf, which deforms too`: `collide --target-preset`, `peers --pair`).
+    pub fn met_words(&self) -> String {
+        format!("the ball met {}, which deforms too", self.named())
+    }
+
     /// The partner's name as the text says it (`a ball` for one that is no preset).
     pub fn named(&self) -> &str {
         match self.preset.as_str() {

@@ -83,21 +83,18 @@ pub fn run(a: &CollideArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     }
     // a ball partner that deforms is no surface: `surface` null, the note saying what was met
     // (as `peers --pair`); behind a given surface (--target-stiffness), that surface
-    let note = (report.pair.as_ref())
-        .filter(|_| report.target.is_rigid())
-        .map(crate::api::Partner::no_surface_note);
-    let met = match &note {
-        Some(why) => Met::NoSurface(why),
+    let partner = report.pair.as_ref().filter(|_| report.target.is_rigid());
+    let said = partner.map(|p| match a.format {
+        TextJson::Json => p.no_surface_note(),
+        TextJson::Text => p.met_words(),
+    });
+    let met = match &said {
+        Some(what) => Met::NoSurface(what),
         None => Met::Surface(&used),
     };
     match a.format {
         TextJson::Json => output::json_on(out, &report, met, &ball.conditions)?,
-        TextJson::Text => {
-            text(out, (&ball, other.as_ref()), &report)?;
-            if a.surface.surface.is_some() {
-                writeln!(out, "  {}", used.label())?;
-            }
-        }
+        TextJson::Text => text(out, (&ball, other.as_ref()), &report, met)?,
     }
     Ok(())
 }
@@ -129,6 +126,7 @@ fn text(
     out: &mut dyn Write,
     (ball, other): (&Ball, Option<&Ball>),
     r: &CollisionReport,
+    met: Met<'_>,
 ) -> std::io::Result<()> {
     let what = match (other, &r.pair) {
         (Some(_), Some(p)) => {
@@ -142,15 +140,11 @@ fn text(
         _ => "a target".to_string(),
     };
     writeln!(out, "{} against {what}", ball.label())?;
-    output::ball_lines(out, ball, None)?;
+    output::ball_lines(out, ball, met)?;
     if let Some(o) = other {
         writeln!(out, "partner: {}", o.label())?;
         if let Some(line) = o.conditions_line() {
             writeln!(out, "partner {line}")?;
-        }
-        if r.target.is_rigid() {
-            let named = r.pair.as_ref().map_or("a ball", |p| p.named());
-            writeln!(out, "surface none: the ball met {named}, which deforms too")?;
         }
     }
     writeln!(out, "  law {}, method {}", r.law, r.collision.method.name())?;

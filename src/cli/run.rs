@@ -143,9 +143,6 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         TextJsonCsv::Text => {
             let history = args.history.history;
             super::run_text::write(out, &ball, &r, &surface, intervals.as_ref(), history)?;
-            if !surface.mechanics.is_rigid() || args.surface.surface.is_some() {
-                writeln!(out, "{}", surface.label())?;
-            }
             if let Some(why) = &elsewhere {
                 writeln!(out, "  (measured values not compared: {why})")?;
             }

@@ -94,7 +94,7 @@ pub fn write(
         _ => writeln!(out, "{}", b.label())?,
     }
     writeln!(out, "{} law, {method}", r.law)?;
-    output::ball_lines(out, b, None)?;
+    output::ball_lines(out, b, output::Met::Surface(surface))?;
     writeln!(out)?;
     write_parameters(out, b, r, &units)?;
     writeln!(out)?;

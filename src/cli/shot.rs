@@ -279,13 +279,7 @@ pub(super) fn ran_lines(
     surface: &SurfaceUsed,
     aero: &crate::flight::Aero,
 ) -> std::io::Result<()> {
-    if let Some(line) = ball.overrides_line() {
-        writeln!(out, "{line}")?;
-    }
-    writeln!(out, "{}", surface.label())?;
-    if let Some(line) = ball.conditions_line() {
-        writeln!(out, "{line}")?;
-    }
+    output::ball_lines(out, ball, output::Met::Surface(surface))?;
     writeln!(
         out,
         "air: ρ = {} kg/m³; {}",

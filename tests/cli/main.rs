@@ -65,6 +65,7 @@ mod cli_size;
 mod cli_small;
 mod cli_standards_ball;
 mod cli_static;
+mod cli_surface_header;
 mod cli_surface_names;
 mod cli_surface_warnings;
 mod cli_tangential_damping;

@@ -319,6 +319,8 @@ fn single(a: &FitArgs, cor: f64, stdout: &mut dyn Write) -> anyhow::Result<()> {
             if let Some(line) = b.overrides_line() {
                 writeln!(out, "{line}")?;
             }
+            // the COR is read as the ball's on the rigid plate, as the JSON's surface says
+            writeln!(out, "{}", output::surface_line(&output::Met::RigidPlate))?;
             writeln!(
                 out,
                 "fitting K_r at v0 = {} m/s, holding m, K_p, c (ζ = {}) and z_p",

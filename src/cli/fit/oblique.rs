@@ -64,6 +64,8 @@ fn write_text(
     f: &ObliqueFit,
 ) -> std::io::Result<()> {
     writeln!(out, "{label}, {} law", r.ball.law)?;
+    // the bounces are read as the ball's on the rigid plate, as the JSON's surface says
+    writeln!(out, "{}", output::surface_line(&output::Met::RigidPlate))?;
     writeln!(
         out,
         "fitting {} to the oblique bounces {} ({}); the normal ball held",

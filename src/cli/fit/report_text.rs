@@ -141,6 +141,9 @@ fn heading(
     if let Some(line) = ball.overrides_line() {
         writeln!(out, "{line}")?;
     }
+    // the data are read as bounces on (or squeezes between) rigid plates, as the JSON says
+    let plate = crate::cli::output::Met::RigidPlate;
+    writeln!(out, "{}", crate::cli::output::surface_line(&plate))?;
     let what = match &data.file {
         Some(file) => format!("the {} {file}", data.kind),
         None => format!("the {} given", data.kind),
