@@ -5,10 +5,11 @@
 use crate::answer::{Record, Stated};
 use crate::arguments::ball::{BallChoice, ball_pyfunction};
 use crate::error;
+use crate::pair::PairObject;
 use crate::same::Same;
 use bouncelab::Ball;
+use bouncelab::api::CollisionReport;
 use bouncelab::api::SurfaceUsed;
-use bouncelab::api::{CollisionReport, Partner};
 use bouncelab::target::Target;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
@@ -82,47 +83,6 @@ macro_rules! answer_keys {
             effective_radius
         )
     };
-}
-
-/// The partner of a pair, kept as the library's [`Partner`]: handed out as the JSON's `pair`
-/// object (a new dict at each read, its `ball` and `conditions` as every answer's), read back
-/// from one (a pickle's state).
-#[derive(Debug, Clone, PartialEq)]
-pub(crate) struct PairObject(Partner);
-
-impl<'py> IntoPyObject<'py> for &PairObject {
-    type Target = PyDict;
-    type Output = Bound<'py, PyDict>;
-    type Error = PyErr;
-
-    fn into_pyobject(self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
-        let p = &self.0;
-        let d = PyDict::new(py);
-        d.set_item("preset", &p.preset)?;
-        d.set_item("effective_mass", p.effective_mass)?;
-        d.set_item("effective_radius", p.effective_radius)?;
-        d.set_item("ball", &Record(p.ball.clone()))?;
-        d.set_item("conditions", &Stated(p.conditions))?;
-        Ok(d)
-    }
-}
-
-impl<'a, 'py> FromPyObject<'a, 'py> for PairObject {
-    type Error = PyErr;
-
-    fn extract(obj: Borrowed<'a, 'py, PyAny>) -> PyResult<PairObject> {
-        let d = obj.cast::<PyDict>()?;
-        let d = &*d;
-        let ball: Record = get(d, "ball")?;
-        let conditions: Stated = get(d, "conditions")?;
-        Ok(PairObject(Partner {
-            preset: get(d, "preset")?,
-            effective_mass: get(d, "effective_mass")?,
-            effective_radius: get(d, "effective_radius")?,
-            ball: ball.0,
-            conditions: conditions.0,
-        }))
-    }
 }
 
 /// `key`'s value in a state dict, named when absent (`same::state_item`).
