@@ -80,6 +80,15 @@ class SurfaceObject(TypedDict):
     tangential_damping: Optional[float]
     overrides: list[str]
 
+class Pair(TypedDict):
+    """The other ball of a pair (``collide(target_preset=…)``), as the JSON's ``pair``: its
+    preset, m_eff (kg) and R_eff (m), and its ball object and conditions as every answer's."""
+    preset: str
+    effective_mass: float
+    effective_radius: Optional[float]
+    ball: BallRecord
+    conditions: Conditions
+
 class _Named(TypedDict):
     """The keys naming the ball in every answer."""
     preset: Optional[str]
@@ -597,13 +606,22 @@ class Collision:
     method: Literal["exact", "numeric"]
     effective_mass: Optional[float]
     effective_radius: Optional[float]
+    # the JSON's ``target.rigid``: False for a ball partner (its own chain deforms), though
+    # its ``target_stiffness`` is inf (no surface of its own)
+    target_rigid: bool
+    # ball on ball (``target_preset``): the JSON's ``pair``, the partner named as every
+    # answer names its ball; None otherwise
+    pair: Optional[Pair]
     warnings: list[str]
-    surface: SurfaceObject
+    # None where the ball met another ball that deforms (``surface_note`` says so)
+    surface: Optional[SurfaceObject]
+    surface_note: Optional[str]
     ball_record: BallRecord  # the JSON's ``ball`` object: ``ball`` is the preset's name here
     conditions: Conditions
     def to_dict(self) -> dict:
         """The keys of ``bouncelab collide --format json``, the target's under ``target``
-        (``mass``, ``speed``, ``stiffness``, ``damping``; inf for the JSON's null)."""
+        (``mass``, ``speed``, ``stiffness``, ``damping``, ``rigid``; inf for the JSON's
+        null), ``pair`` for a ball partner, ``surface_note`` where ``surface`` is None."""
     def __eq__(self, other: object) -> bool:
         """Equal values (every attribute)."""
     def __reduce__(self) -> tuple: ...

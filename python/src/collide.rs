@@ -5,6 +5,7 @@
 use crate::answer::{Record, Stated};
 use crate::arguments::ball::{BallChoice, ball_pyfunction};
 use crate::error;
+use crate::pair::PairObject;
 use crate::same::Same;
 use bouncelab::Ball;
 use bouncelab::api::CollisionReport;
@@ -41,9 +42,18 @@ pub(crate) struct Collision {
     method: String,
     effective_mass: Option<f64>,
     effective_radius: Option<f64>,
+    /// Whether the target is rigid (the JSON's `target.rigid`: a ball partner is not, though
+    /// it has no surface of its own, docs/targets.md §3).
+    target_rigid: bool,
+    /// Ball on ball: the partner, as the JSON's `pair` (its preset, m_eff, R_eff, its ball
+    /// object and conditions); `None` otherwise.
+    pair: Option<PairObject>,
     warnings: Vec<String>,
-    /// The surface the target had (the JSON's `surface`, docs/surfaces.md).
-    surface: crate::surface::SurfaceObject,
+    /// The surface the target had (the JSON's `surface`, docs/surfaces.md); `None` where the
+    /// ball met another ball that deforms, `surface_note` then saying so.
+    surface: Option<crate::surface::SurfaceObject>,
+    /// Why `surface` is `None` (the JSON's `surface_note`).
+    surface_note: Option<String>,
     /// The ball as the JSON's `ball_record` object (docs/cli.md "The ball object"; `ball`
     /// was already the preset's name here, and stays it).
     ball_record: Record,
@@ -70,8 +80,7 @@ macro_rules! answer_keys {
             max_target_deflection,
             method,
             effective_mass,
-            effective_radius,
-            warnings
+            effective_radius
         )
     };
 }
@@ -108,12 +117,24 @@ impl Collision {
         target.set_item("speed", self.target_speed)?;
         target.set_item("stiffness", self.target_stiffness)?;
         target.set_item("damping", self.target_damping)?;
+        target.set_item("rigid", self.target_rigid)?;
         d.set_item("target", target)?;
         macro_rules! put {
             ($($k:ident),*) => { $(d.set_item(stringify!($k), &self.$k)?;)* };
         }
         answer_keys!(put);
-        d.set_item("surface", crate::surface::to_dict(py, &self.surface)?)?;
+        // present only for a pair, as the JSON's
+        if let Some(p) = &self.pair {
+            d.set_item("pair", p)?;
+        }
+        d.set_item("warnings", &self.warnings)?;
+        let surface = (self.surface.as_ref())
+            .map(|s| crate::surface::to_dict(py, s))
+            .transpose()?;
+        d.set_item("surface", surface)?;
+        if let Some(note) = &self.surface_note {
+            d.set_item("surface_note", note)?;
+        }
         d.set_item("conditions", &self.conditions)?;
         Ok(d)
     }
@@ -141,8 +162,18 @@ impl Collision {
                     target_speed: get(&target, "speed")?,
                     target_stiffness: get(&target, "stiffness")?,
                     target_damping: get(&target, "damping")?,
+                    target_rigid: get(&target, "rigid")?,
                     $($k: get(state, stringify!($k))?,)*
-                    surface: crate::same::state_surface(state)?.into(),
+                    pair: state.get_item("pair")?.map(|p| p.extract()).transpose()?,
+                    warnings: get(state, "warnings")?,
+                    surface: match state.get_item("surface")? {
+                        Some(s) if s.is_none() => None,
+                        _ => Some(crate::same::state_surface(state)?.into()),
+                    },
+                    surface_note: state
+                        .get_item("surface_note")?
+                        .map(|n| n.extract())
+                        .transpose()?,
                     ball_record: get(state, "ball_record")?,
                     conditions: get(state, "conditions")?,
                 }
@@ -166,9 +197,13 @@ impl Collision {
             target_mass,
             target_speed,
             target_stiffness,
-            target_damping
+            target_damping,
+            target_rigid,
+            warnings
         ) && answer_keys!(all_same)
+            && self.pair == other.pair
             && self.surface == other.surface
+            && self.surface_note == other.surface_note
             && self.ball_record == other.ball_record
             && self.conditions == other.conditions
     }
@@ -211,8 +246,11 @@ impl Collision {
             method: c.method.name().into(),
             effective_mass: r.effective_mass,
             effective_radius: r.effective_radius,
+            target_rigid: t.rigid,
+            pair: r.pair.map(PairObject),
             warnings: r.warnings,
-            surface: SurfaceUsed::rigid_plate().into(),
+            surface: Some(SurfaceUsed::rigid_plate().into()),
+            surface_note: None,
             ball_record: Record(r.ball_record),
             conditions: Stated::of(ball),
         }
@@ -271,7 +309,9 @@ fn collide_with(
     let ball = choice.resolve(v0)?;
     let given = surface.is_some_and(|s| !s.is_none());
     let used = crate::surface::resolve_normal(surface)?;
-    let named = used.name != bouncelab::target::surface::DEFAULT || used.mechanics.mass.is_finite();
+    // the surface asked for by name (not the one its numbers renamed: docs/surfaces.md §1)
+    let named = used.started_from().0 != bouncelab::target::surface::DEFAULT
+        || used.mechanics.mass.is_finite();
     if target_preset.is_some() && given && named {
         return Err(crate::value_error(
             "target_preset is the target: a named surface and its mass do not apply (give \
@@ -305,6 +345,19 @@ fn collide_with(
         }
     };
     let mut c = Collision::of(report.map_err(error)?, &ball);
-    c.surface = used.into();
+    // a target's surface (a ball partner has none of its own), as the command line's
+    if target_preset.is_none() {
+        c.warnings.extend(used.warnings());
+    }
+    // a ball partner that deforms is no surface: None and the note, as the command line's
+    // `surface: null` (src/cli/collide.rs); behind a given surface, that surface
+    match c
+        .pair
+        .as_ref()
+        .filter(|_| used.mechanics.stiffness.is_infinite())
+    {
+        Some(p) => (c.surface, c.surface_note) = (None, Some(p.0.no_surface_note())),
+        None => c.surface = Some(used.into()),
+    }
     Ok(c)
 }

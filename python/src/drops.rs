@@ -153,7 +153,7 @@ fn drop_of<'py>(
     };
     let statics_run = statics.as_ref().map(|(s, deflection)| (*s, deflection));
     let mut warnings = ball
-        .judged_drop_warnings(&run, height.is_some(), standard, statics_run)
+        .judged_drop_warnings(&run, height.is_some(), standard, statics_run, &surface)
         .map_err(error)?;
     // a ball fitted to drops in another air than this drop's says so, as the command line's
     warnings.extend(ball.drop_air_warning(run.setup.air));

@@ -218,9 +218,10 @@ impl Impact {
             unreachable!("an impact without its audit keeps its ball")
         };
         let r = py.detach(|| ball.impact()).map_err(error)?;
-        let _ = self
-            .audit
-            .set(Audit::of(&ImpactReport::new(ball, &r, false)));
+        let mut rep = ImpactReport::new(ball, &r, false);
+        // the surface it ran on says its own (an assumed-rigid one: `SurfaceUsed::warnings`)
+        rep.warnings = ball.warnings_on(&r, &self.surface);
+        let _ = self.audit.set(Audit::of(&rep));
         Ok(self.audit.get().expect("set above, or by another thread"))
     }
 

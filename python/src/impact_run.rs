@@ -75,7 +75,9 @@ pub(crate) fn impact_on(
             Ok::<_, bouncelab::BallError>((r, ball.intervals().transpose()?))
         })
         .map_err(error)?;
-    let rep = ImpactReport::new(&ball, &r, history);
+    let mut rep = ImpactReport::new(&ball, &r, history);
+    // the surface's warnings after the impact's, as `bouncelab run --surface` gives them
+    rep.warnings = ball.warnings_on(&r, &surface);
     let audit = Some(Audit::of(&rep));
     let mut impact = Impact::new(py, &ball, &rep, intervals, audit);
     impact.surface = surface;

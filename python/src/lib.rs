@@ -24,6 +24,7 @@ mod interrupt;
 mod mc;
 mod oblique;
 mod oblique_fit;
+mod pair;
 mod preset_balls;
 mod preset_fits;
 mod runs;

@@ -196,7 +196,7 @@ fn build(
     r: ObliqueResponse,
     surface: SurfaceUsed,
 ) -> PyResult<ObliqueImpact> {
-    let warnings = ball.oblique_warnings(&r);
+    let warnings = ball.oblique_warnings_on(&r, &surface);
     let header = ball.header();
     let e = &r.energy;
     let energy = EnergyTerms(

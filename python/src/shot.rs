@@ -189,7 +189,8 @@ flight_pyfunction! {
             }
             spec.ends.distance = Some(py.detach(|| past_bounce(&ball, &spec, d))?);
         }
-        let r = py.detach(|| ball.shot(&spec)).map_err(error)?;
+        let mut r = py.detach(|| ball.shot(&spec)).map_err(error)?;
+        r.warn_of(&surface);
         let d = report(py, &r)?;
         d.set_item("surface", crate::surface::to_dict(py, &surface)?)?;
         crate::answer::stated(&d, &ball)?;

@@ -23,8 +23,9 @@ pub struct CollisionReport {
     pub ball_mass: f64,
     /// The ball's speed toward the target before the impact (m/s).
     pub ball_speed: f64,
-    /// What it hit.
-    pub target: Target,
+    /// What it hit, and whether it is rigid (the JSON `target`; its mass, speed, K_s and c_s
+    /// read through it as a [`Target`]'s).
+    pub target: super::TargetRecord,
     /// The answer, SI.
     #[serde(flatten)]
     pub collision: Collision,
@@ -33,6 +34,10 @@ pub struct CollisionReport {
     pub effective_mass: Option<f64>,
     /// Ball on ball: the pair's effective radius R_eff = R1 R2/(R1 + R2) (m).
     pub effective_radius: Option<f64>,
+    /// Ball on ball: the partner, named as the answer's ball is (the JSON `pair`, absent
+    /// otherwise).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub pair: Option<super::Partner>,
     /// What the caller should know about this answer: the ball's peak indentation, or its own
     /// compression α = z + y, beyond its radius ([`super::Reach::warning`]); `[]` when nothing.
     pub warnings: Vec<String>,
@@ -76,10 +81,11 @@ impl Ball {
             law: self.law,
             ball_mass: self.params.mass,
             ball_speed: self.params.v0,
-            target: *target,
+            target: super::TargetRecord::body(*target),
             collision,
             effective_mass: None,
             effective_radius: None,
+            pair: None,
             warnings: warnings.into_iter().collect(),
         })
     }
@@ -117,20 +123,24 @@ impl Ball {
                 law: self.law,
                 ball_mass: p1.mass,
                 ball_speed: p1.v0,
-                target,
+                // no surface spring (stiffness ∞), yet not rigid: the partner's chain deforms
+                target: super::TargetRecord {
+                    target,
+                    rigid: false,
+                },
                 collision,
                 effective_mass: None,
                 effective_radius: None,
+                pair: None,
                 warnings,
             }
         } else {
             self.collide(&target)?
         };
+        let partner = super::Partner::of(self, other);
         r.effective_mass = Some(r.collision.reduced_mass);
-        r.effective_radius = match (&self.measured, &other.measured) {
-            (Some(a), Some(b)) => Some(a.radius * b.radius / (a.radius + b.radius)),
-            _ => None,
-        };
+        r.effective_radius = partner.effective_radius;
+        r.pair = Some(partner);
         Ok(r)
     }
 

@@ -55,7 +55,7 @@ impl Ball {
         let m = &surface.mechanics;
         let tangential = (m.tangential_stiffness, inertia_factor, m.tangential_damping);
         let mut pace = self.court_pace_on(friction, tangential, &m.target())?;
-        pace.warnings.extend(assumed_rigid_warning(surface));
+        pace.warnings.extend(surface.court_warnings());
         let standard = &crate::oblique::court::ITF_COURT_PACE;
         pace.warnings.extend(self.not_standards_ball(
             standard.name,
@@ -188,38 +188,4 @@ impl Ball {
         let x = 0.5 * (a + b);
         Ok((scale * 10f64.powf(x), at(x)?))
     }
-}
-
-/// The mark of an embedded surface whose normal give is assumed, not published: its `model`
-/// source says `ASSUMED rigid` (presets/surfaces/*.toml, docs/surfaces.md §5).
-const ASSUMED_RIGID: &str = "ASSUMED rigid";
-
-/// `court`'s warning on an embedded court whose normal give is assumed rigid because no
-/// published value exists (every embedded court but hard-court, rigid as published:
-/// docs/surfaces.md §2, §5), its K_s not given or calibrated: its e_y is the rigid plate's,
-/// so the rating ranks such courts by μ alone (tests/cli/court_assumed.rs). `None` on the rigid plate itself, on a surface whose
-/// rigidity is its definition (`steel-plate`, `concrete`), on a given or calibrated K_s, and
-/// on a user's surface (its file says what it assumed).
-pub fn assumed_rigid_warning(surface: &super::SurfaceUsed) -> Option<String> {
-    let own_stiffness = !surface.overrides.iter().any(|o| o == "stiffness");
-    let rigid = surface.mechanics.stiffness.is_infinite();
-    if surface.origin != "embedded" || !rigid || !own_stiffness {
-        return None;
-    }
-    let named = crate::target::surface::Surface::embedded()
-        .into_iter()
-        .find(|s| s.name == surface.name)?;
-    let assumed = named
-        .sources
-        .iter()
-        .any(|s| s.quantity == "model" && s.source.contains(ASSUMED_RIGID));
-    assumed.then(|| {
-        format!(
-            "surface {}: its normal give is ASSUMED rigid (no published K_s or c_s, \
-             docs/surfaces.md §5), so e_y is the rigid plate's and the rating ranks the court by \
-             μ alone; give the court's own e with --surface-cor E or --fit FILE (Python: \
-             surface_cor=, fit=)",
-            surface.name
-        )
-    })
 }

@@ -83,6 +83,19 @@ impl Ball {
         normal.warnings(&r.normal)
     }
 
+    /// The warnings of an oblique impact `r` of this ball on `surface` (`oblique`, a shot's
+    /// bounces, Python's alike): [`Ball::oblique_warnings`], then the surface's
+    /// ([`super::SurfaceUsed::warnings`]).
+    pub fn oblique_warnings_on(
+        &self,
+        r: &ObliqueResponse,
+        surface: &super::SurfaceUsed,
+    ) -> Vec<String> {
+        let mut w = self.oblique_warnings(r);
+        w.extend(surface.warnings());
+        w
+    }
+
     /// One oblique impact (docs/oblique.md), with `samples` history samples (0: none), as
     /// `bouncelab oblique`. The normal motion is `run`'s, on the ball's law.
     ///

@@ -150,6 +150,17 @@ pub struct ShotReport {
     pub responses: Vec<(ObliqueResponse, bool)>,
 }
 
+impl ShotReport {
+    /// Each bounce's warnings followed by the surface's ([`super::SurfaceUsed::warnings`]):
+    /// every bounce is on it, each answer as `oblique`'s there (`shot`, Python's `shot`).
+    pub fn warn_of(&mut self, surface: &super::SurfaceUsed) {
+        let said = surface.warnings();
+        for b in &mut self.bounces {
+            b.warnings.extend(said.iter().cloned());
+        }
+    }
+}
+
 fn invalid(field: &'static str, value: f64, reason: &str) -> BallError {
     BallError::Invalid {
         field,

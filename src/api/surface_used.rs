@@ -7,8 +7,16 @@
 use crate::ParamError;
 use crate::catalog::Origin;
 use crate::catalog::surfaces::SurfaceEntry;
+use crate::target::surface::DEFAULT;
 use crate::target::surface::{Surface, SurfaceMechanics};
 use serde::Serialize;
+
+/// The name of the default plate once numbers given over it changed it.
+const GIVEN_DEFAULT: &str = "given-surface";
+/// What a named surface's name is marked with once numbers given over it changed it.
+const MODIFIED: &str = "-modified";
+/// How the origin of a surface renamed so begins, the surface it started from after it.
+const GIVEN_OVER: &str = "given over ";
 
 /// The surface a command ran on: the named one with the explicit numbers over it; the JSON
 /// `surface` object, its fields in this order.
@@ -55,13 +63,64 @@ impl SurfaceUsed {
         self.overrides.retain(|o| o != "stiffness");
         // first, where the normal quantities it stands for are listed (before μ, K_t, c_t)
         self.overrides.insert(0, "calibrated".into());
-        let name = if self.name == crate::target::surface::DEFAULT {
+        // from the surface asked for: a K_s given is the calibration's, not a second change
+        let (from, origin) = self.started_from();
+        self.name = if from == DEFAULT {
             "calibrated-court".to_string()
         } else {
-            format!("{}-calibrated", self.name)
+            format!("{from}-calibrated")
         };
-        self.origin = format!("calibrated by {how} from {} ({})", self.name, self.origin);
-        self.name = name;
+        self.origin = format!("calibrated by {how} from {from} ({origin})");
+    }
+
+    /// The name and origin of the surface this one started from: its own, unless numbers
+    /// given over it renamed it ([`SurfaceUsed::name_for_what_it_is`]), whose `origin` keeps
+    /// them (`given over NAME (ORIGIN)`).
+    pub fn started_from(&self) -> (String, String) {
+        let from = match self.name.as_str() {
+            GIVEN_DEFAULT => Some(DEFAULT),
+            name => name.strip_suffix(MODIFIED),
+        };
+        let own = from.and_then(|from| {
+            let rest = self.origin.strip_prefix(GIVEN_OVER)?.strip_prefix(from)?;
+            let origin = rest.strip_prefix(" (")?.strip_suffix(')')?;
+            Some((from.to_string(), origin.to_string()))
+        });
+        own.unwrap_or_else(|| (self.name.clone(), self.origin.clone()))
+    }
+
+    /// The rule of every answer's surface name (docs/surfaces.md §1, "The name"): once a
+    /// number the answer runs on differs from the surface's own `own` — K_s, c_s, M, or a μ,
+    /// K_t, c_t the surface gives (one filled in where it gives none replaces nothing) — it is
+    /// no longer the surface it started from, and is named for what it is: `given-surface`
+    /// from the default plate, `NAME-modified` from a named one, its origin `given over NAME
+    /// (ORIGIN)`; `overrides` says what was given. Once renamed (or calibrated, or a bat: every
+    /// number given) it keeps its name (tests/cli/cli_surface_names.rs).
+    fn name_for_what_it_is(&mut self, own: &SurfaceMechanics) {
+        let renamed = self.origin.starts_with(GIVEN_OVER)
+            || self.origin.starts_with("calibrated by ")
+            || self.name == "bat";
+        let m = &self.mechanics;
+        let normal = [
+            (m.stiffness, own.stiffness),
+            (m.damping, own.damping),
+            (m.mass, own.mass),
+        ];
+        let tangential = [
+            (m.friction, own.friction),
+            (m.tangential_stiffness, own.tangential_stiffness),
+            (m.tangential_damping, own.tangential_damping),
+        ];
+        let changed = normal.iter().any(|(used, own)| used != own)
+            || (tangential.iter()).any(|(used, own)| own.is_some() && used != own);
+        if renamed || !changed {
+            return;
+        }
+        self.origin = format!("{GIVEN_OVER}{} ({})", self.name, self.origin);
+        self.name = match self.name.as_str() {
+            DEFAULT => GIVEN_DEFAULT.to_string(),
+            name => format!("{name}{MODIFIED}"),
+        };
     }
 
     /// The catalog entry's numbers, nothing overridden.
@@ -124,24 +183,11 @@ impl SurfaceUsed {
         super::surface_label(&self.name, normal, m.friction, &given)
     }
 
-    /// "standard NAME: the standard's test is on …; this drop is on …" when this surface gives
-    /// or moves: a verdict judged on it is the ball's there, not the standard's, whose test
-    /// (`test_surface`, the standard's own words) the model runs on a rigid plate
-    /// (tests/cli/issue52_trial.rs, `a_drop_on_another_surface_says_so`); `None` when rigid.
-    pub fn off_standard_warning(&self, standard: &str, test_surface: &str) -> Option<String> {
-        (!self.mechanics.is_rigid()).then(|| {
-            format!(
-                "standard {standard}: the standard's test is on a {test_surface}; this drop is \
-                 on {}: the verdict is the ball's on that surface, not the standard's",
-                self.label()
-            )
-        })
-    }
-
     /// The explicit K_s, c_s, M (in that order) over the surface's own, each recorded as an
     /// override, the result checked: every number in range, and no damping given for a
     /// surface that stays rigid.
     pub fn with_normal(mut self, given: [Option<f64>; 3]) -> Result<SurfaceUsed, SurfaceError> {
+        let own = self.mechanics;
         let m = &mut self.mechanics;
         let slots = [&mut m.stiffness, &mut m.damping, &mut m.mass];
         let mut overrides = Vec::new();
@@ -151,6 +197,7 @@ impl SurfaceUsed {
             *slot = v;
         }
         self.overrides.extend(overrides);
+        self.name_for_what_it_is(&own);
         let m = &self.mechanics;
         m.target().validate().map_err(SurfaceError::Invalid)?;
         if m.stiffness.is_infinite() && m.damping > 0.0 && given[1].is_some() {
@@ -169,6 +216,7 @@ impl SurfaceUsed {
         stiffness: Option<f64>,
         damping: Option<f64>,
     ) -> SurfaceUsed {
+        let own = self.mechanics;
         if let Some(m) = mass {
             self.mechanics.mass = m;
             self.overrides.push("target_mass".into());
@@ -181,6 +229,7 @@ impl SurfaceUsed {
                 self.overrides.push("target_damping".into());
             }
         }
+        self.name_for_what_it_is(&own);
         self
     }
 
@@ -189,6 +238,7 @@ impl SurfaceUsed {
     /// surface's own or where it has none (`court --surface clay --friction 0.8`: μ came from
     /// the command line, tests/cli/court_assumed.rs).
     pub fn with_tangential(mut self, given: [Option<f64>; 3]) -> SurfaceUsed {
+        let own = self.mechanics;
         let m = &mut self.mechanics;
         let slots = [
             &mut m.friction,
@@ -203,6 +253,7 @@ impl SurfaceUsed {
             *slot = value.or(*slot);
         }
         self.overrides.extend(overrides);
+        self.name_for_what_it_is(&own);
         self
     }
 }

@@ -86,6 +86,14 @@ impl Ball {
         w
     }
 
+    /// The warnings of an impact `r` of this ball on `surface` (`run`, Python's `run`):
+    /// [`Ball::warnings`], then the surface's ([`super::SurfaceUsed::warnings`]).
+    pub fn warnings_on(&self, r: &ImpactResponse, surface: &super::SurfaceUsed) -> Vec<String> {
+        let mut w = self.warnings(r);
+        w.extend(surface.warnings());
+        w
+    }
+
     /// The warnings of a drop test `run` of this ball: those of its first impact, the
     /// fastest (the later ones only slow down), then the later bounces' that leave the ball's
     /// record ([`Ball::later_bounces_warning`]).
@@ -107,8 +115,10 @@ impl Ball {
     /// default height (`height_given` false: their speed is not the verdict's) —, a static
     /// standard's (`statics`: its deflection's warnings and the rules' return window), then
     /// the standard's own test against the record when it is another impact
-    /// (tests/cli/cli_static.rs), last a ball that is not the standard's
-    /// ([`Ball::standard_ball_warning`]).
+    /// (tests/cli/cli_static.rs), then a ball that is not the standard's
+    /// ([`Ball::standard_ball_warning`]); last the `surface` dropped on
+    /// ([`super::SurfaceUsed::warnings`]: its rigidity assumed) and, judged by an impact
+    /// standard, a surface not the standard's ([`super::SurfaceUsed::off_standard_warning`]).
     pub fn judged_drop_warnings(
         &self,
         run: &crate::drop::DropRun,
@@ -118,6 +128,7 @@ impl Ball {
             &crate::drop::deformation::DeformationStandard,
             &crate::analysis::statics::StaticDeflection,
         )>,
+        surface: &super::SurfaceUsed,
     ) -> Result<Vec<String>, BallError> {
         let mut warnings = self.drop_warnings(run)?;
         let radius = self.drop_ball().radius;
@@ -142,6 +153,8 @@ impl Ball {
         }
         warnings.extend(standard.and_then(|s| self.standard_ball_warning(s)));
         warnings.extend(statics.and_then(|(d, _)| self.static_standard_ball_warning(d)));
+        warnings.extend(surface.warnings());
+        warnings.extend(standard.and_then(|s| surface.off_standard_warning(s)));
         Ok(warnings)
     }
 

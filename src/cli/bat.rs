@@ -65,6 +65,7 @@ pub fn run(a: &BatArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         a.bat_damping.unwrap_or(0.0),
     );
     let r = ball.bat(a.bat_mass, (a.ball_speed, a.bat_speed), surface)?;
+    let bat = crate::api::SurfaceUsed::bat(a.bat_mass, a.bat_stiffness, a.bat_damping);
     match a.format {
         TextJson::Json => output::json_on(
             out,
@@ -79,28 +80,18 @@ pub fn run(a: &BatArgs, out: &mut dyn Write) -> anyhow::Result<()> {
                 ball_record: ball.record_json(),
             },
             // what the ball met: the bat (docs/cli.md, "The surface object")
-            output::Met::Surface(&crate::api::SurfaceUsed::bat(
-                a.bat_mass,
-                a.bat_stiffness,
-                a.bat_damping,
-            )),
+            output::Met::Surface(&bat),
             &ball.conditions,
         )?,
         TextJson::Text => {
-            let mut head = format!(
+            let first = format!(
                 "{} against a bat of effective mass {} kg at the impact point",
                 ball.label(),
                 human(a.bat_mass, 4)
             );
-            if let Some(line) = ball.overrides_line() {
-                head.push('\n');
-                head.push_str(&line);
-            }
-            if let Some(line) = ball.conditions_line() {
-                head.push('\n');
-                head.push_str(&line);
-            }
-            text(out, &head, a, &r)?;
+            // what the ball met: the bat, as the JSON's surface object
+            let met = output::Met::Surface(&bat);
+            text(out, &output::headed(first, &ball, met), a, &r)?;
             output::warning_lines(out, &ball.bat_warnings(&r))?;
         }
     }

@@ -42,6 +42,8 @@ fn heading(
 ) -> std::io::Result<()> {
     let s = &r.summary;
     writeln!(out, "{}, {} law", ball.label(), r.law)?;
+    // each ball is fitted and judged on the standard's rigid slab, as the JSON's surface says
+    writeln!(out, "{}", output::surface_line(&output::Met::RigidPlate))?;
     if let Some(line) = ball.conditions_line() {
         writeln!(out, "{line}")?;
     }

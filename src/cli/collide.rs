@@ -2,12 +2,11 @@
 //! surface of its own (docs/targets.md), as a text table or one JSON object.
 
 use super::ball::{self, BallArgs};
-use super::output::{self, TextJson, directed, human, table};
-use super::surface::{SurfaceArgs, SurfaceUsed};
+use super::output::{self, Met, TextJson, directed, human, table};
+use super::surface::SurfaceArgs;
 use crate::api::{Ball, CollisionReport};
 use crate::target::Target;
 use clap::Args;
-use serde::Serialize;
 use std::io::Write;
 
 #[derive(Debug, Clone, Args)]
@@ -47,14 +46,6 @@ pub struct CollideArgs {
     pub format: TextJson,
 }
 
-/// `collide --format json`: the answer and the surface the target had (docs/surfaces.md).
-#[derive(Serialize)]
-struct Report<'a> {
-    #[serde(flatten)]
-    report: &'a CollisionReport,
-    surface: SurfaceUsed,
-}
-
 pub fn run(a: &CollideArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     let ball = a.ball.resolve(a.v0)?;
     if a.target_preset.is_some()
@@ -70,12 +61,15 @@ pub fn run(a: &CollideArgs, out: &mut dyn Write) -> anyhow::Result<()> {
             .resolve()?
             .with_target(a.target_mass, a.target_stiffness, a.target_damping);
     let surface = (used.mechanics.stiffness, used.mechanics.damping);
-    let report = match &a.target_preset {
+    let other = match &a.target_preset {
         Some(name) => {
             let entry = ball::select(Some(name), a.ball.choice.config.as_deref())?;
-            let other = Ball::from_entry(&entry, None, None, None)?;
-            ball.collide_ball(&other, a.target_speed, surface)?
+            Some(Ball::from_entry(&entry, None, None, None)?)
         }
+        None => None,
+    };
+    let mut report = match &other {
+        Some(other) => ball.collide_ball(other, a.target_speed, surface)?,
         None => ball.collide(&Target {
             mass: used.mechanics.mass,
             speed: a.target_speed,
@@ -83,21 +77,24 @@ pub fn run(a: &CollideArgs, out: &mut dyn Write) -> anyhow::Result<()> {
             damping: surface.1,
         })?,
     };
+    // a target's surface (a ball partner has none of its own): as every answer on it says
+    if a.target_preset.is_none() {
+        report.warnings.extend(used.warnings());
+    }
+    // a ball partner that deforms is no surface: `surface` null, the note saying what was met
+    // (as `peers --pair`); behind a given surface (--target-stiffness), that surface
+    let partner = report.pair.as_ref().filter(|_| report.target.is_rigid());
+    let said = partner.map(|p| match a.format {
+        TextJson::Json => p.no_surface_note(),
+        TextJson::Text => p.met_words(),
+    });
+    let met = match &said {
+        Some(what) => Met::NoSurface(what),
+        None => Met::Surface(&used),
+    };
     match a.format {
-        TextJson::Json => output::json_stated(
-            out,
-            &Report {
-                report: &report,
-                surface: used,
-            },
-            &ball.conditions,
-        )?,
-        TextJson::Text => {
-            text(out, &ball, &report, a.target_preset.as_deref())?;
-            if a.surface.surface.is_some() {
-                writeln!(out, "  {}", used.label())?;
-            }
-        }
+        TextJson::Json => output::json_on(out, &report, met, &ball.conditions)?,
+        TextJson::Text => text(out, (&ball, other.as_ref()), &report, met)?,
     }
     Ok(())
 }
@@ -123,20 +120,33 @@ fn surface(t: &Target) -> String {
     }
 }
 
+/// The text report: the ball and what it met (a ball partner by its label and conditions,
+/// as the ball's own), the setup, the answer, the warnings.
 fn text(
     out: &mut dyn Write,
-    ball: &Ball,
+    (ball, other): (&Ball, Option<&Ball>),
     r: &CollisionReport,
-    other: Option<&str>,
+    met: Met<'_>,
 ) -> std::io::Result<()> {
-    let what = match other {
-        None => "a target".to_string(),
-        // both chains in series (docs/targets.md §8)
-        Some(o) if r.target.is_rigid() => format!("{o} (a ball that deforms too)"),
-        Some(o) => format!("{o} (a body of its mass behind the given surface)"),
+    let what = match (other, &r.pair) {
+        (Some(_), Some(p)) => {
+            let o = p.named();
+            // both chains in series (docs/targets.md §8)
+            match r.target.is_rigid() {
+                true => format!("{o} (a ball that deforms too)"),
+                false => format!("{o} (a body of its mass behind the given surface)"),
+            }
+        }
+        _ => "a target".to_string(),
     };
     writeln!(out, "{} against {what}", ball.label())?;
-    output::ball_lines(out, ball, None)?;
+    output::ball_lines(out, ball, met)?;
+    if let Some(o) = other {
+        writeln!(out, "partner: {}", o.label())?;
+        if let Some(line) = o.conditions_line() {
+            writeln!(out, "partner {line}")?;
+        }
+    }
     writeln!(out, "  law {}, method {}", r.law, r.collision.method.name())?;
     writeln!(out)?;
     table(out, "  ", &setup_rows(r, other.is_some()))?;

@@ -157,7 +157,7 @@ fn text(
         ball.label(),
         given(friction, 6)
     )?;
-    output::ball_lines(out, ball, Some(surface))?;
+    output::ball_lines(out, ball, output::Met::Surface(surface))?;
     let row = |k: &str, v: String| vec![k.to_string(), v];
     let rows = vec![
         row("court pace rating", human(pace.cpr, 4)),

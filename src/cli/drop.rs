@@ -229,8 +229,7 @@ fn dropped(a: &DropArgs) -> anyhow::Result<Dropped> {
     let statics_run = statics.as_ref().map(|(d, s)| (*d, s));
     let standard = asked.impact;
     let mut warnings =
-        ball.judged_drop_warnings(&run, a.height.is_some(), standard, statics_run)?;
-    warnings.extend(standard.and_then(|s| surface.off_standard_warning(s.name, s.surface)));
+        ball.judged_drop_warnings(&run, a.height.is_some(), standard, statics_run, &surface)?;
     warnings.extend(ball.drop_air_warning(setup.air));
     warnings.extend(off_conditions);
     Ok(Dropped {
@@ -256,7 +255,7 @@ pub fn run(a: &DropArgs, out: &mut dyn Write) -> anyhow::Result<()> {
             trajectory_csv(out, &d.run, &stated)?;
             output::warnings_to_stderr(&d.warnings);
         }
-        TextJsonCsv::Text => text(out, a, &d)?,
+        TextJsonCsv::Text => text(out, &d)?,
     }
     Ok(())
 }
@@ -276,28 +275,11 @@ fn json(out: &mut dyn Write, d: Dropped) -> anyhow::Result<()> {
     Ok(())
 }
 
-/// The text output's heading: the ball, its overrides, the surface when it is asked or not
-/// the rigid plate, the conditions.
-fn text_label(a: &DropArgs, b: &Ball, surface: &SurfaceUsed) -> String {
-    let mut label = b.label();
-    if let Some(line) = b.overrides_line() {
-        label.push('\n');
-        label.push_str(&line);
-    }
-    if !surface.mechanics.is_rigid() || a.surface.surface.is_some() {
-        label = format!("{label}\n{}", surface.label());
-    }
-    if let Some(line) = b.conditions_line() {
-        label.push('\n');
-        label.push_str(&line);
-    }
-    label
-}
-
 /// The text output: the bounces, the verdicts, the warnings, the first bounce's intervals and
 /// the ball's own standard when none was asked.
-fn text(out: &mut dyn Write, a: &DropArgs, d: &Dropped) -> anyhow::Result<()> {
-    let label = text_label(a, &d.ball, &d.surface);
+fn text(out: &mut dyn Write, d: &Dropped) -> anyhow::Result<()> {
+    // the ball, its overrides, the surface, the conditions
+    let label = output::headed(d.ball.label(), &d.ball, output::Met::Surface(&d.surface));
     let standard = d.asked.impact;
     drop_text::text(out, &label, &d.run, standard.zip(d.verdict), d.radius)?;
     if let (Some(t), Some(v)) = (d.asked.leak, &d.leak_verdict) {

@@ -187,9 +187,11 @@ pub fn run(s: &ShotMcArgs, a: &Mc<'_>, out: &mut dyn Write) -> anyhow::Result<()
             }
         })
         .map_err(|e: BallError| anyhow::anyhow!("{e}"))?;
-    let Some(r) = r else {
+    let Some(mut r) = r else {
         return Err(stopped.unwrap_or_else(|| super::budget::Interrupted.into()));
     };
+    // the surface's, as `shot`'s bounces carry it (`SurfaceUsed::warnings`)
+    r.warnings.extend(surface.warnings());
     progress.finish();
     let ran = Ran {
         ball: &ball,

@@ -17,7 +17,8 @@ pub(super) fn text(
     st: &McStats,
 ) -> std::io::Result<()> {
     writeln!(out, "{}", ball.label())?;
-    output::ball_lines(out, ball, None)?;
+    // the samples bounce on the rigid plate, as the JSON `surface` says
+    output::ball_lines(out, ball, output::Met::RigidPlate)?;
     let vary: Vec<String> = spec
         .vary
         .iter()

@@ -141,7 +141,7 @@ pub fn run(a: &ObliqueArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         .inertia_factor
         .unwrap_or_else(|| ball.inertia_factor());
     let radius = ball.radius();
-    let warnings = ball.oblique_warnings(&r);
+    let warnings = ball.oblique_warnings_on(&r, &surface);
     match a.format {
         TextJsonCsv::Json => {
             let report = Report {
@@ -183,13 +183,7 @@ pub fn run(a: &ObliqueArgs, out: &mut dyn Write) -> anyhow::Result<()> {
                 given(kappa, 4),
                 given(radius * 1e3, 4)
             )?;
-            writeln!(out, "{}", surface.label())?;
-            if let Some(line) = ball.overrides_line() {
-                writeln!(out, "{line}")?;
-            }
-            if let Some(line) = ball.conditions_line() {
-                writeln!(out, "{line}")?;
-            }
+            output::ball_lines(out, &ball, output::Met::Surface(&surface))?;
             text(out, &r)?;
             output::warning_lines(out, &warnings)?
         }

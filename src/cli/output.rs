@@ -195,8 +195,6 @@ pub fn directed(v: f64, positive: &str, negative: &str) -> String {
     format!("{} m/s {way}", human(v.abs(), 4))
 }
 
-/// An answer's warnings after its text, a `warning:` line each (docs/guarantees.md,
-/// "Warnings travel with the answer").
 /// A residual (a fraction of an energy) to two digits, `1.5e-16`; an exact zero as `0`, not
 /// Rust's `0.0e0` (`run --lambda 0 --zeta 1`, tests/cli/cli_odd_inputs.rs).
 pub fn residual(x: f64) -> String {
@@ -207,27 +205,44 @@ pub fn residual(x: f64) -> String {
     }
 }
 
-/// The lines under a text report's first that say how its ball differs from its preset: the
-/// overrides ([`crate::api::Ball::overrides_line`]), then the `surface` it ran on where the
-/// report names it there, then the conditions ([`crate::api::Ball::conditions_line`]); each
-/// only where there is one.
-pub fn ball_lines(
-    out: &mut dyn Write,
-    ball: &crate::api::Ball,
-    surface: Option<&SurfaceUsed>,
-) -> io::Result<()> {
+/// The text header's surface line, every text answer's (docs/cli.md, "The surface object"):
+/// "surface steel-plate (rigid, immovable)", the surface's label
+/// ([`SurfaceUsed::label`]), the default plate's included; where the ball met no surface,
+/// "surface none: " and what it met (tests/cli/cli_surface_header.rs).
+pub fn surface_line(met: &Met<'_>) -> String {
+    match met {
+        Met::Surface(s) => s.label(),
+        Met::RigidPlate => SurfaceUsed::rigid_plate().label(),
+        Met::NoSurface(what) => format!("surface none: {what}"),
+    }
+}
+
+/// The lines under a text report's first that say how its ball differs from its preset and
+/// what it met: the overrides ([`crate::api::Ball::overrides_line`]), then the surface
+/// ([`surface_line`], always), then the conditions ([`crate::api::Ball::conditions_line`]).
+/// A header as one string: `first`, then the [`ball_lines`] (`drop`'s and `bat`'s, which
+/// print their heading inside their report).
+pub fn headed(first: String, ball: &crate::api::Ball, met: Met<'_>) -> String {
+    let mut lines = Vec::new();
+    // writing to memory does not fail
+    let _ = ball_lines(&mut lines, ball, met);
+    let lines = String::from_utf8_lossy(&lines);
+    format!("{first}\n{}", lines.trim_end_matches('\n'))
+}
+
+pub fn ball_lines(out: &mut dyn Write, ball: &crate::api::Ball, met: Met<'_>) -> io::Result<()> {
     if let Some(line) = ball.overrides_line() {
         writeln!(out, "{line}")?;
     }
-    if let Some(s) = surface {
-        writeln!(out, "{}", s.label())?;
-    }
+    writeln!(out, "{}", surface_line(&met))?;
     if let Some(line) = ball.conditions_line() {
         writeln!(out, "{line}")?;
     }
     Ok(())
 }
 
+/// An answer's warnings after its text, a `warning:` line each (docs/guarantees.md,
+/// "Warnings travel with the answer").
 pub fn warning_lines(out: &mut dyn Write, warnings: &[String]) -> io::Result<()> {
     for w in warnings {
         writeln!(out, "warning: {w}")?;

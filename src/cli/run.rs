@@ -127,6 +127,7 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     match args.format {
         TextJsonCsv::Json => {
             let mut report = ImpactReport::new(&ball, &r, args.history.history);
+            report.warnings = ball.warnings_on(&r, &surface);
             report.intervals = intervals;
             if elsewhere.is_some() {
                 report.comparison_withheld = elsewhere;
@@ -136,14 +137,12 @@ pub fn run(args: &RunArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         }
         TextJsonCsv::Csv if args.history.history => {
             history_csv(out, &r)?;
-            output::warnings_to_stderr(&ball.warnings(&r));
+            output::warnings_to_stderr(&ball.warnings_on(&r, &surface));
         }
         TextJsonCsv::Csv => summary_csv(out, &ball, &r, &surface, intervals.as_ref())?,
         TextJsonCsv::Text => {
-            super::run_text::write(out, &ball, &r, intervals.as_ref(), args.history.history)?;
-            if !surface.mechanics.is_rigid() || args.surface.surface.is_some() {
-                writeln!(out, "{}", surface.label())?;
-            }
+            let history = args.history.history;
+            super::run_text::write(out, &ball, &r, &surface, intervals.as_ref(), history)?;
             if let Some(why) = &elsewhere {
                 writeln!(out, "  (measured values not compared: {why})")?;
             }
@@ -198,7 +197,7 @@ fn summary_csv(
 ) -> std::io::Result<()> {
     let mut head = SUMMARY_COLUMNS.to_vec();
     head.extend(super::csv_stated::columns());
-    let mut cells = summary_cells(b, r);
+    let mut cells = summary_cells(b, r, surface);
     cells.extend(super::csv_stated::cells(surface, &b.conditions));
     if let Some(i) = intervals {
         head.extend(super::intervals_text::CSV_COLUMNS);
@@ -209,7 +208,7 @@ fn summary_csv(
 }
 
 /// The cells of [`SUMMARY_COLUMNS`].
-fn summary_cells(b: &Ball, r: &ImpactResponse) -> Vec<String> {
+fn summary_cells(b: &Ball, r: &ImpactResponse, surface: &SurfaceUsed) -> Vec<String> {
     let p = &b.params;
     let n = &r.normalized;
     let e = r.energy;
@@ -243,7 +242,7 @@ fn summary_cells(b: &Ball, r: &ImpactResponse) -> Vec<String> {
         en(|e| e.dashpot),
         en(|e| e.contact),
         en(|e| e.spring),
-        output::warnings_cell(&b.warnings(r)),
+        output::warnings_cell(&b.warnings_on(r, surface)),
     ]
 }
 

@@ -80,6 +80,7 @@ pub fn write(
     out: &mut dyn Write,
     b: &Ball,
     r: &ImpactResponse,
+    surface: &crate::api::SurfaceUsed,
     intervals: Option<&Intervals>,
     history: bool,
 ) -> io::Result<()> {
@@ -93,7 +94,7 @@ pub fn write(
         _ => writeln!(out, "{}", b.label())?,
     }
     writeln!(out, "{} law, {method}", r.law)?;
-    output::ball_lines(out, b, None)?;
+    output::ball_lines(out, b, output::Met::Surface(surface))?;
     writeln!(out)?;
     write_parameters(out, b, r, &units)?;
     writeln!(out)?;
@@ -110,7 +111,7 @@ pub fn write(
     if history {
         write_history(out, r, &units.force, &units.time, &units.length)?;
     }
-    super::output::warning_lines(out, &b.warnings(r))
+    super::output::warning_lines(out, &b.warnings_on(r, surface))
 }
 
 /// The parameters the run used (SI ones for a preset), and λ, ζ, z̄_p.

@@ -142,7 +142,8 @@ pub fn run(a: &ShotArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     }
     let paths: Vec<&std::path::Path> = a.svg_out.iter().map(PathBuf::as_path).collect();
     check_writable(&paths, a.force)?;
-    let shot = ball.shot(&spec).map_err(flag_named)?;
+    let mut shot = ball.shot(&spec).map_err(flag_named)?;
+    shot.warn_of(&surface);
     let mut files = Outputs::new(a.force);
     if let Some(p) = &a.svg_out {
         let drawn = if shot.trajectory.is_empty() {
@@ -294,13 +295,7 @@ pub(super) fn ran_lines(
     surface: &SurfaceUsed,
     aero: &crate::flight::Aero,
 ) -> std::io::Result<()> {
-    if let Some(line) = ball.overrides_line() {
-        writeln!(out, "{line}")?;
-    }
-    writeln!(out, "{}", surface.label())?;
-    if let Some(line) = ball.conditions_line() {
-        writeln!(out, "{line}")?;
-    }
+    output::ball_lines(out, ball, output::Met::Surface(surface))?;
     writeln!(
         out,
         "air: ρ = {} kg/m³; {}",

@@ -37,7 +37,7 @@ pub fn run(a: &StaticArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         TextJson::Json => output::json_on(out, &report, output::Met::RigidPlate, &ball.conditions)?,
         TextJson::Text => {
             writeln!(out, "{}", ball.label())?;
-            output::ball_lines(out, &ball, None)?;
+            output::ball_lines(out, &ball, output::Met::RigidPlate)?;
             text(out, a.load, &s, ball.law.name())?;
             output::warning_lines(out, &report.warnings)?;
         }

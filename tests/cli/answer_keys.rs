@@ -52,13 +52,14 @@ fn data_files(dir: &Path) {
 
 /// Every subcommand that answers in JSON, once each way its JSON is written: `{dir}` is the
 /// data files' folder. `surface: null` is allowed only with a `surface_note` saying what the
-/// ball met instead (`peers --pair`).
-const ANSWERS: [&str; 23] = [
+/// ball met instead (`peers --pair`, `collide --target-preset`).
+const ANSWERS: [&str; 24] = [
     "run --preset golf --format json",
     "drop --preset basketball --standard fiba --format json",
     "oblique --angle 45 --friction 0.3 --format json",
     "court --preset tennis --friction 0.6 --format json",
     "collide --preset superball --target-mass 0.3 --format json",
+    "collide --preset tennis --target-preset golf --format json",
     "shot --preset tennis --height 2.8 --speed 50 --elevation -6 --friction 0.6 --format json",
     "sweep velocity --preset golf --points 3 --format json",
     "sweep zeta --lambda 0.4 --points 3 --format json",

@@ -124,7 +124,7 @@ fn a_drop_on_another_surface_says_so() {
         "{w}"
     );
     assert!(
-        w.contains("this drop is on surface steel-plate (K_s 30000 N/m, c_s 5.000 kg/s, immovable; given: stiffness, damping)"),
+        w.contains("this drop is on surface given-surface (K_s 30000 N/m, c_s 5.000 kg/s, immovable; given: stiffness, damping)"),
         "{w}"
     );
     let text = common::bl(&argv(soft)).stdout;

@@ -316,7 +316,8 @@ fn single(a: &FitArgs, cor: f64, stdout: &mut dyn Write) -> anyhow::Result<()> {
         )?,
         TextJson::Text => {
             writeln!(out, "{}, {} law", b.label(), r.ball.law)?;
-            output::ball_lines(out, &b, None)?;
+            // the COR is read as the ball's on the rigid plate, as the JSON's surface says
+            output::ball_lines(out, &b, output::Met::RigidPlate)?;
             writeln!(
                 out,
                 "fitting K_r at v0 = {} m/s, holding m, K_p, c (ζ = {}) and z_p",

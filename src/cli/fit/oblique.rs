@@ -64,7 +64,8 @@ fn write_text(
     f: &ObliqueFit,
 ) -> std::io::Result<()> {
     writeln!(out, "{}, {} law", ball.label(), r.ball.law)?;
-    output::ball_lines(out, ball, None)?;
+    // the bounces are read as the ball's on the rigid plate, as the JSON's surface says
+    output::ball_lines(out, ball, output::Met::RigidPlate)?;
     writeln!(
         out,
         "fitting {} to the oblique bounces {} ({}); the normal ball held",

@@ -138,7 +138,8 @@ fn heading(
     r: &Report,
 ) -> std::io::Result<()> {
     writeln!(out, "{}, {} law", ball.label(), r.law)?;
-    crate::cli::output::ball_lines(out, ball, None)?;
+    // the data are read as bounces on (or squeezes between) rigid plates, as the JSON says
+    crate::cli::output::ball_lines(out, ball, crate::cli::output::Met::RigidPlate)?;
     let what = match &data.file {
         Some(file) => format!("the {} {file}", data.kind),
         None => format!("the {} given", data.kind),

@@ -2,15 +2,15 @@
 //! calibrated to the pair's own COR (docs/targets.md §2, §8).
 
 use super::PeersArgs;
-use crate::api::Ball;
+use crate::api::{Ball, Partner};
 use serde::Serialize;
 
-/// The pair `--pair` calibrates for: the other preset and the effective mass and radius.
+/// The pair `--pair` calibrates for: the other ball as every answer names a ball, with the
+/// effective mass and radius (the JSON `pair`, `collide --target-preset`'s: `api::Partner`).
 #[derive(Debug, Clone, Serialize)]
 pub(super) struct Pair {
-    pub(super) preset: String,
-    pub(super) effective_mass: f64,
-    pub(super) effective_radius: f64,
+    #[serde(flatten)]
+    pub(super) partner: Partner,
     /// The pair's e at v0 onto the partner at rest, both balls deforming (`collide
     /// --target-preset`, docs/targets.md §8): the model's COR for the pair.
     #[serde(skip)]
@@ -19,6 +19,14 @@ pub(super) struct Pair {
     /// radius (not R_eff), each ball's record at the speed it meets the other.
     #[serde(skip)]
     pub(super) warnings: Vec<String>,
+}
+
+impl std::ops::Deref for Pair {
+    type Target = Partner;
+
+    fn deref(&self) -> &Partner {
+        &self.partner
+    }
 }
 
 /// The ball as the pair with preset `name` presents it to a DEM code: mass m_eff and radius
@@ -32,22 +40,18 @@ pub(super) fn pair_ball(
 ) -> anyhow::Result<(Ball, Option<Pair>)> {
     let entry = crate::cli::ball::select(Some(name), a.ball.choice.config.as_deref())?;
     let other = Ball::from_entry(&entry, None, None, None)?;
-    let (m1, m2) = (b.params.mass, other.params.mass);
-    let radius = |x: &Ball| x.measured.as_ref().map_or(f64::NAN, |m| m.radius);
-    let (r1, r2) = (radius(&b), radius(&other));
     let rigid = (f64::INFINITY, 0.0);
     let met = b.collide_ball(&other, 0.0, rigid)?;
     let pair = Pair {
-        preset: other.name.clone().unwrap_or_default(),
-        effective_mass: m1 * m2 / (m1 + m2),
-        effective_radius: r1 * r2 / (r1 + r2),
+        partner: met.pair.unwrap_or_else(|| Partner::of(&b, &other)),
         cor: met.collision.cor,
         warnings: met.warnings,
     };
     b.params.mass = pair.effective_mass;
     b.params.validate()?;
+    let radius = pair.effective_radius.unwrap_or(f64::NAN);
     if let Some(m) = b.measured.as_mut() {
-        (m.mass, m.radius, m.cor) = (pair.effective_mass, pair.effective_radius, None);
+        (m.mass, m.radius, m.cor) = (pair.effective_mass, radius, None);
     }
     Ok((b, Some(pair)))
 }

@@ -3,7 +3,7 @@
 
 use super::{Report, Row};
 use crate::api::Ball;
-use crate::cli::output::{ball_lines, csv_row, given, human, num, opt_num, table};
+use crate::cli::output::{Met, ball_lines, csv_row, given, human, num, opt_num, table};
 use crate::peers::PeerBall;
 use std::io::Write;
 
@@ -55,14 +55,20 @@ pub(super) fn text(
         given(ball.radius, 6),
         given(ball.v0, 6)
     )?;
-    ball_lines(out, b, None)?;
+    // the pair met no surface (the JSON's `surface: null`), a single ball the rigid plate
+    let met_pair = r.pair.as_ref().map(|p| p.met_words());
+    let met = match &met_pair {
+        Some(what) => Met::NoSurface(what),
+        None => Met::RigidPlate,
+    };
+    ball_lines(out, b, met)?;
     if let Some(p) = &r.pair {
         writeln!(
             out,
             "pair with {}: m_eff = {} kg, R_eff = {} m (the partner at rest, v0 the closing speed)",
             p.preset,
             given(p.effective_mass, 6),
-            given(p.effective_radius, 6)
+            given(p.effective_radius.unwrap_or(f64::NAN), 6)
         )?;
     }
     writeln!(
