@@ -349,22 +349,6 @@ fn bounce_numbers(numbers: &[usize]) -> Option<String> {
     Some(format!("{noun} {}", text.join(" and ")))
 }
 
-#[cfg(test)]
-mod bounce_number_tests {
-    use super::bounce_numbers;
-
-    #[test]
-    fn runs_of_bounces_are_named_compactly() {
-        assert_eq!(bounce_numbers(&[]), None);
-        assert_eq!(bounce_numbers(&[4]).unwrap(), "bounce 4");
-        assert_eq!(bounce_numbers(&[2, 3, 4, 5]).unwrap(), "bounces 2–5");
-        assert_eq!(
-            bounce_numbers(&[2, 3, 8, 9, 10]).unwrap(),
-            "bounces 2–3 and 8–10"
-        );
-    }
-}
-
 /// "impact speed 40 m/s", "impact speeds 0.69–20.7 m/s": an answer's speeds as the
 /// calibration warning names them (and a figure's subtitle, [`Ball::moved_notes`]).
 pub(super) fn speeds_words(lo: f64, hi: f64) -> String {
@@ -383,5 +367,21 @@ pub(super) fn fitted_words(c: &crate::preset::Calibration) -> String {
         format!("the ball was fitted at {range}")
     } else {
         format!("the ball was fitted over {range}")
+    }
+}
+
+#[cfg(test)]
+mod bounce_number_tests {
+    use super::bounce_numbers;
+
+    #[test]
+    fn runs_of_bounces_are_named_compactly() {
+        assert_eq!(bounce_numbers(&[]), None);
+        assert_eq!(bounce_numbers(&[4]).unwrap(), "bounce 4");
+        assert_eq!(bounce_numbers(&[2, 3, 4, 5]).unwrap(), "bounces 2–5");
+        assert_eq!(
+            bounce_numbers(&[2, 3, 8, 9, 10]).unwrap(),
+            "bounces 2–3 and 8–10"
+        );
     }
 }

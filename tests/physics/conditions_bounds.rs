@@ -6,23 +6,9 @@
 
 use crate::common;
 
-use common::{argv, argv_with, assert_bad, bad_each, bl, f, ok_calibrated, outside_calibration};
-use serde_json::Value;
+use common::{argv, argv_with, assert_bad, bad_each, bl, f, outside_calibration};
 
-fn json_calibrated(args: &[&str]) -> Value {
-    let s = ok_calibrated(args);
-    serde_json::from_str(s.lines().last().unwrap()).unwrap_or_else(|e| panic!("{args:?}: {e}"))
-}
-
-/// The squash preset's numbers, as presets/squash.toml writes them.
-const C_45: f64 = 8.04718;
-const E_A: f64 = 20381.9;
-
-/// Arrhenius's shift worked here (R = 8.314 462 618 J/(mol K), CODATA), not the crate's.
-fn c_at(t_c: f64) -> f64 {
-    let (t, t_ref) = (t_c + 273.15, 45.0 + 273.15);
-    C_45 * (E_A / 8.314_462_618 * (1.0 / t - 1.0 / t_ref)).exp()
-}
+use crate::conditions_squash::{c_at, json_calibrated};
 
 /// The defect: `--after 0` (no time has passed, nothing leaked) warned "outside calibration:
 /// the ball at 20 °C, 80 kPa gauge, 0 h after inflation …; its record at 20 °C, 80 kPa gauge"
@@ -176,6 +162,11 @@ fn the_documented_pairs_are_refused() {
         (
             "run --preset squash --temperature 45 --damping 10",
             &["invalid temperature: 45", "--damping"],
+        ),
+        // `--zeta` sets c too: it ran at 23 °C on the --zeta c, the shift dropped
+        (
+            "run --preset squash --temperature 23 --zeta 1",
+            &["invalid temperature: 23", "--zeta"],
         ),
         (
             "run --preset tennis --inflated-at 30",

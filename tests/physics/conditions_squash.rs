@@ -7,7 +7,9 @@ use crate::common;
 use common::{argv, argv_with, assert_bad, bl, f, file_with, ok_calibrated, warnings};
 use serde_json::Value;
 
-fn json_calibrated(args: &[&str]) -> Value {
+/// The JSON answer of a run whose stderr holds only calibration warnings (also
+/// conditions_bounds.rs's).
+pub(crate) fn json_calibrated(args: &[&str]) -> Value {
     let s = ok_calibrated(args);
     serde_json::from_str(s.lines().last().unwrap()).unwrap_or_else(|e| panic!("{args:?}: {e}"))
 }
@@ -17,7 +19,7 @@ const C_45: f64 = 8.04718;
 const E_A: f64 = 20381.9;
 
 /// Arrhenius's shift worked here (R = 8.314 462 618 J/(mol K), CODATA), not the crate's.
-fn c_at(t_c: f64) -> f64 {
+pub(crate) fn c_at(t_c: f64) -> f64 {
     let (t, t_ref) = (t_c + 273.15, 45.0 + 273.15);
     C_45 * (E_A / 8.314_462_618 * (1.0 / t - 1.0 / t_ref)).exp()
 }
