@@ -186,12 +186,15 @@ fn a_fit_shows_its_conditions_and_the_k_r_it_started_from() {
         let values: Vec<&str> = [path].into_iter().filter(|p| !p.is_empty()).collect();
         let o = bl(&argv_with(&line, &values));
         assert_eq!(o.code, 0, "{line}: {}", o.stderr);
-        assert_eq!(
-            o.stdout.lines().nth(1),
-            Some(header),
+        // the header: the ball, its surface (the rigid plate the data are read on), then
+        // the conditions (output::ball_lines)
+        let lines: Vec<&str> = o.stdout.lines().take(3).collect();
+        assert!(
+            lines[1].starts_with("surface steel-plate"),
             "{line}: {}",
             o.stdout
         );
+        assert_eq!(lines[2], header, "{line}: {}", o.stdout);
         let warned = o.stdout.lines().filter(|l| {
             l.starts_with("warning: outside calibration: the ball at 20 °C, 60 kPa gauge")
         });
@@ -212,7 +215,7 @@ fn a_fit_shows_its_conditions_and_the_k_r_it_started_from() {
     assert!(!text.contains("preset's K_r  "), "{text}");
     let squash = common::ok_calibrated(&argv("fit --preset squash --cor 0.4 --temperature 23"));
     assert_eq!(
-        squash.lines().nth(1),
+        squash.lines().nth(2),
         Some("conditions: 23 °C, solid ball, atmosphere 101.3 kPa")
     );
 }
