@@ -2,7 +2,7 @@
 //! parses, and CSV series that say what docs/peers.md says.
 
 use crate::common;
-use common::{argv_with, bl, ok};
+use common::{argv_with, bl, ok_calibrated};
 
 fn series<'a>(csv: &'a str, id: &str) -> Vec<Vec<&'a str>> {
     csv.lines()
@@ -13,13 +13,13 @@ fn series<'a>(csv: &'a str, id: &str) -> Vec<Vec<&'a str>> {
 }
 
 /// `bouncelab FIGURE --out F.svg --csv-out F.csv` in a folder of its own: the SVG and the CSV
-/// it wrote.
+/// it wrote (stderr only the ball's calibration warnings, which figures now print).
 fn svg_and_csv(figure: &str) -> (String, String) {
     let dir = tempfile::tempdir().unwrap();
     let (svg, csv) = (dir.path().join("f.svg"), dir.path().join("f.csv"));
     let (s, c) = (svg.to_str().unwrap(), csv.to_str().unwrap());
     let line = format!("{figure} --out {{}} --csv-out {{}}");
-    ok(&argv_with(&line, &[s, c]));
+    ok_calibrated(&argv_with(&line, &[s, c]));
     let read = |p| std::fs::read_to_string(p).unwrap();
     (read(svg), read(csv))
 }
