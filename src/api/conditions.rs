@@ -83,7 +83,7 @@ impl Ball {
     /// to leak over, a temperature for a ball with no temperature model, a temperature where
     /// the record states none to start from (or an inflation temperature without the run's),
     /// `--k-p` beside a pressure, and a ball left flat, named by the flag whose step flattened
-    /// it ([`Ball::blame`]).
+    /// it (`Ball::blame`).
     pub fn at_conditions(mut self, spec: &ConditionsSpec) -> Result<Ball, BallError> {
         if spec.is_empty() {
             return Ok(self);

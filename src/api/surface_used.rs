@@ -74,7 +74,7 @@ impl SurfaceUsed {
     }
 
     /// The name and origin of the surface this one started from: its own, unless numbers
-    /// given over it renamed it ([`SurfaceUsed::name_for_what_it_is`]), whose `origin` keeps
+    /// given over it renamed it (`SurfaceUsed::name_for_what_it_is`), whose `origin` keeps
     /// them (`given over NAME (ORIGIN)`).
     pub fn started_from(&self) -> (String, String) {
         let from = match self.name.as_str() {

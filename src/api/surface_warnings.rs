@@ -29,7 +29,7 @@ fn rating_by_friction(_: &str) -> String {
 impl SurfaceUsed {
     /// The warnings of an answer on this surface (`run`, `drop`, `oblique`, `shot`,
     /// `collide`, and Python's): its normal give ASSUMED rigid, where it is
-    /// ([`SurfaceUsed::assumed_rigid_warning`]); `[]` elsewhere.
+    /// (`SurfaceUsed::assumed_rigid_warning`); `[]` elsewhere.
     pub fn warnings(&self) -> Vec<String> {
         self.assumed_rigid_warning(answer_is_the_plates)
             .into_iter()

@@ -34,9 +34,9 @@ fn cor_at(p: &ImpactParams, law: ContactLaw, c: f64) -> Option<f64> {
 
 /// The dashpot at which the COR of the ball `p` (its other parameters and speed kept) under
 /// `law`, followed from `c_from` (kg/s) toward larger c (`rising`) or smaller, first has a
-/// minimum: where it turns back. The path runs 12 decades (within [`C_RANGE`]; dashpots the
+/// minimum: where it turns back. The path runs 12 decades (within `C_RANGE`; dashpots the
 /// solver refuses, ζ above 1e6, are left out). `None` where the COR does not turn on it (to
-/// [`RISE`]: it only rises, or only falls).
+/// `RISE`: it only rises, or only falls).
 pub fn cor_turn(p: &ImpactParams, law: ContactLaw, c_from: f64, rising: bool) -> Option<f64> {
     let clamp = |c: f64| c.clamp(C_RANGE[0], C_RANGE[1]);
     let a = clamp(c_from).ln();
