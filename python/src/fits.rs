@@ -354,7 +354,7 @@ fn fit_with_warnings(
     speeds: &[f64],
 ) -> PyResult<MultiFit> {
     let mut fit = crate::interrupt::detach_watched(py, |w| ball.fit_watched(data, free, w))?;
-    let w = py.detach(|| ball.fitted_warnings(&fit.params, speeds));
+    let w = py.detach(|| ball.fit_warnings(&fit, speeds));
     fit.warnings.extend(w);
     Ok(fit)
 }

@@ -31,7 +31,7 @@ ball_pyfunction! {
             k_r: f.k_r,
             ..ball.params
         };
-        let warnings = py.detach(|| ball.fitted_warnings(&fitted, &[ball.params.v0]));
+        let warnings = py.detach(|| ball.cor_fit_warnings(&fitted));
         // the report's keys as the command line's JSON writes them (`FitReport`'s serde)
         let d = crate::answer::json(py, &r)?.cast_into::<PyDict>()?;
         d.set_item("warnings", warnings)?;

@@ -106,6 +106,47 @@ impl Ball {
         }
     }
 
+    /// Every warning of a fit from this ball to data at `speeds` (m/s) that gave `fit`: its
+    /// fitted ball's ([`Ball::fitted_warnings`]), then the record's of the parameters it held
+    /// ([`Ball::held_warning`]; at the fitted impact speed where `v0` was free). One place for
+    /// the command line's `fit` and the Python package's `fit_*`, whose answers agree
+    /// (python/tests/test_parity.py).
+    ///
+    /// ```
+    /// use bouncelab::{Ball, analysis::fit::{FitData, Param}, measured::CorPoint};
+    /// let ball = Ball::from_preset("tennis")?;
+    /// let points = [CorPoint::new(20.0, 0.6), CorPoint::new(25.0, 0.55)];
+    /// // K_r alone: the record's K_p, c and z_p are held at 20–25 m/s, far past its 6.906
+    /// let fit = ball.fit(FitData::Cor(&points), Some(&[Param::KR]))?;
+    /// let w = ball.fit_warnings(&fit, &[20.0, 25.0]);
+    /// assert!(w.iter().any(|l| l.starts_with("outside calibration: impact speeds 20–25 m/s")));
+    /// # Ok::<(), bouncelab::BallError>(())
+    /// ```
+    pub fn fit_warnings(&self, fit: &MultiFit, speeds: &[f64]) -> Vec<String> {
+        let free: Vec<Param> = fit
+            .fitted
+            .iter()
+            .filter_map(|e| Param::parse(e.name))
+            .collect();
+        let at = match free.contains(&Param::V0) {
+            true => vec![fit.params.v0],
+            false => speeds.to_vec(),
+        };
+        let mut w = self.fitted_warnings(&fit.params, speeds);
+        w.extend(self.held_warning(&free, &at));
+        w
+    }
+
+    /// The warnings of the single-COR fit (K_r alone, at this ball's v0) that gave `fitted`:
+    /// [`Ball::fit_warnings`] for one free K_r — the command line's `fit --cor` and Python's
+    /// `fit_cor` alike.
+    pub fn cor_fit_warnings(&self, fitted: &crate::ImpactParams) -> Vec<String> {
+        let v0 = self.params.v0;
+        let mut w = self.fitted_warnings(fitted, &[v0]);
+        w.extend(self.held_warning(&[Param::KR], &[v0]));
+        w
+    }
+
     /// "outside calibration: …" for a fit from this ball to data at `speeds` (m/s) that frees
     /// `free` and holds the rest: the parameters held are the record's, which vouches for them
     /// at its own speeds and conditions only — `run`'s warning at the data's speeds

@@ -299,7 +299,7 @@ fn single(a: &FitArgs, cor: f64, stdout: &mut dyn Write) -> anyhow::Result<()> {
     let p = &b.params;
     let r = FitReport::new(&b, cor, &f);
     let fitted = crate::model::params::ImpactParams { k_r: f.k_r, ..*p };
-    let warnings = single_warnings(&b, &fitted);
+    let warnings = b.cor_fit_warnings(&fitted);
     // the report first in memory: it goes out with the files, or not at all (cli::outputs)
     let mut report = Vec::new();
     let out = &mut report;
@@ -338,19 +338,6 @@ fn single(a: &FitArgs, cor: f64, stdout: &mut dyn Write) -> anyhow::Result<()> {
         }
     }
     multi::single_extras(a, &b, &fitted, cor, stdout, &report)
-}
-
-/// The warnings of a single-COR fit: its fitted ball's ([`crate::Ball::fitted_warnings`]),
-/// then the record's of the K_p, c and z_p it holds at the COR's speed
-/// ([`crate::Ball::held_warning`]), as `run` warns of the ball there.
-pub(super) fn single_warnings(
-    b: &crate::Ball,
-    fitted: &crate::model::params::ImpactParams,
-) -> Vec<String> {
-    let v0 = b.params.v0;
-    let mut w = b.fitted_warnings(fitted, &[v0]);
-    w.extend(b.held_warning(&[Param::KR], &[v0]));
-    w
 }
 
 /// The text's rows of the K_r the fit started from, named for what it is: the preset's; the

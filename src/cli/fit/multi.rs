@@ -240,17 +240,7 @@ pub fn run(
 /// first, where no `--v0` was given for a trace, that its impact speed was fitted: the one
 /// and the joint fit's (src/cli/fit/joint.rs) alike.
 pub(super) fn fitted_warnings(ball: &Ball, f: &mut MultiFit, speeds: &[f64], speed_fitted: bool) {
-    f.warnings.extend(ball.fitted_warnings(&f.params, speeds));
-    let free: Vec<Param> = f
-        .fitted
-        .iter()
-        .filter_map(|e| Param::parse(e.name))
-        .collect();
-    let at = match free.contains(&Param::V0) {
-        true => vec![f.params.v0],
-        false => speeds.to_vec(),
-    };
-    f.warnings.extend(ball.held_warning(&free, &at));
+    f.warnings.extend(ball.fit_warnings(f, speeds));
     if speed_fitted {
         f.warnings.insert(
             0,
@@ -338,6 +328,6 @@ pub fn single_extras(
         crate::analysis::fit::fit(fitted, ball.law, FitData::Cor(&data.points), &[Param::KR])
             .map_err(|e| fit_error(e, &data, &[Param::KR]))?;
     // the saved header's warnings: the report's (`single`)
-    f.warnings.extend(super::single_warnings(ball, fitted));
+    f.warnings.extend(ball.cor_fit_warnings(fitted));
     publish(a, out, report, (ball, &data, &f, fitted))
 }
