@@ -159,6 +159,21 @@ impl ShotReport {
             b.warnings.extend(said.iter().cloned());
         }
     }
+
+    /// The shot's warnings as one list, for answers that print them once (text, and CSV's
+    /// stderr): the bounces' in order, then the net's, each distinct line once — the
+    /// surface's, which every bounce carries, is said once, not once a bounce (JSON keeps
+    /// each bounce's own; `cli_shot_surface::the_surface_is_warned_of_once_a_shot`).
+    pub fn warnings(&self) -> Vec<&str> {
+        let bounces = self.bounces.iter().flat_map(|b| &b.warnings);
+        let mut said: Vec<&str> = Vec::new();
+        for w in bounces.chain(self.net.iter().flat_map(|n| &n.warnings)) {
+            if !said.contains(&w.as_str()) {
+                said.push(w);
+            }
+        }
+        said
+    }
 }
 
 fn invalid(field: &'static str, value: f64, reason: &str) -> BallError {

@@ -243,18 +243,18 @@ pub fn ball_lines(out: &mut dyn Write, ball: &crate::api::Ball, met: Met<'_>) ->
 
 /// An answer's warnings after its text, a `warning:` line each (docs/guarantees.md,
 /// "Warnings travel with the answer").
-pub fn warning_lines(out: &mut dyn Write, warnings: &[String]) -> io::Result<()> {
+pub fn warning_lines<S: AsRef<str>>(out: &mut dyn Write, warnings: &[S]) -> io::Result<()> {
     for w in warnings {
-        writeln!(out, "warning: {w}")?;
+        writeln!(out, "warning: {}", w.as_ref())?;
     }
     Ok(())
 }
 
 /// An answer's warnings where its output has no place for them (a time series as CSV): on
 /// stderr, a `bouncelab: warning:` line each, its control characters shown as text.
-pub fn warnings_to_stderr(warnings: &[String]) {
+pub fn warnings_to_stderr<S: AsRef<str>>(warnings: &[S]) {
     for w in warnings {
-        let line = format!("bouncelab: warning: {w}");
+        let line = format!("bouncelab: warning: {}", w.as_ref());
         let _ = writeln!(io::stderr(), "{}", crate::sanitize::line(&line));
     }
 }

@@ -190,15 +190,13 @@ pub fn run(a: &ShotArgs, out: &mut dyn Write) -> anyhow::Result<()> {
 }
 
 /// The warnings a shot's CSV has no cell for, on stderr as a time series' (`run --history`),
-/// in the text's order: the bounces' where the rows are the trajectory's samples, not the
-/// bounces (whose `warnings` column holds them), then the net's, which belongs to no row.
+/// as the text says them ([`ShotReport::warnings`]) where the rows are the trajectory's
+/// samples, not the bounces (whose `warnings` column holds them); else the net's, which
+/// belongs to no row.
 fn csv_warnings(s: &ShotReport) {
     if !s.trajectory.is_empty() {
-        for b in &s.bounces {
-            output::warnings_to_stderr(&b.warnings);
-        }
-    }
-    if let Some(n) = &s.net {
+        output::warnings_to_stderr(&s.warnings());
+    } else if let Some(n) = &s.net {
         output::warnings_to_stderr(&n.warnings);
     }
 }
@@ -379,11 +377,5 @@ fn text(
         given(e.vy, 4),
         given(e.spin, 4)
     )?;
-    for b in &s.bounces {
-        output::warning_lines(out, &b.warnings)?;
-    }
-    if let Some(n) = &s.net {
-        output::warning_lines(out, &n.warnings)?;
-    }
-    Ok(())
+    output::warning_lines(out, &s.warnings())
 }

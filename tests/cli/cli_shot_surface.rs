@@ -151,3 +151,31 @@ fn plain_mc_names_the_rigid_plate() {
     assert_eq!(mc["surface"], run["surface"]);
     assert_eq!(mc["surface"]["name"], "steel-plate");
 }
+
+/// The defect: a shot of three bounces on clay said clay's assumed-rigid warning three times
+/// in its text, and three times on stderr for a trajectory CSV, one per bounce. Each distinct
+/// warning is said once there now; the JSON keeps it in every bounce's own `warnings`, each
+/// bounce being `oblique` on clay. Fails on the old code (three lines).
+#[test]
+fn the_surface_is_warned_of_once_a_shot() {
+    let launch = "shot --preset tennis --height 1 --speed 10 --elevation 0 --surface clay \
+                  --friction 0.6 --bounces 3";
+    let clay = |s: &str| {
+        s.matches("surface clay: its normal give is ASSUMED rigid")
+            .count()
+    };
+    let text = common::bl(&argv(launch));
+    assert_eq!(text.code, 0, "{}", text.stderr);
+    assert_eq!(clay(&text.stdout), 1, "{}", text.stdout);
+    let csv = common::bl(&argv(&format!("{launch} --samples 50 --format csv")));
+    assert_eq!(csv.code, 0, "{}", csv.stderr);
+    assert_eq!(clay(&csv.stderr), 1, "{}", csv.stderr);
+    let json: Value =
+        serde_json::from_str(&common::bl(&argv(&format!("{launch} --format json"))).stdout)
+            .unwrap();
+    let bounces = json["bounces"].as_array().unwrap();
+    assert_eq!(bounces.len(), 3);
+    for b in bounces {
+        assert_eq!(clay(&b["warnings"].to_string()), 1, "{b}");
+    }
+}
