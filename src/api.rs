@@ -95,6 +95,7 @@ mod intervals;
 mod judged;
 mod map_reach;
 mod mc;
+mod mc_temperature;
 mod moved;
 mod oblique;
 mod oblique_fit;

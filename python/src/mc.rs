@@ -181,7 +181,7 @@ fn report<'py>(py: Python<'py>, r: &Request, s: &McSummary) -> PyResult<Bound<'p
     }
     d.set_item("no_rebound", s.no_rebound)?;
     d.set_item("stats", stats)?;
-    d.set_item("warnings", r.ball.mc_warnings(&s.stats))?;
+    d.set_item("warnings", r.ball.mc_warnings(&r.spec, &s.stats))?;
     crate::answer::stated(&d, &r.ball)?;
     // plain `mc` samples on the rigid plate (`McReport::surface`): as every answer's surface
     // dict gives it (∞ as inf, where the JSON writes null)

@@ -36,6 +36,29 @@ impl Dist {
             .into_iter()
             .find(|d| d.name() == s.trim())
     }
+
+    /// The probability that a value drawn about `v` with relative `spread` falls below
+    /// `ratio`·v: each variate's marginal, which correlation leaves as it is (a Gaussian
+    /// copula, `mc_corr`). Normal Φ((r − 1)/s); uniform on v(1 ± s); lognormal of mean v and
+    /// sd s·v, Φ((ln r + σ²/2)/σ) with σ² = ln(1 + s²) (`mc::lognormal`).
+    pub fn below(self, spread: f64, ratio: f64) -> f64 {
+        use statrs::distribution::{ContinuousCDF, Normal};
+        if spread == 0.0 {
+            return if ratio > 1.0 { 1.0 } else { 0.0 };
+        }
+        let phi = |x: f64| Normal::standard().cdf(x);
+        match self {
+            Dist::Normal => phi((ratio - 1.0) / spread),
+            Dist::Uniform => (((ratio - 1.0) / spread + 1.0) / 2.0).clamp(0.0, 1.0),
+            Dist::Lognormal => {
+                if ratio <= 0.0 {
+                    return 0.0;
+                }
+                let var = spread.mul_add(spread, 1.0).ln();
+                phi((ratio.ln() + 0.5 * var) / var.sqrt())
+            }
+        }
+    }
 }
 
 /// Why a drawn ball is out of its domain, its value to 4 significant figures (a draw is no

@@ -106,6 +106,40 @@ fn the_inputs_follow_their_distribution() {
     assert!(log.min > 0.0);
 }
 
+/// `Dist::below` (the share of a spread's draws below a value, worked from each law's CDF)
+/// against the share of the sampler's own draws below it, for each law, with a correlation
+/// too (the copula keeps each marginal): within five binomial standard errors.
+#[test]
+fn the_share_below_a_value_is_the_draws_share() {
+    let ball = golf();
+    let k_p = ball.params.k_p;
+    let n = 20_000;
+    for dist in [Dist::Normal, Dist::Uniform, Dist::Lognormal] {
+        for vary in ["k_p=10%", "k_p=10%,c=10%"] {
+            let mut sp = spec(vary, dist, n, 5);
+            if vary.contains(',') {
+                let (k, c) = (Varied::Param(Param::KP), Varied::Param(Param::C));
+                sp = sp.with_correlation(vec![(k, c, 0.8)]).unwrap();
+            }
+            let s = Sampler::new(ball.params, ball.law, sp);
+            let v: Vec<f64> = (0..n as u64).map(|i| s.inputs(i)[0] / k_p).collect();
+            for ratio in [0.8, 0.95, 1.0, 1.07, 1.15] {
+                let drawn = v.iter().filter(|&&x| x < ratio).count() as f64 / n as f64;
+                let p = dist.below(0.1, ratio);
+                let se = (p * (1.0 - p) / n as f64).sqrt().max(1.0 / n as f64);
+                assert!(
+                    (drawn - p).abs() <= 5.0 * se,
+                    "{} {vary} below {ratio}: drawn {drawn}, worked {p}",
+                    dist.name()
+                );
+            }
+        }
+    }
+    assert_eq!(Dist::Normal.below(0.0, 1.0), 0.0);
+    assert_eq!(Dist::Uniform.below(0.1, 0.85), 0.0);
+    assert_eq!(Dist::Lognormal.below(0.1, 0.0), 0.0);
+}
+
 #[test]
 fn same_answer_on_one_thread_and_many_and_in_any_chunks() {
     let ball = golf();

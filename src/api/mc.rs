@@ -174,9 +174,12 @@ impl Ball {
     /// The warnings of a Monte Carlo run of this ball with statistics `st`: those of its
     /// impact at the nominal parameters ([`Ball::warnings`]: a peak indentation beyond the
     /// radius, said "at the nominal parameters"; the samples' own indentations are not
-    /// kept), then the quantiles too far in the tail for the samples to give their interval
-    /// an end (`analysis::mc::interval_warnings`). The JSON, the text and Python say these.
-    pub fn mc_warnings(&self, st: &McStats) -> Vec<String> {
+    /// kept), then what `spec`'s temperature spread takes the samples to that the conditions'
+    /// model does not vouch for (beyond a shift's span, past the COR's turn: as `run` warns
+    /// of and refuses one temperature), then the quantiles too far in the tail for the
+    /// samples to give their interval an end (`analysis::mc::interval_warnings`). The JSON,
+    /// the text and Python say these.
+    pub fn mc_warnings(&self, spec: &McSpec, st: &McStats) -> Vec<String> {
         let nominal = self.impact().map(|r| self.warnings(&r)).unwrap_or_default();
         nominal
             .into_iter()
@@ -188,6 +191,7 @@ impl Ball {
                     format!("at the nominal parameters: {w}")
                 }
             })
+            .chain(self.temperature_spread_warnings(spec))
             .chain(crate::analysis::mc::interval_warnings(&[
                 &st.cor,
                 &st.max_force,
@@ -273,7 +277,7 @@ impl<'a> McReport<'a> {
             correlate: spec.correlation.as_ref().map(|c| CorrMap(&c.pairs)),
             no_rebound: summary.no_rebound,
             stats: &summary.stats,
-            warnings: ball.mc_warnings(&summary.stats),
+            warnings: ball.mc_warnings(spec, &summary.stats),
             ball: ball.record_json(),
             surface: super::SurfaceUsed::rigid_plate(),
         }

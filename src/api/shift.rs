@@ -16,12 +16,12 @@ const SPAN_SLACK: f64 = 0.01;
 
 /// The span a shift holds over, °C: its data's, or its reference alone where its record
 /// (written before spans were kept) states none.
-fn span(shift: &TemperatureShift) -> [f64; 2] {
+pub(super) fn span(shift: &TemperatureShift) -> [f64; 2] {
     shift.span.unwrap_or([shift.reference; 2])
 }
 
 /// "36.11–45 °C", or "45 °C" for one temperature.
-fn span_words([lo, hi]: [f64; 2]) -> String {
+pub(super) fn span_words([lo, hi]: [f64; 2]) -> String {
     if lo == hi {
         format!("{} °C", short(lo, 4))
     } else {
@@ -73,21 +73,13 @@ impl Ball {
     /// (Arrhenius's form has no pole: the turn is the model's COR against c, §5). `None`
     /// inside the span and where the COR does not turn.
     fn past_turn(&self, shift: &TemperatureShift, t: f64) -> Option<String> {
-        let (c_ref, e_a, t_ref) = (
-            self.params.damping,
-            shift.activation_energy,
-            shift.reference,
-        );
         let edge = beyond(span(shift), t)?;
-        let c = |t| shifted_damping(c_ref, e_a, t_ref, t);
-        let (from, to) = (c(edge), c(t));
-        // the whole path's turn, not the part up to t: one bound, the same for every t past it
-        let turn = cor_turn(&self.params, self.law, from, to > from)?;
-        if (to - turn) * (turn - from) <= 0.0 {
+        let cold = t < edge;
+        let (turn, at) = self.turn(shift, (self.params.damping, shift.reference), cold)?;
+        if (cold && t >= at) || (!cold && t <= at) {
             return None;
         }
-        let at = damping_temperature(c_ref, e_a, t_ref, turn);
-        let (side, going) = if t < edge {
+        let (side, going) = if cold {
             ("below", "cools")
         } else {
             ("above", "warms")
@@ -102,6 +94,28 @@ impl Ball {
             short(self.params.v0, 4),
             short(at, 5),
         ))
+    }
+
+    /// Where, beyond the shift's span on its `cold` side (else its warm one), the shifted
+    /// dashpot reaches the one at which this ball's COR has its minimum: that dashpot (kg/s)
+    /// and its temperature (°C), past which [`Ball::past_turn`] refuses. `(c_at, t_at)`: the
+    /// ball's dashpot and the temperature (°C) it holds at, on the shift's curve. The whole
+    /// path's turn, one bound for every temperature past it; `None` where the COR does not
+    /// turn on that side.
+    pub(super) fn turn(
+        &self,
+        shift: &TemperatureShift,
+        (c_at, t_at): (f64, f64),
+        cold: bool,
+    ) -> Option<(f64, f64)> {
+        let e_a = shift.activation_energy;
+        let [lo, hi] = span(shift);
+        let from = shifted_damping(c_at, e_a, t_at, if cold { lo } else { hi });
+        // c(T) = c_at exp[(E_a/R)(1/T − 1/T_at)] grows as the ball cools where E_a > 0
+        let rising = cold == (e_a > 0.0);
+        let turn = cor_turn(&self.params, self.law, from, rising)?;
+        let at = damping_temperature(c_at, e_a, t_at, turn);
+        at.is_finite().then_some((turn, at))
     }
 
     /// What the conditions' model cannot vouch for at the ball's temperature, for the

@@ -58,7 +58,7 @@ pub(super) fn text(
     rows.extend(quantile_rows(&cols, |s, i, k| cell(s.q.values()[i], k)));
     table(out, "  ", &rows)?;
     intervals(out, st)?;
-    output::warning_lines(out, &ball.mc_warnings(st))?;
+    output::warning_lines(out, &ball.mc_warnings(spec, st))?;
     if no_rebound > 0 {
         writeln!(
             out,

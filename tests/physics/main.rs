@@ -18,6 +18,7 @@ mod spread;
 mod closed_forms;
 mod conditions;
 mod conditions_bounds;
+mod conditions_spread;
 mod conditions_squash;
 mod drop;
 mod drop_flight;
