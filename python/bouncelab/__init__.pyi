@@ -373,7 +373,9 @@ def fit_trace(
     **ball: Unpack[BallArguments],
 ) -> MultiFit:
     """k_p, c, k_r (default; k_h for k_p on the Hertz law) fitted to a force–time trace (s, N),
-    with the contact start and the baseline, as ``bouncelab fit --force-time FILE``."""
+    with the contact start and the baseline, as ``bouncelab fit --force-time FILE``; without
+    ``v0`` the impact speed too (as ``free`` with "v0", a warning saying so first), as the
+    command line fits it without ``--v0``."""
 
 def fit_cor_table(
     v0: Floats,

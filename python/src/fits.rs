@@ -7,7 +7,7 @@
 use crate::arguments::ball::ball_pyfunction;
 use crate::{array, error, floats, value_error};
 use bouncelab::Ball;
-use bouncelab::analysis::fit::{FitData, MultiFit, parse_free};
+use bouncelab::analysis::fit::{FitData, MultiFit, Param, parse_free};
 use bouncelab::measured::{Air, CorPoint, CorTable, MeasuredError, Trace};
 use bouncelab::model::params::ImpactParams;
 use bouncelab::solver::SolveOptions;
@@ -177,7 +177,8 @@ fn free_list(
 ball_pyfunction! {
     /// Several parameters fitted to a force–time trace, as `bouncelab fit --force-time FILE`:
     /// `time` (s, increasing) and `force` (N) arrays; the contact start in the data's clock and
-    /// the force baseline are fitted too.
+    /// the force baseline are fitted too, and without `v0` the impact speed (as `free` with
+    /// "v0", the warnings saying so first: `Ball::free_trace_speed`).
     signature = (time, force, *, preset="superball", free=None, v0=None, law=None, params=None,);
     fn fit_trace<'py>(
         py,
@@ -202,11 +203,18 @@ ball_pyfunction! {
         // a trace with no pulse, named by the row of its largest force, before the fit would
         // name it by the line and column of the text above (`2:5: empty pulse …`)
         trace.summary().map_err(|e| data_error("trace", e))?;
-        let free = free_list(free)?;
         let ball = choice.ball(v0)?;
+        // without `v0` the trace's speed is fitted too and the warnings say so first, as the
+        // command line's `fit --force-time` without `--v0` (it was held at the preset's here)
+        let mut free = free_list(free)?.unwrap_or_else(|| Param::defaults(true, 0, ball.law));
+        let speed_fitted = Ball::free_trace_speed(&mut free, true, v0.is_some());
         let data = FitData::Trace(&trace);
-        let fit = fit_with_warnings(py, &ball, data, free.as_deref(), &[ball.params.v0])?;
-        report(py, &ball, "force-time trace", &fit, (ball.params.v0, None))
+        let mut fit = fit_with_warnings(py, &ball, data, Some(&free), &[ball.params.v0])?;
+        if speed_fitted {
+            fit.warnings.insert(0, ball.speed_fitted_warning());
+        }
+        // the trace's speed: the ball's, or the fit's where it was fitted
+        report(py, &ball, "force-time trace", &fit, (fit.params.v0, None))
     }
 }
 

@@ -37,9 +37,11 @@ ball_pyfunction! {
         // the conditions before λ and ζ, as the command line resolves its ball
         let mut ball = choice.resolve(v0)?;
         // λ or ζ given: a ball of its own (with neither, the ball is as `with_lambda_zeta(None,
-        // None)` leaves it: checked when built)
+        // None)` leaves it: checked when built); ζ beside a temperature that shifts c refused
+        // as the command line refuses it (the library's rule: it ran here)
         if lambda_.is_some() || zeta.is_some() {
-            let moved = Arc::unwrap_or_clone(ball).with_lambda_zeta(lambda_, zeta);
+            let temperature = choice.conditions.temperature;
+            let moved = Arc::unwrap_or_clone(ball).with_lambda_zeta_at(temperature, lambda_, zeta);
             ball = Arc::new(moved.map_err(error)?);
         }
         impact_on(py, ball, surface, history, samples)

@@ -5,7 +5,7 @@ command line's `--pressure`, `--temperature`, `--inflated-at`, and answer as it 
 import pytest
 
 import bouncelab
-from test_bouncelab import cli_json, no_user_presets, same  # noqa: F401
+from test_bouncelab import cli_error, cli_json, no_user_presets, same  # noqa: F401
 
 
 def test_run_takes_the_pressure_and_temperature_as_the_command_line():
@@ -58,3 +58,17 @@ def test_the_conditions_hold_where_the_command_line_holds_them():
         bouncelab.run(preset="tennis", inflated_at=30.0)
     with pytest.raises(ValueError, match="invalid temperature: 45 .*--damping"):
         bouncelab.run(preset="squash", temperature=45.0, damping=10.0)
+
+
+def test_zeta_beside_a_temperature_that_shifts_c_is_refused_as_the_command_line():
+    # the command line refuses `--temperature 30 --zeta 0.2` on the squash ball (ζ sets c,
+    # which the temperature shifts); `run` ran it on the ζ's c, the shift dropped
+    message = cli_error("run", "--preset", "squash", "--temperature", "30", "--zeta", "0.2")
+    assert message.startswith("invalid temperature: 30 (--zeta sets c too"), message
+    with pytest.raises(ValueError) as e:
+        bouncelab.run(preset="squash", temperature=30.0, zeta=0.2)
+    assert str(e.value) == message
+    # each alone runs, and ζ beside a temperature on a ball without a shift too
+    assert bouncelab.run(preset="squash", zeta=0.2).zeta == pytest.approx(0.2, rel=1e-12)
+    bouncelab.run(preset="squash", temperature=30.0)
+    bouncelab.run(preset="football", temperature=5.0, zeta=0.2)

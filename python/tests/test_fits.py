@@ -63,7 +63,7 @@ def trace_data(true, rng, noise=0.01, offset=0.01, baseline=2.0):
 def test_fit_trace_recovers_k_p_c_k_r_the_start_and_the_baseline(tmp_path):
     true = truth()
     t, f = trace_data(true, np.random.default_rng(2))
-    fit = bouncelab.fit_trace(t, f, preset="superball")
+    fit = bouncelab.fit_trace(t, f, preset="superball", v0=3.12)
     assert fit["data"] == "force-time trace" and fit["free"] == ["k_p", "c", "k_r"]
     for name in ("k_p", "c", "k_r"):
         covers(fit, name, true[name])
@@ -76,8 +76,30 @@ def test_fit_trace_recovers_k_p_c_k_r_the_start_and_the_baseline(tmp_path):
     # the command line, on the same numbers in a file, says the same
     path = tmp_path / "trace.csv"
     write_csv(path, ["time_s", "force_N"], [t, f])
-    # (the trace's speed given: without --v0 the command line fits it too, issue 52)
+    # (the trace's speed given: without it both fit it too, issue 52)
     same_as_cli(fit, cli_json("fit", "--force-time", str(path), "--v0", "3.12", "--format", "json"))
+
+
+def test_a_trace_without_v0_fits_its_speed_as_the_command_line(tmp_path):
+    # `bouncelab fit --force-time FILE` without --v0 fits the speed (as --free v0) and warns
+    # of it first; fit_trace held it at the preset's, without a word (issue 52: held there, a
+    # trace made at twice the speed gave a K_r half the truth with a tight interval)
+    true = truth()
+    t, f = trace_data(true, np.random.default_rng(3))
+    path = tmp_path / "trace.csv"
+    write_csv(path, ["time_s", "force_N"], [t, f])
+    expected = cli_json("fit", "--force-time", str(path), "--format", "json")
+    fit = bouncelab.fit_trace(t, f, preset="superball")
+    assert fit["free"] == expected["free"] == ["k_p", "c", "k_r", "v0"]
+    assert fit["warnings"] == expected["warnings"]
+    assert fit["warnings"][0].startswith("no --v0 given: the trace's impact speed was fitted")
+    same_as_cli(fit, expected)
+    covers(fit, "v0", 3.12)
+    # `v0` named in `free` is fitted without the warning, as --free on the command line
+    named = bouncelab.fit_trace(t, f, preset="superball", free=["k_p", "c", "k_r", "v0"])
+    assert named["free"] == fit["free"] and not any(
+        w.startswith("no --v0 given") for w in named["warnings"]
+    )
 
 
 def test_fit_cor_table_recovers_k_r_and_z_p(tmp_path):

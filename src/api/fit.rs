@@ -137,6 +137,46 @@ impl Ball {
         w
     }
 
+    /// Whether a fit of `free` to data with a trace (`trace`) fits the trace's impact speed
+    /// too, [`Param::V0`] added to `free`: no speed was given (`v0_given` false) and `free`
+    /// does not name it. Such a trace is not known to be taken at the preset's speed: held
+    /// there, a trace made at twice it gave K_r 43 k against a truth of 90 k with a tight
+    /// interval (issue 52; tests/cli/calibration.rs, `a_trace_without_v0_fits_its_speed`).
+    /// The fit's warnings then say so first ([`Ball::speed_fitted_warning`]). One rule for
+    /// the command line's `fit --force-time` (alone and joint) and Python's `fit_trace`.
+    ///
+    /// ```
+    /// use bouncelab::{Ball, analysis::fit::Param};
+    /// let mut free = vec![Param::KP, Param::C, Param::KR];
+    /// assert!(!Ball::free_trace_speed(&mut free, true, true)); // a speed given: held
+    /// assert!(Ball::free_trace_speed(&mut free, true, false));
+    /// assert_eq!(free, [Param::KP, Param::C, Param::KR, Param::V0]);
+    /// assert!(!Ball::free_trace_speed(&mut free, true, false)); // named already
+    /// ```
+    pub fn free_trace_speed(free: &mut Vec<Param>, trace: bool, v0_given: bool) -> bool {
+        let fitted = trace && !v0_given && !free.contains(&Param::V0);
+        if fitted {
+            free.push(Param::V0);
+        }
+        fitted
+    }
+
+    /// The first warning of a fit whose trace's speed [`Ball::free_trace_speed`] freed,
+    /// naming this ball's speed the fit started from.
+    ///
+    /// ```
+    /// let w = bouncelab::Ball::from_preset("superball")?.speed_fitted_warning();
+    /// assert!(w.starts_with("no --v0 given: the trace's impact speed was fitted (as --free v0)"));
+    /// # Ok::<(), bouncelab::BallError>(())
+    /// ```
+    pub fn speed_fitted_warning(&self) -> String {
+        format!(
+            "no --v0 given: the trace's impact speed was fitted (as --free v0), starting from \
+             the preset's {} m/s; give --v0 to hold a measured one",
+            crate::text::short(self.params.v0, 4)
+        )
+    }
+
     /// The warnings of the single-COR fit (K_r alone, at this ball's v0) that gave `fitted`:
     /// [`Ball::fit_warnings`] for one free K_r — the command line's `fit --cor` and Python's
     /// `fit_cor` alike.

@@ -47,6 +47,47 @@ impl Ball {
         self.calibration.as_ref()?.temperature_shift.as_ref()
     }
 
+    /// [`Ball::with_lambda_zeta`] on the ball [`Ball::at_conditions`] gave, `temperature` the
+    /// one its caller gave (°C; `None`: none): ζ sets c as `--damping` does, and a temperature
+    /// moves the c of a ball whose record holds a shift, so the two together are refused
+    /// naming the temperature, as `at_conditions` refuses `--damping` there (ζ comes after the
+    /// conditions, so here). A temperature given at the record's own is refused too: it is
+    /// still two settings of c. Neither λ nor ζ: the ball as it is. One rule for the command
+    /// line's `--zeta` (`BallArgs::resolve_tuned`) and Python's `run(zeta=…)`, which ran the
+    /// pair that the command line refused.
+    ///
+    /// ```
+    /// use bouncelab::{Ball, api::ConditionsSpec};
+    /// let at = ConditionsSpec { temperature: Some(30.0), ..Default::default() };
+    /// let squash = Ball::from_preset("squash")?.at_conditions(&at)?;
+    /// let e = squash.with_lambda_zeta_at(Some(30.0), None, Some(0.2)).unwrap_err();
+    /// assert_eq!(
+    ///     e.to_string(),
+    ///     "invalid temperature: 30 (--zeta sets c too, which the temperature shifts: give one \
+    ///      of them)"
+    /// );
+    /// let ball = Ball::from_preset("squash")?.with_lambda_zeta_at(None, None, Some(0.2))?;
+    /// assert!((ball.zeta() - 0.2).abs() < 1e-12);
+    /// # Ok::<(), bouncelab::BallError>(())
+    /// ```
+    pub fn with_lambda_zeta_at(
+        self,
+        temperature: Option<f64>,
+        lambda: Option<f64>,
+        zeta: Option<f64>,
+    ) -> Result<Ball, BallError> {
+        if let (Some(t), Some(_)) = (temperature, zeta)
+            && self.temperature_shift().is_some()
+        {
+            let why = "--zeta sets c too, which the temperature shifts: give one of them";
+            return Err(invalid("temperature", t, why.into()));
+        }
+        if lambda.is_none() && zeta.is_none() {
+            return Ok(self);
+        }
+        self.with_lambda_zeta(lambda, zeta)
+    }
+
     /// A solid ball at `t` °C by its record's shift: c(T) = c · exp[(E_a/R)(1/T − 1/T_ref)]
     /// (docs/model.md §10.4), the springs kept. Refused beyond the shift's span where the COR
     /// turns back between the span's end and `t` ([`Ball::past_turn`]).

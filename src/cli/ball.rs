@@ -281,21 +281,8 @@ impl BallArgs {
     ) -> anyhow::Result<Ball> {
         check_overrides(&self.changes.set, lambda, zeta)?;
         let ball = self.resolve(v0)?;
-        if lambda.is_none() && zeta.is_none() {
-            return Ok(ball);
-        }
-        // `--zeta` sets c as `--damping` does, which a temperature shifts: the library refuses
-        // `--damping` there (Ball::at_conditions); ζ comes after the conditions, so here
-        // (tests/physics/conditions_bounds.rs, the_documented_pairs_are_refused)
-        if let (Some(t), Some(_)) = (self.conditions.temperature, zeta)
-            && ball.temperature_shift().is_some()
-        {
-            anyhow::bail!(
-                "invalid temperature: {} (--zeta sets c too, which the temperature shifts: give \
-                 one of them)",
-                crate::text::number(t)
-            );
-        }
-        Ok(ball.with_lambda_zeta(lambda, zeta)?)
+        // `--zeta` beside a temperature that shifts c is refused by the library, as Python's
+        // `run(zeta=…)` is (tests/physics/conditions_bounds.rs, the_documented_pairs_are_refused)
+        Ok(ball.with_lambda_zeta_at(self.conditions.temperature, lambda, zeta)?)
     }
 }

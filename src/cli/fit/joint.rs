@@ -112,10 +112,7 @@ pub fn run(a: &FitArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         None => default_free(&data, statics.is_some(), ball.law),
     };
     // a trace without --v0: its speed fitted too, as the fit of a trace alone does (`multi`)
-    let speed_fitted = has_trace && a.v0.is_none() && !free.contains(&Param::V0);
-    if speed_fitted {
-        free.push(Param::V0);
-    }
+    let speed_fitted = crate::api::Ball::free_trace_speed(&mut free, has_trace, a.v0.is_some());
     let mut sets: Vec<JointSet> = data
         .iter()
         .map(|d| JointSet {

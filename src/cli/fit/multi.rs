@@ -180,13 +180,8 @@ pub fn run(
     let mut free =
         free.unwrap_or_else(|| Param::defaults(data.trace.is_some(), data.points.len(), ball.law));
     // a trace without --v0 was not taken at the preset's speed for sure: its speed is fitted
-    // too (as --free v0), and the report says so. Held at the preset's, a trace made at twice
-    // it gave K_r 43 k against a truth of 90 k with a tight interval (issue 52;
-    // tests/cli/calibration.rs, `a_trace_without_v0_fits_its_speed`).
-    let speed_fitted = data.trace.is_some() && a.v0.is_none() && !free.contains(&Param::V0);
-    if speed_fitted {
-        free.push(Param::V0);
-    }
+    // too (as --free v0), and the report says so (the library's rule, Python's fit_trace's too)
+    let speed_fitted = Ball::free_trace_speed(&mut free, data.trace.is_some(), a.v0.is_some());
     let input = match &data.trace {
         Some(t) => FitData::Trace(t),
         None => FitData::Cor(&data.points),
@@ -242,14 +237,7 @@ pub fn run(
 pub(super) fn fitted_warnings(ball: &Ball, f: &mut MultiFit, speeds: &[f64], speed_fitted: bool) {
     f.warnings.extend(ball.fit_warnings(f, speeds));
     if speed_fitted {
-        f.warnings.insert(
-            0,
-            format!(
-                "no --v0 given: the trace's impact speed was fitted (as --free v0), starting \
-                 from the preset's {} m/s; give --v0 to hold a measured one",
-                crate::text::short(ball.params.v0, 4)
-            ),
-        );
+        f.warnings.insert(0, ball.speed_fitted_warning());
     }
 }
 
