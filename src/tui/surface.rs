@@ -8,10 +8,12 @@
 //! of the impact view (the form's K_s, c_s, M), its μ and K_t (where it gives them) the
 //! oblique view's, its c_t the oblique view's tangential dashpot. One change `u` undoes.
 
+use crate::api::SurfaceUsed;
 use crate::catalog::Origin;
 use crate::catalog::surfaces::{self, SurfaceEntry};
-use crate::target::surface::SurfaceMechanics;
+use crate::target::surface::{Surface, SurfaceMechanics};
 use crate::tui::format::value;
+use crate::tui::setting::Setting;
 
 /// The open surface picker: every surface, the highlighted one, and why the user surfaces
 /// could not be read (then only the embedded ones are listed).
@@ -75,4 +77,45 @@ pub fn numbers(s: &SurfaceMechanics) -> String {
         parts.push(format!("c_t {} kg/s", value(c)));
     }
     parts.join(", ")
+}
+
+/// The surface the answer on screen runs on, as the library names it and warns of it
+/// ([`SurfaceUsed`], docs/surfaces.md §1–2): the surface picked (`G`; the rigid plate when none
+/// was) with the form's K_s, c_s, M given over its own where they differ — what `y`'s line
+/// gives over `--surface NAME` — and, for the oblique view, its μ, K_t and c_t (`oblique`'s
+/// line gives its μ always, K_t where set, c_t where not the surface's). Renamed by the
+/// library's one rule once a number differs (`clay-modified`, `given-surface`); its
+/// [`SurfaceUsed::warnings`] are the command line's.
+pub fn used(setting: &Setting, tangential: Option<[Option<f64>; 3]>) -> SurfaceUsed {
+    let picked = setting.surface.clone().unwrap_or_else(Surface::rigid_plate);
+    // user surfaces may not take an embedded one's name (catalog::surfaces::load): an
+    // embedded name is that surface; a user's file is not at hand here, and its path is no
+    // part of what the screen says (its name, its warnings: none for a user's surface)
+    let origin = if Surface::embedded().contains(&picked) {
+        Origin::Embedded
+    } else {
+        Origin::File("a user's surface file".into())
+    };
+    let own = picked.mechanics;
+    let start = SurfaceUsed::from_entry(&SurfaceEntry {
+        surface: picked,
+        origin,
+    });
+    let t = setting.target;
+    let differs = |now: f64, own: f64| (now != own).then_some(now);
+    let normal = [
+        differs(t.stiffness, own.stiffness),
+        differs(t.damping, own.damping),
+        differs(t.mass, own.mass),
+    ];
+    // a c_s typed beside a rigid K_s, which `with_normal` refuses (its dashpot does nothing):
+    // the numbers given as `collide`'s target, K_s among them only where it moved
+    let used = start
+        .clone()
+        .with_normal(normal)
+        .unwrap_or_else(|_| start.with_target(normal[2], normal[0], Some(t.damping)));
+    match tangential {
+        Some(given) => used.with_tangential(given),
+        None => used,
+    }
 }

@@ -198,6 +198,7 @@ fn readout<'a>(app: &'a App, pins: &'a [PinView<'a>], tall: bool, theme: Theme) 
         run: app.run(),
         validity: app.validity(),
         calibration: app.calibration(),
+        surface_warnings: app.surface_warnings(),
         pins,
         tall,
         theme,

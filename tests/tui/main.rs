@@ -67,6 +67,7 @@ mod tui_small;
 mod tui_small_pty;
 mod tui_surface;
 mod tui_surface_form;
+mod tui_surface_said;
 mod tui_target;
 mod tui_ticks;
 mod tui_typeahead_pty;

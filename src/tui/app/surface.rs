@@ -2,7 +2,8 @@
 //! listed surfaces come back from the loop, the arrows move the highlight (src/tui/app/picker.rs),
 //! Enter puts the ball on the highlighted surface as one change `u` undoes.
 
-use super::{App, Overlay};
+use super::{App, Overlay, View};
+use crate::api::SurfaceUsed;
 use crate::catalog::surfaces::SurfaceEntry;
 use crate::target::surface::Surface;
 use crate::tui::surface::{SurfacePicker, numbers};
@@ -30,9 +31,63 @@ impl App {
         let name = entry.surface.name.clone();
         let said = numbers(&entry.surface.mechanics);
         match self.on_surface(entry.surface) {
-            Ok(()) => self.info(format!("surface {name}: {said}")),
+            // the readouts cut the surface's warning to their rows: said whole here
+            Ok(()) => match self.surface_warnings().into_iter().next() {
+                Some(w) => self.warn(w),
+                None => self.info(format!("surface {name}: {said}")),
+            },
             Err(why) => self.error(format!("surface {name}: {why}")),
         }
+    }
+
+    /// The surface the oblique view's ball bounces on, as the library names it and warns of
+    /// it ([`crate::tui::surface::used`]): the impact view's with the view's μ, K_t and c_t
+    /// given as its `y` line gives them (μ always, K_t where set, c_t where not the
+    /// surface's own).
+    pub fn oblique_surface_used(&self) -> SurfaceUsed {
+        let own_c_t = (self.setting.surface.as_ref()).and_then(|s| s.mechanics.tangential_damping);
+        let c_t = self.setting.tangential_damping;
+        let o = &self.oblique.values;
+        let given = [
+            Some(o.friction),
+            o.tangential_stiffness,
+            (c_t != own_c_t).then_some(c_t.unwrap_or(0.0)),
+        ];
+        crate::tui::surface::used(&self.setting, Some(given))
+    }
+
+    /// The library's warnings of the surface under the answer on screen, as the command line
+    /// prints them ([`SurfaceUsed::warnings`]: its rigidity assumed): the impact's (`run`) in
+    /// the views whose readout shows it, the oblique impact's (`oblique`) and, where the view
+    /// rates the court (tennis), the rating's (`court`, [`SurfaceUsed::court_warnings`]);
+    /// none in the drop and flight views (not yet checked there).
+    pub fn surface_warnings(&self) -> Vec<String> {
+        match self.view {
+            View::Impact | View::Sweeps | View::Models | View::Map => {
+                crate::tui::surface::used(&self.setting, None).warnings()
+            }
+            View::Oblique => {
+                let [mut answer, court] = self.oblique_surface_warnings();
+                answer.extend(court);
+                answer
+            }
+            View::Drop | View::Flight => Vec::new(),
+        }
+    }
+
+    /// The oblique view's surface warnings: the impact's (`oblique`), and the court rating's
+    /// (`court`) where the view rates the court (tennis), each the library's.
+    pub fn oblique_surface_warnings(&self) -> [Vec<String>; 2] {
+        let s = self.oblique_surface_used();
+        let rated = matches!(self.oblique.pace, Some(Ok(_)));
+        [
+            s.warnings(),
+            if rated {
+                s.court_warnings()
+            } else {
+                Vec::new()
+            },
+        ]
     }
 
     /// The explorer started on `surface` (`--surface NAME`): nothing to lose yet.

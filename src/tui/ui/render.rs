@@ -148,6 +148,7 @@ fn render_oblique(app: &App, body: Rect, theme: Theme, buf: &mut Buffer) {
     };
     let surface = app.oblique_surface_line();
     let calibration = app.calibration();
+    let surface_warnings = app.oblique_surface_warnings();
     crate::tui::views::oblique::widget::ObliquePanel {
         view: app.oblique_view(),
         time: time.as_ref(),
@@ -159,6 +160,7 @@ fn render_oblique(app: &App, body: Rect, theme: Theme, buf: &mut Buffer) {
         ],
         surface: (&surface.0, surface.1),
         calibration: calibration.as_deref(),
+        surface_warnings: &surface_warnings,
         theme,
     }
     .render(body, buf);

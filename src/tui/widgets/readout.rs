@@ -27,6 +27,11 @@ pub const PANEL_HEIGHT: u16 = 22;
 pub const COMPACT_HEIGHT: u16 = 6;
 /// Most rows of the calibration warning in the tall panel (tests/tui/tui_calibration.rs).
 const CALIBRATION_ROWS: usize = 4;
+/// Most rows of the line of the measured values where the library says why they are not
+/// compared (tests/tui/tui_surface_said.rs).
+const MEASURED_ROWS: usize = 3;
+/// Most rows of the surface's warnings in the tall panel (tests/tui/tui_surface_said.rs).
+const SURFACE_ROWS: usize = 3;
 /// Rows of the energy budget in the tall panel, shown only when they fit.
 const ENERGY_ROWS: usize = 3;
 
@@ -49,6 +54,11 @@ pub struct Readout<'a> {
     /// (`App::calibration`): whole in the tall panel, one line cut at a word in the short
     /// forms, whose full text the message line gives (issue 52 item 2).
     pub calibration: Option<String>,
+    /// The library's warnings of the surface the ball meets (`App::surface_warnings`: its
+    /// rigidity assumed), as `bouncelab run --surface NAME` prints them: at most
+    /// [`SURFACE_ROWS`] rows under the surface's line in the tall panel, a line cut at a word
+    /// in the short forms; the message line says them whole when the surface is picked.
+    pub surface_warnings: Vec<String>,
     /// The pinned runs, oldest first: the pin table compares them with this run.
     pub pins: &'a [PinView<'a>],
     /// The tall panel beside the charts, or four compact lines below them.

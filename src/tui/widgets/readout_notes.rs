@@ -2,25 +2,35 @@
 //! warnings, what the ball meets, the conditions and where the measurements were taken; and
 //! the energy budget.
 
-use super::{CALIBRATION_ROWS, Readout, measured_here};
+use super::{CALIBRATION_ROWS, MEASURED_ROWS, Readout, SURFACE_ROWS, measured_here};
 use crate::preset::Preset;
 use crate::solver::EnergyBudget;
 use crate::tui::format::value;
 use crate::tui::setting::Setting;
-use crate::tui::widgets::warning::warning_lines;
+use crate::tui::widgets::warning::{cut_lines, warning_lines};
 use ratatui::text::{Line, Span};
 
-/// Why the preset's measured values are not compared, if they are not: taken at another
-/// speed, or against a wall while the run is a pair's (a pair's COR is no wall's
-/// measurement: issue 51 item 5).
-fn not_compared(preset: &Preset, setting: &Setting) -> Option<&'static str> {
+/// Why the preset's measured values are not compared, if they are not: against a wall while
+/// the run is a pair's (a pair's COR is no wall's measurement: issue 51 item 5), at the
+/// conditions the form set (the library's reason, `run`'s `comparison_withheld`:
+/// [`crate::Ball::measurement_withheld`]), or taken at another speed (the line's v0).
+fn not_compared(preset: &Preset, setting: &Setting) -> Option<String> {
     if setting.target != crate::target::Target::wall() {
-        Some(": a wall's, not compared with the pair")
-    } else if !measured_here(preset, setting) {
-        Some(": not compared")
-    } else {
-        None
+        return Some(": a wall's, not compared with the pair".into());
     }
+    if !setting.conditions.is_empty() {
+        // the ball at the conditions, without the λ, ζ, K_p … typed: the explorer compares a
+        // ball the user tuned (its difference column is how one tunes it), so only the
+        // conditions withhold the measurement here, in the library's words for them
+        let ball = crate::Ball {
+            overrides: Vec::new(),
+            ..crate::tui::physical::conditions::library_ball(preset, setting)
+        };
+        if let Some(why) = ball.measurement_withheld() {
+            return Some(format!(": not compared: {why}"));
+        }
+    }
+    (!measured_here(preset, setting)).then(|| ": not compared".into())
 }
 
 impl Readout<'_> {
@@ -46,6 +56,10 @@ impl Readout<'_> {
             lines.push(Line::styled(note, theme.dim()));
         }
         lines.extend(self.target_note());
+        // the surface's, as `run --surface NAME` prints them (its rigidity assumed)
+        for w in &self.surface_warnings {
+            lines.extend(warning_lines(w, inner_w, SURFACE_ROWS, theme));
+        }
         // the pressure and temperature the form set (issue 56)
         if let Some(c) = crate::tui::physical::conditions::stated(self.preset, self.setting) {
             lines.push(Line::styled(c, theme.dim()));
@@ -54,12 +68,15 @@ impl Readout<'_> {
         // only the speed it runs at: claim no measurement then
         let m = &self.preset.measured;
         if m.cor.is_some() || m.max_force.is_some() || m.contact_time.is_some() {
-            let elsewhere = not_compared(self.preset, self.setting).unwrap_or("");
-            lines.push(Line::styled(
-                // v0 as the parameters above write it (3.120, not 3.12: one number format)
-                format!(" measured at v0 = {} m/s{elsewhere}", value(m.v0)),
-                theme.dim(),
-            ));
+            let elsewhere = not_compared(self.preset, self.setting).unwrap_or_default();
+            // v0 as the parameters above write it (3.120, not 3.12: one number format)
+            let text = format!("measured at v0 = {} m/s{elsewhere}", value(m.v0));
+            if elsewhere.starts_with(": not compared: ") {
+                // the library's reason, cut at a word where it does not fit
+                lines.extend(cut_lines(&text, inner_w, MEASURED_ROWS, theme.dim()));
+            } else {
+                lines.push(Line::styled(format!(" {text}"), theme.dim()));
+            }
         }
         lines
     }
@@ -79,9 +96,12 @@ impl Readout<'_> {
         let mut lines = Vec::new();
         let on_it = t == s.mechanics.target();
         if picked || on_it {
-            let own = crate::tui::surface::numbers(&s.mechanics);
+            // named by the library's rule: `clay-modified` once the form moved K_s, c_s or M
+            // off clay's own, with the numbers it runs on, as `y`'s line names it
+            let used = crate::tui::surface::used(self.setting, None);
+            let own = crate::tui::surface::numbers(&used.mechanics);
             lines.push(Line::styled(
-                format!(" surface {}: {own}", s.name),
+                format!(" surface {}: {own}", used.name),
                 self.theme.dim(),
             ));
         }

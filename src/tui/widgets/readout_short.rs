@@ -54,6 +54,7 @@ impl Readout<'_> {
         // the calibration warning before the results: below them the pane's height cuts it at
         // 80 × 24 (tests/tui/tui_calibration.rs)
         lines.extend(self.calibration_line(inner_w));
+        lines.extend(self.surface_line(inner_w));
         let rows = results(self.preset, self.run, s);
         if rows.len() < 5 {
             lines.push(Line::styled(" no result", self.theme.error()));
@@ -84,6 +85,13 @@ impl Readout<'_> {
     /// message line gives it whole), if v0 lies outside the ball's record.
     fn calibration_line(&self, width: usize) -> Option<Line<'static>> {
         let w = self.calibration.as_ref()?;
+        crate::tui::widgets::warning::warning_lines(w, width, 1, &self.theme).pop()
+    }
+
+    /// The surface's warning (its rigidity assumed) on one line of `width` columns, cut at a
+    /// word with "…" (the message line gives it whole when the surface is picked).
+    fn surface_line(&self, width: usize) -> Option<Line<'static>> {
+        let w = self.surface_warnings.first()?;
         crate::tui::widgets::warning::warning_lines(w, width, 1, &self.theme).pop()
     }
 
@@ -122,6 +130,7 @@ impl Readout<'_> {
         }
         lines.extend(self.validity_line());
         lines.extend(self.calibration_line(inner_w));
+        lines.extend(self.surface_line(inner_w));
         lines.extend(pins::compact(self.pins, &self.now()));
         lines
     }

@@ -3,11 +3,18 @@
 
 use crate::tui::format::{clip, wrap};
 use crate::tui::theme::Theme;
+use ratatui::style::Style;
 use ratatui::text::Line;
 
 /// `text` wrapped at spaces to `width` columns (each line indented one), in at most `rows`
 /// lines: the last one cut at a word with "…" ([`clip`]) when it does not all fit.
 pub fn warning_lines(text: &str, width: usize, rows: usize, theme: &Theme) -> Vec<Line<'static>> {
+    cut_lines(text, width, rows, theme.warning())
+}
+
+/// [`warning_lines`] in `style`: a long note (why the measured values are not compared) in
+/// the readout's few rows.
+pub fn cut_lines(text: &str, width: usize, rows: usize, style: Style) -> Vec<Line<'static>> {
     let width = width.saturating_sub(1);
     let mut lines = wrap(text, width);
     if rows > 0 && lines.len() > rows {
@@ -17,7 +24,7 @@ pub fn warning_lines(text: &str, width: usize, rows: usize, theme: &Theme) -> Ve
     lines.truncate(rows);
     lines
         .into_iter()
-        .map(|l| Line::styled(format!(" {l}"), theme.warning()))
+        .map(|l| Line::styled(format!(" {l}"), style))
         .collect()
 }
 

@@ -48,8 +48,9 @@ impl App {
     }
 
     /// The oblique readout's line of the surface: " surface clay: K_s 4e5 N/m, c_s 20 kg/s"
-    /// (its name when picked, the steel plate's when none was and the form left the wall as
-    /// it is, else "typed"; the numbers the impact runs on, c_t with them), and whether it is
+    /// (its name by the library's rule, `App::oblique_surface_used`: the one picked, the steel
+    /// plate's when none was, `clay-modified` or `given-surface` once the form or the view
+    /// moved a number off it; the numbers the impact runs on, c_t with them), and whether it is
     /// the default plate's (said last: a short readout loses it first).
     pub fn oblique_surface_line(&self) -> (String, bool) {
         let s = &self.setting;
@@ -63,13 +64,10 @@ impl App {
             tangential_stiffness: None,
             tangential_damping: s.tangential_damping,
         };
-        // none picked: the rigid steel plate by its name while the form left it as it is
-        // (issue 53 item 6: every answer names its surface)
-        let name = match &s.surface {
-            Some(x) => x.name.clone(),
-            None if plain => crate::target::surface::DEFAULT.into(),
-            None => "typed".into(),
-        };
+        // by the library's rule (issue 53 item 6: every answer names its surface): the one
+        // picked, the rigid steel plate when none was, renamed once a number given over it
+        // differs (`clay-modified`, `given-surface`), as `y`'s `oblique` line names it
+        let name = self.oblique_surface_used().name;
         let line = format!(" surface {name}: {}", crate::tui::surface::numbers(&shown));
         (line, plain && s.surface.is_none())
     }

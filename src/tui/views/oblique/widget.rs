@@ -39,6 +39,11 @@ pub struct ObliquePanel<'a> {
     /// The library's "outside calibration: …" warning when the impact's normal speed lies
     /// outside the ball's record (`App::calibration`, issue 52 item 2).
     pub calibration: Option<&'a str>,
+    /// The library's warnings of the surface (its rigidity assumed): the impact's, as
+    /// `bouncelab oblique` prints them, and the court rating's, as `bouncelab court` does
+    /// (`App::oblique_surface_warnings`): each cut to the rows left, under the calibration
+    /// warning and under the court pace.
+    pub surface_warnings: &'a [Vec<String>; 2],
     /// The time charts as drawn (`charts::time_figures` with their normalize, zoom and
     /// crosshair: src/tui/app/charts.rs), once the impact is computed.
     pub time: Option<&'a [Figure; 3]>,
@@ -126,8 +131,26 @@ impl ObliquePanel<'_> {
         let inner = Block::bordered().inner(area);
         let last = usize::from(default);
         let room = usize::from(inner.height).saturating_sub(lines.len() + pace.len() + last);
-        lines.extend(self.calibration_lines(usize::from(inner.width), room));
+        let [answer, court] = self.surface_warnings;
+        // the rows left shared among the warnings, one each at least, the first ones taking
+        // what does not divide: the calibration's, the impact's surface's, the rating's
+        let texts: Vec<&str> = (self.calibration.into_iter())
+            .chain(answer.iter().chain(court).map(String::as_str))
+            .collect();
+        let mut warned = texts.iter().enumerate().map(|(i, w)| {
+            let rows = room / texts.len() + usize::from(i < room % texts.len());
+            let theme = &self.theme;
+            crate::tui::widgets::warning::warning_lines(
+                w,
+                usize::from(inner.width),
+                rows.max(1),
+                theme,
+            )
+        });
+        let before = usize::from(self.calibration.is_some()) + answer.len();
+        lines.extend(warned.by_ref().take(before).flatten());
         lines.extend(pace);
+        lines.extend(warned.flatten());
         if default {
             lines.push(surface);
         }
@@ -135,15 +158,6 @@ impl ObliquePanel<'_> {
             .wrap(Wrap { trim: true })
             .block(Block::bordered())
             .render(area, buf);
-    }
-
-    /// The calibration warning in the `rows` left (one at least), its last line cut at a word
-    /// with "…" when it does not all fit: the message line says it whole.
-    fn calibration_lines(self, width: usize, rows: usize) -> Vec<Line<'static>> {
-        let Some(w) = self.calibration else {
-            return Vec::new();
-        };
-        crate::tui::widgets::warning::warning_lines(w, width, rows.max(1), &self.theme)
     }
 
     /// θ, ω and μ a line each, K_t and κ on one (the ball's Mindlin K_t and preset κ until
