@@ -191,3 +191,40 @@ fn the_default_serve_clears_the_net_and_the_readout_says_by_how_much() {
     let text = screen_text(&draw(&app, 120, 40)).join("\n");
     assert!(text.contains("net 11.89 m: 0.0296 m too low"), "{text}");
 }
+
+/// The defect: the serve's bounce meets the court at 9.25 m/s across it, outside the tennis
+/// ball's record (fitted at 6.906 m/s), and `bouncelab shot` warns of it; the flight view said
+/// nothing. Its readout now gives the shot's warnings, the command line's own (its `y` line's
+/// JSON), at every size, cut at a word where the rows are few. Fails on the old code.
+#[test]
+fn the_readout_gives_the_shots_warnings_as_the_command_line() {
+    let app = serve();
+    let mut args = words(&app.command_line());
+    args.extend(["--format".into(), "json".into()]);
+    let args: Vec<&str> = args.iter().map(String::as_str).collect();
+    let out = common::bl(&args);
+    assert_eq!(out.code, 0, "{}", out.stderr);
+    let j: Value = serde_json::from_str(&out.stdout).unwrap();
+    let said: Vec<&str> = j["bounces"][0]["warnings"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|w| w.as_str().unwrap())
+        .collect();
+    assert!(
+        said.iter()
+            .any(|w| w.starts_with("outside calibration: impact speed 9.248 m/s")),
+        "{said:?}"
+    );
+    let r = app.flight_view().report().unwrap();
+    assert_eq!(r.warnings(), said);
+    for (w, h) in SIZES {
+        let text = screen_text(&draw(&app, w, h)).join("\n");
+        assert!(text.contains("outside calibration:"), "{w}×{h}\n{text}");
+    }
+    // the wide readout has the rows to say where the speed lies, the narrow one its border
+    for (w, h) in [(80, 24), (120, 40)] {
+        let text = screen_text(&draw(&app, w, h)).join("\n");
+        assert!(text.contains("9.248 m/s"), "{w}×{h}\n{text}");
+    }
+}

@@ -1,7 +1,8 @@
 //! The flight view (`h`, src/tui/views/flight/state.rs): the shot's path — the height of the
 //! ball's centre against x, the bounce marked, the surface — in braille by the explorer's
 //! one plot widget (so its ticks are the other charts', each label at its value's place:
-//! tests/tui/tui_ticks.rs), and a readout with the launch, the landing, the bounce and the end.
+//! tests/tui/tui_ticks.rs), and a readout with the launch, the landing, the bounce, the end
+//! and the shot's warnings.
 //! Reads the state only.
 
 use crate::figure::{Look, Marker as Glyph, Role, Tone};
@@ -12,6 +13,7 @@ use crate::tui::views::flight::export::{net_words, path_figure};
 use crate::tui::views::flight::param::FlightParam;
 use crate::tui::views::flight::state::FlightView;
 use crate::tui::widgets::plot::Plot;
+use crate::tui::widgets::warning::warning_lines;
 use crate::tui::widgets::{fitted, readout_column, readout_columns};
 use ratatui::buffer::Buffer;
 use ratatui::layout::{Constraint, Rect};
@@ -20,6 +22,10 @@ use ratatui::widgets::{Block, Paragraph, Widget, Wrap};
 
 /// Width of the readout on wide screens.
 const READOUT_WIDTH: u16 = 40;
+
+/// Rows each of the shot's warnings may take in the wide readout (a calibration warning
+/// names its sources in some 250 characters; cut at a word with "…" past them).
+const WARNING_ROWS: usize = 4;
 
 /// The flight view in its area (between the header and the status line).
 #[derive(Debug, Clone, Copy)]
@@ -42,6 +48,9 @@ impl Widget for FlightPanel<'_> {
             let mut lines = self.launch_lines();
             lines.push(Line::raw(""));
             lines.extend(self.shot_lines());
+            // the border's two columns off the readout's width
+            let width = usize::from(readout.width.saturating_sub(2));
+            lines.extend(self.warning_lines(width, WARNING_ROWS));
             lines.push(Line::raw(""));
             lines.push(Line::styled(
                 "←→ select · ↑↓ step (Shift coarse) · a/w/k · y line · e export · h back",
@@ -125,12 +134,45 @@ impl FlightPanel<'_> {
             [Constraint::Length(32), Constraint::Fill(1)],
         );
         fitted(launch, left, buf);
-        let shot = if rows_of(self.shot_lines(), right.width) <= rows {
+        let mut shot = if rows_of(self.shot_lines(), right.width) <= rows {
             self.shot_lines()
         } else {
             self.shot_lines_short()
         };
         fitted(shot, right, buf);
+        self.render_strip_warning(area, buf);
+    }
+
+    /// The narrow readout's rows hold the numbers: the shot's first warning goes on its
+    /// bottom border, cut at a word ("…"; the wide readout gives each whole in its rows).
+    fn render_strip_warning(&self, area: Rect, buf: &mut Buffer) {
+        let Some(first) = self
+            .view
+            .report()
+            .and_then(|r| r.warnings().first().copied())
+        else {
+            return;
+        };
+        if area.height < 2 || area.width < 6 {
+            return;
+        }
+        let width = usize::from(area.width - 4);
+        let text = format!(" {} ", crate::tui::format::clip(first, width - 2));
+        let line = Line::styled(text, self.theme.warning());
+        buf.set_line(area.x + 1, area.bottom() - 1, &line, area.width - 2);
+    }
+
+    /// The shot's warnings, as `bouncelab shot` says them once each
+    /// ([`crate::api::ShotReport::warnings`]: a bounce outside the ball's record, the net's),
+    /// each in at most `rows` rows of `width` columns, cut at a word.
+    fn warning_lines(&self, width: usize, rows: usize) -> Vec<Line<'static>> {
+        let Some(r) = self.view.report() else {
+            return Vec::new();
+        };
+        r.warnings()
+            .into_iter()
+            .flat_map(|w| warning_lines(w, width, rows, &self.theme))
+            .collect()
     }
 
     /// The ball and the launch, the selected value marked, then the net's verdict.
