@@ -134,7 +134,7 @@ impl FlightPanel<'_> {
             [Constraint::Length(32), Constraint::Fill(1)],
         );
         fitted(launch, left, buf);
-        let mut shot = if rows_of(self.shot_lines(), right.width) <= rows {
+        let shot = if rows_of(self.shot_lines(), right.width) <= rows {
             self.shot_lines()
         } else {
             self.shot_lines_short()
