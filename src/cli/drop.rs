@@ -247,9 +247,6 @@ fn dropped(a: &DropArgs) -> anyhow::Result<Dropped> {
     })
 }
 
-/// The outputs of an impact a drop's bounces report (its rebound heights are its CORs).
-const DROP_OUTPUTS: [Output; 3] = [Output::Cor, Output::MaxForce, Output::ContactTime];
-
 pub fn run(a: &DropArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     let d = dropped(a)?;
     match a.format {
@@ -273,7 +270,7 @@ fn json(out: &mut dyn Write, d: Dropped) -> anyhow::Result<()> {
     }
     r.warnings = d.warnings;
     r.ball = Some(d.ball.record_json());
-    r.uncalibrated_outputs = d.ball.uncalibrated_outputs(&DROP_OUTPUTS);
+    r.uncalibrated_outputs = d.ball.uncalibrated_outputs(&Output::DROP);
     r.surface = Some(d.surface);
     r.pressure_loss = d.leak_verdict;
     output::json_stated(out, &r, &d.ball.conditions)?;
@@ -286,7 +283,7 @@ fn text(out: &mut dyn Write, d: &Dropped) -> anyhow::Result<()> {
     // the ball, its overrides, the surface, the conditions
     let label = output::headed(d.ball.label(), &d.ball, output::Met::Surface(&d.surface));
     let standard = d.asked.impact;
-    let note = d.ball.uncalibrated_note(&DROP_OUTPUTS);
+    let note = d.ball.uncalibrated_note(&Output::DROP);
     drop_text::text(out, &label, &d.run, standard.zip(d.verdict), d.radius, note)?;
     if let (Some(t), Some(v)) = (d.asked.leak, &d.leak_verdict) {
         super::drop_leak::text(out, t, v)?;

@@ -45,6 +45,9 @@ impl Output {
         Output::PermanentIndentation,
     ];
 
+    /// The outputs of a drop's bounces, as `drop` reports them (a rebound height is a COR).
+    pub const DROP: [Output; 3] = [Output::Cor, Output::MaxForce, Output::ContactTime];
+
     /// The JSON key ("max_force").
     pub fn key(self) -> &'static str {
         match self {
