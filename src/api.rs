@@ -117,6 +117,7 @@ mod surface;
 mod surface_used;
 mod surface_warnings;
 mod sweep;
+mod vouched;
 mod warnings;
 pub use batch::{BallOutcome, BatchSetup, quantity as batch_quantity};
 pub use batch_failure::FitFailure;

@@ -9,11 +9,13 @@ use serde::{Deserialize, Serialize};
 
 mod calibration;
 mod fit_table;
+mod outputs;
 mod text;
 mod usable;
 
 pub use calibration::{Calibration, CalibrationData, SPEED_SLACK, TemperatureShift};
 pub use fit_table::FitTable;
+pub use outputs::{Output, words as output_words};
 
 /// The three balls of the paper, embedded in the binary, first; then the balls of the drop
 /// tests (docs/drop.md, "The new balls").

@@ -157,6 +157,10 @@ class Impact:
         """Why the answer is not compared with ``measured`` (an override or a condition
         changed the ball, or it ran on another surface than the measurement's), else None."""
     @property
+    def uncalibrated_outputs(self) -> Optional[list[str]]:
+        """The outputs the ball's record does not vouch for, by their keys (``max_force``,
+        ``contact_time``, …): the model's alone; None when the record makes no claim."""
+    @property
     def conditions(self) -> Conditions:
         """The conditions it ran at, as the JSON's ``conditions``."""
     @property
@@ -287,8 +291,9 @@ def sweep_velocity(
     **ball: Unpack[BallArguments],
 ) -> dict[str, Any]:
     """COR, F_m, t_f, z_f against v0 (columns of ``bouncelab sweep velocity``), and the JSON's
-    ``max_indentation`` (an array) and ``warnings`` (a list of lists of str, one a speed: a
-    peak indentation past the ball's radius)."""
+    ``max_indentation`` (an array), ``warnings`` (a list of lists of str, one a speed: a
+    peak indentation past the ball's radius) and ``uncalibrated_outputs`` (the outputs the
+    ball's record does not vouch for, None when it makes no claim)."""
 
 def fit(
     cor: float,
@@ -533,6 +538,7 @@ class _DropKeys(TypedDict):
     drag: bool
     bounces: dict[str, Array]
     warnings: list[str]
+    uncalibrated_outputs: Optional[list[str]]
     surface: SurfaceObject
     ball: BallRecord
     conditions: Conditions

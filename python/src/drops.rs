@@ -159,6 +159,9 @@ fn drop_of<'py>(
     warnings.extend(ball.drop_air_warning(run.setup.air));
     warnings.extend(off_conditions);
     d.set_item("warnings", warnings)?;
+    // the bounces' outputs its record does not vouch for, as the JSON's
+    let not = ball.uncalibrated_outputs(&bouncelab::preset::Output::DROP);
+    d.set_item("uncalibrated_outputs", crate::impact::keys(not.as_deref()))?;
     d.set_item("surface", crate::surface::to_dict(py, &surface)?)?;
     if let Some((_, v)) = &leak {
         d.set_item("pressure_loss", crate::answer::json(py, v)?)?;

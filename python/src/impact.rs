@@ -100,6 +100,9 @@ pub(crate) struct Impact {
     named: (crate::answer::Record, crate::answer::Stated),
     /// Why the answer is not compared with `measured` (the JSON's `comparison_withheld`).
     withheld: Option<String>,
+    /// The outputs its ball's record does not vouch for, by their keys (the JSON's
+    /// `uncalibrated_outputs`; `None`: the record makes no claim).
+    uncalibrated: Option<Vec<String>>,
 }
 
 /// What `bouncelab run` reports from the exact solver's run with its energy audit: the
@@ -130,6 +133,12 @@ impl Audit {
             warnings: rep.warnings.clone(),
         }
     }
+}
+
+/// Outputs by their JSON keys (`Ball::uncalibrated_outputs`'s, for the dicts of `run`,
+/// `sweep_velocity` and `drop`).
+pub(crate) fn keys(outputs: Option<&[bouncelab::preset::Output]>) -> Option<Vec<String>> {
+    outputs.map(|o| o.iter().map(|o| o.key().to_string()).collect())
 }
 
 const MEASURED_KEYS: [&str; 4] = ["v0", "cor", "max_force", "contact_time"];
@@ -203,6 +212,7 @@ impl Impact {
                 crate::answer::Stated::of(ball),
             ),
             withheld: rep.comparison_withheld.clone(),
+            uncalibrated: keys(rep.uncalibrated_outputs.as_deref()),
         }
     }
 

@@ -89,6 +89,14 @@ impl Impact {
         self.withheld.clone()
     }
 
+    /// The outputs the ball's record does not vouch for, by their keys (the JSON's
+    /// `uncalibrated_outputs`): the model's alone; None when the record makes no claim
+    /// (docs/presets.md, "The calibration record").
+    #[getter]
+    fn uncalibrated_outputs(&self) -> Option<Vec<String>> {
+        self.uncalibrated.clone()
+    }
+
     /// The conditions it ran at: temperature_c, pressure_gauge_pa (None for a solid ball),
     /// atmosphere_pa.
     #[getter]
@@ -157,6 +165,7 @@ impl Impact {
         d.set_item("measured", self.measured(py)?)?;
         d.set_item("energy", self.energy(py)?)?;
         d.set_item("warnings", self.warnings(py)?)?;
+        d.set_item("uncalibrated_outputs", &self.uncalibrated)?;
         if self.intervals.is_some() {
             d.set_item("cor_ci95", self.cor_ci95())?;
             d.set_item("max_force_ci95", self.max_force_ci95())?;

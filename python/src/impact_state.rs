@@ -89,6 +89,7 @@ pub(super) fn from_state(d: &Bound<'_, PyDict>) -> PyResult<Impact> {
         surface: crate::same::state_surface(d)?,
         named: (get(d, "ball")?, get(d, "conditions")?),
         withheld: get(d, "comparison_withheld")?,
+        uncalibrated: get(d, "uncalibrated_outputs")?,
     })
 }
 
@@ -160,6 +161,7 @@ pub(super) fn same(a: &Impact, a_audit: &Audit, b: &Impact, b_audit: &Audit) -> 
             i.surface.clone(),
             i.named.clone(),
             i.withheld.clone(),
+            i.uncalibrated.clone(),
         )
     };
     let bands = |i: &Impact| {

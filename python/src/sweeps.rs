@@ -62,7 +62,8 @@ ball_pyfunction! {
     /// COR, peak force, contact time and permanent indentation against impact speed for a preset,
     /// as `bouncelab sweep velocity`: a dict of numpy arrays with the CSV's columns (v0, cor,
     /// max_force, contact_time, permanent_indentation; NaN contact_time where the ball does not
-    /// rebound), and the JSON's `max_indentation` and `warnings` (a list of lists, one a row).
+    /// rebound), and the JSON's `max_indentation`, `warnings` (a list of lists, one a row) and
+    /// `uncalibrated_outputs` (the outputs the ball's record does not vouch for).
     /// The GIL is released while the speeds run (in parallel).
     signature = (preset="superball", speeds=None, law=None, params=None, *,);
     fn sweep_velocity<'py>(
@@ -127,6 +128,9 @@ ball_pyfunction! {
                 .map_err(error)?;
             interval_columns(py, &d, ["cor", "max_force", "contact_time"], &bands)?;
         }
+        // the outputs its record does not vouch for, as the JSON's
+        let not = ball.uncalibrated_outputs(&bouncelab::preset::Output::IMPACT);
+        d.set_item("uncalibrated_outputs", crate::impact::keys(not.as_deref()))?;
         // the ball swept and its conditions, as the JSON's `ball` and `conditions`
         crate::answer::stated(&d, &ball)?;
         d.set_item("surface", crate::surface::rigid_plate(py)?)?;

@@ -152,12 +152,16 @@ def test_sweep_velocity_matches_the_stored_json():
         "permanent_indentation",
         "max_indentation",
         "warnings",
+        "uncalibrated_outputs",
         "ball",
         "conditions",
         "surface",
     ]
     doc = json.loads(out)
-    named = ("ball", "conditions", "surface")
+    # the outputs golf's record does not vouch for: the JSON's, once for the whole sweep
+    assert d["uncalibrated_outputs"] == doc["uncalibrated_outputs"] == [
+        "max_indentation", "permanent_indentation"]
+    named = ("uncalibrated_outputs", "ball", "conditions", "surface")
     same({k: d[k] for k in named}, {k: doc[k] for k in named})
     columns = [k for k in d if k not in named]
     same({k: list(d[k]) for k in columns}, {k: [r[k] for r in rows] for k in columns})
@@ -264,9 +268,10 @@ def test_sweep_velocity_defaults_are_the_clis():
     rows = [r[:w] for r in table[1:]]
     expected = np.array([[float(x) if x else math.nan for x in r] for r in rows])
     d = bouncelab.sweep_velocity("baseball")
-    # the CSV's numeric columns, then the JSON's max_indentation, warnings, ball, conditions,
-    # surface
-    assert list(d) == columns + ["max_indentation", "warnings", "ball", "conditions", "surface"]
+    # the CSV's numeric columns, then the JSON's max_indentation, warnings,
+    # uncalibrated_outputs, ball, conditions, surface
+    assert list(d) == columns + ["max_indentation", "warnings", "uncalibrated_outputs", "ball",
+                                 "conditions", "surface"]
     assert [cli_binary.reach(w) for w in d["warnings"]] == [[] for _ in rows]
     got = np.column_stack([d[c] for c in columns])
     np.testing.assert_allclose(got, expected, rtol=1e-12, atol=0)

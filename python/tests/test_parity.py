@@ -112,11 +112,26 @@ def test_sweep_velocity_names_the_ball_as_the_command_line():
     expected = cli_json("sweep", "velocity", "--preset", "football", "--pressure", "0.75bar",
                         "--points", "3", "--from", "2", "--to", "8", "--format", "json")
     s = bouncelab.sweep_velocity("football", speeds=[2.0, 5.0, 8.0], pressure="0.75bar")
-    same({k: s[k] for k in ("ball", "surface", "conditions")},
-         {k: expected[k] for k in ("ball", "surface", "conditions")})
+    named = ("ball", "surface", "conditions", "uncalibrated_outputs")
+    same({k: s[k] for k in named}, {k: expected[k] for k in named})
     rows = columns_of(expected["rows"], ["v0", "cor", "warnings"])
     np.testing.assert_allclose(s["cor"], rows["cor"], rtol=1e-12)
     assert s["warnings"] == rows["warnings"]
+
+
+def test_the_outputs_a_record_does_not_vouch_for_are_the_command_lines():
+    # the tennis ball's record holds a rebound and a static deflection: its peak force and
+    # contact time are the model's (docs/presets.md, "The calibration record")
+    expected = cli_json("drop", "--preset", "tennis", "--standard", "itf", "--bounces", "2",
+                        "--format", "json")
+    d = bouncelab.drop("tennis", standard="itf", bounces=2)
+    assert d["uncalibrated_outputs"] == expected["uncalibrated_outputs"] == [
+        "max_force", "contact_time"]
+    r = bouncelab.run("tennis")
+    assert r.uncalibrated_outputs == r.to_dict()["uncalibrated_outputs"] == [
+        "max_force", "contact_time", "max_indentation", "permanent_indentation"]
+    assert bouncelab.run("baseball").uncalibrated_outputs == [
+        "max_indentation", "permanent_indentation"]
 
 
 def test_shot_states_its_conditions_as_the_command_line():

@@ -107,6 +107,10 @@ pub struct ImpactReport<'a> {
     /// What the caller should know about this answer ([`Ball::warnings`]); empty when
     /// nothing.
     pub warnings: Vec<String>,
+    /// The outputs above its ball's record does not vouch for, by their keys
+    /// ([`Ball::uncalibrated_outputs`]): the model's alone. `None` (JSON `null`) when the ball
+    /// has no record or its record does not say what its data measured.
+    pub uncalibrated_outputs: Option<Vec<crate::preset::Output>>,
     /// `cor_ci95`, `max_force_ci95`, `contact_time_ci95`: on a fitted preset only
     /// ([`Ball::intervals`]; set by the caller, `None` from [`ImpactReport::new`]).
     #[serde(flatten, skip_serializing_if = "Option::is_none")]
@@ -176,6 +180,7 @@ impl<'a> ImpactReport<'a> {
             }),
             energy: None,
             warnings: Vec::new(),
+            uncalibrated_outputs: ball.uncalibrated_outputs(&crate::preset::Output::IMPACT),
             intervals: None,
             t: None,
             force: None,

@@ -16,6 +16,7 @@ use crate::drop::standards::{self, Standard, Verdict};
 use crate::drop::{
     Air, DEFAULT_BOUNCES, DEFAULT_MIN_REBOUND, DropBall, DropError, DropRun, DropSetup,
 };
+use crate::preset::Output;
 use clap::Args;
 use std::io::Write;
 
@@ -269,6 +270,7 @@ fn json(out: &mut dyn Write, d: Dropped) -> anyhow::Result<()> {
     }
     r.warnings = d.warnings;
     r.ball = Some(d.ball.record_json());
+    r.uncalibrated_outputs = d.ball.uncalibrated_outputs(&Output::DROP);
     r.surface = Some(d.surface);
     r.pressure_loss = d.leak_verdict;
     output::json_stated(out, &r, &d.ball.conditions)?;
@@ -281,7 +283,8 @@ fn text(out: &mut dyn Write, d: &Dropped) -> anyhow::Result<()> {
     // the ball, its overrides, the surface, the conditions
     let label = output::headed(d.ball.label(), &d.ball, output::Met::Surface(&d.surface));
     let standard = d.asked.impact;
-    drop_text::text(out, &label, &d.run, standard.zip(d.verdict), d.radius)?;
+    let note = d.ball.uncalibrated_note(&Output::DROP);
+    drop_text::text(out, &label, &d.run, standard.zip(d.verdict), d.radius, note)?;
     if let (Some(t), Some(v)) = (d.asked.leak, &d.leak_verdict) {
         super::drop_leak::text(out, t, v)?;
     }

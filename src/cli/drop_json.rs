@@ -75,6 +75,8 @@ pub(super) struct Report<'a> {
     pub(super) warnings: Vec<String>,
     /// The ball dropped (docs/cli.md, "The ball object").
     pub(super) ball: Option<crate::api::BallRecord>,
+    /// The bounces' outputs its record does not vouch for (`Ball::uncalibrated_outputs`).
+    pub(super) uncalibrated_outputs: Option<Vec<crate::preset::Output>>,
     /// The surface it bounced on (docs/surfaces.md).
     pub(super) surface: Option<super::surface::SurfaceUsed>,
     /// `--standard fifa-pressure-loss`'s verdict on the ball's leak.
@@ -113,6 +115,7 @@ pub(super) fn report<'a>(
         }),
         warnings: Vec::new(),
         ball: None,
+        uncalibrated_outputs: None,
         surface: None,
         pressure_loss: None,
     }

@@ -62,6 +62,7 @@ pub(super) fn text(
     run: &DropRun,
     judged: Option<(&Standard, Verdict)>,
     radius: f64,
+    note: Option<String>,
 ) -> std::io::Result<()> {
     writeln!(out, "{label}")?;
     writeln!(
@@ -98,6 +99,10 @@ pub(super) fn text(
         ]);
     }
     table(out, "  ", &rows)?;
+    // the columns the ball's record does not vouch for (`Ball::uncalibrated_note`)
+    if let Some(note) = note {
+        writeln!(out, "  ({note})")?;
+    }
     writeln!(out)?;
     let why = match run.end {
         End::Count => format!(

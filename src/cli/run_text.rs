@@ -180,6 +180,9 @@ fn write_comparison(
     } else if let Some(why) = b.measurement_withheld().filter(|_| b.measured.is_some()) {
         writeln!(out, "  (measured values not compared: {why})")?;
     }
+    if let Some(note) = b.uncalibrated_note(&crate::preset::Output::IMPACT) {
+        writeln!(out, "  ({note})")?;
+    }
     Ok(())
 }
 

@@ -205,6 +205,8 @@ struct VelocityDoc<'a, T> {
     /// The ball swept (docs/cli.md, "The ball object").
     #[serde(rename = "ball")]
     record: crate::api::BallRecord,
+    /// The rows' outputs its record does not vouch for (`Ball::uncalibrated_outputs`).
+    uncalibrated_outputs: Option<Vec<crate::preset::Output>>,
 }
 
 fn velocity(a: &VelocityArgs, out: &mut dyn Write) -> anyhow::Result<()> {
@@ -240,6 +242,7 @@ fn velocity(a: &VelocityArgs, out: &mut dyn Write) -> anyhow::Result<()> {
                     zeta: n.zeta,
                     rows: &rows,
                     record: b.record_json(),
+                    uncalibrated_outputs: b.uncalibrated_outputs(&crate::preset::Output::IMPACT),
                 },
                 output::Met::RigidPlate,
                 &b.conditions,

@@ -3,6 +3,7 @@
 //! hold. Every answer outside that range says so (`crate::api`, "outside calibration").
 
 use super::error::Bad;
+use super::outputs::Output;
 use crate::text::{number, short};
 use serde::{Deserialize, Serialize};
 use std::fmt::Write;
@@ -80,6 +81,12 @@ pub struct CalibrationData {
     /// test whose record does not give them: written only when known).
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub loads: Vec<f64>,
+    /// Which outputs of an answer the set measured, by their JSON keys (`cor`, `max_force`,
+    /// `contact_time`, `max_indentation`, `permanent_indentation`, `deflection_m`): what it
+    /// vouches for. `None` when the record does not say (a user preset written before the
+    /// field): it then makes no claim, and no answer names an output as not measured.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub outputs: Option<Vec<Output>>,
 }
 
 impl CalibrationData {
@@ -91,6 +98,18 @@ impl CalibrationData {
 }
 
 impl Calibration {
+    /// The outputs its data sets measured, each once, in [`Output::ALL`]'s order; `None` when
+    /// a set does not say which (the record then makes no claim about its outputs).
+    pub fn outputs(&self) -> Option<Vec<Output>> {
+        let mut all: Vec<Output> = Vec::new();
+        for d in &self.data {
+            all.extend(d.outputs.as_ref()?);
+        }
+        all.sort();
+        all.dedup();
+        Some(all)
+    }
+
     /// A record over the speeds `speeds` (at least one) of one data set.
     pub fn over(data: CalibrationData, speeds: &[f64]) -> Calibration {
         let min = speeds.iter().copied().fold(f64::INFINITY, f64::min);
@@ -180,6 +199,10 @@ impl Calibration {
             if !d.loads.is_empty() {
                 let _ = writeln!(out, "loads = {}  # kg", list(&d.loads));
             }
+            if let Some(o) = &d.outputs {
+                let keys: Vec<String> = o.iter().map(|o| string(o.key())).collect();
+                let _ = writeln!(out, "outputs = [{}]", keys.join(", "));
+            }
         }
     }
 }
@@ -262,6 +285,19 @@ pub(super) fn check(c: &Option<Calibration>) -> Result<(), Bad> {
         }
         for &l in &d.loads {
             positive(at, "loads", l)?;
+        }
+        check_outputs(at, d.outputs.as_deref().unwrap_or_default())?;
+    }
+    Ok(())
+}
+
+/// Each output named once (the names themselves are checked as the TOML is read: an unknown
+/// one is refused at its value, naming the choices).
+fn check_outputs(at: Option<usize>, outputs: &[Output]) -> Result<(), Bad> {
+    for (i, o) in outputs.iter().enumerate() {
+        if outputs[..i].contains(o) {
+            let msg = format!("names `{}` twice", o.key());
+            return Err(bad("calibration.data", at, "outputs", msg));
         }
     }
     Ok(())

@@ -12,7 +12,8 @@ fn json_holds_the_issues_keys_and_the_verdict() {
     // serde_json's map sorts its keys
     let keys: Vec<&String> = v.as_object().unwrap().keys().collect();
     // (issue 27 added `warnings`, the first impact's; issue 52 `ball`, the ball dropped;
-    // issue 53 `surface`, the floor it bounced on; issue 56 `conditions`, the ball's)
+    // issue 53 `surface`, the floor it bounced on; issue 56 `conditions`, the ball's;
+    // `uncalibrated_outputs`, what the ball's record does not vouch for)
     assert_eq!(
         keys,
         [
@@ -23,6 +24,7 @@ fn json_holds_the_issues_keys_and_the_verdict() {
             "height",
             "standard",
             "surface",
+            "uncalibrated_outputs",
             "warnings"
         ]
     );

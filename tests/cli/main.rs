@@ -22,6 +22,7 @@ mod answer_reach;
 mod answer_reach_map;
 mod answer_warnings;
 mod calibration;
+mod calibration_outputs;
 mod cli;
 mod cli_aerodynamics;
 mod cli_bad_input;

@@ -165,6 +165,7 @@ fn combined(data: &[Loaded], statics: Option<&(String, Vec<StaticRow>)>) -> Load
             },
             heights: d.drops.iter().map(|x| x.0).collect(),
             loads: vec![],
+            outputs: Some(super::save::measured_outputs(d)),
         })
         .collect();
     if let Some((file, rows)) = statics {
@@ -175,6 +176,7 @@ fn combined(data: &[Loaded], statics: Option<&(String, Vec<StaticRow>)>) -> Load
             speeds: vec![],
             heights: vec![],
             loads: rows.iter().map(|r| r.load_kg).collect(),
+            outputs: Some(vec![crate::preset::Output::Deflection]),
         });
     }
     Loaded {

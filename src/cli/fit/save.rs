@@ -9,7 +9,9 @@ use crate::api::Ball;
 use crate::atomic::Outputs;
 use crate::catalog::{self, Catalog, Origin};
 use crate::model::params::ImpactParams;
-use crate::preset::{Adopted, Calibration, CalibrationData, FitAir, Measured, ParamSource, Preset};
+use crate::preset::{
+    Adopted, Calibration, CalibrationData, FitAir, Measured, Output, ParamSource, Preset,
+};
 use std::path::{Path, PathBuf};
 
 fn dir() -> anyhow::Result<PathBuf> {
@@ -224,8 +226,28 @@ fn calibration(data: &Loaded, p: &ImpactParams, when: &str) -> Calibration {
         speeds: speeds.clone(),
         heights: data.drops.iter().map(|d| d.0).collect(),
         loads: Vec::new(),
+        outputs: Some(measured_outputs(data)),
     };
     Calibration::over(set, &speeds)
+}
+
+/// What one data set measured, by the answers' keys (docs/presets.md, "The calibration
+/// record"): a COR table, drops and a COR typed in the COR (a table's peak forces and contact
+/// times too, where its rows give them: the fit weighs them); a force–time trace its peak
+/// force and contact time. A trace's impulse gives the COR only through the impact speed and
+/// mass it is told, which the trace does not measure: no COR.
+pub(super) fn measured_outputs(data: &Loaded) -> Vec<Output> {
+    if data.trace.is_some() {
+        return vec![Output::MaxForce, Output::ContactTime];
+    }
+    let mut o = vec![Output::Cor];
+    if data.points.iter().any(|q| q.max_force.is_some()) {
+        o.push(Output::MaxForce);
+    }
+    if data.points.iter().any(|q| q.contact_time.is_some()) {
+        o.push(Output::ContactTime);
+    }
+    o
 }
 
 /// The record of a joint fit: every set it was fitted to, the range their impact speeds'

@@ -32,6 +32,8 @@ fn shifted(
         speeds: speeds.clone(),
         heights: Vec::new(),
         loads: Vec::new(),
+        // CORs at several temperatures: the COR
+        outputs: Some(vec![crate::preset::Output::Cor]),
     };
     let mut record = match &base.calibration {
         Some(c) => {
