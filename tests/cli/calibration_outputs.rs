@@ -161,19 +161,10 @@ fn every_embedded_record_says_what_its_data_measured() {
 fn fit_save_writes_what_its_data_measured() {
     let home = tempfile::tempdir().unwrap();
     let dir = home.path();
-    std::fs::write(
-        dir.join("cor.csv"),
-        "v0,cor\n3,0.7718277904952477\n7,0.7704544199525963\n11,0.7315715959855351\n",
-    )
-    .unwrap();
+    crate::cli_static::tennis_fit_files(dir);
     std::fs::write(
         dir.join("force.csv"),
         "v0,cor,max_force\n3,0.7718,140\n7,0.7705,320\n11,0.7316,500\n",
-    )
-    .unwrap();
-    std::fs::write(
-        dir.join("static.csv"),
-        "load_kg,deflection_m\n2,0.001587253930038238\n5,0.003968134825095595\n",
     )
     .unwrap();
     let saved = |args: &str, name: &str| {

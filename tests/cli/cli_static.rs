@@ -160,12 +160,10 @@ fn a_bad_static_load_is_named_with_file_line_and_column() {
     );
 }
 
-/// `fit --save` with static deflections records their loads (it said only "static
-/// deflection under 2 loads"), and the saved ball warns outside them.
-#[test]
-fn fit_save_records_the_static_loads() {
-    let home = tempfile::tempdir().unwrap();
-    let dir = home.path();
+/// A tennis ball's data in `dir` for `fit --save`: `cor.csv`, the model's own COR at three
+/// speeds, and `static.csv`, its static chain's deflections under two loads (also
+/// calibration_outputs.rs's).
+pub(crate) fn tennis_fit_files(dir: &std::path::Path) {
     std::fs::write(
         dir.join("cor.csv"),
         "v0,cor\n3,0.7718277904952477\n7,0.7704544199525963\n11,0.7315715959855351\n",
@@ -176,6 +174,15 @@ fn fit_save_records_the_static_loads() {
         "load_kg,deflection_m\n2,0.001587253930038238\n5,0.003968134825095595\n",
     )
     .unwrap();
+}
+
+/// `fit --save` with static deflections records their loads (it said only "static
+/// deflection under 2 loads"), and the saved ball warns outside them.
+#[test]
+fn fit_save_records_the_static_loads() {
+    let home = tempfile::tempdir().unwrap();
+    let dir = home.path();
+    tennis_fit_files(dir);
     ok_at(
         dir,
         &argv("fit --preset tennis --cor-table cor.csv --static static.csv --save t2"),
