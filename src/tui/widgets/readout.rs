@@ -56,7 +56,7 @@ pub struct Readout<'a> {
     pub calibration: Option<String>,
     /// The library's warnings of the surface the ball meets (`App::surface_warnings`: its
     /// rigidity assumed), as `bouncelab run --surface NAME` prints them: at most
-    /// [`SURFACE_ROWS`] rows under the surface's line in the tall panel, a line cut at a word
+    /// `SURFACE_ROWS` rows under the surface's line in the tall panel, a line cut at a word
     /// in the short forms; the message line says them whole when the surface is picked.
     pub surface_warnings: Vec<String>,
     /// The pinned runs, oldest first: the pin table compares them with this run.
