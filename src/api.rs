@@ -163,7 +163,7 @@ pub use summary::{ImpactOutcome, ImpactSummary};
 pub use surface::surface_label;
 pub use surface_used::{SurfaceError, SurfaceUsed};
 pub use sweep::{sweep_zeta, sweep_zeta_watched};
-pub use warnings::{ENERGY_RESIDUAL_MAX, map_indentation_warning};
+pub use warnings::{ENERGY_RESIDUAL_MAX, map_indentation_warning, warning_of};
 
 impl Ball {
     /// An embedded preset (`superball`, `golf`, `baseball`, …) on the parameter set and contact

@@ -37,8 +37,8 @@ ball_pyfunction! {
         // the conditions before λ and ζ, as the command line resolves its ball
         let mut ball = choice.resolve(v0)?;
         // λ or ζ given: a ball of its own (with neither, the ball is as `with_lambda_zeta(None,
-        // None)` leaves it: checked when built); ζ beside a temperature that shifts c refused
-        // as the command line refuses it (the library's rule: it ran here)
+        // None)` leaves it: checked when built); ζ beside a temperature that shifts c is
+        // refused by the library's rule, the command line's (`Ball::with_lambda_zeta_at`)
         if lambda_.is_some() || zeta.is_some() {
             let temperature = choice.conditions.temperature;
             let moved = Arc::unwrap_or_clone(ball).with_lambda_zeta_at(temperature, lambda_, zeta);

@@ -155,14 +155,11 @@ impl Ball {
         let partner = other
             .calibration_warning(self.params.mass * closing / total)
             .map(|w| {
-                w.replacen(
-                    "outside calibration: ",
-                    &format!(
-                        "outside calibration: the partner ({}): ",
-                        other.name.as_deref().unwrap_or("a ball")
-                    ),
-                    1,
-                )
+                let who = format!(
+                    "the partner ({})",
+                    other.name.as_deref().unwrap_or("a ball")
+                );
+                super::warning_of(&who, &w)
             });
         own.into_iter().chain(partner).collect()
     }

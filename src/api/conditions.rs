@@ -245,8 +245,8 @@ impl Ball {
         crate::conditions::kelvin("temperature", t).map_err(from)?;
         let shift = self.temperature_shift().cloned();
         if shift.is_some() && self.overrides.iter().any(|o| o == "c") {
-            // before the record's own temperature returns: `--temperature 45 --damping 10`
-            // on the squash ball slipped through there, against docs/cli.md
+            // checked before the record's own temperature returns: a c given beside any
+            // temperature is two settings of c, at the record's too (docs/cli.md)
             let why = "--damping sets c too, which the temperature shifts: give one of them";
             return Err(invalid("temperature", t, why.into()));
         }

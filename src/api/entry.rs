@@ -38,9 +38,9 @@ pub struct Overrides {
 
 impl Overrides {
     /// A derived quantity out of range (ζ, λ, z̄_p, K_h) named by the override the user gave
-    /// that moves it, its own parameter first (ζ = √(m K_p)/(2c): c, else m, else K_p):
-    /// `--damping 1e-5` said "invalid zeta" (issue 54 item 9), `--mass 1e15` too, and
-    /// `--k-p 1e15` "invalid k_h" (tests/cli/field_names.rs). `None` when no override moves it.
+    /// that moves it, its own parameter first (ζ = √(m K_p)/(2c): c, else m, else K_p), so
+    /// that `--mass 1e15` is refused as "invalid mass" and `--k-p 1e15` as "invalid k_p"
+    /// (tests/cli/field_names.rs). `None` when no override moves it.
     fn blamed(&self, e: &crate::model::params::ParamError) -> Option<BallError> {
         let suspects: &[(&'static str, Option<f64>)] = match e.field {
             Field::Zeta => &[

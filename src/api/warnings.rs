@@ -12,6 +12,25 @@ use crate::text::{number, short, sig};
 /// larger residual means the numbers were not computed to their promised accuracy.
 pub const ENERGY_RESIDUAL_MAX: f64 = 1e-6;
 
+/// `w` said of `who` among several balls: named after its "outside calibration:" (the
+/// prefix every filter of calibration warnings reads, issue 52), else before it. `collide`'s
+/// partner ("outside calibration: the partner (golf): impact speed …") and a figure of
+/// several balls ("outside calibration: golf: impact speeds …") say theirs so.
+///
+/// ```
+/// use bouncelab::api::warning_of;
+/// assert_eq!(warning_of("golf", "outside calibration: impact speed 9 m/s"),
+///            "outside calibration: golf: impact speed 9 m/s");
+/// assert_eq!(warning_of("golf", "peak indentation 30 mm"), "golf: peak indentation 30 mm");
+/// ```
+pub fn warning_of(who: &str, w: &str) -> String {
+    const OUTSIDE: &str = "outside calibration: ";
+    match w.strip_prefix(OUTSIDE) {
+        Some(rest) => format!("{OUTSIDE}{who}: {rest}"),
+        None => format!("{who}: {w}"),
+    }
+}
+
 /// The cells of a dimensional `map` whose peak indentation passes `radius` (m): each cell's
 /// z_m from its peak force through the loading branch, which the map's cells share (λ and ζ
 /// move K_r and c, never m, K_p, K_h, z_p or v0; `Contact::loading_indentation`). One

@@ -340,15 +340,12 @@ fn one_ball_figures(a: &FigureArgs) -> anyhow::Result<(Figure, Vec<String>)> {
     Ok((fig, warnings))
 }
 
-/// A ball's warning `w` as a figure of `several` balls says it: named after its "outside
-/// calibration:" as `collide` names its partner's ("outside calibration: golf: impact speeds
-/// …"), else before it; one ball's as it is.
+/// A ball's warning `w` as a figure of `several` balls says it, named
+/// ([`crate::api::warning_of`]); one ball's as it is.
 fn named(w: &str, name: &str, several: bool) -> String {
-    const OUTSIDE: &str = "outside calibration: ";
-    match (several, w.strip_prefix(OUTSIDE)) {
-        (false, _) => w.to_string(),
-        (true, Some(rest)) => format!("{OUTSIDE}{name}: {rest}"),
-        (true, None) => format!("{name}: {w}"),
+    match several {
+        true => crate::api::warning_of(name, w),
+        false => w.to_string(),
     }
 }
 
